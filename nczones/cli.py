@@ -1,0 +1,194 @@
+"""The ``nczones`` command line (DESIGN §8).
+
+Exit status of ``verify``: 0 safe, 1 unsafe, 2 bad input, 3 unknown.  Other
+commands: 0 success, 1 an alarm or a refuted property, 2 bad input.  An
+internal bug exits 4 with a traceback and a request to report it; a user error
+never prints a traceback.
+
+Each subcommand lives in its own ``register_*`` function below so that the
+stages (prover, controller, homing, report) can add theirs independently.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import traceback
+from collections.abc import Callable, Sequence
+from fractions import Fraction
+
+from . import __version__
+from .errors import InputError, InvalidArgument, NczonesError
+from .exact import format_decimal
+from .machine import Machine, load_machine
+
+__all__ = ["main", "EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL"]
+
+EXIT_OK = 0
+EXIT_FAIL = 1
+EXIT_INPUT = 2
+EXIT_UNKNOWN = 3
+EXIT_INTERNAL = 4
+
+Handler = Callable[[argparse.Namespace], int]
+
+
+def _bound(value: Fraction | None) -> str:
+    return "unbounded" if value is None else format_decimal(value)
+
+
+def describe_machine(machine: Machine) -> str:
+    """A readable summary of a machine (what ``check-machine`` prints).
+
+    Examples
+    --------
+    >>> from nczones.machine import parse_machine
+    >>> m = parse_machine('''
+    ... [machine]
+    ... name = "demo"
+    ... axes = ["X"]
+    ... [machine.rapid]
+    ... X = "1000"
+    ... [machine.reference]
+    ... X = "5"
+    ... [[zones]]
+    ... name = "travel"
+    ... kind = "box"
+    ... min = { X = "0" }
+    ... max = { X = "10" }
+    ... ''', "demo.toml")
+    >>> print(describe_machine(m))
+    demo.toml: machine "demo" is valid
+      axes: X (linear, pulse 0.001 mm, rapid 1000 mm/min)
+      rapid mode: linear; limit monitor every 5 ms
+      reference: X5; start: X5
+      zones (1):
+        travel: allow box X [0, 10]
+      allowed set lies within: X [0, 10]
+    """
+    lines = [f"{machine.source}: machine \"{machine.name}\" is valid"]
+    axes = []
+    for a in machine.axes:
+        unit = "deg" if a.rotary else "mm"
+        axes.append(
+            f"{a.name} ({'rotary' if a.rotary else 'linear'}, pulse {format_decimal(a.pulse)} {unit}, "
+            f"rapid {format_decimal(a.rapid_mm_min)} {unit}/min)"
+        )
+    lines.append("  axes: " + ", ".join(axes))
+    lines.append(
+        f"  rapid mode: {machine.rapid_mode.value}; limit monitor every "
+        f"{format_decimal(machine.monitor_period_ms)} ms"
+    )
+
+    def pt(coords: tuple[Fraction, ...]) -> str:
+        return " ".join(f"{n}{format_decimal(c)}" for n, c in zip(machine.axis_names, coords))
+
+    lines.append(f"  reference: {pt(machine.reference)}; start: {pt(machine.start)}")
+    if machine.offsets:
+        lines.append("  work offsets: " + "; ".join(f"{k} {pt(v)}" for k, v in machine.offsets.items()))
+    if machine.tool_lengths:
+        lines.append(
+            "  tool lengths: "
+            + ", ".join(f"H{k} {format_decimal(v)}" for k, v in sorted(machine.tool_lengths.items()))
+        )
+    lines.append(f"  zones ({len(machine.zones)}):")
+    for z in machine.zones:
+        role = "forbid" if z.forbid else "allow"
+        tip = " (tool tip)" if z.point.value == "tip" else ""
+        if z.kind == "stepped":
+            lines.append(
+                f"    {z.name}: {role} stepped table{tip}, {z.limited_axis} limited by "
+                f"{z.reference_axis}, {len(z.regions)} regions from {format_decimal(z.start)}"
+            )
+            lower = z.start
+            for i, r in enumerate(z.regions):
+                bracket = "[" if i == 0 else "("
+                lines.append(
+                    f"      region {i + 1}: {z.reference_axis} {bracket}{format_decimal(lower)}, "
+                    f"{format_decimal(r.upto)}] -> {z.limited_axis} [{_bound(r.min)}, {_bound(r.max)}]"
+                )
+                lower = r.upto
+        else:
+            ranges = ", ".join(f"{a} [{_bound(lo)}, {_bound(hi)}]" for a, (lo, hi) in z.bounds().items())
+            extra = f" in {z.plane[0]}{z.plane[1]} with {len(z.vertices)} vertices" if z.kind == "polygon" else ""
+            lines.append(f"    {z.name}: {role} {z.kind}{tip}{extra} {ranges}")
+    bbox = machine.allowed.bounding_box()
+    if bbox:
+        lines.append(
+            "  allowed set lies within: "
+            + ", ".join(f"{a} [{_bound(lo)}, {_bound(hi)}]" for a, (lo, hi) in bbox.items())
+        )
+    else:
+        lines.append("  allowed set: unbounded (no machine-point allow zone)")
+    for w in machine.warnings:
+        lines.append(w.render())
+    return "\n".join(lines)
+
+
+def _run_check_machine(args: argparse.Namespace) -> int:
+    machine = load_machine(args.machine_file)
+    print(describe_machine(machine))
+    return EXIT_OK
+
+
+def register_check_machine(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("check-machine", help="validate a machine file and summarise it")
+    p.add_argument("machine_file", metavar="M.toml")
+    p.set_defaults(handler=_run_check_machine)
+
+
+#: Subcommand registrars; other stages append theirs.
+REGISTRARS: list[Callable[[argparse._SubParsersAction], None]] = [register_check_machine]
+
+
+def _load_optional_registrars() -> None:
+    """Import the stages that add subcommands (each appends to REGISTRARS)."""
+    import importlib
+
+    for module in ("nczones.prover.command", "nczones.controller.command", "nczones.controller.homing_command", "nczones.report.command"):
+        try:
+            importlib.import_module(module)
+        except ModuleNotFoundError as exc:
+            if exc.name != module:
+                raise
+
+
+def build_parser() -> argparse.ArgumentParser:
+    _load_optional_registrars()
+    parser = argparse.ArgumentParser(
+        prog="nczones",
+        description="Prove that a CNC program keeps the machine inside its allowed area.",
+    )
+    parser.add_argument("--version", action="version", version=f"nczones {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for register in dict.fromkeys(REGISTRARS):
+        register(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the exit status."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.handler(args)
+    except InputError as exc:
+        print(exc.render(), file=sys.stderr)
+        return EXIT_INPUT
+    except InvalidArgument as exc:
+        print(f"nczones: error: {exc}", file=sys.stderr)
+        return EXIT_INPUT
+    except NczonesError as exc:
+        print(f"nczones: internal error: {exc}\nThis is a bug in nczones; please report it.", file=sys.stderr)
+        return EXIT_INTERNAL
+    except KeyboardInterrupt:
+        print("nczones: interrupted", file=sys.stderr)
+        return 130
+    except Exception:  # an internal bug, never the user's fault
+        traceback.print_exc()
+        print("nczones: internal error (the traceback above is a bug in nczones; please report it)", file=sys.stderr)
+        return EXIT_INTERNAL
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

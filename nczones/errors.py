@@ -1,0 +1,136 @@
+"""The one errors module of nczones.
+
+Every exception the package raises on purpose derives from
+:class:`NczonesError`.  Problems in user input (G-code text, machine files,
+command-line arguments) are :class:`InputError`; they carry one or more
+:class:`Diagnostic` values, each with a stable code (``GC1xx`` lexical G-code,
+``GC2xx`` block/modal G-code, ``GC3xx`` interpretation, ``ZN1xx`` machine
+file), a source span when one is known, the value as written and what is
+allowed.  Input errors are collected and raised together.
+
+Anything else that escapes is an internal bug and is reported as such by the
+command line.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+
+__all__ = [
+    "NczonesError",
+    "InvalidArgument",
+    "InternalError",
+    "Severity",
+    "SourceSpan",
+    "Diagnostic",
+    "InputError",
+    "GcodeError",
+    "MachineFileError",
+]
+
+
+class NczonesError(Exception):
+    """Base class of every error nczones raises on purpose."""
+
+
+class InvalidArgument(NczonesError, ValueError):
+    """A public function was called with a value it cannot accept."""
+
+
+class InternalError(NczonesError):
+    """A broken invariant inside nczones: a bug, never the user's fault."""
+
+
+class Severity(enum.Enum):
+    ERROR = "error"
+    WARNING = "warning"
+
+
+@dataclass(frozen=True, slots=True)
+class SourceSpan:
+    """Where something stands in a source file (1-based line and column).
+
+    ``text`` is the whole source line, so a diagnostic can echo it with a
+    caret under columns ``column`` to ``end_column`` (exclusive).
+
+    >>> str(SourceSpan("part.ngc", 12, 5, 8, "G01 X1.5 Y2"))
+    'part.ngc:12:5'
+    """
+
+    file: str
+    line: int
+    column: int = 1
+    end_column: int | None = None
+    text: str = ""
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}:{self.column}"
+
+    def caret_lines(self) -> str:
+        """The source line and a caret line under the span (empty if no text)."""
+        if not self.text:
+            return ""
+        source = self.text.rstrip("\r\n").expandtabs(1)
+        width = max(1, (self.end_column or self.column + 1) - self.column)
+        return f"    {source}\n    {' ' * (self.column - 1)}^{'~' * (width - 1)}"
+
+
+@dataclass(frozen=True, slots=True)
+class Diagnostic:
+    """One problem found in user input.
+
+    >>> d = Diagnostic("GC101", "unexpected character '$'", SourceSpan("a.ngc", 3, 4, 5, "G1 $5"))
+    >>> print(d.render())
+    a.ngc:3:4: error[GC101]: unexpected character '$'
+        G1 $5
+           ^
+    """
+
+    code: str
+    message: str
+    span: SourceSpan | None = None
+    severity: Severity = Severity.ERROR
+    file: str | None = None  # used when there is no span
+
+    def location(self) -> str:
+        if self.span is not None:
+            return str(self.span)
+        return self.file or "<input>"
+
+    def render(self) -> str:
+        head = f"{self.location()}: {self.severity.value}[{self.code}]: {self.message}"
+        carets = self.span.caret_lines() if self.span is not None else ""
+        return f"{head}\n{carets}" if carets else head
+
+
+class InputError(NczonesError):
+    """Bad user input: one or more diagnostics, raised together."""
+
+    def __init__(self, diagnostics: tuple[Diagnostic, ...] | list[Diagnostic] | Diagnostic):
+        if isinstance(diagnostics, Diagnostic):
+            diagnostics = (diagnostics,)
+        self.diagnostics: tuple[Diagnostic, ...] = tuple(diagnostics)
+        if not self.diagnostics:
+            raise InternalError("InputError raised without a diagnostic")
+        super().__init__(self.render())
+
+    @property
+    def errors(self) -> tuple[Diagnostic, ...]:
+        return tuple(d for d in self.diagnostics if d.severity is Severity.ERROR)
+
+    @property
+    def code(self) -> str:
+        """The code of the first diagnostic."""
+        return self.diagnostics[0].code
+
+    def render(self) -> str:
+        return "\n".join(d.render() for d in self.diagnostics)
+
+
+class GcodeError(InputError):
+    """Bad G-code text (codes GC1xx, GC2xx, GC3xx)."""
+
+
+class MachineFileError(InputError):
+    """A bad machine file (codes ZN1xx)."""

@@ -1,0 +1,68 @@
+"""Evaluated blocks: what the G-code language layer hands the interpreter.
+
+The language layer (lexer, parser, parameters, expressions, O-word control
+flow, M98/M99 subprograms) runs the program's *control* and yields one
+:class:`Block` per executed block, in execution order, with every word's
+value already evaluated to an exact rational.  The interpreter
+(:mod:`nczones.gcode.interpreter`) gives the blocks their *machine* meaning
+(modal state, offsets, motion).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..errors import SourceSpan
+
+__all__ = ["Word", "Block"]
+
+
+@dataclass(frozen=True, slots=True)
+class Word:
+    """One word: an upper-case letter and its exact value.
+
+    ``text`` is the word as written (``"x-1.5"``, ``"X[#1+2]"``).  For G and
+    M codes the value is the code number (``Fraction(591, 10)`` for G59.1).
+    """
+
+    letter: str
+    value: Fraction
+    span: SourceSpan
+    text: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class Block:
+    """One executed block.
+
+    Attributes
+    ----------
+    words : tuple of Word
+        The words in source order, after parameter and expression evaluation
+        (parameter assignments and O-words are consumed by the language layer).
+    span : SourceSpan
+        The whole source line.
+    index : int
+        Position in execution order (0-based; repeats and calls count anew).
+    number : Fraction or None
+        The N word, if any.
+    messages : tuple of str
+        ``(MSG, ...)``/``(DEBUG, ...)``-style comments, for reports only.
+    """
+
+    words: tuple[Word, ...]
+    span: SourceSpan
+    index: int
+    number: Fraction | None = None
+    messages: tuple[str, ...] = ()
+
+    def get(self, letter: str) -> Word | None:
+        """The first word with this letter, or None."""
+        for w in self.words:
+            if w.letter == letter:
+                return w
+        return None
+
+    def all(self, letter: str) -> tuple[Word, ...]:
+        return tuple(w for w in self.words if w.letter == letter)

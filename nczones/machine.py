@@ -1,0 +1,823 @@
+"""The machine file (TOML): axes, rates, offsets, tool lengths and zones.
+
+:func:`load_machine` reads one file exactly (TOML floats become
+``decimal.Decimal``, then ``Fraction``), checks everything, and either returns
+a complete :class:`Machine` or raises :class:`~nczones.errors.MachineFileError`
+with every problem found, each naming the file (with line and column where the
+text can be located), the zone and field, the value as written and what is
+allowed.  Nothing is verified against a half-read machine.
+
+The format and every error code are described in ``specs/machine-file.md``;
+the JSON Schema is ``specs/machine.schema.json``.
+"""
+
+from __future__ import annotations
+
+import decimal
+import difflib
+import enum
+import re
+import tomllib
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any
+
+from .errors import Diagnostic, MachineFileError, Severity, SourceSpan
+from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
+from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
+
+__all__ = [
+    "Axis",
+    "RapidMode",
+    "Machine",
+    "load_machine",
+    "parse_machine",
+    "AXIS_NAMES",
+    "ROTARY_AXES",
+    "WORK_OFFSETS",
+    "DEFAULT_MODAL",
+]
+
+AXIS_NAMES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
+ROTARY_AXES = frozenset("ABC")
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
+DEFAULT_MODAL = ("G90", "G21", "G17", "G54", "G94", "G40", "G49", "G80")
+_MODAL_CHOICES = {
+    "distance": ("G90", "G91"),
+    "units": ("G20", "G21"),
+    "plane": ("G17", "G18", "G19"),
+    "offset": WORK_OFFSETS,
+    "feed": ("G93", "G94", "G95"),
+    "cutter": ("G40",),
+    "tool": ("G49",),
+    "cycle": ("G80",),
+}
+
+
+class RapidMode(enum.Enum):
+    """How a rapid (G0) moves: one straight line, or each axis at its own rate."""
+
+    LINEAR = "linear"
+    DOGLEG = "dogleg"
+
+
+@dataclass(frozen=True, slots=True)
+class Axis:
+    """One machine axis; lengths in mm (degrees for rotary axes)."""
+
+    name: str
+    pulse: Fraction
+    rapid_mm_min: Fraction
+    max_feed_mm_min: Fraction
+    rotary: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Machine:
+    """A validated machine.  Coordinates are tuples in the order of ``axes``."""
+
+    name: str
+    units: str
+    axes: tuple[Axis, ...]
+    rapid_mode: RapidMode
+    monitor_period_ms: Fraction
+    reference: tuple[Fraction, ...]
+    start: tuple[Fraction, ...]
+    offsets: Mapping[str, tuple[Fraction, ...]]
+    tool_lengths: Mapping[int, Fraction]
+    allowed: AllowedSet
+    modal: tuple[str, ...] = DEFAULT_MODAL
+    tool_axis: str | None = "Z"
+    source: str = "<machine>"
+    warnings: tuple[Diagnostic, ...] = ()
+    sections: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
+
+    @property
+    def axis_names(self) -> tuple[str, ...]:
+        return tuple(a.name for a in self.axes)
+
+    @property
+    def zones(self) -> tuple[Zone, ...]:
+        return self.allowed.zones
+
+    def axis(self, name: str) -> Axis:
+        for a in self.axes:
+            if a.name == name:
+                return a
+        raise KeyError(name)
+
+    def point(self, coords: tuple[Fraction, ...]) -> dict[str, Fraction]:
+        """A coordinate tuple as a mapping axis name -> value."""
+        return dict(zip(self.axis_names, coords))
+
+    def offset(self, name: str) -> tuple[Fraction, ...]:
+        """Machine coordinates of a work offset's zero (zeros if not given)."""
+        return self.offsets.get(name, tuple(Fraction(0) for _ in self.axes))
+
+    def tool_length(self, register: int) -> Fraction:
+        return self.tool_lengths.get(register, Fraction(0))
+
+
+# --------------------------------------------------------------------------- reading
+
+
+class _Locator:
+    """Best-effort line/column of a key in the TOML text (tomllib gives none)."""
+
+    def __init__(self, path: str, text: str):
+        self.path = path
+        self.lines = text.splitlines()
+
+    def _span(self, index: int, column: int, width: int) -> SourceSpan:
+        return SourceSpan(self.path, index + 1, column + 1, column + 1 + width, self.lines[index])
+
+    def section(self, header: str, occurrence: int = 0) -> int | None:
+        pattern = re.compile(r"^\s*\[+\s*" + re.escape(header) + r"\s*\]+")
+        seen = 0
+        for i, line in enumerate(self.lines):
+            if pattern.match(line):
+                if seen == occurrence:
+                    return i
+                seen += 1
+        return None
+
+    def key(
+        self, key: str, start: int | None, occurrence: int = 0
+    ) -> SourceSpan | None:
+        """Find the ``occurrence``-th ``key =`` after line ``start``, before the next header."""
+        begin = 0 if start is None else start + 1
+        key_re = re.compile(r"(?:^|[\s{,])(" + re.escape(key) + r"|\"" + re.escape(key) + r"\")\s*=")
+        seen = 0
+        for i in range(begin, len(self.lines)):
+            line = self.lines[i]
+            if re.match(r"^\s*\[", line):
+                break
+            m = key_re.search(line)
+            if m:
+                if seen == occurrence:
+                    return self._span(i, m.start(1), len(m.group(1)))
+                seen += 1
+        return None
+
+    def element(self, array_key: str, start: int | None, index: int, key: str) -> SourceSpan | None:
+        """The ``key`` inside the ``index``-th ``{ ... }`` element of an array."""
+        anchor = self.key(array_key, start)
+        if anchor is None:
+            return None
+        seen = -1
+        depth = 0
+        for i in range(anchor.line - 1, len(self.lines)):
+            line = self.lines[i]
+            col0 = anchor.column - 1 if i == anchor.line - 1 else 0
+            for c in range(col0, len(line)):
+                ch = line[c]
+                if ch == "{":
+                    depth += 1
+                    if depth == 1:
+                        seen += 1
+                        if seen == index:
+                            m = re.compile(r"\b" + re.escape(key) + r"\s*=").search(line, c)
+                            if m:
+                                return self._span(i, m.start(), len(key))
+                            return self._span(i, c, 1)
+                elif ch == "}":
+                    depth -= 1
+                elif ch == "#":
+                    break
+            if i > anchor.line - 1 and re.match(r"^\s*\[", line):
+                break
+        return None
+
+
+class _Reader:
+    """Collects diagnostics while the machine is read."""
+
+    def __init__(self, path: str, text: str):
+        self.path = path
+        self.loc = _Locator(path, text)
+        self.diagnostics: list[Diagnostic] = []
+
+    def report(
+        self,
+        code: str,
+        message: str,
+        span: SourceSpan | None = None,
+        severity: Severity = Severity.ERROR,
+    ) -> None:
+        self.diagnostics.append(Diagnostic(code, message, span, severity, file=self.path))
+
+    @property
+    def failed(self) -> bool:
+        return any(d.severity is Severity.ERROR for d in self.diagnostics)
+
+
+def _written(value: Any) -> str:
+    """The value as the user wrote it (approximately: TOML loses formatting)."""
+    if isinstance(value, str):
+        return repr(value)
+    if isinstance(value, decimal.Decimal):
+        return str(value)
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return repr(value)
+
+
+def _number(
+    rd: _Reader,
+    value: Any,
+    what: str,
+    span: SourceSpan | None,
+    *,
+    positive: bool = False,
+    nonnegative: bool = False,
+    limit: Fraction = MAX_ABS_LENGTH,
+) -> Fraction | None:
+    """Read an exact number (decimal text, TOML integer or TOML decimal)."""
+    if isinstance(value, bool) or not isinstance(value, (str, int, decimal.Decimal)):
+        rd.report("ZN103", f"{what}: {_written(value)} is not a number; write a decimal such as \"12.5\"", span)
+        return None
+    if isinstance(value, decimal.Decimal) and not value.is_finite():
+        rd.report("ZN104", f"{what}: {_written(value)} is not finite; write a finite decimal", span)
+        return None
+    if isinstance(value, str):
+        text = value.strip()
+        if text.lower().lstrip("+-") in ("inf", "infinity", "nan"):
+            rd.report("ZN104", f"{what}: {_written(value)} is not finite; write a finite decimal", span)
+            return None
+        if not DECIMAL_RE.match(text):
+            rd.report("ZN103", f"{what}: {_written(value)} is not a decimal; write digits with an optional sign and point, such as \"-12.5\"", span)
+            return None
+        q = Fraction(decimal.Decimal(text))
+    else:
+        q = Fraction(value)
+    if abs(q) > limit:
+        rd.report("ZN105", f"{what}: {_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
+        return None
+    if positive and q <= 0:
+        rd.report("ZN106", f"{what}: {_written(value)} must be greater than 0", span)
+        return None
+    if nonnegative and q < 0:
+        rd.report("ZN106", f"{what}: {_written(value)} must not be negative", span)
+        return None
+    return q
+
+
+def _check_keys(
+    rd: _Reader,
+    table: Mapping[str, Any],
+    allowed: tuple[str, ...],
+    where: str,
+    start: int | None,
+) -> None:
+    for key in table:
+        if key not in allowed:
+            close = difflib.get_close_matches(key, allowed, n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else f"; allowed keys: {', '.join(allowed)}"
+            rd.report("ZN101", f"{where}: unknown key {key!r}{hint}", rd.loc.key(key, start))
+
+
+def _per_axis(
+    rd: _Reader,
+    value: Any,
+    axes: tuple[str, ...],
+    what: str,
+    header_line: int | None,
+    *,
+    required: bool,
+    **number_opts: Any,
+) -> dict[str, Fraction]:
+    """A table ``{ X = "...", ... }`` keyed by known axis names."""
+    out: dict[str, Fraction] = {}
+    if not isinstance(value, Mapping):
+        rd.report("ZN103", f"{what}: expected a table of axis values such as {{ X = \"0\" }}, got {_written(value)}", None)
+        return out
+    for axis, raw in value.items():
+        span = rd.loc.key(axis, header_line)
+        if axis not in axes:
+            rd.report("ZN110", f"{what}: unknown axis {axis!r}; the machine's axes are {', '.join(axes)}", span)
+            continue
+        q = _number(rd, raw, f"{what}.{axis}", span, **number_opts)
+        if q is not None:
+            out[axis] = q
+    if required:
+        missing = [a for a in axes if a not in value]
+        if missing:
+            rd.report("ZN102", f"{what}: missing value for axis {', '.join(missing)}", None)
+    return out
+
+
+_TOP_KEYS = ("machine", "offsets", "tool_lengths", "zones")
+_MACHINE_KEYS = (
+    "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
+    "reference", "start", "tool_axis", "modal",
+)
+_ZONE_COMMON = ("name", "kind", "forbid", "point")
+_ZONE_KEYS = {
+    "stepped": _ZONE_COMMON + ("reference_axis", "limited_axis", "from", "regions"),
+    "box": _ZONE_COMMON + ("min", "max"),
+    "polygon": _ZONE_COMMON + ("plane", "vertices", "min", "max"),
+}
+
+#: Extra top-level sections other parts of nczones read (homing, tool change):
+#: name -> parser(reader, raw table, axes) returning a value for Machine.sections.
+SECTION_PARSERS: dict[str, Callable[[Any, Any, tuple[str, ...]], Any]] = {}
+
+
+def parse_machine(text: str, path: str = "<machine>") -> Machine:
+    """Read a machine from TOML text; see :func:`load_machine`.
+
+    Examples
+    --------
+    >>> m = parse_machine('''
+    ... [machine]
+    ... axes = ["X", "Y"]
+    ... pulse = "0.001"
+    ... [machine.rapid]
+    ... X = "12000"
+    ... Y = "8000"
+    ... [machine.reference]
+    ... X = 100
+    ... Y = 0.1
+    ... ''')
+    >>> m.axis_names, m.reference
+    (('X', 'Y'), (Fraction(100, 1), Fraction(1, 10)))
+    """
+    rd = _Reader(path, text)
+    try:
+        data = tomllib.loads(text, parse_float=decimal.Decimal)
+    except tomllib.TOMLDecodeError as exc:
+        m = re.search(r"line (\d+), column (\d+)", str(exc))
+        span = None
+        if m:
+            line, col = int(m.group(1)), int(m.group(2))
+            lines = text.splitlines()
+            span = SourceSpan(path, line, col, col + 1, lines[line - 1] if line <= len(lines) else "")
+        rd.report("ZN100", f"not valid TOML: {exc}", span)
+        raise MachineFileError(rd.diagnostics) from None
+    machine = _build(rd, data)
+    if rd.failed or machine is None:
+        raise MachineFileError(rd.diagnostics)
+    return machine
+
+
+def load_machine(path: str | Path) -> Machine:
+    """Load and validate a machine file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The TOML file.
+
+    Returns
+    -------
+    Machine
+
+    Raises
+    ------
+    MachineFileError
+        With every problem found (codes ``ZN1xx``, see ``specs/machine-file.md``).
+    """
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise MachineFileError(
+            Diagnostic("ZN099", f"cannot read the machine file: {exc.strerror or exc}", file=str(path))
+        ) from None
+    except UnicodeDecodeError as exc:
+        raise MachineFileError(
+            Diagnostic("ZN099", f"the machine file is not UTF-8 text ({exc.reason} at byte {exc.start})", file=str(path))
+        ) from None
+    return parse_machine(text, str(path))
+
+
+def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
+    extra_sections = tuple(SECTION_PARSERS)
+    _check_keys(rd, data, _TOP_KEYS + extra_sections, "top level", None)
+    mt = data.get("machine")
+    mline = rd.loc.section("machine")
+    if not isinstance(mt, Mapping):
+        rd.report("ZN102", "missing the [machine] table (axes, pulse, rapid rates, reference)", None)
+        return None
+    _check_keys(rd, mt, _MACHINE_KEYS, "[machine]", mline)
+
+    # axes
+    raw_axes = mt.get("axes")
+    axes: tuple[str, ...] = ()
+    if not isinstance(raw_axes, list) or not raw_axes:
+        rd.report("ZN102", f"[machine] axes: expected a non-empty list of axis names such as [\"X\", \"Z\"], got {_written(raw_axes)}", rd.loc.key("axes", mline))
+        return None
+    seen: set[str] = set()
+    for a in raw_axes:
+        if not isinstance(a, str) or a not in AXIS_NAMES:
+            rd.report("ZN110", f"[machine] axes: unknown axis {_written(a)}; allowed: {', '.join(AXIS_NAMES)}", rd.loc.key("axes", mline))
+        elif a in seen:
+            rd.report("ZN111", f"[machine] axes: axis {a!r} is listed twice", rd.loc.key("axes", mline))
+        else:
+            seen.add(a)
+            axes += (a,)
+    if not axes:
+        return None
+
+    name = mt.get("name", "machine")
+    if not isinstance(name, str):
+        rd.report("ZN103", f"[machine] name: expected text, got {_written(name)}", rd.loc.key("name", mline))
+        name = "machine"
+    units = mt.get("units", "mm")
+    if units not in ("mm",):
+        rd.report("ZN107", f"[machine] units: {_written(units)} is not supported; machine files are in \"mm\" (programs may still use G20 inches)", rd.loc.key("units", mline))
+
+    # pulse: one value or per axis
+    raw_pulse = mt.get("pulse", "0.001")
+    pulse: dict[str, Fraction] = {}
+    if isinstance(raw_pulse, Mapping):
+        pulse = _per_axis(rd, raw_pulse, axes, "[machine] pulse", rd.loc.section("machine.pulse"), required=True, positive=True, limit=Fraction(1))
+    else:
+        q = _number(rd, raw_pulse, "[machine] pulse", rd.loc.key("pulse", mline), positive=True, limit=Fraction(1))
+        if q is not None:
+            pulse = {a: q for a in axes}
+
+    rapid = _per_axis(rd, mt.get("rapid", {}), axes, "[machine.rapid]", rd.loc.section("machine.rapid"), required=True, positive=True)
+    raw_max_feed = mt.get("max_feed")
+    max_feed: dict[str, Fraction] = {}
+    if raw_max_feed is None:
+        max_feed = dict(rapid)
+    elif isinstance(raw_max_feed, Mapping):
+        max_feed = _per_axis(rd, raw_max_feed, axes, "[machine.max_feed]", rd.loc.section("machine.max_feed"), required=True, positive=True)
+    else:
+        q = _number(rd, raw_max_feed, "[machine] max_feed", rd.loc.key("max_feed", mline), positive=True)
+        if q is not None:
+            max_feed = {a: q for a in axes}
+
+    rapid_mode_raw = mt.get("rapid_mode", "linear")
+    try:
+        rapid_mode = RapidMode(rapid_mode_raw)
+    except ValueError:
+        rd.report("ZN107", f"[machine] rapid_mode: {_written(rapid_mode_raw)} is not allowed; use \"linear\" or \"dogleg\"", rd.loc.key("rapid_mode", mline))
+        rapid_mode = RapidMode.LINEAR
+    period = _number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", rd.loc.key("monitor_period_ms", mline), positive=True, limit=Fraction(1000))
+
+    reference = _per_axis(rd, mt.get("reference", {}), axes, "[machine.reference]", rd.loc.section("machine.reference"), required=True)
+    start_raw = mt.get("start")
+    start = dict(reference)
+    if start_raw is not None:
+        start = _per_axis(rd, start_raw, axes, "[machine.start]", rd.loc.section("machine.start"), required=True)
+
+    tool_axis = mt.get("tool_axis", "Z" if "Z" in axes else None)
+    if tool_axis is not None and tool_axis not in axes:
+        rd.report("ZN110", f"[machine] tool_axis: {_written(tool_axis)} is not one of the machine's axes ({', '.join(axes)})", rd.loc.key("tool_axis", mline))
+        tool_axis = None
+
+    modal = _modal(rd, mt.get("modal"), mline)
+
+    # offsets
+    offsets: dict[str, tuple[Fraction, ...]] = {}
+    raw_offsets = data.get("offsets", {})
+    oline = rd.loc.section("offsets")
+    if not isinstance(raw_offsets, Mapping):
+        rd.report("ZN103", f"[offsets]: expected a table, got {_written(raw_offsets)}", None)
+        raw_offsets = {}
+    for key, value in raw_offsets.items():
+        if key not in WORK_OFFSETS:
+            close = difflib.get_close_matches(key, WORK_OFFSETS, n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else f"; allowed: {', '.join(WORK_OFFSETS)}"
+            rd.report("ZN101", f"[offsets]: unknown work offset {key!r}{hint}", rd.loc.key(key, oline))
+            continue
+        vals = _per_axis(rd, value, axes, f"[offsets] {key}", oline, required=False)
+        offsets[key] = tuple(vals.get(a, Fraction(0)) for a in axes)
+
+    # tool lengths
+    tool_lengths: dict[int, Fraction] = {}
+    raw_tl = data.get("tool_lengths", {})
+    tline = rd.loc.section("tool_lengths")
+    if not isinstance(raw_tl, Mapping):
+        rd.report("ZN103", f"[tool_lengths]: expected a table such as H1 = \"200\", got {_written(raw_tl)}", None)
+        raw_tl = {}
+    for key, value in raw_tl.items():
+        m = re.fullmatch(r"H(\d{1,4})", key)
+        span = rd.loc.key(key, tline)
+        if not m:
+            rd.report("ZN101", f"[tool_lengths]: {key!r} is not a length register; write H followed by its number, such as H1", span)
+            continue
+        q = _number(rd, value, f"[tool_lengths] {key}", span)
+        if q is not None:
+            tool_lengths[int(m.group(1))] = q
+
+    zones = _zones(rd, data.get("zones", []), axes, tool_axis)
+
+    sections: dict[str, Any] = {}
+    for key, parser in SECTION_PARSERS.items():
+        if key in data:
+            sections[key] = parser(rd, data[key], axes)
+
+    if rd.failed:
+        return None
+
+    axis_objs = tuple(
+        Axis(a, pulse[a], rapid[a], max_feed[a], a in ROTARY_AXES) for a in axes
+    )
+    allowed = AllowedSet(tuple(zones), tool_axis)
+    start_t = tuple(start[a] for a in axes)
+    ref_t = tuple(reference[a] for a in axes)
+    machine = Machine(
+        name=name, units="mm", axes=axis_objs, rapid_mode=rapid_mode,
+        monitor_period_ms=period, reference=ref_t, start=start_t,
+        offsets=MappingProxyType(offsets), tool_lengths=MappingProxyType(tool_lengths),
+        allowed=allowed, modal=modal, tool_axis=tool_axis, source=rd.path,
+        sections=MappingProxyType(sections),
+    )
+    # The program starts with no tool length active (G49), so tip zones see Z itself.
+    bad = allowed.violated_zones(machine.point(start_t))
+    if bad:
+        where = "[machine.start]" if start_raw is not None else "[machine.reference] (the start position by default)"
+        rd.report(
+            "ZN130",
+            f"{where}: the start position ({_fmt_point(axes, start_t)}) is outside the allowed set "
+            f"(zone {', '.join(repr(z.name) for z in bad)}); nothing can be verified from there",
+            rd.loc.section("machine.start") if start_raw is not None else rd.loc.section("machine.reference"),
+        )
+        return None
+    if start_raw is not None:
+        bad_ref = allowed.violated_zones(machine.point(ref_t))
+        if bad_ref:
+            rd.report(
+                "ZN131",
+                f"[machine.reference]: the reference position ({_fmt_point(axes, ref_t)}) is outside the allowed set "
+                f"(zone {', '.join(repr(z.name) for z in bad_ref)}); every G28 will be reported unsafe",
+                rd.loc.section("machine.reference"),
+                Severity.WARNING,
+            )
+    return Machine(
+        **{f: getattr(machine, f) for f in Machine.__dataclass_fields__ if f != "warnings"},
+        warnings=tuple(d for d in rd.diagnostics if d.severity is Severity.WARNING),
+    )
+
+
+def _fmt_point(axes: tuple[str, ...], coords: tuple[Fraction, ...]) -> str:
+    return " ".join(f"{a}{format_decimal(c)}" for a, c in zip(axes, coords))
+
+
+def _modal(rd: _Reader, raw: Any, mline: int | None) -> tuple[str, ...]:
+    if raw is None:
+        return DEFAULT_MODAL
+    span = rd.loc.key("modal", mline)
+    if not isinstance(raw, list) or not all(isinstance(c, str) for c in raw):
+        rd.report("ZN103", f"[machine] modal: expected a list of G codes such as [\"G90\", \"G21\"], got {_written(raw)}", span)
+        return DEFAULT_MODAL
+    chosen = dict(zip(_MODAL_CHOICES, DEFAULT_MODAL))
+    given: set[str] = set()
+    for code in raw:
+        norm = code.strip().upper()
+        group = next((g for g, choices in _MODAL_CHOICES.items() if norm in choices), None)
+        if group is None:
+            allowed = ", ".join(c for cs in _MODAL_CHOICES.values() for c in cs)
+            rd.report("ZN107", f"[machine] modal: {code!r} is not an initial modal code nczones models; allowed: {allowed}", span)
+            continue
+        if group in given:
+            rd.report("ZN108", f"[machine] modal: {code!r} conflicts with another code of the {group} group", span)
+            continue
+        given.add(group)
+        chosen[group] = norm
+    return tuple(chosen.values())
+
+
+def _zones(rd: _Reader, raw: Any, axes: tuple[str, ...], tool_axis: str | None) -> list[Zone]:
+    if not isinstance(raw, list):
+        rd.report("ZN103", f"zones: expected [[zones]] tables, got {_written(raw)}", None)
+        return []
+    out: list[Zone] = []
+    names: set[str] = set()
+    for index, zt in enumerate(raw):
+        header = rd.loc.section("zones", index)
+        if not isinstance(zt, Mapping):
+            rd.report("ZN103", f"zone {index + 1}: expected a table, got {_written(zt)}", None)
+            continue
+        name = zt.get("name")
+        label = f"zone {name!r}" if isinstance(name, str) else f"zone {index + 1}"
+        label = label.replace("'", '"')
+        if not isinstance(name, str) or not name.strip():
+            rd.report("ZN102", f"{label}: missing name (every zone needs a name the reports can use)", rd.loc.key("kind", header))
+            name = f"zone {index + 1}"
+        elif name in names:
+            rd.report("ZN112", f"{label}: the name is used by another zone; names must be unique", rd.loc.key("name", header))
+        names.add(name)
+        kind = zt.get("kind")
+        if kind not in _ZONE_KEYS:
+            rd.report("ZN107", f"{label}: kind {_written(kind)} is not allowed; use \"stepped\", \"box\" or \"polygon\"", rd.loc.key("kind", header))
+            continue
+        _check_keys(rd, zt, _ZONE_KEYS[kind], label, header)
+        forbid = zt.get("forbid", False)
+        if not isinstance(forbid, bool):
+            rd.report("ZN103", f"{label}: forbid must be true or false, got {_written(forbid)}", rd.loc.key("forbid", header))
+            forbid = False
+        point_raw = zt.get("point", "machine")
+        try:
+            point = ZonePoint(point_raw)
+        except ValueError:
+            rd.report("ZN107", f"{label}: point {_written(point_raw)} is not allowed; use \"machine\" or \"tip\"", rd.loc.key("point", header))
+            point = ZonePoint.MACHINE
+        if point is ZonePoint.TIP and tool_axis is None:
+            rd.report("ZN113", f"{label}: point = \"tip\" needs a tool axis, but this machine has none (set [machine] tool_axis)", rd.loc.key("point", header))
+        builder = {"stepped": _stepped, "box": _box, "polygon": _polygon}[kind]
+        zone = builder(rd, zt, label, name, header, axes, forbid, point)
+        if zone is not None:
+            out.append(zone)
+    return out
+
+
+def _axis_field(rd: _Reader, zt: Mapping[str, Any], key: str, label: str, header: int | None, axes: tuple[str, ...]) -> str | None:
+    value = zt.get(key)
+    span = rd.loc.key(key, header)
+    if value is None:
+        rd.report("ZN102", f"{label}: missing {key} (one of {', '.join(axes)})", span)
+        return None
+    if value not in axes:
+        rd.report("ZN110", f"{label}: {key} {_written(value)} is not one of the machine's axes ({', '.join(axes)})", span)
+        return None
+    return value
+
+
+def _stepped(rd, zt, label, name, header, axes, forbid, point) -> SteppedZone | None:
+    ref = _axis_field(rd, zt, "reference_axis", label, header, axes)
+    lim = _axis_field(rd, zt, "limited_axis", label, header, axes)
+    if ref is not None and ref == lim:
+        rd.report("ZN111", f"{label}: reference_axis and limited_axis are both {ref!r}; a table limits one axis by another", rd.loc.key("limited_axis", header))
+    if "from" not in zt:
+        rd.report("ZN102", f"{label}: missing from (the lower bound of the first region on {ref or 'the reference axis'})", None)
+        start = None
+    else:
+        start = _number(rd, zt["from"], f"{label}: from", rd.loc.key("from", header))
+    raw_regions = zt.get("regions")
+    if not isinstance(raw_regions, list) or not raw_regions:
+        rd.report("ZN120", f"{label}: regions must be a non-empty list such as [{{ upto = \"500\", max = \"300\" }}], got {_written(raw_regions)}", rd.loc.key("regions", header))
+        return None
+    regions: list[Region] = []
+    previous = start
+    ok = True
+    for i, rt in enumerate(raw_regions):
+        rlabel = f"{label}, region {i + 1}"
+        if not isinstance(rt, Mapping):
+            rd.report("ZN103", f"{rlabel}: expected an inline table such as {{ upto = \"500\", max = \"300\" }}, got {_written(rt)}", rd.loc.element("regions", header, i, "upto"))
+            ok = False
+            continue
+        for key in rt:
+            if key not in ("upto", "min", "max"):
+                close = difflib.get_close_matches(key, ("upto", "min", "max"), n=1)
+                hint = f"; did you mean {close[0]!r}?" if close else "; allowed keys: upto, min, max"
+                rd.report("ZN101", f"{rlabel}: unknown key {key!r}{hint}", rd.loc.element("regions", header, i, key))
+                ok = False
+        if "upto" not in rt:
+            rd.report("ZN102", f"{rlabel}: missing upto (the region's upper bound on {ref or 'the reference axis'})", rd.loc.element("regions", header, i, "upto"))
+            ok = False
+            continue
+        upto = _number(rd, rt["upto"], f"{rlabel}: upto", rd.loc.element("regions", header, i, "upto"))
+        lo = _number(rd, rt["min"], f"{rlabel}: min", rd.loc.element("regions", header, i, "min")) if "min" in rt else None
+        hi = _number(rd, rt["max"], f"{rlabel}: max", rd.loc.element("regions", header, i, "max")) if "max" in rt else None
+        if upto is None or ("min" in rt and lo is None) or ("max" in rt and hi is None):
+            ok = False
+            continue
+        if lo is not None and hi is not None and lo > hi:
+            rd.report("ZN122", f"{rlabel}: min {format_decimal(lo)} is greater than max {format_decimal(hi)}; the region would allow nothing", rd.loc.element("regions", header, i, "min"))
+            ok = False
+        if previous is not None and upto <= previous:
+            prev_word = "from" if i == 0 else "previous upto"
+            rd.report("ZN121", f"{rlabel}: upto {format_decimal(upto)} is not greater than the {prev_word} {format_decimal(previous)}", rd.loc.element("regions", header, i, "upto"))
+            ok = False
+        previous = upto
+        regions.append(Region(upto, lo, hi))
+    if not ok or start is None or ref is None or lim is None or ref == lim:
+        return None
+    return SteppedZone(name, ref, lim, start, tuple(regions), forbid, point)
+
+
+def _limits(rd, zt, label, header, axes, exclude: tuple[str, ...] = ()) -> tuple | None:
+    lows = zt.get("min", {})
+    highs = zt.get("max", {})
+    ok = True
+    for key, raw in (("min", lows), ("max", highs)):
+        if not isinstance(raw, Mapping):
+            rd.report("ZN103", f"{label}: {key} must be a table of axis values such as {{ X = \"0\" }}, got {_written(raw)}", rd.loc.key(key, header))
+            ok = False
+    if not ok:
+        return None
+    limits = []
+    for axis in dict.fromkeys(list(lows) + list(highs)):
+        if axis not in axes:
+            rd.report("ZN110", f"{label}: unknown axis {axis!r} in min/max; the machine's axes are {', '.join(axes)}", rd.loc.key(axis, header))
+            ok = False
+            continue
+        if axis in exclude:
+            rd.report("ZN111", f"{label}: axis {axis!r} is in the polygon's plane and may not also have min/max", rd.loc.key(axis, header))
+            ok = False
+            continue
+        lo = _number(rd, lows[axis], f"{label}: min.{axis}", rd.loc.key(axis, header)) if axis in lows else None
+        hi = _number(rd, highs[axis], f"{label}: max.{axis}", rd.loc.key(axis, header, 1 if axis in lows else 0)) if axis in highs else None
+        if (axis in lows and lo is None) or (axis in highs and hi is None):
+            ok = False
+            continue
+        if lo is not None and hi is not None and lo > hi:
+            rd.report("ZN122", f"{label}: min.{axis} {format_decimal(lo)} is greater than max.{axis} {format_decimal(hi)}", rd.loc.key(axis, header))
+            ok = False
+        limits.append((axis, lo, hi))
+    return tuple(limits) if ok else None
+
+
+def _box(rd, zt, label, name, header, axes, forbid, point) -> BoxZone | None:
+    limits = _limits(rd, zt, label, header, axes)
+    if limits is None:
+        return None
+    if not limits:
+        rd.report("ZN120", f"{label}: a box needs at least one axis in min or max", rd.loc.key("kind", header))
+        return None
+    return BoxZone(name, limits, forbid, point)
+
+
+def _polygon(rd, zt, label, name, header, axes, forbid, point) -> PolygonZone | None:
+    plane = zt.get("plane")
+    span = rd.loc.key("plane", header)
+    if not (isinstance(plane, list) and len(plane) == 2 and all(isinstance(a, str) for a in plane)):
+        rd.report("ZN102", f"{label}: plane must name two axes such as [\"X\", \"Z\"], got {_written(plane)}", span)
+        return None
+    bad_axes = [a for a in plane if a not in axes]
+    if bad_axes:
+        rd.report("ZN110", f"{label}: plane axis {bad_axes[0]!r} is not one of the machine's axes ({', '.join(axes)})", span)
+        return None
+    if plane[0] == plane[1]:
+        rd.report("ZN111", f"{label}: plane names axis {plane[0]!r} twice", span)
+        return None
+    raw_vertices = zt.get("vertices")
+    vspan = rd.loc.key("vertices", header)
+    if not isinstance(raw_vertices, list) or len(raw_vertices) < 3:
+        rd.report("ZN123", f"{label}: vertices must list at least 3 points such as [[\"0\", \"0\"], ...], got {_written(raw_vertices)}", vspan)
+        return None
+    vertices = []
+    for i, v in enumerate(raw_vertices):
+        if not (isinstance(v, list) and len(v) == 2):
+            rd.report("ZN123", f"{label}: vertex {i + 1} must be a pair [{plane[0]}, {plane[1]}], got {_written(v)}", vspan)
+            return None
+        a = _number(rd, v[0], f"{label}: vertex {i + 1}", vspan)
+        b = _number(rd, v[1], f"{label}: vertex {i + 1}", vspan)
+        if a is None or b is None:
+            return None
+        vertices.append((a, b))
+    problem = _polygon_problem(vertices)
+    if problem:
+        rd.report("ZN124", f"{label}: {problem}", vspan)
+        return None
+    limits = _limits(rd, zt, label, header, axes, exclude=tuple(plane))
+    if limits is None:
+        return None
+    return PolygonZone(name, (plane[0], plane[1]), tuple(vertices), limits, forbid, point)
+
+
+def _polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
+    """Why a vertex list is not a simple polygon (exact), or None."""
+    n = len(vertices)
+    for i in range(n):
+        if vertices[i] == vertices[(i + 1) % n]:
+            return f"vertices {i + 1} and {(i + 1) % n + 1} are the same point"
+    area2 = sum(
+        vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1]
+        for i in range(n)
+    )
+    if area2 == 0:
+        return "the vertices enclose no area"
+    edges = [(vertices[i], vertices[(i + 1) % n]) for i in range(n)]
+    for i in range(n):
+        for j in range(i + 1, n):
+            adjacent = j == i + 1 or (i == 0 and j == n - 1)
+            if _segments_intersect(*edges[i], *edges[j], adjacent):
+                return f"edges {i + 1} and {j + 1} cross or overlap; the polygon must not intersect itself"
+    return None
+
+
+def _orient(a, b, c) -> int:
+    v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    return (v > 0) - (v < 0)
+
+
+def _between(a, b, c) -> bool:
+    return min(a[0], b[0]) <= c[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= c[1] <= max(a[1], b[1])
+
+
+def _segments_intersect(p1, p2, q1, q2, adjacent: bool) -> bool:
+    o1, o2, o3, o4 = _orient(p1, p2, q1), _orient(p1, p2, q2), _orient(q1, q2, p1), _orient(q1, q2, p2)
+    if adjacent:
+        # adjacent edges share one vertex; they are bad only if they overlap (fold back)
+        shared = p2 if p2 in (q1, q2) else p1
+        other_q = q2 if q1 == shared else q1
+        other_p = p1 if p2 == shared else p2
+        return _orient(other_p, shared, other_q) == 0 and (
+            _between(shared, other_q, other_p) or _between(shared, other_p, other_q)
+        )
+    if o1 != o2 and o3 != o4 and 0 not in (o1, o2, o3, o4):
+        return True
+    return (
+        (o1 == 0 and _between(p1, p2, q1))
+        or (o2 == 0 and _between(p1, p2, q2))
+        or (o3 == 0 and _between(q1, q2, p1))
+        or (o4 == 0 and _between(q1, q2, p2))
+    )

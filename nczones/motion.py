@@ -1,0 +1,233 @@
+"""Motion segments in machine coordinates: what the front end hands on.
+
+The G-code interpreter emits motion; the prover and the controller consume it
+and never see text.  :class:`Segment` is the exchange value (exact rationals,
+one per motion); :mod:`nczones.gcode` may also emit column chunks for speed
+(DESIGN §9), but every chunk can be viewed as segments.
+
+Coordinates are **machine coordinates** (what the controller counts), one
+entry per machine axis in the order of ``Machine.axes``.  Linear axes are in
+millimetres (inch programs are converted exactly, 1 in = 25.4 mm), rotary
+axes in degrees.
+
+Arc geometry
+------------
+An arc lies in a plane given by two machine axes ``(first, second)``:
+G17 = (X, Y), G18 = (Z, X), G19 = (Y, Z), following LinuxCNC's ARC_FEED
+convention, so that ``clockwise`` is always judged looking from the positive
+normal axis down onto the (first, second) plane, with first to the right and
+second up.  All other axes (the helix axis included) move linearly with the
+swept angle.  ``turns`` counts extra full turns (LinuxCNC ``P`` minus one).
+A full circle has ``start == end`` in the plane and sweeps 360°.
+
+``centre`` is exact when it is rational (I J K format).  For R-format arcs it
+is in general irrational; then ``centre`` is ``None`` and ``radius`` holds the
+programmed signed R (negative R = the arc of more than 180°); the exact centre
+is the one of the two points at distance |R| from start and end that lies to
+the right of the chord (start → end) for G2 with R > 0, as Fanuc and LinuxCNC
+define it.  The prover encodes that centre exactly with polynomial constraints;
+the controller uses a rational enclosure far inside one pulse.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+from fractions import Fraction
+from collections.abc import Iterator
+
+import numpy as np
+
+from .errors import SourceSpan
+
+__all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes"]
+
+
+class SegmentKind(enum.IntEnum):
+    LINE = 0  # G1 and every feed move the interpreter derives (canned-cycle feeds)
+    ARC = 1  # G2/G3, helices included
+    RAPID = 2  # G0 and derived rapids; expanded by the machine's rapid_mode downstream
+    DWELL = 3  # G4: no motion, start == end
+
+
+class Plane(enum.IntEnum):
+    XY = 17
+    XZ = 18
+    YZ = 19
+
+
+#: (first, second, normal) axis names per plane, LinuxCNC ARC_FEED order.
+PLANE_AXES: dict[Plane, tuple[str, str, str]] = {
+    Plane.XY: ("X", "Y", "Z"),
+    Plane.XZ: ("Z", "X", "Y"),
+    Plane.YZ: ("Y", "Z", "X"),
+}
+
+
+def arc_plane_axes(plane: Plane) -> tuple[str, str, str]:
+    """Axis names (first, second, normal) of an arc plane.
+
+    >>> arc_plane_axes(Plane.XZ)
+    ('Z', 'X', 'Y')
+    """
+    return PLANE_AXES[plane]
+
+
+@dataclass(frozen=True, slots=True)
+class Segment:
+    """One motion in machine coordinates.
+
+    Attributes
+    ----------
+    kind : SegmentKind
+    start, end : tuple of Fraction
+        Machine coordinates, in the order of the machine's axes.
+    axes : tuple of str
+        The axis names the coordinates refer to (the machine's axes).
+    block : int
+        Index of the block in execution order (0-based, counts repeats and
+        subprogram calls separately).
+    span : SourceSpan or None
+        The source line of the block (with the motion word's column).
+    tool_length : Fraction
+        Active tool length offset (added to machine Z by G43); ``point = "tip"``
+        zones subtract it.
+    feed_mm_min : Fraction or None
+        Programmed feed for LINE and ARC (None for rapids and dwells).
+    plane, clockwise, centre, radius, turns
+        Arc geometry, see the module docstring; ``None``/defaults otherwise.
+    dwell_s : Fraction or None
+        Dwell time for DWELL.
+    derived : str
+        Empty for a motion written in the program; otherwise what produced it
+        (``"G28 intermediate"``, ``"G81 retract"``, ...), for reports.
+    tool_register : int or None
+        The H register of the active tool length (None under G49).
+    deps_start, deps_end : tuple of tuple of str
+        Per axis, the parameter sources the coordinate depends on, for
+        parameter ranges (DESIGN §5): ``"G54"`` (that work offset's component
+        on this axis), ``"H1"`` (tool length register, tool axis only),
+        ``"start"`` (the start position's component).  Empty tuples when the
+        interpreter was not asked to track dependencies.  A coordinate with
+        sources S equals its nominal value plus the sum of the deviations of
+        S's parameters on that axis.
+    """
+
+    kind: SegmentKind
+    start: tuple[Fraction, ...]
+    end: tuple[Fraction, ...]
+    axes: tuple[str, ...]
+    block: int = 0
+    span: SourceSpan | None = None
+    tool_length: Fraction = Fraction(0)
+    feed_mm_min: Fraction | None = None
+    plane: Plane | None = None
+    clockwise: bool = False
+    centre: tuple[Fraction, Fraction] | None = None
+    radius: Fraction | None = None
+    turns: int = 0
+    dwell_s: Fraction | None = None
+    derived: str = ""
+    tool_register: int | None = None
+    deps_start: tuple[tuple[str, ...], ...] = ()
+    deps_end: tuple[tuple[str, ...], ...] = ()
+    extra: tuple[tuple[str, object], ...] = field(default=())
+
+    @property
+    def line(self) -> int | None:
+        return None if self.span is None else self.span.line
+
+    def axis_index(self, name: str) -> int:
+        return self.axes.index(name)
+
+    def point_at(self, name: str, which: str = "start") -> Fraction:
+        """A coordinate of the start or end point by axis name."""
+        coords = self.start if which == "start" else self.end
+        return coords[self.axes.index(name)]
+
+    def plane_indices(self) -> tuple[int, int, int | None]:
+        """Indices (first, second, normal) of an arc's plane axes in ``axes``.
+
+        The normal index is None when the machine has no such axis.
+        """
+        if self.plane is None:
+            raise ValueError("not an arc")
+        a, b, n = PLANE_AXES[self.plane]
+        return self.axes.index(a), self.axes.index(b), (self.axes.index(n) if n in self.axes else None)
+
+    def is_helix(self) -> bool:
+        """True for an arc along which some axis outside its plane moves."""
+        if self.kind is not SegmentKind.ARC:
+            return False
+        i, j, _ = self.plane_indices()
+        return any(s != e for k, (s, e) in enumerate(zip(self.start, self.end)) if k not in (i, j))
+
+
+@dataclass(frozen=True)
+class MotionChunk:
+    """A run of consecutive segments as columns (DESIGN §9).
+
+    Two forms:
+
+    * **columns** (``scale`` is an int): every coordinate is the integer
+      ``value * 10**scale`` in an ``int64`` array; ``kind``, ``start``,
+      ``end``, ``line``, ``block``, ``tool_length`` are always filled; arc
+      columns (``centre`` shape (n, 2), ``plane`` int8 17/18/19,
+      ``clockwise`` bool, ``turns`` int32) are filled when any row is an arc
+      (rows of other kinds hold zeros there).  Only segments whose numbers
+      are all exact decimals at that scale, whose arc centres are rational,
+      and that need no dependency tracking go into column chunks.
+    * **objects** (``scale`` is None): ``objects`` holds the segments.
+
+    ``segments()`` gives per-segment views in both forms, so consumers may
+    always fall back to it.
+    """
+
+    axes: tuple[str, ...]
+    scale: int | None
+    kind: np.ndarray | None = None
+    start: np.ndarray | None = None
+    end: np.ndarray | None = None
+    line: np.ndarray | None = None
+    block: np.ndarray | None = None
+    tool_length: np.ndarray | None = None
+    centre: np.ndarray | None = None
+    plane: np.ndarray | None = None
+    clockwise: np.ndarray | None = None
+    turns: np.ndarray | None = None
+    feed: np.ndarray | None = None
+    file: str = ""
+    objects: tuple[Segment, ...] | None = None
+
+    def __len__(self) -> int:
+        if self.scale is None:
+            return len(self.objects or ())
+        return 0 if self.kind is None else int(self.kind.shape[0])
+
+    def segments(self, lines: dict[int, str] | None = None) -> Iterator[Segment]:
+        """Per-segment views (exact Fractions); ``lines`` maps line numbers to source text."""
+        if self.scale is None:
+            yield from self.objects or ()
+            return
+        den = 10**self.scale
+        for i in range(len(self)):
+            kind = SegmentKind(int(self.kind[i]))
+            line_no = int(self.line[i])
+            span = SourceSpan(self.file, line_no, 1, None, (lines or {}).get(line_no, ""))
+            start = tuple(Fraction(int(v), den) for v in self.start[i])
+            end = tuple(Fraction(int(v), den) for v in self.end[i])
+            arc: dict[str, object] = {}
+            if kind is SegmentKind.ARC:
+                arc = dict(
+                    plane=Plane(int(self.plane[i])),
+                    clockwise=bool(self.clockwise[i]),
+                    centre=(Fraction(int(self.centre[i, 0]), den), Fraction(int(self.centre[i, 1]), den)),
+                    turns=int(self.turns[i]),
+                )
+            feed = None
+            if self.feed is not None and kind in (SegmentKind.LINE, SegmentKind.ARC):
+                feed = Fraction(int(self.feed[i]), den)
+            yield Segment(
+                kind, start, end, self.axes, int(self.block[i]), span,
+                Fraction(int(self.tool_length[i]), den), feed, **arc,
+            )

@@ -1,0 +1,23 @@
+"""Zones: stepped limit-value tables, boxes, polygons, and the allowed set."""
+
+from .model import (
+    AllowedSet,
+    BoxZone,
+    Point,
+    PolygonZone,
+    Region,
+    SteppedZone,
+    Zone,
+    ZonePoint,
+)
+
+__all__ = [
+    "AllowedSet",
+    "BoxZone",
+    "Point",
+    "PolygonZone",
+    "Region",
+    "SteppedZone",
+    "Zone",
+    "ZonePoint",
+]

@@ -1,0 +1,440 @@
+"""Zones and the allowed set, exactly as DESIGN §3 defines them.
+
+A zone sees a point as a mapping ``axis name -> Fraction``.  Axes a zone does
+not name are free.  Allow zones are closed sets; a forbid zone forbids only its
+interior (touching its boundary is allowed).  The allowed set is the
+intersection of all allow zones minus the union of the forbid zones'
+interiors (no allow zone: everywhere allowed).
+
+Margins: ``contains_box(point, d)`` asks whether the closed box of half-width
+``d`` around the point fits in the allowed set (inside every allow zone,
+meeting no forbid zone's interior).  ``d = 0`` is plain membership.
+"""
+
+from __future__ import annotations
+
+import bisect
+import enum
+from collections.abc import Mapping
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import ClassVar, Union
+
+__all__ = [
+    "ZonePoint",
+    "Region",
+    "SteppedZone",
+    "BoxZone",
+    "PolygonZone",
+    "Zone",
+    "AllowedSet",
+    "Point",
+]
+
+Point = Mapping[str, Fraction]
+_ZERO = Fraction(0)
+
+
+class ZonePoint(enum.Enum):
+    """Which point a zone constrains: the machine position or the tool tip."""
+
+    MACHINE = "machine"
+    TIP = "tip"
+
+
+def _ge(value: Fraction, bound: Fraction | None) -> bool:
+    return bound is None or value >= bound
+
+
+def _le(value: Fraction, bound: Fraction | None) -> bool:
+    return bound is None or value <= bound
+
+
+def _gt(value: Fraction, bound: Fraction | None) -> bool:
+    return bound is None or value > bound
+
+
+def _lt(value: Fraction, bound: Fraction | None) -> bool:
+    return bound is None or value < bound
+
+
+@dataclass(frozen=True, slots=True)
+class Region:
+    """One row of a limit-value table: reference values up to ``upto``.
+
+    ``min``/``max`` bound the limited axis in this region; None is unbounded.
+    """
+
+    upto: Fraction
+    min: Fraction | None = None
+    max: Fraction | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class SteppedZone:
+    """A stepped limit-value table.
+
+    Region ``i`` covers reference values ``r`` with ``upto[i-1] < r <= upto[i]``;
+    the first region also includes ``start`` (the file's ``from``).  Reference
+    values outside ``[start, upto[last]]`` are outside the zone.
+
+    Examples
+    --------
+    >>> F = Fraction
+    >>> z = SteppedZone("wheel", "X", "Y", F(0), (Region(F(500), None, F(300)),
+    ...                                          Region(F(800), F(150), F(300))))
+    >>> z.contains({"X": F(500), "Y": F(0)}), z.contains({"X": F(501), "Y": F(0)})
+    (True, False)
+    >>> z.region_sequential(F(650))
+    (1, 3)
+    """
+
+    name: str
+    reference_axis: str
+    limited_axis: str
+    start: Fraction
+    regions: tuple[Region, ...]
+    forbid: bool = False
+    point: ZonePoint = ZonePoint.MACHINE
+    kind: ClassVar[str] = "stepped"
+
+    @property
+    def axes(self) -> tuple[str, ...]:
+        return (self.reference_axis, self.limited_axis)
+
+    @property
+    def uptos(self) -> tuple[Fraction, ...]:
+        return tuple(r.upto for r in self.regions)
+
+    def region_lower(self, i: int) -> Fraction:
+        """Lower end of region i on the reference axis (open except for i = 0)."""
+        return self.start if i == 0 else self.regions[i - 1].upto
+
+    def region_sequential(self, r: Fraction) -> tuple[int | None, int]:
+        """Find the region of reference value ``r`` the way the controller does.
+
+        Compare ``r`` with ``from`` and then with each boundary in turn until it
+        is not greater.  Returns ``(index or None, comparisons made)``; at most
+        ``len(regions) + 1`` comparisons.
+        """
+        comparisons = 1
+        if r < self.start:
+            return None, comparisons
+        for i, region in enumerate(self.regions):
+            comparisons += 1
+            if r <= region.upto:
+                return i, comparisons
+        return None, comparisons
+
+    def region_bisect(self, r: Fraction) -> int | None:
+        """The same lookup by binary search (O(log n))."""
+        if r < self.start or r > self.regions[-1].upto:
+            return None
+        return bisect.bisect_left(self.uptos, r)
+
+    def contains(self, p: Point) -> bool:
+        """Closed-set membership."""
+        i, _ = self.region_sequential(p[self.reference_axis])
+        if i is None:
+            return False
+        reg = self.regions[i]
+        return _ge(p[self.limited_axis], reg.min) and _le(p[self.limited_axis], reg.max)
+
+    def interior_contains(self, p: Point) -> bool:
+        """Membership in the topological interior."""
+        return self.box_meets_interior(p, _ZERO)
+
+    def box_inside(self, p: Point, d: Fraction) -> bool:
+        """Does the closed box of half-width ``d`` around ``p`` lie in the zone?"""
+        r, lim = p[self.reference_axis], p[self.limited_axis]
+        lo, hi = r - d, r + d
+        if lo < self.start or hi > self.regions[-1].upto:
+            return False
+        for i, reg in enumerate(self.regions):
+            a, b = self.region_lower(i), reg.upto
+            touches = lo <= b and (hi >= a if i == 0 else hi > a)
+            if touches and not (_ge(lim - d, reg.min) and _le(lim + d, reg.max)):
+                return False
+        return True
+
+    def box_meets_interior(self, p: Point, d: Fraction) -> bool:
+        """Does the closed box of half-width ``d`` meet the zone's interior?"""
+        r, lim = p[self.reference_axis], p[self.limited_axis]
+        for i, reg in enumerate(self.regions):
+            a, b = self.region_lower(i), reg.upto
+            if r - d < b and r + d > a and _lt(lim - d, reg.max) and _gt(lim + d, reg.min):
+                return True
+        for reg, nxt in zip(self.regions, self.regions[1:]):
+            b = reg.upto
+            if r - d <= b <= r + d:
+                lo = _max_bound(reg.min, nxt.min)
+                hi = _min_bound(reg.max, nxt.max)
+                if (lo is None or hi is None or lo < hi) and _lt(lim - d, hi) and _gt(lim + d, lo):
+                    return True
+        return False
+
+    def bounds(self) -> dict[str, tuple[Fraction | None, Fraction | None]]:
+        mins = [r.min for r in self.regions]
+        maxs = [r.max for r in self.regions]
+        lo = None if any(m is None for m in mins) else min(mins)
+        hi = None if any(m is None for m in maxs) else max(maxs)
+        return {self.reference_axis: (self.start, self.regions[-1].upto), self.limited_axis: (lo, hi)}
+
+
+def _max_bound(a: Fraction | None, b: Fraction | None) -> Fraction | None:
+    if a is None:
+        return b
+    if b is None:
+        return a
+    return max(a, b)
+
+
+def _min_bound(a: Fraction | None, b: Fraction | None) -> Fraction | None:
+    if a is None:
+        return b
+    if b is None:
+        return a
+    return min(a, b)
+
+
+Limits = tuple[tuple[str, Fraction | None, Fraction | None], ...]
+
+
+def _limits_box_inside(limits: Limits, p: Point, d: Fraction) -> bool:
+    return all(_ge(p[a] - d, lo) and _le(p[a] + d, hi) for a, lo, hi in limits)
+
+
+def _limits_box_meets_interior(limits: Limits, p: Point, d: Fraction) -> bool:
+    return all(_lt(p[a] - d, hi) and _gt(p[a] + d, lo) for a, lo, hi in limits)
+
+
+@dataclass(frozen=True, slots=True)
+class BoxZone:
+    """Per-axis ranges ``(axis, min, max)``; None is unbounded.
+
+    >>> F = Fraction
+    >>> vise = BoxZone("vise", (("X", F(0), F(100)), ("Z", None, F(50))), forbid=True)
+    >>> vise.interior_contains({"X": F(0), "Z": F(10)}), vise.interior_contains({"X": F(1), "Z": F(10)})
+    (False, True)
+    """
+
+    name: str
+    limits: Limits
+    forbid: bool = False
+    point: ZonePoint = ZonePoint.MACHINE
+    kind: ClassVar[str] = "box"
+
+    @property
+    def axes(self) -> tuple[str, ...]:
+        return tuple(a for a, _, _ in self.limits)
+
+    def contains(self, p: Point) -> bool:
+        return _limits_box_inside(self.limits, p, _ZERO)
+
+    def interior_contains(self, p: Point) -> bool:
+        return _limits_box_meets_interior(self.limits, p, _ZERO)
+
+    def box_inside(self, p: Point, d: Fraction) -> bool:
+        return _limits_box_inside(self.limits, p, d)
+
+    def box_meets_interior(self, p: Point, d: Fraction) -> bool:
+        return _limits_box_meets_interior(self.limits, p, d)
+
+    def bounds(self) -> dict[str, tuple[Fraction | None, Fraction | None]]:
+        return {a: (lo, hi) for a, lo, hi in self.limits}
+
+
+Vertex = tuple[Fraction, Fraction]
+
+
+def _cross(o: Vertex, a: Vertex, b: Vertex) -> Fraction:
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def _on_segment(q: Vertex, a: Vertex, b: Vertex) -> bool:
+    return (
+        _cross(a, b, q) == 0
+        and min(a[0], b[0]) <= q[0] <= max(a[0], b[0])
+        and min(a[1], b[1]) <= q[1] <= max(a[1], b[1])
+    )
+
+
+def _segment_meets_open_box(a: Vertex, b: Vertex, lo: Vertex, hi: Vertex) -> bool:
+    """Does segment [a, b] meet the open box (lo, hi)?  Exact clipping in t."""
+    t_lo, t_hi = Fraction(0), Fraction(1)
+    lo_open = hi_open = False
+    for k in (0, 1):
+        delta = b[k] - a[k]
+        if delta == 0:
+            if not lo[k] < a[k] < hi[k]:
+                return False
+            continue
+        t1 = (lo[k] - a[k]) / delta
+        t2 = (hi[k] - a[k]) / delta
+        if t1 > t2:
+            t1, t2 = t2, t1
+        if t1 > t_lo or (t1 == t_lo):
+            if t1 > t_lo:
+                t_lo, lo_open = t1, True
+            else:
+                lo_open = True
+        if t2 < t_hi or (t2 == t_hi):
+            if t2 < t_hi:
+                t_hi, hi_open = t2, True
+            else:
+                hi_open = True
+    if lo_open or hi_open:
+        return t_lo < t_hi
+    return t_lo <= t_hi
+
+
+@dataclass(frozen=True, slots=True)
+class PolygonZone:
+    """A simple polygon in the plane of two axes, boundary included.
+
+    ``limits`` optionally bounds other axes (a prism).
+
+    >>> F = Fraction
+    >>> tri = PolygonZone("t", ("X", "Z"), ((F(0), F(0)), (F(10), F(0)), (F(0), F(10))))
+    >>> tri.contains({"X": F(5), "Z": F(5)}), tri.contains({"X": F(6), "Z": F(5)})
+    (True, False)
+    """
+
+    name: str
+    plane: tuple[str, str]
+    vertices: tuple[Vertex, ...]
+    limits: Limits = ()
+    forbid: bool = False
+    point: ZonePoint = ZonePoint.MACHINE
+    kind: ClassVar[str] = "polygon"
+
+    @property
+    def axes(self) -> tuple[str, ...]:
+        return self.plane + tuple(a for a, _, _ in self.limits)
+
+    def edges(self) -> tuple[tuple[Vertex, Vertex], ...]:
+        v = self.vertices
+        return tuple((v[i], v[(i + 1) % len(v)]) for i in range(len(v)))
+
+    def _locate(self, q: Vertex) -> int:
+        """+1 strictly inside, 0 on the boundary, -1 outside."""
+        inside = False
+        for a, b in self.edges():
+            if _on_segment(q, a, b):
+                return 0
+            if (a[1] > q[1]) != (b[1] > q[1]):
+                x_cross = a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+                if q[0] < x_cross:
+                    inside = not inside
+        return 1 if inside else -1
+
+    def _plane_point(self, p: Point) -> Vertex:
+        return (p[self.plane[0]], p[self.plane[1]])
+
+    def contains(self, p: Point) -> bool:
+        return self._locate(self._plane_point(p)) >= 0 and _limits_box_inside(self.limits, p, _ZERO)
+
+    def interior_contains(self, p: Point) -> bool:
+        return self._locate(self._plane_point(p)) > 0 and _limits_box_meets_interior(
+            self.limits, p, _ZERO
+        )
+
+    def box_inside(self, p: Point, d: Fraction) -> bool:
+        q = self._plane_point(p)
+        if not _limits_box_inside(self.limits, p, d):
+            return False
+        if d == 0:
+            return self._locate(q) >= 0
+        lo, hi = (q[0] - d, q[1] - d), (q[0] + d, q[1] + d)
+        if any(_segment_meets_open_box(a, b, lo, hi) for a, b in self.edges()):
+            return False
+        return self._locate(q) >= 0
+
+    def box_meets_interior(self, p: Point, d: Fraction) -> bool:
+        q = self._plane_point(p)
+        if not _limits_box_meets_interior(self.limits, p, d):
+            return False
+        if d == 0:
+            return self._locate(q) > 0
+        lo, hi = (q[0] - d, q[1] - d), (q[0] + d, q[1] + d)
+        if any(_segment_meets_open_box(a, b, lo, hi) for a, b in self.edges()):
+            return True
+        return self._locate(q) > 0
+
+    def bounds(self) -> dict[str, tuple[Fraction | None, Fraction | None]]:
+        xs = [v[0] for v in self.vertices]
+        ys = [v[1] for v in self.vertices]
+        out: dict[str, tuple[Fraction | None, Fraction | None]] = {
+            self.plane[0]: (min(xs), max(xs)),
+            self.plane[1]: (min(ys), max(ys)),
+        }
+        out.update({a: (lo, hi) for a, lo, hi in self.limits})
+        return out
+
+
+Zone = Union[SteppedZone, BoxZone, PolygonZone]
+
+
+@dataclass(frozen=True, slots=True)
+class AllowedSet:
+    """All zones of a machine, and exact membership of machine positions.
+
+    ``tool_axis`` is the axis the tool length acts on; ``point = "tip"`` zones
+    see that axis' machine coordinate minus the active tool length.
+
+    Examples
+    --------
+    >>> F = Fraction
+    >>> s = AllowedSet((BoxZone("travel", (("X", F(0), F(10)),)),
+    ...                 BoxZone("clamp", (("X", F(4), F(6)),), forbid=True)))
+    >>> [s.contains({"X": F(x)}) for x in (0, 4, 5, 6, 11)]
+    [True, True, False, True, False]
+    """
+
+    zones: tuple[Zone, ...]
+    tool_axis: str | None = "Z"
+
+    def seen_by(self, zone: Zone, p: Point, tool_length: Fraction) -> Point:
+        """The point as ``zone`` sees it (tool tip for ``point = "tip"``)."""
+        if zone.point is ZonePoint.TIP and tool_length and self.tool_axis in p:
+            q = dict(p)
+            q[self.tool_axis] = q[self.tool_axis] - tool_length
+            return q
+        return p
+
+    def violated_zones(
+        self, p: Point, tool_length: Fraction = _ZERO, margin: Fraction = _ZERO
+    ) -> tuple[Zone, ...]:
+        """The zones that the box of half-width ``margin`` around ``p`` violates."""
+        out = []
+        for z in self.zones:
+            q = self.seen_by(z, p, tool_length)
+            bad = z.box_meets_interior(q, margin) if z.forbid else not z.box_inside(q, margin)
+            if bad:
+                out.append(z)
+        return tuple(out)
+
+    def contains(self, p: Point, tool_length: Fraction = _ZERO) -> bool:
+        """Is the point in the allowed set?"""
+        return not self.violated_zones(p, tool_length)
+
+    def contains_box(self, p: Point, margin: Fraction, tool_length: Fraction = _ZERO) -> bool:
+        """Does the closed box of half-width ``margin`` around ``p`` fit?"""
+        return not self.violated_zones(p, tool_length, margin)
+
+    def allow_zones(self) -> tuple[Zone, ...]:
+        return tuple(z for z in self.zones if not z.forbid)
+
+    def forbid_zones(self) -> tuple[Zone, ...]:
+        return tuple(z for z in self.zones if z.forbid)
+
+    def bounding_box(self) -> dict[str, tuple[Fraction | None, Fraction | None]]:
+        """Per-axis bounds of the allowed set implied by the machine-point allow zones."""
+        out: dict[str, tuple[Fraction | None, Fraction | None]] = {}
+        for z in self.allow_zones():
+            if z.point is not ZonePoint.MACHINE:
+                continue
+            for axis, (lo, hi) in z.bounds().items():
+                old_lo, old_hi = out.get(axis, (None, None))
+                out[axis] = (_max_bound(old_lo, lo), _min_bound(old_hi, hi))
+        return out
