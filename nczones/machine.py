@@ -16,6 +16,7 @@ from __future__ import annotations
 import decimal
 import difflib
 import enum
+import json
 import re
 import tomllib
 from collections.abc import Callable, Mapping
@@ -127,6 +128,10 @@ class Machine:
 class _Locator:
     """Best-effort line/column of a key in the TOML text (tomllib gives none)."""
 
+    #: A table header line such as ``[machine.rapid]`` or ``[[zones]]`` (not an
+    #: array element like ``["0", "0"],`` on a continuation line).
+    _HEADER_RE = re.compile(r'^\s*\[\[?\s*[A-Za-z0-9_.\- "]+\s*\]\]?\s*(?:#.*)?$')
+
     def __init__(self, path: str, text: str):
         self.path = path
         self.lines = text.splitlines()
@@ -134,7 +139,11 @@ class _Locator:
     def _span(self, index: int, column: int, width: int) -> SourceSpan:
         return SourceSpan(self.path, index + 1, column + 1, column + 1 + width, self.lines[index])
 
+    def _is_header(self, line: str) -> bool:
+        return bool(self._HEADER_RE.match(line)) and '"' not in line.split("]")[0].replace('"', "", 2)
+
     def section(self, header: str, occurrence: int = 0) -> int | None:
+        """0-based line index of the ``occurrence``-th ``[header]``/``[[header]]``."""
         pattern = re.compile(r"^\s*\[+\s*" + re.escape(header) + r"\s*\]+")
         seen = 0
         for i, line in enumerate(self.lines):
@@ -144,22 +153,50 @@ class _Locator:
                 seen += 1
         return None
 
+    def header(self, index: int | None) -> SourceSpan | None:
+        """A span over the header on line ``index`` (as returned by :meth:`section`)."""
+        if index is None:
+            return None
+        line = self.lines[index]
+        stripped = line.split("#")[0].rstrip()
+        col = len(line) - len(line.lstrip())
+        return self._span(index, col, max(1, len(stripped) - col))
+
     def key(
         self, key: str, start: int | None, occurrence: int = 0
     ) -> SourceSpan | None:
-        """Find the ``occurrence``-th ``key =`` after line ``start``, before the next header."""
+        """Find the ``occurrence``-th ``key =`` after line ``start``, before the next header.
+
+        With ``start`` None, search the top of the file before the first header.
+        """
         begin = 0 if start is None else start + 1
         key_re = re.compile(r"(?:^|[\s{,])(" + re.escape(key) + r"|\"" + re.escape(key) + r"\")\s*=")
         seen = 0
         for i in range(begin, len(self.lines)):
             line = self.lines[i]
-            if re.match(r"^\s*\[", line):
+            if self._is_header(line):
                 break
-            m = key_re.search(line)
+            if line.lstrip().startswith("#"):
+                continue
+            m = key_re.search(line.split("#")[0] if "#" in line and '"' not in line else line)
             if m:
                 if seen == occurrence:
                     return self._span(i, m.start(1), len(m.group(1)))
                 seen += 1
+        return None
+
+    def key_in(self, outer: str, start: int | None, key: str, occurrence: int = 0) -> SourceSpan | None:
+        """``key`` inside the inline table ``outer = { ... }`` (one line), or None."""
+        anchor = self.key(outer, start)
+        if anchor is None:
+            return None
+        line = self.lines[anchor.line - 1]
+        key_re = re.compile(r"[\s{,](" + re.escape(key) + r"|\"" + re.escape(key) + r"\")\s*=")
+        seen = 0
+        for m in key_re.finditer(line, anchor.column - 1 + len(outer)):
+            if seen == occurrence:
+                return self._span(anchor.line - 1, m.start(1), len(m.group(1)))
+            seen += 1
         return None
 
     def element(self, array_key: str, start: int | None, index: int, key: str) -> SourceSpan | None:
@@ -169,17 +206,27 @@ class _Locator:
             return None
         seen = -1
         depth = 0
+        in_string = False
         for i in range(anchor.line - 1, len(self.lines)):
             line = self.lines[i]
+            if i > anchor.line - 1 and self._is_header(line):
+                break
             col0 = anchor.column - 1 if i == anchor.line - 1 else 0
             for c in range(col0, len(line)):
                 ch = line[c]
-                if ch == "{":
+                if ch == '"':
+                    in_string = not in_string
+                elif in_string:
+                    continue
+                elif ch == "{":
                     depth += 1
                     if depth == 1:
                         seen += 1
                         if seen == index:
-                            m = re.compile(r"\b" + re.escape(key) + r"\s*=").search(line, c)
+                            end = line.find("}", c)
+                            m = re.compile(r"\b" + re.escape(key) + r"\s*=").search(
+                                line, c, len(line) if end < 0 else end
+                            )
                             if m:
                                 return self._span(i, m.start(), len(key))
                             return self._span(i, c, 1)
@@ -187,8 +234,6 @@ class _Locator:
                     depth -= 1
                 elif ch == "#":
                     break
-            if i > anchor.line - 1 and re.match(r"^\s*\[", line):
-                break
         return None
 
 
@@ -215,14 +260,36 @@ class _Reader:
 
 
 def _written(value: Any) -> str:
-    """The value as the user wrote it (approximately: TOML loses formatting)."""
+    """The value as the user wrote it, in TOML syntax (approximately: TOML loses formatting).
+
+    >>> _written(["0", decimal.Decimal("1.50"), 3, True, {"X": "1"}])
+    '["0", 1.50, 3, true, { X = "1" }]'
+    """
     if isinstance(value, str):
-        return repr(value)
-    if isinstance(value, decimal.Decimal):
-        return str(value)
+        return json.dumps(value, ensure_ascii=False)
     if isinstance(value, bool):
         return "true" if value else "false"
-    return repr(value)
+    if isinstance(value, decimal.Decimal):
+        if value.is_nan():
+            return "nan"
+        if value.is_infinite():
+            return "-inf" if value < 0 else "inf"
+        return str(value)
+    if isinstance(value, list):
+        return "[" + ", ".join(_written(v) for v in value) + "]"
+    if isinstance(value, Mapping):
+        if not value:
+            return "{}"
+        return "{ " + ", ".join(f"{k} = {_written(v)}" for k, v in value.items()) + " }"
+    if value is None:
+        return "nothing"
+    return str(value)
+
+
+#: Decimal exponents beyond these are refused before converting to a Fraction
+#: (``1e999999999`` would otherwise build a gigantic integer).
+_MAX_ADJUSTED_EXPONENT = 9
+_MAX_PLACES = 30
 
 
 def _number(
@@ -250,7 +317,21 @@ def _number(
         if not DECIMAL_RE.match(text):
             rd.report("ZN103", f"{what}: {_written(value)} is not a decimal; write digits with an optional sign and point, such as \"-12.5\"", span)
             return None
-        q = Fraction(decimal.Decimal(text))
+        value_d = decimal.Decimal(text)
+    elif isinstance(value, int):
+        value_d = None
+    else:
+        value_d = value
+    if value_d is not None:
+        sign, digits, exponent = value_d.as_tuple()
+        trailing = len(digits) - len("".join(map(str, digits)).rstrip("0"))
+        if any(digits) and value_d.adjusted() > _MAX_ADJUSTED_EXPONENT:
+            rd.report("ZN105", f"{what}: {_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
+            return None
+        if any(digits) and exponent + trailing < -_MAX_PLACES:
+            rd.report("ZN105", f"{what}: {_written(value)} has more than {_MAX_PLACES} digits after the decimal point", span)
+            return None
+        q = Fraction(value_d)
     else:
         q = Fraction(value)
     if abs(q) > limit:
@@ -275,8 +356,11 @@ def _check_keys(
     for key in table:
         if key not in allowed:
             close = difflib.get_close_matches(key, allowed, n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else f"; allowed keys: {', '.join(allowed)}"
-            rd.report("ZN101", f"{where}: unknown key {key!r}{hint}", rd.loc.key(key, start))
+            hint = f"; did you mean {_written(close[0])}?" if close else f"; allowed keys: {', '.join(allowed)}"
+            span = rd.loc.key(key, start)
+            if span is None and start is None:
+                span = rd.loc.header(rd.loc.section(key))
+            rd.report("ZN101", f"{where}: unknown key {_written(key)}{hint}", span)
 
 
 def _per_axis(
@@ -287,17 +371,28 @@ def _per_axis(
     header_line: int | None,
     *,
     required: bool,
+    inline: tuple[str, int | None] | None = None,
     **number_opts: Any,
 ) -> dict[str, Fraction]:
-    """A table ``{ X = "...", ... }`` keyed by known axis names."""
+    """A table ``{ X = "...", ... }`` keyed by known axis names.
+
+    ``header_line`` is the line of its own ``[header]``; ``inline`` is
+    ``(key, parent header line)`` when it may be written as ``key = { ... }``.
+    """
     out: dict[str, Fraction] = {}
+    own_span = rd.loc.header(header_line)
+    if own_span is None and inline is not None:
+        own_span = rd.loc.key(*inline)
     if not isinstance(value, Mapping):
-        rd.report("ZN103", f"{what}: expected a table of axis values such as {{ X = \"0\" }}, got {_written(value)}", None)
+        rd.report("ZN103", f"{what}: expected a table of axis values such as {{ X = \"0\" }}, got {_written(value)}", own_span)
         return out
     for axis, raw in value.items():
-        span = rd.loc.key(axis, header_line)
+        if header_line is None and inline is not None:
+            span = rd.loc.key_in(inline[0], inline[1], axis)
+        else:
+            span = rd.loc.key(axis, header_line)
         if axis not in axes:
-            rd.report("ZN110", f"{what}: unknown axis {axis!r}; the machine's axes are {', '.join(axes)}", span)
+            rd.report("ZN110", f"{what}: unknown axis {_written(axis)}; the machine's axes are {', '.join(axes)}", span)
             continue
         q = _number(rd, raw, f"{what}.{axis}", span, **number_opts)
         if q is not None:
@@ -305,7 +400,7 @@ def _per_axis(
     if required:
         missing = [a for a in axes if a not in value]
         if missing:
-            rd.report("ZN102", f"{what}: missing value for axis {', '.join(missing)}", None)
+            rd.report("ZN102", f"{what}: missing value for axis {', '.join(missing)} (every axis of the machine needs one)", own_span)
     return out
 
 
@@ -355,7 +450,8 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
             line, col = int(m.group(1)), int(m.group(2))
             lines = text.splitlines()
             span = SourceSpan(path, line, col, col + 1, lines[line - 1] if line <= len(lines) else "")
-        rd.report("ZN100", f"not valid TOML: {exc}", span)
+        reason = re.sub(r"\s*\(at (?:line \d+, column \d+|end of document)\)", "", str(exc))
+        rd.report("ZN100", f"not valid TOML: {reason}", span)
         raise MachineFileError(rd.diagnostics) from None
     machine = _build(rd, data)
     if rd.failed or machine is None:
@@ -415,7 +511,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         if not isinstance(a, str) or a not in AXIS_NAMES:
             rd.report("ZN110", f"[machine] axes: unknown axis {_written(a)}; allowed: {', '.join(AXIS_NAMES)}", rd.loc.key("axes", mline))
         elif a in seen:
-            rd.report("ZN111", f"[machine] axes: axis {a!r} is listed twice", rd.loc.key("axes", mline))
+            rd.report("ZN111", f"[machine] axes: axis {_written(a)} is listed twice", rd.loc.key("axes", mline))
         else:
             seen.add(a)
             axes += (a,)
@@ -434,19 +530,19 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     raw_pulse = mt.get("pulse", "0.001")
     pulse: dict[str, Fraction] = {}
     if isinstance(raw_pulse, Mapping):
-        pulse = _per_axis(rd, raw_pulse, axes, "[machine] pulse", rd.loc.section("machine.pulse"), required=True, positive=True, limit=Fraction(1))
+        pulse = _per_axis(rd, raw_pulse, axes, "[machine] pulse", rd.loc.section("machine.pulse"), required=True, inline=("pulse", mline), positive=True, limit=Fraction(1))
     else:
         q = _number(rd, raw_pulse, "[machine] pulse", rd.loc.key("pulse", mline), positive=True, limit=Fraction(1))
         if q is not None:
             pulse = {a: q for a in axes}
 
-    rapid = _per_axis(rd, mt.get("rapid", {}), axes, "[machine.rapid]", rd.loc.section("machine.rapid"), required=True, positive=True)
+    rapid = _per_axis(rd, mt.get("rapid", {}), axes, "[machine.rapid]", rd.loc.section("machine.rapid"), required=True, inline=("rapid", mline), positive=True)
     raw_max_feed = mt.get("max_feed")
     max_feed: dict[str, Fraction] = {}
     if raw_max_feed is None:
         max_feed = dict(rapid)
     elif isinstance(raw_max_feed, Mapping):
-        max_feed = _per_axis(rd, raw_max_feed, axes, "[machine.max_feed]", rd.loc.section("machine.max_feed"), required=True, positive=True)
+        max_feed = _per_axis(rd, raw_max_feed, axes, "[machine.max_feed]", rd.loc.section("machine.max_feed"), required=True, inline=("max_feed", mline), positive=True)
     else:
         q = _number(rd, raw_max_feed, "[machine] max_feed", rd.loc.key("max_feed", mline), positive=True)
         if q is not None:
@@ -460,11 +556,11 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         rapid_mode = RapidMode.LINEAR
     period = _number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", rd.loc.key("monitor_period_ms", mline), positive=True, limit=Fraction(1000))
 
-    reference = _per_axis(rd, mt.get("reference", {}), axes, "[machine.reference]", rd.loc.section("machine.reference"), required=True)
+    reference = _per_axis(rd, mt.get("reference", {}), axes, "[machine.reference]", rd.loc.section("machine.reference"), required=True, inline=("reference", mline))
     start_raw = mt.get("start")
     start = dict(reference)
     if start_raw is not None:
-        start = _per_axis(rd, start_raw, axes, "[machine.start]", rd.loc.section("machine.start"), required=True)
+        start = _per_axis(rd, start_raw, axes, "[machine.start]", rd.loc.section("machine.start"), required=True, inline=("start", mline))
 
     tool_axis = mt.get("tool_axis", "Z" if "Z" in axes else None)
     if tool_axis is not None and tool_axis not in axes:
@@ -483,10 +579,10 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     for key, value in raw_offsets.items():
         if key not in WORK_OFFSETS:
             close = difflib.get_close_matches(key, WORK_OFFSETS, n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else f"; allowed: {', '.join(WORK_OFFSETS)}"
-            rd.report("ZN101", f"[offsets]: unknown work offset {key!r}{hint}", rd.loc.key(key, oline))
+            hint = f"; did you mean {_written(close[0])}?" if close else f"; allowed: {', '.join(WORK_OFFSETS)}"
+            rd.report("ZN101", f"[offsets]: unknown work offset {_written(key)}{hint}", rd.loc.key(key, oline))
             continue
-        vals = _per_axis(rd, value, axes, f"[offsets] {key}", oline, required=False)
+        vals = _per_axis(rd, value, axes, f"[offsets] {key}", rd.loc.section(f"offsets.{key}"), required=False, inline=(key, oline))
         offsets[key] = tuple(vals.get(a, Fraction(0)) for a in axes)
 
     # tool lengths
@@ -500,7 +596,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         m = re.fullmatch(r"H(\d{1,4})", key)
         span = rd.loc.key(key, tline)
         if not m:
-            rd.report("ZN101", f"[tool_lengths]: {key!r} is not a length register; write H followed by its number, such as H1", span)
+            rd.report("ZN101", f"[tool_lengths]: {_written(key)} is not a length register; write H followed by its number, such as H1", span)
             continue
         q = _number(rd, value, f"[tool_lengths] {key}", span)
         if q is not None:
@@ -532,12 +628,20 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     # The program starts with no tool length active (G49), so tip zones see Z itself.
     bad = allowed.violated_zones(machine.point(start_t))
     if bad:
-        where = "[machine.start]" if start_raw is not None else "[machine.reference] (the start position by default)"
+        if start_raw is not None:
+            where = f"[machine.start]: the start position {_fmt_point(axes, start_t)}"
+        else:
+            where = (
+                f"[machine.reference]: the start position {_fmt_point(axes, start_t)} "
+                "(the reference position, as there is no [machine.start])"
+            )
         rd.report(
             "ZN130",
-            f"{where}: the start position ({_fmt_point(axes, start_t)}) is outside the allowed set "
-            f"(zone {', '.join(repr(z.name) for z in bad)}); nothing can be verified from there",
-            rd.loc.section("machine.start") if start_raw is not None else rd.loc.section("machine.reference"),
+            f"{where} is outside the allowed set (it violates zone "
+            f"{', '.join(_written(z.name) for z in bad)}); no program can be verified from there",
+            rd.loc.header(rd.loc.section("machine.start")) or rd.loc.key("start", mline)
+            if start_raw is not None
+            else rd.loc.header(rd.loc.section("machine.reference")) or rd.loc.key("reference", mline),
         )
         return None
     if start_raw is not None:
@@ -545,9 +649,9 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         if bad_ref:
             rd.report(
                 "ZN131",
-                f"[machine.reference]: the reference position ({_fmt_point(axes, ref_t)}) is outside the allowed set "
-                f"(zone {', '.join(repr(z.name) for z in bad_ref)}); every G28 will be reported unsafe",
-                rd.loc.section("machine.reference"),
+                f"[machine.reference]: the reference position {_fmt_point(axes, ref_t)} is outside the allowed set "
+                f"(it violates zone {', '.join(_written(z.name) for z in bad_ref)}); every move to it (G28, homing) will be reported unsafe",
+                rd.loc.header(rd.loc.section("machine.reference")) or rd.loc.key("reference", mline),
                 Severity.WARNING,
             )
     return Machine(
@@ -568,18 +672,18 @@ def _modal(rd: _Reader, raw: Any, mline: int | None) -> tuple[str, ...]:
         rd.report("ZN103", f"[machine] modal: expected a list of G codes such as [\"G90\", \"G21\"], got {_written(raw)}", span)
         return DEFAULT_MODAL
     chosen = dict(zip(_MODAL_CHOICES, DEFAULT_MODAL))
-    given: set[str] = set()
+    given: dict[str, str] = {}
     for code in raw:
         norm = code.strip().upper()
         group = next((g for g, choices in _MODAL_CHOICES.items() if norm in choices), None)
         if group is None:
             allowed = ", ".join(c for cs in _MODAL_CHOICES.values() for c in cs)
-            rd.report("ZN107", f"[machine] modal: {code!r} is not an initial modal code nczones models; allowed: {allowed}", span)
+            rd.report("ZN107", f"[machine] modal: {_written(code)} is not an initial modal code nczones models; allowed: {allowed}", span)
             continue
         if group in given:
-            rd.report("ZN108", f"[machine] modal: {code!r} conflicts with another code of the {group} group", span)
+            rd.report("ZN108", f"[machine] modal: {_written(code)} conflicts with {_written(given[group])}; both set the {group} mode, give one", span)
             continue
-        given.add(group)
+        given[group] = code
         chosen[group] = norm
     return tuple(chosen.values())
 
@@ -596,10 +700,9 @@ def _zones(rd: _Reader, raw: Any, axes: tuple[str, ...], tool_axis: str | None) 
             rd.report("ZN103", f"zone {index + 1}: expected a table, got {_written(zt)}", None)
             continue
         name = zt.get("name")
-        label = f"zone {name!r}" if isinstance(name, str) else f"zone {index + 1}"
-        label = label.replace("'", '"')
+        label = f"zone {json.dumps(name, ensure_ascii=False)}" if isinstance(name, str) else f"zone {index + 1}"
         if not isinstance(name, str) or not name.strip():
-            rd.report("ZN102", f"{label}: missing name (every zone needs a name the reports can use)", rd.loc.key("kind", header))
+            rd.report("ZN102", f"{label}: missing name (every zone needs a name the reports can use)", rd.loc.header(header))
             name = f"zone {index + 1}"
         elif name in names:
             rd.report("ZN112", f"{label}: the name is used by another zone; names must be unique", rd.loc.key("name", header))
@@ -632,7 +735,7 @@ def _axis_field(rd: _Reader, zt: Mapping[str, Any], key: str, label: str, header
     value = zt.get(key)
     span = rd.loc.key(key, header)
     if value is None:
-        rd.report("ZN102", f"{label}: missing {key} (one of {', '.join(axes)})", span)
+        rd.report("ZN102", f"{label}: missing {key} (one of {', '.join(axes)})", span or rd.loc.header(header))
         return None
     if value not in axes:
         rd.report("ZN110", f"{label}: {key} {_written(value)} is not one of the machine's axes ({', '.join(axes)})", span)
@@ -644,9 +747,9 @@ def _stepped(rd, zt, label, name, header, axes, forbid, point) -> SteppedZone | 
     ref = _axis_field(rd, zt, "reference_axis", label, header, axes)
     lim = _axis_field(rd, zt, "limited_axis", label, header, axes)
     if ref is not None and ref == lim:
-        rd.report("ZN111", f"{label}: reference_axis and limited_axis are both {ref!r}; a table limits one axis by another", rd.loc.key("limited_axis", header))
+        rd.report("ZN111", f"{label}: reference_axis and limited_axis are both {_written(ref)}; a table limits one axis by another", rd.loc.key("limited_axis", header))
     if "from" not in zt:
-        rd.report("ZN102", f"{label}: missing from (the lower bound of the first region on {ref or 'the reference axis'})", None)
+        rd.report("ZN102", f"{label}: missing from (the lower bound of the first region on {ref or 'the reference axis'})", rd.loc.header(header))
         start = None
     else:
         start = _number(rd, zt["from"], f"{label}: from", rd.loc.key("from", header))
@@ -666,8 +769,8 @@ def _stepped(rd, zt, label, name, header, axes, forbid, point) -> SteppedZone | 
         for key in rt:
             if key not in ("upto", "min", "max"):
                 close = difflib.get_close_matches(key, ("upto", "min", "max"), n=1)
-                hint = f"; did you mean {close[0]!r}?" if close else "; allowed keys: upto, min, max"
-                rd.report("ZN101", f"{rlabel}: unknown key {key!r}{hint}", rd.loc.element("regions", header, i, key))
+                hint = f"; did you mean {_written(close[0])}?" if close else "; allowed keys: upto, min, max"
+                rd.report("ZN101", f"{rlabel}: unknown key {_written(key)}{hint}", rd.loc.element("regions", header, i, key))
                 ok = False
         if "upto" not in rt:
             rd.report("ZN102", f"{rlabel}: missing upto (the region's upper bound on {ref or 'the reference axis'})", rd.loc.element("regions", header, i, "upto"))
@@ -683,7 +786,7 @@ def _stepped(rd, zt, label, name, header, axes, forbid, point) -> SteppedZone | 
             rd.report("ZN122", f"{rlabel}: min {format_decimal(lo)} is greater than max {format_decimal(hi)}; the region would allow nothing", rd.loc.element("regions", header, i, "min"))
             ok = False
         if previous is not None and upto <= previous:
-            prev_word = "from" if i == 0 else "previous upto"
+            prev_word = "from value" if i == 0 else "previous upto"
             rd.report("ZN121", f"{rlabel}: upto {format_decimal(upto)} is not greater than the {prev_word} {format_decimal(previous)}", rd.loc.element("regions", header, i, "upto"))
             ok = False
         previous = upto
@@ -706,11 +809,11 @@ def _limits(rd, zt, label, header, axes, exclude: tuple[str, ...] = ()) -> tuple
     limits = []
     for axis in dict.fromkeys(list(lows) + list(highs)):
         if axis not in axes:
-            rd.report("ZN110", f"{label}: unknown axis {axis!r} in min/max; the machine's axes are {', '.join(axes)}", rd.loc.key(axis, header))
+            rd.report("ZN110", f"{label}: unknown axis {_written(axis)} in min/max; the machine's axes are {', '.join(axes)}", rd.loc.key(axis, header))
             ok = False
             continue
         if axis in exclude:
-            rd.report("ZN111", f"{label}: axis {axis!r} is in the polygon's plane and may not also have min/max", rd.loc.key(axis, header))
+            rd.report("ZN111", f"{label}: axis {_written(axis)} is in the polygon's plane and may not also have min/max", rd.loc.key(axis, header))
             ok = False
             continue
         lo = _number(rd, lows[axis], f"{label}: min.{axis}", rd.loc.key(axis, header)) if axis in lows else None
@@ -743,10 +846,10 @@ def _polygon(rd, zt, label, name, header, axes, forbid, point) -> PolygonZone | 
         return None
     bad_axes = [a for a in plane if a not in axes]
     if bad_axes:
-        rd.report("ZN110", f"{label}: plane axis {bad_axes[0]!r} is not one of the machine's axes ({', '.join(axes)})", span)
+        rd.report("ZN110", f"{label}: plane axis {_written(bad_axes[0])} is not one of the machine's axes ({', '.join(axes)})", span)
         return None
     if plane[0] == plane[1]:
-        rd.report("ZN111", f"{label}: plane names axis {plane[0]!r} twice", span)
+        rd.report("ZN111", f"{label}: plane names axis {_written(plane[0])} twice", span)
         return None
     raw_vertices = zt.get("vertices")
     vspan = rd.loc.key("vertices", header)
@@ -779,18 +882,18 @@ def _polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
     for i in range(n):
         if vertices[i] == vertices[(i + 1) % n]:
             return f"vertices {i + 1} and {(i + 1) % n + 1} are the same point"
-    area2 = sum(
-        vertices[i][0] * vertices[(i + 1) % n][1] - vertices[(i + 1) % n][0] * vertices[i][1]
-        for i in range(n)
-    )
-    if area2 == 0:
-        return "the vertices enclose no area"
+    if all(_orient(vertices[0], vertices[1], v) == 0 for v in vertices[2:]):
+        return "the vertices lie on one line and enclose no area"
     edges = [(vertices[i], vertices[(i + 1) % n]) for i in range(n)]
     for i in range(n):
         for j in range(i + 1, n):
             adjacent = j == i + 1 or (i == 0 and j == n - 1)
             if _segments_intersect(*edges[i], *edges[j], adjacent):
-                return f"edges {i + 1} and {j + 1} cross or overlap; the polygon must not intersect itself"
+                return (
+                    f"edge {i + 1} (vertex {i + 1} to {(i + 1) % n + 1}) and edge {j + 1} "
+                    f"(vertex {j + 1} to {(j + 1) % n + 1}) cross or overlap; "
+                    "the polygon must not intersect itself"
+                )
     return None
 
 
