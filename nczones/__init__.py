@@ -13,6 +13,7 @@ from .exact import exact, format_decimal, parse_decimal  # noqa: E402
 from .machine import Machine, load_machine, parse_machine  # noqa: E402
 from .motion import Plane, Segment, SegmentKind  # noqa: E402
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, ZonePoint  # noqa: E402
+from .controller import homing as _homing  # noqa: E402,F401  (registers the [homing] section)
 
 __all__ = [
     "__version__",
