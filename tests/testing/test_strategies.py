@@ -1,0 +1,56 @@
+"""The public strategies produce what they promise."""
+
+from fractions import Fraction
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nczones.exact import decimal_places
+from nczones.testing import boundary_values, decimals, machines, programs, zone_tables
+
+
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(zone_tables(places=2))
+def test_zone_tables_are_valid_limit_value_tables(table):
+    uptos = (table.start,) + table.uptos
+    assert all(a < b for a, b in zip(uptos, uptos[1:]))
+    for r in table.regions:
+        if r.min is not None and r.max is not None:
+            assert r.min <= r.max
+        for v in (r.upto, r.min, r.max):
+            if v is not None:
+                assert decimal_places(v) <= 2
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(machines())
+def test_generated_machines_start_inside_their_allowed_set(machine):
+    assert machine.allowed.contains(machine.point(machine.start))
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(decimals(min_value=Fraction(-1, 3), max_value=Fraction(7, 2), places=3))
+def test_decimals_respect_bounds_and_places(q):
+    assert Fraction(-1, 3) <= q <= Fraction(7, 2)
+    assert decimal_places(q) <= 3
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(st.data())
+def test_programs_write_only_decimals_and_reach_boundaries(data):
+    machine = data.draw(machines())
+    text = data.draw(programs(machine, max_blocks=10, boundary_bias=1.0))
+    assert text.startswith("%\nG21 G90 G17 G54 G94")
+    assert "e" not in text.lower().replace("\n", " ").split("m30")[0].replace("g", "")  # no exponents
+    for word in text.split():
+        if word[0] in "XYIJ":
+            assert decimal_places(Fraction(word[1:])) is not None
+
+
+def test_boundary_values_lists_every_edge_of_the_table():
+    from hypothesis import find
+
+    machine = find(machines(forbid_boxes=False), lambda m: len(m.zones[0].regions) >= 2)
+    table = machine.zones[0]
+    xs = boundary_values(machine, "X")
+    assert set(xs) == {table.start, *table.uptos}
