@@ -1,8 +1,11 @@
 """Zones and the allowed set, exactly as DESIGN §3 defines them.
 
 A zone sees a point as a mapping ``axis name -> Fraction``.  Axes a zone does
-not name are free.  Allow zones are closed sets; a forbid zone forbids only its
-interior (touching its boundary is allowed).  The allowed set is the
+not name are free.  Boxes and polygons are closed sets; a stepped table is the
+union of its half-open rows (a reference value equal to ``upto[i]`` reads row
+``i``'s limits, so where the next row is wider the table is not closed).  A
+forbid zone forbids only its interior (touching its boundary is allowed; a flat
+range such as ``min = max`` has no interior and forbids nothing).  The allowed set is the
 intersection of all allow zones minus the union of the forbid zones'
 interiors (no allow zone: everywhere allowed).
 
@@ -162,14 +165,20 @@ class SteppedZone:
         r, lim = p[self.reference_axis], p[self.limited_axis]
         for i, reg in enumerate(self.regions):
             a, b = self.region_lower(i), reg.upto
-            if r - d < b and r + d > a and _lt(lim - d, reg.max) and _gt(lim + d, reg.min):
+            if (
+                r - d < b
+                and r + d > a
+                and _open_nonempty(reg.min, reg.max)
+                and _lt(lim - d, reg.max)
+                and _gt(lim + d, reg.min)
+            ):
                 return True
         for reg, nxt in zip(self.regions, self.regions[1:]):
             b = reg.upto
             if r - d <= b <= r + d:
                 lo = _max_bound(reg.min, nxt.min)
                 hi = _min_bound(reg.max, nxt.max)
-                if (lo is None or hi is None or lo < hi) and _lt(lim - d, hi) and _gt(lim + d, lo):
+                if _open_nonempty(lo, hi) and _lt(lim - d, hi) and _gt(lim + d, lo):
                     return True
         return False
 
@@ -204,8 +213,15 @@ def _limits_box_inside(limits: Limits, p: Point, d: Fraction) -> bool:
     return all(_ge(p[a] - d, lo) and _le(p[a] + d, hi) for a, lo, hi in limits)
 
 
+def _open_nonempty(lo: Fraction | None, hi: Fraction | None) -> bool:
+    """Is the open interval (lo, hi) non-empty?  (A flat range has no interior.)"""
+    return lo is None or hi is None or lo < hi
+
+
 def _limits_box_meets_interior(limits: Limits, p: Point, d: Fraction) -> bool:
-    return all(_lt(p[a] - d, hi) and _gt(p[a] + d, lo) for a, lo, hi in limits)
+    return all(
+        _open_nonempty(lo, hi) and _lt(p[a] - d, hi) and _gt(p[a] + d, lo) for a, lo, hi in limits
+    )
 
 
 @dataclass(frozen=True, slots=True)
