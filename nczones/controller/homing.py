@@ -536,7 +536,7 @@ def simulate_homing(
             grid_shift, shift_source = cfg.grid_shift, "stored"
         else:
             grid_shift = measure_grid_shift(cfg, pulse, phase=phase).grid_shift
-            shift_source = "measured at installation (trip offset 0)"
+            shift_source = "measured at installation with trip offset 0"
         if (grid_shift / pulse).denominator != 1:
             raise InvalidArgument(f"grid shift {format_decimal(grid_shift)} is not a whole number of pulses")
 
@@ -623,8 +623,8 @@ def simulate_homing(
     end = d * n_latch + shift_pulses
     t_shift = t + abs(shift_pulses) * u_l
     events.append(HomingEvent(EventKind.SHIFT_MOVE, end, end * pulse, t_shift,
-                              f"move by the {shift_source} grid shift {format_decimal(grid_shift)} "
-                              f"({shift_pulses} pulses)"))
+                              f"move by the grid shift {format_decimal(grid_shift)} "
+                              f"({shift_source}; {shift_pulses} pulses)"))
     error = end - int(cfg.machine_zero / pulse)
     events.append(HomingEvent(EventKind.ORIGIN_SET, end, end * pulse, t_shift,
                               f"origin set; controller zero - machine zero = {error} pulses "
