@@ -1,0 +1,237 @@
+"""Plots of the allowed set and toolpaths (matplotlib; floats for drawing only).
+
+:func:`plot_zones` draws the zones of a machine in the plane of two axes:
+allow zones shaded, the area outside them grey, forbid zones hatched red.
+:func:`plot_path` draws motion segments over it (rapids dashed, arcs
+sampled finely), and :func:`mark_points` marks counterexample points.
+Nothing here feeds back into a proof.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from fractions import Fraction
+
+import matplotlib.pyplot as plt
+from matplotlib.patches import Polygon as PolygonPatch
+from matplotlib.patches import Rectangle
+
+from ..exact import to_float
+from ..machine import Machine
+from ..motion import Segment, SegmentKind
+from ..zones import Zone
+
+__all__ = ["plot_zones", "plot_path", "mark_points", "plot_machine", "path_points_float", "view_limits"]
+
+_ALLOW = "#cfe8cf"
+_FORBID = "#e06666"
+_OUTSIDE = "#e6e6e6"
+
+
+def view_limits(machine: Machine, plane: tuple[str, str], pad_fraction: float = 0.08) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Float view limits covering every finite zone bound in the plane."""
+    out = []
+    for axis in plane:
+        values = [machine.start[machine.axis_names.index(axis)], machine.reference[machine.axis_names.index(axis)]]
+        for z in machine.zones:
+            lo, hi = z.bounds().get(axis, (None, None))
+            values += [v for v in (lo, hi) if v is not None]
+        lo_f, hi_f = to_float(min(values)), to_float(max(values))
+        pad = (hi_f - lo_f) * pad_fraction or 10.0
+        out.append((lo_f - pad, hi_f + pad))
+    return out[0], out[1]
+
+
+def _finite(v: Fraction | None, default: float) -> float:
+    return default if v is None else to_float(v)
+
+
+def _zone_patches(zone: Zone, plane: tuple[str, str], xlim, ylim):
+    """Rectangles/polygons (float) that draw ``zone`` in ``plane``; None if not drawable."""
+    h, v = plane
+    if zone.kind == "stepped":
+        rects = []
+        if {zone.reference_axis, zone.limited_axis} != {h, v}:
+            return None
+        for i, reg in enumerate(zone.regions):
+            a, b = to_float(zone.region_lower(i)), to_float(reg.upto)
+            lo, hi = _finite(reg.min, -1e9), _finite(reg.max, 1e9)
+            if zone.reference_axis == h:
+                rects.append(((a, lo), b - a, hi - lo))
+            else:
+                rects.append(((lo, a), hi - lo, b - a))
+        return ("rects", rects)
+    bounds = zone.bounds()
+    if zone.kind == "polygon" and tuple(zone.plane) in ((h, v), (v, h)):
+        pts = [(to_float(p[0]), to_float(p[1])) for p in zone.vertices]
+        if tuple(zone.plane) == (v, h):
+            pts = [(y, x) for x, y in pts]
+        return ("poly", pts)
+    if h not in bounds and v not in bounds:
+        return None
+    hx = bounds.get(h, (None, None))
+    vy = bounds.get(v, (None, None))
+    x0, x1 = _finite(hx[0], -1e9), _finite(hx[1], 1e9)
+    y0, y1 = _finite(vy[0], -1e9), _finite(vy[1], 1e9)
+    return ("rects", [((x0, y0), x1 - x0, y1 - y0)])
+
+
+def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax=None, *, legend: bool = True):
+    """Draw the machine's zones in the plane of two axes.
+
+    Parameters
+    ----------
+    machine : Machine
+    plane : (str, str), optional
+        Horizontal and vertical axis; default the machine's first two axes.
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib Axes
+
+    Examples
+    --------
+    >>> from nczones import load_machine
+    >>> ax = plot_zones(load_machine("specs/machines/grinder.toml"))
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('X (mm)', 'Y (mm)')
+    """
+    if plane is None:
+        plane = (machine.axis_names[0], machine.axis_names[1])
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7, 4.5))
+    xlim, ylim = view_limits(machine, plane)
+    allow = [z for z in machine.zones if not z.forbid]
+    if allow:
+        ax.add_patch(Rectangle((xlim[0], ylim[0]), xlim[1] - xlim[0], ylim[1] - ylim[0], color=_OUTSIDE, zorder=0))
+    for z in allow:
+        drawn = _zone_patches(z, plane, xlim, ylim)
+        if drawn is None:
+            continue
+        kind, shapes = drawn
+        label = f"{z.name} (allowed{', tool tip' if z.point.value == 'tip' else ''})"
+        if kind == "rects":
+            for k, (xy, w, hgt) in enumerate(shapes):
+                ax.add_patch(Rectangle(xy, w, hgt, facecolor=_ALLOW, edgecolor="#4c8c4c", lw=1.0, zorder=1, label=label if k == 0 else None))
+        else:
+            ax.add_patch(PolygonPatch(shapes, closed=True, facecolor=_ALLOW, edgecolor="#4c8c4c", zorder=1, label=label))
+    for z in machine.zones:
+        if not z.forbid:
+            continue
+        drawn = _zone_patches(z, plane, xlim, ylim)
+        if drawn is None:
+            continue
+        kind, shapes = drawn
+        label = f"{z.name} (forbidden{', tool tip' if z.point.value == 'tip' else ''})"
+        if kind == "rects":
+            for k, (xy, w, hgt) in enumerate(shapes):
+                ax.add_patch(Rectangle(xy, w, hgt, facecolor=_FORBID, alpha=0.35, hatch="//", edgecolor=_FORBID, zorder=2, label=label if k == 0 else None))
+        else:
+            ax.add_patch(PolygonPatch(shapes, closed=True, facecolor=_FORBID, alpha=0.35, hatch="//", edgecolor=_FORBID, zorder=2, label=label))
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    unit = {a.name: ("deg" if a.rotary else "mm") for a in machine.axes}
+    ax.set_xlabel(f"{plane[0]} ({unit[plane[0]]})")
+    ax.set_ylabel(f"{plane[1]} ({unit[plane[1]]})")
+    ax.set_title(machine.name)
+    if legend:
+        ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    return ax
+
+
+def _arc_float_points(seg: Segment, steps_per_turn: int = 360) -> list[tuple[float, ...]]:
+    """Float samples along an arc (for drawing); the exact geometry lives in the prover."""
+    i, j, _ = seg.plane_indices()
+    s = [to_float(c) for c in seg.start]
+    e = [to_float(c) for c in seg.end]
+    if seg.centre is not None:
+        ca, cb = to_float(seg.centre[0]), to_float(seg.centre[1])
+    else:  # R-format: float centre for drawing only
+        r = to_float(seg.radius)
+        dx, dy = e[i] - s[i], e[j] - s[j]
+        d = math.hypot(dx, dy)
+        h = math.sqrt(max(r * r - d * d / 4, 0.0))
+        sign = (1 if seg.clockwise else -1) * (1 if r > 0 else -1)
+        ca = (s[i] + e[i]) / 2 - sign * h * dy / d
+        cb = (s[j] + e[j]) / 2 + sign * h * dx / d
+    a0 = math.atan2(s[j] - cb, s[i] - ca)
+    a1 = math.atan2(e[j] - cb, e[i] - ca)
+    sweep = a1 - a0
+    if seg.clockwise:
+        while sweep >= 0:
+            sweep -= 2 * math.pi
+    else:
+        while sweep <= 0:
+            sweep += 2 * math.pi
+    if seg.start == seg.end:
+        sweep = -2 * math.pi if seg.clockwise else 2 * math.pi
+    sweep += (-1 if seg.clockwise else 1) * 2 * math.pi * seg.turns
+    r0 = math.hypot(s[i] - ca, s[j] - cb)
+    r1 = math.hypot(e[i] - ca, e[j] - cb)
+    n = max(8, int(abs(sweep) / (2 * math.pi) * steps_per_turn))
+    out = []
+    for k in range(n + 1):
+        t = k / n
+        ang = a0 + sweep * t
+        r = r0 + (r1 - r0) * t
+        p = [sc + (ec - sc) * t for sc, ec in zip(s, e)]
+        p[i] = ca + r * math.cos(ang)
+        p[j] = cb + r * math.sin(ang)
+        out.append(tuple(p))
+    return out
+
+
+def path_points_float(seg: Segment) -> list[tuple[float, ...]]:
+    """Float points along one segment, in machine axis order (for plots)."""
+    if seg.kind is SegmentKind.ARC:
+        return _arc_float_points(seg)
+    return [tuple(to_float(c) for c in seg.start), tuple(to_float(c) for c in seg.end)]
+
+
+def plot_path(
+    segments: Iterable[Segment],
+    plane: Sequence[str],
+    ax,
+    *,
+    highlight_blocks: Iterable[int] = (),
+    color: str = "#1f4e9c",
+    label: str | None = "toolpath",
+):
+    """Draw segments in ``plane``: feeds solid, rapids dashed, highlighted blocks red."""
+    hot = set(highlight_blocks)
+    first_feed = first_rapid = True
+    for seg in segments:
+        if seg.kind is SegmentKind.DWELL:
+            continue
+        pts = path_points_float(seg)
+        h, v = seg.axes.index(plane[0]), seg.axes.index(plane[1])
+        xs = [p[h] for p in pts]
+        ys = [p[v] for p in pts]
+        rapid = seg.kind is SegmentKind.RAPID
+        c = "#c00000" if seg.block in hot else color
+        lab = None
+        if label and rapid and first_rapid:
+            lab, first_rapid = "rapid", False
+        elif label and not rapid and first_feed:
+            lab, first_feed = label, False
+        ax.plot(xs, ys, linestyle="--" if rapid else "-", color=c, lw=1.8 if seg.block in hot else 1.2, zorder=4, label=lab)
+    return ax
+
+
+def mark_points(points: Iterable[tuple[float, float]], ax, *, label: str = "counterexample"):
+    """Mark points (already projected to the plot plane) with red crosses."""
+    pts = list(points)
+    if pts:
+        ax.scatter([p[0] for p in pts], [p[1] for p in pts], marker="X", s=80, color="#c00000", zorder=6, label=label)
+    return ax
+
+
+def plot_machine(machine: Machine, segments: Iterable[Segment] = (), plane: tuple[str, str] | None = None, ax=None):
+    """Zones plus an optional toolpath in one call (the notebooks' entry point)."""
+    ax = plot_zones(machine, plane, ax, legend=False)
+    plane = plane or (machine.axis_names[0], machine.axis_names[1])
+    plot_path(segments, plane, ax)
+    ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    return ax
