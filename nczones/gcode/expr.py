@@ -1,0 +1,384 @@
+"""Parameters and expression evaluation, the way LinuxCNC evaluates them.
+
+Values are IEEE doubles, as in the controller: every arithmetic operation,
+comparison, function and loop condition is computed on the double the
+controller computes (trigonometry in degrees, ``COS[x]`` is
+``cos((x * pi) / 180)`` exactly as ``interp_execute.cc`` writes it).
+
+Exact shadow (the documented choice for "plain decimals stay exact")
+---------------------------------------------------------------------
+Alongside each double the evaluator carries an optional exact rational
+*shadow*.  Decimal literals have one (``0.1`` is exactly 1/10); ``+ - * /``,
+unary minus, ``ABS``, ``FIX``, ``FUP``, ``ROUND``, comparisons and logic
+propagate it; other functions (``SIN``, ``SQRT``, ``**`` ...) drop it.  After
+every operation the shadow is kept **only if the controller's double is the
+double nearest to it** (``float(shadow) == double``); otherwise it is dropped
+and the value is the double itself.  A word finally receives the shadow when
+there is one, else ``Fraction(double)`` (exact: every double is a rational).
+So the value a word receives always rounds to exactly the double the
+controller uses, and is the decimal the programmer wrote whenever that is
+consistent: ``#1=0.1`` then ten ``G91 Y#1`` moves add exactly 1, while
+``X[0.1+0.2]`` is ``Fraction(0.30000000000000004)`` because the controller's
+sum is not the double nearest to 3/10.
+
+>>> p = Parameters()
+>>> p.set(1, Fraction("0.1"))
+>>> p.get(1), p.get_exact(1)
+(0.1, Fraction(1, 10))
+>>> word_value(evaluate((NUM, 0.5, Fraction(1, 2)), p))
+Fraction(1, 2)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from fractions import Fraction
+
+from ..errors import InvalidArgument
+from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
+
+__all__ = [
+    "Parameters",
+    "EvalError",
+    "evaluate",
+    "word_value",
+    "TOLERANCE_EQUAL",
+    "MAX_PARAMETER",
+    "format_parameter",
+]
+
+#: LinuxCNC compares EQ/NE with this absolute tolerance (``TOLERANCE_EQUAL``).
+TOLERANCE_EQUAL = 0.0001
+#: Highest numbered parameter (LinuxCNC ``RS274NGC_MAX_PARAMETERS - 1``).
+MAX_PARAMETER = 5601
+#: Subroutine arguments live in #1..#30 and are local to a call.
+SUB_PARAMS = 30
+
+
+class EvalError(Exception):
+    """Internal: a run-time language error; the caller attaches the span (GC3xx)."""
+
+    def __init__(self, code: str, message: str):
+        super().__init__(message)
+        self.code = code
+        self.message = message
+
+
+Value = tuple  # (float, Fraction | None)
+
+
+def _pair(value) -> Value:
+    if isinstance(value, Fraction):
+        return (value.numerator / value.denominator, value)
+    if isinstance(value, bool):
+        raise InvalidArgument(f"parameter value {value!r} is a boolean, expected a number")
+    if isinstance(value, int):
+        return (float(value), Fraction(value))
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            raise InvalidArgument(f"parameter value {value!r} is not finite")
+        return (value, None)
+    raise InvalidArgument(f"parameter value {value!r} must be a Fraction, int or float")
+
+
+class Parameters:
+    """The parameter store of one program run, shared with the interpreter.
+
+    Numbered parameters ``#1``..``#5601`` read 0 until set.  Named parameters
+    (``#<depth>``) are local to the current subroutine call (the main program
+    has its own scope) and must be set before they are read; names starting
+    with ``_`` are global.  Names are lower case without blanks, as written
+    between ``<`` and ``>`` after LinuxCNC's blank removal.
+
+    The interpreter hooks its state in two ways:
+
+    * ``set(key, value)`` at any time (e.g. after a G10 changes #5221); the
+      language layer reads parameters lazily, so a block yielded after the
+      call sees the new value;
+    * ``provide(key, getter)`` registers a computed, read-only parameter
+      (``5420`` current X, ``"_x"``...): every read calls ``getter()``.
+
+    ``on_write``, if set, is called as ``on_write(key, value)`` for every
+    assignment the *program* makes (``#5221 = 10``), after it takes effect.
+
+    >>> p = Parameters()
+    >>> p.provide(5420, lambda: Fraction(3, 2))
+    >>> p.get(5420), p.get(7)
+    (1.5, 0.0)
+    >>> p.set("_feed", 200); p.get("_feed")
+    200.0
+    """
+
+    __slots__ = ("_num", "_globals", "_scopes", "_providers", "on_write", "max_parameter")
+
+    def __init__(self, numbered: dict | None = None, named: dict | None = None):
+        self._num: dict[int, Value] = {}
+        self._globals: dict[str, Value] = {}
+        self._scopes: list[dict[str, Value]] = [{}]
+        self._providers: dict[int | str, Callable[[], object]] = {}
+        self.on_write: Callable[[int | str, float], None] | None = None
+        self.max_parameter = MAX_PARAMETER
+        for k, v in (numbered or {}).items():
+            self.set(k, v)
+        for k, v in (named or {}).items():
+            self.set(k, v)
+
+    # -- public API -------------------------------------------------------------
+    def get(self, key: int | str) -> float:
+        """The controller's double for ``#key`` (KeyError for an unset name)."""
+        return self.read(key)[0]
+
+    def get_exact(self, key: int | str) -> Fraction:
+        """The exact value a word ``X#key`` would receive."""
+        return word_value(self.read(key))
+
+    def set(self, key: int | str, value) -> None:
+        """Set ``#key`` from a Fraction, int or float (no ``on_write`` call)."""
+        self._store(self._key(key), _pair(value))
+
+    def provide(self, key: int | str, getter: Callable[[], object]) -> None:
+        """Make ``#key`` a computed parameter: reads call ``getter()``."""
+        self._providers[self._key(key)] = getter
+
+    def exists(self, key: int | str) -> bool:
+        key = self._key(key)
+        if isinstance(key, int):
+            return 1 <= key <= self.max_parameter
+        if key in self._providers:
+            return True
+        return key in (self._globals if key.startswith("_") else self._scopes[-1])
+
+    # -- used by the language layer -------------------------------------------------
+    @staticmethod
+    def _key(key):
+        if isinstance(key, str):
+            return key.replace(" ", "").lower()
+        if isinstance(key, bool) or not isinstance(key, int):
+            raise InvalidArgument(f"parameter key {key!r} must be an int or a name")
+        return key
+
+    def read(self, key: int | str) -> Value:
+        getter = self._providers.get(key)
+        if getter is not None:
+            return _pair(getter())
+        if isinstance(key, int):
+            return self._num.get(key, (0.0, Fraction(0)))
+        scope = self._globals if key.startswith("_") else self._scopes[-1]
+        try:
+            return scope[key]
+        except KeyError:
+            raise KeyError(key) from None
+
+    def write(self, key: int | str, value: Value) -> None:
+        """An assignment made by the program (calls ``on_write``)."""
+        self._store(key, value)
+        if self.on_write is not None:
+            self.on_write(key, value[0])
+
+    def _store(self, key, value: Value) -> None:
+        if isinstance(key, int):
+            self._num[key] = value
+        elif key.startswith("_"):
+            self._globals[key] = value
+        else:
+            self._scopes[-1][key] = value
+
+    def push_scope(self, args: tuple[Value, ...]) -> tuple:
+        """Enter a subroutine: save #1..#30, set them from ``args``, new local names."""
+        saved = tuple(self._num.get(i) for i in range(1, SUB_PARAMS + 1))
+        for i in range(1, SUB_PARAMS + 1):
+            if i <= len(args):
+                self._num[i] = args[i - 1]
+            else:
+                self._num.pop(i, None)
+        self._scopes.append({})
+        return saved
+
+    def pop_scope(self, saved: tuple) -> None:
+        """Leave a subroutine: restore #1..#30 and the caller's local names."""
+        for i, v in enumerate(saved, start=1):
+            if v is None:
+                self._num.pop(i, None)
+            else:
+                self._num[i] = v
+        if len(self._scopes) > 1:
+            self._scopes.pop()
+
+
+def word_value(value: Value) -> Fraction:
+    """The exact value a word receives: the shadow, else the double exactly."""
+    q = value[1]
+    return q if q is not None else Fraction(value[0])
+
+
+def _keep(d: float, q: Fraction | None) -> Value:
+    """Keep the shadow only if it rounds to the controller's double."""
+    if q is not None and q.numerator / q.denominator != d:
+        q = None
+    return (d, q)
+
+
+def _check(d: float) -> float:
+    if d != d:
+        raise EvalError("GC312", "calculation resulted in 'not a number'")
+    if d in (math.inf, -math.inf):
+        raise EvalError("GC312", "calculation resulted in 'infinity'")
+    return d
+
+
+def parameter_key(node, params: Parameters) -> int | str:
+    """The key (int or name) a PAR/NPAR tree refers to, range-checked."""
+    if node[0] == NPAR:
+        return node[1]
+    d = evaluate(node[1], params)[0]
+    index = round(d)
+    if abs(d - index) > 0.0001:
+        raise EvalError("GC204", f"parameter number {d!r} is not an integer")
+    if not 1 <= index <= params.max_parameter:
+        raise EvalError("GC205", f"parameter number {index} out of range; allowed are 1 to {params.max_parameter}")
+    return index
+
+
+def evaluate(node, params: Parameters) -> Value:
+    """Evaluate an expression tree to ``(double, exact shadow or None)``.
+
+    >>> from nczones.gcode.parser import parse_line
+    >>> tree = parse_line("X[1 + 2 * 3 ** 2 - 10 MOD 4]", 1, "p").words[0][1]
+    >>> evaluate(tree, Parameters())
+    (17.0, Fraction(17, 1))
+    >>> tree = parse_line("X[COS[60]]", 1, "p").words[0][1]
+    >>> evaluate(tree, Parameters())[0] == math.cos((60.0 * math.pi) / 180.0)
+    True
+    """
+    tag = node[0]
+    if tag == NUM:
+        return (node[1], node[2])
+    if tag == PAR or tag == NPAR:
+        key = parameter_key(node, params)
+        try:
+            return params.read(key)
+        except KeyError:
+            raise EvalError("GC310", f"named parameter #<{key}> is not defined") from None
+    if tag == BIN:
+        return _binary(node[1], evaluate(node[2], params), evaluate(node[3], params))
+    if tag == NEG:
+        d, q = evaluate(node[1], params)
+        return (-d, -q if q is not None else None)
+    if tag == FN:
+        return _unary(node[1], evaluate(node[2], params))
+    if tag == ATAN:
+        y = evaluate(node[1], params)[0]
+        x = evaluate(node[2], params)[0]
+        return (_check((math.atan2(y, x) * 180.0) / math.pi), None)
+    if tag == EXISTS:
+        par = node[1]
+        if par[0] == NPAR:
+            return (1.0, Fraction(1)) if params.exists(par[1]) else (0.0, Fraction(0))
+        parameter_key(par, params)
+        return (1.0, Fraction(1))
+    raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
+
+
+_TRUE = (1.0, Fraction(1))
+_FALSE = (0.0, Fraction(0))
+
+
+def _binary(op: str, left: Value, right: Value) -> Value:
+    a, qa = left
+    b, qb = right
+    exact = qa is not None and qb is not None
+    if op == "+":
+        return _keep(_check(a + b), qa + qb if exact else None)
+    if op == "-":
+        return _keep(_check(a - b), qa - qb if exact else None)
+    if op == "*":
+        return _keep(_check(a * b), qa * qb if exact else None)
+    if op == "/":
+        if b == 0.0:
+            raise EvalError("GC311", "attempt to divide by zero")
+        return _keep(_check(a / b), qa / qb if exact and qb != 0 else None)
+    if op == "mod":
+        if b == 0.0:
+            raise EvalError("GC311", "attempt to take MOD by zero")
+        r = math.fmod(a, b)
+        if r < 0.0:
+            r = r + abs(b)
+        return (_check(r), None) if r != int(r) else (r, Fraction(int(r)))
+    if op == "**":
+        if a < 0.0 and math.floor(b) != b:
+            raise EvalError("GC312", f"attempt to raise negative {a!r} to the non-integer power {b!r}")
+        try:
+            r = math.pow(a, b)
+        except (OverflowError, ValueError):
+            raise EvalError("GC312", f"{a!r} ** {b!r} cannot be computed") from None
+        return (_check(r), Fraction(int(r)) if r == int(r) else None)
+    if op == "eq":
+        return _TRUE if abs(a - b) < TOLERANCE_EQUAL else _FALSE
+    if op == "ne":
+        return _TRUE if abs(a - b) >= TOLERANCE_EQUAL else _FALSE
+    if op == "gt":
+        return _TRUE if a > b else _FALSE
+    if op == "ge":
+        return _TRUE if a >= b else _FALSE
+    if op == "lt":
+        return _TRUE if a < b else _FALSE
+    if op == "le":
+        return _TRUE if a <= b else _FALSE
+    if op == "and":
+        return _FALSE if (a == 0.0 or b == 0.0) else _TRUE
+    if op == "or":
+        return _TRUE if (a != 0.0 or b != 0.0) else _FALSE
+    if op == "xor":
+        return _TRUE if ((a == 0.0) != (b == 0.0)) else _FALSE
+    raise AssertionError(op)  # pragma: no cover
+
+
+def _unary(name: str, value: Value) -> Value:
+    d, q = value
+    if name == "abs":
+        return (abs(d), abs(q) if q is not None else None)
+    if name == "fix":
+        r = math.floor(d)
+        return (float(r), Fraction(r))
+    if name == "fup":
+        r = math.ceil(d)
+        return (float(r), Fraction(r))
+    if name == "round":
+        r = int(d + (-0.5 if d < 0.0 else 0.5))
+        return (float(r), Fraction(r))
+    if name == "acos" or name == "asin":
+        if d < -1.0 or d > 1.0:
+            raise EvalError("GC312", f"argument to {name.upper()} out of range: {d!r} (allowed -1 to 1)")
+        r = math.acos(d) if name == "acos" else math.asin(d)
+        return (_check((r * 180.0) / math.pi), None)
+    if name == "cos":
+        return (math.cos((d * math.pi) / 180.0), None)
+    if name == "sin":
+        return (math.sin((d * math.pi) / 180.0), None)
+    if name == "tan":
+        return (_check(math.tan((d * math.pi) / 180.0)), None)
+    if name == "exp":
+        try:
+            return (_check(math.exp(d)), None)
+        except OverflowError:
+            raise EvalError("GC312", "calculation resulted in 'infinity'") from None
+    if name == "ln":
+        if d <= 0.0:
+            raise EvalError("GC312", f"zero or negative argument to LN: {d!r}")
+        return (math.log(d), None)
+    if name == "sqrt":
+        if d < 0.0:
+            raise EvalError("GC312", f"negative argument to SQRT: {d!r}")
+        r = math.sqrt(d)
+        return (r, Fraction(r) if r == int(r) else None)
+    raise AssertionError(name)  # pragma: no cover
+
+
+def format_parameter(value: float) -> str:
+    """How ``(DEBUG, #1)`` prints a value (C ``%lf``: six decimals).
+
+    >>> format_parameter(1.5)
+    '1.500000'
+    """
+    return f"{value:.6f}"

@@ -1,0 +1,833 @@
+"""Run a G-code program's *control*: text in, executed and evaluated blocks out.
+
+Entry points
+------------
+``iter_blocks(text, file="<program>", *, params=None, block_delete=False,
+max_loop_iterations=100000, max_call_depth=100) -> Iterator[Block]``
+    Lazily executes the program in ``text`` and yields one
+    :class:`~nczones.gcode.blocks.Block` per executed block, in execution
+    order (``Block.index`` counts 0, 1, 2 ... in that order; loop bodies and
+    subroutine calls yield their blocks anew each time).
+
+``read_program(path, **same_options) -> Iterator[Block]``
+    The same, streaming from a file on disk (the file is read line by line
+    and seeked for jumps; it is never held in memory as a whole).
+
+What the blocks contain
+-----------------------
+* Every word's value is an exact :class:`~fractions.Fraction`.  Plain
+  decimal literals are exact (``X0.1`` is 1/10).  Words with parameters or
+  ``[...]`` expressions are evaluated as IEEE doubles like LinuxCNC, and the
+  word receives the exact rational of the controller's double, or the exact
+  decimal when it rounds to that very double (see :mod:`nczones.gcode.expr`).
+* Consumed by the language layer, never in ``Block.words``: ``N`` (it is
+  ``Block.number``), O-words, parameter assignments, comments, and the
+  Fanuc subprogram words ``M98``/``M99`` with their ``P``/``L`` words.  A
+  line that holds nothing else yields no block.  ``(MSG,..)``, ``(DEBUG,..)``,
+  ``(PRINT,..)``, ``(LOG..)`` comments go to ``Block.messages`` as
+  ``"KIND,text"`` with ``#`` parameters substituted (a line with only such
+  a comment yields a block without words).
+* Program end: after yielding a block that has ``M2`` or ``M30`` the
+  generator stops; a ``%`` line after the first executed line ends the
+  program too (a leading ``%`` is the tape start).  Lines after the end are
+  never read.
+* Block delete: ``block_delete=False`` (the switch off, the default)
+  executes ``/`` lines; ``True`` skips them.
+
+The Parameters hook (how the interpreter shares state)
+------------------------------------------------------
+The interpreter creates one :class:`~nczones.gcode.expr.Parameters` and
+passes it as ``params``.  The language layer reads it for every ``#``
+reference and writes it for every assignment.  Because blocks are yielded
+lazily, a block k+1 is not even read before the interpreter has processed
+block k, so:
+
+* ``params.set(5221, Fraction("10"))`` after a ``G10 L2`` block makes later
+  ``#5221`` reads see 10;
+* ``params.provide(5420, lambda: current_x)`` (or ``provide("_x", ...)``)
+  makes a parameter computed on every read (current position #5420-#5428,
+  tool #5400, predefined ``#<_metric>`` ...);
+* ``params.on_write = fn`` is called ``fn(key, double)`` for every
+  assignment the program makes (e.g. ``#5221 = 10``), so the interpreter can
+  refresh its offsets if it mirrors them.
+
+Values set by the interpreter may be Fraction/int (exact) or float.
+
+Errors and the unsupported mechanism
+------------------------------------
+* Bad text raises :class:`~nczones.errors.GcodeError` (an ``InputError``)
+  with ``file:line:column`` diagnostics: ``GC1xx`` lexical, ``GC2xx`` block
+  syntax, ``GC3xx`` run-time language errors (undefined named parameter
+  GC310, division by zero GC311, math domain GC312, unknown subroutine
+  GC313, unmatched control flow GC314, return outside a subroutine GC315,
+  call depth GC316, M98 errors GC317).  A lexical or syntax error in an
+  executed line is reported together with those of up to nine following
+  lines.
+* Language that cannot be modelled raises :class:`UnsupportedGcode`
+  (**not** an InputError: the program may be fine, we just cannot tell what
+  it does).  The interpreter catches it and turns the verdict into
+  ``unknown`` with ``exc.diagnostic`` (code, reason, line).  All blocks
+  before it were yielded and are certain to execute.  Codes: GC301 Fanuc
+  macro statements (IF/GOTO/WHILE-DO), G65/G66/G67 macro calls, M97 local
+  subprograms, ``#3000``/``#3006`` alarms and messages, ``M99 P``; GC302
+  (subclass :class:`IterationBoundExceeded`) a loop ran more than
+  ``max_loop_iterations`` times; GC303 a named subroutine not defined in the
+  file (LinuxCNC would search external files); GC304 ``M99`` in the main
+  program (restarts the program forever).
+
+Examples
+--------
+>>> prog = "#1 = 0.1\\nG91\\nO10 repeat [3]\\nG1 Y#1\\nO10 endrepeat\\nM30\\n"
+>>> [[(w.letter, w.value) for w in b.words] for b in iter_blocks(prog)]
+[[('G', Fraction(91, 1))], [('G', Fraction(1, 1)), ('Y', Fraction(1, 10))], [('G', Fraction(1, 1)), ('Y', Fraction(1, 10))], [('G', Fraction(1, 1)), ('Y', Fraction(1, 10))], [('M', Fraction(30, 1))]]
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+
+from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
+from .blocks import Block, Word
+from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
+from .lexer import magic_comment, make_span, make_word, scan_simple
+from .parser import NPAR, OWord, ParsedLine, parse_line
+
+__all__ = [
+    "iter_blocks",
+    "read_program",
+    "UnsupportedGcode",
+    "IterationBoundExceeded",
+    "Parameters",
+    "DEFAULT_MAX_LOOP_ITERATIONS",
+]
+
+DEFAULT_MAX_LOOP_ITERATIONS = 100_000
+MAX_REPORTED_ERRORS = 10
+
+
+class UnsupportedGcode(NczonesError):
+    """The program uses language the layer cannot model: the verdict is ``unknown``.
+
+    Attributes
+    ----------
+    diagnostic : Diagnostic
+        Code (GC3xx), reason and span (file, line, column, source text).
+    """
+
+    def __init__(self, diagnostic: Diagnostic):
+        self.diagnostic = diagnostic
+        super().__init__(diagnostic.render())
+
+    @property
+    def code(self) -> str:
+        return self.diagnostic.code
+
+    @property
+    def reason(self) -> str:
+        return self.diagnostic.message
+
+    @property
+    def span(self) -> SourceSpan | None:
+        return self.diagnostic.span
+
+
+class IterationBoundExceeded(UnsupportedGcode):
+    """A loop ran more often than ``max_loop_iterations`` (GC302)."""
+
+
+# --------------------------------------------------------------------------- sources
+
+
+class _Source:
+    """Random access to the lines of a program by offset (string or file)."""
+
+    def line_at(self, pos: int) -> tuple[str | None, int]:
+        """The line starting at ``pos`` (without newline) and the next offset; None at EOF."""
+        raise NotImplementedError
+
+
+class _StringSource(_Source):
+    __slots__ = ("text", "n")
+
+    def __init__(self, text: str):
+        self.text = text
+        self.n = len(text)
+
+    def line_at(self, pos: int):
+        if pos >= self.n:
+            return None, pos
+        end = self.text.find("\n", pos)
+        if end < 0:
+            end = self.n
+        line = self.text[pos:end]
+        if line.endswith("\r"):
+            line = line[:-1]
+        return line, end + 1
+
+
+class _FileSource(_Source):
+    __slots__ = ("f", "where")
+
+    def __init__(self, f):
+        self.f = f
+        self.where = 0
+
+    def line_at(self, pos: int):
+        if pos != self.where:
+            self.f.seek(pos)
+        raw = self.f.readline()
+        if not raw:
+            self.where = pos
+            return None, pos
+        nxt = pos + len(raw)
+        self.where = nxt
+        line = raw.decode("utf-8", errors="replace").rstrip("\r\n")
+        return line, nxt
+
+
+# --------------------------------------------------------------------------- control frames
+
+
+@dataclass(slots=True)
+class _Loop:
+    kind: str  # "while", "do", "repeat"
+    label: object
+    head: tuple[int, int]  # (pos, lineno) of the while line / the line after do / repeat
+    remaining: int = 0
+    count: int = 0
+
+
+@dataclass(slots=True)
+class _Frame:
+    """A subroutine call (``o.. call`` or ``M98``); the main program is frame 0."""
+
+    kind: str  # "main", "o", "m98"
+    label: object = None
+    ret: tuple[int, int] = (0, 0)
+    saved: tuple | None = None
+    body: tuple[int, int] = (0, 0)
+    repeats: int = 0
+    loops: list = field(default_factory=list)
+    ifs: list = field(default_factory=list)
+
+
+_OLINE = re.compile(r"[ \t]*(?:/[ \t]*)?(?:[nN][ \t]*[\d.]+[ \t]*)?[oO][ \t]*(<[^>]*>|\d[\d \t]*)[ \t]*([A-Za-z]*)")
+_FANUC_END = re.compile(r"[mM][ \t]*0*99(?![\d.])")
+_PROGRAM_END_HINT = re.compile(r"(?:^|[^a-zA-Z])[mM][ \t]*0*(?:2|30)(?![\d.])|^[ \t]*%")
+
+
+def _olabel(m: re.Match):
+    raw = m.group(1)
+    if raw[0] == "<":
+        return raw[1:-1].replace(" ", "").replace("\t", "").lower()
+    return int(raw.replace(" ", "").replace("\t", ""))
+
+
+def _show(label) -> str:
+    return f"o<{label}>" if isinstance(label, str) else f"o{label}"
+
+
+_DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
+
+
+class _Runner:
+    def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
+                 max_loop_iterations: int, max_call_depth: int):
+        self.src = source
+        self.file = file
+        self.params = params
+        self.block_delete = block_delete
+        self.max_loops = max_loop_iterations
+        self.max_depth = max_call_depth
+        self.frames: list[_Frame] = [_Frame("main")]
+        self.subs: dict[object, tuple[int, int]] = {}  # label -> (pos, lineno) of the line after "sub"
+        self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
+        self.scanned_all = False
+        self.cache: dict[int, object] = {}
+        self.index = 0
+        self.started = False
+        self.main_label_seen = False
+
+    # -- diagnostics --------------------------------------------------------------
+    def span(self, lineno: int, line: str, col: int = 1, end: int | None = None) -> SourceSpan:
+        if end is None:
+            end = max(col + 1, len(line) + 1)
+        return SourceSpan(self.file, lineno, col, end, line)
+
+    def error(self, code: str, message: str, lineno: int, line: str, col: int = 1, end: int | None = None):
+        return GcodeError(Diagnostic(code, message, self.span(lineno, line, col, end)))
+
+    def unsupported(self, code: str, message: str, lineno: int, line: str, col: int = 1, end=None,
+                    cls=UnsupportedGcode):
+        return cls(Diagnostic(code, message, self.span(lineno, line, col, end)))
+
+    def syntax_error(self, exc: GcodeError, pos: int, lineno: int) -> GcodeError:
+        """Add the syntax errors of the following lines (up to the program end) to ``exc``."""
+        diags = list(exc.diagnostics)
+        while len(diags) < MAX_REPORTED_ERRORS:
+            line, pos = self.src.line_at(pos)
+            if line is None:
+                break
+            lineno += 1
+            if _PROGRAM_END_HINT.search(line):
+                break
+            if scan_simple(line, lineno, self.file) is not None:
+                continue
+            try:
+                parse_line(line, lineno, self.file)
+            except GcodeError as e:
+                diags.extend(e.diagnostics)
+        return GcodeError(diags[:MAX_REPORTED_ERRORS])
+
+    # -- scanning (no execution) -------------------------------------------------
+    def scan(self, pos: int, lineno: int):
+        """Yield ``(pos, lineno, line, next_pos)`` from ``pos`` (lineno of the first line)."""
+        while True:
+            line, nxt = self.src.line_at(pos)
+            if line is None:
+                return
+            yield pos, lineno, line, nxt
+            pos = nxt
+            lineno += 1
+
+    def skip_to(self, label, keywords: tuple[str, ...], pos: int, lineno: int, what: str, line0: str, lineno0: int,
+                nested_sub_error: bool = False):
+        """Find the next line ``<label> <keyword>`` with keyword in ``keywords``.
+
+        Returns ``(keyword, pos, lineno, line, next_pos)``.  LinuxCNC matches
+        O-words by label, not by nesting, and so does this.
+        """
+        for p, ln, line, nxt in self.scan(pos, lineno):
+            if "o" not in line and "O" not in line:
+                continue
+            m = _OLINE.match(line)
+            if m is None:
+                continue
+            lab = _olabel(m)
+            kw = m.group(2).lower()
+            if nested_sub_error and kw == "sub":
+                raise self.error("GC314", f"nested subroutine definition: {_show(lab)} sub inside "
+                                 f"{_show(label)} sub", ln, line, m.start(1) + 1)
+            if kw == "sub" and lab not in self.subs:
+                self.subs[lab] = (nxt, ln + 1)
+            if lab == label and kw in keywords:
+                return kw, p, ln, line, nxt
+        raise self.error("GC314", f"{_show(label)} {what} has no matching "
+                         + " / ".join(f"{_show(label)} {k}" for k in keywords), lineno0, line0)
+
+    def find_definitions(self):
+        """Index every ``o.. sub`` and Fanuc ``O<n>`` line of the program (once)."""
+        if self.scanned_all:
+            return
+        self.scanned_all = True
+        for p, ln, line, nxt in self.scan(0, 1):
+            if "o" not in line and "O" not in line:
+                continue
+            m = _OLINE.match(line)
+            if m is None:
+                continue
+            lab = _olabel(m)
+            kw = m.group(2).lower()
+            if kw == "sub":
+                self.subs.setdefault(lab, (nxt, ln + 1))
+            elif kw == "" and isinstance(lab, int):
+                self.fanuc.setdefault(lab, (nxt, ln + 1))
+
+    # -- execution ----------------------------------------------------------------
+    def run(self) -> Iterator[Block]:
+        pos, lineno = 0, 1
+        src = self.src
+        file = self.file
+        params = self.params
+        cache = self.cache
+        while True:
+            line, nxt = src.line_at(pos)
+            if line is None:
+                self.check_open_frames(lineno)
+                return
+            parsed = cache.get(pos) if cache else None
+            if parsed is None:
+                parsed = scan_simple(line, lineno, file)
+                if parsed is None:
+                    try:
+                        parsed = parse_line(line, lineno, file)
+                    except GcodeError as e:
+                        raise self.syntax_error(e, nxt, lineno) from None
+                if len(self.frames) > 1 or self.frames[0].loops:
+                    if len(cache) < 200_000:
+                        cache[pos] = parsed
+            if type(parsed) is tuple:
+                # fast path: (delete, number, words, comments)
+                delete, number, words, comments = parsed
+                if delete and self.block_delete:
+                    pos, lineno = nxt, lineno + 1
+                    continue
+                messages = self.messages(comments) if comments else ()
+                stop = False
+                for w in words:
+                    if w.letter == "M" or w.letter == "G":
+                        v = w.value
+                        if v.denominator == 1 and v.numerator in (2, 30, 97, 98, 99, 65, 66, 67):
+                            stop = True
+                            break
+                if stop:
+                    # M98/M99/M2/M30/G65... take the general path below
+                    parsed = parse_line(line, lineno, file)
+                elif words or messages:
+                    self.started = True
+                    yield Block(words, make_span(file, lineno, 1, len(line) + 1, line), self.index, number, messages)
+                    self.index += 1
+                    pos, lineno = nxt, lineno + 1
+                    continue
+                else:
+                    pos, lineno = nxt, lineno + 1
+                    continue
+            # general path
+            target = yield from self.execute(parsed, line, lineno, pos, nxt)
+            if target is None:
+                return
+            pos, lineno = target
+
+    def messages(self, comments) -> tuple[str, ...]:
+        out = []
+        for body, _col in comments:
+            magic = magic_comment(body)
+            if magic is None:
+                continue
+            kind, text = magic
+            if kind in ("DEBUG", "PRINT", "LOG", "ABORT"):
+                text = _DEBUG_PARAM.sub(self._debug_value, text)
+            out.append(f"{kind},{text}")
+        return tuple(out)
+
+    def _debug_value(self, m: re.Match) -> str:
+        key = m.group(1).replace(" ", "").lower() if m.group(1) is not None else int(m.group(2))
+        try:
+            return format_parameter(self.params.read(key)[0])
+        except (KeyError, NczonesError):
+            return "######"
+
+    def evaluate(self, tree, lineno, line, col=1, end=None):
+        try:
+            return evaluate(tree, self.params)
+        except EvalError as e:
+            raise self.error(e.code, e.message, lineno, line, col, end) from None
+        except RecursionError:
+            raise self.error("GC312", "expression nested too deeply", lineno, line, col, end) from None
+
+    def execute(self, pl: ParsedLine, line: str, lineno: int, pos: int, nxt: int):
+        """Execute one general line; yields its block; returns the next (pos, lineno) or None to stop."""
+        if pl.delete and self.block_delete:
+            return nxt, lineno + 1
+        if pl.percent:
+            if self.started:
+                return None
+            self.started = True
+            return nxt, lineno + 1
+        if pl.oword is not None:
+            return (yield from self.execute_oword(pl, line, lineno, pos, nxt))
+        if pl.unsupported is not None:
+            reason, col, end = pl.unsupported
+            raise self.unsupported("GC301", reason, lineno, line, col, end)
+        params = self.params
+        # every read on the line sees the values from before the line's assignments
+        words: list[Word] = []
+        m98 = m99 = None
+        stop = False
+        for letter, tree, col, end, text in pl.words:
+            if tree[0] == 0:  # NUM literal: exact as written
+                value = tree[2]
+            else:
+                value = word_value(self.evaluate(tree, lineno, line, col, end))
+            if letter == "M" and value.denominator == 1:
+                n = value.numerator
+                if n == 98:
+                    m98 = (col, end)
+                    continue
+                if n == 99:
+                    m99 = (col, end)
+                    continue
+                if n == 97:
+                    raise self.unsupported("GC301", "M97 local subprogram calls (Haas) are not supported",
+                                           lineno, line, col, end)
+                if n in (2, 30):
+                    stop = True
+            if letter == "G" and value in (65, 66, Fraction(661, 10), 67):
+                raise self.unsupported("GC301", f"G{value} macro calls are not supported", lineno, line, col, end)
+            words.append(make_word(letter, value, make_span(self.file, lineno, col, end, line), text))
+        values = []
+        for target, tree, col, end in pl.assigns:
+            try:
+                key = parameter_key(target, params)
+            except EvalError as e:
+                raise self.error(e.code, e.message, lineno, line, col, end) from None
+            if key in (3000, 3006):
+                raise self.unsupported("GC301", f"#{key} (Fanuc alarm / message stop) is not supported",
+                                       lineno, line, col, end)
+            values.append((key, self.evaluate(tree, lineno, line, col, end)))
+        for key, value in values:
+            params.write(key, value)
+        messages = self.messages(pl.comments) if pl.comments else ()
+        if m98 is not None or m99 is not None:
+            ploc = None
+            pword = lword = None
+            rest = []
+            for w in words:
+                if w.letter == "P" and pword is None:
+                    pword = w
+                elif w.letter == "L" and lword is None and m98 is not None:
+                    lword = w
+                else:
+                    rest.append(w)
+            words = rest
+        if words or messages:
+            self.started = True
+            yield Block(tuple(words), make_span(self.file, lineno, 1, len(line) + 1, line), self.index,
+                        pl.number, messages)
+            self.index += 1
+        if stop:
+            return None
+        if m98 is not None:
+            return self.call_m98(pword, lword, m98, line, lineno, nxt)
+        if m99 is not None:
+            if pword is not None:
+                raise self.unsupported("GC301", "M99 P (return to a sequence number) is not supported",
+                                       lineno, line, *m99)
+            return self.return_m99(m99, line, lineno)
+        return nxt, lineno + 1
+
+    # -- Fanuc subprograms -----------------------------------------------------------
+    def call_m98(self, pword, lword, loc, line, lineno, nxt):
+        if pword is None:
+            raise self.error("GC317", "M98 needs a P word naming the subprogram (M98 P1000)", lineno, line, *loc)
+        p = pword.value
+        if p.denominator != 1 or p < 0:
+            raise self.error("GC317", f"M98 P{pword.text[1:]}: the program number must be a non-negative integer",
+                             lineno, line, pword.span.column, pword.span.end_column)
+        count = 1
+        if lword is not None:
+            lv = lword.value
+            if lv.denominator != 1 or lv < 0:
+                raise self.error("GC317", f"M98 L{lword.text[1:]}: the repeat count must be a non-negative integer",
+                                 lineno, line, lword.span.column, lword.span.end_column)
+            count = int(lv)
+        if count == 0:
+            return nxt, lineno + 1
+        label = int(p)
+        self.find_definitions()
+        body = self.fanuc.get(label)
+        if body is None:
+            if label in self.subs:
+                raise self.error("GC317", f"M98 P{label}: o{label} is an 'o{label} sub' subroutine; call it "
+                                 f"with 'o{label} call'", lineno, line, *loc)
+            raise self.error("GC317", f"M98 P{label}: no subprogram O{label} in this file", lineno, line, *loc)
+        self.push(_Frame("m98", label, (nxt, lineno + 1), None, body, count), lineno, line)
+        return body
+
+    def return_m99(self, loc, line, lineno):
+        frame = self.frames[-1]
+        if frame.kind == "main":
+            raise self.unsupported("GC304", "M99 in the main program restarts it forever; endless programs "
+                                   "are not supported", lineno, line, *loc)
+        if frame.kind != "m98":
+            raise self.error("GC315", f"M99 inside {_show(frame.label)} sub; an 'o.. sub' subroutine ends with "
+                             f"{_show(frame.label)} endsub", lineno, line, *loc)
+        frame.repeats -= 1
+        if frame.repeats > 0:
+            frame.loops.clear()
+            frame.ifs.clear()
+            return frame.body
+        self.frames.pop()
+        return frame.ret
+
+    def push(self, frame: _Frame, lineno: int, line: str):
+        if len(self.frames) > self.max_depth:
+            raise self.error("GC316", f"subroutine calls nested deeper than {self.max_depth} levels", lineno, line)
+        self.frames.append(frame)
+
+    # -- O-words ----------------------------------------------------------------
+    def execute_oword(self, pl: ParsedLine, line: str, lineno: int, pos: int, nxt: int):
+        ow: OWord = pl.oword
+        kw = ow.keyword
+        label = ow.label
+        if isinstance(label, tuple):  # o[expr]
+            d, _q = self.evaluate(label, lineno, line, ow.column, ow.end_column)
+            if d != int(d) or d < 0:
+                raise self.error("GC202", f"O-word number {d!r} is not a non-negative integer", lineno, line,
+                                 ow.column, ow.end_column)
+            label = int(d)
+        frame = self.frames[-1]
+        messages = self.messages(pl.comments) if pl.comments else ()
+        if messages:
+            self.started = True
+            yield Block((), make_span(self.file, lineno, 1, len(line) + 1, line), self.index, pl.number, messages)
+            self.index += 1
+        here = (nxt, lineno + 1)
+        if kw is None:
+            # a Fanuc program number/subprogram label reached in the flow: a label only
+            return here
+        col, end = ow.column, ow.end_column
+
+        def cond() -> bool:
+            return self.evaluate(ow.args[0], lineno, line, col, end)[0] != 0.0
+
+        if kw == "sub":
+            self.subs.setdefault(label, here)
+            _k, _p, ln, _l, after = self.skip_to(label, ("endsub",), nxt, lineno + 1, "sub", line, lineno,
+                                                 nested_sub_error=True)
+            return after, ln + 1
+        if kw == "call":
+            args = tuple(self.evaluate(a, lineno, line, col, end) for a in ow.args)
+            body = self.subs.get(label)
+            if body is None:
+                self.find_definitions()
+                body = self.subs.get(label)
+            if body is None:
+                if isinstance(label, str):
+                    raise self.unsupported("GC303", f"subroutine o<{label}> is not defined in this file "
+                                           "(external subroutine files are not supported)", lineno, line, col, end)
+                if label in self.fanuc:
+                    raise self.error("GC313", f"o{label} is a Fanuc subprogram (O{label} ... M99); call it with "
+                                     f"M98 P{label}", lineno, line, col, end)
+                raise self.error("GC313", f"subroutine o{label} is not defined in this file", lineno, line, col, end)
+            new = _Frame("o", label, here, None, body)
+            self.push(new, lineno, line)
+            new.saved = self.params.push_scope(args)
+            return body
+        if kw in ("return", "endsub"):
+            if frame.kind != "o":
+                if frame.kind == "m98":
+                    raise self.error("GC315", f"{_show(label)} {kw} inside Fanuc subprogram O{frame.label}; "
+                                     "it must end with M99", lineno, line, col, end)
+                raise self.error("GC315", f"{_show(label)} {kw} outside a subroutine", lineno, line, col, end)
+            if ow.args:
+                value = self.evaluate(ow.args[0], lineno, line, col, end)
+            self.params.pop_scope(frame.saved)
+            if ow.args:
+                self.params.write("_value", value)
+                self.params.write("_value_returned", (1.0, Fraction(1)))
+            else:
+                self.params.write("_value_returned", (0.0, Fraction(0)))
+            self.frames.pop()
+            return frame.ret
+        if kw == "if":
+            return self.branch(label, cond(), frame, nxt, lineno, line, open_if=True)
+        if kw == "elseif":
+            if not frame.ifs or frame.ifs[-1] != label:
+                raise self.error("GC314", f"{_show(label)} elseif without {_show(label)} if", lineno, line, col, end)
+            # reached by executing the previous branch: skip to endif
+            _k, _p, ln, _l, after = self.skip_to(label, ("endif",), nxt, lineno + 1, "elseif", line, lineno)
+            frame.ifs.pop()
+            return after, ln + 1
+        if kw == "else":
+            if not frame.ifs or frame.ifs[-1] != label:
+                raise self.error("GC314", f"{_show(label)} else without {_show(label)} if", lineno, line, col, end)
+            _k, _p, ln, _l, after = self.skip_to(label, ("endif",), nxt, lineno + 1, "else", line, lineno)
+            frame.ifs.pop()
+            return after, ln + 1
+        if kw == "endif":
+            if not frame.ifs or frame.ifs[-1] != label:
+                raise self.error("GC314", f"{_show(label)} endif without {_show(label)} if", lineno, line, col, end)
+            frame.ifs.pop()
+            return here
+        if kw == "do":
+            frame.loops.append(_Loop("do", label, here))
+            return here
+        if kw == "while":
+            loops = frame.loops
+            if loops and loops[-1].label == label and loops[-1].kind == "do":
+                loop = loops[-1]
+                if cond():
+                    self.count(loop, lineno, line)
+                    return loop.head
+                loops.pop()
+                return here
+            if loops and loops[-1].label == label and loops[-1].kind == "while" and loops[-1].head == (pos, lineno):
+                loop = loops[-1]
+            else:
+                loop = _Loop("while", label, (pos, lineno))
+                loops.append(loop)
+            if cond():
+                self.count(loop, lineno, line)
+                return here
+            loops.pop()
+            _k, _p, ln, _l, after = self.skip_to(label, ("endwhile",), nxt, lineno + 1, "while", line, lineno)
+            return after, ln + 1
+        if kw == "endwhile":
+            loop = self.innermost(frame, label, ("while",), kw, lineno, line, col, end)
+            return loop.head
+        if kw == "repeat":
+            d = self.evaluate(ow.args[0], lineno, line, col, end)[0]
+            n = int(d)
+            if n <= 0:
+                _k, _p, ln, _l, after = self.skip_to(label, ("endrepeat",), nxt, lineno + 1, "repeat", line, lineno)
+                return after, ln + 1
+            loop = _Loop("repeat", label, here, remaining=n)
+            self.count(loop, lineno, line)
+            frame.loops.append(loop)
+            return here
+        if kw == "endrepeat":
+            loop = self.innermost(frame, label, ("repeat",), kw, lineno, line, col, end)
+            loop.remaining -= 1
+            if loop.remaining > 0:
+                self.count(loop, lineno, line)
+                return loop.head
+            frame.loops.pop()
+            return here
+        if kw in ("break", "continue"):
+            loop = self.innermost(frame, label, ("while", "do", "repeat"), kw, lineno, line, col, end)
+            if kw == "continue":
+                if loop.kind == "while":
+                    return loop.head
+                if loop.kind == "repeat":
+                    loop.remaining -= 1
+                    if loop.remaining > 0:
+                        self.count(loop, lineno, line)
+                        return loop.head
+                    frame.loops.pop()
+                    _k, _p, ln, _l, after = self.skip_to(label, ("endrepeat",), nxt, lineno + 1, kw, line, lineno)
+                    return after, ln + 1
+                # do: go to the closing "while" and evaluate it
+                _k, p, ln, _l, _after = self.skip_to(label, ("while",), nxt, lineno + 1, kw, line, lineno)
+                return p, ln
+            frame.loops.pop()
+            end_kw = {"while": "endwhile", "do": "while", "repeat": "endrepeat"}[loop.kind]
+            _k, _p, ln, _l, after = self.skip_to(label, (end_kw,), nxt, lineno + 1, kw, line, lineno)
+            return after, ln + 1
+        raise AssertionError(kw)  # pragma: no cover
+
+    def branch(self, label, taken: bool, frame: _Frame, nxt: int, lineno: int, line: str, open_if: bool):
+        frame.ifs.append(label)
+        if taken:
+            return nxt, lineno + 1
+        p, ln = nxt, lineno + 1
+        while True:
+            kw, _p, kln, kline, after = self.skip_to(label, ("elseif", "else", "endif"), p, ln, "if", line, lineno)
+            if kw == "endif":
+                frame.ifs.pop()
+                return after, kln + 1
+            if kw == "else":
+                return after, kln + 1
+            # elseif: evaluate its condition
+            try:
+                pl = parse_line(kline, kln, self.file)
+            except GcodeError as e:
+                raise self.syntax_error(e, after, kln) from None
+            ow = pl.oword
+            if self.evaluate(ow.args[0], kln, kline, ow.column, ow.end_column)[0] != 0.0:
+                return after, kln + 1
+            p, ln = after, kln + 1
+
+    def innermost(self, frame: _Frame, label, kinds, kw, lineno, line, col, end) -> _Loop:
+        loops = frame.loops
+        while loops and loops[-1].label != label:
+            loops.pop()  # LinuxCNC leaves inner loops silently on break/continue of an outer one
+        if not loops or loops[-1].kind not in kinds:
+            raise self.error("GC314", f"{_show(label)} {kw} without an open {_show(label)} "
+                             + "/".join(kinds), lineno, line, col, end)
+        return loops[-1]
+
+    def count(self, loop: _Loop, lineno: int, line: str):
+        loop.count += 1
+        if loop.count > self.max_loops:
+            raise self.unsupported("GC302", f"{_show(loop.label)} {loop.kind} loop ran more than "
+                                   f"{self.max_loops} iterations (max_loop_iterations); not interpreted further",
+                                   lineno, line, cls=IterationBoundExceeded)
+
+    def check_open_frames(self, lineno: int):
+        frame = self.frames[-1]
+        if len(self.frames) > 1:
+            raise GcodeError(Diagnostic("GC314", f"end of file inside subroutine {_show(frame.label)}",
+                                        SourceSpan(self.file, lineno, 1)))
+        if frame.loops:
+            loop = frame.loops[-1]
+            raise GcodeError(Diagnostic("GC314", f"end of file inside {_show(loop.label)} {loop.kind} loop",
+                                        SourceSpan(self.file, loop.head[1], 1)))
+        if frame.ifs:
+            raise GcodeError(Diagnostic("GC314", f"end of file inside {_show(frame.ifs[-1])} if",
+                                        SourceSpan(self.file, lineno, 1)))
+
+
+def iter_blocks(
+    text: str,
+    file: str = "<program>",
+    *,
+    params: Parameters | None = None,
+    block_delete: bool = False,
+    max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+    max_call_depth: int = 100,
+) -> Iterator[Block]:
+    """Execute the program's control and yield its blocks in execution order.
+
+    Parameters
+    ----------
+    text : str
+        The program.
+    file : str
+        Name used in spans and diagnostics.
+    params : Parameters, optional
+        The shared parameter store (see the module docstring); a fresh one
+        by default.
+    block_delete : bool
+        The block-delete switch: True skips lines starting with ``/``.
+    max_loop_iterations : int
+        Iterations allowed per loop (per entry into it) before
+        :class:`IterationBoundExceeded` is raised.
+    max_call_depth : int
+        Maximum nesting of subroutine calls.
+
+    Raises
+    ------
+    GcodeError
+        Bad text, with ``file:line:column`` diagnostics.
+    UnsupportedGcode
+        Language the layer cannot model (verdict ``unknown``).
+
+    Examples
+    --------
+    >>> blocks = list(iter_blocks("%\\nN10 G0 X1.5 (MSG, hi)\\n/G1 x-.5 f100\\nM2\\nG0 X9\\n", "p.ngc"))
+    >>> [(b.index, b.number, [w.text for w in b.words], b.messages) for b in blocks]
+    [(0, Fraction(10, 1), ['G0', 'X1.5'], ('MSG, hi',)), (1, None, ['G1', 'x-.5', 'f100'], ()), (2, None, ['M2'], ())]
+    >>> str(blocks[1].words[1].span)
+    'p.ngc:3:5'
+    """
+    if not isinstance(text, str):
+        raise TypeError(f"iter_blocks expects the program text as str, got {type(text).__name__}")
+    runner = _Runner(_StringSource(text), file, params if params is not None else Parameters(), block_delete,
+                     max_loop_iterations, max_call_depth)
+    return runner.run()
+
+
+def read_program(
+    path: str | Path,
+    *,
+    params: Parameters | None = None,
+    block_delete: bool = False,
+    max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+    max_call_depth: int = 100,
+) -> Iterator[Block]:
+    """Stream the blocks of the program file at ``path`` (see :func:`iter_blocks`).
+
+    The file is read line by line (UTF-8, undecodable bytes replaced) and
+    closed when the iterator is exhausted or garbage-collected.
+
+    >>> import tempfile, os
+    >>> with tempfile.NamedTemporaryFile("w", suffix=".ngc", delete=False) as f:
+    ...     _ = f.write("G0 X1\\nG1 Y2 F100\\n")
+    >>> [b.words[-1].value for b in read_program(f.name)]
+    [Fraction(1, 1), Fraction(100, 1)]
+    >>> os.unlink(f.name)
+    """
+    path = Path(path)
+
+    def gen():
+        with open(path, "rb") as f:
+            runner = _Runner(_FileSource(f), str(path), params if params is not None else Parameters(),
+                             block_delete, max_loop_iterations, max_call_depth)
+            yield from runner.run()
+
+    return gen()
