@@ -1,0 +1,217 @@
+"""G-code front end: program text -> motion in machine coordinates.
+
+Public API
+----------
+:func:`interpret` returns an :class:`Interpretation`, an iterable of
+:class:`~nczones.motion.MotionChunk` that runs the program lazily (streaming,
+memory independent of the program length); while and after iterating it
+exposes :attr:`~Interpretation.unsupported` (why the result is ``unknown``),
+:attr:`~Interpretation.assumed_modal` (modal groups the program relied on
+without setting them) and :attr:`~Interpretation.counts`.
+:func:`segments` is the convenience that returns every
+:class:`~nczones.motion.Segment` in a list.
+
+Errors in the program raise :class:`~nczones.errors.GcodeError` (codes
+``GC1xx`` lexical, ``GC2xx`` block/modal, ``GC3xx`` interpretation) with a
+``file:line:column`` span, during iteration.
+
+>>> from nczones.machine import parse_machine
+>>> m = parse_machine('''
+... [machine]
+... axes = ["X", "Y"]
+... pulse = "0.001"
+... [machine.rapid]
+... X = "1000"
+... Y = "1000"
+... [machine.reference]
+... X = "0"
+... Y = "299"
+... ''')
+>>> segs = segments("G91 G1 F100" + " Y0.1" * 0 + "\\n" + "Y0.1\\n" * 10, m)
+>>> segs[-1].end
+(Fraction(0, 1), Fraction(300, 1))
+>>> run = interpret("G1 X1 F10\\nG41 X2\\nG1 X3\\n", m)
+>>> [s.end[0] for c in run for s in c.segments()]
+[Fraction(1, 1)]
+>>> run.status, run.unsupported[0].code, run.unsupported[0].span.line
+('unknown', 'G41', 2)
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+from fractions import Fraction
+from pathlib import Path
+
+from ..errors import Diagnostic, GcodeError, InvalidArgument
+from ..machine import Machine
+from ..motion import MotionChunk, Segment
+from .interpreter import DEFAULT_ARC_TOLERANCE, MODAL_GROUP_NAMES, Interpreter, Unsupported
+
+__all__ = [
+    "interpret",
+    "segments",
+    "Interpretation",
+    "Unsupported",
+    "DEFAULT_ARC_TOLERANCE",
+]
+
+
+def _read_source(source: str | os.PathLike, file: str | None) -> tuple[str, str]:
+    if isinstance(source, os.PathLike) or (
+        isinstance(source, str) and "\n" not in source and len(source) < 4096 and os.path.isfile(source)
+    ):
+        path = Path(source)
+        try:
+            data = path.read_bytes()
+        except OSError as exc:
+            raise GcodeError(Diagnostic("GC100", f"cannot read the program: {exc.strerror or exc}", file=str(path))) from None
+        text = data.decode("utf-8", errors="surrogateescape")
+        return text, file or str(path)
+    if not isinstance(source, str):
+        raise InvalidArgument(f"interpret() takes program text or a path, not {type(source).__name__}")
+    return source, file or "<program>"
+
+
+class Interpretation:
+    """A lazily interpreted program: iterate it for :class:`MotionChunk` values.
+
+    Iterate once; the attributes are filled while iterating and final after
+    the iteration ends.
+
+    Attributes
+    ----------
+    file : str
+    unsupported : tuple of Unsupported
+        Empty for a fully interpreted program.  Otherwise the first code that
+        could not be modelled (line and reason); motion before it was emitted,
+        nothing after it.
+    assumed_modal : dict
+        Modal group -> the machine's initial code that the program relied on
+        without setting it (``{"units": "G21", "offset": "G54"}``).
+    counts : dict
+        ``blocks``, ``segments``, per-kind counts, ``fast_lines`` (lines that
+        took the vectorized fast path).
+    """
+
+    def __init__(self, text: str, machine: Machine, *, file: str, block_delete: bool,
+                 track_dependencies: bool, arc_tolerance: Fraction, fast: bool, chunk_size: int):
+        self.text = text
+        self.machine = machine
+        self.file = file
+        self.block_delete = block_delete
+        self.interpreter = Interpreter(machine, file=file, arc_tolerance=arc_tolerance,
+                                       track_dependencies=track_dependencies, chunk_size=chunk_size)
+        self.fast = fast and not track_dependencies
+        self.fast_lines = 0
+        self._started = False
+        self.finished = False
+
+    def __iter__(self) -> Iterator[MotionChunk]:
+        if self._started:
+            raise InvalidArgument("an Interpretation can be iterated only once; call interpret() again")
+        self._started = True
+        if self.fast:
+            from .fastpath import run_with_fastpath
+
+            yield from run_with_fastpath(self)
+        else:
+            yield from self.interpreter.run(_blocks(self.text, self.file, self.block_delete))
+        self.finished = True
+
+    @property
+    def unsupported(self) -> tuple[Unsupported, ...]:
+        return tuple(self.interpreter.unsupported)
+
+    @property
+    def status(self) -> str:
+        """``"unknown"`` if a code could not be modelled, else ``"complete"``."""
+        return "unknown" if self.interpreter.unsupported else "complete"
+
+    @property
+    def assumed_modal(self) -> dict[str, str]:
+        return dict(self.interpreter.assumed)
+
+    def assumed_modal_text(self) -> list[str]:
+        """Human-readable lines for the report."""
+        return [f"{MODAL_GROUP_NAMES[g]}: assumed {c} from the machine file" for g, c in self.assumed_modal.items()]
+
+    @property
+    def counts(self) -> dict[str, int]:
+        it = self.interpreter
+        out = {"blocks": it.blocks, "segments": it.segment_count, "fast_lines": self.fast_lines}
+        for k, v in it.kind_counts.items():
+            out[k.name.lower()] = v
+        return out
+
+    def segments(self) -> Iterator[Segment]:
+        """Iterate segment views of every chunk."""
+        for chunk in self:
+            yield from chunk.segments()
+
+
+def _blocks(text: str, file: str, block_delete: bool):
+    from .program import iter_blocks
+
+    return iter_blocks(text, file=file, block_delete=block_delete)
+
+
+def interpret(
+    source: str | os.PathLike,
+    machine: Machine,
+    *,
+    file: str | None = None,
+    block_delete: bool = False,
+    track_dependencies: bool = False,
+    arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE,
+    fast: bool = True,
+    chunk_size: int = 4096,
+) -> Interpretation:
+    """Interpret a G-code program for a machine (lazily).
+
+    Parameters
+    ----------
+    source : str or path
+        Program text, or a path (a ``PathLike``, or a one-line ``str`` naming
+        an existing file).
+    machine : Machine
+    file : str, optional
+        Name used in diagnostics (default: the path, or ``<program>``).
+    block_delete : bool
+        True skips blocks starting with ``/`` (the block-delete switch is on);
+        default False executes them, as LinuxCNC does by default.
+    track_dependencies : bool
+        Fill ``Segment.deps_start/deps_end`` for parameter ranges (disables
+        the fast path).
+    arc_tolerance : Fraction or decimal str
+        Largest allowed mismatch (mm) of an arc's end point with its circle.
+    fast : bool
+        Use the vectorized fast path for CAM-style runs of lines (identical
+        segments; see :mod:`nczones.gcode.fastpath`).
+    chunk_size : int
+        Segments per chunk of the full interpreter.
+
+    Returns
+    -------
+    Interpretation
+    """
+    from ..exact import exact
+
+    text, name = _read_source(source, file)
+    tol = exact(arc_tolerance)
+    if tol < 0:
+        raise InvalidArgument(f"arc_tolerance must not be negative, got {arc_tolerance!r}")
+    return Interpretation(text, machine, file=name, block_delete=block_delete,
+                          track_dependencies=track_dependencies, arc_tolerance=tol, fast=fast,
+                          chunk_size=chunk_size)
+
+
+def segments(source: str | os.PathLike, machine: Machine, **options) -> list[Segment]:
+    """Every segment of a program as a list (holds them all in memory).
+
+    Takes the options of :func:`interpret`.  Check
+    ``interpret(...).unsupported`` when the result must be complete; this
+    convenience returns the segments emitted before an unsupported code.
+    """
+    return list(interpret(source, machine, **options).segments())

@@ -1,0 +1,1054 @@
+"""The G-code interpreter: evaluated blocks -> motion in machine coordinates.
+
+The language layer (:mod:`nczones.gcode.program`) runs the program's control
+(parameters, expressions, O-words, subprograms) and yields one
+:class:`~nczones.gcode.blocks.Block` per executed block.  This module gives
+the blocks their machine meaning with the Fanuc/LinuxCNC semantics and emits
+:class:`~nczones.motion.Segment` values in **machine coordinates** (exact
+rationals; millimetres, degrees for rotary axes), grouped into
+:class:`~nczones.motion.MotionChunk` objects.
+
+Invariants
+----------
+* Every number stays an exact ``Fraction``; inch values are converted with
+  exactly 1 in = 25.4 mm.  No float ever enters a coordinate.
+* ``machine = program + work offset (G54..G59.3) + G92/G52 offset + tool
+  length`` (the tool length on the machine's tool axis only), so an
+  incremental move moves the machine by exactly the programmed distance
+  (LinuxCNC: changing an offset never moves the machine by itself).
+* Blocks are executed in LinuxCNC's order of execution within a block
+  (feed, tool, plane, units, tool length, coordinate system, distance mode,
+  retract mode, G28/G30/G10/G92/G52, motion, stop).
+* Never silent: a code that cannot be modelled exactly ends motion emission
+  and is recorded in :attr:`Interpreter.unsupported` with its span and reason;
+  motion before it is still emitted.  Block-level errors after that point are
+  still reported (the blocks are still checked), but nothing is emitted.
+* A user error raises :class:`~nczones.errors.GcodeError` with a ``GC2xx``
+  (block/modal) or ``GC3xx`` (interpretation) code and the block's span.
+
+The support table and every decision (G30 position, G64, G4 units, arcs off
+their circle, ...) is in ``specs/gcode-support.md``.
+"""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
+from ..machine import Machine
+from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
+from .blocks import Block, Word
+
+__all__ = [
+    "Interpreter",
+    "Unsupported",
+    "DEFAULT_ARC_TOLERANCE",
+    "MODAL_GROUP_NAMES",
+]
+
+#: An arc whose end point lies farther than this (mm) from the circle through
+#: its start point around its centre is an error (GC301).
+DEFAULT_ARC_TOLERANCE = Fraction(2, 1000)
+
+INCH = Fraction(254, 10)
+_ZERO = Fraction(0)
+_ONE = Fraction(1)
+#: LinuxCNC G73/G83 rapid back-off (0.010 in; 0.254 mm in mm programs).
+G83_RAPID_DELTA_MM = Fraction(254, 1000)
+_TINY = Fraction(1, 10**12)
+
+AXIS_LETTERS = "XYZABCUVW"
+ROTARY = frozenset("ABC")
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
+_WCS_BY_KEY = {540: "G54", 550: "G55", 560: "G56", 570: "G57", 580: "G58", 590: "G59",
+               591: "G59.1", 592: "G59.2", 593: "G59.3"}
+
+# G codes keyed by 10 * number (G59.1 -> 591).
+_GROUP_OF: dict[int, int] = {}
+for _g, _codes in {
+    0: (40, 100, 280, 281, 300, 301, 520, 530, 920, 921, 922, 923),
+    1: (0, 10, 20, 30, 330, 331, 382, 383, 384, 385, 730, 760, 800, 810, 820, 830, 840, 850,
+        860, 870, 880, 890, 50, 51, 52, 53, 61),
+    2: (170, 180, 190, 171, 181, 191),
+    3: (900, 910),
+    4: (901, 911),
+    5: (930, 940, 950),
+    6: (200, 210),
+    7: (400, 410, 420, 411, 421),
+    8: (430, 431, 432, 490),
+    10: (980, 990),
+    12: (540, 550, 560, 570, 580, 590, 591, 592, 593),
+    13: (610, 611, 640),
+    14: (960, 970),
+    15: (70, 80),
+}.items():
+    for _c in _codes:
+        _GROUP_OF[_c] = _g
+
+#: Names of the modal groups the report mentions when the program never set them.
+MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90/G91)",
+                     "offset": "work offset (G54..G59.3)", "plane": "plane (G17/G18/G19)",
+                     "feed": "feed mode (G93/G94/G95)", "tool": "tool length (G43/G49)"}
+
+# Codes that cannot be modelled exactly: key -> reason.
+_UNSUPPORTED_G = {
+    410: "cutter radius compensation (G41) offsets the path by the tool radius; nczones does not model it",
+    420: "cutter radius compensation (G42) offsets the path by the tool radius; nczones does not model it",
+    411: "dynamic cutter radius compensation (G41.1) is not modelled",
+    421: "dynamic cutter radius compensation (G42.1) is not modelled",
+    330: "spindle-synchronized motion (G33) is not modelled",
+    331: "rigid tapping (G33.1) is not modelled",
+    760: "threading cycle (G76) is not modelled",
+    382: "probing (G38.2) stops at a position that depends on the part",
+    383: "probing (G38.3) stops at a position that depends on the part",
+    384: "probing (G38.4) stops at a position that depends on the part",
+    385: "probing (G38.5) stops at a position that depends on the part",
+    50: "cubic spline (G5) is not modelled",
+    51: "quadratic B-spline (G5.1) is not modelled",
+    52: "NURBS (G5.2) is not modelled",
+    53: "NURBS (G5.3) is not modelled",
+    61: "NURBS (G6.2) is not modelled",
+    870: "back boring cycle (G87) is not modelled",
+    880: "boring cycle with manual retract (G88) lets the operator move the spindle",
+    432: "additional tool length offset (G43.2) is not modelled",
+    70: "lathe diameter mode (G7) is not modelled",
+    171: "plane G17.1 (UV) is not modelled",
+    181: "plane G18.1 (WU) is not modelled",
+    191: "plane G19.1 (VW) is not modelled",
+    680: "coordinate rotation (G68) is not modelled",
+    510: "scaling (G51) is not modelled",
+    511: "mirroring (G51.1) is not modelled",
+    500: "G50 means scaling cancel on some controls and coordinate setting on others",
+    150: "polar coordinates (G15/G16) are not modelled",
+    160: "polar coordinates (G15/G16) are not modelled",
+    541: "extended work offsets (G54.1 P) are not in the machine file",
+    650: "macro call (G65) was not expanded by the language layer",
+    660: "modal macro call (G66) is not modelled",
+    700: "lathe finishing cycle (G70) is not modelled",
+    710: "lathe roughing cycle (G71) is not modelled",
+    720: "lathe facing cycle (G72) is not modelled",
+    740: "left-hand tapping cycle (G74) is not modelled",
+    71: "cylindrical interpolation (G7.1) is not modelled",
+    1070: "cylindrical interpolation (G107) is not modelled",
+    120: "circular pocket cycle (G12) is not modelled",
+    130: "circular pocket cycle (G13) is not modelled",
+    220: "stored stroke check (G22) is not modelled",
+    1121: "polar coordinate interpolation (G112) is not modelled",
+}
+# Harmless codes: no effect on the path.
+_HARMLESS_M = {0, 1, 3, 4, 5, 7, 8, 9, 19, 48, 49, 50, 51, 52, 53, 60, 62, 63, 64, 65, 66, 67, 68,
+               70, 71, 72}
+_M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8,
+            48: 9, 49: 9, 50: 9, 51: 9, 52: 9, 53: 9, 62: 5, 63: 5, 64: 5, 65: 5, 66: 5, 67: 5,
+            68: 5, 70: 10, 71: 10, 72: 10, 73: 10}
+_CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
+_AXIS_USERS = {100: "G10", 280: "G28", 300: "G30", 920: "G92", 520: "G52"}
+
+
+class _Stop(Exception):
+    """Internal: the program ended (M2/M30)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Unsupported:
+    """Why the interpretation is incomplete: a code nczones cannot model."""
+
+    code: str
+    reason: str
+    span: SourceSpan | None
+
+    def render(self) -> str:
+        return f"{self.span if self.span else '<input>'}: unknown: {self.code}: {self.reason}"
+
+
+def _gkey(value: Fraction) -> int | None:
+    k = value * 10
+    if k.denominator != 1:
+        return None
+    return int(k)
+
+
+def _gname(key: int) -> str:
+    return f"G{key // 10}" if key % 10 == 0 else f"G{key // 10}.{key % 10}"
+
+
+def _fmt(q: Fraction) -> str:
+    from ..exact import format_decimal
+
+    return format_decimal(q, places=6)
+
+
+def _dadd(a: dict, b: dict, sign: int = 1) -> dict:
+    out = dict(a)
+    for k, v in b.items():
+        n = out.get(k, 0) + sign * v
+        if n:
+            out[k] = n
+        else:
+            out.pop(k, None)
+    return out
+
+
+class Interpreter:
+    """Modal state machine from blocks to machine-coordinate motion.
+
+    Parameters
+    ----------
+    machine : Machine
+        Axes, start position, reference position (G28/G30), work offsets,
+        tool lengths and the initial modal state.
+    file : str
+        Name used in spans of derived diagnostics.
+    arc_tolerance : Fraction
+        Largest allowed difference (mm) between the radius at the start and
+        the radius at the end of an I/J/K arc (and by which an R arc may be
+        too short); beyond it the arc is an error GC301/GC302.
+    track_dependencies : bool
+        Fill ``deps_start``/``deps_end`` of every segment.
+    chunk_size : int
+        Segments per emitted :class:`~nczones.motion.MotionChunk`.
+
+    Examples
+    --------
+    >>> from nczones.machine import parse_machine
+    >>> from nczones.gcode.interpreter import Interpreter, blocks_from_words
+    >>> m = parse_machine('''
+    ... [machine]
+    ... axes = ["X", "Y"]
+    ... pulse = "0.001"
+    ... [machine.rapid]
+    ... X = "1000"
+    ... Y = "1000"
+    ... [machine.reference]
+    ... X = "0"
+    ... Y = "0"
+    ... [offsets]
+    ... G54 = { X = "100" }
+    ... ''')
+    >>> it = Interpreter(m)
+    >>> segs = [s for c in it.run(blocks_from_words([("G0", "X1", "Y2"), ("G91", "G1", "X0.5", "F100")])) for s in c.segments()]
+    >>> [(s.kind.name, [str(v) for v in s.end]) for s in segs]
+    [('RAPID', ['101', '2']), ('LINE', ['203/2', '2'])]
+    """
+
+    def __init__(
+        self,
+        machine: Machine,
+        *,
+        file: str = "<program>",
+        arc_tolerance: Fraction = DEFAULT_ARC_TOLERANCE,
+        track_dependencies: bool = False,
+        chunk_size: int = 4096,
+    ):
+        if not isinstance(arc_tolerance, Fraction) or arc_tolerance < 0:
+            from ..exact import exact
+
+            arc_tolerance = exact(arc_tolerance)
+        self.machine = machine
+        self.file = file
+        self.arc_tolerance = Fraction(arc_tolerance)
+        self.track = track_dependencies
+        self.chunk_size = max(1, int(chunk_size))
+        self.axes: tuple[str, ...] = machine.axis_names
+        self.naxes = len(self.axes)
+        self.index = {a: i for i, a in enumerate(self.axes)}
+        self.rotary = tuple(a in ROTARY for a in self.axes)
+        self.tool_axis = self.index.get(machine.tool_axis) if machine.tool_axis else None
+        n = self.naxes
+        z = [_ZERO] * n
+        # ---- modal state
+        modal = set(machine.modal)
+        self.inch = "G20" in modal
+        self.absolute = "G91" not in modal
+        self.arc_absolute = False  # G91.1 (LinuxCNC default)
+        self.plane = Plane.XZ if "G18" in modal else Plane.YZ if "G19" in modal else Plane.XY
+        self.wcs = next((c for c in machine.modal if c in WORK_OFFSETS), "G54")
+        self.feed_mode = 93 if "G93" in modal else 95 if "G95" in modal else 94
+        self.motion: int | None = None
+        self.feed = _ZERO  # program units per minute
+        self.retract_r = False  # G98
+        self.cycle_r: Fraction | None = None
+        self.cycle_cc: Fraction | None = None
+        self.cycle_p = _ZERO
+        self.cycle_q: Fraction | None = None
+        self.comp_on = False
+        self.comp_just_off = False
+        self.tool_selected = 0
+        self.tool_in_spindle = 0
+        self.tlo = _ZERO
+        self.tool_register: int | None = None
+        # ---- offsets (mm, machine axes)
+        self.g5x = {name: list(machine.offset(name)) for name in WORK_OFFSETS}
+        self.g92 = list(z)
+        self.g92_params = list(z)
+        self.home = {280: tuple(machine.reference), 300: tuple(machine.reference)}
+        self.pos = list(machine.start)
+        # dependency tracking (per axis: {source: coefficient})
+        self.dep_pos = [{"start": 1} for _ in range(n)]
+        self.dep_g5x = {name: [{name: 1} for _ in range(n)] for name in WORK_OFFSETS}
+        self.dep_g92 = [{} for _ in range(n)]
+        self.dep_tlo: dict = {}
+        self._recompute_offsets()
+        # ---- bookkeeping
+        self.unset = {"units", "distance", "offset", "plane", "feed", "tool"}
+        self.assumed: dict[str, str] = {}
+        self.unsupported: list[Unsupported] = []
+        self.blocks = 0
+        self.segment_count = 0
+        self.kind_counts = {k: 0 for k in SegmentKind}
+        self.ended = False
+        self._out: list[Segment] = []
+        self._block: Block | None = None
+        self._span: SourceSpan | None = None
+
+    # ------------------------------------------------------------------ helpers
+    def _recompute_offsets(self) -> None:
+        g5 = self.g5x[self.wcs]
+        off = [g5[i] + self.g92[i] for i in range(self.naxes)]
+        if self.tool_axis is not None:
+            off[self.tool_axis] += self.tlo
+        self.off = off
+        if self.track:
+            deps = []
+            for i in range(self.naxes):
+                d = _dadd(self.dep_g5x[self.wcs][i], self.dep_g92[i])
+                if i == self.tool_axis:
+                    d = _dadd(d, self.dep_tlo)
+                deps.append(d)
+            self.dep_off = deps
+
+    def _error(self, code: str, message: str, word: Word | None = None) -> GcodeError:
+        span = word.span if word is not None else self._span
+        return GcodeError(Diagnostic(code, message, span))
+
+    def _mm(self, v: Fraction, i: int) -> Fraction:
+        if self.inch and not self.rotary[i]:
+            return v * INCH
+        return v
+
+    def _len(self, v: Fraction) -> Fraction:
+        return v * INCH if self.inch else v
+
+    def _unknown(self, code: str, reason: str, word: Word | None = None) -> None:
+        span = word.span if word is not None else self._span
+        if not self.unsupported:
+            self.unsupported.append(Unsupported(code, reason, span))
+
+    @property
+    def stopped(self) -> bool:
+        """True once an unsupported code ended motion emission."""
+        return bool(self.unsupported)
+
+    def _note_assumed(self, groups: tuple[str, ...]) -> None:
+        for g in groups:
+            if g in self.unset and g not in self.assumed:
+                self.assumed[g] = self._current_code(g)
+
+    def _current_code(self, group: str) -> str:
+        return {
+            "units": "G20" if self.inch else "G21",
+            "distance": "G90" if self.absolute else "G91",
+            "offset": self.wcs,
+            "plane": f"G{int(self.plane)}",
+            "feed": f"G{self.feed_mode}",
+            "tool": "G49" if self.tool_register is None and self.tlo == 0 else "G43",
+        }[group]
+
+    def _deps_tuple(self, deps: list[dict]) -> tuple[tuple[str, ...], ...]:
+        out = []
+        for d in deps:
+            names = []
+            for k, v in d.items():
+                if v != 1:
+                    self._unknown(
+                        "dependencies",
+                        f"the position depends on {k} with coefficient {v} (through G92/G10/G52 "
+                        "arithmetic); parameter ranges cannot be expressed per segment",
+                    )
+                    return tuple(() for _ in deps)
+                names.append(k)
+            out.append(tuple(sorted(names)))
+        return tuple(out)
+
+    def _emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
+              plane=None, clockwise=False, centre=None, radius=None, turns=0, dwell=None,
+              end_deps: list[dict] | None = None) -> None:
+        start = tuple(self.pos)
+        endt = tuple(end)
+        fmm = None
+        if feed and self.feed_mode == 94:
+            fmm = self._len(self.feed)
+        ds = de = ()
+        if self.track:
+            ds = self._deps_tuple(self.dep_pos)
+            de = self._deps_tuple(end_deps if end_deps is not None else self.dep_pos)
+        if not self.unsupported:
+            seg = Segment(kind, start, endt, self.axes, self._block.index, self._span, self.tlo, fmm,
+                          plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
+                          ds, de)
+            self._out.append(seg)
+            self.segment_count += 1
+            self.kind_counts[kind] += 1
+        self.pos = list(endt)
+        if end_deps is not None:
+            self.dep_pos = end_deps
+
+    # ------------------------------------------------------------------ driver
+    def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
+        """Interpret blocks in execution order, yielding motion chunks.
+
+        Memory does not grow with the program: at most ``chunk_size``
+        segments are held before they are handed on.
+        """
+        size = self.chunk_size
+        for block in blocks:
+            if self.ended:
+                break
+            self.blocks += 1
+            self._block = block
+            self._span = block.span
+            try:
+                self.execute(block)
+            except _Stop:
+                self.ended = True
+            if len(self._out) >= size:
+                yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
+                self._out = []
+        if self._out:
+            yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
+            self._out = []
+
+    # ------------------------------------------------------------------ one block
+    def execute(self, block: Block) -> None:
+        """Execute one block (LinuxCNC order of execution)."""
+        gcodes: list[tuple[int, Word]] = []
+        mcodes: list[tuple[int, Word]] = []
+        words: dict[str, Word] = {}
+        axis_words: list[tuple[int, Word]] = []
+        for w in block.words:
+            letter = w.letter
+            if letter == "G":
+                k = _gkey(w.value)
+                if k is None:
+                    raise self._error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at most one decimal", w)
+                gcodes.append((k, w))
+            elif letter == "M":
+                if w.value.denominator != 1:
+                    raise self._error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
+                mcodes.append((int(w.value), w))
+            else:
+                if letter in words:
+                    raise self._error("GC204", f"two {letter} words in one block ({words[letter].text or letter} and {w.text or letter}); a letter may appear once", w)
+                words[letter] = w
+                if letter in AXIS_LETTERS:
+                    i = self.index.get(letter)
+                    if i is None:
+                        raise self._error(
+                            "GC203",
+                            f"axis word {w.text or letter} names axis {letter}, which this machine does not have "
+                            f"(axes: {', '.join(self.axes)})",
+                            w,
+                        )
+                    axis_words.append((i, w))
+        if not gcodes and not mcodes and len(words) == len(axis_words) and axis_words and not self.unsupported:
+            # the common modal block: axis words only
+            self._motion_block(block, axis_words, words, None, False)
+            return
+        # ---- modal group checks
+        groups: dict[int, tuple[int, Word]] = {}
+        for k, w in gcodes:
+            g = _GROUP_OF.get(k)
+            if g is None:
+                if k in _UNSUPPORTED_G:
+                    g = 100 + k
+                else:
+                    raise self._error("GC202", f"unknown G code {_gname(k)} (written {w.text or _gname(k)}); see specs/gcode-support.md for the supported codes", w)
+            if g in groups:
+                raise self._error("GC201", f"{_gname(groups[g][0])} and {_gname(k)} are in the same modal group; a block may contain only one of them", w)
+            groups[g] = (k, w)
+        mgroups: dict[int, tuple[int, Word]] = {}
+        for k, w in mcodes:
+            g = _M_GROUP.get(k, 1000 + k)
+            if g in mgroups and not (g == 8 and {k, mgroups[g][0]} == {7, 8}):
+                raise self._error("GC201", f"M{mgroups[g][0]} and M{k} are in the same modal group; a block may contain only one of them", w)
+            mgroups[g] = (k, w)
+        if len(mcodes) > 4:
+            raise self._error("GC206", f"{len(mcodes)} M words in one block; at most 4 are allowed", mcodes[4][1])
+        g0 = groups.get(0)
+        g1 = groups.get(1)
+        if g0 and g1 and g0[0] in _AXIS_USERS and g1[0] not in (800,) and axis_words:
+            raise self._error("GC205", f"{_gname(g0[0])} and {_gname(g1[0])} both use the axis words of the block; write them in separate blocks", g1[1])
+        if g1 and g1[0] == 800 and axis_words and not (g0 and g0[0] in _AXIS_USERS):
+            raise self._error("GC205", "G80 cancels the canned cycle and cannot take axis words; write the motion in a separate block", axis_words[0][1])
+        # R word without a user
+        if "R" in words:
+            motion_to_be = g1[0] if g1 else self.motion
+            uses_r = (motion_to_be in (20, 30) or motion_to_be in _CYCLES) and (g1 is not None or axis_words or g0 is None) \
+                or (g0 and g0[0] == 100) or (groups.get(13, (0,))[0] == 640)
+            if not uses_r and not any(k in _UNSUPPORTED_G for k, _ in gcodes):
+                raise self._error("GC204", f"R word {words['R'].text or 'R'} with no G code that uses it (R is used by G2/G3, canned cycles and G10)", words["R"])
+        # unsupported codes: stop emitting, keep checking blocks
+        for k, w in gcodes:
+            if k in _UNSUPPORTED_G:
+                self._unknown(_gname(k), _UNSUPPORTED_G[k], w)
+                if k in (410, 420, 411, 421):
+                    self.comp_on = True
+        for k, w in mcodes:
+            if k == 73:
+                self._unknown("M73", "M73 restores the modal state when the subroutine returns; the language layer does not report returns", w)
+            elif k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99):
+                self._unknown(f"M{k}", f"M{k} is not a code nczones models (user M codes may run anything)", w)
+        if 70 in {k for k, _ in mcodes}:
+            self._saved_modal = self._modal_snapshot()
+        # ---- order of execution
+        # 2-3: feed mode, F
+        if 5 in groups:
+            self.feed_mode = groups[5][0] // 10
+            self.unset.discard("feed")
+        if "F" in words:
+            f = words["F"].value
+            if f < 0:
+                raise self._error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
+            self.feed = f
+        # 5-6: tool select and change
+        if "T" in words:
+            t = words["T"].value
+            if t.denominator != 1 or t < 0:
+                raise self._error("GC209", f"tool number {words['T'].text} must be a non-negative integer", words["T"])
+            self.tool_selected = int(t)
+        mset = {k for k, _ in mcodes}
+        if 6 in mset:
+            self.tool_in_spindle = self.tool_selected
+        if 61 in mset:
+            q = words.get("Q")
+            if q is None or q.value.denominator != 1 or q.value < 0:
+                raise self._error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
+            self.tool_in_spindle = int(q.value)
+        # 10: dwell
+        if g0 and g0[0] == 40:
+            p = words.get("P")
+            if p is None:
+                raise self._error("GC208", "G4 needs a P word with the dwell time in seconds", g0[1])
+            if p.value < 0:
+                raise self._error("GC209", f"dwell time {p.text} is negative", p)
+            if "X" in words:
+                self._unknown("G4 X", "G4 with an X word dwells on Fanuc controls but moves X on LinuxCNC", words["X"])
+            self._emit(SegmentKind.DWELL, list(self.pos), dwell=p.value)
+        # 11: plane
+        if 2 in groups:
+            k = groups[2][0]
+            if k in (170, 180, 190):
+                self.plane = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}[k]
+            self.unset.discard("plane")
+        # 12: units
+        if 6 in groups:
+            self.inch = groups[6][0] == 200
+            self.unset.discard("units")
+        # 13: cutter comp
+        if 7 in groups:
+            if groups[7][0] == 400:
+                if self.comp_on:
+                    self.comp_just_off = True
+                self.comp_on = False
+        # 14: tool length
+        if 8 in groups:
+            self._tool_length(groups[8], words)
+        # 15: coordinate system
+        if 12 in groups:
+            self.wcs = _WCS_BY_KEY[groups[12][0]]
+            self.unset.discard("offset")
+            self._recompute_offsets()
+        # 17: distance modes
+        if 3 in groups:
+            self.absolute = groups[3][0] == 900
+            self.unset.discard("distance")
+        if 4 in groups:
+            self.arc_absolute = groups[4][0] == 901
+        # 18: retract mode
+        if 10 in groups:
+            self.retract_r = groups[10][0] == 990
+        # 19: G28/G30, G10, G92, G52
+        nonmodal_uses_axes = False
+        if g0 and g0[0] != 40:
+            k = g0[0]
+            nonmodal_uses_axes = k in _AXIS_USERS
+            if k in (280, 300):
+                self._home(k, axis_words, g0[1])
+            elif k in (281, 301):
+                self.home[k - 1] = tuple(self.pos)
+            elif k == 100:
+                self._g10(words, axis_words, g0[1])
+            elif k == 920:
+                self._g92(axis_words, g0[1])
+            elif k in (921, 922):
+                self.g92 = [_ZERO] * self.naxes
+                self.dep_g92 = [{} for _ in range(self.naxes)]
+                if k == 921:
+                    self.g92_params = [_ZERO] * self.naxes
+                self._recompute_offsets()
+            elif k == 923:
+                self.g92 = list(self.g92_params)
+                self.dep_g92 = [{} for _ in range(self.naxes)]
+                self._recompute_offsets()
+            elif k == 520:
+                self._g52(axis_words)
+        # 20: motion
+        g53 = bool(g0 and g0[0] == 530)
+        if g1:
+            k = g1[0]
+            if k not in _CYCLES:
+                self._cycle_il = None
+                self._last_cycle = None
+            if k == 800:
+                self.motion = None
+            elif k in _UNSUPPORTED_G:
+                self.motion = None
+            else:
+                self.motion = k
+        if not nonmodal_uses_axes:
+            if g53 and not (g1 and g1[0] in (0, 10)) and not (self.motion in (0, 10) and not g1):
+                raise self._error("GC207", "G53 needs G0 or G1 in the same block (or active)", g0[1])
+            if axis_words or (g1 and g1[0] not in (800,) and g1[0] not in _UNSUPPORTED_G):
+                if self.unsupported and not g1 and not axis_words:
+                    pass
+                else:
+                    self._motion_block(block, axis_words, words, g1, g53)
+        if 72 in mset:
+            if self._saved_modal is None:
+                raise self._error("GC204", "M72 restores a modal state, but no M70 saved one", mgroups[10][1])
+            self._restore_modal(self._saved_modal)
+        if 71 in mset:
+            self._saved_modal = None
+        # 21: stop
+        if 2 in mset or 30 in mset:
+            raise _Stop
+
+    # ------------------------------------------------------------------ pieces
+    _saved_modal: tuple | None = None
+    _cycle_il: Fraction | None = None
+
+    def _modal_snapshot(self) -> tuple:
+        return (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
+                self.feed, self.retract_r)
+
+    def _restore_modal(self, snap: tuple) -> None:
+        (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
+         self.feed, self.retract_r) = snap
+        self._recompute_offsets()
+
+    def _tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
+        k, w = g
+        self.unset.discard("tool")
+        if k == 490:
+            self.tlo = _ZERO
+            self.tool_register = None
+            self.dep_tlo = {}
+        elif k == 430:
+            h = words.get("H")
+            if h is not None:
+                if h.value.denominator != 1 or h.value < 0:
+                    raise self._error("GC209", f"H word {h.text} must be a non-negative integer register number", h)
+                reg = int(h.value)
+            else:
+                reg = self.tool_in_spindle
+            if reg != 0 and reg not in self.machine.tool_lengths:
+                where = h if h is not None else w
+                known = ", ".join(f"H{r}" for r in sorted(self.machine.tool_lengths)) or "none"
+                raise self._error("GC310", f"tool length register H{reg} is not in the machine file's [tool_lengths] (known: {known})", where)
+            self.tlo = self.machine.tool_length(reg)
+            self.tool_register = reg
+            self.dep_tlo = {f"H{reg}": 1} if reg != 0 else {}
+        elif k == 431:
+            if self.tool_axis is None:
+                raise self._error("GC204", "G43.1 needs a tool axis in the machine file", w)
+            axis = self.axes[self.tool_axis]
+            zw = words.get(axis)
+            if zw is None:
+                raise self._error("GC208", f"G43.1 needs a {axis} word with the tool length", w)
+            self.tlo = self._len(zw.value)
+            self.tool_register = None
+            self.dep_tlo = {}
+        self._recompute_offsets()
+
+    def _program_target(self, axis_words, g53: bool, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
+        absolute = self.absolute if absolute is None else absolute
+        end = list(self.pos)
+        deps = [dict(d) for d in self.dep_pos] if self.track else None
+        for i, w in axis_words:
+            v = w.value
+            if self.inch and not self.rotary[i]:
+                v = v * INCH
+            if g53:
+                end[i] = v
+                if deps is not None:
+                    deps[i] = {}
+            elif absolute:
+                end[i] = v + self.off[i]
+                if deps is not None:
+                    deps[i] = dict(self.dep_off[i])
+            else:
+                end[i] = end[i] + v
+        return end, deps
+
+    def _motion_block(self, block, axis_words, words, g1, g53: bool) -> None:
+        motion = self.motion
+        if motion is None:
+            if axis_words and not self.unsupported:
+                raise self._error("GC208", "axis words without an active motion mode (G80 is active); write G0, G1, G2 or G3", axis_words[0][1])
+            return
+        if self.unsupported:
+            return
+        if motion in (0, 10):
+            if g53 and not self.absolute:
+                raise self._error("GC207", "G53 cannot be used in incremental mode (G91)", axis_words[0][1] if axis_words else None)
+            if not axis_words:
+                return
+            self._note_assumed(("units", "distance") if g53 else ("units", "distance", "offset"))
+            end, deps = self._program_target(axis_words, g53)
+            if motion == 0:
+                self._emit(SegmentKind.RAPID, end, end_deps=deps)
+            else:
+                self._check_feed()
+                self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+            self.comp_just_off = False
+        elif motion in (20, 30):
+            if self.comp_just_off:
+                raise self._error("GC311", "the move just after turning off cutter compensation (G40) must be straight, not an arc", axis_words[0][1] if axis_words else None)
+            self._arc(block, axis_words, words, motion == 20, g53)
+        elif motion in _CYCLES:
+            self._cycle(motion, axis_words, words)
+        else:
+            raise InternalError(f"motion mode {motion}")
+
+    def _check_feed(self) -> None:
+        if self.feed_mode == 94 and self.feed == 0:
+            raise self._error("GC305", "feed motion with zero feed rate: no F word has been given (write F before or in this block)")
+
+    # ------------------------------------------------------------------ arcs
+    def _arc(self, block, axis_words, words, cw: bool, g53: bool) -> None:
+        if g53:
+            raise self._error("GC207", "G53 cannot be used with G2/G3")
+        plane = self.plane
+        a_name, b_name, n_name = PLANE_AXES[plane]
+        ia, ib = self.index.get(a_name), self.index.get(b_name)
+        if ia is None or ib is None:
+            raise self._error("GC308", f"an arc in plane G{int(plane)} needs axes {a_name} and {b_name}; this machine has {', '.join(self.axes)}")
+        offs = {"X": "I", "Y": "J", "Z": "K"}
+        la, lb, ln = offs[a_name], offs[b_name], offs[n_name]
+        if ln in words:
+            raise self._error("GC204", f"{ln} word {words[ln].text} given for an arc in plane G{int(plane)} (use {la} and {lb})", words[ln])
+        rw = words.get("R")
+        if rw is not None and (la in words or lb in words):
+            raise self._error("GC204", "mixed radius (R) and centre (I/J/K) format in one arc", rw)
+        if rw is None and la not in words and lb not in words:
+            raise self._error("GC208", f"arc without {la}, {lb} or R word: the centre or radius is missing", axis_words[0][1] if axis_words else None)
+        self._check_feed()
+        turns = 0
+        pw = words.get("P")
+        if pw is not None:
+            if pw.value.denominator != 1 or pw.value < 1:
+                raise self._error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
+            turns = int(pw.value) - 1
+        self._note_assumed(("units", "distance", "offset", "plane"))
+        end, deps = self._program_target(axis_words, False)
+        sa, sb = self.pos[ia], self.pos[ib]
+        ea, eb = end[ia], end[ib]
+        tol = self.arc_tolerance
+        if rw is not None:
+            r = self._len(rw.value)
+            if sa == ea and sb == eb:
+                raise self._error("GC303", "R-format arc whose end point equals its start point: the centre is undefined (use I/J/K for a full circle)", rw)
+            if r == 0:
+                raise self._error("GC304", "zero-radius arc (R0)", rw)
+            h2 = ((ea - sa) ** 2 + (eb - sb) ** 2) / 4
+            r2 = r * r
+            if h2 > r2:
+                # |h| - |r| > tol  <=>  h > r + tol
+                if h2 > (abs(r) + tol) ** 2:
+                    raise self._error(
+                        "GC302",
+                        f"arc radius R{_fmt(abs(r))} mm is too small to reach the end point (half the chord is "
+                        f"{_fmt(Fraction(h2))}**0.5 mm; tolerance {_fmt(tol)} mm)",
+                        rw,
+                    )
+            if h2 * (1 - _TINY) ** -2 >= r2 or h2 >= r2:
+                # LinuxCNC takes the chord midpoint as the centre (a half circle)
+                centre = ((sa + ea) / 2, (sb + eb) / 2)
+                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
+                           turns=turns, end_deps=deps)
+            else:
+                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, radius=r,
+                           turns=turns, end_deps=deps)
+            return
+        iw, jw = words.get(la), words.get(lb)
+        iv = self._len(iw.value) if iw is not None else _ZERO
+        jv = self._len(jw.value) if jw is not None else _ZERO
+        if self.arc_absolute:
+            ca = (iv + self.off[ia]) if iw is not None else self.off[ia]
+            cb = (jv + self.off[ib]) if jw is not None else self.off[ib]
+        else:
+            ca, cb = sa + iv, sb + jv
+        r0 = (sa - ca) ** 2 + (sb - cb) ** 2
+        r1 = (ea - ca) ** 2 + (eb - cb) ** 2
+        if r0 == 0 or r1 == 0:
+            raise self._error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
+        if r0 != r1 and _sqrt_diff_exceeds(r0, r1, tol):
+            raise self._error(
+                "GC301",
+                f"arc end point is off its circle: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm "
+                f"(start=({a_name}{_fmt(sa)},{b_name}{_fmt(sb)}) centre=({a_name}{_fmt(ca)},{b_name}{_fmt(cb)}) "
+                f"end=({a_name}{_fmt(ea)},{b_name}{_fmt(eb)}) in machine mm); allowed difference is {_fmt(tol)} mm",
+                iw or jw,
+            )
+        self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=(ca, cb),
+                   turns=turns, end_deps=deps)
+
+    # ------------------------------------------------------------------ G28/G30, G10, G92, G52
+    def _home(self, k: int, axis_words, w: Word) -> None:
+        self._note_assumed(("units", "distance", "offset"))
+        inter, deps = self._program_target(axis_words, False)
+        self._emit(SegmentKind.RAPID, inter, derived=f"{_gname(k)} intermediate", end_deps=deps)
+        home = self.home[k]
+        end = list(self.pos)
+        hdeps = [dict(d) for d in self.dep_pos] if self.track else None
+        moving = [i for i, _ in axis_words] if axis_words else range(self.naxes)
+        for i in moving:
+            end[i] = home[i]
+            if hdeps is not None:
+                hdeps[i] = {}
+        self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} home", end_deps=hdeps)
+
+    def _g10(self, words, axis_words, w: Word) -> None:
+        lw, pw = words.get("L"), words.get("P")
+        if lw is None:
+            raise self._error("GC208", "G10 needs an L word (L1, L2, L10, L20)", w)
+        L = lw.value
+        if L not in (1, 2, 10, 11, 20):
+            raise self._error("GC209", f"G10 {lw.text}: L must be 1, 2, 10, 11 or 20", lw)
+        if pw is None:
+            raise self._error("GC208", f"G10 L{L} needs a P word", w)
+        P = pw.value
+        if L in (2, 20):
+            if P.denominator != 1 or not 0 <= P <= 9:
+                raise self._error("GC209", f"G10 L{L} {pw.text}: P must be an integer 0 (active) to 9 (G59.3)", pw)
+            name = self.wcs if P == 0 else WORK_OFFSETS[int(P) - 1]
+            rw = words.get("R")
+            if rw is not None and rw.value != 0:
+                self._unknown("G10 R", "coordinate system rotation (G10 L2 R) is not modelled", rw)
+                return
+            reg = self.g5x[name]
+            dreg = self.dep_g5x[name]
+            for i, aw in axis_words:
+                v = self._mm(aw.value, i)
+                if L == 2:
+                    reg[i] = v
+                    dreg[i] = {}
+                else:
+                    tl = self.tlo if i == self.tool_axis else _ZERO
+                    reg[i] = self.pos[i] - self.g92[i] - tl - v
+                    if self.track:
+                        d = _dadd(self.dep_pos[i], self.dep_g92[i], -1)
+                        if i == self.tool_axis:
+                            d = _dadd(d, self.dep_tlo, -1)
+                        dreg[i] = d
+            self._recompute_offsets()
+        else:
+            self._unknown(f"G10 L{L}", "setting the tool table (G10 L1/L10/L11) is not modelled; tool lengths come from the machine file", lw)
+
+    def _g92(self, axis_words, w: Word) -> None:
+        if not axis_words:
+            raise self._error("GC208", "G92 needs at least one axis word", w)
+        for i, aw in axis_words:
+            v = self._mm(aw.value, i)
+            tl = self.tlo if i == self.tool_axis else _ZERO
+            self.g92[i] = self.pos[i] - self.g5x[self.wcs][i] - tl - v
+            if self.track:
+                d = _dadd(self.dep_pos[i], self.dep_g5x[self.wcs][i], -1)
+                if i == self.tool_axis:
+                    d = _dadd(d, self.dep_tlo, -1)
+                self.dep_g92[i] = d
+        self.g92_params = list(self.g92)
+        self._recompute_offsets()
+
+    def _g52(self, axis_words) -> None:
+        for i, aw in axis_words:
+            self.g92[i] = self._mm(aw.value, i)
+            self.dep_g92[i] = {}
+        self.g92_params = list(self.g92)
+        self._recompute_offsets()
+
+    # ------------------------------------------------------------------ canned cycles
+    def _cycle(self, motion: int, axis_words, words) -> None:
+        plane = self.plane
+        a_name, b_name, c_name = PLANE_AXES[plane]
+        ia, ib, ic = self.index.get(a_name), self.index.get(b_name), self.index.get(c_name)
+        if ia is None or ib is None or ic is None:
+            raise self._error("GC308", f"a canned cycle in plane G{int(plane)} needs axes {a_name}, {b_name} and {c_name}; this machine has {', '.join(self.axes)}")
+        for i, aw in axis_words:
+            if self.axes[i] not in (a_name, b_name, c_name):
+                raise self._error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
+        if self.comp_on:
+            raise self._error("GC204", "canned cycles cannot be used with cutter compensation on")
+        if self.feed_mode == 93:
+            raise self._error("GC204", "canned cycles cannot be used with inverse time feed (G93)")
+        self._check_feed()
+        if motion == 840 and plane is not Plane.XY:
+            self._unknown("G84", "LinuxCNC's G84 outside the XY plane feeds along the wrong axis; the real path is not modelled")
+            return
+        first = self._last_cycle != motion
+        rw = words.get("R")
+        if rw is None:
+            if first or self.cycle_r is None:
+                raise self._error("GC208", f"{_gname(motion)} needs an R word (the retract plane) the first time")
+            rprog = self.cycle_r
+        else:
+            rprog = rw.value
+        cw_ = words.get(c_name)
+        if cw_ is None:
+            if first or self.cycle_cc is None:
+                raise self._error("GC208", f"{_gname(motion)} needs a {c_name} word (the bottom) the first time")
+            cprog = self.cycle_cc
+        else:
+            cprog = cw_.value
+        lw = words.get("L")
+        reps = 1
+        if lw is not None:
+            if lw.value.denominator != 1 or lw.value < 1:
+                raise self._error("GC209", f"canned cycle repeat count {lw.text} must be a positive integer", lw)
+            reps = int(lw.value)
+        dwell = None
+        delta = None
+        if motion in (820, 840, 860, 890):
+            pw = words.get("P")
+            if pw is not None:
+                if pw.value < 0:
+                    raise self._error("GC209", f"dwell time {pw.text} is negative", pw)
+                self.cycle_p = pw.value
+            elif first and motion != 840:
+                raise self._error("GC208", f"{_gname(motion)} needs a P word (dwell time) the first time")
+            dwell = self.cycle_p if (pw is not None or not first) else _ZERO
+        if motion in (730, 830):
+            qw = words.get("Q")
+            if qw is not None:
+                self.cycle_q = qw.value
+            elif first or self.cycle_q is None:
+                raise self._error("GC208", f"{_gname(motion)} needs a Q word (peck depth) the first time")
+            if self.cycle_q <= 0:
+                raise self._error("GC209", f"peck depth Q{_fmt(self.cycle_q)} must be greater than 0", qw)
+            delta = self._len(self.cycle_q)
+        self._note_assumed(("units", "distance", "offset", "plane"))
+        current_cc = self.pos[ic]
+        if self._cycle_il is None:
+            self._cycle_il = current_cc
+        old_cc = self._cycle_il
+        wd = {self.axes[i]: aw for i, aw in axis_words}
+        if self.absolute:
+            inc_a = inc_b = _ZERO
+            r = self._len(rprog) + self.off[ic]
+            cc = self._len(cprog) + self.off[ic]
+            aa = self._len(wd[a_name].value) + self.off[ia] if a_name in wd else self.pos[ia]
+            bb = self._len(wd[b_name].value) + self.off[ib] if b_name in wd else self.pos[ib]
+        else:
+            inc_a = self._len(wd[a_name].value) if a_name in wd else _ZERO
+            inc_b = self._len(wd[b_name].value) if b_name in wd else _ZERO
+            r = self._len(rprog) + old_cc
+            cc = r + self._len(cprog)
+            aa, bb = self.pos[ia], self.pos[ib]
+        if r < cc:
+            raise self._error("GC306", f"canned cycle retract plane R ({_fmt(r)} mm machine) is below the bottom {c_name} ({_fmt(cc)} mm machine)", rw or cw_)
+        track = self.track
+        dep_c_abs = dict(self.dep_off[ic]) if track else None
+
+        def go(kind, a, b, c, derived, dwell_s=None):
+            end = list(self.pos)
+            end[ia], end[ib], end[ic] = a, b, c
+            deps = None
+            if track:
+                deps = [dict(d) for d in self.dep_pos]
+                if self.absolute:
+                    for i in (ia, ib, ic):
+                        deps[i] = dict(self.dep_off[i]) if (i == ic or self.axes[i] in wd) else deps[i]
+            self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
+
+        name = _gname(motion)
+        if old_cc < r:
+            go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], r, f"{name} up to R")
+            old_cc = r
+            current_cc = r
+        clear = r if self.retract_r else old_cc
+        for rep in range(reps):
+            aa += inc_a
+            bb += inc_b
+            if rep == 0 and current_cc > r:
+                go(SegmentKind.RAPID, aa, bb, current_cc, f"{name} position")
+                go(SegmentKind.RAPID, aa, bb, r, f"{name} to R")
+            else:
+                go(SegmentKind.RAPID, aa, bb, clear, f"{name} position")
+                if clear > r:
+                    go(SegmentKind.RAPID, aa, bb, r, f"{name} to R")
+            if motion in (730, 830):
+                depth = r - delta
+                while depth > cc:
+                    go(SegmentKind.LINE, aa, bb, depth, f"{name} peck")
+                    if motion == 830:
+                        go(SegmentKind.RAPID, aa, bb, clear, f"{name} clear")
+                    go(SegmentKind.RAPID, aa, bb, depth + G83_RAPID_DELTA_MM, f"{name} back off")
+                    depth -= delta
+            go(SegmentKind.LINE, aa, bb, cc, f"{name} feed")
+            if dwell is not None:
+                self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
+            if motion in (840, 850, 890):
+                go(SegmentKind.LINE, aa, bb, clear, f"{name} retract")
+            else:
+                go(SegmentKind.RAPID, aa, bb, clear, f"{name} retract")
+        self.cycle_cc = cprog
+        self.cycle_r = rprog
+        self._last_cycle = motion
+
+    _last_cycle: int | None = None
+
+
+def _sqrt_diff_exceeds(a: Fraction, b: Fraction, t: Fraction) -> bool:
+    """Exactly: |sqrt(a) - sqrt(b)| > t for a, b >= 0, t >= 0."""
+    # (sqrt a - sqrt b)^2 = a + b - 2 sqrt(ab) > t^2  <=>  a + b - t^2 > 2 sqrt(ab)
+    lhs = a + b - t * t
+    if lhs <= 0:
+        return False
+    return lhs * lhs > 4 * a * b
+
+
+def _fmt_sqrt(q: Fraction) -> str:
+    from ..exact import format_decimal
+
+    # an exact enclosure would be overkill for a message; 6 decimals by integer sqrt
+    import math
+
+    scaled = q * 10**12
+    root = math.isqrt(int(scaled))
+    return format_decimal(Fraction(root, 10**6), places=6)
+
+
+def blocks_from_words(lines, file: str = "<words>") -> list[Block]:
+    """Blocks from tuples of word texts (``("G1", "X1.5")``); for examples and tests.
+
+    Not a lexer: each item must be one word, letter then decimal.
+
+    >>> [w.value for w in blocks_from_words([("G59.1", "X-.5")])[0].words]
+    [Fraction(591, 10), Fraction(-1, 2)]
+    """
+    from ..exact import parse_decimal
+
+    out = []
+    for n, words in enumerate(lines):
+        text = " ".join(words)
+        span = SourceSpan(file, n + 1, 1, None, text)
+        ws = []
+        col = 1
+        for t in words:
+            ws.append(Word(t[0].upper(), parse_decimal(t[1:]), SourceSpan(file, n + 1, col, col + len(t), text), t))
+            col += len(t) + 1
+        out.append(Block(tuple(ws), span, n))
+    return out

@@ -1,0 +1,241 @@
+"""Interpreted motion against LinuxCNC's own canon logs (corpus README, section A).
+
+Each LinuxCNC interpreter test directory in ``corpus/linuxcnc/tests`` holds a
+program and the ``rs274`` canon call log it must produce.  The log prints
+``STRAIGHT_TRAVERSE``/``STRAIGHT_FEED``/``ARC_FEED`` end points in *program*
+coordinates and current units; the offsets it excludes are printed as
+separate calls (``SET_G5X_OFFSET``, ``SET_G92_OFFSET``,
+``USE_TOOL_LENGTH_OFFSET``) in the units current when they are printed.  The
+harness applies them (machine = program + G92 + G5x + tool offset, all in mm)
+and compares with our machine coordinates to 4 decimals of the log's unit
+(each printed number is rounded to 0.0001, so the tolerance is 0.0001 of the
+log unit).  Arc centres and the helix end are compared the same way, the
+rotation sign and turn count exactly.
+
+Directories are taken from ``INTERP_TESTS.tsv`` when their command is a single
+``rs274 ... -g X.ngc`` run without INI or parameter file and with exit status
+0.  The ones that cannot be compared are listed in :data:`SKIPPED` with the
+reason; a directory whose program we report as ``unknown`` (an unsupported
+code, e.g. cutter compensation) is compared up to that point, which is what
+"motion before it is still emitted" promises.
+"""
+
+from __future__ import annotations
+
+import re
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from nczones.errors import GcodeError
+from nczones.gcode import interpret
+from nczones.machine import parse_machine
+from nczones.motion import SegmentKind
+
+CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
+if not CORPUS.is_dir():
+    CORPUS = Path("/work/shared/corpus")
+TESTS = CORPUS / "linuxcnc" / "tests"
+TSV = CORPUS / "linuxcnc" / "INTERP_TESTS.tsv"
+
+pytestmark = pytest.mark.skipif(not TSV.is_file(), reason="corpus not available")
+
+#: Directories not compared, with the reason.
+SKIPPED = {
+    "tests/interp/rotation/g28": "G10 L2 R45 rotates the coordinate system (unsupported, unknown)",
+    "tests/interp/rotation/g53": "G10 L2 R rotates the coordinate system (unsupported, unknown)",
+    "tests/interp/g76": "G76 threading cycle (unsupported, unknown before any motion that matters)",
+    "tests/interp/g33.1": "G33.1 rigid tapping (unsupported)",
+    "tests/interp/machine-coord-params": "compares MESSAGE lines only (no motion in the log)",
+    "tests/interp/rotation/abs-pts": "compares MESSAGE lines only, with rotation",
+    "tests/interp/g71-endless-loop": "the test only checks termination; no expected motion",
+    "tests/interp/g71-endless-loop2": "the test only checks termination; no expected motion",
+    "tests/interp/g71-endless-loop_2": "the test only checks termination; no expected motion",
+    "tests/interp/g71-with-g70": "the test only checks termination; no expected motion",
+    "tests/interp/g72-facing": "the test only checks termination; no expected motion",
+    "tests/interp/g72-missing-iteration": "the test only checks termination; no expected motion",
+}
+
+_CALL = re.compile(r"^\s*(?:\d+\s+)?N\S*\s+([A-Z_0-9]+)\((.*)\)\s*$")
+AXES6 = ("X", "Y", "Z", "A", "B", "C")
+
+
+def _cases():
+    if not TSV.is_file():
+        return []
+    out = []
+    for row in TSV.read_text().splitlines()[1:]:
+        cols = row.split("\t")
+        if len(cols) < 3:
+            continue
+        d, cmd, status = cols[0], cols[1], cols[2]
+        if not (TESTS.parent.parent / d / "expected").is_file() and not (CORPUS / "linuxcnc" / d / "expected").is_file():
+            continue
+        out.append((d, cmd, status))
+    return out
+
+
+def _parse_cmd(cmd: str):
+    """(program, tool table) for a plain single rs274 run, else None."""
+    if "||" in cmd or " -i " in cmd or " -v " in cmd or " -n " in cmd or "2>&1" in cmd or not cmd.startswith("rs274"):
+        return None
+    first = cmd.split("|")[0].split()
+    prog = next((a for a in first if a.endswith(".ngc")), None)
+    tbl = first[first.index("-t") + 1] if "-t" in first else None
+    return prog, tbl
+
+
+def _machine(tooltable: Path | None):
+    tools = ""
+    if tooltable is not None and tooltable.is_file():
+        lines = []
+        for line in tooltable.read_text().splitlines():
+            m = re.match(r"\s*T(\d+)\b.*?\bZ([-+]?[\d.]+)", line.split(";")[0], re.I)
+            if m:
+                lines.append(f'H{int(m.group(1))} = "{m.group(2)}"')
+        tools = "[tool_lengths]\n" + "\n".join(lines) + "\n"
+    axes = ["X", "Y", "Z", "A", "B", "C", "U", "V", "W"]
+    rapid = "\n".join(f'{a} = "1000"' for a in axes)
+    ref = "\n".join(f'{a} = "0"' for a in axes)
+    text = (
+        f"[machine]\naxes = {axes!r}\npulse = \"0.0001\"\n".replace("'", '"')
+        + f"[machine.rapid]\n{rapid}\n[machine.reference]\n{ref}\n"
+        + tools
+    )
+    return parse_machine(text)
+
+
+def _num(s: str) -> Fraction:
+    return Fraction(s.strip())
+
+
+def _log_motion(expected: Path):
+    """Expected motions as (kind, machine-mm tuple of 6, arc info) from the canon log."""
+    unit = Fraction(1)
+    g5x = [Fraction(0)] * 6
+    g92 = [Fraction(0)] * 6
+    tlo = [Fraction(0)] * 6
+    plane = "XY"
+    rotation = False
+    moves = []
+    for line in expected.read_text(errors="replace").splitlines():
+        m = _CALL.match(line)
+        if not m:
+            continue
+        name, args = m.group(1), m.group(2)
+        if name == "USE_LENGTH_UNITS":
+            unit = Fraction(254, 10) if "INCHES" in args else Fraction(1)
+        elif name == "SET_G5X_OFFSET":
+            v = [_num(a) for a in args.split(",")[1:7]]
+            g5x = [x * unit if i < 3 else x for i, x in enumerate(v)]
+        elif name == "SET_G92_OFFSET":
+            v = [_num(a) for a in args.split(",")[:6]]
+            g92 = [x * unit if i < 3 else x for i, x in enumerate(v)]
+        elif name == "SET_XY_ROTATION":
+            if _num(args) != 0:
+                rotation = True
+        elif name == "USE_TOOL_LENGTH_OFFSET":
+            v = [_num(a) for a in re.split(r"[ ,]+", args.strip())]
+            tlo = [v[0] * unit, v[1] * unit, v[2] * unit, v[3], v[4], v[5]]
+        elif name == "SELECT_PLANE":
+            plane = {"CANON_PLANE_XY": "XY", "CANON_PLANE_XZ": "XZ", "CANON_PLANE_YZ": "YZ"}.get(args.strip(), args)
+        elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED", "STRAIGHT_PROBE", "RIGID_TAP"):
+            off = [g5x[i] + g92[i] + tlo[i] for i in range(6)]
+            v = [_num(a) for a in args.split(",")]
+            if name == "ARC_FEED":
+                fe, se, fc, sc, rot, ne, a, b, c = v
+                fa, sa, na = {"XY": ("X", "Y", "Z"), "XZ": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}[plane]
+                prog = {fa: fe, sa: se, na: ne, "A": a, "B": b, "C": c}
+                pt = tuple(prog[ax] * (unit if i < 3 else 1) + off[i] for i, ax in enumerate(AXES6))
+                centre = (fc * unit + off[AXES6.index(fa)], sc * unit + off[AXES6.index(sa)])
+                moves.append(("ARC", pt, (int(rot), centre, unit, plane)))
+            else:
+                pt = tuple(x * (unit if i < 3 else 1) + off[i] for i, x in enumerate(v[:6]))
+                kind = {"STRAIGHT_TRAVERSE": "RAPID", "STRAIGHT_FEED": "LINE"}.get(name, name)
+                moves.append((kind, pt, unit))
+    return moves, rotation
+
+
+def _compare(d: str, prog: Path, tbl: Path | None):
+    moves, rotation = _log_motion(prog.parent / "expected")
+    if rotation:
+        return "skip", "coordinate rotation in the log"
+    machine = _machine(tbl)
+    run = interpret(prog, machine, arc_tolerance=Fraction(1, 10))
+    mine = []
+    try:
+        for s in run.segments():
+            if s.kind is not SegmentKind.DWELL:
+                mine.append(s)
+    except GcodeError as exc:
+        return "error", exc.render()
+    if run.unsupported:
+        moves = moves[: len(mine)]
+    if len(mine) != len(moves):
+        return "mismatch", f"{len(mine)} motions, the log has {len(moves)}"
+    names = machine.axis_names
+    for k, (s, (kind, pt, info)) in enumerate(zip(mine, moves)):
+        unit = info if kind != "ARC" else info[2]
+        tol = Fraction(1, 10000) * unit
+        if s.kind.name != kind:
+            return "mismatch", f"motion {k} (line {s.line}): {s.kind.name} vs log {kind}"
+        end = [s.end[names.index(a)] for a in AXES6]
+        for a, e, x in zip(AXES6, end, pt):
+            t = tol if a in "XYZ" else Fraction(1, 10000)
+            if abs(e - x) > t:
+                return "mismatch", f"motion {k} (line {s.line}) axis {a}: {float(e):.5f} vs log {float(x):.5f} mm"
+        if kind == "ARC":
+            rot, centre, _, plane = info
+            turns = abs(rot) - 1
+            if (rot < 0) != s.clockwise or turns != s.turns or s.plane.name != plane:
+                return "mismatch", f"motion {k} (line {s.line}): arc direction/turns/plane differ"
+            if s.centre is not None:
+                for c, x in zip(s.centre, centre):
+                    if abs(c - x) > tol:
+                        return "mismatch", f"motion {k} (line {s.line}): centre {float(c):.5f} vs log {float(x):.5f}"
+    status = "unknown-prefix" if run.unsupported else "match"
+    return status, run.unsupported[0].render() if run.unsupported else ""
+
+
+def _all_results():
+    results = {}
+    for d, cmd, status in _cases():
+        if d in SKIPPED:
+            results[d] = ("skip", SKIPPED[d])
+            continue
+        parsed = _parse_cmd(cmd)
+        if parsed is None or status.strip() != "0":
+            results[d] = ("skip", f"not a plain rs274 run: {cmd}")
+            continue
+        prog_name, tbl_name = parsed
+        base = CORPUS / "linuxcnc" / d
+        prog = base / prog_name
+        if not prog.is_file():
+            results[d] = ("skip", f"program {prog_name} missing")
+            continue
+        results[d] = _compare(d, prog, base / tbl_name if tbl_name else None)
+    return results
+
+
+@pytest.fixture(scope="module")
+def results():
+    return _all_results()
+
+
+def test_canon_logs_match(results, capsys):
+    counts: dict[str, int] = {}
+    for d, (status, why) in sorted(results.items()):
+        counts[status] = counts.get(status, 0) + 1
+        with capsys.disabled():
+            print(f"  {status:15s} {d}  {why[:150]}")
+    with capsys.disabled():
+        print("canon comparison:", counts)
+    matched = [d for d, (s, _) in results.items() if s == "match"]
+    assert len(matched) >= 25, counts
+    bad = {d: r for d, r in results.items() if r[0] in ("mismatch",) and d not in KNOWN_MISMATCH}
+    assert not bad, bad
+
+
+#: Directories where our motion deliberately differs from LinuxCNC's log.
+KNOWN_MISMATCH: dict[str, str] = {}
