@@ -117,7 +117,7 @@ class Interpretation:
 
             yield from run_with_fastpath(self)
         else:
-            yield from self.interpreter.run(_blocks(self.text, self.file, self.block_delete))
+            yield from self.interpreter.run(_blocks(self.text, self.file, self.block_delete, self.interpreter))
         self.finished = True
 
     @property
@@ -151,10 +151,22 @@ class Interpretation:
             yield from chunk.segments()
 
 
-def _blocks(text: str, file: str, block_delete: bool):
-    from .program import iter_blocks
+def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,
+            first_line: int = 1):
+    """The language layer's blocks; an UnsupportedGcode ends them as ``unknown``."""
+    from .expr import Parameters
+    from .program import UnsupportedGcode, iter_blocks
 
-    return iter_blocks(text, file=file, block_delete=block_delete)
+    params = Parameters()
+    if interpreter is not None:
+        interpreter.bind_parameters(params)
+    try:
+        yield from iter_blocks(text, file=file, params=params, block_delete=block_delete)
+    except UnsupportedGcode as exc:
+        if interpreter is None:
+            raise
+        d = exc.diagnostic
+        interpreter.unsupported.append(Unsupported(d.code, d.message, d.span))
 
 
 def interpret(

@@ -56,6 +56,17 @@ MAX_PARAMETER = 5601
 SUB_PARAMS = 30
 
 
+#: LinuxCNC's predefined read-only named parameters; the interpreter may ``provide`` them.
+PREDEFINED = frozenset(
+    "_vmajor _vminor _line _motion_mode _plane _ccomp _metric _imperial _absolute _incremental _inverse_time "
+    "_units_per_minute _units_per_rev _coord_system _tool_offset _retract_r_plane _retract_old_z "
+    "_spindle_rpm_mode _spindle_css_mode _ijk_absolute_mode _lathe_diameter_mode _lathe_radius_mode "
+    "_spindle_on _spindle_cw _mist _flood _speed_override _feed_override _adaptive_feed _feed_hold _feed _rpm "
+    "_x _y _z _a _b _c _u _v _w _abs_x _abs_y _abs_z _abs_a _abs_b _abs_c _abs_u _abs_v _abs_w "
+    "_current_tool _current_pocket _selected_tool _selected_pocket _task _call_level _remap_level".split()
+)
+
+
 class EvalError(Exception):
     """Internal: a run-time language error; the caller attaches the span (GC3xx)."""
 
@@ -119,6 +130,8 @@ class Parameters:
         self._providers: dict[int | str, Callable[[], object]] = {}
         self.on_write: Callable[[int | str, float], None] | None = None
         self.max_parameter = MAX_PARAMETER
+        self._globals["_value"] = (0.0, Fraction(0))
+        self._globals["_value_returned"] = (0.0, Fraction(0))
         for k, v in (numbered or {}).items():
             self.set(k, v)
         for k, v in (named or {}).items():
@@ -259,6 +272,9 @@ def evaluate(node, params: Parameters) -> Value:
         try:
             return params.read(key)
         except KeyError:
+            if key.startswith(("_hal[", "_ini[")) or key in PREDEFINED:
+                raise EvalError("GC305", f"#<{key}> reads controller state (HAL pins, INI values, predefined "
+                                "parameters) that nobody provided") from None
             raise EvalError("GC310", f"named parameter #<{key}> is not defined") from None
     if tag == BIN:
         return _binary(node[1], evaluate(node[2], params), evaluate(node[3], params))
@@ -274,9 +290,9 @@ def evaluate(node, params: Parameters) -> Value:
     if tag == EXISTS:
         par = node[1]
         if par[0] == NPAR:
-            return (1.0, Fraction(1)) if params.exists(par[1]) else (0.0, Fraction(0))
-        parameter_key(par, params)
-        return (1.0, Fraction(1))
+            return _TRUE if params.exists(par[1]) else _FALSE
+        d = evaluate(par[1], params)[0]  # errors inside the index propagate (##2 with #2 = 99999)
+        return _TRUE if 1 <= round(d) <= params.max_parameter and abs(d - round(d)) <= 0.0001 else _FALSE
     raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
 
 

@@ -396,6 +396,34 @@ class Interpreter:
         if end_deps is not None:
             self.dep_pos = end_deps
 
+    # ------------------------------------------------------------------ parameters
+    def bind_parameters(self, params) -> None:
+        """Provide the read-only state parameters LinuxCNC programs read.
+
+        ``#5420``-``#5428`` (and ``#<_x>`` ...): the current position in
+        program coordinates and units; ``#5400``/``#<_current_tool>``;
+        ``#<_metric>``, ``#<_imperial>``, ``#<_absolute>``, ``#<_incremental>``.
+        """
+
+        def prog(letter: str):
+            def get():
+                i = self.index.get(letter)
+                if i is None:
+                    return _ZERO
+                v = self.pos[i] - self.off[i]
+                return v / INCH if (self.inch and not self.rotary[i]) else v
+            return get
+
+        for k, letter in enumerate(AXIS_LETTERS):
+            params.provide(5420 + k, prog(letter))
+            params.provide("_" + letter.lower(), prog(letter))
+        params.provide(5400, lambda: self.tool_in_spindle)
+        params.provide("_current_tool", lambda: self.tool_in_spindle)
+        params.provide("_metric", lambda: 0 if self.inch else 1)
+        params.provide("_imperial", lambda: 1 if self.inch else 0)
+        params.provide("_absolute", lambda: 1 if self.absolute else 0)
+        params.provide("_incremental", lambda: 0 if self.absolute else 1)
+
     # ------------------------------------------------------------------ driver
     def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
         """Interpret blocks in execution order, yielding motion chunks.
@@ -490,6 +518,10 @@ class Interpreter:
                 or (g0 and g0[0] == 100) or (groups.get(13, (0,))[0] == 640)
             if not uses_r and not any(k in _UNSUPPORTED_G for k, _ in gcodes):
                 raise self._error("GC204", f"R word {words['R'].text or 'R'} with no G code that uses it (R is used by G2/G3, canned cycles and G10)", words["R"])
+        if "R" in words and 19 in {k for k, _ in mcodes} and groups.get(13, (0,))[0] == 640:
+            raise self._error("GC204", "R word is ambiguous in a block with both G64 and M19; write them in separate blocks", words["R"])
+        if g1 and g1[0] in (382, 383, 384, 385) and not axis_words:
+            raise self._error("GC208", f"{_gname(g1[0])} without axis words: a probing move needs a target", g1[1])
         # unsupported codes: stop emitting, keep checking blocks
         for k, w in gcodes:
             if k in _UNSUPPORTED_G:
@@ -608,6 +640,11 @@ class Interpreter:
                 self.motion = None
             else:
                 self.motion = k
+        moving = bool(axis_words or (g1 and g1[0] in (20, 30)))
+        if moving and not nonmodal_uses_axes and self.motion is not None:
+            if self.motion in (20, 30) and self.comp_just_off:
+                raise self._error("GC311", "the move just after turning off cutter compensation (G40) must be straight, not an arc", (g1[1] if g1 else axis_words[0][1]))
+            self.comp_just_off = False
         if not nonmodal_uses_axes:
             if g53 and not (g1 and g1[0] in (0, 10)) and not (self.motion in (0, 10) and not g1):
                 raise self._error("GC207", "G53 needs G0 or G1 in the same block (or active)", g0[1])
@@ -713,10 +750,7 @@ class Interpreter:
             else:
                 self._check_feed()
                 self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
-            self.comp_just_off = False
         elif motion in (20, 30):
-            if self.comp_just_off:
-                raise self._error("GC311", "the move just after turning off cutter compensation (G40) must be straight, not an arc", axis_words[0][1] if axis_words else None)
             self._arc(block, axis_words, words, motion == 20, g53)
         elif motion in _CYCLES:
             self._cycle(motion, axis_words, words)

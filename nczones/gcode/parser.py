@@ -216,7 +216,7 @@ class _Parser:
             if not name:
                 self.fail("GC107", "empty parameter name '#<>'", i, end + 1)
             return (NPAR, name), end + 1
-        if j >= self.n or not (s[j].isdigit() or s[j] in "#[.+-"):
+        if j >= self.n or not (s[j].isdigit() or s[j] in "#[.+-" or "a" <= s[j] <= "z"):
             self.fail("GC107", f"expected a parameter number, '[expression]' or '<name>' after '#', found "
                       f"{self.shown(j)}", i, j + 1)
         index, k = self.real_value(j)
@@ -271,7 +271,7 @@ class _Parser:
         comments.append((s[i + 1:end], self.col(i)))
         return end + 1
 
-    def oword(self, i: int):
+    def oword(self, i: int, comments: list):
         s = self.s
         j = i + 1
         if j < self.n and s[j] == "<":
@@ -282,8 +282,8 @@ class _Parser:
             if not label:
                 self.fail("GC202", "empty O-word name 'o<>'", i, end + 1)
             j = end + 1
-        elif j < self.n and s[j] == "[":
-            label, j = self.expression(j)  # o[expr] call: evaluated when executed
+        elif j < self.n and s[j] in "[#":
+            label, j = self.real_value(j)  # o[expr] / o#<name> call: evaluated when executed
         else:
             m = _INT_LABEL.match(s, j)
             if m is None:
@@ -300,7 +300,10 @@ class _Parser:
             j = m.end()
         args = []
         if keyword == "call":
-            while j < self.n and s[j] == "[":
+            while j < self.n and s[j] in "[(":
+                if s[j] == "(":
+                    j = self.comment(j, comments)
+                    continue
                 node, j = self.expression(j)
                 args.append(node)
         elif keyword in _NEEDS_CONDITION or keyword in _OPTIONAL_VALUE:
@@ -331,7 +334,7 @@ class _Parser:
             node, i = self.number(i + 1)
             number = node[2]
         if i < n and s[i] == "o":
-            oword, i = self.oword(i)
+            oword, i = self.oword(i, comments)
             while i < n:
                 if s[i] == "(":
                     i = self.comment(i, comments)
@@ -366,6 +369,11 @@ class _Parser:
                 value, j = self.real_value(i + 1)
                 words.append((c.upper(), value, self.col(i), self.cols[j - 1] + 2,
                               self.line[self.cols[i]:self.cols[j - 1] + 1]))
+                i = j
+            elif c == "@" or c == "^":
+                # LinuxCNC polar coordinates: @ radius, ^ angle (passed on as words)
+                value, j = self.real_value(i + 1)
+                words.append((c, value, self.col(i), self.cols[j - 1] + 2, self.line[self.cols[i]:self.cols[j - 1] + 1]))
                 i = j
             else:
                 self.fail("GC101", f"unexpected character {c!r}; a block holds words (a letter and a "

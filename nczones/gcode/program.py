@@ -164,6 +164,8 @@ class _StringSource(_Source):
         if end < 0:
             end = self.n
         line = self.text[pos:end]
+        if pos == 0 and line.startswith("\ufeff"):
+            line = line[1:]
         if line.endswith("\r"):
             line = line[:-1]
         return line, end + 1
@@ -186,6 +188,8 @@ class _FileSource(_Source):
         nxt = pos + len(raw)
         self.where = nxt
         line = raw.decode("utf-8", errors="replace").rstrip("\r\n")
+        if pos == 0 and line.startswith("\ufeff"):
+            line = line[1:]
         return line, nxt
 
 
@@ -215,7 +219,7 @@ class _Frame:
     ifs: list = field(default_factory=list)
 
 
-_OLINE = re.compile(r"[ \t]*(?:/[ \t]*)?(?:[nN][ \t]*[\d.]+[ \t]*)?[oO][ \t]*(<[^>]*>|\d[\d \t]*)[ \t]*([A-Za-z]*)")
+_OLINE = re.compile(r"/?(?:[nN][\d.]+)?[oO](<[^>]*>|\d+)([A-Za-z]*)")
 _FANUC_END = re.compile(r"[mM][ \t]*0*99(?![\d.])")
 _PROGRAM_END_HINT = re.compile(r"(?:^|[^a-zA-Z])[mM][ \t]*0*(?:2|30)(?![\d.])|^[ \t]*%")
 
@@ -223,14 +227,15 @@ _PROGRAM_END_HINT = re.compile(r"(?:^|[^a-zA-Z])[mM][ \t]*0*(?:2|30)(?![\d.])|^[
 def _olabel(m: re.Match):
     raw = m.group(1)
     if raw[0] == "<":
-        return raw[1:-1].replace(" ", "").replace("\t", "").lower()
-    return int(raw.replace(" ", "").replace("\t", ""))
+        return raw[1:-1].lower()
+    return int(raw)
 
 
 def _show(label) -> str:
     return f"o<{label}>" if isinstance(label, str) else f"o{label}"
 
 
+_BLANK = re.compile(r"[ \t]+")
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 
@@ -304,14 +309,14 @@ class _Runner:
         for p, ln, line, nxt in self.scan(pos, lineno):
             if "o" not in line and "O" not in line:
                 continue
-            m = _OLINE.match(line)
+            m = _OLINE.match(_BLANK.sub("", line))
             if m is None:
                 continue
             lab = _olabel(m)
             kw = m.group(2).lower()
             if nested_sub_error and kw == "sub":
                 raise self.error("GC314", f"nested subroutine definition: {_show(lab)} sub inside "
-                                 f"{_show(label)} sub", ln, line, m.start(1) + 1)
+                                 f"{_show(label)} sub", ln, line)
             if kw == "sub" and lab not in self.subs:
                 self.subs[lab] = (nxt, ln + 1)
             if lab == label and kw in keywords:
@@ -327,7 +332,7 @@ class _Runner:
         for p, ln, line, nxt in self.scan(0, 1):
             if "o" not in line and "O" not in line:
                 continue
-            m = _OLINE.match(line)
+            m = _OLINE.match(_BLANK.sub("", line))
             if m is None:
                 continue
             lab = _olabel(m)
@@ -415,6 +420,8 @@ class _Runner:
         try:
             return evaluate(tree, self.params)
         except EvalError as e:
+            if e.code.startswith("GC30"):
+                raise self.unsupported(e.code, e.message, lineno, line, col, end) from None
             raise self.error(e.code, e.message, lineno, line, col, end) from None
         except RecursionError:
             raise self.error("GC312", "expression nested too deeply", lineno, line, col, end) from None

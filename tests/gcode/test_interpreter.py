@@ -1,0 +1,235 @@
+"""The interpreter: exact machine coordinates, arcs, offsets, cycles, never silent."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from nczones.errors import GcodeError
+from nczones.gcode import interpret, segments
+from nczones.machine import parse_machine
+from nczones.motion import Plane, SegmentKind
+
+F = Fraction
+BAD = Path("/work/shared/corpus/linuxcnc/tests/interp/bad")
+
+MILL = parse_machine(
+    """
+[machine]
+axes = ["X", "Y", "Z"]
+pulse = "0.001"
+[machine.rapid]
+X = "1000"
+Y = "1000"
+Z = "1000"
+[machine.reference]
+X = "0"
+Y = "299"
+Z = "400"
+[offsets]
+G54 = { X = "100", Y = "0", Z = "50" }
+G55 = { X = "200", Y = "10", Z = "60" }
+[tool_lengths]
+H1 = "120"
+H2 = "95.5"
+"""
+)
+XY = parse_machine(
+    """
+[machine]
+axes = ["X", "Y"]
+pulse = "0.001"
+[machine.rapid]
+X = "1000"
+Y = "1000"
+[machine.reference]
+X = "0"
+Y = "0"
+"""
+)
+
+
+def ends(text, machine=MILL, **kw):
+    return [s.end for s in segments(text, machine, **kw)]
+
+
+def test_ten_incremental_tenths_end_exactly():
+    segs = segments("G91 G1 F100\n" + "Y0.1\n" * 10, MILL)
+    assert segs[-1].end[1] == 300
+    assert [s.kind for s in segs] == [SegmentKind.LINE] * 10
+
+
+def test_work_offset_tool_length_and_inches():
+    segs = segments("G20 G90 G54 G43 H1 G0 X1 Y2 Z0.5\nG55 G1 X0 F10\nG49 G0 Z0\n", MILL)
+    assert segs[0].end == (F(100) + F("25.4"), F("50.8"), F(50) + F("12.7") + 120)
+    assert segs[0].tool_length == 120 and segs[0].tool_register == 1
+    assert segs[1].end[0] == 200
+    assert segs[1].feed_mm_min == F("254")
+    assert segs[2].end[2] == 60 and segs[2].tool_length == 0
+
+
+def test_g53_and_g28_via_intermediate_point():
+    segs = segments("G0 X10 Y10 Z10\nG53 G0 Z300\nG91 G28 Z0\n", MILL)
+    assert segs[1].end == (110, 10, 300)
+    assert segs[2].end == (110, 10, 300) and segs[2].derived == "G28 intermediate"
+    assert segs[3].end == (110, 10, 400) and segs[3].derived == "G28 home"
+
+
+def test_g92_and_g92_1():
+    segs = segments("G0 X10\nG92 X0\nG0 X5\nG92.1\nG0 X5\n", MILL)
+    assert [s.end[0] for s in segs] == [110, 115, 105]
+
+
+def test_g10_l2_and_l20():
+    segs = segments("G10 L2 P1 X5\nG0 X1\nG10 L20 P1 X0\nG0 X2\n", MILL)
+    assert [s.end[0] for s in segs] == [6, 8]
+
+
+def test_arc_directions_per_plane():
+    s = segments("G0 X0 Y0 Z0\nG17 G2 X10 Y0 I5 F100\n", MILL)[1]
+    assert s.plane is Plane.XY and s.clockwise and s.centre == (105, 0)
+    with pytest.raises(GcodeError) as e:
+        segments("G0 X0 Y0 Z0\nG18 G3 X10 Z0 I5\n", MILL)
+    assert e.value.diagnostics[0].code == "GC305"  # no feed rate yet
+
+
+def test_arc_plane_centre_order_g18():
+    s = segments("G0 X0 Y0 Z0\nF10 G18 G3 X10 Z0 I5 K0\n", MILL)[1]
+    # G18 centre is (Z, X) like LinuxCNC's ARC_FEED
+    assert s.plane is Plane.XZ and not s.clockwise and s.centre == (F(50), F(105))
+
+
+def test_r_format_arcs_and_full_circle_and_helix():
+    s = segments("G0 X0 Y0 Z0\nF10 G2 X10 Y0 R-5\n", MILL)[1]
+    assert s.centre == (105, 0)  # half circle: the chord midpoint, as LinuxCNC
+    s = segments("G0 X0 Y0 Z0\nF10 G2 X10 Y0 R-7\n", MILL)[1]
+    assert s.centre is None and s.radius == -7 and s.clockwise
+    s = segments("G0 X0 Y0 Z0\nF10 G3 I5 Z-3 P2\n", MILL)[1]
+    assert s.start[:2] == s.end[:2] and s.turns == 1 and s.is_helix()
+
+
+def test_arc_off_circle_is_an_error_with_span():
+    with pytest.raises(GcodeError) as e:
+        segments("G0 X0 Y0\nF10 G2 X10 Y0 I5.01\n", XY)
+    d = e.value.diagnostics[0]
+    assert d.code == "GC301" and d.span.line == 2
+    # within the tolerance: accepted, end point kept (LinuxCNC's spiral)
+    s = segments("G0 X0 Y0\nF10 G2 X10 Y0 I5.001\n", XY)[1]
+    assert s.end == (10, 0) and s.centre == (F("5.001"), 0)
+    with pytest.raises(GcodeError):
+        segments("G0 X0 Y0\nF10 G2 X10 Y0 I5.001\n", XY, arc_tolerance="0.0001")
+
+
+def test_axis_the_machine_lacks_is_an_error():
+    with pytest.raises(GcodeError) as e:
+        segments("G0 X1 Z5\n", XY)
+    assert e.value.diagnostics[0].code == "GC203" and e.value.diagnostics[0].span.column == 7
+
+
+def test_two_codes_of_one_modal_group():
+    with pytest.raises(GcodeError) as e:
+        segments("G0 G1 X1\n", XY)
+    assert e.value.diagnostics[0].code == "GC201"
+
+
+def test_unsupported_stops_emission_and_keeps_earlier_motion():
+    run = interpret("G1 X1 F10\nG41 D1\nG1 X5\n", MILL)
+    got = [s.end[0] for s in run.segments()]
+    assert got == [101]
+    assert run.status == "unknown" and run.unsupported[0].span.line == 2
+    assert "compensation" in run.unsupported[0].reason
+
+
+def test_assumed_modal_reported():
+    run = interpret("G1 X1 F10\nG21\n", MILL)
+    list(run)
+    assert run.assumed_modal == {"units": "G21", "distance": "G90", "offset": "G54"}
+    run = interpret("G21 G90 G54 G1 X1 F10\n", MILL)
+    list(run)
+    assert run.assumed_modal == {}
+
+
+def test_canned_cycle_g81_g98_g99_and_repeats():
+    segs = segments("G0 X0 Y0 Z10\nF100 G99 G91 G81 X5 Z-3 R-2 L3\n", MILL)
+    feeds = [s for s in segs if s.kind is SegmentKind.LINE]
+    assert [s.end[0] for s in feeds] == [105, 110, 115]
+    assert all(s.end[2] == 50 + 5 for s in feeds)
+    assert segs[-1].end[2] == 50 + 8
+
+
+def test_g83_pecks():
+    segs = segments("G0 X0 Y0 Z5\nF100 G98 G83 X1 Z-3 R1 Q1.5\n", MILL)
+    feeds = [s.end[2] - 50 for s in segs if s.kind is SegmentKind.LINE]
+    assert feeds == [F("-0.5"), F(-2), F(-3)]
+    assert segs[-1].end[2] == 55
+
+
+def test_dependencies_tracked():
+    segs = segments("G0 X1\nG43 H1 Z5\nG91 G1 X1 F10\nG90 G53 G0 Z300\n", MILL, track_dependencies=True)
+    assert segs[0].deps_end == (("G54",), ("start",), ("start",))
+    assert segs[1].deps_end[2] == ("G54", "H1")
+    assert segs[2].deps_end[0] == ("G54",)
+    assert segs[3].deps_end[2] == ()
+
+
+def test_missing_tool_register_is_an_error():
+    with pytest.raises(GcodeError) as e:
+        segments("G43 H7 G0 Z1\n", MILL)
+    assert "H7" in e.value.diagnostics[0].message
+
+
+def test_streaming_chunks_are_bounded():
+    run = interpret("G91 G1 F10\n" + "X0.001\n" * 3000, MILL, chunk_size=500, fast=False)
+    sizes = [len(c) for c in run]
+    assert max(sizes) <= 500 and sum(sizes) == 3000
+
+
+# --------------------------------------------------------------------------- property test
+
+_dec = st.decimals(min_value=-500, max_value=500, places=3, allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(st.lists(st.tuples(st.sampled_from(["G90", "G91"]), st.sampled_from(["G20", "G21"]),
+                          st.sampled_from("XYZ"), _dec), min_size=1, max_size=25))
+def test_decimal_moves_match_fraction_arithmetic(moves):
+    lines = []
+    pos = [F(0), F(299), F(400)]  # machine start = reference
+    off = [F(100), F(0), F(50)]
+    expected = []
+    for dist, units, axis, value in moves:
+        text = format(value, "f")
+        lines.append(f"{dist} {units} G1 {axis}{text} F100")
+        v = F(text) * (F("25.4") if units == "G20" else 1)
+        i = "XYZ".index(axis)
+        pos[i] = v + off[i] if dist == "G90" else pos[i] + v
+        expected.append(tuple(pos))
+    got = ends("\n".join(lines) + "\n")
+    assert got == expected
+
+
+# --------------------------------------------------------------------------- LinuxCNC bad programs
+
+#: bad/ programs that end ``unknown`` instead of being rejected, with the reason.
+BAD_UNKNOWN = {
+    "ccomp-gouging.ngc": "gouging detection needs the cutter-compensation geometry, which is unsupported (unknown)",
+}
+
+
+@pytest.mark.skipif(not BAD.is_dir(), reason="corpus not available")
+@pytest.mark.parametrize("path", sorted(BAD.glob("*.ngc")) if BAD.is_dir() else [], ids=lambda p: p.name)
+def test_linuxcnc_bad_programs_are_rejected(path):
+    from tests.gcode.test_canon_linuxcnc import _machine
+
+    run = interpret(path, _machine(None))
+    if path.name in BAD_UNKNOWN:
+        list(run)
+        assert run.status == "unknown"
+        return
+    with pytest.raises(GcodeError) as e:
+        list(run)
+    d = e.value.diagnostics[0]
+    assert d.span is not None and d.span.line >= 1
