@@ -238,10 +238,12 @@ def parse_homing_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[st
         return MappingProxyType(out)
     for axis, table in raw.items():
         if not isinstance(table, Mapping):
-            hint = (f"; {axis!r} is a per-axis key: put it under [homing.<axis>]"
-                    if axis in HOMING_KEYS else "")
-            rd.report("ZN141", f"[homing] {axis}: expected a table [homing.{axis}], got {_written(table)}{hint}",
-                      rd.loc.key(axis, header))
+            if axis in HOMING_KEYS:
+                msg = (f"[homing] {axis}: {axis!r} is a per-axis key; put it under [homing.<axis>] "
+                       f"(such as [homing.X]), not directly under [homing]")
+            else:
+                msg = f"[homing] {axis}: expected a table [homing.{axis}], got {_written(table)}"
+            rd.report("ZN141", msg, rd.loc.key(axis, header))
             continue
         if axis not in axes:
             close = difflib.get_close_matches(axis, axes, n=1)
@@ -456,14 +458,16 @@ class InstallationResult:
 def _validate_inputs(cfg: HomingConfig, pulse: Fraction, phase: Fraction, trip_offset: Fraction) -> None:
     if not isinstance(pulse, Fraction) or pulse <= 0:
         raise InvalidArgument(f"pulse must be a positive Fraction, got {pulse!r}")
-    if not isinstance(phase, Fraction) or not 0 <= phase < cfg.grid_pitch:
+    for name, value in (("phase", phase), ("trip offset", trip_offset)):
+        if not isinstance(value, Fraction):
+            raise InvalidArgument(f"{name} must be an exact Fraction (not {type(value).__name__}), got {value!r}")
+    if not 0 <= phase < cfg.grid_pitch:
         raise InvalidArgument(
-            f"phase {phase if not isinstance(phase, Fraction) else format_decimal(phase)} is outside "
+            f"phase {format_decimal(phase)} is outside "
             f"[0, grid pitch {format_decimal(cfg.grid_pitch)})")
-    if not isinstance(trip_offset, Fraction) or abs(trip_offset) > cfg.switch_jitter:
-        shown = format_decimal(trip_offset) if isinstance(trip_offset, Fraction) else repr(trip_offset)
+    if abs(trip_offset) > cfg.switch_jitter:
         raise InvalidArgument(
-            f"trip offset {shown} is outside the switch jitter window "
+            f"trip offset {format_decimal(trip_offset)} is outside the switch jitter window "
             f"[-{format_decimal(cfg.switch_jitter)}, {format_decimal(cfg.switch_jitter)}]")
     bad = check_pulse_multiples(cfg, pulse)
     if bad:
