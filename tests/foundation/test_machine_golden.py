@@ -108,3 +108,15 @@ def test_not_utf8_exits_2(tmp_path, capsys, monkeypatch):
     assert code == 2
     assert "error[ZN099]: the machine file is not UTF-8 text" in err
     assert "Traceback" not in err
+
+
+def test_every_code_is_documented_and_has_a_golden():
+    import re
+
+    source = (ROOT / "nczones" / "machine.py").read_text(encoding="utf-8")
+    doc = (ROOT / "specs" / "machine-file.md").read_text(encoding="utf-8")
+    codes = set(re.findall(r'"(ZN\d{3})"', source))
+    documented = set(re.findall(r"^\| (ZN\d{3}) \|", doc, re.M))
+    assert codes == documented
+    goldens = "".join(p.read_text(encoding="utf-8") for p in GOLDEN.rglob("*.expected"))
+    assert {c for c in codes if c != "ZN099"} <= set(re.findall(r"\[(ZN\d{3})\]", goldens))
