@@ -1,0 +1,173 @@
+"""The prover: does every motion of a program stay inside the allowed set?
+
+Public API
+----------
+:func:`verify` (program text or path + machine) and :func:`verify_segments`
+(motion segments, no text) return a :class:`Result` with an ordered
+:class:`Verdict` (``UNSAFE < UNKNOWN < SAFE``, so "worst wins" is ``min``),
+the re-checked counterexamples (:class:`Violation`), the reasons for
+``unknown`` and the solver version.  :func:`parse_param` reads
+``NAME=LO..HI`` parameter ranges.
+
+>>> from nczones.machine import parse_machine
+>>> m = parse_machine('''
+... [machine]
+... axes = ["X", "Y"]
+... [machine.rapid]
+... X = "1000"
+... Y = "1000"
+... [machine.reference]
+... X = "0"
+... Y = "0"
+... [[zones]]
+... name = "travel"
+... kind = "box"
+... min = { X = "0", Y = "0" }
+... max = { X = "10", Y = "10" }
+... ''')
+>>> verify("G1 X10 Y10 F100\\n", m).verdict.label
+'safe'
+>>> r = verify("G1 X10 F100\\nG3 X10 Y10 I0 J5\\n", m)
+>>> r.verdict.label, r.violations[0].line, r.violations[0].zone
+('unsafe', 2, 'travel')
+"""
+
+from __future__ import annotations
+
+import re
+import time
+from fractions import Fraction
+
+from ..errors import Diagnostic, InputError, InvalidArgument
+from ..exact import parse_decimal
+from ..machine import Machine
+from .core import Prover, verify_segments
+from .result import ParamRange, Reason, Result, Verdict, Violation
+
+__all__ = [
+    "verify",
+    "verify_segments",
+    "parse_param",
+    "Verdict",
+    "Result",
+    "Violation",
+    "Reason",
+    "ParamRange",
+    "Prover",
+]
+
+_PARAM = re.compile(r"^\s*(?P<name>[A-Za-z0-9_.]+)\s*=\s*(?P<lo>[^.]*(?:\.\d+)?)\s*\.\.\s*(?P<hi>.+?)\s*$")
+
+
+class ParamError(InputError):
+    """A bad ``--param`` value (code VF1xx)."""
+
+
+def parse_param(text: str, machine: Machine) -> ParamRange:
+    """Read ``NAME=LO..HI`` (``G54.X=-2..2``, ``H1=195..205``, ``start.Z=-10..0``, ``home.X=-0.5..0.5``).
+
+    Work offsets, start position and homing errors are deviations from the
+    machine file's values; tool lengths are absolute ranges.
+
+    >>> from nczones.machine import parse_machine
+    >>> m = parse_machine('[machine]\\naxes=["X","Z"]\\n[machine.rapid]\\nX="1"\\nZ="1"\\n'
+    ...                   '[machine.reference]\\nX="0"\\nZ="0"\\n[tool_lengths]\\nH1="200"\\n')
+    >>> p = parse_param("H1=195..205", m); (p.lo, p.hi)
+    (Fraction(-5, 1), Fraction(5, 1))
+    >>> parse_param("G54.X=-2..2", m).hi
+    Fraction(2, 1)
+    """
+    def fail(msg: str) -> ParamError:
+        return ParamError(Diagnostic("VF101", f"--param {text!r}: {msg}", file="<command line>"))
+
+    m = re.match(r"^\s*([A-Za-z0-9_.]+)\s*=\s*(.+?)\s*$", text)
+    if not m or ".." not in m.group(2):
+        raise fail("expected NAME=LO..HI, e.g. G54.X=-2..2, H1=195..205, start.Z=-10..0 or home.X=-0.5..0.5")
+    name = m.group(1)
+    lo_s, hi_s = m.group(2).split("..", 1)
+    try:
+        lo, hi = parse_decimal(lo_s.strip()), parse_decimal(hi_s.strip())
+    except (InvalidArgument, ValueError):
+        raise fail(f"bounds {lo_s.strip()!r} and {hi_s.strip()!r} must be decimal numbers") from None
+    if lo > hi:
+        raise fail(f"the low bound {lo_s.strip()} is greater than the high bound {hi_s.strip()}")
+    axes = machine.axis_names
+    hm = re.fullmatch(r"H(\d+)", name)
+    if hm:
+        reg = int(hm.group(1))
+        nominal = machine.tool_length(reg)
+        return ParamRange(f"H{reg}", lo - nominal, hi - nominal, (lo, hi), absolute=True)
+    if "." not in name:
+        raise fail(f"unknown parameter {name!r}; allowed: G54.X .. G59.3.Z (work offsets), Hn (tool lengths), "
+                   "start.AXIS, home.AXIS")
+    head, axis = name.rsplit(".", 1)
+    if axis not in axes:
+        raise fail(f"axis {axis!r} is not an axis of the machine ({', '.join(axes)})")
+    if head in ("start", "home") or re.fullmatch(r"G5[4-9](\.[123])?", head):
+        return ParamRange(name, lo, hi, (lo, hi))
+    raise fail(f"unknown parameter {name!r}; allowed: G54.X .. G59.3.Z (work offsets), Hn (tool lengths), "
+               "start.AXIS, home.AXIS")
+
+
+def verify(
+    program,
+    machine: Machine,
+    *,
+    margin: Fraction | str | int = 0,
+    params: tuple[ParamRange, ...] | list[str] = (),
+    engine: str = "auto",
+    max_violations: int = 20,
+    file: str | None = None,
+) -> Result:
+    """Verify a G-code program (text or path) on a machine (DESIGN §5).
+
+    ``params`` may be :class:`ParamRange` values or ``"NAME=LO..HI"`` strings.
+    A code the interpreter cannot model makes the verdict ``unknown`` unless
+    a violation before it already makes it ``unsafe``.  G-code errors raise
+    :class:`~nczones.errors.GcodeError`.
+    """
+    from ..exact import exact
+    from ..gcode import interpret
+
+    t0 = time.perf_counter()
+    if isinstance(margin, str):
+        margin = parse_decimal(margin)
+    margin = exact(margin)
+    if not isinstance(max_violations, int) or max_violations < 1:
+        raise InvalidArgument(f"max_violations must be a positive integer, got {max_violations!r}")
+    ranges = tuple(parse_param(p, machine) if isinstance(p, str) else p for p in params)
+    run = interpret(program, machine, file=file, track_dependencies=bool(ranges))
+    text_lines: dict[int, str] = {}
+    source_text = run.text.splitlines()
+
+    def with_text(seq):
+        from dataclasses import replace
+
+        from ..motion import MotionChunk
+
+        for chunk in seq:
+            if isinstance(chunk, MotionChunk) and chunk.scale is not None:
+                yield chunk
+            else:
+                for s in chunk.segments():
+                    yield s
+
+    result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
+                             max_violations=max_violations, file=run.file)
+    # fill the source text of violations and reasons (column chunks carry only line numbers)
+    from dataclasses import replace
+
+    def fix(span):
+        if span is None or span.text or not (1 <= span.line <= len(source_text)):
+            return span
+        return replace(span, text=source_text[span.line - 1])
+
+    violations = tuple(replace(v, span=fix(v.span)) for v in result.violations)
+    reasons = list(replace(r, span=fix(r.span)) for r in result.reasons)
+    for u in run.unsupported:
+        reasons.append(Reason(f"{u.code}: {u.reason}", fix(u.span), None, u.code))
+    notes = tuple(run.assumed_modal_text())
+    verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    timings = (("total_s", time.perf_counter() - t0),) + result.timings
+    return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes,
+                   timings=timings, extra={"counts": run.counts})

@@ -1,0 +1,994 @@
+"""The prover's driver: tiers, queries, witnesses (DESIGN §5, §9).
+
+Per segment, in execution order:
+
+1. **Tier 1** — exact screens: a motion whose exact bounding box (arcs: exact
+   extremes from the swept quadrant crossings, radii enclosed from above)
+   fits every zone is proved; straight pieces against boxes and stepped
+   tables are then *decided* exactly in rational arithmetic
+   (:mod:`nczones.prover.exact`).  Column chunks are screened with numpy
+   (:mod:`nczones.prover.screen`).
+2. **Tier 2** — Z3 (:mod:`nczones.prover.smt`) for polygons, arcs that the
+   screen did not prove, parameter ranges, and every flagged piece (its
+   model is the witness).  ``engine="z3"`` sends every segment here.
+3. **Tier 3** — over-approximations (helices, spirals) whose witness cannot
+   be certified on the exact path give ``unknown`` with the reason.
+
+Invariants: ``SAFE`` only when every segment was proved; every reported
+violation was re-checked with ``AllowedSet.violated_zones`` on an exact
+path point (or, for irrational paths, a rational box that certainly holds
+the exact point and certainly violates); a failed re-check raises
+``InternalError`` instead of being reported.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterable
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..errors import InternalError, InvalidArgument
+from ..machine import Machine, RapidMode
+from ..motion import MotionChunk, Segment, SegmentKind
+from ..zones import PolygonZone, Zone, ZonePoint
+from . import exact as ex
+from .geometry import (
+    ArcGeom,
+    LinePiece,
+    arc_geom,
+    atan_bounds,
+    in_sweep,
+    line_pieces,
+    pi_bounds,
+    rational_point_on_arc,
+    sqrt_bounds,
+)
+from .result import ParamRange, Reason, Result, Verdict, Violation
+from .smt import Solver, _and, _or, add, mul, q, sub, zone_violation
+
+__all__ = ["verify_segments", "Prover"]
+
+F0 = Fraction(0)
+F1 = Fraction(1)
+
+
+@dataclass(slots=True)
+class _Outcome:
+    violation: Violation | None = None
+    reason: Reason | None = None
+    engine: str = "exact"
+
+
+class Prover:
+    """Decides segments one by one for a machine, margin and parameter ranges."""
+
+    def __init__(self, machine: Machine, *, margin: Fraction = F0, params: tuple[ParamRange, ...] = (),
+                 engine: str = "auto", rlimit: int = 5_000_000):
+        if engine not in ("auto", "z3"):
+            raise InvalidArgument(f"engine must be 'auto' or 'z3', not {engine!r}")
+        if margin < 0:
+            raise InvalidArgument(f"margin must not be negative, got {margin}")
+        self.machine = machine
+        self.allowed = machine.allowed
+        self.zones: tuple[Zone, ...] = machine.allowed.zones
+        self.tool_axis = machine.allowed.tool_axis
+        self.axes = machine.axis_names
+        self.margin = Fraction(margin)
+        self.params = tuple(params)
+        self.engine = engine
+        self.solver = Solver(rlimit)
+        self.stats = {"segments": 0, "pieces": 0, "screened": 0, "exact_decided": 0, "z3_segments": 0}
+        self.pvars = {p.name: f"p{i}" for i, p in enumerate(self.params)}
+        self.prange = {p.name: p for p in self.params}
+        self.all_decidable = all(ex.decidable(z) for z in self.zones)
+
+    # ------------------------------------------------------------------ params
+
+    def _devs(self, seg: Segment, k: int, which: str) -> list[str]:
+        """Parameter variables added to coordinate k at the start/end."""
+        axis = self.axes[k]
+        deps = seg.deps_start if which == "start" else seg.deps_end
+        out = []
+        if deps and k < len(deps):
+            for src in deps[k]:
+                name = f"{src}.{axis}" if not src.startswith("H") else src
+                if name in self.pvars:
+                    out.append(self.pvars[name])
+        home = f"home.{axis}"
+        if home in self.pvars:
+            out.append(self.pvars[home])
+        return out
+
+    def _tool_dev(self, seg: Segment) -> list[str]:
+        if seg.tool_register is not None:
+            name = f"H{seg.tool_register}"
+            if name in self.pvars:
+                return [self.pvars[name]]
+        return []
+
+    def _param_relevant(self, seg: Segment) -> bool:
+        if not self.params:
+            return False
+        if any(self._devs(seg, k, w) for k in range(len(self.axes)) for w in ("start", "end")):
+            return True
+        return bool(self._tool_dev(seg)) and any(z.point is ZonePoint.TIP for z in self.zones)
+
+    def _param_decls(self) -> str:
+        out = []
+        for p in self.params:
+            v = self.pvars[p.name]
+            out.append(f"(declare-const {v} Real)(assert (<= {q(p.lo)} {v} {q(p.hi)}))")
+        return "".join(out)
+
+    def _param_slack(self, seg: Segment) -> Fraction:
+        """Largest total |deviation| any coordinate of ``seg`` can get (for enclosures)."""
+        if not self.params:
+            return F0
+        return sum((max(abs(p.lo), abs(p.hi)) for p in self.params), F0)
+
+    def instantiate(self, seg: Segment, values: dict[str, Fraction]) -> Segment:
+        """The concrete segment for parameter deviations ``values`` (param name -> deviation)."""
+        def coords(which):
+            base = seg.start if which == "start" else seg.end
+            out = []
+            for k, c in enumerate(base):
+                dv = F0
+                for var in self._devs(seg, k, which):
+                    name = next(n for n, v in self.pvars.items() if v == var)
+                    dv += values.get(name, F0)
+                out.append(c + dv)
+            return tuple(out)
+
+        tl = seg.tool_length
+        for var in self._tool_dev(seg):
+            name = next(n for n, v in self.pvars.items() if v == var)
+            tl += values.get(name, F0)
+        centre = seg.centre
+        if seg.kind is SegmentKind.ARC and centre is not None:
+            ia, ib, _ = seg.plane_indices()
+            s = coords("start")
+            centre = (centre[0] + s[ia] - seg.start[ia], centre[1] + s[ib] - seg.start[ib])
+        from dataclasses import replace
+
+        return replace(seg, start=coords("start"), end=coords("end"), tool_length=tl, centre=centre,
+                       deps_start=(), deps_end=())
+
+    # ------------------------------------------------------------------ encodings
+
+    def _margin_decls(self, names: list[str]) -> tuple[str, dict[str, str]]:
+        if self.margin == 0:
+            return "", {a: "0.0" for a in self.axes}
+        d = q(self.margin)
+        out, evars = [], {}
+        for k, a in enumerate(self.axes):
+            v = f"e{k}"
+            evars[a] = v
+            out.append(f"(declare-const {v} Real)(assert (<= (- {d}) {v} {d}))")
+            names.append(v)
+        return "".join(out), evars
+
+    def _violation_formula(self, pt: dict[str, str], tool_len: str, enclosure) -> str:
+        parts = []
+        for z in self.zones:
+            seen = dict(pt)
+            if z.point is ZonePoint.TIP and self.tool_axis in seen:
+                seen[self.tool_axis] = sub(seen[self.tool_axis], tool_len)
+            ref = None
+            if z.kind == "stepped":
+                lo, hi = enclosure[z.reference_axis]
+                if z.point is ZonePoint.TIP and z.reference_axis == self.tool_axis:
+                    ref = None
+                else:
+                    ref = (lo - self.margin, hi + self.margin)
+            parts.append(zone_violation(z, seen, ref))
+        return _or(parts)
+
+    def _line_query(self, seg: Segment, piece: LinePiece, with_params: bool, zone: Zone | None = None,
+                    t_max: Fraction | None = None) -> tuple[str, list[str]]:
+        names = ["t"]
+        body = ["(declare-const t Real)", f"(assert (<= 0.0 t {q(t_max if t_max is not None else F1)}))"]
+        mdecl, evars = self._margin_decls(names)
+        body.append(mdecl)
+        if with_params:
+            body.append(self._param_decls())
+            names += [self.pvars[p.name] for p in self.params]
+        pt = {}
+        slack = self._param_slack(seg) if with_params else F0
+        enclosure = {}
+        for k, a in enumerate(self.axes):
+            s0, s1 = piece.p0[k], piece.p1[k]
+            if with_params:
+                ds = add(*self._devs(seg, k, "start"))
+                de = add(*self._devs(seg, k, "end"))
+            else:
+                ds = de = "0.0"
+            start = add(q(s0), ds)
+            if ds == de:
+                coord = add(q(s0), mul("t", q(s1 - s0)), ds)
+            else:
+                coord = add(start, mul("t", sub(add(q(s1), de), start)))
+            pt[a] = add(coord, evars[a])
+            enclosure[a] = (min(s0, s1) - slack, max(s0, s1) + slack)
+        tl = q(seg.tool_length)
+        if with_params and self._tool_dev(seg):
+            tl = add(tl, *self._tool_dev(seg))
+        zones_backup = self.zones
+        if zone is not None:
+            self.zones = (zone,)
+        try:
+            body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
+        finally:
+            self.zones = zones_backup
+        return "".join(body), names
+
+    def _arc_query(self, seg: Segment, g: ArcGeom, with_params: bool, w_dir=None) -> tuple[str, list[str]]:
+        """Encoding of an arc (exact for circular arcs, over-approximation for helices/spirals).
+
+        ``w_dir`` (a rational direction from the centre) cuts the sweep off
+        there, for the first-exit bisection.
+        """
+        names = ["x", "y"]
+        body = ["(declare-const x Real)(declare-const y Real)"]
+        if g.centre is not None:
+            cx, cy = q(g.centre[0]), q(g.centre[1])
+            u = (q(g.s[0] - g.centre[0]), q(g.s[1] - g.centre[1]))
+            w = (q(g.e[0] - g.centre[0]), q(g.e[1] - g.centre[1]))
+        else:
+            names += ["cx", "cy"]
+            body.append("(declare-const cx Real)(declare-const cy Real)")
+            r2 = q(g.r_signed * g.r_signed)
+            sx, sy, ex_, ey = (q(v) for v in (*g.s, *g.e))
+            body.append(f"(assert (= (+ (* (- {sx} cx) (- {sx} cx)) (* (- {sy} cy) (- {sy} cy))) {r2}))")
+            body.append(f"(assert (= (+ (* (- {ex_} cx) (- {ex_} cx)) (* (- {ey} cy) (- {ey} cy))) {r2}))")
+            _, _, _, _, _, sign = g.r_format_parts()
+            chord = (g.e[0] - g.s[0], g.e[1] - g.s[1])
+            side = f"(+ (* {q(chord[0])} (- cy {sy})) (* {q(-chord[1])} (- cx {sx})))"
+            body.append(f"(assert ({'>' if sign > 0 else '<'} {side} 0.0))")
+            cx, cy = "cx", "cy"
+            u = (f"(- {sx} cx)", f"(- {sy} cy)")
+            w = (f"(- {ex_} cx)", f"(- {ey} cy)")
+        v = (f"(- x {cx})", f"(- y {cy})")
+        rr = f"(+ (* {v[0]} {v[0]}) (* {v[1]} {v[1]}))"
+        if g.r2_lo == g.r2_hi:
+            body.append(f"(assert (= {rr} {q(g.r2_lo)}))")
+        else:
+            body.append(f"(assert (<= {q(g.r2_lo)} {rr} {q(g.r2_hi)}))")
+        full = g.full and w_dir is None
+        if w_dir is not None:
+            w = (q(w_dir[0]), q(w_dir[1]))
+        if not full:
+            a, b = (u, w) if g.ccw else (w, u)  # ccw sweep from a to b
+            hw = self._half_const(g, a, b, w_dir)
+            cross_av = f"(- (* {a[0]} {v[1]}) (* {a[1]} {v[0]}))"
+            dot_av = f"(+ (* {a[0]} {v[0]}) (* {a[1]} {v[1]}))"
+            half0 = f"(or (> {cross_av} 0.0) (and (= {cross_av} 0.0) (> {dot_av} 0.0)))"
+            cross_vb = f"(- (* {v[0]} {b[1]}) (* {v[1]} {b[0]}))"
+            if hw == 0:
+                body.append(f"(assert (and {half0} (>= {cross_vb} 0.0)))")
+            else:
+                body.append(f"(assert (or {half0} (>= {cross_vb} 0.0)))")
+        mdecl, evars = self._margin_decls(names)
+        body.append(mdecl)
+        if with_params:
+            body.append(self._param_decls())
+            names += [self.pvars[p.name] for p in self.params]
+        pt = {}
+        slack = self._param_slack(seg) if with_params else F0
+        (bx, by) = g.plane_bbox()
+        enclosure = {}
+        for k, a in enumerate(self.axes):
+            dev = add(*self._devs(seg, k, "start")) if with_params else "0.0"
+            if k == g.ia:
+                coord, enc = "x", bx
+            elif k == g.ib:
+                coord, enc = "y", by
+            elif g.start[k] == g.end[k]:
+                coord, enc = q(g.start[k]), (g.start[k], g.start[k])
+            else:  # helix axis: anywhere between its start and end values
+                hv = f"h{k}"
+                names.append(hv)
+                lo, hi = sorted((g.start[k], g.end[k]))
+                body.append(f"(declare-const {hv} Real)(assert (<= {q(lo)} {hv} {q(hi)}))")
+                coord, enc = hv, (lo, hi)
+            pt[a] = add(coord, dev, evars[a])
+            enclosure[a] = (enc[0] - slack, enc[1] + slack)
+        tl = q(seg.tool_length)
+        if with_params and self._tool_dev(seg):
+            tl = add(tl, *self._tool_dev(seg))
+        body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
+        return "".join(body), names
+
+    @staticmethod
+    def _half_const(g: ArcGeom, a, b, w_dir) -> int:
+        """Half (0: ccw angle a->b in [0, pi), 1: [pi, 2 pi)) — constant for every arc we encode."""
+        if g.centre is not None or w_dir is not None:
+            c = g.centre if g.centre is not None else None
+            if c is not None:
+                def val(t):
+                    return Fraction(eval_lit(t))
+                av = (val(a[0]), val(a[1]))
+                bv = (val(b[0]), val(b[1]))
+                cr = av[0] * bv[1] - av[1] * bv[0]
+                dt = av[0] * bv[0] + av[1] * bv[1]
+                return 0 if cr > 0 or (cr == 0 and dt > 0) else 1
+        # R-format: R > 0 is the arc of at most 180 degrees
+        return 0 if g.r_signed > 0 else 1
+
+    # ------------------------------------------------------------------ deciding
+
+    def check(self, seg: Segment) -> _Outcome:
+        self.stats["segments"] += 1
+        if self._param_relevant(seg):
+            return self._check_with_params(seg)
+        return self._check_concrete(seg, ())
+
+    def _check_with_params(self, seg: Segment) -> _Outcome:
+        self.stats["z3_segments"] += 1
+        queries = []
+        if seg.kind is SegmentKind.ARC:
+            if any(a != b for a, b in zip(seg.deps_start, seg.deps_end)):
+                return _Outcome(reason=Reason("an arc whose start and end depend on different parameters "
+                                              "is not supported with parameter ranges", seg.span, seg.block),
+                                engine="unknown")
+            queries.append(self._arc_query(seg, arc_geom(seg), True))
+        else:
+            pieces = line_pieces(seg, self.machine)
+            dogleg_varies = (seg.kind is SegmentKind.RAPID and self.machine.rapid_mode is RapidMode.DOGLEG
+                             and tuple(self._devs(seg, k, "start") for k in range(len(self.axes)))
+                             != tuple(self._devs(seg, k, "end") for k in range(len(self.axes))))
+            if dogleg_varies:  # breakpoints move with the parameters: enclose in the box hull
+                lo = tuple(min(a, b) for a, b in zip(seg.start, seg.end))
+                hi = tuple(max(a, b) for a, b in zip(seg.start, seg.end))
+                return self._check_box_hull_params(seg, lo, hi)
+            for piece in pieces:
+                queries.append(self._line_query(seg, piece, True))
+        for body, names in queries:
+            ans = self.solver.check(body, names)
+            if ans.status == "unsat":
+                continue
+            if ans.status == "unknown":
+                return _Outcome(reason=Reason("solver resource limit reached", seg.span, seg.block), engine="unknown")
+            values = {p.name: _clamp(ans.values.get(self.pvars[p.name], F0), p.lo, p.hi) for p in self.params}
+            concrete = self.instantiate(seg, values)
+            out = self._check_concrete(concrete, tuple(values.items()))
+            if out.violation is not None:
+                return out
+            return _Outcome(reason=Reason("a parameter combination may violate a zone but no exact "
+                                          "counterexample was confirmed", seg.span, seg.block), engine="unknown")
+        return _Outcome(engine="z3")
+
+    def _check_box_hull_params(self, seg, lo, hi) -> _Outcome:
+        piece = LinePiece(lo, hi)
+        body, names = self._line_query(seg, piece, True)
+        # a box hull: every axis independently anywhere in its range
+        body = body.replace("(declare-const t Real)", "(declare-const t Real)")
+        ans = self.solver.check(body, names)
+        if ans.status == "unsat":
+            return _Outcome(engine="z3")
+        values = {p.name: _clamp(ans.values.get(self.pvars[p.name], F0), p.lo, p.hi) for p in self.params}
+        out = self._check_concrete(self.instantiate(seg, values), tuple(values.items()))
+        if out.violation is not None:
+            return out
+        return _Outcome(reason=Reason("dogleg rapid under parameter ranges: the enclosure may violate a zone "
+                                      "but no exact counterexample was confirmed", seg.span, seg.block),
+                        engine="unknown")
+
+    def _check_concrete(self, seg: Segment, params) -> _Outcome:
+        if seg.kind is SegmentKind.ARC:
+            return self._check_arc(seg, params)
+        pieces = line_pieces(seg, self.machine)
+        self.stats["pieces"] += len(pieces)
+        use_z3 = self.engine == "z3" or not self.all_decidable
+        for piece in pieces:
+            if self.engine == "auto" and self._bbox_fits(piece.p0, piece.p1, seg.tool_length):
+                continue
+            if not use_z3:
+                found = self._exact_line(seg, piece)
+                if found is None:
+                    continue
+                self.stats["exact_decided"] += 1
+                # Z3 confirms and provides the witness parameter
+                body, names = self._line_query(seg, piece, False)
+                ans = self.solver.check(body, names)
+                if ans.status != "sat":
+                    raise InternalError(f"tier 1 and Z3 disagree on block {seg.block} ({ans.status})")
+                return _Outcome(self._line_violation(seg, piece, ans.values.get("t"), params, "exact"), engine="exact")
+            self.stats["z3_segments"] += 1
+            body, names = self._line_query(seg, piece, False)
+            ans = self.solver.check(body, names)
+            if ans.status == "unsat":
+                continue
+            if ans.status == "unknown":
+                return _Outcome(reason=Reason("solver resource limit reached", seg.span, seg.block), engine="unknown")
+            return _Outcome(self._line_violation(seg, piece, ans.values["t"], params, "z3"), engine="z3")
+        return _Outcome(engine="z3" if use_z3 else "exact")
+
+    def _bbox_fits(self, lo_pt, hi_pt, tool_length, lo_given=False) -> bool:
+        """Tier-1 screen: does the whole axis-aligned box spanned by two points fit (with margin)?"""
+        lo = {a: min(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
+        hi = {a: max(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
+        return box_fits(self.allowed, lo, hi, self.margin, tool_length)
+
+    def _exact_line(self, seg: Segment, piece: LinePiece) -> list | None:
+        found = []
+        for z in self.zones:
+            iv = ex.line_violation(z, piece.p0, piece.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
+            if iv:
+                found.append((z, iv))
+        return found or None
+
+    def _line_violation(self, seg, piece, t_model, params, engine) -> Violation:
+        """Witness, first exit and depth of a violating straight piece (all exact)."""
+        pieces = line_pieces(seg, self.machine)
+        # first violating piece of the segment (the flagged one may not be the first)
+        first_piece, first_t, first_exact, first_zone_iv = None, None, True, None
+        for pc in pieces:
+            per_zone = []
+            for z in self.zones:
+                if ex.decidable(z):
+                    iv = ex.line_violation(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
+                    if iv:
+                        per_zone.append((iv[0].lo, z))
+                else:
+                    inf = self._bisect_line(seg, pc, z)
+                    if inf is not None:
+                        per_zone.append((inf, z))
+                        first_exact = False
+            if per_zone:
+                first_piece = pc
+                first_t = min(t for t, _ in per_zone)
+                break
+        if first_piece is None:
+            raise InternalError(f"block {seg.block}: a violation was found but no violating parameter")
+        t = t_model if t_model is not None else F0
+        path = piece.at(t)
+        pmap = dict(zip(self.axes, path))
+        bad = self.allowed.violated_zones(pmap, seg.tool_length, self.margin)
+        if not bad:  # the model point is not a violation: use the exact first interval
+            for z in self.zones:
+                if ex.decidable(z):
+                    iv = ex.line_violation(z, piece.p0, piece.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
+                    if iv:
+                        t = iv[0].sample()
+                        break
+            path = piece.at(t)
+            pmap = dict(zip(self.axes, path))
+            bad = self.allowed.violated_zones(pmap, seg.tool_length, self.margin)
+            if not bad:
+                raise InternalError(f"block {seg.block}: witness failed the exact re-check")
+        zone = bad[0]
+        outside = ex.outside_point(self.allowed, zone, pmap, self.margin, seg.tool_length)
+        if outside is None or zone not in self.allowed.violated_zones(outside, seg.tool_length):
+            raise InternalError(f"block {seg.block}: no point strictly outside inside the margin box")
+        depth, depth_exact = F0, True
+        for pc in pieces:
+            for z in self.zones:
+                dv, _, dex = ex.line_depth(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
+                if ex.decidable(z) and not ex.line_violation(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis):
+                    continue
+                if not ex.decidable(z) and z not in bad:
+                    continue
+                if dv > depth:
+                    depth = dv
+                depth_exact = depth_exact and dex
+        return Violation(
+            block=seg.block, span=seg.span, zone=zone.name,
+            point=tuple((a, outside[a]) for a in self.axes),
+            path_point=tuple(zip(self.axes, path)),
+            parameter=piece.tau(t), parameter_exact=True,
+            first_exit=tuple(zip(self.axes, first_piece.at(first_t))),
+            first_exit_parameter=first_piece.tau(first_t), first_exit_exact=first_exact,
+            depth=depth, depth_exact=depth_exact, engine=engine, segment_kind=seg.kind.name.lower(),
+            derived=seg.derived, params=self._written_params(params), zones=tuple(z.name for z in bad),
+        )
+
+    def _written_params(self, values) -> tuple[tuple[str, Fraction], ...]:
+        out = []
+        for name, dev in values:
+            p = self.prange[name]
+            if p.absolute:
+                nominal = p.written[0] - p.lo
+                out.append((name, nominal + dev))
+            else:
+                out.append((name, dev))
+        return tuple(out)
+
+    def _bisect_line(self, seg, piece, zone, steps: int = 40) -> Fraction | None:
+        body, names = self._line_query(seg, piece, False, zone)
+        if self.solver.check(body, names).status != "sat":
+            return None
+        lo, hi = F0, F1
+        for _ in range(steps):
+            mid = (lo + hi) / 2
+            body, names = self._line_query(seg, piece, False, zone, t_max=mid)
+            if self.solver.check(body, []).status == "sat":
+                hi = mid
+            else:
+                lo = mid
+        return lo
+
+    # ------------------------------------------------------------------ arcs
+
+    def _check_arc(self, seg: Segment, params) -> _Outcome:
+        self.stats["pieces"] += 1
+        try:
+            g = arc_geom(seg)
+        except InvalidArgument as exc:
+            return _Outcome(reason=Reason(f"arc cannot be modelled: {exc}", seg.span, seg.block), engine="unknown")
+        if self.engine == "auto":
+            (bx, by) = g.plane_bbox()
+            lo = list(seg.start)
+            hi = list(seg.start)
+            for k in range(len(self.axes)):
+                lo[k], hi[k] = min(seg.start[k], seg.end[k]), max(seg.start[k], seg.end[k])
+            lo[g.ia], hi[g.ia] = bx
+            lo[g.ib], hi[g.ib] = by
+            if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin, seg.tool_length):
+                return _Outcome(engine="exact")
+        self.stats["z3_segments"] += 1
+        body, names = self._arc_query(seg, g, False)
+        ans = self.solver.check(body, names, precision=60)
+        if ans.status == "unsat":
+            return _Outcome(engine="z3")
+        if ans.status == "unknown":
+            return _Outcome(reason=Reason("solver resource limit reached on an arc", seg.span, seg.block), engine="unknown")
+        v = self._arc_witness(seg, g, ans.values, params)
+        if v is None:
+            what = "helix" if g.helix else ("R-format arc with an irrational centre" if g.centre is None else "spiral arc")
+            if g.exact:
+                what = "arc"
+            return _Outcome(reason=Reason(f"{what}: the solver found a possible violation that could not be "
+                                          "confirmed on the exact path (over-approximation)", seg.span, seg.block),
+                            engine="unknown")
+        return _Outcome(v, engine="z3")
+
+    def _arc_witness(self, seg, g: ArcGeom, values, params) -> Violation | None:
+        if not g.exact:
+            return self._arc_witness_enclosed(seg, g, values, params)
+        c = g.centre
+        u = (g.s[0] - c[0], g.s[1] - c[1])
+        target = (values["x"] - c[0], values["y"] - c[1])
+        for base in _bases(u, g.ccw):
+            m = _half_tan(base, target, g.ccw)
+            if m is None or m < 0 or m > 1:
+                continue
+            pt2 = rational_point_on_arc(g, m, base)
+            vdir = (pt2[0] - c[0], pt2[1] - c[1])
+            if not in_sweep(u, (g.e[0] - c[0], g.e[1] - c[1]), vdir, g.ccw, g.full):
+                continue
+            coords = list(seg.start)
+            coords[g.ia], coords[g.ib] = pt2
+            pmap = dict(zip(self.axes, coords))
+            bad = self.allowed.violated_zones(pmap, seg.tool_length, self.margin)
+            if bad:
+                return self._arc_violation(seg, g, pmap, bad, params, True)
+        return None
+
+    def _arc_witness_enclosed(self, seg, g: ArcGeom, values, params) -> Violation | None:
+        """Certify a witness on an irrational path with a rational box around the exact point."""
+        if g.centre is None:
+            (cxl, cxh), (cyl, cyh) = g.centre_bounds(120)
+            c_mid = ((cxl + cxh) / 2, (cyl + cyh) / 2)
+        else:
+            cxl = cxh = g.centre[0]
+            cyl = cyh = g.centre[1]
+            c_mid = g.centre
+        d = (values["x"] - c_mid[0], values["y"] - c_mid[1])
+        n2 = d[0] * d[0] + d[1] * d[1]
+        if n2 == 0:
+            return None
+        # exact path radius at this direction
+        u = (g.s[0] - c_mid[0], g.s[1] - c_mid[1])
+        w = (g.e[0] - c_mid[0], g.e[1] - c_mid[1])
+        frac = None
+        if g.helix or g.r2_lo != g.r2_hi:
+            theta = _angle_bounds(u, d, g.ccw)
+            total = _angle_bounds(u, w, g.ccw) if not g.full else (F0, F0)
+            pi_lo, pi_hi = pi_bounds()
+            tot_lo = total[0] + (2 * pi_lo * seg.turns if g.full or seg.turns else 0)
+            tot_hi = total[1] + (2 * pi_hi * seg.turns if g.full or seg.turns else 0)
+            if g.full and seg.turns == 0:
+                tot_lo, tot_hi = 2 * pi_lo, 2 * pi_hi
+            if tot_lo <= 0 or seg.turns:
+                return None
+            frac = (max(F0, theta[0] / tot_hi), min(F1, theta[1] / tot_lo))
+        if g.r2_lo != g.r2_hi:
+            rs = sqrt_bounds((g.s[0] - g.centre[0]) ** 2 + (g.s[1] - g.centre[1]) ** 2, 120)
+            re_ = sqrt_bounds((g.e[0] - g.centre[0]) ** 2 + (g.e[1] - g.centre[1]) ** 2, 120)
+            rho = sorted([rs[0] + (re_[0] - rs[0]) * f for f in frac] + [rs[1] + (re_[1] - rs[1]) * f for f in frac])
+            rho = (rho[0], rho[-1])
+        else:
+            r = abs(g.r_signed) if g.centre is None else None
+            rho = sqrt_bounds(g.r2_lo, 120) if r is None else (r, r)
+        dn = sqrt_bounds(n2, 120)
+        lo, hi = {}, {}
+        for k, a in enumerate(self.axes):
+            lo[a] = hi[a] = seg.start[k]
+        for k, (cl, ch, comp) in ((g.ia, (cxl, cxh, d[0])), (g.ib, (cyl, cyh, d[1]))):
+            a = self.axes[k]
+            cands = [cc + rr * comp / nn for cc in (cl, ch) for rr in rho for nn in dn]
+            lo[a], hi[a] = min(cands), max(cands)
+        for k, a in enumerate(self.axes):
+            if k in (g.ia, g.ib) or g.start[k] == g.end[k]:
+                continue
+            vals = [g.start[k] + (g.end[k] - g.start[k]) * f for f in frac]
+            lo[a], hi[a] = min(vals), max(vals)
+        # the direction must lie strictly inside the sweep for every centre in the enclosure
+        for cx in (cxl, cxh):
+            for cy in (cyl, cyh):
+                uu = (g.s[0] - cx, g.s[1] - cy)
+                ww = (g.e[0] - cx, g.e[1] - cy)
+                if not in_sweep(uu, ww, d, g.ccw, g.full):
+                    return None
+        for z in self.zones:
+            if ex.box_certainly_violates(self.allowed, z, lo, hi, self.margin, seg.tool_length):
+                mid = {a: (lo[a] + hi[a]) / 2 for a in self.axes}
+                bad = self.allowed.violated_zones(mid, seg.tool_length, self.margin)
+                if z not in bad:
+                    raise InternalError("certified box centre does not violate")
+                width = max(hi[a] - lo[a] for a in self.axes)
+                return self._arc_violation(seg, g, mid, bad, params, False,
+                                           note=f"irrational path point; reported point within "
+                                                f"{float(width):.1e} mm of it, the whole enclosure violates")
+        return None
+
+    def _arc_violation(self, seg, g, pmap, bad, params, exact_point: bool, note: str = "") -> Violation:
+        zone = bad[0]
+        outside = ex.outside_point(self.allowed, zone, pmap, self.margin, seg.tool_length)
+        if outside is None or zone not in self.allowed.violated_zones(outside, seg.tool_length):
+            raise InternalError(f"block {seg.block}: no point strictly outside inside the margin box")
+        param = self._arc_param(g, pmap)
+        first_param, first_pt = param, pmap
+        if g.exact:
+            fp = self._arc_first_exit(seg, g, pmap)
+            if fp is not None:
+                first_pt = fp
+                first_param = self._arc_param(g, fp)
+        # depth: a lower bound from exact rational points along the arc
+        depth = F0
+        samples = [pmap, first_pt]
+        if g.exact:
+            u = (g.s[0] - g.centre[0], g.s[1] - g.centre[1])
+            for base in _bases(u, g.ccw):
+                for i in range(0, 17):
+                    p2 = rational_point_on_arc(g, Fraction(i, 16), base)
+                    vdir = (p2[0] - g.centre[0], p2[1] - g.centre[1])
+                    if in_sweep(u, (g.e[0] - g.centre[0], g.e[1] - g.centre[1]), vdir, g.ccw, g.full):
+                        coords = list(seg.start)
+                        coords[g.ia], coords[g.ib] = p2
+                        samples.append(dict(zip(self.axes, coords)))
+        samples.append(dict(zip(self.axes, seg.start)))
+        samples.append(dict(zip(self.axes, seg.end)))
+        for p in samples:
+            for z in self.allowed.violated_zones(p, seg.tool_length, self.margin):
+                depth = max(depth, ex.point_depth(z, self.allowed.seen_by(z, p, seg.tool_length), self.margin))
+        return Violation(
+            block=seg.block, span=seg.span, zone=zone.name,
+            point=tuple((a, outside[a]) for a in self.axes),
+            path_point=tuple((a, pmap[a]) for a in self.axes),
+            parameter=param, parameter_exact=False,
+            first_exit=tuple((a, first_pt[a]) for a in self.axes), first_exit_parameter=first_param,
+            first_exit_exact=False, depth=depth, depth_exact=False, engine="z3",
+            segment_kind="arc" if not g.helix else "helix", derived=seg.derived,
+            params=self._written_params(params), zones=tuple(z.name for z in bad), note=note,
+        )
+
+    def _arc_param(self, g: ArcGeom, pmap) -> Fraction:
+        """Fraction of the swept angle at a point (approximate, for reports)."""
+        c = g.centre if g.centre is not None else tuple((a + b) / 2 for a, b in g.centre_bounds(60))
+        u = (g.s[0] - c[0], g.s[1] - c[1])
+        v = (pmap[self.axes[g.ia]] - c[0], pmap[self.axes[g.ib]] - c[1])
+        th = _angle_bounds(u, v, g.ccw)[0]
+        if g.full:
+            tot = 2 * pi_bounds()[0]
+        else:
+            tot = _angle_bounds(u, (g.e[0] - c[0], g.e[1] - c[1]), g.ccw)[0]
+        if tot <= 0:
+            return F0
+        return min(F1, th / tot).limit_denominator(10**9)
+
+    def _arc_first_exit(self, seg, g: ArcGeom, witness) -> dict | None:
+        """Bisection over rational points of the arc: the last point before which no violation exists.
+
+        Returns the exact path point at the upper end of the final bracket
+        (a violation exists in the closed sub-arc from the start to it; none
+        exists up to the lower end, 2**-24 of a quarter turn earlier).
+        """
+        c = g.centre
+        u = (g.s[0] - c[0], g.s[1] - c[1])
+        w = (g.e[0] - c[0], g.e[1] - c[1])
+        bases = _bases(u, g.ccw)
+
+        def point(k, m):
+            return rational_point_on_arc(g, m, bases[k])
+
+        def violates_up_to(k, m) -> bool:
+            p2 = point(k, m)
+            dirv = (p2[0] - c[0], p2[1] - c[1])
+            if dirv == u:
+                coords = list(seg.start)
+                return bool(self.allowed.violated_zones(dict(zip(self.axes, coords)), seg.tool_length, self.margin))
+            body, names = self._arc_query(seg, g, False, w_dir=dirv)
+            return self.solver.check(body, []).status == "sat"
+
+        # find the quarter containing the first violation
+        for k in range(4):
+            end_dir = (point(k, F1)[0] - c[0], point(k, F1)[1] - c[1])
+            last = not in_sweep(u, w, end_dir, g.ccw, g.full) or (not g.full and end_dir == w)
+            if last or violates_up_to(k, F1):
+                lo, hi = F0, F1
+                for _ in range(24):
+                    mid = (lo + hi) / 2
+                    p2 = point(k, mid)
+                    if not in_sweep(u, w, (p2[0] - c[0], p2[1] - c[1]), g.ccw, g.full) and not g.full:
+                        hi = mid
+                        continue
+                    if violates_up_to(k, mid):
+                        hi = mid
+                    else:
+                        lo = mid
+                p2 = point(k, hi)
+                coords = list(seg.start)
+                coords[g.ia], coords[g.ib] = p2
+                return dict(zip(self.axes, coords))
+        return None
+
+
+def eval_lit(text: str) -> Fraction:
+    """Value of a literal produced by :func:`nczones.prover.smt.q`."""
+    from .smt import _num, _parse_sexpr
+
+    v = _num(_parse_sexpr(text)[0])
+    return v[0]
+
+
+def _clamp(x: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
+    return max(lo, min(hi, x))
+
+
+def _bases(u, ccw: bool) -> list:
+    """u rotated by 0, 90, 180, 270 degrees in the arc's direction (exact)."""
+    out = [u]
+    for _ in range(3):
+        a = out[-1]
+        out.append((-a[1], a[0]) if ccw else (a[1], -a[0]))
+    return out
+
+
+def _half_tan(base, target, ccw: bool) -> Fraction | None:
+    """Rational approximation of tan(angle(base -> target)/2) in the arc's direction."""
+    cr = base[0] * target[1] - base[1] * target[0]
+    if not ccw:
+        cr = -cr
+    dt = base[0] * target[0] + base[1] * target[1]
+    n = sqrt_bounds((base[0] ** 2 + base[1] ** 2) * (target[0] ** 2 + target[1] ** 2), 120)[0]
+    den = n + dt
+    if den <= 0:
+        return None
+    return (cr / den).limit_denominator(10**40)
+
+
+def _angle_bounds(u, v, ccw: bool) -> tuple[Fraction, Fraction]:
+    """Rational enclosure of the angle from u to v in the given direction, in [0, 2 pi)."""
+    pi_lo, pi_hi = pi_bounds()
+    for k, base in enumerate(_bases(u, ccw)):
+        cr = base[0] * v[1] - base[1] * v[0]
+        if not ccw:
+            cr = -cr
+        dt = base[0] * v[0] + base[1] * v[1]
+        if cr >= 0 and dt > 0 or (cr > 0 and dt == 0):
+            n_lo, n_hi = sqrt_bounds((base[0] ** 2 + base[1] ** 2) * (v[0] ** 2 + v[1] ** 2), 120)
+            m_lo, m_hi = cr / (n_hi + dt), cr / (n_lo + dt)
+            a_lo, a_hi = atan_bounds(m_lo)[0], atan_bounds(m_hi)[1]
+            return k * pi_lo / 2 + 2 * a_lo, k * pi_hi / 2 + 2 * a_hi
+    return F0, 2 * pi_hi
+
+
+def box_fits(allowed, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction) -> bool:
+    """Exact test: every point of the box ``[lo, hi]`` has a fitting margin box (boxes, stepped tables).
+
+    Polygon zones: True only for a forbid polygon whose bounding box the
+    grown box misses; an allow polygon is never screened.
+    """
+    from ..zones import BoxZone, SteppedZone
+
+    d = margin
+    for z in allowed.zones:
+        shift = tool_length if (z.point is ZonePoint.TIP and tool_length) else F0
+
+        def rng(a):
+            s = shift if a == allowed.tool_axis else F0
+            return lo[a] - s - d, hi[a] - s + d
+
+        if isinstance(z, BoxZone):
+            if z.forbid:
+                if not any(
+                    (hi_ is not None and rng(a)[0] >= hi_) or (lo_ is not None and rng(a)[1] <= lo_)
+                    for a, lo_, hi_ in z.limits
+                ):
+                    return False
+            else:
+                for a, lo_, hi_ in z.limits:
+                    r0, r1 = rng(a)
+                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
+                        return False
+        elif isinstance(z, SteppedZone):
+            r0, r1 = rng(z.reference_axis)
+            l0, l1 = rng(z.limited_axis)
+            if z.forbid:
+                for i in ex._reachable(z, r0, r1):
+                    reg = z.regions[i]
+                    if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
+                        return False
+            else:
+                if r0 < z.start or r1 > z.regions[-1].upto:
+                    return False
+                for i in ex._reachable(z, r0, r1):
+                    reg = z.regions[i]
+                    if i > 0 and r1 <= z.regions[i - 1].upto:
+                        continue
+                    if (reg.min is not None and l0 < reg.min) or (reg.max is not None and l1 > reg.max):
+                        return False
+        elif isinstance(z, PolygonZone):
+            if not z.forbid:
+                return False
+            b = z.bounds()
+            if not any(
+                (bh is not None and rng(a)[0] >= bh) or (bl is not None and rng(a)[1] <= bl)
+                for a, (bl, bh) in b.items() if a in lo
+            ):
+                return False
+    return True
+
+
+def verify_segments(
+    segments: Iterable[Segment | MotionChunk],
+    machine: Machine,
+    *,
+    margin: Fraction | int = 0,
+    params: tuple[ParamRange, ...] = (),
+    engine: str = "auto",
+    max_violations: int = 20,
+    notes: tuple[str, ...] = (),
+    unsupported: Iterable = (),
+    file: str = "",
+) -> Result:
+    """Verify motion segments (no G-code text needed) against a machine's zones.
+
+    Parameters
+    ----------
+    segments : iterable of Segment or MotionChunk
+        In execution order (machine coordinates, exact).
+    machine : Machine
+        Its zones, rapid mode and axes.
+    margin : Fraction
+        Required clearance ``d`` (the box of half-width ``d`` around every
+        path point must fit).
+    params : tuple of ParamRange
+        Parameter ranges (see :func:`nczones.prover.parse_param`); segments
+        need ``deps_start``/``deps_end`` for offset and start parameters.
+    engine : "auto" or "z3"
+    max_violations : int
+        Stop after this many violating blocks (the verdict is then already
+        ``unsafe``; ``Result.truncated`` says so).
+
+    Returns
+    -------
+    Result
+
+    Examples
+    --------
+    >>> from nczones.machine import parse_machine
+    >>> from nczones.motion import Segment, SegmentKind
+    >>> m = parse_machine('''
+    ... [machine]
+    ... axes = ["X", "Y"]
+    ... [machine.rapid]
+    ... X = "1000"
+    ... Y = "1000"
+    ... [machine.reference]
+    ... X = "0"
+    ... Y = "5"
+    ... [[zones]]
+    ... name = "table"
+    ... kind = "stepped"
+    ... reference_axis = "X"
+    ... limited_axis = "Y"
+    ... from = "0"
+    ... regions = [{upto = "10", min = "5"}, {upto = "20", min = "0"}, {upto = "30", min = "5"}]
+    ... ''')
+    >>> F = Fraction
+    >>> line = Segment(SegmentKind.LINE, (F(5), F(6)), (F(25), F(2)), ("X", "Y"), block=0)
+    >>> r = verify_segments([line], m)
+    >>> r.verdict.label, r.violations[0].zone, str(r.violations[0].first_exit_parameter)
+    ('unsafe', 'table', '3/4')
+    """
+    t0 = time.perf_counter()
+    prover = Prover(machine, margin=Fraction(margin), params=params, engine=engine)
+    violations: list[Violation] = []
+    reasons: list[Reason] = []
+    engines: dict[int, str] = {}
+    seen_blocks: set[int] = set()
+    truncated = False
+    from .screen import screen_chunk
+
+    def handle(seg: Segment) -> bool:
+        out = prover.check(seg)
+        if out.violation is not None or out.reason is not None:
+            engines.setdefault(seg.block, out.engine)
+        if out.violation is not None:
+            if seg.block in seen_blocks:
+                old = next(i for i, v in enumerate(violations) if v.block == seg.block)
+                if out.violation.depth > violations[old].depth:
+                    from dataclasses import replace
+
+                    violations[old] = replace(violations[old], depth=out.violation.depth,
+                                              depth_exact=violations[old].depth_exact and out.violation.depth_exact)
+                return True
+            if len(violations) >= max_violations:
+                return False
+            seen_blocks.add(seg.block)
+            violations.append(out.violation)
+        elif out.reason is not None:
+            reasons.append(out.reason)
+        return True
+
+    for item in segments:
+        if isinstance(item, MotionChunk):
+            if item.scale is not None and engine == "auto" and not prover.params:
+                n = len(item)
+                flagged = screen_chunk(item, prover)
+                prover.stats["segments"] += 0
+                prover.stats["screened"] += n - len(flagged)
+                prover.stats["segments"] += n - len(flagged)
+                it = (seg for seg in _chunk_rows(item, flagged))
+            else:
+                it = item.segments()
+            for seg in it:
+                if not handle(seg):
+                    truncated = True
+                    break
+        else:
+            if not handle(item):
+                truncated = True
+        if truncated:
+            break
+    for u in unsupported:
+        reasons.append(Reason(getattr(u, "message", str(u)), getattr(u, "span", None), None, getattr(u, "code", "")))
+    if violations:
+        verdict = Verdict.UNSAFE
+    elif reasons:
+        verdict = Verdict.UNKNOWN
+    else:
+        verdict = Verdict.SAFE
+    stats = dict(prover.stats)
+    stats["z3_queries"] = prover.solver.queries
+    return Result(
+        verdict=verdict, violations=tuple(violations), reasons=tuple(reasons),
+        engines=tuple(sorted(engines.items())), solver="z3", solver_version=prover.solver.version,
+        timings=(("prove_s", time.perf_counter() - t0),), notes=tuple(notes),
+        stats=tuple(stats.items()), margin=Fraction(margin), params=tuple(params), engine=engine,
+        truncated=truncated, file=file,
+    )
+
+
+def _chunk_rows(chunk: MotionChunk, rows) -> Iterable[Segment]:
+    """Segment views of selected rows of a column chunk."""
+    from ..errors import SourceSpan
+    from ..motion import Plane
+
+    den = 10**chunk.scale
+    for i in rows:
+        kind = SegmentKind(int(chunk.kind[i]))
+        line_no = int(chunk.line[i])
+        span = SourceSpan(chunk.file, line_no, 1, None, "")
+        start = tuple(Fraction(int(v), den) for v in chunk.start[i])
+        end = tuple(Fraction(int(v), den) for v in chunk.end[i])
+        arc = {}
+        if kind is SegmentKind.ARC:
+            arc = dict(plane=Plane(int(chunk.plane[i])), clockwise=bool(chunk.clockwise[i]),
+                       centre=(Fraction(int(chunk.centre[i, 0]), den), Fraction(int(chunk.centre[i, 1]), den)),
+                       turns=int(chunk.turns[i]))
+        yield Segment(kind, start, end, chunk.axes, int(chunk.block[i]), span,
+                      Fraction(int(chunk.tool_length[i]), den), None, **arc)

@@ -1,0 +1,560 @@
+"""Exact rational decisions for straight pieces against box and stepped zones.
+
+For a straight piece ``p(t) = p0 + t (p1 - p0)``, ``t`` in ``[0, 1]``, and one
+zone, :func:`line_violation` computes the *exact* set of parameters whose
+margin box violates the zone, as a finite union of intervals with rational
+end points (open or closed).  With margin ``d`` a point violates an allow
+zone when some point of its closed box of half-width ``d`` is outside the
+zone, and a forbid zone when the box meets the zone's open interior
+(``AllowedSet.violated_zones`` semantics); per axis the box is independent,
+so each condition is linear in ``t``.  This is a decision procedure: the
+piece is safe for the zone iff the returned union is empty.
+
+Invariant: every returned interval lies in ``[0, 1]`` and is non-empty;
+``t`` in an interval <=> ``violated_zones(p(t), L, d)`` contains the zone.
+
+Also here: the first exit (infimum of the union), depth along a piece
+(:func:`point_depth`, maximised exactly over a piece by
+:func:`line_depth`), a point strictly outside the allowed set inside a
+violating margin box (:func:`outside_point`) and the certification of a
+small rational box (:func:`box_certainly_violates`), used for witnesses on
+irrational paths.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..zones import AllowedSet, BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
+
+__all__ = [
+    "Interval",
+    "line_violation",
+    "first_point",
+    "point_depth",
+    "line_depth",
+    "zone_constants",
+    "outside_point",
+    "box_certainly_violates",
+    "decidable",
+]
+
+F0 = Fraction(0)
+F1 = Fraction(1)
+
+
+@dataclass(frozen=True, slots=True)
+class Interval:
+    """A non-empty interval of ``t`` with rational ends; ``lo_closed``/``hi_closed`` say which ends belong."""
+
+    lo: Fraction
+    hi: Fraction
+    lo_closed: bool
+    hi_closed: bool
+
+    def sample(self) -> Fraction:
+        """A parameter inside the interval (the low end if it belongs, else the midpoint)."""
+        if self.lo_closed:
+            return self.lo
+        if self.hi_closed and self.hi == self.lo:
+            return self.hi
+        return (self.lo + self.hi) / 2
+
+    def contains(self, t: Fraction) -> bool:
+        return (self.lo < t or (self.lo_closed and t == self.lo)) and (
+            t < self.hi or (self.hi_closed and t == self.hi)
+        )
+
+
+UNIT = Interval(F0, F1, True, True)
+
+
+def _make(lo, hi, lc, hc) -> Interval | None:
+    if lo > hi or (lo == hi and not (lc and hc)):
+        return None
+    return Interval(lo, hi, lc, hc)
+
+
+def _intersect(a: Interval | None, b: Interval | None) -> Interval | None:
+    if a is None or b is None:
+        return None
+    if a.lo > b.lo:
+        lo, lc = a.lo, a.lo_closed
+    elif b.lo > a.lo:
+        lo, lc = b.lo, b.lo_closed
+    else:
+        lo, lc = a.lo, a.lo_closed and b.lo_closed
+    if a.hi < b.hi:
+        hi, hc = a.hi, a.hi_closed
+    elif b.hi < a.hi:
+        hi, hc = b.hi, b.hi_closed
+    else:
+        hi, hc = a.hi, a.hi_closed and b.hi_closed
+    return _make(lo, hi, lc, hc)
+
+
+def _atom(alpha: Fraction, beta: Fraction, strict: bool) -> Interval | None:
+    """``{t in [0,1] : alpha + beta t < 0}`` (``<=`` when not strict)."""
+    if beta == 0:
+        ok = alpha < 0 if strict else alpha <= 0
+        return UNIT if ok else None
+    x = -alpha / beta
+    if beta > 0:  # t < x
+        return _intersect(UNIT, Interval(min(x, F0) - 1, x, True, not strict) if x >= F0 - 1 else None)
+    return _intersect(UNIT, Interval(x, max(x, F1) + 1, not strict, True))
+
+
+class _Line:
+    """Coordinates of a piece as affine functions of t, as a zone sees them."""
+
+    __slots__ = ("p0", "p1", "index", "shift_axis", "shift")
+
+    def __init__(self, p0, p1, axes, zone: Zone, tool_length: Fraction, tool_axis: str | None):
+        self.p0, self.p1 = p0, p1
+        self.index = {a: i for i, a in enumerate(axes)}
+        self.shift_axis = tool_axis if (zone.point is ZonePoint.TIP and tool_length) else None
+        self.shift = tool_length
+
+    def ends(self, axis: str) -> tuple[Fraction, Fraction]:
+        i = self.index[axis]
+        a, b = self.p0[i], self.p1[i]
+        if axis == self.shift_axis:
+            return a - self.shift, b - self.shift
+        return a, b
+
+    def lt(self, axis: str, c: Fraction, strict: bool = True) -> Interval | None:
+        """t where coord(t) < c (<= when not strict)."""
+        a, b = self.ends(axis)
+        return _atom(a - c, b - a, strict)
+
+    def gt(self, axis: str, c: Fraction, strict: bool = True) -> Interval | None:
+        a, b = self.ends(axis)
+        return _atom(c - a, a - b, strict)
+
+
+def decidable(zone: Zone) -> bool:
+    """Zones :func:`line_violation` decides (boxes and stepped tables)."""
+    return not isinstance(zone, PolygonZone)
+
+
+def _all(parts) -> Interval | None:
+    out = UNIT
+    for p in parts:
+        out = _intersect(out, p)
+        if out is None:
+            return None
+    return out
+
+
+def _union(parts) -> list[Interval]:
+    """Sorted union (merged where they overlap or touch with a closed end)."""
+    items = sorted((p for p in parts if p is not None), key=lambda i: (i.lo, not i.lo_closed))
+    out: list[Interval] = []
+    for it in items:
+        if out:
+            last = out[-1]
+            if it.lo < last.hi or (it.lo == last.hi and (it.lo_closed or last.hi_closed)):
+                if it.hi > last.hi or (it.hi == last.hi and it.hi_closed and not last.hi_closed):
+                    out[-1] = Interval(last.lo, it.hi, last.lo_closed, it.hi_closed)
+                continue
+        out.append(it)
+    return out
+
+
+def line_violation(
+    zone: Zone,
+    p0: tuple[Fraction, ...],
+    p1: tuple[Fraction, ...],
+    axes: tuple[str, ...],
+    margin: Fraction = F0,
+    tool_length: Fraction = F0,
+    tool_axis: str | None = "Z",
+) -> list[Interval]:
+    """Exact set of ``t`` in ``[0,1]`` whose margin box violates ``zone``.
+
+    Examples
+    --------
+    >>> from nczones.zones import Region
+    >>> F = Fraction
+    >>> notch = SteppedZone("t", "X", "Y", F(0), (Region(F(10), F(5)), Region(F(20), F(0)),
+    ...                                           Region(F(30), F(5))))
+    >>> line_violation(notch, (F(5), F(6)), (F(25), F(6)), ("X", "Y"))
+    []
+    >>> line_violation(notch, (F(5), F(6)), (F(25), F(2)), ("X", "Y"))
+    [Interval(lo=Fraction(3, 4), hi=Fraction(1, 1), lo_closed=False, hi_closed=True)]
+    """
+    d = margin
+    ln = _Line(p0, p1, axes, zone, tool_length, tool_axis)
+    if isinstance(zone, BoxZone):
+        if zone.forbid:
+            conds = []
+            for a, lo, hi in zone.limits:
+                if lo is not None:
+                    conds.append(ln.gt(a, lo - d))
+                if hi is not None:
+                    conds.append(ln.lt(a, hi + d))
+            return _union([_all(conds)])
+        parts = []
+        for a, lo, hi in zone.limits:
+            if lo is not None:
+                parts.append(ln.lt(a, lo + d))
+            if hi is not None:
+                parts.append(ln.gt(a, hi - d))
+        return _union(parts)
+    if isinstance(zone, SteppedZone):
+        r, lim = zone.reference_axis, zone.limited_axis
+        parts = []
+        ra, rb = ln.ends(r)
+        r_lo, r_hi = min(ra, rb) - d, max(ra, rb) + d
+        idx = _reachable(zone, r_lo, r_hi)
+        if zone.forbid:
+            for i in idx:
+                reg = zone.regions[i]
+                a, b = zone.region_lower(i), reg.upto
+                conds = [ln.lt(r, b + d), ln.gt(r, a - d)]
+                if reg.max is not None:
+                    conds.append(ln.lt(lim, reg.max + d))
+                if reg.min is not None:
+                    conds.append(ln.gt(lim, reg.min - d))
+                parts.append(_all(conds))
+            for i in idx:
+                if i + 1 >= len(zone.regions):
+                    continue
+                reg, nxt = zone.regions[i], zone.regions[i + 1]
+                b = reg.upto
+                lo = _max_bound(reg.min, nxt.min)
+                hi = _min_bound(reg.max, nxt.max)
+                if lo is not None and hi is not None and not lo < hi:
+                    continue
+                conds = [ln.lt(r, b + d, False), ln.gt(r, b - d, False)]
+                if hi is not None:
+                    conds.append(ln.lt(lim, hi + d))
+                if lo is not None:
+                    conds.append(ln.gt(lim, lo - d))
+                parts.append(_all(conds))
+            return _union(parts)
+        parts.append(ln.lt(r, zone.start + d))
+        parts.append(ln.gt(r, zone.regions[-1].upto - d))
+        for i in idx:
+            reg = zone.regions[i]
+            a, b = zone.region_lower(i), reg.upto
+            touch = _all([ln.lt(r, b + d, False), ln.gt(r, a - d, i != 0)])
+            if touch is None:
+                continue
+            if reg.min is not None:
+                parts.append(_intersect(touch, ln.lt(lim, reg.min + d)))
+            if reg.max is not None:
+                parts.append(_intersect(touch, ln.gt(lim, reg.max - d)))
+        return _union(parts)
+    raise TypeError(f"line_violation cannot decide a {zone.kind} zone")
+
+
+def _reachable(zone: SteppedZone, lo: Fraction, hi: Fraction) -> range:
+    """Indices of regions whose closed reference range meets ``[lo, hi]``."""
+    import bisect
+
+    ups = zone.uptos
+    first = bisect.bisect_left(ups, lo)  # first region with upto >= lo
+    last = bisect.bisect_right(ups, hi)  # last region whose lower end may be <= hi
+    return range(first, min(last + 1, len(ups)))
+
+
+def _max_bound(a, b):
+    if a is None:
+        return b
+    if b is None:
+        return a
+    return max(a, b)
+
+
+def _min_bound(a, b):
+    if a is None:
+        return b
+    if b is None:
+        return a
+    return min(a, b)
+
+
+def first_point(intervals: list[Interval]) -> tuple[Fraction, bool]:
+    """Infimum of a non-empty union and whether it is attained."""
+    first = intervals[0]
+    return first.lo, first.lo_closed
+
+
+# --------------------------------------------------------------------------- depth
+
+
+def zone_constants(zone: Zone, axis: str) -> list[Fraction]:
+    """The zone's boundary values on one axis (where its predicate can change)."""
+    out: list[Fraction] = []
+    if isinstance(zone, BoxZone):
+        for a, lo, hi in zone.limits:
+            if a == axis:
+                out += [v for v in (lo, hi) if v is not None]
+    elif isinstance(zone, SteppedZone):
+        if axis == zone.reference_axis:
+            out.append(zone.start)
+            out += list(zone.uptos)
+        elif axis == zone.limited_axis:
+            for reg in zone.regions:
+                out += [v for v in (reg.min, reg.max) if v is not None]
+    else:
+        if axis in zone.plane:
+            k = zone.plane.index(axis)
+            out += [v[k] for v in zone.vertices]
+        for a, lo, hi in zone.limits:
+            if a == axis:
+                out += [v for v in (lo, hi) if v is not None]
+    return sorted(set(out))
+
+
+def _rect_dist(p: tuple[Fraction, Fraction], rect) -> Fraction:
+    (x0, x1), (y0, y1) = rect
+    gaps = [F0]
+    if x0 is not None:
+        gaps.append(x0 - p[0])
+    if x1 is not None:
+        gaps.append(p[0] - x1)
+    if y0 is not None:
+        gaps.append(y0 - p[1])
+    if y1 is not None:
+        gaps.append(p[1] - y1)
+    return max(gaps)
+
+
+def _stepped_eroded_rects(zone: SteppedZone, d: Fraction):
+    """Closed rectangles whose union is the closure of {q : box(q, d) fits the zone}."""
+    regs = zone.regions
+    cuts = sorted({zone.start + d, regs[-1].upto - d} | {r.upto + s for r in regs for s in (-d, d)})
+    cuts = [c for c in cuts if zone.start + d <= c <= regs[-1].upto - d]
+    rects = []
+    spans = [(c, c) for c in cuts] + list(zip(cuts, cuts[1:]))
+    for a, b in spans:
+        mid = (a + b) / 2
+        lo_r, hi_r = mid - d, mid + d
+        los, his = [], []
+        for i, reg in enumerate(regs):
+            ra, rb = zone.region_lower(i), reg.upto
+            if lo_r <= rb and (hi_r >= ra if i == 0 else hi_r > ra):
+                if reg.min is not None:
+                    los.append(reg.min + d)
+                if reg.max is not None:
+                    his.append(reg.max - d)
+        lo = max(los) if los else None
+        hi = min(his) if his else None
+        if lo is None or hi is None or lo <= hi:
+            rects.append(((a, b), (lo, hi)))
+    return rects
+
+
+def point_depth(zone: Zone, p: dict[str, Fraction], margin: Fraction = F0) -> Fraction:
+    """How far past the zone's boundary (beyond the margin) the point ``p`` is.
+
+    Definitions (``p`` as the zone sees it, i.e. the tool tip for tip zones):
+
+    * allow box / allow stepped table: the L-infinity distance from ``p`` to
+      the closed set of points whose margin box fits the zone (0 inside);
+    * forbid box: the L-infinity distance from ``p`` to the complement of the
+      open interior grown by the margin (how deep inside it is);
+    * forbid stepped table: the same for the deepest single row (a lower
+      bound where rows join);
+    * polygon: the L-infinity distance to the polygon's boundary plus the
+      margin, for a violating point (a lower bound with margins).
+
+    >>> F = Fraction
+    >>> box = BoxZone("b", (("X", F(0), F(10)),))
+    >>> point_depth(box, {"X": F(12)}), point_depth(box, {"X": F(9)}, F(2))
+    (Fraction(2, 1), Fraction(1, 1))
+    """
+    d = margin
+    if isinstance(zone, BoxZone):
+        if zone.forbid:
+            slacks = []
+            for a, lo, hi in zone.limits:
+                if lo is not None:
+                    slacks.append(p[a] - (lo - d))
+                if hi is not None:
+                    slacks.append((hi + d) - p[a])
+            return max(F0, min(slacks)) if slacks else F0
+        gaps = [F0]
+        for a, lo, hi in zone.limits:
+            if lo is not None:
+                gaps.append(lo + d - p[a])
+            if hi is not None:
+                gaps.append(p[a] - (hi - d))
+        return max(gaps)
+    if isinstance(zone, SteppedZone):
+        q = (p[zone.reference_axis], p[zone.limited_axis])
+        if zone.forbid:
+            best = F0
+            for i, reg in enumerate(zone.regions):
+                rect = ((zone.region_lower(i) - d, reg.upto + d),
+                        (None if reg.min is None else reg.min - d, None if reg.max is None else reg.max + d))
+                slacks = [q[0] - rect[0][0], rect[0][1] - q[0]]
+                if rect[1][0] is not None:
+                    slacks.append(q[1] - rect[1][0])
+                if rect[1][1] is not None:
+                    slacks.append(rect[1][1] - q[1])
+                best = max(best, min(slacks))
+            return best
+        rects = _stepped_eroded_rects(zone, d)
+        if not rects:
+            return F0
+        return min(_rect_dist(q, r) for r in rects)
+    # polygon
+    q = (p[zone.plane[0]], p[zone.plane[1]])
+    dist = min(_seg_dist_inf(q, a, b) for a, b in zone.edges())
+    lim_gap = F0
+    for a, lo, hi in zone.limits:
+        if lo is not None:
+            lim_gap = max(lim_gap, lo - p[a])
+        if hi is not None:
+            lim_gap = max(lim_gap, p[a] - hi)
+    return max(dist, lim_gap) + d
+
+
+def _seg_dist_inf(q, a, b) -> Fraction:
+    """Exact L-infinity distance from q to the segment [a, b]."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    cands = {F0, F1}
+    if dx:
+        cands.add((q[0] - a[0]) / dx)
+    if dy:
+        cands.add((q[1] - a[1]) / dy)
+    for s in (1, -1):  # q_x - a_x - t dx = s (q_y - a_y - t dy)
+        den = dx - s * dy
+        if den:
+            cands.add(((q[0] - a[0]) - s * (q[1] - a[1])) / den)
+    best = None
+    for t in cands:
+        if 0 <= t <= 1:
+            v = max(abs(q[0] - a[0] - t * dx), abs(q[1] - a[1] - t * dy))
+            best = v if best is None else min(best, v)
+    return best
+
+
+def line_depth(
+    zone: Zone, p0, p1, axes, margin: Fraction, tool_length: Fraction, tool_axis: str | None,
+    max_candidates: int = 20000,
+) -> tuple[Fraction, Fraction, bool]:
+    """Maximum of :func:`point_depth` over a straight piece: ``(depth, t, exact)``.
+
+    The depth along a line is piecewise linear in ``t`` with breakpoints only
+    where two of the affine functions it is built from (coordinate minus a
+    zone constant, shifted by the margin) are equal or one is zero; the
+    maximum is attained at such a breakpoint or at an end.  ``exact`` is
+    False when the candidate set was capped (then the value is a lower bound).
+    """
+    ln = _Line(p0, p1, axes, zone, tool_length, tool_axis)
+    zaxes = [a for a in zone.axes if a in ln.index]
+    lines = []  # (axis, a, b) with coord(t) = a + t (b - a)
+    for ax in zaxes:
+        a, b = ln.ends(ax)
+        lo, hi = min(a, b) - margin, max(a, b) + margin
+        consts = [c for c in zone_constants(zone, ax)]
+        near = [c for c in consts if lo - (hi - lo) - 1 <= c <= hi + (hi - lo) + 1] or consts[:2]
+        for c in near:
+            for s in (-margin, margin, F0):
+                lines.append((a - (c + s), b - (c + s)))
+                lines.append((-(a - (c + s)), -(b - (c + s))))
+    cands = {F0, F1}
+    exact = True
+    for f0, f1 in lines:
+        if f1 != f0:
+            t = f0 / (f0 - f1)
+            if 0 < t < 1:
+                cands.add(t)
+    if len(lines) ** 2 > max_candidates:
+        exact = False
+        pairs = []
+    else:
+        pairs = itertools.combinations(lines, 2)
+    for (f0, f1), (g0, g1) in pairs:
+        den = (f1 - f0) - (g1 - g0)
+        if den:
+            t = (g0 - f0) / den
+            if 0 < t < 1:
+                cands.add(t)
+    best, best_t = None, F0
+    for t in sorted(cands):
+        pt = {ax: ln.ends(ax)[0] + t * (ln.ends(ax)[1] - ln.ends(ax)[0]) for ax in zaxes}
+        v = point_depth(zone, pt, margin)
+        if best is None or v > best:
+            best, best_t = v, t
+    return best, best_t, exact and not isinstance(zone, PolygonZone)
+
+
+# --------------------------------------------------------------------------- witnesses
+
+
+def _seen(allowed: AllowedSet, zone: Zone, p: dict[str, Fraction], tool_length: Fraction):
+    return allowed.seen_by(zone, p, tool_length)
+
+
+def outside_point(
+    allowed: AllowedSet, zone: Zone, p: dict[str, Fraction], margin: Fraction, tool_length: Fraction
+) -> dict[str, Fraction] | None:
+    """A point of the closed margin box around ``p`` that violates ``zone`` with margin 0.
+
+    Candidates per zone axis are the box ends, the zone constants inside the
+    box and the midpoints between consecutive ones: for boxes and stepped
+    tables that hits every cell on which the zone's predicate is constant.
+    """
+    if margin == 0:
+        return dict(p) if zone in allowed.violated_zones(p, tool_length) else None
+    shift = {}
+    if zone.point is ZonePoint.TIP and tool_length and allowed.tool_axis in p:
+        shift[allowed.tool_axis] = tool_length
+    axes = [a for a in zone.axes if a in p]
+    choices = []
+    for a in axes:
+        seen = p[a] - shift.get(a, F0)
+        lo, hi = seen - margin, seen + margin
+        vals = sorted({lo, hi, seen} | {c for c in zone_constants(zone, a) if lo < c < hi})
+        mids = [(x + y) / 2 for x, y in zip(vals, vals[1:])]
+        choices.append([v + shift.get(a, F0) for v in sorted(set(vals) | set(mids))])
+    for combo in itertools.product(*choices):
+        q = dict(p)
+        q.update(zip(axes, combo))
+        if zone in allowed.violated_zones(q, tool_length):
+            return q
+    return None
+
+
+def box_certainly_violates(
+    allowed: AllowedSet, zone: Zone, lo: dict[str, Fraction], hi: dict[str, Fraction],
+    margin: Fraction, tool_length: Fraction,
+) -> bool:
+    """Does every point of the rational box ``[lo, hi]`` violate ``zone`` (with margin)?
+
+    Sound for box and stepped zones: their predicate (with margin) is
+    constant on the open cells cut by the zone constants shifted by
+    ``+-margin``; if no such value lies in ``[lo_a, hi_a]`` on any zone axis,
+    one test at the box centre decides the whole box.  Polygon zones: True
+    only when the box grown by the margin meets no edge and its centre
+    violates (the predicate is then constant over the box).
+    """
+    shift = tool_length if (zone.point is ZonePoint.TIP and tool_length) else F0
+    centre = {a: (lo[a] + hi[a]) / 2 for a in lo}
+    if isinstance(zone, PolygonZone):
+        from ..zones.model import _segment_meets_open_box  # exact clipping helper
+
+        x, y = zone.plane
+        gx = (lo[x] - margin - 1 / Fraction(10**30), hi[x] + margin + 1 / Fraction(10**30))
+        gy = (lo[y] - margin - 1 / Fraction(10**30), hi[y] + margin + 1 / Fraction(10**30))
+        if any(_segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
+            return False
+        axes_to_check = [a for a, _, _ in zone.limits]
+    else:
+        axes_to_check = list(zone.axes)
+    for a in axes_to_check:
+        if a not in lo:
+            continue
+        s = shift if a == allowed.tool_axis else F0
+        for c in zone_constants(zone, a):
+            for m in (-margin, margin):
+                if lo[a] - s <= c + m <= hi[a] - s:
+                    return False
+    return zone in allowed.violated_zones(centre, tool_length, margin)

@@ -1,0 +1,395 @@
+"""Exact path geometry for the prover: pieces, rapids, arcs, enclosures.
+
+A :class:`~nczones.motion.Segment` becomes one or more *pieces*:
+
+* :class:`LinePiece` — a straight piece ``p(t) = p0 + t (p1 - p0)``, ``t`` in
+  ``[0, 1]``, covering the segment parameter ``tau0 .. tau1`` (lines and
+  linear rapids are one piece with ``tau`` = ``t``; a dogleg rapid is a
+  polyline whose breakpoints are the exact rational times at which the
+  axes reach their targets, every axis starting together at its own rapid
+  rate, ``tau`` being the fraction of the rapid's duration).
+* :class:`ArcGeom` — a G2/G3 motion, described exactly: the plane axes, the
+  start and end points in the plane, the direction, the centre (rational, or
+  ``None`` for an R-format arc whose centre is irrational, then ``r_signed``),
+  whether the sweep is a full circle, and the other axes' start/end values
+  (a helix when they differ).
+
+Invariants: every coordinate is a ``Fraction``; nothing here rounds.
+Irrational quantities are only ever *enclosed* (``sqrt_bounds``,
+``atan_bounds``, ``pi_bounds``) in rational intervals that contain them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..errors import InvalidArgument
+from ..machine import Machine, RapidMode
+from ..motion import PLANE_AXES, Segment, SegmentKind
+
+__all__ = [
+    "LinePiece",
+    "ArcGeom",
+    "line_pieces",
+    "dogleg_breakpoints",
+    "arc_geom",
+    "sqrt_bounds",
+    "is_square",
+    "atan_bounds",
+    "pi_bounds",
+    "rational_point_on_arc",
+    "in_sweep",
+]
+
+F0 = Fraction(0)
+F1 = Fraction(1)
+
+
+@dataclass(frozen=True, slots=True)
+class LinePiece:
+    """A straight piece of a segment's path.
+
+    ``p(t) = p0 + t (p1 - p0)`` for ``t`` in ``[0, 1]``; the piece covers the
+    segment parameter ``tau0 + t (tau1 - tau0)``.
+    """
+
+    p0: tuple[Fraction, ...]
+    p1: tuple[Fraction, ...]
+    tau0: Fraction = F0
+    tau1: Fraction = F1
+
+    def at(self, t: Fraction) -> tuple[Fraction, ...]:
+        return tuple(a + t * (b - a) for a, b in zip(self.p0, self.p1))
+
+    def tau(self, t: Fraction) -> Fraction:
+        return self.tau0 + t * (self.tau1 - self.tau0)
+
+
+def dogleg_breakpoints(start, end, rates) -> tuple[Fraction, ...]:
+    """Segment parameters (fractions of the rapid's duration) where an axis stops.
+
+    Every axis starts together and moves at its own rapid rate; axis ``i``
+    needs ``|end_i - start_i| / rate_i``.  Returns the sorted distinct
+    interior breakpoints in ``(0, 1)``.
+
+    >>> F = Fraction
+    >>> dogleg_breakpoints((F(0), F(0)), (F(100), F(10)), (F(1000), F(1000)))
+    (Fraction(1, 10),)
+    """
+    times = [abs(e - s) / r for s, e, r in zip(start, end, rates)]
+    total = max(times, default=F0)
+    if total == 0:
+        return ()
+    return tuple(sorted({t / total for t in times if 0 < t < total}))
+
+
+def line_pieces(seg: Segment, machine: Machine | None) -> tuple[LinePiece, ...]:
+    """The straight pieces of a LINE or RAPID segment (DWELL: one point).
+
+    >>> from nczones.motion import Segment, SegmentKind
+    >>> F = Fraction
+    >>> s = Segment(SegmentKind.LINE, (F(0), F(0)), (F(1), F(2)), ("X", "Y"))
+    >>> line_pieces(s, None)[0].at(F(1, 2))
+    (Fraction(1, 2), Fraction(1, 1))
+    """
+    if seg.kind in (SegmentKind.LINE, SegmentKind.DWELL):
+        return (LinePiece(seg.start, seg.end),)
+    if seg.kind is not SegmentKind.RAPID:
+        raise InvalidArgument(f"not a straight motion: {seg.kind.name}")
+    if machine is None or machine.rapid_mode is RapidMode.LINEAR:
+        return (LinePiece(seg.start, seg.end),)
+    rates = tuple(machine.axis(a).rapid_mm_min for a in seg.axes)
+    times = [abs(e - s) / r for s, e, r in zip(seg.start, seg.end, rates)]
+    total = max(times, default=F0)
+    if total == 0:
+        return (LinePiece(seg.start, seg.end),)
+    cuts = (F0,) + dogleg_breakpoints(seg.start, seg.end, rates) + (F1,)
+
+    def at(tau: Fraction) -> tuple[Fraction, ...]:
+        out = []
+        for s, e, t_axis in zip(seg.start, seg.end, times):
+            if t_axis == 0:
+                out.append(s)
+            else:
+                frac = min(F1, tau * total / t_axis)
+                out.append(s + frac * (e - s))
+        return tuple(out)
+
+    return tuple(LinePiece(at(a), at(b), a, b) for a, b in zip(cuts, cuts[1:]))
+
+
+# --------------------------------------------------------------------------- enclosures
+
+
+def is_square(q: Fraction) -> Fraction | None:
+    """The exact rational square root of ``q``, or None when it is irrational.
+
+    >>> is_square(Fraction(9, 4)), is_square(Fraction(2))
+    (Fraction(3, 2), None)
+    """
+    if q < 0:
+        return None
+    n, d = q.numerator, q.denominator
+    rn, rd = math.isqrt(n), math.isqrt(d)
+    if rn * rn == n and rd * rd == d:
+        return Fraction(rn, rd)
+    return None
+
+
+def sqrt_bounds(q: Fraction, bits: int = 96) -> tuple[Fraction, Fraction]:
+    """Rational ``lo <= sqrt(q) <= hi`` with ``hi - lo <= 2**-bits`` (exact if square).
+
+    >>> lo, hi = sqrt_bounds(Fraction(2), 20)
+    >>> lo * lo <= 2 <= hi * hi, float(hi - lo) <= 2**-20
+    (True, True)
+    """
+    if q < 0:
+        raise InvalidArgument(f"sqrt of a negative number {q}")
+    exact = is_square(q)
+    if exact is not None:
+        return exact, exact
+    scale = 1 << bits
+    # floor(sqrt(q) * scale) = isqrt(floor(q * scale^2))
+    lo_n = math.isqrt(q.numerator * scale * scale // q.denominator)
+    return Fraction(lo_n, scale), Fraction(lo_n + 1, scale)
+
+
+def _atan_series(x: Fraction, terms: int) -> tuple[Fraction, Fraction]:
+    """Alternating Taylor series of atan for 0 <= x <= 1/2: an enclosure."""
+    s = F0
+    p = x
+    x2 = x * x
+    for k in range(terms):
+        s += (p if k % 2 == 0 else -p) / (2 * k + 1)
+        p *= x2
+    nxt = p / (2 * terms + 1)  # magnitude of the next term bounds the error
+    return (s - nxt, s) if terms % 2 else (s, s + nxt)
+
+
+def pi_bounds(terms: int = 40) -> tuple[Fraction, Fraction]:
+    """Machin: pi = 16 atan(1/5) - 4 atan(1/239), as a rational enclosure.
+
+    >>> lo, hi = pi_bounds()
+    >>> Fraction(3141592653589793238, 10**18) < lo < hi < Fraction(3141592653589793239, 10**18)
+    True
+    """
+    a_lo, a_hi = _atan_series(Fraction(1, 5), terms)
+    b_lo, b_hi = _atan_series(Fraction(1, 239), terms)
+    return 16 * a_lo - 4 * b_hi, 16 * a_hi - 4 * b_lo
+
+
+_PI = pi_bounds()
+
+
+def atan_bounds(x: Fraction, terms: int = 40) -> tuple[Fraction, Fraction]:
+    """Rational enclosure of ``atan(x)`` for ``x >= 0``.
+
+    >>> lo, hi = atan_bounds(Fraction(1))
+    >>> lo <= pi_bounds()[1] / 4 and pi_bounds()[0] / 4 <= hi
+    True
+    """
+    if x < 0:
+        lo, hi = atan_bounds(-x, terms)
+        return -hi, -lo
+    if x > 1:  # atan(x) = pi/2 - atan(1/x)
+        lo, hi = atan_bounds(1 / x, terms)
+        return _PI[0] / 2 - hi, _PI[1] / 2 - lo
+    if x > Fraction(1, 2):  # atan(x) = pi/4 + atan((x-1)/(x+1)), |(x-1)/(x+1)| <= 1/3
+        y = (x - 1) / (x + 1)
+        lo, hi = atan_bounds(y, terms)
+        return _PI[0] / 4 + lo, _PI[1] / 4 + hi
+    return _atan_series(x, terms)
+
+
+# --------------------------------------------------------------------------- arcs
+
+
+def _cross(u, v) -> Fraction:
+    return u[0] * v[1] - u[1] * v[0]
+
+
+def _dot(u, v) -> Fraction:
+    return u[0] * v[0] + u[1] * v[1]
+
+
+def in_sweep(u, w, v, ccw: bool, full: bool) -> bool:
+    """Does direction ``v`` lie in the sweep from ``u`` to ``w`` (closed)?
+
+    Directions are vectors from the centre; ``u`` and ``w`` need not have the
+    same length.
+
+    >>> F = Fraction
+    >>> in_sweep((F(1), F(0)), (F(0), F(1)), (F(1), F(1)), True, False)
+    True
+    >>> in_sweep((F(1), F(0)), (F(0), F(1)), (F(1), F(1)), False, False)
+    False
+    """
+    if full:
+        return True
+    if not ccw:  # clockwise from u to w = counter-clockwise from w to u
+        u, w = w, u
+    return _angle_le(u, v, w)
+
+
+def _half(u, v) -> int:
+    """0 when the ccw angle from u to v is in [0, pi), else 1."""
+    c = _cross(u, v)
+    return 0 if c > 0 or (c == 0 and _dot(u, v) > 0) else 1
+
+
+def _angle_le(u, v, w) -> bool:
+    """ccw angle(u -> v) <= ccw angle(u -> w), angles in [0, 2 pi)."""
+    hv, hw = _half(u, v), _half(u, w)
+    if hv != hw:
+        return hv < hw
+    return _cross(v, w) >= 0
+
+
+@dataclass(frozen=True, slots=True)
+class ArcGeom:
+    """An arc's exact geometry in its plane (first, second axis indices ``ia``, ``ib``).
+
+    ``centre`` is rational or None (R-format with an irrational centre; then
+    ``r_signed`` is the programmed R and the centre is on the side fixed by
+    DESIGN/motion.py).  ``full`` is a whole turn (``start == end`` in the plane
+    or ``turns > 0``).  ``r2_lo``/``r2_hi`` are the squared radii at start and
+    end (ordered); they differ for a slightly inconsistent I/J arc, whose path
+    is then enclosed in the annulus sector (a spiral, as LinuxCNC moves it).
+    """
+
+    ia: int
+    ib: int
+    s: tuple[Fraction, Fraction]
+    e: tuple[Fraction, Fraction]
+    ccw: bool
+    full: bool
+    centre: tuple[Fraction, Fraction] | None
+    r_signed: Fraction | None
+    r2_lo: Fraction
+    r2_hi: Fraction
+    start: tuple[Fraction, ...]
+    end: tuple[Fraction, ...]
+
+    @property
+    def helix(self) -> bool:
+        return any(
+            a != b for k, (a, b) in enumerate(zip(self.start, self.end)) if k not in (self.ia, self.ib)
+        )
+
+    @property
+    def exact(self) -> bool:
+        """Is the plane path a circle arc with rational centre (polynomial, exact)?"""
+        return self.centre is not None and self.r2_lo == self.r2_hi
+
+    def centre_bounds(self, bits: int = 96) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+        """Per plane axis ``(lo, hi)`` enclosing the centre."""
+        if self.centre is not None:
+            return ((self.centre[0], self.centre[0]), (self.centre[1], self.centre[1]))
+        mx, my, nx, ny, q, sign = self.r_format_parts()
+        k_lo, k_hi = sqrt_bounds(q, bits)
+        ks = (sign * k_lo, sign * k_hi)
+        xs = sorted((mx + k * nx for k in ks))
+        ys = sorted((my + k * ny for k in ks))
+        return ((xs[0], xs[1]), (ys[0], ys[1]))
+
+    def r_format_parts(self):
+        """R-format centre = M + k n with k = sign * sqrt(q): returns (Mx, My, nx, ny, q, sign)."""
+        sx, sy = self.s
+        ex, ey = self.e
+        cx, cy = ex - sx, ey - sy
+        l2 = cx * cx + cy * cy
+        r = self.r_signed
+        q = r * r / l2 - Fraction(1, 4)
+        right = (not self.ccw) != (r < 0)
+        sign = -1 if right else 1
+        return (sx + ex) / 2, (sy + ey) / 2, -cy, cx, q, sign
+
+    def plane_bbox(self, bits: int = 64) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+        """A rational box containing the arc's plane path (exact extremes when rational)."""
+        (cxl, cxh), (cyl, cyh) = self.centre_bounds(bits)
+        if self.centre is None:
+            r_hi = sqrt_bounds(self.r_signed * self.r_signed, bits)[1]
+        else:
+            r_hi = sqrt_bounds(self.r2_hi, bits)[1]
+        xs = [self.s[0], self.e[0]]
+        ys = [self.s[1], self.e[1]]
+        if self.centre is None:
+            # direction tests need the centre: use the whole circle's box (sound)
+            xs += [cxl - r_hi, cxh + r_hi]
+            ys += [cyl - r_hi, cyh + r_hi]
+        else:
+            c = self.centre
+            u = (self.s[0] - c[0], self.s[1] - c[1])
+            w = (self.e[0] - c[0], self.e[1] - c[1])
+            for v, axis, sgn in (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1)):
+                if in_sweep(u, w, v, self.ccw, self.full):
+                    (xs if axis == 0 else ys).append(c[axis] + sgn * r_hi)
+        return ((min(xs), max(xs)), (min(ys), max(ys)))
+
+
+def arc_geom(seg: Segment) -> ArcGeom:
+    """The exact geometry of an ARC segment.
+
+    >>> from nczones.motion import Plane
+    >>> F = Fraction
+    >>> s = Segment(SegmentKind.ARC, (F(1), F(0)), (F(0), F(1)), ("X", "Y"), plane=Plane.XY,
+    ...             centre=(F(0), F(0)))
+    >>> g = arc_geom(s); g.exact, g.full, g.plane_bbox()
+    (True, False, ((Fraction(0, 1), Fraction(1, 1)), (Fraction(0, 1), Fraction(1, 1))))
+    """
+    ia, ib, _ = seg.plane_indices()
+    s = (seg.start[ia], seg.start[ib])
+    e = (seg.end[ia], seg.end[ib])
+    full = s == e or seg.turns > 0
+    centre = seg.centre
+    r_signed = None
+    if centre is None:
+        if seg.radius is None:
+            raise InvalidArgument("arc without centre or radius")
+        r_signed = seg.radius
+        if s == e:
+            raise InvalidArgument("R-format arc with equal start and end")
+        g = ArcGeom(ia, ib, s, e, not seg.clockwise, False, None, r_signed, r_signed**2, r_signed**2,
+                    seg.start, seg.end)
+        mx, my, nx, ny, q, sign = g.r_format_parts()
+        if q < 0:
+            raise InvalidArgument(f"R-format arc: radius {abs(r_signed)} is shorter than half the chord")
+        k = is_square(q)
+        if k is not None:
+            centre = (mx + sign * k * nx, my + sign * k * ny)
+            r_signed = None
+    u2 = (s[0] - centre[0]) ** 2 + (s[1] - centre[1]) ** 2 if centre is not None else None
+    w2 = (e[0] - centre[0]) ** 2 + (e[1] - centre[1]) ** 2 if centre is not None else None
+    if centre is None:
+        r2 = seg.radius**2
+        u2 = w2 = r2
+    if u2 == 0:
+        raise InvalidArgument("arc with zero radius")
+    return ArcGeom(ia, ib, s, e, not seg.clockwise, full, centre, r_signed, min(u2, w2), max(u2, w2),
+                   seg.start, seg.end)
+
+
+def rational_point_on_arc(g: ArcGeom, m: Fraction, base=None) -> tuple[Fraction, Fraction]:
+    """The exact rational point of a circle reached by rotating ``base`` (default the
+    start vector) by ``2 atan(m)`` in the arc's direction (rational parametrisation).
+
+    >>> F = Fraction
+    >>> from nczones.motion import Plane
+    >>> s = Segment(SegmentKind.ARC, (F(1), F(0)), (F(0), F(1)), ("X", "Y"), plane=Plane.XY,
+    ...             centre=(F(0), F(0)))
+    >>> rational_point_on_arc(arc_geom(s), F(1))
+    (Fraction(0, 1), Fraction(1, 1))
+    """
+    c = g.centre
+    u = base if base is not None else (g.s[0] - c[0], g.s[1] - c[1])
+    perp = (-u[1], u[0]) if g.ccw else (u[1], -u[0])
+    den = 1 + m * m
+    a = (1 - m * m) / den
+    b = 2 * m / den
+    return (c[0] + a * u[0] + b * perp[0], c[1] + a * u[1] + b * perp[1])
+
+
+def arc_axis_names(seg: Segment) -> tuple[str, str, str]:
+    return PLANE_AXES[seg.plane]

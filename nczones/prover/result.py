@@ -1,0 +1,139 @@
+"""Verdicts, violations and results of the prover (the public value types)."""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+from ..errors import SourceSpan
+
+__all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange"]
+
+
+class Verdict(enum.IntEnum):
+    """Ordered so that "worst wins" is ``min``: UNSAFE < UNKNOWN < SAFE.
+
+    >>> min(Verdict.SAFE, Verdict.UNKNOWN), Verdict.UNSAFE.label
+    (<Verdict.UNKNOWN: 1>, 'unsafe')
+    """
+
+    UNSAFE = 0
+    UNKNOWN = 1
+    SAFE = 2
+
+    @property
+    def label(self) -> str:
+        return self.name.lower()
+
+    @property
+    def exit_code(self) -> int:
+        """CLI exit status (DESIGN §8): 0 safe, 1 unsafe, 3 unknown."""
+        return {Verdict.SAFE: 0, Verdict.UNSAFE: 1, Verdict.UNKNOWN: 3}[self]
+
+
+@dataclass(frozen=True, slots=True)
+class ParamRange:
+    """A parameter range (DESIGN §5).
+
+    ``name`` is ``G54.X`` (work offset component, deviation from the machine
+    file), ``H1`` (tool length register, absolute range), ``start.Z`` (start
+    position component, deviation) or ``home.X`` (homing error: deviation
+    added to every machine coordinate of the axis).  ``lo``/``hi`` are
+    deviations from the nominal value (``H`` ranges are converted); ``written``
+    keeps the range as the user gave it.
+    """
+
+    name: str
+    lo: Fraction
+    hi: Fraction
+    written: tuple[Fraction, Fraction]
+    absolute: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Reason:
+    """Why (part of) a program could not be proved."""
+
+    message: str
+    span: SourceSpan | None = None
+    block: int | None = None
+    code: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class Violation:
+    """One violating block with an exactly re-checked counterexample.
+
+    ``point`` is strictly outside the allowed set (with margin 0); with a
+    margin it lies in the margin box around ``path_point``, the exact point of
+    the motion whose margin box does not fit (equal without a margin).
+    ``parameter`` is the segment parameter of ``path_point`` (``t`` in
+    ``[0, 1]``: the fraction of a line's length, of a rapid's duration, or of
+    an arc's swept angle — approximate for arcs, ``parameter_exact`` says).
+    ``first_exit`` is the infimum of the violating parameters of the block's
+    first violating segment and the path point there (may itself be on the
+    boundary).  ``depth`` is how far past the boundary the block goes (see
+    :func:`nczones.prover.exact.point_depth`); ``depth_exact`` is False when
+    it is a lower bound.  ``params`` are the parameter values (as written by
+    the user) of the counterexample.
+    """
+
+    block: int
+    span: SourceSpan | None
+    zone: str
+    point: tuple[tuple[str, Fraction], ...]
+    path_point: tuple[tuple[str, Fraction], ...]
+    parameter: Fraction
+    parameter_exact: bool
+    first_exit: tuple[tuple[str, Fraction], ...]
+    first_exit_parameter: Fraction
+    first_exit_exact: bool
+    depth: Fraction
+    depth_exact: bool
+    engine: str
+    segment_kind: str
+    derived: str = ""
+    kind: str = "motion"
+    params: tuple[tuple[str, Fraction], ...] = ()
+    zones: tuple[str, ...] = ()
+    note: str = ""
+
+    @property
+    def line(self) -> int | None:
+        return None if self.span is None else self.span.line
+
+    @property
+    def source(self) -> str:
+        return "" if self.span is None else self.span.text.rstrip("\r\n")
+
+
+@dataclass(frozen=True, slots=True)
+class Result:
+    """The outcome of :func:`nczones.prover.verify`.
+
+    ``engines`` maps each flagged block (one tier 1 could not prove) to the
+    engine that decided it (``"exact"``: rational decision procedure,
+    ``"z3"``, ``"unknown"``).  ``stats`` holds counters (segments, pieces,
+    screened, z3 queries); ``timings`` seconds per phase.
+    """
+
+    verdict: Verdict
+    violations: tuple[Violation, ...] = ()
+    reasons: tuple[Reason, ...] = ()
+    engines: tuple[tuple[int, str], ...] = ()
+    solver: str = "z3"
+    solver_version: str = ""
+    timings: tuple[tuple[str, float], ...] = ()
+    notes: tuple[str, ...] = ()
+    stats: tuple[tuple[str, int], ...] = ()
+    margin: Fraction = Fraction(0)
+    params: tuple[ParamRange, ...] = ()
+    engine: str = "auto"
+    truncated: bool = False
+    file: str = ""
+    extra: dict = field(default_factory=dict, compare=False)
+
+    @property
+    def safe(self) -> bool:
+        return self.verdict is Verdict.SAFE
