@@ -708,7 +708,7 @@ def _zones(rd: _Reader, raw: Any, axes: tuple[str, ...], tool_axis: str | None) 
             rd.report("ZN112", f"{label}: the name is used by another zone; names must be unique", rd.loc.key("name", header))
         names.add(name)
         kind = zt.get("kind")
-        if kind not in _ZONE_KEYS:
+        if not isinstance(kind, str) or kind not in _ZONE_KEYS:
             rd.report("ZN107", f"{label}: kind {_written(kind)} is not allowed; use \"stepped\", \"box\" or \"polygon\"", rd.loc.key("kind", header))
             continue
         _check_keys(rd, zt, _ZONE_KEYS[kind], label, header)
