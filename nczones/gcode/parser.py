@@ -364,8 +364,10 @@ class _Parser:
                     self.fail("GC201", "an N word must come first in the block", i, i + 1)
                 if c == "o":
                     self.fail("GC202", "an O-word must come first in the block", i, i + 1)
-                if i + 1 >= n or s[i + 1] in "(=]":
-                    self.fail("GC104", f"letter {c.upper()!r} has no value", i, i + 1)
+                if i + 1 >= n or s[i + 1] in "(=]" or (
+                        "a" <= s[i + 1] <= "z" and _NAME.match(s, i + 1).group() not in FUNCTIONS):
+                    self.fail("GC104", f"letter {c.upper()!r} has no value; a word is a letter followed by a "
+                              "number, '#' parameter or '[expression]'", i, i + 1)
                 value, j = self.real_value(i + 1)
                 words.append((c.upper(), value, self.col(i), self.cols[j - 1] + 2,
                               self.line[self.cols[i]:self.cols[j - 1] + 1]))

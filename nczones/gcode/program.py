@@ -236,6 +236,7 @@ def _show(label) -> str:
 
 
 _BLANK = re.compile(r"[ \t]+")
+_M_CONTROL = frozenset((2, 30, 97, 98, 99))  # M codes the language layer acts on
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 
@@ -374,9 +375,15 @@ class _Runner:
                 messages = self.messages(comments) if comments else ()
                 stop = False
                 for w in words:
-                    if w.letter == "M" or w.letter == "G":
+                    letter = w.letter
+                    if letter == "M":
                         v = w.value
-                        if v.denominator == 1 and v.numerator in (2, 30, 97, 98, 99, 65, 66, 67):
+                        if v.denominator == 1 and v.numerator in _M_CONTROL:
+                            stop = True
+                            break
+                    elif letter == "G":
+                        v = w.value
+                        if 65 <= v.numerator // v.denominator <= 67:
                             stop = True
                             break
                 if stop:
