@@ -140,7 +140,8 @@ class _Locator:
         return SourceSpan(self.path, index + 1, column + 1, column + 1 + width, self.lines[index])
 
     def _is_header(self, line: str) -> bool:
-        return bool(self._HEADER_RE.match(line)) and '"' not in line.split("]")[0].replace('"', "", 2)
+        """A table header, not an array element such as ``["0", "0"]`` (two quoted items)."""
+        return bool(self._HEADER_RE.match(line)) and line.split("]")[0].count('"') <= 2
 
     def section(self, header: str, occurrence: int = 0) -> int | None:
         """0-based line index of the ``occurrence``-th ``[header]``/``[[header]]``."""

@@ -24,6 +24,7 @@ NOT_EXPRESSIBLE = {
     "from_not_below_first_upto": "order between from and the first upto",
     "region_min_greater_than_max": "order between two values",
     "box_min_greater_than_max": "order between two values",
+    "polygon_limits_after_multiline_vertices": "order between two values",
     "self_intersecting_polygon": "geometry",
     "degenerate_polygon": "geometry",
     "duplicate_zone_names": "uniqueness of one field across array elements",
