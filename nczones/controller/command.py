@@ -1,0 +1,147 @@
+"""``nczones simulate`` (DESIGN §8): exit 0 success, 1 an alarm, 2 bad input.
+
+The program is interpreted by :mod:`nczones.gcode` and run through the
+reference controller.  ``--break-at`` (tool-break recovery) belongs to a later
+stage: :data:`EXTRA_OPTIONS` and :data:`RUNNERS` are the hooks it will use
+(add the option, then take over the run when the option is given).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Callable
+from fractions import Fraction
+from typing import Any
+
+from .. import cli
+from ..errors import Diagnostic, InputError
+from ..exact import format_decimal, parse_decimal
+
+__all__ = ["register", "render_text", "EXTRA_OPTIONS", "RUNNERS"]
+
+#: Functions ``f(parser)`` that add options to ``simulate`` (e.g. ``--break-at``).
+EXTRA_OPTIONS: list[Callable[[argparse.ArgumentParser], None]] = []
+#: Functions ``f(args, machine, settings) -> SimulationResult | None``; the first
+#: that returns a result replaces the plain run (e.g. a tool-break recovery run).
+RUNNERS: list[Callable[[argparse.Namespace, Any, Any], Any]] = []
+
+
+def _decimal_option(name: str, text: str) -> Fraction:
+    try:
+        q = parse_decimal(text)
+    except Exception:
+        q = None
+    if q is None or q < 0:
+        raise InputError(Diagnostic("SM101", f"{name} {text!r}: expected a non-negative decimal number of ms",
+                                    file="<command line>"))
+    return q
+
+
+def render_text(result: Any, program: str) -> str:
+    """The human-readable report of one simulation."""
+    axes = result.axes
+
+    def pt(coords) -> str:
+        return " ".join(f"{a}{format_decimal(c)}" for a, c in zip(axes, coords))
+
+    lines = [f"{program}: simulated in {result.mode.value} mode, monitor {result.monitor.value}"]
+    if result.alarms:
+        for a in result.alarms:
+            where = f"line {a.line}, block {a.block}" if a.line is not None else "before the first block"
+            lines.append(f"  ALARM stroke limit, zone \"{a.zone}\" at {where}: {pt(a.position)}")
+            if a.source:
+                lines.append(f"    {a.source}")
+            if a.blocked:
+                lines.append("    direction cleared: " + ", ".join(f"{ax}{'+' if s > 0 else '-'}" for ax, s in a.blocked)
+                             + " (a jog in the opposite direction is still accepted)")
+            if a.first_outside is not None:
+                lines.append(f"    first pulse outside: {pt(a.first_outside)}; caught {a.overshoot_pulses} "
+                             f"interpolation steps later (periodic sampling)")
+    else:
+        lines.append("  no alarm" + ("" if result.completed else " (program did not complete)"))
+    lines.append(f"  machine position: {pt(result.machine_position)}")
+    if result.temporary_position is not None:
+        lines.append(f"  temporary machine coordinates (program check): {pt(result.temporary_position)}")
+    lines.append("  pulses: " + ", ".join(f"{a} {p}" for a, p in zip(axes, result.pulses)))
+    lines.append(f"  simulated time: {result.simulated_time_s:.6f} s ({result.motions} motions, {result.steps} steps)")
+    if result.monitor.value == "periodic":
+        lines.append(f"  periodic sampling may overshoot by up to {result.overshoot_bound_mm:.6f} mm (feed x period)")
+    if result.max_regions:
+        lines.append(f"  limit-value table lookups: at most {result.max_lookup_comparisons} comparisons "
+                     f"(table of {result.max_regions} regions)")
+    if result.servo is not None:
+        lines.append(f"  servo (post-interpolation {result.servo.filter} filter): max deviation from the "
+                     f"commanded path {result.servo.max_deviation_mm:.6f} mm at {result.servo.max_deviation_time_s:.4f} s")
+    if result.blind_spot:
+        lines.append(f"  BLIND SPOT: {result.blind_spot}")
+    for n in result.notes:
+        lines.append(f"  note: {n}")
+    return "\n".join(lines) + "\n"
+
+
+def _run(args: argparse.Namespace) -> int:
+    from ..gcode import interpret
+    from ..machine import load_machine
+    from . import Settings, simulate
+
+    machine = load_machine(args.machine)
+    settings = Settings(
+        pre_time_constant_ms=_decimal_option("--accdec-before-ms", args.accdec_before_ms),
+        post_time_constant_ms=_decimal_option("--accdec-after-ms", args.accdec_after_ms),
+        post_filter=args.filter,
+        log_motions=args.format == "json" and args.events,
+    )
+    result = None
+    for runner in RUNNERS:
+        result = runner(args, machine, settings)
+        if result is not None:
+            break
+    notes: list[str] = []
+    if result is None:
+        run = interpret(args.program, machine)
+        result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings)
+        for u in run.unsupported:
+            notes.append(f"{u.span}: {u.code} is not supported ({u.message}); the simulation stopped there")
+        if run.assumed_modal:
+            notes.extend(run.assumed_modal_text())
+    if args.format == "json":
+        data = result.to_json()
+        data["program"] = args.program
+        data["notes"] = list(data["notes"]) + notes
+        if not args.events:
+            data.pop("events")
+        sys.stdout.write(json.dumps(data, indent=2) + "\n")
+    else:
+        text = render_text(result, args.program)
+        sys.stdout.write(text + "".join(f"  note: {n}\n" for n in notes))
+    if result.alarms:
+        return cli.EXIT_FAIL
+    if any("not supported" in n for n in notes):
+        return cli.EXIT_INPUT
+    return cli.EXIT_OK
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("simulate", help="run a program through the reference controller (pulses, limit monitor)")
+    p.add_argument("program", metavar="PROGRAM")
+    p.add_argument("--machine", required=True, metavar="M.toml")
+    p.add_argument("--mode", choices=("normal", "lock", "check"), default="normal",
+                   help="normal; lock (machine lock: axes frozen, the stroke check sees nothing); "
+                        "check (program check: temporary coordinates, stroke check, maximum feed)")
+    p.add_argument("--monitor", choices=("pulse", "periodic"), default="pulse",
+                   help="check limits after every pulse, or every monitor_period_ms of the machine")
+    p.add_argument("--accdec-before-ms", default="0", metavar="MS",
+                   help="linear acc/dec of the feed before interpolation (time constant)")
+    p.add_argument("--accdec-after-ms", default="0", metavar="MS",
+                   help="filter time constant on every axis after interpolation (servo log)")
+    p.add_argument("--filter", choices=("exponential", "linear"), default="exponential")
+    p.add_argument("--events", action="store_true", help="include the event log in the JSON output")
+    p.add_argument("--format", choices=("text", "json"), default="text")
+    for extra in EXTRA_OPTIONS:
+        extra(p)
+    p.set_defaults(handler=_run)
+
+
+cli.REGISTRARS.append(register)
