@@ -237,7 +237,8 @@ class _Parser:
             return None, i + 1
         m = _WORD_OP.match(s, i)
         if m is None:
-            self.fail("GC105", f"unknown operator {s[i:i + 4]!r} in expression; expected one of "
+            shown = _NAME.match(s, i).group() if "a" <= c <= "z" else c
+            self.fail("GC105", f"unknown operator {shown.upper()!r} in expression; expected one of "
                       "** * / MOD + - EQ NE GT GE LT LE AND OR XOR or ']'", i, i + 1)
         return m.group(), m.end()
 
