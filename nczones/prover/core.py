@@ -544,7 +544,7 @@ class Prover:
         return _Outcome(v, engine="z3")
 
     def _arc_witness(self, seg, g: ArcGeom, values, params) -> Violation | None:
-        if not g.exact:
+        if not g.exact or g.helix:
             return self._arc_witness_enclosed(seg, g, values, params)
         c = g.centre
         u = (g.s[0] - c[0], g.s[1] - c[1])
@@ -565,7 +565,7 @@ class Prover:
                 return self._arc_violation(seg, g, pmap, bad, params, True)
         return None
 
-    def _arc_witness_enclosed(self, seg, g: ArcGeom, values, params) -> Violation | None:
+    def _arc_witness_enclosed(self, seg, g: ArcGeom, values, params, retry: bool = True) -> Violation | None:
         """Certify a witness on an irrational path with a rational box around the exact point."""
         if g.centre is None:
             (cxl, cxh), (cyl, cyh) = g.centre_bounds(120)
@@ -623,7 +623,7 @@ class Prover:
                     return None
         for z in self.zones:
             if ex.box_certainly_violates(self.allowed, z, lo, hi, self.margin, seg.tool_length):
-                mid = {a: (lo[a] + hi[a]) / 2 for a in self.axes}
+                mid = {a: _simple_in(lo[a], hi[a]) for a in self.axes}
                 bad = self.allowed.violated_zones(mid, seg.tool_length, self.margin)
                 if z not in bad:
                     raise InternalError("certified box centre does not violate")
@@ -631,6 +631,21 @@ class Prover:
                 return self._arc_violation(seg, g, mid, bad, params, False,
                                            note=f"irrational path point; reported point within "
                                                 f"{float(width):.1e} mm of it, the whole enclosure violates")
+        if retry:  # the over-approximation's point was spurious: try exact directions along the arc
+            c = c_mid
+            base0 = (g.s[0] - c[0], g.s[1] - c[1])
+            for base in _bases(base0, g.ccw):
+                for i in range(33):
+                    m = Fraction(i, 32)
+                    cc = g.centre if g.centre is not None else c
+                    u0 = base
+                    perp = (-u0[1], u0[0]) if g.ccw else (u0[1], -u0[0])
+                    den = 1 + m * m
+                    p2 = (cc[0] + ((1 - m * m) * u0[0] + 2 * m * perp[0]) / den,
+                          cc[1] + ((1 - m * m) * u0[1] + 2 * m * perp[1]) / den)
+                    v = self._arc_witness_enclosed(seg, g, {"x": p2[0], "y": p2[1]}, params, False)
+                    if v is not None:
+                        return v
         return None
 
     def _arc_violation(self, seg, g, pmap, bad, params, exact_point: bool, note: str = "") -> Violation:
@@ -741,6 +756,16 @@ def eval_lit(text: str) -> Fraction:
 
     v = _num(_parse_sexpr(text)[0])
     return v[0]
+
+
+def _simple_in(lo: Fraction, hi: Fraction) -> Fraction:
+    """A short decimal in [lo, hi] (the midpoint if none has at most 60 places)."""
+    mid = (lo + hi) / 2
+    for k in range(61):
+        x = Fraction(round(mid * 10**k), 10**k)
+        if lo <= x <= hi:
+            return x
+    return mid
 
 
 def _clamp(x: Fraction, lo: Fraction, hi: Fraction) -> Fraction:

@@ -1,0 +1,127 @@
+"""Text and JSON renderings of a verification :class:`~nczones.prover.Result` (DESIGN §8).
+
+Text is compiler-style: ``file:line:col: violation[zone]: ...`` followed by
+the source line, one entry per violating block in execution order, then the
+reasons for ``unknown`` and a summary line.  JSON follows
+``specs/report.schema.json``; numbers are exact decimal strings (a repeating
+expansion is rounded to 12 places and marked with ``…``).
+"""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+from ..exact import format_decimal
+from .result import Result, Verdict
+
+__all__ = ["render_text", "render_json", "to_json_dict"]
+
+
+def _d(x: Fraction) -> str:
+    return format_decimal(x)
+
+
+def _pt(pairs) -> str:
+    return " ".join(f"{a}{_d(v)}" for a, v in pairs)
+
+
+def render_text(result: Result, program: str = "") -> str:
+    """A compiler-style report."""
+    out = []
+    name = result.file or program or "<program>"
+    for v in result.violations:
+        loc = f"{v.span.file}:{v.span.line}:{v.span.column}" if v.span else name
+        what = v.segment_kind + (f" ({v.derived})" if v.derived else "")
+        depth = ("" if v.depth_exact else ">=") + _d(v.depth)
+        par = ("" if v.parameter_exact else "~") + format_decimal(v.parameter, 6)
+        out.append(
+            f"{loc}: violation[{v.zone}]: {what} leaves the allowed set at {_pt(v.point)} "
+            f"(segment parameter {par}), depth {depth} mm"
+        )
+        if v.source:
+            out.append(f"    {v.source}")
+        fe = ("" if v.first_exit_exact else "~") + format_decimal(v.first_exit_parameter, 6)
+        out.append(f"    first exit at {_pt(v.first_exit)} (parameter {fe}); engine {v.engine}")
+        if result.margin:
+            out.append(f"    path point {_pt(v.path_point)} has less than the margin {_d(result.margin)}")
+        if v.params:
+            out.append("    with " + ", ".join(f"{n}={_d(x)}" for n, x in v.params))
+        if v.note:
+            out.append(f"    note: {v.note}")
+    for r in result.reasons:
+        loc = f"{r.span.file}:{r.span.line}:{r.span.column}" if r.span else name
+        out.append(f"{loc}: unknown: {r.message}")
+        if r.span is not None and r.span.text:
+            out.append(f"    {r.span.text.rstrip()}")
+    for n in result.notes:
+        out.append(f"{name}: note: {n}")
+    stats = dict(result.stats)
+    summary = (
+        f"{name}: {result.verdict.label}: {len(result.violations)} violating block(s)"
+        + (" (list truncated)" if result.truncated else "")
+        + f"; {stats.get('segments', 0)} segments, {stats.get('screened', 0)} proved by screening, "
+        f"{stats.get('z3_queries', 0)} solver queries; {result.solver} {result.solver_version}"
+    )
+    if result.margin:
+        summary += f"; margin {_d(result.margin)}"
+    if result.params:
+        summary += "; parameters " + ", ".join(f"{p.name}={_d(p.written[0])}..{_d(p.written[1])}" for p in result.params)
+    out.append(summary)
+    return "\n".join(out) + "\n"
+
+
+def to_json_dict(result: Result) -> dict:
+    """The JSON report as a dict (see ``specs/report.schema.json``)."""
+    def span(s):
+        return None if s is None else {"file": s.file, "line": s.line, "column": s.column}
+
+    violations = []
+    for v in result.violations:
+        violations.append({
+            "kind": v.kind,
+            "block": v.block,
+            "line": v.line,
+            "column": v.span.column if v.span else None,
+            "source": v.source,
+            "zone": v.zone,
+            "zones": list(v.zones),
+            "point": {a: _d(x) for a, x in v.point},
+            "path_point": {a: _d(x) for a, x in v.path_point},
+            "parameter": format_decimal(v.parameter, 12),
+            "parameter_exact": v.parameter_exact,
+            "first_exit": {a: _d(x) for a, x in v.first_exit},
+            "first_exit_parameter": format_decimal(v.first_exit_parameter, 12),
+            "first_exit_exact": v.first_exit_exact,
+            "depth": _d(v.depth),
+            "depth_exact": v.depth_exact,
+            "segment_kind": v.segment_kind,
+            "derived": v.derived,
+            "engine": v.engine,
+            "params": {n: _d(x) for n, x in v.params},
+            "note": v.note,
+        })
+    doc = {
+        "verdict": result.verdict.label,
+        "program": result.file,
+        "violations": violations,
+        "truncated": result.truncated,
+        "reason": "; ".join(
+            (f"{r.span.file}:{r.span.line}: " if r.span else "") + r.message for r in result.reasons
+        ) if result.verdict is Verdict.UNKNOWN else None,
+        "reasons": [{"message": r.message, "code": r.code, "location": span(r.span),
+                     "source": r.span.text.rstrip() if r.span else ""} for r in result.reasons],
+        "solver": {"name": result.solver, "version": result.solver_version},
+        "engine": result.engine,
+        "engines": [{"block": b, "engine": e} for b, e in result.engines],
+        "margin": _d(result.margin),
+        "params": [{"name": p.name, "lo": _d(p.written[0]), "hi": _d(p.written[1])} for p in result.params],
+        "notes": list(result.notes),
+        "stats": dict(result.stats),
+        "timings": {k: round(v, 6) for k, v in result.timings},
+    }
+    return doc
+
+
+def render_json(result: Result) -> str:
+    return json.dumps(to_json_dict(result), indent=2, ensure_ascii=False) + "\n"
