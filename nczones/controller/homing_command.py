@@ -81,8 +81,8 @@ def _run_json(run: HomingRun) -> dict[str, Any]:
     }
 
 
-def _run_text(run: HomingRun, cfg: HomingConfig) -> str:
-    phase_note = "configured" if run.phase == cfg.detector_phase else "given"
+def _run_text(run: HomingRun, cfg: HomingConfig, phase_given: bool) -> str:
+    phase_note = "given: detector re-mounted" if phase_given else "configured"
     lines = [
         f"homing {run.axis}: detector phase {format_decimal(run.phase)} mm ({phase_note}), trip offset "
         f"{format_decimal(run.trip_offset)} mm, servo lag {format_decimal(cfg.lag)} mm"
@@ -108,6 +108,9 @@ def _simulate(args: argparse.Namespace, machine: Machine, configs: dict[str, Hom
     phase = None if args.phase is None else parse_length(args.phase, "--phase")
     runs = []
     for name, cfg in configs.items():
+        if phase is not None:
+            # a re-mounted detector: the stored grid shift is void, installation is measured again
+            cfg = replace(cfg, detector_phase=phase, grid_shift=None)
         if abs(trip) > cfg.switch_jitter:
             raise InvalidArgument(f"--trip-offset {args.trip_offset}: must lie within axis {name}'s switch jitter "
                                   f"window [-{format_decimal(cfg.switch_jitter)}, {format_decimal(cfg.switch_jitter)}]")
@@ -118,12 +121,14 @@ def _simulate(args: argparse.Namespace, machine: Machine, configs: dict[str, Hom
         print(json.dumps({"command": "home", "machine": machine.source, "prove": False,
                           "axes": [_run_json(r) for _, r in runs], "ok": ok}, indent=2))
     else:
-        print("\n".join(_run_text(r, cfg) for cfg, r in runs))
+        print("\n".join(_run_text(r, cfg, phase is not None) for cfg, r in runs))
     return cli.EXIT_OK if ok else cli.EXIT_FAIL
 
 
 def _reproduce_command(args: argparse.Namespace, axis: str, cex) -> str:
     extra = list(cex.cli_args(axis))
+    if args.phase is not None and "--phase" not in extra:
+        extra[2:2] = ["--phase", args.phase]  # proved for the phase given on the command line
     return " ".join(["nczones", "home", "--machine", args.machine, *extra])
 
 

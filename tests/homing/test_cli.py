@@ -131,3 +131,19 @@ def test_bad_homing_section_golden(path, capsys):
     if REGEN:
         expected.write_text(err, encoding="utf-8")
     assert err == expected.read_text(encoding="utf-8")
+
+
+def test_prove_with_phase_override_round_trip(capsys):
+    """``--prove --phase P`` (a re-mounted detector): every counterexample command reproduces its error."""
+    code, out, _ = run(capsys, "home", "--machine", MILL, "--axis", "Z", "--phase", "3", "--prove", "--format", "json")
+    doc = json.loads(out)
+    assert code == 1 and not doc["ok"]  # grid point 1 mm past the edge, lag 1 mm: inside the window
+    cexs = [p["counterexample"] for p in doc["axes"][0]["proofs"] if p["counterexample"]]
+    assert {p["name"] for p in doc["axes"][0]["proofs"] if p["status"] == "refuted"} == {"one-pitch-error",
+                                                                                       "configured-phase"}
+    for cex in cexs:
+        argv = shlex.split(cex["reproduce"])
+        assert "--phase" in argv
+        code, out, _ = run(capsys, *argv[1:], "--format", "json")
+        assert code == 1
+        assert json.loads(out)["axes"][0]["origin_error_pulses"] == cex["origin_error_pulses"] != 0
