@@ -640,6 +640,10 @@ class Interpreter:
                 self.motion = None
             else:
                 self.motion = k
+        if ("I" in words or "J" in words or "K" in words) and self.motion not in (20, 30) and not self.unsupported \
+                and not (g0 and g0[0] == 100):
+            w = words.get("I") or words.get("J") or words.get("K")
+            raise self._error("GC204", f"{w.text or w.letter} word with no G2 or G3 to use it", w)
         moving = bool(axis_words or (g1 and g1[0] in (20, 30)))
         if moving and not nonmodal_uses_axes and self.motion is not None:
             if self.motion in (20, 30) and self.comp_just_off:
