@@ -82,7 +82,7 @@ except Exception:  # pragma: no cover
     _fraction = _fraction_safe
 
 
-@lru_cache(maxsize=1 << 16)
+@lru_cache(maxsize=8192)  # bounded: memory must not grow with the program
 def decimal_value(text: str) -> Fraction:
     """The exact value of a LinuxCNC number literal (blanks allowed between digits).
 
