@@ -137,7 +137,7 @@ def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax=None, 
     ax.set_ylabel(f"{plane[1]} ({unit[plane[1]]})")
     ax.set_title(machine.name)
     if legend:
-        ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
+        ax.legend(loc="best", fontsize=8, framealpha=0.9)
     return ax
 
 
@@ -183,10 +183,20 @@ def _arc_float_points(seg: Segment, steps_per_turn: int = 360) -> list[tuple[flo
     return out
 
 
-def path_points_float(seg: Segment) -> list[tuple[float, ...]]:
-    """Float points along one segment, in machine axis order (for plots)."""
+def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tuple[float, ...]]:
+    """Float points along one segment, in machine axis order (for plots).
+
+    With ``machine``, rapids are drawn the way that machine moves them (a
+    dogleg polyline when its ``rapid_mode`` is ``dogleg``).
+    """
     if seg.kind is SegmentKind.ARC:
         return _arc_float_points(seg)
+    if seg.kind is SegmentKind.RAPID and machine is not None:
+        from ..prover.geometry import line_pieces
+
+        pieces = line_pieces(seg, machine)
+        pts = [pieces[0].p0] + [p.p1 for p in pieces]
+        return [tuple(to_float(c) for c in p) for p in pts]
     return [tuple(to_float(c) for c in seg.start), tuple(to_float(c) for c in seg.end)]
 
 
@@ -198,14 +208,18 @@ def plot_path(
     highlight_blocks: Iterable[int] = (),
     color: str = "#1f4e9c",
     label: str | None = "toolpath",
+    machine: Machine | None = None,
 ):
-    """Draw segments in ``plane``: feeds solid, rapids dashed, highlighted blocks red."""
+    """Draw segments in ``plane``: feeds solid, rapids dashed, highlighted blocks red.
+
+    Pass ``machine`` to draw rapids as that machine moves them (dogleg).
+    """
     hot = set(highlight_blocks)
     first_feed = first_rapid = True
     for seg in segments:
         if seg.kind is SegmentKind.DWELL:
             continue
-        pts = path_points_float(seg)
+        pts = path_points_float(seg, machine)
         h, v = seg.axes.index(plane[0]), seg.axes.index(plane[1])
         xs = [p[h] for p in pts]
         ys = [p[v] for p in pts]
@@ -232,6 +246,6 @@ def plot_machine(machine: Machine, segments: Iterable[Segment] = (), plane: tupl
     """Zones plus an optional toolpath in one call (the notebooks' entry point)."""
     ax = plot_zones(machine, plane, ax, legend=False)
     plane = plane or (machine.axis_names[0], machine.axis_names[1])
-    plot_path(segments, plane, ax)
-    ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    plot_path(segments, plane, ax, machine=machine)
+    ax.legend(loc="best", fontsize=8, framealpha=0.9)
     return ax
