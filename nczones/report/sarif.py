@@ -1,0 +1,209 @@
+"""SARIF 2.1.0 output of a verification, for code-scanning annotations.
+
+One rule per kind of finding:
+
+=========  =====================  ==============================================
+id         name                   a result when
+=========  =====================  ==============================================
+NCZ001     MotionLeavesZone       a motion leaves the allowed set (level error)
+NCZ002     RecoveryLeavesZone     a recovery motion after a break does (error)
+NCZ003     NotProved              a block could not be modelled or decided
+                                  (unsupported code, solver timeout: warning)
+=========  =====================  ==============================================
+
+Each result's ``physicalLocation`` names the program by a URI relative to the
+working directory (``uriBaseId`` ``SRCROOT``, itself given as an absolute
+``file:`` URI in ``originalUriBaseIds``) with ``startLine``/``startColumn``;
+the message carries the counterexample point, depth and first exit, and
+``properties`` the same as exact decimal strings.  The output validates
+against the official OASIS SARIF 2.1.0 schema (tests/report/test_sarif.py).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path, PurePosixPath
+from urllib.parse import quote
+
+from .. import __version__
+from ..exact import format_decimal
+from ..prover.result import Result
+
+__all__ = ["to_sarif", "render_sarif", "RULES", "artifact_uri"]
+
+SARIF_SCHEMA_URI = "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json"
+
+RULES = (
+    {
+        "id": "NCZ001",
+        "name": "MotionLeavesZone",
+        "shortDescription": {"text": "A motion leaves the allowed set of the machine."},
+        "fullDescription": {"text": "Some point of the commanded motion of this block lies outside the "
+                                    "allowed set (outside an allow zone or inside a forbid zone); the "
+                                    "point is an exactly re-checked counterexample."},
+        "defaultConfiguration": {"level": "error"},
+        "help": {"text": "Change the block (or the work offset, tool length or machine file) so that the "
+                         "whole motion stays inside the allowed set; the message names the zone, a point "
+                         "outside it, how deep the motion goes and where it first leaves."},
+    },
+    {
+        "id": "NCZ002",
+        "name": "RecoveryLeavesZone",
+        "shortDescription": {"text": "A recovery motion after a break leaves the allowed set."},
+        "fullDescription": {"text": "Restarting the program after a break (tool break, stop) at a "
+                                    "breakpoint moves the machine outside the allowed set."},
+        "defaultConfiguration": {"level": "error"},
+        "help": {"text": "Add a safe retract before the restart point or restart from another block."},
+    },
+    {
+        "id": "NCZ003",
+        "name": "NotProved",
+        "shortDescription": {"text": "The motion could not be proved to stay inside the allowed set."},
+        "fullDescription": {"text": "A code nczones does not model (e.g. cutter compensation), or a query "
+                                    "the solver could not decide in its budget, makes the verdict unknown."},
+        "defaultConfiguration": {"level": "warning"},
+        "help": {"text": "Rewrite the block with supported codes, or check this part by other means."},
+    },
+)
+_RULE_INDEX = {r["id"]: i for i, r in enumerate(RULES)}
+
+
+def artifact_uri(path: str, base: str | os.PathLike | None = None) -> tuple[str, bool]:
+    """The URI of a program for SARIF: relative to ``base`` (default the working directory).
+
+    Returns ``(uri, relative)``; a path outside ``base`` (or on another
+    drive) becomes an absolute ``file:`` URI.
+
+    >>> artifact_uri("/work/x/part 1.ngc", "/work")
+    ('x/part%201.ngc', True)
+    >>> artifact_uri("/elsewhere/p.ngc", "/work")
+    ('file:///elsewhere/p.ngc', False)
+    """
+    base = os.getcwd() if base is None else os.fspath(base)
+    absolute = os.path.abspath(os.path.join(base, path))
+    try:
+        rel = os.path.relpath(absolute, base)
+    except ValueError:  # another drive (Windows)
+        rel = None
+    if rel is None or rel == ".." or rel.startswith(".." + os.sep):
+        return Path(absolute).as_uri(), False
+    return quote(PurePosixPath(*Path(rel).parts).as_posix()), True
+
+
+def _pt(pairs) -> str:
+    return " ".join(f"{a}{format_decimal(v)}" for a, v in pairs)
+
+
+def _location(file: str | None, line: int | None, column: int | None, snippet: str, base) -> list[dict]:
+    if not file or file.startswith("<") or line is None:
+        return []
+    uri, relative = artifact_uri(file, base)
+    artifact = {"uri": uri}
+    if relative:
+        artifact["uriBaseId"] = "SRCROOT"
+    region = {"startLine": line, "startColumn": max(1, column or 1)}
+    if snippet:
+        region["snippet"] = {"text": snippet}
+    return [{"physicalLocation": {"artifactLocation": artifact, "region": region}}]
+
+
+def to_sarif(result: Result, *, base: str | os.PathLike | None = None, machine=None,
+             deterministic: bool = False) -> dict:
+    """The SARIF 2.1.0 log of a verification as a dict.
+
+    Parameters
+    ----------
+    result : Result
+    base : path, optional
+        Directory the artifact URIs are relative to (default the working directory).
+    machine : Machine, optional
+        Named in the run's properties.
+    deterministic : bool
+        Leave out timings and the solver version (golden files).
+
+    Examples
+    --------
+    >>> from nczones.machine import load_machine
+    >>> from nczones.prover import verify
+    >>> m = load_machine("specs/machines/grinder.toml")
+    >>> r = verify("specs/examples/programs/notch_dip.ngc", m)
+    >>> log = to_sarif(r)
+    >>> res = log["runs"][0]["results"][0]
+    >>> res["ruleId"], res["locations"][0]["physicalLocation"]["region"]["startLine"]
+    ('NCZ001', 5)
+    >>> res["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
+    'specs/examples/programs/notch_dip.ngc'
+    """
+    base_abs = os.path.abspath(os.getcwd() if base is None else os.fspath(base))
+    results = []
+    for v in result.violations:
+        rule = "NCZ002" if v.kind == "recovery" else "NCZ001"
+        what = v.segment_kind + (f" ({v.derived})" if v.derived else "")
+        depth = ("at least " if not v.depth_exact else "") + format_decimal(v.depth)
+        text = (f"{what} leaves the allowed set (zone \"{v.zone}\"), {depth} mm deep: the point "
+                f"{_pt(v.point)} is outside; first exit at {_pt(v.first_exit)}")
+        if v.params:
+            text += "; with parameters " + ", ".join(f"{n}={format_decimal(x)}" for n, x in v.params)
+        if result.margin:
+            text += f"; margin {format_decimal(result.margin)} mm"
+        text += "."
+        props = {
+            "zone": v.zone,
+            "zones": list(v.zones),
+            "block": v.block,
+            "point": {a: format_decimal(x) for a, x in v.point},
+            "pathPoint": {a: format_decimal(x) for a, x in v.path_point},
+            "depth": format_decimal(v.depth),
+            "depthExact": v.depth_exact,
+            "firstExit": {a: format_decimal(x) for a, x in v.first_exit},
+            "segmentKind": v.segment_kind,
+            "engine": v.engine,
+            "params": {n: format_decimal(x) for n, x in v.params},
+        }
+        res = {"ruleId": rule, "ruleIndex": _RULE_INDEX[rule], "level": "error", "kind": "fail",
+               "message": {"text": text}, "properties": props}
+        loc = _location(v.span.file if v.span else result.file, v.line, v.span.column if v.span else None,
+                        v.source, base_abs)
+        if loc:
+            res["locations"] = loc
+        results.append(res)
+    for r in result.reasons:
+        res = {"ruleId": "NCZ003", "ruleIndex": _RULE_INDEX["NCZ003"], "level": "warning", "kind": "fail",
+               "message": {"text": r.message if r.message.endswith(".") else r.message + "."}}
+        if r.code:
+            res["properties"] = {"code": r.code}
+        loc = _location(r.span.file if r.span else result.file, r.span.line if r.span else None,
+                        r.span.column if r.span else None,
+                        r.span.text.rstrip("\r\n") if r.span else "", base_abs)
+        if loc:
+            res["locations"] = loc
+        results.append(res)
+    run_props = {
+        "verdict": result.verdict.label,
+        "margin": format_decimal(result.margin),
+        "params": [{"name": p.name, "lo": format_decimal(p.written[0]), "hi": format_decimal(p.written[1])}
+                   for p in result.params],
+        "solver": result.solver if deterministic else f"{result.solver} {result.solver_version}".strip(),
+        "truncated": result.truncated,
+    }
+    if machine is not None:
+        run_props["machine"] = {"name": machine.name, "file": str(machine.source)}
+    invocation = {"executionSuccessful": True}
+    if not deterministic and result.timings:
+        invocation["properties"] = {"timings": {k: round(t, 6) for k, t in result.timings}}
+    run = {
+        "tool": {"driver": {"name": "nczones", "version": __version__, "semanticVersion": __version__,
+                            "rules": [dict(r) for r in RULES]}},
+        "originalUriBaseIds": {"SRCROOT": {"uri": Path(base_abs).as_uri().rstrip("/") + "/"}},
+        "invocations": [invocation],
+        "results": results,
+        "columnKind": "unicodeCodePoints",
+        "properties": run_props,
+    }
+    return {"$schema": SARIF_SCHEMA_URI, "version": "2.1.0", "runs": [run]}
+
+
+def render_sarif(result: Result, **kwargs) -> str:
+    """:func:`to_sarif` as indented JSON text."""
+    return json.dumps(to_sarif(result, **kwargs), indent=2, ensure_ascii=False) + "\n"

@@ -1,0 +1,186 @@
+"""Compiler-style text report of a verification (DESIGN §8, issue 10).
+
+One entry per violating block in execution order::
+
+    part.ngc:5:1: violation[wheel area]: line leaves the allowed set, 90 mm deep
+        G1 X50
+        ^~~~~~
+        point X380 Y130 is outside the allowed set (segment parameter 0.766667…)
+        first exit at X200 Y130 (segment parameter 0.166667…); engine exact
+
+then the reasons for ``unknown`` (``file:line:col: unknown[CODE]: ...``),
+the notes, and a one-line summary.  Colour (ANSI) only when asked for;
+:func:`use_color` decides for a stream (a terminal, ``NO_COLOR`` unset,
+``TERM`` not ``dumb``).  ``deterministic=True`` leaves out everything that
+changes between runs or machines (timings, the solver's version and
+internal counters), for golden files.
+"""
+
+from __future__ import annotations
+
+import os
+from fractions import Fraction
+
+from ..exact import format_decimal
+from ..prover.result import Result, Verdict
+
+__all__ = ["render_text", "use_color"]
+
+_RESET = "\x1b[0m"
+_STYLES = {
+    "loc": "\x1b[1m",
+    "violation": "\x1b[1;31m",
+    "unknown": "\x1b[1;33m",
+    "note": "\x1b[1;36m",
+    "caret": "\x1b[1;32m",
+    "safe": "\x1b[1;32m",
+    "unsafe": "\x1b[1;31m",
+}
+
+
+def use_color(stream) -> bool:
+    """Colour for ``stream``: only a terminal, and never with ``NO_COLOR`` set or ``TERM=dumb``.
+
+    >>> import io
+    >>> use_color(io.StringIO())
+    False
+    """
+    if os.environ.get("NO_COLOR", "") != "":
+        return False
+    from .progress import is_terminal
+
+    return is_terminal(stream)
+
+
+def _d(x: Fraction) -> str:
+    return format_decimal(x)
+
+
+def _pt(pairs) -> str:
+    return " ".join(f"{a}{_d(v)}" for a, v in pairs)
+
+
+def _par(x: Fraction, exact: bool) -> str:
+    return ("" if exact else "~") + format_decimal(x, 6)
+
+
+def _caret(text: str, column: int, end_column: int | None) -> tuple[str, str]:
+    """The source line (tabs as one space, as the lexer counts columns) and a caret line."""
+    source = text.rstrip("\r\n").expandtabs(1)
+    column = max(1, column)
+    if end_column is None:
+        end_column = max(column + 1, len(source.rstrip()) + 1)
+    width = max(1, end_column - column)
+    return source, " " * (column - 1) + "^" + "~" * (width - 1)
+
+
+def render_text(result: Result, program: str = "", *, color: bool = False,
+                deterministic: bool = False) -> str:
+    """The compiler-style report of a :class:`~nczones.prover.Result`.
+
+    Parameters
+    ----------
+    result : Result
+    program : str
+        Name used when the result carries none (``<program>``).
+    color : bool
+        ANSI colours (the CLI passes :func:`use_color` of standard output).
+    deterministic : bool
+        Leave out timings, the solver version and solver counters.
+
+    Examples
+    --------
+    >>> from nczones.machine import load_machine
+    >>> from nczones.prover import verify
+    >>> m = load_machine("specs/machines/grinder.toml")
+    >>> r = verify("G21 G90 G54\\nG0 X-250 Y300\\nG1 Y130 F500\\nG1 X50\\n", m, file="dip.ngc")
+    >>> print(render_text(r, deterministic=True), end="")
+    dip.ngc:4:1: violation[wheel area]: line leaves the allowed set, 90 mm deep
+        G1 X50
+        ^~~~~~
+        point X380 Y130 is outside the allowed set (segment parameter 0.766667…)
+        first exit at X200 Y130 (segment parameter 0.166667…); engine exact
+    dip.ngc: unsafe: 1 violating block, the first at line 4; 3 segments checked; solver z3
+    """
+    def paint(style: str, text: str) -> str:
+        return f"{_STYLES[style]}{text}{_RESET}" if color else text
+
+    out: list[str] = []
+    name = result.file or program or "<program>"
+    for v in result.violations:
+        loc = f"{v.span.file}:{v.span.line}:{v.span.column}" if v.span else name
+        what = v.segment_kind + (f" ({v.derived})" if v.derived else "")
+        if v.kind == "recovery":
+            what = "recovery " + what
+        depth = ("at least " if not v.depth_exact else "") + _d(v.depth)
+        out.append(f"{paint('loc', loc + ':')} {paint('violation', f'violation[{v.zone}]:')} "
+                   f"{what} leaves the allowed set, {depth} mm deep")
+        if v.span is not None and v.span.text:
+            src, caret = _caret(v.span.text, v.span.column, v.span.end_column)
+            out.append(f"    {src}")
+            out.append(f"    {paint('caret', caret)}")
+        out.append(f"    point {_pt(v.point)} is outside the allowed set "
+                   f"(segment parameter {_par(v.parameter, v.parameter_exact)})")
+        out.append(f"    first exit at {_pt(v.first_exit)} "
+                   f"(segment parameter {_par(v.first_exit_parameter, v.first_exit_exact)}); engine {v.engine}")
+        others = [z for z in v.zones if z != v.zone]
+        if others:
+            out.append("    also outside: " + ", ".join(others))
+        if result.margin:
+            out.append(f"    path point {_pt(v.path_point)} is closer than the margin {_d(result.margin)} mm")
+        if v.params:
+            out.append("    with parameters " + ", ".join(f"{n}={_d(x)}" for n, x in v.params))
+        if v.note:
+            out.append(f"    note: {v.note}")
+    for r in result.reasons:
+        loc = f"{r.span.file}:{r.span.line}:{r.span.column}" if r.span else name
+        tag = f"unknown[{r.code}]:" if r.code else "unknown:"
+        message = r.message
+        if r.code and message.startswith(r.code + ": "):
+            message = message[len(r.code) + 2:]
+        out.append(f"{paint('loc', loc + ':')} {paint('unknown', tag)} {message}")
+        if r.span is not None and r.span.text:
+            src, caret = _caret(r.span.text, r.span.column, r.span.end_column)
+            out.append(f"    {src}")
+            out.append(f"    {paint('caret', caret)}")
+    for n in result.notes:
+        out.append(f"{paint('loc', name + ':')} {paint('note', 'note:')} {n}")
+    out.append(summary_line(result, name, color=color, deterministic=deterministic))
+    return "\n".join(out) + "\n"
+
+
+def summary_line(result: Result, name: str, *, color: bool = False, deterministic: bool = False) -> str:
+    """The one-line summary that ends the text report."""
+    stats = dict(result.stats)
+    verdict = result.verdict.label
+    if color:
+        verdict = f"{_STYLES.get(verdict, _STYLES['unknown'])}{verdict}{_RESET}"
+    n = len(result.violations)
+    if result.verdict is Verdict.UNSAFE:
+        first = result.violations[0].line
+        what = f"{n} violating block{'s' if n != 1 else ''}" + (" (list truncated)" if result.truncated else "")
+        if first is not None:
+            what += f", the first at line {first}"
+    elif result.verdict is Verdict.UNKNOWN:
+        k = len(result.reasons)
+        what = f"not proved, {k} reason{'s' if k != 1 else ''}"
+        if result.reasons and result.reasons[0].span is not None:
+            what += f", the first at line {result.reasons[0].span.line}"
+    else:
+        what = "every motion stays inside the allowed set"
+    parts = [f"{name}: {verdict}: {what}", f"{stats.get('segments', 0)} segments checked"]
+    if not deterministic:
+        parts[-1] += (f" ({stats.get('screened', 0)} by screening, "
+                      f"{stats.get('z3_queries', 0)} solver queries)")
+    if result.margin:
+        parts.append(f"margin {_d(result.margin)} mm")
+    if result.params:
+        parts.append("parameters " + ", ".join(f"{p.name}={_d(p.written[0])}..{_d(p.written[1])}"
+                                               for p in result.params))
+    parts.append(f"solver {result.solver}" + ("" if deterministic or not result.solver_version
+                                              else f" {result.solver_version}"))
+    if not deterministic:
+        total = dict(result.timings).get("total_s")
+        if total is not None:
+            parts.append(f"{total:.3f} s")
+    return "; ".join(parts)
