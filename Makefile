@@ -17,6 +17,9 @@ $(STAMP): pyproject.toml
 
 demo: $(STAMP)
 	$(BIN)/nczones check-machine specs/machines/grinder.toml
+	$(BIN)/nczones verify specs/examples/programs/notch_over.ngc --machine specs/machines/grinder.toml
+	$(BIN)/nczones verify specs/examples/programs/notch_dip.ngc --machine specs/machines/grinder.toml; \
+	  test $$? -eq 1  # intentionally unsafe: the line dips into the work-head notch
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)

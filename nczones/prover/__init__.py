@@ -118,10 +118,13 @@ def verify(
     engine: str = "auto",
     max_violations: int = 20,
     file: str | None = None,
+    arc_tolerance: Fraction | str | None = None,
 ) -> Result:
     """Verify a G-code program (text or path) on a machine (DESIGN §5).
 
     ``params`` may be :class:`ParamRange` values or ``"NAME=LO..HI"`` strings.
+    ``arc_tolerance`` is passed to the interpreter (largest end-point mismatch
+    of an I/J arc; such arcs are proved as spirals, over-approximated).
     A code the interpreter cannot model makes the verdict ``unknown`` unless
     a violation before it already makes it ``unsafe``.  G-code errors raise
     :class:`~nczones.errors.GcodeError`.
@@ -136,7 +139,8 @@ def verify(
     if not isinstance(max_violations, int) or max_violations < 1:
         raise InvalidArgument(f"max_violations must be a positive integer, got {max_violations!r}")
     ranges = tuple(parse_param(p, machine) if isinstance(p, str) else p for p in params)
-    run = interpret(program, machine, file=file, track_dependencies=bool(ranges))
+    extra = {} if arc_tolerance is None else {"arc_tolerance": arc_tolerance}
+    run = interpret(program, machine, file=file, track_dependencies=bool(ranges), **extra)
     text_lines: dict[int, str] = {}
     source_text = run.text.splitlines()
 
