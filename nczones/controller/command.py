@@ -101,7 +101,14 @@ def _run(args: argparse.Namespace) -> int:
     notes: list[str] = []
     if result is None:
         run = interpret(args.program, machine)
-        result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings)
+        from ..report.progress import progress_for
+
+        bar = progress_for(sys.stderr, "simulate")
+        try:
+            result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings, progress=bar)
+        finally:
+            if bar is not None:
+                bar.close()
         for u in run.unsupported:
             notes.append(f"{u.span}: {u.code} is not supported ({u.message}); the simulation stopped there")
         if run.assumed_modal:

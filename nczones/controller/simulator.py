@@ -920,8 +920,13 @@ def simulate(
     monitor: MonitorMode | str = MonitorMode.PULSE,
     settings: Settings | None = None,
     start: Sequence[Fraction] | None = None,
+    progress=None,
 ) -> SimulationResult:
     """Run motion through a fresh :class:`Controller`; returns the frozen result.
+
+    ``progress``, if given, is called as ``progress(line, total_lines)``
+    after each segment (``total_lines`` from the interpretation's text, else
+    None); see :mod:`nczones.report.progress`.
 
     ``motion`` is an iterable of :class:`~nczones.motion.Segment` or
     :class:`~nczones.motion.MotionChunk` (an interpretation from
@@ -949,7 +954,18 @@ def simulate(
         items, first = _peek(motion)
         start = first.start if first is not None else None
     ctl = Controller(machine, mode=mode, monitor=monitor, settings=settings, start=start)
+    if progress is not None:
+        items = _reporting(items, progress, getattr(motion, "text", None))
     return ctl.run(items)
+
+
+def _reporting(items: Any, progress, text: str | None) -> Iterator[Segment]:
+    """Segments of ``items``, calling ``progress(line, total)`` after each one is run."""
+    total = (text.count("\n") + (0 if text.endswith("\n") else 1)) if text else None
+    for seg in _segments_of(items):
+        yield seg
+        if seg.span is not None:
+            progress(seg.span.line, total)
 
 
 def _peek(motion: Any) -> tuple[Iterable[Segment], Segment | None]:

@@ -119,6 +119,7 @@ def verify(
     max_violations: int = 20,
     file: str | None = None,
     arc_tolerance: Fraction | str | None = None,
+    progress=None,
 ) -> Result:
     """Verify a G-code program (text or path) on a machine (DESIGN §5).
 
@@ -127,7 +128,9 @@ def verify(
     of an I/J arc; such arcs are proved as spirals, over-approximated).
     A code the interpreter cannot model makes the verdict ``unknown`` unless
     a violation before it already makes it ``unsafe``.  G-code errors raise
-    :class:`~nczones.errors.GcodeError`.
+    :class:`~nczones.errors.GcodeError`.  ``progress``, if given, is called as
+    ``progress(line, total_lines)`` after each chunk of motion is checked
+    (see :mod:`nczones.report.progress`).
     """
     from ..exact import exact
     from ..gcode import interpret
@@ -149,12 +152,17 @@ def verify(
 
         from ..motion import MotionChunk
 
+        total = len(source_text) or None
         for chunk in seq:
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
                 yield chunk
+                if progress is not None and len(chunk):
+                    progress(int(chunk.line[-1]), total)
             else:
                 for s in chunk.segments():
                     yield s
+                    if progress is not None and s.span is not None:
+                        progress(s.span.line, total)
 
     result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file)

@@ -15,7 +15,8 @@ __all__ = ["register"]
 def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
     from . import parse_param, verify
-    from .render import render_json, render_text
+    from ..report import render_report
+    from ..report.progress import progress_for
 
     machine = load_machine(args.machine)
     try:
@@ -29,15 +30,27 @@ def _run(args: argparse.Namespace) -> int:
         raise InputError(Diagnostic("VF103", f"--max-violations {args.max_violations}: must be at least 1",
                                     file="<command line>"))
     params = tuple(parse_param(p, machine) for p in args.param)
-    result = verify(args.program, machine, margin=margin, params=params, engine=args.engine,
-                    max_violations=args.max_violations)
-    text = render_json(result) if args.format == "json" else render_text(result, args.program)
+    bar = progress_for(sys.stderr, "verify")
+    try:
+        result = verify(args.program, machine, margin=margin, params=params, engine=args.engine,
+                        max_violations=args.max_violations, progress=bar)
+    finally:
+        if bar is not None:
+            bar.close()
+    text = render_report(result, args.format, machine=machine, program=args.program,
+                         color=args.output is None and args.format == "text" and _color(sys.stdout))
     if args.output:
         with open(args.output, "w", encoding="utf-8") as fh:
             fh.write(text)
     else:
         sys.stdout.write(text)
     return result.verdict.exit_code
+
+
+def _color(stream) -> bool:
+    from ..report.text import use_color
+
+    return use_color(stream)
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -50,7 +63,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "start.Z=-10..0 (start deviation), home.X=-0.5..0.5 (homing error)")
     p.add_argument("--engine", choices=("auto", "z3"), default="auto")
     p.add_argument("--max-violations", type=int, default=20, metavar="N")
-    p.add_argument("--format", choices=("text", "json"), default="text")
+    p.add_argument("--format", choices=("text", "json", "html", "sarif"), default="text",
+                   help="text (compiler-style), json (specs/report.schema.json), html (one self-contained "
+                        "file with plots), sarif (SARIF 2.1.0 for code scanning)")
     p.add_argument("--output", metavar="FILE")
     p.set_defaults(handler=_run)
 

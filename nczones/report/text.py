@@ -53,7 +53,7 @@ def use_color(stream) -> bool:
 
 
 def _d(x: Fraction) -> str:
-    return format_decimal(x)
+    return format_decimal(x, 12)
 
 
 def _pt(pairs) -> str:

@@ -1,0 +1,93 @@
+"""``nczones plot PROGRAM --machine M -o out.png [--plane X,Y] [--verify]``: draw a program.
+
+The figure (see :func:`nczones.report.figure.plot_program`) shows the
+allowed set in the plane, the toolpath (rapids dashed) and, with
+``--verify`` (the default), the violating blocks and counterexample points.
+The output format follows the file name (``.png``, ``.svg``, ``.pdf``).
+Exit status: 0 written (whatever the verdict), 2 bad input.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from .. import cli
+from ..errors import Diagnostic, InputError
+
+__all__ = ["register"]
+
+
+class PlotError(InputError):
+    """A bad ``nczones plot`` option (code PL1xx)."""
+
+
+def _plane(text: str | None, machine) -> tuple[str, str] | None:
+    if text is None:
+        return None
+    parts = [p.strip().upper() for p in text.replace(" ", ",").split(",") if p.strip()]
+    if len(parts) == 1 and len(parts[0]) == 2:
+        parts = list(parts[0])
+    names = machine.axis_names
+    if len(parts) != 2 or parts[0] == parts[1] or any(p not in names for p in parts):
+        raise PlotError(Diagnostic("PL101", f"--plane {text!r}: expected two different axes of the machine "
+                                            f"as H,V (axes: {', '.join(names)}), e.g. --plane "
+                                            f"{names[0]},{names[-1]}", file="<command line>"))
+    return parts[0], parts[1]
+
+
+def _run(args: argparse.Namespace) -> int:
+    from ..machine import load_machine
+    from . import _agg
+
+    machine = load_machine(args.machine)
+    plane = _plane(args.plane, machine)
+    if len(machine.axis_names) < 2:
+        raise PlotError(Diagnostic("PL102", f"{args.machine}: a plot needs a machine with two axes or more",
+                                   file="<command line>"))
+    suffix = args.output.rsplit(".", 1)[-1].lower() if "." in args.output else ""
+    if suffix not in ("png", "svg", "pdf"):
+        raise PlotError(Diagnostic("PL103", f"-o {args.output!r}: the file name must end in .png, .svg or .pdf",
+                                   file="<command line>"))
+    _agg()
+    import matplotlib.pyplot as plt
+
+    from .figure import plot_program
+    from .progress import progress_for
+
+    result = None
+    if args.verify:
+        from ..prover import verify
+
+        bar = progress_for(sys.stderr, "verify")
+        try:
+            result = verify(args.program, machine, progress=bar)
+        finally:
+            if bar is not None:
+                bar.close()
+    fig = plot_program(args.program, machine, plane, result)
+    try:
+        fig.savefig(args.output, dpi=args.dpi)
+    except OSError as exc:
+        raise PlotError(Diagnostic("PL104", f"-o {args.output!r}: cannot write the file: {exc.strerror or exc}",
+                                   file="<command line>")) from None
+    finally:
+        plt.close(fig)
+    verdict = f" ({result.verdict.label}, {len(result.violations)} violating block(s))" if result else ""
+    print(f"{args.output}: plot of {args.program} on {machine.name}{verdict}")
+    return cli.EXIT_OK
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("plot", help="draw a program's toolpath over the machine's allowed set (PNG/SVG/PDF)")
+    p.add_argument("program", metavar="PROGRAM")
+    p.add_argument("--machine", required=True, metavar="M.toml")
+    p.add_argument("-o", "--output", required=True, metavar="OUT.png")
+    p.add_argument("--plane", metavar="H,V", help="axes of the plot plane, e.g. X,Z (default: a plane the zones use)")
+    p.add_argument("--no-verify", dest="verify", action="store_false",
+                   help="draw only; do not verify (no violations marked)")
+    p.add_argument("--dpi", type=int, default=120)
+    p.set_defaults(handler=_run)
+
+
+cli.REGISTRARS.append(register)

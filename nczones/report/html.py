@@ -1,0 +1,262 @@
+"""A self-contained HTML report of a verification (``nczones verify --format html``).
+
+One file, no network resources: inline CSS, a few lines of inline script,
+and the plots as inline SVG (matplotlib).  Sections:
+
+* ``#summary``: verdict, program, machine, margin, parameter ranges, solver
+  and version, engine, nczones version, counters and timings;
+* ``#plots``: one figure per relevant axis plane (the allowed set, the
+  toolpath with rapids dashed, violating blocks red, counterexample points
+  marked: SVG group ``counterexample``);
+* ``#violations``: a table (rows ``tr.violation``) whose line numbers link to
+  ``#L<line>`` in the listing; ``#reasons`` for ``unknown``;
+* ``#listing``: the program with the flagged lines highlighted
+  (``.line.hot`` violations, ``.line.unknown`` reasons).  A long program
+  shows only windows around the flagged lines.
+
+Every piece of user text (program lines, file, zone and machine names,
+messages) is escaped.
+"""
+
+from __future__ import annotations
+
+import html
+import io
+import re
+from fractions import Fraction
+
+from .. import __version__
+from ..exact import format_decimal
+from ..prover.result import Result
+
+__all__ = ["render_html"]
+
+_CSS = """
+body{font-family:system-ui,-apple-system,"Segoe UI",sans-serif;margin:1.5em auto;max-width:1100px;color:#222;padding:0 1em}
+h1{font-size:1.4em;margin-bottom:.2em}h2{font-size:1.15em;border-bottom:1px solid #ddd;padding-bottom:.2em;margin-top:1.6em}
+.verdict{display:inline-block;padding:.15em .6em;border-radius:.3em;font-weight:bold;color:#fff;letter-spacing:.05em}
+.verdict-safe{background:#2e7d32}.verdict-unsafe{background:#c00000}.verdict-unknown{background:#b26a00}
+table{border-collapse:collapse;font-size:.9em}td,th{border:1px solid #ddd;padding:.25em .55em;text-align:left;vertical-align:top}
+th{background:#f4f4f4}table.kv th{width:14em}
+code,pre{font-family:ui-monospace,"DejaVu Sans Mono",Menlo,Consolas,monospace}
+figure{margin:1em 0}figure svg{max-width:100%;height:auto}figcaption{font-size:.85em;color:#555}
+pre.listing{background:#fafafa;border:1px solid #ddd;padding:.4em 0;overflow-x:auto;font-size:.85em;line-height:1.35}
+.line{display:block;padding:0 .6em;white-space:pre}.line .ln{display:inline-block;width:5em;color:#999;text-decoration:none;user-select:none}
+.line.hot{background:#ffd7d7}.line.hot .ln{color:#c00000;font-weight:bold}.line.unknown{background:#ffefc7}
+.line:target{outline:2px solid #1f4e9c}.gap{display:block;color:#999;padding:0 .6em}
+tr.violation td:first-child a,tr.reason td:first-child a{font-weight:bold}
+.muted{color:#666;font-size:.85em}
+"""
+
+_SCRIPT = """
+document.addEventListener("DOMContentLoaded", function () {
+  var rows = document.querySelectorAll("#violation-table tr.violation").length;
+  var el = document.getElementById("violation-count");
+  if (el) { el.textContent = String(rows); }
+  document.body.setAttribute("data-rendered", "yes");
+});
+"""
+
+
+def _e(text) -> str:
+    return html.escape(str(text), quote=True)
+
+
+def _d(x: Fraction) -> str:
+    return format_decimal(x, 12)
+
+
+def _pt(pairs) -> str:
+    return " ".join(f"{a}{_d(v)}" for a, v in pairs)
+
+
+def _svg(fig, salt: str) -> str:
+    """The figure as an inline <svg> element (no XML prolog, deterministic ids)."""
+    import matplotlib
+
+    buf = io.StringIO()
+    with matplotlib.rc_context({"svg.hashsalt": salt, "svg.fonttype": "path"}):
+        fig.savefig(buf, format="svg", metadata={"Date": None, "Creator": None})
+    text = buf.getvalue()
+    start = text.find("<svg")
+    text = text[start:] if start >= 0 else text
+    return re.sub(r"<metadata>.*?</metadata>\s*", "", text, flags=re.S)
+
+
+def _listing(lines: list[str], hot: dict[int, str], unknown: set[int], context: int, full_limit: int) -> str:
+    flagged = set(hot) | unknown
+    if len(lines) <= full_limit:
+        shown = range(1, len(lines) + 1)
+    else:
+        keep = set()
+        for n in flagged:
+            keep.update(range(max(1, n - context), min(len(lines), n + context) + 1))
+        keep.update(range(1, min(len(lines), context) + 1))
+        shown = sorted(keep)
+    out = []
+    prev = 0
+    for n in shown:
+        if n != prev + 1:
+            out.append(f'<span class="gap">… lines {prev + 1}–{n - 1} not shown …</span>')
+        cls = "line" + (" hot" if n in hot else "") + (" unknown" if n in unknown and n not in hot else "")
+        title = f' title="{_e(hot[n])}"' if n in hot else ""
+        out.append(f'<span class="{cls}" id="L{n}"{title}><a class="ln" href="#L{n}">{n}</a>'
+                   f'{_e(lines[n - 1].rstrip(chr(13)))}</span>')
+        prev = n
+    if shown and prev < len(lines):
+        out.append(f'<span class="gap">… lines {prev + 1}–{len(lines)} not shown …</span>')
+    return "".join(out)
+
+
+def render_html(result: Result, machine, program=None, *, planes=None, source_text: str | None = None,
+                deterministic: bool = False, listing_limit: int = 5000, context: int = 15) -> str:
+    """The self-contained HTML report.
+
+    Parameters
+    ----------
+    result : Result
+    machine : Machine
+    program : str or path, optional
+        The program (text or path) to draw; default ``result.file``.
+    planes : list of (str, str), optional
+        Axis planes to plot (default :func:`~nczones.report.figure.relevant_planes`).
+    source_text : str, optional
+        The program text for the listing (default: read ``program``).
+    deterministic : bool
+        Leave out timings and the solver version.
+
+    Examples
+    --------
+    >>> from nczones import load_machine
+    >>> from nczones.prover import verify
+    >>> m = load_machine("specs/machines/grinder.toml")
+    >>> r = verify("specs/examples/programs/notch_dip.ngc", m)
+    >>> page = render_html(r, m)
+    >>> page.startswith("<!DOCTYPE html>"), 'id="counterexample"' in page, '<tr class="violation"' in page
+    (True, True, True)
+    >>> import re; re.findall(r'(?:src|href)="(?!#)[^"]*"|url\((?!#)|@import', page)  # nothing fetched
+    []
+    """
+    import matplotlib.pyplot as plt
+
+    from .figure import collect_path, plot_program, relevant_planes
+
+    program = program if program is not None else result.file
+    text = source_text
+    if text is None and program:
+        from ..gcode import _read_source
+
+        try:
+            text, _ = _read_source(program, None)
+        except Exception:
+            text = ""
+    lines = (text or "").splitlines()
+    verdict = result.verdict.label
+    name = result.file or (program if isinstance(program, str) and "\n" not in program else "<program>")
+
+    # plots
+    figures = []
+    if program:
+        hot_blocks = {v.block for v in result.violations}
+        path = collect_path(program, machine, hot_blocks)
+        for k, plane in enumerate(planes or relevant_planes(machine, result)):
+            fig = plot_program(program, machine, plane, result, path=path)
+            fig.set_size_inches(9, 5.2)
+            svg = _svg(fig, f"nczones-{k}")
+            # matplotlib ids are unique within one SVG; prefix them per figure
+            svg = re.sub(r'(id="|url\(#|href="#)([A-Za-z_][\w.-]*)', lambda m: f"{m.group(1)}f{k}-{m.group(2)}"
+                         if not m.group(2).startswith(("counterexample", "first-exit", "violating-block",
+                                                       "toolpath", "allowed-set", "forbid-")) else m.group(0), svg)
+            plt.close(fig)
+            figures.append((plane, svg))
+
+    # summary
+    stats = dict(result.stats)
+    rows = [
+        ("Verdict", f'<span class="verdict verdict-{_e(verdict)}" id="verdict">{_e(verdict.upper())}</span>'),
+        ("Program", f"<code>{_e(name)}</code> ({len(lines)} lines)"),
+        ("Machine", f"{_e(machine.name)} — <code>{_e(machine.source)}</code>; axes "
+                    f"{_e(', '.join(machine.axis_names))}; rapid mode {_e(machine.rapid_mode.value)}"),
+        ("Zones", _e("; ".join(f"{z.name} ({'forbid' if z.forbid else 'allow'} {z.kind}"
+                               f"{', tool tip' if z.point.value == 'tip' else ''})" for z in machine.zones))),
+        ("Margin", f"{_e(format_decimal(result.margin))} mm"),
+        ("Parameter ranges", _e(", ".join(f"{p.name} = {format_decimal(p.written[0])} .. "
+                                          f"{format_decimal(p.written[1])}" for p in result.params) or "none")),
+        ("Violating blocks", f'<span id="violation-count">{len(result.violations)}</span>'
+                             + (" (list truncated)" if result.truncated else "")),
+        ("Solver", _e(result.solver + ("" if deterministic else f" {result.solver_version}"))
+                   + f"; engine {_e(result.engine)}"),
+        ("nczones", _e(__version__)),
+        ("Checked", _e(", ".join(f"{k} {v}" for k, v in stats.items()) or "—")),
+    ]
+    if not deterministic and result.timings:
+        rows.append(("Timings", _e(", ".join(f"{k.removesuffix('_s')} {t:.3f} s" for k, t in result.timings))))
+    if result.notes:
+        rows.append(("Notes", "<br>".join(_e(n) for n in result.notes)))
+    summary = "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in rows)
+
+    # violations table
+    hot: dict[int, str] = {}
+    vrows = []
+    for i, v in enumerate(result.violations, 1):
+        ln = v.line
+        if ln is not None:
+            hot.setdefault(ln, f"violation[{v.zone}]")
+        link = f'<a href="#L{ln}">{ln}:{v.span.column}</a>' if ln is not None and v.span else "—"
+        depth = ("≥ " if not v.depth_exact else "") + _d(v.depth)
+        params = ", ".join(f"{n}={_d(x)}" for n, x in v.params)
+        vrows.append(
+            f'<tr class="violation" id="v{i}"><td>{link}</td><td><code>{_e(v.source)}</code></td>'
+            f"<td>{_e(v.zone)}</td><td>{_e(v.kind)}: {_e(v.segment_kind)}"
+            f"{(' (' + _e(v.derived) + ')') if v.derived else ''}</td>"
+            f"<td><code>{_e(_pt(v.point))}</code></td><td>{_e(depth)} mm</td>"
+            f"<td><code>{_e(_pt(v.first_exit))}</code></td><td>{_e(params) or '—'}</td>"
+            f"<td>{_e(v.engine)}</td></tr>")
+    unknown_lines = set()
+    rrows = []
+    for i, r in enumerate(result.reasons, 1):
+        ln = r.span.line if r.span is not None else None
+        if ln is not None:
+            unknown_lines.add(ln)
+        link = f'<a href="#L{ln}">{ln}:{r.span.column}</a>' if ln is not None else "—"
+        rrows.append(f'<tr class="reason" id="r{i}"><td>{link}</td><td>{_e(r.code) or "—"}</td>'
+                     f"<td>{_e(r.message)}</td></tr>")
+
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
+        f"<title>nczones: {_e(name)} — {_e(verdict)}</title>",
+        f"<style>{_CSS}</style></head>",
+        f'<body data-verdict="{_e(verdict)}">',
+        f"<h1>nczones verification report: <code>{_e(name)}</code></h1>",
+        '<section id="summary"><h2>Summary</h2>',
+        f'<table class="kv">{summary}</table></section>',
+    ]
+    if figures:
+        parts.append('<section id="plots"><h2>Toolpath and allowed set</h2>')
+        for plane, svg in figures:
+            parts.append(f'<figure class="plot" data-plane="{_e(plane[0])}{_e(plane[1])}">{svg}'
+                         f"<figcaption>{_e(plane[0])}{_e(plane[1])} plane: allowed set green, forbidden "
+                         "zones hatched red, feeds solid, rapids dashed, violating blocks red, "
+                         "counterexample points ✕ and first exits ○ (machine coordinates)."
+                         "</figcaption></figure>")
+        parts.append("</section>")
+    parts.append('<section id="violations"><h2>Violations</h2>')
+    if vrows:
+        parts.append('<table id="violation-table"><thead><tr><th>Line</th><th>Block</th><th>Zone</th>'
+                     "<th>Kind</th><th>Point outside</th><th>Depth</th><th>First exit</th><th>Parameters</th>"
+                     f"<th>Engine</th></tr></thead><tbody>{''.join(vrows)}</tbody></table>")
+    else:
+        parts.append('<p id="no-violations">No violating block.</p>')
+    parts.append("</section>")
+    if rrows:
+        parts.append('<section id="reasons"><h2>Not proved (unknown)</h2><table id="reason-table"><thead><tr>'
+                     f"<th>Line</th><th>Code</th><th>Reason</th></tr></thead><tbody>{''.join(rrows)}"
+                     "</tbody></table></section>")
+    if lines:
+        parts.append('<section id="listing"><h2>Program</h2><pre class="listing">'
+                     f"{_listing(lines, hot, unknown_lines, context, listing_limit)}</pre></section>")
+    parts.append(f'<p class="muted">Generated by nczones {_e(__version__)}.</p>')
+    parts.append(f"<script>{_SCRIPT}</script></body></html>")
+    return "\n".join(parts) + "\n"
