@@ -380,6 +380,9 @@ class Prover:
         pieces = line_pieces(seg, self.machine)
         self.stats["pieces"] += len(pieces)
         use_z3 = self.engine == "z3" or not self.all_decidable
+        if self.engine == "auto" and all(self._bbox_fits(p.p0, p.p1, seg.tool_length) for p in pieces):
+            self.stats["screened"] += 1
+            return _Outcome(engine="exact")
         for piece in pieces:
             if self.engine == "auto" and self._bbox_fits(piece.p0, piece.p1, seg.tool_length):
                 continue
@@ -525,6 +528,7 @@ class Prover:
             lo[g.ia], hi[g.ia] = bx
             lo[g.ib], hi[g.ib] = by
             if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin, seg.tool_length):
+                self.stats["screened"] += 1
                 return _Outcome(engine="exact")
         self.stats["z3_segments"] += 1
         body, names = self._arc_query(seg, g, False)
