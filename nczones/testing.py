@@ -2,14 +2,16 @@
 
 Use them to property-test your own post-processor or machine files::
 
-    from hypothesis import given
+    from hypothesis import given, strategies as st
     from nczones.testing import machines, programs
 
     @given(data=st.data())
     def test_my_post_never_leaves_the_table(data):
-        machine = data.draw(machines())
-        text = data.draw(programs(machine))
+        machine = data.draw(machines(axes=("X", "Y", "Z"), allow_kinds=("box", "polygon")))
+        text = data.draw(programs(machine, subprograms=True))
         ...
+
+(README.md, "Property-testing your post-processor", has a complete example.)
 
 Every number is an exact decimal (a :class:`~fractions.Fraction` with a
 power-of-ten denominator) and is rendered into the text as a decimal, so the
@@ -28,9 +30,17 @@ from hypothesis import strategies as st
 
 from .exact import format_decimal
 from .machine import Machine, parse_machine
-from .zones import Region, SteppedZone
+from .zones import PolygonZone, Region, SteppedZone
 
-__all__ = ["decimals", "zone_tables", "machine_files", "machines", "programs", "boundary_values"]
+__all__ = [
+    "decimals",
+    "zone_tables",
+    "polygons",
+    "machine_files",
+    "machines",
+    "programs",
+    "boundary_values",
+]
 
 
 def decimals(
@@ -130,6 +140,114 @@ def _stepped_toml(zone: SteppedZone, forbid: bool = False) -> str:
     )
 
 
+#: Directions of a star-shaped polygon's vertices, in counter-clockwise order.
+_DIRECTIONS = ((1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1))
+
+
+@st.composite
+def polygons(
+    draw: st.DrawFn,
+    *,
+    plane: tuple[str, str] = ("X", "Y"),
+    min_vertices: int = 3,
+    max_vertices: int = 8,
+    min_value: int = 0,
+    max_value: int = 1000,
+    places: int = 1,
+    forbid: bool = False,
+    name: str = "polygon",
+) -> PolygonZone:
+    """Simple polygons, star-shaped around a centre that lies strictly inside.
+
+    Vertices sit on up to eight rays (every 45 degrees) from the centre at
+    drawn distances, in counter-clockwise order, with no gap of 180 degrees
+    or more between consecutive rays, so the polygon is simple and its
+    centre is an interior point (``polygon_centre`` returns it).
+
+    Examples
+    --------
+    >>> from hypothesis import find
+    >>> p = find(polygons(min_vertices=5), lambda z: True)
+    >>> len(p.vertices) >= 5, p.contains(dict(zip(p.plane, polygon_centre(p))))
+    (True, True)
+    """
+    span = Fraction(max_value - min_value)
+    lo_c, hi_c = min_value + span * Fraction(2, 5), min_value + span * Fraction(3, 5)
+    cx = draw(decimals(min_value=lo_c, max_value=hi_c, places=places))
+    cy = draw(decimals(min_value=lo_c, max_value=hi_c, places=places))
+    max_vertices = max(min_vertices, min(max_vertices, 8))
+    rays = draw(
+        st.lists(st.integers(0, 7), min_size=max(3, min_vertices), max_size=max_vertices, unique=True)
+        .map(sorted)
+        .filter(lambda rs: all((b - a) % 8 <= 3 for a, b in zip(rs, rs[1:] + rs[:1])))
+    )
+    r_max = min(cx - min_value, max_value - cx, cy - min_value, max_value - cy)
+    vertices = []
+    for k in rays:
+        r = draw(decimals(min_value=r_max / 5, max_value=r_max, places=places))
+        dx, dy = _DIRECTIONS[k]
+        vertices.append((cx + dx * r, cy + dy * r))
+    return PolygonZone(name, tuple(plane), tuple(vertices), (), forbid)
+
+
+def polygon_centre(zone: PolygonZone) -> tuple[Fraction, Fraction]:
+    """The centre a :func:`polygons` polygon was built around (an interior point)."""
+    from .machine import _polygon_problem  # noqa: F401  (same package; validated by the loader)
+
+    # The rays through opposite-or-adjacent vertices meet at the centre: solve
+    # with two vertices on non-parallel rays (their directions are known).
+    (ax, ay), (bx, by) = zone.vertices[0], zone.vertices[1]
+    for d1 in _DIRECTIONS:
+        for d2 in _DIRECTIONS:
+            det = d1[0] * (-d2[1]) - d1[1] * (-d2[0])
+            if det == 0:
+                continue
+            # centre + s*d1 = a, centre + t*d2 = b  =>  s*d1 - t*d2 = a - b
+            s = ((ax - bx) * (-d2[1]) - (ay - by) * (-d2[0])) / det
+            t = (d1[0] * (ay - by) - d1[1] * (ax - bx)) / det
+            if s > 0 and t > 0:
+                c = (ax - s * d1[0], ay - s * d1[1])
+                if all(_on_ray(c, v) for v in zone.vertices) and zone.interior_contains(dict(zip(zone.plane, c))):
+                    return c
+    raise ValueError("not a polygon made by polygons()")
+
+
+def _on_ray(c: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> bool:
+    dx, dy = v[0] - c[0], v[1] - c[1]
+    return dx == 0 or dy == 0 or abs(dx) == abs(dy)
+
+
+def _polygon_toml(zone: PolygonZone) -> str:
+    verts = ", ".join(f'["{_text(a)}", "{_text(b)}"]' for a, b in zone.vertices)
+    return "\n".join(
+        [
+            "[[zones]]",
+            f'name = "{zone.name}"',
+            'kind = "polygon"',
+            f"forbid = {'true' if zone.forbid else 'false'}",
+            f'plane = ["{zone.plane[0]}", "{zone.plane[1]}"]',
+            f"vertices = [{verts}]",
+        ]
+    )
+
+
+def _box_toml(name: str, lo: dict[str, Fraction], hi: dict[str, Fraction], forbid: bool, point: str = "") -> str:
+    lines = ["[[zones]]", f'name = "{name}"', 'kind = "box"', f"forbid = {'true' if forbid else 'false'}"]
+    if point:
+        lines.append(f'point = "{point}"')
+    if lo:
+        lines.append("min = { " + ", ".join(f'{a} = "{_text(v)}"' for a, v in lo.items()) + " }")
+    if hi:
+        lines.append("max = { " + ", ".join(f'{a} = "{_text(v)}"' for a, v in hi.items()) + " }")
+    return "\n".join(lines)
+
+
+def _polygon_ok(zone: PolygonZone) -> bool:
+    from .machine import _polygon_problem
+
+    return _polygon_problem(list(zone.vertices)) is None
+
+
 @st.composite
 def machine_files(
     draw: st.DrawFn,
@@ -139,72 +257,120 @@ def machine_files(
     pulse: str = "0.001",
     forbid_boxes: bool = True,
     places: int = 1,
+    allow_kinds: Sequence[str] = ("stepped",),
+    size: int = 1000,
+    tool_lengths: bool = True,
+    tip_zones: bool = True,
 ) -> str:
-    """Machine files (TOML text) with a stepped table on the first two axes.
+    """Machine files (TOML text) whose main allow zone lies on the first two axes.
 
-    The table lies in ``[0, 1000]`` on both axes; optionally a forbid box
-    sits inside it.  The start position is drawn inside the allowed set, so
-    the text always loads.
+    The main allow zone is drawn from ``allow_kinds``: a ``"stepped"``
+    limit-value table, a ``"box"`` or a star-shaped ``"polygon"``, inside
+    ``[0, size]`` on both axes; optionally a forbid box sits inside it.
+    With a ``Z`` axis, Z travels in ``[0, size/2]``, the file has tool length
+    registers ``H1``/``H2`` (``tool_lengths``) and optionally a tool-tip
+    forbid box, a vise (``tip_zones``).  The start position is drawn inside
+    the allowed set (the forbid box may still cover it: :func:`machines`
+    skips those), so the text loads.
+
+    Examples
+    --------
+    >>> from hypothesis import find
+    >>> from nczones.machine import parse_machine
+    >>> text = find(machine_files(axes=("X", "Y", "Z"), allow_kinds=("polygon",)), lambda t: "vise" in t)
+    >>> m = parse_machine(text)
+    >>> [z.kind for z in m.zones if not z.forbid][:2], sorted(m.tool_lengths)
+    (['polygon', 'box'], [1, 2])
     """
     ref_axis, lim_axis = axes[0], axes[1]
-    table = draw(
-        zone_tables(reference_axis=ref_axis, limited_axis=lim_axis, places=places, name="table").filter(
-            lambda z: any(r.min is None or r.max is None or r.min < r.max for r in z.regions)
+    kind = draw(st.sampled_from(tuple(allow_kinds)))
+    size_q = Fraction(size)
+    zones_toml: list[str] = []
+    if kind == "stepped":
+        table = draw(
+            zone_tables(
+                reference_axis=ref_axis, limited_axis=lim_axis, places=places, name="table", max_value=size
+            ).filter(lambda z: any(r.min is None or r.max is None or r.min < r.max for r in z.regions))
         )
-    )
-    zones_toml = [_stepped_toml(table)]
+        zones_toml.append(_stepped_toml(table))
+        # A start point strictly inside one region of the table (exact midpoint).
+        i = draw(st.integers(0, len(table.regions) - 1))
+        reg = table.regions[i]
+        lower = table.start if i == 0 else table.regions[i - 1].upto
+        r = (lower + reg.upto) / 2 if i else lower
+        lo = reg.min if reg.min is not None else (reg.max - 10 if reg.max is not None else Fraction(0))
+        hi = reg.max if reg.max is not None else lo + 10
+        start = {ref_axis: r, lim_axis: (lo + hi) / 2}
+    elif kind == "box":
+        xs = sorted(draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True)))
+        ys = sorted(draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True)))
+        zones_toml.append(_box_toml("travel", {ref_axis: xs[0], lim_axis: ys[0]}, {ref_axis: xs[1], lim_axis: ys[1]}, False))
+        start = {ref_axis: (xs[0] + xs[1]) / 2, lim_axis: (ys[0] + ys[1]) / 2}
+    elif kind == "polygon":
+        poly = draw(polygons(plane=(ref_axis, lim_axis), max_value=size, places=places, name="outline").filter(_polygon_ok))
+        zones_toml.append(_polygon_toml(poly))
+        c = polygon_centre(poly)
+        start = {ref_axis: c[0], lim_axis: c[1]}
+    else:
+        raise ValueError(f"allow_kinds: unknown kind {kind!r}; use 'stepped', 'box' or 'polygon'")
     if forbid_boxes and draw(st.booleans()):
-        a = draw(st.lists(decimals(min_value=0, max_value=1000, places=places), min_size=2, max_size=2, unique=True))
-        b = draw(st.lists(decimals(min_value=0, max_value=1000, places=places), min_size=2, max_size=2, unique=True))
-        zones_toml.append(
-            "\n".join(
-                [
-                    "[[zones]]",
-                    'name = "clamp"',
-                    'kind = "box"',
-                    "forbid = true",
-                    f'min = {{ {ref_axis} = "{_text(min(a))}", {lim_axis} = "{_text(min(b))}" }}',
-                    f'max = {{ {ref_axis} = "{_text(max(a))}", {lim_axis} = "{_text(max(b))}" }}',
-                ]
+        a = draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True))
+        b = draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True))
+        zones_toml.append(_box_toml("clamp", {ref_axis: min(a), lim_axis: min(b)}, {ref_axis: max(a), lim_axis: max(b)}, True))
+    start.update({a: Fraction(0) for a in axes[2:]})
+    has_z = "Z" in axes[2:]
+    tools: dict[int, Fraction] = {}
+    if has_z:
+        z_top = size_q / 2
+        zones_toml.append(_box_toml("z travel", {"Z": Fraction(0)}, {"Z": z_top}, False))
+        start["Z"] = z_top * Fraction(4, 5)
+        if tool_lengths:
+            for reg in (1, 2):
+                tools[reg] = draw(decimals(min_value=size_q / 40, max_value=size_q / 8, places=places))
+        if tip_zones and draw(st.booleans()):
+            a = draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True))
+            b = draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True))
+            top = draw(decimals(min_value=size_q / 20, max_value=size_q / 5, places=places))
+            zones_toml.append(
+                _box_toml("vise", {ref_axis: min(a), lim_axis: min(b), "Z": Fraction(0)},
+                          {ref_axis: max(a), lim_axis: max(b), "Z": top}, True, point="tip")
             )
-        )
-    # A start point strictly inside one region of the table (exact midpoint).
-    i = draw(st.integers(0, len(table.regions) - 1))
-    reg = table.regions[i]
-    lower = table.start if i == 0 else table.regions[i - 1].upto
-    r = (lower + reg.upto) / 2 if i else lower
-    lo = reg.min if reg.min is not None else (reg.max - 10 if reg.max is not None else Fraction(0))
-    hi = reg.max if reg.max is not None else lo + 10
-    lim = (lo + hi) / 2
     rapid_mode = draw(st.sampled_from(tuple(rapid_modes)))
     rates = {a: draw(st.sampled_from(("6000", "8000", "12000"))) for a in axes}
-    start = {ref_axis: r, lim_axis: lim}
-    start.update({a: Fraction(0) for a in axes[2:]})
-    text = "\n".join(
-        [
-            "[machine]",
-            'name = "generated"',
-            f"axes = [{', '.join(repr(a).replace(chr(39), chr(34)) for a in axes)}]",
-            f'pulse = "{pulse}"',
-            f'rapid_mode = "{rapid_mode}"',
-            'monitor_period_ms = "2"',
-            "[machine.rapid]",
-            *(f'{a} = "{rates[a]}"' for a in axes),
-            "[machine.reference]",
-            *(f'{a} = "{format_decimal(start[a])}"' for a in axes),
-            "[offsets]",
-            "G54 = { " + ", ".join(f'{a} = "0"' for a in axes) + " }",
-            "G55 = { " + f'{ref_axis} = "{draw(st.sampled_from(("-5", "2.5", "10")))}"' + " }",
-            *zones_toml,
-        ]
-    )
-    return text
+    g55 = {ref_axis: draw(st.sampled_from(("-5", "2.5", "10")))}
+    if has_z:
+        g55["Z"] = draw(st.sampled_from(("0", "-2", "3.5")))
+    lines = [
+        "[machine]",
+        'name = "generated"',
+        f"axes = [{', '.join(repr(a).replace(chr(39), chr(34)) for a in axes)}]",
+        f'pulse = "{pulse}"',
+        f'rapid_mode = "{rapid_mode}"',
+        'monitor_period_ms = "2"',
+        "[machine.rapid]",
+        *(f'{a} = "{rates[a]}"' for a in axes),
+        "[machine.reference]",
+        *(f'{a} = "{format_decimal(start[a])}"' for a in axes),
+        "[offsets]",
+        "G54 = { " + ", ".join(f'{a} = "0"' for a in axes) + " }",
+        "G55 = { " + ", ".join(f'{a} = "{v}"' for a, v in g55.items()) + " }",
+    ]
+    if tools:
+        lines += ["[tool_lengths]", *(f'H{n} = "{_text(v)}"' for n, v in tools.items())]
+    return "\n".join(lines + zones_toml)
 
 
 def machines(**kwargs) -> st.SearchStrategy[Machine]:
-    """Loaded :class:`~nczones.machine.Machine` values; see :func:`machine_files`.
+    """Loaded :class:`~nczones.machine.Machine` values; takes the keywords of :func:`machine_files`.
 
     Draws whose start point falls inside the optional forbid box are skipped.
+
+    Examples
+    --------
+    >>> from hypothesis import find
+    >>> m = find(machines(axes=("X", "Y", "Z"), allow_kinds=("box",)), lambda m: True)
+    >>> m.axis_names, m.allowed.contains(m.point(m.start))
+    (('X', 'Y', 'Z'), True)
     """
     from .errors import MachineFileError
 
@@ -220,7 +386,11 @@ def machines(**kwargs) -> st.SearchStrategy[Machine]:
 
 
 def boundary_values(machine: Machine, axis: str) -> tuple[Fraction, ...]:
-    """Every zone boundary value of ``axis`` in the machine (sorted, unique)."""
+    """Every zone boundary value of ``axis`` in the machine (sorted, unique).
+
+    Polygon vertices count on both of their plane's axes; a tool-tip zone's
+    values are as the tip sees them.
+    """
     values: set[Fraction] = set()
     for z in machine.zones:
         if z.kind == "stepped":
@@ -230,6 +400,9 @@ def boundary_values(machine: Machine, axis: str) -> tuple[Fraction, ...]:
             if axis == z.limited_axis:
                 values.update(v for r in z.regions for v in (r.min, r.max) if v is not None)
         else:
+            if z.kind == "polygon" and axis in z.plane:
+                k = z.plane.index(axis)
+                values.update(v[k] for v in z.vertices)
             for a, (lo, hi) in z.bounds().items():
                 if a == axis:
                     values.update(v for v in (lo, hi) if v is not None)
@@ -237,16 +410,49 @@ def boundary_values(machine: Machine, axis: str) -> tuple[Fraction, ...]:
 
 
 @st.composite
-def _coordinate(draw: st.DrawFn, machine: Machine, axis: str, places: int, boundary_bias: float) -> Fraction:
+def _coordinate(draw: st.DrawFn, machine: Machine, axis: str, places: int, boundary_bias: float,
+                shift: Fraction = Fraction(0)) -> Fraction:
     pulse = machine.axis(axis).pulse
     bounds = boundary_values(machine, axis)
     if bounds and draw(st.floats(0, 1)) < boundary_bias:
         base = draw(st.sampled_from(bounds))
         nudge = draw(st.sampled_from((0, 0, 1, -1, 2, -2, 5, -5)))
-        return base + nudge * pulse
-    lo = bounds[0] - 20 if bounds else Fraction(-100)
-    hi = bounds[-1] + 20 if bounds else Fraction(100)
+        return base + nudge * pulse + (shift if _tip_value(machine, axis, base) else 0)
+    margin = (bounds[-1] - bounds[0]) / 50 if len(bounds) > 1 else Fraction(20)
+    lo = bounds[0] - margin if bounds else Fraction(-100)
+    hi = bounds[-1] + margin if bounds else Fraction(100)
     return draw(decimals(min_value=lo, max_value=hi, places=places))
+
+
+def _tip_value(machine: Machine, axis: str, value: Fraction) -> bool:
+    """Is ``value`` a boundary of a tool-tip zone on the tool axis (seen shifted by the tool length)?"""
+    from .zones import ZonePoint
+
+    if axis != machine.tool_axis:
+        return False
+    for z in machine.zones:
+        if z.point is ZonePoint.TIP and any(value in (lo, hi) for a, (lo, hi) in z.bounds().items() if a == axis):
+            return True
+    return False
+
+
+@st.composite
+def _inside_point(draw: st.DrawFn, machine: Machine, axes: Sequence[str], pos: dict[str, Fraction],
+                  tool_length: Fraction, places: int) -> dict[str, Fraction]:
+    """A point of the allowed set (rejection sampling in its bounding box, a few tries)."""
+    box = machine.allowed.bounding_box()
+    cand = dict(pos)
+    for _ in range(4):
+        for a in axes:
+            lo, hi = box.get(a, (None, None))
+            lo = pos[a] - 50 if lo is None else lo
+            hi = pos[a] + 50 if hi is None else hi
+            if lo > hi:
+                lo, hi = hi, lo
+            cand[a] = draw(decimals(min_value=lo, max_value=hi, places=places))
+        if machine.allowed.contains(cand, tool_length):
+            break
+    return {a: cand[a] for a in axes}
 
 
 @st.composite
@@ -256,47 +462,97 @@ def programs(
     *,
     min_blocks: int = 1,
     max_blocks: int = 8,
+    axes: Sequence[str] | None = None,
     arcs: bool = True,
     rapids: bool = True,
     incremental: bool = True,
     offsets: bool = True,
     subprograms: bool = False,
+    tool_changes: bool = True,
     boundary_bias: float = 0.6,
+    inside_bias: float = 0.0,
     places: int = 3,
 ) -> str:
-    """Valid G-code text for ``machine`` (first two axes move; others stay).
+    """Valid G-code text for ``machine``.
 
-    Moves are drawn in machine coordinates (targets biased to the zones'
-    boundaries, and a few pulses either side), then written in the program's
-    own frame: G54/G55 absolute or G91 incremental.  Arcs are quarter, half,
-    three-quarter or full circles with I J centres, so their end points lie
-    exactly on the circle.  Every number is a decimal with at most ``places``
-    digits; the first block is ``G21 G90 G17 G54 G94``.
+    Moves are drawn in machine coordinates, then written in the program's
+    own frame: G54/G55 absolute or G91 incremental, with the active tool
+    length (``G43 Hn``) subtracted from Z.  Each target is, by the knobs,
+    a point of the allowed set (``inside_bias``), a zone boundary value or
+    a few pulses either side of one (``boundary_bias``: to touch, run
+    along or barely cross boundaries; one axis is sometimes kept so the
+    move runs along a boundary), or a free value a little beyond the zones.
+
+    ``axes`` are the axes that move (default: the first two, and ``Z`` if
+    the machine has it).  Arcs (G2/G3 in G17, when X and Y move) are
+    quarter, half, three-quarter or full circles with I J centres, so their
+    end points lie exactly on the circle.  ``tool_changes`` adds
+    ``G43 Hn``/``G49`` blocks with a Z move when Z moves and the machine has
+    tool lengths.  ``subprograms`` moves the tail of the program into
+    ``O100`` called by ``M98 P100``.  Every number is a decimal with at most
+    ``places`` digits (plus the machine's own decimals); the first block is
+    ``G21 G90 G17 G54 G94``.
+
+    Examples
+    --------
+    >>> from hypothesis import find
+    >>> from nczones.gcode import segments
+    >>> m = find(machines(axes=("X", "Y", "Z")), lambda m: True)
+    >>> text = find(programs(m, min_blocks=4), lambda t: "G43" in t and "G2" in t)
+    >>> len(segments(text, m)) >= 4
+    True
     """
-    a, b = machine.axis_names[0], machine.axis_names[1]
-    pos = {a: machine.start[0], b: machine.start[1]}
+    names = machine.axis_names
+    if axes is None:
+        axes = tuple(names[:2]) + (("Z",) if "Z" in names[2:] else ())
+    axes = tuple(axes)
+    pos = dict(zip(names, machine.start))
+    tool_axis = machine.tool_axis if machine.tool_axis in axes else None
+    registers = sorted(machine.tool_lengths) if tool_changes and tool_axis else []
     offset_names = ["G54"] + (["G55"] if offsets and "G55" in machine.offsets else [])
-    lines = ["%", "G21 G90 G17 G54 G94 F600"]
+    feed = draw(st.sampled_from(("300", "600", "1200", "3000")))
+    lines = ["%", f"G21 G90 G17 G54 G94 F{feed}"]
     frame = "G54"
     distance = "G90"
+    tool_length = Fraction(0)
+    can_arc = arcs and "X" in axes and "Y" in axes
     body: list[str] = []
     n = draw(st.integers(min_blocks, max_blocks))
     for _ in range(n):
-        choices = ["line"] + (["rapid"] if rapids else []) + (["arc"] if arcs else [])
+        choices = ["line", "line"] + (["rapid"] if rapids else []) + (["arc"] if can_arc else [])
+        choices += ["tool"] if registers else []
         what = draw(st.sampled_from(choices))
         words: list[str] = []
         if offsets and len(offset_names) > 1 and draw(st.integers(0, 4)) == 0:
             frame = draw(st.sampled_from(offset_names))
             words.append(frame)
-        if incremental:
+        if incremental and what != "tool":
             new_distance = draw(st.sampled_from(("G90", "G90", "G91")))
             if new_distance != distance:
                 distance = new_distance
                 words.append(distance)
-        off = machine.offset(frame)
-        off_a, off_b = off[0], off[1]
-        if what == "arc":
-            radius = draw(decimals(min_value=Fraction(1, 10), max_value=80, places=places))
+        off = dict(zip(names, machine.offset(frame)))
+        if what == "tool":
+            if distance != "G90":
+                distance = "G90"
+                words.append("G90")
+            if tool_length and draw(st.integers(0, 2)) == 0:
+                words.append("G49")
+                tool_length = Fraction(0)
+            else:
+                h = draw(st.sampled_from(registers))
+                words.append(f"G43 H{h}")
+                tool_length = machine.tool_length(h)
+            target = dict(pos)
+            if draw(st.floats(0, 1)) < inside_bias:
+                target.update(draw(_inside_point(machine, (tool_axis,), pos, tool_length, places)))
+            else:
+                target[tool_axis] = draw(_coordinate(machine, tool_axis, places, boundary_bias, tool_length))
+            words.append(draw(st.sampled_from(("G0", "G1"))))
+            words += _words((tool_axis,), target, pos, distance, off, tool_axis, tool_length)
+        elif what == "arc":
+            a, b = "X", "Y"
+            radius = draw(decimals(min_value=Fraction(1, 10), max_value=max(Fraction(1), _extent(machine) / 12), places=places))
             direction = draw(st.sampled_from(((1, 0), (0, 1), (-1, 0), (0, -1))))
             ca, cb = pos[a] + direction[0] * radius, pos[b] + direction[1] * radius
             quarter = draw(st.integers(1, 4))
@@ -304,21 +560,26 @@ def programs(
             va, vb = pos[a] - ca, pos[b] - cb
             for _ in range(quarter % 4):
                 va, vb = (vb, -va) if clockwise else (-vb, va)
-            end = {a: ca + va, b: cb + vb}
+            target = dict(pos)
+            target.update({a: ca + va, b: cb + vb})
             words.append("G2" if clockwise else "G3")
-            target = end
-            words += _axis_words(a, b, target, pos, distance, off_a, off_b)
+            words += _words((a, b), target, pos, distance, off, tool_axis, tool_length)
             words += [f"I{format_decimal(ca - pos[a])}", f"J{format_decimal(cb - pos[b])}"]
         else:
-            target = {
-                a: draw(_coordinate(machine, a, places, boundary_bias)),
-                b: draw(_coordinate(machine, b, places, boundary_bias)),
-            }
+            target = dict(pos)
+            if draw(st.floats(0, 1)) < inside_bias:
+                target.update(draw(_inside_point(machine, axes, pos, tool_length, places)))
+            else:
+                for ax in axes:
+                    target[ax] = draw(_coordinate(machine, ax, places, boundary_bias,
+                                                  tool_length if ax == tool_axis else Fraction(0)))
             if draw(st.integers(0, 3)) == 0:  # run along a boundary: keep one axis
-                keep = draw(st.sampled_from((a, b)))
+                keep = draw(st.sampled_from(axes))
                 target[keep] = pos[keep]
+            if tool_axis and draw(st.integers(0, 2)):  # mostly planar moves
+                target[tool_axis] = pos[tool_axis]
             words.append("G0" if what == "rapid" else "G1")
-            words += _axis_words(a, b, target, pos, distance, off_a, off_b)
+            words += _words(axes, target, pos, distance, off, tool_axis, tool_length)
         body.append(" ".join(words))
         pos = target
     if subprograms and body and draw(st.booleans()):
@@ -330,7 +591,18 @@ def programs(
     return "\n".join(lines) + "\n"
 
 
-def _axis_words(a, b, target, pos, distance, off_a, off_b) -> list[str]:
-    if distance == "G91":
-        return [f"{a}{format_decimal(target[a] - pos[a])}", f"{b}{format_decimal(target[b] - pos[b])}"]
-    return [f"{a}{format_decimal(target[a] - off_a)}", f"{b}{format_decimal(target[b] - off_b)}"]
+def _extent(machine: Machine) -> Fraction:
+    box = machine.allowed.bounding_box()
+    spans = [hi - lo for lo, hi in box.values() if lo is not None and hi is not None]
+    return max(spans) if spans else Fraction(100)
+
+
+def _words(axes, target, pos, distance, off, tool_axis, tool_length) -> list[str]:
+    out = []
+    for a in axes:
+        if distance == "G91":
+            out.append(f"{a}{format_decimal(target[a] - pos[a])}")
+        else:
+            tl = tool_length if a == tool_axis else 0
+            out.append(f"{a}{format_decimal(target[a] - off[a] - tl)}")
+    return out
