@@ -110,7 +110,7 @@ def _listing(lines: list[str], hot: dict[int, str], unknown: set[int], context: 
 
 def render_html(result: Result, machine, program=None, *, planes=None, source_text: str | None = None,
                 deterministic: bool = False, listing_limit: int = 5000, context: int = 15) -> str:
-    """The self-contained HTML report.
+    r"""The self-contained HTML report.
 
     Parameters
     ----------

@@ -168,7 +168,8 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
             what += f", the first at line {result.reasons[0].span.line}"
     else:
         what = "every motion stays inside the allowed set"
-    parts = [f"{name}: {verdict}: {what}", f"{stats.get('segments', 0)} segments checked"]
+    nseg = stats.get("segments", 0)
+    parts = [f"{name}: {verdict}: {what}", f"{nseg} segment{'s' if nseg != 1 else ''} checked"]
     if not deterministic:
         parts[-1] += (f" ({stats.get('screened', 0)} by screening, "
                       f"{stats.get('z3_queries', 0)} solver queries)")

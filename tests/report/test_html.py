@@ -1,0 +1,181 @@
+"""The HTML report: self-contained, escaped, and rendered by headless Chromium with the violation marked."""
+
+import re
+import shutil
+import subprocess
+import sys
+from html.parser import HTMLParser
+
+import pytest
+
+from nczones.machine import parse_machine
+from nczones.prover import verify
+from nczones.report.html import render_html
+
+from .helpers import EX, GOLDEN, run_example
+
+CHROMIUM = next((p for p in (shutil.which(n) for n in ("chromium", "chromium-browser", "google-chrome",
+                                                          "google-chrome-stable")) if p), None)
+CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                  "--disable-dev-shm-usage"]
+needs_chromium = pytest.mark.skipif(
+    CHROMIUM is None, reason="no chromium binary on PATH (make test installs Debian's chromium when run as root "
+                             "with apt-get; otherwise install it to run the browser tests)")
+
+
+def _chromium(tmp_path, *args, timeout=60):
+    profile = tmp_path / "profile"
+    profile.mkdir(exist_ok=True)
+    return subprocess.run([CHROMIUM, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", *args],
+                          capture_output=True, text=True, timeout=timeout)
+
+
+def _external_resources(page: str) -> list[str]:
+    return re.findall(r'(?:src|href)\s*=\s*"(?!#)[^"]*"|url\((?!#)|@import|<link\b', page)
+
+
+def test_report_is_self_contained_and_complete():
+    result, m = run_example("programs/several.ngc", "grinder.toml", base=GOLDEN)
+    page = render_html(result, m, str(GOLDEN / "programs/several.ngc"))
+    assert page.startswith("<!DOCTYPE html>") and _external_resources(page) == []
+    assert page.count('<tr class="violation"') == 4
+    for line in (5, 6, 8, 9):
+        assert f'<a href="#L{line}">' in page and re.search(rf'class="line hot" id="L{line}"', page)
+    assert 'class="line" id="L4"' in page
+    assert page.count("<svg") == 1 and 'id="counterexample"' in page and 'id="violating-block-1"' in page
+    assert "z3 " + result.solver_version in page and "Timings" in page
+    # user text is escaped: the program's comment holds "& back <out>"
+    assert "&amp; back &lt;out&gt;" in page and "<out>" not in page
+
+
+def test_user_text_is_escaped_everywhere():
+    m = parse_machine('''
+[machine]
+name = "<script>alert(1)</script>"
+axes = ["X", "Y"]
+[machine.rapid]
+X = "1000"
+Y = "1000"
+[machine.reference]
+X = "0"
+Y = "0"
+[[zones]]
+name = "a<b>&\\"zone\\""
+kind = "box"
+min = { X = "0", Y = "0" }
+max = { X = "10", Y = "10" }
+''', "evil<1>.toml")
+    prog = "(<img src=x onerror=alert[2]>)\nG1 X20 F100\n"
+    result = verify(prog, m, file="<b>evil</b>.ngc")
+    page = render_html(result, m, prog)
+    assert "<script>alert" not in page and "<img" not in page and "<b>evil" not in page
+    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in page and "&lt;img src=x onerror=alert[2]&gt;" in page
+    assert "a&lt;b&gt;&amp;&quot;zone&quot;" in page
+    assert _external_resources(page) == []
+
+
+def test_mill_report_plots_the_planes_the_zones_use():
+    result, m = run_example("programs/drill_vise.ngc", "mill.toml")
+    page = render_html(result, m, str(EX / "programs/drill_vise.ngc"))
+    assert re.findall(r'data-plane="(\w+)"', page) == ["XY", "XZ"]
+    assert page.count('id="counterexample"') == 2  # marked in both planes
+
+
+def test_unknown_report_lists_the_reason():
+    result, m = run_example("programs/cutter_comp.ngc", "mill.toml")
+    page = render_html(result, m, str(EX / "programs/cutter_comp.ngc"))
+    assert 'id="reason-table"' in page and 'class="line unknown" id="L4"' in page and "verdict-unknown" in page
+
+
+def test_long_program_listing_is_windowed():
+    m_result, m = run_example("programs/notch_dip.ngc", "grinder.toml")
+    text = "G21 G90 G54\nG0 X-250 Y300\nG1 Y130 F500\n" + "G1 X-240\n" * 3000 + "G1 X50\n"
+    result = verify(text, m, file="long.ngc")
+    page = render_html(result, m, text, listing_limit=500, context=3)
+    assert 'id="L3004"' in page and 'class="line hot" id="L3004"' in page and 'id="L1500"' not in page
+    assert "not shown" in page
+
+
+class _DomProbe(HTMLParser):
+    """Collects what the browser rendered: elements with ids, classes and the text of #violation-count."""
+
+    def __init__(self):
+        super().__init__()
+        self.ids, self.rows, self.hot, self.svg_in_figure, self.body_attrs = {}, 0, [], 0, {}
+        self._stack, self._count_text, self._in_count = [], "", False
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        self._stack.append(tag)
+        if "id" in a:
+            self.ids[a["id"]] = (tag, a)
+        if tag == "body":
+            self.body_attrs = a
+        if tag == "tr" and a.get("class") == "violation":
+            self.rows += 1
+        if tag == "span" and "hot" in (a.get("class") or "").split():
+            self.hot.append(a.get("id"))
+        if tag == "svg" and "figure" in self._stack:
+            self.svg_in_figure += 1
+        self._in_count = a.get("id") == "violation-count"
+
+    def handle_endtag(self, tag):
+        while self._stack and self._stack.pop() != tag:
+            pass
+        self._in_count = False
+
+    def handle_data(self, data):
+        if self._in_count:
+            self._count_text += data
+
+
+@needs_chromium
+def test_chromium_renders_the_report_with_the_violation_marked(tmp_path):
+    result, m = run_example("programs/notch_dip.ngc", "grinder.toml")
+    page = render_html(result, m, str(EX / "programs/notch_dip.ngc"))
+    # the script fills #violation-count from the table; the browser, not Python, writes this text
+    page = page.replace('<span id="violation-count">1</span>', '<span id="violation-count">?</span>')
+    html_file = tmp_path / "report.html"
+    html_file.write_text(page, encoding="utf-8")
+    r = _chromium(tmp_path, "--dump-dom", html_file.as_uri())
+    assert r.returncode == 0, r.stderr[-2000:]
+    probe = _DomProbe()
+    probe.feed(r.stdout)
+    assert probe.body_attrs.get("data-rendered") == "yes"  # the inline script ran
+    assert probe._count_text == "1"
+    assert probe.svg_in_figure == 1
+    tag, attrs = probe.ids["counterexample"]
+    assert tag == "g"  # matplotlib's group holding the marker paths
+    assert "violating-block-1" in probe.ids and "allowed-set" in probe.ids
+    assert probe.rows == 1 and probe.hot == ["L5"]
+    assert probe.ids["verdict"][1].get("class") == "verdict verdict-unsafe"
+    # the counterexample group really contains drawn marker geometry
+    seg = r.stdout[r.stdout.index('id="counterexample"'):]
+    assert re.search(r"<(path|use)\b", seg[:3000])
+
+
+@needs_chromium
+def test_chromium_screenshot_shows_red_marks(tmp_path):
+    import matplotlib.image as mpimg
+    import numpy as np
+
+    result, m = run_example("programs/notch_dip.ngc", "grinder.toml")
+    html_file = tmp_path / "report.html"
+    html_file.write_text(render_html(result, m, str(EX / "programs/notch_dip.ngc")), encoding="utf-8")
+    shot = tmp_path / "shot.png"
+    r = _chromium(tmp_path, f"--screenshot={shot}", "--window-size=1200,1600", html_file.as_uri())
+    assert r.returncode == 0 and shot.exists(), r.stderr[-2000:]
+    img = mpimg.imread(shot)[..., :3]
+    red = (img[..., 0] > 0.6) & (img[..., 1] < 0.2) & (img[..., 2] < 0.2)  # the violation red #c00000
+    assert red.sum() > 200, "no violation marking visible in the rendered report"
+
+
+def test_cli_html(tmp_path):
+    out = tmp_path / "r.html"
+    r = subprocess.run([sys.executable, "-m", "nczones", "verify", "programs/notch_dip.ngc", "--machine",
+                        "../machines/grinder.toml", "--format", "html", "--output", str(out)],
+                       capture_output=True, text=True, cwd=EX)
+    assert r.returncode == 1, r.stderr
+    page = out.read_text(encoding="utf-8")
+    assert 'id="counterexample"' in page and '<tr class="violation"' in page

@@ -1,0 +1,78 @@
+"""The progress bar: drawn on a terminal, silent otherwise; the prover and controller report their lines."""
+
+import io
+import subprocess
+import sys
+
+from nczones.gcode import interpret
+from nczones.machine import load_machine
+from nczones.prover import verify
+from nczones.report.progress import ProgressBar, progress_for
+
+from .helpers import EX, MACHINES
+
+
+class FakeTTY(io.StringIO):
+    def isatty(self):
+        return True
+
+
+def _long_program(n=400):
+    return "G21 G90 G54\nG0 X-250 Y300\nG1 Y150 F500\n" + "".join(f"G1 X{-250 + (k % 2) * 10}\n" for k in range(n))
+
+
+def test_bar_draws_on_a_terminal(monkeypatch):
+    monkeypatch.setenv("TERM", "xterm")
+    stream = FakeTTY()
+    bar = progress_for(stream, "verify")
+    assert bar is not None
+    bar.min_interval = 0
+    m = load_machine(MACHINES / "grinder.toml")
+    prog = _long_program()
+    result = verify(prog, m, progress=bar)
+    bar.close()
+    assert result.verdict.label == "safe"
+    out = stream.getvalue()
+    assert "\rverify [" in out and "100% line 403/403" in out
+    assert out.endswith("\r")  # erased at the end, the terminal is left clean
+
+
+def test_silent_when_not_a_terminal():
+    stream = io.StringIO()
+    assert progress_for(stream, "verify") is None
+    bar = ProgressBar(stream, "verify", min_interval=0)  # even if built by hand, it stays quiet
+    bar(5, 10)
+    bar.close()
+    assert stream.getvalue() == "" and bar.calls == 1
+
+
+def test_dumb_terminal_is_silent(monkeypatch):
+    monkeypatch.setenv("TERM", "dumb")
+    assert progress_for(FakeTTY(), "verify") is None
+
+
+def test_verify_reports_increasing_lines_up_to_the_last():
+    m = load_machine(MACHINES / "grinder.toml")
+    seen = []
+    verify(_long_program(), m, progress=lambda line, total: seen.append((line, total)))
+    lines = [s[0] for s in seen]
+    assert lines == sorted(lines) and lines[-1] == 403 and {s[1] for s in seen} == {403}
+
+
+def test_simulate_reports_lines():
+    from nczones.controller import simulate
+
+    m = load_machine(MACHINES / "grinder.toml")
+    seen = []
+    run = interpret("G21 G90 G54\nG0 X-250 Y300\nG1 Y150 F5000\nG1 X-240\nG1 X-250\n", m)
+    res = simulate(run, m, progress=lambda line, total: seen.append((line, total)))
+    assert not res.alarms
+    assert [s[0] for s in seen] == [2, 3, 4, 5] and seen[-1][1] == 5
+
+
+def test_cli_stderr_is_quiet_on_a_pipe():
+    for cmd in (["verify", "programs/notch_over.ngc"], ["simulate", "programs/notch_over.ngc"]):
+        r = subprocess.run([sys.executable, "-m", "nczones", *cmd, "--machine", "../machines/grinder.toml"],
+                           capture_output=True, text=True, cwd=EX)
+        assert r.returncode == 0, r.stderr
+        assert r.stderr == ""
