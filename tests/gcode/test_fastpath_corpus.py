@@ -1,0 +1,158 @@
+"""Every corpus program: interpreted, rejected with a diagnostic, or unknown; fast == full.
+
+``test_corpus_outcomes`` runs every G-code program of ``../shared/corpus``
+(MANIFEST role ``program``) through :func:`nczones.gcode.interpret` and
+requires zero tracebacks: each program is ``complete``, ``unknown`` (with a
+reason and line) or ``rejected`` (a GcodeError with file:line:column).  It
+prints the counts and requires that at least 90% of the programs LinuxCNC
+accepts (dialect LinuxCNC*, not in ``tests/interp/bad`` or a test directory
+whose expected exit status is non-zero) are interpreted completely.
+
+``test_fast_equals_full`` is the differential test: on every program where
+the fast path handled lines, the segments equal the full interpreter's
+(everything but the span text and the H register number, which column chunks
+do not carry).  Programs over :data:`DIFF_MAX_LINES` lines run only under
+``-m long``.
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import pytest
+
+from nczones.errors import GcodeError
+from nczones.gcode import interpret
+from nczones.machine import parse_machine
+
+CORPUS = Path("/work/shared/corpus")
+MANIFEST = CORPUS / "MANIFEST.tsv"
+pytestmark = [pytest.mark.corpus, pytest.mark.skipif(not MANIFEST.is_file(), reason="corpus not available")]
+DIFF_MAX_LINES = 1_500
+
+_AXES = ["X", "Y", "Z", "A", "B", "C", "U", "V", "W"]
+MACHINE = parse_machine(
+    "[machine]\naxes = " + str(_AXES).replace("'", '"') + '\npulse = "0.0001"\n'
+    + "[machine.rapid]\n" + "\n".join(f'{a} = "1000"' for a in _AXES) + "\n"
+    + "[machine.reference]\n" + "\n".join(f'{a} = "0"' for a in _AXES) + "\n"
+    + "[tool_lengths]\n" + "\n".join(f'H{i} = "0"' for i in range(1, 100)) + "\n"
+)
+
+
+def _programs():
+    if not MANIFEST.is_file():
+        return []
+    out = []
+    for row in MANIFEST.read_text().splitlines()[1:]:
+        cols = row.split("\t")
+        if len(cols) > 6 and cols[4] == "program":
+            out.append((cols[0], cols[6]))
+    return out
+
+
+def _linuxcnc_accepts(path: str, dialect: str) -> bool:
+    if not dialect.startswith("LinuxCNC") or "/tests/interp/bad/" in path:
+        return False
+    failing = ("m98m99/03-", "m98m99/04-", "m98m99/06-", "nested-sub-error", "nested-sub-in-file-error",
+               "iniparam-failassign", "illegal", "-error")
+    return not any(f in path for f in failing)
+
+
+def _outcome(path: Path, fast: bool):
+    run = interpret(path, MACHINE, fast=fast)
+    try:
+        n = sum(len(c) for c in run)
+    except GcodeError as exc:
+        d = exc.diagnostics[0]
+        assert d.span is not None or d.file, exc.render()
+        return "rejected", d.code, run
+    if run.unsupported:
+        u = run.unsupported[0]
+        assert u.reason and (u.span is None or u.span.line >= 1)
+        return "unknown", u.code, run
+    return "complete", str(n), run
+
+
+@pytest.mark.long  # ~9 minutes on 2 cores: the full interpreter runs at ~12k lines/s
+def test_corpus_outcomes(capsys):
+    counts: dict[str, int] = {}
+    accepted = complete_accepted = 0
+    reasons: dict[str, int] = {}
+    t0 = time.perf_counter()
+    not_complete = []
+    for rel, dialect in _programs():
+        path = CORPUS / rel
+        status, code, _ = _outcome(path, True)
+        counts[status] = counts.get(status, 0) + 1
+        if status != "complete":
+            reasons[f"{status} {code}"] = reasons.get(f"{status} {code}", 0) + 1
+        if _linuxcnc_accepts(rel, dialect):
+            accepted += 1
+            if status == "complete":
+                complete_accepted += 1
+            else:
+                not_complete.append(f"{status} {code} {rel}")
+    with capsys.disabled():
+        print(f"\ncorpus outcomes {counts} in {time.perf_counter() - t0:.1f}s")
+        print("by reason:", dict(sorted(reasons.items(), key=lambda kv: -kv[1])))
+        print(f"LinuxCNC-accepted programs interpreted completely: {complete_accepted}/{accepted}")
+        for line in not_complete[:60]:
+            print("   ", line)
+    assert accepted and complete_accepted / accepted >= 0.9
+
+
+def _segment_key(s):
+    return (s.kind, s.start, s.end, s.axes, s.block, s.line, s.tool_length, s.feed_mm_min, s.plane,
+            s.clockwise, s.centre, s.radius, s.turns, s.dwell_s, s.derived)
+
+
+def _diff_cases(long: bool):
+    out = []
+    for rel, _ in _programs():
+        path = CORPUS / rel
+        try:
+            nlines = path.read_bytes().count(b"\n")
+        except OSError:
+            continue
+        if (nlines > DIFF_MAX_LINES) == long:
+            out.append(rel)
+    return out
+
+
+def _check_same(rel: str):
+    path = CORPUS / rel
+    fast = interpret(path, MACHINE)
+    try:
+        a = [_segment_key(s) for s in fast.segments()]
+    except GcodeError as exc:
+        a = ("error", exc.diagnostics[0].code, str(exc.diagnostics[0].span))
+    if fast.fast_lines == 0:
+        return None
+    full = interpret(path, MACHINE, fast=False)
+    try:
+        b = [_segment_key(s) for s in full.segments()]
+    except GcodeError as exc:
+        b = ("error", exc.diagnostics[0].code, str(exc.diagnostics[0].span))
+    assert a == b, rel
+    assert [str(u) for u in fast.unsupported] == [str(u) for u in full.unsupported]
+    return fast.fast_lines
+
+
+def test_fast_equals_full(capsys):
+    used = 0
+    lines = 0
+    for rel in _diff_cases(long=False):
+        got = _check_same(rel)
+        if got:
+            used += 1
+            lines += got
+    with capsys.disabled():
+        print(f"\nfast path used on {used} corpus programs ({lines} lines), identical to the full path")
+    assert used >= 10
+
+
+@pytest.mark.long
+@pytest.mark.parametrize("rel", _diff_cases(long=True))
+def test_fast_equals_full_large(rel):
+    _check_same(rel)
