@@ -22,6 +22,7 @@ demo: $(STAMP)
 	  test $$? -eq 1  # intentionally unsafe: the line dips into the work-head notch
 
 test: $(STAMP)
+	-bash .ci/install-chromium.sh
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)
 
 clean:
