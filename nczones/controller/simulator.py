@@ -513,6 +513,14 @@ class Controller:
                         (self.pulse[i], self.pulse[j]))
         pts = np.array(walk.points, dtype=np.int64).reshape(-1, 2)
         n = pts.shape[0]
+        if n == 0 and p1 != p0:  # no step in the plane (a circle below two pulses), only the helix moves
+            rows = list(line_steps(p0, p1))
+            plan = _Plan(seg, p0, p1, len(rows), positions=np.array(rows, dtype=np.int64),
+                         sigma=np.arange(1, len(rows) + 1) / len(rows))
+            plan.base_time_s = self._feed_time(seg, [float(e - s) for s, e in zip(seg.start, seg.end)],
+                                               _path_length(self.machine.axes, [float(e - s) for s, e in zip(seg.start, seg.end)]))
+            plan.accdec = self.mode is not Mode.CHECK
+            return plan
         pos = np.empty((n, len(p0)), dtype=np.int64)
         pos[:, i] = pts[:, 0]
         pos[:, j] = pts[:, 1]
