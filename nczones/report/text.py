@@ -172,7 +172,7 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
     parts = [f"{name}: {verdict}: {what}", f"{nseg} segment{'s' if nseg != 1 else ''} checked"]
     if not deterministic:
         parts[-1] += (f" ({stats.get('screened', 0)} by screening, "
-                      f"{stats.get('z3_queries', 0)} solver queries)")
+                      f"{stats.get('z3_queries', 0)} solver quer{'y' if stats.get('z3_queries', 0) == 1 else 'ies'})")
     if result.margin:
         parts.append(f"margin {_d(result.margin)} mm")
     if result.params:
