@@ -48,56 +48,172 @@ __all__ = ["run_with_fastpath", "MIN_RUN"]
 MIN_RUN = 64
 _MAX_SCALE = 9
 _LIMIT = 2**62
+_LIMIT_STATE = 2**59  # |position|, |offset|, feed, tool length (scaled) for the fast path
 
 _NL, _CR, _SP, _TAB = 10, 13, 32, 9
 _LP, _RP, _SEMI = ord("("), ord(")"), ord(";")
 _MAGIC = re.compile(r"\(\s*(MSG|DEBUG|PRINT|LOG|PROBE|ABORT)", re.I)
 
 
-def run_with_fastpath(interp):
-    """Yield the chunks of ``interp`` (an Interpretation), fast where possible."""
+def run_with_fastpath(interp, block_bytes: int | None = None):
+    """Yield the chunks of ``interp`` (an Interpretation), fast where possible.
+
+    The program is read in blocks of about ``block_bytes`` bytes (default
+    :data:`BLOCK_BYTES`) cut at line ends, so memory and chunk sizes are
+    bounded whatever the program length; runs of simple lines are split at
+    block ends (each piece is interpreted in columns, with the modal state
+    handed on through the interpreter).
+    """
     from . import _blocks
 
     it = interp.interpreter
-    text = interp.text
-    text = _truncate_at_percent(text)
-    data = text.encode("utf-8", errors="surrogateescape")
-    lines_info = _classify(data, it)
-    if lines_info is None:
-        yield from it.run(_blocks(text, interp.file, interp.block_delete, it))
+    size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
+    data = _source_bytes(interp)
+    if not data or _needs_language_layer(data, it, size):
+        yield from it.run(_blocks(interp.text, interp.file, interp.block_delete, it))
         return
-    simple, starts, ends_, code = lines_info
-    nlines = len(starts)
-    i = 0
     block_counter = [0]
+    line0 = 0
+    for lo, hi in _block_ranges(data, size):
+        if it.ended:
+            break
+        blk = data[lo:hi]
+        yield from _run_block(interp, blk, line0, block_counter)
+        line0 += blk.count(b"\n") + (0 if blk.endswith(b"\n") else 1)
+
+
+#: Bytes per block of the fast path (cut at a line end): about 50,000 lines of CAM code.
+BLOCK_BYTES = 1 << 20
+
+
+def _source_bytes(interp) -> bytes:
+    """The program as bytes, cut at a ``%`` line that ends it."""
+    text = _truncate_at_percent(interp.text)
+    return text.encode("utf-8", errors="surrogateescape")
+
+
+def _block_ranges(data: bytes, size: int):
+    """(lo, hi) byte ranges of about ``size`` bytes, each ending after a newline (or at the end)."""
+    n = len(data)
+    lo = 0
+    while lo < n:
+        hi = lo + size
+        if hi >= n:
+            yield lo, n
+            return
+        cut = data.find(b"\n", hi - 1)
+        hi = n if cut < 0 else cut + 1
+        yield lo, hi
+        lo = hi
+
+
+_SUSPECT = np.zeros(256, dtype=bool)
+_SUSPECT[list(b"#[/OoMm")] = True
+
+
+def _needs_language_layer(data: bytes, it, size: int) -> bool:
+    """True if the code (outside comments) has ``# [ O / M98 M99``: the whole program needs the language layer.
+
+    Only the lines holding one of the bytes ``# [ / O o M m`` can hold such a
+    token; they are stripped of comments and blanks and checked exactly.
+    """
+    if not any(data.find(bytes((ch,))) >= 0 for ch in b"#[/OoMm"):
+        return False
+    for lo, hi in _block_ranges(data, size):
+        blk = data[lo:hi]
+        b = np.frombuffer(blk, dtype=np.uint8)
+        pos = np.flatnonzero(_SUSPECT[b])
+        if pos.size == 0:
+            continue
+        nl = np.flatnonzero(b == _NL)
+        starts = np.concatenate(([0], nl + 1))
+        ends_ = np.concatenate((nl + 1, [b.size]))
+        lines = np.unique(np.searchsorted(nl, pos))  # line index of each suspect byte
+        sub = b"".join(blk[s:e] if blk[e - 1:e] == b"\n" else blk[s:e] + b"\n"
+                       for s, e in zip(starts[lines].tolist(), ends_[lines].tolist()))
+        cb = _classify(sub, it)[3][0].tobytes()
+        if any(t in cb for t in (b"#", b"[", b"O", b"/", b"M98", b"M99")):
+            return True
+    return False
+
+
+def _run_block(interp, blk: bytes, line0: int, block_counter):
+    """Interpret one block of whole lines (line ``line0`` is its first, 0-based)."""
+    it = interp.interpreter
+    simple, starts, ends_, code = _classify(blk, it)
+    nlines = len(starts)
+    if nlines == 0:
+        return
+    # maximal runs of simple lines; a run is taken fast when long enough or cut by the block end
+    edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
+    runs = edges.reshape(-1, 2).tolist()
+    fast_runs = [(a, b) for a, b in runs if b - a >= MIN_RUN or a == 0 or b == nlines]
+    i = 0
+    k = 0
     while i < nlines and not it.ended:
-        if simple[i]:
-            j = i
-            while j < nlines and simple[j]:
-                j += 1
-            if j - i >= MIN_RUN and _state_ok(it):
-                chunk = _fast_run(interp, data, starts, ends_, code, i, j, block_counter)
+        while k < len(fast_runs) and fast_runs[k][1] <= i:
+            k += 1
+        if k < len(fast_runs) and fast_runs[k][0] <= i:
+            a, b = fast_runs[k]
+            if _state_ok(it):
+                chunk = _fast_run(interp, code, i, b, block_counter, line0)
                 if chunk is not None:
                     if len(chunk):
                         yield chunk
-                    i = j
+                    i = b
                     continue
-            # fall through: full path for this run
-        j = i + 1
-        while j < nlines and not (simple[j] and _run_len(simple, j) >= MIN_RUN):
-            j += 1
-        yield from _full_piece(interp, data, starts, ends_, i, j, block_counter)
+            # the full path for this run
+            j = b
+        else:
+            j = fast_runs[k][0] if k < len(fast_runs) else nlines
+        yield from _full_piece(interp, blk, starts, ends_, i, j, block_counter, line0)
         i = j
 
 
 def _truncate_at_percent(text: str) -> str:
-    """A ``%`` line after the first line with code ends the program."""
+    """A ``%`` line after the first line with code ends the program.
+
+    Only lines holding a ``%`` are examined (plus the lines before the first
+    line with code), so this is fast on long programs.
+    """
     if "%" not in text:
         return text
+    if any(ch in text for ch in _EXOTIC_BREAKS) or text.count("\r") != text.count("\r\n"):
+        return _truncate_at_percent_slow(text)
+    # first line with code
+    pos = 0
+    first_code_end = None
+    n = len(text)
+    while pos < n:
+        nl = text.find("\n", pos)
+        end = n if nl < 0 else nl + 1
+        body = _PCT_STRIP.sub("", text[pos:end]).strip()
+        if body and not body.startswith("%"):
+            first_code_end = end
+            break
+        pos = end
+    if first_code_end is None:
+        return text
+    p = text.find("%", first_code_end)
+    while p >= 0:
+        ls = text.rfind("\n", 0, p) + 1
+        nl = text.find("\n", p)
+        le = n if nl < 0 else nl + 1
+        if _PCT_STRIP.sub("", text[ls:le]).strip().startswith("%"):
+            return text[:ls]
+        p = text.find("%", le)
+    return text
+
+
+_EXOTIC_BREAKS = ("\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x85", "\u2028", "\u2029")
+_PCT_STRIP = re.compile(r"\([^)]*\)|;.*")
+
+
+def _truncate_at_percent_slow(text: str) -> str:
     seen_code = False
     pos = 0
     for line in text.splitlines(keepends=True):
-        body = re.sub(r"\([^)]*\)|;.*", "", line).strip()
+        body = _PCT_STRIP.sub("", line).strip()
         if body.startswith("%"):
             if seen_code:
                 return text[:pos]
@@ -107,26 +223,18 @@ def _truncate_at_percent(text: str) -> str:
     return text
 
 
-def _run_len(simple, j):
-    k = j
-    n = len(simple)
-    while k < n and simple[k] and k - j < MIN_RUN:
-        k += 1
-    return k - j
-
-
 def _state_ok(it) -> bool:
     return (not it.unsupported and it.motion in (None, 0, 10, 20, 30) and not it.comp_just_off
             and not it.comp_on and not it.track)
 
 
-def _full_piece(interp, data, starts, ends_, i, j, block_counter):
-    """Run lines i..j-1 through the language layer and the interpreter."""
+def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
+    """Run lines i..j-1 (of a block whose first line is ``line0``) through the language layer and the interpreter."""
     from . import _blocks
 
     it = interp.interpreter
     piece = data[starts[i]:ends_[j - 1]].decode("utf-8", errors="surrogateescape")
-    offset = i  # line numbers inside the piece start at 1
+    offset = i + line0  # line numbers inside the piece start at 1
 
     from .interpreter import Unsupported
     from .expr import Parameters
@@ -136,150 +244,188 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter):
     it.bind_parameters(params)
 
     def shifted():
-        try:
-            for b in iter_blocks(piece, file=interp.file, params=params, block_delete=interp.block_delete):
-                span = replace(b.span, line=b.span.line + offset)
-                words = tuple(replace(w, span=replace(w.span, line=w.span.line + offset)) for w in b.words)
-                nb = replace(b, words=words, span=span, index=block_counter[0])
-                block_counter[0] += 1
-                yield nb
-        except UnsupportedGcode as exc:
-            d = exc.diagnostic
-            span = replace(d.span, line=d.span.line + offset) if d.span is not None else None
-            it.unsupported.append(Unsupported(d.code, d.message, span))
+        # errors of the language layer carry piece-relative lines: shift them here; the
+        # interpreter's errors come from the shifted blocks and are already right
+        gen = iter_blocks(piece, file=interp.file, params=params, block_delete=interp.block_delete)
+        while True:
+            try:
+                b = next(gen)
+            except StopIteration:
+                return
+            except UnsupportedGcode as exc:
+                d = exc.diagnostic
+                span = replace(d.span, line=d.span.line + offset) if d.span is not None else None
+                it.unsupported.append(Unsupported(d.code, d.message, span))
+                return
+            except InputError as exc:
+                diags = [replace(d, span=replace(d.span, line=d.span.line + offset)) if d.span is not None else d
+                         for d in exc.diagnostics]
+                raise GcodeError(diags) from None
+            span = replace(b.span, line=b.span.line + offset)
+            words = tuple(replace(w, span=replace(w.span, line=w.span.line + offset)) for w in b.words)
+            nb = replace(b, words=words, span=span, index=block_counter[0])
+            block_counter[0] += 1
+            yield nb
 
-    try:
-        yield from it.run(shifted())
-    except InputError as exc:
-        diags = [replace(d, span=replace(d.span, line=d.span.line + offset)) if d.span is not None else d
-                 for d in exc.diagnostics]
-        raise GcodeError(diags) from None
+    yield from it.run(shifted())
 
 
 # --------------------------------------------------------------------------- classification
 
 
 def _classify(data: bytes, it):
-    """Per line: simple or not; line byte ranges; the code bytes (comments/blanks removed)."""
+    """Per line of a block: simple or not; line byte ranges; the code bytes (comments/blanks removed).
+
+    Returns ``(simple, starts, ends, (code, code_line))``: ``code`` holds the
+    upper-cased code bytes of all lines in order and ``code_line`` the
+    (block-relative) line of each.
+    """
     b = np.frombuffer(data, dtype=np.uint8)
-    if b.size == 0:
-        return None
     nl = np.flatnonzero(b == _NL)
     starts = np.concatenate(([0], nl + 1))
     ends_ = np.concatenate((nl, [b.size]))
     if starts[-1] >= b.size:
         starts, ends_ = starts[:-1], ends_[:-1]
     nlines = len(starts)
-    line_of = np.zeros(b.size, dtype=np.int64)
-    line_of[nl[nl + 1 < b.size] + 1] = 1
-    line_of = np.cumsum(line_of, dtype=np.int64)
-    # parentheses: depth relative to the line start
-    op = (b == _LP).astype(np.int32)
-    cl = (b == _RP).astype(np.int32)
-    if not op.any():
-        op = cl = None
     bad = np.zeros(nlines, dtype=bool)
-    if op is not None:
-        depth = np.cumsum(op - cl, dtype=np.int32)
-        base = np.concatenate(([0], depth))[starts]
+    if b.size == 0:
+        return ~bad, starts, ends_, (np.zeros(0, np.uint8), np.zeros(0, np.int32))
+    line_of = np.zeros(b.size, dtype=np.int32)
+    line_of[nl[nl + 1 < b.size] + 1] = 1
+    line_of = np.cumsum(line_of, dtype=np.int32)
+    has_paren = data.find(b"(") >= 0 or data.find(b")") >= 0
+    if has_paren:
+        # parentheses: depth relative to the line start
+        op = (b == _LP).view(np.int8)
+        cl = (b == _RP).view(np.int8)
+        depth = np.cumsum(op.astype(np.int32) - cl, dtype=np.int32)
+        base = np.concatenate((np.zeros(1, np.int32), depth))[starts]
         rel = depth - base[line_of]
         in_paren = (rel > 0) | (cl == 1)
         # nesting or unbalanced: not simple
         bad[line_of[(rel > 1) | (rel < 0)]] = True
         bad |= (ends_ > starts) & (rel[np.maximum(ends_ - 1, 0)] > 0)
     else:
-        in_paren = np.zeros(b.size, dtype=bool)
-    semi = (b == _SEMI) & ~in_paren
-    if semi.any():
+        op = None
+        in_paren = None
+    if data.find(b";") >= 0:
+        semi = b == _SEMI
+        if in_paren is not None:
+            semi &= ~in_paren
         sc = np.cumsum(semi, dtype=np.int32)
-        sbase = np.concatenate(([0], sc))[starts]
+        sbase = np.concatenate((np.zeros(1, np.int32), sc))[starts]
         in_semi = (sc - sbase[line_of]) > 0
-        comment = in_paren | in_semi
+        comment = in_semi if in_paren is None else (in_paren | in_semi)
     else:
         comment = in_paren
-    blank = (b == _SP) | (b == _TAB) | (b == _CR) | (b == _NL)
-    keep = ~comment & ~blank
-    c = b[keep].copy()
+    hb = np.bincount(b, minlength=256)
+    if int(hb[:33].sum()) == int(hb[[_SP, _TAB, _CR, _NL]].sum()):
+        keep = b > 32  # no control bytes but blanks
+    else:
+        keep = _KEEP[b]
+    if comment is not None:
+        keep &= ~comment
+    c = b[keep]
+    if hb[97:123].any():
+        c = _UPPER[c]
     cl_line = line_of[keep]
-    # lower -> upper case
-    low = (c >= 97) & (c <= 122)
-    c[low] -= 32
+    allowed = _allowed_table(it)
+    hist = np.bincount(c, minlength=256) if comment is not None else hb
+    if np.any(hist[~allowed & _KEEP]) or (comment is not None and np.any(hist[~allowed])):
+        notok = ~allowed[c]
+        bad[cl_line[notok]] = True
+    # magic comments: rare; check by regex on lines with '('
+    if op is not None:
+        paren_lines = np.unique(line_of[op == 1])
+        for ln in paren_lines.tolist():
+            if not bad[ln] and _MAGIC.search(data[starts[ln]:ends_[ln]].decode("latin-1")):
+                bad[ln] = True
+    return ~bad, starts, ends_, (c, cl_line)
+
+
+def _allowed_table(it) -> np.ndarray:
     letters = set(b"GXYZIJKFN") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
     allowed = np.zeros(256, dtype=bool)
     for ch in letters | set(b"0123456789.+-"):
         allowed[ch] = True
-    bad[cl_line[~allowed[c]]] = True
-    # control flow, parameters, subprograms: the whole program needs the language layer
-    cb = c.tobytes()
-    if any(t in cb for t in (b"#", b"[", b"O", b"/", b"M98", b"M99")):
-        return None
-    # magic comments: rare; check by regex on lines with '('
-    paren_lines = np.unique(line_of[op == 1]) if op is not None else np.zeros(0, np.int64)
-    for ln in paren_lines.tolist():
-        if not bad[ln] and _MAGIC.search(data[starts[ln]:ends_[ln]].decode("latin-1")):
-            bad[ln] = True
-    return ~bad, starts, ends_, (c, cl_line)
+    for ch in letters:  # lower case is upper-cased before the code bytes are tested
+        allowed[ch + 32] = True
+    return allowed
+
+
+_KEEP = np.ones(256, dtype=bool)
+_KEEP[[_SP, _TAB, _CR, _NL]] = False
+_UPPER = np.arange(256, dtype=np.uint8)
+_UPPER[97:123] -= 32
+_POW10 = 10 ** np.arange(19, dtype=np.int64)
 
 
 # --------------------------------------------------------------------------- one run
 
 
 def _parse_words(c, cl_line, lo_line, hi_line):
-    """Words of lines [lo, hi): (line, letter, int value, decimals) arrays, or None if malformed."""
+    """Words of lines [lo, hi): (line, letter, int value, decimals) arrays, or None if malformed.
+
+    The value of a word is the integer of its digits (the decimal point
+    removed); ``decimals`` counts the digits after the point.  At most 18
+    digits, so no value can overflow ``int64``.
+    """
     sel_lo = np.searchsorted(cl_line, lo_line)
     sel_hi = np.searchsorted(cl_line, hi_line)
     cc = c[sel_lo:sel_hi]
     ln = cl_line[sel_lo:sel_hi]
     if cc.size == 0:
-        return np.zeros(0, np.int64), np.zeros(0, np.uint8), np.zeros(0, np.int64), np.zeros(0, np.int64)
-    is_letter = (cc >= 65) & (cc <= 90)
+        return np.zeros(0, np.int32), np.zeros(0, np.uint8), np.zeros(0, np.int64), np.zeros(0, np.int64)
+    is_letter = cc >= 65  # the classification let only letters, digits and . + - through
     # every line's first code byte must be a letter
-    first = np.ones(cc.size, dtype=bool)
-    first[1:] = ln[1:] != ln[:-1]
-    if np.any(first & ~is_letter):
+    if not is_letter[0] or np.any(~is_letter[1:] & (ln[1:] != ln[:-1])):
         return None
     wstart = np.flatnonzero(is_letter)
-    wend = np.concatenate((wstart[1:], [cc.size]))
-    # a word ends at the next letter or at the end of its line
     nwords = wstart.size
-    word_id = np.cumsum(is_letter) - 1
-    nstart = wstart + 1
-    nlen = wend - nstart
-    if np.any(nlen <= 0):
+    wend = np.empty(nwords, dtype=np.int64)
+    wend[:-1] = wstart[1:]
+    wend[-1] = cc.size
+    if np.any(wend - wstart <= 1):
         return None
-    # numbers: sign only first, at most one '.', at least one digit, at most 18 digits
-    isdigit = (cc >= 48) & (cc <= 57)
-    isdot = cc == 46
-    issign = (cc == 43) | (cc == 45)
-    pos_in_word = np.arange(cc.size) - wstart[word_id]
-    if np.any(issign & (pos_in_word != 1)):
+    d = cc - np.uint8(48)  # digits 0..9; '.', '+', '-' wrap to 254, 251, 253
+    isdigit = d < 10
+    isdot = d == 254
+    issign = (d == 251) | (d == 253)
+    # a sign only right after the letter
+    sp = np.flatnonzero(issign)
+    if sp.size and not is_letter[sp - 1].all():
         return None
-    ndots = np.bincount(word_id[isdot], minlength=nwords)
-    ndig = np.bincount(word_id[isdigit], minlength=nwords)
-    if np.any(ndots > 1) or np.any(ndig == 0) or np.any(ndig > 18):
+    dcum = np.cumsum(isdigit, dtype=np.int32)
+    last = wend - 1
+    ndig = dcum[last] - dcum[wstart]
+    if np.any(ndig == 0) or np.any(ndig > 18):
         return None
-    # decimals: digits after the dot
-    dotpos = np.full(nwords, -1, dtype=np.int64)
-    dotpos[word_id[isdot]] = np.flatnonzero(isdot)
-    after = isdigit & (dotpos[word_id] >= 0) & (np.arange(cc.size) > dotpos[word_id])
-    decimals = np.bincount(word_id[after], minlength=nwords).astype(np.int64)
-    # integer value of the digit string: sum digit * 10**(digits to its right)
-    d = (cc - 48).astype(np.int64)
-    d[~isdigit] = 0
-    dig_cum = np.cumsum(isdigit[::-1])[::-1]  # digits at or after each position, whole array
-    wend_cum = np.concatenate((dig_cum, [0]))[wend]
-    right = dig_cum - wend_cum[word_id] - 1
-    right[~isdigit] = 0
-    pow10 = 10 ** np.arange(19, dtype=np.int64)
-    contrib = d * pow10[np.clip(right, 0, 18)]
-    value = np.add.reduceat(contrib, wstart) if nwords else contrib[:0]
-    neg = np.zeros(nwords, dtype=bool)
-    neg[word_id[cc == 45]] = True
-    value = np.where(neg, -value, value)
+    decimals = np.zeros(nwords, dtype=np.int64)
+    dots = np.flatnonzero(isdot)
+    word_id = None
+    if dots.size or sp.size:
+        word_id = np.cumsum(is_letter, dtype=np.int32) - 1
+    if dots.size:
+        dw = word_id[dots]
+        if np.any(dw[1:] == dw[:-1]):
+            return None  # two points in one word
+        decimals[dw] = dcum[last[dw]] - dcum[dots]
+    # integer value of the digit string: sum digit * 10**(digits to its right); the digits
+    # of word w are the ndig[w] consecutive entries of the digit list starting at first[w]
+    digits = d[isdigit].astype(np.int64)
+    first = np.zeros(nwords, dtype=np.int64)
+    np.cumsum(ndig[:-1], out=first[1:])
+    right = np.repeat(first + (ndig - 1), ndig) - np.arange(digits.size, dtype=np.int64)
+    digits *= _POW10[right]
+    value = np.add.reduceat(digits, first)
+    if sp.size:
+        neg = np.zeros(nwords, dtype=bool)
+        neg[word_id[sp[cc[sp] == 45]]] = True
+        value = np.where(neg, -value, value)
     return ln[wstart], cc[wstart], value, decimals
 
 
-def _fast_run(interp, data, starts, ends_, code, lo, hi, block_counter):
+def _fast_run(interp, code, lo, hi, block_counter, line0=0):
     """Interpret simple lines lo..hi-1 in columns; None to send them to the full path."""
     it = interp.interpreter
     c, cl_line = code
@@ -343,25 +489,27 @@ def _fast_run(interp, data, starts, ends_, code, lo, hi, block_counter):
     def scaled(mask):
         v = wval[mask]
         e = S - wdec[mask] - (1 if inch else 0)
-        out = v * (10 ** e)
+        out = v * _POW10[e]
         if inch:
             out = out * 254
         return out
 
-    axis_present = np.zeros((n, na), dtype=bool)
-    axis_val = np.zeros((n, na), dtype=np.int64)
-    for letter, k in letter_codes.items():
-        m = wletter == letter
-        if not m.any():
-            continue
-        rows = rel[m]
-        axis_present[rows, k] = True
-        if it.rotary[k]:
-            e = S - wdec[m]
-            axis_val[rows, k] = wval[m] * (10 ** e)
-        else:
-            axis_val[rows, k] = scaled(m)
-    moving = axis_present.any(axis=1)
+    axis_present = []
+    axis_val = []
+    for k, a in enumerate(axes):
+        pres = np.zeros(n, dtype=bool)
+        val = np.zeros(n, dtype=np.int64)
+        m = wletter == ord(a)
+        if m.any():
+            rows = rel[m]
+            pres[rows] = True
+            if it.rotary[k]:
+                val[rows] = wval[m] * _POW10[S - wdec[m]]
+            else:
+                val[rows] = scaled(m)
+        axis_present.append(pres)
+        axis_val.append(val)
+    moving = np.logical_or.reduce(axis_present) if na else np.zeros(n, dtype=bool)
     # I J K
     ijk = {}
     for letter in "IJK":
@@ -401,18 +549,25 @@ def _fast_run(interp, data, starts, ends_, code, lo, hi, block_counter):
     if it.feed_mode == 94 and np.any(feedmove & (feed_line == 0)):
         return None
     # positions
-    pos0 = np.array([_scaled_int(p, S) for p in it.pos], dtype=np.int64)
-    off = np.array([_scaled_int(o, S) for o in it.off], dtype=np.int64)
-    if it.absolute:
-        target = np.where(axis_present, axis_val + off, 0)
-        pidx = np.where(axis_present, np.arange(n)[:, None], -1)
-        pidx = np.maximum.accumulate(pidx, axis=0)
-        end = np.where(pidx >= 0, target[np.maximum(pidx, 0), np.arange(na)], pos0)
-    else:
-        if np.sum(np.abs(axis_val).astype(np.float64), axis=0).max(initial=0) + np.abs(pos0).max(initial=0) > 2.0**60:
-            return None
-        end = pos0 + np.cumsum(axis_val, axis=0)
-    start = np.vstack((pos0[None, :], end[:-1]))
+    pos0 = [_scaled_int(p, S) for p in it.pos]
+    off = [_scaled_int(o, S) for o in it.off]
+    if max(map(abs, pos0 + off + [f0, _scaled_int(it.tlo, S)]), default=0) > _LIMIT_STATE:
+        return None  # the state's numbers could overflow int64 in sums: the full path (exact ints)
+    end = np.empty((n, na), dtype=np.int64)
+    ar = np.arange(n, dtype=np.int64) if it.absolute else None
+    for k in range(na):
+        pres, val = axis_present[k], axis_val[k]
+        if it.absolute:
+            # forward fill of the last programmed value (plus the work offset)
+            pidx = np.maximum.accumulate(np.where(pres, ar, -1))
+            col = val[np.maximum(pidx, 0)] + off[k]
+            end[:, k] = np.where(pidx >= 0, col, pos0[k])
+        else:
+            if float(np.abs(val).astype(np.float64).sum()) + abs(pos0[k]) > 2.0**60:
+                return None
+            np.cumsum(val, out=end[:, k])
+            end[:, k] += pos0[k]
+    start = np.vstack((np.array(pos0, dtype=np.int64)[None, :], end[:-1]))
     emit = moving | arc_rows
     rows = np.flatnonzero(emit)
     m = rows.size
@@ -456,7 +611,7 @@ def _fast_run(interp, data, starts, ends_, code, lo, hi, block_counter):
     block_counter[0] += int(has_word.sum())
     tl = _scaled_int(it.tlo, S)
     chunk = MotionChunk(
-        axes, S, kind=kind, start=st, end=en, line=(rows + lo + 1).astype(np.int64),
+        axes, S, kind=kind, start=st, end=en, line=(rows + (lo + 1 + line0)).astype(np.int64),
         block=block_of_line[rows].astype(np.int64), tool_length=np.full(m, tl, dtype=np.int64),
         centre=centre, plane=plane_col, clockwise=cw, turns=turns,
         feed=(feed_line[rows] if it.feed_mode == 94 else None), file=interp.file,

@@ -1,0 +1,196 @@
+"""The fast path reads programs in blocks: every block size gives the full interpreter's segments.
+
+``run_with_fastpath(interp, block_bytes=k)`` cuts the program into blocks of
+about ``k`` bytes at line ends and splits runs of simple lines there; the
+segments (kinds, exact coordinates, centres, feeds, lines, blocks) must not
+depend on ``k`` and must equal the full interpreter's.  Also: numbers that
+could overflow ``int64`` go to the full path (exact), and the ``%`` cut and
+the digit parser agree with their simple reference versions.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from nczones.errors import GcodeError
+from nczones.gcode import interpret
+from nczones.gcode import fastpath
+from nczones.machine import parse_machine
+
+MACHINE = parse_machine(
+    '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\n[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
+    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[tool_lengths]\nH1 = "100"\n'
+)
+
+
+def _key(s):
+    return (s.kind, s.start, s.end, s.block, s.line, s.tool_length, s.feed_mm_min, s.plane, s.clockwise,
+            s.centre, s.radius, s.turns, s.dwell_s, s.derived)
+
+
+def _full(text: str):
+    run = interpret(text, MACHINE, fast=False)
+    try:
+        return [_key(s) for s in run.segments()], [str(u) for u in run.unsupported]
+    except GcodeError as exc:
+        return ("error", str(exc.diagnostics[0].span)), []
+
+
+def _fast(text: str, block_bytes: int):
+    run = interpret(text, MACHINE)
+    try:
+        segs = [_key(s) for c in fastpath.run_with_fastpath(run, block_bytes=block_bytes) for s in c.segments()]
+    except GcodeError as exc:
+        return ("error", str(exc.diagnostics[0].span)), [], run.fast_lines
+    return segs, [str(u) for u in run.unsupported], run.fast_lines
+
+
+PROGRAM = """(a CAM program with everything the fast path handles, and some it does not)
+G21 G90 G17 G54
+G43 H1 G0 Z5 (tool length)
+N10 G1 X1.5 Y-2.25 F800
+X1.6 Y-2.2
+x1.7 y-2.1 ; lower case and a semicolon comment
+  X1.8   Y-2.0
+G2 X2.8 Y-2.0 I0.5 J0
+G3 X1.8 Y-2.0 R0.5
+G1 X1.9
+M3 S1000
+X2.0 Y-1.9 Z-1.0
+G0 Z5
+G91
+G1 X0.1 Y0.1
+X0.1
+X-0.05 Y0.025 Z-0.125
+G2 X0.2 Y0 I0.1 J0
+G90
+G20
+G1 X0.1 Y0.2
+X0.15 Y0.25 F10.5
+G4 P0.5
+G21
+G1 X3 Y3 F100
+(MSG, a magic comment)
+X3.5
+G1 X4 Z0
+G18
+G2 X4 Z-2 K-1 I0
+G17
+G1 X4.5 Y4.5
+M30
+"""
+
+
+def test_every_block_size_gives_the_full_interpreters_segments():
+    want = _full(PROGRAM)
+    assert want[0] and want[0][0] != "error"
+    n = len(PROGRAM.encode())
+    sizes = list(range(1, 80)) + list(range(80, n + 20, 7))
+    used = 0
+    for k in sizes:
+        segs, unsupported, fast_lines = _fast(PROGRAM, k)
+        assert (segs, unsupported) == want, k
+        used = max(used, fast_lines)
+    assert used > 10  # the fast path really took part
+
+
+@st.composite
+def cam_programs(draw):
+    lines = [draw(st.sampled_from(["G21 G90 G17", "G20 G91 G17", "G21 G91 G17", "G90"]))]
+    mode = None
+    for _ in range(draw(st.integers(1, 40))):
+        kind = draw(st.sampled_from(["move", "move", "move", "g", "comment", "blank", "other", "arc"]))
+        if kind == "g":
+            mode = draw(st.sampled_from(["G0", "G1"]))
+            lines.append(f"{mode} F{draw(st.integers(1, 2000))}")
+        elif kind == "move" and mode is not None:
+            x = Fraction(draw(st.integers(-99999, 99999)), 10 ** draw(st.integers(0, 4)))
+            y = Fraction(draw(st.integers(-99999, 99999)), 10 ** draw(st.integers(0, 4)))
+            lines.append(f"X{float(x):.4f} Y{float(y):.3f}")
+        elif kind == "arc":
+            r = draw(st.integers(1, 50))
+            lines.append(f"G2 X{2 * r} Y0 I{r} J0 F100")
+            lines.append(f"G3 X0 Y0 I-{r} J0")
+            mode = "G3"
+        elif kind == "comment":
+            lines.append("(comment G1 X99)")
+        elif kind == "blank":
+            lines.append("")
+        else:
+            lines.append(draw(st.sampled_from(["M8", "S500 M3", "G4 P1", "T1 M6"])))
+    return "\n".join(lines) + "\n"
+
+
+@settings(max_examples=25, deadline=None, derandomize=True)
+@given(cam_programs(), st.integers(1, 200))
+def test_random_programs_any_block_size(text, k):
+    want = _full(text)
+    segs, unsupported, _ = _fast(text, k)
+    assert (segs, unsupported) == want
+
+
+def test_numbers_that_could_overflow_go_to_the_full_path():
+    big = "G21 G90 G17\nG1 F100\n" + "".join(f"X{123456789012 + i}.123456 Y-98765432109.87654\n" for i in range(80))
+    want = _full(big)
+    segs, unsupported, fast_lines = _fast(big, 1 << 20)
+    assert (segs, unsupported) == want
+    assert fast_lines == 0  # 10**6 scale times 1.2e11 is beyond the int64 guard: not taken fast
+    assert want[0][-1][2][0] == Fraction(123456789012 + 79) + Fraction(123456, 10**6)
+
+
+def test_incremental_sum_overflow_goes_to_the_full_path():
+    text = "G21 G91 G17\nG1 F100\n" + "X99999999999.999999\n" * 100
+    want = _full(text)
+    segs, _, fast_lines = _fast(text, 1 << 20)
+    assert segs == want[0]
+    assert fast_lines == 0
+    assert want[0][-1][2][0] == 100 * Fraction(99999999999999999, 10**6)
+
+
+def test_language_layer_programs_are_not_split():
+    text = "G1 F100\n" + "X1 Y1\n" * 100 + "o100 sub\nG1 X2\no100 endsub\no100 call\nM30\n"
+    assert fastpath._needs_language_layer(text.encode(), interpret(text, MACHINE).interpreter, 64)
+    assert not fastpath._needs_language_layer(b"(Operation / M98 in a comment)\nG1 X1 F1\n",
+                                              interpret("", MACHINE).interpreter, 64)
+    assert fastpath._needs_language_layer(b"G1 X1 F1\nm 9 8 P100\n", interpret("", MACHINE).interpreter, 4)
+    assert _fast(text, 50)[:2] == _full(text)
+
+
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(st.lists(st.sampled_from(["G1 X1", "%", " % (x)", "(c) %", "; %", "(only)", "", "%a", "\r", "X2\r"]),
+                max_size=8))
+def test_percent_cut_matches_the_line_by_line_rule(parts):
+    text = "\n".join(parts) + ("\n" if parts else "")
+    assert fastpath._truncate_at_percent(text) == fastpath._truncate_at_percent_slow(text)
+
+
+@settings(max_examples=80, deadline=None, derandomize=True)
+@given(st.lists(st.tuples(st.sampled_from("XYZIJKF"), st.integers(-10**12, 10**12), st.integers(0, 6),
+                          st.booleans()), min_size=1, max_size=12))
+def test_digit_parser_is_exact(words):
+    text = []
+    want = []
+    for letter, v, dec, plus in words:
+        digits = str(abs(v)).rjust(dec + 1, "0")
+        lit = digits[: len(digits) - dec] + ("." + digits[len(digits) - dec:] if dec else "")
+        sign = "-" if v < 0 else ("+" if plus else "")
+        text.append(f"{letter}{sign}{lit}")
+        want.append(Fraction(v, 10**dec))
+    code = np.frombuffer(" ".join(text).encode(), dtype=np.uint8)
+    code = code[code != 32]
+    parsed = fastpath._parse_words(code, np.zeros(code.size, dtype=np.int32), 0, 1)
+    assert parsed is not None
+    _, letters, value, dec = parsed
+    got = [Fraction(int(v), 10 ** int(d)) for v, d in zip(value, dec)]
+    assert got == want
+    assert bytes(letters.tolist()).decode() == "".join(w[0] for w in words)
+
+
+@pytest.mark.parametrize("bad", ["X1.2.3", "X+-1", "X", "X1-2", "1X2", "X.", "X1234567890123456789"])
+def test_digit_parser_refuses_malformed_words(bad):
+    code = np.frombuffer(bad.encode(), dtype=np.uint8)
+    assert fastpath._parse_words(code, np.zeros(code.size, dtype=np.int32), 0, 1) is None
