@@ -344,7 +344,7 @@ def _classify(data: bytes, it):
 
 
 def _allowed_table(it) -> np.ndarray:
-    letters = set(b"GXYZIJKFN") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
+    letters = set(b"GIJKFN") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
     allowed = np.zeros(256, dtype=bool)
     for ch in letters | set(b"0123456789.+-"):
         allowed[ch] = True

@@ -194,3 +194,12 @@ def test_digit_parser_is_exact(words):
 def test_digit_parser_refuses_malformed_words(bad):
     code = np.frombuffer(bad.encode(), dtype=np.uint8)
     assert fastpath._parse_words(code, np.zeros(code.size, dtype=np.int32), 0, 1) is None
+
+
+def test_axis_words_the_machine_lacks_are_never_dropped():
+    xy = parse_machine('[machine]\naxes = ["X", "Y"]\n[machine.rapid]\nX = "1"\nY = "1"\n'
+                       '[machine.reference]\nX = "0"\nY = "0"\n')
+    text = "G1 F100\n" + "X1 Y1\n" * 100 + "X2 Z5\n" + "X1 Y1\n" * 100
+    with pytest.raises(GcodeError) as e:
+        list(interpret(text, xy).segments())
+    assert e.value.diagnostics[0].code == "GC203" and e.value.diagnostics[0].span.line == 102
