@@ -48,6 +48,7 @@ class SegmentKind(enum.IntEnum):
     ARC = 1  # G2/G3, helices included
     RAPID = 2  # G0 and derived rapids; expanded by the machine's rapid_mode downstream
     DWELL = 3  # G4: no motion, start == end
+    DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.cylinder
 
 
 class Plane(enum.IntEnum):

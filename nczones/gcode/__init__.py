@@ -101,9 +101,13 @@ class Interpretation:
         self.machine = machine
         self.file = file
         self.block_delete = block_delete
-        self.interpreter = Interpreter(machine, file=file, arc_tolerance=arc_tolerance,
-                                       track_dependencies=track_dependencies, chunk_size=chunk_size)
-        self.fast = fast and not track_dependencies
+        from .cylindrical import CylindricalInterpreter, uses_cylindrical
+
+        cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
+        cls = CylindricalInterpreter if cylindrical else Interpreter
+        self.interpreter = cls(machine, file=file, arc_tolerance=arc_tolerance,
+                               track_dependencies=track_dependencies, chunk_size=chunk_size)
+        self.fast = fast and not track_dependencies and not cylindrical
         self.fast_lines = 0
         self._started = False
         self.finished = False

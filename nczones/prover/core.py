@@ -319,6 +319,10 @@ class Prover:
 
     def check(self, seg: Segment) -> _Outcome:
         self.stats["segments"] += 1
+        if seg.kind is SegmentKind.DEVELOPED_ARC or (seg.extra and "cylinder_radius" in dict(seg.extra)):
+            from .cylindrical import check_cylindrical  # G07.1: pi enclosed, see prover/cylindrical.py
+
+            return check_cylindrical(self, seg)
         if self._param_relevant(seg):
             return self._check_with_params(seg)
         return self._check_concrete(seg, ())
