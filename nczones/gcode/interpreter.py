@@ -41,6 +41,7 @@ from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import Block, Word
+from .lexer import _fraction
 
 __all__ = [
     "Interpreter",
@@ -71,7 +72,7 @@ _GROUP_OF: dict[int, int] = {}
 for _g, _codes in {
     0: (40, 100, 280, 281, 300, 301, 520, 530, 920, 921, 922, 923),
     1: (0, 10, 20, 30, 330, 331, 382, 383, 384, 385, 730, 760, 800, 810, 820, 830, 840, 850,
-        860, 870, 880, 890, 50, 51, 52, 53, 61),
+        860, 870, 880, 890, 50, 51, 52, 53, 62, 700, 710, 711, 712, 720, 721, 722),
     2: (170, 180, 190, 171, 181, 191),
     3: (900, 910),
     4: (901, 911),
@@ -110,7 +111,7 @@ _UNSUPPORTED_G = {
     51: "quadratic B-spline (G5.1) is not modelled",
     52: "NURBS (G5.2) is not modelled",
     53: "NURBS (G5.3) is not modelled",
-    61: "NURBS (G6.2) is not modelled",
+    62: "NURBS (G6.2) is not modelled",
     870: "back boring cycle (G87) is not modelled",
     880: "boring cycle with manual retract (G88) lets the operator move the spindle",
     432: "additional tool length offset (G43.2) is not modelled",
@@ -130,6 +131,10 @@ _UNSUPPORTED_G = {
     700: "lathe finishing cycle (G70) is not modelled",
     710: "lathe roughing cycle (G71) is not modelled",
     720: "lathe facing cycle (G72) is not modelled",
+    711: "lathe roughing cycle (G71.1) is not modelled",
+    721: "lathe facing cycle (G72.1) is not modelled",
+    712: "lathe roughing cycle (G71.2) is not modelled",
+    722: "lathe facing cycle (G72.2) is not modelled",
     740: "left-hand tapping cycle (G74) is not modelled",
     71: "cylindrical interpolation (G7.1) is not modelled",
     1070: "cylindrical interpolation (G107) is not modelled",
@@ -165,10 +170,38 @@ class Unsupported:
 
 
 def _gkey(value: Fraction) -> int | None:
-    k = value * 10
-    if k.denominator != 1:
+    d = value.denominator
+    if d == 1:
+        return value.numerator * 10
+    n = value.numerator * 10
+    if n % d:
         return None
-    return int(k)
+    return n // d
+
+
+_new = object.__new__
+# Segment slot setters: building a frozen dataclass through __init__ costs ~3x more
+# (one object.__setattr__ per field); the result is an ordinary, equal Segment.
+_SEG_SETTERS = tuple(getattr(Segment, f).__set__ for f in (
+    "kind", "start", "end", "axes", "block", "span", "tool_length", "feed_mm_min", "plane", "clockwise",
+    "centre", "radius", "turns", "dwell_s", "derived", "tool_register", "deps_start", "deps_end", "extra"))
+
+
+def _segment(*values) -> Segment:
+    """``Segment(*values)`` (all 19 fields, in order) without the frozen-dataclass overhead."""
+    seg = _new(Segment)
+    for setter, v in zip(_SEG_SETTERS, values):
+        setter(seg, v)
+    return seg
+
+
+def _qadd(a: Fraction, b: Fraction) -> Fraction:
+    """``a + b`` for Fractions, with a shortcut for equal denominators (decimal inputs)."""
+    da = a.denominator
+    db = b.denominator
+    if da == db:
+        return _fraction(a.numerator + b.numerator, da)
+    return _fraction(a.numerator * db + b.numerator * da, da * db)
 
 
 def _gname(key: int) -> str:
@@ -285,6 +318,7 @@ class Interpreter:
         self.g92 = list(z)
         self.g92_params = list(z)
         self.home = {280: tuple(machine.reference), 300: tuple(machine.reference)}
+        self.tool_table: dict[int, tuple[Fraction, dict]] = {}  # G10 L1/L10/L11 writes
         self.pos = list(machine.start)
         # dependency tracking (per axis: {source: coefficient})
         self.dep_pos = [{"start": 1} for _ in range(n)]
@@ -386,9 +420,9 @@ class Interpreter:
             ds = self._deps_tuple(self.dep_pos)
             de = self._deps_tuple(end_deps if end_deps is not None else self.dep_pos)
         if not self.unsupported:
-            seg = Segment(kind, start, endt, self.axes, self._block.index, self._span, self.tlo, fmm,
-                          plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
-                          ds, de)
+            seg = _segment(kind, start, endt, self.axes, self._block.index, self._span, self.tlo, fmm,
+                           plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
+                           ds, de, ())
             self._out.append(seg)
             self.segment_count += 1
             self.kind_counts[kind] += 1
@@ -466,7 +500,7 @@ class Interpreter:
             elif letter == "M":
                 if w.value.denominator != 1:
                     raise self._error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
-                mcodes.append((int(w.value), w))
+                mcodes.append((w.value.numerator, w))
             else:
                 if letter in words:
                     raise self._error("GC204", f"two {letter} words in one block ({words[letter].text or letter} and {w.text or letter}); a letter may appear once", w)
@@ -515,8 +549,10 @@ class Interpreter:
         if "R" in words:
             motion_to_be = g1[0] if g1 else self.motion
             uses_r = (motion_to_be in (20, 30) or motion_to_be in _CYCLES) and (g1 is not None or axis_words or g0 is None) \
-                or (g0 and g0[0] == 100) or (groups.get(13, (0,))[0] == 640)
-            if not uses_r and not any(k in _UNSUPPORTED_G for k, _ in gcodes):
+                or (g0 and g0[0] == 100) or (groups.get(13, (0,))[0] == 640) or any(k == 19 for k, _ in mcodes)
+            unknown_code = any(k in _UNSUPPORTED_G for k, _ in gcodes) or any(
+                k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99) for k, _ in mcodes)
+            if not uses_r and not unknown_code and not self.unsupported:  # after unknown the mode is unknown
                 raise self._error("GC204", f"R word {words['R'].text or 'R'} with no G code that uses it (R is used by G2/G3, canned cycles and G10)", words["R"])
         if "R" in words and 19 in {k for k, _ in mcodes} and groups.get(13, (0,))[0] == 640:
             raise self._error("GC204", "R word is ambiguous in a block with both G64 and M19; write them in separate blocks", words["R"])
@@ -566,7 +602,7 @@ class Interpreter:
                 raise self._error("GC208", "G4 needs a P word with the dwell time in seconds", g0[1])
             if p.value < 0:
                 raise self._error("GC209", f"dwell time {p.text} is negative", p)
-            if "X" in words:
+            if "X" in words and g1 is None:
                 self._unknown("G4 X", "G4 with an X word dwells on Fanuc controls but moves X on LinuxCNC", words["X"])
             self._emit(SegmentKind.DWELL, list(self.pos), dwell=p.value)
         # 11: plane
@@ -695,6 +731,11 @@ class Interpreter:
                 reg = int(h.value)
             else:
                 reg = self.tool_in_spindle
+            if reg in self.tool_table:
+                self.tlo, self.dep_tlo = self.tool_table[reg]
+                self.tool_register = reg
+                self._recompute_offsets()
+                return
             if reg != 0 and reg not in self.machine.tool_lengths:
                 where = h if h is not None else w
                 known = ", ".join(f"H{r}" for r in sorted(self.machine.tool_lengths)) or "none"
@@ -727,11 +768,11 @@ class Interpreter:
                 if deps is not None:
                     deps[i] = {}
             elif absolute:
-                end[i] = v + self.off[i]
+                end[i] = _qadd(v, self.off[i])
                 if deps is not None:
                     deps[i] = dict(self.dep_off[i])
             else:
-                end[i] = end[i] + v
+                end[i] = _qadd(end[i], v)
         return end, deps
 
     def _motion_block(self, block, axis_words, words, g1, g53: bool) -> None:
@@ -894,7 +935,40 @@ class Interpreter:
                         dreg[i] = d
             self._recompute_offsets()
         else:
-            self._unknown(f"G10 L{L}", "setting the tool table (G10 L1/L10/L11) is not modelled; tool lengths come from the machine file", lw)
+            self._g10_tool(int(L), P, pw, axis_words)
+
+    def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words) -> None:
+        """G10 L1/L10/L11: write the tool table entry of tool P (LinuxCNC ``convert_setup_tool``).
+
+        Only the tool-axis length is modelled; an offset on another axis (a
+        lathe X offset) that is not zero is unknown.  L1 takes the value as
+        written; L10 makes the current position read the value in the current
+        coordinate system (``length = machine - G5x - G92 - value``); L11 the
+        same in G59.3 without G92.  The active length changes only at the next
+        G43 (the table entry is not the active offset).
+        """
+        if P.denominator != 1 or P < 0:
+            raise self._error("GC209", f"G10 L{L} {pw.text}: P must be a non-negative integer tool number", pw)
+        tool = int(P)
+        for i, aw in axis_words:
+            if i == self.tool_axis:
+                v = self._mm(aw.value, i)
+                if L == 1:
+                    length, deps = v, {}
+                else:
+                    g5 = self.g5x["G59.3" if L == 11 else self.wcs][i]
+                    g92 = _ZERO if L == 11 else self.g92[i]
+                    length = self.pos[i] - g5 - g92 - v
+                    deps = {}
+                    if self.track:
+                        deps = _dadd(self.dep_pos[i], self.dep_g5x["G59.3" if L == 11 else self.wcs][i], -1)
+                        if L != 11:
+                            deps = _dadd(deps, self.dep_g92[i], -1)
+                self.tool_table[tool] = (length, deps)
+            elif L != 1 or aw.value != 0:
+                self._unknown(f"G10 L{L}", f"G10 L{L} sets a tool offset on axis {self.axes[i]} ({aw.text}); nczones "
+                              "models tool length on the tool axis only", aw)
+                return
 
     def _g92(self, axis_words, w: Word) -> None:
         if not axis_words:

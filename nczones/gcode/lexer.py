@@ -147,6 +147,42 @@ def make_word(letter: str, value: Fraction, span: SourceSpan, text: str) -> Word
     return w
 
 
+class _LazyWord(Word):
+    """A :class:`Word` whose span is built only when read (diagnostics, reports).
+
+    The lexer makes one word per literal; building its SourceSpan eagerly cost
+    a third of the lexing time, and almost no span is ever read.  It is a
+    Word for ``isinstance``, ``repr`` and equality (equal to the eager Word).
+    """
+
+    __slots__ = ("_at",)
+    __qualname__ = "Word"
+
+    @property
+    def span(self) -> SourceSpan:  # type: ignore[override]
+        at = self._at
+        if type(at) is tuple:
+            (file, lineno, line), col, end = at
+            at = make_span(file, lineno, col, end, line)
+            object.__setattr__(self, "_at", at)
+        return at
+
+    @span.setter
+    def span(self, value: SourceSpan) -> None:
+        object.__setattr__(self, "_at", value)
+
+    def __eq__(self, other):
+        if isinstance(other, Word):
+            return (self.letter, self.value, self.span, self.text) == (other.letter, other.value, other.span, other.text)
+        return NotImplemented
+
+    def __hash__(self):
+        return hash((self.letter, self.value, self.span, self.text))
+
+
+_lazy_at = _LazyWord._at.__set__  # type: ignore[attr-defined]
+
+
 #: Comment keywords LinuxCNC gives a meaning to (``(MSG, ...)`` and friends).
 MAGIC_COMMENTS = ("MSG", "DEBUG", "PRINT", "LOGOPEN", "LOGAPPEND", "LOGCLOSE", "LOG", "PROBEOPEN", "PROBECLOSE", "ABORT")
 _MAGIC = re.compile(r"[ \t]*(" + "|".join(MAGIC_COMMENTS) + r")[ \t]*(,|\Z)", re.IGNORECASE)
@@ -189,14 +225,15 @@ def scan_simple(line: str, lineno: int, file: str) -> tuple | None:
     words: list[Word] = []
     comments: list[tuple[str, int]] = []
     pos = m.end(2) if ntext is not None else (m.end(1) if m.group(1) is not None else 0)
+    where = (file, lineno, line)
     for blanks, comment, semi, letter, gap, num in _FAST_ITEMS.findall(line, pos):
         pos += len(blanks)
         if letter:
             end = pos + 1 + len(gap) + len(num)
-            w = _new(Word)
+            w = _new(_LazyWord)
             _word_letter(w, letter.upper())
             _word_value(w, decimal_value(num))
-            _word_span(w, make_span(file, lineno, pos + 1, end + 1, line))
+            _lazy_at(w, (where, pos + 1, end + 1))
             _word_text(w, line[pos:end])
             words.append(w)
             pos = end

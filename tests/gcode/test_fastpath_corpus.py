@@ -1,23 +1,15 @@
-"""Every corpus program: interpreted, rejected with a diagnostic, or unknown; fast == full.
-
-``test_corpus_outcomes`` runs every G-code program of ``../shared/corpus``
-(MANIFEST role ``program``) through :func:`nczones.gcode.interpret` and
-requires zero tracebacks: each program is ``complete``, ``unknown`` (with a
-reason and line) or ``rejected`` (a GcodeError with file:line:column).  It
-prints the counts and requires that at least 90% of the programs LinuxCNC
-accepts (dialect LinuxCNC*, not in ``tests/interp/bad`` or a test directory
-whose expected exit status is non-zero) are interpreted completely.
+"""Fast path == full interpreter on the corpus (differential test).
 
 ``test_fast_equals_full`` is the differential test: on every program where
 the fast path handled lines, the segments equal the full interpreter's
 (everything but the span text and the H register number, which column chunks
 do not carry).  Programs over :data:`DIFF_MAX_LINES` lines run only under
-``-m long``.
+``-m long``.  The corpus outcome/coverage test is in
+``tests/gcode/test_corpus_coverage.py``.
 """
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 import pytest
@@ -49,57 +41,6 @@ def _programs():
         if len(cols) > 6 and cols[4] == "program":
             out.append((cols[0], cols[6]))
     return out
-
-
-def _linuxcnc_accepts(path: str, dialect: str) -> bool:
-    if not dialect.startswith("LinuxCNC") or "/tests/interp/bad/" in path:
-        return False
-    failing = ("m98m99/03-", "m98m99/04-", "m98m99/06-", "nested-sub-error", "nested-sub-in-file-error",
-               "iniparam-failassign", "illegal", "-error")
-    return not any(f in path for f in failing)
-
-
-def _outcome(path: Path, fast: bool):
-    run = interpret(path, MACHINE, fast=fast)
-    try:
-        n = sum(len(c) for c in run)
-    except GcodeError as exc:
-        d = exc.diagnostics[0]
-        assert d.span is not None or d.file, exc.render()
-        return "rejected", d.code, run
-    if run.unsupported:
-        u = run.unsupported[0]
-        assert u.reason and (u.span is None or u.span.line >= 1)
-        return "unknown", u.code, run
-    return "complete", str(n), run
-
-
-@pytest.mark.long  # ~9 minutes on 2 cores: the full interpreter runs at ~12k lines/s
-def test_corpus_outcomes(capsys):
-    counts: dict[str, int] = {}
-    accepted = complete_accepted = 0
-    reasons: dict[str, int] = {}
-    t0 = time.perf_counter()
-    not_complete = []
-    for rel, dialect in _programs():
-        path = CORPUS / rel
-        status, code, _ = _outcome(path, True)
-        counts[status] = counts.get(status, 0) + 1
-        if status != "complete":
-            reasons[f"{status} {code}"] = reasons.get(f"{status} {code}", 0) + 1
-        if _linuxcnc_accepts(rel, dialect):
-            accepted += 1
-            if status == "complete":
-                complete_accepted += 1
-            else:
-                not_complete.append(f"{status} {code} {rel}")
-    with capsys.disabled():
-        print(f"\ncorpus outcomes {counts} in {time.perf_counter() - t0:.1f}s")
-        print("by reason:", dict(sorted(reasons.items(), key=lambda kv: -kv[1])))
-        print(f"LinuxCNC-accepted programs interpreted completely: {complete_accepted}/{accepted}")
-        for line in not_complete[:60]:
-            print("   ", line)
-    assert accepted and complete_accepted / accepted >= 0.9
 
 
 def _segment_key(s):

@@ -233,3 +233,44 @@ def test_linuxcnc_bad_programs_are_rejected(path):
         list(run)
     d = e.value.diagnostics[0]
     assert d.span is not None and d.span.line >= 1
+
+
+# ---------------------------------------------------------------- tool table writes, coverage fixes
+
+
+def _z_ends(text: str) -> list[Fraction]:
+    run = interpret(text, MILL)
+    out = [s.end[2] for s in run.segments()]
+    assert run.status == "complete", run.unsupported
+    return out
+
+
+def test_g10_l1_sets_the_tool_length_used_by_the_next_g43():
+    # machine Z = program + G54 (50) + tool length; the table write takes effect at G43, not before
+    assert _z_ends("G21 G90 G54\nG43 H1 G0 Z0\nG10 L1 P1 Z7.5\nG0 Z1\nG43 H1\nG0 Z0\n") == [F(170), F(171), F(115, 2)]
+
+
+def test_g10_l10_l11_make_the_current_position_read_the_value():
+    # L10: length = machine - G5x - G92 - value; L11 uses G59.3 (zero here) and no G92:
+    # at machine Z60 it gives 60, so G54 Z0 is then 0 + 50 + 60
+    z = _z_ends("G21 G90 G54\nG0 Z10\nG10 L10 P2 Z1.5\nG43 H2\nG0 Z1.5\nG10 L11 P3 Z0\nG43 H3\nG0 Z0\n")
+    assert z == [F(60), F(60), F(110)]
+
+
+def test_g10_l1_offset_on_a_non_tool_axis_is_unknown():
+    run = interpret("G21\nG10 L1 P1 X0.5\nG0 X1\n", MILL)
+    assert list(run.segments()) == [] and run.unsupported[0].code == "G10 L1"
+    assert interpret("G21\nG10 L1 P1 X0 Z2 R3\nG0 X1\n", MILL).status == "complete"  # zero X offset, radius R
+
+
+def test_m19_takes_an_r_word_and_g4_with_an_explicit_motion_code_moves():
+    assert interpret("M19 R45 Q2\nG0 X1\n", MILL).status == "complete"
+    segs = segments("G21 G90\nG4 P0.5 G0 X1 Y2\n", MILL)
+    assert [s.kind for s in segs] == [SegmentKind.DWELL, SegmentKind.RAPID] and segs[1].end[:2] == (F(101), F(2))
+
+
+@pytest.mark.parametrize("code", ["G6.2 X1 Y2 R1 K0 P4 Q1", "G71.2 Q1 P2 D0.5", "G72.1 Q1 P2 D0.5"])
+def test_linuxcnc_curve_and_lathe_codes_are_unknown_not_errors(code):
+    run = interpret(f"G21\nG0 X1\n{code}\nX2 Y3 R1 K0\n", MILL)
+    assert len(list(run.segments())) == 1
+    assert run.status == "unknown" and run.unsupported[0].span.line == 3
