@@ -329,15 +329,16 @@ def _plane_line(a: tuple[int, int], b: tuple[int, int]) -> list[tuple[int, int]]
 
 def dogleg_steps(
     p0: Sequence[int], p1: Sequence[int], period_s: Sequence[Fraction]
-) -> tuple[np.ndarray, list[Fraction]]:
+) -> tuple[np.ndarray, np.ndarray, int]:
     """Dogleg rapid: each axis at its own pulse period, all starting together.
 
     Axis ``k`` issues its ``j``-th pulse at exact time ``j * period_s[k]``;
     pulses due at the same instant form one step.  Returns the positions after
-    each step (``(steps, axes)`` int64) and the exact step times.
+    each step (``(steps, axes)`` int64) and the exact step times as integer
+    ticks with their denominator (time = ticks / den seconds).
 
-    >>> pos, t = dogleg_steps((0, 0), (3, -1), (Fraction(1), Fraction(2)))
-    >>> pos.tolist(), [str(x) for x in t]
+    >>> pos, ticks, den = dogleg_steps((0, 0), (3, -1), (Fraction(1), Fraction(2)))
+    >>> pos.tolist(), [str(Fraction(int(t), den)) for t in ticks]
     ([[1, 0], [2, -1], [3, -1]], ['1', '2', '3'])
     """
     delta = [b - a for a, b in zip(p0, p1)]
@@ -352,7 +353,7 @@ def dogleg_steps(
             times.append(j * ticks[a])
             axes.append(np.full(abs(d), a, dtype=np.int64))
     if not times:
-        return np.zeros((0, k), dtype=np.int64), []
+        return np.zeros((0, k), dtype=np.int64), np.zeros(0, dtype=np.int64), den
     t_all = np.concatenate(times)
     a_all = np.concatenate(axes)
     order = np.argsort(t_all, kind="stable")
@@ -363,4 +364,4 @@ def dogleg_steps(
     sign = np.array([1 if d > 0 else -1 for d in delta], dtype=np.int64)
     np.add.at(inc, (step_of_pulse, a_all), sign[a_all])
     pos = np.cumsum(inc, axis=0) + np.asarray(p0, dtype=np.int64)
-    return pos, [Fraction(int(t), den) for t in uniq]
+    return pos, uniq, den

@@ -287,7 +287,8 @@ class _Plan:
     delta: tuple[int, ...] | None = None  # lines only
     positions: np.ndarray | None = None  # explicit: (n, axes)
     sigma: np.ndarray | None = None  # explicit: path fraction after each step (float)
-    exact_times: list[Fraction] | None = None  # dogleg: exact step times (s)
+    exact_times: np.ndarray | None = None  # dogleg: exact step times as int64 ticks (s = ticks / tick_den)
+    tick_den: int = 1
     base_time_s: float = 0.0  # duration at constant speed
     accdec: bool = False
     speed_mm_s: float = 0.0
@@ -314,7 +315,7 @@ class _Plan:
 
     def duration(self, tau_s: float) -> float:
         if self.exact_times is not None:
-            return float(self.exact_times[-1]) if self.exact_times else 0.0
+            return float(self.exact_times[-1]) / self.tick_den if len(self.exact_times) else 0.0
         if not self.accdec or tau_s <= 0 or self.base_time_s <= 0:
             return self.base_time_s
         T = self.base_time_s
@@ -324,7 +325,7 @@ class _Plan:
     def times(self, lo: int, hi: int, tau_s: float) -> np.ndarray:
         """Completion times (s, relative to the motion's start) of steps lo+1..hi."""
         if self.exact_times is not None:
-            return np.array([float(t) for t in self.exact_times[lo:hi]], dtype=float)
+            return self.exact_times[lo:hi].astype(float) / self.tick_den
         if self.delta is not None:
             sig = np.arange(lo + 1, hi + 1, dtype=float) / max(self.n, 1)
         else:
@@ -397,8 +398,12 @@ class Controller:
         monitor: MonitorMode | str = MonitorMode.PULSE,
         settings: Settings | None = None,
         start: Sequence[Fraction] | None = None,
+        break_at: tuple[int, Fraction] | None = None,
     ):
         self.machine = machine
+        #: tool-break event (source line, fraction of that line's first cutting motion);
+        #: :meth:`run` then hands over to :mod:`nczones.controller.recovery`
+        self.break_at = break_at
         self.mode = Mode(mode)
         self.monitor_mode = MonitorMode(monitor)
         self.settings = settings or Settings()
@@ -467,8 +472,8 @@ class Controller:
             return _Plan(seg, p0, p0, 0, delta=tuple(0 for _ in p0), base_time_s=float(seg.dwell_s or 0))
         if seg.kind is SegmentKind.RAPID and self.machine.rapid_mode is RapidMode.DOGLEG:
             periods = tuple(a.pulse * 60 / a.rapid_mm_min for a in axes)
-            pos, times = dogleg_steps(p0, p1, periods)
-            plan = _Plan(seg, p0, p1, len(times), positions=pos, exact_times=times)
+            pos, ticks, den = dogleg_steps(p0, p1, periods)
+            plan = _Plan(seg, p0, p1, len(ticks), positions=pos, exact_times=ticks, tick_den=den)
             plan.speed_mm_s = math.sqrt(sum(float(a.rapid_mm_min) ** 2 for a, d in zip(axes, delta) if d)) / 60
             return plan
         if seg.kind in (SegmentKind.RAPID, SegmentKind.LINE):
@@ -485,6 +490,10 @@ class Controller:
             return plan
         if seg.kind is SegmentKind.ARC:
             return self._plan_arc(seg, p0, p1)
+        if seg.kind is SegmentKind.DEVELOPED_ARC:  # G07.1: developed plane, then rotary pulses
+            from .cylindrical import plan_developed_arc
+
+            return plan_developed_arc(self, seg, p0, p1)
         raise InvalidArgument(f"unknown segment kind {seg.kind!r}")
 
     def _feed_time(self, seg: Segment, disp: list[float], length: float) -> float:
@@ -565,6 +574,10 @@ class Controller:
     # ------------------------------------------------------------------ running
     def run(self, motion: Any) -> SimulationResult:
         """Run segments (or MotionChunks, or an interpretation) to the end or the first alarm."""
+        if self.break_at is not None:
+            from .recovery import run_with_break
+
+            return run_with_break(self, motion)
         if self.mode is not Mode.LOCK and not self.alarms:
             bad = self.monitor.check(tuple(self.counter), self.tool_length)
             if bad:
@@ -585,7 +598,10 @@ class Controller:
 
     def _run_segment(self, seg: Segment) -> None:
         self.tool_length = seg.tool_length
-        plan = self._plan(seg)
+        self._run_plan(seg, self._plan(seg))
+
+    def _run_plan(self, seg: Segment, plan: _Plan) -> None:
+        """Run one planned motion (the recovery runs parts of plans through this)."""
         self.motions += 1
         tau = self._tau_pre()
         t0 = self.clock
@@ -843,7 +859,7 @@ class Controller:
         taus = tuple(self.settings.post_tau_ms(a) for a in self.axes)
         times = np.array([t for t, _ in self._servo_samples])
         cmd = np.array([p for _, p in self._servo_samples], dtype=float) * np.array([float(u) for u in self.pulse])
-        settle = int(math.ceil(5 * max(taus) / 1000 / ts)) + 1
+        settle = int(math.ceil(12 * max(taus) / 1000 / ts)) + 1  # e**-12: settled far inside a pulse
         times = np.concatenate([times, times[-1] + ts * np.arange(1, settle + 1)])
         cmd = np.vstack([cmd, np.repeat(cmd[-1:], settle, axis=0)])
         out = np.empty_like(cmd)
@@ -929,12 +945,18 @@ def simulate(
     settings: Settings | None = None,
     start: Sequence[Fraction] | None = None,
     progress=None,
+    break_at: tuple[int, Fraction] | None = None,
 ) -> SimulationResult:
     """Run motion through a fresh :class:`Controller`; returns the frozen result.
 
     ``progress``, if given, is called as ``progress(line, total_lines)``
     after each segment (``total_lines`` from the interpretation's text, else
     None); see :mod:`nczones.report.progress`.
+
+    ``break_at=(line, fraction)`` injects a tool break in the first cutting
+    motion of source line ``line`` after ``fraction`` of its steps and runs the
+    automatic recovery of the machine's ``[tool_change]`` section
+    (:mod:`nczones.controller.recovery`).
 
     ``motion`` is an iterable of :class:`~nczones.motion.Segment` or
     :class:`~nczones.motion.MotionChunk` (an interpretation from
@@ -961,7 +983,7 @@ def simulate(
     if start is None:
         items, first = _peek(motion)
         start = first.start if first is not None else None
-    ctl = Controller(machine, mode=mode, monitor=monitor, settings=settings, start=start)
+    ctl = Controller(machine, mode=mode, monitor=monitor, settings=settings, start=start, break_at=break_at)
     if progress is not None:
         items = _reporting(items, progress, getattr(motion, "text", None))
     return ctl.run(items)

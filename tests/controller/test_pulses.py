@@ -168,7 +168,7 @@ def test_dogleg_rapid_reaches_every_axis_end_exactly(a, b):
         assert tuple(plan.positions[-1]) == p1
     periods = [ax.pulse * 60 / ax.rapid_mm_min for ax in m.axes]
     # every axis starts at once and pulses at its own rate: position = min(floor(t / period), |D|)
-    for t, p in zip(plan.exact_times, plan.positions.tolist()):
+    for t, p in zip((Fraction(int(x), plan.tick_den) for x in plan.exact_times), plan.positions.tolist()):
         for k in range(3):
             d = p1[k] - p0[k]
             expect = p0[k] + (1 if d > 0 else -1) * min(math.floor(t / periods[k]), abs(d))
