@@ -150,9 +150,11 @@ def _run_block(interp, blk: bytes, line0: int, block_counter):
     fast_runs = [(a, b) for a, b in runs if b - a >= MIN_RUN or a == 0 or b == nlines]
     i = 0
     k = 0
+    failures = 0
     while i < nlines and not it.ended:
         while k < len(fast_runs) and fast_runs[k][1] <= i:
             k += 1
+            failures = 0
         if k < len(fast_runs) and fast_runs[k][0] <= i:
             a, b = fast_runs[k]
             if _state_ok(it):
@@ -161,9 +163,12 @@ def _run_block(interp, blk: bytes, line0: int, block_counter):
                     if len(chunk):
                         yield chunk
                     i = b
+                    failures = 0
                     continue
-            # the full path for this run
-            j = b
+            # the full path for 1, 2, 4, ... lines of the run, then try the rest fast again
+            # (typically the first line of a run sets modes the fast path does not handle)
+            j = min(b, i + (1 << failures))
+            failures += 1
         else:
             j = fast_runs[k][0] if k < len(fast_runs) else nlines
         yield from _full_piece(interp, blk, starts, ends_, i, j, block_counter, line0)
