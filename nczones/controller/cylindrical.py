@@ -1,0 +1,133 @@
+"""Pulse distribution of arcs in cylindrical interpolation (G07.1).
+
+As in JP patent 001: the controller interpolates the circle in the developed
+plane (linear axis, developed rotary coordinate ``s`` in mm), then converts
+the developed component into the rotary displacement ``C = C0 + s / k``
+(``k = pi R / 180`` mm per degree) and rounds it to rotary pulses.
+
+Method (all exact integers and rationals):
+
+1. A fine developed grid: ``u_z / 4`` on the linear axis and
+   ``u_s = u_c k_lo / 4`` mm on ``s`` (``k_lo`` a rational just below ``k``),
+   so one fine step is at most a quarter pulse on either machine axis.
+2. The exact circle (start ``(Z0, 0)``, end ``(Z1, D)``, centre) is replaced
+   by rationals within ``1e-18`` mm (enclosures of :mod:`nczones.cylinder`),
+   and :func:`nczones.controller.pulses.arc_walk` walks it on the fine grid
+   from the grid point nearest the exact start: every walk point is within
+   one fine step of that circle.
+3. Each walk point is converted: Z pulse = nearest pulse of ``Z``, C pulse =
+   nearest pulse of ``C0 + s / k~``; repeated positions are dropped and the
+   motion ends exactly on the rounded end point.
+
+Invariant: every commanded position is within ``1/4 + 1/2`` pulse (plus
+``1e-12`` of a pulse) of the exact developed path on each axis, so the
+rotary pulse count equals developed length / radius within one pulse; and
+consecutive positions differ by at most one pulse per axis (pulse
+distribution).  Tests check both against the enclosed exact path.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from ..cylinder import cylinder_of, developed_arc_of
+from ..errors import InvalidArgument
+from .pulses import arc_walk, line_steps, round_pulse
+
+__all__ = ["developed_arc_positions", "FINE"]
+
+#: Fine grid steps per machine pulse in the developed plane.
+FINE = 4
+_APPROX = 10**18
+
+
+def _rat(x: Fraction) -> Fraction:
+    return Fraction(round(x * _APPROX), _APPROX)
+
+
+def developed_arc_positions(seg, pulses: tuple[Fraction, ...], p0: tuple[int, ...]) -> np.ndarray:
+    """The commanded pulse positions after each step of a developed arc (``(steps, axes)`` int64).
+
+    ``pulses`` are the machine's pulse lengths, ``p0`` where the controller
+    stands (pulses).  The last row is the rounded end point of ``seg``.
+
+    >>> from nczones.motion import Segment, SegmentKind
+    >>> F = Fraction
+    >>> ex = (("cylinder_radius", F(10)), ("linear_axis", "Z"), ("rotary_axis", "C"))
+    >>> seg = Segment(SegmentKind.DEVELOPED_ARC, (F(0), F(0)), (F(2), F(0)), ("Z", "C"),
+    ...               clockwise=True, radius=F(1), extra=ex)
+    >>> pos = developed_arc_positions(seg, (F(1, 1000), F(1, 1000)), (0, 0))
+    >>> pos[-1].tolist(), int(pos[:, 1].max()) > 5700     # 1 mm on r = 10 mm is 5.73 deg
+    ([2000, 0], True)
+    """
+    lin, rot, _ = cylinder_of(seg)
+    iz, ic = seg.axes.index(lin), seg.axes.index(rot)
+    arc = developed_arc_of(seg)
+    uz, uc = pulses[iz], pulses[ic]
+    k_lo = Fraction(math.floor(arc.k.lo * _APPROX), _APPROX)  # the conversion factor (k - 1e-18 < k_lo <= k)
+    fz, fs = uz / FINE, uc * k_lo / FINE
+    d_t = _rat(arc.d.mid())
+    centre = (_rat(arc.centre[0].mid()), _rat(arc.centre[1].mid()))
+    start = (arc.z0, Fraction(0))
+    end = (arc.z1, d_t)
+    sp = (round_pulse(arc.z0, fz), 0)
+    ep = (round_pulse(arc.z1, fz), round_pulse(d_t, fs))
+    walk = arc_walk(sp, ep, start, end, centre, seg.clockwise, 0, (fz, fs))
+    p1 = tuple(round_pulse(v, u) for v, u in zip(seg.end, pulses))
+    # conversion, in integers: Z = zf * u_z / FINE, C = C0 + sf * u_s / k_lo = C0 + sf * u_c / FINE
+    c0 = arc.c0 / uc
+    num, den = c0.numerator, c0.denominator
+    pts = [sp] + list(walk.points)
+    zq = [(2 * zf + FINE) // (2 * FINE) for zf, _ in pts]
+    cq = [(2 * (FINE * num + sf * den) + FINE * den) // (2 * FINE * den) for _, sf in pts]
+    rows: list[tuple[int, ...]] = []
+    last = tuple(p0)
+    base = list(p0)
+    for z, c in zip(zq, cq):
+        row = list(base)
+        row[iz], row[ic] = z, c
+        row = tuple(row)
+        if row != last:
+            _append(rows, last, row)
+            last = row
+    if last != p1:
+        _append(rows, last, p1)
+    if not rows:
+        return np.zeros((0, len(p0)), dtype=np.int64)
+    return np.array(rows, dtype=np.int64)
+
+
+def _append(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
+    if max(abs(x - y) for x, y in zip(a, b)) <= 1:
+        rows.append(b)
+        return
+    if max(abs(x - y) for x, y in zip(a, b)) > 2:  # pragma: no cover - the invariant says at most 1
+        raise InvalidArgument(f"developed arc: a jump of more than two pulses between {a} and {b}")
+    rows.extend(line_steps(a, b))
+
+
+def plan_developed_arc(ctrl, seg, p0: tuple[int, ...], p1: tuple[int, ...]):
+    """The controller's motion plan of a developed arc (called by ``Controller._plan``)."""
+    from .simulator import Mode, _Plan
+
+    pos = developed_arc_positions(seg, ctrl.pulse, p0)
+    n = pos.shape[0]
+    if n and tuple(int(v) for v in pos[-1]) != tuple(p1):  # pragma: no cover - by construction
+        raise InvalidArgument("developed arc does not end on its rounded end point")
+    arc = developed_arc_of(seg)
+    length = float(arc.length().mid())  # developed mm (timing only)
+    sigma = np.arange(1, n + 1, dtype=float) / max(n, 1)
+    plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma)
+    if ctrl.mode is Mode.CHECK:
+        rate = min(float(a.rapid_mm_min) for a in ctrl.machine.axes)
+        plan.base_time_s = length * 60 / rate
+    else:
+        if seg.feed_mm_min is None or seg.feed_mm_min <= 0:
+            raise InvalidArgument(f"block {seg.block} (line {seg.line}): feed move without a positive feed")
+        plan.base_time_s = length * 60 / float(seg.feed_mm_min)  # F is the feed on the developed surface
+    plan.accdec = ctrl.mode is not Mode.CHECK
+    plan.speed_mm_s = length / plan.base_time_s if plan.base_time_s > 0 else 0.0
+    return plan
