@@ -300,6 +300,18 @@ class _Plan:
             return line_position(self.p0, self.delta, self.n, i)
         return tuple(int(v) for v in self.positions[i - 1])
 
+    def positions_at(self, idx: np.ndarray) -> np.ndarray:
+        """Positions after the given step counts (0 = the start), shape (len(idx), axes)."""
+        idx = np.asarray(idx, dtype=np.int64)
+        if self.delta is not None:
+            out = np.empty((len(idx), len(self.p0)), dtype=np.int64)
+            n = max(self.n, 1)
+            for k, (p, d) in enumerate(zip(self.p0, self.delta)):
+                out[:, k] = p + (2 * d * idx + n) // (2 * n) if self.n else p
+            return out
+        rows = np.vstack([np.array(self.p0, dtype=np.int64).reshape(1, -1), self.positions])
+        return rows[idx]
+
     def chunk(self, lo: int, hi: int) -> np.ndarray:
         """Positions after steps lo+1..hi."""
         if self.delta is not None:
@@ -321,6 +333,25 @@ class _Plan:
         T = self.base_time_s
         sa = min(tau_s / (2 * T), 0.5)
         return 2 * math.sqrt(2 * sa * T * tau_s) + (1 - 2 * sa) * T
+
+    def steps_done_at(self, rel_times: np.ndarray, tau_s: float) -> np.ndarray:
+        """How many steps are complete at each time (relative to the motion's start)."""
+        if self.delta is None or self.n == 0:
+            times = self.times(0, self.n, tau_s)
+            return np.searchsorted(times, rel_times + 1e-12, side="right")
+        # a line: invert the speed profile instead of tabulating every step's time
+        T = self.base_time_s
+        t = np.asarray(rel_times, dtype=float) + 1e-12
+        if not self.accdec or tau_s <= 0 or T <= 0:
+            sig = t / T if T > 0 else np.ones_like(t)
+        else:
+            sa = min(tau_s / (2 * T), 0.5)
+            total = self.duration(tau_s)
+            ta = math.sqrt(2 * sa * T * tau_s)
+            sig = np.where(t <= ta, t * t / (2 * T * tau_s),
+                           np.where(t >= total - ta, 1 - np.clip(total - t, 0, None) ** 2 / (2 * T * tau_s),
+                                    sa + (t - ta) / T))
+        return np.clip(np.floor(sig * self.n + 1e-9), 0, self.n).astype(np.int64)
 
     def times(self, lo: int, hi: int, tau_s: float) -> np.ndarray:
         """Completion times (s, relative to the motion's start) of steps lo+1..hi."""
@@ -705,11 +736,20 @@ class Controller:
         end = t0 + plan.duration(tau)
         samples = self._sample_times(end)
         if samples:
-            times = t0 + plan.times(0, plan.n, tau)
-            idx = np.searchsorted(times, np.array(samples) + 1e-12, side="right")
+            idx = plan.steps_done_at(np.array(samples) - t0, tau)
         else:
             idx = np.zeros(0, dtype=np.int64)
         compiled = self.monitor.compile(tl) if self.settings.engine == "vector" else None
+        if compiled is not None and len(idx) and plan.n < 2**30:
+            # all samples of this motion at once; only the first bad one matters
+            bad = compiled.bad(plan.positions_at(idx))
+            if bad.any():
+                first_bad = int(np.argmax(bad))
+                self.next_sample += first_bad
+                samples, idx = samples[first_bad:], idx[first_bad:]
+            else:
+                self.next_sample += len(samples)
+                samples, idx = [], idx[:0]
         for s_time, i in zip(samples, idx.tolist()):
             self.next_sample += 1
             pos = plan.position(int(i))
