@@ -163,6 +163,8 @@ class _LazyWord(Word):
         at = self._at
         if type(at) is tuple:
             (file, lineno, line), col, end = at
+            if end < 0:  # (start, -1 - k): the k-th item of the line after start, columns not yet known
+                col, end = _item_columns(line, col, -1 - end)
             at = make_span(file, lineno, col, end, line)
             object.__setattr__(self, "_at", at)
         return at
@@ -181,6 +183,18 @@ class _LazyWord(Word):
 
 
 _lazy_at = _LazyWord._at.__set__  # type: ignore[attr-defined]
+
+
+def _item_columns(line: str, start: int, k: int) -> tuple[int, int]:
+    """1-based (column, end column) of the k-th ``_FAST_ITEMS`` item of ``line`` after ``start``."""
+    pos = start
+    for j, (blanks, comment, semi, letter, gap, num) in enumerate(_FAST_ITEMS.findall(line, start)):
+        pos += len(blanks)
+        end = pos + len(comment) + 2 if comment or not letter else pos + 1 + len(gap) + len(num)
+        if j == k:
+            return pos + 1, end + 1
+        pos = end
+    raise AssertionError("item index beyond the line")  # pragma: no cover
 
 
 #: Comment keywords LinuxCNC gives a meaning to (``(MSG, ...)`` and friends).
@@ -226,6 +240,19 @@ def scan_simple(line: str, lineno: int, file: str) -> tuple | None:
     comments: list[tuple[str, int]] = []
     pos = m.end(2) if ntext is not None else (m.end(1) if m.group(1) is not None else 0)
     where = (file, lineno, line)
+    if "(" not in line and ";" not in line:
+        # words only: columns are computed when a span is read (_item_columns)
+        start = pos
+        k = 0
+        for _blanks, _comment, _semi, letter, gap, num in _FAST_ITEMS.findall(line, pos):
+            w = _new(_LazyWord)
+            _word_letter(w, letter.upper())
+            _word_value(w, decimal_value(num))
+            _lazy_at(w, (where, start, -1 - k))
+            _word_text(w, letter + gap + num if gap else letter + num)
+            words.append(w)
+            k += 1
+        return (m.group(1) is not None, number, tuple(words), ())
     for blanks, comment, semi, letter, gap, num in _FAST_ITEMS.findall(line, pos):
         pos += len(blanks)
         if letter:
