@@ -54,6 +54,7 @@ __all__ = [
     "Reason",
     "ParamRange",
     "Prover",
+    "source_lines",
 ]
 
 _PARAM = re.compile(r"^\s*(?P<name>[A-Za-z0-9_.]+)\s*=\s*(?P<lo>[^.]*(?:\.\d+)?)\s*\.\.\s*(?P<hi>.+?)\s*$")
@@ -144,15 +145,10 @@ def verify(
     ranges = tuple(parse_param(p, machine) if isinstance(p, str) else p for p in params)
     extra = {} if arc_tolerance is None else {"arc_tolerance": arc_tolerance}
     run = interpret(program, machine, file=file, track_dependencies=bool(ranges), **extra)
-    text_lines: dict[int, str] = {}
-    source_text = run.text.splitlines()
-
     def with_text(seq):
-        from dataclasses import replace
-
         from ..motion import MotionChunk
 
-        total = len(source_text) or None
+        total = _line_count(run.text) or None if progress is not None else None
         for chunk in seq:
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
                 yield chunk
@@ -169,10 +165,14 @@ def verify(
     # fill the source text of violations and reasons (column chunks carry only line numbers)
     from dataclasses import replace
 
+    wanted = [x.span.line for x in (*result.violations, *result.reasons, *run.unsupported)
+              if x.span is not None and not x.span.text and x.span.line >= 1]
+    source_text = source_lines(run.text, wanted)
+
     def fix(span):
-        if span is None or span.text or not (1 <= span.line <= len(source_text)):
+        if span is None or span.text or span.line not in source_text:
             return span
-        return replace(span, text=source_text[span.line - 1])
+        return replace(span, text=source_text[span.line])
 
     violations = tuple(replace(v, span=fix(v.span)) for v in result.violations)
     reasons = list(replace(r, span=fix(r.span)) for r in result.reasons)
@@ -183,3 +183,54 @@ def verify(
     timings = (("total_s", time.perf_counter() - t0),) + result.timings
     return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes,
                    timings=timings, extra={"counts": run.counts})
+
+
+_BREAKS = ("\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x85", "\u2028", "\u2029")
+
+
+def _simple_breaks(text: str) -> bool:
+    """True when ``str.splitlines`` splits ``text`` exactly at its ``\\n`` (``\\r\\n``)."""
+    return not any(b in text for b in _BREAKS) and text.count("\r") == text.count("\r\n")
+
+
+def _line_count(text: str) -> int:
+    if not _simple_breaks(text):
+        return len(text.splitlines())
+    return text.count("\n") + (1 if text and not text.endswith("\n") else 0)
+
+
+def source_lines(text: str, wanted, step: int = 1 << 16) -> dict[int, str]:
+    """The text of the 1-based lines ``wanted`` (as ``str.splitlines`` numbers them), without
+    splitting the whole program: only the needed lines are cut out, so memory stays flat.
+
+    >>> source_lines("G1 X1\\nG1 X2\\r\\nG1 X3", [3, 2, 9])
+    {2: 'G1 X2', 3: 'G1 X3'}
+    """
+    want = sorted(set(int(w) for w in wanted if w >= 1))
+    if not want:
+        return {}
+    if not _simple_breaks(text):
+        lines = text.splitlines()
+        return {w: lines[w - 1] for w in want if w <= len(lines)}
+    out = {}
+    line, pos, n = 1, 0, len(text)
+    for w in want:
+        # skip whole windows by counting their newlines, then walk inside the window
+        while line < w and pos < n:
+            k = text.count("\n", pos, pos + step)
+            if line + k < w:
+                line += k
+                pos += step
+                continue
+            while line < w:
+                nl = text.find("\n", pos)
+                if nl < 0:
+                    pos = n
+                    break
+                pos = nl + 1
+                line += 1
+        if pos >= n:
+            break
+        nl = text.find("\n", pos)
+        out[w] = text[pos:(n if nl < 0 else nl)].removesuffix("\r")
+    return out

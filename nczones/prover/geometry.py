@@ -326,6 +326,11 @@ class ArcGeom:
             for v, axis, sgn in (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1)):
                 if in_sweep(u, w, v, self.ccw, self.full):
                     (xs if axis == 0 else ys).append(c[axis] + sgn * r_hi)
+            if self.r2_lo != self.r2_hi:
+                # a spiral: every path point is within (r_hi - r_lo) of the circular arc of the
+                # start radius, whose box is within (r_hi - r_lo) of this one
+                g = 2 * (r_hi - sqrt_bounds(self.r2_lo, bits)[0])
+                return ((min(xs) - g, max(xs) + g), (min(ys) - g, max(ys) + g))
         return ((min(xs), max(xs)), (min(ys), max(ys)))
 
 

@@ -22,7 +22,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..motion import MotionChunk, SegmentKind
+from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
 from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
 
 __all__ = ["screen_chunk"]
@@ -65,8 +65,137 @@ class _RangeTable:
         return out
 
 
+def _isqrt_ceil(n: np.ndarray) -> np.ndarray:
+    """Exact ``ceil(sqrt(n))`` of non-negative int64 values below ``2**62``."""
+    r = np.floor(np.sqrt(n.astype(np.float64))).astype(np.int64)
+    for _ in range(3):  # float rounding is off by at most one here; fix it exactly
+        r = np.where(r * r > n, r - 1, r)
+        r = np.where((r + 1) * (r + 1) <= n, r + 1, r)
+    return r + (r * r < n)
+
+
+def _isqrt_floor(n: np.ndarray) -> np.ndarray:
+    r = _isqrt_ceil(n)
+    return r - (r * r > n)
+
+
+def _half(cr: np.ndarray, dt: np.ndarray) -> np.ndarray:
+    """0 where the ccw angle is in [0, pi) (cross > 0, or cross == 0 and dot > 0), else 1."""
+    return np.where((cr > 0) | ((cr == 0) & (dt > 0)), 0, 1)
+
+
+def arc_boxes(chunk: MotionChunk, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Widen ``lo``/``hi`` of the arc ``rows`` to a sound box of each arc; True where that worked.
+
+    Exact integer version of :meth:`nczones.prover.geometry.ArcGeom.plane_bbox`:
+    in the arc's plane the box holds the end points and, for every axis
+    direction ``±first``, ``±second`` that the closed sweep contains (decided
+    exactly from signs of integer cross and dot products, as
+    :func:`~nczones.prover.geometry.in_sweep` does), the centre plus or minus
+    ``ceil(sqrt(r2))``, ``r2`` the larger squared radius.  A spiral arc
+    (start and end radii differ: an I/J arc within the end-point tolerance)
+    is grown by twice the difference of the radii (rounded outwards), which
+    encloses its annulus sector.  Other axes (helix) span their start and
+    end values, as ``lo``/``hi`` already do.
+
+    Returns False for rows it cannot box: zero radius, a plane axis the
+    machine lacks, or coordinates of ``2**31`` units or more (squares could
+    overflow ``int64``); those rows go to the exact per-segment path.
+    """
+    ok = np.ones(rows.size, dtype=bool)
+    if rows.size == 0:
+        return ok
+    axes = list(chunk.axes)
+    planes = chunk.plane[rows]
+    for pv in np.unique(planes).tolist():
+        sel = planes == pv
+        a_name, b_name, _ = PLANE_AXES[Plane(int(pv))]
+        if a_name not in axes or b_name not in axes:
+            ok[sel] = False
+            continue
+        ia, ib = axes.index(a_name), axes.index(b_name)
+        r = rows[sel]
+        sa, sb = chunk.start[r, ia], chunk.start[r, ib]
+        ea, eb = chunk.end[r, ia], chunk.end[r, ib]
+        ca, cb = chunk.centre[r, 0], chunk.centre[r, 1]
+        u0, u1, w0, w1 = sa - ca, sb - cb, ea - ca, eb - cb
+        big = np.maximum.reduce([np.abs(u0), np.abs(u1), np.abs(w0), np.abs(w1)]) >= _SQ_LIMIT
+        if big.any():  # keep the products below 2**63; flagged rows are computed on zeros
+            u0, u1, w0, w1 = (np.where(big, 1, x) for x in (u0, u1, w0, w1))
+        r2s = u0 * u0 + u1 * u1
+        r2e = w0 * w0 + w1 * w1
+        rhi = _isqrt_ceil(np.maximum(r2s, r2e))
+        grow = np.where(r2s == r2e, 0, 2 * (rhi - _isqrt_floor(np.minimum(r2s, r2e))))
+        full = ((sa == ea) & (sb == eb)) | (chunk.turns[r] > 0)
+        ccw = ~chunk.clockwise[r].astype(bool)
+        # in_sweep: clockwise from u to w is ccw from w to u
+        p0, p1 = np.where(ccw, u0, w0), np.where(ccw, u1, w1)
+        q0, q1 = np.where(ccw, w0, u0), np.where(ccw, w1, u1)
+        hw = _half(p0 * q1 - p1 * q0, p0 * q0 + p1 * q1)
+
+        def contains(cr_pv, dot_pv, cr_vq):
+            hv = _half(cr_pv, dot_pv)
+            return full | np.where(hv != hw, hv < hw, cr_vq >= 0)
+
+        # v = (1, 0), (-1, 0), (0, 1), (0, -1): cross(p, v), dot(p, v), cross(v, q)
+        plus_a = contains(-p1, p0, q1)
+        minus_a = contains(p1, -p0, -q1)
+        plus_b = contains(p0, p1, -q0)
+        minus_b = contains(-p0, -p1, q0)
+        lo_a = np.where(minus_a, ca - rhi, np.minimum(sa, ea)) - grow
+        hi_a = np.where(plus_a, ca + rhi, np.maximum(sa, ea)) + grow
+        lo_b = np.where(minus_b, cb - rhi, np.minimum(sb, eb)) - grow
+        hi_b = np.where(plus_b, cb + rhi, np.maximum(sb, eb)) + grow
+        lo[r, ia] = np.minimum(lo_a, np.minimum(sa, ea))
+        hi[r, ia] = np.maximum(hi_a, np.maximum(sa, ea))
+        lo[r, ib] = np.minimum(lo_b, np.minimum(sb, eb))
+        hi[r, ib] = np.maximum(hi_b, np.maximum(sb, eb))
+        ok[sel] = ~big & (r2s > 0) & (r2e > 0)
+    return ok
+
+
+_SQ_LIMIT = 2**31
+
+
+class _ZoneConstants:
+    """A zone's limits scaled to ``10**scale`` (rounded towards the inside), with range tables."""
+
+    def __init__(self, z, s: int):
+        if isinstance(z, SteppedZone):
+            self.ups_dn = np.array([_scaled(r.upto, s, False, 0) for r in z.regions], dtype=np.int64)
+            self.ups_up = np.array([_scaled(r.upto, s, True, 0) for r in z.regions], dtype=np.int64)
+            self.start_dn = _scaled(z.start, s, False, _NEG)
+            self.start_up = _scaled(z.start, s, True, _NEG)
+            if z.forbid:
+                mins = np.array([_scaled(r.min, s, False, _NEG) for r in z.regions], dtype=np.int64)
+                maxs = np.array([_scaled(r.max, s, True, _POS) for r in z.regions], dtype=np.int64)
+                self.min_t = _RangeTable(mins, np.minimum)
+                self.max_t = _RangeTable(maxs, np.maximum)
+            else:
+                mins_lo = np.array([_scaled(r.min, s, True, _NEG) for r in z.regions], dtype=np.int64)
+                maxs_hi = np.array([_scaled(r.max, s, False, _POS) for r in z.regions], dtype=np.int64)
+                self.min_t = _RangeTable(mins_lo, np.maximum)
+                self.max_t = _RangeTable(maxs_hi, np.minimum)
+
+
+def _constants(prover, z, s: int) -> _ZoneConstants:
+    cache = getattr(prover, "_screen_constants", None)
+    if cache is None:
+        cache = {}
+        prover._screen_constants = cache
+    key = (id(z), s)
+    got = cache.get(key)
+    if got is None:
+        got = cache[key] = _ZoneConstants(z, s)
+    return got
+
+
 def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
-    """Row indices the screen could not prove (to be decided exactly), in order."""
+    """Row indices the screen could not prove (to be decided exactly), in order.
+
+    Lines, rapids and dwells are screened by the bounding box of their end
+    points (a dogleg rapid stays in it too), arcs by :func:`arc_boxes`.
+    """
     n = len(chunk)
     if n == 0:
         return []
@@ -75,6 +204,7 @@ def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
     if (
         max(int(np.abs(start).max(initial=0)), int(np.abs(end).max(initial=0))) > _LIMIT
         or int(np.abs(chunk.tool_length).max(initial=0)) > _LIMIT
+        or (chunk.centre is not None and int(np.abs(chunk.centre).max(initial=0)) > _LIMIT)
     ):
         return list(range(n))
     lo = np.minimum(start, end)
@@ -82,7 +212,14 @@ def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
     d_up = _scaled(prover.margin, s, True, 0)
     if abs(d_up) > _LIMIT:
         return list(range(n))
-    ok = chunk.kind != SegmentKind.ARC
+    is_arc = chunk.kind == SegmentKind.ARC
+    ok = np.ones(n, dtype=bool)
+    if is_arc.any():
+        arows = np.flatnonzero(is_arc)
+        if chunk.centre is None or chunk.plane is None:
+            ok[arows] = False
+        else:
+            ok[arows] = arc_boxes(chunk, arows, lo, hi)
     axes = list(chunk.axes)
     tl = chunk.tool_length
     for z in prover.zones:
@@ -115,32 +252,26 @@ def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
                     if hi_ is not None:
                         ok &= r1 <= _scaled(hi_, s, False, _POS)
         elif isinstance(z, SteppedZone):
+            k = _constants(prover, z, s)
             r0, r1 = rng(z.reference_axis)
             l0, l1 = rng(z.limited_axis)
-            ups_dn = np.array([_scaled(r.upto, s, False, 0) for r in z.regions], dtype=np.int64)
-            ups_up = np.array([_scaled(r.upto, s, True, 0) for r in z.regions], dtype=np.int64)
+            last = len(k.ups_dn) - 1
             # region range reached by [r0, r1] (closed), generous at rounding
-            i0 = np.searchsorted(ups_up, r0, side="left")
-            i1 = np.searchsorted(ups_dn, r1, side="left")
-            i0c = np.minimum(i0, len(ups_dn) - 1)
-            i1c = np.minimum(i1, len(ups_dn) - 1)
-            mins_lo = np.array([_scaled(r.min, s, True, _NEG) for r in z.regions], dtype=np.int64)
-            maxs_hi = np.array([_scaled(r.max, s, False, _POS) for r in z.regions], dtype=np.int64)
+            i0 = np.searchsorted(k.ups_up, r0, side="left")
+            i1 = np.searchsorted(k.ups_dn, r1, side="left")
+            i0c = np.minimum(i0, last)
+            i1c = np.minimum(i1, last)
             if z.forbid:
-                mins = np.array([_scaled(r.min, s, False, _NEG) for r in z.regions], dtype=np.int64)
-                maxs = np.array([_scaled(r.max, s, True, _POS) for r in z.regions], dtype=np.int64)
                 lo_i = np.maximum(np.minimum(i0c, i1c) - 1, 0)
-                hi_i = np.minimum(i1c + 1, len(ups_dn) - 1)
-                below = l1 <= _RangeTable(mins, np.minimum).query(lo_i, hi_i)
-                above = l0 >= _RangeTable(maxs, np.maximum).query(lo_i, hi_i)
-                outside = (r1 <= _scaled(z.start, s, False, _NEG)) | (r0 >= ups_up[-1])
+                hi_i = np.minimum(i1c + 1, last)
+                below = l1 <= k.min_t.query(lo_i, hi_i)
+                above = l0 >= k.max_t.query(lo_i, hi_i)
+                outside = (r1 <= k.start_dn) | (r0 >= k.ups_up[-1])
                 ok &= below | above | outside
             else:
-                inside = (r0 >= _scaled(z.start, s, True, _NEG)) & (r1 <= ups_dn[-1]) & (i1 < len(ups_dn))
-                hi_i = np.minimum(i1c + 1, len(ups_dn) - 1)  # a rounded boundary may reach one more row
-                need_lo = _RangeTable(mins_lo, np.maximum).query(i0c, hi_i)
-                need_hi = _RangeTable(maxs_hi, np.minimum).query(i0c, hi_i)
-                ok &= inside & (l0 >= need_lo) & (l1 <= need_hi)
+                inside = (r0 >= k.start_up) & (r1 <= k.ups_dn[-1]) & (i1 <= last)
+                hi_i = np.minimum(i1c + 1, last)  # a rounded boundary may reach one more row
+                ok &= inside & (l0 >= k.min_t.query(i0c, hi_i)) & (l1 <= k.max_t.query(i0c, hi_i))
         elif isinstance(z, PolygonZone):
             if not z.forbid:
                 ok[:] = False
