@@ -435,6 +435,8 @@ class Controller:
         #: tool-break event (source line, fraction of that line's first cutting motion);
         #: :meth:`run` then hands over to :mod:`nczones.controller.recovery`
         self.break_at = break_at
+        #: program text lines, to quote an alarm's block when segments carry no text
+        self.source_lines: list[str] | None = None
         self.mode = Mode(mode)
         self.monitor_mode = MonitorMode(monitor)
         self.settings = settings or Settings()
@@ -818,7 +820,7 @@ class Controller:
         alarm = Alarm(
             block=None if seg is None else seg.block,
             line=None if seg is None else seg.line,
-            source="" if seg is None or seg.span is None else seg.span.text.strip(),
+            source=self._source_of(seg),
             zone=zones[0], zones=tuple(zones), position=self.mm(pos), pulse_position=tuple(int(p) for p in pos),
             time_s=self.clock, blocked=tuple((self.axes[k], s) for k, s in direction),
             derived="" if seg is None else seg.derived, first_outside=first_pos, overshoot_pulses=overshoot,
@@ -829,6 +831,17 @@ class Controller:
             ("zone", alarm.zone), ("position", dict(zip(self.axes, alarm.position))),
             ("blocked", [f"{a}{'+' if s > 0 else '-'}" for a, s in alarm.blocked]), ("note", note),
         ))
+
+    def _source_of(self, seg: Segment | None) -> str:
+        """The block's source text (column chunks carry only line numbers)."""
+        if seg is None or seg.span is None:
+            return ""
+        if seg.span.text:
+            return seg.span.text.strip()
+        lines = self.source_lines
+        if lines and seg.span.line is not None and 1 <= seg.span.line <= len(lines):
+            return lines[seg.span.line - 1].strip()
+        return ""
 
     def jog(self, axis: str, pulses: int) -> JogResult:
         """Jog one axis by ``pulses`` (signed), pulse by pulse, monitored after each pulse.
@@ -1024,6 +1037,9 @@ def simulate(
         items, first = _peek(motion)
         start = first.start if first is not None else None
     ctl = Controller(machine, mode=mode, monitor=monitor, settings=settings, start=start, break_at=break_at)
+    text = getattr(motion, "text", None)
+    if isinstance(text, str):
+        ctl.source_lines = text.splitlines()
     if progress is not None:
         items = _reporting(items, progress, getattr(motion, "text", None))
     return ctl.run(items)
