@@ -1,0 +1,240 @@
+"""The prover <-> controller contract of DESIGN §7, as executable checks.
+
+:func:`check_contract` runs one program through the prover (margin 0 and
+margin one pulse) and the reference controller (per-pulse and periodic
+monitoring) and asserts every clause of the contract (specs/contract.md
+states it exactly).  Cases inside the one-pulse gray band are counted in
+:data:`STATS` (and reported with :func:`hypothesis.event`), not failed.
+
+The prover is a parameter so that tests can inject a broken one and show
+that the checks catch it.
+"""
+
+from __future__ import annotations
+
+import time
+from collections import Counter
+from fractions import Fraction
+
+from hypothesis import event
+
+from nczones.controller import simulate
+from nczones.gcode import interpret
+from nczones.machine import Machine, RapidMode
+from nczones.motion import SegmentKind
+from nczones.prover import Verdict, verify_segments
+
+from oracles.bruteforce import first_violation, zone_constants
+
+#: Counts of every outcome class since the process started (printed by conftest).
+STATS: Counter = Counter()
+_T0 = time.monotonic()
+
+F0 = Fraction(0)
+
+
+class ContractViolation(AssertionError):
+    """The prover and the controller disagree outside the gray band."""
+
+
+def _count(label: str) -> None:
+    STATS[label] += 1
+    event(label)
+
+
+def _flush() -> None:
+    """Write STATS to $NCZONES_CONTRACT_STATS every 25 checked programs (long runs may be stopped)."""
+    import json
+    import os
+
+    out = os.environ.get("NCZONES_CONTRACT_STATS")
+    STATS["programs checked"] += 1
+    STATS["elapsed seconds"] = int(time.monotonic() - _T0)
+    if out and STATS["programs checked"] % 25 == 0:
+        with open(out, "w") as fh:
+            json.dump(dict(STATS), fh, indent=2, sort_keys=True)
+
+
+def _require(cond: bool, message: str) -> None:
+    if not cond:
+        raise ContractViolation(message)
+
+
+def program_segments(text: str, machine: Machine):
+    """Segments of a program that the interpreter models completely."""
+    # The full interpreter (not the vectorized fast path, which its own tests
+    # hold to the same segments): this suite is about prover vs controller.
+    run = interpret(text, machine, fast=False)
+    segs = list(run.segments())
+    if run.unsupported:
+        raise ContractViolation(f"generated program uses unsupported code: {run.unsupported[0]}")
+    return segs
+
+
+def _line_window_hit(seg, a_pos, t_lo, t_hi, tol) -> bool:
+    """Is there t in [t_lo, t_hi] with |path(t) - A| <= tol on every axis (exact)?"""
+    lo, hi = max(F0, t_lo), min(Fraction(1), t_hi)
+    for s, e, a in zip(seg.start, seg.end, a_pos):
+        d = e - s
+        if d == 0:
+            if abs(s - a) > tol:
+                return False
+            continue
+        t1, t2 = (a - tol - s) / d, (a + tol - s) / d
+        lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
+    return lo <= hi
+
+
+def _first_exit_check(machine, seg, v0, vu, alarm, u) -> None:
+    """Clause (2b): a transversal crossing of an axis-aligned face by a line."""
+    linear = seg.kind is SegmentKind.LINE or (
+        seg.kind is SegmentKind.RAPID and machine.rapid_mode is RapidMode.LINEAR)
+    if not linear:
+        _count("first exit: not a straight motion (arc or dogleg), window check only")
+        return
+    if not (v0.first_exit_exact and vu.first_exit_exact):
+        _count("first exit: parameter not exact, skipped")
+        return
+    pulses = [machine.axis(a).pulse for a in seg.axes]
+    delta = [abs((e - s) / p) for s, e, p in zip(seg.start, seg.end, pulses)]
+    n_steps = max(delta)
+    e = dict(v0.first_exit)
+    faces, near = [], []
+    for k, a in enumerate(seg.axes):
+        consts = zone_constants(machine, a, seg.tool_length)
+        gap = min((abs(e[a] - c) for c in consts), default=None)
+        if gap == 0:
+            faces.append(k)
+        elif gap is not None and gap < 3 * u:
+            near.append(k)
+    if len(faces) != 1 or near or delta[faces[0]] != n_steps or n_steps.denominator != 1:
+        _count("first exit: oblique, corner or minor-axis crossing (gray)")
+        return
+    j = faces[0]
+    a_pos = alarm.position
+    dist = max(abs(a_pos[k] - e[a]) / pulses[k] for k, a in enumerate(seg.axes))
+    STATS["first exit: max distance (pulses) x1000"] = max(
+        STATS["first exit: max distance (pulses) x1000"], int(dist * 1000))
+    _require(abs(a_pos[j] - e[seg.axes[j]]) <= u,
+             f"alarm at {a_pos} is more than one pulse from the first exit {e} on the crossing axis {seg.axes[j]}")
+    _require(_line_window_hit(seg, a_pos, vu.first_exit_parameter, v0.first_exit_parameter + 1 / n_steps, u),
+             f"alarm at {a_pos} is not within one pulse of the path between the margin-u entry "
+             f"(t={vu.first_exit_parameter}) and one step past the first exit (t={v0.first_exit_parameter})")
+    _count("first exit: transversal, checked")
+
+
+def _replay_witnesses(machine, result, by_block, margin) -> None:
+    """Clause (3): every reported witness is outside the allowed set (exactly)."""
+    for v in result.violations:
+        seg = by_block[v.block][0]
+        names = {z.name for z in machine.allowed.violated_zones(dict(v.point), seg.tool_length)}
+        _require(bool(names), f"witness {dict(v.point)} of block {v.block} is inside the allowed set")
+        _require(v.zone in names, f"witness of block {v.block} names zone {v.zone!r}, but violates {sorted(names)}")
+        pp, p = dict(v.path_point), dict(v.point)
+        _require(all(abs(p[a] - pp[a]) <= margin for a in p),
+                 f"witness {p} is not within the margin box of its path point {pp}")
+        segs = by_block[v.block]
+        if len(segs) == 1 and v.parameter_exact and segs[0].kind is SegmentKind.LINE:
+            s = segs[0]
+            at = tuple(a + v.parameter * (b - a) for a, b in zip(s.start, s.end))
+            _require(dict(zip(s.axes, at)) == pp, f"path point {pp} is not the line's point at t={v.parameter}")
+        if len(segs) == 1 and segs[0].kind is SegmentKind.ARC and segs[0].centre is not None and not segs[0].is_helix():
+            s = segs[0]
+            i, j, _ = s.plane_indices()
+            r2 = (s.start[i] - s.centre[0]) ** 2 + (s.start[j] - s.centre[1]) ** 2
+            q = (pp[s.axes[i]] - s.centre[0]) ** 2 + (pp[s.axes[j]] - s.centre[1]) ** 2
+            if q != r2:
+                _count("witness: arc path point not exactly on the circle (enclosure)")
+
+
+def _max_speed_mm_s(machine, segs) -> Fraction:
+    feeds = [s.feed_mm_min for s in segs if s.feed_mm_min is not None]
+    rates = [a.rapid_mm_min for a in machine.axes]
+    return max(feeds + rates) / 60
+
+
+def check_contract(machine: Machine, text: str, *, verify=verify_segments, periodic: bool = True) -> str:
+    """Check DESIGN §7 on one program; returns the outcome class (also counted in STATS)."""
+    segs = program_segments(text, machine)
+    u = max(a.pulse for a in machine.axes)
+    r0 = verify(segs, machine, max_violations=3)
+    ru = verify(segs, machine, margin=u, max_violations=1)
+    by_block: dict[int, list] = {}
+    for s in segs:
+        by_block.setdefault(s.block, []).append(s)
+    _replay_witnesses(machine, r0, by_block, F0)
+    _replay_witnesses(machine, ru, by_block, u)
+    if Verdict.UNKNOWN in (r0.verdict, ru.verdict):
+        _count("prover unknown (not compared)")
+        _flush()
+        return "unknown"
+    _require(not (ru.verdict is Verdict.SAFE and r0.verdict is not Verdict.SAFE),
+             "safe with a one-pulse margin but not safe with none")
+    sim = simulate(segs, machine, start=machine.start, monitor="pulse")
+    alarm = sim.alarms[0] if sim.alarms else None
+    if ru.verdict is Verdict.SAFE:
+        # clause (1)
+        _require(alarm is None, f"prover: safe with margin {u}; controller: alarm {alarm}")
+        _count("safe with margin u: no alarm")
+        outcome = "safe"
+    else:
+        b_u = ru.violations[0].block
+        if alarm is not None:
+            tl = by_block[alarm.block][0].tool_length if alarm.block is not None else F0
+            _require(not machine.allowed.contains(machine.point(alarm.position), tl),
+                     f"alarm at {alarm.position}, a point inside the allowed set")
+            _require(alarm.block is not None and alarm.block >= b_u,
+                     f"alarm in block {alarm.block}, before any point comes within one pulse of a boundary "
+                     f"(first such block: {b_u})")
+        deep = next((v for v in r0.violations if v.depth > u), None)
+        if r0.verdict is Verdict.SAFE and alarm is not None:
+            # gray only if the path really stays inside: the independent brute force must agree
+            hit = first_violation(segs, machine)
+            _require(hit is None, f"prover: safe; controller alarms in block {alarm.block} and the brute force "
+                                  f"finds the path point {hit and hit.point} of block {hit and hit.block} outside")
+        if deep is None:
+            kind = "safe" if r0.verdict is Verdict.SAFE else "unsafe <= 1 pulse deep"
+            _count(f"gray band ({kind}): {'alarm' if alarm else 'no alarm'}")
+            outcome = "gray"
+        else:
+            # clause (2)
+            _require(alarm is not None,
+                     f"prover: block {deep.block} goes {deep.depth} deep (> {u}); controller: no alarm")
+            _require(alarm.block <= deep.block,
+                     f"prover: block {deep.block} goes {deep.depth} deep; controller alarms only in block {alarm.block}")
+            v0, vu = r0.violations[0], ru.violations[0]
+            if alarm.block < deep.block:
+                _count("unsafe: alarm in an earlier block that comes within one pulse")
+            else:
+                _count("unsafe: alarm in the deep block")
+            if v0 is deep and v0.block == alarm.block == vu.block and len(by_block[v0.block]) == 1:
+                _first_exit_check(machine, by_block[v0.block][0], v0, vu, alarm, u)
+            outcome = "unsafe"
+    if periodic:
+        _check_periodic(machine, segs, alarm)
+    _flush()
+    return outcome
+
+
+def _check_periodic(machine, segs, alarm) -> None:
+    """Periodic monitoring: no alarm without a pulse alarm; at most one period (+1 pulse) later."""
+    sim = simulate(segs, machine, start=machine.start, monitor="periodic")
+    p = sim.alarms[0] if sim.alarms else None
+    if alarm is None:
+        _require(p is None, f"periodic monitor alarms at {p and p.position} although no pulse position is outside")
+        return
+    if p is None:
+        _count("periodic: excursion shorter than a period, not sampled")
+        return
+    period_s = machine.monitor_period_ms / 1000
+    _require(p.time_s >= alarm.time_s - 1e-9, "periodic alarm before the first outside pulse")
+    if p.first_outside != alarm.position:
+        _count("periodic: an earlier short excursion was not sampled")
+        return
+    _require(p.time_s - alarm.time_s <= float(period_s) + 1e-9,
+             f"periodic alarm {p.time_s - alarm.time_s:.6f} s after the first outside pulse (> one period)")
+    u = max(a.pulse for a in machine.axes)
+    travel = _max_speed_mm_s(machine, segs) * period_s + u
+    dist = max(abs(a - b) for a, b in zip(p.position, alarm.position))
+    _require(dist <= travel, f"periodic alarm {dist} mm past the first outside pulse (> one period of travel + 1 pulse = {travel})")
+    _count("periodic: alarm within one period of travel")

@@ -1,0 +1,31 @@
+"""The generated machines and programs the contract is checked on."""
+
+from hypothesis import strategies as st
+
+from nczones.testing import machines, programs
+
+
+@st.composite
+def contract_cases(draw, *, axes=(("X", "Y"), ("X", "Y", "Z")), allow_kinds=("stepped", "box", "polygon"),
+                   pulses=("0.01", "0.01", "0.001"), max_blocks=6, arcs=True, inside_biases=(0.3, 0.6, 0.9),
+                   boundary_bias=0.7):
+    """(machine, program text): every zone kind, 2 or 3 axes, boundary-biased programs."""
+    machine = draw(
+        machines(
+            axes=draw(st.sampled_from(axes)),
+            allow_kinds=allow_kinds,
+            size=100,
+            pulse=draw(st.sampled_from(pulses)),
+        )
+    )
+    text = draw(
+        programs(
+            machine,
+            max_blocks=max_blocks,
+            arcs=arcs,
+            subprograms=True,
+            inside_bias=draw(st.sampled_from(inside_biases)),
+            boundary_bias=boundary_bias,
+        )
+    )
+    return machine, text

@@ -1,0 +1,69 @@
+"""The contract tests have teeth: a deliberately broken prover is caught.
+
+Each test injects one plausible bug into the prover (monkeypatch), runs the
+same property function as test_contract.py under Hypothesis, and requires
+it to fail with a :class:`ContractViolation`.
+"""
+
+import inspect
+
+import pytest
+from hypothesis import Phase, given, settings
+
+import nczones.prover.core as core
+import nczones.prover.exact as ex
+from nczones.motion import Segment, SegmentKind
+
+from .contract import ContractViolation, check_contract
+from .strategies import contract_cases
+
+
+def run_property(cases, max_examples):
+    @settings(max_examples=max_examples, derandomize=True, database=None, deadline=None,
+              phases=[Phase.generate], report_multiple_bugs=False)
+    @given(cases)
+    def prop(case):
+        machine, text = case
+        check_contract(machine, text, periodic=False)
+
+    prop()
+
+
+def _patched_line_violation(old: str, new: str):
+    src = inspect.getsource(ex.line_violation)
+    assert old in src, "the prover's stepped-table encoding changed; update this injected bug"
+    ns = dict(vars(ex))
+    exec(compile(src.replace(old, new), ex.__file__, "exec"), ns)
+    return ns["line_violation"]
+
+
+TOUCH = "touch = _all([ln.lt(r, b + d, False), ln.gt(r, a - d, i != 0)])"
+
+
+def test_stepped_regions_open_at_their_bounds_are_caught(monkeypatch):
+    # Bug: region i of an allow table covers upto[i-1] < r < upto[i] (its own upto left out),
+    # so a motion exactly on a region boundary is never compared with that region's limits.
+    broken = _patched_line_violation(TOUCH, "touch = _all([ln.lt(r, b + d, True), ln.gt(r, a - d, True)])")
+    monkeypatch.setattr(ex, "line_violation", broken)
+    with pytest.raises(ContractViolation):
+        run_property(contract_cases(axes=(("X", "Y"),), allow_kinds=("stepped",), arcs=False,
+                                    pulses=("0.01",), boundary_bias=0.95, inside_biases=(0.0, 0.3)), 400)
+
+
+def test_arcs_checked_only_at_their_end_points_are_caught(monkeypatch):
+    def end_points_only(self, seg, params):
+        for p in (seg.start, seg.end):
+            point = Segment(SegmentKind.LINE, p, p, seg.axes, seg.block, seg.span, seg.tool_length)
+            out = self._check_concrete(point, params)
+            if out.violation is not None or out.reason is not None:
+                return out
+        return core._Outcome(engine="exact")
+
+    monkeypatch.setattr(core.Prover, "_check_arc", end_points_only)
+    with pytest.raises(ContractViolation):
+        run_property(contract_cases(allow_kinds=("box", "stepped"), pulses=("0.01",)), 300)
+
+
+def test_the_unbroken_prover_passes_the_same_runs():
+    run_property(contract_cases(axes=(("X", "Y"),), allow_kinds=("stepped",), arcs=False,
+                                pulses=("0.01",), boundary_bias=0.95, inside_biases=(0.0, 0.3)), 40)

@@ -1,0 +1,1 @@
+"""Independent oracles shared by several test areas (brute-force path checkers)."""
