@@ -121,6 +121,7 @@ def verify(
     file: str | None = None,
     arc_tolerance: Fraction | str | None = None,
     progress=None,
+    recovery: str | None = None,
 ) -> Result:
     """Verify a G-code program (text or path) on a machine (DESIGN §5).
 
@@ -132,6 +133,11 @@ def verify(
     :class:`~nczones.errors.GcodeError`.  ``progress``, if given, is called as
     ``progress(line, total_lines)`` after each chunk of motion is checked
     (see :mod:`nczones.report.progress`).
+
+    ``recovery="start"|"breakpoint"`` also proves the machine's automatic
+    tool-break recovery (``[tool_change]``) from every break point of every
+    cutting motion (:mod:`nczones.prover.recovery`); its violations have
+    ``kind == "recovery"``.
     """
     from ..exact import exact
     from ..gcode import interpret
@@ -179,6 +185,17 @@ def verify(
     for u in run.unsupported:
         reasons.append(Reason(f"{u.code}: {u.reason}", fix(u.span), None, u.code))
     notes = tuple(run.assumed_modal_text())
+    if recovery is not None:
+        from .recovery import verify_recovery
+
+        rerun = interpret(program, machine, file=file, **extra)
+        rec = verify_recovery(rerun, machine, variant=recovery, margin=margin, max_violations=max_violations)
+        violations = tuple(sorted(violations + tuple(replace(v, span=fix(v.span)) for v in rec.violations),
+                                  key=lambda v: (v.block, v.kind != "motion")))
+        reasons += [replace(r, span=fix(r.span)) for r in rec.reasons]
+        notes += (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
+                  f"{dict(rec.stats)['recovery_motions']} cutting motions",)
+        result = replace(result, stats=result.stats + rec.stats)
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
     timings = (("total_s", time.perf_counter() - t0),) + result.timings
     return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes,

@@ -33,7 +33,7 @@ def _run(args: argparse.Namespace) -> int:
     bar = progress_for(sys.stderr, "verify")
     try:
         result = verify(args.program, machine, margin=margin, params=params, engine=args.engine,
-                        max_violations=args.max_violations, progress=bar)
+                        max_violations=args.max_violations, progress=bar, recovery=args.recovery)
     finally:
         if bar is not None:
             bar.close()
@@ -61,6 +61,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--param", action="append", default=[], metavar="NAME=LO..HI",
                    help="parameter range: G54.X=-2..2 (offset deviation), H1=195..205 (tool length), "
                         "start.Z=-10..0 (start deviation), home.X=-0.5..0.5 (homing error)")
+    p.add_argument("--recovery", choices=("start", "breakpoint"), default=None,
+                   help="also prove the automatic tool-break recovery of the machine's [tool_change] "
+                        "from every break point, restarting at the sequence start or at the break point")
     p.add_argument("--engine", choices=("auto", "z3"), default="auto")
     p.add_argument("--max-violations", type=int, default=20, metavar="N")
     p.add_argument("--format", choices=("text", "json", "html", "sarif"), default="text",

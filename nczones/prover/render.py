@@ -101,6 +101,13 @@ def to_json_dict(result: Result) -> dict:
             "params": {n: _d(x) for n, x in v.params},
             "note": v.note,
         })
+        if v.kind == "recovery":
+            violations[-1].update({
+                "break_line": v.break_line,
+                "break_parameter": None if v.break_parameter is None else format_decimal(v.break_parameter, 12),
+                "break_point": {a: _d(x) for a, x in v.break_point},
+                "leg": v.leg,
+            })
     doc = {
         "verdict": result.verdict.label,
         "program": result.file,

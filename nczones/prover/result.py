@@ -98,6 +98,12 @@ class Violation:
     params: tuple[tuple[str, Fraction], ...] = ()
     zones: tuple[str, ...] = ()
     note: str = ""
+    # kind == "recovery" (tool-break recovery, nczones.prover.recovery): the line of the cutting
+    # motion where the tool breaks, the break parameter there, the break point, the recovery leg
+    break_line: int | None = None
+    break_parameter: Fraction | None = None
+    break_point: tuple[tuple[str, Fraction], ...] = ()
+    leg: str = ""
 
     @property
     def line(self) -> int | None:

@@ -22,7 +22,7 @@ SCHEMA = json.loads((ROOT / "specs" / "report.schema.json").read_text())
 def _run(case, engine="auto"):
     machine = load_machine(EX / case["machine"])
     return verify(str(EX / case["program"]), machine, margin=case.get("margin", "0"),
-                  params=case.get("params", []), engine=engine)
+                  params=case.get("params", []), engine=engine, recovery=case.get("recovery"))
 
 
 def test_at_least_twenty_examples():
@@ -36,6 +36,8 @@ def test_example_golden(case):
     if case["verdict"] == "unsafe":
         v = r.violations[0]
         assert v.line == case["first_line"]
+        if "recovery" in case:
+            assert v.kind == "recovery" and v.break_line == case["first_line"] and v.leg
         if "zone" in case:
             assert v.zone == case["zone"]
         for name in case.get("counterexample_params", []):
@@ -51,7 +53,7 @@ def test_example_golden(case):
 
 def _tool_length(v, m):
     # examples that violate tip zones use H1 in the mill
-    return m.tool_length(1) if v.zone in ("vise", "table") else 0
+    return m.tool_length(1) if v.zone in ("vise", "table", "clamp") else 0
 
 
 @pytest.mark.parametrize("case", [c for c in CASES if not c.get("params")][:12],
