@@ -1,9 +1,10 @@
 """``nczones simulate`` (DESIGN §8): exit 0 success, 1 an alarm, 2 bad input.
 
 The program is interpreted by :mod:`nczones.gcode` and run through the
-reference controller.  ``--break-at`` (tool-break recovery) belongs to a later
-stage: :data:`EXTRA_OPTIONS` and :data:`RUNNERS` are the hooks it will use
-(add the option, then take over the run when the option is given).
+reference controller.  ``--break-at LINE[:FRACTION]`` injects a tool break and
+runs the automatic recovery (:mod:`nczones.controller.recovery`).
+:data:`EXTRA_OPTIONS` and :data:`RUNNERS` let later stages add options and
+take over the run.
 """
 
 from __future__ import annotations
@@ -39,6 +40,23 @@ def _decimal_option(name: str, text: str) -> Fraction:
     return q
 
 
+def _break_at(text: str | None) -> tuple[int, Fraction] | None:
+    """``LINE[:FRACTION]`` -> (line, fraction); the fraction defaults to 0 (the start of the motion)."""
+    if text is None:
+        return None
+    line_s, _, frac_s = text.partition(":")
+    try:
+        line = int(line_s)
+        frac = parse_decimal(frac_s) if frac_s else Fraction(0)
+    except Exception:
+        line, frac = 0, Fraction(-1)
+    if line < 1 or not 0 <= frac <= 1:
+        raise InputError(Diagnostic("SM111", f"--break-at {text!r}: expected LINE[:FRACTION], a source line "
+                                    "number and the fraction of its cutting motion done when the tool breaks "
+                                    "(0 to 1), such as 12:0.5", file="<command line>"))
+    return line, frac
+
+
 def render_text(result: Any, program: str) -> str:
     """The human-readable report of one simulation."""
     axes = result.axes
@@ -50,7 +68,8 @@ def render_text(result: Any, program: str) -> str:
     if result.alarms:
         for a in result.alarms:
             where = f"line {a.line}, block {a.block}" if a.line is not None else "before the first block"
-            lines.append(f"  ALARM stroke limit, zone \"{a.zone}\" at {where}: {pt(a.position)}")
+            during = f" during {a.derived}" if a.kind == "recovery" else ""
+            lines.append(f"  ALARM stroke limit{during}, zone \"{a.zone}\" at {where}: {pt(a.position)}")
             if a.source:
                 lines.append(f"    {a.source}")
             if a.blocked:
@@ -61,6 +80,15 @@ def render_text(result: Any, program: str) -> str:
                              f"interpolation steps later (periodic sampling)")
     else:
         lines.append("  no alarm" + ("" if result.completed else " (program did not complete)"))
+    for e in result.events:
+        d = dict(e.data)
+        if e.kind == "tool-break":
+            lines.append(f"  TOOL BREAK at line {e.line} after step {d['step']} of {d['of_steps']}: "
+                         f"{pt(d['position'].values())}; {d['variant']} restart")
+        elif e.kind == "recovery":
+            lines.append(f"    recovery {d['leg']} to {pt(d['end'].values())}")
+        elif e.kind == "resume":
+            lines.append(f"    resumed at {pt(d['position'].values())}")
     lines.append(f"  machine position: {pt(result.machine_position)}")
     if result.temporary_position is not None:
         lines.append(f"  temporary machine coordinates (program check): {pt(result.temporary_position)}")
@@ -105,7 +133,8 @@ def _run(args: argparse.Namespace) -> int:
 
         bar = progress_for(sys.stderr, "simulate")
         try:
-            result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings, progress=bar)
+            result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings, progress=bar,
+                              break_at=_break_at(args.break_at))
         finally:
             if bar is not None:
                 bar.close()
@@ -145,6 +174,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="filter time constant on every axis after interpolation (servo log)")
     p.add_argument("--filter", choices=("exponential", "linear"), default="exponential")
     p.add_argument("--events", action="store_true", help="include the event log in the JSON output")
+    p.add_argument("--break-at", metavar="LINE[:FRACTION]", default=None,
+                   help="break the tool in the first cutting motion of LINE after FRACTION of it (default 0) "
+                        "and run the automatic recovery of the machine's [tool_change]")
     p.add_argument("--format", choices=("text", "json"), default="text")
     for extra in EXTRA_OPTIONS:
         extra(p)
