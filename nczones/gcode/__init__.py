@@ -150,9 +150,12 @@ class Interpretation:
         return out
 
     def segments(self) -> Iterator[Segment]:
-        """Iterate segment views of every chunk."""
+        """Iterate segment views of every chunk, each span carrying its source line."""
+        lines: dict[int, str] = {}
         for chunk in self:
-            yield from chunk.segments()
+            if chunk.scale is not None and not lines:
+                lines = dict(enumerate(self.text.splitlines(), start=1))
+            yield from chunk.segments(lines)
 
 
 def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,
