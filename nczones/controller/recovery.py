@@ -598,12 +598,12 @@ def run_with_break(ctl, motion) -> Any:
     return ctl.result()
 
 
-def record_pulses(ctl) -> list[tuple[str, np.ndarray]]:
-    """Record every interpolation step the controller runs: ``[(derived, positions (n, axes))]``.
+def record_pulses(ctl) -> list[tuple[int, str, np.ndarray]]:
+    """Record every interpolation step the controller runs: ``[(block, derived, positions (n, axes))]``.
 
     For tests and notebooks: wraps this controller's ``_run_plan``.
     """
-    log: list[tuple[str, np.ndarray]] = []
+    log: list[tuple[int, str, np.ndarray]] = []
     inner = ctl._run_plan
 
     def wrapped(seg, plan):
@@ -611,7 +611,7 @@ def record_pulses(ctl) -> list[tuple[str, np.ndarray]]:
         inner(seg, plan)
         done = ctl.steps - steps0
         if done:
-            log.append((seg.derived, np.asarray(plan.chunk(0, done), dtype=np.int64).reshape(done, len(plan.p0))))
+            log.append((seg.block, seg.derived, np.asarray(plan.chunk(0, done), dtype=np.int64).reshape(done, len(plan.p0))))
 
     ctl._run_plan = wrapped
     return log
