@@ -1,41 +1,56 @@
 """Benchmark of the G-code front end (a script, not a test).
 
-    python bench/bench_gcode.py [--lines 1000000]
+    python bench/bench_gcode.py [--lines 1000000] [--small 100000] [--naive-lines 100000]
 
-Prints interpreted lines/s on stellabee1.ngc (corpus), on a generated
-CAM-style program (fast path) and on a generated program that needs the full
-interpreter (incremental moves with M/S/T words on every line), the
-fast/full ratio, and peak memory (resource.ru_maxrss).
+Prints, each case measured in a fresh process: interpreted lines/s and
+segments/s (wall clock and CPU), the share of lines the vectorized fast
+path took, and the peak resident memory, for
+
+* ``stellabee1.ngc`` from the corpus, fast path and full interpreter;
+* a generated CAM-style program (G0/G1/G2 with modal words) of ``--small``
+  and ``--lines`` lines (the memory of the two shows whether it grows with
+  the program);
+* the same CAM program (``--naive-lines`` lines) through the full
+  interpreter only, for the fast/naive ratio of the same run;
+* a generated program that needs the full interpreter (M/S words on every
+  line).
 """
 
 from __future__ import annotations
 
 import argparse
 import random
-import resource
 import sys
 import tempfile
-import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from nczones.gcode import interpret  # noqa: E402
-from nczones.machine import parse_machine  # noqa: E402
+from _bench import STELLABEE, Clock, emit, machine_description, run_case  # noqa: E402
 
-STELLA = Path("/work/shared/corpus/linuxcnc/tests/trajectory-planner/circular-arcs/nc_files/performance/stellabee1.ngc")
-MACHINE = parse_machine(
+MACHINE_TEXT = (
     '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\n[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
     '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[tool_lengths]\nH1 = "100"\n'
 )
 
 
+def _machine():
+    from nczones.machine import parse_machine
+
+    return parse_machine(MACHINE_TEXT)
+
+
+MACHINE = _machine()
+
+
 def cam_program(n: int, seed: int = 1) -> str:
+    """About ``n`` lines: modal X/Y moves, an arc every 50 lines."""
     rnd = random.Random(seed)
     out = ["G21 G90 G17 G54", "G43 H1 G0 Z5", "G1 F800"]
     x = y = 0.0
-    for i in range(n - 4):
-        if i % 50 == 49:
+    while len(out) < n - 1:
+        if len(out) % 50 == 49:
             x = round(x + 2, 3)
             out.append(f"G2 X{x:.3f} Y{y:.3f} I1.000 J0")
             out.append("G1")
@@ -56,37 +71,71 @@ def full_program(n: int, seed: int = 2) -> str:
     return "\n".join(out) + "\n"
 
 
-def timed(path: Path, fast: bool = True) -> tuple[int, float, int, int]:
-    lines = path.read_bytes().count(b"\n")
-    t = time.perf_counter()
-    run = interpret(path, MACHINE, fast=fast, arc_tolerance="0.1")
-    segs = sum(len(c) for c in run)
-    dt = time.perf_counter() - t
-    return lines, dt, segs, run.fast_lines
+def case(path: str, fast: bool, limit: int | None) -> None:
+    """One measurement (in this fresh process): interpret the program, print a JSON line."""
+    from nczones.gcode import interpret
+
+    p = Path(path)
+    if limit:
+        text = "".join(p.read_text().splitlines(keepends=True)[:limit])
+        src = text
+        lines = text.count("\n")
+    else:
+        src = p
+        lines = p.read_bytes().count(b"\n")
+    with Clock() as c:
+        run = interpret(src, MACHINE, fast=fast, arc_tolerance="0.1")
+        segs = sum(len(ch) for ch in run)
+    emit({"lines": lines, "segments": segs, "wall": c.wall, "cpu": c.cpu, "fast_lines": run.fast_lines})
 
 
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--lines", type=int, default=1_000_000)
-    ap.add_argument("--full-lines", type=int, default=200_000)
+    ap.add_argument("--small", type=int, default=100_000)
+    ap.add_argument("--naive-lines", type=int, default=100_000)
+    ap.add_argument("--full-lines", type=int, default=100_000)
+    ap.add_argument("--case", nargs=3, metavar=("PATH", "FAST", "LIMIT"), help=argparse.SUPPRESS)
     a = ap.parse_args()
+    if a.case:
+        case(a.case[0], a.case[1] == "1", int(a.case[2]) or None)
+        return
+    me = str(Path(__file__).resolve())
+    print(f"machine: {machine_description()}")
+    rows = []
     with tempfile.TemporaryDirectory() as d:
-        rows = []
-        if STELLA.is_file():
-            rows.append(("stellabee1.ngc (fast path)", *timed(STELLA)))
-            rows.append(("stellabee1.ngc (full interpreter)", *timed(STELLA, fast=False)))
-        cam = Path(d) / "cam.ngc"
-        cam.write_text(cam_program(a.lines))
-        rows.append((f"generated CAM {a.lines} lines (fast path)", *timed(cam)))
+        if STELLABEE.is_file():
+            rows.append(("stellabee1.ngc, fast path", run_case(me, "--case", str(STELLABEE), "1", "0")))
+            rows.append(("stellabee1.ngc, full interpreter (naive)", run_case(me, "--case", str(STELLABEE), "0", "0")))
+        small = Path(d) / "cam_small.ngc"
+        small.write_text(cam_program(a.small))
+        big = Path(d) / "cam_big.ngc"
+        big.write_text(cam_program(a.lines))
+        rows.append((f"generated CAM {a.small:,} lines, fast path", run_case(me, "--case", str(small), "1", "0")))
+        rows.append((f"generated CAM {a.lines:,} lines, fast path", run_case(me, "--case", str(big), "1", "0")))
+        rows.append((f"generated CAM first {a.naive_lines:,} lines, full interpreter (naive)",
+                     run_case(me, "--case", str(big), "0", str(a.naive_lines))))
         full = Path(d) / "full.ngc"
         full.write_text(full_program(a.full_lines))
-        rows.append((f"generated full-interpreter {a.full_lines} lines", *timed(full)))
-        for name, lines, dt, segs, fl in rows:
-            print(f"{name:45s} {lines:9d} lines {dt:7.2f} s {lines / dt:10.0f} lines/s  segments {segs}  fast lines {fl}")
-        fast_rate = rows[-2][1] / rows[-2][2]
-        full_rate = rows[-1][1] / rows[-1][2]
-        print(f"fast/full ratio: {fast_rate / full_rate:.1f}")
-    print(f"peak memory (ru_maxrss): {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MiB")
+        rows.append((f"generated M/S-word program {a.full_lines:,} lines (needs the full interpreter)",
+                     run_case(me, "--case", str(full), "1", "0")))
+    print(f"{'case':72s} {'lines':>9s} {'segments':>9s} {'wall s':>7s} {'cpu s':>7s} {'lines/s wall':>13s} "
+          f"{'lines/s cpu':>12s} {'segments/s':>11s} {'fast share':>10s} {'peak RSS':>9s}")
+    for name, r in rows:
+        print(f"{name:72s} {r['lines']:9d} {r['segments']:9d} {r['wall']:7.2f} {r['cpu']:7.2f} "
+              f"{r['lines'] / r['wall']:13,.0f} {r['lines'] / r['cpu']:12,.0f} {r['segments'] / r['wall']:11,.0f} "
+              f"{r['fast_lines'] / max(r['lines'], 1):10.1%} {r['peak_rss_mib']:7.0f} MiB")
+    by = dict(rows)
+    fast = by[f"generated CAM {a.lines:,} lines, fast path"]
+    naive = by[f"generated CAM first {a.naive_lines:,} lines, full interpreter (naive)"]
+    print(f"fast path vs full interpreter on the CAM program (lines/s, CPU): "
+          f"{(fast['lines'] / fast['cpu']) / (naive['lines'] / naive['cpu']):.0f}x")
+    if STELLABEE.is_file():
+        f, n = by["stellabee1.ngc, fast path"], by["stellabee1.ngc, full interpreter (naive)"]
+        print(f"fast path vs full interpreter on stellabee1.ngc (CPU): {n['cpu'] / f['cpu']:.0f}x")
+    sm = by[f"generated CAM {a.small:,} lines, fast path"]
+    print(f"peak RSS {sm['peak_rss_mib']:.0f} MiB at {a.small:,} lines, {fast['peak_rss_mib']:.0f} MiB at "
+          f"{a.lines:,} lines (the program text itself is held: about 1 byte per character)")
 
 
 if __name__ == "__main__":

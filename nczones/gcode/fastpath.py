@@ -68,42 +68,40 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
 
     it = interp.interpreter
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
-    data = _source_bytes(interp)
-    if not data or _needs_language_layer(data, it, size):
+    text = _truncate_at_percent(interp.text)
+    if not text or _needs_language_layer(text, it, size):
         yield from it.run(_blocks(interp.text, interp.file, interp.block_delete, it))
         return
     block_counter = [0]
     line0 = 0
-    for lo, hi in _block_ranges(data, size):
+    for blk in _encoded_blocks(text, size):
         if it.ended:
             break
-        blk = data[lo:hi]
         yield from _run_block(interp, blk, line0, block_counter)
         line0 += blk.count(b"\n") + (0 if blk.endswith(b"\n") else 1)
 
 
-#: Bytes per block of the fast path (cut at a line end): about 50,000 lines of CAM code.
+#: Characters per block of the fast path (cut at a line end): about 50,000 lines of CAM code.
 BLOCK_BYTES = 1 << 20
 
 
-def _source_bytes(interp) -> bytes:
-    """The program as bytes, cut at a ``%`` line that ends it."""
-    text = _truncate_at_percent(interp.text)
-    return text.encode("utf-8", errors="surrogateescape")
+def _encoded_blocks(src: str | bytes, size: int):
+    """Blocks of about ``size`` characters of ``src``, each ending after a newline (or at the end), as bytes.
 
-
-def _block_ranges(data: bytes, size: int):
-    """(lo, hi) byte ranges of about ``size`` bytes, each ending after a newline (or at the end)."""
-    n = len(data)
+    Only one block is encoded at a time, so no second copy of the program is made.
+    """
+    nl = "\n" if isinstance(src, str) else b"\n"
+    n = len(src)
     lo = 0
     while lo < n:
         hi = lo + size
         if hi >= n:
-            yield lo, n
-            return
-        cut = data.find(b"\n", hi - 1)
-        hi = n if cut < 0 else cut + 1
-        yield lo, hi
+            hi = n
+        else:
+            cut = src.find(nl, hi - 1)
+            hi = n if cut < 0 else cut + 1
+        blk = src[lo:hi]
+        yield blk.encode("utf-8", errors="surrogateescape") if isinstance(blk, str) else blk
         lo = hi
 
 
@@ -111,16 +109,16 @@ _SUSPECT = np.zeros(256, dtype=bool)
 _SUSPECT[list(b"#[/OoMm")] = True
 
 
-def _needs_language_layer(data: bytes, it, size: int) -> bool:
+def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
     """True if the code (outside comments) has ``# [ O / M98 M99``: the whole program needs the language layer.
 
     Only the lines holding one of the bytes ``# [ / O o M m`` can hold such a
     token; they are stripped of comments and blanks and checked exactly.
     """
-    if not any(data.find(bytes((ch,))) >= 0 for ch in b"#[/OoMm"):
+    chars = "#[/OoMm" if isinstance(src, str) else [bytes((ch,)) for ch in b"#[/OoMm"]
+    if not any(src.find(ch) >= 0 for ch in chars):
         return False
-    for lo, hi in _block_ranges(data, size):
-        blk = data[lo:hi]
+    for blk in _encoded_blocks(src, size):
         b = np.frombuffer(blk, dtype=np.uint8)
         pos = np.flatnonzero(_SUSPECT[b])
         if pos.size == 0:
