@@ -81,6 +81,18 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
         line0 += blk.count(b"\n") + (0 if blk.endswith(b"\n") else 1)
 
 
+def _prepare(blk: bytes, it):
+    """What a block needs before interpretation, independent of the modal state: the
+    classification, the runs to take fast and their parsed words (a pure function of the bytes)."""
+    simple, starts, ends_, code = _classify(blk, it)
+    nlines = len(starts)
+    edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
+    runs = edges.reshape(-1, 2).tolist()
+    fast_runs = [(a, b) for a, b in runs if b - a >= MIN_RUN or a == 0 or b == nlines]
+    parsed = {(a, b): _parse_words(code[0], code[1], a, b) for a, b in fast_runs}
+    return simple, starts, ends_, code, fast_runs, parsed
+
+
 #: Characters per block of the fast path (cut at a line end): about 50,000 lines of CAM code.
 BLOCK_BYTES = 1 << 20
 
@@ -135,17 +147,17 @@ def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
     return False
 
 
-def _run_block(interp, blk: bytes, line0: int, block_counter):
-    """Interpret one block of whole lines (line ``line0`` is its first, 0-based)."""
+def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None):
+    """Interpret one block of whole lines (line ``line0`` is its first, 0-based).
+
+    Maximal runs of simple lines are taken fast when long enough or cut by
+    the block's ends (see :func:`_prepare`).
+    """
     it = interp.interpreter
-    simple, starts, ends_, code = _classify(blk, it)
+    simple, starts, ends_, code, fast_runs, parsed = prep if prep is not None else _prepare(blk, it)
     nlines = len(starts)
     if nlines == 0:
         return
-    # maximal runs of simple lines; a run is taken fast when long enough or cut by the block end
-    edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
-    runs = edges.reshape(-1, 2).tolist()
-    fast_runs = [(a, b) for a, b in runs if b - a >= MIN_RUN or a == 0 or b == nlines]
     i = 0
     k = 0
     failures = 0
@@ -156,7 +168,7 @@ def _run_block(interp, blk: bytes, line0: int, block_counter):
         if k < len(fast_runs) and fast_runs[k][0] <= i:
             a, b = fast_runs[k]
             if _state_ok(it):
-                chunk = _fast_run(interp, code, i, b, block_counter, line0)
+                chunk = _fast_run(interp, code, i, b, block_counter, line0, parsed.get((i, b)))
                 if chunk is not None:
                     if len(chunk):
                         yield chunk
@@ -428,11 +440,12 @@ def _parse_words(c, cl_line, lo_line, hi_line):
     return ln[wstart], cc[wstart], value, decimals
 
 
-def _fast_run(interp, code, lo, hi, block_counter, line0=0):
+def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     """Interpret simple lines lo..hi-1 in columns; None to send them to the full path."""
     it = interp.interpreter
     c, cl_line = code
-    parsed = _parse_words(c, cl_line, lo, hi)
+    if parsed is None:
+        parsed = _parse_words(c, cl_line, lo, hi)
     if parsed is None:
         return None
     wl, wletter, wval, wdec = parsed

@@ -41,28 +41,32 @@ def _scaled(x: Fraction | None, scale: int, up: bool, default: int) -> int:
 
 
 class _RangeTable:
-    """Sparse table for O(1) range max / min queries over region limits."""
+    """Sparse table for O(1) range max / min queries over region limits.
+
+    ``flat[j * n + i]`` is ``op`` over ``values[i : i + 2**j]`` (rows padded
+    with the last valid entry), so a query is two gathers from the flat table.
+    """
 
     def __init__(self, values: np.ndarray, op):
         self.op = op
-        self.levels = [values]
+        n = len(values)
+        levels = [np.asarray(values, dtype=np.int64)]
         k = 1
-        while 2 * k <= len(values):
-            prev = self.levels[-1]
-            self.levels.append(op(prev[:-k], prev[k:]))
+        while 2 * k <= n:
+            prev = levels[-1]
+            nxt = prev.copy()
+            nxt[: n - k] = op(prev[: n - k], prev[k:])
+            levels.append(nxt)
             k *= 2
+        self.n = n
+        self.flat = np.concatenate(levels)
 
     def query(self, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
         """op over values[lo..hi] inclusive (lo <= hi)."""
         length = hi - lo + 1
-        lvl = np.floor(np.log2(np.maximum(length, 1))).astype(np.int64)
-        out = np.empty(len(lo), dtype=np.int64)
-        for j in np.unique(lvl):
-            sel = lvl == j
-            table = self.levels[j]
-            k = 1 << int(j)
-            out[sel] = self.op(table[lo[sel]], table[hi[sel] - k + 1])
-        return out
+        lvl = np.frexp(np.maximum(length, 1).astype(np.float64))[1].astype(np.int64) - 1  # floor(log2)
+        base = lvl * self.n
+        return self.op(self.flat[base + lo], self.flat[base + hi - (np.int64(1) << lvl) + 1])
 
 
 def _isqrt_ceil(n: np.ndarray) -> np.ndarray:

@@ -231,3 +231,15 @@ def test_coordinates_beyond_the_int64_guard_are_not_screened():
                      start=np.array([[0, 0], [1, 1]], dtype=np.int64), end=np.array([[huge, 0], [2, 2]], dtype=np.int64),
                      line=np.array([1, 2]), block=np.array([0, 1]), tool_length=np.zeros(2, dtype=np.int64))
     assert screen_chunk(ch, Prover(_box_machine("10"))) == [0, 1]
+
+
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(st.lists(st.integers(-10**12, 10**12), min_size=1, max_size=40), st.data())
+def test_range_table_answers_like_min_and_max(values, data):
+    from nczones.prover.screen import _RangeTable
+
+    v = np.array(values, dtype=np.int64)
+    lo = np.array(data.draw(st.lists(st.integers(0, len(values) - 1), min_size=1, max_size=30)), dtype=np.int64)
+    hi = np.array([data.draw(st.integers(int(a), len(values) - 1)) for a in lo], dtype=np.int64)
+    assert _RangeTable(v, np.minimum).query(lo, hi).tolist() == [min(values[a:b + 1]) for a, b in zip(lo, hi)]
+    assert _RangeTable(v, np.maximum).query(lo, hi).tolist() == [max(values[a:b + 1]) for a, b in zip(lo, hi)]
