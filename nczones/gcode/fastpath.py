@@ -489,8 +489,12 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if s_units > _MAX_SCALE:
         return None
     S = s_units
-    if np.any(np.abs(wval[numeric]).astype(np.float64) * 10.0 ** (S - wdec[numeric]) * 25.4 > 2.0**59):
-        return None
+    if numeric.any():
+        # |value| * 10**(S - decimals) * 25.4 must stay below 2**59: a bound from the extremes first
+        nv, nd = wval[numeric], wdec[numeric]
+        if int(np.abs(nv).max()) * 10 ** (S - int(nd.min())) * 254 // 10 >= 2**59:
+            if np.any(np.abs(nv).astype(np.float64) * 10.0 ** (S - nd) * 25.4 > 2.0**59):
+                return None
     # per line: has word?  blocks are lines with at least one word (after N)
     has_word = np.zeros(n, dtype=bool)
     has_word[rel] = True
@@ -505,7 +509,10 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     def scaled(mask):
         v = wval[mask]
         e = S - wdec[mask] - (1 if inch else 0)
-        out = v * _POW10[e]
+        if e.size and int(e.min()) == int(e.max()):  # common: one number of decimals
+            out = v * int(_POW10[int(e[0])])
+        else:
+            out = v * _POW10[e]
         if inch:
             out = out * 254
         return out
