@@ -49,6 +49,7 @@ class SegmentKind(enum.IntEnum):
     RAPID = 2  # G0 and derived rapids; expanded by the machine's rapid_mode downstream
     DWELL = 3  # G4: no motion, start == end
     DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.cylinder
+    SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (Segment.extra), see nczones.nurbs
 
 
 class Plane(enum.IntEnum):

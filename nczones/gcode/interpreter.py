@@ -42,6 +42,9 @@ from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import Block, Word
 from .lexer import _fraction
+from .splines import SPLINE_CODES, spline_block, spline_pending
+
+_NAME_PENDING = "NURBS"
 
 __all__ = [
     "Interpreter",
@@ -107,11 +110,6 @@ _UNSUPPORTED_G = {
     383: "probing (G38.3) stops at a position that depends on the part",
     384: "probing (G38.4) stops at a position that depends on the part",
     385: "probing (G38.5) stops at a position that depends on the part",
-    50: "cubic spline (G5) is not modelled",
-    51: "quadratic B-spline (G5.1) is not modelled",
-    52: "NURBS (G5.2) is not modelled",
-    53: "NURBS (G5.3) is not modelled",
-    62: "NURBS (G6.2) is not modelled",
     870: "back boring cycle (G87) is not modelled",
     880: "boring cycle with manual retract (G88) lets the operator move the spindle",
     432: "additional tool length offset (G43.2) is not modelled",
@@ -479,6 +477,9 @@ class Interpreter:
             if len(self._out) >= size:
                 yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
                 self._out = []
+        if self._spline is not None:
+            self._unknown(_NAME_PENDING, spline_pending(self))
+            self._spline = None
         if self._out:
             yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
             self._out = []
@@ -548,7 +549,7 @@ class Interpreter:
         # R word without a user
         if "R" in words:
             motion_to_be = g1[0] if g1 else self.motion
-            uses_r = (motion_to_be in (20, 30) or motion_to_be in _CYCLES) and (g1 is not None or axis_words or g0 is None) \
+            uses_r = (motion_to_be in (20, 30, 62) or motion_to_be in _CYCLES) and (g1 is not None or axis_words or g0 is None) \
                 or (g0 and g0[0] == 100) or (groups.get(13, (0,))[0] == 640) or any(k == 19 for k, _ in mcodes)
             unknown_code = any(k in _UNSUPPORTED_G for k, _ in gcodes) or any(
                 k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99) for k, _ in mcodes)
@@ -670,6 +671,9 @@ class Interpreter:
             if k not in _CYCLES:
                 self._cycle_il = None
                 self._last_cycle = None
+            if self._spline is not None and k not in (52, 53, 62):
+                self._unknown(_gname(k), spline_pending(self) + f" (motion changed to {_gname(k)})", g1[1])
+                self._spline = None
             if k == 800:
                 self.motion = None
             elif k in _UNSUPPORTED_G:
@@ -677,7 +681,8 @@ class Interpreter:
             else:
                 self.motion = k
         if ("I" in words or "J" in words or "K" in words) and self.motion not in (20, 30) and not self.unsupported \
-                and not (g0 and g0[0] == 100):
+                and not (g0 and g0[0] == 100) and not (self.motion in (50, 51) and "K" not in words) \
+                and not (self.motion == 62 and "I" not in words and "J" not in words):
             w = words.get("I") or words.get("J") or words.get("K")
             raise self._error("GC204", f"{w.text or w.letter} word with no G2 or G3 to use it", w)
         moving = bool(axis_words or (g1 and g1[0] in (20, 30)))
@@ -706,6 +711,7 @@ class Interpreter:
     # ------------------------------------------------------------------ pieces
     _saved_modal: tuple | None = None
     _cycle_il: Fraction | None = None
+    _spline = None  # an unfinished G5.2/G6.2 curve (nczones.gcode.splines)
 
     def _modal_snapshot(self) -> tuple:
         return (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
@@ -799,6 +805,8 @@ class Interpreter:
             self._arc(block, axis_words, words, motion == 20, g53)
         elif motion in _CYCLES:
             self._cycle(motion, axis_words, words)
+        elif motion in SPLINE_CODES:
+            spline_block(self, motion, axis_words, words, g1)
         else:
             raise InternalError(f"motion mode {motion}")
 

@@ -51,6 +51,8 @@ __all__ = ["verify_segments", "Prover"]
 
 F0 = Fraction(0)
 F1 = Fraction(1)
+#: Kinds the straight-piece path decides (a dwell is a point).
+_LINE_LIKE = frozenset({SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL})
 
 
 @dataclass(slots=True)
@@ -323,6 +325,13 @@ class Prover:
             from .cylindrical import check_cylindrical  # G07.1: pi enclosed, see prover/cylindrical.py
 
             return check_cylindrical(self, seg)
+        if seg.kind is SegmentKind.SPLINE:
+            from .spline import check_spline  # exact NURBS: control hulls + refinement, see prover/spline.py
+
+            return check_spline(self, seg)
+        if seg.kind not in _LINE_LIKE and seg.kind is not SegmentKind.ARC:
+            return _Outcome(reason=Reason(f"segment kind {seg.kind.name} is not handled by the prover",
+                                          seg.span, seg.block), engine="unknown")
         if self._param_relevant(seg):
             return self._check_with_params(seg)
         return self._check_concrete(seg, ())

@@ -195,10 +195,20 @@ def test_corpus_outcomes_sample(capsys):
     assert r["accepted"] > 100 and r["complete"] / r["accepted"] >= COVERAGE_FLOOR
 
 
-def test_nurbs_g6_2_is_unknown_not_an_error():
-    """G6.2 is a LinuxCNC code: the program ends unknown with the reason, not GC202."""
-    rel = next((r for r, _ in programs() if re.search(r"nurbs/G6/homer #1=1\.ngc$", r)), None)
-    if rel is None:
-        pytest.skip("NURBS sample not in the corpus")
-    status, code, detail = outcome(CORPUS / rel)
-    assert (status, code) == ("unknown", "G6.2") and "NURBS" in detail
+def test_nurbs_programs_are_interpreted_as_splines():
+    """G6.2 and G5.2 corpus programs end complete, with SPLINE segments whose curves are valid clamped NURBS."""
+    from nczones.motion import SegmentKind
+    from nczones.prover.spline import spline_curve
+
+    rels = [r for r, _ in programs() if re.search(r"nurbs/G6/homer #1=1\.ngc$|nurbs/G5/nurbs-zx\.ngc$", r)]
+    if len(rels) < 2:
+        pytest.skip("NURBS samples not in the corpus")
+    for rel in rels:
+        status, code, detail = outcome(CORPUS / rel)
+        assert status == "complete", (rel, code, detail)
+        segs = [s for c in interpret(CORPUS / rel, MACHINE) for s in c.segments()]
+        splines = [s for s in segs if s.kind is SegmentKind.SPLINE]
+        assert splines
+        for s in splines:
+            c = spline_curve(s)
+            assert c.points[0] == s.start and c.points[-1] == s.end

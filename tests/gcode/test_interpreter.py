@@ -269,8 +269,20 @@ def test_m19_takes_an_r_word_and_g4_with_an_explicit_motion_code_moves():
     assert [s.kind for s in segs] == [SegmentKind.DWELL, SegmentKind.RAPID] and segs[1].end[:2] == (F(101), F(2))
 
 
-@pytest.mark.parametrize("code", ["G6.2 X1 Y2 R1 K0 P4 Q1", "G71.2 Q1 P2 D0.5", "G72.1 Q1 P2 D0.5"])
+@pytest.mark.parametrize("code", ["G71.2 Q1 P2 D0.5", "G72.1 Q1 P2 D0.5"])
 def test_linuxcnc_curve_and_lathe_codes_are_unknown_not_errors(code):
     run = interpret(f"G21\nG0 X1\n{code}\nX2 Y3 R1 K0\n", MILL)
     assert len(list(run.segments())) == 1
     assert run.status == "unknown" and run.unsupported[0].span.line == 3
+
+
+def test_incomplete_g6_2_curve_is_unknown_and_a_complete_one_is_a_spline():
+    run = interpret("G21 F100\nG0 X1\nG6.2 X1 Y2 R1 K0 P4 Q1\nX2 Y3 R1 K0\n", MILL)
+    assert run.status == "unknown" and "never completed" in run.unsupported[0].reason
+    text = ("G21 G90 F100\nG0 X1 Y2\nG6.2 X1 Y2 R1 K0 P3 Q1\nX2 Y3 R1 K0\nX3 Y2 R2 K0\nX4 Y4 R1 K1\n"
+            "G6.2 K2\nG6.2 K2\nG6.2 K2\nG1 X0\n")
+    segs = segments(text, MILL)
+    assert [s.kind for s in segs] == [SegmentKind.RAPID, SegmentKind.SPLINE, SegmentKind.LINE]
+    e = dict(segs[1].extra)
+    assert e["degree"] == 2 and e["knots"] == (0, 0, 0, 1, 2, 2, 2) and e["weights"] == (1, 1, 2, 1)
+    assert segs[1].end == segs[2].start and segs[1].end[:2] == (F(104), F(4))

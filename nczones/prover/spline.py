@@ -1,0 +1,171 @@
+"""Prover for SPLINE segments (exact NURBS curves, :mod:`nczones.nurbs`).
+
+Enclosure: with positive weights the curve over one knot span lies in the
+convex hull of that span's ``degree + 1`` control points.  The curve is cut
+at its interior knots into single-span pieces; each piece is
+
+1. screened exactly: the bounding box of its control points fits every zone
+   (with the margin) -> proved;
+2. otherwise asked of Z3 as a linear query (QF_LRA): some convex combination
+   ``sum l_j P_j`` (``l_j >= 0``, ``sum l_j = 1``) of its control points,
+   plus the margin perturbation ``-d <= e <= d`` per axis, violates a zone.
+   ``unsat`` -> proved (the hull holds the piece);
+3. on ``sat``, exact curve points of the piece are tested with
+   ``AllowedSet.violated_zones`` (the ends, and the points at the parameters
+   nearest the model's barycentric weights); a violating point is reported
+   as the witness (an exact point *on the curve*);
+4. otherwise the piece is split at its middle parameter (exact Boehm
+   insertion: the halves' hulls are tighter) and both halves go back to 1,
+   up to a budget of pieces; when the budget is spent the segment is
+   ``unknown`` with the reason.
+
+Never ``safe`` otherwise; parameter ranges on a spline are ``unknown``.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from ..motion import Segment
+from ..nurbs import Nurbs
+from ..zones import ZonePoint
+from . import exact as ex
+from .result import Reason, Violation
+from .smt import add, mul, q
+
+__all__ = ["check_spline", "spline_curve", "SPLINE_PIECE_BUDGET"]
+
+#: Pieces examined per spline segment before the verdict is unknown.
+SPLINE_PIECE_BUDGET = 400
+_MAX_DEPTH = 24
+
+
+def spline_curve(seg: Segment) -> Nurbs:
+    """The exact NURBS of a SPLINE segment (control points in machine coordinates)."""
+    e = dict(seg.extra)
+    return Nurbs(e["degree"], e["knots"], e["control"], e["weights"])
+
+
+def _pieces(c: Nurbs) -> list[Nurbs]:
+    out = []
+    rest = c
+    for u in sorted({k for k in c.knots if c.domain[0] < k < c.domain[1]}):
+        left, rest = rest.split(u)
+        out.append(left)
+    out.append(rest)
+    return out
+
+
+def _hull_query(prover, seg: Segment, pts) -> tuple[str, list[str]]:
+    names = [f"l{j}" for j in range(len(pts))]
+    body = ["".join(f"(declare-const {n} Real)(assert (>= {n} 0.0))" for n in names),
+            f"(assert (= {add(*names)} 1.0))"]
+    mdecl, evars = prover._margin_decls(names)
+    body.append(mdecl)
+    pt, enclosure = {}, {}
+    for k, a in enumerate(prover.axes):
+        coords = [p[k] for p in pts]
+        lo, hi = min(coords), max(coords)
+        enclosure[a] = (lo, hi)
+        if lo == hi:
+            term = q(lo)
+        else:
+            term = add(*(mul(n, q(c)) for n, c in zip(names, coords)))
+        pt[a] = add(term, evars[a])
+    body.append(f"(assert {prover._violation_formula(pt, q(seg.tool_length), enclosure)})")
+    return "".join(body), names
+
+
+def _violating_point(prover, seg, c: Nurbs, hint: list[Fraction] | None):
+    lo, hi = c.domain
+    params = [lo, hi, (lo + hi) / 2]
+    if hint:
+        # the barycentric weights suggest where along the piece the hull point lies (Greville-like abscissae)
+        n = len(hint) - 1
+        t = sum((Fraction(j, n) * h for j, h in enumerate(hint)), Fraction(0)) if n else Fraction(1, 2)
+        t = min(max(t, Fraction(0)), Fraction(1))
+        params.append(lo + (hi - lo) * _round(t))
+    for s in params:
+        pt = c.point(s)
+        pmap = dict(zip(prover.axes, pt))
+        bad = prover.allowed.violated_zones(pmap, seg.tool_length, prover.margin)
+        if bad:
+            return s, pt, bad
+    return None
+
+
+def _round(t: Fraction) -> Fraction:
+    return Fraction(round(t * 1024), 1024)
+
+
+def check_spline(prover, seg: Segment):
+    """Decide one SPLINE segment: ``_Outcome`` with a violation, a reason, or neither (proved)."""
+    from .core import _Outcome
+
+    if prover._param_relevant(seg):
+        return _Outcome(reason=Reason("parameter ranges are not supported on spline (NURBS) motion",
+                                      seg.span, seg.block), engine="unknown")
+    curve = spline_curve(seg)
+    work = [(p, 0) for p in _pieces(curve)]
+    work.reverse()
+    examined = 0
+    engine = "exact"
+    while work:
+        c, depth = work.pop()
+        examined += 1
+        if examined > SPLINE_PIECE_BUDGET:
+            return _Outcome(reason=Reason(f"spline: the control hulls of {SPLINE_PIECE_BUDGET} curve pieces were "
+                                          "examined without proving the curve or finding an exact point outside",
+                                          seg.span, seg.block), engine="unknown")
+        pts = c.points
+        lo_pt = tuple(min(p[k] for p in pts) for k in range(len(prover.axes)))
+        hi_pt = tuple(max(p[k] for p in pts) for k in range(len(prover.axes)))
+        if prover.engine == "auto" and prover._bbox_fits(lo_pt, hi_pt, seg.tool_length):
+            continue
+        engine = "z3"
+        prover.stats["z3_segments"] += 1
+        body, names = _hull_query(prover, seg, pts)
+        ans = prover.solver.check(body, names)
+        if ans.status == "unsat":
+            continue
+        if ans.status == "unknown":
+            return _Outcome(reason=Reason("solver resource limit reached", seg.span, seg.block), engine="unknown")
+        hint = [ans.values.get(n, Fraction(0)) for n in names[: len(pts)]]
+        found = _violating_point(prover, seg, c, hint)
+        if found is not None:
+            return _Outcome(_violation(prover, seg, curve, found), engine=engine)
+        if depth >= _MAX_DEPTH:
+            return _Outcome(reason=Reason("spline: the curve comes within a refinement limit of a zone boundary "
+                                          "without an exact point outside", seg.span, seg.block), engine="unknown")
+        lo, hi = c.domain
+        a, b = c.split((lo + hi) / 2)
+        work.append((b, depth + 1))
+        work.append((a, depth + 1))
+    return _Outcome(engine=engine)
+
+
+def _violation(prover, seg: Segment, curve: Nurbs, found) -> Violation:
+    s, path, bad = found
+    pmap = dict(zip(prover.axes, path))
+    zone = bad[0]
+    outside = ex.outside_point(prover.allowed, zone, pmap, prover.margin, seg.tool_length)
+    if outside is None or zone not in prover.allowed.violated_zones(outside, seg.tool_length):
+        from ..errors import InternalError
+
+        raise InternalError(f"block {seg.block}: no point strictly outside inside the margin box")
+    seen = dict(pmap)
+    if zone.point is ZonePoint.TIP and prover.tool_axis in seen:
+        seen[prover.tool_axis] -= seg.tool_length
+    depth = ex.point_depth(zone, seen, prover.margin)
+    lo, hi = curve.domain
+    tau = (s - lo) / (hi - lo)
+    return Violation(
+        block=seg.block, span=seg.span, zone=zone.name,
+        point=tuple((a, outside[a]) for a in prover.axes),
+        path_point=tuple(zip(prover.axes, path)),
+        parameter=tau, parameter_exact=True,
+        first_exit=tuple(zip(prover.axes, path)), first_exit_parameter=tau, first_exit_exact=False,
+        depth=depth, depth_exact=False, engine="z3", segment_kind="spline",
+        derived=seg.derived, zones=tuple(z.name for z in bad),
+        note="spline: a curve point outside (not necessarily the first exit; depth is at that point, a lower bound)",
+    )
