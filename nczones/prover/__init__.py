@@ -193,6 +193,13 @@ def verify(
         violations = tuple(sorted(violations + tuple(replace(v, span=fix(v.span)) for v in rec.violations),
                                   key=lambda v: (v.block, v.kind != "motion")))
         reasons += [replace(r, span=fix(r.span)) for r in rec.reasons]
+        if ranges:
+            # The recovery proof runs at the nominal parameter values only; a
+            # verdict 'safe' over the ranges would claim more than was proved.
+            names = ", ".join(r.name for r in ranges)
+            reasons.append(Reason(
+                f"RC204: the tool-break recovery was proved only at the nominal values of {names}; "
+                "recovery under parameter ranges is not modelled", None, None, "RC204"))
         notes += (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
                   f"{dict(rec.stats)['recovery_motions']} cutting motions",)
         result = replace(result, stats=result.stats + rec.stats)

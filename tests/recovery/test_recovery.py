@@ -250,3 +250,13 @@ def test_cli_verify_recovery_and_simulate_break_at():
     assert bad.returncode == 2 and "SM111" in bad.stderr and "Traceback" not in bad.stderr
     sarif = cli("verify", str(PROG), "--machine", str(LOW), "--recovery", "start", "--format", "sarif")
     assert json.loads(sarif.stdout)["runs"][0]["results"][0]["ruleId"] == "NCZ002"
+
+
+def test_recovery_under_parameter_ranges_is_never_called_safe():
+    """The recovery proof is nominal-only, so with ranges the verdict must not be 'safe'."""
+    machine = load_machine(EX / "machines" / "mill_toolchange_high.toml")
+    program = (EX / "programs" / "recovery_clamp.ngc").read_text()
+    assert verify(program, machine, recovery="start").verdict.label == "safe"
+    ranged = verify(program, machine, recovery="start", params=["G54.X=-0.001..0.001"])
+    assert ranged.verdict.label != "safe"
+    assert any(r.code == "RC204" for r in ranged.reasons)
