@@ -122,6 +122,9 @@ class Interpretation:
             yield from run_with_fastpath(self)
         else:
             yield from self.interpreter.run(_blocks(self.text, self.file, self.block_delete, self.interpreter))
+        finish = getattr(self.interpreter, "finish", None)
+        if finish is not None:
+            finish()
         self.finished = True
 
     @property

@@ -369,6 +369,12 @@ class Interpreter:
         if not self.unsupported:
             self.unsupported.append(Unsupported(code, reason, span))
 
+    def finish(self) -> None:
+        """End of the program text: a spline curve still waiting for data makes the result unknown."""
+        if self._spline is not None:
+            self._unknown(_NAME_PENDING, spline_pending(self))
+            self._spline = None
+
     @property
     def stopped(self) -> bool:
         """True once an unsupported code ended motion emission."""
@@ -477,9 +483,6 @@ class Interpreter:
             if len(self._out) >= size:
                 yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
                 self._out = []
-        if self._spline is not None:
-            self._unknown(_NAME_PENDING, spline_pending(self))
-            self._spline = None
         if self._out:
             yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
             self._out = []

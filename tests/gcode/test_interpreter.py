@@ -278,6 +278,7 @@ def test_linuxcnc_curve_and_lathe_codes_are_unknown_not_errors(code):
 
 def test_incomplete_g6_2_curve_is_unknown_and_a_complete_one_is_a_spline():
     run = interpret("G21 F100\nG0 X1\nG6.2 X1 Y2 R1 K0 P4 Q1\nX2 Y3 R1 K0\n", MILL)
+    assert len(list(run.segments())) == 1
     assert run.status == "unknown" and "never completed" in run.unsupported[0].reason
     text = ("G21 G90 F100\nG0 X1 Y2\nG6.2 X1 Y2 R1 K0 P3 Q1\nX2 Y3 R1 K0\nX3 Y2 R2 K0\nX4 Y4 R1 K1\n"
             "G6.2 K2\nG6.2 K2\nG6.2 K2\nG1 X0\n")
