@@ -102,13 +102,7 @@ class PathFloat:
 def _seg_points(seg: Segment, machine: Machine) -> np.ndarray:
     from .plot import path_points_float
 
-    if seg.kind is SegmentKind.RAPID and machine.rapid_mode is RapidMode.DOGLEG:
-        from ..prover.geometry import line_pieces
-
-        pieces = line_pieces(seg, machine)
-        pts = [tuple(float(c) for c in pieces[0].p0)] + [tuple(float(c) for c in p.p1) for p in pieces]
-        return np.asarray(pts, dtype=float)
-    return np.asarray(path_points_float(seg), dtype=float)
+    return np.asarray(path_points_float(seg, machine), dtype=float)
 
 
 def collect_path(program, machine: Machine, hot_blocks=(), *, max_segments: int = 200_000) -> PathFloat:
@@ -143,7 +137,7 @@ def collect_path(program, machine: Machine, hot_blocks=(), *, max_segments: int 
             if out.hot_tool_length is None:
                 out.hot_tool_length = seg.tool_length
             out.hot_curves.append((_seg_points(seg, machine), rapid))
-        elif seg.kind is SegmentKind.ARC or (rapid and dogleg):
+        elif not (seg.kind is SegmentKind.LINE or (rapid and not dogleg)):  # curves and doglegs
             (out.rapid_curves if rapid else out.feed_curves).append(_seg_points(seg, machine))
         else:
             pair = np.asarray([[float(c) for c in seg.start], [float(c) for c in seg.end]], dtype=float)

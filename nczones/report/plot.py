@@ -183,6 +183,23 @@ def _arc_float_points(seg: Segment, steps_per_turn: int = 360) -> list[tuple[flo
     return out
 
 
+def _developed_arc_float_points(seg: Segment, samples: int = 48) -> list[tuple[float, ...]]:
+    """Float samples of a G07.1 arc in machine coordinates (linear axis mm, rotary degrees)."""
+    from ..cylinder import cylinder_of, developed_arc_of
+
+    linear, rotary, _ = cylinder_of(seg)
+    iz, ic = seg.axes.index(linear), seg.axes.index(rotary)
+    arc = developed_arc_of(seg)
+    out = []
+    for k in range(samples + 1):
+        f = Fraction(k, samples)
+        z, _, c = arc.point(f)
+        p = [to_float(a + (b - a) * f) for a, b in zip(seg.start, seg.end)]
+        p[iz], p[ic] = to_float(z.mid()), to_float(c.mid())
+        out.append(tuple(p))
+    return out
+
+
 def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tuple[float, ...]]:
     """Float points along one segment, in machine axis order (for plots).
 
@@ -191,6 +208,8 @@ def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tupl
     """
     if seg.kind is SegmentKind.ARC:
         return _arc_float_points(seg)
+    if seg.kind is SegmentKind.DEVELOPED_ARC:
+        return _developed_arc_float_points(seg)
     if seg.kind is SegmentKind.RAPID and machine is not None:
         from ..prover.geometry import line_pieces
 
