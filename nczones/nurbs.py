@@ -180,6 +180,16 @@ class Nurbs:
                 out.append(((U[i], U[i + 1]), self.points[i - p: i + 1]))
         return out
 
+    def pieces(self) -> list["Nurbs"]:
+        """The curve cut at its interior knots: one clamped single-span curve per non-empty span."""
+        out = []
+        rest = self
+        for u in sorted({k for k in self.knots if self.domain[0] < k < self.domain[1]}):
+            left, rest = rest.split(u)
+            out.append(left)
+        out.append(rest)
+        return out
+
     def refine(self, times: int = 1) -> "Nurbs":
         """Insert the midpoint of every non-empty span, ``times`` times (hulls tighten around the curve)."""
         c = self

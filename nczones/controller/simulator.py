@@ -527,6 +527,10 @@ class Controller:
             from .cylindrical import plan_developed_arc
 
             return plan_developed_arc(self, seg, p0, p1)
+        if seg.kind is SegmentKind.SPLINE:  # exact NURBS: flattened chords, see controller/spline.py
+            from .spline import plan_spline
+
+            return plan_spline(self, seg, p0, p1)
         raise InvalidArgument(f"unknown segment kind {seg.kind!r}")
 
     def _feed_time(self, seg: Segment, disp: list[float], length: float) -> float:

@@ -47,13 +47,7 @@ def spline_curve(seg: Segment) -> Nurbs:
 
 
 def _pieces(c: Nurbs) -> list[Nurbs]:
-    out = []
-    rest = c
-    for u in sorted({k for k in c.knots if c.domain[0] < k < c.domain[1]}):
-        left, rest = rest.split(u)
-        out.append(left)
-    out.append(rest)
-    return out
+    return c.pieces()
 
 
 def _hull_query(prover, seg: Segment, pts) -> tuple[str, list[str]]:

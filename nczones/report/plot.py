@@ -200,6 +200,18 @@ def _developed_arc_float_points(seg: Segment, samples: int = 48) -> list[tuple[f
     return out
 
 
+def _spline_float_points(seg: Segment, per_span: int = 12) -> list[tuple[float, ...]]:
+    """Float samples of a SPLINE's exact NURBS curve (exact points at rational parameters, then floats)."""
+    from ..prover.spline import spline_curve
+
+    curve = spline_curve(seg)
+    out = [tuple(to_float(c) for c in curve.points[0])]
+    for (a, b), _ in curve.span_hulls():
+        for i in range(1, per_span + 1):
+            out.append(tuple(to_float(c) for c in curve.point(a + (b - a) * Fraction(i, per_span))))
+    return out
+
+
 def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tuple[float, ...]]:
     """Float points along one segment, in machine axis order (for plots).
 
@@ -210,6 +222,8 @@ def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tupl
         return _arc_float_points(seg)
     if seg.kind is SegmentKind.DEVELOPED_ARC:
         return _developed_arc_float_points(seg)
+    if seg.kind is SegmentKind.SPLINE:
+        return _spline_float_points(seg)
     if seg.kind is SegmentKind.RAPID and machine is not None:
         from ..prover.geometry import line_pieces
 
