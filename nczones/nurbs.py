@@ -86,6 +86,9 @@ class Nurbs:
         if len(set(k[: p + 1])) != 1 or len(set(k[-p - 1:])) != 1 or k[0] == k[-1]:
             raise NurbsError(f"the knot vector must be clamped: the first and last {p + 1} knots equal, and "
                              "the two ends different")
+        inner = k[p + 1: len(P)]
+        if any(inner.count(u) > p for u in set(inner)):
+            raise NurbsError(f"an interior knot repeated more than the degree {p} times (the curve would jump)")
         if any(x <= 0 for x in w):
             raise NurbsError("weights must be positive")
         if len({len(pt) for pt in P}) != 1:
