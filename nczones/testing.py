@@ -472,6 +472,7 @@ def programs(
     boundary_bias: float = 0.6,
     inside_bias: float = 0.0,
     places: int = 3,
+    mix: dict[str, int] | None = None,
 ) -> str:
     """Valid G-code text for ``machine``.
 
@@ -489,7 +490,9 @@ def programs(
     end points lie exactly on the circle.  ``tool_changes`` adds
     ``G43 Hn``/``G49`` blocks with a Z move when Z moves and the machine has
     tool lengths.  ``subprograms`` moves the tail of the program into
-    ``O100`` called by ``M98 P100``.  Every number is a decimal with at most
+    ``O100`` called by ``M98 P100``.  ``mix`` gives relative weights of the
+    block kinds ``"line"``, ``"rapid"``, ``"arc"`` and ``"tool"`` (default
+    2:1:1:1; kinds switched off by the other knobs stay off).  Every number is a decimal with at most
     ``places`` digits (plus the machine's own decimals); the first block is
     ``G21 G90 G17 G54 G94``.
 
@@ -519,8 +522,9 @@ def programs(
     body: list[str] = []
     n = draw(st.integers(min_blocks, max_blocks))
     for _ in range(n):
-        choices = ["line", "line"] + (["rapid"] if rapids else []) + (["arc"] if can_arc else [])
-        choices += ["tool"] if registers else []
+        weights = {"line": 2, "rapid": 1, "arc": 1, "tool": 1, **(mix or {})}
+        enabled = {"line": True, "rapid": rapids, "arc": can_arc, "tool": bool(registers)}
+        choices = [k for k, w in weights.items() if enabled.get(k) for _ in range(w)] or ["line"]
         what = draw(st.sampled_from(choices))
         words: list[str] = []
         if offsets and len(offset_names) > 1 and draw(st.integers(0, 4)) == 0:

@@ -8,7 +8,7 @@ from nczones.testing import machines, programs
 @st.composite
 def contract_cases(draw, *, axes=(("X", "Y"), ("X", "Y", "Z")), allow_kinds=("stepped", "box", "polygon"),
                    pulses=("0.01", "0.01", "0.001"), max_blocks=6, arcs=True, inside_biases=(0.3, 0.6, 0.9),
-                   boundary_bias=0.7):
+                   boundary_bias=0.7, mix=None):
     """(machine, program text): every zone kind, 2 or 3 axes, boundary-biased programs."""
     machine = draw(
         machines(
@@ -26,6 +26,7 @@ def contract_cases(draw, *, axes=(("X", "Y"), ("X", "Y", "Z")), allow_kinds=("st
             subprograms=True,
             inside_bias=draw(st.sampled_from(inside_biases)),
             boundary_bias=boundary_bias,
+            mix=mix,
         )
     )
     return machine, text

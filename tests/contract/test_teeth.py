@@ -61,7 +61,8 @@ def test_arcs_checked_only_at_their_end_points_are_caught(monkeypatch):
 
     monkeypatch.setattr(core.Prover, "_check_arc", end_points_only)
     with pytest.raises(ContractViolation):
-        run_property(contract_cases(allow_kinds=("box", "stepped"), pulses=("0.01",)), 300)
+        run_property(contract_cases(axes=(("X", "Y"),), allow_kinds=("box",), pulses=("0.01",), max_blocks=4,
+                                    inside_biases=(1.0,), mix={"line": 1, "rapid": 0, "arc": 3}), 300)
 
 
 def test_the_unbroken_prover_passes_the_same_runs():
