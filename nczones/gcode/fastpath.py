@@ -39,8 +39,10 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..errors import GcodeError, InputError
+from ..errors import GcodeError, InputError, SourceSpan
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
+from .blocks import Block, Word
+from .lexer import make_span
 
 __all__ = ["run_with_fastpath", "MIN_RUN"]
 
@@ -276,13 +278,65 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
                 diags = [replace(d, span=replace(d.span, line=d.span.line + offset)) if d.span is not None else d
                          for d in exc.diagnostics]
                 raise GcodeError(diags) from None
-            span = replace(b.span, line=b.span.line + offset)
-            words = tuple(replace(w, span=replace(w.span, line=w.span.line + offset)) for w in b.words)
-            nb = replace(b, words=words, span=span, index=block_counter[0])
+            if offset == 0:
+                nb = b if b.index == block_counter[0] else replace(b, index=block_counter[0])
+            else:
+                bs = b.span
+                span = make_span(bs.file, bs.line + offset, bs.column, bs.end_column, bs.text)
+                nb = Block(tuple(_shifted_word(w, offset) for w in b.words), span, block_counter[0],
+                           b.number, b.messages)
             block_counter[0] += 1
             yield nb
 
     yield from it.run(shifted())
+
+
+class _ShiftedWord(Word):
+    """A word of a piece whose span lies ``offset`` lines further down the program.
+
+    The shifted span is built only when read (diagnostics): words' spans are
+    lazy in the lexer too, and building them all cost more than interpreting.
+    """
+
+    __slots__ = ("_base", "_off", "_sp")
+    __qualname__ = "Word"
+
+    @property
+    def span(self) -> SourceSpan:  # type: ignore[override]
+        sp = self._sp
+        if sp is None:
+            b = self._base.span
+            sp = make_span(b.file, b.line + self._off, b.column, b.end_column, b.text)
+            object.__setattr__(self, "_sp", sp)
+        return sp
+
+    @span.setter
+    def span(self, value: SourceSpan) -> None:
+        object.__setattr__(self, "_sp", value)
+
+    def __eq__(self, other):
+        if isinstance(other, Word):
+            return (self.letter, self.value, self.span, self.text) == (other.letter, other.value, other.span, other.text)
+        return NotImplemented
+
+    def __hash__(self):
+        return hash((self.letter, self.value, self.span, self.text))
+
+
+def _shifted_word(w: Word, offset: int) -> Word:
+    n = object.__new__(_ShiftedWord)
+    _set_letter(n, w.letter)
+    _set_value(n, w.value)
+    _set_text(n, w.text)
+    object.__setattr__(n, "_base", w)
+    object.__setattr__(n, "_off", offset)
+    object.__setattr__(n, "_sp", None)
+    return n
+
+
+_set_letter = Word.letter.__set__  # type: ignore[attr-defined]
+_set_value = Word.value.__set__  # type: ignore[attr-defined]
+_set_text = Word.text.__set__  # type: ignore[attr-defined]
 
 
 # --------------------------------------------------------------------------- classification
