@@ -58,6 +58,8 @@ __all__ = [
     "ArcWalk",
     "arc_walk",
     "dogleg_steps",
+    "helix_steps",
+    "helix_chunk",
     "LINE_CHUNK",
 ]
 
@@ -217,30 +219,45 @@ class ArcWalk:
     walk_steps: int  # steps taken by the circle walk before the final approach
 
 
-def arc_walk(
-    start_pulse: tuple[int, int],
-    end_pulse: tuple[int, int],
-    start: tuple[Fraction, Fraction],
-    end: tuple[Fraction, Fraction],
-    centre: tuple[Fraction, Fraction],
-    clockwise: bool,
-    turns: int,
-    pulse: tuple[Fraction, Fraction],
-) -> ArcWalk:
-    """Circular interpolation in the (first, second) plane of an arc.
+@dataclass(frozen=True, slots=True)
+class _ArcFrame:
+    """An arc in exact integer units of ``1/scale`` mm, mirrored to counter-clockwise.
 
-    ``start_pulse``/``end_pulse`` are where the controller stands and the
-    rounded end; ``start``, ``end`` and ``centre`` are the exact points in mm.
-    Returns the positions after each step; see the module docstring for the
-    invariants (within one pulse of the exact arc per axis, exact close).
-
-    >>> F = Fraction
-    >>> w = arc_walk((10, 0), (10, 0), (F(10), F(0)), (F(10), F(0)), (F(0), F(0)), False, 0, (F(1), F(1)))
-    >>> w.points[-1], len(set(w.points)) == len(w.points)
-    ((10, 0), True)
-    >>> max(abs(x) for x, _ in w.points), max(abs(y) for _, y in w.points)
-    (10, 10)
+    ``u = x * ai - cx`` and ``v = y * aj - cy`` are the offsets of the pulse
+    position ``(x, y)`` (``y`` mirrored for clockwise arcs) from the centre;
+    ``q`` is the squared start radius; ``qcount`` counts quadrant crossings
+    of the current position (``qe`` is the count at the end ray).
     """
+
+    sj: int
+    ai: int
+    aj: int
+    cx: int
+    cy: int
+    eu: int
+    ev: int
+    q: int
+    radius_mm: float
+    sweep: float
+    x: int
+    y: int
+    u: int
+    v: int
+    qcount: int
+    qe: int
+    tiny: bool  # a circle smaller than two pulses: no walk, only the approach
+
+    def past_end(self, uu: int, vv: int, qq: int) -> bool:
+        """Would the position ``(uu, vv)`` with quadrant count ``qq`` lie past the end ray?"""
+        return qq > self.qe or (qq == self.qe and self.eu * vv - self.ev * uu >= 0)
+
+    def limit(self, turns: int) -> int:
+        """A generous bound on the number of walk steps (reaching it is a bug)."""
+        rq = math.isqrt(self.q) + 1
+        return 8 * (rq // self.ai + rq // self.aj + 4) * (turns + 2) + 64
+
+
+def _arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse) -> _ArcFrame:
     sj = -1 if clockwise else 1  # mirror the second axis: a clockwise arc becomes counter-clockwise
     ui, uj = pulse
     scale = _lcm(
@@ -259,15 +276,8 @@ def arc_walk(
     if full or sweep == 0:
         sweep = 2 * math.pi
     sweep += 2 * math.pi * turns
-
     x, y = start_pulse[0], sj * start_pulse[1]
-    ex, ey = end_pulse
-    points: list[tuple[int, int]] = []
-    if q == 0 or radius_mm < 2 * float(max(ui, uj)):
-        # a circle smaller than two pulses: only the end point can be commanded meaningfully
-        points.extend(_plane_line((start_pulse[0], start_pulse[1]), (ex, ey)))
-        return ArcWalk(tuple(points), sweep, radius_mm, 0)
-
+    tiny = q == 0 or radius_mm < 2 * float(max(ui, uj))
     qs = _quadrant(su, sv)
     qe_rel = (_quadrant(eu, ev) - qs) % 4
     if qe_rel == 0:
@@ -278,37 +288,79 @@ def arc_walk(
     u, v = x * ai - cx, y * aj - cy
     delta = (_quadrant(u, v) - qs) % 4
     qcount = qs + (delta if delta <= 1 else delta - 4)
+    return _ArcFrame(sj, ai, aj, cx, cy, eu, ev, q, radius_mm, sweep, x, y, u, v, qcount, qe, tiny)
 
-    def past_end(uu: int, vv: int, qq: int) -> bool:
-        return qq > qe or (qq == qe and eu * vv - ev * uu >= 0)
 
+def _arc_step(u: int, v: int, q: int, ai: int, aj: int) -> tuple[int, int, int, int]:
+    """One step of the counter-clockwise lattice walk from offset ``(u, v)``: ``(dx, dy, nu, nv)``.
+
+    The axis with the larger tangent component steps one pulse; the other
+    steps 0, then forwards, then backwards — the first of those with the
+    smallest ``|nu² + nv² - q|`` wins.
+    """
+    if abs(v) * aj >= abs(u) * ai:  # tangent (-v, u): x is the major axis
+        dx = -1 if v > 0 else 1
+        nu = u + dx * ai
+        best = None
+        for dy in (0, 1 if u > 0 else -1, -1 if u > 0 else 1):
+            nv = v + dy * aj
+            f = abs(nu * nu + nv * nv - q)
+            if best is None or f < best[0]:
+                best = (f, dx, dy, nu, nv)
+    else:
+        dy = 1 if u > 0 else -1
+        nv = v + dy * aj
+        best = None
+        for dx in (0, -1 if v > 0 else 1, 1 if v > 0 else -1):
+            nu = u + dx * ai
+            f = abs(nu * nu + nv * nv - q)
+            if best is None or f < best[0]:
+                best = (f, dx, dy, nu, nv)
+    return best[1], best[2], best[3], best[4]
+
+
+def arc_walk(
+    start_pulse: tuple[int, int],
+    end_pulse: tuple[int, int],
+    start: tuple[Fraction, Fraction],
+    end: tuple[Fraction, Fraction],
+    centre: tuple[Fraction, Fraction],
+    clockwise: bool,
+    turns: int,
+    pulse: tuple[Fraction, Fraction],
+) -> ArcWalk:
+    """Circular interpolation in the (first, second) plane of an arc (the per-step reference).
+
+    ``start_pulse``/``end_pulse`` are where the controller stands and the
+    rounded end; ``start``, ``end`` and ``centre`` are the exact points in mm.
+    Returns the positions after each step; see the module docstring for the
+    invariants (within one pulse of the exact arc per axis, exact close).
+    :func:`nczones.controller.arcs.arc_path` computes the same positions
+    vectorized.
+
+    >>> F = Fraction
+    >>> w = arc_walk((10, 0), (10, 0), (F(10), F(0)), (F(10), F(0)), (F(0), F(0)), False, 0, (F(1), F(1)))
+    >>> w.points[-1], len(set(w.points)) == len(w.points)
+    ((10, 0), True)
+    >>> max(abs(x) for x, _ in w.points), max(abs(y) for _, y in w.points)
+    (10, 10)
+    """
+    fr = _arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
+    ex, ey = end_pulse
+    points: list[tuple[int, int]] = []
+    if fr.tiny:
+        # a circle smaller than two pulses: only the end point can be commanded meaningfully
+        points.extend(_plane_line((start_pulse[0], start_pulse[1]), (ex, ey)))
+        return ArcWalk(tuple(points), fr.sweep, fr.radius_mm, 0)
+    x, y, u, v, qcount, sj = fr.x, fr.y, fr.u, fr.v, fr.qcount, fr.sj
     walk = 0
-    if not past_end(u, v, qcount):
-        rq = math.isqrt(q) + 1
-        limit = 8 * (rq // ai + rq // aj + 4) * (turns + 2) + 64
+    if not fr.past_end(u, v, qcount):
+        limit = fr.limit(turns)
         while walk < limit:
-            if abs(v) * aj >= abs(u) * ai:  # tangent (-v, u): x is the major axis
-                dx = -1 if v > 0 else 1
-                nu = u + dx * ai
-                best = None
-                for dy in (0, 1 if u > 0 else -1, -1 if u > 0 else 1):
-                    nv = v + dy * aj
-                    f = abs(nu * nu + nv * nv - q)
-                    if best is None or f < best[0]:
-                        best = (f, dx, dy, nu, nv)
-            else:
-                dy = 1 if u > 0 else -1
-                nv = v + dy * aj
-                best = None
-                for dx in (0, -1 if v > 0 else 1, 1 if v > 0 else -1):
-                    nu = u + dx * ai
-                    f = abs(nu * nu + nv * nv - q)
-                    if best is None or f < best[0]:
-                        best = (f, dx, dy, nu, nv)
-            _, dx, dy, nu, nv = best
+            dx, dy, nu, nv = _arc_step(u, v, fr.q, fr.ai, fr.aj)
             nq = _quadrant(nu, nv)
             nqcount = qcount + ((nq - qcount) % 4)
-            if past_end(nu, nv, nqcount):
+            if fr.past_end(nu, nv, nqcount):
                 break
             x, y, u, v, qcount = x + dx, y + dy, nu, nv, nqcount
             points.append((x, sj * y))
@@ -317,11 +369,70 @@ def arc_walk(
             raise InvalidArgument("arc walk did not reach its end")
     last = points[-1] if points else (start_pulse[0], start_pulse[1])
     points.extend(_plane_line(last, (ex, ey)))
-    return ArcWalk(tuple(points), sweep, radius_mm, walk)
+    return ArcWalk(tuple(points), fr.sweep, fr.radius_mm, walk)
 
 
 def _plane_line(a: tuple[int, int], b: tuple[int, int]) -> list[tuple[int, int]]:
     return [(p[0], p[1]) for p in line_steps(a, b)]
+
+
+def helix_steps(pos: Sequence[Sequence[int]], p0: Sequence[int], helix_axes: Sequence[int]) -> list[tuple[int, ...]]:
+    """Interleave helix-axis pulses so that no step moves any axis by more than one pulse (reference loop).
+
+    ``pos`` are the positions after each planar arc step, with the helix axes
+    already at their rounded targets.  On a steep helix a helix axis jumps by
+    ``m > 1`` pulses between two planar steps; that step becomes ``L = max |m|``
+    sub-steps: the helix axes follow the line ``prev -> next`` rounded
+    (:func:`line_position`), the plane moves at sub-step ``(L + 1) // 2`` (the
+    middle, so each intermediate helix value stands next to the nearer of the
+    two planar positions).  Steps with ``L <= 1`` are unchanged.
+
+    >>> helix_steps([(1, 0, 3), (2, 1, 4)], (0, 0, 0), (2,))
+    [(0, 0, 1), (1, 0, 2), (1, 0, 3), (2, 1, 4)]
+    """
+    out: list[tuple[int, ...]] = []
+    prev = tuple(p0)
+    for row in pos:
+        row = tuple(int(c) for c in row)
+        m = [row[h] - prev[h] for h in helix_axes]
+        big = max((abs(d) for d in m), default=0)
+        if big > 1:
+            mid = (big + 1) // 2
+            for s in range(1, big):
+                sub = list(row if s >= mid else prev)
+                for h, d in zip(helix_axes, m):
+                    sub[h] = prev[h] + (2 * s * d + big) // (2 * big)
+                out.append(tuple(sub))
+        out.append(row)
+        prev = row
+    return out
+
+
+def helix_chunk(pos: np.ndarray, p0: Sequence[int], helix_axes: Sequence[int]) -> np.ndarray:
+    """:func:`helix_steps` vectorized (identical rows, int64 ``(steps, axes)``).
+
+    >>> helix_chunk(np.array([(1, 0, 3), (2, 1, 4)]), (0, 0, 0), (2,)).tolist()
+    [[0, 0, 1], [1, 0, 2], [1, 0, 3], [2, 1, 4]]
+    """
+    pos = np.asarray(pos, dtype=np.int64)
+    if not len(pos) or not helix_axes:
+        return pos
+    rows = np.vstack([np.asarray(p0, dtype=np.int64).reshape(1, -1), pos])
+    jumps = np.diff(rows[:, list(helix_axes)], axis=0)
+    big = np.abs(jumps).max(axis=1)
+    if big.max() <= 1:
+        return pos
+    length = np.maximum(big, 1)
+    src = np.repeat(np.arange(len(pos)), length)  # the planar step each sub-step belongs to
+    ends = np.cumsum(length)
+    s = np.arange(len(src)) - np.repeat(ends - length, length) + 1  # sub-step 1..L within its step
+    L = length[src]
+    prev = rows[src]
+    out = np.where((s >= (L + 1) // 2)[:, None], pos[src], prev)
+    for c, h in enumerate(helix_axes):
+        d = jumps[src, c]
+        out[:, h] = prev[:, h] + (2 * s * d + L) // (2 * L)
+    return out
 
 
 # --------------------------------------------------------------------------- dogleg rapids

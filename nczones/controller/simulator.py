@@ -50,6 +50,8 @@ from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
 from .monitor import LimitMonitor
 from .pulses import LINE_CHUNK, arc_centre, arc_walk, dogleg_steps, line_chunk, line_position, line_steps, round_pulse
+from .arcs import arc_path
+from .pulses import helix_chunk, helix_steps
 
 __all__ = [
     "Mode",
@@ -555,9 +557,15 @@ class Controller:
             centre, err = arc_centre(s2, e2, seg.radius, seg.clockwise)
             if err > min(self.pulse[i], self.pulse[j]) / 10**6:  # pragma: no cover - 64-bit enclosure
                 raise InvalidArgument("R-format arc centre enclosure is not far inside one pulse")
-        walk = arc_walk((p0[i], p0[j]), (p1[i], p1[j]), s2, e2, centre, seg.clockwise, seg.turns,
-                        (self.pulse[i], self.pulse[j]))
-        pts = np.array(walk.points, dtype=np.int64).reshape(-1, 2)
+        walk_args = ((p0[i], p0[j]), (p1[i], p1[j]), s2, e2, centre, seg.clockwise, seg.turns,
+                     (self.pulse[i], self.pulse[j]))
+        vector = self.settings.engine == "vector"
+        if vector:  # the same positions as arc_walk, computed vectorized (controller/arcs.py)
+            walk = arc_path(*walk_args)
+            pts = walk.points
+        else:
+            walk = arc_walk(*walk_args)
+            pts = np.array(walk.points, dtype=np.int64).reshape(-1, 2)
         n = pts.shape[0]
         if n == 0 and p1 != p0:  # no step in the plane (a circle below two pulses), only the helix moves
             rows = list(line_steps(p0, p1))
@@ -590,6 +598,11 @@ class Controller:
             pos[:, k] = col
             if not self.machine.axes[k].rotary:
                 helix_len2 += float(seg.end[k] - seg.start[k]) ** 2
+        helix = [k for k in range(len(p0)) if k not in (i, j) and p1[k] != p0[k]]
+        if helix and n:  # a steep helix: interleave its pulses, at most one pulse per axis per step
+            pos = (helix_chunk(pos, p0, helix) if vector else
+                   np.array(helix_steps(pos.tolist(), p0, helix), dtype=np.int64).reshape(-1, len(p0)))
+            n = pos.shape[0]
         # path fraction after each step: cumulative chord length (floats, timing only)
         mm = pos.astype(float) * np.array([float(u) for u in self.pulse])
         prev = np.vstack([np.array(p0, dtype=float) * np.array([float(u) for u in self.pulse]), mm[:-1]]) if n else mm
