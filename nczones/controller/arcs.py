@@ -174,8 +174,8 @@ def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarr
     n = len(xs)
     bx = max(abs(x), int(np.abs(xs).max())) * ai + abs(cx)
     by = max(abs(y), int(np.abs(ys).max())) * aj + abs(cy)
-    m = max(bx, by) + max(ai, aj)
-    exact64 = 2 * m * m + q < _INT64_SAFE and (abs(fr.eu) + abs(fr.ev)) * m < _INT64_SAFE
+    bound = max(bx, by) + max(ai, aj)  # |u|, |v| and every offset tried, before and after a step
+    exact64 = 4 * bound * bound + q < _INT64_SAFE and (abs(fr.eu) + abs(fr.ev)) * bound < _INT64_SAFE
     dt = np.int64 if exact64 else object
     X = np.concatenate([np.array([x], dtype=np.int64), xs])
     Y = np.concatenate([np.array([y], dtype=np.int64), ys])
@@ -186,36 +186,34 @@ def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarr
         U = X.astype(object) * ai - cx
         V = Y.astype(object) * aj - cy
     Up, Vp = U[:-1], V[:-1]
-    dxc, dyc = np.diff(X), np.diff(Y)
+    # the major axis of every step; only the stretch with the first step's major axis is checked
+    # (a step with the other major axis counts as a disagreement: the caller takes it exactly)
     xmaj = np.abs(Vp) * aj >= np.abs(Up) * ai
-    # x major: dx = -sign(v), dy in (0, s, -s), s = +1 if u > 0 else -1
-    s = np.where(Up > 0, 1, -1).astype(dt)
-    nu = Up + np.where(Vp > 0, -1, 1).astype(dt) * ai
-    base = nu * nu - q
-    f0 = np.abs(base + Vp * Vp)
-    va, vb = Vp + s * aj, Vp - s * aj
-    f1 = np.abs(base + va * va)
-    f2 = np.abs(base + vb * vb)
+    turn = xmaj != xmaj[0]
+    m = int(np.argmax(turn)) if turn.any() else n
+    Up, Vp = Up[:m], Vp[:m]
+    if xmaj[0]:  # x major: dx = -sign(v), dy in (0, s, -s), s = +1 if u > 0 else -1, first strict minimum
+        major_ok = np.diff(X[: m + 1]) == np.where(Vp > 0, -1, 1)
+        s = np.where(Up > 0, 1, -1).astype(dt)
+        nu = Up + np.where(Vp > 0, -1, 1).astype(dt) * ai
+        g = nu * nu + Vp * Vp - q  # the residual with dy = 0
+        h = 2 * s * Vp * aj
+        minor, other, scale = np.diff(Y[: m + 1]), s, aj * aj
+    else:  # y major: dy = sign(u) (+1 if u > 0 else -1), dx in (0, t, -t), t = -1 if v > 0 else 1
+        major_ok = np.diff(Y[: m + 1]) == np.where(Up > 0, 1, -1)
+        s = np.where(Vp > 0, -1, 1).astype(dt)
+        nv = Vp + np.where(Up > 0, 1, -1).astype(dt) * aj
+        g = nv * nv + Up * Up - q
+        h = 2 * s * Up * ai
+        minor, other, scale = np.diff(X[: m + 1]), s, ai * ai
+    f0 = np.abs(g)
+    f1 = np.abs(g + h + scale)  # minor axis forwards (+s)
+    f2 = np.abs(g - h + scale)  # backwards (-s)
     pick1 = f1 < f0
     best = np.where(pick1, f1, f0)
-    dy_a = np.where(f2 < best, -s, np.where(pick1, s, 0))
-    dx_a = np.where(Vp > 0, -1, 1)
-    # y major: dy = sign(u) (+1 if u > 0 else -1), dx in (0, t, -t), t = -1 if v > 0 else 1
-    t = np.where(Vp > 0, -1, 1).astype(dt)
-    nv = Vp + np.where(Up > 0, 1, -1).astype(dt) * aj
-    base = nv * nv - q
-    g0 = np.abs(base + Up * Up)
-    ua, ub = Up + t * ai, Up - t * ai
-    g1 = np.abs(base + ua * ua)
-    g2 = np.abs(base + ub * ub)
-    pick1 = g1 < g0
-    best = np.where(pick1, g1, g0)
-    dx_b = np.where(g2 < best, -t, np.where(pick1, t, 0))
-    dy_b = np.where(Up > 0, 1, -1)
-    dx = np.where(xmaj, dx_a, dx_b).astype(np.int64)
-    dy = np.where(xmaj, dy_a, dy_b).astype(np.int64)
-    bad = (dx != dxc) | (dy != dyc)
-    ok = int(np.argmax(bad)) if bad.any() else n
+    d = np.where(f2 < best, -other, np.where(pick1, other, 0)).astype(np.int64)
+    bad = ~major_ok | (d != minor)
+    ok = int(np.argmax(bad)) if bad.any() else m
     # quadrant counts and the end-ray test of the (verified) positions
     Un, Vn = U[1:], V[1:]
     quad = np.where((Un > 0) & (Vn >= 0), 0, np.where((Un <= 0) & (Vn > 0), 1,

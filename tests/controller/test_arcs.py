@@ -6,7 +6,7 @@ import math
 from contextlib import contextmanager
 
 import numpy as np
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.controller import Controller, Settings, round_pulse, simulate
@@ -38,14 +38,14 @@ def _pyth(c, r, t):
 
 
 walk_cases = st.tuples(
-    decimals(-20, 20), decimals(-20, 20), decimals(0, 3).filter(lambda r: r >= F("0.003")),
+    decimals(-20, 20), decimals(-20, 20), decimals(0, 1).filter(lambda r: r >= F("0.003")),
     rationals(-5, 5), rationals(-5, 5), st.booleans(), st.integers(0, 2), st.booleans(),
     st.sampled_from([(U, U), (U, F(2, 1000)), (F(5, 1000), U), (F(1, 3000), F(1, 7000))]),
     st.sampled_from([0, 7, 1 << 16]), st.integers(-3, 3), st.integers(-3, 3),
 )
 
 
-@FAST
+@settings(FAST, max_examples=30)
 @given(walk_cases, st.sampled_from(["centre", "R", "spiral"]))
 def test_vectorized_walk_is_identical_to_the_reference(case, form):
     cx, cy, r, ts, te, cw, turns, full, pulse, candidates, ox, oy = case
@@ -72,12 +72,12 @@ def test_vectorized_walk_is_identical_to_the_reference(case, form):
 
 
 def test_vectorized_walk_big_circle_identical_and_closes():
-    args = ((123_457, -2), (123_457, -2), (F("123.4567"), F("-0.0021")), (F("123.4567"), F("-0.0021")),
+    args = ((23_457, -2), (23_457, -2), (F("23.4567"), F("-0.0021")), (F("23.4567"), F("-0.0021")),
             (F("0.0003"), F("0.0001")), True, 1, (U, U))
     fast = arc_path(*args)
     ref = arc_walk(*args)
     assert fast.points.tolist() == [list(p) for p in ref.points]
-    assert fast.points[-1].tolist() == [123_457, -2] and len(fast.points) > 1_000_000
+    assert fast.points[-1].tolist() == [23_457, -2] and len(fast.points) > 200_000
 
 
 def _steep_helix(cw, plane, dz, turns=0, r="0.5"):
@@ -89,9 +89,9 @@ def _steep_helix(cw, plane, dz, turns=0, r="0.5"):
     return arc(start, end, (0, 0), plane=plane, clockwise=cw, turns=turns), ia, ib, AXES.index(n)
 
 
-@FAST
-@given(st.booleans(), st.sampled_from([Plane.XY, Plane.XZ, Plane.YZ]), decimals(-40, 40).filter(lambda v: abs(v) > 4),
-       st.integers(0, 1), st.sampled_from(["0.05", "0.5", "1.234"]))
+@settings(FAST, max_examples=20)
+@given(st.booleans(), st.sampled_from([Plane.XY, Plane.XZ, Plane.YZ]), decimals(-20, 20).filter(lambda v: abs(v) > 3),
+       st.integers(0, 1), st.sampled_from(["0.05", "0.2", "0.4321"]))
 def test_steep_helix_one_pulse_per_axis_per_step_and_within_one_pulse(cw, plane, dz, turns, r):
     seg, ia, ib, iz = _steep_helix(cw, plane, dz, turns, r)
     plans = []
