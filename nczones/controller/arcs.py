@@ -225,3 +225,28 @@ def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarr
     past = np.asarray(past, dtype=bool)
     stop = int(np.argmax(past)) if past.any() else n
     return ok, stop, qcs
+
+
+def path_fractions(pos: np.ndarray, p0, pulse_mm) -> np.ndarray:
+    """Cumulative chord length after each step as a fraction of the whole (floats, timing only).
+
+    Steps that move every axis by at most one pulse (arcs and interleaved
+    helices) take their length from a table indexed by which axes moved.
+
+    >>> path_fractions(np.array([[1, 0], [2, 1], [2, 2]]), (0, 0), (1.0, 1.0)).round(3).tolist()
+    [0.293, 0.707, 1.0]
+    """
+    n = len(pos)
+    if not n:
+        return np.ones(0)
+    moved = np.abs(np.diff(pos, axis=0, prepend=np.asarray(p0, dtype=np.int64).reshape(1, -1)))
+    k = pos.shape[1]
+    u2 = np.array([float(u) ** 2 for u in pulse_mm])
+    if k <= 12 and moved.max() <= 1:
+        code = moved @ (1 << np.arange(k, dtype=np.int64))
+        table = np.sqrt(((np.arange(1 << k)[:, None] >> np.arange(k)) & 1) @ u2)
+        step_len = table[code]
+    else:
+        step_len = np.sqrt((moved.astype(float) ** 2) @ u2)
+    cum = np.cumsum(step_len)
+    return cum / cum[-1] if cum[-1] > 0 else np.ones(n)

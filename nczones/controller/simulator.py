@@ -50,7 +50,7 @@ from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
 from .monitor import LimitMonitor
 from .pulses import LINE_CHUNK, arc_centre, arc_walk, dogleg_steps, line_chunk, line_position, line_steps, round_pulse
-from .arcs import arc_path
+from .arcs import arc_path, path_fractions
 from .pulses import helix_chunk, helix_steps
 
 __all__ = [
@@ -579,9 +579,10 @@ class Controller:
         pos[:, i] = pts[:, 0]
         pos[:, j] = pts[:, 1]
         # helix axes follow the swept angle (float angle; rounding to the nearest pulse)
+        helix = [k for k in range(len(p0)) if k not in (i, j) and p1[k] != p0[k]]
         cx, cy = float(centre[0]), float(centre[1])
         sgn = -1.0 if seg.clockwise else 1.0
-        ang = np.unwrap(np.arctan2(sgn * (pts[:, 1] * float(self.pulse[j]) - cy), pts[:, 0] * float(self.pulse[i]) - cx))
+        ang = np.zeros(n) if not helix else np.unwrap(np.arctan2(sgn * (pts[:, 1] * float(self.pulse[j]) - cy), pts[:, 0] * float(self.pulse[i]) - cx))
         a0 = math.atan2(sgn * (float(s2[1]) - cy), float(s2[0]) - cx)
         ang = ang - a0
         ang -= 2 * math.pi * np.round((ang[0] if n else 0) / (2 * math.pi))
@@ -598,17 +599,12 @@ class Controller:
             pos[:, k] = col
             if not self.machine.axes[k].rotary:
                 helix_len2 += float(seg.end[k] - seg.start[k]) ** 2
-        helix = [k for k in range(len(p0)) if k not in (i, j) and p1[k] != p0[k]]
         if helix and n:  # a steep helix: interleave its pulses, at most one pulse per axis per step
             pos = (helix_chunk(pos, p0, helix) if vector else
                    np.array(helix_steps(pos.tolist(), p0, helix), dtype=np.int64).reshape(-1, len(p0)))
             n = pos.shape[0]
         # path fraction after each step: cumulative chord length (floats, timing only)
-        mm = pos.astype(float) * np.array([float(u) for u in self.pulse])
-        prev = np.vstack([np.array(p0, dtype=float) * np.array([float(u) for u in self.pulse]), mm[:-1]]) if n else mm
-        step_len = np.sqrt(((mm - prev) ** 2).sum(axis=1))
-        cum = np.cumsum(step_len)
-        sigma = cum / cum[-1] if n and cum[-1] > 0 else np.ones(n)
+        sigma = path_fractions(pos, p0, self.pulse)
         plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma)
         length = math.sqrt((walk.radius_mm * walk.sweep_rad) ** 2 + helix_len2)
         if self.mode is Mode.CHECK:
