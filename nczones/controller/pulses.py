@@ -32,7 +32,10 @@ Invariants
   (``turns`` extra turns included) and stops before it would cross the exact
   end ray for the last time; a short linear approach then lands exactly on
   the rounded end point.  Full circles therefore close exactly.  Axes outside
-  the plane (helix) follow the swept angle, rounded to the nearest pulse.
+  the plane (helix) follow the swept angle, rounded to the nearest pulse; on
+  a steep helix their pulses are interleaved (:func:`helix_steps`) so that no
+  step moves any axis by more than one pulse.
+  :mod:`nczones.controller.arcs` computes the identical walk vectorized.
 * **Dogleg rapid** (:func:`dogleg_steps`): every axis starts at once and
   steps at its own constant pulse period (its rapid rate); pulses are merged
   in exact time order, so each axis reaches its own end exactly.
