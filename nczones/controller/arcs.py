@@ -47,6 +47,9 @@ __all__ = ["ArcPath", "arc_path", "SHORT_ARC_STEPS", "CANDIDATES"]
 SHORT_ARC_STEPS = 48
 #: Most candidate steps proposed at once.
 CANDIDATES = 1 << 16
+#: Verify on Python integers (object arrays) when int64 cannot hold the products.  That is
+#: exact but no faster than the reference loop, so it is off: such arcs run arc_walk itself.
+OBJECT_VERIFY = False
 _INT64_SAFE = 1 << 62
 
 
@@ -85,7 +88,9 @@ def arc_path(
     """
     fr = _arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
     est = fr.sweep * math.sqrt(fr.q) / min(fr.ai, fr.aj) if fr.q else 0.0
-    if fr.tiny or est < SHORT_ARC_STEPS:
+    reach = 2 * math.isqrt(fr.q) + abs(fr.cx) + abs(fr.cy) + 4 * max(fr.ai, fr.aj)
+    big = 4 * reach * reach + fr.q >= _INT64_SAFE  # int64 verification impossible (e.g. R-format centres)
+    if fr.tiny or est < SHORT_ARC_STEPS or (big and not OBJECT_VERIFY):
         w = arc_walk(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
         return ArcPath(np.array(w.points, dtype=np.int64).reshape(-1, 2), w.sweep_rad, w.radius_mm, w.walk_steps)
     pieces, walk = _walk(fr, turns, est)

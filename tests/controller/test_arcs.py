@@ -25,12 +25,12 @@ AXES = ("X", "Y", "Z")
 @contextmanager
 def _tuned(short: int, candidates: int):
     """Force the vectorized path on short arcs and small candidate batches (more rounds, more seams)."""
-    old = arcs_mod.SHORT_ARC_STEPS, arcs_mod.CANDIDATES
-    arcs_mod.SHORT_ARC_STEPS, arcs_mod.CANDIDATES = short, candidates
+    old = arcs_mod.SHORT_ARC_STEPS, arcs_mod.CANDIDATES, arcs_mod.OBJECT_VERIFY
+    arcs_mod.SHORT_ARC_STEPS, arcs_mod.CANDIDATES, arcs_mod.OBJECT_VERIFY = short, candidates, True
     try:
         yield
     finally:
-        arcs_mod.SHORT_ARC_STEPS, arcs_mod.CANDIDATES = old
+        arcs_mod.SHORT_ARC_STEPS, arcs_mod.CANDIDATES, arcs_mod.OBJECT_VERIFY = old
 
 
 def _pyth(c, r, t):
