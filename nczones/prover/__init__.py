@@ -185,6 +185,10 @@ def verify(
     for u in run.unsupported:
         reasons.append(Reason(f"{u.code}: {u.reason}", fix(u.span), None, u.code))
     notes = tuple(run.assumed_modal_text())
+    if run.counts.get("spline"):
+        notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "
+                  "programmed curve; a controller that approximates them (LinuxCNC turns some G5.2/G6.2 "
+                  "curves into biarcs) may deviate from it, see specs/gcode-support.md",)
     if recovery is not None:
         from .recovery import verify_recovery
 

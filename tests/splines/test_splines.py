@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from fractions import Fraction as F
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -13,6 +14,8 @@ from nczones.motion import Plane, Segment, SegmentKind
 from nczones.nurbs import Nurbs, clamped_uniform_knots
 from nczones.prover.core import Prover, verify_segments
 from nczones.prover.result import Verdict
+
+ROOT = Path(__file__).resolve().parents[2]
 
 coord = st.integers(-40, 40).map(lambda v: F(v, 4))
 weight = st.integers(1, 6).map(lambda v: F(v, 2))
@@ -157,3 +160,14 @@ def _dist_to_chord(q, a, b) -> float:
     dd = float(d @ d)
     t = 0.0 if dd == 0 else min(1.0, max(0.0, float((q - a) @ d) / dd))
     return float(np.max(np.abs(q - (a + t * d))))
+
+
+def test_reports_say_splines_were_proved_on_the_programmed_curve():
+    from nczones import load_machine
+    from nczones.prover import verify
+
+    program = "G21 G90 G17 F100\nG0 X10 Y10 Z10\nG5.2 X10 Y10 P1 L3\nX20 Y30 P1\nX40 Y10 P1\nG5.3\nM2\n"
+    result = verify(program, load_machine(ROOT / "specs" / "machines" / "mill.toml"))
+    assert any("exact programmed curve" in n for n in result.notes)
+    plain = verify("G21 G90\nG0 X10 Y10 Z10\nM2\n", load_machine(ROOT / "specs" / "machines" / "mill.toml"))
+    assert not any("spline" in n for n in plain.notes)
