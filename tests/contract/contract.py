@@ -229,9 +229,12 @@ def _check_periodic(machine, segs, alarm) -> None:
         return
     period_s = machine.monitor_period_ms / 1000
     _require(p.time_s >= alarm.time_s - 1e-9, "periodic alarm before the first outside pulse")
-    tl = next(s.tool_length for s in segs if s.block == p.block)
+    tl = next((s.tool_length for s in segs if s.block == p.block), segs[-1].tool_length)
     _require(not machine.allowed.contains(machine.point(p.position), tl),
              f"periodic alarm at {p.position}, a point inside the allowed set")
+    if p.block is None:
+        _count("periodic: caught by the sample after the program ended")
+        return
     if p.block != alarm.block:
         _count("periodic: caught in a later block (the first excursion was shorter than a period)")
         return

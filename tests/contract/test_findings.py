@@ -1,0 +1,51 @@
+"""Disagreements the contract suite found, kept as minimal tests.
+
+A strict xfail documents a known bug in another stage: it flips to a
+failure (XPASS) the day the bug is fixed, so the marker gets removed.
+"""
+
+from fractions import Fraction as F
+
+import pytest
+
+from nczones.controller import simulate
+from nczones.machine import parse_machine
+from nczones.motion import Segment, SegmentKind
+
+MACHINE = """
+[machine]
+axes = ["X", "Y"]
+pulse = "0.01"
+monitor_period_ms = "2"
+[machine.rapid]
+X = "6000"
+Y = "6000"
+[machine.reference]
+X = "10"
+Y = "10"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "0", Y = "0" }
+max = { X = "70", Y = "70" }
+"""
+
+
+@pytest.mark.xfail(strict=True, reason="controller: a periodic alarm reports first_outside/overshoot_pulses "
+                                       "of an earlier one-pulse excursion the path had already left")
+def test_periodic_alarm_reports_the_excursion_it_caught():
+    m = parse_machine(MACHINE)
+    axes = m.axis_names
+    feed = F(3000)
+    # block 0 ends one pulse below Y0 (outside); block 1 goes straight back in, then drifts out past X0
+    dip = Segment(SegmentKind.LINE, (F(10), F(10)), (F(0), F(-1, 100)), axes, block=0, feed_mm_min=feed)
+    back = Segment(SegmentKind.LINE, (F(0), F(-1, 100)), (F(-6, 1000), F(9365, 1000)), axes, block=1,
+                   feed_mm_min=feed)
+    pulse = simulate([dip, back], m, monitor="pulse")
+    periodic = simulate([dip, back], m, monitor="periodic")
+    assert pulse.alarms[0].block == 0  # the one-pulse dip at the end of block 0
+    alarm = periodic.alarms[0]
+    assert alarm.block == 1  # the dip was shorter than a period; the later excursion is caught
+    # The excursion caught starts where X first rounds to -1 pulse (half way along block 1), not at the dip:
+    assert alarm.first_outside != (F(0), F(-1, 100))
+    assert alarm.overshoot_pulses <= 20  # 2 ms at 50 mm/s = 0.1 mm = 10 pulses (+ rounding)
