@@ -184,7 +184,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("nczones: interrupted", file=sys.stderr)
         return 130
-    except Exception:  # an internal bug, never the user's fault
+    except Exception:  # noqa: BLE001 - an internal bug, never the user's fault
         traceback.print_exc()
         print("nczones: internal error (the traceback above is a bug in nczones; please report it)", file=sys.stderr)
         return EXIT_INTERNAL

@@ -32,9 +32,9 @@ the controller uses a rational enclosure far inside one pulse.
 from __future__ import annotations
 
 import enum
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
-from collections.abc import Iterator
 
 import numpy as np
 

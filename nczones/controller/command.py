@@ -17,7 +17,7 @@ from fractions import Fraction
 from typing import Any
 
 from .. import cli
-from ..errors import Diagnostic, InputError
+from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import format_decimal, parse_decimal
 
 __all__ = ["register", "render_text", "EXTRA_OPTIONS", "RUNNERS"]
@@ -32,7 +32,7 @@ RUNNERS: list[Callable[[argparse.Namespace, Any, Any], Any]] = []
 def _decimal_option(name: str, text: str) -> Fraction:
     try:
         q = parse_decimal(text)
-    except Exception:
+    except InvalidArgument:
         q = None
     if q is None or q < 0:
         raise InputError(Diagnostic("SM101", f"{name} {text!r}: expected a non-negative decimal number of ms",
@@ -48,7 +48,7 @@ def _break_at(text: str | None) -> tuple[int, Fraction] | None:
     try:
         line = int(line_s)
         frac = parse_decimal(frac_s) if frac_s else Fraction(0)
-    except Exception:
+    except ValueError:  # int() or parse_decimal (InvalidArgument is a ValueError)
         line, frac = 0, Fraction(-1)
     if line < 1 or not 0 <= frac <= 1:
         raise InputError(Diagnostic("SM111", f"--break-at {text!r}: expected LINE[:FRACTION], a source line "

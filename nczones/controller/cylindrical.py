@@ -111,23 +111,8 @@ def _append(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
 
 def plan_developed_arc(ctrl, seg, p0: tuple[int, ...], p1: tuple[int, ...]):
     """The controller's motion plan of a developed arc (called by ``Controller._plan``)."""
-    from .simulator import Mode, _Plan
+    from .simulator import plan_from_positions
 
     pos = developed_arc_positions(seg, ctrl.pulse, p0)
-    n = pos.shape[0]
-    if n and tuple(int(v) for v in pos[-1]) != tuple(p1):  # pragma: no cover - by construction
-        raise InvalidArgument("developed arc does not end on its rounded end point")
-    arc = developed_arc_of(seg)
-    length = float(arc.length().mid())  # developed mm (timing only)
-    sigma = np.arange(1, n + 1, dtype=float) / max(n, 1)
-    plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma)
-    if ctrl.mode is Mode.CHECK:
-        rate = min(float(a.rapid_mm_min) for a in ctrl.machine.axes)
-        plan.base_time_s = length * 60 / rate
-    else:
-        if seg.feed_mm_min is None or seg.feed_mm_min <= 0:
-            raise InvalidArgument(f"block {seg.block} (line {seg.line}): feed move without a positive feed")
-        plan.base_time_s = length * 60 / float(seg.feed_mm_min)  # F is the feed on the developed surface
-    plan.accdec = ctrl.mode is not Mode.CHECK
-    plan.speed_mm_s = length / plan.base_time_s if plan.base_time_s > 0 else 0.0
-    return plan
+    length = float(developed_arc_of(seg).length().mid())  # developed mm: F is the feed on the developed surface
+    return plan_from_positions(ctrl, seg, p0, p1, pos, length, "developed arc")

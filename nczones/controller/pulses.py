@@ -44,9 +44,9 @@ Invariants
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from collections.abc import Iterator, Sequence
 
 import numpy as np
 

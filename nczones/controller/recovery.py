@@ -62,13 +62,11 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from fractions import Fraction
-from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from ..errors import Diagnostic, InputError, InvalidArgument, MachineFileError
-from ..exact import format_decimal
 from ..machine import SECTION_PARSERS, Machine, _number, _written
 from ..motion import Segment, SegmentKind
 
@@ -493,7 +491,6 @@ def run_with_break(ctl, motion) -> Any:
     ('recovery', 'tool-break recovery: to tool change', 'clamp')
     """
     from .simulator import _segments_of
-    from .pulses import round_pulse
 
     line, fraction = ctl.break_at
     fraction = Fraction(fraction)

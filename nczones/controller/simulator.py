@@ -38,7 +38,7 @@ from __future__ import annotations
 import enum
 import math
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
@@ -48,10 +48,20 @@ from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from .monitor import LimitMonitor
-from .pulses import LINE_CHUNK, arc_centre, arc_walk, dogleg_steps, line_chunk, line_position, line_steps, round_pulse
 from .arcs import arc_path, path_fractions
-from .pulses import helix_chunk, helix_steps
+from .monitor import LimitMonitor
+from .pulses import (
+    LINE_CHUNK,
+    arc_centre,
+    arc_walk,
+    dogleg_steps,
+    helix_chunk,
+    helix_steps,
+    line_chunk,
+    line_position,
+    line_steps,
+    round_pulse,
+)
 
 __all__ = [
     "Mode",
@@ -376,6 +386,31 @@ class _Plan:
             np.where(sig >= 1 - sa, total - np.sqrt(2 * np.clip(1 - sig, 0, None) * T * tau_s), ta + (sig - sa) * T),
         )
         return out
+
+
+def plan_from_positions(ctrl: "Controller", seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...],
+                        positions: np.ndarray, length_mm: float, what: str) -> "_Plan":
+    """A plan that walks precomputed pulse ``positions`` (G07.1 arcs, splines).
+
+    ``length_mm`` is the path length the feed applies to (timing only); the
+    walk must end on the rounded end point ``p1``.  Check mode moves at the
+    slowest rapid rate without acceleration, like every other motion there.
+    """
+    n = positions.shape[0]
+    if n and tuple(int(v) for v in positions[-1]) != tuple(p1):  # pragma: no cover - by construction
+        raise InvalidArgument(f"{what} does not end on its rounded end point")
+    sigma = np.arange(1, n + 1, dtype=float) / max(n, 1)
+    plan = _Plan(seg, p0, p1, n, positions=positions, sigma=sigma)
+    if ctrl.mode is Mode.CHECK:
+        rate = min(float(a.rapid_mm_min) for a in ctrl.machine.axes)
+        plan.base_time_s = length_mm * 60 / rate
+    else:
+        if seg.feed_mm_min is None or seg.feed_mm_min <= 0:
+            raise InvalidArgument(f"block {seg.block} (line {seg.line}): feed move without a positive feed")
+        plan.base_time_s = length_mm * 60 / float(seg.feed_mm_min)
+    plan.accdec = ctrl.mode is not Mode.CHECK
+    plan.speed_mm_s = length_mm / plan.base_time_s if plan.base_time_s > 0 else 0.0
+    return plan
 
 
 def _segments_of(motion: Any) -> Iterator[Segment]:

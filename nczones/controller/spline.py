@@ -84,23 +84,9 @@ def spline_positions(seg, pulse, p0) -> np.ndarray:
 
 def plan_spline(ctrl, seg, p0: tuple[int, ...], p1: tuple[int, ...]):
     """The controller's motion plan of a spline (called by ``Controller._plan``)."""
-    from .simulator import Mode, _Plan
+    from .simulator import plan_from_positions
 
     pos = spline_positions(seg, ctrl.pulse, p0)
-    n = pos.shape[0]
-    if n and tuple(int(v) for v in pos[-1]) != tuple(p1):  # pragma: no cover - by construction
-        raise InvalidArgument("spline does not end on its rounded end point")
     pts = spline_chord_points(seg, ctrl.pulse)
     length = sum(math.dist([float(v) for v in a], [float(v) for v in b]) for a, b in zip(pts, pts[1:]))
-    sigma = np.arange(1, n + 1, dtype=float) / max(n, 1)
-    plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma)
-    if ctrl.mode is Mode.CHECK:
-        rate = min(float(a.rapid_mm_min) for a in ctrl.machine.axes)
-        plan.base_time_s = length * 60 / rate
-    else:
-        if seg.feed_mm_min is None or seg.feed_mm_min <= 0:
-            raise InvalidArgument(f"block {seg.block} (line {seg.line}): feed move without a positive feed")
-        plan.base_time_s = length * 60 / float(seg.feed_mm_min)
-    plan.accdec = ctrl.mode is not Mode.CHECK
-    plan.speed_mm_s = length / plan.base_time_s if plan.base_time_s > 0 else 0.0
-    return plan
+    return plan_from_positions(ctrl, seg, p0, p1, pos, length, "spline")

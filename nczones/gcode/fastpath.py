@@ -40,7 +40,7 @@ from fractions import Fraction
 import numpy as np
 
 from ..errors import GcodeError, InputError, SourceSpan
-from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
+from ..motion import PLANE_AXES, MotionChunk, SegmentKind
 from .blocks import Block, Word
 from .lexer import make_span
 
@@ -242,19 +242,18 @@ def _truncate_at_percent_slow(text: str) -> str:
 
 def _state_ok(it) -> bool:
     return (not it.unsupported and it.motion in (None, 0, 10, 20, 30) and not it.comp_just_off
-            and not it.comp_on and not it.track)
+            and not it.comp_on and not it.track and it._u is None)  # no XY rotation (G10 L2 R) active
 
 
 def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
     """Run lines i..j-1 (of a block whose first line is ``line0``) through the language layer and the interpreter."""
-    from . import _blocks
 
     it = interp.interpreter
     piece = data[starts[i]:ends_[j - 1]].decode("utf-8", errors="surrogateescape")
     offset = i + line0  # line numbers inside the piece start at 1
 
-    from .interpreter import Unsupported
     from .expr import Parameters
+    from .interpreter import Unsupported
     from .program import UnsupportedGcode, iter_blocks
 
     params = Parameters()
@@ -506,7 +505,6 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     n = hi - lo
     axes = it.axes
     na = len(axes)
-    letter_codes = {ord(a): k for k, a in enumerate(axes)}
     # N only as the first word of its line; drop N words
     isN = wletter == ord("N")
     if isN.any():
@@ -598,7 +596,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
             pres[rel[m]] = True
             ijk[letter] = (col, pres)
     any_ijk = np.zeros(n, dtype=bool)
-    for col, pres in ijk.values():
+    for _col, pres in ijk.values():
         any_ijk |= pres
     is_arc_line = (mode == 2) | (mode == 3)
     if np.any(any_ijk & ~is_arc_line):

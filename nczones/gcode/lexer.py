@@ -78,7 +78,7 @@ try:  # relies on CPython's Fraction slots; verified here, else the public const
     _f = _fraction_raw(-25, 10)
     _fraction = _fraction_raw if (_f == Fraction(-5, 2) and hash(_f) == hash(Fraction(-5, 2))
                                   and _f.denominator == 2) else _fraction_safe
-except Exception:  # pragma: no cover
+except Exception:  # noqa: BLE001  # pragma: no cover
     _fraction = _fraction_safe
 
 
@@ -188,7 +188,7 @@ _lazy_at = _LazyWord._at.__set__  # type: ignore[attr-defined]
 def _item_columns(line: str, start: int, k: int) -> tuple[int, int]:
     """1-based (column, end column) of the k-th ``_FAST_ITEMS`` item of ``line`` after ``start``."""
     pos = start
-    for j, (blanks, comment, semi, letter, gap, num) in enumerate(_FAST_ITEMS.findall(line, start)):
+    for j, (blanks, comment, _semi, letter, gap, num) in enumerate(_FAST_ITEMS.findall(line, start)):
         pos += len(blanks)
         end = pos + len(comment) + 2 if comment or not letter else pos + 1 + len(gap) + len(num)
         if j == k:

@@ -94,7 +94,7 @@ from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import Block, Word
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
 from .lexer import magic_comment, make_span, make_word, scan_simple
-from .parser import NPAR, OWord, ParsedLine, parse_line
+from .parser import OWord, ParsedLine, parse_line
 
 __all__ = [
     "iter_blocks",
@@ -330,7 +330,7 @@ class _Runner:
         if self.scanned_all:
             return
         self.scanned_all = True
-        for p, ln, line, nxt in self.scan(0, 1):
+        for _p, ln, line, nxt in self.scan(0, 1):
             if "o" not in line and "O" not in line:
                 continue
             m = _OLINE.match(_BLANK.sub("", line))
@@ -348,7 +348,6 @@ class _Runner:
         pos, lineno = 0, 1
         src = self.src
         file = self.file
-        params = self.params
         cache = self.cache
         while True:
             line, nxt = src.line_at(pos)
@@ -487,7 +486,6 @@ class _Runner:
             params.write(key, value)
         messages = self.messages(pl.comments) if pl.comments else ()
         if m98 is not None or m99 is not None:
-            ploc = None
             pword = lword = None
             rest = []
             for w in words:

@@ -14,14 +14,14 @@ __all__ = ["register"]
 
 def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
-    from . import parse_param, verify
     from ..report import render_report
     from ..report.progress import progress_for
+    from . import parse_param, verify
 
     machine = load_machine(args.machine)
     try:
         margin = parse_decimal(args.margin)
-    except Exception:
+    except ValueError:  # InvalidArgument is a ValueError
         raise InputError(Diagnostic("VF102", f"--margin {args.margin!r}: expected a decimal number of mm "
                                              "(e.g. 0.001)", file="<command line>")) from None
     if margin < 0:

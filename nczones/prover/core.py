@@ -45,7 +45,7 @@ from .geometry import (
     sqrt_bounds,
 )
 from .result import ParamRange, Reason, Result, Verdict, Violation
-from .smt import Solver, _and, _or, add, mul, q, sub, zone_violation
+from .smt import Solver, _or, add, mul, q, sub, zone_violation
 
 __all__ = ["verify_segments", "Prover"]
 
@@ -322,11 +322,15 @@ class Prover:
     def check(self, seg: Segment) -> _Outcome:
         self.stats["segments"] += 1
         if seg.kind is SegmentKind.DEVELOPED_ARC or (seg.extra and "cylinder_radius" in dict(seg.extra)):
-            from .cylindrical import check_cylindrical  # G07.1: pi enclosed, see prover/cylindrical.py
+            from .cylindrical import (
+                check_cylindrical,  # G07.1: pi enclosed, see prover/cylindrical.py
+            )
 
             return check_cylindrical(self, seg)
         if seg.kind is SegmentKind.SPLINE:
-            from .spline import check_spline  # exact NURBS: control hulls + refinement, see prover/spline.py
+            from .spline import (
+                check_spline,  # exact NURBS: control hulls + refinement, see prover/spline.py
+            )
 
             return check_spline(self, seg)
         if seg.kind not in _LINE_LIKE and seg.kind is not SegmentKind.ARC:
@@ -438,7 +442,7 @@ class Prover:
         """Witness, first exit and depth of a violating straight piece (all exact)."""
         pieces = line_pieces(seg, self.machine)
         # first violating piece of the segment (the flagged one may not be the first)
-        first_piece, first_t, first_exact, first_zone_iv = None, None, True, None
+        first_piece, first_t, first_exact = None, None, True
         for pc in pieces:
             per_zone = []
             for z in self.zones:
@@ -840,7 +844,7 @@ def box_fits(allowed, lo: dict, hi: dict, margin: Fraction, tool_length: Fractio
         shift = tool_length if (z.point is ZonePoint.TIP and tool_length) else F0
 
         def rng(a):
-            s = shift if a == allowed.tool_axis else F0
+            s = shift if a == allowed.tool_axis else F0  # noqa: B023 - called within this iteration
             return lo[a] - s - d, hi[a] - s + d
 
         if isinstance(z, BoxZone):

@@ -277,7 +277,7 @@ def find_one_pitch_error(cfg: HomingConfig, pulse: Fraction, *, start: Fraction 
         return _run("one-pitch-error", statement, lambda: _one_pitch_model(cfg, pulse, None))
     result = None
     for step in (pulse, pulse / 10, pulse / 1000, None):
-        result = _run("one-pitch-error", statement, lambda: _one_pitch_model(cfg, pulse, step),
+        result = _run("one-pitch-error", statement, lambda: _one_pitch_model(cfg, pulse, step),  # noqa: B023 - called within this iteration
                       on_sat=lambda m: _one_pitch_cex(cfg, pulse, m, start))
         if result.status is not ProofStatus.PROVED:
             return result

@@ -61,7 +61,7 @@ from ..zones import ZonePoint
 from .core import Prover
 from .geometry import arc_geom, rational_point_on_arc
 from .result import Reason, Violation
-from .smt import _and, _or, add, mul, q, sub, zone_violation
+from .smt import _or, add, mul, q, sub, zone_violation
 
 __all__ = ["RecoveryOutcome", "verify_recovery"]
 
@@ -238,7 +238,6 @@ def verify_recovery(segments, machine: Machine, *, variant: RecoveryVariant | st
     for first, last in motion_sequences(segs):
         for i in range(first, last + 1):
             seq_of[i] = first
-    done_const: dict[tuple, tuple[str, object] | None] = {}
     for i, seg in enumerate(segs):
         if not is_cutting(seg) or len(violations) >= max_violations:
             continue

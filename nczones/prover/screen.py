@@ -139,7 +139,7 @@ def arc_boxes(chunk: MotionChunk, rows: np.ndarray, lo: np.ndarray, hi: np.ndarr
 
         def contains(cr_pv, dot_pv, cr_vq):
             hv = _half(cr_pv, dot_pv)
-            return full | np.where(hv != hw, hv < hw, cr_vq >= 0)
+            return full | np.where(hv != hw, hv < hw, cr_vq >= 0)  # noqa: B023 - called within this iteration
 
         # v = (1, 0), (-1, 0), (0, 1), (0, -1): cross(p, v), dot(p, v), cross(v, q)
         plus_a = contains(-p1, p0, q1)
@@ -234,7 +234,7 @@ def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
         def rng(a):
             k = axes.index(a)
             a_lo, a_hi = lo[:, k] - d_up, hi[:, k] + d_up
-            if tip and a == prover.tool_axis:
+            if tip and a == prover.tool_axis:  # noqa: B023 - called within this iteration
                 a_lo, a_hi = a_lo - tl, a_hi - tl
             return a_lo, a_hi
 

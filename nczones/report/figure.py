@@ -328,13 +328,11 @@ def draw_allowed_set(machine, plane: tuple[str, str], ax):
     the allow zones are intersected (the allowed set is their intersection),
     their outlines drawn thin.  Returns the axes.
     """
-    from matplotlib.patches import PathPatch
+    from matplotlib.patches import PathPatch, Rectangle
     from matplotlib.path import Path as MplPath
     from shapely.geometry import Polygon as ShapelyPolygon
     from shapely.geometry import box as shapely_box
     from shapely.ops import unary_union
-
-    from matplotlib.patches import Rectangle
 
     from .plot import _zone_patches, view_limits
 
@@ -380,7 +378,7 @@ def draw_allowed_set(machine, plane: tuple[str, str], ax):
         if p is not None:
             p.set_gid("allowed-set")
         if len(allow) > 1:
-            for z, g in allow:
+            for _z, g in allow:
                 patch(g, facecolor="none", edgecolor="#4c8c4c", lw=0.6, ls=":", zorder=1)
     for z in machine.zones:
         if not z.forbid:

@@ -148,7 +148,7 @@ def render_html(result: Result, machine, program=None, *, planes=None, source_te
 
         try:
             text, _ = _read_source(program, None)
-        except Exception:
+        except (OSError, UnicodeDecodeError):  # the report still renders, without a listing
             text = ""
     lines = (text or "").splitlines()
     verdict = result.verdict.label
@@ -164,7 +164,7 @@ def render_html(result: Result, machine, program=None, *, planes=None, source_te
             fig.set_size_inches(9, 5.2)
             svg = _svg(fig, f"nczones-{k}")
             # matplotlib ids are unique within one SVG; prefix them per figure
-            svg = re.sub(r'(id="|url\(#|href="#)([A-Za-z_][\w.-]*)', lambda m: f"{m.group(1)}f{k}-{m.group(2)}"
+            svg = re.sub(r'(id="|url\(#|href="#)([A-Za-z_][\w.-]*)', lambda m: f"{m.group(1)}f{k}-{m.group(2)}"  # noqa: B023 - called within this iteration
                          if not m.group(2).startswith(("counterexample", "first-exit", "violating-block",
                                                        "toolpath", "allowed-set", "forbid-")) else m.group(0), svg)
             plt.close(fig)
