@@ -161,6 +161,8 @@ class CylindricalInterpreter(Interpreter):
             raise self._error("GC230", "cancel the canned cycle (G80) before G07.1", w)
         if self.track:
             self._unknown("G07.1", "parameter ranges are not supported with cylindrical interpolation", w)
+        if self._u is not None:
+            self._unknown("G07.1", "cylindrical interpolation in a rotated coordinate system (G10 L2 R) is not modelled", w)
         radius = aw.value * INCH if self.inch else aw.value
         self.cylinder = CylinderMode(letter, linear, self.index[letter], self.index[linear], radius)
 

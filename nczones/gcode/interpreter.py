@@ -32,7 +32,7 @@ their circle, ...) is in ``specs/gcode-support.md``.
 
 from __future__ import annotations
 
-import enum
+import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from fractions import Fraction
@@ -313,6 +313,8 @@ class Interpreter:
         self.tool_register: int | None = None
         # ---- offsets (mm, machine axes)
         self.g5x = {name: list(machine.offset(name)) for name in WORK_OFFSETS}
+        self.rot = {name: _ZERO for name in WORK_OFFSETS}  # G10 L2 R: XY rotation in degrees
+        self._ix, self._iy = self.index.get("X"), self.index.get("Y")
         self.g92 = list(z)
         self.g92_params = list(z)
         self.home = {280: tuple(machine.reference), 300: tuple(machine.reference)}
@@ -343,6 +345,8 @@ class Interpreter:
         if self.tool_axis is not None:
             off[self.tool_axis] += self.tlo
         self.off = off
+        if self.rot[self.wcs] or self._u is not None:
+            self._update_rotation()
         if self.track:
             deps = []
             for i in range(self.naxes):
@@ -351,6 +355,69 @@ class Interpreter:
                     d = _dadd(d, self.dep_tlo)
                 deps.append(d)
             self.dep_off = deps
+
+    # ------------------------------------------------------------------ XY rotation (G10 L2 R)
+    _u: list[Fraction] | None = None  # pre-rotation XY (program mm + G92) while a rotation is active
+    _u_next: list[Fraction] | None = None  # the pre-rotation XY of the target being emitted
+    _rot_key: tuple | None = None
+    _cs: tuple[float, float] = (1.0, 0.0)
+
+    def _update_rotation(self) -> None:
+        """Follow a change of offsets or rotation: the machine stays, the pre-rotation position is recomputed.
+
+        LinuxCNC keeps the machine where it is and re-derives the program
+        position by the inverse rotation (in doubles) when the active
+        coordinate system, its offset or its rotation changes.
+        """
+        r = self.rot[self.wcs]
+        if r == 0:
+            self._u = None
+            self._rot_key = None
+            return
+        ix, iy = self._ix, self._iy
+        if ix is None or iy is None:
+            self._unknown("G10 R", f"coordinate system rotation R{_fmt(r)} needs X and Y axes; this machine has "
+                          f"{', '.join(self.axes)}")
+            return
+        if self.track:
+            self._unknown("G10 R", "parameter ranges are not supported with a rotated coordinate system "
+                          "(the position is not a sum of offsets)")
+        if self.tool_axis in (ix, iy) and self.tlo:
+            self._unknown("G10 R", "a tool length offset on X or Y with a rotated coordinate system is not modelled")
+        g5 = self.g5x[self.wcs]
+        key = (self.wcs, r, g5[ix], g5[iy])
+        if key != self._rot_key:
+            self._rot_key = key
+            t = float(r) * math.pi / 180.0  # LinuxCNC D2R
+            self._cs = (math.cos(t), math.sin(t))
+            self._u = list(self._rot_inv(self.pos[ix], self.pos[iy]))
+
+    def _rot_fwd(self, ux: Fraction, uy: Fraction) -> tuple[Fraction, Fraction]:
+        """Machine XY of a pre-rotation point (LinuxCNC ``rotate_and_offset_pos``, in doubles, taken exactly)."""
+        c, s = self._cs
+        x, y = float(ux), float(uy)
+        g5 = self.g5x[self.wcs]
+        return Fraction((x * c - y * s) + float(g5[self._ix])), Fraction((x * s + y * c) + float(g5[self._iy]))
+
+    def _rot_inv(self, mx: Fraction, my: Fraction) -> tuple[Fraction, Fraction]:
+        """Pre-rotation XY (program + G92, mm) of a machine XY: rotation by -R in doubles, taken exactly."""
+        c, s = self._cs
+        g5 = self.g5x[self.wcs]
+        x, y = float(mx - g5[self._ix]), float(my - g5[self._iy])
+        return Fraction(x * c + y * s), Fraction(y * c - x * s)
+
+    def _machine_xy(self, end: list[Fraction]) -> None:
+        """Under rotation, a target given in machine coordinates (G53, G28 home) as LinuxCNC moves there.
+
+        The interpreter turns it into program coordinates (inverse rotation)
+        and the canon layer rotates them back, both in doubles.
+        """
+        if self._u is None:
+            return
+        ix, iy = self._ix, self._iy
+        u = list(self._rot_inv(end[ix], end[iy]))
+        end[ix], end[iy] = self._rot_fwd(u[0], u[1])
+        self._u_next = u
 
     def _error(self, code: str, message: str, word: Word | None = None) -> GcodeError:
         span = word.span if word is not None else self._span
@@ -431,6 +498,12 @@ class Interpreter:
             self.segment_count += 1
             self.kind_counts[kind] += 1
         self.pos = list(endt)
+        if self._u is not None:
+            if self._u_next is not None:
+                self._u = self._u_next
+            elif endt[self._ix] != start[self._ix] or endt[self._iy] != start[self._iy]:
+                self._u = list(self._rot_inv(endt[self._ix], endt[self._iy]))
+        self._u_next = None
         if end_deps is not None:
             self.dep_pos = end_deps
 
@@ -448,7 +521,10 @@ class Interpreter:
                 i = self.index.get(letter)
                 if i is None:
                     return _ZERO
-                v = self.pos[i] - self.off[i]
+                if self._u is not None and i in (self._ix, self._iy):
+                    v = self._u[0 if i == self._ix else 1] - self.g92[i]
+                else:
+                    v = self.pos[i] - self.off[i]
                 return v / INCH if (self.inch and not self.rotary[i]) else v
             return get
 
@@ -782,6 +858,20 @@ class Interpreter:
                     deps[i] = dict(self.dep_off[i])
             else:
                 end[i] = _qadd(end[i], v)
+        if self._u is not None:
+            if g53:
+                self._machine_xy(end)
+            else:
+                ix, iy = self._ix, self._iy
+                p = [self._u[0] - self.g92[ix], self._u[1] - self.g92[iy]]
+                for i, w in axis_words:
+                    if i == ix or i == iy:
+                        k = 0 if i == ix else 1
+                        v = w.value * INCH if self.inch else w.value
+                        p[k] = v if absolute else p[k] + v
+                u = [p[0] + self.g92[ix], p[1] + self.g92[iy]]
+                end[ix], end[iy] = self._rot_fwd(u[0], u[1])
+                self._u_next = u
         return end, deps
 
     def _motion_block(self, block, axis_words, words, g1, g53: bool) -> None:
@@ -806,6 +896,8 @@ class Interpreter:
                 self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         elif motion in (20, 30):
             self._arc(block, axis_words, words, motion == 20, g53)
+        elif self._u is not None and not self.unsupported:
+            self._unknown(_gname(motion), f"{_gname(motion)} in a rotated coordinate system (G10 L2 R) is not modelled")
         elif motion in _CYCLES:
             self._cycle(motion, axis_words, words)
         elif motion in SPLINE_CODES:
@@ -844,8 +936,19 @@ class Interpreter:
             turns = int(pw.value) - 1
         self._note_assumed(("units", "distance", "offset", "plane"))
         end, deps = self._program_target(axis_words, False)
-        sa, sb = self.pos[ia], self.pos[ib]
-        ea, eb = end[ia], end[ib]
+        rotated = self._u is not None
+        if rotated:
+            if plane is not Plane.XY:
+                self._unknown(f"G{int(plane)} arc", f"an arc in plane G{int(plane)} of a rotated coordinate system "
+                              "(G10 L2 R) lies in a plane that is no machine plane; not modelled")
+                return
+            # the arc in the pre-rotation frame (program + G92); end and centre rotated as LinuxCNC does
+            (sa, sb), (ea, eb) = self._u, self._u_next
+            off_a, off_b = self.g92[ia], self.g92[ib]
+        else:
+            sa, sb = self.pos[ia], self.pos[ib]
+            ea, eb = end[ia], end[ib]
+            off_a, off_b = self.off[ia], self.off[ib]
         tol = self.arc_tolerance
         if rw is not None:
             r = self._len(rw.value)
@@ -864,9 +967,16 @@ class Interpreter:
                         f"{_fmt(Fraction(h2))}**0.5 mm; tolerance {_fmt(tol)} mm)",
                         rw,
                     )
+            if rotated and (h2 * (1 - _TINY) ** -2 < r2 and h2 < r2):
+                # the rotated ends (doubles) may be a rounding error farther apart than 2|R|
+                mh2 = ((end[ia] - self.pos[ia]) ** 2 + (end[ib] - self.pos[ib]) ** 2) / 4
+                if mh2 >= r2:
+                    h2 = r2
             if h2 * (1 - _TINY) ** -2 >= r2 or h2 >= r2:
                 # LinuxCNC takes the chord midpoint as the centre (a half circle)
                 centre = ((sa + ea) / 2, (sb + eb) / 2)
+                if rotated:
+                    centre = self._rot_fwd(*centre)
                 self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
                            turns=turns, end_deps=deps)
             else:
@@ -877,8 +987,8 @@ class Interpreter:
         iv = self._len(iw.value) if iw is not None else _ZERO
         jv = self._len(jw.value) if jw is not None else _ZERO
         if self.arc_absolute:
-            ca = (iv + self.off[ia]) if iw is not None else self.off[ia]
-            cb = (jv + self.off[ib]) if jw is not None else self.off[ib]
+            ca = (iv + off_a) if iw is not None else off_a
+            cb = (jv + off_b) if jw is not None else off_b
         else:
             ca, cb = sa + iv, sb + jv
         r0 = (sa - ca) ** 2 + (sb - cb) ** 2
@@ -893,7 +1003,8 @@ class Interpreter:
                 f"end=({a_name}{_fmt(ea)},{b_name}{_fmt(eb)}) in machine mm); allowed difference is {_fmt(tol)} mm",
                 iw or jw,
             )
-        self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=(ca, cb),
+        centre = self._rot_fwd(ca, cb) if rotated else (ca, cb)
+        self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
                    turns=turns, end_deps=deps)
 
     # ------------------------------------------------------------------ G28/G30, G10, G92, G52
@@ -909,6 +1020,7 @@ class Interpreter:
             end[i] = home[i]
             if hdeps is not None:
                 hdeps[i] = {}
+        self._machine_xy(end)
         self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} home", end_deps=hdeps)
 
     def _g10(self, words, axis_words, w: Word) -> None:
@@ -926,13 +1038,22 @@ class Interpreter:
                 raise self._error("GC209", f"G10 L{L} {pw.text}: P must be an integer 0 (active) to 9 (G59.3)", pw)
             name = self.wcs if P == 0 else WORK_OFFSETS[int(P) - 1]
             rw = words.get("R")
-            if rw is not None and rw.value != 0:
-                self._unknown("G10 R", "coordinate system rotation (G10 L2 R) is not modelled", rw)
-                return
             reg = self.g5x[name]
             dreg = self.dep_g5x[name]
+            if rw is not None and L == 20 and rw.value != self.rot[name]:
+                self._unknown("G10 L20 R", "G10 L20 with an R word that changes the rotation is not modelled "
+                              "(use G10 L2 R)", rw)
+                return
+            if rw is not None:
+                self.rot[name] = rw.value
+            ix, iy = self._ix, self._iy
+            rot20 = L == 20 and self.rot[name] != 0 and any(i in (ix, iy) for i, _ in axis_words)
+            if rot20:
+                self._g10_l20_rotated(name, axis_words)
             for i, aw in axis_words:
                 v = self._mm(aw.value, i)
+                if rot20 and i in (ix, iy):
+                    continue
                 if L == 2:
                     reg[i] = v
                     dreg[i] = {}
@@ -947,6 +1068,28 @@ class Interpreter:
             self._recompute_offsets()
         else:
             self._g10_tool(int(L), P, pw, axis_words)
+
+    def _g10_l20_rotated(self, name: str, axis_words) -> None:
+        """G10 L20 on X/Y of a rotated system: the offset that makes the current position read the values.
+
+        Axes without a word keep their current program value in that system;
+        ``offset = machine - rotate(program + G92)`` in doubles (LinuxCNC),
+        taken exactly; both X and Y offsets change.
+        """
+        ix, iy = self._ix, self._iy
+        reg = self.g5x[name]
+        t = float(self.rot[name]) * math.pi / 180.0
+        c, s = math.cos(t), math.sin(t)
+        x, y = float(self.pos[ix] - reg[ix]), float(self.pos[iy] - reg[iy])
+        u = [Fraction(x * c + y * s), Fraction(y * c - x * s)]
+        for i, aw in axis_words:
+            if i in (ix, iy):
+                u[0 if i == ix else 1] = self._mm(aw.value, i) + self.g92[i]
+        ux, uy = float(u[0]), float(u[1])
+        reg[ix] = Fraction(float(self.pos[ix]) - (ux * c - uy * s))
+        reg[iy] = Fraction(float(self.pos[iy]) - (ux * s + uy * c))
+        self.dep_g5x[name][ix] = {}
+        self.dep_g5x[name][iy] = {}
 
     def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words) -> None:
         """G10 L1/L10/L11: write the tool table entry of tool P (LinuxCNC ``convert_setup_tool``).
@@ -986,6 +1129,9 @@ class Interpreter:
             raise self._error("GC208", "G92 needs at least one axis word", w)
         for i, aw in axis_words:
             v = self._mm(aw.value, i)
+            if self._u is not None and i in (self._ix, self._iy):
+                self.g92[i] = self._u[0 if i == self._ix else 1] - v
+                continue
             tl = self.tlo if i == self.tool_axis else _ZERO
             self.g92[i] = self.pos[i] - self.g5x[self.wcs][i] - tl - v
             if self.track:
@@ -1144,10 +1290,10 @@ def _sqrt_diff_exceeds(a: Fraction, b: Fraction, t: Fraction) -> bool:
 
 
 def _fmt_sqrt(q: Fraction) -> str:
-    from ..exact import format_decimal
-
     # an exact enclosure would be overkill for a message; 6 decimals by integer sqrt
     import math
+
+    from ..exact import format_decimal
 
     scaled = q * 10**12
     root = math.isqrt(int(scaled))
