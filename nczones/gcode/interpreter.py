@@ -103,8 +103,6 @@ _UNSUPPORTED_G = {
     420: "cutter radius compensation (G42) offsets the path by the tool radius; nczones does not model it",
     411: "dynamic cutter radius compensation (G41.1) is not modelled",
     421: "dynamic cutter radius compensation (G42.1) is not modelled",
-    330: "spindle-synchronized motion (G33) is not modelled",
-    331: "rigid tapping (G33.1) is not modelled",
     760: "threading cycle (G76) is not modelled",
     382: "probing (G38.2) stops at a position that depends on the part",
     383: "probing (G38.3) stops at a position that depends on the part",
@@ -759,7 +757,7 @@ class Interpreter:
                 self.motion = None
             else:
                 self.motion = k
-        if ("I" in words or "J" in words or "K" in words) and self.motion not in (20, 30) and not self.unsupported \
+        if ("I" in words or "J" in words or "K" in words) and self.motion not in (20, 30, 330, 331) and not self.unsupported \
                 and not (g0 and g0[0] == 100) and not (self.motion in (50, 51) and "K" not in words) \
                 and not (self.motion == 62 and "I" not in words and "J" not in words):
             w = words.get("I") or words.get("J") or words.get("K")
@@ -896,6 +894,8 @@ class Interpreter:
                 self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         elif motion in (20, 30):
             self._arc(block, axis_words, words, motion == 20, g53)
+        elif motion in (330, 331):
+            self._spindle_synced(motion, axis_words, words, g53)
         elif self._u is not None and not self.unsupported:
             self._unknown(_gname(motion), f"{_gname(motion)} in a rotated coordinate system (G10 L2 R) is not modelled")
         elif motion in _CYCLES:
@@ -904,6 +904,39 @@ class Interpreter:
             spline_block(self, motion, axis_words, words, g1)
         else:
             raise InternalError(f"motion mode {motion}")
+
+    def _spindle_synced(self, motion: int, axis_words, words, g53: bool) -> None:
+        """G33 (threading) and G33.1 (rigid tapping): the geometry of LinuxCNC's spindle-synchronized moves.
+
+        G33 is a straight line to the end point (K = pitch, the speed follows
+        the spindle).  G33.1 feeds along the straight line to the end point,
+        then back to the start (LinuxCNC ``RIGID_TAP``; the interpreter's
+        position stays at the start).  The feed is spindle speed x pitch, not
+        F: ``feed_mm_min`` is None.
+        """
+        name = _gname(motion)
+        if g53:
+            raise self._error("GC207", f"G53 cannot be used with {name}")
+        kw = words.get("K")
+        if kw is None:
+            raise self._error("GC208", f"{name} needs a K word (the pitch, distance per spindle revolution)")
+        if kw.value <= 0:
+            raise self._error("GC209", f"{name} pitch {kw.text} must be greater than 0", kw)
+        if self.comp_on:
+            raise self._error("GC204", f"{name} cannot be used with cutter compensation on")
+        if not axis_words:
+            return
+        self._note_assumed(("units", "distance", "offset"))
+        start = list(self.pos)
+        u0 = list(self._u) if self._u is not None else None
+        end, deps = self._program_target(axis_words, False)
+        if motion == 330:
+            self._emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
+            return
+        sdeps = [dict(d) for d in self.dep_pos] if self.track else None
+        self._emit(SegmentKind.LINE, end, derived="G33.1 tap", end_deps=deps)
+        self._u_next = u0
+        self._emit(SegmentKind.LINE, start, derived="G33.1 retract", end_deps=sdeps)
 
     def _check_feed(self) -> None:
         if self.feed_mode == 94 and self.feed == 0:

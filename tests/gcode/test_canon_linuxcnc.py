@@ -45,7 +45,6 @@ pytestmark = pytest.mark.skipif(not TSV.is_file(), reason="corpus not available"
 #: Directories not compared, with the reason.
 SKIPPED = {
     "tests/interp/g76": "G76 threading cycle (unsupported, unknown before any motion that matters)",
-    "tests/interp/g33.1": "G33.1 rigid tapping (unsupported)",
     "tests/interp/machine-coord-params": "compares MESSAGE lines only (no motion in the log)",
     "tests/interp/rotation/abs-pts": "compares MESSAGE lines only, with rotation",
     "tests/interp/g71-endless-loop": "the test only checks termination; no expected motion",
@@ -169,6 +168,12 @@ def _log_motion(expected: Path):
                 if rotation:
                     pt[0], pt[1] = place(v[0], v[1], off)
                 pt = tuple(pt)
+                if name == "RIGID_TAP":  # X Y Z only: tap to the point, back to the start (our two LINEs)
+                    prev = moves[-1][1] if moves else tuple([Fraction(0)] * 6)
+                    pt = pt[:3] + prev[3:]
+                    moves.append(("LINE", pt, (unit, rotation)))
+                    moves.append(("LINE", prev, (unit, rotation)))
+                    continue
                 kind = {"STRAIGHT_TRAVERSE": "RAPID", "STRAIGHT_FEED": "LINE"}.get(name, name)
                 moves.append((kind, pt, (unit, rotation)))
     return moves

@@ -1,0 +1,64 @@
+"""G33 threading, G33.1 rigid tapping: geometry of LinuxCNC's spindle-synchronized moves."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+
+from nczones.errors import GcodeError
+from nczones.gcode import segments
+from nczones.machine import parse_machine
+from nczones.motion import SegmentKind
+
+F = Fraction
+MILL = parse_machine(
+    """
+[machine]
+axes = ["X", "Y", "Z"]
+pulse = "0.001"
+[machine.rapid]
+X = "1000"
+Y = "1000"
+Z = "1000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[offsets]
+G54 = { X = "100", Y = "0", Z = "50" }
+"""
+)
+
+
+def test_g33_is_a_straight_line_to_the_end_point_with_k_as_pitch():
+    segs = segments("G20 G0 X1 Z0.1\nS100 M3\nG33 Z-2 K0.025\nG33 X1.1 Z-2.5 K0.05\nG0 X1.25\n", MILL)
+    assert [(s.kind, s.end) for s in segs[1:3]] == [
+        (SegmentKind.LINE, (F(100) + F("25.4"), F(0), F(50) - F("50.8"))),
+        (SegmentKind.LINE, (F(100) + F("27.94"), F(0), F(50) - F("63.5"))),
+    ]
+    assert segs[1].feed_mm_min is None and segs[1].derived == "G33 thread"
+
+
+def test_g33_1_taps_to_the_end_and_returns_to_the_start():
+    segs = segments("G0 X0 Y0 Z1\nS1000 M3\nG33.1 Z-1.2 K0.1\nG0 X5\n", MILL)
+    start = (F(100), F(0), F(51))
+    assert [(s.kind, s.start, s.end) for s in segs[1:3]] == [
+        (SegmentKind.LINE, start, (F(100), F(0), F(50) - F("1.2"))),
+        (SegmentKind.LINE, (F(100), F(0), F(50) - F("1.2")), start),
+    ]
+    assert segs[3].start == start and segs[3].end == (F(105), F(0), F(51))
+
+
+def test_g91_g33_1_is_relative_to_the_start():
+    segs = segments("G0 X0 Y0 Z1\nG91 G33.1 Z-2 K1\nG33.1 Z-3 K1\n", MILL)
+    assert [s.end[2] for s in segs[1:]] == [F(49), F(51), F(48), F(51)]
+
+
+def test_g33_without_k_or_with_bad_k_is_an_error():
+    with pytest.raises(GcodeError) as e:
+        segments("G0 Z1\nG33 Z-1\n", MILL)
+    assert e.value.diagnostics[0].code == "GC208"
+    with pytest.raises(GcodeError) as e:
+        segments("G0 Z1\nG33.1 Z-1 K-1\n", MILL)
+    assert e.value.diagnostics[0].code == "GC209"
