@@ -53,3 +53,42 @@ def test_boundary_values_lists_every_edge_of_the_table():
     table = machine.zones[0]
     xs = boundary_values(machine, "X")
     assert set(xs) == {table.start, *table.uptos}
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(st.data())
+def test_every_zone_kind_and_three_axes_give_programs_the_interpreter_models(data):
+    from nczones.gcode import interpret
+
+    machine = data.draw(machines(axes=("X", "Y", "Z"), allow_kinds=("stepped", "box", "polygon"), size=100,
+                                 pulse="0.01"))
+    assert machine.allowed.contains(machine.point(machine.start))
+    assert sorted(machine.tool_lengths) == [1, 2]
+    text = data.draw(programs(machine, max_blocks=8, subprograms=True, inside_bias=0.5))
+    run = interpret(text, machine, fast=False)
+    segs = list(run.segments())
+    assert not run.unsupported
+    assert segs and segs[0].start == machine.start
+    for s in segs:  # tool length follows G43/G49 as written
+        assert s.tool_length in (0, *machine.tool_lengths.values())
+
+
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(st.data())
+def test_polygons_are_simple_with_their_centre_inside(data):
+    from nczones.machine import _polygon_problem
+    from nczones.testing import polygon_centre, polygons
+
+    p = data.draw(polygons(min_vertices=3, max_vertices=8, places=2))
+    assert _polygon_problem(list(p.vertices)) is None
+    assert p.interior_contains(dict(zip(p.plane, polygon_centre(p))))
+
+
+def test_mix_weights_choose_the_block_kinds():
+    from hypothesis import find
+
+    machine = find(machines(allow_kinds=("box",)), lambda m: True)
+    text = find(programs(machine, min_blocks=6, mix={"line": 0, "rapid": 0, "arc": 1}, incremental=False,
+                         offsets=False), lambda t: True)
+    body = [ln for ln in text.splitlines()[2:] if ln.startswith("G")]
+    assert body and all(ln.split()[0] in ("G2", "G3") for ln in body)
