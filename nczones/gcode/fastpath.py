@@ -242,7 +242,8 @@ def _truncate_at_percent_slow(text: str) -> str:
 
 def _state_ok(it) -> bool:
     return (not it.unsupported and it.motion in (None, 0, 10, 20, 30) and not it.comp_just_off
-            and not it.comp_on and not it.track and it._u is None)  # no XY rotation (G10 L2 R) active
+            and not it.comp_on and not it.track and it._u is None  # no XY rotation (G10 L2 R) active
+            and it._machine_at is None)  # the machine is where the interpreter believes (G84 outside G17)
 
 
 def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):

@@ -355,6 +355,7 @@ class Interpreter:
             self.dep_off = deps
 
     # ------------------------------------------------------------------ XY rotation (G10 L2 R)
+    _machine_at: tuple[Fraction, ...] | None = None  # where the machine really is, if not at self.pos
     _u: list[Fraction] | None = None  # pre-rotation XY (program mm + G92) while a rotation is active
     _u_next: list[Fraction] | None = None  # the pre-rotation XY of the target being emitted
     _rot_key: tuple | None = None
@@ -480,6 +481,9 @@ class Interpreter:
               plane=None, clockwise=False, centre=None, radius=None, turns=0, dwell=None,
               end_deps: list[dict] | None = None) -> None:
         start = tuple(self.pos)
+        if self._machine_at is not None:  # after LinuxCNC's G84 outside G17 the machine is not where the interpreter thinks
+            start = self._machine_at
+            self._machine_at = None
         endt = tuple(end)
         fmm = None
         if feed and self.feed_mode == 94:
@@ -1197,9 +1201,9 @@ class Interpreter:
         if self.feed_mode == 93:
             raise self._error("GC204", "canned cycles cannot be used with inverse time feed (G93)")
         self._check_feed()
-        if motion == 840 and plane is not Plane.XY:
-            self._unknown("G84", "LinuxCNC's G84 outside the XY plane feeds along the wrong axis; the real path is not modelled")
-            return
+        swapped = motion == 840 and plane is not Plane.XY
+        if swapped and self.track:
+            self._unknown("G84", "parameter ranges are not supported with G84 outside G17")
         first = self._last_cycle != motion
         rw = words.get("R")
         if rw is None:
@@ -1299,6 +1303,9 @@ class Interpreter:
                         go(SegmentKind.RAPID, aa, bb, clear, f"{name} clear")
                     go(SegmentKind.RAPID, aa, bb, depth + G83_RAPID_DELTA_MM, f"{name} back off")
                     depth -= delta
+            if swapped:
+                self._g84_swapped(plane, ia, ib, ic, aa, bb, cc, clear, dwell)
+                continue
             go(SegmentKind.LINE, aa, bb, cc, f"{name} feed")
             if dwell is not None:
                 self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
@@ -1311,6 +1318,37 @@ class Interpreter:
         self._last_cycle = motion
 
     _last_cycle: int | None = None
+
+    def _g84_swapped(self, plane, ia, ib, ic, aa, bb, cc, clear, dwell) -> None:
+        """G84's two feeds in G18/G19 as LinuxCNC really sends them (its canon logs ``tests/interp/g84``).
+
+        LinuxCNC's G84 outside G17 feeds with the axis order of the *other*
+        vertical plane: in G18 (a=Z, b=X, c=Y) to ``X=c, Y=a, Z=b``; in G19
+        (a=Y, b=Z, c=X) to ``X=b, Y=c, Z=a`` (program values; each axis then
+        gets its own offset).  Its interpreter believes the tool is at
+        ``(a, b, clear)``: the next move is computed from there but starts
+        where the machine is.
+        """
+        prog = {ia: aa - self.off[ia], ib: bb - self.off[ib]}
+        ix, iy, iz = self.index["X"], self.index["Y"], self.index["Z"]
+
+        def point(c_mm):
+            a, b, c = prog[ia], prog[ib], c_mm - self.off[ic]
+            x, y, z = (c, a, b) if plane is Plane.XZ else (b, c, a)
+            end = list(self.pos)
+            end[ix], end[iy], end[iz] = x + self.off[ix], y + self.off[iy], z + self.off[iz]
+            return end
+
+        self._emit(SegmentKind.LINE, point(cc), feed=True, derived="G84 feed (LinuxCNC axis order outside G17)")
+        if dwell is not None:
+            self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived="G84 dwell")
+        self._emit(SegmentKind.LINE, point(clear), feed=True, derived="G84 retract (LinuxCNC axis order outside G17)")
+        actual = tuple(self.pos)
+        believed = list(self.pos)
+        believed[ia], believed[ib], believed[ic] = aa, bb, clear
+        self.pos = believed
+        if tuple(believed) != actual:
+            self._machine_at = actual
 
 
 def _sqrt_diff_exceeds(a: Fraction, b: Fraction, t: Fraction) -> bool:

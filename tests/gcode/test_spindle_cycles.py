@@ -62,3 +62,27 @@ def test_g33_without_k_or_with_bad_k_is_an_error():
     with pytest.raises(GcodeError) as e:
         segments("G0 Z1\nG33.1 Z-1 K-1\n", MILL)
     assert e.value.diagnostics[0].code == "GC209"
+
+
+def test_g84_in_g18_and_g19_moves_as_linuxcnc_really_does():
+    # LinuxCNC's G84 outside G17 feeds with the other vertical plane's axis order (its canon logs
+    # tests/interp/g84/g18, g19); the next move starts where the machine is, aimed from where
+    # the interpreter believes it is.
+    text = "G18 G98 G0 X0 Y2 Z0\nG84 X1 Z1 Y-1 R1 F10\nG0 X5\n"
+    segs = [s for s in segments(text, MILL) if s.kind is not SegmentKind.DWELL]
+    ends = [(s.kind, s.end) for s in segs]
+    assert ends == [
+        (SegmentKind.RAPID, (F(100), F(2), F(50))),
+        (SegmentKind.RAPID, (F(101), F(2), F(51))),  # position: X=1 Z=1 at the initial level Y=2
+        (SegmentKind.RAPID, (F(101), F(1), F(51))),  # to R
+        (SegmentKind.LINE, (F(100) - 1, F(1), F(51))),  # X <- bottom Y-1, Y <- Z1, Z <- X1
+        (SegmentKind.LINE, (F(102), F(1), F(51))),  # X <- clear Y2
+        (SegmentKind.RAPID, (F(105), F(2), F(51))),  # from the believed (1, 2, 1) in program terms
+    ]
+    assert segs[-1].start == (F(102), F(1), F(51))
+    assert all(a.end == b.start for a, b in zip(segs, segs[1:]))  # the path stays continuous
+
+    segs = [s for s in segments("G19 G99 G0 X2 Y0 Z0\nG84 Y1 Z2 X0.5 R3 F10\n", MILL)
+            if s.kind is SegmentKind.LINE]
+    # G19: X <- Z value, Y <- the X-direction depth, Z <- Y value
+    assert [s.end for s in segs] == [(F(102), F("0.5"), F(51)), (F(102), F(3), F(51))]
