@@ -518,8 +518,19 @@ class Interpreter:
         ``#<_metric>``, ``#<_imperial>``, ``#<_absolute>``, ``#<_incremental>``.
         """
 
+        self._scopes = getattr(params, "_scopes", None)
+
+        def sync(get):
+            def synced():
+                if self._m73:
+                    self._m73_returns()
+                return get()
+            return synced
+
         def prog(letter: str):
             def get():
+                if self._m73:
+                    self._m73_returns()
                 i = self.index.get(letter)
                 if i is None:
                     return _ZERO
@@ -535,10 +546,10 @@ class Interpreter:
             params.provide("_" + letter.lower(), prog(letter))
         params.provide(5400, lambda: self.tool_in_spindle)
         params.provide("_current_tool", lambda: self.tool_in_spindle)
-        params.provide("_metric", lambda: 0 if self.inch else 1)
-        params.provide("_imperial", lambda: 1 if self.inch else 0)
-        params.provide("_absolute", lambda: 1 if self.absolute else 0)
-        params.provide("_incremental", lambda: 0 if self.absolute else 1)
+        params.provide("_metric", sync(lambda: 0 if self.inch else 1))
+        params.provide("_imperial", sync(lambda: 1 if self.inch else 0))
+        params.provide("_absolute", sync(lambda: 1 if self.absolute else 0))
+        params.provide("_incremental", sync(lambda: 0 if self.absolute else 1))
 
     # ------------------------------------------------------------------ driver
     def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
@@ -568,6 +579,8 @@ class Interpreter:
     # ------------------------------------------------------------------ one block
     def execute(self, block: Block) -> None:
         """Execute one block (LinuxCNC order of execution)."""
+        if self._m73:
+            self._m73_returns()
         gcodes: list[tuple[int, Word]] = []
         mcodes: list[tuple[int, Word]] = []
         words: dict[str, Word] = {}
@@ -648,11 +661,19 @@ class Interpreter:
                     self.comp_on = True
         for k, w in mcodes:
             if k == 73:
-                self._unknown("M73", "M73 restores the modal state when the subroutine returns; the language layer does not report returns", w)
+                if self._scopes is None or len(self._scopes) <= 1:
+                    self._unknown("M73", "M73 outside an o-word subroutine (main program or M98 subprogram): "
+                                  "its restore on return is not modelled", w)
             elif k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99):
                 self._unknown(f"M{k}", f"M{k} is not a code nczones models (user M codes may run anything)", w)
         if 70 in {k for k, _ in mcodes}:
             self._saved_modal = self._modal_snapshot()
+        if 73 in {k for k, _ in mcodes} and self._scopes is not None and len(self._scopes) > 1:
+            # LinuxCNC M73: save like M70 in this call frame, restore automatically on its return/endsub
+            self._saved_modal = self._modal_snapshot()
+            scope = self._scopes[-1]
+            self._m73 = [e for e in self._m73 if e[1] is not scope]
+            self._m73.append((len(self._scopes), scope, self._saved_modal))
         # ---- order of execution
         # 2-3: feed mode, F
         if 5 in groups:
@@ -785,6 +806,9 @@ class Interpreter:
             self._restore_modal(self._saved_modal)
         if 71 in mset:
             self._saved_modal = None
+            if self._m73 and self._scopes is not None:
+                scope = self._scopes[-1]
+                self._m73 = [e for e in self._m73 if e[1] is not scope]
         # 21: stop
         if 2 in mset or 30 in mset:
             raise _Stop
@@ -793,6 +817,24 @@ class Interpreter:
     _saved_modal: tuple | None = None
     _cycle_il: Fraction | None = None
     _spline = None  # an unfinished G5.2/G6.2 curve (nczones.gcode.splines)
+
+    _m73: list = []  # (scope depth, scope object, snapshot) of M73s whose subroutine has not returned
+    _scopes: list | None = None  # the language layer's local scopes (one per o-word call)
+
+    def _m73_returns(self) -> None:
+        """Restore the state M73 saved in every subroutine that has returned since (innermost first).
+
+        A subroutine call is alive while its local-scope object is still on
+        the language layer's scope stack; checked before every block and every
+        state parameter read, so nothing observes the state in between.
+        """
+        scopes = self._scopes
+        while self._m73:
+            depth, scope, snap = self._m73[-1]
+            if len(scopes) >= depth and scopes[depth - 1] is scope:
+                break
+            self._m73.pop()
+            self._restore_modal(snap)
 
     def _modal_snapshot(self) -> tuple:
         return (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,

@@ -86,3 +86,41 @@ def test_g84_in_g18_and_g19_moves_as_linuxcnc_really_does():
             if s.kind is SegmentKind.LINE]
     # G19: X <- Z value, Y <- the X-direction depth, Z <- Y value
     assert [s.end for s in segs] == [(F(102), F("0.5"), F(51)), (F(102), F(3), F(51))]
+
+
+M73_SUB = """o100 sub
+  M73
+  G90 G20
+  G0 X1
+o100 endsub
+o200 sub
+  M73
+  G90
+  o201 if [#1 EQ 1]
+    M71
+  o201 endif
+o200 endsub
+"""
+
+
+def test_m73_restores_the_modal_state_when_the_subroutine_returns():
+    text = M73_SUB + "G53 G0 X0 Y0 Z0\nG21 G91\no100 call\nG0 X1\no100 call\no100 call\nG0 X[#<_incremental> * 7]\n"
+    xs = [s.end[0] for s in segments(text, MILL)]
+    # in the sub: G90 G20 X1 = machine 100 + 25.4; after the return: G21 G91 again (+1 mm, then +7 mm);
+    # two calls in a row (no block in between) restore each time
+    assert xs == [F(0), F(100) + F("25.4"), F(100) + F("26.4"), F(100) + F("25.4"), F(100) + F("25.4"),
+                  F(100) + F("32.4")]
+
+
+def test_m71_cancels_the_m73_restore_of_its_frame():
+    text = M73_SUB + "G53 G0 X0 Y0 Z0\nG91\no200 call [0]\nG0 X1\no200 call [1]\nG0 X1\n"
+    xs = [s.end[0] for s in segments(text, MILL)]
+    assert xs == [F(0), F(1), F(101)]  # restored to G91 after the first call, still G90 after the second
+
+
+def test_m73_in_the_main_program_is_unknown():
+    from nczones.gcode import interpret
+
+    run = interpret("M73\nG0 X1\n", MILL)
+    list(run.segments())
+    assert run.status == "unknown" and run.unsupported[0].code == "M73"
