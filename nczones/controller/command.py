@@ -128,7 +128,9 @@ def _run(args: argparse.Namespace) -> int:
             break
     notes: list[str] = []
     if result is None:
-        run = interpret(args.program, machine)
+        from ..prover.command import _arc_tolerance
+
+        run = interpret(args.program, machine, arc_tolerance=_arc_tolerance(args.arc_tolerance))
         from ..report.progress import progress_for
 
         bar = progress_for(sys.stderr, "simulate")
@@ -173,6 +175,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--accdec-after-ms", default="0", metavar="MS",
                    help="filter time constant on every axis after interpolation (servo log)")
     p.add_argument("--filter", choices=("exponential", "linear"), default="exponential")
+    p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc", help='largest mismatch (mm) of an arc end point with its circle (default 0.002), or "linuxcnc" for LinuxCNC\'s own acceptance rule')
     p.add_argument("--events", action="store_true", help="include the event log in the JSON output")
     p.add_argument("--break-at", metavar="LINE[:FRACTION]", default=None,
                    help="break the tool in the first cutting motion of LINE after FRACTION of it (default 0) "

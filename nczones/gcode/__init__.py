@@ -206,8 +206,12 @@ def interpret(
     track_dependencies : bool
         Fill ``Segment.deps_start/deps_end`` for parameter ranges (disables
         the fast path).
-    arc_tolerance : Fraction or decimal str
-        Largest allowed mismatch (mm) of an arc's end point with its circle.
+    arc_tolerance : Fraction, decimal str, or "linuxcnc"
+        Largest allowed mismatch (mm) of an arc's end point with its circle
+        (default 0.002 mm).  ``"linuxcnc"`` accepts exactly the I/J/K arcs
+        LinuxCNC accepts (0.028 mm, or up to 2.8 mm within 0.1 %) and R arcs
+        short by at most 0.00127 mm; an accepted arc whose end is off its
+        circle is modelled as the spiral the machine moves.
     fast : bool
         Use the vectorized fast path for CAM-style runs of lines (identical
         segments; see :mod:`nczones.gcode.fastpath`).
@@ -221,8 +225,8 @@ def interpret(
     from ..exact import exact
 
     text, name = _read_source(source, file)
-    tol = exact(arc_tolerance)
-    if tol < 0:
+    tol = "linuxcnc" if arc_tolerance == "linuxcnc" else exact(arc_tolerance)
+    if tol != "linuxcnc" and tol < 0:
         raise InvalidArgument(f"arc_tolerance must not be negative, got {arc_tolerance!r}")
     return Interpretation(text, machine, file=name, block_delete=block_delete,
                           track_dependencies=track_dependencies, arc_tolerance=tol, fast=fast,

@@ -673,8 +673,12 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         else:
             ca = start[arow, ia] + ia_col[0][arow]
             cb = start[arow, ib] + ib_col[0][arow]
-        if not _arcs_ok(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb,
-                        it.arc_tolerance, S):
+        # under LinuxCNC's rule the fast path takes only arcs within the default tolerance
+        # (LinuxCNC accepts all of those); the others go to the full interpreter
+        from .interpreter import DEFAULT_ARC_TOLERANCE
+
+        tol = it.arc_tolerance if getattr(it, "arc_rule", "fixed") == "fixed" else DEFAULT_ARC_TOLERANCE
+        if not _arcs_ok(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb, tol, S):
             return None
         centre = np.zeros((m, 2), dtype=np.int64)
         centre[arcs, 0] = ca

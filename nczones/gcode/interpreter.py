@@ -50,12 +50,15 @@ __all__ = [
     "Interpreter",
     "Unsupported",
     "DEFAULT_ARC_TOLERANCE",
+    "LINUXCNC_RADIUS_TOLERANCE",
     "MODAL_GROUP_NAMES",
 ]
 
 #: An arc whose end point lies farther than this (mm) from the circle through
 #: its start point around its centre is an error (GC301).
 DEFAULT_ARC_TOLERANCE = Fraction(2, 1000)
+#: LinuxCNC's RADIUS_TOLERANCE_MM (0.00005 in): how far an R arc may fall short (arc_tolerance="linuxcnc").
+LINUXCNC_RADIUS_TOLERANCE = Fraction(5, 100000) * Fraction(254, 10)
 
 INCH = Fraction(254, 10)
 _ZERO = Fraction(0)
@@ -272,7 +275,11 @@ class Interpreter:
         track_dependencies: bool = False,
         chunk_size: int = 4096,
     ):
-        if not isinstance(arc_tolerance, Fraction) or arc_tolerance < 0:
+        #: "linuxcnc": accept I/J/K arcs exactly when LinuxCNC does (see _linuxcnc_rejects_arc)
+        self.arc_rule = "linuxcnc" if arc_tolerance == "linuxcnc" else "fixed"
+        if self.arc_rule == "linuxcnc":
+            arc_tolerance = LINUXCNC_RADIUS_TOLERANCE
+        elif not isinstance(arc_tolerance, Fraction) or arc_tolerance < 0:
             from ..exact import exact
 
             arc_tolerance = exact(arc_tolerance)
@@ -1074,7 +1081,11 @@ class Interpreter:
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
         if r0 == 0 or r1 == 0:
             raise self._error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
-        if r0 != r1 and _sqrt_diff_exceeds(r0, r1, tol):
+        rejected = (_linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
+                    else r0 != r1 and _sqrt_diff_exceeds(r0, r1, tol))
+        if rejected:
+            if self.arc_rule == "linuxcnc":
+                tol = Fraction(28284, 1000000)  # for the message: 2 * 0.01 * sqrt(2) mm
             raise self._error(
                 "GC301",
                 f"arc end point is off its circle: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm "
@@ -1308,7 +1319,6 @@ class Interpreter:
         if r < cc:
             raise self._error("GC306", f"canned cycle retract plane R ({_fmt(r)} mm machine) is below the bottom {c_name} ({_fmt(cc)} mm machine)", rw or cw_)
         track = self.track
-        dep_c_abs = dict(self.dep_off[ic]) if track else None
 
         def go(kind, a, b, c, derived, dwell_s=None):
             end = list(self.pos)
@@ -1391,6 +1401,33 @@ class Interpreter:
         self.pos = believed
         if tuple(believed) != actual:
             self._machine_at = actual
+
+
+def _linuxcnc_rejects_arc(r0_sq: Fraction, r1_sq: Fraction, inch: bool) -> bool:
+    """LinuxCNC's acceptance rule for an I/J/K arc (interp_arc.cc ``arc_data_ijk``), in its doubles.
+
+    With ``A`` = CENTER_ARC_RADIUS_TOLERANCE (2 * 0.01 * sqrt 2 mm, or
+    2 * 0.001 * sqrt 2 in under G20) and the relative tolerance 0.001, the arc
+    is refused when ``|r1 - r0| > 100 A``, or when ``|r1 - r0| > A`` and
+    ``|r1 - r0| / max(r0, r1) > 0.001``.  This only decides acceptance, the
+    way the controller decides it; an accepted arc is modelled exactly as the
+    spiral from radius r0 to r1 that the machine moves.
+
+    >>> from fractions import Fraction as F
+    >>> _linuxcnc_rejects_arc(F(100), F("100.5"), False), _linuxcnc_rejects_arc(F(1), F(4), False)
+    (False, True)
+    """
+    from math import sqrt
+
+    from ..exact import to_float
+
+    r0, r1 = sqrt(to_float(r0_sq)), sqrt(to_float(r1_sq))
+    if inch:  # LinuxCNC compares in program units
+        r0, r1 = r0 / 25.4, r1 / 25.4
+    tol = 2 * (0.001 if inch else 0.01) * sqrt(2)
+    abs_err = abs(r1 - r0)
+    rel_err = abs_err / max(r0, r1)
+    return abs_err > 100 * tol or (abs_err > tol and rel_err > 0.001)
 
 
 def _sqrt_diff_exceeds(a: Fraction, b: Fraction, t: Fraction) -> bool:

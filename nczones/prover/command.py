@@ -33,7 +33,8 @@ def _run(args: argparse.Namespace) -> int:
     bar = progress_for(sys.stderr, "verify")
     try:
         result = verify(args.program, machine, margin=margin, params=params, engine=args.engine,
-                        max_violations=args.max_violations, progress=bar, recovery=args.recovery)
+                        max_violations=args.max_violations, progress=bar, recovery=args.recovery,
+                        arc_tolerance=_arc_tolerance(args.arc_tolerance))
     finally:
         if bar is not None:
             bar.close()
@@ -65,6 +66,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="also prove the automatic tool-break recovery of the machine's [tool_change] "
                         "from every break point, restarting at the sequence start or at the break point")
     p.add_argument("--engine", choices=("auto", "z3"), default="auto")
+    p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc", help='largest mismatch (mm) of an arc end point with its circle (default 0.002), or "linuxcnc" for LinuxCNC\'s own acceptance rule')
     p.add_argument("--max-violations", type=int, default=20, metavar="N")
     p.add_argument("--format", choices=("text", "json", "html", "sarif"), default="text",
                    help="text (compiler-style), json (specs/report.schema.json), html (one self-contained "
@@ -74,3 +76,17 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 cli.REGISTRARS.append(register)
+
+
+def _arc_tolerance(text: str):
+    """``--arc-tolerance``: "linuxcnc" or a non-negative decimal (mm)."""
+    if text == "linuxcnc":
+        return text
+    try:
+        q = parse_decimal(text)
+    except ValueError:  # InvalidArgument is a ValueError
+        q = None
+    if q is None or q < 0:
+        raise InputError(Diagnostic("VF104", f"--arc-tolerance {text!r}: expected a non-negative decimal number "
+                                             "of mm (e.g. 0.002) or 'linuxcnc'", file="<command line>"))
+    return q

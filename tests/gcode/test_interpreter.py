@@ -123,6 +123,22 @@ def test_arc_off_circle_is_an_error_with_span():
         segments("G0 X0 Y0\nF10 G2 X10 Y0 I5.001\n", XY, arc_tolerance="0.0001")
 
 
+def test_linuxcnc_arc_rule_accepts_what_linuxcnc_accepts():
+    # radius 5 at the start, 5.01 at the end: 0.01 mm off, inside LinuxCNC's 0.028 mm
+    program = "G0 X0 Y0\nF10 G2 X10 Y0 I5.01\n"
+    s = segments(program, XY, arc_tolerance="linuxcnc")[1]
+    assert s.kind is SegmentKind.ARC and s.end == (10, 0) and s.centre == (F("5.01"), 0)
+    # 0.1 mm off a radius of 5 mm: above 0.028 mm and above 0.1 %: LinuxCNC refuses it too
+    with pytest.raises(GcodeError) as e:
+        segments("G0 X0 Y0\nF10 G2 X10 Y0 I5.1\n", XY, arc_tolerance="linuxcnc")
+    assert e.value.diagnostics[0].code == "GC301"
+    # 1 mm off a radius of 2000 mm: above 0.028 mm but within 0.1 %: accepted, as LinuxCNC does
+    big = "G0 X0 Y0\nF10 G2 X4000 Y0 I2000.5\n"
+    assert segments(big, XY, arc_tolerance="linuxcnc")[1].centre == (F("2000.5"), 0)
+    with pytest.raises(GcodeError):
+        segments(big, XY)
+
+
 def test_axis_the_machine_lacks_is_an_error():
     with pytest.raises(GcodeError) as e:
         segments("G0 X1 Z5\n", XY)
