@@ -34,9 +34,8 @@ from nczones.gcode import interpret
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 
-CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
-if not CORPUS.is_dir():
-    CORPUS = Path("/work/shared/corpus")
+from tests.corpus import CORPUS
+
 TESTS = CORPUS / "linuxcnc" / "tests"
 TSV = CORPUS / "linuxcnc" / "INTERP_TESTS.tsv"
 

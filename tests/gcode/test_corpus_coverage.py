@@ -44,7 +44,8 @@ from nczones.errors import GcodeError
 from nczones.gcode import interpret
 from nczones.machine import parse_machine
 
-CORPUS = Path("/work/shared/corpus")
+from tests.corpus import CORPUS
+
 MANIFEST = CORPUS / "MANIFEST.tsv"
 pytestmark = [pytest.mark.corpus, pytest.mark.skipif(not MANIFEST.is_file(), reason="corpus not available")]
 

@@ -12,9 +12,8 @@ import pytest
 from nczones.errors import GcodeError
 from nczones.gcode.program import UnsupportedGcode, read_program
 
-CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
-if not CORPUS.is_dir():
-    CORPUS = Path("/work/shared/corpus")
+from tests.corpus import CORPUS
+
 pytestmark = [pytest.mark.corpus, pytest.mark.skipif(not CORPUS.is_dir(), reason="corpus folder missing")]
 LOCATION = re.compile(r"^.+:\d+:\d+: error\[GC\d{3}\]: ")
 

@@ -10,7 +10,6 @@ do not carry).  Programs over :data:`DIFF_MAX_LINES` lines run only under
 
 from __future__ import annotations
 
-from pathlib import Path
 
 import pytest
 
@@ -18,7 +17,8 @@ from nczones.errors import GcodeError
 from nczones.gcode import interpret
 from nczones.machine import parse_machine
 
-CORPUS = Path("/work/shared/corpus")
+from tests.corpus import CORPUS
+
 MANIFEST = CORPUS / "MANIFEST.tsv"
 pytestmark = [pytest.mark.corpus, pytest.mark.skipif(not MANIFEST.is_file(), reason="corpus not available")]
 DIFF_MAX_LINES = 1_500

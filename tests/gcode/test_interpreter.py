@@ -3,18 +3,18 @@
 from __future__ import annotations
 
 from fractions import Fraction
-from pathlib import Path
 
 import pytest
 from hypothesis import given, settings, strategies as st
 
 from nczones.errors import GcodeError
+from tests.corpus import CORPUS
 from nczones.gcode import interpret, segments
 from nczones.machine import parse_machine
 from nczones.motion import Plane, SegmentKind
 
 F = Fraction
-BAD = Path("/work/shared/corpus/linuxcnc/tests/interp/bad")
+BAD = CORPUS / "linuxcnc" / "tests" / "interp" / "bad"
 
 MILL = parse_machine(
     """
@@ -303,3 +303,22 @@ def test_incomplete_g6_2_curve_is_unknown_and_a_complete_one_is_a_spline():
     e = dict(segs[1].extra)
     assert e["degree"] == 2 and e["knots"] == (0, 0, 0, 1, 2, 2, 2) and e["weights"] == (1, 1, 2, 1)
     assert segs[1].end == segs[2].start and segs[1].end[:2] == (F(104), F(4))
+
+
+@pytest.mark.parametrize("kind", ["small", "medium", "big"])
+@pytest.mark.parametrize("units", ["metric", "imperial"])
+def test_linuxcnc_arc_rule_matches_linuxcncs_own_arc_tolerance_tests(kind, units):
+    """LinuxCNC's interp tests: good-arc.* must run, bad-arc.* must fail (README.arc-radius-tolerance)."""
+    from tests.gcode.test_canon_linuxcnc import _machine
+
+    interp = CORPUS / "linuxcnc" / "tests" / "interp"
+    if not interp.is_dir():
+        pytest.skip("../shared/corpus is not present")
+    good = interp / "good" / f"good-arc.{kind}.{units}.center-format.ngc"
+    bad = interp / "bad" / f"bad-arc.{kind}.{units}.center-format.ngc"
+    run = interpret(good, _machine(None), arc_tolerance="linuxcnc")
+    list(run)
+    assert run.status == "complete"
+    with pytest.raises(GcodeError) as e:
+        list(interpret(bad, _machine(None), arc_tolerance="linuxcnc"))
+    assert e.value.diagnostics[0].code == "GC301"
