@@ -41,7 +41,7 @@ import numpy as np
 from ..errors import InvalidArgument
 from .pulses import _arc_frame, _arc_step, _ArcFrame, _plane_line, _quadrant, arc_walk
 
-__all__ = ["ArcPath", "arc_path", "SHORT_ARC_STEPS", "CANDIDATES"]
+__all__ = ["ArcPath", "arc_path", "path_fractions", "path_fractions_moved", "SHORT_ARC_STEPS", "CANDIDATES"]
 
 #: Below this many estimated steps the reference loop is faster than numpy set-up.
 SHORT_ARC_STEPS = 48
@@ -94,8 +94,11 @@ def arc_path(
         w = arc_walk(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
         return ArcPath(np.array(w.points, dtype=np.int64).reshape(-1, 2), w.sweep_rad, w.radius_mm, w.walk_steps)
     pieces, walk = _walk(fr, turns, est)
-    pts = np.concatenate(pieces) if pieces else np.zeros((0, 2), dtype=np.int64)
-    pts[:, 1] *= fr.sj
+    pts = np.empty((walk, 2), dtype=np.int64)
+    if pieces:
+        pts[:, 0] = np.concatenate([p[0] for p in pieces])
+        ys = np.concatenate([p[1] for p in pieces])
+        pts[:, 1] = -ys if fr.sj < 0 else ys
     last = tuple(int(c) for c in pts[-1]) if len(pts) else (start_pulse[0], start_pulse[1])
     tail = _plane_line(last, (end_pulse[0], end_pulse[1]))
     if tail:
@@ -103,8 +106,8 @@ def arc_path(
     return ArcPath(pts, fr.sweep, fr.radius_mm, walk)
 
 
-def _walk(fr: _ArcFrame, turns: int, est: float) -> tuple[list[np.ndarray], int]:
-    """The walk's (x, mirrored y) positions in pieces, and the number of steps."""
+def _walk(fr: _ArcFrame, turns: int, est: float) -> tuple[list[tuple[np.ndarray, np.ndarray]], int]:
+    """The walk's (x, mirrored y) position columns in pieces, and the number of steps."""
     x, y, u, v, qc = fr.x, fr.y, fr.u, fr.v, fr.qcount
     pieces: list[np.ndarray] = []
     walk = 0
@@ -115,13 +118,13 @@ def _walk(fr: _ArcFrame, turns: int, est: float) -> tuple[list[np.ndarray], int]
     while walk < limit:
         k = min(_region_steps(fr, u, v), max(budget - walk, 16), CANDIDATES)
         xs, ys = _candidates(fr, x, y, u, v, k)
-        ok, stop, qcs = _verify(fr, x, y, u, v, qc, xs, ys)
+        ok, stop, qc_at = _verify(fr, x, y, u, v, qc, xs, ys)
         take = min(ok, stop)
         if take:
-            pieces.append(np.column_stack([xs[:take], ys[:take]]))
+            pieces.append((xs[:take], ys[:take]))
             walk += take
             x, y = int(xs[take - 1]), int(ys[take - 1])
-            u, v, qc = x * fr.ai - fr.cx, y * fr.aj - fr.cy, int(qcs[take - 1])
+            u, v, qc = x * fr.ai - fr.cx, y * fr.aj - fr.cy, qc_at(take - 1)
         if stop < ok:  # candidate `stop` is a verified step past the end ray: the walk ends
             return pieces, walk
         if ok < len(xs):  # the rule disagrees with candidate `ok`: one exact reference step
@@ -131,7 +134,7 @@ def _walk(fr: _ArcFrame, turns: int, est: float) -> tuple[list[np.ndarray], int]
             if fr.past_end(nu, nv, nqc):
                 return pieces, walk
             x, y, u, v, qc = x + dx, y + dy, nu, nv, nqc
-            pieces.append(np.array([[x, y]], dtype=np.int64))
+            pieces.append((np.array([x], dtype=np.int64), np.array([y], dtype=np.int64)))
             walk += 1
     raise InvalidArgument("arc walk did not reach its end")  # pragma: no cover - as in arc_walk
 
@@ -169,6 +172,119 @@ def _candidates(fr: _ArcFrame, x: int, y: int, u: int, v: int, k: int) -> tuple[
 
 
 def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray):
+    """Check candidates against the exact step rule.
+
+    Returns ``(ok, stop, qc_at)``: candidates ``[:ok]`` are the steps the
+    rule takes; ``stop`` is the index of the first of those that lies past the
+    end ray (``len(xs)`` if none); ``qc_at(i)`` the quadrant count after
+    candidate ``i < ok``.  The int64 fast path (:func:`_verify_fast`) answers
+    the common case; whatever it cannot decide cheaply goes to the general check.
+    """
+    got = _verify_fast(fr, x, y, u, v, qc, xs, ys)
+    if got is not None:
+        return got
+    ok, stop, qcs = _verify_general(fr, x, y, u, v, qc, xs, ys)
+    return ok, stop, lambda i: int(qcs[i])
+
+
+def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray):
+    """The step rule checked in int64 on a stretch where the major axis and its sign are fixed.
+
+    Applies when int64 cannot overflow (the same bound as the general check),
+    the first step's tangent sign holds for every verified position (so the
+    major axis moves monotonically, the quadrant changes at most once, and
+    the candidates' major-axis steps are right by construction), every minor
+    step is -1, 0 or +1, and no step has the two minor options tied (the rule's
+    tie order then matters: left to the general check).  Returns ``None`` otherwise.
+    A candidate step is the rule's step iff its residual ``|nu² + nv² - q|``
+    is the smallest of the three options and, for a minor move, strictly
+    below the no-move option's.
+    """
+    ai, aj, q, cx, cy = fr.ai, fr.aj, fr.q, fr.cx, fr.cy
+    n = len(xs)
+    xmajor = abs(v) * aj >= abs(u) * ai
+    mj, mn = (xs, ys) if xmajor else (ys, xs)  # candidates are monotone in the major axis
+    bmaj = max(abs(int(mj[0])), abs(int(mj[-1])))
+    bmin = max(int(mn.max()), -int(mn.min()))
+    bx = max(abs(x), bmaj if xmajor else bmin) * ai + abs(cx)
+    by = max(abs(y), bmin if xmajor else bmaj) * aj + abs(cy)
+    bound = max(bx, by) + max(ai, aj)
+    if not (4 * bound * bound + q < _INT64_SAFE and (abs(fr.eu) + abs(fr.ev)) * bound < _INT64_SAFE):
+        return None
+    # the major/minor roles: (a, b) = (x, y) when x is major, else (y, x), with offsets A, B
+    if xmajor:
+        A = xs * ai - cx
+        B = ys * aj - cy
+        a0, b0, sa, sb = u, v, ai, aj
+        mins = ys
+        m0 = y
+    else:
+        A = ys * aj - cy
+        B = xs * ai - cx
+        a0, b0, sa, sb = v, u, aj, ai
+        mins = xs
+        m0 = x
+    # A (major offset) after each step, B (minor) after each step; predecessors Ap, Bp
+    Bp = np.empty(n, dtype=np.int64)
+    Bp[0] = b0
+    Bp[1:] = B[:-1]
+    # the major axis of each step, from the predecessor: |B| sb >= |A| sa (x major: |v| aj >= |u| ai)
+    Ap = np.empty(n, dtype=np.int64)
+    Ap[0] = a0
+    Ap[1:] = A[:-1]
+    absB = np.abs(Bp)
+    same = absB * sb >= np.abs(Ap) * sa if xmajor else absB * sb > np.abs(Ap) * sa
+    m = int(np.argmin(same)) if not same.all() else n
+    if m == 0:
+        return None
+    pos = b0 > 0
+    if pos:
+        if b0 <= 0 or int(B[:m].min()) <= 0:
+            return None
+    elif b0 >= 0 or int(B[:m].max()) >= 0:
+        return None
+    dmin = np.diff(mins[:m], prepend=m0)
+    if int(dmin.max()) > 1 or int(dmin.min()) < -1:
+        return None
+    Bpm = Bp[:m]
+    g = A[:m] * A[:m] + Bpm * Bpm - q  # no minor move
+    t = (2 * sb) * Bpm
+    ss = sb * sb
+    f0 = np.abs(g)
+    fp = np.abs(g + t + ss)  # minor +1
+    fm = np.abs(g - t + ss)  # minor -1
+    best = np.minimum(f0, np.minimum(fp, fm))
+    if ((fp == fm) & (fp == best) & (f0 > best)).any():
+        return None
+    Bm = B[:m]
+    fc = np.abs(A[:m] * A[:m] + Bm * Bm - q)
+    bad = (fc != best) | ((dmin != 0) & (f0 == best))
+    ok = int(np.argmax(bad)) if bad.any() else m
+    # quadrants: B keeps its sign, A is monotone and crosses zero at most once
+    if xmajor:  # (u, v) = (A, B): v > 0 -> 0 while u > 0, then 1; v < 0 -> 2 while u < 0, then 3
+        qa, qb = (0, 1) if pos else (2, 3)
+        c = int(np.count_nonzero(A[:m] > 0)) if pos else int(np.count_nonzero(A[:m] < 0))
+    else:  # (u, v) = (B, A): u > 0 -> 3 while v < 0, then 0; u < 0 -> 1 while v > 0, then 2
+        qa, qb = (3, 0) if pos else (1, 2)
+        c = int(np.count_nonzero(A[:m] < 0)) if pos else int(np.count_nonzero(A[:m] > 0))
+    qstart = qc % 4
+    if c:
+        ca = qc + (qa - qstart) % 4
+        cb = ca + (qb - qa) % 4
+    else:
+        ca = cb = qc + (qb - qstart) % 4
+    if ok == 0 or max(ca, cb) < fr.qe:
+        stop = n
+    else:
+        Un, Vn = (A[:ok], B[:ok]) if xmajor else (B[:ok], A[:ok])
+        cross = fr.eu * Vn - fr.ev * Un
+        qcs = np.where(np.arange(ok) < c, ca, cb)
+        past = (qcs > fr.qe) | ((qcs == fr.qe) & (cross >= 0))
+        stop = int(np.argmax(past)) if past.any() else n
+    return ok, stop, lambda i: ca if i < c else cb
+
+
+def _verify_general(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray):
     """Check candidates against the exact step rule.
 
     Returns ``(ok, stop, qcounts)``: candidates ``[:ok]`` are the steps the
@@ -255,3 +371,36 @@ def path_fractions(pos: np.ndarray, p0, pulse_mm) -> np.ndarray:
         step_len = np.sqrt((moved.astype(float) ** 2) @ u2)
     cum = np.cumsum(step_len)
     return cum / cum[-1] if cum[-1] > 0 else np.ones(n)
+
+
+def path_fractions_moved(pos: np.ndarray, p0, pulse_mm, moving) -> tuple[np.ndarray, tuple[int, ...]]:
+    """:func:`path_fractions` (bit for bit) and the pulses each axis makes over all steps.
+
+    Columns of axes not in ``moving`` must stay at ``p0`` (the caller builds
+    them so); only the moving columns are read.  Falls back to the general
+    form when a step moves an axis by more than one pulse.
+
+    >>> pos = np.array([[1, 0, 5], [2, 1, 5], [2, 2, 5]])
+    >>> sig, moved = path_fractions_moved(pos, (0, 0, 5), (1.0, 1.0, 1.0), [0, 1])
+    >>> bool(np.array_equal(sig, path_fractions(pos, (0, 0, 5), (1.0, 1.0, 1.0)))), moved
+    (True, (2, 2, 0))
+    """
+    n, k = pos.shape
+    if not n:
+        return np.ones(0), (0,) * k
+    masks = []
+    for a in moving:
+        d = np.diff(pos[:, a], prepend=np.int64(p0[a]))
+        if int(d.max()) > 1 or int(d.min()) < -1 or k > 8:
+            moved = np.abs(np.diff(pos, axis=0, prepend=np.asarray(p0, dtype=np.int64).reshape(1, -1)))
+            return path_fractions(pos, p0, pulse_mm), tuple(int(t) for t in moved.sum(axis=0))
+        masks.append((a, d != 0))
+    totals = [0] * k
+    code = np.zeros(n, dtype=np.uint8)
+    for a, m in masks:
+        totals[a] = int(np.count_nonzero(m))
+        code |= m.view(np.uint8) << np.uint8(a)
+    u2 = np.array([float(u) ** 2 for u in pulse_mm])
+    table = np.sqrt(((np.arange(1 << k)[:, None] >> np.arange(k)) & 1) @ u2)
+    cum = np.cumsum(table[code])
+    return (cum / cum[-1] if cum[-1] > 0 else np.ones(n)), tuple(totals)

@@ -48,7 +48,7 @@ from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from .arcs import arc_path, path_fractions
+from .arcs import arc_path, path_fractions_moved
 from .monitor import LimitMonitor
 from .pulses import (
     LINE_CHUNK,
@@ -304,6 +304,7 @@ class _Plan:
     base_time_s: float = 0.0  # duration at constant speed
     accdec: bool = False
     speed_mm_s: float = 0.0
+    moved_total: tuple[int, ...] | None = None  # explicit: pulses per axis over all n steps (when known)
 
     def position(self, i: int) -> tuple[int, ...]:
         if i == 0:
@@ -615,23 +616,28 @@ class Controller:
         pos[:, j] = pts[:, 1]
         # helix axes follow the swept angle (float angle; rounding to the nearest pulse)
         helix = [k for k in range(len(p0)) if k not in (i, j) and p1[k] != p0[k]]
-        cx, cy = float(centre[0]), float(centre[1])
-        sgn = -1.0 if seg.clockwise else 1.0
-        ang = np.zeros(n) if not helix else np.unwrap(np.arctan2(sgn * (pts[:, 1] * float(self.pulse[j]) - cy), pts[:, 0] * float(self.pulse[i]) - cx))
-        a0 = math.atan2(sgn * (float(s2[1]) - cy), float(s2[0]) - cx)
-        ang = ang - a0
-        ang -= 2 * math.pi * np.round((ang[0] if n else 0) / (2 * math.pi))
-        phi = np.clip(ang / walk.sweep_rad, 0.0, 1.0) if walk.sweep_rad > 0 else np.ones(n)
-        phi = np.maximum.accumulate(phi) if n else phi
+        if helix:
+            cx, cy = float(centre[0]), float(centre[1])
+            sgn = -1.0 if seg.clockwise else 1.0
+            ang = _unwrap(np.arctan2(sgn * (pts[:, 1] * float(self.pulse[j]) - cy),
+                                     pts[:, 0] * float(self.pulse[i]) - cx))
+            a0 = math.atan2(sgn * (float(s2[1]) - cy), float(s2[0]) - cx)
+            ang = ang - a0
+            ang -= 2 * math.pi * np.round((ang[0] if n else 0) / (2 * math.pi))
+            phi = np.clip(ang / walk.sweep_rad, 0.0, 1.0) if walk.sweep_rad > 0 else np.ones(n)
+            phi = np.maximum.accumulate(phi) if n else phi
         helix_len2 = 0.0
         for k in range(len(p0)):
             if k in (i, j):
                 continue
             d = p1[k] - p0[k]
-            col = p0[k] + np.floor(phi * d + 0.5).astype(np.int64)
-            if n:
-                col[-1] = p1[k]
-            pos[:, k] = col
+            if d:
+                col = p0[k] + np.floor(phi * d + 0.5).astype(np.int64)
+                if n:
+                    col[-1] = p1[k]
+                pos[:, k] = col
+            else:  # floor(phi * 0 + 0.5) == 0: the axis stands still
+                pos[:, k] = p0[k]
             if not self.machine.axes[k].rotary:
                 helix_len2 += float(seg.end[k] - seg.start[k]) ** 2
         if helix and n:  # a steep helix: interleave its pulses, at most one pulse per axis per step
@@ -639,8 +645,9 @@ class Controller:
                    np.array(helix_steps(pos.tolist(), p0, helix), dtype=np.int64).reshape(-1, len(p0)))
             n = pos.shape[0]
         # path fraction after each step: cumulative chord length (floats, timing only)
-        sigma = path_fractions(pos, p0, self.pulse)
-        plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma)
+        moving = [k for k in range(len(p0)) if k in (i, j) or k in helix]
+        sigma, moved = path_fractions_moved(pos, p0, self.pulse, moving)
+        plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma, moved_total=moved)
         length = math.sqrt((walk.radius_mm * walk.sweep_rad) ** 2 + helix_len2)
         if self.mode is Mode.CHECK:
             rate = min(float(a.rapid_mm_min) for k, a in enumerate(self.machine.axes) if k in (i, j) or p1[k] != p0[k])
@@ -730,6 +737,8 @@ class Controller:
             return
         if plan.delta is not None:
             moved = [abs(b - a) for a, b in zip(plan.p0, plan.position(done))]
+        elif done == plan.n and plan.moved_total is not None:
+            moved = list(plan.moved_total)
         else:
             rows = np.vstack([np.array(plan.p0, dtype=np.int64), plan.positions[:done]])
             moved = np.abs(np.diff(rows, axis=0)).sum(axis=0).tolist()
@@ -1008,6 +1017,32 @@ class Controller:
             overshoot_bound_mm=self.overshoot_bound if self.monitor_mode is MonitorMode.PERIODIC else 0.0,
             blind_spot=blind, servo=self._servo_log(), notes=tuple(self.notes),
         )
+
+
+def _unwrap(p: np.ndarray) -> np.ndarray:
+    """``np.unwrap(p)`` bit for bit, touching only the jumps (an arc's angle jumps once per turn).
+
+    >>> a = np.array([3.0, 3.1, -3.1, -3.0, 3.1])
+    >>> bool(np.array_equal(_unwrap(a), np.unwrap(a)))
+    True
+    """
+    if len(p) < 2:
+        return np.unwrap(p)
+    dd = np.diff(p)
+    idx = np.flatnonzero(np.abs(dd) >= math.pi)
+    if not len(idx):
+        return p.copy()
+    sub = dd[idx]
+    ddmod = np.mod(sub + math.pi, 2 * math.pi) - math.pi
+    ddmod[(ddmod == -math.pi) & (sub > 0)] = math.pi
+    corr = ddmod - sub
+    up = p.copy()
+    total = 0.0
+    bounds = [*idx.tolist(), len(dd)]
+    for c, k, k_next in zip(corr.tolist(), bounds[:-1], bounds[1:]):
+        total += c  # numpy's cumsum adds the corrections in this order
+        up[k + 1:k_next + 1] = p[k + 1:k_next + 1] + total
+    return up
 
 
 def _path_length(axes, disp: list[float]) -> float:
