@@ -51,6 +51,8 @@ CANDIDATES = 1 << 16
 #: exact but no faster than the reference loop, so it is off: such arcs run arc_walk itself.
 OBJECT_VERIFY = False
 _INT64_SAFE = 1 << 62
+#: Steps per chunk in :func:`path_fractions_moved`.
+FRACTION_CHUNK = 1 << 16
 
 
 @dataclass(frozen=True, slots=True)
@@ -94,15 +96,15 @@ def arc_path(
         w = arc_walk(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
         return ArcPath(np.array(w.points, dtype=np.int64).reshape(-1, 2), w.sweep_rad, w.radius_mm, w.walk_steps)
     pieces, walk = _walk(fr, turns, est)
-    pts = np.empty((walk, 2), dtype=np.int64)
-    if pieces:
-        pts[:, 0] = np.concatenate([p[0] for p in pieces])
-        ys = np.concatenate([p[1] for p in pieces])
-        pts[:, 1] = -ys if fr.sj < 0 else ys
-    last = tuple(int(c) for c in pts[-1]) if len(pts) else (start_pulse[0], start_pulse[1])
+    last = (int(pieces[-1][0][-1]), fr.sj * int(pieces[-1][1][-1])) if pieces else (start_pulse[0], start_pulse[1])
     tail = _plane_line(last, (end_pulse[0], end_pulse[1]))
+    pts = np.empty((walk + len(tail), 2), dtype=np.int64)
+    if pieces:
+        pts[:walk, 0] = np.concatenate([p[0] for p in pieces])
+        ys = np.concatenate([p[1] for p in pieces])
+        pts[:walk, 1] = -ys if fr.sj < 0 else ys
     if tail:
-        pts = np.vstack([pts, np.array(tail, dtype=np.int64)])
+        pts[walk:] = np.array(tail, dtype=np.int64)
     return ArcPath(pts, fr.sweep, fr.radius_mm, walk)
 
 
@@ -388,19 +390,35 @@ def path_fractions_moved(pos: np.ndarray, p0, pulse_mm, moving) -> tuple[np.ndar
     n, k = pos.shape
     if not n:
         return np.ones(0), (0,) * k
-    masks = []
-    for a in moving:
-        d = np.diff(pos[:, a], prepend=np.int64(p0[a]))
-        if int(d.max()) > 1 or int(d.min()) < -1 or k > 8:
-            moved = np.abs(np.diff(pos, axis=0, prepend=np.asarray(p0, dtype=np.int64).reshape(1, -1)))
-            return path_fractions(pos, p0, pulse_mm), tuple(int(t) for t in moved.sum(axis=0))
-        masks.append((a, d != 0))
-    totals = [0] * k
-    code = np.zeros(n, dtype=np.uint8)
-    for a, m in masks:
-        totals[a] = int(np.count_nonzero(m))
-        code |= m.view(np.uint8) << np.uint8(a)
+    if k > 8:
+        return _fractions_general(pos, p0, pulse_mm)
     u2 = np.array([float(u) ** 2 for u in pulse_mm])
     table = np.sqrt(((np.arange(1 << k)[:, None] >> np.arange(k)) & 1) @ u2)
-    cum = np.cumsum(table[code])
-    return (cum / cum[-1] if cum[-1] > 0 else np.ones(n)), tuple(totals)
+    cum = np.empty(n)
+    totals = [0] * k
+    prev = [np.int64(p0[a]) for a in moving]
+    carry = 0.0
+    for lo in range(0, n, FRACTION_CHUNK):  # chunks: temporaries stay in cache
+        hi = min(n, lo + FRACTION_CHUNK)
+        code = np.zeros(hi - lo, dtype=np.uint8)
+        for c, a in enumerate(moving):
+            d = np.diff(pos[lo:hi, a], prepend=prev[c])
+            if int(d.max()) > 1 or int(d.min()) < -1:
+                return _fractions_general(pos, p0, pulse_mm)
+            m = d != 0
+            totals[a] += int(np.count_nonzero(m))
+            code |= m.view(np.uint8) << np.uint8(a)
+            prev[c] = pos[hi - 1, a]
+        step = table[code]
+        step[0] += carry  # cumsum adds left to right: carrying the sum keeps every partial sum bit for bit
+        np.cumsum(step, out=cum[lo:hi])
+        carry = float(cum[hi - 1])
+    if cum[-1] > 0:
+        cum /= cum[-1]
+        return cum, tuple(totals)
+    return np.ones(n), tuple(totals)
+
+
+def _fractions_general(pos: np.ndarray, p0, pulse_mm) -> tuple[np.ndarray, tuple[int, ...]]:
+    moved = np.abs(np.diff(pos, axis=0, prepend=np.asarray(p0, dtype=np.int64).reshape(1, -1)))
+    return path_fractions(pos, p0, pulse_mm), tuple(int(t) for t in moved.sum(axis=0))

@@ -411,6 +411,18 @@ def helix_steps(pos: Sequence[Sequence[int]], p0: Sequence[int], helix_axes: Seq
     return out
 
 
+def _jumps(pos: np.ndarray, p0: Sequence[int], axes: Sequence[int], chunk: int = 1 << 16) -> bool:
+    """Does any of ``axes`` move by more than one pulse in a step (checked in cache-sized chunks)?"""
+    for h in axes:
+        prev = np.int64(p0[h])
+        for lo in range(0, len(pos), chunk):
+            d = np.diff(pos[lo:lo + chunk, h], prepend=prev)
+            if int(d.max()) > 1 or int(d.min()) < -1:
+                return True
+            prev = pos[min(lo + chunk, len(pos)) - 1, h]
+    return False
+
+
 def helix_chunk(pos: np.ndarray, p0: Sequence[int], helix_axes: Sequence[int]) -> np.ndarray:
     """:func:`helix_steps` vectorized (identical rows, int64 ``(steps, axes)``).
 
@@ -420,6 +432,8 @@ def helix_chunk(pos: np.ndarray, p0: Sequence[int], helix_axes: Sequence[int]) -
     pos = np.asarray(pos, dtype=np.int64)
     if not len(pos) or not helix_axes:
         return pos
+    if not _jumps(pos, p0, helix_axes):
+        return pos  # no helix axis jumps: nothing to interleave
     rows = np.vstack([np.asarray(p0, dtype=np.int64).reshape(1, -1), pos])
     jumps = np.diff(rows[:, list(helix_axes)], axis=0)
     big = np.abs(jumps).max(axis=1)

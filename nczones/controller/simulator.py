@@ -619,24 +619,14 @@ class Controller:
         if helix:
             cx, cy = float(centre[0]), float(centre[1])
             sgn = -1.0 if seg.clockwise else 1.0
-            ang = _unwrap(np.arctan2(sgn * (pts[:, 1] * float(self.pulse[j]) - cy),
-                                     pts[:, 0] * float(self.pulse[i]) - cx))
             a0 = math.atan2(sgn * (float(s2[1]) - cy), float(s2[0]) - cx)
-            ang = ang - a0
-            ang -= 2 * math.pi * np.round((ang[0] if n else 0) / (2 * math.pi))
-            phi = np.clip(ang / walk.sweep_rad, 0.0, 1.0) if walk.sweep_rad > 0 else np.ones(n)
-            phi = np.maximum.accumulate(phi) if n else phi
+            _helix_columns(pos, pts, (float(self.pulse[i]), float(self.pulse[j])), (cx, cy), sgn, a0,
+                           walk.sweep_rad, [(k, p0[k], p1[k]) for k in helix])
         helix_len2 = 0.0
         for k in range(len(p0)):
             if k in (i, j):
                 continue
-            d = p1[k] - p0[k]
-            if d:
-                col = p0[k] + np.floor(phi * d + 0.5).astype(np.int64)
-                if n:
-                    col[-1] = p1[k]
-                pos[:, k] = col
-            else:  # floor(phi * 0 + 0.5) == 0: the axis stands still
+            if p1[k] == p0[k]:  # floor(phi * 0 + 0.5) == 0: the axis stands still
                 pos[:, k] = p0[k]
             if not self.machine.axes[k].rotary:
                 helix_len2 += float(seg.end[k] - seg.start[k]) ** 2
@@ -1017,6 +1007,74 @@ class Controller:
             overshoot_bound_mm=self.overshoot_bound if self.monitor_mode is MonitorMode.PERIODIC else 0.0,
             blind_spot=blind, servo=self._servo_log(), notes=tuple(self.notes),
         )
+
+
+#: Steps per chunk when arc columns are computed (temporaries stay small and in cache).
+ARC_CHUNK = 1 << 16
+
+
+def _helix_columns(pos, pts, pulse2, centre, sgn, a0, sweep, axes) -> None:
+    """Fill the helix columns of ``pos``: each axis follows the swept angle, rounded to the nearest pulse.
+
+    The angle of every planar position, unwrapped (:func:`_unwrap`), relative
+    to the start angle, as a fraction of the sweep clipped to [0, 1] and made
+    non-decreasing; the axis stands at ``p0 + floor(phi * d + 1/2)`` and the
+    last step at its rounded end.  Computed in chunks; every float operation
+    is elementwise or carried exactly, so the result equals the whole-array
+    computation bit for bit.
+    """
+    n = len(pts)
+    if not n:
+        return
+    fi, fj = pulse2
+    cx, cy = centre
+    prev_raw = None  # last raw angle of the previous chunk (unwrap across chunks)
+    total = 0.0  # the unwrap correction carried
+    shift = None  # whole turns removed so that the first angle is near 0
+    run_max = -np.inf
+    for lo in range(0, n, ARC_CHUNK):
+        hi = min(n, lo + ARC_CHUNK)
+        raw = np.arctan2(sgn * (pts[lo:hi, 1] * fj - cy), pts[lo:hi, 0] * fi - cx)
+        ext = raw if prev_raw is None else np.concatenate(([prev_raw], raw))
+        up, total = _unwrap_from(ext, total)
+        if prev_raw is not None:
+            up = up[1:]
+        prev_raw = float(raw[-1])
+        ang = up - a0
+        if shift is None:
+            shift = 2 * math.pi * np.round(ang[0] / (2 * math.pi))
+        ang -= shift
+        phi = np.clip(ang / sweep, 0.0, 1.0) if sweep > 0 else np.ones(hi - lo)
+        phi = np.maximum.accumulate(phi)
+        if phi[0] < run_max:
+            np.maximum(phi, run_max, out=phi)
+        run_max = float(phi[-1])
+        for k, a, b in axes:
+            pos[lo:hi, k] = a + np.floor(phi * (b - a) + 0.5).astype(np.int64)
+    for k, _, b in axes:
+        pos[n - 1, k] = b
+
+
+def _unwrap_from(p: np.ndarray, total: float) -> tuple[np.ndarray, float]:
+    """:func:`_unwrap` of ``p`` with a correction ``total`` already carried from before ``p[0]``.
+
+    ``p[0]`` itself gets ``total`` only as numpy would give it: callers pass the
+    previous chunk's last raw value there and drop it.
+    """
+    dd = np.diff(p)
+    idx = np.flatnonzero(np.abs(dd) >= math.pi)
+    up = p + total if total else p.copy()
+    if not len(idx):
+        return up, total
+    sub = dd[idx]
+    ddmod = np.mod(sub + math.pi, 2 * math.pi) - math.pi
+    ddmod[(ddmod == -math.pi) & (sub > 0)] = math.pi
+    corr = ddmod - sub
+    bounds = [*idx.tolist(), len(dd)]
+    for c, k, k_next in zip(corr.tolist(), bounds[:-1], bounds[1:]):
+        total += c  # numpy's cumsum adds the corrections in this order
+        up[k + 1:k_next + 1] = p[k + 1:k_next + 1] + total
+    return up, total
 
 
 def _unwrap(p: np.ndarray) -> np.ndarray:

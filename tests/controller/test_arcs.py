@@ -169,3 +169,47 @@ def test_first_alarm_pulse_on_an_arc_is_the_same_in_both_engines(r, t, cw, plane
         == [(a.pulse_position, a.zone, a.blocked, a.block) for a in res[1].alarms]
     assert res[0].pulses == res[1].pulses and res[0].steps == res[1].steps
     assert res[0].program_position == res[1].program_position
+
+
+def _old_helix_column(pts, pulse2, centre, sgn, a0, sweep, a, b):
+    """The whole-array helix formula the chunked one replaced (np.unwrap over every point)."""
+    ang = np.unwrap(np.arctan2(sgn * (pts[:, 1] * pulse2[1] - centre[1]), pts[:, 0] * pulse2[0] - centre[0]))
+    ang = ang - a0
+    ang -= 2 * math.pi * np.round(ang[0] / (2 * math.pi))
+    phi = np.maximum.accumulate(np.clip(ang / sweep, 0.0, 1.0))
+    col = a + np.floor(phi * (b - a) + 0.5).astype(np.int64)
+    col[-1] = b
+    return col
+
+
+@settings(FAST, max_examples=25)
+@given(st.integers(3, 400), st.integers(0, 3), st.booleans(), st.integers(-900, 900), st.sampled_from([1, 7, 64, 1 << 16]))
+def test_chunked_helix_columns_and_path_fractions_equal_the_whole_array_forms(r, turns, cw, dz, chunk):
+    from nczones.controller import simulator as sim
+
+    sweep = 2 * math.pi * (turns + 1)
+    pts = arc_path((r, 0), (r, 0), (F(r), F(0)), (F(r), F(0)), (F(0), F(0)), cw, turns, (F(1), F(1))).points
+    sgn = -1.0 if cw else 1.0
+    a0 = math.atan2(0.0, float(r))
+    pos = np.zeros((len(pts), 3), dtype=np.int64)
+    pos[:, :2] = pts
+    old = sim.ARC_CHUNK, arcs_mod.FRACTION_CHUNK
+    sim.ARC_CHUNK = arcs_mod.FRACTION_CHUNK = chunk
+    try:
+        sim._helix_columns(pos, pts, (1.0, 1.0), (0.0, 0.0), sgn, a0, sweep, [(2, 5, 5 + dz)])
+        want = _old_helix_column(pts, (1.0, 1.0), (0.0, 0.0), sgn, a0, sweep, 5, 5 + dz)
+        assert pos[:, 2].tolist() == want.tolist()
+        pos = helix_chunk(pos, (r, 0, 5), (2,))
+        sig, moved = arcs_mod.path_fractions_moved(pos, (r, 0, 5), (0.001, 0.001, 0.002), [0, 1, 2])
+    finally:
+        sim.ARC_CHUNK, arcs_mod.FRACTION_CHUNK = old
+    assert np.array_equal(sig, arcs_mod.path_fractions(pos, (r, 0, 5), (0.001, 0.001, 0.002)))  # bit for bit
+    steps = np.abs(np.diff(pos, axis=0, prepend=np.array([[r, 0, 5]])))
+    assert moved == tuple(int(v) for v in steps.sum(axis=0))
+
+
+def test_unwrap_equals_numpy_on_angles_with_jumps():
+    from nczones.controller.simulator import _unwrap
+
+    a = np.arctan2(np.sin(np.linspace(0, 40, 5001)), np.cos(np.linspace(0, 40, 5001)))
+    assert np.array_equal(_unwrap(a), np.unwrap(a))
