@@ -12,7 +12,9 @@ Per segment, in execution order:
    screen did not prove, parameter ranges, and every flagged piece (its
    model is the witness).  ``engine="z3"`` sends every segment here.
 3. **Tier 3** — over-approximations (helices, spirals) whose witness cannot
-   be certified on the exact path give ``unknown`` with the reason.
+   be certified on the exact path are refined by splitting the sweep
+   (:mod:`nczones.prover.refine`, budget 64 pieces / depth 8); what the
+   budget cannot decide gives ``unknown`` with the reason.
 
 Invariants: ``SAFE`` only when every segment was proved; every reported
 violation was re-checked with ``AllowedSet.violated_zones`` on an exact
@@ -555,6 +557,12 @@ class Prover:
         if ans.status == "unknown":
             return _Outcome(reason=Reason("solver resource limit reached on an arc", seg.span, seg.block), engine="unknown")
         v = self._arc_witness(seg, g, ans.values, params)
+        if v is None and g.centre is not None and (g.helix or not g.exact):
+            from .refine import refine_arc  # split the sweep and prove the pieces (see prover/refine.py)
+
+            out = refine_arc(self, seg, g, params)
+            if out is not None:
+                return out
         if v is None:
             what = "helix" if g.helix else ("R-format arc with an irrational centre" if g.centre is None else "spiral arc")
             if g.exact:

@@ -1,0 +1,189 @@
+"""Refinement by splitting for helices and spiral I/J arcs (issue 4, DESIGN §5).
+
+A helix (a circular arc in its plane with other axes moving linearly in the
+swept angle) and a spiral arc (radius moving linearly in the swept angle) are
+not polynomial, so :meth:`Prover._arc_query` proves a *containing* set: the
+planar arc (or annular sector) times the whole range of every moving axis.
+When that enclosure admits a violation the exact path may not reach, this
+module splits the sweep into sub-arcs, proves each sub-arc's (much tighter)
+enclosure with the same encoding, and splits again where needed, up to a
+budget (:data:`MAX_PIECES` queries, :data:`MAX_DEPTH` halvings); then the
+answer is ``unknown`` with the reason.  Never ``safe`` by default.
+
+Soundness argument (why a proved piece proves that part of the exact path)
+--------------------------------------------------------------------------
+Let ``u`` be the start direction from the (rational) centre, ``Θ`` the total
+swept angle and ``θ(v)`` the swept angle at which the exact path points in
+direction ``v``.  Every piece is a pair of rational directions ``(da, db)``
+with a sweep of less than a quarter turn, and rational bounds
+``θa_lo <= θ(da)``, ``θ(db) <= θb_hi`` (quarter-turn boundaries are
+``j·π/2`` enclosed with :func:`pi_bounds`; other directions use the
+rational angle enclosure :func:`_angle_bounds`, plus ``2π·lap``).  On the
+exact path between ``da`` and ``db``:
+
+* the planar point is at a direction in the closed sector ``[da, db]`` — the
+  sector is encoded exactly with half-plane tests;
+* each moving non-plane axis is ``start + (end - start)·θ/Θ``, monotone in
+  ``θ``, and ``θ/Θ ∈ [max(0, θa_lo/Θ_hi), min(1, θb_hi/Θ_lo)]``; the axis is
+  encoded as anywhere in the image of that interval;
+* for a spiral the radius ``r_s + (r_e - r_s)·θ/Θ`` is multilinear in
+  ``(r_s, r_e, θ/Θ)``, so its range over the enclosures of ``r_s``, ``r_e``
+  (:func:`sqrt_bounds`) and ``θ/Θ`` is spanned by the corners; the squared
+  radius is encoded in the square of that range (widened to contain the
+  piece's own rational end points, which only enlarges it).
+
+Hence the piece's encoded set contains the exact sub-path, and ``unsat``
+proves it.  The pieces' sectors cover the whole sweep (each split inserts a
+direction strictly inside its parent's sector), so all pieces proved means
+the segment is proved.  A violation is only reported after
+:meth:`Prover._arc_witness_enclosed` certified it on the exact path (a
+rational box around an exact path point that certainly violates).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from ..motion import Segment
+from .geometry import ArcGeom, in_sweep, pi_bounds, sqrt_bounds
+from .result import Reason
+
+F0 = Fraction(0)
+F1 = Fraction(1)
+
+#: At most this many sub-arc queries per segment.
+MAX_PIECES = 64
+#: At most this many halvings of one initial (quarter-turn) piece.
+MAX_DEPTH = 8
+
+
+def _rot(d, m: Fraction, ccw: bool):
+    """``d`` rotated by ``2·atan(m)`` in the arc's direction (exact, keeps the length)."""
+    perp = (-d[1], d[0]) if ccw else (d[1], -d[0])
+    den = 1 + m * m
+    return (((1 - m * m) * d[0] + 2 * m * perp[0]) / den, ((1 - m * m) * d[1] + 2 * m * perp[1]) / den)
+
+
+def _quarter_of(u, w, ccw: bool) -> tuple[int, bool]:
+    """Quarter index k with angle(u -> w) in [k π/2, (k+1) π/2), and whether it is exactly k π/2."""
+    from .core import _bases
+
+    for k, base in enumerate(_bases(u, ccw)):
+        cr = base[0] * w[1] - base[1] * w[0]
+        if not ccw:
+            cr = -cr
+        dt = base[0] * w[0] + base[1] * w[1]
+        if cr >= 0 and dt > 0 or (cr > 0 and dt == 0):
+            return k, cr == 0
+    raise AssertionError("direction in no quarter")
+
+
+def refine_arc(prover, seg: Segment, g: ArcGeom, params):
+    """Prove a helix or spiral arc piece by piece (see the module docstring).
+
+    Returns a ``_Outcome``: proved (engine ``"z3"``), a certified violation,
+    or ``unknown`` whose reason names the budget or the solver limit.
+    Requires a rational centre (``g.centre is not None``).
+    """
+    from .core import _Outcome, _angle_bounds, _bases, _half_tan
+
+    for ends in (g.start, g.end):  # exact path points: a violation there needs no enclosure
+        pmap = dict(zip(prover.axes, ends))
+        bad = prover.allowed.violated_zones(pmap, seg.tool_length, prover.margin)
+        if bad:
+            return _Outcome(prover._arc_violation(seg, g, pmap, bad, params, True), engine="exact")
+    c = g.centre
+    u = (g.s[0] - c[0], g.s[1] - c[1])
+    w = (g.e[0] - c[0], g.e[1] - c[1])
+    pi_lo, pi_hi = pi_bounds()
+    turns = seg.turns
+    bases = _bases(u, g.ccw)
+    # boundaries: (direction, lap, theta_lo, theta_hi) in sweep order
+    if g.s == g.e:
+        quarters, exact_end = 4 * (turns + 1), True
+    else:
+        k, exact_end = _quarter_of(u, w, g.ccw)
+        quarters = 4 * turns + k
+    bounds = [(bases[j % 4], j // 4, j * pi_lo / 2, j * pi_hi / 2) for j in range(quarters + 1)]
+    if not exact_end:
+        a_lo, a_hi = _angle_bounds(u, w, g.ccw)
+        bounds.append((w, turns, a_lo + 2 * pi_lo * turns, a_hi + 2 * pi_hi * turns))
+    tot_lo, tot_hi = bounds[-1][2], bounds[-1][3]
+    if tot_lo <= 0:
+        return None
+    if len(bounds) - 1 > MAX_PIECES:
+        return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted: {len(bounds) - 1} quarter "
+                                      f"turns exceed {MAX_PIECES} pieces", seg.span, seg.block), engine="unknown")
+    spiral = g.r2_lo != g.r2_hi
+    if spiral:
+        rs = sqrt_bounds(u[0] ** 2 + u[1] ** 2, 120)
+        re_ = sqrt_bounds(w[0] ** 2 + w[1] ** 2, 120)
+
+    def piece_geom(a, b) -> ArcGeom:
+        da, _, ta_lo, _ = a
+        db, _, _, tb_hi = b
+        f_lo = max(F0, ta_lo / tot_hi)
+        f_hi = min(F1, tb_hi / tot_lo)
+        start, end = list(g.start), list(g.end)
+        for k in range(len(g.start)):
+            if k in (g.ia, g.ib) or g.start[k] == g.end[k]:
+                continue
+            vals = (g.start[k] + (g.end[k] - g.start[k]) * f_lo, g.start[k] + (g.end[k] - g.start[k]) * f_hi)
+            start[k], end[k] = min(vals), max(vals)
+        r2_lo = r2_hi = g.r2_lo
+        if spiral:
+            rho = [r0 + (r1 - r0) * f for r0 in rs for r1 in re_ for f in (f_lo, f_hi)]
+            r2s = [max(F0, min(rho)) ** 2, max(rho) ** 2, da[0] ** 2 + da[1] ** 2, db[0] ** 2 + db[1] ** 2]
+            r2_lo, r2_hi = min(r2s), max(r2s)
+        return ArcGeom(g.ia, g.ib, (c[0] + da[0], c[1] + da[1]), (c[0] + db[0], c[1] + db[1]), g.ccw, False,
+                       c, None, r2_lo, r2_hi, tuple(start), tuple(end))
+
+    def split(a, b):
+        da, lap, _, _ = a
+        db = b[0]
+        m = _half_tan(da, db, g.ccw)
+        if m is None or m <= 0:
+            return None
+        m = (m / 2).limit_denominator(2**24) or Fraction(1, 2**25)
+        dm = _rot(da, m, g.ccw)
+        if spiral:  # bring the direction near the path radius (keeps the piece's end points tight)
+            n2 = dm[0] ** 2 + dm[1] ** 2
+            t = sqrt_bounds(((rs[0] + re_[0]) / 2) ** 2 / n2, 40)[0] or F1
+            dm = (dm[0] * t, dm[1] * t)
+        if dm == da or not in_sweep(da, db, dm, g.ccw, False) or in_sweep(da, dm, db, g.ccw, False):
+            return None
+        lo, hi = _angle_bounds(u, dm, g.ccw)
+        return (dm, lap, lo + 2 * pi_lo * lap, hi + 2 * pi_hi * lap)
+
+    stack = [(bounds[i], bounds[i + 1], 0) for i in range(len(bounds) - 1)][::-1]
+    used = 0
+    while stack:
+        a, b, depth = stack.pop()
+        used += 1
+        if used > MAX_PIECES:
+            return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted ({MAX_PIECES} pieces, depth "
+                                          f"{MAX_DEPTH}): the enclosure near a boundary could be neither proved "
+                                          "nor confirmed violated", seg.span, seg.block), engine="unknown")
+        pg = piece_geom(a, b)
+        prover.stats["refined_pieces"] = prover.stats.get("refined_pieces", 0) + 1
+        body, names = prover._arc_query(seg, pg, False)
+        ans = prover.solver.check(body, names, precision=60)
+        if ans.status == "unsat":
+            continue
+        if ans.status == "unknown":
+            return _Outcome(reason=Reason("solver resource limit reached on a helix/spiral piece", seg.span,
+                                          seg.block), engine="unknown")
+        v = prover._arc_witness_enclosed(seg, g, ans.values, params, retry=False)
+        mid = split(a, b)
+        if v is None and mid is not None:
+            v = prover._arc_witness_enclosed(seg, g, {"x": c[0] + mid[0][0], "y": c[1] + mid[0][1]}, params,
+                                             retry=False)
+        if v is not None:
+            return _Outcome(v, engine="z3")
+        if mid is None or depth >= MAX_DEPTH:
+            return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted (depth {MAX_DEPTH}, "
+                                          f"{MAX_PIECES} pieces): a piece's enclosure may violate a zone but no "
+                                          "exact violation was confirmed", seg.span, seg.block), engine="unknown")
+        stack.append((mid, b, depth + 1))
+        stack.append((a, mid, depth + 1))
+    return _Outcome(engine="z3")
