@@ -41,7 +41,7 @@ import numpy as np
 from ..errors import InvalidArgument
 from .pulses import _arc_frame, _arc_step, _ArcFrame, _plane_line, _quadrant, arc_walk
 
-__all__ = ["ArcPath", "arc_path", "path_fractions", "path_fractions_moved", "SHORT_ARC_STEPS", "CANDIDATES"]
+__all__ = ["ArcPath", "arc_path", "arc_positions", "path_fractions", "path_fractions_moved", "SHORT_ARC_STEPS", "CANDIDATES"]
 
 #: Below this many estimated steps the reference loop is faster than numpy set-up.
 SHORT_ARC_STEPS = 48
@@ -88,33 +88,100 @@ def arc_path(
     >>> fast.points.tolist() == [list(p) for p in arc_walk(*args).points], fast.points[-1].tolist()
     (True, [0, 10000])
     """
+    pos, sweep, radius, walk = arc_positions(2, 0, 1, start_pulse, end_pulse, start, end, centre, clockwise, turns,
+                                             pulse)
+    return ArcPath(pos, sweep, radius, walk)
+
+
+def arc_positions(
+    naxes: int, i: int, j: int,
+    start_pulse: tuple[int, int],
+    end_pulse: tuple[int, int],
+    start: tuple[Fraction, Fraction],
+    end: tuple[Fraction, Fraction],
+    centre: tuple[Fraction, Fraction],
+    clockwise: bool,
+    turns: int,
+    pulse: tuple[Fraction, Fraction],
+) -> tuple[np.ndarray, float, float, int]:
+    """:func:`arc_path` written straight into columns ``i``, ``j`` of an ``(n, naxes)`` int64 array.
+
+    Returns ``(positions, sweep_rad, radius_mm, walk_steps)``; the other
+    columns are left unset for the caller.
+
+    >>> F = Fraction
+    >>> pos, *_ = arc_positions(3, 2, 0, (10, 0), (0, 10), (F(10), F(0)), (F(0), F(10)), (F(0), F(0)), False, 0,
+    ...                         (F(1), F(1)))
+    >>> pos[:, [2, 0]].tolist() == arc_path((10, 0), (0, 10), (F(10), F(0)), (F(0), F(10)), (F(0), F(0)),
+    ...                                     False, 0, (F(1), F(1))).points.tolist()
+    True
+    """
     fr = _arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
     est = fr.sweep * math.sqrt(fr.q) / min(fr.ai, fr.aj) if fr.q else 0.0
     reach = 2 * math.isqrt(fr.q) + abs(fr.cx) + abs(fr.cy) + 4 * max(fr.ai, fr.aj)
     big = 4 * reach * reach + fr.q >= _INT64_SAFE  # int64 verification impossible (e.g. R-format centres)
     if fr.tiny or est < SHORT_ARC_STEPS or (big and not OBJECT_VERIFY):
         w = arc_walk(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
-        return ArcPath(np.array(w.points, dtype=np.int64).reshape(-1, 2), w.sweep_rad, w.radius_mm, w.walk_steps)
-    pieces, walk = _walk(fr, turns, est)
-    last = (int(pieces[-1][0][-1]), fr.sj * int(pieces[-1][1][-1])) if pieces else (start_pulse[0], start_pulse[1])
+        pos = np.empty((len(w.points), naxes), dtype=np.int64)
+        pos[:, [i, j]] = np.array(w.points, dtype=np.int64).reshape(-1, 2)
+        return pos, w.sweep_rad, w.radius_mm, w.walk_steps
+    out = _Columns(naxes, i, j, fr.sj, int(est * 1.02) + 64)
+    walk = _walk(fr, turns, est, out)
+    last = out.last() if walk else (start_pulse[0], start_pulse[1])
     tail = _plane_line(last, (end_pulse[0], end_pulse[1]))
-    pts = np.empty((walk + len(tail), 2), dtype=np.int64)
-    if pieces:
-        pts[:walk, 0] = np.concatenate([p[0] for p in pieces])
-        ys = np.concatenate([p[1] for p in pieces])
-        pts[:walk, 1] = -ys if fr.sj < 0 else ys
     if tail:
-        pts[walk:] = np.array(tail, dtype=np.int64)
-    return ArcPath(pts, fr.sweep, fr.radius_mm, walk)
+        out.put_rows(np.array(tail, dtype=np.int64))
+    pos = out.result()
+    return pos, fr.sweep, fr.radius_mm, walk
 
 
-def _walk(fr: _ArcFrame, turns: int, est: float) -> tuple[list[tuple[np.ndarray, np.ndarray]], int]:
-    """The walk's (x, mirrored y) position columns in pieces, and the number of steps."""
+class _Columns:
+    """An ``(n, naxes)`` int64 array filled in pieces (columns ``i``, ``j``), grown when needed.
+
+    The capacity is reserved with ``np.empty``: pages never written cost nothing.
+    """
+
+    def __init__(self, naxes: int, i: int, j: int, sj: int, cap: int) -> None:
+        self.buf = np.empty((max(cap, 16), naxes), dtype=np.int64)
+        self.i, self.j, self.sj, self.n = i, j, sj, 0
+
+    def _room(self, k: int) -> None:
+        if self.n + k > len(self.buf):
+            grown = np.empty((max(2 * len(self.buf), self.n + k), self.buf.shape[1]), dtype=np.int64)
+            grown[:self.n] = self.buf[:self.n]
+            self.buf = grown
+
+    def put(self, xs: np.ndarray, ys: np.ndarray) -> None:
+        """Walk positions: x and the mirrored y (unmirrored here)."""
+        k = len(xs)
+        self._room(k)
+        lo, hi = self.n, self.n + k
+        self.buf[lo:hi, self.i] = xs
+        if self.sj < 0:
+            np.negative(ys, out=self.buf[lo:hi, self.j])
+        else:
+            self.buf[lo:hi, self.j] = ys
+        self.n = hi
+
+    def put_rows(self, rows: np.ndarray) -> None:
+        """Plane positions ``(k, 2)``, already unmirrored."""
+        self._room(len(rows))
+        self.buf[self.n:self.n + len(rows), [self.i, self.j]] = rows
+        self.n += len(rows)
+
+    def last(self) -> tuple[int, int]:
+        return int(self.buf[self.n - 1, self.i]), int(self.buf[self.n - 1, self.j])
+
+    def result(self) -> np.ndarray:
+        return self.buf[:self.n]
+
+
+def _walk(fr: _ArcFrame, turns: int, est: float, out: _Columns) -> int:
+    """Put the walk's positions into ``out``; return the number of steps."""
     x, y, u, v, qc = fr.x, fr.y, fr.u, fr.v, fr.qcount
-    pieces: list[np.ndarray] = []
     walk = 0
     if fr.past_end(u, v, qc):
-        return pieces, 0
+        return 0
     limit = fr.limit(turns)
     budget = int(est) + 16  # steps proposed in total; the walk makes about est steps
     while walk < limit:
@@ -123,20 +190,20 @@ def _walk(fr: _ArcFrame, turns: int, est: float) -> tuple[list[tuple[np.ndarray,
         ok, stop, qc_at = _verify(fr, x, y, u, v, qc, xs, ys)
         take = min(ok, stop)
         if take:
-            pieces.append((xs[:take], ys[:take]))
+            out.put(xs[:take], ys[:take])
             walk += take
             x, y = int(xs[take - 1]), int(ys[take - 1])
             u, v, qc = x * fr.ai - fr.cx, y * fr.aj - fr.cy, qc_at(take - 1)
         if stop < ok:  # candidate `stop` is a verified step past the end ray: the walk ends
-            return pieces, walk
+            return walk
         if ok < len(xs):  # the rule disagrees with candidate `ok`: one exact reference step
             dx, dy, nu, nv = _arc_step(u, v, fr.q, fr.ai, fr.aj)
             nq = _quadrant(nu, nv)
             nqc = qc + ((nq - qc) % 4)
             if fr.past_end(nu, nv, nqc):
-                return pieces, walk
+                return walk
             x, y, u, v, qc = x + dx, y + dy, nu, nv, nqc
-            pieces.append((np.array([x], dtype=np.int64), np.array([y], dtype=np.int64)))
+            out.put(np.array([x], dtype=np.int64), np.array([y], dtype=np.int64))
             walk += 1
     raise InvalidArgument("arc walk did not reach its end")  # pragma: no cover - as in arc_walk
 

@@ -48,7 +48,7 @@ from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from .arcs import arc_path, path_fractions_moved
+from .arcs import arc_positions, path_fractions_moved
 from .monitor import LimitMonitor
 from .pulses import (
     LINE_CHUNK,
@@ -597,12 +597,13 @@ class Controller:
                      (self.pulse[i], self.pulse[j]))
         vector = self.settings.engine == "vector"
         if vector:  # the same positions as arc_walk, computed vectorized (controller/arcs.py)
-            walk = arc_path(*walk_args)
-            pts = walk.points
+            pos, sweep_rad, radius_mm, _ = arc_positions(len(p0), i, j, *walk_args)
         else:
             walk = arc_walk(*walk_args)
-            pts = np.array(walk.points, dtype=np.int64).reshape(-1, 2)
-        n = pts.shape[0]
+            sweep_rad, radius_mm = walk.sweep_rad, walk.radius_mm
+            pos = np.empty((len(walk.points), len(p0)), dtype=np.int64)
+            pos[:, [i, j]] = np.array(walk.points, dtype=np.int64).reshape(-1, 2)
+        n = pos.shape[0]
         if n == 0 and p1 != p0:  # no step in the plane (a circle below two pulses), only the helix moves
             rows = list(line_steps(p0, p1))
             plan = _Plan(seg, p0, p1, len(rows), positions=np.array(rows, dtype=np.int64),
@@ -611,17 +612,14 @@ class Controller:
                                                _path_length(self.machine.axes, [float(e - s) for s, e in zip(seg.start, seg.end)]))
             plan.accdec = self.mode is not Mode.CHECK
             return plan
-        pos = np.empty((n, len(p0)), dtype=np.int64)
-        pos[:, i] = pts[:, 0]
-        pos[:, j] = pts[:, 1]
         # helix axes follow the swept angle (float angle; rounding to the nearest pulse)
         helix = [k for k in range(len(p0)) if k not in (i, j) and p1[k] != p0[k]]
         if helix:
             cx, cy = float(centre[0]), float(centre[1])
             sgn = -1.0 if seg.clockwise else 1.0
             a0 = math.atan2(sgn * (float(s2[1]) - cy), float(s2[0]) - cx)
-            _helix_columns(pos, pts, (float(self.pulse[i]), float(self.pulse[j])), (cx, cy), sgn, a0,
-                           walk.sweep_rad, [(k, p0[k], p1[k]) for k in helix])
+            _helix_columns(pos, (i, j), (float(self.pulse[i]), float(self.pulse[j])), (cx, cy), sgn, a0,
+                           sweep_rad, [(k, p0[k], p1[k]) for k in helix])
         helix_len2 = 0.0
         for k in range(len(p0)):
             if k in (i, j):
@@ -638,7 +636,7 @@ class Controller:
         moving = [k for k in range(len(p0)) if k in (i, j) or k in helix]
         sigma, moved = path_fractions_moved(pos, p0, self.pulse, moving)
         plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma, moved_total=moved)
-        length = math.sqrt((walk.radius_mm * walk.sweep_rad) ** 2 + helix_len2)
+        length = math.sqrt((radius_mm * sweep_rad) ** 2 + helix_len2)
         if self.mode is Mode.CHECK:
             rate = min(float(a.rapid_mm_min) for k, a in enumerate(self.machine.axes) if k in (i, j) or p1[k] != p0[k])
             plan.base_time_s = length * 60 / rate
@@ -1013,7 +1011,7 @@ class Controller:
 ARC_CHUNK = 1 << 16
 
 
-def _helix_columns(pos, pts, pulse2, centre, sgn, a0, sweep, axes) -> None:
+def _helix_columns(pos, plane, pulse2, centre, sgn, a0, sweep, axes) -> None:
     """Fill the helix columns of ``pos``: each axis follows the swept angle, rounded to the nearest pulse.
 
     The angle of every planar position, unwrapped (:func:`_unwrap`), relative
@@ -1023,9 +1021,10 @@ def _helix_columns(pos, pts, pulse2, centre, sgn, a0, sweep, axes) -> None:
     is elementwise or carried exactly, so the result equals the whole-array
     computation bit for bit.
     """
-    n = len(pts)
+    n = len(pos)
     if not n:
         return
+    pi, pj = plane
     fi, fj = pulse2
     cx, cy = centre
     prev_raw = None  # last raw angle of the previous chunk (unwrap across chunks)
@@ -1034,7 +1033,7 @@ def _helix_columns(pos, pts, pulse2, centre, sgn, a0, sweep, axes) -> None:
     run_max = -np.inf
     for lo in range(0, n, ARC_CHUNK):
         hi = min(n, lo + ARC_CHUNK)
-        raw = np.arctan2(sgn * (pts[lo:hi, 1] * fj - cy), pts[lo:hi, 0] * fi - cx)
+        raw = np.arctan2(sgn * (pos[lo:hi, pj] * fj - cy), pos[lo:hi, pi] * fi - cx)
         ext = raw if prev_raw is None else np.concatenate(([prev_raw], raw))
         up, total = _unwrap_from(ext, total)
         if prev_raw is not None:

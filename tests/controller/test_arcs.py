@@ -196,7 +196,7 @@ def test_chunked_helix_columns_and_path_fractions_equal_the_whole_array_forms(r,
     old = sim.ARC_CHUNK, arcs_mod.FRACTION_CHUNK
     sim.ARC_CHUNK = arcs_mod.FRACTION_CHUNK = chunk
     try:
-        sim._helix_columns(pos, pts, (1.0, 1.0), (0.0, 0.0), sgn, a0, sweep, [(2, 5, 5 + dz)])
+        sim._helix_columns(pos, (0, 1), (1.0, 1.0), (0.0, 0.0), sgn, a0, sweep, [(2, 5, 5 + dz)])
         want = _old_helix_column(pts, (1.0, 1.0), (0.0, 0.0), sgn, a0, sweep, 5, 5 + dz)
         assert pos[:, 2].tolist() == want.tolist()
         pos = helix_chunk(pos, (r, 0, 5), (2,))
