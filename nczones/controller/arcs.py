@@ -262,12 +262,10 @@ def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.
     Applies when int64 cannot overflow (the same bound as the general check),
     the first step's tangent sign holds for every verified position (so the
     major axis moves monotonically, the quadrant changes at most once, and
-    the candidates' major-axis steps are right by construction), every minor
-    step is -1, 0 or +1, and no step has the two minor options tied (the rule's
-    tie order then matters: left to the general check).  Returns ``None`` otherwise.
-    A candidate step is the rule's step iff its residual ``|nu² + nv² - q|``
-    is the smallest of the three options and, for a minor move, strictly
-    below the no-move option's.
+    the candidates' major-axis steps are right by construction), the minor
+    offset stays above half a minor pulse (so the three residuals are ordered,
+    see the comment in the code), and every minor step is -1, 0 or +1.
+    Returns ``None`` otherwise.
     """
     ai, aj, q, cx, cy = fr.ai, fr.aj, fr.q, fr.cx, fr.cy
     n = len(xs)
@@ -307,27 +305,33 @@ def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.
     if m == 0:
         return None
     pos = b0 > 0
+    # every |Bp| (and the last B) above half a minor pulse, all of one sign: see below
     if pos:
-        if b0 <= 0 or int(B[:m].min()) <= 0:
+        if 2 * b0 <= sb or 2 * int(B[:m].min()) <= sb:
             return None
-    elif b0 >= 0 or int(B[:m].max()) >= 0:
+    elif -2 * b0 <= sb or -2 * int(B[:m].max()) <= sb:
         return None
     dmin = np.diff(mins[:m], prepend=m0)
     if int(dmin.max()) > 1 or int(dmin.min()) < -1:
         return None
+    # The three residuals e(w) = A^2 + w^2 - q for w = Bp - sb, Bp, Bp + sb: with T = 2 sb |Bp| > sb^2
+    # the inward one (towards B = 0) is below g = e(Bp) and the outward one above, so the rule
+    # (smallest |e|, the no-move option first on ties) moves inward iff 2g > T - sb^2, outward iff
+    # 2g < -(T + sb^2), else not at all; no tie between the two moves can decide anything.
     Bpm = Bp[:m]
-    g = A[:m] * A[:m] + Bpm * Bpm - q  # no minor move
-    t = (2 * sb) * Bpm
+    Am = A[:m]
+    h = Am * Am
+    h += Bpm * Bpm
+    h -= q
+    h *= 2
+    T = (2 * sb if pos else -2 * sb) * Bpm
     ss = sb * sb
-    f0 = np.abs(g)
-    fp = np.abs(g + t + ss)  # minor +1
-    fm = np.abs(g - t + ss)  # minor -1
-    best = np.minimum(f0, np.minimum(fp, fm))
-    if ((fp == fm) & (fp == best) & (f0 > best)).any():
-        return None
-    Bm = B[:m]
-    fc = np.abs(A[:m] * A[:m] + Bm * Bm - q)
-    bad = (fc != best) | ((dmin != 0) & (f0 == best))
+    inward = (h - T) > -ss
+    outward = (h + T) < -ss
+    expect = outward.view(np.int8) - inward.view(np.int8)  # in units of sign(B): -1 inward, +1 outward
+    if not pos:
+        np.negative(expect, out=expect)
+    bad = dmin != expect
     ok = int(np.argmax(bad)) if bad.any() else m
     # quadrants: B keeps its sign, A is monotone and crosses zero at most once
     if xmajor:  # (u, v) = (A, B): v > 0 -> 0 while u > 0, then 1; v < 0 -> 2 while u < 0, then 3
