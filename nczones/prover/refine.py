@@ -79,11 +79,34 @@ def _quarter_of(u, w, ccw: bool) -> tuple[int, bool]:
 
 
 def refine_arc(prover, seg: Segment, g: ArcGeom, params):
-    """Prove a helix or spiral arc piece by piece (see the module docstring).
+    r"""Prove a helix or spiral arc piece by piece (see the module docstring).
 
     Returns a ``_Outcome``: proved (engine ``"z3"``), a certified violation,
     or ``unknown`` whose reason names the budget or the solver limit.
-    Requires a rational centre (``g.centre is not None``).
+    Requires a rational centre (``g.centre is not None``).  Returns None when
+    the sweep has no positive angle (nothing to refine).
+
+    Examples
+    --------
+    A half-turn helix whose high half is over a raised step: the whole
+    enclosure reaches the step, the pieces do not.
+
+    >>> from dataclasses import replace
+    >>> from nczones.machine import parse_machine
+    >>> from nczones.motion import Plane, SegmentKind
+    >>> from nczones.zones import AllowedSet, Region, SteppedZone
+    >>> from nczones.prover.core import Prover
+    >>> from nczones.prover.geometry import arc_geom
+    >>> F = Fraction
+    >>> m = parse_machine('[machine]\naxes = ["X", "Y", "Z"]\n[machine.rapid]\nX = "1"\nY = "1"\nZ = "1"\n'
+    ...                   '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n')
+    >>> step = SteppedZone("table", "X", "Z", F(-50), (Region(F(0), F(4), None), Region(F(50), F(-20), None)))
+    >>> m = replace(m, allowed=AllowedSet((step,), m.allowed.tool_axis))
+    >>> seg = Segment(SegmentKind.ARC, (F(-10), F(0), F(10)), (F(10), F(0), F(0)), ("X", "Y", "Z"),
+    ...               plane=Plane.XY, clockwise=True, centre=(F(0), F(0)))
+    >>> out = refine_arc(Prover(m), seg, arc_geom(seg), ())
+    >>> out.violation is None and out.reason is None
+    True
     """
     from .core import _Outcome, _angle_bounds, _bases, _half_tan
 

@@ -125,3 +125,15 @@ def test_never_safe_when_an_exact_helix_point_is_outside(cx, cy, r, q0, n, cw, z
         assert m.allowed.violated_zones(dict(v.point), F(0))
     if res.verdict is Verdict.UNKNOWN:
         assert res.reasons
+
+
+def test_spiral_arc_near_the_step_is_proved_and_a_crossing_one_is_unsafe():
+    # start radius 10, end radius 11 (LinuxCNC moves a spiral): per piece the radius is enclosed
+    m = machine(4)
+    p = Prover(m)
+    assert p.check(helix((-10, 0, 10), (11, 0, 0), True)).violation is None
+    assert p.stats.get("refined_pieces", 0) >= 2
+    assert verify_segments([helix((-10, 0, 10), (11, 0, 0), True)], m).verdict is Verdict.SAFE
+    r = verify_segments([helix((-10, 0, 12), (11, 0, -10), True)], m)
+    assert r.verdict is Verdict.UNSAFE
+    assert m.allowed.violated_zones(dict(r.violations[0].point), F(0))
