@@ -1033,23 +1033,38 @@ def _helix_columns(pos, plane, pulse2, centre, sgn, a0, sweep, axes) -> None:
     run_max = -np.inf
     for lo in range(0, n, ARC_CHUNK):
         hi = min(n, lo + ARC_CHUNK)
-        raw = np.arctan2(sgn * (pos[lo:hi, pj] * fj - cy), pos[lo:hi, pi] * fi - cx)
+        yy = pos[lo:hi, pj] * fj
+        yy -= cy
+        if sgn < 0:
+            np.negative(yy, out=yy)  # == -1.0 * yy exactly
+        xx = pos[lo:hi, pi] * fi
+        xx -= cx
+        raw = np.arctan2(yy, xx, out=yy)
         ext = raw if prev_raw is None else np.concatenate(([prev_raw], raw))
-        up, total = _unwrap_from(ext, total)
+        up, total = _unwrap_from(ext, total)  # a fresh array: the steps below work in place
         if prev_raw is not None:
             up = up[1:]
         prev_raw = float(raw[-1])
-        ang = up - a0
+        ang = up
+        ang -= a0
         if shift is None:
             shift = 2 * math.pi * np.round(ang[0] / (2 * math.pi))
         ang -= shift
-        phi = np.clip(ang / sweep, 0.0, 1.0) if sweep > 0 else np.ones(hi - lo)
-        phi = np.maximum.accumulate(phi)
+        if sweep > 0:
+            phi = ang
+            phi /= sweep
+            np.clip(phi, 0.0, 1.0, out=phi)
+        else:
+            phi = np.ones(hi - lo)
+        np.maximum.accumulate(phi, out=phi)
         if phi[0] < run_max:
             np.maximum(phi, run_max, out=phi)
         run_max = float(phi[-1])
         for k, a, b in axes:
-            pos[lo:hi, k] = a + np.floor(phi * (b - a) + 0.5).astype(np.int64)
+            t = phi * (b - a)
+            t += 0.5
+            np.floor(t, out=t)
+            pos[lo:hi, k] = a + t.astype(np.int64)
     for k, _, b in axes:
         pos[n - 1, k] = b
 
