@@ -38,6 +38,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
+from ..exact import to_float
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import Block, Word
@@ -394,22 +395,23 @@ class Interpreter:
         key = (self.wcs, r, g5[ix], g5[iy])
         if key != self._rot_key:
             self._rot_key = key
-            t = float(r) * math.pi / 180.0  # LinuxCNC D2R
+            t = to_float(r) * math.pi / 180.0  # LinuxCNC D2R, in doubles as LinuxCNC computes
             self._cs = (math.cos(t), math.sin(t))
             self._u = list(self._rot_inv(self.pos[ix], self.pos[iy]))
 
     def _rot_fwd(self, ux: Fraction, uy: Fraction) -> tuple[Fraction, Fraction]:
         """Machine XY of a pre-rotation point (LinuxCNC ``rotate_and_offset_pos``, in doubles, taken exactly)."""
         c, s = self._cs
-        x, y = float(ux), float(uy)
+        x, y = to_float(ux), to_float(uy)
         g5 = self.g5x[self.wcs]
-        return Fraction((x * c - y * s) + float(g5[self._ix])), Fraction((x * s + y * c) + float(g5[self._iy]))
+        return (Fraction((x * c - y * s) + to_float(g5[self._ix])),
+                Fraction((x * s + y * c) + to_float(g5[self._iy])))
 
     def _rot_inv(self, mx: Fraction, my: Fraction) -> tuple[Fraction, Fraction]:
         """Pre-rotation XY (program + G92, mm) of a machine XY: rotation by -R in doubles, taken exactly."""
         c, s = self._cs
         g5 = self.g5x[self.wcs]
-        x, y = float(mx - g5[self._ix]), float(my - g5[self._iy])
+        x, y = to_float(mx - g5[self._ix]), to_float(my - g5[self._iy])
         return Fraction(x * c + y * s), Fraction(y * c - x * s)
 
     def _machine_xy(self, end: list[Fraction]) -> None:

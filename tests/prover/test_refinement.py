@@ -10,12 +10,12 @@ gives the brute-force sampler below.
 from dataclasses import replace
 from fractions import Fraction as F
 
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind
-from nczones.prover import Prover, Verdict, verify_segments
-from nczones.prover import refine
+from nczones.prover import Prover, Verdict, refine, verify_segments
 from nczones.prover.geometry import arc_geom
 from nczones.zones import AllowedSet, Region, SteppedZone
 
