@@ -558,7 +558,8 @@ class Prover:
             return _Outcome(reason=Reason("solver resource limit reached on an arc", seg.span, seg.block), engine="unknown")
         v = self._arc_witness(seg, g, ans.values, params)
         if v is None and g.centre is not None and (g.helix or not g.exact):
-            from .refine import refine_arc  # split the sweep and prove the pieces (see prover/refine.py)
+            # split the sweep and prove the pieces (see prover/refine.py)
+            from .refine import refine_arc
 
             out = refine_arc(self, seg, g, params)
             if out is not None:

@@ -108,7 +108,7 @@ def refine_arc(prover, seg: Segment, g: ArcGeom, params):
     >>> out.violation is None and out.reason is None
     True
     """
-    from .core import _Outcome, _angle_bounds, _bases, _half_tan
+    from .core import _angle_bounds, _bases, _half_tan, _Outcome
 
     for ends in (g.start, g.end):  # exact path points: a violation there needs no enclosure
         pmap = dict(zip(prover.axes, ends))
