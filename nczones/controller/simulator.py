@@ -807,30 +807,35 @@ class Controller:
         # remember where the path first left, for the overshoot report of a later sample
         end_pos = plan.position(plan.n)
         out = self.monitor.check(end_pos, tl) if compiled is None else compiled.violated(np.array(end_pos, dtype=np.int64))
-        if out and self._pending_outside is None:
-            self._pending_outside = self._first_outside(plan, plan.n, compiled)
-        elif not out:
-            self._pending_outside = None
+        self._pending_outside = self._first_outside(plan, plan.n, compiled) if out else None
         return plan.n, None
 
     def _first_outside(self, plan: _Plan, upto: int, compiled) -> tuple[tuple[int, ...], int] | None:
-        """The first step (<= upto) of this motion outside the allowed set (for the report)."""
-        if self._pending_outside is not None:
-            return self._pending_outside
+        """Where the excursion the monitor caught at step ``upto`` began (for the report).
+
+        That is the step after the last inside step of this motion up to
+        ``upto``; when every step so far is outside, the excursion began in an
+        earlier motion (``_pending_outside``), or at this motion's first step.
+        """
+        last_inside = None
         if compiled is not None:
             for lo in range(0, upto, LINE_CHUNK):
                 hi = min(upto, lo + LINE_CHUNK)
-                bad = compiled.bad(plan.chunk(lo, hi))
-                if bad.any():
-                    i = lo + int(np.argmax(bad)) + 1
-                    return plan.position(i), self.steps + i
+                inside = np.flatnonzero(~compiled.bad(plan.chunk(lo, hi)))
+                if inside.size:
+                    last_inside = lo + int(inside[-1]) + 1
+        else:
+            for i, p in enumerate(plan.iter_steps(), start=1):
+                if i > upto:
+                    break
+                if not self.monitor.check(p, self.tool_length):
+                    last_inside = i
+        if last_inside is None and self._pending_outside is not None:
+            return self._pending_outside
+        i = 1 if last_inside is None else last_inside + 1
+        if i > upto:
             return None
-        for i, p in enumerate(plan.iter_steps(), start=1):
-            if i > upto:
-                break
-            if self.monitor.check(p, self.tool_length):
-                return p, self.steps + i
-        return None
+        return plan.position(i), self.steps + i
 
     def _samples_at_rest(self, plan: _Plan, t_end: float) -> None:
         pos = tuple(self.counter)

@@ -1,12 +1,10 @@
 """Disagreements the contract suite found, kept as minimal tests.
 
-A strict xfail documents a known bug in another stage: it flips to a
-failure (XPASS) the day the bug is fixed, so the marker gets removed.
+Each was a bug when found; the test keeps it fixed.
 """
 
 from fractions import Fraction as F
 
-import pytest
 
 from nczones.controller import simulate
 from nczones.machine import parse_machine
@@ -31,8 +29,6 @@ max = { X = "70", Y = "70" }
 """
 
 
-@pytest.mark.xfail(strict=True, reason="controller: a periodic alarm reports first_outside/overshoot_pulses "
-                                       "of an earlier one-pulse excursion the path had already left")
 def test_periodic_alarm_reports_the_excursion_it_caught():
     m = parse_machine(MACHINE)
     axes = m.axis_names
