@@ -1170,16 +1170,16 @@ class Interpreter:
         """
         ix, iy = self._ix, self._iy
         reg = self.g5x[name]
-        t = float(self.rot[name]) * math.pi / 180.0
+        t = to_float(self.rot[name]) * math.pi / 180.0
         c, s = math.cos(t), math.sin(t)
-        x, y = float(self.pos[ix] - reg[ix]), float(self.pos[iy] - reg[iy])
+        x, y = to_float(self.pos[ix] - reg[ix]), to_float(self.pos[iy] - reg[iy])
         u = [Fraction(x * c + y * s), Fraction(y * c - x * s)]
         for i, aw in axis_words:
             if i in (ix, iy):
                 u[0 if i == ix else 1] = self._mm(aw.value, i) + self.g92[i]
-        ux, uy = float(u[0]), float(u[1])
-        reg[ix] = Fraction(float(self.pos[ix]) - (ux * c - uy * s))
-        reg[iy] = Fraction(float(self.pos[iy]) - (ux * s + uy * c))
+        ux, uy = to_float(u[0]), to_float(u[1])
+        reg[ix] = Fraction(to_float(self.pos[ix]) - (ux * c - uy * s))
+        reg[iy] = Fraction(to_float(self.pos[iy]) - (ux * s + uy * c))
         self.dep_g5x[name][ix] = {}
         self.dep_g5x[name][iy] = {}
 
