@@ -18,7 +18,7 @@ from ..errors import SourceSpan
 __all__ = ["Word", "Block"]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class Word:
     """One word: an upper-case letter and its exact value.
 
@@ -30,6 +30,16 @@ class Word:
     value: Fraction
     span: SourceSpan
     text: str = ""
+
+    # Equality by value, not by class: the lexer and the fast path build
+    # subclasses whose span is computed on first read.
+    def __eq__(self, other):
+        if isinstance(other, Word):
+            return (self.letter, self.value, self.span, self.text) == (other.letter, other.value, other.span, other.text)
+        return NotImplemented
+
+    def __hash__(self):
+        return hash((self.letter, self.value, self.span, self.text))
 
 
 @dataclass(frozen=True, slots=True)

@@ -314,14 +314,6 @@ class _ShiftedWord(Word):
     def span(self, value: SourceSpan) -> None:
         object.__setattr__(self, "_sp", value)
 
-    def __eq__(self, other):
-        if isinstance(other, Word):
-            return (self.letter, self.value, self.span, self.text) == (other.letter, other.value, other.span, other.text)
-        return NotImplemented
-
-    def __hash__(self):
-        return hash((self.letter, self.value, self.span, self.text))
-
 
 def _shifted_word(w: Word, offset: int) -> Word:
     n = object.__new__(_ShiftedWord)

@@ -173,14 +173,6 @@ class _LazyWord(Word):
     def span(self, value: SourceSpan) -> None:
         object.__setattr__(self, "_at", value)
 
-    def __eq__(self, other):
-        if isinstance(other, Word):
-            return (self.letter, self.value, self.span, self.text) == (other.letter, other.value, other.span, other.text)
-        return NotImplemented
-
-    def __hash__(self):
-        return hash((self.letter, self.value, self.span, self.text))
-
 
 _lazy_at = _LazyWord._at.__set__  # type: ignore[attr-defined]
 
