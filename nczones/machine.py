@@ -95,6 +95,10 @@ class Machine:
     source: str = "<machine>"
     warnings: tuple[Diagnostic, ...] = ()
     sections: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
+    #: "none" (G41/G42 make the result unknown) or "linuxcnc" (modelled as LinuxCNC's interpreter does).
+    cutter_compensation: str = "none"
+    #: Tool diameters by tool number (``[tool_diameters]`` T<n>), for G41/G42 D<n>.
+    tool_diameters: Mapping[int, Fraction] = field(default_factory=lambda: MappingProxyType({}))
 
     @property
     def axis_names(self) -> tuple[str, ...]:
@@ -405,11 +409,13 @@ def _per_axis(
     return out
 
 
-_TOP_KEYS = ("machine", "offsets", "tool_lengths", "zones")
+_TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones")
 _MACHINE_KEYS = (
     "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
-    "reference", "start", "tool_axis", "modal",
+    "reference", "start", "tool_axis", "modal", "cutter_compensation",
 )
+#: Values of ``[machine] cutter_compensation``.
+CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
 _ZONE_COMMON = ("name", "kind", "forbid", "point")
 _ZONE_KEYS = {
     "stepped": _ZONE_COMMON + ("reference_axis", "limited_axis", "from", "regions"),
@@ -603,6 +609,30 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         if q is not None:
             tool_lengths[int(m.group(1))] = q
 
+    # cutter compensation and tool diameters
+    comp_raw = mt.get("cutter_compensation", "none")
+    comp = comp_raw if comp_raw in CUTTER_COMPENSATION_MODES else "none"
+    if comp_raw not in CUTTER_COMPENSATION_MODES:
+        rd.report("ZN114", f"[machine] cutter_compensation: {_written(comp_raw)} is not allowed; use \"none\" "
+                  "(G41/G42 make the result unknown) or \"linuxcnc\" (modelled as LinuxCNC does it)",
+                  rd.loc.key("cutter_compensation", mline))
+    tool_diameters: dict[int, Fraction] = {}
+    raw_td = data.get("tool_diameters", {})
+    dline = rd.loc.section("tool_diameters")
+    if not isinstance(raw_td, Mapping):
+        rd.report("ZN103", f"[tool_diameters]: expected a table such as T1 = \"6\", got {_written(raw_td)}", None)
+        raw_td = {}
+    for key, value in raw_td.items():
+        m = re.fullmatch(r"T(\d{1,4})", key)
+        span = rd.loc.key(key, dline)
+        if not m:
+            rd.report("ZN101", f"[tool_diameters]: {_written(key)} is not a tool number; write T followed by its "
+                      "number, such as T1", span)
+            continue
+        q = _number(rd, value, f"[tool_diameters] {key}", span)
+        if q is not None:
+            tool_diameters[int(m.group(1))] = q
+
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
 
     sections: dict[str, Any] = {}
@@ -624,7 +654,8 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         monitor_period_ms=period, reference=ref_t, start=start_t,
         offsets=MappingProxyType(offsets), tool_lengths=MappingProxyType(tool_lengths),
         allowed=allowed, modal=modal, tool_axis=tool_axis, source=rd.path,
-        sections=MappingProxyType(sections),
+        sections=MappingProxyType(sections), cutter_compensation=comp,
+        tool_diameters=MappingProxyType(tool_diameters),
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.
     bad = allowed.violated_zones(machine.point(start_t))

@@ -125,6 +125,10 @@ class Interpretation:
         finish = getattr(self.interpreter, "finish", None)
         if finish is not None:
             finish()
+        left = getattr(self.interpreter, "_out", None)
+        if left:  # moves cutter compensation held until the end of the text
+            yield MotionChunk(self.interpreter.axes, None, objects=tuple(left), file=self.file)
+            self.interpreter._out = []
         self.finished = True
 
     @property

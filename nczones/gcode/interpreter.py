@@ -42,7 +42,7 @@ from ..exact import to_float
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import Block, Word
-from .lexer import _fraction
+from .lexer import _fraction, _fraction_raw
 from .splines import SPLINE_CODES, spline_block, spline_pending
 
 _NAME_PENDING = "NURBS"
@@ -103,10 +103,14 @@ MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90
 
 # Codes that cannot be modelled exactly: key -> reason.
 _UNSUPPORTED_G = {
-    410: "cutter radius compensation (G41) offsets the path by the tool radius; nczones does not model it",
-    420: "cutter radius compensation (G42) offsets the path by the tool radius; nczones does not model it",
-    411: "dynamic cutter radius compensation (G41.1) is not modelled",
-    421: "dynamic cutter radius compensation (G42.1) is not modelled",
+    410: "cutter radius compensation (G41) offsets the path by the tool radius, and controls differ in how; "
+         "if this machine is LinuxCNC, set cutter_compensation = \"linuxcnc\" in [machine] to model it",
+    420: "cutter radius compensation (G42) offsets the path by the tool radius, and controls differ in how; "
+         "if this machine is LinuxCNC, set cutter_compensation = \"linuxcnc\" in [machine] to model it",
+    411: "dynamic cutter radius compensation (G41.1) offsets the path by the tool radius; if this machine is "
+         "LinuxCNC, set cutter_compensation = \"linuxcnc\" in [machine] to model it",
+    421: "dynamic cutter radius compensation (G42.1) offsets the path by the tool radius; if this machine is "
+         "LinuxCNC, set cutter_compensation = \"linuxcnc\" in [machine] to model it",
     760: "threading cycle (G76) is not modelled",
     382: "probing (G38.2) stops at a position that depends on the part",
     383: "probing (G38.3) stops at a position that depends on the part",
@@ -149,6 +153,8 @@ _HARMLESS_M = {0, 1, 3, 4, 5, 7, 8, 9, 19, 48, 49, 50, 51, 52, 53, 60, 62, 63, 6
 _M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8,
             48: 9, 49: 9, 50: 9, 51: 9, 52: 9, 53: 9, 62: 5, 63: 5, 64: 5, 65: 5, 66: 5, 67: 5,
             68: 5, 70: 10, 71: 10, 72: 10, 73: 10}
+#: Spindle and coolant M codes: no effect on motion, and a plain move may carry one (Interpreter._lean).
+_LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
 _CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
 _AXIS_USERS = {100: "G10", 280: "G28", 300: "G30", 920: "G92", 520: "G52"}
 
@@ -182,26 +188,51 @@ def _gkey(value: Fraction) -> int | None:
 _new = object.__new__
 # Segment slot setters: building a frozen dataclass through __init__ costs ~3x more
 # (one object.__setattr__ per field); the result is an ordinary, equal Segment.
-_SEG_SETTERS = tuple(getattr(Segment, f).__set__ for f in (
-    "kind", "start", "end", "axes", "block", "span", "tool_length", "feed_mm_min", "plane", "clockwise",
-    "centre", "radius", "turns", "dwell_s", "derived", "tool_register", "deps_start", "deps_end", "extra"))
+(_s_kind, _s_start, _s_end, _s_axes, _s_block, _s_span, _s_tool, _s_feed, _s_plane, _s_cw, _s_centre, _s_radius,
+ _s_turns, _s_dwell, _s_derived, _s_register, _s_deps_start, _s_deps_end, _s_extra) = (
+    getattr(Segment, f).__set__ for f in (
+        "kind", "start", "end", "axes", "block", "span", "tool_length", "feed_mm_min", "plane", "clockwise",
+        "centre", "radius", "turns", "dwell_s", "derived", "tool_register", "deps_start", "deps_end", "extra"))
 
 
-def _segment(*values) -> Segment:
-    """``Segment(*values)`` (all 19 fields, in order) without the frozen-dataclass overhead."""
+def _segment(kind, start, end, axes, block, span, tool_length, feed, plane, clockwise, centre, radius, turns,
+             dwell, derived, register, deps_start, deps_end, extra) -> Segment:
+    """``Segment(...)`` (all 19 fields, in order) without the frozen-dataclass overhead."""
     seg = _new(Segment)
-    for setter, v in zip(_SEG_SETTERS, values):
-        setter(seg, v)
+    _s_kind(seg, kind)
+    _s_start(seg, start)
+    _s_end(seg, end)
+    _s_axes(seg, axes)
+    _s_block(seg, block)
+    _s_span(seg, span)
+    _s_tool(seg, tool_length)
+    _s_feed(seg, feed)
+    _s_plane(seg, plane)
+    _s_cw(seg, clockwise)
+    _s_centre(seg, centre)
+    _s_radius(seg, radius)
+    _s_turns(seg, turns)
+    _s_dwell(seg, dwell)
+    _s_derived(seg, derived)
+    _s_register(seg, register)
+    _s_deps_start(seg, deps_start)
+    _s_deps_end(seg, deps_end)
+    _s_extra(seg, extra)
     return seg
 
 
 def _qadd(a: Fraction, b: Fraction) -> Fraction:
     """``a + b`` for Fractions, with a shortcut for equal denominators (decimal inputs)."""
-    da = a.denominator
-    db = b.denominator
+    da = a._denominator
+    db = b._denominator
     if da == db:
-        return _fraction(a.numerator + b.numerator, da)
-    return _fraction(a.numerator * db + b.numerator * da, da * db)
+        return _fraction(a._numerator + b._numerator, da)
+    return _fraction(a._numerator * db + b._numerator * da, da * db)
+
+
+if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
+    def _qadd(a: Fraction, b: Fraction) -> Fraction:  # noqa: F811
+        return a + b
 
 
 def _gname(key: int) -> str:
@@ -313,6 +344,12 @@ class Interpreter:
         self.cycle_q: Fraction | None = None
         self.comp_on = False
         self.comp_just_off = False
+        #: LinuxCNC cutter radius compensation, when the machine file asks for it (nczones.gcode.cutter_comp)
+        self._comp = None
+        if getattr(machine, "cutter_compensation", "none") == "linuxcnc":
+            from .cutter_comp import CutterComp
+
+            self._comp = CutterComp(self)
         self.tool_selected = 0
         self.tool_in_spindle = 0
         self.tlo = _ZERO
@@ -449,6 +486,8 @@ class Interpreter:
         if self._spline is not None:
             self._unknown(_NAME_PENDING, spline_pending(self))
             self._spline = None
+        if self._comp is not None:
+            self._comp.program_end()
 
     @property
     def stopped(self) -> bool:
@@ -619,9 +658,11 @@ class Interpreter:
                             w,
                         )
                     axis_words.append((i, w))
-        if not gcodes and not mcodes and len(words) == len(axis_words) and axis_words and not self.unsupported:
-            # the common modal block: axis words only
-            self._motion_block(block, axis_words, words, None, False)
+        if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and self._lean(gcodes, mcodes, words, axis_words):
+            if self.track or self._machine_at is not None:
+                self._motion_block(block, axis_words, words, gcodes[0] if gcodes else None, False)
+            else:
+                self._lean_move(axis_words)
             return
         # ---- modal group checks
         groups: dict[int, tuple[int, Word]] = {}
@@ -665,6 +706,8 @@ class Interpreter:
         # unsupported codes: stop emitting, keep checking blocks
         for k, w in gcodes:
             if k in _UNSUPPORTED_G:
+                if k in (410, 420, 411, 421) and self._comp is not None:
+                    continue
                 self._unknown(_gname(k), _UNSUPPORTED_G[k], w)
                 if k in (410, 420, 411, 421):
                     self.comp_on = True
@@ -683,6 +726,8 @@ class Interpreter:
             scope = self._scopes[-1]
             self._m73 = [e for e in self._m73 if e[1] is not scope]
             self._m73.append((len(self._scopes), scope, self._saved_modal))
+        if self._comp is not None and self._comp.side is not None:
+            self._comp.check_block(groups, mcodes, words, axis_words, self.motion)
         # ---- order of execution
         # 2-3: feed mode, F
         if 5 in groups:
@@ -716,7 +761,10 @@ class Interpreter:
                 raise self._error("GC209", f"dwell time {p.text} is negative", p)
             if "X" in words and g1 is None:
                 self._unknown("G4 X", "G4 with an X word dwells on Fanuc controls but moves X on LinuxCNC", words["X"])
-            self._emit(SegmentKind.DWELL, list(self.pos), dwell=p.value)
+            if self._comp is not None:
+                self._comp.dwell(p.value)
+            else:
+                self._emit(SegmentKind.DWELL, list(self.pos), dwell=p.value)
         # 11: plane
         if 2 in groups:
             k = groups[2][0]
@@ -728,7 +776,9 @@ class Interpreter:
             self.inch = groups[6][0] == 200
             self.unset.discard("units")
         # 13: cutter comp
-        if 7 in groups:
+        if 7 in groups and self._comp is not None:
+            self._comp.select(groups[7][0], groups[7][1], words)
+        elif 7 in groups:
             if groups[7][0] == 400:
                 if self.comp_on:
                     self.comp_just_off = True
@@ -819,8 +869,83 @@ class Interpreter:
                 scope = self._scopes[-1]
                 self._m73 = [e for e in self._m73 if e[1] is not scope]
         # 21: stop
+        if self._comp is not None:
+            if 2 in mset or 30 in mset:
+                self._comp.program_end()
+            elif 0 in mset or 1 in mset or 60 in mset:
+                self._comp.stop()
         if 2 in mset or 30 in mset:
             raise _Stop
+
+    def _lean(self, gcodes, mcodes, words, axis_words) -> bool:
+        """Apply the modal part of a plain straight move and return True, or return False untouched.
+
+        A plain move is at most one of G0/G1, axis words, F, S and at most
+        one spindle/coolant M code (M3 M4 M5 M7 M8 M9), in a state with
+        nothing pending (no unknown code, rotation, spline, cutter
+        compensation or M73 frame).  For such a block the general path does
+        nothing but set F and the motion mode before the move; every
+        check it makes (modal groups, R/I/J/K users, G53) cannot fire.
+        """
+        if self.unsupported or self._u is not None or self._spline is not None or self.comp_on \
+                or self.comp_just_off or self._m73:
+            return False
+        extra = len(words) - len(axis_words)
+        f = words.get("F")
+        if extra and extra != (f is not None) + ("S" in words):
+            return False
+        if mcodes and mcodes[0][0] not in _LEAN_M:
+            return False
+        if gcodes:
+            k = gcodes[0][0]
+            if k != 0 and k != 10:
+                return False
+        elif self.motion != 0 and self.motion != 10:
+            return False
+        if f is not None:
+            if f.value < 0:
+                return False
+            self.feed = f.value
+        if gcodes:
+            self._cycle_il = None
+            self._last_cycle = None
+            self.motion = k
+        return True
+
+    def _lean_move(self, axis_words) -> None:
+        """The G0/G1 move of a plain block: ``_motion_block``, ``_program_target`` and ``_emit``
+        for the one case they reduce to (no G53, rotation, tracking or pending machine position).
+        ``tests/gcode/test_lean_path.py`` holds the two paths to identical segments."""
+        if self.unset:
+            self._note_assumed(("units", "distance", "offset"))
+        pos = self.pos
+        end = list(pos)
+        inch = self.inch
+        rotary = self.rotary
+        if self.absolute:
+            off = self.off
+            for i, w in axis_words:
+                v = w.value
+                end[i] = _qadd(v * INCH if inch and not rotary[i] else v, off[i])
+        else:
+            for i, w in axis_words:
+                v = w.value
+                end[i] = _qadd(end[i], v * INCH if inch and not rotary[i] else v)
+        fmm = None
+        if self.motion == 10:
+            kind = SegmentKind.LINE
+            if self.feed_mode == 94:
+                if self.feed == 0:
+                    self._check_feed()
+                fmm = self.feed * INCH if inch else self.feed
+        else:
+            kind = SegmentKind.RAPID
+        self._out.append(_segment(kind, tuple(pos), tuple(end), self.axes, self._block.index, self._span, self.tlo,
+                                  fmm, None, False, None, None, 0, None, "", self.tool_register, (), (), ()))
+        self.segment_count += 1
+        self.kind_counts[kind] += 1
+        self.pos = end
+        self._u_next = None
 
     # ------------------------------------------------------------------ pieces
     _saved_modal: tuple | None = None
@@ -943,10 +1068,18 @@ class Interpreter:
             self._note_assumed(("units", "distance") if g53 else ("units", "distance", "offset"))
             end, deps = self._program_target(axis_words, g53)
             if motion == 0:
-                self._emit(SegmentKind.RAPID, end, end_deps=deps)
+                if self._comp is not None and self._comp.active:
+                    self._comp.straight(SegmentKind.RAPID, end, deps)
+                else:
+                    self._emit(SegmentKind.RAPID, end, end_deps=deps)
             else:
                 self._check_feed()
-                self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+                if self._comp is not None and self._comp.active:
+                    self._comp.straight(SegmentKind.LINE, end, deps)
+                else:
+                    self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+        elif motion in (20, 30) and self._comp is not None and self._comp.active:
+            self._comp.arc(block, axis_words, words, motion == 20)
         elif motion in (20, 30):
             self._arc(block, axis_words, words, motion == 20, g53)
         elif motion in (330, 331):

@@ -30,6 +30,7 @@ from pathlib import Path
 import pytest
 
 from nczones.errors import GcodeError
+from nczones.exact import format_decimal
 from nczones.gcode import interpret
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
@@ -87,16 +88,20 @@ def _machine(tooltable: Path | None):
     tools = ""
     if tooltable is not None and tooltable.is_file():
         lines = []
+        diameters = []
         for line in tooltable.read_text().splitlines():
             m = re.match(r"\s*T(\d+)\b.*?\bZ([-+]?[\d.]+)", line.split(";")[0], re.I)
             if m:
                 lines.append(f'H{int(m.group(1))} = "{m.group(2)}"')
-        tools = "[tool_lengths]\n" + "\n".join(lines) + "\n"
+            m = re.match(r"\s*T(\d+)\b.*?\bD([-+]?[\d.]+)", line.split(";")[0], re.I)
+            if m:  # rs274's tool table diameters are inches (the standalone interpreter's user units)
+                diameters.append(f'T{int(m.group(1))} = "{format_decimal(Fraction(m.group(2)) * Fraction(254, 10))}"')
+        tools = "[tool_lengths]\n" + "\n".join(lines) + "\n" + "[tool_diameters]\n" + "\n".join(diameters) + "\n"
     axes = ["X", "Y", "Z", "A", "B", "C", "U", "V", "W"]
     rapid = "\n".join(f'{a} = "1000"' for a in axes)
     ref = "\n".join(f'{a} = "0"' for a in axes)
     text = (
-        f"[machine]\naxes = {axes!r}\npulse = \"0.0001\"\n".replace("'", '"')
+        f"[machine]\naxes = {axes!r}\npulse = \"0.0001\"\ncutter_compensation = \"linuxcnc\"\n".replace("'", '"')
         + f"[machine.rapid]\n{rapid}\n[machine.reference]\n{ref}\n"
         + tools
     )

@@ -230,9 +230,7 @@ def test_decimal_moves_match_fraction_arithmetic(moves):
 # --------------------------------------------------------------------------- LinuxCNC bad programs
 
 #: bad/ programs that end ``unknown`` instead of being rejected, with the reason.
-BAD_UNKNOWN = {
-    "ccomp-gouging.ngc": "gouging detection needs the cutter-compensation geometry, which is unsupported (unknown)",
-}
+BAD_UNKNOWN: dict[str, str] = {}  # ccomp-gouging.ngc is rejected since cutter comp is modelled (GC324)
 
 
 @pytest.mark.skipif(not BAD.is_dir(), reason="corpus not available")

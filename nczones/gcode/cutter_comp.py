@@ -1,0 +1,769 @@
+"""LinuxCNC cutter radius compensation (G41/G42, G41.1/G42.1, G40), as its interpreter computes it.
+
+Opt-in per machine (``[machine] cutter_compensation = "linuxcnc"``): other
+controls (Fanuc type A/B/C start-up, intersection vectors at convex corners)
+move differently, so with the default ``"none"`` G41/G42 make the result
+``unknown``.
+
+What LinuxCNC does (``interp_convert.cc`` ``convert_straight_comp1/2``,
+``convert_arc_comp1/2``; ``interp_queue.cc``), reimplemented here:
+
+* The first move after G41/G42 (a line or an arc) is an entry move: it ends
+  one tool radius from its programmed end point, perpendicular to the entry
+  direction (lines) or along the arc's radius (arcs).
+* Every later move ends one radius to the side of its programmed end point.
+  At a **convex** corner (the turn exceeds 0.05 rad) a feed inserts an arc of
+  the tool radius around the programmed corner point (a rapid inserts a
+  straight traverse instead); at a **concave** corner the previous move is
+  held back in a queue and its end point is moved back to where the tool
+  touches both elements.  If that reverses the previous move (the tool does
+  not fit), the program is rejected: "... in concave corner cannot be reached
+  by the tool without gouging".
+* G40 and program end (M2/M30, and M0/M1/M60) flush the queue; after G40 the
+  interpreter believes the tool is at the programmed point while it stands at
+  the compensated one, so the next move starts where the machine is.
+
+Numbers: LinuxCNC computes this geometry in IEEE doubles (angles, sines,
+square roots).  So does this module, with the same formulas in the same
+order, in the program's frame and units (program coordinates without the
+work offsets, inch under G20); every resulting double is then taken
+**exactly** as a rational (``Fraction(float)``) and shifted by the exact
+offsets, the stance of :mod:`nczones.gcode.expr` for expressions.  Floats
+appear only in the ``_f*`` helpers and local variables of this module; every
+emitted segment holds exact Fractions.  The arc inserted at a convex corner
+has the exact programmed corner point as its centre.
+
+Invariants
+----------
+* Emitted segments are continuous: each starts where the previous one ended
+  (a queued move's end may still move before it is emitted).
+* Each segment keeps the block index and span of the block that programmed
+  it; a corner arc carries the span of the block it precedes and
+  ``derived="cutter comp corner"``.
+* The programmed position (``Interpreter.pos``) stays the programmed point;
+  the compensated position lives here.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+from ..errors import Diagnostic, GcodeError
+from ..exact import to_float
+from ..motion import PLANE_AXES, Plane, SegmentKind
+
+__all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD"]
+
+#: LinuxCNC TOLERANCE_CONCAVE_CORNER: turns smaller than this (radians) need no corner arc.
+CONCAVE_TOLERANCE_RAD = 0.05
+_TOLERANCE_EQUAL = 1e-6
+_LEFT, _RIGHT = 2, 1
+_INCH = Fraction(254, 10)
+_PI = math.pi
+_HALF_PI = math.pi / 2
+
+#: GC codes of cutter compensation errors.
+GC_STATE = "GC320"      # comp turned on in a wrong state (plane, already on, D word)
+GC_TOOL = "GC321"       # tool diameter missing
+GC_ENTRY = "GC322"      # entry move / arc too short
+GC_RADIUS = "GC323"     # tool radius not less than arc radius
+GC_GOUGE = "GC324"      # concave corner the tool cannot reach
+GC_FORBIDDEN = "GC325"  # an operation LinuxCNC refuses while comp is on
+GC_BUG = "GC329"        # LinuxCNC's own consistency checks ("BUG: ...")
+
+
+@dataclass(slots=True)
+class _Move:
+    """A move waiting in LinuxCNC's queue (in-plane end as doubles in program frame/units)."""
+
+    kind: SegmentKind
+    a: float
+    b: float
+    end: list  # machine end, exact, all axes (plane axes replaced from a, b when emitted)
+    da: float = 0.0  # programmed direction (lines), for the gouging check
+    db: float = 0.0
+    ca: float = 0.0  # centre (arcs), doubles
+    cb: float = 0.0
+    centre: tuple | None = None  # exact machine centre to emit (arcs)
+    turn: int = 0  # arcs: +-(turns + 1), positive counterclockwise
+    sweep: float = 0.0  # LinuxCNC original_turns (radians)
+    block: int = 0
+    span: object = None
+    feed: Fraction | None = None
+    derived: str = ""
+    deps: list | None = None
+    dwell: Fraction | None = None
+
+
+def _find_turn(x1: float, y1: float, cx: float, cy: float, turn: int, x2: float, y2: float) -> float:
+    """Signed sweep (radians) of an arc from (x1, y1) to (x2, y2) around (cx, cy) (LinuxCNC ``find_turn``)."""
+    if turn == 0:
+        return 0.0
+    alpha = math.atan2(y1 - cy, x1 - cx)
+    beta = math.atan2(y2 - cy, x2 - cx)
+    if turn > 0:
+        if beta <= alpha:
+            beta = beta + 2 * _PI
+        return (beta - alpha) + (turn - 1) * (2 * _PI)
+    if alpha <= beta:
+        alpha = alpha + 2 * _PI
+    return (beta - alpha) + (turn + 1) * (2 * _PI)
+
+
+def _inside(side: int, turn: int) -> bool:
+    """LinuxCNC TOOL_INSIDE_ARC: the tool is on the centre's side of the arc."""
+    return (side == _LEFT and turn > 0) or (side == _RIGHT and turn < 0)
+
+
+def _arc_centre_r(op: tuple[float, float], e: tuple[float, float], radius: float, cw: bool,
+                  tolerance: float) -> tuple[float, float] | None:
+    """Centre of an R-format arc in doubles (LinuxCNC ``arc_data_r``); None if R cannot reach."""
+    (cx, cy), (ex, ey) = op, e
+    abs_radius = abs(radius)
+    mx, my = (ex + cx) / 2.0, (ey + cy) / 2.0
+    half = math.hypot(mx - ex, my - ey)
+    if half - abs_radius > tolerance:
+        return None
+    if half / abs_radius > 1 - 1e-12:
+        half = abs_radius
+    if (cw and radius > 0) or (not cw and radius < 0):
+        theta = math.atan2(ey - cy, ex - cx) - _HALF_PI
+    else:
+        theta = math.atan2(ey - cy, ex - cx) + _HALF_PI
+    turn2 = math.asin(half / abs_radius)
+    offset = abs_radius * math.cos(turn2)
+    return mx + offset * math.cos(theta), my + offset * math.sin(theta)
+
+
+@dataclass
+class CutterComp:
+    """Cutter compensation state and LinuxCNC's move queue for one :class:`Interpreter`.
+
+    The interpreter calls :meth:`select` for G40/G41/G42/G41.1/G42.1,
+    :meth:`check_block` for every block while compensation is on,
+    :meth:`straight` and :meth:`arc` for moves while it is :attr:`active`,
+    :meth:`dwell`, :meth:`stop` (M0/M1/M60) and :meth:`program_end`.
+
+    Examples
+    --------
+    >>> from nczones.machine import parse_machine
+    >>> from nczones.gcode.interpreter import Interpreter, blocks_from_words
+    >>> m = parse_machine('''
+    ... [machine]
+    ... axes = ["X", "Y"]
+    ... cutter_compensation = "linuxcnc"
+    ... [machine.rapid]
+    ... X = "1000"
+    ... Y = "1000"
+    ... [machine.reference]
+    ... X = "0"
+    ... Y = "0"
+    ... ''')
+    >>> it = Interpreter(m)
+
+    A right turn with the tool on the left is a convex corner: an arc of the
+    tool radius around the programmed corner (10, 0), exactly:
+
+    >>> prog = [("G41.1", "D2", "G1", "X10", "F100"), ("X10", "Y-10"), ("G40", "X20")]
+    >>> segs = [s for c in it.run(blocks_from_words(prog)) for s in c.segments()]
+    >>> [(s.kind.name, s.derived, [round(float(v), 9) for v in s.end]) for s in segs]
+    [('LINE', '', [10.0, 1.0]), ('ARC', 'cutter comp corner', [11.0, 0.0]), ('LINE', '', [11.0, -10.0]), ('LINE', '', [20.0, -10.0])]
+    >>> segs[1].centre, segs[1].clockwise
+    ((Fraction(10, 1), Fraction(0, 1)), True)
+    """
+
+    it: object
+    side: int | None = None
+    radius: float = 0.0
+    first: bool = True
+    queue: list = field(default_factory=list)
+    endpoint: tuple[float, float] = (0.0, 0.0)
+    endpoint_valid: bool = False
+    cur: tuple[float, float] = (0.0, 0.0)  # compensated position, program frame (doubles)
+    prog: tuple[float, float] = (0.0, 0.0)  # programmed position, program frame (doubles)
+    machine_now: tuple | None = None  # where the last emitted segment ended (machine, exact)
+    deps_now: list | None = None
+
+    # ------------------------------------------------------------------ frame
+    def _axes(self) -> tuple[int, int, int | None]:
+        it = self.it
+        a, b, n = PLANE_AXES[it.plane]
+        return it.index[a], it.index[b], it.index.get(n)
+
+    def _unit(self) -> Fraction:
+        return _INCH if self.it.inch else Fraction(1)
+
+    def _fprog(self, i: int, machine_value: Fraction) -> float:
+        """Program-frame double of an exact machine coordinate (what LinuxCNC holds)."""
+        return to_float((machine_value - self.it.off[i]) / self._unit())
+
+    def _fmachine(self, i: int, value: float) -> Fraction:
+        """Exact machine coordinate of a program-frame double."""
+        return Fraction(value) * self._unit() + self.it.off[i]
+
+    def _error(self, code: str, message: str, word=None) -> GcodeError:
+        span = word.span if word is not None else self.it._span
+        return GcodeError(Diagnostic(code, message, span))
+
+    @property
+    def active(self) -> bool:
+        """Compensation on with a positive radius (LinuxCNC compensates only then)."""
+        return self.side is not None and self.radius > 0.0
+
+    # ------------------------------------------------------------------ G40 / G41 / G42
+    def select(self, key: int, word, words: dict) -> None:
+        """G40 (key 400), G41 (410), G42 (420), G41.1 (411), G42.1 (421) (``convert_cutter_compensation``)."""
+        it = self.it
+        if key == 400:
+            self.off()
+            return
+        name = f"G{key // 10}" + (f".{key % 10}" if key % 10 else "")
+        if it.plane not in (Plane.XY, Plane.XZ):
+            raise self._error(GC_STATE, f"{name}: cutter radius compensation is only allowed in the XY (G17) and "
+                              f"XZ (G18) planes; G{int(it.plane)} is active", word)
+        if self.side is not None:
+            raise self._error(GC_STATE, f"{name}: cannot turn cutter radius compensation on when it is already on "
+                              "(write G40 first)", word)
+        side = _LEFT if key in (410, 411) else _RIGHT
+        d = words.get("D")
+        if key in (411, 421):
+            if d is None:
+                raise self._error(GC_STATE, f"{name} with no D word: the D word gives the tool diameter", word)
+            radius = to_float(d.value) / 2
+            lw = words.get("L")
+            if lw is not None:
+                if it.plane is not Plane.XZ:
+                    raise self._error(GC_STATE, f"{name} with L word, but plane is not G18", lw)
+                if lw.value not in (0, 9):
+                    it._unknown(name, f"{name} L{lw.value}: the lathe tool orientation shifts the controlled point "
+                                "(LinuxCNC latheorigin); not modelled", lw)
+        else:
+            if d is None:
+                tool = it.tool_in_spindle
+            else:
+                tool = int(to_float(d.value) + 0.5)
+                if abs(tool - to_float(d.value)) >= 0.0001:
+                    raise self._error(GC_STATE, f"{name} requires the D word to be a whole number (tool number); "
+                                      f"got {d.text}", d)
+                if d.value < 0:
+                    raise self._error(GC_STATE, f"negative D word tool number {d.text} used", d)
+            diameters = getattr(it.machine, "tool_diameters", {})
+            if tool not in diameters:
+                if tool != 0:
+                    known = ", ".join(f"T{t}" for t in sorted(diameters)) or "none"
+                    raise self._error(GC_TOOL, f"{name} uses tool {tool}, whose diameter is not in the machine "
+                                      f"file's [tool_diameters] (known: {known}); add T{tool} = \"<diameter mm>\"",
+                                      d if d is not None else word)
+                dia = Fraction(0)  # LinuxCNC: an empty spindle has diameter 0
+            else:
+                dia = diameters[tool]
+            radius = to_float(dia / self._unit()) / 2.0
+            if it.plane is Plane.XZ and radius != 0.0:
+                it._unknown(name, f"{name} in G18 uses the tool table's lathe tool orientation, which shifts the "
+                            "controlled point (LinuxCNC latheorigin) and is not in the machine file; use G41.1/G42.1 "
+                            "D<diameter> (orientation 0) or a mill tool in G17", word)
+        if radius < 0.0:
+            radius = -radius
+            side = _RIGHT if side == _LEFT else _LEFT
+        if it._u is not None:
+            it._unknown(name, "cutter radius compensation in a rotated coordinate system (G10 L2 R) is not modelled",
+                        word)
+        if type(it).__name__ != "Interpreter":
+            it._unknown(name, "cutter radius compensation with cylindrical interpolation is not modelled", word)
+        self.side = side
+        self.radius = radius
+        self.first = True
+        self.queue = []
+        it.comp_on = True
+
+    def off(self) -> None:
+        """G40: flush the queue at the compensated position; the next move starts from there."""
+        it = self.it
+        if self.active and not self.first:
+            self._move_endpoint_and_flush(*self.cur)
+            self._dequeue()
+            it.comp_just_off = True
+            if self.machine_now is not None and tuple(self.machine_now) != tuple(it.pos):
+                it._machine_at = tuple(self.machine_now)
+        self.side = None
+        self.first = True
+        it.comp_on = False
+
+    # ------------------------------------------------------------------ refusals
+    def check_block(self, groups: dict, mcodes, words: dict, axis_words, motion) -> None:
+        """LinuxCNC's refusals while compensation is on, and what nczones cannot model then."""
+        it = self.it
+        g0 = groups.get(0)
+        if any(k == 6 for k, _ in mcodes):
+            w = next(w for k, w in mcodes if k == 6)
+            raise self._error(GC_FORBIDDEN, "cannot change tools (M6) with cutter radius compensation on", w)
+        if 8 in groups:
+            raise self._error(GC_FORBIDDEN, "cannot change the tool length offset (G43/G49) with cutter radius "
+                              "compensation on", groups[8][1])
+        if 6 in groups:
+            raise self._error(GC_FORBIDDEN, "cannot change units (G20/G21) with cutter radius compensation on",
+                              groups[6][1])
+        if 2 in groups:
+            k, w = groups[2]
+            target = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}.get(k)
+            if target is not it.plane:
+                raise self._error(GC_FORBIDDEN, "cannot change planes with cutter radius compensation on", w)
+        if g0 is not None:
+            k, w = g0
+            if k in (920, 921, 922, 923, 520):
+                raise self._error(GC_FORBIDDEN, "cannot change axis offsets (G92/G52) with cutter radius "
+                                  "compensation on", w)
+            if k in (280, 300):
+                raise self._error(GC_FORBIDDEN, "cannot use G28 or G30 with cutter radius compensation on", w)
+            if k == 530 and self.active and axis_words:
+                raise self._error(GC_FORBIDDEN, "cannot use G53 with cutter radius compensation on", w)
+            if k == 100:
+                it._unknown("G10", "G10 while cutter radius compensation is on (offsets or the tool table change "
+                            "under a held move) is not modelled", w)
+        if 12 in groups:
+            it._unknown(f"G{groups[12][0] // 10}", "changing the work offset while cutter radius compensation is "
+                        "on is not modelled", groups[12][1])
+        g1 = groups.get(1)
+        m = g1[0] if g1 is not None else motion
+        if m in (52, 53, 62) or (g1 is not None and g1[0] in (51, 50)):
+            raise self._error(GC_FORBIDDEN, "cannot convert a spline (G5/G5.1/G5.2/G6.2) with cutter radius "
+                              "compensation on", g1[1] if g1 is not None else None)
+
+    # ------------------------------------------------------------------ queue
+    def _set_endpoint(self, a: float, b: float) -> None:
+        self.endpoint = (a, b)
+        self.endpoint_valid = True
+
+    def _enqueue(self, move: _Move) -> None:
+        it = self.it
+        move.block = it._block.index
+        move.span = it._span
+        if move.kind is not SegmentKind.RAPID and move.dwell is None and it.feed_mode == 94:
+            move.feed = it._len(it.feed)
+        self.queue.append(move)
+
+    def _dequeue(self) -> None:
+        """Emit the queued moves (LinuxCNC ``dequeue_canons``)."""
+        from .interpreter import _segment
+
+        it = self.it
+        self.endpoint_valid = False
+        ia, ib, _ = self._axes()
+        for q in self.queue:
+            start = self.machine_now
+            if q.dwell is not None:
+                end = tuple(start)
+            else:
+                e = list(q.end)
+                e[ia] = self._fmachine(ia, q.a)
+                e[ib] = self._fmachine(ib, q.b)
+                end = tuple(e)
+            ds = de = ()
+            if it.track:
+                ds = it._deps_tuple(self.deps_now if self.deps_now is not None else it.dep_pos)
+                de = it._deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
+            arc = q.kind is SegmentKind.ARC
+            if not it.unsupported:
+                seg = _segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
+                               it.plane if arc else None, arc and q.turn < 0, q.centre if arc else None, None,
+                               abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, ())
+                it._out.append(seg)
+                it.segment_count += 1
+                it.kind_counts[q.kind] += 1
+            self.machine_now = end
+            if q.deps is not None:
+                self.deps_now = q.deps
+        self.queue = []
+
+    def _move_endpoint_and_flush(self, x: float, y: float) -> None:
+        """Move the end of every queued move to (x, y), refusing reversals; then emit them (``interp_queue.cc``)."""
+        if not self.queue:
+            return
+        ex, ey = self.endpoint
+        for q in self.queue:
+            if q.dwell is not None:
+                continue
+            if q.kind is SegmentKind.ARC:
+                r1 = math.hypot(q.a - q.ca, q.b - q.cb)
+                l1 = q.sweep
+                r2 = math.hypot(x - q.ca, y - q.cb)
+                l2 = _find_turn(ex, ey, q.ca, q.cb, q.turn, x, y)
+                if abs(r1 - r2) > 0.01:
+                    raise self._error(GC_BUG, f"cutter compensation generated an invalid arc with mismatched radii "
+                                      f"{r1:.6f} and {r2:.6f} (LinuxCNC reports this as a BUG and stops)")
+                if l1 and self.endpoint_valid and abs(l2) > abs(l1) + 0.001:
+                    raise self._error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
+                                      "gouging (cutter radius compensation)")
+            else:
+                dot = q.da * (x - ex) + q.db * (y - ey)
+                if self.endpoint_valid and dot < 0:
+                    what = "Straight traverse" if q.kind is SegmentKind.RAPID else "Straight feed"
+                    raise self._error(GC_GOUGE, f"{what} in concave corner cannot be reached by the tool without "
+                                      "gouging (cutter radius compensation: the move shrinks past its start)")
+            q.a, q.b = x, y
+        self._dequeue()
+        self._set_endpoint(x, y)
+
+    def _front_is_arc(self, what: str) -> bool:
+        if not self.queue:
+            self.it._unknown("cutter comp", f"{what} right after the compensation queue was flushed (M0/M1/M60): "
+                             "LinuxCNC reads an empty move queue there; not modelled")
+            return False
+        return self.queue[0].kind is SegmentKind.ARC
+
+    def _start(self) -> None:
+        """Before a compensated move: fix where the machine is and the compensated start of a first move."""
+        it = self.it
+        if self.machine_now is None or (self.first and not self.queue):
+            self.machine_now = tuple(it._machine_at) if it._machine_at is not None else tuple(it.pos)
+            self.deps_now = [dict(d) for d in it.dep_pos] if it.track else None
+            it._machine_at = None
+        if self.first:
+            ia, ib, _ = self._axes()
+            self.prog = (self._fprog(ia, it.pos[ia]), self._fprog(ib, it.pos[ib]))
+            self.cur = self.prog
+
+    def _corner_end(self, end: list) -> list:
+        """Machine end of an inserted corner move: the normal axis stays, the other axes already reach the end."""
+        it = self.it
+        ia, ib, inn = self._axes()
+        e = list(end)
+        if inn is not None:
+            e[inn] = it.pos[inn]
+        return e
+
+    def _advance(self, end: list, deps) -> None:
+        it = self.it
+        it.pos = list(end)
+        if deps is not None:
+            it.dep_pos = deps
+
+    # ------------------------------------------------------------------ straight moves
+    def straight(self, kind: SegmentKind, end: list, deps) -> None:
+        """A G0/G1 move to the programmed machine point ``end`` with compensation on."""
+        self._start()
+        ia, ib, _ = self._axes()
+        px, py = self._fprog(ia, end[ia]), self._fprog(ib, end[ib])
+        if self.first:
+            self._straight_first(kind, px, py, end, deps)
+        else:
+            self._straight_next(kind, px, py, end, deps)
+        self._advance(end, deps)
+
+    def _straight_first(self, kind, px, py, end, deps) -> None:
+        radius, side = self.radius, self.side
+        cx, cy = self.cur
+        distance = math.hypot(px - cx, py - cy)
+        if distance <= radius:
+            raise self._error(GC_ENTRY, "Length of cutter compensation entry move is not greater than the tool "
+                              f"radius ({distance:.6f} <= {radius:.6f} program units)")
+        alpha = math.atan2(py - cy, px - cx) + (_PI / 2.0 if side == _LEFT else -_PI / 2.0)
+        ex = px + radius * math.cos(alpha)
+        ey = py + radius * math.sin(alpha)
+        self._set_endpoint(cx, cy)
+        self._enqueue(_Move(kind, ex, ey, list(end), math.cos(alpha), math.sin(alpha), deps=deps))
+        self.first = False
+        self.cur = (ex, ey)
+        self.prog = (px, py)
+
+    def _straight_next(self, kind, px, py, end, deps) -> None:
+        it = self.it
+        cx, cy = self.cur
+        opx, opy = self.prog
+        if py == opy and px == opx:  # no motion in the plane
+            self._enqueue(_Move(kind, cx, cy, list(end), 0.0, 0.0, deps=deps))
+            return
+        side, radius = self.side, self.radius
+        small = CONCAVE_TOLERANCE_RAD
+        theta = math.atan2(cy - opy, cx - opx)
+        alpha = math.atan2(py - opy, px - opx)
+        if side == _LEFT:
+            if theta < alpha:
+                theta = theta + 2 * _PI
+            beta = (theta - alpha) - _HALF_PI
+            gamma = _HALF_PI
+        else:
+            if alpha < theta:
+                alpha = alpha + 2 * _PI
+            beta = (alpha - theta) - _HALF_PI
+            gamma = -_HALF_PI
+        end_x = px + radius * math.cos(alpha + gamma)
+        end_y = py + radius * math.sin(alpha + gamma)
+        mid_x = opx + radius * math.cos(alpha + gamma)
+        mid_y = opy + radius * math.sin(alpha + gamma)
+        if beta < -small or beta > _PI + small:
+            concave = True
+        elif (beta > _PI - small and self.queue and self.queue[0].kind is SegmentKind.ARC
+              and ((side == _RIGHT and self.queue[0].turn > 0) or (side == _LEFT and self.queue[0].turn < 0))):
+            concave = True  # the "h" shape: stay above and to the side rather than loop around
+        else:
+            concave = False
+        ia, ib, _ = self._axes()
+        if not concave and beta > small:  # convex: go around the corner
+            self._move_endpoint_and_flush(cx, cy)
+            corner = self._corner_end(end)
+            corner_deps = [dict(d) for d in it.dep_pos] if it.track else None
+            if kind is SegmentKind.LINE:
+                centre = (it.pos[ia], it.pos[ib])  # the programmed corner, exact
+                self._enqueue(_Move(SegmentKind.ARC, mid_x, mid_y, corner, ca=opx, cb=opy, centre=centre,
+                                    turn=-1 if side == _LEFT else 1, derived="cutter comp corner", deps=corner_deps))
+            else:
+                self._enqueue(_Move(SegmentKind.RAPID, mid_x, mid_y, corner, derived="cutter comp corner",
+                                    deps=corner_deps))
+            self._dequeue()
+            self._set_endpoint(mid_x, mid_y)
+        elif concave:
+            if not self._front_is_arc("a concave corner"):
+                if not self.queue:
+                    self._enqueue(_Move(kind, end_x, end_y, list(end), px - opx, py - opy, deps=deps))
+                    self.cur, self.prog = (end_x, end_y), (px, py)
+                    return
+                halfcorner = (beta + _PI) / 2.0
+                if halfcorner == 0.0:
+                    raise self._error(GC_GOUGE, "Zero degree inside corner is invalid for cutter compensation")
+                retreat = radius / math.tan(halfcorner)
+                mx = cx + retreat * math.cos(theta + gamma)
+                my = cy + retreat * math.sin(theta + gamma)
+                self._move_endpoint_and_flush(mx, my)
+            else:
+                prev = self.queue[0]
+                oldrad = math.hypot(prev.cb - prev.b, prev.ca - prev.a)
+                base_dir = math.atan2(py - opy, px - opx)
+                th = base_dir + _HALF_PI if prev.turn > 0 else base_dir - _HALF_PI
+                phi = math.atan2(prev.cb - opy, prev.ca - opx)
+                if _inside(side, prev.turn):
+                    oldrad_uncomp = oldrad + radius
+                else:
+                    oldrad_uncomp = oldrad - radius
+                al = th - phi
+                d = oldrad_uncomp * math.cos(al)
+                if _inside(side, prev.turn):
+                    lr = (d - radius) / oldrad
+                    self._check_unit(lr, "Arc to straight motion makes a corner the compensated tool can't fit in "
+                                     "without gouging")
+                    ang = (-math.acos(lr) + th + _PI) if prev.turn > 0 else (math.acos(lr) + th + _PI)
+                else:
+                    lr = (d + radius) / oldrad
+                    self._check_unit(lr, "Arc to straight motion makes a corner the compensated tool can't fit in "
+                                     "without gouging")
+                    ang = (math.acos(lr) + th + _PI) if prev.turn > 0 else (-math.acos(lr) + th + _PI)
+                mx = prev.ca + oldrad * math.cos(ang)
+                my = prev.cb + oldrad * math.sin(ang)
+                self._move_endpoint_and_flush(mx, my)
+        else:  # straight on (or tangent arc -> line)
+            self._dequeue()
+            self._set_endpoint(cx, cy)
+        self._enqueue(_Move(kind, end_x, end_y, list(end), px - opx, py - opy, deps=deps))
+        self.cur = (end_x, end_y)
+        self.prog = (px, py)
+
+    def _check_unit(self, value: float, message: str) -> None:
+        if value > 1.0 or value < -1.0:
+            raise self._error(GC_GOUGE, message)
+
+    # ------------------------------------------------------------------ arcs
+    def arc(self, block, axis_words, words, cw: bool) -> None:
+        """A G2/G3 move with compensation on.
+
+        The interpreter's own arc conversion runs first on the programmed arc
+        (its checks and its exact centre); its emission is captured, then the
+        compensated arc is computed here.
+        """
+        it = self.it
+        captured = []
+
+        def capture(kind, end, **kw):
+            captured.append((end, kw))
+
+        it._emit = capture
+        try:
+            it._arc(block, axis_words, words, cw, False)
+        finally:
+            del it._emit
+        if not captured or it.unsupported:
+            return
+        end, kw = captured[0]
+        deps = kw.get("end_deps")
+        turns = kw.get("turns", 0)
+        self._start()
+        ia, ib, _ = self._axes()
+        opx, opy = self.prog
+        ex, ey = self._fprog(ia, end[ia]), self._fprog(ib, end[ib])
+        turn = (-1 if cw else 1) * (turns + 1)
+        rw = words.get("R")
+        exact_centre = kw.get("centre")
+        if rw is not None:
+            tol = (0.00005 if it.inch else 0.00005 * 25.4)
+            c = _arc_centre_r((opx, opy), (ex, ey), to_float(rw.value), cw, tol)
+            if c is None:
+                raise self._error("GC302", "arc radius too small to reach the end point", rw)
+            cax, cay = c
+            exact_centre = None
+        else:
+            cax, cay = self._fprog(ia, exact_centre[0]), self._fprog(ib, exact_centre[1])
+        if self.first:
+            self._arc_first(cw, turn, ex, ey, cax, cay, rw, end, deps)
+        else:
+            self._arc_next(cw, turn, ex, ey, cax, cay, exact_centre, end, deps)
+        self._advance(end, deps)
+
+    def _arc_first(self, cw, turn, end_x, end_y, center_x, center_y, rw, end, deps) -> None:
+        it = self.it
+        side, tool_radius = self.side, self.radius
+        cx, cy = self.cur
+        if math.hypot(end_x - cx, end_y - cy) <= tool_radius:
+            raise self._error(GC_ENTRY, "Radius of cutter compensation entry arc is not greater than the tool radius")
+        arc_radius = abs(to_float(rw.value)) if rw is not None else math.hypot(center_x - cx, center_y - cy)
+        if arc_radius <= tool_radius and ((side == _LEFT and not cw) or (side == _RIGHT and cw)):
+            raise self._error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
+                              f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
+        if _inside(side, turn):
+            gamma = math.atan2(center_y - end_y, center_x - end_x)
+        else:
+            gamma = math.atan2(end_y - center_y, end_x - center_x)
+        self.first = False
+        self.prog = (end_x, end_y)
+        end_x += tool_radius * math.cos(gamma)
+        end_y += tool_radius * math.sin(gamma)
+        b_len = math.hypot(cy - end_y, cx - end_x) / 2.0
+        ab_ang = math.atan2(center_y - end_y, center_x - end_x)
+        a_ang = math.atan2(cy - end_y, cx - end_x) - ab_ang
+        if abs(math.cos(a_ang)) < _TOLERANCE_EQUAL:
+            raise self._error(GC_RADIUS, "Tool radius not less than arc radius with comp (entry arc)")
+        c_len = b_len / math.cos(a_ang)
+        center_x = end_x + c_len * math.cos(ab_ang)
+        center_y = end_y + c_len * math.sin(ab_ang)
+        spiral = 2 * (0.001 if it.inch else 0.01) * math.sqrt(2)
+        if abs(math.hypot(center_x - end_x, center_y - end_y) - math.hypot(center_x - cx, center_y - cy)) > spiral:
+            raise self._error(GC_BUG, "bug in tool radius comp (LinuxCNC: the entry arc's radii differ)")
+        ia, ib, _ = self._axes()
+        centre = (self._fmachine(ia, center_x), self._fmachine(ib, center_y))
+        self._enqueue(_Move(SegmentKind.ARC, end_x, end_y, list(end), ca=center_x, cb=center_y, centre=centre,
+                            turn=turn, sweep=_find_turn(cx, cy, center_x, center_y, turn, end_x, end_y), deps=deps))
+        self.cur = (end_x, end_y)
+
+    def _arc_next(self, cw, turn, end_x, end_y, centerx, centery, exact_centre, end, deps) -> None:
+        it = self.it
+        opx, opy = self.prog
+        cx, cy = self.cur
+        side, tool_radius = self.side, self.radius
+        small = CONCAVE_TOLERANCE_RAD
+        arc_radius = math.hypot(centerx - end_x, centery - end_y)
+        theta = math.atan2(cy - opy, cx - opx)
+        theta = theta - _HALF_PI if side == _LEFT else theta + _HALF_PI
+        delta = math.atan2(centery - opy, centerx - opx)
+        alpha = delta - _HALF_PI if not cw else delta + _HALF_PI
+        beta = theta - alpha if side == _LEFT else alpha - theta
+        if beta > 1.5 * _PI:
+            beta = beta - 2 * _PI
+        elif beta < -_HALF_PI:
+            beta = beta + 2 * _PI
+        if (side == _LEFT and not cw) or (side == _RIGHT and cw):
+            gamma = math.atan2(centery - end_y, centerx - end_x)
+            if arc_radius <= tool_radius:
+                raise self._error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
+                                  f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
+        else:
+            gamma = math.atan2(end_y - centery, end_x - centerx)
+            delta = delta + _PI
+        new_end_x = end_x + tool_radius * math.cos(gamma)
+        new_end_y = end_y + tool_radius * math.sin(gamma)
+        ia, ib, _ = self._axes()
+        centre = exact_centre if exact_centre is not None else (self._fmachine(ia, centerx),
+                                                                self._fmachine(ib, centery))
+        main = _Move(SegmentKind.ARC, new_end_x, new_end_y, list(end), ca=centerx, cb=centery, centre=centre,
+                     turn=turn, sweep=_find_turn(opx, opy, centerx, centery, turn, end_x, end_y), deps=deps)
+        if beta < -small or beta > _PI + small or (abs(beta - _PI) < small and not _inside(side, turn)):
+            if not self._front_is_arc("a concave corner before an arc"):
+                if not self.queue:
+                    self._enqueue(main)
+                    self.prog, self.cur = (end_x, end_y), (new_end_x, new_end_y)
+                    return
+                cyy = arc_radius * math.sin(beta - _HALF_PI)
+                if _inside(side, turn):
+                    dist_from_center = arc_radius - tool_radius
+                    toward_nominal = cyy + tool_radius
+                    lr = toward_nominal / dist_from_center
+                    self._check_unit(lr, "Arc move in concave corner cannot be reached by the tool without gouging")
+                    ang = theta + math.asin(lr) if turn > 0 else theta - math.asin(lr)
+                else:
+                    dist_from_center = arc_radius + tool_radius
+                    toward_nominal = cyy - tool_radius
+                    lr = toward_nominal / dist_from_center
+                    self._check_unit(lr, "Arc move in concave corner cannot be reached by the tool without gouging")
+                    ang = theta + _PI - math.asin(lr) if turn > 0 else theta + _PI + math.asin(lr)
+                midx = centerx + dist_from_center * math.cos(ang)
+                midy = centery + dist_from_center * math.sin(ang)
+                self._move_endpoint_and_flush(midx, midy)
+            else:
+                prev = self.queue[0]
+                oldrad = math.hypot(prev.cb - prev.b, prev.ca - prev.a)
+                newrad = arc_radius - tool_radius if _inside(side, turn) else arc_radius + tool_radius
+                arc_cc = math.hypot(prev.cb - centery, prev.ca - centerx)
+                if oldrad == 0 or arc_cc == 0:
+                    raise self._error(GC_GOUGE, "Arc to arc motion is invalid because the arcs have the same center")
+                a = (oldrad * oldrad + arc_cc * arc_cc - newrad * newrad) / (2 * oldrad * arc_cc)
+                self._check_unit(a, "Arc to arc motion makes a corner the compensated tool can't fit in without "
+                                 "gouging")
+                pullback = math.acos(a)
+                cc_dir = math.atan2(centery - prev.cb, centerx - prev.ca)
+                if _inside(side, prev.turn):
+                    d = cc_dir + pullback if turn > 0 else cc_dir - pullback
+                else:
+                    d = cc_dir - pullback if turn > 0 else cc_dir + pullback
+                self._move_endpoint_and_flush(prev.ca + oldrad * math.cos(d), prev.cb + oldrad * math.sin(d))
+            self._enqueue(main)
+        elif beta > small:  # convex: an arc around the programmed corner first
+            midx = opx + tool_radius * math.cos(delta)
+            midy = opy + tool_radius * math.sin(delta)
+            self._dequeue()
+            corner = self._corner_end(end)
+            corner_deps = [dict(d) for d in it.dep_pos] if it.track else None
+            self._enqueue(_Move(SegmentKind.ARC, midx, midy, corner, ca=opx, cb=opy,
+                                centre=(it.pos[ia], it.pos[ib]), turn=-1 if side == _LEFT else 1,
+                                derived="cutter comp corner", deps=corner_deps))
+            self._dequeue()
+            self._set_endpoint(midx, midy)
+            self._enqueue(main)
+        else:
+            self._dequeue()
+            self._set_endpoint(cx, cy)
+            self._enqueue(main)
+        self.prog = (end_x, end_y)
+        self.cur = (new_end_x, new_end_y)
+
+    # ------------------------------------------------------------------ other blocks
+    def dwell(self, seconds: Fraction) -> None:
+        """G4: queued behind a held move (LinuxCNC ``enqueue_DWELL``), else a dwell where the machine is."""
+        it = self.it
+        if self.queue:
+            self._enqueue(_Move(SegmentKind.DWELL, 0.0, 0.0, [], dwell=seconds))
+            return
+        if it._machine_at is not None:  # after G40 the machine stands at the compensated point
+            from .interpreter import _segment
+
+            if not it.unsupported:
+                deps = it._deps_tuple(it.dep_pos) if it.track else ()
+                at = tuple(it._machine_at)
+                it._out.append(_segment(SegmentKind.DWELL, at, at, it.axes, it._block.index, it._span, it.tlo,
+                                        None, None, False, None, None, 0, seconds, "", it.tool_register, deps,
+                                        deps, ()))
+                it.segment_count += 1
+                it.kind_counts[SegmentKind.DWELL] += 1
+            return
+        it._emit(SegmentKind.DWELL, list(it.pos), dwell=seconds)
+
+    def stop(self) -> None:
+        """M0/M1/M60: the queue is flushed at the compensated position (comp stays on)."""
+        if self.queue:
+            self._move_endpoint_and_flush(*self.cur)
+            self._dequeue()
+
+    def program_end(self) -> None:
+        """M2/M30 or the end of the text: flush, compensation off."""
+        self.stop()
+        self.side = None
+        self.first = True
+        self.it.comp_on = False
