@@ -42,7 +42,7 @@ class Word:
         return hash((self.letter, self.value, self.span, self.text))
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class Block:
     """One executed block.
 
@@ -66,6 +66,17 @@ class Block:
     index: int
     number: Fraction | None = None
     messages: tuple[str, ...] = ()
+
+    # Equality by value, not by class: the language layer builds a subclass whose
+    # words are made only when read (nczones.gcode.lexer.PlainBlock).
+    def __eq__(self, other):
+        if isinstance(other, Block):
+            return (self.words, self.span, self.index, self.number, self.messages) == (
+                other.words, other.span, other.index, other.number, other.messages)
+        return NotImplemented
+
+    def __hash__(self):
+        return hash((self.words, self.span, self.index, self.number, self.messages))
 
     def get(self, letter: str) -> Word | None:
         """The first word with this letter, or None."""

@@ -36,6 +36,7 @@ from collections.abc import Callable
 from fractions import Fraction
 
 from ..errors import InvalidArgument
+from .lexer import _fraction
 from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
 
 __all__ = [
@@ -220,9 +221,13 @@ class Parameters:
 
 
 def word_value(value: Value) -> Fraction:
-    """The exact value a word receives: the shadow, else the double exactly."""
+    """The exact value a word receives: the shadow, else the double exactly.
+
+    >>> word_value((0.1, None)) == Fraction(0.1)
+    True
+    """
     q = value[1]
-    return q if q is not None else Fraction(value[0])
+    return q if q is not None else _fraction(*value[0].as_integer_ratio())
 
 
 def _keep(d: float, q: Fraction | None) -> Value:

@@ -279,7 +279,7 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
                          for d in exc.diagnostics]
                 raise GcodeError(diags) from None
             if offset == 0:
-                nb = b if b.index == block_counter[0] else replace(b, index=block_counter[0])
+                nb = b if b.index == block_counter[0] else Block(b.words, b.span, block_counter[0], b.number, b.messages)
             else:
                 bs = b.span
                 span = make_span(bs.file, bs.line + offset, bs.column, bs.end_column, bs.text)

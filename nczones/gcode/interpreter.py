@@ -42,7 +42,7 @@ from ..exact import to_float
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import Block, Word
-from .lexer import _fraction, _fraction_raw
+from .lexer import PlainBlock, _fraction, _fraction_raw
 from .splines import SPLINE_CODES, spline_block, spline_pending
 
 _NAME_PENDING = "NURBS"
@@ -629,6 +629,8 @@ class Interpreter:
         """Execute one block (LinuxCNC order of execution)."""
         if self._m73:
             self._m73_returns()
+        if type(block) is PlainBlock and self._plain(block.letters, block.values):
+            return
         gcodes: list[tuple[int, Word]] = []
         mcodes: list[tuple[int, Word]] = []
         words: dict[str, Word] = {}
@@ -658,11 +660,10 @@ class Interpreter:
                             w,
                         )
                     axis_words.append((i, w))
-        if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and self._lean(gcodes, mcodes, words, axis_words):
-            if self.track or self._machine_at is not None:
-                self._motion_block(block, axis_words, words, gcodes[0] if gcodes else None, False)
-            else:
-                self._lean_move(axis_words)
+        if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self._machine_at is None \
+                and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
+                               len(words) - len(axis_words) - ("F" in words) - ("S" in words)):
+            self._lean_move([(i, w.value) for i, w in axis_words])
             return
         # ---- modal group checks
         groups: dict[int, tuple[int, Word]] = {}
@@ -877,59 +878,100 @@ class Interpreter:
         if 2 in mset or 30 in mset:
             raise _Stop
 
-    def _lean(self, gcodes, mcodes, words, axis_words) -> bool:
+    def _plain(self, letters: str, values: tuple) -> bool:
+        """Execute a :class:`~nczones.gcode.lexer.PlainBlock` by the plain-move lane if it is one.
+
+        Returns False, having changed nothing, when the block needs the
+        general path (which then reads its words).
+        """
+        if self.track or self._machine_at is not None:
+            return False
+        index = self.index
+        axis = []
+        seen = 0
+        g = m = f = None
+        s = extra = 0
+        for letter, v in zip(letters, values):
+            i = index.get(letter)
+            if i is not None:
+                bit = 1 << i
+                if seen & bit:
+                    return False
+                seen |= bit
+                axis.append((i, v))
+            elif letter == "G":
+                if g is not None or v._denominator != 1:
+                    return False
+                g = v._numerator * 10
+            elif letter == "M":
+                if m is not None or v._denominator != 1:
+                    return False
+                m = v._numerator
+            elif letter == "F":
+                if f is not None:
+                    return False
+                f = v
+            elif letter == "S":
+                s += 1
+            else:
+                extra += 1
+        if not axis or s > 1:
+            return False
+        if not self._lean(g, m, f, extra):
+            return False
+        self._lean_move(axis)
+        return True
+
+    def _lean(self, g: int | None, m: int | None, f, extra: int) -> bool:
         """Apply the modal part of a plain straight move and return True, or return False untouched.
 
-        A plain move is at most one of G0/G1, axis words, F, S and at most
-        one spindle/coolant M code (M3 M4 M5 M7 M8 M9), in a state with
-        nothing pending (no unknown code, rotation, spline, cutter
-        compensation or M73 frame).  For such a block the general path does
-        nothing but set F and the motion mode before the move; every
-        check it makes (modal groups, R/I/J/K users, G53) cannot fire.
+        A plain move is at most one of G0/G1 (``g``: the G key), axis
+        words, F (``f``: a Word or a value), S and at most one spindle or
+        coolant M code (``m``: M3 M4 M5 M7 M8 M9), nothing else (``extra``
+        other words: 0), in a state with nothing pending (no unknown code,
+        rotation, spline, cutter compensation or M73 frame).  For such a
+        block the general path does nothing but set F and the motion mode
+        before the move; every check it makes (modal groups, R/I/J/K users,
+        G53) cannot fire.
         """
-        if self.unsupported or self._u is not None or self._spline is not None or self.comp_on \
+        if extra or self.unsupported or self._u is not None or self._spline is not None or self.comp_on \
                 or self.comp_just_off or self._m73:
             return False
-        extra = len(words) - len(axis_words)
-        f = words.get("F")
-        if extra and extra != (f is not None) + ("S" in words):
+        if m is not None and m not in _LEAN_M:
             return False
-        if mcodes and mcodes[0][0] not in _LEAN_M:
-            return False
-        if gcodes:
-            k = gcodes[0][0]
-            if k != 0 and k != 10:
+        if g is not None:
+            if g != 0 and g != 10:
                 return False
         elif self.motion != 0 and self.motion != 10:
             return False
         if f is not None:
-            if f.value < 0:
+            fv = f.value if isinstance(f, Word) else f
+            if fv < 0:
                 return False
-            self.feed = f.value
-        if gcodes:
+            self.feed = fv
+        if g is not None:
             self._cycle_il = None
             self._last_cycle = None
-            self.motion = k
+            self.motion = g
         return True
 
-    def _lean_move(self, axis_words) -> None:
+    def _lean_move(self, axis_values) -> None:
         """The G0/G1 move of a plain block: ``_motion_block``, ``_program_target`` and ``_emit``
         for the one case they reduce to (no G53, rotation, tracking or pending machine position).
         ``tests/gcode/test_lean_path.py`` holds the two paths to identical segments."""
-        if self.unset:
+        if self.unset and not self._noted_straight:
             self._note_assumed(("units", "distance", "offset"))
+            self._noted_straight = True  # unset only shrinks and assumed only grows: once is enough
         pos = self.pos
         end = list(pos)
         inch = self.inch
         rotary = self.rotary
         if self.absolute:
             off = self.off
-            for i, w in axis_words:
-                v = w.value
+            for i, v in axis_values:
                 end[i] = _qadd(v * INCH if inch and not rotary[i] else v, off[i])
         else:
-            for i, w in axis_words:
-                v = w.value
+            for i, v in axis_values:
                 end[i] = _qadd(end[i], v * INCH if inch and not rotary[i] else v)
         fmm = None
         if self.motion == 10:
@@ -940,14 +982,17 @@ class Interpreter:
                 fmm = self.feed * INCH if inch else self.feed
         else:
             kind = SegmentKind.RAPID
-        self._out.append(_segment(kind, tuple(pos), tuple(end), self.axes, self._block.index, self._span, self.tlo,
-                                  fmm, None, False, None, None, 0, None, "", self.tool_register, (), (), ()))
+        end = tuple(end)
+        self._out.append(_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self._block.index,
+                                  self._span, self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register,
+                                  (), (), ()))
         self.segment_count += 1
         self.kind_counts[kind] += 1
         self.pos = end
         self._u_next = None
 
     # ------------------------------------------------------------------ pieces
+    _noted_straight = False
     _saved_modal: tuple | None = None
     _cycle_il: Fraction | None = None
     _spline = None  # an unfinished G5.2/G6.2 curve (nczones.gcode.splines)

@@ -28,7 +28,7 @@ from functools import lru_cache
 from math import gcd as _gcd
 
 from ..errors import SourceSpan
-from .blocks import Word
+from .blocks import Block, Word
 
 __all__ = [
     "NUMBER",
@@ -36,6 +36,9 @@ __all__ = [
     "make_span",
     "make_word",
     "scan_simple",
+    "scan_plain",
+    "plain_control",
+    "PlainBlock",
     "MAGIC_COMMENTS",
     "magic_comment",
 ]
@@ -58,6 +61,8 @@ _SIMPLE_LINE = re.compile(
 )
 _SIMPLE_ITEM = re.compile(rf"\(([^()]*)\)|;(.*)|([A-MP-Za-mp-z])[ \t]*({NUMBER})")
 _BLANKS = re.compile(r"[ \t]+")
+# A plain line: words with plain decimal literals and blanks between them, no comment (scan_plain).
+_PLAIN_SPLIT = re.compile(rf"([A-NP-Za-np-z])[ \t]*({_PLAIN_NUMBER})")
 
 
 def _fraction_raw(n: int, d: int) -> Fraction:
@@ -262,6 +267,113 @@ def scan_simple(line: str, lineno: int, file: str) -> tuple | None:
             comments.append((comment, pos + 1))
             pos += len(comment) + 2
     return (m.group(1) is not None, number, tuple(words), tuple(comments))
+
+
+def scan_plain(line: str) -> tuple | None:
+    """Lex a line of plain words (no comment, no blank inside a number), else None.
+
+    Returns ``(delete, number, letters, values)``: whether the line starts
+    with ``/``, the N value (or None), the upper-case letters as one string
+    and their exact values.  This is the language layer's cheapest lane; the
+    words (with text and spans) are made from the line only if somebody
+    reads them (:class:`PlainBlock`).
+
+    >>> scan_plain("n20 g1x-.5 Y2.")
+    (False, Fraction(20, 1), 'GXY', (Fraction(1, 1), Fraction(-1, 2), Fraction(2, 1)))
+    >>> scan_plain("G1 X1 (cut)") is None
+    True
+    """
+    if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
+        return None
+    parts = _PLAIN_SPLIT.split(line)
+    delete = False
+    head = parts[0]
+    if head and head.strip(" \t"):
+        if head.strip(" \t") != "/":
+            return None
+        delete = True
+    if len(parts) > 3 and "".join(parts[3::3]).strip(" \t"):
+        return None
+    letters = "".join(parts[1::3]).upper()
+    values = tuple(map(decimal_value, parts[2::3]))
+    number = None
+    if "N" in letters:
+        if letters[0] != "N" or "N" in letters[1:]:
+            return None
+        number = values[0]
+        letters = letters[1:]
+        values = values[1:]
+    return (delete, number, letters, values)
+
+
+def plain_control(letters: str, values: tuple) -> bool:
+    """Whether a plain line holds a word the language layer acts on (M2 M30 M97 M98 M99, G65-G67).
+
+    >>> plain_control("GXM", (Fraction(1), Fraction(2), Fraction(98)))
+    True
+    >>> plain_control("GXM", (Fraction(66, 10), Fraction(2), Fraction(3)))
+    False
+    """
+    if "M" in letters:
+        for c, v in zip(letters, values):
+            if c == "M" and v._denominator == 1 and v._numerator in _M_CONTROL:
+                return True
+    if "G" in letters:
+        for c, v in zip(letters, values):
+            if c == "G" and 65 <= v._numerator // v._denominator <= 67:
+                return True
+    return False
+
+
+_M_CONTROL = frozenset((2, 30, 97, 98, 99))
+
+
+class PlainBlock(Block):
+    """A :class:`Block` of a plain line whose words are made only when read.
+
+    ``letters`` (one string) and ``values`` are what the interpreter's
+    plain-move lane needs; ``words`` (with spans and text, for diagnostics and the general
+    path) are lexed from the line on first read.  Equal to the eager Block.
+    """
+
+    __slots__ = ("letters", "values", "_words")
+
+    @property
+    def words(self) -> tuple[Word, ...]:  # type: ignore[override]
+        words = self._words
+        if words is None:
+            span = self.span
+            words = scan_simple(span.text, span.line, span.file)[2]
+            _block_words(self, words)
+        return words
+
+    @words.setter
+    def words(self, words: tuple[Word, ...]) -> None:  # Block.__init__ (dataclasses.replace): an eager block
+        _block_words(self, words)
+        _block_letters(self, "")
+        _block_values(self, ())
+
+
+_block_words = PlainBlock._words.__set__  # type: ignore[attr-defined]
+_block_letters = PlainBlock.letters.__set__  # type: ignore[attr-defined]
+_block_values = PlainBlock.values.__set__  # type: ignore[attr-defined]
+_block_span = Block.span.__set__  # type: ignore[attr-defined]
+_block_index = Block.index.__set__  # type: ignore[attr-defined]
+_block_number = Block.number.__set__  # type: ignore[attr-defined]
+_block_messages = Block.messages.__set__  # type: ignore[attr-defined]
+
+
+def plain_block(letters: str, values: tuple, span: SourceSpan, index: int, number) -> PlainBlock:
+    """A :class:`PlainBlock` built without the frozen-dataclass overhead."""
+    b = _new(PlainBlock)
+    _block_letters(b, letters)
+    _block_values(b, values)
+    _block_words(b, None)
+    _block_span(b, span)
+    _block_index(b, index)
+    _block_number(b, number)
+    _block_messages(b, ())
+    return b
 
 
 def _scan_blanks(line: str, lineno: int, file: str) -> tuple | None:

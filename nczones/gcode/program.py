@@ -93,7 +93,7 @@ from pathlib import Path
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import Block, Word
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
-from .lexer import magic_comment, make_span, make_word, scan_simple
+from .lexer import magic_comment, make_span, make_word, plain_block, plain_control, scan_plain, scan_simple
 from .parser import OWord, ParsedLine, parse_line
 
 __all__ = [
@@ -236,6 +236,7 @@ def _show(label) -> str:
 
 
 _BLANK = re.compile(r"[ \t]+")
+_G_MACRO_CALLS = frozenset((Fraction(65), Fraction(66), Fraction(661, 10), Fraction(67)))
 _M_CONTROL = frozenset((2, 30, 97, 98, 99))  # M codes the language layer acts on
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
@@ -356,7 +357,7 @@ class _Runner:
                 return
             parsed = cache.get(pos) if cache else None
             if parsed is None:
-                parsed = scan_simple(line, lineno, file)
+                parsed = scan_plain(line) or scan_simple(line, lineno, file)
                 if parsed is None:
                     try:
                         parsed = parse_line(line, lineno, file)
@@ -365,6 +366,21 @@ class _Runner:
                 if len(self.frames) > 1 or self.frames[0].loops:
                     if len(cache) < 200_000:
                         cache[pos] = parsed
+            if type(parsed) is tuple and len(parsed) == 4 and type(parsed[2]) is str:
+                # plainest path: (delete, number, letters, values); words made only when read
+                delete, number, letters, values = parsed
+                if delete and self.block_delete:
+                    pos, lineno = nxt, lineno + 1
+                    continue
+                if not plain_control(letters, values):
+                    if letters:
+                        self.started = True
+                        yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
+                                          self.index, number)
+                        self.index += 1
+                    pos, lineno = nxt, lineno + 1
+                    continue
+                parsed = scan_simple(line, lineno, file)  # M98/M99/M2/M30/G65...: the general path below
             if type(parsed) is tuple:
                 # fast path: (delete, number, words, comments)
                 delete, number, words, comments = parsed
@@ -469,7 +485,7 @@ class _Runner:
                                            lineno, line, col, end)
                 if n in (2, 30):
                     stop = True
-            if letter == "G" and value in (65, 66, Fraction(661, 10), 67):
+            if letter == "G" and value in _G_MACRO_CALLS:
                 raise self.unsupported("GC301", f"G{value} macro calls are not supported", lineno, line, col, end)
             words.append(make_word(letter, value, make_span(self.file, lineno, col, end, line), text))
         values = []

@@ -1,0 +1,136 @@
+"""The plain-move lane gives exactly the general path's result.
+
+The language layer hands plain lines over as ``PlainBlock`` (letters and
+values, words made only when read) and the interpreter executes plain
+straight moves by ``Interpreter._plain``/``_lean_move`` instead of its
+general block machinery.  Both are shortcuts for speed, so they are held to
+the general path here: on generated programs made to hit the lane's edges
+(modal G0/G1, F, S, M3..M9, G20/G21, G90/G91, offsets, tool lengths, extra
+words that must leave the lane, errors) and on the LinuxCNC-style corpus.
+"""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import nczones.gcode.program as program_module
+from nczones.errors import GcodeError
+from nczones.gcode import interpret
+from nczones.gcode.interpreter import Interpreter
+from nczones.gcode.lexer import PlainBlock
+from nczones.gcode.program import iter_blocks
+from nczones.machine import parse_machine
+from tests.corpus import CORPUS
+
+MACHINE = parse_machine(
+    '[machine]\naxes = ["X", "Y", "Z", "A"]\npulse = "0.001"\n'
+    '[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\nA = "1000"\n'
+    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\nA = "0"\n'
+    '[offsets]\nG55 = { X = "10.5", Z = "-3" }\n[tool_lengths]\nH1 = "100"\nH2 = "12.25"\n'
+)
+
+
+def _result(text: str, machine=MACHINE):
+    run = interpret(text, machine, fast=False)
+    try:
+        segs = [(s.kind, s.start, s.end, s.block, s.span.line, s.span.text, s.feed_mm_min, s.tool_length,
+                 s.tool_register, s.centre, s.clockwise, s.dwell_s, s.derived)
+                for s in run.segments()]
+    except GcodeError as exc:
+        return "error", [(d.code, d.message, str(d.span), d.span.column if d.span else None) for d in exc.diagnostics]
+    return "ok", segs, [u.render() for u in run.unsupported], run.assumed_modal, run.counts
+
+
+def _general(text: str, machine=MACHINE, monkeypatch=None):
+    """The result with both shortcuts off: no PlainBlocks, no lean moves."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(program_module, "scan_plain", lambda line: None)
+        mp.setattr(Interpreter, "_lean", lambda self, *args: False)
+        return _result(text, machine)
+
+
+words = st.sampled_from([
+    "G0", "G1", "g01", "G00", "F100", "F0", "F-5", "S1200", "S0", "M3", "M5", "M8", "M9", "M6", "M0",
+    "T2", "G2", "G17", "G4", "P1", "R2", "I1", "Z", "G53",
+])
+numbers = st.sampled_from(["0", "1", "-1.5", ".25", "2.", "-0.001", "12.3456", "100"])
+
+
+@st.composite
+def plain_lines(draw):
+    kind = draw(st.integers(0, 9))
+    if kind == 0:
+        return draw(st.sampled_from(["G90", "G91", "G20", "G21", "G55", "G54", "G43 H1", "G43 H2", "G49",
+                                     "G94", "G93", "G1 F200", "M3 S100", "/G1 X3", "N10 G0 X0 Y0",
+                                     "G92 X1", "G92.1", "G80", "(comment) G1 X1"]))
+    parts = []
+    for _ in range(draw(st.integers(0, 3))):
+        w = draw(words)
+        parts.append(w + (draw(numbers) if w in ("Z", "P", "R", "I") else ""))
+    for axis in draw(st.lists(st.sampled_from("XYZA"), max_size=3)):
+        parts.append(axis + draw(numbers))
+    parts = draw(st.permutations(parts))
+    sep = draw(st.sampled_from([" ", "", "  "]))
+    return sep.join(parts)
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(plain_lines(), min_size=1, max_size=14), st.booleans())
+def test_plain_lane_equals_general_path_on_generated_programs(lines, feed_first):
+    text = ("G1 F500\n" if feed_first else "") + "\n".join(lines) + "\n"
+    assert _result(text) == _general(text), text
+
+
+def test_plain_lines_become_plain_blocks_and_others_do_not():
+    blocks = list(iter_blocks("G1 X1 Y2 F100\nG1 X2 (cut)\n#1=2\nG1 X#1\nN5 X3 S100 M3\nM98 P10\nM2\nO10\nM99\n"))
+    assert [(type(b) is PlainBlock, b.span.line) for b in blocks] == [
+        (True, 1), (False, 2), (False, 4), (True, 5), (False, 7)]  # M2 ends the program: the general path
+    # words of a plain block are made on reading and equal the general lexer's
+    assert [(w.letter, w.value, w.text, str(w.span)) for w in blocks[0].words] == [
+        ("G", 1, "G1", "<program>:1:1"), ("X", 1, "X1", "<program>:1:4"), ("Y", 2, "Y2", "<program>:1:7"),
+        ("F", 100, "F100", "<program>:1:10")]
+
+
+def test_errors_from_plain_lines_keep_column_and_text():
+    """A plain line that must fail fails in the general path, with the word's own span."""
+    for text, code, col in (("G1 X1 F-5\n", "GC209", 7), ("G1 X1 X2 F1\n", "GC204", 7), ("G1 Q1 X1 F1\n", None, None),
+                            ("G0 B1\n", "GC203", 4), ("G1 X1\n", "GC305", None)):
+        res = _result(text)
+        assert res == _general(text)
+        if code is not None:
+            assert res[0] == "error" and res[1][0][0] == code, (text, res)
+            if col is not None:
+                assert res[1][0][3] == col, (text, res)
+
+
+def _corpus_programs():
+    if not CORPUS.is_dir():
+        return []
+    files = sorted(CORPUS.rglob("*.ngc")) + sorted(CORPUS.rglob("*.nc"))
+    return files[::5] if os.environ.get("NCZONES_FULL_CORPUS") != "1" else files  # a fifth by default
+
+
+@pytest.mark.skipif(not CORPUS.is_dir(), reason="corpus not available")
+@pytest.mark.parametrize("path", _corpus_programs(), ids=lambda p: str(p.relative_to(CORPUS)))
+def test_plain_lane_equals_general_path_on_the_corpus(path):
+    text = path.read_text(errors="replace")
+    if len(text) > 400_000:
+        pytest.skip("large program: covered by the fast-path corpus differential")
+    assert _result(text) == _general(text)
+
+
+def test_the_lane_takes_plain_moves_and_only_them(monkeypatch):
+    taken = []
+    original = Interpreter._lean_move
+    monkeypatch.setattr(Interpreter, "_lean_move", lambda self, axis: (taken.append(self._block.span.line),
+                                                                      original(self, axis))[1])
+    text = ("G21 G90 G1 X1 F100\nX2 S3 M3\nG0 Y1\nG91 X1\nX1 (note)\nG2 X1 Y1 I1\nG1 X1 M6\n"
+            "N8 G1 X3 F50 S1 M8\nM2\n")
+    assert _result(text) == _general(text)
+    # 2, 3, 8 are PlainBlocks; 5 (a comment) is a plain move lexed by the general lexer
+    assert taken == [2, 3, 5, 8]
