@@ -113,8 +113,8 @@ def main() -> None:
     for name, text in programs:
         lines = executed_lines(text)
         blocks = sum(1 for _ in iter_blocks(text))
-        lang = best(lambda: sum(1 for _ in iter_blocks(text)))
-        full = best(lambda: sum(len(c) for c in interpret(text, MACHINE, fast=False)))
+        lang = best(lambda text=text: sum(1 for _ in iter_blocks(text)))
+        full = best(lambda text=text: sum(len(c) for c in interpret(text, MACHINE, fast=False)))
         print(f"{name:34s} {lines:8d} {blocks:8d}   {lines / lang:22.0f}   {lines / full:24.0f} ({blocks / full:.0f})")
 
 

@@ -93,7 +93,15 @@ from pathlib import Path
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import Block, Word
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
-from .lexer import magic_comment, make_span, make_word, plain_block, plain_control, scan_plain, scan_simple
+from .lexer import (
+    magic_comment,
+    make_span,
+    make_word,
+    plain_block,
+    plain_control,
+    scan_plain,
+    scan_simple,
+)
 from .parser import OWord, ParsedLine, parse_line
 
 __all__ = [
