@@ -230,9 +230,17 @@ def _qadd(a: Fraction, b: Fraction) -> Fraction:
     return _fraction(a._numerator * db + b._numerator * da, da * db)
 
 
+def _qlt(a: Fraction, b: Fraction) -> bool:
+    """``a < b`` for Fractions by integer cross-multiplication (denominators are positive)."""
+    return a._numerator * b._denominator < b._numerator * a._denominator
+
+
 if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
     def _qadd(a: Fraction, b: Fraction) -> Fraction:  # noqa: F811
         return a + b
+
+    def _qlt(a: Fraction, b: Fraction) -> bool:  # noqa: F811
+        return a < b
 
 
 def _gname(key: int) -> str:
@@ -528,14 +536,16 @@ class Interpreter:
     def _emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
               plane=None, clockwise=False, centre=None, radius=None, turns=0, dwell=None,
               end_deps: list[dict] | None = None) -> None:
-        start = tuple(self.pos)
+        start = self.pos
+        if type(start) is not tuple:
+            start = tuple(start)
         if self._machine_at is not None:  # after LinuxCNC's G84 outside G17 the machine is not where the interpreter thinks
             start = self._machine_at
             self._machine_at = None
         endt = tuple(end)
         fmm = None
         if feed and self.feed_mode == 94:
-            fmm = self._len(self.feed)
+            fmm = self.feed * INCH if self.inch else self.feed
         ds = de = ()
         if self.track:
             ds = self._deps_tuple(self.dep_pos)
@@ -547,7 +557,7 @@ class Interpreter:
             self._out.append(seg)
             self.segment_count += 1
             self.kind_counts[kind] += 1
-        self.pos = list(endt)
+        self.pos = endt
         if self._u is not None:
             if self._u_next is not None:
                 self._u = self._u_next
@@ -1486,17 +1496,17 @@ class Interpreter:
         wd = {self.axes[i]: aw for i, aw in axis_words}
         if self.absolute:
             inc_a = inc_b = _ZERO
-            r = self._len(rprog) + self.off[ic]
-            cc = self._len(cprog) + self.off[ic]
-            aa = self._len(wd[a_name].value) + self.off[ia] if a_name in wd else self.pos[ia]
-            bb = self._len(wd[b_name].value) + self.off[ib] if b_name in wd else self.pos[ib]
+            r = _qadd(self._len(rprog), self.off[ic])
+            cc = _qadd(self._len(cprog), self.off[ic])
+            aa = _qadd(self._len(wd[a_name].value), self.off[ia]) if a_name in wd else self.pos[ia]
+            bb = _qadd(self._len(wd[b_name].value), self.off[ib]) if b_name in wd else self.pos[ib]
         else:
             inc_a = self._len(wd[a_name].value) if a_name in wd else _ZERO
             inc_b = self._len(wd[b_name].value) if b_name in wd else _ZERO
-            r = self._len(rprog) + old_cc
-            cc = r + self._len(cprog)
+            r = _qadd(self._len(rprog), old_cc)
+            cc = _qadd(r, self._len(cprog))
             aa, bb = self.pos[ia], self.pos[ib]
-        if r < cc:
+        if _qlt(r, cc):
             raise self._error("GC306", f"canned cycle retract plane R ({_fmt(r)} mm machine) is below the bottom {c_name} ({_fmt(cc)} mm machine)", rw or cw_)
         track = self.track
 
@@ -1512,20 +1522,21 @@ class Interpreter:
             self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
 
         name = _gname(motion)
-        if old_cc < r:
+        if _qlt(old_cc, r):
             go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], r, f"{name} up to R")
             old_cc = r
             current_cc = r
         clear = r if self.retract_r else old_cc
         for rep in range(reps):
-            aa += inc_a
-            bb += inc_b
-            if rep == 0 and current_cc > r:
+            if rep or not self.absolute:  # absolute: the increments are zero
+                aa = _qadd(aa, inc_a)
+                bb = _qadd(bb, inc_b)
+            if rep == 0 and _qlt(r, current_cc):
                 go(SegmentKind.RAPID, aa, bb, current_cc, f"{name} position")
                 go(SegmentKind.RAPID, aa, bb, r, f"{name} to R")
             else:
                 go(SegmentKind.RAPID, aa, bb, clear, f"{name} position")
-                if clear > r:
+                if _qlt(r, clear):
                     go(SegmentKind.RAPID, aa, bb, r, f"{name} to R")
             if motion in (730, 830):
                 depth = r - delta
