@@ -47,7 +47,13 @@ from pathlib import Path
 from ..errors import Diagnostic, GcodeError, InvalidArgument
 from ..machine import Machine
 from ..motion import MotionChunk, Segment
-from .interpreter import DEFAULT_ARC_TOLERANCE, MODAL_GROUP_NAMES, Interpreter, Unsupported
+from .interpreter import (
+    DEFAULT_ARC_TOLERANCE,
+    DEFAULT_CHUNK_SIZE,
+    MODAL_GROUP_NAMES,
+    Interpreter,
+    Unsupported,
+)
 
 __all__ = [
     "interpret",
@@ -192,7 +198,7 @@ def interpret(
     track_dependencies: bool = False,
     arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE,
     fast: bool = True,
-    chunk_size: int = 4096,
+    chunk_size: int = DEFAULT_CHUNK_SIZE,
 ) -> Interpretation:
     """Interpret a G-code program for a machine (lazily).
 

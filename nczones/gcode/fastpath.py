@@ -42,7 +42,7 @@ import numpy as np
 from ..errors import GcodeError, InputError, SourceSpan
 from ..motion import PLANE_AXES, MotionChunk, SegmentKind
 from .blocks import Block, Word
-from .lexer import make_span
+from .lexer import PlainBlock, make_span, plain_block
 
 __all__ = ["run_with_fastpath", "MIN_RUN"]
 
@@ -278,8 +278,14 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
                 diags = [replace(d, span=replace(d.span, line=d.span.line + offset)) if d.span is not None else d
                          for d in exc.diagnostics]
                 raise GcodeError(diags) from None
-            if offset == 0:
-                nb = b if b.index == block_counter[0] else Block(b.words, b.span, block_counter[0], b.number, b.messages)
+            if offset == 0 and b.index == block_counter[0]:
+                nb = b
+            elif type(b) is PlainBlock:  # its words are lexed from its span when read: shift the span only
+                bs = b.span
+                span = make_span(bs.file, bs.line + offset, bs.column, bs.end_column, bs.text) if offset else bs
+                nb = plain_block(b.letters, b.values, span, block_counter[0], b.number)
+            elif offset == 0:
+                nb = Block(b.words, b.span, block_counter[0], b.number, b.messages)
             else:
                 bs = b.span
                 span = make_span(bs.file, bs.line + offset, bs.column, bs.end_column, bs.text)
