@@ -157,6 +157,7 @@ _HARMLESS_M = {0, 1, 3, 4, 5, 7, 8, 9, 19, 48, 49, 50, 51, 52, 53, 60, 62, 63, 6
 _M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8,
             48: 9, 49: 9, 50: 9, 51: 9, 52: 9, 53: 9, 62: 5, 63: 5, 64: 5, 65: 5, 66: 5, 67: 5,
             68: 5, 70: 10, 71: 10, 72: 10, 73: 10}
+_NO_PLAN = object()
 #: Spindle and coolant M codes: no effect on motion, and a plain move may carry one (Interpreter._lean).
 _LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
 _CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
@@ -227,6 +228,8 @@ def _segment(kind, start, end, axes, block, span, tool_length, feed, plane, cloc
 
 def _qadd(a: Fraction, b: Fraction) -> Fraction:
     """``a + b`` for Fractions, with a shortcut for equal denominators (decimal inputs)."""
+    if not b._numerator:
+        return a
     da = a._denominator
     db = b._denominator
     if da == db:
@@ -398,6 +401,7 @@ class Interpreter:
         self.kind_counts = {k: 0 for k in SegmentKind}
         self.ended = False
         self._out: list[Segment] = []
+        self._plans: dict = {}  # letters of a PlainBlock -> how the plain lane reads it (_plain_plan)
         self._block: Block | None = None
         self._span: SourceSpan | None = None
 
@@ -629,16 +633,20 @@ class Interpreter:
         segments are held before they are handed on.
         """
         size = self.chunk_size
+        inline = type(self).execute is Interpreter.execute
         for block in blocks:
             if self.ended:
                 break
             self.blocks += 1
             self._block = block
             self._span = block.span
-            try:
-                self.execute(block)
-            except _Stop:
-                self.ended = True
+            if inline and type(block) is PlainBlock and not self._m73 and self._plain(block.letters, block.values):
+                pass  # the plain lane (the same test opens execute(); subclasses that wrap execute() go there)
+            else:
+                try:
+                    self.execute(block)
+                except _Stop:
+                    self.ended = True
             if len(self._out) >= size:
                 yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
                 self._out = []
@@ -908,41 +916,40 @@ class Interpreter:
         """
         if self.track or self._machine_at is not None:
             return False
-        index = self.index
-        axis = []
-        seen = 0
-        g = m = f = None
-        s = extra = 0
-        for letter, v in zip(letters, values):
-            i = index.get(letter)
-            if i is not None:
-                bit = 1 << i
-                if seen & bit:
-                    return False
-                seen |= bit
-                axis.append((i, v))
-            elif letter == "G":
-                if g is not None or v._denominator != 1:
-                    return False
-                g = v._numerator * 10
-            elif letter == "M":
-                if m is not None or v._denominator != 1:
-                    return False
-                m = v._numerator
-            elif letter == "F":
-                if f is not None:
-                    return False
-                f = v
-            elif letter == "S":
-                s += 1
-            else:
-                extra += 1
-        if not axis or s > 1:
+        plan = self._plans.get(letters, _NO_PLAN)
+        if plan is _NO_PLAN:
+            plan = self._plain_plan(letters)
+        if plan is None:
             return False
-        if not self._lean(g, m, f, extra):
+        axis_at, gk, mk, fk = plan
+        g = m = None
+        if gk >= 0:
+            v = values[gk]
+            if v._denominator != 1:
+                return False
+            g = v._numerator * 10
+        if mk >= 0:
+            v = values[mk]
+            if v._denominator != 1:
+                return False
+            m = v._numerator
+        if not self._lean(g, m, values[fk] if fk >= 0 else None, 0):
             return False
-        self._lean_move(axis)
+        self._lean_move([(i, values[k]) for k, i in axis_at])
         return True
+
+    def _plain_plan(self, letters: str):
+        """How the plain lane reads a block with these letters: ``((value index, axis index), ...)``
+        and the value indices of G, M and F (-1: absent); None if the letters rule the lane out
+        (no axis, a repeated letter, a letter other than axes, G, M, F, S)."""
+        plan = None
+        if len(set(letters)) == len(letters) and all(c in self.index or c in "GMFS" for c in letters):
+            axis_at = tuple((k, self.index[c]) for k, c in enumerate(letters) if c in self.index)
+            if axis_at:
+                plan = (axis_at, letters.find("G"), letters.find("M"), letters.find("F"))
+        if len(self._plans) < 4096:
+            self._plans[letters] = plan
+        return plan
 
     def _lean(self, g: int | None, m: int | None, f, extra: int) -> bool:
         """Apply the modal part of a plain straight move and return True, or return False untouched.
@@ -968,7 +975,7 @@ class Interpreter:
             return False
         if f is not None:
             fv = f.value if isinstance(f, Word) else f
-            if fv < 0:
+            if fv._numerator < 0:
                 return False
             self.feed = fv
         if g is not None:
@@ -980,7 +987,7 @@ class Interpreter:
     def _lean_move(self, axis_values) -> None:
         """The G0/G1 move of a plain block: ``_motion_block``, ``_program_target`` and ``_emit``
         for the one case they reduce to (no G53, rotation, tracking or pending machine position).
-        ``tests/gcode/test_lean_path.py`` holds the two paths to identical segments."""
+        ``tests/gcode/test_plain_lane.py`` holds the two paths to identical segments."""
         if self.unset and not self._noted_straight:
             self._note_assumed(("units", "distance", "offset"))
             self._noted_straight = True  # unset only shrinks and assumed only grows: once is enough
@@ -999,7 +1006,7 @@ class Interpreter:
         if self.motion == 10:
             kind = SegmentKind.LINE
             if self.feed_mode == 94:
-                if self.feed == 0:
+                if self.feed._numerator == 0:
                     self._check_feed()
                 fmm = _qinch(self.feed) if inch else self.feed
         else:
