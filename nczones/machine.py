@@ -368,6 +368,27 @@ def _check_keys(
             rd.report("ZN101", f"{where}: unknown key {_written(key)}{hint}", span)
 
 
+def _register_table(rd, data: Mapping, section: str, prefix: str, what: str, example: str) -> dict[int, Fraction]:
+    """``[tool_lengths]`` / ``[tool_diameters]``: keys ``<prefix><number>`` (0..9999) with exact values."""
+    out: dict[int, Fraction] = {}
+    raw = data.get(section, {})
+    line = rd.loc.section(section)
+    if not isinstance(raw, Mapping):
+        rd.report("ZN103", f"[{section}]: expected a table such as {example}, got {_written(raw)}", None)
+        return out
+    for key, value in raw.items():
+        m = re.fullmatch(prefix + r"(\d{1,4})", key)
+        span = rd.loc.key(key, line)
+        if not m:
+            rd.report("ZN101", f"[{section}]: {_written(key)} is not a {what}; write {prefix} followed by its "
+                      f"number, such as {prefix}1", span)
+            continue
+        q = _number(rd, value, f"[{section}] {key}", span)
+        if q is not None:
+            out[int(m.group(1))] = q
+    return out
+
+
 def _per_axis(
     rd: _Reader,
     value: Any,
@@ -592,23 +613,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         vals = _per_axis(rd, value, axes, f"[offsets] {key}", rd.loc.section(f"offsets.{key}"), required=False, inline=(key, oline))
         offsets[key] = tuple(vals.get(a, Fraction(0)) for a in axes)
 
-    # tool lengths
-    tool_lengths: dict[int, Fraction] = {}
-    raw_tl = data.get("tool_lengths", {})
-    tline = rd.loc.section("tool_lengths")
-    if not isinstance(raw_tl, Mapping):
-        rd.report("ZN103", f"[tool_lengths]: expected a table such as H1 = \"200\", got {_written(raw_tl)}", None)
-        raw_tl = {}
-    for key, value in raw_tl.items():
-        m = re.fullmatch(r"H(\d{1,4})", key)
-        span = rd.loc.key(key, tline)
-        if not m:
-            rd.report("ZN101", f"[tool_lengths]: {_written(key)} is not a length register; write H followed by its number, such as H1", span)
-            continue
-        q = _number(rd, value, f"[tool_lengths] {key}", span)
-        if q is not None:
-            tool_lengths[int(m.group(1))] = q
-
+    tool_lengths = _register_table(rd, data, "tool_lengths", "H", "length register", 'H1 = "200"')
     # cutter compensation and tool diameters
     comp_raw = mt.get("cutter_compensation", "none")
     comp = comp_raw if comp_raw in CUTTER_COMPENSATION_MODES else "none"
@@ -616,22 +621,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         rd.report("ZN114", f"[machine] cutter_compensation: {_written(comp_raw)} is not allowed; use \"none\" "
                   "(G41/G42 make the result unknown) or \"linuxcnc\" (modelled as LinuxCNC does it)",
                   rd.loc.key("cutter_compensation", mline))
-    tool_diameters: dict[int, Fraction] = {}
-    raw_td = data.get("tool_diameters", {})
-    dline = rd.loc.section("tool_diameters")
-    if not isinstance(raw_td, Mapping):
-        rd.report("ZN103", f"[tool_diameters]: expected a table such as T1 = \"6\", got {_written(raw_td)}", None)
-        raw_td = {}
-    for key, value in raw_td.items():
-        m = re.fullmatch(r"T(\d{1,4})", key)
-        span = rd.loc.key(key, dline)
-        if not m:
-            rd.report("ZN101", f"[tool_diameters]: {_written(key)} is not a tool number; write T followed by its "
-                      "number, such as T1", span)
-            continue
-        q = _number(rd, value, f"[tool_diameters] {key}", span)
-        if q is not None:
-            tool_diameters[int(m.group(1))] = q
+    tool_diameters = _register_table(rd, data, "tool_diameters", "T", "tool number", 'T1 = "6"')
 
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
 
