@@ -1,6 +1,7 @@
 """Benchmark of the G-code front end (a script, not a test).
 
     python bench/bench_gcode.py [--lines 1000000] [--small 100000] [--naive-lines 100000]
+                                [--full-lines 100000] [--drill-lines 100000]
 
 Prints, each case measured in a fresh process: interpreted lines/s and
 segments/s (wall clock and CPU), the share of lines the vectorized fast
@@ -13,7 +14,10 @@ path took, and the peak resident memory, for
 * the same CAM program (``--naive-lines`` lines) through the full
   interpreter only, for the fast/naive ratio of the same run;
 * a generated program that needs the full interpreter (M/S words on every
-  line).
+  line);
+* a generated drilling program (``--drill-lines`` hole lines ``X.. Y..``
+  under G81/G82 cycles, each cycle opened by its full block and closed by
+  G80), fast path and full interpreter.
 """
 
 from __future__ import annotations
@@ -71,6 +75,22 @@ def full_program(n: int, seed: int = 2) -> str:
     return "\n".join(out) + "\n"
 
 
+def drill_program(n: int, seed: int = 3) -> str:
+    """About ``n`` lines: G81 and G82 cycles (G98/G99) of 1000 holes each, as CAM posts them."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54", "G43 H1 G0 Z20", "G0 X0 Y0", "F300"]
+    k = 0
+    while len(out) < n - 1:
+        head = ["G99 G81 X1.000 Y1.000 Z-3 R2", "G98 G82 X1.000 Y1.000 Z-4.5 R1.5 P0.5"][k % 2]
+        out.append(f"N{len(out)} {head}" if k % 3 == 0 else head)
+        for _ in range(min(1000, n - 2 - len(out))):
+            out.append(f"X{rnd.uniform(0, 500):.3f} Y{rnd.uniform(0, 300):.3f}")
+        out.append("G80")
+        k += 1
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
 def case(path: str, fast: bool, limit: int | None) -> None:
     """One measurement (in this fresh process): interpret the program, print a JSON line."""
     from nczones.gcode import interpret
@@ -95,6 +115,7 @@ def main() -> None:
     ap.add_argument("--small", type=int, default=100_000)
     ap.add_argument("--naive-lines", type=int, default=100_000)
     ap.add_argument("--full-lines", type=int, default=100_000)
+    ap.add_argument("--drill-lines", type=int, default=100_000)
     ap.add_argument("--case", nargs=3, metavar=("PATH", "FAST", "LIMIT"), help=argparse.SUPPRESS)
     a = ap.parse_args()
     if a.case:
@@ -119,6 +140,12 @@ def main() -> None:
         full.write_text(full_program(a.full_lines))
         rows.append((f"generated M/S-word program {a.full_lines:,} lines (needs the full interpreter)",
                      run_case(me, "--case", str(full), "1", "0")))
+        drill = Path(d) / "drill.ngc"
+        drill.write_text(drill_program(a.drill_lines))
+        rows.append((f"generated drilling (G81/G82) {a.drill_lines:,} lines, fast path",
+                     run_case(me, "--case", str(drill), "1", "0")))
+        rows.append((f"generated drilling (G81/G82) {a.drill_lines:,} lines, full interpreter (naive)",
+                     run_case(me, "--case", str(drill), "0", "0")))
     print(f"{'case':72s} {'lines':>9s} {'segments':>9s} {'wall s':>7s} {'cpu s':>7s} {'lines/s wall':>13s} "
           f"{'lines/s cpu':>12s} {'segments/s':>11s} {'fast share':>10s} {'peak RSS':>9s}")
     for name, r in rows:

@@ -179,6 +179,10 @@ class MotionChunk:
       (rows of other kinds hold zeros there).  Only segments whose numbers
       are all exact decimals at that scale, whose arc centres are rational,
       and that need no dependency tracking go into column chunks.
+      Optional columns: ``dwell`` (``int64``, the dwell time in seconds
+      times ``10**scale`` on DWELL rows, 0 elsewhere; when None, dwells have
+      no time) and ``derived`` (object array of str, what produced each row,
+      such as ``"G81 retract"``; when None, every row is written motion).
     * **objects** (``scale`` is None): ``objects`` holds the segments.
 
     ``segments()`` gives per-segment views in both forms, so consumers may
@@ -200,6 +204,8 @@ class MotionChunk:
     feed: np.ndarray | None = None
     file: str = ""
     objects: tuple[Segment, ...] | None = None
+    dwell: np.ndarray | None = None
+    derived: np.ndarray | None = None
 
     def __len__(self) -> int:
         if self.scale is None:
@@ -229,6 +235,10 @@ class MotionChunk:
             feed = None
             if self.feed is not None and kind in (SegmentKind.LINE, SegmentKind.ARC):
                 feed = Fraction(int(self.feed[i]), den)
+            if self.dwell is not None and kind is SegmentKind.DWELL:
+                arc["dwell_s"] = Fraction(int(self.dwell[i]), den)
+            if self.derived is not None:
+                arc["derived"] = str(self.derived[i])
             yield Segment(
                 kind, start, end, self.axes, int(self.block[i]), span,
                 Fraction(int(self.tool_length[i]), den), feed, **arc,

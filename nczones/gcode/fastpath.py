@@ -16,11 +16,24 @@ comments are not magic comments.  A program with ``#``, ``[``, ``O`` words
 or ``/`` anywhere is run entirely by the full path (its control flow needs
 the language layer); so are runs shorter than :data:`MIN_RUN` lines.
 
+Drilling: while a G81 or G82 cycle is active and has already run once
+(its first block, with R, Z, P, F, G98/G99 and the initial level, always
+goes through the full interpreter), a *hole line* holds only ``X`` and/or
+``Y`` words (and a leading ``N``).  Hole lines in G90 G17 G94, with the
+tool at the cycle's clear level and nothing pending (no unknown code,
+rotation, cutter compensation, dependency tracking), are taken in columns
+by ``_fast_cycle_run``: per hole the rapids, feed, dwell (G82, the
+``dwell`` column) and retract ``Interpreter._cycle`` emits, with its
+``derived`` names (the ``derived`` column).  Any other line (G80, G0,
+G91, L, R, Z, P, F words, G73/G83-G89, G18/G19) ends the hole run and goes
+to the full path.
+
 Invariants
 ----------
 * Identical segments: the fast path produces the same segments (kinds,
   exact coordinates, centres, feeds, line and block numbers) as the full
-  path; ``tests/gcode/test_fastpath.py`` checks this on the corpus.
+  path; ``tests/gcode/test_fastpath_corpus.py`` checks this on the corpus,
+  ``tests/gcode/test_fastpath_cycles.py`` on generated drilling programs.
 * Exact: numbers are parsed digit by digit into integers; the common scale
   ``10**s`` is the largest number of decimals in the run (plus one for
   inches, 25.4 = 254/10).  Magnitudes are checked before any product so no
@@ -40,7 +53,7 @@ from fractions import Fraction
 import numpy as np
 
 from ..errors import GcodeError, InputError, SourceSpan
-from ..motion import PLANE_AXES, MotionChunk, SegmentKind
+from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
 from .blocks import Block, Word
 from .lexer import PlainBlock, make_span, plain_block
 
@@ -169,7 +182,15 @@ def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None):
             failures = 0
         if k < len(fast_runs) and fast_runs[k][0] <= i:
             a, b = fast_runs[k]
-            if _state_ok(it):
+            if it.motion in (810, 820):
+                done = _fast_cycle_run(interp, code, i, b, block_counter, line0, parsed.get((i, b)))
+                if done is not None:
+                    chunk, i = done
+                    if len(chunk):
+                        yield chunk
+                    failures = 0
+                    continue
+            elif _state_ok(it):
                 chunk = _fast_run(interp, code, i, b, block_counter, line0, parsed.get((i, b)))
                 if chunk is not None:
                     if len(chunk):
@@ -748,3 +769,182 @@ def _arcs_ok(sa, sb, ea, eb, ca, cb, tol: Fraction, S: int) -> bool:
         if a0 != a1 and _sqrt_diff_exceeds(Fraction(a0), Fraction(a1), tt):
             return False
     return True
+
+
+# --------------------------------------------------------------------------- drilling cycles
+
+_XYN = np.zeros(256, dtype=bool)
+_XYN[list(b"XYN")] = True
+
+
+def _cycle_state_ok(it) -> bool:
+    """The state in which a hole line (X/Y words only) under G81/G82 is exactly what :func:`_fast_cycle_run` builds."""
+    comp = getattr(it, "_comp", None)
+    return (not it.unsupported and it.motion in (810, 820) and it._last_cycle == it.motion
+            and it.absolute and it.plane is Plane.XY and it.feed_mode == 94 and it.feed > 0
+            and not it.comp_on and not it.comp_just_off and (comp is None or comp.side is None)
+            and not it.track and it._u is None and it._machine_at is None and not it._m73
+            and it._spline is None and it.cycle_r is not None and it.cycle_cc is not None
+            and it._cycle_il is not None and all(a in it.index for a in "XYZ"))
+
+
+def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
+    """Hole lines lo..j-1 (the longest prefix of lo..hi-1 holding only X, Y and a leading N) under an
+    active G81/G82 cycle, in columns: ``(chunk, j)``, or None to send line ``lo`` to the full path.
+
+    Mirrors ``Interpreter._cycle`` for a block with X/Y words only, after the
+    cycle's first block (``_last_cycle`` is the active cycle, so R, Z and P
+    are the sticky ones), in G90 G17 G94: per hole an "up to R" rapid at the
+    previous hole when the initial level is below R, a "position" rapid at
+    the clear level, a "to R" rapid when R is below it, the feed to the
+    bottom, a dwell (G82) and the retract rapid to the clear level (R under
+    G99, the initial level under G98).  The Z axis must already be at the
+    clear level (true after every hole).
+    """
+    it = interp.interpreter
+    if not _cycle_state_ok(it):
+        return None
+    c, cl_line = code
+    if parsed is None:
+        parsed = _parse_words(c, cl_line, lo, hi)
+    if parsed is None:
+        return None
+    wl, wletter, wval, wdec = parsed
+    # the first line (from lo) with a word other than X, Y, N ends the run; so does a repeated
+    # letter or an N that is not the first word
+    rel = (wl - lo).astype(np.int64)
+    bad = ~_XYN[wletter]
+    firstw = np.ones(wl.size, dtype=bool)
+    firstw[1:] = rel[1:] != rel[:-1]
+    isN = wletter == ord("N")
+    bad |= isN & ~firstw
+    if rel.size:
+        bits = np.left_shift(np.int64(1), (wletter.astype(np.int64) - 65))
+        lstart = np.flatnonzero(firstw)
+        dup = np.add.reduceat(bits, lstart) != np.bitwise_or.reduceat(bits, lstart)
+        bad[lstart[dup]] = True
+    j = hi
+    if bad.any():
+        j = lo + int(rel[int(np.argmax(bad))])
+    if j <= lo:
+        return None
+    keep = (rel < j - lo) & ~isN
+    rel, wletter, wval, wdec = rel[keep], wletter[keep], wval[keep], wdec[keep]
+    has_word = np.zeros(j - lo, dtype=bool)
+    has_word[rel] = True
+    n = j - lo
+    inch = it.inch
+    ia, ib, ic = it.index["X"], it.index["Y"], it.index["Z"]
+    motion = it.motion
+    name = "G81" if motion == 810 else "G82"
+    INCH = Fraction(254, 10)
+    ln = (lambda v: v * INCH) if inch else (lambda v: v)
+    r = ln(it.cycle_r) + it.off[ic]
+    cc = ln(it.cycle_cc) + it.off[ic]
+    il = it._cycle_il
+    if r < cc:
+        return None  # GC306: the full path raises it
+    up_r = il < r
+    clear = r if (it.retract_r or up_r) else il
+    if it.pos[ic] != clear:
+        return None
+    fmm = ln(it.feed)
+    dwell = it.cycle_p if motion == 820 else None
+    s = int(wdec.max()) if wdec.size else 0
+    S = s + (1 if inch else 0)
+    for q in [it.tlo, fmm, r, cc, clear, *it.pos, *it.off] + ([dwell] if dwell is not None else []):
+        dd = _decimals(q)
+        if dd is None:
+            return None
+        S = max(S, dd)
+    if S > _MAX_SCALE:
+        return None
+    if wval.size:
+        if int(np.abs(wval).max()) * 10 ** (S - int(wdec.min())) * 254 // 10 >= 2**59:
+            if np.any(np.abs(wval).astype(np.float64) * 10.0 ** (S - wdec) * 25.4 > 2.0**59):
+                return None
+    pos0 = [_scaled_int(p, S) for p in it.pos]
+    off = [_scaled_int(o, S) for o in it.off]
+    z_r, z_cc, z_clear, tl, f_s = (_scaled_int(q, S) for q in (r, cc, clear, it.tlo, fmm))
+    dw = _scaled_int(dwell, S) if dwell is not None else 0
+    if max(map(abs, pos0 + off + [z_r, z_cc, z_clear, tl, f_s, dw]), default=0) > _LIMIT_STATE:
+        return None
+    # per line: the hole's X and Y (machine), forward filled
+    ar = np.arange(n, dtype=np.int64)
+    moving = np.zeros(n, dtype=bool)
+    cols = []
+    for letter, k in (("X", ia), ("Y", ib)):
+        m = wletter == ord(letter)
+        val = np.zeros(n, dtype=np.int64)
+        pres = np.zeros(n, dtype=bool)
+        if m.any():
+            e = S - wdec[m] - (1 if inch else 0)
+            v = wval[m] * _POW10[e]
+            if inch:
+                v = v * 254
+            val[rel[m]] = v
+            pres[rel[m]] = True
+        moving |= pres
+        pidx = np.maximum.accumulate(np.where(pres, ar, -1))
+        cols.append(np.where(pidx >= 0, val[np.maximum(pidx, 0)] + off[k], pos0[k]))
+    holes = np.flatnonzero(moving)
+    h = holes.size
+    block_of_line = np.cumsum(has_word) - 1 + block_counter[0]
+    block_counter[0] += int(has_word.sum())
+    it.blocks += int(has_word.sum())
+    interp.fast_lines += n
+    if h == 0:
+        return MotionChunk(it.axes, None, objects=(), file=interp.file), j
+    hx, hy = cols[0][holes], cols[1][holes]
+    px = np.concatenate(([pos0[ia]], hx[:-1]))
+    py = np.concatenate(([pos0[ib]], hy[:-1]))
+    # the template of one hole: (kind, at the previous hole?, z, what)
+    R, L, D = SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.DWELL
+    tmpl = []
+    if up_r:
+        tmpl.append((R, True, z_r, "up to R"))
+    tmpl.append((R, False, z_clear, "position"))
+    if z_r < z_clear:
+        tmpl.append((R, False, z_r, "to R"))
+    tmpl.append((L, False, z_cc, "feed"))
+    if dwell is not None:
+        tmpl.append((D, False, z_cc, "dwell"))
+    tmpl.append((R, False, z_clear, "retract"))
+    T = len(tmpl)
+    rows = h * T
+    na = len(it.axes)
+    end = np.empty((rows, na), dtype=np.int64)
+    end[:] = np.asarray(pos0, dtype=np.int64)
+    ex = end[:, ia].reshape(h, T)
+    ey = end[:, ib].reshape(h, T)
+    ez = end[:, ic].reshape(h, T)
+    for t, (_kind, prev, z, _what) in enumerate(tmpl):
+        ex[:, t] = px if prev else hx
+        ey[:, t] = py if prev else hy
+        ez[:, t] = z
+    end[:, ia] = ex.reshape(-1)
+    end[:, ib] = ey.reshape(-1)
+    end[:, ic] = ez.reshape(-1)
+    start = np.vstack((np.asarray(pos0, dtype=np.int64)[None, :], end[:-1]))
+    kinds_t = np.array([int(t[0]) for t in tmpl], dtype=np.int8)
+    kind = np.tile(kinds_t, h)
+    names = np.empty(T, dtype=object)
+    names[:] = [f"{name} {t[3]}" for t in tmpl]
+    derived = np.tile(names, h)
+    dwell_col = np.where(kind == D, dw, 0).astype(np.int64) if dwell is not None else None
+    chunk = MotionChunk(
+        it.axes, S, kind=kind, start=start, end=end,
+        line=np.repeat(holes + (lo + 1 + line0), T).astype(np.int64),
+        block=np.repeat(block_of_line[holes], T).astype(np.int64), tool_length=np.full(rows, tl, dtype=np.int64),
+        feed=np.full(rows, f_s, dtype=np.int64), file=interp.file, dwell=dwell_col, derived=derived,
+    )
+    # hand the state back to the interpreter (as _cycle/_emit leave it)
+    den = 10**S
+    last = end[-1].tolist()
+    it.pos = tuple(it.pos[k] if k not in (ia, ib, ic) else Fraction(int(last[k]), den) for k in range(na))
+    it._u_next = None
+    it._note_assumed(("units", "distance", "offset", "plane"))
+    it.segment_count += rows
+    for kk in (R, L, D):
+        it.kind_counts[kk] += h * sum(1 for t in tmpl if t[0] is kk)
+    return chunk, j
