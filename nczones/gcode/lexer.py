@@ -314,14 +314,18 @@ def plain_control(letters: str, values: tuple) -> bool:
     >>> plain_control("GXM", (Fraction(66, 10), Fraction(2), Fraction(3)))
     False
     """
-    if "M" in letters:
-        for c, v in zip(letters, values):
-            if c == "M" and v._denominator == 1 and v._numerator in _M_CONTROL:
-                return True
-    if "G" in letters:
-        for c, v in zip(letters, values):
-            if c == "G" and 65 <= v._numerator // v._denominator <= 67:
-                return True
+    i = letters.find("M")
+    while i >= 0:
+        v = values[i]
+        if v._denominator == 1 and v._numerator in _M_CONTROL:
+            return True
+        i = letters.find("M", i + 1)
+    i = letters.find("G")
+    while i >= 0:
+        v = values[i]
+        if 65 <= v._numerator // v._denominator <= 67:
+            return True
+        i = letters.find("G", i + 1)
     return False
 
 
