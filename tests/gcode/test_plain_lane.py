@@ -56,6 +56,7 @@ def _general(text: str, machine=MACHINE, monkeypatch=None):
 words = st.sampled_from([
     "G0", "G1", "g01", "G00", "F100", "F0", "F-5", "S1200", "S0", "M3", "M5", "M8", "M9", "M6", "M0",
     "T2", "G2", "G17", "G4", "P1", "R2", "I1", "Z", "G53",
+    "M2", "M02", "M30", "M30.0", "M2.5", "M98", "M99", "G65", "G65.1", "G64", "G67",  # words the language layer acts on
 ])
 numbers = st.sampled_from(["0", "1", "-1.5", ".25", "2.", "-0.001", "12.3456", "100"])
 
