@@ -1045,5 +1045,7 @@ def _chunk_rows(chunk: MotionChunk, rows) -> Iterable[Segment]:
             arc = dict(plane=Plane(int(chunk.plane[i])), clockwise=bool(chunk.clockwise[i]),
                        centre=(Fraction(int(chunk.centre[i, 0]), den), Fraction(int(chunk.centre[i, 1]), den)),
                        turns=int(chunk.turns[i]))
+        if chunk.derived is not None:  # canned-cycle rows name what produced them (reports)
+            arc["derived"] = str(chunk.derived[i])
         yield Segment(kind, start, end, chunk.axes, int(chunk.block[i]), span,
                       Fraction(int(chunk.tool_length[i]), den), None, **arc)
