@@ -174,3 +174,53 @@ def test_initial_level_below_r_goes_up_to_r_every_hole():
     (want, _), (got, fast_lines) = _outcome(text, fast=False), _outcome(text, fast=True)
     assert got == want and fast_lines >= 100
     assert sum(1 for k in got[0] if k[-1] == "G81 up to R") == 101
+
+
+CLAMP_MACHINE = parse_machine('''
+[machine]
+axes = ["X", "Y", "Z"]
+pulse = "0.001"
+rapid_mode = "dogleg"
+[machine.rapid]
+X = "1000"
+Y = "500"
+Z = "800"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "100"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "0", Y = "0", Z = "0" }
+max = { X = "300", Y = "300", Z = "200" }
+[[zones]]
+name = "clamp"
+kind = "box"
+forbid = true
+min = { X = "100", Y = "60", Z = "0" }
+max = { X = "140", Y = "180", Z = "30" }
+''')
+
+
+@settings(max_examples=12, deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(["G81", "G82 P0.5"]), st.sampled_from(["G98", "G99"]), st.sampled_from([5, 20, 31, 40]),
+       st.sampled_from([1, 10, 25]), st.sampled_from([100, 32, 60]), st.integers(0, 3), st.randoms(use_true_random=False))
+def test_prover_verdicts_and_violations_agree_on_drilling_columns(cycle, retract, z, dr, start_z, places, rnd):
+    """Holes around a clamp: the prover gives the same verdict and the same violations (line, zone,
+    point) whether the hole lines come as column rows (rapids, feeds, dwells) or as segments."""
+    from nczones.prover import verify, verify_segments
+
+    lines = ["G21 G90 G17 G54 F300", f"G0 Z{start_z}", f"{cycle} X10 Y10 Z{z} R{z + dr}", retract]
+    lines += [f"X{rnd.uniform(60, 200):.{places}f} Y{rnd.uniform(20, 220):.2f}" for _ in range(90)]
+    text = "\n".join([*lines, "G80", "M30"]) + "\n"
+    fast = verify(text, CLAMP_MACHINE, max_violations=1000)
+    full = verify_segments(iter(list(interpret(text, CLAMP_MACHINE, fast=False).segments())), CLAMP_MACHINE,
+                           max_violations=1000)
+    assert fast.verdict == full.verdict
+    assert [(v.span.line, v.zone, v.point) for v in fast.violations] == [
+        (v.span.line, v.zone, v.point) for v in full.violations]
+    run = interpret(text, CLAMP_MACHINE)
+    sum(len(c) for c in run)
+    assert run.fast_lines >= 88  # the hole lines did take the fast path
