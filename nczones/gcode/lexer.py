@@ -107,6 +107,17 @@ def decimal_value(text: str) -> Fraction:
     return _fraction(-n if negative else n, 10 ** len(frac))
 
 
+@lru_cache(maxsize=8192)  # bounded, as above
+def plain_decimal_value(text: str) -> Fraction:
+    """:func:`decimal_value` for a literal without blanks (``[+-]digits[.digits]``, the plain lane's numbers).
+
+    >>> plain_decimal_value("-.25"), plain_decimal_value("+7.")
+    (Fraction(-1, 4), Fraction(7, 1))
+    """
+    whole, _point, frac = text.partition(".")
+    return _fraction(int(whole + frac), 10 ** len(frac))
+
+
 _span_file = SourceSpan.file.__set__  # type: ignore[attr-defined]
 _span_line = SourceSpan.line.__set__  # type: ignore[attr-defined]
 _span_col = SourceSpan.column.__set__  # type: ignore[attr-defined]
@@ -295,7 +306,7 @@ def scan_plain(line: str) -> tuple | None:
     if len(parts) > 3 and "".join(parts[3::3]).strip(" \t"):
         return None
     letters = "".join(parts[1::3]).upper()
-    values = tuple(map(decimal_value, parts[2::3]))
+    values = tuple(map(plain_decimal_value, parts[2::3]))
     number = None
     if "N" in letters:
         if letters[0] != "N" or "N" in letters[1:]:

@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import os
+import re
 from fractions import Fraction
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.errors import GcodeError, SourceSpan
 from nczones.exact import parse_decimal
@@ -165,3 +167,18 @@ def test_golden_diagnostics(name):
         golden.write_text(text)
     assert text == golden.read_text()
     assert all(d.code.startswith("GC") and d.span is not None for d in e.value.diagnostics)
+
+
+plain_numbers = st.builds(
+    lambda sign, whole, point, frac: sign + whole + point + frac if (whole or frac) else sign + "0",
+    st.sampled_from(["", "+", "-"]), st.from_regex(r"[0-9]{0,12}", fullmatch=True), st.sampled_from(["", "."]),
+    st.from_regex(r"[0-9]{0,12}", fullmatch=True),
+).filter(lambda t: re.fullmatch(r"[+-]?(?:\d+\.?\d*|\.\d+)", t, re.ASCII) is not None)
+
+
+@settings(max_examples=400, deadline=None, derandomize=True, database=None)
+@given(plain_numbers)
+def test_plain_literals_read_exactly_as_the_general_reader_and_parse_decimal(text):
+    from nczones.gcode.lexer import plain_decimal_value
+
+    assert plain_decimal_value(text) == decimal_value(text) == parse_decimal(text.lstrip("+") if text.lstrip("+-") else "0")
