@@ -47,15 +47,11 @@ Invariants
 from __future__ import annotations
 
 import re
-from dataclasses import replace
 from fractions import Fraction
 
 import numpy as np
 
-from ..errors import GcodeError, InputError, SourceSpan
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
-from .blocks import Block, Word
-from .lexer import PlainBlock, make_span, plain_block
 
 __all__ = ["run_with_fastpath", "MIN_RUN"]
 
@@ -272,7 +268,7 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
 
     it = interp.interpreter
     piece = data[starts[i]:ends_[j - 1]].decode("utf-8", errors="surrogateescape")
-    offset = i + line0  # line numbers inside the piece start at 1
+    offset = i + line0  # the piece's first line is line offset + 1 of the program
 
     from .expr import Parameters
     from .interpreter import Unsupported
@@ -281,81 +277,19 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
     params = Parameters()
     it.bind_parameters(params)
 
-    def shifted():
-        # errors of the language layer carry piece-relative lines: shift them here; the
-        # interpreter's errors come from the shifted blocks and are already right
-        gen = iter_blocks(piece, file=interp.file, params=params, block_delete=interp.block_delete)
-        while True:
-            try:
-                b = next(gen)
-            except StopIteration:
-                return
-            except UnsupportedGcode as exc:
-                d = exc.diagnostic
-                span = replace(d.span, line=d.span.line + offset) if d.span is not None else None
-                it.unsupported.append(Unsupported(d.code, d.message, span))
-                return
-            except InputError as exc:
-                diags = [replace(d, span=replace(d.span, line=d.span.line + offset)) if d.span is not None else d
-                         for d in exc.diagnostics]
-                raise GcodeError(diags) from None
-            if offset == 0 and b.index == block_counter[0]:
-                nb = b
-            elif type(b) is PlainBlock:  # its words are lexed from its span when read: shift the span only
-                bs = b.span
-                span = make_span(bs.file, bs.line + offset, bs.column, bs.end_column, bs.text) if offset else bs
-                nb = plain_block(b.letters, b.values, span, block_counter[0], b.number)
-            elif offset == 0:
-                nb = Block(b.words, b.span, block_counter[0], b.number, b.messages)
-            else:
-                bs = b.span
-                span = make_span(bs.file, bs.line + offset, bs.column, bs.end_column, bs.text)
-                nb = Block(tuple(_shifted_word(w, offset) for w in b.words), span, block_counter[0],
-                           b.number, b.messages)
-            block_counter[0] += 1
-            yield nb
+    def blocks():
+        # the piece's lines and blocks are numbered as in the whole program
+        gen = iter_blocks(piece, file=interp.file, params=params, block_delete=interp.block_delete,
+                          first_line=offset + 1, first_index=block_counter[0])
+        try:
+            for b in gen:
+                block_counter[0] = b.index + 1
+                yield b
+        except UnsupportedGcode as exc:
+            d = exc.diagnostic
+            it.unsupported.append(Unsupported(d.code, d.message, d.span))
 
-    yield from it.run(shifted())
-
-
-class _ShiftedWord(Word):
-    """A word of a piece whose span lies ``offset`` lines further down the program.
-
-    The shifted span is built only when read (diagnostics): words' spans are
-    lazy in the lexer too, and building them all cost more than interpreting.
-    """
-
-    __slots__ = ("_base", "_off", "_sp")
-    __qualname__ = "Word"
-
-    @property
-    def span(self) -> SourceSpan:  # type: ignore[override]
-        sp = self._sp
-        if sp is None:
-            b = self._base.span
-            sp = make_span(b.file, b.line + self._off, b.column, b.end_column, b.text)
-            object.__setattr__(self, "_sp", sp)
-        return sp
-
-    @span.setter
-    def span(self, value: SourceSpan) -> None:
-        object.__setattr__(self, "_sp", value)
-
-
-def _shifted_word(w: Word, offset: int) -> Word:
-    n = object.__new__(_ShiftedWord)
-    _set_letter(n, w.letter)
-    _set_value(n, w.value)
-    _set_text(n, w.text)
-    object.__setattr__(n, "_base", w)
-    object.__setattr__(n, "_off", offset)
-    object.__setattr__(n, "_sp", None)
-    return n
-
-
-_set_letter = Word.letter.__set__  # type: ignore[attr-defined]
-_set_value = Word.value.__set__  # type: ignore[attr-defined]
-_set_text = Word.text.__set__  # type: ignore[attr-defined]
+    yield from it.run(blocks())
 
 
 # --------------------------------------------------------------------------- classification

@@ -251,7 +251,8 @@ _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 class _Runner:
     def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
-                 max_loop_iterations: int, max_call_depth: int):
+                 max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0):
+        self.first_line = first_line
         self.src = source
         self.file = file
         self.params = params
@@ -263,7 +264,7 @@ class _Runner:
         self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
         self.scanned_all = False
         self.cache: dict[int, object] = {}
-        self.index = 0
+        self.index = first_index
         self.started = False
         self.main_label_seen = False
 
@@ -339,7 +340,7 @@ class _Runner:
         if self.scanned_all:
             return
         self.scanned_all = True
-        for _p, ln, line, nxt in self.scan(0, 1):
+        for _p, ln, line, nxt in self.scan(0, self.first_line):
             if "o" not in line and "O" not in line:
                 continue
             m = _OLINE.match(_BLANK.sub("", line))
@@ -354,7 +355,7 @@ class _Runner:
 
     # -- execution ----------------------------------------------------------------
     def run(self) -> Iterator[Block]:
-        pos, lineno = 0, 1
+        pos, lineno = 0, self.first_line
         src = self.src
         file = self.file
         cache = self.cache
@@ -796,6 +797,8 @@ def iter_blocks(
     block_delete: bool = False,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     max_call_depth: int = 100,
+    first_line: int = 1,
+    first_index: int = 0,
 ) -> Iterator[Block]:
     """Execute the program's control and yield its blocks in execution order.
 
@@ -815,6 +818,10 @@ def iter_blocks(
         :class:`IterationBoundExceeded` is raised.
     max_call_depth : int
         Maximum nesting of subroutine calls.
+    first_line, first_index : int
+        Line number of the text's first line and index of its first block,
+        for a piece cut from a longer program (spans and diagnostics then
+        name the program's own lines).
 
     Raises
     ------
@@ -834,7 +841,7 @@ def iter_blocks(
     if not isinstance(text, str):
         raise TypeError(f"iter_blocks expects the program text as str, got {type(text).__name__}")
     runner = _Runner(_StringSource(text), file, params if params is not None else Parameters(), block_delete,
-                     max_loop_iterations, max_call_depth)
+                     max_loop_iterations, max_call_depth, first_line, first_index)
     return runner.run()
 
 
