@@ -279,17 +279,18 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
 
     def blocks():
         # the piece's lines and blocks are numbered as in the whole program
-        gen = iter_blocks(piece, file=interp.file, params=params, block_delete=interp.block_delete,
-                          first_line=offset + 1, first_index=block_counter[0])
         try:
-            for b in gen:
-                block_counter[0] = b.index + 1
-                yield b
+            yield from iter_blocks(piece, file=interp.file, params=params, block_delete=interp.block_delete,
+                                   first_line=offset + 1, first_index=block_counter[0])
         except UnsupportedGcode as exc:
             d = exc.diagnostic
             it.unsupported.append(Unsupported(d.code, d.message, d.span))
 
-    yield from it.run(blocks())
+    consumed = it.blocks
+    try:
+        yield from it.run(blocks())
+    finally:
+        block_counter[0] += it.blocks - consumed  # every block the language layer yields is consumed
 
 
 # --------------------------------------------------------------------------- classification

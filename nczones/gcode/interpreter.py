@@ -994,14 +994,16 @@ class Interpreter:
         pos = self.pos
         end = list(pos)
         inch = self.inch
-        rotary = self.rotary
+        if inch:
+            rotary = self.rotary
+            axis_values = [(i, v if rotary[i] else _qinch(v)) for i, v in axis_values]
         if self.absolute:
             off = self.off
             for i, v in axis_values:
-                end[i] = _qadd(_qinch(v) if inch and not rotary[i] else v, off[i])
+                end[i] = _qadd(v, off[i])
         else:
             for i, v in axis_values:
-                end[i] = _qadd(end[i], _qinch(v) if inch and not rotary[i] else v)
+                end[i] = _qadd(end[i], v)
         fmm = None
         if self.motion == 10:
             kind = SegmentKind.LINE
