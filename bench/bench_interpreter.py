@@ -71,23 +71,24 @@ def drill_program(n: int, seed: int = 4) -> str:
 
 
 def executed_lines(text: str) -> int:
-    """Lines the language layer executes (loop bodies once per iteration), counted by its line reader."""
+    """Lines the language layer executes (loop bodies once per iteration), counted by its line reader
+    (a subclass of the string source, which also keeps the runner on its general loop)."""
     from nczones.gcode import program
+    from nczones.gcode.expr import Parameters
 
-    count = [0]
-    original = program._StringSource.line_at
+    class Counting(program._StringSource):
+        __slots__ = ("count",)
 
-    def counting(self, pos):
-        line, nxt = original(self, pos)
-        count[0] += line is not None
-        return line, nxt
+        def line_at(self, pos):
+            line, nxt = super().line_at(pos)
+            self.count += line is not None
+            return line, nxt
 
-    program._StringSource.line_at = counting
-    try:
-        sum(1 for _ in iter_blocks(text))
-    finally:
-        program._StringSource.line_at = original
-    return count[0]
+    src = Counting(text)
+    src.count = 0
+    runner = program._Runner(src, "<bench>", Parameters(), False, program.DEFAULT_MAX_LOOP_ITERATIONS, 100)
+    sum(1 for _ in runner.run())
+    return src.count
 
 
 def best(fn, runs: int = 3) -> float:

@@ -359,7 +359,31 @@ class _Runner:
         src = self.src
         file = self.file
         cache = self.cache
+        in_text = type(src) is _StringSource
         while True:
+            if in_text and pos and len(self.frames) == 1 and not self.frames[0].loops:
+                # a run of plain lines of the main program (no control, nothing to cache): the plain
+                # path below, without the general loop's bookkeeping; stops before any other line
+                text, n, delete_on = src.text, src.n, self.block_delete
+                while pos < n:
+                    end = text.find("\n", pos)
+                    if end < 0:
+                        end = n
+                    line = text[pos:end]
+                    if line.endswith("\r"):
+                        line = line[:-1]
+                    parsed = scan_plain(line)
+                    if parsed is None:
+                        break
+                    delete, number, letters, values = parsed
+                    if letters and not (delete and delete_on):
+                        if plain_control(letters, values):
+                            break
+                        self.started = True
+                        yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
+                                          self.index, number)
+                        self.index += 1
+                    pos, lineno = end + 1, lineno + 1
             line, nxt = src.line_at(pos)
             if line is None:
                 self.check_open_frames(lineno)

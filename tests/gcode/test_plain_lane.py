@@ -34,8 +34,8 @@ MACHINE = parse_machine(
 )
 
 
-def _result(text: str, machine=MACHINE):
-    run = interpret(text, machine, fast=False)
+def _result(text: str, machine=MACHINE, block_delete=False):
+    run = interpret(text, machine, fast=False, block_delete=block_delete)
     try:
         segs = [(s.kind, s.start, s.end, s.block, s.span.line, s.span.text, s.feed_mm_min, s.tool_length,
                  s.tool_register, s.centre, s.clockwise, s.dwell_s, s.derived)
@@ -45,12 +45,12 @@ def _result(text: str, machine=MACHINE):
     return "ok", segs, [u.render() for u in run.unsupported], run.assumed_modal, run.counts
 
 
-def _general(text: str, machine=MACHINE, monkeypatch=None):
-    """The result with both shortcuts off: no PlainBlocks, no lean moves."""
+def _general(text: str, machine=MACHINE, block_delete=False):
+    """The result with the shortcuts off: no PlainBlocks (so no plain-line loop either), no lean moves."""
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(program_module, "scan_plain", lambda line: None)
         mp.setattr(Interpreter, "_lean", lambda self, *args: False)
-        return _result(text, machine)
+        return _result(text, machine, block_delete)
 
 
 words = st.sampled_from([
@@ -67,7 +67,7 @@ def plain_lines(draw):
     if kind == 0:
         return draw(st.sampled_from(["G90", "G91", "G20", "G21", "G55", "G54", "G43 H1", "G43 H2", "G49",
                                      "G94", "G93", "G1 F200", "M3 S100", "/G1 X3", "N10 G0 X0 Y0",
-                                     "G92 X1", "G92.1", "G80", "(comment) G1 X1"]))
+                                     "G92 X1", "G92.1", "G80", "(comment) G1 X1", "/X2 Y1", "/ G1 X-1", "%", ""]))
     parts = []
     for _ in range(draw(st.integers(0, 3))):
         w = draw(words)
@@ -81,10 +81,10 @@ def plain_lines(draw):
 
 @settings(max_examples=300, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow])
-@given(st.lists(plain_lines(), min_size=1, max_size=14), st.booleans())
-def test_plain_lane_equals_general_path_on_generated_programs(lines, feed_first):
-    text = ("G1 F500\n" if feed_first else "") + "\n".join(lines) + "\n"
-    assert _result(text) == _general(text), text
+@given(st.lists(plain_lines(), min_size=1, max_size=14), st.booleans(), st.booleans(), st.sampled_from(["\n", "\r\n"]))
+def test_plain_lane_equals_general_path_on_generated_programs(lines, feed_first, block_delete, eol):
+    text = ("G1 F500" + eol if feed_first else "") + eol.join(lines) + eol
+    assert _result(text, block_delete=block_delete) == _general(text, block_delete=block_delete), text
 
 
 def test_plain_lines_become_plain_blocks_and_others_do_not():
@@ -135,3 +135,21 @@ def test_the_lane_takes_plain_moves_and_only_them(monkeypatch):
     assert _result(text) == _general(text)
     # 2, 3, 8 are PlainBlocks; 5 (a comment) is a plain move lexed by the general lexer
     assert taken == [2, 3, 5, 8]
+
+
+@pytest.mark.parametrize("eol", ["\n", "\r\n"])
+@pytest.mark.parametrize("block_delete", [False, True])
+def test_runs_of_plain_lines_honour_block_delete_line_ends_and_program_end(block_delete, eol):
+    """The language layer reads runs of plain main-program lines in a loop of their own: it skips
+    block-deleted lines only with the switch on, strips CR, and hands M2/M30/M98 lines to the
+    general path (nothing after M30 is read)."""
+    lines = ["G21 G90 G1 F100", "X1 Y1", "/X2 Y2", "/ X3", "", "X4 Y4", "N7 X5", "M30", "X9 Y9"]
+    text = eol.join(lines) + eol
+    res = _result(text, block_delete=block_delete)
+    assert res == _general(text, block_delete=block_delete)
+    ends = [seg[2][:2] for seg in res[1]]
+    if block_delete:
+        assert ends == [(1, 1), (4, 4), (5, 4)]
+    else:
+        assert ends == [(1, 1), (2, 2), (3, 2), (4, 4), (5, 4)]
+    assert [seg[5] for seg in res[1]][-1] == "N7 X5"  # the span's text, without the CR
