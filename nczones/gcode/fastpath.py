@@ -128,6 +128,8 @@ def _encoded_blocks(src: str | bytes, size: int):
         lo = hi
 
 
+#: M, 9, 8 or 9 with anything up to a blank between them (lines are joined when the code is checked).
+_M98_M99_RAW = re.compile(r"[Mm][\x00-\x20]*9[\x00-\x20]*[89]")
 _SUSPECT = np.zeros(256, dtype=bool)
 _SUSPECT[list(b"#[/OoMm")] = True
 
@@ -141,6 +143,9 @@ def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
     chars = "#[/OoMm" if isinstance(src, str) else [bytes((ch,)) for ch in b"#[/OoMm"]
     if not any(src.find(ch) >= 0 for ch in chars):
         return False
+    if isinstance(src, str) and not any(src.find(ch) >= 0 for ch in "#[/Oo(;") \
+            and _M98_M99_RAW.search(src) is None:
+        return False  # M words, but none can read M98/M99 once blanks are removed (no comment can hide one)
     for blk in _encoded_blocks(src, size):
         b = np.frombuffer(blk, dtype=np.uint8)
         pos = np.flatnonzero(_SUSPECT[b])

@@ -204,3 +204,20 @@ def test_axis_words_the_machine_lacks_are_never_dropped():
         list(interpret(text, xy).segments())
     d = e.value.diagnostics[0]
     assert d.code == "GC203" and (d.span.line, d.span.column, d.span.text.strip()) == (102, 4, "X2 Z5")
+
+
+@settings(max_examples=400, deadline=None, derandomize=True, database=None)
+@given(st.lists(st.one_of(
+    st.sampled_from(["M", "m", "9", "8", "3", "0", " ", "\t", "\n", "\r", "G1", "X1", "(", ")", ";", "P", "#", "O",
+                     "/", "["]),
+    st.builds(lambda m, gap, d, tail: m + gap + d + tail, st.sampled_from("Mm"),
+              st.sampled_from(["", " ", "\t", "\n", "0", " 0 "]), st.sampled_from("0983"),
+              st.sampled_from(["", " ", "8", "9", " 8", "\t9", "\n9"]))), max_size=12).map("".join))
+def test_quick_m98_screen_agrees_with_the_exact_check(text):
+    """The text-level shortcut of ``_needs_language_layer`` (str input) decides as the exact
+    byte-level check does (bytes input, which does not take the shortcut)."""
+    from nczones.gcode.interpreter import Interpreter
+
+    it = Interpreter(MACHINE)
+    assert fastpath._needs_language_layer(text, it, 1 << 20) == fastpath._needs_language_layer(
+        text.encode(), it, 1 << 20), repr(text)
