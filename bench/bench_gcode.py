@@ -14,8 +14,11 @@ path took, and the peak resident memory, for
   the program);
 * the same CAM program (``--naive-lines`` lines) through the full
   interpreter only, for the fast/naive ratio of the same run;
-* a generated program that needs the full interpreter (M/S words on every
-  line);
+* a generated program with S and M3 words on every line (fast path since
+  S and spindle/coolant M codes are simple words);
+* a generated program that needs the full interpreter: CAM moves in a
+  program that also sets a parameter (``#`` keeps the whole program on the
+  full path);
 * a generated drilling program (``--drill-lines`` hole lines ``X.. Y..``
   under G81/G82 cycles, each cycle opened by its full block and closed by
   G80), fast path and full interpreter.
@@ -72,6 +75,15 @@ def full_program(n: int, seed: int = 2) -> str:
     out = ["G21 G91 G17 G54 F500"]
     for i in range(n - 2):
         out.append(f"G1 X{rnd.uniform(-1, 1):.3f} Y{rnd.uniform(-1, 1):.3f} S{1000 + i % 7} M3")
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def param_program(n: int, seed: int = 4) -> str:
+    rnd = random.Random(seed)
+    out = ["#<feed> = 800", "G21 G90 G17 G54 G1 F#<feed>"]
+    for _ in range(n - 3):
+        out.append(f"X{rnd.uniform(0, 200):.3f} Y{rnd.uniform(0, 100):.3f}")
     out.append("M30")
     return "\n".join(out) + "\n"
 
@@ -144,8 +156,11 @@ def main() -> None:
                      run(me, "--case", str(big), "0", str(a.naive_lines))))
         full = Path(d) / "full.ngc"
         full.write_text(full_program(a.full_lines))
-        rows.append((f"generated M/S-word program {a.full_lines:,} lines (needs the full interpreter)",
-                     run(me, "--case", str(full), "1", "0")))
+        rows.append((f"generated M/S-word program {a.full_lines:,} lines", run(me, "--case", str(full), "1", "0")))
+        param = Path(d) / "param.ngc"
+        param.write_text(param_program(a.full_lines))
+        rows.append((f"generated CAM + one parameter {a.full_lines:,} lines (needs the full interpreter)",
+                     run(me, "--case", str(param), "1", "0")))
         drill = Path(d) / "drill.ngc"
         drill.write_text(drill_program(a.drill_lines))
         rows.append((f"generated drilling (G81/G82) {a.drill_lines:,} lines, fast path",

@@ -11,8 +11,10 @@ across both paths.
 
 A line is *simple* when, outside comments and blanks, it holds only words
 ``G0``-``G3`` (at most one), axis words of the machine, ``I J K`` (with an
-arc), ``F`` and a leading ``N``, each with a plain decimal literal, and its
-comments are not magic comments.  A program with ``#``, ``[``, ``O`` words
+arc), ``F``, ``S``, at most one spindle or coolant code ``M3 M4 M5 M7 M8
+M9`` (they change nothing the motion depends on) and a leading ``N``, each
+with a plain decimal literal, and its comments are not magic comments; a
+run is cut before a line with any other M code.  A program with ``#``, ``[``, ``O`` words
 or ``/`` anywhere is run entirely by the full path (its control flow needs
 the language layer); so are runs shorter than :data:`MIN_RUN` lines.
 
@@ -52,9 +54,12 @@ from fractions import Fraction
 import numpy as np
 
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
+from .interpreter import _LEAN_M
 
 __all__ = ["run_with_fastpath", "MIN_RUN"]
 
+#: M codes a simple line may carry (spindle and coolant; the interpreter's plain lane takes the same).
+_LEAN_M_CODES = np.array(sorted(_LEAN_M), dtype=np.int64)
 #: Shorter runs of simple lines are left to the full interpreter.
 MIN_RUN = 64
 _MAX_SCALE = 9
@@ -194,9 +199,12 @@ def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None):
             elif _state_ok(it):
                 chunk = _fast_run(interp, code, i, b, block_counter, line0, parsed.get((i, b)))
                 if chunk is not None:
+                    end = b
+                    if type(chunk) is tuple:  # the run was cut before a line it cannot take
+                        chunk, end = chunk
                     if len(chunk):
                         yield chunk
-                    i = b
+                    i = end
                     failures = 0
                     continue
             # the full path for 1, 2, 4, ... lines of the run, then try the rest fast again
@@ -372,7 +380,7 @@ def _classify(data: bytes, it):
 
 
 def _allowed_table(it) -> np.ndarray:
-    letters = set(b"GIJKFN") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
+    letters = set(b"GIJKFNSM") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
     allowed = np.zeros(256, dtype=bool)
     for ch in letters | set(b"0123456789.+-"):
         allowed[ch] = True
@@ -454,7 +462,8 @@ def _parse_words(c, cl_line, lo_line, hi_line):
 
 
 def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
-    """Interpret simple lines lo..hi-1 in columns; None to send them to the full path."""
+    """Interpret simple lines lo..hi-1 in columns; None to send them to the full path, or
+    ``(chunk, end)`` when only lines lo..end-1 could be taken (a line with another M code follows)."""
     it = interp.interpreter
     c, cl_line = code
     if parsed is None:
@@ -481,6 +490,23 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         lstart = np.flatnonzero(np.concatenate(([True], rel[1:] != rel[:-1])))
         if np.any(np.add.reduceat(bits, lstart) != np.bitwise_or.reduceat(bits, lstart)):
             return None
+    # S and spindle/coolant M words (M3 M4 M5 M7 M8 M9) change nothing the motion depends on
+    # (Interpreter._lean); a line with another M code ends the run before it
+    isM = wletter == ord("M")
+    isS = wletter == ord("S")
+    only_sm_lines = None
+    if isM.any() or isS.any():
+        bad = isM & ((wdec != 0) | ~np.isin(wval, _LEAN_M_CODES))
+        if bad.any():
+            first_bad = int(rel[np.argmax(bad)])
+            if first_bad == 0:
+                return None
+            chunk = _fast_run(interp, code, lo, lo + first_bad, block_counter, line0)
+            return None if chunk is None else (chunk, lo + first_bad)
+        only_sm_lines = rel[isM | isS]  # blocks even when nothing else is left on the line
+        keep = ~(isM | isS)
+        rel, wletter, wval, wdec = rel[keep], wletter[keep], wval[keep], wdec[keep]
+        wl = wl[keep]
     # G words: values 0..3 without decimals
     isG = wletter == ord("G")
     gval = wval[isG]
@@ -510,6 +536,8 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     # per line: has word?  blocks are lines with at least one word (after N)
     has_word = np.zeros(n, dtype=bool)
     has_word[rel] = True
+    if only_sm_lines is not None:
+        has_word[only_sm_lines] = True
     # motion mode per line (forward filled)
     gline = np.full(n, -1, dtype=np.int64)
     gline[rel[isG]] = gval

@@ -14,7 +14,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings, strategies as st
 
 from nczones.errors import GcodeError
 from nczones.gcode import interpret
@@ -221,3 +221,37 @@ def test_quick_m98_screen_agrees_with_the_exact_check(text):
     it = Interpreter(MACHINE)
     assert fastpath._needs_language_layer(text, it, 1 << 20) == fastpath._needs_language_layer(
         text.encode(), it, 1 << 20), repr(text)
+
+
+sm_lines = st.one_of(
+    st.builds(lambda x, y: f"X{x} Y{y}", st.integers(-999, 999), st.integers(-999, 999)),
+    st.sampled_from(["M3", "M5 S0", "S12000 M3", "S1000", "M8", "M9", "G1 X1 S200 M4", "X2 M7", "G0 Z5 M5",
+                     "M3 M8", "M3.0", "M6", "M0", "M2", "M30", "M98 P1", "S-5", "S1 S2", "m3 s100", "N5 M3 X1",
+                     "M62 P1", "G1 F0 M3", "T1 M6", "M19 R1"]),
+)
+
+
+@settings(max_examples=150, deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(sm_lines, min_size=0, max_size=12), st.integers(0, 3), st.integers(40, 200))
+def test_spindle_and_coolant_words_in_fast_runs(sprinkled, every, n):
+    """Long runs with S and M words: the fast path takes S and M3/M4/M5/M7/M8/M9 in its columns and
+    cuts a run before any other M code (M2, M30, M6, M0, M98, ...); segments, errors, unknown
+    reasons and block numbers stay those of the full interpreter."""
+    lines = ["G21 G90 G17 G54 G1 F500"]
+    for i in range(n):
+        lines.append(f"X{i % 97}.{i % 7} Y{(i * 3) % 89}")
+        if sprinkled and every and i % (every * 7) == 3:
+            lines.append(sprinkled[i % len(sprinkled)])
+    lines += sprinkled + ["X1 Y1", "M30", "X9"]
+    text = "\n".join(lines) + "\n"
+    for size in (1 << 20, 333):
+        segs, unsupported, fast_lines = _fast(text, size)
+        assert (segs, unsupported) == _full(text), (text, size)
+
+
+def test_runs_with_spindle_words_take_the_fast_path():
+    text = "G21 G90 G1 F500 S1000 M3\n" + "".join(f"X{i}.5 Y1 S{1000 + i % 5} M{3 + (i % 2) * 5}\n" for i in range(300)) + "M30\n"
+    segs, unsupported, fast_lines = _fast(text, 1 << 20)
+    assert (segs, unsupported) == _full(text)
+    assert fast_lines >= 300
