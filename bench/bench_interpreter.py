@@ -7,11 +7,11 @@ once per loop iteration: parameter assignments and O-word lines included)
 and blocks per second (blocks handed to the interpreter) of the language
 layer alone (``iter_blocks``) and of the full interpreter
 (``interpret(..., fast=False)``) on programs that need the full
-interpreter: incremental moves with S/M words on every line, CAM-style
-moves in a program that also uses a parameter (which keeps the whole
-program off the vectorized fast path), and a LinuxCNC program with
-parameters, expressions and an O-word loop; and, for reference, G81 hole
-lines through the full interpreter (with the fast path on they take it).  CPU
+interpreter: CAM-style moves in a program that also uses a parameter
+(which keeps the whole program off the vectorized fast path) and a
+LinuxCNC program with parameters, expressions and an O-word loop; and, for
+reference, two programs the fast path takes when it is on (moves with S/M
+words on every line, G81 hole lines), here through the full interpreter.  CPU
 time of this process (``time.process_time``), so other load on the
 machine counts less; the best of three runs.  The issue's target:
 100,000 lines/s.
@@ -106,7 +106,7 @@ def main() -> None:
     a = ap.parse_args()
     n = a.lines
     programs = (
-        ("G1 X Y S M3 on every line (G91)", words_program(n)),
+        ("G1 X Y S M3 on every line (G91)*", words_program(n)),
         ("CAM lines + one parameter", param_cam_program(n)),
         ("G81 holes (4 moves a line; fast path*)", drill_program(n)),
         ("params, COS/SIN, o-word repeat", macro_program(n)),
@@ -118,8 +118,8 @@ def main() -> None:
         lang = best(lambda text=text: sum(1 for _ in iter_blocks(text)))
         full = best(lambda text=text: sum(len(c) for c in interpret(text, MACHINE, fast=False)))
         print(f"{name:34s} {lines:8d} {blocks:8d}   {lines / lang:22.0f}   {lines / full:24.0f} ({blocks / full:.0f})")
-    print("* with interpret(fast=True) such G81/G82 hole runs take the vectorized fast path "
-          "(bench/bench_gcode.py); shown here through the full interpreter for reference")
+    print("* with interpret(fast=True) these take the vectorized fast path (bench/bench_gcode.py): "
+          "shown here through the full interpreter (fast=False) for reference")
 
 
 if __name__ == "__main__":
