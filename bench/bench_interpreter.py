@@ -26,6 +26,9 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from bench_gcode import param_program  # noqa: E402  (one generator for both benchmarks)
 
 from nczones.gcode import interpret  # noqa: E402
 from nczones.gcode.program import iter_blocks  # noqa: E402
@@ -50,15 +53,6 @@ def macro_program(n: int) -> str:
     body = ["#<r> = [#1 * 0.001]", "G1 X[#<r> * COS[#1]] Y[#<r> * SIN[#1]]", "#1 = [#1 + 1]"]
     reps = max(1, (n - 6) // (len(body) + 2))
     return "\n".join(["G21 G90 F800", "#1 = 0", f"o100 repeat [{reps}]", *body, "o100 endrepeat", "M30"]) + "\n"
-
-
-def param_cam_program(n: int, seed: int = 3) -> str:
-    rnd = random.Random(seed)
-    out = ["#<feed> = 800", "G21 G90 G17 G54 G1 F#<feed>"]
-    for _ in range(n - 3):
-        out.append(f"X{rnd.uniform(0, 200):.3f} Y{rnd.uniform(0, 100):.3f}")
-    out.append("M30")
-    return "\n".join(out) + "\n"
 
 
 def drill_program(n: int, seed: int = 4) -> str:
@@ -107,7 +101,7 @@ def main() -> None:
     n = a.lines
     programs = (
         ("G1 X Y S M3 on every line (G91)*", words_program(n)),
-        ("CAM lines + one parameter", param_cam_program(n)),
+        ("CAM lines + one parameter", param_program(n)),
         ("G81 holes (4 moves a line; fast path*)", drill_program(n)),
         ("params, COS/SIN, o-word repeat", macro_program(n)),
     )
