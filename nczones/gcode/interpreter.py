@@ -641,13 +641,15 @@ class Interpreter:
             self.blocks += 1
             self._block = block
             self._span = block.span
-            if inline and type(block) is PlainBlock and not self._m73 and self._plain(block.letters, block.values):
-                pass  # the plain lane (the same test opens execute(); subclasses that wrap execute() go there)
-            else:
-                try:
+            try:
+                if inline and type(block) is PlainBlock and not self._m73:
+                    # execute() inlined (subclasses that wrap execute() go through it)
+                    if not self._plain(block.letters, block.values):
+                        self._execute_general(block)
+                else:
                     self.execute(block)
-                except _Stop:
-                    self.ended = True
+            except _Stop:
+                self.ended = True
             if len(self._out) >= size:
                 yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
                 self._out = []
@@ -662,6 +664,10 @@ class Interpreter:
             self._m73_returns()
         if type(block) is PlainBlock and self._plain(block.letters, block.values):
             return
+        self._execute_general(block)
+
+    def _execute_general(self, block: Block) -> None:
+        """:meth:`execute` for a block the plain-move lane did not take."""
         gcodes: list[tuple[int, Word]] = []
         mcodes: list[tuple[int, Word]] = []
         words: dict[str, Word] = {}
