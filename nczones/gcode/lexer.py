@@ -340,7 +340,7 @@ def plain_control(letters: str, values: tuple) -> bool:
     return False
 
 
-_M_CONTROL = frozenset((2, 30, 97, 98, 99))
+_M_CONTROL = frozenset((2, 30, 97, 98, 99))  # M codes the language layer acts on
 
 
 class PlainBlock(Block):

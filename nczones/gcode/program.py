@@ -94,6 +94,7 @@ from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import Block, Word
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
 from .lexer import (
+    _M_CONTROL,
     magic_comment,
     make_span,
     make_word,
@@ -245,7 +246,6 @@ def _show(label) -> str:
 
 _BLANK = re.compile(r"[ \t]+")
 _G_MACRO_CALLS = frozenset((Fraction(65), Fraction(66), Fraction(661, 10), Fraction(67)))
-_M_CONTROL = frozenset((2, 30, 97, 98, 99))  # M codes the language layer acts on
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 
