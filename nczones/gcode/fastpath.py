@@ -14,9 +14,15 @@ A line is *simple* when, outside comments and blanks, it holds only words
 arc), ``F``, ``S``, at most one spindle or coolant code ``M3 M4 M5 M7 M8
 M9`` (they change nothing the motion depends on) and a leading ``N``, each
 with a plain decimal literal, and its comments are not magic comments; a
-run is cut before a line with any other M code.  A program with ``#``, ``[``, ``O`` words
-or ``/`` anywhere is run entirely by the full path (its control flow needs
-the language layer); so are runs shorter than :data:`MIN_RUN` lines.
+run is cut before a line with any other M code.  A program with ``O`` words,
+``M98``/``M99`` or ``/`` anywhere is run entirely by the full path (its
+control flow needs the language layer); so are runs shorter than
+:data:`MIN_RUN` lines.  Parameters and expressions alone (``#1 = 5``,
+``G1 X[#1 + 2]``) do not need that: their lines are never simple, so they
+go to the full path, and every such piece of the program shares one
+parameter store, so values set in one piece are read in the next and the
+state parameters (``#5420``, ``#<_x>``, ...) read the interpreter's state,
+which both paths keep.
 
 Drilling: while a G81 or G82 cycle is active and has already run once
 (its first block, with R, Z, P, F, G98/G99 and the initial level, always
@@ -81,6 +87,7 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
     handed on through the interpreter).
     """
     from . import _blocks
+    from .expr import Parameters
 
     it = interp.interpreter
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
@@ -90,10 +97,12 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
         return
     block_counter = [0]
     line0 = 0
+    params = Parameters()  # one store for every piece the full path runs
+    it.bind_parameters(params)
     for blk in _encoded_blocks(text, size):
         if it.ended:
             break
-        yield from _run_block(interp, blk, line0, block_counter)
+        yield from _run_block(interp, blk, line0, block_counter, params=params)
         line0 += blk.count(b"\n") + (0 if blk.endswith(b"\n") else 1)
 
 
@@ -133,10 +142,11 @@ def _encoded_blocks(src: str | bytes, size: int):
         lo = hi
 
 
-#: M, 9, 8 or 9 with anything up to a blank between them (lines are joined when the code is checked).
-_M98_M99_RAW = re.compile(r"[Mm][\x00-\x20]*9[\x00-\x20]*[89]")
+#: M then 9, 8 or 9, or M then ``#`` or ``[`` (a computed M code), with anything up to a blank between
+#: them (lines are joined when the code is checked).
+_M98_M99_RAW = re.compile(r"[Mm][\x00-\x20]*(?:9[\x00-\x20]*[89]|[#\[])")
 _SUSPECT = np.zeros(256, dtype=bool)
-_SUSPECT[list(b"#[/OoMm")] = True
+_SUSPECT[list(b"/OoMm")] = True
 
 
 def _distinct_sorted(a: np.ndarray) -> np.ndarray:
@@ -151,17 +161,19 @@ def _distinct_sorted(a: np.ndarray) -> np.ndarray:
 
 
 def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
-    """True if the code (outside comments) has ``# [ O / M98 M99``: the whole program needs the language layer.
+    """True if the code (outside comments) has ``O / M98 M99``: the whole program needs the language layer.
 
-    Only the lines holding one of the bytes ``# [ / O o M m`` can hold such a
+    So does a computed M code (``M#1``, ``M[90 + 8]``), which could be one of them.
+
+    Only the lines holding one of the bytes ``/ O o M m`` can hold such a
     token; they are stripped of comments and blanks and checked exactly.
     """
-    chars = "#[/OoMm" if isinstance(src, str) else [bytes((ch,)) for ch in b"#[/OoMm"]
+    chars = "/OoMm" if isinstance(src, str) else [bytes((ch,)) for ch in b"/OoMm"]
     if not any(src.find(ch) >= 0 for ch in chars):
         return False
-    if isinstance(src, str) and not any(src.find(ch) >= 0 for ch in "#[/Oo(;") \
+    if isinstance(src, str) and not any(src.find(ch) >= 0 for ch in "/Oo(;") \
             and _M98_M99_RAW.search(src) is None:
-        return False  # M words, but none can read M98/M99 once blanks are removed (no comment can hide one)
+        return False  # M words, but none can read M98/M99/M#/M[ once blanks are removed (no comment can hide one)
     for blk in _encoded_blocks(src, size):
         b = np.frombuffer(blk, dtype=np.uint8)
         pos = np.flatnonzero(_SUSPECT[b])
@@ -174,12 +186,12 @@ def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
         sub = b"".join(blk[s:e] if blk[e - 1:e] == b"\n" else blk[s:e] + b"\n"
                        for s, e in zip(starts[lines].tolist(), ends_[lines].tolist()))
         cb = _classify(sub, it)[3][0].tobytes()
-        if any(t in cb for t in (b"#", b"[", b"O", b"/", b"M98", b"M99")):
+        if any(t in cb for t in (b"O", b"/", b"M98", b"M99", b"M#", b"M[")):
             return True
     return False
 
 
-def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None):
+def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None, params=None):
     """Interpret one block of whole lines (line ``line0`` is its first, 0-based).
 
     Maximal runs of simple lines are taken fast when long enough or cut by
@@ -224,7 +236,7 @@ def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None):
             failures += 1
         else:
             j = fast_runs[k][0] if k < len(fast_runs) else nlines
-        yield from _full_piece(interp, blk, starts, ends_, i, j, block_counter, line0)
+        yield from _full_piece(interp, blk, starts, ends_, i, j, block_counter, line0, params)
         i = j
 
 
@@ -287,8 +299,11 @@ def _state_ok(it) -> bool:
             and it._machine_at is None)  # the machine is where the interpreter believes (G84 outside G17)
 
 
-def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
-    """Run lines i..j-1 (of a block whose first line is ``line0``) through the language layer and the interpreter."""
+def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, params=None):
+    """Run lines i..j-1 (of a block whose first line is ``line0``) through the language layer and the interpreter.
+
+    ``params``: the program's parameter store, bound to the interpreter (a fresh one if None).
+    """
 
     it = interp.interpreter
     piece = data[starts[i]:ends_[j - 1]].decode("utf-8", errors="surrogateescape")
@@ -298,8 +313,9 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0):
     from .interpreter import Unsupported
     from .program import UnsupportedGcode, iter_blocks
 
-    params = Parameters()
-    it.bind_parameters(params)
+    if params is None:
+        params = Parameters()
+        it.bind_parameters(params)
 
     def blocks():
         # the piece's lines and blocks are numbered as in the whole program
