@@ -120,25 +120,45 @@ class LineSyntaxError(Exception):
         self.code, self.message, self.start, self.end = code, message, start, end
 
 
+def _compress(line: str) -> tuple[str, list[int]]:
+    """The line's code without blanks, lower case, comments kept as written and ``;...`` dropped, with
+    the 0-based source column of every character (and, last, the line's length without its end).
+
+    >>> _compress("G1 x2 (Cut) ; rest")
+    ('g1x2(Cut)', [0, 1, 3, 4, 6, 7, 8, 9, 10, 18])
+    """
+    parts: list[str] = []
+    cols: list[int] = []
+    for m in _TOKENS.finditer(line):
+        tok = m.group()
+        if tok[0] == ";":
+            break
+        if tok[0] == "(" and len(tok) > 1:
+            parts.append(tok)
+            cols.extend(range(m.start(), m.end()))
+        else:
+            parts.append(tok.lower())
+            cols.append(m.start())
+    cols.append(len(line.rstrip("\r\n")))
+    return "".join(parts), cols
+
+
 class _Parser:
     __slots__ = ("s", "cols", "n", "line")
 
     def __init__(self, line: str):
         self.line = line
-        parts: list[str] = []
-        cols: list[int] = []
-        for m in _TOKENS.finditer(line):
-            tok = m.group()
-            if tok[0] == ";":
-                break
-            if tok[0] == "(" and len(tok) > 1:
-                parts.append(tok)
-                cols.extend(range(m.start(), m.end()))
+        if line.isascii() and "(" not in line and ";" not in line:
+            # no comment: the code is the line without blanks, lower case (as _compress gives it)
+            if " " in line or "\t" in line or "\r" in line or "\n" in line:
+                cols = [i for i, ch in enumerate(line) if ch not in " \t\r\n"]
+                self.s = "".join([line[i] for i in cols]).lower()
             else:
-                parts.append(tok.lower())
-                cols.append(m.start())
-        self.s = "".join(parts)
-        cols.append(len(line.rstrip("\r\n")))
+                cols = list(range(len(line)))
+                self.s = line.lower()
+            cols.append(len(line.rstrip("\r\n")))
+        else:
+            self.s, cols = _compress(line)
         self.cols = cols
         self.n = len(self.s)
 

@@ -182,3 +182,14 @@ def test_plain_literals_read_exactly_as_the_general_reader_and_parse_decimal(tex
     from nczones.gcode.lexer import plain_decimal_value
 
     assert plain_decimal_value(text) == decimal_value(text) == parse_decimal(text.lstrip("+") if text.lstrip("+-") else "0")
+
+
+@settings(max_examples=400, deadline=None, derandomize=True, database=None)
+@given(st.text(alphabet=st.sampled_from(list("GgXx#<>[]*+-.=019 \t\r;(ÄΣ") + ["\x0b", "\n"]), max_size=24))
+def test_parser_reads_comment_free_lines_as_the_token_reader_does(line):
+    """The parser's shortcut for ASCII lines without comments gives the code and columns of the
+    token-by-token reader (``_compress``), which it uses for every other line."""
+    from nczones.gcode.parser import _compress, _Parser
+
+    p = _Parser(line)
+    assert (p.s, p.cols) == _compress(line)
