@@ -163,7 +163,8 @@ def _distinct_sorted(a: np.ndarray) -> np.ndarray:
 def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
     """True if the code (outside comments) has ``O / M98 M99``: the whole program needs the language layer.
 
-    So does a computed M code (``M#1``, ``M[90 + 8]``), which could be one of them.
+    So does a computed M code (``M#1``, ``M[90 + 8]``), which could be one of them.  Parameter
+    names are not code: ``T#<tool_no> M6`` has no ``O`` word.
 
     Only the lines holding one of the bytes ``/ O o M m`` can hold such a
     token; they are stripped of comments and blanks and checked exactly.
@@ -185,10 +186,22 @@ def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
         lines = _distinct_sorted(np.searchsorted(nl, pos))  # line index of each suspect byte
         sub = b"".join(blk[s:e] if blk[e - 1:e] == b"\n" else blk[s:e] + b"\n"
                        for s, e in zip(starts[lines].tolist(), ends_[lines].tolist()))
-        cb = _classify(sub, it)[3][0].tobytes()
-        if any(t in cb for t in (b"O", b"/", b"M98", b"M99", b"M#", b"M[")):
-            return True
+        code, code_line = _classify(sub, it)[3]
+        cb = code.tobytes()
+        if any(t in cb for t in _LANGUAGE_TOKENS):
+            if b"<" not in cb:
+                return True
+            # parameter names (#<tool_no>) are not code: look again, line by line, without them
+            cuts = (np.flatnonzero(np.diff(code_line)) + 1).tolist()
+            for a, z in zip([0, *cuts], [*cuts, len(cb)]):
+                line = _NAMES.sub(b"<>", cb[a:z])
+                if any(t in line for t in _LANGUAGE_TOKENS):
+                    return True
     return False
+
+
+_LANGUAGE_TOKENS = (b"O", b"/", b"M98", b"M99", b"M#", b"M[")
+_NAMES = re.compile(rb"<[^<>]*>")
 
 
 def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None, params=None):

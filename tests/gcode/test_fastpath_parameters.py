@@ -80,8 +80,10 @@ def test_parameter_program_takes_the_fast_path_and_reads_the_state_after_a_fast_
 def test_control_flow_still_takes_the_whole_program_to_the_language_layer():
     it = interpret("", MACHINE).interpreter
     plain = "G1 X1 F1\n"
-    for text in ("#1 = 2\n", "G1 X[1 + 2]\n", "(M98 in a comment) #1 = 5\n"):
+    for text in ("#1 = 2\n", "G1 X[1 + 2]\n", "(M98 in a comment) #1 = 5\n", "T#<tool_no> M6\n",
+                 "#<m98> = 1 (a name is not code)\n"):
         assert not fastpath._needs_language_layer(plain + text, it, 1 << 20)
-    for text in ("o100 if [1]\no100 endif\n", "M98 P100\n", "M #1\n", "m[98]\n", "/G1 X2\n", "M99\n"):
+    for text in ("o100 if [1]\no100 endif\n", "M98 P100\n", "M #1\n", "m[98]\n", "/G1 X2\n", "M99\n",
+                 "o<tool_no> call\n", "#<a> = 1 (x)\nM 9 8 P1\n", "#<o\nO100 sub>\n"):
         assert fastpath._needs_language_layer(plain + text, it, 1 << 20), text
         assert fastpath._needs_language_layer((plain + text).encode(), it, 1 << 20), text
