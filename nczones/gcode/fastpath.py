@@ -93,6 +93,11 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
     text = _truncate_at_percent(interp.text)
     if not text or _needs_language_layer(text, it, size):
+        if text and interp.text.isascii():
+            runs = _run_starts(text, it, size)
+            if runs:
+                yield from _language_layer_with_runs(interp, runs)
+                return
         yield from it.run(_blocks(interp.text, interp.file, interp.block_delete, it))
         return
     block_counter = [0]
@@ -104,6 +109,118 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
             break
         yield from _run_block(interp, blk, line0, block_counter, params=params)
         line0 += blk.count(b"\n") + (0 if blk.endswith(b"\n") else 1)
+
+
+def _run_starts(text: str, it, size: int) -> dict[int, list]:
+    """The runs of at least :data:`MIN_RUN` simple lines of an ASCII program, by the offset of their
+    first line: ``[end offset, first line number, lines, retries so far]``."""
+    runs: dict[int, list] = {}
+    base = 0
+    line0 = 0
+    for blk in _encoded_blocks(text, size):
+        simple, starts, ends_, _code = _classify(blk, it)
+        edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
+        for a, b in edges.reshape(-1, 2).tolist():
+            if b - a >= MIN_RUN:
+                end = min(base + int(ends_[b - 1]) + 1, base + len(blk))
+                runs[base + int(starts[a])] = [end, line0 + a + 1, b - a, 0]
+        base += len(blk)
+        line0 += len(starts)
+    return runs
+
+
+def _language_layer_with_runs(interp, runs: dict[int, list]):
+    """The whole program through the language layer, which hands each run of simple lines it
+    reaches (``runs``, see :func:`_run_starts`) to the fast path; a run the fast path cannot take
+    in the state it finds (or only in part) is read by the language layer as usual.
+
+    The language layer's control flow decides which lines run and how often, so this is exact in
+    loops and subroutines too: a run is interpreted whenever the flow reaches it, from the state the
+    interpreter is in at that moment.
+    """
+    from .expr import Parameters
+    from .interpreter import Unsupported
+    from .program import (
+        DEFAULT_MAX_LOOP_ITERATIONS,
+        FastRunRequest,
+        UnsupportedGcode,
+        _Runner,
+        _StringSource,
+    )
+
+    it = interp.interpreter
+    params = Parameters()
+    it.bind_parameters(params)
+    runner = _Runner(_StringSource(interp.text), interp.file, params, interp.block_delete,
+                     DEFAULT_MAX_LOOP_ITERATIONS, 100, fast_runs=runs)
+    flow = runner.run()
+    requests: list[FastRunRequest] = []
+
+    def blocks():
+        try:
+            for b in flow:
+                if type(b) is FastRunRequest:
+                    requests.append(b)
+                    return
+                yield b
+        except UnsupportedGcode as exc:
+            d = exc.diagnostic
+            it.unsupported.append(Unsupported(d.code, d.message, d.span))
+
+    while True:
+        yield from it.run(blocks())
+        if not requests or it.ended:
+            return
+        req = requests.pop()
+        chunk = _take_run(interp, runs, req)
+        if chunk is not None and len(chunk):
+            yield chunk
+
+
+def _take_run(interp, runs: dict[int, list], req):
+    """Interpret the run at ``req.pos`` (or its first part) in columns and set ``req.resume``; or leave
+    it unset (the language layer reads the lines) and register a retry 1, 2, 4, ... lines further on."""
+    it = interp.interpreter
+    end, lineno, nlines, retries = runs[req.pos]
+    chunk = None
+    taken = 0
+    if it._m73:
+        it._m73_returns()  # what executing the run's first block would do first (no-op inside the call)
+    if lineno == req.lineno and (it.motion in (810, 820) or _state_ok(it)) and _state_decimal(it) is not None:
+        blk = interp.text[req.pos:end].encode("ascii")
+        simple, starts, _ends, code = _classify(blk, it)
+        if len(starts) == nlines and simple.all():
+            counter = [req.index]
+            if it.motion in (810, 820):
+                done = _fast_cycle_run(interp, code, 0, nlines, counter, lineno - 1)
+            else:
+                done = _fast_run(interp, code, 0, nlines, counter, lineno - 1)
+                if done is not None and type(done) is not tuple:
+                    done = (done, nlines)
+            if done is not None and done[1] > 0:
+                chunk, taken = done
+                req.resume = (req.pos + int(starts[taken]) if taken < nlines else end, lineno + taken,
+                              counter[0])
+    if taken == 0:
+        step = 1 << retries
+        if nlines - step >= MIN_RUN:
+            pos = req.pos
+            for _ in range(step):
+                pos = interp.text.index("\n", pos) + 1
+            runs.setdefault(pos, [end, lineno + step, nlines - step, retries + 1])
+    return chunk
+
+
+def _state_decimal(it) -> int | None:
+    """The decimals the interpreter's position, offsets, feed and tool length need (None: more than
+    the fast path's scale allows, or not decimal), checked before any line of a run is read."""
+    s = 0
+    for q in (it.tlo, it.feed, *it.pos, *it.off):
+        d = _decimals(q)
+        if d is None or d > _MAX_SCALE:
+            return None
+        s = max(s, d)
+    return s
 
 
 def _prepare(blk: bytes, it):

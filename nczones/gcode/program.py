@@ -249,9 +249,27 @@ _G_MACRO_CALLS = frozenset((Fraction(65), Fraction(66), Fraction(661, 10), Fract
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 
+class FastRunRequest:
+    """What the runner yields, instead of a block, on reaching a line registered in ``fast_runs``.
+
+    The caller may interpret lines from there on by itself (they must be
+    lines of plain words the runner would yield as blocks, one block per
+    line with words); it sets ``resume`` to ``(pos, lineno, index)``, the
+    offset and number of the first line it did not take and the index of
+    the next block, or leaves it None to let the runner read the line.
+    """
+
+    __slots__ = ("pos", "lineno", "index", "resume")
+
+    def __init__(self, pos: int, lineno: int, index: int):
+        self.pos, self.lineno, self.index, self.resume = pos, lineno, index, None
+
+
 class _Runner:
     def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
-                 max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0):
+                 max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
+                 fast_runs: dict | None = None):
+        self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
         self.first_line = first_line
         self.src = source
         self.file = file
@@ -360,12 +378,25 @@ class _Runner:
         file = self.file
         cache = self.cache
         in_text = type(src) is _StringSource
+        fast = self.fast_runs
+        declined = -1  # the offset whose request the caller just declined
         while True:
+            if fast and pos in fast and pos != declined:
+                req = FastRunRequest(pos, lineno, self.index)
+                yield req
+                if req.resume is not None:
+                    pos, lineno, self.index = req.resume
+                    self.started = True
+                    declined = -1
+                    continue
+                declined = pos
             if in_text and pos and len(self.frames) == 1 and not self.frames[0].loops:
                 # a run of plain lines of the main program (no control, nothing to cache): the plain
                 # path below, without the general loop's bookkeeping; stops before any other line
                 text, n, delete_on = src.text, src.n, self.block_delete
                 while pos < n:
+                    if fast and pos in fast and pos != declined:
+                        break
                     end = text.find("\n", pos)
                     if end < 0:
                         end = n
@@ -384,6 +415,8 @@ class _Runner:
                                           self.index, number)
                         self.index += 1
                     pos, lineno = end + 1, lineno + 1
+                if fast and pos in fast and pos != declined:
+                    continue
             line, nxt = src.line_at(pos)
             if line is None:
                 self.check_open_frames(lineno)

@@ -1,0 +1,114 @@
+"""Programs with control flow: the language layer runs them and hands runs of simple lines to the fast path.
+
+The language layer (``o`` subroutines, loops, conditions, ``M98``
+subprograms) decides which lines run and how often; whenever its flow
+reaches the first line of a long run of simple lines it asks the fast path
+to take the run in columns from the state the interpreter is in.  These
+tests hold that to the full interpreter's segments, errors, unknown
+reasons and block numbers, on generated programs whose runs sit in the main
+program, subroutine bodies, loops and branches, behind ``M73``, drilling
+cycles and computed (non-decimal) positions.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.gcode import fastpath, interpret
+from tests.gcode.test_fastpath_blocks import MACHINE, _fast, _full
+
+
+def _moves(n: int, seed: int, z: bool = False) -> list[str]:
+    out = []
+    for k in range(n):
+        r = seed + 31 * k
+        out.append(f"X{(r % 997) / 100:.2f} Y{(r * 7 % 991) / 100:.2f}" + (f" Z{-(r % 13) / 10:.1f}" if z else ""))
+    return out
+
+
+SUBS = {
+    "o100": lambda n, seed: ["o100 sub", "G1 F400", *_moves(n, seed), "o100 endsub"],
+    # M73 in a subroutine: the caller's G90 G21 come back when it returns, before the caller's next run
+    "o101": lambda n, seed: ["o101 sub", "M73", "G91 G20", *["X0.01 Y-0.02"] * n, "o101 endsub"],
+    "o102": lambda n, seed: ["o102 sub", "#<r> = [#1 * 0.5]", *_moves(n, seed, z=True), "G1 X#<r>", "o102 endsub"],
+}
+
+
+@st.composite
+def language_programs(draw):
+    """Subroutines with runs in their bodies, then a main program of runs, calls, loops and branches."""
+    n = st.sampled_from([70, 130, 5])
+    subs = draw(st.lists(st.sampled_from(sorted(SUBS)), min_size=1, max_size=3, unique=True))
+    out = []
+    for name in subs:
+        out += SUBS[name](draw(n), draw(st.integers(0, 999)))
+    out += ["G21 G90 G17 G54", "#1 = 1", "G1 F500"]
+    for _ in range(draw(st.integers(1, 5))):
+        item = draw(st.sampled_from(["run", "call", "repeat", "if", "computed", "cycle", "param", "stop", "bad"]))
+        seed = draw(st.integers(0, 999))
+        if item == "run":
+            out += _moves(draw(n), seed)
+        elif item == "call":
+            out.append(f"{draw(st.sampled_from(subs))} call [{seed % 5}]")
+        elif item == "repeat":
+            out += ["o200 repeat [2]", *_moves(draw(n), seed), "#1 = [#1 + 1]", "o200 endrepeat"]
+        elif item == "if":
+            out += ["o300 if [#1 GT 1]", *_moves(draw(n), seed), "o300 else", *_moves(draw(n), seed + 1), "o300 endif"]
+        elif item == "computed":
+            out += ["G1 X[#1 / 3] Y[1 / 7]", *_moves(draw(n), seed)]  # not decimal: declined, retried further on
+        elif item == "cycle":
+            out += ["G0 Z5", "G99 G81 X1 Y1 Z-1 R2 F100", *_moves(draw(n), seed), "G80"]
+        elif item == "param":
+            out += ["#<_x0> = #5420", f"G1 X[#<_x0> + 1] F{100 + seed}"]
+        elif item == "stop" and draw(st.integers(0, 9)) == 7:
+            out += [*_moves(3, seed), "M2"]
+        elif item == "bad" and draw(st.integers(0, 9)) == 7:
+            out += _moves(80, seed)[:40] + ["X1 Y2 Y3"] + _moves(80, seed)[40:]  # an error inside a run
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+@settings(max_examples=80, deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(language_programs(), st.sampled_from([400, 1 << 20]))
+def test_language_programs_with_fast_runs_equal_the_full_interpreter(text, block_bytes):
+    assert _fast(text, block_bytes)[:2] == _full(text)
+
+
+def test_runs_in_subroutines_loops_and_after_m73_take_the_fast_path():
+    body = _moves(100, 3)
+    text = "\n".join([
+        "o101 sub", "M73", "G91 G20", *["X0.01 Y-0.02"] * 80, "o101 endsub",
+        "o100 sub", *body, "o100 endsub",
+        "G21 G90 G1 F300", "o200 repeat [3]", "o100 call", "o200 endrepeat",
+        "o101 call", *_moves(90, 7), "M30"]) + "\n"
+    run = interpret(text, MACHINE)
+    segs = list(run.segments())
+    # every call and iteration, and the main program's run; o101's run is found from its "M73" line
+    # (the fast path cuts before M73, then G91 stops it): retried 1, then 1 + 2 lines further on
+    assert run.fast_lines == 3 * 100 + 79 + 90
+    assert _fast(text, 1 << 20)[:2] == _full(text)
+    # after o101 returns, M73 has restored G90 G21: the main run moves to absolute millimetres
+    x, y = (Fraction(w[1:]) for w in _moves(90, 7)[0].split())
+    assert segs[-90].end[:2] == (x, y)
+
+
+def test_a_run_declined_for_a_computed_position_is_retried_further_on():
+    text = "\n".join(["o100 sub", "o100 endsub", "G21 G90 G1 F100", "G1 X[1 / 3] Y[2 / 3]", *_moves(200, 1),
+                      "M30"]) + "\n"
+    run = interpret(text, MACHINE)
+    list(run.segments())
+    # X and Y are both set on the run's first line, so the retry one line further on is taken
+    assert run.fast_lines == 199
+    assert _fast(text, 1 << 20)[:2] == _full(text)
+
+
+def test_non_ascii_programs_keep_the_language_layer_alone():
+    text = "(café)\no100 sub\no100 endsub\nG1 F100\n" + "\n".join(_moves(100, 2)) + "\nM30\n"
+    run = interpret(text, MACHINE)
+    list(run.segments())
+    assert run.fast_lines == 0
+    assert fastpath._needs_language_layer(text, run.interpreter, 1 << 20)
