@@ -16,9 +16,16 @@ path took, and the peak resident memory, for
   interpreter only, for the fast/naive ratio of the same run;
 * a generated program with S and M3 words on every line (fast path since
   S and spindle/coolant M codes are simple words);
-* a generated program that needs the full interpreter: CAM moves in a
-  program that also sets a parameter (``#`` keeps the whole program on the
-  full path);
+* a generated CAM program that also sets and reads parameters (no control
+  flow: the fast path takes its runs, the full path its ``#`` lines, with
+  one parameter store);
+* a generated CAM program with subroutines (``o100 sub``/``call``, so the
+  language layer runs the whole program and hands runs of simple lines in
+  the main program and in subroutine bodies to the fast path);
+* programs that need the full interpreter line by line: parameters,
+  expressions and an O-word loop (``bench_interpreter.macro_program``; its
+  lines are the lines the language layer executes, loop bodies once per
+  iteration), and an expression in the words of every line;
 * a generated drilling program (``--drill-lines`` hole lines ``X.. Y..``
   under G81/G82 cycles, each cycle opened by its full block and closed by
   G80), fast path and full interpreter.
@@ -88,6 +95,34 @@ def param_program(n: int, seed: int = 4) -> str:
     return "\n".join(out) + "\n"
 
 
+def sub_program(n: int, seed: int = 5) -> str:
+    """About ``n`` lines: a CAM main program calling two subroutines (a plunge and a 200-line contour)."""
+    rnd = random.Random(seed)
+    contour = [f"G1 X[#1 + {rnd.uniform(0, 50):.3f}] Y{rnd.uniform(0, 50):.3f}" if k == 0 else
+               f"X{rnd.uniform(0, 50):.3f} Y{rnd.uniform(0, 50):.3f}" for k in range(200)]
+    out = ["o100 sub", "G0 Z5", "G1 Z#1 F200", "o100 endsub", "o200 sub", *contour, "o200 endsub",
+           "G21 G90 G17 G54", "G1 F800"]
+    while len(out) < n - 1:
+        out += ["o100 call [-1]", "o200 call [10]"]
+        out += [f"X{rnd.uniform(0, 200):.3f} Y{rnd.uniform(0, 100):.3f}" for _ in range(500)]
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def expr_program(n: int, seed: int = 7) -> str:
+    """About ``n`` lines: moves whose words are expressions (``G1 X[#1 + 12.5] Y[#2 + 3.25]``), a
+    parameter changed every tenth line, no control flow (every line is different, nothing repeats)."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54 F800", "#1 = 0", "#2 = 0"]
+    while len(out) < n - 1:
+        if len(out) % 10 == 0:
+            out.append(f"#1 = [#1 + {rnd.uniform(0, 1):.3f}]")
+        else:
+            out.append(f"G1 X[#1 + {rnd.uniform(0, 100):.3f}] Y[#2 + {rnd.uniform(0, 100):.3f}]")
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
 def drill_program(n: int, seed: int = 3) -> str:
     """About ``n`` lines: G81 and G82 cycles (G98/G99) of 1000 holes each, as CAM posts them."""
     rnd = random.Random(seed)
@@ -104,8 +139,12 @@ def drill_program(n: int, seed: int = 3) -> str:
     return "\n".join(out) + "\n"
 
 
-def case(path: str, fast: bool, limit: int | None) -> None:
-    """One measurement (in this fresh process): interpret the program, print a JSON line."""
+def case(path: str, fast: bool, limit: int | None, executed: int = 0) -> None:
+    """One measurement (in this fresh process): interpret the program, print a JSON line.
+
+    ``executed``: the lines the language layer executes (counted by the parent process, so that
+    nothing here is warmed up before the clock starts); default the program's lines.
+    """
     from nczones.gcode import interpret
 
     p = Path(path)
@@ -115,7 +154,7 @@ def case(path: str, fast: bool, limit: int | None) -> None:
         lines = text.count("\n")
     else:
         src = p
-        lines = p.read_bytes().count(b"\n")
+        lines = executed or p.read_bytes().count(b"\n")
     with Clock() as c:
         run = interpret(src, MACHINE, fast=fast, arc_tolerance="0.1")
         segs = sum(len(ch) for ch in run)
@@ -130,11 +169,14 @@ def main() -> None:
     ap.add_argument("--full-lines", type=int, default=100_000)
     ap.add_argument("--drill-lines", type=int, default=100_000)
     ap.add_argument("--runs", type=int, default=3, help="fresh processes per case; the least CPU time is shown")
-    ap.add_argument("--case", nargs=3, metavar=("PATH", "FAST", "LIMIT"), help=argparse.SUPPRESS)
+    ap.add_argument("--case", nargs="+", metavar="PATH FAST LIMIT [EXECUTED]", help=argparse.SUPPRESS)
     a = ap.parse_args()
     if a.case:
-        case(a.case[0], a.case[1] == "1", int(a.case[2]) or None)
+        case(a.case[0], a.case[1] == "1", int(a.case[2]) or None, int(a.case[3]) if len(a.case) > 3 else 0)
         return
+    # imported here, not at the top: a case's process must not import (and warm up) the language layer
+    from bench_interpreter import executed_lines, macro_program
+
     me = str(Path(__file__).resolve())
 
     def run(*args):
@@ -159,8 +201,20 @@ def main() -> None:
         rows.append((f"generated M/S-word program {a.full_lines:,} lines", run(me, "--case", str(full), "1", "0")))
         param = Path(d) / "param.ngc"
         param.write_text(param_program(a.full_lines))
-        rows.append((f"generated CAM + one parameter {a.full_lines:,} lines (needs the full interpreter)",
+        rows.append((f"generated CAM + parameters {a.full_lines:,} lines (fast runs, shared parameters)",
                      run(me, "--case", str(param), "1", "0")))
+        subs = Path(d) / "subs.ngc"
+        subs.write_text(sub_program(a.full_lines))
+        rows.append((f"generated CAM + subroutines {a.full_lines:,} lines (O words; fast runs)",
+                     run(me, "--case", str(subs), "1", "0", str(executed_lines(subs.read_text())))))
+        macro = Path(d) / "macro.ngc"
+        macro.write_text(macro_program(a.full_lines))
+        rows.append((f"NEEDS FULL INTERPRETER: params, COS/SIN, o-word repeat ({a.full_lines:,} executed)",
+                     run(me, "--case", str(macro), "1", "0", str(executed_lines(macro.read_text())))))
+        exprs = Path(d) / "exprs.ngc"
+        exprs.write_text(expr_program(a.full_lines))
+        rows.append((f"NEEDS FULL INTERPRETER: an expression on every line, {a.full_lines:,} lines",
+                     run(me, "--case", str(exprs), "1", "0")))
         drill = Path(d) / "drill.ngc"
         drill.write_text(drill_program(a.drill_lines))
         rows.append((f"generated drilling (G81/G82) {a.drill_lines:,} lines, fast path",
@@ -178,6 +232,9 @@ def main() -> None:
     naive = by[f"generated CAM first {a.naive_lines:,} lines, full interpreter (naive)"]
     print(f"fast path vs full interpreter on the CAM program (lines/s, CPU): "
           f"{(fast['lines'] / fast['cpu']) / (naive['lines'] / naive['cpu']):.0f}x")
+    full = [r for name, r in rows if name.startswith("NEEDS FULL")]
+    print("programs that need the full interpreter (target 100,000 lines/s): "
+          + ", ".join(f"{r['lines'] / r['cpu']:,.0f}" for r in full) + " lines/s (CPU)")
     if STELLABEE.is_file():
         f, n = by["stellabee1.ngc, fast path"], by["stellabee1.ngc, full interpreter (naive)"]
         print(f"fast path vs full interpreter on stellabee1.ngc (CPU): {n['cpu'] / f['cpu']:.0f}x")

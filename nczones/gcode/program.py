@@ -423,7 +423,9 @@ class _Runner:
                 return
             parsed = cache.get(pos) if cache else None
             if parsed is None:
-                parsed = scan_plain(line) or scan_simple(line, lineno, file)
+                # '#' or '[' outside comments: for the parser only (both scanners would refuse the line)
+                parsed = None if (("#" in line or "[" in line) and "(" not in line and ";" not in line) \
+                    else (scan_plain(line) or scan_simple(line, lineno, file))
                 if parsed is None:
                     try:
                         parsed = parse_line(line, lineno, file)
