@@ -104,6 +104,7 @@ from .lexer import (
     scan_simple,
 )
 from .parser import OWord, ParsedLine, parse_line
+from .shapes import parse_line_shaped
 
 __all__ = [
     "iter_blocks",
@@ -428,7 +429,7 @@ class _Runner:
                     else (scan_plain(line) or scan_simple(line, lineno, file))
                 if parsed is None:
                     try:
-                        parsed = parse_line(line, lineno, file)
+                        parsed = parse_line_shaped(line, lineno, file)
                     except GcodeError as e:
                         raise self.syntax_error(e, nxt, lineno) from None
                 if len(self.frames) > 1 or self.frames[0].loops:
