@@ -404,6 +404,8 @@ class _Runner:
                     line = text[pos:end]
                     if line.endswith("\r"):
                         line = line[:-1]
+                    if "#" in line or "[" in line:
+                        break  # not plain (the general path below reads it)
                     parsed = scan_plain(line)
                     if parsed is None:
                         break

@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import re
 
-from .lexer import decimal_value
+from .lexer import plain_decimal_value
 from .parser import NUM, ParsedLine, _Parser, parse_line
 
 __all__ = ["parse_line_shaped", "MAX_SHAPES"]
@@ -169,5 +169,5 @@ def _tree(node, leaf_of: dict[int, str]) -> str:
 
 
 def _num(text: str) -> tuple:
-    """The NUM leaf of a literal, as the parser makes it."""
-    return (NUM, float(text), decimal_value(text))
+    """The NUM leaf of a literal (an optional sign, digits, at most one point, no blanks), as the parser makes it."""
+    return (NUM, float(text), plain_decimal_value(text))
