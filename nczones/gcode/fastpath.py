@@ -113,7 +113,7 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
 
 def _run_starts(text: str, it, size: int) -> dict[int, list]:
     """The runs of at least :data:`MIN_RUN` simple lines of an ASCII program, by the offset of their
-    first line: ``[end offset, first line number, lines, retries so far]``."""
+    first line: ``[end offset, first line number, lines, retries so far, times declined]``."""
     runs: dict[int, list] = {}
     base = 0
     line0 = 0
@@ -123,7 +123,7 @@ def _run_starts(text: str, it, size: int) -> dict[int, list]:
         for a, b in edges.reshape(-1, 2).tolist():
             if b - a >= MIN_RUN:
                 end = min(base + int(ends_[b - 1]) + 1, base + len(blk))
-                runs[base + int(starts[a])] = [end, line0 + a + 1, b - a, 0]
+                runs[base + int(starts[a])] = [end, line0 + a + 1, b - a, 0, 0]
         base += len(blk)
         line0 += len(starts)
     return runs
@@ -179,9 +179,13 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
 
 def _take_run(interp, runs: dict[int, list], req):
     """Interpret the run at ``req.pos`` (or its first part) in columns and set ``req.resume``; or leave
-    it unset (the language layer reads the lines) and register a retry 1, 2, 4, ... lines further on."""
+    it unset (the language layer reads the lines) and register a retry 1, 2, 4, ... lines further on.
+
+    A run declined :data:`MAX_DECLINES` times (in a loop, say) is not offered again.
+    """
     it = interp.interpreter
-    end, lineno, nlines, retries = runs[req.pos]
+    entry = runs[req.pos]
+    end, lineno, nlines, retries = entry[:4]
     chunk = None
     taken = 0
     if it._m73:
@@ -207,8 +211,15 @@ def _take_run(interp, runs: dict[int, list], req):
             pos = req.pos
             for _ in range(step):
                 pos = interp.text.index("\n", pos) + 1
-            runs.setdefault(pos, [end, lineno + step, nlines - step, retries + 1])
+            runs.setdefault(pos, [end, lineno + step, nlines - step, retries + 1, 0])
+        entry[4] += 1
+        if entry[4] >= MAX_DECLINES:
+            del runs[req.pos]
     return chunk
+
+
+#: Declines after which the language layer stops offering a run to the fast path.
+MAX_DECLINES = 8
 
 
 def _state_decimal(it) -> int | None:

@@ -112,3 +112,24 @@ def test_non_ascii_programs_keep_the_language_layer_alone():
     list(run.segments())
     assert run.fast_lines == 0
     assert fastpath._needs_language_layer(text, run.interpreter, 1 << 20)
+
+
+def test_a_run_declined_again_and_again_is_no_longer_offered(monkeypatch):
+    """A run the fast path keeps refusing (here every state is refused) in a loop of 50 calls is offered at
+    most MAX_DECLINES times per start line; the result stays the full interpreter's."""
+    calls = []
+    real = fastpath._take_run
+
+    def counting(interp, runs, req):
+        calls.append(req.pos)
+        return real(interp, runs, req)
+
+    monkeypatch.setattr(fastpath, "_take_run", counting)
+    monkeypatch.setattr(fastpath, "_state_decimal", lambda it: None)  # every state refused
+    text = "\n".join(["o100 sub", *_moves(70, 1), "o100 endsub", "G21 G90 G1 F100",
+                      "o200 repeat [50]", "o100 call", "o200 endrepeat", "M30"]) + "\n"
+    run = interpret(text, MACHINE)
+    list(run.segments())
+    assert run.fast_lines == 0
+    assert max(calls.count(p) for p in set(calls)) == fastpath.MAX_DECLINES
+    assert _fast(text, 1 << 20)[:2] == _full(text)
