@@ -36,7 +36,7 @@ from collections.abc import Callable
 from fractions import Fraction
 
 from ..errors import InvalidArgument
-from .lexer import _fraction
+from .lexer import _fraction, _fraction_raw
 from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
 
 __all__ = [
@@ -272,6 +272,16 @@ def evaluate(node, params: Parameters) -> Value:
     tag = node[0]
     if tag == NUM:
         return (node[1], node[2])
+    if tag == PAR and node[1][0] == NUM:
+        # #<number literal>: parameter_key and Parameters.read, inlined
+        d = node[1][1]
+        index = round(d)
+        if abs(d - index) > 0.0001 or not 1 <= index <= params.max_parameter:
+            parameter_key(node, params)  # raises its error
+        getter = params._providers.get(index)
+        if getter is None:
+            return params._num.get(index, _UNSET)
+        return _pair(getter())
     if tag == PAR or tag == NPAR:
         key = parameter_key(node, params)
         try:
@@ -303,6 +313,46 @@ def evaluate(node, params: Parameters) -> Value:
 
 _TRUE = (1.0, Fraction(1))
 _FALSE = (0.0, Fraction(0))
+_UNSET = (0.0, Fraction(0))  # what an unset numbered parameter reads
+
+
+def _q_add(a: Fraction, b: Fraction) -> Fraction:
+    """``a + b`` by integer arithmetic (the result is normalized, equal to Fraction's)."""
+    da, db = a._denominator, b._denominator
+    if da == db:
+        return _fraction(a._numerator + b._numerator, da)
+    return _fraction(a._numerator * db + b._numerator * da, da * db)
+
+
+def _q_sub(a: Fraction, b: Fraction) -> Fraction:
+    da, db = a._denominator, b._denominator
+    if da == db:
+        return _fraction(a._numerator - b._numerator, da)
+    return _fraction(a._numerator * db - b._numerator * da, da * db)
+
+
+def _q_mul(a: Fraction, b: Fraction) -> Fraction:
+    return _fraction(a._numerator * b._numerator, a._denominator * b._denominator)
+
+
+def _q_div(a: Fraction, b: Fraction) -> Fraction:
+    """``a / b`` for ``b != 0``."""
+    n, d = a._numerator * b._denominator, a._denominator * b._numerator
+    return _fraction(-n, -d) if d < 0 else _fraction(n, d)
+
+
+if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
+    def _q_add(a, b):  # noqa: F811
+        return a + b
+
+    def _q_sub(a, b):  # noqa: F811
+        return a - b
+
+    def _q_mul(a, b):  # noqa: F811
+        return a * b
+
+    def _q_div(a, b):  # noqa: F811
+        return a / b
 
 
 def _binary(op: str, left: Value, right: Value) -> Value:
@@ -310,15 +360,15 @@ def _binary(op: str, left: Value, right: Value) -> Value:
     b, qb = right
     exact = qa is not None and qb is not None
     if op == "+":
-        return _keep(_check(a + b), qa + qb if exact else None)
+        return _keep(_check(a + b), _q_add(qa, qb) if exact else None)
     if op == "-":
-        return _keep(_check(a - b), qa - qb if exact else None)
+        return _keep(_check(a - b), _q_sub(qa, qb) if exact else None)
     if op == "*":
-        return _keep(_check(a * b), qa * qb if exact else None)
+        return _keep(_check(a * b), _q_mul(qa, qb) if exact else None)
     if op == "/":
         if b == 0.0:
             raise EvalError("GC311", "attempt to divide by zero")
-        return _keep(_check(a / b), qa / qb if exact and qb != 0 else None)
+        return _keep(_check(a / b), _q_div(qa, qb) if exact and qb != 0 else None)
     if op == "mod":
         if b == 0.0:
             raise EvalError("GC311", "attempt to take MOD by zero")

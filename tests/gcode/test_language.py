@@ -6,6 +6,8 @@ import math
 from fractions import Fraction
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
 from nczones.gcode.expr import Parameters
@@ -230,3 +232,44 @@ def test_runtime_language_errors(prog, code):
         list(iter_blocks(prog, "r.ngc", max_call_depth=20))
     assert e.value.code == code
     assert e.value.diagnostics[0].span.file == "r.ngc"
+
+
+fractions_ = st.builds(Fraction, st.integers(-10**12, 10**12), st.integers(1, 10**9))
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None)
+@given(fractions_, fractions_)
+def test_exact_shadow_arithmetic_equals_fractions(a, b):
+    from nczones.gcode import expr
+
+    assert expr._q_add(a, b) == a + b and expr._q_sub(a, b) == a - b and expr._q_mul(a, b) == a * b
+    for got, want in ((expr._q_add(a, b), a + b), (expr._q_mul(a, b), a * b)):
+        assert (got.numerator, got.denominator) == (want.numerator, want.denominator)  # normalized
+    if b:
+        got = expr._q_div(a, b)
+        assert (got.numerator, got.denominator) == ((a / b).numerator, (a / b).denominator)
+
+
+@settings(max_examples=200, deadline=None, derandomize=True, database=None)
+@given(st.sampled_from(["1", "5420", "5", "0", "5602", "2.00001", "2.001", "-3", "30.", "5400"]),
+       st.integers(-5, 5), st.booleans())
+def test_numbered_parameter_reads_take_the_general_reader_s_value_or_error(index, value, provided):
+    """``#<literal>`` is read by an inlined path; it must give what parameter_key + Parameters.read give."""
+    from nczones.gcode.expr import EvalError, evaluate, parameter_key
+    from nczones.gcode.parser import parse_line
+
+    params = Parameters()
+    params.set(1, value)
+    params.set(5, Fraction(value, 3))
+    if provided:
+        params.provide(5420, lambda: Fraction(7, 2))
+        params.provide(1, lambda: 2.5)
+    tree = parse_line(f"X#{index}", 1, "t").words[0][1]
+
+    def outcome(fn):
+        try:
+            return fn()
+        except EvalError as exc:
+            return (exc.code, str(exc))
+
+    assert outcome(lambda: evaluate(tree, params)) == outcome(lambda: params.read(parameter_key(tree, params)))
