@@ -282,7 +282,7 @@ class _Runner:
         self.subs: dict[object, tuple[int, int]] = {}  # label -> (pos, lineno) of the line after "sub"
         self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
         self.scanned_all = False
-        self.cache: dict[int, object] = {}
+        self.cache: dict[int, tuple] = {}  # offset -> (parsed line, line, next offset)
         self.index = first_index
         self.started = False
         self.main_label_seen = False
@@ -420,11 +420,15 @@ class _Runner:
                     pos, lineno = end + 1, lineno + 1
                 if fast and pos in fast and pos != declined:
                     continue
-            line, nxt = src.line_at(pos)
-            if line is None:
-                self.check_open_frames(lineno)
-                return
-            parsed = cache.get(pos) if cache else None
+            hit = cache.get(pos) if cache else None
+            if hit is not None:
+                parsed, line, nxt = hit
+            else:
+                line, nxt = src.line_at(pos)
+                if line is None:
+                    self.check_open_frames(lineno)
+                    return
+                parsed = None
             if parsed is None:
                 # '#' or '[' outside comments: for the parser only (both scanners would refuse the line)
                 parsed = None if (("#" in line or "[" in line) and "(" not in line and ";" not in line) \
@@ -436,7 +440,7 @@ class _Runner:
                         raise self.syntax_error(e, nxt, lineno) from None
                 if len(self.frames) > 1 or self.frames[0].loops:
                     if len(cache) < 200_000:
-                        cache[pos] = parsed
+                        cache[pos] = (parsed, line, nxt)  # lines run again in loops and subroutines
             if type(parsed) is tuple and len(parsed) == 4 and type(parsed[2]) is str:
                 # plainest path: (delete, number, letters, values); words made only when read
                 delete, number, letters, values = parsed
