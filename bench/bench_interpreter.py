@@ -64,9 +64,17 @@ def drill_program(n: int, seed: int = 4) -> str:
     return "\n".join(out) + "\n"
 
 
+class _NoCache(dict):
+    """A line cache that keeps nothing, so the runner reads every line it executes from its source."""
+
+    def __setitem__(self, key, value) -> None:
+        pass
+
+
 def executed_lines(text: str) -> int:
     """Lines the language layer executes (loop bodies once per iteration), counted by its line reader
-    (a subclass of the string source, which also keeps the runner on its general loop)."""
+    (a subclass of the string source, which also keeps the runner on its general loop; the runner's
+    cache of lines that run again is turned off, so every executed line is read)."""
     from nczones.gcode import program
     from nczones.gcode.expr import Parameters
 
@@ -81,6 +89,7 @@ def executed_lines(text: str) -> int:
     src = Counting(text)
     src.count = 0
     runner = program._Runner(src, "<bench>", Parameters(), False, program.DEFAULT_MAX_LOOP_ITERATIONS, 100)
+    runner.cache = _NoCache()
     sum(1 for _ in runner.run())
     return src.count
 
