@@ -73,8 +73,9 @@ def language_programs(draw):
 
 @settings(max_examples=80, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
-@given(language_programs(), st.sampled_from([400, 1 << 20]))
-def test_language_programs_with_fast_runs_equal_the_full_interpreter(text, block_bytes):
+@given(language_programs(), st.sampled_from([400, 1 << 20]), st.sampled_from(["\n", "\r\n"]))
+def test_language_programs_with_fast_runs_equal_the_full_interpreter(text, block_bytes, newline):
+    text = text.replace("\n", newline)
     assert _fast(text, block_bytes)[:2] == _full(text)
 
 
