@@ -391,6 +391,20 @@ def plain_block(letters: str, values: tuple, span: SourceSpan, index: int, numbe
     return b
 
 
+def plain_block_of(words: tuple[Word, ...], span: SourceSpan, index: int, number) -> PlainBlock:
+    """A :class:`PlainBlock` of words already made (evaluated ones, say): the plain lane reads their
+    letters and values, everybody else the words themselves.
+
+    >>> b = plain_block_of((make_word("G", Fraction(1), None, "G1"), make_word("X", Fraction(5, 2), None, "X[5/2]")),
+    ...                    SourceSpan("p", 1, 1, 10, "G1 X[5/2]"), 0, None)
+    >>> b.letters, b.values, [w.text for w in b.words]
+    ('GX', (Fraction(1, 1), Fraction(5, 2)), ['G1', 'X[5/2]'])
+    """
+    b = plain_block("".join([w.letter for w in words]), tuple([w.value for w in words]), span, index, number)
+    _block_words(b, words)
+    return b
+
+
 def _scan_blanks(line: str, lineno: int, file: str) -> tuple | None:
     """:func:`scan_simple` for lines with blanks inside numbers (``X1 2.5``)."""
     m = _SIMPLE_LINE.fullmatch(line)

@@ -99,6 +99,7 @@ from .lexer import (
     make_span,
     make_word,
     plain_block,
+    plain_block_of,
     plain_control,
     scan_plain,
     scan_simple,
@@ -560,7 +561,7 @@ class _Runner:
                                            lineno, line, col, end)
                 if n in (2, 30):
                     stop = True
-            if letter == "G" and value in _G_MACRO_CALLS:
+            if letter == "G" and 65 <= value.numerator // value.denominator <= 67 and value in _G_MACRO_CALLS:
                 raise self.unsupported("GC301", f"G{value} macro calls are not supported", lineno, line, col, end)
             words.append(make_word(letter, value, make_span(self.file, lineno, col, end, line), text))
         values = []
@@ -589,8 +590,12 @@ class _Runner:
             words = rest
         if words or messages:
             self.started = True
-            yield Block(tuple(words), make_span(self.file, lineno, 1, len(line) + 1, line), self.index,
-                        pl.number, messages)
+            span = make_span(self.file, lineno, 1, len(line) + 1, line)
+            if messages or m98 is not None or m99 is not None:
+                yield Block(tuple(words), span, self.index, pl.number, messages)
+            else:
+                # evaluated words in the plain lane's form (letters and values), the words kept as they are
+                yield plain_block_of(tuple(words), span, self.index, pl.number)
             self.index += 1
         if stop:
             return None

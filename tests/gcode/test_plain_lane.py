@@ -79,6 +79,22 @@ def plain_lines(draw):
     return sep.join(parts)
 
 
+expression_lines = st.sampled_from([
+    "#1 = 2.5", "#2 = [1 / 3]", "X[1 + 2] Y#1", "G[1] X#2", "X[#1 / 3] F[100 * 2]", "G0 X[COS[30]] Y-#1", "M[3] S[100]",
+    "G1 X#2 Z[#1 - 0.5]", "F#1 X[2 ** 0.5]", "X[#1] X[2]", "G[0.5] X1", "M[98] P1", "#3 = -1\nF#3 X1", "A[#1 * 10]",
+    "X[1/0]", "N7 G1 X[#1 + 1] (cut)", "G91 X[#2]", "G20 X[#1]", "Y[#<_x> + 1]",
+])
+
+
+@settings(max_examples=200, deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.one_of(plain_lines(), expression_lines), min_size=1, max_size=14), st.booleans())
+def test_evaluated_blocks_in_the_lane_equal_the_general_path(lines, feed_first):
+    """Blocks whose words the language layer evaluated ([...], #) are handed over in the lane's form too."""
+    text = ("G1 F500\n" if feed_first else "") + "\n".join(lines) + "\n"
+    assert _result(text) == _general(text), text
+
+
 @settings(max_examples=300, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(plain_lines(), min_size=1, max_size=14), st.booleans(), st.booleans(), st.sampled_from(["\n", "\r\n"]))
@@ -89,8 +105,11 @@ def test_plain_lane_equals_general_path_on_generated_programs(lines, feed_first,
 
 def test_plain_lines_become_plain_blocks_and_others_do_not():
     blocks = list(iter_blocks("G1 X1 Y2 F100\nG1 X2 (cut)\n#1=2\nG1 X#1\nN5 X3 S100 M3\nM98 P10\nM2\nO10\nM99\n"))
+    # line 4's words are evaluated by the general path and handed on in the lane's form too, words kept;
+    # M2 ends the program and is read by the general path (which hands it on the same way)
     assert [(type(b) is PlainBlock, b.span.line) for b in blocks] == [
-        (True, 1), (False, 2), (False, 4), (True, 5), (False, 7)]  # M2 ends the program: the general path
+        (True, 1), (False, 2), (True, 4), (True, 5), (True, 7)]
+    assert [w.text for w in blocks[2].words] == ["G1", "X#1"]
     # words of a plain block are made on reading and equal the general lexer's
     assert [(w.letter, w.value, w.text, str(w.span)) for w in blocks[0].words] == [
         ("G", 1, "G1", "<program>:1:1"), ("X", 1, "X1", "<program>:1:4"), ("Y", 2, "Y2", "<program>:1:7"),
