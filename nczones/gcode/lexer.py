@@ -360,6 +360,11 @@ class PlainBlock(Block):
             span = self.span
             words = scan_simple(span.text, span.line, span.file)[2]
             _block_words(self, words)
+        elif type(words) is list:  # evaluated words: (letter, value, column, end column, text) each
+            span = self.span
+            file, line, text = span.file, span.line, span.text
+            words = tuple([make_word(w[0], w[1], make_span(file, line, w[2], w[3], text), w[4]) for w in words])
+            _block_words(self, words)
         return words
 
     @words.setter
@@ -391,16 +396,16 @@ def plain_block(letters: str, values: tuple, span: SourceSpan, index: int, numbe
     return b
 
 
-def plain_block_of(words: tuple[Word, ...], span: SourceSpan, index: int, number) -> PlainBlock:
-    """A :class:`PlainBlock` of words already made (evaluated ones, say): the plain lane reads their
-    letters and values, everybody else the words themselves.
+def plain_block_of(words: list[tuple], span: SourceSpan, index: int, number) -> PlainBlock:
+    """A :class:`PlainBlock` of evaluated words ``(letter, value, column, end column, text)``: the plain
+    lane reads their letters and values; the :class:`Word` objects are made only when read.
 
-    >>> b = plain_block_of((make_word("G", Fraction(1), None, "G1"), make_word("X", Fraction(5, 2), None, "X[5/2]")),
+    >>> b = plain_block_of([("G", Fraction(1), 1, 3, "G1"), ("X", Fraction(5, 2), 4, 10, "X[5/2]")],
     ...                    SourceSpan("p", 1, 1, 10, "G1 X[5/2]"), 0, None)
-    >>> b.letters, b.values, [w.text for w in b.words]
-    ('GX', (Fraction(1, 1), Fraction(5, 2)), ['G1', 'X[5/2]'])
+    >>> b.letters, b.values, [(w.text, str(w.span)) for w in b.words]
+    ('GX', (Fraction(1, 1), Fraction(5, 2)), [('G1', 'p:1:1'), ('X[5/2]', 'p:1:4')])
     """
-    b = plain_block("".join([w.letter for w in words]), tuple([w.value for w in words]), span, index, number)
+    b = plain_block("".join([w[0] for w in words]), tuple([w[1] for w in words]), span, index, number)
     _block_words(b, words)
     return b
 

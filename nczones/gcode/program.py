@@ -91,7 +91,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
-from .blocks import Block, Word
+from .blocks import Block
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
 from .lexer import (
     _M_CONTROL,
@@ -540,7 +540,7 @@ class _Runner:
             raise self.unsupported("GC301", reason, lineno, line, col, end)
         params = self.params
         # every read on the line sees the values from before the line's assignments
-        words: list[Word] = []
+        words: list[tuple] = []  # (letter, value, column, end column, text)
         m98 = m99 = None
         stop = False
         for letter, tree, col, end, text in pl.words:
@@ -563,7 +563,7 @@ class _Runner:
                     stop = True
             if letter == "G" and 65 <= value.numerator // value.denominator <= 67 and value in _G_MACRO_CALLS:
                 raise self.unsupported("GC301", f"G{value} macro calls are not supported", lineno, line, col, end)
-            words.append(make_word(letter, value, make_span(self.file, lineno, col, end, line), text))
+            words.append((letter, value, col, end, text))
         values = []
         for target, tree, col, end in pl.assigns:
             try:
@@ -581,21 +581,24 @@ class _Runner:
             pword = lword = None
             rest = []
             for w in words:
-                if w.letter == "P" and pword is None:
+                if w[0] == "P" and pword is None:
                     pword = w
-                elif w.letter == "L" and lword is None and m98 is not None:
+                elif w[0] == "L" and lword is None and m98 is not None:
                     lword = w
                 else:
                     rest.append(w)
             words = rest
+            pword, lword = (None if w is None else make_word(w[0], w[1], make_span(self.file, lineno, w[2], w[3], line),
+                                                             w[4]) for w in (pword, lword))
         if words or messages:
             self.started = True
             span = make_span(self.file, lineno, 1, len(line) + 1, line)
             if messages or m98 is not None or m99 is not None:
-                yield Block(tuple(words), span, self.index, pl.number, messages)
+                yield Block(tuple(make_word(w[0], w[1], make_span(self.file, lineno, w[2], w[3], line), w[4])
+                                  for w in words), span, self.index, pl.number, messages)
             else:
-                # evaluated words in the plain lane's form (letters and values), the words kept as they are
-                yield plain_block_of(tuple(words), span, self.index, pl.number)
+                # evaluated words in the plain lane's form (letters and values); Words are made when read
+                yield plain_block_of(words, span, self.index, pl.number)
             self.index += 1
         if stop:
             return None
