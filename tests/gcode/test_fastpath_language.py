@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -134,3 +135,13 @@ def test_a_run_declined_again_and_again_is_no_longer_offered(monkeypatch):
     assert run.fast_lines == 0
     assert max(calls.count(p) for p in set(calls)) == fastpath.MAX_DECLINES
     assert _fast(text, 1 << 20)[:2] == _full(text)
+
+
+@pytest.mark.long
+@settings(max_examples=1500, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(language_programs(), st.sampled_from([300, 700, 1 << 20]), st.sampled_from(["\n", "\r\n"]))
+def test_language_programs_with_fast_runs_long_fuzz(text, block_bytes, newline):
+    """Opt-in (``-m long``): the differential test above with random (not derandomized) examples."""
+    text = text.replace("\n", newline)
+    assert _fast(text, block_bytes)[:2] == _full(text)

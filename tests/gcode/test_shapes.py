@@ -135,3 +135,12 @@ def test_every_corpus_line_with_its_numbers_changed():
                     return "." + str(rnd.randint(0, 9999))
                 return str(rnd.randint(1, 99999)) + rnd.choice(["", ".", "." + str(rnd.randint(0, 999))])
             _same(_LIT.sub(other, line))
+
+
+@pytest.mark.long
+@settings(max_examples=5000, deadline=None, database=None)
+@given(shaped_lines())
+def test_lines_of_one_shape_long_fuzz(lines):
+    """Opt-in (``-m long``): the generated-lines test above with random (not derandomized) examples."""
+    for line in lines:
+        _same(line)
