@@ -93,7 +93,7 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
     text = _truncate_at_percent(interp.text)
     if not text or _needs_language_layer(text, it, size):
-        if text and interp.text.isascii():
+        if text and _utf8_exact(interp.text):
             runs = _run_starts(text, it, size)
             if runs:
                 yield from _language_layer_with_runs(interp, runs)
@@ -111,20 +111,42 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
         line0 += blk.count(b"\n") + (0 if blk.endswith(b"\n") else 1)
 
 
+def _utf8_exact(text: str) -> bool:
+    """Whether the program's UTF-8 bytes map back to its characters one to one (no undecodable bytes
+    kept as surrogates), so byte offsets of its lines convert to character offsets."""
+    if text.isascii():
+        return True
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
+
+
+def _char_offsets(blk: bytes):
+    """A function from byte offsets of (valid UTF-8) ``blk`` to character offsets."""
+    b = np.frombuffer(blk, dtype=np.uint8)
+    if not (b >= 0x80).any():
+        return int
+    continuation = np.concatenate(([0], np.cumsum((b & 0xC0) == 0x80)))
+    return lambda p: int(p) - int(continuation[p])
+
+
 def _run_starts(text: str, it, size: int) -> dict[int, list]:
-    """The runs of at least :data:`MIN_RUN` simple lines of an ASCII program, by the offset of their
-    first line: ``[end offset, first line number, lines, retries so far, times declined]``."""
+    """The runs of at least :data:`MIN_RUN` simple lines of a program, by the (character) offset of
+    their first line: ``[end offset, first line number, lines, retries so far, times declined]``."""
     runs: dict[int, list] = {}
     base = 0
     line0 = 0
     for blk in _encoded_blocks(text, size):
         simple, starts, ends_, _code = _classify(blk, it)
+        char = _char_offsets(blk)
         edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
         for a, b in edges.reshape(-1, 2).tolist():
             if b - a >= MIN_RUN:
-                end = min(base + int(ends_[b - 1]) + 1, base + len(blk))
-                runs[base + int(starts[a])] = [end, line0 + a + 1, b - a, 0, 0]
-        base += len(blk)
+                end = char(min(int(ends_[b - 1]) + 1, len(blk)))
+                runs[base + char(starts[a])] = [base + end, line0 + a + 1, b - a, 0, 0]
+        base += char(len(blk))
         line0 += len(starts)
     return runs
 
@@ -191,7 +213,7 @@ def _take_run(interp, runs: dict[int, list], req):
     if it._m73:
         it._m73_returns()  # what executing the run's first block would do first (no-op inside the call)
     if lineno == req.lineno and (it.motion in (810, 820) or _state_ok(it)) and _state_decimal(it) is not None:
-        blk = interp.text[req.pos:end].encode("ascii")
+        blk = interp.text[req.pos:end].encode("utf-8")
         simple, starts, _ends, code = _classify(blk, it)
         if len(starts) == nlines and simple.all():
             counter = [req.index]
@@ -203,8 +225,8 @@ def _take_run(interp, runs: dict[int, list], req):
                     done = (done, nlines)
             if done is not None and done[1] > 0:
                 chunk, taken = done
-                req.resume = (req.pos + int(starts[taken]) if taken < nlines else end, lineno + taken,
-                              counter[0])
+                req.resume = (req.pos + _char_offsets(blk)(starts[taken]) if taken < nlines else end,
+                              lineno + taken, counter[0])
     if taken == 0:
         step = 1 << retries
         if nlines - step >= MIN_RUN:

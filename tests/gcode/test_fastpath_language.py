@@ -74,8 +74,11 @@ def language_programs(draw):
 
 @settings(max_examples=80, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
-@given(language_programs(), st.sampled_from([400, 1 << 20]), st.sampled_from(["\n", "\r\n"]))
-def test_language_programs_with_fast_runs_equal_the_full_interpreter(text, block_bytes, newline):
+@given(language_programs(), st.sampled_from([400, 1 << 20]), st.sampled_from(["\n", "\r\n"]), st.booleans())
+def test_language_programs_with_fast_runs_equal_the_full_interpreter(text, block_bytes, newline, accents):
+    if accents:  # non-ASCII comments in and between runs: byte and character offsets differ
+        text = "".join(line + (" (Ø 5 mm, café)" if k % 7 == 3 else "") + "\n"
+                       for k, line in enumerate(text.splitlines()))
     text = text.replace("\n", newline)
     assert _fast(text, block_bytes)[:2] == _full(text)
 
@@ -108,12 +111,20 @@ def test_a_run_declined_for_a_computed_position_is_retried_further_on():
     assert _fast(text, 1 << 20)[:2] == _full(text)
 
 
-def test_non_ascii_programs_keep_the_language_layer_alone():
-    text = "(café)\no100 sub\no100 endsub\nG1 F100\n" + "\n".join(_moves(100, 2)) + "\nM30\n"
+def test_non_ascii_text_and_undecodable_bytes():
+    """Non-ASCII text takes fast runs too (offsets converted); a text holding undecodable bytes (kept as
+    surrogates) does not, since its bytes and characters do not map one to one."""
+    moves = [m + (" (Ø café)" if k % 5 == 0 else "") for k, m in enumerate(_moves(100, 2))]
+    text = "(café)\no100 sub\no100 endsub\nG1 F100\n" + "\n".join(moves) + "\no100 call\n" + "\n".join(moves) + "\nM30\n"
     run = interpret(text, MACHINE)
     list(run.segments())
+    assert run.fast_lines == 201  # "G1 F100" and the first 100 moves, then the 100 after the call
+    assert _fast(text, 1 << 20)[:2] == _full(text) and _fast(text, 500)[:2] == _full(text)
+    bad = text.replace("(café)", "(caf\udce9)")
+    run = interpret(bad, MACHINE)
+    list(run.segments())
     assert run.fast_lines == 0
-    assert fastpath._needs_language_layer(text, run.interpreter, 1 << 20)
+    assert _fast(bad, 1 << 20)[:2] == _full(bad)
 
 
 def test_a_run_declined_again_and_again_is_no_longer_offered(monkeypatch):
