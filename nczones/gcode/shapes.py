@@ -128,10 +128,10 @@ def _compile(line: str, parts: list[str], pl: ParsedLine):
     # D[k]: how much longer the first k literals are than in the first line of the shape
     lines = ["def rebuild(P, line):", "    D = [0]"]
     lines += [f"    D.append(D[-1] + len(P[{2 * k + 1}]) - {b - a})" for k, (a, b) in enumerate(spans)]
-    lines.append(f"    return ParsedLine({pl.delete!r}, {number_src}, None, ({''.join(w + ', ' for w in words)}), "
-                 f"({''.join(a + ', ' for a in assigns)}), ())")
+    lines.append(f"    return _parsed_line({pl.delete!r}, {number_src}, ({''.join(w + ', ' for w in words)}), "
+                 f"({''.join(a + ', ' for a in assigns)}))")
     src = "\n".join(lines) + "\n"
-    scope = {"ParsedLine": ParsedLine, "_num": _num}
+    scope = {"_parsed_line": _parsed_line, "_num": _num}
     exec(compile(src, "<line shape>", "exec"), scope)  # noqa: S102  # built only from reprs of str/int/bool
     rebuild = scope["rebuild"]
     if rebuild(parts, line) != pl:
@@ -141,6 +141,29 @@ def _compile(line: str, parts: list[str], pl: ParsedLine):
 
 class _Unshaped(Exception):
     pass
+
+
+_PL_SETTERS = tuple(getattr(ParsedLine, f).__set__ for f in (
+    "delete", "number", "oword", "words", "assigns", "comments", "percent", "unsupported"))
+
+
+def _parsed_line(delete: bool, number, words: tuple, assigns: tuple) -> ParsedLine:
+    """``ParsedLine(delete, number, None, words, assigns)`` without the frozen-dataclass overhead (an
+    ordinary, equal ParsedLine; the rebuild of every shape is checked against the parser's own)."""
+    pl = _new(ParsedLine)
+    sd, sn, so, sw, sa, sc, sp, su = _PL_SETTERS
+    sd(pl, delete)
+    sn(pl, number)
+    so(pl, None)
+    sw(pl, words)
+    sa(pl, assigns)
+    sc(pl, ())
+    sp(pl, False)
+    su(pl, None)
+    return pl
+
+
+_new = object.__new__
 
 
 class _Recording(_Parser):
@@ -169,5 +192,12 @@ def _tree(node, leaf_of: dict[int, str]) -> str:
 
 
 def _num(text: str) -> tuple:
-    """The NUM leaf of a literal (an optional sign, digits, at most one point, no blanks), as the parser makes it."""
-    return (NUM, float(text), plain_decimal_value(text))
+    """The NUM leaf of a literal (an optional sign, digits, at most one point, no blanks), as the parser makes it.
+
+    Long literals are mostly distinct (coordinates): they skip the reader's cache, whose misses cost more
+    than the reading itself.
+    """
+    return (NUM, float(text), plain_decimal_value(text) if len(text) < 5 else _decimal_uncached(text))
+
+
+_decimal_uncached = plain_decimal_value.__wrapped__
