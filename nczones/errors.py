@@ -23,6 +23,7 @@ __all__ = [
     "InternalError",
     "Severity",
     "SourceSpan",
+    "program_lines",
     "Diagnostic",
     "InputError",
     "GcodeError",
@@ -74,6 +75,25 @@ class SourceSpan:
         source = self.text.rstrip("\r\n").expandtabs(1)
         width = max(1, (self.end_column or self.column + 1) - self.column)
         return f"    {source}\n    {' ' * (self.column - 1)}^{'~' * (width - 1)}"
+
+
+def program_lines(text: str) -> list[str]:
+    r"""A program's lines as spans number them: line ``n`` is item ``n - 1``.
+
+    Lines end at ``\n`` only, as the controller reads them (so ``\x0c`` or
+    ``\u2028`` in a comment does not start a line, unlike ``str.splitlines``);
+    a ``\r`` before the ``\n`` and a byte-order mark at the start are not
+    part of a line.
+
+    >>> program_lines("\ufeffG1 X1\r\n(a\x0cb)\nG1 X2")
+    ['G1 X1', '(a\x0cb)', 'G1 X2']
+    """
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    if lines and lines[0].startswith("\ufeff"):
+        lines[0] = lines[0][1:]
+    return [ln[:-1] if ln.endswith("\r") else ln for ln in lines]
 
 
 @dataclass(frozen=True, slots=True)

@@ -44,7 +44,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InvalidArgument
+from ..errors import InvalidArgument, program_lines
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
@@ -1199,7 +1199,7 @@ def simulate(
     ctl = Controller(machine, mode=mode, monitor=monitor, settings=settings, start=start, break_at=break_at)
     text = getattr(motion, "text", None)
     if isinstance(text, str):
-        ctl.source_lines = text.splitlines()
+        ctl.source_lines = program_lines(text)
     if progress is not None:
         items = _reporting(items, progress, getattr(motion, "text", None))
     return ctl.run(items)

@@ -44,7 +44,7 @@ from collections.abc import Iterator
 from fractions import Fraction
 from pathlib import Path
 
-from ..errors import Diagnostic, GcodeError, InvalidArgument
+from ..errors import Diagnostic, GcodeError, InvalidArgument, program_lines
 from ..machine import Machine
 from ..motion import MotionChunk, Segment
 from .interpreter import (
@@ -167,7 +167,7 @@ class Interpretation:
         lines: dict[int, str] = {}
         for chunk in self:
             if chunk.scale is not None and not lines:
-                lines = dict(enumerate(self.text.splitlines(), start=1))
+                lines = dict(enumerate(program_lines(self.text), start=1))
             yield from chunk.segments(lines)
 
 

@@ -213,33 +213,22 @@ def verify(
                    timings=timings, extra={"counts": run.counts})
 
 
-_BREAKS = ("\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x85", "\u2028", "\u2029")
-
-
-def _simple_breaks(text: str) -> bool:
-    """True when ``str.splitlines`` splits ``text`` exactly at its ``\\n`` (``\\r\\n``)."""
-    return not any(b in text for b in _BREAKS) and text.count("\r") == text.count("\r\n")
-
-
 def _line_count(text: str) -> int:
-    if not _simple_breaks(text):
-        return len(text.splitlines())
+    """Lines as spans number them (:func:`nczones.errors.program_lines`), without splitting the text."""
     return text.count("\n") + (1 if text and not text.endswith("\n") else 0)
 
 
 def source_lines(text: str, wanted, step: int = 1 << 16) -> dict[int, str]:
-    """The text of the 1-based lines ``wanted`` (as ``str.splitlines`` numbers them), without
-    splitting the whole program: only the needed lines are cut out, so memory stays flat.
+    r"""The text of the 1-based lines ``wanted`` (numbered as spans number them, see
+    :func:`nczones.errors.program_lines`), without splitting the whole program: only the needed
+    lines are cut out, so memory stays flat.
 
-    >>> source_lines("G1 X1\\nG1 X2\\r\\nG1 X3", [3, 2, 9])
-    {2: 'G1 X2', 3: 'G1 X3'}
+    >>> source_lines("G1 X1\nG1 X2\r\nG1 X3 (a\x0cb)", [3, 2, 9])
+    {2: 'G1 X2', 3: 'G1 X3 (a\x0cb)'}
     """
     want = sorted(set(int(w) for w in wanted if w >= 1))
     if not want:
         return {}
-    if not _simple_breaks(text):
-        lines = text.splitlines()
-        return {w: lines[w - 1] for w in want if w <= len(lines)}
     out = {}
     line, pos, n = 1, 0, len(text)
     for w in want:
@@ -261,4 +250,6 @@ def source_lines(text: str, wanted, step: int = 1 << 16) -> dict[int, str]:
             break
         nl = text.find("\n", pos)
         out[w] = text[pos:(n if nl < 0 else nl)].removesuffix("\r")
+    if 1 in out:
+        out[1] = out[1].removeprefix("\ufeff")
     return out

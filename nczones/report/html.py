@@ -26,6 +26,7 @@ import re
 from fractions import Fraction
 
 from .. import __version__
+from ..errors import program_lines
 from ..exact import format_decimal
 from ..prover.result import Result
 
@@ -150,7 +151,7 @@ def render_html(result: Result, machine, program=None, *, planes=None, source_te
             text, _ = _read_source(program, None)
         except (OSError, UnicodeDecodeError):  # the report still renders, without a listing
             text = ""
-    lines = (text or "").splitlines()
+    lines = program_lines(text or "")
     verdict = result.verdict.label
     name = result.file or (program if isinstance(program, str) and "\n" not in program else "<program>")
 
