@@ -91,8 +91,10 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
 
     it = interp.interpreter
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
-    text = _truncate_at_percent(interp.text)
+    text = _percent_cut(interp.text)
     if not text or _needs_language_layer(text, it, size):
+        if text is None:
+            text = interp.text  # the language layer reads the whole program, % lines included
         if text and _utf8_exact(interp.text):
             runs = _run_starts(text, it, size)
             if runs:
@@ -403,57 +405,54 @@ def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None, params=
         i = j
 
 
-def _truncate_at_percent(text: str) -> str:
-    """A ``%`` line after the first line with code ends the program.
+def _percent_cut(text: str) -> str | None:
+    r"""``text`` without what follows its last line of code, when its ``%`` lines cannot end the program
+    early; None when they might, and the language layer must read the whole program.
 
-    Only lines holding a ``%`` are examined (plus the lines before the first
-    line with code), so this is fast on long programs.
+    The language layer (as LinuxCNC) takes a line whose first character other than a blank is ``%``
+    as a ``%`` line: the first one it meets is skipped, the next ends the program.  So the program
+    can be split only when every ``%`` line comes before its first other non-blank line (at most one
+    there) or after its last one (where nothing follows but blank and ``%`` lines); a ``%`` later in a
+    line (``(50% feed)``) does not make a ``%`` line.
+
+    >>> _percent_cut("%\nG1 X1 (50% feed)\n%\n\n"), _percent_cut("G1 X1\n %\nG1 X2\n"), _percent_cut("%\n%\nG1 X1\n")
+    ('%\nG1 X1 (50% feed)\n', None, None)
     """
     if "%" not in text:
         return text
-    if any(ch in text for ch in _EXOTIC_BREAKS) or text.count("\r") != text.count("\r\n"):
-        return _truncate_at_percent_slow(text)
-    # first line with code
-    pos = 0
-    first_code_end = None
     n = len(text)
+    # the first and the last line with something other than blanks that is not a % line
+    first = None
+    pos = 0
+    percent_lines = 0
     while pos < n:
         nl = text.find("\n", pos)
         end = n if nl < 0 else nl + 1
-        body = _PCT_STRIP.sub("", text[pos:end]).strip()
-        if body and not body.startswith("%"):
-            first_code_end = end
-            break
+        body = text[pos:end].lstrip(" \t\r\n")
+        if body:
+            if not body.startswith("%"):
+                first = pos
+                break
+            percent_lines += 1
         pos = end
-    if first_code_end is None:
-        return text
-    p = text.find("%", first_code_end)
-    while p >= 0:
+    if first is None:
+        return text  # no code at all
+    if percent_lines > 1:
+        return None
+    last_end = n
+    while last_end > first:
+        ls = text.rfind("\n", 0, last_end - 1) + 1
+        body = text[ls:last_end].lstrip(" \t\r\n")
+        if body and not body.startswith("%"):
+            break
+        last_end = ls
+    p = text.find("%", first, last_end)
+    while p >= 0:  # a % between the first and the last line of code: harmless unless it starts its line
         ls = text.rfind("\n", 0, p) + 1
-        nl = text.find("\n", p)
-        le = n if nl < 0 else nl + 1
-        if _PCT_STRIP.sub("", text[ls:le]).strip().startswith("%"):
-            return text[:ls]
-        p = text.find("%", le)
-    return text
-
-
-_EXOTIC_BREAKS = ("\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x85", "\u2028", "\u2029")
-_PCT_STRIP = re.compile(r"\([^)]*\)|;.*")
-
-
-def _truncate_at_percent_slow(text: str) -> str:
-    seen_code = False
-    pos = 0
-    for line in text.splitlines(keepends=True):
-        body = _PCT_STRIP.sub("", line).strip()
-        if body.startswith("%"):
-            if seen_code:
-                return text[:pos]
-        elif body:
-            seen_code = True
-        pos += len(line)
-    return text
+        if not text[ls:p].strip(" \t\r"):
+            return None
+        p = text.find("%", text.find("\n", p) + 1 or last_end, last_end)
+    return text[:last_end]
 
 
 def _state_ok(it) -> bool:

@@ -160,12 +160,27 @@ def test_language_layer_programs_are_not_split():
     assert _fast(text, 50)[:2] == _full(text)
 
 
-@settings(max_examples=60, deadline=None, derandomize=True)
-@given(st.lists(st.sampled_from(["G1 X1", "%", " % (x)", "(c) %", "; %", "(only)", "", "%a", "\r", "X2\r"]),
+RUN = "\n".join(f"X{k}.5 Y{k % 3}" for k in range(70))  # long enough for the fast path
+
+
+@settings(max_examples=150, deadline=None, derandomize=True, database=None)
+@given(st.lists(st.sampled_from(["G1 X1 F100", RUN, "%", " % (x)", "\t%", "(c) %", "; %", "(only)", "",
+                                 "%a", "\r", "X2\r", "\x0c%", "(MSG, hi)", "G1 X3 (50% feed)", "#1 = 2", "N10"]),
                 max_size=8))
-def test_percent_cut_matches_the_line_by_line_rule(parts):
+def test_percent_lines_end_the_program_as_the_language_layer_says(parts):
+    """The fast path cuts a program at its % lines only where the language layer would stop reading
+    (a % line before the first line of code is skipped, the next one ends the program); everywhere
+    else the language layer reads the whole program."""
     text = "\n".join(parts) + ("\n" if parts else "")
-    assert fastpath._truncate_at_percent(text) == fastpath._truncate_at_percent_slow(text)
+    assert _fast(text, 1 << 20)[:2] == _full(text)
+    assert _fast(text, 300)[:2] == _full(text)
+
+
+def test_a_percent_line_between_lines_of_code_ends_the_program_on_both_paths():
+    text = "G1 X1 F100\n" + RUN + "\n%\n" + RUN.replace("X", "X1") + "\n"
+    want = _full(text)
+    assert _fast(text, 1 << 20)[:2] == want
+    assert want[0][-1][2][0] == Fraction(695, 10)  # the last move before the % line
 
 
 @settings(max_examples=80, deadline=None, derandomize=True)
