@@ -156,3 +156,30 @@ def test_language_programs_with_fast_runs_long_fuzz(text, block_bytes, newline):
     """Opt-in (``-m long``): the differential test above with random (not derandomized) examples."""
     text = text.replace("\n", newline)
     assert _fast(text, block_bytes)[:2] == _full(text)
+
+
+def test_language_programs_stream_in_bounded_chunks_and_memory():
+    """Runs are cut at block ends, so chunks stay bounded; memory beyond the program text does not grow
+    with the program's length (tracemalloc peaks of a 20,000- and an 80,000-line program)."""
+    import tracemalloc
+
+    def program(n):
+        return "o100 sub\nG0 Z5\no100 endsub\nG21 G90 G1 F100\n" + "\n".join(_moves(n, 4)) + "\no100 call\nM30\n"
+
+    text = program(3000)
+    run = interpret(text, MACHINE)
+    sizes = [len(c) for c in fastpath.run_with_fastpath(run, block_bytes=4000)]
+    assert sum(sizes) == 3001 and max(sizes) <= 4000 // len("X0.00 Y0.00\n") + 1
+    assert run.fast_lines == 3000  # the moves ("G21 G90 G1 F100" is declined, the run retried a line on)
+
+    peaks = []
+    for n in (20_000, 80_000):
+        text = program(n)
+        tracemalloc.start()
+        run = interpret(text, MACHINE)
+        segs = sum(len(c) for c in fastpath.run_with_fastpath(run, block_bytes=1 << 16))
+        peaks.append(tracemalloc.get_traced_memory()[1])
+        tracemalloc.stop()
+        assert segs == n + 1 and run.fast_lines == n
+        del run, text
+    assert peaks[1] < 1.5 * peaks[0], peaks
