@@ -175,16 +175,24 @@ def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter |
             first_line: int = 1):
     """The language layer's blocks; an UnsupportedGcode ends them as ``unknown``."""
     from .expr import Parameters
-    from .program import UnsupportedGcode, iter_blocks
+    from .program import iter_blocks
 
     params = Parameters()
-    if interpreter is not None:
-        interpreter.bind_parameters(params)
-    try:
+    if interpreter is None:
         yield from iter_blocks(text, file=file, params=params, block_delete=block_delete)
+        return
+    interpreter.bind_parameters(params)
+    yield from _unknown_at_unsupported(interpreter,
+                                       iter_blocks(text, file=file, params=params, block_delete=block_delete))
+
+
+def _unknown_at_unsupported(interpreter: Interpreter, blocks):
+    """``blocks``; an UnsupportedGcode ends them, recorded as the interpreter's ``unknown`` reason."""
+    from .program import UnsupportedGcode
+
+    try:
+        yield from blocks
     except UnsupportedGcode as exc:
-        if interpreter is None:
-            raise
         d = exc.diagnostic
         interpreter.unsupported.append(Unsupported(d.code, d.message, d.span))
 

@@ -143,8 +143,7 @@ def _run_starts(text: str, it, size: int) -> dict[int, list]:
     for blk in _encoded_blocks(text, size):
         simple, starts, ends_, _code = _classify(blk, it)
         char = _char_offsets(blk)
-        edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
-        for a, b in edges.reshape(-1, 2).tolist():
+        for a, b in _simple_runs(simple):
             if b - a >= MIN_RUN:
                 end = char(min(int(ends_[b - 1]) + 1, len(blk)))
                 runs[base + char(starts[a])] = [base + end, line0 + a + 1, b - a, 0, 0]
@@ -162,12 +161,11 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
     loops and subroutines too: a run is interpreted whenever the flow reaches it, from the state the
     interpreter is in at that moment.
     """
+    from . import _unknown_at_unsupported
     from .expr import Parameters
-    from .interpreter import Unsupported
     from .program import (
         DEFAULT_MAX_LOOP_ITERATIONS,
         FastRunRequest,
-        UnsupportedGcode,
         _Runner,
         _StringSource,
     )
@@ -177,19 +175,15 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
     it.bind_parameters(params)
     runner = _Runner(_StringSource(interp.text), interp.file, params, interp.block_delete,
                      DEFAULT_MAX_LOOP_ITERATIONS, 100, fast_runs=runs)
-    flow = runner.run()
+    flow = _unknown_at_unsupported(it, runner.run())
     requests: list[FastRunRequest] = []
 
     def blocks():
-        try:
-            for b in flow:
-                if type(b) is FastRunRequest:
-                    requests.append(b)
-                    return
-                yield b
-        except UnsupportedGcode as exc:
-            d = exc.diagnostic
-            it.unsupported.append(Unsupported(d.code, d.message, d.span))
+        for b in flow:
+            if type(b) is FastRunRequest:
+                requests.append(b)
+                return
+            yield b
 
     while True:
         yield from it.run(blocks())
@@ -258,14 +252,22 @@ def _state_decimal(it) -> int | None:
     return s
 
 
+def _simple_runs(simple: np.ndarray) -> list[list[int]]:
+    """The maximal runs ``[first, end)`` of True in ``simple`` (lines of a block).
+
+    >>> _simple_runs(np.array([True, True, False, True]))
+    [[0, 2], [3, 4]]
+    """
+    edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
+    return edges.reshape(-1, 2).tolist()
+
+
 def _prepare(blk: bytes, it):
     """What a block needs before interpretation, independent of the modal state: the
     classification, the runs to take fast and their parsed words (a pure function of the bytes)."""
     simple, starts, ends_, code = _classify(blk, it)
     nlines = len(starts)
-    edges = np.flatnonzero(np.diff(np.concatenate(([False], simple, [False])).astype(np.int8)))
-    runs = edges.reshape(-1, 2).tolist()
-    fast_runs = [(a, b) for a, b in runs if b - a >= MIN_RUN or a == 0 or b == nlines]
+    fast_runs = [(a, b) for a, b in _simple_runs(simple) if b - a >= MIN_RUN or a == 0 or b == nlines]
     parsed = {(a, b): _parse_words(code[0], code[1], a, b) for a, b in fast_runs}
     return simple, starts, ends_, code, fast_runs, parsed
 
@@ -471,26 +473,21 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, param
     piece = data[starts[i]:ends_[j - 1]].decode("utf-8", errors="surrogateescape")
     offset = i + line0  # the piece's first line is line offset + 1 of the program
 
+    from . import _unknown_at_unsupported
     from .expr import Parameters
-    from .interpreter import Unsupported
-    from .program import UnsupportedGcode, iter_blocks
+    from .program import iter_blocks
 
     if params is None:
         params = Parameters()
         it.bind_parameters(params)
 
-    def blocks():
-        # the piece's lines and blocks are numbered as in the whole program
-        try:
-            yield from iter_blocks(piece, file=interp.file, params=params, block_delete=interp.block_delete,
-                                   first_line=offset + 1, first_index=block_counter[0])
-        except UnsupportedGcode as exc:
-            d = exc.diagnostic
-            it.unsupported.append(Unsupported(d.code, d.message, d.span))
-
+    # the piece's lines and blocks are numbered as in the whole program
+    blocks = _unknown_at_unsupported(it, iter_blocks(piece, file=interp.file, params=params,
+                                                     block_delete=interp.block_delete, first_line=offset + 1,
+                                                     first_index=block_counter[0]))
     consumed = it.blocks
     try:
-        yield from it.run(blocks())
+        yield from it.run(blocks)
     finally:
         block_counter[0] += it.blocks - consumed  # every block the language layer yields is consumed
 

@@ -203,6 +203,19 @@ max = { X = "140", Y = "180", Z = "30" }
 ''')
 
 
+def assert_same_proof_with_and_without_fast_path(text: str, machine) -> None:
+    """The prover's verdict and violations (line, zone, point) through ``verify`` (fast path on) equal
+    those from the full interpreter's segments."""
+    from nczones.prover import verify, verify_segments
+
+    fast = verify(text, machine, max_violations=1000)
+    full = verify_segments(iter(list(interpret(text, machine, fast=False).segments())), machine,
+                           max_violations=1000)
+    assert fast.verdict == full.verdict
+    assert [(v.span.line, v.zone, v.point) for v in fast.violations] == [
+        (v.span.line, v.zone, v.point) for v in full.violations]
+
+
 @settings(max_examples=12, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow])
 @given(st.sampled_from(["G81", "G82 P0.5"]), st.sampled_from(["G98", "G99"]), st.sampled_from([5, 20, 31, 40]),
@@ -210,17 +223,11 @@ max = { X = "140", Y = "180", Z = "30" }
 def test_prover_verdicts_and_violations_agree_on_drilling_columns(cycle, retract, z, dr, start_z, places, rnd):
     """Holes around a clamp: the prover gives the same verdict and the same violations (line, zone,
     point) whether the hole lines come as column rows (rapids, feeds, dwells) or as segments."""
-    from nczones.prover import verify, verify_segments
 
     lines = ["G21 G90 G17 G54 F300", f"G0 Z{start_z}", f"{cycle} X10 Y10 Z{z} R{z + dr}", retract]
     lines += [f"X{rnd.uniform(60, 200):.{places}f} Y{rnd.uniform(20, 220):.2f}" for _ in range(90)]
     text = "\n".join([*lines, "G80", "M30"]) + "\n"
-    fast = verify(text, CLAMP_MACHINE, max_violations=1000)
-    full = verify_segments(iter(list(interpret(text, CLAMP_MACHINE, fast=False).segments())), CLAMP_MACHINE,
-                           max_violations=1000)
-    assert fast.verdict == full.verdict
-    assert [(v.span.line, v.zone, v.point) for v in fast.violations] == [
-        (v.span.line, v.zone, v.point) for v in full.violations]
+    assert_same_proof_with_and_without_fast_path(text, CLAMP_MACHINE)
     run = interpret(text, CLAMP_MACHINE)
     sum(len(c) for c in run)
     assert run.fast_lines >= 88  # the hole lines did take the fast path

@@ -20,7 +20,10 @@ from hypothesis import strategies as st
 
 from nczones.gcode import fastpath, interpret
 from tests.gcode.test_fastpath_blocks import MACHINE, _fast, _full
-from tests.gcode.test_fastpath_cycles import CLAMP_MACHINE
+from tests.gcode.test_fastpath_cycles import (
+    CLAMP_MACHINE,
+    assert_same_proof_with_and_without_fast_path,
+)
 
 
 def _moves(n: int, seed: int, z: bool = False) -> list[str]:
@@ -193,19 +196,12 @@ def test_prover_verdicts_and_violations_agree_on_runs_handed_over_by_the_languag
     """End to end: a program whose moves run in subroutine bodies and the main program, around a clamp;
     the prover's verdict and violations (line, zone, point) are the same whether the language layer hands
     the runs to the fast path or the full interpreter reads every line."""
-    from nczones.prover import verify, verify_segments
-
     moves = [f"X{60 + (seed + 37 * k) % 140}.{k % 10} Y{20 + (seed * 3 + 11 * k) % 200}" for k in range(80)]
     sub = ["o100 sub", "G1 Z#1", *moves, "G0 Z100", "o100 endsub"]
     main = ["G21 G90 G17 G54 G1 F300", "G0 Z100", *(["o100 call [%d]" % depth] if in_sub else []),
             "G1 Z%d" % depth, *moves[::-1], "G0 Z100", "o100 call [60]", "M30"]
     text = "\n".join(sub + main) + "\n"
-    fast = verify(text, CLAMP_MACHINE, max_violations=1000)
-    full = verify_segments(iter(list(interpret(text, CLAMP_MACHINE, fast=False).segments())), CLAMP_MACHINE,
-                           max_violations=1000)
-    assert fast.verdict == full.verdict
-    assert [(v.span.line, v.zone, v.point) for v in fast.violations] == [
-        (v.span.line, v.zone, v.point) for v in full.violations]
+    assert_same_proof_with_and_without_fast_path(text, CLAMP_MACHINE)
     run = interpret(text, CLAMP_MACHINE)
     sum(len(c) for c in run)
     assert run.fast_lines >= 160
