@@ -39,6 +39,7 @@ from fractions import Fraction
 
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
+from ..frozen import builder
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import Block, Word
@@ -192,39 +193,8 @@ def _gkey(value: Fraction) -> int | None:
 
 
 _new = object.__new__
-# Segment slot setters: building a frozen dataclass through __init__ costs ~3x more
-# (one object.__setattr__ per field); the result is an ordinary, equal Segment.
-(_s_kind, _s_start, _s_end, _s_axes, _s_block, _s_span, _s_tool, _s_feed, _s_plane, _s_cw, _s_centre, _s_radius,
- _s_turns, _s_dwell, _s_derived, _s_register, _s_deps_start, _s_deps_end, _s_extra) = (
-    getattr(Segment, f).__set__ for f in (
-        "kind", "start", "end", "axes", "block", "span", "tool_length", "feed_mm_min", "plane", "clockwise",
-        "centre", "radius", "turns", "dwell_s", "derived", "tool_register", "deps_start", "deps_end", "extra"))
-
-
-def _segment(kind, start, end, axes, block, span, tool_length, feed, plane, clockwise, centre, radius, turns,
-             dwell, derived, register, deps_start, deps_end, extra) -> Segment:
-    """``Segment(...)`` (all 19 fields, in order) without the frozen-dataclass overhead."""
-    seg = _new(Segment)
-    _s_kind(seg, kind)
-    _s_start(seg, start)
-    _s_end(seg, end)
-    _s_axes(seg, axes)
-    _s_block(seg, block)
-    _s_span(seg, span)
-    _s_tool(seg, tool_length)
-    _s_feed(seg, feed)
-    _s_plane(seg, plane)
-    _s_cw(seg, clockwise)
-    _s_centre(seg, centre)
-    _s_radius(seg, radius)
-    _s_turns(seg, turns)
-    _s_dwell(seg, dwell)
-    _s_derived(seg, derived)
-    _s_register(seg, register)
-    _s_deps_start(seg, deps_start)
-    _s_deps_end(seg, deps_end)
-    _s_extra(seg, extra)
-    return seg
+#: ``Segment(...)`` with all 19 fields positional, in order, built 3x faster (see nczones.frozen).
+_segment = builder(Segment)
 
 
 def _qadd(a: Fraction, b: Fraction) -> Fraction:
