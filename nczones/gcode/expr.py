@@ -250,6 +250,8 @@ def parameter_key(node, params: Parameters) -> int | str:
     if node[0] == NPAR:
         return node[1]
     d = evaluate(node[1], params)[0]
+    if d - d:  # inf (a literal too large for a double) or NaN
+        raise EvalError("GC204", f"parameter number {d!r} is not an integer")
     index = round(d)
     if abs(d - index) > 0.0001:
         raise EvalError("GC204", f"parameter number {d!r} is not an integer")
@@ -275,6 +277,8 @@ def evaluate(node, params: Parameters) -> Value:
     if tag == PAR and node[1][0] == NUM:
         # #<number literal>: parameter_key and Parameters.read, inlined
         d = node[1][1]
+        if d - d:
+            parameter_key(node, params)  # raises its error
         index = round(d)
         if abs(d - index) > 0.0001 or not 1 <= index <= params.max_parameter:
             parameter_key(node, params)  # raises its error
@@ -307,6 +311,8 @@ def evaluate(node, params: Parameters) -> Value:
         if par[0] == NPAR:
             return _TRUE if params.exists(par[1]) else _FALSE
         d = evaluate(par[1], params)[0]  # errors inside the index propagate (##2 with #2 = 99999)
+        if d - d:
+            return _FALSE
         return _TRUE if 1 <= round(d) <= params.max_parameter and abs(d - round(d)) <= 0.0001 else _FALSE
     raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
 
@@ -372,6 +378,8 @@ def _binary(op: str, left: Value, right: Value) -> Value:
     if op == "mod":
         if b == 0.0:
             raise EvalError("GC311", "attempt to take MOD by zero")
+        if a - a or b - b:
+            raise EvalError("GC312", f"MOD of {a!r} by {b!r} cannot be computed")
         r = math.fmod(a, b)
         if r < 0.0:
             r = r + abs(b)
@@ -407,6 +415,8 @@ def _binary(op: str, left: Value, right: Value) -> Value:
 
 def _unary(name: str, value: Value) -> Value:
     d, q = value
+    if d - d:  # only a literal too large for a double (or a parameter set from one) reaches here as inf
+        raise EvalError("GC312", f"argument to {name.upper()} is {d!r}")
     if name == "abs":
         return (abs(d), abs(q) if q is not None else None)
     if name == "fix":

@@ -28,6 +28,7 @@ from functools import lru_cache
 from math import gcd as _gcd
 
 from ..errors import SourceSpan
+from ..frozen import builder
 from .blocks import Block, Word
 
 __all__ = [
@@ -78,6 +79,15 @@ def _fraction_safe(n: int, d: int) -> Fraction:
     return Fraction(n, d)
 
 
+def _double_raw(x: float) -> Fraction:
+    """``Fraction(x)`` for a finite double (its ratio is already in lowest terms)."""
+    n, d = x.as_integer_ratio()
+    q = _new(Fraction)
+    q._numerator = n
+    q._denominator = d
+    return q
+
+
 _new = object.__new__
 try:  # relies on CPython's Fraction slots; verified here, else the public constructor
     _f = _fraction_raw(-25, 10)
@@ -85,6 +95,7 @@ try:  # relies on CPython's Fraction slots; verified here, else the public const
                                   and _f.denominator == 2) else _fraction_safe
 except Exception:  # noqa: BLE001  # pragma: no cover
     _fraction = _fraction_safe
+_double = _double_raw if _fraction is _fraction_raw else Fraction
 
 
 @lru_cache(maxsize=8192)  # bounded: memory must not grow with the program
@@ -118,49 +129,14 @@ def plain_decimal_value(text: str) -> Fraction:
     return _fraction(int(whole + frac), 10 ** len(frac))
 
 
-_span_file = SourceSpan.file.__set__  # type: ignore[attr-defined]
-_span_line = SourceSpan.line.__set__  # type: ignore[attr-defined]
-_span_col = SourceSpan.column.__set__  # type: ignore[attr-defined]
-_span_end = SourceSpan.end_column.__set__  # type: ignore[attr-defined]
-_span_text = SourceSpan.text.__set__  # type: ignore[attr-defined]
-_word_letter = Word.letter.__set__  # type: ignore[attr-defined]
+#: ``SourceSpan(file, line, column, end_column, text)``, built 2x faster (see :mod:`nczones.frozen`): the
+#: lexer and the runner make one span per block and per word read.
+make_span = builder(SourceSpan, name="make_span")
+#: ``Word(letter, value, span, text)``, built faster (see :mod:`nczones.frozen`).
+make_word = builder(Word, name="make_word")
+_word_letter = Word.letter.__set__  # type: ignore[attr-defined]  # for _LazyWord
 _word_value = Word.value.__set__  # type: ignore[attr-defined]
-_word_span = Word.span.__set__  # type: ignore[attr-defined]
 _word_text = Word.text.__set__  # type: ignore[attr-defined]
-
-
-def make_span(file: str, line: int, column: int, end_column: int | None, text: str) -> SourceSpan:
-    """``SourceSpan(file, line, column, end_column, text)``, built 3x faster.
-
-    Frozen dataclass constructors cost about 1.5 us; the lexer builds one span
-    per word, so it fills the slots directly.  The result is an ordinary,
-    equal and hashable SourceSpan.
-
-    >>> make_span("a.ngc", 2, 1, 3, "G1") == SourceSpan("a.ngc", 2, 1, 3, "G1")
-    True
-    """
-    s = _new(SourceSpan)
-    _span_file(s, file)
-    _span_line(s, line)
-    _span_col(s, column)
-    _span_end(s, end_column)
-    _span_text(s, text)
-    return s
-
-
-def make_word(letter: str, value: Fraction, span: SourceSpan, text: str) -> Word:
-    """``Word(letter, value, span, text)`` without the frozen-dataclass overhead.
-
-    >>> s = SourceSpan("a", 1, 1, 3, "X1")
-    >>> make_word("X", Fraction(1), s, "X1") == Word("X", Fraction(1), s, "X1")
-    True
-    """
-    w = _new(Word)
-    _word_letter(w, letter)
-    _word_value(w, value)
-    _word_span(w, span)
-    _word_text(w, text)
-    return w
 
 
 class _LazyWord(Word):
@@ -341,6 +317,7 @@ def plain_control(letters: str, values: tuple) -> bool:
 
 
 _M_CONTROL = frozenset((2, 30, 97, 98, 99))  # M codes the language layer acts on
+_G_MACRO_CALLS = frozenset((Fraction(65), Fraction(66), Fraction(661, 10), Fraction(67)))  # G65 G66 G66.1 G67
 
 
 class PlainBlock(Block):
@@ -364,6 +341,12 @@ class PlainBlock(Block):
             span = self.span
             file, line, text = span.file, span.line, span.text
             words = tuple([make_word(w[0], w[1], make_span(file, line, w[2], w[3], text), w[4]) for w in words])
+            _block_words(self, words)
+        elif type(words) is not tuple:  # evaluated by a line's compiled code: ask it for the columns
+            span = self.span
+            file, line, text = span.file, span.line, span.text
+            words = tuple([make_word(letter, value, make_span(file, line, c[0], c[1], text), c[2])
+                           for letter, value, c in zip(self.letters, self.values, words.columns(words.parts, text))])
             _block_words(self, words)
         return words
 

@@ -94,7 +94,9 @@ from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import Block
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
 from .lexer import (
+    _G_MACRO_CALLS,
     _M_CONTROL,
+    _block_words,
     magic_comment,
     make_span,
     make_word,
@@ -105,7 +107,7 @@ from .lexer import (
     scan_simple,
 )
 from .parser import OWord, ParsedLine, parse_line
-from .shapes import parse_line_shaped
+from .shapes import CompiledLine, line_shaped, parse_line_shaped
 
 __all__ = [
     "iter_blocks",
@@ -247,7 +249,6 @@ def _show(label) -> str:
 
 
 _BLANK = re.compile(r"[ \t]+")
-_G_MACRO_CALLS = frozenset((Fraction(65), Fraction(66), Fraction(661, 10), Fraction(67)))
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 
@@ -392,9 +393,10 @@ class _Runner:
                     declined = -1
                     continue
                 declined = pos
+            pending = None  # a line the loop below read and parsed but leaves to the general path
             if in_text and pos and len(self.frames) == 1 and not self.frames[0].loops:
-                # a run of plain lines of the main program (no control, nothing to cache): the plain
-                # path below, without the general loop's bookkeeping; stops before any other line
+                # a run of plain and compiled lines of the main program (no control, nothing to cache):
+                # the paths below, without the general loop's bookkeeping; stops before any other line
                 text, n, delete_on = src.text, src.n, self.block_delete
                 while pos < n:
                     if fast and pos in fast and pos != declined:
@@ -406,7 +408,30 @@ class _Runner:
                     if line.endswith("\r"):
                         line = line[:-1]
                     if "#" in line or "[" in line:
-                        break  # not plain (the general path below reads it)
+                        if "(" in line or ";" in line:
+                            break
+                        try:
+                            parsed = line_shaped(line, lineno, file)
+                        except GcodeError:
+                            break  # the general path reports it
+                        done = None
+                        if type(parsed) is CompiledLine:
+                            done = parsed.shape.run(parsed.parts, self.params)
+                            if done is None:  # declined: the general path says why
+                                parsed = parse_line_shaped(line, lineno, file)
+                        if done is None:
+                            pending = (parsed, line, end + 1)
+                            break
+                        number, letters, values = done
+                        if letters:
+                            self.started = True
+                            b = plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
+                                            self.index, number)
+                            _block_words(b, parsed)
+                            yield b
+                            self.index += 1
+                        pos, lineno = end + 1, lineno + 1
+                        continue
                     parsed = scan_plain(line)
                     if parsed is None:
                         break
@@ -422,7 +447,9 @@ class _Runner:
                 if fast and pos in fast and pos != declined:
                     continue
             hit = cache.get(pos) if cache else None
-            if hit is not None:
+            if pending is not None:
+                parsed, line, nxt = pending
+            elif hit is not None:
                 parsed, line, nxt = hit
             else:
                 line, nxt = src.line_at(pos)
@@ -436,12 +463,26 @@ class _Runner:
                     else (scan_plain(line) or scan_simple(line, lineno, file))
                 if parsed is None:
                     try:
-                        parsed = parse_line_shaped(line, lineno, file)
+                        parsed = line_shaped(line, lineno, file)
                     except GcodeError as e:
                         raise self.syntax_error(e, nxt, lineno) from None
                 if len(self.frames) > 1 or self.frames[0].loops:
                     if len(cache) < 200_000:
                         cache[pos] = (parsed, line, nxt)  # lines run again in loops and subroutines
+            if type(parsed) is CompiledLine:
+                done = parsed.shape.run(parsed.parts, self.params)
+                if done is not None:
+                    number, letters, values = done
+                    if letters:
+                        self.started = True
+                        b = plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line), self.index,
+                                        number)
+                        _block_words(b, parsed)  # the words are made from the line if read
+                        yield b
+                        self.index += 1
+                    pos, lineno = nxt, lineno + 1
+                    continue
+                parsed = parse_line_shaped(line, lineno, file)  # the general path says why it declined
             if type(parsed) is tuple and len(parsed) == 4 and type(parsed[2]) is str:
                 # plainest path: (delete, number, letters, values); words made only when read
                 delete, number, letters, values = parsed

@@ -2,11 +2,12 @@
 
 Macro-style programs repeat a few line shapes with different numbers
 (``G1 X[#1 + 12.5] Y[#2 + 3.25]``, ``N120Y[#<yscale>*-56.12]``).  A line's
-*shape* is its text with every unsigned number literal replaced by a
-placeholder that records only whether the literal starts with a digit or a
-point.  Every decision of the parser (:mod:`nczones.gcode.parser`) reads
-letters, signs, brackets, blanks and that first character, never the other
-digits, and a literal only ever becomes a ``NUM`` leaf; so the parse of a line
+*shape* is its text with every run of digits (with at most one decimal point
+after its first digit) replaced by a placeholder; a point before the digits
+(``.5``) stays in the shape.  Every decision of the parser
+(:mod:`nczones.gcode.parser`) reads letters, signs, points, brackets and
+blanks, and whether a digit comes next, never which digits, and a literal only
+ever becomes a ``NUM`` leaf; so the parse of a line
 is the parse of any earlier line of the same shape with the leaves made from
 its own literals and the columns moved by the difference in literal lengths.
 
@@ -27,44 +28,149 @@ every line of the corpus with its numbers changed).
 
 from __future__ import annotations
 
+import math
 import re
+from operator import itemgetter
 
-from .lexer import plain_decimal_value
-from .parser import NUM, ParsedLine, _Parser, parse_line
+from ..frozen import builder
+from .expr import _UNSET, EvalError, _binary, _check, _pair, _q_add, _q_div, _q_mul, _q_sub, _unary
+from .lexer import _G_MACRO_CALLS, _M_CONTROL, _double, plain_decimal_value
+from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, ParsedLine, _Parser, parse_line
 
-__all__ = ["parse_line_shaped", "MAX_SHAPES"]
+__all__ = ["parse_line_shaped", "line_shaped", "CompiledLine", "MAX_SHAPES"]
 
-#: Shapes kept (the table is emptied when full: memory does not grow with the program).
+#: Shapes (and layouts) kept (a table is emptied when full: memory does not grow with the program).
 MAX_SHAPES = 4096
-_LITERAL = re.compile(r"(\d+\.?\d*|\.\d+)")  # the unsigned part of the parser's number
-_FIRST_CHAR = str.maketrans("0123456789", "dddddddddd")
+_LITERAL = re.compile(r"([0-9]+\.?[0-9]*)")  # the parser's number without what comes before its first digit
 _SHAPES: dict[str, object] = {}
+_LAYOUTS: dict[bytes, tuple] = {}  # the line with its digits made 0 -> (its shape, its literal cutter)
+_ZERO_DIGITS = bytes.maketrans(b"123456789", b"000000000")
 _NO_SHAPE = object()  # parse lines of this shape afresh
+_PREFIXES = frozenset(("+", "-", ".", "+.", "-."))  # what a number may have before its first digit
 
 
 def parse_line_shaped(line: str, lineno: int, file: str) -> ParsedLine:
     """:func:`~nczones.gcode.parser.parse_line`, rebuilt from an earlier line of the same shape when possible.
 
     >>> a = parse_line_shaped("G1 X[#1 + 1.5] Y-2", 1, "p")
-    >>> b = parse_line_shaped("G1 X[#1 + 12.25] Y-.5", 2, "p")  # same shape (the '.5' starts with a point)
+    >>> b = parse_line_shaped("G1 X[#1 + 12.25] Y-.5", 2, "p")  # same shape (the point of '.5' is in it)
     >>> b == parse_line("G1 X[#1 + 12.25] Y-.5", 2, "p")
     True
     """
+    shape, literals = _shaped(line, lineno, file)
+    if literals is None:
+        return shape
+    return shape.rebuild(literals, line)
+
+
+def line_shaped(line: str, lineno: int, file: str) -> ParsedLine | CompiledLine:
+    """The line as the runner executes it: a :class:`CompiledLine` when its shape has compiled code,
+    else :func:`parse_line_shaped`.
+
+    >>> first = line_shaped("G1 X[#1 + 1.5]", 1, "p")  # a new shape: parsed
+    >>> type(first).__name__, type(line_shaped("G1 X[#1 + 22.75]", 2, "p")).__name__
+    ('ParsedLine', 'CompiledLine')
+    """
+    shape, literals = _shaped(line, lineno, file)
+    if literals is None:
+        return shape
+    if shape.run is None:
+        return shape.rebuild(literals, line)
+    c = _new(CompiledLine)
+    c.shape = shape
+    c.parts = literals
+    return c
+
+
+def clear() -> None:
+    """Forget every shape and layout (the next line of each shape is parsed afresh)."""
+    _SHAPES.clear()
+    _LAYOUTS.clear()
+
+
+def _shaped(line: str, lineno: int, file: str) -> tuple:
+    """``(shape, its literals in this line)``, or ``(parse_line(...), None)`` when the line is parsed
+    afresh (a new shape, a shape that cannot be used, a comment or non-ASCII text).
+
+    Two lookups: the *layout* (the line with every digit made ``0``: lines of one layout have their
+    literals at the same columns, so they are cut out by fixed slices), else the shape (the literals
+    found by a regular expression), whose new layout is then noted.
+    """
     if "(" in line or ";" in line or not line.isascii():
-        return parse_line(line, lineno, file)
+        return parse_line(line, lineno, file), None
+    layout = line.encode().translate(_ZERO_DIGITS)
+    hit = _LAYOUTS.get(layout)
+    if hit is not None:
+        shape, cut = hit
+        if shape is _NO_SHAPE:
+            return parse_line(line, lineno, file), None
+        return shape, cut(line)
     parts = _LITERAL.split(line)
-    literals = parts[1::2]
-    key = "\x00".join(parts[0::2]) + "\x01" + "".join([t[0] for t in literals]).translate(_FIRST_CHAR)
+    key = "\x00".join(parts[0::2])
     shape = _SHAPES.get(key)
+    pl = None
     if shape is None:
         pl = parse_line(line, lineno, file)  # raises the parser's own errors
         if len(_SHAPES) >= MAX_SHAPES:
             _SHAPES.clear()
-        _SHAPES[key] = _compile(line, parts, pl)
-        return pl
+        shape = _SHAPES[key] = _compile(line, parts, pl)
+    if len(_LAYOUTS) >= MAX_SHAPES:
+        _LAYOUTS.clear()
+    _LAYOUTS[layout] = (shape, _cutter(parts))
+    if pl is not None:
+        return pl, None
     if shape is _NO_SHAPE:
-        return parse_line(line, lineno, file)
-    return shape(parts, line)
+        return parse_line(line, lineno, file), None
+    return shape, tuple(parts[1::2])
+
+
+def _cutter(parts: list[str]):
+    """A function cutting the literals out of a line of the layout of the line split into ``parts``."""
+    cuts = []
+    pos = 0
+    for k, text in enumerate(parts):
+        if k % 2:
+            cuts.append(slice(pos, pos + len(text)))
+        pos += len(text)
+    if len(cuts) > 1:
+        return itemgetter(*cuts)
+    if cuts:
+        return lambda line, cut=cuts[0]: (line[cut],)
+    return _no_literals
+
+
+def _no_literals(line: str) -> tuple:
+    return ()
+
+
+class CompiledLine:
+    """A line whose shape has compiled code.
+
+    ``run(parts, params)`` evaluates its words and assignments the way
+    :meth:`~nczones.gcode.program._Runner.execute` does and returns ``(N number, letters, values)``
+    after making the assignments, or None, having changed nothing, when the line needs the general
+    path (an error, a code the language layer acts on: M2 M30 M97 M98 M99, G65-G67).
+    ``columns(parts, line)`` gives each word's ``(column, end column, text)``.
+    """
+
+    __slots__ = ("shape", "parts")
+
+    @property
+    def run(self):
+        return self.shape.run
+
+    @property
+    def columns(self):
+        return self.shape.columns
+
+
+class _Shape:
+    __slots__ = ("rebuild", "run", "columns")
+
+    def __init__(self, rebuild, run, columns):
+        self.rebuild = rebuild
+        self.run = run
+        self.columns = columns
 
 
 def _compile(line: str, parts: list[str], pl: ParsedLine):
@@ -91,14 +197,14 @@ def _compile(line: str, parts: list[str], pl: ParsedLine):
     numbers = p.numbers
     if len(numbers) != len(spans):
         return _NO_SHAPE
-    leaf_of: dict[int, str] = {}  # id(node) -> the source of its rebuilt leaf
+    leaf_of: dict[int, str] = {}  # id(node) -> the source of its literal's text (sign included)
     for k, ((a, b, node), (la, lb)) in enumerate(zip(numbers, spans)):
         if b != lb:
             return _NO_SHAPE
         if a == la:
-            leaf_of[id(node)] = f"_num(P[{2 * k + 1}])"
-        elif a < la and line[a] in "+-" and not line[a + 1:la].strip(" \t"):
-            leaf_of[id(node)] = f"_num({line[a]!r} + P[{2 * k + 1}])"
+            leaf_of[id(node)] = f"P[{k}]"
+        elif a < la and line[a:la].replace(" ", "").replace("\t", "") in _PREFIXES:
+            leaf_of[id(node)] = f"{line[a:la].replace(' ', '').replace(chr(9), '')!r} + P[{k}]"
         else:
             return _NO_SHAPE
     ends = [b for _a, b in spans]
@@ -122,47 +228,38 @@ def _compile(line: str, parts: list[str], pl: ParsedLine):
     if pl.number is None:
         number_src = "None"
     elif numbers and numbers[0][2][2] == pl.number and id(numbers[0][2]) in leaf_of:
-        number_src = leaf_of[id(numbers[0][2])] + "[2]"
+        number_src = f"_num({leaf_of[id(numbers[0][2])]})[2]"
     else:
         return _NO_SHAPE
     # D[k]: how much longer the first k literals are than in the first line of the shape
     lines = ["def rebuild(P, line):", "    D = [0]"]
-    lines += [f"    D.append(D[-1] + len(P[{2 * k + 1}]) - {b - a})" for k, (a, b) in enumerate(spans)]
+    lines += [f"    D.append(D[-1] + len(P[{k}]) - {b - a})" for k, (a, b) in enumerate(spans)]
     lines.append(f"    return _parsed_line({pl.delete!r}, {number_src}, ({''.join(w + ', ' for w in words)}), "
                  f"({''.join(a + ', ' for a in assigns)}))")
     src = "\n".join(lines) + "\n"
     scope = {"_parsed_line": _parsed_line, "_num": _num}
     exec(compile(src, "<line shape>", "exec"), scope)  # noqa: S102  # built only from reprs of str/int/bool
     rebuild = scope["rebuild"]
-    if rebuild(parts, line) != pl:
+    if rebuild(tuple(parts[1::2]), line) != pl:
         return _NO_SHAPE
-    return rebuild
+    run = columns = None
+    if _COMPILE_RUNS and not pl.delete:
+        try:
+            run, columns = _executor(spans, pl, leaf_of, at,
+                                     None if pl.number is None else leaf_of[id(numbers[0][2])])
+        except (_Unshaped, RecursionError):
+            run = columns = None
+    return _Shape(rebuild, run, columns)
 
 
 class _Unshaped(Exception):
     pass
 
 
-_PL_SETTERS = tuple(getattr(ParsedLine, f).__set__ for f in (
-    "delete", "number", "oword", "words", "assigns", "comments", "percent", "unsupported"))
-
-
-def _parsed_line(delete: bool, number, words: tuple, assigns: tuple) -> ParsedLine:
-    """``ParsedLine(delete, number, None, words, assigns)`` without the frozen-dataclass overhead (an
-    ordinary, equal ParsedLine; the rebuild of every shape is checked against the parser's own)."""
-    pl = _new(ParsedLine)
-    sd, sn, so, sw, sa, sc, sp, su = _PL_SETTERS
-    sd(pl, delete)
-    sn(pl, number)
-    so(pl, None)
-    sw(pl, words)
-    sa(pl, assigns)
-    sc(pl, ())
-    sp(pl, False)
-    su(pl, None)
-    return pl
-
-
+#: ``ParsedLine(delete, number, None, words, assigns)``, built faster (an ordinary, equal ParsedLine; the
+#: rebuild of every shape is checked against the parser's own).
+_parsed_line = builder(ParsedLine, ("delete", "number", "words", "assigns"), oword=None, comments=(), percent=False,
+                       unsupported=None)
 _new = object.__new__
 
 
@@ -187,7 +284,7 @@ def _tree(node, leaf_of: dict[int, str]) -> str:
         src = leaf_of.get(id(node))
         if src is None:
             raise _Unshaped
-        return src
+        return f"_num({src})"
     return "(" + "".join(_tree(t, leaf_of) + ", " for t in node) + ")"
 
 
@@ -201,3 +298,183 @@ def _num(text: str) -> tuple:
 
 
 _decimal_uncached = plain_decimal_value.__wrapped__
+
+
+#: Compile run code for shapes (tests turn it off to compare with the general path).
+_COMPILE_RUNS = True
+
+
+def _executor(spans, pl: ParsedLine, leaf_of: dict[int, str], at, number_src: str | None):
+    """Compiled ``(run, columns)`` of this shape (see :class:`CompiledLine`), or raise _Unshaped.
+
+    ``run`` mirrors ``_Runner.execute`` and :func:`~nczones.gcode.expr.evaluate`: the same double
+    operations in the same order, the same exact shadows kept by the same test, the same words; anything
+    that would raise there (and the codes the runner acts on) returns None before any assignment is made,
+    so that the general path then reports it.  A literal's exact value is computed only where a shadow
+    needs it.  ``columns(P, line)`` gives the words' ``(column, end column, text)``, for when the block's
+    words are read.
+    """
+    em = _Emit(leaf_of)
+    body: list[str] = []
+    columns = []
+    for k, (letter, tree, col, end, _text) in enumerate(pl.words):
+        if tree[0] == NUM:
+            src = leaf_of.get(id(tree))
+            if src is None:
+                raise _Unshaped
+            body.append(f"v{k} = _dec({src})")
+        else:
+            d, q, lazy = em.value(tree, body)
+            if lazy:
+                body.append(f"v{k} = {q}")
+            else:
+                body.append(f"v{k} = {q} if {q} is not None else _double({d})")
+        if letter == "M":
+            body.append(f"if v{k}._denominator == 1 and v{k}._numerator in _STOP_M: return None")
+        elif letter == "G":
+            body.append(f"if 65 <= v{k}._numerator // v{k}._denominator <= 67 and v{k} in _G_MACRO_CALLS: "
+                        "return None")
+        columns.append(f"({at(col - 1)}+1, {at(end - 1)}+1, line[{at(col - 1)}:{at(end - 1)}])")
+    writes = []
+    for k, (target, tree, _c, _e) in enumerate(pl.assigns):
+        if target[0] == NPAR:
+            key = repr(target[1])
+        elif target[0] == PAR and target[1][0] == NUM and id(target[1]) in leaf_of:
+            key = f"k{k}"
+            src = leaf_of[id(target[1])]
+            body.append(f"{key} = _IDX.get({src}) or _index({src})")
+            body.append(f"if not 1 <= {key} <= params.max_parameter or {key} == 3000 or {key} == 3006: return None")
+        else:
+            raise _Unshaped
+        d, q, _lazy = em.value(tree, body)
+        writes.append(f"write({key}, ({d}, {q}))")
+    letters = "".join(w[0] for w in pl.words)
+    values = "".join(f"v{k}, " for k in range(len(pl.words)))
+    lines = ["def run(P, params):"]
+    if em.uses_store:
+        lines += ["    num = params._num", "    providers = params._providers"]
+    if body:
+        lines += ["    try:"] + [f"        {b}" for b in body] + ["    except EvalError:", "        return None"]
+    if writes:
+        lines += ["    write = params.write"] + [f"    {w}" for w in writes]
+    number = "None" if number_src is None else f"_dec({number_src})"
+    lines.append(f"    return {number}, {letters!r}, ({values})")
+    lines += ["def columns(P, line):", "    D = [0]"]
+    lines += [f"    D.append(D[-1] + len(P[{k}]) - {b - a})" for k, (a, b) in enumerate(spans)]
+    lines.append(f"    return [{''.join(c + ', ' for c in columns)}]")
+    scope = {"_dec": _decimal, "_double": _double, "_STOP_M": _M_CONTROL, "_G_MACRO_CALLS": _G_MACRO_CALLS,
+             "EvalError": EvalError, "_UNSET": _UNSET, "_pair": _pair, "_binary": _binary, "_unary": _unary,
+             "_q_add": _q_add, "_q_sub": _q_sub, "_q_mul": _q_mul, "_q_div": _q_div, "_atan": _atan,
+             "_IDX": _IDX, "_index": _index}
+    exec(compile("\n".join(lines) + "\n", "<line shape run>", "exec"), scope)  # noqa: S102  # reprs only
+    return scope["run"], scope["columns"]
+
+
+#: Parameter numbers of literals (``#12``): the text's index, or -1 when it is not within 0.0001 of an
+#: integer (then the general path reports it).
+_IDX: dict[str, int] = {}
+
+
+def _index(text: str) -> int:
+    """``round(float(text))`` as the parameter number ``#text`` reads, -1 when not an integer (cached)."""
+    x = float(text)
+    try:
+        i = round(x)
+    except (OverflowError, ValueError):
+        return -1
+    if abs(x - i) > 0.0001:
+        i = -1
+    if len(_IDX) < 10_000:
+        _IDX[text] = i
+    return i
+
+
+def _decimal(text: str):
+    """The exact value of a literal (sign included), as the parser's NUM leaf has it."""
+    return plain_decimal_value(text) if len(text) < 5 else _decimal_uncached(text)
+
+
+def _atan(y: float, x: float) -> float:
+    return _check((math.atan2(y, x) * 180.0) / math.pi)
+
+
+class _Emit:
+    """Straight-line code for an expression tree: each node's double in a local ``dN`` and its shadow
+    in ``qN`` (None when dropped), or, for a literal, the source computing its shadow (``lazy``)."""
+
+    _Q = {"+": "_q_add", "-": "_q_sub", "*": "_q_mul", "/": "_q_div"}
+
+    def __init__(self, leaf_of: dict[int, str]):
+        self.leaf_of = leaf_of
+        self.n = 0
+        self.uses_store = False
+
+    def value(self, node, out: list[str]) -> tuple[str, str, bool]:
+        """Emit code for ``node``; its (double variable, shadow source, shadow is lazy)."""
+        tag = node[0]
+        self.n += 1
+        n = self.n
+        d, q = f"d{n}", f"q{n}"
+        if tag == NUM:
+            src = self.leaf_of.get(id(node))
+            if src is None:
+                raise _Unshaped
+            out.append(f"{d} = float({src})")
+            return d, f"_dec({src})", True
+        if tag == PAR:
+            index = node[1]
+            src = self.leaf_of.get(id(index)) if index[0] == NUM else None
+            if src is None:
+                raise _Unshaped
+            self.uses_store = True
+            out += [f"i = _IDX.get({src}) or _index({src})",
+                    "if not 1 <= i <= params.max_parameter: return None",
+                    "g = providers.get(i)",
+                    f"{d}, {q} = num.get(i, _UNSET) if g is None else _pair(g())"]
+            return d, q, False
+        if tag == NPAR:
+            out += ["try:", f"    {d}, {q} = params.read({node[1]!r})", "except KeyError:", "    return None"]
+            return d, q, False
+        if tag == BIN:
+            op = node[1]
+            da, qa, lza = self.value(node[2], out)
+            db, qb, lzb = self.value(node[3], out)
+            qfn = self._Q.get(op)
+            if qfn is None:  # mod, **, comparisons, logic: no shadow read
+                out.append(f"{d}, {q} = _binary({op!r}, ({da}, None), ({db}, None))")
+                return d, q, False
+            if op == "/":
+                out.append(f"if {db} == 0.0: return None")
+            out += [f"{d} = {da} {op} {db}", f"if {d} - {d}: return None", f"{q} = None"]  # NaN, inf
+            cond = " and ".join([f"{x} is not None" for x, lz in ((qa, lza), (qb, lzb)) if not lz]) or "True"
+            out += [f"if {cond}:", f"    a = {qa}", f"    b = {qb}"]
+            if op == "/":
+                out += ["    if b != 0:", "        c = _q_div(a, b)",
+                        f"        if c._numerator / c._denominator == {d}: {q} = c"]
+            else:
+                out += [f"    c = {qfn}(a, b)", f"    if c._numerator / c._denominator == {d}: {q} = c"]
+            return d, q, False
+        if tag == NEG:
+            da, qa, lza = self.value(node[1], out)
+            out.append(f"{d} = -{da}")
+            if lza:
+                return d, f"-{qa}", True
+            out.append(f"{q} = -{qa} if {qa} is not None else None")
+            return d, q, False
+        if tag == FN:
+            name = node[1]
+            da, qa, lza = self.value(node[2], out)
+            if name == "abs":
+                out += [f"if {da} - {da}: return None", f"{d} = abs({da})"]  # inf: _unary's error
+                if lza:
+                    return d, f"abs({qa})", True
+                out.append(f"{q} = abs({qa}) if {qa} is not None else None")
+                return d, q, False
+            out.append(f"{d}, {q} = _unary({name!r}, ({da}, None))")  # only ABS reads the shadow
+            return d, q, False
+        if tag == ATAN:
+            dy, _qy, _ly = self.value(node[1], out)
+            dx, _qx, _lx = self.value(node[2], out)
+            out += [f"{d} = _atan({dy}, {dx})", f"{q} = None"]
+            return d, q, False
+        raise _Unshaped  # EXISTS, computed parameter numbers: the general path

@@ -220,12 +220,18 @@ def test_predefined_names_can_be_provided():
     assert values("G0 X[#<_x> * 2]", params=params) == [Fraction(5, 2)]
 
 
+_HUGE = "1" + "0" * 400  # float() of it is inf
+
+
 @pytest.mark.parametrize(
     "prog, code",
     [("o1 sub\no2 sub\no2 endsub\no1 endsub\n", "GC314"), ("o1 return\n", "GC315"), ("o9 call\n", "GC313"),
      ("o1 else\n", "GC314"), ("o1 while [1]\nG0 X1\n", "GC314"), ("G0 X[LN[0]]\n", "GC312"),
      ("G0 X[ACOS[2]]\n", "GC312"), ("#1 = 1.5\nG0 X##1\n", "GC204"), ("G0 X#0\n", "GC205"),
-     ("o1 sub\no1 call\no1 endsub\no1 call\n", "GC316")],
+     ("o1 sub\no1 call\no1 endsub\no1 call\n", "GC316"),
+     # a literal too large for a double is inf to the controller: never a traceback
+     (f"G0 X[COS[{_HUGE}]]\n", "GC312"), (f"G0 X[ABS[-{_HUGE}]]\n", "GC312"), (f"#1 = {_HUGE}\nG0 X[#1 MOD 3]\n", "GC312"),
+     (f"G0 X#{_HUGE}\n", "GC204"), (f"G0 X[#{_HUGE} + 1]\n", "GC204"), (f"#{_HUGE} = 1\n", "GC204")],
 )
 def test_runtime_language_errors(prog, code):
     with pytest.raises(GcodeError) as e:
