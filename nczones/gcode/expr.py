@@ -324,6 +324,8 @@ _UNSET = (0.0, Fraction(0))  # what an unset numbered parameter reads
 
 def _q_add(a: Fraction, b: Fraction) -> Fraction:
     """``a + b`` by integer arithmetic (the result is normalized, equal to Fraction's)."""
+    if not a._numerator:
+        return b
     da, db = a._denominator, b._denominator
     if da == db:
         return _fraction(a._numerator + b._numerator, da)
@@ -331,6 +333,8 @@ def _q_add(a: Fraction, b: Fraction) -> Fraction:
 
 
 def _q_sub(a: Fraction, b: Fraction) -> Fraction:
+    if not b._numerator:
+        return a
     da, db = a._denominator, b._denominator
     if da == db:
         return _fraction(a._numerator - b._numerator, da)

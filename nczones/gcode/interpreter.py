@@ -670,7 +670,7 @@ class Interpreter:
         if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self._machine_at is None \
                 and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
                                len(words) - len(axis_words) - ("F" in words) - ("S" in words)):
-            self._lean_move([(i, w.value) for i, w in axis_words])
+            self._lean_move(tuple((k, i) for k, (i, _w) in enumerate(axis_words)), [w.value for _i, w in axis_words])
             return
         # ---- modal group checks
         groups: dict[int, tuple[int, Word]] = {}
@@ -912,7 +912,7 @@ class Interpreter:
             m = v._numerator
         if not self._lean(g, m, values[fk] if fk >= 0 else None, 0):
             return False
-        self._lean_move([(i, values[k]) for k, i in axis_at])
+        self._lean_move(axis_at, values)
         return True
 
     def _plain_plan(self, letters: str):
@@ -961,9 +961,10 @@ class Interpreter:
             self.motion = g
         return True
 
-    def _lean_move(self, axis_values) -> None:
+    def _lean_move(self, axis_at, values) -> None:
         """The G0/G1 move of a plain block: ``_motion_block``, ``_program_target`` and ``_emit``
         for the one case they reduce to (no G53, rotation, tracking or pending machine position).
+        ``axis_at``: ``(value index, axis index)`` of each axis word, its value in ``values``.
         ``tests/gcode/test_plain_lane.py`` holds the two paths to identical segments."""
         if self.unset and not self._noted_straight:
             self._note_assumed(("units", "distance", "offset"))
@@ -973,14 +974,16 @@ class Interpreter:
         inch = self.inch
         if inch:
             rotary = self.rotary
-            axis_values = [(i, v if rotary[i] else _qinch(v)) for i, v in axis_values]
+            values = [v if rotary[i] else _qinch(v) for v, (_k, i) in zip([values[k] for k, _i in axis_at], axis_at)]
+            axis_at = tuple((n, i) for n, (_k, i) in enumerate(axis_at))
         if self.absolute:
             off = self.off
-            for i, v in axis_values:
-                end[i] = _qadd(v, off[i])
+            for k, i in axis_at:
+                o = off[i]
+                end[i] = _qadd(values[k], o) if o._numerator else values[k]
         else:
-            for i, v in axis_values:
-                end[i] = _qadd(end[i], v)
+            for k, i in axis_at:
+                end[i] = _qadd(end[i], values[k])
         fmm = None
         if self.motion == 10:
             kind = SegmentKind.LINE

@@ -126,7 +126,10 @@ def plain_decimal_value(text: str) -> Fraction:
     (Fraction(-1, 4), Fraction(7, 1))
     """
     whole, _point, frac = text.partition(".")
-    return _fraction(int(whole + frac), 10 ** len(frac))
+    return _fraction(int(whole + frac), _POW10[len(frac)] if len(frac) < 24 else 10 ** len(frac))
+
+
+_POW10 = tuple(10**k for k in range(24))
 
 
 #: ``SourceSpan(file, line, column, end_column, text)``, built 2x faster (see :mod:`nczones.frozen`): the
@@ -366,12 +369,13 @@ _block_number = Block.number.__set__  # type: ignore[attr-defined]
 _block_messages = Block.messages.__set__  # type: ignore[attr-defined]
 
 
-def plain_block(letters: str, values: tuple, span: SourceSpan, index: int, number) -> PlainBlock:
-    """A :class:`PlainBlock` built without the frozen-dataclass overhead."""
+def plain_block(letters: str, values: tuple, span: SourceSpan, index: int, number, words=None) -> PlainBlock:
+    """A :class:`PlainBlock` built without the frozen-dataclass overhead (``words``: how its words are
+    made when read, see :attr:`PlainBlock.words`; None: lexed from the line)."""
     b = _new(PlainBlock)
     _block_letters(b, letters)
     _block_values(b, values)
-    _block_words(b, None)
+    _block_words(b, words)
     _block_span(b, span)
     _block_index(b, index)
     _block_number(b, number)

@@ -96,7 +96,6 @@ from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_k
 from .lexer import (
     _G_MACRO_CALLS,
     _M_CONTROL,
-    _block_words,
     magic_comment,
     make_span,
     make_word,
@@ -425,10 +424,8 @@ class _Runner:
                         number, letters, values = done
                         if letters:
                             self.started = True
-                            b = plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
-                                            self.index, number)
-                            _block_words(b, parsed)
-                            yield b
+                            yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
+                                              self.index, number, parsed)  # words made from the line if read
                             self.index += 1
                         pos, lineno = end + 1, lineno + 1
                         continue
@@ -475,10 +472,8 @@ class _Runner:
                     number, letters, values = done
                     if letters:
                         self.started = True
-                        b = plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line), self.index,
-                                        number)
-                        _block_words(b, parsed)  # the words are made from the line if read
-                        yield b
+                        yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
+                                          self.index, number, parsed)  # words made from the line if read
                         self.index += 1
                     pos, lineno = nxt, lineno + 1
                     continue

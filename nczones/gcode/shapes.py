@@ -67,10 +67,18 @@ def line_shaped(line: str, lineno: int, file: str) -> ParsedLine | CompiledLine:
     """The line as the runner executes it: a :class:`CompiledLine` when its shape has compiled code,
     else :func:`parse_line_shaped`.
 
+    >>> clear()
     >>> first = line_shaped("G1 X[#1 + 1.5]", 1, "p")  # a new shape: parsed
     >>> type(first).__name__, type(line_shaped("G1 X[#1 + 22.75]", 2, "p")).__name__
     ('ParsedLine', 'CompiledLine')
     """
+    if "(" not in line and ";" not in line and line.isascii():  # _shaped's first lookup, for the usual case
+        hit = _LAYOUTS.get(line.encode().translate(_ZERO_DIGITS))
+        if hit is not None and hit[0] is not _NO_SHAPE and hit[0].run is not None:
+            c = _new(CompiledLine)
+            c.shape = hit[0]
+            c.parts = hit[1](line)
+            return c
     shape, literals = _shaped(line, lineno, file)
     if literals is None:
         return shape
