@@ -375,6 +375,10 @@ class Interpreter:
         self._plans: dict = {}  # letters of a PlainBlock -> how the plain lane reads it (_plain_plan)
         self._block: Block | None = None
         self._span: SourceSpan | None = None
+        # the state every block reads, as instance attributes (reading a class default is slower)
+        self._machine_at = self._u = self._u_next = self._spline = self._cycle_il = self._last_cycle = None
+        self._noted_straight = False
+        self._m73 = []
 
     # ------------------------------------------------------------------ helpers
     def _recompute_offsets(self) -> None:
