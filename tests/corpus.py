@@ -7,3 +7,18 @@ is missing.
 from pathlib import Path
 
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus"
+
+MANIFEST = CORPUS / "MANIFEST.tsv"
+
+
+def corpus_programs() -> list[tuple[str, str]]:
+    """(path relative to the corpus, dialect) of every MANIFEST row with role ``program``; empty without
+    the corpus."""
+    if not MANIFEST.is_file():
+        return []
+    out = []
+    for row in MANIFEST.read_text().splitlines()[1:]:
+        cols = row.split("\t")
+        if len(cols) > 6 and cols[4] == "program":
+            out.append((cols[0], cols[6]))
+    return out

@@ -154,7 +154,7 @@ def _no_literals(line: str) -> tuple:
 class CompiledLine:
     """A line whose shape has compiled code.
 
-    ``run(parts, params)`` evaluates its words and assignments the way
+    ``shape.run(parts, params)`` evaluates its words and assignments the way
     :meth:`~nczones.gcode.program._Runner.execute` does and returns ``(N number, letters, values)``
     after making the assignments, or None, having changed nothing, when the line needs the general
     path (an error, a code the language layer acts on: M2 M30 M97 M98 M99, G65-G67).
@@ -162,10 +162,6 @@ class CompiledLine:
     """
 
     __slots__ = ("shape", "parts")
-
-    @property
-    def run(self):
-        return self.shape.run
 
     @property
     def columns(self):

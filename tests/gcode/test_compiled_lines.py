@@ -26,7 +26,7 @@ from nczones.errors import NczonesError
 from nczones.gcode import interpret, shapes
 from nczones.gcode.expr import Parameters
 from nczones.gcode.program import iter_blocks
-from tests.corpus import CORPUS
+from tests.corpus import CORPUS, corpus_programs
 from tests.gcode.test_fastpath_blocks import MACHINE
 
 
@@ -221,8 +221,6 @@ def test_a_shadow_is_kept_where_the_double_agrees_and_dropped_where_it_does_not(
 
 
 def _corpus_programs_with_expressions():
-    from tests.gcode.test_corpus_coverage import programs as corpus_programs
-
     out = []
     for rel, _dialect in corpus_programs():
         text = (CORPUS / rel).read_bytes().decode("utf-8", errors="surrogateescape")

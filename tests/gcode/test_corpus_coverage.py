@@ -43,8 +43,7 @@ import pytest
 from nczones.errors import GcodeError
 from nczones.gcode import interpret
 from nczones.machine import parse_machine
-
-from tests.corpus import CORPUS
+from tests.corpus import CORPUS, corpus_programs
 
 MANIFEST = CORPUS / "MANIFEST.tsv"
 pytestmark = [pytest.mark.corpus, pytest.mark.skipif(not MANIFEST.is_file(), reason="corpus not available")]
@@ -96,16 +95,7 @@ NOT_ACCEPTED: dict[str, str] = {
 NEEDS_OUTSIDE_CODES = {"GC303": "calls a subroutine that is not in the file (LinuxCNC searches SUBROUTINE_PATH)"}
 
 
-def programs() -> list[tuple[str, str]]:
-    """(path relative to the corpus, dialect) of every MANIFEST program."""
-    if not MANIFEST.is_file():
-        return []
-    out = []
-    for row in MANIFEST.read_text().splitlines()[1:]:
-        cols = row.split("\t")
-        if len(cols) > 6 and cols[4] == "program":
-            out.append((cols[0], cols[6]))
-    return out
+programs = corpus_programs
 
 
 def not_accepted_reason(rel: str, dialect: str, code: str = "") -> str | None:

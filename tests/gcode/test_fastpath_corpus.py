@@ -10,14 +10,12 @@ do not carry).  Programs over :data:`DIFF_MAX_LINES` lines run only under
 
 from __future__ import annotations
 
-
 import pytest
 
 from nczones.errors import GcodeError
 from nczones.gcode import interpret
 from nczones.machine import parse_machine
-
-from tests.corpus import CORPUS
+from tests.corpus import CORPUS, corpus_programs
 
 MANIFEST = CORPUS / "MANIFEST.tsv"
 pytestmark = [pytest.mark.corpus, pytest.mark.skipif(not MANIFEST.is_file(), reason="corpus not available")]
@@ -32,16 +30,6 @@ MACHINE = parse_machine(
 )
 
 
-def _programs():
-    if not MANIFEST.is_file():
-        return []
-    out = []
-    for row in MANIFEST.read_text().splitlines()[1:]:
-        cols = row.split("\t")
-        if len(cols) > 6 and cols[4] == "program":
-            out.append((cols[0], cols[6]))
-    return out
-
 
 def _segment_key(s):
     return (s.kind, s.start, s.end, s.axes, s.block, s.line, s.tool_length, s.feed_mm_min, s.plane,
@@ -50,7 +38,7 @@ def _segment_key(s):
 
 def _diff_cases(long: bool):
     out = []
-    for rel, _ in _programs():
+    for rel, _ in corpus_programs():
         path = CORPUS / rel
         try:
             nlines = path.read_bytes().count(b"\n")

@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 from nczones.errors import GcodeError
 from nczones.gcode import shapes
 from nczones.gcode.parser import parse_line
-from tests.corpus import CORPUS
+from tests.corpus import CORPUS, corpus_programs
 
 
 def _outcome(fn, line: str):
@@ -98,19 +98,14 @@ def test_cache_hits_are_rebuilt_not_reparsed(monkeypatch):
 
 
 def _corpus_lines():
-    manifest = CORPUS / "MANIFEST.tsv"
-    if not manifest.is_file():
-        return []
     out = []
-    for row in manifest.read_text().splitlines()[1:]:
-        cols = row.split("\t")
-        if len(cols) > 6 and cols[4] == "program":
-            try:
-                text = (CORPUS / cols[0]).read_text(errors="replace")
-            except OSError:
-                continue
-            out += [ln for ln in text.splitlines() if ln.isascii() and "(" not in ln and ";" not in ln
-                    and ("#" in ln or "[" in ln or len(out) % 50 == 0)]
+    for rel, _dialect in corpus_programs():
+        try:
+            text = (CORPUS / rel).read_text(errors="replace")
+        except OSError:
+            continue
+        out += [ln for ln in text.splitlines() if ln.isascii() and "(" not in ln and ";" not in ln
+                and ("#" in ln or "[" in ln or len(out) % 50 == 0)]
     return out
 
 
