@@ -48,7 +48,10 @@ from .interpreter import AXIS_LETTERS, INCH, ROTARY, Interpreter, _fmt, _gkey
 __all__ = ["CylindricalInterpreter", "uses_cylindrical", "CylinderMode"]
 
 _G71, _G107 = 71, 1070
-_MENTION = re.compile(r"G\s*0*(?:7\s*\.\s*1(?![0-9])|107(?![0-9.]))", re.I)
+#: G07.1 / G107 in lower-cased text (within a line; blanks as in ``G7 .1``).  Searched in lower-cased pieces
+#: rather than with ``re.I``, which is 4x slower: a literal first character lets the search skip ahead.
+_MENTION = re.compile(r"g[ \t]*0*(?:7[ \t]*\.[ \t]*1(?![0-9])|107(?![0-9.]))")
+_PIECE_CHARS = 1 << 16
 
 # G codes (keys 10 x number) allowed in the mode and what the others are called in messages
 _ALLOWED_G = {10, 20, 30, 40, 900, 910, 930, 940, 950, 410, 420, 400, 610, 611, 640, 800}
@@ -68,10 +71,18 @@ _FORBIDDEN_WHY = {
 def uses_cylindrical(text: str) -> bool:
     """Does the program text mention G07.1 / G107 (then the full interpreter with the mode runs it)?
 
-    >>> uses_cylindrical("G7.1 C20"), uses_cylindrical("G07.1C0"), uses_cylindrical("G107 C5"), uses_cylindrical("G7.15 G1070")
+    >>> uses_cylindrical("G7.1 C20"), uses_cylindrical("g07 .1C0"), uses_cylindrical("G107 C5"), uses_cylindrical("G7.15 G1070")
     (True, True, True, False)
     """
-    return _MENTION.search(text) is not None
+    n = len(text)
+    lo = 0
+    while lo < n:  # pieces cut after a newline: no copy of the whole program
+        hi = text.find("\n", lo + _PIECE_CHARS)
+        hi = n if hi < 0 else hi + 1
+        if _MENTION.search(text[lo:hi].lower()) is not None:
+            return True
+        lo = hi
+    return False
 
 
 class CylinderMode:

@@ -74,6 +74,7 @@ _LIMIT_STATE = 2**59  # |position|, |offset|, feed, tool length (scaled) for the
 
 _NL, _CR, _SP, _TAB = 10, 13, 32, 9
 _LP, _RP, _SEMI = ord("("), ord(")"), ord(";")
+_HASH, _LBRACKET = ord("#"), ord("[")
 _MAGIC = re.compile(r"\(\s*(MSG|DEBUG|PRINT|LOG|PROBE|ABORT)", re.I)
 
 
@@ -141,6 +142,10 @@ def _run_starts(text: str, it, size: int) -> dict[int, list]:
     base = 0
     line0 = 0
     for blk in _encoded_blocks(text, size):
+        if not _may_have_long_run(blk):
+            line0 += blk.count(b"\n") + (0 if blk.endswith(b"\n") else 1)
+            base += _char_offsets(blk)(len(blk))
+            continue
         simple, starts, ends_, _code = _classify(blk, it)
         char = _char_offsets(blk)
         for a, b in _simple_runs(simple):
@@ -264,7 +269,15 @@ def _simple_runs(simple: np.ndarray) -> list[list[int]]:
 
 def _prepare(blk: bytes, it):
     """What a block needs before interpretation, independent of the modal state: the
-    classification, the runs to take fast and their parsed words (a pure function of the bytes)."""
+    classification, the runs to take fast and their parsed words (a pure function of the bytes).
+
+    A block in which no :data:`MIN_RUN` lines in a row can be simple (see :func:`_may_have_long_run`)
+    is not classified: it has no run to take fast but the short ones at its ends, and those the full
+    path takes as well.
+    """
+    if not _may_have_long_run(blk):
+        starts, ends_ = _line_bounds(np.frombuffer(blk, dtype=np.uint8))
+        return None, starts, ends_, None, [], {}
     simple, starts, ends_, code = _classify(blk, it)
     nlines = len(starts)
     fast_runs = [(a, b) for a, b in _simple_runs(simple) if b - a >= MIN_RUN or a == 0 or b == nlines]
@@ -299,6 +312,26 @@ def _encoded_blocks(src: str | bytes, size: int):
 #: M then 9, 8 or 9, or M then ``#`` or ``[`` (a computed M code), with anything up to a blank between
 #: them (lines are joined when the code is checked).
 _M98_M99_RAW = re.compile(r"[Mm][\x00-\x20]*(?:9[\x00-\x20]*[89]|[#\[])")
+
+
+def _m98_m99_raw(src: str) -> bool:
+    """``_M98_M99_RAW.search(src) is not None``, tried only at the ``M``s when they are few (a search
+    for a character class steps through every character).
+
+    >>> _m98_m99_raw("G1 X1 M3\\nM 9 8 P1\\n"), _m98_m99_raw("M3 S100\\nm#1\\n"), _m98_m99_raw("G1 M3 M5\\n")
+    (True, True, False)
+    """
+    if (src.count("M") + src.count("m")) * 64 > len(src):
+        return _M98_M99_RAW.search(src) is not None
+    for ch in "Mm":
+        p = src.find(ch)
+        while p >= 0:
+            if _M98_M99_RAW.match(src, p) is not None:
+                return True
+            p = src.find(ch, p + 1)
+    return False
+
+
 _SUSPECT = np.zeros(256, dtype=bool)
 _SUSPECT[list(b"/OoMm")] = True
 
@@ -326,8 +359,7 @@ def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
     chars = "/OoMm" if isinstance(src, str) else [bytes((ch,)) for ch in b"/OoMm"]
     if not any(src.find(ch) >= 0 for ch in chars):
         return False
-    if isinstance(src, str) and not any(src.find(ch) >= 0 for ch in "/Oo(;") \
-            and _M98_M99_RAW.search(src) is None:
+    if isinstance(src, str) and not any(src.find(ch) >= 0 for ch in "/Oo(;") and not _m98_m99_raw(src):
         return False  # M words, but none can read M98/M99/M#/M[ once blanks are removed (no comment can hide one)
     for blk in _encoded_blocks(src, size):
         b = np.frombuffer(blk, dtype=np.uint8)
@@ -495,6 +527,45 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, param
 # --------------------------------------------------------------------------- classification
 
 
+def _may_have_long_run(data: bytes) -> bool:
+    """False when every run of :data:`MIN_RUN` lines in a row of ``data`` has a line holding ``#``
+    or ``[`` before any ``(`` or ``;``: such a line is never simple, so no run of simple lines is
+    that long (a cheap test that spares the classification of macro-style code).
+
+    >>> _may_have_long_run(b"G1 X1\\n" * MIN_RUN), _may_have_long_run(b"#1 = 2\\nG1 X1\\n" * MIN_RUN)
+    (True, False)
+    >>> _may_have_long_run(b"G1 X1 (#1 in a comment)\\n" * MIN_RUN)
+    True
+    """
+    if data.find(b"#") < 0 and data.find(b"[") < 0:
+        return True
+    b = np.frombuffer(data, dtype=np.uint8)
+    marked = np.flatnonzero((b == _HASH) | (b == _LBRACKET))
+    nl = np.flatnonzero(b == _NL)
+    nlines = nl.size + (0 if b.size and b[-1] == _NL else 1)
+    line_of_mark = np.searchsorted(nl, marked)
+    if data.find(b"(") >= 0 or data.find(b";") >= 0:  # only marks before the line's first comment count
+        openers = np.flatnonzero((b == _LP) | (b == _SEMI))
+        line_of_opener = np.searchsorted(nl, openers)
+        first = np.concatenate(([True], line_of_opener[1:] != line_of_opener[:-1]))
+        first_opener = np.full(nlines, b.size)
+        first_opener[line_of_opener[first]] = openers[first]
+        line_of_mark = line_of_mark[marked < first_opener[line_of_mark]]
+    lines = _distinct_sorted(line_of_mark)  # the lines holding one
+    gaps = np.diff(np.concatenate(([-1], lines, [nlines]))) - 1  # unmarked lines between
+    return bool(gaps.max() >= MIN_RUN)
+
+
+def _line_bounds(b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Byte offsets of each line's first byte and of its end (its newline, or the end of ``b``)."""
+    nl = np.flatnonzero(b == _NL)
+    starts = np.concatenate(([0], nl + 1))
+    ends_ = np.concatenate((nl, [b.size]))
+    if starts[-1] >= b.size:
+        starts, ends_ = starts[:-1], ends_[:-1]
+    return starts, ends_
+
+
 def _classify(data: bytes, it):
     """Per line of a block: simple or not; line byte ranges; the code bytes (comments/blanks removed).
 
@@ -504,10 +575,7 @@ def _classify(data: bytes, it):
     """
     b = np.frombuffer(data, dtype=np.uint8)
     nl = np.flatnonzero(b == _NL)
-    starts = np.concatenate(([0], nl + 1))
-    ends_ = np.concatenate((nl, [b.size]))
-    if starts[-1] >= b.size:
-        starts, ends_ = starts[:-1], ends_[:-1]
+    starts, ends_ = _line_bounds(b)
     nlines = len(starts)
     bad = np.zeros(nlines, dtype=bool)
     if b.size == 0:

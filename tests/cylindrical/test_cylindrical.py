@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from fractions import Fraction as F
@@ -320,3 +321,24 @@ def test_cam_groove_numbers_in_the_docs_are_generated():
     block = cam_groove.markdown(cam_groove.compute())
     doc = (ROOT / "specs" / "cylindrical.md").read_text()
     assert block in doc
+
+
+_MENTION_REFERENCE = re.compile(r"G[ \t]*0*(?:7[ \t]*\.[ \t]*1(?![0-9])|107(?![0-9.]))", re.I)
+
+
+def _mentions_by_line(text: str) -> bool:
+    return any(_MENTION_REFERENCE.search(line) for line in text.split("\n"))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.sampled_from(["G1 X1", "g07.1 c3", "G7 .1C0", "G107", "G7.15", "G1070", "G10.7",
+                                 "G0 7.1", "(G7.1)", "G7.1", "x107", "G 00107 C1", "G\n7.1"]), max_size=8),
+       st.integers(0, 3))
+def test_uses_cylindrical_is_a_case_blind_search_line_by_line(items, filler):
+    """The piecewise lower-case search finds exactly what a case-insensitive search of each line
+    finds, wherever the mention sits relative to the pieces (fillers push it across a piece end)."""
+    from nczones.gcode.cylindrical import _PIECE_CHARS, uses_cylindrical
+
+    pad = "G1 X12.5 Y3.25\n" * (filler * _PIECE_CHARS // 30)
+    text = pad + "\n".join(items) + "\n" + pad
+    assert uses_cylindrical(text) == _mentions_by_line(text)

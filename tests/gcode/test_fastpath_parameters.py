@@ -87,3 +87,34 @@ def test_control_flow_still_takes_the_whole_program_to_the_language_layer():
                  "o<tool_no> call\n", "#<a> = 1 (x)\nM 9 8 P1\n", "#<o\nO100 sub>\n"):
         assert fastpath._needs_language_layer(plain + text, it, 1 << 20), text
         assert fastpath._needs_language_layer((plain + text).encode(), it, 1 << 20), text
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.sampled_from(["M", "m", "9", "8", "3", " ", "\n", "\t", "#", "[", "G1 X1", "M98", "M 9\n9",
+                                 "G1 X1 Y2 F100 S2000\n" * 20]), max_size=30))
+def test_m98_m99_prefilter_is_the_regular_expression_search(pieces):
+    """The pre-filter of _needs_language_layer tries the pattern at each M when M is rare, else
+    searches: the same answer as one search of the text either way."""
+    text = "".join(pieces)
+    assert fastpath._m98_m99_raw(text) == (fastpath._M98_M99_RAW.search(text) is not None)
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.sampled_from(["G1 X1", "X2 Y3", "#1 = 2", "G1 X[1 + 2]", "(#1 in a comment) X4",
+                                 "G1 X#1", "M3"]), min_size=1, max_size=12),
+       st.lists(st.integers(1, 3 * fastpath.MIN_RUN), min_size=1, max_size=12))
+def test_blocks_passed_over_unclassified_have_no_long_run(kinds, repeats):
+    """_may_have_long_run is False only for blocks whose classification has no run of MIN_RUN
+    simple lines: the pre-test never takes a run away from the fast path."""
+    it = interpret("", MACHINE).interpreter
+    text = "".join(f"{k}\n" * n for k, n in zip(kinds, repeats))
+    blk = text.encode()
+    simple = fastpath._classify(blk, it)[0]
+    longest = max((b - a for a, b in fastpath._simple_runs(simple)), default=0)
+    if not fastpath._may_have_long_run(blk):
+        assert longest < fastpath.MIN_RUN
+    prep = fastpath._prepare(blk, it)
+    assert [list(r) for r in prep[4] if r[1] - r[0] >= fastpath.MIN_RUN] == \
+        [r for r in fastpath._simple_runs(simple) if r[1] - r[0] >= fastpath.MIN_RUN]
+    starts, ends_ = fastpath._classify(blk, it)[1:3]
+    assert prep[1].tolist() == starts.tolist() and prep[2].tolist() == ends_.tolist()
