@@ -183,7 +183,8 @@ def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter |
         return
     interpreter.bind_parameters(params)
     yield from _unknown_at_unsupported(interpreter,
-                                       iter_blocks(text, file=file, params=params, block_delete=block_delete))
+                                       iter_blocks(text, file=file, params=params, block_delete=block_delete,
+                                                   lane=interpreter.lane_for_blocks()))
 
 
 def _unknown_at_unsupported(interpreter: Interpreter, blocks):

@@ -15,7 +15,7 @@ from fractions import Fraction
 
 from ..errors import SourceSpan
 
-__all__ = ["Word", "Block"]
+__all__ = ["Word", "Block", "LANE_FULL"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -87,3 +87,8 @@ class Block:
 
     def all(self, letter: str) -> tuple[Word, ...]:
         return tuple(w for w in self.words if w.letter == letter)
+
+
+#: What the language layer yields, in place of a block, when the interpreter's lane it hands plain blocks
+#: to (``iter_blocks(..., lane=...)``) has a full chunk: the interpreter then hands the chunk on.
+LANE_FULL = object()

@@ -338,7 +338,7 @@ class CutterComp:
 
     def _enqueue(self, move: _Move) -> None:
         it = self.it
-        move.block = it._block.index
+        move.block = it._index
         move.span = it._span
         if move.kind is not SegmentKind.RAPID and move.dwell is None and it.feed_mode == 94:
             move.feed = it._len(it.feed)
@@ -747,7 +747,7 @@ class CutterComp:
             if not it.unsupported:
                 deps = it._deps_tuple(it.dep_pos) if it.track else ()
                 at = tuple(it._machine_at)
-                it._out.append(_segment(SegmentKind.DWELL, at, at, it.axes, it._block.index, it._span, it.tlo,
+                it._out.append(_segment(SegmentKind.DWELL, at, at, it.axes, it._index, it._span, it.tlo,
                                         None, None, False, None, None, 0, seconds, "", it.tool_register, deps,
                                         deps, ()))
                 it.segment_count += 1

@@ -179,7 +179,7 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
     params = Parameters()
     it.bind_parameters(params)
     runner = _Runner(_StringSource(interp.text), interp.file, params, interp.block_delete,
-                     DEFAULT_MAX_LOOP_ITERATIONS, 100, fast_runs=runs)
+                     DEFAULT_MAX_LOOP_ITERATIONS, 100, fast_runs=runs, lane=it.lane_for_blocks())
     flow = _unknown_at_unsupported(it, runner.run())
     requests: list[FastRunRequest] = []
 
@@ -516,7 +516,7 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, param
     # the piece's lines and blocks are numbered as in the whole program
     blocks = _unknown_at_unsupported(it, iter_blocks(piece, file=interp.file, params=params,
                                                      block_delete=interp.block_delete, first_line=offset + 1,
-                                                     first_index=block_counter[0]))
+                                                     first_index=block_counter[0], lane=it.lane_for_blocks()))
     consumed = it.blocks
     try:
         yield from it.run(blocks)

@@ -42,7 +42,7 @@ from ..exact import to_float
 from ..frozen import builder
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
-from .blocks import Block, Word
+from .blocks import LANE_FULL, Block, Word
 from .lexer import PlainBlock, _fraction, _fraction_raw
 from .splines import SPLINE_CODES, spline_block, spline_pending
 
@@ -373,7 +373,7 @@ class Interpreter:
         self.ended = False
         self._out: list[Segment] = []
         self._plans: dict = {}  # letters of a PlainBlock -> how the plain lane reads it (_plain_plan)
-        self._block: Block | None = None
+        self._index = 0  # the index of the block being executed
         self._span: SourceSpan | None = None
         # the state every block reads, as instance attributes (reading a class default is slower)
         self._machine_at = self._u = self._u_next = self._spline = self._cycle_il = self._last_cycle = None
@@ -542,7 +542,7 @@ class Interpreter:
             ds = self._deps_tuple(self.dep_pos)
             de = self._deps_tuple(end_deps if end_deps is not None else self.dep_pos)
         if not self.unsupported:
-            seg = _segment(kind, start, endt, self.axes, self._block.index, self._span, self.tlo, fmm,
+            seg = _segment(kind, start, endt, self.axes, self._index, self._span, self.tlo, fmm,
                            plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
                            ds, de, ())
             self._out.append(seg)
@@ -612,8 +612,13 @@ class Interpreter:
         for block in blocks:
             if self.ended:
                 break
+            if block is LANE_FULL:
+                if len(self._out) >= size:
+                    yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
+                    self._out = []
+                continue
             self.blocks += 1
-            self._block = block
+            self._index = block.index
             self._span = block.span
             try:
                 if inline and type(block) is PlainBlock and not self._m73:
@@ -889,6 +894,26 @@ class Interpreter:
         if 2 in mset or 30 in mset:
             raise _Stop
 
+    def lane_for_blocks(self):
+        """:meth:`lane` for the language layer's ``iter_blocks(..., lane=...)``, or None for an
+        interpreter whose :meth:`execute` is not this class's (its blocks must reach it)."""
+        return self.lane if type(self).execute is Interpreter.execute else None
+
+    def lane(self, letters: str, values: tuple, span: SourceSpan, index: int) -> int:
+        """Execute a plain block handed over by the language layer without a Block object (see
+        :func:`~nczones.gcode.program.iter_blocks`, ``lane``): 0 declined (nothing changed: the block
+        is then yielded to :meth:`run`), 1 executed, 2 executed and a chunk is full (the layer then
+        yields :data:`~nczones.gcode.blocks.LANE_FULL`, for :meth:`run` to hand the chunk on)."""
+        if self.ended or self._m73:
+            return 0
+        self._index = index
+        self._span = span
+        self.blocks += 1
+        if not self._plain(letters, values):
+            self.blocks -= 1
+            return 0
+        return 2 if len(self._out) >= self.chunk_size else 1
+
     def _plain(self, letters: str, values: tuple) -> bool:
         """Execute a :class:`~nczones.gcode.lexer.PlainBlock` by the plain-move lane if it is one.
 
@@ -998,7 +1023,7 @@ class Interpreter:
         else:
             kind = SegmentKind.RAPID
         end = tuple(end)
-        self._out.append(_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self._block.index,
+        self._out.append(_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self._index,
                                   self._span, self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register,
                                   (), (), ()))
         self.segment_count += 1

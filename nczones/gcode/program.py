@@ -91,7 +91,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
-from .blocks import Block
+from .blocks import LANE_FULL, Block
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
 from .lexer import (
     _G_MACRO_CALLS,
@@ -270,8 +270,9 @@ class FastRunRequest:
 class _Runner:
     def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
-                 fast_runs: dict | None = None):
+                 fast_runs: dict | None = None, lane=None):
         self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
+        self.lane = lane  # plain blocks are offered to it before they are built (see iter_blocks)
         self.first_line = first_line
         self.src = source
         self.file = file
@@ -381,6 +382,7 @@ class _Runner:
         cache = self.cache
         in_text = type(src) is _StringSource
         fast = self.fast_runs
+        lane = self.lane
         declined = -1  # the offset whose request the caller just declined
         while True:
             if fast and pos in fast and pos != declined:
@@ -424,9 +426,15 @@ class _Runner:
                         number, letters, values = done
                         if letters:
                             self.started = True
-                            yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
-                                              self.index, number, parsed)  # words made from the line if read
+                            span = make_span(file, lineno, 1, len(line) + 1, line)
+                            taken = lane(letters, values, span, self.index) if lane is not None else 0
+                            if not taken:
+                                yield plain_block(letters, values, span, self.index, number, parsed)
                             self.index += 1
+                            if taken == 2:
+                                pos, lineno = end + 1, lineno + 1
+                                yield LANE_FULL
+                                continue
                         pos, lineno = end + 1, lineno + 1
                         continue
                     parsed = scan_plain(line)
@@ -437,9 +445,15 @@ class _Runner:
                         if plain_control(letters, values):
                             break
                         self.started = True
-                        yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
-                                          self.index, number)
+                        span = make_span(file, lineno, 1, len(line) + 1, line)
+                        taken = lane(letters, values, span, self.index) if lane is not None else 0
+                        if not taken:
+                            yield plain_block(letters, values, span, self.index, number)
                         self.index += 1
+                        if taken == 2:
+                            pos, lineno = end + 1, lineno + 1
+                            yield LANE_FULL
+                            continue
                     pos, lineno = end + 1, lineno + 1
                 if fast and pos in fast and pos != declined:
                     continue
@@ -470,12 +484,16 @@ class _Runner:
                 done = parsed.shape.run(parsed.parts, self.params)
                 if done is not None:
                     number, letters, values = done
+                    pos, lineno0, lineno = nxt, lineno, lineno + 1
                     if letters:
                         self.started = True
-                        yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
-                                          self.index, number, parsed)  # words made from the line if read
+                        span = make_span(file, lineno0, 1, len(line) + 1, line)
+                        taken = lane(letters, values, span, self.index) if lane is not None else 0
+                        if not taken:
+                            yield plain_block(letters, values, span, self.index, number, parsed)  # words made if read
                         self.index += 1
-                    pos, lineno = nxt, lineno + 1
+                        if taken == 2:
+                            yield LANE_FULL
                     continue
                 parsed = parse_line_shaped(line, lineno, file)  # the general path says why it declined
             if type(parsed) is tuple and len(parsed) == 4 and type(parsed[2]) is str:
@@ -485,12 +503,16 @@ class _Runner:
                     pos, lineno = nxt, lineno + 1
                     continue
                 if not plain_control(letters, values):
+                    pos, lineno0, lineno = nxt, lineno, lineno + 1
                     if letters:
                         self.started = True
-                        yield plain_block(letters, values, make_span(file, lineno, 1, len(line) + 1, line),
-                                          self.index, number)
+                        span = make_span(file, lineno0, 1, len(line) + 1, line)
+                        taken = lane(letters, values, span, self.index) if lane is not None else 0
+                        if not taken:
+                            yield plain_block(letters, values, span, self.index, number)
                         self.index += 1
-                    pos, lineno = nxt, lineno + 1
+                        if taken == 2:
+                            yield LANE_FULL
                     continue
                 parsed = scan_simple(line, lineno, file)  # M98/M99/M2/M30/G65...: the general path below
             if type(parsed) is tuple:
@@ -909,6 +931,7 @@ def iter_blocks(
     max_call_depth: int = 100,
     first_line: int = 1,
     first_index: int = 0,
+    lane=None,
 ) -> Iterator[Block]:
     """Execute the program's control and yield its blocks in execution order.
 
@@ -932,6 +955,15 @@ def iter_blocks(
         Line number of the text's first line and index of its first block,
         for a piece cut from a longer program (spans and diagnostics then
         name the program's own lines).
+    lane : callable, optional
+        ``lane(letters, values, span, index) -> int``: the consumer's way to
+        execute the blocks that would be yielded as a
+        :class:`~nczones.gcode.lexer.PlainBlock` from a plain or compiled line
+        without the block being built.  Each is offered to it first: 0
+        declines it (it is then yielded as usual), 1 takes it, 2 takes it and
+        asks for control back (:data:`~nczones.gcode.blocks.LANE_FULL` is then
+        yielded).  The interpreter's is
+        :meth:`~nczones.gcode.interpreter.Interpreter.lane`.
 
     Raises
     ------
@@ -951,7 +983,7 @@ def iter_blocks(
     if not isinstance(text, str):
         raise TypeError(f"iter_blocks expects the program text as str, got {type(text).__name__}")
     runner = _Runner(_StringSource(text), file, params if params is not None else Parameters(), block_delete,
-                     max_loop_iterations, max_call_depth, first_line, first_index)
+                     max_loop_iterations, max_call_depth, first_line, first_index, lane=lane)
     return runner.run()
 
 

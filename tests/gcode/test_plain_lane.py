@@ -148,7 +148,7 @@ def test_the_lane_takes_plain_moves_and_only_them(monkeypatch):
     taken = []
     original = Interpreter._lean_move
     monkeypatch.setattr(Interpreter, "_lean_move", lambda self, axis_at, values: (
-        taken.append(self._block.span.line), original(self, axis_at, values))[1])
+        taken.append(self._span.line), original(self, axis_at, values))[1])
     text = ("G21 G90 G1 X1 F100\nX2 S3 M3\nG0 Y1\nG91 X1\nX1 (note)\nG2 X1 Y1 I1\nG1 X1 M6\n"
             "N8 G1 X3 F50 S1 M8\nM2\n")
     assert _result(text) == _general(text)
@@ -172,3 +172,54 @@ def test_runs_of_plain_lines_honour_block_delete_line_ends_and_program_end(block
     else:
         assert ends == [(1, 1), (2, 2), (3, 2), (4, 4), (5, 4)]
     assert [seg[5] for seg in res[1]][-1] == "N7 X5"  # the span's text, without the CR
+
+
+control_lines = st.sampled_from([
+    "o100 sub\nG1 X[#1 + 1] Y2\nX3\no100 endsub", "o100 call [1.5]", "o7 repeat [3]\nX[#1 + 0.5] Y1\nG0 Z2\no7 endrepeat",
+    "#1 = [#1 + 0.25]", "M73", "G1 X#<_x> F300",
+])
+
+
+def _chunked(text: str, chunk_size: int, lane: bool):
+    """Chunk lengths, segments, counts and errors with the language layer handing plain blocks to the
+    interpreter's lane (``lane``) or yielding every block."""
+    with pytest.MonkeyPatch.context() as mp:
+        if not lane:
+            mp.setattr(Interpreter, "lane_for_blocks", lambda self: None)
+        run = interpret(text, MACHINE, fast=False, chunk_size=chunk_size)
+        chunks = []
+        try:
+            for chunk in run:
+                chunks.append([(s.kind, s.start, s.end, s.block, str(s.span), s.span.text, s.feed_mm_min)
+                               for s in chunk.segments()])
+        except GcodeError as exc:
+            return chunks, [(d.code, str(d.span)) for d in exc.diagnostics]
+        return chunks, run.counts, [u.render() for u in run.unsupported]
+
+
+@settings(max_examples=150, deadline=None, derandomize=True, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.one_of(plain_lines(), expression_lines, control_lines), min_size=1, max_size=12),
+       st.sampled_from([1, 2, 3, 4096]))
+def test_blocks_handed_to_the_lane_equal_blocks_yielded(lines, chunk_size):
+    """``iter_blocks(..., lane=Interpreter.lane)`` executes plain blocks without building them: the same
+    segments in the same chunks (a full chunk is handed on after the same block), the same block
+    counts, errors and unknown reasons, in the main program, loops and subroutines."""
+    text = "G1 F500\n" + "\n".join(lines) + "\nM2\n"
+    assert _chunked(text, chunk_size, True) == _chunked(text, chunk_size, False), text
+
+
+def test_the_language_layer_offers_plain_blocks_to_a_lane_and_yields_the_rest():
+    from nczones.gcode.blocks import LANE_FULL
+
+    offered = []
+
+    def lane(letters, values, span, index):
+        offered.append((letters, values, span.line, span.text, index))
+        return {2: 1, 4: 2}.get(span.line, 0)  # take line 2; take line 4 and ask for control back
+
+    # line 3 is the first of its shape (parsed, executed by the general path), line 4 has compiled code
+    text = "G1 X1 F100\nX2\nX[1 + 2]\nX[1 + 3]\n#1 = 4\nX#1\nM2\n"
+    out = list(iter_blocks(text, lane=lane))
+    assert [b if b is LANE_FULL else (b.span.line, b.index) for b in out] == [(1, 0), (3, 2), LANE_FULL, (6, 4), (7, 5)]
+    assert offered == [("GXF", (1, 1, 100), 1, "G1 X1 F100", 0), ("X", (2,), 2, "X2", 1), ("X", (4,), 4, "X[1 + 3]", 3)]
