@@ -106,7 +106,7 @@ from .lexer import (
     scan_simple,
 )
 from .parser import OWord, ParsedLine, parse_line
-from .shapes import CompiledLine, line_shaped, parse_line_shaped
+from .shapes import LAYOUT, RUNS, CompiledLine, compiled_line, line_shaped, parse_line_shaped
 
 __all__ = [
     "iter_blocks",
@@ -411,25 +411,32 @@ class _Runner:
                     if "#" in line or "[" in line:
                         if "(" in line or ";" in line:
                             break
-                        try:
-                            parsed = line_shaped(line, lineno, file)
-                        except GcodeError:
-                            break  # the general path reports it
-                        done = None
-                        if type(parsed) is CompiledLine:
-                            done = parsed.shape.run(parsed.parts, self.params)
-                            if done is None:  # declined: the general path says why
-                                parsed = parse_line_shaped(line, lineno, file)
-                        if done is None:
-                            pending = (parsed, line, end + 1)
+                        hit = RUNS.get(line.encode().translate(LAYOUT)) if line.isascii() else None
+                        if hit is not None:  # line_shaped's first lookup, without making its CompiledLine
+                            run, cut, shape = hit
+                            parts = cut(line)
+                        else:
+                            try:
+                                parsed = line_shaped(line, lineno, file)
+                            except GcodeError:
+                                break  # the general path reports it
+                            if type(parsed) is not CompiledLine:
+                                pending = (parsed, line, end + 1)
+                                break
+                            shape, parts = parsed.shape, parsed.parts
+                            run = shape.run
+                        done = run(parts, self.params)
+                        if done is None:  # declined: the general path says why
+                            pending = (parse_line_shaped(line, lineno, file), line, end + 1)
                             break
                         number, letters, values = done
                         if letters:
                             self.started = True
                             span = make_span(file, lineno, 1, len(line) + 1, line)
                             taken = lane(letters, values, span, self.index) if lane is not None else 0
-                            if not taken:
-                                yield plain_block(letters, values, span, self.index, number, parsed)
+                            if not taken:  # words made from the line if read
+                                yield plain_block(letters, values, span, self.index, number,
+                                                  compiled_line(shape, parts))
                             self.index += 1
                             if taken == 2:
                                 pos, lineno = end + 1, lineno + 1

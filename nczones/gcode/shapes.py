@@ -37,7 +37,7 @@ from .expr import _UNSET, EvalError, _binary, _check, _pair, _q_add, _q_div, _q_
 from .lexer import _G_MACRO_CALLS, _M_CONTROL, _double, plain_decimal_value
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, ParsedLine, _Parser, parse_line
 
-__all__ = ["parse_line_shaped", "line_shaped", "CompiledLine", "MAX_SHAPES"]
+__all__ = ["parse_line_shaped", "line_shaped", "CompiledLine", "MAX_SHAPES", "RUNS", "LAYOUT", "compiled_line"]
 
 #: Shapes (and layouts) kept (a table is emptied when full: memory does not grow with the program).
 MAX_SHAPES = 4096
@@ -45,6 +45,12 @@ _LITERAL = re.compile(r"([0-9]+\.?[0-9]*)")  # the parser's number without what 
 _SHAPES: dict[str, object] = {}
 _LAYOUTS: dict[bytes, tuple] = {}  # the line with its digits made 0 -> (its shape, its literal cutter)
 _ZERO_DIGITS = bytes.maketrans(b"123456789", b"000000000")
+#: ``line.encode().translate(LAYOUT)``: the *layout* of an ASCII line (its digits made ``0``).
+LAYOUT = _ZERO_DIGITS
+#: The layouts whose shape has compiled code: layout -> ``(run, cut, shape)``; for a line of the
+#: layout (no comment), ``run(cut(line), params)`` is what :class:`CompiledLine` documents, and
+#: ``compiled_line(shape, cut(line))`` the line :func:`line_shaped` returns.  For the runner's loop.
+RUNS: dict[bytes, tuple] = {}
 _NO_SHAPE = object()  # parse lines of this shape afresh
 _PREFIXES = frozenset(("+", "-", ".", "+.", "-."))  # what a number may have before its first digit
 
@@ -73,20 +79,22 @@ def line_shaped(line: str, lineno: int, file: str) -> ParsedLine | CompiledLine:
     ('ParsedLine', 'CompiledLine')
     """
     if "(" not in line and ";" not in line and line.isascii():  # _shaped's first lookup, for the usual case
-        hit = _LAYOUTS.get(line.encode().translate(_ZERO_DIGITS))
-        if hit is not None and hit[0] is not _NO_SHAPE and hit[0].run is not None:
-            c = _new(CompiledLine)
-            c.shape = hit[0]
-            c.parts = hit[1](line)
-            return c
+        hit = RUNS.get(line.encode().translate(_ZERO_DIGITS))
+        if hit is not None:
+            return compiled_line(hit[2], hit[1](line))
     shape, literals = _shaped(line, lineno, file)
     if literals is None:
         return shape
     if shape.run is None:
         return shape.rebuild(literals, line)
+    return compiled_line(shape, literals)
+
+
+def compiled_line(shape, parts: tuple) -> CompiledLine:
+    """The :class:`CompiledLine` of a line of ``shape`` whose literals are ``parts``."""
     c = _new(CompiledLine)
     c.shape = shape
-    c.parts = literals
+    c.parts = parts
     return c
 
 
@@ -94,6 +102,7 @@ def clear() -> None:
     """Forget every shape and layout (the next line of each shape is parsed afresh)."""
     _SHAPES.clear()
     _LAYOUTS.clear()
+    RUNS.clear()
 
 
 def _shaped(line: str, lineno: int, file: str) -> tuple:
@@ -124,7 +133,10 @@ def _shaped(line: str, lineno: int, file: str) -> tuple:
         shape = _SHAPES[key] = _compile(line, parts, pl)
     if len(_LAYOUTS) >= MAX_SHAPES:
         _LAYOUTS.clear()
-    _LAYOUTS[layout] = (shape, _cutter(parts))
+        RUNS.clear()
+    cut = _LAYOUTS[layout] = (shape, _cutter(parts))
+    if shape is not _NO_SHAPE and shape.run is not None:
+        RUNS[layout] = (shape.run, cut[1], shape)
     if pl is not None:
         return pl, None
     if shape is _NO_SHAPE:
@@ -326,7 +338,7 @@ def _executor(spans, pl: ParsedLine, leaf_of: dict[int, str], at, number_src: st
             src = leaf_of.get(id(tree))
             if src is None:
                 raise _Unshaped
-            body.append(f"v{k} = _dec({src})")
+            body.append(f"v{k} = {_exact(src)}")
         else:
             d, q, lazy = em.value(tree, body)
             if lazy:
@@ -361,12 +373,12 @@ def _executor(spans, pl: ParsedLine, leaf_of: dict[int, str], at, number_src: st
         lines += ["    try:"] + [f"        {b}" for b in body] + ["    except EvalError:", "        return None"]
     if writes:
         lines += ["    write = params.write"] + [f"    {w}" for w in writes]
-    number = "None" if number_src is None else f"_dec({number_src})"
+    number = "None" if number_src is None else _exact(number_src)
     lines.append(f"    return {number}, {letters!r}, ({values})")
     lines += ["def columns(P, line):", "    D = [0]"]
     lines += [f"    D.append(D[-1] + len(P[{k}]) - {b - a})" for k, (a, b) in enumerate(spans)]
     lines.append(f"    return [{''.join(c + ', ' for c in columns)}]")
-    scope = {"_dec": _decimal, "_double": _double, "_STOP_M": _M_CONTROL, "_G_MACRO_CALLS": _G_MACRO_CALLS,
+    scope = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "_double": _double, "_STOP_M": _M_CONTROL, "_G_MACRO_CALLS": _G_MACRO_CALLS,
              "EvalError": EvalError, "_UNSET": _UNSET, "_pair": _pair, "_binary": _binary, "_unary": _unary,
              "_q_add": _q_add, "_q_sub": _q_sub, "_q_mul": _q_mul, "_q_div": _q_div, "_atan": _atan,
              "_IDX": _IDX, "_index": _index}
@@ -391,6 +403,13 @@ def _index(text: str) -> int:
     if len(_IDX) < 10_000:
         _IDX[text] = i
     return i
+
+
+def _exact(src: str) -> str:
+    """Source of :func:`_decimal` of the literal ``src`` (``P[k]`` inlined: one call less per literal)."""
+    if re.fullmatch(r"P\[\d+\]", src):
+        return f"(_pdv({src}) if len({src}) < 5 else _dun({src}))"
+    return f"_dec({src})"
 
 
 def _decimal(text: str):
@@ -424,7 +443,7 @@ class _Emit:
             if src is None:
                 raise _Unshaped
             out.append(f"{d} = float({src})")
-            return d, f"_dec({src})", True
+            return d, _exact(src), True
         if tag == PAR:
             index = node[1]
             src = self.leaf_of.get(id(index)) if index[0] == NUM else None
