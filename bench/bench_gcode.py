@@ -6,7 +6,8 @@
 Prints, each case measured in fresh processes (``--runs``, default 3; the
 run with the least CPU time is shown): interpreted lines/s and
 segments/s (wall clock and CPU), the share of lines the vectorized fast
-path took, and the peak resident memory, for
+path took, and the peak resident memory (the clock starts once the G-code
+modules are imported; their import time is printed on its own), for
 
 * ``stellabee1.ngc`` from the corpus, fast path and full interpreter;
 * a generated CAM-style program (G0/G1/G2 with modal words) of ``--small``
@@ -145,6 +146,15 @@ def case(path: str, fast: bool, limit: int | None, executed: int = 0) -> None:
     ``executed``: the lines the language layer executes (counted by the parent process, so that
     nothing here is warmed up before the clock starts); default the program's lines.
     """
+    import importlib
+    import time
+
+    t0 = time.process_time()
+    # nczones.gcode and the modules interpret() imports on first use: compiling and running them is a
+    # one-time cost per process (26-50 ms more where bytecode is not cached), reported on its own
+    for module in ("nczones.gcode", "nczones.gcode.program", "nczones.gcode.fastpath", "nczones.gcode.cylindrical"):
+        importlib.import_module(module)
+    import_s = time.process_time() - t0
     from nczones.gcode import interpret
 
     p = Path(path)
@@ -158,7 +168,8 @@ def case(path: str, fast: bool, limit: int | None, executed: int = 0) -> None:
     with Clock() as c:
         run = interpret(src, MACHINE, fast=fast, arc_tolerance="0.1")
         segs = sum(len(ch) for ch in run)
-    emit({"lines": lines, "segments": segs, "wall": c.wall, "cpu": c.cpu, "fast_lines": run.fast_lines})
+    emit({"lines": lines, "segments": segs, "wall": c.wall, "cpu": c.cpu, "fast_lines": run.fast_lines,
+          "import_cpu": import_s})
 
 
 def main() -> None:
@@ -238,6 +249,10 @@ def main() -> None:
     if STELLABEE.is_file():
         f, n = by["stellabee1.ngc, fast path"], by["stellabee1.ngc, full interpreter (naive)"]
         print(f"fast path vs full interpreter on stellabee1.ngc (CPU): {n['cpu'] / f['cpu']:.0f}x")
+    imports = [r["import_cpu"] for _name, r in rows]
+    print(f"not in the figures above: importing the G-code modules, once per process, "
+          f"{min(imports) * 1000:.0f}-{max(imports) * 1000:.0f} ms CPU (nczones.gcode and what interpret() imports "
+          f"on first use; more where Python does not cache bytecode)")
     sm = by[f"generated CAM {a.small:,} lines, fast path"]
     print(f"peak RSS {sm['peak_rss_mib']:.0f} MiB at {a.small:,} lines, {fast['peak_rss_mib']:.0f} MiB at "
           f"{a.lines:,} lines (the program text itself is held: about 1 byte per character)")

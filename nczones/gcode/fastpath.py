@@ -321,13 +321,15 @@ def _m98_m99_raw(src: str) -> bool:
     >>> _m98_m99_raw("G1 X1 M3\\nM 9 8 P1\\n"), _m98_m99_raw("M3 S100\\nm#1\\n"), _m98_m99_raw("G1 M3 M5\\n")
     (True, True, False)
     """
-    if (src.count("M") + src.count("m")) * 64 > len(src):
-        return _M98_M99_RAW.search(src) is not None
+    budget = len(src) >> 6  # Ms tried before the search is cheaper
     for ch in "Mm":
         p = src.find(ch)
         while p >= 0:
             if _M98_M99_RAW.match(src, p) is not None:
                 return True
+            budget -= 1
+            if budget < 0:
+                return _M98_M99_RAW.search(src) is not None
             p = src.find(ch, p + 1)
     return False
 

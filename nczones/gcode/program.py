@@ -485,6 +485,11 @@ class _Runner:
                     except GcodeError as e:
                         raise self.syntax_error(e, nxt, lineno) from None
                 if len(self.frames) > 1 or self.frames[0].loops:
+                    if type(parsed) is ParsedLine and parsed.oword is None and not parsed.comments:
+                        # the first line of its shape is parsed; run again, it is one of the shape's lines
+                        again = line_shaped(line, lineno, file)
+                        if type(again) is CompiledLine:
+                            parsed = again
                     if len(cache) < 200_000:
                         cache[pos] = (parsed, line, nxt)  # lines run again in loops and subroutines
             if type(parsed) is CompiledLine:

@@ -188,8 +188,8 @@ def test_a_compiled_line_starts_the_program_for_percent(monkeypatch, before):
     assert out[0] == out[1] == [(Fraction(1), Fraction(2))]
 
 
-def test_most_lines_of_a_repeated_shape_take_the_compiled_code(monkeypatch):
-    """The differential tests above compare something: the compiled code runs, and declines what it must."""
+def _counting_runs(monkeypatch) -> list:
+    """Make compiled code note each run (True: done, False: declined) in the list returned."""
     calls = []
     real = shapes._executor
 
@@ -204,12 +204,31 @@ def test_most_lines_of_a_repeated_shape_take_the_compiled_code(monkeypatch):
 
     monkeypatch.setattr(shapes, "_executor", counting)
     shapes.clear()
+    return calls
+
+
+def test_most_lines_of_a_repeated_shape_take_the_compiled_code(monkeypatch):
+    """The differential tests above compare something: the compiled code runs, and declines what it must."""
+    calls = _counting_runs(monkeypatch)
     text = "#1 = 0.5\n" + "".join(f"G1 X[#1 + {k}.5] Y[1 / [#1 - 0.{k}]]\n" for k in range(1, 10))
     with pytest.raises(NczonesError, match="divide by zero") as exc:
         list(iter_blocks(text, "t.ngc"))
     shapes.clear()
     assert "t.ngc:6:" in str(exc.value)  # line 6: 0.5 - 0.5; the general path reports it
     assert calls == [True] * 3 + [False]  # the first line of a shape is parsed
+
+
+def test_lines_run_again_in_loops_and_subroutines_take_the_compiled_code_every_time(monkeypatch):
+    """A line the runner keeps for loops and subroutines is kept as its shape's compiled line, even
+    the first line of the shape (parsed on its first reading): every run of it takes the compiled code."""
+    calls = _counting_runs(monkeypatch)
+    text = ("o1 sub\nG1 X[#1 * 2] Y[#2 + 0.5]\no1 endsub\n#2 = 1\n"
+            "o2 repeat [4]\n#1 = [#1 + 1.5]\nG1 X[#1 + 0.25] F100\no1 call [#1]\no2 endrepeat\nM2\n")
+    values = [b.values for b in iter_blocks(text, "t.ngc")]
+    shapes.clear()
+    assert calls == [True] * 12  # 4 iterations of two loop lines and the subroutine's line
+    # in the subroutine #2 is its own, unset argument: 0
+    assert values[:4] == [(1, Fraction(7, 4), 100), (1, 3, Fraction(1, 2)), (1, Fraction(13, 4), 100), (1, 6, Fraction(1, 2))]
 
 
 def test_a_shadow_is_kept_where_the_double_agrees_and_dropped_where_it_does_not(monkeypatch):
