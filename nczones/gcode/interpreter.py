@@ -374,6 +374,7 @@ class Interpreter:
         self._out: list[Segment] = []
         self._plans: dict = {}  # letters of a PlainBlock -> how the plain lane reads it (_plain_plan)
         self._index = 0  # the index of the block being executed
+        self._declined = -1  # the index of the last block lane() declined
         self._span: SourceSpan | None = None
         # the state every block reads, as instance attributes (reading a class default is slower)
         self._machine_at = self._u = self._u_next = self._spline = self._cycle_il = self._last_cycle = None
@@ -623,7 +624,7 @@ class Interpreter:
             try:
                 if inline and type(block) is PlainBlock and not self._m73:
                     # execute() inlined (subclasses that wrap execute() go through it)
-                    if not self._plain(block.letters, block.values):
+                    if block.index == self._declined or not self._plain(block.letters, block.values):
                         self._execute_general(block)
                 else:
                     self.execute(block)
@@ -911,6 +912,7 @@ class Interpreter:
         self.blocks += 1
         if not self._plain(letters, values):
             self.blocks -= 1
+            self._declined = index  # run() then takes the block to the general path at once
             return 0
         return 2 if len(self._out) >= self.chunk_size else 1
 
