@@ -53,6 +53,10 @@ block k, so:
 
 Values set by the interpreter may be Fraction/int (exact) or float.
 
+The same order holds for blocks handed to a ``lane`` (``iter_blocks(...,
+lane=interpreter.lane)``): the interpreter executes a plain block there and
+then, before the next line is read; only the Block object is never built.
+
 Errors and the unsupported mechanism
 ------------------------------------
 * Bad text raises :class:`~nczones.errors.GcodeError` (an ``InputError``)
