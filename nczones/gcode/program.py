@@ -434,38 +434,27 @@ class _Runner:
                             pending = (parse_line_shaped(line, lineno, file), line, end + 1)
                             break
                         number, letters, values = done
-                        if letters:
-                            self.started = True
-                            span = make_span(file, lineno, 1, len(line) + 1, line)
-                            taken = lane(letters, values, span, self.index) if lane is not None else 0
-                            if not taken:  # words made from the line if read
-                                yield plain_block(letters, values, span, self.index, number,
-                                                  compiled_line(shape, parts))
-                            self.index += 1
-                            if taken == 2:
-                                pos, lineno = end + 1, lineno + 1
-                                yield LANE_FULL
-                                continue
-                        pos, lineno = end + 1, lineno + 1
-                        continue
-                    parsed = scan_plain(line)
-                    if parsed is None:
-                        break
-                    delete, number, letters, values = parsed
-                    if letters and not (delete and delete_on):
-                        if plain_control(letters, values):
+                    else:
+                        parsed = scan_plain(line)
+                        if parsed is None:
                             break
+                        delete, number, letters, values = parsed
+                        if delete and delete_on:
+                            letters = ""
+                        elif letters and plain_control(letters, values):
+                            break
+                        shape = None
+                    pos, lineno0, lineno = end + 1, lineno, lineno + 1
+                    if letters:
                         self.started = True
-                        span = make_span(file, lineno, 1, len(line) + 1, line)
+                        span = make_span(file, lineno0, 1, len(line) + 1, line)
                         taken = lane(letters, values, span, self.index) if lane is not None else 0
-                        if not taken:
-                            yield plain_block(letters, values, span, self.index, number)
+                        if not taken:  # a compiled line's words are made from the line only if read
+                            yield plain_block(letters, values, span, self.index, number,
+                                              None if shape is None else compiled_line(shape, parts))
                         self.index += 1
                         if taken == 2:
-                            pos, lineno = end + 1, lineno + 1
                             yield LANE_FULL
-                            continue
-                    pos, lineno = end + 1, lineno + 1
                 if fast and pos in fast and pos != declined:
                     continue
             hit = cache.get(pos) if cache else None
@@ -496,41 +485,38 @@ class _Runner:
                             parsed = again
                     if len(cache) < 200_000:
                         cache[pos] = (parsed, line, nxt)  # lines run again in loops and subroutines
+            hand_on = False  # a block for the plain lane: (number, letters, values), words made if read
             if type(parsed) is CompiledLine:
                 done = parsed.shape.run(parsed.parts, self.params)
-                if done is not None:
+                if done is None:
+                    parsed = parse_line_shaped(line, lineno, file)  # the general path says why it declined
+                else:
                     number, letters, values = done
-                    pos, lineno0, lineno = nxt, lineno, lineno + 1
-                    if letters:
-                        self.started = True
-                        span = make_span(file, lineno0, 1, len(line) + 1, line)
-                        taken = lane(letters, values, span, self.index) if lane is not None else 0
-                        if not taken:
-                            yield plain_block(letters, values, span, self.index, number, parsed)  # words made if read
-                        self.index += 1
-                        if taken == 2:
-                            yield LANE_FULL
-                    continue
-                parsed = parse_line_shaped(line, lineno, file)  # the general path says why it declined
-            if type(parsed) is tuple and len(parsed) == 4 and type(parsed[2]) is str:
-                # plainest path: (delete, number, letters, values); words made only when read
+                    words = parsed
+                    hand_on = True
+            elif type(parsed) is tuple and len(parsed) == 4 and type(parsed[2]) is str:
+                # plainest path: (delete, number, letters, values)
                 delete, number, letters, values = parsed
                 if delete and self.block_delete:
                     pos, lineno = nxt, lineno + 1
                     continue
-                if not plain_control(letters, values):
-                    pos, lineno0, lineno = nxt, lineno, lineno + 1
-                    if letters:
-                        self.started = True
-                        span = make_span(file, lineno0, 1, len(line) + 1, line)
-                        taken = lane(letters, values, span, self.index) if lane is not None else 0
-                        if not taken:
-                            yield plain_block(letters, values, span, self.index, number)
-                        self.index += 1
-                        if taken == 2:
-                            yield LANE_FULL
-                    continue
-                parsed = scan_simple(line, lineno, file)  # M98/M99/M2/M30/G65...: the general path below
+                if plain_control(letters, values):
+                    parsed = scan_simple(line, lineno, file)  # M98/M99/M2/M30/G65...: the general path below
+                else:
+                    words = None
+                    hand_on = True
+            if hand_on:
+                pos, lineno0, lineno = nxt, lineno, lineno + 1
+                if letters:
+                    self.started = True
+                    span = make_span(file, lineno0, 1, len(line) + 1, line)
+                    taken = lane(letters, values, span, self.index) if lane is not None else 0
+                    if not taken:
+                        yield plain_block(letters, values, span, self.index, number, words)
+                    self.index += 1
+                    if taken == 2:
+                        yield LANE_FULL
+                continue
             if type(parsed) is tuple:
                 # fast path: (delete, number, words, comments)
                 delete, number, words, comments = parsed
