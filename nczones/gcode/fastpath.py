@@ -276,7 +276,7 @@ def _prepare(blk: bytes, it):
     path takes as well.
     """
     if not _may_have_long_run(blk):
-        starts, ends_ = _line_bounds(np.frombuffer(blk, dtype=np.uint8))
+        starts, ends_ = _line_bounds(np.flatnonzero(np.frombuffer(blk, dtype=np.uint8) == _NL), len(blk))
         return None, starts, ends_, None, [], {}
     simple, starts, ends_, code = _classify(blk, it)
     nlines = len(starts)
@@ -558,12 +558,12 @@ def _may_have_long_run(data: bytes) -> bool:
     return bool(gaps.max() >= MIN_RUN)
 
 
-def _line_bounds(b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Byte offsets of each line's first byte and of its end (its newline, or the end of ``b``)."""
-    nl = np.flatnonzero(b == _NL)
+def _line_bounds(nl: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """Byte offsets of each line's first byte and of its end (its newline, or ``size``), from the
+    offsets ``nl`` of the newlines in ``size`` bytes."""
     starts = np.concatenate(([0], nl + 1))
-    ends_ = np.concatenate((nl, [b.size]))
-    if starts[-1] >= b.size:
+    ends_ = np.concatenate((nl, [size]))
+    if starts[-1] >= size:
         starts, ends_ = starts[:-1], ends_[:-1]
     return starts, ends_
 
@@ -577,7 +577,7 @@ def _classify(data: bytes, it):
     """
     b = np.frombuffer(data, dtype=np.uint8)
     nl = np.flatnonzero(b == _NL)
-    starts, ends_ = _line_bounds(b)
+    starts, ends_ = _line_bounds(nl, b.size)
     nlines = len(starts)
     bad = np.zeros(nlines, dtype=bool)
     if b.size == 0:

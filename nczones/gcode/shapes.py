@@ -134,9 +134,10 @@ def _shaped(line: str, lineno: int, file: str) -> tuple:
     if len(_LAYOUTS) >= MAX_SHAPES:
         _LAYOUTS.clear()
         RUNS.clear()
-    cut = _LAYOUTS[layout] = (shape, _cutter(parts))
+    cut = _cutter(parts)
+    _LAYOUTS[layout] = (shape, cut)
     if shape is not _NO_SHAPE and shape.run is not None:
-        RUNS[layout] = (shape.run, cut[1], shape)
+        RUNS[layout] = (shape.run, cut, shape)
     if pl is not None:
         return pl, None
     if shape is _NO_SHAPE:
@@ -378,8 +379,8 @@ def _executor(spans, pl: ParsedLine, leaf_of: dict[int, str], at, number_src: st
     lines += ["def columns(P, line):", "    D = [0]"]
     lines += [f"    D.append(D[-1] + len(P[{k}]) - {b - a})" for k, (a, b) in enumerate(spans)]
     lines.append(f"    return [{''.join(c + ', ' for c in columns)}]")
-    scope = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "_double": _double, "_STOP_M": _M_CONTROL, "_G_MACRO_CALLS": _G_MACRO_CALLS,
-             "EvalError": EvalError, "_UNSET": _UNSET, "_pair": _pair, "_binary": _binary, "_unary": _unary,
+    scope = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "_double": _double,
+             "_STOP_M": _M_CONTROL, "_G_MACRO_CALLS": _G_MACRO_CALLS, "EvalError": EvalError, "_UNSET": _UNSET, "_pair": _pair, "_binary": _binary, "_unary": _unary,
              "_q_add": _q_add, "_q_sub": _q_sub, "_q_mul": _q_mul, "_q_div": _q_div, "_atan": _atan,
              "_IDX": _IDX, "_index": _index}
     exec(compile("\n".join(lines) + "\n", "<line shape run>", "exec"), scope)  # noqa: S102  # reprs only
@@ -406,7 +407,8 @@ def _index(text: str) -> int:
 
 
 def _exact(src: str) -> str:
-    """Source of :func:`_decimal` of the literal ``src`` (``P[k]`` inlined: one call less per literal)."""
+    """Source of :func:`_decimal` of the literal ``src``, its body inlined for a plain ``P[k]`` (one call
+    less per literal)."""
     if re.fullmatch(r"P\[\d+\]", src):
         return f"(_pdv({src}) if len({src}) < 5 else _dun({src}))"
     return f"_dec({src})"
