@@ -145,7 +145,8 @@ def _load_optional_registrars() -> None:
     """Import the stages that add subcommands (each appends to REGISTRARS)."""
     import importlib
 
-    for module in ("nczones.prover.command", "nczones.controller.command", "nczones.controller.homing_command", "nczones.report.command"):
+    for module in ("nczones.prover.command", "nczones.controller.command", "nczones.controller.homing_command",
+                   "nczones.report.command", "nczones.imports.command"):
         try:
             importlib.import_module(module)
         except ModuleNotFoundError as exc:

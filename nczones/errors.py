@@ -2,11 +2,17 @@
 
 Every exception the package raises on purpose derives from
 :class:`NczonesError`.  Problems in user input (G-code text, machine files,
-command-line arguments) are :class:`InputError`; they carry one or more
-:class:`Diagnostic` values, each with a stable code (``GC1xx`` lexical G-code,
-``GC2xx`` block/modal G-code, ``GC3xx`` interpretation, ``ZN1xx`` machine
-file), a source span when one is known, the value as written and what is
-allowed.  Input errors are collected and raised together.
+command-line arguments, controller configurations) are :class:`InputError`;
+they carry one or more :class:`Diagnostic` values, each with a stable code
+(``GC1xx`` lexical G-code, ``GC2xx`` block/modal G-code, ``GC3xx``
+interpretation, ``ZN1xx`` machine file, ``IM1xx`` a controller configuration
+read by ``nczones import-machine``), a source span when one is known, the
+value as written and what is allowed.  Input errors are collected and raised
+together.
+
+Notes are diagnostics that stop nothing: ``IM2xx`` says what an import could
+not take into the machine file (and why), ``EX1xx`` what ``nczones
+export-zones`` could not write into a control's settings.
 
 Anything else that escapes is an internal bug and is reported as such by the
 command line.
@@ -28,6 +34,7 @@ __all__ = [
     "InputError",
     "GcodeError",
     "MachineFileError",
+    "MachineImportError",
 ]
 
 
@@ -46,6 +53,8 @@ class InternalError(NczonesError):
 class Severity(enum.Enum):
     ERROR = "error"
     WARNING = "warning"
+    #: Something left out on purpose and said so (an import's "not taken").
+    NOTE = "note"
 
 
 @dataclass(frozen=True, slots=True)
@@ -154,3 +163,7 @@ class GcodeError(InputError):
 
 class MachineFileError(InputError):
     """A bad machine file (codes ZN1xx)."""
+
+
+class MachineImportError(InputError):
+    """A controller configuration ``nczones import-machine`` cannot read (codes IM1xx)."""

@@ -1,0 +1,86 @@
+"""``nczones import-machine`` and ``nczones export-zones``.
+
+``import-machine`` exits 0 when the machine file is written (notes on what
+was not taken do not change that) and 2 on bad input.  ``export-zones`` exits
+0 when the control's settings hold the allowed set exactly, 1 when they hold
+only a larger set (something could not be written: the notes say what), and
+2 on bad input.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .. import cli
+from ..errors import InvalidArgument
+from . import KINDS, import_machine
+from .render import KIND_LABELS
+
+__all__ = ["register_import", "summary"]
+
+
+def _write(path: str, text: str) -> None:
+    try:
+        Path(path).write_text(text, encoding="utf-8")
+    except OSError as exc:
+        raise InvalidArgument(f"cannot write {path}: {exc.strerror or exc}") from None
+
+
+def summary(result, output: str | None) -> str:
+    """One line on what was imported."""
+    im = result.imported
+    m = result.machine
+    parts = [f"axes {' '.join(im.axes)}", f"{len(m.zones)} zone{'s' if len(m.zones) != 1 else ''}"]
+    if m.offsets:
+        parts.append(f"{len(m.offsets)} work offset{'s' if len(m.offsets) != 1 else ''}")
+    tools = set(m.tool_lengths) | set(m.tool_diameters)
+    if tools:
+        parts.append(f"{len(tools)} tool{'s' if len(tools) != 1 else ''}")
+    notes = len(im.notes)
+    target = f" -> {output}" if output else ""
+    return (f"{im.source}: {KIND_LABELS[im.kind]} imported as machine \"{im.name}\" ({', '.join(parts)}){target}; "
+            f"{notes} note{'s' if notes != 1 else ''} on what was not taken, rounded or assumed")
+
+
+def _run_import(args: argparse.Namespace) -> int:
+    result = import_machine(args.source, args.kind, output=args.output, parameter_file=args.parameter_file,
+                            tool_table=args.tool_table)
+    if args.output:
+        _write(args.output, result.text)
+        report = sys.stdout
+    else:
+        sys.stdout.write(result.text)
+        report = sys.stderr
+    print(summary(result, args.output), file=report)
+    for note in result.notes:
+        print(note.render(), file=report)
+    return cli.EXIT_OK
+
+
+def register_import(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "import-machine",
+        help="write a machine file from a LinuxCNC, Grbl or Fanuc configuration",
+        description="Read a controller configuration and write a commented machine file: every value names the "
+        "setting it came from, and what the machine file cannot hold is printed (and written at the end of the "
+        "file) with its source line. Exit 0 when the file is written, 2 on bad input.",
+    )
+    p.add_argument("source", metavar="SOURCE",
+                   help="a LinuxCNC INI file, a Grbl $$ settings dump or a Fanuc parameter listing")
+    p.add_argument("--kind", choices=KINDS,
+                   help="what SOURCE is (default: detected from its content; an error when it cannot be told)")
+    p.add_argument("-o", "--output", metavar="M.toml",
+                   help="write the machine file here and the notes to standard output (default: the machine file "
+                   "to standard output, the notes to standard error)")
+    p.add_argument("--parameter-file", metavar="VAR",
+                   help="LinuxCNC: read work offsets and the G28 position from this .var file instead of the one "
+                   "[RS274NGC] PARAMETER_FILE names")
+    p.add_argument("--tool-table", metavar="TBL",
+                   help="LinuxCNC: read tool lengths and diameters from this .tbl file instead of the one "
+                   "[EMCIO] TOOL_TABLE names")
+    p.set_defaults(handler=_run_import)
+
+
+cli.REGISTRARS.append(register_import)

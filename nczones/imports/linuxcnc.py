@@ -1,0 +1,679 @@
+"""LinuxCNC: the INI file, its parameter file (``.var``) and its tool table (``.tbl``).
+
+What is read and what it becomes is listed in ``specs/machine-import.md``; in
+short: ``[TRAJ]`` gives the axes and units, ``[AXIS_<L>]`` and (for identity
+kinematics) ``[JOINT_<n>]`` the soft limits, rapid rates and home positions,
+``[EMCMOT] SERVO_PERIOD`` the monitor period, ``[RS274NGC]`` the start-up
+modal state and the parameter file (work offsets, the G28 position),
+``[EMCIO] TOOL_TABLE`` the tool lengths and diameters.  Every length is
+converted from the machine units (``LINEAR_UNITS``) to mm exactly.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+
+from ..errors import SourceSpan
+from ..exact import MAX_ABS_LENGTH, format_decimal
+from ..machine import DEFAULT_MODAL, ROTARY_AXES, WORK_OFFSETS
+from .ini import IniEntry, IniFile, parse_ini
+from .model import (
+    INCH,
+    Collector,
+    HomingDraft,
+    ImportedMachine,
+    Sourced,
+    ZoneDraft,
+    frozen,
+    in_range,
+    line_span,
+    read_source,
+    rounded_decimal,
+)
+
+__all__ = ["read_linuxcnc", "LETTERS", "MODAL_GROUPS"]
+
+#: LinuxCNC's axis letters in the order of its parameters (#5221 X .. #5229 W).
+LETTERS = "XYZABCUVW"
+
+_LINEAR_UNITS = {"mm": (Fraction(1), "mm"), "metric": (Fraction(1), "mm"),
+                 "in": (INCH, "in"), "inch": (INCH, "in"), "imperial": (INCH, "in")}
+_ANGULAR_UNITS = {"deg": Fraction(1), "degree": Fraction(1), "grad": Fraction(9, 10), "gon": Fraction(9, 10),
+                  "rad": None, "radian": None}
+_IDENTITY_KINS = ("trivkins", "gantrykins")
+_TRUE = ("1", "true", "yes", "on")
+_FALSE = ("0", "false", "no", "off")
+_SCALE_KEYS = ("SCALE", "STEP_SCALE", "INPUT_SCALE")
+
+#: The modal groups the machine file's ``modal`` list holds (as in nczones.machine).
+MODAL_GROUPS = {
+    "distance": ("G90", "G91"),
+    "units": ("G20", "G21"),
+    "plane": ("G17", "G18", "G19"),
+    "offset": WORK_OFFSETS,
+    "feed": ("G93", "G94", "G95"),
+    "cutter": ("G40",),
+    "tool": ("G49",),
+    "cycle": ("G80",),
+}
+
+
+@dataclass
+class _Axis:
+    letter: str
+    section: str | None = None
+    joints: list[str] = field(default_factory=list)
+
+
+class _Reader:
+    def __init__(self, ini: IniFile, c: Collector):
+        self.ini = ini
+        self.c = c
+        self.path = ini.path
+
+    # ------------------------------------------------------------------ values
+
+    def real(self, e: IniEntry, *, limit: Fraction | None = None) -> Fraction | None:
+        return self.c.real(e.value, e.describe(), e.span, limit=limit)
+
+    def boolean(self, e: IniEntry | None) -> bool:
+        if e is None:
+            return False
+        word = e.value.strip().lower()
+        if word in _TRUE:
+            return True
+        if word not in _FALSE:
+            self.c.error("IM105", f"{e.describe()}: {e.value!r} is not a yes/no value; LinuxCNC accepts "
+                         "TRUE/YES/ON/1 and FALSE/NO/OFF/0", e.span)
+        return False
+
+
+def _conversion(unit: str, per_min: bool) -> str:
+    """How a value in LinuxCNC's machine units becomes mm (deg), per minute for speeds."""
+    factor = {"in": " x 25.4", "grad": " x 0.9"}.get(unit, "")
+    if per_min:
+        return f" {unit}/s,{factor} x 60"
+    return f" {unit},{factor}" if factor else ""
+
+
+def read_linuxcnc(
+    path: str,
+    text: str,
+    c: Collector,
+    *,
+    parameter_file: str | None = None,
+    tool_table: str | None = None,
+) -> ImportedMachine:
+    """Read a LinuxCNC INI configuration (see the module docstring).
+
+    Errors go to ``c`` (``IM1xx``) and are raised together; notes (``IM2xx``)
+    are kept in the result.
+    """
+    ini = parse_ini(path, text, c)
+    c.raise_if_failed()
+    rd = _Reader(ini, c)
+
+    # units
+    lin_e = ini.get("TRAJ", "LINEAR_UNITS")
+    lin: tuple[Fraction, str] | None = None
+    if lin_e is None:
+        c.error("IM107", "[TRAJ] LINEAR_UNITS is missing; LinuxCNC needs it (mm or inch) to know what its "
+                "lengths mean, and so does the import", ini.sections.get("TRAJ"), file=path)
+    else:
+        lin = _LINEAR_UNITS.get(lin_e.value.strip().lower())
+        if lin is None:
+            c.error("IM105", f"{lin_e.describe()}: {lin_e.value!r} is not a unit LinuxCNC knows; use mm, metric, "
+                    "in, inch or imperial", lin_e.span)
+
+    # axes
+    coord_e = ini.get("TRAJ", "COORDINATES")
+    if coord_e is None:
+        letters = "XYZ"
+        axes_how = "no [TRAJ] COORDINATES: LinuxCNC's default X Y Z"
+    else:
+        letters = ""
+        ignored = ""
+        for ch in coord_e.value.upper():
+            if ch in LETTERS:
+                if ch not in letters:
+                    letters += ch
+            elif not ch.isspace():
+                ignored += ch
+        axes_how = f"{coord_e.describe()} ({coord_e.where()})"
+        if ignored:
+            c.note("IM201", f"{coord_e.describe()}: {ignored!r} is not an axis letter; LinuxCNC ignores it too",
+                   coord_e.span)
+        if not letters:
+            c.error("IM107", f"{coord_e.describe()}: no axis letter (X Y Z A B C U V W)", coord_e.span)
+    axes = tuple(letters)
+
+    ang_e = ini.get("TRAJ", "ANGULAR_UNITS")
+    ang: Fraction | None = Fraction(1)
+    rotary = [a for a in axes if a in ROTARY_AXES]
+    if ang_e is not None:
+        word = ang_e.value.strip().lower()
+        if word not in _ANGULAR_UNITS:
+            c.error("IM105", f"{ang_e.describe()}: {ang_e.value!r} is not a unit LinuxCNC knows; use deg, degree, "
+                    "grad, gon, rad or radian", ang_e.span)
+        else:
+            ang = _ANGULAR_UNITS[word]
+            if ang is None and rotary:
+                c.error("IM106", f"{ang_e.describe()}: the machine file measures rotary axes in degrees, and a "
+                        "radian is not a finite decimal number of degrees (180/pi); set ANGULAR_UNITS = degree "
+                        "and convert the rotary settings", ang_e.span)
+    elif rotary:
+        c.error("IM107", f"[TRAJ] ANGULAR_UNITS is missing; the rotary axes {' '.join(rotary)} need it",
+                ini.sections.get("TRAJ"), file=path)
+    c.raise_if_failed()
+    assert lin is not None
+    ang_unit = "deg" if ang == 1 else "grad"
+
+    def unit_of(letter: str) -> tuple[Fraction, str]:
+        if letter in ROTARY_AXES:
+            return ang or Fraction(1), ang_unit
+        return lin
+
+    # axis and joint sections
+    old_style = any(re.fullmatch(r"AXIS_\d", s) for s in ini.sections) and not any(
+        s.startswith("JOINT_") for s in ini.sections)
+    kins_e = ini.get("KINS", "KINEMATICS")
+    kins_words = kins_e.value.split() if kins_e is not None else ["trivkins"]
+    kins = kins_words[0] if kins_words else "trivkins"
+    identity = kins in _IDENTITY_KINS
+    joint_letters = LETTERS
+    for w in kins_words[1:]:
+        if w.lower().startswith("coordinates="):
+            joint_letters = w.split("=", 1)[1].upper()
+    info: dict[str, _Axis] = {a: _Axis(a) for a in axes}
+    for a in axes:
+        if f"AXIS_{a}" in ini.sections:
+            info[a].section = f"AXIS_{a}"
+        elif old_style and f"AXIS_{LETTERS.index(a)}" in ini.sections:
+            info[a].section = f"AXIS_{LETTERS.index(a)}"
+    if old_style:
+        c.note("IM203", "[AXIS_<number>] sections (LinuxCNC 2.7 and older): read as axis "
+               "X Y Z A B C U V W by their number, each its own joint", file=path)
+    elif identity:
+        for n, letter in enumerate(joint_letters):
+            if letter in info and f"JOINT_{n}" in ini.sections:
+                info[letter].joints.append(f"JOINT_{n}")
+    else:
+        joints = sorted(s for s in ini.sections if s.startswith("JOINT_"))
+        if joints:
+            c.note("IM201", f"[KINS] KINEMATICS = {kins}: not identity kinematics, so the [JOINT_n] limits, "
+                   "speeds and home positions are in joint space, which the machine file cannot hold; only "
+                   "the [AXIS_<letter>] settings are taken", kins_e.span if kins_e is not None else None,
+                   file=path)
+
+    def axis_entry(a: str, key: str) -> IniEntry | None:
+        sec = info[a].section
+        return ini.get(sec, key) if sec else None
+
+    def joint_entries(a: str, key: str) -> list[IniEntry]:
+        return [e for s in info[a].joints if (e := ini.get(s, key)) is not None]
+
+    def homing_entry(a: str, key: str) -> IniEntry | None:
+        if old_style:
+            return axis_entry(a, key)
+        found = joint_entries(a, key)
+        return found[0] if found else None
+
+    def converted(e: IniEntry, a: str, *, per_min: bool = False) -> Sourced | None:
+        q = rd.real(e)
+        if q is None:
+            return None
+        factor, unit = unit_of(a)
+        q = q * factor * (60 if per_min else 1)
+        return Sourced(q, e.describe() + _conversion(unit, per_min), e.span)
+
+    # soft limits: the axis limits, narrowed by tighter joint limits (identity kinematics)
+    zone_min: dict[str, Sourced] = {}
+    zone_max: dict[str, Sourced] = {}
+    for a in axes:
+        for key, side, tighter in (("MIN_LIMIT", zone_min, lambda new, old: new > old),
+                                   ("MAX_LIMIT", zone_max, lambda new, old: new < old)):
+            candidates = [e for e in [axis_entry(a, key)] if e is not None] + joint_entries(a, key)
+            best: Sourced | None = None
+            for e in candidates:
+                v = converted(e, a)
+                if v is None:
+                    continue
+                if abs(v.value) > MAX_ABS_LENGTH:
+                    c.note("IM203", f"{e.describe()}: beyond the machine file's range (magnitude "
+                           f"{format_decimal(MAX_ABS_LENGTH)}), taken as no limit (LinuxCNC's own default for "
+                           "no limit is 1e99)", e.span)
+                    continue
+                if best is None or tighter(v.value, best.value):
+                    if best is not None and e.section.startswith("JOINT_"):
+                        c.note("IM203", f"{e.describe()} is tighter than the axis limit "
+                               f"{format_decimal(best.value)}; taken, since motion stops at the joint limit "
+                               "(LinuxCNC's configuration check calls this an error)", e.span)
+                    best = v
+            if best is not None:
+                side[a] = best
+        if a in zone_min and a in zone_max and zone_min[a].value > zone_max[a].value:
+            c.error("IM108", f"axis {a}: {zone_min[a].how} is greater than {zone_max[a].how}; the axis could not "
+                    "move at all", zone_min[a].span)
+    zones: tuple[ZoneDraft, ...] = ()
+    if zone_min or zone_max:
+        zones = (ZoneDraft("soft limits", False, frozen(zone_min), frozen(zone_max),
+                           ("LinuxCNC's soft limits: [AXIS_<letter>] MIN_LIMIT / MAX_LIMIT"
+                            + (" and the joint limits" if any(info[a].joints for a in axes) else "")
+                            + "; an axis without them is unlimited",)),)
+    else:
+        c.note("IM201", "no MIN_LIMIT or MAX_LIMIT on any axis: the machine file gets no zone, so every "
+               "position is allowed", file=path)
+
+    # rapid rates
+    traj_vel = ini.get("TRAJ", "MAX_LINEAR_VELOCITY") or ini.get("TRAJ", "MAX_VELOCITY")
+    rapid: dict[str, Sourced] = {}
+    for a in axes:
+        candidates: list[Sourced] = []
+        e = axis_entry(a, "MAX_VELOCITY")
+        if e is not None:
+            v = converted(e, a, per_min=True)
+            if v is not None:
+                candidates.append(v)
+        else:
+            factor, _ = unit_of(a)
+            candidates.append(Sourced(factor * 60, f"no [AXIS_{a}] MAX_VELOCITY: LinuxCNC's default of 1 unit "
+                                      "per second, x 60"))
+            c.note("IM203", f"axis {a}: no MAX_VELOCITY; LinuxCNC's default of 1 machine unit per second is taken",
+                   ini.sections.get(info[a].section or "", None), file=path)
+        for je in joint_entries(a, "MAX_VELOCITY"):
+            v = converted(je, a, per_min=True)
+            if v is not None:
+                candidates.append(v)
+        if traj_vel is not None and a not in ROTARY_AXES:
+            v = converted(traj_vel, a, per_min=True)
+            if v is not None:
+                candidates.append(v)
+        good = [v for v in candidates if v.value > 0]
+        for v in candidates:
+            if v.value <= 0:
+                c.error("IM108", f"{v.how}: a maximum velocity must be greater than 0", v.span)
+        if good:
+            best = min(good, key=lambda v: v.value)
+            if in_range(c, best.value, best.how, best.span):
+                rapid[a] = best
+
+    # home positions (where homing leaves the axis)
+    home: dict[str, Sourced] = {}
+    traj_home = ini.get("TRAJ", "HOME")
+    for a in axes:
+        if identity or old_style:
+            found = [axis_entry(a, "HOME")] if old_style else joint_entries(a, "HOME")
+            found = [e for e in found if e is not None]
+            if found:
+                v = converted(found[0], a)
+                if v is not None:
+                    home[a] = v
+                for other in found[1:]:
+                    w = converted(other, a)
+                    if v is not None and w is not None and w.value != v.value:
+                        c.note("IM201", f"{other.describe()}: differs from {found[0].describe()}; the machine "
+                               f"file has one home position per axis, {a}{format_decimal(v.value)} is taken",
+                               other.span)
+            else:
+                home[a] = Sourced(Fraction(0), f"no HOME for axis {a}: LinuxCNC's default 0")
+        else:
+            home[a] = Sourced(Fraction(0), "nontrivial kinematics: [TRAJ] HOME or 0")
+    if not identity and not old_style and traj_home is not None:
+        words = traj_home.value.split()
+        for a in axes:
+            i = LETTERS.index(a)
+            if i < len(words):
+                factor, unit = unit_of(a)
+                q = c.real(words[i], traj_home.describe(), traj_home.span)
+                if q is not None:
+                    home[a] = Sourced(q * factor, f"{traj_home.describe()}, item {i + 1}"
+                                      + _conversion(unit, False), traj_home.span)
+    for v in home.values():
+        in_range(c, v.value, v.how, v.span)
+
+    # pulse: steps (or encoder counts) per machine unit, a HAL setting by convention
+    pulse: dict[str, Sourced] = {}
+    for a in axes:
+        sections = [info[a].section] if old_style else info[a].joints
+        e = next((ini.get(s, k) for s in sections if s for k in _SCALE_KEYS if ini.get(s, k) is not None), None)
+        if e is None:
+            continue
+        q = rd.real(e)
+        if q is None:
+            continue
+        if q == 0:
+            c.note("IM201", f"{e.describe()}: a scale of 0 gives no pulse length", e.span)
+            continue
+        factor, unit = unit_of(a)
+        exact = factor / abs(q)
+        p, was_rounded = rounded_decimal(exact)
+        if p <= 0 or p > 1:
+            c.note("IM201", f"{e.describe()}: one step would be {format_decimal(exact, 12)} mm, outside the machine "
+                   "file's pulse range (0, 1]", e.span)
+            continue
+        how = f"1 / {e.describe()}" + (" per inch, x 25.4" if unit == "in" else "")
+        if was_rounded:
+            how += f"; exactly {exact.numerator}/{exact.denominator}, rounded"
+            c.note("IM202", f"{e.describe()}: the pulse length {exact.numerator}/{exact.denominator} mm is not a "
+                   f"finite decimal; written rounded to {format_decimal(p)} (the prover does not use the pulse; "
+                   "the reference controller's pulse grid differs by less than 1e-9 mm per pulse)", e.span)
+        pulse[a] = Sourced(p, how, e.span)
+    if pulse and len(pulse) < len(axes):
+        for a in axes:
+            if a not in pulse:
+                pulse[a] = Sourced(Fraction(1, 1000), "no SCALE, STEP_SCALE or INPUT_SCALE: the machine file's "
+                                   "default 0.001")
+                c.note("IM203", f"axis {a}: no SCALE, STEP_SCALE or INPUT_SCALE; the pulse is the machine file's "
+                       "default 0.001", file=path)
+
+    # the limit monitor runs every servo period
+    period: Sourced | None = None
+    sp = ini.get("EMCMOT", "SERVO_PERIOD")
+    if sp is not None:
+        q = rd.real(sp)
+        if q is not None:
+            ms = q / 1_000_000
+            if 0 < ms <= 1000:
+                period = Sourced(ms, f"{sp.describe()} ns, / 1000000", sp.span)
+            else:
+                c.note("IM201", f"{sp.describe()}: a servo period of {format_decimal(ms)} ms is outside the "
+                       "machine file's monitor period range (0, 1000] ms", sp.span)
+
+    # parameter file: work offsets, G28/G30 positions, G92 offsets, the active offset
+    params, var_path = _parameters(ini, c, parameter_file)
+
+    def param(n: int, a: str, label: str) -> Sourced:
+        value, span = params.get(n, (Fraction(0), None))
+        factor, unit = unit_of(a)
+        how = f"#{n} = {format_decimal(value)} ({label})" + _conversion(unit, False)
+        if span is None:
+            how = f"#{n} ({label}) not stored: LinuxCNC's 0"
+        return Sourced(value * factor, how, span)
+
+    offsets: dict[str, dict[str, Sourced]] = {}
+    for k, name in enumerate(WORK_OFFSETS):
+        values = {a: param(5221 + 20 * k + LETTERS.index(a), a, f"{name} {a}") for a in axes}
+        if any(v.value for v in values.values()):
+            offsets[name] = {a: v for a, v in values.items() if v.value}
+    # G28 moves to the stored G28 position (#5161..), machine zero when none is stored; homing ends at HOME
+    reference = {a: param(5161 + LETTERS.index(a), a, f"G28 position {a}") for a in axes}
+    start: dict[str, Sourced] = {}
+    if any(reference[a].value != home[a].value for a in axes):
+        start = home
+    g30 = {a: param(5181 + LETTERS.index(a), a, f"G30 position {a}") for a in axes}
+    if any(g30[a].value != reference[a].value for a in axes):
+        first = next(v for a, v in g30.items() if v.value != reference[a].value)
+        pos = " ".join(f"{a}{format_decimal(v.value)}" for a, v in g30.items())
+        c.note("IM201", f"the G30 position {pos} differs from the G28 position; the machine file has one "
+               "reference position, used by both G28 and G30, so programs with G30 are verified against "
+               "the G28 position", first.span, file=var_path)
+    persist = not rd.boolean(ini.get("RS274NGC", "DISABLE_G92_PERSISTENCE"))
+    g92 = {a: param(5211 + LETTERS.index(a), a, f"G92 {a}") for a in axes}
+    enabled = params.get(5210, (Fraction(0), None))[0] != 0
+    if persist and enabled and any(v.value for v in g92.values()):
+        first = next(v for v in g92.values() if v.value)
+        pos = " ".join(f"{a}{format_decimal(v.value)}" for a, v in g92.items() if v.value)
+        c.note("IM201", f"a G92 offset {pos} is stored and LinuxCNC restores it at start-up; the machine "
+               "file has no G92 offset, so programs that rely on it are verified without it; clear it "
+               "(G92.1) or set DISABLE_G92_PERSISTENCE", first.span, file=var_path)
+    for v in reference.values():
+        in_range(c, v.value, v.how, v.span)
+    for values in offsets.values():
+        for v in values.values():
+            in_range(c, v.value, v.how, v.span)
+
+    # modal state at start-up: machine units, the stored work offset, RS274NGC_STARTUP_CODE
+    modal = _modal(ini, c, lin[1], params)
+
+    # tool table
+    lengths, diameters = _tools(ini, c, tool_table, axes, lin)
+
+    # lathe and the settings the machine file has no place for
+    lathe = ini.get("DISPLAY", "LATHE")
+    if lathe is not None and rd.boolean(lathe):
+        c.note("IM201", f"{lathe.describe()}: a lathe. LinuxCNC reads X words as radius unless a program (or "
+               "RS274NGC_STARTUP_CODE) selects G7 diameter mode; diameter axes have no place in the machine file "
+               "yet, so X is taken as a radius axis", lathe.span)
+    for a in axes:
+        wr = axis_entry(a, "WRAPPED_ROTARY")
+        if wr is not None and rd.boolean(wr):
+            c.note("IM201", f"{wr.describe()}: a wrapped rotary axis (0-360 degrees, moves the short way); the "
+                   "machine file's rotary axes do not wrap", wr.span)
+
+    homing = _homing(info, axes, old_style, identity, homing_entry, converted, c)
+
+    name_e = ini.get("EMC", "MACHINE")
+    name = name_e.value if name_e is not None and name_e.value else Path(path).stem
+    c.raise_if_failed()
+    return ImportedMachine(
+        kind="linuxcnc",
+        source=path,
+        name=name,
+        name_how=f"{name_e.describe()} ({name_e.where()})" if name_e is not None else "the file name",
+        axes=axes,
+        axes_how=axes_how,
+        rapid=frozen(rapid),
+        reference=frozen(reference),
+        start=frozen(start),
+        pulse=frozen(pulse),
+        rapid_mode=("linear", "LinuxCNC moves G0 on a straight line"),
+        monitor_period_ms=period,
+        modal=modal,
+        extra=(("cutter_compensation", '"linuxcnc"', "G41/G42 as LinuxCNC's interpreter does them"),),
+        offsets=frozen({k: frozen(v) for k, v in offsets.items()}),
+        tool_lengths=frozen(lengths),
+        tool_diameters=frozen(diameters),
+        zones=zones,
+        homing=homing,
+        notes=tuple(c.notes),
+    )
+
+
+def _parameters(ini: IniFile, c: Collector, override: str | None) -> tuple[dict[int, tuple[Fraction, SourceSpan]], str]:
+    """The parameter file's values by number; empty (with a note) when there is no file."""
+    base = Path(ini.path).parent
+    if override is not None:
+        target = Path(override)
+        origin = "--parameter-file"
+    else:
+        e = ini.get("RS274NGC", "PARAMETER_FILE")
+        if e is None:
+            target = base / "rs274ngc.var"
+            origin = "LinuxCNC's default rs274ngc.var (no [RS274NGC] PARAMETER_FILE)"
+        else:
+            target = base / e.value
+            origin = e.describe()
+        if not target.exists():
+            c.note("IM203", f"{origin}: {target} does not exist; LinuxCNC then starts with every parameter 0: "
+                   "no work offsets, and G28 goes to machine zero", e.span if e is not None else None,
+                   file=ini.path)
+            return {}, str(target)
+    text = read_source(target, "parameter file", "IM109")
+    vpath = str(target)
+    out: dict[int, tuple[Fraction, SourceSpan]] = {}
+    last = 0
+    for i, line in enumerate(text.split("\n"), 1):
+        stripped = line.strip()
+        if not stripped:
+            continue
+        m = re.fullmatch(r"(\d+)\s+(\S+)", stripped)
+        span = line_span(vpath, i, line, len(line) - len(line.lstrip()))
+        if not m:
+            c.error("IM102", f"malformed parameter line {stripped!r}: expected a parameter number and a value, "
+                    "such as 5221 10.5", span)
+            continue
+        n = int(m.group(1))
+        if not 0 < n < 5602:
+            c.error("IM104", f"parameter #{n} is out of range (1 to 5601)", span)
+            continue
+        if n <= last:
+            c.error("IM108", f"parameter #{n} comes after #{last}; LinuxCNC needs the parameter file in increasing "
+                    "order", span)
+            continue
+        last = n
+        q = c.real(m.group(2), f"parameter #{n}", line_span(vpath, i, line, m.start(2) + len(line) - len(line.lstrip()),
+                                                              m.end(2) + len(line) - len(line.lstrip())))
+        if q is not None:
+            out[n] = (q, span)
+    c.raise_if_failed()
+    return out, vpath
+
+
+def _modal(ini: IniFile, c: Collector, unit: str, params) -> tuple[tuple[str, str], ...]:
+    chosen: dict[str, tuple[str, str]] = {}
+    if unit == "in":
+        chosen["units"] = ("G20", "[TRAJ] LINEAR_UNITS = inch: LinuxCNC starts in the machine's units")
+    if 5220 in params:
+        value, span = params[5220]
+        index = int(value)
+        if value == index and 1 <= index <= 9 and index != 1:
+            chosen["offset"] = (WORK_OFFSETS[index - 1], f"#5220 = {index}: the work offset in use when LinuxCNC "
+                                f"stopped ({span.file}:{span.line})")
+    e = ini.get("RS274NGC", "RS274NGC_STARTUP_CODE")
+    if e is not None:
+        words = re.findall(r"([A-Za-z])\s*([-+]?\d*\.?\d*)", e.value)
+        left: list[str] = []
+        for letter, number in words:
+            word = f"{letter.upper()}{number}"
+            if letter.upper() == "G" and number:
+                try:
+                    num = Fraction(number)
+                except ValueError:
+                    left.append(word)
+                    continue
+                code = "G" + format_decimal(num)
+                group = next((g for g, codes in MODAL_GROUPS.items() if code in codes), None)
+                if group is not None:
+                    chosen[group] = (code, f"{e.describe()} ({e.where()})")
+                    continue
+            left.append(word)
+        if left:
+            c.note("IM201", f"{e.describe()}: {' '.join(left)} not taken; the machine file's modal list holds "
+                   "distance, units, plane, work offset and feed modes (and G40, G49, G80)", e.span)
+    defaults = dict(zip(MODAL_GROUPS, DEFAULT_MODAL))
+    return tuple((code, how) for group, (code, how) in chosen.items() if defaults[group] != code)
+
+
+def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ...], lin: tuple[Fraction, str]):
+    lengths: dict[int, Sourced] = {}
+    diameters: dict[int, Sourced] = {}
+    base = Path(ini.path).parent
+    db = ini.get("EMCIO", "DB_PROGRAM")
+    if override is not None:
+        target = Path(override)
+    else:
+        e = ini.get("EMCIO", "TOOL_TABLE")
+        if db is not None:
+            c.note("IM201", f"{db.describe()}: tool data from a database program are not read; no tools taken",
+                   db.span)
+            return lengths, diameters
+        if e is None:
+            return lengths, diameters
+        target = base / e.value
+        if not target.exists():
+            c.note("IM203", f"{e.describe()}: {target} does not exist; no tool lengths or diameters taken", e.span)
+            return lengths, diameters
+    text = read_source(target, "tool table", "IM109")
+    tpath = str(target)
+    factor, unit = lin
+    seen: dict[int, SourceSpan] = {}
+    for i, line in enumerate(text.split("\n"), 1):
+        body = line.rstrip("\r")
+        if body.lstrip().startswith(";") or not body.split(";")[0].strip():
+            continue
+        data = body.split(";")[0]
+        fields: dict[str, tuple[str, SourceSpan]] = {}
+        bad = None
+        for m in re.finditer(r"\S+", data):
+            token = m.group(0)
+            letter, number = token[0].upper(), token[1:]
+            pattern = r"[+-]?\d+" if letter in "TPQ" else r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
+            if letter not in "TPXYZABCUVWDIJQ" or not re.fullmatch(pattern, number):
+                bad = (token, line_span(tpath, i, body, m.start(), m.end()), letter)
+                break
+            fields[letter] = (number, line_span(tpath, i, body, m.start(), m.end()))
+        if bad is not None:
+            token, span, letter = bad
+            hint = (" (this looks like the tool table format of LinuxCNC before 2.4, which it no longer reads: "
+                    "write T<n> P<pocket> Z<length> D<diameter>)" if token[0].isdigit() or token.isalpha() else "")
+            what = f"{letter} takes a whole number" if letter in "TPQ" else (
+                "expected a letter T P X Y Z A B C U V W D I J or Q followed by a number")
+            c.error("IM102", f"malformed tool table entry {token!r}: {what}; LinuxCNC skips this line{hint}", span)
+            continue
+        if "T" not in fields:
+            c.error("IM102", "a tool table line without a T word (the tool number)", line_span(tpath, i, body))
+            continue
+        tool = int(fields["T"][0])
+        tspan = fields["T"][1]
+        if tool in seen:
+            c.error("IM108", f"tool T{tool} is listed twice (first at line {seen[tool].line}); tool numbers must be "
+                    "unique", tspan)
+            continue
+        seen[tool] = tspan
+        if not 0 <= tool <= 9999:
+            c.note("IM201", f"T{tool}: the machine file numbers tools 0 to 9999; this tool is not taken", tspan)
+            continue
+        unit_how = _conversion(unit, False)
+        if "Z" in fields and "Z" in axes:
+            number, span = fields["Z"]
+            q = c.real(number, f"T{tool} Z", span)
+            if q is not None and in_range(c, q * factor, f"T{tool} Z", span):
+                lengths[tool] = Sourced(q * factor, f"T{tool} Z{number}{unit_how}", span)
+        elif "Z" in fields:
+            c.note("IM201", f"T{tool}: a Z offset, but the machine has no Z axis to apply it to", fields["Z"][1])
+        number, span = fields.get("D", ("0", tspan))
+        q = c.real(number, f"T{tool} D", span)
+        if q is not None and in_range(c, q * factor, f"T{tool} D", span):
+            how = f"T{tool} D{number}{unit_how}" if "D" in fields else f"T{tool} has no D word: LinuxCNC's diameter 0"
+            diameters[tool] = Sourced(q * factor, how, span)
+        others = [f"{k}{fields[k][0]}" for k in "XYABCUVWIJQ" if k in fields and Fraction(fields[k][0]) != 0]
+        if others:
+            c.note("IM201", f"T{tool}: {' '.join(others)} not taken; the machine file holds a tool length on the tool "
+                   "axis and a diameter (lathe tool offsets and orientations have no place yet)", tspan)
+    c.raise_if_failed()
+    return lengths, diameters
+
+
+def _homing(info, axes, old_style, identity, homing_entry, converted, c: Collector) -> tuple[HomingDraft, ...]:
+    drafts = []
+    if not (identity or old_style):
+        return ()
+    for a in axes:
+        search = homing_entry(a, "HOME_SEARCH_VEL")
+        if search is None:
+            continue
+        sv = converted(search, a, per_min=True)
+        if sv is None or sv.value == 0:
+            continue
+        fields: list[tuple[str, Sourced | str, str]] = [
+            ("direction", '"positive"' if sv.value > 0 else '"negative"', f"the sign of {search.describe()} "
+             f"({search.where()})"),
+            ("search_speed", Sourced(abs(sv.value), sv.how, sv.span), ""),
+        ]
+        latch = homing_entry(a, "HOME_LATCH_VEL")
+        if latch is not None:
+            lv = converted(latch, a, per_min=True)
+            if lv is not None and lv.value:
+                fields.append(("latch_speed", Sourced(abs(lv.value), lv.how, lv.span), ""))
+        offset = homing_entry(a, "HOME_OFFSET")
+        index = homing_entry(a, "HOME_USE_INDEX")
+        uses_index = index is not None and index.value.strip().lower() in _TRUE
+        missing = ["dog_length", "grid_pitch", "detector_phase"]
+        if offset is not None:
+            ov = converted(offset, a)
+            if ov is not None:
+                if uses_index:
+                    fields.append(("grid_shift", Sourced(-ov.value, f"minus {ov.how}: the index pulse is at "
+                                                         "HOME_OFFSET and becomes the origin", ov.span), ""))
+                    missing.insert(0, "dog_position")
+                else:
+                    fields.append(("dog_position", Sourced(ov.value, f"{ov.how}: the home switch position", ov.span),
+                                   ""))
+        drafts.append(HomingDraft(a, tuple(fields), tuple(missing)))
+        c.note("IM201", f"axis {a} homing ({search.describe()}): not taken; the machine file's [homing.{a}] also "
+               f"needs {', '.join(missing)}, which the INI does not give (LinuxCNC homes to the switch"
+               f"{' and the index pulse' if uses_index else ''}); written commented out", search.span)
+    return tuple(drafts)

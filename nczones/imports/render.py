@@ -1,0 +1,139 @@
+"""Write an :class:`~.model.ImportedMachine` as a commented machine file (TOML).
+
+Every value carries a comment saying where it came from (``file:line`` and the
+setting as written, with the conversion applied); homing settings the machine
+file cannot take yet are written commented out; the notes (what was not
+taken, rounded or assumed) close the file.  The text is checked by
+:func:`nczones.machine.parse_machine` before anyone sees it.
+"""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+from ..exact import format_decimal
+from .model import ImportedMachine, Sourced, ZoneDraft
+
+__all__ = ["render_toml", "KIND_LABELS"]
+
+KIND_LABELS = {
+    "linuxcnc": "LinuxCNC INI configuration",
+    "grbl": "Grbl settings ($$ dump)",
+    "fanuc": "Fanuc parameter listing",
+}
+
+_WIDTH = 30
+
+
+def _s(text: str) -> str:
+    return json.dumps(text, ensure_ascii=False)
+
+
+def _q(value: Fraction) -> str:
+    return _s(format_decimal(value))
+
+
+def _clean(text: str) -> str:
+    return " ".join(text.split())
+
+
+def _line(assignment: str, comment: str = "") -> str:
+    if not comment:
+        return assignment
+    return f"{assignment:<{_WIDTH}} # {_clean(comment)}"
+
+
+def _how(v: Sourced) -> str:
+    where = v.where()
+    return f"{v.how} ({where})" if where else v.how
+
+
+def _table(out: list[str], header: str, axes: tuple[str, ...], values: dict[str, Sourced]) -> None:
+    out.append("")
+    out.append(f"[{header}]")
+    for a in axes:
+        if a in values:
+            out.append(_line(f"{a} = {_q(values[a].value)}", _how(values[a])))
+
+
+def _zone(out: list[str], axes: tuple[str, ...], z: ZoneDraft) -> None:
+    out.append("")
+    out.append("[[zones]]")
+    for c in z.comment:
+        out.append(f"# {_clean(c)}")
+    for side, values in (("min", z.min), ("max", z.max)):
+        for a in axes:
+            if a in values:
+                out.append(f"#   {side}.{a}: {_clean(_how(values[a]))}")
+    out.append(f"name = {_s(z.name)}")
+    out.append('kind = "box"')
+    if z.forbid:
+        out.append("forbid = true")
+    for side, values in (("min", z.min), ("max", z.max)):
+        items = [f"{a} = {_q(values[a].value)}" for a in axes if a in values]
+        if items:
+            out.append(f"{side} = {{ {', '.join(items)} }}")
+
+
+def render_toml(im: ImportedMachine) -> str:
+    """The machine file text (ends with a newline)."""
+    label = KIND_LABELS.get(im.kind, im.kind)
+    out = [
+        f"# Machine file imported from {im.source} ({label}) by `nczones import-machine`.",
+        "# Each value's comment names the setting it came from. The notes at the end say",
+        "# what could not be taken; read them, then check this file with `nczones check-machine`.",
+        "",
+        "[machine]",
+        _line(f"name = {_s(im.name)}", im.name_how),
+        _line(f"axes = [{', '.join(_s(a) for a in im.axes)}]", im.axes_how),
+        'units = "mm"',
+        _line(f"rapid_mode = {_s(im.rapid_mode[0])}", im.rapid_mode[1]),
+    ]
+    if im.monitor_period_ms is not None:
+        out.append(_line(f"monitor_period_ms = {_q(im.monitor_period_ms.value)}", _how(im.monitor_period_ms)))
+    if im.modal:
+        for code, how in im.modal:
+            out.append(f"#   {code}: {_clean(how)}")
+        out.append(f"modal = [{', '.join(_s(code) for code, _ in im.modal)}]")
+    for key, value, how in im.extra:
+        out.append(_line(f"{key} = {value}", how))
+    if im.pulse:
+        _table(out, "machine.pulse", im.axes, dict(im.pulse))
+    _table(out, "machine.rapid", im.axes, dict(im.rapid))
+    _table(out, "machine.reference", im.axes, dict(im.reference))
+    if im.start:
+        _table(out, "machine.start", im.axes, dict(im.start))
+    if im.offsets:
+        out.append("")
+        out.append("[offsets]")
+        for name, values in im.offsets.items():
+            for a in im.axes:
+                if a in values:
+                    out.append(f"#   {name}.{a}: {_clean(_how(values[a]))}")
+            items = ", ".join(f"{a} = {_q(values[a].value)}" for a in im.axes if a in values)
+            out.append(f"{_s(name) if '.' in name else name} = {{ {items} }}")
+    for header, prefix, values in (("tool_lengths", "H", im.tool_lengths), ("tool_diameters", "T", im.tool_diameters)):
+        if values:
+            out.append("")
+            out.append(f"[{header}]")
+            for n in sorted(values):
+                out.append(_line(f"{prefix}{n} = {_q(values[n].value)}", _how(values[n])))
+    for z in im.zones:
+        _zone(out, im.axes, z)
+    for h in im.homing:
+        out.append("")
+        out.append(f"# [homing.{h.axis}] is not written: the machine file's homing section also needs "
+                   f"{', '.join(h.missing)}, which the source does not give.")
+        out.append("# What the source says, in the section's terms (complete it and remove the '#'s to use it):")
+        out.append(f"# [homing.{h.axis}]")
+        for key, value, how in h.fields:
+            text = _q(value.value) if isinstance(value, Sourced) else value
+            comment = _how(value) if isinstance(value, Sourced) else how
+            out.append("# " + _line(f"{key} = {text}", comment))
+    if im.notes:
+        out.append("")
+        out.append("# Notes: what was not taken, rounded or assumed")
+        for n in im.notes:
+            out.append(f"#   {_clean(n.location())}: {n.code}: {_clean(n.message)}")
+    return "\n".join(out) + "\n"
