@@ -155,7 +155,7 @@ def case(path: str, fast: bool, limit: int | None, executed: int = 0) -> None:
     for module in ("nczones.gcode", "nczones.gcode.program", "nczones.gcode.fastpath", "nczones.gcode.cylindrical"):
         importlib.import_module(module)
     import_s = time.process_time() - t0
-    from nczones.gcode import interpret
+    from nczones.gcode import interpret, interpret_text
 
     p = Path(path)
     if limit:
@@ -166,7 +166,7 @@ def case(path: str, fast: bool, limit: int | None, executed: int = 0) -> None:
         src = p
         lines = executed or p.read_bytes().count(b"\n")
     with Clock() as c:
-        run = interpret(src, MACHINE, fast=fast, arc_tolerance="0.1")
+        run = (interpret_text if isinstance(src, str) else interpret)(src, MACHINE, fast=fast, arc_tolerance="0.1")
         segs = sum(len(ch) for ch in run)
     emit({"lines": lines, "segments": segs, "wall": c.wall, "cpu": c.cpu, "fast_lines": run.fast_lines,
           "import_cpu": import_s})

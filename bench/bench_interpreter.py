@@ -30,7 +30,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_gcode import expr_program, param_program  # noqa: E402  (one generator for both benchmarks)
 
-from nczones.gcode import interpret  # noqa: E402
+from nczones.gcode import interpret_text  # noqa: E402
 from nczones.gcode.program import iter_blocks  # noqa: E402
 from nczones.machine import parse_machine  # noqa: E402
 
@@ -120,7 +120,7 @@ def main() -> None:
         lines = executed_lines(text)
         blocks = sum(1 for _ in iter_blocks(text))
         lang = best(lambda text=text: sum(1 for _ in iter_blocks(text)))
-        full = best(lambda text=text: sum(len(c) for c in interpret(text, MACHINE, fast=False)))
+        full = best(lambda text=text: sum(len(c) for c in interpret_text(text, MACHINE, fast=False)))
         print(f"{name:34s} {lines:8d} {blocks:8d}   {lines / lang:22.0f}   {lines / full:24.0f} ({blocks / full:.0f})")
     print("* with interpret(fast=True) these take the vectorized fast path (bench/bench_gcode.py): "
           "shown here through the full interpreter (fast=False) for reference")

@@ -18,15 +18,15 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import z3
 from nczones import load_machine, format_decimal
-from nczones.gcode import segments
-from nczones.prover import verify
+from nczones.gcode import segments_text
+from nczones.prover import verify_text
 from nczones.report.plot import plot_machine, mark_points
 
 grinder = load_machine("../specs/machines/grinder.toml")
 examples = Path("../specs/examples/programs")
 program = (examples / "notch_dip.ngc").read_text()
 print(program)
-motion = segments(program, grinder)
+motion = segments_text(program, grinder)
 for s in motion:
     print(s.kind.name, "from", [format_decimal(c) for c in s.start], "to", [format_decimal(c) for c in s.end])"""),
 md("""## The notch-crossing line, by hand
@@ -59,7 +59,7 @@ rationals), but first tries exact integer arithmetic, which decides lines agains
 and boxes without the solver at all.
 
 ## The same program through the prover"""),
-code("""result = verify(program, grinder, file="notch_dip.ngc")
+code("""result = verify_text(program, grinder, file="notch_dip.ngc")
 print("verdict:", result.verdict.label)
 for v in result.violations:
     pt = {a: format_decimal(c) for a, c in v.point}
@@ -77,8 +77,8 @@ cannot tell them apart; the exact arc encoding (point on the circle, inside the 
 code("""fig, axes = plt.subplots(1, 2, figsize=(12, 4))
 for ax, name in zip(axes, ["arc_bulge_cw.ngc", "arc_bulge_ccw.ngc"]):
     text = (examples / name).read_text()
-    r = verify(text, grinder, file=name)
-    plot_machine(grinder, segments(text, grinder), ax=ax)
+    r = verify_text(text, grinder, file=name)
+    plot_machine(grinder, segments_text(text, grinder), ax=ax)
     mark_points([tuple(float(c) for _, c in v.point) for v in r.violations], ax)
     ax.set_title(f"{name}: {r.verdict.label}")
     ax.set_xlim(500, 900); ax.set_ylim(150, 420)
@@ -91,8 +91,8 @@ Ten incremental steps of `Y-0.1` from `Y41` land on the floor of the grinding re
 point, `0.1` is not one tenth and the sum drifts; nczones reads every decimal exactly, so the first
 program is proved safe and the second — one micron further — is not."""),
 code("""for name in ["accumulate_exact.ngc", "accumulate_past.ngc"]:
-    r = verify((examples / name).read_text(), grinder, file=name)
-    lowest = min(s.end[1] for s in segments((examples / name).read_text(), grinder))
+    r = verify_text((examples / name).read_text(), grinder, file=name)
+    lowest = min(s.end[1] for s in segments_text((examples / name).read_text(), grinder))
     print(f"{name}: lowest Y = {format_decimal(lowest)}, verdict {r.verdict.label}")
 y = 41.0
 for _ in range(10):
@@ -104,7 +104,7 @@ md("""## Exercises
    safe one, and why is it exactly the floor of the work-head region?
 2. Write an R-format version of the bulging arc (`G2 X... Y... R...`). Does its verdict change with
    the sign of R?
-3. Ask for a margin: `verify(text, grinder, margin="0.5")`. Which of the programs above stop being
+3. Ask for a margin: `verify_text(text, grinder, margin="0.5")`. Which of the programs above stop being
    safe?"""),
 ]
 nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}

@@ -16,7 +16,7 @@ code("""from fractions import Fraction as F
 from pathlib import Path
 import matplotlib.pyplot as plt
 from nczones import load_machine, parse_machine, format_decimal
-from nczones.gcode import segments
+from nczones.gcode import segments_text
 from nczones.controller import Controller, simulate, line_steps, arc_walk"""),
 md("""## Pulse distribution on a line
 
@@ -52,7 +52,7 @@ The grinder program below dips into the work-head notch. With monitoring after e
 controller stops at the first pulse outside, clears the offending direction, and raises an alarm."""),
 code("""grinder = load_machine("../specs/machines/grinder.toml")
 program = Path("../specs/examples/programs/notch_dip.ngc").read_text()
-motion = segments(program, grinder)
+motion = segments_text(program, grinder)
 ctl = Controller(grinder, monitor="pulse")
 result = ctl.run(motion)
 alarm = result.alarms[0]
@@ -73,7 +73,7 @@ rapid_into_notch = "G21 G90 G54\\nG0 X-250 Y300\\nG1 Y130 F500\\nG0 X50\\n"
 periods, overshoot_mm, bounds = [], [], []
 for period in ["1", "2", "5", "10", "20"]:
     m = parse_machine(text.replace('monitor_period_ms = "5"', f'monitor_period_ms = "{period}"'), "grinder.toml")
-    r = simulate(segments(rapid_into_notch, m), m, monitor="periodic")
+    r = simulate(segments_text(rapid_into_notch, m), m, monitor="periodic")
     a = r.alarms[0]
     past = a.position[0] - a.first_outside[0]
     periods.append(float(period)); overshoot_mm.append(float(past)); bounds.append(r.overshoot_bound_mm)

@@ -28,8 +28,8 @@ import math
 import matplotlib.pyplot as plt
 
 from nczones.machine import load_machine
-from nczones.gcode import segments
-from nczones.prover import verify
+from nczones.gcode import segments_text
+from nczones.prover import verify_text
 from nczones.controller import simulate
 from nczones.cylinder import pi_interval, degree_length, developed_arc_of
 
@@ -54,8 +54,8 @@ print("k =", float(k.mid()), "mm per degree;  123 deg =", float((k * 123).mid())
 The seven G01 points lie close to a quarter circle of radius 80 mm on the developed
 surface with its centre at (Z110, C30). With R = 37.266 mm, 123° of C are 80 mm, so
 the G07.1 program is a single `G02 Z110 C153 R80`."""),
-    new_code_cell("""segs_a = segments(seg_prog, machine)
-segs_b = segments(arc_prog, machine)
+    new_code_cell("""segs_a = segments_text(seg_prog, machine)
+segs_b = segments_text(arc_prog, machine)
 print([s.kind.name for s in segs_a])
 print([s.kind.name for s in segs_b])
 arc_seg = next(s for s in segs_b if s.kind.name == "DEVELOPED_ARC")
@@ -117,10 +117,10 @@ whole enclosure lies in the clamp. Counterexamples are given in degrees and in d
 millimetres."""),
     new_code_cell("""for m, name in ((machine, "clamp C160..200"), (near, "clamp C150..200")):
     for prog, label in ((seg_prog, "7 x G01"), (arc_prog, "G07.1 arc")):
-        r = verify(prog, m)
+        r = verify_text(prog, m)
         line = r.violations[0].line if r.violations else "-"
         print(f"{name:16s} {label:10s} {r.verdict.label:7s} first violating line {line}")
-r = verify(arc_prog, near)
+r = verify_text(arc_prog, near)
 print(r.violations[0].note)"""),
     new_markdown_cell("""## The controller: developed plane first, rotary pulses second
 
@@ -128,9 +128,9 @@ The reference controller walks the circle on a quarter-pulse developed grid and 
 each point to Z pulses and C pulses (0.001 deg). Here a short arc of the same kind, so
 that it runs in a second; the plot shows the commanded C pulses against the exact angle."""),
     new_code_cell("""short = "G0 Z30 C30\\nG7.1 C37.266\\nG2 Z32 C36 R5 F100\\nG7.1 C0\\n"
-res = simulate(segments(short, machine), machine)
+res = simulate(segments_text(short, machine), machine)
 print("alarms:", res.alarms, " end:", [str(v) for v in res.machine_position], " pulses:", res.pulses)
-a = developed_arc_of(segments(short, machine)[-1])
+a = developed_arc_of(segments_text(short, machine)[-1])
 exact = [a.point(Fraction(i, 100)) for i in range(101)]
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.plot([float(z.mid()) for z, s, c in exact], [float(c.mid()) for z, s, c in exact], label="exact path")

@@ -15,8 +15,8 @@ code("""from fractions import Fraction as F
 from pathlib import Path
 import matplotlib.pyplot as plt
 from nczones import load_machine, format_decimal
-from nczones.gcode import segments
-from nczones.prover import verify
+from nczones.gcode import segments_text
+from nczones.prover import verify_text
 from nczones.report.plot import plot_machine, mark_points
 
 mill = load_machine("../specs/machines/mill.toml")
@@ -38,11 +38,11 @@ M30
 '''
 clearance = (F(-5) + g54[0]) - vise.bounds()["X"][1]
 print(f"the pass along the vise runs {format_decimal(clearance)} mm from its face at nominal G54")"""),
-code("""nominal = verify(program, mill)
+code("""nominal = verify_text(program, mill)
 print("nominal offset:", nominal.verdict.label)
-two = verify(program, mill, params=["G54.X=-2..2"])
+two = verify_text(program, mill, params=["G54.X=-2..2"])
 print("G54.X within ±2 mm:", two.verdict.label)
-six = verify(program, mill, params=["G54.X=-6..6"])
+six = verify_text(program, mill, params=["G54.X=-6..6"])
 print("G54.X within ±6 mm:", six.verdict.label)
 for v in six.violations[:3]:
     print(f"  line {v.line} zone {v.zone!r}: with", {n: format_decimal(x) for n, x in v.params},
@@ -53,17 +53,17 @@ md("""## How big may the range be?
 range can be found by bisection over proofs. Each step is a full proof over all offsets in the
 range, not a sample."""),
 code("""lo, hi = F(0), F(20)          # safe at 0 (nominal), unsafe at 20
-assert verify(program, mill, params=[f"G54.X=-{format_decimal(hi)}..{format_decimal(hi)}"]).verdict.label == "unsafe"
+assert verify_text(program, mill, params=[f"G54.X=-{format_decimal(hi)}..{format_decimal(hi)}"]).verdict.label == "unsafe"
 steps = 0
 while hi - lo > F(1, 1000):
     mid = (lo + hi) / 2
     mid = F(round(mid * 10_000), 10_000)   # keep the range a short decimal
-    r = verify(program, mill, params=[f"G54.X=-{format_decimal(mid)}..{format_decimal(mid)}"])
+    r = verify_text(program, mill, params=[f"G54.X=-{format_decimal(mid)}..{format_decimal(mid)}"])
     lo, hi = (mid, hi) if r.verdict.label == "safe" else (lo, mid)
     steps += 1
 print(f"after {steps} proofs: safe for G54.X within ±{format_decimal(lo)} mm, unsafe for ±{format_decimal(hi)} mm")"""),
 code("""worst = six.violations[0]
-ax = plot_machine(mill, segments(program, mill))
+ax = plot_machine(mill, segments_text(program, mill))
 mark_points([tuple(float(c) for _, c in worst.point)[:2]], ax)
 ax.set_xlim(60, 260); ax.set_ylim(20, 220)
 ax.set_title("Contour next to the vise; the cross: a tip position reached with G54.X shifted")
@@ -76,7 +76,7 @@ the top of the Z travel."""),
 code("""lift = (Path("../specs/examples/programs/z_tool_range.ngc")).read_text()
 print(lift)
 for rng in ["H1=115..125", "H1=115..126"]:
-    r = verify(lift, mill, params=[rng])
+    r = verify_text(lift, mill, params=[rng])
     detail = "; ".join(f"zone {v.zone!r} with {dict((n, format_decimal(x)) for n, x in v.params)}" for v in r.violations)
     print(f"{rng}: {r.verdict.label} {detail}")"""),
 md("""## Exercises

@@ -30,6 +30,9 @@ __all__ = [
     "Severity",
     "SourceSpan",
     "program_lines",
+    "caret_excerpt",
+    "shorten",
+    "EXCERPT_CHARS",
     "Diagnostic",
     "InputError",
     "GcodeError",
@@ -78,12 +81,63 @@ class SourceSpan:
         return f"{self.file}:{self.line}:{self.column}"
 
     def caret_lines(self) -> str:
-        """The source line and a caret line under the span (empty if no text)."""
+        """The source line (cut around the caret to :data:`EXCERPT_CHARS`) and a caret line under the span.
+
+        Empty if there is no text.
+        """
         if not self.text:
             return ""
-        source = self.text.rstrip("\r\n").expandtabs(1)
-        width = max(1, (self.end_column or self.column + 1) - self.column)
-        return f"    {source}\n    {' ' * (self.column - 1)}^{'~' * (width - 1)}"
+        source, caret = caret_excerpt(self.text, self.column, self.end_column or self.column + 1)
+        return f"    {source}\n    {caret}"
+
+
+#: The longest source excerpt a message shows (characters, the ``…`` marks included).
+EXCERPT_CHARS = 200
+
+
+def caret_excerpt(text: str, column: int, end_column: int | None = None,
+                  width: int = EXCERPT_CHARS) -> tuple[str, str]:
+    """A source line and a caret line under columns ``column`` to ``end_column`` (exclusive, 1-based).
+
+    Tabs count as one column (as the lexer counts them).  ``end_column=None``
+    underlines to the end of the line.  A line longer than ``width`` is cut
+    around the caret, with ``…`` where text is left out, so neither line is
+    longer than ``width``.
+
+    >>> caret_excerpt("G1 $5", 4)
+    ('G1 $5', '   ^~')
+    >>> src, caret = caret_excerpt("(" + "x" * 500 + ") G1 Q5", 507, 509, width=40)
+    >>> print(src); print(caret)
+    …xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx) G1 Q5
+                                         ^~
+    """
+    source = text.rstrip("\r\n").expandtabs(1)
+    column = max(1, column)
+    if end_column is None:
+        end_column = max(column + 1, len(source.rstrip()) + 1)
+    end_column = max(end_column, column + 1)
+    start, stop, cut = 0, len(source), len(source) > width
+    if cut:
+        room = width - 2  # the two ellipses
+        start = max(0, column - 1 - room // 3)
+        stop = min(len(source), start + room)
+        start = max(0, stop - room)
+    shown = ("…" if start > 0 else "") + source[start:stop] + ("…" if stop < len(source) else "")
+    lead = column - 1 - start + (1 if start > 0 else 0)
+    under = max(1, min(end_column - 1, stop) - (column - 1))
+    return shown, " " * lead + "^" + "~" * (under - 1)
+
+
+def shorten(text: str, width: int = EXCERPT_CHARS) -> str:
+    """``text`` cut in the middle to at most ``width`` characters (``…`` marks the cut).
+
+    >>> shorten("abcdefghij", 7)
+    'abc…hij'
+    """
+    if len(text) <= width:
+        return text
+    keep = width - 1
+    return text[:keep - keep // 2] + "…" + text[len(text) - keep // 2:]
 
 
 def program_lines(text: str) -> list[str]:
@@ -128,7 +182,8 @@ class Diagnostic:
         return self.file or "<input>"
 
     def render(self) -> str:
-        head = f"{self.location()}: {self.severity.value}[{self.code}]: {self.message}"
+        # a message quotes what was written; a huge word must not make a huge message
+        head = f"{self.location()}: {self.severity.value}[{self.code}]: {shorten(self.message, 4 * EXCERPT_CHARS)}"
         carets = self.span.caret_lines() if self.span is not None else ""
         return f"{head}\n{carets}" if carets else head
 

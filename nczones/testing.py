@@ -499,10 +499,10 @@ def programs(
     Examples
     --------
     >>> from hypothesis import find
-    >>> from nczones.gcode import segments
+    >>> from nczones.gcode import segments_text
     >>> m = find(machines(axes=("X", "Y", "Z")), lambda m: True)
     >>> text = find(programs(m, min_blocks=4), lambda t: "G43" in t and "G2" in t)
-    >>> len(segments(text, m)) >= 4
+    >>> len(segments_text(text, m)) >= 4
     True
     """
     names = machine.axis_names

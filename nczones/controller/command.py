@@ -17,7 +17,7 @@ from fractions import Fraction
 from typing import Any
 
 from .. import cli
-from ..errors import Diagnostic, InputError, InvalidArgument
+from ..errors import Diagnostic, InputError, InvalidArgument, shorten
 from ..exact import format_decimal, parse_decimal
 
 __all__ = ["register", "render_text", "EXTRA_OPTIONS", "RUNNERS"]
@@ -38,6 +38,12 @@ def _decimal_option(name: str, text: str) -> Fraction:
         raise InputError(Diagnostic("SM101", f"{name} {text!r}: expected a non-negative decimal number of ms",
                                     file="<command line>"))
     return q
+
+
+def _max_iterations(n: int) -> int:
+    if n < 1:
+        raise InputError(Diagnostic("SM102", f"--max-iterations {n}: must be at least 1", file="<command line>"))
+    return n
 
 
 def _break_at(text: str | None) -> tuple[int, Fraction] | None:
@@ -71,7 +77,7 @@ def render_text(result: Any, program: str) -> str:
             during = f" during {a.derived}" if a.kind == "recovery" else ""
             lines.append(f"  ALARM stroke limit{during}, zone \"{a.zone}\" at {where}: {pt(a.position)}")
             if a.source:
-                lines.append(f"    {a.source}")
+                lines.append(f"    {shorten(a.source)}")
             if a.blocked:
                 lines.append("    direction cleared: " + ", ".join(f"{ax}{'+' if s > 0 else '-'}" for ax, s in a.blocked)
                              + " (a jog in the opposite direction is still accepted)")
@@ -112,9 +118,11 @@ def render_text(result: Any, program: str) -> str:
 def _run(args: argparse.Namespace) -> int:
     from ..gcode import interpret
     from ..machine import load_machine
+    from ..prover.command import program_source
     from . import Settings, simulate
 
     machine = load_machine(args.machine)
+    source = program_source(args.program)
     settings = Settings(
         pre_time_constant_ms=_decimal_option("--accdec-before-ms", args.accdec_before_ms),
         post_time_constant_ms=_decimal_option("--accdec-after-ms", args.accdec_after_ms),
@@ -130,7 +138,8 @@ def _run(args: argparse.Namespace) -> int:
     if result is None:
         from ..prover.command import _arc_tolerance
 
-        run = interpret(args.program, machine, arc_tolerance=_arc_tolerance(args.arc_tolerance))
+        run = interpret(source, machine, arc_tolerance=_arc_tolerance(args.arc_tolerance),
+                        max_loop_iterations=_max_iterations(args.max_iterations))
         from ..report.progress import progress_for
 
         bar = progress_for(sys.stderr, "simulate")
@@ -141,18 +150,19 @@ def _run(args: argparse.Namespace) -> int:
             if bar is not None:
                 bar.close()
         for u in run.unsupported:
-            notes.append(f"{u.span}: {u.code} is not supported ({u.message}); the simulation stopped there")
+            notes.append(f"{u.span}: {u.code} is not supported ({u.reason}); the simulation stopped there")
         if run.assumed_modal:
             notes.extend(run.assumed_modal_text())
     if args.format == "json":
         data = result.to_json()
-        data["program"] = args.program
+        data["program"] = source.name
+        data["program_sha256"] = source.sha256
         data["notes"] = list(data["notes"]) + notes
         if not args.events:
             data.pop("events")
         sys.stdout.write(json.dumps(data, indent=2) + "\n")
     else:
-        text = render_text(result, args.program)
+        text = render_text(result, source.name)
         sys.stdout.write(text + "".join(f"  note: {n}\n" for n in notes))
     if result.alarms:
         return cli.EXIT_FAIL
@@ -162,9 +172,14 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("simulate", help="run a program through the reference controller (pulses, limit monitor)")
-    p.add_argument("program", metavar="PROGRAM")
-    p.add_argument("--machine", required=True, metavar="M.toml")
+    from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
+
+    p = sub.add_parser("simulate", help="run a program through the reference controller (pulses, limit monitor)",
+                       description="Run PROGRAM through the reference controller pulse by pulse. Exit status: 0 "
+                                   "no alarm, 1 an alarm, 2 bad input or a code the controller cannot run.")
+    p.add_argument("program", metavar="PROGRAM", help="the G-code program file; '-' reads standard input")
+    p.add_argument("--machine", required=True, metavar="M.toml",
+                   help="the machine file: axes, zones, pulse units, rates (specs/machine-file.md)")
     p.add_argument("--mode", choices=("normal", "lock", "check"), default="normal",
                    help="normal; lock (machine lock: axes frozen, the stroke check sees nothing); "
                         "check (program check: temporary coordinates, stroke check, maximum feed)")
@@ -174,13 +189,19 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="linear acc/dec of the feed before interpolation (time constant)")
     p.add_argument("--accdec-after-ms", default="0", metavar="MS",
                    help="filter time constant on every axis after interpolation (servo log)")
-    p.add_argument("--filter", choices=("exponential", "linear"), default="exponential")
+    p.add_argument("--filter", choices=("exponential", "linear"), default="exponential",
+                   help="shape of the filter after interpolation (--accdec-after-ms): exponential (default) or "
+                        "linear (moving average)")
     p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc", help='largest mismatch (mm) of an arc end point with its circle (default 0.002), or "linuxcnc" for LinuxCNC\'s own acceptance rule')
     p.add_argument("--events", action="store_true", help="include the event log in the JSON output")
     p.add_argument("--break-at", metavar="LINE[:FRACTION]", default=None,
                    help="break the tool in the first cutting motion of LINE after FRACTION of it (default 0) "
                         "and run the automatic recovery of the machine's [tool_change]")
-    p.add_argument("--format", choices=("text", "json"), default="text")
+    p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
+                   help="iterations a loop (while, do, repeat) may run per entry before the simulation stops "
+                        f"there (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")
+    p.add_argument("--format", choices=("text", "json"), default="text",
+                   help="text (readable) or json (specs/simulate.schema.json)")
     for extra in EXTRA_OPTIONS:
         extra(p)
     p.set_defaults(handler=_run)

@@ -9,7 +9,10 @@ exposes :attr:`~Interpretation.unsupported` (why the result is ``unknown``),
 :attr:`~Interpretation.assumed_modal` (modal groups the program relied on
 without setting them) and :attr:`~Interpretation.counts`.
 :func:`segments` is the convenience that returns every
-:class:`~nczones.motion.Segment` in a list.
+:class:`~nczones.motion.Segment` in a list.  Both take a program *file*
+(a ``str`` or ``PathLike`` path, or a :class:`~nczones.gcode.source.ProgramSource`);
+:func:`interpret_text` and :func:`segments_text` take program text.  A ``str``
+is never guessed to be text (see :mod:`nczones.gcode.source`).
 
 Errors in the program raise :class:`~nczones.errors.GcodeError` (codes
 ``GC1xx`` lexical, ``GC2xx`` block/modal, ``GC3xx`` interpretation) with a
@@ -27,10 +30,10 @@ Errors in the program raise :class:`~nczones.errors.GcodeError` (codes
 ... X = "0"
 ... Y = "299"
 ... ''')
->>> segs = segments("G91 G1 F100" + " Y0.1" * 0 + "\\n" + "Y0.1\\n" * 10, m)
+>>> segs = segments_text("G91 G1 F100" + " Y0.1" * 0 + "\\n" + "Y0.1\\n" * 10, m)
 >>> segs[-1].end
 (Fraction(0, 1), Fraction(300, 1))
->>> run = interpret("G1 X1 F10\\nG41 X2\\nG1 X3\\n", m)
+>>> run = interpret_text("G1 X1 F10\\nG41 X2\\nG1 X3\\n", m)
 >>> [s.end[0] for c in run for s in c.segments()]
 [Fraction(1, 1)]
 >>> run.status, run.unsupported[0].code, run.unsupported[0].span.line
@@ -39,12 +42,11 @@ Errors in the program raise :class:`~nczones.errors.GcodeError` (codes
 
 from __future__ import annotations
 
-import os
 from collections.abc import Iterator
 from fractions import Fraction
-from pathlib import Path
+from typing import Any
 
-from ..errors import Diagnostic, GcodeError, InvalidArgument, program_lines
+from ..errors import InvalidArgument, program_lines
 from ..machine import Machine
 from ..motion import MotionChunk, Segment
 from .interpreter import (
@@ -54,30 +56,21 @@ from .interpreter import (
     Interpreter,
     Unsupported,
 )
+from .program import DEFAULT_MAX_LOOP_ITERATIONS
+from .source import ProgramLike, ProgramSource, as_source, load_program, program_text
 
 __all__ = [
     "interpret",
+    "interpret_text",
     "segments",
+    "segments_text",
+    "ProgramSource",
+    "program_text",
+    "load_program",
     "Interpretation",
     "Unsupported",
     "DEFAULT_ARC_TOLERANCE",
 ]
-
-
-def _read_source(source: str | os.PathLike, file: str | None) -> tuple[str, str]:
-    if isinstance(source, os.PathLike) or (
-        isinstance(source, str) and "\n" not in source and len(source) < 4096 and os.path.isfile(source)
-    ):
-        path = Path(source)
-        try:
-            data = path.read_bytes()
-        except OSError as exc:
-            raise GcodeError(Diagnostic("GC100", f"cannot read the program: {exc.strerror or exc}", file=str(path))) from None
-        text = data.decode("utf-8", errors="surrogateescape")
-        return text, file or str(path)
-    if not isinstance(source, str):
-        raise InvalidArgument(f"interpret() takes program text or a path, not {type(source).__name__}")
-    return source, file or "<program>"
 
 
 class Interpretation:
@@ -101,17 +94,20 @@ class Interpretation:
         took the vectorized fast path).
     """
 
-    def __init__(self, text: str, machine: Machine, *, file: str, block_delete: bool,
-                 track_dependencies: bool, arc_tolerance: Fraction, fast: bool, chunk_size: int):
-        self.text = text
+    def __init__(self, source: ProgramSource, machine: Machine, *, block_delete: bool,
+                 track_dependencies: bool, arc_tolerance: Fraction | str, fast: bool, chunk_size: int,
+                 max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS):
+        self.source = source
+        text = self.text = source.text
         self.machine = machine
-        self.file = file
+        self.file = source.name
         self.block_delete = block_delete
+        self.max_loop_iterations = max_loop_iterations
         from .cylindrical import CylindricalInterpreter, uses_cylindrical
 
         cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
         cls = CylindricalInterpreter if cylindrical else Interpreter
-        self.interpreter = cls(machine, file=file, arc_tolerance=arc_tolerance,
+        self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
                                track_dependencies=track_dependencies, chunk_size=chunk_size)
         self.fast = fast and not track_dependencies and not cylindrical
         self.fast_lines = 0
@@ -127,7 +123,8 @@ class Interpretation:
 
             yield from run_with_fastpath(self)
         else:
-            yield from self.interpreter.run(_blocks(self.text, self.file, self.block_delete, self.interpreter))
+            yield from self.interpreter.run(_blocks(self.text, self.file, self.block_delete, self.interpreter,
+                                                    max_loop_iterations=self.max_loop_iterations))
         finish = getattr(self.interpreter, "finish", None)
         if finish is not None:
             finish()
@@ -172,18 +169,20 @@ class Interpretation:
 
 
 def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,
-            first_line: int = 1):
+            first_line: int = 1, max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS):
     """The language layer's blocks; an UnsupportedGcode ends them as ``unknown``."""
     from .expr import Parameters
     from .program import iter_blocks
 
     params = Parameters()
     if interpreter is None:
-        yield from iter_blocks(text, file=file, params=params, block_delete=block_delete)
+        yield from iter_blocks(text, file=file, params=params, block_delete=block_delete,
+                               max_loop_iterations=max_loop_iterations)
         return
     interpreter.bind_parameters(params)
     yield from _unknown_at_unsupported(interpreter,
                                        iter_blocks(text, file=file, params=params, block_delete=block_delete,
+                                                   max_loop_iterations=max_loop_iterations,
                                                    lane=interpreter.lane_for_blocks()))
 
 
@@ -199,7 +198,7 @@ def _unknown_at_unsupported(interpreter: Interpreter, blocks):
 
 
 def interpret(
-    source: str | os.PathLike,
+    source: ProgramLike,
     machine: Machine,
     *,
     file: str | None = None,
@@ -208,17 +207,21 @@ def interpret(
     arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE,
     fast: bool = True,
     chunk_size: int = DEFAULT_CHUNK_SIZE,
+    max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
 ) -> Interpretation:
-    """Interpret a G-code program for a machine (lazily).
+    """Interpret the G-code program file ``source`` for a machine (lazily).
 
     Parameters
     ----------
-    source : str or path
-        Program text, or a path (a ``PathLike``, or a one-line ``str`` naming
-        an existing file).
+    source : str, path or ProgramSource
+        The program file (a ``str`` is a path, never program text: use
+        :func:`interpret_text` for text), or a
+        :class:`~nczones.gcode.source.ProgramSource` already read.  A file
+        that cannot be read is :class:`~nczones.errors.GcodeError` ``GC100``;
+        binary or non-UTF-8 bytes ``GC108``; an over-long line ``GC110``.
     machine : Machine
     file : str, optional
-        Name used in diagnostics (default: the path, or ``<program>``).
+        Name used in diagnostics (default: the path as given).
     block_delete : bool
         True skips blocks starting with ``/`` (the block-delete switch is on);
         default False executes them, as LinuxCNC does by default.
@@ -236,6 +239,9 @@ def interpret(
         segments; see :mod:`nczones.gcode.fastpath`).
     chunk_size : int
         Segments per chunk of the full interpreter.
+    max_loop_iterations : int
+        Iterations allowed per loop (per entry into it); a loop that runs
+        longer ends the interpretation as ``unknown`` (``GC302``).
 
     Returns
     -------
@@ -243,20 +249,38 @@ def interpret(
     """
     from ..exact import exact
 
-    text, name = _read_source(source, file)
-    tol = "linuxcnc" if arc_tolerance == "linuxcnc" else exact(arc_tolerance)
+    src = as_source(source, file=file, text_function="interpret_text")
+    tol: Fraction | str = "linuxcnc" if arc_tolerance == "linuxcnc" else exact(arc_tolerance)
     if tol != "linuxcnc" and tol < 0:
         raise InvalidArgument(f"arc_tolerance must not be negative, got {arc_tolerance!r}")
-    return Interpretation(text, machine, file=name, block_delete=block_delete,
-                          track_dependencies=track_dependencies, arc_tolerance=tol, fast=fast,
-                          chunk_size=chunk_size)
+    if not isinstance(max_loop_iterations, int) or isinstance(max_loop_iterations, bool) or max_loop_iterations < 1:
+        raise InvalidArgument(f"max_loop_iterations must be a positive integer, got {max_loop_iterations!r}")
+    return Interpretation(src, machine, block_delete=block_delete, track_dependencies=track_dependencies,
+                          arc_tolerance=tol, fast=fast, chunk_size=chunk_size,
+                          max_loop_iterations=max_loop_iterations)
 
 
-def segments(source: str | os.PathLike, machine: Machine, **options) -> list[Segment]:
-    """Every segment of a program as a list (holds them all in memory).
+def interpret_text(text: str, machine: Machine, *, file: str = "<program>", **options: Any) -> Interpretation:
+    """Interpret program *text* (``file`` names it in diagnostics); options as :func:`interpret`.
+
+    >>> from nczones.machine import parse_machine
+    >>> m = parse_machine('[machine]\\naxes=["X"]\\n[machine.rapid]\\nX="1000"\\n[machine.reference]\\nX="0"\\n')
+    >>> [s.end for s in interpret_text("G1 X2 F10\\n", m).segments()]
+    [(Fraction(2, 1),)]
+    """
+    return interpret(program_text(text, file), machine, **options)
+
+
+def segments(source: ProgramLike, machine: Machine, **options: Any) -> list[Segment]:
+    """Every segment of the program file ``source`` as a list (holds them all in memory).
 
     Takes the options of :func:`interpret`.  Check
     ``interpret(...).unsupported`` when the result must be complete; this
     convenience returns the segments emitted before an unsupported code.
     """
     return list(interpret(source, machine, **options).segments())
+
+
+def segments_text(text: str, machine: Machine, *, file: str = "<program>", **options: Any) -> list[Segment]:
+    """:func:`segments` of program *text*."""
+    return list(interpret_text(text, machine, file=file, **options).segments())

@@ -104,7 +104,7 @@ class CylindricalInterpreter(Interpreter):
     Examples
     --------
     >>> from nczones.machine import parse_machine
-    >>> from nczones.gcode import segments
+    >>> from nczones.gcode import segments_text
     >>> m = parse_machine('''
     ... [machine]
     ... axes = ["Z", "C"]
@@ -115,7 +115,7 @@ class CylindricalInterpreter(Interpreter):
     ... Z = "0"
     ... C = "0"
     ... ''')
-    >>> segs = segments("G0 Z30 C30\\nG7.1 C57.3\\nG1 Z40 F100\\nG2 Z50 C40 R10\\nG7.1 C0\\nG0 C0\\n", m)
+    >>> segs = segments_text("G0 Z30 C30\\nG7.1 C57.3\\nG1 Z40 F100\\nG2 Z50 C40 R10\\nG7.1 C0\\nG0 C0\\n", m)
     >>> [s.kind.name for s in segs]
     ['RAPID', 'LINE', 'DEVELOPED_ARC', 'RAPID']
     >>> dict(segs[2].extra)["cylinder_radius"], segs[2].radius, segs[2].clockwise

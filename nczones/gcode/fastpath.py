@@ -101,7 +101,8 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
             if runs:
                 yield from _language_layer_with_runs(interp, runs)
                 return
-        yield from it.run(_blocks(interp.text, interp.file, interp.block_delete, it))
+        yield from it.run(_blocks(interp.text, interp.file, interp.block_delete, it,
+                                  max_loop_iterations=interp.max_loop_iterations))
         return
     block_counter = [0]
     line0 = 0
@@ -169,7 +170,6 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
     from . import _unknown_at_unsupported
     from .expr import Parameters
     from .program import (
-        DEFAULT_MAX_LOOP_ITERATIONS,
         FastRunRequest,
         _Runner,
         _StringSource,
@@ -179,7 +179,7 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
     params = Parameters()
     it.bind_parameters(params)
     runner = _Runner(_StringSource(interp.text), interp.file, params, interp.block_delete,
-                     DEFAULT_MAX_LOOP_ITERATIONS, 100, fast_runs=runs, lane=it.lane_for_blocks())
+                     interp.max_loop_iterations, 100, fast_runs=runs, lane=it.lane_for_blocks())
     flow = _unknown_at_unsupported(it, runner.run())
     requests: list[FastRunRequest] = []
 
@@ -518,7 +518,8 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, param
     # the piece's lines and blocks are numbered as in the whole program
     blocks = _unknown_at_unsupported(it, iter_blocks(piece, file=interp.file, params=params,
                                                      block_delete=interp.block_delete, first_line=offset + 1,
-                                                     first_index=block_counter[0], lane=it.lane_for_blocks()))
+                                                     first_index=block_counter[0], lane=it.lane_for_blocks(),
+                                                     max_loop_iterations=interp.max_loop_iterations))
     consumed = it.blocks
     try:
         yield from it.run(blocks)

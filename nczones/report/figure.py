@@ -106,7 +106,8 @@ def _seg_points(seg: Segment, machine: Machine) -> np.ndarray:
 
 
 def collect_path(program, machine: Machine, hot_blocks=(), *, max_segments: int = 200_000) -> PathFloat:
-    """Interpret ``program`` (text or path) and keep float polylines for drawing.
+    """Interpret ``program`` (a path or a :class:`~nczones.gcode.source.ProgramSource`) and keep
+    float polylines for drawing.
 
     Violating blocks (``hot_blocks``) are always kept; other segments past
     ``max_segments`` are left out of the drawing (``drawn`` < ``segments``).
@@ -214,8 +215,9 @@ def plot_program(program, machine: Machine | str | os.PathLike, plane: Sequence[
 
     Parameters
     ----------
-    program : str or path
-        G-code text or a path.
+    program : str, path or ProgramSource
+        The program file (a ``str`` is a path; for text pass
+        :func:`~nczones.gcode.source.program_text`).
     machine : Machine or path of a machine file
     plane : (str, str), optional
         Horizontal and vertical axis; default the first of :func:`relevant_planes`.

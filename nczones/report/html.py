@@ -117,8 +117,9 @@ def render_html(result: Result, machine, program=None, *, planes=None, source_te
     ----------
     result : Result
     machine : Machine
-    program : str or path, optional
-        The program (text or path) to draw; default ``result.file``.
+    program : str, path or ProgramSource, optional
+        The program file to draw (a ``str`` is a path; pass
+        :func:`~nczones.gcode.source.program_text` for text); default ``result.file``.
     planes : list of (str, str), optional
         Axis planes to plot (default :func:`~nczones.report.figure.relevant_planes`).
     source_text : str, optional
@@ -140,20 +141,22 @@ def render_html(result: Result, machine, program=None, *, planes=None, source_te
     """
     import matplotlib.pyplot as plt
 
+    from ..errors import InputError
+    from ..gcode.source import as_source
     from .figure import collect_path, plot_program, relevant_planes
 
     program = program if program is not None else result.file
-    text = source_text
-    if text is None and program:
-        from ..gcode import _read_source
-
+    if program:
         try:
-            text, _ = _read_source(program, None)
-        except (OSError, UnicodeDecodeError):  # the report still renders, without a listing
-            text = ""
+            program = as_source(program)
+        except InputError:  # the report still renders, without a listing and plots
+            program = None
+    text = source_text
+    if text is None and program is not None:
+        text = program.text
     lines = program_lines(text or "")
     verdict = result.verdict.label
-    name = result.file or (program if isinstance(program, str) and "\n" not in program else "<program>")
+    name = result.file or (program.name if program is not None else "<program>")
 
     # plots
     figures = []

@@ -21,6 +21,7 @@ from __future__ import annotations
 import os
 from fractions import Fraction
 
+from ..errors import caret_excerpt
 from ..exact import format_decimal
 from ..prover.result import Result, Verdict
 
@@ -65,13 +66,9 @@ def _par(x: Fraction, exact: bool) -> str:
 
 
 def _caret(text: str, column: int, end_column: int | None) -> tuple[str, str]:
-    """The source line (tabs as one space, as the lexer counts columns) and a caret line."""
-    source = text.rstrip("\r\n").expandtabs(1)
-    column = max(1, column)
-    if end_column is None:
-        end_column = max(column + 1, len(source.rstrip()) + 1)
-    width = max(1, end_column - column)
-    return source, " " * (column - 1) + "^" + "~" * (width - 1)
+    """The source line (tabs as one space, as the lexer counts columns, cut around the caret to
+    :data:`~nczones.errors.EXCERPT_CHARS`) and a caret line."""
+    return caret_excerpt(text, column, end_column)
 
 
 def render_text(result: Result, program: str = "", *, color: bool = False,
@@ -91,9 +88,9 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
     Examples
     --------
     >>> from nczones.machine import load_machine
-    >>> from nczones.prover import verify
+    >>> from nczones.prover import verify_text
     >>> m = load_machine("specs/machines/grinder.toml")
-    >>> r = verify("G21 G90 G54\\nG0 X-250 Y300\\nG1 Y130 F500\\nG1 X50\\n", m, file="dip.ngc")
+    >>> r = verify_text("G21 G90 G54\\nG0 X-250 Y300\\nG1 Y130 F500\\nG1 X50\\n", m, file="dip.ngc")
     >>> print(render_text(r, deterministic=True), end="")
     dip.ngc:4:1: violation[wheel area]: line leaves the allowed set, 90 mm deep
         G1 X50
@@ -166,6 +163,8 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
         what = f"not proved, {k} reason{'s' if k != 1 else ''}"
         if result.reasons and result.reasons[0].span is not None:
             what += f", the first at line {result.reasons[0].span.line}"
+    elif stats.get("segments", 0) == 0:
+        what = "the program has no motion (nothing can leave the allowed set)"
     else:
         what = "every motion stays inside the allowed set"
     nseg = stats.get("segments", 0)

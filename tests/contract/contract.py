@@ -19,7 +19,7 @@ from fractions import Fraction
 from hypothesis import currently_in_test_context, event
 
 from nczones.controller import line_steps, round_pulse, simulate
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.machine import Machine, RapidMode
 from nczones.motion import SegmentKind
 from nczones.prover import Verdict, verify_segments
@@ -65,7 +65,7 @@ def program_segments(text: str, machine: Machine):
     """Segments of a program that the interpreter models completely."""
     # The full interpreter (not the vectorized fast path, which its own tests
     # hold to the same segments): this suite is about prover vs controller.
-    run = interpret(text, machine, fast=False)
+    run = interpret_text(text, machine, fast=False)
     segs = list(run.segments())
     if run.unsupported:
         raise ContractViolation(f"generated program uses unsupported code: {run.unsupported[0]}")

@@ -15,10 +15,10 @@ from hypothesis import strategies as st
 
 from nczones.cylinder import Interval, degree_length, developed_arc, developed_arc_of, pi_interval
 from nczones.errors import GcodeError
-from nczones.gcode import segments
+from nczones.gcode import segments_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
-from nczones.prover import verify
+from nczones.prover import verify_text
 
 ROOT = Path(__file__).resolve().parents[2]
 EX = ROOT / "specs" / "examples"
@@ -67,7 +67,7 @@ def test_developed_arc_passes_through_both_ends(r):
 def test_mode_emits_lines_and_developed_arcs_and_keeps_positions_exact():
     m = machine()
     prog = "G0 X5 Z30 C30\nG1 Z31 F100\nG7.1 C20\nG1 Z32 C40.5\nG3 Z34 C50 R7\nG1 X4 Z35\nG7.1 C0\nG1 Z36 C51\nG0 X0\n"
-    segs = segments(prog, m)
+    segs = segments_text(prog, m)
     assert [s.kind for s in segs] == [SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.LINE, SegmentKind.DEVELOPED_ARC,
                                       SegmentKind.LINE, SegmentKind.LINE, SegmentKind.RAPID]
     ends = [tuple(str(v) for v in s.end) for s in segs]
@@ -80,15 +80,15 @@ def test_mode_emits_lines_and_developed_arcs_and_keeps_positions_exact():
     assert arc.radius == 7 and not arc.clockwise
     assert "cylinder_radius" in dict(segs[2].extra) and "cylinder_radius" not in dict(segs[5].extra)
     # the same motion without the mode: the same machine positions for every line
-    plain = segments("G0 X5 Z30 C30\nG1 Z31 F100\nG1 Z32 C40.5\nG1 Z34 C50\nG1 X4 Z35\nG1 Z36 C51\nG0 X0\n", m)
+    plain = segments_text("G0 X5 Z30 C30\nG1 Z31 F100\nG1 Z32 C40.5\nG1 Z34 C50\nG1 X4 Z35\nG1 Z36 C51\nG0 X0\n", m)
     assert [s.end for s in plain] == [s.end for s in segs]
 
 
 def test_g107_and_incremental_and_inch():
     m = machine()
-    segs = segments("G0 Z10 C10\nG107 C10\nG91 G2 Z2 C5 R3 F50\nG107 C0\n", m)
+    segs = segments_text("G0 Z10 C10\nG107 C10\nG91 G2 Z2 C5 R3 F50\nG107 C0\n", m)
     assert segs[-1].kind is SegmentKind.DEVELOPED_ARC and segs[-1].end[1:] == (F(12), F(15))
-    segs = segments("G20\nG0 Z1 C10\nG7.1 C1\nG1 Z2 C20 F5\nG2 Z3 C30 R1\nG7.1 C0\n", m)
+    segs = segments_text("G20\nG0 Z1 C10\nG7.1 C1\nG1 Z2 C20 F5\nG2 Z3 C30 R1\nG7.1 C0\n", m)
     assert dict(segs[-1].extra)["cylinder_radius"] == F("25.4")
     assert segs[-1].end[1] == F("76.2") and segs[-1].radius == F("25.4")
 
@@ -110,7 +110,7 @@ def test_g107_and_incremental_and_inch():
 ])
 def test_mode_errors_have_codes_lines_and_columns(prog, code, line, col):
     with pytest.raises(GcodeError) as exc:
-        segments(prog, machine())
+        segments_text(prog, machine())
     d = exc.value.diagnostics[0]
     assert (d.code, d.span.line, d.span.column) == (code, line, col), d.message
 
@@ -119,7 +119,7 @@ def test_mode_on_a_machine_without_the_linear_axis_is_an_error():
     m = parse_machine('[machine]\naxes = ["X", "C"]\n[machine.rapid]\nX = "1"\nC = "1"\n'
                       '[machine.reference]\nX = "0"\nC = "0"\n')
     with pytest.raises(GcodeError) as exc:
-        segments("G7.1 C10\n", m)
+        segments_text("G7.1 C10\n", m)
     assert exc.value.diagnostics[0].code == "GC232" and "Z" in exc.value.diagnostics[0].message
 
 
@@ -191,7 +191,7 @@ def test_controller_rotary_pulses_follow_developed_length_over_radius(rc, dz, dc
     r = -r if big else r
     prog = (f"G0 Z20 C30\nG7.1 C{rc}\nG{'2' if cw else '3'} Z{float(20 + dzf):.2f} C{float(30 + dcf):.1f} "
             f"R{float(r):.6f} F500\nG7.1 C0\n")
-    segs = segments(prog, m)
+    segs = segments_text(prog, m)
     arc = developed_arc_of(segs[-1])
     from nczones.controller import Controller
 
@@ -212,7 +212,7 @@ def test_controller_rotary_pulses_follow_developed_length_over_radius(rc, dz, dc
 @pytest.mark.parametrize("rc", ["8", "37.266"])
 def test_controller_line_in_the_mode_stays_within_one_pulse(rc):
     m = machine("0.001")
-    segs = segments(f"G0 Z0 C0\nG7.1 C{rc}\nG1 Z3 C7.5 F100\nG7.1 C0\n", m)
+    segs = segments_text(f"G0 Z0 C0\nG7.1 C{rc}\nG1 Z3 C7.5 F100\nG7.1 C0\n", m)
     from nczones.controller import Controller
 
     c = Controller(m)
@@ -237,8 +237,8 @@ min = { Z = "32.6", C = "37.5" }
 max = { Z = "33.5", C = "39" }
 """
     m = machine(zones=zones)
-    ok = verify("G0 Z30 C30\nG7.1 C20\nG2 Z34 C50 R9 F100\nG7.1 C0\n", m)
-    bad = verify("G0 Z30 C30\nG7.1 C20\nG3 Z34 C50 R9 F100\nG7.1 C0\n", m)
+    ok = verify_text("G0 Z30 C30\nG7.1 C20\nG2 Z34 C50 R9 F100\nG7.1 C0\n", m)
+    bad = verify_text("G0 Z30 C30\nG7.1 C20\nG3 Z34 C50 R9 F100\nG7.1 C0\n", m)
     # chord: 4 mm in Z, 20 deg = 6.98 mm developed; the two arcs bulge to opposite sides
     assert (ok.verdict.label, bad.verdict.label) == ("safe", "unsafe")
     v = bad.violations[0]
@@ -250,7 +250,7 @@ max = { Z = "33.5", C = "39" }
 
 def test_prover_unknown_for_parameter_ranges_and_tangent_touch():
     m = machine(zones='[[zones]]\nname = "t"\nkind = "box"\nmin = { Z = "0" }\nmax = { Z = "100" }\n')
-    r = verify("G0 Z30 C30\nG7.1 C20\nG2 Z34 C50 R9 F100\nG7.1 C0\n", m, params=["G54.Z=-1..1"])
+    r = verify_text("G0 Z30 C30\nG7.1 C20\nG2 Z34 C50 R9 F100\nG7.1 C0\n", m, params=["G54.Z=-1..1"])
     assert r.verdict.label in ("unknown", "safe")
 
 
@@ -283,12 +283,12 @@ def test_prover_and_controller_agree(rc, dz, dc, extra, cw, zlo, zw, clo, cw_):
         return
     from nczones.controller import Controller
 
-    segs = segments(prog, m)
+    segs = segments_text(prog, m)
     sim = Controller(m).run(segs)
-    safe = verify(prog, m, margin=u)
+    safe = verify_text(prog, m, margin=u)
     if safe.verdict.label == "safe":
         assert not sim.alarms, (prog, zone)
-    plain = verify(prog, m)
+    plain = verify_text(prog, m)
     if plain.verdict.label == "unsafe" and plain.violations[0].depth > u:
         assert sim.alarms and sim.alarms[0].line <= plain.violations[0].line, (prog, zone)
 

@@ -23,7 +23,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nczones.errors import NczonesError
-from nczones.gcode import interpret, shapes
+from nczones.gcode import interpret_text, shapes
 from nczones.gcode.expr import Parameters
 from nczones.gcode.program import iter_blocks
 from tests.corpus import CORPUS, corpus_programs
@@ -50,7 +50,7 @@ def _run_blocks(text: str, compiled: bool, monkeypatch) -> tuple:
 def _run_segments(text: str, compiled: bool, monkeypatch) -> tuple:
     monkeypatch.setattr(shapes, "_COMPILE_RUNS", compiled)
     shapes.clear()
-    run = interpret(text, MACHINE, fast=False)
+    run = interpret_text(text, MACHINE, fast=False)
     try:
         return [(s.kind, s.start, s.end, s.block, str(s.span), s.feed_mm_min) for s in run.segments()], \
             [str(u) for u in run.unsupported]

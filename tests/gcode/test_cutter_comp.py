@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
-from nczones.gcode import interpret
+from nczones.gcode import interpret, interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 
@@ -41,7 +41,7 @@ LCNC = _machine()
 
 
 def _segs(text: str, machine=LCNC, **kw):
-    run = interpret(text, machine, **kw)
+    run = interpret_text(text, machine, **kw)
     segs = list(run.segments())
     return run, segs
 
@@ -172,8 +172,8 @@ def test_fast_and_full_interpreter_give_identical_segments():
     lines += ["G41.1 D0.5", "G1 X50 Y0"] + [f"X{50 + i} Y{(i % 2) * 10}" for i in range(1, 30)]
     lines += ["G40 G1 X100 Y50"] + [f"X{100 + i} Y{50 + i % 4}" for i in range(1, 40)] + ["M2"]
     text = "\n".join(lines) + "\n"
-    fast = interpret(text, LCNC, fast=True)
-    slow = interpret(text, LCNC, fast=False)
+    fast = interpret_text(text, LCNC, fast=True)
+    slow = interpret_text(text, LCNC, fast=False)
     a, b = list(fast.segments()), list(slow.segments())
     key = [(s.kind, s.start, s.end, s.centre, s.clockwise, s.block, s.span.line, s.derived, s.feed_mm_min)
            for s in a]

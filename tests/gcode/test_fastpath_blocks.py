@@ -17,7 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from nczones.errors import GcodeError
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.gcode import fastpath
 from nczones.machine import parse_machine
 
@@ -33,7 +33,7 @@ def _key(s):
 
 
 def _full(text: str):
-    run = interpret(text, MACHINE, fast=False)
+    run = interpret_text(text, MACHINE, fast=False)
     try:
         return [_key(s) for s in run.segments()], [str(u) for u in run.unsupported]
     except GcodeError as exc:
@@ -41,7 +41,7 @@ def _full(text: str):
 
 
 def _fast(text: str, block_bytes: int):
-    run = interpret(text, MACHINE)
+    run = interpret_text(text, MACHINE)
     try:
         segs = [_key(s) for c in fastpath.run_with_fastpath(run, block_bytes=block_bytes) for s in c.segments()]
     except GcodeError as exc:
@@ -153,10 +153,10 @@ def test_incremental_sum_overflow_goes_to_the_full_path():
 
 def test_language_layer_programs_are_not_split():
     text = "G1 F100\n" + "X1 Y1\n" * 100 + "o100 sub\nG1 X2\no100 endsub\no100 call\nM30\n"
-    assert fastpath._needs_language_layer(text.encode(), interpret(text, MACHINE).interpreter, 64)
+    assert fastpath._needs_language_layer(text.encode(), interpret_text(text, MACHINE).interpreter, 64)
     assert not fastpath._needs_language_layer(b"(Operation / M98 in a comment)\nG1 X1 F1\n",
-                                              interpret("", MACHINE).interpreter, 64)
-    assert fastpath._needs_language_layer(b"G1 X1 F1\nm 9 8 P100\n", interpret("", MACHINE).interpreter, 4)
+                                              interpret_text("", MACHINE).interpreter, 64)
+    assert fastpath._needs_language_layer(b"G1 X1 F1\nm 9 8 P100\n", interpret_text("", MACHINE).interpreter, 4)
     assert _fast(text, 50)[:2] == _full(text)
 
 
@@ -216,7 +216,7 @@ def test_axis_words_the_machine_lacks_are_never_dropped():
                        '[machine.reference]\nX = "0"\nY = "0"\n')
     text = "G1 F100\n" + "X1 Y1\n" * 100 + "X2 Z5\n" + "X1 Y1\n" * 100
     with pytest.raises(GcodeError) as e:
-        list(interpret(text, xy).segments())
+        list(interpret_text(text, xy).segments())
     d = e.value.diagnostics[0]
     assert d.code == "GC203" and (d.span.line, d.span.column, d.span.text.strip()) == (102, 4, "X2 Z5")
 

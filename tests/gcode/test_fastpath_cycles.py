@@ -16,7 +16,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
-from nczones.gcode import fastpath, interpret
+from nczones.gcode import fastpath, interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 
@@ -40,7 +40,7 @@ def _state(run):
 
 
 def _outcome(text, fast, block_bytes=None):
-    run = interpret(text, MACHINE, fast=fast)
+    run = interpret_text(text, MACHINE, fast=fast)
     try:
         if fast and block_bytes is not None:
             segs = [_key(s) for c in fastpath.run_with_fastpath(run, block_bytes=block_bytes) for s in c.segments()]
@@ -159,7 +159,7 @@ def test_long_drilling_run_takes_the_fast_path():
 
 
 def test_cycle_rows_carry_dwell_times_and_names():
-    run = interpret(_long_program("G82 P0.5", "G99", n=100), MACHINE)
+    run = interpret_text(_long_program("G82 P0.5", "G99", n=100), MACHINE)
     rows = [s for c in run if c.scale is not None for s in c.segments()]
     assert run.fast_lines >= 100
     dwells = [s for s in rows if s.kind is SegmentKind.DWELL]
@@ -206,10 +206,10 @@ max = { X = "140", Y = "180", Z = "30" }
 def assert_same_proof_with_and_without_fast_path(text: str, machine) -> None:
     """The prover's verdict and violations (line, zone, point) through ``verify`` (fast path on) equal
     those from the full interpreter's segments."""
-    from nczones.prover import verify, verify_segments
+    from nczones.prover import verify_segments, verify_text
 
-    fast = verify(text, machine, max_violations=1000)
-    full = verify_segments(iter(list(interpret(text, machine, fast=False).segments())), machine,
+    fast = verify_text(text, machine, max_violations=1000)
+    full = verify_segments(iter(list(interpret_text(text, machine, fast=False).segments())), machine,
                            max_violations=1000)
     assert fast.verdict == full.verdict
     assert [(v.span.line, v.zone, v.point) for v in fast.violations] == [
@@ -228,6 +228,6 @@ def test_prover_verdicts_and_violations_agree_on_drilling_columns(cycle, retract
     lines += [f"X{rnd.uniform(60, 200):.{places}f} Y{rnd.uniform(20, 220):.2f}" for _ in range(90)]
     text = "\n".join([*lines, "G80", "M30"]) + "\n"
     assert_same_proof_with_and_without_fast_path(text, CLAMP_MACHINE)
-    run = interpret(text, CLAMP_MACHINE)
+    run = interpret_text(text, CLAMP_MACHINE)
     sum(len(c) for c in run)
     assert run.fast_lines >= 88  # the hole lines did take the fast path

@@ -9,12 +9,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.testing import machines, programs
 
 
 def _run(text, machine, fast):
-    run = interpret(text, machine, fast=fast)
+    run = interpret_text(text, machine, fast=fast)
     try:
         segs = [(s.kind, s.start, s.end, s.block, s.centre, s.clockwise, s.turns, s.line, s.tool_length)
                 for chunk in run for s in chunk.segments()]

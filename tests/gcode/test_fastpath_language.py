@@ -18,7 +18,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from nczones.gcode import fastpath, interpret
+from nczones.gcode import fastpath, interpret_text
 from tests.gcode.test_fastpath_blocks import MACHINE, _fast, _full
 from tests.gcode.test_fastpath_cycles import (
     CLAMP_MACHINE,
@@ -94,7 +94,7 @@ def test_runs_in_subroutines_loops_and_after_m73_take_the_fast_path():
         "o100 sub", *body, "o100 endsub",
         "G21 G90 G1 F300", "o200 repeat [3]", "o100 call", "o200 endrepeat",
         "o101 call", *_moves(90, 7), "M30"]) + "\n"
-    run = interpret(text, MACHINE)
+    run = interpret_text(text, MACHINE)
     segs = list(run.segments())
     # every call and iteration, and the main program's run; o101's run is found from its "M73" line
     # (the fast path cuts before M73, then G91 stops it): retried 1, then 1 + 2 lines further on
@@ -108,7 +108,7 @@ def test_runs_in_subroutines_loops_and_after_m73_take_the_fast_path():
 def test_a_run_declined_for_a_computed_position_is_retried_further_on():
     text = "\n".join(["o100 sub", "o100 endsub", "G21 G90 G1 F100", "G1 X[1 / 3] Y[2 / 3]", *_moves(200, 1),
                       "M30"]) + "\n"
-    run = interpret(text, MACHINE)
+    run = interpret_text(text, MACHINE)
     list(run.segments())
     # X and Y are both set on the run's first line, so the retry one line further on is taken
     assert run.fast_lines == 199
@@ -120,12 +120,12 @@ def test_non_ascii_text_and_undecodable_bytes():
     surrogates) does not, since its bytes and characters do not map one to one."""
     moves = [m + (" (Ø café)" if k % 5 == 0 else "") for k, m in enumerate(_moves(100, 2))]
     text = "(café)\no100 sub\no100 endsub\nG1 F100\n" + "\n".join(moves) + "\no100 call\n" + "\n".join(moves) + "\nM30\n"
-    run = interpret(text, MACHINE)
+    run = interpret_text(text, MACHINE)
     list(run.segments())
     assert run.fast_lines == 201  # "G1 F100" and the first 100 moves, then the 100 after the call
     assert _fast(text, 1 << 20)[:2] == _full(text) and _fast(text, 500)[:2] == _full(text)
     bad = text.replace("(café)", "(caf\udce9)")
-    run = interpret(bad, MACHINE)
+    run = interpret_text(bad, MACHINE)
     list(run.segments())
     assert run.fast_lines == 0
     assert _fast(bad, 1 << 20)[:2] == _full(bad)
@@ -145,7 +145,7 @@ def test_a_run_declined_again_and_again_is_no_longer_offered(monkeypatch):
     monkeypatch.setattr(fastpath, "_state_decimal", lambda it: None)  # every state refused
     text = "\n".join(["o100 sub", *_moves(70, 1), "o100 endsub", "G21 G90 G1 F100",
                       "o200 repeat [50]", "o100 call", "o200 endrepeat", "M30"]) + "\n"
-    run = interpret(text, MACHINE)
+    run = interpret_text(text, MACHINE)
     list(run.segments())
     assert run.fast_lines == 0
     assert max(calls.count(p) for p in set(calls)) == fastpath.MAX_DECLINES
@@ -171,7 +171,7 @@ def test_language_programs_stream_in_bounded_chunks_and_memory():
         return "o100 sub\nG0 Z5\no100 endsub\nG21 G90 G1 F100\n" + "\n".join(_moves(n, 4)) + "\no100 call\nM30\n"
 
     text = program(3000)
-    run = interpret(text, MACHINE)
+    run = interpret_text(text, MACHINE)
     sizes = [len(c) for c in fastpath.run_with_fastpath(run, block_bytes=4000)]
     assert sum(sizes) == 3001 and max(sizes) <= 4000 // len("X0.00 Y0.00\n") + 1
     assert run.fast_lines == 3000  # the moves ("G21 G90 G1 F100" is declined, the run retried a line on)
@@ -180,7 +180,7 @@ def test_language_programs_stream_in_bounded_chunks_and_memory():
     for n in (20_000, 80_000):
         text = program(n)
         tracemalloc.start()
-        run = interpret(text, MACHINE)
+        run = interpret_text(text, MACHINE)
         segs = sum(len(c) for c in fastpath.run_with_fastpath(run, block_bytes=1 << 16))
         peaks.append(tracemalloc.get_traced_memory()[1])
         tracemalloc.stop()
@@ -202,6 +202,6 @@ def test_prover_verdicts_and_violations_agree_on_runs_handed_over_by_the_languag
             "G1 Z%d" % depth, *moves[::-1], "G0 Z100", "o100 call [60]", "M30"]
     text = "\n".join(sub + main) + "\n"
     assert_same_proof_with_and_without_fast_path(text, CLAMP_MACHINE)
-    run = interpret(text, CLAMP_MACHINE)
+    run = interpret_text(text, CLAMP_MACHINE)
     sum(len(c) for c in run)
     assert run.fast_lines >= 160

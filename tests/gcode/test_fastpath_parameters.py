@@ -13,7 +13,7 @@ from __future__ import annotations
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from nczones.gcode import fastpath, interpret
+from nczones.gcode import fastpath, interpret_text
 from tests.gcode.test_fastpath_blocks import MACHINE, _fast, _full
 
 PARAMETER_LINES = (
@@ -69,7 +69,7 @@ def test_parameter_program_takes_the_fast_path_and_reads_the_state_after_a_fast_
     moves = [f"X{k}.5 Y{k % 3}" for k in range(100)]
     text = "\n".join(["G21 G90 G1 F100", "#<x0> = 2", *moves, "#<_end_x> = #5420",
                       "G1 X[#<_end_x> + #<x0>] Y#<_y>", *moves, "M30"]) + "\n"
-    run = interpret(text, MACHINE)
+    run = interpret_text(text, MACHINE)
     segs = list(run.segments())
     assert run.fast_lines == 200
     after = segs[100]  # the move that reads the position the fast run left
@@ -78,7 +78,7 @@ def test_parameter_program_takes_the_fast_path_and_reads_the_state_after_a_fast_
 
 
 def test_control_flow_still_takes_the_whole_program_to_the_language_layer():
-    it = interpret("", MACHINE).interpreter
+    it = interpret_text("", MACHINE).interpreter
     plain = "G1 X1 F1\n"
     for text in ("#1 = 2\n", "G1 X[1 + 2]\n", "(M98 in a comment) #1 = 5\n", "T#<tool_no> M6\n",
                  "#<m98> = 1 (a name is not code)\n"):
@@ -106,7 +106,7 @@ def test_m98_m99_prefilter_is_the_regular_expression_search(pieces):
 def test_blocks_passed_over_unclassified_have_no_long_run(kinds, repeats):
     """_may_have_long_run is False only for blocks whose classification has no run of MIN_RUN
     simple lines: the pre-test never takes a run away from the fast path."""
-    it = interpret("", MACHINE).interpreter
+    it = interpret_text("", MACHINE).interpreter
     text = "".join(f"{k}\n" * n for k, n in zip(kinds, repeats))
     blk = text.encode()
     simple = fastpath._classify(blk, it)[0]

@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.errors import program_lines
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.prover import source_lines
 from tests.gcode.test_fastpath_blocks import MACHINE
 
@@ -37,8 +37,8 @@ def programs_with_odd_characters(draw):
 @settings(max_examples=40, deadline=None, derandomize=True, database=None)
 @given(programs_with_odd_characters())
 def test_segment_source_text_is_the_line_the_language_layer_read(text):
-    full = [(s.span.line, s.span.text) for s in interpret(text, MACHINE, fast=False).segments()]
-    run = interpret(text, MACHINE)
+    full = [(s.span.line, s.span.text) for s in interpret_text(text, MACHINE, fast=False).segments()]
+    run = interpret_text(text, MACHINE)
     fast = [(s.span.line, s.span.text) for s in run.segments()]
     assert run.fast_lines > 0
     assert fast == full

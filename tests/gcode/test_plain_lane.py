@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 
 import nczones.gcode.program as program_module
 from nczones.errors import GcodeError
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.gcode.interpreter import Interpreter
 from nczones.gcode.lexer import PlainBlock
 from nczones.gcode.program import iter_blocks
@@ -35,7 +35,7 @@ MACHINE = parse_machine(
 
 
 def _result(text: str, machine=MACHINE, block_delete=False):
-    run = interpret(text, machine, fast=False, block_delete=block_delete)
+    run = interpret_text(text, machine, fast=False, block_delete=block_delete)
     try:
         segs = [(s.kind, s.start, s.end, s.block, s.span.line, s.span.text, s.feed_mm_min, s.tool_length,
                  s.tool_register, s.centre, s.clockwise, s.dwell_s, s.derived)
@@ -186,7 +186,7 @@ def _chunked(text: str, chunk_size: int, lane: bool):
     with pytest.MonkeyPatch.context() as mp:
         if not lane:
             mp.setattr(Interpreter, "lane_for_blocks", lambda self: None)
-        run = interpret(text, MACHINE, fast=False, chunk_size=chunk_size)
+        run = interpret_text(text, MACHINE, fast=False, chunk_size=chunk_size)
         chunks = []
         try:
             for chunk in run:

@@ -10,7 +10,7 @@ import jsonschema
 import pytest
 
 from nczones.machine import load_machine
-from nczones.prover import Verdict, verify
+from nczones.prover import Verdict, verify, verify_text
 from nczones.prover.render import render_text, to_json_dict
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -94,6 +94,6 @@ def test_max_violations_caps_the_list():
     case = next(c for c in CASES if c["program"].endswith("notch_dip.ngc"))
     m = load_machine(EX / case["machine"])
     text = "G21 G90 G54\nG0 X-250 Y300\nG1 Y130 F500\n" + "G1 X50\nG1 X-250\n" * 5
-    r = verify(text, m, max_violations=3)
+    r = verify_text(text, m, max_violations=3)
     assert r.verdict is Verdict.UNSAFE and len(r.violations) == 3 and r.truncated
     assert [v.line for v in r.violations] == [4, 5, 6]

@@ -16,9 +16,9 @@ from nczones.controller.recovery import (
     tool_change_config,
 )
 from nczones.errors import MachineFileError
-from nczones.gcode import interpret
+from nczones.gcode import interpret, interpret_text
 from nczones.machine import load_machine, parse_machine
-from nczones.prover import verify
+from nczones.prover import verify, verify_text
 from nczones.prover.recovery import verify_recovery
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -204,14 +204,14 @@ def test_arc_break_points_are_proved_on_the_circle():
     # an arc left of the clamp (every break crashes) and one right of it (none does)
     prog = "G21 G90 G17 G54\nG43 H1\nG0 X100 Y100 Z110\nG2 X200 Y100 I50 J0 F600\nG0 Z270\nG0 X450 Y100\n" \
            "G1 Z110 F300\nG3 X550 Y100 I50 J0 F600\nG0 Z270\n"
-    out = verify_recovery(interpret(prog, m), m)
+    out = verify_recovery(interpret_text(prog, m), m)
     assert [(v.break_line, v.leg) for v in out.violations] == [(4, "to tool change")]
     v = out.violations[0]
     bp = dict(v.break_point)
     assert (bp["X"] - 150) ** 2 + (bp["Y"] - 100) ** 2 == 50 ** 2  # exactly on the circle
-    r = simulate(interpret(prog, m), m, break_at=(4, v.break_parameter))
+    r = simulate(interpret_text(prog, m), m, break_at=(4, v.break_parameter))
     assert r.alarms and r.alarms[0].kind == "recovery"
-    assert simulate(interpret(prog, m), m, break_at=(8, F(1, 2))).completed
+    assert simulate(interpret_text(prog, m), m, break_at=(8, F(1, 2))).completed
 
 
 def test_recovery_legs_follow_the_section():
@@ -256,7 +256,7 @@ def test_recovery_under_parameter_ranges_is_never_called_safe():
     """The recovery proof is nominal-only, so with ranges the verdict must not be 'safe'."""
     machine = load_machine(EX / "machines" / "mill_toolchange_high.toml")
     program = (EX / "programs" / "recovery_clamp.ngc").read_text()
-    assert verify(program, machine, recovery="start").verdict.label == "safe"
-    ranged = verify(program, machine, recovery="start", params=["G54.X=-0.001..0.001"])
+    assert verify_text(program, machine, recovery="start").verdict.label == "safe"
+    ranged = verify_text(program, machine, recovery="start", params=["G54.X=-0.001..0.001"])
     assert ranged.verdict.label != "safe"
     assert any(r.code == "RC204" for r in ranged.reasons)

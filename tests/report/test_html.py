@@ -8,8 +8,9 @@ from html.parser import HTMLParser
 
 import pytest
 
+from nczones.gcode.source import program_text
 from nczones.machine import parse_machine
-from nczones.prover import verify
+from nczones.prover import verify_text
 from nczones.report.html import render_html
 
 from .helpers import EX, GOLDEN, run_example
@@ -67,8 +68,8 @@ min = { X = "0", Y = "0" }
 max = { X = "10", Y = "10" }
 ''', "evil<1>.toml")
     prog = "(<img src=x onerror=alert[2]>)\nG1 X20 F100\n"
-    result = verify(prog, m, file="<b>evil</b>.ngc")
-    page = render_html(result, m, prog)
+    result = verify_text(prog, m, file="<b>evil</b>.ngc")
+    page = render_html(result, m, program_text(prog, "<b>evil</b>.ngc"))
     assert "<script>alert" not in page and "<img" not in page and "<b>evil" not in page
     assert "&lt;script&gt;alert(1)&lt;/script&gt;" in page and "&lt;img src=x onerror=alert[2]&gt;" in page
     assert "a&lt;b&gt;&amp;&quot;zone&quot;" in page
@@ -91,8 +92,8 @@ def test_unknown_report_lists_the_reason():
 def test_long_program_listing_is_windowed():
     m_result, m = run_example("programs/notch_dip.ngc", "grinder.toml")
     text = "G21 G90 G54\nG0 X-250 Y300\nG1 Y130 F500\n" + "G1 X-240\n" * 3000 + "G1 X50\n"
-    result = verify(text, m, file="long.ngc")
-    page = render_html(result, m, text, listing_limit=500, context=3)
+    result = verify_text(text, m, file="long.ngc")
+    page = render_html(result, m, program_text(text, "long.ngc"), listing_limit=500, context=3)
     assert 'id="L3004"' in page and 'class="line hot" id="L3004"' in page and 'id="L1500"' not in page
     assert "not shown" in page
 

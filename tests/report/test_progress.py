@@ -4,9 +4,9 @@ import io
 import subprocess
 import sys
 
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.machine import load_machine
-from nczones.prover import verify
+from nczones.prover import verify_text
 from nczones.report.progress import ProgressBar, progress_for
 
 from .helpers import EX, MACHINES
@@ -29,7 +29,7 @@ def test_bar_draws_on_a_terminal(monkeypatch):
     bar.min_interval = 0
     m = load_machine(MACHINES / "grinder.toml")
     prog = _long_program()
-    result = verify(prog, m, progress=bar)
+    result = verify_text(prog, m, progress=bar)
     bar.close()
     assert result.verdict.label == "safe"
     out = stream.getvalue()
@@ -54,7 +54,7 @@ def test_dumb_terminal_is_silent(monkeypatch):
 def test_verify_reports_increasing_lines_up_to_the_last():
     m = load_machine(MACHINES / "grinder.toml")
     seen = []
-    verify(_long_program(), m, progress=lambda line, total: seen.append((line, total)))
+    verify_text(_long_program(), m, progress=lambda line, total: seen.append((line, total)))
     lines = [s[0] for s in seen]
     assert lines == sorted(lines) and lines[-1] == 403 and {s[1] for s in seen} == {403}
 
@@ -64,7 +64,7 @@ def test_simulate_reports_lines():
 
     m = load_machine(MACHINES / "grinder.toml")
     seen = []
-    run = interpret("G21 G90 G54\nG0 X-250 Y300\nG1 Y150 F5000\nG1 X-240\nG1 X-250\n", m)
+    run = interpret_text("G21 G90 G54\nG0 X-250 Y300\nG1 Y150 F5000\nG1 X-240\nG1 X-250\n", m)
     res = simulate(run, m, progress=lambda line, total: seen.append((line, total)))
     assert not res.alarms
     assert [s[0] for s in seen] == [2, 3, 4, 5] and seen[-1][1] == 5

@@ -164,10 +164,10 @@ def _dist_to_chord(q, a, b) -> float:
 
 def test_reports_say_splines_were_proved_on_the_programmed_curve():
     from nczones import load_machine
-    from nczones.prover import verify
+    from nczones.prover import verify_text
 
     program = "G21 G90 G17 F100\nG0 X10 Y10 Z10\nG5.2 X10 Y10 P1 L3\nX20 Y30 P1\nX40 Y10 P1\nG5.3\nM2\n"
-    result = verify(program, load_machine(ROOT / "specs" / "machines" / "mill.toml"))
+    result = verify_text(program, load_machine(ROOT / "specs" / "machines" / "mill.toml"))
     assert any("exact programmed curve" in n for n in result.notes)
-    plain = verify("G21 G90\nG0 X10 Y10 Z10\nM2\n", load_machine(ROOT / "specs" / "machines" / "mill.toml"))
+    plain = verify_text("G21 G90\nG0 X10 Y10 Z10\nM2\n", load_machine(ROOT / "specs" / "machines" / "mill.toml"))
     assert not any("spline" in n for n in plain.notes)

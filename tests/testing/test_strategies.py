@@ -58,14 +58,14 @@ def test_boundary_values_lists_every_edge_of_the_table():
 @settings(max_examples=40, deadline=None, derandomize=True)
 @given(st.data())
 def test_every_zone_kind_and_three_axes_give_programs_the_interpreter_models(data):
-    from nczones.gcode import interpret
+    from nczones.gcode import interpret_text
 
     machine = data.draw(machines(axes=("X", "Y", "Z"), allow_kinds=("stepped", "box", "polygon"), size=100,
                                  pulse="0.01"))
     assert machine.allowed.contains(machine.point(machine.start))
     assert sorted(machine.tool_lengths) == [1, 2]
     text = data.draw(programs(machine, max_blocks=8, subprograms=True, inside_bias=0.5))
-    run = interpret(text, machine, fast=False)
+    run = interpret_text(text, machine, fast=False)
     segs = list(run.segments())
     assert not run.unsupported
     assert segs and segs[0].start == machine.start
