@@ -133,7 +133,7 @@ def _run_check_machine(args: argparse.Namespace) -> int:
 
 def register_check_machine(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("check-machine", help="validate a machine file and summarise it")
-    p.add_argument("machine_file", metavar="M.toml")
+    p.add_argument("machine_file", metavar="M.toml", help="the machine file to check (specs/machine-file.md)")
     p.set_defaults(handler=_run_check_machine)
 
 
@@ -146,7 +146,7 @@ def _load_optional_registrars() -> None:
     import importlib
 
     for module in ("nczones.prover.command", "nczones.controller.command", "nczones.controller.homing_command",
-                   "nczones.report.command", "nczones.imports.command"):
+                   "nczones.report.command", "nczones.imports.command", "nczones.replay"):
         try:
             importlib.import_module(module)
         except ModuleNotFoundError as exc:
@@ -185,10 +185,28 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("nczones: interrupted", file=sys.stderr)
         return 130
+    except OSError as exc:  # reading or writing the user's files and streams (one line, never a traceback)
+        _quiet_stdout(exc)
+        where = f" {exc.filename}" if exc.filename is not None else (
+            " standard output" if isinstance(exc, BrokenPipeError) else "")
+        print(f"nczones: error: cannot read or write{where}: {exc.strerror or exc}", file=sys.stderr)
+        return EXIT_INPUT
     except Exception:  # noqa: BLE001 - an internal bug, never the user's fault
         traceback.print_exc()
         print("nczones: internal error (the traceback above is a bug in nczones; please report it)", file=sys.stderr)
         return EXIT_INTERNAL
+
+
+def _quiet_stdout(exc: OSError) -> None:
+    """After a broken pipe, point standard output at /dev/null so the interpreter's final flush stays quiet."""
+    if isinstance(exc, BrokenPipeError):
+        import os
+
+        try:
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+        except (OSError, ValueError):
+            pass
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -29,9 +29,13 @@ __all__ = [
     "exact",
     "exact_or_none",
     "format_decimal",
+    "format_rational",
+    "parse_rational",
+    "format_exact",
     "is_decimal_fraction",
     "decimal_places",
     "to_float",
+    "seconds",
     "MAX_ABS_LENGTH",
 ]
 
@@ -194,6 +198,57 @@ def format_decimal(q: Fraction, places: int | None = None) -> str:
     if text in ("0", "0.0") and not marker:
         sign = ""
     return f"{sign}{text}{marker}"
+
+
+def format_rational(q: Fraction) -> str:
+    """Write ``q`` exactly as ``"p/q"`` (``"p"`` for an integer); :func:`parse_rational` reads it back.
+
+    >>> format_rational(Fraction(1900, 3)), format_rational(Fraction(-5)), format_rational(Fraction("0.25"))
+    ('1900/3', '-5', '1/4')
+    """
+    return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+
+
+_RATIONAL_RE = re.compile(r"[+-]?\d+(?:/\d+)?\Z")
+
+
+def parse_rational(text: str) -> Fraction:
+    """Read ``"p/q"`` or ``"p"`` (what :func:`format_rational` writes), or a decimal, exactly.
+
+    >>> parse_rational("1900/3"), parse_rational("-0.5")
+    (Fraction(1900, 3), Fraction(-1, 2))
+    >>> parse_rational("1/0")
+    Traceback (most recent call last):
+    ...
+    nczones.errors.InvalidArgument: '1/0' is not an exact rational: expected p/q with q > 0, or a decimal
+    """
+    t = text.strip() if isinstance(text, str) else ""
+    if _RATIONAL_RE.match(t) and not t.endswith("/0"):
+        return Fraction(t)
+    if DECIMAL_RE.match(t):
+        return parse_decimal(t)
+    raise InvalidArgument(f"{text!r} is not an exact rational: expected p/q with q > 0, or a decimal")
+
+
+def format_exact(q: Fraction) -> str:
+    """A terminating decimal as a decimal (``"0.25"``), anything else as ``"p/q"``: exact either way.
+
+    >>> format_exact(Fraction(1, 4)), format_exact(Fraction(1, 3))
+    ('0.25', '1/3')
+    """
+    return format_decimal(q) if is_decimal_fraction(q) else format_rational(q)
+
+
+def seconds(t: float | Fraction) -> float:
+    """A duration as every JSON report writes it: a number of seconds, rounded to the microsecond.
+
+    One format for wall-clock timings (``verify``), simulated time
+    (``simulate``) and homing event times (``home``).
+
+    >>> seconds(Fraction(1, 3)), seconds(0.12345678), seconds(2)
+    (0.333333, 0.123457, 2.0)
+    """
+    return round(float(t), 6)
 
 
 def to_float(q: Fraction) -> float:

@@ -16,11 +16,12 @@ from __future__ import annotations
 import decimal
 import difflib
 import enum
+import hashlib
 import json
 import re
 import tomllib
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from pathlib import Path
 from types import MappingProxyType
@@ -99,6 +100,8 @@ class Machine:
     cutter_compensation: str = "none"
     #: Tool diameters by tool number (``[tool_diameters]`` T<n>), for G41/G42 D<n>.
     tool_diameters: Mapping[int, Fraction] = field(default_factory=lambda: MappingProxyType({}))
+    #: SHA-256 of the machine file's bytes (set by :func:`load_machine`; empty for text given directly).
+    sha256: str = ""
 
     @property
     def axis_names(self) -> tuple[str, ...]:
@@ -506,16 +509,19 @@ def load_machine(path: str | Path) -> Machine:
     """
     p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
+        data = p.read_bytes()
     except OSError as exc:
         raise MachineFileError(
             Diagnostic("ZN099", f"cannot read the machine file: {exc.strerror or exc}", file=str(path))
         ) from None
+    try:
+        text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise MachineFileError(
             Diagnostic("ZN099", f"the machine file is not UTF-8 text ({exc.reason} at byte {exc.start})", file=str(path))
         ) from None
-    return parse_machine(text, str(path))
+    text = text.replace("\r\n", "\n").replace("\r", "\n")  # universal newlines, as text files are read
+    return replace(parse_machine(text, str(path)), sha256=hashlib.sha256(data).hexdigest())
 
 
 def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:

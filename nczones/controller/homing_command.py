@@ -16,7 +16,7 @@ from typing import Any
 
 from .. import cli
 from ..errors import InvalidArgument
-from ..exact import format_decimal
+from ..exact import format_decimal, seconds
 from ..machine import Machine, load_machine
 from .homing import HomingConfig, HomingRun, homing_config, simulate_homing
 
@@ -70,7 +70,7 @@ def _run_json(run: HomingRun) -> dict[str, Any]:
         "shift_source": run.shift_source,
         "events": [
             {"kind": e.kind.name.lower(), "pulses": e.pulses, "position": format_decimal(e.position),
-             "time_s": format_decimal(e.time_s, 6), "text": e.text}
+             "time_s": seconds(e.time_s), "text": e.text}
             for e in run.events
         ],
         "alarm": None if run.alarm is None else {"kind": run.alarm.kind.name.lower(), "message": run.alarm.message},
@@ -164,7 +164,7 @@ def _prove(args: argparse.Namespace, machine: Machine, configs: dict[str, Homing
                 "edge_to_grid": format_decimal(r.edge_to_grid), "jitter_plus_lag": format_decimal(r.margin),
                 "window_clear": r.window_clear, "ok": r.ok,
                 "proofs": [{"name": p.name, "status": p.status.value, "statement": p.statement,
-                            "reason": p.reason, "seconds": round(p.seconds, 4),
+                            "reason": p.reason, "time_s": seconds(p.seconds),
                             "counterexample": cex_json(p, r.axis)} for p in r.proofs],
             })
         print(json.dumps(out, indent=2))
@@ -209,14 +209,16 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("home", help="simulate homing (near-zero dog, grid point, grid shift) or prove it exact",
                        description="Simulate homing of one axis or all axes pulse by pulse, or prove with Z3 "
                                    "when it ends exactly at machine zero (see specs/homing.md).")
-    p.add_argument("--machine", required=True, metavar="M.toml")
+    p.add_argument("--machine", required=True, metavar="M.toml",
+                   help="the machine file with [homing.<axis>] sections (specs/homing.md)")
     p.add_argument("--axis", help="home only this axis (default: every axis with a [homing.<axis>] section)")
     p.add_argument("--phase", metavar="P", help="detector phase in mm (decimal or p/q); a phase other than the "
                    "configured one voids the stored grid shift, which is measured again at installation")
     p.add_argument("--trip-offset", metavar="T", help="where the near-zero switch trips relative to the dog edge, "
                    "mm in the search direction, within +-switch_jitter (default 0)")
     p.add_argument("--prove", action="store_true", help="prove the homing claims with Z3 instead of simulating")
-    p.add_argument("--format", choices=("text", "json"), default="text")
+    p.add_argument("--format", choices=("text", "json"), default="text",
+                   help="text (readable) or json (times in seconds as numbers, positions as exact decimals)")
     p.set_defaults(handler=_run_home)
 
 

@@ -45,7 +45,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidArgument, program_lines
-from ..exact import format_decimal
+from ..exact import format_decimal, seconds
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
 from .arcs import arc_positions, path_fractions_moved
@@ -243,7 +243,7 @@ class SimulationResult:
                     "zones": list(a.zones),
                     "position": pt(a.position),
                     "pulse_position": dict(zip(self.axes, a.pulse_position)),
-                    "time_s": a.time_s,
+                    "time_s": seconds(a.time_s),
                     "blocked": [f"{ax}{'+' if s > 0 else '-'}" for ax, s in a.blocked],
                     "first_outside": pt(a.first_outside),
                     "overshoot_pulses": a.overshoot_pulses,
@@ -255,7 +255,7 @@ class SimulationResult:
             "program_position": pt(self.program_position),
             "pulses": dict(zip(self.axes, self.pulses)),
             "servo_pulses": dict(zip(self.axes, self.servo_pulses)),
-            "simulated_time_s": self.simulated_time_s,
+            "simulated_time_s": seconds(self.simulated_time_s),
             "motions": self.motions,
             "steps": self.steps,
             "monitor_checks": self.monitor_checks,
@@ -265,7 +265,7 @@ class SimulationResult:
             "servo_max_deviation_mm": None if self.servo is None else self.servo.max_deviation_mm,
             "notes": list(self.notes),
             "events": [
-                {"time_s": e.time_s, "kind": e.kind, "block": e.block, "line": e.line, "data": _jsonable(dict(e.data))}
+                {"time_s": seconds(e.time_s), "kind": e.kind, "block": e.block, "line": e.line, "data": _jsonable(dict(e.data))}
                 for e in self.events
             ],
         }

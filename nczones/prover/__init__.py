@@ -2,7 +2,8 @@
 
 Public API
 ----------
-:func:`verify` (program text or path + machine) and :func:`verify_segments`
+:func:`verify` (a program file + machine; also named :func:`verify_file`),
+:func:`verify_text` (program text + machine) and :func:`verify_segments`
 (motion segments, no text) return a :class:`Result` with an ordered
 :class:`Verdict` (``UNSAFE < UNKNOWN < SAFE``, so "worst wins" is ``min``),
 the re-checked counterexamples (:class:`Violation`), the reasons for
@@ -25,9 +26,9 @@ the re-checked counterexamples (:class:`Violation`), the reasons for
 ... min = { X = "0", Y = "0" }
 ... max = { X = "10", Y = "10" }
 ... ''')
->>> verify("G1 X10 Y10 F100\\n", m).verdict.label
+>>> verify_text("G1 X10 Y10 F100\\n", m).verdict.label
 'safe'
->>> r = verify("G1 X10 F100\\nG3 X10 Y10 I0 J5\\n", m)
+>>> r = verify_text("G1 X10 F100\\nG3 X10 Y10 I0 J5\\n", m)
 >>> r.verdict.label, r.violations[0].line, r.violations[0].zone
 ('unsafe', 2, 'travel')
 """
@@ -36,16 +37,22 @@ from __future__ import annotations
 
 import re
 import time
+from collections.abc import Callable
 from fractions import Fraction
+from typing import Any
 
 from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import parse_decimal
+from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
+from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
 from ..machine import Machine
 from .core import Prover, verify_segments
 from .result import ParamRange, Reason, Result, Verdict, Violation
 
 __all__ = [
     "verify",
+    "verify_file",
+    "verify_text",
     "verify_segments",
     "parse_param",
     "Verdict",
@@ -111,23 +118,32 @@ def parse_param(text: str, machine: Machine) -> ParamRange:
 
 
 def verify(
-    program,
+    program: ProgramLike,
     machine: Machine,
     *,
     margin: Fraction | str | int = 0,
-    params: tuple[ParamRange, ...] | list[str] = (),
+    params: tuple[ParamRange, ...] | list[str] | tuple[str, ...] = (),
     engine: str = "auto",
     max_violations: int = 20,
     file: str | None = None,
     arc_tolerance: Fraction | str | None = None,
-    progress=None,
+    progress: Callable[[int, int | None], object] | None = None,
     recovery: str | None = None,
+    max_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
 ) -> Result:
-    """Verify a G-code program (text or path) on a machine (DESIGN §5).
+    """Verify the G-code program *file* ``program`` on a machine (DESIGN §5).
+
+    ``program`` is a path (``str`` or ``PathLike``: a ``str`` is never read
+    as G-code text, use :func:`verify_text` for text) or a
+    :class:`~nczones.gcode.source.ProgramSource`.  A file that cannot be
+    read, is not UTF-8 text, or is empty raises
+    :class:`~nczones.errors.GcodeError` (``GC100``, ``GC108``, ``GC109``).
 
     ``params`` may be :class:`ParamRange` values or ``"NAME=LO..HI"`` strings.
     ``arc_tolerance`` is passed to the interpreter (largest end-point mismatch
     of an I/J arc; such arcs are proved as spirals, over-approximated).
+    ``max_iterations`` bounds every loop of the program (per entry into it);
+    a loop that runs longer makes the verdict ``unknown`` (``GC302``).
     A code the interpreter cannot model makes the verdict ``unknown`` unless
     a violation before it already makes it ``unsafe``.  G-code errors raise
     :class:`~nczones.errors.GcodeError`.  ``progress``, if given, is called as
@@ -138,9 +154,53 @@ def verify(
     tool-break recovery (``[tool_change]``) from every break point of every
     cutting motion (:mod:`nczones.prover.recovery`); its violations have
     ``kind == "recovery"``.
+
+    The result names what was verified (:attr:`Result.program_sha256`, the
+    machine file and its SHA-256) and every setting that changes the verdict
+    (:attr:`Result.settings`), so ``nczones replay`` can re-check it.
+
+    >>> from nczones.machine import load_machine
+    >>> r = verify("specs/examples/programs/notch_dip.ngc", load_machine("specs/machines/grinder.toml"))
+    >>> r.verdict.label, r.violations[0].line, r.program_sha256[:12]
+    ('unsafe', 5, '421c2299bb06')
+    >>> verify("specs/examples/programs/O1000", load_machine("specs/machines/grinder.toml"))
+    Traceback (most recent call last):
+    ...
+    nczones.errors.GcodeError: specs/examples/programs/O1000: error[GC100]: cannot read the program: No such file or directory
     """
-    from ..exact import exact
-    from ..gcode import interpret
+    source = as_source(program, file=file, text_function="verify_text").require_code()
+    return _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
+                   arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
+                   max_iterations=max_iterations)
+
+
+#: :func:`verify` under the name that says what it takes.
+verify_file = verify
+
+
+def verify_text(text: str, machine: Machine, *, file: str = "<program>", **options: Any) -> Result:
+    """Verify program *text* (``file`` names it in reports); options as :func:`verify`.
+
+    Empty text (or whitespace only) raises :class:`~nczones.errors.GcodeError` ``GC109``.
+    """
+    return _verify(program_text(text, file).require_code(), machine, **options)
+
+
+def _verify(
+    source: ProgramSource,
+    machine: Machine,
+    *,
+    margin: Fraction | str | int = 0,
+    params: tuple[ParamRange, ...] | list[str] | tuple[str, ...] = (),
+    engine: str = "auto",
+    max_violations: int = 20,
+    arc_tolerance: Fraction | str | None = None,
+    progress: Callable[[int, int | None], object] | None = None,
+    recovery: str | None = None,
+    max_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+) -> Result:
+    from ..exact import exact, format_exact
+    from ..gcode import DEFAULT_ARC_TOLERANCE, interpret
 
     t0 = time.perf_counter()
     if isinstance(margin, str):
@@ -149,8 +209,25 @@ def verify(
     if not isinstance(max_violations, int) or max_violations < 1:
         raise InvalidArgument(f"max_violations must be a positive integer, got {max_violations!r}")
     ranges = tuple(parse_param(p, machine) if isinstance(p, str) else p for p in params)
-    extra = {} if arc_tolerance is None else {"arc_tolerance": arc_tolerance}
-    run = interpret(program, machine, file=file, track_dependencies=bool(ranges), **extra)
+    extra: dict[str, Any] = {"max_loop_iterations": max_iterations}
+    if arc_tolerance is not None:
+        extra["arc_tolerance"] = arc_tolerance
+    run = interpret(source, machine, track_dependencies=bool(ranges), **extra)
+    tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
+    # Every option that can change the verdict, as JSON values: reports carry them and
+    # `nczones replay` re-runs with them.  A new option of verify() belongs here too.
+    settings: dict[str, object] = {
+        "margin": format_exact(margin),
+        "params": tuple(f"{r.name}={format_exact(r.written[0])}..{format_exact(r.written[1])}" for r in ranges),
+        "engine": engine,
+        "recovery": recovery,
+        "arc_tolerance": tolerance if isinstance(tolerance, str) else format_exact(exact(tolerance)),
+        "max_iterations": max_iterations,
+        "max_violations": max_violations,
+        "block_delete": run.block_delete,
+        "dialect": getattr(machine, "dialect", "linuxcnc"),
+    }
+
     def with_text(seq):
         from ..motion import MotionChunk
 
@@ -192,7 +269,7 @@ def verify(
     if recovery is not None:
         from .recovery import verify_recovery
 
-        rerun = interpret(program, machine, file=file, **extra)
+        rerun = interpret(source, machine, **extra)
         rec = verify_recovery(rerun, machine, variant=recovery, margin=margin, max_violations=max_violations)
         violations = tuple(sorted(violations + tuple(replace(v, span=fix(v.span)) for v in rec.violations),
                                   key=lambda v: (v.block, v.kind != "motion")))
@@ -210,7 +287,9 @@ def verify(
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
     timings = (("total_s", time.perf_counter() - t0),) + result.timings
     return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes,
-                   timings=timings, extra={"counts": run.counts})
+                   timings=timings, extra={"counts": run.counts}, program_sha256=source.sha256,
+                   machine_name=machine.name, machine_file=machine.source, machine_sha256=machine.sha256,
+                   settings=tuple(settings.items()))
 
 
 def _line_count(text: str) -> int:

@@ -1,51 +1,190 @@
-"""``nczones verify`` (DESIGN §8): exit 0 safe, 1 unsafe, 2 bad input, 3 unknown."""
+"""``nczones verify`` (DESIGN §8): exit 0 safe, 1 unsafe, 2 bad input, 3 unknown.
+
+``nczones verify PROGRAM... --machine M.toml`` verifies each program (a
+path; ``-`` reads standard input) and writes one report per program; the
+exit status is the worst outcome: 1 if any program is unsafe, else 2 if any
+could not be read or parsed, else 3 if any is unknown, else 0.  With
+``--format json`` several programs give a JSON list (one program: the
+report object); with ``--format sarif`` one SARIF log with one run.
+
+The parts are one function each so that later options slot in: the options
+are read by :func:`verify_options`, one program is verified by
+:func:`verify_one`, the reports are written by :func:`write_output`.
+"""
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
+from collections.abc import Sequence
+from fractions import Fraction
+from typing import Any
 
 from .. import cli
 from ..errors import Diagnostic, InputError
 from ..exact import parse_decimal
 
-__all__ = ["register"]
+__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "program_source"]
+
+#: Exit statuses from worst to best: several programs exit with the first one that occurs.
+EXIT_ORDER = (cli.EXIT_FAIL, cli.EXIT_INPUT, cli.EXIT_UNKNOWN, cli.EXIT_OK)
+
+
+def worst_exit(codes: Sequence[int]) -> int:
+    """The exit status of several programs: unsafe (1) before bad input (2) before unknown (3) before safe (0).
+
+    >>> worst_exit([0, 3, 2]), worst_exit([3, 1, 2]), worst_exit([])
+    (2, 1, 0)
+    """
+    for code in EXIT_ORDER:
+        if code in codes:
+            return code
+    return cli.EXIT_OK
+
+
+def _command_line_error(code: str, message: str) -> InputError:
+    return InputError(Diagnostic(code, message, file="<command line>"))
+
+
+def verify_options(args: argparse.Namespace, machine) -> dict[str, Any]:
+    """The keyword arguments of :func:`nczones.prover.verify` from the command line (``VF1xx`` errors)."""
+    from . import parse_param
+
+    try:
+        margin = parse_decimal(args.margin)
+    except ValueError:  # InvalidArgument is a ValueError
+        raise _command_line_error("VF102", f"--margin {args.margin!r}: expected a decimal number of mm "
+                                           "(e.g. 0.001)") from None
+    if margin < 0:
+        raise _command_line_error("VF102", f"--margin {args.margin}: must not be negative")
+    if args.max_violations < 1:
+        raise _command_line_error("VF103", f"--max-violations {args.max_violations}: must be at least 1")
+    if args.max_iterations < 1:
+        raise _command_line_error("VF105", f"--max-iterations {args.max_iterations}: must be at least 1")
+    return {
+        "margin": margin,
+        "params": tuple(parse_param(p, machine) for p in args.param),
+        "engine": args.engine,
+        "max_violations": args.max_violations,
+        "recovery": args.recovery,
+        "arc_tolerance": _arc_tolerance(args.arc_tolerance),
+        "max_iterations": args.max_iterations,
+    }
+
+
+def program_source(name: str):
+    """The program ``name`` names: ``-`` is standard input, anything else a file (``GC1xx`` errors)."""
+    from ..gcode.source import load_program, read_stdin
+
+    return (read_stdin() if name == "-" else load_program(name)).require_code()
+
+
+def verify_one(program: str, machine, options: dict[str, Any]):
+    """Read and verify one program (a path or ``-``) with a progress bar on a terminal: (source, result)."""
+    from ..report.progress import progress_for
+    from . import verify
+
+    source = program_source(program)
+    bar = progress_for(sys.stderr, "verify")
+    try:
+        return source, verify(source, machine, progress=bar, **options)
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def check_output_path(path: str | None) -> None:
+    """Fail before verifying when ``--output`` cannot be written (``VF107``)."""
+    if path is None:
+        return
+    parent = os.path.dirname(os.path.abspath(path))
+    problem = None
+    if os.path.isdir(path):
+        problem = "it is a directory"
+    elif not os.path.isdir(parent):
+        problem = f"the directory {os.path.dirname(path) or parent} does not exist"
+    elif not os.access(parent, os.W_OK) or (os.path.exists(path) and not os.access(path, os.W_OK)):
+        problem = "permission denied"
+    if problem:
+        raise _command_line_error("VF107", f"--output {path}: cannot write the report: {problem}")
+
+
+def write_output(path: str | None, text: str) -> None:
+    """Write ``text`` to ``path`` (standard output when None); an OS error is ``VF107``, one line."""
+    if path is None:
+        sys.stdout.write(text)
+        return
+    try:
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text)
+    except OSError as exc:
+        raise _command_line_error("VF107", f"--output {path}: cannot write the report: "
+                                           f"{exc.strerror or exc}") from None
+
+
+def _error_entry(program: str, exc: InputError) -> dict[str, Any]:
+    """The JSON list entry of a program that could not be verified."""
+    return {"program": "<stdin>" if program == "-" else program, "verdict": "error",
+            "errors": [{"code": d.code, "message": d.message, "location": str(d.span) if d.span else d.location()}
+                       for d in exc.diagnostics]}
+
+
+def render_many(results: list, errors: list[tuple[int, str, InputError]], args: argparse.Namespace,
+                machine, several: bool) -> str:
+    """The reports of every program in the chosen format (see the module docstring)."""
+    from ..report import render_report
+
+    if args.format == "json" and several:
+        import json
+
+        from .render import to_json_dict
+
+        entries: list[tuple[int, dict[str, Any]]] = [(k, to_json_dict(r)) for k, _, r in results]
+        entries += [(k, _error_entry(p, e)) for k, p, e in errors]
+        return json.dumps([e for _, e in sorted(entries, key=lambda x: x[0])], indent=2, ensure_ascii=False) + "\n"
+    if args.format == "sarif":
+        from ..report.sarif import render_sarif
+
+        return render_sarif([r for _, _, r in results], machine=machine, base=args.sarif_root,
+                            files_from=os.getcwd())
+    color = args.output is None and args.format == "text" and _color(sys.stdout)
+    return "".join(render_report(r, args.format, machine=machine, program=source, color=color)
+                   for _, source, r in results)
 
 
 def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
-    from ..report import render_report
-    from ..report.progress import progress_for
-    from . import parse_param, verify
 
+    programs: list[str] = args.programs
+    if programs.count("-") > 1:
+        raise _command_line_error("VF106", "standard input (-) can be read only once")
+    if args.format == "html" and len(programs) > 1:
+        raise _command_line_error("VF106", f"--format html writes the report of one program; {len(programs)} "
+                                           "were given (use json, sarif or text for several)")
+    if args.sarif_root is not None and not os.path.isdir(args.sarif_root):
+        raise _command_line_error("VF108", f"--sarif-root {args.sarif_root}: not a directory")
+    check_output_path(args.output)
     machine = load_machine(args.machine)
-    try:
-        margin = parse_decimal(args.margin)
-    except ValueError:  # InvalidArgument is a ValueError
-        raise InputError(Diagnostic("VF102", f"--margin {args.margin!r}: expected a decimal number of mm "
-                                             "(e.g. 0.001)", file="<command line>")) from None
-    if margin < 0:
-        raise InputError(Diagnostic("VF102", f"--margin {args.margin}: must not be negative", file="<command line>"))
-    if args.max_violations < 1:
-        raise InputError(Diagnostic("VF103", f"--max-violations {args.max_violations}: must be at least 1",
-                                    file="<command line>"))
-    params = tuple(parse_param(p, machine) for p in args.param)
-    bar = progress_for(sys.stderr, "verify")
-    try:
-        result = verify(args.program, machine, margin=margin, params=params, engine=args.engine,
-                        max_violations=args.max_violations, progress=bar, recovery=args.recovery,
-                        arc_tolerance=_arc_tolerance(args.arc_tolerance))
-    finally:
-        if bar is not None:
-            bar.close()
-    text = render_report(result, args.format, machine=machine, program=args.program,
-                         color=args.output is None and args.format == "text" and _color(sys.stdout))
-    if args.output:
-        with open(args.output, "w", encoding="utf-8") as fh:
-            fh.write(text)
-    else:
-        sys.stdout.write(text)
-    return result.verdict.exit_code
+    options = verify_options(args, machine)
+    results: list = []
+    errors: list[tuple[int, str, InputError]] = []
+    codes: list[int] = []
+    for k, program in enumerate(programs):
+        try:
+            source, result = verify_one(program, machine, options)
+        except InputError as exc:
+            if len(programs) == 1:
+                raise
+            print(exc.render(), file=sys.stderr)
+            errors.append((k, program, exc))
+            codes.append(cli.EXIT_INPUT)
+            continue
+        results.append((k, source, result))
+        codes.append(result.verdict.exit_code)
+    if results or args.format in ("json", "sarif"):
+        write_output(args.output, render_many(results, errors, args, machine, len(programs) > 1))
+    return worst_exit(codes)
 
 
 def _color(stream) -> bool:
@@ -55,30 +194,52 @@ def _color(stream) -> bool:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("verify", help="prove that a program stays inside the allowed set (or show where not)")
-    p.add_argument("program", metavar="PROGRAM")
-    p.add_argument("--machine", required=True, metavar="M.toml")
-    p.add_argument("--margin", default="0", metavar="D", help="required clearance in mm on every axis")
+    from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
+
+    p = sub.add_parser(
+        "verify", help="prove that programs stay inside the allowed set (or show where not)",
+        description="Prove that every motion of each PROGRAM stays inside the machine's allowed set, or report "
+                    "exact counterexamples. Exit status: 0 safe, 1 unsafe, 2 bad input, 3 unknown; with several "
+                    "programs the worst (1 before 2 before 3 before 0).")
+    p.add_argument("programs", nargs="+", metavar="PROGRAM",
+                   help="G-code program file(s); '-' reads standard input; several files (e.g. a shell glob) "
+                        "give one report each")
+    p.add_argument("--machine", required=True, metavar="M.toml",
+                   help="the machine file: axes, zones, offsets, tool lengths (specs/machine-file.md)")
+    p.add_argument("--margin", default="0", metavar="D", help="required clearance in mm on every axis (default 0)")
     p.add_argument("--param", action="append", default=[], metavar="NAME=LO..HI",
                    help="parameter range: G54.X=-2..2 (offset deviation), H1=195..205 (tool length), "
-                        "start.Z=-10..0 (start deviation), home.X=-0.5..0.5 (homing error)")
+                        "start.Z=-10..0 (start deviation), home.X=-0.5..0.5 (homing error); repeatable")
     p.add_argument("--recovery", choices=("start", "breakpoint"), default=None,
                    help="also prove the automatic tool-break recovery of the machine's [tool_change] "
                         "from every break point, restarting at the sequence start or at the break point")
-    p.add_argument("--engine", choices=("auto", "z3"), default="auto")
-    p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc", help='largest mismatch (mm) of an arc end point with its circle (default 0.002), or "linuxcnc" for LinuxCNC\'s own acceptance rule')
-    p.add_argument("--max-violations", type=int, default=20, metavar="N")
+    p.add_argument("--engine", choices=("auto", "z3"), default="auto",
+                   help="auto: exact vectorized decisions where they are exact, Z3 for the rest (default); "
+                        "z3: every segment through Z3 (the reference path)")
+    p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc",
+                   help="largest mismatch (mm) of an arc end point with its circle (default 0.002), or "
+                        "\"linuxcnc\" for LinuxCNC's own acceptance rule")
+    p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
+                   help="iterations a loop (while, do, repeat) may run per entry before the verdict becomes "
+                        f"unknown (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")
+    p.add_argument("--max-violations", type=int, default=20, metavar="N",
+                   help="stop after N violating blocks per program (default 20); the report says when the "
+                        "list was cut")
     p.add_argument("--format", choices=("text", "json", "html", "sarif"), default="text",
-                   help="text (compiler-style), json (specs/report.schema.json), html (one self-contained "
-                        "file with plots), sarif (SARIF 2.1.0 for code scanning)")
-    p.add_argument("--output", metavar="FILE")
+                   help="text (compiler-style), json (specs/report.schema.json; a list for several programs), "
+                        "html (one self-contained file with plots; one program), sarif (SARIF 2.1.0 for code "
+                        "scanning)")
+    p.add_argument("--output", metavar="FILE", help="write the report to FILE instead of standard output")
+    p.add_argument("--sarif-root", metavar="DIR",
+                   help="directory that SARIF artifact URIs are relative to (uriBaseId SRCROOT; default the "
+                        "working directory, e.g. the repository root in CI)")
     p.set_defaults(handler=_run)
 
 
 cli.REGISTRARS.append(register)
 
 
-def _arc_tolerance(text: str):
+def _arc_tolerance(text: str) -> Fraction | str:
     """``--arc-tolerance``: "linuxcnc" or a non-negative decimal (mm)."""
     if text == "linuxcnc":
         return text

@@ -717,6 +717,7 @@ class Prover:
             first_exit_exact=False, depth=depth, depth_exact=False, engine="z3",
             segment_kind="arc" if not g.helix else "helix", derived=seg.derived,
             params=self._written_params(params), zones=tuple(z.name for z in bad), note=note,
+            on_path=exact_point,
         )
 
     def _arc_param(self, g: ArcGeom, pmap) -> Fraction:

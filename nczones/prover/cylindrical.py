@@ -205,5 +205,5 @@ class _ArcCheck:
             parameter=f, parameter_exact=False,
             first_exit=tuple((a, mid[a]) for a in seg.axes), first_exit_parameter=f, first_exit_exact=False,
             depth=max(depth, F0), depth_exact=False, engine="exact", segment_kind="developed_arc",
-            derived=seg.derived, params=(), zones=tuple(z.name for z in bad), note=note,
+            derived=seg.derived, params=(), zones=tuple(z.name for z in bad), note=note, on_path=False,
         )

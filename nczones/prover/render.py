@@ -12,7 +12,9 @@ from __future__ import annotations
 import json
 from fractions import Fraction
 
-from ..exact import format_decimal
+from .. import __version__
+from ..errors import shorten
+from ..exact import format_decimal, format_rational, seconds
 from .result import Result, Verdict
 
 __all__ = ["render_text", "render_json", "to_json_dict"]
@@ -40,7 +42,7 @@ def render_text(result: Result, program: str = "") -> str:
             f"(segment parameter {par}), depth {depth} mm"
         )
         if v.source:
-            out.append(f"    {v.source}")
+            out.append(f"    {shorten(v.source)}")
         fe = ("" if v.first_exit_exact else "~") + format_decimal(v.first_exit_parameter, 6)
         out.append(f"    first exit at {_pt(v.first_exit)} (parameter {fe}); engine {v.engine}")
         if result.margin:
@@ -53,7 +55,7 @@ def render_text(result: Result, program: str = "") -> str:
         loc = f"{r.span.file}:{r.span.line}:{r.span.column}" if r.span else name
         out.append(f"{loc}: unknown: {r.message}")
         if r.span is not None and r.span.text:
-            out.append(f"    {r.span.text.rstrip()}")
+            out.append(f"    {shorten(r.span.text.rstrip())}")
     for n in result.notes:
         out.append(f"{name}: note: {n}")
     stats = dict(result.stats)
@@ -71,8 +73,19 @@ def render_text(result: Result, program: str = "") -> str:
     return "\n".join(out) + "\n"
 
 
-def to_json_dict(result: Result) -> dict:
-    """The JSON report as a dict (see ``specs/report.schema.json``)."""
+def _exact_point(pairs) -> dict[str, str]:
+    return {a: format_rational(x) for a, x in pairs}
+
+
+def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
+    """The JSON report as a dict (see ``specs/report.schema.json``).
+
+    Points appear twice: as decimals (``point``, rounded to 12 places and
+    marked ``…`` when the expansion repeats) and as exact rationals
+    (``point_exact``: ``"1900/3"``), which ``nczones replay`` reads back.
+    ``deterministic=True`` leaves out what changes between runs or machines
+    (timings, the solver's version and counters), for golden files.
+    """
     def span(s):
         return None if s is None else {"file": s.file, "line": s.line, "column": s.column}
 
@@ -87,10 +100,15 @@ def to_json_dict(result: Result) -> dict:
             "zone": v.zone,
             "zones": list(v.zones),
             "point": {a: _d(x) for a, x in v.point},
+            "point_exact": _exact_point(v.point),
             "path_point": {a: _d(x) for a, x in v.path_point},
+            "path_point_exact": _exact_point(v.path_point),
+            "path_point_on_path": v.on_path,
             "parameter": format_decimal(v.parameter, 12),
             "parameter_exact": v.parameter_exact,
+            "parameter_rational": format_rational(v.parameter) if v.parameter_exact else None,
             "first_exit": {a: _d(x) for a, x in v.first_exit},
+            "first_exit_point_exact": _exact_point(v.first_exit),
             "first_exit_parameter": format_decimal(v.first_exit_parameter, 12),
             "first_exit_exact": v.first_exit_exact,
             "depth": _d(v.depth),
@@ -99,6 +117,7 @@ def to_json_dict(result: Result) -> dict:
             "derived": v.derived,
             "engine": v.engine,
             "params": {n: _d(x) for n, x in v.params},
+            "params_exact": {n: format_rational(x) for n, x in v.params},
             "note": v.note,
         })
         if v.kind == "recovery":
@@ -106,11 +125,18 @@ def to_json_dict(result: Result) -> dict:
                 "break_line": v.break_line,
                 "break_parameter": None if v.break_parameter is None else format_decimal(v.break_parameter, 12),
                 "break_point": {a: _d(x) for a, x in v.break_point},
+                "break_point_exact": _exact_point(v.break_point),
                 "leg": v.leg,
             })
+    settings = dict(result.settings)
     doc = {
         "verdict": result.verdict.label,
         "program": result.file,
+        "program_sha256": result.program_sha256,
+        "machine": {"name": result.machine_name, "file": result.machine_file, "sha256": result.machine_sha256},
+        "nczones_version": __version__,
+        "dialect": settings.get("dialect"),
+        "settings": {k: list(x) if isinstance(x, tuple) else x for k, x in settings.items()},
         "violations": violations,
         "truncated": result.truncated,
         "reason": "; ".join(
@@ -118,17 +144,18 @@ def to_json_dict(result: Result) -> dict:
         ) if result.verdict is Verdict.UNKNOWN else None,
         "reasons": [{"message": r.message, "code": r.code, "location": span(r.span),
                      "source": r.span.text.rstrip() if r.span else ""} for r in result.reasons],
-        "solver": {"name": result.solver, "version": result.solver_version},
+        "solver": {"name": result.solver, "version": "" if deterministic else result.solver_version},
         "engine": result.engine,
         "engines": [{"block": b, "engine": e} for b, e in result.engines],
         "margin": _d(result.margin),
         "params": [{"name": p.name, "lo": _d(p.written[0]), "hi": _d(p.written[1])} for p in result.params],
         "notes": list(result.notes),
-        "stats": dict(result.stats),
-        "timings": {k: round(v, 6) for k, v in result.timings},
+        "stats": ({"segments": dict(result.stats).get("segments", 0)} if deterministic else dict(result.stats)),
+        "timings": {} if deterministic else {k: seconds(v) for k, v in result.timings},
     }
     return doc
 
 
-def render_json(result: Result) -> str:
-    return json.dumps(to_json_dict(result), indent=2, ensure_ascii=False) + "\n"
+def render_json(result: Result, *, deterministic: bool = False) -> str:
+    """:func:`to_json_dict` as indented JSON text."""
+    return json.dumps(to_json_dict(result, deterministic=deterministic), indent=2, ensure_ascii=False) + "\n"

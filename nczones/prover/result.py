@@ -76,7 +76,12 @@ class Violation:
     boundary).  ``depth`` is how far past the boundary the block goes (see
     :func:`nczones.prover.exact.point_depth`); ``depth_exact`` is False when
     it is a lower bound.  ``params`` are the parameter values (as written by
-    the user) of the counterexample.
+    the user) of the counterexample.  ``on_path`` is True when ``path_point``
+    lies exactly on the motion (every line and rapid, a rational point of a
+    circular arc); False when the exact path point is irrational (a helix, an
+    R-format arc with an irrational centre, a developed arc) and
+    ``path_point`` is the centre of a small rational box around it, all of
+    whose points violate.
     """
 
     block: int
@@ -98,6 +103,7 @@ class Violation:
     params: tuple[tuple[str, Fraction], ...] = ()
     zones: tuple[str, ...] = ()
     note: str = ""
+    on_path: bool = True
     # kind == "recovery" (tool-break recovery, nczones.prover.recovery): the line of the cutting
     # motion where the tool breaks, the break parameter there, the break point, the recovery leg
     break_line: int | None = None
@@ -122,6 +128,13 @@ class Result:
     engine that decided it (``"exact"``: rational decision procedure,
     ``"z3"``, ``"unknown"``).  ``stats`` holds counters (segments, pieces,
     screened, z3 queries); ``timings`` seconds per phase.
+
+    What makes a result replayable (``nczones replay``): ``program_sha256``
+    (of the program's bytes), ``machine_file``/``machine_sha256`` (the
+    machine file as loaded) and ``settings``, every option of
+    :func:`~nczones.prover.verify` that can change the verdict, as
+    JSON values (``margin``, ``engine``, ``recovery``, ``arc_tolerance``,
+    ``max_iterations``, ``max_violations``, ``dialect``, ...).
     """
 
     verdict: Verdict
@@ -139,6 +152,11 @@ class Result:
     truncated: bool = False
     file: str = ""
     extra: dict = field(default_factory=dict, compare=False)
+    program_sha256: str = ""
+    machine_name: str = ""
+    machine_file: str = ""
+    machine_sha256: str = ""
+    settings: tuple[tuple[str, object], ...] = ()
 
     @property
     def safe(self) -> bool:

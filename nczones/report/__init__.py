@@ -31,8 +31,8 @@ def render_report(result, fmt: str = "text", *, machine=None, program=None, colo
                   deterministic: bool = False) -> str:
     """Render a verification :class:`~nczones.prover.Result` in one of :data:`FORMATS`.
 
-    ``machine`` is needed for ``html`` (the plots); ``program`` (text or path)
-    defaults to ``result.file``.
+    ``machine`` is needed for ``html`` (the plots); ``program`` (a path or a
+    :class:`~nczones.gcode.source.ProgramSource`) defaults to ``result.file``.
     """
     if fmt == "text":
         from .text import render_text
@@ -42,7 +42,7 @@ def render_report(result, fmt: str = "text", *, machine=None, program=None, colo
     if fmt == "json":
         from ..prover.render import render_json
 
-        return render_json(result)
+        return render_json(result, deterministic=deterministic)
     if fmt == "sarif":
         from .sarif import render_sarif
 

@@ -49,6 +49,9 @@ def _run(args: argparse.Namespace) -> int:
     if suffix not in ("png", "svg", "pdf"):
         raise PlotError(Diagnostic("PL103", f"-o {args.output!r}: the file name must end in .png, .svg or .pdf",
                                    file="<command line>"))
+    from ..prover.command import program_source
+
+    source = program_source(args.program)
     _agg()
     import matplotlib.pyplot as plt
 
@@ -61,11 +64,11 @@ def _run(args: argparse.Namespace) -> int:
 
         bar = progress_for(sys.stderr, "verify")
         try:
-            result = verify(args.program, machine, progress=bar)
+            result = verify(source, machine, progress=bar)
         finally:
             if bar is not None:
                 bar.close()
-    fig = plot_program(args.program, machine, plane, result)
+    fig = plot_program(source, machine, plane, result)
     try:
         fig.savefig(args.output, dpi=args.dpi)
     except OSError as exc:
@@ -74,19 +77,21 @@ def _run(args: argparse.Namespace) -> int:
     finally:
         plt.close(fig)
     verdict = f" ({result.verdict.label}, {len(result.violations)} violating block(s))" if result else ""
-    print(f"{args.output}: plot of {args.program} on {machine.name}{verdict}")
+    print(f"{args.output}: plot of {source.name} on {machine.name}{verdict}")
     return cli.EXIT_OK
 
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("plot", help="draw a program's toolpath over the machine's allowed set (PNG/SVG/PDF)")
-    p.add_argument("program", metavar="PROGRAM")
-    p.add_argument("--machine", required=True, metavar="M.toml")
-    p.add_argument("-o", "--output", required=True, metavar="OUT.png")
+    p.add_argument("program", metavar="PROGRAM", help="the G-code program file; '-' reads standard input")
+    p.add_argument("--machine", required=True, metavar="M.toml",
+                   help="the machine file whose allowed set is drawn (specs/machine-file.md)")
+    p.add_argument("-o", "--output", required=True, metavar="OUT.png",
+                   help="the image to write; its suffix (.png, .svg, .pdf) sets the format")
     p.add_argument("--plane", metavar="H,V", help="axes of the plot plane, e.g. X,Z (default: a plane the zones use)")
     p.add_argument("--no-verify", dest="verify", action="store_false",
                    help="draw only; do not verify (no violations marked)")
-    p.add_argument("--dpi", type=int, default=120)
+    p.add_argument("--dpi", type=int, default=120, help="resolution of a PNG in dots per inch (default 120)")
     p.set_defaults(handler=_run)
 
 

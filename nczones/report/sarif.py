@@ -23,11 +23,12 @@ from __future__ import annotations
 
 import json
 import os
+from collections.abc import Sequence
 from pathlib import Path, PurePosixPath
 from urllib.parse import quote
 
 from .. import __version__
-from ..exact import format_decimal
+from ..exact import format_decimal, format_rational, seconds
 from ..prover.result import Result
 
 __all__ = ["to_sarif", "render_sarif", "RULES", "artifact_uri"]
@@ -69,19 +70,23 @@ RULES = (
 _RULE_INDEX = {r["id"]: i for i, r in enumerate(RULES)}
 
 
-def artifact_uri(path: str, base: str | os.PathLike | None = None) -> tuple[str, bool]:
+def artifact_uri(path: str, base: str | os.PathLike | None = None,
+                 start: str | os.PathLike | None = None) -> tuple[str, bool]:
     """The URI of a program for SARIF: relative to ``base`` (default the working directory).
 
-    Returns ``(uri, relative)``; a path outside ``base`` (or on another
-    drive) becomes an absolute ``file:`` URI.
+    A relative ``path`` is taken from ``start`` (default ``base``).  Returns
+    ``(uri, relative)``; a path outside ``base`` (or on another drive)
+    becomes an absolute ``file:`` URI.
 
     >>> artifact_uri("/work/x/part 1.ngc", "/work")
     ('x/part%201.ngc', True)
     >>> artifact_uri("/elsewhere/p.ngc", "/work")
     ('file:///elsewhere/p.ngc', False)
+    >>> artifact_uri("x/p.ngc", "/work", start="/work/repo")
+    ('repo/x/p.ngc', True)
     """
     base = os.getcwd() if base is None else os.fspath(base)
-    absolute = os.path.abspath(os.path.join(base, path))
+    absolute = os.path.abspath(os.path.join(base if start is None else os.fspath(start), path))
     try:
         rel = os.path.relpath(absolute, base)
     except ValueError:  # another drive (Windows)
@@ -95,10 +100,11 @@ def _pt(pairs) -> str:
     return " ".join(f"{a}{format_decimal(v)}" for a, v in pairs)
 
 
-def _location(file: str | None, line: int | None, column: int | None, snippet: str, base) -> list[dict]:
+def _location(file: str | None, line: int | None, column: int | None, snippet: str,
+              base: tuple[str, str]) -> list[dict]:
     if not file or file.startswith("<") or line is None:
         return []
-    uri, relative = artifact_uri(file, base)
+    uri, relative = artifact_uri(file, *base)
     artifact = {"uri": uri}
     if relative:
         artifact["uriBaseId"] = "SRCROOT"
@@ -108,34 +114,7 @@ def _location(file: str | None, line: int | None, column: int | None, snippet: s
     return [{"physicalLocation": {"artifactLocation": artifact, "region": region}}]
 
 
-def to_sarif(result: Result, *, base: str | os.PathLike | None = None, machine=None,
-             deterministic: bool = False) -> dict:
-    """The SARIF 2.1.0 log of a verification as a dict.
-
-    Parameters
-    ----------
-    result : Result
-    base : path, optional
-        Directory the artifact URIs are relative to (default the working directory).
-    machine : Machine, optional
-        Named in the run's properties.
-    deterministic : bool
-        Leave out timings and the solver version (golden files).
-
-    Examples
-    --------
-    >>> from nczones.machine import load_machine
-    >>> from nczones.prover import verify
-    >>> m = load_machine("specs/machines/grinder.toml")
-    >>> r = verify("specs/examples/programs/notch_dip.ngc", m)
-    >>> log = to_sarif(r)
-    >>> res = log["runs"][0]["results"][0]
-    >>> res["ruleId"], res["locations"][0]["physicalLocation"]["region"]["startLine"]
-    ('NCZ001', 5)
-    >>> res["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
-    'specs/examples/programs/notch_dip.ngc'
-    """
-    base_abs = os.path.abspath(os.getcwd() if base is None else os.fspath(base))
+def _result_entries(result: Result, base_abs: tuple[str, str]) -> list[dict]:
     results = []
     for v in result.violations:
         rule = "NCZ002" if v.kind == "recovery" else "NCZ001"
@@ -153,14 +132,21 @@ def to_sarif(result: Result, *, base: str | os.PathLike | None = None, machine=N
             "zones": list(v.zones),
             "block": v.block,
             "point": {a: format_decimal(x) for a, x in v.point},
+            "pointExact": {a: format_rational(x) for a, x in v.point},
             "pathPoint": {a: format_decimal(x) for a, x in v.path_point},
+            "pathPointExact": {a: format_rational(x) for a, x in v.path_point},
+            "pathPointOnPath": v.on_path,
             "depth": format_decimal(v.depth),
             "depthExact": v.depth_exact,
             "firstExit": {a: format_decimal(x) for a, x in v.first_exit},
             "segmentKind": v.segment_kind,
             "engine": v.engine,
             "params": {n: format_decimal(x) for n, x in v.params},
+            "paramsExact": {n: format_rational(x) for n, x in v.params},
         }
+        if v.kind == "recovery":
+            props.update({"breakLine": v.break_line, "leg": v.leg,
+                          "breakPointExact": {a: format_rational(x) for a, x in v.break_point}})
         res = {"ruleId": rule, "ruleIndex": _RULE_INDEX[rule], "level": "error", "kind": "fail",
                "message": {"text": text}, "properties": props}
         loc = _location(v.span.file if v.span else result.file, v.line, v.span.column if v.span else None,
@@ -179,24 +165,104 @@ def to_sarif(result: Result, *, base: str | os.PathLike | None = None, machine=N
         if loc:
             res["locations"] = loc
         results.append(res)
-    run_props = {
+    return results
+
+
+def _program_properties(result: Result, deterministic: bool) -> dict:
+    settings = dict(result.settings)
+    props = {
+        "program": result.file,
+        "programSha256": result.program_sha256,
         "verdict": result.verdict.label,
+        "machine": {"name": result.machine_name, "file": result.machine_file, "sha256": result.machine_sha256},
+        "dialect": settings.get("dialect"),
+        "settings": {k: list(x) if isinstance(x, tuple) else x for k, x in settings.items()},
         "margin": format_decimal(result.margin),
         "params": [{"name": p.name, "lo": format_decimal(p.written[0]), "hi": format_decimal(p.written[1])}
                    for p in result.params],
         "solver": result.solver if deterministic else f"{result.solver} {result.solver_version}".strip(),
         "truncated": result.truncated,
     }
-    if machine is not None:
-        run_props["machine"] = {"name": machine.name, "file": str(machine.source)}
-    invocation = {"executionSuccessful": True}
     if not deterministic and result.timings:
-        invocation["properties"] = {"timings": {k: round(t, 6) for k, t in result.timings}}
+        props["timings"] = {k: seconds(t) for k, t in result.timings}
+    return props
+
+
+def to_sarif(result: Result | Sequence[Result], *, base: str | os.PathLike | None = None, machine=None,
+             deterministic: bool = False, files_from: str | os.PathLike | None = None) -> dict:
+    """The SARIF 2.1.0 log of a verification (or of several programs: one run, their results) as a dict.
+
+    Parameters
+    ----------
+    result : Result or sequence of Result
+        One result per program; every program's findings go into one run.
+    base : path, optional
+        Directory the artifact URIs are relative to (``--sarif-root``;
+        default the working directory).  Programs outside it get absolute
+        ``file:`` URIs.
+    files_from : path, optional
+        Directory the results' relative file names start from (default
+        ``base``; the command line passes the working directory).
+    machine : Machine, optional
+        Named in the run's properties.
+    deterministic : bool
+        Leave out timings and the solver version (golden files).
+
+    The run's ``artifacts`` list each program with its SHA-256; its
+    ``properties`` carry the nczones version, the dialect, the machine file
+    with its SHA-256 and every setting that changes the verdict (for one
+    program directly, for several under ``programs``).
+
+    Examples
+    --------
+    >>> from nczones.machine import load_machine
+    >>> from nczones.prover import verify
+    >>> m = load_machine("specs/machines/grinder.toml")
+    >>> r = verify("specs/examples/programs/notch_dip.ngc", m)
+    >>> log = to_sarif(r)
+    >>> res = log["runs"][0]["results"][0]
+    >>> res["ruleId"], res["locations"][0]["physicalLocation"]["region"]["startLine"]
+    ('NCZ001', 5)
+    >>> res["locations"][0]["physicalLocation"]["artifactLocation"]["uri"]
+    'specs/examples/programs/notch_dip.ngc'
+    >>> res["properties"]["pointExact"]
+    {'X': '380', 'Y': '130'}
+    """
+    results_in = [result] if isinstance(result, Result) else list(result)
+    base_abs = os.path.abspath(os.getcwd() if base is None else os.fspath(base))
+    where = (base_abs, os.path.abspath(base_abs if files_from is None else os.fspath(files_from)))
+    results = []
+    for r in results_in:
+        results.extend(_result_entries(r, where))
+    if len(results_in) == 1:
+        run_props = _program_properties(results_in[0], deterministic)
+    else:
+        run_props = {"verdict": min(r.verdict for r in results_in).label if results_in else "safe",
+                     "programs": [_program_properties(r, deterministic) for r in results_in]}
+    run_props["nczonesVersion"] = __version__
+    if machine is not None:
+        run_props["machine"] = {"name": machine.name, "file": str(machine.source), "sha256": machine.sha256}
+    artifacts = []
+    for r in results_in:
+        if not r.file or r.file.startswith("<"):
+            continue
+        uri, relative = artifact_uri(r.file, *where)
+        loc: dict = {"uri": uri}
+        if relative:
+            loc["uriBaseId"] = "SRCROOT"
+        art: dict = {"location": loc}
+        if r.program_sha256:
+            art["hashes"] = {"sha-256": r.program_sha256}
+        artifacts.append(art)
+    invocation: dict = {"executionSuccessful": True}
+    if not deterministic and len(results_in) == 1 and results_in[0].timings:
+        invocation["properties"] = {"timings": {k: seconds(t) for k, t in results_in[0].timings}}
     run = {
         "tool": {"driver": {"name": "nczones", "version": __version__, "semanticVersion": __version__,
                             "rules": [dict(r) for r in RULES]}},
         "originalUriBaseIds": {"SRCROOT": {"uri": Path(base_abs).as_uri().rstrip("/") + "/"}},
         "invocations": [invocation],
+        "artifacts": artifacts,
         "results": results,
         "columnKind": "unicodeCodePoints",
         "properties": run_props,

@@ -73,3 +73,32 @@ def test_cli_sarif(tmp_path):
     assert loc["artifactLocation"] == {"uri": "programs/notch_dip.ngc", "uriBaseId": "SRCROOT"}
     assert loc["region"]["startLine"] == 5
     assert log["runs"][0]["originalUriBaseIds"]["SRCROOT"]["uri"] == EX.as_uri() + "/"
+
+
+def test_cli_sarif_root_and_several_programs(tmp_path):
+    """``--sarif-root`` sets the base of the URIs; several programs give one run with every result."""
+    root = EX.parents[1]
+    r = subprocess.run([sys.executable, "-m", "nczones", "verify", "programs/notch_dip.ngc", "programs/notch_over.ngc",
+                        "programs/arc_bulge_cw.ngc", "--machine", "../machines/grinder.toml", "--format", "sarif",
+                        "--sarif-root", str(root)], capture_output=True, text=True, cwd=EX)
+    assert r.returncode == 1, r.stderr
+    log = json.loads(r.stdout)
+    VALIDATOR.validate(log)
+    (run,) = log["runs"]
+    assert run["originalUriBaseIds"]["SRCROOT"]["uri"] == root.as_uri() + "/"
+    uris = [res["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] for res in run["results"]]
+    assert uris == ["specs/examples/programs/notch_dip.ngc", "specs/examples/programs/arc_bulge_cw.ngc"]
+    assert [a["location"]["uri"] for a in run["artifacts"]] == [
+        "specs/examples/programs/notch_dip.ngc", "specs/examples/programs/notch_over.ngc",
+        "specs/examples/programs/arc_bulge_cw.ngc"]
+    assert all(len(a["hashes"]["sha-256"]) == 64 for a in run["artifacts"])
+    props = run["properties"]
+    assert props["verdict"] == "unsafe" and [p["verdict"] for p in props["programs"]] == ["unsafe", "safe", "unsafe"]
+    assert props["nczonesVersion"] and props["machine"]["sha256"] and props["programs"][0]["settings"]["engine"]
+    arc = run["results"][1]["properties"]
+    assert arc["pointExact"]["X"].count("/") == 1 and arc["pathPointOnPath"] is True
+    bad = subprocess.run([sys.executable, "-m", "nczones", "verify", "programs/notch_dip.ngc", "--machine",
+                          "../machines/grinder.toml", "--format", "sarif", "--sarif-root", "no/such/dir"],
+                         capture_output=True, text=True, cwd=EX)
+    assert bad.returncode == 2
+    assert bad.stderr == "<command line>: error[VF108]: --sarif-root no/such/dir: not a directory\n"

@@ -1,0 +1,544 @@
+"""``nczones replay REPORT.json``: re-check a report's counterexamples exactly, against the files it names.
+
+A JSON report of ``nczones verify`` names the machine file and the program
+with their SHA-256, every setting that changes the verdict, and each
+counterexample as exact rationals (``point_exact``, ``path_point_exact``,
+``params_exact``).  Replaying one does not run the prover again: it
+
+1. loads the machine file and the program the report names (relative paths
+   from the working directory, or ``--machine``/``--program``) and refuses
+   them when their SHA-256 differs from the report's (``RP102``);
+2. builds the machine the counterexample speaks of: every parameter value of
+   the counterexample put into the machine file's values (a work offset
+   component, a tool length register, the start position; a homing error
+   shifts the machine coordinates of its axis);
+3. interprets the program on that machine with the report's settings
+   (arc tolerance, loop bound, block delete) and takes the motions of the
+   violating block;
+4. checks, in exact rational arithmetic, that the path point lies on one of
+   those motions (a line, a rapid the way the machine moves it — straight
+   or dogleg —, a circular arc, a NURBS curve at the reported parameter, a
+   tool-break recovery leg from the reported break point), that the point
+   lies within the margin of it on every axis, and that the point is outside
+   the allowed set, in the zone the report names.
+
+A path point that is irrational (on a helix, an R-format arc with an
+irrational centre, a developed arc; the report marks it
+``path_point_on_path: false``) cannot be checked exactly: the replay checks
+that it lies within :data:`IRRATIONAL_TOLERANCE_MM` of the motion and says
+so.  Exit status: 0 every counterexample confirmed, 1 one was not, 2 bad
+input (an unreadable report, a missing or changed file).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, replace
+from fractions import Fraction
+from types import MappingProxyType
+from typing import Any
+
+from . import cli
+from .errors import Diagnostic, InputError, InvalidArgument
+from .exact import format_decimal, parse_rational, to_float
+from .machine import Machine, RapidMode, load_machine
+from .motion import Segment, SegmentKind
+
+__all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "register",
+           "IRRATIONAL_TOLERANCE_MM"]
+
+#: How close an irrational path point must be to the motion (mm; degrees on a rotary axis).
+IRRATIONAL_TOLERANCE_MM = 1e-6
+
+F0, F1 = Fraction(0), Fraction(1)
+Point = tuple[Fraction, ...]
+
+
+class ReplayError(InputError):
+    """A report that cannot be replayed (codes RP1xx)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Check:
+    """The replay of one counterexample: ``confirmed`` and what was checked (or what failed)."""
+
+    program: str
+    line: int | None
+    block: int
+    zone: str
+    confirmed: bool
+    exact: bool
+    message: str
+
+    def render(self) -> str:
+        where = f"{self.program}:{self.line}" if self.line is not None else self.program
+        return f"{where}: {'confirmed' if self.confirmed else 'NOT REPRODUCED'}: {self.message}"
+
+
+# --------------------------------------------------------------------------- exact geometry
+
+
+def on_line(p: Point, a: Point, b: Point) -> Fraction | None:
+    """The ``t`` in [0, 1] with ``p = a + t (b - a)``, or None (exact).
+
+    >>> F = Fraction
+    >>> on_line((F(1), F(2)), (F(0), F(0)), (F(3), F(6)))
+    Fraction(1, 3)
+    >>> on_line((F(1), F(2)), (F(0), F(0)), (F(3), F(5))) is None
+    True
+    """
+    k = next((k for k in range(len(a)) if a[k] != b[k]), None)
+    if k is None:
+        return F0 if tuple(p) == tuple(a) else None
+    t = (p[k] - a[k]) / (b[k] - a[k])
+    if not F0 <= t <= F1:
+        return None
+    return t if all(p[i] == a[i] + t * (b[i] - a[i]) for i in range(len(a))) else None
+
+
+def on_dogleg(p: Point, a: Point, b: Point, rates: Sequence[Fraction]) -> Fraction | None:
+    """The time (min) at which a dogleg rapid from ``a`` to ``b`` passes ``p``, or None (exact).
+
+    Every axis starts at once and moves at its own rate (``rates``, per
+    minute) until it arrives, so at time ``tau`` axis ``i`` stands at
+    ``a_i + sign(d_i) min(rate_i tau, |d_i|)``.
+
+    >>> F = Fraction
+    >>> on_dogleg((F(10), F(10)), (F(0), F(0)), (F(20), F(10)), (F(100), F(100)))
+    Fraction(1, 10)
+    >>> on_dogleg((F(10), F(5)), (F(0), F(0)), (F(20), F(10)), (F(100), F(100))) is None
+    True
+    """
+    lo, hi = F0, None  # tau in [lo, hi]
+    for pi, ai, bi, rate in zip(p, a, b, rates):
+        d = bi - ai
+        if d == 0:
+            if pi != ai:
+                return None
+            continue
+        s = (pi - ai) / d
+        if not F0 <= s <= F1 or rate <= 0:
+            return None
+        need = abs(pi - ai) / rate
+        if s == 1:
+            lo = max(lo, need)  # arrived: any later time
+        else:
+            lo = max(lo, need)
+            hi = need if hi is None else min(hi, need)
+    if hi is not None and lo > hi:
+        return None
+    return lo
+
+
+def _half(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> int:
+    """0 when ``v`` is in the half-turn counter-clockwise from ``u`` (``u`` itself included), else 1."""
+    cross = u[0] * v[1] - u[1] * v[0]
+    dot = u[0] * v[0] + u[1] * v[1]
+    return 0 if cross > 0 or (cross == 0 and dot > 0) else 1
+
+
+def _ccw_not_after(u, v, w) -> bool:
+    """Counter-clockwise from ``u``: is the direction ``v`` reached no later than ``w`` (exact)?"""
+    hv, hw = _half(u, v), _half(u, w)
+    if hv != hw:
+        return hv < hw
+    return v[0] * w[1] - v[1] * w[0] >= 0
+
+
+def on_arc(p: Point, seg: Segment) -> bool:
+    """Is ``p`` exactly on the circular arc ``seg`` (rational centre, start and end on one circle, no helix)?
+
+    Returns False for motions that are not such arcs (a helix, a spiral, an
+    R-format arc without a centre): their points are checked approximately.
+    """
+    if seg.kind is not SegmentKind.ARC or seg.centre is None:
+        return False
+    i, j, _ = seg.plane_indices()
+    if any(seg.start[k] != seg.end[k] or p[k] != seg.start[k] for k in range(len(p)) if k not in (i, j)):
+        return False
+    c = seg.centre
+    u = (seg.start[i] - c[0], seg.start[j] - c[1])
+    w = (seg.end[i] - c[0], seg.end[j] - c[1])
+    v = (p[i] - c[0], p[j] - c[1])
+    r2 = u[0] ** 2 + u[1] ** 2
+    if w[0] ** 2 + w[1] ** 2 != r2 or v[0] ** 2 + v[1] ** 2 != r2:
+        return False
+    if seg.start == seg.end or seg.turns:
+        return True  # a full circle (or more)
+    if seg.clockwise:  # mirror: a clockwise sweep is a counter-clockwise one of the mirrored vectors
+        u, v, w = (u[0], -u[1]), (v[0], -v[1]), (w[0], -w[1])
+    return _ccw_not_after(u, v, w)
+
+
+# --------------------------------------------------------------------------- approximate geometry
+
+
+def _float_arc_distance(p: Point, seg: Segment) -> float:
+    """Distance (max over axes) from ``p`` to an arc, helix or spiral, in floats."""
+    i, j, _ = seg.plane_indices()
+    s = [to_float(x) for x in seg.start]
+    e = [to_float(x) for x in seg.end]
+    if seg.centre is not None:
+        ca, cb = to_float(seg.centre[0]), to_float(seg.centre[1])
+    else:  # R format: the centre on the side the sign of R and the direction choose
+        r = to_float(seg.radius) if seg.radius is not None else 0.0
+        dx, dy = e[i] - s[i], e[j] - s[j]
+        d = math.hypot(dx, dy) or 1.0
+        h = math.sqrt(max(r * r - d * d / 4, 0.0))
+        sign = (1 if seg.clockwise else -1) * (1 if r > 0 else -1)
+        ca = (s[i] + e[i]) / 2 + sign * h * dy / d
+        cb = (s[j] + e[j]) / 2 - sign * h * dx / d
+    a0 = math.atan2(s[j] - cb, s[i] - ca)
+    a1 = math.atan2(e[j] - cb, e[i] - ca)
+    sweep = a1 - a0
+    if seg.clockwise:
+        while sweep >= 0:
+            sweep -= 2 * math.pi
+    else:
+        while sweep <= 0:
+            sweep += 2 * math.pi
+    if seg.start == seg.end:
+        sweep = -2 * math.pi if seg.clockwise else 2 * math.pi
+    sweep += (-1 if seg.clockwise else 1) * 2 * math.pi * seg.turns
+    r0 = math.hypot(s[i] - ca, s[j] - cb)
+    r1 = math.hypot(e[i] - ca, e[j] - cb)
+
+    def at(f: float) -> list[float]:
+        ang = a0 + sweep * f
+        rad = r0 + (r1 - r0) * f
+        q = [sv + (ev - sv) * f for sv, ev in zip(s, e)]
+        q[i], q[j] = ca + rad * math.cos(ang), cb + rad * math.sin(ang)
+        return q
+
+    return _min_distance([to_float(x) for x in p], at)
+
+
+def _min_distance(p: list[float], at, samples: int = 4096) -> float:
+    """Smallest max-norm distance from ``p`` to the curve ``at(f)``, f in [0, 1] (samples, then refined)."""
+    def dist(f: float) -> float:
+        return max(abs(a - b) for a, b in zip(at(f), p))
+
+    best = min(range(samples + 1), key=lambda k: dist(k / samples))
+    lo, hi = max(0.0, (best - 1) / samples), min(1.0, (best + 1) / samples)
+    for _ in range(100):  # golden-section search around the best sample
+        m1, m2 = lo + (hi - lo) * 0.381966, hi - (hi - lo) * 0.381966
+        if dist(m1) <= dist(m2):
+            hi = m2
+        else:
+            lo = m1
+    return min(dist(lo), dist(hi), dist(best / samples))
+
+
+def _float_developed_distance(p: Point, seg: Segment) -> float:
+    from .cylinder import cylinder_of, developed_arc_of
+
+    info = cylinder_of(seg)
+    if info is None:
+        return math.inf
+    linear, rotary, _ = info
+    iz, ic = seg.axes.index(linear), seg.axes.index(rotary)
+    arc = developed_arc_of(seg)
+    s = [to_float(x) for x in seg.start]
+    e = [to_float(x) for x in seg.end]
+
+    def at(f: float) -> list[float]:
+        z, _, c = arc.point(Fraction(f).limit_denominator(10**12))
+        q = [sv + (ev - sv) * f for sv, ev in zip(s, e)]
+        q[iz], q[ic] = to_float(z.mid()), to_float(c.mid())
+        return q
+
+    return _min_distance([to_float(x) for x in p], at, samples=512)
+
+
+# --------------------------------------------------------------------------- reading the report
+
+
+def _fail(code: str, message: str, where: str) -> ReplayError:
+    return ReplayError(Diagnostic(code, message, file=where))
+
+
+def _point(raw: Any, axes: tuple[str, ...], what: str, where: str) -> Point:
+    if not isinstance(raw, Mapping) or set(raw) != set(axes):
+        raise _fail("RP104", f"{what} must map every axis of the machine ({', '.join(axes)}) to an exact "
+                             f"rational such as \"1900/3\"; found {raw!r}", where)
+    try:
+        return tuple(parse_rational(raw[a]) for a in axes)
+    except InvalidArgument as exc:
+        raise _fail("RP104", f"{what}: {exc}", where) from None
+
+
+def _resolve(path: str, base: str | None) -> str:
+    return path if os.path.isabs(path) or base is None else os.path.join(base, path)
+
+
+def _check_hash(kind: str, path: str, actual: str, expected: Any, where: str) -> None:
+    if expected and actual != expected:
+        raise _fail("RP102", f"the {kind} {path} is not the one the report was made from: its SHA-256 is "
+                             f"{actual[:16]}…, the report names {str(expected)[:16]}…", where)
+
+
+def _concrete_machine(machine: Machine, params: dict[str, Fraction]) -> tuple[Machine, Point]:
+    """The machine with the counterexample's parameter values, and the homing shift per axis."""
+    axes = machine.axis_names
+    offsets = dict(machine.offsets)
+    tools = dict(machine.tool_lengths)
+    start = list(machine.start)
+    shift = [F0] * len(axes)
+    for name, value in params.items():
+        if name.startswith("H") and name[1:].isdigit():
+            tools[int(name[1:])] = value
+            continue
+        head, _, axis = name.rpartition(".")
+        k = axes.index(axis)
+        if head == "start":
+            start[k] += value
+        elif head == "home":
+            shift[k] += value
+        else:
+            base = list(offsets.get(head, tuple(F0 for _ in axes)))
+            base[k] += value
+            offsets[head] = tuple(base)
+    return (replace(machine, offsets=MappingProxyType(offsets), tool_lengths=MappingProxyType(tools),
+                    start=tuple(start)), tuple(shift))
+
+
+# --------------------------------------------------------------------------- checking one counterexample
+
+
+def _on_motion(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
+    if tuple(p) in (tuple(seg.start), tuple(seg.end)):
+        return True
+    if seg.kind is SegmentKind.LINE or (seg.kind is SegmentKind.RAPID and machine.rapid_mode is RapidMode.LINEAR):
+        return on_line(p, seg.start, seg.end) is not None
+    if seg.kind is SegmentKind.RAPID:
+        rates = tuple(machine.axis(a).rapid_mm_min for a in machine.axis_names)
+        return on_dogleg(p, seg.start, seg.end, rates) is not None
+    if seg.kind is SegmentKind.SPLINE and parameter is not None:
+        from .nurbs import Nurbs
+
+        e = dict(seg.extra)
+        curve = Nurbs(e["degree"], e["knots"], e["control"], e["weights"])
+        lo, hi = curve.domain
+        return tuple(curve.point(lo + parameter * (hi - lo))) == tuple(p)
+    if exact:
+        return seg.kind is SegmentKind.ARC and on_arc(p, seg)
+    if seg.kind is SegmentKind.ARC:
+        return _float_arc_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
+    if seg.kind is SegmentKind.DEVELOPED_ARC:
+        return _float_developed_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
+    return False
+
+
+def _recovery_legs(v: Mapping[str, Any], seg: Segment, segs: list[Segment], machine: Machine,
+                   settings: Mapping[str, Any], break_point: Point) -> list[Segment]:
+    """The recovery motion the counterexample names (a leg from the break point, or the resumed cut)."""
+    from .controller.recovery import (
+        RecoveryVariant,
+        motion_sequences,
+        recovery_legs,
+        replacement_length,
+        shift_segment,
+        tool_axis_index,
+        tool_change_config,
+    )
+
+    cfg = tool_change_config(machine, settings.get("recovery"))
+    length = seg.tool_length
+    new_length = replacement_length(cfg, machine, length)
+    if v.get("leg") == "resume":
+        return [shift_segment(seg, tool_axis_index(machine), new_length - length, new_length)]
+    index = next(k for k, s in enumerate(segs) if s is seg)
+    sequence_start = next(segs[a].start for a, b in motion_sequences(segs) if a <= index <= b)
+    restart = break_point if cfg.variant is RecoveryVariant.BREAKPOINT else sequence_start
+    legs = recovery_legs(cfg, machine, break_point, restart, length, new_length)
+    return [lg.segment(machine.axis_names, seg) for lg in legs if lg.name == v.get("leg")]
+
+
+def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs: list[Segment],
+                     shift: Point, margin: Fraction, settings: Mapping[str, Any], where: str) -> Check:
+    axes = machine.axis_names
+    block, zone, line = v.get("block"), v.get("zone", ""), v.get("line")
+    exact = bool(v.get("path_point_on_path", True))
+
+    def result(ok: bool, message: str) -> Check:
+        return Check(program, line, block if isinstance(block, int) else -1, zone, ok, exact, message)
+
+    point = _point(v.get("point_exact"), axes, "point_exact", where)
+    path = _point(v.get("path_point_exact"), axes, "path_point_exact", where)
+    nominal = tuple(x - d for x, d in zip(path, shift))
+    mine = [s for s in segs if s.block == block]
+    if not mine:
+        return result(False, f"the program has no motion in block {block} on this machine")
+    parameter = None
+    if v.get("segment_kind") == "spline" and v.get("parameter_rational") is not None:
+        parameter = parse_rational(str(v["parameter_rational"]))
+    what = v.get("segment_kind", "motion")
+    if v.get("kind") == "recovery":
+        brk = _point(v.get("break_point_exact"), axes, "break_point_exact", where)
+        cutting = [s for s in mine if s.kind in (SegmentKind.LINE, SegmentKind.ARC)
+                   and (s.kind is SegmentKind.LINE and on_line(brk, s.start, s.end) is not None or on_arc(brk, s))]
+        if v.get("leg") != "resume" and not cutting:
+            return result(False, f"the break point {_show(axes, brk)} is not on a cutting motion of block {block}")
+        base = cutting or [s for s in mine if s.kind in (SegmentKind.LINE, SegmentKind.ARC)]
+        mine = [leg for s in base for leg in _recovery_legs(v, s, segs, machine, settings, brk)]
+        what = f"recovery leg {v.get('leg')!r} after a tool break at {_show(axes, brk)}"
+    hits = [s for s in mine if _on_motion(nominal, s, machine, exact, parameter)]
+    if not hits:
+        return result(False, f"the path point {_show(axes, path)} is not on the {what} of block {block}"
+                             + ("" if exact else f" (not within {IRRATIONAL_TOLERANCE_MM} mm)"))
+    gap = max(abs(a - b) for a, b in zip(point, path))
+    if gap > margin:
+        return result(False, f"the point {_show(axes, point)} is {format_decimal(gap)} mm from the path point, "
+                             f"more than the margin {format_decimal(margin)} mm")
+    bad = [z.name for s in hits for z in machine.allowed.violated_zones(dict(zip(axes, point)), s.tool_length)]
+    if zone not in bad:
+        inside = "inside the allowed set" if not bad else f"outside {', '.join(sorted(set(bad)))} only"
+        return result(False, f"the point {_show(axes, point)} is {inside}, not outside zone {zone!r}")
+    how = "exactly" if exact else f"within {IRRATIONAL_TOLERANCE_MM} mm (an irrational path point)"
+    params = v.get("params_exact") or {}
+    with_params = f" with {', '.join(f'{n}={x}' for n, x in params.items())}" if params else ""
+    return result(True, f"the point {_show(axes, point)} is outside zone {zone!r} (exact) and the path point "
+                        f"lies on the {what} of block {block} {how}{with_params}")
+
+
+def _show(axes: tuple[str, ...], p: Point) -> str:
+    return " ".join(f"{a}{format_decimal(x, 6)}" for a, x in zip(axes, p))
+
+
+def _segments(source, machine: Machine, settings: Mapping[str, Any]) -> list[Segment]:
+    from .gcode import interpret
+
+    options: dict[str, Any] = {}
+    if settings.get("arc_tolerance") is not None:
+        tol = settings["arc_tolerance"]
+        options["arc_tolerance"] = tol if tol == "linuxcnc" else parse_rational(tol)
+    if isinstance(settings.get("max_iterations"), int):
+        options["max_loop_iterations"] = settings["max_iterations"]
+    if isinstance(settings.get("block_delete"), bool):
+        options["block_delete"] = settings["block_delete"]
+    return list(interpret(source, machine, **options).segments())
+
+
+def replay_report(doc: Mapping[str, Any], *, base: str | None = None, machine_file: str | None = None,
+                  program_file: str | None = None, where: str = "<report>") -> list[Check]:
+    """Replay every counterexample of one JSON report (a dict, as ``nczones verify --format json`` writes).
+
+    Relative paths in the report are taken from ``base`` (default: the
+    working directory); ``machine_file`` and ``program_file`` replace the
+    files the report names (their SHA-256 must still match).
+
+    >>> import json, subprocess, sys
+    >>> out = subprocess.run([sys.executable, "-m", "nczones", "verify", "specs/examples/programs/notch_dip.ngc",
+    ...                       "--machine", "specs/machines/grinder.toml", "--format", "json"],
+    ...                      capture_output=True, text=True).stdout
+    >>> [(c.line, c.zone, c.confirmed, c.exact) for c in replay_report(json.loads(out))]
+    [(5, 'wheel area', True, True)]
+    """
+    from .gcode.source import load_program
+
+    if not isinstance(doc, Mapping) or "verdict" not in doc or not isinstance(doc.get("violations"), list):
+        raise _fail("RP101", "not a report of nczones verify (a JSON object with verdict and violations)", where)
+    violations = doc["violations"]
+    if not violations:
+        return []
+    machine_info = doc.get("machine") if isinstance(doc.get("machine"), Mapping) else {}
+    mpath = machine_file or machine_info.get("file")
+    if not mpath:
+        raise _fail("RP103", "the report names no machine file; pass --machine", where)
+    machine = load_machine(_resolve(mpath, base if machine_file is None else None))
+    _check_hash("machine file", mpath, machine.sha256, machine_info.get("sha256"), where)
+    ppath = program_file or doc.get("program")
+    if not ppath or (program_file is None and str(ppath).startswith("<")):
+        raise _fail("RP103", f"the report's program is {ppath or 'unnamed'} (not a file); pass --program", where)
+    source = load_program(_resolve(ppath, base if program_file is None else None), name=doc.get("program") or ppath)
+    _check_hash("program", ppath, source.sha256, doc.get("program_sha256"), where)
+    settings = doc.get("settings") if isinstance(doc.get("settings"), Mapping) else {}
+    try:
+        margin = parse_rational(str(settings.get("margin", doc.get("margin", "0"))))
+    except InvalidArgument as exc:
+        raise _fail("RP104", f"margin: {exc}", where) from None
+    cache: dict[tuple, tuple[list[Segment], Point, Machine]] = {}
+    checks = []
+    for v in violations:
+        raw = v.get("params_exact") or {}
+        try:
+            params = {str(n): parse_rational(x) for n, x in raw.items()}
+        except InvalidArgument as exc:
+            raise _fail("RP104", f"params_exact: {exc}", where) from None
+        key = tuple(sorted(params.items()))
+        if key not in cache:
+            concrete, shift = _concrete_machine(machine, params)
+            cache[key] = (_segments(source, concrete, settings), shift, concrete)
+        segs, shift, concrete = cache[key]
+        checks.append(_check_violation(v, source.name, concrete, segs, shift, margin, settings, where))
+    return checks
+
+
+def _documents(data: Any) -> Iterator[Mapping[str, Any]]:
+    if isinstance(data, list):
+        for d in data:
+            if isinstance(d, Mapping) and d.get("verdict") == "error":
+                continue  # a program the verification could not read: nothing to replay
+            yield d
+    else:
+        yield data
+
+
+def replay_file(path: str, *, base: str | None = None, machine_file: str | None = None,
+                program_file: str | None = None) -> list[Check]:
+    """:func:`replay_report` of every report in a JSON file (one report, or a list of them)."""
+    try:
+        with open(path, encoding="utf-8") as fh:
+            data = json.load(fh)
+    except OSError as exc:
+        raise _fail("RP100", f"cannot read the report: {exc.strerror or exc}", path) from None
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise _fail("RP101", f"not a JSON report: {exc}", path) from None
+    docs = list(_documents(data))
+    if len(docs) > 1 and (machine_file or program_file):
+        raise _fail("RP103", "--machine and --program apply to a report of one program", path)
+    out: list[Check] = []
+    for doc in docs:
+        out.extend(replay_report(doc, base=base, machine_file=machine_file, program_file=program_file, where=path))
+    return out
+
+
+def _run(args: argparse.Namespace) -> int:
+    if args.base is not None and not os.path.isdir(args.base):
+        raise _fail("RP103", f"--base {args.base}: not a directory", "<command line>")
+    checks: list[Check] = []
+    for report in args.reports:
+        checks.extend(replay_file(report, base=args.base, machine_file=args.machine, program_file=args.program))
+    for c in checks:
+        print(c.render())
+    bad = sum(not c.confirmed for c in checks)
+    approx = sum(c.confirmed and not c.exact for c in checks)
+    if not checks:
+        print("replay: no counterexample to replay (every report is safe or unknown)")
+    else:
+        print(f"replay: {len(checks) - bad} of {len(checks)} counterexample{'s' if len(checks) != 1 else ''} "
+              f"confirmed" + (f" ({approx} within {IRRATIONAL_TOLERANCE_MM} mm of an irrational path point)"
+                              if approx else "") + (f"; {bad} NOT reproduced" if bad else ""))
+    return cli.EXIT_FAIL if bad else cli.EXIT_OK
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "replay", help="re-check the counterexamples of a JSON report exactly against the files it names",
+        description="Re-check every counterexample of REPORT.json (nczones verify --format json) in exact "
+                    "arithmetic against the machine file and program it names (their SHA-256 must match). "
+                    "Exit status: 0 all confirmed, 1 one was not reproduced, 2 bad input.")
+    p.add_argument("reports", nargs="+", metavar="REPORT.json", help="JSON report(s) of nczones verify")
+    p.add_argument("--base", metavar="DIR",
+                   help="directory the report's relative paths start from (default: the working directory)")
+    p.add_argument("--machine", metavar="M.toml", help="the machine file, when it moved since the report")
+    p.add_argument("--program", metavar="PROGRAM", help="the program file, when it moved (or was read from "
+                                                        "standard input)")
+    p.set_defaults(handler=_run)
+
+
+cli.REGISTRARS.append(register)
