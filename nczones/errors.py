@@ -124,7 +124,7 @@ def caret_excerpt(text: str, column: int, end_column: int | None = None,
         start = max(0, stop - room)
     shown = ("…" if start > 0 else "") + source[start:stop] + ("…" if stop < len(source) else "")
     lead = column - 1 - start + (1 if start > 0 else 0)
-    under = max(1, min(end_column - 1, stop) - (column - 1))
+    under = max(1, (min(end_column - 1, stop) if cut else end_column - 1) - (column - 1))
     return shown, " " * lead + "^" + "~" * (under - 1)
 
 
