@@ -1,29 +1,43 @@
 # Two commands do all the set-up on a fresh machine (Python 3.11 + pip):
-#   make demo   create .venv, install nczones, verify the bundled example
+#   make demo   create .venv, install nczones (runtime dependencies only), verify the bundled example
 #   make test   create .venv, install nczones with its test extras, run every test
+# CI runs .ci/run: make test, then ruff, mypy and the wheel test (and it installs chromium for the
+# browser tests; make test never installs system packages: without chromium those tests skip).
 PYTHON ?= python3
 VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+RUNTIME := $(VENV)/.installed-runtime
 PYTEST_ARGS ?=
 
-.PHONY: demo test bench clean
+.PHONY: demo test lint typecheck bench clean
 
-$(STAMP): pyproject.toml
+$(VENV)/bin/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]'
-	touch $(STAMP)
 
-demo: $(STAMP)
+$(RUNTIME): pyproject.toml | $(VENV)/bin/python
+	$(BIN)/python -m pip install --quiet -e .
+	touch $(RUNTIME)
+
+$(STAMP): pyproject.toml | $(VENV)/bin/python
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $(STAMP) $(RUNTIME)
+
+demo: $(RUNTIME)
 	$(BIN)/nczones check-machine specs/machines/grinder.toml
 	$(BIN)/nczones verify specs/examples/programs/notch_over.ngc --machine specs/machines/grinder.toml
 	$(BIN)/nczones verify specs/examples/programs/notch_dip.ngc --machine specs/machines/grinder.toml; \
 	  test $$? -eq 1  # intentionally unsafe: the line dips into the work-head notch
 
 test: $(STAMP)
-	-bash .ci/install-chromium.sh
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)
 
+lint: $(STAMP)
+	$(BIN)/ruff check nczones bench tests docs
+
+typecheck: $(STAMP)
+	$(BIN)/mypy
+
 clean:
-	rm -rf $(VENV) build *.egg-info
+	rm -rf $(VENV) build dist *.egg-info

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install Debian's chromium for the HTML report browser tests (tests/report/test_html.py) when it is
-# missing, we are root and apt-get exists. Never fails the build: without chromium those tests skip
-# with a reason.
+# missing, we are root and apt-get exists. Only .ci/run calls this (make test never installs system
+# packages). Never fails the build: without chromium those tests skip with a visible reason.
 command -v chromium >/dev/null 2>&1 || command -v chromium-browser >/dev/null 2>&1 \
   || command -v google-chrome >/dev/null 2>&1 && exit 0
 if [ "$(id -u)" != "0" ] || ! command -v apt-get >/dev/null 2>&1; then

@@ -1,5 +1,6 @@
 # Generates the teaching notebook from this source (run from the repository root).
 import nbformat as nbf
+
 nb = nbf.v4.new_notebook()
 md = nbf.v4.new_markdown_cell
 code = nbf.v4.new_code_cell

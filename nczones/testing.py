@@ -26,7 +26,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 from fractions import Fraction
 
-from hypothesis import strategies as st
+try:
+    from hypothesis import strategies as st
+except ModuleNotFoundError as exc:  # a plain install: the strategies need the [testing] extra
+    if exc.name != "hypothesis":
+        raise
+    raise ModuleNotFoundError("nczones.testing needs Hypothesis: pip install 'nczones[testing]'",
+                              name="hypothesis") from None
 
 from .exact import format_decimal
 from .machine import Machine, parse_machine

@@ -5,7 +5,6 @@ Each was a bug when found; the test keeps it fixed.
 
 from fractions import Fraction as F
 
-
 from nczones.controller import simulate
 from nczones.machine import parse_machine
 from nczones.motion import Segment, SegmentKind

@@ -15,9 +15,8 @@ from nczones.exact import format_decimal, parse_decimal
 from nczones.prover import Verdict, verify_segments
 from nczones.testing import machines, programs
 
-from oracles.bruteforce import first_violation
-
 from .contract import STATS, program_segments
+from oracles.bruteforce import first_violation
 
 MOTION = re.compile(r"\bG[0-3]\b")
 AXIS_WORD = re.compile(r"\b([XYZ])(-?\d+(?:\.\d+)?)\b")

@@ -40,7 +40,10 @@ def machine(zones: str = "", rapid: str = "linear", axes_pulse: str | None = Non
     return parse_machine(text, "test.toml")
 
 
-def line(start, end, block=0, feed="1000", kind=SegmentKind.LINE, tool_length=F(0), axes=("X", "Y", "Z")):
+ZERO = F(0)
+
+
+def line(start, end, block=0, feed="1000", kind=SegmentKind.LINE, tool_length=ZERO, axes=("X", "Y", "Z")):
     return Segment(kind, tuple(F(v) for v in start), tuple(F(v) for v in end), axes, block=block,
                    feed_mm_min=None if kind is SegmentKind.RAPID else F(feed), tool_length=tool_length)
 

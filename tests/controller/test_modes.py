@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import dataclasses
-from fractions import Fraction
 
 import pytest
 from hypothesis import given, settings
@@ -11,7 +10,7 @@ from hypothesis import strategies as st
 
 from nczones.controller import Mode, Settings, simulate
 from nczones.machine import load_machine
-from nczones.motion import Plane, SegmentKind
+from nczones.motion import SegmentKind
 
 from .helpers import FAST, F, arc, decimals, line
 

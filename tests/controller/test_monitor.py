@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -92,7 +91,6 @@ segments = st.tuples(points, points, st.sampled_from([F(0), F("1.5")]))
 
 
 def _first_outside(m, seg):
-    mon = LimitMonitor(m)
     p0 = tuple(round_pulse(v, U) for v in seg.start)
     p1 = tuple(round_pulse(v, U) for v in seg.end)
     for p in line_steps(p0, p1):

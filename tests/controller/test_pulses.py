@@ -11,7 +11,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from nczones.controller import Controller, round_pulse, simulate
-from nczones.controller.pulses import arc_centre, dogleg_steps, line_chunk, line_steps
+from nczones.controller.pulses import arc_centre, line_chunk, line_steps
 from nczones.motion import PLANE_AXES, Plane, SegmentKind
 
 from .helpers import FAST, F, arc, decimals, line, machine, rationals

@@ -8,7 +8,6 @@ any rectangle holds the point; it shares no code with the sequential scan.
 from __future__ import annotations
 
 import dataclasses
-
 from fractions import Fraction
 
 from hypothesis import given

@@ -34,7 +34,6 @@ from nczones.exact import format_decimal
 from nczones.gcode import interpret
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
-
 from tests.corpus import CORPUS
 
 TESTS = CORPUS / "linuxcnc" / "tests"

@@ -11,7 +11,6 @@ import pytest
 
 from nczones.errors import GcodeError
 from nczones.gcode.program import UnsupportedGcode, read_program
-
 from tests.corpus import CORPUS
 
 pytestmark = [pytest.mark.corpus, pytest.mark.skipif(not CORPUS.is_dir(), reason="corpus folder missing")]

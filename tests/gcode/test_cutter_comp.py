@@ -13,7 +13,6 @@ from nczones.errors import GcodeError
 from nczones.gcode import interpret, interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
-
 from tests.corpus import CORPUS
 
 

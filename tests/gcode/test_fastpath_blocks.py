@@ -14,11 +14,11 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
-from nczones.gcode import interpret_text
-from nczones.gcode import fastpath
+from nczones.gcode import fastpath, interpret_text
 from nczones.machine import parse_machine
 
 MACHINE = parse_machine(

@@ -5,13 +5,14 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
-from tests.corpus import CORPUS
 from nczones.gcode import interpret, interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.motion import Plane, SegmentKind
+from tests.corpus import CORPUS
 
 F = Fraction
 BAD = CORPUS / "linuxcnc" / "tests" / "interp" / "bad"

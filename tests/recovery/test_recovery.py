@@ -5,14 +5,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.controller import Controller, simulate
 from nczones.controller.recovery import (
     RecoveryVariant,
     motion_sequences,
-    recovery_legs,
     record_pulses,
+    recovery_legs,
     tool_change_config,
 )
 from nczones.errors import MachineFileError

@@ -1,5 +1,7 @@
 """The HTML report: self-contained, escaped, and rendered by headless Chromium with the violation marked."""
 
+import glob
+import os
 import re
 import shutil
 import subprocess
@@ -15,14 +17,29 @@ from nczones.report.html import render_html
 
 from .helpers import EX, GOLDEN, run_example
 
-CHROMIUM = next((p for p in (shutil.which(n) for n in ("chromium", "chromium-browser", "google-chrome",
-                                                          "google-chrome-stable")) if p), None)
+
+def _find_chromium() -> str | None:
+    """A headless-capable Chromium: $NCZONES_CHROMIUM or $CHROME_BIN, a browser on PATH, the usual install places."""
+    for var in ("NCZONES_CHROMIUM", "CHROME_BIN"):
+        if os.environ.get(var) and os.access(os.environ[var], os.X_OK):
+            return os.environ[var]
+    for name in ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable", "chrome"):
+        if shutil.which(name):
+            return shutil.which(name)
+    places = ["/usr/lib/chromium/chromium", "/snap/bin/chromium", "/opt/google/chrome/chrome",
+              "/Applications/Google Chrome.app/Contents/MacOS/Google Chrome",
+              *sorted(glob.glob(os.path.expanduser("~/.cache/ms-playwright/chromium-*/chrome-linux*/chrome")))]
+    return next((p for p in places if os.access(p, os.X_OK)), None)
+
+
+CHROMIUM = _find_chromium()
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                   "--disable-background-networking", "--disable-component-update", "--disable-sync",
                   "--disable-dev-shm-usage"]
 needs_chromium = pytest.mark.skipif(
-    CHROMIUM is None, reason="no chromium binary on PATH (make test installs Debian's chromium when run as root "
-                             "with apt-get; otherwise install it to run the browser tests)")
+    CHROMIUM is None, reason="browser tests skipped: no chromium found ($NCZONES_CHROMIUM, $CHROME_BIN, chromium or "
+                             "google-chrome on PATH, /usr/lib/chromium, Playwright's cache); .ci/run installs "
+                             "Debian's chromium, or set NCZONES_CHROMIUM=/path/to/chrome")
 
 
 def _chromium(tmp_path, *args, timeout=60):
@@ -159,7 +176,6 @@ def test_chromium_renders_the_report_with_the_violation_marked(tmp_path):
 @needs_chromium
 def test_chromium_screenshot_shows_red_marks(tmp_path):
     import matplotlib.image as mpimg
-    import numpy as np
 
     result, m = run_example("programs/notch_dip.ngc", "grinder.toml")
     html_file = tmp_path / "report.html"

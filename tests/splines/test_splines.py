@@ -6,7 +6,8 @@ from fractions import Fraction as F
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.controller.spline import FLATNESS, spline_chord_points, spline_positions
 from nczones.machine import parse_machine
