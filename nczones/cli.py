@@ -21,6 +21,7 @@ from . import __version__
 from .errors import InputError, InvalidArgument, NczonesError
 from .exact import format_decimal
 from .machine import Machine, load_machine
+from .zones import PolygonZone, SteppedZone
 
 __all__ = ["main", "EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL"]
 
@@ -95,7 +96,7 @@ def describe_machine(machine: Machine) -> str:
     for z in machine.zones:
         role = "forbid" if z.forbid else "allow"
         tip = " (tool tip)" if z.point.value == "tip" else ""
-        if z.kind == "stepped":
+        if isinstance(z, SteppedZone):
             lines.append(
                 f"    {z.name}: {role} stepped table{tip}, {z.limited_axis} limited by "
                 f"{z.reference_axis}, {len(z.regions)} regions from {format_decimal(z.start)}"
@@ -110,7 +111,7 @@ def describe_machine(machine: Machine) -> str:
                 lower = r.upto
         else:
             ranges = ", ".join(f"{a} [{_bound(lo)}, {_bound(hi)}]" for a, (lo, hi) in z.bounds().items())
-            extra = f" in {z.plane[0]}{z.plane[1]} with {len(z.vertices)} vertices" if z.kind == "polygon" else ""
+            extra = f" in {z.plane[0]}{z.plane[1]} with {len(z.vertices)} vertices" if isinstance(z, PolygonZone) else ""
             lines.append(f"    {z.name}: {role} {z.kind}{tip}{extra} {ranges}")
     bbox = machine.allowed.bounding_box()
     if bbox:
@@ -172,7 +173,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
-        return args.handler(args)
+        code: int = args.handler(args)
+        return code
     except InputError as exc:
         print(exc.render(), file=sys.stderr)
         return EXIT_INPUT

@@ -45,6 +45,10 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .motion import Segment
 
 __all__ = [
     "GRID_BITS",
@@ -96,15 +100,15 @@ class Interval:
     hi: Fraction
 
     @staticmethod
-    def of(x) -> "Interval":
-        x = Fraction(x)
-        return Interval(x, x)
+    def of(x: Fraction | int | str) -> "Interval":
+        q = Fraction(x)
+        return Interval(q, q)
 
     @staticmethod
-    def _coerce(x) -> "Interval":
+    def _coerce(x: "Interval | Fraction | int") -> "Interval":
         return x if isinstance(x, Interval) else Interval.of(x)
 
-    def __add__(self, o) -> "Interval":
+    def __add__(self, o: "Interval | Fraction | int") -> "Interval":
         o = Interval._coerce(o)
         return Interval(_down(self.lo + o.lo), _up(self.hi + o.hi))
 
@@ -113,26 +117,26 @@ class Interval:
     def __neg__(self) -> "Interval":
         return Interval(-self.hi, -self.lo)
 
-    def __sub__(self, o) -> "Interval":
+    def __sub__(self, o: "Interval | Fraction | int") -> "Interval":
         return self + (-Interval._coerce(o))
 
-    def __rsub__(self, o) -> "Interval":
+    def __rsub__(self, o: "Interval | Fraction | int") -> "Interval":
         return Interval._coerce(o) - self
 
-    def __mul__(self, o) -> "Interval":
+    def __mul__(self, o: "Interval | Fraction | int") -> "Interval":
         o = Interval._coerce(o)
         ps = (self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi)
         return Interval(_down(min(ps)), _up(max(ps)))
 
     __rmul__ = __mul__
 
-    def __truediv__(self, o) -> "Interval":
+    def __truediv__(self, o: "Interval | Fraction | int") -> "Interval":
         o = Interval._coerce(o)
         if o.lo <= 0 <= o.hi:
             raise ZeroDivisionError("interval division by an interval containing 0")
         return self * Interval(_down(1 / o.hi), _up(1 / o.lo))
 
-    def __rtruediv__(self, o) -> "Interval":
+    def __rtruediv__(self, o: "Interval | Fraction | int") -> "Interval":
         return Interval._coerce(o) / self
 
     def sqr(self) -> "Interval":
@@ -148,7 +152,7 @@ class Interval:
         hi = max(self.hi, F0)
         return Interval(_sqrt_floor(lo), _sqrt_ceil(hi))
 
-    def hull(self, o) -> "Interval":
+    def hull(self, o: "Interval | Fraction | int") -> "Interval":
         o = Interval._coerce(o)
         return Interval(min(self.lo, o.lo), max(self.hi, o.hi))
 
@@ -161,7 +165,7 @@ class Interval:
     def mid(self) -> Fraction:
         return (self.lo + self.hi) / 2
 
-    def contains(self, x) -> bool:
+    def contains(self, x: Fraction | int) -> bool:
         return self.lo <= Fraction(x) <= self.hi
 
 
@@ -360,7 +364,8 @@ class DevelopedArc:
         return self.rho * self.sweep
 
 
-def developed_arc(z0, c0, z1, c1, cylinder_radius, radius, clockwise: bool) -> DevelopedArc:
+def developed_arc(z0: Fraction, c0: Fraction, z1: Fraction, c1: Fraction, cylinder_radius: Fraction,
+                  radius: Fraction, clockwise: bool) -> DevelopedArc:
     """The enclosed geometry of a developed arc (see the module docstring).
 
     Raises ``ValueError`` for a zero radius, equal end points, or a chord
@@ -407,15 +412,15 @@ def developed_arc(z0, c0, z1, c1, cylinder_radius, radius, clockwise: bool) -> D
     return DevelopedArc(z0, c0, z1, c1, rc, r, clockwise, k, d, centre, u, rho, sweep, half_chord, half_circle)
 
 
-def cylinder_of(seg) -> tuple[str, str, Fraction] | None:
+def cylinder_of(seg: Segment) -> tuple[str, str, Fraction] | None:
     """``(linear axis, rotary axis, cylinder radius)`` of a motion made in G07.1 mode, else None."""
     extra = dict(seg.extra)
     if "cylinder_radius" not in extra:
         return None
-    return extra["linear_axis"], extra["rotary_axis"], Fraction(extra["cylinder_radius"])
+    return str(extra["linear_axis"]), str(extra["rotary_axis"]), Fraction(extra["cylinder_radius"])  # type: ignore[call-overload]
 
 
-def developed_arc_of(seg) -> DevelopedArc:
+def developed_arc_of(seg: Segment) -> DevelopedArc:
     """The :class:`DevelopedArc` of a ``SegmentKind.DEVELOPED_ARC`` segment."""
     info = cylinder_of(seg)
     if info is None or seg.radius is None:

@@ -26,12 +26,15 @@ its slot descriptor instead.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import fields as dataclass_fields
+from typing import Any
 
 __all__ = ["builder"]
 
 
-def builder(cls: type, params: tuple[str, ...] | None = None, *, name: str | None = None, **constants):
+def builder(cls: type, params: tuple[str, ...] | None = None, *, name: str | None = None,
+            **constants: Any) -> Callable[..., Any]:
     """A function building ``cls`` instances from ``params`` (positional) and fixed ``constants``.
 
     Parameters
@@ -79,9 +82,9 @@ def builder(cls: type, params: tuple[str, ...] | None = None, *, name: str | Non
                      name)
 
 
-def _compiled(src: str, scope: dict, cls: type, name: str | None):
+def _compiled(src: str, scope: dict[str, Any], cls: type, name: str | None) -> Callable[..., Any]:
     exec(compile(src + "\n", f"<{cls.__name__} builder>", "exec"), scope)  # noqa: S102  # field names only
-    make = scope["make"]
+    make: Callable[..., Any] = scope["make"]
     make.__name__ = make.__qualname__ = name or "make"
     make.__doc__ = f"``{cls.__name__}(...)`` from {', '.join(make.__code__.co_varnames[:make.__code__.co_argcount])}."
     return make

@@ -18,6 +18,7 @@ import difflib
 import enum
 import hashlib
 import json
+import os
 import re
 import tomllib
 from collections.abc import Callable, Mapping
@@ -336,7 +337,7 @@ def _number(
         if any(digits) and value_d.adjusted() > _MAX_ADJUSTED_EXPONENT:
             rd.report("ZN105", f"{what}: {_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
             return None
-        if any(digits) and exponent + trailing < -_MAX_PLACES:
+        if any(digits) and isinstance(exponent, int) and exponent + trailing < -_MAX_PLACES:
             rd.report("ZN105", f"{what}: {_written(value)} has more than {_MAX_PLACES} digits after the decimal point", span)
             return None
         q = Fraction(value_d)
@@ -371,7 +372,7 @@ def _check_keys(
             rd.report("ZN101", f"{where}: unknown key {_written(key)}{hint}", span)
 
 
-def _register_table(rd, data: Mapping, section: str, prefix: str, what: str, example: str) -> dict[int, Fraction]:
+def _register_table(rd: _Reader, data: Mapping[str, Any], section: str, prefix: str, what: str, example: str) -> dict[int, Fraction]:
     """``[tool_lengths]`` / ``[tool_diameters]``: keys ``<prefix><number>`` (0..9999) with exact values."""
     out: dict[int, Fraction] = {}
     raw = data.get(section, {})
@@ -490,7 +491,7 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
     return machine
 
 
-def load_machine(path: str | Path) -> Machine:
+def load_machine(path: str | os.PathLike[str]) -> Machine:
     """Load and validate a machine file.
 
     Parameters
@@ -636,7 +637,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         if key in data:
             sections[key] = parser(rd, data[key], axes)
 
-    if rd.failed:
+    if rd.failed or period is None:
         return None
 
     axis_objs = tuple(
@@ -768,10 +769,11 @@ def _axis_field(rd: _Reader, zt: Mapping[str, Any], key: str, label: str, header
     if value not in axes:
         rd.report("ZN110", f"{label}: {key} {_written(value)} is not one of the machine's axes ({', '.join(axes)})", span)
         return None
-    return value
+    return str(value)
 
 
-def _stepped(rd, zt, label, name, header, axes, forbid, point) -> SteppedZone | None:
+def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: int | None, axes: tuple[str, ...],
+             forbid: bool, point: ZonePoint) -> SteppedZone | None:
     ref = _axis_field(rd, zt, "reference_axis", label, header, axes)
     lim = _axis_field(rd, zt, "limited_axis", label, header, axes)
     if ref is not None and ref == lim:
@@ -824,7 +826,8 @@ def _stepped(rd, zt, label, name, header, axes, forbid, point) -> SteppedZone | 
     return SteppedZone(name, ref, lim, start, tuple(regions), forbid, point)
 
 
-def _limits(rd, zt, label, header, axes, exclude: tuple[str, ...] = ()) -> tuple | None:
+def _limits(rd: _Reader, zt: Mapping[str, Any], label: str, header: int | None, axes: tuple[str, ...],
+            exclude: tuple[str, ...] = ()) -> tuple[Any, ...] | None:
     lows = zt.get("min", {})
     highs = zt.get("max", {})
     ok = True
@@ -856,7 +859,8 @@ def _limits(rd, zt, label, header, axes, exclude: tuple[str, ...] = ()) -> tuple
     return tuple(limits) if ok else None
 
 
-def _box(rd, zt, label, name, header, axes, forbid, point) -> BoxZone | None:
+def _box(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: int | None, axes: tuple[str, ...],
+         forbid: bool, point: ZonePoint) -> BoxZone | None:
     limits = _limits(rd, zt, label, header, axes)
     if limits is None:
         return None
@@ -866,7 +870,8 @@ def _box(rd, zt, label, name, header, axes, forbid, point) -> BoxZone | None:
     return BoxZone(name, limits, forbid, point)
 
 
-def _polygon(rd, zt, label, name, header, axes, forbid, point) -> PolygonZone | None:
+def _polygon(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: int | None,
+             axes: tuple[str, ...], forbid: bool, point: ZonePoint) -> PolygonZone | None:
     plane = zt.get("plane")
     span = rd.loc.key("plane", header)
     if not (isinstance(plane, list) and len(plane) == 2 and all(isinstance(a, str) for a in plane)):
@@ -925,16 +930,19 @@ def _polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
     return None
 
 
-def _orient(a, b, c) -> int:
+_Pt2 = tuple[Fraction, Fraction]
+
+
+def _orient(a: _Pt2, b: _Pt2, c: _Pt2) -> int:
     v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
     return (v > 0) - (v < 0)
 
 
-def _between(a, b, c) -> bool:
+def _between(a: _Pt2, b: _Pt2, c: _Pt2) -> bool:
     return min(a[0], b[0]) <= c[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= c[1] <= max(a[1], b[1])
 
 
-def _segments_intersect(p1, p2, q1, q2, adjacent: bool) -> bool:
+def _segments_intersect(p1: _Pt2, p2: _Pt2, q1: _Pt2, q2: _Pt2, adjacent: bool) -> bool:
     o1, o2, o3, o4 = _orient(p1, p2, q1), _orient(p1, p2, q2), _orient(q1, q2, p1), _orient(q1, q2, p2)
     if adjacent:
         # adjacent edges share one vertex; they are bad only if they overlap (fold back)

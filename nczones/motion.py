@@ -35,6 +35,7 @@ import enum
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
@@ -218,14 +219,21 @@ class MotionChunk:
             yield from self.objects or ()
             return
         den = 10**self.scale
+        kinds, line_col, starts, ends = self.kind, self.line, self.start, self.end
+        blocks, lengths = self.block, self.tool_length
+        # the columns form always fills these (class docstring)
+        assert kinds is not None and line_col is not None and starts is not None and ends is not None
+        assert blocks is not None and lengths is not None
         for i in range(len(self)):
-            kind = SegmentKind(int(self.kind[i]))
-            line_no = int(self.line[i])
+            kind = SegmentKind(int(kinds[i]))
+            line_no = int(line_col[i])
             span = SourceSpan(self.file, line_no, 1, None, (lines or {}).get(line_no, ""))
-            start = tuple(Fraction(int(v), den) for v in self.start[i])
-            end = tuple(Fraction(int(v), den) for v in self.end[i])
-            arc: dict[str, object] = {}
+            start = tuple(Fraction(int(v), den) for v in starts[i])
+            end = tuple(Fraction(int(v), den) for v in ends[i])
+            arc: dict[str, Any] = {}
             if kind is SegmentKind.ARC:
+                assert self.plane is not None and self.clockwise is not None
+                assert self.centre is not None and self.turns is not None
                 arc = dict(
                     plane=Plane(int(self.plane[i])),
                     clockwise=bool(self.clockwise[i]),
@@ -240,6 +248,6 @@ class MotionChunk:
             if self.derived is not None:
                 arc["derived"] = str(self.derived[i])
             yield Segment(
-                kind, start, end, self.axes, int(self.block[i]), span,
-                Fraction(int(self.tool_length[i]), den), feed, **arc,
+                kind, start, end, self.axes, int(blocks[i]), span,
+                Fraction(int(lengths[i]), den), feed, **arc,
             )

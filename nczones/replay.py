@@ -36,7 +36,7 @@ import argparse
 import json
 import math
 import os
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from types import MappingProxyType
@@ -141,7 +141,7 @@ def _half(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> int:
     return 0 if cross > 0 or (cross == 0 and dot > 0) else 1
 
 
-def _ccw_not_after(u, v, w) -> bool:
+def _ccw_not_after(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction]) -> bool:
     """Counter-clockwise from ``u``: is the direction ``v`` reached no later than ``w`` (exact)?"""
     hv, hw = _half(u, v), _half(u, w)
     if hv != hw:
@@ -217,7 +217,7 @@ def _float_arc_distance(p: Point, seg: Segment) -> float:
     return _min_distance([to_float(x) for x in p], at)
 
 
-def _min_distance(p: list[float], at, samples: int = 4096) -> float:
+def _min_distance(p: list[float], at: Callable[[float], list[float]], samples: int = 4096) -> float:
     """Smallest max-norm distance from ``p`` to the curve ``at(f)``, f in [0, 1] (samples, then refined)."""
     def dist(f: float) -> float:
         return max(abs(a - b) for a, b in zip(at(f), p))
@@ -321,7 +321,7 @@ def _on_motion(p: Point, seg: Segment, machine: Machine, exact: bool, parameter:
         from .nurbs import Nurbs
 
         e = dict(seg.extra)
-        curve = Nurbs(e["degree"], e["knots"], e["control"], e["weights"])
+        curve = Nurbs(e["degree"], e["knots"], e["control"], e["weights"])  # type: ignore[arg-type]
         lo, hi = curve.domain
         return tuple(curve.point(lo + parameter * (hi - lo))) == tuple(p)
     if exact:
@@ -409,7 +409,7 @@ def _show(axes: tuple[str, ...], p: Point) -> str:
     return " ".join(f"{a}{format_decimal(x, 6)}" for a, x in zip(axes, p))
 
 
-def _segments(source, machine: Machine, settings: Mapping[str, Any]) -> list[Segment]:
+def _segments(source: Any, machine: Machine, settings: Mapping[str, Any]) -> list[Segment]:
     from .gcode import interpret
 
     options: dict[str, Any] = {}
@@ -445,7 +445,7 @@ def replay_report(doc: Mapping[str, Any], *, base: str | None = None, machine_fi
     violations = doc["violations"]
     if not violations:
         return []
-    machine_info = doc.get("machine") if isinstance(doc.get("machine"), Mapping) else {}
+    machine_info: Mapping[str, Any] = doc["machine"] if isinstance(doc.get("machine"), Mapping) else {}
     mpath = machine_file or machine_info.get("file")
     if not mpath:
         raise _fail("RP103", "the report names no machine file; pass --machine", where)
@@ -456,7 +456,7 @@ def replay_report(doc: Mapping[str, Any], *, base: str | None = None, machine_fi
         raise _fail("RP103", f"the report's program is {ppath or 'unnamed'} (not a file); pass --program", where)
     source = load_program(_resolve(ppath, base if program_file is None else None), name=doc.get("program") or ppath)
     _check_hash("program", ppath, source.sha256, doc.get("program_sha256"), where)
-    settings = doc.get("settings") if isinstance(doc.get("settings"), Mapping) else {}
+    settings: Mapping[str, Any] = doc["settings"] if isinstance(doc.get("settings"), Mapping) else {}
     try:
         margin = parse_rational(str(settings.get("margin", doc.get("margin", "0"))))
     except InvalidArgument as exc:

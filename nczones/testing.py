@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
+from typing import Any, cast
 
 try:
     from hypothesis import strategies as st
@@ -193,7 +194,7 @@ def polygons(
         r = draw(decimals(min_value=r_max / 5, max_value=r_max, places=places))
         dx, dy = _DIRECTIONS[k]
         vertices.append((cx + dx * r, cy + dy * r))
-    return PolygonZone(name, tuple(plane), tuple(vertices), (), forbid)
+    return PolygonZone(name, (plane[0], plane[1]), tuple(vertices), (), forbid)
 
 
 def polygon_centre(zone: PolygonZone) -> tuple[Fraction, Fraction]:
@@ -331,8 +332,8 @@ def machine_files(
         zones_toml.append(_box_toml("z travel", {"Z": Fraction(0)}, {"Z": z_top}, False))
         start["Z"] = z_top * Fraction(4, 5)
         if tool_lengths:
-            for reg in (1, 2):
-                tools[reg] = draw(decimals(min_value=size_q / 40, max_value=size_q / 8, places=places))
+            for register in (1, 2):
+                tools[register] = draw(decimals(min_value=size_q / 40, max_value=size_q / 8, places=places))
         if tip_zones and draw(st.booleans()):
             a = draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True))
             b = draw(st.lists(decimals(min_value=0, max_value=size, places=places), min_size=2, max_size=2, unique=True))
@@ -366,7 +367,7 @@ def machine_files(
     return "\n".join(lines + zones_toml)
 
 
-def machines(**kwargs) -> st.SearchStrategy[Machine]:
+def machines(**kwargs: Any) -> st.SearchStrategy[Machine]:
     """Loaded :class:`~nczones.machine.Machine` values; takes the keywords of :func:`machine_files`.
 
     Draws whose start point falls inside the optional forbid box are skipped.
@@ -388,7 +389,7 @@ def machines(**kwargs) -> st.SearchStrategy[Machine]:
                 return None
             raise
 
-    return machine_files(**kwargs).map(load).filter(lambda m: m is not None)
+    return cast("st.SearchStrategy[Machine]", machine_files(**kwargs).map(load).filter(lambda m: m is not None))
 
 
 def boundary_values(machine: Machine, axis: str) -> tuple[Fraction, ...]:
@@ -399,14 +400,14 @@ def boundary_values(machine: Machine, axis: str) -> tuple[Fraction, ...]:
     """
     values: set[Fraction] = set()
     for z in machine.zones:
-        if z.kind == "stepped":
+        if isinstance(z, SteppedZone):
             if axis == z.reference_axis:
                 values.add(z.start)
                 values.update(z.uptos)
             if axis == z.limited_axis:
                 values.update(v for r in z.regions for v in (r.min, r.max) if v is not None)
         else:
-            if z.kind == "polygon" and axis in z.plane:
+            if isinstance(z, PolygonZone) and axis in z.plane:
                 k = z.plane.index(axis)
                 values.update(v[k] for v in z.vertices)
             for a, (lo, hi) in z.bounds().items():
@@ -543,6 +544,7 @@ def programs(
                 words.append(distance)
         off = dict(zip(names, machine.offset(frame)))
         if what == "tool":
+            assert tool_axis is not None  # "tool" is enabled only with a tool axis (registers)
             if distance != "G90":
                 distance = "G90"
                 words.append("G90")
@@ -607,7 +609,8 @@ def _extent(machine: Machine) -> Fraction:
     return max(spans) if spans else Fraction(100)
 
 
-def _words(axes, target, pos, distance, off, tool_axis, tool_length) -> list[str]:
+def _words(axes: Sequence[str], target: dict[str, Fraction], pos: dict[str, Fraction], distance: str,
+           off: dict[str, Fraction], tool_axis: str | None, tool_length: Fraction) -> list[str]:
     out = []
     for a in axes:
         if distance == "G91":

@@ -22,12 +22,14 @@ matplotlib.
 
 from __future__ import annotations
 
+from typing import Any
+
 __all__ = ["render_report", "plot_program", "relevant_planes", "FORMATS"]
 
 FORMATS = ("text", "json", "html", "sarif")
 
 
-def render_report(result, fmt: str = "text", *, machine=None, program=None, color: bool = False,
+def render_report(result: Any, fmt: str = "text", *, machine: Any = None, program: Any = None, color: bool = False,
                   deterministic: bool = False) -> str:
     """Render a verification :class:`~nczones.prover.Result` in one of :data:`FORMATS`.
 

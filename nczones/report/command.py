@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import Any
 
 from .. import cli
 from ..errors import Diagnostic, InputError
@@ -22,7 +23,7 @@ class PlotError(InputError):
     """A bad ``nczones plot`` option (code PL1xx)."""
 
 
-def _plane(text: str | None, machine) -> tuple[str, str] | None:
+def _plane(text: str | None, machine: Any) -> tuple[str, str] | None:
     if text is None:
         return None
     parts = [p.strip().upper() for p in text.replace(" ", ",").split(",") if p.strip()]

@@ -19,20 +19,21 @@ from __future__ import annotations
 
 import os
 import types
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import ZonePoint
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 
 __all__ = ["plot_program", "relevant_planes", "collect_path", "PathFloat"]
 
 
-def relevant_planes(machine: Machine, result=None, limit: int = 3) -> list[tuple[str, str]]:
+def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> list[tuple[str, str]]:
     """The axis planes worth drawing: those the zones are defined in.
 
     Stepped tables and polygons name their plane; a box bounding several
@@ -58,19 +59,19 @@ def relevant_planes(machine: Machine, result=None, limit: int = 3) -> list[tuple
 
     planes: list[tuple[str, str]] = []
 
-    def add(p):
+    def add(p: tuple[str, str]) -> None:
         if p[0] != p[1] and p not in planes and all(a in order for a in p):
             planes.append(p)
 
     for z in machine.zones:
-        if z.kind == "stepped":
+        if isinstance(z, SteppedZone):
             add(pair(z.reference_axis, z.limited_axis))
-        elif z.kind == "polygon":
+        elif isinstance(z, PolygonZone):
             add(pair(*z.plane))
     for z in machine.zones:
-        if z.kind == "box":
+        if isinstance(z, BoxZone):
             bounded = sorted((a for a, (lo, hi) in z.bounds().items() if lo is not None or hi is not None),
-                             key=order.get)
+                             key=lambda a: order.get(a, len(order)))
             for other in bounded[1:]:
                 add(pair(bounded[0], other))
     if result is not None:
@@ -105,7 +106,8 @@ def _seg_points(seg: Segment, machine: Machine) -> np.ndarray:
     return np.asarray(path_points_float(seg, machine), dtype=float)
 
 
-def collect_path(program, machine: Machine, hot_blocks=(), *, max_segments: int = 200_000) -> PathFloat:
+def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (), *,
+                 max_segments: int = 200_000) -> PathFloat:
     """Interpret ``program`` (a path or a :class:`~nczones.gcode.source.ProgramSource`) and keep
     float polylines for drawing.
 
@@ -179,14 +181,14 @@ def collect_path(program, machine: Machine, hot_blocks=(), *, max_segments: int 
     return out
 
 
-def _shifted_machine(machine: Machine, tool_length: Fraction | None):
+def _shifted_machine(machine: Machine, tool_length: Fraction | None) -> tuple[Any, Fraction | None]:
     """A drawing proxy whose tip boxes sit where the spindle is when the tip touches them."""
     if not tool_length or machine.tool_axis is None:
         return machine, None
-    zones = []
+    zones: list[Zone] = []
     shifted = False
     for z in machine.zones:
-        if z.point is ZonePoint.TIP and z.kind == "box" and machine.tool_axis in z.bounds():
+        if z.point is ZonePoint.TIP and isinstance(z, BoxZone) and machine.tool_axis in z.bounds():
             limits = tuple((a, None if lo is None else lo + tool_length if a == machine.tool_axis else lo,
                             None if hi is None else hi + tool_length if a == machine.tool_axis else hi)
                            for a, lo, hi in z.limits)
@@ -208,9 +210,9 @@ def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
     return [a[..., [h, v]] for a in arrs]
 
 
-def plot_program(program, machine: Machine | str | os.PathLike, plane: Sequence[str] | None = None,
-                 result=None, *, ax=None, path: PathFloat | None = None, title: str | None = None,
-                 legend: bool = True):
+def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane: Sequence[str] | None = None,
+                 result: Any = None, *, ax: Any = None, path: PathFloat | None = None, title: str | None = None,
+                 legend: bool = True) -> Any:
     """Draw a program's toolpath over the allowed set of a machine; returns the figure.
 
     Parameters
@@ -289,10 +291,10 @@ def plot_program(program, machine: Machine | str | os.PathLike, plane: Sequence[
                           label="violating block" if k == 0 else None)
         line.set_gid(f"violating-block-{k + 1}")
     if result is not None and result.violations:
-        pts = [dict(x.point) for x in result.violations]
+        points = [dict(x.point) for x in result.violations]
         exits = [dict(x.first_exit) for x in result.violations]
-        xs = [to_float(p[plane[0]]) for p in pts if plane[0] in p and plane[1] in p]
-        ys = [to_float(p[plane[1]]) for p in pts if plane[0] in p and plane[1] in p]
+        xs = [to_float(p[plane[0]]) for p in points if plane[0] in p and plane[1] in p]
+        ys = [to_float(p[plane[1]]) for p in points if plane[0] in p and plane[1] in p]
         sc = ax.scatter(xs, ys, marker="X", s=110, color="#c00000", edgecolors="white", linewidths=0.8,
                         zorder=7, label="counterexample")
         sc.set_gid("counterexample")
@@ -323,7 +325,7 @@ def plot_program(program, machine: Machine | str | os.PathLike, plane: Sequence[
     return fig
 
 
-def draw_allowed_set(machine, plane: tuple[str, str], ax):
+def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any) -> Any:
     """Draw the allowed set in ``plane``: the intersection of the allow zones green, forbid zones hatched.
 
     Each zone is projected to the plane (the drawing of :mod:`nczones.report.plot`);

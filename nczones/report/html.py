@@ -23,7 +23,9 @@ from __future__ import annotations
 import html
 import io
 import re
+from collections.abc import Iterable
 from fractions import Fraction
+from typing import Any
 
 from .. import __version__
 from ..errors import program_lines
@@ -59,7 +61,7 @@ document.addEventListener("DOMContentLoaded", function () {
 """
 
 
-def _e(text) -> str:
+def _e(text: object) -> str:
     return html.escape(str(text), quote=True)
 
 
@@ -67,11 +69,11 @@ def _d(x: Fraction) -> str:
     return format_decimal(x, 12)
 
 
-def _pt(pairs) -> str:
+def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
     return " ".join(f"{a}{_d(v)}" for a, v in pairs)
 
 
-def _svg(fig, salt: str) -> str:
+def _svg(fig: Any, salt: str) -> str:
     """The figure as an inline <svg> element (no XML prolog, deterministic ids)."""
     import matplotlib
 
@@ -87,9 +89,9 @@ def _svg(fig, salt: str) -> str:
 def _listing(lines: list[str], hot: dict[int, str], unknown: set[int], context: int, full_limit: int) -> str:
     flagged = set(hot) | unknown
     if len(lines) <= full_limit:
-        shown = range(1, len(lines) + 1)
+        shown: Iterable[int] = range(1, len(lines) + 1)
     else:
-        keep = set()
+        keep: set[int] = set()
         for n in flagged:
             keep.update(range(max(1, n - context), min(len(lines), n + context) + 1))
         keep.update(range(1, min(len(lines), context) + 1))
@@ -109,7 +111,8 @@ def _listing(lines: list[str], hot: dict[int, str], unknown: set[int], context: 
     return "".join(out)
 
 
-def render_html(result: Result, machine, program=None, *, planes=None, source_text: str | None = None,
+def render_html(result: Result, machine: Any, program: Any = None, *, planes: Any = None,
+                source_text: str | None = None,
                 deterministic: bool = False, listing_limit: int = 5000, context: int = 15) -> str:
     r"""The self-contained HTML report.
 
@@ -222,7 +225,7 @@ def render_html(result: Result, machine, program=None, *, planes=None, source_te
         ln = r.span.line if r.span is not None else None
         if ln is not None:
             unknown_lines.add(ln)
-        link = f'<a href="#L{ln}">{ln}:{r.span.column}</a>' if ln is not None else "—"
+        link = f'<a href="#L{ln}">{ln}:{r.span.column}</a>' if r.span is not None else "—"
         rrows.append(f'<tr class="reason" id="r{i}"><td>{link}</td><td>{_e(r.code) or "—"}</td>'
                      f"<td>{_e(r.message)}</td></tr>")
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Sequence
 from fractions import Fraction
+from typing import Any
 
 import matplotlib.pyplot as plt
 from matplotlib.patches import Polygon as PolygonPatch
@@ -20,7 +21,7 @@ from matplotlib.patches import Rectangle
 from ..exact import to_float
 from ..machine import Machine
 from ..motion import Segment, SegmentKind
-from ..zones import Zone
+from ..zones import PolygonZone, SteppedZone, Zone
 
 __all__ = ["plot_zones", "plot_path", "mark_points", "plot_machine", "path_points_float", "view_limits"]
 
@@ -47,10 +48,10 @@ def _finite(v: Fraction | None, default: float) -> float:
     return default if v is None else to_float(v)
 
 
-def _zone_patches(zone: Zone, plane: tuple[str, str], xlim, ylim):
+def _zone_patches(zone: Zone, plane: tuple[str, str], xlim: Any, ylim: Any) -> tuple[str, list[Any]] | None:
     """Rectangles/polygons (float) that draw ``zone`` in ``plane``; None if not drawable."""
     h, v = plane
-    if zone.kind == "stepped":
+    if isinstance(zone, SteppedZone):
         rects = []
         if {zone.reference_axis, zone.limited_axis} != {h, v}:
             return None
@@ -63,7 +64,7 @@ def _zone_patches(zone: Zone, plane: tuple[str, str], xlim, ylim):
                 rects.append(((lo, a), hi - lo, b - a))
         return ("rects", rects)
     bounds = zone.bounds()
-    if zone.kind == "polygon" and tuple(zone.plane) in ((h, v), (v, h)):
+    if isinstance(zone, PolygonZone) and tuple(zone.plane) in ((h, v), (v, h)):
         pts = [(to_float(p[0]), to_float(p[1])) for p in zone.vertices]
         if tuple(zone.plane) == (v, h):
             pts = [(y, x) for x, y in pts]
@@ -77,7 +78,8 @@ def _zone_patches(zone: Zone, plane: tuple[str, str], xlim, ylim):
     return ("rects", [((x0, y0), x1 - x0, y1 - y0)])
 
 
-def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax=None, *, legend: bool = True):
+def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax: Any = None, *,
+               legend: bool = True) -> Any:
     """Draw the machine's zones in the plane of two axes.
 
     Parameters
@@ -149,7 +151,7 @@ def _arc_float_points(seg: Segment, steps_per_turn: int = 360) -> list[tuple[flo
     if seg.centre is not None:
         ca, cb = to_float(seg.centre[0]), to_float(seg.centre[1])
     else:  # R-format: float centre for drawing only
-        r = to_float(seg.radius)
+        r = to_float(seg.radius) if seg.radius is not None else 0.0
         dx, dy = e[i] - s[i], e[j] - s[j]
         d = math.hypot(dx, dy)
         h = math.sqrt(max(r * r - d * d / 4, 0.0))
@@ -187,7 +189,10 @@ def _developed_arc_float_points(seg: Segment, samples: int = 48) -> list[tuple[f
     """Float samples of a G07.1 arc in machine coordinates (linear axis mm, rotary degrees)."""
     from ..cylinder import cylinder_of, developed_arc_of
 
-    linear, rotary, _ = cylinder_of(seg)
+    info = cylinder_of(seg)
+    if info is None:
+        raise ValueError("not a motion made in cylindrical interpolation")
+    linear, rotary, _ = info
     iz, ic = seg.axes.index(linear), seg.axes.index(rotary)
     arc = developed_arc_of(seg)
     out = []
@@ -236,13 +241,13 @@ def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tupl
 def plot_path(
     segments: Iterable[Segment],
     plane: Sequence[str],
-    ax,
+    ax: Any,
     *,
     highlight_blocks: Iterable[int] = (),
     color: str = "#1f4e9c",
     label: str | None = "toolpath",
     machine: Machine | None = None,
-):
+) -> Any:
     """Draw segments in ``plane``: feeds solid, rapids dashed, highlighted blocks red.
 
     Pass ``machine`` to draw rapids as that machine moves them (dogleg).
@@ -267,7 +272,7 @@ def plot_path(
     return ax
 
 
-def mark_points(points: Iterable[tuple[float, float]], ax, *, label: str = "counterexample"):
+def mark_points(points: Iterable[tuple[float, float]], ax: Any, *, label: str = "counterexample") -> Any:
     """Mark points (already projected to the plot plane) with red crosses."""
     pts = list(points)
     if pts:
@@ -275,7 +280,8 @@ def mark_points(points: Iterable[tuple[float, float]], ax, *, label: str = "coun
     return ax
 
 
-def plot_machine(machine: Machine, segments: Iterable[Segment] = (), plane: tuple[str, str] | None = None, ax=None):
+def plot_machine(machine: Machine, segments: Iterable[Segment] = (), plane: tuple[str, str] | None = None,
+                 ax: Any = None) -> Any:
     """Zones plus an optional toolpath in one call (the notebooks' entry point)."""
     ax = plot_zones(machine, plane, ax, legend=False)
     plane = plane or (machine.axis_names[0], machine.axis_names[1])

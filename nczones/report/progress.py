@@ -18,14 +18,14 @@ import os
 import sys
 import time
 from collections.abc import Callable
-from typing import TextIO
+from typing import Any, TextIO
 
 __all__ = ["ProgressBar", "progress_for", "is_terminal", "item_last_line", "count_lines"]
 
 Progress = Callable[[int, "int | None"], None]
 
 
-def is_terminal(stream) -> bool:
+def is_terminal(stream: Any) -> bool:
     """True when ``stream`` is an interactive terminal that is not ``TERM=dumb``.
 
     >>> import io
@@ -50,7 +50,7 @@ def count_lines(text: str) -> int:
     return text.count("\n") + (0 if text.endswith("\n") else 1)
 
 
-def item_last_line(item) -> int | None:
+def item_last_line(item: object) -> int | None:
     """The last source line of a :class:`~nczones.motion.Segment` or a MotionChunk (None if unknown).
 
     >>> from fractions import Fraction as F
@@ -62,7 +62,7 @@ def item_last_line(item) -> int | None:
     """
     span = getattr(item, "span", None)
     if span is not None:
-        return span.line
+        return int(span.line)
     line = getattr(item, "line", None)
     if line is not None and getattr(item, "scale", None) is not None:
         return int(line[-1]) if len(line) else None

@@ -23,8 +23,10 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
+from fractions import Fraction
 from pathlib import Path, PurePosixPath
+from typing import Any
 from urllib.parse import quote
 
 from .. import __version__
@@ -96,7 +98,7 @@ def artifact_uri(path: str, base: str | os.PathLike | None = None,
     return quote(PurePosixPath(*Path(rel).parts).as_posix()), True
 
 
-def _pt(pairs) -> str:
+def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
     return " ".join(f"{a}{format_decimal(v)}" for a, v in pairs)
 
 
@@ -108,7 +110,7 @@ def _location(file: str | None, line: int | None, column: int | None, snippet: s
     artifact = {"uri": uri}
     if relative:
         artifact["uriBaseId"] = "SRCROOT"
-    region = {"startLine": line, "startColumn": max(1, column or 1)}
+    region: dict[str, Any] = {"startLine": line, "startColumn": max(1, column or 1)}
     if snippet:
         region["snippet"] = {"text": snippet}
     return [{"physicalLocation": {"artifactLocation": artifact, "region": region}}]
@@ -188,8 +190,8 @@ def _program_properties(result: Result, deterministic: bool) -> dict:
     return props
 
 
-def to_sarif(result: Result | Sequence[Result], *, base: str | os.PathLike | None = None, machine=None,
-             deterministic: bool = False, files_from: str | os.PathLike | None = None) -> dict:
+def to_sarif(result: Result | Sequence[Result], *, base: str | os.PathLike[str] | None = None, machine: Any = None,
+             deterministic: bool = False, files_from: str | os.PathLike[str] | None = None) -> dict[str, Any]:
     """The SARIF 2.1.0 log of a verification (or of several programs: one run, their results) as a dict.
 
     Parameters
@@ -270,6 +272,6 @@ def to_sarif(result: Result | Sequence[Result], *, base: str | os.PathLike | Non
     return {"$schema": SARIF_SCHEMA_URI, "version": "2.1.0", "runs": [run]}
 
 
-def render_sarif(result: Result, **kwargs) -> str:
+def render_sarif(result: Result | Sequence[Result], **kwargs: Any) -> str:
     """:func:`to_sarif` as indented JSON text."""
     return json.dumps(to_sarif(result, **kwargs), indent=2, ensure_ascii=False) + "\n"

@@ -19,7 +19,9 @@ internal counters), for golden files.
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from fractions import Fraction
+from typing import Any
 
 from ..errors import caret_excerpt
 from ..exact import format_decimal
@@ -39,7 +41,7 @@ _STYLES = {
 }
 
 
-def use_color(stream) -> bool:
+def use_color(stream: Any) -> bool:
     """Colour for ``stream``: only a terminal, and never with ``NO_COLOR`` set or ``TERM=dumb``.
 
     >>> import io
@@ -57,7 +59,7 @@ def _d(x: Fraction) -> str:
     return format_decimal(x, 12)
 
 
-def _pt(pairs) -> str:
+def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
     return " ".join(f"{a}{_d(v)}" for a, v in pairs)
 
 

@@ -185,8 +185,8 @@ class SteppedZone:
     def bounds(self) -> dict[str, tuple[Fraction | None, Fraction | None]]:
         mins = [r.min for r in self.regions]
         maxs = [r.max for r in self.regions]
-        lo = None if any(m is None for m in mins) else min(mins)
-        hi = None if any(m is None for m in maxs) else max(maxs)
+        lo = None if any(m is None for m in mins) else min(m for m in mins if m is not None)
+        hi = None if any(m is None for m in maxs) else max(m for m in maxs if m is not None)
         return {self.reference_axis: (self.start, self.regions[-1].upto), self.limited_axis: (lo, hi)}
 
 
@@ -412,7 +412,7 @@ class AllowedSet:
 
     def seen_by(self, zone: Zone, p: Point, tool_length: Fraction) -> Point:
         """The point as ``zone`` sees it (tool tip for ``point = "tip"``)."""
-        if zone.point is ZonePoint.TIP and tool_length and self.tool_axis in p:
+        if zone.point is ZonePoint.TIP and tool_length and self.tool_axis is not None and self.tool_axis in p:
             q = dict(p)
             q[self.tool_axis] = q[self.tool_axis] - tool_length
             return q
