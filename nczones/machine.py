@@ -42,11 +42,19 @@ __all__ = [
     "ROTARY_AXES",
     "WORK_OFFSETS",
     "DEFAULT_MODAL",
+    "DIALECTS",
+    "FanucSettings",
+    "FANUC_OFFSETS",
 ]
 
 AXIS_NAMES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
 ROTARY_AXES = frozenset("ABC")
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
+#: Work offsets only Fanuc controls have: the external workpiece zero offset (added to every system,
+#: ``#5201``..) and the additional systems ``G54.1 P1``..``P48`` (written ``"G54.1P1"``).
+FANUC_OFFSETS = ("EXT",) + tuple(f"G54.1P{n}" for n in range(1, 49))
+#: Values of ``[machine] dialect``: how the program text is read (``specs/fanuc.md``).
+DIALECTS = ("linuxcnc", "fanuc")
 DEFAULT_MODAL = ("G90", "G21", "G17", "G54", "G94", "G40", "G49", "G80")
 _MODAL_CHOICES = {
     "distance": ("G90", "G91"),
@@ -79,6 +87,51 @@ class Axis:
 
 
 @dataclass(frozen=True, slots=True)
+class FanucSettings:
+    """The Fanuc parameters nczones models (``[fanuc]`` of the machine file, ``specs/fanuc.md``).
+
+    Lengths in mm.  ``None`` means the machine file does not give the value: a program that needs
+    it is ``unknown`` with a reason naming the setting.
+    """
+
+    #: Parameter 3401#0 DPI: an address word without a decimal point is a count of least input
+    #: increments (``"increment"``, DPI = 0) or units (``"calculator"``, DPI = 1).
+    decimal_point_input: str = "calculator"
+    #: Increment system: least input increment 0.01 (IS-A), 0.001 (IS-B), 0.0001 mm (IS-C).
+    increment_system: str = "IS-B"
+    #: Parameter 5114: G73 retract amount d.
+    g73_retract: Fraction | None = None
+    #: Parameter 5115: G83 clearance d.
+    g83_clearance: Fraction | None = None
+    #: Parameter 5101 bits RD1/RD2: direction of the G76/G87 shift (``"+X"``, ``"-X"``, ``"+Y"``, ``"-Y"``).
+    boring_shift: str | None = None
+    #: Parameter 5400#7 SCR: the unit of a G51 P scale factor without a decimal point.
+    scaling_unit: Fraction = Fraction(1, 1000)
+    #: Parameter 5400#0 RIN: a G68 R angle follows G90/G91 (True) or is always absolute (False).
+    rotation_incremental: bool = False
+    #: Parameter 6004#0 NAT: ATAN/ASIN results in 0..360 (False) or -180..180 (True).
+    atan_signed: bool = False
+    #: Parameter 5006#6 (TOS): a tool length offset change moves the tool axis (``"move"``) or shifts
+    #: the coordinate system, taking effect at the next move of that axis (``"shift"``).
+    tool_length_motion: str = "move"
+    #: M codes of this machine with no effect on motion (beyond the standard ones).
+    harmless_m: frozenset[int] = frozenset()
+    #: 2nd to 4th reference positions (G30 P2..P4), machine coordinates, by number.
+    references: Mapping[int, tuple[Fraction, ...]] = field(default_factory=lambda: MappingProxyType({}))
+    #: Initial values of common variables (``[variables]``): number -> exact value.
+    variables: Mapping[int, Fraction] = field(default_factory=lambda: MappingProxyType({}))
+    #: Custom macro calls (``[macros]``): ``"G100"``/``"M50"``/``"T"`` -> (program number, "macro" or
+    #: "subprogram"): the role of parameters 6050-6059, 6080-6089, 6071-6079 and 6001#5.
+    macros: Mapping[str, tuple[int, str]] = field(default_factory=lambda: MappingProxyType({}))
+
+    @property
+    def increment_mm(self) -> Fraction:
+        """The least input increment in mm (and degrees)."""
+        return {"IS-A": Fraction(1, 100), "IS-B": Fraction(1, 1000), "IS-C": Fraction(1, 10000)}[
+            self.increment_system]
+
+
+@dataclass(frozen=True, slots=True)
 class Machine:
     """A validated machine.  Coordinates are tuples in the order of ``axes``."""
 
@@ -103,6 +156,10 @@ class Machine:
     tool_diameters: Mapping[int, Fraction] = field(default_factory=lambda: MappingProxyType({}))
     #: SHA-256 of the machine file's bytes (set by :func:`load_machine`; empty for text given directly).
     sha256: str = ""
+    #: How program text is read: ``"linuxcnc"`` or ``"fanuc"`` (``[machine] dialect``).
+    dialect: str = "linuxcnc"
+    #: The Fanuc parameters (``[fanuc]``, ``[variables]``, ``[macros]``); defaults when not given.
+    fanuc: FanucSettings = field(default_factory=FanucSettings)
 
     @property
     def axis_names(self) -> tuple[str, ...]:
@@ -434,11 +491,14 @@ def _per_axis(
     return out
 
 
-_TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones")
+_TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones", "fanuc", "variables", "macros")
 _MACHINE_KEYS = (
     "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
-    "reference", "start", "tool_axis", "modal", "cutter_compensation",
+    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
+    "reference_2", "reference_3", "reference_4",
 )
+_FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_clearance", "boring_shift",
+               "scaling_unit", "rotation_incremental", "atan_signed", "tool_length_motion", "harmless_m")
 #: Values of ``[machine] cutter_compensation``.
 CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
 _ZONE_COMMON = ("name", "kind", "forbid", "point")
@@ -603,6 +663,11 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         tool_axis = None
 
     modal = _modal(rd, mt.get("modal"), mline)
+    dialect = mt.get("dialect", "linuxcnc")
+    if dialect not in DIALECTS:
+        rd.report("ZN114", f"[machine] dialect: {_written(dialect)} is not allowed; use \"linuxcnc\" or \"fanuc\"",
+                  rd.loc.key("dialect", mline))
+        dialect = None  # unknown: the checks that depend on it are left out
 
     # offsets
     offsets: dict[str, tuple[Fraction, ...]] = {}
@@ -612,13 +677,18 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         rd.report("ZN103", f"[offsets]: expected a table, got {_written(raw_offsets)}", None)
         raw_offsets = {}
     for key, value in raw_offsets.items():
-        if key not in WORK_OFFSETS:
-            close = difflib.get_close_matches(key, WORK_OFFSETS, n=1)
+        oname = key.replace(" ", "").upper() if isinstance(key, str) else key
+        if oname not in WORK_OFFSETS and oname not in FANUC_OFFSETS:
+            close = difflib.get_close_matches(key, WORK_OFFSETS + FANUC_OFFSETS, n=1)
             hint = f"; did you mean {_written(close[0])}?" if close else f"; allowed: {', '.join(WORK_OFFSETS)}"
             rd.report("ZN101", f"[offsets]: unknown work offset {_written(key)}{hint}", rd.loc.key(key, oline))
             continue
+        if oname in FANUC_OFFSETS and dialect == "linuxcnc":
+            rd.report("ZN101", f"[offsets]: work offset {_written(key)} exists only on Fanuc controls; valid in the "
+                      "fanuc dialect: set dialect = \"fanuc\" in [machine]", rd.loc.key(key, oline))
+            continue
         vals = _per_axis(rd, value, axes, f"[offsets] {key}", rd.loc.section(f"offsets.{key}"), required=False, inline=(key, oline))
-        offsets[key] = tuple(vals.get(a, Fraction(0)) for a in axes)
+        offsets[oname] = tuple(vals.get(a, Fraction(0)) for a in axes)
 
     tool_lengths = _register_table(rd, data, "tool_lengths", "H", "length register", 'H1 = "200"')
     # cutter compensation and tool diameters
@@ -630,6 +700,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                   rd.loc.key("cutter_compensation", mline))
     tool_diameters = _register_table(rd, data, "tool_diameters", "T", "tool number", 'T1 = "6"')
 
+    fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect)
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
 
     sections: dict[str, Any] = {}
@@ -652,7 +723,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         offsets=MappingProxyType(offsets), tool_lengths=MappingProxyType(tool_lengths),
         allowed=allowed, modal=modal, tool_axis=tool_axis, source=rd.path,
         sections=MappingProxyType(sections), cutter_compensation=comp,
-        tool_diameters=MappingProxyType(tool_diameters),
+        tool_diameters=MappingProxyType(tool_diameters), dialect=dialect or "linuxcnc", fanuc=fanuc,
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.
     bad = allowed.violated_zones(machine.point(start_t))
@@ -687,6 +758,139 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         **{f: getattr(machine, f) for f in Machine.__dataclass_fields__ if f != "warnings"},
         warnings=tuple(d for d in rd.diagnostics if d.severity is Severity.WARNING),
     )
+
+
+_CHOICES = {
+    "decimal_point_input": ("calculator", "increment"),
+    "increment_system": ("IS-A", "IS-B", "IS-C"),
+    "boring_shift": ("+X", "-X", "+Y", "-Y"),
+    "tool_length_motion": ("move", "shift"),
+}
+
+
+def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, axes: tuple[str, ...],
+                    dialect: str) -> FanucSettings:
+    """``[fanuc]``, ``[variables]``, ``[macros]`` and ``[machine.reference_2..4]`` (``specs/fanuc.md``)."""
+    kw: dict[str, Any] = {}
+    raw = data.get("fanuc", {})
+    fline = rd.loc.section("fanuc")
+    given = [k for k in ("fanuc", "variables", "macros") if k in data] + [
+        f"machine.{k}" for k in ("reference_2", "reference_3", "reference_4") if k in mt]
+    if given and dialect == "linuxcnc":
+        rd.report("ZN115", f"[{given[0]}] is read only in the fanuc dialect; set dialect = \"fanuc\" in [machine] "
+                  "(or pass --dialect fanuc)", rd.loc.header(rd.loc.section(given[0])), Severity.WARNING)
+    if not isinstance(raw, Mapping):
+        rd.report("ZN103", f"[fanuc]: expected a table, got {_written(raw)}", rd.loc.header(fline))
+        raw = {}
+    _check_keys(rd, raw, _FANUC_KEYS, "[fanuc]", fline)
+    for key, choices in _CHOICES.items():
+        if key in raw:
+            value = raw[key]
+            if value not in choices:
+                rd.report("ZN114", f"[fanuc] {key}: {_written(value)} is not allowed; use "
+                          + " or ".join(_written(c) for c in choices), rd.loc.key(key, fline))
+            else:
+                kw[key] = value
+    for key in ("g73_retract", "g83_clearance"):
+        if key in raw:
+            q = _number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            if q is not None:
+                kw[key] = q
+    if "scaling_unit" in raw:
+        q = _number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", rd.loc.key("scaling_unit", fline), positive=True,
+                    limit=Fraction(1))
+        if q is not None:
+            kw["scaling_unit"] = q
+    for key in ("rotation_incremental", "atan_signed"):
+        if key in raw:
+            if not isinstance(raw[key], bool):
+                rd.report("ZN103", f"[fanuc] {key}: expected true or false, got {_written(raw[key])}",
+                          rd.loc.key(key, fline))
+            else:
+                kw[key] = raw[key]
+    if "harmless_m" in raw:
+        value = raw["harmless_m"]
+        if not isinstance(value, list) or not all(isinstance(v, int) and not isinstance(v, bool) and 0 <= v <= 9999
+                                                  for v in value):
+            rd.report("ZN103", f"[fanuc] harmless_m: expected a list of M code numbers such as [88, 89], got "
+                      f"{_written(value)}", rd.loc.key("harmless_m", fline))
+        else:
+            kw["harmless_m"] = frozenset(value)
+    refs = {}
+    for n in (2, 3, 4):
+        key = f"reference_{n}"
+        if key in mt:
+            vals = _per_axis(rd, mt[key], axes, f"[machine.{key}]", rd.loc.section(f"machine.{key}"), required=True,
+                             inline=(key, mline))
+            if len(vals) == len(axes):
+                refs[n] = tuple(vals[a] for a in axes)
+    kw["references"] = MappingProxyType(refs)
+    kw["variables"] = MappingProxyType(_variables(rd, data.get("variables", {})))
+    kw["macros"] = MappingProxyType(_macros(rd, data.get("macros", {})))
+    return FanucSettings(**kw)
+
+
+def _variables(rd: _Reader, raw: Any) -> dict[int, Fraction]:
+    """``[variables]``: initial values of common variables ``"#100"``..``"#999"``."""
+    out: dict[int, Fraction] = {}
+    line = rd.loc.section("variables")
+    if not isinstance(raw, Mapping):
+        rd.report("ZN103", f"[variables]: expected a table such as \"#500\" = \"12.5\", got {_written(raw)}",
+                  rd.loc.header(line))
+        return out
+    for key, value in raw.items():
+        m = re.fullmatch(r"#?(\d{1,4})", key.strip())
+        span = rd.loc.key(key if not key.startswith("#") else f'"{key}"', line) or rd.loc.key(key, line)
+        if not m or not 100 <= int(m.group(1)) <= 999:
+            rd.report("ZN101", f"[variables]: {_written(key)} is not a common variable; write \"#100\" to \"#999\" "
+                      "(local #1-#33 start vacant, system variables come from the rest of the machine file)", span)
+            continue
+        q = _number(rd, value, f"[variables] {key}", span)
+        if q is not None:
+            out[int(m.group(1))] = q
+    return out
+
+
+def _macros(rd: _Reader, raw: Any) -> dict[str, tuple[int, str]]:
+    """``[macros]``: ``G100 = 9010`` (a G code calls O9010 like G65), ``M50 = 9020`` (an M code calls a
+    macro), ``M60 = { program = 9001, call = "subprogram" }`` (like M98), ``T = 9000``."""
+    out: dict[str, tuple[int, str]] = {}
+    line = rd.loc.section("macros")
+    if not isinstance(raw, Mapping):
+        rd.report("ZN103", f"[macros]: expected a table such as G100 = 9010, got {_written(raw)}", rd.loc.header(line))
+        return out
+    for key, value in raw.items():
+        span = rd.loc.key(key, line)
+        m = re.fullmatch(r"([GM])(\d{1,4})|T", key.strip().upper())
+        if not m:
+            rd.report("ZN101", f"[macros]: {_written(key)} is not a code; write G<number> (1-9999), M<number> or T",
+                      span)
+            continue
+        call = "macro"
+        program = value
+        if isinstance(value, Mapping):
+            extra = [k for k in value if k not in ("program", "call")]
+            if extra:
+                rd.report("ZN101", f"[macros] {key}: unknown key {_written(extra[0])}; allowed keys: program, call", span)
+                continue
+            program = value.get("program")
+            call = value.get("call", "macro")
+            if call not in ("macro", "subprogram"):
+                rd.report("ZN114", f"[macros] {key}: call {_written(call)} is not allowed; use \"macro\" (like G65, "
+                          "with arguments) or \"subprogram\" (like M98)", span)
+                continue
+        if isinstance(program, str) and program.strip().isdigit():
+            program = int(program)
+        if not isinstance(program, int) or isinstance(program, bool) or not 1 <= program <= 99999999:
+            rd.report("ZN103", f"[macros] {key}: the program number must be an integer such as 9010, got "
+                      f"{_written(program)}", span)
+            continue
+        code = key.strip().upper()
+        if code.startswith("G") and code in ("G65", "G66", "G67"):
+            rd.report("ZN114", f"[macros] {key}: {code} is the macro call itself and cannot call a macro", span)
+            continue
+        out[code if code == "T" else f"{code[0]}{int(code[1:])}"] = (program, call)
+    return out
 
 
 def _fmt_point(axes: tuple[str, ...], coords: tuple[Fraction, ...]) -> str:
