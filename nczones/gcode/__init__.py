@@ -42,11 +42,12 @@ Errors in the program raise :class:`~nczones.errors.GcodeError` (codes
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterator
 from fractions import Fraction
 from typing import Any
 
-from ..errors import InvalidArgument, program_lines
+from ..errors import GcodeError, InvalidArgument, program_lines
 from ..machine import Machine
 from ..motion import MotionChunk, Segment
 from .interpreter import (
@@ -96,17 +97,29 @@ class Interpretation:
 
     def __init__(self, source: ProgramSource, machine: Machine, *, block_delete: bool,
                  track_dependencies: bool, arc_tolerance: Fraction | str, fast: bool, chunk_size: int,
-                 max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS):
+                 max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, dialect: str = "linuxcnc",
+                 library=None):
         self.source = source
         text = self.text = source.text
         self.machine = machine
         self.file = source.name
         self.block_delete = block_delete
         self.max_loop_iterations = max_loop_iterations
-        from .cylindrical import CylindricalInterpreter, uses_cylindrical
+        self.dialect = dialect
+        self.library = library
+        #: The Fanuc language layer's runners (one per piece of the program it read), for their notes.
+        self.runners: list = []
+        self._variables = None
+        if dialect == "fanuc":
+            from .fanuc.interpreter import FanucInterpreter
 
-        cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
-        cls = CylindricalInterpreter if cylindrical else Interpreter
+            cylindrical = False
+            cls = FanucInterpreter
+        else:
+            from .cylindrical import CylindricalInterpreter, uses_cylindrical
+
+            cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
+            cls = CylindricalInterpreter if cylindrical else Interpreter
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
                                track_dependencies=track_dependencies, chunk_size=chunk_size)
         self.fast = fast and not track_dependencies and not cylindrical
@@ -118,13 +131,17 @@ class Interpretation:
         if self._started:
             raise InvalidArgument("an Interpretation can be iterated only once; call interpret() again")
         self._started = True
-        if self.fast:
-            from .fastpath import run_with_fastpath
+        try:
+            if self.fast:
+                from .fastpath import run_with_fastpath
 
-            yield from run_with_fastpath(self)
-        else:
-            yield from self.interpreter.run(_blocks(self.text, self.file, self.block_delete, self.interpreter,
-                                                    max_loop_iterations=self.max_loop_iterations))
+                yield from run_with_fastpath(self)
+            else:
+                yield from self.interpreter.run(self.blocks(self.text))
+        except GcodeError as exc:
+            from .dialects import with_hints
+
+            raise with_hints(exc, self.dialect) from None
         finish = getattr(self.interpreter, "finish", None)
         if finish is not None:
             finish()
@@ -133,6 +150,45 @@ class Interpretation:
             yield MotionChunk(self.interpreter.axes, None, objects=tuple(left), file=self.file)
             self.interpreter._out = []
         self.finished = True
+
+    def blocks(self, text: str, first_line: int = 1, first_index: int = 0, fast_runs=None):
+        """The language layer of this dialect over ``text`` (the whole program, or for the Fanuc dialect a
+        piece of it starting at ``first_line``): its blocks, ending as ``unknown`` at an unsupported code."""
+        it = self.interpreter
+        if self.dialect != "fanuc":
+            yield from _blocks(text, self.file, self.block_delete, it, max_loop_iterations=self.max_loop_iterations)
+            return
+        from .fanuc.program import FanucRunner
+        from .program import _StringSource
+
+        runner = FanucRunner(_StringSource(text), self.file, self.fanuc_variables(), settings=self.machine.fanuc,
+                             block_delete=self.block_delete, library=self.library, state=it,
+                             max_loop_iterations=self.max_loop_iterations, first_line=first_line,
+                             first_index=first_index, fast_runs=fast_runs, lane=it.lane_for_blocks())
+        self.runners.append(runner)
+        yield from _unknown_at_unsupported(it, runner.run())
+
+    def fanuc_variables(self):
+        """The Fanuc variables all pieces of the program share (commons from the machine file)."""
+        if self._variables is None:
+            from .fanuc.expr import FanucVariables
+
+            self._variables = FanucVariables(dict(self.machine.fanuc.variables))
+            self.interpreter.bind_variables(self._variables)
+        return self._variables
+
+    @property
+    def alarm(self):
+        """``(number, message, span)`` of the Fanuc ``#3000`` alarm that stopped the program, or None."""
+        return next((r.alarm for r in self.runners if r.alarm is not None), None)
+
+    def notes(self) -> list[str]:
+        """What the report should say about how the program was read (dialect-specific)."""
+        if self.dialect != "fanuc":
+            return []
+        from .dialects import fanuc_notes
+
+        return fanuc_notes(self)
 
     @property
     def unsupported(self) -> tuple[Unsupported, ...]:
@@ -208,6 +264,8 @@ def interpret(
     fast: bool = True,
     chunk_size: int = DEFAULT_CHUNK_SIZE,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+    dialect: str | None = None,
+    library: str | os.PathLike | None = None,
 ) -> Interpretation:
     """Interpret the G-code program file ``source`` for a machine (lazily).
 
@@ -242,6 +300,11 @@ def interpret(
     max_loop_iterations : int
         Iterations allowed per loop (per entry into it); a loop that runs
         longer ends the interpretation as ``unknown`` (``GC302``).
+    dialect : "linuxcnc" or "fanuc", optional
+        How the text is read (default: the machine's ``[machine] dialect``); see ``specs/fanuc.md``.
+    library : path, optional
+        A folder of subprogram files (``O1234``, ``O1234.nc``, ...) that Fanuc ``M98``/``G65`` calls
+        search when the program is not in the file.
 
     Returns
     -------
@@ -255,9 +318,12 @@ def interpret(
         raise InvalidArgument(f"arc_tolerance must not be negative, got {arc_tolerance!r}")
     if not isinstance(max_loop_iterations, int) or isinstance(max_loop_iterations, bool) or max_loop_iterations < 1:
         raise InvalidArgument(f"max_loop_iterations must be a positive integer, got {max_loop_iterations!r}")
+    dialect = machine.dialect if dialect is None else dialect
+    if dialect not in ("linuxcnc", "fanuc"):
+        raise InvalidArgument(f"dialect must be \"linuxcnc\" or \"fanuc\", got {dialect!r}")
     return Interpretation(src, machine, block_delete=block_delete, track_dependencies=track_dependencies,
                           arc_tolerance=tol, fast=fast, chunk_size=chunk_size,
-                          max_loop_iterations=max_loop_iterations)
+                          max_loop_iterations=max_loop_iterations, dialect=dialect, library=library)
 
 
 def interpret_text(text: str, machine: Machine, *, file: str = "<program>", **options: Any) -> Interpretation:

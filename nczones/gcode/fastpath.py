@@ -91,9 +91,10 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
     from .expr import Parameters
 
     it = interp.interpreter
+    fanuc = getattr(interp, "dialect", "linuxcnc") == "fanuc"
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
     text = _percent_cut(interp.text)
-    if not text or _needs_language_layer(text, it, size):
+    if not text or (_fanuc_needs_language_layer(text) if fanuc else _needs_language_layer(text, it, size)):
         if text is None:
             text = interp.text  # the language layer reads the whole program, % lines included
         if text and _utf8_exact(interp.text):
@@ -101,13 +102,18 @@ def run_with_fastpath(interp, block_bytes: int | None = None):
             if runs:
                 yield from _language_layer_with_runs(interp, runs)
                 return
+        if fanuc:
+            yield from it.run(interp.blocks(interp.text))
+            return
         yield from it.run(_blocks(interp.text, interp.file, interp.block_delete, it,
                                   max_loop_iterations=interp.max_loop_iterations))
         return
     block_counter = [0]
     line0 = 0
-    params = Parameters()  # one store for every piece the full path runs
-    it.bind_parameters(params)
+    params = None
+    if not fanuc:
+        params = Parameters()  # one store for every piece the full path runs
+        it.bind_parameters(params)
     for blk in _encoded_blocks(text, size):
         if it.ended:
             break
@@ -176,11 +182,14 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
     )
 
     it = interp.interpreter
-    params = Parameters()
-    it.bind_parameters(params)
-    runner = _Runner(_StringSource(interp.text), interp.file, params, interp.block_delete,
-                     interp.max_loop_iterations, 100, fast_runs=runs, lane=it.lane_for_blocks())
-    flow = _unknown_at_unsupported(it, runner.run())
+    if getattr(interp, "dialect", "linuxcnc") == "fanuc":
+        flow = interp.blocks(interp.text, fast_runs=runs)
+    else:
+        params = Parameters()
+        it.bind_parameters(params)
+        runner = _Runner(_StringSource(interp.text), interp.file, params, interp.block_delete,
+                         interp.max_loop_iterations, 100, fast_runs=runs, lane=it.lane_for_blocks())
+        flow = _unknown_at_unsupported(it, runner.run())
     requests: list[FastRunRequest] = []
 
     def blocks():
@@ -492,9 +501,38 @@ def _percent_cut(text: str) -> str | None:
 
 
 def _state_ok(it) -> bool:
+    ok = getattr(it, "fast_state_ok", None)  # what a dialect's interpreter adds (Fanuc: no cycle, transform)
     return (not it.unsupported and it.motion in (None, 0, 10, 20, 30) and not it.comp_just_off
             and not it.comp_on and not it.track and it._u is None  # no XY rotation (G10 L2 R) active
-            and it._machine_at is None)  # the machine is where the interpreter believes (G84 outside G17)
+            and it._machine_at is None  # the machine is where the interpreter believes (G84 outside G17)
+            and (ok is None or ok()))
+
+
+#: What makes a Fanuc program need the whole-program language layer, searched in its lower-cased text
+#: (each pattern starts with a literal, which the regex engine finds fast): calls and returns, G65-G67,
+#: loops and GOTO; ``#``, ``[`` (variables, expressions, IF, WHILE), ``/`` (block delete) and an EOB ``;``
+#: with code after it are tested on the text itself.
+_FANUC_CALLS = (re.compile(r"m[ \t]*0*9[789](?![\d.])"), re.compile(r"g[ \t]*0*6[5-7](?![\d.])"),
+                re.compile(r"goto"), re.compile(r"end[ \t]*\d"), re.compile(r"do[ \t]*\d"))
+_FANUC_EOB = re.compile(r";[ \t]*[^ \t\r\n(]")
+_PROGRAM_NUMBER = re.compile(r"\n[ \t]*[o:][ \t]*\d")
+
+
+def _fanuc_needs_language_layer(text: str) -> bool:
+    """Whether a Fanuc program must be read by the language layer as a whole: macro statements, variables,
+    calls, block delete, more than one program number, or an EOB ``;`` with code after it.  Otherwise runs
+    of simple lines go to the fast path and the rest to the language layer piece by piece.
+
+    >>> _fanuc_needs_language_layer("O1\\nG1 X1. F100.\\nM30\\n"), _fanuc_needs_language_layer("O1\\nM98 P2\\n")
+    (False, True)
+    """
+    if "#" in text or "[" in text or "/" in text or (";" in text and _FANUC_EOB.search(text)):
+        return True
+    lower = text.lower()
+    if any(p.search(lower) for p in _FANUC_CALLS):
+        return True
+    first = _PROGRAM_NUMBER.search("\n" + lower)
+    return first is not None and _PROGRAM_NUMBER.search("\n" + lower, first.end()) is not None
 
 
 def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, params=None):
@@ -511,15 +549,17 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, param
     from .expr import Parameters
     from .program import iter_blocks
 
-    if params is None:
-        params = Parameters()
-        it.bind_parameters(params)
-
-    # the piece's lines and blocks are numbered as in the whole program
-    blocks = _unknown_at_unsupported(it, iter_blocks(piece, file=interp.file, params=params,
-                                                     block_delete=interp.block_delete, first_line=offset + 1,
-                                                     first_index=block_counter[0], lane=it.lane_for_blocks(),
-                                                     max_loop_iterations=interp.max_loop_iterations))
+    if getattr(interp, "dialect", "linuxcnc") == "fanuc":
+        blocks = interp.blocks(piece, offset + 1, block_counter[0])
+    else:
+        if params is None:
+            params = Parameters()
+            it.bind_parameters(params)
+        # the piece's lines and blocks are numbered as in the whole program
+        blocks = _unknown_at_unsupported(it, iter_blocks(piece, file=interp.file, params=params,
+                                                         block_delete=interp.block_delete, first_line=offset + 1,
+                                                         first_index=block_counter[0], lane=it.lane_for_blocks(),
+                                                         max_loop_iterations=interp.max_loop_iterations))
     consumed = it.blocks
     try:
         yield from it.run(blocks)
@@ -728,6 +768,9 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if parsed is None:
         return None
     wl, wletter, wval, wdec = parsed
+    if getattr(it, "dialect", "linuxcnc") == "fanuc" and not _fanuc_words_ok(it, c, cl_line, lo, hi, wletter, wval,
+                                                                             wdec):
+        return None
     n = hi - lo
     axes = it.axes
     na = len(axes)
@@ -956,6 +999,31 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         it.kind_counts[k] += int(np.count_nonzero(kind == k))
     interp.fast_lines += n
     return chunk
+
+
+_FANUC_LENGTH = np.zeros(256, dtype=bool)
+_FANUC_LENGTH[list(b"XYZUVWABCIJKRQ")] = True
+_FANUC_ROTARY = np.zeros(256, dtype=bool)
+_FANUC_ROTARY[list(b"ABC")] = True
+
+
+def _fanuc_words_ok(it, c, cl_line, lo: int, hi: int, wletter, wval, wdec) -> bool:
+    """Whether every length word of lines [lo, hi) is read as written in the Fanuc dialect: with a
+    decimal point (or zero) and no more decimals than the least input increment.  Other lines go to the
+    language layer, which applies the decimal point input rule and the rounding and notes them."""
+    length = _FANUC_LENGTH[wletter]
+    if not length.any():
+        return True
+    sel_lo = np.searchsorted(cl_line, lo)
+    sel_hi = np.searchsorted(cl_line, hi)
+    cc = c[sel_lo:sel_hi]
+    word_id = np.cumsum(cc >= 65, dtype=np.int32) - 1
+    points = np.zeros(wletter.size, dtype=bool)
+    points[word_id[cc == ord(".")]] = True
+    digits = {"IS-A": 2, "IS-B": 3, "IS-C": 4}[it.settings.increment_system]
+    limit = np.where(_FANUC_ROTARY[wletter], digits, digits + (1 if it.inch else 0))
+    bad = length & ((~points & (wval != 0)) | (wdec > limit))
+    return not bad.any()
 
 
 def _decimals(q: Fraction) -> int | None:

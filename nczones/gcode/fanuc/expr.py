@@ -1,0 +1,377 @@
+"""Custom Macro B variables and expressions, the way a Fanuc control computes them.
+
+Values are IEEE doubles (the 15i/30i manuals: "double-precision real data, as
+laid down in the applicable IEEE standard"), each with the optional exact
+*shadow* the LinuxCNC layer carries (:mod:`nczones.gcode.expr`): ``+ - * /``
+of exact operands keep an exact rational as long as it rounds to the
+controller's double.  Where a value becomes an address of an NC statement it
+is rounded to the address's least input increment (``X#1`` with ``#1 =
+12.3456`` is ``X12.346`` on a 0.001 mm control), so the positions nczones
+proves are exact decimals.
+
+Vacant
+------
+A variable never assigned (locals of a new call level, commons without an
+initial value, ``#0`` always) is *vacant*.  Fanuc's rules: a vacant variable
+in an address drops the word (``G90 X#1`` with ``#1`` vacant is ``G90``);
+copied it stays vacant (``#2 = #1``); in arithmetic it is 0 (``#2 = #1 * 5``
+is 0); in ``EQ``/``NE`` it differs from 0 (``#1 EQ #0`` is true only for a
+vacant ``#1``); in ``GT GE LT LE`` it is 0.  :data:`VACANT` is one object,
+recognised by identity.
+
+Functions and operators (0i/30i operator's manuals, "Arithmetic and logic
+operation"): ``FIX`` drops the fraction (towards 0: ``FIX[-1.2]`` is -1),
+``FUP`` rounds away from 0, ``ROUND`` to the nearest integer (halves away from
+0) and, inside an address, to the address's increment; ``MOD`` rounds both
+operands to integers, the remainder has the dividend's sign; ``AND OR XOR``
+on the integer parts bit by bit; ``ATAN[a]/[b]`` (and ``ATAN[a,b]``) in
+0..360 degrees, ``ASIN`` in 270..90 (parameter 6004#0 NAT = 0) or in
+-180..180 / -90..90 (NAT = 1); ``ACOS`` in 0..180; ``BIN``/``BCD`` convert
+between BCD and binary; ``ADP`` multiplies by the inverse of the least input
+increment (a G65 argument written without a decimal point comes in as a
+count of increments); ``POW[a,b]`` is a to the b.  Relational operators
+compare exactly.
+
+>>> v = FanucVariables()
+>>> v.read(1) is VACANT, v.read(0) is VACANT
+(True, True)
+>>> evaluate_tree((BIN, "+", (VAR, (NUM, 1.0, Fraction(1))), (NUM, 0.5, Fraction(1, 2))), v)
+(0.5, Fraction(1, 2))
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from fractions import Fraction
+
+from ..expr import EvalError, _binary, _check
+from ..lexer import _double
+from .parser import BIN, FN, FN2, NEG, NUM, VAR
+
+__all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "EvalError",
+           "SystemVariableUnknown", "variable_index"]
+
+#: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
+VACANT = (0.0, Fraction(0))
+_TRUE = (1.0, Fraction(1))
+_FALSE = (0.0, Fraction(0))
+LOCALS = 33
+COMMON_FIRST, COMMON_LAST = 100, 999
+SYSTEM_FIRST = 1000
+
+
+class FanucVariables:
+    """The variables of one program run: locals per call level, commons, system variables.
+
+    ``#1``..``#33`` are local to a macro call level (G65, G66, a custom G/M
+    code call; M98 subprograms share their caller's level); ``#100``..``#999``
+    are common (initial values from the machine file's ``[variables]``, the
+    others vacant); ``#1000`` and up are system variables, read and written
+    through ``system_read(n)`` and ``system_write(n, value)`` that the
+    interpreter provides (:meth:`nczones.gcode.fanuc.interpreter.FanucInterpreter.bind_variables`).
+    ``#34``..``#99`` do not exist (alarm).
+
+    >>> v = FanucVariables({500: Fraction(5, 2)})
+    >>> v.write(1, (3.0, Fraction(3))); v.read(500), v.read(1)
+    ((2.5, Fraction(5, 2)), (3.0, Fraction(3, 1)))
+    >>> saved = v.push_level({2: (7.0, Fraction(7))}); v.read(1) is VACANT, v.read(2)
+    (True, (7.0, Fraction(7, 1)))
+    >>> v.pop_level(saved); v.read(1)
+    (3.0, Fraction(3, 1))
+    """
+
+    __slots__ = ("local", "common", "system_read", "system_write", "depth", "on_write")
+
+    def __init__(self, initial: dict[int, Fraction] | None = None):
+        self.local: list = [VACANT] * (LOCALS + 1)
+        self.common: list = [VACANT] * (COMMON_LAST + 1)
+        for k, q in (initial or {}).items():
+            self.common[k] = (float(q), q)
+        self.system_read: Callable[[int], tuple] = _no_system
+        self.system_write: Callable[[int, tuple], None] = _no_system_write
+        self.depth = 0  # macro call level (0: the main program)
+        self.on_write: Callable[[int, tuple], None] | None = None
+
+    def read(self, n: int) -> tuple:
+        if n <= LOCALS:
+            if n < 0:
+                raise EvalError("GC205", f"variable number #{n} does not exist")
+            return VACANT if n == 0 else self.local[n]
+        if n <= COMMON_LAST:
+            if n < COMMON_FIRST:
+                raise EvalError("GC205", f"variable #{n} does not exist (local variables are #1-#33, common "
+                                "variables #100-#999)")
+            return self.common[n]
+        return self.system_read(n)
+
+    def write(self, n: int, value: tuple) -> None:
+        if 0 < n <= LOCALS:
+            self.local[n] = value
+        elif COMMON_FIRST <= n <= COMMON_LAST:
+            self.common[n] = value
+        elif n >= SYSTEM_FIRST:
+            self.system_write(n, value)
+        elif n == 0:
+            raise EvalError("GC205", "#0 is always vacant; it cannot be assigned")
+        else:
+            raise EvalError("GC205", f"variable #{n} does not exist (local variables are #1-#33, common "
+                            "variables #100-#999)")
+        if self.on_write is not None:
+            self.on_write(n, value)
+
+    def push_level(self, args: dict[int, tuple]) -> list:
+        """Enter a macro call: a new local level with the arguments, the others vacant."""
+        saved = self.local
+        self.local = [VACANT] * (LOCALS + 1)
+        for k, v in args.items():
+            self.local[k] = v
+        self.depth += 1
+        return saved
+
+    def pop_level(self, saved: list) -> None:
+        self.local = saved
+        self.depth -= 1
+
+
+class SystemVariableUnknown(Exception):
+    """A system variable nczones does not model was read or written: the result is ``unknown``.
+
+    ``code`` names the variable (``"#5405"``), ``reason`` says why.
+    """
+
+    def __init__(self, code: str, reason: str):
+        super().__init__(reason)
+        self.code, self.reason = code, reason
+
+
+def _no_system(n: int) -> tuple:
+    raise SystemVariableUnknown(f"#{n}", f"system variable #{n} is not one nczones models (specs/fanuc.md)")
+
+
+def _no_system_write(n: int, value: tuple) -> None:
+    raise SystemVariableUnknown(f"#{n}", f"writing system variable #{n} is not modelled (specs/fanuc.md)")
+
+
+def variable_index(value: tuple) -> int:
+    """The variable number a ``#[...]`` value names (rounded to an integer, as Fanuc does)."""
+    d = value[0]
+    if d - d:
+        raise EvalError("GC204", f"variable number {d!r} is not a number")
+    n = int(math.floor(abs(d) + 0.5))
+    return -n if d < 0 else n
+
+
+def round_to(value: tuple, step: Fraction) -> Fraction:
+    """The exact value rounded to a multiple of ``step``, halves away from zero.
+
+    >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
+    (Fraction(6173, 500), Fraction(-3, 1))
+    """
+    q = value[1] if value[1] is not None else _double(value[0])
+    k = q / step
+    n = (abs(k.numerator) * 2 + k.denominator) // (2 * k.denominator)
+    return (n if k >= 0 else -n) * step
+
+
+def _num(d: float) -> tuple:
+    """A double as a value, with the exact shadow when it is an integer."""
+    return (d, Fraction(int(d))) if d == int(d) and abs(d) < 2.0**63 else (d, None)
+
+
+def _away(d: float) -> float:
+    return float(math.floor(abs(d) + 0.5)) * (1.0 if d >= 0 else -1.0)
+
+
+def _int_of(d: float, what: str) -> int:
+    if d - d:
+        raise EvalError("GC312", f"{what} of {d!r} cannot be computed")
+    return int(d)
+
+
+class Context:
+    """What a compiled tree needs besides the variables: the ATAN/ASIN range (NAT) and the least input
+    increment of the address for ROUND/ADP (``increment()`` gives it, in program units)."""
+
+    __slots__ = ("signed_angles", "increment")
+
+    def __init__(self, signed_angles: bool = False, increment: Callable[[], Fraction] | None = None):
+        self.signed_angles = signed_angles
+        self.increment = increment or (lambda: Fraction(1, 1000))
+
+
+def _angle(d: float, ctx: Context, full: bool) -> tuple:
+    """An angle in degrees in Fanuc's range: ``full`` (ATAN of two arguments) 0..360 or -180..180; else
+    (ASIN, one-argument ATAN) 270..90 (i.e. a negative result + 360) or -90..90."""
+    if not ctx.signed_angles and d < 0.0:
+        d = d + 360.0
+    return (_check(d), None) if d != int(d) else (d, Fraction(int(d)))
+
+
+def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
+    d, q = value
+    if d - d:
+        raise EvalError("GC312", f"argument to {name.upper()} is {d!r}")
+    if name == "abs":
+        return (abs(d), abs(q) if q is not None else None)
+    if name == "fix":
+        return _num(float(math.trunc(d)))
+    if name == "fup":
+        r = math.ceil(abs(d))
+        return _num(float(r if d >= 0 else -r))
+    if name == "round":
+        if in_address:
+            step = ctx.increment()
+            r = round_to(value, step)
+            return (float(r), r)
+        return _num(_away(d))
+    if name == "sin":
+        return (math.sin(d * math.pi / 180.0), None)
+    if name == "cos":
+        return (math.cos(d * math.pi / 180.0), None)
+    if name == "tan":
+        return (_check(math.tan(d * math.pi / 180.0)), None)
+    if name in ("asin", "acos"):
+        if d < -1.0 or d > 1.0:
+            raise EvalError("GC312", f"argument to {name.upper()} out of range: {d!r} (allowed -1 to 1)")
+        if name == "acos":
+            return _angle(math.acos(d) * 180.0 / math.pi, ctx, False)
+        return _angle(math.asin(d) * 180.0 / math.pi, ctx, False)
+    if name == "atan":
+        return _angle(math.atan(d) * 180.0 / math.pi, ctx, False)
+    if name == "sqrt":
+        if d < 0.0:
+            raise EvalError("GC312", f"negative argument to SQRT: {d!r}")
+        r = math.sqrt(d)
+        return (r, Fraction(int(r)) if r == int(r) else None)
+    if name == "ln":
+        if d <= 0.0:
+            raise EvalError("GC312", f"zero or negative argument to LN: {d!r}")
+        return (math.log(d), None)
+    if name == "exp":
+        try:
+            return (_check(math.exp(d)), None)
+        except OverflowError:
+            raise EvalError("GC312", "calculation resulted in 'infinity'") from None
+    if name == "bcd":
+        k = int(_away(d))
+        if k < 0:
+            raise EvalError("GC312", f"BCD of a negative number {d!r}")
+        return _num(float(int(str(k), 16)))
+    if name == "bin":
+        k = int(_away(d))
+        digits = f"{k:x}" if k >= 0 else "-"
+        if not digits.isdigit():
+            raise EvalError("GC312", f"BIN of {d!r}: not a BCD number (a nibble above 9)")
+        return _num(float(int(digits)))
+    if name == "adp":
+        inc = ctx.increment()
+        return _binary("*", value, (float(1 / inc), 1 / inc))
+    raise AssertionError(name)  # pragma: no cover
+
+
+def _two(name: str, a: tuple, b: tuple, ctx: Context) -> tuple:
+    if name == "atan":
+        return _angle(math.atan2(a[0], b[0]) * 180.0 / math.pi, ctx, True)
+    # pow
+    x, y = a[0], b[0]
+    if x < 0.0 and y != math.floor(y):
+        raise EvalError("GC312", f"POW of negative {x!r} to the non-integer power {y!r}")
+    if x == 0.0 and y < 0.0:
+        raise EvalError("GC312", f"POW of 0 to the negative power {y!r}")
+    try:
+        r = math.pow(x, y)
+    except (OverflowError, ValueError):
+        raise EvalError("GC312", f"POW[{x!r},{y!r}] cannot be computed") from None
+    return _num(_check(r))
+
+
+def _binop(op: str, a: tuple, b: tuple) -> tuple:
+    if op in ("+", "-", "*", "/"):
+        return _binary(op, a, b)
+    x, y = a[0], b[0]
+    if op == "eq":
+        if a is VACANT or b is VACANT:
+            return _TRUE if (a is VACANT and b is VACANT) else _FALSE
+        return _TRUE if x == y else _FALSE
+    if op == "ne":
+        if a is VACANT or b is VACANT:
+            return _FALSE if (a is VACANT and b is VACANT) else _TRUE
+        return _TRUE if x != y else _FALSE
+    if op == "gt":
+        return _TRUE if x > y else _FALSE
+    if op == "ge":
+        return _TRUE if x >= y else _FALSE
+    if op == "lt":
+        return _TRUE if x < y else _FALSE
+    if op == "le":
+        return _TRUE if x <= y else _FALSE
+    if op == "mod":
+        i, j = int(_away(x)) if not x - x else _int_of(x, "MOD"), int(_away(y)) if not y - y else _int_of(y, "MOD")
+        if j == 0:
+            raise EvalError("GC311", "attempt to take MOD by zero")
+        r = abs(i) % abs(j)
+        return _num(float(-r if i < 0 else r))
+    i, j = _int_of(x, op.upper()), _int_of(y, op.upper())
+    if op == "and":
+        return _num(float(i & j))
+    if op == "or":
+        return _num(float(i | j))
+    if op == "xor":
+        return _num(float(i ^ j))
+    raise AssertionError(op)  # pragma: no cover
+
+
+def compile_tree(node, variables: FanucVariables, ctx: Context | None = None, in_address: bool = False):
+    """A function of no arguments that evaluates the tree with these variables (read when called).
+
+    ``in_address``: the tree is the value of an NC address (``ROUND`` then rounds to the address's
+    increment).
+    """
+    ctx = ctx or Context()
+    tag = node[0]
+    if tag == NUM:
+        value = (node[1], node[2])
+        return lambda: value
+    if tag == VAR:
+        index = node[1]
+        if index[0] == NUM:
+            n = variable_index((index[1], index[2]))
+            if 0 < n <= LOCALS:
+                return lambda: variables.local[n]
+            if COMMON_FIRST <= n <= COMMON_LAST:
+                common = variables.common
+                return lambda: common[n]
+            return lambda: variables.read(n)
+        inner = compile_tree(index, variables, ctx)
+        return lambda: variables.read(variable_index(inner()))
+    if tag == NEG:
+        inner = compile_tree(node[1], variables, ctx, in_address)
+
+        def neg():
+            d, q = inner()
+            return (-d, -q if q is not None else None)
+        return neg
+    if tag == BIN:
+        op = node[1]
+        left = compile_tree(node[2], variables, ctx, in_address)
+        right = compile_tree(node[3], variables, ctx, in_address)
+        if op in ("+", "-", "*", "/"):
+            return lambda: _binary(op, left(), right())
+        return lambda: _binop(op, left(), right())
+    if tag == FN:
+        name = node[1]
+        arg = compile_tree(node[2], variables, ctx, in_address)
+        return lambda: _function(name, arg(), ctx, in_address)
+    if tag == FN2:
+        name = node[1]
+        a = compile_tree(node[2], variables, ctx, in_address)
+        b = compile_tree(node[3], variables, ctx, in_address)
+        return lambda: _two(name, a(), b(), ctx)
+    raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
+
+
+def evaluate_tree(node, variables: FanucVariables, ctx: Context | None = None) -> tuple:
+    """Evaluate a tree once (compiles it; for tests and one-off use)."""
+    return compile_tree(node, variables, ctx)()
+

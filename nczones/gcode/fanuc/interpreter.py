@@ -1,0 +1,842 @@
+"""The Fanuc mill interpreter: evaluated blocks -> motion in machine coordinates.
+
+:class:`FanucInterpreter` gives the blocks of :mod:`nczones.gcode.fanuc.program`
+their meaning on a Fanuc 0i/30i-M (or Fanuc-compatible, Haas) mill, with the
+modal groups as data (:data:`GROUPS`: group 00 one-shot codes, group 01
+motion, 09 canned cycles, 08 tool length, 14 work coordinates, 16 rotation,
+11 scaling, 22 mirror, 17 polar coordinates ...).  It reuses the LinuxCNC
+interpreter's machinery (segments, chunks, the plain-move lane, arcs,
+dependency tracking) and changes what differs (``specs/fanuc.md``):
+
+* several G codes of different groups share a block; of one group the last
+  wins (group 00 one-shot codes: at most one per block); G80 is group 09,
+  so ``G00 G17 G40 G49 G80 G90`` is the standard safety line;
+* ``machine = transform(program) + EXT + G54..G59/G54.1 + G52 + G92 +
+  tool length``, where the transform is polar coordinates (G16), scaling
+  (G51), programmable mirror image (G51.1) and rotation (G68), applied in
+  that order about their centres in the workpiece system;
+* a tool length change (G43/G44 H, G49) moves the tool axis at once
+  (parameter 5006#6 TOS = 0, ``[fanuc] tool_length_motion = "move"``), with
+  the block's move or alone;
+* canned cycles are group 09: position at the current level, rapid to R,
+  the cycle, back to the initial level (G98) or R (G99); K repeats; P dwell
+  in milliseconds; G73 and G83 with the retract/clearance of parameters 5114
+  and 5115 from the machine file;
+* G28/G30 move only the axes they name (via the intermediate point); G30
+  P2..P4 go to the 2nd..4th reference positions of the machine file; G53 is a
+  rapid in machine coordinates; G04 dwells X seconds or P milliseconds.
+
+Anything else the manuals define but nczones does not model is ``unknown``
+with the code and a reason; a code no Fanuc mill has is an error (GC202),
+with a hint when the LinuxCNC dialect knows it.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from ...machine import FANUC_OFFSETS, Machine
+from ...motion import PLANE_AXES, Plane, SegmentKind
+from ..blocks import Block, Word
+from ..interpreter import (
+    AXIS_LETTERS,
+    WORK_OFFSETS,
+    Interpreter,
+    _dadd,
+    _fmt,
+    _gkey,
+    _gname,
+    _qadd,
+    _Stop,
+)
+
+__all__ = ["FanucInterpreter", "GROUPS", "UNKNOWN_G", "HARMLESS_G", "HARMLESS_M", "CYCLE_CODES"]
+
+_ZERO = Fraction(0)
+
+# G codes keyed by 10 * number (G54.1 -> 541); group numbers as in the Fanuc 0i/30i-M G code list.
+GROUPS: dict[int, int] = {}
+for _group, _codes in {
+    0: (40, 50, 51, 71, 80, 90, 100, 106, 110, 270, 280, 290, 300, 310, 370, 390, 450, 460, 470, 480, 520, 530,
+        600, 650, 721, 722, 920, 921),
+    1: (0, 10, 20, 30, 22, 23, 32, 33, 62, 330, 350, 360),
+    2: (170, 180, 190),
+    3: (900, 910),
+    4: (220, 230),
+    5: (930, 940, 950),
+    6: (200, 210),
+    7: (400, 410, 420),
+    8: (430, 440, 490, 431, 434, 435, 441, 491),
+    9: (730, 740, 760, 800, 810, 820, 830, 840, 842, 843, 850, 860, 870, 880, 890),
+    10: (980, 990),
+    11: (500, 510),
+    12: (660, 670),
+    13: (960, 970),
+    14: (540, 541, 550, 560, 570, 580, 590),
+    15: (610, 620, 630, 640),
+    16: (680, 690),
+    17: (150, 160),
+    18: (401, 411, 421),
+    19: (250, 260),
+    21: (121, 131),
+    22: (501, 511),
+    23: (542,),
+    24: (682, 683),
+}.items():
+    for _c in _codes:
+        GROUPS[_c] = _group
+
+#: Canned cycle codes (group 09 without G80).
+CYCLE_CODES = frozenset((730, 740, 760, 810, 820, 830, 840, 842, 843, 850, 860, 870, 880, 890))
+#: Codes that change nothing nczones proves (feed, spindle, look-ahead, exact stop, cutting modes).
+HARMLESS_G = frozenset((50, 51, 80, 90, 110, 220, 230, 250, 260, 610, 620, 630, 640, 930, 940, 950, 960, 970))
+#: Codes a Fanuc mill knows that nczones does not model: the result is unknown with the reason.
+UNKNOWN_G = {
+    22: "involute interpolation (G02.2) is not modelled",
+    23: "involute interpolation (G03.2) is not modelled",
+    32: "exponential interpolation (G02.3) is not modelled",
+    33: "exponential interpolation (G03.3) is not modelled",
+    62: "NURBS interpolation (G06.2) is not modelled in the fanuc dialect",
+    71: "cylindrical interpolation (G07.1) is not modelled in the fanuc dialect",
+    106: "tool retract and recover (G10.6) is not modelled",
+    121: "polar coordinate interpolation (G12.1) is not modelled",
+    131: "polar coordinate interpolation (G13.1) is not modelled",
+    310: "skip function (G31) stops where a signal arrives, which depends on the part",
+    350: "circular threading (G35) is not modelled",
+    360: "circular threading (G36) is not modelled",
+    370: "automatic tool length measurement (G37) stops where a signal arrives",
+    390: "corner circular interpolation (G39) belongs to cutter compensation, which is not modelled",
+    401: "normal direction control (G40.1) is not modelled",
+    411: "normal direction control (G41.1) is not modelled",
+    421: "normal direction control (G42.1) is not modelled",
+    410: "cutter radius compensation (G41): the Fanuc type A/B start-up and the intersection vectors at corners "
+         "are not modelled",
+    420: "cutter radius compensation (G42): the Fanuc type A/B start-up and the intersection vectors at corners "
+         "are not modelled",
+    431: "tool length compensation in the tool axis direction (G43.1) is not modelled",
+    434: "tool centre point control (G43.4) is not modelled",
+    435: "tool centre point control (G43.5) is not modelled",
+    441: "tool length compensation (G44.1) is not modelled",
+    491: "tool length compensation cancel (G49.1) is not modelled",
+    450: "tool offset increase (G45) is not modelled",
+    460: "tool offset decrease (G46) is not modelled",
+    470: "tool offset double increase (G47) is not modelled (on Haas G47 engraves text)",
+    480: "tool offset double decrease (G48) is not modelled",
+    542: "fixture offset (G54.2) is not modelled",
+    600: "single direction positioning (G60) overshoots by a parameter distance that is not modelled",
+    682: "tilted working plane (G68.2) is not modelled",
+    683: "tilted working plane (G68.3) is not modelled",
+    721: "figure copy (G72.1) is not modelled",
+    722: "figure copy (G72.2) is not modelled",
+    870: "back boring cycle (G87) is not modelled",
+    880: "boring cycle with manual retract (G88) lets the operator move the spindle",
+}
+#: M codes with no effect on motion on every Fanuc mill (program stops, spindle, coolant, rigid tapping).
+HARMLESS_M = frozenset((0, 1, 3, 4, 5, 7, 8, 9, 19, 29))
+#: LinuxCNC G codes a Fanuc mill does not have (for the cross-dialect hint).
+LINUXCNC_ONLY_G = frozenset((52, 53, 70, 171, 181, 191, 331, 382, 383, 384, 385, 432, 591, 592, 593, 611, 901,
+                             911, 922, 923))
+
+
+class FanucInterpreter(Interpreter):
+    """Modal state machine of a Fanuc mill, from blocks to machine-coordinate motion.
+
+    Takes the :class:`~nczones.gcode.interpreter.Interpreter` arguments; the
+    Fanuc settings come from ``machine.fanuc``.
+
+    >>> from nczones.machine import parse_machine
+    >>> from nczones.gcode import segments
+    >>> m = parse_machine('''
+    ... [machine]
+    ... dialect = "fanuc"
+    ... axes = ["X", "Y", "Z"]
+    ... [machine.rapid]
+    ... X = "1000"
+    ... Y = "1000"
+    ... Z = "1000"
+    ... [machine.reference]
+    ... X = "0"
+    ... Y = "0"
+    ... Z = "0"
+    ... [tool_lengths]
+    ... H1 = "100"
+    ... ''')
+    >>> segs = segments("G00 G17 G40 G49 G80 G90\\nX10 Y5\\nG43 H1\\n", m)
+    >>> [[str(v) for v in s.end] for s in segs]
+    [['10', '5', '0'], ['10', '5', '100']]
+    """
+
+    dialect = "fanuc"
+
+    def __init__(self, machine: Machine, **kwargs):
+        super().__init__(machine, **kwargs)
+        self.settings = machine.fanuc
+        n = self.naxes
+        for name in FANUC_OFFSETS:
+            self.g5x[name] = list(machine.offset(name))
+            self.dep_g5x[name] = [{name: 1} for _ in range(n)]
+            self.rot[name] = _ZERO
+        self.g52 = [_ZERO] * n
+        self.dep_g52: list[dict] = [{} for _ in range(n)]
+        self.motion = 0  # group 01 at power-on: G00 (parameter 3402#0 G01 = 0)
+        self.cycle: int | None = None  # group 09 (None: G80)
+        self.cycle_data: dict = {}  # R, Z (program values), Q, P of the active cycle
+        self.initial_level: Fraction | None = None
+        self.retract_r = False  # G98 at power-on
+        self.tlo_register: int | None = None
+        self.tlo_sign = 1
+        self.h_geometry = {k: v for k, v in machine.tool_lengths.items()}
+        self.h_wear: dict[int, Fraction] = {}
+        self.d_geometry = {k: v / 2 for k, v in machine.tool_diameters.items()}
+        self.d_wear: dict[int, Fraction] = {}
+        self._tlo_shift: Fraction | None = None  # a tool length change the block's move must carry out
+        self._tlo_shift_deps: dict | None = None
+        self.references = {1: tuple(machine.reference)}
+        self.references.update(machine.fanuc.references)
+        self.after_home: set[int] = set()  # axes returned by G28/G30 while a tool length offset was active
+        self.intermediate: list | None = None  # G28/G30's intermediate point (machine), for G29
+        self.stops: list = []  # M00/M01 lines, for the report
+        self.vars = None
+        self.clock = {3001: (0.0, _ZERO), 3002: (0.0, _ZERO)}
+        self.last = {}  # the last D, M, N, S words, for #4107 ...
+        self._harmless_m = HARMLESS_M | machine.fanuc.harmless_m
+        self._recompute_offsets()
+
+    # ------------------------------------------------------------------ offsets
+    def _recompute_offsets(self) -> None:
+        g5 = self.g5x[self.wcs]
+        ext = self.g5x.get("EXT")
+        g52 = getattr(self, "g52", None)
+        if ext is None or g52 is None:  # during Interpreter.__init__
+            return super()._recompute_offsets()
+        off = [ext[i] + g5[i] + g52[i] + self.g92[i] for i in range(self.naxes)]
+        if self.tool_axis is not None:
+            off[self.tool_axis] += self.tlo
+        self.off = off
+        if self.track:
+            deps = []
+            for i in range(self.naxes):
+                d = _dadd(_dadd(_dadd(self.dep_g5x["EXT"][i], self.dep_g5x[self.wcs][i]), self.dep_g52[i]),
+                          self.dep_g92[i])
+                if i == self.tool_axis:
+                    d = _dadd(d, self.dep_tlo)
+                deps.append(d)
+            self.dep_off = deps
+
+    def in_cycle(self) -> bool:
+        """A canned cycle is active (the language layer reads K as its repeat count)."""
+        return self.cycle is not None
+
+    def fast_state_ok(self) -> bool:
+        """Nothing the vectorized fast path does not model is active."""
+        return self.cycle is None and self._tlo_shift is None and not self.after_home
+
+    # ------------------------------------------------------------------ the plain-move lane
+    def _lean(self, g, m, f, extra: int) -> bool:
+        if self.cycle is not None or self._tlo_shift is not None or self.after_home:
+            return False
+        if m is not None and m not in (3, 4, 5, 7, 8, 9):
+            return False
+        if not super()._lean(g, m, f, extra):
+            return False
+        if m is not None:
+            self.last["M"] = Fraction(m)
+        return True
+
+    # ------------------------------------------------------------------ one block
+    def _execute_general(self, block: Block) -> None:
+        gcodes: list[tuple[int, Word]] = []
+        mcodes: list[tuple[int, Word]] = []
+        words: dict[str, Word] = {}
+        axis_words: list[tuple[int, Word]] = []
+        for w in block.words:
+            letter = w.letter
+            if letter == "G":
+                k = _gkey(w.value)
+                if k is None:
+                    raise self._error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at "
+                                      "most one decimal", w)
+                gcodes.append((k, w))
+            elif letter == "M":
+                if w.value.denominator != 1:
+                    raise self._error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
+                mcodes.append((w.value.numerator, w))
+            else:
+                if letter in words:
+                    raise self._error("GC204", f"two {letter} words in one block ({words[letter].text or letter} "
+                                      f"and {w.text or letter}); a letter may appear once", w)
+                words[letter] = w
+                if letter in AXIS_LETTERS:
+                    i = self.index.get(letter)
+                    if i is None:
+                        raise self._error("GC203", f"axis word {w.text or letter} names axis {letter}, which this "
+                                          f"machine does not have (axes: {', '.join(self.axes)})", w)
+                    axis_words.append((i, w))
+        # ---- modal groups: of one group the last code wins; one-shot codes one per block
+        groups: dict[int, tuple[int, Word]] = {}
+        for k, w in gcodes:
+            g = GROUPS.get(k)
+            if g is None:
+                hint = "; valid in the linuxcnc dialect: set dialect = \"linuxcnc\" in [machine]" \
+                    if k in LINUXCNC_ONLY_G else ""
+                raise self._error("GC202", f"unknown G code {_gname(k)} (written {w.text or _gname(k)}): not a "
+                                  f"Fanuc mill G code; see specs/fanuc.md{hint}", w)
+            if g == 0 and 0 in groups:
+                raise self._error("GC201", f"{_gname(groups[0][0])} and {_gname(k)} are both one-shot (group 00) "
+                                  "codes; write them in separate blocks", w)
+            groups[g] = (k, w)
+        if len(mcodes) > 3:
+            raise self._error("GC206", f"{len(mcodes)} M words in one block; at most 3 are allowed", mcodes[3][1])
+        g0 = groups.get(0)
+        g1 = groups.get(1)
+        g9 = groups.get(9)
+        if g1 and g9 and g9[0] != 800:
+            self._unknown(f"{_gname(g1[0])} {_gname(g9[0])}", f"{_gname(g1[0])} and the canned cycle "
+                          f"{_gname(g9[0])} in one block: which one the control runs depends on the model", g9[1])
+        for k, w in gcodes:
+            if k in UNKNOWN_G:
+                self._unknown(_gname(k), UNKNOWN_G[k], w)
+        for k, w in mcodes:
+            if k not in self._harmless_m and k not in (2, 30, 6):
+                self._unknown(f"M{k}", f"M{k} is not a code nczones models (machine M codes may move anything; "
+                              "list the harmless ones in [fanuc] harmless_m)", w)
+        mset = {k for k, _ in mcodes}
+        # ---- feed, spindle, tool
+        if 5 in groups:
+            self.feed_mode = groups[5][0] // 10
+            self.unset.discard("feed")
+        if "F" in words:
+            f = words["F"].value
+            if f < 0:
+                raise self._error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
+            self.feed = f
+        if "T" in words:
+            t = words["T"].value
+            if t.denominator != 1 or t < 0:
+                raise self._error("GC209", f"tool number {words['T'].text} must be a non-negative integer", words["T"])
+            self.tool_selected = int(t)
+        if 6 in mset:
+            self.tool_in_spindle = self.tool_selected
+        if mcodes:
+            self.last["M"] = Fraction(mcodes[-1][0])
+        if "D" in words:
+            self.last["D"] = words["D"].value
+        if block.number is not None:
+            self.last["N"] = block.number
+        if 0 in mset or 1 in mset:
+            self.stops.append(block.span.line if block.span else 0)
+        # ---- modes
+        if 2 in groups:
+            self.plane = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}[groups[2][0]]
+            self.unset.discard("plane")
+        if 6 in groups:
+            self.inch = groups[6][0] == 200
+            self.unset.discard("units")
+        if 3 in groups:
+            self.absolute = groups[3][0] == 900
+            self.unset.discard("distance")
+        if 10 in groups:
+            self.retract_r = groups[10][0] == 990
+        if 7 in groups and groups[7][0] == 400:
+            self.comp_on = False
+        for g, what in ((16, "coordinate rotation"), (11, "scaling"), (22, "programmable mirror image"),
+                        (17, "polar coordinate command")):
+            if g in groups and groups[g][0] in (680, 510, 511, 160):
+                self._unknown(_gname(groups[g][0]), f"{what} ({_gname(groups[g][0])}) is not modelled yet",
+                              groups[g][1])
+        # ---- tool length (group 08): the tool axis moves with this block's move, or alone
+        if 8 in groups and groups[8][0] in (430, 440, 490):
+            self._fanuc_tool_length(groups[8], words)
+        # ---- work coordinate system (group 14)
+        if 14 in groups:
+            self._select_wcs(groups[14], words)
+        # ---- one-shot codes that use the axis words
+        uses_axes = False
+        if g0 is not None:
+            k = g0[0]
+            uses_axes = k in (40, 100, 270, 280, 290, 300, 520, 530, 920)
+            if k == 40:
+                self._dwell(words, g0[1])
+            elif k == 100:
+                self._fanuc_g10(words, axis_words, g0[1])
+            elif k in (280, 300):
+                self._fanuc_home(k, axis_words, words, g0[1])
+            elif k == 290:
+                self._g29(axis_words, g0[1])
+            elif k == 270:
+                self._fanuc_rapid(axis_words, derived="G27 reference check")
+            elif k == 520:
+                self._fanuc_g52(axis_words, g0[1])
+            elif k == 530:
+                self._fanuc_g53(axis_words, g0[1])
+            elif k == 920:
+                if self.g52 != [_ZERO] * self.naxes:
+                    self._unknown("G92", "G92 while a local coordinate system (G52) is set: how the two combine "
+                                  "depends on the control", g0[1])
+                self._g92(axis_words, g0[1])
+            elif k == 921:
+                self.g92 = [_ZERO] * self.naxes
+                self.dep_g92 = [{} for _ in range(self.naxes)]
+                self._recompute_offsets()
+        # ---- group 09 and 01
+        if g9 is not None:
+            k = g9[0]
+            if k == 800:
+                self._cancel_cycle()
+            elif k in UNKNOWN_G:
+                self.cycle = None
+            else:
+                if self.cycle is None or self.initial_level is None:
+                    self.initial_level = None
+                self.cycle = k
+        if g1 is not None:
+            self.motion = g1[0]
+            if g9 is None:
+                self._cancel_cycle()
+        if self.after_home and self.tool_axis is not None and any(i == self.tool_axis for i, _ in axis_words) \
+                and not (g0 and g0[0] in (280, 300, 530)) and 8 not in groups:
+            self._unknown("G28", "the tool axis moves after G28/G30 returned it with a tool length offset active: "
+                          "whether the offset is still applied depends on the control's parameters", axis_words[0][1])
+        if not uses_axes:
+            moving = bool(axis_words) or (g1 is not None and g1[0] in (20, 30))
+            if self.cycle is not None and (axis_words or "R" in words) and g1 is None:
+                self._fanuc_cycle(axis_words, words, block)
+            elif moving and not self.unsupported:
+                self._fanuc_motion(block, axis_words, words, g1)
+        if self._tlo_shift is not None:
+            if not self.unsupported:  # the tool length change with no move of the tool axis: it moves alone
+                end = list(self.pos)
+                end[self.tool_axis] = _qadd(end[self.tool_axis], self._tlo_shift)
+                deps = None
+                if self.track:
+                    deps = [dict(d) for d in self.dep_pos]
+                    deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps)
+                kind = SegmentKind.RAPID if self.motion == 0 or self.cycle is not None else SegmentKind.LINE
+                if kind is SegmentKind.LINE:
+                    self._check_feed()
+                self._emit(kind, end, feed=kind is SegmentKind.LINE, derived="tool length offset", end_deps=deps)
+            self._tlo_shift = None
+        if 2 in mset or 30 in mset:
+            raise _Stop
+
+    # ------------------------------------------------------------------ pieces
+    def _cancel_cycle(self) -> None:
+        self.cycle = None
+        self.cycle_data = {}
+        self.initial_level = None
+
+    def _fanuc_tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
+        """G43/G44 H, G49: the new length; the tool axis moves by the change (TOS = 0)."""
+        k, w = g
+        self.unset.discard("tool")
+        old, old_deps = self.tlo, self.dep_tlo
+        if k == 490:
+            self.tlo, self.tool_register, self.dep_tlo = _ZERO, None, {}
+        else:
+            h = words.get("H")
+            if h is None:
+                reg = self.tlo_register
+                if reg is None:
+                    raise self._error("GC208", f"{_gname(k)} needs an H word with the offset number the first time", w)
+            else:
+                if h.value.denominator != 1 or h.value < 0:
+                    raise self._error("GC209", f"H word {h.text} must be a non-negative integer offset number", h)
+                reg = int(h.value)
+            sign = 1 if k == 430 else -1
+            if reg != 0 and reg not in self.h_geometry:
+                where = h if h is not None else w
+                known = ", ".join(f"H{r}" for r in sorted(self.h_geometry)) or "none"
+                raise self._error("GC310", f"tool length offset H{reg} is not in the machine file's [tool_lengths] "
+                                  f"(known: {known})", where)
+            length = self.h_geometry.get(reg, _ZERO) + self.h_wear.get(reg, _ZERO)
+            self.tlo = sign * length
+            self.tlo_register = reg
+            self.tlo_sign = sign
+            self.tool_register = reg
+            self.dep_tlo = {f"H{reg}": sign} if reg != 0 else {}
+            if sign < 0 and self.track and reg != 0:
+                self._unknown("G44", "parameter ranges on a tool length used with G44 (subtracted) are not "
+                              "modelled", w)
+        self._recompute_offsets()
+        if self.tool_axis is not None and self.tlo != old:
+            if self.settings.tool_length_motion == "move":
+                self._tlo_shift = self.tlo - old
+                self._tlo_shift_deps = _dadd(self.dep_tlo, old_deps, -1) if self.track else None
+            self.after_home.discard(self.tool_axis)
+        elif self.tool_axis is not None:
+            self.after_home.discard(self.tool_axis)
+
+    def _select_wcs(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
+        k, w = g
+        if k == 541:
+            p = words.get("P")
+            if p is None or p.value.denominator != 1 or not 1 <= p.value <= 48:
+                raise self._error("GC209", "G54.1 needs P1 to P48 (the additional workpiece coordinate system)",
+                                  p or w)
+            self.wcs = f"G54.1P{int(p.value)}"
+        else:
+            self.wcs = {540: "G54", 550: "G55", 560: "G56", 570: "G57", 580: "G58", 590: "G59"}[k]
+        self.unset.discard("offset")
+        self._recompute_offsets()
+
+    def _dwell(self, words: dict[str, Word], w: Word) -> None:
+        """G04 X (seconds), U (seconds), P (milliseconds); none: an exact stop (no dwell)."""
+        given = [x for x in (words.get("X"), words.get("U"), words.get("P")) if x is not None]
+        if len(given) > 1:
+            raise self._error("GC204", "G04 takes one of X, U (seconds) and P (milliseconds)", given[1])
+        seconds = _ZERO
+        if given:
+            x = given[0]
+            if x.value < 0:
+                raise self._error("GC209", f"dwell time {x.text} is negative", x)
+            if x.letter == "P":
+                seconds = _seconds(x.value)
+            else:
+                seconds = x.value
+        self._emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
+
+    def _target(self, axis_words, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
+        """The machine target of the block's axis words, with a pending tool length change on the tool axis."""
+        end, deps = self._program_target(axis_words, False, absolute)
+        shift = self._tlo_shift
+        if shift is not None and self.tool_axis is not None and not any(i == self.tool_axis for i, _ in axis_words):
+            end[self.tool_axis] = _qadd(end[self.tool_axis], shift)
+            if deps is not None:
+                deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps)
+        self._tlo_shift = None
+        return end, deps
+
+    def _fanuc_motion(self, block, axis_words, words, g1) -> None:
+        motion = self.motion
+        if motion in (0, 10):
+            if not axis_words and self._tlo_shift is None:
+                return
+            self._note_assumed(("units", "distance", "offset"))
+            end, deps = self._target(axis_words)
+            if motion == 0:
+                self._emit(SegmentKind.RAPID, end, end_deps=deps)
+            else:
+                self._check_feed()
+                self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+        elif motion in (20, 30):
+            if self._tlo_shift is not None:
+                self._unknown(_gname(motion), "a tool length change in an arc block: the tool axis moves along "
+                              "the arc in a way the manuals do not state")
+                return
+            rw = words.get("R")
+            if rw is not None and not any(i in self._plane_indices() for i, _ in axis_words):
+                return  # R arc to the point it starts from: a 0 degree arc, no motion (0i/30i)
+            self._arc(block, axis_words, words, motion == 20, False)
+        elif motion == 330:
+            kw = words.get("F")
+            if kw is None and self.feed == 0:
+                raise self._error("GC208", "G33 needs F (the lead)")
+            end, deps = self._target(axis_words)
+            self._emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
+        else:
+            self._unknown(_gname(motion), f"{_gname(motion)} is not modelled")
+
+    def _plane_indices(self) -> tuple:
+        a, b, _n = PLANE_AXES[self.plane]
+        return (self.index.get(a), self.index.get(b))
+
+    def _fanuc_rapid(self, axis_words, derived: str = "") -> None:
+        if not axis_words:
+            return
+        end, deps = self._target(axis_words)
+        self._emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
+
+    def _fanuc_g53(self, axis_words, w: Word) -> None:
+        """G53: a rapid to machine coordinates (the tool axis' offsets do not apply to it)."""
+        if not self.absolute:
+            self._unknown("G53", "G53 in incremental mode (G91): the manuals give it no meaning", w)
+            return
+        if not axis_words:
+            return
+        self._note_assumed(("units",))
+        end, deps = self._program_target(axis_words, True)
+        if self._tlo_shift is not None and self.tool_axis is not None and not any(
+                i == self.tool_axis for i, _ in axis_words):
+            end[self.tool_axis] = _qadd(end[self.tool_axis], self._tlo_shift)
+        self._tlo_shift = None
+        for i, _w in axis_words:
+            self.after_home.discard(i)
+        self._emit(SegmentKind.RAPID, end, derived="G53", end_deps=deps)
+
+    def _fanuc_home(self, k: int, axis_words, words, w: Word) -> None:
+        """G28 / G30 Pn: rapid to the intermediate point, then the named axes to the reference position."""
+        if not axis_words:
+            self._unknown(_gname(k), f"{_gname(k)} without axis words: Fanuc moves no axis, Haas returns every "
+                          "axis; nczones does not know which this machine does", w)
+            return
+        n = 1
+        if k == 300:
+            pw = words.get("P")
+            n = 2 if pw is None else pw.value
+            if n not in (2, 3, 4):
+                raise self._error("GC209", f"G30 {pw.text}: P is 2, 3 or 4 (the reference position number)", pw)
+            n = int(n)
+        home = self.references.get(n)
+        if home is None:
+            self._unknown(f"G30 P{n}", f"the {n}{'nd' if n == 2 else 'rd' if n == 3 else 'th'} reference position "
+                          f"is not in the machine file ([machine.reference_{n}])", w)
+            return
+        self._note_assumed(("units", "distance", "offset"))
+        inter, deps = self._target(axis_words)
+        self._emit(SegmentKind.RAPID, inter, derived=f"{_gname(k)} intermediate", end_deps=deps)
+        self.intermediate = list(inter)
+        end = list(self.pos)
+        hdeps = [dict(d) for d in self.dep_pos] if self.track else None
+        for i, _aw in axis_words:
+            end[i] = home[i]
+            if hdeps is not None:
+                hdeps[i] = {}
+            if i == self.tool_axis and self.tlo:
+                self.after_home.add(i)
+        self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} reference {n}", end_deps=hdeps)
+
+    def _g29(self, axis_words, w: Word) -> None:
+        """G29: from the reference position via G28's intermediate point to the target."""
+        if self.intermediate is None:
+            self._unknown("G29", "G29 without an earlier G28/G30 intermediate point", w)
+            return
+        if not axis_words:
+            return
+        mid = list(self.pos)
+        for i, _aw in axis_words:
+            mid[i] = self.intermediate[i]
+        self._emit(SegmentKind.RAPID, mid, derived="G29 intermediate")
+        end, deps = self._target(axis_words)
+        self._emit(SegmentKind.RAPID, end, derived="G29", end_deps=deps)
+
+    def _fanuc_g52(self, axis_words, w: Word) -> None:
+        """G52: the local coordinate system's origin in the workpiece system (G52 IP0 cancels it)."""
+        if not self.absolute:
+            self._unknown("G52", "G52 in incremental mode (G91) is not modelled", w)
+            return
+        for i, aw in axis_words:
+            self.g52[i] = self._mm(aw.value, i)
+            self.dep_g52[i] = {}
+        self._recompute_offsets()
+
+    def _fanuc_g10(self, words, axis_words, w: Word) -> None:
+        """G10 L2 P0..P6 (EXT, G54..G59), L20 P1..P48 (G54.1), L10..L13 P R (tool offsets, memory C)."""
+        lw, pw = words.get("L"), words.get("P")
+        if lw is None:
+            raise self._error("GC208", "G10 needs an L word (L2, L20, L10 to L13)", w)
+        L = lw.value
+        if pw is None:
+            raise self._error("GC208", f"G10 L{L} needs a P word", w)
+        P = pw.value
+        if L in (2, 20):
+            top = 6 if L == 2 else 48
+            low = 0 if L == 2 else 1
+            if P.denominator != 1 or not low <= P <= top:
+                raise self._error("GC209", f"G10 L{L} {pw.text}: P must be an integer {low} to {top}", pw)
+            name = (("EXT",) + WORK_OFFSETS[:6])[int(P)] if L == 2 else f"G54.1P{int(P)}"
+            reg, dreg = self.g5x[name], self.dep_g5x[name]
+            for i, aw in axis_words:
+                v = self._mm(aw.value, i)
+                reg[i] = v if self.absolute else reg[i] + v
+                if self.absolute:
+                    dreg[i] = {}
+            self._recompute_offsets()
+        elif L in (10, 11, 12, 13):
+            rw = words.get("R")
+            if P.denominator != 1 or P < 0:
+                raise self._error("GC209", f"G10 L{L} {pw.text}: P must be a non-negative offset number", pw)
+            if rw is None:
+                raise self._error("GC208", f"G10 L{L} needs an R word with the offset value", w)
+            table = {10: self.h_geometry, 11: self.h_wear, 12: self.d_geometry, 13: self.d_wear}[int(L)]
+            v = self._len(rw.value)
+            reg = int(P)
+            table[reg] = v if self.absolute else table.get(reg, _ZERO) + v
+        elif L in (1, 3, 50, 52):
+            self._unknown(f"G10 L{L}", f"G10 L{L} ({'tool offset memory A' if L == 1 else 'tool life data' if L == 3 else 'parameter input'}) is not modelled", lw)
+        else:
+            raise self._error("GC209", f"G10 {lw.text}: L must be 2, 20 or 10 to 13 on a Fanuc mill", lw)
+
+    def _g92(self, axis_words, w: Word) -> None:
+        """G92: the workpiece systems are shifted so the current position reads the given values."""
+        if not axis_words:
+            raise self._error("GC208", "G92 needs at least one axis word", w)
+        ext = self.g5x["EXT"]
+        for i, aw in axis_words:
+            tl = self.tlo if i == self.tool_axis else _ZERO
+            self.g92[i] = self.pos[i] - ext[i] - self.g5x[self.wcs][i] - self.g52[i] - tl - self._mm(aw.value, i)
+            if self.track:
+                d = _dadd(_dadd(self.dep_pos[i], self.dep_g5x[self.wcs][i], -1), self.dep_g5x["EXT"][i], -1)
+                d = _dadd(d, self.dep_g52[i], -1)
+                if i == self.tool_axis:
+                    d = _dadd(d, self.dep_tlo, -1)
+                self.dep_g92[i] = d
+        self._recompute_offsets()
+
+    # ------------------------------------------------------------------ canned cycles
+    def _fanuc_cycle(self, axis_words, words, block) -> None:
+        """A block in canned cycle mode (G73 G74 G76 G81-G86 G89): position, R point, the cycle, return.
+
+        0i/30i-M, "Canned cycle for drilling": operation 1 positions X/Y at rapid at the current level,
+        2 rapids to the R point, 3 the hole machining, 4 at the bottom (dwell, spindle), 5 back to R, 6 a
+        rapid to the initial level (G98) or stay at R (G99).  The initial level is the tool axis position
+        when the cycle mode began.  In G91, R is the distance from the initial level and Z from R.
+        """
+        k = self.cycle
+        name = _gname(k)
+        if self.plane is not Plane.XY:
+            self._unknown(name, f"{name} outside G17: the drilling axis depends on parameter 5101#0 FXY")
+            return
+        if self.unsupported:
+            return
+        ix, iy, iz = self.index.get("X"), self.index.get("Y"), self.index.get("Z")
+        if ix is None or iy is None or iz is None:
+            raise self._error("GC308", f"a canned cycle needs axes X, Y and Z; this machine has {', '.join(self.axes)}")
+        data = self.cycle_data
+        for letter in ("R", "Z", "Q", "P"):
+            if letter in words:
+                data[letter] = words[letter].value
+        kw = words.get("K") or words.get("L")
+        reps = 1
+        if kw is not None:
+            if kw.value.denominator != 1 or kw.value < 0:
+                raise self._error("GC209", f"canned cycle repeat count {kw.text} must be a non-negative integer", kw)
+            reps = int(kw.value)
+        missing = [letter for letter in ("R", "Z") if letter not in data]
+        if missing:
+            self._unknown(name, f"{name} without {' and '.join(missing)} (R point, hole bottom) given since the cycle "
+                          "began: what the control then uses is not stated in the manuals")
+            return
+        if k in (730, 830) and any(x in words for x in "IJ"):
+            self._unknown(name, f"{name} with I or J: Haas's variable-peck mode is not modelled (on Fanuc K is "
+                          "the repeat count)")
+            return
+        if k in (730, 830) and "Q" not in data:
+            raise self._error("GC208", f"{name} needs Q (the depth of cut per peck)")
+        if k in (730, 830) and data["Q"] <= 0:
+            raise self._error("GC209", f"peck depth Q{_fmt(data['Q'])} must be greater than 0")
+        if k == 760 and "Q" not in data:
+            data["Q"] = _ZERO
+        self._check_feed()
+        self._note_assumed(("units", "distance", "offset", "plane"))
+        if self._tlo_shift is not None:
+            self._unknown(name, "a tool length change in a canned cycle block is not modelled")
+            return
+        if self.initial_level is None:
+            self.initial_level = self.pos[iz]
+        initial = self.initial_level
+        offz = self.off[iz]
+        if self.absolute:
+            r = _qadd(self._len(data["R"]), offz)
+            bottom = _qadd(self._len(data["Z"]), offz)
+        else:
+            r = _qadd(initial, self._len(data["R"]))
+            bottom = _qadd(r, self._len(data["Z"]))
+        wd = {self.axes[i]: aw for i, aw in axis_words}
+        for i, aw in axis_words:
+            if self.axes[i] not in ("X", "Y", "Z"):
+                raise self._error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
+        if reps == 0:
+            return  # K0: the drilling data is stored, no hole is drilled
+        if k in (730, 830):
+            step = self._len(data["Q"])
+            back = self.settings.g73_retract if k == 730 else self.settings.g83_clearance
+            if back is None:
+                param, key = ("5114", "g73_retract") if k == 730 else ("5115", "g83_clearance")
+                self._unknown(name, f"{name}'s {'retract' if k == 730 else 'clearance'} d is parameter {param}; "
+                              f"set [fanuc] {key} in the machine file")
+                return
+        if k in (760,):
+            shift = self.settings.boring_shift
+            if shift is None:
+                self._unknown(name, "G76's shift direction is parameter 5101 bits RD1/RD2; set [fanuc] "
+                              "boring_shift in the machine file")
+                return
+        dwell = _seconds(data["P"]) if "P" in data and k in (760, 820, 840, 890, 740, 842, 843) else None
+        top = initial if not self.retract_r else r
+        for rep in range(reps):
+            target = list(self.pos)
+            if self.absolute:
+                if "X" in wd:
+                    target[ix] = _qadd(self._mm(wd["X"].value, ix), self.off[ix])
+                if "Y" in wd:
+                    target[iy] = _qadd(self._mm(wd["Y"].value, iy), self.off[iy])
+            else:
+                if "X" in wd:
+                    target[ix] = _qadd(target[ix], self._mm(wd["X"].value, ix))
+                if "Y" in wd:
+                    target[iy] = _qadd(target[iy], self._mm(wd["Y"].value, iy))
+            a, b = target[ix], target[iy]
+
+            def go(kind, z, derived, x=None, y=None):
+                end = list(self.pos)
+                end[ix] = a if x is None else x
+                end[iy] = b if y is None else y
+                end[iz] = z
+                deps = None
+                if self.track:
+                    deps = [dict(d) for d in self.dep_pos]
+                    if self.absolute:
+                        for i, letter in ((ix, "X"), (iy, "Y")):
+                            if letter in wd:
+                                deps[i] = dict(self.dep_off[i])
+                        if z == r or z == bottom:
+                            deps[iz] = dict(self.dep_off[iz])
+                    else:
+                        self._unknown(name, "parameter ranges with incremental canned cycles are not modelled")
+                self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
+
+            go(SegmentKind.RAPID, self.pos[iz], f"{name} position")
+            if self.pos[iz] != r:
+                go(SegmentKind.RAPID, r, f"{name} to R")
+            if k in (730, 830):
+                depth = r
+                while depth - step > bottom:  # G73: back off d; G83: out to R, down to d above the cut
+                    depth -= step
+                    go(SegmentKind.LINE, depth, f"{name} peck")
+                    if k == 830:
+                        go(SegmentKind.RAPID, r, f"{name} clear")
+                    go(SegmentKind.RAPID, depth + back, f"{name} {'retract' if k == 730 else 'approach'}")
+            go(SegmentKind.LINE, bottom, f"{name} feed")
+            if dwell:
+                self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
+            if k == 760:
+                sa, sb = self._boring_shift(data["Q"])
+                go(SegmentKind.RAPID, bottom, f"{name} shift", x=a + sa, y=b + sb)
+                go(SegmentKind.RAPID, top, f"{name} retract", x=a + sa, y=b + sb)
+                go(SegmentKind.RAPID, top, f"{name} shift back")
+            elif k in (740, 840, 842, 843, 850, 890):
+                go(SegmentKind.LINE, r, f"{name} retract")
+                if top != r:
+                    go(SegmentKind.RAPID, top, f"{name} return")
+            else:
+                go(SegmentKind.RAPID, top, f"{name} retract")
+
+    def _boring_shift(self, q: Fraction) -> tuple[Fraction, Fraction]:
+        d = self._len(abs(q))
+        return {"+X": (d, _ZERO), "-X": (-d, _ZERO), "+Y": (_ZERO, d), "-Y": (_ZERO, -d)}[self.settings.boring_shift]
+
+    # ------------------------------------------------------------------ system variables
+    def bind_variables(self, variables) -> None:
+        """Serve the system variables (``#1000`` and up) the program reads and writes (``specs/fanuc.md``)."""
+        self.vars = variables
+        variables.system_read = self.system_read
+        variables.system_write = self.system_write
+
+    def bind_parameters(self, params) -> None:  # the LinuxCNC store is not used in this dialect
+        self._scopes = None
+
+    def system_read(self, n: int) -> tuple:
+        from .system import read
+
+        return read(self, n)
+
+    def system_write(self, n: int, value: tuple) -> None:
+        from .system import write
+
+        write(self, n, value)
+
+
+def _seconds(p: Fraction) -> Fraction:
+    """A dwell P as seconds: milliseconds when written as an integer (Fanuc), seconds with a decimal
+    fraction (Haas writes ``P0.5``)."""
+    return p / 1000 if p.denominator == 1 else p

@@ -1,0 +1,955 @@
+"""Run a Fanuc program's *control*: text in, executed and evaluated blocks out.
+
+The Fanuc dialect's language layer, the counterpart of
+:mod:`nczones.gcode.program` (whose blocks, spans, sources, plain lane and
+fast-run hand-over it shares): it reads the text with
+:mod:`nczones.gcode.fanuc.parser`, runs Custom Macro B (variables per call
+level, ``IF``/``GOTO``/``WHILE``/``DO``/``END``), the calls (``M98 P L``,
+``M98 P30002``, ``M99``, ``M99 P``, ``M97 P``, ``G65``, ``G66``/``G67``,
+custom G/M/T codes from the machine file's ``[macros]``, subprograms in the
+same file or in a library folder) and yields one
+:class:`~nczones.gcode.blocks.Block` per executed NC statement with every
+word's value exact:
+
+* a literal as written, except that with ``decimal_point_input =
+  "increment"`` (parameter 3401#0 DPI = 0) a length word without a decimal
+  point is a count of least input increments (``X100`` is 0.1 mm on an IS-B
+  control), and a length literal with more decimals than the increment is
+  rounded to it;
+* a ``#``/``[...]`` value rounded as the control rounds it: lengths to the
+  address's least input increment, integer addresses (M S T H D P L N) to an
+  integer, G codes to one decimal; a vacant value drops the word.
+
+Words consumed here, never in a block: ``N``, ``O``, macro statements, the
+call words (``G65 G66 G67 M98 M99 M97`` with their ``P``/``L``/arguments, a
+custom code with its arguments).  ``#3000 = n (MESSAGE)`` stops the program
+(the alarm is recorded, :attr:`FanucRunner.alarm`); ``#3006`` is a stop with
+a message (recorded, the run goes on).  Errors are ``GcodeError`` with
+``file:line:column``; what cannot be modelled raises
+:class:`~nczones.gcode.program.UnsupportedGcode` whose code names the Fanuc
+code (``"G66"``, ``"#5405"``, ``"ELSE"``), listed in ``specs/fanuc.md``.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+
+from ...errors import Diagnostic, GcodeError, SourceSpan
+from ...machine import FanucSettings
+from ..blocks import LANE_FULL
+from ..expr import EvalError
+from ..lexer import make_span, plain_block, plain_block_of, scan_plain
+from ..program import (
+    DEFAULT_MAX_LOOP_ITERATIONS,
+    FastRunRequest,
+    IterationBoundExceeded,
+    UnsupportedGcode,
+    _StringSource,
+)
+from .expr import VACANT, Context, FanucVariables, SystemVariableUnknown, compile_tree, round_to, variable_index
+from .parser import EXPR, LITERAL, NEG, VAR, FanucLine, parse_line
+
+__all__ = ["iter_blocks", "FanucRunner", "LENGTH_LETTERS", "needs_language_layer", "MAX_MACRO_LEVELS",
+           "MAX_CALL_DEPTH"]
+
+#: Addresses whose values are lengths or angles: the decimal point input rule and the least input
+#: increment apply (``K`` only outside canned cycles, where it is the repeat count).
+LENGTH_LETTERS = frozenset("XYZUVWABCIJKRQ")
+#: Addresses that take integers: a computed value is rounded to the nearest integer (halves away from 0).
+INTEGER_LETTERS = frozenset("MSTHDPLN")
+#: Argument specification I (G65/G66): address -> local variable.
+ARGUMENTS_I = {"A": 1, "B": 2, "C": 3, "I": 4, "J": 5, "K": 6, "D": 7, "E": 8, "F": 9, "H": 11, "M": 13, "Q": 17,
+               "R": 18, "S": 19, "T": 20, "U": 21, "V": 22, "W": 23, "X": 24, "Y": 25, "Z": 26}
+#: Macro call levels (G65, G66, custom codes) and all nested calls (with M98/M97), 0i/30i limits.
+MAX_MACRO_LEVELS = 5
+MAX_CALL_DEPTH = 15
+MAX_LOOP_NESTING = 3
+MAX_REPORTED_ERRORS = 10
+#: A line the plain lane must not take: variables, expressions, comments, EOB, program numbers, macro
+#: statements, G65-G67.
+_PLAIN_BREAKERS = re.compile(r"[#\[(;:%]|[Oo]\d|[Gg][ \t]*0*6[5-7](?![\d.])|(?i:goto|while|end\d|do\d|if)")
+#: A length literal without a decimal point (its value depends on the decimal point input setting).
+_INT_LENGTH = re.compile(r"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d+(?![\d.])")
+_M_LANGUAGE = frozenset((2, 30, 97, 98, 99))
+_END_HINT = re.compile(r"[Mm]0*(?:2|30|99)(?![\d.])|^[ \t]*%")
+_LOOP_WORD = re.compile(r"(?i:end|do)[ \t]*\d")
+_N_LABEL = re.compile(r"[ \t]*(?:/[1-9]?[ \t]*)?[Nn][ \t]*(\d+)")
+_O_LINE = re.compile(r"[ \t]*(?:/[1-9]?[ \t]*)?[Oo:][ \t]*(\d+)")
+
+
+@dataclass(slots=True)
+class _Loop:
+    m: int
+    head: tuple[int, int]  # (pos, lineno) of the WHILE / DO line
+    count: int = 0
+
+
+class _Source:
+    """A program text and its index of program numbers and sequence-number labels."""
+
+    __slots__ = ("src", "file", "programs", "extents", "labels")
+
+    def __init__(self, src, file: str):
+        self.src = src
+        self.file = file
+        self.programs: dict[int, tuple[int, int]] | None = None
+        self.extents: list = []  # (start pos, end pos) of each program text: O line to the next O line
+        self.labels: dict[int, list] = {}
+
+    def index(self) -> None:
+        """Find every program number line and every block with a sequence number (once)."""
+        if self.programs is not None:
+            return
+        self.programs = {}
+        starts = [0]
+        pos, lineno = 0, 1
+        while True:
+            line, nxt = self.src.line_at(pos)
+            if line is None:
+                break
+            m = _O_LINE.match(line)
+            if m is not None:
+                self.programs.setdefault(int(m.group(1)), (nxt, lineno + 1))
+                if pos and starts[-1] != pos:
+                    starts.append(pos)
+            else:
+                n = _N_LABEL.match(line)
+                if n is not None:
+                    self.labels.setdefault(int(n.group(1)), []).append((pos, lineno))
+            pos, lineno = nxt, lineno + 1
+        starts.append(pos + 1)
+        self.extents = list(zip(starts[:-1], starts[1:]))
+
+    def extent(self, pos: int) -> tuple[int, int]:
+        """The text of the program that holds offset ``pos``: from its O line to the next one."""
+        self.index()
+        for a, b in self.extents:
+            if a <= pos < b:
+                return a, b
+        return (0, 1 << 62)
+
+
+@dataclass(slots=True)
+class _Frame:
+    """One program being executed: the main program, a subprogram (M98, M97, a subprogram M code) or a
+    macro (G65, G66, a custom G/M/T code), with its source, return point and loops."""
+
+    kind: str
+    source: _Source
+    program: int | None = None
+    ret: tuple[int, int] = (0, 0)
+    body: tuple[int, int] = (0, 0)
+    repeats: int = 1
+    saved: list | None = None  # the caller's local level (macro calls)
+    args: dict | None = None
+    loops: list = field(default_factory=list)
+    custom: bool = False  # called by a custom G/M/T code: such codes are ordinary codes inside
+
+
+#: Literal G codes of a block that change how its words are read.
+_CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
+_CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
+
+
+class FanucRunner:
+    """The Fanuc language layer of one program run (see the module docstring and :func:`iter_blocks`)."""
+
+    def __init__(self, source, file: str, variables: FanucVariables, *, settings: FanucSettings | None = None,
+                 block_delete: bool = False, library: str | Path | None = None, state=None,
+                 max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, first_line: int = 1, first_index: int = 0,
+                 fast_runs: dict | None = None, lane=None):
+        self.settings = settings or FanucSettings()
+        self.main = _Source(source, file)
+        self.vars = variables
+        self.block_delete = block_delete
+        self.library = Path(library) if library is not None else None
+        self.state = state  # the interpreter: its units and canned cycle decide how words are read
+        self.max_loops = max_loop_iterations
+        self.first_line = first_line
+        self.index = first_index
+        self.fast_runs = fast_runs
+        self.lane = lane
+        self.frames: list[_Frame] = [_Frame("main", self.main)]
+        self.cache: dict = {}
+        self.started = False  # a % line or a block was met: the next % line ends the program
+        # a block other than % and O lines ran: the next O line ends the main program (in a piece of a
+        # program, the program's own number line is before it)
+        self.ran = first_line > 1
+        self.jumps_back = 0
+        self.modal_call: tuple | None = None  # G66: (program, repeats, args, frame depth it was set at)
+        self.alarm: tuple | None = None  # (number, message, span) of a #3000 alarm that stopped the program
+        self.stops: list = []  # (number, message, span) of #3006 stops
+        self.dpi_words: list = []  # (line, text) of length words without a decimal point (value not 0)
+        self.dpi_count = 0
+        self.rounded: list = []  # (line, text) of literals rounded to the least input increment
+        self.rounded_count = 0
+        self.library_sources: dict[int, _Source] = {}
+        self.ctx = Context(self.settings.atan_signed, self._increment_program_units)
+        macros = self.settings.macros
+        self.custom_g = {int(k[1:]): v for k, v in macros.items() if k[0] == "G"}
+        self.custom_m = {int(k[1:]): v for k, v in macros.items() if k[0] == "M"}
+        self.custom_t = macros.get("T")
+        self._dpi_increment = self.settings.decimal_point_input == "increment"
+        digits = {"IS-A": 2, "IS-B": 3, "IS-C": 4}[self.settings.increment_system]
+        self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
+        self._long_inch = re.compile(rf"[XYZUVWIJKRQxyzuvwijkrq][ \t]*[+-]?\d*\.\d{{{digits + 2}}}|"
+                                     rf"[ABCabc][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
+
+    # -- units -------------------------------------------------------------------------
+    def _inch(self) -> bool:
+        return bool(getattr(self.state, "inch", False))
+
+    def _increment_program_units(self) -> Fraction:
+        inc = self.settings.increment_mm
+        return inc / 10 if self._inch() else inc
+
+    def increment(self, letter: str) -> Fraction:
+        """The least input increment of an address, in program units (rotary axes in degrees)."""
+        inc = self.settings.increment_mm
+        if letter in "ABC":
+            return inc
+        return inc / 10 if self._inch() else inc
+
+    # -- diagnostics ---------------------------------------------------------------------
+    def span(self, lineno: int, line: str, col: int = 1, end: int | None = None) -> SourceSpan:
+        if end is None:
+            end = max(col + 1, len(line) + 1)
+        return SourceSpan(self.frames[-1].source.file, lineno, col, end, line)
+
+    def error(self, code: str, message: str, lineno: int, line: str, col: int = 1, end: int | None = None):
+        return GcodeError(Diagnostic(code, message, self.span(lineno, line, col, end)))
+
+    def unsupported(self, code: str, message: str, lineno: int, line: str, col: int = 1, end=None,
+                    cls=UnsupportedGcode):
+        return cls(Diagnostic(code, message, self.span(lineno, line, col, end)))
+
+    def syntax_error(self, exc: GcodeError, src, pos: int, lineno: int, file: str) -> GcodeError:
+        """``exc`` with the syntax errors of the following lines (up to the program's end)."""
+        diags = list(exc.diagnostics)
+        while len(diags) < MAX_REPORTED_ERRORS:
+            line, pos = src.line_at(pos)
+            if line is None:
+                break
+            lineno += 1
+            if _O_LINE.match(line) or _END_HINT.search(line):
+                break
+            try:
+                parse_line(line, lineno, file)
+            except GcodeError as e:
+                diags.extend(e.diagnostics)
+        return GcodeError(diags[:MAX_REPORTED_ERRORS])
+
+    def evaluate(self, fn, lineno: int, line: str, col: int = 1, end: int | None = None) -> tuple:
+        try:
+            return fn()
+        except EvalError as e:
+            raise self.error(e.code, e.message, lineno, line, col, end) from None
+        except SystemVariableUnknown as e:
+            raise self.unsupported(e.code, e.reason, lineno, line, col, end) from None
+        except RecursionError:
+            raise self.error("GC312", "expression nested too deeply", lineno, line, col, end) from None
+
+    # -- compiled lines ---------------------------------------------------------------------
+    def compiled(self, source: _Source, pos: int, line: str, lineno: int, nxt: int):
+        """The line at ``pos`` parsed, its expressions compiled (kept for lines that run again)."""
+        key = (id(source), pos)
+        hit = self.cache.get(key)
+        if hit is not None:
+            return hit
+        try:
+            fl = parse_line(line, lineno, source.file)
+        except GcodeError as e:
+            raise self.syntax_error(e, source.src, nxt, lineno, source.file) from None
+        v, ctx = self.vars, self.ctx
+        words = []
+        for w in fl.words:
+            if w[1] == EXPR:
+                var = _negated_variable(w[2])
+                words.append((w[0], EXPR, compile_tree(w[2], v, ctx, True), w[3], w[4], w[5],
+                              compile_tree(var, v, ctx) if var is not None else None))
+            else:
+                words.append(w + (None,))
+        assigns = tuple((_target(a[0], v, ctx), compile_tree(a[1], v, ctx), a[2], a[3]) for a in fl.assigns)
+        stmt = fl.stmt
+        if stmt is not None:
+            kind = stmt[0]
+            if kind == "goto":
+                stmt = ("goto", compile_tree(stmt[1], v, ctx))
+            elif kind == "if":
+                then = stmt[2]
+                if then[0] == "goto":
+                    then = ("goto", compile_tree(then[1], v, ctx))
+                else:
+                    then = ("assign", tuple((_target(a[0], v, ctx), compile_tree(a[1], v, ctx), a[2], a[3])
+                                            for a in then[1]))
+                stmt = ("if", compile_tree(stmt[1], v, ctx), then)
+            elif kind == "while":
+                stmt = ("while", compile_tree(stmt[1], v, ctx), stmt[2])
+        gcodes = {w[2][0] for w in fl.words if w[0] == "G" and w[1] == LITERAL}
+        out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes)
+        if len(self.cache) < 200_000:
+            self.cache[key] = out
+        return out
+
+    # -- the run -------------------------------------------------------------------------
+    def run(self) -> Iterator:
+        pos, lineno = 0, self.first_line
+        main_src = self.main.src
+        fast = self.fast_runs
+        lane = self.lane
+        declined = -1
+        while True:
+            frame = self.frames[-1]
+            src = frame.source.src
+            if fast and src is main_src and pos in fast and pos != declined:
+                req = FastRunRequest(pos, lineno, self.index)
+                yield req
+                if req.resume is not None:
+                    pos, lineno, self.index = req.resume
+                    self.started = self.ran = True
+                    declined = -1
+                    continue
+                declined = pos
+            line, nxt = src.line_at(pos)
+            if line is None:
+                self.end_of_text(lineno)
+                return
+            if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
+                parsed = scan_plain(line)
+                if parsed is not None and self.plain_ok(parsed[2], parsed[3], line):
+                    delete, number, letters, values = parsed
+                    pos, lineno0, lineno = nxt, lineno, lineno + 1
+                    if delete and self.block_delete:
+                        continue
+                    if letters:
+                        self.started = self.ran = True
+                        span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
+                        taken = lane(letters, values, span, self.index) if lane is not None else 0
+                        if not taken:
+                            yield plain_block(letters, values, span, self.index, number, None)
+                        self.index += 1
+                        if taken == 2:
+                            yield LANE_FULL
+                    continue
+            compiled = self.compiled(frame.source, pos, line, lineno, nxt)
+            target = yield from self.execute(compiled, pos, lineno)
+            if target is None:
+                return
+            pos, lineno = target
+
+    def plain_ok(self, letters: str, values: tuple, line: str) -> bool:
+        """Whether a plain line's values are its words' values and the line does nothing the general path
+        must see: no length literal without a decimal point or with more decimals than the increment, no
+        program end, call or custom code."""
+        if _INT_LENGTH.search(line) or (self._long_inch if self._inch() else self._long_mm).search(line):
+            return False
+        if "M" in letters:
+            i = letters.find("M")
+            while i >= 0:
+                v = values[i]
+                if v._denominator != 1 or v._numerator in _M_LANGUAGE or v._numerator in self.custom_m:
+                    return False
+                i = letters.find("M", i + 1)
+        if self.custom_g and "G" in letters:
+            i = letters.find("G")
+            while i >= 0:
+                v = values[i]
+                if v._denominator == 1 and v._numerator in self.custom_g and not self.in_custom():
+                    return False
+                i = letters.find("G", i + 1)
+        if self.custom_t is not None and "T" in letters and not self.in_custom():
+            return False
+        return True
+
+    def in_custom(self) -> bool:
+        return any(f.custom for f in self.frames)
+
+    def end_of_text(self, lineno: int) -> None:
+        """The end of the current source: the end of the program, or an error in a subprogram or loop."""
+        frame = self.frames[-1]
+        if frame.loops:
+            loop = frame.loops[-1]
+            raise GcodeError(Diagnostic("GC314", f"end of the program inside the DO{loop.m} loop; END{loop.m} is "
+                                        "missing", SourceSpan(frame.source.file, loop.head[1], 1)))
+        if len(self.frames) > 1:
+            raise GcodeError(Diagnostic("GC314", f"end of the text inside subprogram O{frame.program}: M99 is "
+                                        "missing", SourceSpan(frame.source.file, lineno, 1)))
+
+    # -- one general line -------------------------------------------------------------------
+    def execute(self, compiled, pos: int, lineno: int):
+        fl, words, assigns, stmt, line, nxt, gcodes = compiled
+        frame = self.frames[-1]
+        here = (nxt, lineno + 1)
+        if fl.delete == 1 and self.block_delete:
+            return here
+        if fl.percent:
+            if self.started:
+                return None
+            self.started = True
+            return here
+        if fl.program is not None:
+            if not self.ran:
+                self.started = True
+                return here
+            if frame.kind == "main":
+                return None  # the main program's text ends where the next program begins
+            raise self.error("GC314", f"subprogram O{frame.program} runs into program O{fl.program} without M99",
+                             lineno, line)
+        if fl.unmodelled is not None:
+            reason, col, end = fl.unmodelled
+            raise self.unsupported(reason.split()[3], reason, lineno, line, col, end)
+        if words and assigns:
+            raise self.unsupported("macro", "an NC statement and a macro assignment in one block: Fanuc controls "
+                                   "alarm (PS0114), Haas executes both; their order is not modelled",
+                                   lineno, line, assigns[0][2], assigns[0][3])
+        self.started = self.ran = True
+        for target, value, col, end in assigns:
+            if self.assign(target, value, lineno, line, col, end, fl):
+                return None  # #3000 alarm
+        if stmt is not None:
+            return self.statement(stmt, fl, pos, lineno, line, nxt)
+        if not words:
+            return here
+        values = self.word_values(words, gcodes, lineno, line)
+        calls = [v for v in values if v[0] == "G" and v[1] in (65, 66, 67)]
+        if calls or self.has_call_code(values):
+            return (yield from self.calls(values, calls, fl, lineno, line, nxt))
+        return (yield from self.nc(values, fl, lineno, line, nxt))
+
+    def word_values(self, words, gcodes: set, lineno: int, line: str) -> list:
+        """The block's words ``(letter, exact value, column, end column, text)`` as the control reads them."""
+        in_cycle = getattr(self.state, "in_cycle", None)
+        cycle = bool(gcodes & _CYCLE_G) or (not (gcodes & _CANCEL_CYCLE_G) and in_cycle is not None and in_cycle())
+        g51 = 51 in gcodes
+        degrees = 68 in gcodes  # G68 R is an angle
+        dwell = 4 in gcodes  # G04 X/U are seconds (increment 0.001 s)
+        values = []
+        for letter, kind, payload, col, end, text, var in words:
+            if kind == EXPR:
+                value = self.evaluate(payload, lineno, line, col, end)
+                if value is VACANT or (var is not None and self.evaluate(var, lineno, line, col, end) is VACANT):
+                    continue  # a vacant variable drops its word
+                if g51 and letter in "PIJK":
+                    q = value[1] if value[1] is not None else Fraction(value[0])
+                elif dwell and letter in "XU":
+                    q = round_to(value, Fraction(1, 1000))
+                elif degrees and letter == "R":
+                    q = round_to(value, self.settings.increment_mm)
+                else:
+                    q = self.address_value(letter, value, cycle)
+            else:
+                q, point = payload
+                if g51 and letter in "PIJK":
+                    if not point:
+                        q = q * self.settings.scaling_unit
+                elif dwell and letter in "XU":
+                    if not point and self._dpi_increment:
+                        q = q / 1000
+                elif letter in LENGTH_LETTERS and not (letter == "K" and cycle):
+                    q = self.literal("A" if degrees and letter == "R" else letter, q, point, lineno, text)
+            values.append((letter, q, col, end, text))
+        return values
+
+    def literal(self, letter: str, q: Fraction, point: bool, lineno: int, text: str) -> Fraction:
+        """A length literal as the control reads it (decimal point input, least input increment)."""
+        if not point:
+            if q:
+                self.dpi_count += 1
+                if len(self.dpi_words) < 20:
+                    self.dpi_words.append((lineno, text))
+                if self._dpi_increment:
+                    return q * self.increment(letter)
+            return q
+        inc = self.increment(letter)
+        if (q / inc).denominator != 1:
+            self.rounded_count += 1
+            if len(self.rounded) < 20:
+                self.rounded.append((lineno, text))
+            return round_to((float(q), q), inc)
+        return q
+
+    def address_value(self, letter: str, value: tuple, cycle: bool) -> Fraction:
+        """A computed value as the address takes it (rounded as the control rounds it)."""
+        if letter in LENGTH_LETTERS and not (letter == "K" and cycle):
+            return round_to(value, self.increment(letter))
+        if letter in INTEGER_LETTERS or letter == "K":
+            return round_to(value, Fraction(1))
+        if letter == "G":
+            return round_to(value, Fraction(1, 10))
+        q = value[1]
+        return q if q is not None else Fraction(value[0])
+
+    def assign(self, target, value, lineno, line, col, end, fl: FanucLine) -> bool:
+        """``#i = value``; True when it raised a #3000 alarm (the program stops)."""
+        n = self.evaluate(target, lineno, line, col, end)
+        v = self.evaluate(value, lineno, line, col, end)
+        if n in (3000, 3006):
+            message = fl.comments[0][0].strip() if fl.comments else ""
+            number = int(round_to(v, Fraction(1))) if v is not VACANT else 0
+            if n == 3000:
+                self.alarm = (number, message, self.span(lineno, line, col, end))
+                return True
+            self.stops.append((number, message, self.span(lineno, line, col, end)))
+            return False
+        try:
+            self.vars.write(n, v)
+        except EvalError as e:
+            raise self.error(e.code, e.message, lineno, line, col, end) from None
+        except SystemVariableUnknown as e:
+            raise self.unsupported(e.code, e.reason, lineno, line, col, end) from None
+        return False
+
+    # -- control statements ----------------------------------------------------------------
+    def statement(self, stmt, fl: FanucLine, pos: int, lineno: int, line: str, nxt: int):
+        frame = self.frames[-1]
+        col, end = fl.stmt_at
+        kind = stmt[0]
+        here = (nxt, lineno + 1)
+        if kind == "output":
+            return here
+        if kind == "if":
+            if self.evaluate(stmt[1], lineno, line, col, end)[0] == 0.0:
+                return here
+            then = stmt[2]
+            if then[0] == "goto":
+                return self.goto(then[1], pos, lineno, line, col, end)
+            for target, value, c, e in then[1]:
+                if self.assign(target, value, lineno, line, c, e, fl):
+                    return None
+            return here
+        if kind == "goto":
+            return self.goto(stmt[1], pos, lineno, line, col, end)
+        if kind in ("while", "do"):
+            m = stmt[-1]
+            self.check_id(m, lineno, line, col, end)
+            loops = frame.loops
+            if loops and loops[-1].head == (pos, lineno):
+                loop = loops[-1]
+            else:
+                if len(loops) >= MAX_LOOP_NESTING:
+                    raise self.error("GC314", f"DO loops nested more than {MAX_LOOP_NESTING} levels deep (Fanuc "
+                                     "alarm PS0126)", lineno, line, col, end)
+                if any(lp.m == m for lp in loops):
+                    raise self.error("GC314", f"DO{m} inside an open DO{m} loop: nested loops need different "
+                                     "identification numbers (1, 2, 3)", lineno, line, col, end)
+                loop = _Loop(m, (pos, lineno))
+                loops.append(loop)
+            if kind == "do" or self.evaluate(stmt[1], lineno, line, col, end)[0] != 0.0:
+                self.count(loop, lineno, line)
+                return here
+            loops.pop()
+            end_pos, end_line = self.find_end(frame.source, m, nxt, lineno + 1, lineno, line)
+            return frame.source.src.line_at(end_pos)[1], end_line + 1
+        # END m
+        m = stmt[1]
+        self.check_id(m, lineno, line, col, end)
+        loops = frame.loops
+        if not loops or loops[-1].m != m:
+            if any(lp.m == m for lp in loops):
+                raise self.error("GC314", f"END{m} closes DO{m} while DO{loops[-1].m} inside it is still open: "
+                                 "DO ranges must not cross (Fanuc alarm PS0124)", lineno, line, col, end)
+            raise self.error("GC314", f"END{m} without an open DO{m} (a GOTO cannot jump into a loop)",
+                             lineno, line, col, end)
+        return loops[-1].head
+
+    def check_id(self, m: int, lineno, line, col, end) -> None:
+        if m not in (1, 2, 3):
+            raise self.error("GC314", f"loop identification number {m}: DO and END take 1, 2 or 3 (Fanuc alarm "
+                             "PS0126)", lineno, line, col, end)
+
+    def count(self, loop: _Loop, lineno: int, line: str) -> None:
+        loop.count += 1
+        if loop.count > self.max_loops:
+            raise self.unsupported("WHILE", f"the DO{loop.m} loop ran more than {self.max_loops} iterations "
+                                   "(max_loop_iterations); not interpreted further", lineno, line,
+                                   cls=IterationBoundExceeded)
+
+    def find_end(self, source: _Source, m: int, pos: int, lineno: int, lineno0: int, line0: str) -> tuple[int, int]:
+        """``(pos, lineno)`` of the ``END m`` closing the loop opened on line ``lineno0`` (scanning from ``pos``)."""
+        src = source.src
+        while True:
+            line, nxt = src.line_at(pos)
+            if line is None or _O_LINE.match(line):
+                break
+            if _LOOP_WORD.search(line):
+                fl = self.compiled(source, pos, line, lineno, nxt)[0]
+                if fl.stmt is not None:
+                    if fl.stmt[0] == "end" and fl.stmt[1] == m:
+                        return pos, lineno
+                    if fl.stmt[0] in ("while", "do") and fl.stmt[-1] == m:
+                        raise self.error("GC314", f"DO{m} inside the DO{m} loop that begins on line {lineno0}: "
+                                         "nested loops need different identification numbers", lineno, line)
+            pos, lineno = nxt, lineno + 1
+        raise self.error("GC314", f"DO{m} has no matching END{m} (Fanuc alarm PS0124)", lineno0, line0)
+
+    def goto(self, fn, pos: int, lineno: int, line: str, col: int, end: int) -> tuple[int, int]:
+        value = self.evaluate(fn, lineno, line, col, end)
+        n = int(round_to(value, Fraction(1))) if value is not VACANT else -1
+        if not 1 <= n <= 99999999:
+            raise self.error("GC314", f"GOTO {n if n >= 0 else '<vacant>'}: a sequence number is 1 to 99999999 "
+                             "(Fanuc alarm PS0128)", lineno, line, col, end)
+        return self.jump(n, pos, lineno, line, col, end, "GOTO")
+
+    def jump(self, n: int, pos: int, lineno: int, line: str, col: int, end: int, what: str) -> tuple[int, int]:
+        """Go to the block with sequence number ``n`` of the current program (GOTO, M99 P in the main
+        program, M97 P): loops it leaves are closed; jumping back counts against the loop bound."""
+        frame = self.frames[-1]
+        source = frame.source
+        target = self.find_label(source, n, pos)
+        if target is None:
+            raise self.error("GC314", f"{what} {n}: no block N{n} in this program (Fanuc alarm PS0128)",
+                             lineno, line, col, end)
+        tpos, tline = target
+        if tpos <= pos:
+            self.jumps_back += 1
+            if self.jumps_back > self.max_loops:
+                raise self.unsupported("GOTO", f"{what} {n} jumped back more than {self.max_loops} times "
+                                       "(max_loop_iterations); not interpreted further", lineno, line, col, end,
+                                       cls=IterationBoundExceeded)
+        while frame.loops:  # leave the loops whose range does not hold the target
+            loop = frame.loops[-1]
+            if tpos > loop.head[0]:
+                end_pos = self.find_end(source, loop.m, source.src.line_at(loop.head[0])[1], loop.head[1] + 1,
+                                        loop.head[1], "")[0]
+                if tpos <= end_pos:
+                    break
+            frame.loops.pop()
+        return tpos, tline
+
+    def find_label(self, source: _Source, n: int, pos: int) -> tuple[int, int] | None:
+        """Block ``N n`` of the program that holds ``pos``: searched forward from ``pos``, then from the
+        program's start, as the control searches."""
+        source.index()
+        places = source.labels.get(n)
+        if not places:
+            return None
+        a, b = source.extent(pos)
+        inside = [p for p in places if a <= p[0] < b]
+        if not inside:
+            return None
+        after = [p for p in inside if p[0] > pos]
+        return after[0] if after else inside[0]
+
+    # -- NC statements and calls ------------------------------------------------------------
+    def has_call_code(self, values) -> bool:
+        custom = not self.in_custom()
+        for letter, q, *_rest in values:
+            if letter == "M" and q.denominator == 1 and (q.numerator in (97, 98, 99) or q.numerator in self.custom_m):
+                return True
+            if custom and letter == "G" and q.denominator == 1 and q.numerator in self.custom_g:
+                return True
+            if custom and letter == "T" and self.custom_t is not None:
+                return True
+        return False
+
+    def block(self, values, number, lineno: int, line: str):
+        """Yield one block of evaluated words."""
+        self.started = True
+        span = make_span(self.frames[-1].source.file, lineno, 1, len(line) + 1, line)
+        yield plain_block_of(values, span, self.index, number)
+        self.index += 1
+
+    def nc(self, values, fl: FanucLine, lineno: int, line: str, nxt: int):
+        """Yield an NC statement's block; the G66 modal call after a move; M2/M30 end the program."""
+        yield from self.block(values, fl.number, lineno, line)
+        if any(v[0] == "M" and v[1] in (2, 30) for v in values):
+            return None
+        here = (nxt, lineno + 1)
+        if self.modal_call is not None and self.modal_call[3] == len(self.frames) and any(
+                v[0] in "XYZUVWABC" for v in values) and not any(
+                v[0] == "G" and v[1] in (4, 10, 52, 92) for v in values):
+            program, repeats, args, _depth = self.modal_call
+            return self.call_macro(program, repeats, dict(args), here, lineno, line, "G66")
+        return here
+
+    def calls(self, values, calls, fl: FanucLine, lineno: int, line: str, nxt: int):
+        here = (nxt, lineno + 1)
+        if calls:
+            code = int(calls[0][1])
+            if len(calls) > 1:
+                raise self.error("GC201", "G65, G66 and G67 cannot share a block", lineno, line, calls[1][2],
+                                 calls[1][3])
+            if code == 67:
+                self.modal_call = None
+                rest = [v for v in values if v is not calls[0]]
+                if rest:
+                    return (yield from self.nc(rest, fl, lineno, line, nxt))
+                return here
+            first = values.index(calls[0])
+            if first:
+                raise self.error("GC202", f"G{code} must come first in its block (before its P, L and argument "
+                                 "words)", lineno, line, values[0][2], values[0][3])
+            program, repeats, args = self.call_words(values[1:], f"G{code}", lineno, line, calls[0])
+            if code == 66:
+                self.modal_call = (program, repeats, args, len(self.frames))
+                return here
+            return self.call_macro(program, repeats, args, here, lineno, line, "G65")
+        # M98 / M99 / M97 / custom codes: the block's other words run first
+        custom = not self.in_custom()
+        call = None
+        rest = []
+        for v in values:
+            letter, q = v[0], v[1]
+            if call is None and letter == "M" and q.denominator == 1 and q.numerator in (97, 98, 99):
+                call = ("M", q.numerator, v)
+            elif call is None and letter == "M" and q.denominator == 1 and q.numerator in self.custom_m:
+                call = ("M", q.numerator, v) + self.custom_m[q.numerator]
+            elif call is None and custom and letter == "G" and q.denominator == 1 and q.numerator in self.custom_g:
+                call = ("G", q.numerator, v) + self.custom_g[q.numerator]
+            elif call is None and custom and letter == "T" and self.custom_t is not None:
+                call = ("T", q, v) + self.custom_t
+            else:
+                rest.append(v)
+        letter, number, word = call[:3]
+        if len(call) > 3:  # a custom code of the machine file
+            program, how = call[3], call[4]
+            name = "T" if letter == "T" else f"{letter}{number}"
+            if letter == "T":  # the T code's value goes to common variable #149 (0i/30i, parameter 6001#5)
+                self.vars.write(149, (float(number), number))
+            if how == "macro":
+                args = {} if letter == "T" else self.arguments(rest, lineno, line)
+                if letter == "T" and rest:
+                    yield from self.block(rest, fl.number, lineno, line)
+                return self.call_macro(program, 1, args, here, lineno, line, name, custom=True)
+            if rest:
+                yield from self.block(rest, fl.number, lineno, line)
+            return self.call_sub(program, 1, here, lineno, line, name, custom=True)
+        pword = next((v for v in rest if v[0] == "P"), None)
+        lword = next((v for v in rest if v[0] == "L"), None) if number != 99 else None
+        others = [v for v in rest if v is not pword and v is not lword]
+        if others:
+            yield from self.block(others, fl.number, lineno, line)
+            if any(v[0] == "M" and v[1] in (2, 30) for v in others):
+                return None
+        if number == 98:
+            return self.m98(pword, lword, word, lineno, line, here)
+        if number == 97:
+            if pword is None or pword[1].denominator != 1 or pword[1] <= 0:
+                raise self.error("GC317", "M97 needs a P word with the sequence number of the local subprogram "
+                                 "(Haas M97 P100)", lineno, line, word[2], word[3])
+            count = int(lword[1]) if lword is not None and lword[1].denominator == 1 else 1
+            if count <= 0:
+                return here
+            frame = self.frames[-1]
+            target = self.jump(int(pword[1]), nxt, lineno, line, pword[2], pword[3], "M97 P")
+            self.push(_Frame("m97", frame.source, frame.program, here, target, count), lineno, line)
+            return target
+        return self.return_m99(pword, word, lineno, line, nxt)
+
+    def m98(self, pword, lword, word, lineno: int, line: str, here):
+        if pword is None:
+            raise self.error("GC317", "M98 needs a P word naming the subprogram (M98 P1000)", lineno, line,
+                             word[2], word[3])
+        p = pword[1]
+        if p.denominator != 1 or p < 0:
+            raise self.error("GC317", f"M98 {pword[4]}: the program number must be a non-negative integer",
+                             lineno, line, pword[2], pword[3])
+        count = 1
+        program = int(p)
+        if lword is not None:
+            if lword[1].denominator != 1 or lword[1] < 0:
+                raise self.error("GC317", f"M98 {lword[4]}: the repeat count must be a non-negative integer",
+                                 lineno, line, lword[2], lword[3])
+            count = int(lword[1])
+        elif program > 9999:
+            count, program = divmod(program, 10000)  # M98 P30002: the digits before the last four repeat
+        if count == 0:
+            return here
+        return self.call_sub(program, count, here, lineno, line, "M98")
+
+    def call_words(self, words, what: str, lineno: int, line: str, gword):
+        pword = next((v for v in words if v[0] == "P"), None)
+        if pword is None or pword[1].denominator != 1 or pword[1] < 0:
+            raise self.error("GC317", f"{what} needs a P word with the macro's program number ({what} P9010 A1 B2)",
+                             lineno, line, gword[2], gword[3])
+        lword = next((v for v in words if v[0] == "L"), None)
+        repeats = 1
+        if lword is not None:
+            if lword[1].denominator != 1 or lword[1] < 0:
+                raise self.error("GC317", f"{what} {lword[4]}: the repeat count must be a non-negative integer",
+                                 lineno, line, lword[2], lword[3])
+            repeats = int(lword[1])
+        args = self.arguments([v for v in words if v is not pword and v is not lword], lineno, line)
+        return int(pword[1]), repeats, args
+
+    def arguments(self, words, lineno: int, line: str) -> dict[int, tuple]:
+        """Argument specification I (A B C D E F H I J K M Q R S T U V W X Y Z) and II (A B C and up to ten
+        sets of I J K): the n-th I goes to #(4 + 3(n-1)), J to #(5 + 3(n-1)), K to #(6 + 3(n-1)); where both
+        forms name one variable the later word wins (0i/30i, "Argument specification")."""
+        args: dict[int, tuple] = {}
+        seen = {"I": 0, "J": 0, "K": 0}
+        for letter, q, col, end, text in words:
+            if letter in seen:
+                k = seen[letter]
+                seen[letter] += 1
+                if k >= 10:
+                    raise self.error("GC204", f"more than ten {letter} arguments (argument specification II takes "
+                                     "ten sets of I J K)", lineno, line, col, end)
+                n = 4 + 3 * k + "IJK".index(letter)
+            else:
+                n = ARGUMENTS_I.get(letter)
+                if n is None:
+                    raise self.error("GC204", f"{text}: {letter} cannot be a macro argument (G, L, N, O, P are not "
+                                     "arguments)", lineno, line, col, end)
+            args[n] = (float(q), q)
+        return args
+
+    def push(self, frame: _Frame, lineno: int, line: str) -> None:
+        macros = sum(1 for f in self.frames if f.saved is not None) + (frame.saved is not None)
+        if macros > MAX_MACRO_LEVELS:
+            raise self.error("GC316", f"macro calls nested more than {MAX_MACRO_LEVELS} levels deep (Fanuc alarm "
+                             "PS0077)", lineno, line)
+        if len(self.frames) >= MAX_CALL_DEPTH:
+            raise self.error("GC316", f"calls nested more than {MAX_CALL_DEPTH} levels deep (Fanuc alarm PS0077)",
+                             lineno, line)
+        self.frames.append(frame)
+
+    def locate(self, program: int, lineno: int, line: str, what: str) -> tuple[_Source, tuple[int, int]]:
+        """Where program ``O<program>`` begins: in the calling file, the main file, else the library folder."""
+        for source in dict.fromkeys((self.frames[-1].source, self.main)):
+            source.index()
+            body = source.programs.get(program)
+            if body is not None:
+                return source, body
+        source = self.library_sources.get(program)
+        if source is None and self.library is not None:
+            path = _library_file(self.library, program)
+            if path is not None:
+                text = path.read_bytes().decode("utf-8", errors="replace")
+                source = _Source(_StringSource(text), str(path))
+                self.library_sources[program] = source
+        if source is None:
+            where = (f" nor in the library {self.library}" if self.library is not None
+                     else " (pass --library DIR to search a folder of subprogram files)")
+            raise self.error("GC317", f"{what}: no program O{program} in this file{where}", lineno, line)
+        source.index()
+        return source, source.programs.get(program, (0, 1))
+
+    def call_sub(self, program: int, count: int, ret, lineno: int, line: str, what: str, custom: bool = False):
+        source, body = self.locate(program, lineno, line, what)
+        self.push(_Frame("m98", source, program, ret, body, count, custom=custom), lineno, line)
+        return body
+
+    def call_macro(self, program: int, repeats: int, args: dict, ret, lineno: int, line: str, what: str,
+                   custom: bool = False):
+        if repeats == 0:
+            return ret
+        source, body = self.locate(program, lineno, line, what)
+        frame = _Frame("macro", source, program, ret, body, repeats, self.vars.local, args, custom=custom)
+        self.push(frame, lineno, line)
+        self.vars.push_level(args)
+        return body
+
+    def return_m99(self, pword, word, lineno: int, line: str, nxt: int):
+        frame = self.frames[-1]
+        col, end = word[2], word[3]
+        if frame.kind == "main":
+            if pword is None:
+                raise self.unsupported("M99", "M99 in the main program restarts it forever; endless programs are "
+                                       "not supported", lineno, line, col, end)
+            return self.jump(int(pword[1]), nxt, lineno, line, pword[2], pword[3], "M99 P")
+        frame.repeats -= 1
+        if frame.repeats > 0 and pword is None:
+            frame.loops.clear()
+            if frame.saved is not None:  # the next repetition of a macro starts with its arguments only
+                self.vars.local = [VACANT] * len(self.vars.local)
+                for k, v in (frame.args or {}).items():
+                    self.vars.local[k] = v
+            return frame.body
+        self.frames.pop()
+        if frame.saved is not None:
+            self.vars.pop_level(frame.saved)
+        if pword is None:
+            return frame.ret
+        caller = self.frames[-1]
+        target = self.find_label(caller.source, int(pword[1]), frame.ret[0])
+        if target is None:
+            raise self.error("GC314", f"M99 {pword[4]}: no block N{int(pword[1])} in the calling program (Fanuc "
+                             "alarm PS0128)", lineno, line, pword[2], pword[3])
+        if target[0] <= frame.ret[0]:
+            self.jumps_back += 1
+            if self.jumps_back > self.max_loops:
+                raise self.unsupported("M99", f"M99 {pword[4]} jumped back more than {self.max_loops} times "
+                                       "(max_loop_iterations); not interpreted further", lineno, line, col, end,
+                                       cls=IterationBoundExceeded)
+        caller.loops.clear()
+        return target
+
+
+def _negated_variable(tree):
+    """For ``X-#1``: the variable (its vacancy drops the word, as ``X#1``'s does); else None."""
+    if tree[0] == NEG and tree[1][0] == VAR:
+        return tree[1]
+    return None
+
+
+def _target(tree, variables: FanucVariables, ctx: Context):
+    """The variable number an assignment writes (a function of no arguments)."""
+    index = tree[1]
+    fn = compile_tree(index, variables, ctx)
+    return lambda: variable_index(fn())
+
+
+def _library_file(folder: Path, program: int) -> Path | None:
+    """The file of program ``O<program>`` in a library folder: ``O1234``, ``O1234.nc``, ``o1234.nc``,
+    ``1234.nc``, ... (four digits or as many as the number has, with the usual extensions)."""
+    names = []
+    for digits in dict.fromkeys((f"{program:04d}", str(program), f"{program:05d}", f"{program:08d}")):
+        for stem in (f"O{digits}", f"o{digits}", digits):
+            for ext in ("", ".nc", ".NC", ".txt", ".TXT", ".tap", ".TAP", ".min", ".MIN", ".eia", ".EIA", ".ngc"):
+                names.append(stem + ext)
+    for name in names:
+        p = folder / name
+        if p.is_file():
+            return p
+    return None
+
+
+def needs_language_layer(text: str) -> bool:
+    """Whether a Fanuc program needs the whole-program language layer (macro statements, variables,
+    calls, block delete, several programs): otherwise runs of plain lines go to the fast path piece by
+    piece (:mod:`nczones.gcode.fastpath`)."""
+    return bool(_NEEDS.search(text))
+
+
+_NEEDS = re.compile(r"[#\[/]|[Mm][ \t]*0*9[789](?![\d.])|[Gg][ \t]*0*6[5-7](?![\d.])|(?i:goto|while|end[ \t]*\d|"
+                    r"do[ \t]*\d|\bif\b)")
+
+
+def iter_blocks(
+    text: str,
+    file: str = "<program>",
+    *,
+    variables: FanucVariables | None = None,
+    settings: FanucSettings | None = None,
+    block_delete: bool = False,
+    library: str | Path | None = None,
+    state=None,
+    max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+    first_line: int = 1,
+    first_index: int = 0,
+    lane=None,
+    runner_out: list | None = None,
+) -> Iterator:
+    """Execute a Fanuc program's control and yield its blocks in execution order.
+
+    ``state`` is the interpreter (its ``inch`` and ``in_cycle()`` decide how words are read);
+    ``runner_out``, if given, receives the :class:`FanucRunner` (alarms, notes).
+
+    >>> blocks = list(iter_blocks("O1000\\n#1=2.5\\nG0 X#1 Y[#1*2]\\nM30\\n"))
+    >>> [[(w.letter, str(w.value)) for w in b.words] for b in blocks]
+    [[('G', '0'), ('X', '5/2'), ('Y', '5')], [('M', '30')]]
+    """
+    variables = variables if variables is not None else FanucVariables(
+        dict(settings.variables) if settings is not None else None)
+    runner = FanucRunner(_StringSource(text), file, variables, settings=settings, block_delete=block_delete,
+                         library=library, state=state, max_loop_iterations=max_loop_iterations,
+                         first_line=first_line, first_index=first_index, lane=lane)
+    if runner_out is not None:
+        runner_out.append(runner)
+    return runner.run()
+

@@ -1,0 +1,235 @@
+"""Fanuc system variables (``#1000`` and up): what a program reads and writes of the control's state.
+
+The variable map is data (:data:`READ_ONLY`, the offset tables below), read by
+:func:`read` and :func:`write` on a :class:`~nczones.gcode.fanuc.interpreter.FanucInterpreter`.
+Numbers follow the Fanuc 0i/30i-M operator's manuals ("System variables"),
+axes numbered in the machine file's order (``#5001`` is the first axis):
+
+==================  =====================================================  =======
+variables           meaning                                                access
+==================  =====================================================  =======
+#2001-#2200         tool length wear H1-H200 (memory C; = #10001-)         r/w
+#2201-#2400         tool length geometry H1-H200 (= #11001-)               r/w
+#10001-#10999       tool length wear                                       r/w
+#11001-#11999       tool length geometry (``[tool_lengths]``)              r/w
+#12001-#12999       tool radius wear                                       r/w
+#13001-#13999       tool radius geometry (``[tool_diameters]`` / 2)        r/w
+#3000               alarm (the language layer stops the program)           w
+#3001, #3002        millisecond and hour clocks: 0 at the start            r/w
+#3003-#3005         single block / feed hold / settings control            w (no effect)
+#3901, #3902        parts count, parts required                            w (no effect)
+#4001-#4022         modal G codes of groups 1-22 (preceding block)         r
+#4201-#4222         the same, block being executed                         r
+#4107-#4130 (D F   the last D F H M N T words, #4130 the G54.1 P number;   r
+H M N T P)          #4307-#4330 the same                                   r
+#5001-#5020         block end point, workpiece coordinates (no offsets)    r
+#5021-#5040         current position, machine coordinates                  r
+#5041-#5060         current position, workpiece coordinates (with tool     r
+                    length offset)
+#5081-#5100         active tool length offset per axis                     r
+#5201-#5220         external workpiece zero offset (EXT)                   r/w
+#5221-#5340         G54 ... G59 (20 variables each)                        r/w
+#7001-#7960         G54.1 P1 ... P48 (20 variables each)                  r/w
+==================  =====================================================  =======
+
+Values are in program units (mm, or inches under G20; degrees for rotary axes).
+Writing an offset changes the motion that follows (the active tool length only
+at the next G43/G44, as on the control).  Anything else, and reading the
+control's state while parameter ranges are proved (the value would depend on a
+range), is ``unknown`` with the variable as its code.  (Haas numbers its tool
+length geometry ``#2001-`` and wear ``#2201-``, the other way round: see
+``specs/fanuc.md``.)
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from ...machine import WORK_OFFSETS
+from ..interpreter import INCH
+from .expr import VACANT, SystemVariableUnknown
+
+__all__ = ["read", "write"]
+
+_ZERO = Fraction(0)
+_STRIDE = 20
+
+
+def _value(q: Fraction) -> tuple:
+    return (q.numerator / q.denominator, q)
+
+
+def _exact(value: tuple) -> Fraction:
+    q = value[1]
+    return q if q is not None else Fraction(value[0])
+
+
+def _unknown(n: int, why: str):
+    return SystemVariableUnknown(f"#{n}", why)
+
+
+def _ranged(it, n: int) -> None:
+    if it.track:
+        raise _unknown(n, f"reading #{n} while parameter ranges are proved: the value depends on the ranges, "
+                       "and variables do not carry that dependency")
+
+
+def _units(it, q: Fraction, i: int | None) -> Fraction:
+    """A length in mm as the program reads it (inches under G20; rotary axes in degrees)."""
+    if it.inch and (i is None or not it.rotary[i]):
+        return q / INCH
+    return q
+
+
+def _mm(it, q: Fraction, i: int | None) -> Fraction:
+    if it.inch and (i is None or not it.rotary[i]):
+        return q * INCH
+    return q
+
+
+def _offset_table(n: int):
+    """``(name, axis index)`` of a work offset variable, or None."""
+    if 5201 <= n <= 5340:
+        k, i = divmod(n - 5201, _STRIDE)
+        return (("EXT",) + WORK_OFFSETS[:6])[k], i
+    if 7001 <= n <= 7960:
+        k, i = divmod(n - 7001, _STRIDE)
+        return f"G54.1P{k + 1}", i
+    return None
+
+
+def _tool_table(it, n: int):
+    """``(table, register, radius)`` of a tool offset variable (memory C), or None."""
+    if 2001 <= n <= 2200:
+        return it.h_wear, n - 2000, False
+    if 2201 <= n <= 2400:
+        return it.h_geometry, n - 2200, False
+    if 10001 <= n <= 13999:
+        kind, reg = divmod(n - 10000, 1000)
+        table = (it.h_wear, it.h_geometry, it.d_wear, it.d_geometry)[kind]
+        return table, reg, kind >= 2
+    return None
+
+
+def _modal(it, group: int) -> Fraction | None:
+    """The G code (number) of a modal group as #4001.. read it."""
+    if group == 1:
+        return Fraction(it.motion, 10) if it.motion is not None else None
+    if group == 2:
+        return Fraction(int(it.plane))
+    if group == 3:
+        return Fraction(90 if it.absolute else 91)
+    if group == 5:
+        return Fraction(it.feed_mode)
+    if group == 6:
+        return Fraction(20 if it.inch else 21)
+    if group == 7:
+        return Fraction(40)
+    if group == 8:
+        return Fraction(49) if it.tool_register is None else Fraction(43 if it.tlo_sign > 0 else 44)
+    if group == 9:
+        return Fraction(it.cycle, 10) if it.cycle is not None else Fraction(80)
+    if group == 10:
+        return Fraction(99 if it.retract_r else 98)
+    if group == 14:
+        return Fraction(54) if it.wcs.startswith("G54.1") else Fraction(it.wcs[1:])
+    if group in (11, 12, 16, 17, 22):
+        on = {11: (510, 500), 12: (660, 670), 16: (680, 690), 17: (160, 150), 22: (511, 501)}[group]
+        active = it.modal_flags.get(group, False) if hasattr(it, "modal_flags") else False
+        return Fraction(on[0] if active else on[1], 10)
+    if group == 13:
+        return Fraction(97)
+    if group == 15:
+        return Fraction(64)
+    return None
+
+
+def read(it, n: int) -> tuple:
+    """The value of system variable ``#n`` (a double and its exact shadow)."""
+    axes = it.naxes
+    if 5001 <= n <= 5100:
+        block, i = divmod(n - 5001, _STRIDE)
+        if i >= axes:
+            return VACANT
+        if block == 3:
+            raise _unknown(n, f"#{n} is the skip signal position (G31), which depends on the part")
+        _ranged(it, n)
+        if block == 0:  # block end point in workpiece coordinates, without tool length
+            q = it.pos[i] - it.off[i]
+        elif block == 1:
+            q = it.pos[i]
+        elif block == 2:
+            tl = it.tlo if i == it.tool_axis else _ZERO
+            q = it.pos[i] - it.off[i] + tl
+        else:  # block == 4: tool length offset
+            q = it.tlo if i == it.tool_axis else _ZERO
+        return _value(_units(it, q, i))
+    where = _offset_table(n)
+    if where is not None:
+        name, i = where
+        if i >= axes:
+            return VACANT
+        _ranged(it, n)
+        return _value(_units(it, it.g5x[name][i], i))
+    tool = _tool_table(it, n)
+    if tool is not None:
+        table, reg, radius = tool
+        if radius:
+            return _value(_units(it, table.get(reg, _ZERO), None))
+        _ranged(it, n)
+        return _value(_units(it, table.get(reg, _ZERO), None))
+    if n in (3001, 3002):
+        return it.clock[n]
+    if n == 3000:
+        return VACANT
+    if 4001 <= n <= 4030 or 4201 <= n <= 4230:
+        q = _modal(it, (n - 4000) % 200)
+        if q is None:
+            raise _unknown(n, f"#{n}: the modal state of G code group {(n - 4000) % 200} is not modelled")
+        return _value(q)
+    if 4101 <= n <= 4130 or 4301 <= n <= 4330:
+        letter = {7: "D", 9: "F", 11: "H", 13: "M", 14: "N", 20: "T", 30: "P"}.get((n - 4100) % 200)
+        if letter is None:
+            raise _unknown(n, f"#{n} is not modelled")
+        if letter == "F":
+            return _value(it.feed)
+        if letter == "H":
+            return _value(Fraction(it.tlo_register)) if it.tlo_register is not None else VACANT
+        if letter == "T":
+            return _value(Fraction(it.tool_selected))
+        if letter == "P":
+            return _value(Fraction(int(it.wcs[6:]))) if it.wcs.startswith("G54.1P") else VACANT
+        q = it.last.get(letter)
+        return VACANT if q is None else _value(q)
+    raise _unknown(n, f"system variable #{n} is not one nczones models (specs/fanuc.md lists those it does)")
+
+
+def write(it, n: int, value: tuple) -> None:
+    """Set system variable ``#n``: offsets change the motion that follows."""
+    where = _offset_table(n)
+    if where is not None:
+        name, i = where
+        if i >= it.naxes:
+            raise _unknown(n, f"#{n} names axis {i + 1}; this machine has {it.naxes} axes")
+        if value is VACANT:
+            raise _unknown(n, f"#{n} = <vacant>: what a control stores for a vacant offset is not modelled")
+        it.g5x[name][i] = _mm(it, _exact(value), i)
+        it.dep_g5x[name][i] = {}
+        it._recompute_offsets()
+        return
+    tool = _tool_table(it, n)
+    if tool is not None:
+        table, reg, radius = tool
+        table[reg] = _mm(it, _exact(value) if value is not VACANT else _ZERO, None)
+        return
+    if n in (3001, 3002):
+        it.clock[n] = value
+        return
+    if n in (3003, 3004, 3005, 3901, 3902) or 1100 <= n <= 1135:
+        return  # single block, feed hold, settings, parts counts, output signals: no effect on motion
+    if 4001 <= n <= 4330 or 5001 <= n <= 5100:
+        from ..expr import EvalError
+
+        raise EvalError("GC205", f"#{n} is read-only (Fanuc alarm PS0116)")
+    raise _unknown(n, f"writing system variable #{n} is not modelled (specs/fanuc.md lists the variables "
+                   "nczones models)")
