@@ -18,7 +18,7 @@ from collections.abc import Callable, Sequence
 from fractions import Fraction
 
 from . import __version__
-from .errors import InputError, InvalidArgument, NczonesError
+from .errors import Diagnostic, InputError, InvalidArgument, NczonesError
 from .exact import format_decimal
 from .machine import Machine, load_machine
 from .zones import PolygonZone, SteppedZone
@@ -136,6 +136,35 @@ def register_check_machine(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("check-machine", help="validate a machine file and summarise it")
     p.add_argument("machine_file", metavar="M.toml", help="the machine file to check (specs/machine-file.md)")
     p.set_defaults(handler=_run_check_machine)
+
+
+def add_dialect_arguments(p: argparse.ArgumentParser) -> None:
+    """``--dialect`` and ``--library``, for the commands that read a program."""
+    p.add_argument("--dialect", choices=("linuxcnc", "fanuc"), default=None,
+                   help="how the program text is read (default: the machine file's [machine] dialect, else "
+                        "linuxcnc); see specs/fanuc.md")
+    p.add_argument("--library", metavar="DIR", default=None,
+                   help="a folder of subprogram files (O1234, O1234.nc, ...) that Fanuc M98/G65 calls search "
+                        "when the program is not in the file")
+
+
+def with_dialect(machine: Machine, dialect: str | None) -> Machine:
+    """The machine with ``--dialect`` applied (its ``[machine] dialect`` otherwise)."""
+    if dialect is None or dialect == machine.dialect:
+        return machine
+    from dataclasses import replace
+
+    return replace(machine, dialect=dialect)
+
+
+def library_folder(path: str | None) -> str | None:
+    """``--library DIR``: an existing folder, or an input error (exit 2)."""
+    import os
+
+    if path is not None and not os.path.isdir(path):
+        raise InputError(Diagnostic("VF105", f"--library {path!r}: not a folder of subprogram files",
+                                    file="<command line>"))
+    return path
 
 
 #: Subcommand registrars; other stages append theirs.

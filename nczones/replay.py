@@ -420,6 +420,10 @@ def _segments(source: Any, machine: Machine, settings: Mapping[str, Any]) -> lis
         options["max_loop_iterations"] = settings["max_iterations"]
     if isinstance(settings.get("block_delete"), bool):
         options["block_delete"] = settings["block_delete"]
+    if settings.get("dialect") in ("linuxcnc", "fanuc"):
+        options["dialect"] = settings["dialect"]
+    if isinstance(settings.get("library"), str):
+        options["library"] = settings["library"]
     return list(interpret(source, machine, **options).segments())
 
 

@@ -121,7 +121,8 @@ def _run(args: argparse.Namespace) -> int:
     from ..prover.command import program_source
     from . import Settings, simulate
 
-    machine = load_machine(args.machine)
+    machine = cli.with_dialect(load_machine(args.machine), args.dialect)
+    library = cli.library_folder(args.library)
     source = program_source(args.program)
     settings = Settings(
         pre_time_constant_ms=_decimal_option("--accdec-before-ms", args.accdec_before_ms),
@@ -139,7 +140,7 @@ def _run(args: argparse.Namespace) -> int:
         from ..prover.command import _arc_tolerance
 
         run = interpret(source, machine, arc_tolerance=_arc_tolerance(args.arc_tolerance),
-                        max_loop_iterations=_max_iterations(args.max_iterations))
+                        max_loop_iterations=_max_iterations(args.max_iterations), library=library)
         from ..report.progress import progress_for
 
         bar = progress_for(sys.stderr, "simulate")
@@ -153,17 +154,19 @@ def _run(args: argparse.Namespace) -> int:
             notes.append(f"{u.span}: {u.code} is not supported ({u.reason}); the simulation stopped there")
         if run.assumed_modal:
             notes.extend(run.assumed_modal_text())
+        notes.extend(run.notes())
     if args.format == "json":
         data = result.to_json()
         data["program"] = source.name
         data["program_sha256"] = source.sha256
+        data["dialect"] = machine.dialect
         data["notes"] = list(data["notes"]) + notes
         if not args.events:
             data.pop("events")
         sys.stdout.write(json.dumps(data, indent=2) + "\n")
     else:
         text = render_text(result, source.name)
-        sys.stdout.write(text + "".join(f"  note: {n}\n" for n in notes))
+        sys.stdout.write(text + f"  dialect: {machine.dialect}\n" + "".join(f"  note: {n}\n" for n in notes))
     if result.alarms:
         return cli.EXIT_FAIL
     if any("not supported" in n for n in notes):
@@ -197,6 +200,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--break-at", metavar="LINE[:FRACTION]", default=None,
                    help="break the tool in the first cutting motion of LINE after FRACTION of it (default 0) "
                         "and run the automatic recovery of the machine's [tool_change]")
+    cli.add_dialect_arguments(p)
     p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
                    help="iterations a loop (while, do, repeat) may run per entry before the simulation stops "
                         f"there (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")

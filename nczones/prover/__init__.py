@@ -35,6 +35,7 @@ the re-checked counterexamples (:class:`Violation`), the reasons for
 
 from __future__ import annotations
 
+import os
 import re
 import time
 from collections.abc import Callable
@@ -130,6 +131,8 @@ def verify(
     progress: Callable[[int, int | None], object] | None = None,
     recovery: str | None = None,
     max_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+    dialect: str | None = None,
+    library: str | os.PathLike | None = None,
 ) -> Result:
     """Verify the G-code program *file* ``program`` on a machine (DESIGN §5).
 
@@ -155,6 +158,10 @@ def verify(
     cutting motion (:mod:`nczones.prover.recovery`); its violations have
     ``kind == "recovery"``.
 
+    ``dialect`` overrides the machine's ``[machine] dialect`` (``"linuxcnc"``
+    or ``"fanuc"``, ``specs/fanuc.md``); ``library`` is a folder of Fanuc
+    subprogram files that ``M98``/``G65`` calls search.
+
     The result names what was verified (:attr:`Result.program_sha256`, the
     machine file and its SHA-256) and every setting that changes the verdict
     (:attr:`Result.settings`), so ``nczones replay`` can re-check it.
@@ -171,7 +178,7 @@ def verify(
     source = as_source(program, file=file, text_function="verify_text").require_code()
     return _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
                    arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
-                   max_iterations=max_iterations)
+                   max_iterations=max_iterations, dialect=dialect, library=library)
 
 
 #: :func:`verify` under the name that says what it takes.
@@ -198,6 +205,8 @@ def _verify(
     progress: Callable[[int, int | None], object] | None = None,
     recovery: str | None = None,
     max_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+    dialect: str | None = None,
+    library: str | os.PathLike | None = None,
 ) -> Result:
     from ..exact import exact, format_exact
     from ..gcode import DEFAULT_ARC_TOLERANCE, interpret
@@ -212,6 +221,10 @@ def _verify(
     extra: dict[str, Any] = {"max_loop_iterations": max_iterations}
     if arc_tolerance is not None:
         extra["arc_tolerance"] = arc_tolerance
+    if dialect is not None:
+        extra["dialect"] = dialect
+    if library is not None:
+        extra["library"] = library
     run = interpret(source, machine, track_dependencies=bool(ranges), **extra)
     tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
     # Every option that can change the verdict, as JSON values: reports carry them and
@@ -225,7 +238,8 @@ def _verify(
         "max_iterations": max_iterations,
         "max_violations": max_violations,
         "block_delete": run.block_delete,
-        "dialect": getattr(machine, "dialect", "linuxcnc"),
+        "dialect": run.dialect,
+        "library": None if library is None else str(library),
     }
 
     def with_text(seq):
@@ -259,9 +273,13 @@ def _verify(
 
     violations = tuple(replace(v, span=fix(v.span)) for v in result.violations)
     reasons = list(replace(r, span=fix(r.span)) for r in result.reasons)
+    from ..gcode.dialects import unknown_hint
+
     for u in run.unsupported:
-        reasons.append(Reason(f"{u.code}: {u.reason}", fix(u.span), None, u.code))
-    notes = tuple(run.assumed_modal_text())
+        span = fix(u.span)
+        hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
+        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, u.code))
+    notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
     if run.counts.get("spline"):
         notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "
                   "programmed curve; a controller that approximates them (LinuxCNC turns some G5.2/G6.2 "

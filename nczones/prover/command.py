@@ -70,6 +70,7 @@ def verify_options(args: argparse.Namespace, machine) -> dict[str, Any]:
         "recovery": args.recovery,
         "arc_tolerance": _arc_tolerance(args.arc_tolerance),
         "max_iterations": args.max_iterations,
+        "library": cli.library_folder(args.library),
     }
 
 
@@ -165,7 +166,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.sarif_root is not None and not os.path.isdir(args.sarif_root):
         raise _command_line_error("VF108", f"--sarif-root {args.sarif_root}: not a directory")
     check_output_path(args.output)
-    machine = load_machine(args.machine)
+    machine = cli.with_dialect(load_machine(args.machine), args.dialect)
     options = verify_options(args, machine)
     results: list = []
     errors: list[tuple[int, str, InputError]] = []
@@ -222,6 +223,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
                    help="iterations a loop (while, do, repeat) may run per entry before the verdict becomes "
                         f"unknown (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")
+    cli.add_dialect_arguments(p)
     p.add_argument("--max-violations", type=int, default=20, metavar="N",
                    help="stop after N violating blocks per program (default 20); the report says when the "
                         "list was cut")

@@ -161,3 +161,8 @@ class Result:
     @property
     def safe(self) -> bool:
         return self.verdict is Verdict.SAFE
+
+    @property
+    def dialect(self) -> str:
+        """How the program text was read (``"linuxcnc"`` or ``"fanuc"``; every report names it)."""
+        return str(dict(self.settings).get("dialect") or "linuxcnc")

@@ -41,7 +41,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
     from . import _agg
 
-    machine = load_machine(args.machine)
+    machine = cli.with_dialect(load_machine(args.machine), args.dialect)
     plane = _plane(args.plane, machine)
     if len(machine.axis_names) < 2:
         raise PlotError(Diagnostic("PL102", f"{args.machine}: a plot needs a machine with two axes or more",
@@ -93,6 +93,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--no-verify", dest="verify", action="store_false",
                    help="draw only; do not verify (no violations marked)")
     p.add_argument("--dpi", type=int, default=120, help="resolution of a PNG in dots per inch (default 120)")
+    p.add_argument("--dialect", choices=("linuxcnc", "fanuc"), default=None,
+                   help="how the program text is read (default: the machine file's [machine] dialect)")
     p.set_defaults(handler=_run)
 
 

@@ -191,6 +191,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
                                           f"{format_decimal(p.written[1])}" for p in result.params) or "none")),
         ("Violating blocks", f'<span id="violation-count">{len(result.violations)}</span>'
                              + (" (list truncated)" if result.truncated else "")),
+        ("Dialect", _e(result.dialect)),
         ("Solver", _e(result.solver + ("" if deterministic else f" {result.solver_version}"))
                    + f"; engine {_e(result.engine)}"),
         ("nczones", _e(__version__)),

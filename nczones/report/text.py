@@ -179,6 +179,7 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
     if result.params:
         parts.append("parameters " + ", ".join(f"{p.name}={_d(p.written[0])}..{_d(p.written[1])}"
                                                for p in result.params))
+    parts.append(f"dialect {result.dialect}")
     parts.append(f"solver {result.solver}" + ("" if deterministic or not result.solver_version
                                               else f" {result.solver_version}"))
     if not deterministic:
