@@ -1,12 +1,15 @@
 """Where the external corpus lives: ``shared/corpus`` beside the repository.
 
-That is where the workspace and CI put it; tests that need it skip when it
-is missing.
+That is where the workspace and CI put it (``NCZONES_CORPUS`` names another
+place, for a checkout elsewhere); tests that need it skip when it is missing.
 """
 
+import os
 from pathlib import Path
 
-CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus"
+CORPUS = Path(os.environ.get("NCZONES_CORPUS") or Path(__file__).resolve().parents[2] / "shared" / "corpus")
+#: Real Fanuc and Haas programs (``fanuc/README.md``, ``fanuc/MANIFEST.tsv``).
+FANUC = CORPUS / "fanuc"
 
 MANIFEST = CORPUS / "MANIFEST.tsv"
 

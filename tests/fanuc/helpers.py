@@ -1,0 +1,81 @@
+"""A Fanuc mill for the tests and small runners around the dialect's language layer."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from nczones.gcode import interpret
+from nczones.gcode.fanuc.expr import FanucVariables
+from nczones.gcode.fanuc.program import iter_blocks
+from nczones.machine import parse_machine
+
+MILL = """
+[machine]
+name = "fanuc test mill"
+dialect = "fanuc"
+axes = ["X", "Y", "Z"]
+[machine.rapid]
+X = "10000"
+Y = "10000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[machine.reference_2]
+X = "-100"
+Y = "-50"
+Z = "-10"
+[offsets]
+G54 = { X = "100", Y = "50", Z = "-200" }
+G55 = { X = "300", Y = "50", Z = "-200" }
+EXT = { Z = "1" }
+"G54.1P3" = { X = "500", Y = "20", Z = "-210" }
+[tool_lengths]
+H1 = "100"
+H2 = "150.5"
+[fanuc]
+g73_retract = "0.5"
+g83_clearance = "1"
+boring_shift = "+X"
+{fanuc_extra}
+[variables]
+"#500" = "2.5"
+{tables}
+"""
+
+
+def mill(fanuc_extra: str = "", tables: str = ""):
+    """The test mill: G54 = (100, 50, -200), EXT Z = 1, H1 = 100, H2 = 150.5, G30 P2 at (-100, -50, -10)."""
+    return parse_machine(MILL.replace("{fanuc_extra}", fanuc_extra).replace("{tables}", tables), "mill.toml")
+
+
+def blocks(text: str, **kw):
+    """``(blocks as [(letter, value), ...] lists, variables, runner)`` of the language layer alone."""
+    variables = kw.pop("variables", None) or FanucVariables(kw.pop("initial", None))
+    out: list = []
+    got = [[(w.letter, w.value) for w in b.words] for b in iter_blocks(text, "t.nc", variables=variables,
+                                                                       runner_out=out, **kw)]
+    return got, variables, out[0]
+
+
+def var(variables: FanucVariables, n: int):
+    """The exact value of a variable (None if vacant)."""
+    from nczones.gcode.fanuc.expr import VACANT
+
+    v = variables.read(n)
+    if v is VACANT:
+        return None
+    return v[1] if v[1] is not None else Fraction(v[0])
+
+
+def ends(text: str, machine=None, **kw) -> list[tuple]:
+    """The end points of every segment (machine coordinates) of a program on the test mill."""
+    run = interpret(text, machine or mill(), file="t.nc", **kw)
+    out = [tuple(s.end) for s in run.segments()]
+    assert run.status == "complete", run.unsupported
+    return out
+
+
+def F(x) -> Fraction:
+    return Fraction(str(x))
