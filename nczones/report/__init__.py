@@ -17,7 +17,7 @@ matplotlib.
 >>> m = load_machine("specs/machines/grinder.toml")
 >>> r = verify("specs/examples/programs/notch_over.ngc", m)
 >>> render_report(r, "text", deterministic=True).splitlines()[-1]
-'specs/examples/programs/notch_over.ngc: safe: every motion stays inside the allowed set; 3 segments checked; solver z3'
+'specs/examples/programs/notch_over.ngc: safe: every motion stays inside the allowed set; 3 segments checked; dialect linuxcnc; solver z3'
 """
 
 from __future__ import annotations

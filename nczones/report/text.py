@@ -99,7 +99,7 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
         ^~~~~~
         point X380 Y130 is outside the allowed set (segment parameter 0.766667…)
         first exit at X200 Y130 (segment parameter 0.166667…); engine exact
-    dip.ngc: unsafe: 1 violating block, the first at line 4; 3 segments checked; solver z3
+    dip.ngc: unsafe: 1 violating block, the first at line 4; 3 segments checked; dialect linuxcnc; solver z3
     """
     def paint(style: str, text: str) -> str:
         return f"{_STYLES[style]}{text}{_RESET}" if color else text
