@@ -17,9 +17,13 @@ G0 and G80 are in the same modal group; valid in the fanuc dialect: set dialect 
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 from ..errors import GcodeError
 from ..exact import format_decimal
+
+if TYPE_CHECKING:
+    from . import Interpretation
 
 __all__ = ["with_hints", "accepts", "fanuc_notes", "unknown_hint", "HINTED_CODES"]
 
@@ -46,15 +50,17 @@ def accepts(line: str, dialect: str) -> bool:
     try:
         if dialect == "fanuc":
             from .fanuc.interpreter import GROUPS
-            from .fanuc.parser import LITERAL, parse_line
+            from .fanuc.parser import LITERAL
+            from .fanuc.parser import parse_line as parse_fanuc
 
-            fl = parse_line(line, 1, "<line>")
+            fl = parse_fanuc(line, 1, "<line>")
             codes = [w[2][0] for w in fl.words if w[0] == "G" and w[1] == LITERAL]
             table, unknown = GROUPS, {}
         else:
-            from .parser import NUM, parse_line
+            from .parser import NUM
+            from .parser import parse_line as parse_linuxcnc
 
-            pl = parse_line(line, 1, "<line>")
+            pl = parse_linuxcnc(line, 1, "<line>")
             if pl.unsupported is not None:
                 return False
             codes = [w[1][2] for w in pl.words if w[0] == "G" and w[1][0] == NUM]
@@ -100,7 +106,7 @@ def unknown_hint(code: str, line: str, dialect: str) -> str:
     return ""
 
 
-def fanuc_notes(interp) -> list[str]:
+def fanuc_notes(interp: Interpretation) -> list[str]:
     """Report notes of a Fanuc run: decimal point input, rounded literals, alarms and stops."""
     notes: list[str] = []
     runners = interp.runners

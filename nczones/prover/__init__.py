@@ -239,8 +239,9 @@ def _verify(
         "max_violations": max_violations,
         "block_delete": run.block_delete,
         "dialect": run.dialect,
-        "library": None if library is None else str(library),
     }
+    if library is not None:
+        settings["library"] = str(library)
 
     def with_text(seq):
         from ..motion import MotionChunk

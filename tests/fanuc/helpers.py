@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.gcode.fanuc.expr import FanucVariables
 from nczones.gcode.fanuc.program import iter_blocks
 from nczones.machine import parse_machine
@@ -71,7 +71,7 @@ def var(variables: FanucVariables, n: int):
 
 def ends(text: str, machine=None, **kw) -> list[tuple]:
     """The end points of every segment (machine coordinates) of a program on the test mill."""
-    run = interpret(text, machine or mill(), file="t.nc", **kw)
+    run = interpret_text(text, machine or mill(), file="t.nc", **kw)
     out = [tuple(s.end) for s in run.segments()]
     assert run.status == "complete", run.unsupported
     return out

@@ -13,9 +13,9 @@ from hypothesis import strategies as st
 
 from nczones.cli import main
 from nczones.errors import GcodeError
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
-from nczones.prover import verify
+from nczones.prover import verify_text
 
 from .helpers import mill
 
@@ -24,11 +24,11 @@ SAFETY_LINE = "G00 G17 G40 G49 G80 G90\n"
 
 def test_the_standard_safety_line_and_g69(tmp_path):
     m = mill()
-    run = interpret(SAFETY_LINE + "G69\nG15 G50 G50.1\nX10. Y5.\nM30\n", m)
+    run = interpret_text(SAFETY_LINE + "G69\nG15 G50 G50.1\nX10. Y5.\nM30\n", m)
     assert [tuple(s.end) for s in run.segments()] == [(110, 55, 0)] and run.status == "complete"  # G54 X100 Y50
     linuxcnc = replace(m, dialect="linuxcnc")
     with pytest.raises(GcodeError) as e:
-        list(interpret(SAFETY_LINE, linuxcnc))
+        list(interpret_text(SAFETY_LINE, linuxcnc))
     d = e.value.diagnostics[0]
     assert d.code == "GC201" and d.message.endswith(
         'valid in the fanuc dialect: set dialect = "fanuc" in [machine] (or pass --dialect fanuc)')
@@ -36,19 +36,19 @@ def test_the_standard_safety_line_and_g69(tmp_path):
 
 def test_hint_for_the_other_way_round():
     with pytest.raises(GcodeError) as e:
-        list(interpret("G0 X1.\nG91.1\n", mill()))
+        list(interpret_text("G0 X1.\nG91.1\n", mill()))
     d = e.value.diagnostics[0]
     assert d.code == "GC202" and "valid in the linuxcnc dialect" in d.message
     with pytest.raises(GcodeError) as e:  # a line neither dialect reads gets no hint
-        list(interpret("G0 X1.\nG1 X$\n", mill()))
+        list(interpret_text("G0 X1.\nG1 X$\n", mill()))
     assert "valid in the" not in e.value.diagnostics[0].message
 
 
 def test_linuxcnc_unknown_gets_a_hint_for_fanuc_macro_statements():
     m = replace(mill(), dialect="linuxcnc")
-    r = verify("G0 X1\n#1 = 2\nIF [#1 EQ 2] GOTO 5\nN5 G0 X2\n", m)
+    r = verify_text("G0 X1\n#1 = 2\nIF [#1 EQ 2] GOTO 5\nN5 G0 X2\n", m)
     assert r.verdict.label == "unknown" and "valid in the fanuc dialect" in r.reasons[0].message
-    assert verify("G0 X1\n#1 = 2\nIF [#1 EQ 2] GOTO 5\nN5 G0 X2\n", m, dialect="fanuc").verdict.label == "safe"
+    assert verify_text("G0 X1\n#1 = 2\nIF [#1 EQ 2] GOTO 5\nN5 G0 X2\n", m, dialect="fanuc").verdict.label == "safe"
 
 
 def test_default_dialect_is_linuxcnc_and_the_machine_file_sets_it():
@@ -105,7 +105,7 @@ def test_flipping_decimal_point_input_changes_the_verdict(tmp_path, capsys):
 
 
 def test_no_decimal_point_note_when_both_settings_agree():
-    r = verify("G0 X0 Y100.\n", mill())
+    r = verify_text("G0 X0 Y100.\n", mill())
     assert not any("decimal point" in n for n in r.notes)
 
 
@@ -157,7 +157,7 @@ def _common_mill():
 
 
 def _motion(text, machine):
-    run = interpret(text, machine)
+    run = interpret_text(text, machine)
     segs = [(s.kind.name, tuple(s.start), tuple(s.end), s.centre, s.clockwise, s.turns) for s in run.segments()]
     return segs, run.status
 

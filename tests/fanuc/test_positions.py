@@ -11,7 +11,7 @@ from fractions import Fraction as Q
 
 import pytest
 
-from nczones.gcode import interpret
+from nczones.gcode import interpret_text
 from nczones.motion import SegmentKind
 
 from .helpers import ends, mill
@@ -58,7 +58,7 @@ def test_offset_variables_are_read_and_written():
 def test_reference_returns_move_only_the_named_axes():
     # G91 G28 Z0: intermediate = here, then Z to 0 (reference).  G90 G30 P2 X1.: to X 1 + 100 = 101, then
     # X to the 2nd reference X -100; Y and Z stay.  G53 Z-5.: a rapid to machine Z -5.
-    run = interpret("G90 G54 G0 X5. Y5. Z5.\nG91 G28 Z0\nG90 G30 P2 X1.\nG53 Z-5.\n", mill())
+    run = interpret_text("G90 G54 G0 X5. Y5. Z5.\nG91 G28 Z0\nG90 G30 P2 X1.\nG53 Z-5.\n", mill())
     segs = list(run.segments())
     assert [tuple(s.end) for s in segs] == [(105, 55, -194), (105, 55, -194), (105, 55, 0), (101, 55, 0),
                                             (-100, 55, 0), (-100, 55, -5)]
@@ -100,19 +100,19 @@ def test_fine_boring_shift():
 
 
 def test_dwell_times():
-    run = interpret("G04 P1500\nG04 X2.5\nG04 P0.5\n", mill())
+    run = interpret_text("G04 P1500\nG04 X2.5\nG04 P0.5\n", mill())
     assert [s.dwell_s for s in run.segments()] == [Q("1.5"), Q("2.5"), Q("0.5")]
 
 
 def test_canned_cycle_needs_its_parameters_or_is_unknown():
-    run = interpret("G90 G54 G0 X0 Y0 Z2.\nG82 X1. Z-3. F100.\n", mill())
+    run = interpret_text("G90 G54 G0 X0 Y0 Z2.\nG82 X1. Z-3. F100.\n", mill())
     list(run)
     assert run.status == "unknown" and run.unsupported[0].code == "G82"
     m = mill().__class__  # the machine without g73_retract: G73 is unknown with the parameter named
     from dataclasses import replace
 
     bare = replace(mill(), fanuc=replace(mill().fanuc, g73_retract=None))
-    run = interpret("G90 G54 G0 X0 Y0 Z2.\nG73 X1. Z-3. R2. Q1. F100.\n", bare)
+    run = interpret_text("G90 G54 G0 X0 Y0 Z2.\nG73 X1. Z-3. R2. Q1. F100.\n", bare)
     list(run)
     assert run.unsupported[0].code == "G73" and "5114" in run.unsupported[0].reason
     del m
@@ -120,7 +120,7 @@ def test_canned_cycle_needs_its_parameters_or_is_unknown():
 
 @pytest.mark.parametrize("code", ["G41 D1", "G42 D2", "G31 X1.", "G12.1", "G60 X1."])
 def test_unmodelled_codes_are_unknown_with_a_reason(code):
-    run = interpret(f"G0 X1.\n{code}\nG0 X2.\n", mill())
+    run = interpret_text(f"G0 X1.\n{code}\nG0 X2.\n", mill())
     segs = list(run.segments())
     assert run.status == "unknown" and run.unsupported[0].span.line == 2
     assert len(segs) == 1 and run.unsupported[0].reason
@@ -130,5 +130,5 @@ def test_two_one_shot_codes_in_a_block_is_an_error_of_one_group_the_last_wins():
     from nczones.errors import GcodeError
 
     with pytest.raises(GcodeError):
-        list(interpret("G04 G28 X1.\n", mill()))
+        list(interpret_text("G04 G28 X1.\n", mill()))
     assert ends("G90 G54 G0 G1 X1. F100.\n") == [(101, 0, 0)]

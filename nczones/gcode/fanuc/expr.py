@@ -44,6 +44,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
+from typing import TypeAlias
 
 from ..expr import EvalError, _binary, _check
 from ..lexer import _double
@@ -54,6 +55,8 @@ __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
 VACANT = (0.0, Fraction(0))
+#: A value: the double and its exact shadow (or None).
+Value: TypeAlias = tuple
 _TRUE = (1.0, Fraction(1))
 _FALSE = (0.0, Fraction(0))
 LOCALS = 33
@@ -84,8 +87,8 @@ class FanucVariables:
     __slots__ = ("local", "common", "system_read", "system_write", "depth", "on_write")
 
     def __init__(self, initial: dict[int, Fraction] | None = None):
-        self.local: list = [VACANT] * (LOCALS + 1)
-        self.common: list = [VACANT] * (COMMON_LAST + 1)
+        self.local: list[Value] = [VACANT] * (LOCALS + 1)
+        self.common: list[Value] = [VACANT] * (COMMON_LAST + 1)
         for k, q in (initial or {}).items():
             self.common[k] = (float(q), q)
         self.system_read: Callable[[int], tuple] = _no_system
@@ -168,7 +171,7 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
     (Fraction(6173, 500), Fraction(-3, 1))
     """
-    q = value[1] if value[1] is not None else _double(value[0])
+    q: Fraction = value[1] if value[1] is not None else _double(value[0])
     k = q / step
     n = (abs(k.numerator) * 2 + k.denominator) // (2 * k.denominator)
     return (n if k >= 0 else -n) * step
@@ -322,7 +325,8 @@ def _binop(op: str, a: tuple, b: tuple) -> tuple:
     raise AssertionError(op)  # pragma: no cover
 
 
-def compile_tree(node, variables: FanucVariables, ctx: Context | None = None, in_address: bool = False):
+def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None,
+                 in_address: bool = False) -> Callable[[], Value]:
     """A function of no arguments that evaluates the tree with these variables (read when called).
 
     ``in_address``: the tree is the value of an NC address (``ROUND`` then rounds to the address's
@@ -371,7 +375,7 @@ def compile_tree(node, variables: FanucVariables, ctx: Context | None = None, in
     raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
 
 
-def evaluate_tree(node, variables: FanucVariables, ctx: Context | None = None) -> tuple:
+def evaluate_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None) -> Value:
     """Evaluate a tree once (compiles it; for tests and one-off use)."""
     return compile_tree(node, variables, ctx)()
 

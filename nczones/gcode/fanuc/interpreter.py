@@ -34,6 +34,7 @@ with a hint when the LinuxCNC dialect knows it.
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any, TypeAlias
 
 from ...machine import FANUC_OFFSETS, Machine
 from ...motion import PLANE_AXES, Plane, SegmentKind
@@ -47,8 +48,15 @@ from ..interpreter import (
     _gkey,
     _gname,
     _qadd,
+    _sqrt_diff_exceeds,
     _Stop,
 )
+from .expr import FanucVariables
+from .transforms import Mirror, Polar, Rotation, Scaling, mirror, polar_point, rotate, scale
+
+#: A block's axis words (axis index, word) and its other words by letter.
+AxisWords: TypeAlias = "list[tuple[int, Word]]"
+Words: TypeAlias = "dict[str, Word]"
 
 __all__ = ["FanucInterpreter", "GROUPS", "UNKNOWN_G", "HARMLESS_G", "HARMLESS_M", "CYCLE_CODES"]
 
@@ -145,7 +153,7 @@ class FanucInterpreter(Interpreter):
     Fanuc settings come from ``machine.fanuc``.
 
     >>> from nczones.machine import parse_machine
-    >>> from nczones.gcode import segments
+    >>> from nczones.gcode import segments_text
     >>> m = parse_machine('''
     ... [machine]
     ... dialect = "fanuc"
@@ -161,14 +169,14 @@ class FanucInterpreter(Interpreter):
     ... [tool_lengths]
     ... H1 = "100"
     ... ''')
-    >>> segs = segments("G00 G17 G40 G49 G80 G90\\nX10 Y5\\nG43 H1\\n", m)
+    >>> segs = segments_text("G00 G17 G40 G49 G80 G90\\nX10 Y5\\nG43 H1\\n", m)
     >>> [[str(v) for v in s.end] for s in segs]
     [['10', '5', '0'], ['10', '5', '100']]
     """
 
     dialect = "fanuc"
 
-    def __init__(self, machine: Machine, **kwargs):
+    def __init__(self, machine: Machine, **kwargs: Any):
         super().__init__(machine, **kwargs)
         self.settings = machine.fanuc
         n = self.naxes
@@ -196,9 +204,17 @@ class FanucInterpreter(Interpreter):
         self.after_home: set[int] = set()  # axes returned by G28/G30 while a tool length offset was active
         self.intermediate: list | None = None  # G28/G30's intermediate point (machine), for G29
         self.stops: list = []  # M00/M01 lines, for the report
-        self.vars = None
+        # programmable transforms: each acts on the program point (mm, workpiece system) about its centre
+        self.rotation: Rotation | None = None
+        self.scaling: Scaling | None = None
+        self.mirroring: Mirror | None = None
+        self.polar: Polar | None = None
+        self.prog: list[Fraction] | None = None  # the program point while a transform is active
+        self.prog_deps: list[dict] | None = None
+        self._first_after_transform = False  # the first move after G68/G69, G51/G50, ... must be absolute
+        self.vars: FanucVariables | None = None
         self.clock = {3001: (0.0, _ZERO), 3002: (0.0, _ZERO)}
-        self.last = {}  # the last D, M, N, S words, for #4107 ...
+        self.last: dict[str, Fraction] = {}  # the last D, M, N words, for #4107 ...
         self._harmless_m = HARMLESS_M | machine.fanuc.harmless_m
         self._recompute_offsets()
 
@@ -229,11 +245,17 @@ class FanucInterpreter(Interpreter):
 
     def fast_state_ok(self) -> bool:
         """Nothing the vectorized fast path does not model is active."""
-        return self.cycle is None and self._tlo_shift is None and not self.after_home
+        return self.cycle is None and self._tlo_shift is None and not self.after_home and self.prog is None
+
+    @property
+    def modal_flags(self) -> dict[int, bool]:
+        """Which of the transform groups (11 scaling, 16 rotation, 17 polar, 22 mirror) are on (#4011 ...)."""
+        return {11: self.scaling is not None, 16: self.rotation is not None, 17: self.polar is not None,
+                22: self.mirroring is not None}
 
     # ------------------------------------------------------------------ the plain-move lane
-    def _lean(self, g, m, f, extra: int) -> bool:
-        if self.cycle is not None or self._tlo_shift is not None or self.after_home:
+    def _lean(self, g: int | None, m: int | None, f: Any, extra: int) -> bool:
+        if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None:
             return False
         if m is not None and m not in (3, 4, 5, 7, 8, 9):
             return False
@@ -339,22 +361,28 @@ class FanucInterpreter(Interpreter):
             self.retract_r = groups[10][0] == 990
         if 7 in groups and groups[7][0] == 400:
             self.comp_on = False
-        for g, what in ((16, "coordinate rotation"), (11, "scaling"), (22, "programmable mirror image"),
-                        (17, "polar coordinate command")):
-            if g in groups and groups[g][0] in (680, 510, 511, 160):
-                self._unknown(_gname(groups[g][0]), f"{what} ({_gname(groups[g][0])}) is not modelled yet",
-                              groups[g][1])
+        # ---- programmable transforms (groups 17, 11, 22, 16); their blocks' axis words are centres
+        transform_axes = False
+        if any(g in groups for g in (17, 11, 22, 16)):
+            transform_axes = any(groups.get(g, (0,))[0] in (680, 510, 511, 501) for g in (16, 11, 22))
+            self._transform_codes(groups, words, axis_words)
         # ---- tool length (group 08): the tool axis moves with this block's move, or alone
         if 8 in groups and groups[8][0] in (430, 440, 490):
             self._fanuc_tool_length(groups[8], words)
         # ---- work coordinate system (group 14)
         if 14 in groups:
+            if self.prog is not None:
+                self._unknown(_gname(groups[14][0]), "changing the workpiece coordinate system while a coordinate "
+                              "transform (G68, G51, G51.1, G16) is active is not modelled", groups[14][1])
             self._select_wcs(groups[14], words)
         # ---- one-shot codes that use the axis words
-        uses_axes = False
+        uses_axes = transform_axes
+        if g0 is not None and self.prog is not None and g0[0] in (100, 270, 280, 290, 300, 520, 530, 920, 921):
+            self._unknown(_gname(g0[0]), f"{_gname(g0[0])} while a coordinate transform (G68, G51, G51.1, G16) is "
+                          "active is not modelled", g0[1])
         if g0 is not None:
             k = g0[0]
-            uses_axes = k in (40, 100, 270, 280, 290, 300, 520, 530, 920)
+            uses_axes = uses_axes or k in (40, 100, 270, 280, 290, 300, 520, 530, 920)
             if k == 40:
                 self._dwell(words, g0[1])
             elif k == 100:
@@ -404,13 +432,13 @@ class FanucInterpreter(Interpreter):
             elif moving and not self.unsupported:
                 self._fanuc_motion(block, axis_words, words, g1)
         if self._tlo_shift is not None:
-            if not self.unsupported:  # the tool length change with no move of the tool axis: it moves alone
+            if not self.unsupported and self.tool_axis is not None:  # the tool length change, no tool axis move
                 end = list(self.pos)
                 end[self.tool_axis] = _qadd(end[self.tool_axis], self._tlo_shift)
                 deps = None
                 if self.track:
                     deps = [dict(d) for d in self.dep_pos]
-                    deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps)
+                    deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
                 kind = SegmentKind.RAPID if self.motion == 0 or self.cycle is not None else SegmentKind.LINE
                 if kind is SegmentKind.LINE:
                     self._check_feed()
@@ -495,18 +523,27 @@ class FanucInterpreter(Interpreter):
                 seconds = x.value
         self._emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
 
-    def _target(self, axis_words, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
+    def _target(self, axis_words: AxisWords, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
         """The machine target of the block's axis words, with a pending tool length change on the tool axis."""
         end, deps = self._program_target(axis_words, False, absolute)
         shift = self._tlo_shift
         if shift is not None and self.tool_axis is not None and not any(i == self.tool_axis for i, _ in axis_words):
             end[self.tool_axis] = _qadd(end[self.tool_axis], shift)
             if deps is not None:
-                deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps)
+                deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
         self._tlo_shift = None
         return end, deps
 
-    def _fanuc_motion(self, block, axis_words, words, g1) -> None:
+    def _fanuc_motion(self, block: Block, axis_words: AxisWords, words: Words, g1: tuple | None) -> None:
+        if self.prog is not None:
+            self._transformed_motion(block, axis_words, words)
+            return
+        if self._first_after_transform:
+            self._first_after_transform = False
+            if not self.absolute:
+                self._unknown(_gname(self.motion or 0), "the first move after a coordinate transform is cancelled must be "
+                              "absolute (G90): the manuals give an incremental one no meaning")
+                return
         motion = self.motion
         if motion in (0, 10):
             if not axis_words and self._tlo_shift is None:
@@ -534,19 +571,19 @@ class FanucInterpreter(Interpreter):
             end, deps = self._target(axis_words)
             self._emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
         else:
-            self._unknown(_gname(motion), f"{_gname(motion)} is not modelled")
+            self._unknown(_gname(motion or 0), f"{_gname(motion or 0)} is not modelled")
 
     def _plane_indices(self) -> tuple:
         a, b, _n = PLANE_AXES[self.plane]
         return (self.index.get(a), self.index.get(b))
 
-    def _fanuc_rapid(self, axis_words, derived: str = "") -> None:
+    def _fanuc_rapid(self, axis_words: AxisWords, derived: str = "") -> None:
         if not axis_words:
             return
         end, deps = self._target(axis_words)
         self._emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
 
-    def _fanuc_g53(self, axis_words, w: Word) -> None:
+    def _fanuc_g53(self, axis_words: AxisWords, w: Word) -> None:
         """G53: a rapid to machine coordinates (the tool axis' offsets do not apply to it)."""
         if not self.absolute:
             self._unknown("G53", "G53 in incremental mode (G91): the manuals give it no meaning", w)
@@ -563,7 +600,7 @@ class FanucInterpreter(Interpreter):
             self.after_home.discard(i)
         self._emit(SegmentKind.RAPID, end, derived="G53", end_deps=deps)
 
-    def _fanuc_home(self, k: int, axis_words, words, w: Word) -> None:
+    def _fanuc_home(self, k: int, axis_words: AxisWords, words: Words, w: Word) -> None:
         """G28 / G30 Pn: rapid to the intermediate point, then the named axes to the reference position."""
         if not axis_words:
             self._unknown(_gname(k), f"{_gname(k)} without axis words: Fanuc moves no axis, Haas returns every "
@@ -572,10 +609,9 @@ class FanucInterpreter(Interpreter):
         n = 1
         if k == 300:
             pw = words.get("P")
-            n = 2 if pw is None else pw.value
-            if n not in (2, 3, 4):
+            if pw is not None and pw.value not in (2, 3, 4):
                 raise self._error("GC209", f"G30 {pw.text}: P is 2, 3 or 4 (the reference position number)", pw)
-            n = int(n)
+            n = 2 if pw is None else int(pw.value)
         home = self.references.get(n)
         if home is None:
             self._unknown(f"G30 P{n}", f"the {n}{'nd' if n == 2 else 'rd' if n == 3 else 'th'} reference position "
@@ -595,7 +631,7 @@ class FanucInterpreter(Interpreter):
                 self.after_home.add(i)
         self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} reference {n}", end_deps=hdeps)
 
-    def _g29(self, axis_words, w: Word) -> None:
+    def _g29(self, axis_words: AxisWords, w: Word) -> None:
         """G29: from the reference position via G28's intermediate point to the target."""
         if self.intermediate is None:
             self._unknown("G29", "G29 without an earlier G28/G30 intermediate point", w)
@@ -609,7 +645,7 @@ class FanucInterpreter(Interpreter):
         end, deps = self._target(axis_words)
         self._emit(SegmentKind.RAPID, end, derived="G29", end_deps=deps)
 
-    def _fanuc_g52(self, axis_words, w: Word) -> None:
+    def _fanuc_g52(self, axis_words: AxisWords, w: Word) -> None:
         """G52: the local coordinate system's origin in the workpiece system (G52 IP0 cancels it)."""
         if not self.absolute:
             self._unknown("G52", "G52 in incremental mode (G91) is not modelled", w)
@@ -619,7 +655,7 @@ class FanucInterpreter(Interpreter):
             self.dep_g52[i] = {}
         self._recompute_offsets()
 
-    def _fanuc_g10(self, words, axis_words, w: Word) -> None:
+    def _fanuc_g10(self, words: Words, axis_words: AxisWords, w: Word) -> None:
         """G10 L2 P0..P6 (EXT, G54..G59), L20 P1..P48 (G54.1), L10..L13 P R (tool offsets, memory C)."""
         lw, pw = words.get("L"), words.get("P")
         if lw is None:
@@ -649,14 +685,293 @@ class FanucInterpreter(Interpreter):
                 raise self._error("GC208", f"G10 L{L} needs an R word with the offset value", w)
             table = {10: self.h_geometry, 11: self.h_wear, 12: self.d_geometry, 13: self.d_wear}[int(L)]
             v = self._len(rw.value)
-            reg = int(P)
-            table[reg] = v if self.absolute else table.get(reg, _ZERO) + v
+            number = int(P)
+            table[number] = v if self.absolute else table.get(number, _ZERO) + v
         elif L in (1, 3, 50, 52):
             self._unknown(f"G10 L{L}", f"G10 L{L} ({'tool offset memory A' if L == 1 else 'tool life data' if L == 3 else 'parameter input'}) is not modelled", lw)
         else:
             raise self._error("GC209", f"G10 {lw.text}: L must be 2, 20 or 10 to 13 on a Fanuc mill", lw)
 
-    def _g92(self, axis_words, w: Word) -> None:
+    # ------------------------------------------------------------------ programmable transforms
+    def _transform_codes(self, groups: dict, words: Words, axis_words: AxisWords) -> None:
+        """G16/G15, G51/G50, G51.1/G50.1, G68/G69 (in that order within a block)."""
+        for g in (17, 11, 22, 16):
+            if g not in groups:
+                continue
+            k, w = groups[g]
+            on = k in (160, 510, 511, 680)
+            if on:
+                self._enter_transform()
+            if k == 150:
+                self.polar = None
+            elif k == 160:
+                a, b, _n = PLANE_AXES[self.plane]
+                ia, ib = self.index.get(a), self.index.get(b)
+                if ia is None or ib is None:
+                    raise self._error("GC308", f"G16 in plane G{int(self.plane)} needs axes {a} and {b}", w)
+                self.polar = Polar(ia, ib)
+            elif k == 500:
+                self.scaling = None
+            elif k == 510:
+                self.scaling = self._g51(words, axis_words, w)
+            elif k == 501:
+                if self.mirroring is not None:
+                    named = {i for i, _aw in axis_words}
+                    kept = tuple((i, c) for i, c in self.mirroring.axes if named and i not in named)
+                    self.mirroring = Mirror(kept) if kept else None
+            elif k == 511:
+                if not self.absolute:
+                    self._unknown("G51.1", "G51.1 in incremental mode (G91) is not modelled", w)
+                    return
+                axes = dict(self.mirroring.axes) if self.mirroring is not None else {}
+                for i, aw in axis_words:
+                    axes[i] = self._mm(aw.value, i)
+                self.mirroring = Mirror(tuple(sorted(axes.items()))) if axes else self.mirroring
+            elif k == 690:
+                self.rotation = None
+            elif k == 680:
+                self.rotation = self._g68(words, axis_words, w)
+            self._first_after_transform = True
+        active = [x for x in (self.polar, self.scaling, self.mirroring, self.rotation) if x is not None]
+        if len(active) > 1:
+            self._unknown("G68" if self.rotation is not None else "G51", "polar coordinates, scaling, mirror image "
+                          "and rotation are modelled one at a time: the order a control combines them in is not "
+                          "modelled")
+        if not active:
+            self.prog = None
+            self.prog_deps = None
+
+    def _program(self) -> list[Fraction]:
+        """The program point (only while a transform is active)."""
+        assert self.prog is not None
+        return self.prog
+
+    def _enter_transform(self) -> None:
+        if self.prog is None:
+            self.prog = [self.pos[i] - self.off[i] for i in range(self.naxes)]
+            self.prog_deps = [_dadd(self.dep_pos[i], self.dep_off[i], -1) for i in range(self.naxes)] \
+                if self.track else [{} for _ in range(self.naxes)]
+
+    def _centre(self, axis_words: AxisWords, i: int, w: Word) -> Fraction:
+        """A transform's centre on axis ``i``: the block's word (absolute), else the current program point."""
+        for j, aw in axis_words:
+            if j == i:
+                return self._mm(aw.value, i)
+        return self._program()[i]
+
+    def _g68(self, words: Words, axis_words: AxisWords, w: Word) -> Rotation | None:
+        a, b, _n = PLANE_AXES[self.plane]
+        ia, ib = self.index.get(a), self.index.get(b)
+        if ia is None or ib is None:
+            raise self._error("GC308", f"G68 in plane G{int(self.plane)} needs axes {a} and {b}", w)
+        if not self.absolute and axis_words:
+            self._unknown("G68", "a G68 centre in incremental mode (G91) is not modelled", w)
+            return self.rotation
+        rw = words.get("R")
+        if rw is None:
+            self._unknown("G68", "G68 without R takes the angle from parameter 5410, which the machine file does "
+                          "not hold", w)
+            return self.rotation
+        angle = rw.value
+        if self.settings.rotation_incremental and not self.absolute and self.rotation is not None:
+            angle += self.rotation.angle
+        return Rotation(ia, ib, self._centre(axis_words, ia, w), self._centre(axis_words, ib, w), angle)
+
+    def _g51(self, words: Words, axis_words: AxisWords, w: Word) -> Scaling | None:
+        if not self.absolute and axis_words:
+            self._unknown("G51", "a G51 centre in incremental mode (G91) is not modelled", w)
+            return self.scaling
+        pw = words.get("P")
+        per_axis = [words.get(letter) for letter in "IJK"]
+        factors = [Fraction(1)] * self.naxes
+        if pw is not None and not any(per_axis):
+            for letter in "XYZ":
+                i = self.index.get(letter)
+                if i is not None:
+                    factors[i] = pw.value
+        elif pw is None and all(per_axis):
+            for letter, fw in zip("XYZ", per_axis):
+                i = self.index.get(letter)
+                if i is not None and fw is not None:
+                    factors[i] = fw.value
+        else:
+            self._unknown("G51", "G51 needs either P or all of I, J, K; the defaults come from parameters 5411 and "
+                          "5421, which the machine file does not hold", w)
+            return self.scaling
+        if any(f == 0 for f in factors):
+            raise self._error("GC209", "a scale factor of 0 (G51) collapses the axis", w)
+        centre = tuple(self._centre(axis_words, i, w) for i in range(self.naxes))
+        return Scaling(centre, tuple(factors))
+
+    def _program_point(self, axis_words: AxisWords) -> tuple[list[Fraction], list[dict]] | None:
+        """The program point a block's axis words name while a transform is active (polar coordinates read
+        here), with its dependencies; None after recording why it is unknown."""
+        p = list(self._program())
+        pd = [dict(d) for d in (self.prog_deps or [{} for _ in p])]
+        polar = self.polar
+        radius = angle = None
+        for i, w in axis_words:
+            if polar is not None and i in (polar.ia, polar.ib):
+                if not self.absolute:
+                    self._unknown("G16", "polar coordinates in incremental mode (G91) are not modelled", w)
+                    return None
+                if i == polar.ia:
+                    radius = self._mm(w.value, i)
+                else:
+                    angle = w.value
+                continue
+            v = self._mm(w.value, i)
+            if self.absolute:
+                p[i] = v
+                pd[i] = {}
+            else:
+                p[i] = p[i] + v
+        if polar is not None and (radius is not None or angle is not None):
+            radius = radius if radius is not None else polar.radius
+            angle = angle if angle is not None else polar.angle
+            if radius is None or angle is None:
+                self._unknown("G16", "the first polar coordinate command needs both the radius and the angle")
+                return None
+            p[polar.ia], p[polar.ib] = polar_point(radius, angle, self.settings.increment_mm)
+            pd[polar.ia] = {}
+            pd[polar.ib] = {}
+            self.polar = Polar(polar.ia, polar.ib, radius, angle)
+        return p, pd
+
+    def _transform_target(self, p: list[Fraction], pd: list[dict]) -> tuple[list[Fraction], list[dict] | None]:
+        """The machine point of a program point: polar (already in ``p``), scaling, mirror, rotation, offsets."""
+        step = self.settings.increment_mm
+        q = p
+        mixed: set[int] = set()
+        if self.scaling is not None:
+            q = scale(self.scaling, q, step)
+            mixed |= {i for i, f in enumerate(self.scaling.factors) if f != 1}
+        if self.mirroring is not None:
+            q = mirror(self.mirroring, q)
+            mixed |= {i for i, _c in self.mirroring.axes}
+        if self.rotation is not None:
+            q = rotate(self.rotation, q, step)
+            mixed |= {self.rotation.ia, self.rotation.ib}
+        end = [_qadd(q[i], self.off[i]) for i in range(self.naxes)]
+        self._tlo_shift = None  # the offsets hold the new tool length: this move carries it out
+        deps = None
+        if self.track:
+            deps = []
+            for i in range(self.naxes):
+                if i in mixed:
+                    if any(pd[j] for j in mixed):
+                        self._unknown("G68" if self.rotation is not None else "G51",
+                                      "parameter ranges on a point a coordinate transform moves are not modelled")
+                    deps.append(dict(self.dep_off[i]))
+                else:
+                    deps.append(_dadd(pd[i], self.dep_off[i]))
+        return end, deps
+
+    def _transformed_motion(self, block: Block, axis_words: AxisWords, words: Words) -> None:
+        motion = self.motion
+        if self._first_after_transform and not self.absolute:
+            self._unknown(_gname(motion or 0), "the first move after G68, G51, G51.1 or G16 must be absolute (G90): "
+                          "the manuals give an incremental one no meaning")
+            return
+        self._first_after_transform = False
+        if motion not in (0, 10, 20, 30):
+            self._unknown(_gname(motion or 0), f"{_gname(motion or 0)} under a coordinate transform is not modelled")
+            return
+        point = self._program_point(axis_words)
+        if point is None:
+            return
+        p, pd = point
+        self._note_assumed(("units", "distance", "offset"))
+        if motion in (20, 30):
+            self._transformed_arc(p, pd, words, motion == 20)
+            return
+        end, deps = self._transform_target(p, pd)
+        if motion == 0:
+            self._emit(SegmentKind.RAPID, end, end_deps=deps)
+        else:
+            self._check_feed()
+            self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+        self.prog, self.prog_deps = p, pd
+
+    def _transformed_arc(self, p: list[Fraction], pd: list[dict], words: Words, cw: bool) -> None:
+        """An arc under a transform: its centre and end points transformed; a mirror or a negative scale
+        factor on one of the plane's axes reverses the direction."""
+        plane = self.plane
+        a_name, b_name, n_name = PLANE_AXES[plane]
+        ia, ib = self.index.get(a_name), self.index.get(b_name)
+        if ia is None or ib is None:
+            raise self._error("GC308", f"an arc in plane G{int(plane)} needs axes {a_name} and {b_name}")
+        if self.polar is not None:
+            self._unknown("G16", "arcs in polar coordinate mode are not modelled")
+            return
+        if self.rotation is not None and {self.rotation.ia, self.rotation.ib} != {ia, ib}:
+            self._unknown("G68", "an arc in another plane than the rotation's is not modelled")
+            return
+        fa = fb = Fraction(1)
+        if self.scaling is not None:
+            fa, fb = self.scaling.factors[ia], self.scaling.factors[ib]
+            if abs(fa) != abs(fb):
+                self._unknown("G51", "an arc scaled differently on its two axes becomes an ellipse; not modelled")
+                return
+        mirrored = {i for i, _c in self.mirroring.axes} if self.mirroring is not None else set()
+        flips = (ia in mirrored) + (ib in mirrored) + (fa < 0) + (fb < 0)
+        clockwise = cw if flips % 2 == 0 else not cw
+        offs = {"X": "I", "Y": "J", "Z": "K"}
+        la, lb, ln = offs[a_name], offs[b_name], offs[n_name]
+        if ln in words:
+            raise self._error("GC204", f"{ln} word {words[ln].text} given for an arc in plane G{int(plane)}",
+                              words[ln])
+        rw = words.get("R")
+        self._check_feed()
+        sa, sb = self._program()[ia], self._program()[ib]
+        ea, eb = p[ia], p[ib]
+        tol = self.arc_tolerance
+        turns = 0
+        pw = words.get("P")
+        if pw is not None:
+            if pw.value.denominator != 1 or pw.value < 1:
+                raise self._error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
+            turns = int(pw.value) - 1
+        end, deps = self._transform_target(p, pd)
+        if rw is not None:
+            r = self._len(rw.value)
+            if sa == ea and sb == eb:
+                return  # a 0 degree arc: no motion
+            h2 = ((ea - sa) ** 2 + (eb - sb) ** 2) / 4
+            if h2 > (abs(r) + tol) ** 2:
+                raise self._error("GC302", f"arc radius R{_fmt(abs(r))} mm is too small to reach the end point", rw)
+            r_machine = r * abs(fa)
+            mh2 = ((end[ia] - self.pos[ia]) ** 2 + (end[ib] - self.pos[ib]) ** 2) / 4
+            if mh2 >= r_machine ** 2:
+                centre = ((self.pos[ia] + end[ia]) / 2, (self.pos[ib] + end[ib]) / 2)
+                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise, centre=centre,
+                           turns=turns, end_deps=deps)
+            else:
+                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise, radius=r_machine,
+                           turns=turns, end_deps=deps)
+            self.prog, self.prog_deps = p, pd
+            return
+        iw, jw = words.get(la), words.get(lb)
+        if iw is None and jw is None:
+            raise self._error("GC208", f"arc without {la}, {lb} or R word: the centre or radius is missing")
+        ca = sa + (self._len(iw.value) if iw is not None else _ZERO)
+        cb = sb + (self._len(jw.value) if jw is not None else _ZERO)
+        r0 = (sa - ca) ** 2 + (sb - cb) ** 2
+        r1 = (ea - ca) ** 2 + (eb - cb) ** 2
+        if r0 == 0 or r1 == 0:
+            raise self._error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
+        if r0 != r1 and _sqrt_diff_exceeds(r0, r1, tol):
+            raise self._error("GC301", f"arc end point is off its circle by more than {_fmt(tol)} mm", iw or jw)
+        centre_point = list(self._program())
+        centre_point[ia], centre_point[ib] = ca, cb
+        shift = self._tlo_shift
+        machine_centre, _d = self._transform_target(centre_point, [{} for _ in range(self.naxes)])
+        self._tlo_shift = shift
+        self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise,
+                   centre=(machine_centre[ia], machine_centre[ib]), turns=turns, end_deps=deps)
+        self.prog, self.prog_deps = p, pd
+
+    def _g92(self, axis_words: AxisWords, w: Word) -> None:
         """G92: the workpiece systems are shifted so the current position reads the given values."""
         if not axis_words:
             raise self._error("GC208", "G92 needs at least one axis word", w)
@@ -673,7 +988,7 @@ class FanucInterpreter(Interpreter):
         self._recompute_offsets()
 
     # ------------------------------------------------------------------ canned cycles
-    def _fanuc_cycle(self, axis_words, words, block) -> None:
+    def _fanuc_cycle(self, axis_words: AxisWords, words: Words, block: Block) -> None:
         """A block in canned cycle mode (G73 G74 G76 G81-G86 G89): position, R point, the cycle, return.
 
         0i/30i-M, "Canned cycle for drilling": operation 1 positions X/Y at rapid at the current level,
@@ -682,6 +997,7 @@ class FanucInterpreter(Interpreter):
         when the cycle mode began.  In G91, R is the distance from the initial level and Z from R.
         """
         k = self.cycle
+        assert k is not None  # called in canned cycle mode
         name = _gname(k)
         if self.plane is not Plane.XY:
             self._unknown(name, f"{name} outside G17: the drilling axis depends on parameter 5101#0 FXY")
@@ -753,9 +1069,29 @@ class FanucInterpreter(Interpreter):
                 return
         dwell = _seconds(data["P"]) if "P" in data and k in (760, 820, 840, 890, 740, 842, 843) else None
         top = initial if not self.retract_r else r
-        for rep in range(reps):
+        transformed = self.prog is not None
+        if transformed:
+            if (self.scaling is not None and self.scaling.factors[iz] != 1) or (
+                    self.mirroring is not None and any(i == iz for i, _c in self.mirroring.axes)) or (
+                    self.rotation is not None and iz in (self.rotation.ia, self.rotation.ib)):
+                self._unknown(name, f"{name} with the drilling axis scaled, mirrored or rotated is not modelled")
+                return
+            if self._first_after_transform and not self.absolute:
+                self._unknown(name, f"the first {name} hole after a coordinate transform must be absolute (G90)")
+                return
+            self._first_after_transform = False
+        xy_words = [(i, aw) for i, aw in axis_words if i in (ix, iy)]
+        for _rep in range(reps):
             target = list(self.pos)
-            if self.absolute:
+            if transformed:
+                point = self._program_point(xy_words)
+                if point is None:
+                    return
+                p, pd = point
+                machine_target, _deps = self._transform_target(p, pd)
+                target[ix], target[iy] = machine_target[ix], machine_target[iy]
+                self._program()[ix], self._program()[iy] = p[ix], p[iy]
+            elif self.absolute:
                 if "X" in wd:
                     target[ix] = _qadd(self._mm(wd["X"].value, ix), self.off[ix])
                 if "Y" in wd:
@@ -767,7 +1103,7 @@ class FanucInterpreter(Interpreter):
                     target[iy] = _qadd(target[iy], self._mm(wd["Y"].value, iy))
             a, b = target[ix], target[iy]
 
-            def go(kind, z, derived, x=None, y=None):
+            def go(kind, z, derived, x=None, y=None, a=a, b=b):
                 end = list(self.pos)
                 end[ix] = a if x is None else x
                 end[iy] = b if y is None else y
@@ -795,7 +1131,7 @@ class FanucInterpreter(Interpreter):
                     go(SegmentKind.LINE, depth, f"{name} peck")
                     if k == 830:
                         go(SegmentKind.RAPID, r, f"{name} clear")
-                    go(SegmentKind.RAPID, depth + back, f"{name} {'retract' if k == 730 else 'approach'}")
+                    go(SegmentKind.RAPID, depth + (back or _ZERO), f"{name} {'retract' if k == 730 else 'approach'}")
             go(SegmentKind.LINE, bottom, f"{name} feed")
             if dwell:
                 self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
@@ -810,19 +1146,22 @@ class FanucInterpreter(Interpreter):
                     go(SegmentKind.RAPID, top, f"{name} return")
             else:
                 go(SegmentKind.RAPID, top, f"{name} retract")
+        if transformed:
+            self._program()[iz] = self.pos[iz] - self.off[iz]
 
     def _boring_shift(self, q: Fraction) -> tuple[Fraction, Fraction]:
         d = self._len(abs(q))
-        return {"+X": (d, _ZERO), "-X": (-d, _ZERO), "+Y": (_ZERO, d), "-Y": (_ZERO, -d)}[self.settings.boring_shift]
+        shift = self.settings.boring_shift or "+X"  # _fanuc_cycle leaves G76 unknown without the setting
+        return {"+X": (d, _ZERO), "-X": (-d, _ZERO), "+Y": (_ZERO, d), "-Y": (_ZERO, -d)}[shift]
 
     # ------------------------------------------------------------------ system variables
-    def bind_variables(self, variables) -> None:
+    def bind_variables(self, variables: FanucVariables) -> None:
         """Serve the system variables (``#1000`` and up) the program reads and writes (``specs/fanuc.md``)."""
         self.vars = variables
         variables.system_read = self.system_read
         variables.system_write = self.system_write
 
-    def bind_parameters(self, params) -> None:  # the LinuxCNC store is not used in this dialect
+    def bind_parameters(self, params: Any) -> None:  # the LinuxCNC store is not used in this dialect
         self._scopes = None
 
     def system_read(self, n: int) -> tuple:

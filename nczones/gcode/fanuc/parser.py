@@ -45,6 +45,8 @@ from ..lexer import decimal_value
 __all__ = ["NUM", "VAR", "NEG", "BIN", "FN", "FN2", "FanucLine", "parse_line", "FUNCTIONS", "LITERAL", "EXPR"]
 
 NUM, VAR, NEG, BIN, FN, FN2 = range(6)
+#: An expression tree (see the module docstring).
+Tree = tuple
 #: Word kinds: a literal number, or an expression tree evaluated when the block runs.
 LITERAL, EXPR = 0, 1
 
@@ -159,7 +161,7 @@ class _Parser:
         return repr(self.s[i:i + 8]) if i < self.n else "the end of the line"
 
     # -- expressions -----------------------------------------------------------
-    def number(self, i: int):
+    def number(self, i: int) -> tuple[Tree, int]:
         m = _NUMBER.match(self.s, i)
         if m is None:
             raise _Fail("GC104", f"expected a number, found {self.shown(i)}", i, i + 1)
@@ -179,7 +181,7 @@ class _Parser:
         self.depth -= 1
         return i + 1
 
-    def variable(self, i: int):
+    def variable(self, i: int) -> tuple[Tree, int]:
         """``#n`` or ``#[e]`` at ``i`` (the '#')."""
         j = i + 1
         s = self.s
@@ -198,7 +200,7 @@ class _Parser:
         q = int(m.group())
         return (VAR, (NUM, float(q), Fraction(q))), m.end()
 
-    def primary(self, i: int, connectives: bool):
+    def primary(self, i: int, connectives: bool) -> tuple[Tree, int]:
         s = self.s
         if i >= self.n:
             raise _Fail("GC104", "expected a value, found the end of the line", i)
@@ -216,8 +218,9 @@ class _Parser:
             return self.function(i)
         return self.number(i)
 
-    def function(self, i: int):
+    def function(self, i: int) -> tuple[Tree, int]:
         m = _NAME.match(self.s, i)
+        assert m is not None  # primary() calls this at a letter
         name = m.group()
         known = next((f for f in sorted(FUNCTIONS | _TWO_ARGS, key=len, reverse=True) if name.startswith(f)), None)
         if known is None or not name == known:
@@ -240,7 +243,7 @@ class _Parser:
             raise _Fail("GC105", "POW needs two arguments: POW[a,b]", j, k)
         return (FN, name, arg), k
 
-    def op(self, i: int, ops) -> str | None:
+    def op(self, i: int, ops: tuple[str, ...]) -> str | None:
         s = self.s
         if i >= self.n:
             return None
@@ -253,7 +256,7 @@ class _Parser:
                     return o
         return None
 
-    def term(self, i: int, connectives: bool):
+    def term(self, i: int, connectives: bool) -> tuple[Tree, int]:
         node, i = self.primary(i, connectives)
         ops = _MULTIPLICATIVE if connectives else ("*", "/", "mod")
         while True:
@@ -263,7 +266,7 @@ class _Parser:
             right, i = self.primary(i + len(o), connectives)
             node = (BIN, o, node, right)
 
-    def arith(self, i: int, connectives: bool):
+    def arith(self, i: int, connectives: bool) -> tuple[Tree, int]:
         """An arithmetic expression (``connectives``: AND/OR/XOR are arithmetic operators here)."""
         node, i = self.term(i, connectives)
         ops = _ADDITIVE if connectives else ("+", "-")
@@ -274,7 +277,7 @@ class _Parser:
             right, i = self.term(i + len(o), connectives)
             node = (BIN, o, node, right)
 
-    def condition(self, i: int):
+    def condition(self, i: int) -> tuple[Tree, int]:
         """``[ rel ((AND|OR|XOR) rel)* ]`` at ``i`` (the '['), rel = ``arith (EQ|NE|GT|GE|LT|LE arith)?``."""
         if i >= self.n or self.s[i] != "[":
             raise _Fail("GC105", f"expected '[' opening the condition, found {self.shown(i)}", i, i + 1)
@@ -288,7 +291,7 @@ class _Parser:
             node = (BIN, o, node, right)
         return node, self.close(j)
 
-    def relation(self, i: int):
+    def relation(self, i: int) -> tuple[Tree, int]:
         left, j = self.arith(i, False)
         o = self.op(j, _RELATIONAL)
         if o is None:
@@ -296,7 +299,7 @@ class _Parser:
         right, j = self.arith(j + len(o), False)
         return (BIN, o, left, right), j
 
-    def label(self, i: int):
+    def label(self, i: int) -> tuple[Tree, int]:
         """The target of GOTO / the id of DO/END: a number, ``#i`` or ``[e]``."""
         s = self.s
         if i < self.n and s[i] in "#[":
@@ -311,7 +314,7 @@ class _Parser:
         q = int(m.group())
         return (NUM, float(q), Fraction(q)), m.end()
 
-    def loop_id(self, i: int, kw: str):
+    def loop_id(self, i: int, kw: str) -> tuple[int, int]:
         m = _INT.match(self.s, i)
         if m is None:
             raise _Fail("GC202", f"{kw.upper()} needs its identification number 1, 2 or 3 (DO1 ... END1)", i, i + 1)
@@ -400,7 +403,7 @@ def _parse(line: str, s: str, cols: list[int], comments: list) -> FanucLine:
         i = m.end()
     words: list = []
     assigns: list = []
-    stmt = None
+    stmt: tuple | None = None
     stmt_at = (1, 1)
     unmodelled = None
     while i < n:
@@ -417,7 +420,9 @@ def _parse(line: str, s: str, cols: list[int], comments: list) -> FanucLine:
         if not ("a" <= c <= "z"):
             raise _Fail("GC101", f"unexpected character {c!r}; a block holds words (a letter and a value), "
                         "'#' assignments, macro statements and comments", i, i + 1)
-        kw = _NAME.match(s, i).group()
+        kw_match = _NAME.match(s, i)
+        assert kw_match is not None  # c is a letter
+        kw = kw_match.group()
         if stmt is not None and not kw.startswith("n"):
             raise _Fail("GC202", "a macro statement (IF, GOTO, WHILE, DO, END) must end its block", i, n)
         if s.startswith("if[", i):
@@ -460,20 +465,20 @@ def _parse(line: str, s: str, cols: list[int], comments: list) -> FanucLine:
             if not s.startswith("do", j):
                 raise _Fail("GC202", f"WHILE [condition] must be followed by DO and its number, found {p.shown(j)}",
                             j, j + 1)
-            m, k = p.loop_id(j + 2, "do")
-            stmt = ("while", cond, m)
+            ident, k = p.loop_id(j + 2, "do")
+            stmt = ("while", cond, ident)
             stmt_at = (_column(cols, start), _end_column(cols, k))
             i = k
             continue
         if s.startswith("do", i) and i + 2 < n and s[i + 2].isdigit():
-            m, k = p.loop_id(i + 2, "do")
-            stmt = ("do", m)
+            ident, k = p.loop_id(i + 2, "do")
+            stmt = ("do", ident)
             stmt_at = (_column(cols, start), _end_column(cols, k))
             i = k
             continue
         if s.startswith("end", i) and i + 3 < n and s[i + 3].isdigit():
-            m, k = p.loop_id(i + 3, "end")
-            stmt = ("end", m)
+            ident, k = p.loop_id(i + 3, "end")
+            stmt = ("end", ident)
             stmt_at = (_column(cols, start), _end_column(cols, k))
             i = k
             continue

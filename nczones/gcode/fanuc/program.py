@@ -32,11 +32,13 @@ code (``"G66"``, ``"#5405"``, ``"ELSE"``), listed in ``specs/fanuc.md``.
 
 from __future__ import annotations
 
+import os
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Generator, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
+from typing import Any, Protocol, TypeVar
 
 from ...errors import Diagnostic, GcodeError, SourceSpan
 from ...machine import FanucSettings
@@ -50,11 +52,28 @@ from ..program import (
     UnsupportedGcode,
     _StringSource,
 )
-from .expr import VACANT, Context, FanucVariables, SystemVariableUnknown, compile_tree, round_to, variable_index
+from .expr import (
+    VACANT,
+    Context,
+    FanucVariables,
+    SystemVariableUnknown,
+    compile_tree,
+    round_to,
+    variable_index,
+)
 from .parser import EXPR, LITERAL, NEG, VAR, FanucLine, parse_line
 
 __all__ = ["iter_blocks", "FanucRunner", "LENGTH_LETTERS", "needs_language_layer", "MAX_MACRO_LEVELS",
            "MAX_CALL_DEPTH"]
+
+_T = TypeVar("_T")
+#: What executing a line yields (blocks) and returns: the next ``(pos, lineno)``, or None at the end.
+_Flow = Generator[Any, None, "tuple[int, int] | None"]
+
+
+class _LineSource(Protocol):
+    def line_at(self, pos: int) -> tuple[str | None, int]: ...
+
 
 #: Addresses whose values are lengths or angles: the decimal point input rule and the least input
 #: increment apply (``K`` only outside canned cycles, where it is the repeat count).
@@ -93,7 +112,7 @@ class _Source:
 
     __slots__ = ("src", "file", "programs", "extents", "labels")
 
-    def __init__(self, src, file: str):
+    def __init__(self, src: _LineSource, file: str):
         self.src = src
         self.file = file
         self.programs: dict[int, tuple[int, int]] | None = None
@@ -123,6 +142,12 @@ class _Source:
             pos, lineno = nxt, lineno + 1
         starts.append(pos + 1)
         self.extents = list(zip(starts[:-1], starts[1:]))
+
+    def program(self, number: int) -> tuple[int, int] | None:
+        """Where program ``O<number>`` of this text begins (the line after its number), or None."""
+        self.index()
+        assert self.programs is not None
+        return self.programs.get(number)
 
     def extent(self, pos: int) -> tuple[int, int]:
         """The text of the program that holds offset ``pos``: from its O line to the next one."""
@@ -158,10 +183,11 @@ _CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
 class FanucRunner:
     """The Fanuc language layer of one program run (see the module docstring and :func:`iter_blocks`)."""
 
-    def __init__(self, source, file: str, variables: FanucVariables, *, settings: FanucSettings | None = None,
-                 block_delete: bool = False, library: str | Path | None = None, state=None,
+    def __init__(self, source: _LineSource, file: str, variables: FanucVariables, *,
+                 settings: FanucSettings | None = None, block_delete: bool = False,
+                 library: str | os.PathLike | None = None, state: Any = None,
                  max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, first_line: int = 1, first_index: int = 0,
-                 fast_runs: dict | None = None, lane=None):
+                 fast_runs: dict | None = None, lane: Callable[..., int] | None = None):
         self.settings = settings or FanucSettings()
         self.main = _Source(source, file)
         self.vars = variables
@@ -220,14 +246,15 @@ class FanucRunner:
             end = max(col + 1, len(line) + 1)
         return SourceSpan(self.frames[-1].source.file, lineno, col, end, line)
 
-    def error(self, code: str, message: str, lineno: int, line: str, col: int = 1, end: int | None = None):
+    def error(self, code: str, message: str, lineno: int, line: str, col: int = 1,
+              end: int | None = None) -> GcodeError:
         return GcodeError(Diagnostic(code, message, self.span(lineno, line, col, end)))
 
-    def unsupported(self, code: str, message: str, lineno: int, line: str, col: int = 1, end=None,
-                    cls=UnsupportedGcode):
+    def unsupported(self, code: str, message: str, lineno: int, line: str, col: int = 1, end: int | None = None,
+                    cls: type[UnsupportedGcode] = UnsupportedGcode) -> UnsupportedGcode:
         return cls(Diagnostic(code, message, self.span(lineno, line, col, end)))
 
-    def syntax_error(self, exc: GcodeError, src, pos: int, lineno: int, file: str) -> GcodeError:
+    def syntax_error(self, exc: GcodeError, src: _LineSource, pos: int, lineno: int, file: str) -> GcodeError:
         """``exc`` with the syntax errors of the following lines (up to the program's end)."""
         diags = list(exc.diagnostics)
         while len(diags) < MAX_REPORTED_ERRORS:
@@ -243,7 +270,7 @@ class FanucRunner:
                 diags.extend(e.diagnostics)
         return GcodeError(diags[:MAX_REPORTED_ERRORS])
 
-    def evaluate(self, fn, lineno: int, line: str, col: int = 1, end: int | None = None) -> tuple:
+    def evaluate(self, fn: Callable[[], _T], lineno: int, line: str, col: int = 1, end: int | None = None) -> _T:
         try:
             return fn()
         except EvalError as e:
@@ -254,10 +281,10 @@ class FanucRunner:
             raise self.error("GC312", "expression nested too deeply", lineno, line, col, end) from None
 
     # -- compiled lines ---------------------------------------------------------------------
-    def compiled(self, source: _Source, pos: int, line: str, lineno: int, nxt: int):
+    def compiled(self, source: _Source, pos: int, line: str, lineno: int, nxt: int) -> tuple:
         """The line at ``pos`` parsed, its expressions compiled (kept for lines that run again)."""
         key = (id(source), pos)
-        hit = self.cache.get(key)
+        hit: tuple | None = self.cache.get(key)
         if hit is not None:
             return hit
         try:
@@ -380,7 +407,7 @@ class FanucRunner:
                                         "missing", SourceSpan(frame.source.file, lineno, 1)))
 
     # -- one general line -------------------------------------------------------------------
-    def execute(self, compiled, pos: int, lineno: int):
+    def execute(self, compiled: tuple, pos: int, lineno: int) -> _Flow:
         fl, words, assigns, stmt, line, nxt, gcodes = compiled
         frame = self.frames[-1]
         here = (nxt, lineno + 1)
@@ -420,7 +447,7 @@ class FanucRunner:
             return (yield from self.calls(values, calls, fl, lineno, line, nxt))
         return (yield from self.nc(values, fl, lineno, line, nxt))
 
-    def word_values(self, words, gcodes: set, lineno: int, line: str) -> list:
+    def word_values(self, words: tuple, gcodes: set, lineno: int, line: str) -> list:
         """The block's words ``(letter, exact value, column, end column, text)`` as the control reads them."""
         in_cycle = getattr(self.state, "in_cycle", None)
         cycle = bool(gcodes & _CYCLE_G) or (not (gcodes & _CANCEL_CYCLE_G) and in_cycle is not None and in_cycle())
@@ -483,7 +510,8 @@ class FanucRunner:
         q = value[1]
         return q if q is not None else Fraction(value[0])
 
-    def assign(self, target, value, lineno, line, col, end, fl: FanucLine) -> bool:
+    def assign(self, target: Callable[[], int], value: Callable[[], tuple], lineno: int, line: str, col: int,
+               end: int, fl: FanucLine) -> bool:
         """``#i = value``; True when it raised a #3000 alarm (the program stops)."""
         n = self.evaluate(target, lineno, line, col, end)
         v = self.evaluate(value, lineno, line, col, end)
@@ -504,7 +532,8 @@ class FanucRunner:
         return False
 
     # -- control statements ----------------------------------------------------------------
-    def statement(self, stmt, fl: FanucLine, pos: int, lineno: int, line: str, nxt: int):
+    def statement(self, stmt: tuple, fl: FanucLine, pos: int, lineno: int, line: str,
+                  nxt: int) -> tuple[int, int] | None:
         frame = self.frames[-1]
         col, end = fl.stmt_at
         kind = stmt[0]
@@ -554,9 +583,10 @@ class FanucRunner:
                                  "DO ranges must not cross (Fanuc alarm PS0124)", lineno, line, col, end)
             raise self.error("GC314", f"END{m} without an open DO{m} (a GOTO cannot jump into a loop)",
                              lineno, line, col, end)
-        return loops[-1].head
+        head: tuple[int, int] = loops[-1].head
+        return head
 
-    def check_id(self, m: int, lineno, line, col, end) -> None:
+    def check_id(self, m: int, lineno: int, line: str, col: int, end: int) -> None:
         if m not in (1, 2, 3):
             raise self.error("GC314", f"loop identification number {m}: DO and END take 1, 2 or 3 (Fanuc alarm "
                              "PS0126)", lineno, line, col, end)
@@ -586,7 +616,8 @@ class FanucRunner:
             pos, lineno = nxt, lineno + 1
         raise self.error("GC314", f"DO{m} has no matching END{m} (Fanuc alarm PS0124)", lineno0, line0)
 
-    def goto(self, fn, pos: int, lineno: int, line: str, col: int, end: int) -> tuple[int, int]:
+    def goto(self, fn: Callable[[], tuple], pos: int, lineno: int, line: str, col: int,
+             end: int) -> tuple[int, int]:
         value = self.evaluate(fn, lineno, line, col, end)
         n = int(round_to(value, Fraction(1))) if value is not VACANT else -1
         if not 1 <= n <= 99999999:
@@ -632,10 +663,11 @@ class FanucRunner:
         if not inside:
             return None
         after = [p for p in inside if p[0] > pos]
-        return after[0] if after else inside[0]
+        found: tuple[int, int] = after[0] if after else inside[0]
+        return found
 
     # -- NC statements and calls ------------------------------------------------------------
-    def has_call_code(self, values) -> bool:
+    def has_call_code(self, values: list) -> bool:
         custom = not self.in_custom()
         for letter, q, *_rest in values:
             if letter == "M" and q.denominator == 1 and (q.numerator in (97, 98, 99) or q.numerator in self.custom_m):
@@ -646,14 +678,14 @@ class FanucRunner:
                 return True
         return False
 
-    def block(self, values, number, lineno: int, line: str):
+    def block(self, values: list, number: Fraction | None, lineno: int, line: str) -> Iterator:
         """Yield one block of evaluated words."""
         self.started = True
         span = make_span(self.frames[-1].source.file, lineno, 1, len(line) + 1, line)
         yield plain_block_of(values, span, self.index, number)
         self.index += 1
 
-    def nc(self, values, fl: FanucLine, lineno: int, line: str, nxt: int):
+    def nc(self, values: list, fl: FanucLine, lineno: int, line: str, nxt: int) -> _Flow:
         """Yield an NC statement's block; the G66 modal call after a move; M2/M30 end the program."""
         yield from self.block(values, fl.number, lineno, line)
         if any(v[0] == "M" and v[1] in (2, 30) for v in values):
@@ -666,7 +698,7 @@ class FanucRunner:
             return self.call_macro(program, repeats, dict(args), here, lineno, line, "G66")
         return here
 
-    def calls(self, values, calls, fl: FanucLine, lineno: int, line: str, nxt: int):
+    def calls(self, values: list, calls: list, fl: FanucLine, lineno: int, line: str, nxt: int) -> _Flow:
         here = (nxt, lineno + 1)
         if calls:
             code = int(calls[0][1])
@@ -690,7 +722,7 @@ class FanucRunner:
             return self.call_macro(program, repeats, args, here, lineno, line, "G65")
         # M98 / M99 / M97 / custom codes: the block's other words run first
         custom = not self.in_custom()
-        call = None
+        call: tuple | None = None
         rest = []
         for v in values:
             letter, q = v[0], v[1]
@@ -704,6 +736,7 @@ class FanucRunner:
                 call = ("T", q, v) + self.custom_t
             else:
                 rest.append(v)
+        assert call is not None  # has_call_code() found one
         letter, number, word = call[:3]
         if len(call) > 3:  # a custom code of the machine file
             program, how = call[3], call[4]
@@ -740,7 +773,8 @@ class FanucRunner:
             return target
         return self.return_m99(pword, word, lineno, line, nxt)
 
-    def m98(self, pword, lword, word, lineno: int, line: str, here):
+    def m98(self, pword: tuple | None, lword: tuple | None, word: tuple, lineno: int, line: str,
+            here: tuple[int, int]) -> tuple[int, int]:
         if pword is None:
             raise self.error("GC317", "M98 needs a P word naming the subprogram (M98 P1000)", lineno, line,
                              word[2], word[3])
@@ -761,7 +795,8 @@ class FanucRunner:
             return here
         return self.call_sub(program, count, here, lineno, line, "M98")
 
-    def call_words(self, words, what: str, lineno: int, line: str, gword):
+    def call_words(self, words: list, what: str, lineno: int, line: str,
+                   gword: tuple) -> tuple[int, int, dict[int, tuple]]:
         pword = next((v for v in words if v[0] == "P"), None)
         if pword is None or pword[1].denominator != 1 or pword[1] < 0:
             raise self.error("GC317", f"{what} needs a P word with the macro's program number ({what} P9010 A1 B2)",
@@ -776,7 +811,7 @@ class FanucRunner:
         args = self.arguments([v for v in words if v is not pword and v is not lword], lineno, line)
         return int(pword[1]), repeats, args
 
-    def arguments(self, words, lineno: int, line: str) -> dict[int, tuple]:
+    def arguments(self, words: list, lineno: int, line: str) -> dict[int, tuple]:
         """Argument specification I (A B C D E F H I J K M Q R S T U V W X Y Z) and II (A B C and up to ten
         sets of I J K): the n-th I goes to #(4 + 3(n-1)), J to #(5 + 3(n-1)), K to #(6 + 3(n-1)); where both
         forms name one variable the later word wins (0i/30i, "Argument specification")."""
@@ -791,10 +826,11 @@ class FanucRunner:
                                      "ten sets of I J K)", lineno, line, col, end)
                 n = 4 + 3 * k + "IJK".index(letter)
             else:
-                n = ARGUMENTS_I.get(letter)
-                if n is None:
+                spec_one = ARGUMENTS_I.get(letter)
+                if spec_one is None:
                     raise self.error("GC204", f"{text}: {letter} cannot be a macro argument (G, L, N, O, P are not "
                                      "arguments)", lineno, line, col, end)
+                n = spec_one
             args[n] = (float(q), q)
         return args
 
@@ -810,11 +846,10 @@ class FanucRunner:
 
     def locate(self, program: int, lineno: int, line: str, what: str) -> tuple[_Source, tuple[int, int]]:
         """Where program ``O<program>`` begins: in the calling file, the main file, else the library folder."""
-        for source in dict.fromkeys((self.frames[-1].source, self.main)):
-            source.index()
-            body = source.programs.get(program)
+        for here in dict.fromkeys((self.frames[-1].source, self.main)):
+            body = here.program(program)
             if body is not None:
-                return source, body
+                return here, body
         source = self.library_sources.get(program)
         if source is None and self.library is not None:
             path = _library_file(self.library, program)
@@ -826,16 +861,16 @@ class FanucRunner:
             where = (f" nor in the library {self.library}" if self.library is not None
                      else " (pass --library DIR to search a folder of subprogram files)")
             raise self.error("GC317", f"{what}: no program O{program} in this file{where}", lineno, line)
-        source.index()
-        return source, source.programs.get(program, (0, 1))
+        return source, source.program(program) or (0, 1)
 
-    def call_sub(self, program: int, count: int, ret, lineno: int, line: str, what: str, custom: bool = False):
+    def call_sub(self, program: int, count: int, ret: tuple[int, int], lineno: int, line: str, what: str,
+                 custom: bool = False) -> tuple[int, int]:
         source, body = self.locate(program, lineno, line, what)
         self.push(_Frame("m98", source, program, ret, body, count, custom=custom), lineno, line)
         return body
 
-    def call_macro(self, program: int, repeats: int, args: dict, ret, lineno: int, line: str, what: str,
-                   custom: bool = False):
+    def call_macro(self, program: int, repeats: int, args: dict, ret: tuple[int, int], lineno: int, line: str,
+                   what: str, custom: bool = False) -> tuple[int, int]:
         if repeats == 0:
             return ret
         source, body = self.locate(program, lineno, line, what)
@@ -844,7 +879,7 @@ class FanucRunner:
         self.vars.push_level(args)
         return body
 
-    def return_m99(self, pword, word, lineno: int, line: str, nxt: int):
+    def return_m99(self, pword: tuple | None, word: tuple, lineno: int, line: str, nxt: int) -> tuple[int, int]:
         frame = self.frames[-1]
         col, end = word[2], word[3]
         if frame.kind == "main":
@@ -887,7 +922,7 @@ def _negated_variable(tree):
     return None
 
 
-def _target(tree, variables: FanucVariables, ctx: Context):
+def _target(tree: tuple, variables: FanucVariables, ctx: Context) -> Callable[[], int]:
     """The variable number an assignment writes (a function of no arguments)."""
     index = tree[1]
     fn = compile_tree(index, variables, ctx)
@@ -928,11 +963,11 @@ def iter_blocks(
     settings: FanucSettings | None = None,
     block_delete: bool = False,
     library: str | Path | None = None,
-    state=None,
+    state: Any = None,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     first_line: int = 1,
     first_index: int = 0,
-    lane=None,
+    lane: Callable[..., int] | None = None,
     runner_out: list | None = None,
 ) -> Iterator:
     """Execute a Fanuc program's control and yield its blocks in execution order.

@@ -22,7 +22,8 @@ variables           meaning                                                acces
 #4201-#4222         the same, block being executed                         r
 #4107-#4130 (D F   the last D F H M N T words, #4130 the G54.1 P number;   r
 H M N T P)          #4307-#4330 the same                                   r
-#5001-#5020         block end point, workpiece coordinates (no offsets)    r
+#5001-#5020         block end point, workpiece coordinates (no offsets;    r
+                    under G68/G51/G51.1/G16 the programmed point)
 #5021-#5040         current position, machine coordinates                  r
 #5041-#5060         current position, workpiece coordinates (with tool     r
                     length offset)
@@ -44,10 +45,14 @@ length geometry ``#2001-`` and wear ``#2201-``, the other way round: see
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from ...machine import WORK_OFFSETS
 from ..interpreter import INCH
 from .expr import VACANT, SystemVariableUnknown
+
+if TYPE_CHECKING:
+    from .interpreter import FanucInterpreter
 
 __all__ = ["read", "write"]
 
@@ -64,30 +69,30 @@ def _exact(value: tuple) -> Fraction:
     return q if q is not None else Fraction(value[0])
 
 
-def _unknown(n: int, why: str):
+def _unknown(n: int, why: str) -> SystemVariableUnknown:
     return SystemVariableUnknown(f"#{n}", why)
 
 
-def _ranged(it, n: int) -> None:
+def _ranged(it: FanucInterpreter, n: int) -> None:
     if it.track:
         raise _unknown(n, f"reading #{n} while parameter ranges are proved: the value depends on the ranges, "
                        "and variables do not carry that dependency")
 
 
-def _units(it, q: Fraction, i: int | None) -> Fraction:
+def _units(it: FanucInterpreter, q: Fraction, i: int | None) -> Fraction:
     """A length in mm as the program reads it (inches under G20; rotary axes in degrees)."""
     if it.inch and (i is None or not it.rotary[i]):
         return q / INCH
     return q
 
 
-def _mm(it, q: Fraction, i: int | None) -> Fraction:
+def _mm(it: FanucInterpreter, q: Fraction, i: int | None) -> Fraction:
     if it.inch and (i is None or not it.rotary[i]):
         return q * INCH
     return q
 
 
-def _offset_table(n: int):
+def _offset_table(n: int) -> tuple[str, int] | None:
     """``(name, axis index)`` of a work offset variable, or None."""
     if 5201 <= n <= 5340:
         k, i = divmod(n - 5201, _STRIDE)
@@ -98,7 +103,7 @@ def _offset_table(n: int):
     return None
 
 
-def _tool_table(it, n: int):
+def _tool_table(it: FanucInterpreter, n: int) -> tuple[dict[int, Fraction], int, bool] | None:
     """``(table, register, radius)`` of a tool offset variable (memory C), or None."""
     if 2001 <= n <= 2200:
         return it.h_wear, n - 2000, False
@@ -111,7 +116,7 @@ def _tool_table(it, n: int):
     return None
 
 
-def _modal(it, group: int) -> Fraction | None:
+def _modal(it: FanucInterpreter, group: int) -> Fraction | None:
     """The G code (number) of a modal group as #4001.. read it."""
     if group == 1:
         return Fraction(it.motion, 10) if it.motion is not None else None
@@ -144,7 +149,7 @@ def _modal(it, group: int) -> Fraction | None:
     return None
 
 
-def read(it, n: int) -> tuple:
+def read(it: FanucInterpreter, n: int) -> tuple:
     """The value of system variable ``#n`` (a double and its exact shadow)."""
     axes = it.naxes
     if 5001 <= n <= 5100:
@@ -154,8 +159,8 @@ def read(it, n: int) -> tuple:
         if block == 3:
             raise _unknown(n, f"#{n} is the skip signal position (G31), which depends on the part")
         _ranged(it, n)
-        if block == 0:  # block end point in workpiece coordinates, without tool length
-            q = it.pos[i] - it.off[i]
+        if block == 0:  # block end point in workpiece coordinates, without tool length (the programmed point)
+            q = it.prog[i] if it.prog is not None else it.pos[i] - it.off[i]
         elif block == 1:
             q = it.pos[i]
         elif block == 2:
@@ -183,10 +188,10 @@ def read(it, n: int) -> tuple:
     if n == 3000:
         return VACANT
     if 4001 <= n <= 4030 or 4201 <= n <= 4230:
-        q = _modal(it, (n - 4000) % 200)
-        if q is None:
+        code = _modal(it, (n - 4000) % 200)
+        if code is None:
             raise _unknown(n, f"#{n}: the modal state of G code group {(n - 4000) % 200} is not modelled")
-        return _value(q)
+        return _value(code)
     if 4101 <= n <= 4130 or 4301 <= n <= 4330:
         letter = {7: "D", 9: "F", 11: "H", 13: "M", 14: "N", 20: "T", 30: "P"}.get((n - 4100) % 200)
         if letter is None:
@@ -199,18 +204,20 @@ def read(it, n: int) -> tuple:
             return _value(Fraction(it.tool_selected))
         if letter == "P":
             return _value(Fraction(int(it.wcs[6:]))) if it.wcs.startswith("G54.1P") else VACANT
-        q = it.last.get(letter)
-        return VACANT if q is None else _value(q)
+        last = it.last.get(letter)
+        return VACANT if last is None else _value(last)
     raise _unknown(n, f"system variable #{n} is not one nczones models (specs/fanuc.md lists those it does)")
 
 
-def write(it, n: int, value: tuple) -> None:
+def write(it: FanucInterpreter, n: int, value: tuple) -> None:
     """Set system variable ``#n``: offsets change the motion that follows."""
     where = _offset_table(n)
     if where is not None:
         name, i = where
         if i >= it.naxes:
             raise _unknown(n, f"#{n} names axis {i + 1}; this machine has {it.naxes} axes")
+        if it.prog is not None:
+            raise _unknown(n, f"writing #{n} (a work offset) while a coordinate transform is active is not modelled")
         if value is VACANT:
             raise _unknown(n, f"#{n} = <vacant>: what a control stores for a vacant offset is not modelled")
         it.g5x[name][i] = _mm(it, _exact(value), i)
