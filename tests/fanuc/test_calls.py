@@ -140,3 +140,9 @@ def test_g66_bolt_circle_macro_on_the_machine():
                "O9010\nG1 Z#26 F100.\nG0 Z#18\nM99\n", m)
     assert pts[1:] == [(110, 50, -189), (110, 50, -204), (110, 50, -197),
                        (120, 50, -197), (120, 50, -204), (120, 50, -197)]
+
+
+def test_nested_g66_is_unknown():
+    with pytest.raises(UnsupportedGcode) as e:
+        blocks("G66 P9010 Z-5.\nG66 P9011\nM30\nO9010\nM99\nO9011\nM99\n")
+    assert e.value.code == "G66" and e.value.span.line == 2

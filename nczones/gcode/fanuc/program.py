@@ -717,6 +717,9 @@ class FanucRunner:
                                  "words)", lineno, line, values[0][2], values[0][3])
             program, repeats, args = self.call_words(values[1:], f"G{code}", lineno, line, calls[0])
             if code == 66:
+                if self.modal_call is not None:
+                    raise self.unsupported("G66", "a G66 while another G66 modal call is active (nested modal "
+                                           "calls) is not modelled", lineno, line, calls[0][2], calls[0][3])
                 self.modal_call = (program, repeats, args, len(self.frames))
                 return here
             return self.call_macro(program, repeats, args, here, lineno, line, "G65")
