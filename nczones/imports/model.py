@@ -34,7 +34,7 @@ __all__ = [
 ]
 
 #: The kinds of configuration ``nczones import-machine`` reads.
-KINDS = ("linuxcnc",)
+KINDS = ("linuxcnc", "grbl", "fanuc")
 
 #: One inch in millimetres (exact by definition).
 INCH = Fraction(254, 10)

@@ -53,6 +53,7 @@ CORPUS_CASES = [
     (_CORPUS_LINUXCNC / "gantry", "gantry_mm.ini",
      ("--tool-table", str(GOLDEN / "linuxcnc" / "mill_mm.tbl")), "gantry_mm"),
     (CORPUS / "linuxcnc" / "tests" / "trajectory-planner" / "circular-arcs" / "configs", "XZ.ini", (), "tp_XZ"),
+    (CORPUS / "grbl" / "test" / "settings", "kikigey89.settings", (), "kikigey89"),
 ]
 #: Real configurations the import must refuse, with their reason in the golden.
 CORPUS_BAD = [
@@ -98,8 +99,8 @@ BAD = _cases(bad=True)
 
 def test_enough_fixtures():
     kinds_ok = {p.parts[-1] for p, *_ in OK}
-    assert kinds_ok >= {"linuxcnc"}
-    assert len(BAD) >= 10
+    assert kinds_ok >= {"linuxcnc", "grbl", "fanuc"}
+    assert len(BAD) >= 20
 
 
 @pytest.mark.parametrize("folder,name,extra,stem", OK, ids=[f"{p.name}/{n}" for p, n, *_ in OK])
