@@ -16,9 +16,10 @@ from pathlib import Path
 from .. import cli
 from ..errors import InvalidArgument
 from . import KINDS, import_machine
+from .export import EXPORT_KINDS
 from .render import KIND_LABELS
 
-__all__ = ["register_import", "summary"]
+__all__ = ["register_import", "register_export", "summary"]
 
 
 def _write(path: str, text: str) -> None:
@@ -84,3 +85,59 @@ def register_import(sub: argparse._SubParsersAction) -> None:
 
 
 cli.REGISTRARS.append(register_import)
+
+
+def _run_export(args: argparse.Namespace) -> int:
+    from ..machine import load_machine
+    from .export import export_zones
+
+    machine = load_machine(args.machine_file)
+    result = export_zones(machine, args.kind, units=args.units, increment=args.increment,
+                          include_machine=args.include_machine)
+    if args.output:
+        _write(args.output, result.text)
+        report = sys.stdout
+    else:
+        sys.stdout.write(result.text)
+        report = sys.stderr
+    target = f" -> {args.output}" if args.output else ""
+    what = {"linuxcnc": "LinuxCNC soft limits", "fanuc": "Fanuc stored stroke checks"}[result.kind]
+    if result.exact:
+        verdict = "the control holds the allowed set exactly"
+    else:
+        verdict = (f"the control cannot hold every zone and allows more than the machine file "
+                   f"({len(result.notes)} note{'s' if len(result.notes) != 1 else ''}); the proof before the run "
+                   "covers the difference")
+    print(f"{machine.source}: {what}{target}: {verdict}", file=report)
+    for note in result.notes:
+        print(note.render(), file=report)
+    return cli.EXIT_OK if result.exact else cli.EXIT_FAIL
+
+
+def register_export(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "export-zones",
+        help="write the soft limits (LinuxCNC) or stored stroke checks (Fanuc) that hold a machine file's zones",
+        description="Write the settings a control can hold for a machine file's zones: LinuxCNC's soft limits "
+        "(one box), a Fanuc control's stored stroke checks (a box and two forbidden boxes). What the control cannot "
+        "hold (stepped tables, polygons, tool-tip zones, more forbidden areas) is left out and said; the settings "
+        "then allow more than the machine file. Exit 0 when they hold the allowed set exactly, 1 when they allow "
+        "more, 2 on bad input.",
+    )
+    p.add_argument("machine_file", metavar="M.toml", help="the machine file")
+    p.add_argument("--kind", choices=EXPORT_KINDS, required=True, help="the control to write settings for")
+    p.add_argument("-o", "--output", metavar="FILE",
+                   help="write the settings here and the notes to standard output (default: the settings to "
+                   "standard output, the notes to standard error)")
+    p.add_argument("--units", choices=("mm", "inch"), default="mm",
+                   help="LinuxCNC: the INI's LINEAR_UNITS, the unit of the values written (default: mm)")
+    p.add_argument("--increment", metavar="MM", default="0.001",
+                   help="Fanuc: the control's least command increment in mm (deg), which integer parameter values "
+                   "count: 0.01 (IS-A), 0.001 (IS-B, the default), 0.0001 (IS-C), 0.00001, 0.000001")
+    p.add_argument("--include-machine", action="store_true",
+                   help="also write the axis names, rapid rates and reference position (LinuxCNC: MAX_VELOCITY, "
+                   "HOME; Fanuc: 1020, 1420, 1240), so the text describes the whole machine and imports back")
+    p.set_defaults(handler=_run_export)
+
+
+cli.REGISTRARS.append(register_export)

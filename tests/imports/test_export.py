@@ -1,0 +1,179 @@
+"""``export-zones``: what a control can hold, and the round trip export -> import.
+
+The allowed sets are compared exactly: for box zones, membership only changes
+at the boundary values, so testing every cell of the grid they cut (each
+boundary value, a point between two neighbours, a point beyond the ends) on
+every axis decides whether two sets are equal.
+"""
+
+from __future__ import annotations
+
+import itertools
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.cli import main
+from nczones.imports import import_text
+from nczones.imports.export import export_zones
+from nczones.machine import Machine, parse_machine
+from nczones.testing import machines
+
+F = Fraction
+
+
+def _cells(values: set[Fraction]) -> list[Fraction]:
+    vs = sorted(values)
+    if not vs:
+        return [F(0)]
+    points = [vs[0] - 1, vs[-1] + 1]
+    points += vs
+    points += [(a + b) / 2 for a, b in zip(vs, vs[1:])]
+    return points
+
+
+def _grid(*ms: Machine) -> list[dict[str, Fraction]]:
+    axes = ms[0].axis_names
+    per_axis = []
+    for a in axes:
+        values: set[Fraction] = set()
+        for m in ms:
+            for z in m.zones:
+                lo, hi = z.bounds().get(a, (None, None))
+                values.update(v for v in (lo, hi) if v is not None)
+        per_axis.append(_cells(values))
+    return [dict(zip(axes, p)) for p in itertools.product(*per_axis)]
+
+
+def _same_allowed_set(a: Machine, b: Machine) -> bool:
+    return all(a.allowed.contains(p) == b.allowed.contains(p) for p in _grid(a, b))
+
+
+def _contains(big: Machine, small: Machine) -> bool:
+    return all(big.allowed.contains(p) for p in _grid(big, small) if small.allowed.contains(p))
+
+
+def _round_trip(m: Machine, kind: str) -> tuple[Machine, object]:
+    r = export_zones(m, kind, include_machine=True)
+    back = import_text(r.text, "exported.ini" if kind == "linuxcnc" else "exported.prm", kind).machine
+    return back, r
+
+
+BOXES = dict(axes=("X", "Y", "Z"), allow_kinds=("box",), tip_zones=False, tool_lengths=False)
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(m=machines(**BOXES, forbid_boxes=False))
+def test_round_trip_linuxcnc_boxes(m):
+    back, r = _round_trip(m, "linuxcnc")
+    assert r.exact and all("MAX_VELOCITY" in n.message for n in r.notes)  # 8000 mm/min is 133.3... mm/s
+    assert _same_allowed_set(m, back)
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(m=machines(**BOXES, forbid_boxes=True))
+def test_round_trip_fanuc_boxes_with_a_forbidden_box(m):
+    back, r = _round_trip(m, "fanuc")
+    assert r.exact, [n.message for n in r.notes]
+    assert _same_allowed_set(m, back)
+    assert back.axis_names == m.axis_names and back.reference == m.reference
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(m=machines(axes=("X", "Y", "Z"), allow_kinds=("stepped", "polygon", "box"), places=2), kind=st.sampled_from(["linuxcnc", "fanuc"]))
+def test_what_the_control_holds_contains_the_allowed_set(m, kind):
+    back, r = _round_trip(m, kind)
+    assert _contains(back, m)
+    kinds = {z.kind for z in m.zones}
+    if kinds & {"stepped", "polygon"} or any(z.point.value == "tip" for z in m.zones):
+        assert not r.exact and any(n.code == "EX101" for n in r.notes)
+    if r.exact:
+        assert _same_allowed_set(m, back)
+
+
+MILL = parse_machine("""
+[machine]
+name = "mill"
+axes = ["X", "Y", "Z"]
+rapid = { X = "12000", Y = "12000", Z = "8000" }
+reference = { X = "100", Y = "100", Z = "-10" }
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "0", Y = "0", Z = "-400" }
+max = { X = "800.0005", Y = "500", Z = "0" }
+[[zones]]
+name = "tool changer"
+kind = "box"
+forbid = true
+min = { X = "700", Y = "400" }
+[[zones]]
+name = "vise"
+kind = "box"
+forbid = true
+point = "tip"
+min = { X = "200", Y = "100", Z = "-400" }
+max = { X = "300", Y = "200", Z = "-300" }
+[[zones]]
+name = "clamp"
+kind = "polygon"
+forbid = true
+plane = ["X", "Y"]
+vertices = [["10", "10"], ["20", "10"], ["15", "20"]]
+""", "mill.toml")
+
+
+def test_fanuc_rounds_outwards_and_says_what_it_left_out():
+    r = export_zones(MILL, "fanuc")
+    assert not r.exact
+    assert "N01320A1P800001A2P500000A3P0" in r.text  # 800.0005 rounded up: the control allows a little more
+    assert "N01322A1P99999999A2P99999999A3P99999999" in r.text  # unbounded sides beyond stroke check 1
+    assert "N01323A1P700000A2P400000A3P-99999999" in r.text
+    codes = sorted(n.code for n in r.notes)
+    assert codes == ["EX101", "EX101", "EX102"]
+    assert "tool-tip" in " ".join(n.message for n in r.notes) and "polygon" in " ".join(n.message for n in r.notes)
+
+
+def test_linuxcnc_cannot_hold_forbidden_areas_and_converts_to_inches():
+    r = export_zones(MILL, "linuxcnc", units="inch")
+    assert not r.exact
+    assert sum(n.code == "EX101" for n in r.notes) == 3
+    # mm / 25.4 is rarely a finite decimal: rounded outwards at 1e-7 in (maximum up, minimum down)
+    assert "[AXIS_X]\nMIN_LIMIT = 0\nMAX_LIMIT = 31.4960827\n" in r.text  # 800.0005 mm = 31.49608267... in
+    assert "[AXIS_Y]\nMIN_LIMIT = 0\nMAX_LIMIT = 19.6850394\n" in r.text  # 500 mm = 19.68503937... in
+    assert "[JOINT_2]\nMIN_LIMIT = -15.7480315\nMAX_LIMIT = 0\n" in r.text  # -400 mm = -15.74803149... in
+    assert export_zones(MILL, "linuxcnc").text.count("MAX_LIMIT = 800.0005") == 2  # exact in mm
+
+
+@pytest.mark.parametrize("args,text", [
+    (["--kind", "fanuc", "--increment", "0.002"], "--increment"),
+    (["--kind", "linuxcnc", "--units", "furlong"], "--units"),
+    (["--kind", "heidenhain"], "--kind"),
+])
+def test_cli_bad_options(tmp_path, capsys, args, text):
+    m = tmp_path / "m.toml"
+    m.write_text("[machine]\naxes = [\"X\"]\nrapid = { X = \"100\" }\nreference = { X = \"0\" }\n")
+    try:
+        code = main(["export-zones", str(m), *args])
+    except SystemExit as exc:  # argparse refuses a choice before the command runs
+        code = exc.code
+    assert code == 2
+    err = capsys.readouterr().err
+    assert text in err and "Traceback" not in err
+
+
+def test_cli_exit_status_says_whether_the_control_holds_it_exactly(tmp_path, capsys):
+    exact = tmp_path / "box.toml"
+    exact.write_text('[machine]\naxes = ["X"]\nrapid = { X = "100" }\nreference = { X = "0" }\n'
+                     '[[zones]]\nname = "t"\nkind = "box"\nmin = { X = "-1" }\nmax = { X = "1" }\n')
+    assert main(["export-zones", str(exact), "--kind", "linuxcnc", "-o", str(tmp_path / "out.ini")]) == 0
+    out = capsys.readouterr().out
+    assert "holds the allowed set exactly" in out
+    assert "MIN_LIMIT = -1" in (tmp_path / "out.ini").read_text()
+    stepped = Path(__file__).resolve().parents[2] / "specs" / "machines" / "grinder.toml"
+    assert main(["export-zones", str(stepped), "--kind", "fanuc"]) == 1
+    captured = capsys.readouterr()
+    assert captured.out.startswith("%\n") and "note[EX101]" in captured.err and "stepped" in captured.err
