@@ -45,18 +45,24 @@ def summary(result, output: str | None) -> str:
             f"{notes} note{'s' if notes != 1 else ''} on what was not taken, rounded or assumed")
 
 
+def _emit(text: str, output: str | None, summary_line: str, notes) -> None:
+    """The file to ``output`` and the report to standard output, or the file to standard output and the
+    report to standard error (so the command can be redirected)."""
+    if output:
+        _write(output, text)
+        report = sys.stdout
+    else:
+        sys.stdout.write(text)
+        report = sys.stderr
+    print(summary_line, file=report)
+    for note in notes:
+        print(note.render(), file=report)
+
+
 def _run_import(args: argparse.Namespace) -> int:
     result = import_machine(args.source, args.kind, output=args.output, parameter_file=args.parameter_file,
                             tool_table=args.tool_table)
-    if args.output:
-        _write(args.output, result.text)
-        report = sys.stdout
-    else:
-        sys.stdout.write(result.text)
-        report = sys.stderr
-    print(summary(result, args.output), file=report)
-    for note in result.notes:
-        print(note.render(), file=report)
+    _emit(result.text, args.output, summary(result, args.output), result.notes)
     return cli.EXIT_OK
 
 
@@ -94,12 +100,6 @@ def _run_export(args: argparse.Namespace) -> int:
     machine = load_machine(args.machine_file)
     result = export_zones(machine, args.kind, units=args.units, increment=args.increment,
                           include_machine=args.include_machine)
-    if args.output:
-        _write(args.output, result.text)
-        report = sys.stdout
-    else:
-        sys.stdout.write(result.text)
-        report = sys.stderr
     target = f" -> {args.output}" if args.output else ""
     what = {"linuxcnc": "LinuxCNC soft limits", "fanuc": "Fanuc stored stroke checks"}[result.kind]
     if result.exact:
@@ -108,9 +108,7 @@ def _run_export(args: argparse.Namespace) -> int:
         verdict = (f"the control cannot hold every zone and allows more than the machine file "
                    f"({len(result.notes)} note{'s' if len(result.notes) != 1 else ''}); the proof before the run "
                    "covers the difference")
-    print(f"{machine.source}: {what}{target}: {verdict}", file=report)
-    for note in result.notes:
-        print(note.render(), file=report)
+    _emit(result.text, args.output, f"{machine.source}: {what}{target}: {verdict}", result.notes)
     return cli.EXIT_OK if result.exact else cli.EXIT_FAIL
 
 

@@ -25,7 +25,7 @@ from pathlib import Path
 from ..errors import SourceSpan
 from ..exact import format_decimal
 from ..machine import WORK_OFFSETS
-from .linuxcnc import MODAL_GROUPS
+from .linuxcnc import modal_changes, startup_modal
 from .model import (
     INCH,
     Collector,
@@ -310,25 +310,11 @@ def _layout(path: str, settings, c: Collector) -> str:
 
 
 def _startup_modal(startup, c: Collector) -> tuple[tuple[str, str], ...]:
-    from ..machine import DEFAULT_MODAL
-
     chosen: dict[str, tuple[str, str]] = {}
     for block, span in startup:
-        left = []
-        for letter, number in re.findall(r"([A-Za-z])\s*([-+]?\d*\.?\d*)", block):
-            code = f"{letter.upper()}{number}"
-            if letter.upper() == "G" and number:
-                code = "G" + format_decimal(Fraction(number))
-                group = next((g for g, codes in MODAL_GROUPS.items() if code in codes), None)
-                if group is not None:
-                    chosen[group] = (code, f"startup block $N={block} ({span.file}:{span.line})")
-                    continue
-            left.append(code)
-        if left:
-            c.note("IM201", f"startup block {block!r}: {' '.join(left)} not taken; the machine file's modal list "
-                   "holds distance, units, plane, work offset and feed modes (and G40, G49, G80)", span)
-    defaults = dict(zip(MODAL_GROUPS, DEFAULT_MODAL))
-    return tuple((code, how) for group, (code, how) in chosen.items() if defaults[group] != code)
+        startup_modal(block, f"startup block {block!r}", f"startup block $N={block} ({span.file}:{span.line})",
+                      span, chosen, c)
+    return modal_changes(chosen)
 
 
 def _homing(axes, homing, mask, lay, settings, how, lo) -> tuple[HomingDraft, ...]:

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from ..errors import SourceSpan
 from ..exact import MAX_ABS_LENGTH, format_decimal
-from ..machine import DEFAULT_MODAL, ROTARY_AXES, WORK_OFFSETS
+from ..machine import _MODAL_CHOICES, DEFAULT_MODAL, ROTARY_AXES, WORK_OFFSETS
 from .ini import IniEntry, IniFile, parse_ini
 from .model import (
     INCH,
@@ -34,7 +34,7 @@ from .model import (
     rounded_decimal,
 )
 
-__all__ = ["read_linuxcnc", "LETTERS", "MODAL_GROUPS"]
+__all__ = ["read_linuxcnc", "LETTERS", "MODAL_GROUPS", "startup_modal", "modal_changes"]
 
 #: LinuxCNC's axis letters in the order of its parameters (#5221 X .. #5229 W).
 LETTERS = "XYZABCUVW"
@@ -48,17 +48,8 @@ _TRUE = ("1", "true", "yes", "on")
 _FALSE = ("0", "false", "no", "off")
 _SCALE_KEYS = ("SCALE", "STEP_SCALE", "INPUT_SCALE")
 
-#: The modal groups the machine file's ``modal`` list holds (as in nczones.machine).
-MODAL_GROUPS = {
-    "distance": ("G90", "G91"),
-    "units": ("G20", "G21"),
-    "plane": ("G17", "G18", "G19"),
-    "offset": WORK_OFFSETS,
-    "feed": ("G93", "G94", "G95"),
-    "cutter": ("G40",),
-    "tool": ("G49",),
-    "cycle": ("G80",),
-}
+#: The modal groups the machine file's ``modal`` list holds.
+MODAL_GROUPS = _MODAL_CHOICES
 
 
 @dataclass
@@ -534,25 +525,35 @@ def _modal(ini: IniFile, c: Collector, unit: str, params) -> tuple[tuple[str, st
                                 f"stopped ({span.file}:{span.line})")
     e = ini.get("RS274NGC", "RS274NGC_STARTUP_CODE")
     if e is not None:
-        words = re.findall(r"([A-Za-z])\s*([-+]?\d*\.?\d*)", e.value)
-        left: list[str] = []
-        for letter, number in words:
-            word = f"{letter.upper()}{number}"
-            if letter.upper() == "G" and number:
-                try:
-                    num = Fraction(number)
-                except ValueError:
-                    left.append(word)
-                    continue
-                code = "G" + format_decimal(num)
-                group = next((g for g, codes in MODAL_GROUPS.items() if code in codes), None)
-                if group is not None:
-                    chosen[group] = (code, f"{e.describe()} ({e.where()})")
-                    continue
-            left.append(word)
-        if left:
-            c.note("IM201", f"{e.describe()}: {' '.join(left)} not taken; the machine file's modal list holds "
-                   "distance, units, plane, work offset and feed modes (and G40, G49, G80)", e.span)
+        startup_modal(e.value, e.describe(), f"{e.describe()} ({e.where()})", e.span, chosen, c)
+    return modal_changes(chosen)
+
+
+def startup_modal(block: str, label: str, how: str, span, chosen: dict[str, tuple[str, str]], c: Collector) -> None:
+    """Take the modal G codes of a start-up block into ``chosen`` (group -> (code, how)); note the rest.
+
+    >>> c = Collector(); chosen = {}
+    >>> startup_modal("G18 G020 G64 P0.01", "start-up", "start-up", None, chosen, c)
+    >>> chosen["plane"][0], chosen["units"][0], c.notes[0].message.split(";")[0]
+    ('G18', 'G20', 'start-up: G64 P0.01 not taken')
+    """
+    left: list[str] = []
+    for letter, number in re.findall(r"([A-Za-z])\s*([-+]?\d*\.?\d*)", block):
+        word = f"{letter.upper()}{number}"
+        if letter.upper() == "G" and re.fullmatch(r"\d+(?:\.\d+)?", number):
+            code = "G" + format_decimal(Fraction(number))
+            group = next((g for g, codes in MODAL_GROUPS.items() if code in codes), None)
+            if group is not None:
+                chosen[group] = (code, how)
+                continue
+        left.append(word)
+    if left:
+        c.note("IM201", f"{label}: {' '.join(left)} not taken; the machine file's modal list holds distance, units, "
+               "plane, work offset and feed modes (and G40, G49, G80)", span)
+
+
+def modal_changes(chosen: dict[str, tuple[str, str]]) -> tuple[tuple[str, str], ...]:
+    """The chosen codes that differ from the machine file's default modal state, with how each was found."""
     defaults = dict(zip(MODAL_GROUPS, DEFAULT_MODAL))
     return tuple((code, how) for group, (code, how) in chosen.items() if defaults[group] != code)
 
