@@ -13,6 +13,7 @@ lists every setting read or written, its meaning and its source.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -159,7 +160,7 @@ def import_machine(
     return import_text(text, path, kind, output=output, parameter_file=parameter_file, tool_table=tool_table)
 
 
-def _reader(kind: str):
+def _reader(kind: str) -> Callable[..., ImportedMachine] | None:
     """The reader of ``kind``, or None when this version has none."""
     import importlib
 
@@ -169,7 +170,8 @@ def _reader(kind: str):
         if exc.name == f"{__name__}.{kind}":
             return None
         raise
-    return getattr(module, f"read_{kind}")
+    reader: Callable[..., ImportedMachine] = getattr(module, f"read_{kind}")
+    return reader
 
 
 def _not_a_machine(imported: ImportedMachine, d: Diagnostic) -> Diagnostic:

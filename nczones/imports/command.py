@@ -11,11 +11,12 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Iterable
 from pathlib import Path
 
 from .. import cli
-from ..errors import InvalidArgument
-from . import KINDS, import_machine
+from ..errors import Diagnostic, InvalidArgument
+from . import KINDS, ImportResult, import_machine
 from .export import EXPORT_KINDS
 from .render import KIND_LABELS
 
@@ -29,7 +30,7 @@ def _write(path: str, text: str) -> None:
         raise InvalidArgument(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def summary(result, output: str | None) -> str:
+def summary(result: ImportResult, output: str | None) -> str:
     """One line on what was imported."""
     im = result.imported
     m = result.machine
@@ -45,7 +46,7 @@ def summary(result, output: str | None) -> str:
             f"{notes} note{'s' if notes != 1 else ''} on what was not taken, rounded or assumed")
 
 
-def _emit(text: str, output: str | None, summary_line: str, notes) -> None:
+def _emit(text: str, output: str | None, summary_line: str, notes: Iterable[Diagnostic]) -> None:
     """The file to ``output`` and the report to standard output, or the file to standard output and the
     report to standard error (so the command can be redirected)."""
     if output:

@@ -61,15 +61,19 @@ class _Notes:
             self.exact = False
 
 
+#: Per-axis bounds of a box; None is unbounded.
+Bounds = dict[str, tuple[Fraction | None, Fraction | None]]
+
+
 def _round(q: Fraction, step: Fraction, up: bool) -> Fraction:
     n = q / step
     k = -((-n.numerator) // n.denominator) if up else n.numerator // n.denominator
     return k * step
 
 
-def _held_zones(machine: Machine, notes: _Notes, forbid_slots: int) -> tuple[dict, list[BoxZone]]:
+def _held_zones(machine: Machine, notes: _Notes, forbid_slots: int) -> tuple[Bounds, list[BoxZone]]:
     """The allowed box (intersection of the allow boxes) and the forbid boxes the control can take."""
-    box: dict[str, tuple[Fraction | None, Fraction | None]] = {}
+    box: Bounds = {}
     forbids: list[BoxZone] = []
     for z in machine.zones:
         where = f"zone \"{z.name}\""
@@ -77,7 +81,7 @@ def _held_zones(machine: Machine, notes: _Notes, forbid_slots: int) -> tuple[dic
             notes.add("EX101", f"{where}: a tool-tip zone; the control's limits see the machine position only, so it "
                       "is left out (the control allows more than the machine file)")
             continue
-        if z.kind != "box":
+        if not isinstance(z, BoxZone):
             what = "a stepped limit-value table" if z.kind == "stepped" else "a polygon"
             if not z.forbid:
                 bounds = ", ".join(f"{a} [{_b(lo)}, {_b(hi)}]" for a, (lo, hi) in z.bounds().items())
@@ -102,7 +106,7 @@ def _held_zones(machine: Machine, notes: _Notes, forbid_slots: int) -> tuple[dic
     return box, forbids
 
 
-def _narrow(box, a, lo, hi) -> None:
+def _narrow(box: Bounds, a: str, lo: Fraction | None, hi: Fraction | None) -> None:
     old_lo, old_hi = box.get(a, (None, None))
     new_lo = lo if old_lo is None else old_lo if lo is None else max(lo, old_lo)
     new_hi = hi if old_hi is None else old_hi if hi is None else min(hi, old_hi)
@@ -294,7 +298,8 @@ def _fanuc(machine: Machine, notes: _Notes, step: Fraction, include_machine: boo
     out.append("N01320" + "".join(plus))
     out.append("N01321" + "".join(minus))
     for number, (z, plus_n, minus_n) in enumerate(zip(forbids, (1322, 1324), (1323, 1325)), 2):
-        p_words, m_words = [], []
+        p_words: list[str] = []
+        m_words: list[str] = []
         bounds = z.bounds()
         for k, a in enumerate(axes, 1):
             lo, hi = bounds.get(a, (None, None))

@@ -22,6 +22,7 @@ OUT, the outside, stroke check 3 (1324/1325) forbids the inside.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -98,8 +99,9 @@ def parse_listing(path: str, text: str, c: Collector) -> dict[int, Parameter]:
     return out
 
 
-def _block(path, i, body, start, block, span, c: Collector) -> Parameter | None:
-    words = []
+def _block(path: str, i: int, body: str, start: int, block: str, span: SourceSpan,
+           c: Collector) -> Parameter | None:
+    words: list[tuple[str, str, SourceSpan]] = []
     at = 0
     text = block
     while at < len(text):
@@ -249,7 +251,7 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
                 continue
             system = set_bits[0] if set_bits else "IS-B"
             inc_how[k] = f"1013 A{k} P{b[0]}: {system}"
-        elif sys_1004 is not None:
+        elif sys_1004 is not None and b1004 is not None:
             system = sys_1004
             inc_how[k] = f"1004 P{b1004[0]}: {system}"
         else:
@@ -378,7 +380,16 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     )
 
 
-def _stroke_checks(ls: _Listing, names, n_axes, length, c: Collector) -> tuple[ZoneDraft, ...]:
+def _first_span(params: dict[int, Parameter], *numbers: int) -> SourceSpan | None:
+    """The span of the first of ``numbers`` the listing has."""
+    return next((params[n].span for n in numbers if n in params), None)
+
+
+Length = Callable[..., Sourced | None]
+
+
+def _stroke_checks(ls: _Listing, names: dict[int, str], n_axes: int, length: Length,
+                   c: Collector) -> tuple[ZoneDraft, ...]:
     zones: list[ZoneDraft] = []
     params = ls.params
 
@@ -411,7 +422,7 @@ def _stroke_checks(ls: _Listing, names, n_axes, length, c: Collector) -> tuple[Z
         lms = ls.bit(1300, 2)
         if lms is not None and not lms[0]:
             c.note("IM201", "parameters 1326/1327 are not used: 1300 #2 LMS = 0 (the EXLM signal cannot switch "
-                   "stroke check 1)", params.get(1326, params.get(1327)).span)
+                   "stroke check 1)", _first_span(params, 1326, 1327))
         else:
             lo, hi, _ = box(1326, 1327, every)
             if lo:
@@ -428,12 +439,12 @@ def _stroke_checks(ls: _Listing, names, n_axes, length, c: Collector) -> tuple[Z
         off = sorted(every - on)
         if not on:
             c.note("IM201", f"parameters {plus}/{minus} ({label}): 1310 #{bit} OT{number} is 0 on every axis, so the "
-                   "control checks it nowhere; no zone taken", params.get(plus, params.get(minus)).span)
+                   "control checks it nowhere; no zone taken", _first_span(params, plus, minus))
             continue
         lo, hi, _ = box(plus, minus, on)
         if not lo or all(v.value == 0 for v in [*lo.values(), *hi.values()]):
             c.note("IM201", f"parameters {plus}/{minus} ({label}) are 0 on every checked axis: the area is not set, "
-                   "no zone taken", params.get(plus, params.get(minus)).span)
+                   "no zone taken", _first_span(params, plus, minus))
             continue
         outside = number == 2 and out is not None and out[0]
         comment = [f"stored {label}: {minus} (minus) to {plus} (plus), the "
@@ -449,7 +460,8 @@ def _stroke_checks(ls: _Listing, names, n_axes, length, c: Collector) -> tuple[Z
     return tuple(zones)
 
 
-def _homing(ls: _Listing, names, n_axes, length, increment, reference, c: Collector) -> tuple[HomingDraft, ...]:
+def _homing(ls: _Listing, names: dict[int, str], n_axes: int, length: Length, increment: dict[int, Fraction],
+            reference: dict[str, Sourced], c: Collector) -> tuple[HomingDraft, ...]:
     params = ls.params
     if 1850 not in params and 1821 not in params:
         return ()
@@ -487,8 +499,7 @@ def _homing(ls: _Listing, names, n_axes, length, increment, reference, c: Collec
         missing = ["dog_position", "dog_length", "detector_phase"] + (["grid_pitch"] if 1821 not in params else [])
         drafts.append(HomingDraft(a, tuple(fields), tuple(missing)))
     if drafts:
-        span = (params.get(1850) or params.get(1821)).span
         c.note("IM201", f"reference return ({' '.join(d.axis for d in drafts)}): the grid shift and grid are written "
                f"commented out in [homing.<axis>]; the section also needs {', '.join(drafts[0].missing)}, which "
-               "are not parameters (the dog is mounted on the machine)", span)
+               "are not parameters (the dog is mounted on the machine)", _first_span(params, 1850, 1821))
     return tuple(drafts)

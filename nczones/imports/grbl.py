@@ -19,6 +19,7 @@ apart by the ``$100`` settings or, without them, by the comments Grbl prints.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from fractions import Fraction
 from pathlib import Path
 
@@ -52,6 +53,9 @@ LAYOUTS = {
                 "report_inches": 19, "soft": 23, "hard": 24, "homing": 25, "homing_dir": 26,
                 "homing_feed": 27, "homing_seek": 28, "pulloff": 30},
 }
+#: A setting as read: its value, the text written, the description Grbl printed beside it, where it stands.
+Setting = tuple[Fraction, str, str | None, SourceSpan]
+
 _LAYOUT_NAMES = {"1.1": "Grbl 0.9/1.1 ($100-$132)",
                  "0.9-dev": "Grbl 0.9 development layout of 2013-2014 ($0-$11 per axis)"}
 
@@ -77,7 +81,7 @@ def _setting_how(n: int, raw: str, comment: str | None) -> str:
 
 def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
     """Read a Grbl ``$$`` dump (and ``$#`` lines when present); see the module docstring."""
-    settings: dict[int, tuple[Fraction, str, str | None, SourceSpan]] = {}
+    settings: dict[int, Setting] = {}
     params: dict[str, tuple[list[Fraction], SourceSpan]] = {}
     startup: list[tuple[str, SourceSpan]] = []
     for i, line in enumerate(text.lstrip("\ufeff").split("\n"), 1):
@@ -120,8 +124,12 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
     c.raise_if_failed()
     lay = LAYOUTS[layout]
 
-    def get(key: str, axis: int = 0):
+    def get(key: str, axis: int = 0) -> Setting | None:
         return settings.get(lay[key] + axis)
+
+    def need(key: str, axis: int = 0) -> Setting:
+        """A setting the checks above have made sure of."""
+        return settings[lay[key] + axis]
 
     def how(key: str, axis: int = 0) -> str:
         q, raw, comment, _ = settings[lay[key] + axis]
@@ -140,12 +148,12 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
     c.raise_if_failed()
 
     def flag(key: str) -> bool:
-        s = get(key)
-        if s is None:
+        setting = get(key)
+        if setting is None:
             return False
-        if s[0] not in (0, 1):
-            c.error("IM105", f"{how(key)}: a boolean setting is 0 or 1", s[3])
-        return s[0] == 1
+        if setting[0] not in (0, 1):
+            c.error("IM105", f"{how(key)}: a boolean setting is 0 or 1", setting[3])
+        return bool(setting[0] == 1)
 
     soft, homing = flag("soft"), flag("homing")
     mask_s = get("homing_dir")
@@ -161,7 +169,7 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
     home: dict[str, Sourced] = {}
     steps: dict[str, Fraction] = {}
     for i, a in enumerate(axes):
-        q, _, _, span = get("rate", i)
+        q, _, _, span = need("rate", i)
         if q <= 0:
             c.error("IM108", f"{how('rate', i)}: the max rate must be greater than 0", span)
         elif in_range(c, q, how("rate", i), span):
@@ -186,7 +194,7 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
                            "machine file's pulse range (at most 1)", st[3])
                 else:
                     pulse[a] = Sourced(p, text_how, st[3])
-        travel, _, _, span = get("travel", i)
+        travel, _, _, span = need("travel", i)
         if travel < 0:
             c.error("IM108", f"{how('travel', i)}: max travel is a length, not negative (Grbl stores it negated "
                      "itself)", span)
@@ -244,9 +252,9 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
                 for i, a in enumerate(axes)}
 
     for name in WORK_OFFSETS[:6]:
-        p = point(name)
-        if p is not None and any(v.value for v in p.values()):
-            offsets[name] = {a: v for a, v in p.items() if v.value}
+        work = point(name)
+        if work is not None and any(v.value for v in work.values()):
+            offsets[name] = {a: v for a, v in work.items() if v.value}
     g28 = point("G28")
     if g28 is not None:
         reference = g28
@@ -268,8 +276,8 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
     if "TLO" in params and any(params["TLO"][0]):
         c.note("IM201", "a tool length offset (G43.1) is in effect; the machine file's tool lengths are registers "
                "(G43 H), so it is not taken", params["TLO"][1])
-    for values in [reference, start, *offsets.values()]:
-        for v in values.values():
+    for positions in [reference, start, *offsets.values()]:
+        for v in positions.values():
             in_range(c, v.value, v.how, v.span)
     c.raise_if_failed()
 
@@ -281,7 +289,7 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
     if homing_drafts:
         c.note("IM201", f"homing ({' '.join(h.axis for h in homing_drafts)}): not taken; the machine file's "
                f"[homing.<axis>] also needs {', '.join(homing_drafts[0].missing)} (Grbl homes to the limit "
-               "switch alone); written commented out", get("homing")[3], file=path)
+               "switch alone); written commented out", need("homing")[3], file=path)
     name = Path(path).stem
     return ImportedMachine(
         kind="grbl", source=path, name=name, name_how="the file name",
@@ -294,7 +302,7 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
     )
 
 
-def _layout(path: str, settings, c: Collector) -> str:
+def _layout(path: str, settings: dict[int, Setting], c: Collector) -> str:
     if any(n >= 100 for n in settings):
         return "1.1"
     comments = {n: (s[2] or "").lower() for n, s in settings.items()}
@@ -309,7 +317,7 @@ def _layout(path: str, settings, c: Collector) -> str:
     return "1.1"
 
 
-def _startup_modal(startup, c: Collector) -> tuple[tuple[str, str], ...]:
+def _startup_modal(startup: list[tuple[str, SourceSpan]], c: Collector) -> tuple[tuple[str, str], ...]:
     chosen: dict[str, tuple[str, str]] = {}
     for block, span in startup:
         startup_modal(block, f"startup block {block!r}", f"startup block $N={block} ({span.file}:{span.line})",
@@ -317,7 +325,8 @@ def _startup_modal(startup, c: Collector) -> tuple[tuple[str, str], ...]:
     return modal_changes(chosen)
 
 
-def _homing(axes, homing, mask, lay, settings, how, lo) -> tuple[HomingDraft, ...]:
+def _homing(axes: tuple[str, ...], homing: bool, mask: int, lay: dict[str, int], settings: dict[int, Setting],
+            how: Callable[..., str], lo: dict[str, Sourced]) -> tuple[HomingDraft, ...]:
     if not homing:
         return ()
     out = []

@@ -16,6 +16,7 @@ values the import reads needs them.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -81,7 +82,7 @@ def parse_ini(path: str, text: str, c: Collector) -> IniFile:
     return IniFile(path, entries, sections)
 
 
-def _logical_lines(text: str):
+def _logical_lines(text: str) -> Iterator[tuple[int, str, str]]:
     """(line number, joined text, first physical line) with ``\\`` continuations joined."""
     lines = text.split("\n")
     if lines and lines[-1] == "":
@@ -101,7 +102,8 @@ def _logical_lines(text: str):
         i += 1
 
 
-def _parse(path, text, c, entries, sections, stack, current) -> None:
+def _parse(path: str, text: str, c: Collector, entries: list[IniEntry], sections: dict[str, SourceSpan],
+           stack: list[str], current: list[str | None]) -> None:
     for lineno, line, first in _logical_lines(text.lstrip("\ufeff")):
         if line.startswith("#INCLUDE"):
             _include(path, lineno, line, first, c, entries, sections, stack, current)
@@ -140,7 +142,8 @@ def _parse(path, text, c, entries, sections, stack, current) -> None:
         entries.append(IniEntry(current[0], key, value, span))
 
 
-def _include(path, lineno, line, first, c, entries, sections, stack, current) -> None:
+def _include(path: str, lineno: int, line: str, first: str, c: Collector, entries: list[IniEntry],
+             sections: dict[str, SourceSpan], stack: list[str], current: list[str | None]) -> None:
     arg = line[len("#INCLUDE"):]
     if not arg[:1].isspace() or not arg.strip():
         c.error("IM102", "#INCLUDE needs a blank and a file name after it", line_span(path, lineno, first))

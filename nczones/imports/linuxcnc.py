@@ -12,6 +12,7 @@ converted from the machine units (``LINEAR_UNITS``) to mm exactly.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -224,24 +225,25 @@ def read_linuxcnc(
     zone_min: dict[str, Sourced] = {}
     zone_max: dict[str, Sourced] = {}
     for a in axes:
-        for key, side, tighter in (("MIN_LIMIT", zone_min, lambda new, old: new > old),
-                                   ("MAX_LIMIT", zone_max, lambda new, old: new < old)):
-            candidates = [e for e in [axis_entry(a, key)] if e is not None] + joint_entries(a, key)
+        limit_sides: tuple[tuple[str, dict[str, Sourced], Callable[[Fraction, Fraction], bool]], ...] = (
+            ("MIN_LIMIT", zone_min, lambda new, old: new > old), ("MAX_LIMIT", zone_max, lambda new, old: new < old))
+        for key, side, tighter in limit_sides:
+            limit_entries = [e for e in [axis_entry(a, key)] if e is not None] + joint_entries(a, key)
             best: Sourced | None = None
-            for e in candidates:
-                v = converted(e, a)
+            for le in limit_entries:
+                v = converted(le, a)
                 if v is None:
                     continue
                 if abs(v.value) > MAX_ABS_LENGTH:
-                    c.note("IM203", f"{e.describe()}: beyond the machine file's range (magnitude "
+                    c.note("IM203", f"{le.describe()}: beyond the machine file's range (magnitude "
                            f"{format_decimal(MAX_ABS_LENGTH)}), taken as no limit (LinuxCNC's own default for "
-                           "no limit is 1e99)", e.span)
+                           "no limit is 1e99)", le.span)
                     continue
                 if best is None or tighter(v.value, best.value):
-                    if best is not None and e.section.startswith("JOINT_"):
-                        c.note("IM203", f"{e.describe()} is tighter than the axis limit "
+                    if best is not None and le.section.startswith("JOINT_"):
+                        c.note("IM203", f"{le.describe()} is tighter than the axis limit "
                                f"{format_decimal(best.value)}; taken, since motion stops at the joint limit "
-                               "(LinuxCNC's configuration check calls this an error)", e.span)
+                               "(LinuxCNC's configuration check calls this an error)", le.span)
                     best = v
             if best is not None:
                 side[a] = best
@@ -263,9 +265,9 @@ def read_linuxcnc(
     rapid: dict[str, Sourced] = {}
     for a in axes:
         candidates: list[Sourced] = []
-        e = axis_entry(a, "MAX_VELOCITY")
-        if e is not None:
-            v = converted(e, a, per_min=True)
+        ve = axis_entry(a, "MAX_VELOCITY")
+        if ve is not None:
+            v = converted(ve, a, per_min=True)
             if v is not None:
                 candidates.append(v)
         else:
@@ -287,26 +289,25 @@ def read_linuxcnc(
             if v.value <= 0:
                 c.error("IM108", f"{v.how}: a maximum velocity must be greater than 0", v.span)
         if good:
-            best = min(good, key=lambda v: v.value)
-            if in_range(c, best.value, best.how, best.span):
-                rapid[a] = best
+            slowest = min(good, key=lambda v: v.value)
+            if in_range(c, slowest.value, slowest.how, slowest.span):
+                rapid[a] = slowest
 
     # home positions (where homing leaves the axis)
     home: dict[str, Sourced] = {}
     traj_home = ini.get("TRAJ", "HOME")
     for a in axes:
         if identity or old_style:
-            found = [axis_entry(a, "HOME")] if old_style else joint_entries(a, "HOME")
-            found = [e for e in found if e is not None]
+            found = [e for e in ([axis_entry(a, "HOME")] if old_style else joint_entries(a, "HOME")) if e is not None]
             if found:
                 v = converted(found[0], a)
                 if v is not None:
                     home[a] = v
                 for other in found[1:]:
-                    w = converted(other, a)
-                    if v is not None and w is not None and w.value != v.value:
+                    other_home = converted(other, a)
+                    if a in home and other_home is not None and other_home.value != home[a].value:
                         c.note("IM201", f"{other.describe()}: differs from {found[0].describe()}; the machine "
-                               f"file has one home position per axis, {a}{format_decimal(v.value)} is taken",
+                               f"file has one home position per axis, {a}{format_decimal(home[a].value)} is taken",
                                other.span)
             else:
                 home[a] = Sourced(Fraction(0), f"no HOME for axis {a}: LinuxCNC's default 0")
@@ -434,7 +435,7 @@ def read_linuxcnc(
             c.note("IM201", f"{wr.describe()}: a wrapped rotary axis (0-360 degrees, moves the short way); the "
                    "machine file's rotary axes do not wrap", wr.span)
 
-    homing = _homing(info, axes, old_style, identity, homing_entry, converted, c)
+    homing = _homing(axes, old_style, identity, homing_entry, converted, c)
 
     name_e = ini.get("EMC", "MACHINE")
     name = name_e.value if name_e is not None and name_e.value else Path(path).stem
@@ -463,7 +464,11 @@ def read_linuxcnc(
     )
 
 
-def _parameters(ini: IniFile, c: Collector, override: str | None) -> tuple[dict[int, tuple[Fraction, SourceSpan]], str]:
+#: Parameter number -> (value, where it stands in the parameter file).
+Params = dict[int, tuple[Fraction, SourceSpan]]
+
+
+def _parameters(ini: IniFile, c: Collector, override: str | None) -> tuple[Params, str]:
     """The parameter file's values by number; empty (with a note) when there is no file."""
     base = Path(ini.path).parent
     if override is not None:
@@ -484,7 +489,7 @@ def _parameters(ini: IniFile, c: Collector, override: str | None) -> tuple[dict[
             return {}, str(target)
     text = read_source(target, "parameter file", "IM109")
     vpath = str(target)
-    out: dict[int, tuple[Fraction, SourceSpan]] = {}
+    out: Params = {}
     last = 0
     for i, line in enumerate(text.split("\n"), 1):
         stripped = line.strip()
@@ -513,7 +518,7 @@ def _parameters(ini: IniFile, c: Collector, override: str | None) -> tuple[dict[
     return out, vpath
 
 
-def _modal(ini: IniFile, c: Collector, unit: str, params) -> tuple[tuple[str, str], ...]:
+def _modal(ini: IniFile, c: Collector, unit: str, params: Params) -> tuple[tuple[str, str], ...]:
     chosen: dict[str, tuple[str, str]] = {}
     if unit == "in":
         chosen["units"] = ("G20", "[TRAJ] LINEAR_UNITS = inch: LinuxCNC starts in the machine's units")
@@ -529,7 +534,8 @@ def _modal(ini: IniFile, c: Collector, unit: str, params) -> tuple[tuple[str, st
     return modal_changes(chosen)
 
 
-def startup_modal(block: str, label: str, how: str, span, chosen: dict[str, tuple[str, str]], c: Collector) -> None:
+def startup_modal(block: str, label: str, how: str, span: SourceSpan | None, chosen: dict[str, tuple[str, str]],
+                  c: Collector) -> None:
     """Take the modal G codes of a start-up block into ``chosen`` (group -> (code, how)); note the rest.
 
     >>> c = Collector(); chosen = {}
@@ -558,7 +564,8 @@ def modal_changes(chosen: dict[str, tuple[str, str]]) -> tuple[tuple[str, str], 
     return tuple((code, how) for group, (code, how) in chosen.items() if defaults[group] != code)
 
 
-def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ...], lin: tuple[Fraction, str]):
+def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ...],
+           lin: tuple[Fraction, str]) -> tuple[dict[int, Sourced], dict[int, Sourced]]:
     lengths: dict[int, Sourced] = {}
     diameters: dict[int, Sourced] = {}
     base = Path(ini.path).parent
@@ -638,7 +645,9 @@ def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ..
     return lengths, diameters
 
 
-def _homing(info, axes, old_style, identity, homing_entry, converted, c: Collector) -> tuple[HomingDraft, ...]:
+def _homing(axes: tuple[str, ...], old_style: bool, identity: bool,
+            homing_entry: Callable[[str, str], IniEntry | None], converted: Callable[..., Sourced | None],
+            c: Collector) -> tuple[HomingDraft, ...]:
     drafts = []
     if not (identity or old_style):
         return ()

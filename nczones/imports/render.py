@@ -113,12 +113,13 @@ def render_toml(im: ImportedMachine) -> str:
                     out.append(f"#   {name}.{a}: {_clean(_how(values[a]))}")
             items = ", ".join(f"{a} = {_q(values[a].value)}" for a in im.axes if a in values)
             out.append(f"{_s(name) if '.' in name else name} = {{ {items} }}")
-    for header, prefix, values in (("tool_lengths", "H", im.tool_lengths), ("tool_diameters", "T", im.tool_diameters)):
-        if values:
+    for header, prefix, registers in (("tool_lengths", "H", im.tool_lengths),
+                                      ("tool_diameters", "T", im.tool_diameters)):
+        if registers:
             out.append("")
             out.append(f"[{header}]")
-            for n in sorted(values):
-                out.append(_line(f"{prefix}{n} = {_q(values[n].value)}", _how(values[n])))
+            for n in sorted(registers):
+                out.append(_line(f"{prefix}{n} = {_q(registers[n].value)}", _how(registers[n])))
     for z in im.zones:
         _zone(out, im.axes, z)
     for h in im.homing:
@@ -127,13 +128,13 @@ def render_toml(im: ImportedMachine) -> str:
                    f"{', '.join(h.missing)}, which the source does not give.")
         out.append("# What the source says, in the section's terms (complete it and remove the '#'s to use it):")
         out.append(f"# [homing.{h.axis}]")
-        for key, value, how in h.fields:
-            text = _q(value.value) if isinstance(value, Sourced) else value
-            comment = _how(value) if isinstance(value, Sourced) else how
-            out.append("# " + _line(f"{key} = {text}", comment))
+        for key, field_value, how in h.fields:
+            shown = _q(field_value.value) if isinstance(field_value, Sourced) else field_value
+            comment = _how(field_value) if isinstance(field_value, Sourced) else how
+            out.append("# " + _line(f"{key} = {shown}", comment))
     if im.notes:
         out.append("")
         out.append("# Notes: what was not taken, rounded or assumed")
-        for n in im.notes:
-            out.append(f"#   {_clean(n.location())}: {n.code}: {_clean(n.message)}")
+        for note in im.notes:
+            out.append(f"#   {_clean(note.location())}: {note.code}: {_clean(note.message)}")
     return "\n".join(out) + "\n"
