@@ -45,7 +45,7 @@ from .model import (
 __all__ = ["read_fanuc", "Parameter", "parse_listing", "BIT_PARAMETERS"]
 
 #: Bit parameters the import reads (their values must be 8 binary digits).
-BIT_PARAMETERS = frozenset({0, 1001, 1004, 1006, 1013, 1300, 1310, 1401, 3401, 3402})
+BIT_PARAMETERS = frozenset({0, 1001, 1004, 1006, 1013, 1300, 1310, 1401, 3401, 3402, 5006, 5101, 5400, 6001, 6004})
 
 #: Least command increment per increment system (1004 / 1013 bits), metric (mm, deg) and inch.
 _INCREMENTS = {
@@ -234,6 +234,7 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     inch = bool(inm and inm[0])
     inc_how: dict[int, str] = {}
     increment: dict[int, Fraction] = {}
+    inc_system: dict[int, str] = {}
     sys_1004 = None
     b1004 = ls.bits(1004)
     if b1004 is not None:
@@ -257,6 +258,7 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
         else:
             system = "IS-B"
             inc_how[k] = "no 1004 or 1013: IS-B assumed"
+        inc_system[k] = system
         metric_inc, inch_inc = _INCREMENTS[system]
         rotary = names[k] in ROTARY_AXES
         increment[k] = inch_inc * INCH if inch and not rotary else metric_inc
@@ -325,14 +327,6 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     if 1240 not in params:
         c.note("IM203", "no parameter 1240 (the reference position): taken as machine zero on every axis",
                file=path)
-    for number, name in ((1241, "second"), (1242, "third"), (1243, "fourth")):
-        vs = {names[k]: length(number, k) for k in range(1, n_axes + 1)}
-        differing = [(a, v) for a, v in vs.items() if v is not None and a in reference and v.value != reference[a].value]
-        if differing:
-            pos = " ".join(f"{a}{format_decimal(v.value)}" for a, v in vs.items() if v is not None)
-            c.note("IM201", f"parameter {number}: the {name} reference position {pos} differs from the first; the "
-                   "machine file has one reference position (G30 goes there too)", differing[0][1].span)
-
     zones = _stroke_checks(ls, names, n_axes, length, c)
 
     # modal state at power-on and decimal-point input
@@ -343,19 +337,19 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     ini = ls.bit(0, 2)
     if ini is not None and ini[0]:
         modal.append(("G20", f"0000 #2 INI = 1: input in inches ({ini[1].file}:{ini[1].line})"))
-    dpi = ls.bit(3401, 0)
-    if dpi is not None:
-        meaning = ("calculator-type: X100 means 100 mm" if dpi[0]
-                   else f"an axis word without a decimal point counts least input increments: X100 means "
-                   f"{format_decimal(100 * increment[1])} mm on axis {names[1]}")
-        c.note("IM201", f"parameter 3401 #0 DPI = {int(dpi[0])} ({meaning}); the machine file has no decimal-point "
-               "setting, so programs are read with decimal points as written (calculator-type)", dpi[1])
     ipr = ls.bit(1004, 7)
     if ipr is not None and ipr[0]:
         c.note("IM201", "parameter 1004 #7 IPR = 1: values without a decimal point are ten times the least input "
                "increment; the machine file has no place for it", ipr[1])
-    c.note("IM201", "a Fanuc control: the machine file has no dialect setting yet, so programs for it are read as "
-           "nczones reads RS-274 (LinuxCNC's dialect); Fanuc-only codes end as unknown or errors", file=path)
+    settings = _fanuc_settings(ls, names, n_axes, inc_system, bool(ini and ini[0]), c)
+    macros = _macros(ls, c)
+    references: list[tuple[str, dict[str, Sourced]]] = []
+    for number, n in ((1241, 2), (1242, 3), (1243, 4)):
+        if number in params:
+            vs = {names[k]: v for k in range(1, n_axes + 1) if (v := length(number, k)) is not None}
+            for a in axes:
+                vs.setdefault(a, Sourced(Fraction(0), f"no {number} for axis {a}: the control's default 0"))
+            references.append((f"machine.reference_{n}", vs))
 
     lrp = ls.bit(1401, 1)
     if lrp is None:
@@ -377,7 +371,105 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
         rapid=frozen(rapid), reference=frozen(reference),
         rapid_mode=rapid_mode,
         modal=tuple(modal), zones=zones, homing=homing, notes=tuple(c.notes),
+        extra=(("dialect", '"fanuc"', "a Fanuc control: programs are read in the Fanuc dialect"),),
+        axis_tables=tuple((name, frozen(vs)) for name, vs in references),
+        tables=tuple((name, rows) for name, rows in (("fanuc", settings), ("macros", macros)) if rows),
     )
+
+
+Row = tuple[str, str, str]
+
+
+def _fanuc_settings(ls: _Listing, names: dict[int, str], n_axes: int, systems: dict[int, str], inch_input: bool,
+                    c: Collector) -> tuple[Row, ...]:
+    """The ``[fanuc]`` table: the parameters nczones' Fanuc dialect models (``specs/fanuc.md``)."""
+    rows: list[Row] = []
+
+    def where(span: SourceSpan) -> str:
+        return f"({span.file}:{span.line})"
+
+    dpi = ls.bit(3401, 0)
+    if dpi is not None:
+        rows.append(("decimal_point_input", '"calculator"' if dpi[0] else '"increment"',
+                     f"3401 #0 DPI = {int(dpi[0])}: " + ("X100 means 100 mm" if dpi[0] else
+                                                        "X100 counts least input increments") + f" {where(dpi[1])}"))
+    used = sorted(set(systems.values()))
+    if len(used) == 1 and used[0] in ("IS-A", "IS-B", "IS-C"):
+        if ls.params.get(1004) is not None or ls.params.get(1013) is not None:
+            rows.append(("increment_system", f'"{used[0]}"', "1004 / 1013: the least input increment"))
+    elif used:
+        c.note("IM201", f"increment systems {', '.join(f'{names[k]} {systems[k]}' for k in sorted(systems))}: the "
+               "machine file's increment_system is one of IS-A, IS-B, IS-C for every axis, so it is not set",
+               _first_span(ls.params, 1013, 1004))
+    path_system = systems.get(1, "IS-B")
+    step = _INCREMENTS[path_system][1 if inch_input else 0] * (INCH if inch_input else 1)
+    for number, key in ((5114, "g73_retract"), (5115, "g83_clearance")):
+        p = ls.params.get(number)
+        if p is None or p.value is None:
+            continue
+        keyword, text, span = p.value
+        q = c.real(text, f"parameter {number}", span)
+        if q is None:
+            continue
+        if keyword == "I" or ("." in text and inch_input and keyword == "P"):
+            value, how = q * INCH, f"{number} {keyword}{text} in, x 25.4"
+        elif "." in text or keyword == "M":
+            value, how = q, f"{number} {keyword}{text} mm"
+        else:
+            value, how = q * step, f"{number} P{text} x {format_decimal(step)} mm (least input increment)"
+        if value < 0:
+            c.error("IM108", f"parameter {number} P{text}: a {key.replace('_', ' ')} is not negative", span)
+            continue
+        rows.append((key, f'"{format_decimal(value)}"', f"{how} {where(span)}"))
+    rd1, rd2 = ls.bit(5101, 4), ls.bit(5101, 5)
+    if rd1 is not None and rd2 is not None:
+        shift = {(False, False): "+X", (True, False): "-X", (False, True): "+Y", (True, True): "-Y"}[(rd1[0], rd2[0])]
+        rows.append(("boring_shift", f'"{shift}"', f"5101 #4 RD1 = {int(rd1[0])}, #5 RD2 = {int(rd2[0])} "
+                     f"{where(rd1[1])}"))
+    rin, scr = ls.bit(5400, 0), ls.bit(5400, 7)
+    if scr is not None:
+        rows.append(("scaling_unit", '"0.001"' if scr[0] else '"0.00001"', f"5400 #7 SCR = {int(scr[0])} "
+                     f"{where(scr[1])}"))
+    if rin is not None:
+        rows.append(("rotation_incremental", "true" if rin[0] else "false", f"5400 #0 RIN = {int(rin[0])} "
+                     f"{where(rin[1])}"))
+    nat = ls.bit(6004, 0)
+    if nat is not None:
+        rows.append(("atan_signed", "true" if nat[0] else "false", f"6004 #0 NAT = {int(nat[0])} {where(nat[1])}"))
+    tos = ls.bit(5006, 6)
+    if tos is not None:
+        rows.append(("tool_length_motion", '"shift"' if tos[0] else '"move"', f"5006 #6 TOS = {int(tos[0])} "
+                     f"{where(tos[1])}"))
+    return tuple(rows)
+
+
+def _macros(ls: _Listing, c: Collector) -> tuple[Row, ...]:
+    """``[macros]``: the G and M codes that call programs (6050-6059, 6071-6079, 6080-6089) and 6001#5 TCS."""
+    rows: list[Row] = []
+    for first, count, program, call, letter in ((6050, 10, 9010, "macro", "G"), (6071, 9, 9001, "subprogram", "M"),
+                                                (6080, 10, 9020, "macro", "M")):
+        for i in range(count):
+            p = ls.params.get(first + i)
+            if p is None or p.value is None:
+                continue
+            _, text, span = p.value
+            if not re.fullmatch(r"[-+]?\d+", text):
+                c.error("IM103", f"parameter {first + i}: {text!r} is not a {letter} code number", span)
+                continue
+            code = int(text)
+            if code == 0:
+                continue
+            if code < 0 or code > 9999 or (letter == "G" and code in (65, 66, 67)):
+                c.note("IM201", f"parameter {first + i} P{text}: a {'modal (G66-type) ' if code < 0 else ''}call by "
+                       f"{letter}{abs(code)} is not taken", span)
+                continue
+            value = str(program + i) if call == "macro" else f'{{ program = {program + i}, call = "subprogram" }}'
+            rows.append((f"{letter}{code}", value, f"{first + i} P{text}: {letter}{code} calls O{program + i} "
+                         f"({span.file}:{span.line})"))
+    tcs = ls.bit(6001, 5)
+    if tcs is not None and tcs[0]:
+        rows.append(("T", "9000", f"6001 #5 TCS = 1: a T code calls O9000 ({tcs[1].file}:{tcs[1].line})"))
+    return tuple(rows)
 
 
 def _first_span(params: dict[int, Parameter], *numbers: int) -> SourceSpan | None:

@@ -296,6 +296,7 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
         axes=axes, axes_how=f"the axes with settings, {_LAYOUT_NAMES[layout]}",
         rapid=frozen(rapid), reference=frozen(reference), start=frozen(start), pulse=frozen(pulse),
         rapid_mode=("linear", "Grbl moves G0 on a straight line"),
+        extra=(("dialect", '"linuxcnc"', "Grbl reads the RS-274/NGC subset LinuxCNC's dialect describes"),),
         modal=modal,
         offsets=frozen({k: frozen(v) for k, v in offsets.items()}),
         zones=(zone,) if lo else (), homing=homing_drafts, notes=tuple(c.notes),

@@ -120,6 +120,10 @@ class ImportedMachine:
     zones: tuple[ZoneDraft, ...] = ()
     homing: tuple[HomingDraft, ...] = ()
     notes: tuple[Diagnostic, ...] = ()
+    #: More per-axis tables (``"machine.reference_2"`` ...), written after ``[machine.start]``.
+    axis_tables: tuple[tuple[str, Mapping[str, Sourced]], ...] = ()
+    #: More tables (``"fanuc"``, ``"macros"``): rows of (key, TOML value, comment).
+    tables: tuple[tuple[str, tuple[tuple[str, str, str], ...]], ...] = ()
 
 
 class Collector:

@@ -104,6 +104,8 @@ def render_toml(im: ImportedMachine) -> str:
     _table(out, "machine.reference", im.axes, dict(im.reference))
     if im.start:
         _table(out, "machine.start", im.axes, dict(im.start))
+    for header, values in im.axis_tables:
+        _table(out, header, im.axes, dict(values))
     if im.offsets:
         out.append("")
         out.append("[offsets]")
@@ -120,6 +122,11 @@ def render_toml(im: ImportedMachine) -> str:
             out.append(f"[{header}]")
             for n in sorted(registers):
                 out.append(_line(f"{prefix}{n} = {_q(registers[n].value)}", _how(registers[n])))
+    for header, rows in im.tables:
+        out.append("")
+        out.append(f"[{header}]")
+        for key, value, how in rows:
+            out.append(_line(f"{key} = {value}", how))
     for z in im.zones:
         _zone(out, im.axes, z)
     for h in im.homing:

@@ -108,7 +108,18 @@ def test_reference_positions_and_inch_input_and_g91():
     r = import_text(text, "p.prm")
     assert r.machine.reference == (100, 0, -5)
     assert {"G20", "G91"} <= set(r.machine.modal)
-    assert any("second reference position" in n.message for n in r.notes)
+    assert r.machine.dialect == "fanuc"
+    assert dict(r.machine.fanuc.references) == {2: (0, 0, 0)}  # G30 P2
+
+
+def test_the_fanuc_dialects_settings():
+    text = _listing(*BASE, "N03401P00000000", "N01004P00000010", "N05114P2500", "N05101P00110000",
+                    "N05400P00000000", "N06050P801", "N06080P88", "N06071P0", "N01320" + _axes(3, (200000,) * 3),
+                    "N01321" + _axes(3, (-200000,) * 3))
+    f = import_text(text, "p.prm").machine.fanuc
+    assert (f.decimal_point_input, f.increment_system, f.g73_retract) == ("increment", "IS-C", F("0.25"))
+    assert (f.boring_shift, f.scaling_unit, f.rotation_incremental) == ("-Y", F(1, 100000), False)
+    assert dict(f.macros) == {"G801": (9010, "macro"), "M88": (9020, "macro")}
 
 
 @pytest.mark.parametrize("blocks,code", [
