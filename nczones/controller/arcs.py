@@ -33,8 +33,10 @@ including R-format centres whose rational enclosures need Python integers.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
@@ -240,7 +242,10 @@ def _candidates(fr: _ArcFrame, x: int, y: int, u: int, v: int, k: int) -> tuple[
     return xs, ys
 
 
-def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray):
+_Verified = tuple[int, int, Callable[[int], int]]
+
+
+def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray) -> _Verified:
     """Check candidates against the exact step rule.
 
     Returns ``(ok, stop, qc_at)``: candidates ``[:ok]`` are the steps the
@@ -256,7 +261,8 @@ def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarr
     return ok, stop, lambda i: int(qcs[i])
 
 
-def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray):
+def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray,
+                 ys: np.ndarray) -> _Verified | None:
     """The step rule checked in int64 on a stretch where the major axis and its sign are fixed.
 
     Applies when int64 cannot overflow (the same bound as the general check),
@@ -357,7 +363,8 @@ def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.
     return ok, stop, lambda i: ca if i < c else cb
 
 
-def _verify_general(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray):
+def _verify_general(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray,
+                    ys: np.ndarray) -> tuple[int, int, np.ndarray]:
     """Check candidates against the exact step rule.
 
     Returns ``(ok, stop, qcounts)``: candidates ``[:ok]`` are the steps the
@@ -421,7 +428,7 @@ def _verify_general(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: 
     return ok, stop, qcs
 
 
-def path_fractions(pos: np.ndarray, p0, pulse_mm) -> np.ndarray:
+def path_fractions(pos: np.ndarray, p0: Sequence[int], pulse_mm: Sequence[float | Fraction]) -> np.ndarray:
     """Cumulative chord length after each step as a fraction of the whole (floats, timing only).
 
     Steps that move every axis by at most one pulse (arcs and interleaved
@@ -446,7 +453,8 @@ def path_fractions(pos: np.ndarray, p0, pulse_mm) -> np.ndarray:
     return cum / cum[-1] if cum[-1] > 0 else np.ones(n)
 
 
-def path_fractions_moved(pos: np.ndarray, p0, pulse_mm, moving) -> tuple[np.ndarray, tuple[int, ...]]:
+def path_fractions_moved(pos: np.ndarray, p0: Sequence[int], pulse_mm: Sequence[float | Fraction],
+                         moving: Any) -> tuple[np.ndarray, tuple[int, ...]]:
     """:func:`path_fractions` (bit for bit) and the pulses each axis makes over all steps.
 
     Columns of axes not in ``moving`` must stay at ``p0`` (the caller builds
@@ -490,6 +498,6 @@ def path_fractions_moved(pos: np.ndarray, p0, pulse_mm, moving) -> tuple[np.ndar
     return np.ones(n), tuple(totals)
 
 
-def _fractions_general(pos: np.ndarray, p0, pulse_mm) -> tuple[np.ndarray, tuple[int, ...]]:
+def _fractions_general(pos: np.ndarray, p0: Sequence[int], pulse_mm: Sequence[float | Fraction]) -> tuple[np.ndarray, tuple[int, ...]]:
     moved = np.abs(np.diff(pos, axis=0, prepend=np.asarray(p0, dtype=np.int64).reshape(1, -1)))
     return path_fractions(pos, p0, pulse_mm), tuple(int(t) for t in moved.sum(axis=0))

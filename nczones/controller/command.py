@@ -67,7 +67,7 @@ def render_text(result: Any, program: str) -> str:
     """The human-readable report of one simulation."""
     axes = result.axes
 
-    def pt(coords) -> str:
+    def pt(coords: Any) -> str:
         return " ".join(f"{a}{format_decimal(c)}" for a, c in zip(axes, coords))
 
     lines = [f"{program}: simulated in {result.mode.value} mode, monitor {result.monitor.value}"]

@@ -30,11 +30,13 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
 from ..cylinder import cylinder_of, developed_arc_of
 from ..errors import InvalidArgument
+from ..motion import Segment
 from .pulses import arc_walk, line_steps, round_pulse
 
 __all__ = ["developed_arc_positions", "FINE"]
@@ -48,7 +50,7 @@ def _rat(x: Fraction) -> Fraction:
     return Fraction(round(x * _APPROX), _APPROX)
 
 
-def developed_arc_positions(seg, pulses: tuple[Fraction, ...], p0: tuple[int, ...]) -> np.ndarray:
+def developed_arc_positions(seg: Segment, pulses: tuple[Fraction, ...], p0: tuple[int, ...]) -> np.ndarray:
     """The commanded pulse positions after each step of a developed arc (``(steps, axes)`` int64).
 
     ``pulses`` are the machine's pulse lengths, ``p0`` where the controller
@@ -63,7 +65,10 @@ def developed_arc_positions(seg, pulses: tuple[Fraction, ...], p0: tuple[int, ..
     >>> pos[-1].tolist(), int(pos[:, 1].max()) > 5700     # 1 mm on r = 10 mm is 5.73 deg
     ([2000, 0], True)
     """
-    lin, rot, _ = cylinder_of(seg)
+    info = cylinder_of(seg)
+    if info is None:
+        raise InvalidArgument("not a motion made in cylindrical interpolation (G07.1)")
+    lin, rot, _ = info
     iz, ic = seg.axes.index(lin), seg.axes.index(rot)
     arc = developed_arc_of(seg)
     uz, uc = pulses[iz], pulses[ic]
@@ -87,9 +92,9 @@ def developed_arc_positions(seg, pulses: tuple[Fraction, ...], p0: tuple[int, ..
     last = tuple(p0)
     base = list(p0)
     for z, c in zip(zq, cq):
-        row = list(base)
-        row[iz], row[ic] = z, c
-        row = tuple(row)
+        cells = list(base)
+        cells[iz], cells[ic] = z, c
+        row = tuple(cells)
         if row != last:
             _append(rows, last, row)
             last = row
@@ -109,7 +114,7 @@ def _append(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
     rows.extend(line_steps(a, b))
 
 
-def plan_developed_arc(ctrl, seg, p0: tuple[int, ...], p1: tuple[int, ...]):
+def plan_developed_arc(ctrl: Any, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...]) -> Any:
     """The controller's motion plan of a developed arc (called by ``Controller._plan``)."""
     from .simulator import plan_from_positions
 

@@ -136,7 +136,8 @@ def _axis_section(rd: Any, axis: str, table: Mapping[str, Any]) -> HomingConfig 
     header = rd.loc.section(f"homing.{axis}")
 
     def span(key: str) -> SourceSpan | None:
-        return rd.loc.key(key, header)
+        found: SourceSpan | None = rd.loc.key(key, header)
+        return found
 
     ok = True
     for key in table:
@@ -563,7 +564,7 @@ def simulate_homing(
     def event(kind: EventKind, sigma: int, time: Fraction, text: str) -> None:
         events.append(HomingEvent(kind, d * sigma, d * sigma * pulse, time, text))
 
-    base = dict(axis=cfg.axis, phase=phase, trip_offset=trip_offset, pulse=pulse)
+    base: dict[str, Any] = dict(axis=cfg.axis, phase=phase, trip_offset=trip_offset, pulse=pulse)
     event(EventKind.SEARCH_START, n, Fraction(0),
           f"search {'+' if d > 0 else '-'}{cfg.axis} at {format_decimal(cfg.search_speed)} mm/min")
     if n * scale > E:
@@ -618,11 +619,13 @@ def simulate_homing(
     event(EventKind.GRID_LATCHED, n_latch, t,
           f"grid point {format_decimal(grid)} (phase {format_decimal(phase)} + {grid_index} x "
           f"{format_decimal(cfg.grid_pitch)}) latched; axis stopped")
+    assert trip_n is not None and arm_n is not None  # a grid point latches only after the trip and the arming
     run = HomingRun(**base, events=tuple(events), trip_pulses=d * trip_n, armed_pulses=d * arm_n,
                     latched_grid=grid, grid_index=grid_index, latched_pulses=d * n_latch,
                     pulses_moved=moved, time_s=t)
     if install:
         return run
+    assert grid_shift is not None  # given, stored or measured above
     shift_pulses = int(grid_shift / pulse)
     end = d * n_latch + shift_pulses
     t_shift = t + abs(shift_pulses) * u_l
@@ -675,6 +678,7 @@ def measure_grid_shift(
     run = simulate_homing(cfg, pulse, start=start, phase=phase, trip_offset=trip_offset, install=True)
     if run.alarm is not None:
         raise InvalidArgument(f"installation measurement impossible: {run.alarm.message}")
+    assert run.latched_pulses is not None  # a run without alarm latched a grid point
     shift_pulses = int(cfg.machine_zero / pulse) - run.latched_pulses
     shift = shift_pulses * pulse
     log = run.events + (HomingEvent(

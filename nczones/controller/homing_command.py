@@ -98,6 +98,7 @@ def _run_text(run: HomingRun, cfg: HomingConfig, phase_given: bool) -> str:
         lines.append(f"  result: homing ended exactly at machine zero {format_decimal(cfg.machine_zero)} "
                      "(origin error 0 pulses)")
     else:
+        assert run.origin_error_pulses is not None  # a run without alarm measures its origin error
         lines.append(f"  result: origin error {run.origin_error_pulses} pulses "
                      f"({format_decimal(run.origin_error_pulses * run.pulse)} mm); controller zero is off machine zero")
     return "\n".join(lines)
@@ -125,7 +126,7 @@ def _simulate(args: argparse.Namespace, machine: Machine, configs: dict[str, Hom
     return cli.EXIT_OK if ok else cli.EXIT_FAIL
 
 
-def _reproduce_command(args: argparse.Namespace, axis: str, cex) -> str:
+def _reproduce_command(args: argparse.Namespace, axis: str, cex: Any) -> str:
     extra = list(cex.cli_args(axis))
     if args.phase is not None and "--phase" not in extra:
         extra[2:2] = ["--phase", args.phase]  # proved for the phase given on the command line
@@ -157,9 +158,10 @@ def _prove(args: argparse.Namespace, machine: Machine, configs: dict[str, Homing
                 "reproduce": _reproduce_command(args, axis, c)}
 
     if args.format == "json":
-        out = {"command": "home", "machine": machine.source, "prove": True, "ok": ok, "axes": []}
+        axes_out: list[dict[str, Any]] = []
+        out = {"command": "home", "machine": machine.source, "prove": True, "ok": ok, "axes": axes_out}
         for cfg, r in reports:
-            out["axes"].append({
+            axes_out.append({
                 "axis": r.axis, "solver": r.solver, "phase": format_decimal(cfg.detector_phase),
                 "edge_to_grid": format_decimal(r.edge_to_grid), "jitter_plus_lag": format_decimal(r.margin),
                 "window_clear": r.window_clear, "ok": r.ok,

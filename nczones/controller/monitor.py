@@ -25,7 +25,7 @@ active tool length.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -92,7 +92,7 @@ class LimitMonitor:
 
     machine: Machine
     stats: MonitorStats = field(default_factory=MonitorStats)
-    _compiled: dict = field(default_factory=dict)
+    _compiled: dict[Fraction, "CompiledCheck | None"] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         self.axes = self.machine.axis_names
@@ -103,7 +103,7 @@ class LimitMonitor:
     def point_mm(self, pos: Sequence[int]) -> dict[str, Fraction]:
         return {a: p * u for a, p, u in zip(self.axes, pos, self.pulse)}
 
-    def _stepped_allows(self, z: SteppedZone, q: dict[str, Fraction]) -> bool:
+    def _stepped_allows(self, z: SteppedZone, q: Mapping[str, Fraction]) -> bool:
         region, comparisons = z.region_sequential(q[z.reference_axis])
         st = self.stats
         st.lookups += 1
@@ -157,7 +157,7 @@ class LimitMonitor:
         tip = z.point is ZonePoint.TIP and tool_length and axis == self.machine.allowed.tool_axis
         return tool_length if tip else Fraction(0)
 
-    def _compile_zone(self, z: Zone, tl: Fraction):
+    def _compile_zone(self, z: Zone, tl: Fraction) -> Callable[[np.ndarray], np.ndarray] | None:
         if isinstance(z, BoxZone):
             cols, los, his = [], [], []
             for axis, lo, hi in z.limits:
@@ -190,16 +190,18 @@ class LimitMonitor:
             sr, sl = self._shift(z, z.reference_axis, tl), self._shift(z, z.limited_axis, tl)
             start = math.ceil((z.start + sr) / ur)
             bounds = np.array([math.floor((r.upto + sr) / ur) for r in z.regions], dtype=np.int64)
-            lo = np.array([-_BIG if r.min is None else math.ceil((r.min + sl) / ul) for r in z.regions], dtype=np.int64)
-            hi = np.array([_BIG if r.max is None else math.floor((r.max + sl) / ul) for r in z.regions], dtype=np.int64)
+            lows = np.array([-_BIG if r.min is None else math.ceil((r.min + sl) / ul) for r in z.regions],
+                            dtype=np.int64)
+            highs = np.array([_BIG if r.max is None else math.floor((r.max + sl) / ul) for r in z.regions],
+                             dtype=np.int64)
             n = len(z.regions)
 
-            def test(pos, kr=kr, kl=kl, start=start, bounds=bounds, lo=lo, hi=hi, n=n):
+            def test_stepped(pos, kr=kr, kl=kl, start=start, bounds=bounds, lo=lows, hi=highs, n=n):
                 r = pos[:, kr]
                 idx = np.searchsorted(bounds, r, side="left")
                 outside = (r < start) | (idx >= n)
                 idx = np.minimum(idx, n - 1)
                 v = pos[:, kl]
                 return outside | (v < lo[idx]) | (v > hi[idx])
-            return test
+            return test_stepped
         return None

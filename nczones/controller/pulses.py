@@ -260,7 +260,9 @@ class _ArcFrame:
         return 8 * (rq // self.ai + rq // self.aj + 4) * (turns + 2) + 64
 
 
-def _arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse) -> _ArcFrame:
+def _arc_frame(start_pulse: Sequence[int], end_pulse: Sequence[int], start: Sequence[Fraction],
+               end: Sequence[Fraction], centre: Sequence[Fraction], clockwise: bool, turns: int,
+               pulse: Sequence[Fraction]) -> _ArcFrame:
     sj = -1 if clockwise else 1  # mirror the second axis: a clockwise arc becomes counter-clockwise
     ui, uj = pulse
     scale = _lcm(
@@ -319,6 +321,7 @@ def _arc_step(u: int, v: int, q: int, ai: int, aj: int) -> tuple[int, int, int, 
             f = abs(nu * nu + nv * nv - q)
             if best is None or f < best[0]:
                 best = (f, dx, dy, nu, nv)
+    assert best is not None  # three candidates were tried
     return best[1], best[2], best[3], best[4]
 
 

@@ -59,7 +59,7 @@ from __future__ import annotations
 import difflib
 import enum
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any
@@ -130,6 +130,7 @@ class ToolChangeConfig:
         """
         if self.clearance is not None:
             return max(z, self.clearance)
+        assert self.retract_distance is not None  # exactly one of the two is set (class docstring)
         return z + self.retract_distance
 
 
@@ -146,7 +147,7 @@ class _Recode:
         self.rd.report(self._MAP.get(code, code), message, span, *a, **k)
 
 
-def parse_tool_change_section(rd, raw: Any, axes: tuple[str, ...]) -> ToolChangeConfig | None:
+def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolChangeConfig | None:
     """The ``[tool_change]`` parser registered in :data:`nczones.machine.SECTION_PARSERS`.
 
     Problems are reported with codes ZN150-ZN156 (``specs/recovery.md``).
@@ -172,7 +173,7 @@ def parse_tool_change_section(rd, raw: Any, axes: tuple[str, ...]) -> ToolChange
     ('start', 'Z', Fraction(250, 1))
     """
     header = rd.loc.section("tool_change")
-    nrd = _Recode(rd)
+    nrd: Any = _Recode(rd)
     if not isinstance(raw, Mapping):
         rd.report("ZN151", f"[tool_change]: expected a table, got {_written(raw)}", rd.loc.key("tool_change", None))
         return None
@@ -277,6 +278,7 @@ def parse_tool_change_section(rd, raw: Any, axes: tuple[str, ...]) -> ToolChange
             bad = True
     if bad:
         return None
+    assert alpha is not None and feed is not None and variant is not None  # else bad is set
     return ToolChangeConfig(tuple((a, position[a]) for a in axes), retract_axis, clearance, retract_distance,
                             alpha, feed, variant, register)
 
@@ -294,7 +296,7 @@ def tool_change_config(machine: Machine, variant: RecoveryVariant | str | None =
     MachineFileError
         ZN157 when ``length_register`` names a register ``[tool_lengths]`` lacks.
     """
-    cfg = machine.sections.get("tool_change")
+    cfg: ToolChangeConfig | None = machine.sections.get("tool_change")
     if cfg is None:
         raise InvalidArgument(f"{machine.source or 'the machine'}: no [tool_change] section; tool-break recovery "
                               "needs the tool-change position, clearance and approach (see specs/recovery.md)")
@@ -337,7 +339,8 @@ class RecoveryLeg:
                        tool_register=like.tool_register if like else None)
 
 
-def recovery_legs(cfg: ToolChangeConfig, machine: Machine, break_point, restart_point,
+def recovery_legs(cfg: ToolChangeConfig, machine: Machine, break_point: Sequence[Fraction],
+                  restart_point: Sequence[Fraction],
                   length: Fraction, new_length: Fraction) -> tuple[RecoveryLeg, ...]:
     """The five moves from the break point ``P`` to the restart point ``R'`` (module docstring).
 
@@ -359,10 +362,10 @@ def recovery_legs(cfg: ToolChangeConfig, machine: Machine, break_point, restart_
     z = axes.index(cfg.retract_axis)
     ti = tool_axis_index(machine)
     P = tuple(Fraction(v) for v in break_point)
-    R = list(Fraction(v) for v in restart_point)
+    restart = list(Fraction(v) for v in restart_point)
     if ti is not None:
-        R[ti] += new_length - length
-    R = tuple(R)
+        restart[ti] += new_length - length
+    R = tuple(restart)
     T = cfg.position_tuple(axes)
     P1 = tuple(cfg.above(v) if k == z else v for k, v in enumerate(P))
     A = tuple(v + cfg.approach_distance if k == z else v for k, v in enumerate(R))
@@ -382,7 +385,7 @@ def is_cutting(seg: Segment) -> bool:
     return seg.kind in (SegmentKind.LINE, SegmentKind.ARC)
 
 
-def motion_sequences(segments) -> list[tuple[int, int]]:
+def motion_sequences(segments: Sequence[Segment]) -> list[tuple[int, int]]:
     """``(first, last)`` indices of the motion sequences of a segment list (module docstring).
 
     >>> from nczones.motion import Segment, SegmentKind as K
@@ -428,7 +431,7 @@ def shift_segment(seg: Segment, axis: int | None, delta: Fraction, new_length: F
 # --------------------------------------------------------------------------- the controller side
 
 
-def _split(plan, k: int):
+def _split(plan: Any, k: int) -> tuple[Any, Any]:
     """The plan's first ``k`` steps and the rest, as two explicit plans."""
     from .simulator import _Plan
 
@@ -451,7 +454,7 @@ def _split(plan, k: int):
     return first, rest
 
 
-def _shift_plan(plan, axis: int | None, dp: int):
+def _shift_plan(plan: Any, axis: int | None, dp: int) -> Any:
     if plan is None or axis is None or dp == 0:
         return plan
     pos = plan.positions.copy()
@@ -461,13 +464,13 @@ def _shift_plan(plan, axis: int | None, dp: int):
                       base_time_s=plan.base_time_s, accdec=plan.accdec, speed_mm_s=plan.speed_mm_s)
 
 
-def _mark_recovery(ctl, before: int, leg: str) -> None:
+def _mark_recovery(ctl: Any, before: int, leg: str) -> None:
     for i in range(before, len(ctl.alarms)):
         a = ctl.alarms[i]
         ctl.alarms[i] = replace(a, kind="recovery", derived=f"tool-break recovery: {leg}")
 
 
-def run_with_break(ctl, motion) -> Any:
+def run_with_break(ctl: Any, motion: Any) -> Any:
     """Run ``motion`` on ``ctl`` with the tool-break event ``ctl.break_at`` (called by ``Controller.run``).
 
     The break happens in the first cutting motion of source line ``line``
@@ -595,7 +598,7 @@ def run_with_break(ctl, motion) -> Any:
     return ctl.result()
 
 
-def record_pulses(ctl) -> list[tuple[int, str, np.ndarray]]:
+def record_pulses(ctl: Any) -> list[tuple[int, str, np.ndarray]]:
     """Record every interpolation step the controller runs: ``[(block, derived, positions (n, axes))]``.
 
     For tests and notebooks: wraps this controller's ``_run_plan``.

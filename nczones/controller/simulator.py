@@ -46,7 +46,7 @@ import numpy as np
 
 from ..errors import InvalidArgument, program_lines
 from ..exact import format_decimal, seconds
-from ..machine import Machine, RapidMode
+from ..machine import Axis, Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
 from .arcs import arc_positions, path_fractions_moved
 from .monitor import LimitMonitor
@@ -311,6 +311,7 @@ class _Plan:
             return self.p0
         if self.delta is not None:
             return line_position(self.p0, self.delta, self.n, i)
+        assert self.positions is not None  # a plan without delta is explicit
         return tuple(int(v) for v in self.positions[i - 1])
 
     def positions_at(self, idx: np.ndarray) -> np.ndarray:
@@ -322,19 +323,23 @@ class _Plan:
             for k, (p, d) in enumerate(zip(self.p0, self.delta)):
                 out[:, k] = p + (2 * d * idx + n) // (2 * n) if self.n else p
             return out
+        assert self.positions is not None
         rows = np.vstack([np.array(self.p0, dtype=np.int64).reshape(1, -1), self.positions])
-        return rows[idx]
+        out_rows: np.ndarray = rows[idx]
+        return out_rows
 
     def chunk(self, lo: int, hi: int) -> np.ndarray:
         """Positions after steps lo+1..hi."""
         if self.delta is not None:
             return line_chunk(self.p0, self.delta, self.n, lo, hi)
+        assert self.positions is not None
         return self.positions[lo:hi]
 
     def iter_steps(self) -> Iterator[tuple[int, ...]]:
         if self.delta is not None:
             yield from line_steps(self.p0, self.p1)
         else:
+            assert self.positions is not None
             for row in self.positions.tolist():
                 yield tuple(row)
 
@@ -373,6 +378,7 @@ class _Plan:
         if self.delta is not None:
             sig = np.arange(lo + 1, hi + 1, dtype=float) / max(self.n, 1)
         else:
+            assert self.sigma is not None  # an explicit plan has its path fractions
             sig = self.sigma[lo:hi]
         T = self.base_time_s
         if not self.accdec or tau_s <= 0 or T <= 0:
@@ -513,7 +519,7 @@ class Controller:
         self._log("mode", data=(("mode", self.mode.value), ("monitor", self.monitor_mode.value)))
 
     # ------------------------------------------------------------------ helpers
-    def _log(self, kind: str, block: int | None = None, line: int | None = None, data=()) -> None:
+    def _log(self, kind: str, block: int | None = None, line: int | None = None, data: Any = ()) -> None:
         self.events.append(Event(self.clock, kind, block, line, tuple(data)))
 
     def mm(self, pos: Sequence[int]) -> tuple[Fraction, ...]:
@@ -564,11 +570,13 @@ class Controller:
         if seg.kind is SegmentKind.DEVELOPED_ARC:  # G07.1: developed plane, then rotary pulses
             from .cylindrical import plan_developed_arc
 
-            return plan_developed_arc(self, seg, p0, p1)
+            developed: _Plan = plan_developed_arc(self, seg, p0, p1)
+            return developed
         if seg.kind is SegmentKind.SPLINE:  # exact NURBS: flattened chords, see controller/spline.py
             from .spline import plan_spline
 
-            return plan_spline(self, seg, p0, p1)
+            spline: _Plan = plan_spline(self, seg, p0, p1)
+            return spline
         raise InvalidArgument(f"unknown segment kind {seg.kind!r}")
 
     def _feed_time(self, seg: Segment, disp: list[float], length: float) -> float:
@@ -653,7 +661,8 @@ class Controller:
         if self.break_at is not None:
             from .recovery import run_with_break
 
-            return run_with_break(self, motion)
+            recovered: SimulationResult = run_with_break(self, motion)
+            return recovered
         if self.mode is not Mode.LOCK and not self.alarms:
             bad = self.monitor.check(tuple(self.counter), self.tool_length)
             if bad:
@@ -728,6 +737,7 @@ class Controller:
         elif done == plan.n and plan.moved_total is not None:
             moved = list(plan.moved_total)
         else:
+            assert plan.positions is not None
             rows = np.vstack([np.array(plan.p0, dtype=np.int64), plan.positions[:done]])
             moved = np.abs(np.diff(rows, axis=0)).sum(axis=0).tolist()
         for k, m in enumerate(moved):
@@ -746,7 +756,7 @@ class Controller:
         return tuple((k, _sign(v)) for k, v in enumerate(d) if v)
 
     # per-pulse monitoring ------------------------------------------------------
-    def _monitor_pulse(self, plan: _Plan):
+    def _monitor_pulse(self, plan: _Plan) -> tuple[int, Any]:
         tl = self.tool_length
         compiled = self.monitor.compile(tl) if self.settings.engine == "vector" else None
         if compiled is not None:
@@ -764,9 +774,9 @@ class Controller:
             if compiled is not None:
                 return plan.n, None
         for i, p in enumerate(plan.iter_steps(), start=1):
-            bad = self.monitor.check(p, tl)
-            if bad:
-                return i, (bad, None, 0.0)
+            names = self.monitor.check(p, tl)
+            if names:
+                return i, (names, None, 0.0)
         return plan.n, None
 
     # periodic monitoring ----------------------------------------------------------
@@ -778,7 +788,7 @@ class Controller:
             k += 1
         return out
 
-    def _monitor_periodic(self, plan: _Plan, t0: float, tau: float):
+    def _monitor_periodic(self, plan: _Plan, t0: float, tau: float) -> tuple[int, Any]:
         tl = self.tool_length
         end = t0 + plan.duration(tau)
         samples = self._sample_times(end)
@@ -800,17 +810,18 @@ class Controller:
         for s_time, i in zip(samples, idx.tolist()):
             self.next_sample += 1
             pos = plan.position(int(i))
-            bad = self.monitor.check(pos, tl) if compiled is None else compiled.violated(np.array(pos, dtype=np.int64))
-            if bad:
+            names = (self.monitor.check(pos, tl) if compiled is None
+                     else compiled.violated(np.array(pos, dtype=np.int64)))
+            if names:
                 first = self._first_outside(plan, int(i), compiled)
-                return int(i), (bad, first, s_time)
+                return int(i), (names, first, s_time)
         # remember where the path first left, for the overshoot report of a later sample
         end_pos = plan.position(plan.n)
         out = self.monitor.check(end_pos, tl) if compiled is None else compiled.violated(np.array(end_pos, dtype=np.int64))
         self._pending_outside = self._first_outside(plan, plan.n, compiled) if out else None
         return plan.n, None
 
-    def _first_outside(self, plan: _Plan, upto: int, compiled) -> tuple[tuple[int, ...], int] | None:
+    def _first_outside(self, plan: _Plan, upto: int, compiled: Any) -> tuple[tuple[int, ...], int] | None:
         """Where the excursion the monitor caught at step ``upto`` began (for the report).
 
         That is the step after the last inside step of this motion up to
@@ -859,7 +870,8 @@ class Controller:
             self._alarm(None, pos, bad, (), first=self._pending_outside)
 
     # alarms and jog -------------------------------------------------------------
-    def _alarm(self, plan: _Plan | None, pos, zones, direction, first=None, note: str = "") -> None:
+    def _alarm(self, plan: _Plan | None, pos: Any, zones: Any, direction: Any, first: Any = None,
+               note: str = "") -> None:
         seg = plan.seg if plan is not None else None
         for d in direction:
             self.blocked.add(d)
@@ -1016,7 +1028,8 @@ class Controller:
 ARC_CHUNK = 1 << 16
 
 
-def _helix_columns(pos, plane, pulse2, centre, sgn, a0, sweep, axes) -> None:
+def _helix_columns(pos: np.ndarray, plane: Any, pulse2: Any, centre: Any, sgn: Any, a0: Any, sweep: Any,
+                   axes: Any) -> None:
     """Fill the helix columns of ``pos``: each axis follows the swept angle, rounded to the nearest pulse.
 
     The angle of every planar position, unwrapped (:func:`_unwrap`), relative
@@ -1122,7 +1135,7 @@ def _unwrap(p: np.ndarray) -> np.ndarray:
     return up
 
 
-def _path_length(axes, disp: list[float]) -> float:
+def _path_length(axes: Sequence[Axis], disp: list[float]) -> float:
     lin = [d for a, d in zip(axes, disp) if not a.rotary]
     if any(lin):
         return math.sqrt(sum(d * d for d in lin))
@@ -1157,7 +1170,7 @@ def simulate(
     monitor: MonitorMode | str = MonitorMode.PULSE,
     settings: Settings | None = None,
     start: Sequence[Fraction] | None = None,
-    progress=None,
+    progress: Any = None,
     break_at: tuple[int, Fraction] | None = None,
 ) -> SimulationResult:
     """Run motion through a fresh :class:`Controller`; returns the frozen result.
@@ -1205,7 +1218,7 @@ def simulate(
     return ctl.run(items)
 
 
-def _reporting(items: Any, progress, text: str | None) -> Iterator[Segment]:
+def _reporting(items: Any, progress: Any, text: str | None) -> Iterator[Segment]:
     """Segments of ``items``, calling ``progress(line, total)`` after each one is run."""
     total = (text.count("\n") + (0 if text.endswith("\n") else 1)) if text else None
     for seg in _segments_of(items):

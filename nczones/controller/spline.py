@@ -22,11 +22,14 @@ passes within 1.25 pulses of a zone boundary is in the contract's gray band
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
 from ..errors import InvalidArgument
+from ..motion import Segment
 from .pulses import line_steps, round_pulse
 
 __all__ = ["FLATNESS", "spline_chord_points", "spline_positions", "plan_spline"]
@@ -36,7 +39,7 @@ FLATNESS = Fraction(1, 4)
 _MAX_DEPTH = 40
 
 
-def _flat(c, pulse) -> bool:
+def _flat(c: Any, pulse: Sequence[Fraction]) -> bool:
     pts = c.points
     a, b = pts[0], pts[-1]
     n = len(pts) - 1
@@ -48,7 +51,7 @@ def _flat(c, pulse) -> bool:
     return True
 
 
-def spline_chord_points(seg, pulse) -> list[tuple[Fraction, ...]]:
+def spline_chord_points(seg: Segment, pulse: Sequence[Fraction]) -> list[tuple[Fraction, ...]]:
     """Exact curve points (start to end) whose chords are within FLATNESS pulses of the curve."""
     from ..prover.spline import spline_curve
 
@@ -70,7 +73,7 @@ def spline_chord_points(seg, pulse) -> list[tuple[Fraction, ...]]:
     return out
 
 
-def spline_positions(seg, pulse, p0) -> np.ndarray:
+def spline_positions(seg: Segment, pulse: Sequence[Fraction], p0: Sequence[int]) -> np.ndarray:
     """Pulse positions after each step (shape (n, axes)), starting from ``p0``."""
     steps: list[tuple[int, ...]] = []
     cur = tuple(p0)
@@ -82,7 +85,7 @@ def spline_positions(seg, pulse, p0) -> np.ndarray:
     return np.array(steps, dtype=np.int64).reshape(len(steps), len(p0))
 
 
-def plan_spline(ctrl, seg, p0: tuple[int, ...], p1: tuple[int, ...]):
+def plan_spline(ctrl: Any, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...]) -> Any:
     """The controller's motion plan of a spline (called by ``Controller._plan``)."""
     from .simulator import plan_from_positions
 
