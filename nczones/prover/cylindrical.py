@@ -29,6 +29,7 @@ Polygon allow zones cannot be screened by boxes (``unknown``).
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any
 
 from ..cylinder import DevelopedArc, Interval, cylinder_of, degree_length, developed_arc_of
 from ..exact import format_decimal
@@ -61,7 +62,7 @@ def developed_note(seg: Segment, point: dict[str, Fraction]) -> str:
             f"s={_dec(s.mid())} mm (= pi*R*{rot}/180, {rot}={_dec(point[rot])} deg)")
 
 
-def check_cylindrical(prover, seg: Segment):
+def check_cylindrical(prover: Any, seg: Segment) -> Any:
     """Decide one segment made in G07.1 mode (called by :meth:`Prover.check`)."""
     from dataclasses import replace
 
@@ -86,29 +87,31 @@ def check_cylindrical(prover, seg: Segment):
 
 
 class _ArcCheck:
-    def __init__(self, prover, seg: Segment, arc: DevelopedArc):
+    def __init__(self, prover: Any, seg: Segment, arc: DevelopedArc):
         self.p = prover
         self.seg = seg
         self.arc = arc
-        lin, rot, _ = cylinder_of(seg)
+        info = cylinder_of(seg)
+        assert info is not None  # developed_arc_of(seg) succeeded
+        lin, rot, _ = info
         self.lin, self.rot = lin, rot
         self.points: dict[Fraction, tuple[Interval, Interval, Interval]] = {}
         self.used = 0
 
-    def point(self, f: Fraction):
+    def point(self, f: Fraction) -> tuple[Interval, Interval, Interval]:
         got = self.points.get(f)
         if got is None:
             got = self.points[f] = self.arc.point(f)
         return got
 
-    def _dicts(self, z: Interval, c: Interval):
+    def _dicts(self, z: Interval, c: Interval) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         lo = dict(zip(self.seg.axes, self.seg.start))
         hi = dict(lo)
         lo[self.lin], hi[self.lin] = z.lo, z.hi
         lo[self.rot], hi[self.rot] = c.lo, c.hi
         return lo, hi
 
-    def _box(self, fa: Fraction, fb: Fraction):
+    def _box(self, fa: Fraction, fb: Fraction) -> Any:
         za, sa, _ = self.point(fa)
         zb, sb, _ = self.point(fb)
         from ..cylinder import _up
@@ -168,7 +171,7 @@ class _ArcCheck:
                 return self._violation(f, mid, bad, proven_up_to)
         return None
 
-    def _violation(self, f: Fraction, mid: dict, bad, proven_up_to: Fraction) -> Violation:
+    def _violation(self, f: Fraction, mid: dict[str, Fraction], bad: Any, proven_up_to: Fraction) -> Violation:
         from ..errors import InternalError
 
         p, seg = self.p, self.seg

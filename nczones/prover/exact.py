@@ -24,8 +24,10 @@ irrational paths.
 from __future__ import annotations
 
 import itertools
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 from ..zones import AllowedSet, BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 
@@ -71,7 +73,7 @@ class Interval:
 UNIT = Interval(F0, F1, True, True)
 
 
-def _make(lo, hi, lc, hc) -> Interval | None:
+def _make(lo: Fraction, hi: Fraction, lc: bool, hc: bool) -> Interval | None:
     if lo > hi or (lo == hi and not (lc and hc)):
         return None
     return Interval(lo, hi, lc, hc)
@@ -111,7 +113,8 @@ class _Line:
 
     __slots__ = ("p0", "p1", "index", "shift_axis", "shift")
 
-    def __init__(self, p0, p1, axes, zone: Zone, tool_length: Fraction, tool_axis: str | None):
+    def __init__(self, p0: Sequence[Fraction], p1: Sequence[Fraction], axes: Sequence[str], zone: Zone,
+                 tool_length: Fraction, tool_axis: str | None):
         self.p0, self.p1 = p0, p1
         self.index = {a: i for i, a in enumerate(axes)}
         self.shift_axis = tool_axis if (zone.point is ZonePoint.TIP and tool_length) else None
@@ -139,8 +142,8 @@ def decidable(zone: Zone) -> bool:
     return not isinstance(zone, PolygonZone)
 
 
-def _all(parts) -> Interval | None:
-    out = UNIT
+def _all(parts: Iterable[Interval | None]) -> Interval | None:
+    out: Interval | None = UNIT
     for p in parts:
         out = _intersect(out, p)
         if out is None:
@@ -148,7 +151,7 @@ def _all(parts) -> Interval | None:
     return out
 
 
-def _union(parts) -> list[Interval]:
+def _union(parts: Iterable[Interval | None]) -> list[Interval]:
     """Sorted union (merged where they overlap or touch with a closed end)."""
     items = sorted((p for p in parts if p is not None), key=lambda i: (i.lo, not i.lo_closed))
     out: list[Interval] = []
@@ -212,8 +215,8 @@ def line_violation(
         if zone.forbid:
             for i in idx:
                 reg = zone.regions[i]
-                a, b = zone.region_lower(i), reg.upto
-                conds = [ln.lt(r, b + d), ln.gt(r, a - d)]
+                lower, b = zone.region_lower(i), reg.upto
+                conds = [ln.lt(r, b + d), ln.gt(r, lower - d)]
                 if reg.max is not None:
                     conds.append(ln.lt(lim, reg.max + d))
                 if reg.min is not None:
@@ -239,8 +242,8 @@ def line_violation(
         parts.append(ln.gt(r, zone.regions[-1].upto - d))
         for i in idx:
             reg = zone.regions[i]
-            a, b = zone.region_lower(i), reg.upto
-            touch = _all([ln.lt(r, b + d, False), ln.gt(r, a - d, i != 0)])
+            lower, b = zone.region_lower(i), reg.upto
+            touch = _all([ln.lt(r, b + d, False), ln.gt(r, lower - d, i != 0)])
             if touch is None:
                 continue
             if reg.min is not None:
@@ -310,7 +313,7 @@ def zone_constants(zone: Zone, axis: str) -> list[Fraction]:
     return sorted(set(out))
 
 
-def _rect_dist(p: tuple[Fraction, Fraction], rect) -> Fraction:
+def _rect_dist(p: tuple[Fraction, Fraction], rect: Any) -> Fraction:
     (x0, x1), (y0, y1) = rect
     gaps = [F0]
     if x0 is not None:
@@ -324,7 +327,7 @@ def _rect_dist(p: tuple[Fraction, Fraction], rect) -> Fraction:
     return max(gaps)
 
 
-def _stepped_eroded_rects(zone: SteppedZone, d: Fraction):
+def _stepped_eroded_rects(zone: SteppedZone, d: Fraction) -> list[Any]:
     """Closed rectangles whose union is the closure of {q : box(q, d) fits the zone}."""
     regs = zone.regions
     cuts = sorted({zone.start + d, regs[-1].upto - d} | {r.upto + s for r in regs for s in (-d, d)})
@@ -415,7 +418,7 @@ def point_depth(zone: Zone, p: dict[str, Fraction], margin: Fraction = F0) -> Fr
     return max(dist, lim_gap) + d
 
 
-def _seg_dist_inf(q, a, b) -> Fraction:
+def _seg_dist_inf(q: Sequence[Fraction], a: Sequence[Fraction], b: Sequence[Fraction]) -> Fraction:
     """Exact L-infinity distance from q to the segment [a, b]."""
     dx, dy = b[0] - a[0], b[1] - a[1]
     cands = {F0, F1}
@@ -427,16 +430,18 @@ def _seg_dist_inf(q, a, b) -> Fraction:
         den = dx - s * dy
         if den:
             cands.add(((q[0] - a[0]) - s * (q[1] - a[1])) / den)
-    best = None
+    best: Fraction | None = None
     for t in cands:
         if 0 <= t <= 1:
             v = max(abs(q[0] - a[0] - t * dx), abs(q[1] - a[1] - t * dy))
             best = v if best is None else min(best, v)
+    assert best is not None  # t = 0 and t = 1 are candidates
     return best
 
 
 def line_depth(
-    zone: Zone, p0, p1, axes, margin: Fraction, tool_length: Fraction, tool_axis: str | None,
+    zone: Zone, p0: Sequence[Fraction], p1: Sequence[Fraction], axes: Sequence[str], margin: Fraction,
+    tool_length: Fraction, tool_axis: str | None,
     max_candidates: int = 20000,
 ) -> tuple[Fraction, Fraction, bool]:
     """Maximum of :func:`point_depth` over a straight piece: ``(depth, t, exact)``.
@@ -468,7 +473,7 @@ def line_depth(
                 cands.add(t)
     if len(lines) ** 2 > max_candidates:
         exact = False
-        pairs = []
+        pairs: Iterable[tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]] = []
     else:
         pairs = itertools.combinations(lines, 2)
     for (f0, f1), (g0, g1) in pairs:
@@ -477,19 +482,21 @@ def line_depth(
             t = (g0 - f0) / den
             if 0 < t < 1:
                 cands.add(t)
-    best, best_t = None, F0
+    best: Fraction | None = None
+    best_t = F0
     for t in sorted(cands):
         pt = {ax: ln.ends(ax)[0] + t * (ln.ends(ax)[1] - ln.ends(ax)[0]) for ax in zaxes}
         v = point_depth(zone, pt, margin)
         if best is None or v > best:
             best, best_t = v, t
+    assert best is not None  # t = 0 and t = 1 are candidates
     return best, best_t, exact and not isinstance(zone, PolygonZone)
 
 
 # --------------------------------------------------------------------------- witnesses
 
 
-def _seen(allowed: AllowedSet, zone: Zone, p: dict[str, Fraction], tool_length: Fraction):
+def _seen(allowed: AllowedSet, zone: Zone, p: dict[str, Fraction], tool_length: Fraction) -> Mapping[str, Fraction]:
     return allowed.seen_by(zone, p, tool_length)
 
 

@@ -22,6 +22,7 @@ Irrational quantities are only ever *enclosed* (``sqrt_bounds``,
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -67,7 +68,8 @@ class LinePiece:
         return self.tau0 + t * (self.tau1 - self.tau0)
 
 
-def dogleg_breakpoints(start, end, rates) -> tuple[Fraction, ...]:
+def dogleg_breakpoints(start: Sequence[Fraction], end: Sequence[Fraction],
+                       rates: Sequence[Fraction]) -> tuple[Fraction, ...]:
     """Segment parameters (fractions of the rapid's duration) where an axis stops.
 
     Every axis starts together and moves at its own rapid rate; axis ``i``
@@ -206,15 +208,15 @@ def atan_bounds(x: Fraction, terms: int = 40) -> tuple[Fraction, Fraction]:
 # --------------------------------------------------------------------------- arcs
 
 
-def _cross(u, v) -> Fraction:
+def _cross(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> Fraction:
     return u[0] * v[1] - u[1] * v[0]
 
 
-def _dot(u, v) -> Fraction:
+def _dot(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> Fraction:
     return u[0] * v[0] + u[1] * v[1]
 
 
-def in_sweep(u, w, v, ccw: bool, full: bool) -> bool:
+def in_sweep(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw: bool, full: bool) -> bool:
     """Does direction ``v`` lie in the sweep from ``u`` to ``w`` (closed)?
 
     Directions are vectors from the centre; ``u`` and ``w`` need not have the
@@ -233,13 +235,13 @@ def in_sweep(u, w, v, ccw: bool, full: bool) -> bool:
     return _angle_le(u, v, w)
 
 
-def _half(u, v) -> int:
+def _half(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> int:
     """0 when the ccw angle from u to v is in [0, pi), else 1."""
     c = _cross(u, v)
     return 0 if c > 0 or (c == 0 and _dot(u, v) > 0) else 1
 
 
-def _angle_le(u, v, w) -> bool:
+def _angle_le(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction]) -> bool:
     """ccw angle(u -> v) <= ccw angle(u -> w), angles in [0, 2 pi)."""
     hv, hw = _half(u, v), _half(u, w)
     if hv != hw:
@@ -301,6 +303,7 @@ class ArcGeom:
         cx, cy = ex - sx, ey - sy
         l2 = cx * cx + cy * cy
         r = self.r_signed
+        assert r is not None  # an R-format arc (no rational centre) has its signed R
         q = r * r / l2 - Fraction(1, 4)
         right = (not self.ccw) != (r < 0)
         sign = -1 if right else 1
@@ -310,6 +313,7 @@ class ArcGeom:
         """A rational box containing the arc's plane path (exact extremes when rational)."""
         (cxl, cxh), (cyl, cyh) = self.centre_bounds(bits)
         if self.centre is None:
+            assert self.r_signed is not None
             r_hi = sqrt_bounds(self.r_signed * self.r_signed, bits)[1]
         else:
             r_hi = sqrt_bounds(self.r2_hi, bits)[1]
@@ -365,18 +369,19 @@ def arc_geom(seg: Segment) -> ArcGeom:
         if k is not None:
             centre = (mx + sign * k * nx, my + sign * k * ny)
             r_signed = None
-    u2 = (s[0] - centre[0]) ** 2 + (s[1] - centre[1]) ** 2 if centre is not None else None
-    w2 = (e[0] - centre[0]) ** 2 + (e[1] - centre[1]) ** 2 if centre is not None else None
-    if centre is None:
-        r2 = seg.radius**2
-        u2 = w2 = r2
+    if centre is not None:
+        u2 = (s[0] - centre[0]) ** 2 + (s[1] - centre[1]) ** 2
+        w2 = (e[0] - centre[0]) ** 2 + (e[1] - centre[1]) ** 2
+    else:
+        assert seg.radius is not None  # without a centre the arc is given by R
+        u2 = w2 = seg.radius**2
     if u2 == 0:
         raise InvalidArgument("arc with zero radius")
     return ArcGeom(ia, ib, s, e, not seg.clockwise, full, centre, r_signed, min(u2, w2), max(u2, w2),
                    seg.start, seg.end)
 
 
-def rational_point_on_arc(g: ArcGeom, m: Fraction, base=None) -> tuple[Fraction, Fraction]:
+def rational_point_on_arc(g: ArcGeom, m: Fraction, base: tuple[Fraction, Fraction] | None = None) -> tuple[Fraction, Fraction]:
     """The exact rational point of a circle reached by rotating ``base`` (default the
     start vector) by ``2 atan(m)`` in the arc's direction (rational parametrisation).
 
@@ -388,6 +393,7 @@ def rational_point_on_arc(g: ArcGeom, m: Fraction, base=None) -> tuple[Fraction,
     (Fraction(0, 1), Fraction(1, 1))
     """
     c = g.centre
+    assert c is not None  # rational points exist on circles with a rational centre
     u = base if base is not None else (g.s[0] - c[0], g.s[1] - c[1])
     perp = (-u[1], u[0]) if g.ccw else (u[1], -u[0])
     den = 1 + m * m
@@ -397,4 +403,5 @@ def rational_point_on_arc(g: ArcGeom, m: Fraction, base=None) -> tuple[Fraction,
 
 
 def arc_axis_names(seg: Segment) -> tuple[str, str, str]:
+    assert seg.plane is not None  # an arc has its plane
     return PLANE_AXES[seg.plane]

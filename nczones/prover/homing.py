@@ -33,8 +33,10 @@ from __future__ import annotations
 
 import enum
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import z3
 
@@ -201,7 +203,8 @@ class _Model:
         return self.solver.check()
 
 
-def _run(name: str, statement: str, build, *, on_sat=None) -> HomingProof:
+def _run(name: str, statement: str, build: Callable[[], Any], *,
+         on_sat: Callable[[Any], Any] | None = None) -> HomingProof:
     """Check the negation built by ``build``; unsat proves the statement."""
     t0 = time.perf_counter()
     model = build()
@@ -221,7 +224,7 @@ def _value(model: z3.ModelRef, x: z3.ArithRef) -> Fraction:
     v = model.eval(x, model_completion=True)
     if z3.is_int_value(v):
         return Fraction(v.as_long())
-    return v.as_fraction()
+    return Fraction(v.as_fraction())
 
 
 def prove_exact_after_installation(cfg: HomingConfig, pulse: Fraction) -> HomingProof:
@@ -281,6 +284,7 @@ def find_one_pitch_error(cfg: HomingConfig, pulse: Fraction, *, start: Fraction 
                       on_sat=lambda m: _one_pitch_cex(cfg, pulse, m, start))
         if result.status is not ProofStatus.PROVED:
             return result
+    assert result is not None  # the loop ran
     return result
 
 
@@ -371,6 +375,7 @@ def prove_configured_phase(cfg: HomingConfig, pulse: Fraction, *, start: Fractio
         t = m.trip("t")
         n = m.latch(t, "home")
         if stored:
+            assert cfg.grid_shift is not None  # stored means the machine file gives it
             shift = int(cfg.grid_shift / pulse)
         else:
             shift_var = z3.Int("shift")
@@ -394,7 +399,7 @@ def prove_configured_phase(cfg: HomingConfig, pulse: Fraction, *, start: Fractio
                 t = _value(model, m.t)  # type: ignore[attr-defined]
                 break
         error = int(_value(model, z3.Int("err")))
-        shift = cfg.grid_shift if stored else _value(model, z3.Int("shift")) * pulse
+        shift = cfg.grid_shift if stored and cfg.grid_shift is not None else _value(model, z3.Int("shift")) * pulse
         simulated = _reproduce(cfg, pulse, start, cfg.detector_phase, t, False)
         return HomingCounterexample(cfg.detector_phase, t, Fraction(0), error, simulated, shift, False)
 

@@ -43,6 +43,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from fractions import Fraction
+from typing import Any
 
 from ..controller.recovery import (
     RecoveryVariant,
@@ -118,7 +119,7 @@ class _Encoder:
             if not g.ccw:
                 a, b = b, a
 
-            def cross_ge(u, w_is_v_first: bool) -> str:
+            def cross_ge(u: tuple[Fraction, Fraction], w_is_v_first: bool) -> str:
                 # cross(u, v) >= 0 or cross(v, u) >= 0 with v = (px - cx, py - cy)
                 vx, vy = f"(- px {q(cx)})", f"(- py {q(cy)})"
                 if not w_is_v_first:
@@ -152,9 +153,10 @@ class _Encoder:
     def above(self, z: str) -> str:
         if self.cfg.clearance is not None:
             return _ite_max(z, q(self.cfg.clearance))
+        assert self.cfg.retract_distance is not None  # clearance or retract_distance is set
         return add(z, q(self.cfg.retract_distance))
 
-    def legs(self, P: list[str], R: list[str], L: Fraction, L2: Fraction):
+    def legs(self, P: list[str], R: list[str], L: Fraction, L2: Fraction) -> tuple[Any, ...]:
         """(name, kind, start terms, end terms, tool length) of the five legs."""
         z, ti = self.z, self.ti
         R2 = [add(r, q(L2 - L)) if k == ti and L2 != L else r for k, r in enumerate(R)]
@@ -205,7 +207,7 @@ class _Encoder:
         return _or(parts)
 
 
-def verify_recovery(segments, machine: Machine, *, variant: RecoveryVariant | str | None = None,
+def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant | str | None = None,
                     margin: Fraction = F0, max_violations: int = 20, prover: Prover | None = None,
                     rlimit: int = 20_000_000) -> RecoveryOutcome:
     """Prove the recovery path from every break point of every cutting motion.
@@ -278,13 +280,13 @@ def verify_recovery(segments, machine: Machine, *, variant: RecoveryVariant | st
     return RecoveryOutcome(tuple(violations), tuple(reasons), tuple(stats.items()), cfg.variant)
 
 
-def _segments(motion) -> list[Segment]:
+def _segments(motion: Any) -> list[Segment]:
     from ..controller.simulator import _segments_of
 
     return list(_segments_of(motion))
 
 
-def _break_candidates(seg: Segment, ans) -> list:
+def _break_candidates(seg: Segment, ans: Any) -> list[Fraction]:
     """Rational break parameters near the model's (line: ``s``; arc: ``tan(theta/2)``)."""
     if seg.kind is SegmentKind.LINE:
         s = min(F1, max(F0, ans.values["s"]))
@@ -293,6 +295,7 @@ def _break_candidates(seg: Segment, ans) -> list:
             out = [s.limit_denominator(10**12), s.limit_denominator(10**6)]
         return out
     g = arc_geom(seg)
+    assert g.centre is not None  # break points are encoded on arcs with a rational centre only
     cx, cy = g.centre
     x, y = float(ans.values["px"] - cx), float(ans.values["py"] - cy)
     ux, uy = float(g.s[0] - cx), float(g.s[1] - cy)
@@ -307,7 +310,8 @@ def _break_candidates(seg: Segment, ans) -> list:
     return [Fraction(m).limit_denominator(10**12), Fraction(m).limit_denominator(10**6)]
 
 
-def _confirm(pr: Prover, enc: _Encoder, cfg, machine, seg, S, L, L2, leg_name, ans, segs) -> Violation | None:
+def _confirm(pr: Prover, enc: _Encoder, cfg: Any, machine: Machine, seg: Segment, S: Any, L: Fraction,
+             L2: Fraction, leg_name: str, ans: Any, segs: list[Segment]) -> Violation | None:
     """Re-check the recovery path from a concrete break point exactly; the violation or None."""
     g = arc_geom(seg) if seg.kind is SegmentKind.ARC else None
     if g is not None and g.helix:
@@ -339,7 +343,7 @@ def _confirm(pr: Prover, enc: _Encoder, cfg, machine, seg, S, L, L2, leg_name, a
     return None
 
 
-def _sweep(g) -> float:
+def _sweep(g: Any) -> float:
     if g.full:
         return 2 * math.pi
     cx, cy = g.centre
@@ -357,7 +361,8 @@ def _fmt(x: Fraction) -> str:
     return format_decimal(x, 9)
 
 
-def _check_resume(pr, cfg, machine, segs, violations, reasons, max_violations) -> None:
+def _check_resume(pr: Prover, cfg: Any, machine: Machine, segs: list[Segment], violations: list[Violation],
+                  reasons: list[Reason], max_violations: int) -> None:
     """The resumed cut with the replacement's length: every motion run with a broken-able tool, shifted."""
     ti = tool_axis_index(machine)
     firsts: dict[tuple, Segment] = {}

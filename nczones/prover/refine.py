@@ -43,6 +43,7 @@ rational box around an exact path point that certainly violates).
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any
 
 from ..motion import Segment
 from .geometry import ArcGeom, in_sweep, pi_bounds, sqrt_bounds
@@ -57,14 +58,14 @@ MAX_PIECES = 64
 MAX_DEPTH = 8
 
 
-def _rot(d, m: Fraction, ccw: bool):
+def _rot(d: tuple[Fraction, Fraction], m: Fraction, ccw: bool) -> tuple[Fraction, Fraction]:
     """``d`` rotated by ``2·atan(m)`` in the arc's direction (exact, keeps the length)."""
     perp = (-d[1], d[0]) if ccw else (d[1], -d[0])
     den = 1 + m * m
     return (((1 - m * m) * d[0] + 2 * m * perp[0]) / den, ((1 - m * m) * d[1] + 2 * m * perp[1]) / den)
 
 
-def _quarter_of(u, w, ccw: bool) -> tuple[int, bool]:
+def _quarter_of(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], ccw: bool) -> tuple[int, bool]:
     """Quarter index k with angle(u -> w) in [k π/2, (k+1) π/2), and whether it is exactly k π/2."""
     from .core import _bases
 
@@ -78,7 +79,7 @@ def _quarter_of(u, w, ccw: bool) -> tuple[int, bool]:
     raise AssertionError("direction in no quarter")
 
 
-def refine_arc(prover, seg: Segment, g: ArcGeom, params):
+def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
     r"""Prove a helix or spiral arc piece by piece (see the module docstring).
 
     Returns a ``_Outcome``: proved (engine ``"z3"``), a certified violation,
@@ -116,6 +117,7 @@ def refine_arc(prover, seg: Segment, g: ArcGeom, params):
         if bad:
             return _Outcome(prover._arc_violation(seg, g, pmap, bad, params, True), engine="exact")
     c = g.centre
+    assert c is not None  # refinement splits arcs with a rational centre (helix, spiral)
     u = (g.s[0] - c[0], g.s[1] - c[1])
     w = (g.e[0] - c[0], g.e[1] - c[1])
     pi_lo, pi_hi = pi_bounds()
@@ -142,7 +144,7 @@ def refine_arc(prover, seg: Segment, g: ArcGeom, params):
         rs = sqrt_bounds(u[0] ** 2 + u[1] ** 2, 120)
         re_ = sqrt_bounds(w[0] ** 2 + w[1] ** 2, 120)
 
-    def piece_geom(a, b) -> ArcGeom:
+    def piece_geom(a: Any, b: Any) -> ArcGeom:
         da, _, ta_lo, _ = a
         db, _, _, tb_hi = b
         f_lo = max(F0, ta_lo / tot_hi)

@@ -10,6 +10,7 @@ expansion is rounded to 12 places and marked with ``…``).
 from __future__ import annotations
 
 import json
+from collections.abc import Iterable
 from fractions import Fraction
 
 from .. import __version__
@@ -24,7 +25,7 @@ def _d(x: Fraction) -> str:
     return format_decimal(x)
 
 
-def _pt(pairs) -> str:
+def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
     return " ".join(f"{a}{_d(v)}" for a, v in pairs)
 
 
@@ -73,7 +74,7 @@ def render_text(result: Result, program: str = "") -> str:
     return "\n".join(out) + "\n"
 
 
-def _exact_point(pairs) -> dict[str, str]:
+def _exact_point(pairs: Iterable[tuple[str, Fraction]]) -> dict[str, str]:
     return {a: format_rational(x) for a, x in pairs}
 
 

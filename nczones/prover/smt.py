@@ -33,8 +33,10 @@ encoded.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import z3
 
@@ -61,10 +63,10 @@ def q(x: Fraction | int) -> str:
 
 
 def add(*terms: str) -> str:
-    terms = [t for t in terms if t and t != "0.0"]
-    if not terms:
+    kept = [t for t in terms if t and t != "0.0"]
+    if not kept:
         return "0.0"
-    return terms[0] if len(terms) == 1 else f"(+ {' '.join(terms)})"
+    return kept[0] if len(kept) == 1 else f"(+ {' '.join(kept)})"
 
 
 def sub(a: str, b: str) -> str:
@@ -81,7 +83,7 @@ def mul(a: str, b: str) -> str:
     return f"(* {a} {b})"
 
 
-def _or(parts) -> str:
+def _or(parts: Iterable[str]) -> str:
     parts = [p for p in parts if p != "false"]
     if "true" in parts:
         return "true"
@@ -90,7 +92,7 @@ def _or(parts) -> str:
     return parts[0] if len(parts) == 1 else f"(or {' '.join(parts)})"
 
 
-def _and(parts) -> str:
+def _and(parts: Iterable[str]) -> str:
     parts = [p for p in parts if p != "true"]
     if "false" in parts:
         return "false"
@@ -102,11 +104,11 @@ def _and(parts) -> str:
 # --------------------------------------------------------------------------- polygons
 
 
-def _cross(o, a, b) -> Fraction:
+def _cross(o: Sequence[Fraction], a: Sequence[Fraction], b: Sequence[Fraction]) -> Fraction:
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
 
 
-def triangulate(vertices) -> tuple[list[tuple], list[tuple]]:
+def triangulate(vertices: Sequence[Sequence[Fraction]]) -> tuple[list[tuple[Any, ...]], list[tuple[Any, ...]]]:
     """Ear clipping of a simple polygon: (triangles in ccw order, internal diagonals).
 
     >>> F = Fraction
@@ -119,7 +121,8 @@ def triangulate(vertices) -> tuple[list[tuple], list[tuple]]:
     if area2 < 0:
         pts.reverse()
     idx = list(range(len(pts)))
-    tris, diags = [], []
+    tris: list[tuple[Any, ...]] = []
+    diags: list[tuple[Any, ...]] = []
     guard = 0
     while len(idx) > 3 and guard < 10 * len(pts) ** 2:
         guard += 1
@@ -143,7 +146,7 @@ def triangulate(vertices) -> tuple[list[tuple], list[tuple]]:
     return tris, diags
 
 
-def _cross_term(o, a, x: str, y: str) -> str:
+def _cross_term(o: Sequence[Fraction], a: Sequence[Fraction], x: str, y: str) -> str:
     """cross(a - o, (x, y) - o) as an SMT term (o, a rational)."""
     ax, ay = a[0] - o[0], a[1] - o[1]
     return add(mul(q(ax), sub(y, q(o[1]))), mul(q(-ay), sub(x, q(o[0]))))
@@ -266,8 +269,8 @@ class SolverAnswer:
 _TOKEN = re.compile(r"\(|\)|[^\s()]+")
 
 
-def _parse_sexpr(text: str):
-    stack: list[list] = [[]]
+def _parse_sexpr(text: str) -> list[Any]:
+    stack: list[list[Any]] = [[]]
     for tok in _TOKEN.findall(text):
         if tok == "(":
             stack.append([])
@@ -279,7 +282,7 @@ def _parse_sexpr(text: str):
     return stack[0]
 
 
-def _num(e) -> tuple[Fraction, bool] | None:
+def _num(e: Any) -> tuple[Fraction, bool] | None:
     """(value, exact) of a printed real; None for root-obj."""
     if isinstance(e, str):
         approx = e.endswith("?")
@@ -315,7 +318,7 @@ class Solver:
                    "(set-option :nlsat.seed 0)")
 
     def _eval(self, text: str) -> str:
-        return z3.Z3_eval_smtlib2_string(self.ctx.ref(), text)
+        return str(z3.Z3_eval_smtlib2_string(self.ctx.ref(), text))
 
     def check(self, body: str, want: list[str], precision: int = 40) -> SolverAnswer:
         self.queries += 1

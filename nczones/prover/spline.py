@@ -25,6 +25,7 @@ Never ``safe`` otherwise; parameter ranges on a spline are ``unknown``.
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any
 
 from ..motion import Segment
 from ..nurbs import Nurbs
@@ -43,14 +44,14 @@ _MAX_DEPTH = 24
 def spline_curve(seg: Segment) -> Nurbs:
     """The exact NURBS of a SPLINE segment (control points in machine coordinates)."""
     e = dict(seg.extra)
-    return Nurbs(e["degree"], e["knots"], e["control"], e["weights"])
+    return Nurbs(e["degree"], e["knots"], e["control"], e["weights"])  # type: ignore[arg-type]
 
 
 def _pieces(c: Nurbs) -> list[Nurbs]:
     return c.pieces()
 
 
-def _hull_query(prover, seg: Segment, pts) -> tuple[str, list[str]]:
+def _hull_query(prover: Any, seg: Segment, pts: Any) -> tuple[str, list[str]]:
     names = [f"l{j}" for j in range(len(pts))]
     body = ["".join(f"(declare-const {n} Real)(assert (>= {n} 0.0))" for n in names),
             f"(assert (= {add(*names)} 1.0))"]
@@ -70,7 +71,7 @@ def _hull_query(prover, seg: Segment, pts) -> tuple[str, list[str]]:
     return "".join(body), names
 
 
-def _violating_point(prover, seg, c: Nurbs, hint: list[Fraction] | None):
+def _violating_point(prover: Any, seg: Segment, c: Nurbs, hint: list[Fraction] | None) -> Any:
     lo, hi = c.domain
     params = [lo, hi, (lo + hi) / 2]
     if hint:
@@ -92,7 +93,7 @@ def _round(t: Fraction) -> Fraction:
     return Fraction(round(t * 1024), 1024)
 
 
-def check_spline(prover, seg: Segment):
+def check_spline(prover: Any, seg: Segment) -> Any:
     """Decide one SPLINE segment: ``_Outcome`` with a violation, a reason, or neither (proved)."""
     from .core import _Outcome
 
@@ -138,7 +139,7 @@ def check_spline(prover, seg: Segment):
     return _Outcome(engine=engine)
 
 
-def _violation(prover, seg: Segment, curve: Nurbs, found) -> Violation:
+def _violation(prover: Any, seg: Segment, curve: Nurbs, found: Any) -> Violation:
     s, path, bad = found
     pmap = dict(zip(prover.axes, path))
     zone = bad[0]
