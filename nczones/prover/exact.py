@@ -193,18 +193,18 @@ def line_violation(
     if isinstance(zone, BoxZone):
         if zone.forbid:
             conds = []
-            for a, lo, hi in zone.limits:
+            for axis, lo, hi in zone.limits:
                 if lo is not None:
-                    conds.append(ln.gt(a, lo - d))
+                    conds.append(ln.gt(axis, lo - d))
                 if hi is not None:
-                    conds.append(ln.lt(a, hi + d))
+                    conds.append(ln.lt(axis, hi + d))
             return _union([_all(conds)])
         parts = []
-        for a, lo, hi in zone.limits:
+        for axis, lo, hi in zone.limits:
             if lo is not None:
-                parts.append(ln.lt(a, lo + d))
+                parts.append(ln.lt(axis, lo + d))
             if hi is not None:
-                parts.append(ln.gt(a, hi - d))
+                parts.append(ln.gt(axis, hi - d))
         return _union(parts)
     if isinstance(zone, SteppedZone):
         r, lim = zone.reference_axis, zone.limited_axis
@@ -215,8 +215,8 @@ def line_violation(
         if zone.forbid:
             for i in idx:
                 reg = zone.regions[i]
-                lower, b = zone.region_lower(i), reg.upto
-                conds = [ln.lt(r, b + d), ln.gt(r, lower - d)]
+                a, b = zone.region_lower(i), reg.upto
+                conds = [ln.lt(r, b + d), ln.gt(r, a - d)]
                 if reg.max is not None:
                     conds.append(ln.lt(lim, reg.max + d))
                 if reg.min is not None:
@@ -242,8 +242,8 @@ def line_violation(
         parts.append(ln.gt(r, zone.regions[-1].upto - d))
         for i in idx:
             reg = zone.regions[i]
-            lower, b = zone.region_lower(i), reg.upto
-            touch = _all([ln.lt(r, b + d, False), ln.gt(r, lower - d, i != 0)])
+            a, b = zone.region_lower(i), reg.upto
+            touch = _all([ln.lt(r, b + d, False), ln.gt(r, a - d, i != 0)])
             if touch is None:
                 continue
             if reg.min is not None:
