@@ -708,7 +708,8 @@ def _parse_words(c, cl_line, lo_line, hi_line):
     cc = c[sel_lo:sel_hi]
     ln = cl_line[sel_lo:sel_hi]
     if cc.size == 0:
-        return np.zeros(0, np.int32), np.zeros(0, np.uint8), np.zeros(0, np.int64), np.zeros(0, np.int64)
+        return (np.zeros(0, np.int32), np.zeros(0, np.uint8), np.zeros(0, np.int64), np.zeros(0, np.int64),
+                np.zeros(0, bool))
     is_letter = cc >= 65  # the classification let only letters, digits and . + - through
     # every line's first code byte must be a letter
     if not is_letter[0] or np.any(~is_letter[1:] & (ln[1:] != ln[:-1])):
@@ -738,11 +739,13 @@ def _parse_words(c, cl_line, lo_line, hi_line):
     word_id = None
     if dots.size or sp.size:
         word_id = np.cumsum(is_letter, dtype=np.int32) - 1
+    points = np.zeros(nwords, dtype=bool)
     if dots.size:
         dw = word_id[dots]
         if np.any(dw[1:] == dw[:-1]):
             return None  # two points in one word
         decimals[dw] = dcum[last[dw]] - dcum[dots]
+        points[dw] = True
     # integer value of the digit string: sum digit * 10**(digits to its right); the digits
     # of word w are the ndig[w] consecutive entries of the digit list starting at first[w]
     digits = d[isdigit].astype(np.int64)
@@ -755,7 +758,7 @@ def _parse_words(c, cl_line, lo_line, hi_line):
         neg = np.zeros(nwords, dtype=bool)
         neg[word_id[sp[cc[sp] == 45]]] = True
         value = np.where(neg, -value, value)
-    return ln[wstart], cc[wstart], value, decimals
+    return ln[wstart], cc[wstart], value, decimals, points
 
 
 def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
@@ -767,9 +770,8 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         parsed = _parse_words(c, cl_line, lo, hi)
     if parsed is None:
         return None
-    wl, wletter, wval, wdec = parsed
-    if getattr(it, "dialect", "linuxcnc") == "fanuc" and not _fanuc_words_ok(it, c, cl_line, lo, hi, wletter, wval,
-                                                                             wdec):
+    wl, wletter, wval, wdec, wpoint = parsed
+    if getattr(it, "dialect", "linuxcnc") == "fanuc" and not _fanuc_words_ok(it, wletter, wval, wdec, wpoint):
         return None
     n = hi - lo
     axes = it.axes
@@ -1007,19 +1009,13 @@ _FANUC_ROTARY = np.zeros(256, dtype=bool)
 _FANUC_ROTARY[list(b"ABC")] = True
 
 
-def _fanuc_words_ok(it, c, cl_line, lo: int, hi: int, wletter, wval, wdec) -> bool:
-    """Whether every length word of lines [lo, hi) is read as written in the Fanuc dialect: with a
-    decimal point (or zero) and no more decimals than the least input increment.  Other lines go to the
+def _fanuc_words_ok(it, wletter, wval, wdec, points) -> bool:
+    """Whether every length word (of the parsed words of a run) is read as written in the Fanuc dialect: with
+    a decimal point (or zero) and no more decimals than the least input increment.  Other lines go to the
     language layer, which applies the decimal point input rule and the rounding and notes them."""
     length = _FANUC_LENGTH[wletter]
     if not length.any():
         return True
-    sel_lo = np.searchsorted(cl_line, lo)
-    sel_hi = np.searchsorted(cl_line, hi)
-    cc = c[sel_lo:sel_hi]
-    word_id = np.cumsum(cc >= 65, dtype=np.int32) - 1
-    points = np.zeros(wletter.size, dtype=bool)
-    points[word_id[cc == ord(".")]] = True
     digits = {"IS-A": 2, "IS-B": 3, "IS-C": 4}[it.settings.increment_system]
     limit = np.where(_FANUC_ROTARY[wletter], digits, digits + (1 if it.inch else 0))
     bad = length & ((~points & (wval != 0)) | (wdec > limit))
@@ -1102,7 +1098,7 @@ def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         parsed = _parse_words(c, cl_line, lo, hi)
     if parsed is None:
         return None
-    wl, wletter, wval, wdec = parsed
+    wl, wletter, wval, wdec, _wpoint = parsed
     # the first line (from lo) with a word other than X, Y, N ends the run; so does a repeated
     # letter or an N that is not the first word
     rel = (wl - lo).astype(np.int64)

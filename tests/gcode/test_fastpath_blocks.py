@@ -199,10 +199,11 @@ def test_digit_parser_is_exact(words):
     code = code[code != 32]
     parsed = fastpath._parse_words(code, np.zeros(code.size, dtype=np.int32), 0, 1)
     assert parsed is not None
-    _, letters, value, dec = parsed
+    _, letters, value, dec, points = parsed
     got = [Fraction(int(v), 10 ** int(d)) for v, d in zip(value, dec)]
     assert got == want
     assert bytes(letters.tolist()).decode() == "".join(w[0] for w in words)
+    assert points.tolist() == ["." in t for t in text]  # the Fanuc dialect's decimal point input rule reads it
 
 
 @pytest.mark.parametrize("bad", ["X1.2.3", "X+-1", "X", "X1-2", "1X2", "X.", "X1234567890123456789"])

@@ -47,7 +47,7 @@ from fractions import Fraction
 from typing import TypeAlias
 
 from ..expr import EvalError, _binary, _check
-from ..lexer import _double
+from ..lexer import _double, _fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "EvalError",
@@ -172,9 +172,14 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     (Fraction(6173, 500), Fraction(-3, 1))
     """
     q: Fraction = value[1] if value[1] is not None else _double(value[0])
-    k = q / step
-    n = (abs(k.numerator) * 2 + k.denominator) // (2 * k.denominator)
-    return (n if k >= 0 else -n) * step
+    qn, qd = q.numerator, q.denominator
+    sn, sd = step.numerator, step.denominator
+    if sn == 1 and sd % qd == 0:  # already a multiple of the step (a decimal literal, an exact sum)
+        return q
+    # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)
+    num, den = abs(qn) * sd, qd * sn
+    n = (2 * num + den) // (2 * den)
+    return _fraction(-n * sn if qn < 0 else n * sn, sd)
 
 
 def _num(d: float) -> tuple:

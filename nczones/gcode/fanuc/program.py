@@ -61,7 +61,7 @@ from .expr import (
     round_to,
     variable_index,
 )
-from .parser import EXPR, LITERAL, NEG, VAR, FanucLine, parse_line
+from .parser import EXPR, LITERAL, NEG, NUM, VAR, FanucLine, parse_line
 
 __all__ = ["iter_blocks", "FanucRunner", "LENGTH_LETTERS", "needs_language_layer", "MAX_MACRO_LEVELS",
            "MAX_CALL_DEPTH"]
@@ -94,6 +94,10 @@ _PLAIN_BREAKERS = re.compile(r"[#\[(;:%]|[Oo]\d|[Gg][ \t]*0*6[5-7](?![\d.])|(?i:
 #: A length literal without a decimal point (its value depends on the decimal point input setting).
 _INT_LENGTH = re.compile(r"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d+(?![\d.])")
 _M_LANGUAGE = frozenset((2, 30, 97, 98, 99))
+_CALL_G = frozenset((65, 66, 67))
+_CALL_M = frozenset((97, 98, 99))
+#: G codes under which a block's words are read specially (G04 seconds, G51 factors, G68 angle, cycles).
+_SPECIAL_G = frozenset((4, 51, 68, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 _END_HINT = re.compile(r"[Mm]0*(?:2|30|99)(?![\d.])|^[ \t]*%")
 _LOOP_WORD = re.compile(r"(?i:end|do)[ \t]*\d")
 _N_LABEL = re.compile(r"[ \t]*(?:/[1-9]?[ \t]*)?[Nn][ \t]*(\d+)")
@@ -110,7 +114,7 @@ class _Loop:
 class _Source:
     """A program text and its index of program numbers and sequence-number labels."""
 
-    __slots__ = ("src", "file", "programs", "extents", "labels")
+    __slots__ = ("src", "file", "programs", "extents", "labels", "cache")
 
     def __init__(self, src: _LineSource, file: str):
         self.src = src
@@ -118,6 +122,7 @@ class _Source:
         self.programs: dict[int, tuple[int, int]] | None = None
         self.extents: list = []  # (start pos, end pos) of each program text: O line to the next O line
         self.labels: dict[int, list] = {}
+        self.cache: dict[int, tuple] = {}  # offset -> the compiled line (FanucRunner.compiled)
 
     def index(self) -> None:
         """Find every program number line and every block with a sequence number (once)."""
@@ -200,7 +205,7 @@ class FanucRunner:
         self.fast_runs = fast_runs
         self.lane = lane
         self.frames: list[_Frame] = [_Frame("main", self.main)]
-        self.cache: dict = {}
+        self.cached = 0  # lines kept compiled (in the sources' caches), bounded
         self.started = False  # a % line or a block was met: the next % line ends the program
         # a block other than % and O lines ran: the next O line ends the main program (in a piece of a
         # program, the program's own number line is before it)
@@ -220,6 +225,9 @@ class FanucRunner:
         self.custom_m = {int(k[1:]): v for k, v in macros.items() if k[0] == "M"}
         self.custom_t = macros.get("T")
         self._dpi_increment = self.settings.decimal_point_input == "increment"
+        self._inc_mm = self.settings.increment_mm
+        self._inc_inch = self._inc_mm / 10
+        self._ms = Fraction(1, 1000)
         digits = {"IS-A": 2, "IS-B": 3, "IS-C": 4}[self.settings.increment_system]
         self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
         self._long_inch = re.compile(rf"[XYZUVWIJKRQxyzuvwijkrq][ \t]*[+-]?\d*\.\d{{{digits + 2}}}|"
@@ -235,10 +243,9 @@ class FanucRunner:
 
     def increment(self, letter: str) -> Fraction:
         """The least input increment of an address, in program units (rotary axes in degrees)."""
-        inc = self.settings.increment_mm
         if letter in "ABC":
-            return inc
-        return inc / 10 if self._inch() else inc
+            return self._inc_mm
+        return self._inc_inch if self._inch() else self._inc_mm
 
     # -- diagnostics ---------------------------------------------------------------------
     def span(self, lineno: int, line: str, col: int = 1, end: int | None = None) -> SourceSpan:
@@ -283,8 +290,7 @@ class FanucRunner:
     # -- compiled lines ---------------------------------------------------------------------
     def compiled(self, source: _Source, pos: int, line: str, lineno: int, nxt: int) -> tuple:
         """The line at ``pos`` parsed, its expressions compiled (kept for lines that run again)."""
-        key = (id(source), pos)
-        hit: tuple | None = self.cache.get(key)
+        hit: tuple | None = source.cache.get(pos)
         if hit is not None:
             return hit
         try:
@@ -317,9 +323,17 @@ class FanucRunner:
             elif kind == "while":
                 stmt = ("while", compile_tree(stmt[1], v, ctx), stmt[2])
         gcodes = {w[2][0] for w in fl.words if w[0] == "G" and w[1] == LITERAL}
-        out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes)
-        if len(self.cache) < 200_000:
-            self.cache[key] = out
+        # which checks a block of this line needs: the G65-G67/M97-M99/custom code calls (a computed G, M or
+        # T word, or a literal one of them), the canned cycle (K), the special readings of G04/G51/G68
+        calls = (self.custom_t is not None and any(w[0] == "T" for w in fl.words)) or any(
+            w[0] in "GM" and (w[1] == EXPR or w[2][0] in (_CALL_G if w[0] == "G" else _CALL_M)
+                              or w[2][0] in (self.custom_g if w[0] == "G" else self.custom_m))
+            for w in fl.words)
+        plain = not (gcodes & _SPECIAL_G) and not any(w[0] == "K" for w in fl.words)
+        out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes, calls, plain)
+        if self.cached < 200_000:
+            source.cache[pos] = out
+            self.cached += 1
         return out
 
     # -- the run -------------------------------------------------------------------------
@@ -331,7 +345,18 @@ class FanucRunner:
         declined = -1
         while True:
             frame = self.frames[-1]
-            src = frame.source.src
+            source = frame.source
+            compiled = source.cache.get(pos)
+            if compiled is not None and not (fast and pos in fast):  # a line that ran before
+                if compiled[1] or compiled[0].percent or compiled[0].program is not None:
+                    target = yield from self.execute(compiled, pos, lineno)
+                else:
+                    target = self.macro_line(compiled, pos, lineno)
+                if target is None:
+                    return
+                pos, lineno = target
+                continue
+            src = source.src
             if fast and src is main_src and pos in fast and pos != declined:
                 req = FastRunRequest(pos, lineno, self.index)
                 yield req
@@ -362,8 +387,11 @@ class FanucRunner:
                         if taken == 2:
                             yield LANE_FULL
                     continue
-            compiled = self.compiled(frame.source, pos, line, lineno, nxt)
-            target = yield from self.execute(compiled, pos, lineno)
+            compiled = self.compiled(source, pos, line, lineno, nxt)
+            if compiled[1] or compiled[0].percent or compiled[0].program is not None:
+                target = yield from self.execute(compiled, pos, lineno)
+            else:
+                target = self.macro_line(compiled, pos, lineno)
             if target is None:
                 return
             pos, lineno = target
@@ -408,7 +436,7 @@ class FanucRunner:
 
     # -- one general line -------------------------------------------------------------------
     def execute(self, compiled: tuple, pos: int, lineno: int) -> _Flow:
-        fl, words, assigns, stmt, line, nxt, gcodes = compiled
+        fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled
         frame = self.frames[-1]
         here = (nxt, lineno + 1)
         if fl.delete == 1 and self.block_delete:
@@ -441,11 +469,51 @@ class FanucRunner:
             return self.statement(stmt, fl, pos, lineno, line, nxt)
         if not words:
             return here
-        values = self.word_values(words, gcodes, lineno, line)
-        calls = [v for v in values if v[0] == "G" and v[1] in (65, 66, 67)]
-        if calls or self.has_call_code(values):
-            return (yield from self.calls(values, calls, fl, lineno, line, nxt))
+        values = self.plain_values(words, lineno, line) if plain else self.word_values(words, gcodes, lineno, line)
+        if maybe_calls:
+            calls = [v for v in values if v[0] == "G" and v[1] in (65, 66, 67)]
+            if calls or self.has_call_code(values):
+                return (yield from self.calls(values, calls, fl, lineno, line, nxt))
         return (yield from self.nc(values, fl, lineno, line, nxt))
+
+    def plain_values(self, words: tuple, lineno: int, line: str) -> list:
+        """:meth:`word_values` of a block with no G04, G51, G68, canned cycle code or K word."""
+        values = []
+        for letter, kind, payload, col, end, text, var in words:
+            if kind == EXPR:
+                try:
+                    value = payload()
+                except (EvalError, SystemVariableUnknown, RecursionError):
+                    value = self.evaluate(payload, lineno, line, col, end)  # raises the diagnostic
+                if value is VACANT or (var is not None and self.evaluate(var, lineno, line, col, end) is VACANT):
+                    continue  # a vacant variable drops its word
+                if letter in LENGTH_LETTERS:
+                    q = round_to(value, self._inc_mm if letter in "ABC" or not self._inch() else self._inc_inch)
+                else:
+                    q = self.address_value(letter, value, False)
+            else:
+                q, point = payload
+                if letter in LENGTH_LETTERS:
+                    q = self.literal(letter, q, point, lineno, text)
+            values.append((letter, q, col, end, text))
+        return values
+
+    def macro_line(self, compiled: tuple, pos: int, lineno: int) -> tuple[int, int] | None:
+        """A line without NC words (assignments, IF, GOTO, WHILE, DO, END, comments): the next
+        ``(pos, lineno)``, or None when a #3000 alarm stops the program."""
+        fl, _words, assigns, stmt, line, nxt = compiled[:6]
+        if fl.delete == 1 and self.block_delete:
+            return nxt, lineno + 1
+        if fl.unmodelled is not None:
+            reason, col, end = fl.unmodelled
+            raise self.unsupported(reason.split()[3], reason, lineno, line, col, end)
+        self.started = self.ran = True
+        for target, value, col, end in assigns:
+            if self.assign(target, value, lineno, line, col, end, fl):
+                return None  # #3000 alarm
+        if stmt is not None:
+            return self.statement(stmt, fl, pos, lineno, line, nxt)
+        return nxt, lineno + 1
 
     def word_values(self, words: tuple, gcodes: set, lineno: int, line: str) -> list:
         """The block's words ``(letter, exact value, column, end column, text)`` as the control reads them."""
@@ -463,9 +531,9 @@ class FanucRunner:
                 if g51 and letter in "PIJK":
                     q = value[1] if value[1] is not None else Fraction(value[0])
                 elif dwell and letter in "XU":
-                    q = round_to(value, Fraction(1, 1000))
+                    q = round_to(value, self._ms)
                 elif degrees and letter == "R":
-                    q = round_to(value, self.settings.increment_mm)
+                    q = round_to(value, self._inc_mm)
                 else:
                     q = self.address_value(letter, value, cycle)
             else:
@@ -928,6 +996,9 @@ def _negated_variable(tree):
 def _target(tree: tuple, variables: FanucVariables, ctx: Context) -> Callable[[], int]:
     """The variable number an assignment writes (a function of no arguments)."""
     index = tree[1]
+    if index[0] == NUM:
+        n = variable_index((index[1], index[2]))
+        return lambda: n
     fn = compile_tree(index, variables, ctx)
     return lambda: variable_index(fn())
 
