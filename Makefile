@@ -29,6 +29,9 @@ demo: $(RUNTIME)
 	$(BIN)/nczones verify specs/examples/programs/notch_over.ngc --machine specs/machines/grinder.toml
 	$(BIN)/nczones verify specs/examples/programs/notch_dip.ngc --machine specs/machines/grinder.toml; \
 	  test $$? -eq 1  # intentionally unsafe: the line dips into the work-head notch
+	$(BIN)/nczones verify specs/examples/programs/fanuc_slots_safe.nc --machine specs/machines/fanuc_mill.toml
+	$(BIN)/nczones verify specs/examples/programs/fanuc_slots_clamp.nc --machine specs/machines/fanuc_mill.toml; \
+	  test $$? -eq 1  # intentionally unsafe: the Macro B loop's fourth slot runs into the clamp
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)
