@@ -176,7 +176,8 @@ def _load_optional_registrars() -> None:
     import importlib
 
     for module in ("nczones.prover.command", "nczones.controller.command", "nczones.controller.homing_command",
-                   "nczones.report.command", "nczones.imports.command", "nczones.replay"):
+                   "nczones.report.command", "nczones.imports.command", "nczones.replay",
+                   "nczones.fleet.command"):
         try:
             importlib.import_module(module)
         except ModuleNotFoundError as exc:

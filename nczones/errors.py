@@ -38,6 +38,7 @@ __all__ = [
     "GcodeError",
     "MachineFileError",
     "MachineImportError",
+    "ProjectFileError",
 ]
 
 
@@ -222,3 +223,7 @@ class MachineFileError(InputError):
 
 class MachineImportError(InputError):
     """A controller configuration ``nczones import-machine`` cannot read (codes IM1xx)."""
+
+
+class ProjectFileError(InputError):
+    """A bad fleet project file ``nczones.toml`` (codes FL1xx)."""

@@ -1,0 +1,335 @@
+"""``fleet check``: plan the jobs, verify what the store does not have, record the run.
+
+The incremental rule: a cell whose job key is in the store is reused; only
+jobs with a new key run.  Change one machine file and only its cells get
+new keys; change one program and only its cells do.
+
+Results are stored as they arrive.  Ctrl-C (KeyboardInterrupt) stops the
+run: tasks still queued are cancelled, the run is recorded as interrupted
+with its unfinished cells pending, and the interrupt goes on to the caller.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+from typing import Any, TextIO
+
+from .jobs import Job, JobPlan, code_version, plan_jobs
+from .project import Cell, Project
+from .split import DEFAULT_SPLIT_LINES, Chunk, combine, split_program
+from .store import Store
+from .work import machine_for, record
+
+__all__ = ["CheckOptions", "CheckSummary", "run_check", "EXIT_BY_VERDICT"]
+
+#: Exit status of a verdict, as ``nczones verify`` (errors are bad input).
+EXIT_BY_VERDICT = {"unsafe": 1, "error": 2, "unknown": 3, "safe": 0}
+
+
+@dataclass(frozen=True, slots=True)
+class CheckOptions:
+    """How a fleet run executes (none of this changes a verdict, so none of it is in a job key).
+
+    ``executor``: ``"auto"`` (a local Dask cluster, unless fewer than
+    ``cluster_threshold`` jobs need to run: those run in this process),
+    ``"serial"``, ``"local"`` (always the local cluster) or a scheduler
+    address.  ``transfer``: ``"paths"`` (workers read programs from the
+    project folder; a shared file system), ``"bytes"`` (programs travel
+    with the tasks) or ``"auto"`` (paths for local runs, bytes for a
+    scheduler).
+    """
+
+    executor: str = "auto"
+    workers: int | None = None
+    split_lines: int = DEFAULT_SPLIT_LINES
+    transfer: str = "auto"
+    cluster_threshold: int = 50
+    attempts: int = 3
+    progress: bool | None = None  # None: when standard error is a terminal
+
+
+@dataclass(slots=True)
+class CheckSummary:
+    """What a run did: counts by verdict over the cells, jobs run and reused, time, interrupted or not."""
+
+    run_id: int
+    cells: int
+    jobs: int
+    ran: int = 0
+    reused: int = 0
+    split: int = 0
+    fallbacks: int = 0
+    retried: int = 0
+    failed: int = 0
+    wall_s: float = 0.0
+    executor: str = ""
+    interrupted: bool = False
+    verdicts: dict[str, int] = field(default_factory=dict)
+    problems: list[str] = field(default_factory=list)
+
+    @property
+    def exit_code(self) -> int:
+        for verdict in ("unsafe", "error", "unknown"):
+            if self.verdicts.get(verdict):
+                return EXIT_BY_VERDICT[verdict]
+        return 0
+
+
+class _Bar:
+    """A one-line progress bar of finished jobs on a terminal."""
+
+    def __init__(self, stream: TextIO, total: int, enabled: bool):
+        self.stream, self.total, self.enabled = stream, total, enabled and total > 0
+        self.done = 0
+        self.counts: dict[str, int] = {}
+        self.t0 = time.monotonic()
+        self._last = 0.0
+        self._width = 0
+
+    def update(self, verdict: str) -> None:
+        self.done += 1
+        self.counts[verdict] = self.counts.get(verdict, 0) + 1
+        now = time.monotonic()
+        if not self.enabled or (now - self._last < 0.1 and self.done < self.total):
+            return
+        self._last = now
+        frac = self.done / self.total
+        elapsed = now - self.t0
+        rate = self.done / elapsed if elapsed > 0 else 0.0
+        eta = (self.total - self.done) / rate if rate > 0 else 0.0
+        bad = ", ".join(f"{n} {v}" for v, n in sorted(self.counts.items()) if v != "safe")
+        text = (f"fleet [{'#' * int(frac * 30):<30}] {self.done}/{self.total} jobs"
+                f"{'; ' + bad if bad else ''}; {rate:.1f} jobs/s, {elapsed:.0f} s, about {eta:.0f} s left")
+        self.stream.write("\r" + text.ljust(self._width))
+        self.stream.flush()
+        self._width = len(text)
+
+    def close(self) -> None:
+        if self.enabled and self._width:
+            self.stream.write("\r" + " " * self._width + "\r")
+            self.stream.flush()
+
+
+def _task(project: Project, plan: JobPlan, job: Job, transfer: str) -> dict[str, Any]:
+    task: dict[str, Any] = {
+        "kind": "whole", "key": job.key, "program": job.program, "program_sha256": job.program_sha256,
+        "machine_file": _machine_display(project, job.machine), "machine_text": plan.machine_text[job.machine],
+        "machine_sha256": job.machine_sha256, "settings": list(job.settings), "root": str(project.root),
+    }
+    if transfer == "paths":
+        task["program_path"] = str(project.root / job.program)
+    else:
+        task["program_data"] = plan.program_bytes[job.program]
+    return task
+
+
+def _machine_display(project: Project, name: str) -> str:
+    path = project.machine(name).file
+    try:
+        return path.relative_to(project.root).as_posix()
+    except ValueError:
+        return str(path)
+
+
+def _split_tasks(project: Project, plan: JobPlan, job: Job, split_lines: int) -> list[dict[str, Any]] | None:
+    """Chunk tasks for a long program that may be split (see :mod:`nczones.fleet.split`), else None."""
+    data = plan.program_bytes[job.program]
+    if data.count(b"\n") < 2 * split_lines:
+        return None
+    from ..errors import InputError
+    from ..gcode import load_program
+
+    try:
+        text = load_program(project.root / job.program, job.program).text
+        machine = machine_for(_machine_display(project, job.machine), plan.machine_text[job.machine],
+                              job.machine_sha256)
+        chunks = split_program(text, machine, dict(job.settings), split_lines)
+    except InputError:
+        return None  # verified whole, which reports the error
+    if chunks is None:
+        return None
+    base = _task(project, plan, job, "bytes")
+    del base["program_data"]
+    tasks = []
+    for i, chunk in enumerate(chunks):
+        task = dict(base, kind="chunk", index=i, count=len(chunks), chunk=chunk, text=chunk.text(text))
+        tasks.append(task)
+    return tasks
+
+
+def run_check(project: Project, store: Store, options: CheckOptions = CheckOptions(), *,
+              cells: Iterable[Cell] | None = None, force: bool = False, err: TextIO | None = None,
+              make_executor: Callable[[CheckOptions, int], Any] | None = None) -> CheckSummary:
+    """Verify every cell of ``project`` whose job is not in ``store`` (all of them with ``force``).
+
+    ``make_executor(options, jobs_to_run)`` chooses the executor (default:
+    :func:`choose_executor`); tests pass their own.
+    """
+    err = sys.stderr if err is None else err
+    t0 = time.perf_counter()
+    version = code_version()
+    cell_list = list(project.cells() if cells is None else cells)
+    plan = plan_jobs(project, cell_list, version)
+    known = set() if force else store.known(plan.jobs)
+    todo = [job for key, job in plan.jobs.items() if key not in known]
+    run_id = store.begin_run(project, options.executor, version, len(cell_list), len(plan.jobs))
+    summary = CheckSummary(run_id, len(cell_list), len(plan.jobs))
+    rows: list[tuple[str, str, str | None, str, str | None, str | None]] = []
+    for cell in cell_list:
+        where = (cell.program, cell.machine)
+        if where in plan.errors:
+            rows.append((cell.program, cell.machine, None, "error", "error", plan.errors[where]))
+        else:
+            key = plan.cell_keys[where]
+            rows.append((cell.program, cell.machine, key, "reused" if key in known else "pending", None, None))
+    store.set_cells(run_id, rows)
+    summary.problems.extend(plan.errors.values())
+    summary.reused = sum(1 for k in plan.jobs if k in known)
+    executor = None
+    interrupted = False
+    try:
+        if todo:
+            executor = (make_executor or choose_executor)(options, len(todo))
+            summary.executor = executor.name
+            _execute(project, plan, todo, store, executor, options, summary, err)
+    except KeyboardInterrupt:
+        interrupted = True
+        _quiet_half_built_solver_contexts()
+        raise
+    finally:
+        if executor is not None:
+            try:
+                executor.close()
+            except Exception:  # noqa: BLE001 - closing a cluster must not hide the run's outcome
+                pass
+        store.commit()
+        summary.interrupted = interrupted
+        summary.wall_s = time.perf_counter() - t0
+        store.end_run(run_id, ran=summary.ran, reused=summary.reused, interrupted=interrupted,
+                      partial=bool(summary.failed) or interrupted)
+        for c in store.cells(run_id):
+            v = c.verdict if c.status != "pending" else None
+            if v is not None:
+                summary.verdicts[v] = summary.verdicts.get(v, 0) + 1
+    return summary
+
+
+def _quiet_half_built_solver_contexts() -> None:
+    """After Ctrl-C, a Z3 context interrupted in its constructor fails in ``__del__``; that is not news."""
+    previous = sys.unraisablehook
+
+    def hook(unraisable: Any) -> None:
+        where = getattr(unraisable.object, "__qualname__", "")
+        if where == "Context.__del__" and isinstance(unraisable.exc_value, AttributeError):
+            return
+        previous(unraisable)
+
+    sys.unraisablehook = hook
+
+
+def choose_executor(options: CheckOptions, jobs: int) -> Any:
+    """The executor for ``jobs`` tasks under ``options`` (see :class:`CheckOptions`)."""
+    import os
+
+    from .execute import SerialExecutor, connect, local_cluster
+
+    how = options.executor
+    if how == "auto":
+        address = os.environ.get("DASK_SCHEDULER_ADDRESS")
+        if address:
+            how = address
+        elif jobs < options.cluster_threshold:
+            how = "serial"
+        else:
+            how = "local"
+    if how == "serial":
+        return SerialExecutor()
+    if how == "local":
+        return local_cluster(options.workers, attempts=options.attempts)
+    return connect(how, attempts=options.attempts)
+
+
+def _execute(project: Project, plan: JobPlan, todo: list[Job], store: Store, executor: Any,
+             options: CheckOptions, summary: CheckSummary, err: TextIO) -> None:
+    transfer = options.transfer
+    if transfer == "auto":
+        transfer = "paths" if executor.name == "serial" or executor.name.startswith("local") else "bytes"
+    bar = _Bar(err, len(todo), err.isatty() if options.progress is None else options.progress)
+    chunks: dict[str, list[tuple[Any, Chunk] | None]] = {}
+    attempts: dict[str, int] = {}
+    version = code_version()
+    try:
+        for job in todo:
+            tasks = _split_tasks(project, plan, job, options.split_lines)
+            if tasks is None:
+                executor.submit(_task(project, plan, job, transfer))
+                continue
+            summary.split += 1
+            chunks[job.key] = [None] * len(tasks)
+            for t in tasks:
+                executor.submit(t)
+        for task, answer, attempt in executor.results():
+            key = task["key"]
+            job = plan.jobs[key]
+            attempts[key] = max(attempts.get(key, 1), attempt)
+            if attempt > 1:
+                summary.retried += 1
+            if isinstance(answer, BaseException):
+                message = f"{job.program} on {job.machine}: the task failed: {type(answer).__name__}: {answer}"
+                _fail(store, summary, key, message)
+                chunks.pop(key, None)
+                bar.update("error")
+                continue
+            if answer.get("version") != version:
+                _fail(store, summary, key, f"{job.program} on {job.machine}: the worker {answer.get('worker')} "
+                                           f"runs {answer.get('version')}, this run needs {version}; install the "
+                                           "same nczones on every worker")
+                chunks.pop(key, None)
+                bar.update("error")
+                continue
+            if task["kind"] == "chunk":
+                parts = chunks.get(key)
+                if parts is None:
+                    continue  # the job already fell back to a whole verification
+                if "result" not in answer:
+                    chunks.pop(key)
+                    summary.fallbacks += 1
+                    executor.submit(_task(project, plan, job, transfer))
+                    continue
+                parts[task["index"]] = (answer["result"], task["chunk"])
+                if any(p is None for p in parts):
+                    continue
+                done = [p for p in parts if p is not None]
+                max_violations = int(dict(job.settings).get("max_violations", 20))
+                combined = combine(done, max_violations, job.program_sha256)
+                chunks.pop(key)
+                if combined is None:
+                    summary.fallbacks += 1
+                    executor.submit(_task(project, plan, job, transfer))
+                    continue
+                wall = sum(float(dict(r.timings).get("total_s", 0.0)) for r, _ in done)
+                rec = record(combined, job.program, wall, chunks=len(done))
+                worker = ",".join(sorted({a for a in [answer["worker"]]}))
+            else:
+                rec = answer["record"]
+                worker = answer["worker"]
+            store.put(job, rec, attempts=attempts.get(key, 1), worker=worker, commit=False)
+            store.finish_cells(summary.run_id, key, rec["verdict"])
+            store.commit()
+            summary.ran += 1
+            bar.update(rec["verdict"])
+    except KeyboardInterrupt:
+        executor.cancel()
+        raise
+    finally:
+        bar.close()
+
+
+def _fail(store: Store, summary: CheckSummary, key: str, message: str) -> None:
+    store.fail_cells(summary.run_id, key, message)
+    store.commit()
+    summary.failed += 1
+    summary.problems.append(message)

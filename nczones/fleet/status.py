@@ -1,0 +1,230 @@
+"""``fleet status`` (the programs × machines matrix of the latest run) and ``fleet diff`` (what changed).
+
+The matrix comes as text (one row per program, one column per machine,
+``.`` safe, ``X`` unsafe, ``?`` unknown, ``E`` error, blank: the program
+does not run on that machine, ``-`` not verified yet), as JSON
+(:func:`status_json`) or as an HTML page (:func:`write_status_html`) whose
+cells link to each job's text and JSON report, written beside the page.
+
+A diff compares the cells of the latest run with those of the run before
+(:func:`diff_runs`): newly unsafe first, then newly unknown or error, then
+cells whose violations changed, fixed cells, and cells added or removed.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .store import CellRow, Run, Store
+
+__all__ = ["SYMBOLS", "status_text", "status_json", "write_status_html", "Change", "diff_runs", "diff_text",
+           "diff_json"]
+
+SYMBOLS = {"safe": ".", "unsafe": "X", "unknown": "?", "error": "E", None: "-"}
+_RANK = {"unsafe": 0, "error": 1, "unknown": 2, "safe": 3, None: 4}
+
+
+def _verdict(c: CellRow) -> str | None:
+    return None if c.status == "pending" else c.verdict
+
+
+def _first(c: CellRow) -> str:
+    if c.violations:
+        v = c.violations[0]
+        return f"line {v.get('line')} ({v.get('zone')})"
+    if c.reasons:
+        r = c.reasons[0]
+        loc = r.get("location")
+        where = f"line {loc['line']}: " if isinstance(loc, dict) and loc.get("line") else ""
+        return where + str(r.get("message", "")).splitlines()[0][:120]
+    return c.message.splitlines()[0][:120] if c.message else ""
+
+
+def _matrix(cells: list[CellRow]) -> tuple[list[str], list[str], dict[tuple[str, str], CellRow]]:
+    machines = sorted({c.machine for c in cells})
+    programs = sorted({c.program for c in cells})
+    return programs, machines, {(c.program, c.machine): c for c in cells}
+
+
+def _counts(cells: list[CellRow]) -> dict[str, int]:
+    out: dict[str, int] = {}
+    for c in cells:
+        v = _verdict(c) or "pending"
+        out[v] = out.get(v, 0) + 1
+    return out
+
+
+def status_text(run: Run, cells: list[CellRow], *, details: bool = True) -> str:
+    """The matrix as text, a legend, the counts, and one line per cell that is not safe."""
+    programs, machines, grid = _matrix(cells)
+    width = max([len(p) for p in programs] + [7])
+    lines = []
+    for i, m in enumerate(machines):
+        lines.append(" " * (width + 2) + "| " * i + m)
+    lines.append(" " * (width + 2) + "| " * len(machines))
+    for p in programs:
+        row = " ".join(SYMBOLS[_verdict(grid[(p, m)])] if (p, m) in grid else " " for m in machines)
+        lines.append(f"{p:<{width}}  {row}")
+    counts = _counts(cells)
+    state = " (interrupted)" if run.interrupted else ""
+    lines.append("")
+    lines.append(f"run {run.run_id}{state}: {len(cells)} cells: "
+                 + ", ".join(f"{n} {v}" for v, n in sorted(counts.items(), key=lambda x: _RANK.get(x[0], 5)))
+                 + f"; {run.ran} jobs ran, {run.reused} reused")
+    lines.append("legend: . safe, X unsafe, ? unknown, E error, - not verified, blank: not on that machine")
+    if details:
+        bad = sorted((c for c in cells if _verdict(c) not in ("safe",)),
+                     key=lambda c: (_RANK.get(_verdict(c), 5), c.machine, c.program))
+        for c in bad:
+            lines.append(f"{c.program} on {c.machine}: {_verdict(c) or 'not verified'}"
+                         + (f": {_first(c)}" if _first(c) else ""))
+    return "\n".join(lines) + "\n"
+
+
+def _cell_json(c: CellRow) -> dict[str, Any]:
+    return {"program": c.program, "machine": c.machine, "verdict": _verdict(c), "status": c.status,
+            "job_key": c.job_key, "violations": list(c.violations), "reasons": list(c.reasons),
+            "message": c.message, "wall_s": c.wall_s}
+
+
+def status_json(run: Run, cells: list[CellRow]) -> str:
+    """The latest run's cells as JSON: ``{"run": {...}, "counts": {...}, "machines", "programs", "cells": [...]}``."""
+    programs, machines, _ = _matrix(cells)
+    doc = {
+        "run": {"id": run.run_id, "started_at": run.started_at, "finished_at": run.finished_at,
+                "executor": run.executor, "ran": run.ran, "reused": run.reused, "interrupted": run.interrupted},
+        "counts": _counts(cells),
+        "machines": machines,
+        "programs": programs,
+        "cells": [_cell_json(c) for c in cells],
+    }
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+
+
+_CSS = """
+body{font-family:system-ui,sans-serif;margin:1.5em;color:#222}
+table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px;text-align:center;font-size:13px}
+th.p,td.p{text-align:left;font-family:monospace}th.m{writing-mode:vertical-rl;transform:rotate(180deg)}
+td.safe{background:#d8f5d0}td.unsafe{background:#f7c5c0;font-weight:bold}td.unknown{background:#fbe9a8}
+td.error{background:#e0c8f0}td.pending{background:#eee}a{color:inherit;text-decoration:none}
+"""
+
+
+def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | Path, title: str) -> list[Path]:
+    """Write the HTML matrix to ``path`` and each cell's reports to ``reports/KEY.txt|json`` beside it.
+
+    Returns the files written.  The page is self-contained (no network
+    resources); a cell links to its text report, its title shows the first
+    finding.
+    """
+    path = Path(path)
+    folder = path.parent / "reports"
+    folder.mkdir(parents=True, exist_ok=True)
+    written = [path]
+    programs, machines, grid = _matrix(cells)
+    for key in sorted({c.job_key for c in cells if c.job_key}):
+        res = store.result(key)
+        if res is None:
+            continue
+        for ext, text in (("txt", res["report_text"]), ("json", res["report_json"])):
+            f = folder / f"{key}.{ext}"
+            f.write_text(text, encoding="utf-8")
+            written.append(f)
+    e = html.escape
+    rows = []
+    for p in programs:
+        tds = [f'<td class="p">{e(p)}</td>']
+        for m in machines:
+            c = grid.get((p, m))
+            if c is None:
+                tds.append("<td></td>")
+                continue
+            v = _verdict(c)
+            cls = v or "pending"
+            label = SYMBOLS[v]
+            tip = e(f"{p} on {m}: {v or 'not verified'}" + (f": {_first(c)}" if _first(c) else ""))
+            if c.job_key and v is not None and c.status != "error":
+                ref = f"reports/{c.job_key}"
+                tds.append(f'<td class="{cls}" title="{tip}"><a href="{ref}.txt">{label}</a> '
+                           f'<a href="{ref}.json">j</a></td>')
+            else:
+                tds.append(f'<td class="{cls}" title="{tip}">{label}</td>')
+        rows.append("<tr>" + "".join(tds) + "</tr>")
+    counts = ", ".join(f"{n} {v}" for v, n in sorted(_counts(cells).items(), key=lambda x: _RANK.get(x[0], 5)))
+    head = "".join(f'<th class="m">{e(m)}</th>' for m in machines)
+    page = (f"<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>{e(title)}</title>"
+            f"<style>{_CSS}</style></head><body>\n<h1>{e(title)}</h1>\n"
+            f"<p>run {run.run_id}{' (interrupted)' if run.interrupted else ''}: {len(cells)} cells: {e(counts)}; "
+            f"{run.ran} jobs ran, {run.reused} reused. Each cell links to its text report (and JSON: j).</p>\n"
+            f"<table><tr><th class=\"p\">program</th>{head}</tr>\n" + "\n".join(rows) + "\n</table>\n"
+            "<p>. safe, X unsafe, ? unknown, E error, - not verified</p>\n</body></html>\n")
+    path.write_text(page, encoding="utf-8")
+    return written
+
+
+@dataclass(frozen=True, slots=True)
+class Change:
+    """One cell that differs between two runs."""
+
+    kind: str  # newly unsafe, newly unknown, newly error, violations changed, fixed, added, removed
+    program: str
+    machine: str
+    before: str | None
+    after: str | None
+    detail: str
+
+
+_ORDER = ("newly unsafe", "newly error", "newly unknown", "violations changed", "fixed", "added", "removed")
+
+
+def _violation_key(c: CellRow) -> list[tuple[Any, ...]]:
+    return [(v.get("line"), v.get("zone"), v.get("kind")) for v in c.violations]
+
+
+def diff_runs(old: list[CellRow], new: list[CellRow]) -> list[Change]:
+    """The cells that changed from run ``old`` to run ``new``, newly unsafe first (see the module docstring)."""
+    before = {(c.program, c.machine): c for c in old}
+    after = {(c.program, c.machine): c for c in new}
+    changes = []
+    for where in sorted(set(before) | set(after)):
+        b, a = before.get(where), after.get(where)
+        p, m = where
+        if b is None and a is not None:
+            changes.append(Change("added", p, m, None, _verdict(a), _first(a)))
+            continue
+        if a is None and b is not None:
+            changes.append(Change("removed", p, m, _verdict(b), None, ""))
+            continue
+        assert a is not None and b is not None
+        vb, va = _verdict(b), _verdict(a)
+        if va is None or vb is None:
+            if va != vb and va is not None:
+                changes.append(Change("added", p, m, vb, va, _first(a)))
+            continue
+        if va != vb:
+            kind = {"unsafe": "newly unsafe", "unknown": "newly unknown", "error": "newly error"}.get(va, "fixed")
+            changes.append(Change(kind, p, m, vb, va, _first(a)))
+        elif va == "unsafe" and _violation_key(a) != _violation_key(b):
+            changes.append(Change("violations changed", p, m, vb, va, f"was {_first(b)}, now {_first(a)}"))
+    changes.sort(key=lambda c: (_ORDER.index(c.kind), c.machine, c.program))
+    return changes
+
+
+def diff_text(old_run: Run, new_run: Run, changes: list[Change]) -> str:
+    lines = [f"changes from run {old_run.run_id} to run {new_run.run_id}: "
+             + (f"{len(changes)} cells" if changes else "none")]
+    for c in changes:
+        lines.append(f"{c.kind}: {c.program} on {c.machine}: {c.before or '-'} -> {c.after or '-'}"
+                     + (f": {c.detail}" if c.detail else ""))
+    return "\n".join(lines) + "\n"
+
+
+def diff_json(old_run: Run, new_run: Run, changes: list[Change]) -> str:
+    doc = {"from_run": old_run.run_id, "to_run": new_run.run_id,
+           "changes": [{"kind": c.kind, "program": c.program, "machine": c.machine, "before": c.before,
+                        "after": c.after, "detail": c.detail} for c in changes]}
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
