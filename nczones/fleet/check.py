@@ -11,6 +11,7 @@ with its unfinished cells pending, and the interrupt goes on to the caller.
 
 from __future__ import annotations
 
+import hashlib
 import sys
 import time
 from collections.abc import Callable, Iterable
@@ -122,7 +123,10 @@ def _task(project: Project, plan: JobPlan, job: Job, transfer: str) -> dict[str,
     if transfer == "paths":
         task["program_path"] = str(project.root / job.program)
     else:
-        task["program_data"] = plan.program_bytes[job.program]
+        try:
+            task["program_data"] = (project.root / job.program).read_bytes()
+        except OSError:
+            task["program_path"] = str(project.root / job.program)  # the worker reports it
     return task
 
 
@@ -136,14 +140,19 @@ def _machine_display(project: Project, name: str) -> str:
 
 def _split_tasks(project: Project, plan: JobPlan, job: Job, split_lines: int) -> list[dict[str, Any]] | None:
     """Chunk tasks for a long program that may be split (see :mod:`nczones.fleet.split`), else None."""
-    data = plan.program_bytes[job.program]
-    if data.count(b"\n") < 2 * split_lines:
+    try:
+        data = (project.root / job.program).read_bytes()
+    except OSError:
         return None
+    if data.count(b"\n") < 2 * split_lines or hashlib.sha256(data).hexdigest() != job.program_sha256:
+        return None
+    import io
+
     from ..errors import InputError
-    from ..gcode import load_program
+    from ..gcode.source import read_stdin
 
     try:
-        text = load_program(project.root / job.program, job.program).text
+        text = read_stdin(io.BytesIO(data)).text  # the bytes the key was computed from, decoded as a file is
         machine = machine_for(_machine_display(project, job.machine), plan.machine_text[job.machine],
                               job.machine_sha256)
         chunks = split_program(text, machine, dict(job.settings), split_lines)
@@ -151,8 +160,8 @@ def _split_tasks(project: Project, plan: JobPlan, job: Job, split_lines: int) ->
         return None  # verified whole, which reports the error
     if chunks is None:
         return None
-    base = _task(project, plan, job, "bytes")
-    del base["program_data"]
+    base = _task(project, plan, job, "paths")
+    del base["program_path"]
     tasks = []
     for i, chunk in enumerate(chunks):
         task = dict(base, kind="chunk", index=i, count=len(chunks), chunk=chunk, text=chunk.text(text))
@@ -316,6 +325,10 @@ def _execute(project: Project, plan: JobPlan, todo: list[Job], store: Store, exe
             else:
                 rec = answer["record"]
                 worker = answer["worker"]
+                if rec["verdict"] == "error" and rec["reasons"] and rec["reasons"][0].get("code") == "FL201":
+                    _fail(store, summary, key, rec["reasons"][0]["message"])
+                    bar.update("error")
+                    continue
             store.put(job, rec, attempts=attempts.get(key, 1), worker=worker, commit=False)
             store.finish_cells(summary.run_id, key, rec["verdict"])
             store.commit()

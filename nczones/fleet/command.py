@@ -139,7 +139,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         "fleet", help="verify a library of programs against its machines, incrementally (serial or on Dask)",
         description="Verify every program of a library (nczones.toml) against every machine it runs on; only jobs "
                     "whose program, machine file, settings or nczones changed run again. See specs/fleet.md.")
-    fsub = fleet.add_subparsers(dest="fleet_command", required=True, metavar="SUBCOMMAND")
+    fsub = fleet.add_subparsers(dest="fleet_command", required=True, metavar="SUBCOMMAND",
+                                help="check (verify what changed), status (the matrix), diff (what changed)")
     register_check(fsub)
     register_status(fsub)
     register_diff(fsub)

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import logging
 import os
+import warnings
 from collections import deque
 from collections.abc import Iterator
 from typing import Any
@@ -139,15 +140,24 @@ def local_cluster(workers: int | None = None, *, attempts: int = DEFAULT_ATTEMPT
     from distributed import Client, LocalCluster
 
     n = workers if workers is not None else (os.cpu_count() or 1)
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
-                           silence_logs=logging.ERROR)
+    with warnings.catch_warnings():
+        # the scheduler's HTTP endpoint moves to a free port when another cluster holds 8787: not news
+        warnings.filterwarnings("ignore", message=r"Port \d+ is already in use", category=UserWarning)
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                               silence_logs=logging.ERROR)
     client = Client(cluster)
     return DaskExecutor(client, attempts=attempts, name=f"local cluster ({n} workers)", cluster=cluster)
 
 
-def connect(address: str, *, attempts: int = DEFAULT_ATTEMPTS, timeout: float = 10) -> DaskExecutor:
+def connect(address: str, *, attempts: int = DEFAULT_ATTEMPTS, timeout: float = 5) -> DaskExecutor:
     """A :class:`DaskExecutor` on an existing scheduler (``tcp://host:8786``)."""
     from distributed import Client
 
-    client = Client(address, timeout=timeout)
+    try:
+        client = Client(address, timeout=timeout)
+    except (OSError, TimeoutError, ValueError) as exc:
+        from ..errors import Diagnostic, InputError
+
+        raise InputError(Diagnostic("FL111", f"cannot reach the Dask scheduler at {address}: {exc}",
+                                    file="<command line>")) from None
     return DaskExecutor(client, attempts=attempts, name=f"dask scheduler {address}")

@@ -6,9 +6,10 @@ with the contents of a subprogram library folder when the settings name one)
 and of the nczones version (:func:`code_version`).  Two cells with the same
 key are one job; a key already in the store is not verified again.
 
-Invariant: everything the verdict depends on is in the key.  The program and
-machine are read once per run and the key is computed from those very bytes;
-they are what is sent to the workers.
+Invariant: everything the verdict depends on is in the key.  The machine
+files are read once per run and their text is what the workers get; a
+program is read to hash it and read again when its job is sent, and the
+worker refuses bytes whose SHA-256 is not the key's (``FL201``, not stored).
 """
 
 from __future__ import annotations
@@ -89,7 +90,7 @@ class JobPlan:
     cell_keys: dict[tuple[str, str], str]
     jobs: dict[str, Job]
     errors: dict[tuple[str, str], str]  # cells that cannot be a job (bad machine file, bad parameter)
-    program_bytes: dict[str, bytes]
+    program_sha256: dict[str, str]  # program -> SHA-256 of its bytes (the bytes are read again when sent)
     machine_text: dict[str, str]  # machine name -> text (UTF-8) of its file
 
 
@@ -121,7 +122,7 @@ def plan_jobs(project: Project, cells: Iterable[Cell], version: str | None = Non
 
     version = code_version() if version is None else version
     cells = tuple(cells)
-    program_bytes: dict[str, bytes] = {}
+    program_sha: dict[str, str] = {}
     machine_text: dict[str, str] = {}
     machine_sha: dict[str, str] = {}
     machines: dict[str, Any] = {}
@@ -151,9 +152,9 @@ def plan_jobs(project: Project, cells: Iterable[Cell], version: str | None = Non
         if cell.machine in machine_errors:
             errors[where] = machine_errors[cell.machine]
             continue
-        if cell.program not in program_bytes:
+        if cell.program not in program_sha:
             try:
-                program_bytes[cell.program] = (project.root / cell.program).read_bytes()
+                program_sha[cell.program] = _sha((project.root / cell.program).read_bytes())
             except OSError as exc:
                 errors[where] = f"{cell.program}: cannot read the program: {exc.strerror or exc}"
                 continue
@@ -171,12 +172,12 @@ def plan_jobs(project: Project, cells: Iterable[Cell], version: str | None = Non
                 libraries[lib] = _library_digest(project.root / lib)
             hashed += "\0library:" + libraries[lib]
         settings_sha = _sha(hashed.encode())
-        key = job_key(_sha(program_bytes[cell.program]), machine_sha[cell.machine], settings_sha, version)
+        key = job_key(program_sha[cell.program], machine_sha[cell.machine], settings_sha, version)
         cell_keys[where] = key
         if key not in jobs:
-            jobs[key] = Job(key, cell.program, cell.machine, _sha(program_bytes[cell.program]),
+            jobs[key] = Job(key, cell.program, cell.machine, program_sha[cell.program],
                             machine_sha[cell.machine], settings_sha, cell.settings, version)
-    return JobPlan(cells, cell_keys, jobs, errors, program_bytes, machine_text)
+    return JobPlan(cells, cell_keys, jobs, errors, program_sha, machine_text)
 
 
 def _display(project: Project, path: Path) -> str:

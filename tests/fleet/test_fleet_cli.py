@@ -135,3 +135,33 @@ def test_ctrl_c_stops_the_run_and_keeps_what_finished(tmp_path):
     again = subprocess.run([sys.executable, "-m", "nczones", "fleet", "check", str(project), "--serial"],
                            cwd=ROOT, capture_output=True, text=True, env=dict(os.environ))
     assert f"{24 - stored} jobs ran, {stored} reused" in again.stdout
+
+
+def test_an_unreachable_scheduler_is_one_line_and_exit_2(tmp_path):
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]  # closed again: nothing listens there
+    small_library(tmp_path, programs=1, machines=1)
+    r = subprocess.run([sys.executable, "-m", "nczones", "fleet", "check", str(tmp_path), "--scheduler",
+                        f"tcp://127.0.0.1:{port}"], capture_output=True, text=True, cwd=ROOT, timeout=120,
+                       env=dict(os.environ, DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT="2s"))
+    assert r.returncode == 2 and "Traceback" not in r.stderr
+    assert f"error[FL111]: cannot reach the Dask scheduler at tcp://127.0.0.1:{port}" in r.stderr
+
+
+def test_every_fleet_option_has_help_text():
+    import argparse
+
+    from nczones.cli import build_parser
+
+    def subparsers(p):
+        return next(a for a in p._actions if isinstance(a, argparse._SubParsersAction))
+
+    fleet = subparsers(build_parser()).choices["fleet"]
+    commands = subparsers(fleet).choices
+    assert set(commands) == {"check", "status", "diff"}
+    missing = [f"{name} {'/'.join(a.option_strings) or a.dest}" for name, p in commands.items()
+               for a in p._actions if not isinstance(a, argparse._HelpAction) and not a.help]
+    assert missing == []

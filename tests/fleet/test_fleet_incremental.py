@@ -81,3 +81,26 @@ def test_a_machine_file_that_does_not_load_makes_its_cells_errors_and_the_rest_r
     shutil.rmtree(lib / "programs")
     gone, cells = check(project, tmp_path / "e.sqlite")
     assert gone.cells == 0 and cells == {}
+
+
+def test_a_program_that_changes_during_the_run_is_an_error_for_that_run_and_not_stored(tmp_path):
+    from nczones.fleet.check import CheckOptions, run_check
+    from nczones.fleet.execute import SerialExecutor
+    from nczones.fleet.project import load_project
+
+    lib = tmp_path / "lib"
+    project = load_project(small_library(lib, programs=2, machines=1))
+
+    def executor_after_an_edit(options, jobs):  # called after the keys were computed, before any job is sent
+        (lib / "programs" / "part_001.ngc").write_text("G0 X1\n", encoding="utf-8")
+        return SerialExecutor()
+
+    for transfer in ("bytes", "paths"):
+        with Store(tmp_path / f"{transfer}.sqlite") as store:
+            summary = run_check(project, store, CheckOptions(transfer=transfer, progress=False),
+                                make_executor=executor_after_an_edit)
+            assert (summary.ran, summary.failed) == (1, 1)
+            assert "FL201" in summary.problems[0] or "changed while the fleet ran" in summary.problems[0]
+            assert len(list(store.results())) == 1
+        (lib / "programs" / "part_001.ngc").write_text(
+            __import__("nczones.fleet.generate", fromlist=["x"]).mill_program(1, 6), encoding="utf-8")
