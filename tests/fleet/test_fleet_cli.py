@@ -29,7 +29,7 @@ def test_the_bundled_library_has_mixed_verdicts_and_every_example(tmp_path):
     programs = {c.program for c in cells}
     assert len(programs) >= 30
     assert {p for p in programs if p.startswith("../programs/")} == {
-        f"../programs/{p.name}" for p in (ROOT / "specs" / "examples" / "programs").glob("*.ngc")}
+        f"../programs/{p.name}" for p in (ROOT / "specs" / "examples" / "programs").glob("*.*")}
     store = tmp_path / "lib.sqlite"
     r = nczones("fleet", "check", str(LIBRARY), "--store", str(store), "--serial", "--machine", "grinder",
                 "--machine", "mill_start")
