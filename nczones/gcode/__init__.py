@@ -98,7 +98,7 @@ class Interpretation:
     def __init__(self, source: ProgramSource, machine: Machine, *, block_delete: bool,
                  track_dependencies: bool, arc_tolerance: Fraction | str, fast: bool, chunk_size: int,
                  max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, dialect: str = "linuxcnc",
-                 library=None):
+                 library=None, param_ranges=()):
         self.source = source
         text = self.text = source.text
         self.machine = machine
@@ -121,8 +121,9 @@ class Interpretation:
             cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
             cls = CylindricalInterpreter if cylindrical else Interpreter
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
-                               track_dependencies=track_dependencies, chunk_size=chunk_size)
-        self.fast = fast and not track_dependencies and not cylindrical
+                               track_dependencies=track_dependencies, chunk_size=chunk_size,
+                               param_ranges=param_ranges)
+        self.fast = fast and not self.interpreter.track and not cylindrical
         self.fast_lines = 0
         self._started = False
         self.finished = False
@@ -266,6 +267,7 @@ def interpret(
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     dialect: str | None = None,
     library: str | os.PathLike | None = None,
+    param_ranges=(),
 ) -> Interpretation:
     """Interpret the G-code program file ``source`` for a machine (lazily).
 
@@ -305,6 +307,10 @@ def interpret(
     library : path, optional
         A folder of subprogram files (``O1234``, ``O1234.nc``, ...) that Fanuc ``M98``/``G65`` calls
         search when the program is not in the file.
+    param_ranges : iterable of ParamRange
+        The parameters verified over ranges (implies ``track_dependencies``):
+        a state parameter read (``#5221``) whose value depends on one of
+        them makes the interpretation unknown at that read.
 
     Returns
     -------
@@ -323,7 +329,8 @@ def interpret(
         raise InvalidArgument(f"dialect must be \"linuxcnc\" or \"fanuc\", got {dialect!r}")
     return Interpretation(src, machine, block_delete=block_delete, track_dependencies=track_dependencies,
                           arc_tolerance=tol, fast=fast, chunk_size=chunk_size,
-                          max_loop_iterations=max_loop_iterations, dialect=dialect, library=library)
+                          max_loop_iterations=max_loop_iterations, dialect=dialect, library=library,
+                          param_ranges=tuple(param_ranges))
 
 
 def interpret_text(text: str, machine: Machine, *, file: str = "<program>", **options: Any) -> Interpretation:

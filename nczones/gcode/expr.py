@@ -109,7 +109,11 @@ class Parameters:
       language layer reads parameters lazily, so a block yielded after the
       call sees the new value;
     * ``provide(key, getter)`` registers a computed, read-only parameter
-      (``5420`` current X, ``"_x"``...): every read calls ``getter()``.
+      (``5420`` current X, ``"_x"``...): every read calls ``getter()``, which
+      may raise :class:`EvalError` (a ``GC30x`` code makes the language layer
+      report the program as unknown at that word);
+    * ``guard(key, reason)``: an assignment the program makes to ``#key`` is
+      unknown, for ``reason`` (state the interpreter cannot follow).
 
     ``on_write``, if set, is called as ``on_write(key, value)`` for every
     assignment the *program* makes (``#5221 = 10``), after it takes effect.
@@ -122,13 +126,14 @@ class Parameters:
     200.0
     """
 
-    __slots__ = ("_num", "_globals", "_scopes", "_providers", "on_write", "max_parameter")
+    __slots__ = ("_num", "_globals", "_scopes", "_providers", "_guarded", "on_write", "max_parameter")
 
     def __init__(self, numbered: dict | None = None, named: dict | None = None):
         self._num: dict[int, Value] = {}
         self._globals: dict[str, Value] = {}
         self._scopes: list[dict[str, Value]] = [{}]
         self._providers: dict[int | str, Callable[[], object]] = {}
+        self._guarded: dict[int | str, str] = {}
         self.on_write: Callable[[int | str, float], None] | None = None
         self.max_parameter = MAX_PARAMETER
         self._globals["_value"] = (0.0, Fraction(0))
@@ -154,6 +159,14 @@ class Parameters:
     def provide(self, key: int | str, getter: Callable[[], object]) -> None:
         """Make ``#key`` a computed parameter: reads call ``getter()``."""
         self._providers[self._key(key)] = getter
+
+    def guard(self, key: int | str, reason: str) -> None:
+        """Make an assignment to ``#key`` by the program unknown (the language layer's GC305), for ``reason``."""
+        self._guarded[self._key(key)] = reason
+
+    def guarded(self, key: int | str) -> str | None:
+        """Why the program may not assign ``#key`` (None: it may)."""
+        return self._guarded.get(key) if self._guarded else None
 
     def exists(self, key: int | str) -> bool:
         key = self._key(key)

@@ -43,8 +43,10 @@ from ..frozen import builder
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import LANE_FULL, Block, Word
+from .expr import EvalError
 from .lexer import PlainBlock, _fraction, _fraction_raw
 from .splines import SPLINE_CODES, spline_block, spline_pending
+from .state import StateParameter, StateTable, StateValue, linuxcnc_state_parameters
 
 _NAME_PENDING = "NURBS"
 
@@ -266,6 +268,13 @@ class Interpreter:
         too short); beyond it the arc is an error GC301/GC302.
     track_dependencies : bool
         Fill ``deps_start``/``deps_end`` of every segment.
+    param_ranges : iterable
+        The parameters given as ranges: objects with ``name`` (``"G54.X"``,
+        ``"H1"``, ``"start.Z"``), ``lo`` and ``hi`` (deviations from the
+        machine file's values, Fractions) and optional ``lo_open``/``hi_open``
+        (such as :class:`nczones.prover.ParamRange`).  Implies tracking.  A
+        state parameter read whose value depends on one of them makes the
+        interpretation unknown (:mod:`nczones.gcode.state`).
     chunk_size : int
         Segments per emitted :class:`~nczones.motion.MotionChunk`.
 
@@ -300,6 +309,7 @@ class Interpreter:
         arc_tolerance: Fraction = DEFAULT_ARC_TOLERANCE,
         track_dependencies: bool = False,
         chunk_size: int = DEFAULT_CHUNK_SIZE,
+        param_ranges=(),
     ):
         #: "linuxcnc": accept I/J/K arcs exactly when LinuxCNC does (see _linuxcnc_rejects_arc)
         self.arc_rule = "linuxcnc" if arc_tolerance == "linuxcnc" else "fixed"
@@ -312,7 +322,11 @@ class Interpreter:
         self.machine = machine
         self.file = file
         self.arc_tolerance = Fraction(arc_tolerance)
-        self.track = track_dependencies
+        #: name -> (lo, hi, lo_open, hi_open): the deviation box of the parameters given as ranges
+        self.param_box = {r.name: (Fraction(r.lo), Fraction(r.hi), bool(getattr(r, "lo_open", False)),
+                                   bool(getattr(r, "hi_open", False))) for r in param_ranges}
+        self.ranged = frozenset(self.param_box)
+        self.track = bool(track_dependencies) or bool(self.param_box)
         self.chunk_size = max(1, int(chunk_size))
         self.axes: tuple[str, ...] = machine.axis_names
         self.naxes = len(self.axes)
@@ -354,6 +368,7 @@ class Interpreter:
         self._ix, self._iy = self.index.get("X"), self.index.get("Y")
         self.g92 = list(z)
         self.g92_params = list(z)
+        self.g92_applied = False
         self.home = {280: tuple(machine.reference), 300: tuple(machine.reference)}
         self.tool_table: dict[int, tuple[Fraction, dict]] = {}  # G10 L1/L10/L11 writes
         self.pos = list(machine.start)
@@ -361,6 +376,8 @@ class Interpreter:
         self.dep_pos = [{"start": 1} for _ in range(n)]
         self.dep_g5x = {name: [{name: 1} for _ in range(n)] for name in WORK_OFFSETS}
         self.dep_g92 = [{} for _ in range(n)]
+        self.dep_g92_params = [{} for _ in range(n)]
+        self.dep_home = {280: [{} for _ in range(n)], 300: [{} for _ in range(n)]}
         self.dep_tlo: dict = {}
         self._recompute_offsets()
         # ---- bookkeeping
@@ -561,45 +578,97 @@ class Interpreter:
 
     # ------------------------------------------------------------------ parameters
     def bind_parameters(self, params) -> None:
-        """Provide the read-only state parameters LinuxCNC programs read.
+        """Provide the state parameters of :meth:`state_parameters` to the language layer.
 
-        ``#5420``-``#5428`` (and ``#<_x>`` ...): the current position in
-        program coordinates and units; ``#5400``/``#<_current_tool>``;
-        ``#<_metric>``, ``#<_imperial>``, ``#<_absolute>``, ``#<_incremental>``.
+        Every entry is computed on each read (the current position, offsets,
+        tool, modes, ...); a read that depends on a parameter range, or of
+        state nczones does not model, raises the language layer's "unknown"
+        (GC305) at that word; an assignment to an entry is unknown too.
         """
-
         self._scopes = getattr(params, "_scopes", None)
+        for key, entry in self.state_parameters().items():
+            params.provide(key, self._state_reader(entry))
+            params.guard(key, f"{_show_key(key)} ({entry.meaning}) is controller state; a program that assigns "
+                              "it changes the controller in ways nczones does not follow")
 
-        def sync(get):
-            def synced():
-                if self._m73:
-                    self._m73_returns()
-                return get()
-            return synced
+    def state_parameters(self) -> StateTable:
+        """The dialect's table of state parameters (:mod:`nczones.gcode.state`); LinuxCNC's here."""
+        return _LINUXCNC_STATE
 
-        def prog(letter: str):
-            def get():
-                if self._m73:
-                    self._m73_returns()
-                i = self.index.get(letter)
-                if i is None:
-                    return _ZERO
-                if self._u is not None and i in (self._ix, self._iy):
-                    v = self._u[0 if i == self._ix else 1] - self.g92[i]
-                else:
-                    v = self.pos[i] - self.off[i]
-                return v / INCH if (self.inch and not self.rotary[i]) else v
-            return get
+    def _state_reader(self, entry: StateParameter):
+        def read():
+            if self._m73:
+                self._m73_returns()
+            got = entry.read(self)
+            if got is None:
+                raise EvalError("GC305", f"{_show_key(entry.key)} reads the {entry.meaning}, controller state "
+                                         "nczones does not model")
+            if type(got) is StateValue:
+                if self.ranged:
+                    hit = sorted(n for n, c in got.deps.items() if c and n in self.ranged)
+                    if hit:
+                        raise EvalError(
+                            "GC305",
+                            f"{_show_key(entry.key)} ({entry.meaning}) depends on the parameter "
+                            f"range{'s' if len(hit) > 1 else ''} {', '.join(hit)}; nczones does not follow a range "
+                            "through expressions, so the program is verified only up to this read")
+                return got.value
+            return got
+        return read
 
-        for k, letter in enumerate(AXIS_LETTERS):
-            params.provide(5420 + k, prog(letter))
-            params.provide("_" + letter.lower(), prog(letter))
-        params.provide(5400, lambda: self.tool_in_spindle)
-        params.provide("_current_tool", lambda: self.tool_in_spindle)
-        params.provide("_metric", sync(lambda: 0 if self.inch else 1))
-        params.provide("_imperial", sync(lambda: 1 if self.inch else 0))
-        params.provide("_absolute", sync(lambda: 1 if self.absolute else 0))
-        params.provide("_incremental", sync(lambda: 0 if self.absolute else 1))
+    # the state the readers of nczones.gcode.state see: (value, dependencies as parameter names)
+    def _named_deps(self, deps: dict, i: int, sign: int = 1) -> dict[str, int]:
+        if not self.track:
+            return {}
+        axis = self.axes[i]
+        return {(src if src.startswith("H") else f"{src}.{axis}"): sign * c for src, c in deps.items() if c}
+
+    def state_work_offset(self, name: str, i: int) -> StateValue:
+        """Work offset ``name`` (G54 ...) on axis ``i``, mm."""
+        return StateValue(self.g5x[name][i], self._named_deps(self.dep_g5x[name][i], i))
+
+    def state_g92(self, i: int) -> StateValue:
+        """The stored G92 offset (what G92.3 restores), mm."""
+        return StateValue(self.g92_params[i], self._named_deps(self.dep_g92_params[i], i))
+
+    def state_home(self, k: int, i: int) -> StateValue:
+        """The G28 (``k = 280``) or G30 (300) position, machine coordinates, mm."""
+        return StateValue(self.home[k][i], self._named_deps(self.dep_home[k][i], i))
+
+    def state_machine_position(self, i: int) -> StateValue:
+        """Where axis ``i`` is, machine coordinates, mm (degrees for rotary axes)."""
+        return StateValue(self.pos[i], self._named_deps(self.dep_pos[i], i))
+
+    def state_program_position(self, i: int) -> StateValue:
+        """Where axis ``i`` is in the current coordinate system (all offsets off), mm."""
+        if self._u is not None and i in (self._ix, self._iy):
+            return StateValue(self._u[0 if i == self._ix else 1] - self.g92[i], {})
+        return StateValue(self.pos[i] - self.off[i], self._named_deps(_dadd(self.dep_pos[i], self.dep_off[i], -1), i)
+                          if self.track else {})
+
+    def state_applied_tool_length(self) -> StateValue:
+        """The active tool length offset (G43), mm, on the tool axis."""
+        return StateValue(self.tlo, self._named_deps(self.dep_tlo, self.tool_axis))
+
+    def state_spindle_tool_length(self) -> StateValue:
+        """The tool table's length of the tool in the spindle, mm (0 with no tool)."""
+        tool = self.tool_in_spindle
+        if tool in self.tool_table:
+            length, deps = self.tool_table[tool]
+            return StateValue(length, self._named_deps(deps, self.tool_axis))
+        if tool == 0:
+            return StateValue(_ZERO)
+        return StateValue(self.machine.tool_length(tool), {f"H{tool}": 1})
+
+    def state_ccomp(self) -> int | None:
+        """400 (G40), 410 (G41) or 420 (G42); None (not known) when compensation is not modelled."""
+        if not self.comp_on:
+            return 400
+        if self._comp is None or self._comp.side is None:
+            return None
+        from .cutter_comp import _LEFT
+
+        return 410 if self._comp.side == _LEFT else 420
 
     # ------------------------------------------------------------------ driver
     def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
@@ -827,6 +896,7 @@ class Interpreter:
                 self._home(k, axis_words, g0[1])
             elif k in (281, 301):
                 self.home[k - 1] = tuple(self.pos)
+                self.dep_home[k - 1] = [dict(d) for d in self.dep_pos]
             elif k == 100:
                 self._g10(words, axis_words, g0[1])
             elif k == 920:
@@ -834,12 +904,15 @@ class Interpreter:
             elif k in (921, 922):
                 self.g92 = [_ZERO] * self.naxes
                 self.dep_g92 = [{} for _ in range(self.naxes)]
+                self.g92_applied = False
                 if k == 921:
                     self.g92_params = [_ZERO] * self.naxes
+                    self.dep_g92_params = [{} for _ in range(self.naxes)]
                 self._recompute_offsets()
             elif k == 923:
                 self.g92 = list(self.g92_params)
-                self.dep_g92 = [{} for _ in range(self.naxes)]
+                self.dep_g92 = [dict(d) for d in self.dep_g92_params]
+                self.g92_applied = True
                 self._recompute_offsets()
             elif k == 520:
                 self._g52(axis_words)
@@ -1331,7 +1404,7 @@ class Interpreter:
         for i in moving:
             end[i] = home[i]
             if hdeps is not None:
-                hdeps[i] = {}
+                hdeps[i] = dict(self.dep_home[k][i])
         self._machine_xy(end)
         self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} home", end_deps=hdeps)
 
@@ -1452,6 +1525,8 @@ class Interpreter:
                     d = _dadd(d, self.dep_tlo, -1)
                 self.dep_g92[i] = d
         self.g92_params = list(self.g92)
+        self.dep_g92_params = [dict(d) for d in self.dep_g92]
+        self.g92_applied = True
         self._recompute_offsets()
 
     def _g52(self, axis_words) -> None:
@@ -1459,6 +1534,8 @@ class Interpreter:
             self.g92[i] = self._mm(aw.value, i)
             self.dep_g92[i] = {}
         self.g92_params = list(self.g92)
+        self.dep_g92_params = [dict(d) for d in self.dep_g92]
+        self.g92_applied = True
         self._recompute_offsets()
 
     # ------------------------------------------------------------------ canned cycles
@@ -1624,6 +1701,13 @@ class Interpreter:
         self.pos = believed
         if tuple(believed) != actual:
             self._machine_at = actual
+
+
+_LINUXCNC_STATE = linuxcnc_state_parameters()
+
+
+def _show_key(key) -> str:
+    return f"#{key}" if isinstance(key, int) else f"#<{key}>"
 
 
 def _linuxcnc_rejects_arc(r0_sq: Fraction, r1_sq: Fraction, inch: bool) -> bool:

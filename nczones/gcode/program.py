@@ -571,7 +571,7 @@ class _Runner:
         key = m.group(1).replace(" ", "").lower() if m.group(1) is not None else int(m.group(2))
         try:
             return format_parameter(self.params.read(key)[0])
-        except (KeyError, NczonesError):
+        except (KeyError, NczonesError, EvalError):
             return "######"
 
     def evaluate(self, tree, lineno, line, col=1, end=None):
@@ -633,6 +633,9 @@ class _Runner:
             if key in (3000, 3006):
                 raise self.unsupported("GC301", f"#{key} (Fanuc alarm / message stop) is not supported",
                                        lineno, line, col, end)
+            guarded = params.guarded(key)
+            if guarded is not None:
+                raise self.unsupported("GC305", guarded, lineno, line, col, end)
             values.append((key, self.evaluate(tree, lineno, line, col, end)))
         for key, value in values:
             params.write(key, value)

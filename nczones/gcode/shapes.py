@@ -356,11 +356,13 @@ def _executor(spans, pl: ParsedLine, leaf_of: dict[int, str], at, number_src: st
     for k, (target, tree, _c, _e) in enumerate(pl.assigns):
         if target[0] == NPAR:
             key = repr(target[1])
+            body.append(f"if {key} in params._guarded: return None")
         elif target[0] == PAR and target[1][0] == NUM and id(target[1]) in leaf_of:
             key = f"k{k}"
             src = leaf_of[id(target[1])]
             body.append(f"{key} = _IDX.get({src}) or _index({src})")
-            body.append(f"if not 1 <= {key} <= params.max_parameter or {key} == 3000 or {key} == 3006: return None")
+            body.append(f"if not 1 <= {key} <= params.max_parameter or {key} == 3000 or {key} == 3006 "
+                        f"or {key} in params._guarded: return None")
         else:
             raise _Unshaped
         d, q, _lazy = em.value(tree, body)

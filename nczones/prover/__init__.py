@@ -225,7 +225,7 @@ def _verify(
         extra["dialect"] = dialect
     if library is not None:
         extra["library"] = library
-    run = interpret(source, machine, track_dependencies=bool(ranges), **extra)
+    run = interpret(source, machine, track_dependencies=bool(ranges), param_ranges=ranges, **extra)
     tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
     # Every option that can change the verdict, as JSON values: reports carry them and
     # `nczones replay` re-runs with them.  A new option of verify() belongs here too.

@@ -1,0 +1,245 @@
+"""State parameters: the controller state a program can read (``#5221``, ``#<_x>`` ...), as a table.
+
+A dialect describes its state parameters as a mapping from the parameter's
+key (a number, or a lower-case name for ``#<_name>``) to a
+:class:`StateParameter`: what it means and how to read it from the
+:class:`~nczones.gcode.interpreter.Interpreter`.  The interpreter provides
+every entry of its table to the language layer (``Parameters.provide``) and
+refuses assignments to them (``Parameters.guard``).  The LinuxCNC table is
+:func:`linuxcnc_state_parameters`; another dialect builds its own table (or
+extends this one) from the same readers and hands it on through
+``Interpreter.state_parameters``.
+
+The rule every entry follows (``specs/contract.md``, "What `safe` assumes"):
+
+* a read gives the value the controller would hold, filled from the machine
+  file and the interpreter's state (work offsets, G92, the G28/G30
+  positions, the tool table, the current position ...), **together with the
+  parameter sources it depends on** (:class:`StateValue`; the names of
+  ``--param`` ranges: ``G54.X``, ``H1``, ``start.Z``);
+* a read whose value depends on a parameter given as a range makes the
+  interpretation ``unknown`` (nczones does not follow ranges through
+  expressions; the nominal value alone would prove too much);
+* a read of state nczones does not track (spindle, coolant, overrides,
+  probe results, HAL pins ...) makes the interpretation ``unknown``;
+* an assignment to a state parameter makes the interpretation ``unknown``
+  (LinuxCNC refuses some and applies others at the next G54 or G28; neither
+  is modelled).
+
+Readers return a :class:`StateValue`, a plain number (state that depends on
+no parameter, such as a modal code) or ``None`` (not modelled).
+
+Examples
+--------
+>>> from nczones.machine import parse_machine
+>>> from nczones.gcode import interpret_text
+>>> m = parse_machine('''
+... [machine]
+... axes = ["X", "Y", "Z"]
+... [machine.rapid]
+... X = "1000"
+... Y = "1000"
+... Z = "1000"
+... [machine.reference]
+... X = "0"
+... Y = "0"
+... Z = "400"
+... [offsets]
+... G54 = { X = "150", Y = "100", Z = "100" }
+... ''')
+>>> [s.end for s in interpret_text("G53 G0 X[#5221 * 2 + 1]\\nM30\\n", m).segments()][0][0]
+Fraction(301, 1)
+>>> table = linuxcnc_state_parameters()
+>>> table[5221].meaning, table["_abs_z"].meaning
+('G54 X offset', 'current Z in machine coordinates (program units)')
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from fractions import Fraction
+from types import MappingProxyType
+from typing import TYPE_CHECKING, Union
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .interpreter import Interpreter
+
+__all__ = [
+    "StateValue",
+    "StateParameter",
+    "StateTable",
+    "linuxcnc_state_parameters",
+    "AXIS_LETTERS",
+    "WORK_OFFSET_NAMES",
+]
+
+AXIS_LETTERS = "XYZABCUVW"
+WORK_OFFSET_NAMES = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
+_INCH = Fraction(254, 10)
+_ZERO = Fraction(0)
+
+
+@dataclass(frozen=True, slots=True)
+class StateValue:
+    """A state parameter's value and the parameter sources it depends on.
+
+    ``deps`` maps a parameter name as ``--param`` writes it (``"G54.X"``,
+    ``"H1"``, ``"start.Z"``) to its coefficient: the value is the nominal
+    ``value`` plus the sum of ``coefficient * deviation`` over ``deps``.
+    """
+
+    value: Fraction
+    deps: Mapping[str, int] = field(default_factory=dict)
+
+
+Reading = Union[StateValue, Fraction, int, None]
+
+
+@dataclass(frozen=True, slots=True)
+class StateParameter:
+    """One readable piece of controller state.
+
+    ``read(interpreter)`` returns a :class:`StateValue`, a number, or
+    ``None`` when nczones does not model that state (the run is then
+    ``unknown``).
+    """
+
+    key: int | str
+    meaning: str
+    read: Callable[["Interpreter"], Reading]
+
+
+StateTable = Mapping[Union[int, str], StateParameter]
+
+
+# --------------------------------------------------------------------------- readers
+
+
+def _program_len(it: Interpreter, sv: StateValue | None, rotary: bool) -> StateValue | None:
+    """A length in mm as the program's current units (G20: inches; the coefficients scale too)."""
+    if sv is None or rotary or not it.inch:
+        return sv
+    return StateValue(sv.value / _INCH, {k: Fraction(v) / _INCH for k, v in sv.deps.items()})
+
+
+def _axis_reader(letter: str, what: Callable[[Interpreter, int], StateValue | None], *, program_units: bool,
+                 absent=_ZERO):
+    rotary = letter in "ABC"
+
+    def read(it: Interpreter) -> Reading:
+        i = it.index.get(letter)
+        if i is None:
+            return absent
+        sv = what(it, i)
+        # LinuxCNC keeps offsets and stored positions in its "user units", the machine's: mm for
+        # every nczones machine file
+        return _program_len(it, sv, rotary) if program_units else sv
+
+    return read
+
+
+def _offset_reader(name: str, letter: str):
+    return _axis_reader(letter, lambda it, i: it.state_work_offset(name, i), program_units=False)
+
+
+def _constant(value) -> Callable[[Interpreter], Reading]:
+    return lambda it: value
+
+
+def _unknown(it: Interpreter) -> Reading:
+    return None
+
+
+def _tool_axis_only(what: Callable[[Interpreter], StateValue | None], letter: str):
+    def read(it: Interpreter) -> Reading:
+        i = it.index.get(letter)
+        if i is None or i != it.tool_axis:
+            return _ZERO
+        return what(it)
+
+    return read
+
+
+def linuxcnc_state_parameters() -> StateTable:
+    """The state parameters of LinuxCNC's interpreter (numbering of ``interp_parameter_def.hh``).
+
+    Lengths of ``#5081``-``#5089``, ``#5161``-``#5390`` and ``#5401``-``#5409``
+    are in the machine's units (mm: LinuxCNC's "user units"), positions
+    ``#5420``-``#5428``, ``#5021``-``#5029`` and ``#<_x>``, ``#<_abs_x>`` ...
+    in the program's current units.  An axis the machine lacks reads 0.
+    """
+    t: dict[int | str, StateParameter] = {}
+
+    def add(key, meaning, read):
+        t[key] = StateParameter(key, meaning, read)
+
+    for k, a in enumerate(AXIS_LETTERS):
+        add(5021 + k, f"current {a} in machine coordinates (program units)",
+            _axis_reader(a, lambda it, i: it.state_machine_position(i), program_units=True))
+        add(5061 + k, f"probe result {a}", _unknown)
+        add(5081 + k, f"tool length offset applied to {a} (G43)",
+            _tool_axis_only(lambda it: it.state_applied_tool_length(), a))
+        add(5161 + k, f"G28 position {a}",
+            _axis_reader(a, lambda it, i: it.state_home(280, i), program_units=False))
+        add(5181 + k, f"G30 position {a}",
+            _axis_reader(a, lambda it, i: it.state_home(300, i), program_units=False))
+        add(5211 + k, f"stored G92 offset {a}",
+            _axis_reader(a, lambda it, i: it.state_g92(i), program_units=False))
+        for n, name in enumerate(WORK_OFFSET_NAMES):
+            add(5221 + 20 * n + k, f"{name} {a} offset", _offset_reader(name, a))
+        add(5401 + k, f"stored {a} offset of the tool in the spindle (tool table)",
+            _tool_axis_only(lambda it: it.state_spindle_tool_length(), a))
+        add(5420 + k, f"current {a} in program coordinates",
+            _axis_reader(a, lambda it, i: it.state_program_position(i), program_units=True))
+        low = a.lower()
+        add("_" + low, f"current {a} in program coordinates", t[5420 + k].read)
+        add("_abs_" + low, f"current {a} in machine coordinates (program units)", t[5021 + k].read)
+    add(5070, "probe result", _unknown)
+    add(5210, "G92 offset applied (1) or not (0)", lambda it: 1 if it.g92_applied else 0)
+    add(5220, "active coordinate system (1 = G54 ... 9 = G59.3)",
+        lambda it: WORK_OFFSET_NAMES.index(it.wcs) + 1)
+    for n, name in enumerate(WORK_OFFSET_NAMES):
+        add(5230 + 20 * n, f"{name} XY rotation (degrees, G10 L2 R)", lambda it, name=name: it.rot[name])
+    add(5399, "M66 input wait result", _unknown)
+    add(5400, "tool in the spindle", lambda it: it.tool_in_spindle)
+    add(5410, "diameter of the tool in the spindle",
+        lambda it: it.machine.tool_diameters.get(it.tool_in_spindle))
+    for key, what in ((5411, "front angle"), (5412, "back angle"), (5413, "orientation")):
+        add(key, f"lathe tool {what} of the tool in the spindle", _unknown)
+    for key in (5599, 5600, 5601):
+        add(key, "controller flag (debug output, tool changer fault)", _unknown)
+    # named parameters (interp_namedparams.cc)
+    add("_current_tool", "tool in the spindle", t[5400].read)
+    add("_selected_tool", "tool selected by T", lambda it: it.tool_selected)
+    add("_metric", "G21 active", lambda it: 0 if it.inch else 1)
+    add("_imperial", "G20 active", lambda it: 1 if it.inch else 0)
+    add("_absolute", "G90 active", lambda it: 1 if it.absolute else 0)
+    add("_incremental", "G91 active", lambda it: 0 if it.absolute else 1)
+    add("_inverse_time", "G93 active", lambda it: 1 if it.feed_mode == 93 else 0)
+    add("_units_per_minute", "G94 active", lambda it: 1 if it.feed_mode == 94 else 0)
+    add("_units_per_rev", "G95 active", lambda it: 1 if it.feed_mode == 95 else 0)
+    add("_ijk_absolute_mode", "G90.1 active", lambda it: 1 if it.arc_absolute else 0)
+    add("_coord_system", "active coordinate system (540 ... 593)",
+        lambda it: int(Fraction(it.wcs[1:]) * 10))
+    add("_tool_offset", "a tool length offset is active", lambda it: 1 if it.tlo != 0 else 0)
+    add("_motion_mode", "active motion mode (G number x 10; 800 for G80)",
+        lambda it: 800 if it.motion is None else it.motion)
+    add("_plane", "active plane (170, 180, 190)", lambda it: int(it.plane) * 10)
+    add("_ccomp", "cutter compensation (400 off, 410 left, 420 right)", lambda it: it.state_ccomp())
+    add("_retract_r_plane", "G99 active (retract to R)", lambda it: 1 if it.retract_r else 0)
+    add("_retract_old_z", "G98 active (retract to the initial level)", lambda it: 0 if it.retract_r else 1)
+    add("_feed", "programmed feed rate (program units)", lambda it: it.feed)
+    add("_lathe_diameter_mode", "G7 active (G7 itself is unknown: 0)", _constant(0))
+    add("_lathe_radius_mode", "G8 active", _constant(1))
+    for name, what in (("_line", "current sequence number"), ("_vmajor", "LinuxCNC version"),
+                       ("_vminor", "LinuxCNC version"), ("_spindle_on", "spindle state"),
+                       ("_spindle_cw", "spindle direction"), ("_mist", "mist coolant"), ("_flood", "flood coolant"),
+                       ("_speed_override", "spindle speed override"), ("_feed_override", "feed override"),
+                       ("_adaptive_feed", "adaptive feed"), ("_feed_hold", "feed hold"), ("_rpm", "spindle speed"),
+                       ("_spindle_rpm_mode", "spindle mode G97"), ("_spindle_css_mode", "spindle mode G96"),
+                       ("_current_pocket", "tool changer pocket"), ("_selected_pocket", "tool changer pocket"),
+                       ("_task", "whether the interpreter runs in the controller or a preview"),
+                       ("_call_level", "subroutine call level"), ("_remap_level", "remap level")):
+        add(name, what, _unknown)
+    return MappingProxyType(t)
