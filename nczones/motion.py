@@ -114,6 +114,11 @@ class Segment:
         interpreter was not asked to track dependencies.  A coordinate with
         sources S equals its nominal value plus the sum of the deviations of
         S's parameters on that axis.
+    deps_tool : tuple of str
+        The parameter sources of ``tool_length`` (on the tool axis): ``("H1",)``
+        after ``G43 H1`` with the machine file's length, ``()`` after a length
+        the program wrote itself (``G10 L1``), whatever ``tool_register``
+        says.  Empty when dependencies are not tracked.
     """
 
     kind: SegmentKind
@@ -134,6 +139,7 @@ class Segment:
     tool_register: int | None = None
     deps_start: tuple[tuple[str, ...], ...] = ()
     deps_end: tuple[tuple[str, ...], ...] = ()
+    deps_tool: tuple[str, ...] = ()
     extra: tuple[tuple[str, object], ...] = field(default=())
 
     @property

@@ -272,6 +272,19 @@ class CutterComp:
                         word)
         if type(it).__name__ != "Interpreter":
             it._unknown(name, "cutter radius compensation with cylindrical interpolation is not modelled", word)
+        if it.ranged:
+            from .interpreter import _dadd
+
+            # the compensation is computed in the program frame; offsets cannot change while it is on, so
+            # it follows the ranges exactly when the position it starts from is fixed in that frame
+            ia, ib, _ = self._axes()
+            moving = sorted({(src if src.startswith("H") else f"{src}.{it.axes[i]}")
+                             for i in (ia, ib) for src, c in _dadd(it.dep_pos[i], it.dep_off[i], -1).items()
+                             if c} & it.ranged)
+            if moving:
+                it._unknown(name, f"cutter radius compensation starting from a position whose program coordinates "
+                            f"depend on the parameter range {', '.join(moving)}: the compensated path is not a "
+                            "shifted copy of the nominal one", word)
         self.side = side
         self.radius = radius
         self.first = True
@@ -346,7 +359,7 @@ class CutterComp:
 
     def _dequeue(self) -> None:
         """Emit the queued moves (LinuxCNC ``dequeue_canons``)."""
-        from .interpreter import _segment
+        from .interpreter import _segment, _with_tool_deps
 
         it = self.it
         self.endpoint_valid = False
@@ -360,15 +373,18 @@ class CutterComp:
                 e[ia] = self._fmachine(ia, q.a)
                 e[ib] = self._fmachine(ib, q.b)
                 end = tuple(e)
-            ds = de = ()
+            ds = de = dt = ()
             if it.track:
                 ds = it._deps_tuple(self.deps_now if self.deps_now is not None else it.dep_pos)
                 de = it._deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
+                dt = it._tool_dep_names()
             arc = q.kind is SegmentKind.ARC
             if not it.unsupported:
                 seg = _segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
                                it.plane if arc else None, arc and q.turn < 0, q.centre if arc else None, None,
                                abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, ())
+                if dt:
+                    seg = _with_tool_deps(seg, dt)
                 it._out.append(seg)
                 it.segment_count += 1
                 it.kind_counts[q.kind] += 1
@@ -742,14 +758,15 @@ class CutterComp:
             self._enqueue(_Move(SegmentKind.DWELL, 0.0, 0.0, [], dwell=seconds))
             return
         if it._machine_at is not None:  # after G40 the machine stands at the compensated point
-            from .interpreter import _segment
+            from .interpreter import _segment, _with_tool_deps
 
+            deps = it._deps_tuple(it.dep_pos) if it.track else ()
+            dt = it._tool_dep_names() if it.track else ()
             if not it.unsupported:
-                deps = it._deps_tuple(it.dep_pos) if it.track else ()
                 at = tuple(it._machine_at)
-                it._out.append(_segment(SegmentKind.DWELL, at, at, it.axes, it._index, it._span, it.tlo,
-                                        None, None, False, None, None, 0, seconds, "", it.tool_register, deps,
-                                        deps, ()))
+                seg = _segment(SegmentKind.DWELL, at, at, it.axes, it._index, it._span, it.tlo,
+                               None, None, False, None, None, 0, seconds, "", it.tool_register, deps, deps, ())
+                it._out.append(_with_tool_deps(seg, dt) if dt else seg)
                 it.segment_count += 1
                 it.kind_counts[SegmentKind.DWELL] += 1
             return

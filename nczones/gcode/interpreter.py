@@ -195,8 +195,8 @@ def _gkey(value: Fraction) -> int | None:
 
 
 _new = object.__new__
-#: ``Segment(...)`` with all 19 fields positional, in order, built 3x faster (see nczones.frozen).
-_segment = builder(Segment)
+#: ``Segment(...)`` with all fields but ``deps_tool`` positional, in order, built 3x faster (see nczones.frozen).
+_segment = builder(Segment, tuple(f for f in Segment.__dataclass_fields__ if f != "deps_tool"), deps_tool=())
 
 
 def _qadd(a: Fraction, b: Fraction) -> Fraction:
@@ -326,6 +326,10 @@ class Interpreter:
         self.param_box = {r.name: (Fraction(r.lo), Fraction(r.hi), bool(getattr(r, "lo_open", False)),
                                    bool(getattr(r, "hi_open", False))) for r in param_ranges}
         self.ranged = frozenset(self.param_box)
+        #: name -> the deviation from the machine file at which this interpretation's nominal values lie
+        self.param_centre = {r.name: Fraction(getattr(r, "centre", 0)) for r in param_ranges}
+        #: (name, deviation) where a branch of the path switches inside the range (see _level_lt)
+        self.branch_split: tuple[str, Fraction] | None = None
         self.track = bool(track_dependencies) or bool(self.param_box)
         self.chunk_size = max(1, int(chunk_size))
         self.axes: tuple[str, ...] = machine.axis_names
@@ -528,19 +532,31 @@ class Interpreter:
 
     def _deps_tuple(self, deps: list[dict]) -> tuple[tuple[str, ...], ...]:
         out = []
-        for d in deps:
-            names = []
-            for k, v in d.items():
-                if v != 1:
-                    self._unknown(
-                        "dependencies",
-                        f"the position depends on {k} with coefficient {v} (through G92/G10/G52 "
-                        "arithmetic); parameter ranges cannot be expressed per segment",
-                    )
-                    return tuple(() for _ in deps)
-                names.append(k)
-            out.append(tuple(sorted(names)))
+        for i, d in enumerate(deps):
+            names = self._dep_names(d, i)
+            if names is None:
+                return tuple(() for _ in deps)
+            out.append(names)
         return tuple(out)
+
+    def _dep_names(self, d: dict, i: int | None) -> tuple[str, ...] | None:
+        """The sources of one coordinate (axis ``i``) as segments carry them; None (and unknown) when a
+        source a range is given for has a coefficient other than 1."""
+        names = []
+        for k, v in d.items():
+            if v != 1:
+                if self.ranged and i is not None:
+                    axis = self.axes[i]
+                    if (k if k.startswith("H") else f"{k}.{axis}") not in self.ranged:
+                        continue  # a fixed value: its coefficient does not matter
+                self._unknown(
+                    "dependencies",
+                    f"the position depends on {k} with coefficient {v} (through G92/G10/G52 "
+                    "arithmetic); parameter ranges cannot be expressed per segment",
+                )
+                return None
+            names.append(k)
+        return tuple(sorted(names))
 
     def _emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
               plane=None, clockwise=False, centre=None, radius=None, turns=0, dwell=None,
@@ -555,14 +571,17 @@ class Interpreter:
         fmm = None
         if feed and self.feed_mode == 94:
             fmm = self.feed * INCH if self.inch else self.feed
-        ds = de = ()
+        ds = de = dt = ()
         if self.track:
             ds = self._deps_tuple(self.dep_pos)
             de = self._deps_tuple(end_deps if end_deps is not None else self.dep_pos)
+            dt = self._tool_dep_names()
         if not self.unsupported:
             seg = _segment(kind, start, endt, self.axes, self._index, self._span, self.tlo, fmm,
                            plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
                            ds, de, ())
+            if dt:
+                seg = _with_tool_deps(seg, dt)
             self._out.append(seg)
             self.segment_count += 1
             self.kind_counts[kind] += 1
@@ -575,6 +594,12 @@ class Interpreter:
         self._u_next = None
         if end_deps is not None:
             self.dep_pos = end_deps
+
+    def _tool_dep_names(self) -> tuple[str, ...]:
+        """The sources of the active tool length (``Segment.deps_tool``; unknown on a bad coefficient)."""
+        if not self.dep_tlo:
+            return ()
+        return self._dep_names(self.dep_tlo, self.tool_axis) or ()
 
     # ------------------------------------------------------------------ parameters
     def bind_parameters(self, params) -> None:
@@ -1598,67 +1623,77 @@ class Interpreter:
                 raise self._error("GC209", f"peck depth Q{_fmt(self.cycle_q)} must be greater than 0", qw)
             delta = self._len(self.cycle_q)
         self._note_assumed(("units", "distance", "offset", "plane"))
+        # Levels are (value, dependencies on axis ic); every comparison of two levels goes through
+        # _level_lt, which says whether the branch is the same for every parameter value of the ranges.
+        track = self.track
+        nodeps: dict = {}
         current_cc = self.pos[ic]
+        current_d = self.dep_pos[ic] if track else nodeps
         if self._cycle_il is None:
             self._cycle_il = current_cc
-        old_cc = self._cycle_il
+            self._cycle_il_deps = dict(current_d)
+        old_cc, old_d = self._cycle_il, self._cycle_il_deps if track else nodeps
         wd = {self.axes[i]: aw for i, aw in axis_words}
         if self.absolute:
             inc_a = inc_b = _ZERO
             r = _qadd(self._len(rprog), self.off[ic])
             cc = _qadd(self._len(cprog), self.off[ic])
+            r_d = cc_d = self.dep_off[ic] if track else nodeps
             aa = _qadd(self._len(wd[a_name].value), self.off[ia]) if a_name in wd else self.pos[ia]
             bb = _qadd(self._len(wd[b_name].value), self.off[ib]) if b_name in wd else self.pos[ib]
+            a_d = (self.dep_off[ia] if a_name in wd else self.dep_pos[ia]) if track else nodeps
+            b_d = (self.dep_off[ib] if b_name in wd else self.dep_pos[ib]) if track else nodeps
         else:
             inc_a = self._len(wd[a_name].value) if a_name in wd else _ZERO
             inc_b = self._len(wd[b_name].value) if b_name in wd else _ZERO
             r = _qadd(self._len(rprog), old_cc)
             cc = _qadd(r, self._len(cprog))
+            r_d = cc_d = old_d
             aa, bb = self.pos[ia], self.pos[ib]
-        if _qlt(r, cc):
+            a_d = self.dep_pos[ia] if track else nodeps
+            b_d = self.dep_pos[ib] if track else nodeps
+        lt = self._level_lt
+        if lt((r, r_d), (cc, cc_d), ic, "the retract plane R is below the bottom"):
             raise self._error("GC306", f"canned cycle retract plane R ({_fmt(r)} mm machine) is below the bottom {c_name} ({_fmt(cc)} mm machine)", rw or cw_)
-        track = self.track
 
         def go(kind, a, b, c, derived, dwell_s=None):
             end = list(self.pos)
-            end[ia], end[ib], end[ic] = a, b, c
+            end[ia], end[ib], end[ic] = a, b, c[0]
             deps = None
             if track:
                 deps = [dict(d) for d in self.dep_pos]
-                if self.absolute:
-                    for i in (ia, ib, ic):
-                        deps[i] = dict(self.dep_off[i]) if (i == ic or self.axes[i] in wd) else deps[i]
+                deps[ia], deps[ib], deps[ic] = dict(a_d), dict(b_d), dict(c[1])
             self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
 
         name = _gname(motion)
-        if _qlt(old_cc, r):
-            go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], r, f"{name} up to R")
-            old_cc = r
-            current_cc = r
-        clear = r if self.retract_r else old_cc
+        if lt((old_cc, old_d), (r, r_d), ic, "the initial level is below R"):
+            go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], (r, r_d), f"{name} up to R")
+            old_cc, old_d = r, r_d
+            current_cc, current_d = r, r_d
+        clear = (r, r_d) if self.retract_r else (old_cc, old_d)
         for rep in range(reps):
             if rep or not self.absolute:  # absolute: the increments are zero
                 aa = _qadd(aa, inc_a)
                 bb = _qadd(bb, inc_b)
-            if rep == 0 and _qlt(r, current_cc):
-                go(SegmentKind.RAPID, aa, bb, current_cc, f"{name} position")
-                go(SegmentKind.RAPID, aa, bb, r, f"{name} to R")
+            if rep == 0 and lt((r, r_d), (current_cc, current_d), ic, "R is below the current level"):
+                go(SegmentKind.RAPID, aa, bb, (current_cc, current_d), f"{name} position")
+                go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} to R")
             else:
                 go(SegmentKind.RAPID, aa, bb, clear, f"{name} position")
-                if _qlt(r, clear):
-                    go(SegmentKind.RAPID, aa, bb, r, f"{name} to R")
+                if lt((r, r_d), clear, ic, "R is below the clear level"):
+                    go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} to R")
             if motion in (730, 830):
                 depth = r - delta
-                while depth > cc:
-                    go(SegmentKind.LINE, aa, bb, depth, f"{name} peck")
+                while lt((cc, cc_d), (depth, r_d), ic, "a peck ends above the bottom"):
+                    go(SegmentKind.LINE, aa, bb, (depth, r_d), f"{name} peck")
                     if motion == 830:
                         go(SegmentKind.RAPID, aa, bb, clear, f"{name} clear")
-                    go(SegmentKind.RAPID, aa, bb, depth + G83_RAPID_DELTA_MM, f"{name} back off")
+                    go(SegmentKind.RAPID, aa, bb, (depth + G83_RAPID_DELTA_MM, r_d), f"{name} back off")
                     depth -= delta
             if swapped:
-                self._g84_swapped(plane, ia, ib, ic, aa, bb, cc, clear, dwell)
+                self._g84_swapped(plane, ia, ib, ic, aa, bb, cc, clear[0], dwell)
                 continue
-            go(SegmentKind.LINE, aa, bb, cc, f"{name} feed")
+            go(SegmentKind.LINE, aa, bb, (cc, cc_d), f"{name} feed")
             if dwell is not None:
                 self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
             if motion in (840, 850, 890):
@@ -1670,6 +1705,69 @@ class Interpreter:
         self._last_cycle = motion
 
     _last_cycle: int | None = None
+    _cycle_il_deps: dict = {}
+
+    def _level_lt(self, a: tuple[Fraction, dict], b: tuple[Fraction, dict], i: int, what: str) -> bool:
+        """``a < b`` for two levels ``(value, dependencies)`` on axis ``i``: the branch of the path.
+
+        Without parameter ranges, the plain comparison.  With ranges, the
+        difference ``b - a`` is affine in the deviations of the ranged
+        parameters; over their box it either has one sign (the branch taken
+        at the nominal values holds for every value: returned) or it changes
+        sign: then the interpretation stops as unknown, and when exactly one
+        ranged parameter drives the difference, ``branch_split`` records it
+        and the value where the branch switches, for the caller to verify
+        the two sides and the switching value as separate cases
+        (:func:`nczones.prover.verify` does).  The nominal branch with range
+        dependencies is never taken.
+        """
+        nominal = _qlt(a[0], b[0])
+        if not self.ranged:
+            return nominal
+        axis = self.axes[i]
+        coeffs: dict[str, Fraction] = {}
+        for src, c in _dadd(b[1], a[1], -1).items():
+            name = src if src.startswith("H") else f"{src}.{axis}"
+            if name in self.ranged and c:
+                coeffs[name] = coeffs.get(name, 0) + c
+        coeffs = {n: c for n, c in coeffs.items() if c}
+        if not coeffs:
+            return nominal
+        d0 = b[0] - a[0]
+        lo = hi = d0
+        lo_open = hi_open = False
+        for n, c in coeffs.items():
+            plo, phi, po_lo, po_hi = self.param_box[n]
+            # c * [plo, phi]: the low end of the product comes from plo when c > 0
+            (x, xo), (y, yo) = ((c * plo, po_lo), (c * phi, po_hi)) if c > 0 else ((c * phi, po_hi), (c * plo, po_lo))
+            lo, hi = lo + x, hi + y
+            lo_open, hi_open = lo_open or xo, hi_open or yo
+        always = lo > 0 or (lo == 0 and lo_open)
+        never = hi <= 0
+        if always or never:
+            if always == nominal:
+                return nominal
+        if len(coeffs) == 1 and not (always or never):
+            ((n, c),) = coeffs.items()
+            if self.branch_split is None:
+                self.branch_split = (n, -d0 / c)
+            self._unknown("parameter range", f"the canned cycle's branch ({what}) depends on {n}: it switches at "
+                          f"{n} = {_fmt(self._written_deviation(n, -d0 / c))} inside the range; each side is a "
+                          "different path")
+        elif always or never:
+            self._unknown("parameter range", f"the canned cycle's branch ({what}) at the nominal values differs from "
+                          f"the branch for every value of {', '.join(sorted(coeffs))} in the range")
+        else:
+            self._unknown("parameter range", f"the canned cycle's branch ({what}) depends on "
+                          f"{' and '.join(sorted(coeffs))} together; each side is a different path (not split)")
+        return nominal
+
+    def _written_deviation(self, name: str, dev: Fraction) -> Fraction:
+        """A deviation of the interpreted nominal value, as ``--param`` writes the parameter."""
+        centre = self.param_centre.get(name, _ZERO)
+        if name.startswith("H"):
+            return self.machine.tool_length(int(name[1:])) + dev
+        return centre + dev
 
     def _g84_swapped(self, plane, ia, ib, ic, aa, bb, cc, clear, dwell) -> None:
         """G84's two feeds in G18/G19 as LinuxCNC really sends them (its canon logs ``tests/interp/g84``).
@@ -1704,6 +1802,12 @@ class Interpreter:
 
 
 _LINUXCNC_STATE = linuxcnc_state_parameters()
+
+
+def _with_tool_deps(seg: Segment, names: tuple[str, ...]) -> Segment:
+    from dataclasses import replace
+
+    return replace(seg, deps_tool=names)
 
 
 def _show_key(key) -> str:

@@ -39,11 +39,12 @@ import os
 import re
 import time
 from collections.abc import Callable
+from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
 from ..errors import Diagnostic, InputError, InvalidArgument
-from ..exact import parse_decimal
+from ..exact import format_decimal, parse_decimal
 from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
 from ..machine import Machine
@@ -225,7 +226,6 @@ def _verify(
         extra["dialect"] = dialect
     if library is not None:
         extra["library"] = library
-    run = interpret(source, machine, track_dependencies=bool(ranges), param_ranges=ranges, **extra)
     tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
     # Every option that can change the verdict, as JSON values: reports carry them and
     # `nczones replay` re-runs with them.  A new option of verify() belongs here too.
@@ -237,15 +237,88 @@ def _verify(
         "arc_tolerance": tolerance if isinstance(tolerance, str) else format_exact(exact(tolerance)),
         "max_iterations": max_iterations,
         "max_violations": max_violations,
-        "block_delete": run.block_delete,
-        "dialect": run.dialect,
+        "block_delete": False,
+        "dialect": machine.dialect if dialect is None else dialect,
     }
     if library is not None:
         settings["library"] = str(library)
+    opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress)
+    result, first_run = _verify_cases(source, machine, ranges, False, extra, opts)
+    violations, reasons, notes = list(result.violations), list(result.reasons), result.notes
+    if recovery is not None:
+        from .recovery import verify_recovery
+
+        rerun = interpret(source, machine, **extra)
+        rec = verify_recovery(rerun, machine, variant=recovery, margin=margin, max_violations=max_violations)
+        source_text = source_lines(source.text, [v.span.line for v in rec.violations]
+                                   + [r.span.line for r in rec.reasons if r.span is not None])
+        violations = sorted(violations + [replace(v, span=_fix_span(v.span, source_text)) for v in rec.violations],
+                            key=lambda v: (v.block, v.kind != "motion"))
+        reasons += [replace(r, span=_fix_span(r.span, source_text)) for r in rec.reasons]
+        if ranges:
+            # The recovery proof runs at the nominal parameter values only; a
+            # verdict 'safe' over the ranges would claim more than was proved.
+            names = ", ".join(r.name for r in ranges)
+            reasons.append(Reason(
+                f"RC204: the tool-break recovery was proved only at the nominal values of {names}; "
+                "recovery under parameter ranges is not modelled", None, None, "RC204"))
+        notes += (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
+                  f"{dict(rec.stats)['recovery_motions']} cutting motions",)
+        result = replace(result, stats=result.stats + rec.stats)
+    verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    timings = (("total_s", time.perf_counter() - t0),) + result.timings
+    return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
+                   timings=timings, extra={"counts": first_run.counts, "splits": result.extra.get("splits", ())},
+                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   machine_sha256=machine.sha256, settings=tuple(settings.items()))
+
+
+def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, extra, opts):
+    """Prove one position of the block-delete switch over the parameter ranges: (result, first interpretation).
+
+    The path is built per case: a branch that switches inside a range splits
+    it (:mod:`nczones.prover.cases`), each case interpreted afresh with its
+    nominal values inside it.  ``result.extra["splits"]`` lists where
+    (parameter, value as ``--param`` writes it).
+    """
+    from ..gcode import interpret
+    from .cases import MAX_CASES, budget_reason, centred, merge, split_box
+
+    cases = [ranges]
+    results, first_run, splits = [], None, []
+    interpretations = 0
+    while cases:
+        box = cases.pop(0)
+        case_machine, case_ranges = centred(machine, box) if box else (machine, box)
+        run = interpret(source, case_machine, track_dependencies=bool(box), param_ranges=case_ranges,
+                        block_delete=skip, **extra)
+        interpretations += 1
+        result = _verify_run(run, case_machine, case_ranges, **opts)
+        split = run.interpreter.branch_split
+        if split is not None:
+            if interpretations + len(cases) + 3 <= MAX_CASES:
+                at = split[1] + next(r.centre for r in case_ranges if r.name == split[0])
+                splits.append((split[0], run.interpreter._written_deviation(split[0], split[1])))
+                cases[0:0] = split_box(box, split[0], at)
+                continue
+            result = replace(result, reasons=result.reasons + (budget_reason(None),))
+        first_run = first_run or run
+        results.append(result)
+    result = merge(results, max_violations=opts["max_violations"], params=ranges)
+    if splits:
+        where = ", ".join(f"{n} = {format_decimal(v)}" for n, v in splits)
+        result = replace(result, notes=result.notes + (f"the path branches inside the parameter ranges (a canned "
+                                                       f"cycle's levels cross) at {where}: proved as separate "
+                                                       "cases on each side and at the switching value",),
+                         extra={"splits": tuple(splits)})
+    return result, first_run
+
+
+def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations, progress) -> Result:
+    """Prove one interpretation (one case): its result with source text, unknown codes and notes filled in."""
+    from ..motion import MotionChunk
 
     def with_text(seq):
-        from ..motion import MotionChunk
-
         total = _line_count(run.text) or None if progress is not None else None
         for chunk in seq:
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
@@ -261,23 +334,15 @@ def _verify(
     result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file)
     # fill the source text of violations and reasons (column chunks carry only line numbers)
-    from dataclasses import replace
-
     wanted = [x.span.line for x in (*result.violations, *result.reasons, *run.unsupported)
               if x.span is not None and not x.span.text and x.span.line >= 1]
     source_text = source_lines(run.text, wanted)
-
-    def fix(span):
-        if span is None or span.text or span.line not in source_text:
-            return span
-        return replace(span, text=source_text[span.line])
-
-    violations = tuple(replace(v, span=fix(v.span)) for v in result.violations)
-    reasons = list(replace(r, span=fix(r.span)) for r in result.reasons)
+    violations = tuple(replace(v, span=_fix_span(v.span, source_text)) for v in result.violations)
+    reasons = list(replace(r, span=_fix_span(r.span, source_text)) for r in result.reasons)
     from ..gcode.dialects import unknown_hint
 
     for u in run.unsupported:
-        span = fix(u.span)
+        span = _fix_span(u.span, source_text)
         hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
         reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, u.code))
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
@@ -285,30 +350,15 @@ def _verify(
         notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "
                   "programmed curve; a controller that approximates them (LinuxCNC turns some G5.2/G6.2 "
                   "curves into biarcs) may deviate from it, see specs/gcode-support.md",)
-    if recovery is not None:
-        from .recovery import verify_recovery
-
-        rerun = interpret(source, machine, **extra)
-        rec = verify_recovery(rerun, machine, variant=recovery, margin=margin, max_violations=max_violations)
-        violations = tuple(sorted(violations + tuple(replace(v, span=fix(v.span)) for v in rec.violations),
-                                  key=lambda v: (v.block, v.kind != "motion")))
-        reasons += [replace(r, span=fix(r.span)) for r in rec.reasons]
-        if ranges:
-            # The recovery proof runs at the nominal parameter values only; a
-            # verdict 'safe' over the ranges would claim more than was proved.
-            names = ", ".join(r.name for r in ranges)
-            reasons.append(Reason(
-                f"RC204: the tool-break recovery was proved only at the nominal values of {names}; "
-                "recovery under parameter ranges is not modelled", None, None, "RC204"))
-        notes += (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
-                  f"{dict(rec.stats)['recovery_motions']} cutting motions",)
-        result = replace(result, stats=result.stats + rec.stats)
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
-    timings = (("total_s", time.perf_counter() - t0),) + result.timings
-    return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes,
-                   timings=timings, extra={"counts": run.counts}, program_sha256=source.sha256,
-                   machine_name=machine.name, machine_file=machine.source, machine_sha256=machine.sha256,
-                   settings=tuple(settings.items()))
+    return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes)
+
+
+def _fix_span(span, source_text: dict[int, str]):
+    """A span with its line's source text (column chunks and derived spans carry only the line number)."""
+    if span is None or span.text or span.line not in source_text:
+        return span
+    return replace(span, text=source_text[span.line])
 
 
 def _line_count(text: str) -> int:

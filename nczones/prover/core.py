@@ -105,11 +105,14 @@ class Prover:
         return out
 
     def _tool_dev(self, seg: Segment) -> list[str]:
-        if seg.tool_register is not None:
-            name = f"H{seg.tool_register}"
+        """Parameter variables added to the tool length: the sources the interpreter tracked
+        (``Segment.deps_tool``), not the H register (a length the program wrote has none)."""
+        out = []
+        for src in seg.deps_tool:
+            name = src if src.startswith("H") else f"{src}.{self.tool_axis}"
             if name in self.pvars:
-                return [self.pvars[name]]
-        return []
+                out.append(self.pvars[name])
+        return out
 
     def _param_relevant(self, seg: Segment) -> bool:
         if not self.params:
@@ -122,7 +125,9 @@ class Prover:
         out = []
         for p in self.params:
             v = self.pvars[p.name]
-            out.append(f"(declare-const {v} Real)(assert (<= {q(p.lo)} {v} {q(p.hi)}))")
+            lo_rel = "<" if getattr(p, "lo_open", False) else "<="
+            hi_rel = "<" if getattr(p, "hi_open", False) else "<="
+            out.append(f"(declare-const {v} Real)(assert ({lo_rel} {q(p.lo)} {v}))(assert ({hi_rel} {v} {q(p.hi)}))")
         return "".join(out)
 
     def _param_slack(self, seg: Segment) -> Fraction:
@@ -352,16 +357,14 @@ class Prover:
                                 engine="unknown")
             queries.append(self._arc_query(seg, arc_geom(seg), True))
         else:
-            pieces = line_pieces(seg, self.machine)
             dogleg_varies = (seg.kind is SegmentKind.RAPID and self.machine.rapid_mode is RapidMode.DOGLEG
                              and tuple(self._devs(seg, k, "start") for k in range(len(self.axes)))
                              != tuple(self._devs(seg, k, "end") for k in range(len(self.axes))))
-            if dogleg_varies:  # breakpoints move with the parameters: enclose in the box hull
-                lo = tuple(min(a, b) for a, b in zip(seg.start, seg.end))
-                hi = tuple(max(a, b) for a, b in zip(seg.start, seg.end))
-                return self._check_box_hull_params(seg, lo, hi)
-            for piece in pieces:
-                queries.append(self._line_query(seg, piece, True))
+            if dogleg_varies:  # the breakpoints move with the parameters
+                queries.append(self._dogleg_query(seg))
+            else:
+                for piece in line_pieces(seg, self.machine):
+                    queries.append(self._line_query(seg, piece, True))
         for body, names in queries:
             ans = self.solver.check(body, names)
             if ans.status == "unsat":
@@ -377,21 +380,39 @@ class Prover:
                                           "counterexample was confirmed", seg.span, seg.block), engine="unknown")
         return _Outcome(engine="z3")
 
-    def _check_box_hull_params(self, seg, lo, hi) -> _Outcome:
-        piece = LinePiece(lo, hi)
-        body, names = self._line_query(seg, piece, True)
-        # a box hull: every axis independently anywhere in its range
-        body = body.replace("(declare-const t Real)", "(declare-const t Real)")
-        ans = self.solver.check(body, names)
-        if ans.status == "unsat":
-            return _Outcome(engine="z3")
-        values = {p.name: _clamp(ans.values.get(self.pvars[p.name], F0), p.lo, p.hi) for p in self.params}
-        out = self._check_concrete(self.instantiate(seg, values), tuple(values.items()))
-        if out.violation is not None:
-            return out
-        return _Outcome(reason=Reason("dogleg rapid under parameter ranges: the enclosure may violate a zone "
-                                      "but no exact counterexample was confirmed", seg.span, seg.block),
-                        engine="unknown")
+    def _dogleg_query(self, seg: Segment) -> tuple[str, list[str]]:
+        """Exact encoding of a dogleg rapid whose two ends move with different parameters.
+
+        Every axis starts at the same instant and runs at its own rapid rate
+        ``v`` until it arrives: at time ``tau >= 0`` axis ``k`` stands at
+        ``S + clamp(v tau)`` towards ``E``, i.e. ``S + min(v tau, E - S)``
+        when ``E >= S`` and ``S + max(-v tau, E - S)`` otherwise, with ``S``
+        and ``E`` the ends plus their parameter deviations.  The breakpoints
+        move with the parameters, but every term is linear in ``tau`` and the
+        parameters (``ite`` for min/max), so this is exact (QF_LRA): the point
+        set over all ``tau`` and parameter values is exactly the union of the
+        machine's dogleg paths (:func:`nczones.prover.geometry.line_pieces`).
+        """
+        names = ["tau"]
+        body = ["(declare-const tau Real)(assert (<= 0.0 tau))"]
+        mdecl, evars = self._margin_decls(names)
+        body.append(mdecl)
+        body.append(self._param_decls())
+        names += [self.pvars[p.name] for p in self.params]
+        slack = self._param_slack(seg)
+        pt, enclosure = {}, {}
+        for k, a in enumerate(self.axes):
+            s0 = add(q(seg.start[k]), *self._devs(seg, k, "start"))
+            e0 = add(q(seg.end[k]), *self._devs(seg, k, "end"))
+            d = sub(e0, s0)
+            vt = mul(q(self.machine.axis(a).rapid_mm_min), "tau")
+            forward = f"(ite (<= {vt} {d}) {vt} {d})"
+            backward = f"(ite (<= {d} (- {vt})) (- {vt}) {d})"
+            pt[a] = add(s0, f"(ite (<= 0.0 {d}) {forward} {backward})", evars[a])
+            enclosure[a] = (min(seg.start[k], seg.end[k]) - slack, max(seg.start[k], seg.end[k]) + slack)
+        tl = add(q(seg.tool_length), *self._tool_dev(seg))
+        body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
+        return "".join(body), names
 
     def _check_concrete(self, seg: Segment, params) -> _Outcome:
         if seg.kind is SegmentKind.ARC:
@@ -509,11 +530,10 @@ class Prover:
         out = []
         for name, dev in values:
             p = self.prange[name]
-            if p.absolute:
-                nominal = p.written[0] - p.lo
-                out.append((name, nominal + dev))
+            if p.absolute:  # a tool length: the machine's value is the nominal the path was built with
+                out.append((name, self.machine.tool_length(int(name[1:])) + dev))
             else:
-                out.append((name, dev))
+                out.append((name, p.centre + dev))
         return tuple(out)
 
     def _bisect_line(self, seg, piece, zone, steps: int = 40) -> Fraction | None:

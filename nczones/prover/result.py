@@ -42,6 +42,12 @@ class ParamRange:
     added to every machine coordinate of the axis).  ``lo``/``hi`` are
     deviations from the nominal value (``H`` ranges are converted); ``written``
     keeps the range as the user gave it.
+
+    When a branch of the path switches inside a range, :func:`verify` proves
+    the sides as separate cases: a case's ``lo``/``hi`` may be open
+    (``lo_open``/``hi_open``) and is relative to a nominal value moved into
+    it, ``centre`` (the deviation from the machine file's value at which that
+    case's path was built; witnesses add it back).
     """
 
     name: str
@@ -49,6 +55,9 @@ class ParamRange:
     hi: Fraction
     written: tuple[Fraction, Fraction]
     absolute: bool = False
+    lo_open: bool = False
+    hi_open: bool = False
+    centre: Fraction = Fraction(0)
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,6 +119,8 @@ class Violation:
     break_parameter: Fraction | None = None
     break_point: tuple[tuple[str, Fraction], ...] = ()
     leg: str = ""
+    #: operator switches the violation needs, other than their verified default (``(("block delete", "on"),)``)
+    switches: tuple[tuple[str, str], ...] = ()
 
     @property
     def line(self) -> int | None:

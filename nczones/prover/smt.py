@@ -13,6 +13,10 @@ Encodings (``q`` = the point a zone sees, ``e`` = margin perturbation):
   ``0 <= t <= 1``, ``-d <= e_a <= d``; ``dS``/``dE`` are sums of parameter
   deviations (linear unless start and end depend on different
   parameters, then bilinear: QF_NRA);
+* dogleg rapid whose ends depend on different parameters: a time
+  variable ``tau >= 0`` and per axis ``S + min(v tau, E - S)`` (``max(-v tau,
+  E - S)`` backwards) with ``ite``: exact and linear (QF_LRA), see
+  :meth:`nczones.prover.core.Prover._dogleg_query`;
 * circular arc with rational centre ``c``: plane variables ``x, y`` with
   ``(x-cx)^2 + (y-cy)^2 = r^2`` and the swept sector as half-plane tests
   on ``v = (x,y) - c`` (exact, QF_NRA); the other axes are constant;

@@ -1,0 +1,216 @@
+"""Wrong `safe` verdicts found by the issue-18 review, each as the reproducer that showed it.
+
+Every range verdict is also replayed at concrete values with an independently built machine
+(``concrete``): a range's `unsafe` witness must be unsafe there, and the fixed machines the review
+used must give the verdicts it expected.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from fractions import Fraction
+from types import MappingProxyType
+
+import pytest
+
+from nczones.gcode import interpret_text as interpret
+from nczones.machine import load_machine, parse_machine
+from nczones.prover import verify_text as verify
+
+F = Fraction
+
+
+def concrete(machine, **values):
+    """The machine with parameters fixed (``G54_X=1``: deviation; ``H1=115``: absolute; ``start_X=-1``)."""
+    offsets = {k: list(v) for k, v in machine.offsets.items()}
+    tools = dict(machine.tool_lengths)
+    start = list(machine.start)
+    for key, value in values.items():
+        value = F(value)
+        if key.startswith("H"):
+            tools[int(key[1:])] = value
+            continue
+        head, axis = key.rsplit("_", 1)
+        k = machine.axis_names.index(axis)
+        if head == "start":
+            start[k] += value
+        else:
+            offsets.setdefault(head, list(machine.offset(head)))[k] += value
+    return replace(machine, offsets=MappingProxyType({k: tuple(v) for k, v in offsets.items()}),
+                   tool_lengths=MappingProxyType(tools), start=tuple(start))
+
+
+def witness_values(result) -> dict[str, Fraction]:
+    return {name.replace(".", "_"): value for name, value in result.violations[0].params}
+
+
+# ----------------------------------------------------------------------------- 1. dogleg rapids
+
+DOGLEG_TEXT = """
+[machine]
+axes = ["X", "Y"]
+rapid_mode = "dogleg"
+[machine.rapid]
+X = "10000"
+Y = "10000"
+[machine.reference]
+X = "0"
+Y = "100"
+[offsets]
+G54 = { X = "0", Y = "0" }
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-10", Y = "-10" }
+max = { X = "200", Y = "200" }
+[[zones]]
+name = "post"
+kind = "box"
+forbid = true
+min = { X = "75", Y = "15" }
+max = { X = "85", Y = "25" }
+"""
+DOGLEG = parse_machine(DOGLEG_TEXT, "dogleg.toml")
+DOG_MOVE = "G21 G90 G54\nG0 X100 Y0\nM30\n"
+DOG_HOME = "G21 G90 G54\nG0 X105\nG0 Y-5\nG28\nM30\n"   # the G28 home leg runs diagonally through the post
+
+
+@pytest.mark.parametrize(("program", "param", "line"), [
+    (DOG_MOVE, None, 2), (DOG_MOVE, "G54.X=-1..1", 2), (DOG_MOVE, "start.X=-1..1", 2),
+    (DOG_HOME, None, 4), (DOG_HOME, "G54.Y=-1..1", 4),
+])
+def test_dogleg_rapid_with_ends_on_different_parameters_is_unsafe(program, param, line):
+    """A dogleg rapid whose ends depend on different parameters was checked along one diagonal of the
+    per-axis box: `safe`.  Its breakpoints move with the parameters; the encoding is now exact."""
+    result = verify(program, DOGLEG, params=[param] if param else [])
+    assert result.verdict.label == "unsafe"
+    v = result.violations[0]
+    assert v.line == line and v.zone == "post"
+    if param:
+        assert verify(program, concrete(DOGLEG, **witness_values(result))).verdict.label == "unsafe"
+
+
+def test_dogleg_with_ranges_is_not_over_reported():
+    """The exact encoding proves what the box hull of the ends could not: the path passes the post's
+    corner diagonally for every offset in the range."""
+    m = parse_machine(DOGLEG_TEXT.replace('X = "75", Y = "15"', 'X = "20", Y = "20"')
+                      .replace('X = "85", Y = "25"', 'X = "30", Y = "30"'))
+    result = verify(DOG_MOVE, m, params=["G54.X=-1..1"])   # diagonal x + y = 100 +- 1 misses the post
+    assert result.verdict.label == "safe", result.reasons
+    for dx in (-1, 0, 1):
+        assert verify(DOG_MOVE, concrete(m, G54_X=dx)).verdict.label == "safe"
+
+
+# ----------------------------------------------------------------------------- 2. tool lengths the program writes
+
+TOOL_PROGRAM = "G21 G90 G54\nG10 L1 P1 Z50\nG43 H1\nG0 Z100\nG0 X-30 Y0\nG1 Z20 F100\nG0 Z100\nM30\n"
+
+
+@pytest.mark.parametrize("param", ["H1=100..110", "H1=130..150", None])
+def test_a_tool_length_the_program_wrote_ignores_the_machine_files_range(param):
+    """``G10 L1 P1 Z50`` then ``G43 H1``: the length is 50 whatever the machine file's H1 is.  The range's
+    deviation was added to 50 (the tip of a 50 mm tool in the vise was proved safe for H1=100..110)."""
+    mill = load_machine("specs/machines/mill.toml")
+    result = verify(TOOL_PROGRAM, mill, params=[param] if param else [])
+    assert result.verdict.label == "unsafe"
+    assert [v.line for v in result.violations] == [6, 7] and result.violations[0].zone == "vise"
+    run = interpret(TOOL_PROGRAM, mill, track_dependencies=True)
+    assert {s.deps_tool for s in run.segments()} == {()}
+    run = interpret("G43 H1\nG0 Z100\nM30\n", mill, track_dependencies=True)
+    assert [s.deps_tool for s in run.segments()] == [("H1",)]
+
+
+# ----------------------------------------------------------------------------- 3. canned cycles branch on R
+
+CYCLE = parse_machine("""
+[machine]
+axes = ["X", "Y", "Z"]
+[machine.rapid]
+X = "10000"
+Y = "10000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "300"
+[offsets]
+G54 = { X = "0", Y = "0", Z = "100" }
+[tool_lengths]
+H1 = "120"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-10", Y = "-50", Z = "0" }
+max = { X = "200", Y = "50", Z = "400" }
+[[zones]]
+name = "clamp"
+kind = "box"
+forbid = true
+point = "tip"
+min = { X = "40", Y = "-10", Z = "183" }
+max = { X = "60", Y = "10", Z = "190" }
+""", "cycle.toml")
+# R (machine) = 81 + 100 + H1: above the initial level 300 for H1 > 119 (the cycle climbs to R and moves over
+# the clamp at tip level 181), below it for H1 < 119 (it moves at the initial level: tip 300 - H1, in the
+# clamp for 110 < H1 < 117)
+CYCLE_PROGRAM = "G21 G90 G54 G17\nG43 H1\nG98 G81 X100 Y0 Z-10 R81 F100\nG80\nM30\n"
+
+
+@pytest.mark.parametrize(("h1", "label"), [(115, "unsafe"), (111, "unsafe"), (110, "safe"), (117, "safe"),
+                                          (119, "safe"), (120, "safe"), (150, "safe")])
+def test_the_cycle_at_fixed_tool_lengths(h1, label):
+    assert verify(CYCLE_PROGRAM, concrete(CYCLE, H1=h1)).verdict.label == label
+
+
+@pytest.mark.parametrize(("nominal", "param", "label"), [
+    (120, "H1=100..150", "unsafe"),   # the review's case: R above the initial level at the nominal value
+    (121, "H1=100..150", "unsafe"),   # another nominal value gave a witness the machine never reached
+    (105, "H1=100..150", "unsafe"),
+    (120, "H1=100..112", "unsafe"),   # nominal outside the range; the initial level had the tool's dependency
+    (120, "H1=100..110", "safe"),
+    (120, "H1=119..150", "safe"),     # the switching value itself, and above it
+    (120, "H1=130..150", "safe"),
+    (120, "H1=117..119", "safe"),
+])
+def test_a_cycle_whose_branch_switches_inside_the_range(nominal, param, label):
+    """The cycle was built once at the nominal H1 and every level got the offset's and tool's
+    dependencies (the initial level too, a machine position): `safe` over H1=100..150 while H1=115 is
+    unsafe.  Now the range is split at the switching value and each side built with its own branch."""
+    machine = concrete(CYCLE, H1=nominal)
+    result = verify(CYCLE_PROGRAM, machine, params=[param])
+    assert result.verdict.label == label, (result.violations, result.reasons)
+    if label == "unsafe":
+        (h1,) = [v for k, v in result.violations[0].params if k == "H1"]
+        lo, hi = (F(x) for x in param.split("=")[1].split(".."))
+        assert lo <= h1 <= hi and 110 < h1 < 117
+        assert verify(CYCLE_PROGRAM, concrete(CYCLE, H1=h1)).verdict.label == "unsafe"
+
+
+def test_a_branch_on_two_ranged_parameters_together_is_unknown():
+    """R depends on G54.Z and H1, the initial level on neither: the switching set is not a box."""
+    result = verify(CYCLE_PROGRAM, CYCLE, params=["H1=100..150", "G54.Z=-30..30"])
+    assert result.verdict.label in ("unknown", "unsafe")
+    if result.verdict.label == "unknown":
+        assert any("together" in r.message for r in result.reasons)
+
+
+def test_cutter_compensation_from_a_position_that_moves_with_a_range_is_unknown():
+    m = parse_machine("""
+[machine]
+axes = ["X", "Y"]
+cutter_compensation = "linuxcnc"
+[machine.rapid]
+X = "1000"
+Y = "1000"
+[machine.reference]
+X = "0"
+Y = "0"
+[offsets]
+G54 = { X = "10", Y = "0" }
+""")
+    prog = "G90 G54\nG41.1 D2 G1 X20 Y10 F100\nX30\nG40 X40\nM30\n"
+    assert verify(prog, m).verdict.label == "safe"
+    result = verify(prog, m, params=["G54.X=-1..1"])
+    assert result.verdict.label == "unknown" and "compensation" in result.reasons[0].message
+    # starting from a point of the same frame, the compensated path is a shifted copy: proved
+    assert verify("G90 G54\nG0 X0 Y0\n" + prog.split("\n", 1)[1], m, params=["G54.X=-1..1"]).verdict.label == "safe"
