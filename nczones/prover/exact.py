@@ -192,6 +192,8 @@ def line_violation(
     ln = _Line(p0, p1, axes, zone, tool_length, tool_axis)
     if isinstance(zone, BoxZone):
         if zone.forbid:
+            if _flat(zone.limits):
+                return []  # no interior, nothing forbidden, whatever the margin
             conds = []
             for axis, lo, hi in zone.limits:
                 if lo is not None:
@@ -215,6 +217,8 @@ def line_violation(
         if zone.forbid:
             for i in idx:
                 reg = zone.regions[i]
+                if reg.min is not None and reg.max is not None and not reg.min < reg.max:
+                    continue  # a flat row has no interior
                 a, b = zone.region_lower(i), reg.upto
                 conds = [ln.lt(r, b + d), ln.gt(r, a - d)]
                 if reg.max is not None:
@@ -252,6 +256,11 @@ def line_violation(
                 parts.append(_intersect(touch, ln.gt(lim, reg.max - d)))
         return _union(parts)
     raise TypeError(f"line_violation cannot decide a {zone.kind} zone")
+
+
+def _flat(limits) -> bool:
+    """Does some axis range have no interior (``min == max``)?  Then a forbid zone forbids nothing."""
+    return any(lo is not None and hi is not None and not lo < hi for _, lo, hi in limits)
 
 
 def _reachable(zone: SteppedZone, lo: Fraction, hi: Fraction) -> range:
@@ -374,6 +383,8 @@ def point_depth(zone: Zone, p: dict[str, Fraction], margin: Fraction = F0) -> Fr
     d = margin
     if isinstance(zone, BoxZone):
         if zone.forbid:
+            if _flat(zone.limits):
+                return F0
             slacks = []
             for a, lo, hi in zone.limits:
                 if lo is not None:
@@ -393,6 +404,8 @@ def point_depth(zone: Zone, p: dict[str, Fraction], margin: Fraction = F0) -> Fr
         if zone.forbid:
             best = F0
             for i, reg in enumerate(zone.regions):
+                if reg.min is not None and reg.max is not None and not reg.min < reg.max:
+                    continue
                 rect = ((zone.region_lower(i) - d, reg.upto + d),
                         (None if reg.min is None else reg.min - d, None if reg.max is None else reg.max + d))
                 slacks = [q[0] - rect[0][0], rect[0][1] - q[0]]

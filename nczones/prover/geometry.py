@@ -42,6 +42,8 @@ __all__ = [
     "pi_bounds",
     "rational_point_on_arc",
     "in_sweep",
+    "round_down",
+    "round_up",
 ]
 
 F0 = Fraction(0)
@@ -140,6 +142,32 @@ def is_square(q: Fraction) -> Fraction | None:
     return None
 
 
+#: Resolution (bits after the binary point) of outward-rounded enclosures: far below any pulse, and it keeps
+#: the numbers refinement multiplies together from growing without bound.
+ENCLOSURE_BITS = 128
+
+
+def round_down(x: Fraction, bits: int = ENCLOSURE_BITS) -> Fraction:
+    """The largest multiple of ``2**-bits`` not above ``x`` (``x`` itself when it is one).
+
+    >>> round_down(Fraction(1, 3), 4), round_down(Fraction(-1, 3), 4), round_down(Fraction(3, 8), 4)
+    (Fraction(5, 16), Fraction(-3, 8), Fraction(3, 8))
+    """
+    scale = 1 << bits
+    if scale % x.denominator == 0:
+        return x
+    return Fraction((x.numerator * scale) // x.denominator, scale)
+
+
+def round_up(x: Fraction, bits: int = ENCLOSURE_BITS) -> Fraction:
+    """The smallest multiple of ``2**-bits`` not below ``x``.
+
+    >>> round_up(Fraction(1, 3), 4), round_up(Fraction(-1, 3), 4)
+    (Fraction(3, 8), Fraction(-5, 16))
+    """
+    return -round_down(-x, bits)
+
+
 def sqrt_bounds(q: Fraction, bits: int = 96) -> tuple[Fraction, Fraction]:
     """Rational ``lo <= sqrt(q) <= hi`` with ``hi - lo <= 2**-bits`` (exact if square).
 
@@ -195,6 +223,9 @@ def atan_bounds(x: Fraction, terms: int = 40) -> tuple[Fraction, Fraction]:
     if x < 0:
         lo, hi = atan_bounds(-x, terms)
         return -hi, -lo
+    if x.denominator > 1 << ENCLOSURE_BITS:  # atan is increasing: enclose from rounded arguments
+        x_lo, x_hi = round_down(x), round_up(x)
+        return round_down(atan_bounds(x_lo, terms)[0]), round_up(atan_bounds(x_hi, terms)[1])
     if x > 1:  # atan(x) = pi/2 - atan(1/x)
         lo, hi = atan_bounds(1 / x, terms)
         return _PI[0] / 2 - hi, _PI[1] / 2 - lo

@@ -46,7 +46,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..motion import Segment
-from .geometry import ArcGeom, in_sweep, pi_bounds, sqrt_bounds
+from .geometry import ArcGeom, in_sweep, pi_bounds, round_down, round_up, sqrt_bounds
 from .result import Reason
 
 F0 = Fraction(0)
@@ -147,19 +147,20 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
     def piece_geom(a: Any, b: Any) -> ArcGeom:
         da, _, ta_lo, _ = a
         db, _, _, tb_hi = b
-        f_lo = max(F0, ta_lo / tot_hi)
-        f_hi = min(F1, tb_hi / tot_lo)
+        # every enclosure is rounded outward to a fixed resolution: exact but bounded numbers
+        f_lo = max(F0, round_down(ta_lo / tot_hi))
+        f_hi = min(F1, round_up(tb_hi / tot_lo))
         start, end = list(g.start), list(g.end)
         for k in range(len(g.start)):
             if k in (g.ia, g.ib) or g.start[k] == g.end[k]:
                 continue
             vals = (g.start[k] + (g.end[k] - g.start[k]) * f_lo, g.start[k] + (g.end[k] - g.start[k]) * f_hi)
-            start[k], end[k] = min(vals), max(vals)
+            start[k], end[k] = round_down(min(vals)), round_up(max(vals))
         r2_lo = r2_hi = g.r2_lo
         if spiral:
             rho = [r0 + (r1 - r0) * f for r0 in rs for r1 in re_ for f in (f_lo, f_hi)]
             r2s = [max(F0, min(rho)) ** 2, max(rho) ** 2, da[0] ** 2 + da[1] ** 2, db[0] ** 2 + db[1] ** 2]
-            r2_lo, r2_hi = min(r2s), max(r2s)
+            r2_lo, r2_hi = round_down(min(r2s)), round_up(max(r2s))
         return ArcGeom(g.ia, g.ib, (c[0] + da[0], c[1] + da[1]), (c[0] + db[0], c[1] + db[1]), g.ccw, False,
                        c, None, r2_lo, r2_hi, tuple(start), tuple(end))
 
@@ -175,6 +176,7 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
             n2 = dm[0] ** 2 + dm[1] ** 2
             t = sqrt_bounds(((rs[0] + re_[0]) / 2) ** 2 / n2, 40)[0] or F1
             dm = (dm[0] * t, dm[1] * t)
+        dm = (round_down(dm[0]), round_down(dm[1]))  # any direction strictly inside the sector will do
         if dm == da or not in_sweep(da, db, dm, g.ccw, False) or in_sweep(da, dm, db, g.ccw, False):
             return None
         lo, hi = _angle_bounds(u, dm, g.ccw)
@@ -182,6 +184,7 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
 
     stack = [(bounds[i], bounds[i + 1], 0) for i in range(len(bounds) - 1)][::-1]
     used = 0
+    undecided = False
     while stack:
         a, b, depth = stack.pop()
         used += 1
@@ -206,9 +209,42 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
         if v is not None:
             return _Outcome(v, engine="z3")
         if mid is None or depth >= MAX_DEPTH:
-            return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted (depth {MAX_DEPTH}, "
-                                          f"{MAX_PIECES} pieces): a piece's enclosure may violate a zone but no "
-                                          "exact violation was confirmed", seg.span, seg.block), engine="unknown")
+            # undecided: look for a certified violation here and in the other pieces before answering
+            v = _scan_piece(prover, seg, g, a[0], b[0], params)
+            if v is not None:
+                return _Outcome(v, engine="z3")
+            undecided = True
+            continue
         stack.append((mid, b, depth + 1))
         stack.append((a, mid, depth + 1))
+    if undecided:
+        return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted (depth {MAX_DEPTH}, "
+                                      f"{MAX_PIECES} pieces): a piece's enclosure may violate a zone but no "
+                                      "exact violation was confirmed", seg.span, seg.block), engine="unknown")
     return _Outcome(engine="z3")
+
+
+#: Exact directions tried across a piece the budget cannot split further, before answering unknown.
+SCAN_DIRECTIONS = 64
+
+
+def _scan_piece(prover, seg: Segment, g: ArcGeom, da, db, params):
+    """A certified violation at one of :data:`SCAN_DIRECTIONS` rational directions spread over the
+    sector from ``da`` to ``db`` (tangent half-angle steps), or None.
+
+    Only a certification on the exact path (:meth:`Prover._arc_witness_enclosed`) is reported, so
+    this can find a witness the pieces' enclosures were too coarse to confirm (a spiral that leaves
+    a face by far less than the enclosure's width), never invent one.
+    """
+    from .core import _half_tan
+
+    m_end = _half_tan(da, db, g.ccw)
+    if m_end is None or m_end <= 0:
+        return None
+    c = g.centre
+    for i in range(1, SCAN_DIRECTIONS):
+        d = _rot(da, round_down(m_end * i / SCAN_DIRECTIONS), g.ccw)
+        v = prover._arc_witness_enclosed(seg, g, {"x": c[0] + d[0], "y": c[1] + d[1]}, params, retry=False)
+        if v is not None:
+            return v
+    return None

@@ -214,3 +214,82 @@ G54 = { X = "10", Y = "0" }
     assert result.verdict.label == "unknown" and "compensation" in result.reasons[0].message
     # starting from a point of the same frame, the compensated path is a shifted copy: proved
     assert verify("G90 G54\nG0 X0 Y0\n" + prog.split("\n", 1)[1], m, params=["G54.X=-1..1"]).verdict.label == "safe"
+
+
+# ----------------------------------------------------------------------------- 6. internal errors on valid input
+
+FLAT = parse_machine("""
+[machine]
+axes = ["X", "Y"]
+[machine.rapid]
+X = "10000"
+Y = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-10", Y = "-10" }
+max = { X = "200", Y = "200" }
+[[zones]]
+name = "flat"
+kind = "box"
+forbid = true
+min = { X = "50", Y = "20" }
+max = { X = "50", Y = "40" }
+[[zones]]
+name = "flat row"
+kind = "stepped"
+forbid = true
+reference_axis = "X"
+limited_axis = "Y"
+from = "100"
+regions = [{ upto = "120", min = "60", max = "60" }, { upto = "140", min = "50", max = "70" }]
+""")
+
+
+@pytest.mark.parametrize("margin", ["0", "1", "0.001"])
+@pytest.mark.parametrize("engine", ["auto", "z3"])
+def test_a_flat_forbid_zone_forbids_nothing_with_any_margin(margin, engine):
+    """A forbid zone with min = max on an axis has no interior.  The exact tier forgot that once a margin
+    was added, disagreed with Z3 and exited 4 ("tier 1 and Z3 disagree")."""
+    program = "G90 G0 X0 Y30\nG1 X110 Y60 F100\nG1 X100 Y30\nG1 X115 Y30\nM30\n"
+    assert verify(program, FLAT, margin=margin, engine=engine).verdict.label == "safe"
+    # the row that is not flat still forbids its interior
+    assert verify("G90 G0 X130 Y60\nM30\n", FLAT, margin=margin, engine=engine).verdict.label == "unsafe"
+
+
+SPIRAL_MACHINE = """
+[machine]
+axes = ["X", "Y"]
+[machine.rapid]
+X = "10000"
+Y = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-100", Y = "-100" }
+max = { X = "X_MAX", Y = "100" }
+"""
+
+
+def test_a_spiral_that_grazes_a_face_is_decided_without_an_internal_error():
+    """A spiral from radius 10 to 10.002 (inside the arc tolerance) crosses x = 10.001 by about 2e-8 mm just
+    past its quarter turn.  Refinement multiplied rationals until one had more than 4,300 digits (exit 4);
+    enclosures are now rounded outward to a fixed resolution, and a piece the budget cannot split is
+    scanned for a certified witness."""
+    def machine(x_max: str):
+        return parse_machine(SPIRAL_MACHINE.replace("X_MAX", x_max))
+
+    m = machine("10.001")
+    program = "G0 X0 Y-10\nG3 X0 Y10.002 I0 J10 F100\nM30\n"
+    result = verify(program, m)
+    assert result.verdict.label == "unsafe"
+    v = result.violations[0]
+    assert v.line == 2 and 0 < v.depth < F(1, 10**7) and dict(v.point)["X"] > F("10.001")
+    wider = machine("10.0015")
+    assert verify(program, wider).verdict.label == "safe"
