@@ -160,6 +160,8 @@ class Machine:
     dialect: str = "linuxcnc"
     #: The Fanuc parameters (``[fanuc]``, ``[variables]``, ``[macros]``); defaults when not given.
     fanuc: FanucSettings = field(default_factory=FanucSettings)
+    #: Block-delete switch positions a proof covers: "both" (default), "off" (``/`` lines run), "on" (skipped).
+    block_delete: str = "both"
 
     @property
     def axis_names(self) -> tuple[str, ...]:
@@ -494,13 +496,15 @@ def _per_axis(
 _TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones", "fanuc", "variables", "macros")
 _MACHINE_KEYS = (
     "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
-    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
+    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect", "block_delete",
     "reference_2", "reference_3", "reference_4",
 )
 _FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_clearance", "boring_shift",
                "scaling_unit", "rotation_incremental", "atan_signed", "tool_length_motion", "harmless_m")
 #: Values of ``[machine] cutter_compensation``.
 CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
+#: Values of ``[machine] block_delete``: which positions of the block-delete switch a proof covers.
+BLOCK_DELETE_MODES = ("both", "off", "on")
 _ZONE_COMMON = ("name", "kind", "forbid", "point")
 _ZONE_KEYS = {
     "stepped": _ZONE_COMMON + ("reference_axis", "limited_axis", "from", "regions"),
@@ -699,6 +703,12 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                   "(G41/G42 make the result unknown) or \"linuxcnc\" (modelled as LinuxCNC does it)",
                   rd.loc.key("cutter_compensation", mline))
     tool_diameters = _register_table(rd, data, "tool_diameters", "T", "tool number", 'T1 = "6"')
+    block_delete = mt.get("block_delete", "both")
+    if block_delete not in BLOCK_DELETE_MODES:
+        rd.report("ZN114", f"[machine] block_delete: {_written(block_delete)} is not allowed; use \"both\" (verify "
+                  "the program with the block-delete switch off and on), \"off\" (lines starting with / are "
+                  "executed) or \"on\" (they are skipped)", rd.loc.key("block_delete", mline))
+        block_delete = "both"
 
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect)
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
@@ -724,6 +734,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         allowed=allowed, modal=modal, tool_axis=tool_axis, source=rd.path,
         sections=MappingProxyType(sections), cutter_compensation=comp,
         tool_diameters=MappingProxyType(tool_diameters), dialect=dialect or "linuxcnc", fanuc=fanuc,
+        block_delete=block_delete,
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.
     bad = allowed.violated_zones(machine.point(start_t))

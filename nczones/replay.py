@@ -409,7 +409,7 @@ def _show(axes: tuple[str, ...], p: Point) -> str:
     return " ".join(f"{a}{format_decimal(x, 6)}" for a, x in zip(axes, p))
 
 
-def _segments(source: Any, machine: Machine, settings: Mapping[str, Any]) -> list[Segment]:
+def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: bool) -> list[Segment]:
     from .gcode import interpret
 
     options: dict[str, Any] = {}
@@ -418,13 +418,21 @@ def _segments(source: Any, machine: Machine, settings: Mapping[str, Any]) -> lis
         options["arc_tolerance"] = tol if tol == "linuxcnc" else parse_rational(tol)
     if isinstance(settings.get("max_iterations"), int):
         options["max_loop_iterations"] = settings["max_iterations"]
-    if isinstance(settings.get("block_delete"), bool):
-        options["block_delete"] = settings["block_delete"]
+    options["block_delete"] = skip
     if settings.get("dialect") in ("linuxcnc", "fanuc"):
         options["dialect"] = settings["dialect"]
     if isinstance(settings.get("library"), str):
         options["library"] = settings["library"]
     return list(interpret(source, machine, **options).segments())
+
+
+def _skips_deleted_blocks(v: Mapping[str, Any], settings: Mapping[str, Any]) -> bool:
+    """Whether the violation's path skips the lines starting with / (the block-delete switch on)."""
+    switches = v.get("switches") if isinstance(v.get("switches"), Mapping) else {}
+    if "block_delete" in switches:
+        return switches["block_delete"] == "on"
+    mode = settings.get("block_delete")
+    return mode is True or mode == "on"
 
 
 def replay_report(doc: Mapping[str, Any], *, base: str | None = None, machine_file: str | None = None,
@@ -473,10 +481,11 @@ def replay_report(doc: Mapping[str, Any], *, base: str | None = None, machine_fi
             params = {str(n): parse_rational(x) for n, x in raw.items()}
         except InvalidArgument as exc:
             raise _fail("RP104", f"params_exact: {exc}", where) from None
-        key = tuple(sorted(params.items()))
+        skip = _skips_deleted_blocks(v, settings)
+        key = (tuple(sorted(params.items())), skip)
         if key not in cache:
             concrete, shift = _concrete_machine(machine, params)
-            cache[key] = (_segments(source, concrete, settings), shift, concrete)
+            cache[key] = (_segments(source, concrete, settings, skip), shift, concrete)
         segs, shift, concrete = cache[key]
         checks.append(_check_violation(v, source.name, concrete, segs, shift, margin, settings, where))
     return checks

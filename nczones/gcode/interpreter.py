@@ -388,6 +388,8 @@ class Interpreter:
         self.unset = {"units", "distance", "offset", "plane", "feed", "tool"}
         self.assumed: dict[str, str] = {}
         self.unsupported: list[Unsupported] = []
+        #: program stops executed (M0, M1, M60) as (code, line), the first 100: the operator acts there
+        self.stops: list[tuple[int, int]] = []
         self.blocks = 0
         self.segment_count = 0
         self.kind_counts = {k: 0 for k in SegmentKind}
@@ -830,6 +832,8 @@ class Interpreter:
                                   "its restore on return is not modelled", w)
             elif k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99):
                 self._unknown(f"M{k}", f"M{k} is not a code nczones models (user M codes may run anything)", w)
+            if k in (0, 1, 60) and len(self.stops) < 100:
+                self.stops.append((k, w.span.line if w.span is not None else 0))
         if 70 in {k for k, _ in mcodes}:
             self._saved_modal = self._modal_snapshot()
         if 73 in {k for k, _ in mcodes} and self._scopes is not None and len(self._scopes) > 1:

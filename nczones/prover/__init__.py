@@ -134,6 +134,7 @@ def verify(
     max_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     dialect: str | None = None,
     library: str | os.PathLike | None = None,
+    block_delete: str | None = None,
 ) -> Result:
     """Verify the G-code program *file* ``program`` on a machine (DESIGN §5).
 
@@ -159,6 +160,15 @@ def verify(
     cutting motion (:mod:`nczones.prover.recovery`); its violations have
     ``kind == "recovery"``.
 
+    ``block_delete`` (default: the machine file's ``block_delete``, itself
+    ``"both"`` by default) says which positions of the block-delete switch
+    the proof covers: ``"both"`` verifies a program that has lines starting
+    with ``/`` with the switch off (the lines run) and on (they are
+    skipped); a violation found in one position only names it
+    (``Violation.switches``).  ``"off"``/``"on"`` fix the switch.  The notes
+    of a program with ``/`` lines say what was verified; stops (M0, M1,
+    M60) are noted too.
+
     ``dialect`` overrides the machine's ``[machine] dialect`` (``"linuxcnc"``
     or ``"fanuc"``, ``specs/fanuc.md``); ``library`` is a folder of Fanuc
     subprogram files that ``M98``/``G65`` calls search.
@@ -179,7 +189,7 @@ def verify(
     source = as_source(program, file=file, text_function="verify_text").require_code()
     return _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
                    arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
-                   max_iterations=max_iterations, dialect=dialect, library=library)
+                   max_iterations=max_iterations, dialect=dialect, library=library, block_delete=block_delete)
 
 
 #: :func:`verify` under the name that says what it takes.
@@ -208,6 +218,7 @@ def _verify(
     max_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     dialect: str | None = None,
     library: str | os.PathLike | None = None,
+    block_delete: str | None = None,
 ) -> Result:
     from ..exact import exact, format_exact
     from ..gcode import DEFAULT_ARC_TOLERANCE, interpret
@@ -226,6 +237,9 @@ def _verify(
         extra["dialect"] = dialect
     if library is not None:
         extra["library"] = library
+    mode = block_delete if block_delete is not None else getattr(machine, "block_delete", "both")
+    if mode not in ("both", "off", "on"):
+        raise InvalidArgument(f"block_delete must be 'both', 'off' or 'on', not {mode!r}")
     tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
     # Every option that can change the verdict, as JSON values: reports carry them and
     # `nczones replay` re-runs with them.  A new option of verify() belongs here too.
@@ -237,24 +251,38 @@ def _verify(
         "arc_tolerance": tolerance if isinstance(tolerance, str) else format_exact(exact(tolerance)),
         "max_iterations": max_iterations,
         "max_violations": max_violations,
-        "block_delete": False,
+        "block_delete": mode,
         "dialect": machine.dialect if dialect is None else dialect,
     }
     if library is not None:
         settings["library"] = str(library)
     opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress)
-    result, first_run = _verify_cases(source, machine, ranges, False, extra, opts)
+    deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)]
+    positions = ((False, True) if mode == "both" else (mode == "on",)) if deleted else (False,)
+    per_position = [_verify_cases(source, machine, ranges, skip, extra, opts) for skip in positions]
+    result, first_run = per_position[0]
+    if len(per_position) == 2:
+        result = _both_switch_positions(result, per_position[1][0], max_violations)
     violations, reasons, notes = list(result.violations), list(result.reasons), result.notes
+    notes += _switch_notes(source.text, deleted, mode, first_run.interpreter.stops)
     if recovery is not None:
         from .recovery import verify_recovery
 
-        rerun = interpret(source, machine, **extra)
-        rec = verify_recovery(rerun, machine, variant=recovery, margin=margin, max_violations=max_violations)
-        source_text = source_lines(source.text, [v.span.line for v in rec.violations]
-                                   + [r.span.line for r in rec.reasons if r.span is not None])
-        violations = sorted(violations + [replace(v, span=_fix_span(v.span, source_text)) for v in rec.violations],
-                            key=lambda v: (v.block, v.kind != "motion"))
-        reasons += [replace(r, span=_fix_span(r.span, source_text)) for r in rec.reasons]
+        found: list[Violation] = []
+        for skip in positions:
+            rerun = interpret(source, machine, block_delete=skip, **extra)
+            rec = verify_recovery(rerun, machine, variant=recovery, margin=margin, max_violations=max_violations)
+            source_text = source_lines(source.text, [v.span.line for v in rec.violations]
+                                       + [r.span.line for r in rec.reasons if r.span is not None])
+            switch = (("block_delete", "on" if skip else "off"),) if len(positions) == 2 else ()
+            for v in rec.violations:
+                if skip and any((v.line, v.break_line) == (w.line, w.break_line) for w in found):
+                    continue
+                found.append(replace(v, span=_fix_span(v.span, source_text), switches=switch))
+            reasons += [replace(r, span=_fix_span(r.span, source_text)) for r in rec.reasons
+                        if not skip or r.message not in {x.message for x in reasons}]
+        violations = sorted(violations + found,
+                            key=lambda v: (("block_delete", "on") in v.switches, v.block, v.kind != "motion"))
         if ranges:
             # The recovery proof runs at the nominal parameter values only; a
             # verdict 'safe' over the ranges would claim more than was proved.
@@ -271,6 +299,56 @@ def _verify(
                    timings=timings, extra={"counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=tuple(settings.items()))
+
+
+#: A line the block-delete switch may skip: its first character other than blanks is "/".
+_BLOCK_DELETE_LINE = re.compile(r"(?m)^[ \t]*/")
+
+
+def _switch_notes(text: str, deleted: list[int], mode: str, stops) -> tuple[str, ...]:
+    """What the report says about the operator's switches: block delete, stops."""
+    notes: tuple[str, ...] = ()
+    if deleted:
+        lines = sorted({text.count("\n", 0, at) + 1 for at in deleted})
+        where = f"{len(lines)} line(s) start with '/' (block delete), the first at line {lines[0]}"
+        notes += ({"both": f"{where}: verified with the block-delete switch off (those lines run) and on "
+                           "(they are skipped); a violation found in one position says which",
+                   "off": f"{where}: verified with the block-delete switch OFF only (those lines run), as the "
+                          "machine file or --block-delete fixes it; with the switch on the path differs",
+                   "on": f"{where}: verified with the block-delete switch ON only (those lines are skipped), as "
+                         "the machine file or --block-delete fixes it; with the switch off the path differs"}[mode],)
+    if stops:
+        codes = sorted({k for k, _ in stops})
+        names = {0: "M0 (program stop)", 1: "M1 (optional stop)", 60: "M60 (pallet change stop)"}
+        notes += (f"{', '.join(names[k] for k in codes)} at line(s) "
+                  f"{', '.join(str(n) for n in sorted({n for _, n in stops})[:10])}: no motion"
+                  + ("; the path is the same with the optional-stop switch on or off" if 1 in codes else "")
+                  + "; axes the operator moves while the program is stopped are not modelled",)
+    return notes
+
+
+def _both_switch_positions(off: Result, on: Result, max_violations: int) -> Result:
+    """One result from the block-delete switch off and on: a violation at a source line (and zone) found in
+    one position only carries that position (``Violation.switches``); one found in both, none."""
+    def key(v):
+        return (v.line, v.zone, v.kind, v.break_line)
+
+    on_keys = {key(v) for v in on.violations}
+    off_keys = {key(v) for v in off.violations}
+    violations = [v if key(v) in on_keys else replace(v, switches=(("block_delete", "off"),)) for v in off.violations]
+    violations += [replace(v, switches=(("block_delete", "on"),)) for v in on.violations if key(v) not in off_keys]
+    reasons = list(off.reasons)
+    for r in on.reasons:
+        if (r.message, r.span) not in {(x.message, x.span) for x in reasons}:
+            reasons.append(replace(r, message=r.message + " (with the block-delete switch on)"))
+    stats = dict(off.stats)
+    for k, v in on.stats:
+        stats[k] = stats.get(k, 0) + v
+    verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    return replace(off, verdict=verdict, violations=tuple(violations[:max_violations]), reasons=tuple(reasons),
+                   notes=off.notes + tuple(n for n in on.notes if n not in off.notes), stats=tuple(stats.items()),
+                   truncated=off.truncated or on.truncated or len(violations) > max_violations,
+                   extra={"splits": tuple(off.extra.get("splits", ())) + tuple(on.extra.get("splits", ()))})
 
 
 def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, extra, opts):

@@ -71,6 +71,7 @@ def verify_options(args: argparse.Namespace, machine) -> dict[str, Any]:
         "arc_tolerance": _arc_tolerance(args.arc_tolerance),
         "max_iterations": args.max_iterations,
         "library": cli.library_folder(args.library),
+        "block_delete": args.block_delete,
     }
 
 
@@ -214,6 +215,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--recovery", choices=("start", "breakpoint"), default=None,
                    help="also prove the automatic tool-break recovery of the machine's [tool_change] "
                         "from every break point, restarting at the sequence start or at the break point")
+    p.add_argument("--block-delete", choices=("both", "off", "on"), default=None,
+                   help="block-delete switch positions to verify for lines starting with /: both (the default, "
+                        "unless the machine file's block_delete says otherwise), off (the lines run) or on "
+                        "(they are skipped); every report says what was verified")
     p.add_argument("--engine", choices=("auto", "z3"), default="auto",
                    help="auto: exact vectorized decisions where they are exact, Z3 for the rest (default); "
                         "z3: every segment through Z3 (the reference path)")

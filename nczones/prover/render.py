@@ -50,6 +50,8 @@ def render_text(result: Result, program: str = "") -> str:
             out.append(f"    path point {_pt(v.path_point)} has less than the margin {_d(result.margin)}")
         if v.params:
             out.append("    with " + ", ".join(f"{n}={_d(x)}" for n, x in v.params))
+        for switch, position in v.switches:
+            out.append(f"    with the {switch.replace('_', '-')} switch {position}")
         if v.note:
             out.append(f"    note: {v.note}")
     for r in result.reasons:
@@ -119,6 +121,7 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
             "engine": v.engine,
             "params": {n: _d(x) for n, x in v.params},
             "params_exact": {n: format_rational(x) for n, x in v.params},
+            "switches": dict(v.switches),
             "note": v.note,
         })
         if v.kind == "recovery":

@@ -119,7 +119,7 @@ class Violation:
     break_parameter: Fraction | None = None
     break_point: tuple[tuple[str, Fraction], ...] = ()
     leg: str = ""
-    #: operator switches the violation needs, other than their verified default (``(("block delete", "on"),)``)
+    #: the switch positions the violation was found with when the proof covered several (``(("block_delete", "on"),)``)
     switches: tuple[tuple[str, str], ...] = ()
 
     @property

@@ -212,7 +212,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
             hot.setdefault(ln, f"violation[{v.zone}]")
         link = f'<a href="#L{ln}">{ln}:{v.span.column}</a>' if ln is not None and v.span else "—"
         depth = ("≥ " if not v.depth_exact else "") + _d(v.depth)
-        params = ", ".join(f"{n}={_d(x)}" for n, x in v.params)
+        params = ", ".join([f"{n}={_d(x)}" for n, x in v.params] + [f"{s.replace('_', '-')} {p}" for s, p in v.switches])
         vrows.append(
             f'<tr class="violation" id="v{i}"><td>{link}</td><td><code>{_e(v.source)}</code></td>'
             f"<td>{_e(v.zone)}</td><td>{_e(v.kind)}: {_e(v.segment_kind)}"

@@ -126,6 +126,8 @@ def _result_entries(result: Result, base_abs: tuple[str, str]) -> list[dict]:
                 f"{_pt(v.point)} is outside; first exit at {_pt(v.first_exit)}")
         if v.params:
             text += "; with parameters " + ", ".join(f"{n}={format_decimal(x)}" for n, x in v.params)
+        for switch, position in v.switches:
+            text += f"; with the {switch.replace('_', '-')} switch {position}"
         if result.margin:
             text += f"; margin {format_decimal(result.margin)} mm"
         text += "."
@@ -145,6 +147,7 @@ def _result_entries(result: Result, base_abs: tuple[str, str]) -> list[dict]:
             "engine": v.engine,
             "params": {n: format_decimal(x) for n, x in v.params},
             "paramsExact": {n: format_rational(x) for n, x in v.params},
+            "switches": dict(v.switches),
         }
         if v.kind == "recovery":
             props.update({"breakLine": v.break_line, "leg": v.leg,

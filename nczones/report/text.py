@@ -129,6 +129,8 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
             out.append(f"    path point {_pt(v.path_point)} is closer than the margin {_d(result.margin)} mm")
         if v.params:
             out.append("    with parameters " + ", ".join(f"{n}={_d(x)}" for n, x in v.params))
+        for switch, position in v.switches:
+            out.append(f"    with the {switch.replace('_', '-')} switch {position}")
         if v.note:
             out.append(f"    note: {v.note}")
     for r in result.reasons:
