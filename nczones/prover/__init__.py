@@ -51,6 +51,8 @@ from ..machine import Machine
 from .core import Prover, verify_segments
 from .result import ParamRange, Reason, Result, Verdict, Violation
 
+F0 = Fraction(0)
+
 __all__ = [
     "verify",
     "verify_file",
@@ -372,6 +374,14 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, e
                         block_delete=skip, **extra)
         interpretations += 1
         result = _verify_run(run, case_machine, case_ranges, **opts)
+        if case_ranges and result.violations:
+            # a violation names every ranged parameter: those its motion does not depend on at this
+            # case's nominal value (another case's path may differ)
+            nominal = {r.name: run.interpreter._written_deviation(r.name, F0) for r in case_ranges}
+            result = replace(result, violations=tuple(
+                replace(v, params=tuple(v.params) + tuple((n, x) for n, x in nominal.items()
+                                                          if n not in dict(v.params)))
+                for v in result.violations))
         split = run.interpreter.branch_split
         if split is not None:
             if interpretations + len(cases) + 3 <= MAX_CASES:

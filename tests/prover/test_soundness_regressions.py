@@ -7,37 +7,21 @@ used must give the verdicts it expected.
 
 from __future__ import annotations
 
-from dataclasses import replace
 from fractions import Fraction
-from types import MappingProxyType
 
 import pytest
 
 from nczones.gcode import interpret_text as interpret
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify_text as verify
+from tests.oracles.concrete import machine_at
 
 F = Fraction
 
 
 def concrete(machine, **values):
     """The machine with parameters fixed (``G54_X=1``: deviation; ``H1=115``: absolute; ``start_X=-1``)."""
-    offsets = {k: list(v) for k, v in machine.offsets.items()}
-    tools = dict(machine.tool_lengths)
-    start = list(machine.start)
-    for key, value in values.items():
-        value = F(value)
-        if key.startswith("H"):
-            tools[int(key[1:])] = value
-            continue
-        head, axis = key.rsplit("_", 1)
-        k = machine.axis_names.index(axis)
-        if head == "start":
-            start[k] += value
-        else:
-            offsets.setdefault(head, list(machine.offset(head)))[k] += value
-    return replace(machine, offsets=MappingProxyType({k: tuple(v) for k, v in offsets.items()}),
-                   tool_lengths=MappingProxyType(tools), start=tuple(start))
+    return machine_at(machine, {k.replace("_", "."): F(v) for k, v in values.items()})
 
 
 def witness_values(result) -> dict[str, Fraction]:

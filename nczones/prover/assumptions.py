@@ -1,0 +1,47 @@
+"""What a `safe` verdict assumes, in one list (``specs/contract.md``, "What `safe` assumes").
+
+A proof is about a model of the machine and the run; these are the model's terms.  Each report
+states the run's own settings (margin, ranges, block-delete positions, notes); this list is what
+holds for every run.  ``specs/contract.md`` carries the same list (a test keeps them equal) and
+the HTML report prints it.
+
+>>> len(SAFE_ASSUMPTIONS) > 10 and all(a.endswith(".") for a in SAFE_ASSUMPTIONS)
+True
+"""
+
+from __future__ import annotations
+
+__all__ = ["SAFE_ASSUMPTIONS"]
+
+#: One sentence per assumption, in the order of specs/contract.md.
+SAFE_ASSUMPTIONS: tuple[str, ...] = (
+    "The machine is its machine file: axes, rapid rates and rapid mode, zones, work offsets, tool lengths "
+    "and diameters, the start and reference positions, as written, or anywhere in the --param ranges "
+    "(independent intervals; every combination of values is covered).",
+    "Homing puts the machine coordinates where the machine file says (or within the home.* ranges).",
+    "The program runs from its first line (no run-from-line, no restart in the middle) with the machine "
+    "file's modal state, no G92 offset and no tool length active, the tool table of the machine file, and "
+    "numbered parameters #1-#5000 at 0 (a freshly started controller); state parameters (#5221 work "
+    "offsets, #5161 G28 position, ...) read what the machine file and the program set.",
+    "The G-code means what LinuxCNC's interpreter makes of it (specs/gcode-support.md; expressions in "
+    "its doubles); a code nczones cannot model makes the verdict unknown, never safe.",
+    "The machine moves exactly along the programmed path: straight lines, exact circles (spirals for "
+    "arcs whose end is off the circle within the tolerance), exact NURBS, rapids straight or dogleg as "
+    "the machine file says; no corner blending (G64), following error or overshoot.",
+    "Block delete: both positions of the switch are verified unless the machine file (block_delete) or "
+    "--block-delete fixes one, which the report then says; an optional stop (M1) does not move the "
+    "machine in either position.",
+    "The operator does not move the machine during the program: no jogging or handwheel moves during a "
+    "stop (M0, M1, M60) or feed hold, no manual data input, no mirror-image, axis-lock or Z-neglect "
+    "switches; feed and rapid overrides change speed only (a dogleg rapid keeps its shape).",
+    "Zones are exact: touching a forbid zone's boundary is allowed, a forbid zone without interior "
+    "(min = max on an axis) forbids nothing, tool-tip zones see machine Z minus the active tool length.",
+    "A margin d is clearance on every axis: the box of half-width d around every path point fits the "
+    "allowed set.",
+    "Cutter radius compensation is modelled only with cutter_compensation = \"linuxcnc\" (otherwise "
+    "unknown); tool-break recovery only with --recovery, at the nominal parameter values.",
+    "Loops run at most --max-iterations times per entry (more is unknown); probing, M66 inputs and reads "
+    "of spindle, coolant, override or HAL state are unknown.",
+    "Numbers are exact: decimals as written, no float enters a proof; irrational quantities are enclosed "
+    "and a witness is re-checked exactly before it is reported.",
+)
