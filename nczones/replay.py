@@ -428,9 +428,9 @@ def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: 
 
 def _skips_deleted_blocks(v: Mapping[str, Any], settings: Mapping[str, Any]) -> bool:
     """Whether the violation's path skips the lines starting with / (the block-delete switch on)."""
-    switches = v.get("switches") if isinstance(v.get("switches"), Mapping) else {}
-    if "block_delete" in switches:
-        return switches["block_delete"] == "on"
+    switches = v.get("switches")
+    if isinstance(switches, Mapping) and "block_delete" in switches:
+        return bool(switches["block_delete"] == "on")
     mode = settings.get("block_delete")
     return mode is True or mode == "on"
 

@@ -90,7 +90,7 @@ class StateValue:
     """
 
     value: Fraction
-    deps: Mapping[str, int] = field(default_factory=dict)
+    deps: Mapping[str, int | Fraction] = field(default_factory=dict)
 
 
 Reading = Union[StateValue, Fraction, int, None]
@@ -124,7 +124,7 @@ def _program_len(it: Interpreter, sv: StateValue | None, rotary: bool) -> StateV
 
 
 def _axis_reader(letter: str, what: Callable[[Interpreter, int], StateValue | None], *, program_units: bool,
-                 absent=_ZERO):
+                 absent: Fraction = _ZERO) -> Callable[[Interpreter], Reading]:
     rotary = letter in "ABC"
 
     def read(it: Interpreter) -> Reading:
@@ -139,11 +139,11 @@ def _axis_reader(letter: str, what: Callable[[Interpreter, int], StateValue | No
     return read
 
 
-def _offset_reader(name: str, letter: str):
+def _offset_reader(name: str, letter: str) -> Callable[[Interpreter], Reading]:
     return _axis_reader(letter, lambda it, i: it.state_work_offset(name, i), program_units=False)
 
 
-def _constant(value) -> Callable[[Interpreter], Reading]:
+def _constant(value: int) -> Callable[[Interpreter], Reading]:
     return lambda it: value
 
 
@@ -151,7 +151,7 @@ def _unknown(it: Interpreter) -> Reading:
     return None
 
 
-def _tool_axis_only(what: Callable[[Interpreter], StateValue | None], letter: str):
+def _tool_axis_only(what: Callable[[Interpreter], StateValue | None], letter: str) -> Callable[[Interpreter], Reading]:
     def read(it: Interpreter) -> Reading:
         i = it.index.get(letter)
         if i is None or i != it.tool_axis:

@@ -20,8 +20,9 @@ from dataclasses import replace
 from fractions import Fraction
 from types import MappingProxyType
 
+from ..errors import SourceSpan
 from ..machine import Machine
-from .result import ParamRange, Reason, Result, Verdict
+from .result import ParamRange, Reason, Result, Verdict, Violation
 
 __all__ = ["centred", "split_box", "merge", "MAX_CASES"]
 
@@ -91,7 +92,7 @@ def split_box(ranges: tuple[ParamRange, ...], name: str, at: Fraction) -> list[t
     """
     out = []
     for side in ("below", "at", "above"):
-        case = []
+        case: list[ParamRange] | None = []
         for r in ranges:
             base = replace(r, lo=r.lo + r.centre, hi=r.hi + r.centre, centre=F0)
             if r.name == name:
@@ -105,6 +106,7 @@ def split_box(ranges: tuple[ParamRange, ...], name: str, at: Fraction) -> list[t
                         or (side == "at" and not _contains(replace(r, lo=r.lo + r.centre, hi=r.hi + r.centre), at)):
                     case = None
                     break
+            assert case is not None
             case.append(base)
         if case is not None:
             out.append(tuple(case))
@@ -120,8 +122,11 @@ def merge(results: list[Result], *, max_violations: int, params: tuple[ParamRang
     """
     if len(results) == 1:
         return replace(results[0], params=params)
-    violations, seen, seen_lines = [], set(), set()
-    reasons, seen_r = [], set()
+    violations: list[Violation] = []
+    seen: set[tuple] = set()
+    seen_lines: set[tuple] = set()
+    reasons: list[Reason] = []
+    seen_r: set[tuple] = set()
     notes: list[str] = []
     stats: dict[str, int] = {}
     timings: dict[str, float] = {}
@@ -136,17 +141,17 @@ def merge(results: list[Result], *, max_violations: int, params: tuple[ParamRang
             seen_lines.add(line_key)
             violations.append(v)
         for r in res.reasons:
-            key = (r.message, r.code, None if r.span is None else r.span.line)
-            if key not in seen_r:
-                seen_r.add(key)
+            rkey = (r.message, r.code, None if r.span is None else r.span.line)
+            if rkey not in seen_r:
+                seen_r.add(rkey)
                 reasons.append(r)
-        for n in res.notes:
-            if n not in notes:
-                notes.append(n)
-        for k, v in res.stats:
-            stats[k] = stats.get(k, 0) + v
-        for k, v in res.timings:
-            timings[k] = timings.get(k, 0.0) + v
+        for note in res.notes:
+            if note not in notes:
+                notes.append(note)
+        for k, n in res.stats:
+            stats[k] = stats.get(k, 0) + n
+        for k, t in res.timings:
+            timings[k] = timings.get(k, 0.0) + t
         for b, e in res.engines:
             engines.setdefault(b, e)
     violations.sort(key=lambda v: (v.switches, v.block, v.kind != "motion"))
@@ -159,6 +164,7 @@ def merge(results: list[Result], *, max_violations: int, params: tuple[ParamRang
                    truncated=truncated, params=params)
 
 
-def budget_reason(span) -> Reason:
+def budget_reason(span: SourceSpan | None) -> Reason:
+    """Why a verification whose path branched too often inside the ranges is unknown."""
     return Reason(f"the path branches inside a parameter range more often than {MAX_CASES} cases allow; "
                   "verify narrower ranges", span, None, "VF201")

@@ -32,7 +32,6 @@ from fractions import Fraction
 
 from hypothesis import assume, currently_in_test_context, event
 from hypothesis import strategies as st
-from oracles.concrete import machine_at, shift_zones
 
 from nczones.errors import InputError
 from nczones.exact import format_decimal
@@ -41,6 +40,7 @@ from nczones.machine import Machine, parse_machine
 from nczones.prover import parse_param, verify_text
 
 from .contract import STATS
+from oracles.concrete import machine_at, shift_zones
 
 F = Fraction
 F0 = Fraction(0)
