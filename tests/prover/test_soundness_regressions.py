@@ -13,6 +13,7 @@ import pytest
 
 from nczones.gcode import interpret_text as interpret
 from nczones.machine import load_machine, parse_machine
+from nczones.prover import parse_param
 from nczones.prover import verify_text as verify
 from tests.oracles.concrete import machine_at
 
@@ -106,7 +107,7 @@ def test_a_tool_length_the_program_wrote_ignores_the_machine_files_range(param):
 
 # ----------------------------------------------------------------------------- 3. canned cycles branch on R
 
-CYCLE = parse_machine("""
+CYCLE_TEXT = """
 [machine]
 axes = ["X", "Y", "Z"]
 [machine.rapid]
@@ -133,7 +134,8 @@ forbid = true
 point = "tip"
 min = { X = "40", Y = "-10", Z = "183" }
 max = { X = "60", Y = "10", Z = "190" }
-""", "cycle.toml")
+"""
+CYCLE = parse_machine(CYCLE_TEXT, "cycle.toml")
 # R (machine) = 81 + 100 + H1: above the initial level 300 for H1 > 119 (the cycle climbs to R and moves over
 # the clamp at tip level 181), below it for H1 < 119 (it moves at the initial level: tip 300 - H1, in the
 # clamp for 110 < H1 < 117)
@@ -277,3 +279,15 @@ def test_a_spiral_that_grazes_a_face_is_decided_without_an_internal_error():
     assert v.line == 2 and 0 < v.depth < F(1, 10**7) and dict(v.point)["X"] > F("10.001")
     wider = machine("10.0015")
     assert verify(program, wider).verdict.label == "safe"
+
+
+def test_a_fanuc_cycle_returns_to_the_initial_level_with_its_own_dependencies():
+    """The same class in the Fanuc dialect: G98's return to the initial level (here a G53 machine Z) got
+    the dependencies of the offsets and tool length, as if it moved with them."""
+    machine = parse_machine(CYCLE_TEXT.replace('axes = ["X", "Y", "Z"]', 'axes = ["X", "Y", "Z"]\ndialect = "fanuc"'))
+    program = "G21 G90 G54 G17\nG43 H1\nG53 G0 Z300\nG98 G81 X100 Y0 Z-10 R81 F100\nG80\nM30\n"
+    run = interpret(program, machine, param_ranges=[parse_param("H1=100..150", machine)])
+    legs = {s.derived: s for s in run.segments() if s.derived.startswith("G81")}
+    assert legs["G81 retract"].end[2] == 300 and legs["G81 retract"].deps_end[2] == ()
+    assert "H1" in legs["G81 to R"].deps_end[2]
+    assert not run.unsupported

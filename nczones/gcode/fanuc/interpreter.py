@@ -190,6 +190,7 @@ class FanucInterpreter(Interpreter):
         self.cycle: int | None = None  # group 09 (None: G80)
         self.cycle_data: dict = {}  # R, Z (program values), Q, P of the active cycle
         self.initial_level: Fraction | None = None
+        self.initial_level_deps: dict = {}
         self.retract_r = False  # G98 at power-on
         self.tlo_register: int | None = None
         self.tlo_sign = 1
@@ -1039,6 +1040,7 @@ class FanucInterpreter(Interpreter):
             return
         if self.initial_level is None:
             self.initial_level = self.pos[iz]
+            self.initial_level_deps = dict(self.dep_pos[iz]) if self.track else {}
         initial = self.initial_level
         offz = self.off[iz]
         if self.absolute:
@@ -1069,6 +1071,7 @@ class FanucInterpreter(Interpreter):
                 return
         dwell = _seconds(data["P"]) if "P" in data and k in (760, 820, 840, 890, 740, 842, 843) else None
         top = initial if not self.retract_r else r
+        top_deps = self.initial_level_deps if not self.retract_r and self.track else None
         transformed = self.prog is not None
         if transformed:
             if (self.scaling is not None and self.scaling.factors[iz] != 1) or (
@@ -1103,7 +1106,7 @@ class FanucInterpreter(Interpreter):
                     target[iy] = _qadd(target[iy], self._mm(wd["Y"].value, iy))
             a, b = target[ix], target[iy]
 
-            def go(kind, z, derived, x=None, y=None, a=a, b=b):
+            def go(kind, z, derived, x=None, y=None, a=a, b=b, z_deps=None):
                 end = list(self.pos)
                 end[ix] = a if x is None else x
                 end[iy] = b if y is None else y
@@ -1115,14 +1118,15 @@ class FanucInterpreter(Interpreter):
                         for i, letter in ((ix, "X"), (iy, "Y")):
                             if letter in wd:
                                 deps[i] = dict(self.dep_off[i])
-                        if z == r or z == bottom:
-                            deps[iz] = dict(self.dep_off[iz])
+                        # R, the bottom and the pecks move with the offsets; the initial level is where
+                        # the tool stood (a machine position with its own dependencies)
+                        deps[iz] = dict(self.dep_off[iz] if z_deps is None else z_deps)
                     else:
                         self._unknown(name, "parameter ranges with incremental canned cycles are not modelled")
                 self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
 
-            go(SegmentKind.RAPID, self.pos[iz], f"{name} position")
-            if self.pos[iz] != r:
+            go(SegmentKind.RAPID, self.pos[iz], f"{name} position", z_deps=self.dep_pos[iz] if self.track else None)
+            if self.pos[iz] != r or self.track:  # with ranges the levels differ for other values
                 go(SegmentKind.RAPID, r, f"{name} to R")
             if k in (730, 830):
                 depth = r
@@ -1138,14 +1142,14 @@ class FanucInterpreter(Interpreter):
             if k == 760:
                 sa, sb = self._boring_shift(data["Q"])
                 go(SegmentKind.RAPID, bottom, f"{name} shift", x=a + sa, y=b + sb)
-                go(SegmentKind.RAPID, top, f"{name} retract", x=a + sa, y=b + sb)
-                go(SegmentKind.RAPID, top, f"{name} shift back")
+                go(SegmentKind.RAPID, top, f"{name} retract", x=a + sa, y=b + sb, z_deps=top_deps)
+                go(SegmentKind.RAPID, top, f"{name} shift back", z_deps=top_deps)
             elif k in (740, 840, 842, 843, 850, 890):
                 go(SegmentKind.LINE, r, f"{name} retract")
-                if top != r:
-                    go(SegmentKind.RAPID, top, f"{name} return")
+                if top != r or (self.track and top_deps is not None):
+                    go(SegmentKind.RAPID, top, f"{name} return", z_deps=top_deps)
             else:
-                go(SegmentKind.RAPID, top, f"{name} retract")
+                go(SegmentKind.RAPID, top, f"{name} retract", z_deps=top_deps)
         if transformed:
             self._program()[iz] = self.pos[iz] - self.off[iz]
 
