@@ -1660,18 +1660,21 @@ class Interpreter:
         if lt((r, r_d), (cc, cc_d), ic, "the retract plane R is below the bottom"):
             raise self._error("GC306", f"canned cycle retract plane R ({_fmt(r)} mm machine) is below the bottom {c_name} ({_fmt(cc)} mm machine)", rw or cw_)
 
-        def go(kind, a, b, c, derived, dwell_s=None):
+        def go(kind, a, b, c, derived, here=False):
+            """A move to (a, b) in the plane — the hole, or where the tool stands (``here``) — and level c."""
             end = list(self.pos)
             end[ia], end[ib], end[ic] = a, b, c[0]
             deps = None
             if track:
                 deps = [dict(d) for d in self.dep_pos]
-                deps[ia], deps[ib], deps[ic] = dict(a_d), dict(b_d), dict(c[1])
+                if not here:
+                    deps[ia], deps[ib] = dict(a_d), dict(b_d)
+                deps[ic] = dict(c[1])
             self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
 
         name = _gname(motion)
         if lt((old_cc, old_d), (r, r_d), ic, "the initial level is below R"):
-            go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], (r, r_d), f"{name} up to R")
+            go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], (r, r_d), f"{name} up to R", here=True)
             old_cc, old_d = r, r_d
             current_cc, current_d = r, r_d
         clear = (r, r_d) if self.retract_r else (old_cc, old_d)

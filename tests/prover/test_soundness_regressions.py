@@ -291,3 +291,14 @@ def test_a_fanuc_cycle_returns_to_the_initial_level_with_its_own_dependencies():
     assert legs["G81 retract"].end[2] == 300 and legs["G81 retract"].deps_end[2] == ()
     assert "H1" in legs["G81 to R"].deps_end[2]
     assert not run.unsupported
+
+
+def test_a_cycle_climbs_to_r_where_the_tool_stands():
+    """Found by the metamorphic suite: the climb to R (initial level below R) moves Z only, but its end
+    got the hole's X/Y dependencies (G54), so a range of G54.Y moved a point the machine never leaves:
+    an `unsafe` whose witness did not replay."""
+    program = "G21 G90 G54 G17\nG53 G0 X41 Y0 Z60\nG99 G81 X-9.5 Y1 Z-27 R5.5 F100\nG80\nM30\n"
+    run = interpret(program, CYCLE, param_ranges=[parse_param("G54.Y=0.01..0.03", CYCLE)])
+    (climb,) = [s for s in run.segments() if s.derived == "G81 up to R"]
+    assert climb.start[:2] == climb.end[:2] and climb.deps_end[:2] == climb.deps_start[:2] == ((), ())
+    assert climb.deps_end[2] == ("G54",)
