@@ -258,7 +258,7 @@ def line_violation(
     raise TypeError(f"line_violation cannot decide a {zone.kind} zone")
 
 
-def _flat(limits) -> bool:
+def _flat(limits: tuple[tuple[str, Fraction | None, Fraction | None], ...]) -> bool:
     """Does some axis range have no interior (``min == max``)?  Then a forbid zone forbids nothing."""
     return any(lo is not None and hi is not None and not lo < hi for _, lo, hi in limits)
 

@@ -228,7 +228,8 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
 SCAN_DIRECTIONS = 64
 
 
-def _scan_piece(prover, seg: Segment, g: ArcGeom, da, db, params):
+def _scan_piece(prover: Any, seg: Segment, g: ArcGeom, da: tuple[Fraction, Fraction],
+                db: tuple[Fraction, Fraction], params: Any) -> Any:
     """A certified violation at one of :data:`SCAN_DIRECTIONS` rational directions spread over the
     sector from ``da`` to ``db`` (tangent half-angle steps), or None.
 
@@ -239,9 +240,9 @@ def _scan_piece(prover, seg: Segment, g: ArcGeom, da, db, params):
     from .core import _half_tan
 
     m_end = _half_tan(da, db, g.ccw)
-    if m_end is None or m_end <= 0:
-        return None
     c = g.centre
+    if m_end is None or m_end <= 0 or c is None:
+        return None
     for i in range(1, SCAN_DIRECTIONS):
         d = _rot(da, round_down(m_end * i / SCAN_DIRECTIONS), g.ccw)
         v = prover._arc_witness_enclosed(seg, g, {"x": c[0] + d[0], "y": c[1] + d[1]}, params, retry=False)
