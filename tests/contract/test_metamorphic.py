@@ -6,6 +6,8 @@ The properties are plain functions so that test_metamorphic_teeth.py runs exactl
 against a broken interpreter.
 """
 
+import os
+
 from hypothesis import given, settings
 
 from .metamorphic import (
@@ -22,7 +24,16 @@ CI_EXAMPLES = {"ranges": 30, "margins": 12, "reads": 12}
 LONG_EXAMPLES = {"ranges": 10_000, "margins": 5_000, "reads": 5_000}
 
 
+def _chunk() -> dict[str, int]:
+    """``NCZONES_METAMORPHIC_EXAMPLES="ranges=1000,margins=500"``: a long run in seeded chunks."""
+    text = os.environ.get("NCZONES_METAMORPHIC_EXAMPLES", "")
+    return {k.strip(): int(v) for k, v in (item.split("=") for item in text.split(",") if item.strip())}
+
+
 def examples(name: str) -> int:
+    chunk = _chunk()
+    if name in chunk:
+        return chunk[name]
     return LONG_EXAMPLES[name] if settings.default.max_examples > 100 else CI_EXAMPLES[name]
 
 
