@@ -24,7 +24,12 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "numbered parameters #1-#5000 at 0 (a freshly started controller); state parameters (#5221 work "
     "offsets, #5161 G28 position, ...) read what the machine file and the program set.",
     "The G-code means what LinuxCNC's interpreter makes of it (specs/gcode-support.md; expressions in "
-    "its doubles); a code nczones cannot model makes the verdict unknown, never safe.",
+    "its doubles), or with dialect = \"fanuc\" what specs/fanuc.md says a Fanuc control makes of it; a "
+    "code nczones cannot model makes the verdict unknown, never safe.",
+    "Fanuc dialect: macro values are IEEE doubles, as the manuals state, and a position computed from "
+    "them, and a point moved by rotation (G68), scaling (G51) or polar input (G16), is rounded to the "
+    "least input increment, halves away from zero; a control that rounds otherwise can stand one "
+    "increment away from the proved path.",
     "The machine moves exactly along the programmed path: straight lines, exact circles (spirals for "
     "arcs whose end is off the circle within the tolerance), exact NURBS, rapids straight or dogleg as "
     "the machine file says; no corner blending (G64), following error or overshoot.",
