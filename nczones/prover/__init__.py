@@ -49,6 +49,7 @@ from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
 from ..machine import Machine
 from .core import Prover, verify_segments
+from .limits import DEFAULT_BUDGET_S, RunLimits
 from .result import ParamRange, Reason, Result, Verdict, Violation
 
 F0 = Fraction(0)
@@ -66,6 +67,8 @@ __all__ = [
     "ParamRange",
     "Prover",
     "source_lines",
+    "RunLimits",
+    "DEFAULT_BUDGET_S",
 ]
 
 _PARAM = re.compile(r"^\s*(?P<name>[A-Za-z0-9_.]+)\s*=\s*(?P<lo>[^.]*(?:\.\d+)?)\s*\.\.\s*(?P<hi>.+?)\s*$")
@@ -137,6 +140,8 @@ def verify(
     dialect: str | None = None,
     library: str | os.PathLike | None = None,
     block_delete: str | None = None,
+    budget_s: float | None = DEFAULT_BUDGET_S,
+    limits: RunLimits | None = None,
 ) -> Result:
     """Verify the G-code program *file* ``program`` on a machine (DESIGN §5).
 
@@ -175,6 +180,11 @@ def verify(
     or ``"fanuc"``, ``specs/fanuc.md``); ``library`` is a folder of Fanuc
     subprogram files that ``M98``/``G65`` calls search.
 
+    ``budget_s`` (seconds, None for none) bounds the solver work and
+    refinement of the whole run (:mod:`nczones.prover.limits`): what it
+    leaves undecided is ``unknown`` ("budget spent").  Ctrl-C during the run
+    returns the partial result with :attr:`Result.interrupted` set.
+
     The result names what was verified (:attr:`Result.program_sha256`, the
     machine file and its SHA-256) and every setting that changes the verdict
     (:attr:`Result.settings`), so ``nczones replay`` can re-check it.
@@ -191,7 +201,8 @@ def verify(
     source = as_source(program, file=file, text_function="verify_text").require_code()
     return _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
                    arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
-                   max_iterations=max_iterations, dialect=dialect, library=library, block_delete=block_delete)
+                   max_iterations=max_iterations, dialect=dialect, library=library, block_delete=block_delete,
+                   budget_s=budget_s, limits=limits)
 
 
 #: :func:`verify` under the name that says what it takes.
@@ -221,6 +232,8 @@ def _verify(
     dialect: str | None = None,
     library: str | os.PathLike | None = None,
     block_delete: str | None = None,
+    budget_s: float | None = DEFAULT_BUDGET_S,
+    limits: RunLimits | None = None,
 ) -> Result:
     from ..exact import exact, format_exact
     from ..gcode import DEFAULT_ARC_TOLERANCE, interpret
@@ -255,25 +268,42 @@ def _verify(
         "max_violations": max_violations,
         "block_delete": mode,
         "dialect": machine.dialect if dialect is None else dialect,
+        "budget_s": budget_s if limits is None else limits.budget_s,
     }
     if library is not None:
         settings["library"] = str(library)
-    opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress)
+    if limits is None:
+        limits = RunLimits(budget_s)
+    # one budget for the whole program: every case and switch position draws on it
+    opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress, limits=limits)
     deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)]
     positions = ((False, True) if mode == "both" else (mode == "on",)) if deleted else (False,)
-    per_position = [_verify_cases(source, machine, ranges, skip, extra, opts) for skip in positions]
+    per_position = []
+    for skip in positions:
+        per_position.append(_verify_cases(source, machine, ranges, skip, extra, opts))
+        if per_position[-1][0].interrupted:  # Ctrl-C: the other position is not verified
+            break
     result, first_run = per_position[0]
     if len(per_position) == 2:
         result = _both_switch_positions(result, per_position[1][0], max_violations)
+    interrupted = any(r.interrupted for r, _ in per_position)
     violations, reasons, notes = list(result.violations), list(result.reasons), result.notes
     notes += _switch_notes(source.text, deleted, mode, first_run.interpreter.stops)
-    if recovery is not None:
+    if recovery is not None and not interrupted:
         from .recovery import verify_recovery
 
         found: list[Violation] = []
         for skip in positions:
             rerun = interpret(source, machine, block_delete=skip, **extra)
-            rec = verify_recovery(rerun, machine, variant=recovery, margin=margin, max_violations=max_violations)
+            try:
+                with limits.watch():
+                    rec = verify_recovery(rerun, machine, variant=recovery, margin=margin,
+                                          max_violations=max_violations, limits=limits)
+            except KeyboardInterrupt:
+                interrupted = True
+                reasons.append(Reason(f"interrupted (Ctrl-C) after {limits.elapsed():.1f} s while the tool-break "
+                                      "recovery was proved: it was not checked completely", None, None, "VF204"))
+                break
             source_text = source_lines(source.text, [v.span.line for v in rec.violations]
                                        + [r.span.line for r in rec.reasons if r.span is not None])
             switch = (("block_delete", "on" if skip else "off"),) if len(positions) == 2 else ()
@@ -292,12 +322,14 @@ def _verify(
             reasons.append(Reason(
                 f"RC204: the tool-break recovery was proved only at the nominal values of {names}; "
                 "recovery under parameter ranges is not modelled", None, None, "RC204"))
-        notes += (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
-                  f"{dict(rec.stats)['recovery_motions']} cutting motions",)
-        result = replace(result, stats=result.stats + rec.stats)
+        if not interrupted:
+            notes += (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
+                      f"{dict(rec.stats)['recovery_motions']} cutting motions",)
+            result = replace(result, stats=result.stats + rec.stats)
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
     timings = (("total_s", time.perf_counter() - t0),) + result.timings
     return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
+                   interrupted=interrupted, budget_s=limits.budget_s,
                    timings=timings, extra={"counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=tuple(settings.items()))
@@ -392,6 +424,8 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, e
             result = replace(result, reasons=result.reasons + (budget_reason(None),))
         first_run = first_run or run
         results.append(result)
+        if result.interrupted:  # Ctrl-C: the remaining cases are not verified
+            break
     result = merge(results, max_violations=opts["max_violations"], params=ranges)
     if splits:
         where = ", ".join(f"{n} = {format_decimal(v)}" for n, v in splits)
@@ -402,7 +436,8 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, e
     return result, first_run
 
 
-def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations, progress) -> Result:
+def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations, progress,
+                limits: RunLimits) -> Result:
     """Prove one interpretation (one case): its result with source text, unknown codes and notes filled in."""
     from ..motion import MotionChunk
 
@@ -420,7 +455,7 @@ def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations
                         progress(s.span.line, total)
 
     result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
-                             max_violations=max_violations, file=run.file)
+                             max_violations=max_violations, file=run.file, limits=limits)
     # fill the source text of violations and reasons (column chunks carry only line numbers)
     wanted = [x.span.line for x in (*result.violations, *result.reasons, *run.unsupported)
               if x.span is not None and not x.span.text and x.span.line >= 1]

@@ -161,7 +161,7 @@ def merge(results: list[Result], *, max_violations: int, params: tuple[ParamRang
     first = results[0]
     return replace(first, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=tuple(notes),
                    stats=tuple(stats.items()), timings=tuple(timings.items()), engines=tuple(sorted(engines.items())),
-                   truncated=truncated, params=params)
+                   truncated=truncated, params=params, interrupted=any(r.interrupted for r in results))
 
 
 def budget_reason(span: SourceSpan | None) -> Reason:

@@ -1,4 +1,4 @@
-"""``nczones verify`` (DESIGN §8): exit 0 safe, 1 unsafe, 2 bad input, 3 unknown.
+"""``nczones verify`` (DESIGN §8): exit 0 safe, 1 unsafe, 2 bad input, 3 unknown, 130 interrupted.
 
 ``nczones verify PROGRAM... --machine M.toml`` verifies each program (a
 path; ``-`` reads standard input) and writes one report per program; the
@@ -6,6 +6,9 @@ exit status is the worst outcome: 1 if any program is unsafe, else 2 if any
 could not be read or parsed, else 3 if any is unknown, else 0.  With
 ``--format json`` several programs give a JSON list (one program: the
 report object); with ``--format sarif`` one SARIF log with one run.
+Ctrl-C stops the run: the reports of the programs verified so far (the
+current one partial, marked interrupted) are written and the exit status is
+130.
 
 The parts are one function each so that later options slot in: the options
 are read by :func:`verify_options`, one program is verified by
@@ -24,8 +27,13 @@ from typing import Any
 from .. import cli
 from ..errors import Diagnostic, InputError
 from ..exact import parse_decimal
+from .limits import DEFAULT_BUDGET_S
 
-__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "program_source"]
+__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "program_source",
+           "EXIT_INTERRUPTED"]
+
+#: Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it).
+EXIT_INTERRUPTED = 130
 
 #: Exit statuses from worst to best: several programs exit with the first one that occurs.
 EXIT_ORDER = (cli.EXIT_FAIL, cli.EXIT_INPUT, cli.EXIT_UNKNOWN, cli.EXIT_OK)
@@ -72,6 +80,7 @@ def verify_options(args: argparse.Namespace, machine) -> dict[str, Any]:
         "max_iterations": args.max_iterations,
         "library": cli.library_folder(args.library),
         "block_delete": args.block_delete,
+        "budget_s": _budget(args.budget),
     }
 
 
@@ -184,8 +193,12 @@ def _run(args: argparse.Namespace) -> int:
             continue
         results.append((k, source, result))
         codes.append(result.verdict.exit_code)
+        if result.interrupted:  # Ctrl-C: report what was done, verify no further program
+            break
     if results or args.format in ("json", "sarif"):
         write_output(args.output, render_many(results, errors, args, machine, len(programs) > 1))
+    if results and results[-1][2].interrupted:
+        return EXIT_INTERRUPTED
     return worst_exit(codes)
 
 
@@ -202,7 +215,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "verify", help="prove that programs stay inside the allowed set (or show where not)",
         description="Prove that every motion of each PROGRAM stays inside the machine's allowed set, or report "
                     "exact counterexamples. Exit status: 0 safe, 1 unsafe, 2 bad input, 3 unknown; with several "
-                    "programs the worst (1 before 2 before 3 before 0).")
+                    "programs the worst (1 before 2 before 3 before 0); 130 when Ctrl-C stopped the run.")
     p.add_argument("programs", nargs="+", metavar="PROGRAM",
                    help="G-code program file(s); '-' reads standard input; several files (e.g. a shell glob) "
                         "give one report each")
@@ -232,6 +245,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--max-violations", type=int, default=20, metavar="N",
                    help="stop after N violating blocks per program (default 20); the report says when the "
                         "list was cut")
+    p.add_argument("--budget", default=None, metavar="SECONDS",
+                   help=f"time per program for solver work and refinement (default {DEFAULT_BUDGET_S:g}; 'none' "
+                        "for no limit); motions still undecided then are unknown ('budget spent'), the exact "
+                        "tiers check the rest")
     p.add_argument("--format", choices=("text", "json", "html", "sarif"), default="text",
                    help="text (compiler-style), json (specs/report.schema.json; a list for several programs), "
                         "html (one self-contained file with plots; one program), sarif (SARIF 2.1.0 for code "
@@ -244,6 +261,22 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 cli.REGISTRARS.append(register)
+
+
+def _budget(text: str | None) -> float | None:
+    """``--budget``: positive seconds, or "none" (``VF109``)."""
+    if text is None:
+        return DEFAULT_BUDGET_S
+    if text.strip().lower() == "none":
+        return None
+    try:
+        value: float | None = float(parse_decimal(text))
+    except ValueError:  # InvalidArgument is a ValueError
+        value = None
+    if value is None or not value > 0:
+        raise _command_line_error("VF109", f"--budget {text!r}: expected a positive number of seconds (e.g. 60) "
+                                           "or 'none'")
+    return value
 
 
 def _arc_tolerance(text: str) -> Fraction | str:

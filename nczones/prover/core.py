@@ -68,7 +68,7 @@ class Prover:
     """Decides segments one by one for a machine, margin and parameter ranges."""
 
     def __init__(self, machine: Machine, *, margin: Fraction = F0, params: tuple[ParamRange, ...] = (),
-                 engine: str = "auto", rlimit: int = 5_000_000):
+                 engine: str = "auto", rlimit: int | None = None, limits=None):
         if engine not in ("auto", "z3"):
             raise InvalidArgument(f"engine must be 'auto' or 'z3', not {engine!r}")
         if margin < 0:
@@ -81,7 +81,8 @@ class Prover:
         self.margin = Fraction(margin)
         self.params = tuple(params)
         self.engine = engine
-        self.solver = Solver(rlimit)
+        self.limits = limits
+        self.solver = Solver(rlimit, limits=limits)
         self.stats = {"segments": 0, "pieces": 0, "screened": 0, "exact_decided": 0, "z3_segments": 0}
         self.pvars = {p.name: f"p{i}" for i, p in enumerate(self.params)}
         self.prange = {p.name: p for p in self.params}
@@ -326,7 +327,26 @@ class Prover:
 
     # ------------------------------------------------------------------ deciding
 
+    def _unknown(self, seg: Segment, ans, what: str = "") -> _Outcome:
+        """The outcome of a solver ``unknown`` (its reason says which limit stopped it)."""
+        return _Outcome(reason=Reason(ans.reason(what), seg.span, seg.block, ans.code),
+                        engine="budget" if ans.stopped == "budget" else "unknown")
+
     def check(self, seg: Segment) -> _Outcome:
+        """Decide one segment: a violation, a reason for ``unknown``, or neither (proved).
+
+        When the run's budget is spent (:mod:`nczones.prover.limits`) before
+        the segment is decided, the outcome's engine is ``"budget"``.
+        """
+        from .limits import BudgetSpent
+
+        try:
+            return self._check(seg)
+        except BudgetSpent:
+            return _Outcome(reason=Reason("budget spent before this motion was decided", seg.span, seg.block,
+                                          "VF203"), engine="budget")
+
+    def _check(self, seg: Segment) -> _Outcome:
         self.stats["segments"] += 1
         if seg.kind is SegmentKind.DEVELOPED_ARC or (seg.extra and "cylinder_radius" in dict(seg.extra)):
             from .cylindrical import (
@@ -355,22 +375,24 @@ class Prover:
                 return _Outcome(reason=Reason("an arc whose start and end depend on different parameters "
                                               "is not supported with parameter ranges", seg.span, seg.block),
                                 engine="unknown")
-            queries.append(self._arc_query(seg, arc_geom(seg), True))
+            queries.append(self._arc_query(seg, arc_geom(seg), True) + (True,))
         else:
             dogleg_varies = (seg.kind is SegmentKind.RAPID and self.machine.rapid_mode is RapidMode.DOGLEG
                              and tuple(self._devs(seg, k, "start") for k in range(len(self.axes)))
                              != tuple(self._devs(seg, k, "end") for k in range(len(self.axes))))
-            if dogleg_varies:  # the breakpoints move with the parameters
-                queries.append(self._dogleg_query(seg))
+            if dogleg_varies:  # the breakpoints move with the parameters (exact, linear)
+                queries.append(self._dogleg_query(seg) + (False,))
             else:
+                bilinear = any(self._devs(seg, k, "start") != self._devs(seg, k, "end")
+                               for k in range(len(self.axes)))
                 for piece in line_pieces(seg, self.machine):
-                    queries.append(self._line_query(seg, piece, True))
-        for body, names in queries:
-            ans = self.solver.check(body, names)
+                    queries.append(self._line_query(seg, piece, True) + (bilinear,))
+        for body, names, nonlinear in queries:
+            ans = self.solver.check(body, names, nonlinear=nonlinear)
             if ans.status == "unsat":
                 continue
             if ans.status == "unknown":
-                return _Outcome(reason=Reason("solver resource limit reached", seg.span, seg.block), engine="unknown")
+                return self._unknown(seg, ans)
             values = {p.name: _clamp(ans.values.get(self.pvars[p.name], F0), p.lo, p.hi) for p in self.params}
             concrete = self.instantiate(seg, values)
             out = self._check_concrete(concrete, tuple(values.items()))
@@ -419,7 +441,9 @@ class Prover:
             return self._check_arc(seg, params)
         pieces = line_pieces(seg, self.machine)
         self.stats["pieces"] += len(pieces)
-        use_z3 = self.engine == "z3" or not self.all_decidable
+        # once the budget is spent the exact tier decides what it can, even for engine="z3"
+        use_z3 = (self.engine == "z3" or not self.all_decidable) and not (
+            self.all_decidable and self.limits is not None and self.limits.budget_spent())
         if self.engine == "auto" and all(self._bbox_fits(p.p0, p.p1, seg.tool_length) for p in pieces):
             self.stats["screened"] += 1
             return _Outcome(engine="exact")
@@ -431,19 +455,23 @@ class Prover:
                 if found is None:
                     continue
                 self.stats["exact_decided"] += 1
-                # Z3 confirms and provides the witness parameter
-                body, names = self._line_query(seg, piece, False)
-                ans = self.solver.check(body, names)
-                if ans.status != "sat":
-                    raise InternalError(f"tier 1 and Z3 disagree on block {seg.block} ({ans.status})")
-                return _Outcome(self._line_violation(seg, piece, ans.values.get("t"), params, "exact"), engine="exact")
+                # Z3 confirms and provides the witness parameter (the exact tier's own parameter
+                # once the budget is spent or when a limit stops the solver)
+                t_model = None
+                if self.limits is None or not self.limits.budget_spent():
+                    body, names = self._line_query(seg, piece, False)
+                    ans = self.solver.check(body, names)
+                    if ans.status == "unsat":
+                        raise InternalError(f"tier 1 and Z3 disagree on block {seg.block} ({ans.status})")
+                    t_model = ans.values.get("t")
+                return _Outcome(self._line_violation(seg, piece, t_model, params, "exact"), engine="exact")
             self.stats["z3_segments"] += 1
             body, names = self._line_query(seg, piece, False)
             ans = self.solver.check(body, names)
             if ans.status == "unsat":
                 continue
             if ans.status == "unknown":
-                return _Outcome(reason=Reason("solver resource limit reached", seg.span, seg.block), engine="unknown")
+                return self._unknown(seg, ans)
             return _Outcome(self._line_violation(seg, piece, ans.values["t"], params, "z3"), engine="z3")
         return _Outcome(engine="z3" if use_z3 else "exact")
 
@@ -571,11 +599,11 @@ class Prover:
                 return _Outcome(engine="exact")
         self.stats["z3_segments"] += 1
         body, names = self._arc_query(seg, g, False)
-        ans = self.solver.check(body, names, precision=60)
+        ans = self.solver.check(body, names, precision=60, nonlinear=True)
         if ans.status == "unsat":
             return _Outcome(engine="z3")
         if ans.status == "unknown":
-            return _Outcome(reason=Reason("solver resource limit reached on an arc", seg.span, seg.block), engine="unknown")
+            return self._unknown(seg, ans, "an arc")
         v = self._arc_witness(seg, g, ans.values, params)
         if v is None and g.centre is not None and (g.helix or not g.exact):
             # split the sweep and prove the pieces (see prover/refine.py)
@@ -706,7 +734,12 @@ class Prover:
         param = self._arc_param(g, pmap)
         first_param, first_pt = param, pmap
         if g.exact:
-            fp = self._arc_first_exit(seg, g, pmap)
+            from .limits import BudgetSpent
+
+            try:
+                fp = self._arc_first_exit(seg, g, pmap)
+            except BudgetSpent:  # the witness stands; the first exit is then the witness itself
+                fp = None
             if fp is not None:
                 first_pt = fp
                 first_param = self._arc_param(g, fp)
@@ -776,7 +809,7 @@ class Prover:
                 coords = list(seg.start)
                 return bool(self.allowed.violated_zones(dict(zip(self.axes, coords)), seg.tool_length, self.margin))
             body, names = self._arc_query(seg, g, False, w_dir=dirv)
-            return self.solver.check(body, []).status == "sat"
+            return self.solver.check(body, [], nonlinear=True).status == "sat"
 
         # find the quarter containing the first violation
         for k in range(4):
@@ -929,6 +962,8 @@ def verify_segments(
     notes: tuple[str, ...] = (),
     unsupported: Iterable = (),
     file: str = "",
+    budget_s: float | None = None,
+    limits=None,
 ) -> Result:
     """Verify motion segments (no G-code text needed) against a machine's zones.
 
@@ -948,6 +983,17 @@ def verify_segments(
     max_violations : int
         Stop after this many violating blocks (the verdict is then already
         ``unsafe``; ``Result.truncated`` says so).
+    budget_s : float or None
+        Seconds for the run's solver work and refinement (default
+        :data:`~nczones.prover.limits.DEFAULT_BUDGET_S`; see
+        :mod:`nczones.prover.limits`); motions that would need more are
+        ``unknown`` ("budget spent"), the exact tiers still check the rest.
+    limits : RunLimits, optional
+        Use these limits (budget, time backstop, Ctrl-C) instead of new ones.
+
+    A ``KeyboardInterrupt`` (Ctrl-C) ends the run with a partial result:
+    ``Result.interrupted`` is True and the verdict is ``unsafe`` when a
+    violation was already found, otherwise ``unknown``.
 
     Returns
     -------
@@ -980,17 +1026,35 @@ def verify_segments(
     >>> r.verdict.label, r.violations[0].zone, str(r.violations[0].first_exit_parameter)
     ('unsafe', 'table', '3/4')
     """
+    from .limits import DEFAULT_BUDGET_S, RunLimits
+
     t0 = time.perf_counter()
-    prover = Prover(machine, margin=Fraction(margin), params=params, engine=engine)
+    if limits is None:
+        limits = RunLimits(DEFAULT_BUDGET_S if budget_s is None else budget_s)
+    prover = Prover(machine, margin=Fraction(margin), params=params, engine=engine, limits=limits)
     violations: list[Violation] = []
     reasons: list[Reason] = []
     engines: dict[int, str] = {}
     seen_blocks: set[int] = set()
     truncated = False
+    interrupted = False
+    undecided: list[Segment] = []  # motions the spent budget left undecided (first one kept)
+    n_undecided = 0
+    last_line: list[int | None] = [None]
     from .screen import screen_chunk
 
     def handle(seg: Segment) -> bool:
+        nonlocal n_undecided
+        if seg.span is not None:
+            last_line[0] = seg.span.line
         out = prover.check(seg)
+        if out.engine == "budget":
+            n_undecided += 1
+            if not undecided:
+                undecided.append(seg)
+                engines.setdefault(seg.block, "unknown")
+                reasons.append(out.reason)  # placeholder, replaced by the summary below
+            return True
         if out.violation is not None or out.reason is not None:
             engines.setdefault(seg.block, out.engine)
         if out.violation is not None:
@@ -1010,26 +1074,47 @@ def verify_segments(
             reasons.append(out.reason)
         return True
 
-    for item in segments:
-        if isinstance(item, MotionChunk):
-            if item.scale is not None and engine == "auto" and not prover.params:
-                n = len(item)
-                flagged = screen_chunk(item, prover)
-                prover.stats["segments"] += 0
-                prover.stats["screened"] += n - len(flagged)
-                prover.stats["segments"] += n - len(flagged)
-                it = (seg for seg in _chunk_rows(item, flagged))
-            else:
-                it = item.segments()
-            for seg in it:
-                if not handle(seg):
-                    truncated = True
+    try:
+        with limits.watch():
+            for item in segments:
+                if isinstance(item, MotionChunk):
+                    if len(item) and item.scale is not None:
+                        last_line[0] = int(item.line[0])
+                    if item.scale is not None and engine == "auto" and not prover.params:
+                        n = len(item)
+                        flagged = screen_chunk(item, prover)
+                        prover.stats["screened"] += n - len(flagged)
+                        prover.stats["segments"] += n - len(flagged)
+                        it = (seg for seg in _chunk_rows(item, flagged))
+                    else:
+                        it = item.segments()
+                    for seg in it:
+                        if not handle(seg):
+                            truncated = True
+                            break
+                    if not truncated and len(item) and item.scale is not None:
+                        last_line[0] = int(item.line[-1])
+                else:
+                    if not handle(item):
+                        truncated = True
+                if truncated:
                     break
-        else:
-            if not handle(item):
-                truncated = True
-        if truncated:
-            break
+    except KeyboardInterrupt:
+        interrupted = True
+    if undecided:
+        first = undecided[0]
+        where = reasons.index(next(r for r in reasons if r.code == "VF203" and r.block == first.block))
+        reasons[where] = Reason(
+            f"budget of {limits.budget_s:g} s spent after {limits.spent_at or limits.elapsed():.1f} s: "
+            f"{n_undecided} motion{'s' if n_undecided != 1 else ''} needing solver work or refinement "
+            f"{'were' if n_undecided != 1 else 'was'} not decided, the first here (the exact tiers checked the "
+            "rest; raise --budget to decide them)", first.span, first.block, "VF203")
+    if interrupted:
+        line = last_line[0]
+        reasons.append(Reason(
+            f"interrupted (Ctrl-C) after {limits.elapsed():.1f} s"
+            + (f" near line {line}" if line is not None else "")
+            + ": the rest of the program was not checked", None, None, "VF204"))
     for u in unsupported:
         reasons.append(Reason(getattr(u, "message", str(u)), getattr(u, "span", None), None, getattr(u, "code", "")))
     if violations:
@@ -1040,12 +1125,15 @@ def verify_segments(
         verdict = Verdict.SAFE
     stats = dict(prover.stats)
     stats["z3_queries"] = prover.solver.queries
+    stats.update({f"solver_stopped_{k}": v for k, v in sorted(prover.solver.stopped.items())})
+    if n_undecided:
+        stats["budget_undecided"] = n_undecided
     return Result(
         verdict=verdict, violations=tuple(violations), reasons=tuple(reasons),
         engines=tuple(sorted(engines.items())), solver="z3", solver_version=prover.solver.version,
         timings=(("prove_s", time.perf_counter() - t0),), notes=tuple(notes),
         stats=tuple(stats.items()), margin=Fraction(margin), params=tuple(params), engine=engine,
-        truncated=truncated, file=file,
+        truncated=truncated, file=file, interrupted=interrupted, budget_s=limits.budget_s,
     )
 
 

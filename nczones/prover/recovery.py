@@ -61,6 +61,7 @@ from ..motion import Segment, SegmentKind
 from ..zones import ZonePoint
 from .core import Prover
 from .geometry import arc_geom, rational_point_on_arc
+from .limits import BudgetSpent
 from .result import Reason, Violation
 from .smt import _or, add, mul, q, sub, zone_violation
 
@@ -209,7 +210,7 @@ class _Encoder:
 
 def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant | str | None = None,
                     margin: Fraction = F0, max_violations: int = 20, prover: Prover | None = None,
-                    rlimit: int = 20_000_000) -> RecoveryOutcome:
+                    rlimit: int = 20_000_000, limits=None) -> RecoveryOutcome:
     """Prove the recovery path from every break point of every cutting motion.
 
     ``segments`` is the program's motion (an interpretation or segments);
@@ -231,7 +232,7 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
     cfg = tool_change_config(machine, variant)
     segs = _segments(segments)
     enc = _Encoder(machine, cfg, Fraction(margin))
-    pr = prover or Prover(machine, margin=Fraction(margin), rlimit=rlimit)
+    pr = prover or Prover(machine, margin=Fraction(margin), rlimit=rlimit, limits=limits)
     solver = pr.solver
     violations: list[Violation] = []
     reasons: list[Reason] = []
@@ -240,7 +241,10 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
     for first, last in motion_sequences(segs):
         for i in range(first, last + 1):
             seq_of[i] = first
+    budget_spent = False
     for i, seg in enumerate(segs):
+        if budget_spent:
+            break
         if not is_cutting(seg) or len(violations) >= max_violations:
             continue
         stats["recovery_motions"] += 1
@@ -259,12 +263,18 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
             pt = enc.leg_points(kind, A, B, body)
             body.append(f"(assert {enc.outside(pt, Lleg, body)})")
             stats["recovery_queries"] += 1
-            ans = solver.check("".join(body), names)
+            try:
+                ans = solver.check("".join(body), names)
+            except BudgetSpent:
+                reasons.append(Reason("tool-break recovery: budget spent before the recovery from this motion "
+                                      "was proved", seg.span, seg.block, "VF203"))
+                budget_spent = True
+                break
             if ans.status == "unsat":
                 stats["recovery_proved_legs"] += 1
                 continue
             if ans.status == "unknown":
-                reasons.append(Reason(f"tool-break recovery, leg {name!r}: the solver gave up (resource limit)",
+                reasons.append(Reason(f"tool-break recovery, leg {name!r}: {ans.reason()}",
                                       seg.span, seg.block, "RC202"))
                 break
             v = _confirm(pr, enc, cfg, machine, seg, S, L, L2, name, ans, segs)

@@ -195,12 +195,11 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
         pg = piece_geom(a, b)
         prover.stats["refined_pieces"] = prover.stats.get("refined_pieces", 0) + 1
         body, names = prover._arc_query(seg, pg, False)
-        ans = prover.solver.check(body, names, precision=60)
+        ans = prover.solver.check(body, names, precision=60, nonlinear=True)
         if ans.status == "unsat":
             continue
         if ans.status == "unknown":
-            return _Outcome(reason=Reason("solver resource limit reached on a helix/spiral piece", seg.span,
-                                          seg.block), engine="unknown")
+            return prover._unknown(seg, ans, "a helix/spiral piece")
         v = prover._arc_witness_enclosed(seg, g, ans.values, params, retry=False)
         mid = split(a, b)
         if v is None and mid is not None:

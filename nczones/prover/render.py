@@ -143,6 +143,10 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
         "settings": {k: list(x) if isinstance(x, tuple) else x for k, x in settings.items()},
         "violations": violations,
         "truncated": result.truncated,
+        "interrupted": result.interrupted,
+        "budget_s": result.budget_s,
+        "interrupted": result.interrupted,
+        "budget_s": result.budget_s,
         "reason": "; ".join(
             (f"{r.span.file}:{r.span.line}: " if r.span else "") + r.message for r in result.reasons
         ) if result.verdict is Verdict.UNKNOWN else None,

@@ -145,7 +145,11 @@ class Result:
     machine file as loaded) and ``settings``, every option of
     :func:`~nczones.prover.verify` that can change the verdict, as
     JSON values (``margin``, ``engine``, ``recovery``, ``arc_tolerance``,
-    ``max_iterations``, ``max_violations``, ``dialect``, ...).
+    ``max_iterations``, ``max_violations``, ``dialect``, ``budget_s``, ...).
+
+    ``interrupted``: Ctrl-C stopped the run, the result covers only what was
+    checked before (the CLI exits 130).  ``budget_s``: the run's budget for
+    solver work and refinement (:mod:`nczones.prover.limits`).
     """
 
     verdict: Verdict
@@ -168,6 +172,8 @@ class Result:
     machine_file: str = ""
     machine_sha256: str = ""
     settings: tuple[tuple[str, object], ...] = ()
+    interrupted: bool = False
+    budget_s: float | None = None
 
     @property
     def safe(self) -> bool:

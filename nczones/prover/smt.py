@@ -6,6 +6,9 @@ through the Python API).  Exact rationals are written ``(/ n d)``; nothing
 passes through a float.  The context has a fixed random seed and a
 resource limit (``rlimit``) per query instead of a wall-clock timeout, so a
 run is deterministic: ``unknown`` from Z3 becomes an ``unknown`` verdict.
+Nonlinear queries run Z3's ``qfnra-nlsat``; a time backstop, the program's
+budget and Ctrl-C stop a query through Z3's interrupt
+(:mod:`nczones.prover.limits`).
 
 Encodings (``q`` = the point a zone sees, ``e`` = margin perturbation):
 
@@ -263,11 +266,33 @@ def _minb(a, b):
 
 @dataclass(frozen=True, slots=True)
 class SolverAnswer:
-    """``status`` is "sat", "unsat" or "unknown"; ``values`` the model (exact where Z3 gives it)."""
+    """``status`` is "sat", "unsat" or "unknown"; ``values`` the model (exact where Z3 gives it).
+
+    ``stopped`` says why an ``unknown`` came: ``"rlimit"`` (the query's resource
+    limit), ``"time"`` (the per-query time backstop), ``"budget"`` (the
+    program's budget), ``"interrupt"`` (Ctrl-C) or ``"incomplete"`` (Z3 gave up).
+    """
 
     status: str
     values: dict[str, Fraction]
     approximate: frozenset[str] = frozenset()
+    stopped: str = ""
+
+    def reason(self, what: str = "") -> str:
+        """A reason for an ``unknown`` verdict, e.g. "solver resource limit reached on an arc"."""
+        on = f" on {what}" if what else ""
+        return {
+            "time": f"solver stopped by its time backstop{on} (the resource limit did not stop it; see --budget)",
+            "budget": f"budget spent: the solver was stopped{on}",
+            "interrupt": f"interrupted{on}",
+            "incomplete": f"the solver could not decide{on} (incomplete)",
+        }.get(self.stopped, f"solver resource limit reached{on}")
+
+    @property
+    def code(self) -> str:
+        """Reason code: VF201 resource limit, VF202 time backstop, VF203 budget, VF204 interrupt, VF205 incomplete."""
+        return {"time": "VF202", "budget": "VF203", "interrupt": "VF204", "incomplete": "VF205"}.get(self.stopped,
+                                                                                                     "VF201")
 
 
 _TOKEN = re.compile(r"\(|\)|[^\s()]+")
@@ -305,6 +330,15 @@ def _num(e: Any) -> tuple[Fraction, bool] | None:
 class Solver:
     """One Z3 context fed with SMT-LIB text; deterministic (seed 0, rlimit per query).
 
+    Every query has a resource limit: ``rlimit`` for linear queries and
+    ``nonlinear_rlimit`` for nonlinear ones (``check(..., nonlinear=True)``:
+    those run Z3's complete nonlinear procedure, ``qfnra-nlsat``, which
+    counts its resources more faithfully than the incremental core).  With
+    ``limits`` (:class:`~nczones.prover.limits.RunLimits`) a query also has
+    the time backstop and the program's budget, and Ctrl-C interrupts it;
+    before the query starts, a spent budget raises
+    :class:`~nczones.prover.limits.BudgetSpent`.
+
     >>> s = Solver()
     >>> a = s.check("(declare-const t Real)(assert (and (<= 0.0 t) (< t (/ 1.0 3.0))))", ["t"])
     >>> a.status, 0 <= a.values["t"] < Fraction(1, 3)
@@ -314,24 +348,47 @@ class Solver:
     name = "z3"
     version = Z3_VERSION
 
-    def __init__(self, rlimit: int = 5_000_000):
+    def __init__(self, rlimit: int | None = None, *, nonlinear_rlimit: int | None = None, limits=None):
+        from .limits import LINEAR_RLIMIT, NONLINEAR_RLIMIT
+
         self.ctx = z3.Context()
-        self.rlimit = rlimit
+        self.rlimit = LINEAR_RLIMIT if rlimit is None else rlimit
+        self.nonlinear_rlimit = NONLINEAR_RLIMIT if nonlinear_rlimit is None else nonlinear_rlimit
+        self.limits = limits
         self.queries = 0
-        self._eval("(set-option :smt.random_seed 0)(set-option :sat.random_seed 0)"
+        self.seconds = 0.0
+        self.stopped: dict[str, int] = {}
+        # ctrl_c false: Z3 must not install its own SIGINT handler while it solves (it would swallow
+        # Ctrl-C); the run's watchdog interrupts it instead (see limits.py)
+        self._eval("(set-option :ctrl_c false)(set-option :smt.random_seed 0)(set-option :sat.random_seed 0)"
                    "(set-option :nlsat.seed 0)")
 
     def _eval(self, text: str) -> str:
         return str(z3.Z3_eval_smtlib2_string(self.ctx.ref(), text))
 
-    def check(self, body: str, want: list[str], precision: int = 40) -> SolverAnswer:
+    def check(self, body: str, want: list[str], precision: int = 40, *, nonlinear: bool = False) -> SolverAnswer:
+        import time
+
+        if self.limits is not None:
+            self.limits.checkpoint()
         self.queries += 1
-        head = f"(push)(set-option :rlimit {self.rlimit})"
+        rlimit = self.nonlinear_rlimit if nonlinear else self.rlimit
+        head = f"(push)(set-option :rlimit {rlimit})"
+        check = "(check-sat-using qfnra-nlsat)" if nonlinear else "(check-sat)"
+        t0 = time.perf_counter()
+        why = ""
         try:
-            out = self._eval(head + body + "(check-sat)").strip()
+            if self.limits is None:
+                out = self._eval(head + body + check).strip()
+            else:
+                with self.limits.query(self.ctx) as stopped:
+                    out = self._eval(head + body + check).strip()
+                    why = stopped()
         except z3.Z3Exception as exc:  # a malformed query is our bug
             self._eval("(pop)")
             raise InternalError(f"SMT query rejected: {exc}") from exc
+        finally:
+            self.seconds += time.perf_counter() - t0
         status = out.split()[-1] if out else "unknown"
         values: dict[str, Fraction] = {}
         approx: set[str] = set()
@@ -357,10 +414,16 @@ class Solver:
                         raise InternalError(f"cannot read Z3 value {val!r}")
                     values[name] = v[0]
                     approx.add(name)
-        self._eval("(pop)")
         if status not in ("sat", "unsat"):
             status = "unknown"
-        return SolverAnswer(status, values, frozenset(approx))
+            if not why:  # not stopped by the watchdog: "canceled" is nlsat's word for its rlimit
+                info = self._eval("(get-info :reason-unknown)")
+                why = "rlimit" if any(w in info for w in ("resource", "rlimit", "cancel")) else "incomplete"
+            self.stopped[why] = self.stopped.get(why, 0) + 1
+        self._eval("(pop)")
+        if why == "interrupt":
+            raise KeyboardInterrupt
+        return SolverAnswer(status, values, frozenset(approx), why if status == "unknown" else "")
 
 
 def tip_shift(zone: Zone, tool_axis: str | None) -> str | None:

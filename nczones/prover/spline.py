@@ -124,7 +124,7 @@ def check_spline(prover: Any, seg: Segment) -> Any:
         if ans.status == "unsat":
             continue
         if ans.status == "unknown":
-            return _Outcome(reason=Reason("solver resource limit reached", seg.span, seg.block), engine="unknown")
+            return prover._unknown(seg, ans, "a spline piece")
         hint = [ans.values.get(n, Fraction(0)) for n in names[: len(pts)]]
         found = _violating_point(prover, seg, c, hint)
         if found is not None:

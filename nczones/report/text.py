@@ -172,6 +172,8 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
     else:
         what = "every motion stays inside the allowed set"
     nseg = stats.get("segments", 0)
+    if getattr(result, "interrupted", False):
+        what += " (interrupted: a partial report)"
     parts = [f"{name}: {verdict}: {what}", f"{nseg} segment{'s' if nseg != 1 else ''} checked"]
     if not deterministic:
         parts[-1] += (f" ({stats.get('screened', 0)} by screening, "

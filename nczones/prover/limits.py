@@ -1,0 +1,244 @@
+"""Bounds on a verification run: per-query solver limits, the program's budget, Ctrl-C.
+
+No run is unbounded (README, "Standards"):
+
+* **Per query**: every Z3 call carries a deterministic resource limit
+  (``rlimit``: :data:`LINEAR_RLIMIT` for linear queries,
+  :data:`NONLINEAR_RLIMIT` for nonlinear ones).  Z3's nonlinear procedures
+  count resources unevenly (measured on one R-format arc: 200,000 units in
+  0.4 s, 2,000,000 units of the same query in 50 s), so a query also has a **time backstop**
+  (``query_time_s``): a watchdog thread calls Z3's own interrupt when a query
+  runs past it.  The rlimit decides nearly always, so verdicts repeat run to
+  run; a query stopped by the backstop says so in its reason.
+* **Per program**: a budget in seconds (``budget_s``, default
+  :data:`DEFAULT_BUDGET_S`).  Once it is spent no solver query and no
+  refinement is started any more (a running query is interrupted); the
+  motions that would need one are ``unknown`` ("budget spent"), while the
+  exact tiers (screens, exact line decisions) still check the rest of the
+  program, so the report is complete for everything they decide.
+* **Ctrl-C**: while a run is watched (:meth:`RunLimits.watch`, in the main
+  thread), SIGINT reaches the watchdog through :func:`signal.set_wakeup_fd`;
+  it interrupts the running Z3 query at once (Z3's interrupt: a Python
+  signal handler cannot run while Z3 holds the main thread), and Python's
+  own ``KeyboardInterrupt`` then stops the run; the prover turns it into a
+  partial result marked ``interrupted``.
+
+Invariant: a limit, a spent budget or an interrupt never yields ``safe`` for
+the motion it stopped; it yields ``unknown`` with the reason (or, for an
+interrupt, a partial result that says so).
+"""
+
+from __future__ import annotations
+
+import os
+import select
+import signal
+import socket
+import threading
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+
+__all__ = ["RunLimits", "BudgetSpent", "DEFAULT_BUDGET_S", "DEFAULT_QUERY_TIME_S", "LINEAR_RLIMIT",
+           "NONLINEAR_RLIMIT"]
+
+#: Seconds a program may spend on solver work and refinement (``--budget``).
+DEFAULT_BUDGET_S = 60.0
+#: Seconds after which one solver query is interrupted even if its rlimit was not reached.
+DEFAULT_QUERY_TIME_S = 5.0
+#: Resource limit of a linear query (Z3 ``rlimit`` units).
+LINEAR_RLIMIT = 5_000_000
+#: Resource limit of a nonlinear query (arcs, helices, R-format centres, products of parameters).
+NONLINEAR_RLIMIT = 2_000_000
+
+
+class BudgetSpent(Exception):
+    """Raised inside the prover when the program's budget is spent (control flow, never shown)."""
+
+
+class RunLimits:
+    """The budget, the per-query backstop and the interrupt of one verification run.
+
+    Parameters
+    ----------
+    budget_s : float or None
+        Seconds for the whole run's solver work and refinement; None = no budget.
+    query_time_s : float or None
+        Backstop per solver query (seconds); None = rlimit only.
+    clock : callable
+        Monotonic seconds (tests pass a fake one).
+
+    Examples
+    --------
+    >>> t = [0.0]
+    >>> lim = RunLimits(budget_s=5, clock=lambda: t[0])
+    >>> lim.budget_spent()
+    False
+    >>> t[0] = 5.5
+    >>> lim.budget_spent(), round(lim.elapsed(), 1)
+    (True, 5.5)
+    """
+
+    def __init__(self, budget_s: float | None = DEFAULT_BUDGET_S, query_time_s: float | None = DEFAULT_QUERY_TIME_S,
+                 *, clock: Callable[[], float] = time.monotonic):
+        if budget_s is not None and not budget_s > 0:
+            from ..errors import InvalidArgument
+
+            raise InvalidArgument(f"budget_s must be a positive number of seconds, got {budget_s!r}")
+        self.budget_s = budget_s
+        self.query_time_s = query_time_s
+        self.clock = clock
+        self.started = clock()
+        self.spent_at: float | None = None
+        self.interrupted = False
+        self._lock = threading.Lock()
+        self._active = None  # (sequence number, z3 context, deadline, why) of the running query
+        self._seq = 0
+        self._stopped: dict[int, str] = {}
+        self._thread: threading.Thread | None = None
+        self._wake: tuple[socket.socket, socket.socket] | None = None
+        self._closing = False
+
+    # ------------------------------------------------------------------ budget
+
+    def elapsed(self) -> float:
+        return self.clock() - self.started
+
+    def budget_spent(self) -> bool:
+        """True once the budget is spent (and from then on)."""
+        if self.spent_at is not None:
+            return True
+        if self.budget_s is not None and self.elapsed() >= self.budget_s:
+            self.spent_at = self.elapsed()
+            return True
+        return False
+
+    def checkpoint(self) -> None:
+        """Raise :class:`BudgetSpent` when no more solver or refinement work may start."""
+        if self.budget_spent():
+            raise BudgetSpent
+
+    # ------------------------------------------------------------------ queries
+
+    @contextmanager
+    def query(self, ctx) -> Iterator[Callable[[], str]]:
+        """Around one Z3 call on ``ctx``: the watchdog may interrupt it.
+
+        Yields a function that tells, after the call, why it was stopped:
+        ``"time"`` (the backstop), ``"budget"``, ``"interrupt"`` (Ctrl-C) or
+        ``""`` (it was not stopped by us).
+        """
+        self.checkpoint()
+        now = self.clock()
+        deadline, why = None, "time"
+        if self.query_time_s is not None:
+            deadline = now + self.query_time_s
+        if self.budget_s is not None:
+            end = self.started + self.budget_s
+            if deadline is None or end < deadline:
+                deadline, why = end, "budget"
+        with self._lock:
+            self._seq += 1
+            seq = self._seq
+            self._active = (seq, ctx, deadline, why)
+        try:
+            yield lambda: self._stopped.get(seq, "")
+        finally:
+            with self._lock:
+                self._active = None
+                self._stopped.pop(seq, None)
+
+    def _fire(self, reason: str, act=None) -> None:
+        """Interrupt the running query (called by the watchdog); only ``act`` when given."""
+        with self._lock:
+            if act is not None and self._active is not act:
+                return
+            act = self._active
+            if act is None:
+                return
+            seq, ctx, _, _ = act
+            self._stopped[seq] = reason
+            if reason == "budget":
+                self.spent_at = self.elapsed()
+            ctx.interrupt()
+
+    # ------------------------------------------------------------------ watchdog
+
+    @contextmanager
+    def watch(self) -> Iterator[RunLimits]:
+        """Run the watchdog (backstop, budget, Ctrl-C) for the duration of the block.
+
+        Ctrl-C is watched only when called from the main thread (where
+        Python delivers signals); the previous wakeup fd is restored after
+        and still receives the signal bytes.
+        """
+        if self._thread is not None:  # nested: the outer watch does the work
+            yield self
+            return
+        old_fd = None
+        if threading.current_thread() is threading.main_thread():
+            try:
+                r, w = socket.socketpair()
+                r.setblocking(False)
+                w.setblocking(False)
+                old_fd = signal.set_wakeup_fd(w.fileno(), warn_on_full_buffer=False)
+                self._wake = (r, w)
+            except (ValueError, OSError):
+                self._wake = None
+        self._closing = False
+        self._thread = threading.Thread(target=self._watchdog, args=(old_fd,), name="nczones-limits", daemon=True)
+        self._thread.start()
+        try:
+            yield self
+        finally:
+            self._closing = True
+            if self._wake is not None:
+                try:
+                    signal.set_wakeup_fd(old_fd if old_fd is not None else -1)
+                except (ValueError, OSError):
+                    pass
+                try:
+                    self._wake[1].send(b"\0")
+                except OSError:
+                    pass
+            self._thread.join(1.0)
+            self._thread = None
+            if self._wake is not None:
+                for s in self._wake:
+                    s.close()
+                self._wake = None
+
+    def _watchdog(self, old_fd) -> None:
+        wake = self._wake
+        while not self._closing:
+            with self._lock:
+                act = self._active
+            timeout = 0.25
+            if act is not None and act[2] is not None:
+                left = act[2] - self.clock()
+                if left <= 0:
+                    self._fire(act[3], act)
+                else:
+                    timeout = min(timeout, left)
+            if wake is None:
+                time.sleep(timeout)
+                continue
+            try:
+                ready, _, _ = select.select([wake[0]], [], [], timeout)
+            except (OSError, ValueError):
+                return
+            if not ready:
+                continue
+            try:
+                data = wake[0].recv(64)
+            except (BlockingIOError, OSError):
+                data = b""
+            data = data.replace(b"\0", b"")
+            if old_fd is not None and old_fd >= 0 and data:
+                try:
+                    os.write(old_fd, data)
+                except OSError:
+                    pass
+            if int(signal.SIGINT) in data:
+                self.interrupted = True
+                self._fire("interrupt")
