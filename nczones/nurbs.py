@@ -147,7 +147,8 @@ class Nurbs:
                 new.append(tuple((1 - a) * x + a * y for x, y in zip(H[i - 1], H[i])))
         knots = U[: k + 1] + (t,) + U[k + 1:]
         pts = tuple(tuple(x / h[-1] for x in h[:-1]) for h in new)
-        return Nurbs(p, knots, pts, tuple(h[-1] for h in new))
+        make = Nurbs if self.clamped else Nurbs._unchecked
+        return make(p, knots, pts, tuple(h[-1] for h in new))
 
     def split(self, t: Fraction) -> tuple["Nurbs", "Nurbs"]:
         """The two clamped curves over ``[lo, t]`` and ``[t, hi]`` (``t`` strictly inside the domain).
@@ -170,9 +171,48 @@ class Nurbs:
         if sum(1 for u in c.knots if u == t) > p:
             raise NurbsError(f"knot {t} has multiplicity above the degree")
         j = c.knots.index(t)
-        left = Nurbs(p, c.knots[:j] + (t,) * (p + 1), c.points[:j], c.weights[:j])
-        right = Nurbs(p, (t,) * (p + 1) + c.knots[j + p:], c.points[j - 1:], c.weights[j - 1:])
+        make = Nurbs if self.clamped else Nurbs._unchecked
+        left = make(p, c.knots[:j] + (t,) * (p + 1), c.points[:j], c.weights[:j])
+        right = make(p, (t,) * (p + 1) + c.knots[j + p:], c.points[j - 1:], c.weights[j - 1:])
         return left, right
+
+    @property
+    def clamped(self) -> bool:
+        """False only for a single-span curve made by :meth:`span_curve`."""
+        p = self.degree
+        return len(set(self.knots[: p + 1])) == 1 and len(set(self.knots[-p - 1:])) == 1
+
+    @classmethod
+    def _unchecked(cls, degree, knots, points, weights) -> "Nurbs":
+        obj = object.__new__(cls)
+        for name, value in (("degree", degree), ("knots", tuple(knots)), ("points", tuple(points)),
+                            ("weights", tuple(weights))):
+            object.__setattr__(obj, name, value)
+        return obj
+
+    def span_curve(self, i: int) -> "Nurbs":
+        """The piece over the knot span ``[u_i, u_{i+1}]`` as a curve of its own, without knot insertion.
+
+        Its control points are ``P_{i-p}..P_i`` (the local convex hull) and
+        its knots ``u_{i-p}..u_{i+p+1}``; it is not clamped (its domain is the
+        span), but evaluation, insertion and :meth:`split` work on it and
+        give the same points as the whole curve.
+
+        >>> F = Fraction
+        >>> c = Nurbs(2, (F(0),) * 3 + (F(1), F(2)) + (F(3),) * 3,
+        ...           tuple((F(x), F(x * x % 5)) for x in range(5)), (F(1), F(2), F(1), F(3), F(1)))
+        >>> piece = c.span_curve(3)
+        >>> piece.domain, piece.point(F(3, 2)) == c.point(F(3, 2))
+        ((Fraction(1, 1), Fraction(2, 1)), True)
+        >>> a, b = piece.split(F(7, 4))
+        >>> a.point(F(13, 8)) == c.point(F(13, 8)), b.domain
+        (True, (Fraction(7, 4), Fraction(2, 1)))
+        """
+        p = self.degree
+        if not (p <= i < len(self.points) and self.knots[i] < self.knots[i + 1]):
+            raise NurbsError(f"{i} is not the index of a non-empty knot span")
+        return Nurbs._unchecked(p, self.knots[i - p: i + p + 2], self.points[i - p: i + 1],
+                                self.weights[i - p: i + 1])
 
     def span_hulls(self) -> list[tuple[tuple[Fraction, Fraction], tuple[tuple[Fraction, ...], ...]]]:
         """Per non-empty knot span: ((u_i, u_{i+1}), control points P_{i-p}..P_i whose hull holds that piece)."""

@@ -87,6 +87,8 @@ class Prover:
         self.pvars = {p.name: f"p{i}" for i, p in enumerate(self.params)}
         self.prange = {p.name: p for p in self.params}
         self.all_decidable = all(ex.decidable(z) for z in self.zones)
+        #: box_fits can prove a box inside every zone (no allow polygon)
+        self.boxable = not any(isinstance(z, PolygonZone) and not z.forbid for z in self.zones)
 
     # ------------------------------------------------------------------ params
 
@@ -178,9 +180,15 @@ class Prover:
             names.append(v)
         return "".join(out), evars
 
-    def _violation_formula(self, pt: dict[str, str], tool_len: str, enclosure) -> str:
+    def relevant_zones(self, lo_pt, hi_pt, tool_length: Fraction) -> tuple[Zone, ...]:
+        """The zones that the box spanned by two points does not fit (only they can be violated in it)."""
+        lo = {a: min(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
+        hi = {a: max(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
+        return tuple(z for z in self.zones if not box_fits(self.allowed, lo, hi, self.margin, tool_length, (z,)))
+
+    def _violation_formula(self, pt: dict[str, str], tool_len: str, enclosure, zones=None) -> str:
         parts = []
-        for z in self.zones:
+        for z in self.zones if zones is None else zones:
             seen = dict(pt)
             if z.point is ZonePoint.TIP and self.tool_axis in seen:
                 seen[self.tool_axis] = sub(seen[self.tool_axis], tool_len)
@@ -306,7 +314,11 @@ class Prover:
         tl = q(seg.tool_length)
         if with_params and self._tool_dev(seg):
             tl = add(tl, *self._tool_dev(seg))
-        body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
+        zones = None
+        if not with_params:  # only the zones the arc's box does not fit can be violated
+            zones = self.relevant_zones(tuple(enclosure[a][0] for a in self.axes),
+                                        tuple(enclosure[a][1] for a in self.axes), seg.tool_length)
+        body.append(f"(assert {self._violation_formula(pt, tl, enclosure, zones)})")
         return "".join(body), names
 
     @staticmethod
@@ -326,6 +338,11 @@ class Prover:
         return 0 if g.r_signed > 0 else 1
 
     # ------------------------------------------------------------------ deciding
+
+    def checkpoint(self) -> None:
+        """Raise :class:`~nczones.prover.limits.BudgetSpent` when the run's budget is spent (refinement loops)."""
+        if self.limits is not None:
+            self.limits.checkpoint()
 
     def _unknown(self, seg: Segment, ans, what: str = "") -> _Outcome:
         """The outcome of a solver ``unknown`` (its reason says which limit stopped it)."""
@@ -371,10 +388,8 @@ class Prover:
         self.stats["z3_segments"] += 1
         queries = []
         if seg.kind is SegmentKind.ARC:
-            if any(a != b for a, b in zip(seg.deps_start, seg.deps_end)):
-                return _Outcome(reason=Reason("an arc whose start and end depend on different parameters "
-                                              "is not supported with parameter ranges", seg.span, seg.block),
-                                engine="unknown")
+            if any(self._devs(seg, k, "start") != self._devs(seg, k, "end") for k in range(len(self.axes))):
+                return self._check_arc_varying(seg)
             queries.append(self._arc_query(seg, arc_geom(seg), True) + (True,))
         else:
             dogleg_varies = (seg.kind is SegmentKind.RAPID and self.machine.rapid_mode is RapidMode.DOGLEG
@@ -435,6 +450,115 @@ class Prover:
         tl = add(q(seg.tool_length), *self._tool_dev(seg))
         body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
         return "".join(body), names
+
+    def _check_arc_varying(self, seg: Segment) -> _Outcome:
+        """An arc whose start and end move with different parameters (e.g. the first move from a
+        ``start.X`` range): its shape changes with them, so it is decided on concrete values.
+
+        The arc at the nominal values and at the corner values of its
+        parameters (every combination of low, middle and high for up to
+        three parameters; all low, all high, the middle and each one alone
+        at its ends for more) is decided exactly (:meth:`_check_concrete`);
+        a violation there is a real counterexample with those values.  An
+        I/J arc whose end is no longer on its circle at some values is not
+        a motion the controller makes there (it rejects the block), so those
+        values give no counterexample.  When none violates, the whole range
+        is proved by an enclosure that holds the arc for every value
+        (:meth:`_varying_arc_box`), or the verdict is ``unknown``.
+        """
+        from itertools import product
+
+        names = sorted({n for k in range(len(self.axes)) for w in ("start", "end")
+                        for n, v in self.pvars.items() if v in self._devs(seg, k, w)}
+                       | {n for n, v in self.pvars.items() if v in self._tool_dev(seg)})
+        ranges = [self.prange[n] for n in names]
+
+        # a case's open end (cases.py) is not one of its values: the middle stands in for it
+        def low(p: ParamRange) -> Fraction:
+            return (p.lo + p.hi) / 2 if p.lo_open else p.lo
+
+        def high(p: ParamRange) -> Fraction:
+            return (p.lo + p.hi) / 2 if p.hi_open else p.hi
+
+        levels = [tuple(dict.fromkeys((low(p), (p.lo + p.hi) / 2, high(p)))) for p in ranges]
+        if len(ranges) <= 3:
+            combos = list(product(*levels))
+        else:
+            combos = [tuple(low(p) for p in ranges), tuple(high(p) for p in ranges),
+                      tuple((p.lo + p.hi) / 2 for p in ranges)]
+            for i, p in enumerate(ranges):
+                for v in (low(p), high(p)):
+                    combos.append(tuple(v if j == i else (q.lo + q.hi) / 2 for j, q in enumerate(ranges)))
+        if all((p.lo < 0 or (p.lo == 0 and not p.lo_open)) and (0 < p.hi or (p.hi == 0 and not p.hi_open))
+               for p in ranges):
+            combos.insert(0, tuple(F0 for _ in ranges))
+        first_reason = None
+        for combo in dict.fromkeys(combos):
+            self.checkpoint()
+            values = dict(zip(names, combo))
+            concrete = self.instantiate(seg, values)
+            if concrete.centre is not None:
+                ia, ib, _ = concrete.plane_indices()
+                c = concrete.centre
+                if ((concrete.start[ia] - c[0]) ** 2 + (concrete.start[ib] - c[1]) ** 2
+                        != (concrete.end[ia] - c[0]) ** 2 + (concrete.end[ib] - c[1]) ** 2) and any(combo):
+                    continue
+            out = self._check_concrete(concrete, tuple(values.items()))
+            if out.violation is not None:
+                return out
+            if out.reason is not None and first_reason is None:
+                first_reason = out.reason
+        lo_hi = self._varying_arc_box(seg)
+        if lo_hi is not None and box_fits(self.allowed, lo_hi[0], lo_hi[1], self.margin, seg.tool_length):
+            self.stats["screened"] += 1
+            return _Outcome(engine="exact")
+        why = (f"; at one of them: {first_reason.message}" if first_reason is not None else "")
+        return _Outcome(reason=Reason("an arc whose start and end depend on different parameters: no "
+                                      "counterexample at the corner values of the ranges, and its enclosure over "
+                                      f"the whole ranges meets a zone boundary{why}", seg.span, seg.block),
+                        engine="unknown")
+
+    def _varying_arc_box(self, seg: Segment) -> tuple[dict, dict] | None:
+        """A box holding the arc for every value of its parameters (None when a tip zone sees a
+        varying tool length)."""
+        if self._tool_dev(seg) and any(z.point is ZonePoint.TIP for z in self.zones):
+            return None
+
+        def dev(k, which):
+            lo = hi = F0
+            for var in self._devs(seg, k, which):
+                p = self.prange[next(n for n, v in self.pvars.items() if v == var)]
+                lo, hi = lo + p.lo, hi + p.hi
+            return lo, hi
+
+        ia, ib, _ = seg.plane_indices()
+        lo, hi = {}, {}
+        for k, a in enumerate(self.axes):
+            s0, s1 = dev(k, "start")
+            e0, e1 = dev(k, "end")
+            lo[a] = min(seg.start[k] + s0, seg.end[k] + e0)
+            hi[a] = max(seg.start[k] + s1, seg.end[k] + e1)
+        if seg.centre is not None:
+            # the centre moves with the start (I/J are offsets from it); the path stays within the larger of
+            # the start radius and the largest end radius of the centre
+            c = seg.centre
+            (sa0, sa1), (sb0, sb1) = dev(ia, "start"), dev(ib, "start")
+            (ea0, ea1), (eb0, eb1) = dev(ia, "end"), dev(ib, "end")
+            gap = (max(abs(ea0 - sa1), abs(ea1 - sa0)), max(abs(eb0 - sb1), abs(eb1 - sb0)))
+            r_s = sqrt_bounds((seg.start[ia] - c[0]) ** 2 + (seg.start[ib] - c[1]) ** 2, 64)[1]
+            r_e = (sqrt_bounds((seg.end[ia] - c[0]) ** 2 + (seg.end[ib] - c[1]) ** 2, 64)[1]
+                   + sqrt_bounds(gap[0] ** 2 + gap[1] ** 2, 64)[1])
+            r = max(r_s, r_e)
+            boxes = ((c[0] + sa0 - r, c[0] + sa1 + r), (c[1] + sb0 - r, c[1] + sb1 + r))
+        elif seg.radius is not None:  # the centre is within |R| of the start, the path within |R| of it
+            r = 2 * abs(seg.radius)
+            boxes = ((lo[self.axes[ia]] - r, hi[self.axes[ia]] + r), (lo[self.axes[ib]] - r, hi[self.axes[ib]] + r))
+        else:
+            return None
+        for k, (b0, b1) in zip((ia, ib), boxes):
+            a = self.axes[k]
+            lo[a], hi[a] = min(lo[a], b0), max(hi[a], b1)
+        return lo, hi
 
     def _check_concrete(self, seg: Segment, params) -> _Outcome:
         if seg.kind is SegmentKind.ARC:
@@ -597,6 +721,14 @@ class Prover:
             if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin, seg.tool_length):
                 self.stats["screened"] += 1
                 return _Outcome(engine="exact")
+            if self.boxable:
+                # exact enclosures of pieces of the sweep (prover/arcs.py): most arcs end here
+                from .arcs import decide_arc
+
+                out = decide_arc(self, seg, g, params)
+                if out is not None:
+                    self.stats["arc_enclosures"] = self.stats.get("arc_enclosures", 0) + 1
+                    return out
         self.stats["z3_segments"] += 1
         body, names = self._arc_query(seg, g, False)
         ans = self.solver.check(body, names, precision=60, nonlinear=True)
@@ -894,16 +1026,17 @@ def _angle_bounds(u, v, ccw: bool) -> tuple[Fraction, Fraction]:
     return F0, 2 * pi_hi
 
 
-def box_fits(allowed, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction) -> bool:
+def box_fits(allowed, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction, zones=None) -> bool:
     """Exact test: every point of the box ``[lo, hi]`` has a fitting margin box (boxes, stepped tables).
 
     Polygon zones: True only for a forbid polygon whose bounding box the
-    grown box misses; an allow polygon is never screened.
+    grown box misses; an allow polygon is never screened.  ``zones``
+    restricts the test to those zones (default: all of ``allowed``).
     """
     from ..zones import BoxZone, SteppedZone
 
     d = margin
-    for z in allowed.zones:
+    for z in allowed.zones if zones is None else zones:
         shift = tool_length if (z.point is ZonePoint.TIP and tool_length) else F0
 
         def rng(a):

@@ -6,9 +6,8 @@ through the Python API).  Exact rationals are written ``(/ n d)``; nothing
 passes through a float.  The context has a fixed random seed and a
 resource limit (``rlimit``) per query instead of a wall-clock timeout, so a
 run is deterministic: ``unknown`` from Z3 becomes an ``unknown`` verdict.
-Nonlinear queries run Z3's ``qfnra-nlsat``; a time backstop, the program's
-budget and Ctrl-C stop a query through Z3's interrupt
-(:mod:`nczones.prover.limits`).
+A time backstop, the program's budget and Ctrl-C stop a query through Z3's
+interrupt (:mod:`nczones.prover.limits`).
 
 Encodings (``q`` = the point a zone sees, ``e`` = margin perturbation):
 
@@ -331,9 +330,10 @@ class Solver:
     """One Z3 context fed with SMT-LIB text; deterministic (seed 0, rlimit per query).
 
     Every query has a resource limit: ``rlimit`` for linear queries and
-    ``nonlinear_rlimit`` for nonlinear ones (``check(..., nonlinear=True)``:
-    those run Z3's complete nonlinear procedure, ``qfnra-nlsat``, which
-    counts its resources more faithfully than the incremental core).  With
+    ``nonlinear_rlimit`` for nonlinear ones (``check(..., nonlinear=True)``).
+    Z3 counts the work of its nonlinear arithmetic unevenly (seconds for a
+    few hundred thousand units on some arc queries), so the time backstop of
+    ``limits`` is what bounds those in the end.  With
     ``limits`` (:class:`~nczones.prover.limits.RunLimits`) a query also has
     the time backstop and the program's budget, and Ctrl-C interrupts it;
     before the query starts, a spent budget raises
@@ -360,8 +360,10 @@ class Solver:
         self.stopped: dict[str, int] = {}
         # ctrl_c false: Z3 must not install its own SIGINT handler while it solves (it would swallow
         # Ctrl-C); the run's watchdog interrupts it instead (see limits.py)
+        # arith.nl.grobner false: the Groebner-basis lemmas of the nonlinear core are not bounded by the
+        # rlimit and ran for minutes on R-format arc queries that are decided in a second without them
         self._eval("(set-option :ctrl_c false)(set-option :smt.random_seed 0)(set-option :sat.random_seed 0)"
-                   "(set-option :nlsat.seed 0)")
+                   "(set-option :nlsat.seed 0)(set-option :smt.arith.nl.grobner false)")
 
     def _eval(self, text: str) -> str:
         return str(z3.Z3_eval_smtlib2_string(self.ctx.ref(), text))
@@ -374,7 +376,7 @@ class Solver:
         self.queries += 1
         rlimit = self.nonlinear_rlimit if nonlinear else self.rlimit
         head = f"(push)(set-option :rlimit {rlimit})"
-        check = "(check-sat-using qfnra-nlsat)" if nonlinear else "(check-sat)"
+        check = "(check-sat)"
         t0 = time.perf_counter()
         why = ""
         try:

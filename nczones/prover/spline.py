@@ -1,8 +1,11 @@
 """Prover for SPLINE segments (exact NURBS curves, :mod:`nczones.nurbs`).
 
-Enclosure: with positive weights the curve over one knot span lies in the
-convex hull of that span's ``degree + 1`` control points.  The curve is cut
-at its interior knots into single-span pieces; each piece is
+Enclosure: with positive weights the whole curve lies in the convex hull of
+its control points, and the curve over one knot span in the convex hull of
+that span's ``degree + 1`` control points.  The box of all control points
+is screened first (one exact test proves most curves); otherwise each knot
+span is a piece (:meth:`nczones.nurbs.Nurbs.span_curve`, no knot
+insertion), and each piece is
 
 1. screened exactly: the bounding box of its control points fits every zone
    (with the margin) -> proved;
@@ -47,10 +50,6 @@ def spline_curve(seg: Segment) -> Nurbs:
     return Nurbs(e["degree"], e["knots"], e["control"], e["weights"])  # type: ignore[arg-type]
 
 
-def _pieces(c: Nurbs) -> list[Nurbs]:
-    return c.pieces()
-
-
 def _hull_query(prover: Any, seg: Segment, pts: Any) -> tuple[str, list[str]]:
     names = [f"l{j}" for j in range(len(pts))]
     body = ["".join(f"(declare-const {n} Real)(assert (>= {n} 0.0))" for n in names),
@@ -67,7 +66,9 @@ def _hull_query(prover: Any, seg: Segment, pts: Any) -> tuple[str, list[str]]:
         else:
             term = add(*(mul(n, q(c)) for n, c in zip(names, coords)))
         pt[a] = add(term, evars[a])
-    body.append(f"(assert {prover._violation_formula(pt, q(seg.tool_length), enclosure)})")
+    zones = prover.relevant_zones(tuple(enclosure[a][0] for a in prover.axes),
+                                  tuple(enclosure[a][1] for a in prover.axes), seg.tool_length)
+    body.append(f"(assert {prover._violation_formula(pt, q(seg.tool_length), enclosure, zones)})")
     return "".join(body), names
 
 
@@ -94,29 +95,49 @@ def _round(t: Fraction) -> Fraction:
 
 
 def check_spline(prover: Any, seg: Segment) -> Any:
-    """Decide one SPLINE segment: ``_Outcome`` with a violation, a reason, or neither (proved)."""
+    """Decide one SPLINE segment: ``_Outcome`` with a violation, a reason, or neither (proved).
+
+    Screens first, without the solver: the box of all control points (the
+    whole curve lies in their convex hull), then the box of each knot span's
+    ``degree + 1`` control points (its local hull; no knot insertion).  Only
+    the spans whose box does not fit go on to the hull query, the exact
+    curve points and the refinement; only those count against
+    :data:`SPLINE_PIECE_BUDGET`.
+    """
     from .core import _Outcome
 
     if prover._param_relevant(seg):
         return _Outcome(reason=Reason("parameter ranges are not supported on spline (NURBS) motion",
                                       seg.span, seg.block), engine="unknown")
     curve = spline_curve(seg)
-    work = [(p, 0) for p in _pieces(curve)]
+    auto = prover.engine == "auto"
+    if auto and _hull_fits(prover, seg, curve.points):
+        prover.stats["screened"] += 1
+        return _Outcome(engine="exact")
+    p = curve.degree
+    work = []
+    for i in range(p, len(curve.points)):
+        if curve.knots[i] < curve.knots[i + 1]:
+            if auto and _hull_fits(prover, seg, curve.points[i - p: i + 1]):
+                continue
+            work.append((curve.span_curve(i), 0))
+    if not work:
+        prover.stats["screened"] += 1
+        return _Outcome(engine="exact")
     work.reverse()
     examined = 0
     engine = "exact"
     while work:
         c, depth = work.pop()
+        prover.checkpoint()
+        pts = c.points
+        if depth and auto and _hull_fits(prover, seg, pts):
+            continue
         examined += 1
         if examined > SPLINE_PIECE_BUDGET:
-            return _Outcome(reason=Reason(f"spline: the control hulls of {SPLINE_PIECE_BUDGET} curve pieces were "
-                                          "examined without proving the curve or finding an exact point outside",
-                                          seg.span, seg.block), engine="unknown")
-        pts = c.points
-        lo_pt = tuple(min(p[k] for p in pts) for k in range(len(prover.axes)))
-        hi_pt = tuple(max(p[k] for p in pts) for k in range(len(prover.axes)))
-        if prover.engine == "auto" and prover._bbox_fits(lo_pt, hi_pt, seg.tool_length):
-            continue
+            return _Outcome(reason=Reason(f"spline: the control hulls of {SPLINE_PIECE_BUDGET} curve pieces near a "
+                                          "zone boundary were examined without proving the curve or finding an "
+                                          "exact point outside", seg.span, seg.block), engine="unknown")
         engine = "z3"
         prover.stats["z3_segments"] += 1
         body, names = _hull_query(prover, seg, pts)
@@ -137,6 +158,14 @@ def check_spline(prover: Any, seg: Segment) -> Any:
         work.append((b, depth + 1))
         work.append((a, depth + 1))
     return _Outcome(engine=engine)
+
+
+def _hull_fits(prover: Any, seg: Segment, pts: Any) -> bool:
+    """Does the box of these control points fit every zone (with the margin)?"""
+    n = len(prover.axes)
+    lo_pt = tuple(min(q[k] for q in pts) for k in range(n))
+    hi_pt = tuple(max(q[k] for q in pts) for k in range(n))
+    return bool(prover._bbox_fits(lo_pt, hi_pt, seg.tool_length))
 
 
 def _violation(prover: Any, seg: Segment, curve: Nurbs, found: Any) -> Violation:

@@ -1,8 +1,9 @@
-"""Refinement by splitting for helices (nczones/prover/refine.py, issue 4).
+"""Refinement by splitting for helices (nczones/prover/arcs.py, nczones/prover/refine.py, issues 4, 19).
 
 A helix is not polynomial; the prover proves a containing set and, when that
 set admits a violation the exact path may not reach, splits the sweep and
-proves the pieces, up to a budget; then ``unknown``.  An exact helix point is
+proves the pieces (exact boxes first, :mod:`nczones.prover.arcs`, then Z3
+per piece, :mod:`nczones.prover.refine`), up to a budget; then ``unknown``.  An exact helix point is
 rational at every quarter turn of a sweep made of whole quarter turns, which
 gives the brute-force sampler below.
 """
@@ -15,7 +16,7 @@ from hypothesis import strategies as st
 
 from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind
-from nczones.prover import Prover, Verdict, refine, verify_segments
+from nczones.prover import Prover, Verdict, arcs, refine, verify_segments
 from nczones.prover.geometry import arc_geom
 from nczones.zones import AllowedSet, Region, SteppedZone
 
@@ -60,7 +61,10 @@ def test_safe_helix_near_the_step_is_proved_by_splitting():
     r = verify_segments([seg], m)
     assert r.verdict is Verdict.SAFE
     q = Prover(m)
-    assert q.check(seg).violation is None and q.stats.get("refined_pieces", 0) >= 2
+    assert q.check(seg).violation is None and q.stats.get("arc_pieces", 0) >= 2
+    # the solver's refinement proves it too (the path when the exact pieces leave it open)
+    z = Prover(m)
+    assert refine.refine_arc(z, seg, g, ()).reason is None and z.stats.get("refined_pieces", 0) >= 2
 
 
 def test_helix_crossing_the_step_is_unsafe_with_a_certified_witness():
@@ -91,6 +95,7 @@ def test_budget_exhausted_is_unknown_with_the_reason():
 
 def test_a_small_budget_gives_unknown(monkeypatch):
     monkeypatch.setattr(refine, "MAX_PIECES", 2)
+    monkeypatch.setattr(arcs, "MAX_PIECES", 2)
     r = verify_segments([helix((-10, 0, 10), (10, 0, 0), True)], machine(4))
     assert r.verdict is Verdict.UNKNOWN
     assert any("budget" in x.message for x in r.reasons)
@@ -132,7 +137,7 @@ def test_spiral_arc_near_the_step_is_proved_and_a_crossing_one_is_unsafe():
     m = machine(4)
     p = Prover(m)
     assert p.check(helix((-10, 0, 10), (11, 0, 0), True)).violation is None
-    assert p.stats.get("refined_pieces", 0) >= 2
+    assert p.stats.get("arc_pieces", 0) >= 2
     assert verify_segments([helix((-10, 0, 10), (11, 0, 0), True)], m).verdict is Verdict.SAFE
     r = verify_segments([helix((-10, 0, 12), (11, 0, -10), True)], m)
     assert r.verdict is Verdict.UNSAFE
