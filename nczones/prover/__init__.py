@@ -50,6 +50,7 @@ from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
 from ..machine import Machine
 from .core import Prover, verify_segments
 from .limits import DEFAULT_BUDGET_S, RunLimits
+from .profile import RunProfile
 from .result import ParamRange, Reason, Result, Verdict, Violation
 
 F0 = Fraction(0)
@@ -275,7 +276,10 @@ def _verify(
     if limits is None:
         limits = RunLimits(budget_s)
     # one budget for the whole program: every case and switch position draws on it
-    opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress, limits=limits)
+    # one profile too: the progress bar counts the motions of every case, and --stats sums them
+    profile = RunProfile()
+    opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress, limits=limits,
+                profile=profile)
     deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)]
     positions = ((False, True) if mode == "both" else (mode == "on",)) if deleted else (False,)
     per_position = []
@@ -437,25 +441,36 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, e
 
 
 def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations, progress,
-                limits: RunLimits) -> Result:
+                limits: RunLimits, profile: RunProfile) -> Result:
     """Prove one interpretation (one case): its result with source text, unknown codes and notes filled in."""
     from ..motion import MotionChunk
 
+    # a progress callback with a true ``counts`` attribute (the CLI's bar) also gets the motions and
+    # blocks executed so far, loops and subroutines counted as they run
+    counts = bool(getattr(progress, "counts", False))
+    total = _line_count(run.text) or None if progress is not None else None
+
+    def report(line: int) -> None:
+        assert progress is not None
+        if counts:
+            progress(line, total, motions=profile.motions, blocks=profile.blocks)
+        else:
+            progress(line, total)
+
     def with_text(seq):
-        total = _line_count(run.text) or None if progress is not None else None
         for chunk in seq:
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
                 yield chunk
                 if progress is not None and len(chunk):
-                    progress(int(chunk.line[-1]), total)
+                    report(int(chunk.line[-1]))
             else:
                 for s in chunk.segments():
                     yield s
                     if progress is not None and s.span is not None:
-                        progress(s.span.line, total)
+                        report(s.span.line)
 
     result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
-                             max_violations=max_violations, file=run.file, limits=limits)
+                             max_violations=max_violations, file=run.file, limits=limits, profile=profile)
     # fill the source text of violations and reasons (column chunks carry only line numbers)
     wanted = [x.span.line for x in (*result.violations, *result.reasons, *run.unsupported)
               if x.span is not None and not x.span.text and x.span.line >= 1]

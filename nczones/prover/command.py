@@ -160,8 +160,12 @@ def render_many(results: list, errors: list[tuple[int, str, InputError]], args: 
         return render_sarif([r for _, _, r in results], machine=machine, base=args.sarif_root,
                             files_from=os.getcwd())
     color = args.output is None and args.format == "text" and _color(sys.stdout)
+    stats = args.format == "text" and getattr(args, "stats", False)
+    if stats:
+        from ..report.text import render_stats
+
     return "".join(render_report(r, args.format, machine=machine, program=source, color=color)
-                   for _, source, r in results)
+                   + (render_stats(r) if stats else "") for _, source, r in results)
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -249,6 +253,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help=f"time per program for solver work and refinement (default {DEFAULT_BUDGET_S:g}; 'none' "
                         "for no limit); motions still undecided then are unknown ('budget spent'), the exact "
                         "tiers check the rest")
+    p.add_argument("--stats", action="store_true",
+                   help="after each text report, where the time went: per tier and per motion kind, the solver "
+                        "calls and the slowest blocks (the JSON report always has them in stats.profile)")
     p.add_argument("--format", choices=("text", "json", "html", "sarif"), default="text",
                    help="text (compiler-style), json (specs/report.schema.json; a list for several programs), "
                         "html (one self-contained file with plots; one program), sarif (SARIF 2.1.0 for code "

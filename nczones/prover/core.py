@@ -1097,6 +1097,7 @@ def verify_segments(
     file: str = "",
     budget_s: float | None = None,
     limits=None,
+    profile=None,
 ) -> Result:
     """Verify motion segments (no G-code text needed) against a machine's zones.
 
@@ -1123,6 +1124,10 @@ def verify_segments(
         ``unknown`` ("budget spent"), the exact tiers still check the rest.
     limits : RunLimits, optional
         Use these limits (budget, time backstop, Ctrl-C) instead of new ones.
+    profile : RunProfile, optional
+        Filled while the run goes (:mod:`nczones.prover.profile`; the
+        progress bar reads it); a new one otherwise.  ``Result.profile`` is
+        its summary.
 
     A ``KeyboardInterrupt`` (Ctrl-C) ends the run with a partial result:
     ``Result.interrupted`` is True and the verdict is ``unsafe`` when a
@@ -1160,10 +1165,14 @@ def verify_segments(
     ('unsafe', 'table', '3/4')
     """
     from .limits import DEFAULT_BUDGET_S, RunLimits
+    from .profile import RunProfile
 
     t0 = time.perf_counter()
     if limits is None:
         limits = RunLimits(DEFAULT_BUDGET_S if budget_s is None else budget_s)
+    if profile is None:
+        profile = RunProfile()
+    clock = time.perf_counter
     prover = Prover(machine, margin=Fraction(margin), params=params, engine=engine, limits=limits)
     violations: list[Violation] = []
     reasons: list[Reason] = []
@@ -1176,11 +1185,13 @@ def verify_segments(
     last_line: list[int | None] = [None]
     from .screen import screen_chunk
 
-    def handle(seg: Segment) -> bool:
+    def handle(seg: Segment, from_chunk: bool = False) -> bool:
         nonlocal n_undecided
         if seg.span is not None:
             last_line[0] = seg.span.line
+        started = clock()
         out = prover.check(seg)
+        profile.decided(seg, clock() - started, counted=not from_chunk)
         if out.engine == "budget":
             n_undecided += 1
             if not undecided:
@@ -1213,16 +1224,19 @@ def verify_segments(
                 if isinstance(item, MotionChunk):
                     if len(item) and item.scale is not None:
                         last_line[0] = int(item.line[0])
-                    if item.scale is not None and engine == "auto" and not prover.params:
+                    from_chunk = item.scale is not None and engine == "auto" and not prover.params
+                    if from_chunk:
                         n = len(item)
+                        started = clock()
                         flagged = screen_chunk(item, prover)
+                        profile.screened(item, len(flagged), clock() - started)
                         prover.stats["screened"] += n - len(flagged)
                         prover.stats["segments"] += n - len(flagged)
                         it = (seg for seg in _chunk_rows(item, flagged))
                     else:
                         it = item.segments()
                     for seg in it:
-                        if not handle(seg):
+                        if not handle(seg, from_chunk):
                             truncated = True
                             break
                     if not truncated and len(item) and item.scale is not None:
@@ -1267,6 +1281,7 @@ def verify_segments(
         timings=(("prove_s", time.perf_counter() - t0),), notes=tuple(notes),
         stats=tuple(stats.items()), margin=Fraction(margin), params=tuple(params), engine=engine,
         truncated=truncated, file=file, interrupted=interrupted, budget_s=limits.budget_s,
+        profile=profile.as_dict(prover.solver),
     )
 
 

@@ -145,8 +145,6 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
         "truncated": result.truncated,
         "interrupted": result.interrupted,
         "budget_s": result.budget_s,
-        "interrupted": result.interrupted,
-        "budget_s": result.budget_s,
         "reason": "; ".join(
             (f"{r.span.file}:{r.span.line}: " if r.span else "") + r.message for r in result.reasons
         ) if result.verdict is Verdict.UNKNOWN else None,
@@ -158,7 +156,8 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
         "margin": _d(result.margin),
         "params": [{"name": p.name, "lo": _d(p.written[0]), "hi": _d(p.written[1])} for p in result.params],
         "notes": list(result.notes),
-        "stats": ({"segments": dict(result.stats).get("segments", 0)} if deterministic else dict(result.stats)),
+        "stats": ({"segments": dict(result.stats).get("segments", 0)} if deterministic
+                  else {**dict(result.stats), **({"profile": result.profile} if result.profile else {})}),
         "timings": {} if deterministic else {k: seconds(v) for k, v in result.timings},
     }
     return doc

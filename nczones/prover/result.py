@@ -149,7 +149,8 @@ class Result:
 
     ``interrupted``: Ctrl-C stopped the run, the result covers only what was
     checked before (the CLI exits 130).  ``budget_s``: the run's budget for
-    solver work and refinement (:mod:`nczones.prover.limits`).
+    solver work and refinement (:mod:`nczones.prover.limits`).  ``profile``:
+    where the time went (:mod:`nczones.prover.profile`; ``--stats``).
     """
 
     verdict: Verdict
@@ -174,6 +175,7 @@ class Result:
     settings: tuple[tuple[str, object], ...] = ()
     interrupted: bool = False
     budget_s: float | None = None
+    profile: dict = field(default_factory=dict, compare=False)
 
     @property
     def safe(self) -> bool:

@@ -4,7 +4,9 @@ The prover's :func:`~nczones.prover.verify` and the controller's
 :func:`~nczones.controller.simulate` accept an optional ``progress``
 callable, called as ``progress(line, total)`` after each chunk or segment
 with the source line reached so far and the number of lines of the program
-(``total`` may be None when unknown).  :func:`progress_for` returns such a
+(``total`` may be None when unknown); ``verify`` also passes ``motions=``
+and ``blocks=`` (executed so far, loops and subroutines counted as they
+run) to a callable whose ``counts`` attribute is true, as the bar's is.  :func:`progress_for` returns such a
 callable that draws a bar when the stream is a terminal, and None otherwise,
 so that redirected output, CI logs and pipes stay quiet.
 
@@ -97,6 +99,17 @@ class ProgressBar:
     >>> bar(2, 4); bar.close()
     >>> s.getvalue().split("\\r")[1]
     'verify [####    ]  50% line 2/4'
+
+    With the motions and blocks executed so far (what ``verify`` passes),
+    it shows those, the elapsed time and the rate instead of a share of the
+    source lines (a loop runs its lines many times):
+
+    >>> t = iter([10.0, 12.0])
+    >>> s = io.StringIO()
+    >>> bar = ProgressBar(s, "verify", min_interval=0, force=True, clock=lambda: next(t))
+    >>> bar(3, 4, motions=90000, blocks=45000)
+    >>> s.getvalue().split("\\r")[-1]
+    'verify 90,000 motions, 45,000 blocks (line 3/4) 2.0 s, 45,000 motions/s'
     """
 
     def __init__(self, stream: TextIO, label: str = "", *, total: int | None = None,
@@ -112,18 +125,35 @@ class ProgressBar:
         self._last_draw = -float("inf")
         self._drawn = False
         self._last_text = ""
+        self._started = clock()
         self.calls = 0
 
-    def __call__(self, line: int | None, total: int | None = None) -> None:
+    #: :func:`nczones.prover.verify` passes ``motions=`` and ``blocks=`` to callables that say so
+    counts = True
+
+    def __call__(self, line: int | None, total: int | None = None, *, motions: int | None = None,
+                 blocks: int | None = None) -> None:
         self.calls += 1
         if not self.enabled or line is None:
             return
         now = self.clock()
         total = total if total is not None else self.total
-        if now - self._last_draw < self.min_interval and not (total and line >= total):
+        if now - self._last_draw < self.min_interval and not (total and line >= total and motions is None):
             return
         self._last_draw = now
-        self._draw(line, total)
+        if motions is not None:
+            self._draw_counts(line, total, motions, blocks, now - self._started)
+        else:
+            self._draw(line, total)
+
+    def _draw_counts(self, line: int, total: int | None, motions: int, blocks: int | None, elapsed: float) -> None:
+        """Progress by execution: motions and blocks executed so far (loops and subroutines count as
+        they run), the elapsed time and the rate; the source line only says where the run is."""
+        rate = f", {motions / elapsed:,.0f} motions/s" if elapsed > 0 else ""
+        where = f"line {line}/{total}" if total else f"line {line}"
+        text = (f"{self.label} {motions:,} motions" + (f", {blocks:,} blocks" if blocks is not None else "")
+                + f" ({where}) {elapsed:.1f} s{rate}")
+        self._write(text)
 
     def _draw(self, line: int, total: int | None) -> None:
         if total:
@@ -133,6 +163,9 @@ class ProgressBar:
                     f"{int(frac * 100):3d}% line {line}/{total}")
         else:
             text = f"{self.label} line {line}"
+        self._write(text)
+
+    def _write(self, text: str) -> None:
         pad = max(0, len(self._last_text) - len(text))
         self.stream.write("\r" + text + " " * pad)
         self.stream.flush()

@@ -191,3 +191,46 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
         if total is not None:
             parts.append(f"{total:.3f} s")
     return "; ".join(parts)
+
+
+def render_stats(result: Result, name: str = "") -> str:
+    """Where the time went (``nczones verify --stats``): tiers, motion kinds, solver calls, slowest blocks.
+
+    >>> from nczones.prover import Result, Verdict
+    >>> prof = {"total_s": 2.5, "motions": 1200, "blocks": 600, "motions_screened_vectorized": 1100,
+    ...         "tiers": {"screen_vectorized_s": 0.01, "exact_per_motion_s": 1.9, "solver_s": 0.3,
+    ...                   "interpretation_and_rest_s": 0.29},
+    ...         "kinds": {"arc": {"motions": 100, "seconds_one_by_one": 2.2}},
+    ...         "solver": {"calls": 7, "seconds": 0.3, "stopped": {}},
+    ...         "slowest": [{"block": 9, "line": 12, "kind": "arc", "seconds": 0.5}]}
+    >>> print(render_stats(Result(Verdict.SAFE, profile=prof), "p.ngc"), end="")
+    p.ngc: stats: 1,200 motions in 600 blocks, 2.500 s (480 motions/s); 1,100 motions proved by the vectorized screen
+    p.ngc: stats: time by tier: vectorized screen 0.010 s, exact tiers one by one 1.900 s, solver 0.300 s (7 calls), interpretation and the rest 0.290 s
+    p.ngc: stats: time by motion kind (decided one by one): arc 100 motions 2.200 s
+    p.ngc: stats: slowest blocks: line 12 (block 9, arc) 0.500 s
+    """
+    prof = result.profile or {}
+    if not prof:
+        return ""
+    name = name or result.file or "<program>"
+    tiers = prof.get("tiers", {})
+    solver = prof.get("solver", {})
+    total = prof.get("total_s", 0.0)
+    rate = f" ({prof['motions'] / total:,.0f} motions/s)" if total else ""
+    lines = [f"{prof['motions']:,} motions in {prof['blocks']:,} blocks, {total:.3f} s{rate}; "
+             f"{prof.get('motions_screened_vectorized', 0):,} motions proved by the vectorized screen"]
+    stopped = solver.get("stopped") or {}
+    stops = (", stopped: " + ", ".join(f"{k} {v}" for k, v in stopped.items())) if stopped else ""
+    lines.append(f"time by tier: vectorized screen {tiers.get('screen_vectorized_s', 0):.3f} s, exact tiers one by one "
+                 f"{tiers.get('exact_per_motion_s', 0):.3f} s, solver {tiers.get('solver_s', 0):.3f} s "
+                 f"({solver.get('calls', 0)} call{'s' if solver.get('calls', 0) != 1 else ''}{stops}), "
+                 f"interpretation and the rest {tiers.get('interpretation_and_rest_s', 0):.3f} s")
+    kinds = prof.get("kinds", {})
+    if kinds:
+        lines.append("time by motion kind (decided one by one): " + ", ".join(
+            f"{k} {v['motions']:,} motions {v['seconds_one_by_one']:.3f} s" for k, v in kinds.items()))
+    slow = prof.get("slowest", [])
+    if slow:
+        lines.append("slowest blocks: " + ", ".join(
+            f"line {x['line']} (block {x['block']}, {x['kind']}) {x['seconds']:.3f} s" for x in slow))
+    return "".join(f"{name}: stats: {line}\n" for line in lines)

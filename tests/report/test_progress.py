@@ -33,8 +33,25 @@ def test_bar_draws_on_a_terminal(monkeypatch):
     bar.close()
     assert result.verdict.label == "safe"
     out = stream.getvalue()
-    assert "\rverify [" in out and "100% line 403/403" in out
+    last = out.rstrip("\r ").split("\r")[-1]
+    assert last.startswith("verify 402 motions, 403 blocks (line 403/403) ") and "motions/s" in last, last
     assert out.endswith("\r")  # erased at the end, the terminal is left clean
+
+
+def test_loops_count_as_they_run(monkeypatch):
+    # three lines run 3,000 motions: the bar counts executed motions and blocks, not source lines
+    monkeypatch.setenv("TERM", "xterm")
+    stream = FakeTTY()
+    bar = progress_for(stream, "verify")
+    bar.min_interval = 0
+    m = load_machine(MACHINES / "grinder.toml")
+    prog = ("G21 G90 G54\nG0 X-250 Y300\nG1 Y150 F500\n#1 = 0\no100 while [#1 LT 1500]\n"
+            "G1 X-240\nG1 X-250\n#1 = [#1 + 1]\no100 endwhile\nM2\n")
+    assert verify_text(prog, m, progress=bar).verdict.label == "safe"
+    frames = [f for f in stream.getvalue().split("\r") if f.strip()]
+    counts = [int(f.split()[1].replace(",", "")) for f in frames]
+    assert counts == sorted(counts) and counts[-1] == 3002, frames[-1]
+    assert all("(line " in f for f in frames)
 
 
 def test_silent_when_not_a_terminal():
