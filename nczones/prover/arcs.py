@@ -11,7 +11,10 @@ width about ``2**-90``, or the exact rational point of a circle) is tested:
 when every point of it violates a zone
 (:func:`nczones.prover.exact.box_certainly_violates`), that is a certified
 counterexample.  Pieces and depth are bounded (:data:`MAX_PIECES`,
-:data:`MAX_DEPTH`); what they leave open goes to the solver.
+:data:`MAX_DEPTH`); what they leave open goes to the solver.  The work per
+arc is bounded (every enclosure is rounded outwards to a fixed grid, so the
+numbers stay short), so this tier, like the other exact ones, still runs
+once the run's budget is spent.
 
 Positions along the sweep
 -------------------------
@@ -543,7 +546,6 @@ class ArcEnclosure:
             self.p.stats["arc_pieces"] = self.p.stats.get("arc_pieces", 0) + 1
             if used > MAX_PIECES:
                 return "open", None
-            self.p.checkpoint()
             lo, hi = self.piece_box(a, b)
             if self.fits(lo, hi):
                 if contiguous and a is proved:
@@ -574,7 +576,6 @@ class ArcEnclosure:
             m = self.mid(a, w)
             if m is None:
                 break
-            self.p.checkpoint()
             lo, hi = self.piece_box(a, m)
             if self.fits(lo, hi):
                 a = m
@@ -633,13 +634,8 @@ def violation(prover, enc: ArcEnclosure, witness: _Mark, proved, hit, params) ->
         from ..errors import InternalError
 
         raise InternalError(f"block {seg.block}: no point strictly outside inside the margin box")
-    from .limits import BudgetSpent
-
-    try:
-        first, first_hit = enc.first_exit(proved, witness, hit)
-        samples = enc.depth_samples()
-    except BudgetSpent:
-        first, first_hit, samples = witness, hit, []
+    first, first_hit = enc.first_exit(proved, witness, hit)
+    samples = enc.depth_samples()
 
     def width(mk: _Mark) -> Fraction:
         lo, hi = enc.point_box(mk)
@@ -661,7 +657,7 @@ def violation(prover, enc: ArcEnclosure, witness: _Mark, proved, hit, params) ->
         block=seg.block, span=seg.span, zone=zone.name,
         point=tuple((a, outside[a]) for a in prover.axes),
         path_point=tuple((a, pmap[a]) for a in prover.axes),
-        parameter=enc.parameter(witness), parameter_exact=False,
+        parameter=enc.parameter(witness), parameter_exact=witness.kind in ("S", "E"),
         first_exit=tuple((a, first_hit[1][a]) for a in prover.axes),
         first_exit_parameter=enc.parameter(first), first_exit_exact=False,
         depth=depth, depth_exact=False, engine="exact",

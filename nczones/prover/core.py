@@ -3,18 +3,26 @@
 Per segment, in execution order:
 
 1. **Tier 1** — exact screens: a motion whose exact bounding box (arcs: exact
-   extremes from the swept quadrant crossings, radii enclosed from above)
-   fits every zone is proved; straight pieces against boxes and stepped
-   tables are then *decided* exactly in rational arithmetic
-   (:mod:`nczones.prover.exact`).  Column chunks are screened with numpy
+   extremes from the swept quadrant crossings, radii enclosed from above;
+   splines: their control points) fits every zone is proved; straight
+   pieces against boxes and stepped tables are then *decided* exactly in
+   rational arithmetic (:mod:`nczones.prover.exact`); arcs of every kind are
+   decided by exact enclosures of pieces of their sweep
+   (:mod:`nczones.prover.arcs`), splines by the local hulls of their knot
+   spans.  Column chunks are screened with numpy
    (:mod:`nczones.prover.screen`).
-2. **Tier 2** — Z3 (:mod:`nczones.prover.smt`) for polygons, arcs that the
-   screen did not prove, parameter ranges, and every flagged piece (its
-   model is the witness).  ``engine="z3"`` sends every segment here.
+2. **Tier 2** — Z3 (:mod:`nczones.prover.smt`) for polygons, arcs the
+   enclosures left open (tangencies), parameter ranges, and every flagged
+   piece (its model is the witness); a query holds only the zones the
+   motion's box does not fit.  ``engine="z3"`` sends every segment here.
 3. **Tier 3** — over-approximations (helices, spirals) whose witness cannot
    be certified on the exact path are refined by splitting the sweep
    (:mod:`nczones.prover.refine`, budget 64 pieces / depth 8); what the
    budget cannot decide gives ``unknown`` with the reason.
+
+Every solver query is bounded (rlimit and a time backstop), the run has a
+budget, and Ctrl-C stops it (:mod:`nczones.prover.limits`); a motion a
+limit stopped is ``unknown`` with that reason, never proved.
 
 Invariants: ``SAFE`` only when every segment was proved; every reported
 violation was re-checked with ``AllowedSet.violated_zones`` on an exact
@@ -231,13 +239,13 @@ class Prover:
         tl = q(seg.tool_length)
         if with_params and self._tool_dev(seg):
             tl = add(tl, *self._tool_dev(seg))
-        zones_backup = self.zones
         if zone is not None:
-            self.zones = (zone,)
-        try:
-            body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
-        finally:
-            self.zones = zones_backup
+            zones = (zone,)
+        elif with_params:
+            zones = self.zones
+        else:  # only the zones the piece's box does not fit can be violated on it
+            zones = self.relevant_zones(piece.p0, piece.p1, seg.tool_length)
+        body.append(f"(assert {self._violation_formula(pt, tl, enclosure, zones)})")
         return "".join(body), names
 
     def _arc_query(self, seg: Segment, g: ArcGeom, with_params: bool, w_dir=None) -> tuple[str, list[str]]:
