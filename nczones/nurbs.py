@@ -183,7 +183,8 @@ class Nurbs:
         return len(set(self.knots[: p + 1])) == 1 and len(set(self.knots[-p - 1:])) == 1
 
     @classmethod
-    def _unchecked(cls, degree, knots, points, weights) -> "Nurbs":
+    def _unchecked(cls, degree: int, knots: tuple[Fraction, ...], points: tuple[tuple[Fraction, ...], ...],
+                   weights: tuple[Fraction, ...]) -> "Nurbs":
         obj = object.__new__(cls)
         for name, value in (("degree", degree), ("knots", tuple(knots)), ("points", tuple(points)),
                             ("weights", tuple(weights))):

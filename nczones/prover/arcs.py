@@ -50,6 +50,7 @@ Soundness (why a fitting box proves the piece, why a certified point is real)
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any
 
 from ..motion import Segment
 from . import exact as ex
@@ -70,6 +71,10 @@ BITS = 96
 EXIT_STEPS = 24
 
 Interval = tuple[Fraction, Fraction]
+Vec = tuple[Fraction, Fraction]
+IVec = tuple[Interval, Interval]
+Box = tuple[dict[str, Fraction], dict[str, Fraction]]
+Hit = tuple[Any, dict[str, Fraction], list]  # (zone, point, violated zones)
 _GRID = 2**72
 
 
@@ -116,7 +121,7 @@ def _atan_iv(m: Fraction) -> Interval:
     return shift[0] + lo, shift[1] + hi
 
 
-def _angle_iv(bases, v, ccw: bool) -> Interval:
+def _angle_iv(bases: list[Vec], v: Vec, ccw: bool) -> Interval:
     """Enclosure of the angle from ``bases[0]`` to ``v`` in the arc's direction, in ``[0, 2π)``
     (``bases``: the start direction turned by 0, 1, 2, 3 right angles in that direction)."""
     for k, base in enumerate(bases):
@@ -150,12 +155,12 @@ def _pt(x: Fraction) -> Interval:
     return x, x
 
 
-def _cross(a, b) -> Interval:
+def _cross(a: IVec, b: IVec) -> Interval:
     """cross(a, b) of two interval vectors."""
     return _isub(_imul(a[0], b[1]), _imul(a[1], b[0]))
 
 
-def _rot(d, m: Fraction, ccw: bool):
+def _rot(d: Vec, m: Fraction, ccw: bool) -> Vec:
     """``d`` turned by ``2·atan(m)`` in the arc's direction (exact; keeps the length)."""
     perp = (-d[1], d[0]) if ccw else (d[1], -d[0])
     den = 1 + m * m
@@ -167,12 +172,12 @@ class _Mark:
 
     __slots__ = ("kind", "g", "d", "box", "theta")
 
-    def __init__(self, kind: str, g: Fraction, d=None):
+    def __init__(self, kind: str, g: Fraction, d: Vec = (F0, F0)):
         self.kind = kind  # "S", "E" or "d"
         self.g = g  # position (for E: a lower bound of it)
         self.d = d  # rational direction from the centre (d-marks)
-        self.box = None  # cached point enclosure: (lo, hi) dicts
-        self.theta = None  # cached angle enclosure
+        self.box: Box | None = None  # cached point enclosure: (lo, hi) dicts
+        self.theta: Interval | None = None  # cached angle enclosure
 
 
 class ArcEnclosure:
@@ -198,7 +203,7 @@ class ArcEnclosure:
     ('t', 'exact')
     """
 
-    def __init__(self, prover, seg: Segment, g: ArcGeom):
+    def __init__(self, prover: Any, seg: Segment, g: ArcGeom):
         self.p = prover
         self.seg = seg
         self.g = g
@@ -227,8 +232,10 @@ class ArcEnclosure:
         self.helix = g.helix
         self.moving = [k for k in range(len(g.start)) if k not in (self.ia, self.ib) and g.start[k] != g.end[k]]
         self.nu = sqrt_bounds(self.u2, BITS)  # |d| of every d-mark (rotations keep the length)
+        self.rs: Interval = (F0, F0)
+        self.re: Interval = (F0, F0)
         if g.centre is None:
-            r = abs(g.r_signed)
+            r = abs(g.r_signed or F0)
             self.rho_const: Interval | None = (r, r)
         elif not self.spiral:
             self.rho_const = sqrt_bounds(g.r2_lo, BITS)
@@ -246,11 +253,11 @@ class ArcEnclosure:
         self.full = g.s == g.e  # back to the start point after whole turns (ArcGeom.full also counts laps)
         self.turns = seg.turns
         self.marks = self._initial_marks()
-        self._total = None
+        self._total: Interval | None = None
 
     # ------------------------------------------------------------------ marks
 
-    def _dir_interval(self, mk: _Mark):
+    def _dir_interval(self, mk: _Mark) -> IVec:
         """The direction from the centre to the mark, as an interval vector over C."""
         if mk.kind == "d":
             return (_pt(mk.d[0]), _pt(mk.d[1]))
@@ -266,7 +273,7 @@ class ArcEnclosure:
             return 0
         return None
 
-    def _after(self, a, b) -> bool | None:
+    def _after(self, a: IVec, b: IVec) -> bool | None:
         """Is direction b certainly strictly after a (within a half turn, in the arc's direction)? None: unsure."""
         t = self._turn(a, b)
         return None if t is None else t > 0
@@ -313,31 +320,34 @@ class ArcEnclosure:
 
     def _theta(self, mk: _Mark) -> Interval:
         """Enclosure of the swept angle from the start to the mark."""
-        if mk.theta is None:
-            if mk.kind == "S":
-                mk.theta = (F0, F0)
-            elif mk.kind == "E":
-                mk.theta = self.total()
-            else:
-                j = int(mk.g)
-                m = mk.g - j
-                pi_lo, pi_hi = _PI
-                a_lo, a_hi = _atan_iv(m)
-                mk.theta = _out((j * pi_lo / 2 + 2 * a_lo - self.delta, j * pi_hi / 2 + 2 * a_hi + self.delta))
-        return mk.theta
+        if mk.theta is not None:
+            return mk.theta
+        theta: Interval
+        if mk.kind == "S":
+            theta = (F0, F0)
+        elif mk.kind == "E":
+            theta = self.total()
+        else:
+            j = int(mk.g)
+            m = mk.g - j
+            pi_lo, pi_hi = _PI
+            a_lo, a_hi = _atan_iv(m)
+            theta = _out((j * pi_lo / 2 + 2 * a_lo - self.delta, j * pi_hi / 2 + 2 * a_hi + self.delta))
+        mk.theta = theta
+        return theta
 
     def total(self) -> Interval:
         """Enclosure of the whole swept angle (laps included)."""
-        if self._total is None:
-            pi_lo, pi_hi = _PI
-            if self.full:
-                self._total = (2 * pi_lo * (self.turns + 1), 2 * pi_hi * (self.turns + 1))
-            else:
-                w = (self.g.e[0] - self.cstar[0], self.g.e[1] - self.cstar[1])
-                a_lo, a_hi = _angle_iv(self.bases, w, self.ccw)
-                self._total = (a_lo + 2 * pi_lo * self.turns - 2 * self.delta,
-                               a_hi + 2 * pi_hi * self.turns + 2 * self.delta)
-            self._total = _out(self._total)
+        if self._total is not None:
+            return self._total
+        pi_lo, pi_hi = _PI
+        if self.full:
+            total = (2 * pi_lo * (self.turns + 1), 2 * pi_hi * (self.turns + 1))
+        else:
+            w = (self.g.e[0] - self.cstar[0], self.g.e[1] - self.cstar[1])
+            a_lo, a_hi = _angle_iv(self.bases, w, self.ccw)
+            total = (a_lo + 2 * pi_lo * self.turns - 2 * self.delta, a_hi + 2 * pi_hi * self.turns + 2 * self.delta)
+        self._total = _out(total)
         return self._total
 
     def _fraction(self, theta: Interval) -> Interval:
@@ -364,7 +374,7 @@ class ArcEnclosure:
             out[k] = _out((min(v), max(v)))
         return out
 
-    def _unit(self, d) -> tuple[Interval, Interval]:
+    def _unit(self, d: Vec) -> IVec:
         """Enclosure of d/|d| for a rational direction of length |u| (d-marks)."""
         n_lo, n_hi = self.nu
         out = []
@@ -372,20 +382,22 @@ class ArcEnclosure:
             out.append(_out((x / n_hi, x / n_lo) if x >= 0 else (x / n_lo, x / n_hi)))
         return out[0], out[1]
 
-    def point_box(self, mk: _Mark) -> tuple[dict, dict]:
+    def point_box(self, mk: _Mark) -> Box:
         """Enclosure (lo, hi per axis) of the path point at the mark."""
         if mk.box is not None:
             return mk.box
         g = self.g
         if mk.kind in ("S", "E"):
             p = g.start if mk.kind == "S" else g.end
-            lo = dict(zip(self.axes, p))
-            mk.box = (lo, lo)
+            ends = dict(zip(self.axes, p))
+            mk.box = (ends, ends)
             return mk.box
-        lo, hi = {}, {}
-        if self.circle_exact:
+        lo: dict[str, Fraction] = {}
+        hi: dict[str, Fraction] = {}
+        plane: IVec
+        if self.circle_exact and g.centre is not None:
             c = g.centre
-            plane = ((c[0] + mk.d[0],) * 2, (c[1] + mk.d[1],) * 2)
+            plane = ((c[0] + mk.d[0], c[0] + mk.d[0]), (c[1] + mk.d[1], c[1] + mk.d[1]))
         else:
             f = self._fraction(self._theta(mk)) if self.spiral else (F0, F1)
             rho = self._rho(f)
@@ -404,16 +416,12 @@ class ArcEnclosure:
         mk.box = (lo, hi)
         return mk.box
 
-    def piece_box(self, a: _Mark, b: _Mark) -> tuple[dict, dict]:
+    def piece_box(self, a: _Mark, b: _Mark) -> Box:
         """A rational box holding the path between two marks (less than a half turn apart)."""
-        need_angle = self.spiral or bool(self.moving)
-        f = None
-        if need_angle:
+        f: Interval = (F0, F1)
+        if self.spiral or self.moving:
             f = (self._fraction(self._theta(a))[0], self._fraction(self._theta(b))[1])
-        if self.spiral:
-            rho = self._rho(f)
-        else:
-            rho = self.rho_const
+        rho = self._rho(f)
         xs: list[Interval] = []
         ys: list[Interval] = []
         da, db = self._dir_interval(a), self._dir_interval(b)
@@ -453,7 +461,7 @@ class ArcEnclosure:
                 lo[self.axes[k]], hi[self.axes[k]] = v0, v1
         return lo, hi
 
-    def _unit_interval(self, mk: _Mark, dv):
+    def _unit_interval(self, mk: _Mark, dv: IVec) -> IVec:
         if mk.kind == "d":
             return self._unit(mk.d)
         # S or E over the centre box: d / |d| with |d|^2 an interval
@@ -480,20 +488,20 @@ class ArcEnclosure:
             return True
         if self.full or self.turns > 0:  # every direction is swept (the mark's lap is its own)
             return True
-        if self.rational_centre:
+        if self.g.centre is not None:
             c = self.g.centre
             u = (self.g.s[0] - c[0], self.g.s[1] - c[1])
             w = (self.g.e[0] - c[0], self.g.e[1] - c[1])
             return in_sweep(u, w, mk.d, self.ccw, False)
-        u = self._dir_interval(_Mark("S", F0))
-        w = self._dir_interval(_Mark("E", F0))
+        ui = self._dir_interval(_Mark("S", F0))
+        wi = self._dir_interval(_Mark("E", F0))
         d = (_pt(mk.d[0]), _pt(mk.d[1]))
-        if self.g.r_signed > 0:  # at most a half turn: strictly after u and strictly before w
-            return self._turn(u, d) == 1 and self._turn(d, w) == 1
+        if (self.g.r_signed or F0) > 0:  # at most a half turn: strictly after u and strictly before w
+            return self._turn(ui, d) == 1 and self._turn(d, wi) == 1
         # more than a half turn: certainly not in the closed complementary sector (w -> u)
-        return self._turn(w, d) == -1 or self._turn(d, u) == -1
+        return self._turn(wi, d) == -1 or self._turn(d, ui) == -1
 
-    def _turn(self, a, b) -> int | None:
+    def _turn(self, a: IVec, b: IVec) -> int | None:
         """Sign of cross(a, b) in the arc's direction (1: b after a), None when not certain."""
         cr = _cross(a, b)
         if not self.ccw:
@@ -502,12 +510,12 @@ class ArcEnclosure:
 
     # ------------------------------------------------------------------ deciding
 
-    def fits(self, lo: dict, hi: dict) -> bool:
+    def fits(self, lo: dict[str, Fraction], hi: dict[str, Fraction]) -> bool:
         from .core import box_fits
 
         return box_fits(self.p.allowed, lo, hi, self.p.margin, self.seg.tool_length)
 
-    def certify(self, mk: _Mark):
+    def certify(self, mk: _Mark) -> Hit | None:
         """(zone, point, bad zones) when every point of the mark's enclosure violates a zone, else None."""
         if not self.certainly_inside(mk):
             return None
@@ -529,7 +537,7 @@ class ArcEnclosure:
                 return z, pt, bad
         return None
 
-    def decide(self):
+    def decide(self) -> tuple[str, tuple[_Mark, _Mark | None, Hit] | None]:
         """("safe", None), ("unsafe", (witness mark, proved-up-to mark, hit)) or ("open", None)."""
         marks = self.marks
         hit = self.certify(marks[0])
@@ -553,12 +561,12 @@ class ArcEnclosure:
                 continue
             m = self.mid(a, b)
             hit = self.certify(m) if m is not None else None
-            if hit is None and b.kind == "E":
+            if hit is not None and m is not None:
+                return "unsafe", (m, proved if contiguous else None, hit)
+            if b.kind == "E":
                 hit = self.certify(b)
                 if hit is not None:
-                    m = b
-            if hit is not None:
-                return "unsafe", (m, proved if contiguous else None, hit)
+                    return "unsafe", (b, proved if contiguous else None, hit)
             if m is None or depth >= MAX_DEPTH:
                 open_ = True
                 contiguous = False
@@ -567,7 +575,7 @@ class ArcEnclosure:
             stack.append((a, m, depth + 1))
         return ("open", None) if open_ else ("safe", None)
 
-    def first_exit(self, proved: _Mark | None, witness: _Mark, hit):
+    def first_exit(self, proved: _Mark | None, witness: _Mark, hit: Hit) -> tuple[_Mark, Hit]:
         """Narrow the first exit between the proved prefix and the witness: (mark, hit)."""
         if proved is None or proved is witness:
             return witness, hit
@@ -594,7 +602,7 @@ class ArcEnclosure:
             return F0
         return min(F1, max(F0, ((th[0] + th[1]) / 2) / ((t[0] + t[1]) / 2))).limit_denominator(10**9)
 
-    def depth_samples(self) -> list[tuple[dict, Fraction]]:
+    def depth_samples(self) -> list[tuple[dict[str, Fraction], Fraction]]:
         """Certified violating points along the arc (eight per quarter) and how far each may be from
         its path point, for a depth lower bound."""
         out = []
@@ -609,7 +617,7 @@ class ArcEnclosure:
         return out
 
 
-def decide_arc(prover, seg: Segment, g: ArcGeom, params):
+def decide_arc(prover: Any, seg: Segment, g: ArcGeom, params: tuple) -> Any:
     """Decide an arc by enclosures: an ``_Outcome`` (proved or a certified violation), or None when the
     pieces and depth allowed did not settle it (then the solver decides)."""
     from .core import _Outcome
@@ -619,13 +627,14 @@ def decide_arc(prover, seg: Segment, g: ArcGeom, params):
     if verdict == "safe":
         prover.stats["arc_pieces_proved"] = prover.stats.get("arc_pieces_proved", 0) + 1
         return _Outcome(engine="exact")
-    if verdict == "open":
+    if verdict == "open" or info is None:
         return None
     witness, proved, hit = info
     return _Outcome(violation(prover, enc, witness, proved, hit, params), engine="exact")
 
 
-def violation(prover, enc: ArcEnclosure, witness: _Mark, proved, hit, params) -> Violation:
+def violation(prover: Any, enc: ArcEnclosure, witness: _Mark, proved: _Mark | None, hit: Hit,
+              params: tuple) -> Violation:
     """The report of a certified violation on an arc (first exit narrowed, depth a lower bound)."""
     seg, g = enc.seg, enc.g
     zone, pmap, bad = hit
@@ -649,10 +658,8 @@ def violation(prover, enc: ArcEnclosure, witness: _Mark, proved, hit, params) ->
     exact_point = witness.kind in ("S", "E") or enc.circle_exact
     note = ""
     if not exact_point:
-        lo, hi = enc.point_box(witness)
-        width = max(hi[a] - lo[a] for a in lo)
-        note = (f"irrational path point; reported point within {float(width):.1e} mm of it, the whole "
-                "enclosure violates")
+        note = (f"irrational path point; reported point within {float(width(witness)):.1e} mm of it, the "
+                "whole enclosure violates")
     return Violation(
         block=seg.block, span=seg.span, zone=zone.name,
         point=tuple((a, outside[a]) for a in prover.axes),

@@ -41,6 +41,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from typing import Any
 
 __all__ = ["RunLimits", "BudgetSpent", "DEFAULT_BUDGET_S", "DEFAULT_QUERY_TIME_S", "LINEAR_RLIMIT",
            "NONLINEAR_RLIMIT"]
@@ -53,6 +54,9 @@ DEFAULT_QUERY_TIME_S = 5.0
 LINEAR_RLIMIT = 5_000_000
 #: Resource limit of a nonlinear query (arcs, helices, R-format centres, products of parameters).
 NONLINEAR_RLIMIT = 5_000_000
+
+
+_Active = tuple[int, Any, "float | None", str]
 
 
 class BudgetSpent(Exception):
@@ -95,7 +99,7 @@ class RunLimits:
         self.spent_at: float | None = None
         self.interrupted = False
         self._lock = threading.Lock()
-        self._active = None  # (sequence number, z3 context, deadline, why) of the running query
+        self._active: _Active | None = None  # (sequence number, z3 context, deadline, why) of the running query
         self._seq = 0
         self._stopped: dict[int, str] = {}
         self._thread: threading.Thread | None = None
@@ -124,7 +128,7 @@ class RunLimits:
     # ------------------------------------------------------------------ queries
 
     @contextmanager
-    def query(self, ctx) -> Iterator[Callable[[], str]]:
+    def query(self, ctx: Any) -> Iterator[Callable[[], str]]:
         """Around one Z3 call on ``ctx``: the watchdog may interrupt it.
 
         Yields a function that tells, after the call, why it was stopped:
@@ -151,7 +155,7 @@ class RunLimits:
                 self._active = None
                 self._stopped.pop(seq, None)
 
-    def _fire(self, reason: str, act=None) -> None:
+    def _fire(self, reason: str, act: _Active | None = None) -> None:
         """Interrupt the running query (called by the watchdog); only ``act`` when given."""
         with self._lock:
             if act is not None and self._active is not act:
@@ -211,7 +215,7 @@ class RunLimits:
                     s.close()
                 self._wake = None
 
-    def _watchdog(self, old_fd) -> None:
+    def _watchdog(self, old_fd: int | None) -> None:
         wake = self._wake
         while not self._closing:
             with self._lock:

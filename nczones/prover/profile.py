@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import heapq
 import time
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -44,7 +46,7 @@ class RunProfile:
     (2, 5, [2, 0.75])
     """
 
-    def __init__(self, slowest: int = 10, clock=time.perf_counter):
+    def __init__(self, slowest: int = 10, clock: Callable[[], float] = time.perf_counter):
         self.clock = clock
         self.started = clock()
         self.motions = 0
@@ -62,7 +64,7 @@ class RunProfile:
         n = len(chunk)
         self.screen_s += seconds
         self.screened_rows += n - flagged
-        if n:
+        if n and chunk.block is not None and chunk.kind is not None:
             self.blocks = max(self.blocks, int(chunk.block[-1]) + 1)
             counts = np.bincount(chunk.kind.astype(np.int64), minlength=len(SegmentKind))
             for k, c in enumerate(counts.tolist()):
@@ -94,7 +96,7 @@ class RunProfile:
         return [{"block": b, "line": line, "kind": k, "seconds": round(s, 6)}
                 for s, _, b, line, k in sorted(self._slowest, reverse=True)]
 
-    def as_dict(self, solver, total_s: float | None = None) -> dict:
+    def as_dict(self, solver: Any, total_s: float | None = None) -> dict[str, Any]:
         """The profile for reports: tiers, kinds, solver, slowest (seconds rounded to microseconds)."""
         total = self.clock() - self.started if total_s is None else total_s
         solver_s = getattr(solver, "seconds", 0.0)
