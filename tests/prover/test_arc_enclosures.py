@@ -227,3 +227,16 @@ def test_multi_turn_helix_leaving_the_allowed_set_is_unsafe_with_a_witness():
     # unsafe; with its end at Z-30 it stays above Z-25 beyond X5 (at Z-20 there): safe
     assert verify_segments([replace(seg, turns=1)], m).verdict is Verdict.UNSAFE
     assert verify_segments([replace(seg, turns=1, end=(F(-10), F0, F(-30)))], m).verdict is Verdict.SAFE
+
+
+@sized(50)
+@given(st.fractions(min_value=0, max_value=1, max_denominator=2**40))
+def test_fixed_point_arctangent_encloses_the_series(m):
+    from nczones.prover.arcs import _atan_iv, _out
+    from nczones.prover.geometry import atan_bounds
+
+    lo, hi = _atan_iv(m)
+    a, b = atan_bounds(m, 60)
+    assert lo <= a <= b <= hi and hi - lo < F(1, 2**85)
+    o_lo, o_hi = _out((lo, hi))
+    assert o_lo <= lo and hi <= o_hi and o_hi - o_lo <= hi - lo + F(2, 2**72)
