@@ -116,6 +116,18 @@ def test_prover_never_safe_when_an_exact_curve_point_is_outside(c):
         assert MACHINE.allowed.violated_zones(dict(v.path_point))  # the witness is a point of the curve
 
 
+@settings(max_examples=25, deadline=None, derandomize=True)
+@given(curves())
+def test_screened_spline_agrees_with_the_solver_path(c):
+    # the screens (the box of all control points, then each knot span's local hull) against the solver
+    # path (a hull query per knot span); both are sound, so where both decide they agree
+    seg = spline_segment(c)
+    screened = verify_segments([seg], MACHINE)
+    solver = verify_segments([seg], MACHINE, engine="z3")
+    if Verdict.UNKNOWN not in (screened.verdict, solver.verdict):
+        assert screened.verdict == solver.verdict
+
+
 def test_prover_proves_a_curve_that_stays_inside():
     c = Nurbs(2, clamped_uniform_knots(5, 3), ((F(0), F(0)), (F(0), F(1)), (F(2), F(2)), (F(2), F(0)), (F(0), F(0))),
               (F(1), F(1), F(1), F(1), F(2)))
