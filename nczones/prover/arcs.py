@@ -293,7 +293,8 @@ class ArcEnclosure:
         last = 4 * self.turns + k  # quarter boundaries 1..last lie before (or at) the end
         marks = [S] + [self._dmark(Fraction(j)) for j in range(1, last + 1)]
         if exact_end and self.rational_centre:
-            marks.pop()  # the end lies exactly on that boundary
+            if last > 0:
+                marks.pop()  # the end lies exactly on that boundary
             marks.append(_Mark("E", Fraction(last)))
             return marks
         if last > 0 and not self.rational_centre:
