@@ -604,13 +604,14 @@ class ArcEnclosure:
         return min(F1, max(F0, ((th[0] + th[1]) / 2) / ((t[0] + t[1]) / 2))).limit_denominator(10**9)
 
     def depth_samples(self) -> list[tuple[dict[str, Fraction], Fraction]]:
-        """Certified violating points along the arc (eight per quarter) and how far each may be from
+        """Certified violating points along the arc (sixteen per quarter) and how far each may be from
         its path point, for a depth lower bound."""
         out = []
+        n = 16
         for i in range(len(self.marks) - 1):
             a, b = self.marks[i], self.marks[i + 1]
-            for k in range(1, 8):
-                mk = self._dmark(a.g + (b.g - a.g) * k / 8)
+            for k in range(1, n):
+                mk = self._dmark(a.g + (b.g - a.g) * k / n)
                 h = self.certify(mk)
                 if h is not None:
                     lo, hi = self.point_box(mk)
@@ -656,7 +657,11 @@ def violation(prover: Any, enc: ArcEnclosure, witness: _Mark, proved: _Mark | No
     for p, w in [(pmap, width(witness)), (first_hit[1], width(first)), *samples, *ends]:
         for z in prover.allowed.violated_zones(p, seg.tool_length, prover.margin):
             depth = max(depth, ex.point_depth(z, prover.allowed.seen_by(z, p, seg.tool_length), prover.margin) - w)
-    exact_point = witness.kind in ("S", "E") or enc.circle_exact
+    # the path point is exact when it is an end point, or a point of a circle (rational centre) along
+    # which no other axis moves; otherwise it is the chosen point of a tiny box around the exact one
+    if depth.denominator > 10**12:  # a lower bound: keep it short (rounded down to 1e-12)
+        depth = Fraction(depth.numerator * 10**12 // depth.denominator, 10**12)
+    exact_point = witness.kind in ("S", "E") or (enc.circle_exact and not enc.moving)
     note = ""
     if not exact_point:
         note = (f"irrational path point; reported point within {float(width(witness)):.1e} mm of it, the "
@@ -671,5 +676,6 @@ def violation(prover: Any, enc: ArcEnclosure, witness: _Mark, proved: _Mark | No
         depth=depth, depth_exact=False, engine="exact",
         segment_kind="helix" if g.helix else "arc", derived=seg.derived,
         params=prover._written_params(params), zones=tuple(z.name for z in bad), note=note,
+        on_path=exact_point,
     )
 
