@@ -210,7 +210,7 @@ class _Encoder:
 
 def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant | str | None = None,
                     margin: Fraction = F0, max_violations: int = 20, prover: Prover | None = None,
-                    rlimit: int = 20_000_000, limits=None) -> RecoveryOutcome:
+                    rlimit: int = 20_000_000, limits: Any = None) -> RecoveryOutcome:
     """Prove the recovery path from every break point of every cutting motion.
 
     ``segments`` is the program's motion (an interpretation or segments);

@@ -348,7 +348,7 @@ class Solver:
     name = "z3"
     version = Z3_VERSION
 
-    def __init__(self, rlimit: int | None = None, *, nonlinear_rlimit: int | None = None, limits=None):
+    def __init__(self, rlimit: int | None = None, *, nonlinear_rlimit: int | None = None, limits: Any = None):
         from .limits import LINEAR_RLIMIT, NONLINEAR_RLIMIT
 
         self.ctx = z3.Context()
