@@ -1278,6 +1278,8 @@ def verify_segments(
         verdict = Verdict.UNKNOWN
     else:
         verdict = Verdict.SAFE
+    summary = profile.as_dict(prover.solver)
+    profile.solver_done(prover.solver)
     stats = dict(prover.stats)
     stats["z3_queries"] = prover.solver.queries
     stats.update({f"solver_stopped_{k}": v for k, v in sorted(prover.solver.stopped.items())})
@@ -1289,7 +1291,7 @@ def verify_segments(
         timings=(("prove_s", time.perf_counter() - t0),), notes=tuple(notes),
         stats=tuple(stats.items()), margin=Fraction(margin), params=tuple(params), engine=engine,
         truncated=truncated, file=file, interrupted=interrupted, budget_s=limits.budget_s,
-        profile=profile.as_dict(prover.solver),
+        profile=summary,
     )
 
 

@@ -55,6 +55,7 @@ class RunProfile:
         self.screen_s = 0.0
         self.screened_rows = 0
         self.decide_s = 0.0
+        self._solvers: list[tuple[int, float, dict[str, int]]] = []  # (calls, seconds, stopped) of finished runs
         self._slowest_n = slowest
         self._slowest: list[tuple[float, int, int, int | None, str]] = []  # min-heap
         self._n = 0
@@ -96,10 +97,30 @@ class RunProfile:
         return [{"block": b, "line": line, "kind": k, "seconds": round(s, 6)}
                 for s, _, b, line, k in sorted(self._slowest, reverse=True)]
 
-    def as_dict(self, solver: Any, total_s: float | None = None) -> dict[str, Any]:
-        """The profile for reports: tiers, kinds, solver, slowest (seconds rounded to microseconds)."""
+    @staticmethod
+    def _solver_work(solver: Any) -> tuple[int, float, dict[str, int]]:
+        return (getattr(solver, "queries", 0), getattr(solver, "seconds", 0.0),
+                dict(getattr(solver, "stopped", {})))
+
+    def solver_done(self, solver: Any) -> None:
+        """A prover's run ended: its solver's calls, seconds and stops count in every later summary
+        (a program proved as several cases or block-delete positions has one profile)."""
+        self._solvers.append(self._solver_work(solver))
+
+    def as_dict(self, solver: Any = None, total_s: float | None = None) -> dict[str, Any]:
+        """The profile for reports: tiers, kinds, solver, slowest (seconds rounded to microseconds).
+
+        ``solver``: the running prover's solver; its work is added to that of the
+        finished runs (:meth:`solver_done`).
+        """
         total = self.clock() - self.started if total_s is None else total_s
-        solver_s = getattr(solver, "seconds", 0.0)
+        runs = self._solvers + ([] if solver is None else [self._solver_work(solver)])
+        calls = sum(c for c, _, _ in runs)
+        solver_s = sum(s for _, s, _ in runs)
+        stopped: dict[str, int] = {}
+        for _, _, st in runs:
+            for k, v in st.items():
+                stopped[k] = stopped.get(k, 0) + v
         tiers = {
             "screen_vectorized_s": round(self.screen_s, 6),
             "exact_per_motion_s": round(max(0.0, self.decide_s - solver_s), 6),
@@ -113,7 +134,6 @@ class RunProfile:
             "motions_screened_vectorized": self.screened_rows,
             "tiers": tiers,
             "kinds": {k: {"motions": v[0], "seconds_one_by_one": round(v[1], 6)} for k, v in sorted(self.kinds.items())},
-            "solver": {"calls": getattr(solver, "queries", 0), "seconds": round(solver_s, 6),
-                       "stopped": dict(sorted(getattr(solver, "stopped", {}).items()))},
+            "solver": {"calls": calls, "seconds": round(solver_s, 6), "stopped": dict(sorted(stopped.items()))},
             "slowest": self.slowest(),
         }
