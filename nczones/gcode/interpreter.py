@@ -742,8 +742,12 @@ class Interpreter:
             return
         self._execute_general(block)
 
-    def _execute_general(self, block: Block) -> None:
-        """:meth:`execute` for a block the plain-move lane did not take."""
+    def _split_words(
+        self, block: Block
+    ) -> tuple[list[tuple[int, Word]], list[tuple[int, Word]], dict[str, Word], list[tuple[int, Word]]]:
+        """A block's words as (G codes as (key, word), M codes as (number, word), the other words by letter,
+        axis words as (axis index, word)); GC202/GC203/GC204 for a G or M code no control has, an axis the
+        machine lacks, a letter twice."""
         gcodes: list[tuple[int, Word]] = []
         mcodes: list[tuple[int, Word]] = []
         words: dict[str, Word] = {}
@@ -773,6 +777,11 @@ class Interpreter:
                             w,
                         )
                     axis_words.append((i, w))
+        return gcodes, mcodes, words, axis_words
+
+    def _execute_general(self, block: Block) -> None:
+        """:meth:`execute` for a block the plain-move lane did not take."""
+        gcodes, mcodes, words, axis_words = self._split_words(block)
         if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self._machine_at is None \
                 and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
                                len(words) - len(axis_words) - ("F" in words) - ("S" in words)):

@@ -40,12 +40,10 @@ from ...machine import FANUC_OFFSETS, Machine
 from ...motion import PLANE_AXES, Plane, SegmentKind
 from ..blocks import Block, Word
 from ..interpreter import (
-    AXIS_LETTERS,
     WORK_OFFSETS,
     Interpreter,
     _dadd,
     _fmt,
-    _gkey,
     _gname,
     _qadd,
     _sqrt_diff_exceeds,
@@ -268,33 +266,7 @@ class FanucInterpreter(Interpreter):
 
     # ------------------------------------------------------------------ one block
     def _execute_general(self, block: Block) -> None:
-        gcodes: list[tuple[int, Word]] = []
-        mcodes: list[tuple[int, Word]] = []
-        words: dict[str, Word] = {}
-        axis_words: list[tuple[int, Word]] = []
-        for w in block.words:
-            letter = w.letter
-            if letter == "G":
-                k = _gkey(w.value)
-                if k is None:
-                    raise self._error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at "
-                                      "most one decimal", w)
-                gcodes.append((k, w))
-            elif letter == "M":
-                if w.value.denominator != 1:
-                    raise self._error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
-                mcodes.append((w.value.numerator, w))
-            else:
-                if letter in words:
-                    raise self._error("GC204", f"two {letter} words in one block ({words[letter].text or letter} "
-                                      f"and {w.text or letter}); a letter may appear once", w)
-                words[letter] = w
-                if letter in AXIS_LETTERS:
-                    i = self.index.get(letter)
-                    if i is None:
-                        raise self._error("GC203", f"axis word {w.text or letter} names axis {letter}, which this "
-                                          f"machine does not have (axes: {', '.join(self.axes)})", w)
-                    axis_words.append((i, w))
+        gcodes, mcodes, words, axis_words = self._split_words(block)
         # ---- modal groups: of one group the last code wins; one-shot codes one per block
         groups: dict[int, tuple[int, Word]] = {}
         for k, w in gcodes:

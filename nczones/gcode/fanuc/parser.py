@@ -470,15 +470,10 @@ def _parse(line: str, s: str, cols: list[int], comments: list) -> FanucLine:
             stmt_at = (_column(cols, start), _end_column(cols, k))
             i = k
             continue
-        if s.startswith("do", i) and i + 2 < n and s[i + 2].isdigit():
-            ident, k = p.loop_id(i + 2, "do")
-            stmt = ("do", ident)
-            stmt_at = (_column(cols, start), _end_column(cols, k))
-            i = k
-            continue
-        if s.startswith("end", i) and i + 3 < n and s[i + 3].isdigit():
-            ident, k = p.loop_id(i + 3, "end")
-            stmt = ("end", ident)
+        bracket = "do" if s.startswith("do", i) else "end" if s.startswith("end", i) else None
+        if bracket is not None and i + len(bracket) < n and s[i + len(bracket)].isdigit():  # DOm, ENDm
+            ident, k = p.loop_id(i + len(bracket), bracket)
+            stmt = (bracket, ident)
             stmt_at = (_column(cols, start), _end_column(cols, k))
             i = k
             continue

@@ -347,51 +347,43 @@ class FanucRunner:
             frame = self.frames[-1]
             source = frame.source
             compiled = source.cache.get(pos)
-            if compiled is not None and not (fast and pos in fast):  # a line that ran before
-                if compiled[1] or compiled[0].percent or compiled[0].program is not None:
-                    target = yield from self.execute(compiled, pos, lineno)
-                else:
-                    target = self.macro_line(compiled, pos, lineno)
-                if target is None:
-                    return
-                pos, lineno = target
-                continue
-            src = source.src
-            if fast and src is main_src and pos in fast and pos != declined:
-                req = FastRunRequest(pos, lineno, self.index)
-                yield req
-                if req.resume is not None:
-                    pos, lineno, self.index = req.resume
-                    self.started = self.ran = True
-                    declined = -1
-                    continue
-                declined = pos
-            line, nxt = src.line_at(pos)
-            if line is None:
-                self.end_of_text(lineno)
-                return
-            if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
-                parsed = scan_plain(line)
-                if parsed is not None and self.plain_ok(parsed[2], parsed[3], line):
-                    delete, number, letters, values = parsed
-                    pos, lineno0, lineno = nxt, lineno, lineno + 1
-                    if delete and self.block_delete:
-                        continue
-                    if letters:
+            if compiled is None or (fast and pos in fast):  # a line not run before, or a fast run's start
+                src = source.src
+                if fast and src is main_src and pos in fast and pos != declined:
+                    req = FastRunRequest(pos, lineno, self.index)
+                    yield req
+                    if req.resume is not None:
+                        pos, lineno, self.index = req.resume
                         self.started = self.ran = True
-                        span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
-                        taken = lane(letters, values, span, self.index) if lane is not None else 0
-                        if not taken:
-                            yield plain_block(letters, values, span, self.index, number, None)
-                        self.index += 1
-                        if taken == 2:
-                            yield LANE_FULL
-                    continue
-            compiled = self.compiled(source, pos, line, lineno, nxt)
+                        declined = -1
+                        continue
+                    declined = pos
+                line, nxt = src.line_at(pos)
+                if line is None:
+                    self.end_of_text(lineno)
+                    return
+                if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
+                    parsed = scan_plain(line)
+                    if parsed is not None and self.plain_ok(parsed[2], parsed[3], line):
+                        delete, number, letters, values = parsed
+                        pos, lineno0, lineno = nxt, lineno, lineno + 1
+                        if delete and self.block_delete:
+                            continue
+                        if letters:
+                            self.started = self.ran = True
+                            span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
+                            taken = lane(letters, values, span, self.index) if lane is not None else 0
+                            if not taken:
+                                yield plain_block(letters, values, span, self.index, number, None)
+                            self.index += 1
+                            if taken == 2:
+                                yield LANE_FULL
+                        continue
+                compiled = self.compiled(source, pos, line, lineno, nxt)
             if compiled[1] or compiled[0].percent or compiled[0].program is not None:
                 target = yield from self.execute(compiled, pos, lineno)
             else:
-                target = self.macro_line(compiled, pos, lineno)
+                target = self.macro_line(compiled, pos, lineno)  # no generator for a macro-only line
             if target is None:
                 return
             pos, lineno = target
