@@ -125,3 +125,13 @@ def test_a_real_scheduler_and_two_workers_give_the_serial_store(library, tmp_pat
                 p.wait(timeout=20)
             except subprocess.TimeoutExpired:
                 p.kill()
+
+
+@pytest.mark.long
+def test_a_larger_library_with_split_programs_on_a_local_cluster_equals_serial(tmp_path):
+    project = small_library(tmp_path / "lib", programs=15, machines=4, moves=60)
+    _, serial = check(project, tmp_path / "serial.sqlite")
+    summary, cells = check(project, tmp_path / "local.sqlite", _local_executor(), split_lines=20, transfer="paths")
+    assert summary.split == 60 and summary.failed == 0
+    strip = {k: (v[0], v[1], tuple(x[:6] for x in v[2]), v[3]) for k, v in without_status(serial).items()}
+    assert {k: (v[0], v[1], tuple(x[:6] for x in v[2]), v[3]) for k, v in without_status(cells).items()} == strip

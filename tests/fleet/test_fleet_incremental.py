@@ -104,3 +104,18 @@ def test_a_program_that_changes_during_the_run_is_an_error_for_that_run_and_not_
             assert len(list(store.results())) == 1
         (lib / "programs" / "part_001.ngc").write_text(
             __import__("nczones.fleet.generate", fromlist=["x"]).mill_program(1, 6), encoding="utf-8")
+
+
+def test_the_progress_bar_counts_jobs_and_names_the_verdicts_that_are_not_safe(tmp_path):
+    import io
+
+    from nczones.fleet.check import CheckOptions, run_check
+    from nczones.fleet.project import load_project
+
+    project = load_project(small_library(tmp_path / "lib", programs=2, machines=1))
+    err = io.StringIO()
+    with Store(tmp_path / "p.sqlite") as store:
+        run_check(project, store, CheckOptions(executor="serial", progress=True), err=err)
+    frames = [f for f in err.getvalue().split("\r") if f.strip()]
+    assert frames[-1].startswith("fleet [##############################] 2/2 jobs; 1 unsafe; ")
+    assert err.getvalue().endswith("\r")  # the bar is erased at the end

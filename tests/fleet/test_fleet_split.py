@@ -133,3 +133,17 @@ def test_fleet_with_splitting_stores_what_whole_verification_stores(tmp_path):
     assert summary.split == 6 and summary.fallbacks == 0
     strip = {k: (v[0], v[1], tuple(x[:6] for x in v[2]), v[3]) for k, v in without_status(whole).items()}
     assert {k: (v[0], v[1], tuple(x[:6] for x in v[2]), v[3]) for k, v in without_status(split).items()} == strip
+
+
+@pytest.mark.long
+@settings(max_examples=300, deadline=None)
+@given(seed=st.integers(0, 10**6), into_vise=st.booleans(), moves=st.integers(20, 200),
+       chunk_lines=st.integers(2, 60))
+def test_split_equals_whole_long(seed, into_vise, moves, chunk_lines):
+    text = mill_program(seed, moves, into_vise=into_vise)
+    if split_program(text, MILL, {}, chunk_lines) is None:
+        return
+    whole = verify_text(text, MILL, file="p.ngc", max_violations=50)
+    combined, _ = _verify_split(text, MILL, chunk_lines)
+    assert combined is not None
+    assert (combined.verdict, _findings(combined), combined.notes) == (whole.verdict, _findings(whole), whole.notes)
