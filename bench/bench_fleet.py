@@ -147,11 +147,13 @@ def main() -> None:
     ap.add_argument("--workers", type=int, default=None, help="local cluster workers (default: one per core)")
     ap.add_argument("--long-lines", type=int, default=5_000_000, help="lines of the program split over two workers")
     ap.add_argument("--skip-long", action="store_true", help="leave out the long program")
+    ap.add_argument("--only-long", action="store_true", help="only the long program")
     args = ap.parse_args()
     print(machine_description())
     with tempfile.TemporaryDirectory() as folder:
         tmp = Path(folder)
-        bench_library(args, tmp)
+        if not args.only_long:
+            bench_library(args, tmp)
         if not args.skip_long:
             bench_long(args, tmp)
 

@@ -20,7 +20,7 @@ from typing import Any, TextIO
 
 from .jobs import Job, JobPlan, code_version, plan_jobs
 from .project import Cell, Project
-from .split import DEFAULT_SPLIT_LINES, Chunk, combine, split_program
+from .split import Chunk, combine, split_program
 from .store import Store
 from .work import machine_for, record
 
@@ -37,7 +37,9 @@ class CheckOptions:
     ``executor``: ``"auto"`` (a local Dask cluster, unless fewer than
     ``cluster_threshold`` jobs need to run: those run in this process),
     ``"serial"``, ``"local"`` (always the local cluster) or a scheduler
-    address.  ``transfer``: ``"paths"`` (workers read programs from the
+    address.  ``split_lines``: split programs of more than twice that many
+    lines where that is sound (None, the default: never; see
+    :mod:`nczones.fleet.split` for when it pays).  ``transfer``: ``"paths"`` (workers read programs from the
     project folder; a shared file system), ``"bytes"`` (programs travel
     with the tasks) or ``"auto"`` (paths for local runs, bytes for a
     scheduler).
@@ -45,7 +47,7 @@ class CheckOptions:
 
     executor: str = "auto"
     workers: int | None = None
-    split_lines: int = DEFAULT_SPLIT_LINES
+    split_lines: int | None = None  # None: verify every program whole
     transfer: str = "auto"
     cluster_threshold: int = 50
     attempts: int = 3
@@ -138,7 +140,8 @@ def _machine_display(project: Project, name: str) -> str:
         return str(path)
 
 
-def _split_tasks(project: Project, plan: JobPlan, job: Job, split_lines: int) -> list[dict[str, Any]] | None:
+def _split_tasks(project: Project, plan: JobPlan, job: Job, split_lines: int,
+                 transfer: str = "bytes") -> list[dict[str, Any]] | None:
     """Chunk tasks for a long program that may be split (see :mod:`nczones.fleet.split`), else None."""
     try:
         data = (project.root / job.program).read_bytes()
@@ -164,7 +167,11 @@ def _split_tasks(project: Project, plan: JobPlan, job: Job, split_lines: int) ->
     del base["program_path"]
     tasks = []
     for i, chunk in enumerate(chunks):
-        task = dict(base, kind="chunk", index=i, count=len(chunks), chunk=chunk, text=chunk.text(text))
+        task = dict(base, kind="chunk", index=i, count=len(chunks), chunk=chunk)
+        if transfer == "paths":  # each worker reads the file and cuts its chunk: no program through the network
+            task["program_path"] = str(project.root / job.program)
+        else:
+            task["text"] = chunk.text(text)
         tasks.append(task)
     return tasks
 
@@ -272,7 +279,8 @@ def _execute(project: Project, plan: JobPlan, todo: list[Job], store: Store, exe
     version = code_version()
     try:
         for job in todo:
-            tasks = _split_tasks(project, plan, job, options.split_lines)
+            tasks = (None if options.split_lines is None
+                     else _split_tasks(project, plan, job, options.split_lines, transfer))
             if tasks is None:
                 executor.submit(_task(project, plan, job, transfer))
                 continue

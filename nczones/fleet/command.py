@@ -34,7 +34,6 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     """``nczones fleet check``: verify every cell whose job is not in the store."""
     from .check import CheckOptions, run_check
     from .project import load_project
-    from .split import DEFAULT_SPLIT_LINES
     from .store import Store
 
     if args.split_lines is not None and args.split_lines < 1:
@@ -44,7 +43,7 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     project = load_project(args.project)
     executor = "serial" if args.serial else (args.scheduler or ("local" if args.cluster else "auto"))
     options = CheckOptions(executor=executor, workers=args.workers,
-                           split_lines=args.split_lines or DEFAULT_SPLIT_LINES, transfer=args.transfer,
+                           split_lines=args.split_lines, transfer=args.transfer,
                            cluster_threshold=args.cluster_threshold,
                            progress=True if args.progress else (False if args.no_progress else None))
     cells = project.cells(machines=args.machine or None, programs=args.program or None)
@@ -167,7 +166,8 @@ def register_check(fsub: argparse._SubParsersAction) -> None:
                         "cluster (default 50)")
     p.add_argument("--split-lines", type=int, metavar="N",
                    help="split programs of more than 2N lines into chunks of about N lines verified on several "
-                        "workers, where that is sound (default 1000000; see specs/fleet.md)")
+                        "workers, where that is sound (default: never split; it pays only when verifying a line "
+                        "costs more than scanning it, see specs/fleet.md)")
     p.add_argument("--transfer", choices=("auto", "paths", "bytes"), default="auto",
                    help="how workers get programs: paths (read from the project folder: a shared file system), "
                         "bytes (sent with each job), auto (paths locally, bytes to a scheduler; default)")

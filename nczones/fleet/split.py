@@ -48,32 +48,31 @@ from typing import Any
 
 __all__ = ["Chunk", "split_program", "combine", "count_lines", "DEFAULT_SPLIT_LINES"]
 
-#: Programs with fewer lines than this are verified whole; longer ones in chunks of about this many lines.
+#: A chunk size worth trying (``--split-lines``): splitting is off unless asked for.
 DEFAULT_SPLIT_LINES = 1_000_000
 
 _COMMENT = re.compile(r"\([^)\n]*\)|;[^\n]*")
 _G_OK = r"0*(?:(?:0|1|2|3|17|18|19|20|21|40|43|49|5[4-9]|80|90|94)(?![0-9.])|(?:90|91)\.1(?![0-9.]))"
-_BAD_G = re.compile(rf"G(?!{_G_OK})", re.I)
-_BAD_M = re.compile(r"M(?!0*(?:2|3|4|5|7|8|9|30)(?![0-9.]))", re.I)
-_END = re.compile(r"M0*(?:2|30)(?![0-9.])", re.I)
+_BAD_G = re.compile(rf"G(?!{_G_OK})")
+_BAD_M = re.compile(r"M(?!0*(?:2|3|4|5|7|8|9|30)(?![0-9.]))")
+_END = re.compile(r"M0*(?:2|30)(?![0-9.])")
 _LETTER_WITHOUT_NUMBER = re.compile(r"[A-Za-z](?![0-9.+\-])|[+\-](?![0-9.])")
-_G90 = re.compile(r"G0*90(?![0-9.])", re.I)
-_STATE = re.compile(r"G0*(?:2[01]|5[4-9]|43|49)(?![0-9.])|H", re.I)
-_F = re.compile(r"F[+\-]?[0-9.]+", re.I)
-_H = re.compile(r"H[0-9]+", re.I)
-_G43 = re.compile(r"G0*43(?![0-9.])", re.I)
-_MOTION = re.compile(r"G0*(0|1|2|3|80)(?![0-9.])", re.I)
-#: Modal groups other than motion: (name, pattern); the preamble writes the last code of each.
-_GROUPS: tuple[tuple[str, re.Pattern[str]], ...] = tuple((n, re.compile(p, re.I)) for n, p in (
-    ("plane", r"G0*(?:17|18|19)(?![0-9.])"),
-    ("units", r"G0*(?:20|21)(?![0-9.])"),
-    ("distance", r"G0*90(?![0-9.])"),
-    ("arc distance", r"G0*9[01]\.1(?![0-9.])"),
-    ("feed mode", r"G0*94(?![0-9.])"),
-    ("cutter compensation", r"G0*40(?![0-9.])"),
-    ("work offset", r"G0*5[4-9](?![0-9.])"),
-    ("tool length", r"G0*(?:43|49)(?![0-9.])"),
-))
+_G90 = re.compile(r"G0*90(?![0-9.])")
+#: A character outside words, comments and the parser's white space (space, tab, CR, LF).
+_NOT_WORD_CHAR = re.compile(r"[^A-Za-z0-9.+\- \t\r\n]")
+_F = re.compile(r"F[+\-]?[0-9.]+")
+_H = re.compile(r"H[+\-]?[0-9.]+")  # every H, once each letter is known to be followed by its number
+_G43 = re.compile(r"G0*43(?![0-9.])")
+_MOTION = re.compile(r"G0*(0|1|2|3|80)(?![0-9.])")
+#: Modal groups other than motion, by code: the preamble writes the last code of each.
+_GROUP_OF = {"G17": "plane", "G18": "plane", "G19": "plane", "G20": "units", "G21": "units", "G90": "distance",
+             "G90.1": "arc distance", "G91.1": "arc distance", "G94": "feed mode", "G40": "cutter compensation",
+             **{f"G5{k}": "work offset" for k in range(4, 10)}, "G43": "tool length", "G49": "tool length"}
+_GROUP_ORDER = ("plane", "units", "distance", "arc distance", "feed mode", "cutter compensation", "work offset",
+                "tool length")
+_MODAL = re.compile(r"G0*(17|18|19|20|21|40|43|49|5[4-9]|90\.1|91\.1|90|94)(?![0-9.])")
+#: Codes whose change moves the machine position of an axis word written before it.
+_STATE_GROUPS = frozenset(("units", "work offset", "tool length"))
 _MAX_STATE_WORDS = 100_000
 
 
@@ -111,10 +110,15 @@ def count_lines(text: str) -> int:
     return text.count("\n") + (1 if text and not text.endswith("\n") else 0)
 
 
-def _blank_comments(text: str) -> str:
-    if "(" not in text and ";" not in text:
-        return text
-    return _COMMENT.sub(lambda m: " " * len(m.group()), text)
+def _cleaned(text: str) -> str | None:
+    """The text with comments blanked (same length, same line breaks), upper-cased; None if it is not ASCII.
+
+    Upper-casing keeps every position only for ASCII (``"ß".upper()`` is
+    ``"SS"``), and the parser knows no other letters.
+    """
+    if "(" in text or ";" in text:
+        text = _COMMENT.sub(lambda m: " " * len(m.group()), text)
+    return text.upper() if text.isascii() else None
 
 
 def _last_before(rx: re.Pattern[str], text: str, end: int, near: int = 1 << 16,
@@ -156,27 +160,34 @@ def splittable(text: str, machine: Any, settings: Mapping[str, Any]) -> str | No
     >>> splittable("G91 G1 X1 F100\\n", m, {})
     'uses G91 (only the codes listed in nczones.fleet.split split)'
     """
-    if settings.get("params") or settings.get("recovery") or settings.get("library"):
-        return "parameter ranges, recovery and subprogram libraries are verified whole"
-    dialect = settings.get("dialect") or getattr(machine, "dialect", "linuxcnc")
-    if dialect != "linuxcnc":
-        return f"the {dialect} dialect is verified whole"
-    cleaned = _blank_comments(text)
-    axes = "".join(machine.axis_names)
-    bad = re.search(rf"[^GMFSNHIJKRP{axes}{axes.lower()}gmfsnhijkrp0-9.+\-\s]", cleaned)
+    early = _early_refusal(machine, settings)
+    if early is not None:
+        return early
+    bad = re.search(_NOT_WORD_CHAR, _COMMENT.sub("", text) if "(" in text or ";" in text else text)
     if bad:
         return f"uses {bad.group()!r}"
+    cleaned = _cleaned(text)
+    assert cleaned is not None  # ASCII outside comments, checked above
+    return _why_not(text, cleaned, machine)
+
+
+def _why_not(text: str, cleaned: str, machine: Any) -> str | None:
+    """:func:`splittable`'s checks on the text (``cleaned``: comments blanked, upper case)."""
+    axes = "".join(machine.axis_names)
+    bad = re.search(rf"[^GMFSNHIJKRP{axes}0-9.+\- \t\r\n]", cleaned)
+    if bad:
+        return f"uses {text[bad.start()]!r}"
     if _LETTER_WITHOUT_NUMBER.search(cleaned):
         return "a letter or sign not directly followed by its number"
     for rx in (_BAD_G, _BAD_M):
         m = rx.search(cleaned)
         if m:
-            word = re.match(r"[GM][0-9.]*", cleaned[m.start():m.start() + 12], re.I)
+            word = re.match(r"[GM][0-9.]*", cleaned[m.start():m.start() + 12])
             return f"uses {word.group() if word else m.group()} (only the codes listed in nczones.fleet.split split)"
     end = _END.search(cleaned)
     if end and re.search(r"[A-Za-z]", cleaned[end.end():]):
         return "words after the program end"
-    first_axis = re.search(rf"[{axes}]", cleaned, re.I)
+    first_axis = re.search(rf"[{axes}]", cleaned)
     if first_axis:
         g90 = _G90.search(cleaned)
         if g90 is None or g90.start() > _line_end(cleaned, first_axis.start()):
@@ -208,13 +219,18 @@ def split_program(text: str, machine: Any, settings: Mapping[str, Any],
         raise ValueError("chunk_lines must be at least 1")
     lines = count_lines(text)
     pieces = -(-lines // chunk_lines)
-    if pieces < 2 or splittable(text, machine, settings) is not None:
+    if pieces < 2 or _early_refusal(machine, settings) is not None:
         return None
-    cleaned = _blank_comments(text)
-    state_positions = [m.start() for m in _STATE.finditer(cleaned)]
-    if len(state_positions) > _MAX_STATE_WORDS:
+    cleaned = _cleaned(text)
+    if cleaned is None or re.search(_NOT_WORD_CHAR, cleaned) or _why_not(text, cleaned, machine) is not None:
         return None
-    axis_rx = {a: re.compile(rf"{a}[+\-]?[0-9.]+", re.I) for a in machine.axis_names}
+    # the modal codes other than motion are few (set-up lines): found once, looked up per boundary
+    modal = [(m.start(), _code(m.group())) for m in _MODAL.finditer(cleaned)]
+    if len(modal) > _MAX_STATE_WORDS:
+        return None
+    h_words = [m.start() for m in _H.finditer(cleaned)]
+    state_positions = sorted([p for p, c in modal if _GROUP_OF[c] in _STATE_GROUPS] + h_words)
+    axis_rx = {a: re.compile(rf"{a}[+\-]?[0-9.]+") for a in machine.axis_names}
     starts: list[tuple[int, str, tuple[Fraction, ...]]] = []
     previous = 0
     for k in range(1, pieces):
@@ -223,7 +239,7 @@ def split_program(text: str, machine: Any, settings: Mapping[str, Any],
             break
         b += 1
         while b < len(cleaned) and b > previous:
-            found = _boundary_state(cleaned, b, axis_rx, state_positions, machine)
+            found = _boundary_state(cleaned, b, axis_rx, state_positions, modal, machine)
             if isinstance(found, tuple):
                 starts.append((b, *found))
                 previous = b
@@ -243,8 +259,17 @@ def split_program(text: str, machine: Any, settings: Mapping[str, Any],
     return tuple(chunks)
 
 
+def _early_refusal(machine: Any, settings: Mapping[str, Any]) -> str | None:
+    if settings.get("params") or settings.get("recovery") or settings.get("library"):
+        return "parameter ranges, recovery and subprogram libraries are verified whole"
+    dialect = settings.get("dialect") or getattr(machine, "dialect", "linuxcnc")
+    if dialect != "linuxcnc":
+        return f"the {dialect} dialect is verified whole"
+    return None
+
+
 def _boundary_state(cleaned: str, b: int, axis_rx: Mapping[str, re.Pattern[str]], state_positions: list[int],
-                    machine: Any) -> tuple[str, tuple[Fraction, ...]] | int | None:
+                    modal: list[tuple[int, str]], machine: Any) -> tuple[str, tuple[Fraction, ...]] | int | None:
     """(preamble, machine position) at line start ``b``; or a later line start to try; or None (give up)."""
     motion = _last_before(_MOTION, cleaned, b)
     if motion is not None and motion.group(1) in ("2", "3"):
@@ -267,23 +292,28 @@ def _boundary_state(cleaned: str, b: int, axis_rx: Mapping[str, re.Pattern[str]]
         k = bisect.bisect_right(state_positions, after)
         if k < len(state_positions) and state_positions[k] < b:
             return None  # a units, offset or tool-length code between this axis word and the boundary
-        words.append(last.group().upper())
+        words.append(last.group())
+    last_of: dict[str, tuple[int, str]] = {}
+    for at, code in reversed(modal[:bisect.bisect_left(modal, (b, ""))]):
+        last_of.setdefault(_GROUP_OF[code], (at, code))
+        if len(last_of) == len(_GROUP_ORDER):
+            break
     codes: list[str] = []
-    for _, rx in _GROUPS:
-        last = _last_before(rx, cleaned, b)
-        if last is not None:
-            code = _code(last.group())
-            codes.append(code)
-            if code == "G43":
-                h = _H.search(cleaned, last.start(), _line_end(cleaned, last.start()))
-                if h is None:
-                    return None
-                codes.append(h.group().upper())
+    for group in _GROUP_ORDER:
+        if group not in last_of:
+            continue
+        at, code = last_of[group]
+        codes.append(code)
+        if code == "G43":
+            h = _H.search(cleaned, _line_start(cleaned, at), _line_end(cleaned, at))
+            if h is None:
+                return None
+            codes.append(h.group())
     if motion is not None:
         codes.append(_code(motion.group()))
     feed = _last_before(_F, cleaned, b)
     if feed is not None:
-        codes.append(feed.group().upper())
+        codes.append(feed.group())
     preamble = " ".join(codes)
     return preamble, _machine_position(machine, preamble, words)
 

@@ -7,7 +7,8 @@ this process by the serial executor).  A task is a plain dict:
   a split program, :mod:`nczones.fleet.split`);
 * ``key``, ``program`` (the name reports use), ``program_data`` (its bytes)
   or ``program_path`` (a path the worker reads; its SHA-256 must match
-  ``program_sha256``), or for a chunk ``text``, ``chunk``;
+  ``program_sha256``); for a chunk, ``chunk`` and its ``text`` or the
+  ``program_path`` to cut it from;
 * ``machine_file`` (name), ``machine_text``, ``machine_sha256``;
 * ``settings`` (normalized pairs), ``root`` (the project root, for a
   subprogram library).
@@ -165,7 +166,15 @@ def _verify_chunk(task: dict[str, Any], machine: Any, kwargs: dict[str, Any]) ->
     from .split import shift_result
 
     chunk = task["chunk"]
+    text = task.get("text")
+    if text is None:
+        from ..gcode import load_program
+
+        source = load_program(task["program_path"], task["program"])
+        if source.sha256 != task["program_sha256"]:
+            raise _changed(task["program"])
+        text = chunk.text(source.text)
     if chunk.position is not None:
         machine = dataclasses.replace(machine, start=chunk.position)
-    result = _finished(verify_text(task["text"], machine, file=task["program"], **kwargs))
+    result = _finished(verify_text(text, machine, file=task["program"], **kwargs))
     return shift_result(result, chunk)
