@@ -101,6 +101,10 @@ def test_the_boundary_state_comes_from_the_text_and_the_interpreter():
     ("G90 G1 X1 F100\nM30\nG1 X5\n", "words after the program end"),
     ("G90 G1 X1 F100 H1\n", "an H word without G43"),
     ("G90 G 1 X1 F100\n", "a letter or sign not directly followed by its number"),
+    # letters the parser does not know, though their upper case is one (a dotless i is I; ß would be SS)
+    ("G90 G1 X1 F100\nG2 X2 Y0 \u0131-1 J0\n", "uses '\u0131'"),
+    ("G90 G1 X1 F100 S1\nX2 \u00df1\n", "uses '\u00df'"),
+    ("G90 G1 X1 F100\nX2\x0cX3\n", "uses '\\x0c'"),  # white space to Python, not to the parser
 ])
 def test_programs_whose_state_is_not_read_off_the_text_are_verified_whole(text, why):
     assert why in splittable(text, MILL, {})
