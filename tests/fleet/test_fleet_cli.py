@@ -126,7 +126,7 @@ def test_ctrl_c_stops_the_run_and_keeps_what_finished(tmp_path):
     proc.send_signal(signal.SIGINT)
     out, err = proc.communicate(timeout=30)
     assert time.monotonic() - t0 < 5
-    assert proc.returncode == 130 and "interrupted" in err and "Traceback" not in err
+    assert proc.returncode == 130 and "interrupted" in err and "Traceback" not in err, (proc.returncode, err[-3000:])
     db = sqlite3.connect(store)
     interrupted, ran = db.execute("SELECT interrupted, ran FROM runs").fetchone()
     stored = db.execute("SELECT count(*) FROM results").fetchone()[0]
