@@ -18,7 +18,8 @@ from nczones.prover import Verdict, verify_text
 from tests.oracles.concrete import machine_at
 
 
-def machine(top: str, start_x: str = "50"):
+def machine(top: str, start_x: str = "50", g54_x: str = "0", more_zones: str = ""):
+    """Travel box X 0..100, Y 0..top; the start at (start_x, 50); G54 at (g54_x, 0)."""
     return parse_machine(f"""
 [machine]
 axes = ["X", "Y"]
@@ -28,12 +29,14 @@ Y = "1000"
 [machine.reference]
 X = "{start_x}"
 Y = "50"
+[offsets]
+G54 = {{ X = "{g54_x}", Y = "0" }}
 [[zones]]
 name = "travel"
 kind = "box"
 min = {{ X = "0", Y = "0" }}
 max = {{ X = "100", Y = "{top}" }}
-""")
+{more_zones}""")
 
 
 #: a half circle clockwise from the start (50, 50) over (55, 55) to (60, 50), then a line up to Y60
@@ -60,26 +63,6 @@ def test_arc_from_a_start_range_that_stays_inside_is_safe():
     assert r.verdict is Verdict.SAFE, r.reasons
 
 
-def machine_with_g54(top: str, start_x: str = "50", g54_x: str = "0"):
-    return parse_machine(f"""
-[machine]
-axes = ["X", "Y"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "{start_x}"
-Y = "50"
-[offsets]
-G54 = {{ X = "{g54_x}", Y = "0" }}
-[[zones]]
-name = "travel"
-kind = "box"
-min = {{ X = "0", Y = "0" }}
-max = {{ X = "100", Y = "{top}" }}
-""")
-
-
 #: an R-format arc from the start (50, 50) to G54 X60 Y50: its start moves with start.X, its end with
 #: G54.X; the chord is 6..14 mm over the ranges, the bulge above Y50 0.58..4.13 mm (R8); then a line up
 TWO_RANGES = "G17 G90 G54\nG2 X60 Y50 R8 F100\nG1 Y60\nM2\n"
@@ -88,7 +71,7 @@ TWO_RANGES = "G17 G90 G54\nG2 X60 Y50 R8 F100\nG1 Y60\nM2\n"
 def test_arc_whose_ends_move_with_different_ranges_is_unsafe_at_its_line_and_the_summary_names_it():
     from nczones.report.text import summary_line
 
-    m = machine_with_g54("50.5")  # below the smallest bulge: every value of both ranges violates at line 2
+    m = machine("50.5")  # below the smallest bulge: every value of both ranges violates at line 2
     params = ["start.X=-2..2", "G54.X=-2..2"]
     r = verify_text(TWO_RANGES, m, params=params)
     assert r.verdict is Verdict.UNSAFE, r.reasons
@@ -100,7 +83,7 @@ def test_arc_whose_ends_move_with_different_ranges_is_unsafe_at_its_line_and_the
     assert set(values) == {"start.X", "G54.X"} and all(-2 <= x <= 2 for x in values.values())
     assert "the first at line 2;" in summary_line(r, "p.ngc")
     # replayed at its values (the machine starting and its G54 offset there), line 2 is unsafe
-    replay = verify_text(TWO_RANGES, machine_with_g54("50.5", format_exact(50 + values["start.X"]),
+    replay = verify_text(TWO_RANGES, machine("50.5", format_exact(50 + values["start.X"]),
                                                       format_exact(values["G54.X"])))
     assert replay.violations[0].line == 2
 
@@ -122,23 +105,7 @@ def varying_arc_cases(draw):
         x0, y0 = 40 + draw(st.integers(0, 25)), 40 + draw(st.integers(0, 20))
         post = (f'[[zones]]\nname = "post"\nkind = "box"\nforbid = true\nmin = {{ X = "{x0}", Y = "{y0}" }}\n'
                 f'max = {{ X = "{x0 + draw(st.integers(1, 6))}", Y = "{y0 + draw(st.integers(1, 6))}" }}\n')
-    m = parse_machine(f"""
-[machine]
-axes = ["X", "Y"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "50"
-Y = "50"
-[offsets]
-G54 = {{ X = "0", Y = "0" }}
-[[zones]]
-name = "travel"
-kind = "box"
-min = {{ X = "0", Y = "0" }}
-max = {{ X = "100", Y = "{top}" }}
-{post}""")
+    m = machine(str(top), more_zones=post)
     end = (50 + draw(_grid(12)), 50 + draw(_grid(12)))
     if end == (50, 50):
         end = (60, 50)
