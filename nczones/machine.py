@@ -16,6 +16,7 @@ from __future__ import annotations
 import decimal
 import difflib
 import enum
+import functools
 import hashlib
 import json
 import os
@@ -202,6 +203,8 @@ class _Locator:
     def __init__(self, path: str, text: str):
         self.path = path
         self.lines = text.splitlines()
+        self._sections: dict[str, list[int]] = {}
+        self._elements: dict[tuple[str, int | None], list[tuple[int, int]]] = {}
 
     def _span(self, index: int, column: int, width: int) -> SourceSpan:
         return SourceSpan(self.path, index + 1, column + 1, column + 1 + width, self.lines[index])
@@ -211,15 +214,16 @@ class _Locator:
         return bool(self._HEADER_RE.match(line)) and line.split("]")[0].count('"') <= 2
 
     def section(self, header: str, occurrence: int = 0) -> int | None:
-        """0-based line index of the ``occurrence``-th ``[header]``/``[[header]]``."""
-        pattern = re.compile(r"^\s*\[+\s*" + re.escape(header) + r"\s*\]+")
-        seen = 0
-        for i, line in enumerate(self.lines):
-            if pattern.match(line):
-                if seen == occurrence:
-                    return i
-                seen += 1
-        return None
+        """0-based line index of the ``occurrence``-th ``[header]``/``[[header]]``.
+
+        The header lines are found in one pass per header name (a file with
+        thousands of ``[[zones]]`` is read once, not once per zone).
+        """
+        found = self._sections.get(header)
+        if found is None:
+            pattern = re.compile(r"^\s*\[+\s*" + re.escape(header) + r"\s*\]+")
+            found = self._sections[header] = [i for i, line in enumerate(self.lines) if pattern.match(line)]
+        return found[occurrence] if occurrence < len(found) else None
 
     def header(self, index: int | None) -> SourceSpan | None:
         """A span over the header on line ``index`` (as returned by :meth:`section`)."""
@@ -269,10 +273,25 @@ class _Locator:
 
     def element(self, array_key: str, start: int | None, index: int, key: str) -> SourceSpan | None:
         """The ``key`` inside the ``index``-th ``{ ... }`` element of an array."""
+        elements = self._elements.get((array_key, start))
+        if elements is None:
+            elements = self._elements[(array_key, start)] = self._scan_elements(array_key, start)
+        if index >= len(elements):
+            return None
+        i, c = elements[index]
+        line = self.lines[i]
+        end = line.find("}", c)
+        m = re.compile(r"\b" + re.escape(key) + r"\s*=").search(line, c, len(line) if end < 0 else end)
+        if m:
+            return self._span(i, m.start(), len(key))
+        return self._span(i, c, 1)
+
+    def _scan_elements(self, array_key: str, start: int | None) -> list[tuple[int, int]]:
+        """Line and column of the opening brace of every ``{ ... }`` element of an array, in one pass."""
         anchor = self.key(array_key, start)
         if anchor is None:
-            return None
-        seen = -1
+            return []
+        out = []
         depth = 0
         in_string = False
         for i in range(anchor.line - 1, len(self.lines)):
@@ -289,20 +308,12 @@ class _Locator:
                 elif ch == "{":
                     depth += 1
                     if depth == 1:
-                        seen += 1
-                        if seen == index:
-                            end = line.find("}", c)
-                            m = re.compile(r"\b" + re.escape(key) + r"\s*=").search(
-                                line, c, len(line) if end < 0 else end
-                            )
-                            if m:
-                                return self._span(i, m.start(), len(key))
-                            return self._span(i, c, 1)
+                        out.append((i, c))
                 elif ch == "}":
                     depth -= 1
                 elif ch == "#":
                     break
-        return None
+        return out
 
 
 class _Reader:
@@ -317,9 +328,12 @@ class _Reader:
         self,
         code: str,
         message: str,
-        span: SourceSpan | None = None,
+        span: SourceSpan | Callable[[], SourceSpan | None] | None = None,
         severity: Severity = Severity.ERROR,
     ) -> None:
+        """Record a diagnostic; ``span`` may be a function that finds it (called only here)."""
+        if callable(span):
+            span = span()
         self.diagnostics.append(Diagnostic(code, message, span, severity, file=self.path))
 
     @property
@@ -364,13 +378,24 @@ def _number(
     rd: _Reader,
     value: Any,
     what: str,
-    span: SourceSpan | None,
+    span: SourceSpan | Callable[[], SourceSpan | None] | None,
     *,
     positive: bool = False,
     nonnegative: bool = False,
     limit: Fraction = MAX_ABS_LENGTH,
 ) -> Fraction | None:
     """Read an exact number (decimal text, TOML integer or TOML decimal)."""
+    if type(value) is str:
+        m = _PLAIN_DECIMAL.match(value)
+        if m is not None:  # the common case, read without Decimal (within every limit on digits)
+            frac = m.group(3) or ""
+            num, den = int(m.group(2) + frac), 10 ** len(frac)
+            negative = m.group(1) == "-" and num != 0
+            q = Fraction(-num if negative else num, den)
+            if (limit.denominator == 1 and num <= limit.numerator * den
+                    and not (positive and (negative or num == 0)) and not (nonnegative and negative)):
+                return q
+            return _in_range(rd, q, value, what, span, positive, nonnegative, limit)
     if isinstance(value, bool) or not isinstance(value, (str, int, decimal.Decimal)):
         rd.report("ZN103", f"{what}: {_written(value)} is not a number; write a decimal such as \"12.5\"", span)
         return None
@@ -402,6 +427,17 @@ def _number(
         q = Fraction(value_d)
     else:
         q = Fraction(value)
+    return _in_range(rd, q, value, what, span, positive, nonnegative, limit)
+
+
+#: Decimal text that needs no further checks of its digits: at most 10 before the point (so the
+#: adjusted exponent is at most ``_MAX_ADJUSTED_EXPONENT``) and at most ``_MAX_PLACES`` after it.
+_PLAIN_DECIMAL = re.compile(r"([+-]?)([0-9]{1,10})(?:\.([0-9]{0,30}))?\Z")
+
+
+def _in_range(rd: _Reader, q: Fraction, value: Any, what: str,
+              span: SourceSpan | Callable[[], SourceSpan | None] | None,
+              positive: bool, nonnegative: bool, limit: Fraction) -> Fraction | None:
     if abs(q) > limit:
         rd.report("ZN105", f"{what}: {_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
         return None
@@ -1021,9 +1057,12 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
             rd.report("ZN102", f"{rlabel}: missing upto (the region's upper bound on {ref or 'the reference axis'})", rd.loc.element("regions", header, i, "upto"))
             ok = False
             continue
-        upto = _number(rd, rt["upto"], f"{rlabel}: upto", rd.loc.element("regions", header, i, "upto"))
-        lo = _number(rd, rt["min"], f"{rlabel}: min", rd.loc.element("regions", header, i, "min")) if "min" in rt else None
-        hi = _number(rd, rt["max"], f"{rlabel}: max", rd.loc.element("regions", header, i, "max")) if "max" in rt else None
+        # spans are found only for a diagnostic: finding one reads the array's text
+        upto = _number(rd, rt["upto"], f"{rlabel}: upto", functools.partial(rd.loc.element, "regions", header, i, "upto"))
+        lo = _number(rd, rt["min"], f"{rlabel}: min",
+                     functools.partial(rd.loc.element, "regions", header, i, "min")) if "min" in rt else None
+        hi = _number(rd, rt["max"], f"{rlabel}: max",
+                     functools.partial(rd.loc.element, "regions", header, i, "max")) if "max" in rt else None
         if upto is None or ("min" in rt and lo is None) or ("max" in rt and hi is None):
             ok = False
             continue
@@ -1125,24 +1164,102 @@ def _polygon(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
 
 
 def _polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
-    """Why a vertex list is not a simple polygon (exact), or None."""
+    """Why a vertex list is not a simple polygon (exact), or None.
+
+    A sweep along X: only pairs of edges whose bounding boxes overlap are
+    tested (sorted by their low X, each edge meets the edges that start
+    before its high X), and those exactly, in integers (the vertices scaled
+    by their common denominator).  Every pair of edges that touch has
+    overlapping boxes, so the answer is the all-pairs answer; the pair named
+    is the first in vertex order, as an all-pairs scan would name it.
+    The work is ``O(n log n)`` plus the pairs whose X ranges overlap, which
+    for an outline is a few per edge.
+    """
+    import math
+
+    import numpy as np
+
     n = len(vertices)
     for i in range(n):
         if vertices[i] == vertices[(i + 1) % n]:
             return f"vertices {i + 1} and {(i + 1) % n + 1} are the same point"
-    if all(_orient(vertices[0], vertices[1], v) == 0 for v in vertices[2:]):
+    den = math.lcm(*{c.denominator for v in vertices for c in v})
+    ints = [(v[0].numerator * (den // v[0].denominator), v[1].numerator * (den // v[1].denominator)) for v in vertices]
+    big = max(max(abs(x), abs(y)) for x, y in ints) >= 2**30  # int64 cross products need |coordinate| < 2**30
+    xy = np.array(ints, dtype=object if big else np.int64)
+    x0, y0 = xy[:, 0], xy[:, 1]
+    nxt = np.roll(np.arange(n), -1)
+    if not np.any((xy[1, 0] - x0[0]) * (xy[2:, 1] - y0[0]) - (xy[1, 1] - y0[0]) * (xy[2:, 0] - x0[0]) != 0):
         return "the vertices lie on one line and enclose no area"
-    edges = [(vertices[i], vertices[(i + 1) % n]) for i in range(n)]
-    for i in range(n):
-        for j in range(i + 1, n):
-            adjacent = j == i + 1 or (i == 0 and j == n - 1)
-            if _segments_intersect(*edges[i], *edges[j], adjacent):
-                return (
-                    f"edge {i + 1} (vertex {i + 1} to {(i + 1) % n + 1}) and edge {j + 1} "
-                    f"(vertex {j + 1} to {(j + 1) % n + 1}) cross or overlap; "
-                    "the polygon must not intersect itself"
-                )
+    # candidate pairs: edges whose bounding boxes overlap (floats round monotonically, so a pair whose
+    # exact ranges touch still overlaps in floats: the filter never drops a touching pair)
+    fx = np.array([float(v[0]) for v in vertices])
+    fy = np.array([float(v[1]) for v in vertices])
+    ex_lo, ex_hi = np.minimum(fx, fx[nxt]), np.maximum(fx, fx[nxt])
+    ey_lo, ey_hi = np.minimum(fy, fy[nxt]), np.maximum(fy, fy[nxt])
+    order = np.argsort(ex_lo, kind="stable")
+    lo_sorted = ex_lo[order]
+    reach = np.searchsorted(lo_sorted, ex_hi[order], side="right")  # sorted edges k+1 .. reach-1 start in range
+    counts = np.maximum(reach - np.arange(n) - 1, 0)
+    bad: list[tuple[int, int]] = []
+    chunk = 1 << 20
+    k0 = 0
+    while k0 < n:
+        k1 = k0 + 1
+        total = int(counts[k0])
+        while k1 < n and total + int(counts[k1]) <= chunk:
+            total += int(counts[k1])
+            k1 += 1
+        ks = np.repeat(np.arange(k0, k1), counts[k0:k1])
+        if ks.size:
+            starts = np.cumsum(counts[k0:k1]) - counts[k0:k1]
+            offs = np.arange(ks.size) - np.repeat(starts, counts[k0:k1])
+            a, b = order[ks], order[ks + 1 + offs]
+            keep = (ey_lo[a] <= ey_hi[b]) & (ey_lo[b] <= ey_hi[a])
+            a, b = np.minimum(a[keep], b[keep]), np.maximum(a[keep], b[keep])
+            hit = _edges_touch(xy, nxt, a, b, n)
+            bad += zip(a[hit].tolist(), b[hit].tolist())
+        k0 = k1
+    if bad:
+        i, j = min(bad)
+        return (
+            f"edge {i + 1} (vertex {i + 1} to {(i + 1) % n + 1}) and edge {j + 1} "
+            f"(vertex {j + 1} to {(j + 1) % n + 1}) cross or overlap; "
+            "the polygon must not intersect itself"
+        )
     return None
+
+
+def _edges_touch(xy: Any, nxt: Any, i: Any, j: Any, n: int) -> Any:
+    """For edge pairs ``i < j`` (index arrays): do they meet other than at the vertex adjacent edges share?
+
+    Exact in the integer (or Python-integer) coordinates ``xy``; the rules of
+    :func:`_segments_intersect`, evaluated on arrays.
+    """
+    import numpy as np
+
+    def orient(a: Any, b: Any, c: Any) -> Any:
+        v = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+        return (v > 0).astype(np.int64) - (v < 0).astype(np.int64)
+
+    def between(a: Any, b: Any, c: Any) -> Any:
+        return ((np.minimum(a[:, 0], b[:, 0]) <= c[:, 0]) & (c[:, 0] <= np.maximum(a[:, 0], b[:, 0]))
+                & (np.minimum(a[:, 1], b[:, 1]) <= c[:, 1]) & (c[:, 1] <= np.maximum(a[:, 1], b[:, 1])))
+
+    p1, p2, q1, q2 = xy[i], xy[nxt[i]], xy[j], xy[nxt[j]]
+    adjacent = (j == i + 1) | ((i == 0) & (j == n - 1))
+    o1, o2, o3, o4 = orient(p1, p2, q1), orient(p1, p2, q2), orient(q1, q2, p1), orient(q1, q2, p2)
+    crossing = (o1 != o2) & (o3 != o4) & (o1 != 0) & (o2 != 0) & (o3 != 0) & (o4 != 0)
+    touching = ((o1 == 0) & between(p1, p2, q1)) | ((o2 == 0) & between(p1, p2, q2)) \
+        | ((o3 == 0) & between(q1, q2, p1)) | ((o4 == 0) & between(q1, q2, p2))
+    # adjacent edges share one vertex; they are bad only if they overlap (fold back)
+    p2_shared = np.all(p2 == q1, axis=1) | np.all(p2 == q2, axis=1)
+    shared = np.where(p2_shared[:, None], p2, p1)
+    other_q = np.where(np.all(q1 == shared, axis=1)[:, None], q2, q1)
+    other_p = np.where(np.all(p2 == shared, axis=1)[:, None], p1, p2)
+    fold = (orient(other_p, shared, other_q) == 0) & (between(shared, other_q, other_p)
+                                                      | between(shared, other_p, other_q))
+    return np.where(adjacent, fold, crossing | touching)
 
 
 _Pt2 = tuple[Fraction, Fraction]

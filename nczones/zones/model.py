@@ -335,7 +335,10 @@ class PolygonZone:
     def _locate(self, q: Vertex) -> int:
         """+1 strictly inside, 0 on the boundary, -1 outside."""
         inside = False
+        qx, qy = q
         for a, b in self.edges():
+            if (a[1] < qy and b[1] < qy) or (a[1] > qy and b[1] > qy):
+                continue  # neither on the edge nor crossing the ray: the edge misses the line y = qy
             if _on_segment(q, a, b):
                 return 0
             if (a[1] > q[1]) != (b[1] > q[1]):

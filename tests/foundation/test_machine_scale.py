@@ -1,0 +1,99 @@
+"""The loader at scale: what made it fast must not change what it accepts or reports.
+
+* The simple-polygon check (a sweep over edges whose boxes overlap, exact in
+  integers) gives the all-pairs check's answer, message included, on random
+  small polygons full of touching, overlapping and crossing edges, on large
+  coordinates (Python integers instead of ``int64``) and on mixed decimals.
+* Decimal text read on the fast path gives the ``Decimal`` path's value and
+  diagnostics.
+* Diagnostics in a long stepped table still point at the region's line.
+"""
+
+from __future__ import annotations
+
+import decimal
+from fractions import Fraction as F
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nczones.errors import MachineFileError
+from nczones.machine import _number, _polygon_problem, _Reader, _segments_intersect, parse_machine
+
+
+def all_pairs_problem(vertices):
+    """The reference: every pair of edges, exactly (the loader's rule before the sweep)."""
+    from nczones.machine import _orient
+
+    n = len(vertices)
+    for i in range(n):
+        if vertices[i] == vertices[(i + 1) % n]:
+            return f"vertices {i + 1} and {(i + 1) % n + 1} are the same point"
+    if all(_orient(vertices[0], vertices[1], v) == 0 for v in vertices[2:]):
+        return "the vertices lie on one line and enclose no area"
+    edges = [(vertices[i], vertices[(i + 1) % n]) for i in range(n)]
+    for i in range(n):
+        for j in range(i + 1, n):
+            adjacent = j == i + 1 or (i == 0 and j == n - 1)
+            if _segments_intersect(*edges[i], *edges[j], adjacent):
+                return (f"edge {i + 1} (vertex {i + 1} to {(i + 1) % n + 1}) and edge {j + 1} "
+                        f"(vertex {j + 1} to {(j + 1) % n + 1}) cross or overlap; "
+                        "the polygon must not intersect itself")
+    return None
+
+
+coords = st.builds(F, st.integers(-3, 3), st.sampled_from([1, 2, 10]))
+
+
+@settings(max_examples=600, deadline=None)
+@given(st.lists(st.tuples(coords, coords), min_size=3, max_size=9))
+def test_sweep_agrees_with_all_pairs(vertices):
+    assert _polygon_problem(vertices) == all_pairs_problem(vertices)
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 4), st.integers(0, 4)), min_size=3, max_size=8),
+       st.sampled_from([F(10**12), F(1, 10**25), F(3, 8)]))
+def test_sweep_agrees_on_large_and_fine_coordinates(points, unit):
+    vertices = [(x * unit + F(10**5), y * unit) for x, y in points]  # 10**12 units: Python integers
+    assert _polygon_problem(vertices) == all_pairs_problem(vertices)
+
+
+def test_sweep_names_the_first_pair_of_many():
+    # a comb whose teeth all cross one long edge: the first crossing pair in vertex order is named
+    teeth = []
+    for k in range(40):
+        teeth += [(F(2 * k), F(0)), (F(2 * k), F(10)), (F(2 * k + 1), F(10)), (F(2 * k + 1), F(0))]
+    vertices = [*teeth, (F(79), F(-5)), (F(0), F(5))]
+    assert _polygon_problem(vertices) == all_pairs_problem(vertices)
+    assert _polygon_problem(vertices) is not None
+
+
+texts = st.one_of(
+    st.from_regex(r"[+-]?[0-9]{1,12}(\.[0-9]{0,32})?", fullmatch=True),
+    st.sampled_from(["0", "-0", "+0.0", "1000000", "1000000.0000001", "-1000000", "0.000", "12."]),
+)
+
+
+@settings(max_examples=400, deadline=None)
+@given(texts, st.sampled_from([{}, {"positive": True}, {"nonnegative": True}, {"limit": F(10**9)}]))
+def test_fast_decimal_text_agrees_with_decimal(text, flags):
+    fast, slow = _Reader("m", ""), _Reader("m", "")
+    got = _number(fast, text, "v", None, **flags)
+    want = _number(slow, decimal.Decimal(text), "v", None, **flags)
+    assert got == want
+    assert [d.code for d in fast.diagnostics] == [d.code for d in slow.diagnostics]
+
+
+def test_region_diagnostics_point_at_their_lines():
+    rows = [f'  {{upto = "{i + 1}", max = "5"}},' for i in range(3000)]
+    rows[2500] = '  {upto = "2501", min = "7", max = "5"},'
+    text = ('[machine]\naxes = ["X", "Y"]\n[machine.rapid]\nX = "1"\nY = "1"\n[machine.reference]\nX = "0"\nY = "0"\n'
+            '[[zones]]\nname = "t"\nkind = "stepped"\nreference_axis = "X"\nlimited_axis = "Y"\nfrom = "0"\n'
+            'regions = [\n' + "\n".join(rows) + "\n]\n")
+    with pytest.raises(MachineFileError) as err:
+        parse_machine(text, "m.toml")
+    (d,) = err.value.diagnostics
+    assert d.code == "ZN122" and "region 2501" in d.message
+    assert d.span is not None and d.span.line == 15 + 2501 and d.span.text.strip().startswith('{upto = "2501", min')
