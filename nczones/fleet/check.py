@@ -7,14 +7,20 @@ new keys; change one program and only its cells do.
 Results are stored as they arrive.  Ctrl-C (KeyboardInterrupt) stops the
 run: tasks still queued are cancelled, the run is recorded as interrupted
 with its unfinished cells pending, and the interrupt goes on to the caller.
+Ctrl-C is also noted when it arrives and checked after every result: a
+KeyboardInterrupt that Python raises inside a finalizer (``__del__``) is
+lost, the note is not.
 """
 
 from __future__ import annotations
 
 import hashlib
+import signal
 import sys
+import threading
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Any, TextIO
 
@@ -208,9 +214,10 @@ def run_check(project: Project, store: Store, options: CheckOptions = CheckOptio
     interrupted = False
     try:
         if todo:
-            executor = (make_executor or choose_executor)(options, len(todo))
-            summary.executor = executor.name
-            _execute(project, plan, todo, store, executor, options, summary, err)
+            with _ctrl_c_noted() as ctrl_c:
+                executor = (make_executor or choose_executor)(options, len(todo))
+                summary.executor = executor.name
+                _execute(project, plan, todo, store, executor, options, summary, err, ctrl_c)
     except KeyboardInterrupt:
         interrupted = True
         _quiet_half_built_solver_contexts()
@@ -231,6 +238,30 @@ def run_check(project: Project, store: Store, options: CheckOptions = CheckOptio
             if v is not None:
                 summary.verdicts[v] = summary.verdicts.get(v, 0) + 1
     return summary
+
+
+@contextmanager
+def _ctrl_c_noted() -> Iterator[threading.Event]:
+    """An event set by Ctrl-C (SIGINT), which still raises KeyboardInterrupt as before.
+
+    Only in the main thread and only over Python's own handler (an ignored
+    or otherwise handled SIGINT is left alone).
+    """
+    noted = threading.Event()
+    previous = signal.getsignal(signal.SIGINT)
+    if threading.current_thread() is not threading.main_thread() or previous is not signal.default_int_handler:
+        yield noted
+        return
+
+    def handler(signum: int, frame: Any) -> None:
+        noted.set()
+        signal.default_int_handler(signum, frame)
+
+    signal.signal(signal.SIGINT, handler)
+    try:
+        yield noted
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 def _quiet_half_built_solver_contexts() -> None:
@@ -269,7 +300,8 @@ def choose_executor(options: CheckOptions, jobs: int) -> Any:
 
 
 def _execute(project: Project, plan: JobPlan, todo: list[Job], store: Store, executor: Any,
-             options: CheckOptions, summary: CheckSummary, err: TextIO) -> None:
+             options: CheckOptions, summary: CheckSummary, err: TextIO,
+             ctrl_c: threading.Event | None = None) -> None:
     transfer = options.transfer
     if transfer == "auto":
         transfer = "paths" if executor.name == "serial" or executor.name.startswith("local") else "bytes"
@@ -289,6 +321,8 @@ def _execute(project: Project, plan: JobPlan, todo: list[Job], store: Store, exe
             for t in tasks:
                 executor.submit(t)
         for task, answer, attempt in executor.results():
+            if ctrl_c is not None and ctrl_c.is_set():
+                raise KeyboardInterrupt  # Ctrl-C came, but its exception was lost on the way
             key = task["key"]
             job = plan.jobs[key]
             attempts[key] = max(attempts.get(key, 1), attempt)

@@ -2,10 +2,15 @@
 
 from __future__ import annotations
 
+import os
 import shutil
+import signal
+import time
 
+import pytest
 from fleet_helpers import check, small_library, without_status
 
+from nczones.fleet.execute import SerialExecutor
 from nczones.fleet.generate import mill_variant
 from nczones.fleet.store import Store
 
@@ -119,3 +124,29 @@ def test_the_progress_bar_counts_jobs_and_names_the_verdicts_that_are_not_safe(t
     frames = [f for f in err.getvalue().split("\r") if f.strip()]
     assert frames[-1].startswith("fleet [##############################] 2/2 jobs; 1 unsafe; ")
     assert err.getvalue().endswith("\r")  # the bar is erased at the end
+
+
+class _SwallowsCtrlC(SerialExecutor):
+    """Runs tasks in this process; during the second one a SIGINT arrives whose KeyboardInterrupt is lost, as
+    Python loses one raised inside a finalizer (``__del__``)."""
+
+    def results(self):
+        for n, item in enumerate(super().results()):
+            if n == 1:
+                try:
+                    os.kill(os.getpid(), signal.SIGINT)
+                    time.sleep(0.5)  # the handler runs here
+                except KeyboardInterrupt:
+                    pass
+            yield item
+
+
+def test_a_ctrl_c_whose_exception_is_lost_still_stops_the_run(tmp_path):
+    project = small_library(tmp_path / "lib", programs=3, machines=2)
+    with pytest.raises(KeyboardInterrupt):
+        check(project, tmp_path / "s.sqlite", _SwallowsCtrlC())
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # put back
+    with Store(tmp_path / "s.sqlite") as store:
+        (run,) = store.runs()
+        assert run.interrupted and run.ran == 1  # the first job; the second's answer came after Ctrl-C
+        assert sum(c.status == "pending" for c in store.cells(run.run_id)) == 5
