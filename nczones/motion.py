@@ -32,7 +32,8 @@ the controller uses a rational enclosure far inside one pulse.
 from __future__ import annotations
 
 import enum
-from collections.abc import Iterator
+import math
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
@@ -41,7 +42,7 @@ import numpy as np
 
 from .errors import SourceSpan
 
-__all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes"]
+__all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes", "arc_path_float"]
 
 
 class SegmentKind(enum.IntEnum):
@@ -170,6 +171,61 @@ class Segment:
             return False
         i, j, _ = self.plane_indices()
         return any(s != e for k, (s, e) in enumerate(zip(self.start, self.end)) if k not in (i, j))
+
+
+def arc_path_float(seg: Segment) -> tuple[Callable[[float], list[float]], float]:
+    """An arc (helix, spiral, R-format arc) as floats: ``(point at fraction f of the sweep, sweep in radians)``.
+
+    For drawing and approximate checks only (the exact geometry lives in the
+    prover): the radius changes linearly with the angle from the start radius
+    to the end radius (a spiral when they differ), every other axis linearly;
+    an R-format arc takes its centre on the side the sign of R and the
+    direction choose.
+
+    >>> F = Fraction
+    >>> seg = Segment(SegmentKind.ARC, (F(1), F(0)), (F(0), F(1)), ("X", "Y"), plane=Plane.XY, centre=(F(0), F(0)))
+    >>> at, sweep = arc_path_float(seg)
+    >>> [round(v, 9) for v in at(0.5)], round(sweep, 9)
+    ([0.707106781, 0.707106781], 1.570796327)
+    """
+    from .exact import to_float
+
+    i, j, _ = seg.plane_indices()
+    s = [to_float(x) for x in seg.start]
+    e = [to_float(x) for x in seg.end]
+    if seg.centre is not None:
+        ca, cb = to_float(seg.centre[0]), to_float(seg.centre[1])
+    else:
+        r = to_float(seg.radius) if seg.radius is not None else 0.0
+        dx, dy = e[i] - s[i], e[j] - s[j]
+        d = math.hypot(dx, dy) or 1.0
+        h = math.sqrt(max(r * r - d * d / 4, 0.0))
+        sign = (1 if seg.clockwise else -1) * (1 if r > 0 else -1)
+        ca = (s[i] + e[i]) / 2 + sign * h * dy / d
+        cb = (s[j] + e[j]) / 2 - sign * h * dx / d
+    a0 = math.atan2(s[j] - cb, s[i] - ca)
+    a1 = math.atan2(e[j] - cb, e[i] - ca)
+    sweep = a1 - a0
+    if seg.clockwise:
+        while sweep >= 0:
+            sweep -= 2 * math.pi
+    else:
+        while sweep <= 0:
+            sweep += 2 * math.pi
+    if seg.start == seg.end:
+        sweep = -2 * math.pi if seg.clockwise else 2 * math.pi
+    sweep += (-1 if seg.clockwise else 1) * 2 * math.pi * seg.turns
+    r0 = math.hypot(s[i] - ca, s[j] - cb)
+    r1 = math.hypot(e[i] - ca, e[j] - cb)
+
+    def at(f: float) -> list[float]:
+        ang = a0 + sweep * f
+        rad = r0 + (r1 - r0) * f
+        q = [sv + (ev - sv) * f for sv, ev in zip(s, e)]
+        q[i], q[j] = ca + rad * math.cos(ang), cb + rad * math.sin(ang)
+        return q
+
+    return at, sweep
 
 
 @dataclass(frozen=True)

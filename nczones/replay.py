@@ -46,7 +46,7 @@ from . import cli
 from .errors import Diagnostic, InputError, InvalidArgument
 from .exact import format_decimal, parse_rational, to_float
 from .machine import Machine, RapidMode, load_machine
-from .motion import Segment, SegmentKind
+from .motion import Segment, SegmentKind, arc_path_float
 
 __all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "register",
            "IRRATIONAL_TOLERANCE_MM"]
@@ -179,41 +179,7 @@ def on_arc(p: Point, seg: Segment) -> bool:
 
 def _float_arc_distance(p: Point, seg: Segment) -> float:
     """Distance (max over axes) from ``p`` to an arc, helix or spiral, in floats."""
-    i, j, _ = seg.plane_indices()
-    s = [to_float(x) for x in seg.start]
-    e = [to_float(x) for x in seg.end]
-    if seg.centre is not None:
-        ca, cb = to_float(seg.centre[0]), to_float(seg.centre[1])
-    else:  # R format: the centre on the side the sign of R and the direction choose
-        r = to_float(seg.radius) if seg.radius is not None else 0.0
-        dx, dy = e[i] - s[i], e[j] - s[j]
-        d = math.hypot(dx, dy) or 1.0
-        h = math.sqrt(max(r * r - d * d / 4, 0.0))
-        sign = (1 if seg.clockwise else -1) * (1 if r > 0 else -1)
-        ca = (s[i] + e[i]) / 2 + sign * h * dy / d
-        cb = (s[j] + e[j]) / 2 - sign * h * dx / d
-    a0 = math.atan2(s[j] - cb, s[i] - ca)
-    a1 = math.atan2(e[j] - cb, e[i] - ca)
-    sweep = a1 - a0
-    if seg.clockwise:
-        while sweep >= 0:
-            sweep -= 2 * math.pi
-    else:
-        while sweep <= 0:
-            sweep += 2 * math.pi
-    if seg.start == seg.end:
-        sweep = -2 * math.pi if seg.clockwise else 2 * math.pi
-    sweep += (-1 if seg.clockwise else 1) * 2 * math.pi * seg.turns
-    r0 = math.hypot(s[i] - ca, s[j] - cb)
-    r1 = math.hypot(e[i] - ca, e[j] - cb)
-
-    def at(f: float) -> list[float]:
-        ang = a0 + sweep * f
-        rad = r0 + (r1 - r0) * f
-        q = [sv + (ev - sv) * f for sv, ev in zip(s, e)]
-        q[i], q[j] = ca + rad * math.cos(ang), cb + rad * math.sin(ang)
-        return q
-
+    at, _ = arc_path_float(seg)
     return _min_distance([to_float(x) for x in p], at)
 
 

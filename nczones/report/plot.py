@@ -20,7 +20,7 @@ from matplotlib.patches import Rectangle
 
 from ..exact import to_float
 from ..machine import Machine
-from ..motion import Segment, SegmentKind
+from ..motion import Segment, SegmentKind, arc_path_float
 from ..zones import PolygonZone, SteppedZone, Zone
 
 __all__ = ["plot_zones", "plot_path", "mark_points", "plot_machine", "path_points_float", "view_limits"]
@@ -145,44 +145,9 @@ def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax: Any =
 
 def _arc_float_points(seg: Segment, steps_per_turn: int = 360) -> list[tuple[float, ...]]:
     """Float samples along an arc (for drawing); the exact geometry lives in the prover."""
-    i, j, _ = seg.plane_indices()
-    s = [to_float(c) for c in seg.start]
-    e = [to_float(c) for c in seg.end]
-    if seg.centre is not None:
-        ca, cb = to_float(seg.centre[0]), to_float(seg.centre[1])
-    else:  # R-format: float centre for drawing only
-        r = to_float(seg.radius) if seg.radius is not None else 0.0
-        dx, dy = e[i] - s[i], e[j] - s[j]
-        d = math.hypot(dx, dy)
-        h = math.sqrt(max(r * r - d * d / 4, 0.0))
-        sign = (1 if seg.clockwise else -1) * (1 if r > 0 else -1)
-        ca = (s[i] + e[i]) / 2 + sign * h * dy / d
-        cb = (s[j] + e[j]) / 2 - sign * h * dx / d
-    a0 = math.atan2(s[j] - cb, s[i] - ca)
-    a1 = math.atan2(e[j] - cb, e[i] - ca)
-    sweep = a1 - a0
-    if seg.clockwise:
-        while sweep >= 0:
-            sweep -= 2 * math.pi
-    else:
-        while sweep <= 0:
-            sweep += 2 * math.pi
-    if seg.start == seg.end:
-        sweep = -2 * math.pi if seg.clockwise else 2 * math.pi
-    sweep += (-1 if seg.clockwise else 1) * 2 * math.pi * seg.turns
-    r0 = math.hypot(s[i] - ca, s[j] - cb)
-    r1 = math.hypot(e[i] - ca, e[j] - cb)
+    at, sweep = arc_path_float(seg)
     n = max(8, int(abs(sweep) / (2 * math.pi) * steps_per_turn))
-    out = []
-    for k in range(n + 1):
-        t = k / n
-        ang = a0 + sweep * t
-        r = r0 + (r1 - r0) * t
-        p = [sc + (ec - sc) * t for sc, ec in zip(s, e)]
-        p[i] = ca + r * math.cos(ang)
-        p[j] = cb + r * math.sin(ang)
-        out.append(tuple(p))
-    return out
+    return [tuple(at(k / n)) for k in range(n + 1)]
 
 
 def _developed_arc_float_points(seg: Segment, samples: int = 48) -> list[tuple[float, ...]]:
