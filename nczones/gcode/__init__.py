@@ -43,7 +43,7 @@ Errors in the program raise :class:`~nczones.errors.GcodeError` (codes
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from fractions import Fraction
 from typing import Any
 
@@ -98,7 +98,7 @@ class Interpretation:
     def __init__(self, source: ProgramSource, machine: Machine, *, block_delete: bool,
                  track_dependencies: bool, arc_tolerance: Fraction | str, fast: bool, chunk_size: int,
                  max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, dialect: str = "linuxcnc",
-                 library=None, param_ranges=()):
+                 library: Any = None, param_ranges: tuple = ()):
         self.source = source
         text = self.text = source.text
         self.machine = machine
@@ -109,7 +109,8 @@ class Interpretation:
         self.library = library
         #: The Fanuc language layer's runners (one per piece of the program it read), for their notes.
         self.runners: list = []
-        self._variables = None
+        self._variables: Any = None
+        cls: type[Interpreter]
         if dialect == "fanuc":
             from .fanuc.interpreter import FanucInterpreter
 
@@ -152,7 +153,7 @@ class Interpretation:
             self.interpreter._out = []
         self.finished = True
 
-    def blocks(self, text: str, first_line: int = 1, first_index: int = 0, fast_runs=None):
+    def blocks(self, text: str, first_line: int = 1, first_index: int = 0, fast_runs: Any = None) -> Iterator[Any]:
         """The language layer of this dialect over ``text`` (the whole program, or for the Fanuc dialect a
         piece of it starting at ``first_line``): its blocks, ending as ``unknown`` at an unsupported code."""
         it = self.interpreter
@@ -175,7 +176,7 @@ class Interpretation:
             from .fanuc.expr import FanucVariables
 
             self._variables = FanucVariables(dict(self.machine.fanuc.variables))
-            self.interpreter.bind_variables(self._variables)
+            self.interpreter.bind_variables(self._variables)  # type: ignore[attr-defined]
         return self._variables
 
     @property
@@ -226,7 +227,7 @@ class Interpretation:
 
 
 def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,
-            first_line: int = 1, max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS):
+            first_line: int = 1, max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS) -> Iterator[Any]:
     """The language layer's blocks; an UnsupportedGcode ends them as ``unknown``."""
     from .expr import Parameters
     from .program import iter_blocks
@@ -243,7 +244,7 @@ def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter |
                                                    lane=interpreter.lane_for_blocks()))
 
 
-def _unknown_at_unsupported(interpreter: Interpreter, blocks):
+def _unknown_at_unsupported(interpreter: Interpreter, blocks: Iterable[Any]) -> Iterator[Any]:
     """``blocks``; an UnsupportedGcode ends them, recorded as the interpreter's ``unknown`` reason."""
     from .program import UnsupportedGcode
 
@@ -320,7 +321,7 @@ def interpret(
 
     src = as_source(source, file=file, text_function="interpret_text")
     tol: Fraction | str = "linuxcnc" if arc_tolerance == "linuxcnc" else exact(arc_tolerance)
-    if tol != "linuxcnc" and tol < 0:
+    if isinstance(tol, Fraction) and tol < 0:
         raise InvalidArgument(f"arc_tolerance must not be negative, got {arc_tolerance!r}")
     if not isinstance(max_loop_iterations, int) or isinstance(max_loop_iterations, bool) or max_loop_iterations < 1:
         raise InvalidArgument(f"max_loop_iterations must be a positive integer, got {max_loop_iterations!r}")

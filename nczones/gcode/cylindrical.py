@@ -180,6 +180,7 @@ class CylindricalInterpreter(Interpreter):
     # ------------------------------------------------------------------ blocks in the mode
     def _in_mode(self, block: Block) -> None:
         cyl = self.cylinder
+        assert cyl is not None  # called in cylindrical interpolation mode only
         g1 = None
         for w in block.words:
             if w.letter == "G":
@@ -217,6 +218,7 @@ class CylindricalInterpreter(Interpreter):
 
     def _arc_block(self, block: Block, motion: int, axis_words: list[Word]) -> None:
         cyl = self.cylinder
+        assert cyl is not None  # called in cylindrical interpolation mode only
         words: dict[str, Word] = {}
         for w in block.words:
             if w.letter == "G":
@@ -268,8 +270,8 @@ class CylindricalInterpreter(Interpreter):
                               "in cylindrical interpolation (R format only)", rw)
         from ..cylinder import degree_length
 
-        k = degree_length(cyl.radius)
-        d = k * (c1 - c0)
+        k_mm = degree_length(cyl.radius)
+        d = k_mm * (c1 - c0)
         l2 = d.sqr() + (z1 - z0) ** 2
         limit = (abs(r) + self.arc_tolerance) ** 2 * 4
         if l2.lo > limit:

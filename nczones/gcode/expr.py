@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
+from typing import Any
 
 from ..errors import InvalidArgument
 from .lexer import _fraction, _fraction_raw
@@ -80,7 +81,7 @@ class EvalError(Exception):
 Value = tuple  # (float, Fraction | None)
 
 
-def _pair(value) -> Value:
+def _pair(value: Any) -> Value:
     if isinstance(value, Fraction):
         return (value.numerator / value.denominator, value)
     if isinstance(value, bool):
@@ -146,13 +147,13 @@ class Parameters:
     # -- public API -------------------------------------------------------------
     def get(self, key: int | str) -> float:
         """The controller's double for ``#key`` (KeyError for an unset name)."""
-        return self.read(key)[0]
+        return float(self.read(key)[0])
 
     def get_exact(self, key: int | str) -> Fraction:
         """The exact value a word ``X#key`` would receive."""
         return word_value(self.read(key))
 
-    def set(self, key: int | str, value) -> None:
+    def set(self, key: int | str, value: Any) -> None:
         """Set ``#key`` from a Fraction, int or float (no ``on_write`` call)."""
         self._store(self._key(key), _pair(value))
 
@@ -203,7 +204,7 @@ class Parameters:
         if self.on_write is not None:
             self.on_write(key, value[0])
 
-    def _store(self, key, value: Value) -> None:
+    def _store(self, key: int | str, value: Value) -> None:
         if isinstance(key, int):
             self._num[key] = value
         elif key.startswith("_"):
@@ -258,14 +259,14 @@ def _check(d: float) -> float:
     return d
 
 
-def parameter_key(node, params: Parameters) -> int | str:
+def parameter_key(node: Any, params: Parameters) -> int | str:
     """The key (int or name) a PAR/NPAR tree refers to, range-checked."""
     if node[0] == NPAR:
-        return node[1]
+        return str(node[1])
     d = evaluate(node[1], params)[0]
     if d - d:  # inf (a literal too large for a double) or NaN
         raise EvalError("GC204", f"parameter number {d!r} is not an integer")
-    index = round(d)
+    index: int = round(d)
     if abs(d - index) > 0.0001:
         raise EvalError("GC204", f"parameter number {d!r} is not an integer")
     if not 1 <= index <= params.max_parameter:
@@ -273,7 +274,7 @@ def parameter_key(node, params: Parameters) -> int | str:
     return index
 
 
-def evaluate(node, params: Parameters) -> Value:
+def evaluate(node: Any, params: Parameters) -> Value:
     """Evaluate an expression tree to ``(double, exact shadow or None)``.
 
     >>> from nczones.gcode.parser import parse_line
@@ -304,7 +305,7 @@ def evaluate(node, params: Parameters) -> Value:
         try:
             return params.read(key)
         except KeyError:
-            if key.startswith(("_hal[", "_ini[")) or key in PREDEFINED:
+            if isinstance(key, str) and (key.startswith(("_hal[", "_ini[")) or key in PREDEFINED):
                 raise EvalError("GC305", f"#<{key}> reads controller state (HAL pins, INI values, predefined "
                                 "parameters) that nobody provided") from None
             raise EvalError("GC310", f"named parameter #<{key}> is not defined") from None
@@ -335,47 +336,49 @@ _FALSE = (0.0, Fraction(0))
 _UNSET = (0.0, Fraction(0))  # what an unset numbered parameter reads
 
 
-def _q_add(a: Fraction, b: Fraction) -> Fraction:
+def _q_add(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots
     """``a + b`` by integer arithmetic (the result is normalized, equal to Fraction's)."""
     if not a._numerator:
-        return b
+        same: Fraction = b
+        return same
     da, db = a._denominator, b._denominator
     if da == db:
         return _fraction(a._numerator + b._numerator, da)
     return _fraction(a._numerator * db + b._numerator * da, da * db)
 
 
-def _q_sub(a: Fraction, b: Fraction) -> Fraction:
+def _q_sub(a: Any, b: Any) -> Fraction:
     if not b._numerator:
-        return a
+        same: Fraction = a
+        return same
     da, db = a._denominator, b._denominator
     if da == db:
         return _fraction(a._numerator - b._numerator, da)
     return _fraction(a._numerator * db - b._numerator * da, da * db)
 
 
-def _q_mul(a: Fraction, b: Fraction) -> Fraction:
+def _q_mul(a: Any, b: Any) -> Fraction:
     return _fraction(a._numerator * b._numerator, a._denominator * b._denominator)
 
 
-def _q_div(a: Fraction, b: Fraction) -> Fraction:
+def _q_div(a: Any, b: Any) -> Fraction:
     """``a / b`` for ``b != 0``."""
     n, d = a._numerator * b._denominator, a._denominator * b._numerator
     return _fraction(-n, -d) if d < 0 else _fraction(n, d)
 
 
 if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
-    def _q_add(a, b):  # noqa: F811
-        return a + b
+    def _q_add(a: Any, b: Any) -> Fraction:  # noqa: F811
+        return Fraction(a + b)
 
-    def _q_sub(a, b):  # noqa: F811
-        return a - b
+    def _q_sub(a: Any, b: Any) -> Fraction:  # noqa: F811
+        return Fraction(a - b)
 
-    def _q_mul(a, b):  # noqa: F811
-        return a * b
+    def _q_mul(a: Any, b: Any) -> Fraction:  # noqa: F811
+        return Fraction(a * b)
 
-    def _q_div(a, b):  # noqa: F811
-        return a / b
+    def _q_div(a: Any, b: Any) -> Fraction:  # noqa: F811
+        return Fraction(a / b)
 
 
 def _binary(op: str, left: Value, right: Value) -> Value:

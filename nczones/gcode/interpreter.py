@@ -306,7 +306,7 @@ class Interpreter:
         machine: Machine,
         *,
         file: str = "<program>",
-        arc_tolerance: Fraction = DEFAULT_ARC_TOLERANCE,
+        arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE,
         track_dependencies: bool = False,
         chunk_size: int = DEFAULT_CHUNK_SIZE,
         param_ranges=(),

@@ -26,6 +26,7 @@ import re
 from fractions import Fraction
 from functools import lru_cache
 from math import gcd as _gcd
+from typing import Any
 
 from ..errors import SourceSpan
 from ..frozen import builder
@@ -70,8 +71,8 @@ def _fraction_raw(n: int, d: int) -> Fraction:
     """Fraction(n, d) for d > 0 without the generic constructor (5x faster)."""
     g = _gcd(n, d)
     q = _new(Fraction)
-    q._numerator = n // g
-    q._denominator = d // g
+    q._numerator = n // g  # type: ignore[attr-defined]
+    q._denominator = d // g  # type: ignore[attr-defined]
     return q
 
 
@@ -83,8 +84,8 @@ def _double_raw(x: float) -> Fraction:
     """``Fraction(x)`` for a finite double (its ratio is already in lowest terms)."""
     n, d = x.as_integer_ratio()
     q = _new(Fraction)
-    q._numerator = n
-    q._denominator = d
+    q._numerator = n  # type: ignore[attr-defined]
+    q._denominator = d  # type: ignore[attr-defined]
     return q
 
 
@@ -137,9 +138,9 @@ _POW10 = tuple(10**k for k in range(24))
 make_span = builder(SourceSpan, name="make_span")
 #: ``Word(letter, value, span, text)``, built faster (see :mod:`nczones.frozen`).
 make_word = builder(Word, name="make_word")
-_word_letter = Word.letter.__set__  # type: ignore[attr-defined]  # for _LazyWord
-_word_value = Word.value.__set__  # type: ignore[attr-defined]
-_word_text = Word.text.__set__  # type: ignore[attr-defined]
+_word_letter = Word.letter.__set__  # type: ignore[attr-defined, misc]  # for _LazyWord
+_word_value = Word.value.__set__  # type: ignore[attr-defined, misc]
+_word_text = Word.text.__set__  # type: ignore[attr-defined, misc]
 
 
 class _LazyWord(Word):
@@ -152,9 +153,10 @@ class _LazyWord(Word):
 
     __slots__ = ("_at",)
     __qualname__ = "Word"
+    _at: Any
 
     @property
-    def span(self) -> SourceSpan:  # type: ignore[override]
+    def span(self) -> SourceSpan:
         at = self._at
         if type(at) is tuple:
             (file, lineno, line), col, end = at
@@ -162,14 +164,15 @@ class _LazyWord(Word):
                 col, end = _item_columns(line, col, -1 - end)
             at = make_span(file, lineno, col, end, line)
             object.__setattr__(self, "_at", at)
-        return at
+        built: SourceSpan = at
+        return built
 
     @span.setter
     def span(self, value: SourceSpan) -> None:
         object.__setattr__(self, "_at", value)
 
 
-_lazy_at = _LazyWord._at.__set__  # type: ignore[attr-defined]
+_lazy_at = _LazyWord._at.__set__  # type: ignore[misc]
 
 
 def _item_columns(line: str, start: int, k: int) -> tuple[int, int]:
@@ -332,13 +335,18 @@ class PlainBlock(Block):
     """
 
     __slots__ = ("letters", "values", "_words")
+    letters: str
+    values: tuple[Any, ...]
+    _words: Any
 
     @property
-    def words(self) -> tuple[Word, ...]:  # type: ignore[override]
+    def words(self) -> tuple[Word, ...]:
         words = self._words
         if words is None:
             span = self.span
-            words = scan_simple(span.text, span.line, span.file)[2]
+            scanned = scan_simple(span.text, span.line, span.file)
+            assert scanned is not None  # a plain block's line is simple
+            words = scanned[2]
             _block_words(self, words)
         elif type(words) is list:  # evaluated words: (letter, value, column, end column, text) each
             span = self.span
@@ -351,7 +359,8 @@ class PlainBlock(Block):
             words = tuple([make_word(letter, value, make_span(file, line, c[0], c[1], text), c[2])
                            for letter, value, c in zip(self.letters, self.values, words.columns(words.parts, text))])
             _block_words(self, words)
-        return words
+        made: tuple[Word, ...] = words
+        return made
 
     @words.setter
     def words(self, words: tuple[Word, ...]) -> None:  # Block.__init__ (dataclasses.replace): an eager block
@@ -360,16 +369,17 @@ class PlainBlock(Block):
         _block_values(self, ())
 
 
-_block_words = PlainBlock._words.__set__  # type: ignore[attr-defined]
-_block_letters = PlainBlock.letters.__set__  # type: ignore[attr-defined]
-_block_values = PlainBlock.values.__set__  # type: ignore[attr-defined]
-_block_span = Block.span.__set__  # type: ignore[attr-defined]
-_block_index = Block.index.__set__  # type: ignore[attr-defined]
-_block_number = Block.number.__set__  # type: ignore[attr-defined]
-_block_messages = Block.messages.__set__  # type: ignore[attr-defined]
+_block_words = PlainBlock._words.__set__  # type: ignore[misc]
+_block_letters = PlainBlock.letters.__set__  # type: ignore[attr-defined, misc]
+_block_values = PlainBlock.values.__set__  # type: ignore[attr-defined, misc]
+_block_span = Block.span.__set__  # type: ignore[attr-defined, misc]
+_block_index = Block.index.__set__  # type: ignore[attr-defined, misc]
+_block_number = Block.number.__set__  # type: ignore[misc, union-attr]
+_block_messages = Block.messages.__set__  # type: ignore[attr-defined, misc]
 
 
-def plain_block(letters: str, values: tuple, span: SourceSpan, index: int, number, words=None) -> PlainBlock:
+def plain_block(letters: str, values: tuple[Any, ...], span: SourceSpan, index: int, number: Fraction | None,
+                words: Any = None) -> PlainBlock:
     """A :class:`PlainBlock` built without the frozen-dataclass overhead (``words``: how its words are
     made when read, see :attr:`PlainBlock.words`; None: lexed from the line)."""
     b = _new(PlainBlock)
@@ -383,7 +393,7 @@ def plain_block(letters: str, values: tuple, span: SourceSpan, index: int, numbe
     return b
 
 
-def plain_block_of(words: list[tuple], span: SourceSpan, index: int, number) -> PlainBlock:
+def plain_block_of(words: list[tuple[Any, ...]], span: SourceSpan, index: int, number: Fraction | None) -> PlainBlock:
     """A :class:`PlainBlock` of evaluated words ``(letter, value, column, end column, text)``: the plain
     lane reads their letters and values; the :class:`Word` objects are made only when read.
 

@@ -34,6 +34,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any, NoReturn
 
 from ..errors import Diagnostic, GcodeError, SourceSpan
 from .lexer import decimal_value
@@ -69,6 +70,12 @@ _NAME = re.compile(r"[a-z]+")
 _WORD_OP = re.compile(r"mod|and|xor|or|eq|ne|gt|ge|lt|le")
 _FANUC_MACRO = re.compile(r"(?:if\[|if#|goto|then|while\[|end\d|do\d)")
 _INT_LABEL = re.compile(r"\d+")
+
+
+def _word_name(s: str, i: int) -> str:
+    """The run of letters at ``i`` (empty when there is none)."""
+    m = _NAME.match(s, i)
+    return m.group() if m is not None else ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -167,14 +174,14 @@ class _Parser:
         """1-based source column of compressed position ``i``."""
         return self.cols[min(i, self.n)] + 1
 
-    def fail(self, code: str, message: str, start: int, end: int | None = None):
+    def fail(self, code: str, message: str, start: int, end: int | None = None) -> NoReturn:
         raise LineSyntaxError(code, message, start, end)
 
     def shown(self, i: int) -> str:
         return repr(self.s[i]) if i < self.n else "the end of the line"
 
     # -- values -----------------------------------------------------------------
-    def number(self, i: int):
+    def number(self, i: int) -> tuple[Any, int]:
         m = _NUMBER.match(self.s, i)
         if m is None:
             found = self.s[i:i + 8] or "nothing"
@@ -183,7 +190,7 @@ class _Parser:
         text = m.group()
         return (NUM, float(text), decimal_value(text)), m.end()
 
-    def real_value(self, i: int):
+    def real_value(self, i: int) -> tuple[Any, int]:
         s = self.s
         if i >= self.n:
             self.fail("GC104", "expected a value, found the end of the line", i)
@@ -199,8 +206,9 @@ class _Parser:
             return self.function(i)
         return self.number(i)
 
-    def function(self, i: int):
+    def function(self, i: int) -> tuple[Any, int]:
         m = _NAME.match(self.s, i)
+        assert m is not None  # called at a letter
         name = m.group()
         j = m.end()
         if name not in FUNCTIONS:
@@ -224,7 +232,7 @@ class _Parser:
             return (ATAN, arg, arg2), k
         return (FN, name, arg), k
 
-    def parameter(self, i: int):
+    def parameter(self, i: int) -> tuple[Any, int]:
         """``#n``, ``##n``, ``#[expr]`` or ``#<name>`` starting at the ``#``."""
         j = i + 1
         s = self.s
@@ -242,7 +250,7 @@ class _Parser:
         index, k = self.real_value(j)
         return (PAR, index), k
 
-    def operator(self, i: int):
+    def operator(self, i: int) -> tuple[str | None, int]:
         s = self.s
         if i >= self.n:
             self.fail("GC105", "expression not closed: missing ']'", i)
@@ -257,15 +265,16 @@ class _Parser:
             return None, i + 1
         m = _WORD_OP.match(s, i)
         if m is None:
-            shown = _NAME.match(s, i).group() if "a" <= c <= "z" else c
+            name = _NAME.match(s, i) if "a" <= c <= "z" else None
+            shown = name.group() if name is not None else c
             self.fail("GC105", f"unknown operator {shown.upper()!r} in expression; expected one of "
                       "** * / MOD + - EQ NE GT GE LT LE AND OR XOR or ']'", i, i + 1)
         return m.group(), m.end()
 
-    def expression(self, i: int):
+    def expression(self, i: int) -> tuple[Any, int]:
         """``[ value (op value)* ]`` starting at ``[``, with LinuxCNC precedence."""
-        values = []
-        ops = []
+        values: list[Any] = []
+        ops: list[str] = []
         node, j = self.real_value(i + 1)
         values.append(node)
         while True:
@@ -281,7 +290,7 @@ class _Parser:
             values.append(node)
 
     # -- line -----------------------------------------------------------------
-    def comment(self, i: int, comments: list):
+    def comment(self, i: int, comments: list[Any]) -> int:
         s = self.s
         end = s.find(")", i)
         if end < 0:
@@ -292,7 +301,7 @@ class _Parser:
         comments.append((s[i + 1:end], self.col(i)))
         return end + 1
 
-    def oword(self, i: int, comments: list):
+    def oword(self, i: int, comments: list[Any]) -> tuple[OWord, int]:
         s = self.s
         j = i + 1
         if j < self.n and s[j] == "<":
@@ -343,7 +352,7 @@ class _Parser:
         delete = False
         number = None
         oword = None
-        words = []
+        words: list[Any] = []
         assigns = []
         comments: list = []
         if n and s[0] == "%":
@@ -386,7 +395,7 @@ class _Parser:
                 if c == "o":
                     self.fail("GC202", "an O-word must come first in the block", i, i + 1)
                 if i + 1 >= n or s[i + 1] in "(=]" or (
-                        "a" <= s[i + 1] <= "z" and _NAME.match(s, i + 1).group() not in FUNCTIONS):
+                        "a" <= s[i + 1] <= "z" and _word_name(s, i + 1) not in FUNCTIONS):
                     self.fail("GC104", f"letter {c.upper()!r} has no value; a word is a letter followed by a "
                               "number, '#' parameter or '[expression]'", i, i + 1)
                 value, j = self.real_value(i + 1)

@@ -39,6 +39,7 @@ like G64 blending, that approximation is not modelled (specs/gcode-support.md).
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Any
 
 from ..motion import PLANE_AXES, Plane, SegmentKind
 from ..nurbs import Nurbs, NurbsError, clamped_uniform_knots
@@ -64,7 +65,7 @@ class _Pending:
         self.q = None
 
 
-def spline_pending(it) -> str | None:
+def spline_pending(it: Any) -> str | None:
     """Why an unfinished curve is pending (for the end of the program), or None."""
     p = getattr(it, "_spline", None)
     if p is None:
@@ -85,7 +86,7 @@ def _plane_words(it, words, axis_words, code):
     return a, b, has_a, has_b
 
 
-def _emit_curve(it, code, degree, knots, control, weights) -> None:
+def _emit_curve(it: Any, code: Any, degree: Any, knots: Any, control: Any, weights: Any) -> None:
     try:
         Nurbs(degree, tuple(knots), tuple(control), tuple(weights))
     except NurbsError as exc:
@@ -103,7 +104,7 @@ def _emit_curve(it, code, degree, knots, control, weights) -> None:
         it._out[-1] = replace(it._out[-1], extra=extra)
 
 
-def spline_block(it, motion: int, axis_words, words, g1) -> None:
+def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> None:
     """Execute one block whose active motion is a spline code (called by the interpreter)."""
     code = motion
     name = _NAME[code]
