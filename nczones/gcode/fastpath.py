@@ -55,7 +55,9 @@ Invariants
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Iterator
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
@@ -78,7 +80,7 @@ _HASH, _LBRACKET = ord("#"), ord("[")
 _MAGIC = re.compile(r"\(\s*(MSG|DEBUG|PRINT|LOG|PROBE|ABORT)", re.I)
 
 
-def run_with_fastpath(interp, block_bytes: int | None = None):
+def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[MotionChunk]:
     """Yield the chunks of ``interp`` (an Interpretation), fast where possible.
 
     The program is read in blocks of about ``block_bytes`` bytes (default
@@ -133,7 +135,7 @@ def _utf8_exact(text: str) -> bool:
     return True
 
 
-def _char_offsets(blk: bytes):
+def _char_offsets(blk: bytes) -> Callable[[Any], int]:
     """A function from byte offsets of (valid UTF-8) ``blk`` to character offsets."""
     b = np.frombuffer(blk, dtype=np.uint8)
     if not (b >= 0x80).any():
@@ -142,7 +144,7 @@ def _char_offsets(blk: bytes):
     return lambda p: int(p) - int(continuation[p])
 
 
-def _run_starts(text: str, it, size: int) -> dict[int, list]:
+def _run_starts(text: str, it: Any, size: int) -> dict[int, list]:
     """The runs of at least :data:`MIN_RUN` simple lines of a program, by the (character) offset of
     their first line: ``[end offset, first line number, lines, retries so far, times declined]``."""
     runs: dict[int, list] = {}
@@ -164,7 +166,7 @@ def _run_starts(text: str, it, size: int) -> dict[int, list]:
     return runs
 
 
-def _language_layer_with_runs(interp, runs: dict[int, list]):
+def _language_layer_with_runs(interp: Any, runs: dict[int, list]) -> Iterator[MotionChunk]:
     """The whole program through the language layer, which hands each run of simple lines it
     reaches (``runs``, see :func:`_run_starts`) to the fast path; a run the fast path cannot take
     in the state it finds (or only in part) is read by the language layer as usual.
@@ -209,7 +211,7 @@ def _language_layer_with_runs(interp, runs: dict[int, list]):
             yield chunk
 
 
-def _take_run(interp, runs: dict[int, list], req):
+def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | None:
     """Interpret the run at ``req.pos`` (or its first part) in columns and set ``req.resume``; or leave
     it unset (the language layer reads the lines) and register a retry 1, 2, 4, ... lines further on.
 
@@ -254,7 +256,7 @@ def _take_run(interp, runs: dict[int, list], req):
 MAX_DECLINES = 8
 
 
-def _state_decimal(it) -> int | None:
+def _state_decimal(it: Any) -> int | None:
     """The decimals the interpreter's position, offsets, feed and tool length need (None: more than
     the fast path's scale allows, or not decimal), checked before any line of a run is read."""
     s = 0
@@ -276,7 +278,7 @@ def _simple_runs(simple: np.ndarray) -> list[list[int]]:
     return edges.reshape(-1, 2).tolist()
 
 
-def _prepare(blk: bytes, it):
+def _prepare(blk: bytes, it: Any) -> tuple[Any, np.ndarray, np.ndarray, Any, list[tuple[int, int]], dict]:
     """What a block needs before interpretation, independent of the modal state: the
     classification, the runs to take fast and their parsed words (a pure function of the bytes).
 
@@ -298,12 +300,11 @@ def _prepare(blk: bytes, it):
 BLOCK_BYTES = 1 << 20
 
 
-def _encoded_blocks(src: str | bytes, size: int):
+def _encoded_blocks(src: str | bytes, size: int) -> Iterator[bytes]:
     """Blocks of about ``size`` characters of ``src``, each ending after a newline (or at the end), as bytes.
 
     Only one block is encoded at a time, so no second copy of the program is made.
     """
-    nl = "\n" if isinstance(src, str) else b"\n"
     n = len(src)
     lo = 0
     while lo < n:
@@ -311,7 +312,7 @@ def _encoded_blocks(src: str | bytes, size: int):
         if hi >= n:
             hi = n
         else:
-            cut = src.find(nl, hi - 1)
+            cut = src.find("\n", hi - 1) if isinstance(src, str) else src.find(b"\n", hi - 1)
             hi = n if cut < 0 else cut + 1
         blk = src[lo:hi]
         yield blk.encode("utf-8", errors="surrogateescape") if isinstance(blk, str) else blk
@@ -358,7 +359,7 @@ def _distinct_sorted(a: np.ndarray) -> np.ndarray:
     return a[np.concatenate(([True], a[1:] != a[:-1]))]
 
 
-def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
+def _needs_language_layer(src: str | bytes, it: Any, size: int) -> bool:
     """True if the code (outside comments) has ``O / M98 M99``: the whole program needs the language layer.
 
     So does a computed M code (``M#1``, ``M[90 + 8]``), which could be one of them.  Parameter
@@ -367,8 +368,10 @@ def _needs_language_layer(src: str | bytes, it, size: int) -> bool:
     Only the lines holding one of the bytes ``/ O o M m`` can hold such a
     token; they are stripped of comments and blanks and checked exactly.
     """
-    chars = "/OoMm" if isinstance(src, str) else [bytes((ch,)) for ch in b"/OoMm"]
-    if not any(src.find(ch) >= 0 for ch in chars):
+    if isinstance(src, str):
+        if not any(src.find(ch) >= 0 for ch in "/OoMm"):
+            return False
+    elif not any(src.find(bytes((ch,))) >= 0 for ch in b"/OoMm"):
         return False
     if isinstance(src, str) and not any(src.find(ch) >= 0 for ch in "/Oo(;") and not _m98_m99_raw(src):
         return False  # M words, but none can read M98/M99/M#/M[ once blanks are removed (no comment can hide one)
@@ -401,7 +404,8 @@ _LANGUAGE_TOKENS = (b"O", b"/", b"M98", b"M99", b"M#", b"M[")
 _NAMES = re.compile(rb"<[^<>]*>")
 
 
-def _run_block(interp, blk: bytes, line0: int, block_counter, prep=None, params=None):
+def _run_block(interp: Any, blk: bytes, line0: int, block_counter: Any, prep: Any = None,
+               params: Any = None) -> Iterator[MotionChunk]:
     """Interpret one block of whole lines (line ``line0`` is its first, 0-based).
 
     Maximal runs of simple lines are taken fast when long enough or cut by
@@ -500,7 +504,7 @@ def _percent_cut(text: str) -> str | None:
     return text[:last_end]
 
 
-def _state_ok(it) -> bool:
+def _state_ok(it: Any) -> bool:
     ok = getattr(it, "fast_state_ok", None)  # what a dialect's interpreter adds (Fanuc: no cycle, transform)
     return (not it.unsupported and it.motion in (None, 0, 10, 20, 30) and not it.comp_just_off
             and not it.comp_on and not it.track and it._u is None  # no XY rotation (G10 L2 R) active
@@ -609,7 +613,7 @@ def _line_bounds(nl: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
     return starts, ends_
 
 
-def _classify(data: bytes, it):
+def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, tuple[np.ndarray, np.ndarray]]:
     """Per line of a block: simple or not; line byte ranges; the code bytes (comments/blanks removed).
 
     Returns ``(simple, starts, ends, (code, code_line))``: ``code`` holds the
@@ -676,7 +680,7 @@ def _classify(data: bytes, it):
     return ~bad, starts, ends_, (c, cl_line)
 
 
-def _allowed_table(it) -> np.ndarray:
+def _allowed_table(it: Any) -> np.ndarray:
     letters = set(b"GIJKFNSM") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
     allowed = np.zeros(256, dtype=bool)
     for ch in letters | set(b"0123456789.+-"):
@@ -736,9 +740,7 @@ def _parse_words(c, cl_line, lo_line, hi_line):
         return None
     decimals = np.zeros(nwords, dtype=np.int64)
     dots = np.flatnonzero(isdot)
-    word_id = None
-    if dots.size or sp.size:
-        word_id = np.cumsum(is_letter, dtype=np.int32) - 1
+    word_id = np.cumsum(is_letter, dtype=np.int32) - 1 if dots.size or sp.size else np.zeros(0, np.int32)
     points = np.zeros(nwords, dtype=bool)
     if dots.size:
         dw = word_id[dots]
@@ -919,7 +921,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if max(map(abs, pos0 + off + [f0, _scaled_int(it.tlo, S)]), default=0) > _LIMIT_STATE:
         return None  # the state's numbers could overflow int64 in sums: the full path (exact ints)
     end = np.empty((n, na), dtype=np.int64)
-    ar = np.arange(n, dtype=np.int64) if it.absolute else None
+    ar = np.arange(n, dtype=np.int64)
     for k in range(na):
         pres, val = axis_present[k], axis_val[k]
         if it.absolute:
@@ -1009,7 +1011,8 @@ _FANUC_ROTARY = np.zeros(256, dtype=bool)
 _FANUC_ROTARY[list(b"ABC")] = True
 
 
-def _fanuc_words_ok(it, wletter, wval, wdec, points) -> bool:
+def _fanuc_words_ok(it: Any, wletter: np.ndarray, wval: np.ndarray, wdec: np.ndarray,
+                    points: np.ndarray) -> bool:
     """Whether every length word (of the parsed words of a run) is read as written in the Fanuc dialect: with
     a decimal point (or zero) and no more decimals than the least input increment.  Other lines go to the
     language layer, which applies the decimal point input rule and the rounding and notes them."""
@@ -1035,7 +1038,8 @@ def _scaled_int(q: Fraction, S: int) -> int:
     return int(v)
 
 
-def _arcs_ok(sa, sb, ea, eb, ca, cb, tol: Fraction, S: int) -> bool:
+def _arcs_ok(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca: np.ndarray, cb: np.ndarray,
+             tol: Fraction, S: int) -> bool:
     """Every arc: both radii non-zero and |r0 - r1| <= tol (exactly)."""
     r0f = (sa - ca).astype(np.float64) ** 2 + (sb - cb).astype(np.float64) ** 2
     r1f = (ea - ca).astype(np.float64) ** 2 + (eb - cb).astype(np.float64) ** 2
@@ -1066,7 +1070,7 @@ _XYN = np.zeros(256, dtype=bool)
 _XYN[list(b"XYN")] = True
 
 
-def _cycle_state_ok(it) -> bool:
+def _cycle_state_ok(it: Any) -> bool:
     """The state in which a hole line (X/Y words only) under G81/G82 is exactly what :func:`_fast_cycle_run` builds."""
     comp = getattr(it, "_comp", None)
     return (not it.unsupported and it.motion in (810, 820) and it._last_cycle == it.motion

@@ -89,10 +89,11 @@ Examples
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Generator, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
+from typing import Any, BinaryIO
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import LANE_FULL, Block
@@ -109,7 +110,7 @@ from .lexer import (
     scan_plain,
     scan_simple,
 )
-from .parser import OWord, ParsedLine, parse_line
+from .parser import ParsedLine, parse_line
 from .shapes import LAYOUT, RUNS, CompiledLine, compiled_line, line_shaped, parse_line_shaped
 
 __all__ = [
@@ -168,12 +169,14 @@ class _Source:
 
 class _StringSource(_Source):
     __slots__ = ("text", "n")
+    text: str
+    n: int
 
     def __init__(self, text: str):
         self.text = text
         self.n = len(text)
 
-    def line_at(self, pos: int):
+    def line_at(self, pos: int) -> tuple[str | None, int]:
         if pos >= self.n:
             return None, pos
         end = self.text.find("\n", pos)
@@ -190,11 +193,11 @@ class _StringSource(_Source):
 class _FileSource(_Source):
     __slots__ = ("f", "where")
 
-    def __init__(self, f):
+    def __init__(self, f: BinaryIO):
         self.f = f
         self.where = 0
 
-    def line_at(self, pos: int):
+    def line_at(self, pos: int) -> tuple[str | None, int]:
         if pos != self.where:
             self.f.seek(pos)
         raw = self.f.readline()
@@ -231,7 +234,7 @@ class _Frame:
     saved: tuple | None = None
     body: tuple[int, int] = (0, 0)
     repeats: int = 0
-    loops: list = field(default_factory=list)
+    loops: list[_Loop] = field(default_factory=list)
     ifs: list = field(default_factory=list)
 
 
@@ -240,14 +243,14 @@ _FANUC_END = re.compile(r"[mM][ \t]*0*99(?![\d.])")
 _PROGRAM_END_HINT = re.compile(r"(?:^|[^a-zA-Z])[mM][ \t]*0*(?:2|30)(?![\d.])|^[ \t]*%")
 
 
-def _olabel(m: re.Match):
-    raw = m.group(1)
+def _olabel(m: re.Match) -> int | str:
+    raw: str = m.group(1)
     if raw[0] == "<":
         return raw[1:-1].lower()
     return int(raw)
 
 
-def _show(label) -> str:
+def _show(label: object) -> str:
     return f"o<{label}>" if isinstance(label, str) else f"o{label}"
 
 
@@ -266,6 +269,7 @@ class FastRunRequest:
     """
 
     __slots__ = ("pos", "lineno", "index", "resume")
+    resume: tuple[int, int, int] | None
 
     def __init__(self, pos: int, lineno: int, index: int):
         self.pos, self.lineno, self.index, self.resume = pos, lineno, index, None
@@ -274,7 +278,7 @@ class FastRunRequest:
 class _Runner:
     def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
-                 fast_runs: dict | None = None, lane=None):
+                 fast_runs: dict | None = None, lane: Any = None):
         self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
         self.lane = lane  # plain blocks are offered to it before they are built (see iter_blocks)
         self.first_line = first_line
@@ -299,11 +303,12 @@ class _Runner:
             end = max(col + 1, len(line) + 1)
         return SourceSpan(self.file, lineno, col, end, line)
 
-    def error(self, code: str, message: str, lineno: int, line: str, col: int = 1, end: int | None = None):
+    def error(self, code: str, message: str, lineno: int, line: str, col: int = 1,
+              end: int | None = None) -> GcodeError:
         return GcodeError(Diagnostic(code, message, self.span(lineno, line, col, end)))
 
-    def unsupported(self, code: str, message: str, lineno: int, line: str, col: int = 1, end=None,
-                    cls=UnsupportedGcode):
+    def unsupported(self, code: str, message: str, lineno: int, line: str, col: int = 1, end: int | None = None,
+                    cls: type[UnsupportedGcode] = UnsupportedGcode) -> UnsupportedGcode:
         return cls(Diagnostic(code, message, self.span(lineno, line, col, end)))
 
     def syntax_error(self, exc: GcodeError, pos: int, lineno: int) -> GcodeError:
@@ -325,7 +330,7 @@ class _Runner:
         return GcodeError(diags[:MAX_REPORTED_ERRORS])
 
     # -- scanning (no execution) -------------------------------------------------
-    def scan(self, pos: int, lineno: int):
+    def scan(self, pos: int, lineno: int) -> Iterator[tuple[int, int, str, int]]:
         """Yield ``(pos, lineno, line, next_pos)`` from ``pos`` (lineno of the first line)."""
         while True:
             line, nxt = self.src.line_at(pos)
@@ -335,8 +340,8 @@ class _Runner:
             pos = nxt
             lineno += 1
 
-    def skip_to(self, label, keywords: tuple[str, ...], pos: int, lineno: int, what: str, line0: str, lineno0: int,
-                nested_sub_error: bool = False):
+    def skip_to(self, label: object, keywords: tuple[str, ...], pos: int, lineno: int, what: str, line0: str,
+                lineno0: int, nested_sub_error: bool = False) -> tuple[str, int, int, str, int]:
         """Find the next line ``<label> <keyword>`` with keyword in ``keywords``.
 
         Returns ``(keyword, pos, lineno, line, next_pos)``.  LinuxCNC matches
@@ -360,7 +365,7 @@ class _Runner:
         raise self.error("GC314", f"{_show(label)} {what} has no matching "
                          + " / ".join(f"{_show(label)} {k}" for k in keywords), lineno0, line0)
 
-    def find_definitions(self):
+    def find_definitions(self) -> None:
         """Index every ``o.. sub`` and Fanuc ``O<n>`` line of the program (once)."""
         if self.scanned_all:
             return
@@ -379,7 +384,11 @@ class _Runner:
                 self.fanuc.setdefault(lab, (nxt, ln + 1))
 
     # -- execution ----------------------------------------------------------------
-    def run(self) -> Iterator[Block]:
+    def run(self) -> Iterator[Any]:
+        """Yield the program's blocks; also a :class:`FastRunRequest` at a line of ``fast_runs`` and
+        ``LANE_FULL`` when the lane asks for its blocks to be taken."""
+        parsed: Any  # a ParsedLine, a CompiledLine or a scanner's tuple
+        shape: Any
         pos, lineno = 0, self.first_line
         src = self.src
         file = self.file
@@ -402,6 +411,7 @@ class _Runner:
             if in_text and pos and len(self.frames) == 1 and not self.frames[0].loops:
                 # a run of plain and compiled lines of the main program (no control, nothing to cache):
                 # the paths below, without the general loop's bookkeeping; stops before any other line
+                assert isinstance(src, _StringSource)
                 text, n, delete_on = src.text, src.n, self.block_delete
                 while pos < n:
                     if fast and pos in fast and pos != declined:
@@ -463,10 +473,11 @@ class _Runner:
             elif hit is not None:
                 parsed, line, nxt = hit
             else:
-                line, nxt = src.line_at(pos)
-                if line is None:
+                read, nxt = src.line_at(pos)
+                if read is None:
                     self.check_open_frames(lineno)
                     return
+                line = read
                 parsed = None
             if parsed is None:
                 # '#' or '[' outside comments: for the parser only (both scanners would refuse the line)
@@ -555,7 +566,7 @@ class _Runner:
                 return
             pos, lineno = target
 
-    def messages(self, comments) -> tuple[str, ...]:
+    def messages(self, comments: tuple) -> tuple[str, ...]:
         out = []
         for body, _col in comments:
             magic = magic_comment(body)
@@ -574,7 +585,8 @@ class _Runner:
         except (KeyError, NczonesError, EvalError):
             return "######"
 
-    def evaluate(self, tree, lineno, line, col=1, end=None):
+    def evaluate(self, tree: Any, lineno: int, line: str, col: int = 1,
+                 end: int | None = None) -> tuple[Any, ...]:
         try:
             return evaluate(tree, self.params)
         except EvalError as e:
@@ -584,7 +596,8 @@ class _Runner:
         except RecursionError:
             raise self.error("GC312", "expression nested too deeply", lineno, line, col, end) from None
 
-    def execute(self, pl: ParsedLine, line: str, lineno: int, pos: int, nxt: int):
+    def execute(self, pl: ParsedLine, line: str, lineno: int, pos: int,
+                nxt: int) -> Generator[Block, None, tuple[int, int] | None]:
         """Execute one general line; yields its block; returns the next (pos, lineno) or None to stop."""
         if pl.delete and self.block_delete:
             return nxt, lineno + 1
@@ -675,7 +688,8 @@ class _Runner:
         return nxt, lineno + 1
 
     # -- Fanuc subprograms -----------------------------------------------------------
-    def call_m98(self, pword, lword, loc, line, lineno, nxt):
+    def call_m98(self, pword: Any, lword: Any, loc: tuple[int, int], line: str, lineno: int,
+                 nxt: int) -> tuple[int, int]:
         if pword is None:
             raise self.error("GC317", "M98 needs a P word naming the subprogram (M98 P1000)", lineno, line, *loc)
         p = pword.value
@@ -702,7 +716,7 @@ class _Runner:
         self.push(_Frame("m98", label, (nxt, lineno + 1), None, body, count), lineno, line)
         return body
 
-    def return_m99(self, loc, line, lineno):
+    def return_m99(self, loc: tuple[int, int], line: str, lineno: int) -> tuple[int, int]:
         frame = self.frames[-1]
         if frame.kind == "main":
             raise self.unsupported("GC304", "M99 in the main program restarts it forever; endless programs "
@@ -718,14 +732,16 @@ class _Runner:
         self.frames.pop()
         return frame.ret
 
-    def push(self, frame: _Frame, lineno: int, line: str):
+    def push(self, frame: _Frame, lineno: int, line: str) -> None:
         if len(self.frames) > self.max_depth:
             raise self.error("GC316", f"subroutine calls nested deeper than {self.max_depth} levels", lineno, line)
         self.frames.append(frame)
 
     # -- O-words ----------------------------------------------------------------
-    def execute_oword(self, pl: ParsedLine, line: str, lineno: int, pos: int, nxt: int):
-        ow: OWord = pl.oword
+    def execute_oword(self, pl: ParsedLine, line: str, lineno: int, pos: int,
+                      nxt: int) -> Generator[Block, None, tuple[int, int] | None]:
+        ow = pl.oword
+        assert ow is not None
         kw = ow.keyword
         label = ow.label
         if isinstance(label, tuple):  # o[expr]
@@ -747,7 +763,7 @@ class _Runner:
         col, end = ow.column, ow.end_column
 
         def cond() -> bool:
-            return self.evaluate(ow.args[0], lineno, line, col, end)[0] != 0.0
+            return bool(self.evaluate(ow.args[0], lineno, line, col, end)[0] != 0.0)
 
         if kw == "sub":
             self.subs.setdefault(label, here)
@@ -780,6 +796,7 @@ class _Runner:
                 raise self.error("GC315", f"{_show(label)} {kw} outside a subroutine", lineno, line, col, end)
             if ow.args:
                 value = self.evaluate(ow.args[0], lineno, line, col, end)
+            assert frame.saved is not None  # an "o" frame saved the caller's scope when it was pushed
             self.params.pop_scope(frame.saved)
             if ow.args:
                 self.params.write("_value", value)
@@ -874,7 +891,8 @@ class _Runner:
             return after, ln + 1
         raise AssertionError(kw)  # pragma: no cover
 
-    def branch(self, label, taken: bool, frame: _Frame, nxt: int, lineno: int, line: str, open_if: bool):
+    def branch(self, label: object, taken: bool, frame: _Frame, nxt: int, lineno: int, line: str,
+               open_if: bool) -> tuple[int, int]:
         frame.ifs.append(label)
         if taken:
             return nxt, lineno + 1
@@ -892,11 +910,13 @@ class _Runner:
             except GcodeError as e:
                 raise self.syntax_error(e, after, kln) from None
             ow = pl.oword
+            assert ow is not None  # skip_to found this line by its O-word
             if self.evaluate(ow.args[0], kln, kline, ow.column, ow.end_column)[0] != 0.0:
                 return after, kln + 1
             p, ln = after, kln + 1
 
-    def innermost(self, frame: _Frame, label, kinds, kw, lineno, line, col, end) -> _Loop:
+    def innermost(self, frame: _Frame, label: object, kinds: tuple[str, ...], kw: str, lineno: int, line: str,
+                  col: int, end: int) -> _Loop:
         loops = frame.loops
         while loops and loops[-1].label != label:
             loops.pop()  # LinuxCNC leaves inner loops silently on break/continue of an outer one
@@ -905,14 +925,14 @@ class _Runner:
                              + "/".join(kinds), lineno, line, col, end)
         return loops[-1]
 
-    def count(self, loop: _Loop, lineno: int, line: str):
+    def count(self, loop: _Loop, lineno: int, line: str) -> None:
         loop.count += 1
         if loop.count > self.max_loops:
             raise self.unsupported("GC302", f"{_show(loop.label)} {loop.kind} loop ran more than "
                                    f"{self.max_loops} iterations (max_loop_iterations); not interpreted further",
                                    lineno, line, cls=IterationBoundExceeded)
 
-    def check_open_frames(self, lineno: int):
+    def check_open_frames(self, lineno: int) -> None:
         frame = self.frames[-1]
         if len(self.frames) > 1:
             raise GcodeError(Diagnostic("GC314", f"end of file inside subroutine {_show(frame.label)}",
@@ -936,7 +956,7 @@ def iter_blocks(
     max_call_depth: int = 100,
     first_line: int = 1,
     first_index: int = 0,
-    lane=None,
+    lane: Any = None,
 ) -> Iterator[Block]:
     """Execute the program's control and yield its blocks in execution order.
 
@@ -1014,7 +1034,7 @@ def read_program(
     """
     path = Path(path)
 
-    def gen():
+    def gen() -> Iterator[Block]:
         with open(path, "rb") as f:
             runner = _Runner(_FileSource(f), str(path), params if params is not None else Parameters(),
                              block_delete, max_loop_iterations, max_call_depth)

@@ -30,7 +30,9 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from operator import itemgetter
+from typing import Any
 
 from ..frozen import builder
 from .expr import _UNSET, EvalError, _binary, _check, _pair, _q_add, _q_div, _q_mul, _q_sub, _unary
@@ -64,9 +66,8 @@ def parse_line_shaped(line: str, lineno: int, file: str) -> ParsedLine:
     True
     """
     shape, literals = _shaped(line, lineno, file)
-    if literals is None:
-        return shape
-    return shape.rebuild(literals, line)
+    parsed: ParsedLine = shape if literals is None else shape.rebuild(literals, line)
+    return parsed
 
 
 def line_shaped(line: str, lineno: int, file: str) -> ParsedLine | CompiledLine:
@@ -84,13 +85,15 @@ def line_shaped(line: str, lineno: int, file: str) -> ParsedLine | CompiledLine:
             return compiled_line(hit[2], hit[1](line))
     shape, literals = _shaped(line, lineno, file)
     if literals is None:
-        return shape
+        parsed: ParsedLine = shape
+        return parsed
     if shape.run is None:
-        return shape.rebuild(literals, line)
+        rebuilt: ParsedLine = shape.rebuild(literals, line)
+        return rebuilt
     return compiled_line(shape, literals)
 
 
-def compiled_line(shape, parts: tuple) -> CompiledLine:
+def compiled_line(shape: _Shape, parts: tuple) -> CompiledLine:
     """The :class:`CompiledLine` of a line of ``shape`` whose literals are ``parts``."""
     c = _new(CompiledLine)
     c.shape = shape
@@ -105,7 +108,7 @@ def clear() -> None:
     RUNS.clear()
 
 
-def _shaped(line: str, lineno: int, file: str) -> tuple:
+def _shaped(line: str, lineno: int, file: str) -> tuple[Any, tuple[str, ...] | None]:
     """``(shape, its literals in this line)``, or ``(parse_line(...), None)`` when the line is parsed
     afresh (a new shape, a shape that cannot be used, a comment or non-ASCII text).
 
@@ -145,7 +148,7 @@ def _shaped(line: str, lineno: int, file: str) -> tuple:
     return shape, tuple(parts[1::2])
 
 
-def _cutter(parts: list[str]):
+def _cutter(parts: list[str]) -> Callable[[str], tuple[str, ...]]:
     """A function cutting the literals out of a line of the layout of the line split into ``parts``."""
     cuts = []
     pos = 0
@@ -156,7 +159,8 @@ def _cutter(parts: list[str]):
     if len(cuts) > 1:
         return itemgetter(*cuts)
     if cuts:
-        return lambda line, cut=cuts[0]: (line[cut],)
+        cut = cuts[0]
+        return lambda line: (line[cut],)
     return _no_literals
 
 
@@ -175,22 +179,25 @@ class CompiledLine:
     """
 
     __slots__ = ("shape", "parts")
+    shape: _Shape
+    parts: tuple[str, ...]
 
     @property
-    def columns(self):
+    def columns(self) -> Any:
         return self.shape.columns
 
 
 class _Shape:
     __slots__ = ("rebuild", "run", "columns")
+    run: Any  # the compiled code, or None (a CompiledLine's shape always has it)
 
-    def __init__(self, rebuild, run, columns):
+    def __init__(self, rebuild: Callable[..., ParsedLine], run: Callable[..., Any] | None, columns: Any) -> None:
         self.rebuild = rebuild
         self.run = run
         self.columns = columns
 
 
-def _compile(line: str, parts: list[str], pl: ParsedLine):
+def _compile(line: str, parts: list[str], pl: ParsedLine) -> Any:
     """The rebuild function of the shape of ``line`` (parsed as ``pl``), or _NO_SHAPE."""
     if pl.oword is not None or pl.unsupported is not None or pl.percent or pl.comments:
         return _NO_SHAPE
@@ -254,7 +261,7 @@ def _compile(line: str, parts: list[str], pl: ParsedLine):
     lines.append(f"    return _parsed_line({pl.delete!r}, {number_src}, ({''.join(w + ', ' for w in words)}), "
                  f"({''.join(a + ', ' for a in assigns)}))")
     src = "\n".join(lines) + "\n"
-    scope = {"_parsed_line": _parsed_line, "_num": _num}
+    scope: dict[str, Any] = {"_parsed_line": _parsed_line, "_num": _num}
     exec(compile(src, "<line shape>", "exec"), scope)  # noqa: S102  # built only from reprs of str/int/bool
     rebuild = scope["rebuild"]
     if rebuild(tuple(parts[1::2]), line) != pl:
@@ -284,14 +291,15 @@ class _Recording(_Parser):
     """The parser, noting the raw span and node of every number it reads."""
 
     __slots__ = ("numbers",)
+    numbers: list[tuple[int, int, Any]]
 
-    def number(self, i: int):
+    def number(self, i: int) -> tuple[Any, int]:
         node, j = _Parser.number(self, i)
         self.numbers.append((self.cols[i], self.cols[j - 1] + 1, node))
         return node, j
 
 
-def _tree(node, leaf_of: dict[int, str]) -> str:
+def _tree(node: Any, leaf_of: dict[int, str]) -> str:
     """Python source rebuilding an expression tree, its NUM leaves from the literals."""
     if type(node) is not tuple:
         if node is None or type(node) in (str, int, bool):
@@ -321,7 +329,8 @@ _decimal_uncached = plain_decimal_value.__wrapped__
 _COMPILE_RUNS = True
 
 
-def _executor(spans, pl: ParsedLine, leaf_of: dict[int, str], at, number_src: str | None):
+def _executor(spans: list[tuple[int, int]], pl: ParsedLine, leaf_of: dict[int, str], at: Callable[[int], str],
+              number_src: str | None) -> tuple[Callable[..., Any], Callable[..., Any]]:
     """Compiled ``(run, columns)`` of this shape (see :class:`CompiledLine`), or raise _Unshaped.
 
     ``run`` mirrors ``_Runner.execute`` and :func:`~nczones.gcode.expr.evaluate`: the same double
@@ -381,7 +390,7 @@ def _executor(spans, pl: ParsedLine, leaf_of: dict[int, str], at, number_src: st
     lines += ["def columns(P, line):", "    D = [0]"]
     lines += [f"    D.append(D[-1] + len(P[{k}]) - {b - a})" for k, (a, b) in enumerate(spans)]
     lines.append(f"    return [{''.join(c + ', ' for c in columns)}]")
-    scope = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "_double": _double,
+    scope: dict[str, Any] = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "_double": _double,
              "_STOP_M": _M_CONTROL, "_G_MACRO_CALLS": _G_MACRO_CALLS, "EvalError": EvalError, "_UNSET": _UNSET, "_pair": _pair, "_binary": _binary, "_unary": _unary,
              "_q_add": _q_add, "_q_sub": _q_sub, "_q_mul": _q_mul, "_q_div": _q_div, "_atan": _atan,
              "_IDX": _IDX, "_index": _index}
@@ -416,7 +425,7 @@ def _exact(src: str) -> str:
     return f"_dec({src})"
 
 
-def _decimal(text: str):
+def _decimal(text: str) -> Any:
     """The exact value of a literal (sign included), as the parser's NUM leaf has it."""
     return plain_decimal_value(text) if len(text) < 5 else _decimal_uncached(text)
 
@@ -436,7 +445,7 @@ class _Emit:
         self.n = 0
         self.uses_store = False
 
-    def value(self, node, out: list[str]) -> tuple[str, str, bool]:
+    def value(self, node: Any, out: list[str]) -> tuple[str, str, bool]:
         """Emit code for ``node``; its (double variable, shadow source, shadow is lazy)."""
         tag = node[0]
         self.n += 1
