@@ -49,10 +49,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
+from typing import TYPE_CHECKING, Any
 
 from ..errors import Diagnostic, GcodeError
 from ..exact import to_float
 from ..motion import PLANE_AXES, Plane, SegmentKind
+
+if TYPE_CHECKING:
+    from .interpreter import Interpreter
 
 __all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD"]
 
@@ -112,7 +116,7 @@ def _find_turn(x1: float, y1: float, cx: float, cy: float, turn: int, x2: float,
     return (beta - alpha) + (turn + 1) * (2 * _PI)
 
 
-def _inside(side: int, turn: int) -> bool:
+def _inside(side: int | None, turn: int) -> bool:
     """LinuxCNC TOOL_INSIDE_ARC: the tool is on the centre's side of the arc."""
     return (side == _LEFT and turn > 0) or (side == _RIGHT and turn < 0)
 
@@ -174,7 +178,7 @@ class CutterComp:
     ((Fraction(10, 1), Fraction(0, 1)), True)
     """
 
-    it: object
+    it: Interpreter
     side: int | None = None
     radius: float = 0.0
     first: bool = True
@@ -203,7 +207,7 @@ class CutterComp:
         """Exact machine coordinate of a program-frame double."""
         return Fraction(value) * self._unit() + self.it.off[i]
 
-    def _error(self, code: str, message: str, word=None) -> GcodeError:
+    def _error(self, code: str, message: str, word: Any = None) -> GcodeError:
         span = word.span if word is not None else self.it._span
         return GcodeError(Diagnostic(code, message, span))
 
@@ -213,7 +217,7 @@ class CutterComp:
         return self.side is not None and self.radius > 0.0
 
     # ------------------------------------------------------------------ G40 / G41 / G42
-    def select(self, key: int, word, words: dict) -> None:
+    def select(self, key: int, word: Any, words: dict) -> None:
         """G40 (key 400), G41 (410), G42 (420), G41.1 (411), G42.1 (421) (``convert_cutter_compensation``)."""
         it = self.it
         if key == 400:
@@ -305,7 +309,7 @@ class CutterComp:
         it.comp_on = False
 
     # ------------------------------------------------------------------ refusals
-    def check_block(self, groups: dict, mcodes, words: dict, axis_words, motion) -> None:
+    def check_block(self, groups: dict, mcodes: Any, words: dict, axis_words: Any, motion: Any) -> None:
         """LinuxCNC's refusals while compensation is on, and what nczones cannot model then."""
         it = self.it
         g0 = groups.get(0)
@@ -366,6 +370,7 @@ class CutterComp:
         ia, ib, _ = self._axes()
         for q in self.queue:
             start = self.machine_now
+            assert start is not None  # set when compensation started (_start)
             if q.dwell is not None:
                 end = tuple(start)
             else:
@@ -373,7 +378,9 @@ class CutterComp:
                 e[ia] = self._fmachine(ia, q.a)
                 e[ib] = self._fmachine(ib, q.b)
                 end = tuple(e)
-            ds = de = dt = ()
+            ds: tuple = ()
+            de: tuple = ()
+            dt: tuple = ()
             if it.track:
                 ds = it._deps_tuple(self.deps_now if self.deps_now is not None else it.dep_pos)
                 de = it._deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
@@ -450,14 +457,14 @@ class CutterComp:
             e[inn] = it.pos[inn]
         return e
 
-    def _advance(self, end: list, deps) -> None:
+    def _advance(self, end: list, deps: Any) -> None:
         it = self.it
         it.pos = list(end)
         if deps is not None:
             it.dep_pos = deps
 
     # ------------------------------------------------------------------ straight moves
-    def straight(self, kind: SegmentKind, end: list, deps) -> None:
+    def straight(self, kind: SegmentKind, end: list, deps: Any) -> None:
         """A G0/G1 move to the programmed machine point ``end`` with compensation on."""
         self._start()
         ia, ib, _ = self._axes()
@@ -468,7 +475,7 @@ class CutterComp:
             self._straight_next(kind, px, py, end, deps)
         self._advance(end, deps)
 
-    def _straight_first(self, kind, px, py, end, deps) -> None:
+    def _straight_first(self, kind: SegmentKind, px: float, py: float, end: list, deps: Any) -> None:
         radius, side = self.radius, self.side
         cx, cy = self.cur
         distance = math.hypot(px - cx, py - cy)
@@ -484,7 +491,7 @@ class CutterComp:
         self.cur = (ex, ey)
         self.prog = (px, py)
 
-    def _straight_next(self, kind, px, py, end, deps) -> None:
+    def _straight_next(self, kind: SegmentKind, px: float, py: float, end: list, deps: Any) -> None:
         it = self.it
         cx, cy = self.cur
         opx, opy = self.prog
@@ -580,7 +587,7 @@ class CutterComp:
             raise self._error(GC_GOUGE, message)
 
     # ------------------------------------------------------------------ arcs
-    def arc(self, block, axis_words, words, cw: bool) -> None:
+    def arc(self, block: Any, axis_words: Any, words: dict, cw: bool) -> None:
         """A G2/G3 move with compensation on.
 
         The interpreter's own arc conversion runs first on the programmed arc
@@ -588,12 +595,12 @@ class CutterComp:
         compensated arc is computed here.
         """
         it = self.it
-        captured = []
+        captured: list[tuple[Any, dict[str, Any]]] = []
 
-        def capture(kind, end, **kw):
+        def capture(kind: SegmentKind, end: Any, **kw: Any) -> None:
             captured.append((end, kw))
 
-        it._emit = capture
+        it._emit = capture  # type: ignore[method-assign]  # the arc's emission, captured
         try:
             it._arc(block, axis_words, words, cw, False)
         finally:
@@ -618,6 +625,7 @@ class CutterComp:
             cax, cay = c
             exact_centre = None
         else:
+            assert exact_centre is not None  # an I/J/K arc's centre is always emitted
             cax, cay = self._fprog(ia, exact_centre[0]), self._fprog(ib, exact_centre[1])
         if self.first:
             self._arc_first(cw, turn, ex, ey, cax, cay, rw, end, deps)
@@ -625,7 +633,8 @@ class CutterComp:
             self._arc_next(cw, turn, ex, ey, cax, cay, exact_centre, end, deps)
         self._advance(end, deps)
 
-    def _arc_first(self, cw, turn, end_x, end_y, center_x, center_y, rw, end, deps) -> None:
+    def _arc_first(self, cw: bool, turn: int, end_x: float, end_y: float, center_x: float, center_y: float,
+                   rw: Any, end: list, deps: Any) -> None:
         it = self.it
         side, tool_radius = self.side, self.radius
         cx, cy = self.cur
@@ -660,7 +669,8 @@ class CutterComp:
                             turn=turn, sweep=_find_turn(cx, cy, center_x, center_y, turn, end_x, end_y), deps=deps))
         self.cur = (end_x, end_y)
 
-    def _arc_next(self, cw, turn, end_x, end_y, centerx, centery, exact_centre, end, deps) -> None:
+    def _arc_next(self, cw: bool, turn: int, end_x: float, end_y: float, centerx: float, centery: float,
+                  exact_centre: Any, end: list, deps: Any) -> None:
         it = self.it
         opx, opy = self.prog
         cx, cy = self.cur
