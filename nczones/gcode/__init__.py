@@ -268,7 +268,7 @@ def interpret(
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     dialect: str | None = None,
     library: str | os.PathLike | None = None,
-    param_ranges=(),
+    param_ranges: Iterable[Any] = (),
 ) -> Interpretation:
     """Interpret the G-code program file ``source`` for a machine (lazily).
 

@@ -33,9 +33,10 @@ their circle, ...) is in ``specs/gcode-support.md``.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
@@ -199,10 +200,11 @@ _new = object.__new__
 _segment = builder(Segment, tuple(f for f in Segment.__dataclass_fields__ if f != "deps_tool"), deps_tool=())
 
 
-def _qadd(a: Fraction, b: Fraction) -> Fraction:
+def _qadd(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots
     """``a + b`` for Fractions, with a shortcut for equal denominators (decimal inputs)."""
     if not b._numerator:
-        return a
+        same: Fraction = a
+        return same
     da = a._denominator
     db = b._denominator
     if da == db:
@@ -210,25 +212,29 @@ def _qadd(a: Fraction, b: Fraction) -> Fraction:
     return _fraction(a._numerator * db + b._numerator * da, da * db)
 
 
-def _qinch(a: Fraction) -> Fraction:
+def _qinch(a: Any) -> Fraction:  # a Fraction, read through its slots
     """``a * 25.4`` (inches to mm) by integer arithmetic."""
     return _fraction(a._numerator * 127, a._denominator * 5)
 
 
-def _qlt(a: Fraction, b: Fraction) -> bool:
+def _qlt(a: Any, b: Any) -> bool:  # Fractions, read through their slots
     """``a < b`` for Fractions by integer cross-multiplication (denominators are positive)."""
-    return a._numerator * b._denominator < b._numerator * a._denominator
+    less: bool = a._numerator * b._denominator < b._numerator * a._denominator
+    return less
 
 
 if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
-    def _qadd(a: Fraction, b: Fraction) -> Fraction:  # noqa: F811
-        return a + b
+    def _qadd(a: Any, b: Any) -> Fraction:  # noqa: F811
+        total: Fraction = a + b
+        return total
 
-    def _qlt(a: Fraction, b: Fraction) -> bool:  # noqa: F811
-        return a < b
+    def _qlt(a: Any, b: Any) -> bool:  # noqa: F811
+        less: bool = a < b
+        return less
 
-    def _qinch(a: Fraction) -> Fraction:  # noqa: F811
-        return a * INCH
+    def _qinch(a: Any) -> Fraction:  # noqa: F811
+        mm: Fraction = a * INCH
+        return mm
 
 
 def _gname(key: int) -> str:
@@ -309,7 +315,7 @@ class Interpreter:
         arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE,
         track_dependencies: bool = False,
         chunk_size: int = DEFAULT_CHUNK_SIZE,
-        param_ranges=(),
+        param_ranges: Iterable[Any] = (),
     ):
         #: "linuxcnc": accept I/J/K arcs exactly when LinuxCNC does (see _linuxcnc_rejects_arc)
         self.arc_rule = "linuxcnc" if arc_tolerance == "linuxcnc" else "fixed"
@@ -369,19 +375,19 @@ class Interpreter:
         # ---- offsets (mm, machine axes)
         self.g5x = {name: list(machine.offset(name)) for name in WORK_OFFSETS}
         self.rot = {name: _ZERO for name in WORK_OFFSETS}  # G10 L2 R: XY rotation in degrees
-        self._ix, self._iy = self.index.get("X"), self.index.get("Y")
+        self._ix, self._iy = self.index.get("X", -1), self.index.get("Y", -1)  # -1: no such axis
         self.g92 = list(z)
         self.g92_params = list(z)
         self.g92_applied = False
         self.home = {280: tuple(machine.reference), 300: tuple(machine.reference)}
         self.tool_table: dict[int, tuple[Fraction, dict]] = {}  # G10 L1/L10/L11 writes
-        self.pos = list(machine.start)
+        self.pos: Sequence[Fraction] = list(machine.start)  # a tuple once the first move is emitted
         # dependency tracking (per axis: {source: coefficient})
         self.dep_pos = [{"start": 1} for _ in range(n)]
         self.dep_g5x = {name: [{name: 1} for _ in range(n)] for name in WORK_OFFSETS}
-        self.dep_g92 = [{} for _ in range(n)]
-        self.dep_g92_params = [{} for _ in range(n)]
-        self.dep_home = {280: [{} for _ in range(n)], 300: [{} for _ in range(n)]}
+        self.dep_g92: list[dict] = [{} for _ in range(n)]
+        self.dep_g92_params: list[dict] = [{} for _ in range(n)]
+        self.dep_home: dict[int, list[dict]] = {280: [{} for _ in range(n)], 300: [{} for _ in range(n)]}
         self.dep_tlo: dict = {}
         self._recompute_offsets()
         # ---- bookkeeping
@@ -442,7 +448,7 @@ class Interpreter:
             self._rot_key = None
             return
         ix, iy = self._ix, self._iy
-        if ix is None or iy is None:
+        if ix < 0 or iy < 0:
             self._unknown("G10 R", f"coordinate system rotation R{_fmt(r)} needs X and Y axes; this machine has "
                           f"{', '.join(self.axes)}")
             return
@@ -561,7 +567,8 @@ class Interpreter:
         return tuple(sorted(names))
 
     def _emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
-              plane=None, clockwise=False, centre=None, radius=None, turns=0, dwell=None,
+              plane: Plane | None = None, clockwise: bool = False, centre: Any = None, radius: Any = None,
+              turns: int = 0, dwell: Fraction | None = None,
               end_deps: list[dict] | None = None) -> None:
         start = self.pos
         if type(start) is not tuple:
@@ -573,7 +580,9 @@ class Interpreter:
         fmm = None
         if feed and self.feed_mode == 94:
             fmm = self.feed * INCH if self.inch else self.feed
-        ds = de = dt = ()
+        ds: tuple = ()
+        de: tuple = ()
+        dt: tuple = ()
         if self.track:
             ds = self._deps_tuple(self.dep_pos)
             de = self._deps_tuple(end_deps if end_deps is not None else self.dep_pos)
@@ -604,7 +613,7 @@ class Interpreter:
         return self._dep_names(self.dep_tlo, self.tool_axis) or ()
 
     # ------------------------------------------------------------------ parameters
-    def bind_parameters(self, params) -> None:
+    def bind_parameters(self, params: Any) -> None:
         """Provide the state parameters of :meth:`state_parameters` to the language layer.
 
         Every entry is computed on each read (the current position, offsets,
@@ -622,7 +631,7 @@ class Interpreter:
         """The dialect's table of state parameters (:mod:`nczones.gcode.state`); LinuxCNC's here."""
         return _LINUXCNC_STATE
 
-    def _state_reader(self, entry: StateParameter):
+    def _state_reader(self, entry: StateParameter) -> Any:
         def read():
             if self._m73:
                 self._m73_returns()
@@ -644,9 +653,10 @@ class Interpreter:
         return read
 
     # the state the readers of nczones.gcode.state see: (value, dependencies as parameter names)
-    def _named_deps(self, deps: dict, i: int, sign: int = 1) -> dict[str, int]:
-        if not self.track:
+    def _named_deps(self, deps: dict, i: int | None, sign: int = 1) -> dict[str, int]:
+        if not self.track or not deps:
             return {}
+        assert i is not None  # only a coordinate of an axis (the tool axis, for tool lengths) has sources
         axis = self.axes[i]
         return {(src if src.startswith("H") else f"{src}.{axis}"): sign * c for src, c in deps.items() if c}
 
@@ -973,7 +983,7 @@ class Interpreter:
         if ("I" in words or "J" in words or "K" in words) and self.motion not in (20, 30, 330, 331) and not self.unsupported \
                 and not (g0 and g0[0] == 100) and not (self.motion in (50, 51) and "K" not in words) \
                 and not (self.motion == 62 and "I" not in words and "J" not in words):
-            w = words.get("I") or words.get("J") or words.get("K")
+            w = words.get("I") or words.get("J") or words["K"]
             raise self._error("GC204", f"{w.text or w.letter} word with no G2 or G3 to use it", w)
         moving = bool(axis_words or (g1 and g1[0] in (20, 30)))
         if moving and not nonmodal_uses_axes and self.motion is not None:
@@ -982,7 +992,7 @@ class Interpreter:
             self.comp_just_off = False
         if not nonmodal_uses_axes:
             if g53 and not (g1 and g1[0] in (0, 10)) and not (self.motion in (0, 10) and not g1):
-                raise self._error("GC207", "G53 needs G0 or G1 in the same block (or active)", g0[1])
+                raise self._error("GC207", "G53 needs G0 or G1 in the same block (or active)", g0[1] if g0 else None)
             if axis_words or (g1 and g1[0] not in (800,) and g1[0] not in _UNSUPPORTED_G):
                 if self.unsupported and not g1 and not axis_words:
                     pass
@@ -1057,7 +1067,7 @@ class Interpreter:
         self._lean_move(axis_at, values)
         return True
 
-    def _plain_plan(self, letters: str):
+    def _plain_plan(self, letters: str) -> tuple | None:
         """How the plain lane reads a block with these letters: ``((value index, axis index), ...)``
         and the value indices of G, M and F (-1: absent); None if the letters rule the lane out
         (no axis, a repeated letter, a letter other than axes, G, M, F, S)."""
@@ -1070,7 +1080,7 @@ class Interpreter:
             self._plans[letters] = plan
         return plan
 
-    def _lean(self, g: int | None, m: int | None, f, extra: int) -> bool:
+    def _lean(self, g: int | None, m: int | None, f: Any, extra: int) -> bool:
         """Apply the modal part of a plain straight move and return True, or return False untouched.
 
         A plain move is at most one of G0/G1 (``g``: the G key), axis
@@ -1093,7 +1103,7 @@ class Interpreter:
         elif self.motion != 0 and self.motion != 10:
             return False
         if f is not None:
-            fv = f.value if isinstance(f, Word) else f
+            fv: Any = f.value if isinstance(f, Word) else f  # a Fraction, read through its slots
             if fv._numerator < 0:
                 return False
             self.feed = fv
@@ -1103,7 +1113,7 @@ class Interpreter:
             self.motion = g
         return True
 
-    def _lean_move(self, axis_at, values) -> None:
+    def _lean_move(self, axis_at: tuple[tuple[int, int], ...], values: Sequence[Fraction]) -> None:
         """The G0/G1 move of a plain block: ``_motion_block``, ``_program_target`` and ``_emit``
         for the one case they reduce to (no G53, rotation, tracking or pending machine position).
         ``axis_at``: ``(value index, axis index)`` of each axis word, its value in ``values``.
@@ -1112,7 +1122,7 @@ class Interpreter:
             self._note_assumed(("units", "distance", "offset"))
             self._noted_straight = True  # unset only shrinks and assumed only grows: once is enough
         pos = self.pos
-        end = list(pos)
+        end: Any = list(pos)  # the target's coordinates, then the tuple the segment holds
         inch = self.inch
         if inch:
             rotary = self.rotary
@@ -1121,7 +1131,7 @@ class Interpreter:
         if self.absolute:
             off = self.off
             for k, i in axis_at:
-                o = off[i]
+                o: Any = off[i]  # a Fraction, read through its slots
                 end[i] = _qadd(values[k], o) if o._numerator else values[k]
         else:
             for k, i in axis_at:
@@ -1130,7 +1140,8 @@ class Interpreter:
         if self.motion == 10:
             kind = SegmentKind.LINE
             if self.feed_mode == 94:
-                if self.feed._numerator == 0:
+                feed: Any = self.feed  # a Fraction, read through its slots
+                if feed._numerator == 0:
                     self._check_feed()
                 fmm = _qinch(self.feed) if inch else self.feed
         else:
@@ -1162,6 +1173,7 @@ class Interpreter:
         """
         scopes = self._scopes
         while self._m73:
+            assert scopes is not None  # M73 is taken only inside a call (with scopes)
             depth, scope, snap = self._m73[-1]
             if len(scopes) >= depth and scopes[depth - 1] is scope:
                 break
@@ -1216,7 +1228,7 @@ class Interpreter:
             self.dep_tlo = {}
         self._recompute_offsets()
 
-    def _program_target(self, axis_words, g53: bool, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
+    def _program_target(self, axis_words: list[tuple[int, Word]], g53: bool, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
         absolute = self.absolute if absolute is None else absolute
         end = list(self.pos)
         deps = [dict(d) for d in self.dep_pos] if self.track else None
@@ -1250,7 +1262,8 @@ class Interpreter:
                 self._u_next = u
         return end, deps
 
-    def _motion_block(self, block, axis_words, words, g1, g53: bool) -> None:
+    def _motion_block(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], g1: Any,
+                      g53: bool) -> None:
         motion = self.motion
         if motion is None:
             if axis_words and not self.unsupported:
@@ -1291,7 +1304,7 @@ class Interpreter:
         else:
             raise InternalError(f"motion mode {motion}")
 
-    def _spindle_synced(self, motion: int, axis_words, words, g53: bool) -> None:
+    def _spindle_synced(self, motion: int, axis_words: list[tuple[int, Word]], words: dict[str, Word], g53: bool) -> None:
         """G33 (threading) and G33.1 (rigid tapping): the geometry of LinuxCNC's spindle-synchronized moves.
 
         G33 is a straight line to the end point (K = pitch, the speed follows
@@ -1329,7 +1342,7 @@ class Interpreter:
             raise self._error("GC305", "feed motion with zero feed rate: no F word has been given (write F before or in this block)")
 
     # ------------------------------------------------------------------ arcs
-    def _arc(self, block, axis_words, words, cw: bool, g53: bool) -> None:
+    def _arc(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], cw: bool, g53: bool) -> None:
         if g53:
             raise self._error("GC207", "G53 cannot be used with G2/G3")
         plane = self.plane
@@ -1362,6 +1375,7 @@ class Interpreter:
                               "(G10 L2 R) lies in a plane that is no machine plane; not modelled")
                 return
             # the arc in the pre-rotation frame (program + G92); end and centre rotated as LinuxCNC does
+            assert self._u is not None and self._u_next is not None  # set by _program_target under rotation
             (sa, sb), (ea, eb) = self._u, self._u_next
             off_a, off_b = self.g92[ia], self.g92[ib]
         else:
@@ -1431,7 +1445,7 @@ class Interpreter:
                    turns=turns, end_deps=deps)
 
     # ------------------------------------------------------------------ G28/G30, G10, G92, G52
-    def _home(self, k: int, axis_words, w: Word) -> None:
+    def _home(self, k: int, axis_words: list[tuple[int, Word]], w: Word) -> None:
         self._note_assumed(("units", "distance", "offset"))
         inter, deps = self._program_target(axis_words, False)
         self._emit(SegmentKind.RAPID, inter, derived=f"{_gname(k)} intermediate", end_deps=deps)
@@ -1446,7 +1460,7 @@ class Interpreter:
         self._machine_xy(end)
         self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} home", end_deps=hdeps)
 
-    def _g10(self, words, axis_words, w: Word) -> None:
+    def _g10(self, words: dict[str, Word], axis_words: list[tuple[int, Word]], w: Word) -> None:
         lw, pw = words.get("L"), words.get("P")
         if lw is None:
             raise self._error("GC208", "G10 needs an L word (L1, L2, L10, L20)", w)
@@ -1492,7 +1506,7 @@ class Interpreter:
         else:
             self._g10_tool(int(L), P, pw, axis_words)
 
-    def _g10_l20_rotated(self, name: str, axis_words) -> None:
+    def _g10_l20_rotated(self, name: str, axis_words: list[tuple[int, Word]]) -> None:
         """G10 L20 on X/Y of a rotated system: the offset that makes the current position read the values.
 
         Axes without a word keep their current program value in that system;
@@ -1514,7 +1528,7 @@ class Interpreter:
         self.dep_g5x[name][ix] = {}
         self.dep_g5x[name][iy] = {}
 
-    def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words) -> None:
+    def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words: list[tuple[int, Word]]) -> None:
         """G10 L1/L10/L11: write the tool table entry of tool P (LinuxCNC ``convert_setup_tool``).
 
         Only the tool-axis length is modelled; an offset on another axis (a
@@ -1531,7 +1545,7 @@ class Interpreter:
             if i == self.tool_axis:
                 v = self._mm(aw.value, i)
                 if L == 1:
-                    length, deps = v, {}
+                    length, deps = v, dict[str, Fraction]()
                 else:
                     g5 = self.g5x["G59.3" if L == 11 else self.wcs][i]
                     g92 = _ZERO if L == 11 else self.g92[i]
@@ -1547,7 +1561,7 @@ class Interpreter:
                               "models tool length on the tool axis only", aw)
                 return
 
-    def _g92(self, axis_words, w: Word) -> None:
+    def _g92(self, axis_words: list[tuple[int, Word]], w: Word) -> None:
         if not axis_words:
             raise self._error("GC208", "G92 needs at least one axis word", w)
         for i, aw in axis_words:
@@ -1567,7 +1581,7 @@ class Interpreter:
         self.g92_applied = True
         self._recompute_offsets()
 
-    def _g52(self, axis_words) -> None:
+    def _g52(self, axis_words: list[tuple[int, Word]]) -> None:
         for i, aw in axis_words:
             self.g92[i] = self._mm(aw.value, i)
             self.dep_g92[i] = {}
@@ -1577,7 +1591,7 @@ class Interpreter:
         self._recompute_offsets()
 
     # ------------------------------------------------------------------ canned cycles
-    def _cycle(self, motion: int, axis_words, words) -> None:
+    def _cycle(self, motion: int, axis_words: list[tuple[int, Word]], words: dict[str, Word]) -> None:
         plane = self.plane
         a_name, b_name, c_name = PLANE_AXES[plane]
         ia, ib, ic = self.index.get(a_name), self.index.get(b_name), self.index.get(c_name)
@@ -1699,6 +1713,7 @@ class Interpreter:
                 if lt((r, r_d), clear, ic, "R is below the clear level"):
                     go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} to R")
             if motion in (730, 830):
+                assert delta is not None  # Q read above for G73/G83
                 depth = r - delta
                 while lt((cc, cc_d), (depth, r_d), ic, "a peck ends above the bottom"):
                     go(SegmentKind.LINE, aa, bb, (depth, r_d), f"{name} peck")
@@ -1785,7 +1800,8 @@ class Interpreter:
             return self.machine.tool_length(int(name[1:])) + dev
         return centre + dev
 
-    def _g84_swapped(self, plane, ia, ib, ic, aa, bb, cc, clear, dwell) -> None:
+    def _g84_swapped(self, plane: Plane, ia: int, ib: int, ic: int, aa: Fraction, bb: Fraction, cc: Fraction,
+                     clear: Fraction, dwell: Fraction | None) -> None:
         """G84's two feeds in G18/G19 as LinuxCNC really sends them (its canon logs ``tests/interp/g84``).
 
         LinuxCNC's G84 outside G17 feeds with the axis order of the *other*
@@ -1826,7 +1842,7 @@ def _with_tool_deps(seg: Segment, names: tuple[str, ...]) -> Segment:
     return replace(seg, deps_tool=names)
 
 
-def _show_key(key) -> str:
+def _show_key(key: int | str) -> str:
     return f"#{key}" if isinstance(key, int) else f"#<{key}>"
 
 
@@ -1877,7 +1893,7 @@ def _fmt_sqrt(q: Fraction) -> str:
     return format_decimal(Fraction(root, 10**6), places=6)
 
 
-def blocks_from_words(lines, file: str = "<words>") -> list[Block]:
+def blocks_from_words(lines: Iterable[Iterable[str]], file: str = "<words>") -> list[Block]:
     """Blocks from tuples of word texts (``("G1", "X1.5")``); for examples and tests.
 
     Not a lexer: each item must be one word, letter then decimal.
