@@ -38,10 +38,10 @@ from __future__ import annotations
 import os
 import re
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import replace
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import format_decimal, parse_decimal
@@ -52,6 +52,9 @@ from .core import Prover, verify_segments
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .profile import RunProfile
 from .result import ParamRange, Reason, Result, Verdict, Violation
+
+if TYPE_CHECKING:
+    from ..gcode import Interpretation
 
 F0 = Fraction(0)
 
@@ -282,7 +285,7 @@ def _verify(
                 profile=profile)
     deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)]
     positions = ((False, True) if mode == "both" else (mode == "on",)) if deleted else (False,)
-    per_position = []
+    per_position: list[tuple[Result, Interpretation]] = []
     for skip in positions:
         per_position.append(_verify_cases(source, machine, ranges, skip, extra, opts))
         if per_position[-1][0].interrupted:  # Ctrl-C: the other position is not verified
@@ -308,7 +311,7 @@ def _verify(
                 reasons.append(Reason(f"interrupted (Ctrl-C) after {limits.elapsed():.1f} s while the tool-break "
                                       "recovery was proved: it was not checked completely", None, None, "VF204"))
                 break
-            source_text = source_lines(source.text, [v.span.line for v in rec.violations]
+            source_text = source_lines(source.text, [v.span.line for v in rec.violations if v.span is not None]
                                        + [r.span.line for r in rec.reasons if r.span is not None])
             switch = (("block_delete", "on" if skip else "off"),) if len(positions) == 2 else ()
             for v in rec.violations:
@@ -343,7 +346,7 @@ def _verify(
 _BLOCK_DELETE_LINE = re.compile(r"(?m)^[ \t]*/")
 
 
-def _switch_notes(text: str, deleted: list[int], mode: str, stops) -> tuple[str, ...]:
+def _switch_notes(text: str, deleted: list[int], mode: str, stops: Iterable[tuple[int, Any]]) -> tuple[str, ...]:
     """What the report says about the operator's switches: block delete, stops."""
     notes: tuple[str, ...] = ()
     if deleted:
@@ -389,7 +392,8 @@ def _both_switch_positions(off: Result, on: Result, max_violations: int) -> Resu
                    extra={"splits": tuple(off.extra.get("splits", ())) + tuple(on.extra.get("splits", ()))})
 
 
-def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, extra, opts):
+def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRange, ...], skip: bool,
+                  extra: dict[str, Any], opts: dict[str, Any]) -> tuple[Result, Interpretation]:
     """Prove one position of the block-delete switch over the parameter ranges: (result, first interpretation).
 
     The path is built per case: a branch that switches inside a range splits
@@ -437,11 +441,12 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges, skip: bool, e
                                                        f"cycle's levels cross) at {where}: proved as separate "
                                                        "cases on each side and at the switching value",),
                          extra={"splits": tuple(splits)})
+    assert first_run is not None  # the loop ran at least once (it starts with one case)
     return result, first_run
 
 
-def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations, progress,
-                limits: RunLimits, profile: RunProfile) -> Result:
+def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange, ...], *, margin: Fraction,
+                engine: str, max_violations: int, progress: Any, limits: RunLimits, profile: RunProfile) -> Result:
     """Prove one interpretation (one case): its result with source text, unknown codes and notes filled in."""
     from ..motion import MotionChunk
 
@@ -457,11 +462,11 @@ def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations
         else:
             progress(line, total)
 
-    def with_text(seq):
+    def with_text(seq: Iterable[Any]) -> Iterator[Any]:
         for chunk in seq:
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
                 yield chunk
-                if progress is not None and len(chunk):
+                if progress is not None and len(chunk) and chunk.line is not None:
                     report(int(chunk.line[-1]))
             else:
                 for s in chunk.segments():
@@ -472,8 +477,9 @@ def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations
     result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file, limits=limits, profile=profile)
     # fill the source text of violations and reasons (column chunks carry only line numbers)
-    wanted = [x.span.line for x in (*result.violations, *result.reasons, *run.unsupported)
-              if x.span is not None and not x.span.text and x.span.line >= 1]
+    spans = [*(v.span for v in result.violations), *(r.span for r in result.reasons),
+             *(u.span for u in run.unsupported)]
+    wanted = [s.line for s in spans if s is not None and not s.text and s.line >= 1]
     source_text = source_lines(run.text, wanted)
     violations = tuple(replace(v, span=_fix_span(v.span, source_text)) for v in result.violations)
     reasons = list(replace(r, span=_fix_span(r.span, source_text)) for r in result.reasons)
@@ -492,7 +498,7 @@ def _verify_run(run, machine: Machine, ranges, *, margin, engine, max_violations
     return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes)
 
 
-def _fix_span(span, source_text: dict[int, str]):
+def _fix_span(span: Any, source_text: dict[int, str]) -> Any:
     """A span with its line's source text (column chunks and derived spans carry only the line number)."""
     if span is None or span.text or span.line not in source_text:
         return span
@@ -504,7 +510,7 @@ def _line_count(text: str) -> int:
     return text.count("\n") + (1 if text and not text.endswith("\n") else 0)
 
 
-def source_lines(text: str, wanted, step: int = 1 << 16) -> dict[int, str]:
+def source_lines(text: str, wanted: Iterable[int], step: int = 1 << 16) -> dict[int, str]:
     r"""The text of the 1-based lines ``wanted`` (numbered as spans number them, see
     :func:`nczones.errors.program_lines`), without splitting the whole program: only the needed
     lines are cut out, so memory stays flat.

@@ -22,12 +22,17 @@ import os
 import sys
 from collections.abc import Sequence
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any, TextIO
 
 from .. import cli
 from ..errors import Diagnostic, InputError
 from ..exact import parse_decimal
 from .limits import DEFAULT_BUDGET_S
+
+if TYPE_CHECKING:
+    from ..gcode.source import ProgramSource
+    from ..machine import Machine
+    from .result import Result
 
 __all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "program_source",
            "EXIT_INTERRUPTED"]
@@ -55,7 +60,7 @@ def _command_line_error(code: str, message: str) -> InputError:
     return InputError(Diagnostic(code, message, file="<command line>"))
 
 
-def verify_options(args: argparse.Namespace, machine) -> dict[str, Any]:
+def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]:
     """The keyword arguments of :func:`nczones.prover.verify` from the command line (``VF1xx`` errors)."""
     from . import parse_param
 
@@ -84,14 +89,14 @@ def verify_options(args: argparse.Namespace, machine) -> dict[str, Any]:
     }
 
 
-def program_source(name: str):
+def program_source(name: str) -> ProgramSource:
     """The program ``name`` names: ``-`` is standard input, anything else a file (``GC1xx`` errors)."""
     from ..gcode.source import load_program, read_stdin
 
     return (read_stdin() if name == "-" else load_program(name)).require_code()
 
 
-def verify_one(program: str, machine, options: dict[str, Any]):
+def verify_one(program: str, machine: Machine, options: dict[str, Any]) -> tuple[ProgramSource, Result]:
     """Read and verify one program (a path or ``-``) with a progress bar on a terminal: (source, result)."""
     from ..report.progress import progress_for
     from . import verify
@@ -142,7 +147,7 @@ def _error_entry(program: str, exc: InputError) -> dict[str, Any]:
 
 
 def render_many(results: list, errors: list[tuple[int, str, InputError]], args: argparse.Namespace,
-                machine, several: bool) -> str:
+                machine: Machine, several: bool) -> str:
     """The reports of every program in the chosen format (see the module docstring)."""
     from ..report import render_report
 
@@ -206,7 +211,7 @@ def _run(args: argparse.Namespace) -> int:
     return worst_exit(codes)
 
 
-def _color(stream) -> bool:
+def _color(stream: TextIO) -> bool:
     from ..report.text import use_color
 
     return use_color(stream)

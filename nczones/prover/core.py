@@ -75,6 +75,9 @@ class _Outcome:
 class Prover:
     """Decides segments one by one for a machine, margin and parameter ranges."""
 
+    #: The screen's zone constants by (zone, scale), made when first needed (:mod:`nczones.prover.screen`).
+    _screen_constants: dict | None = None
+
     def __init__(self, machine: Machine, *, margin: Fraction = F0, params: tuple[ParamRange, ...] = (),
                  engine: str = "auto", rlimit: int | None = None, limits=None):
         if engine not in ("auto", "z3"):

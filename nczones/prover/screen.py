@@ -18,12 +18,17 @@ flagged, i.e. handled by exact Python integers downstream).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from fractions import Fraction
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
 from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
+
+if TYPE_CHECKING:
+    from .core import Prover
 
 __all__ = ["screen_chunk"]
 
@@ -37,7 +42,7 @@ def _scaled(x: Fraction | None, scale: int, up: bool, default: int) -> int:
         return default
     v = x * 10**scale
     n = math.ceil(v) if up else math.floor(v)
-    return max(min(n, _POS), _NEG)
+    return int(max(min(n, _POS), _NEG))
 
 
 class _RangeTable:
@@ -47,7 +52,7 @@ class _RangeTable:
     with the last valid entry), so a query is two gathers from the flat table.
     """
 
-    def __init__(self, values: np.ndarray, op):
+    def __init__(self, values: np.ndarray, op: Callable[[np.ndarray, np.ndarray], np.ndarray]):
         self.op = op
         n = len(values)
         levels = [np.asarray(values, dtype=np.int64)]
@@ -66,10 +71,11 @@ class _RangeTable:
         length = hi - lo + 1
         lvl = np.frexp(np.maximum(length, 1).astype(np.float64))[1].astype(np.int64) - 1  # floor(log2)
         base = lvl * self.n
-        return self.op(self.flat[base + lo], self.flat[base + hi - (np.int64(1) << lvl) + 1])
+        out: np.ndarray = self.op(self.flat[base + lo], self.flat[base + hi - (np.int64(1) << lvl) + 1])
+        return out
 
 
-def _isqrt_ceil(n: np.ndarray) -> np.ndarray:
+def _isqrt_ceil(n: np.ndarray) -> Any:
     """Exact ``ceil(sqrt(n))`` of non-negative int64 values below ``2**62``."""
     r = np.floor(np.sqrt(n.astype(np.float64))).astype(np.int64)
     for _ in range(3):  # float rounding is off by at most one here; fix it exactly
@@ -78,7 +84,7 @@ def _isqrt_ceil(n: np.ndarray) -> np.ndarray:
     return r + (r * r < n)
 
 
-def _isqrt_floor(n: np.ndarray) -> np.ndarray:
+def _isqrt_floor(n: np.ndarray) -> Any:
     r = _isqrt_ceil(n)
     return r - (r * r > n)
 
@@ -110,6 +116,8 @@ def arc_boxes(chunk: MotionChunk, rows: np.ndarray, lo: np.ndarray, hi: np.ndarr
     if rows.size == 0:
         return ok
     axes = list(chunk.axes)
+    assert chunk.plane is not None and chunk.centre is not None and chunk.start is not None \
+        and chunk.end is not None and chunk.turns is not None and chunk.clockwise is not None  # arcs, columns form
     planes = chunk.plane[rows]
     for pv in np.unique(planes).tolist():
         sel = planes == pv
@@ -137,7 +145,7 @@ def arc_boxes(chunk: MotionChunk, rows: np.ndarray, lo: np.ndarray, hi: np.ndarr
         q0, q1 = np.where(ccw, w0, u0), np.where(ccw, w1, u1)
         hw = _half(p0 * q1 - p1 * q0, p0 * q0 + p1 * q1)
 
-        def contains(cr_pv, dot_pv, cr_vq):
+        def contains(cr_pv: np.ndarray, dot_pv: np.ndarray, cr_vq: np.ndarray) -> Any:
             hv = _half(cr_pv, dot_pv)
             return full | np.where(hv != hw, hv < hw, cr_vq >= 0)  # noqa: B023 - called within this iteration
 
@@ -164,7 +172,7 @@ _SQ_LIMIT = 2**31
 class _ZoneConstants:
     """A zone's limits scaled to ``10**scale`` (rounded towards the inside), with range tables."""
 
-    def __init__(self, z, s: int):
+    def __init__(self, z: SteppedZone, s: int):
         if isinstance(z, SteppedZone):
             self.ups_dn = np.array([_scaled(r.upto, s, False, 0) for r in z.regions], dtype=np.int64)
             self.ups_up = np.array([_scaled(r.upto, s, True, 0) for r in z.regions], dtype=np.int64)
@@ -182,8 +190,8 @@ class _ZoneConstants:
                 self.max_t = _RangeTable(maxs_hi, np.minimum)
 
 
-def _constants(prover, z, s: int) -> _ZoneConstants:
-    cache = getattr(prover, "_screen_constants", None)
+def _constants(prover: Prover, z: SteppedZone, s: int) -> _ZoneConstants:
+    cache = prover._screen_constants
     if cache is None:
         cache = {}
         prover._screen_constants = cache
@@ -194,7 +202,7 @@ def _constants(prover, z, s: int) -> _ZoneConstants:
     return got
 
 
-def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
+def screen_chunk(chunk: MotionChunk, prover: Prover) -> list[int]:
     """Row indices the screen could not prove (to be decided exactly), in order.
 
     Lines, rapids and dwells are screened by the bounding box of their end
@@ -204,10 +212,12 @@ def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
     if n == 0:
         return []
     s = chunk.scale
-    start, end = chunk.start, chunk.end
+    start, end, tl, kinds = chunk.start, chunk.end, chunk.tool_length, chunk.kind
+    assert s is not None and start is not None and end is not None and tl is not None and kinds is not None, \
+        "the columns form"
     if (
         max(int(np.abs(start).max(initial=0)), int(np.abs(end).max(initial=0))) > _LIMIT
-        or int(np.abs(chunk.tool_length).max(initial=0)) > _LIMIT
+        or int(np.abs(tl).max(initial=0)) > _LIMIT
         or (chunk.centre is not None and int(np.abs(chunk.centre).max(initial=0)) > _LIMIT)
     ):
         return list(range(n))
@@ -216,7 +226,7 @@ def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
     d_up = _scaled(prover.margin, s, True, 0)
     if abs(d_up) > _LIMIT:
         return list(range(n))
-    is_arc = chunk.kind == SegmentKind.ARC
+    is_arc = kinds == SegmentKind.ARC
     ok = np.ones(n, dtype=bool)
     if is_arc.any():
         arows = np.flatnonzero(is_arc)
@@ -225,13 +235,12 @@ def screen_chunk(chunk: MotionChunk, prover) -> list[int]:
         else:
             ok[arows] = arc_boxes(chunk, arows, lo, hi)
     axes = list(chunk.axes)
-    tl = chunk.tool_length
     for z in prover.zones:
         if not ok.any():
             break
         tip = z.point is ZonePoint.TIP
 
-        def rng(a):
+        def rng(a: str) -> tuple[np.ndarray, np.ndarray]:
             k = axes.index(a)
             a_lo, a_hi = lo[:, k] - d_up, hi[:, k] + d_up
             if tip and a == prover.tool_axis:  # noqa: B023 - called within this iteration
