@@ -34,14 +34,15 @@ the exact point and certainly violates); a failed re-check raises
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError, InvalidArgument
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import PolygonZone, Zone, ZonePoint
+from ..zones import PolygonZone, SteppedZone, Zone, ZonePoint
 from . import exact as ex
 from .geometry import (
     ArcGeom,
@@ -56,6 +57,15 @@ from .geometry import (
 )
 from .result import ParamRange, Reason, Result, Verdict, Violation
 from .smt import Solver, _or, add, mul, q, sub, zone_violation
+
+if TYPE_CHECKING:
+    from ..zones.model import AllowedSet
+    from .limits import RunLimits
+    from .profile import RunProfile
+    from .smt import SolverAnswer
+
+#: Parameter deviations as the solver found them: ``(name, deviation)`` pairs.
+Params = tuple[tuple[str, Fraction], ...]
 
 __all__ = ["verify_segments", "Prover"]
 
@@ -79,7 +89,7 @@ class Prover:
     _screen_constants: dict | None = None
 
     def __init__(self, machine: Machine, *, margin: Fraction = F0, params: tuple[ParamRange, ...] = (),
-                 engine: str = "auto", rlimit: int | None = None, limits=None):
+                 engine: str = "auto", rlimit: int | None = None, limits: RunLimits | None = None):
         if engine not in ("auto", "z3"):
             raise InvalidArgument(f"engine must be 'auto' or 'z3', not {engine!r}")
         if margin < 0:
@@ -191,20 +201,22 @@ class Prover:
             names.append(v)
         return "".join(out), evars
 
-    def relevant_zones(self, lo_pt, hi_pt, tool_length: Fraction) -> tuple[Zone, ...]:
+    def relevant_zones(self, lo_pt: Sequence[Fraction], hi_pt: Sequence[Fraction],
+                       tool_length: Fraction) -> tuple[Zone, ...]:
         """The zones that the box spanned by two points does not fit (only they can be violated in it)."""
         lo = {a: min(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
         hi = {a: max(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
         return tuple(z for z in self.zones if not box_fits(self.allowed, lo, hi, self.margin, tool_length, (z,)))
 
-    def _violation_formula(self, pt: dict[str, str], tool_len: str, enclosure, zones=None) -> str:
+    def _violation_formula(self, pt: dict[str, str], tool_len: str, enclosure: Mapping[str, tuple[Fraction, Fraction]],
+                           zones: Iterable[Zone] | None = None) -> str:
         parts = []
         for z in self.zones if zones is None else zones:
             seen = dict(pt)
             if z.point is ZonePoint.TIP and self.tool_axis in seen:
                 seen[self.tool_axis] = sub(seen[self.tool_axis], tool_len)
             ref = None
-            if z.kind == "stepped":
+            if isinstance(z, SteppedZone):
                 lo, hi = enclosure[z.reference_axis]
                 if z.point is ZonePoint.TIP and z.reference_axis == self.tool_axis:
                     ref = None
@@ -242,6 +254,7 @@ class Prover:
         tl = q(seg.tool_length)
         if with_params and self._tool_dev(seg):
             tl = add(tl, *self._tool_dev(seg))
+        zones: tuple[Zone, ...]
         if zone is not None:
             zones = (zone,)
         elif with_params:
@@ -251,7 +264,8 @@ class Prover:
         body.append(f"(assert {self._violation_formula(pt, tl, enclosure, zones)})")
         return "".join(body), names
 
-    def _arc_query(self, seg: Segment, g: ArcGeom, with_params: bool, w_dir=None) -> tuple[str, list[str]]:
+    def _arc_query(self, seg: Segment, g: ArcGeom, with_params: bool,
+                   w_dir: tuple[Fraction, Fraction] | None = None) -> tuple[str, list[str]]:
         """Encoding of an arc (exact for circular arcs, over-approximation for helices/spirals).
 
         ``w_dir`` (a rational direction from the centre) cuts the sweep off
@@ -266,6 +280,7 @@ class Prover:
         else:
             names += ["cx", "cy"]
             body.append("(declare-const cx Real)(declare-const cy Real)")
+            assert g.r_signed is not None  # an arc without a rational centre is an R-format arc
             r2 = q(g.r_signed * g.r_signed)
             sx, sy, ex_, ey = (q(v) for v in (*g.s, *g.e))
             body.append(f"(assert (= (+ (* (- {sx} cx) (- {sx} cx)) (* (- {sy} cy) (- {sy} cy))) {r2}))")
@@ -287,12 +302,12 @@ class Prover:
         if w_dir is not None:
             w = (q(w_dir[0]), q(w_dir[1]))
         if not full:
-            a, b = (u, w) if g.ccw else (w, u)  # ccw sweep from a to b
-            hw = self._half_const(g, a, b, w_dir)
-            cross_av = f"(- (* {a[0]} {v[1]}) (* {a[1]} {v[0]}))"
-            dot_av = f"(+ (* {a[0]} {v[0]}) (* {a[1]} {v[1]}))"
+            sa, sb = (u, w) if g.ccw else (w, u)  # ccw sweep from sa to sb
+            hw = self._half_const(g, sa, sb, w_dir)
+            cross_av = f"(- (* {sa[0]} {v[1]}) (* {sa[1]} {v[0]}))"
+            dot_av = f"(+ (* {sa[0]} {v[0]}) (* {sa[1]} {v[1]}))"
             half0 = f"(or (> {cross_av} 0.0) (and (= {cross_av} 0.0) (> {dot_av} 0.0)))"
-            cross_vb = f"(- (* {v[0]} {b[1]}) (* {v[1]} {b[0]}))"
+            cross_vb = f"(- (* {v[0]} {sb[1]}) (* {v[1]} {sb[0]}))"
             if hw == 0:
                 body.append(f"(assert (and {half0} (>= {cross_vb} 0.0)))")
             else:
@@ -302,10 +317,10 @@ class Prover:
         if with_params:
             body.append(self._param_decls())
             names += [self.pvars[p.name] for p in self.params]
-        pt = {}
+        pt: dict[str, str] = {}
         slack = self._param_slack(seg) if with_params else F0
         (bx, by) = g.plane_bbox()
-        enclosure = {}
+        enclosure: dict[str, tuple[Fraction, Fraction]] = {}
         for k, a in enumerate(self.axes):
             dev = add(*self._devs(seg, k, "start")) if with_params else "0.0"
             if k == g.ia:
@@ -333,12 +348,12 @@ class Prover:
         return "".join(body), names
 
     @staticmethod
-    def _half_const(g: ArcGeom, a, b, w_dir) -> int:
+    def _half_const(g: ArcGeom, a: tuple[str, str], b: tuple[str, str], w_dir: Any) -> int:
         """Half (0: ccw angle a->b in [0, pi), 1: [pi, 2 pi)) — constant for every arc we encode."""
         if g.centre is not None or w_dir is not None:
             c = g.centre if g.centre is not None else None
             if c is not None:
-                def val(t):
+                def val(t: str) -> Fraction:
                     return Fraction(eval_lit(t))
                 av = (val(a[0]), val(a[1]))
                 bv = (val(b[0]), val(b[1]))
@@ -346,6 +361,7 @@ class Prover:
                 dt = av[0] * bv[0] + av[1] * bv[1]
                 return 0 if cr > 0 or (cr == 0 and dt > 0) else 1
         # R-format: R > 0 is the arc of at most 180 degrees
+        assert g.r_signed is not None
         return 0 if g.r_signed > 0 else 1
 
     # ------------------------------------------------------------------ deciding
@@ -355,7 +371,7 @@ class Prover:
         if self.limits is not None:
             self.limits.checkpoint()
 
-    def _unknown(self, seg: Segment, ans, what: str = "") -> _Outcome:
+    def _unknown(self, seg: Segment, ans: SolverAnswer, what: str = "") -> _Outcome:
         """The outcome of a solver ``unknown`` (its reason says which limit stopped it)."""
         return _Outcome(reason=Reason(ans.reason(what), seg.span, seg.block, ans.code),
                         engine="budget" if ans.stopped == "budget" else "unknown")
@@ -381,13 +397,15 @@ class Prover:
                 check_cylindrical,  # G07.1: pi enclosed, see prover/cylindrical.py
             )
 
-            return check_cylindrical(self, seg)
+            cyl: _Outcome = check_cylindrical(self, seg)
+            return cyl
         if seg.kind is SegmentKind.SPLINE:
             from .spline import (
                 check_spline,  # exact NURBS: control hulls + refinement, see prover/spline.py
             )
 
-            return check_spline(self, seg)
+            spl: _Outcome = check_spline(self, seg)
+            return spl
         if seg.kind not in _LINE_LIKE and seg.kind is not SegmentKind.ARC:
             return _Outcome(reason=Reason(f"segment kind {seg.kind.name} is not handled by the prover",
                                           seg.span, seg.block), engine="unknown")
@@ -571,7 +589,7 @@ class Prover:
             lo[a], hi[a] = min(lo[a], b0), max(hi[a], b1)
         return lo, hi
 
-    def _check_concrete(self, seg: Segment, params) -> _Outcome:
+    def _check_concrete(self, seg: Segment, params: Params) -> _Outcome:
         if seg.kind is SegmentKind.ARC:
             return self._check_arc(seg, params)
         pieces = line_pieces(seg, self.machine)
@@ -610,7 +628,8 @@ class Prover:
             return _Outcome(self._line_violation(seg, piece, ans.values["t"], params, "z3"), engine="z3")
         return _Outcome(engine="z3" if use_z3 else "exact")
 
-    def _bbox_fits(self, lo_pt, hi_pt, tool_length, lo_given=False) -> bool:
+    def _bbox_fits(self, lo_pt: Sequence[Fraction], hi_pt: Sequence[Fraction], tool_length: Fraction,
+                   lo_given: bool = False) -> bool:
         """Tier-1 screen: does the whole axis-aligned box spanned by two points fit (with margin)?"""
         lo = {a: min(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
         hi = {a: max(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
@@ -624,7 +643,8 @@ class Prover:
                 found.append((z, iv))
         return found or None
 
-    def _line_violation(self, seg, piece, t_model, params, engine) -> Violation:
+    def _line_violation(self, seg: Segment, piece: LinePiece, t_model: Fraction | None, params: Params,
+                        engine: str) -> Violation:
         """Witness, first exit and depth of a violating straight piece (all exact)."""
         pieces = line_pieces(seg, self.machine)
         # first violating piece of the segment (the flagged one may not be the first)
@@ -645,7 +665,7 @@ class Prover:
                 first_piece = pc
                 first_t = min(t for t, _ in per_zone)
                 break
-        if first_piece is None:
+        if first_piece is None or first_t is None:
             raise InternalError(f"block {seg.block}: a violation was found but no violating parameter")
         t = t_model if t_model is not None else F0
         path = piece.at(t)
@@ -689,7 +709,7 @@ class Prover:
             derived=seg.derived, params=self._written_params(params), zones=tuple(z.name for z in bad),
         )
 
-    def _written_params(self, values) -> tuple[tuple[str, Fraction], ...]:
+    def _written_params(self, values: Params) -> tuple[tuple[str, Fraction], ...]:
         out = []
         for name, dev in values:
             p = self.prange[name]
@@ -699,7 +719,7 @@ class Prover:
                 out.append((name, p.centre + dev))
         return tuple(out)
 
-    def _bisect_line(self, seg, piece, zone, steps: int = 40) -> Fraction | None:
+    def _bisect_line(self, seg: Segment, piece: LinePiece, zone: Zone, steps: int = 40) -> Fraction | None:
         body, names = self._line_query(seg, piece, False, zone)
         if self.solver.check(body, names).status != "sat":
             return None
@@ -715,7 +735,7 @@ class Prover:
 
     # ------------------------------------------------------------------ arcs
 
-    def _check_arc(self, seg: Segment, params) -> _Outcome:
+    def _check_arc(self, seg: Segment, params: Params) -> _Outcome:
         self.stats["pieces"] += 1
         try:
             g = arc_geom(seg)
@@ -736,10 +756,10 @@ class Prover:
                 # exact enclosures of pieces of the sweep (prover/arcs.py): most arcs end here
                 from .arcs import decide_arc
 
-                out = decide_arc(self, seg, g, params)
-                if out is not None:
+                decided: _Outcome | None = decide_arc(self, seg, g, params)
+                if decided is not None:
                     self.stats["arc_enclosures"] = self.stats.get("arc_enclosures", 0) + 1
-                    return out
+                    return decided
         self.stats["z3_segments"] += 1
         body, names = self._arc_query(seg, g, False)
         ans = self.solver.check(body, names, precision=60, nonlinear=True)
@@ -752,9 +772,9 @@ class Prover:
             # split the sweep and prove the pieces (see prover/refine.py)
             from .refine import refine_arc
 
-            out = refine_arc(self, seg, g, params)
-            if out is not None:
-                return out
+            refined: _Outcome | None = refine_arc(self, seg, g, params)
+            if refined is not None:
+                return refined
         if v is None:
             what = "helix" if g.helix else ("R-format arc with an irrational centre" if g.centre is None else "spiral arc")
             if g.exact:
@@ -764,10 +784,11 @@ class Prover:
                             engine="unknown")
         return _Outcome(v, engine="z3")
 
-    def _arc_witness(self, seg, g: ArcGeom, values, params) -> Violation | None:
+    def _arc_witness(self, seg: Segment, g: ArcGeom, values: dict[str, Fraction], params: Params) -> Violation | None:
         if not g.exact or g.helix:
             return self._arc_witness_enclosed(seg, g, values, params)
         c = g.centre
+        assert c is not None  # exact
         u = (g.s[0] - c[0], g.s[1] - c[1])
         target = (values["x"] - c[0], values["y"] - c[1])
         for base in _bases(u, g.ccw):
@@ -786,7 +807,8 @@ class Prover:
                 return self._arc_violation(seg, g, pmap, bad, params, True)
         return None
 
-    def _arc_witness_enclosed(self, seg, g: ArcGeom, values, params, retry: bool = True) -> Violation | None:
+    def _arc_witness_enclosed(self, seg: Segment, g: ArcGeom, values: dict[str, Fraction], params: Params,
+                              retry: bool = True) -> Violation | None:
         """Certify a witness on an irrational path with a rational box around the exact point."""
         if g.centre is None:
             (cxl, cxh), (cyl, cyh) = g.centre_bounds(120)
@@ -814,16 +836,19 @@ class Prover:
             if tot_lo <= 0 or seg.turns:
                 return None
             frac = (max(F0, theta[0] / tot_hi), min(F1, theta[1] / tot_lo))
+        rho: tuple[Fraction, Fraction]
         if g.r2_lo != g.r2_hi:
+            assert g.centre is not None and frac is not None  # a spiral: I/J (rational centre), sweep fractions set
             rs = sqrt_bounds((g.s[0] - g.centre[0]) ** 2 + (g.s[1] - g.centre[1]) ** 2, 120)
             re_ = sqrt_bounds((g.e[0] - g.centre[0]) ** 2 + (g.e[1] - g.centre[1]) ** 2, 120)
-            rho = sorted([rs[0] + (re_[0] - rs[0]) * f for f in frac] + [rs[1] + (re_[1] - rs[1]) * f for f in frac])
-            rho = (rho[0], rho[-1])
+            radii = sorted([rs[0] + (re_[0] - rs[0]) * f for f in frac] + [rs[1] + (re_[1] - rs[1]) * f for f in frac])
+            rho = (radii[0], radii[-1])
         else:
-            r = abs(g.r_signed) if g.centre is None else None
+            r = abs(g.r_signed) if g.centre is None and g.r_signed is not None else None
             rho = sqrt_bounds(g.r2_lo, 120) if r is None else (r, r)
         dn = sqrt_bounds(n2, 120)
-        lo, hi = {}, {}
+        lo: dict[str, Fraction] = {}
+        hi: dict[str, Fraction] = {}
         for k, a in enumerate(self.axes):
             lo[a] = hi[a] = seg.start[k]
         for k, (cl, ch, comp) in ((g.ia, (cxl, cxh, d[0])), (g.ib, (cyl, cyh, d[1]))):
@@ -833,6 +858,7 @@ class Prover:
         for k, a in enumerate(self.axes):
             if k in (g.ia, g.ib) or g.start[k] == g.end[k]:
                 continue
+            assert frac is not None  # a helix axis: the sweep fractions were set above
             vals = [g.start[k] + (g.end[k] - g.start[k]) * f for f in frac]
             lo[a], hi[a] = min(vals), max(vals)
         # the direction must lie strictly inside the sweep for every centre in the enclosure
@@ -869,7 +895,8 @@ class Prover:
                         return v
         return None
 
-    def _arc_violation(self, seg, g, pmap, bad, params, exact_point: bool, note: str = "") -> Violation:
+    def _arc_violation(self, seg: Segment, g: ArcGeom, pmap: dict[str, Fraction], bad: Sequence[Zone],
+                       params: Params, exact_point: bool, note: str = "") -> Violation:
         zone = bad[0]
         outside = ex.outside_point(self.allowed, zone, pmap, self.margin, seg.tool_length)
         if outside is None or zone not in self.allowed.violated_zones(outside, seg.tool_length):
@@ -890,6 +917,7 @@ class Prover:
         depth = F0
         samples = [pmap, first_pt]
         if g.exact:
+            assert g.centre is not None
             u = (g.s[0] - g.centre[0], g.s[1] - g.centre[1])
             for base in _bases(u, g.ccw):
                 for i in range(0, 17):
@@ -916,7 +944,7 @@ class Prover:
             on_path=exact_point,
         )
 
-    def _arc_param(self, g: ArcGeom, pmap) -> Fraction:
+    def _arc_param(self, g: ArcGeom, pmap: dict[str, Fraction]) -> Fraction:
         """Fraction of the swept angle at a point (approximate, for reports)."""
         c = g.centre if g.centre is not None else tuple((a + b) / 2 for a, b in g.centre_bounds(60))
         u = (g.s[0] - c[0], g.s[1] - c[1])
@@ -930,7 +958,7 @@ class Prover:
             return F0
         return min(F1, th / tot).limit_denominator(10**9)
 
-    def _arc_first_exit(self, seg, g: ArcGeom, witness) -> dict | None:
+    def _arc_first_exit(self, seg: Segment, g: ArcGeom, witness: dict[str, Fraction]) -> dict | None:
         """Bisection over rational points of the arc: the last point before which no violation exists.
 
         Returns the exact path point at the upper end of the final bracket
@@ -938,14 +966,15 @@ class Prover:
         exists up to the lower end, 2**-24 of a quarter turn earlier).
         """
         c = g.centre
+        assert c is not None  # exact arcs only
         u = (g.s[0] - c[0], g.s[1] - c[1])
         w = (g.e[0] - c[0], g.e[1] - c[1])
         bases = _bases(u, g.ccw)
 
-        def point(k, m):
+        def point(k: int, m: Fraction) -> tuple[Fraction, Fraction]:
             return rational_point_on_arc(g, m, bases[k])
 
-        def violates_up_to(k, m) -> bool:
+        def violates_up_to(k: int, m: Fraction) -> bool:
             p2 = point(k, m)
             dirv = (p2[0] - c[0], p2[1] - c[1])
             if dirv == u:
@@ -982,6 +1011,7 @@ def eval_lit(text: str) -> Fraction:
     from .smt import _num, _parse_sexpr
 
     v = _num(_parse_sexpr(text)[0])
+    assert v is not None, f"not a literal: {text}"
     return v[0]
 
 
@@ -999,7 +1029,7 @@ def _clamp(x: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
     return max(lo, min(hi, x))
 
 
-def _bases(u, ccw: bool) -> list:
+def _bases(u: tuple[Fraction, Fraction], ccw: bool) -> list[tuple[Fraction, Fraction]]:
     """u rotated by 0, 90, 180, 270 degrees in the arc's direction (exact)."""
     out = [u]
     for _ in range(3):
@@ -1008,7 +1038,7 @@ def _bases(u, ccw: bool) -> list:
     return out
 
 
-def _half_tan(base, target, ccw: bool) -> Fraction | None:
+def _half_tan(base: tuple[Fraction, Fraction], target: tuple[Fraction, Fraction], ccw: bool) -> Fraction | None:
     """Rational approximation of tan(angle(base -> target)/2) in the arc's direction."""
     cr = base[0] * target[1] - base[1] * target[0]
     if not ccw:
@@ -1018,10 +1048,11 @@ def _half_tan(base, target, ccw: bool) -> Fraction | None:
     den = n + dt
     if den <= 0:
         return None
-    return (cr / den).limit_denominator(10**40)
+    half: Fraction = (cr / den).limit_denominator(10**40)
+    return half
 
 
-def _angle_bounds(u, v, ccw: bool) -> tuple[Fraction, Fraction]:
+def _angle_bounds(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw: bool) -> tuple[Fraction, Fraction]:
     """Rational enclosure of the angle from u to v in the given direction, in [0, 2 pi)."""
     pi_lo, pi_hi = pi_bounds()
     for k, base in enumerate(_bases(u, ccw)):
@@ -1037,7 +1068,8 @@ def _angle_bounds(u, v, ccw: bool) -> tuple[Fraction, Fraction]:
     return F0, 2 * pi_hi
 
 
-def box_fits(allowed, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction, zones=None) -> bool:
+def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction,
+             zones: Iterable[Zone] | None = None) -> bool:
     """Exact test: every point of the box ``[lo, hi]`` has a fitting margin box (boxes, stepped tables).
 
     Polygon zones: True only for a forbid polygon whose bounding box the
@@ -1104,11 +1136,11 @@ def verify_segments(
     engine: str = "auto",
     max_violations: int = 20,
     notes: tuple[str, ...] = (),
-    unsupported: Iterable = (),
+    unsupported: Iterable[Any] = (),
     file: str = "",
     budget_s: float | None = None,
-    limits=None,
-    profile=None,
+    limits: RunLimits | None = None,
+    profile: RunProfile | None = None,
 ) -> Result:
     """Verify motion segments (no G-code text needed) against a machine's zones.
 
@@ -1208,6 +1240,7 @@ def verify_segments(
             if not undecided:
                 undecided.append(seg)
                 engines.setdefault(seg.block, "unknown")
+                assert out.reason is not None  # a budget outcome carries its VF203 reason
                 reasons.append(out.reason)  # placeholder, replaced by the summary below
             return True
         if out.violation is not None or out.reason is not None:
@@ -1233,7 +1266,7 @@ def verify_segments(
         with limits.watch():
             for item in segments:
                 if isinstance(item, MotionChunk):
-                    if len(item) and item.scale is not None:
+                    if len(item) and item.scale is not None and item.line is not None:
                         last_line[0] = int(item.line[0])
                     from_chunk = item.scale is not None and engine == "auto" and not prover.params
                     if from_chunk:
@@ -1243,14 +1276,14 @@ def verify_segments(
                         profile.screened(item, len(flagged), clock() - started)
                         prover.stats["screened"] += n - len(flagged)
                         prover.stats["segments"] += n - len(flagged)
-                        it = (seg for seg in _chunk_rows(item, flagged))
+                        it: Iterable[Segment] = _chunk_rows(item, flagged)
                     else:
                         it = item.segments()
                     for seg in it:
                         if not handle(seg, from_chunk):
                             truncated = True
                             break
-                    if not truncated and len(item) and item.scale is not None:
+                    if not truncated and len(item) and item.scale is not None and item.line is not None:
                         last_line[0] = int(item.line[-1])
                 else:
                     if not handle(item):
@@ -1298,11 +1331,14 @@ def verify_segments(
     )
 
 
-def _chunk_rows(chunk: MotionChunk, rows) -> Iterable[Segment]:
+def _chunk_rows(chunk: MotionChunk, rows: Iterable[int]) -> Iterator[Segment]:
     """Segment views of selected rows of a column chunk."""
     from ..errors import SourceSpan
     from ..motion import Plane
 
+    assert chunk.scale is not None and chunk.kind is not None and chunk.line is not None \
+        and chunk.start is not None and chunk.end is not None and chunk.block is not None \
+        and chunk.tool_length is not None, "the columns form"
     den = 10**chunk.scale
     for i in rows:
         kind = SegmentKind(int(chunk.kind[i]))
@@ -1310,8 +1346,10 @@ def _chunk_rows(chunk: MotionChunk, rows) -> Iterable[Segment]:
         span = SourceSpan(chunk.file, line_no, 1, None, "")
         start = tuple(Fraction(int(v), den) for v in chunk.start[i])
         end = tuple(Fraction(int(v), den) for v in chunk.end[i])
-        arc = {}
+        arc: dict[str, Any] = {}
         if kind is SegmentKind.ARC:
+            assert chunk.plane is not None and chunk.clockwise is not None and chunk.centre is not None \
+                and chunk.turns is not None
             arc = dict(plane=Plane(int(chunk.plane[i])), clockwise=bool(chunk.clockwise[i]),
                        centre=(Fraction(int(chunk.centre[i, 0]), den), Fraction(int(chunk.centre[i, 1]), den)),
                        turns=int(chunk.turns[i]))

@@ -361,7 +361,7 @@ def _stepped_eroded_rects(zone: SteppedZone, d: Fraction) -> list[Any]:
     return rects
 
 
-def point_depth(zone: Zone, p: dict[str, Fraction], margin: Fraction = F0) -> Fraction:
+def point_depth(zone: Zone, p: Mapping[str, Fraction], margin: Fraction = F0) -> Fraction:
     """How far past the zone's boundary (beyond the margin) the point ``p`` is.
 
     Definitions (``p`` as the zone sees it, i.e. the tool tip for tip zones):

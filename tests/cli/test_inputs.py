@@ -246,15 +246,28 @@ def test_simulate_and_plot_take_the_same_inputs(tmp_path):
 
 
 def test_every_option_has_help_text():
+    """Every option and argument of every command and subcommand, walked through argparse (nested ones too)."""
     import argparse
 
     from nczones.cli import build_parser
 
-    parser = build_parser()
-    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
-    missing = []
-    for name, p in sub.choices.items():
-        for a in p._actions:
-            if not isinstance(a, argparse._HelpAction) and not a.help:
-                missing.append(f"{name} {'/'.join(a.option_strings) or a.dest}")
+    missing: list[str] = []
+    seen: list[str] = []
+
+    def walk(parser: argparse.ArgumentParser, path: str) -> None:
+        for a in parser._actions:
+            if isinstance(a, argparse._HelpAction):
+                continue
+            if isinstance(a, argparse._SubParsersAction):
+                for name, sub in a.choices.items():
+                    walk(sub, f"{path} {name}".strip())
+                continue
+            seen.append(f"{path} {'/'.join(a.option_strings) or a.dest}")
+            if not a.help or a.help == argparse.SUPPRESS:
+                missing.append(seen[-1])
+
+    walk(build_parser(), "")
     assert missing == []
+    # the walk reached nested subcommands and the options the issue named
+    assert {"verify --machine", "verify --engine", "verify --max-violations", "verify --output",
+            "verify --max-iterations", "fleet check --scheduler"} <= set(seen)
