@@ -119,7 +119,9 @@ def check_output_path(path: str | None) -> None:
     if os.path.isdir(path):
         problem = "it is a directory"
     elif not os.path.isdir(parent):
-        problem = f"the directory {os.path.dirname(path) or parent} does not exist"
+        shown = os.path.dirname(path) or parent
+        problem = (f"{shown} is a file, not a directory" if os.path.exists(parent)
+                   else f"the directory {shown} does not exist")
     elif not os.access(parent, os.W_OK) or (os.path.exists(path) and not os.access(path, os.W_OK)):
         problem = "permission denied"
     if problem:

@@ -124,8 +124,10 @@ def test_excerpts_are_cut_around_the_caret(tmp_path):
 @pytest.mark.parametrize("target,message", [
     ("missing/dir/r.json", "the directory missing/dir does not exist"),
     (".", "it is a directory"),
+    ("plain.txt/r.json", "plain.txt is a file, not a directory"),
 ])
 def test_output_that_cannot_be_written_is_one_line(tmp_path, target, message):
+    (tmp_path / "plain.txt").write_text("a file where a directory is expected\n")
     r = nczones("verify", str(EX / "programs/notch_over.ngc"), "--machine", GRINDER, "--output", target,
                 cwd=tmp_path)
     assert r.returncode == 2
@@ -144,6 +146,15 @@ def test_output_without_permission_is_one_line(tmp_path):
         locked.chmod(0o700)
     assert r.returncode == 2
     assert r.stderr.endswith("cannot write the report: permission denied\n")
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full (Linux)")
+def test_an_output_error_while_writing_is_one_line():
+    """An error that only writing shows (a full disk: /dev/full, which root cannot write either)."""
+    r = nczones("verify", str(EX / "programs/notch_over.ngc"), "--machine", GRINDER, "--output", "/dev/full")
+    assert r.returncode == 2
+    assert r.stderr == ("<command line>: error[VF107]: --output /dev/full: cannot write the report: "
+                        "No space left on device\n")
 
 
 def test_a_missing_machine_file_is_one_line(tmp_path):
@@ -271,3 +282,36 @@ def test_every_option_has_help_text():
     # the walk reached nested subcommands and the options the issue named
     assert {"verify --machine", "verify --engine", "verify --max-violations", "verify --output",
             "verify --max-iterations", "fleet check --scheduler"} <= set(seen)
+
+
+def _durations(doc: object, path: str = "") -> list[tuple[str, object]]:
+    """Every value of a JSON document under a key that names seconds (``..._s``), with its path."""
+    out: list[tuple[str, object]] = []
+    if isinstance(doc, dict):
+        for k, v in doc.items():
+            if k.endswith("_s") and not isinstance(v, (dict, list)):
+                out.append((f"{path}/{k}", v))
+            out += _durations(v, f"{path}/{k}")
+    elif isinstance(doc, list):
+        for i, v in enumerate(doc):
+            out += _durations(v, f"{path}/{i}")
+    return out
+
+
+def test_one_number_format_for_times_in_verify_simulate_and_home():
+    """Seconds are JSON numbers rounded to the microsecond in every command's report (issue 20: ``simulate``
+    wrote numbers, ``home`` strings)."""
+    dip = str(EX / "programs/notch_dip.ngc")
+    docs = {
+        "verify": nczones("verify", dip, "--machine", GRINDER, "--format", "json"),
+        "simulate": nczones("simulate", dip, "--machine", GRINDER, "--format", "json"),
+        "home": nczones("home", "--machine", "specs/machines/homing_mill.toml", "--axis", "Z", "--format", "json"),
+    }
+    for command, r in docs.items():
+        times = _durations(json.loads(r.stdout))
+        assert times, f"{command} reports no times"
+        for where, value in times:
+            if value is None:  # an unset budget
+                continue
+            assert type(value) is float, f"{command} {where} = {value!r}"
+            assert value == round(value, 6), f"{command} {where} = {value!r} is not rounded to the microsecond"
