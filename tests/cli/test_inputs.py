@@ -315,3 +315,25 @@ def test_one_number_format_for_times_in_verify_simulate_and_home():
                 continue
             assert type(value) is float, f"{command} {where} = {value!r}"
             assert value == round(value, 6), f"{command} {where} = {value!r} is not rounded to the microsecond"
+
+
+def test_the_python_api_reads_a_str_as_a_path_never_as_text(tmp_path, monkeypatch):
+    """``verify("O1001", m)`` read the name as G-code and proved it safe; a str is a path, text goes to *_text."""
+    from nczones.errors import GcodeError
+    from nczones.gcode import interpret, segments, segments_text
+    from nczones.machine import load_machine
+    from nczones.prover import verify, verify_text
+
+    monkeypatch.chdir(tmp_path)
+    machine = load_machine(GRINDER)
+    for call in (verify, segments, interpret):
+        with pytest.raises(GcodeError) as e:
+            call("O1001", machine)
+        assert str(e.value) == "O1001: error[GC100]: cannot read the program: No such file or directory"
+    with pytest.raises(GcodeError) as e:
+        verify("G0 X1", machine)  # text given where a path is expected is not read as text either
+    assert e.value.diagnostics[0].code == "GC100"
+    (tmp_path / "O1001").write_text("G0 X10 Y300\n")
+    assert verify("O1001", machine).verdict.value == verify(tmp_path / "O1001", machine).verdict.value
+    assert verify_text("G0 X10 Y300\n", machine).verdict.value == verify("O1001", machine).verdict.value
+    assert [s.end for s in segments_text("G0 X10 Y300\n", machine)] == [s.end for s in segments("O1001", machine)]
