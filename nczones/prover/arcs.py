@@ -444,14 +444,18 @@ class ArcEnclosure:
                     ys.append(_out(_iadd(self.C[1], _imul(_pt(r), uy))))
         # axis extremes that may lie strictly inside the sector
         p0, q0 = (da, db) if self.ccw else (db, da)
+        inside_quadrant = True
         for e, axis, sgn in (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1)):
             ev = (_pt(e[0]), _pt(e[1]))
             c1 = self._sign(_cross(p0, ev))
             c2 = self._sign(_cross(ev, q0))
             if (c1 is not None and c1 <= 0) or (c2 is not None and c2 <= 0):
                 continue
+            inside_quadrant = False
             ext = _iadd(self.C[axis], (sgn * rho[1], sgn * rho[1]))
             (xs if axis == 0 else ys).append(ext)
+        if self.spiral and inside_quadrant:
+            xs, ys = self._monotone_spiral(a, b, da, db, rho, xs, ys)
         lo = dict(zip(self.axes, self.g.start))
         hi = dict(lo)
         a_x, a_y = self.axes[self.ia], self.axes[self.ib]
@@ -461,6 +465,42 @@ class ArcEnclosure:
             for k, (v0, v1) in self._axis_values(f).items():
                 lo[self.axes[k]], hi[self.axes[k]] = v0, v1
         return lo, hi
+
+    def _monotone_spiral(self, a: _Mark, b: _Mark, da: IVec, db: IVec, rho: Interval,
+                         xs: list[Interval], ys: list[Interval]) -> tuple[list[Interval], list[Interval]]:
+        """A spiral piece's plane ranges from its two end points where the coordinate is monotone.
+
+        On a piece whose sector holds no axis direction, the direction angle
+        ``φ`` stays in one quadrant, so ``cos φ`` and ``sin φ`` lie between
+        their values at the two marks.  With the radius linear in the swept
+        angle ``θ`` (``r' = (r_end - r_start) / Θ``) and ``φ`` turning by
+        ``s = ±1`` per unit of ``θ``, ``dx/dθ = r' cos φ - s r sin φ`` and
+        ``dy/dθ = r' sin φ + s r cos φ``.  When such an interval excludes
+        zero, that coordinate is strictly monotone over the piece: its range
+        is between the path points at the two marks (:meth:`point_box`),
+        which is exact at the start and the end (a spiral that ends on a
+        zone face fits there; the annulus box of the piece never does).
+        """
+        t_lo, t_hi = self.total()
+        if t_lo <= 0:
+            return xs, ys
+        dr = _isub(self.re, self.rs)
+        rates = (dr[0] / t_lo, dr[0] / t_hi, dr[1] / t_lo, dr[1] / t_hi)
+        r_rate = _out((min(rates), max(rates)))
+        ua = self._unit(a.d) if a.kind == "d" else self._unit_interval(a, da)
+        ub = self._unit(b.d) if b.kind == "d" else self._unit_interval(b, db)
+        cos = (min(ua[0][0], ub[0][0]), max(ua[0][1], ub[0][1]))
+        sin = (min(ua[1][0], ub[1][0]), max(ua[1][1], ub[1][1]))
+        s: Interval = (F1, F1) if self.ccw else (-F1, -F1)
+        dx = _isub(_imul(r_rate, cos), _imul(s, _imul(rho, sin)))
+        dy = _iadd(_imul(r_rate, sin), _imul(s, _imul(rho, cos)))
+        ends = (self.point_box(a), self.point_box(b))
+        a_x, a_y = self.axes[self.ia], self.axes[self.ib]
+        if self._sign(dx) in (1, -1):
+            xs = [(box[0][a_x], box[1][a_x]) for box in ends]
+        if self._sign(dy) in (1, -1):
+            ys = [(box[0][a_y], box[1][a_y]) for box in ends]
+        return xs, ys
 
     def _unit_interval(self, mk: _Mark, dv: IVec) -> IVec:
         if mk.kind == "d":
