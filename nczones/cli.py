@@ -92,6 +92,21 @@ def describe_machine(machine: Machine) -> str:
             "  tool lengths: "
             + ", ".join(f"H{k} {format_decimal(v)}" for k, v in sorted(machine.tool_lengths.items()))
         )
+    if machine.is_lathe or machine.diameter_axes:
+        dia = ", ".join(machine.diameter_axes)
+        lines.append(f"  type: {machine.machine_type}" + (
+            f"; program words on {dia} are diameters (machine coordinates and zones are radii)" if dia else ""))
+    for n, t in sorted(machine.tool_offsets.items()):
+        def val(a: str, v: Fraction) -> str:
+            return f"{a}{format_decimal(v)}" + (f" (diameter {format_decimal(2 * v)})"
+                                                if a in machine.diameter_axes else "")
+        parts = [val(a, v) for a, v in t.geometry]
+        if t.wear:
+            parts.append("wear " + " ".join(val(a, v) for a, v in t.wear))
+        if t.nose_radius or t.wear_radius:
+            parts.append(f"nose radius {format_decimal(t.nose_radius + t.wear_radius)}")
+        parts.append(f"tip {t.tip}")
+        lines.append(f"  tool offset {n}: " + ", ".join(parts))
     lines.append(f"  zones ({len(machine.zones)}):")
     for z in machine.zones:
         role = "forbid" if z.forbid else "allow"

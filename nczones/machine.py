@@ -46,6 +46,9 @@ __all__ = [
     "DIALECTS",
     "FanucSettings",
     "FANUC_OFFSETS",
+    "ToolOffset",
+    "MACHINE_TYPES",
+    "GCODE_SYSTEMS",
 ]
 
 AXIS_NAMES = ("X", "Y", "Z", "A", "B", "C", "U", "V", "W")
@@ -57,6 +60,11 @@ FANUC_OFFSETS = ("EXT",) + tuple(f"G54.1P{n}" for n in range(1, 49))
 #: Values of ``[machine] dialect``: how the program text is read (``specs/fanuc.md``).
 DIALECTS = ("linuxcnc", "fanuc")
 DEFAULT_MODAL = ("G90", "G21", "G17", "G54", "G94", "G40", "G49", "G80")
+#: Values of ``[machine] type``: a mill (the default) or a lathe (``specs/turning.md``).
+MACHINE_TYPES = ("mill", "lathe")
+#: Fanuc lathe G code systems (``[fanuc] gcode_system``): A (U/W incremental, G50 coordinate setting, G90/G92/G94
+#: cycles) or B (G90/G91 distance modes, G92 coordinate setting, G77/G78/G79 cycles).
+GCODE_SYSTEMS = ("A", "B")
 _MODAL_CHOICES = {
     "distance": ("G90", "G91"),
     "units": ("G20", "G21"),
@@ -124,12 +132,68 @@ class FanucSettings:
     #: Custom macro calls (``[macros]``): ``"G100"``/``"M50"``/``"T"`` -> (program number, "macro" or
     #: "subprogram"): the role of parameters 6050-6059, 6080-6089, 6071-6079 and 6001#5.
     macros: Mapping[str, tuple[int, str]] = field(default_factory=lambda: MappingProxyType({}))
+    # ---- lathes (``[machine] type = "lathe"``, ``specs/turning.md``)
+    #: Lathe G code system (3401#6 GSB, #7 GSC): ``"A"`` or ``"B"``.
+    gcode_system: str = "A"
+    #: Parameter 5132: G71/G72 depth of cut (radius, mm) when the program gives none.
+    g71_depth: Fraction | None = None
+    #: Parameter 5133: G71/G72 escape amount e (mm) when the program gives none.
+    g71_retract: Fraction | None = None
+    #: Parameter 5102#2 RF1: G71/G72 end with a cut along the shape offset by the allowance (True: RF1 = 0).
+    roughing_final_pass: bool = True
+    #: Parameters 5135, 5136: G73 relief in X (radius) and Z when the program gives none.
+    g73_relief_x: Fraction | None = None
+    g73_relief_z: Fraction | None = None
+    #: Parameter 5137: G73 number of divisions when the program gives none.
+    g73_divisions: int | None = None
+    #: Parameter 5139: G74/G75 return amount e when the program gives none.
+    g74_retract: Fraction | None = None
+    #: Parameter 5130: thread chamfer (pull-out) amount of G92/G76, in leads; None: not given.
+    thread_chamfer: Fraction | None = None
+    #: Parameter 5131: thread chamfer angle in degrees (45 or 0 and 90 are exact; other angles unknown).
+    thread_chamfer_angle: Fraction = Fraction(45)
+    #: Parameters 5142, 5143, 5140, 5141: G76 finishing repeats m, tool angle a, minimum depth, finishing
+    #: allowance d, when the program gives none.
+    g76_finish_passes: int | None = None
+    g76_tool_angle: Fraction | None = None
+    g76_min_depth: Fraction | None = None
+    g76_finish_allowance: Fraction | None = None
+    #: Parameter 5002#4 LGT: a lathe tool offset shifts the coordinate system (``"shift"``: LGT = 0, the next
+    #: move carries it) or moves the tool in the T block (``"move"``).
+    tool_offset_motion: str = "shift"
 
     @property
     def increment_mm(self) -> Fraction:
         """The least input increment in mm (and degrees)."""
         return {"IS-A": Fraction(1, 100), "IS-B": Fraction(1, 1000), "IS-C": Fraction(1, 10000)}[
             self.increment_system]
+
+
+@dataclass(frozen=True, slots=True)
+class ToolOffset:
+    """A lathe tool offset (Fanuc ``T0101``: tool 1 with offset 1; ``[tool_offsets]`` of the machine file).
+
+    ``geometry`` and ``wear`` map axes to lengths in **machine units** (radius on a diameter axis);
+    the offset moves the machine so that the tool tip reaches the programmed point:
+    machine = program + work offset + geometry + wear.  ``nose_radius`` (geometry + wear) and
+    ``tip`` (the imaginary tool nose direction 0-9) serve tool nose radius compensation.
+
+    >>> F = Fraction
+    >>> t = ToolOffset(1, (("X", F(-100)), ("Z", F(-300))), (("X", F(1, 100)),), F(4, 10), F(0), 3)
+    >>> t.total("X"), t.total("Z"), t.total("Y")
+    (Fraction(-9999, 100), Fraction(-300, 1), Fraction(0, 1))
+    """
+
+    number: int
+    geometry: tuple[tuple[str, Fraction], ...] = ()
+    wear: tuple[tuple[str, Fraction], ...] = ()
+    nose_radius: Fraction = Fraction(0)
+    wear_radius: Fraction = Fraction(0)
+    tip: int = 0
+
+    def total(self, axis: str) -> Fraction:
+        """Geometry plus wear on ``axis`` (0 where neither is given)."""
+        return dict(self.geometry).get(axis, Fraction(0)) + dict(self.wear).get(axis, Fraction(0))
 
 
 @dataclass(frozen=True, slots=True)
@@ -163,6 +227,17 @@ class Machine:
     fanuc: FanucSettings = field(default_factory=FanucSettings)
     #: Block-delete switch positions a proof covers: "both" (default), "off" (``/`` lines run), "on" (skipped).
     block_delete: str = "both"
+    #: ``"mill"`` or ``"lathe"`` (``[machine] type``): a lathe reads its dialect's lathe G codes.
+    machine_type: str = "mill"
+    #: Axes whose program words are diameters (``[machine] diameter_axes``); machine coordinates, zones and
+    #: every value of the machine file stay radii (the tool's distance from the spindle axis).
+    diameter_axes: tuple[str, ...] = ()
+    #: Lathe tool offsets by offset number (``[tool_offsets]``).
+    tool_offsets: Mapping[int, ToolOffset] = field(default_factory=lambda: MappingProxyType({}))
+
+    @property
+    def is_lathe(self) -> bool:
+        return self.machine_type == "lathe"
 
     @property
     def axis_names(self) -> tuple[str, ...]:
@@ -529,14 +604,22 @@ def _per_axis(
     return out
 
 
-_TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones", "fanuc", "variables", "macros")
+_TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones", "fanuc", "variables", "macros",
+             "tool_offsets")
 _MACHINE_KEYS = (
     "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
     "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect", "block_delete",
     "reference_2", "reference_3", "reference_4",
+    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
+    "reference_2", "reference_3", "reference_4", "type", "diameter_axes",
 )
+_FANUC_LATHE_KEYS = ("gcode_system", "g71_depth", "g71_retract", "roughing_final_pass", "g73_relief_x",
+                     "g73_relief_z", "g73_divisions", "g74_retract", "thread_chamfer", "thread_chamfer_angle",
+                     "g76_finish_passes", "g76_tool_angle", "g76_min_depth", "g76_finish_allowance",
+                     "tool_offset_motion")
 _FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_clearance", "boring_shift",
-               "scaling_unit", "rotation_incremental", "atan_signed", "tool_length_motion", "harmless_m")
+               "scaling_unit", "rotation_incremental", "atan_signed", "tool_length_motion",
+               "harmless_m") + _FANUC_LATHE_KEYS
 #: Values of ``[machine] cutter_compensation``.
 CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
 #: Values of ``[machine] block_delete``: which positions of the block-delete switch a proof covers.
@@ -703,6 +786,15 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         tool_axis = None
 
     modal = _modal(rd, mt.get("modal"), mline)
+    machine_type = mt.get("type", "mill")
+    if machine_type not in MACHINE_TYPES:
+        rd.report("ZN114", f"[machine] type: {_written(machine_type)} is not allowed; use \"mill\" or \"lathe\"",
+                  rd.loc.key("type", mline))
+        machine_type = None  # unknown: the checks that depend on it are left out
+    diameter_axes = _diameter_axes(rd, mt.get("diameter_axes", []), axes, mline)
+    if machine_type == "lathe" and not any(str(c).strip().upper() in ("G17", "G18", "G19")
+                                           for c in (mt.get("modal") or []) if isinstance(mt.get("modal"), list)):
+        modal = tuple("G18" if c == "G17" else c for c in modal)  # a lathe starts in the ZX plane
     dialect = mt.get("dialect", "linuxcnc")
     if dialect not in DIALECTS:
         rd.report("ZN114", f"[machine] dialect: {_written(dialect)} is not allowed; use \"linuxcnc\" or \"fanuc\"",
@@ -746,7 +838,8 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                   "executed) or \"on\" (they are skipped)", rd.loc.key("block_delete", mline))
         block_delete = "both"
 
-    fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect)
+    fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
+    tool_offsets = _tool_offsets(rd, data.get("tool_offsets", {}), axes)
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
 
     sections: dict[str, Any] = {}
@@ -771,6 +864,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         sections=MappingProxyType(sections), cutter_compensation=comp,
         tool_diameters=MappingProxyType(tool_diameters), dialect=dialect or "linuxcnc", fanuc=fanuc,
         block_delete=block_delete,
+        machine_type=machine_type or "mill", diameter_axes=diameter_axes, tool_offsets=MappingProxyType(tool_offsets),
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.
     bad = allowed.violated_zones(machine.point(start_t))
@@ -808,6 +902,8 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
 
 
 _CHOICES = {
+    "gcode_system": GCODE_SYSTEMS,
+    "tool_offset_motion": ("shift", "move"),
     "decimal_point_input": ("calculator", "increment"),
     "increment_system": ("IS-A", "IS-B", "IS-C"),
     "boring_shift": ("+X", "-X", "+Y", "-Y"),
@@ -816,7 +912,7 @@ _CHOICES = {
 
 
 def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, axes: tuple[str, ...],
-                    dialect: str) -> FanucSettings:
+                    dialect: str, machine_type: str | None = "mill") -> FanucSettings:
     """``[fanuc]``, ``[variables]``, ``[macros]`` and ``[machine.reference_2..4]`` (``specs/fanuc.md``)."""
     kw: dict[str, Any] = {}
     raw = data.get("fanuc", {})
@@ -838,11 +934,48 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
                           + " or ".join(_written(c) for c in choices), rd.loc.key(key, fline))
             else:
                 kw[key] = value
-    for key in ("g73_retract", "g83_clearance"):
+    lathe_given = [k for k in _FANUC_LATHE_KEYS if k in raw]
+    if lathe_given and machine_type == "mill" and not (given and dialect == "linuxcnc"):
+        rd.report("ZN115", f"[fanuc] {lathe_given[0]} is read only on a lathe; set type = \"lathe\" in [machine]",
+                  rd.loc.key(lathe_given[0], fline), Severity.WARNING)
+    for key in ("g73_retract", "g83_clearance", "g71_retract", "g73_relief_x", "g73_relief_z", "g74_retract",
+                "g76_finish_allowance"):
+        if key in raw:
+            q = _number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=key not in (
+                "g73_relief_x", "g73_relief_z"))
+            if q is not None:
+                kw[key] = q
+    for key in ("g71_depth", "g76_min_depth", "thread_chamfer"):
         if key in raw:
             q = _number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
             if q is not None:
-                kw[key] = q
+                if key == "g71_depth" and q == 0:
+                    rd.report("ZN106", f"[fanuc] {key}: \"0\" must be greater than 0", rd.loc.key(key, fline))
+                else:
+                    kw[key] = q
+    for key, top in (("thread_chamfer_angle", 90), ("g76_tool_angle", 120)):
+        if key in raw:
+            q = _number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            if q is not None:
+                if q > top:
+                    rd.report("ZN105", f"[fanuc] {key}: {_written(raw[key])} is out of range; allowed 0 to {top} "
+                              "degrees", rd.loc.key(key, fline))
+                else:
+                    kw[key] = q
+    for key, top in (("g73_divisions", 99999), ("g76_finish_passes", 99)):
+        if key in raw:
+            value = raw[key]
+            if not isinstance(value, int) or isinstance(value, bool) or not 1 <= value <= top:
+                rd.report("ZN103", f"[fanuc] {key}: expected an integer 1 to {top}, got {_written(value)}",
+                          rd.loc.key(key, fline))
+            else:
+                kw[key] = value
+    if "roughing_final_pass" in raw:
+        if not isinstance(raw["roughing_final_pass"], bool):
+            rd.report("ZN103", f"[fanuc] roughing_final_pass: expected true or false, got "
+                      f"{_written(raw['roughing_final_pass'])}", rd.loc.key("roughing_final_pass", fline))
+        else:
+            kw["roughing_final_pass"] = raw["roughing_final_pass"]
     if "scaling_unit" in raw:
         q = _number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", rd.loc.key("scaling_unit", fline), positive=True,
                     limit=Fraction(1))
@@ -937,6 +1070,89 @@ def _macros(rd: _Reader, raw: Any) -> dict[str, tuple[int, str]]:
             rd.report("ZN114", f"[macros] {key}: {code} is the macro call itself and cannot call a macro", span)
             continue
         out[code if code == "T" else f"{code[0]}{int(code[1:])}"] = (program, call)
+    return out
+
+
+def _diameter_axes(rd: _Reader, raw: Any, axes: tuple[str, ...], mline: int | None) -> tuple[str, ...]:
+    """``[machine] diameter_axes``: linear axes of the machine whose program words are diameters."""
+    span = rd.loc.key("diameter_axes", mline)
+    if not isinstance(raw, list) or not all(isinstance(a, str) for a in raw):
+        rd.report("ZN103", f"[machine] diameter_axes: expected a list of axis names such as [\"X\"], got "
+                  f"{_written(raw)}", span)
+        return ()
+    out: list[str] = []
+    for a in raw:
+        if a not in axes:
+            rd.report("ZN110", f"[machine] diameter_axes: {_written(a)} is not one of the machine's axes "
+                      f"({', '.join(axes)})", span)
+        elif a in ROTARY_AXES:
+            rd.report("ZN107", f"[machine] diameter_axes: {_written(a)} is a rotary axis; only linear axes take "
+                      "diameters", span)
+        elif a in out:
+            rd.report("ZN111", f"[machine] diameter_axes: axis {_written(a)} is listed twice", span)
+        else:
+            out.append(a)
+    return tuple(out)
+
+
+_OFFSET_KEYS = ("R", "tip", "wear")
+
+
+def _tool_offsets(rd: _Reader, raw: Any, axes: tuple[str, ...]) -> dict[int, ToolOffset]:
+    """``[tool_offsets]``: lathe tool offsets by number, ``1 = { X = "-120", Z = "-310", R = "0.8", tip = 3,
+    wear = { X = "0.02" } }`` (lengths in machine units: radius on a diameter axis)."""
+    out: dict[int, ToolOffset] = {}
+    line = rd.loc.section("tool_offsets")
+    if not isinstance(raw, Mapping):
+        rd.report("ZN103", f"[tool_offsets]: expected a table such as 1 = {{ X = \"-120\", Z = \"-310\" }}, got "
+                  f"{_written(raw)}", rd.loc.header(line))
+        return out
+    for key, value in raw.items():
+        span = rd.loc.key(key, line) or rd.loc.header(rd.loc.section(f"tool_offsets.{key}"))
+        if not (isinstance(key, str) and key.isdigit() and len(key) <= 4):
+            rd.report("ZN101", f"[tool_offsets]: {_written(key)} is not an offset number; write the number (0 to "
+                      "9999) as the key, such as 1 = { X = \"-120\", Z = \"-310\" }", span)
+            continue
+        what = f"[tool_offsets] {key}"
+        if not isinstance(value, Mapping):
+            rd.report("ZN103", f"{what}: expected a table of axis values, R, tip and wear, got {_written(value)}",
+                      span)
+            continue
+        for k in value:
+            if k not in axes and k not in _OFFSET_KEYS:
+                rd.report("ZN101", f"{what}: unknown key {_written(k)}; allowed: the machine's axes "
+                          f"({', '.join(axes)}), {', '.join(_OFFSET_KEYS)}", span)
+        geometry = []
+        for a in axes:
+            if a in value:
+                q = _number(rd, value[a], f"{what}.{a}", span)
+                if q is not None:
+                    geometry.append((a, q))
+        radius = _number(rd, value.get("R", "0"), f"{what}.R", span, nonnegative=True)
+        tip = value.get("tip", 0)
+        if not isinstance(tip, int) or isinstance(tip, bool) or not 0 <= tip <= 9:
+            rd.report("ZN103", f"{what}.tip: the imaginary tool nose direction is an integer 0 to 9, got "
+                      f"{_written(tip)}", span)
+            tip = 0
+        wear_raw = value.get("wear", {})
+        wear = []
+        wear_radius: Fraction | None = Fraction(0)
+        if not isinstance(wear_raw, Mapping):
+            rd.report("ZN103", f"{what}.wear: expected a table such as {{ X = \"0.02\" }}, got {_written(wear_raw)}",
+                      span)
+        else:
+            for k in wear_raw:
+                if k not in axes and k != "R":
+                    rd.report("ZN101", f"{what}.wear: unknown key {_written(k)}; allowed: the machine's axes, R",
+                              span)
+            for a in axes:
+                if a in wear_raw:
+                    q = _number(rd, wear_raw[a], f"{what}.wear.{a}", span)
+                    if q is not None:
+                        wear.append((a, q))
+            wear_radius = _number(rd, wear_raw.get("R", "0"), f"{what}.wear.R", span)
+        out[int(key)] = ToolOffset(int(key), tuple(geometry), tuple(wear), radius or Fraction(0),
+                                   wear_radius or Fraction(0), tip)
     return out
 
 

@@ -47,6 +47,7 @@ from .errors import Diagnostic, InputError, InvalidArgument
 from .exact import format_decimal, parse_rational, to_float
 from .machine import Machine, RapidMode, load_machine
 from .motion import Segment, SegmentKind, arc_path_float
+from .zones import tip_offset, tip_shifted
 
 __all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "register",
            "IRRATIONAL_TOLERANCE_MM"]
@@ -360,7 +361,8 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
     if gap > margin:
         return result(False, f"the point {_show(axes, point)} is {format_decimal(gap)} mm from the path point, "
                              f"more than the margin {format_decimal(margin)} mm")
-    bad = [z.name for s in hits for z in machine.allowed.violated_zones(dict(zip(axes, point)), s.tool_length)]
+    bad = [z.name for s in hits for z in tip_shifted(machine.allowed, tip_offset(s.extra)).violated_zones(
+        dict(zip(axes, point)), s.tool_length)]
     if zone not in bad:
         inside = "inside the allowed set" if not bad else f"outside {', '.join(sorted(set(bad)))} only"
         return result(False, f"the point {_show(axes, point)} is {inside}, not outside zone {zone!r}")

@@ -48,6 +48,7 @@ from ..errors import InvalidArgument, program_lines
 from ..exact import format_decimal, seconds
 from ..machine import Axis, Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
+from ..zones import tip_offset, tip_shifted
 from .arcs import arc_positions, path_fractions_moved
 from .monitor import LimitMonitor
 from .pulses import (
@@ -489,6 +490,7 @@ class Controller:
         self.axes = machine.axis_names
         self.pulse = tuple(a.pulse for a in machine.axes)
         self.monitor = LimitMonitor(machine)
+        self._monitors: dict[tuple, LimitMonitor] = {(): self.monitor}
         start = tuple(Fraction(v) for v in (machine.start if start is None else start))
         if len(start) != len(self.axes):
             raise InvalidArgument(f"start has {len(start)} coordinates; the machine has axes {self.axes}")
@@ -683,7 +685,23 @@ class Controller:
 
     def _run_segment(self, seg: Segment) -> None:
         self.tool_length = seg.tool_length
+        self.monitor = self._monitor_for(seg)
         self._run_plan(seg, self._plan(seg))
+
+    def _monitor_for(self, seg: Segment) -> LimitMonitor:
+        """The limit monitor for a segment: a lathe tool offset on an axis besides the tool axis moves the tool
+        tip away from the machine position there, so the tip zones are checked moved by it (shared counts)."""
+        shift = tip_offset(seg.extra) if seg.extra else {}
+        key = tuple(sorted(shift.items()))
+        mon = self._monitors.get(key)
+        if mon is None:
+            from dataclasses import replace as _replace
+
+            base = self._monitors[()]
+            mon = LimitMonitor(_replace(self.machine, allowed=tip_shifted(self.machine.allowed, shift)),
+                               stats=base.stats)
+            self._monitors[key] = mon
+        return mon
 
     def _run_plan(self, seg: Segment, plan: _Plan) -> None:
         """Run one planned motion (the recovery runs parts of plans through this)."""

@@ -113,9 +113,10 @@ class Interpretation:
         cls: type[Interpreter]
         if dialect == "fanuc":
             from .fanuc.interpreter import FanucInterpreter
+            from .fanuc.lathe import FanucLatheInterpreter
 
             cylindrical = False
-            cls = FanucInterpreter
+            cls = FanucLatheInterpreter if machine.is_lathe else FanucInterpreter
         else:
             from .cylindrical import CylindricalInterpreter, uses_cylindrical
 
@@ -124,7 +125,9 @@ class Interpretation:
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
                                track_dependencies=track_dependencies, chunk_size=chunk_size,
                                param_ranges=param_ranges)
-        self.fast = fast and not self.interpreter.track and not cylindrical
+        # lathes read diameters, U/W words and cycles with shapes: no fast path
+        self.fast = fast and not self.interpreter.track and not cylindrical and not machine.is_lathe \
+            and not machine.diameter_axes
         self.fast_lines = 0
         self._started = False
         self.finished = False

@@ -15,7 +15,7 @@ from fractions import Fraction
 
 from ..errors import SourceSpan
 
-__all__ = ["Word", "Block", "LANE_FULL"]
+__all__ = ["Word", "Block", "ShapeBlock", "LANE_FULL"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -87,6 +87,22 @@ class Block:
 
     def all(self, letter: str) -> tuple[Word, ...]:
         return tuple(w for w in self.words if w.letter == letter)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class ShapeBlock(Block):
+    """A lathe cycle block together with the finishing shape it reads (Fanuc G70-G73 ``P``/``Q``, LinuxCNC
+    G70-G72 ``Q``): ``shape`` holds the shape's blocks, evaluated but not executed, in program order."""
+
+    shape: tuple[Block, ...] = ()
+
+    @classmethod
+    def of(cls, values: list, span: SourceSpan, index: int, number: Fraction | None,
+           shape: tuple[Block, ...]) -> ShapeBlock:
+        """The block of evaluated words ``(letter, value, column, end column, text)``."""
+        words = tuple(Word(v[0], v[1], SourceSpan(span.file, span.line, v[2], v[3], span.text), v[4])
+                      for v in values)
+        return cls(words, span, index, number, (), shape)
 
 
 #: What the language layer yields, in place of a block, when the interpreter's lane it hands plain blocks

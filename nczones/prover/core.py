@@ -42,7 +42,7 @@ from typing import TYPE_CHECKING, Any
 from ..errors import InternalError, InvalidArgument
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones import PolygonZone, SteppedZone, Zone, ZonePoint, tip_offset, tip_shifted
 from . import exact as ex
 from .geometry import (
     ArcGeom,
@@ -110,6 +110,24 @@ class Prover:
         self.all_decidable = all(ex.decidable(z) for z in self.zones)
         #: box_fits can prove a box inside every zone (no allow polygon)
         self.boxable = not any(isinstance(z, PolygonZone) and not z.forbid for z in self.zones)
+        self.has_tip_zones = any(z.point is ZonePoint.TIP for z in self.zones)
+        self._tip_provers: dict[tuple, Prover] = {}
+
+    def _tip_prover(self, shift: dict[str, Fraction]) -> Prover:
+        """The prover of segments whose tool tip is ``shift`` away from the machine position on axes besides
+        the tool axis (a lathe tool offset in X): the tip zones moved by it, the solver and counts shared."""
+        key = tuple(sorted(shift.items()))
+        sub = self._tip_provers.get(key)
+        if sub is None:
+            from dataclasses import replace as _replace
+
+            machine = _replace(self.machine, allowed=tip_shifted(self.machine.allowed, shift))
+            sub = Prover(machine, margin=self.margin, params=self.params, engine=self.engine, limits=self.limits)
+            sub.solver = self.solver
+            sub.stats = self.stats
+            sub.has_tip_zones = False
+            self._tip_provers[key] = sub
+        return sub
 
     # ------------------------------------------------------------------ params
 
@@ -391,6 +409,10 @@ class Prover:
                                           "VF203"), engine="budget")
 
     def _check(self, seg: Segment) -> _Outcome:
+        if seg.extra and self.has_tip_zones:
+            shift = tip_offset(seg.extra)
+            if shift:
+                return self._tip_prover(shift).check(seg)
         self.stats["segments"] += 1
         if seg.kind is SegmentKind.DEVELOPED_ARC or (seg.extra and "cylinder_radius" in dict(seg.extra)):
             from .cylindrical import (

@@ -9,6 +9,9 @@ from .model import (
     SteppedZone,
     Zone,
     ZonePoint,
+    tip_offset,
+    tip_shifted,
+    translated,
 )
 
 __all__ = [
@@ -20,4 +23,7 @@ __all__ = [
     "SteppedZone",
     "Zone",
     "ZonePoint",
+    "tip_offset",
+    "tip_shifted",
+    "translated",
 ]

@@ -32,6 +32,9 @@ __all__ = [
     "Zone",
     "AllowedSet",
     "Point",
+    "translated",
+    "tip_offset",
+    "tip_shifted",
 ]
 
 Point = Mapping[str, Fraction]
@@ -457,3 +460,49 @@ class AllowedSet:
                 old_lo, old_hi = out.get(axis, (None, None))
                 out[axis] = (_max_bound(old_lo, lo), _min_bound(old_hi, hi))
         return out
+
+
+def _shift(v: Fraction | None, d: Fraction) -> Fraction | None:
+    return None if v is None else v + d
+
+
+def translated(zone: Zone, shift: Mapping[str, Fraction]) -> Zone:
+    """The zone moved by ``shift`` (axis -> distance): a point ``p`` is in the result exactly when
+    ``p - shift`` is in ``zone``.
+
+    >>> F = Fraction
+    >>> z = translated(BoxZone("b", (("X", F(0), F(10)), ("Z", None, F(5)))), {"X": F(2)})
+    >>> z.limits
+    (('X', Fraction(2, 1), Fraction(12, 1)), ('Z', None, Fraction(5, 1)))
+    """
+    from dataclasses import replace
+
+    if not any(shift.get(a) for a in zone.axes):
+        return zone
+    if isinstance(zone, BoxZone):
+        return replace(zone, limits=tuple((a, _shift(lo, shift.get(a, _ZERO)), _shift(hi, shift.get(a, _ZERO)))
+                                          for a, lo, hi in zone.limits))
+    if isinstance(zone, PolygonZone):
+        da, db = shift.get(zone.plane[0], _ZERO), shift.get(zone.plane[1], _ZERO)
+        return replace(zone, vertices=tuple((u + da, v + db) for u, v in zone.vertices),
+                       limits=tuple((a, _shift(lo, shift.get(a, _ZERO)), _shift(hi, shift.get(a, _ZERO)))
+                                    for a, lo, hi in zone.limits))
+    dr, dl = shift.get(zone.reference_axis, _ZERO), shift.get(zone.limited_axis, _ZERO)
+    return replace(zone, start=zone.start + dr,
+                   regions=tuple(Region(r.upto + dr, _shift(r.min, dl), _shift(r.max, dl)) for r in zone.regions))
+
+
+def tip_offset(extra: tuple) -> dict[str, Fraction]:
+    """The tool offsets on axes other than the tool axis that a segment carries (a lathe's X offset,
+    ``Segment.extra`` key ``"tip_offset"``): ``point = "tip"`` zones see ``machine - offset`` there."""
+    for key, value in extra:
+        if key == "tip_offset":
+            return dict(value)
+    return {}
+
+
+def tip_shifted(allowed: AllowedSet, shift: Mapping[str, Fraction]) -> AllowedSet:
+    """The allowed set in which the tip zones are moved by ``shift``: the zones a machine position meets when the
+    tool tip is ``shift`` away from it on those axes (besides the tool length on the tool axis)."""
+    return AllowedSet(tuple(translated(z, shift) if z.point is ZonePoint.TIP else z for z in allowed.zones),
+                      allowed.tool_axis)

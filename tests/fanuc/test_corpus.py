@@ -1,9 +1,11 @@
 """The Fanuc/Haas corpus (``../shared/corpus/fanuc``, its README and MANIFEST.tsv) in the fanuc dialect.
 
 Every program ends ``complete`` (a ``#3000`` alarm that stops it counts: everything it runs is known),
-``unknown`` (a code named in specs/fanuc.md, a reason, a line) or ``rejected`` (a ``GcodeError`` with
-``file:line:column``), never in a traceback; at least 70 % of the mill programs are complete.  Lathe
-programs (issue 23 brings the lathe cycles) are read by the mill dialect too, for the no-traceback rule.
+``unknown`` (a code named in specs/fanuc.md or specs/turning.md, a reason, a line) or ``rejected`` (a
+``GcodeError`` with ``file:line:column``), never in a traceback; at least 70 % of the mill programs are
+complete.  The lathe programs are read by a lathe (``type = "lathe"``, X a diameter axis; the Haas lathes in
+inches, the Hungarian ``TOKARKA.NC`` in G code system B, whose G90/G92 S/G33 it uses), and by the mill
+dialect too, for the no-traceback rule; ``test_fanuc_lathe_corpus_outcomes`` prints their counts.
 """
 
 from __future__ import annotations
@@ -38,6 +40,26 @@ def _machine(inch: bool):
 
 #: The Haas mills of ``hass-cnc-programs`` run in inches (the programs never say G20).
 INCH = "hass-cnc-programs/CNC MILL/"
+#: The programs written for G code system B (G90 absolute, G92 S spindle clamp, G33 threads).
+SYSTEM_B = ("gcodeworkshop/examples/TOKARKA.NC",)
+
+
+def _lathe(path: str):
+    """A lathe for the corpus's lathe programs: X a diameter axis, the offsets they select, the parameters their
+    cycles read (values of the kind Haas ships: 0.02 in escape, 0.01 in back-off), and their machine M codes
+    (M16 M26 M27 M41 tool, gear and coolant functions, M21/M22 the tailstock) declared harmless."""
+    inch = path.startswith("hass-cnc-programs/CNC LATHE/")
+    system = "B" if path in SYSTEM_B else "A"
+    return parse_machine(
+        '[machine]\ntype = "lathe"\ndialect = "fanuc"\naxes = ["X", "Z", "C"]\ndiameter_axes = ["X"]\n'
+        f'modal = ["{"G20" if inch else "G21"}"]\n'
+        '[machine.rapid]\nX = "30000"\nZ = "30000"\nC = "30000"\n'
+        '[machine.reference]\nX = "0"\nZ = "0"\nC = "0"\n'
+        "[tool_offsets]\n" + "\n".join(f'{i} = {{ X = "{i}", Z = "{2 * i}" }}' for i in range(1, 20)) + "\n"
+        f'[fanuc]\ngcode_system = "{system}"\ng71_retract = "{"0.02" if inch else "0.5"}"\n'
+        f'g74_retract = "{"0.01" if inch else "0.25"}"\nthread_chamfer = "0"\ng76_finish_passes = 1\n'
+        'g76_tool_angle = "60"\ng76_min_depth = "0.001"\ng76_finish_allowance = "0"\n'
+        "harmless_m = [16, 21, 22, 26, 27, 41]\n")
 
 
 def rows() -> list[tuple[str, str]]:
@@ -45,10 +67,12 @@ def rows() -> list[tuple[str, str]]:
     return [(r.split("\t")[0], r.split("\t")[4]) for r in lines if r.strip()]
 
 
-def run_all():
+def run_all(lathes: bool = False):
     outcomes = []
     for path, family in rows():
-        m = _machine(path.startswith(INCH))
+        if lathes and "lathe" not in family.lower():
+            continue
+        m = _lathe(path) if lathes else _machine(path.startswith(INCH))
         try:
             run = interpret(FANUC / path, m)
             for _chunk in run:
@@ -112,3 +136,27 @@ def test_fanuc_corpus_outcomes(capsys):
     for o in outcomes:
         if o[2] == "unknown":
             assert _listed(o[3], singles, variables, mranges), f"{o[0]}: unknown code {o[3]!r} is not in specs/fanuc.md"
+
+
+def test_fanuc_lathe_corpus_outcomes(capsys):
+    t0 = time.perf_counter()
+    outcomes = run_all(lathes=True)
+    counts: dict[str, int] = {}
+    for o in outcomes:
+        counts[o[2]] = counts.get(o[2], 0) + 1
+    complete = [o for o in outcomes if o[2] == "complete"]
+    with capsys.disabled():
+        print(f"\nfanuc lathe corpus: {len(outcomes)} programs in {time.perf_counter() - t0:.1f}s, outcomes {counts}")
+        print(f"lathe programs interpreted fully: {len(complete)}/{len(outcomes)}")
+        for o in outcomes:
+            print(f"  {o[2]:9} {o[0]}: {o[3]} {o[4][:110]}")
+    assert len(outcomes) >= 12
+    # the programs each outcome stands for: the Haas G71/G75/G76 programs, the Fanuc 0T programs, the
+    # 28,905-line system B program; unknown: G70 with a finishing allowance (2); rejected: a G71 whose Q names
+    # no block (the control alarms too) and the three Citizen multi-path programs ($1 path headers)
+    assert len(complete) >= 6, counts
+    for o in outcomes:
+        if o[2] == "unknown":
+            assert o[3] in ("G70", "G71", "G72", "G73", "G74", "G75", "G76") or o[3].startswith(("G", "M", "#")), o
+        if o[2] == "rejected" and "citizen" in o[0]:
+            assert o[3] == "GC101", o  # the multi-path $1 headers and S1= words are no Fanuc syntax

@@ -183,6 +183,7 @@ class _Frame:
 #: Literal G codes of a block that change how its words are read.
 _CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 _CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
+_LATHE_PQ = frozenset((70, 71, 72, 73, 74, 75, 76))
 
 
 class FanucRunner:
@@ -228,6 +229,10 @@ class FanucRunner:
         self._inc_mm = self.settings.increment_mm
         self._inc_inch = self._inc_mm / 10
         self._ms = Fraction(1, 1000)
+        #: G codes whose block reads a finishing shape between its P and Q sequence numbers (a lathe's
+        #: G70-G73), from the interpreter; empty on a mill.
+        self.shape_codes: frozenset = frozenset(getattr(state, "shape_codes", ()) or ())
+        self.current_pos = 0  # the offset of the line being executed
         digits = {"IS-A": 2, "IS-B": 3, "IS-C": 4}[self.settings.increment_system]
         self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
         self._long_inch = re.compile(rf"[XYZUVWIJKRQxyzuvwijkrq][ \t]*[+-]?\d*\.\d{{{digits + 2}}}|"
@@ -391,9 +396,15 @@ class FanucRunner:
     def plain_ok(self, letters: str, values: tuple, line: str) -> bool:
         """Whether a plain line's values are its words' values and the line does nothing the general path
         must see: no length literal without a decimal point or with more decimals than the increment, no
-        program end, call or custom code."""
+        program end, call or custom code, no lathe cycle that reads a shape."""
         if _INT_LENGTH.search(line) or (self._long_inch if self._inch() else self._long_mm).search(line):
             return False
+        if self.shape_codes and "G" in letters:
+            i = letters.find("G")
+            while i >= 0:
+                if values[i] in self.shape_codes:
+                    return False
+                i = letters.find("G", i + 1)
         if "M" in letters:
             i = letters.find("M")
             while i >= 0:
@@ -429,6 +440,7 @@ class FanucRunner:
     # -- one general line -------------------------------------------------------------------
     def execute(self, compiled: tuple, pos: int, lineno: int) -> _Flow:
         fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled
+        self.current_pos = pos
         frame = self.frames[-1]
         here = (nxt, lineno + 1)
         if fl.delete == 1 and self.block_delete:
@@ -510,7 +522,11 @@ class FanucRunner:
     def word_values(self, words: tuple, gcodes: set, lineno: int, line: str) -> list:
         """The block's words ``(letter, exact value, column, end column, text)`` as the control reads them."""
         in_cycle = getattr(self.state, "in_cycle", None)
-        cycle = bool(gcodes & _CYCLE_G) or (not (gcodes & _CANCEL_CYCLE_G) and in_cycle is not None and in_cycle())
+        lathe = bool(self.shape_codes)
+        cycle = not lathe and (bool(gcodes & _CYCLE_G) or (not (gcodes & _CANCEL_CYCLE_G) and in_cycle is not None
+                                                            and in_cycle()))
+        # a lathe's G70-G76 read P and Q as sequence numbers or counts of the least increment, not lengths
+        integer_q = lathe and bool(gcodes & _LATHE_PQ)
         g51 = 51 in gcodes
         degrees = 68 in gcodes  # G68 R is an angle
         dwell = 4 in gcodes  # G04 X/U are seconds (increment 0.001 s)
@@ -526,6 +542,8 @@ class FanucRunner:
                     q = round_to(value, self._ms)
                 elif degrees and letter == "R":
                     q = round_to(value, self._inc_mm)
+                elif integer_q and letter == "Q":
+                    q = round_to(value, Fraction(1))
                 else:
                     q = self.address_value(letter, value, cycle)
             else:
@@ -536,7 +554,7 @@ class FanucRunner:
                 elif dwell and letter in "XU":
                     if not point and self._dpi_increment:
                         q = q / 1000
-                elif letter in LENGTH_LETTERS and not (letter == "K" and cycle):
+                elif letter in LENGTH_LETTERS and not (letter == "K" and cycle) and not (integer_q and letter == "Q"):
                     q = self.literal("A" if degrees and letter == "R" else letter, q, point, lineno, text)
             values.append((letter, q, col, end, text))
         return values
@@ -747,6 +765,9 @@ class FanucRunner:
 
     def nc(self, values: list, fl: FanucLine, lineno: int, line: str, nxt: int) -> _Flow:
         """Yield an NC statement's block; the G66 modal call after a move; M2/M30 end the program."""
+        if self.shape_codes and any(v[0] == "G" and v[1] in self.shape_codes for v in values) and any(
+                v[0] == "P" for v in values) and any(v[0] == "Q" for v in values):
+            return (yield from self.shape_cycle(values, fl, lineno, line, nxt))
         yield from self.block(values, fl.number, lineno, line)
         if any(v[0] == "M" and v[1] in (2, 30) for v in values):
             return None
@@ -757,6 +778,67 @@ class FanucRunner:
             program, repeats, args, _depth = self.modal_call
             return self.call_macro(program, repeats, dict(args), here, lineno, line, "G66")
         return here
+
+    def shape_cycle(self, values: list, fl: FanucLine, lineno: int, line: str, nxt: int) -> _Flow:
+        """A lathe cycle block that reads a finishing shape (G70-G73 with P and Q): the blocks from ``N P`` to
+        ``N Q`` of the current program are read and evaluated (not executed) and handed to the interpreter
+        with the cycle block (:class:`~nczones.gcode.blocks.ShapeBlock`).  After G71-G73 whose shape follows the
+        cycle block, the program goes on after ``N Q`` (the shape's blocks are not executed again, 0i-TD
+        "Multiple repetitive cycle"); otherwise, and after G70 always, after the cycle block."""
+        pword = next(v for v in values if v[0] == "P")
+        qword = next(v for v in values if v[0] == "Q")
+        frame = self.frames[-1]
+        source = frame.source
+        src = source.src
+        for w in (pword, qword):
+            if w[1].denominator != 1 or w[1] <= 0:
+                raise self.error("GC209", f"{w[4]}: {w[0]} of a lathe cycle is the sequence number of the "
+                                 f"finishing shape's {'first' if w[0] == 'P' else 'last'} block", lineno, line,
+                                 w[2], w[3])
+        here = self.current_pos
+        first = self.find_label(source, int(pword[1]), here)
+        if first is None:
+            raise self.error("GC314", f"{pword[4]}: no block N{int(pword[1])} in this program for the finishing "
+                             "shape (Fanuc alarm PS0063)", lineno, line, pword[2], pword[3])
+        pos, ln = first
+        shape: list = []
+        index = self.index
+        while True:
+            text, after = src.line_at(pos)
+            if text is None:
+                raise self.error("GC314", f"{qword[4]}: the finishing shape from N{int(pword[1])} has no block "
+                                 f"N{int(qword[1])} after it (Fanuc alarm PS0063)", lineno, line, qword[2], qword[3])
+            compiled = self.compiled(source, pos, text, ln, after)
+            sfl, swords, assigns, stmt, _t, _n, gcodes = compiled[:7]
+            if sfl.percent or sfl.program is not None:
+                raise self.error("GC314", f"the finishing shape from N{int(pword[1])} runs into the end of the "
+                                 f"program before N{int(qword[1])}", lineno, line, qword[2], qword[3])
+            if not (sfl.delete == 1 and self.block_delete):
+                if sfl.unmodelled is not None or assigns or stmt is not None:
+                    raise self.unsupported(f"G{int(next(v[1] for v in values if v[0] == 'G' and v[1] in self.shape_codes))}",
+                                           "a macro statement inside a lathe cycle's finishing shape: the manuals "
+                                           "allow only NC blocks between P and Q; not modelled", ln, text)
+                if swords:
+                    svalues = self.word_values(swords, gcodes, ln, text)
+                    if any(v[0] == "M" and v[1] in (97, 98, 99) for v in svalues) or any(
+                            v[0] == "G" and v[1] in (65, 66, 67) for v in svalues) or self.has_call_code(svalues):
+                        raise self.error("GC314", "a subprogram or macro call inside a lathe cycle's finishing "
+                                         "shape (M98/M99/G65 between P and Q): the control alarms", ln, text)
+                    span = make_span(source.file, ln, 1, len(text) + 1, text)
+                    shape.append(plain_block_of(svalues, span, index, sfl.number))
+            if sfl.number == qword[1]:
+                break
+            pos, ln = after, ln + 1
+        from ..blocks import ShapeBlock
+
+        span = make_span(source.file, lineno, 1, len(line) + 1, line)
+        self.started = True
+        yield ShapeBlock.of(values, span, self.index, fl.number, tuple(shape))
+        self.index += 1
+        g70 = any(v[0] == "G" and v[1] == 70 for v in values)
+        if first[0] > here and not g70:
+            return after, ln + 1
+        return nxt, lineno + 1
 
     def calls(self, values: list, calls: list, fl: FanucLine, lineno: int, line: str, nxt: int) -> _Flow:
         here = (nxt, lineno + 1)

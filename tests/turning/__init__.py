@@ -1,0 +1,1 @@
+"""Lathes: diameter programming, lathe tool offsets, the Fanuc lathe dialect and the turning cycles."""
