@@ -111,6 +111,7 @@ class Interpretation:
         self.runners: list = []
         self._variables: Any = None
         cls: type[Interpreter]
+        lathe = False
         if dialect == "fanuc":
             from .fanuc.interpreter import FanucInterpreter
             from .fanuc.lathe import FanucLatheInterpreter
@@ -119,15 +120,19 @@ class Interpretation:
             cls = FanucLatheInterpreter if machine.is_lathe else FanucInterpreter
         else:
             from .cylindrical import CylindricalInterpreter, uses_cylindrical
+            from .lathe import LatheInterpreter, uses_lathe
 
             cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
-            cls = CylindricalInterpreter if cylindrical else Interpreter
+            lathe = bool(machine.diameter_axes) or uses_lathe(text)  # G7/G8, G70-G72: no fast path either
+            cls = CylindricalInterpreter if cylindrical else LatheInterpreter if lathe else Interpreter
+            if cylindrical and lathe:
+                cls = _cylindrical_lathe()
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
                                track_dependencies=track_dependencies, chunk_size=chunk_size,
                                param_ranges=param_ranges)
         # lathes read diameters, U/W words and cycles with shapes: no fast path
         self.fast = fast and not self.interpreter.track and not cylindrical and not machine.is_lathe \
-            and not machine.diameter_axes
+            and not machine.diameter_axes and not lathe
         self.fast_lines = 0
         self._started = False
         self.finished = False
@@ -227,6 +232,14 @@ class Interpretation:
             if chunk.scale is not None and not lines:
                 lines = dict(enumerate(program_lines(self.text), start=1))
             yield from chunk.segments(lines)
+
+
+def _cylindrical_lathe() -> type:
+    """The interpreter of a LinuxCNC program with both G07.1 and lathe codes (or a diameter axis)."""
+    from .cylindrical import CylindricalInterpreter
+    from .lathe import LatheInterpreter
+
+    return type("CylindricalLatheInterpreter", (CylindricalInterpreter, LatheInterpreter), {})
 
 
 def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,

@@ -274,7 +274,7 @@ class CutterComp:
         if it._u is not None:
             it._unknown(name, "cutter radius compensation in a rotated coordinate system (G10 L2 R) is not modelled",
                         word)
-        if type(it).__name__ != "Interpreter":
+        if type(it).__name__ not in ("Interpreter", "LatheInterpreter"):
             it._unknown(name, "cutter radius compensation with cylindrical interpolation is not modelled", word)
         if it.ranged:
             from .interpreter import _dadd

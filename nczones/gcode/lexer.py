@@ -300,7 +300,7 @@ def scan_plain(line: str) -> tuple | None:
 
 
 def plain_control(letters: str, values: tuple) -> bool:
-    """Whether a plain line holds a word the language layer acts on (M2 M30 M97 M98 M99, G65-G67).
+    """Whether a plain line holds a word the language layer acts on (M2 M30 M97 M98 M99, G65-G67, G70-G72).
 
     >>> plain_control("GXM", (Fraction(1), Fraction(2), Fraction(98)))
     True
@@ -316,8 +316,8 @@ def plain_control(letters: str, values: tuple) -> bool:
     i = letters.find("G")
     while i >= 0:
         v = values[i]
-        if 65 <= v._numerator // v._denominator <= 67:
-            return True
+        if 65 <= v._numerator // v._denominator <= 67 or 70 <= v._numerator // v._denominator <= 72:
+            return True  # G65-G67 macro calls, G70-G72 lathe cycles that read a subroutine
         i = letters.find("G", i + 1)
     return False
 

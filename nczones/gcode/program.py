@@ -96,7 +96,7 @@ from pathlib import Path
 from typing import Any, BinaryIO
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
-from .blocks import LANE_FULL, Block
+from .blocks import LANE_FULL, Block, ShapeBlock
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
 from .lexer import (
     _G_MACRO_CALLS,
@@ -223,6 +223,10 @@ class _Loop:
     remaining: int = 0
     count: int = 0
 
+
+#: LinuxCNC's lathe cycles that read their profile from a subroutine (Q): G70, G71, G71.1, G71.2, G72, G72.1,
+#: G72.2.
+_G7X = frozenset(Fraction(k, 10) for k in (700, 710, 711, 712, 720, 721, 722))
 
 @dataclass(slots=True)
 class _Frame:
@@ -545,7 +549,7 @@ class _Runner:
                             break
                     elif letter == "G":
                         v = w.value
-                        if 65 <= v.numerator // v.denominator <= 67:
+                        if 65 <= v.numerator // v.denominator <= 67 or 70 <= v.numerator // v.denominator <= 72:
                             stop = True
                             break
                 if stop:
@@ -666,6 +670,13 @@ class _Runner:
             words = rest
             pword, lword = (None if w is None else make_word(w[0], w[1], make_span(self.file, lineno, w[2], w[3], line),
                                                              w[4]) for w in (pword, lword))
+        if any(w[0] == "G" and w[1] in _G7X for w in words) and any(w[0] == "Q" for w in words):
+            self.started = True
+            shape = yield from self.g7x_profile(words, line, lineno)
+            span = make_span(self.file, lineno, 1, len(line) + 1, line)
+            yield ShapeBlock.of(words, span, self.index, pl.number, shape)
+            self.index += 1
+            return None if stop else (nxt, lineno + 1)
         if words or messages:
             self.started = True
             span = make_span(self.file, lineno, 1, len(line) + 1, line)
@@ -686,6 +697,60 @@ class _Runner:
                                        lineno, line, *m99)
             return self.return_m99(m99, line, lineno)
         return nxt, lineno + 1
+
+    def g7x_profile(self, words: list, line: str, lineno: int) -> Generator[Any, Any, tuple]:
+        """The profile of a LinuxCNC G70-G72 block: subroutine ``O<Q>`` called and run as LinuxCNC's
+        ``convert_g7x`` reads it (its control flow and parameter assignments executed), its blocks collected
+        until the call returns — handed to the interpreter with the cycle block, not executed.  Yields nothing
+        (a generator for the runner's ``yield from``); returns the blocks."""
+        qw = next(w for w in words if w[0] == "Q")
+        q = qw[1]
+        if q.denominator != 1 or q < 0:
+            raise self.error("GC209", f"{qw[4]}: Q of a lathe cycle is the number of the profile's subroutine",
+                             lineno, line, qw[2], qw[3])
+        label = int(q)
+        body = self.subs.get(label)
+        if body is None:
+            self.find_definitions()
+            body = self.subs.get(label)
+        if body is None:
+            raise self.error("GC313", f"{qw[4]}: subroutine o{label} (the cycle's profile) is not defined in this "
+                             "file", lineno, line, qw[2], qw[3])
+        depth = len(self.frames)
+        new = _Frame("o", label, (-1, -1), None, body)
+        self.push(new, lineno, line)
+        new.saved = self.params.push_scope(())
+        shape: list = []
+        pos, ln = body
+        steps = 0
+        while len(self.frames) > depth:
+            steps += 1
+            if steps > self.max_loops:
+                raise self.unsupported("GC302", f"the profile o{label} of a lathe cycle did not return within "
+                                       f"{self.max_loops} lines (max_loop_iterations)", lineno, line,
+                                       cls=IterationBoundExceeded)
+            text, nxt = self.src.line_at(pos)
+            if text is None:
+                self.check_open_frames(ln)
+                raise self.error("GC315", f"the profile o{label} of a lathe cycle has no endsub", lineno, line)
+            try:
+                pl = parse_line(text, ln, self.file)
+            except GcodeError as e:
+                raise self.syntax_error(e, nxt, ln) from None
+            gen = self.execute(pl, text, ln, pos, nxt)
+            try:
+                while True:
+                    b = next(gen)
+                    if isinstance(b, Block) and b.words:
+                        shape.append(b)
+            except StopIteration as stop:
+                target = stop.value
+            if target is None:
+                raise self.error("GC315", f"the program ends inside the profile o{label} of a lathe cycle",
+                                 lineno, line)
+            pos, ln = target
+        return tuple(shape)
+        yield  # pragma: no cover - a generator
 
     # -- Fanuc subprograms -----------------------------------------------------------
     def call_m98(self, pword: Any, lword: Any, loc: tuple[int, int], line: str, lineno: int,

@@ -358,8 +358,8 @@ def _executor(spans: list[tuple[int, int]], pl: ParsedLine, leaf_of: dict[int, s
         if letter == "M":
             body.append(f"if v{k}._denominator == 1 and v{k}._numerator in _STOP_M: return None")
         elif letter == "G":
-            body.append(f"if 65 <= v{k}._numerator // v{k}._denominator <= 67 and v{k} in _G_MACRO_CALLS: "
-                        "return None")
+            body.append(f"if 65 <= v{k}._numerator // v{k}._denominator <= 72 and (v{k} in _G_MACRO_CALLS or "
+                        f"v{k}._numerator // v{k}._denominator >= 70): return None")  # macro calls, G70-G72 profiles
         columns.append(f"({at(col - 1)}+1, {at(end - 1)}+1, line[{at(col - 1)}:{at(end - 1)}])")
     writes = []
     for k, (target, tree, _c, _e) in enumerate(pl.assigns):

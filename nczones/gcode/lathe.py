@@ -1,0 +1,315 @@
+"""LinuxCNC lathe programs: diameter mode (G7/G8) and the G70-G72 cycles with their profile subroutines.
+
+LinuxCNC reads every X word as a diameter while G7 is active (``Interp::read_x`` halves it; G7 in a block
+halves that block's X, ``convert_lathe_diameter_mode``); I and K stay radii.  A machine file with
+``diameter_axes = ["X"]`` starts in G7, as a LinuxCNC lathe whose ``RS274NGC_STARTUP_CODE`` holds G7.
+
+The cycles G70, G71 (.1 .2) and G72 (.1 .2) read their profile from the subroutine named by Q (the language
+layer collects its blocks into a :class:`~nczones.gcode.blocks.ShapeBlock`); :mod:`nczones.gcode.g7x`
+generates the passes as LinuxCNC's ``interp_g7x.cc`` does, and every pass becomes an ordinary rapid, line
+or arc segment with the cycle block's span and a note naming the pass (``G71 roughing pass 3: cut``).
+What the model cannot follow is ``unknown`` with a reason (``specs/turning.md``, "LinuxCNC G70-G72").
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from fractions import Fraction
+from typing import Any
+
+from ..machine import Machine
+from ..motion import Plane, SegmentKind
+from . import g7x
+from .blocks import Block, ShapeBlock, Word
+from .interpreter import INCH, Interpreter, _dadd, _gkey, _qadd
+
+__all__ = ["LatheInterpreter", "uses_lathe"]
+
+_G7X_KEYS = {700: (70, 0), 710: (71, 0), 711: (71, 1), 712: (71, 2), 720: (72, 0), 721: (72, 1), 722: (72, 2)}
+#: Words the cycle block gives the cycle (the rest run as in any block, before the cycle).
+_CYCLE_LETTERS = frozenset("XZQDEIPRUWK")
+#: Words a profile block may hold: the motion, the end point, the centre or radius, corners; F S T M N are read
+#: and ignored (LinuxCNC only reads the profile's blocks, it does not execute them).
+_PROFILE_LETTERS = frozenset("GXZUWIKRACFSTMN")
+_MENTION = re.compile(r"g\s*0*7\s*[0-2]?(?![\d.])|g\s*0*8(?![\d.])|g\s*0*7\s*[0-2]\s*\.\s*[0-2]")
+
+
+def uses_lathe(text: str) -> bool:
+    """Does a LinuxCNC program mention G7, G8 or G70-G72 (then the lathe interpreter runs it, no fast path)?
+
+    >>> uses_lathe("G7 X20"), uses_lathe("g71.1 q100"), uses_lathe("G7.1 C20"), uses_lathe("G1 X70 G80")
+    (True, True, False, False)
+    """
+    return _MENTION.search(text.lower()) is not None
+
+
+class LatheInterpreter(Interpreter):
+    """The LinuxCNC interpreter with lathe diameter mode and the G70-G72 cycles.
+
+    >>> from nczones.machine import parse_machine
+    >>> from nczones.gcode import segments_text
+    >>> m = parse_machine('''
+    ... [machine]
+    ... axes = ["X", "Z"]
+    ... diameter_axes = ["X"]
+    ... [machine.rapid]
+    ... X = "1000"
+    ... Z = "1000"
+    ... [machine.reference]
+    ... X = "100"
+    ... Z = "100"
+    ... ''')
+    >>> segs = segments_text("G18 G21 G0 X40 Z2\\nG8 G0 X40\\nG7 X10\\n", m)
+    >>> [[str(v) for v in s.end] for s in segs]
+    [['20', '2'], ['40', '2'], ['5', '2']]
+    """
+
+    def __init__(self, machine: Machine, **kwargs: Any):
+        super().__init__(machine, **kwargs)
+        #: G7 (X words are diameters) or G8
+        self.diameter_mode = "X" in machine.diameter_axes
+
+    def execute(self, block: Block) -> None:
+        if self._m73:
+            self._m73_returns()
+        block = self._diameter_words(block)
+        cycle = next(((k, w) for w in block.words if w.letter == "G" and (k := _gkey(w.value)) in _G7X_KEYS), None)
+        if cycle is None:
+            self._execute_general(block)
+        else:
+            self._g7x_block(block, cycle[0], cycle[1])
+
+    # ------------------------------------------------------------------ G7 / G8
+    def _diameter_words(self, block: Block) -> Block:
+        """The block with G7/G8 acted on (and taken out) and its X word halved in diameter mode."""
+        words = block.words
+        modes = [w for w in words if w.letter == "G" and _gkey(w.value) in (70, 80)]
+        if modes:
+            if len(modes) > 1:
+                raise self._error("GC201", "G7 and G8 are in the same modal group; a block may contain only one of "
+                                  "them", modes[1])
+            self.diameter_mode = _gkey(modes[0].value) == 70
+            words = tuple(w for w in words if w is not modes[0])
+        if self.diameter_mode and any(w.letter == "X" for w in words):
+            words = tuple(replace(w, value=w.value / 2) if w.letter == "X" else w for w in words)
+        if words is block.words:
+            return block
+        if isinstance(block, ShapeBlock):
+            return ShapeBlock(words, block.span, block.index, block.number, block.messages, block.shape)
+        return Block(words, block.span, block.index, block.number, block.messages)
+
+    # ------------------------------------------------------------------ G70-G72
+    def _g7x_block(self, block: Block, key: int, gw: Word) -> None:
+        code, sub = _G7X_KEYS[key]
+        name = f"G{code}" + (f".{sub}" if sub else "")
+        words: dict[str, Word] = {}
+        rest: list[Word] = []
+        for w in block.words:
+            if w.letter in _CYCLE_LETTERS:
+                if w.letter in words:
+                    raise self._error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
+                                      f"{w.text}); a letter may appear once", w)
+                words[w.letter] = w
+            elif w is not gw:
+                rest.append(w)
+        for w in rest:
+            if w.letter not in "GMFSTN" or (w.letter == "G" and _gkey(w.value) in (0, 10, 20, 30, 280, 300, 920, 100,
+                                                                                    520, 530, 800)):
+                raise self._error("GC205", f"{w.text or w.letter} in the block of the lathe cycle {name}: write it in "
+                                  "a block of its own", w)
+        if rest:  # F, S, T, M and modal G codes act first (LinuxCNC's order of execution: motion comes late)
+            self._execute_general(Block(tuple(rest), block.span, block.index, block.number, block.messages))
+        if self.unsupported or self.ended:
+            return
+        if "Q" not in words:
+            raise self._error("GC208", f"{name} needs a Q word: the number of the profile's subroutine", gw)
+        if not isinstance(block, ShapeBlock):
+            self._unknown(name, f"{name}: the profile subroutine was not collected (the cycle block is built by a "
+                          "path of the language layer that does not read profiles, e.g. a line with parameters)", gw)
+            return
+        if self.plane is not Plane.XZ:
+            raise self._error("GC308", f"{name} can only be used in the XZ plane (G18) (LinuxCNC's error)", gw)
+        iz, ix = self.index.get("Z"), self.index.get("X")
+        if iz is None or ix is None:
+            raise self._error("GC308", f"a lathe cycle needs axes X and Z; this machine has {', '.join(self.axes)}",
+                              gw)
+        if self.comp_on or (self._comp is not None and self._comp.side is not None):
+            self._unknown(name, f"{name} with cutter compensation on is not modelled", gw)
+            return
+        if self._u is not None:
+            self._unknown(name, f"{name} in a rotated coordinate system (G10 L2 R) is not modelled", gw)
+            return
+        self._note_assumed(("units", "distance", "offset"))
+        # the rapid to X Z (the cycle's start point; absent words: where the tool is)
+        axis = [(i, words[a]) for a, i in (("X", ix), ("Z", iz)) if a in words]
+        if axis:
+            end, deps = self._program_target(axis, False)
+            self._emit(SegmentKind.RAPID, end, derived=f"{name} to the start point", end_deps=deps)
+        self.motion = 0
+        if self.track:
+            ranged = getattr(self, "ranged", None)
+            for i in (iz, ix):
+                d = _dadd(self.dep_pos[i], self.dep_off[i], -1)
+                names = sorted(k for k in d if ranged is None or f"{k}.{self.axes[i]}" in ranged or k in ranged)
+                if names:
+                    self._unknown("parameter range", f"{name}: the cycle's start point in the workpiece coordinate "
+                                  f"system depends on {', '.join(f'{k}.{self.axes[i]}' for k in names)}: the "
+                                  "number and places of its passes would depend on it", gw)
+                    return
+        unit = INCH if self.inch else Fraction(1)
+        x0 = (self.pos[ix] - self.off[ix]) / unit
+        z0 = (self.pos[iz] - self.off[iz]) / unit
+        pieces = self._profile(name, block.shape, complex(float(z0), float(x0)), gw)
+        if pieces is None:
+            return
+        if len(pieces) <= 1:
+            return  # LinuxCNC: a profile of one piece or none does nothing more
+        fl = {k: float(words[k].value) for k in "DEIRUW" if k in words}
+        p = int(words["P"].value) if "P" in words else 1
+        if fl.get("I", 1.0) <= 0:
+            raise self._error("GC209", f"{name}: I must be greater than zero (LinuxCNC's error)", words["I"])
+        start = complex(float(z0), float(x0))
+        try:
+            if code == 70:
+                if p < 1:
+                    raise self._error("GC209", f"{name}: P (the number of passes) must be at least 1", words["P"])
+                moves = g7x.g70(pieces, start, x=float(x0), z=float(z0), d=fl.get("D", 0.0), e=fl.get("E", 0.0),
+                                passes=p)
+            else:
+                moves = g7x.g71(pieces, start, cycle=sub, x=float(x0), z=float(z0), u=fl.get("U", 0.0),
+                                w=fl.get("W", 0.0), d=fl.get("D", 0.0), i=fl.get("I", 1.0), r=fl.get("R", 0.5),
+                                facing=code == 72)
+        except g7x.G7xError as e:
+            self._unknown(name, f"{name}: LinuxCNC stops this cycle with an error or its result is not defined: {e}",
+                          gw)
+            return
+        self._emit_g7x(name, moves, iz, ix, unit)
+
+    def _profile(self, name: str, shape: tuple[Block, ...], start: complex, gw: Word) -> list[g7x.Piece] | None:
+        """The profile's pieces as ``convert_g7x`` reads them: the first from the cycle's start point; X halved in
+        diameter mode (U too), I and K radii, I/K relative to the block's start in G91.1; A rounds and C chamfers
+        the corner at a block's end.  None (after an unknown) when a block is beyond the model."""
+        pieces: list[g7x.Piece] = []
+        motion = 0  # convert_g7x's rapid to the start point sets G0
+        incremental = not self.absolute
+        at = start
+        for b in shape:
+            ws: dict[str, Word] = {}
+            for w in b.words:
+                if w.letter not in _PROFILE_LETTERS:
+                    self._unknown(name, f"{name}: the word {w.text or w.letter} in the profile (line {w.span.line}) "
+                                  "is not modelled", gw)
+                    return None
+                if w.letter == "G":
+                    k = _gkey(w.value)
+                    if k not in (0, 10, 20, 30):
+                        self._unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
+                                      "G1 G2 G3 are modelled there (LinuxCNC ignores other codes of a profile block)",
+                                      gw)
+                        return None
+                    motion = k
+                    continue
+                if w.letter in ws:
+                    raise self._error("GC204", f"two {w.letter} words in one block of the profile", w)
+                ws[w.letter] = w
+            end = complex(0.0, 0.0) if incremental else at
+            if "U" in ws:
+                if incremental:
+                    raise self._error("GC204", f"{name}: U cannot be used in incremental mode (G91) (LinuxCNC's "
+                                      "error)", ws["U"])
+                if "X" in ws:
+                    raise self._error("GC204", f"{name}: U and X in the same profile block", ws["U"])
+                u = float(ws["U"].value) / (2.0 if self.diameter_mode else 1.0)
+                end = complex(end.real, end.imag + u)
+            elif "X" in ws:
+                xv = ws["X"].value / 2 if self.diameter_mode else ws["X"].value
+                end = complex(end.real, float(xv))
+            if "W" in ws:
+                if incremental:
+                    raise self._error("GC204", f"{name}: W cannot be used in incremental mode (G91) (LinuxCNC's "
+                                      "error)", ws["W"])
+                if "Z" in ws:
+                    raise self._error("GC204", f"{name}: W and Z in the same profile block", ws["W"])
+                end = complex(end.real + float(ws["W"].value), end.imag)
+            elif "Z" in ws:
+                end = complex(float(ws["Z"].value), end.imag)
+            if incremental:
+                end = end + at
+            if end == at:
+                continue
+            if motion in (0, 10):
+                pieces.append(g7x.Straight(at, end))
+            else:
+                centre = self._profile_centre(name, ws, at, end, motion, gw)
+                if centre is None:
+                    return None
+                pieces.append(g7x.Round(motion == 30, at, centre, end))
+            if "A" in ws and "C" in ws:
+                raise self._error("GC204", f"{name}: both A and C on a corner of the profile (LinuxCNC's error)",
+                                  ws["C"])
+            if "A" in ws:
+                pieces.append(g7x.Fillet(float(ws["A"].value), end))
+            if "C" in ws:
+                pieces.append(g7x.Chamfer(float(ws["C"].value), end))
+            at = end
+        self.motion = motion  # convert_g7x leaves the profile's motion mode active (its moves then set theirs)
+        return pieces
+
+    def _profile_centre(self, name: str, ws: dict[str, Word], at: complex, end: complex, motion: int,
+                        gw: Word) -> complex | None:
+        if "R" in ws:
+            if "I" in ws or "K" in ws:
+                raise self._error("GC204", f"{name}: both R and I or K on an arc of the profile", ws["R"])
+            r = float(ws["R"].value)
+            chord = end - at
+            n = chord.real * chord.real + chord.imag * chord.imag
+            q = (r * r - n / 4) / n
+            if q < 0:
+                raise self._error("GC302", f"{name}: the arc's radius {ws['R'].text} is too small to reach its end "
+                                  "point", ws["R"])
+            centre = (at + end) / 2.0
+            s = q ** 0.5
+            d = complex(0.0 * s, 1.0 * s) * chord
+            return centre + d if motion == 30 else centre - d
+        if "I" not in ws and "K" not in ws:
+            raise self._error("GC208", f"{name}: either I or K must be present for an arc of the profile", None)
+        ci = float(ws["I"].value) if "I" in ws else 0.0
+        ck = float(ws["K"].value) if "K" in ws else 0.0
+        centre = complex(ck, ci) if self.arc_absolute else complex(ck, ci) + at
+        r0, r1 = abs(at - centre), abs(end - centre)
+        tol = 0.0002 if self.inch else 0.002  # LinuxCNC's RADIUS_TOLERANCE_INCH / _MM (arc_data_ijk)
+        if abs(r0 - r1) > tol and abs(r0 - r1) > 0.001 * max(r0, r1):
+            raise self._error("GC301", f"{name}: an arc of the profile ends off its circle: radius {r0:.6g} at its "
+                              f"start, {r1:.6g} at its end", ws.get("I") or ws.get("K"))
+        return centre
+
+    def _emit_g7x(self, name: str, moves: list[g7x.Out], iz: int, ix: int, unit: Fraction) -> None:
+        """The generated moves (program units, Z + X i, doubles taken exactly) as segments of the cycle block."""
+        motion = self.motion
+        for m in moves:
+            end = list(self.pos)
+            end[iz] = _qadd(Fraction(m.end.real) * unit, self.off[iz])
+            end[ix] = _qadd(Fraction(m.end.imag) * unit, self.off[ix])
+            deps = None
+            if self.track:
+                deps = [dict(d) for d in self.dep_pos]
+                deps[iz] = dict(self.dep_off[iz])
+                deps[ix] = dict(self.dep_off[ix])
+            derived = f"{name} {m.label}"
+            if m.kind == "rapid":
+                self._emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
+                motion = 0
+            elif m.kind == "feed":
+                self._check_feed()
+                self._emit(SegmentKind.LINE, end, feed=True, derived=derived, end_deps=deps)
+                motion = 10
+            else:
+                assert m.centre is not None
+                self._check_feed()
+                centre = (_qadd(Fraction(m.centre.real) * unit, self.off[iz]),
+                          _qadd(Fraction(m.centre.imag) * unit, self.off[ix]))
+                self._emit(SegmentKind.ARC, end, feed=True, plane=Plane.XZ, clockwise=not m.ccw, centre=centre,
+                           derived=derived, end_deps=deps)
+                motion = 30 if m.ccw else 20
+        self.motion = motion  # LinuxCNC: the motion mode of the cycle's last move stays active
