@@ -285,10 +285,12 @@ def test_m19_takes_an_r_word_and_g4_with_an_explicit_motion_code_moves():
 
 
 @pytest.mark.parametrize("code", ["G71.2 Q1 P2 D0.5", "G72.1 Q1 P2 D0.5"])
-def test_linuxcnc_curve_and_lathe_codes_are_unknown_not_errors(code):
-    run = interpret_text(f"G21\nG0 X1\n{code}\nX2 Y3 R1 K0\n", MILL)
-    assert len(list(run.segments())) == 1
-    assert run.status == "unknown" and run.unsupported[0].span.line == 3
+def test_linuxcnc_lathe_cycle_without_its_profile_is_an_error(code):
+    """LinuxCNC's G71/G72 read their profile from o<Q>: a subroutine the file does not define is an error, as
+    LinuxCNC's call of it is (the cycles themselves: tests/turning/test_linuxcnc_g7x.py)."""
+    with pytest.raises(GcodeError) as e:
+        list(interpret_text(f"G21\nG0 X1\n{code}\nX2 Y3 R1 K0\n", MILL).segments())
+    assert e.value.diagnostics[0].code == "GC313" and e.value.diagnostics[0].span.line == 3
 
 
 def test_incomplete_g6_2_curve_is_unknown_and_a_complete_one_is_a_spline():
