@@ -32,6 +32,9 @@ demo: $(RUNTIME)
 	$(BIN)/nczones verify specs/examples/programs/fanuc_slots_safe.nc --machine specs/machines/fanuc_mill.toml
 	$(BIN)/nczones verify specs/examples/programs/fanuc_slots_clamp.nc --machine specs/machines/fanuc_mill.toml; \
 	  test $$? -eq 1  # intentionally unsafe: the Macro B loop's fourth slot runs into the clamp
+	$(BIN)/nczones verify specs/examples/programs/g71_clear.nc --machine specs/machines/fanuc_lathe.toml
+	$(BIN)/nczones verify specs/examples/programs/g71_jaws.nc --machine specs/machines/fanuc_lathe.toml; \
+	  test $$? -eq 1  # intentionally unsafe: the G71 cycle's third roughing pass runs into the chuck jaws
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)
