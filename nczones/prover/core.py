@@ -633,7 +633,10 @@ class Prover:
                 # Z3 confirms and provides the witness parameter (the exact tier's own parameter
                 # once the budget is spent or when a limit stops the solver)
                 t_model = None
-                if self.limits is None or not self.limits.budget_spent():
+                # a polygon's witness is the exact tier's, re-checked by the zone's own membership test
+                # (the solver's polygon encoding grows with the vertices: seconds for a thousand)
+                if (self.limits is None or not self.limits.budget_spent()) and not any(
+                        isinstance(z, PolygonZone) for z, _ in found):
                     body, names = self._line_query(seg, piece, False)
                     ans = self.solver.check(body, names)
                     if ans.status == "unsat":
@@ -1094,11 +1097,12 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
              zones: Iterable[Zone] | None = None) -> bool:
     """Exact test: every point of the box ``[lo, hi]`` has a fitting margin box (boxes, stepped tables).
 
-    Polygon zones: True only for a forbid polygon whose bounding box the
-    grown box misses; an allow polygon is never screened.  ``zones``
+    Polygon zones: exact too (:func:`nczones.prover.polygon.box_fits`: no
+    edge meets the open box and its centre is inside, or outside).  ``zones``
     restricts the test to those zones (default: all of ``allowed``).
     """
     from ..zones import BoxZone, SteppedZone
+    from .polygon import box_fits as polygon_box_fits
 
     d = margin
     for z in allowed.zones if zones is None else zones:
@@ -1138,13 +1142,18 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
                     if (reg.min is not None and l0 < reg.min) or (reg.max is not None and l1 > reg.max):
                         return False
         elif isinstance(z, PolygonZone):
-            if not z.forbid:
-                return False
-            b = z.bounds()
-            if not any(
-                (bh is not None and rng(a)[0] >= bh) or (bl is not None and rng(a)[1] <= bl)
-                for a, (bl, bh) in b.items() if a in lo
-            ):
+            if z.forbid:
+                b = z.bounds()
+                if any((bh is not None and rng(a)[0] >= bh) or (bl is not None and rng(a)[1] <= bl)
+                       for a, (bl, bh) in b.items() if a in lo):
+                    continue
+            else:
+                for a, lo_, hi_ in z.limits:
+                    r0, r1 = rng(a)
+                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
+                        return False
+            (x0, x1), (y0, y1) = rng(z.plane[0]), rng(z.plane[1])
+            if not polygon_box_fits(z, (x0, y0), (x1, y1)):
                 return False
     return True
 

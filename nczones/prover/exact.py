@@ -1,4 +1,4 @@
-"""Exact rational decisions for straight pieces against box and stepped zones.
+"""Exact rational decisions for straight pieces against box, stepped and polygon zones.
 
 For a straight piece ``p(t) = p0 + t (p1 - p0)``, ``t`` in ``[0, 1]``, and one
 zone, :func:`line_violation` computes the *exact* set of parameters whose
@@ -138,8 +138,8 @@ class _Line:
 
 
 def decidable(zone: Zone) -> bool:
-    """Zones :func:`line_violation` decides (boxes and stepped tables)."""
-    return not isinstance(zone, PolygonZone)
+    """Zones :func:`line_violation` decides: all of them (boxes, stepped tables, polygons)."""
+    return isinstance(zone, (BoxZone, SteppedZone, PolygonZone))
 
 
 def _all(parts: Iterable[Interval | None]) -> Interval | None:
@@ -255,7 +255,38 @@ def line_violation(
             if reg.max is not None:
                 parts.append(_intersect(touch, ln.gt(lim, reg.max - d)))
         return _union(parts)
+    if isinstance(zone, PolygonZone):
+        return _polygon_violation(zone, ln, d)
     raise TypeError(f"line_violation cannot decide a {zone.kind} zone")
+
+
+def _polygon_violation(zone: PolygonZone, ln: _Line, d: Fraction) -> list[Interval]:
+    """A polygon is a prism: its plane part (:func:`nczones.prover.polygon.plane_violation`) times the
+    box of its limits.  An allow prism is violated where either part is; a forbid prism where both
+    are (the margin box is a product too, so it meets the prism's interior iff each part does)."""
+    from .polygon import plane_violation
+
+    xa, xb = ln.ends(zone.plane[0])
+    ya, yb = ln.ends(zone.plane[1])
+    plane = [_make(lo, hi, lc, hc) for lo, hi, lc, hc in plane_violation(zone, (xa, ya), (xb, yb), d)]
+    if zone.forbid:
+        if _flat(zone.limits):
+            return []
+        conds = []
+        for axis, lo, hi in zone.limits:
+            if lo is not None:
+                conds.append(ln.gt(axis, lo - d))
+            if hi is not None:
+                conds.append(ln.lt(axis, hi + d))
+        within = _all(conds)
+        return _union(_intersect(p, within) for p in plane)
+    parts = plane
+    for axis, lo, hi in zone.limits:
+        if lo is not None:
+            parts.append(ln.lt(axis, lo + d))
+        if hi is not None:
+            parts.append(ln.gt(axis, hi - d))
+    return _union(parts)
 
 
 def _flat(limits: tuple[tuple[str, Fraction | None, Fraction | None], ...]) -> bool:

@@ -5,7 +5,8 @@ For each row of a :class:`~nczones.motion.MotionChunk` in column form
 the row when the axis-aligned bounding box of the motion, grown by the
 margin, fits every zone — an exact integer test (zone constants are rounded
 *towards the inside* of the allowed set when they are not multiples of the
-scale, which can only flag more rows).  Lines, rapids (both rapid modes: a
+scale, which can only flag more rows; a polygon by its exact integer grid,
+:func:`nczones.prover.polygon.screen_rows`).  Lines, rapids (both rapid modes: a
 dogleg stays in the bounding box of its end points) and dwells are
 screened; arcs and every unproved row are returned as *flagged* and go to
 the exact per-segment path, which decides them.
@@ -286,18 +287,34 @@ def screen_chunk(chunk: MotionChunk, prover: Prover) -> list[int]:
                 hi_i = np.minimum(i1c + 1, last)  # a rounded boundary may reach one more row
                 ok &= inside & (l0 >= k.min_t.query(i0c, hi_i)) & (l1 <= k.max_t.query(i0c, hi_i))
         elif isinstance(z, PolygonZone):
-            if not z.forbid:
+            from .polygon import screen_rows
+
+            if z.plane[0] not in axes or z.plane[1] not in axes:
                 ok[:] = False
                 break
-            b = z.bounds()
-            clear = np.zeros(n, dtype=bool)
-            for a, (bl, bh) in b.items():
-                if a not in axes:
-                    continue
-                r0, r1 = rng(a)
-                if bh is not None:
-                    clear |= r0 >= _scaled(bh, s, True, _POS)
-                if bl is not None:
-                    clear |= r1 <= _scaled(bl, s, False, _NEG)
-            ok &= clear
+            x0, x1 = rng(z.plane[0])
+            y0, y1 = rng(z.plane[1])
+            if z.forbid:  # clear when the box misses the prism's limits or the polygon (its grid)
+                clear = np.zeros(n, dtype=bool)
+                for a, lo_, hi_ in z.limits:
+                    r0, r1 = rng(a)
+                    if hi_ is not None:
+                        clear |= r0 >= _scaled(hi_, s, True, _POS)
+                    if lo_ is not None:
+                        clear |= r1 <= _scaled(lo_, s, False, _NEG)
+                todo = ok & ~clear
+                if todo.any():
+                    rows = np.flatnonzero(todo)
+                    clear[rows] = screen_rows(z, s, x0[rows], x1[rows], y0[rows], y1[rows])
+                ok &= clear
+            else:
+                for a, lo_, hi_ in z.limits:
+                    r0, r1 = rng(a)
+                    if lo_ is not None:
+                        ok &= r0 >= _scaled(lo_, s, True, _NEG)
+                    if hi_ is not None:
+                        ok &= r1 <= _scaled(hi_, s, False, _POS)
+                rows = np.flatnonzero(ok)
+                if rows.size:
+                    ok[rows] = screen_rows(z, s, x0[rows], x1[rows], y0[rows], y1[rows])
     return np.flatnonzero(~ok).tolist()

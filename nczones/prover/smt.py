@@ -152,6 +152,13 @@ def triangulate(vertices: Sequence[Sequence[Fraction]]) -> tuple[list[tuple[Any,
     return tris, diags
 
 
+def _triangulation(zone: PolygonZone) -> tuple[list[tuple[Any, ...]], list[tuple[Any, ...]]]:
+    """:func:`triangulate` of a zone, once per zone (it is quadratic in the vertices)."""
+    from .polygon import cached
+
+    return cached(zone, -1, lambda: triangulate(zone.vertices))
+
+
 def _cross_term(o: Sequence[Fraction], a: Sequence[Fraction], x: str, y: str) -> str:
     """cross(a - o, (x, y) - o) as an SMT term (o, a rational)."""
     ax, ay = a[0] - o[0], a[1] - o[1]
@@ -223,7 +230,7 @@ def zone_violation(zone: Zone, pt: dict[str, str], ref_range: tuple[Fraction, Fr
         return _or(parts)
     if isinstance(zone, PolygonZone):
         x, y = pt[zone.plane[0]], pt[zone.plane[1]]
-        tris, diags = triangulate(zone.vertices)
+        tris, diags = _triangulation(zone)
         if zone.forbid:
             inside = [_and([f"(> {_cross_term(a, b, x, y)} 0.0)" for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))]) for t in tris]
             for a, b in diags:

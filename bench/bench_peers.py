@@ -1,0 +1,178 @@
+"""nczones beside a peer interpreter (a script, not a test): CPU seconds on the same files, in one run.
+
+    python bench/bench_peers.py [--lines 1000000] [--small 100000] [--corpus 10] [--macro 100000]
+                                [--timeout 300] [--skip-large]
+
+Columns, every one the CPU seconds of its own process (user + system of the
+child, so start-up counts the same way for every tool):
+
+* **regex pass** — Python reads the file and splits every line into words
+  with one regular expression: the floor of "reading G-code";
+* **rs274** — LinuxCNC's C++ interpreter alone (``rs274 -g``; Debian package
+  ``linuxcnc-uspace``), skipped with a note when it is not installed;
+* **nczones interpret** — ``nczones.gcode.interpret`` over the whole program
+  (text to motion, no proof);
+* **nczones verify** — the command line ``nczones verify`` end to end
+  (start-up, machine, interpretation, proof), against a large box.
+
+Ratios are taken within the same run: ``verify / rs274`` where rs274 ran,
+and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
+``--small``), an expression on every line (``--small``), stellabee1.ngc with
+``--arc-tolerance linuxcnc``, the corpus's ``--corpus`` largest LinuxCNC
+programs, and generated Fanuc Custom Macro B and LinuxCNC o-word loops of
+about ``--macro`` executed lines.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from _bench import ROOT, STELLABEE, machine_description  # noqa: E402
+
+CORPUS = Path("/work/shared/corpus")
+
+BOX = """
+[machine]
+name = "peer bench"
+axes = ["X", "Y", "Z"]
+pulse = "0.0001"
+dialect = "{dialect}"
+[machine.rapid]
+X = "10000"
+Y = "10000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[tool_lengths]
+H1 = "100"
+[[zones]]
+name = "travel"
+kind = "box"
+min = {{ X = "-100000", Y = "-100000", Z = "-100000" }}
+max = {{ X = "100000", Y = "100000", Z = "100000" }}
+"""
+
+REGEX_PASS = r"""
+import re, sys
+word = re.compile(rb"([A-Za-z#])\s*([-+]?[0-9.]+|\[[^\]]*\])")
+n = 0
+with open(sys.argv[1], "rb") as fh:
+    for line in fh:
+        n += len(word.findall(line))
+print(n)
+"""
+
+
+def cpu_of(cmd: list[str], timeout: float, env: dict | None = None) -> tuple[float | None, int | None]:
+    """CPU seconds (user + system) of a child process and its exit status; None on timeout."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    try:
+        out = subprocess.run(cmd, capture_output=True, timeout=timeout, env=env)
+    except subprocess.TimeoutExpired:
+        return None, None
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), out.returncode
+
+
+INTERPRET = r"""
+import sys, time
+from nczones.gcode import interpret
+from nczones.machine import load_machine
+m = load_machine(sys.argv[2])
+tol = sys.argv[3] or None
+n = 0
+for chunk in interpret(sys.argv[1], m, arc_tolerance=tol):
+    n += len(chunk)
+print(n)
+"""
+
+
+def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
+    """(name, file, dialect, arc tolerance) of every row."""
+    import bench_fanuc
+    import bench_gcode
+
+    out = []
+
+    def gen(name: str, text: str, dialect: str = "linuxcnc", tol: str = "") -> None:
+        p = d / (name.split(",")[0].replace(" ", "_") + ".ngc")
+        p.write_text(text)
+        out.append((name, p, dialect, tol))
+
+    if not a.skip_large:
+        gen(f"G1, {a.lines:,} lines", bench_gcode.cam_program(a.lines))
+    gen(f"G1, {a.small:,} lines", bench_gcode.cam_program(a.small))
+    gen(f"an expression on every line, {a.small:,}", bench_gcode.expr_program(a.small))
+    if STELLABEE.is_file():
+        out.append(("stellabee1.ngc --arc-tolerance linuxcnc", STELLABEE, "linuxcnc", "linuxcnc"))
+    manifest = CORPUS / "MANIFEST.tsv"
+    if manifest.is_file() and a.corpus:
+        with manifest.open() as fh:
+            rows = [r for r in csv.DictReader(fh, delimiter="\t")
+                    if r["role"] == "program" and "LinuxCNC" in r["dialect"] and (CORPUS / r["path"]).is_file()]
+        rows.sort(key=lambda r: -int(r["size"]))
+        for r in rows[: a.corpus]:
+            if STELLABEE.is_file() and (CORPUS / r["path"]).resolve() == STELLABEE.resolve():
+                continue
+            out.append((f"corpus {Path(r['path']).name}", CORPUS / r["path"], "linuxcnc", ""))
+    gen(f"Fanuc Macro B loop, {a.macro:,} executed lines", bench_fanuc.macro_program(a.macro), "fanuc")
+    gen(f"LinuxCNC o-word loop, {a.macro:,} executed lines", bench_fanuc.linuxcnc_macro_program(a.macro))
+    return out
+
+
+def fmt(v: float | None) -> str:
+    return "stopped" if v is None else f"{v:.2f}"
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--lines", type=int, default=1_000_000)
+    ap.add_argument("--small", type=int, default=100_000)
+    ap.add_argument("--corpus", type=int, default=10)
+    ap.add_argument("--macro", type=int, default=100_000)
+    ap.add_argument("--timeout", type=float, default=300.0)
+    ap.add_argument("--skip-large", action="store_true", help="leave out the --lines program")
+    a = ap.parse_args()
+    print(f"machine: {machine_description()}")
+    rs274 = shutil.which("rs274")
+    if rs274 is None:
+        print("rs274: not installed (Debian package linuxcnc-uspace); its column is skipped")
+    env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    nczones = [sys.executable, "-m", "nczones"]
+    print("CPU seconds per process; ratio = nczones verify / peer, measured in this run")
+    print(f"{'program':58} {'regex':>7} {'rs274':>7} {'interp':>7} {'verify':>7}  exit  verify/rs274  verify/regex")
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        for name, path, dialect, tol in programs(a, d):
+            machine = d / f"box-{dialect}.toml"
+            machine.write_text(BOX.format(dialect=dialect))
+            regex, _ = cpu_of([sys.executable, "-c", REGEX_PASS, str(path)], a.timeout)
+            peer = None
+            if rs274 is not None and dialect == "linuxcnc":
+                peer, _ = cpu_of([rs274, "-g", str(path)], a.timeout)
+            interp, _ = cpu_of([sys.executable, "-c", INTERPRET, str(path), str(machine), tol], a.timeout, env)
+            cmd = [*nczones, "verify", str(path), "--machine", str(machine), "--format", "json"]
+            if tol:
+                cmd += ["--arc-tolerance", tol]
+            verify, code = cpu_of(cmd, a.timeout, env)
+            r_peer = "" if peer is None or verify is None else f"{verify / peer:.2f}"
+            r_regex = "" if regex is None or verify is None else f"{verify / regex:.2f}"
+            print(f"{name[:58]:58} {fmt(regex):>7} {fmt(peer) if rs274 else 'n/a':>7} {fmt(interp):>7} "
+                  f"{fmt(verify):>7}  {code if code is not None else '-':>4}  {r_peer:>12}  {r_regex:>12}", flush=True)
+
+
+if __name__ == "__main__":
+    main()
