@@ -601,8 +601,19 @@ class Prover:
                    + sqrt_bounds(gap[0] ** 2 + gap[1] ** 2, 64)[1])
             r = max(r_s, r_e)
             boxes = ((c[0] + sa0 - r, c[0] + sa1 + r), (c[1] + sb0 - r, c[1] + sb1 + r))
-        elif seg.radius is not None:  # the centre is within |R| of the start, the path within |R| of it
+        elif seg.radius is not None:
+            # the centre is within |R| of the start, the path within |R| of the centre; a positive R is
+            # a minor arc (at most a half turn): it lies within its sagitta h of its chord, and h grows
+            # with the chord, so the largest chord over the ranges bounds it
             r = 2 * abs(seg.radius)
+            if seg.radius > 0 and not seg.turns:
+                (sa0, sa1), (sb0, sb1) = dev(ia, "start"), dev(ib, "start")
+                (ea0, ea1), (eb0, eb1) = dev(ia, "end"), dev(ib, "end")
+                far = [max(abs(seg.end[k] + e1 - seg.start[k] - s0), abs(seg.start[k] + s1 - seg.end[k] - e0))
+                       for k, s0, s1, e0, e1 in ((ia, sa0, sa1, ea0, ea1), (ib, sb0, sb1, eb0, eb1))]
+                rest = seg.radius ** 2 - (far[0] ** 2 + far[1] ** 2) / 4
+                if rest >= 0:
+                    r = min(r, seg.radius - sqrt_bounds(rest, 64)[0])
             boxes = ((lo[self.axes[ia]] - r, hi[self.axes[ia]] + r), (lo[self.axes[ib]] - r, hi[self.axes[ib]] + r))
         else:
             return None

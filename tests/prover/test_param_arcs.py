@@ -88,6 +88,16 @@ def test_arc_whose_ends_move_with_different_ranges_is_unsafe_at_its_line_and_the
     assert replay.violations[0].line == 2
 
 
+
+def test_arc_whose_ends_move_with_different_ranges_and_stays_below_the_top_is_proved():
+    # the bulge is at most 4.13 mm over the ranges (the largest chord, 14 mm, with R8): below Y56 the arc
+    # is proved for every value by its chord and sagitta; the line after it leaves the box
+    r = verify_text(TWO_RANGES, machine("56"), params=["start.X=-2..2", "G54.X=-2..2"])
+    assert [v.line for v in r.violations] == [3] and not r.reasons
+    # with the top at Y54 the arc violates at its largest chords only (start.X=-2, G54.X=2)
+    r = verify_text(TWO_RANGES, machine("54"), params=["start.X=-2..2", "G54.X=-2..2"])
+    assert r.violations[0].line == 2
+
 # --------------------------------------------------------------------------- a range verdict vs its values
 
 
