@@ -18,8 +18,8 @@ and shows the configuration where it ends one grid pitch off."""),
 code("""from fractions import Fraction as F
 import matplotlib.pyplot as plt
 from nczones import load_machine, format_decimal
-from nczones.controller.homing import (homing_config, simulate_homing, measure_grid_shift,
-                                       edge_to_grid_distance, exactness_margin, window_is_clear)
+from nczones.homing import homing_config, edge_to_grid_distance, exactness_margin, window_is_clear
+from nczones.controller.homing import simulate_homing, measure_grid_shift
 from nczones.prover.homing import prove_homing, find_one_pitch_error
 
 machine = load_machine("../specs/machines/homing_mill.toml")
@@ -64,11 +64,12 @@ The switch trips somewhere within ± jitter of the dog edge, and the controller 
 after the servo lag. If a grid point lies inside that window, one homing latches it and the next
 latches the following one: the origin is one grid pitch off. Z3 searches for such a configuration;
 the simulation replays it."""),
-code("""proof = find_one_pitch_error(cfg, pulse, start=F(40))
+code("""proof = find_one_pitch_error(cfg, pulse)
 cex = proof.counterexample
 print(proof.statement)
 print("Z3:", proof.status.value, "| phase", format_decimal(cex.phase), "| trip offset", format_decimal(cex.trip_offset))
-print("origin error per Z3:", cex.origin_error_pulses, "pulses; per simulation:", cex.simulated_error_pulses,
+replayed = simulate_homing(cfg, pulse, start=F(40), phase=cex.phase, trip_offset=cex.trip_offset)
+print("origin error per Z3:", cex.origin_error_pulses, "pulses; per simulation:", replayed.origin_error_pulses,
       "pulses; grid pitch =", int(cfg.grid_pitch / pulse), "pulses")"""),
 code("""trips = [F(k, 1000) for k in range(-int(cfg.switch_jitter * 1000), int(cfg.switch_jitter * 1000) + 1, 2)]
 shift = measure_grid_shift(cfg, pulse, start=F(40), phase=cex.phase).grid_shift
@@ -82,7 +83,7 @@ md("""## The condition, proved
 
 Homing is always exact when the distance from the dog edge (plus lag) to the nearest grid point
 exceeds the jitter. `prove_homing` checks every claim for the configured axis."""),
-code("""report = prove_homing(cfg, pulse, start=F(40))
+code("""report = prove_homing(cfg, pulse)
 for p in report.proofs:
     print(f"{p.status.value:>8}  {p.name:<26} {p.statement}")
 print(f"edge-to-grid distance {format_decimal(report.edge_to_grid)} mm, needed more than "

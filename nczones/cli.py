@@ -16,12 +16,16 @@ import sys
 import traceback
 from collections.abc import Callable, Sequence
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from . import __version__
 from .errors import Diagnostic, InputError, InvalidArgument, NczonesError
-from .exact import format_decimal
+from .exact import format_decimal, parse_decimal
 from .machine import Machine, load_machine
 from .zones import PolygonZone, SteppedZone
+
+if TYPE_CHECKING:
+    from .gcode.source import ProgramSource
 
 __all__ = ["main", "EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL"]
 
@@ -182,6 +186,31 @@ def library_folder(path: str | None) -> str | None:
     return path
 
 
+def program_source(name: str) -> ProgramSource:
+    """The program ``name`` names: ``-`` is standard input, anything else a file (``GC1xx`` errors)."""
+    from .gcode.source import load_program, read_stdin
+
+    return (read_stdin() if name == "-" else load_program(name)).require_code()
+
+
+def arc_tolerance(text: str) -> Fraction | str:
+    """``--arc-tolerance``: "linuxcnc" or a non-negative decimal (mm).
+
+    >>> arc_tolerance("0.002"), arc_tolerance("linuxcnc")
+    (Fraction(1, 500), 'linuxcnc')
+    """
+    if text == "linuxcnc":
+        return text
+    try:
+        q = parse_decimal(text)
+    except ValueError:  # InvalidArgument is a ValueError
+        q = None
+    if q is None or q < 0:
+        raise InputError(Diagnostic("VF104", f"--arc-tolerance {text!r}: expected a non-negative decimal number "
+                                             "of mm (e.g. 0.002) or 'linuxcnc'", file="<command line>"))
+    return q
+
+
 #: Subcommand registrars; other stages append theirs.
 REGISTRARS: list[Callable[[argparse._SubParsersAction], None]] = [register_check_machine]
 
@@ -190,9 +219,9 @@ def _load_optional_registrars() -> None:
     """Import the stages that add subcommands (each appends to REGISTRARS)."""
     import importlib
 
-    for module in ("nczones.prover.command", "nczones.controller.command", "nczones.controller.homing_command",
-                   "nczones.report.command", "nczones.imports.command", "nczones.replay",
-                   "nczones.fleet.command"):
+    for module in ("nczones.commands.verify", "nczones.commands.simulate", "nczones.commands.home",
+                   "nczones.commands.plot", "nczones.commands.machine_files", "nczones.commands.replay",
+                   "nczones.commands.fleet"):
         try:
             importlib.import_module(module)
         except ModuleNotFoundError as exc:

@@ -40,9 +40,10 @@ from typing import Any
 
 import numpy as np
 
-from .errors import SourceSpan
+from .errors import InvalidArgument, SourceSpan
 
-__all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes", "arc_path_float"]
+__all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes", "arc_path_float",
+           "segments_of"]
 
 
 class SegmentKind(enum.IntEnum):
@@ -313,3 +314,28 @@ class MotionChunk:
                 kind, start, end, self.axes, int(blocks[i]), span,
                 Fraction(int(lengths[i]), den), feed, **arc,
             )
+
+
+def segments_of(motion: Any) -> Iterator[Segment]:
+    """The segments of a Segment, a MotionChunk, or an iterable of either (such as an interpretation).
+
+    >>> F = Fraction
+    >>> seg = Segment(SegmentKind.LINE, (F(0),), (F(1),), ("X",))
+    >>> [s.end for s in segments_of([seg, MotionChunk(("X",), None, objects=(seg, seg))])]
+    [(Fraction(1, 1),), (Fraction(1, 1),), (Fraction(1, 1),)]
+    """
+    if isinstance(motion, Segment):
+        yield motion
+        return
+    if isinstance(motion, MotionChunk):
+        yield from motion.segments()
+        return
+    for item in motion:
+        if isinstance(item, Segment):
+            yield item
+        elif isinstance(item, MotionChunk):
+            yield from item.segments()
+        elif hasattr(item, "segments"):
+            yield from item.segments()
+        else:
+            raise InvalidArgument(f"cannot run {type(item).__name__}: expected Segment or MotionChunk")

@@ -30,8 +30,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
-__all__ = ["Nurbs", "clamped_uniform_knots", "NurbsError"]
+if TYPE_CHECKING:
+    from .motion import Segment
+
+__all__ = ["Nurbs", "clamped_uniform_knots", "NurbsError", "spline_curve"]
 
 
 class NurbsError(ValueError):
@@ -242,3 +246,13 @@ class Nurbs:
             for m in mids:
                 c = c.insert(m)
         return c
+
+
+def spline_curve(seg: "Segment") -> Nurbs:
+    """The exact NURBS of a SPLINE segment (control points in machine coordinates).
+
+    The interpreter stores the curve in the segment's ``extra``: ``degree``,
+    ``knots``, ``control`` points and ``weights``.
+    """
+    e = dict(seg.extra)
+    return Nurbs(e["degree"], e["knots"], e["control"], e["weights"])  # type: ignore[arg-type]

@@ -32,7 +32,6 @@ input (an unreadable report, a missing or changed file).
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import os
@@ -42,14 +41,13 @@ from fractions import Fraction
 from types import MappingProxyType
 from typing import Any
 
-from . import cli
 from .errors import Diagnostic, InputError, InvalidArgument
 from .exact import format_decimal, parse_rational, to_float
 from .machine import Machine, RapidMode, load_machine
 from .motion import Segment, SegmentKind, arc_path_float
 from .zones import tip_offset, tip_shifted
 
-__all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "register",
+__all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "ReplayError",
            "IRRATIONAL_TOLERANCE_MM"]
 
 #: How close an irrational path point must be to the motion (mm; degrees on a rotary axis).
@@ -303,7 +301,7 @@ def _on_motion(p: Point, seg: Segment, machine: Machine, exact: bool, parameter:
 def _recovery_legs(v: Mapping[str, Any], seg: Segment, segs: list[Segment], machine: Machine,
                    settings: Mapping[str, Any], break_point: Point) -> list[Segment]:
     """The recovery motion the counterexample names (a leg from the break point, or the resumed cut)."""
-    from .controller.recovery import (
+    from .recovery import (
         RecoveryVariant,
         motion_sequences,
         recovery_legs,
@@ -486,40 +484,3 @@ def replay_file(path: str, *, base: str | None = None, machine_file: str | None 
     for doc in docs:
         out.extend(replay_report(doc, base=base, machine_file=machine_file, program_file=program_file, where=path))
     return out
-
-
-def _run(args: argparse.Namespace) -> int:
-    if args.base is not None and not os.path.isdir(args.base):
-        raise _fail("RP103", f"--base {args.base}: not a directory", "<command line>")
-    checks: list[Check] = []
-    for report in args.reports:
-        checks.extend(replay_file(report, base=args.base, machine_file=args.machine, program_file=args.program))
-    for c in checks:
-        print(c.render())
-    bad = sum(not c.confirmed for c in checks)
-    approx = sum(c.confirmed and not c.exact for c in checks)
-    if not checks:
-        print("replay: no counterexample to replay (every report is safe or unknown)")
-    else:
-        print(f"replay: {len(checks) - bad} of {len(checks)} counterexample{'s' if len(checks) != 1 else ''} "
-              f"confirmed" + (f" ({approx} within {IRRATIONAL_TOLERANCE_MM} mm of an irrational path point)"
-                              if approx else "") + (f"; {bad} NOT reproduced" if bad else ""))
-    return cli.EXIT_FAIL if bad else cli.EXIT_OK
-
-
-def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser(
-        "replay", help="re-check the counterexamples of a JSON report exactly against the files it names",
-        description="Re-check every counterexample of REPORT.json (nczones verify --format json) in exact "
-                    "arithmetic against the machine file and program it names (their SHA-256 must match). "
-                    "Exit status: 0 all confirmed, 1 one was not reproduced, 2 bad input.")
-    p.add_argument("reports", nargs="+", metavar="REPORT.json", help="JSON report(s) of nczones verify")
-    p.add_argument("--base", metavar="DIR",
-                   help="directory the report's relative paths start from (default: the working directory)")
-    p.add_argument("--machine", metavar="M.toml", help="the machine file, when it moved since the report")
-    p.add_argument("--program", metavar="PROGRAM", help="the program file, when it moved (or was read from "
-                                                        "standard input)")
-    p.set_defaults(handler=_run)
-
-
-cli.REGISTRARS.append(register)

@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import Any
 
 import numpy as np
 
@@ -114,10 +113,10 @@ def _append(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
     rows.extend(line_steps(a, b))
 
 
-def plan_developed_arc(ctrl: Any, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...]) -> Any:
-    """The controller's motion plan of a developed arc (called by ``Controller._plan``)."""
-    from .simulator import plan_from_positions
+def developed_arc_walk(seg: Segment, pulse: tuple[Fraction, ...], p0: tuple[int, ...]) -> tuple[np.ndarray, float]:
+    """The pulse positions of a developed arc and the length its feed applies to (``Controller._plan``).
 
-    pos = developed_arc_positions(seg, ctrl.pulse, p0)
-    length = float(developed_arc_of(seg).length().mid())  # developed mm: F is the feed on the developed surface
-    return plan_from_positions(ctrl, seg, p0, p1, pos, length, "developed arc")
+    The length is in developed mm: F is the feed on the developed surface.
+    """
+    pos = developed_arc_positions(seg, pulse, p0)
+    return pos, float(developed_arc_of(seg).length().mid())

@@ -47,9 +47,10 @@ import numpy as np
 from ..errors import InvalidArgument, program_lines
 from ..exact import format_decimal, seconds
 from ..machine import Axis, Machine, RapidMode
-from ..motion import MotionChunk, Segment, SegmentKind
+from ..motion import Segment, SegmentKind, segments_of
 from ..zones import tip_offset, tip_shifted
 from .arcs import arc_positions, path_fractions_moved
+from .cylindrical import developed_arc_walk
 from .monitor import LimitMonitor
 from .pulses import (
     LINE_CHUNK,
@@ -63,6 +64,7 @@ from .pulses import (
     line_steps,
     round_pulse,
 )
+from .spline import spline_walk
 
 __all__ = [
     "Mode",
@@ -421,25 +423,6 @@ def plan_from_positions(ctrl: "Controller", seg: Segment, p0: tuple[int, ...], p
     return plan
 
 
-def _segments_of(motion: Any) -> Iterator[Segment]:
-    """Segments from a Segment iterable, MotionChunks, or an interpretation."""
-    if isinstance(motion, Segment):
-        yield motion
-        return
-    if isinstance(motion, MotionChunk):
-        yield from motion.segments()
-        return
-    for item in motion:
-        if isinstance(item, Segment):
-            yield item
-        elif isinstance(item, MotionChunk):
-            yield from item.segments()
-        elif hasattr(item, "segments"):
-            yield from item.segments()
-        else:
-            raise InvalidArgument(f"cannot simulate {type(item).__name__}: expected Segment or MotionChunk")
-
-
 def _sign(v: int) -> int:
     return (v > 0) - (v < 0)
 
@@ -570,15 +553,11 @@ class Controller:
         if seg.kind is SegmentKind.ARC:
             return self._plan_arc(seg, p0, p1)
         if seg.kind is SegmentKind.DEVELOPED_ARC:  # G07.1: developed plane, then rotary pulses
-            from .cylindrical import plan_developed_arc
-
-            developed: _Plan = plan_developed_arc(self, seg, p0, p1)
-            return developed
+            pos, length = developed_arc_walk(seg, self.pulse, p0)
+            return plan_from_positions(self, seg, p0, p1, pos, length, "developed arc")
         if seg.kind is SegmentKind.SPLINE:  # exact NURBS: flattened chords, see controller/spline.py
-            from .spline import plan_spline
-
-            spline: _Plan = plan_spline(self, seg, p0, p1)
-            return spline
+            pos, length = spline_walk(seg, self.pulse, p0)
+            return plan_from_positions(self, seg, p0, p1, pos, length, "spline")
         raise InvalidArgument(f"unknown segment kind {seg.kind!r}")
 
     def _feed_time(self, seg: Segment, disp: list[float], length: float) -> float:
@@ -670,7 +649,7 @@ class Controller:
             if bad:
                 self._alarm(None, tuple(self.counter), bad, (), note="start position outside the allowed set")
         skipped = 0
-        for seg in _segments_of(motion):
+        for seg in segments_of(motion):
             if self.halted:
                 skipped += 1
                 continue
@@ -1239,14 +1218,14 @@ def simulate(
 def _reporting(items: Any, progress: Any, text: str | None) -> Iterator[Segment]:
     """Segments of ``items``, calling ``progress(line, total)`` after each one is run."""
     total = (text.count("\n") + (0 if text.endswith("\n") else 1)) if text else None
-    for seg in _segments_of(items):
+    for seg in segments_of(items):
         yield seg
         if seg.span is not None:
             progress(seg.span.line, total)
 
 
 def _peek(motion: Any) -> tuple[Iterable[Segment], Segment | None]:
-    it = _segments_of(motion)
+    it = segments_of(motion)
     try:
         first = next(it)
     except StopIteration:

@@ -1,6 +1,6 @@
 """Pulse distribution along SPLINE segments (exact NURBS curves).
 
-The curve (:func:`nczones.prover.spline.spline_curve`) is cut at its knots
+The curve (:func:`nczones.nurbs.spline_curve`) is cut at its knots
 and each piece is halved by exact knot insertion until it is *flat*: every
 control point ``P_j`` of a piece with ``n + 1`` points lies within
 :data:`FLATNESS` pulses, on every axis, of the chord point
@@ -30,9 +30,10 @@ import numpy as np
 
 from ..errors import InvalidArgument
 from ..motion import Segment
+from ..nurbs import spline_curve
 from .pulses import line_steps, round_pulse
 
-__all__ = ["FLATNESS", "spline_chord_points", "spline_positions", "plan_spline"]
+__all__ = ["FLATNESS", "spline_chord_points", "spline_positions", "spline_walk"]
 
 #: Allowed distance (in pulses, per axis) of a piece's control polygon from its chord.
 FLATNESS = Fraction(1, 4)
@@ -53,8 +54,6 @@ def _flat(c: Any, pulse: Sequence[Fraction]) -> bool:
 
 def spline_chord_points(seg: Segment, pulse: Sequence[Fraction]) -> list[tuple[Fraction, ...]]:
     """Exact curve points (start to end) whose chords are within FLATNESS pulses of the curve."""
-    from ..prover.spline import spline_curve
-
     curve = spline_curve(seg)
     out = [curve.points[0]]
     for piece in curve.pieces():
@@ -85,11 +84,8 @@ def spline_positions(seg: Segment, pulse: Sequence[Fraction], p0: Sequence[int])
     return np.array(steps, dtype=np.int64).reshape(len(steps), len(p0))
 
 
-def plan_spline(ctrl: Any, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...]) -> Any:
-    """The controller's motion plan of a spline (called by ``Controller._plan``)."""
-    from .simulator import plan_from_positions
-
-    pos = spline_positions(seg, ctrl.pulse, p0)
-    pts = spline_chord_points(seg, ctrl.pulse)
-    length = sum(math.dist([float(v) for v in a], [float(v) for v in b]) for a, b in zip(pts, pts[1:]))
-    return plan_from_positions(ctrl, seg, p0, p1, pos, length, "spline")
+def spline_walk(seg: Segment, pulse: Sequence[Fraction], p0: tuple[int, ...]) -> tuple[np.ndarray, float]:
+    """The pulse positions of a spline and the length of its chords (``Controller._plan``)."""
+    pos = spline_positions(seg, pulse, p0)
+    pts = spline_chord_points(seg, pulse)
+    return pos, sum(math.dist([float(v) for v in a], [float(v) for v in b]) for a, b in zip(pts, pts[1:]))

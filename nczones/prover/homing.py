@@ -1,6 +1,6 @@
 """Z3 proofs about homing with a near-zero dog, grid points and a grid shift.
 
-The model is the one :mod:`nczones.controller.homing` simulates, written as
+The model is the configuration's arithmetic (:mod:`nczones.homing`), written as
 linear integer/real arithmetic over exact rationals (search coordinate
 ``sigma = direction * x``, lengths in mm, pulse positions as integers):
 
@@ -15,17 +15,20 @@ linear integer/real arithmetic over exact rationals (search coordinate
 
 Each claim is proved by showing its negation unsatisfiable (universally
 quantified over the detector phase and the trip offsets), or refuted with a
-counterexample that the pulse simulation then reproduces.  Z3 runs with a
-fixed random seed and a timeout; a timeout gives ``unknown``, never ``proved``.
+counterexample, which the closed form of the same arithmetic
+(:func:`nczones.homing.origin_error_pulses`) confirms; the pulse simulation of
+the reference controller replays it independently (``nczones home --prove``,
+the differential tests).  Z3 runs with a fixed random seed and a timeout; a
+timeout gives ``unknown``, never ``proved``.
 
 >>> from fractions import Fraction
->>> from nczones.controller.homing import HomingConfig
+>>> from nczones.homing import HomingConfig
 >>> cfg = HomingConfig("X", -1, Fraction(3000), Fraction(300), Fraction(5), Fraction(20),
 ...                    Fraction(10), Fraction(3), switch_jitter=Fraction(1, 50), start=Fraction(40))
 >>> prove_exact_after_installation(cfg, Fraction(1, 1000)).status.value
 'proved'
 >>> cex = find_one_pitch_error(cfg, Fraction(1, 1000)).counterexample
->>> abs(cex.origin_error_pulses), cex.reproduced
+>>> abs(cex.origin_error_pulses), cex.confirmed
 (10000, True)
 """
 
@@ -40,16 +43,15 @@ from typing import Any
 
 import z3
 
-from ..controller.homing import (
+from ..errors import InvalidArgument
+from ..exact import format_decimal
+from ..homing import (
     HomingConfig,
     edge_to_grid_distance,
     exactness_margin,
-    installation_start,
-    simulate_homing,
+    origin_error_pulses,
     window_is_clear,
 )
-from ..errors import InvalidArgument
-from ..exact import format_decimal
 
 __all__ = [
     "ProofStatus",
@@ -78,24 +80,21 @@ class ProofStatus(enum.Enum):
 
 @dataclass(frozen=True, slots=True)
 class HomingCounterexample:
-    """A configuration where homing ends off machine zero, and its check by the simulation.
+    """A configuration where homing ends off machine zero.
 
     ``origin_error_pulses`` is what the Z3 model says (controller zero minus
-    machine zero, machine pulses); ``simulated_error_pulses`` is what the
-    pulse simulation gives for the same phase and trip offset.
+    machine zero, machine pulses); ``confirmed`` says that the closed form of
+    the grid arithmetic (:func:`nczones.homing.origin_error_pulses`) gives the
+    same error at the same phase and trip offset.
     """
 
     phase: Fraction
     trip_offset: Fraction
     install_trip_offset: Fraction
     origin_error_pulses: int
-    simulated_error_pulses: int | None
     grid_shift: Fraction
     phase_given: bool  # False: the configured phase and stored shift are used
-
-    @property
-    def reproduced(self) -> bool:
-        return self.simulated_error_pulses == self.origin_error_pulses
+    confirmed: bool
 
     def cli_args(self, axis: str) -> tuple[str, ...]:
         """The ``nczones home`` options that reproduce it."""
@@ -257,14 +256,7 @@ def prove_error_is_one_pitch(cfg: HomingConfig, pulse: Fraction) -> HomingProof:
     return _run("error-zero-or-one-pitch", statement, build)
 
 
-def _reproduce(cfg: HomingConfig, pulse: Fraction, start: Fraction | None, phase: Fraction,
-               t: Fraction, phase_given: bool) -> int | None:
-    run = simulate_homing(cfg, pulse, start=start if start is not None else installation_start(cfg, pulse),
-                          phase=None if not phase_given else phase, trip_offset=t)
-    return run.origin_error_pulses
-
-
-def find_one_pitch_error(cfg: HomingConfig, pulse: Fraction, *, start: Fraction | None = None) -> HomingProof:
+def find_one_pitch_error(cfg: HomingConfig, pulse: Fraction) -> HomingProof:
     """(2) Search a detector phase and trip offset for which homing ends one pitch off.
 
     The installation is measured at trip offset 0 (the nominal switch point).
@@ -272,7 +264,8 @@ def find_one_pitch_error(cfg: HomingConfig, pulse: Fraction, *, start: Fraction 
     that phase (there the stored value is used, see
     :func:`prove_configured_phase`).  Phase and trip offset are first sought
     on the pulse grid, then on finer grids, so the reproduction command reads
-    well.  The counterexample is replayed by the pulse simulation.
+    well.  The counterexample is confirmed by the closed form of the grid
+    arithmetic.
     """
     statement = ("for every detector phase (grid shift measured at installation with the switch tripping at "
                  "the dog edge) and every trip offset in the jitter window, homing ends exactly at machine zero")
@@ -281,7 +274,7 @@ def find_one_pitch_error(cfg: HomingConfig, pulse: Fraction, *, start: Fraction 
     result = None
     for step in (pulse, pulse / 10, pulse / 1000, None):
         result = _run("one-pitch-error", statement, lambda: _one_pitch_model(cfg, pulse, step),  # noqa: B023 - called within this iteration
-                      on_sat=lambda m: _one_pitch_cex(cfg, pulse, m, start))
+                      on_sat=lambda m: _one_pitch_cex(cfg, pulse, m))
         if result.status is not ProofStatus.PROVED:
             return result
     assert result is not None  # the loop ran
@@ -302,15 +295,15 @@ def _one_pitch_model(cfg: HomingConfig, pulse: Fraction, step: Fraction | None) 
     return m
 
 
-def _one_pitch_cex(cfg: HomingConfig, pulse: Fraction, m: _Model, start: Fraction | None) -> HomingCounterexample:
+def _one_pitch_cex(cfg: HomingConfig, pulse: Fraction, m: _Model) -> HomingCounterexample:
     model = m.solver.model()
     phase, t = _value(model, m.phase), _value(model, m.t)  # type: ignore[attr-defined]
     n = _value(model, z3.Int("n_home"))
     n0 = _value(model, z3.Int("n_install"))
     error = int(cfg.direction * (n - n0))
     shift = cfg.machine_zero - cfg.direction * n0 * pulse
-    simulated = _reproduce(cfg, pulse, start, phase, t, True)
-    return HomingCounterexample(phase, t, Fraction(0), error, simulated, shift, True)
+    confirmed = origin_error_pulses(cfg, pulse, phase, t) == error
+    return HomingCounterexample(phase, t, Fraction(0), error, shift, True, confirmed)
 
 
 def prove_margin_condition(cfg: HomingConfig, pulse: Fraction) -> HomingProof:
@@ -360,7 +353,7 @@ def prove_window_condition(cfg: HomingConfig, pulse: Fraction) -> tuple[HomingPr
     )
 
 
-def prove_configured_phase(cfg: HomingConfig, pulse: Fraction, *, start: Fraction | None = None) -> HomingProof:
+def prove_configured_phase(cfg: HomingConfig, pulse: Fraction) -> HomingProof:
     """At the configured phase with the stored (or installation-measured) grid shift: exact for every trip offset?"""
     stored = cfg.grid_shift is not None
     what = "the stored grid shift" if stored else "the grid shift measured at installation (trip offset 0)"
@@ -400,18 +393,18 @@ def prove_configured_phase(cfg: HomingConfig, pulse: Fraction, *, start: Fractio
                 break
         error = int(_value(model, z3.Int("err")))
         shift = cfg.grid_shift if stored and cfg.grid_shift is not None else _value(model, z3.Int("shift")) * pulse
-        simulated = _reproduce(cfg, pulse, start, cfg.detector_phase, t, False)
-        return HomingCounterexample(cfg.detector_phase, t, Fraction(0), error, simulated, shift, False)
+        confirmed = origin_error_pulses(cfg, pulse, cfg.detector_phase, t) == error
+        return HomingCounterexample(cfg.detector_phase, t, Fraction(0), error, shift, False, confirmed)
 
     return _run("configured-phase", statement, build, on_sat=cex)
 
 
-def prove_homing(cfg: HomingConfig, pulse: Fraction, *, start: Fraction | None = None) -> HomingProofReport:
+def prove_homing(cfg: HomingConfig, pulse: Fraction) -> HomingProofReport:
     """Every homing claim for one axis.
 
     Examples
     --------
-    >>> from nczones.controller.homing import HomingConfig
+    >>> from nczones.homing import HomingConfig
     >>> cfg = HomingConfig("X", -1, Fraction(3000), Fraction(300), Fraction(5), Fraction(20),
     ...                    Fraction(10), Fraction(3), switch_jitter=Fraction(1, 50), start=Fraction(40))
     >>> report = prove_homing(cfg, Fraction(1, 1000))
@@ -429,8 +422,8 @@ def prove_homing(cfg: HomingConfig, pulse: Fraction, *, start: Fraction | None =
         prove_margin_condition(cfg, pulse),
         sufficient,
         necessary,
-        find_one_pitch_error(cfg, pulse, start=start),
-        prove_configured_phase(cfg, pulse, start=start),
+        find_one_pitch_error(cfg, pulse),
+        prove_configured_phase(cfg, pulse),
     )
     return HomingProofReport(cfg.axis, proofs, edge_to_grid_distance(cfg), exactness_margin(cfg),
                              window_is_clear(cfg), f"z3 {z3.get_version_string()} (seed {SEED})")

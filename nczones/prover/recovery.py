@@ -1,6 +1,6 @@
 """Proving tool-break recovery: every break point, every recovery leg (DESIGN §6, issue 9).
 
-The recovery path (:func:`nczones.controller.recovery.recovery_legs`) depends
+The recovery path (:func:`nczones.recovery.recovery_legs`) depends
 on where the tool breaks.  The prover does not sample break points: the
 break parameter is a variable.
 
@@ -45,7 +45,9 @@ from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any
 
-from ..controller.recovery import (
+from ..machine import Machine, RapidMode
+from ..motion import Segment, SegmentKind, segments_of
+from ..recovery import (
     RecoveryVariant,
     ToolChangeConfig,
     is_cutting,
@@ -56,8 +58,6 @@ from ..controller.recovery import (
     tool_axis_index,
     tool_change_config,
 )
-from ..machine import Machine, RapidMode
-from ..motion import Segment, SegmentKind
 from ..zones import ZonePoint
 from .core import Prover
 from .geometry import arc_geom, rational_point_on_arc
@@ -291,9 +291,7 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
 
 
 def _segments(motion: Any) -> list[Segment]:
-    from ..controller.simulator import _segments_of
-
-    return list(_segments_of(motion))
+    return list(segments_of(motion))
 
 
 def _break_candidates(seg: Segment, ans: Any) -> list[Fraction]:

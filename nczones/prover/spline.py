@@ -31,23 +31,17 @@ from fractions import Fraction
 from typing import Any
 
 from ..motion import Segment
-from ..nurbs import Nurbs
+from ..nurbs import Nurbs, spline_curve
 from ..zones import ZonePoint
 from . import exact as ex
 from .result import Reason, Violation
 from .smt import add, mul, q
 
-__all__ = ["check_spline", "spline_curve", "SPLINE_PIECE_BUDGET"]
+__all__ = ["check_spline", "SPLINE_PIECE_BUDGET"]
 
 #: Pieces examined per spline segment before the verdict is unknown.
 SPLINE_PIECE_BUDGET = 400
 _MAX_DEPTH = 24
-
-
-def spline_curve(seg: Segment) -> Nurbs:
-    """The exact NURBS of a SPLINE segment (control points in machine coordinates)."""
-    e = dict(seg.extra)
-    return Nurbs(e["degree"], e["knots"], e["control"], e["weights"])  # type: ignore[arg-type]
 
 
 def _hull_query(prover: Any, seg: Segment, pts: Any) -> tuple[str, list[str]]:

@@ -172,7 +172,7 @@ def _developed_arc_float_points(seg: Segment, samples: int = 48) -> list[tuple[f
 
 def _spline_float_points(seg: Segment, per_span: int = 12) -> list[tuple[float, ...]]:
     """Float samples of a SPLINE's exact NURBS curve (exact points at rational parameters, then floats)."""
-    from ..prover.spline import spline_curve
+    from ..nurbs import spline_curve
 
     curve = spline_curve(seg)
     out = [tuple(to_float(c) for c in curve.points[0])]

@@ -10,7 +10,8 @@ import z3
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from nczones.controller.homing import HomingConfig, predict_latch, simulate_homing, window_is_clear
+from nczones.controller.homing import measure_grid_shift, simulate_homing
+from nczones.homing import HomingConfig, origin_error_pulses, predict_latch, window_is_clear
 from nczones.prover.homing import (
     ProofStatus,
     _Model,
@@ -56,7 +57,7 @@ def test_one_pitch_counterexample_is_reproduced_by_the_simulation(cfg):
     assert proof.status is ProofStatus.REFUTED
     c = proof.counterexample
     assert abs(c.origin_error_pulses) == cfg.grid_pitch / U
-    assert c.reproduced and c.simulated_error_pulses == c.origin_error_pulses
+    assert c.confirmed
     assert c.phase != cfg.detector_phase  # a stored shift belongs to the configured phase
     assert not window_is_clear(cfg, c.phase)
     # on the pulse grid, so the reproduction command reads as plain decimals
@@ -76,7 +77,7 @@ def test_configured_phase_inside_the_window_is_refuted():
     proof = prove_configured_phase(cfg, U)
     assert proof.status is ProofStatus.REFUTED
     c = proof.counterexample
-    assert not c.phase_given and c.reproduced and abs(c.origin_error_pulses) == 10000
+    assert not c.phase_given and c.confirmed and abs(c.origin_error_pulses) == 10000
     assert simulate_homing(cfg, U, trip_offset=c.trip_offset).origin_error_pulses == c.origin_error_pulses
     assert not prove_homing(cfg, U).ok
 
@@ -120,3 +121,16 @@ def test_z3_model_latches_where_the_simulation_latches(data):
     assert cfg.direction * sigma == expected == predict_latch(cfg, pulse, cfg.detector_phase, t)
     m.solver.add(n != sigma)
     assert m.check() == z3.unsat  # the latch is unique
+
+
+@settings(max_examples=40, derandomize=True, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_closed_form_origin_error_is_the_simulations(data):
+    """Differential: the shared grid arithmetic (what the proofs encode) against the controller's pulse loop."""
+    cfg, pulse, start = data.draw(homing_setups())
+    jitter = cfg.switch_jitter
+    t = data.draw(st.sampled_from((-jitter, Fraction(0), jitter, jitter / 3)))
+    t0 = data.draw(st.sampled_from((-jitter, Fraction(0), jitter)))
+    shift = measure_grid_shift(cfg, pulse, start=start, trip_offset=t0).grid_shift
+    run = simulate_homing(cfg, pulse, start=start, trip_offset=t, grid_shift=shift)
+    assert run.origin_error_pulses == origin_error_pulses(cfg, pulse, cfg.detector_phase, t, install_trip_offset=t0)

@@ -9,18 +9,15 @@ import pytest
 from hypothesis import HealthCheck, Phase, assume, given, settings
 from hypothesis import strategies as st
 
-from nczones.controller.homing import (
-    AlarmKind,
-    EventKind,
+from nczones.controller.homing import AlarmKind, EventKind, measure_grid_shift, simulate_homing
+from nczones.errors import InvalidArgument, MachineFileError
+from nczones.homing import (
     HomingConfig,
     edge_to_grid_distance,
     exactness_margin,
-    measure_grid_shift,
     predict_latch,
-    simulate_homing,
     window_is_clear,
 )
-from nczones.errors import InvalidArgument, MachineFileError
 
 from .strategies import homing_setups, trip_offsets
 

@@ -9,18 +9,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.controller import Controller, simulate
-from nczones.controller.recovery import (
-    RecoveryVariant,
-    motion_sequences,
-    record_pulses,
-    recovery_legs,
-    tool_change_config,
-)
+from nczones.controller.recovery import record_pulses
 from nczones.errors import MachineFileError
 from nczones.gcode import interpret, interpret_text
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify, verify_text
 from nczones.prover.recovery import verify_recovery
+from nczones.recovery import RecoveryVariant, motion_sequences, recovery_legs, tool_change_config
 
 ROOT = Path(__file__).resolve().parents[2]
 EX = ROOT / "specs" / "examples"

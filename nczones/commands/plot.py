@@ -39,7 +39,7 @@ def _plane(text: str | None, machine: Any) -> tuple[str, str] | None:
 
 def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
-    from . import _agg
+    from ..report import _agg
 
     machine = cli.with_dialect(load_machine(args.machine), args.dialect)
     plane = _plane(args.plane, machine)
@@ -50,14 +50,14 @@ def _run(args: argparse.Namespace) -> int:
     if suffix not in ("png", "svg", "pdf"):
         raise PlotError(Diagnostic("PL103", f"-o {args.output!r}: the file name must end in .png, .svg or .pdf",
                                    file="<command line>"))
-    from ..prover.command import program_source
+    from ..cli import program_source
 
     source = program_source(args.program)
     _agg()
     import matplotlib.pyplot as plt
 
-    from .figure import plot_program
-    from .progress import progress_for
+    from ..report.figure import plot_program
+    from ..report.progress import progress_for
 
     result = None
     if args.verify:

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from .. import cli
 from ..errors import Diagnostic, InputError
-from .project import Project
+from ..fleet.project import Project
 
 __all__ = ["register", "run_fleet_check", "run_fleet_status", "run_fleet_diff"]
 
@@ -32,9 +32,9 @@ def _store_path(project: Project, args: argparse.Namespace) -> Path:
 
 def run_fleet_check(args: argparse.Namespace) -> int:
     """``nczones fleet check``: verify every cell whose job is not in the store."""
-    from .check import CheckOptions, run_check
-    from .project import load_project
-    from .store import Store
+    from ..fleet.check import CheckOptions, run_check
+    from ..fleet.project import load_project
+    from ..fleet.store import Store
 
     if args.split_lines is not None and args.split_lines < 1:
         raise _usage("FL110", f"--split-lines {args.split_lines}: must be at least 1")
@@ -49,7 +49,7 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     cells = project.cells(machines=args.machine or None, programs=args.program or None)
     with Store(_store_path(project, args)) as store:
         summary = run_check(project, store, options, cells=cells, force=args.force)
-        from .status import status_text
+        from ..fleet.status import status_text
 
         run = store.latest_run()
         assert run is not None
@@ -62,7 +62,7 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     bad = [c for c in rows if c.verdict not in ("safe",) and c.status != "pending"]
     for c in sorted(bad, key=lambda c: ({"unsafe": 0, "error": 1, "unknown": 2}.get(c.verdict or "", 3),
                                         c.machine, c.program))[:args.list]:
-        from .status import _first
+        from ..fleet.status import _first
 
         print(f"{c.program} on {c.machine}: {c.verdict}" + (f": {_first(c)}" if _first(c) else ""))
     if len(bad) > args.list:
@@ -76,9 +76,9 @@ def run_fleet_check(args: argparse.Namespace) -> int:
 
 def run_fleet_status(args: argparse.Namespace) -> int:
     """``nczones fleet status``: the matrix of the latest run."""
-    from .project import load_project
-    from .status import status_json, status_text, write_status_html
-    from .store import Store
+    from ..fleet.project import load_project
+    from ..fleet.status import status_json, status_text, write_status_html
+    from ..fleet.store import Store
 
     project = load_project(args.project)
     if args.format == "html" and not args.output:
@@ -100,9 +100,9 @@ def run_fleet_status(args: argparse.Namespace) -> int:
 
 def run_fleet_diff(args: argparse.Namespace) -> int:
     """``nczones fleet diff``: what changed between the latest run and the one before."""
-    from .project import load_project
-    from .status import diff_json, diff_runs, diff_text
-    from .store import Store
+    from ..fleet.project import load_project
+    from ..fleet.status import diff_json, diff_runs, diff_text
+    from ..fleet.store import Store
 
     project = load_project(args.project)
     with Store(_store_path(project, args), create=False) as store:

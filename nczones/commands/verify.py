@@ -21,21 +21,19 @@ import argparse
 import os
 import sys
 from collections.abc import Sequence
-from fractions import Fraction
 from typing import TYPE_CHECKING, Any, TextIO
 
 from .. import cli
 from ..errors import Diagnostic, InputError
 from ..exact import parse_decimal
-from .limits import DEFAULT_BUDGET_S
+from ..prover.limits import DEFAULT_BUDGET_S
 
 if TYPE_CHECKING:
     from ..gcode.source import ProgramSource
     from ..machine import Machine
-    from .result import Result
+    from ..prover.result import Result
 
-__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "program_source",
-           "EXIT_INTERRUPTED"]
+__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "EXIT_INTERRUPTED"]
 
 #: Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it).
 EXIT_INTERRUPTED = 130
@@ -62,7 +60,7 @@ def _command_line_error(code: str, message: str) -> InputError:
 
 def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]:
     """The keyword arguments of :func:`nczones.prover.verify` from the command line (``VF1xx`` errors)."""
-    from . import parse_param
+    from ..prover import parse_param
 
     try:
         margin = parse_decimal(args.margin)
@@ -81,7 +79,7 @@ def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]
         "engine": args.engine,
         "max_violations": args.max_violations,
         "recovery": args.recovery,
-        "arc_tolerance": _arc_tolerance(args.arc_tolerance),
+        "arc_tolerance": cli.arc_tolerance(args.arc_tolerance),
         "max_iterations": args.max_iterations,
         "library": cli.library_folder(args.library),
         "block_delete": args.block_delete,
@@ -89,19 +87,12 @@ def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]
     }
 
 
-def program_source(name: str) -> ProgramSource:
-    """The program ``name`` names: ``-`` is standard input, anything else a file (``GC1xx`` errors)."""
-    from ..gcode.source import load_program, read_stdin
-
-    return (read_stdin() if name == "-" else load_program(name)).require_code()
-
-
 def verify_one(program: str, machine: Machine, options: dict[str, Any]) -> tuple[ProgramSource, Result]:
     """Read and verify one program (a path or ``-``) with a progress bar on a terminal: (source, result)."""
+    from ..prover import verify
     from ..report.progress import progress_for
-    from . import verify
 
-    source = program_source(program)
+    source = cli.program_source(program)
     bar = progress_for(sys.stderr, "verify")
     try:
         return source, verify(source, machine, progress=bar, **options)
@@ -156,7 +147,7 @@ def render_many(results: list, errors: list[tuple[int, str, InputError]], args: 
     if args.format == "json" and several:
         import json
 
-        from .render import to_json_dict
+        from ..prover.render import to_json_dict
 
         entries: list[tuple[int, dict[str, Any]]] = [(k, to_json_dict(r)) for k, _, r in results]
         entries += [(k, _error_entry(p, e)) for k, p, e in errors]
@@ -291,17 +282,3 @@ def _budget(text: str | None) -> float | None:
         raise _command_line_error("VF109", f"--budget {text!r}: expected a positive number of seconds (e.g. 60) "
                                            "or 'none'")
     return value
-
-
-def _arc_tolerance(text: str) -> Fraction | str:
-    """``--arc-tolerance``: "linuxcnc" or a non-negative decimal (mm)."""
-    if text == "linuxcnc":
-        return text
-    try:
-        q = parse_decimal(text)
-    except ValueError:  # InvalidArgument is a ValueError
-        q = None
-    if q is None or q < 0:
-        raise InputError(Diagnostic("VF104", f"--arc-tolerance {text!r}: expected a non-negative decimal number "
-                                             "of mm (e.g. 0.002) or 'linuxcnc'", file="<command line>"))
-    return q

@@ -116,10 +116,10 @@ def render_text(result: Any, program: str) -> str:
 
 
 def _run(args: argparse.Namespace) -> int:
+    from ..cli import program_source
+    from ..controller import Settings, simulate
     from ..gcode import interpret
     from ..machine import load_machine
-    from ..prover.command import program_source
-    from . import Settings, simulate
 
     machine = cli.with_dialect(load_machine(args.machine), args.dialect)
     library = cli.library_folder(args.library)
@@ -137,9 +137,7 @@ def _run(args: argparse.Namespace) -> int:
             break
     notes: list[str] = []
     if result is None:
-        from ..prover.command import _arc_tolerance
-
-        run = interpret(source, machine, arc_tolerance=_arc_tolerance(args.arc_tolerance),
+        run = interpret(source, machine, arc_tolerance=cli.arc_tolerance(args.arc_tolerance),
                         max_loop_iterations=_max_iterations(args.max_iterations), library=library)
         from ..report.progress import progress_for
 

@@ -1,5 +1,10 @@
 """``nczones home``: simulate homing or prove it exact (DESIGN §8).
 
+With ``--prove`` the Z3 proofs (:mod:`nczones.prover.homing`) run, and every
+counterexample they find is replayed by the controller's pulse simulation
+(:mod:`nczones.controller.homing`): two independent witnesses of one
+configuration (:mod:`nczones.homing`).
+
 Exit status: 0 homing ended exactly at machine zero (or, with ``--prove``,
 every claim holds for the machine as configured); 1 an alarm, an origin
 error, or a refuted (or unproved) claim; 2 bad input.
@@ -15,12 +20,13 @@ from fractions import Fraction
 from typing import Any
 
 from .. import cli
+from ..controller.homing import HomingRun, simulate_homing
 from ..errors import InvalidArgument
 from ..exact import format_decimal, seconds
+from ..homing import HomingConfig, homing_config, installation_start
 from ..machine import Machine, load_machine
-from .homing import HomingConfig, HomingRun, homing_config, simulate_homing
 
-__all__ = ["register", "parse_length"]
+__all__ = ["register", "parse_length", "replay_counterexample"]
 
 _FRACTION_RE = re.compile(r"\s*([+-]?\d+)\s*/\s*(\d+)\s*\Z")
 
@@ -39,6 +45,18 @@ def parse_length(text: str, option: str) -> Fraction:
     if DECIMAL_RE.match(text.strip()):
         return Fraction(text.strip())
     raise InvalidArgument(f"{option} {text!r} is not a length; write a decimal such as 3.25 or a fraction such as 13/4")
+
+
+def replay_counterexample(cfg: HomingConfig, pulse: Fraction, cex: Any, start: Fraction | None = None) -> int | None:
+    """The origin error (pulses) the pulse simulation gives for a proof's counterexample.
+
+    The run starts at ``start`` (default: clear of the dog); a counterexample
+    at another phase than the configured one has the grid shift measured
+    there at installation, as the proof assumes.
+    """
+    run = simulate_homing(cfg, pulse, start=start if start is not None else installation_start(cfg, pulse),
+                          phase=cex.phase if cex.phase_given else None, trip_offset=cex.trip_offset)
+    return run.origin_error_pulses
 
 
 def _start(machine: Machine, cfg: HomingConfig) -> Fraction:
@@ -144,17 +162,24 @@ def _prove(args: argparse.Namespace, machine: Machine, configs: dict[str, Homing
         if args.phase is not None:
             # a re-mounted detector: the stored grid shift is void, installation is measured again
             cfg = replace(cfg, detector_phase=parse_length(args.phase, "--phase"), grid_shift=None)
-        reports.append((cfg, prove_homing(cfg, machine.axis(name).pulse, start=_start(machine, cfg))))
+        reports.append((cfg, prove_homing(cfg, machine.axis(name).pulse)))
     ok = all(r.ok for _, r in reports)
+    simulated: dict[tuple[str, str], int | None] = {}
+    for cfg, r in reports:
+        for p in r.proofs:
+            if p.counterexample is not None:
+                simulated[r.axis, p.name] = replay_counterexample(cfg, machine.axis(r.axis).pulse, p.counterexample,
+                                                                  _start(machine, cfg))
 
     def cex_json(p, axis):
         c = p.counterexample
         if c is None:
             return None
+        sim = simulated[axis, p.name]
         return {"phase": format_decimal(c.phase), "trip_offset": format_decimal(c.trip_offset),
                 "install_trip_offset": format_decimal(c.install_trip_offset),
-                "origin_error_pulses": c.origin_error_pulses, "simulated_error_pulses": c.simulated_error_pulses,
-                "reproduced": c.reproduced, "grid_shift": format_decimal(c.grid_shift),
+                "origin_error_pulses": c.origin_error_pulses, "simulated_error_pulses": sim,
+                "reproduced": sim == c.origin_error_pulses, "grid_shift": format_decimal(c.grid_shift),
                 "reproduce": _reproduce_command(args, axis, c)}
 
     if args.format == "json":
@@ -187,10 +212,11 @@ def _prove(args: argparse.Namespace, machine: Machine, configs: dict[str, Homing
                 lines.append(f"      reason: {p.reason}")
             c = p.counterexample
             if c is not None:
+                sim = simulated[r.axis, p.name]
                 lines.append(f"      phase {format_decimal(c.phase)} mm, trip offset {format_decimal(c.trip_offset)} mm "
                              f"(installation at {format_decimal(c.install_trip_offset)}): origin error "
-                             f"{c.origin_error_pulses} pulses; the simulation gives {c.simulated_error_pulses} "
-                             f"({'reproduced' if c.reproduced else 'NOT reproduced'})")
+                             f"{c.origin_error_pulses} pulses; the simulation gives {sim} "
+                             f"({'reproduced' if sim == c.origin_error_pulses else 'NOT reproduced'})")
                 lines.append(f"      reproduce: {_reproduce_command(args, r.axis, c)}")
         verdict = ("homing is proved exact at the configured phase" if r.ok
                    else "homing is NOT proved exact at the configured phase")

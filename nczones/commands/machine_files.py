@@ -16,9 +16,9 @@ from pathlib import Path
 
 from .. import cli
 from ..errors import Diagnostic, InvalidArgument
-from . import KINDS, ImportResult, import_machine
-from .export import EXPORT_KINDS
-from .render import KIND_LABELS
+from ..imports import KINDS, ImportResult, import_machine
+from ..imports.export import EXPORT_KINDS
+from ..imports.render import KIND_LABELS
 
 __all__ = ["register_import", "register_export", "summary"]
 
@@ -95,8 +95,8 @@ cli.REGISTRARS.append(register_import)
 
 
 def _run_export(args: argparse.Namespace) -> int:
+    from ..imports.export import export_zones
     from ..machine import load_machine
-    from .export import export_zones
 
     machine = load_machine(args.machine_file)
     result = export_zones(machine, args.kind, units=args.units, increment=args.increment,
