@@ -78,7 +78,7 @@ def executed_lines(text: str) -> int:
     from nczones.gcode import program
     from nczones.gcode.expr import Parameters
 
-    class Counting(program._StringSource):
+    class Counting(program.StringSource):
         __slots__ = ("count",)
 
         def line_at(self, pos):
@@ -88,7 +88,7 @@ def executed_lines(text: str) -> int:
 
     src = Counting(text)
     src.count = 0
-    runner = program._Runner(src, "<bench>", Parameters(), False, program.DEFAULT_MAX_LOOP_ITERATIONS, 100)
+    runner = program.Runner(src, "<bench>", Parameters(), False, program.DEFAULT_MAX_LOOP_ITERATIONS, 100)
     runner.cache = _NoCache()
     sum(1 for _ in runner.run())
     return src.count

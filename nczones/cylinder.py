@@ -79,7 +79,7 @@ def _down(x: Fraction) -> Fraction:
     return Fraction((x.numerator * _SCALE) // x.denominator, _SCALE)
 
 
-def _up(x: Fraction) -> Fraction:
+def round_up_scaled(x: Fraction) -> Fraction:
     if x.denominator <= _SCALE:
         return x
     return Fraction(-((-x.numerator * _SCALE) // x.denominator), _SCALE)
@@ -110,7 +110,7 @@ class Interval:
 
     def __add__(self, o: "Interval | Fraction | int") -> "Interval":
         o = Interval._coerce(o)
-        return Interval(_down(self.lo + o.lo), _up(self.hi + o.hi))
+        return Interval(_down(self.lo + o.lo), round_up_scaled(self.hi + o.hi))
 
     __radd__ = __add__
 
@@ -126,7 +126,7 @@ class Interval:
     def __mul__(self, o: "Interval | Fraction | int") -> "Interval":
         o = Interval._coerce(o)
         ps = (self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi)
-        return Interval(_down(min(ps)), _up(max(ps)))
+        return Interval(_down(min(ps)), round_up_scaled(max(ps)))
 
     __rmul__ = __mul__
 
@@ -134,17 +134,17 @@ class Interval:
         o = Interval._coerce(o)
         if o.lo <= 0 <= o.hi:
             raise ZeroDivisionError("interval division by an interval containing 0")
-        return self * Interval(_down(1 / o.hi), _up(1 / o.lo))
+        return self * Interval(_down(1 / o.hi), round_up_scaled(1 / o.lo))
 
     def __rtruediv__(self, o: "Interval | Fraction | int") -> "Interval":
         return Interval._coerce(o) / self
 
     def sqr(self) -> "Interval":
         if self.lo >= 0:
-            return Interval(_down(self.lo * self.lo), _up(self.hi * self.hi))
+            return Interval(_down(self.lo * self.lo), round_up_scaled(self.hi * self.hi))
         if self.hi <= 0:
-            return Interval(_down(self.hi * self.hi), _up(self.lo * self.lo))
-        return Interval(F0, _up(max(self.lo * self.lo, self.hi * self.hi)))
+            return Interval(_down(self.hi * self.hi), round_up_scaled(self.lo * self.lo))
+        return Interval(F0, round_up_scaled(max(self.lo * self.lo, self.hi * self.hi)))
 
     def sqrt(self) -> "Interval":
         """Square root of the non-negative part (negative lower ends are clipped to 0)."""
@@ -195,7 +195,7 @@ def _atan_small(x: Fraction) -> Interval:
         nxt = p / (2 * k + 1)
         if nxt < bound:
             break
-    return Interval(_down(s - nxt), _up(s + nxt))
+    return Interval(_down(s - nxt), round_up_scaled(s + nxt))
 
 
 @lru_cache(maxsize=1)
@@ -235,7 +235,7 @@ def _asin(iv: Interval) -> Interval:
         if x >= 1:
             return half_pi.hi if upper else half_pi.lo
         c = Interval.of(1 - x * x).sqrt()
-        ratio = Interval(_down(x / c.hi), _up(x / c.lo)) if c.lo > 0 else None
+        ratio = Interval(_down(x / c.hi), round_up_scaled(x / c.lo)) if c.lo > 0 else None
         if ratio is None:
             return half_pi.hi if upper else F0
         a = _atan(ratio)
@@ -267,7 +267,7 @@ def _sin_cos_point(x: Fraction) -> tuple[Interval, Interval]:
         if n > ax and abs(term) * ax / (n + 1) < bound:
             break
     slack = abs(term) * ax / (n + 1) + Fraction((n + 2) * 4096, _SCALE)  # e**8 < 4096: rounding carried by later terms
-    return Interval(_down(s - slack), _up(s + slack)), Interval(_down(c - slack), _up(c + slack))
+    return Interval(_down(s - slack), round_up_scaled(s + slack)), Interval(_down(c - slack), round_up_scaled(c + slack))
 
 
 def _sin_cos(iv: Interval) -> tuple[Interval, Interval]:
@@ -354,7 +354,7 @@ class DevelopedArc:
         za, sa, _ = self.point(fa)
         zb, sb, _ = self.point(fb)
         alpha = self.sweep.hi * (fb - fa)
-        h = _up(self.rho.hi * alpha * alpha / 8)
+        h = round_up_scaled(self.rho.hi * alpha * alpha / 8)
         z = za.hull(zb).widen(h)
         s = sa.hull(sb).widen(h)
         return z, s, self.c0 + s / self.k

@@ -48,7 +48,7 @@ from typing import Any
 
 from .errors import Diagnostic, InvalidArgument, MachineFileError, SourceSpan
 from .exact import format_decimal
-from .machine import SECTION_PARSERS, Machine, _number, _written
+from .machine import SECTION_PARSERS, Machine, as_written, read_number
 
 __all__ = [
     "HomingConfig",
@@ -124,7 +124,7 @@ def _direction(rd: Any, raw: Any, label: str, span: SourceSpan | None) -> int | 
         return key
     if isinstance(key, str) and key in _DIRECTIONS:
         return _DIRECTIONS[key]
-    rd.report("ZN143", f"{label} direction: {_written(raw)} is not a direction; use \"negative\" or "
+    rd.report("ZN143", f"{label} direction: {as_written(raw)} is not a direction; use \"negative\" or "
               "\"positive\" (or -1 / +1), the sign of the search motion towards the dog", span)
     return None
 
@@ -160,7 +160,7 @@ def _axis_section(rd: Any, axis: str, table: Mapping[str, Any]) -> HomingConfig 
     for key in HOMING_KEYS[1:]:
         if key not in table:
             continue
-        q = _number(rd, table[key], f"{label} {key}", span(key))
+        q = read_number(rd, table[key], f"{label} {key}", span(key))
         if q is None:
             ok = False
             continue
@@ -232,7 +232,7 @@ def parse_homing_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[st
     out: dict[str, HomingConfig] = {}
     header = rd.loc.section("homing")
     if not isinstance(raw, Mapping):
-        rd.report("ZN141", f"[homing]: expected one table per axis such as [homing.X], got {_written(raw)}",
+        rd.report("ZN141", f"[homing]: expected one table per axis such as [homing.X], got {as_written(raw)}",
                   rd.loc.key("homing", None))
         return MappingProxyType(out)
     for axis, table in raw.items():
@@ -241,7 +241,7 @@ def parse_homing_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[st
                 msg = (f"[homing] {axis}: {axis!r} is a per-axis key; put it under [homing.<axis>] "
                        f"(such as [homing.X]), not directly under [homing]")
             else:
-                msg = f"[homing] {axis}: expected a table [homing.{axis}], got {_written(table)}"
+                msg = f"[homing] {axis}: expected a table [homing.{axis}], got {as_written(table)}"
             rd.report("ZN141", msg, rd.loc.key(axis, header))
             continue
         if axis not in axes:

@@ -65,7 +65,7 @@ MACHINE_TYPES = ("mill", "lathe")
 #: Fanuc lathe G code systems (``[fanuc] gcode_system``): A (U/W incremental, G50 coordinate setting, G90/G92/G94
 #: cycles) or B (G90/G91 distance modes, G92 coordinate setting, G77/G78/G79 cycles).
 GCODE_SYSTEMS = ("A", "B")
-_MODAL_CHOICES = {
+MODAL_CHOICES = {
     "distance": ("G90", "G91"),
     "units": ("G20", "G21"),
     "plane": ("G17", "G18", "G19"),
@@ -416,10 +416,10 @@ class _Reader:
         return any(d.severity is Severity.ERROR for d in self.diagnostics)
 
 
-def _written(value: Any) -> str:
+def as_written(value: Any) -> str:
     """The value as the user wrote it, in TOML syntax (approximately: TOML loses formatting).
 
-    >>> _written(["0", decimal.Decimal("1.50"), 3, True, {"X": "1"}])
+    >>> as_written(["0", decimal.Decimal("1.50"), 3, True, {"X": "1"}])
     '["0", 1.50, 3, true, { X = "1" }]'
     """
     if isinstance(value, str):
@@ -433,11 +433,11 @@ def _written(value: Any) -> str:
             return "-inf" if value < 0 else "inf"
         return str(value)
     if isinstance(value, list):
-        return "[" + ", ".join(_written(v) for v in value) + "]"
+        return "[" + ", ".join(as_written(v) for v in value) + "]"
     if isinstance(value, Mapping):
         if not value:
             return "{}"
-        return "{ " + ", ".join(f"{k} = {_written(v)}" for k, v in value.items()) + " }"
+        return "{ " + ", ".join(f"{k} = {as_written(v)}" for k, v in value.items()) + " }"
     if value is None:
         return "nothing"
     return str(value)
@@ -449,7 +449,7 @@ _MAX_ADJUSTED_EXPONENT = 9
 _MAX_PLACES = 30
 
 
-def _number(
+def read_number(
     rd: _Reader,
     value: Any,
     what: str,
@@ -472,18 +472,18 @@ def _number(
                 return q
             return _in_range(rd, q, value, what, span, positive, nonnegative, limit)
     if isinstance(value, bool) or not isinstance(value, (str, int, decimal.Decimal)):
-        rd.report("ZN103", f"{what}: {_written(value)} is not a number; write a decimal such as \"12.5\"", span)
+        rd.report("ZN103", f"{what}: {as_written(value)} is not a number; write a decimal such as \"12.5\"", span)
         return None
     if isinstance(value, decimal.Decimal) and not value.is_finite():
-        rd.report("ZN104", f"{what}: {_written(value)} is not finite; write a finite decimal", span)
+        rd.report("ZN104", f"{what}: {as_written(value)} is not finite; write a finite decimal", span)
         return None
     if isinstance(value, str):
         text = value.strip()
         if text.lower().lstrip("+-") in ("inf", "infinity", "nan"):
-            rd.report("ZN104", f"{what}: {_written(value)} is not finite; write a finite decimal", span)
+            rd.report("ZN104", f"{what}: {as_written(value)} is not finite; write a finite decimal", span)
             return None
         if not DECIMAL_RE.match(text):
-            rd.report("ZN103", f"{what}: {_written(value)} is not a decimal; write digits with an optional sign and point, such as \"-12.5\"", span)
+            rd.report("ZN103", f"{what}: {as_written(value)} is not a decimal; write digits with an optional sign and point, such as \"-12.5\"", span)
             return None
         value_d = decimal.Decimal(text)
     elif isinstance(value, int):
@@ -494,10 +494,10 @@ def _number(
         sign, digits, exponent = value_d.as_tuple()
         trailing = len(digits) - len("".join(map(str, digits)).rstrip("0"))
         if any(digits) and value_d.adjusted() > _MAX_ADJUSTED_EXPONENT:
-            rd.report("ZN105", f"{what}: {_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
+            rd.report("ZN105", f"{what}: {as_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
             return None
         if any(digits) and isinstance(exponent, int) and exponent + trailing < -_MAX_PLACES:
-            rd.report("ZN105", f"{what}: {_written(value)} has more than {_MAX_PLACES} digits after the decimal point", span)
+            rd.report("ZN105", f"{what}: {as_written(value)} has more than {_MAX_PLACES} digits after the decimal point", span)
             return None
         q = Fraction(value_d)
     else:
@@ -514,13 +514,13 @@ def _in_range(rd: _Reader, q: Fraction, value: Any, what: str,
               span: SourceSpan | Callable[[], SourceSpan | None] | None,
               positive: bool, nonnegative: bool, limit: Fraction) -> Fraction | None:
     if abs(q) > limit:
-        rd.report("ZN105", f"{what}: {_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
+        rd.report("ZN105", f"{what}: {as_written(value)} is out of range; allowed magnitude is at most {format_decimal(limit)}", span)
         return None
     if positive and q <= 0:
-        rd.report("ZN106", f"{what}: {_written(value)} must be greater than 0", span)
+        rd.report("ZN106", f"{what}: {as_written(value)} must be greater than 0", span)
         return None
     if nonnegative and q < 0:
-        rd.report("ZN106", f"{what}: {_written(value)} must not be negative", span)
+        rd.report("ZN106", f"{what}: {as_written(value)} must not be negative", span)
         return None
     return q
 
@@ -535,11 +535,11 @@ def _check_keys(
     for key in table:
         if key not in allowed:
             close = difflib.get_close_matches(key, allowed, n=1)
-            hint = f"; did you mean {_written(close[0])}?" if close else f"; allowed keys: {', '.join(allowed)}"
+            hint = f"; did you mean {as_written(close[0])}?" if close else f"; allowed keys: {', '.join(allowed)}"
             span = rd.loc.key(key, start)
             if span is None and start is None:
                 span = rd.loc.header(rd.loc.section(key))
-            rd.report("ZN101", f"{where}: unknown key {_written(key)}{hint}", span)
+            rd.report("ZN101", f"{where}: unknown key {as_written(key)}{hint}", span)
 
 
 def _register_table(rd: _Reader, data: Mapping[str, Any], section: str, prefix: str, what: str, example: str) -> dict[int, Fraction]:
@@ -548,16 +548,16 @@ def _register_table(rd: _Reader, data: Mapping[str, Any], section: str, prefix: 
     raw = data.get(section, {})
     line = rd.loc.section(section)
     if not isinstance(raw, Mapping):
-        rd.report("ZN103", f"[{section}]: expected a table such as {example}, got {_written(raw)}", None)
+        rd.report("ZN103", f"[{section}]: expected a table such as {example}, got {as_written(raw)}", None)
         return out
     for key, value in raw.items():
         m = re.fullmatch(prefix + r"(\d{1,4})", key)
         span = rd.loc.key(key, line)
         if not m:
-            rd.report("ZN101", f"[{section}]: {_written(key)} is not a {what}; write {prefix} followed by its "
+            rd.report("ZN101", f"[{section}]: {as_written(key)} is not a {what}; write {prefix} followed by its "
                       f"number, such as {prefix}1", span)
             continue
-        q = _number(rd, value, f"[{section}] {key}", span)
+        q = read_number(rd, value, f"[{section}] {key}", span)
         if q is not None:
             out[int(m.group(1))] = q
     return out
@@ -584,7 +584,7 @@ def _per_axis(
     if own_span is None and inline is not None:
         own_span = rd.loc.key(*inline)
     if not isinstance(value, Mapping):
-        rd.report("ZN103", f"{what}: expected a table of axis values such as {{ X = \"0\" }}, got {_written(value)}", own_span)
+        rd.report("ZN103", f"{what}: expected a table of axis values such as {{ X = \"0\" }}, got {as_written(value)}", own_span)
         return out
     for axis, raw in value.items():
         if header_line is None and inline is not None:
@@ -592,9 +592,9 @@ def _per_axis(
         else:
             span = rd.loc.key(axis, header_line)
         if axis not in axes:
-            rd.report("ZN110", f"{what}: unknown axis {_written(axis)}; the machine's axes are {', '.join(axes)}", span)
+            rd.report("ZN110", f"{what}: unknown axis {as_written(axis)}; the machine's axes are {', '.join(axes)}", span)
             continue
-        q = _number(rd, raw, f"{what}.{axis}", span, **number_opts)
+        q = read_number(rd, raw, f"{what}.{axis}", span, **number_opts)
         if q is not None:
             out[axis] = q
     if required:
@@ -722,14 +722,14 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     raw_axes = mt.get("axes")
     axes: tuple[str, ...] = ()
     if not isinstance(raw_axes, list) or not raw_axes:
-        rd.report("ZN102", f"[machine] axes: expected a non-empty list of axis names such as [\"X\", \"Z\"], got {_written(raw_axes)}", rd.loc.key("axes", mline))
+        rd.report("ZN102", f"[machine] axes: expected a non-empty list of axis names such as [\"X\", \"Z\"], got {as_written(raw_axes)}", rd.loc.key("axes", mline))
         return None
     seen: set[str] = set()
     for a in raw_axes:
         if not isinstance(a, str) or a not in AXIS_NAMES:
-            rd.report("ZN110", f"[machine] axes: unknown axis {_written(a)}; allowed: {', '.join(AXIS_NAMES)}", rd.loc.key("axes", mline))
+            rd.report("ZN110", f"[machine] axes: unknown axis {as_written(a)}; allowed: {', '.join(AXIS_NAMES)}", rd.loc.key("axes", mline))
         elif a in seen:
-            rd.report("ZN111", f"[machine] axes: axis {_written(a)} is listed twice", rd.loc.key("axes", mline))
+            rd.report("ZN111", f"[machine] axes: axis {as_written(a)} is listed twice", rd.loc.key("axes", mline))
         else:
             seen.add(a)
             axes += (a,)
@@ -738,11 +738,11 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
 
     name = mt.get("name", "machine")
     if not isinstance(name, str):
-        rd.report("ZN103", f"[machine] name: expected text, got {_written(name)}", rd.loc.key("name", mline))
+        rd.report("ZN103", f"[machine] name: expected text, got {as_written(name)}", rd.loc.key("name", mline))
         name = "machine"
     units = mt.get("units", "mm")
     if units not in ("mm",):
-        rd.report("ZN107", f"[machine] units: {_written(units)} is not supported; machine files are in \"mm\" (programs may still use G20 inches)", rd.loc.key("units", mline))
+        rd.report("ZN107", f"[machine] units: {as_written(units)} is not supported; machine files are in \"mm\" (programs may still use G20 inches)", rd.loc.key("units", mline))
 
     # pulse: one value or per axis
     raw_pulse = mt.get("pulse", "0.001")
@@ -750,7 +750,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     if isinstance(raw_pulse, Mapping):
         pulse = _per_axis(rd, raw_pulse, axes, "[machine] pulse", rd.loc.section("machine.pulse"), required=True, inline=("pulse", mline), positive=True, limit=Fraction(1))
     else:
-        q = _number(rd, raw_pulse, "[machine] pulse", rd.loc.key("pulse", mline), positive=True, limit=Fraction(1))
+        q = read_number(rd, raw_pulse, "[machine] pulse", rd.loc.key("pulse", mline), positive=True, limit=Fraction(1))
         if q is not None:
             pulse = {a: q for a in axes}
 
@@ -762,7 +762,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     elif isinstance(raw_max_feed, Mapping):
         max_feed = _per_axis(rd, raw_max_feed, axes, "[machine.max_feed]", rd.loc.section("machine.max_feed"), required=True, inline=("max_feed", mline), positive=True)
     else:
-        q = _number(rd, raw_max_feed, "[machine] max_feed", rd.loc.key("max_feed", mline), positive=True)
+        q = read_number(rd, raw_max_feed, "[machine] max_feed", rd.loc.key("max_feed", mline), positive=True)
         if q is not None:
             max_feed = {a: q for a in axes}
 
@@ -770,9 +770,9 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     try:
         rapid_mode = RapidMode(rapid_mode_raw)
     except ValueError:
-        rd.report("ZN107", f"[machine] rapid_mode: {_written(rapid_mode_raw)} is not allowed; use \"linear\" or \"dogleg\"", rd.loc.key("rapid_mode", mline))
+        rd.report("ZN107", f"[machine] rapid_mode: {as_written(rapid_mode_raw)} is not allowed; use \"linear\" or \"dogleg\"", rd.loc.key("rapid_mode", mline))
         rapid_mode = RapidMode.LINEAR
-    period = _number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", rd.loc.key("monitor_period_ms", mline), positive=True, limit=Fraction(1000))
+    period = read_number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", rd.loc.key("monitor_period_ms", mline), positive=True, limit=Fraction(1000))
 
     reference = _per_axis(rd, mt.get("reference", {}), axes, "[machine.reference]", rd.loc.section("machine.reference"), required=True, inline=("reference", mline))
     start_raw = mt.get("start")
@@ -782,13 +782,13 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
 
     tool_axis = mt.get("tool_axis", "Z" if "Z" in axes else None)
     if tool_axis is not None and tool_axis not in axes:
-        rd.report("ZN110", f"[machine] tool_axis: {_written(tool_axis)} is not one of the machine's axes ({', '.join(axes)})", rd.loc.key("tool_axis", mline))
+        rd.report("ZN110", f"[machine] tool_axis: {as_written(tool_axis)} is not one of the machine's axes ({', '.join(axes)})", rd.loc.key("tool_axis", mline))
         tool_axis = None
 
     modal = _modal(rd, mt.get("modal"), mline)
     machine_type = mt.get("type", "mill")
     if machine_type not in MACHINE_TYPES:
-        rd.report("ZN114", f"[machine] type: {_written(machine_type)} is not allowed; use \"mill\" or \"lathe\"",
+        rd.report("ZN114", f"[machine] type: {as_written(machine_type)} is not allowed; use \"mill\" or \"lathe\"",
                   rd.loc.key("type", mline))
         machine_type = None  # unknown: the checks that depend on it are left out
     diameter_axes = _diameter_axes(rd, mt.get("diameter_axes", []), axes, mline)
@@ -797,7 +797,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         modal = tuple("G18" if c == "G17" else c for c in modal)  # a lathe starts in the ZX plane
     dialect = mt.get("dialect", "linuxcnc")
     if dialect not in DIALECTS:
-        rd.report("ZN114", f"[machine] dialect: {_written(dialect)} is not allowed; use \"linuxcnc\" or \"fanuc\"",
+        rd.report("ZN114", f"[machine] dialect: {as_written(dialect)} is not allowed; use \"linuxcnc\" or \"fanuc\"",
                   rd.loc.key("dialect", mline))
         dialect = None  # unknown: the checks that depend on it are left out
 
@@ -806,17 +806,17 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     raw_offsets = data.get("offsets", {})
     oline = rd.loc.section("offsets")
     if not isinstance(raw_offsets, Mapping):
-        rd.report("ZN103", f"[offsets]: expected a table, got {_written(raw_offsets)}", None)
+        rd.report("ZN103", f"[offsets]: expected a table, got {as_written(raw_offsets)}", None)
         raw_offsets = {}
     for key, value in raw_offsets.items():
         oname = key.replace(" ", "").upper() if isinstance(key, str) else key
         if oname not in WORK_OFFSETS and oname not in FANUC_OFFSETS:
             close = difflib.get_close_matches(key, WORK_OFFSETS + FANUC_OFFSETS, n=1)
-            hint = f"; did you mean {_written(close[0])}?" if close else f"; allowed: {', '.join(WORK_OFFSETS)}"
-            rd.report("ZN101", f"[offsets]: unknown work offset {_written(key)}{hint}", rd.loc.key(key, oline))
+            hint = f"; did you mean {as_written(close[0])}?" if close else f"; allowed: {', '.join(WORK_OFFSETS)}"
+            rd.report("ZN101", f"[offsets]: unknown work offset {as_written(key)}{hint}", rd.loc.key(key, oline))
             continue
         if oname in FANUC_OFFSETS and dialect == "linuxcnc":
-            rd.report("ZN101", f"[offsets]: work offset {_written(key)} exists only on Fanuc controls; valid in the "
+            rd.report("ZN101", f"[offsets]: work offset {as_written(key)} exists only on Fanuc controls; valid in the "
                       "fanuc dialect: set dialect = \"fanuc\" in [machine]", rd.loc.key(key, oline))
             continue
         vals = _per_axis(rd, value, axes, f"[offsets] {key}", rd.loc.section(f"offsets.{key}"), required=False, inline=(key, oline))
@@ -827,13 +827,13 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     comp_raw = mt.get("cutter_compensation", "none")
     comp = comp_raw if comp_raw in CUTTER_COMPENSATION_MODES else "none"
     if comp_raw not in CUTTER_COMPENSATION_MODES:
-        rd.report("ZN114", f"[machine] cutter_compensation: {_written(comp_raw)} is not allowed; use \"none\" "
+        rd.report("ZN114", f"[machine] cutter_compensation: {as_written(comp_raw)} is not allowed; use \"none\" "
                   "(G41/G42 make the result unknown) or \"linuxcnc\" (modelled as LinuxCNC does it)",
                   rd.loc.key("cutter_compensation", mline))
     tool_diameters = _register_table(rd, data, "tool_diameters", "T", "tool number", 'T1 = "6"')
     block_delete = mt.get("block_delete", "both")
     if block_delete not in BLOCK_DELETE_MODES:
-        rd.report("ZN114", f"[machine] block_delete: {_written(block_delete)} is not allowed; use \"both\" (verify "
+        rd.report("ZN114", f"[machine] block_delete: {as_written(block_delete)} is not allowed; use \"both\" (verify "
                   "the program with the block-delete switch off and on), \"off\" (lines starting with / are "
                   "executed) or \"on\" (they are skipped)", rd.loc.key("block_delete", mline))
         block_delete = "both"
@@ -879,7 +879,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         rd.report(
             "ZN130",
             f"{where} is outside the allowed set (it violates zone "
-            f"{', '.join(_written(z.name) for z in bad)}); no program can be verified from there",
+            f"{', '.join(as_written(z.name) for z in bad)}); no program can be verified from there",
             rd.loc.header(rd.loc.section("machine.start")) or rd.loc.key("start", mline)
             if start_raw is not None
             else rd.loc.header(rd.loc.section("machine.reference")) or rd.loc.key("reference", mline),
@@ -891,7 +891,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
             rd.report(
                 "ZN131",
                 f"[machine.reference]: the reference position {_fmt_point(axes, ref_t)} is outside the allowed set "
-                f"(it violates zone {', '.join(_written(z.name) for z in bad_ref)}); every move to it (G28, homing) will be reported unsafe",
+                f"(it violates zone {', '.join(as_written(z.name) for z in bad_ref)}); every move to it (G28, homing) will be reported unsafe",
                 rd.loc.header(rd.loc.section("machine.reference")) or rd.loc.key("reference", mline),
                 Severity.WARNING,
             )
@@ -923,15 +923,15 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
         rd.report("ZN115", f"[{given[0]}] is read only in the fanuc dialect; set dialect = \"fanuc\" in [machine] "
                   "(or pass --dialect fanuc)", rd.loc.header(rd.loc.section(given[0])), Severity.WARNING)
     if not isinstance(raw, Mapping):
-        rd.report("ZN103", f"[fanuc]: expected a table, got {_written(raw)}", rd.loc.header(fline))
+        rd.report("ZN103", f"[fanuc]: expected a table, got {as_written(raw)}", rd.loc.header(fline))
         raw = {}
     _check_keys(rd, raw, _FANUC_KEYS, "[fanuc]", fline)
     for key, choices in _CHOICES.items():
         if key in raw:
             value = raw[key]
             if value not in choices:
-                rd.report("ZN114", f"[fanuc] {key}: {_written(value)} is not allowed; use "
-                          + " or ".join(_written(c) for c in choices), rd.loc.key(key, fline))
+                rd.report("ZN114", f"[fanuc] {key}: {as_written(value)} is not allowed; use "
+                          + " or ".join(as_written(c) for c in choices), rd.loc.key(key, fline))
             else:
                 kw[key] = value
     lathe_given = [k for k in _FANUC_LATHE_KEYS if k in raw]
@@ -941,13 +941,13 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
     for key in ("g73_retract", "g83_clearance", "g71_retract", "g73_relief_x", "g73_relief_z", "g74_retract",
                 "g76_finish_allowance"):
         if key in raw:
-            q = _number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=key not in (
+            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=key not in (
                 "g73_relief_x", "g73_relief_z"))
             if q is not None:
                 kw[key] = q
     for key in ("g71_depth", "g76_min_depth", "thread_chamfer"):
         if key in raw:
-            q = _number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
             if q is not None:
                 if key == "g71_depth" and q == 0:
                     rd.report("ZN106", f"[fanuc] {key}: \"0\" must be greater than 0", rd.loc.key(key, fline))
@@ -955,10 +955,10 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
                     kw[key] = q
     for key, top in (("thread_chamfer_angle", 90), ("g76_tool_angle", 120)):
         if key in raw:
-            q = _number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
             if q is not None:
                 if q > top:
-                    rd.report("ZN105", f"[fanuc] {key}: {_written(raw[key])} is out of range; allowed 0 to {top} "
+                    rd.report("ZN105", f"[fanuc] {key}: {as_written(raw[key])} is out of range; allowed 0 to {top} "
                               "degrees", rd.loc.key(key, fline))
                 else:
                     kw[key] = q
@@ -966,25 +966,25 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
         if key in raw:
             value = raw[key]
             if not isinstance(value, int) or isinstance(value, bool) or not 1 <= value <= top:
-                rd.report("ZN103", f"[fanuc] {key}: expected an integer 1 to {top}, got {_written(value)}",
+                rd.report("ZN103", f"[fanuc] {key}: expected an integer 1 to {top}, got {as_written(value)}",
                           rd.loc.key(key, fline))
             else:
                 kw[key] = value
     if "roughing_final_pass" in raw:
         if not isinstance(raw["roughing_final_pass"], bool):
             rd.report("ZN103", f"[fanuc] roughing_final_pass: expected true or false, got "
-                      f"{_written(raw['roughing_final_pass'])}", rd.loc.key("roughing_final_pass", fline))
+                      f"{as_written(raw['roughing_final_pass'])}", rd.loc.key("roughing_final_pass", fline))
         else:
             kw["roughing_final_pass"] = raw["roughing_final_pass"]
     if "scaling_unit" in raw:
-        q = _number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", rd.loc.key("scaling_unit", fline), positive=True,
+        q = read_number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", rd.loc.key("scaling_unit", fline), positive=True,
                     limit=Fraction(1))
         if q is not None:
             kw["scaling_unit"] = q
     for key in ("rotation_incremental", "atan_signed"):
         if key in raw:
             if not isinstance(raw[key], bool):
-                rd.report("ZN103", f"[fanuc] {key}: expected true or false, got {_written(raw[key])}",
+                rd.report("ZN103", f"[fanuc] {key}: expected true or false, got {as_written(raw[key])}",
                           rd.loc.key(key, fline))
             else:
                 kw[key] = raw[key]
@@ -993,7 +993,7 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
         if not isinstance(value, list) or not all(isinstance(v, int) and not isinstance(v, bool) and 0 <= v <= 9999
                                                   for v in value):
             rd.report("ZN103", f"[fanuc] harmless_m: expected a list of M code numbers such as [88, 89], got "
-                      f"{_written(value)}", rd.loc.key("harmless_m", fline))
+                      f"{as_written(value)}", rd.loc.key("harmless_m", fline))
         else:
             kw["harmless_m"] = frozenset(value)
     refs = {}
@@ -1015,17 +1015,17 @@ def _variables(rd: _Reader, raw: Any) -> dict[int, Fraction]:
     out: dict[int, Fraction] = {}
     line = rd.loc.section("variables")
     if not isinstance(raw, Mapping):
-        rd.report("ZN103", f"[variables]: expected a table such as \"#500\" = \"12.5\", got {_written(raw)}",
+        rd.report("ZN103", f"[variables]: expected a table such as \"#500\" = \"12.5\", got {as_written(raw)}",
                   rd.loc.header(line))
         return out
     for key, value in raw.items():
         m = re.fullmatch(r"#?(\d{1,4})", key.strip())
         span = rd.loc.key(key if not key.startswith("#") else f'"{key}"', line) or rd.loc.key(key, line)
         if not m or not 100 <= int(m.group(1)) <= 999:
-            rd.report("ZN101", f"[variables]: {_written(key)} is not a common variable; write \"#100\" to \"#999\" "
+            rd.report("ZN101", f"[variables]: {as_written(key)} is not a common variable; write \"#100\" to \"#999\" "
                       "(local #1-#33 start vacant, system variables come from the rest of the machine file)", span)
             continue
-        q = _number(rd, value, f"[variables] {key}", span)
+        q = read_number(rd, value, f"[variables] {key}", span)
         if q is not None:
             out[int(m.group(1))] = q
     return out
@@ -1037,13 +1037,13 @@ def _macros(rd: _Reader, raw: Any) -> dict[str, tuple[int, str]]:
     out: dict[str, tuple[int, str]] = {}
     line = rd.loc.section("macros")
     if not isinstance(raw, Mapping):
-        rd.report("ZN103", f"[macros]: expected a table such as G100 = 9010, got {_written(raw)}", rd.loc.header(line))
+        rd.report("ZN103", f"[macros]: expected a table such as G100 = 9010, got {as_written(raw)}", rd.loc.header(line))
         return out
     for key, value in raw.items():
         span = rd.loc.key(key, line)
         m = re.fullmatch(r"([GM])(\d{1,4})|T", key.strip().upper())
         if not m:
-            rd.report("ZN101", f"[macros]: {_written(key)} is not a code; write G<number> (1-9999), M<number> or T",
+            rd.report("ZN101", f"[macros]: {as_written(key)} is not a code; write G<number> (1-9999), M<number> or T",
                       span)
             continue
         call = "macro"
@@ -1051,19 +1051,19 @@ def _macros(rd: _Reader, raw: Any) -> dict[str, tuple[int, str]]:
         if isinstance(value, Mapping):
             extra = [k for k in value if k not in ("program", "call")]
             if extra:
-                rd.report("ZN101", f"[macros] {key}: unknown key {_written(extra[0])}; allowed keys: program, call", span)
+                rd.report("ZN101", f"[macros] {key}: unknown key {as_written(extra[0])}; allowed keys: program, call", span)
                 continue
             program = value.get("program")
             call = value.get("call", "macro")
             if call not in ("macro", "subprogram"):
-                rd.report("ZN114", f"[macros] {key}: call {_written(call)} is not allowed; use \"macro\" (like G65, "
+                rd.report("ZN114", f"[macros] {key}: call {as_written(call)} is not allowed; use \"macro\" (like G65, "
                           "with arguments) or \"subprogram\" (like M98)", span)
                 continue
         if isinstance(program, str) and program.strip().isdigit():
             program = int(program)
         if not isinstance(program, int) or isinstance(program, bool) or not 1 <= program <= 99999999:
             rd.report("ZN103", f"[macros] {key}: the program number must be an integer such as 9010, got "
-                      f"{_written(program)}", span)
+                      f"{as_written(program)}", span)
             continue
         code = key.strip().upper()
         if code.startswith("G") and code in ("G65", "G66", "G67"):
@@ -1078,18 +1078,18 @@ def _diameter_axes(rd: _Reader, raw: Any, axes: tuple[str, ...], mline: int | No
     span = rd.loc.key("diameter_axes", mline)
     if not isinstance(raw, list) or not all(isinstance(a, str) for a in raw):
         rd.report("ZN103", f"[machine] diameter_axes: expected a list of axis names such as [\"X\"], got "
-                  f"{_written(raw)}", span)
+                  f"{as_written(raw)}", span)
         return ()
     out: list[str] = []
     for a in raw:
         if a not in axes:
-            rd.report("ZN110", f"[machine] diameter_axes: {_written(a)} is not one of the machine's axes "
+            rd.report("ZN110", f"[machine] diameter_axes: {as_written(a)} is not one of the machine's axes "
                       f"({', '.join(axes)})", span)
         elif a in ROTARY_AXES:
-            rd.report("ZN107", f"[machine] diameter_axes: {_written(a)} is a rotary axis; only linear axes take "
+            rd.report("ZN107", f"[machine] diameter_axes: {as_written(a)} is a rotary axis; only linear axes take "
                       "diameters", span)
         elif a in out:
-            rd.report("ZN111", f"[machine] diameter_axes: axis {_written(a)} is listed twice", span)
+            rd.report("ZN111", f"[machine] diameter_axes: axis {as_written(a)} is listed twice", span)
         else:
             out.append(a)
     return tuple(out)
@@ -1105,52 +1105,52 @@ def _tool_offsets(rd: _Reader, raw: Any, axes: tuple[str, ...]) -> dict[int, Too
     line = rd.loc.section("tool_offsets")
     if not isinstance(raw, Mapping):
         rd.report("ZN103", f"[tool_offsets]: expected a table such as 1 = {{ X = \"-120\", Z = \"-310\" }}, got "
-                  f"{_written(raw)}", rd.loc.header(line))
+                  f"{as_written(raw)}", rd.loc.header(line))
         return out
     for key, value in raw.items():
         span = rd.loc.key(key, line) or rd.loc.header(rd.loc.section(f"tool_offsets.{key}"))
         if not (isinstance(key, str) and key.isdigit() and len(key) <= 4):
-            rd.report("ZN101", f"[tool_offsets]: {_written(key)} is not an offset number; write the number (0 to "
+            rd.report("ZN101", f"[tool_offsets]: {as_written(key)} is not an offset number; write the number (0 to "
                       "9999) as the key, such as 1 = { X = \"-120\", Z = \"-310\" }", span)
             continue
         what = f"[tool_offsets] {key}"
         if not isinstance(value, Mapping):
-            rd.report("ZN103", f"{what}: expected a table of axis values, R, tip and wear, got {_written(value)}",
+            rd.report("ZN103", f"{what}: expected a table of axis values, R, tip and wear, got {as_written(value)}",
                       span)
             continue
         for k in value:
             if k not in axes and k not in _OFFSET_KEYS:
-                rd.report("ZN101", f"{what}: unknown key {_written(k)}; allowed: the machine's axes "
+                rd.report("ZN101", f"{what}: unknown key {as_written(k)}; allowed: the machine's axes "
                           f"({', '.join(axes)}), {', '.join(_OFFSET_KEYS)}", span)
         geometry = []
         for a in axes:
             if a in value:
-                q = _number(rd, value[a], f"{what}.{a}", span)
+                q = read_number(rd, value[a], f"{what}.{a}", span)
                 if q is not None:
                     geometry.append((a, q))
-        radius = _number(rd, value.get("R", "0"), f"{what}.R", span, nonnegative=True)
+        radius = read_number(rd, value.get("R", "0"), f"{what}.R", span, nonnegative=True)
         tip = value.get("tip", 0)
         if not isinstance(tip, int) or isinstance(tip, bool) or not 0 <= tip <= 9:
             rd.report("ZN103", f"{what}.tip: the imaginary tool nose direction is an integer 0 to 9, got "
-                      f"{_written(tip)}", span)
+                      f"{as_written(tip)}", span)
             tip = 0
         wear_raw = value.get("wear", {})
         wear = []
         wear_radius: Fraction | None = Fraction(0)
         if not isinstance(wear_raw, Mapping):
-            rd.report("ZN103", f"{what}.wear: expected a table such as {{ X = \"0.02\" }}, got {_written(wear_raw)}",
+            rd.report("ZN103", f"{what}.wear: expected a table such as {{ X = \"0.02\" }}, got {as_written(wear_raw)}",
                       span)
         else:
             for k in wear_raw:
                 if k not in axes and k != "R":
-                    rd.report("ZN101", f"{what}.wear: unknown key {_written(k)}; allowed: the machine's axes, R",
+                    rd.report("ZN101", f"{what}.wear: unknown key {as_written(k)}; allowed: the machine's axes, R",
                               span)
             for a in axes:
                 if a in wear_raw:
-                    q = _number(rd, wear_raw[a], f"{what}.wear.{a}", span)
+                    q = read_number(rd, wear_raw[a], f"{what}.wear.{a}", span)
                     if q is not None:
                         wear.append((a, q))
-            wear_radius = _number(rd, wear_raw.get("R", "0"), f"{what}.wear.R", span)
+            wear_radius = read_number(rd, wear_raw.get("R", "0"), f"{what}.wear.R", span)
         out[int(key)] = ToolOffset(int(key), tuple(geometry), tuple(wear), radius or Fraction(0),
                                    wear_radius or Fraction(0), tip)
     return out
@@ -1165,19 +1165,19 @@ def _modal(rd: _Reader, raw: Any, mline: int | None) -> tuple[str, ...]:
         return DEFAULT_MODAL
     span = rd.loc.key("modal", mline)
     if not isinstance(raw, list) or not all(isinstance(c, str) for c in raw):
-        rd.report("ZN103", f"[machine] modal: expected a list of G codes such as [\"G90\", \"G21\"], got {_written(raw)}", span)
+        rd.report("ZN103", f"[machine] modal: expected a list of G codes such as [\"G90\", \"G21\"], got {as_written(raw)}", span)
         return DEFAULT_MODAL
-    chosen = dict(zip(_MODAL_CHOICES, DEFAULT_MODAL))
+    chosen = dict(zip(MODAL_CHOICES, DEFAULT_MODAL))
     given: dict[str, str] = {}
     for code in raw:
         norm = code.strip().upper()
-        group = next((g for g, choices in _MODAL_CHOICES.items() if norm in choices), None)
+        group = next((g for g, choices in MODAL_CHOICES.items() if norm in choices), None)
         if group is None:
-            allowed = ", ".join(c for cs in _MODAL_CHOICES.values() for c in cs)
-            rd.report("ZN107", f"[machine] modal: {_written(code)} is not an initial modal code nczones models; allowed: {allowed}", span)
+            allowed = ", ".join(c for cs in MODAL_CHOICES.values() for c in cs)
+            rd.report("ZN107", f"[machine] modal: {as_written(code)} is not an initial modal code nczones models; allowed: {allowed}", span)
             continue
         if group in given:
-            rd.report("ZN108", f"[machine] modal: {_written(code)} conflicts with {_written(given[group])}; both set the {group} mode, give one", span)
+            rd.report("ZN108", f"[machine] modal: {as_written(code)} conflicts with {as_written(given[group])}; both set the {group} mode, give one", span)
             continue
         given[group] = code
         chosen[group] = norm
@@ -1186,14 +1186,14 @@ def _modal(rd: _Reader, raw: Any, mline: int | None) -> tuple[str, ...]:
 
 def _zones(rd: _Reader, raw: Any, axes: tuple[str, ...], tool_axis: str | None) -> list[Zone]:
     if not isinstance(raw, list):
-        rd.report("ZN103", f"zones: expected [[zones]] tables, got {_written(raw)}", None)
+        rd.report("ZN103", f"zones: expected [[zones]] tables, got {as_written(raw)}", None)
         return []
     out: list[Zone] = []
     names: set[str] = set()
     for index, zt in enumerate(raw):
         header = rd.loc.section("zones", index)
         if not isinstance(zt, Mapping):
-            rd.report("ZN103", f"zone {index + 1}: expected a table, got {_written(zt)}", None)
+            rd.report("ZN103", f"zone {index + 1}: expected a table, got {as_written(zt)}", None)
             continue
         name = zt.get("name")
         label = f"zone {json.dumps(name, ensure_ascii=False)}" if isinstance(name, str) else f"zone {index + 1}"
@@ -1205,18 +1205,18 @@ def _zones(rd: _Reader, raw: Any, axes: tuple[str, ...], tool_axis: str | None) 
         names.add(name)
         kind = zt.get("kind")
         if not isinstance(kind, str) or kind not in _ZONE_KEYS:
-            rd.report("ZN107", f"{label}: kind {_written(kind)} is not allowed; use \"stepped\", \"box\" or \"polygon\"", rd.loc.key("kind", header))
+            rd.report("ZN107", f"{label}: kind {as_written(kind)} is not allowed; use \"stepped\", \"box\" or \"polygon\"", rd.loc.key("kind", header))
             continue
         _check_keys(rd, zt, _ZONE_KEYS[kind], label, header)
         forbid = zt.get("forbid", False)
         if not isinstance(forbid, bool):
-            rd.report("ZN103", f"{label}: forbid must be true or false, got {_written(forbid)}", rd.loc.key("forbid", header))
+            rd.report("ZN103", f"{label}: forbid must be true or false, got {as_written(forbid)}", rd.loc.key("forbid", header))
             forbid = False
         point_raw = zt.get("point", "machine")
         try:
             point = ZonePoint(point_raw)
         except ValueError:
-            rd.report("ZN107", f"{label}: point {_written(point_raw)} is not allowed; use \"machine\" or \"tip\"", rd.loc.key("point", header))
+            rd.report("ZN107", f"{label}: point {as_written(point_raw)} is not allowed; use \"machine\" or \"tip\"", rd.loc.key("point", header))
             point = ZonePoint.MACHINE
         if point is ZonePoint.TIP and tool_axis is None:
             rd.report("ZN113", f"{label}: point = \"tip\" needs a tool axis, but this machine has none (set [machine] tool_axis)", rd.loc.key("point", header))
@@ -1234,7 +1234,7 @@ def _axis_field(rd: _Reader, zt: Mapping[str, Any], key: str, label: str, header
         rd.report("ZN102", f"{label}: missing {key} (one of {', '.join(axes)})", span or rd.loc.header(header))
         return None
     if value not in axes:
-        rd.report("ZN110", f"{label}: {key} {_written(value)} is not one of the machine's axes ({', '.join(axes)})", span)
+        rd.report("ZN110", f"{label}: {key} {as_written(value)} is not one of the machine's axes ({', '.join(axes)})", span)
         return None
     return str(value)
 
@@ -1244,15 +1244,15 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
     ref = _axis_field(rd, zt, "reference_axis", label, header, axes)
     lim = _axis_field(rd, zt, "limited_axis", label, header, axes)
     if ref is not None and ref == lim:
-        rd.report("ZN111", f"{label}: reference_axis and limited_axis are both {_written(ref)}; a table limits one axis by another", rd.loc.key("limited_axis", header))
+        rd.report("ZN111", f"{label}: reference_axis and limited_axis are both {as_written(ref)}; a table limits one axis by another", rd.loc.key("limited_axis", header))
     if "from" not in zt:
         rd.report("ZN102", f"{label}: missing from (the lower bound of the first region on {ref or 'the reference axis'})", rd.loc.header(header))
         start = None
     else:
-        start = _number(rd, zt["from"], f"{label}: from", rd.loc.key("from", header))
+        start = read_number(rd, zt["from"], f"{label}: from", rd.loc.key("from", header))
     raw_regions = zt.get("regions")
     if not isinstance(raw_regions, list) or not raw_regions:
-        rd.report("ZN120", f"{label}: regions must be a non-empty list such as [{{ upto = \"500\", max = \"300\" }}], got {_written(raw_regions)}", rd.loc.key("regions", header))
+        rd.report("ZN120", f"{label}: regions must be a non-empty list such as [{{ upto = \"500\", max = \"300\" }}], got {as_written(raw_regions)}", rd.loc.key("regions", header))
         return None
     regions: list[Region] = []
     previous = start
@@ -1260,24 +1260,24 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
     for i, rt in enumerate(raw_regions):
         rlabel = f"{label}, region {i + 1}"
         if not isinstance(rt, Mapping):
-            rd.report("ZN103", f"{rlabel}: expected an inline table such as {{ upto = \"500\", max = \"300\" }}, got {_written(rt)}", rd.loc.element("regions", header, i, "upto"))
+            rd.report("ZN103", f"{rlabel}: expected an inline table such as {{ upto = \"500\", max = \"300\" }}, got {as_written(rt)}", rd.loc.element("regions", header, i, "upto"))
             ok = False
             continue
         for key in rt:
             if key not in ("upto", "min", "max"):
                 close = difflib.get_close_matches(key, ("upto", "min", "max"), n=1)
-                hint = f"; did you mean {_written(close[0])}?" if close else "; allowed keys: upto, min, max"
-                rd.report("ZN101", f"{rlabel}: unknown key {_written(key)}{hint}", rd.loc.element("regions", header, i, key))
+                hint = f"; did you mean {as_written(close[0])}?" if close else "; allowed keys: upto, min, max"
+                rd.report("ZN101", f"{rlabel}: unknown key {as_written(key)}{hint}", rd.loc.element("regions", header, i, key))
                 ok = False
         if "upto" not in rt:
             rd.report("ZN102", f"{rlabel}: missing upto (the region's upper bound on {ref or 'the reference axis'})", rd.loc.element("regions", header, i, "upto"))
             ok = False
             continue
         # spans are found only for a diagnostic: finding one reads the array's text
-        upto = _number(rd, rt["upto"], f"{rlabel}: upto", functools.partial(rd.loc.element, "regions", header, i, "upto"))
-        lo = _number(rd, rt["min"], f"{rlabel}: min",
+        upto = read_number(rd, rt["upto"], f"{rlabel}: upto", functools.partial(rd.loc.element, "regions", header, i, "upto"))
+        lo = read_number(rd, rt["min"], f"{rlabel}: min",
                      functools.partial(rd.loc.element, "regions", header, i, "min")) if "min" in rt else None
-        hi = _number(rd, rt["max"], f"{rlabel}: max",
+        hi = read_number(rd, rt["max"], f"{rlabel}: max",
                      functools.partial(rd.loc.element, "regions", header, i, "max")) if "max" in rt else None
         if upto is None or ("min" in rt and lo is None) or ("max" in rt and hi is None):
             ok = False
@@ -1303,22 +1303,22 @@ def _limits(rd: _Reader, zt: Mapping[str, Any], label: str, header: int | None, 
     ok = True
     for key, raw in (("min", lows), ("max", highs)):
         if not isinstance(raw, Mapping):
-            rd.report("ZN103", f"{label}: {key} must be a table of axis values such as {{ X = \"0\" }}, got {_written(raw)}", rd.loc.key(key, header))
+            rd.report("ZN103", f"{label}: {key} must be a table of axis values such as {{ X = \"0\" }}, got {as_written(raw)}", rd.loc.key(key, header))
             ok = False
     if not ok:
         return None
     limits = []
     for axis in dict.fromkeys(list(lows) + list(highs)):
         if axis not in axes:
-            rd.report("ZN110", f"{label}: unknown axis {_written(axis)} in min/max; the machine's axes are {', '.join(axes)}", rd.loc.key(axis, header))
+            rd.report("ZN110", f"{label}: unknown axis {as_written(axis)} in min/max; the machine's axes are {', '.join(axes)}", rd.loc.key(axis, header))
             ok = False
             continue
         if axis in exclude:
-            rd.report("ZN111", f"{label}: axis {_written(axis)} is in the polygon's plane and may not also have min/max", rd.loc.key(axis, header))
+            rd.report("ZN111", f"{label}: axis {as_written(axis)} is in the polygon's plane and may not also have min/max", rd.loc.key(axis, header))
             ok = False
             continue
-        lo = _number(rd, lows[axis], f"{label}: min.{axis}", rd.loc.key(axis, header)) if axis in lows else None
-        hi = _number(rd, highs[axis], f"{label}: max.{axis}", rd.loc.key(axis, header, 1 if axis in lows else 0)) if axis in highs else None
+        lo = read_number(rd, lows[axis], f"{label}: min.{axis}", rd.loc.key(axis, header)) if axis in lows else None
+        hi = read_number(rd, highs[axis], f"{label}: max.{axis}", rd.loc.key(axis, header, 1 if axis in lows else 0)) if axis in highs else None
         if (axis in lows and lo is None) or (axis in highs and hi is None):
             ok = False
             continue
@@ -1345,31 +1345,31 @@ def _polygon(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
     plane = zt.get("plane")
     span = rd.loc.key("plane", header)
     if not (isinstance(plane, list) and len(plane) == 2 and all(isinstance(a, str) for a in plane)):
-        rd.report("ZN102", f"{label}: plane must name two axes such as [\"X\", \"Z\"], got {_written(plane)}", span)
+        rd.report("ZN102", f"{label}: plane must name two axes such as [\"X\", \"Z\"], got {as_written(plane)}", span)
         return None
     bad_axes = [a for a in plane if a not in axes]
     if bad_axes:
-        rd.report("ZN110", f"{label}: plane axis {_written(bad_axes[0])} is not one of the machine's axes ({', '.join(axes)})", span)
+        rd.report("ZN110", f"{label}: plane axis {as_written(bad_axes[0])} is not one of the machine's axes ({', '.join(axes)})", span)
         return None
     if plane[0] == plane[1]:
-        rd.report("ZN111", f"{label}: plane names axis {_written(plane[0])} twice", span)
+        rd.report("ZN111", f"{label}: plane names axis {as_written(plane[0])} twice", span)
         return None
     raw_vertices = zt.get("vertices")
     vspan = rd.loc.key("vertices", header)
     if not isinstance(raw_vertices, list) or len(raw_vertices) < 3:
-        rd.report("ZN123", f"{label}: vertices must list at least 3 points such as [[\"0\", \"0\"], ...], got {_written(raw_vertices)}", vspan)
+        rd.report("ZN123", f"{label}: vertices must list at least 3 points such as [[\"0\", \"0\"], ...], got {as_written(raw_vertices)}", vspan)
         return None
     vertices = []
     for i, v in enumerate(raw_vertices):
         if not (isinstance(v, list) and len(v) == 2):
-            rd.report("ZN123", f"{label}: vertex {i + 1} must be a pair [{plane[0]}, {plane[1]}], got {_written(v)}", vspan)
+            rd.report("ZN123", f"{label}: vertex {i + 1} must be a pair [{plane[0]}, {plane[1]}], got {as_written(v)}", vspan)
             return None
-        a = _number(rd, v[0], f"{label}: vertex {i + 1}", vspan)
-        b = _number(rd, v[1], f"{label}: vertex {i + 1}", vspan)
+        a = read_number(rd, v[0], f"{label}: vertex {i + 1}", vspan)
+        b = read_number(rd, v[1], f"{label}: vertex {i + 1}", vspan)
         if a is None or b is None:
             return None
         vertices.append((a, b))
-    problem = _polygon_problem(vertices)
+    problem = polygon_problem(vertices)
     if problem:
         rd.report("ZN124", f"{label}: {problem}", vspan)
         return None
@@ -1379,7 +1379,7 @@ def _polygon(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
     return PolygonZone(name, (plane[0], plane[1]), tuple(vertices), limits, forbid, point)
 
 
-def _polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
+def polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
     """Why a vertex list is not a simple polygon (exact), or None.
 
     A sweep along X: only pairs of edges whose bounding boxes overlap are

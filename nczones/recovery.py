@@ -67,7 +67,7 @@ from fractions import Fraction
 from typing import Any
 
 from .errors import Diagnostic, InvalidArgument, MachineFileError
-from .machine import SECTION_PARSERS, Machine, _number, _written
+from .machine import SECTION_PARSERS, Machine, as_written, read_number
 from .motion import Segment, SegmentKind
 
 __all__ = [
@@ -175,14 +175,14 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
     header = rd.loc.section("tool_change")
     nrd: Any = _Recode(rd)
     if not isinstance(raw, Mapping):
-        rd.report("ZN151", f"[tool_change]: expected a table, got {_written(raw)}", rd.loc.key("tool_change", None))
+        rd.report("ZN151", f"[tool_change]: expected a table, got {as_written(raw)}", rd.loc.key("tool_change", None))
         return None
     bad = False
     for key in raw:
         if key not in TOOL_CHANGE_KEYS:
             close = difflib.get_close_matches(key, TOOL_CHANGE_KEYS, n=1)
-            hint = f"; did you mean {_written(close[0])}?" if close else f"; allowed keys: {', '.join(TOOL_CHANGE_KEYS)}"
-            rd.report("ZN150", f"[tool_change]: unknown key {_written(key)}{hint}", rd.loc.key(key, header))
+            hint = f"; did you mean {as_written(close[0])}?" if close else f"; allowed keys: {', '.join(TOOL_CHANGE_KEYS)}"
+            rd.report("ZN150", f"[tool_change]: unknown key {as_written(key)}{hint}", rd.loc.key(key, header))
             bad = True
     for key in ("position", "approach_distance", "approach_feed"):
         if key not in raw:
@@ -195,18 +195,18 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
         span = rd.loc.key("position", header)
         if not isinstance(pos_raw, Mapping):
             rd.report("ZN153", f"[tool_change] position: expected a table of axis values such as "
-                      f"{{ X = \"0\" }}, got {_written(pos_raw)}", span)
+                      f"{{ X = \"0\" }}, got {as_written(pos_raw)}", span)
             bad = True
         else:
             for axis, v in pos_raw.items():
                 if axis not in axes:
                     close = difflib.get_close_matches(axis, axes, n=1)
                     hint = f"; did you mean {close[0]!r}?" if close else ""
-                    rd.report("ZN152", f"[tool_change] position: unknown axis {_written(axis)}; the machine's "
+                    rd.report("ZN152", f"[tool_change] position: unknown axis {as_written(axis)}; the machine's "
                               f"axes are {', '.join(axes)}{hint}", span)
                     bad = True
                     continue
-                q = _number(nrd, v, f"[tool_change] position.{axis}", span)
+                q = read_number(nrd, v, f"[tool_change] position.{axis}", span)
                 if q is None:
                     bad = True
                 else:
@@ -222,11 +222,11 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
     if not isinstance(retract_axis, str) or retract_axis not in axes:
         close = difflib.get_close_matches(str(retract_axis), axes, n=1)
         hint = f"; did you mean {close[0]!r}?" if close else ""
-        rd.report("ZN152", f"[tool_change] retract_axis: {_written(retract_axis)} is not an axis of the machine "
+        rd.report("ZN152", f"[tool_change] retract_axis: {as_written(retract_axis)} is not an axis of the machine "
                   f"({', '.join(axes)}){hint}", rd.loc.key("retract_axis", header))
         bad = True
     elif retract_axis in ("A", "B", "C"):
-        rd.report("ZN152", f"[tool_change] retract_axis: {_written(retract_axis)} is rotary; the retract "
+        rd.report("ZN152", f"[tool_change] retract_axis: {as_written(retract_axis)} is rotary; the retract "
                   "needs a linear axis", rd.loc.key("retract_axis", header))
         bad = True
     # clearance xor retract_distance
@@ -238,19 +238,19 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
                   "on the retract axis, retract_distance = how far to go up)", rd.loc.header(header))
         bad = True
     if has_c:
-        clearance = _number(nrd, raw["clearance"], "[tool_change] clearance", rd.loc.key("clearance", header))
+        clearance = read_number(nrd, raw["clearance"], "[tool_change] clearance", rd.loc.key("clearance", header))
         bad |= clearance is None
     if has_d:
-        retract_distance = _number(nrd, raw["retract_distance"], "[tool_change] retract_distance",
+        retract_distance = read_number(nrd, raw["retract_distance"], "[tool_change] retract_distance",
                                    rd.loc.key("retract_distance", header), nonnegative=True)
         bad |= retract_distance is None
     alpha = feed = None
     if "approach_distance" in raw:
-        alpha = _number(nrd, raw["approach_distance"], "[tool_change] approach_distance",
+        alpha = read_number(nrd, raw["approach_distance"], "[tool_change] approach_distance",
                         rd.loc.key("approach_distance", header), nonnegative=True)
         bad |= alpha is None
     if "approach_feed" in raw:
-        feed = _number(nrd, raw["approach_feed"], "[tool_change] approach_feed",
+        feed = read_number(nrd, raw["approach_feed"], "[tool_change] approach_feed",
                        rd.loc.key("approach_feed", header), positive=True)
         bad |= feed is None
     variant_raw = raw.get("variant", "start")
@@ -258,8 +258,8 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
         variant = RecoveryVariant(variant_raw)
     except ValueError:
         close = difflib.get_close_matches(str(variant_raw), [v.value for v in RecoveryVariant], n=1)
-        hint = f"; did you mean {_written(close[0])}?" if close else ""
-        rd.report("ZN155", f"[tool_change] variant: {_written(variant_raw)} is not allowed; use \"start\" or "
+        hint = f"; did you mean {as_written(close[0])}?" if close else ""
+        rd.report("ZN155", f"[tool_change] variant: {as_written(variant_raw)} is not allowed; use \"start\" or "
                   f"\"breakpoint\"{hint}", rd.loc.key("variant", header))
         variant = None
         bad = True
@@ -273,7 +273,7 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
         if text.isdigit():
             register = int(text)
         else:
-            rd.report("ZN157", f"[tool_change] length_register: {_written(reg_raw)} is not a length register; "
+            rd.report("ZN157", f"[tool_change] length_register: {as_written(reg_raw)} is not a length register; "
                       "write H followed by its number, such as \"H2\"", rd.loc.key("length_register", header))
             bad = True
     if bad:

@@ -199,7 +199,7 @@ def polygons(
 
 def polygon_centre(zone: PolygonZone) -> tuple[Fraction, Fraction]:
     """The centre a :func:`polygons` polygon was built around (an interior point)."""
-    from .machine import _polygon_problem  # noqa: F401  (same package; validated by the loader)
+    from .machine import polygon_problem  # noqa: F401  (same package; validated by the loader)
 
     # The rays through opposite-or-adjacent vertices meet at the centre: solve
     # with two vertices on non-parallel rays (their directions are known).
@@ -250,9 +250,9 @@ def _box_toml(name: str, lo: dict[str, Fraction], hi: dict[str, Fraction], forbi
 
 
 def _polygon_ok(zone: PolygonZone) -> bool:
-    from .machine import _polygon_problem
+    from .machine import polygon_problem
 
-    return _polygon_problem(list(zone.vertices)) is None
+    return polygon_problem(list(zone.vertices)) is None
 
 
 @st.composite

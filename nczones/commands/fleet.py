@@ -62,9 +62,9 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     bad = [c for c in rows if c.verdict not in ("safe",) and c.status != "pending"]
     for c in sorted(bad, key=lambda c: ({"unsafe": 0, "error": 1, "unknown": 2}.get(c.verdict or "", 3),
                                         c.machine, c.program))[:args.list]:
-        from ..fleet.status import _first
+        from ..fleet.status import first_finding
 
-        print(f"{c.program} on {c.machine}: {c.verdict}" + (f": {_first(c)}" if _first(c) else ""))
+        print(f"{c.program} on {c.machine}: {c.verdict}" + (f": {first_finding(c)}" if first_finding(c) else ""))
     if len(bad) > args.list:
         print(f"... and {len(bad) - args.list} more cells that are not safe (nczones fleet status)")
     rate = f", {summary.ran / summary.wall_s:.1f} jobs/s" if summary.ran and summary.wall_s > 0 else ""

@@ -39,7 +39,7 @@ def _plane(text: str | None, machine: Any) -> tuple[str, str] | None:
 
 def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
-    from ..report import _agg
+    from ..report import use_agg_backend
 
     machine = cli.with_dialect(load_machine(args.machine), args.dialect)
     plane = _plane(args.plane, machine)
@@ -53,7 +53,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..cli import program_source
 
     source = program_source(args.program)
-    _agg()
+    use_agg_backend()
     import matplotlib.pyplot as plt
 
     from ..report.figure import plot_program

@@ -41,7 +41,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidArgument
-from .pulses import _arc_frame, _arc_step, _ArcFrame, _plane_line, _quadrant, arc_walk
+from .pulses import ArcFrame, arc_frame, arc_step, arc_walk, plane_line, quadrant_of
 
 __all__ = ["ArcPath", "arc_path", "arc_positions", "path_fractions", "path_fractions_moved", "SHORT_ARC_STEPS", "CANDIDATES"]
 
@@ -118,7 +118,7 @@ def arc_positions(
     ...                                     False, 0, (F(1), F(1))).points.tolist()
     True
     """
-    fr = _arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
+    fr = arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
     est = fr.sweep * math.sqrt(fr.q) / min(fr.ai, fr.aj) if fr.q else 0.0
     reach = 2 * math.isqrt(fr.q) + abs(fr.cx) + abs(fr.cy) + 4 * max(fr.ai, fr.aj)
     big = 4 * reach * reach + fr.q >= _INT64_SAFE  # int64 verification impossible (e.g. R-format centres)
@@ -130,7 +130,7 @@ def arc_positions(
     out = _Columns(naxes, i, j, fr.sj, int(est * 1.02) + 64)
     walk = _walk(fr, turns, est, out)
     last = out.last() if walk else (start_pulse[0], start_pulse[1])
-    tail = _plane_line(last, (end_pulse[0], end_pulse[1]))
+    tail = plane_line(last, (end_pulse[0], end_pulse[1]))
     if tail:
         out.put_rows(np.array(tail, dtype=np.int64))
     pos = out.result()
@@ -178,7 +178,7 @@ class _Columns:
         return self.buf[:self.n]
 
 
-def _walk(fr: _ArcFrame, turns: int, est: float, out: _Columns) -> int:
+def _walk(fr: ArcFrame, turns: int, est: float, out: _Columns) -> int:
     """Put the walk's positions into ``out``; return the number of steps."""
     x, y, u, v, qc = fr.x, fr.y, fr.u, fr.v, fr.qcount
     walk = 0
@@ -199,8 +199,8 @@ def _walk(fr: _ArcFrame, turns: int, est: float, out: _Columns) -> int:
         if stop < ok:  # candidate `stop` is a verified step past the end ray: the walk ends
             return walk
         if ok < len(xs):  # the rule disagrees with candidate `ok`: one exact reference step
-            dx, dy, nu, nv = _arc_step(u, v, fr.q, fr.ai, fr.aj)
-            nq = _quadrant(nu, nv)
+            dx, dy, nu, nv = arc_step(u, v, fr.q, fr.ai, fr.aj)
+            nq = quadrant_of(nu, nv)
             nqc = qc + ((nq - qc) % 4)
             if fr.past_end(nu, nv, nqc):
                 return walk
@@ -210,7 +210,7 @@ def _walk(fr: _ArcFrame, turns: int, est: float, out: _Columns) -> int:
     raise InvalidArgument("arc walk did not reach its end")  # pragma: no cover - as in arc_walk
 
 
-def _region_steps(fr: _ArcFrame, u: int, v: int) -> int:
+def _region_steps(fr: ArcFrame, u: int, v: int) -> int:
     """Steps (estimated, +2) until the major axis changes, from offset ``(u, v)``."""
     ai, aj = fr.ai, fr.aj
     b_u = math.sqrt(fr.q) * aj / math.hypot(ai, aj)  # |u| where |v| aj = |u| ai on the circle
@@ -222,7 +222,7 @@ def _region_steps(fr: _ArcFrame, u: int, v: int) -> int:
     return max(int((b_v - w) / aj) + 2, 1)
 
 
-def _candidates(fr: _ArcFrame, x: int, y: int, u: int, v: int, k: int) -> tuple[np.ndarray, np.ndarray]:
+def _candidates(fr: ArcFrame, x: int, y: int, u: int, v: int, k: int) -> tuple[np.ndarray, np.ndarray]:
     """``k`` guessed positions after ``(x, y)``: the major axis steps, the minor is nearest the circle."""
     ai, aj = float(fr.ai), float(fr.aj)
     qf = float(fr.q)
@@ -245,7 +245,7 @@ def _candidates(fr: _ArcFrame, x: int, y: int, u: int, v: int, k: int) -> tuple[
 _Verified = tuple[int, int, Callable[[int], int]]
 
 
-def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray) -> _Verified:
+def _verify(fr: ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray, ys: np.ndarray) -> _Verified:
     """Check candidates against the exact step rule.
 
     Returns ``(ok, stop, qc_at)``: candidates ``[:ok]`` are the steps the
@@ -261,7 +261,7 @@ def _verify(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarr
     return ok, stop, lambda i: int(qcs[i])
 
 
-def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray,
+def _verify_fast(fr: ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray,
                  ys: np.ndarray) -> _Verified | None:
     """The step rule checked in int64 on a stretch where the major axis and its sign are fixed.
 
@@ -363,7 +363,7 @@ def _verify_fast(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.
     return ok, stop, lambda i: ca if i < c else cb
 
 
-def _verify_general(fr: _ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray,
+def _verify_general(fr: ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.ndarray,
                     ys: np.ndarray) -> tuple[int, int, np.ndarray]:
     """Check candidates against the exact step rule.
 

@@ -189,7 +189,7 @@ def arc_centre(
     return centre, error
 
 
-def _quadrant(u: int, v: int) -> int:
+def quadrant_of(u: int, v: int) -> int:
     if u > 0 and v >= 0:
         return 0
     if u <= 0 and v > 0:
@@ -223,7 +223,7 @@ class ArcWalk:
 
 
 @dataclass(frozen=True, slots=True)
-class _ArcFrame:
+class ArcFrame:
     """An arc in exact integer units of ``1/scale`` mm, mirrored to counter-clockwise.
 
     ``u = x * ai - cx`` and ``v = y * aj - cy`` are the offsets of the pulse
@@ -260,9 +260,9 @@ class _ArcFrame:
         return 8 * (rq // self.ai + rq // self.aj + 4) * (turns + 2) + 64
 
 
-def _arc_frame(start_pulse: Sequence[int], end_pulse: Sequence[int], start: Sequence[Fraction],
+def arc_frame(start_pulse: Sequence[int], end_pulse: Sequence[int], start: Sequence[Fraction],
                end: Sequence[Fraction], centre: Sequence[Fraction], clockwise: bool, turns: int,
-               pulse: Sequence[Fraction]) -> _ArcFrame:
+               pulse: Sequence[Fraction]) -> ArcFrame:
     sj = -1 if clockwise else 1  # mirror the second axis: a clockwise arc becomes counter-clockwise
     ui, uj = pulse
     scale = _lcm(
@@ -283,20 +283,20 @@ def _arc_frame(start_pulse: Sequence[int], end_pulse: Sequence[int], start: Sequ
     sweep += 2 * math.pi * turns
     x, y = start_pulse[0], sj * start_pulse[1]
     tiny = q == 0 or radius_mm < 2 * float(max(ui, uj))
-    qs = _quadrant(su, sv)
-    qe_rel = (_quadrant(eu, ev) - qs) % 4
+    qs = quadrant_of(su, sv)
+    qe_rel = (quadrant_of(eu, ev) - qs) % 4
     if qe_rel == 0:
         cr = su * ev - sv * eu
         if cr < 0 or (cr == 0 and su * eu + sv * ev > 0):
             qe_rel = 4
     qe = qs + qe_rel + 4 * turns
     u, v = x * ai - cx, y * aj - cy
-    delta = (_quadrant(u, v) - qs) % 4
+    delta = (quadrant_of(u, v) - qs) % 4
     qcount = qs + (delta if delta <= 1 else delta - 4)
-    return _ArcFrame(sj, ai, aj, cx, cy, eu, ev, q, radius_mm, sweep, x, y, u, v, qcount, qe, tiny)
+    return ArcFrame(sj, ai, aj, cx, cy, eu, ev, q, radius_mm, sweep, x, y, u, v, qcount, qe, tiny)
 
 
-def _arc_step(u: int, v: int, q: int, ai: int, aj: int) -> tuple[int, int, int, int]:
+def arc_step(u: int, v: int, q: int, ai: int, aj: int) -> tuple[int, int, int, int]:
     """One step of the counter-clockwise lattice walk from offset ``(u, v)``: ``(dx, dy, nu, nv)``.
 
     The axis with the larger tangent component steps one pulse; the other
@@ -351,20 +351,20 @@ def arc_walk(
     >>> max(abs(x) for x, _ in w.points), max(abs(y) for _, y in w.points)
     (10, 10)
     """
-    fr = _arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
+    fr = arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
     ex, ey = end_pulse
     points: list[tuple[int, int]] = []
     if fr.tiny:
         # a circle smaller than two pulses: only the end point can be commanded meaningfully
-        points.extend(_plane_line((start_pulse[0], start_pulse[1]), (ex, ey)))
+        points.extend(plane_line((start_pulse[0], start_pulse[1]), (ex, ey)))
         return ArcWalk(tuple(points), fr.sweep, fr.radius_mm, 0)
     x, y, u, v, qcount, sj = fr.x, fr.y, fr.u, fr.v, fr.qcount, fr.sj
     walk = 0
     if not fr.past_end(u, v, qcount):
         limit = fr.limit(turns)
         while walk < limit:
-            dx, dy, nu, nv = _arc_step(u, v, fr.q, fr.ai, fr.aj)
-            nq = _quadrant(nu, nv)
+            dx, dy, nu, nv = arc_step(u, v, fr.q, fr.ai, fr.aj)
+            nq = quadrant_of(nu, nv)
             nqcount = qcount + ((nq - qcount) % 4)
             if fr.past_end(nu, nv, nqcount):
                 break
@@ -374,11 +374,11 @@ def arc_walk(
         else:  # pragma: no cover - the limit is generous; reaching it is a bug
             raise InvalidArgument("arc walk did not reach its end")
     last = points[-1] if points else (start_pulse[0], start_pulse[1])
-    points.extend(_plane_line(last, (ex, ey)))
+    points.extend(plane_line(last, (ex, ey)))
     return ArcWalk(tuple(points), fr.sweep, fr.radius_mm, walk)
 
 
-def _plane_line(a: tuple[int, int], b: tuple[int, int]) -> list[tuple[int, int]]:
+def plane_line(a: tuple[int, int], b: tuple[int, int]) -> list[tuple[int, int]]:
     return [(p[0], p[1]) for p in line_steps(a, b)]
 
 

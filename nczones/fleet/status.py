@@ -32,7 +32,7 @@ def _verdict(c: CellRow) -> str | None:
     return None if c.status == "pending" else c.verdict
 
 
-def _first(c: CellRow) -> str:
+def first_finding(c: CellRow) -> str:
     if c.violations:
         v = c.violations[0]
         return f"line {v.get('line')} ({v.get('zone')})"
@@ -81,7 +81,7 @@ def status_text(run: Run, cells: list[CellRow], *, details: bool = True) -> str:
                      key=lambda c: (_RANK.get(_verdict(c), 5), c.machine, c.program))
         for c in bad:
             lines.append(f"{c.program} on {c.machine}: {_verdict(c) or 'not verified'}"
-                         + (f": {_first(c)}" if _first(c) else ""))
+                         + (f": {first_finding(c)}" if first_finding(c) else ""))
     return "\n".join(lines) + "\n"
 
 
@@ -146,7 +146,7 @@ def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | 
             v = _verdict(c)
             cls = v or "pending"
             label = SYMBOLS[v]
-            tip = e(f"{p} on {m}: {v or 'not verified'}" + (f": {_first(c)}" if _first(c) else ""))
+            tip = e(f"{p} on {m}: {v or 'not verified'}" + (f": {first_finding(c)}" if first_finding(c) else ""))
             if c.job_key and v is not None and c.status != "error":
                 ref = f"reports/{c.job_key}"
                 tds.append(f'<td class="{cls}" title="{tip}"><a href="{ref}.txt">{label}</a> '
@@ -194,7 +194,7 @@ def diff_runs(old: list[CellRow], new: list[CellRow]) -> list[Change]:
         b, a = before.get(where), after.get(where)
         p, m = where
         if b is None and a is not None:
-            changes.append(Change("added", p, m, None, _verdict(a), _first(a)))
+            changes.append(Change("added", p, m, None, _verdict(a), first_finding(a)))
             continue
         if a is None and b is not None:
             changes.append(Change("removed", p, m, _verdict(b), None, ""))
@@ -203,13 +203,13 @@ def diff_runs(old: list[CellRow], new: list[CellRow]) -> list[Change]:
         vb, va = _verdict(b), _verdict(a)
         if va is None or vb is None:
             if va != vb and va is not None:
-                changes.append(Change("added", p, m, vb, va, _first(a)))
+                changes.append(Change("added", p, m, vb, va, first_finding(a)))
             continue
         if va != vb:
             kind = {"unsafe": "newly unsafe", "unknown": "newly unknown", "error": "newly error"}.get(va, "fixed")
-            changes.append(Change(kind, p, m, vb, va, _first(a)))
+            changes.append(Change(kind, p, m, vb, va, first_finding(a)))
         elif va == "unsafe" and _violation_key(a) != _violation_key(b):
-            changes.append(Change("violations changed", p, m, vb, va, f"was {_first(b)}, now {_first(a)}"))
+            changes.append(Change("violations changed", p, m, vb, va, f"was {first_finding(b)}, now {first_finding(a)}"))
     changes.sort(key=lambda c: (_ORDER.index(c.kind), c.machine, c.program))
     return changes
 

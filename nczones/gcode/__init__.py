@@ -166,17 +166,17 @@ class Interpretation:
         piece of it starting at ``first_line``): its blocks, ending as ``unknown`` at an unsupported code."""
         it = self.interpreter
         if self.dialect != "fanuc":
-            yield from _blocks(text, self.file, self.block_delete, it, max_loop_iterations=self.max_loop_iterations)
+            yield from program_blocks(text, self.file, self.block_delete, it, max_loop_iterations=self.max_loop_iterations)
             return
         from .fanuc.program import FanucRunner
-        from .program import _StringSource
+        from .program import StringSource
 
-        runner = FanucRunner(_StringSource(text), self.file, self.fanuc_variables(), settings=self.machine.fanuc,
+        runner = FanucRunner(StringSource(text), self.file, self.fanuc_variables(), settings=self.machine.fanuc,
                              block_delete=self.block_delete, library=self.library, state=it,
                              max_loop_iterations=self.max_loop_iterations, first_line=first_line,
                              first_index=first_index, fast_runs=fast_runs, lane=it.lane_for_blocks())
         self.runners.append(runner)
-        yield from _unknown_at_unsupported(it, runner.run())
+        yield from unknown_at_unsupported(it, runner.run())
 
     def fanuc_variables(self):
         """The Fanuc variables all pieces of the program share (commons from the machine file)."""
@@ -242,7 +242,7 @@ def _cylindrical_lathe() -> type:
     return type("CylindricalLatheInterpreter", (CylindricalInterpreter, LatheInterpreter), {})
 
 
-def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,
+def program_blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,
             first_line: int = 1, max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS) -> Iterator[Any]:
     """The language layer's blocks; an UnsupportedGcode ends them as ``unknown``."""
     from .expr import Parameters
@@ -254,13 +254,13 @@ def _blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter |
                                max_loop_iterations=max_loop_iterations)
         return
     interpreter.bind_parameters(params)
-    yield from _unknown_at_unsupported(interpreter,
+    yield from unknown_at_unsupported(interpreter,
                                        iter_blocks(text, file=file, params=params, block_delete=block_delete,
                                                    max_loop_iterations=max_loop_iterations,
                                                    lane=interpreter.lane_for_blocks()))
 
 
-def _unknown_at_unsupported(interpreter: Interpreter, blocks: Iterable[Any]) -> Iterator[Any]:
+def unknown_at_unsupported(interpreter: Interpreter, blocks: Iterable[Any]) -> Iterator[Any]:
     """``blocks``; an UnsupportedGcode ends them, recorded as the interpreter's ``unknown`` reason."""
     from .program import UnsupportedGcode
 

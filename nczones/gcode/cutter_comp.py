@@ -63,7 +63,7 @@ __all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD"]
 #: LinuxCNC TOLERANCE_CONCAVE_CORNER: turns smaller than this (radians) need no corner arc.
 CONCAVE_TOLERANCE_RAD = 0.05
 _TOLERANCE_EQUAL = 1e-6
-_LEFT, _RIGHT = 2, 1
+LEFT, _RIGHT = 2, 1
 _INCH = Fraction(254, 10)
 _PI = math.pi
 _HALF_PI = math.pi / 2
@@ -118,7 +118,7 @@ def _find_turn(x1: float, y1: float, cx: float, cy: float, turn: int, x2: float,
 
 def _inside(side: int | None, turn: int) -> bool:
     """LinuxCNC TOOL_INSIDE_ARC: the tool is on the centre's side of the arc."""
-    return (side == _LEFT and turn > 0) or (side == _RIGHT and turn < 0)
+    return (side == LEFT and turn > 0) or (side == _RIGHT and turn < 0)
 
 
 def _arc_centre_r(op: tuple[float, float], e: tuple[float, float], radius: float, cw: bool,
@@ -230,7 +230,7 @@ class CutterComp:
         if self.side is not None:
             raise self._error(GC_STATE, f"{name}: cannot turn cutter radius compensation on when it is already on "
                               "(write G40 first)", word)
-        side = _LEFT if key in (410, 411) else _RIGHT
+        side = LEFT if key in (410, 411) else _RIGHT
         d = words.get("D")
         if key in (411, 421):
             if d is None:
@@ -270,20 +270,20 @@ class CutterComp:
                             "D<diameter> (orientation 0) or a mill tool in G17", word)
         if radius < 0.0:
             radius = -radius
-            side = _RIGHT if side == _LEFT else _LEFT
+            side = _RIGHT if side == LEFT else LEFT
         if it._u is not None:
             it._unknown(name, "cutter radius compensation in a rotated coordinate system (G10 L2 R) is not modelled",
                         word)
         if type(it).__name__ not in ("Interpreter", "LatheInterpreter"):
             it._unknown(name, "cutter radius compensation with cylindrical interpolation is not modelled", word)
         if it.ranged:
-            from .interpreter import _dadd
+            from .segments import dadd
 
             # the compensation is computed in the program frame; offsets cannot change while it is on, so
             # it follows the ranges exactly when the position it starts from is fixed in that frame
             ia, ib, _ = self._axes()
             moving = sorted({(src if src.startswith("H") else f"{src}.{it.axes[i]}")
-                             for i in (ia, ib) for src, c in _dadd(it.dep_pos[i], it.dep_off[i], -1).items()
+                             for i in (ia, ib) for src, c in dadd(it.dep_pos[i], it.dep_off[i], -1).items()
                              if c} & it.ranged)
             if moving:
                 it._unknown(name, f"cutter radius compensation starting from a position whose program coordinates "
@@ -363,7 +363,7 @@ class CutterComp:
 
     def _dequeue(self) -> None:
         """Emit the queued moves (LinuxCNC ``dequeue_canons``)."""
-        from .interpreter import _segment, _with_tool_deps
+        from .segments import make_segment, with_tool_deps
 
         it = self.it
         self.endpoint_valid = False
@@ -387,11 +387,11 @@ class CutterComp:
                 dt = it._tool_dep_names()
             arc = q.kind is SegmentKind.ARC
             if not it.unsupported:
-                seg = _segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
+                seg = make_segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
                                it.plane if arc else None, arc and q.turn < 0, q.centre if arc else None, None,
                                abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, ())
                 if dt:
-                    seg = _with_tool_deps(seg, dt)
+                    seg = with_tool_deps(seg, dt)
                 it._out.append(seg)
                 it.segment_count += 1
                 it.kind_counts[q.kind] += 1
@@ -482,7 +482,7 @@ class CutterComp:
         if distance <= radius:
             raise self._error(GC_ENTRY, "Length of cutter compensation entry move is not greater than the tool "
                               f"radius ({distance:.6f} <= {radius:.6f} program units)")
-        alpha = math.atan2(py - cy, px - cx) + (_PI / 2.0 if side == _LEFT else -_PI / 2.0)
+        alpha = math.atan2(py - cy, px - cx) + (_PI / 2.0 if side == LEFT else -_PI / 2.0)
         ex = px + radius * math.cos(alpha)
         ey = py + radius * math.sin(alpha)
         self._set_endpoint(cx, cy)
@@ -502,7 +502,7 @@ class CutterComp:
         small = CONCAVE_TOLERANCE_RAD
         theta = math.atan2(cy - opy, cx - opx)
         alpha = math.atan2(py - opy, px - opx)
-        if side == _LEFT:
+        if side == LEFT:
             if theta < alpha:
                 theta = theta + 2 * _PI
             beta = (theta - alpha) - _HALF_PI
@@ -519,7 +519,7 @@ class CutterComp:
         if beta < -small or beta > _PI + small:
             concave = True
         elif (beta > _PI - small and self.queue and self.queue[0].kind is SegmentKind.ARC
-              and ((side == _RIGHT and self.queue[0].turn > 0) or (side == _LEFT and self.queue[0].turn < 0))):
+              and ((side == _RIGHT and self.queue[0].turn > 0) or (side == LEFT and self.queue[0].turn < 0))):
             concave = True  # the "h" shape: stay above and to the side rather than loop around
         else:
             concave = False
@@ -531,7 +531,7 @@ class CutterComp:
             if kind is SegmentKind.LINE:
                 centre = (it.pos[ia], it.pos[ib])  # the programmed corner, exact
                 self._enqueue(_Move(SegmentKind.ARC, mid_x, mid_y, corner, ca=opx, cb=opy, centre=centre,
-                                    turn=-1 if side == _LEFT else 1, derived="cutter comp corner", deps=corner_deps))
+                                    turn=-1 if side == LEFT else 1, derived="cutter comp corner", deps=corner_deps))
             else:
                 self._enqueue(_Move(SegmentKind.RAPID, mid_x, mid_y, corner, derived="cutter comp corner",
                                     deps=corner_deps))
@@ -641,7 +641,7 @@ class CutterComp:
         if math.hypot(end_x - cx, end_y - cy) <= tool_radius:
             raise self._error(GC_ENTRY, "Radius of cutter compensation entry arc is not greater than the tool radius")
         arc_radius = abs(to_float(rw.value)) if rw is not None else math.hypot(center_x - cx, center_y - cy)
-        if arc_radius <= tool_radius and ((side == _LEFT and not cw) or (side == _RIGHT and cw)):
+        if arc_radius <= tool_radius and ((side == LEFT and not cw) or (side == _RIGHT and cw)):
             raise self._error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
                               f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
         if _inside(side, turn):
@@ -678,15 +678,15 @@ class CutterComp:
         small = CONCAVE_TOLERANCE_RAD
         arc_radius = math.hypot(centerx - end_x, centery - end_y)
         theta = math.atan2(cy - opy, cx - opx)
-        theta = theta - _HALF_PI if side == _LEFT else theta + _HALF_PI
+        theta = theta - _HALF_PI if side == LEFT else theta + _HALF_PI
         delta = math.atan2(centery - opy, centerx - opx)
         alpha = delta - _HALF_PI if not cw else delta + _HALF_PI
-        beta = theta - alpha if side == _LEFT else alpha - theta
+        beta = theta - alpha if side == LEFT else alpha - theta
         if beta > 1.5 * _PI:
             beta = beta - 2 * _PI
         elif beta < -_HALF_PI:
             beta = beta + 2 * _PI
-        if (side == _LEFT and not cw) or (side == _RIGHT and cw):
+        if (side == LEFT and not cw) or (side == _RIGHT and cw):
             gamma = math.atan2(centery - end_y, centerx - end_x)
             if arc_radius <= tool_radius:
                 raise self._error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
@@ -748,7 +748,7 @@ class CutterComp:
             corner = self._corner_end(end)
             corner_deps = [dict(d) for d in it.dep_pos] if it.track else None
             self._enqueue(_Move(SegmentKind.ARC, midx, midy, corner, ca=opx, cb=opy,
-                                centre=(it.pos[ia], it.pos[ib]), turn=-1 if side == _LEFT else 1,
+                                centre=(it.pos[ia], it.pos[ib]), turn=-1 if side == LEFT else 1,
                                 derived="cutter comp corner", deps=corner_deps))
             self._dequeue()
             self._set_endpoint(midx, midy)
@@ -768,15 +768,15 @@ class CutterComp:
             self._enqueue(_Move(SegmentKind.DWELL, 0.0, 0.0, [], dwell=seconds))
             return
         if it._machine_at is not None:  # after G40 the machine stands at the compensated point
-            from .interpreter import _segment, _with_tool_deps
+            from .segments import make_segment, with_tool_deps
 
             deps = it._deps_tuple(it.dep_pos) if it.track else ()
             dt = it._tool_dep_names() if it.track else ()
             if not it.unsupported:
                 at = tuple(it._machine_at)
-                seg = _segment(SegmentKind.DWELL, at, at, it.axes, it._index, it._span, it.tlo,
+                seg = make_segment(SegmentKind.DWELL, at, at, it.axes, it._index, it._span, it.tlo,
                                None, None, False, None, None, 0, seconds, "", it.tool_register, deps, deps, ())
-                it._out.append(_with_tool_deps(seg, dt) if dt else seg)
+                it._out.append(with_tool_deps(seg, dt) if dt else seg)
                 it.segment_count += 1
                 it.kind_counts[SegmentKind.DWELL] += 1
             return

@@ -43,7 +43,7 @@ from fractions import Fraction
 
 from ..motion import SegmentKind
 from .blocks import Block, Word
-from .interpreter import AXIS_LETTERS, INCH, ROTARY, Interpreter, _fmt, _gkey
+from .interpreter import AXIS_LETTERS, INCH, ROTARY, Interpreter, fmt_number, gkey
 
 __all__ = ["CylindricalInterpreter", "uses_cylindrical", "CylinderMode"]
 
@@ -125,7 +125,7 @@ class CylindricalInterpreter(Interpreter):
     cylinder: CylinderMode | None = None
 
     def execute(self, block: Block) -> None:
-        g7 = [w for w in block.words if w.letter == "G" and _gkey(w.value) in (_G71, _G107)]
+        g7 = [w for w in block.words if w.letter == "G" and gkey(w.value) in (_G71, _G107)]
         if g7:
             self._g071(block, g7)
         elif self.cylinder is None:
@@ -161,7 +161,7 @@ class CylindricalInterpreter(Interpreter):
             return
         if self.cylinder is not None:
             raise self._error("GC230", f"G07.1 {aw.text}: cylindrical interpolation is already on (radius "
-                              f"{_fmt(self.cylinder.radius)} mm); cancel it with G07.1 {self.cylinder.rotary}0 first", w)
+                              f"{fmt_number(self.cylinder.radius)} mm); cancel it with G07.1 {self.cylinder.rotary}0 first", w)
         from ..cylinder import LINEAR_AXIS_OF
 
         linear = LINEAR_AXIS_OF[letter]
@@ -184,7 +184,7 @@ class CylindricalInterpreter(Interpreter):
         g1 = None
         for w in block.words:
             if w.letter == "G":
-                k = _gkey(w.value)
+                k = gkey(w.value)
                 if k in _FORBIDDEN_WHY:
                     raise self._error("GC230", f"{w.text or 'G'}: {_FORBIDDEN_WHY[k]}", w)
                 if k not in _ALLOWED_G:
@@ -222,7 +222,7 @@ class CylindricalInterpreter(Interpreter):
         words: dict[str, Word] = {}
         for w in block.words:
             if w.letter == "G":
-                k = _gkey(w.value)
+                k = gkey(w.value)
                 if k in (900, 910):
                     self.absolute = k == 900
                     self.unset.discard("distance")
@@ -278,14 +278,14 @@ class CylindricalInterpreter(Interpreter):
             half = l2.sqrt() / 2
             raise self._error(
                 "GC330",
-                f"arc radius R{_fmt(abs(r))} mm is too small to reach the end point on the developed surface: "
-                f"half the chord is {_fmt(half.lo)} mm ({cyl.linear}{_fmt(z1 - z0)} mm and "
-                f"{cyl.rotary}{_fmt(c1 - c0)} deg = {_fmt(d.lo)} mm on a cylinder of radius {_fmt(cyl.radius)} mm; "
-                f"tolerance {_fmt(self.arc_tolerance)} mm)",
+                f"arc radius R{fmt_number(abs(r))} mm is too small to reach the end point on the developed surface: "
+                f"half the chord is {fmt_number(half.lo)} mm ({cyl.linear}{fmt_number(z1 - z0)} mm and "
+                f"{cyl.rotary}{fmt_number(c1 - c0)} deg = {fmt_number(d.lo)} mm on a cylinder of radius {fmt_number(cyl.radius)} mm; "
+                f"tolerance {fmt_number(self.arc_tolerance)} mm)",
                 rw,
             )
         if l2.hi > limit:
-            raise self._error("GC330", f"arc radius R{_fmt(abs(r))} mm is within 1e-40 mm of the limit of "
+            raise self._error("GC330", f"arc radius R{fmt_number(abs(r))} mm is within 1e-40 mm of the limit of "
                               "reach; it cannot be decided whether the arc is valid", rw)
         n0 = len(self._out)
         self._emit(SegmentKind.DEVELOPED_ARC, end, feed=True, clockwise=motion == 20, radius=r)

@@ -45,7 +45,7 @@ def accepts(line: str, dialect: str) -> bool:
     (True, False)
     """
     from ..errors import GcodeError as _E
-    from .interpreter import _GROUP_OF, _UNSUPPORTED_G, _gkey
+    from .interpreter import GROUP_OF, UNSUPPORTED_G, gkey
 
     try:
         if dialect == "fanuc":
@@ -64,12 +64,12 @@ def accepts(line: str, dialect: str) -> bool:
             if pl.unsupported is not None:
                 return False
             codes = [w[1][2] for w in pl.words if w[0] == "G" and w[1][0] == NUM]
-            table, unknown = _GROUP_OF, _UNSUPPORTED_G
+            table, unknown = GROUP_OF, UNSUPPORTED_G
     except _E:
         return False
     seen: set = set()
     for q in codes:
-        k = _gkey(q)
+        k = gkey(q)
         if k is None:
             return False
         g = table.get(k)

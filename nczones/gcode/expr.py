@@ -37,7 +37,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import InvalidArgument
-from .lexer import _fraction, _fraction_raw
+from .lexer import fraction_raw, to_fraction
 from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
 
 __all__ = [
@@ -81,7 +81,7 @@ class EvalError(Exception):
 Value = tuple  # (float, Fraction | None)
 
 
-def _pair(value: Any) -> Value:
+def pair(value: Any) -> Value:
     if isinstance(value, Fraction):
         return (value.numerator / value.denominator, value)
     if isinstance(value, bool):
@@ -155,7 +155,7 @@ class Parameters:
 
     def set(self, key: int | str, value: Any) -> None:
         """Set ``#key`` from a Fraction, int or float (no ``on_write`` call)."""
-        self._store(self._key(key), _pair(value))
+        self._store(self._key(key), pair(value))
 
     def provide(self, key: int | str, getter: Callable[[], object]) -> None:
         """Make ``#key`` a computed parameter: reads call ``getter()``."""
@@ -189,7 +189,7 @@ class Parameters:
     def read(self, key: int | str) -> Value:
         getter = self._providers.get(key)
         if getter is not None:
-            return _pair(getter())
+            return pair(getter())
         if isinstance(key, int):
             return self._num.get(key, (0.0, Fraction(0)))
         scope = self._globals if key.startswith("_") else self._scopes[-1]
@@ -241,7 +241,7 @@ def word_value(value: Value) -> Fraction:
     True
     """
     q = value[1]
-    return q if q is not None else _fraction(*value[0].as_integer_ratio())
+    return q if q is not None else to_fraction(*value[0].as_integer_ratio())
 
 
 def _keep(d: float, q: Fraction | None) -> Value:
@@ -251,7 +251,7 @@ def _keep(d: float, q: Fraction | None) -> Value:
     return (d, q)
 
 
-def _check(d: float) -> float:
+def check_double(d: float) -> float:
     if d != d:
         raise EvalError("GC312", "calculation resulted in 'not a number'")
     if d in (math.inf, -math.inf):
@@ -298,8 +298,8 @@ def evaluate(node: Any, params: Parameters) -> Value:
             parameter_key(node, params)  # raises its error
         getter = params._providers.get(index)
         if getter is None:
-            return params._num.get(index, _UNSET)
-        return _pair(getter())
+            return params._num.get(index, UNSET)
+        return pair(getter())
     if tag == PAR or tag == NPAR:
         key = parameter_key(node, params)
         try:
@@ -310,16 +310,16 @@ def evaluate(node: Any, params: Parameters) -> Value:
                                 "parameters) that nobody provided") from None
             raise EvalError("GC310", f"named parameter #<{key}> is not defined") from None
     if tag == BIN:
-        return _binary(node[1], evaluate(node[2], params), evaluate(node[3], params))
+        return binary_op(node[1], evaluate(node[2], params), evaluate(node[3], params))
     if tag == NEG:
         d, q = evaluate(node[1], params)
         return (-d, -q if q is not None else None)
     if tag == FN:
-        return _unary(node[1], evaluate(node[2], params))
+        return unary_op(node[1], evaluate(node[2], params))
     if tag == ATAN:
         y = evaluate(node[1], params)[0]
         x = evaluate(node[2], params)[0]
-        return (_check((math.atan2(y, x) * 180.0) / math.pi), None)
+        return (check_double((math.atan2(y, x) * 180.0) / math.pi), None)
     if tag == EXISTS:
         par = node[1]
         if par[0] == NPAR:
@@ -333,68 +333,68 @@ def evaluate(node: Any, params: Parameters) -> Value:
 
 _TRUE = (1.0, Fraction(1))
 _FALSE = (0.0, Fraction(0))
-_UNSET = (0.0, Fraction(0))  # what an unset numbered parameter reads
+UNSET = (0.0, Fraction(0))  # what an unset numbered parameter reads
 
 
-def _q_add(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots
+def q_add(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots
     """``a + b`` by integer arithmetic (the result is normalized, equal to Fraction's)."""
     if not a._numerator:
         same: Fraction = b
         return same
     da, db = a._denominator, b._denominator
     if da == db:
-        return _fraction(a._numerator + b._numerator, da)
-    return _fraction(a._numerator * db + b._numerator * da, da * db)
+        return to_fraction(a._numerator + b._numerator, da)
+    return to_fraction(a._numerator * db + b._numerator * da, da * db)
 
 
-def _q_sub(a: Any, b: Any) -> Fraction:
+def q_sub(a: Any, b: Any) -> Fraction:
     if not b._numerator:
         same: Fraction = a
         return same
     da, db = a._denominator, b._denominator
     if da == db:
-        return _fraction(a._numerator - b._numerator, da)
-    return _fraction(a._numerator * db - b._numerator * da, da * db)
+        return to_fraction(a._numerator - b._numerator, da)
+    return to_fraction(a._numerator * db - b._numerator * da, da * db)
 
 
-def _q_mul(a: Any, b: Any) -> Fraction:
-    return _fraction(a._numerator * b._numerator, a._denominator * b._denominator)
+def q_mul(a: Any, b: Any) -> Fraction:
+    return to_fraction(a._numerator * b._numerator, a._denominator * b._denominator)
 
 
-def _q_div(a: Any, b: Any) -> Fraction:
+def q_div(a: Any, b: Any) -> Fraction:
     """``a / b`` for ``b != 0``."""
     n, d = a._numerator * b._denominator, a._denominator * b._numerator
-    return _fraction(-n, -d) if d < 0 else _fraction(n, d)
+    return to_fraction(-n, -d) if d < 0 else to_fraction(n, d)
 
 
-if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
-    def _q_add(a: Any, b: Any) -> Fraction:  # noqa: F811
+if to_fraction is not fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
+    def q_add(a: Any, b: Any) -> Fraction:  # noqa: F811
         return Fraction(a + b)
 
-    def _q_sub(a: Any, b: Any) -> Fraction:  # noqa: F811
+    def q_sub(a: Any, b: Any) -> Fraction:  # noqa: F811
         return Fraction(a - b)
 
-    def _q_mul(a: Any, b: Any) -> Fraction:  # noqa: F811
+    def q_mul(a: Any, b: Any) -> Fraction:  # noqa: F811
         return Fraction(a * b)
 
-    def _q_div(a: Any, b: Any) -> Fraction:  # noqa: F811
+    def q_div(a: Any, b: Any) -> Fraction:  # noqa: F811
         return Fraction(a / b)
 
 
-def _binary(op: str, left: Value, right: Value) -> Value:
+def binary_op(op: str, left: Value, right: Value) -> Value:
     a, qa = left
     b, qb = right
     exact = qa is not None and qb is not None
     if op == "+":
-        return _keep(_check(a + b), _q_add(qa, qb) if exact else None)
+        return _keep(check_double(a + b), q_add(qa, qb) if exact else None)
     if op == "-":
-        return _keep(_check(a - b), _q_sub(qa, qb) if exact else None)
+        return _keep(check_double(a - b), q_sub(qa, qb) if exact else None)
     if op == "*":
-        return _keep(_check(a * b), _q_mul(qa, qb) if exact else None)
+        return _keep(check_double(a * b), q_mul(qa, qb) if exact else None)
     if op == "/":
         if b == 0.0:
             raise EvalError("GC311", "attempt to divide by zero")
-        return _keep(_check(a / b), _q_div(qa, qb) if exact and qb != 0 else None)
+        return _keep(check_double(a / b), q_div(qa, qb) if exact and qb != 0 else None)
     if op == "mod":
         if b == 0.0:
             raise EvalError("GC311", "attempt to take MOD by zero")
@@ -403,7 +403,7 @@ def _binary(op: str, left: Value, right: Value) -> Value:
         r = math.fmod(a, b)
         if r < 0.0:
             r = r + abs(b)
-        return (_check(r), None) if r != int(r) else (r, Fraction(int(r)))
+        return (check_double(r), None) if r != int(r) else (r, Fraction(int(r)))
     if op == "**":
         if a < 0.0 and math.floor(b) != b:
             raise EvalError("GC312", f"attempt to raise negative {a!r} to the non-integer power {b!r}")
@@ -411,7 +411,7 @@ def _binary(op: str, left: Value, right: Value) -> Value:
             r = math.pow(a, b)
         except (OverflowError, ValueError):
             raise EvalError("GC312", f"{a!r} ** {b!r} cannot be computed") from None
-        return (_check(r), Fraction(int(r)) if r == int(r) else None)
+        return (check_double(r), Fraction(int(r)) if r == int(r) else None)
     if op == "eq":
         return _TRUE if abs(a - b) < TOLERANCE_EQUAL else _FALSE
     if op == "ne":
@@ -433,7 +433,7 @@ def _binary(op: str, left: Value, right: Value) -> Value:
     raise AssertionError(op)  # pragma: no cover
 
 
-def _unary(name: str, value: Value) -> Value:
+def unary_op(name: str, value: Value) -> Value:
     d, q = value
     if d - d:  # only a literal too large for a double (or a parameter set from one) reaches here as inf
         raise EvalError("GC312", f"argument to {name.upper()} is {d!r}")
@@ -452,16 +452,16 @@ def _unary(name: str, value: Value) -> Value:
         if d < -1.0 or d > 1.0:
             raise EvalError("GC312", f"argument to {name.upper()} out of range: {d!r} (allowed -1 to 1)")
         r = math.acos(d) if name == "acos" else math.asin(d)
-        return (_check((r * 180.0) / math.pi), None)
+        return (check_double((r * 180.0) / math.pi), None)
     if name == "cos":
         return (math.cos((d * math.pi) / 180.0), None)
     if name == "sin":
         return (math.sin((d * math.pi) / 180.0), None)
     if name == "tan":
-        return (_check(math.tan((d * math.pi) / 180.0)), None)
+        return (check_double(math.tan((d * math.pi) / 180.0)), None)
     if name == "exp":
         try:
-            return (_check(math.exp(d)), None)
+            return (check_double(math.exp(d)), None)
         except OverflowError:
             raise EvalError("GC312", "calculation resulted in 'infinity'") from None
     if name == "ln":

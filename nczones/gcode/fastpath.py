@@ -62,12 +62,12 @@ from typing import Any
 import numpy as np
 
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
-from .interpreter import _LEAN_M
+from .interpreter import LEAN_M
 
 __all__ = ["run_with_fastpath", "MIN_RUN"]
 
 #: M codes a simple line may carry (spindle and coolant; the interpreter's plain lane takes the same).
-_LEAN_M_CODES = np.array(sorted(_LEAN_M), dtype=np.int64)
+_LEAN_M_CODES = np.array(sorted(LEAN_M), dtype=np.int64)
 #: Shorter runs of simple lines are left to the full interpreter.
 MIN_RUN = 64
 _MAX_SCALE = 9
@@ -89,7 +89,7 @@ def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[M
     block ends (each piece is interpreted in columns, with the modal state
     handed on through the interpreter).
     """
-    from . import _blocks
+    from . import program_blocks
     from .expr import Parameters
 
     it = interp.interpreter
@@ -107,7 +107,7 @@ def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[M
         if fanuc:
             yield from it.run(interp.blocks(interp.text))
             return
-        yield from it.run(_blocks(interp.text, interp.file, interp.block_delete, it,
+        yield from it.run(program_blocks(interp.text, interp.file, interp.block_delete, it,
                                   max_loop_iterations=interp.max_loop_iterations))
         return
     block_counter = [0]
@@ -175,12 +175,12 @@ def _language_layer_with_runs(interp: Any, runs: dict[int, list]) -> Iterator[Mo
     loops and subroutines too: a run is interpreted whenever the flow reaches it, from the state the
     interpreter is in at that moment.
     """
-    from . import _unknown_at_unsupported
+    from . import unknown_at_unsupported
     from .expr import Parameters
     from .program import (
         FastRunRequest,
-        _Runner,
-        _StringSource,
+        Runner,
+        StringSource,
     )
 
     it = interp.interpreter
@@ -189,9 +189,9 @@ def _language_layer_with_runs(interp: Any, runs: dict[int, list]) -> Iterator[Mo
     else:
         params = Parameters()
         it.bind_parameters(params)
-        runner = _Runner(_StringSource(interp.text), interp.file, params, interp.block_delete,
+        runner = Runner(StringSource(interp.text), interp.file, params, interp.block_delete,
                          interp.max_loop_iterations, 100, fast_runs=runs, lane=it.lane_for_blocks())
-        flow = _unknown_at_unsupported(it, runner.run())
+        flow = unknown_at_unsupported(it, runner.run())
     requests: list[FastRunRequest] = []
 
     def blocks():
@@ -549,7 +549,7 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, param
     piece = data[starts[i]:ends_[j - 1]].decode("utf-8", errors="surrogateescape")
     offset = i + line0  # the piece's first line is line offset + 1 of the program
 
-    from . import _unknown_at_unsupported
+    from . import unknown_at_unsupported
     from .expr import Parameters
     from .program import iter_blocks
 
@@ -560,7 +560,7 @@ def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, param
             params = Parameters()
             it.bind_parameters(params)
         # the piece's lines and blocks are numbered as in the whole program
-        blocks = _unknown_at_unsupported(it, iter_blocks(piece, file=interp.file, params=params,
+        blocks = unknown_at_unsupported(it, iter_blocks(piece, file=interp.file, params=params,
                                                          block_delete=interp.block_delete, first_line=offset + 1,
                                                          first_index=block_counter[0], lane=it.lane_for_blocks(),
                                                          max_loop_iterations=interp.max_loop_iterations))
@@ -1053,13 +1053,13 @@ def _arcs_ok(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca:
     unsure = ~clear_ok
     if not unsure.any():
         return True
-    from .interpreter import _sqrt_diff_exceeds
+    from .interpreter import sqrt_diff_exceeds
 
     tt = tol * 10**S
     for k in np.flatnonzero(unsure).tolist():
         a0 = (int(sa[k]) - int(ca[k])) ** 2 + (int(sb[k]) - int(cb[k])) ** 2
         a1 = (int(ea[k]) - int(ca[k])) ** 2 + (int(eb[k]) - int(cb[k])) ** 2
-        if a0 != a1 and _sqrt_diff_exceeds(Fraction(a0), Fraction(a1), tt):
+        if a0 != a1 and sqrt_diff_exceeds(Fraction(a0), Fraction(a1), tt):
             return False
     return True
 

@@ -40,12 +40,12 @@ from typing import Any
 
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
-from ..frozen import builder
 from ..machine import Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import LANE_FULL, Block, Word
 from .expr import EvalError
-from .lexer import PlainBlock, _fraction, _fraction_raw
+from .lexer import PlainBlock, fraction_raw, to_fraction
+from .segments import dadd, make_segment, with_tool_deps
 from .splines import SPLINE_CODES, spline_block, spline_pending
 from .state import StateParameter, StateTable, StateValue, linuxcnc_state_parameters
 
@@ -84,7 +84,7 @@ _WCS_BY_KEY = {540: "G54", 550: "G55", 560: "G56", 570: "G57", 580: "G58", 590: 
                591: "G59.1", 592: "G59.2", 593: "G59.3"}
 
 # G codes keyed by 10 * number (G59.1 -> 591).
-_GROUP_OF: dict[int, int] = {}
+GROUP_OF: dict[int, int] = {}
 for _g, _codes in {
     0: (40, 100, 280, 281, 300, 301, 520, 530, 920, 921, 922, 923),
     1: (0, 10, 20, 30, 330, 331, 382, 383, 384, 385, 730, 760, 800, 810, 820, 830, 840, 850,
@@ -103,7 +103,7 @@ for _g, _codes in {
     15: (70, 80),
 }.items():
     for _c in _codes:
-        _GROUP_OF[_c] = _g
+        GROUP_OF[_c] = _g
 
 #: Names of the modal groups the report mentions when the program never set them.
 MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90/G91)",
@@ -111,7 +111,7 @@ MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90
                      "feed": "feed mode (G93/G94/G95)", "tool": "tool length (G43/G49)"}
 
 # Codes that cannot be modelled exactly: key -> reason.
-_UNSUPPORTED_G = {
+UNSUPPORTED_G = {
     410: "cutter radius compensation (G41) offsets the path by the tool radius, and controls differ in how; "
          "if this machine is LinuxCNC, set cutter_compensation = \"linuxcnc\" in [machine] to model it",
     420: "cutter radius compensation (G42) offsets the path by the tool radius, and controls differ in how; "
@@ -164,12 +164,12 @@ _M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7
             68: 5, 70: 10, 71: 10, 72: 10, 73: 10}
 _NO_PLAN = object()
 #: Spindle and coolant M codes: no effect on motion, and a plain move may carry one (Interpreter._lean).
-_LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
+LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
 _CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
 _AXIS_USERS = {100: "G10", 280: "G28", 300: "G30", 920: "G92", 520: "G52"}
 
 
-class _Stop(Exception):
+class StopProgram(Exception):
     """Internal: the program ended (M2/M30)."""
 
 
@@ -185,7 +185,7 @@ class Unsupported:
         return f"{self.span if self.span else '<input>'}: unknown: {self.code}: {self.reason}"
 
 
-def _gkey(value: Fraction) -> int | None:
+def gkey(value: Fraction) -> int | None:
     d = value.denominator
     if d == 1:
         return value.numerator * 10
@@ -196,11 +196,7 @@ def _gkey(value: Fraction) -> int | None:
 
 
 _new = object.__new__
-#: ``Segment(...)`` with all fields but ``deps_tool`` positional, in order, built 3x faster (see nczones.frozen).
-_segment = builder(Segment, tuple(f for f in Segment.__dataclass_fields__ if f != "deps_tool"), deps_tool=())
-
-
-def _qadd(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots
+def qadd(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots
     """``a + b`` for Fractions, with a shortcut for equal denominators (decimal inputs)."""
     if not b._numerator:
         same: Fraction = a
@@ -208,13 +204,13 @@ def _qadd(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots
     da = a._denominator
     db = b._denominator
     if da == db:
-        return _fraction(a._numerator + b._numerator, da)
-    return _fraction(a._numerator * db + b._numerator * da, da * db)
+        return to_fraction(a._numerator + b._numerator, da)
+    return to_fraction(a._numerator * db + b._numerator * da, da * db)
 
 
 def _qinch(a: Any) -> Fraction:  # a Fraction, read through its slots
     """``a * 25.4`` (inches to mm) by integer arithmetic."""
-    return _fraction(a._numerator * 127, a._denominator * 5)
+    return to_fraction(a._numerator * 127, a._denominator * 5)
 
 
 def _qlt(a: Any, b: Any) -> bool:  # Fractions, read through their slots
@@ -223,8 +219,8 @@ def _qlt(a: Any, b: Any) -> bool:  # Fractions, read through their slots
     return less
 
 
-if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
-    def _qadd(a: Any, b: Any) -> Fraction:  # noqa: F811
+if to_fraction is not fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
+    def qadd(a: Any, b: Any) -> Fraction:  # noqa: F811
         total: Fraction = a + b
         return total
 
@@ -237,25 +233,14 @@ if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction
         return mm
 
 
-def _gname(key: int) -> str:
+def gname(key: int) -> str:
     return f"G{key // 10}" if key % 10 == 0 else f"G{key // 10}.{key % 10}"
 
 
-def _fmt(q: Fraction) -> str:
+def fmt_number(q: Fraction) -> str:
     from ..exact import format_decimal
 
     return format_decimal(q, places=6)
-
-
-def _dadd(a: dict, b: dict, sign: int = 1) -> dict:
-    out = dict(a)
-    for k, v in b.items():
-        n = out.get(k, 0) + sign * v
-        if n:
-            out[k] = n
-        else:
-            out.pop(k, None)
-    return out
 
 
 class Interpreter:
@@ -422,9 +407,9 @@ class Interpreter:
         if self.track:
             deps = []
             for i in range(self.naxes):
-                d = _dadd(self.dep_g5x[self.wcs][i], self.dep_g92[i])
+                d = dadd(self.dep_g5x[self.wcs][i], self.dep_g92[i])
                 if i == self.tool_axis:
-                    d = _dadd(d, self.dep_tlo)
+                    d = dadd(d, self.dep_tlo)
                 deps.append(d)
             self.dep_off = deps
 
@@ -449,7 +434,7 @@ class Interpreter:
             return
         ix, iy = self._ix, self._iy
         if ix < 0 or iy < 0:
-            self._unknown("G10 R", f"coordinate system rotation R{_fmt(r)} needs X and Y axes; this machine has "
+            self._unknown("G10 R", f"coordinate system rotation R{fmt_number(r)} needs X and Y axes; this machine has "
                           f"{', '.join(self.axes)}")
             return
         if self.track:
@@ -588,11 +573,11 @@ class Interpreter:
             de = self._deps_tuple(end_deps if end_deps is not None else self.dep_pos)
             dt = self._tool_dep_names()
         if not self.unsupported:
-            seg = _segment(kind, start, endt, self.axes, self._index, self._span, self.tlo, fmm,
+            seg = make_segment(kind, start, endt, self.axes, self._index, self._span, self.tlo, fmm,
                            plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
                            ds, de, ())
             if dt:
-                seg = _with_tool_deps(seg, dt)
+                seg = with_tool_deps(seg, dt)
             self._out.append(seg)
             self.segment_count += 1
             self.kind_counts[kind] += 1
@@ -680,7 +665,7 @@ class Interpreter:
         """Where axis ``i`` is in the current coordinate system (all offsets off), mm."""
         if self._u is not None and i in (self._ix, self._iy):
             return StateValue(self._u[0 if i == self._ix else 1] - self.g92[i], {})
-        return StateValue(self.pos[i] - self.off[i], self._named_deps(_dadd(self.dep_pos[i], self.dep_off[i], -1), i)
+        return StateValue(self.pos[i] - self.off[i], self._named_deps(dadd(self.dep_pos[i], self.dep_off[i], -1), i)
                           if self.track else {})
 
     def state_applied_tool_length(self) -> StateValue:
@@ -703,9 +688,9 @@ class Interpreter:
             return 400
         if self._comp is None or self._comp.side is None:
             return None
-        from .cutter_comp import _LEFT
+        from .cutter_comp import LEFT
 
-        return 410 if self._comp.side == _LEFT else 420
+        return 410 if self._comp.side == LEFT else 420
 
     # ------------------------------------------------------------------ driver
     def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
@@ -734,7 +719,7 @@ class Interpreter:
                         self._execute_general(block)
                 else:
                     self.execute(block)
-            except _Stop:
+            except StopProgram:
                 self.ended = True
             if len(self._out) >= size:
                 yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
@@ -765,7 +750,7 @@ class Interpreter:
         for w in block.words:
             letter = w.letter
             if letter == "G":
-                k = _gkey(w.value)
+                k = gkey(w.value)
                 if k is None:
                     raise self._error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at most one decimal", w)
                 gcodes.append((k, w))
@@ -800,14 +785,14 @@ class Interpreter:
         # ---- modal group checks
         groups: dict[int, tuple[int, Word]] = {}
         for k, w in gcodes:
-            g = _GROUP_OF.get(k)
+            g = GROUP_OF.get(k)
             if g is None:
-                if k in _UNSUPPORTED_G:
+                if k in UNSUPPORTED_G:
                     g = 100 + k
                 else:
-                    raise self._error("GC202", f"unknown G code {_gname(k)} (written {w.text or _gname(k)}); see specs/gcode-support.md for the supported codes", w)
+                    raise self._error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}); see specs/gcode-support.md for the supported codes", w)
             if g in groups:
-                raise self._error("GC201", f"{_gname(groups[g][0])} and {_gname(k)} are in the same modal group; a block may contain only one of them", w)
+                raise self._error("GC201", f"{gname(groups[g][0])} and {gname(k)} are in the same modal group; a block may contain only one of them", w)
             groups[g] = (k, w)
         mgroups: dict[int, tuple[int, Word]] = {}
         for k, w in mcodes:
@@ -820,7 +805,7 @@ class Interpreter:
         g0 = groups.get(0)
         g1 = groups.get(1)
         if g0 and g1 and g0[0] in _AXIS_USERS and g1[0] not in (800,) and axis_words:
-            raise self._error("GC205", f"{_gname(g0[0])} and {_gname(g1[0])} both use the axis words of the block; write them in separate blocks", g1[1])
+            raise self._error("GC205", f"{gname(g0[0])} and {gname(g1[0])} both use the axis words of the block; write them in separate blocks", g1[1])
         if g1 and g1[0] == 800 and axis_words and not (g0 and g0[0] in _AXIS_USERS):
             raise self._error("GC205", "G80 cancels the canned cycle and cannot take axis words; write the motion in a separate block", axis_words[0][1])
         # R word without a user
@@ -828,20 +813,20 @@ class Interpreter:
             motion_to_be = g1[0] if g1 else self.motion
             uses_r = (motion_to_be in (20, 30, 62) or motion_to_be in _CYCLES) and (g1 is not None or axis_words or g0 is None) \
                 or (g0 and g0[0] == 100) or (groups.get(13, (0,))[0] == 640) or any(k == 19 for k, _ in mcodes)
-            unknown_code = any(k in _UNSUPPORTED_G for k, _ in gcodes) or any(
+            unknown_code = any(k in UNSUPPORTED_G for k, _ in gcodes) or any(
                 k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99) for k, _ in mcodes)
             if not uses_r and not unknown_code and not self.unsupported:  # after unknown the mode is unknown
                 raise self._error("GC204", f"R word {words['R'].text or 'R'} with no G code that uses it (R is used by G2/G3, canned cycles and G10)", words["R"])
         if "R" in words and 19 in {k for k, _ in mcodes} and groups.get(13, (0,))[0] == 640:
             raise self._error("GC204", "R word is ambiguous in a block with both G64 and M19; write them in separate blocks", words["R"])
         if g1 and g1[0] in (382, 383, 384, 385) and not axis_words:
-            raise self._error("GC208", f"{_gname(g1[0])} without axis words: a probing move needs a target", g1[1])
+            raise self._error("GC208", f"{gname(g1[0])} without axis words: a probing move needs a target", g1[1])
         # unsupported codes: stop emitting, keep checking blocks
         for k, w in gcodes:
-            if k in _UNSUPPORTED_G:
+            if k in UNSUPPORTED_G:
                 if k in (410, 420, 411, 421) and self._comp is not None:
                     continue
-                self._unknown(_gname(k), _UNSUPPORTED_G[k], w)
+                self._unknown(gname(k), UNSUPPORTED_G[k], w)
                 if k in (410, 420, 411, 421):
                     self.comp_on = True
         for k, w in mcodes:
@@ -972,11 +957,11 @@ class Interpreter:
                 self._cycle_il = None
                 self._last_cycle = None
             if self._spline is not None and k not in (52, 53, 62):
-                self._unknown(_gname(k), spline_pending(self) + f" (motion changed to {_gname(k)})", g1[1])
+                self._unknown(gname(k), spline_pending(self) + f" (motion changed to {gname(k)})", g1[1])
                 self._spline = None
             if k == 800:
                 self.motion = None
-            elif k in _UNSUPPORTED_G:
+            elif k in UNSUPPORTED_G:
                 self.motion = None
             else:
                 self.motion = k
@@ -993,7 +978,7 @@ class Interpreter:
         if not nonmodal_uses_axes:
             if g53 and not (g1 and g1[0] in (0, 10)) and not (self.motion in (0, 10) and not g1):
                 raise self._error("GC207", "G53 needs G0 or G1 in the same block (or active)", g0[1] if g0 else None)
-            if axis_words or (g1 and g1[0] not in (800,) and g1[0] not in _UNSUPPORTED_G):
+            if axis_words or (g1 and g1[0] not in (800,) and g1[0] not in UNSUPPORTED_G):
                 if self.unsupported and not g1 and not axis_words:
                     pass
                 else:
@@ -1014,7 +999,7 @@ class Interpreter:
             elif 0 in mset or 1 in mset or 60 in mset:
                 self._comp.stop()
         if 2 in mset or 30 in mset:
-            raise _Stop
+            raise StopProgram
 
     def lane_for_blocks(self):
         """:meth:`lane` for the language layer's ``iter_blocks(..., lane=...)``, or None for an
@@ -1095,7 +1080,7 @@ class Interpreter:
         if extra or self.unsupported or self._u is not None or self._spline is not None or self.comp_on \
                 or self.comp_just_off or self._m73:
             return False
-        if m is not None and m not in _LEAN_M:
+        if m is not None and m not in LEAN_M:
             return False
         if g is not None:
             if g != 0 and g != 10:
@@ -1132,10 +1117,10 @@ class Interpreter:
             off = self.off
             for k, i in axis_at:
                 o: Any = off[i]  # a Fraction, read through its slots
-                end[i] = _qadd(values[k], o) if o._numerator else values[k]
+                end[i] = qadd(values[k], o) if o._numerator else values[k]
         else:
             for k, i in axis_at:
-                end[i] = _qadd(end[i], values[k])
+                end[i] = qadd(end[i], values[k])
         fmm = None
         if self.motion == 10:
             kind = SegmentKind.LINE
@@ -1147,7 +1132,7 @@ class Interpreter:
         else:
             kind = SegmentKind.RAPID
         end = tuple(end)
-        self._out.append(_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self._index,
+        self._out.append(make_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self._index,
                                   self._span, self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register,
                                   (), (), ()))
         self.segment_count += 1
@@ -1241,11 +1226,11 @@ class Interpreter:
                 if deps is not None:
                     deps[i] = {}
             elif absolute:
-                end[i] = _qadd(v, self.off[i])
+                end[i] = qadd(v, self.off[i])
                 if deps is not None:
                     deps[i] = dict(self.dep_off[i])
             else:
-                end[i] = _qadd(end[i], v)
+                end[i] = qadd(end[i], v)
         if self._u is not None:
             if g53:
                 self._machine_xy(end)
@@ -1296,7 +1281,7 @@ class Interpreter:
         elif motion in (330, 331):
             self._spindle_synced(motion, axis_words, words, g53)
         elif self._u is not None and not self.unsupported:
-            self._unknown(_gname(motion), f"{_gname(motion)} in a rotated coordinate system (G10 L2 R) is not modelled")
+            self._unknown(gname(motion), f"{gname(motion)} in a rotated coordinate system (G10 L2 R) is not modelled")
         elif motion in _CYCLES:
             self._cycle(motion, axis_words, words)
         elif motion in SPLINE_CODES:
@@ -1313,7 +1298,7 @@ class Interpreter:
         position stays at the start).  The feed is spindle speed x pitch, not
         F: ``feed_mm_min`` is None.
         """
-        name = _gname(motion)
+        name = gname(motion)
         if g53:
             raise self._error("GC207", f"G53 cannot be used with {name}")
         kw = words.get("K")
@@ -1396,8 +1381,8 @@ class Interpreter:
                 if h2 > (abs(r) + tol) ** 2:
                     raise self._error(
                         "GC302",
-                        f"arc radius R{_fmt(abs(r))} mm is too small to reach the end point (half the chord is "
-                        f"{_fmt(Fraction(h2))}**0.5 mm; tolerance {_fmt(tol)} mm)",
+                        f"arc radius R{fmt_number(abs(r))} mm is too small to reach the end point (half the chord is "
+                        f"{fmt_number(Fraction(h2))}**0.5 mm; tolerance {fmt_number(tol)} mm)",
                         rw,
                     )
             if rotated and (h2 * (1 - _TINY) ** -2 < r2 and h2 < r2):
@@ -1429,15 +1414,15 @@ class Interpreter:
         if r0 == 0 or r1 == 0:
             raise self._error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
         rejected = (_linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
-                    else r0 != r1 and _sqrt_diff_exceeds(r0, r1, tol))
+                    else r0 != r1 and sqrt_diff_exceeds(r0, r1, tol))
         if rejected:
             if self.arc_rule == "linuxcnc":
                 tol = Fraction(28284, 1000000)  # for the message: 2 * 0.01 * sqrt(2) mm
             raise self._error(
                 "GC301",
                 f"arc end point is off its circle: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm "
-                f"(start=({a_name}{_fmt(sa)},{b_name}{_fmt(sb)}) centre=({a_name}{_fmt(ca)},{b_name}{_fmt(cb)}) "
-                f"end=({a_name}{_fmt(ea)},{b_name}{_fmt(eb)}) in machine mm); allowed difference is {_fmt(tol)} mm",
+                f"(start=({a_name}{fmt_number(sa)},{b_name}{fmt_number(sb)}) centre=({a_name}{fmt_number(ca)},{b_name}{fmt_number(cb)}) "
+                f"end=({a_name}{fmt_number(ea)},{b_name}{fmt_number(eb)}) in machine mm); allowed difference is {fmt_number(tol)} mm",
                 iw or jw,
             )
         centre = self._rot_fwd(ca, cb) if rotated else (ca, cb)
@@ -1448,7 +1433,7 @@ class Interpreter:
     def _home(self, k: int, axis_words: list[tuple[int, Word]], w: Word) -> None:
         self._note_assumed(("units", "distance", "offset"))
         inter, deps = self._program_target(axis_words, False)
-        self._emit(SegmentKind.RAPID, inter, derived=f"{_gname(k)} intermediate", end_deps=deps)
+        self._emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
         home = self.home[k]
         end = list(self.pos)
         hdeps = [dict(d) for d in self.dep_pos] if self.track else None
@@ -1458,7 +1443,7 @@ class Interpreter:
             if hdeps is not None:
                 hdeps[i] = dict(self.dep_home[k][i])
         self._machine_xy(end)
-        self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} home", end_deps=hdeps)
+        self._emit(SegmentKind.RAPID, end, derived=f"{gname(k)} home", end_deps=hdeps)
 
     def _g10(self, words: dict[str, Word], axis_words: list[tuple[int, Word]], w: Word) -> None:
         lw, pw = words.get("L"), words.get("P")
@@ -1498,9 +1483,9 @@ class Interpreter:
                     tl = self.tlo if i == self.tool_axis else _ZERO
                     reg[i] = self.pos[i] - self.g92[i] - tl - v
                     if self.track:
-                        d = _dadd(self.dep_pos[i], self.dep_g92[i], -1)
+                        d = dadd(self.dep_pos[i], self.dep_g92[i], -1)
                         if i == self.tool_axis:
-                            d = _dadd(d, self.dep_tlo, -1)
+                            d = dadd(d, self.dep_tlo, -1)
                         dreg[i] = d
             self._recompute_offsets()
         else:
@@ -1552,9 +1537,9 @@ class Interpreter:
                     length = self.pos[i] - g5 - g92 - v
                     deps = {}
                     if self.track:
-                        deps = _dadd(self.dep_pos[i], self.dep_g5x["G59.3" if L == 11 else self.wcs][i], -1)
+                        deps = dadd(self.dep_pos[i], self.dep_g5x["G59.3" if L == 11 else self.wcs][i], -1)
                         if L != 11:
-                            deps = _dadd(deps, self.dep_g92[i], -1)
+                            deps = dadd(deps, self.dep_g92[i], -1)
                 self.tool_table[tool] = (length, deps)
             elif L != 1 or aw.value != 0:
                 self._unknown(f"G10 L{L}", f"G10 L{L} sets a tool offset on axis {self.axes[i]} ({aw.text}); nczones "
@@ -1572,9 +1557,9 @@ class Interpreter:
             tl = self.tlo if i == self.tool_axis else _ZERO
             self.g92[i] = self.pos[i] - self.g5x[self.wcs][i] - tl - v
             if self.track:
-                d = _dadd(self.dep_pos[i], self.dep_g5x[self.wcs][i], -1)
+                d = dadd(self.dep_pos[i], self.dep_g5x[self.wcs][i], -1)
                 if i == self.tool_axis:
-                    d = _dadd(d, self.dep_tlo, -1)
+                    d = dadd(d, self.dep_tlo, -1)
                 self.dep_g92[i] = d
         self.g92_params = list(self.g92)
         self.dep_g92_params = [dict(d) for d in self.dep_g92]
@@ -1612,14 +1597,14 @@ class Interpreter:
         rw = words.get("R")
         if rw is None:
             if first or self.cycle_r is None:
-                raise self._error("GC208", f"{_gname(motion)} needs an R word (the retract plane) the first time")
+                raise self._error("GC208", f"{gname(motion)} needs an R word (the retract plane) the first time")
             rprog = self.cycle_r
         else:
             rprog = rw.value
         cw_ = words.get(c_name)
         if cw_ is None:
             if first or self.cycle_cc is None:
-                raise self._error("GC208", f"{_gname(motion)} needs a {c_name} word (the bottom) the first time")
+                raise self._error("GC208", f"{gname(motion)} needs a {c_name} word (the bottom) the first time")
             cprog = self.cycle_cc
         else:
             cprog = cw_.value
@@ -1638,16 +1623,16 @@ class Interpreter:
                     raise self._error("GC209", f"dwell time {pw.text} is negative", pw)
                 self.cycle_p = pw.value
             elif first and motion != 840:
-                raise self._error("GC208", f"{_gname(motion)} needs a P word (dwell time) the first time")
+                raise self._error("GC208", f"{gname(motion)} needs a P word (dwell time) the first time")
             dwell = self.cycle_p if (pw is not None or not first) else _ZERO
         if motion in (730, 830):
             qw = words.get("Q")
             if qw is not None:
                 self.cycle_q = qw.value
             elif first or self.cycle_q is None:
-                raise self._error("GC208", f"{_gname(motion)} needs a Q word (peck depth) the first time")
+                raise self._error("GC208", f"{gname(motion)} needs a Q word (peck depth) the first time")
             if self.cycle_q <= 0:
-                raise self._error("GC209", f"peck depth Q{_fmt(self.cycle_q)} must be greater than 0", qw)
+                raise self._error("GC209", f"peck depth Q{fmt_number(self.cycle_q)} must be greater than 0", qw)
             delta = self._len(self.cycle_q)
         self._note_assumed(("units", "distance", "offset", "plane"))
         # Levels are (value, dependencies on axis ic); every comparison of two levels goes through
@@ -1663,25 +1648,25 @@ class Interpreter:
         wd = {self.axes[i]: aw for i, aw in axis_words}
         if self.absolute:
             inc_a = inc_b = _ZERO
-            r = _qadd(self._len(rprog), self.off[ic])
-            cc = _qadd(self._len(cprog), self.off[ic])
+            r = qadd(self._len(rprog), self.off[ic])
+            cc = qadd(self._len(cprog), self.off[ic])
             r_d = cc_d = self.dep_off[ic] if track else nodeps
-            aa = _qadd(self._len(wd[a_name].value), self.off[ia]) if a_name in wd else self.pos[ia]
-            bb = _qadd(self._len(wd[b_name].value), self.off[ib]) if b_name in wd else self.pos[ib]
+            aa = qadd(self._len(wd[a_name].value), self.off[ia]) if a_name in wd else self.pos[ia]
+            bb = qadd(self._len(wd[b_name].value), self.off[ib]) if b_name in wd else self.pos[ib]
             a_d = (self.dep_off[ia] if a_name in wd else self.dep_pos[ia]) if track else nodeps
             b_d = (self.dep_off[ib] if b_name in wd else self.dep_pos[ib]) if track else nodeps
         else:
             inc_a = self._len(wd[a_name].value) if a_name in wd else _ZERO
             inc_b = self._len(wd[b_name].value) if b_name in wd else _ZERO
-            r = _qadd(self._len(rprog), old_cc)
-            cc = _qadd(r, self._len(cprog))
+            r = qadd(self._len(rprog), old_cc)
+            cc = qadd(r, self._len(cprog))
             r_d = cc_d = old_d
             aa, bb = self.pos[ia], self.pos[ib]
             a_d = self.dep_pos[ia] if track else nodeps
             b_d = self.dep_pos[ib] if track else nodeps
         lt = self._level_lt
         if lt((r, r_d), (cc, cc_d), ic, "the retract plane R is below the bottom"):
-            raise self._error("GC306", f"canned cycle retract plane R ({_fmt(r)} mm machine) is below the bottom {c_name} ({_fmt(cc)} mm machine)", rw or cw_)
+            raise self._error("GC306", f"canned cycle retract plane R ({fmt_number(r)} mm machine) is below the bottom {c_name} ({fmt_number(cc)} mm machine)", rw or cw_)
 
         def go(kind, a, b, c, derived, here=False):
             """A move to (a, b) in the plane — the hole, or where the tool stands (``here``) — and level c."""
@@ -1695,7 +1680,7 @@ class Interpreter:
                 deps[ic] = dict(c[1])
             self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
 
-        name = _gname(motion)
+        name = gname(motion)
         if lt((old_cc, old_d), (r, r_d), ic, "the initial level is below R"):
             go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], (r, r_d), f"{name} up to R", here=True)
             old_cc, old_d = r, r_d
@@ -1703,8 +1688,8 @@ class Interpreter:
         clear = (r, r_d) if self.retract_r else (old_cc, old_d)
         for rep in range(reps):
             if rep or not self.absolute:  # absolute: the increments are zero
-                aa = _qadd(aa, inc_a)
-                bb = _qadd(bb, inc_b)
+                aa = qadd(aa, inc_a)
+                bb = qadd(bb, inc_b)
             if rep == 0 and lt((r, r_d), (current_cc, current_d), ic, "R is below the current level"):
                 go(SegmentKind.RAPID, aa, bb, (current_cc, current_d), f"{name} position")
                 go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} to R")
@@ -1757,7 +1742,7 @@ class Interpreter:
             return nominal
         axis = self.axes[i]
         coeffs: dict[str, Fraction] = {}
-        for src, c in _dadd(b[1], a[1], -1).items():
+        for src, c in dadd(b[1], a[1], -1).items():
             name = src if src.startswith("H") else f"{src}.{axis}"
             if name in self.ranged and c:
                 coeffs[name] = coeffs.get(name, 0) + c
@@ -1783,7 +1768,7 @@ class Interpreter:
             if self.branch_split is None:
                 self.branch_split = (n, -d0 / c)
             self._unknown("parameter range", f"the canned cycle's branch ({what}) depends on {n}: it switches at "
-                          f"{n} = {_fmt(self._written_deviation(n, -d0 / c))} inside the range; each side is a "
+                          f"{n} = {fmt_number(self._written_deviation(n, -d0 / c))} inside the range; each side is a "
                           "different path")
         elif always or never:
             self._unknown("parameter range", f"the canned cycle's branch ({what}) at the nominal values differs from "
@@ -1836,12 +1821,6 @@ class Interpreter:
 _LINUXCNC_STATE = linuxcnc_state_parameters()
 
 
-def _with_tool_deps(seg: Segment, names: tuple[str, ...]) -> Segment:
-    from dataclasses import replace
-
-    return replace(seg, deps_tool=names)
-
-
 def _show_key(key: int | str) -> str:
     return f"#{key}" if isinstance(key, int) else f"#<{key}>"
 
@@ -1873,7 +1852,7 @@ def _linuxcnc_rejects_arc(r0_sq: Fraction, r1_sq: Fraction, inch: bool) -> bool:
     return abs_err > 100 * tol or (abs_err > tol and rel_err > 0.001)
 
 
-def _sqrt_diff_exceeds(a: Fraction, b: Fraction, t: Fraction) -> bool:
+def sqrt_diff_exceeds(a: Fraction, b: Fraction, t: Fraction) -> bool:
     """Exactly: |sqrt(a) - sqrt(b)| > t for a, b >= 0, t >= 0."""
     # (sqrt a - sqrt b)^2 = a + b - 2 sqrt(ab) > t^2  <=>  a + b - t^2 > 2 sqrt(ab)
     lhs = a + b - t * t

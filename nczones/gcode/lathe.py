@@ -22,7 +22,7 @@ from ..machine import Machine
 from ..motion import Plane, SegmentKind
 from . import g7x
 from .blocks import Block, ShapeBlock, Word
-from .interpreter import INCH, Interpreter, _dadd, _gkey, _qadd
+from .interpreter import INCH, Interpreter, dadd, gkey, qadd
 
 __all__ = ["LatheInterpreter", "uses_lathe"]
 
@@ -74,7 +74,7 @@ class LatheInterpreter(Interpreter):
         if self._m73:
             self._m73_returns()
         block = self._diameter_words(block)
-        cycle = next(((k, w) for w in block.words if w.letter == "G" and (k := _gkey(w.value)) in _G7X_KEYS), None)
+        cycle = next(((k, w) for w in block.words if w.letter == "G" and (k := gkey(w.value)) in _G7X_KEYS), None)
         if cycle is None:
             self._execute_general(block)
         else:
@@ -84,12 +84,12 @@ class LatheInterpreter(Interpreter):
     def _diameter_words(self, block: Block) -> Block:
         """The block with G7/G8 acted on (and taken out) and its X word halved in diameter mode."""
         words = block.words
-        modes = [w for w in words if w.letter == "G" and _gkey(w.value) in (70, 80)]
+        modes = [w for w in words if w.letter == "G" and gkey(w.value) in (70, 80)]
         if modes:
             if len(modes) > 1:
                 raise self._error("GC201", "G7 and G8 are in the same modal group; a block may contain only one of "
                                   "them", modes[1])
-            self.diameter_mode = _gkey(modes[0].value) == 70
+            self.diameter_mode = gkey(modes[0].value) == 70
             words = tuple(w for w in words if w is not modes[0])
         if self.diameter_mode and any(w.letter == "X" for w in words):
             words = tuple(replace(w, value=w.value / 2) if w.letter == "X" else w for w in words)
@@ -114,7 +114,7 @@ class LatheInterpreter(Interpreter):
             elif w is not gw:
                 rest.append(w)
         for w in rest:
-            if w.letter not in "GMFSTN" or (w.letter == "G" and _gkey(w.value) in (0, 10, 20, 30, 280, 300, 920, 100,
+            if w.letter not in "GMFSTN" or (w.letter == "G" and gkey(w.value) in (0, 10, 20, 30, 280, 300, 920, 100,
                                                                                     520, 530, 800)):
                 raise self._error("GC205", f"{w.text or w.letter} in the block of the lathe cycle {name}: write it in "
                                   "a block of its own", w)
@@ -150,7 +150,7 @@ class LatheInterpreter(Interpreter):
         if self.track:
             ranged = getattr(self, "ranged", None)
             for i in (iz, ix):
-                d = _dadd(self.dep_pos[i], self.dep_off[i], -1)
+                d = dadd(self.dep_pos[i], self.dep_off[i], -1)
                 names = sorted(k for k in d if ranged is None or f"{k}.{self.axes[i]}" in ranged or k in ranged)
                 if names:
                     self._unknown("parameter range", f"{name}: the cycle's start point in the workpiece coordinate "
@@ -202,7 +202,7 @@ class LatheInterpreter(Interpreter):
                                   "is not modelled", gw)
                     return None
                 if w.letter == "G":
-                    k = _gkey(w.value)
+                    k = gkey(w.value)
                     if k not in (0, 10, 20, 30):
                         self._unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
                                       "G1 G2 G3 are modelled there (LinuxCNC ignores other codes of a profile block)",
@@ -289,8 +289,8 @@ class LatheInterpreter(Interpreter):
         motion = self.motion
         for m in moves:
             end = list(self.pos)
-            end[iz] = _qadd(Fraction(m.end.real) * unit, self.off[iz])
-            end[ix] = _qadd(Fraction(m.end.imag) * unit, self.off[ix])
+            end[iz] = qadd(Fraction(m.end.real) * unit, self.off[iz])
+            end[ix] = qadd(Fraction(m.end.imag) * unit, self.off[ix])
             deps = None
             if self.track:
                 deps = [dict(d) for d in self.dep_pos]
@@ -307,8 +307,8 @@ class LatheInterpreter(Interpreter):
             else:
                 assert m.centre is not None
                 self._check_feed()
-                centre = (_qadd(Fraction(m.centre.real) * unit, self.off[iz]),
-                          _qadd(Fraction(m.centre.imag) * unit, self.off[ix]))
+                centre = (qadd(Fraction(m.centre.real) * unit, self.off[iz]),
+                          qadd(Fraction(m.centre.imag) * unit, self.off[ix]))
                 self._emit(SegmentKind.ARC, end, feed=True, plane=Plane.XZ, clockwise=not m.ccw, centre=centre,
                            derived=derived, end_deps=deps)
                 motion = 30 if m.ccw else 20

@@ -67,7 +67,7 @@ _BLANKS = re.compile(r"[ \t]+")
 _PLAIN_SPLIT = re.compile(rf"([A-NP-Za-np-z])[ \t]*({_PLAIN_NUMBER})")
 
 
-def _fraction_raw(n: int, d: int) -> Fraction:
+def fraction_raw(n: int, d: int) -> Fraction:
     """Fraction(n, d) for d > 0 without the generic constructor (5x faster)."""
     g = _gcd(n, d)
     q = _new(Fraction)
@@ -91,12 +91,12 @@ def _double_raw(x: float) -> Fraction:
 
 _new = object.__new__
 try:  # relies on CPython's Fraction slots; verified here, else the public constructor
-    _f = _fraction_raw(-25, 10)
-    _fraction = _fraction_raw if (_f == Fraction(-5, 2) and hash(_f) == hash(Fraction(-5, 2))
+    _f = fraction_raw(-25, 10)
+    to_fraction = fraction_raw if (_f == Fraction(-5, 2) and hash(_f) == hash(Fraction(-5, 2))
                                   and _f.denominator == 2) else _fraction_safe
 except Exception:  # noqa: BLE001  # pragma: no cover
-    _fraction = _fraction_safe
-_double = _double_raw if _fraction is _fraction_raw else Fraction
+    to_fraction = _fraction_safe
+to_double = _double_raw if to_fraction is fraction_raw else Fraction
 
 
 @lru_cache(maxsize=8192)  # bounded: memory must not grow with the program
@@ -116,7 +116,7 @@ def decimal_value(text: str) -> Fraction:
         t = t[1:]
     whole, _point, frac = t.partition(".")
     n = int(whole + frac) if (whole or frac) else 0
-    return _fraction(-n if negative else n, 10 ** len(frac))
+    return to_fraction(-n if negative else n, 10 ** len(frac))
 
 
 @lru_cache(maxsize=8192)  # bounded, as above
@@ -127,7 +127,7 @@ def plain_decimal_value(text: str) -> Fraction:
     (Fraction(-1, 4), Fraction(7, 1))
     """
     whole, _point, frac = text.partition(".")
-    return _fraction(int(whole + frac), _POW10[len(frac)] if len(frac) < 24 else 10 ** len(frac))
+    return to_fraction(int(whole + frac), _POW10[len(frac)] if len(frac) < 24 else 10 ** len(frac))
 
 
 _POW10 = tuple(10**k for k in range(24))
@@ -276,7 +276,7 @@ def scan_plain(line: str) -> tuple | None:
     >>> scan_plain("G1 X1 (cut)") is None
     True
     """
-    if _fraction is not _fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
+    if to_fraction is not fraction_raw:  # pragma: no cover - a Python whose Fraction has other slots
         return None
     parts = _PLAIN_SPLIT.split(line)
     delete = False
@@ -310,7 +310,7 @@ def plain_control(letters: str, values: tuple) -> bool:
     i = letters.find("M")
     while i >= 0:
         v = values[i]
-        if v._denominator == 1 and v._numerator in _M_CONTROL:
+        if v._denominator == 1 and v._numerator in M_CONTROL:
             return True
         i = letters.find("M", i + 1)
     i = letters.find("G")
@@ -322,8 +322,8 @@ def plain_control(letters: str, values: tuple) -> bool:
     return False
 
 
-_M_CONTROL = frozenset((2, 30, 97, 98, 99))  # M codes the language layer acts on
-_G_MACRO_CALLS = frozenset((Fraction(65), Fraction(66), Fraction(661, 10), Fraction(67)))  # G65 G66 G66.1 G67
+M_CONTROL = frozenset((2, 30, 97, 98, 99))  # M codes the language layer acts on
+G_MACRO_CALLS = frozenset((Fraction(65), Fraction(66), Fraction(661, 10), Fraction(67)))  # G65 G66 G66.1 G67
 
 
 class PlainBlock(Block):

@@ -150,7 +150,7 @@ def _compress(line: str) -> tuple[str, list[int]]:
     return "".join(parts), cols
 
 
-class _Parser:
+class Parser:
     __slots__ = ("s", "cols", "n", "line")
 
     def __init__(self, line: str):
@@ -434,7 +434,7 @@ def parse_line(line: str, lineno: int, file: str) -> ParsedLine:
         G1 X1 (oops
               ^~~~~
     """
-    p = _Parser(line)
+    p = Parser(line)
     try:
         return p.parse()
     except LineSyntaxError as e:
@@ -444,7 +444,7 @@ def parse_line(line: str, lineno: int, file: str) -> ParsedLine:
                                     SourceSpan(file, lineno, 1, None, line))) from None
 
 
-def diagnostic_at(p: _Parser, e: LineSyntaxError, lineno: int, file: str) -> Diagnostic:
+def diagnostic_at(p: Parser, e: LineSyntaxError, lineno: int, file: str) -> Diagnostic:
     start = p.col(e.start)
     end = p.col(e.end) if e.end is not None and e.end > e.start else start + 1
     if e.end is not None and e.end > e.start:

@@ -99,8 +99,8 @@ from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import LANE_FULL, Block, ShapeBlock
 from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
 from .lexer import (
-    _G_MACRO_CALLS,
-    _M_CONTROL,
+    G_MACRO_CALLS,
+    M_CONTROL,
     magic_comment,
     make_span,
     make_word,
@@ -167,7 +167,7 @@ class _Source:
         raise NotImplementedError
 
 
-class _StringSource(_Source):
+class StringSource(_Source):
     __slots__ = ("text", "n")
     text: str
     n: int
@@ -279,7 +279,7 @@ class FastRunRequest:
         self.pos, self.lineno, self.index, self.resume = pos, lineno, index, None
 
 
-class _Runner:
+class Runner:
     def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
                  fast_runs: dict | None = None, lane: Any = None):
@@ -397,7 +397,7 @@ class _Runner:
         src = self.src
         file = self.file
         cache = self.cache
-        in_text = type(src) is _StringSource
+        in_text = type(src) is StringSource
         fast = self.fast_runs
         lane = self.lane
         declined = -1  # the offset whose request the caller just declined
@@ -415,7 +415,7 @@ class _Runner:
             if in_text and pos and len(self.frames) == 1 and not self.frames[0].loops:
                 # a run of plain and compiled lines of the main program (no control, nothing to cache):
                 # the paths below, without the general loop's bookkeeping; stops before any other line
-                assert isinstance(src, _StringSource)
+                assert isinstance(src, StringSource)
                 text, n, delete_on = src.text, src.n, self.block_delete
                 while pos < n:
                     if fast and pos in fast and pos != declined:
@@ -544,7 +544,7 @@ class _Runner:
                     letter = w.letter
                     if letter == "M":
                         v = w.value
-                        if v.denominator == 1 and v.numerator in _M_CONTROL:
+                        if v.denominator == 1 and v.numerator in M_CONTROL:
                             stop = True
                             break
                     elif letter == "G":
@@ -638,7 +638,7 @@ class _Runner:
                                            lineno, line, col, end)
                 if n in (2, 30):
                     stop = True
-            if letter == "G" and 65 <= value.numerator // value.denominator <= 67 and value in _G_MACRO_CALLS:
+            if letter == "G" and 65 <= value.numerator // value.denominator <= 67 and value in G_MACRO_CALLS:
                 raise self.unsupported("GC301", f"G{value} macro calls are not supported", lineno, line, col, end)
             words.append((letter, value, col, end, text))
         values = []
@@ -1072,7 +1072,7 @@ def iter_blocks(
     """
     if not isinstance(text, str):
         raise TypeError(f"iter_blocks expects the program text as str, got {type(text).__name__}")
-    runner = _Runner(_StringSource(text), file, params if params is not None else Parameters(), block_delete,
+    runner = Runner(StringSource(text), file, params if params is not None else Parameters(), block_delete,
                      max_loop_iterations, max_call_depth, first_line, first_index, lane=lane)
     return runner.run()
 
@@ -1101,7 +1101,7 @@ def read_program(
 
     def gen() -> Iterator[Block]:
         with open(path, "rb") as f:
-            runner = _Runner(_FileSource(f), str(path), params if params is not None else Parameters(),
+            runner = Runner(_FileSource(f), str(path), params if params is not None else Parameters(),
                              block_delete, max_loop_iterations, max_call_depth)
             yield from runner.run()
 

@@ -35,9 +35,20 @@ from operator import itemgetter
 from typing import Any
 
 from ..frozen import builder
-from .expr import _UNSET, EvalError, _binary, _check, _pair, _q_add, _q_div, _q_mul, _q_sub, _unary
-from .lexer import _G_MACRO_CALLS, _M_CONTROL, _double, plain_decimal_value
-from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, ParsedLine, _Parser, parse_line
+from .expr import (
+    UNSET,
+    EvalError,
+    binary_op,
+    check_double,
+    pair,
+    q_add,
+    q_div,
+    q_mul,
+    q_sub,
+    unary_op,
+)
+from .lexer import G_MACRO_CALLS, M_CONTROL, plain_decimal_value, to_double
+from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, ParsedLine, Parser, parse_line
 
 __all__ = ["parse_line_shaped", "line_shaped", "CompiledLine", "MAX_SHAPES", "RUNS", "LAYOUT", "compiled_line"]
 
@@ -287,14 +298,14 @@ _parsed_line = builder(ParsedLine, ("delete", "number", "words", "assigns"), owo
 _new = object.__new__
 
 
-class _Recording(_Parser):
+class _Recording(Parser):
     """The parser, noting the raw span and node of every number it reads."""
 
     __slots__ = ("numbers",)
     numbers: list[tuple[int, int, Any]]
 
     def number(self, i: int) -> tuple[Any, int]:
-        node, j = _Parser.number(self, i)
+        node, j = Parser.number(self, i)
         self.numbers.append((self.cols[i], self.cols[j - 1] + 1, node))
         return node, j
 
@@ -354,11 +365,11 @@ def _executor(spans: list[tuple[int, int]], pl: ParsedLine, leaf_of: dict[int, s
             if lazy:
                 body.append(f"v{k} = {q}")
             else:
-                body.append(f"v{k} = {q} if {q} is not None else _double({d})")
+                body.append(f"v{k} = {q} if {q} is not None else to_double({d})")
         if letter == "M":
             body.append(f"if v{k}._denominator == 1 and v{k}._numerator in _STOP_M: return None")
         elif letter == "G":
-            body.append(f"if 65 <= v{k}._numerator // v{k}._denominator <= 72 and (v{k} in _G_MACRO_CALLS or "
+            body.append(f"if 65 <= v{k}._numerator // v{k}._denominator <= 72 and (v{k} in G_MACRO_CALLS or "
                         f"v{k}._numerator // v{k}._denominator >= 70): return None")  # macro calls, G70-G72 profiles
         columns.append(f"({at(col - 1)}+1, {at(end - 1)}+1, line[{at(col - 1)}:{at(end - 1)}])")
     writes = []
@@ -390,9 +401,9 @@ def _executor(spans: list[tuple[int, int]], pl: ParsedLine, leaf_of: dict[int, s
     lines += ["def columns(P, line):", "    D = [0]"]
     lines += [f"    D.append(D[-1] + len(P[{k}]) - {b - a})" for k, (a, b) in enumerate(spans)]
     lines.append(f"    return [{''.join(c + ', ' for c in columns)}]")
-    scope: dict[str, Any] = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "_double": _double,
-             "_STOP_M": _M_CONTROL, "_G_MACRO_CALLS": _G_MACRO_CALLS, "EvalError": EvalError, "_UNSET": _UNSET, "_pair": _pair, "_binary": _binary, "_unary": _unary,
-             "_q_add": _q_add, "_q_sub": _q_sub, "_q_mul": _q_mul, "_q_div": _q_div, "_atan": _atan,
+    scope: dict[str, Any] = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "to_double": to_double,
+             "_STOP_M": M_CONTROL, "G_MACRO_CALLS": G_MACRO_CALLS, "EvalError": EvalError, "UNSET": UNSET, "pair": pair, "binary_op": binary_op, "unary_op": unary_op,
+             "q_add": q_add, "q_sub": q_sub, "q_mul": q_mul, "q_div": q_div, "_atan": _atan,
              "_IDX": _IDX, "_index": _index}
     exec(compile("\n".join(lines) + "\n", "<line shape run>", "exec"), scope)  # noqa: S102  # reprs only
     return scope["run"], scope["columns"]
@@ -431,14 +442,14 @@ def _decimal(text: str) -> Any:
 
 
 def _atan(y: float, x: float) -> float:
-    return _check((math.atan2(y, x) * 180.0) / math.pi)
+    return check_double((math.atan2(y, x) * 180.0) / math.pi)
 
 
 class _Emit:
     """Straight-line code for an expression tree: each node's double in a local ``dN`` and its shadow
     in ``qN`` (None when dropped), or, for a literal, the source computing its shadow (``lazy``)."""
 
-    _Q = {"+": "_q_add", "-": "_q_sub", "*": "_q_mul", "/": "_q_div"}
+    _Q = {"+": "q_add", "-": "q_sub", "*": "q_mul", "/": "q_div"}
 
     def __init__(self, leaf_of: dict[int, str]):
         self.leaf_of = leaf_of
@@ -466,7 +477,7 @@ class _Emit:
             out += [f"i = _IDX.get({src}) or _index({src})",
                     "if not 1 <= i <= params.max_parameter: return None",
                     "g = providers.get(i)",
-                    f"{d}, {q} = num.get(i, _UNSET) if g is None else _pair(g())"]
+                    f"{d}, {q} = num.get(i, UNSET) if g is None else pair(g())"]
             return d, q, False
         if tag == NPAR:
             out += ["try:", f"    {d}, {q} = params.read({node[1]!r})", "except KeyError:", "    return None"]
@@ -477,7 +488,7 @@ class _Emit:
             db, qb, lzb = self.value(node[3], out)
             qfn = self._Q.get(op)
             if qfn is None:  # mod, **, comparisons, logic: no shadow read
-                out.append(f"{d}, {q} = _binary({op!r}, ({da}, None), ({db}, None))")
+                out.append(f"{d}, {q} = binary_op({op!r}, ({da}, None), ({db}, None))")
                 return d, q, False
             if op == "/":
                 out.append(f"if {db} == 0.0: return None")
@@ -485,7 +496,7 @@ class _Emit:
             cond = " and ".join([f"{x} is not None" for x, lz in ((qa, lza), (qb, lzb)) if not lz]) or "True"
             out += [f"if {cond}:", f"    a = {qa}", f"    b = {qb}"]
             if op == "/":
-                out += ["    if b != 0:", "        c = _q_div(a, b)",
+                out += ["    if b != 0:", "        c = q_div(a, b)",
                         f"        if c._numerator / c._denominator == {d}: {q} = c"]
             else:
                 out += [f"    c = {qfn}(a, b)", f"    if c._numerator / c._denominator == {d}: {q} = c"]
@@ -501,12 +512,12 @@ class _Emit:
             name = node[1]
             da, qa, lza = self.value(node[2], out)
             if name == "abs":
-                out += [f"if {da} - {da}: return None", f"{d} = abs({da})"]  # inf: _unary's error
+                out += [f"if {da} - {da}: return None", f"{d} = abs({da})"]  # inf: unary_op's error
                 if lza:
                     return d, f"abs({qa})", True
                 out.append(f"{q} = abs({qa}) if {qa} is not None else None")
                 return d, q, False
-            out.append(f"{d}, {q} = _unary({name!r}, ({da}, None))")  # only ABS reads the shadow
+            out.append(f"{d}, {q} = unary_op({name!r}, ({da}, None))")  # only ABS reads the shadow
             return d, q, False
         if tag == ATAN:
             dy, _qy, _ly = self.value(node[1], out)

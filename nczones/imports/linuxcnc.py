@@ -19,7 +19,7 @@ from pathlib import Path
 
 from ..errors import SourceSpan
 from ..exact import MAX_ABS_LENGTH, format_decimal
-from ..machine import _MODAL_CHOICES, DEFAULT_MODAL, ROTARY_AXES, WORK_OFFSETS
+from ..machine import DEFAULT_MODAL, MODAL_CHOICES, ROTARY_AXES, WORK_OFFSETS
 from .ini import IniEntry, IniFile, parse_ini
 from .model import (
     INCH,
@@ -50,7 +50,7 @@ _FALSE = ("0", "false", "no", "off")
 _SCALE_KEYS = ("SCALE", "STEP_SCALE", "INPUT_SCALE")
 
 #: The modal groups the machine file's ``modal`` list holds.
-MODAL_GROUPS = _MODAL_CHOICES
+MODAL_GROUPS = MODAL_CHOICES
 
 
 @dataclass

@@ -4,7 +4,7 @@ Every arc kind the prover meets — I/J arcs (rational centre), R-format arcs
 (irrational centre), spirals (I/J arcs whose end radius differs within the
 tolerance), helices and multi-turn helices — is cut into pieces of at most a
 quarter turn.  Each piece is enclosed in a rational box; a box that fits
-every zone with the margin (:func:`nczones.prover.core.box_fits`, exact for
+every zone with the margin (:func:`nczones.prover.exact.box_fits`, exact for
 boxes and stepped tables) proves the piece.  A piece that does not fit is
 halved, and at each new division point the path point's enclosure (a box of
 width about ``2**-90``, or the exact rational point of a circle) is tested:
@@ -54,8 +54,8 @@ from typing import Any
 
 from ..motion import Segment
 from . import exact as ex
-from .geometry import ArcGeom, atan_bounds, in_sweep, pi_bounds, sqrt_bounds  # noqa: F401
-from .result import Violation
+from .geometry import ArcGeom, atan_bounds, half_tan, in_sweep, pi_bounds, simple_in, sqrt_bounds  # noqa: F401
+from .result import Outcome, Violation
 
 __all__ = ["ArcEnclosure", "decide_arc", "MAX_PIECES", "MAX_DEPTH"]
 
@@ -287,9 +287,9 @@ class ArcEnclosure:
             marks.append(_Mark("E", Fraction(quarters)))
             return marks
         w = (g.e[0] - self.cstar[0], g.e[1] - self.cstar[1])
-        from .refine import _quarter_of
+        from .refine import quarter_of
 
-        k, exact_end = _quarter_of(self.u, w, self.ccw)
+        k, exact_end = quarter_of(self.u, w, self.ccw)
         last = 4 * self.turns + k  # quarter boundaries 1..last lie before (or at) the end
         marks = [S] + [self._dmark(Fraction(j)) for j in range(1, last + 1)]
         if exact_end and self.rational_centre:
@@ -303,9 +303,7 @@ class ArcEnclosure:
                 marks.pop()  # the end may lie on or before that boundary: merge the pieces
         # a position just before the end (its own position is irrational in general): the marks
         # chosen between a mark and the end stay below it
-        from .core import _half_tan
-
-        m = _half_tan(self.bases[last % 4], w, self.ccw)
+        m = half_tan(self.bases[last % 4], w, self.ccw)
         gE = Fraction(last) + (max(F0, min(F1, m)) * (1 - Fraction(1, 2**30)) if m is not None else F0)
         if gE <= marks[-1].g:
             gE = marks[-1].g
@@ -552,9 +550,7 @@ class ArcEnclosure:
     # ------------------------------------------------------------------ deciding
 
     def fits(self, lo: dict[str, Fraction], hi: dict[str, Fraction]) -> bool:
-        from .core import box_fits
-
-        return box_fits(self.p.allowed, lo, hi, self.p.margin, self.seg.tool_length)
+        return ex.box_fits(self.p.allowed, lo, hi, self.p.margin, self.seg.tool_length)
 
     def certify(self, mk: _Mark) -> Hit | None:
         """(zone, point, bad zones) when every point of the mark's enclosure violates a zone, else None."""
@@ -567,9 +563,7 @@ class ArcEnclosure:
             return (bad[0], dict(lo), bad) if bad else None
         for z in self.p.zones:
             if ex.box_certainly_violates(allowed, z, lo, hi, margin, tl):
-                from .core import _simple_in
-
-                pt = {a: _simple_in(lo[a], hi[a]) for a in self.axes}
+                pt = {a: simple_in(lo[a], hi[a]) for a in self.axes}
                 bad = allowed.violated_zones(pt, tl, margin)
                 if z not in bad:
                     from ..errors import InternalError
@@ -660,19 +654,17 @@ class ArcEnclosure:
 
 
 def decide_arc(prover: Any, seg: Segment, g: ArcGeom, params: tuple) -> Any:
-    """Decide an arc by enclosures: an ``_Outcome`` (proved or a certified violation), or None when the
+    """Decide an arc by enclosures: an ``Outcome`` (proved or a certified violation), or None when the
     pieces and depth allowed did not settle it (then the solver decides)."""
-    from .core import _Outcome
-
     enc = ArcEnclosure(prover, seg, g)
     verdict, info = enc.decide()
     if verdict == "safe":
         prover.stats["arc_pieces_proved"] = prover.stats.get("arc_pieces_proved", 0) + 1
-        return _Outcome(engine="exact")
+        return Outcome(engine="exact")
     if verdict == "open" or info is None:
         return None
     witness, proved, hit = info
-    return _Outcome(violation(prover, enc, witness, proved, hit, params), engine="exact")
+    return Outcome(violation(prover, enc, witness, proved, hit, params), engine="exact")
 
 
 def violation(prover: Any, enc: ArcEnclosure, witness: _Mark, proved: _Mark | None, hit: Hit,

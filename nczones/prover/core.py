@@ -35,7 +35,6 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -44,22 +43,25 @@ from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
 from ..zones import PolygonZone, SteppedZone, Zone, ZonePoint, tip_offset, tip_shifted
 from . import exact as ex
+from .exact import box_fits
 from .geometry import (
     ArcGeom,
     LinePiece,
+    angle_bounds,
+    arc_bases,
     arc_geom,
-    atan_bounds,
+    half_tan,
     in_sweep,
     line_pieces,
     pi_bounds,
     rational_point_on_arc,
+    simple_in,
     sqrt_bounds,
 )
-from .result import ParamRange, Reason, Result, Verdict, Violation
-from .smt import Solver, _or, add, mul, q, sub, zone_violation
+from .result import Outcome, ParamRange, Reason, Result, Verdict, Violation
+from .smt import Solver, add, mul, or_all, q, sub, zone_violation
 
 if TYPE_CHECKING:
-    from ..zones.model import AllowedSet
     from .limits import RunLimits
     from .profile import RunProfile
     from .smt import SolverAnswer
@@ -73,13 +75,6 @@ F0 = Fraction(0)
 F1 = Fraction(1)
 #: Kinds the straight-piece path decides (a dwell is a point).
 _LINE_LIKE = frozenset({SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL})
-
-
-@dataclass(slots=True)
-class _Outcome:
-    violation: Violation | None = None
-    reason: Reason | None = None
-    engine: str = "exact"
 
 
 class Prover:
@@ -241,7 +236,7 @@ class Prover:
                 else:
                     ref = (lo - self.margin, hi + self.margin)
             parts.append(zone_violation(z, seen, ref))
-        return _or(parts)
+        return or_all(parts)
 
     def _line_query(self, seg: Segment, piece: LinePiece, with_params: bool, zone: Zone | None = None,
                     t_max: Fraction | None = None) -> tuple[str, list[str]]:
@@ -389,12 +384,12 @@ class Prover:
         if self.limits is not None:
             self.limits.checkpoint()
 
-    def _unknown(self, seg: Segment, ans: SolverAnswer, what: str = "") -> _Outcome:
+    def _unknown(self, seg: Segment, ans: SolverAnswer, what: str = "") -> Outcome:
         """The outcome of a solver ``unknown`` (its reason says which limit stopped it)."""
-        return _Outcome(reason=Reason(ans.reason(what), seg.span, seg.block, ans.code),
+        return Outcome(reason=Reason(ans.reason(what), seg.span, seg.block, ans.code),
                         engine="budget" if ans.stopped == "budget" else "unknown")
 
-    def check(self, seg: Segment) -> _Outcome:
+    def check(self, seg: Segment) -> Outcome:
         """Decide one segment: a violation, a reason for ``unknown``, or neither (proved).
 
         When the run's budget is spent (:mod:`nczones.prover.limits`) before
@@ -405,10 +400,10 @@ class Prover:
         try:
             return self._check(seg)
         except BudgetSpent:
-            return _Outcome(reason=Reason("budget spent before this motion was decided", seg.span, seg.block,
+            return Outcome(reason=Reason("budget spent before this motion was decided", seg.span, seg.block,
                                           "VF203"), engine="budget")
 
-    def _check(self, seg: Segment) -> _Outcome:
+    def _check(self, seg: Segment) -> Outcome:
         if seg.extra and self.has_tip_zones:
             shift = tip_offset(seg.extra)
             if shift:
@@ -419,23 +414,23 @@ class Prover:
                 check_cylindrical,  # G07.1: pi enclosed, see prover/cylindrical.py
             )
 
-            cyl: _Outcome = check_cylindrical(self, seg)
+            cyl: Outcome = check_cylindrical(self, seg)
             return cyl
         if seg.kind is SegmentKind.SPLINE:
             from .spline import (
                 check_spline,  # exact NURBS: control hulls + refinement, see prover/spline.py
             )
 
-            spl: _Outcome = check_spline(self, seg)
+            spl: Outcome = check_spline(self, seg)
             return spl
         if seg.kind not in _LINE_LIKE and seg.kind is not SegmentKind.ARC:
-            return _Outcome(reason=Reason(f"segment kind {seg.kind.name} is not handled by the prover",
+            return Outcome(reason=Reason(f"segment kind {seg.kind.name} is not handled by the prover",
                                           seg.span, seg.block), engine="unknown")
         if self._param_relevant(seg):
             return self._check_with_params(seg)
         return self._check_concrete(seg, ())
 
-    def _check_with_params(self, seg: Segment) -> _Outcome:
+    def _check_with_params(self, seg: Segment) -> Outcome:
         self.stats["z3_segments"] += 1
         queries = []
         if seg.kind is SegmentKind.ARC:
@@ -464,9 +459,9 @@ class Prover:
             out = self._check_concrete(concrete, tuple(values.items()))
             if out.violation is not None:
                 return out
-            return _Outcome(reason=Reason("a parameter combination may violate a zone but no exact "
+            return Outcome(reason=Reason("a parameter combination may violate a zone but no exact "
                                           "counterexample was confirmed", seg.span, seg.block), engine="unknown")
-        return _Outcome(engine="z3")
+        return Outcome(engine="z3")
 
     def _dogleg_query(self, seg: Segment) -> tuple[str, list[str]]:
         """Exact encoding of a dogleg rapid whose two ends move with different parameters.
@@ -502,7 +497,7 @@ class Prover:
         body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
         return "".join(body), names
 
-    def _check_arc_varying(self, seg: Segment) -> _Outcome:
+    def _check_arc_varying(self, seg: Segment) -> Outcome:
         """An arc whose start and end move with different parameters (e.g. the first move from a
         ``start.X`` range): its shape changes with them, so it is decided on concrete values.
 
@@ -562,9 +557,9 @@ class Prover:
         lo_hi = self._varying_arc_box(seg)
         if lo_hi is not None and box_fits(self.allowed, lo_hi[0], lo_hi[1], self.margin, seg.tool_length):
             self.stats["screened"] += 1
-            return _Outcome(engine="exact")
+            return Outcome(engine="exact")
         why = (f"; at one of them: {first_reason.message}" if first_reason is not None else "")
-        return _Outcome(reason=Reason("an arc whose start and end depend on different parameters: no "
+        return Outcome(reason=Reason("an arc whose start and end depend on different parameters: no "
                                       "counterexample at the corner values of the ranges, and its enclosure over "
                                       f"the whole ranges meets a zone boundary{why}", seg.span, seg.block),
                         engine="unknown")
@@ -622,7 +617,7 @@ class Prover:
             lo[a], hi[a] = min(lo[a], b0), max(hi[a], b1)
         return lo, hi
 
-    def _check_concrete(self, seg: Segment, params: Params) -> _Outcome:
+    def _check_concrete(self, seg: Segment, params: Params) -> Outcome:
         if seg.kind is SegmentKind.ARC:
             return self._check_arc(seg, params)
         pieces = line_pieces(seg, self.machine)
@@ -632,7 +627,7 @@ class Prover:
             self.all_decidable and self.limits is not None and self.limits.budget_spent())
         if self.engine == "auto" and all(self._bbox_fits(p.p0, p.p1, seg.tool_length) for p in pieces):
             self.stats["screened"] += 1
-            return _Outcome(engine="exact")
+            return Outcome(engine="exact")
         for piece in pieces:
             if self.engine == "auto" and self._bbox_fits(piece.p0, piece.p1, seg.tool_length):
                 continue
@@ -653,7 +648,7 @@ class Prover:
                     if ans.status == "unsat":
                         raise InternalError(f"tier 1 and Z3 disagree on block {seg.block} ({ans.status})")
                     t_model = ans.values.get("t")
-                return _Outcome(self._line_violation(seg, piece, t_model, params, "exact"), engine="exact")
+                return Outcome(self._line_violation(seg, piece, t_model, params, "exact"), engine="exact")
             self.stats["z3_segments"] += 1
             body, names = self._line_query(seg, piece, False)
             ans = self.solver.check(body, names)
@@ -661,8 +656,8 @@ class Prover:
                 continue
             if ans.status == "unknown":
                 return self._unknown(seg, ans)
-            return _Outcome(self._line_violation(seg, piece, ans.values["t"], params, "z3"), engine="z3")
-        return _Outcome(engine="z3" if use_z3 else "exact")
+            return Outcome(self._line_violation(seg, piece, ans.values["t"], params, "z3"), engine="z3")
+        return Outcome(engine="z3" if use_z3 else "exact")
 
     def _bbox_fits(self, lo_pt: Sequence[Fraction], hi_pt: Sequence[Fraction], tool_length: Fraction,
                    lo_given: bool = False) -> bool:
@@ -771,12 +766,12 @@ class Prover:
 
     # ------------------------------------------------------------------ arcs
 
-    def _check_arc(self, seg: Segment, params: Params) -> _Outcome:
+    def _check_arc(self, seg: Segment, params: Params) -> Outcome:
         self.stats["pieces"] += 1
         try:
             g = arc_geom(seg)
         except InvalidArgument as exc:
-            return _Outcome(reason=Reason(f"arc cannot be modelled: {exc}", seg.span, seg.block), engine="unknown")
+            return Outcome(reason=Reason(f"arc cannot be modelled: {exc}", seg.span, seg.block), engine="unknown")
         if self.engine == "auto":
             (bx, by) = g.plane_bbox()
             lo = list(seg.start)
@@ -787,12 +782,12 @@ class Prover:
             lo[g.ib], hi[g.ib] = by
             if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin, seg.tool_length):
                 self.stats["screened"] += 1
-                return _Outcome(engine="exact")
+                return Outcome(engine="exact")
             if self.boxable:
                 # exact enclosures of pieces of the sweep (prover/arcs.py): most arcs end here
                 from .arcs import decide_arc
 
-                decided: _Outcome | None = decide_arc(self, seg, g, params)
+                decided: Outcome | None = decide_arc(self, seg, g, params)
                 if decided is not None:
                     self.stats["arc_enclosures"] = self.stats.get("arc_enclosures", 0) + 1
                     return decided
@@ -800,7 +795,7 @@ class Prover:
         body, names = self._arc_query(seg, g, False)
         ans = self.solver.check(body, names, precision=60, nonlinear=True)
         if ans.status == "unsat":
-            return _Outcome(engine="z3")
+            return Outcome(engine="z3")
         if ans.status == "unknown":
             return self._unknown(seg, ans, "an arc")
         v = self._arc_witness(seg, g, ans.values, params)
@@ -808,17 +803,17 @@ class Prover:
             # split the sweep and prove the pieces (see prover/refine.py)
             from .refine import refine_arc
 
-            refined: _Outcome | None = refine_arc(self, seg, g, params)
+            refined: Outcome | None = refine_arc(self, seg, g, params)
             if refined is not None:
                 return refined
         if v is None:
             what = "helix" if g.helix else ("R-format arc with an irrational centre" if g.centre is None else "spiral arc")
             if g.exact:
                 what = "arc"
-            return _Outcome(reason=Reason(f"{what}: the solver found a possible violation that could not be "
+            return Outcome(reason=Reason(f"{what}: the solver found a possible violation that could not be "
                                           "confirmed on the exact path (over-approximation)", seg.span, seg.block),
                             engine="unknown")
-        return _Outcome(v, engine="z3")
+        return Outcome(v, engine="z3")
 
     def _arc_witness(self, seg: Segment, g: ArcGeom, values: dict[str, Fraction], params: Params) -> Violation | None:
         if not g.exact or g.helix:
@@ -827,8 +822,8 @@ class Prover:
         assert c is not None  # exact
         u = (g.s[0] - c[0], g.s[1] - c[1])
         target = (values["x"] - c[0], values["y"] - c[1])
-        for base in _bases(u, g.ccw):
-            m = _half_tan(base, target, g.ccw)
+        for base in arc_bases(u, g.ccw):
+            m = half_tan(base, target, g.ccw)
             if m is None or m < 0 or m > 1:
                 continue
             pt2 = rational_point_on_arc(g, m, base)
@@ -862,8 +857,8 @@ class Prover:
         w = (g.e[0] - c_mid[0], g.e[1] - c_mid[1])
         frac = None
         if g.helix or g.r2_lo != g.r2_hi:
-            theta = _angle_bounds(u, d, g.ccw)
-            total = _angle_bounds(u, w, g.ccw) if not g.full else (F0, F0)
+            theta = angle_bounds(u, d, g.ccw)
+            total = angle_bounds(u, w, g.ccw) if not g.full else (F0, F0)
             pi_lo, pi_hi = pi_bounds()
             tot_lo = total[0] + (2 * pi_lo * seg.turns if g.full or seg.turns else 0)
             tot_hi = total[1] + (2 * pi_hi * seg.turns if g.full or seg.turns else 0)
@@ -906,7 +901,7 @@ class Prover:
                     return None
         for z in self.zones:
             if ex.box_certainly_violates(self.allowed, z, lo, hi, self.margin, seg.tool_length):
-                mid = {a: _simple_in(lo[a], hi[a]) for a in self.axes}
+                mid = {a: simple_in(lo[a], hi[a]) for a in self.axes}
                 bad = self.allowed.violated_zones(mid, seg.tool_length, self.margin)
                 if z not in bad:
                     raise InternalError("certified box centre does not violate")
@@ -917,7 +912,7 @@ class Prover:
         if retry:  # the over-approximation's point was spurious: try exact directions along the arc
             c = c_mid
             base0 = (g.s[0] - c[0], g.s[1] - c[1])
-            for base in _bases(base0, g.ccw):
+            for base in arc_bases(base0, g.ccw):
                 for i in range(33):
                     m = Fraction(i, 32)
                     cc = g.centre if g.centre is not None else c
@@ -955,7 +950,7 @@ class Prover:
         if g.exact:
             assert g.centre is not None
             u = (g.s[0] - g.centre[0], g.s[1] - g.centre[1])
-            for base in _bases(u, g.ccw):
+            for base in arc_bases(u, g.ccw):
                 for i in range(0, 17):
                     p2 = rational_point_on_arc(g, Fraction(i, 16), base)
                     vdir = (p2[0] - g.centre[0], p2[1] - g.centre[1])
@@ -985,11 +980,11 @@ class Prover:
         c = g.centre if g.centre is not None else tuple((a + b) / 2 for a, b in g.centre_bounds(60))
         u = (g.s[0] - c[0], g.s[1] - c[1])
         v = (pmap[self.axes[g.ia]] - c[0], pmap[self.axes[g.ib]] - c[1])
-        th = _angle_bounds(u, v, g.ccw)[0]
+        th = angle_bounds(u, v, g.ccw)[0]
         if g.full:
             tot = 2 * pi_bounds()[0]
         else:
-            tot = _angle_bounds(u, (g.e[0] - c[0], g.e[1] - c[1]), g.ccw)[0]
+            tot = angle_bounds(u, (g.e[0] - c[0], g.e[1] - c[1]), g.ccw)[0]
         if tot <= 0:
             return F0
         return min(F1, th / tot).limit_denominator(10**9)
@@ -1005,7 +1000,7 @@ class Prover:
         assert c is not None  # exact arcs only
         u = (g.s[0] - c[0], g.s[1] - c[1])
         w = (g.e[0] - c[0], g.e[1] - c[1])
-        bases = _bases(u, g.ccw)
+        bases = arc_bases(u, g.ccw)
 
         def point(k: int, m: Fraction) -> tuple[Fraction, Fraction]:
             return rational_point_on_arc(g, m, bases[k])
@@ -1044,129 +1039,15 @@ class Prover:
 
 def eval_lit(text: str) -> Fraction:
     """Value of a literal produced by :func:`nczones.prover.smt.q`."""
-    from .smt import _num, _parse_sexpr
+    from .smt import numeral, parse_sexpr
 
-    v = _num(_parse_sexpr(text)[0])
+    v = numeral(parse_sexpr(text)[0])
     assert v is not None, f"not a literal: {text}"
     return v[0]
 
 
-def _simple_in(lo: Fraction, hi: Fraction) -> Fraction:
-    """A short decimal in [lo, hi] (the midpoint if none has at most 60 places)."""
-    mid = (lo + hi) / 2
-    for k in range(61):
-        x = Fraction(round(mid * 10**k), 10**k)
-        if lo <= x <= hi:
-            return x
-    return mid
-
-
 def _clamp(x: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
     return max(lo, min(hi, x))
-
-
-def _bases(u: tuple[Fraction, Fraction], ccw: bool) -> list[tuple[Fraction, Fraction]]:
-    """u rotated by 0, 90, 180, 270 degrees in the arc's direction (exact)."""
-    out = [u]
-    for _ in range(3):
-        a = out[-1]
-        out.append((-a[1], a[0]) if ccw else (a[1], -a[0]))
-    return out
-
-
-def _half_tan(base: tuple[Fraction, Fraction], target: tuple[Fraction, Fraction], ccw: bool) -> Fraction | None:
-    """Rational approximation of tan(angle(base -> target)/2) in the arc's direction."""
-    cr = base[0] * target[1] - base[1] * target[0]
-    if not ccw:
-        cr = -cr
-    dt = base[0] * target[0] + base[1] * target[1]
-    n = sqrt_bounds((base[0] ** 2 + base[1] ** 2) * (target[0] ** 2 + target[1] ** 2), 120)[0]
-    den = n + dt
-    if den <= 0:
-        return None
-    half: Fraction = (cr / den).limit_denominator(10**40)
-    return half
-
-
-def _angle_bounds(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw: bool) -> tuple[Fraction, Fraction]:
-    """Rational enclosure of the angle from u to v in the given direction, in [0, 2 pi)."""
-    pi_lo, pi_hi = pi_bounds()
-    for k, base in enumerate(_bases(u, ccw)):
-        cr = base[0] * v[1] - base[1] * v[0]
-        if not ccw:
-            cr = -cr
-        dt = base[0] * v[0] + base[1] * v[1]
-        if cr >= 0 and dt > 0 or (cr > 0 and dt == 0):
-            n_lo, n_hi = sqrt_bounds((base[0] ** 2 + base[1] ** 2) * (v[0] ** 2 + v[1] ** 2), 120)
-            m_lo, m_hi = cr / (n_hi + dt), cr / (n_lo + dt)
-            a_lo, a_hi = atan_bounds(m_lo)[0], atan_bounds(m_hi)[1]
-            return k * pi_lo / 2 + 2 * a_lo, k * pi_hi / 2 + 2 * a_hi
-    return F0, 2 * pi_hi
-
-
-def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction,
-             zones: Iterable[Zone] | None = None) -> bool:
-    """Exact test: every point of the box ``[lo, hi]`` has a fitting margin box (boxes, stepped tables).
-
-    Polygon zones: exact too (:func:`nczones.prover.polygon.box_fits`: no
-    edge meets the open box and its centre is inside, or outside).  ``zones``
-    restricts the test to those zones (default: all of ``allowed``).
-    """
-    from ..zones import BoxZone, SteppedZone
-    from .polygon import box_fits as polygon_box_fits
-
-    d = margin
-    for z in allowed.zones if zones is None else zones:
-        shift = tool_length if (z.point is ZonePoint.TIP and tool_length) else F0
-
-        def rng(a):
-            s = shift if a == allowed.tool_axis else F0  # noqa: B023 - called within this iteration
-            return lo[a] - s - d, hi[a] - s + d
-
-        if isinstance(z, BoxZone):
-            if z.forbid:
-                if not any(
-                    (hi_ is not None and rng(a)[0] >= hi_) or (lo_ is not None and rng(a)[1] <= lo_)
-                    for a, lo_, hi_ in z.limits
-                ):
-                    return False
-            else:
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
-                        return False
-        elif isinstance(z, SteppedZone):
-            r0, r1 = rng(z.reference_axis)
-            l0, l1 = rng(z.limited_axis)
-            if z.forbid:
-                for i in ex._reachable(z, r0, r1):
-                    reg = z.regions[i]
-                    if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
-                        return False
-            else:
-                if r0 < z.start or r1 > z.regions[-1].upto:
-                    return False
-                for i in ex._reachable(z, r0, r1):
-                    reg = z.regions[i]
-                    if i > 0 and r1 <= z.regions[i - 1].upto:
-                        continue
-                    if (reg.min is not None and l0 < reg.min) or (reg.max is not None and l1 > reg.max):
-                        return False
-        elif isinstance(z, PolygonZone):
-            if z.forbid:
-                b = z.bounds()
-                if any((bh is not None and rng(a)[0] >= bh) or (bl is not None and rng(a)[1] <= bl)
-                       for a, (bl, bh) in b.items() if a in lo):
-                    continue
-            else:
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
-                        return False
-            (x0, x1), (y0, y1) = rng(z.plane[0]), rng(z.plane[1])
-            if not polygon_box_fits(z, (x0, y0), (x1, y1)):
-                return False
-    return True
 
 
 def verify_segments(

@@ -11,7 +11,7 @@ refinement (DESIGN §5):
    Each piece's path is enclosed in a rational box (:meth:`DevelopedArc.box`:
    its end points' enclosures grown by the sagitta bound; C from s through
    the enclosure of pi).  A box that fits every zone with the margin
-   (:func:`nczones.prover.core.box_fits`, exact) proves the piece.
+   (:func:`nczones.prover.exact.box_fits`, exact) proves the piece.
 2. For a piece that does not fit, the exact path point at the piece's middle
    is enclosed in a box of width about 1e-50; if every point of that box
    violates a zone (:func:`nczones.prover.exact.box_certainly_violates`), the
@@ -35,7 +35,8 @@ from ..cylinder import DevelopedArc, Interval, cylinder_of, degree_length, devel
 from ..exact import format_decimal
 from ..motion import Segment, SegmentKind
 from . import exact as ex
-from .result import Reason, Violation
+from .geometry import simple_in
+from .result import Outcome, Reason, Violation
 
 __all__ = ["check_cylindrical", "developed_note", "MAX_DEPTH", "BUDGET"]
 
@@ -66,8 +67,6 @@ def check_cylindrical(prover: Any, seg: Segment) -> Any:
     """Decide one segment made in G07.1 mode (called by :meth:`Prover.check`)."""
     from dataclasses import replace
 
-    from .core import _Outcome
-
     if seg.kind is not SegmentKind.DEVELOPED_ARC:
         out = prover._check_with_params(seg) if prover._param_relevant(seg) else prover._check_concrete(seg, ())
         if out.violation is not None:
@@ -76,12 +75,12 @@ def check_cylindrical(prover: Any, seg: Segment) -> Any:
             out.violation = replace(v, note=(v.note + "; " if v.note else "") + note)
         return out
     if prover._param_relevant(seg):
-        return _Outcome(reason=Reason("parameter ranges are not supported on arcs in cylindrical interpolation "
+        return Outcome(reason=Reason("parameter ranges are not supported on arcs in cylindrical interpolation "
                                       "(G07.1)", seg.span, seg.block), engine="unknown")
     try:
         arc = developed_arc_of(seg)
     except ValueError as exc:
-        return _Outcome(reason=Reason(f"developed arc cannot be modelled: {exc}", seg.span, seg.block),
+        return Outcome(reason=Reason(f"developed arc cannot be modelled: {exc}", seg.span, seg.block),
                         engine="unknown")
     return _ArcCheck(prover, seg, arc).run()
 
@@ -114,17 +113,15 @@ class _ArcCheck:
     def _box(self, fa: Fraction, fb: Fraction) -> Any:
         za, sa, _ = self.point(fa)
         zb, sb, _ = self.point(fb)
-        from ..cylinder import _up
+        from ..cylinder import round_up_scaled
 
         alpha = self.arc.sweep.hi * (fb - fa)
-        h = _up(self.arc.rho.hi * alpha * alpha / 8)
+        h = round_up_scaled(self.arc.rho.hi * alpha * alpha / 8)
         z = za.hull(zb).widen(h)
         s = sa.hull(sb).widen(h)
         return z, self.arc.c0 + s / self.arc.k
 
     def run(self):
-        from .core import _Outcome, box_fits
-
         p, seg = self.p, self.seg
         p.stats["pieces"] += 1
         stack = [(Fraction(3 - i, 4), Fraction(4 - i, 4), 0) for i in range(4)]  # the last piece at the bottom
@@ -135,12 +132,12 @@ class _ArcCheck:
                 break
             z, c = self._box(fa, fb)
             lo, hi = self._dicts(z, c)
-            if box_fits(p.allowed, lo, hi, p.margin, seg.tool_length):
+            if ex.box_fits(p.allowed, lo, hi, p.margin, seg.tool_length):
                 continue
             v = self._certify((fa + fb) / 2, fa)
             if v is not None:
                 p.stats["z3_segments"] += 0
-                return _Outcome(v, engine="exact")
+                return Outcome(v, engine="exact")
             if depth >= MAX_DEPTH:
                 break
             mid = (fa + fb) / 2
@@ -148,8 +145,8 @@ class _ArcCheck:
             stack.append((fa, mid, depth + 1))
         else:
             p.stats["screened"] += 1
-            return _Outcome(engine="exact")
-        return _Outcome(reason=Reason(
+            return Outcome(engine="exact")
+        return Outcome(reason=Reason(
             "arc in cylindrical interpolation (G07.1): its enclosure meets a zone boundary and no point of the "
             f"exact path was certified outside after {self.used - 1} refinements (pi and the developed geometry "
             "are enclosed; the path may touch the boundary)", seg.span, seg.block), engine="unknown")
@@ -160,9 +157,7 @@ class _ArcCheck:
         lo, hi = self._dicts(z, c)
         for zone in p.zones:
             if ex.box_certainly_violates(p.allowed, zone, lo, hi, p.margin, seg.tool_length):
-                from .core import _simple_in
-
-                mid = {a: _simple_in(lo[a], hi[a]) for a in seg.axes}
+                mid = {a: simple_in(lo[a], hi[a]) for a in seg.axes}
                 bad = p.allowed.violated_zones(mid, seg.tool_length, p.margin)
                 if zone not in bad:
                     from ..errors import InternalError
@@ -188,9 +183,7 @@ class _ArcCheck:
             width = max(zz.width(), cc.width())
             for zn in p.zones:
                 if ex.box_certainly_violates(p.allowed, zn, lo, hi, p.margin, seg.tool_length):
-                    from .core import _simple_in
-
-                    pt = {a: _simple_in(lo[a], hi[a]) for a in seg.axes}
+                    pt = {a: simple_in(lo[a], hi[a]) for a in seg.axes}
                     if zn in p.allowed.violated_zones(pt, seg.tool_length, p.margin):
                         d = ex.point_depth(zn, p.allowed.seen_by(zn, pt, seg.tool_length), p.margin) - width
                         depth = max(depth, d)

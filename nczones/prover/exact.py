@@ -41,6 +41,8 @@ __all__ = [
     "outside_point",
     "box_certainly_violates",
     "decidable",
+    "reachable",
+    "box_fits",
 ]
 
 F0 = Fraction(0)
@@ -213,7 +215,7 @@ def line_violation(
         parts = []
         ra, rb = ln.ends(r)
         r_lo, r_hi = min(ra, rb) - d, max(ra, rb) + d
-        idx = _reachable(zone, r_lo, r_hi)
+        idx = reachable(zone, r_lo, r_hi)
         if zone.forbid:
             for i in idx:
                 reg = zone.regions[i]
@@ -294,7 +296,7 @@ def _flat(limits: tuple[tuple[str, Fraction | None, Fraction | None], ...]) -> b
     return any(lo is not None and hi is not None and not lo < hi for _, lo, hi in limits)
 
 
-def _reachable(zone: SteppedZone, lo: Fraction, hi: Fraction) -> range:
+def reachable(zone: SteppedZone, lo: Fraction, hi: Fraction) -> range:
     """Indices of regions whose closed reference range meets ``[lo, hi]``."""
     import bisect
 
@@ -590,12 +592,12 @@ def box_certainly_violates(
     shift = tool_length if (zone.point is ZonePoint.TIP and tool_length) else F0
     centre = {a: (lo[a] + hi[a]) / 2 for a in lo}
     if isinstance(zone, PolygonZone):
-        from ..zones.model import _segment_meets_open_box  # exact clipping helper
+        from ..zones.model import segment_meets_open_box  # exact clipping helper
 
         x, y = zone.plane
         gx = (lo[x] - margin - 1 / Fraction(10**30), hi[x] + margin + 1 / Fraction(10**30))
         gy = (lo[y] - margin - 1 / Fraction(10**30), hi[y] + margin + 1 / Fraction(10**30))
-        if any(_segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
+        if any(segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
             return False
         axes_to_check = [a for a, _, _ in zone.limits]
     else:
@@ -609,3 +611,68 @@ def box_certainly_violates(
                 if lo[a] - s <= c + m <= hi[a] - s:
                     return False
     return zone in allowed.violated_zones(centre, tool_length, margin)
+
+
+def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction,
+             zones: Iterable[Zone] | None = None) -> bool:
+    """Exact test: every point of the box ``[lo, hi]`` has a fitting margin box (boxes, stepped tables).
+
+    Polygon zones: exact too (:func:`nczones.prover.polygon.box_fits`: no
+    edge meets the open box and its centre is inside, or outside).  ``zones``
+    restricts the test to those zones (default: all of ``allowed``).
+    """
+    from ..zones import BoxZone, SteppedZone
+    from .polygon import box_fits as polygon_box_fits
+
+    d = margin
+    for z in allowed.zones if zones is None else zones:
+        shift = tool_length if (z.point is ZonePoint.TIP and tool_length) else F0
+
+        def rng(a):
+            s = shift if a == allowed.tool_axis else F0  # noqa: B023 - called within this iteration
+            return lo[a] - s - d, hi[a] - s + d
+
+        if isinstance(z, BoxZone):
+            if z.forbid:
+                if not any(
+                    (hi_ is not None and rng(a)[0] >= hi_) or (lo_ is not None and rng(a)[1] <= lo_)
+                    for a, lo_, hi_ in z.limits
+                ):
+                    return False
+            else:
+                for a, lo_, hi_ in z.limits:
+                    r0, r1 = rng(a)
+                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
+                        return False
+        elif isinstance(z, SteppedZone):
+            r0, r1 = rng(z.reference_axis)
+            l0, l1 = rng(z.limited_axis)
+            if z.forbid:
+                for i in reachable(z, r0, r1):
+                    reg = z.regions[i]
+                    if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
+                        return False
+            else:
+                if r0 < z.start or r1 > z.regions[-1].upto:
+                    return False
+                for i in reachable(z, r0, r1):
+                    reg = z.regions[i]
+                    if i > 0 and r1 <= z.regions[i - 1].upto:
+                        continue
+                    if (reg.min is not None and l0 < reg.min) or (reg.max is not None and l1 > reg.max):
+                        return False
+        elif isinstance(z, PolygonZone):
+            if z.forbid:
+                b = z.bounds()
+                if any((bh is not None and rng(a)[0] >= bh) or (bl is not None and rng(a)[1] <= bl)
+                       for a, (bl, bh) in b.items() if a in lo):
+                    continue
+            else:
+                for a, lo_, hi_ in z.limits:
+                    r0, r1 = rng(a)
+                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
+                        return False
+            (x0, x1), (y0, y1) = rng(z.plane[0]), rng(z.plane[1])
+            if not polygon_box_fits(z, (x0, y0), (x1, y1)):
+                return False
+    return True

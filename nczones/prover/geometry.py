@@ -44,6 +44,10 @@ __all__ = [
     "in_sweep",
     "round_down",
     "round_up",
+    "simple_in",
+    "arc_bases",
+    "half_tan",
+    "angle_bounds",
 ]
 
 F0 = Fraction(0)
@@ -436,3 +440,52 @@ def rational_point_on_arc(g: ArcGeom, m: Fraction, base: tuple[Fraction, Fractio
 def arc_axis_names(seg: Segment) -> tuple[str, str, str]:
     assert seg.plane is not None  # an arc has its plane
     return PLANE_AXES[seg.plane]
+
+
+def simple_in(lo: Fraction, hi: Fraction) -> Fraction:
+    """A short decimal in [lo, hi] (the midpoint if none has at most 60 places)."""
+    mid = (lo + hi) / 2
+    for k in range(61):
+        x = Fraction(round(mid * 10**k), 10**k)
+        if lo <= x <= hi:
+            return x
+    return mid
+
+
+def arc_bases(u: tuple[Fraction, Fraction], ccw: bool) -> list[tuple[Fraction, Fraction]]:
+    """u rotated by 0, 90, 180, 270 degrees in the arc's direction (exact)."""
+    out = [u]
+    for _ in range(3):
+        a = out[-1]
+        out.append((-a[1], a[0]) if ccw else (a[1], -a[0]))
+    return out
+
+
+def half_tan(base: tuple[Fraction, Fraction], target: tuple[Fraction, Fraction], ccw: bool) -> Fraction | None:
+    """Rational approximation of tan(angle(base -> target)/2) in the arc's direction."""
+    cr = base[0] * target[1] - base[1] * target[0]
+    if not ccw:
+        cr = -cr
+    dt = base[0] * target[0] + base[1] * target[1]
+    n = sqrt_bounds((base[0] ** 2 + base[1] ** 2) * (target[0] ** 2 + target[1] ** 2), 120)[0]
+    den = n + dt
+    if den <= 0:
+        return None
+    half: Fraction = (cr / den).limit_denominator(10**40)
+    return half
+
+
+def angle_bounds(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw: bool) -> tuple[Fraction, Fraction]:
+    """Rational enclosure of the angle from u to v in the given direction, in [0, 2 pi)."""
+    pi_lo, pi_hi = pi_bounds()
+    for k, base in enumerate(arc_bases(u, ccw)):
+        cr = base[0] * v[1] - base[1] * v[0]
+        if not ccw:
+            cr = -cr
+        dt = base[0] * v[0] + base[1] * v[1]
+        if cr >= 0 and dt > 0 or (cr > 0 and dt == 0):
+            n_lo, n_hi = sqrt_bounds((base[0] ** 2 + base[1] ** 2) * (v[0] ** 2 + v[1] ** 2), 120)
+            m_lo, m_hi = cr / (n_hi + dt), cr / (n_lo + dt)
+            a_lo, a_hi = atan_bounds(m_lo)[0], atan_bounds(m_hi)[1]
+            return k * pi_lo / 2 + 2 * a_lo, k * pi_hi / 2 + 2 * a_hi
+    return F0, 2 * pi_hi

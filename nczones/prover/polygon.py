@@ -198,10 +198,10 @@ def box_fits(zone: PolygonZone, lo: Pt, hi: Pt) -> bool:
     """Does the closed box ``[lo, hi]`` (in the plane, margin and tool shift already applied) satisfy the
     polygon's plane part: inside ``P`` (allow), or meeting no interior point (forbid)?  Exact."""
     if lo[0] < hi[0] and lo[1] < hi[1]:
-        from ..zones.model import _segment_meets_open_box
+        from ..zones.model import segment_meets_open_box
 
         for a, b in edge_boxes(zone).near(lo[0], hi[0], lo[1], hi[1]):
-            if _segment_meets_open_box(a, b, lo, hi):
+            if segment_meets_open_box(a, b, lo, hi):
                 return False
         where = locate(zone, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2))
         return where < 0 if zone.forbid else where > 0

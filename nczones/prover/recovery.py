@@ -63,7 +63,7 @@ from .core import Prover
 from .geometry import arc_geom, rational_point_on_arc
 from .limits import BudgetSpent
 from .result import Reason, Violation
-from .smt import _or, add, mul, q, sub, zone_violation
+from .smt import add, mul, or_all, q, sub, zone_violation
 
 __all__ = ["RecoveryOutcome", "verify_recovery"]
 
@@ -205,7 +205,7 @@ class _Encoder:
             if zone.point is ZonePoint.TIP and self.tool_axis in seen:
                 seen[self.tool_axis] = sub(seen[self.tool_axis], q(L))
             parts.append(zone_violation(zone, seen, None))
-        return _or(parts)
+        return or_all(parts)
 
 
 def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant | str | None = None,

@@ -18,7 +18,7 @@ direction ``v``.  Every piece is a pair of rational directions ``(da, db)``
 with a sweep of less than a quarter turn, and rational bounds
 ``θa_lo <= θ(da)``, ``θ(db) <= θb_hi`` (quarter-turn boundaries are
 ``j·π/2`` enclosed with :func:`pi_bounds`; other directions use the
-rational angle enclosure :func:`_angle_bounds`, plus ``2π·lap``).  On the
+rational angle enclosure :func:`angle_bounds`, plus ``2π·lap``).  On the
 exact path between ``da`` and ``db``:
 
 * the planar point is at a direction in the closed sector ``[da, db]`` — the
@@ -46,8 +46,18 @@ from fractions import Fraction
 from typing import Any
 
 from ..motion import Segment
-from .geometry import ArcGeom, in_sweep, pi_bounds, round_down, round_up, sqrt_bounds
-from .result import Reason
+from .geometry import (
+    ArcGeom,
+    angle_bounds,
+    arc_bases,
+    half_tan,
+    in_sweep,
+    pi_bounds,
+    round_down,
+    round_up,
+    sqrt_bounds,
+)
+from .result import Outcome, Reason
 
 F0 = Fraction(0)
 F1 = Fraction(1)
@@ -65,11 +75,9 @@ def _rot(d: tuple[Fraction, Fraction], m: Fraction, ccw: bool) -> tuple[Fraction
     return (((1 - m * m) * d[0] + 2 * m * perp[0]) / den, ((1 - m * m) * d[1] + 2 * m * perp[1]) / den)
 
 
-def _quarter_of(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], ccw: bool) -> tuple[int, bool]:
+def quarter_of(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], ccw: bool) -> tuple[int, bool]:
     """Quarter index k with angle(u -> w) in [k π/2, (k+1) π/2), and whether it is exactly k π/2."""
-    from .core import _bases
-
-    for k, base in enumerate(_bases(u, ccw)):
+    for k, base in enumerate(arc_bases(u, ccw)):
         cr = base[0] * w[1] - base[1] * w[0]
         if not ccw:
             cr = -cr
@@ -82,7 +90,7 @@ def _quarter_of(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], ccw:
 def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
     r"""Prove a helix or spiral arc piece by piece (see the module docstring).
 
-    Returns a ``_Outcome``: proved (engine ``"z3"``), a certified violation,
+    Returns a ``Outcome``: proved (engine ``"z3"``), a certified violation,
     or ``unknown`` whose reason names the budget or the solver limit.
     Requires a rational centre (``g.centre is not None``).  Returns None when
     the sweep has no positive angle (nothing to refine).
@@ -109,35 +117,33 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
     >>> out.violation is None and out.reason is None
     True
     """
-    from .core import _angle_bounds, _bases, _half_tan, _Outcome
-
     for ends in (g.start, g.end):  # exact path points: a violation there needs no enclosure
         pmap = dict(zip(prover.axes, ends))
         bad = prover.allowed.violated_zones(pmap, seg.tool_length, prover.margin)
         if bad:
-            return _Outcome(prover._arc_violation(seg, g, pmap, bad, params, True), engine="exact")
+            return Outcome(prover._arc_violation(seg, g, pmap, bad, params, True), engine="exact")
     c = g.centre
     assert c is not None  # refinement splits arcs with a rational centre (helix, spiral)
     u = (g.s[0] - c[0], g.s[1] - c[1])
     w = (g.e[0] - c[0], g.e[1] - c[1])
     pi_lo, pi_hi = pi_bounds()
     turns = seg.turns
-    bases = _bases(u, g.ccw)
+    bases = arc_bases(u, g.ccw)
     # boundaries: (direction, lap, theta_lo, theta_hi) in sweep order
     if g.s == g.e:
         quarters, exact_end = 4 * (turns + 1), True
     else:
-        k, exact_end = _quarter_of(u, w, g.ccw)
+        k, exact_end = quarter_of(u, w, g.ccw)
         quarters = 4 * turns + k
     bounds = [(bases[j % 4], j // 4, j * pi_lo / 2, j * pi_hi / 2) for j in range(quarters + 1)]
     if not exact_end:
-        a_lo, a_hi = _angle_bounds(u, w, g.ccw)
+        a_lo, a_hi = angle_bounds(u, w, g.ccw)
         bounds.append((w, turns, a_lo + 2 * pi_lo * turns, a_hi + 2 * pi_hi * turns))
     tot_lo, tot_hi = bounds[-1][2], bounds[-1][3]
     if tot_lo <= 0:
         return None
     if len(bounds) - 1 > MAX_PIECES:
-        return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted: {len(bounds) - 1} quarter "
+        return Outcome(reason=Reason(f"helix/spiral refinement budget exhausted: {len(bounds) - 1} quarter "
                                       f"turns exceed {MAX_PIECES} pieces", seg.span, seg.block), engine="unknown")
     spiral = g.r2_lo != g.r2_hi
     if spiral:
@@ -167,7 +173,7 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
     def split(a, b):
         da, lap, _, _ = a
         db = b[0]
-        m = _half_tan(da, db, g.ccw)
+        m = half_tan(da, db, g.ccw)
         if m is None or m <= 0:
             return None
         m = (m / 2).limit_denominator(2**24) or Fraction(1, 2**25)
@@ -179,7 +185,7 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
         dm = (round_down(dm[0]), round_down(dm[1]))  # any direction strictly inside the sector will do
         if dm == da or not in_sweep(da, db, dm, g.ccw, False) or in_sweep(da, dm, db, g.ccw, False):
             return None
-        lo, hi = _angle_bounds(u, dm, g.ccw)
+        lo, hi = angle_bounds(u, dm, g.ccw)
         return (dm, lap, lo + 2 * pi_lo * lap, hi + 2 * pi_hi * lap)
 
     stack = [(bounds[i], bounds[i + 1], 0) for i in range(len(bounds) - 1)][::-1]
@@ -189,7 +195,7 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
         a, b, depth = stack.pop()
         used += 1
         if used > MAX_PIECES:
-            return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted ({MAX_PIECES} pieces, depth "
+            return Outcome(reason=Reason(f"helix/spiral refinement budget exhausted ({MAX_PIECES} pieces, depth "
                                           f"{MAX_DEPTH}): the enclosure near a boundary could be neither proved "
                                           "nor confirmed violated", seg.span, seg.block), engine="unknown")
         pg = piece_geom(a, b)
@@ -206,21 +212,21 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
             v = prover._arc_witness_enclosed(seg, g, {"x": c[0] + mid[0][0], "y": c[1] + mid[0][1]}, params,
                                              retry=False)
         if v is not None:
-            return _Outcome(v, engine="z3")
+            return Outcome(v, engine="z3")
         if mid is None or depth >= MAX_DEPTH:
             # undecided: look for a certified violation here and in the other pieces before answering
             v = _scan_piece(prover, seg, g, a[0], b[0], params)
             if v is not None:
-                return _Outcome(v, engine="z3")
+                return Outcome(v, engine="z3")
             undecided = True
             continue
         stack.append((mid, b, depth + 1))
         stack.append((a, mid, depth + 1))
     if undecided:
-        return _Outcome(reason=Reason(f"helix/spiral refinement budget exhausted (depth {MAX_DEPTH}, "
+        return Outcome(reason=Reason(f"helix/spiral refinement budget exhausted (depth {MAX_DEPTH}, "
                                       f"{MAX_PIECES} pieces): a piece's enclosure may violate a zone but no "
                                       "exact violation was confirmed", seg.span, seg.block), engine="unknown")
-    return _Outcome(engine="z3")
+    return Outcome(engine="z3")
 
 
 #: Exact directions tried across a piece the budget cannot split further, before answering unknown.
@@ -236,9 +242,7 @@ def _scan_piece(prover: Any, seg: Segment, g: ArcGeom, da: tuple[Fraction, Fract
     this can find a witness the pieces' enclosures were too coarse to confirm (a spiral that leaves
     a face by far less than the enclosure's width), never invent one.
     """
-    from .core import _half_tan
-
-    m_end = _half_tan(da, db, g.ccw)
+    m_end = half_tan(da, db, g.ccw)
     c = g.centre
     if m_end is None or m_end <= 0 or c is None:
         return None

@@ -8,7 +8,7 @@ from fractions import Fraction
 
 from ..errors import SourceSpan
 
-__all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange"]
+__all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange", "Outcome"]
 
 
 class Verdict(enum.IntEnum):
@@ -185,3 +185,13 @@ class Result:
     def dialect(self) -> str:
         """How the program text was read (``"linuxcnc"`` or ``"fanuc"``; every report names it)."""
         return str(dict(self.settings).get("dialect") or "linuxcnc")
+
+
+@dataclass(slots=True)
+class Outcome:
+    """What the prover decided about one segment: a violation, a reason for ``unknown``, or neither (proved),
+    and which engine decided it."""
+
+    violation: Violation | None = None
+    reason: Reason | None = None
+    engine: str = "exact"

@@ -48,7 +48,7 @@ import z3
 
 from ..errors import InternalError
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
-from .exact import _reachable
+from .exact import reachable
 
 __all__ = ["q", "Solver", "SolverAnswer", "zone_violation", "triangulate", "Z3_VERSION"]
 
@@ -89,7 +89,7 @@ def mul(a: str, b: str) -> str:
     return f"(* {a} {b})"
 
 
-def _or(parts: Iterable[str]) -> str:
+def or_all(parts: Iterable[str]) -> str:
     parts = [p for p in parts if p != "false"]
     if "true" in parts:
         return "true"
@@ -188,11 +188,11 @@ def zone_violation(zone: Zone, pt: dict[str, str], ref_range: tuple[Fraction, Fr
                     conds.append(f"(< {pt[a]} {q(lo)})")
                 if hi is not None:
                     conds.append(f"(> {pt[a]} {q(hi)})")
-        return _and(conds) if zone.forbid else _or(conds)
+        return _and(conds) if zone.forbid else or_all(conds)
     if isinstance(zone, SteppedZone):
         r, lim = pt[zone.reference_axis], pt[zone.limited_axis]
         regs = zone.regions
-        idx = range(len(regs)) if ref_range is None else _reachable(zone, *ref_range)
+        idx = range(len(regs)) if ref_range is None else reachable(zone, *ref_range)
         parts = []
         if zone.forbid:
             for i in idx:
@@ -214,7 +214,7 @@ def zone_violation(zone: Zone, pt: dict[str, str], ref_range: tuple[Fraction, Fr
                         if hi is not None:
                             c.append(f"(< {lim} {q(hi)})")
                         parts.append(_and(c))
-            return _or(parts)
+            return or_all(parts)
         parts.append(f"(< {r} {q(zone.start)})")
         parts.append(f"(> {r} {q(regs[-1].upto)})")
         for i in idx:
@@ -226,8 +226,8 @@ def zone_violation(zone: Zone, pt: dict[str, str], ref_range: tuple[Fraction, Fr
             if reg.max is not None:
                 out.append(f"(> {lim} {q(reg.max)})")
             if out:
-                parts.append(_and([f"({rel} {q(zone.region_lower(i))} {r})", f"(<= {r} {q(reg.upto)})", _or(out)]))
-        return _or(parts)
+                parts.append(_and([f"({rel} {q(zone.region_lower(i))} {r})", f"(<= {r} {q(reg.upto)})", or_all(out)]))
+        return or_all(parts)
     if isinstance(zone, PolygonZone):
         x, y = pt[zone.plane[0]], pt[zone.plane[1]]
         tris, diags = _triangulation(zone)
@@ -247,15 +247,15 @@ def zone_violation(zone: Zone, pt: dict[str, str], ref_range: tuple[Fraction, Fr
                     lims.append(f"(> {pt[a]} {q(lo)})")
                 if hi is not None:
                     lims.append(f"(< {pt[a]} {q(hi)})")
-            return _and([_or(inside)] + lims)
+            return _and([or_all(inside)] + lims)
         closed = [_and([f"(>= {_cross_term(a, b, x, y)} 0.0)" for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))]) for t in tris]
-        out = [f"(not {_or(closed)})"]
+        out = [f"(not {or_all(closed)})"]
         for a, lo, hi in zone.limits:
             if lo is not None:
                 out.append(f"(< {pt[a]} {q(lo)})")
             if hi is not None:
                 out.append(f"(> {pt[a]} {q(hi)})")
-        return _or(out)
+        return or_all(out)
     raise InternalError(f"unknown zone kind {zone!r}")
 
 
@@ -304,7 +304,7 @@ class SolverAnswer:
 _TOKEN = re.compile(r"\(|\)|[^\s()]+")
 
 
-def _parse_sexpr(text: str) -> list[Any]:
+def parse_sexpr(text: str) -> list[Any]:
     stack: list[list[Any]] = [[]]
     for tok in _TOKEN.findall(text):
         if tok == "(":
@@ -317,16 +317,16 @@ def _parse_sexpr(text: str) -> list[Any]:
     return stack[0]
 
 
-def _num(e: Any) -> tuple[Fraction, bool] | None:
+def numeral(e: Any) -> tuple[Fraction, bool] | None:
     """(value, exact) of a printed real; None for root-obj."""
     if isinstance(e, str):
         approx = e.endswith("?")
         return Fraction(e.rstrip("?")), not approx
     if e and e[0] == "-" and len(e) == 2:
-        v = _num(e[1])
+        v = numeral(e[1])
         return None if v is None else (-v[0], v[1])
     if e and e[0] == "/" and len(e) == 3:
-        a, b = _num(e[1]), _num(e[2])
+        a, b = numeral(e[1]), numeral(e[2])
         if a is None or b is None:
             return None
         return a[0] / b[0], a[1] and b[1]
@@ -402,10 +402,10 @@ class Solver:
         values: dict[str, Fraction] = {}
         approx: set[str] = set()
         if status == "sat" and want:
-            got = _parse_sexpr(self._eval(f"(get-value ({' '.join(want)}))"))[0]
+            got = parse_sexpr(self._eval(f"(get-value ({' '.join(want)}))"))[0]
             missing = []
             for name, val in got:
-                v = _num(val)
+                v = numeral(val)
                 if v is None:
                     missing.append(name)
                 else:
@@ -417,8 +417,8 @@ class Solver:
                     f"(set-option :pp.decimal true)(set-option :pp.decimal_precision {precision})"
                     f"(get-value ({' '.join(missing)}))(set-option :pp.decimal false)"
                 )
-                for name, val in _parse_sexpr(text)[0]:
-                    v = _num(val)
+                for name, val in parse_sexpr(text)[0]:
+                    v = numeral(val)
                     if v is None:
                         raise InternalError(f"cannot read Z3 value {val!r}")
                     values[name] = v[0]

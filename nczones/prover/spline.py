@@ -34,7 +34,7 @@ from ..motion import Segment
 from ..nurbs import Nurbs, spline_curve
 from ..zones import ZonePoint
 from . import exact as ex
-from .result import Reason, Violation
+from .result import Outcome, Reason, Violation
 from .smt import add, mul, q
 
 __all__ = ["check_spline", "SPLINE_PIECE_BUDGET"]
@@ -89,7 +89,7 @@ def _round(t: Fraction) -> Fraction:
 
 
 def check_spline(prover: Any, seg: Segment) -> Any:
-    """Decide one SPLINE segment: ``_Outcome`` with a violation, a reason, or neither (proved).
+    """Decide one SPLINE segment: ``Outcome`` with a violation, a reason, or neither (proved).
 
     Screens first, without the solver: the box of all control points (the
     whole curve lies in their convex hull), then the box of each knot span's
@@ -98,16 +98,14 @@ def check_spline(prover: Any, seg: Segment) -> Any:
     curve points and the refinement; only those count against
     :data:`SPLINE_PIECE_BUDGET`.
     """
-    from .core import _Outcome
-
     if prover._param_relevant(seg):
-        return _Outcome(reason=Reason("parameter ranges are not supported on spline (NURBS) motion",
+        return Outcome(reason=Reason("parameter ranges are not supported on spline (NURBS) motion",
                                       seg.span, seg.block), engine="unknown")
     curve = spline_curve(seg)
     auto = prover.engine == "auto"
     if auto and _hull_fits(prover, seg, curve.points):
         prover.stats["screened"] += 1
-        return _Outcome(engine="exact")
+        return Outcome(engine="exact")
     p = curve.degree
     work = []
     for i in range(p, len(curve.points)):
@@ -117,7 +115,7 @@ def check_spline(prover: Any, seg: Segment) -> Any:
             work.append((curve.span_curve(i), 0))
     if not work:
         prover.stats["screened"] += 1
-        return _Outcome(engine="exact")
+        return Outcome(engine="exact")
     work.reverse()
     examined = 0
     engine = "exact"
@@ -129,7 +127,7 @@ def check_spline(prover: Any, seg: Segment) -> Any:
             continue
         examined += 1
         if examined > SPLINE_PIECE_BUDGET:
-            return _Outcome(reason=Reason(f"spline: the control hulls of {SPLINE_PIECE_BUDGET} curve pieces near a "
+            return Outcome(reason=Reason(f"spline: the control hulls of {SPLINE_PIECE_BUDGET} curve pieces near a "
                                           "zone boundary were examined without proving the curve or finding an "
                                           "exact point outside", seg.span, seg.block), engine="unknown")
         engine = "z3"
@@ -143,15 +141,15 @@ def check_spline(prover: Any, seg: Segment) -> Any:
         hint = [ans.values.get(n, Fraction(0)) for n in names[: len(pts)]]
         found = _violating_point(prover, seg, c, hint)
         if found is not None:
-            return _Outcome(_violation(prover, seg, curve, found), engine=engine)
+            return Outcome(_violation(prover, seg, curve, found), engine=engine)
         if depth >= _MAX_DEPTH:
-            return _Outcome(reason=Reason("spline: the curve comes within a refinement limit of a zone boundary "
+            return Outcome(reason=Reason("spline: the curve comes within a refinement limit of a zone boundary "
                                           "without an exact point outside", seg.span, seg.block), engine="unknown")
         lo, hi = c.domain
         a, b = c.split((lo + hi) / 2)
         work.append((b, depth + 1))
         work.append((a, depth + 1))
-    return _Outcome(engine=engine)
+    return Outcome(engine=engine)
 
 
 def _hull_fits(prover: Any, seg: Segment, pts: Any) -> bool:

@@ -54,7 +54,7 @@ def render_report(result: Any, fmt: str = "text", *, machine: Any = None, progra
             from ..errors import InvalidArgument
 
             raise InvalidArgument("the html report needs the machine (render_report(..., machine=m))")
-        _agg()
+        use_agg_backend()
         from .html import render_html
 
         return render_html(result, machine, program, deterministic=deterministic)
@@ -63,7 +63,7 @@ def render_report(result: Any, fmt: str = "text", *, machine: Any = None, progra
     raise InvalidArgument(f"unknown report format {fmt!r}; allowed: {', '.join(FORMATS)}")
 
 
-def _agg() -> None:
+def use_agg_backend() -> None:
     """Use the non-interactive Agg backend unless pyplot is already set up (CLI, headless CI)."""
     import sys
 

@@ -338,13 +338,13 @@ def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any) -> Any:
     from shapely.geometry import box as shapely_box
     from shapely.ops import unary_union
 
-    from .plot import _zone_patches, view_limits
+    from .plot import view_limits, zone_patches
 
     xlim, ylim = view_limits(machine, plane)
     view = shapely_box(xlim[0], ylim[0], xlim[1], ylim[1])
 
     def geom(z):
-        drawn = _zone_patches(z, plane, xlim, ylim)
+        drawn = zone_patches(z, plane, xlim, ylim)
         if drawn is None:
             return None
         kind, shapes = drawn

@@ -48,7 +48,7 @@ def _finite(v: Fraction | None, default: float) -> float:
     return default if v is None else to_float(v)
 
 
-def _zone_patches(zone: Zone, plane: tuple[str, str], xlim: Any, ylim: Any) -> tuple[str, list[Any]] | None:
+def zone_patches(zone: Zone, plane: tuple[str, str], xlim: Any, ylim: Any) -> tuple[str, list[Any]] | None:
     """Rectangles/polygons (float) that draw ``zone`` in ``plane``; None if not drawable."""
     h, v = plane
     if isinstance(zone, SteppedZone):
@@ -109,7 +109,7 @@ def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax: Any =
     if allow:
         ax.add_patch(Rectangle((xlim[0], ylim[0]), xlim[1] - xlim[0], ylim[1] - ylim[0], color=_OUTSIDE, zorder=0))
     for z in allow:
-        drawn = _zone_patches(z, plane, xlim, ylim)
+        drawn = zone_patches(z, plane, xlim, ylim)
         if drawn is None:
             continue
         kind, shapes = drawn
@@ -122,7 +122,7 @@ def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax: Any =
     for z in machine.zones:
         if not z.forbid:
             continue
-        drawn = _zone_patches(z, plane, xlim, ylim)
+        drawn = zone_patches(z, plane, xlim, ylim)
         if drawn is None:
             continue
         kind, shapes = drawn

@@ -278,7 +278,7 @@ def _on_segment(q: Vertex, a: Vertex, b: Vertex) -> bool:
     )
 
 
-def _segment_meets_open_box(a: Vertex, b: Vertex, lo: Vertex, hi: Vertex) -> bool:
+def segment_meets_open_box(a: Vertex, b: Vertex, lo: Vertex, hi: Vertex) -> bool:
     """Does segment [a, b] meet the open box (lo, hi)?  Exact clipping in t."""
     t_lo, t_hi = Fraction(0), Fraction(1)
     lo_open = hi_open = False
@@ -368,7 +368,7 @@ class PolygonZone:
         if d == 0:
             return self._locate(q) >= 0
         lo, hi = (q[0] - d, q[1] - d), (q[0] + d, q[1] + d)
-        if any(_segment_meets_open_box(a, b, lo, hi) for a, b in self.edges()):
+        if any(segment_meets_open_box(a, b, lo, hi) for a, b in self.edges()):
             return False
         return self._locate(q) >= 0
 
@@ -379,7 +379,7 @@ class PolygonZone:
         if d == 0:
             return self._locate(q) > 0
         lo, hi = (q[0] - d, q[1] - d), (q[0] + d, q[1] + d)
-        if any(_segment_meets_open_box(a, b, lo, hi) for a, b in self.edges()):
+        if any(segment_meets_open_box(a, b, lo, hi) for a, b in self.edges()):
             return True
         return self._locate(q) > 0
 

@@ -19,7 +19,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.errors import MachineFileError
-from nczones.machine import _number, _polygon_problem, _Reader, _segments_intersect, parse_machine
+from nczones.machine import (
+    _Reader,
+    _segments_intersect,
+    parse_machine,
+    polygon_problem,
+    read_number,
+)
 
 
 def all_pairs_problem(vertices):
@@ -49,7 +55,7 @@ coords = st.builds(F, st.integers(-3, 3), st.sampled_from([1, 2, 10]))
 @settings(max_examples=600, deadline=None)
 @given(st.lists(st.tuples(coords, coords), min_size=3, max_size=9))
 def test_sweep_agrees_with_all_pairs(vertices):
-    assert _polygon_problem(vertices) == all_pairs_problem(vertices)
+    assert polygon_problem(vertices) == all_pairs_problem(vertices)
 
 
 @settings(max_examples=150, deadline=None)
@@ -57,7 +63,7 @@ def test_sweep_agrees_with_all_pairs(vertices):
        st.sampled_from([F(10**12), F(1, 10**25), F(3, 8)]))
 def test_sweep_agrees_on_large_and_fine_coordinates(points, unit):
     vertices = [(x * unit + F(10**5), y * unit) for x, y in points]  # 10**12 units: Python integers
-    assert _polygon_problem(vertices) == all_pairs_problem(vertices)
+    assert polygon_problem(vertices) == all_pairs_problem(vertices)
 
 
 def test_sweep_names_the_first_pair_of_many():
@@ -66,8 +72,8 @@ def test_sweep_names_the_first_pair_of_many():
     for k in range(40):
         teeth += [(F(2 * k), F(0)), (F(2 * k), F(10)), (F(2 * k + 1), F(10)), (F(2 * k + 1), F(0))]
     vertices = [*teeth, (F(79), F(-5)), (F(0), F(5))]
-    assert _polygon_problem(vertices) == all_pairs_problem(vertices)
-    assert _polygon_problem(vertices) is not None
+    assert polygon_problem(vertices) == all_pairs_problem(vertices)
+    assert polygon_problem(vertices) is not None
 
 
 texts = st.one_of(
@@ -80,8 +86,8 @@ texts = st.one_of(
 @given(texts, st.sampled_from([{}, {"positive": True}, {"nonnegative": True}, {"limit": F(10**9)}]))
 def test_fast_decimal_text_agrees_with_decimal(text, flags):
     fast, slow = _Reader("m", ""), _Reader("m", "")
-    got = _number(fast, text, "v", None, **flags)
-    want = _number(slow, decimal.Decimal(text), "v", None, **flags)
+    got = read_number(fast, text, "v", None, **flags)
+    want = read_number(slow, decimal.Decimal(text), "v", None, **flags)
     assert got == want
     assert [d.code for d in fast.diagnostics] == [d.code for d in slow.diagnostics]
 

@@ -248,11 +248,11 @@ fractions_ = st.builds(Fraction, st.integers(-10**12, 10**12), st.integers(1, 10
 def test_exact_shadow_arithmetic_equals_fractions(a, b):
     from nczones.gcode import expr
 
-    assert expr._q_add(a, b) == a + b and expr._q_sub(a, b) == a - b and expr._q_mul(a, b) == a * b
-    for got, want in ((expr._q_add(a, b), a + b), (expr._q_mul(a, b), a * b)):
+    assert expr.q_add(a, b) == a + b and expr.q_sub(a, b) == a - b and expr.q_mul(a, b) == a * b
+    for got, want in ((expr.q_add(a, b), a + b), (expr.q_mul(a, b), a * b)):
         assert (got.numerator, got.denominator) == (want.numerator, want.denominator)  # normalized
     if b:
-        got = expr._q_div(a, b)
+        got = expr.q_div(a, b)
         assert (got.numerator, got.denominator) == ((a / b).numerator, (a / b).denominator)
 
 

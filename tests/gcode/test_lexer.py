@@ -189,7 +189,7 @@ def test_plain_literals_read_exactly_as_the_general_reader_and_parse_decimal(tex
 def test_parser_reads_comment_free_lines_as_the_token_reader_does(line):
     """The parser's shortcut for ASCII lines without comments gives the code and columns of the
     token-by-token reader (``_compress``), which it uses for every other line."""
-    from nczones.gcode.parser import _compress, _Parser
+    from nczones.gcode.parser import Parser, _compress
 
-    p = _Parser(line)
+    p = Parser(line)
     assert (p.s, p.cols) == _compress(line)

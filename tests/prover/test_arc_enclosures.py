@@ -24,7 +24,7 @@ from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover import Verdict, verify_segments
 from nczones.prover.arcs import ArcEnclosure, decide_arc
-from nczones.prover.core import Prover, _bases
+from nczones.prover.core import Prover, arc_bases
 from nczones.prover.geometry import arc_geom, in_sweep, rational_point_on_arc
 from nczones.prover.limits import RunLimits
 from nczones.zones import AllowedSet, BoxZone, Region, SteppedZone
@@ -131,7 +131,7 @@ def exact_samples(seg):
     u = (g.s[0] - c[0], g.s[1] - c[1])
     w = (g.e[0] - c[0], g.e[1] - c[1])
     out = []
-    for base in _bases(u, g.ccw):
+    for base in arc_bases(u, g.ccw):
         for i in range(65):
             p = rational_point_on_arc(g, F(i, 64), base)
             if in_sweep(u, w, (p[0] - c[0], p[1] - c[1]), g.ccw, g.full):

@@ -45,9 +45,9 @@ def star_polygons(draw, forbid=None, max_vertices=9):
         r = draw(st.integers(200, 900)) / 100
         verts.append((F(round((10 + r * math.cos(math.radians(deg))) * 100), 100),
                       F(round((2 + r * math.sin(math.radians(deg))) * 100), 100)))
-    from nczones.machine import _polygon_problem
+    from nczones.machine import polygon_problem
 
-    if len(set(verts)) < 3 or _polygon_problem(verts) is not None:
+    if len(set(verts)) < 3 or polygon_problem(verts) is not None:
         verts = [(F(4), F(-3)), (F(16), F(-3)), (F(16), F(7)), (F(10), F(1)), (F(4), F(7))]
     if forbid is None:
         forbid = draw(st.booleans())

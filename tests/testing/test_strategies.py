@@ -76,11 +76,11 @@ def test_every_zone_kind_and_three_axes_give_programs_the_interpreter_models(dat
 @settings(max_examples=60, deadline=None, derandomize=True)
 @given(st.data())
 def test_polygons_are_simple_with_their_centre_inside(data):
-    from nczones.machine import _polygon_problem
+    from nczones.machine import polygon_problem
     from nczones.testing import polygon_centre, polygons
 
     p = data.draw(polygons(min_vertices=3, max_vertices=8, places=2))
-    assert _polygon_problem(list(p.vertices)) is None
+    assert polygon_problem(list(p.vertices)) is None
     assert p.interior_contains(dict(zip(p.plane, polygon_centre(p))))
 
 

@@ -46,8 +46,8 @@ from collections.abc import Callable
 from fractions import Fraction
 from typing import TypeAlias
 
-from ..expr import EvalError, _binary, _check
-from ..lexer import _double, _fraction
+from ..expr import EvalError, binary_op, check_double
+from ..lexer import to_double, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "EvalError",
@@ -171,7 +171,7 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
     (Fraction(6173, 500), Fraction(-3, 1))
     """
-    q: Fraction = value[1] if value[1] is not None else _double(value[0])
+    q: Fraction = value[1] if value[1] is not None else to_double(value[0])
     qn, qd = q.numerator, q.denominator
     sn, sd = step.numerator, step.denominator
     if sn == 1 and sd % qd == 0:  # already a multiple of the step (a decimal literal, an exact sum)
@@ -179,7 +179,7 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)
     num, den = abs(qn) * sd, qd * sn
     n = (2 * num + den) // (2 * den)
-    return _fraction(-n * sn if qn < 0 else n * sn, sd)
+    return to_fraction(-n * sn if qn < 0 else n * sn, sd)
 
 
 def _num(d: float) -> tuple:
@@ -213,7 +213,7 @@ def _angle(d: float, ctx: Context, full: bool) -> tuple:
     (ASIN, one-argument ATAN) 270..90 (i.e. a negative result + 360) or -90..90."""
     if not ctx.signed_angles and d < 0.0:
         d = d + 360.0
-    return (_check(d), None) if d != int(d) else (d, Fraction(int(d)))
+    return (check_double(d), None) if d != int(d) else (d, Fraction(int(d)))
 
 
 def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
@@ -238,7 +238,7 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
     if name == "cos":
         return (math.cos(d * math.pi / 180.0), None)
     if name == "tan":
-        return (_check(math.tan(d * math.pi / 180.0)), None)
+        return (check_double(math.tan(d * math.pi / 180.0)), None)
     if name in ("asin", "acos"):
         if d < -1.0 or d > 1.0:
             raise EvalError("GC312", f"argument to {name.upper()} out of range: {d!r} (allowed -1 to 1)")
@@ -258,7 +258,7 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
         return (math.log(d), None)
     if name == "exp":
         try:
-            return (_check(math.exp(d)), None)
+            return (check_double(math.exp(d)), None)
         except OverflowError:
             raise EvalError("GC312", "calculation resulted in 'infinity'") from None
     if name == "bcd":
@@ -274,7 +274,7 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
         return _num(float(int(digits)))
     if name == "adp":
         inc = ctx.increment()
-        return _binary("*", value, (float(1 / inc), 1 / inc))
+        return binary_op("*", value, (float(1 / inc), 1 / inc))
     raise AssertionError(name)  # pragma: no cover
 
 
@@ -291,12 +291,12 @@ def _two(name: str, a: tuple, b: tuple, ctx: Context) -> tuple:
         r = math.pow(x, y)
     except (OverflowError, ValueError):
         raise EvalError("GC312", f"POW[{x!r},{y!r}] cannot be computed") from None
-    return _num(_check(r))
+    return _num(check_double(r))
 
 
 def _binop(op: str, a: tuple, b: tuple) -> tuple:
     if op in ("+", "-", "*", "/"):
-        return _binary(op, a, b)
+        return binary_op(op, a, b)
     x, y = a[0], b[0]
     if op == "eq":
         if a is VACANT or b is VACANT:
@@ -366,7 +366,7 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         left = compile_tree(node[2], variables, ctx, in_address)
         right = compile_tree(node[3], variables, ctx, in_address)
         if op in ("+", "-", "*", "/"):
-            return lambda: _binary(op, left(), right())
+            return lambda: binary_op(op, left(), right())
         return lambda: _binop(op, left(), right())
     if tag == FN:
         name = node[1]

@@ -42,12 +42,12 @@ from ..blocks import Block, Word
 from ..interpreter import (
     WORK_OFFSETS,
     Interpreter,
-    _dadd,
-    _fmt,
-    _gname,
-    _qadd,
-    _sqrt_diff_exceeds,
-    _Stop,
+    StopProgram,
+    dadd,
+    fmt_number,
+    gname,
+    qadd,
+    sqrt_diff_exceeds,
 )
 from .expr import FanucVariables
 from .transforms import Mirror, Polar, Rotation, Scaling, mirror, polar_point, rotate, scale
@@ -231,10 +231,10 @@ class FanucInterpreter(Interpreter):
         if self.track:
             deps = []
             for i in range(self.naxes):
-                d = _dadd(_dadd(_dadd(self.dep_g5x["EXT"][i], self.dep_g5x[self.wcs][i]), self.dep_g52[i]),
+                d = dadd(dadd(dadd(self.dep_g5x["EXT"][i], self.dep_g5x[self.wcs][i]), self.dep_g52[i]),
                           self.dep_g92[i])
                 if i == self.tool_axis:
-                    d = _dadd(d, self.dep_tlo)
+                    d = dadd(d, self.dep_tlo)
                 deps.append(d)
             self.dep_off = deps
 
@@ -274,10 +274,10 @@ class FanucInterpreter(Interpreter):
             if g is None:
                 hint = "; valid in the linuxcnc dialect: set dialect = \"linuxcnc\" in [machine]" \
                     if k in LINUXCNC_ONLY_G else ""
-                raise self._error("GC202", f"unknown G code {_gname(k)} (written {w.text or _gname(k)}): not a "
+                raise self._error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}): not a "
                                   f"Fanuc mill G code; see specs/fanuc.md{hint}", w)
             if g == 0 and 0 in groups:
-                raise self._error("GC201", f"{_gname(groups[0][0])} and {_gname(k)} are both one-shot (group 00) "
+                raise self._error("GC201", f"{gname(groups[0][0])} and {gname(k)} are both one-shot (group 00) "
                                   "codes; write them in separate blocks", w)
             groups[g] = (k, w)
         if len(mcodes) > 3:
@@ -286,11 +286,11 @@ class FanucInterpreter(Interpreter):
         g1 = groups.get(1)
         g9 = groups.get(9)
         if g1 and g9 and g9[0] != 800:
-            self._unknown(f"{_gname(g1[0])} {_gname(g9[0])}", f"{_gname(g1[0])} and the canned cycle "
-                          f"{_gname(g9[0])} in one block: which one the control runs depends on the model", g9[1])
+            self._unknown(f"{gname(g1[0])} {gname(g9[0])}", f"{gname(g1[0])} and the canned cycle "
+                          f"{gname(g9[0])} in one block: which one the control runs depends on the model", g9[1])
         for k, w in gcodes:
             if k in UNKNOWN_G:
-                self._unknown(_gname(k), UNKNOWN_G[k], w)
+                self._unknown(gname(k), UNKNOWN_G[k], w)
         for k, w in mcodes:
             if k not in self._harmless_m and k not in (2, 30, 6):
                 self._unknown(f"M{k}", f"M{k} is not a code nczones models (machine M codes may move anything; "
@@ -345,13 +345,13 @@ class FanucInterpreter(Interpreter):
         # ---- work coordinate system (group 14)
         if 14 in groups:
             if self.prog is not None:
-                self._unknown(_gname(groups[14][0]), "changing the workpiece coordinate system while a coordinate "
+                self._unknown(gname(groups[14][0]), "changing the workpiece coordinate system while a coordinate "
                               "transform (G68, G51, G51.1, G16) is active is not modelled", groups[14][1])
             self._select_wcs(groups[14], words)
         # ---- one-shot codes that use the axis words
         uses_axes = transform_axes
         if g0 is not None and self.prog is not None and g0[0] in (100, 270, 280, 290, 300, 520, 530, 920, 921):
-            self._unknown(_gname(g0[0]), f"{_gname(g0[0])} while a coordinate transform (G68, G51, G51.1, G16) is "
+            self._unknown(gname(g0[0]), f"{gname(g0[0])} while a coordinate transform (G68, G51, G51.1, G16) is "
                           "active is not modelled", g0[1])
         if g0 is not None:
             k = g0[0]
@@ -407,18 +407,18 @@ class FanucInterpreter(Interpreter):
         if self._tlo_shift is not None:
             if not self.unsupported and self.tool_axis is not None:  # the tool length change, no tool axis move
                 end = list(self.pos)
-                end[self.tool_axis] = _qadd(end[self.tool_axis], self._tlo_shift)
+                end[self.tool_axis] = qadd(end[self.tool_axis], self._tlo_shift)
                 deps = None
                 if self.track:
                     deps = [dict(d) for d in self.dep_pos]
-                    deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
+                    deps[self.tool_axis] = dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
                 kind = SegmentKind.RAPID if self.motion == 0 or self.cycle is not None else SegmentKind.LINE
                 if kind is SegmentKind.LINE:
                     self._check_feed()
                 self._emit(kind, end, feed=kind is SegmentKind.LINE, derived="tool length offset", end_deps=deps)
             self._tlo_shift = None
         if 2 in mset or 30 in mset:
-            raise _Stop
+            raise StopProgram
 
     # ------------------------------------------------------------------ pieces
     def _cancel_cycle(self) -> None:
@@ -438,7 +438,7 @@ class FanucInterpreter(Interpreter):
             if h is None:
                 reg = self.tlo_register
                 if reg is None:
-                    raise self._error("GC208", f"{_gname(k)} needs an H word with the offset number the first time", w)
+                    raise self._error("GC208", f"{gname(k)} needs an H word with the offset number the first time", w)
             else:
                 if h.value.denominator != 1 or h.value < 0:
                     raise self._error("GC209", f"H word {h.text} must be a non-negative integer offset number", h)
@@ -462,7 +462,7 @@ class FanucInterpreter(Interpreter):
         if self.tool_axis is not None and self.tlo != old:
             if self.settings.tool_length_motion == "move":
                 self._tlo_shift = self.tlo - old
-                self._tlo_shift_deps = _dadd(self.dep_tlo, old_deps, -1) if self.track else None
+                self._tlo_shift_deps = dadd(self.dep_tlo, old_deps, -1) if self.track else None
             self.after_home.discard(self.tool_axis)
         elif self.tool_axis is not None:
             self.after_home.discard(self.tool_axis)
@@ -491,7 +491,7 @@ class FanucInterpreter(Interpreter):
             if x.value < 0:
                 raise self._error("GC209", f"dwell time {x.text} is negative", x)
             if x.letter == "P":
-                seconds = _seconds(x.value)
+                seconds = dwell_p_seconds(x.value)
             else:
                 seconds = x.value
         self._emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
@@ -501,9 +501,9 @@ class FanucInterpreter(Interpreter):
         end, deps = self._program_target(axis_words, False, absolute)
         shift = self._tlo_shift
         if shift is not None and self.tool_axis is not None and not any(i == self.tool_axis for i, _ in axis_words):
-            end[self.tool_axis] = _qadd(end[self.tool_axis], shift)
+            end[self.tool_axis] = qadd(end[self.tool_axis], shift)
             if deps is not None:
-                deps[self.tool_axis] = _dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
+                deps[self.tool_axis] = dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
         self._tlo_shift = None
         return end, deps
 
@@ -514,7 +514,7 @@ class FanucInterpreter(Interpreter):
         if self._first_after_transform:
             self._first_after_transform = False
             if not self.absolute:
-                self._unknown(_gname(self.motion or 0), "the first move after a coordinate transform is cancelled must be "
+                self._unknown(gname(self.motion or 0), "the first move after a coordinate transform is cancelled must be "
                               "absolute (G90): the manuals give an incremental one no meaning")
                 return
         motion = self.motion
@@ -530,7 +530,7 @@ class FanucInterpreter(Interpreter):
                 self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         elif motion in (20, 30):
             if self._tlo_shift is not None:
-                self._unknown(_gname(motion), "a tool length change in an arc block: the tool axis moves along "
+                self._unknown(gname(motion), "a tool length change in an arc block: the tool axis moves along "
                               "the arc in a way the manuals do not state")
                 return
             rw = words.get("R")
@@ -544,7 +544,7 @@ class FanucInterpreter(Interpreter):
             end, deps = self._target(axis_words)
             self._emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
         else:
-            self._unknown(_gname(motion or 0), f"{_gname(motion or 0)} is not modelled")
+            self._unknown(gname(motion or 0), f"{gname(motion or 0)} is not modelled")
 
     def _plane_indices(self) -> tuple:
         a, b, _n = PLANE_AXES[self.plane]
@@ -567,7 +567,7 @@ class FanucInterpreter(Interpreter):
         end, deps = self._program_target(axis_words, True)
         if self._tlo_shift is not None and self.tool_axis is not None and not any(
                 i == self.tool_axis for i, _ in axis_words):
-            end[self.tool_axis] = _qadd(end[self.tool_axis], self._tlo_shift)
+            end[self.tool_axis] = qadd(end[self.tool_axis], self._tlo_shift)
         self._tlo_shift = None
         for i, _w in axis_words:
             self.after_home.discard(i)
@@ -576,7 +576,7 @@ class FanucInterpreter(Interpreter):
     def _fanuc_home(self, k: int, axis_words: AxisWords, words: Words, w: Word) -> None:
         """G28 / G30 Pn: rapid to the intermediate point, then the named axes to the reference position."""
         if not axis_words:
-            self._unknown(_gname(k), f"{_gname(k)} without axis words: Fanuc moves no axis, Haas returns every "
+            self._unknown(gname(k), f"{gname(k)} without axis words: Fanuc moves no axis, Haas returns every "
                           "axis; nczones does not know which this machine does", w)
             return
         n = 1
@@ -592,7 +592,7 @@ class FanucInterpreter(Interpreter):
             return
         self._note_assumed(("units", "distance", "offset"))
         inter, deps = self._target(axis_words)
-        self._emit(SegmentKind.RAPID, inter, derived=f"{_gname(k)} intermediate", end_deps=deps)
+        self._emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
         self.intermediate = list(inter)
         end = list(self.pos)
         hdeps = [dict(d) for d in self.dep_pos] if self.track else None
@@ -602,7 +602,7 @@ class FanucInterpreter(Interpreter):
                 hdeps[i] = {}
             if i == self.tool_axis and self.tlo:
                 self.after_home.add(i)
-        self._emit(SegmentKind.RAPID, end, derived=f"{_gname(k)} reference {n}", end_deps=hdeps)
+        self._emit(SegmentKind.RAPID, end, derived=f"{gname(k)} reference {n}", end_deps=hdeps)
 
     def _g29(self, axis_words: AxisWords, w: Word) -> None:
         """G29: from the reference position via G28's intermediate point to the target."""
@@ -722,7 +722,7 @@ class FanucInterpreter(Interpreter):
     def _enter_transform(self) -> None:
         if self.prog is None:
             self.prog = [self.pos[i] - self.off[i] for i in range(self.naxes)]
-            self.prog_deps = [_dadd(self.dep_pos[i], self.dep_off[i], -1) for i in range(self.naxes)] \
+            self.prog_deps = [dadd(self.dep_pos[i], self.dep_off[i], -1) for i in range(self.naxes)] \
                 if self.track else [{} for _ in range(self.naxes)]
 
     def _centre(self, axis_words: AxisWords, i: int, w: Word) -> Fraction:
@@ -825,7 +825,7 @@ class FanucInterpreter(Interpreter):
         if self.rotation is not None:
             q = rotate(self.rotation, q, step)
             mixed |= {self.rotation.ia, self.rotation.ib}
-        end = [_qadd(q[i], self.off[i]) for i in range(self.naxes)]
+        end = [qadd(q[i], self.off[i]) for i in range(self.naxes)]
         self._tlo_shift = None  # the offsets hold the new tool length: this move carries it out
         deps = None
         if self.track:
@@ -837,18 +837,18 @@ class FanucInterpreter(Interpreter):
                                       "parameter ranges on a point a coordinate transform moves are not modelled")
                     deps.append(dict(self.dep_off[i]))
                 else:
-                    deps.append(_dadd(pd[i], self.dep_off[i]))
+                    deps.append(dadd(pd[i], self.dep_off[i]))
         return end, deps
 
     def _transformed_motion(self, block: Block, axis_words: AxisWords, words: Words) -> None:
         motion = self.motion
         if self._first_after_transform and not self.absolute:
-            self._unknown(_gname(motion or 0), "the first move after G68, G51, G51.1 or G16 must be absolute (G90): "
+            self._unknown(gname(motion or 0), "the first move after G68, G51, G51.1 or G16 must be absolute (G90): "
                           "the manuals give an incremental one no meaning")
             return
         self._first_after_transform = False
         if motion not in (0, 10, 20, 30):
-            self._unknown(_gname(motion or 0), f"{_gname(motion or 0)} under a coordinate transform is not modelled")
+            self._unknown(gname(motion or 0), f"{gname(motion or 0)} under a coordinate transform is not modelled")
             return
         point = self._program_point(axis_words)
         if point is None:
@@ -912,7 +912,7 @@ class FanucInterpreter(Interpreter):
                 return  # a 0 degree arc: no motion
             h2 = ((ea - sa) ** 2 + (eb - sb) ** 2) / 4
             if h2 > (abs(r) + tol) ** 2:
-                raise self._error("GC302", f"arc radius R{_fmt(abs(r))} mm is too small to reach the end point", rw)
+                raise self._error("GC302", f"arc radius R{fmt_number(abs(r))} mm is too small to reach the end point", rw)
             r_machine = r * abs(fa)
             mh2 = ((end[ia] - self.pos[ia]) ** 2 + (end[ib] - self.pos[ib]) ** 2) / 4
             if mh2 >= r_machine ** 2:
@@ -933,8 +933,8 @@ class FanucInterpreter(Interpreter):
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
         if r0 == 0 or r1 == 0:
             raise self._error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
-        if r0 != r1 and _sqrt_diff_exceeds(r0, r1, tol):
-            raise self._error("GC301", f"arc end point is off its circle by more than {_fmt(tol)} mm", iw or jw)
+        if r0 != r1 and sqrt_diff_exceeds(r0, r1, tol):
+            raise self._error("GC301", f"arc end point is off its circle by more than {fmt_number(tol)} mm", iw or jw)
         centre_point = list(self._program())
         centre_point[ia], centre_point[ib] = ca, cb
         shift = self._tlo_shift
@@ -953,10 +953,10 @@ class FanucInterpreter(Interpreter):
             tl = self.tlo if i == self.tool_axis else _ZERO
             self.g92[i] = self.pos[i] - ext[i] - self.g5x[self.wcs][i] - self.g52[i] - tl - self._mm(aw.value, i)
             if self.track:
-                d = _dadd(_dadd(self.dep_pos[i], self.dep_g5x[self.wcs][i], -1), self.dep_g5x["EXT"][i], -1)
-                d = _dadd(d, self.dep_g52[i], -1)
+                d = dadd(dadd(self.dep_pos[i], self.dep_g5x[self.wcs][i], -1), self.dep_g5x["EXT"][i], -1)
+                d = dadd(d, self.dep_g52[i], -1)
                 if i == self.tool_axis:
-                    d = _dadd(d, self.dep_tlo, -1)
+                    d = dadd(d, self.dep_tlo, -1)
                 self.dep_g92[i] = d
         self._recompute_offsets()
 
@@ -971,7 +971,7 @@ class FanucInterpreter(Interpreter):
         """
         k = self.cycle
         assert k is not None  # called in canned cycle mode
-        name = _gname(k)
+        name = gname(k)
         if self.plane is not Plane.XY:
             self._unknown(name, f"{name} outside G17: the drilling axis depends on parameter 5101#0 FXY")
             return
@@ -1002,7 +1002,7 @@ class FanucInterpreter(Interpreter):
         if k in (730, 830) and "Q" not in data:
             raise self._error("GC208", f"{name} needs Q (the depth of cut per peck)")
         if k in (730, 830) and data["Q"] <= 0:
-            raise self._error("GC209", f"peck depth Q{_fmt(data['Q'])} must be greater than 0")
+            raise self._error("GC209", f"peck depth Q{fmt_number(data['Q'])} must be greater than 0")
         if k == 760 and "Q" not in data:
             data["Q"] = _ZERO
         self._check_feed()
@@ -1016,11 +1016,11 @@ class FanucInterpreter(Interpreter):
         initial = self.initial_level
         offz = self.off[iz]
         if self.absolute:
-            r = _qadd(self._len(data["R"]), offz)
-            bottom = _qadd(self._len(data["Z"]), offz)
+            r = qadd(self._len(data["R"]), offz)
+            bottom = qadd(self._len(data["Z"]), offz)
         else:
-            r = _qadd(initial, self._len(data["R"]))
-            bottom = _qadd(r, self._len(data["Z"]))
+            r = qadd(initial, self._len(data["R"]))
+            bottom = qadd(r, self._len(data["Z"]))
         wd = {self.axes[i]: aw for i, aw in axis_words}
         for i, aw in axis_words:
             if self.axes[i] not in ("X", "Y", "Z"):
@@ -1041,7 +1041,7 @@ class FanucInterpreter(Interpreter):
                 self._unknown(name, "G76's shift direction is parameter 5101 bits RD1/RD2; set [fanuc] "
                               "boring_shift in the machine file")
                 return
-        dwell = _seconds(data["P"]) if "P" in data and k in (760, 820, 840, 890, 740, 842, 843) else None
+        dwell = dwell_p_seconds(data["P"]) if "P" in data and k in (760, 820, 840, 890, 740, 842, 843) else None
         top = initial if not self.retract_r else r
         top_deps = self.initial_level_deps if not self.retract_r and self.track else None
         transformed = self.prog is not None
@@ -1068,14 +1068,14 @@ class FanucInterpreter(Interpreter):
                 self._program()[ix], self._program()[iy] = p[ix], p[iy]
             elif self.absolute:
                 if "X" in wd:
-                    target[ix] = _qadd(self._mm(wd["X"].value, ix), self.off[ix])
+                    target[ix] = qadd(self._mm(wd["X"].value, ix), self.off[ix])
                 if "Y" in wd:
-                    target[iy] = _qadd(self._mm(wd["Y"].value, iy), self.off[iy])
+                    target[iy] = qadd(self._mm(wd["Y"].value, iy), self.off[iy])
             else:
                 if "X" in wd:
-                    target[ix] = _qadd(target[ix], self._mm(wd["X"].value, ix))
+                    target[ix] = qadd(target[ix], self._mm(wd["X"].value, ix))
                 if "Y" in wd:
-                    target[iy] = _qadd(target[iy], self._mm(wd["Y"].value, iy))
+                    target[iy] = qadd(target[iy], self._mm(wd["Y"].value, iy))
             a, b = target[ix], target[iy]
 
             def go(kind, z, derived, x=None, y=None, a=a, b=b, z_deps=None):
@@ -1151,7 +1151,7 @@ class FanucInterpreter(Interpreter):
         write(self, n, value)
 
 
-def _seconds(p: Fraction) -> Fraction:
+def dwell_p_seconds(p: Fraction) -> Fraction:
     """A dwell P as seconds: milliseconds when written as an integer (Fanuc), seconds with a decimal
     fraction (Haas writes ``P0.5``)."""
     return p / 1000 if p.denominator == 1 else p

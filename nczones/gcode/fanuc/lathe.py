@@ -29,7 +29,7 @@ from typing import Any
 from ...machine import Machine
 from ...motion import Plane, SegmentKind
 from ..blocks import Block, ShapeBlock, Word
-from ..interpreter import AXIS_LETTERS, _dadd, _fmt, _gkey, _gname, _qadd, _Stop
+from ..interpreter import AXIS_LETTERS, StopProgram, dadd, fmt_number, gkey, gname, qadd
 from ..turning import (
     CycleUnknown,
     Element,
@@ -42,7 +42,7 @@ from ..turning import (
     thread_cycle_g76,
     turning_cycle,
 )
-from .interpreter import FanucInterpreter, _seconds
+from .interpreter import FanucInterpreter, dwell_p_seconds
 
 __all__ = ["FanucLatheInterpreter", "LATHE_GROUPS", "SHAPE_CODES"]
 
@@ -234,9 +234,9 @@ class FanucLatheInterpreter(FanucInterpreter):
         for i, v, incremental, _w in targets:
             q = self._mm(v, i)
             if incremental:
-                end[i] = _qadd(end[i], q)
+                end[i] = qadd(end[i], q)
             else:
-                end[i] = _qadd(q, self.off[i])
+                end[i] = qadd(q, self.off[i])
                 if deps is not None:
                     deps[i] = dict(self.dep_off[i])
         return end, deps
@@ -254,9 +254,9 @@ class FanucLatheInterpreter(FanucInterpreter):
                 if deps is not None:
                     deps[i] = {}
             elif id(w) in self._incremental:
-                end[i] = _qadd(end[i], q)
+                end[i] = qadd(end[i], q)
             else:
-                end[i] = _qadd(q, self.off[i])
+                end[i] = qadd(q, self.off[i])
                 if deps is not None:
                     deps[i] = dict(self.dep_off[i])
         return end, deps
@@ -283,7 +283,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         for w in block.words:
             letter = w.letter
             if letter == "G":
-                k = _gkey(w.value)
+                k = gkey(w.value)
                 if k is None:
                     raise self._error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at "
                                       "most one decimal", w)
@@ -304,17 +304,17 @@ class FanucLatheInterpreter(FanucInterpreter):
                 other = "B" if self.system == "A" else "A"
                 hint = (f"; in G code system {other} it is a lathe code: set gcode_system = \"{other}\" in [fanuc]"
                         if k in LATHE_GROUPS[other] else "")
-                raise self._error("GC202", f"unknown G code {_gname(k)} (written {w.text or _gname(k)}): not a "
+                raise self._error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}): not a "
                                   f"Fanuc lathe G code of system {self.system}; see specs/turning.md{hint}", w)
             if g == 0 and 0 in groups:
-                raise self._error("GC201", f"{_gname(groups[0][0])} and {_gname(k)} are both one-shot (group 00) "
+                raise self._error("GC201", f"{gname(groups[0][0])} and {gname(k)} are both one-shot (group 00) "
                                   "codes; write them in separate blocks", w)
             groups[g] = (k, w)
         if len(mcodes) > 3:
             raise self._error("GC206", f"{len(mcodes)} M words in one block; at most 3 are allowed", mcodes[3][1])
         for k, w in gcodes:
             if k in _UNKNOWN:
-                self._unknown(_gname(k), _UNKNOWN[k], w)
+                self._unknown(gname(k), _UNKNOWN[k], w)
         for k, w in mcodes:
             if k not in self._harmless_m and k not in (2, 30):
                 self._unknown(f"M{k}", f"M{k} is not a code nczones models (machine M codes may move anything, "
@@ -411,7 +411,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             elif targets and not self.unsupported:
                 self._lathe_motion(block, targets, words)
         if 2 in mset or 30 in mset:
-            raise _Stop
+            raise StopProgram
 
     # ------------------------------------------------------------------ pieces
     def _tool(self, tw: Word, g1: tuple | None) -> None:
@@ -465,7 +465,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             x = given[0]
             if x.value < 0:
                 raise self._error("GC209", f"dwell time {x.text} is negative", x)
-            seconds = _seconds(x.value) if x.letter == "P" else x.value
+            seconds = dwell_p_seconds(x.value) if x.letter == "P" else x.value
         self._emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
 
     def _lathe_g53(self, words: dict[str, Word], w: Word) -> None:
@@ -484,12 +484,12 @@ class FanucLatheInterpreter(FanucInterpreter):
         targets = self._axis_targets(words)
         if not targets:
             if "S" not in words:
-                raise self._error("GC208", f"{_gname(500 if self.system == 'A' else 920)} needs axis words (the "
+                raise self._error("GC208", f"{gname(500 if self.system == 'A' else 920)} needs axis words (the "
                                   "coordinate system) or S (the spindle speed clamp)", w)
             return  # the spindle speed clamp: no effect on motion
         if any(inc for _i, _v, inc, _w in targets):
             # G50 U W shifts the coordinate system by the increments (0i-TD "Coordinate system setting")
-            self._unknown(_gname(500 if self.system == "A" else 920), "a coordinate system shift by U/W is not "
+            self._unknown(gname(500 if self.system == "A" else 920), "a coordinate system shift by U/W is not "
                           "modelled", w)
             return
         self._g92(self._normalised(targets), w)
@@ -514,11 +514,11 @@ class FanucLatheInterpreter(FanucInterpreter):
             self._arc(block, axis_words, self._arc_words(words), motion == 20, False)
         elif motion in (320, 330):
             if "F" not in words and self.feed == 0:
-                raise self._error("GC208", f"{_gname(motion)} needs F (the lead)")
+                raise self._error("GC208", f"{gname(motion)} needs F (the lead)")
             end, deps = self._program_target(axis_words, False)
-            self._emit(SegmentKind.LINE, end, derived=f"{_gname(motion)} thread", end_deps=deps)
+            self._emit(SegmentKind.LINE, end, derived=f"{gname(motion)} thread", end_deps=deps)
         else:
-            self._unknown(_gname(motion or 0), f"{_gname(motion or 0)} is not modelled")
+            self._unknown(gname(motion or 0), f"{gname(motion or 0)} is not modelled")
 
     def _arc_words(self, words: dict[str, Word]) -> dict[str, Word]:
         """The words the parent's arc code reads (its axis words come from the normalised targets)."""
@@ -550,7 +550,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             iz, ix = self._zx()
             ranged = getattr(self, "ranged", None)  # the ranged parameters, when the interpreter knows them
             for i in (iz, ix):
-                d = _dadd(self.dep_pos[i], self.dep_off[i], -1)
+                d = dadd(self.dep_pos[i], self.dep_off[i], -1)
                 names = sorted(k for k in d if ranged is None or f"{k}.{self.axes[i]}" in ranged or k in ranged)
                 if names:
                     self._unknown("parameter range", f"{name}: the cycle's start point in the workpiece coordinate "
@@ -578,8 +578,8 @@ class FanucLatheInterpreter(FanucInterpreter):
         try:
             for m in moves:
                 end = list(self.pos)
-                end[iz] = _qadd(m.end[0], self.off[iz])
-                end[ix] = _qadd(m.end[1], self.off[ix])
+                end[iz] = qadd(m.end[0], self.off[iz])
+                end[ix] = qadd(m.end[1], self.off[ix])
                 deps = None
                 if self.track:
                     deps = [dict(d) for d in self.dep_pos]
@@ -619,7 +619,7 @@ class FanucLatheInterpreter(FanucInterpreter):
     def _single_cycle(self, targets: list, words: dict[str, Word], block: Block) -> None:
         k = self.turning
         assert k is not None
-        name = _gname(k)
+        name = gname(k)
         if not self._cycle_start(name):
             return
         iz, ix = self._zx()
@@ -666,7 +666,7 @@ class FanucLatheInterpreter(FanucInterpreter):
 
     # ------------------------------------------------------------------ G70-G73
     def _shape_cycle(self, k: int, block: Block, words: dict[str, Word], w: Word) -> None:
-        name = _gname(k)
+        name = gname(k)
         if not isinstance(block, ShapeBlock) or "P" not in words or "Q" not in words:
             if k == 700:
                 raise self._error("GC208", "G70 needs P and Q (the finishing shape's first and last sequence "
@@ -700,7 +700,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 depth = self._len_word(words.get("D")) if "D" in words else data["depth"]
                 retract = data["retract"]
                 if "D" in words and "R" in words and k == 710 and words["R"].value not in (0, 1):
-                    raise CycleUnknown(f"{name} R{_fmt(words['R'].value)}: in the one-block form R1 selects type II; "
+                    raise CycleUnknown(f"{name} R{fmt_number(words['R'].value)}: in the one-block form R1 selects type II; "
                                        "other values are not modelled")
                 if depth is None:
                     raise CycleUnknown(f"{name} without a depth of cut: give the first block ({name} "
@@ -714,7 +714,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 type_two = (first_moves_z if not facing else first_moves_x) or (
                     "D" in words and "R" in words and words["R"].value == 1)
                 if not (first_moves_x if not facing else first_moves_z):
-                    raise CycleUnknown(f"{name}: the shape's first block (N{_fmt(words['P'].value)}) must move "
+                    raise CycleUnknown(f"{name}: the shape's first block (N{fmt_number(words['P'].value)}) must move "
                                        f"{'X' if not facing else 'Z'}")
                 moves = rough_cycle(name, start, approach, shape, facing=facing, depth=depth, retract=retract,
                                     allowance=allowance, type_one=not type_two, infeed_rapid=first_rapid,
@@ -739,11 +739,11 @@ class FanucLatheInterpreter(FanucInterpreter):
             data = self.rough[k // 10]
             if dw is not None:
                 if dw.value <= 0:
-                    raise self._error("GC209", f"{_gname(k)} depth of cut {dw.text} must be greater than 0", dw)
+                    raise self._error("GC209", f"{gname(k)} depth of cut {dw.text} must be greater than 0", dw)
                 data["depth"] = self._len(dw.value)  # a radius value, also on a diameter axis
             if "R" in words:
                 if words["R"].value < 0:
-                    raise self._error("GC209", f"{_gname(k)} escape amount {words['R'].text} must not be negative",
+                    raise self._error("GC209", f"{gname(k)} escape amount {words['R'].text} must not be negative",
                                       words["R"])
                 data["retract"] = self._len(words["R"].value)
         elif k == 730:
@@ -772,7 +772,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         first_rapid = False
         first_z = first_x = False
         for n, b in enumerate(blocks):
-            gs = [(_gkey(x.value), x) for x in b.words if x.letter == "G"]
+            gs = [(gkey(x.value), x) for x in b.words if x.letter == "G"]
             bw = {x.letter: x for x in b.words if x.letter not in "GMNOFST"}
             fw = next((x for x in b.words if x.letter == "F"), None)
             feed = fw.value if fw is not None else None
@@ -784,11 +784,11 @@ class FanucLatheInterpreter(FanucInterpreter):
                 elif g == 40:
                     pass
                 else:
-                    raise CycleUnknown(f"{name}: {_gname(g or 0)} in the finishing shape (line {b.span.line}) is "
+                    raise CycleUnknown(f"{name}: {gname(g or 0)} in the finishing shape (line {b.span.line}) is "
                                        "not modelled (the manuals allow G00-G03 and G04 between P and Q)")
             for bword in b.words:
                 if bword.letter == "M" and bword.value not in self._harmless_m:
-                    raise CycleUnknown(f"{name}: M{_fmt(bword.value)} in the finishing shape (line {b.span.line})")
+                    raise CycleUnknown(f"{name}: M{fmt_number(bword.value)} in the finishing shape (line {b.span.line})")
                 if bword.letter == "T":
                     raise CycleUnknown(f"{name}: a T word in the finishing shape (line {b.span.line})")
             if any(g == 40 for g, _x in gs):
@@ -873,7 +873,7 @@ class FanucLatheInterpreter(FanucInterpreter):
 
     # ------------------------------------------------------------------ G74 / G75
     def _peck(self, k: int, words: dict[str, Word], w: Word) -> None:
-        name = _gname(k)
+        name = gname(k)
         targets = self._axis_targets(words)
         if not targets:  # the first block: G74 R(e)
             if "R" in words:

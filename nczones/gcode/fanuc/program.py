@@ -49,8 +49,8 @@ from ..program import (
     DEFAULT_MAX_LOOP_ITERATIONS,
     FastRunRequest,
     IterationBoundExceeded,
+    StringSource,
     UnsupportedGcode,
-    _StringSource,
 )
 from .expr import (
     VACANT,
@@ -1000,7 +1000,7 @@ class FanucRunner:
             path = _library_file(self.library, program)
             if path is not None:
                 text = path.read_bytes().decode("utf-8", errors="replace")
-                source = _Source(_StringSource(text), str(path))
+                source = _Source(StringSource(text), str(path))
                 self.library_sources[program] = source
         if source is None:
             where = (f" nor in the library {self.library}" if self.library is not None
@@ -1129,7 +1129,7 @@ def iter_blocks(
     """
     variables = variables if variables is not None else FanucVariables(
         dict(settings.variables) if settings is not None else None)
-    runner = FanucRunner(_StringSource(text), file, variables, settings=settings, block_delete=block_delete,
+    runner = FanucRunner(StringSource(text), file, variables, settings=settings, block_delete=block_delete,
                          library=library, state=state, max_loop_iterations=max_loop_iterations,
                          first_line=first_line, first_index=first_index, lane=lane)
     if runner_out is not None:
