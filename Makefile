@@ -1,8 +1,9 @@
 # Two commands do all the set-up on a fresh machine (Python 3.11 + pip):
 #   make demo   create .venv, install nczones (runtime dependencies only), verify the bundled example
 #   make test   create .venv, install nczones with its test extras, run every test
-# CI runs .ci/run: make test, then ruff, mypy and the wheel test (and it installs chromium for the
-# browser tests; make test never installs system packages: without chromium those tests skip).
+# CI runs .ci/run: make test, then ruff and lint-imports (make lint), mypy and the wheel test (and it
+# installs chromium for the browser tests; make test never installs system packages: without chromium
+# those tests skip).
 PYTHON ?= python3
 VENV ?= .venv
 BIN := $(VENV)/bin
@@ -41,6 +42,7 @@ test: $(STAMP)
 
 lint: $(STAMP)
 	$(BIN)/ruff check nczones bench tests docs
+	$(BIN)/lint-imports
 
 typecheck: $(STAMP)
 	$(BIN)/mypy

@@ -1,0 +1,155 @@
+"""The package's structure (issue 21): no private name crosses a file, the two witnesses stay apart.
+
+``lint-imports`` (``make lint``, contracts in pyproject.toml) keeps the layers and the independence of
+the prover and the controller; these tests keep what it does not see: a ``_private`` name imported from
+another file (or read from an imported module, ``module._name``), and an import loop among the modules
+at run time (imports under ``TYPE_CHECKING`` do not run).
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+PACKAGE = Path(__file__).resolve().parents[2] / "nczones"
+
+
+def _modules(package: Path) -> dict[str, Path]:
+    out = {}
+    for path in sorted(package.rglob("*.py")):
+        rel = path.relative_to(package.parent).with_suffix("")
+        name = ".".join(rel.parts)
+        out[name.removesuffix(".__init__")] = path
+    return out
+
+
+def _target(module: str, path: Path, node: ast.ImportFrom) -> str:
+    """The absolute module name an ``ImportFrom`` reads from."""
+    if not node.level:
+        return node.module or ""
+    package = module if path.name == "__init__.py" else module.rsplit(".", 1)[0]
+    base = package.split(".")
+    if node.level > 1:
+        base = base[: -(node.level - 1)]
+    return ".".join(base + ([node.module] if node.module else []))
+
+
+def _type_checking_lines(tree: ast.Module) -> set[int]:
+    lines: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            for inner in node.body:
+                lines.update(range(inner.lineno, (inner.end_lineno or inner.lineno) + 1))
+    return lines
+
+
+def _private(name: str) -> bool:
+    return name.startswith("_") and not (name.startswith("__") and name.endswith("__"))
+
+
+def private_names_across_files(package: Path = PACKAGE) -> list[str]:
+    """``file:line: name`` for every private name one module takes from another."""
+    modules = _modules(package)
+    found = []
+    for module, path in modules.items():
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        aliases: dict[str, str] = {}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom):
+                source = _target(module, path, node)
+                for alias in node.names:
+                    if f"{source}.{alias.name}" in modules:
+                        aliases[alias.asname or alias.name] = f"{source}.{alias.name}"
+                    elif source.startswith("nczones") and source != module and _private(alias.name):
+                        found.append(f"{path.relative_to(package.parent)}:{node.lineno}: {alias.name} from {source}")
+            elif isinstance(node, ast.Import):
+                for alias in node.names:
+                    if alias.name in modules and alias.asname:
+                        aliases[alias.asname] = alias.name
+        for node in ast.walk(tree):
+            if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and _private(node.attr)
+                    and aliases.get(node.value.id, module) != module):
+                found.append(f"{path.relative_to(package.parent)}:{node.lineno}: "
+                             f"{node.value.id}.{node.attr} of {aliases[node.value.id]}")
+    return found
+
+
+def runtime_import_loops(package: Path = PACKAGE) -> list[list[str]]:
+    """Cycles among the package's modules by the imports that run (nested imports included)."""
+    modules = _modules(package)
+    edges: dict[str, set[str]] = {m: set() for m in modules}
+    for module, path in modules.items():
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        skip = _type_checking_lines(tree)
+        for node in ast.walk(tree):
+            if getattr(node, "lineno", None) in skip:
+                continue
+            if isinstance(node, ast.ImportFrom):
+                source = _target(module, path, node)
+                targets = [source] + [f"{source}.{a.name}" for a in node.names]
+            elif isinstance(node, ast.Import):
+                targets = [a.name for a in node.names]
+            else:
+                continue
+            for t in targets:
+                if t in modules and t != module and not module.startswith(t + "."):
+                    edges[module].add(t)
+    loops, state = [], {m: 0 for m in modules}  # 0 new, 1 on the path, 2 done
+
+    def visit(m: str, trail: list[str]) -> None:
+        state[m] = 1
+        trail.append(m)
+        for n in sorted(edges[m]):
+            if state[n] == 1:
+                loops.append(trail[trail.index(n):] + [n])
+            elif state[n] == 0:
+                visit(n, trail)
+        trail.pop()
+        state[m] = 2
+
+    for m in sorted(modules):
+        if state[m] == 0:
+            visit(m, [])
+    return loops
+
+
+def test_no_private_name_is_imported_from_another_file():
+    assert private_names_across_files() == []
+
+
+def _plant(tmp_path: Path, files: dict[str, str]) -> Path:
+    fake = tmp_path / "nczones"
+    for name, text in {"__init__.py": "", "prover/__init__.py": "", **files}.items():
+        (fake / name).parent.mkdir(parents=True, exist_ok=True)
+        (fake / name).write_text(text)
+    return fake
+
+
+def test_the_scans_are_not_blind(tmp_path):
+    """A planted private import, a module-attribute read and a nested-import loop are reported; a loop
+    through a TYPE_CHECKING import is not one."""
+    fake = _plant(tmp_path, {
+        "prover/a.py": "def _helper():\n    return 1\n\n\ndef f():\n    from .c import g\n",
+        "prover/b.py": "from .a import _helper\nfrom . import a\nx = a._helper()\n",
+        "prover/c.py": "from .a import f\n\n\ndef g():\n    pass\n",
+        "prover/d.py": "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from .e import E\n",
+        "prover/e.py": "from .d import TYPE_CHECKING\nE = 1\n",
+    })
+    found = private_names_across_files(fake)
+    assert [f.split(": ", 1)[1] for f in found] == ["_helper from nczones.prover.a", "a._helper of nczones.prover.a"]
+    assert runtime_import_loops(fake) == [["nczones.prover.a", "nczones.prover.c", "nczones.prover.a"]]
+
+
+def test_no_import_loop_at_run_time():
+    assert runtime_import_loops() == []
+
+
+def test_the_witnesses_do_not_import_each_other():
+    """What the issue's grep checks: no prover file names the controller in an import, and no controller
+    file the prover."""
+    for side, other in (("prover", "controller"), ("controller", "prover")):
+        for path in sorted((PACKAGE / side).rglob("*.py")):
+            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+                if isinstance(node, ast.ImportFrom):
+                    source = _target(".".join(path.relative_to(PACKAGE.parent).with_suffix("").parts), path, node)
+                    assert not source.startswith(f"nczones.{other}"), f"{path}:{node.lineno} imports {source}"
