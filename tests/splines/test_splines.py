@@ -184,3 +184,17 @@ def test_reports_say_splines_were_proved_on_the_programmed_curve():
     assert any("exact programmed curve" in n for n in result.notes)
     plain = verify_text("G21 G90\nG0 X10 Y10 Z10\nM2\n", load_machine(ROOT / "specs" / "machines" / "mill.toml"))
     assert not any("spline" in n for n in plain.notes)
+
+
+def test_the_shared_curve_of_a_spline_segment_is_the_rational_one():
+    """The curve both witnesses read (nurbs.spline_curve) against a point worked out by hand.
+
+    Degree 2, control points (0,0), (1,1), (2,0), weights 1, 2, 1: at the middle parameter the basis is
+    1/4, 1/2, 1/4, the weighted basis 1/4, 1, 1/4 (sum 3/2), so the point is (3/2, 1) / (3/2) = (1, 2/3); a
+    curve that dropped its weights would give (1, 1/2).  The prover and the controller cannot catch such
+    a bug by comparing each other, since both take their curve from this one function.
+    """
+    from nczones.nurbs import spline_curve
+
+    c = Nurbs(2, (F(0),) * 3 + (F(1),) * 3, ((F(0), F(0)), (F(1), F(1)), (F(2), F(0))), (F(1), F(2), F(1)))
+    assert spline_curve(spline_segment(c)).point(F(1, 2)) == (F(1), F(2, 3))
