@@ -5,18 +5,22 @@ commands: 0 success, 1 an alarm or a refuted property, 2 bad input.  An
 internal bug exits 4 with a traceback and a request to report it; a user error
 never prints a traceback.
 
-Each subcommand lives in its own ``register_*`` function below so that the
-stages (prover, controller, homing, report) can add theirs independently.
+Each subcommand lives in its own ``register_*`` function (``check-machine``
+below, the others in :mod:`nczones.commands`); :data:`COMMANDS` names the
+module of each, which is imported only when its command runs.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 import traceback
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from types import MappingProxyType
+from typing import TYPE_CHECKING, Any
 
 from . import __version__
 from .errors import Diagnostic, InputError, InvalidArgument, NczonesError
@@ -152,7 +156,7 @@ def _run_check_machine(args: argparse.Namespace) -> int:
 
 
 def register_check_machine(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("check-machine", help="validate a machine file and summarise it")
+    p = add_command(sub, "check-machine")
     p.add_argument("machine_file", metavar="M.toml", help="the machine file to check (specs/machine-file.md)")
     p.set_defaults(handler=_run_check_machine)
 
@@ -211,41 +215,98 @@ def arc_tolerance(text: str) -> Fraction | str:
     return q
 
 
-#: Subcommand registrars; other stages append theirs.
-REGISTRARS: list[Callable[[argparse._SubParsersAction], None]] = [register_check_machine]
+@dataclass(frozen=True, slots=True)
+class Command:
+    """A subcommand: the module that registers it and its one line in ``nczones --help``."""
+
+    module: str
+    summary: str
+
+
+#: The subcommands in the order ``nczones --help`` lists them.  A command's module is imported only when the
+#: command runs (or when :func:`build_parser` builds every command), so ``nczones --help`` and a command stay
+#: clear of what the other commands import (the prover, the controller, numpy, Z3, matplotlib).
+COMMANDS: Mapping[str, Command] = MappingProxyType({
+    "check-machine": Command("nczones.cli", "validate a machine file and summarise it"),
+    "verify": Command("nczones.commands.verify",
+                      "prove that programs stay inside the allowed set (or show where not)"),
+    "simulate": Command("nczones.commands.simulate",
+                        "run a program through the reference controller (pulses, limit monitor)"),
+    "home": Command("nczones.commands.home",
+                    "simulate homing (near-zero dog, grid point, grid shift) or prove it exact"),
+    "plot": Command("nczones.commands.plot",
+                    "draw a program's toolpath over the machine's allowed set (PNG/SVG/PDF)"),
+    "import-machine": Command("nczones.commands.machine_files",
+                              "write a machine file from a LinuxCNC, Grbl or Fanuc configuration"),
+    "export-zones": Command("nczones.commands.machine_files",
+                            "write the soft limits (LinuxCNC) or stored stroke checks (Fanuc) that hold a machine "
+                            "file's zones"),
+    "replay": Command("nczones.commands.replay",
+                      "re-check the counterexamples of a JSON report exactly against the files it names"),
+    "fleet": Command("nczones.commands.fleet",
+                     "verify a library of programs against its machines, incrementally (serial or on Dask)"),
+})
+
+#: Subcommand registrars by command name; each command's module adds its own when imported.
+REGISTRARS: dict[str, Callable[[argparse._SubParsersAction], None]] = {"check-machine": register_check_machine}
+
+
+def add_command(sub: argparse._SubParsersAction, name: str, **kwargs: Any) -> argparse.ArgumentParser:
+    """The parser of subcommand ``name`` with its summary from :data:`COMMANDS` (for the registrars)."""
+    parser: argparse.ArgumentParser = sub.add_parser(name, help=COMMANDS[name].summary, **kwargs)
+    return parser
 
 
 def _load_optional_registrars() -> None:
-    """Import the stages that add subcommands (each appends to REGISTRARS)."""
-    import importlib
-
-    for module in ("nczones.commands.verify", "nczones.commands.simulate", "nczones.commands.home",
-                   "nczones.commands.plot", "nczones.commands.machine_files", "nczones.commands.replay",
-                   "nczones.commands.fleet"):
-        try:
-            importlib.import_module(module)
-        except ModuleNotFoundError as exc:
-            if exc.name != module:
-                raise
+    """Import every subcommand's module (each adds its registrar to REGISTRARS)."""
+    for command in COMMANDS.values():
+        importlib.import_module(command.module)
 
 
-def build_parser() -> argparse.ArgumentParser:
-    _load_optional_registrars()
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The command line's parser: every subcommand in full, or only ``command`` in full.
+
+    With ``command`` (the one about to run) only that command's module is
+    imported; the others are listed by name and summary, which is all that
+    ``nczones --help`` and an unknown command's error message show.
+
+    >>> sorted(build_parser("check-machine")._subparsers._group_actions[0].choices)[:3]
+    ['check-machine', 'export-zones', 'fleet']
+    """
+    if command is None:
+        _load_optional_registrars()
+    elif command in COMMANDS:
+        importlib.import_module(COMMANDS[command].module)
     parser = argparse.ArgumentParser(
         prog="nczones",
         description="Prove that a CNC program keeps the machine inside its allowed area.",
     )
     parser.add_argument("--version", action="version", version=f"nczones {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for register in dict.fromkeys(REGISTRARS):
-        register(sub)
+    for name, spec in COMMANDS.items():
+        if command is None or name == command:
+            REGISTRARS[name](sub)
+        else:
+            sub.add_parser(name, help=spec.summary)
     return parser
+
+
+def chosen_command(argv: Sequence[str]) -> str:
+    """The subcommand an argument list runs: its first word that is not an option ("" when there is none).
+
+    The top-level options (``--help``, ``--version``) take no value, so the first other word names the command.
+
+    >>> chosen_command(["--version"]), chosen_command(["verify", "p.ngc", "--machine", "m.toml"])
+    ('', 'verify')
+    """
+    return next((a for a in argv if not a.startswith("-")), "")
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    arguments = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(chosen_command(arguments))
+    args = parser.parse_args(arguments)
     try:
         code: int = args.handler(args)
         return code

@@ -36,11 +36,12 @@ import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from .errors import InvalidArgument, SourceSpan
+
+if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to the code that builds them
+    import numpy as np
 
 __all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes", "arc_path_float",
            "segments_of"]

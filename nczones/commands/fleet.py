@@ -134,8 +134,8 @@ def _common(p: argparse.ArgumentParser) -> None:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    fleet = sub.add_parser(
-        "fleet", help="verify a library of programs against its machines, incrementally (serial or on Dask)",
+    fleet = cli.add_command(
+        sub, "fleet",
         description="Verify every program of a library (nczones.toml) against every machine it runs on; only jobs "
                     "whose program, machine file, settings or nczones changed run again. See specs/fleet.md.")
     fsub = fleet.add_subparsers(dest="fleet_command", required=True, metavar="SUBCOMMAND",
@@ -208,4 +208,4 @@ def register_diff(fsub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=run_fleet_diff)
 
 
-cli.REGISTRARS.append(register)
+cli.REGISTRARS["fleet"] = register

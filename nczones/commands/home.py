@@ -234,7 +234,7 @@ def _run_home(args: argparse.Namespace) -> int:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("home", help="simulate homing (near-zero dog, grid point, grid shift) or prove it exact",
+    p = cli.add_command(sub, "home",
                        description="Simulate homing of one axis or all axes pulse by pulse, or prove with Z3 "
                                    "when it ends exactly at machine zero (see specs/homing.md).")
     p.add_argument("--machine", required=True, metavar="M.toml",
@@ -250,4 +250,4 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run_home)
 
 
-cli.REGISTRARS.append(register)
+cli.REGISTRARS["home"] = register

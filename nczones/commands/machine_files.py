@@ -68,9 +68,8 @@ def _run_import(args: argparse.Namespace) -> int:
 
 
 def register_import(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser(
-        "import-machine",
-        help="write a machine file from a LinuxCNC, Grbl or Fanuc configuration",
+    p = cli.add_command(
+        sub, "import-machine",
         description="Read a controller configuration and write a commented machine file: every value names the "
         "setting it came from, and what the machine file cannot hold is printed (and written at the end of the "
         "file) with its source line. Exit 0 when the file is written, 2 on bad input.",
@@ -91,7 +90,7 @@ def register_import(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run_import)
 
 
-cli.REGISTRARS.append(register_import)
+cli.REGISTRARS["import-machine"] = register_import
 
 
 def _run_export(args: argparse.Namespace) -> int:
@@ -114,9 +113,8 @@ def _run_export(args: argparse.Namespace) -> int:
 
 
 def register_export(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser(
-        "export-zones",
-        help="write the soft limits (LinuxCNC) or stored stroke checks (Fanuc) that hold a machine file's zones",
+    p = cli.add_command(
+        sub, "export-zones",
         description="Write the settings a control can hold for a machine file's zones: LinuxCNC's soft limits "
         "(one box), a Fanuc control's stored stroke checks (a box and two forbidden boxes). What the control cannot "
         "hold (stepped tables, polygons, tool-tip zones, more forbidden areas) is left out and said; the settings "
@@ -139,4 +137,4 @@ def register_export(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run_export)
 
 
-cli.REGISTRARS.append(register_export)
+cli.REGISTRARS["export-zones"] = register_export

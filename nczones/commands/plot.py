@@ -83,7 +83,7 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("plot", help="draw a program's toolpath over the machine's allowed set (PNG/SVG/PDF)")
+    p = cli.add_command(sub, "plot")
     p.add_argument("program", metavar="PROGRAM", help="the G-code program file; '-' reads standard input")
     p.add_argument("--machine", required=True, metavar="M.toml",
                    help="the machine file whose allowed set is drawn (specs/machine-file.md)")
@@ -98,4 +98,4 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run)
 
 
-cli.REGISTRARS.append(register)
+cli.REGISTRARS["plot"] = register

@@ -33,8 +33,8 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser(
-        "replay", help="re-check the counterexamples of a JSON report exactly against the files it names",
+    p = cli.add_command(
+        sub, "replay",
         description="Re-check every counterexample of REPORT.json (nczones verify --format json) in exact "
                     "arithmetic against the machine file and program it names (their SHA-256 must match). "
                     "Exit status: 0 all confirmed, 1 one was not reproduced, 2 bad input.")
@@ -47,4 +47,4 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run)
 
 
-cli.REGISTRARS.append(register)
+cli.REGISTRARS["replay"] = register

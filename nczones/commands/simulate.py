@@ -175,7 +175,7 @@ def _run(args: argparse.Namespace) -> int:
 def register(sub: argparse._SubParsersAction) -> None:
     from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 
-    p = sub.add_parser("simulate", help="run a program through the reference controller (pulses, limit monitor)",
+    p = cli.add_command(sub, "simulate",
                        description="Run PROGRAM through the reference controller pulse by pulse. Exit status: 0 "
                                    "no alarm, 1 an alarm, 2 bad input or a code the controller cannot run.")
     p.add_argument("program", metavar="PROGRAM", help="the G-code program file; '-' reads standard input")
@@ -209,4 +209,4 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run)
 
 
-cli.REGISTRARS.append(register)
+cli.REGISTRARS["simulate"] = register

@@ -213,8 +213,8 @@ def _color(stream: TextIO) -> bool:
 def register(sub: argparse._SubParsersAction) -> None:
     from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 
-    p = sub.add_parser(
-        "verify", help="prove that programs stay inside the allowed set (or show where not)",
+    p = cli.add_command(
+        sub, "verify",
         description="Prove that every motion of each PROGRAM stays inside the machine's allowed set, or report "
                     "exact counterexamples. Exit status: 0 safe, 1 unsafe, 2 bad input, 3 unknown; with several "
                     "programs the worst (1 before 2 before 3 before 0); 130 when Ctrl-C stopped the run.")
@@ -265,7 +265,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run)
 
 
-cli.REGISTRARS.append(register)
+cli.REGISTRARS["verify"] = register
 
 
 def _budget(text: str | None) -> float | None:

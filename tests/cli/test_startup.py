@@ -1,0 +1,92 @@
+"""Start-up stays light (issue 26): what ``nczones --help`` and ``import nczones`` load, not how long they take.
+
+The CPU time of start-up is measured in ``bench/bench_startup.py``; these tests pin down why it is small:
+the heavy libraries and stages are not imported until a command needs them.  Each case runs in a fresh
+interpreter, since this test process has imported everything already.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from nczones import cli
+
+ROOT = Path(__file__).resolve().parents[2]
+MILL = str(ROOT / "specs" / "machines" / "mill.toml")
+
+#: What a light start must not load: the numeric and drawing libraries, the solver, and the two witnesses.
+HEAVY = ("numpy", "z3", "shapely", "matplotlib", "nczones.controller", "nczones.prover", "nczones.report",
+         "nczones.gcode", "nczones.fleet", "nczones.imports")
+
+
+def loaded_after(code: str) -> set[str]:
+    """The top-level modules of HEAVY that a fresh interpreter has loaded after running ``code``."""
+    probe = (f"import sys\n{code}\n"
+             f"import json; print(json.dumps(sorted(m for m in {HEAVY!r} if m in sys.modules)))")
+    r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    return set(json.loads(r.stdout.splitlines()[-1]))
+
+
+@pytest.mark.parametrize("code", [
+    "import nczones",
+    "import nczones.cli",
+    "from nczones.cli import main\ntry:\n    main(['--help'])\nexcept SystemExit as e:\n    assert e.code == 0",
+    "from nczones.cli import main\ntry:\n    main(['--version'])\nexcept SystemExit as e:\n    assert e.code == 0",
+    f"from nczones.cli import main\nassert main(['check-machine', {MILL!r}]) == 0",
+])
+def test_a_light_start_loads_no_heavy_module(code):
+    assert loaded_after(code) == set()
+
+
+def test_the_public_api_still_reaches_every_stage():
+    """A heavy stage is loaded when it is used, and the package's names stay importable."""
+    loaded = loaded_after("import nczones\nfrom nczones import Machine, load_machine, Segment, AllowedSet\n"
+                          "import nczones.controller\nfrom nczones.prover import verify")
+    assert {"numpy", "nczones.controller", "nczones.prover"} <= loaded
+    import nczones
+
+    assert set(nczones.__all__) <= set(dir(nczones))
+
+
+def test_a_command_loads_its_own_module_and_not_the_others():
+    assert loaded_after("from nczones.cli import build_parser\nbuild_parser('check-machine')") == set()
+    loaded = loaded_after("from nczones.cli import build_parser\nbuild_parser('simulate')")
+    assert "nczones.prover" not in loaded and "z3" not in loaded and "nczones.fleet" not in loaded
+    loaded = loaded_after("from nczones.cli import build_parser\nbuild_parser('verify')")
+    assert "nczones.prover" in loaded and "nczones.controller" not in loaded and "matplotlib" not in loaded
+
+
+def test_the_lazy_parser_lists_what_the_full_parser_lists():
+    """``nczones --help`` (each command by its summary) says what the fully built parser says."""
+    import argparse
+
+    def commands(parser: argparse.ArgumentParser) -> list[tuple[str, str | None]]:
+        sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        return [(a.dest, a.help) for a in sub._choices_actions]
+
+    full = cli.build_parser()
+    assert commands(cli.build_parser("")) == commands(full) == [(n, c.summary) for n, c in cli.COMMANDS.items()]
+    assert full.format_help() == cli.build_parser("").format_help()
+    # every command's module registered exactly the commands COMMANDS gives it
+    assert set(cli.REGISTRARS) == set(cli.COMMANDS)
+    for name, command in cli.COMMANDS.items():
+        assert cli.REGISTRARS[name].__module__ == command.module
+
+
+@pytest.mark.parametrize("argv, command", [
+    ([], ""), (["--help"], ""), (["-h", "verify"], "verify"), (["verify", "--help"], "verify"),
+    (["fleet", "check", "lib"], "fleet"), (["--version"], ""),
+])
+def test_the_chosen_command_is_the_first_word_that_is_no_option(argv, command):
+    assert cli.chosen_command(argv) == command
+
+
+def test_a_command_built_alone_parses_as_in_the_full_parser():
+    argv = ["verify", "p.ngc", "--machine", "m.toml", "--margin", "0.5", "--engine", "z3"]
+    assert vars(cli.build_parser("verify").parse_args(argv)) == vars(cli.build_parser().parse_args(argv))
