@@ -81,8 +81,8 @@ MUTATIONS = {
                    '("retract", "single", P, P1, L),',
                    "the leg to the tool-change position is not encoded"),
     "P-lines": ("prover", None, "nczones/prover/core.py",
-                "all(self._bbox_fits(p.p0, p.p1, seg.tool_length) for p in pieces)",
-                "all(self._bbox_fits(p.p0, p.p0, seg.tool_length) for p in pieces)",
+                "all(self.bbox_fits(p.p0, p.p1, seg.tool_length) for p in pieces)",
+                "all(self.bbox_fits(p.p0, p.p0, seg.tool_length) for p in pieces)",
                 "a straight motion whose start point fits is screened as proved"),
 }
 

@@ -114,7 +114,7 @@ def _append(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
 
 
 def developed_arc_walk(seg: Segment, pulse: tuple[Fraction, ...], p0: tuple[int, ...]) -> tuple[np.ndarray, float]:
-    """The pulse positions of a developed arc and the length its feed applies to (``Controller._plan``).
+    """The pulse positions of a developed arc and the length its feed applies to (``Controller.plan``).
 
     The length is in developed mm: F is the feed on the developed surface.
     """

@@ -107,7 +107,7 @@ def run_with_break(ctl: Any, motion: Any) -> Any:
     if ctl.mode.value != "lock" and not ctl.alarms:
         bad = ctl.monitor.check(tuple(ctl.counter), ctl.tool_length)
         if bad:
-            ctl._alarm(None, tuple(ctl.counter), bad, (), note="start position outside the allowed set")
+            ctl.record_alarm(None, tuple(ctl.counter), bad, (), note="start position outside the allowed set")
     seq: list[Segment] = []  # the current motion sequence (what a `start` restart re-runs)
     seq_start: tuple[int, ...] | None = None  # the sequence-start register (pulses)
     prev: Segment | None = None
@@ -117,7 +117,7 @@ def run_with_break(ctl: Any, motion: Any) -> Any:
 
     def run_seg(seg: Segment) -> None:
         ctl.tool_length = seg.tool_length
-        ctl._run_segment(seg)
+        ctl.run_segment(seg)
 
     for seg in segments_of(motion):
         if ctl.halted:
@@ -130,7 +130,7 @@ def run_with_break(ctl: Any, motion: Any) -> Any:
         if is_cutting(seg):
             if prev is None or not same_tool(prev, seg):
                 seq, seq_start = [], tuple(ctl.prog)
-                ctl._log("sequence-start", seg.block, seg.line,
+                ctl.log("sequence-start", seg.block, seg.line,
                          (("position", dict(zip(axes, ctl.mm(seq_start)))),))
             seq.append(seg)
             prev = seg
@@ -142,36 +142,36 @@ def run_with_break(ctl: Any, motion: Any) -> Any:
         # the break
         broken = True
         ctl.tool_length = seg.tool_length
-        plan = ctl._plan(seg)
+        plan = ctl.plan(seg)
         k = math.floor(fraction * plan.n)
         first, rest = _split(plan, k) if plan.n else (None, None)
         if first is not None:
-            ctl._run_plan(seg, first)
+            ctl.run_plan(seg, first)
         if ctl.halted:
             continue
         P = ctl.mm(ctl.prog)
         L = seg.tool_length
         L2 = replacement_length(cfg, machine, L)
         restart = ctl.mm(seq_start) if cfg.variant is RecoveryVariant.START else P
-        ctl._log("tool-break", seg.block, seg.line, (
+        ctl.log("tool-break", seg.block, seg.line, (
             ("step", k), ("of_steps", plan.n), ("position", dict(zip(axes, P))),
             ("sequence_start", dict(zip(axes, ctl.mm(seq_start)))), ("variant", cfg.variant.value),
             ("saved", {"block": seg.block, "line": seg.line, "feed": seg.feed_mm_min, "tool_length": L}),
         ))
         for leg in recovery_legs(cfg, machine, P, restart, L, L2):
             if leg.name == "to restart":
-                ctl._log("tool-change", seg.block, seg.line, (("old_length", L), ("new_length", L2),
+                ctl.log("tool-change", seg.block, seg.line, (("old_length", L), ("new_length", L2),
                                                               ("register", cfg.length_register)))
             before = len(ctl.alarms)
             run_seg(leg.segment(axes, seg))
-            ctl._log("recovery", seg.block, seg.line, (("leg", leg.name), ("end", dict(zip(axes, leg.end)))))
+            ctl.log("recovery", seg.block, seg.line, (("leg", leg.name), ("end", dict(zip(axes, leg.end)))))
             _mark_recovery(ctl, before, leg.name)
             if ctl.halted:
                 break
         if ctl.halted:
             continue
         delta = L2 - L
-        ctl._log("resume", seg.block, seg.line, (("variant", cfg.variant.value),
+        ctl.log("resume", seg.block, seg.line, (("variant", cfg.variant.value),
                                                  ("position", dict(zip(axes, ctl.mm(ctl.prog))))))
         if delta != 0 or L2 != L:
             shift = (delta, L2, seg)
@@ -179,7 +179,7 @@ def run_with_break(ctl: Any, motion: Any) -> Any:
             if rest is not None:
                 dp = 0 if ti is None else ctl.prog[ti] - (first.p1[ti] if first is not None else plan.p0[ti])
                 ctl.tool_length = L2
-                ctl._run_plan(replace(seg, tool_length=L2), _shift_plan(rest, ti, dp))
+                ctl.run_plan(replace(seg, tool_length=L2), _shift_plan(rest, ti, dp))
         else:
             for s in seq:  # re-cut the sequence from its start, then go on
                 if ctl.halted:
@@ -189,11 +189,11 @@ def run_with_break(ctl: Any, motion: Any) -> Any:
         raise InputError(Diagnostic("SM110", f"--break-at {line}: line {line} has no cutting motion (G1, G2, G3) "
                                     "that ran; a tool can only break while cutting", file="<command line>"))
     if ctl.halted and skipped:
-        ctl._log("halt", data=(("blocks_not_run", skipped),))
+        ctl.log("halt", data=(("blocks_not_run", skipped),))
     if not ctl.halted:
-        ctl._final_sample()
+        ctl.final_sample()
         ctl.completed = not ctl.halted
-    ctl._log("end", data=(("completed", ctl.completed),))
+    ctl.log("end", data=(("completed", ctl.completed),))
     if not broken:
         ctl.notes.append(f"the run stopped before line {line}: no tool break happened")
     return ctl.result()
@@ -205,7 +205,7 @@ def record_pulses(ctl: Any) -> list[tuple[int, str, np.ndarray]]:
     For tests and notebooks: wraps this controller's ``_run_plan``.
     """
     log: list[tuple[int, str, np.ndarray]] = []
-    inner = ctl._run_plan
+    inner = ctl.run_plan
 
     def wrapped(seg, plan):
         steps0 = ctl.steps
@@ -214,5 +214,5 @@ def record_pulses(ctl: Any) -> list[tuple[int, str, np.ndarray]]:
         if done:
             log.append((seg.block, seg.derived, np.asarray(plan.chunk(0, done), dtype=np.int64).reshape(done, len(plan.p0))))
 
-    ctl._run_plan = wrapped
+    ctl.run_plan = wrapped
     return log

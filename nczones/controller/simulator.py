@@ -501,10 +501,10 @@ class Controller:
         self._servo_on = self.mode is Mode.NORMAL and (
             any(self.settings.post_tau_ms(a) > 0 for a in self.axes)
         )
-        self._log("mode", data=(("mode", self.mode.value), ("monitor", self.monitor_mode.value)))
+        self.log("mode", data=(("mode", self.mode.value), ("monitor", self.monitor_mode.value)))
 
     # ------------------------------------------------------------------ helpers
-    def _log(self, kind: str, block: int | None = None, line: int | None = None, data: Any = ()) -> None:
+    def log(self, kind: str, block: int | None = None, line: int | None = None, data: Any = ()) -> None:
         self.events.append(Event(self.clock, kind, block, line, tuple(data)))
 
     def mm(self, pos: Sequence[int]) -> tuple[Fraction, ...]:
@@ -521,7 +521,7 @@ class Controller:
         return float(self.settings.pre_time_constant_ms) / 1000
 
     # ------------------------------------------------------------------ planning
-    def _plan(self, seg: Segment) -> _Plan:
+    def plan(self, seg: Segment) -> _Plan:
         if tuple(seg.axes) != self.axes:
             raise InvalidArgument(f"segment axes {seg.axes} do not match the machine's axes {self.axes}")
         p0 = tuple(self.prog)
@@ -647,25 +647,25 @@ class Controller:
         if self.mode is not Mode.LOCK and not self.alarms:
             bad = self.monitor.check(tuple(self.counter), self.tool_length)
             if bad:
-                self._alarm(None, tuple(self.counter), bad, (), note="start position outside the allowed set")
+                self.record_alarm(None, tuple(self.counter), bad, (), note="start position outside the allowed set")
         skipped = 0
         for seg in segments_of(motion):
             if self.halted:
                 skipped += 1
                 continue
-            self._run_segment(seg)
+            self.run_segment(seg)
         if self.halted and skipped:
-            self._log("halt", data=(("blocks_not_run", skipped),))
+            self.log("halt", data=(("blocks_not_run", skipped),))
         if not self.halted:
-            self._final_sample()
+            self.final_sample()
             self.completed = not self.halted
-        self._log("end", data=(("completed", self.completed),))
+        self.log("end", data=(("completed", self.completed),))
         return self.result()
 
-    def _run_segment(self, seg: Segment) -> None:
+    def run_segment(self, seg: Segment) -> None:
         self.tool_length = seg.tool_length
         self.monitor = self._monitor_for(seg)
-        self._run_plan(seg, self._plan(seg))
+        self.run_plan(seg, self.plan(seg))
 
     def _monitor_for(self, seg: Segment) -> LimitMonitor:
         """The limit monitor for a segment: a lathe tool offset on an axis besides the tool axis moves the tool
@@ -682,7 +682,7 @@ class Controller:
             self._monitors[key] = mon
         return mon
 
-    def _run_plan(self, seg: Segment, plan: _Plan) -> None:
+    def run_plan(self, seg: Segment, plan: _Plan) -> None:
         """Run one planned motion (the recovery runs parts of plans through this)."""
         self.motions += 1
         tau = self._tau_pre()
@@ -694,7 +694,7 @@ class Controller:
             if not self.halted:
                 self.clock = t0 + dur
                 if seg.kind is SegmentKind.DWELL:
-                    self._log("dwell", seg.block, seg.line, (("seconds", float(seg.dwell_s or 0)),))
+                    self.log("dwell", seg.block, seg.line, (("seconds", float(seg.dwell_s or 0)),))
             return
         self.overshoot_bound = max(self.overshoot_bound, plan.speed_mm_s * self.period_s)
         if self.mode is Mode.LOCK:
@@ -714,14 +714,14 @@ class Controller:
             self.clock = t0 + (float(plan.times(done - 1, done, tau)[0]) if done else 0.0)
             if self.monitor_mode is MonitorMode.PERIODIC:
                 self.clock = max(self.clock, alarm[2])
-            self._alarm(plan, pos, alarm[0], self._direction(plan, done), first=alarm[1])
+            self.record_alarm(plan, pos, alarm[0], self._direction(plan, done), first=alarm[1])
         else:
             self.clock = t0 + plan.duration(tau)
         if self._servo_on:
             self._servo_collect(plan, t0, tau, done)
         if self.settings.log_motions:
             d = tuple(b - a for a, b in zip(plan.p0, pos))
-            self._log("motion", seg.block, seg.line, (
+            self.log("motion", seg.block, seg.line, (
                 ("kind", seg.kind.name.lower()), ("steps", done), ("net_pulses", dict(zip(self.axes, d))),
                 ("start_s", t0), ("end_s", self.clock),
             ))
@@ -852,10 +852,10 @@ class Controller:
             bad = self.monitor.check(pos, self.tool_length)
             if bad:
                 self.clock = s_time
-                self._alarm(plan, pos, bad, (), first=self._pending_outside)
+                self.record_alarm(plan, pos, bad, (), first=self._pending_outside)
                 return
 
-    def _final_sample(self) -> None:
+    def final_sample(self) -> None:
         """Periodic monitoring keeps sampling after the program ends: one more tick."""
         if self.mode is Mode.LOCK or self.monitor_mode is not MonitorMode.PERIODIC:
             return
@@ -864,10 +864,10 @@ class Controller:
         bad = self.monitor.check(pos, self.tool_length)
         if bad:
             self.clock = k * self.period_s
-            self._alarm(None, pos, bad, (), first=self._pending_outside)
+            self.record_alarm(None, pos, bad, (), first=self._pending_outside)
 
     # alarms and jog -------------------------------------------------------------
-    def _alarm(self, plan: _Plan | None, pos: Any, zones: Any, direction: Any, first: Any = None,
+    def record_alarm(self, plan: _Plan | None, pos: Any, zones: Any, direction: Any, first: Any = None,
                note: str = "") -> None:
         seg = plan.seg if plan is not None else None
         for d in direction:
@@ -886,7 +886,7 @@ class Controller:
         )
         self.alarms.append(alarm)
         self.halted = True
-        self._log("alarm", alarm.block, alarm.line, (
+        self.log("alarm", alarm.block, alarm.line, (
             ("zone", alarm.zone), ("position", dict(zip(self.axes, alarm.position))),
             ("blocked", [f"{a}{'+' if s > 0 else '-'}" for a, s in alarm.blocked]), ("note", note),
         ))
@@ -919,7 +919,7 @@ class Controller:
         if s == 0:
             return JogResult(axis, pulses, 0, False, None, self.mm(counter))
         if (k, s) in self.blocked:
-            self._log("jog-refused", data=(("axis", axis), ("pulses", pulses)))
+            self.log("jog-refused", data=(("axis", axis), ("pulses", pulses)))
             return JogResult(axis, pulses, 0, True, None, self.mm(counter))
         moved, alarm = 0, None
         outside = bool(self.monitor.check(tuple(counter), self.tool_length))
@@ -936,14 +936,14 @@ class Controller:
             if outside and not bad:
                 outside = False
                 self.blocked.clear()
-                self._log("alarm-cleared", data=(("position", dict(zip(self.axes, self.mm(counter)))),))
+                self.log("alarm-cleared", data=(("position", dict(zip(self.axes, self.mm(counter)))),))
             elif bad and not outside:
                 self.blocked.add((k, s))
                 seg = None
-                self._alarm(seg, tuple(counter), bad, ((k, s),), note="jog")
+                self.record_alarm(seg, tuple(counter), bad, ((k, s),), note="jog")
                 alarm = self.alarms[-1]
                 break
-        self._log("jog", data=(("axis", axis), ("pulses", pulses), ("moved", moved)))
+        self.log("jog", data=(("axis", axis), ("pulses", pulses), ("moved", moved)))
         return JogResult(axis, pulses, moved, False, alarm, self.mm(counter))
 
     # servo (post-interpolation filter) ----------------------------------------------

@@ -85,7 +85,7 @@ def spline_positions(seg: Segment, pulse: Sequence[Fraction], p0: Sequence[int])
 
 
 def spline_walk(seg: Segment, pulse: Sequence[Fraction], p0: tuple[int, ...]) -> tuple[np.ndarray, float]:
-    """The pulse positions of a spline and the length of its chords (``Controller._plan``)."""
+    """The pulse positions of a spline and the length of its chords (``Controller.plan``)."""
     pos = spline_positions(seg, pulse, p0)
     pts = spline_chord_points(seg, pulse)
     return pos, sum(math.dist([float(v) for v in a], [float(v) for v in b]) for a, b in zip(pts, pts[1:]))

@@ -155,10 +155,10 @@ class Interpretation:
         finish = getattr(self.interpreter, "finish", None)
         if finish is not None:
             finish()
-        left = getattr(self.interpreter, "_out", None)
+        left = getattr(self.interpreter, "emitted", None)
         if left:  # moves cutter compensation held until the end of the text
             yield MotionChunk(self.interpreter.axes, None, objects=tuple(left), file=self.file)
-            self.interpreter._out = []
+            self.interpreter.emitted = []
         self.finished = True
 
     def blocks(self, text: str, first_line: int = 1, first_index: int = 0, fast_runs: Any = None) -> Iterator[Any]:

@@ -207,8 +207,8 @@ class CutterComp:
         """Exact machine coordinate of a program-frame double."""
         return Fraction(value) * self._unit() + self.it.off[i]
 
-    def _error(self, code: str, message: str, word: Any = None) -> GcodeError:
-        span = word.span if word is not None else self.it._span
+    def error(self, code: str, message: str, word: Any = None) -> GcodeError:
+        span = word.span if word is not None else self.it.span
         return GcodeError(Diagnostic(code, message, span))
 
     @property
@@ -225,23 +225,23 @@ class CutterComp:
             return
         name = f"G{key // 10}" + (f".{key % 10}" if key % 10 else "")
         if it.plane not in (Plane.XY, Plane.XZ):
-            raise self._error(GC_STATE, f"{name}: cutter radius compensation is only allowed in the XY (G17) and "
+            raise self.error(GC_STATE, f"{name}: cutter radius compensation is only allowed in the XY (G17) and "
                               f"XZ (G18) planes; G{int(it.plane)} is active", word)
         if self.side is not None:
-            raise self._error(GC_STATE, f"{name}: cannot turn cutter radius compensation on when it is already on "
+            raise self.error(GC_STATE, f"{name}: cannot turn cutter radius compensation on when it is already on "
                               "(write G40 first)", word)
         side = LEFT if key in (410, 411) else _RIGHT
         d = words.get("D")
         if key in (411, 421):
             if d is None:
-                raise self._error(GC_STATE, f"{name} with no D word: the D word gives the tool diameter", word)
+                raise self.error(GC_STATE, f"{name} with no D word: the D word gives the tool diameter", word)
             radius = to_float(d.value) / 2
             lw = words.get("L")
             if lw is not None:
                 if it.plane is not Plane.XZ:
-                    raise self._error(GC_STATE, f"{name} with L word, but plane is not G18", lw)
+                    raise self.error(GC_STATE, f"{name} with L word, but plane is not G18", lw)
                 if lw.value not in (0, 9):
-                    it._unknown(name, f"{name} L{lw.value}: the lathe tool orientation shifts the controlled point "
+                    it.unknown(name, f"{name} L{lw.value}: the lathe tool orientation shifts the controlled point "
                                 "(LinuxCNC latheorigin); not modelled", lw)
         else:
             if d is None:
@@ -249,15 +249,15 @@ class CutterComp:
             else:
                 tool = int(to_float(d.value) + 0.5)
                 if abs(tool - to_float(d.value)) >= 0.0001:
-                    raise self._error(GC_STATE, f"{name} requires the D word to be a whole number (tool number); "
+                    raise self.error(GC_STATE, f"{name} requires the D word to be a whole number (tool number); "
                                       f"got {d.text}", d)
                 if d.value < 0:
-                    raise self._error(GC_STATE, f"negative D word tool number {d.text} used", d)
+                    raise self.error(GC_STATE, f"negative D word tool number {d.text} used", d)
             diameters = getattr(it.machine, "tool_diameters", {})
             if tool not in diameters:
                 if tool != 0:
                     known = ", ".join(f"T{t}" for t in sorted(diameters)) or "none"
-                    raise self._error(GC_TOOL, f"{name} uses tool {tool}, whose diameter is not in the machine "
+                    raise self.error(GC_TOOL, f"{name} uses tool {tool}, whose diameter is not in the machine "
                                       f"file's [tool_diameters] (known: {known}); add T{tool} = \"<diameter mm>\"",
                                       d if d is not None else word)
                 dia = Fraction(0)  # LinuxCNC: an empty spindle has diameter 0
@@ -265,17 +265,17 @@ class CutterComp:
                 dia = diameters[tool]
             radius = to_float(dia / self._unit()) / 2.0
             if it.plane is Plane.XZ and radius != 0.0:
-                it._unknown(name, f"{name} in G18 uses the tool table's lathe tool orientation, which shifts the "
+                it.unknown(name, f"{name} in G18 uses the tool table's lathe tool orientation, which shifts the "
                             "controlled point (LinuxCNC latheorigin) and is not in the machine file; use G41.1/G42.1 "
                             "D<diameter> (orientation 0) or a mill tool in G17", word)
         if radius < 0.0:
             radius = -radius
             side = _RIGHT if side == LEFT else LEFT
-        if it._u is not None:
-            it._unknown(name, "cutter radius compensation in a rotated coordinate system (G10 L2 R) is not modelled",
+        if it.prerotation_xy is not None:
+            it.unknown(name, "cutter radius compensation in a rotated coordinate system (G10 L2 R) is not modelled",
                         word)
         if type(it).__name__ not in ("Interpreter", "LatheInterpreter"):
-            it._unknown(name, "cutter radius compensation with cylindrical interpolation is not modelled", word)
+            it.unknown(name, "cutter radius compensation with cylindrical interpolation is not modelled", word)
         if it.ranged:
             from .segments import dadd
 
@@ -286,7 +286,7 @@ class CutterComp:
                              for i in (ia, ib) for src, c in dadd(it.dep_pos[i], it.dep_off[i], -1).items()
                              if c} & it.ranged)
             if moving:
-                it._unknown(name, f"cutter radius compensation starting from a position whose program coordinates "
+                it.unknown(name, f"cutter radius compensation starting from a position whose program coordinates "
                             f"depend on the parameter range {', '.join(moving)}: the compensated path is not a "
                             "shifted copy of the nominal one", word)
         self.side = side
@@ -303,7 +303,7 @@ class CutterComp:
             self._dequeue()
             it.comp_just_off = True
             if self.machine_now is not None and tuple(self.machine_now) != tuple(it.pos):
-                it._machine_at = tuple(self.machine_now)
+                it.machine_at = tuple(self.machine_now)
         self.side = None
         self.first = True
         it.comp_on = False
@@ -315,37 +315,37 @@ class CutterComp:
         g0 = groups.get(0)
         if any(k == 6 for k, _ in mcodes):
             w = next(w for k, w in mcodes if k == 6)
-            raise self._error(GC_FORBIDDEN, "cannot change tools (M6) with cutter radius compensation on", w)
+            raise self.error(GC_FORBIDDEN, "cannot change tools (M6) with cutter radius compensation on", w)
         if 8 in groups:
-            raise self._error(GC_FORBIDDEN, "cannot change the tool length offset (G43/G49) with cutter radius "
+            raise self.error(GC_FORBIDDEN, "cannot change the tool length offset (G43/G49) with cutter radius "
                               "compensation on", groups[8][1])
         if 6 in groups:
-            raise self._error(GC_FORBIDDEN, "cannot change units (G20/G21) with cutter radius compensation on",
+            raise self.error(GC_FORBIDDEN, "cannot change units (G20/G21) with cutter radius compensation on",
                               groups[6][1])
         if 2 in groups:
             k, w = groups[2]
             target = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}.get(k)
             if target is not it.plane:
-                raise self._error(GC_FORBIDDEN, "cannot change planes with cutter radius compensation on", w)
+                raise self.error(GC_FORBIDDEN, "cannot change planes with cutter radius compensation on", w)
         if g0 is not None:
             k, w = g0
             if k in (920, 921, 922, 923, 520):
-                raise self._error(GC_FORBIDDEN, "cannot change axis offsets (G92/G52) with cutter radius "
+                raise self.error(GC_FORBIDDEN, "cannot change axis offsets (G92/G52) with cutter radius "
                                   "compensation on", w)
             if k in (280, 300):
-                raise self._error(GC_FORBIDDEN, "cannot use G28 or G30 with cutter radius compensation on", w)
+                raise self.error(GC_FORBIDDEN, "cannot use G28 or G30 with cutter radius compensation on", w)
             if k == 530 and self.active and axis_words:
-                raise self._error(GC_FORBIDDEN, "cannot use G53 with cutter radius compensation on", w)
+                raise self.error(GC_FORBIDDEN, "cannot use G53 with cutter radius compensation on", w)
             if k == 100:
-                it._unknown("G10", "G10 while cutter radius compensation is on (offsets or the tool table change "
+                it.unknown("G10", "G10 while cutter radius compensation is on (offsets or the tool table change "
                             "under a held move) is not modelled", w)
         if 12 in groups:
-            it._unknown(f"G{groups[12][0] // 10}", "changing the work offset while cutter radius compensation is "
+            it.unknown(f"G{groups[12][0] // 10}", "changing the work offset while cutter radius compensation is "
                         "on is not modelled", groups[12][1])
         g1 = groups.get(1)
         m = g1[0] if g1 is not None else motion
         if m in (52, 53, 62) or (g1 is not None and g1[0] in (51, 50)):
-            raise self._error(GC_FORBIDDEN, "cannot convert a spline (G5/G5.1/G5.2/G6.2) with cutter radius "
+            raise self.error(GC_FORBIDDEN, "cannot convert a spline (G5/G5.1/G5.2/G6.2) with cutter radius "
                               "compensation on", g1[1] if g1 is not None else None)
 
     # ------------------------------------------------------------------ queue
@@ -355,10 +355,10 @@ class CutterComp:
 
     def _enqueue(self, move: _Move) -> None:
         it = self.it
-        move.block = it._index
-        move.span = it._span
+        move.block = it.block_index
+        move.span = it.span
         if move.kind is not SegmentKind.RAPID and move.dwell is None and it.feed_mode == 94:
-            move.feed = it._len(it.feed)
+            move.feed = it.length_mm(it.feed)
         self.queue.append(move)
 
     def _dequeue(self) -> None:
@@ -382,9 +382,9 @@ class CutterComp:
             de: tuple = ()
             dt: tuple = ()
             if it.track:
-                ds = it._deps_tuple(self.deps_now if self.deps_now is not None else it.dep_pos)
-                de = it._deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
-                dt = it._tool_dep_names()
+                ds = it.deps_tuple(self.deps_now if self.deps_now is not None else it.dep_pos)
+                de = it.deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
+                dt = it.tool_dep_names()
             arc = q.kind is SegmentKind.ARC
             if not it.unsupported:
                 seg = make_segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
@@ -392,7 +392,7 @@ class CutterComp:
                                abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, ())
                 if dt:
                     seg = with_tool_deps(seg, dt)
-                it._out.append(seg)
+                it.emitted.append(seg)
                 it.segment_count += 1
                 it.kind_counts[q.kind] += 1
             self.machine_now = end
@@ -414,16 +414,16 @@ class CutterComp:
                 r2 = math.hypot(x - q.ca, y - q.cb)
                 l2 = _find_turn(ex, ey, q.ca, q.cb, q.turn, x, y)
                 if abs(r1 - r2) > 0.01:
-                    raise self._error(GC_BUG, f"cutter compensation generated an invalid arc with mismatched radii "
+                    raise self.error(GC_BUG, f"cutter compensation generated an invalid arc with mismatched radii "
                                       f"{r1:.6f} and {r2:.6f} (LinuxCNC reports this as a BUG and stops)")
                 if l1 and self.endpoint_valid and abs(l2) > abs(l1) + 0.001:
-                    raise self._error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
+                    raise self.error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation)")
             else:
                 dot = q.da * (x - ex) + q.db * (y - ey)
                 if self.endpoint_valid and dot < 0:
                     what = "Straight traverse" if q.kind is SegmentKind.RAPID else "Straight feed"
-                    raise self._error(GC_GOUGE, f"{what} in concave corner cannot be reached by the tool without "
+                    raise self.error(GC_GOUGE, f"{what} in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation: the move shrinks past its start)")
             q.a, q.b = x, y
         self._dequeue()
@@ -431,7 +431,7 @@ class CutterComp:
 
     def _front_is_arc(self, what: str) -> bool:
         if not self.queue:
-            self.it._unknown("cutter comp", f"{what} right after the compensation queue was flushed (M0/M1/M60): "
+            self.it.unknown("cutter comp", f"{what} right after the compensation queue was flushed (M0/M1/M60): "
                              "LinuxCNC reads an empty move queue there; not modelled")
             return False
         return self.queue[0].kind is SegmentKind.ARC
@@ -440,9 +440,9 @@ class CutterComp:
         """Before a compensated move: fix where the machine is and the compensated start of a first move."""
         it = self.it
         if self.machine_now is None or (self.first and not self.queue):
-            self.machine_now = tuple(it._machine_at) if it._machine_at is not None else tuple(it.pos)
+            self.machine_now = tuple(it.machine_at) if it.machine_at is not None else tuple(it.pos)
             self.deps_now = [dict(d) for d in it.dep_pos] if it.track else None
-            it._machine_at = None
+            it.machine_at = None
         if self.first:
             ia, ib, _ = self._axes()
             self.prog = (self._fprog(ia, it.pos[ia]), self._fprog(ib, it.pos[ib]))
@@ -480,7 +480,7 @@ class CutterComp:
         cx, cy = self.cur
         distance = math.hypot(px - cx, py - cy)
         if distance <= radius:
-            raise self._error(GC_ENTRY, "Length of cutter compensation entry move is not greater than the tool "
+            raise self.error(GC_ENTRY, "Length of cutter compensation entry move is not greater than the tool "
                               f"radius ({distance:.6f} <= {radius:.6f} program units)")
         alpha = math.atan2(py - cy, px - cx) + (_PI / 2.0 if side == LEFT else -_PI / 2.0)
         ex = px + radius * math.cos(alpha)
@@ -545,7 +545,7 @@ class CutterComp:
                     return
                 halfcorner = (beta + _PI) / 2.0
                 if halfcorner == 0.0:
-                    raise self._error(GC_GOUGE, "Zero degree inside corner is invalid for cutter compensation")
+                    raise self.error(GC_GOUGE, "Zero degree inside corner is invalid for cutter compensation")
                 retreat = radius / math.tan(halfcorner)
                 mx = cx + retreat * math.cos(theta + gamma)
                 my = cy + retreat * math.sin(theta + gamma)
@@ -584,7 +584,7 @@ class CutterComp:
 
     def _check_unit(self, value: float, message: str) -> None:
         if value > 1.0 or value < -1.0:
-            raise self._error(GC_GOUGE, message)
+            raise self.error(GC_GOUGE, message)
 
     # ------------------------------------------------------------------ arcs
     def arc(self, block: Any, axis_words: Any, words: dict, cw: bool) -> None:
@@ -600,11 +600,11 @@ class CutterComp:
         def capture(kind: SegmentKind, end: Any, **kw: Any) -> None:
             captured.append((end, kw))
 
-        it._emit = capture  # type: ignore[method-assign]  # the arc's emission, captured
+        it.emit = capture  # type: ignore[method-assign]  # the arc's emission, captured
         try:
-            it._arc(block, axis_words, words, cw, False)
+            it.arc(block, axis_words, words, cw, False)
         finally:
-            del it._emit
+            del it.emit
         if not captured or it.unsupported:
             return
         end, kw = captured[0]
@@ -621,7 +621,7 @@ class CutterComp:
             tol = (0.00005 if it.inch else 0.00005 * 25.4)
             c = _arc_centre_r((opx, opy), (ex, ey), to_float(rw.value), cw, tol)
             if c is None:
-                raise self._error("GC302", "arc radius too small to reach the end point", rw)
+                raise self.error("GC302", "arc radius too small to reach the end point", rw)
             cax, cay = c
             exact_centre = None
         else:
@@ -639,10 +639,10 @@ class CutterComp:
         side, tool_radius = self.side, self.radius
         cx, cy = self.cur
         if math.hypot(end_x - cx, end_y - cy) <= tool_radius:
-            raise self._error(GC_ENTRY, "Radius of cutter compensation entry arc is not greater than the tool radius")
+            raise self.error(GC_ENTRY, "Radius of cutter compensation entry arc is not greater than the tool radius")
         arc_radius = abs(to_float(rw.value)) if rw is not None else math.hypot(center_x - cx, center_y - cy)
         if arc_radius <= tool_radius and ((side == LEFT and not cw) or (side == _RIGHT and cw)):
-            raise self._error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
+            raise self.error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
                               f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
         if _inside(side, turn):
             gamma = math.atan2(center_y - end_y, center_x - end_x)
@@ -656,13 +656,13 @@ class CutterComp:
         ab_ang = math.atan2(center_y - end_y, center_x - end_x)
         a_ang = math.atan2(cy - end_y, cx - end_x) - ab_ang
         if abs(math.cos(a_ang)) < _TOLERANCE_EQUAL:
-            raise self._error(GC_RADIUS, "Tool radius not less than arc radius with comp (entry arc)")
+            raise self.error(GC_RADIUS, "Tool radius not less than arc radius with comp (entry arc)")
         c_len = b_len / math.cos(a_ang)
         center_x = end_x + c_len * math.cos(ab_ang)
         center_y = end_y + c_len * math.sin(ab_ang)
         spiral = 2 * (0.001 if it.inch else 0.01) * math.sqrt(2)
         if abs(math.hypot(center_x - end_x, center_y - end_y) - math.hypot(center_x - cx, center_y - cy)) > spiral:
-            raise self._error(GC_BUG, "bug in tool radius comp (LinuxCNC: the entry arc's radii differ)")
+            raise self.error(GC_BUG, "bug in tool radius comp (LinuxCNC: the entry arc's radii differ)")
         ia, ib, _ = self._axes()
         centre = (self._fmachine(ia, center_x), self._fmachine(ib, center_y))
         self._enqueue(_Move(SegmentKind.ARC, end_x, end_y, list(end), ca=center_x, cb=center_y, centre=centre,
@@ -689,7 +689,7 @@ class CutterComp:
         if (side == LEFT and not cw) or (side == _RIGHT and cw):
             gamma = math.atan2(centery - end_y, centerx - end_x)
             if arc_radius <= tool_radius:
-                raise self._error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
+                raise self.error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
                                   f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
         else:
             gamma = math.atan2(end_y - centery, end_x - centerx)
@@ -729,7 +729,7 @@ class CutterComp:
                 newrad = arc_radius - tool_radius if _inside(side, turn) else arc_radius + tool_radius
                 arc_cc = math.hypot(prev.cb - centery, prev.ca - centerx)
                 if oldrad == 0 or arc_cc == 0:
-                    raise self._error(GC_GOUGE, "Arc to arc motion is invalid because the arcs have the same center")
+                    raise self.error(GC_GOUGE, "Arc to arc motion is invalid because the arcs have the same center")
                 a = (oldrad * oldrad + arc_cc * arc_cc - newrad * newrad) / (2 * oldrad * arc_cc)
                 self._check_unit(a, "Arc to arc motion makes a corner the compensated tool can't fit in without "
                                  "gouging")
@@ -767,20 +767,20 @@ class CutterComp:
         if self.queue:
             self._enqueue(_Move(SegmentKind.DWELL, 0.0, 0.0, [], dwell=seconds))
             return
-        if it._machine_at is not None:  # after G40 the machine stands at the compensated point
+        if it.machine_at is not None:  # after G40 the machine stands at the compensated point
             from .segments import make_segment, with_tool_deps
 
-            deps = it._deps_tuple(it.dep_pos) if it.track else ()
-            dt = it._tool_dep_names() if it.track else ()
+            deps = it.deps_tuple(it.dep_pos) if it.track else ()
+            dt = it.tool_dep_names() if it.track else ()
             if not it.unsupported:
-                at = tuple(it._machine_at)
-                seg = make_segment(SegmentKind.DWELL, at, at, it.axes, it._index, it._span, it.tlo,
+                at = tuple(it.machine_at)
+                seg = make_segment(SegmentKind.DWELL, at, at, it.axes, it.block_index, it.span, it.tlo,
                                None, None, False, None, None, 0, seconds, "", it.tool_register, deps, deps, ())
-                it._out.append(with_tool_deps(seg, dt) if dt else seg)
+                it.emitted.append(with_tool_deps(seg, dt) if dt else seg)
                 it.segment_count += 1
                 it.kind_counts[SegmentKind.DWELL] += 1
             return
-        it._emit(SegmentKind.DWELL, list(it.pos), dwell=seconds)
+        it.emit(SegmentKind.DWELL, list(it.pos), dwell=seconds)
 
     def stop(self) -> None:
         """M0/M1/M60: the queue is flushed at the compensated position (comp stays on)."""

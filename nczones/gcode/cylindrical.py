@@ -137,43 +137,43 @@ class CylindricalInterpreter(Interpreter):
     def _g071(self, block: Block, g7: list[Word]) -> None:
         w = g7[0]
         if len(g7) > 1:
-            raise self._error("GC232", "two G07.1/G107 words in one block", g7[1])
+            raise self.error("GC232", "two G07.1/G107 words in one block", g7[1])
         others = [x for x in block.words if x is not w]
         axis = [x for x in others if x.letter in AXIS_LETTERS]
         rest = [x for x in others if x.letter not in AXIS_LETTERS]
         if rest:
-            raise self._error("GC232", f"{rest[0].text or rest[0].letter}: G07.1 must stand alone in its block "
+            raise self.error("GC232", f"{rest[0].text or rest[0].letter}: G07.1 must stand alone in its block "
                               "with one rotary axis word (G07.1 C<radius> or G07.1 C0)", rest[0])
         if len(axis) != 1:
-            raise self._error("GC232", "G07.1 needs exactly one rotary axis word with the cylinder radius "
+            raise self.error("GC232", "G07.1 needs exactly one rotary axis word with the cylinder radius "
                               "(G07.1 C<radius> switches the mode on, G07.1 C0 off)", axis[1] if axis else w)
         aw = axis[0]
         letter = aw.letter
         if letter not in ROTARY or letter not in self.index:
             have = ", ".join(a for a in self.axes if a in ROTARY) or "none"
-            raise self._error("GC232", f"{aw.text or letter}: G07.1 names the rotary axis of the cylinder; "
+            raise self.error("GC232", f"{aw.text or letter}: G07.1 names the rotary axis of the cylinder; "
                               f"{letter} is not a rotary axis of this machine (rotary axes: {have})", aw)
         if aw.value < 0:
-            raise self._error("GC233", f"cylinder radius {aw.text} is negative; write the radius in mm (G07.1 C0 "
+            raise self.error("GC233", f"cylinder radius {aw.text} is negative; write the radius in mm (G07.1 C0 "
                               "switches the mode off)", aw)
         if aw.value == 0:
             self.cylinder = None
             return
         if self.cylinder is not None:
-            raise self._error("GC230", f"G07.1 {aw.text}: cylindrical interpolation is already on (radius "
+            raise self.error("GC230", f"G07.1 {aw.text}: cylindrical interpolation is already on (radius "
                               f"{fmt_number(self.cylinder.radius)} mm); cancel it with G07.1 {self.cylinder.rotary}0 first", w)
         from ..cylinder import LINEAR_AXIS_OF
 
         linear = LINEAR_AXIS_OF[letter]
         if linear not in self.index:
-            raise self._error("GC232", f"cylindrical interpolation on {letter} needs the parallel linear axis "
+            raise self.error("GC232", f"cylindrical interpolation on {letter} needs the parallel linear axis "
                               f"{linear}; this machine has {', '.join(self.axes)}", aw)
         if self.motion not in (None, 0, 10, 20, 30):
-            raise self._error("GC230", "cancel the canned cycle (G80) before G07.1", w)
+            raise self.error("GC230", "cancel the canned cycle (G80) before G07.1", w)
         if self.track:
-            self._unknown("G07.1", "parameter ranges are not supported with cylindrical interpolation", w)
-        if self._u is not None:
-            self._unknown("G07.1", "cylindrical interpolation in a rotated coordinate system (G10 L2 R) is not modelled", w)
+            self.unknown("G07.1", "parameter ranges are not supported with cylindrical interpolation", w)
+        if self.prerotation_xy is not None:
+            self.unknown("G07.1", "cylindrical interpolation in a rotated coordinate system (G10 L2 R) is not modelled", w)
         radius = aw.value * INCH if self.inch else aw.value
         self.cylinder = CylinderMode(letter, linear, self.index[letter], self.index[linear], radius)
 
@@ -186,35 +186,35 @@ class CylindricalInterpreter(Interpreter):
             if w.letter == "G":
                 k = gkey(w.value)
                 if k in _FORBIDDEN_WHY:
-                    raise self._error("GC230", f"{w.text or 'G'}: {_FORBIDDEN_WHY[k]}", w)
+                    raise self.error("GC230", f"{w.text or 'G'}: {_FORBIDDEN_WHY[k]}", w)
                 if k not in _ALLOWED_G:
-                    raise self._error("GC230", f"{w.text or 'G'} is not allowed in cylindrical interpolation mode "
+                    raise self.error("GC230", f"{w.text or 'G'} is not allowed in cylindrical interpolation mode "
                                       "(allowed: G01 G02 G03 G04 G40-G42 G61 G64 G80 G90 G91 G93-G95); cancel "
                                       "the mode with G07.1 C0 first", w)
                 if k in (10, 20, 30):
                     g1 = k
             elif w.letter in "IJK":
-                raise self._error("GC231", f"{w.text or w.letter}: arcs in cylindrical interpolation take R "
+                raise self.error("GC231", f"{w.text or w.letter}: arcs in cylindrical interpolation take R "
                                   "(the radius on the developed surface), not I, J or K", w)
             elif w.letter == "H":
-                raise self._error("GC231", f"{w.text or 'H'}: the tool length cannot change in cylindrical "
+                raise self.error("GC231", f"{w.text or 'H'}: the tool length cannot change in cylindrical "
                                   "interpolation mode", w)
         motion = g1 if g1 is not None else self.motion
         axis_words = [w for w in block.words if w.letter in AXIS_LETTERS]
         if motion == 0 and axis_words and g1 is None:
-            raise self._error("GC230", "positioning (modal G00) is not allowed in cylindrical interpolation mode; "
+            raise self.error("GC230", "positioning (modal G00) is not allowed in cylindrical interpolation mode; "
                               "write G01 or cancel the mode with G07.1 C0 first", axis_words[0])
         if motion in (20, 30) and (axis_words or g1 is not None) and not self.unsupported:
             self._arc_block(block, motion, axis_words)
             return
-        n0 = len(self._out)
+        n0 = len(self.emitted)
         super().execute(block)
-        if len(self._out) > n0:
+        if len(self.emitted) > n0:
             tag = cyl.extra
-            for i in range(n0, len(self._out)):
-                s = self._out[i]
+            for i in range(n0, len(self.emitted)):
+                s = self.emitted[i]
                 if s.kind is SegmentKind.LINE:
-                    self._out[i] = replace(s, extra=s.extra + tag)
+                    self.emitted[i] = replace(s, extra=s.extra + tag)
 
     def _arc_block(self, block: Block, motion: int, axis_words: list[Word]) -> None:
         cyl = self.cylinder
@@ -230,43 +230,43 @@ class CylindricalInterpreter(Interpreter):
                     self.feed_mode = k // 10
                     self.unset.discard("feed")
                 elif k not in (20, 30):
-                    raise self._error("GC230", f"{w.text}: write it in a separate block from the arc", w)
+                    raise self.error("GC230", f"{w.text}: write it in a separate block from the arc", w)
                 continue
             if w.letter == "M":
-                raise self._error("GC230", f"{w.text}: write M codes in a separate block from an arc in "
+                raise self.error("GC230", f"{w.text}: write M codes in a separate block from an arc in "
                                   "cylindrical interpolation mode", w)
             if w.letter in words:
-                raise self._error("GC204", f"two {w.letter} words in one block", w)
+                raise self.error("GC204", f"two {w.letter} words in one block", w)
             words[w.letter] = w
         for w in axis_words:
             if w.letter not in (cyl.linear, cyl.rotary):
-                raise self._error("GC231", f"{w.text}: an arc in cylindrical interpolation moves only "
+                raise self.error("GC231", f"{w.text}: an arc in cylindrical interpolation moves only "
                                   f"{cyl.linear} and {cyl.rotary} (no helix)", w)
             if w.letter not in self.index:
-                raise self._error("GC203", f"axis word {w.text} names an axis this machine does not have", w)
+                raise self.error("GC203", f"axis word {w.text} names an axis this machine does not have", w)
         for letter in words:
             if letter not in "RFNZC" + cyl.linear + cyl.rotary and letter not in "S":
-                raise self._error("GC231", f"{words[letter].text}: not allowed with an arc in cylindrical "
+                raise self.error("GC231", f"{words[letter].text}: not allowed with an arc in cylindrical "
                                   "interpolation mode", words[letter])
         if "F" in words:
             if words["F"].value < 0:
-                raise self._error("GC209", f"negative feed rate {words['F'].text}", words["F"])
+                raise self.error("GC209", f"negative feed rate {words['F'].text}", words["F"])
             self.feed = words["F"].value
         self.motion = motion
         rw = words.get("R")
         if rw is None:
-            raise self._error("GC231", "an arc in cylindrical interpolation needs R (the radius on the developed "
+            raise self.error("GC231", "an arc in cylindrical interpolation needs R (the radius on the developed "
                               "surface, mm); I, J and K are not allowed", axis_words[0] if axis_words else None)
-        self._check_feed()
-        self._note_assumed(("units", "distance", "offset"))
-        end, _ = self._program_target([(self.index[w.letter], w) for w in axis_words], False)
-        r = self._len(rw.value)
+        self.check_feed()
+        self.note_assumed(("units", "distance", "offset"))
+        end, _ = self.program_target([(self.index[w.letter], w) for w in axis_words], False)
+        r = self.length_mm(rw.value)
         z0, c0 = self.pos[cyl.il], self.pos[cyl.ir]
         z1, c1 = end[cyl.il], end[cyl.ir]
         if r == 0:
-            raise self._error("GC330", "zero-radius arc (R0)", rw)
+            raise self.error("GC330", "zero-radius arc (R0)", rw)
         if z0 == z1 and c0 == c1:
-            raise self._error("GC330", "arc whose end point equals its start point: the centre is undefined "
+            raise self.error("GC330", "arc whose end point equals its start point: the centre is undefined "
                               "in cylindrical interpolation (R format only)", rw)
         from ..cylinder import degree_length
 
@@ -276,7 +276,7 @@ class CylindricalInterpreter(Interpreter):
         limit = (abs(r) + self.arc_tolerance) ** 2 * 4
         if l2.lo > limit:
             half = l2.sqrt() / 2
-            raise self._error(
+            raise self.error(
                 "GC330",
                 f"arc radius R{fmt_number(abs(r))} mm is too small to reach the end point on the developed surface: "
                 f"half the chord is {fmt_number(half.lo)} mm ({cyl.linear}{fmt_number(z1 - z0)} mm and "
@@ -285,11 +285,11 @@ class CylindricalInterpreter(Interpreter):
                 rw,
             )
         if l2.hi > limit:
-            raise self._error("GC330", f"arc radius R{fmt_number(abs(r))} mm is within 1e-40 mm of the limit of "
+            raise self.error("GC330", f"arc radius R{fmt_number(abs(r))} mm is within 1e-40 mm of the limit of "
                               "reach; it cannot be decided whether the arc is valid", rw)
-        n0 = len(self._out)
-        self._emit(SegmentKind.DEVELOPED_ARC, end, feed=True, clockwise=motion == 20, radius=r)
-        if len(self._out) > n0:
-            s = self._out[-1]
-            self._out[-1] = replace(s, extra=s.extra + cyl.extra)
+        n0 = len(self.emitted)
+        self.emit(SegmentKind.DEVELOPED_ARC, end, feed=True, clockwise=motion == 20, radius=r)
+        if len(self.emitted) > n0:
+            s = self.emitted[-1]
+            self.emitted[-1] = replace(s, extra=s.extra + cyl.extra)
 

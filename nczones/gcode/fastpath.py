@@ -222,8 +222,8 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
     end, lineno, nlines, retries = entry[:4]
     chunk = None
     taken = 0
-    if it._m73:
-        it._m73_returns()  # what executing the run's first block would do first (no-op inside the call)
+    if it.m73_saved:
+        it.m73_returns()  # what executing the run's first block would do first (no-op inside the call)
     if lineno == req.lineno and (it.motion in (810, 820) or _state_ok(it)) and _state_decimal(it) is not None:
         blk = interp.text[req.pos:end].encode("utf-8")
         simple, starts, _ends, code = _classify(blk, it)
@@ -507,8 +507,8 @@ def _percent_cut(text: str) -> str | None:
 def _state_ok(it: Any) -> bool:
     ok = getattr(it, "fast_state_ok", None)  # what a dialect's interpreter adds (Fanuc: no cycle, transform)
     return (not it.unsupported and it.motion in (None, 0, 10, 20, 30) and not it.comp_just_off
-            and not it.comp_on and not it.track and it._u is None  # no XY rotation (G10 L2 R) active
-            and it._machine_at is None  # the machine is where the interpreter believes (G84 outside G17)
+            and not it.comp_on and not it.track and it.prerotation_xy is None  # no XY rotation (G10 L2 R) active
+            and it.machine_at is None  # the machine is where the interpreter believes (G84 outside G17)
             and (ok is None or ok()))
 
 
@@ -996,7 +996,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         last_f = Fraction(int(feed_line[-1]), den)
         it.feed = last_f / Fraction(254, 10) if inch else last_f
     if m:
-        it._note_assumed(("units", "distance", "offset", "plane") if arcs.any() else ("units", "distance", "offset"))
+        it.note_assumed(("units", "distance", "offset", "plane") if arcs.any() else ("units", "distance", "offset"))
     it.blocks += int(has_word.sum())
     it.segment_count += m
     for k in (SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.ARC):
@@ -1073,12 +1073,12 @@ _XYN[list(b"XYN")] = True
 def _cycle_state_ok(it: Any) -> bool:
     """The state in which a hole line (X/Y words only) under G81/G82 is exactly what :func:`_fast_cycle_run` builds."""
     comp = getattr(it, "_comp", None)
-    return (not it.unsupported and it.motion in (810, 820) and it._last_cycle == it.motion
+    return (not it.unsupported and it.motion in (810, 820) and it.last_cycle == it.motion
             and it.absolute and it.plane is Plane.XY and it.feed_mode == 94 and it.feed > 0
             and not it.comp_on and not it.comp_just_off and (comp is None or comp.side is None)
-            and not it.track and it._u is None and it._machine_at is None and not it._m73
-            and it._spline is None and it.cycle_r is not None and it.cycle_cc is not None
-            and it._cycle_il is not None and all(a in it.index for a in "XYZ"))
+            and not it.track and it.prerotation_xy is None and it.machine_at is None and not it.m73_saved
+            and it.spline_state is None and it.cycle_r is not None and it.cycle_cc is not None
+            and it.cycle_il is not None and all(a in it.index for a in "XYZ"))
 
 
 def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
@@ -1134,7 +1134,7 @@ def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     ln = (lambda v: v * INCH) if inch else (lambda v: v)
     r = ln(it.cycle_r) + it.off[ic]
     cc = ln(it.cycle_cc) + it.off[ic]
-    il = it._cycle_il
+    il = it.cycle_il
     if r < cc:
         return None  # GC306: the full path raises it
     up_r = il < r
@@ -1235,8 +1235,8 @@ def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     den = 10**S
     last = end[-1].tolist()
     it.pos = tuple(it.pos[k] if k not in (ia, ib, ic) else Fraction(int(last[k]), den) for k in range(na))
-    it._u_next = None
-    it._note_assumed(("units", "distance", "offset", "plane"))
+    it.prerotation_xy_next = None
+    it.note_assumed(("units", "distance", "offset", "plane"))
     it.segment_count += rows
     for kk in (R, L, D):
         it.kind_counts[kk] += h * sum(1 for t in tmpl if t[0] is kk)

@@ -374,7 +374,7 @@ class Interpreter:
         self.dep_g92_params: list[dict] = [{} for _ in range(n)]
         self.dep_home: dict[int, list[dict]] = {280: [{} for _ in range(n)], 300: [{} for _ in range(n)]}
         self.dep_tlo: dict = {}
-        self._recompute_offsets()
+        self.recompute_offsets()
         # ---- bookkeeping
         self.unset = {"units", "distance", "offset", "plane", "feed", "tool"}
         self.assumed: dict[str, str] = {}
@@ -385,24 +385,25 @@ class Interpreter:
         self.segment_count = 0
         self.kind_counts = {k: 0 for k in SegmentKind}
         self.ended = False
-        self._out: list[Segment] = []
+        self.emitted: list[Segment] = []
         self._plans: dict = {}  # letters of a PlainBlock -> how the plain lane reads it (_plain_plan)
-        self._index = 0  # the index of the block being executed
+        self.block_index = 0  # the index of the block being executed
         self._declined = -1  # the index of the last block lane() declined
-        self._span: SourceSpan | None = None
+        self.span: SourceSpan | None = None
         # the state every block reads, as instance attributes (reading a class default is slower)
-        self._machine_at = self._u = self._u_next = self._spline = self._cycle_il = self._last_cycle = None
+        self.machine_at = self.prerotation_xy = self.prerotation_xy_next = None
+        self.spline_state = self.cycle_il = self.last_cycle = None
         self._noted_straight = False
-        self._m73 = []
+        self.m73_saved = []
 
     # ------------------------------------------------------------------ helpers
-    def _recompute_offsets(self) -> None:
+    def recompute_offsets(self) -> None:
         g5 = self.g5x[self.wcs]
         off = [g5[i] + self.g92[i] for i in range(self.naxes)]
         if self.tool_axis is not None:
             off[self.tool_axis] += self.tlo
         self.off = off
-        if self.rot[self.wcs] or self._u is not None:
+        if self.rot[self.wcs] or self.prerotation_xy is not None:
             self._update_rotation()
         if self.track:
             deps = []
@@ -414,9 +415,9 @@ class Interpreter:
             self.dep_off = deps
 
     # ------------------------------------------------------------------ XY rotation (G10 L2 R)
-    _machine_at: tuple[Fraction, ...] | None = None  # where the machine really is, if not at self.pos
-    _u: list[Fraction] | None = None  # pre-rotation XY (program mm + G92) while a rotation is active
-    _u_next: list[Fraction] | None = None  # the pre-rotation XY of the target being emitted
+    machine_at: tuple[Fraction, ...] | None = None  # where the machine really is, if not at self.pos
+    prerotation_xy: list[Fraction] | None = None  # pre-rotation XY (program mm + G92) while a rotation is active
+    prerotation_xy_next: list[Fraction] | None = None  # the pre-rotation XY of the target being emitted
     _rot_key: tuple | None = None
     _cs: tuple[float, float] = (1.0, 0.0)
 
@@ -429,26 +430,26 @@ class Interpreter:
         """
         r = self.rot[self.wcs]
         if r == 0:
-            self._u = None
+            self.prerotation_xy = None
             self._rot_key = None
             return
         ix, iy = self._ix, self._iy
         if ix < 0 or iy < 0:
-            self._unknown("G10 R", f"coordinate system rotation R{fmt_number(r)} needs X and Y axes; this machine has "
+            self.unknown("G10 R", f"coordinate system rotation R{fmt_number(r)} needs X and Y axes; this machine has "
                           f"{', '.join(self.axes)}")
             return
         if self.track:
-            self._unknown("G10 R", "parameter ranges are not supported with a rotated coordinate system "
+            self.unknown("G10 R", "parameter ranges are not supported with a rotated coordinate system "
                           "(the position is not a sum of offsets)")
         if self.tool_axis in (ix, iy) and self.tlo:
-            self._unknown("G10 R", "a tool length offset on X or Y with a rotated coordinate system is not modelled")
+            self.unknown("G10 R", "a tool length offset on X or Y with a rotated coordinate system is not modelled")
         g5 = self.g5x[self.wcs]
         key = (self.wcs, r, g5[ix], g5[iy])
         if key != self._rot_key:
             self._rot_key = key
             t = to_float(r) * math.pi / 180.0  # LinuxCNC D2R, in doubles as LinuxCNC computes
             self._cs = (math.cos(t), math.sin(t))
-            self._u = list(self._rot_inv(self.pos[ix], self.pos[iy]))
+            self.prerotation_xy = list(self._rot_inv(self.pos[ix], self.pos[iy]))
 
     def _rot_fwd(self, ux: Fraction, uy: Fraction) -> tuple[Fraction, Fraction]:
         """Machine XY of a pre-rotation point (LinuxCNC ``rotate_and_offset_pos``, in doubles, taken exactly)."""
@@ -471,15 +472,15 @@ class Interpreter:
         The interpreter turns it into program coordinates (inverse rotation)
         and the canon layer rotates them back, both in doubles.
         """
-        if self._u is None:
+        if self.prerotation_xy is None:
             return
         ix, iy = self._ix, self._iy
         u = list(self._rot_inv(end[ix], end[iy]))
         end[ix], end[iy] = self._rot_fwd(u[0], u[1])
-        self._u_next = u
+        self.prerotation_xy_next = u
 
-    def _error(self, code: str, message: str, word: Word | None = None) -> GcodeError:
-        span = word.span if word is not None else self._span
+    def error(self, code: str, message: str, word: Word | None = None) -> GcodeError:
+        span = word.span if word is not None else self.span
         return GcodeError(Diagnostic(code, message, span))
 
     def _mm(self, v: Fraction, i: int) -> Fraction:
@@ -487,19 +488,19 @@ class Interpreter:
             return v * INCH
         return v
 
-    def _len(self, v: Fraction) -> Fraction:
+    def length_mm(self, v: Fraction) -> Fraction:
         return v * INCH if self.inch else v
 
-    def _unknown(self, code: str, reason: str, word: Word | None = None) -> None:
-        span = word.span if word is not None else self._span
+    def unknown(self, code: str, reason: str, word: Word | None = None) -> None:
+        span = word.span if word is not None else self.span
         if not self.unsupported:
             self.unsupported.append(Unsupported(code, reason, span))
 
     def finish(self) -> None:
         """End of the program text: a spline curve still waiting for data makes the result unknown."""
-        if self._spline is not None:
-            self._unknown(_NAME_PENDING, spline_pending(self))
-            self._spline = None
+        if self.spline_state is not None:
+            self.unknown(_NAME_PENDING, spline_pending(self))
+            self.spline_state = None
         if self._comp is not None:
             self._comp.program_end()
 
@@ -508,7 +509,7 @@ class Interpreter:
         """True once an unsupported code ended motion emission."""
         return bool(self.unsupported)
 
-    def _note_assumed(self, groups: tuple[str, ...]) -> None:
+    def note_assumed(self, groups: tuple[str, ...]) -> None:
         for g in groups:
             if g in self.unset and g not in self.assumed:
                 self.assumed[g] = self._current_code(g)
@@ -523,7 +524,7 @@ class Interpreter:
             "tool": "G49" if self.tool_register is None and self.tlo == 0 else "G43",
         }[group]
 
-    def _deps_tuple(self, deps: list[dict]) -> tuple[tuple[str, ...], ...]:
+    def deps_tuple(self, deps: list[dict]) -> tuple[tuple[str, ...], ...]:
         out = []
         for i, d in enumerate(deps):
             names = self._dep_names(d, i)
@@ -542,7 +543,7 @@ class Interpreter:
                     axis = self.axes[i]
                     if (k if k.startswith("H") else f"{k}.{axis}") not in self.ranged:
                         continue  # a fixed value: its coefficient does not matter
-                self._unknown(
+                self.unknown(
                     "dependencies",
                     f"the position depends on {k} with coefficient {v} (through G92/G10/G52 "
                     "arithmetic); parameter ranges cannot be expressed per segment",
@@ -551,16 +552,16 @@ class Interpreter:
             names.append(k)
         return tuple(sorted(names))
 
-    def _emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
+    def emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
               plane: Plane | None = None, clockwise: bool = False, centre: Any = None, radius: Any = None,
               turns: int = 0, dwell: Fraction | None = None,
               end_deps: list[dict] | None = None) -> None:
         start = self.pos
         if type(start) is not tuple:
             start = tuple(start)
-        if self._machine_at is not None:  # after LinuxCNC's G84 outside G17 the machine is not where the interpreter thinks
-            start = self._machine_at
-            self._machine_at = None
+        if self.machine_at is not None:  # after LinuxCNC's G84 outside G17 the machine is not where the interpreter thinks
+            start = self.machine_at
+            self.machine_at = None
         endt = tuple(end)
         fmm = None
         if feed and self.feed_mode == 94:
@@ -569,29 +570,29 @@ class Interpreter:
         de: tuple = ()
         dt: tuple = ()
         if self.track:
-            ds = self._deps_tuple(self.dep_pos)
-            de = self._deps_tuple(end_deps if end_deps is not None else self.dep_pos)
-            dt = self._tool_dep_names()
+            ds = self.deps_tuple(self.dep_pos)
+            de = self.deps_tuple(end_deps if end_deps is not None else self.dep_pos)
+            dt = self.tool_dep_names()
         if not self.unsupported:
-            seg = make_segment(kind, start, endt, self.axes, self._index, self._span, self.tlo, fmm,
+            seg = make_segment(kind, start, endt, self.axes, self.block_index, self.span, self.tlo, fmm,
                            plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
                            ds, de, ())
             if dt:
                 seg = with_tool_deps(seg, dt)
-            self._out.append(seg)
+            self.emitted.append(seg)
             self.segment_count += 1
             self.kind_counts[kind] += 1
         self.pos = endt
-        if self._u is not None:
-            if self._u_next is not None:
-                self._u = self._u_next
+        if self.prerotation_xy is not None:
+            if self.prerotation_xy_next is not None:
+                self.prerotation_xy = self.prerotation_xy_next
             elif endt[self._ix] != start[self._ix] or endt[self._iy] != start[self._iy]:
-                self._u = list(self._rot_inv(endt[self._ix], endt[self._iy]))
-        self._u_next = None
+                self.prerotation_xy = list(self._rot_inv(endt[self._ix], endt[self._iy]))
+        self.prerotation_xy_next = None
         if end_deps is not None:
             self.dep_pos = end_deps
 
-    def _tool_dep_names(self) -> tuple[str, ...]:
+    def tool_dep_names(self) -> tuple[str, ...]:
         """The sources of the active tool length (``Segment.deps_tool``; unknown on a bad coefficient)."""
         if not self.dep_tlo:
             return ()
@@ -618,8 +619,8 @@ class Interpreter:
 
     def _state_reader(self, entry: StateParameter) -> Any:
         def read():
-            if self._m73:
-                self._m73_returns()
+            if self.m73_saved:
+                self.m73_returns()
             got = entry.read(self)
             if got is None:
                 raise EvalError("GC305", f"{_show_key(entry.key)} reads the {entry.meaning}, controller state "
@@ -663,8 +664,8 @@ class Interpreter:
 
     def state_program_position(self, i: int) -> StateValue:
         """Where axis ``i`` is in the current coordinate system (all offsets off), mm."""
-        if self._u is not None and i in (self._ix, self._iy):
-            return StateValue(self._u[0 if i == self._ix else 1] - self.g92[i], {})
+        if self.prerotation_xy is not None and i in (self._ix, self._iy):
+            return StateValue(self.prerotation_xy[0 if i == self._ix else 1] - self.g92[i], {})
         return StateValue(self.pos[i] - self.off[i], self._named_deps(dadd(self.dep_pos[i], self.dep_off[i], -1), i)
                           if self.track else {})
 
@@ -705,15 +706,15 @@ class Interpreter:
             if self.ended:
                 break
             if block is LANE_FULL:
-                if len(self._out) >= size:
-                    yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
-                    self._out = []
+                if len(self.emitted) >= size:
+                    yield MotionChunk(self.axes, None, objects=tuple(self.emitted), file=self.file)
+                    self.emitted = []
                 continue
             self.blocks += 1
-            self._index = block.index
-            self._span = block.span
+            self.block_index = block.index
+            self.span = block.span
             try:
-                if inline and type(block) is PlainBlock and not self._m73:
+                if inline and type(block) is PlainBlock and not self.m73_saved:
                     # execute() inlined (subclasses that wrap execute() go through it)
                     if block.index == self._declined or not self._plain(block.letters, block.values):
                         self._execute_general(block)
@@ -721,18 +722,18 @@ class Interpreter:
                     self.execute(block)
             except StopProgram:
                 self.ended = True
-            if len(self._out) >= size:
-                yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
-                self._out = []
-        if self._out:
-            yield MotionChunk(self.axes, None, objects=tuple(self._out), file=self.file)
-            self._out = []
+            if len(self.emitted) >= size:
+                yield MotionChunk(self.axes, None, objects=tuple(self.emitted), file=self.file)
+                self.emitted = []
+        if self.emitted:
+            yield MotionChunk(self.axes, None, objects=tuple(self.emitted), file=self.file)
+            self.emitted = []
 
     # ------------------------------------------------------------------ one block
     def execute(self, block: Block) -> None:
         """Execute one block (LinuxCNC order of execution)."""
-        if self._m73:
-            self._m73_returns()
+        if self.m73_saved:
+            self.m73_returns()
         if type(block) is PlainBlock and self._plain(block.letters, block.values):
             return
         self._execute_general(block)
@@ -752,20 +753,20 @@ class Interpreter:
             if letter == "G":
                 k = gkey(w.value)
                 if k is None:
-                    raise self._error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at most one decimal", w)
+                    raise self.error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at most one decimal", w)
                 gcodes.append((k, w))
             elif letter == "M":
                 if w.value.denominator != 1:
-                    raise self._error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
+                    raise self.error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
                 mcodes.append((w.value.numerator, w))
             else:
                 if letter in words:
-                    raise self._error("GC204", f"two {letter} words in one block ({words[letter].text or letter} and {w.text or letter}); a letter may appear once", w)
+                    raise self.error("GC204", f"two {letter} words in one block ({words[letter].text or letter} and {w.text or letter}); a letter may appear once", w)
                 words[letter] = w
                 if letter in AXIS_LETTERS:
                     i = self.index.get(letter)
                     if i is None:
-                        raise self._error(
+                        raise self.error(
                             "GC203",
                             f"axis word {w.text or letter} names axis {letter}, which this machine does not have "
                             f"(axes: {', '.join(self.axes)})",
@@ -777,7 +778,7 @@ class Interpreter:
     def _execute_general(self, block: Block) -> None:
         """:meth:`execute` for a block the plain-move lane did not take."""
         gcodes, mcodes, words, axis_words = self._split_words(block)
-        if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self._machine_at is None \
+        if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self.machine_at is None \
                 and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
                                len(words) - len(axis_words) - ("F" in words) - ("S" in words)):
             self._lean_move(tuple((k, i) for k, (i, _w) in enumerate(axis_words)), [w.value for _i, w in axis_words])
@@ -790,24 +791,24 @@ class Interpreter:
                 if k in UNSUPPORTED_G:
                     g = 100 + k
                 else:
-                    raise self._error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}); see specs/gcode-support.md for the supported codes", w)
+                    raise self.error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}); see specs/gcode-support.md for the supported codes", w)
             if g in groups:
-                raise self._error("GC201", f"{gname(groups[g][0])} and {gname(k)} are in the same modal group; a block may contain only one of them", w)
+                raise self.error("GC201", f"{gname(groups[g][0])} and {gname(k)} are in the same modal group; a block may contain only one of them", w)
             groups[g] = (k, w)
         mgroups: dict[int, tuple[int, Word]] = {}
         for k, w in mcodes:
             g = _M_GROUP.get(k, 1000 + k)
             if g in mgroups and not (g == 8 and {k, mgroups[g][0]} == {7, 8}):
-                raise self._error("GC201", f"M{mgroups[g][0]} and M{k} are in the same modal group; a block may contain only one of them", w)
+                raise self.error("GC201", f"M{mgroups[g][0]} and M{k} are in the same modal group; a block may contain only one of them", w)
             mgroups[g] = (k, w)
         if len(mcodes) > 4:
-            raise self._error("GC206", f"{len(mcodes)} M words in one block; at most 4 are allowed", mcodes[4][1])
+            raise self.error("GC206", f"{len(mcodes)} M words in one block; at most 4 are allowed", mcodes[4][1])
         g0 = groups.get(0)
         g1 = groups.get(1)
         if g0 and g1 and g0[0] in _AXIS_USERS and g1[0] not in (800,) and axis_words:
-            raise self._error("GC205", f"{gname(g0[0])} and {gname(g1[0])} both use the axis words of the block; write them in separate blocks", g1[1])
+            raise self.error("GC205", f"{gname(g0[0])} and {gname(g1[0])} both use the axis words of the block; write them in separate blocks", g1[1])
         if g1 and g1[0] == 800 and axis_words and not (g0 and g0[0] in _AXIS_USERS):
-            raise self._error("GC205", "G80 cancels the canned cycle and cannot take axis words; write the motion in a separate block", axis_words[0][1])
+            raise self.error("GC205", "G80 cancels the canned cycle and cannot take axis words; write the motion in a separate block", axis_words[0][1])
         # R word without a user
         if "R" in words:
             motion_to_be = g1[0] if g1 else self.motion
@@ -816,26 +817,26 @@ class Interpreter:
             unknown_code = any(k in UNSUPPORTED_G for k, _ in gcodes) or any(
                 k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99) for k, _ in mcodes)
             if not uses_r and not unknown_code and not self.unsupported:  # after unknown the mode is unknown
-                raise self._error("GC204", f"R word {words['R'].text or 'R'} with no G code that uses it (R is used by G2/G3, canned cycles and G10)", words["R"])
+                raise self.error("GC204", f"R word {words['R'].text or 'R'} with no G code that uses it (R is used by G2/G3, canned cycles and G10)", words["R"])
         if "R" in words and 19 in {k for k, _ in mcodes} and groups.get(13, (0,))[0] == 640:
-            raise self._error("GC204", "R word is ambiguous in a block with both G64 and M19; write them in separate blocks", words["R"])
+            raise self.error("GC204", "R word is ambiguous in a block with both G64 and M19; write them in separate blocks", words["R"])
         if g1 and g1[0] in (382, 383, 384, 385) and not axis_words:
-            raise self._error("GC208", f"{gname(g1[0])} without axis words: a probing move needs a target", g1[1])
+            raise self.error("GC208", f"{gname(g1[0])} without axis words: a probing move needs a target", g1[1])
         # unsupported codes: stop emitting, keep checking blocks
         for k, w in gcodes:
             if k in UNSUPPORTED_G:
                 if k in (410, 420, 411, 421) and self._comp is not None:
                     continue
-                self._unknown(gname(k), UNSUPPORTED_G[k], w)
+                self.unknown(gname(k), UNSUPPORTED_G[k], w)
                 if k in (410, 420, 411, 421):
                     self.comp_on = True
         for k, w in mcodes:
             if k == 73:
                 if self._scopes is None or len(self._scopes) <= 1:
-                    self._unknown("M73", "M73 outside an o-word subroutine (main program or M98 subprogram): "
+                    self.unknown("M73", "M73 outside an o-word subroutine (main program or M98 subprogram): "
                                   "its restore on return is not modelled", w)
             elif k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99):
-                self._unknown(f"M{k}", f"M{k} is not a code nczones models (user M codes may run anything)", w)
+                self.unknown(f"M{k}", f"M{k} is not a code nczones models (user M codes may run anything)", w)
             if k in (0, 1, 60) and len(self.stops) < 100:
                 self.stops.append((k, w.span.line if w.span is not None else 0))
         if 70 in {k for k, _ in mcodes}:
@@ -844,8 +845,8 @@ class Interpreter:
             # LinuxCNC M73: save like M70 in this call frame, restore automatically on its return/endsub
             self._saved_modal = self._modal_snapshot()
             scope = self._scopes[-1]
-            self._m73 = [e for e in self._m73 if e[1] is not scope]
-            self._m73.append((len(self._scopes), scope, self._saved_modal))
+            self.m73_saved = [e for e in self.m73_saved if e[1] is not scope]
+            self.m73_saved.append((len(self._scopes), scope, self._saved_modal))
         if self._comp is not None and self._comp.side is not None:
             self._comp.check_block(groups, mcodes, words, axis_words, self.motion)
         # ---- order of execution
@@ -856,13 +857,13 @@ class Interpreter:
         if "F" in words:
             f = words["F"].value
             if f < 0:
-                raise self._error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
+                raise self.error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
             self.feed = f
         # 5-6: tool select and change
         if "T" in words:
             t = words["T"].value
             if t.denominator != 1 or t < 0:
-                raise self._error("GC209", f"tool number {words['T'].text} must be a non-negative integer", words["T"])
+                raise self.error("GC209", f"tool number {words['T'].text} must be a non-negative integer", words["T"])
             self.tool_selected = int(t)
         mset = {k for k, _ in mcodes}
         if 6 in mset:
@@ -870,21 +871,21 @@ class Interpreter:
         if 61 in mset:
             q = words.get("Q")
             if q is None or q.value.denominator != 1 or q.value < 0:
-                raise self._error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
+                raise self.error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
             self.tool_in_spindle = int(q.value)
         # 10: dwell
         if g0 and g0[0] == 40:
             p = words.get("P")
             if p is None:
-                raise self._error("GC208", "G4 needs a P word with the dwell time in seconds", g0[1])
+                raise self.error("GC208", "G4 needs a P word with the dwell time in seconds", g0[1])
             if p.value < 0:
-                raise self._error("GC209", f"dwell time {p.text} is negative", p)
+                raise self.error("GC209", f"dwell time {p.text} is negative", p)
             if "X" in words and g1 is None:
-                self._unknown("G4 X", "G4 with an X word dwells on Fanuc controls but moves X on LinuxCNC", words["X"])
+                self.unknown("G4 X", "G4 with an X word dwells on Fanuc controls but moves X on LinuxCNC", words["X"])
             if self._comp is not None:
                 self._comp.dwell(p.value)
             else:
-                self._emit(SegmentKind.DWELL, list(self.pos), dwell=p.value)
+                self.emit(SegmentKind.DWELL, list(self.pos), dwell=p.value)
         # 11: plane
         if 2 in groups:
             k = groups[2][0]
@@ -910,7 +911,7 @@ class Interpreter:
         if 12 in groups:
             self.wcs = _WCS_BY_KEY[groups[12][0]]
             self.unset.discard("offset")
-            self._recompute_offsets()
+            self.recompute_offsets()
         # 17: distance modes
         if 3 in groups:
             self.absolute = groups[3][0] == 900
@@ -941,12 +942,12 @@ class Interpreter:
                 if k == 921:
                     self.g92_params = [_ZERO] * self.naxes
                     self.dep_g92_params = [{} for _ in range(self.naxes)]
-                self._recompute_offsets()
+                self.recompute_offsets()
             elif k == 923:
                 self.g92 = list(self.g92_params)
                 self.dep_g92 = [dict(d) for d in self.dep_g92_params]
                 self.g92_applied = True
-                self._recompute_offsets()
+                self.recompute_offsets()
             elif k == 520:
                 self._g52(axis_words)
         # 20: motion
@@ -954,11 +955,11 @@ class Interpreter:
         if g1:
             k = g1[0]
             if k not in _CYCLES:
-                self._cycle_il = None
-                self._last_cycle = None
-            if self._spline is not None and k not in (52, 53, 62):
-                self._unknown(gname(k), spline_pending(self) + f" (motion changed to {gname(k)})", g1[1])
-                self._spline = None
+                self.cycle_il = None
+                self.last_cycle = None
+            if self.spline_state is not None and k not in (52, 53, 62):
+                self.unknown(gname(k), spline_pending(self) + f" (motion changed to {gname(k)})", g1[1])
+                self.spline_state = None
             if k == 800:
                 self.motion = None
             elif k in UNSUPPORTED_G:
@@ -969,15 +970,15 @@ class Interpreter:
                 and not (g0 and g0[0] == 100) and not (self.motion in (50, 51) and "K" not in words) \
                 and not (self.motion == 62 and "I" not in words and "J" not in words):
             w = words.get("I") or words.get("J") or words["K"]
-            raise self._error("GC204", f"{w.text or w.letter} word with no G2 or G3 to use it", w)
+            raise self.error("GC204", f"{w.text or w.letter} word with no G2 or G3 to use it", w)
         moving = bool(axis_words or (g1 and g1[0] in (20, 30)))
         if moving and not nonmodal_uses_axes and self.motion is not None:
             if self.motion in (20, 30) and self.comp_just_off:
-                raise self._error("GC311", "the move just after turning off cutter compensation (G40) must be straight, not an arc", (g1[1] if g1 else axis_words[0][1]))
+                raise self.error("GC311", "the move just after turning off cutter compensation (G40) must be straight, not an arc", (g1[1] if g1 else axis_words[0][1]))
             self.comp_just_off = False
         if not nonmodal_uses_axes:
             if g53 and not (g1 and g1[0] in (0, 10)) and not (self.motion in (0, 10) and not g1):
-                raise self._error("GC207", "G53 needs G0 or G1 in the same block (or active)", g0[1] if g0 else None)
+                raise self.error("GC207", "G53 needs G0 or G1 in the same block (or active)", g0[1] if g0 else None)
             if axis_words or (g1 and g1[0] not in (800,) and g1[0] not in UNSUPPORTED_G):
                 if self.unsupported and not g1 and not axis_words:
                     pass
@@ -985,13 +986,13 @@ class Interpreter:
                     self._motion_block(block, axis_words, words, g1, g53)
         if 72 in mset:
             if self._saved_modal is None:
-                raise self._error("GC204", "M72 restores a modal state, but no M70 saved one", mgroups[10][1])
+                raise self.error("GC204", "M72 restores a modal state, but no M70 saved one", mgroups[10][1])
             self._restore_modal(self._saved_modal)
         if 71 in mset:
             self._saved_modal = None
-            if self._m73 and self._scopes is not None:
+            if self.m73_saved and self._scopes is not None:
                 scope = self._scopes[-1]
-                self._m73 = [e for e in self._m73 if e[1] is not scope]
+                self.m73_saved = [e for e in self.m73_saved if e[1] is not scope]
         # 21: stop
         if self._comp is not None:
             if 2 in mset or 30 in mset:
@@ -1011,16 +1012,16 @@ class Interpreter:
         :func:`~nczones.gcode.program.iter_blocks`, ``lane``): 0 declined (nothing changed: the block
         is then yielded to :meth:`run`), 1 executed, 2 executed and a chunk is full (the layer then
         yields :data:`~nczones.gcode.blocks.LANE_FULL`, for :meth:`run` to hand the chunk on)."""
-        if self.ended or self._m73:
+        if self.ended or self.m73_saved:
             return 0
-        self._index = index
-        self._span = span
+        self.block_index = index
+        self.span = span
         self.blocks += 1
         if not self._plain(letters, values):
             self.blocks -= 1
             self._declined = index  # run() then takes the block to the general path at once
             return 0
-        return 2 if len(self._out) >= self.chunk_size else 1
+        return 2 if len(self.emitted) >= self.chunk_size else 1
 
     def _plain(self, letters: str, values: tuple) -> bool:
         """Execute a :class:`~nczones.gcode.lexer.PlainBlock` by the plain-move lane if it is one.
@@ -1028,7 +1029,7 @@ class Interpreter:
         Returns False, having changed nothing, when the block needs the
         general path (which then reads its words).
         """
-        if self.track or self._machine_at is not None:
+        if self.track or self.machine_at is not None:
             return False
         plan = self._plans.get(letters, _NO_PLAN)
         if plan is _NO_PLAN:
@@ -1077,8 +1078,8 @@ class Interpreter:
         before the move; every check it makes (modal groups, R/I/J/K users,
         G53) cannot fire.
         """
-        if extra or self.unsupported or self._u is not None or self._spline is not None or self.comp_on \
-                or self.comp_just_off or self._m73:
+        if extra or self.unsupported or self.prerotation_xy is not None or self.spline_state is not None or self.comp_on \
+                or self.comp_just_off or self.m73_saved:
             return False
         if m is not None and m not in LEAN_M:
             return False
@@ -1093,8 +1094,8 @@ class Interpreter:
                 return False
             self.feed = fv
         if g is not None:
-            self._cycle_il = None
-            self._last_cycle = None
+            self.cycle_il = None
+            self.last_cycle = None
             self.motion = g
         return True
 
@@ -1104,7 +1105,7 @@ class Interpreter:
         ``axis_at``: ``(value index, axis index)`` of each axis word, its value in ``values``.
         ``tests/gcode/test_plain_lane.py`` holds the two paths to identical segments."""
         if self.unset and not self._noted_straight:
-            self._note_assumed(("units", "distance", "offset"))
+            self.note_assumed(("units", "distance", "offset"))
             self._noted_straight = True  # unset only shrinks and assumed only grows: once is enough
         pos = self.pos
         end: Any = list(pos)  # the target's coordinates, then the tuple the segment holds
@@ -1127,29 +1128,29 @@ class Interpreter:
             if self.feed_mode == 94:
                 feed: Any = self.feed  # a Fraction, read through its slots
                 if feed._numerator == 0:
-                    self._check_feed()
+                    self.check_feed()
                 fmm = _qinch(self.feed) if inch else self.feed
         else:
             kind = SegmentKind.RAPID
         end = tuple(end)
-        self._out.append(make_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self._index,
-                                  self._span, self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register,
+        self.emitted.append(make_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self.block_index,
+                                  self.span, self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register,
                                   (), (), ()))
         self.segment_count += 1
         self.kind_counts[kind] += 1
         self.pos = end
-        self._u_next = None
+        self.prerotation_xy_next = None
 
     # ------------------------------------------------------------------ pieces
     _noted_straight = False
     _saved_modal: tuple | None = None
-    _cycle_il: Fraction | None = None
+    cycle_il: Fraction | None = None
     _spline = None  # an unfinished G5.2/G6.2 curve (nczones.gcode.splines)
 
-    _m73: list = []  # (scope depth, scope object, snapshot) of M73s whose subroutine has not returned
+    m73_saved: list = []  # (scope depth, scope object, snapshot) of M73s whose subroutine has not returned
     _scopes: list | None = None  # the language layer's local scopes (one per o-word call)
 
-    def _m73_returns(self) -> None:
+    def m73_returns(self) -> None:
         """Restore the state M73 saved in every subroutine that has returned since (innermost first).
 
         A subroutine call is alive while its local-scope object is still on
@@ -1157,12 +1158,12 @@ class Interpreter:
         state parameter read, so nothing observes the state in between.
         """
         scopes = self._scopes
-        while self._m73:
+        while self.m73_saved:
             assert scopes is not None  # M73 is taken only inside a call (with scopes)
-            depth, scope, snap = self._m73[-1]
+            depth, scope, snap = self.m73_saved[-1]
             if len(scopes) >= depth and scopes[depth - 1] is scope:
                 break
-            self._m73.pop()
+            self.m73_saved.pop()
             self._restore_modal(snap)
 
     def _modal_snapshot(self) -> tuple:
@@ -1172,7 +1173,7 @@ class Interpreter:
     def _restore_modal(self, snap: tuple) -> None:
         (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
          self.feed, self.retract_r) = snap
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     def _tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
         k, w = g
@@ -1185,35 +1186,35 @@ class Interpreter:
             h = words.get("H")
             if h is not None:
                 if h.value.denominator != 1 or h.value < 0:
-                    raise self._error("GC209", f"H word {h.text} must be a non-negative integer register number", h)
+                    raise self.error("GC209", f"H word {h.text} must be a non-negative integer register number", h)
                 reg = int(h.value)
             else:
                 reg = self.tool_in_spindle
             if reg in self.tool_table:
                 self.tlo, self.dep_tlo = self.tool_table[reg]
                 self.tool_register = reg
-                self._recompute_offsets()
+                self.recompute_offsets()
                 return
             if reg != 0 and reg not in self.machine.tool_lengths:
                 where = h if h is not None else w
                 known = ", ".join(f"H{r}" for r in sorted(self.machine.tool_lengths)) or "none"
-                raise self._error("GC310", f"tool length register H{reg} is not in the machine file's [tool_lengths] (known: {known})", where)
+                raise self.error("GC310", f"tool length register H{reg} is not in the machine file's [tool_lengths] (known: {known})", where)
             self.tlo = self.machine.tool_length(reg)
             self.tool_register = reg
             self.dep_tlo = {f"H{reg}": 1} if reg != 0 else {}
         elif k == 431:
             if self.tool_axis is None:
-                raise self._error("GC204", "G43.1 needs a tool axis in the machine file", w)
+                raise self.error("GC204", "G43.1 needs a tool axis in the machine file", w)
             axis = self.axes[self.tool_axis]
             zw = words.get(axis)
             if zw is None:
-                raise self._error("GC208", f"G43.1 needs a {axis} word with the tool length", w)
-            self.tlo = self._len(zw.value)
+                raise self.error("GC208", f"G43.1 needs a {axis} word with the tool length", w)
+            self.tlo = self.length_mm(zw.value)
             self.tool_register = None
             self.dep_tlo = {}
-        self._recompute_offsets()
+        self.recompute_offsets()
 
-    def _program_target(self, axis_words: list[tuple[int, Word]], g53: bool, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
+    def program_target(self, axis_words: list[tuple[int, Word]], g53: bool, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
         absolute = self.absolute if absolute is None else absolute
         end = list(self.pos)
         deps = [dict(d) for d in self.dep_pos] if self.track else None
@@ -1231,12 +1232,12 @@ class Interpreter:
                     deps[i] = dict(self.dep_off[i])
             else:
                 end[i] = qadd(end[i], v)
-        if self._u is not None:
+        if self.prerotation_xy is not None:
             if g53:
                 self._machine_xy(end)
             else:
                 ix, iy = self._ix, self._iy
-                p = [self._u[0] - self.g92[ix], self._u[1] - self.g92[iy]]
+                p = [self.prerotation_xy[0] - self.g92[ix], self.prerotation_xy[1] - self.g92[iy]]
                 for i, w in axis_words:
                     if i == ix or i == iy:
                         k = 0 if i == ix else 1
@@ -1244,7 +1245,7 @@ class Interpreter:
                         p[k] = v if absolute else p[k] + v
                 u = [p[0] + self.g92[ix], p[1] + self.g92[iy]]
                 end[ix], end[iy] = self._rot_fwd(u[0], u[1])
-                self._u_next = u
+                self.prerotation_xy_next = u
         return end, deps
 
     def _motion_block(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], g1: Any,
@@ -1252,36 +1253,36 @@ class Interpreter:
         motion = self.motion
         if motion is None:
             if axis_words and not self.unsupported:
-                raise self._error("GC208", "axis words without an active motion mode (G80 is active); write G0, G1, G2 or G3", axis_words[0][1])
+                raise self.error("GC208", "axis words without an active motion mode (G80 is active); write G0, G1, G2 or G3", axis_words[0][1])
             return
         if self.unsupported:
             return
         if motion in (0, 10):
             if g53 and not self.absolute:
-                raise self._error("GC207", "G53 cannot be used in incremental mode (G91)", axis_words[0][1] if axis_words else None)
+                raise self.error("GC207", "G53 cannot be used in incremental mode (G91)", axis_words[0][1] if axis_words else None)
             if not axis_words:
                 return
-            self._note_assumed(("units", "distance") if g53 else ("units", "distance", "offset"))
-            end, deps = self._program_target(axis_words, g53)
+            self.note_assumed(("units", "distance") if g53 else ("units", "distance", "offset"))
+            end, deps = self.program_target(axis_words, g53)
             if motion == 0:
                 if self._comp is not None and self._comp.active:
                     self._comp.straight(SegmentKind.RAPID, end, deps)
                 else:
-                    self._emit(SegmentKind.RAPID, end, end_deps=deps)
+                    self.emit(SegmentKind.RAPID, end, end_deps=deps)
             else:
-                self._check_feed()
+                self.check_feed()
                 if self._comp is not None and self._comp.active:
                     self._comp.straight(SegmentKind.LINE, end, deps)
                 else:
-                    self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+                    self.emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         elif motion in (20, 30) and self._comp is not None and self._comp.active:
             self._comp.arc(block, axis_words, words, motion == 20)
         elif motion in (20, 30):
-            self._arc(block, axis_words, words, motion == 20, g53)
+            self.arc(block, axis_words, words, motion == 20, g53)
         elif motion in (330, 331):
             self._spindle_synced(motion, axis_words, words, g53)
-        elif self._u is not None and not self.unsupported:
-            self._unknown(gname(motion), f"{gname(motion)} in a rotated coordinate system (G10 L2 R) is not modelled")
+        elif self.prerotation_xy is not None and not self.unsupported:
+            self.unknown(gname(motion), f"{gname(motion)} in a rotated coordinate system (G10 L2 R) is not modelled")
         elif motion in _CYCLES:
             self._cycle(motion, axis_words, words)
         elif motion in SPLINE_CODES:
@@ -1300,68 +1301,68 @@ class Interpreter:
         """
         name = gname(motion)
         if g53:
-            raise self._error("GC207", f"G53 cannot be used with {name}")
+            raise self.error("GC207", f"G53 cannot be used with {name}")
         kw = words.get("K")
         if kw is None:
-            raise self._error("GC208", f"{name} needs a K word (the pitch, distance per spindle revolution)")
+            raise self.error("GC208", f"{name} needs a K word (the pitch, distance per spindle revolution)")
         if kw.value <= 0:
-            raise self._error("GC209", f"{name} pitch {kw.text} must be greater than 0", kw)
+            raise self.error("GC209", f"{name} pitch {kw.text} must be greater than 0", kw)
         if self.comp_on:
-            raise self._error("GC204", f"{name} cannot be used with cutter compensation on")
+            raise self.error("GC204", f"{name} cannot be used with cutter compensation on")
         if not axis_words:
             return
-        self._note_assumed(("units", "distance", "offset"))
+        self.note_assumed(("units", "distance", "offset"))
         start = list(self.pos)
-        u0 = list(self._u) if self._u is not None else None
-        end, deps = self._program_target(axis_words, False)
+        u0 = list(self.prerotation_xy) if self.prerotation_xy is not None else None
+        end, deps = self.program_target(axis_words, False)
         if motion == 330:
-            self._emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
+            self.emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
             return
         sdeps = [dict(d) for d in self.dep_pos] if self.track else None
-        self._emit(SegmentKind.LINE, end, derived="G33.1 tap", end_deps=deps)
-        self._u_next = u0
-        self._emit(SegmentKind.LINE, start, derived="G33.1 retract", end_deps=sdeps)
+        self.emit(SegmentKind.LINE, end, derived="G33.1 tap", end_deps=deps)
+        self.prerotation_xy_next = u0
+        self.emit(SegmentKind.LINE, start, derived="G33.1 retract", end_deps=sdeps)
 
-    def _check_feed(self) -> None:
+    def check_feed(self) -> None:
         if self.feed_mode == 94 and self.feed == 0:
-            raise self._error("GC305", "feed motion with zero feed rate: no F word has been given (write F before or in this block)")
+            raise self.error("GC305", "feed motion with zero feed rate: no F word has been given (write F before or in this block)")
 
     # ------------------------------------------------------------------ arcs
-    def _arc(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], cw: bool, g53: bool) -> None:
+    def arc(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], cw: bool, g53: bool) -> None:
         if g53:
-            raise self._error("GC207", "G53 cannot be used with G2/G3")
+            raise self.error("GC207", "G53 cannot be used with G2/G3")
         plane = self.plane
         a_name, b_name, n_name = PLANE_AXES[plane]
         ia, ib = self.index.get(a_name), self.index.get(b_name)
         if ia is None or ib is None:
-            raise self._error("GC308", f"an arc in plane G{int(plane)} needs axes {a_name} and {b_name}; this machine has {', '.join(self.axes)}")
+            raise self.error("GC308", f"an arc in plane G{int(plane)} needs axes {a_name} and {b_name}; this machine has {', '.join(self.axes)}")
         offs = {"X": "I", "Y": "J", "Z": "K"}
         la, lb, ln = offs[a_name], offs[b_name], offs[n_name]
         if ln in words:
-            raise self._error("GC204", f"{ln} word {words[ln].text} given for an arc in plane G{int(plane)} (use {la} and {lb})", words[ln])
+            raise self.error("GC204", f"{ln} word {words[ln].text} given for an arc in plane G{int(plane)} (use {la} and {lb})", words[ln])
         rw = words.get("R")
         if rw is not None and (la in words or lb in words):
-            raise self._error("GC204", "mixed radius (R) and centre (I/J/K) format in one arc", rw)
+            raise self.error("GC204", "mixed radius (R) and centre (I/J/K) format in one arc", rw)
         if rw is None and la not in words and lb not in words:
-            raise self._error("GC208", f"arc without {la}, {lb} or R word: the centre or radius is missing", axis_words[0][1] if axis_words else None)
-        self._check_feed()
+            raise self.error("GC208", f"arc without {la}, {lb} or R word: the centre or radius is missing", axis_words[0][1] if axis_words else None)
+        self.check_feed()
         turns = 0
         pw = words.get("P")
         if pw is not None:
             if pw.value.denominator != 1 or pw.value < 1:
-                raise self._error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
+                raise self.error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
             turns = int(pw.value) - 1
-        self._note_assumed(("units", "distance", "offset", "plane"))
-        end, deps = self._program_target(axis_words, False)
-        rotated = self._u is not None
+        self.note_assumed(("units", "distance", "offset", "plane"))
+        end, deps = self.program_target(axis_words, False)
+        rotated = self.prerotation_xy is not None
         if rotated:
             if plane is not Plane.XY:
-                self._unknown(f"G{int(plane)} arc", f"an arc in plane G{int(plane)} of a rotated coordinate system "
+                self.unknown(f"G{int(plane)} arc", f"an arc in plane G{int(plane)} of a rotated coordinate system "
                               "(G10 L2 R) lies in a plane that is no machine plane; not modelled")
                 return
             # the arc in the pre-rotation frame (program + G92); end and centre rotated as LinuxCNC does
-            assert self._u is not None and self._u_next is not None  # set by _program_target under rotation
-            (sa, sb), (ea, eb) = self._u, self._u_next
+            assert self.prerotation_xy is not None and self.prerotation_xy_next is not None  # set by _program_target under rotation
+            (sa, sb), (ea, eb) = self.prerotation_xy, self.prerotation_xy_next
             off_a, off_b = self.g92[ia], self.g92[ib]
         else:
             sa, sb = self.pos[ia], self.pos[ib]
@@ -1369,17 +1370,17 @@ class Interpreter:
             off_a, off_b = self.off[ia], self.off[ib]
         tol = self.arc_tolerance
         if rw is not None:
-            r = self._len(rw.value)
+            r = self.length_mm(rw.value)
             if sa == ea and sb == eb:
-                raise self._error("GC303", "R-format arc whose end point equals its start point: the centre is undefined (use I/J/K for a full circle)", rw)
+                raise self.error("GC303", "R-format arc whose end point equals its start point: the centre is undefined (use I/J/K for a full circle)", rw)
             if r == 0:
-                raise self._error("GC304", "zero-radius arc (R0)", rw)
+                raise self.error("GC304", "zero-radius arc (R0)", rw)
             h2 = ((ea - sa) ** 2 + (eb - sb) ** 2) / 4
             r2 = r * r
             if h2 > r2:
                 # |h| - |r| > tol  <=>  h > r + tol
                 if h2 > (abs(r) + tol) ** 2:
-                    raise self._error(
+                    raise self.error(
                         "GC302",
                         f"arc radius R{fmt_number(abs(r))} mm is too small to reach the end point (half the chord is "
                         f"{fmt_number(Fraction(h2))}**0.5 mm; tolerance {fmt_number(tol)} mm)",
@@ -1395,15 +1396,15 @@ class Interpreter:
                 centre = ((sa + ea) / 2, (sb + eb) / 2)
                 if rotated:
                     centre = self._rot_fwd(*centre)
-                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
+                self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
                            turns=turns, end_deps=deps)
             else:
-                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, radius=r,
+                self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, radius=r,
                            turns=turns, end_deps=deps)
             return
         iw, jw = words.get(la), words.get(lb)
-        iv = self._len(iw.value) if iw is not None else _ZERO
-        jv = self._len(jw.value) if jw is not None else _ZERO
+        iv = self.length_mm(iw.value) if iw is not None else _ZERO
+        jv = self.length_mm(jw.value) if jw is not None else _ZERO
         if self.arc_absolute:
             ca = (iv + off_a) if iw is not None else off_a
             cb = (jv + off_b) if jw is not None else off_b
@@ -1412,13 +1413,13 @@ class Interpreter:
         r0 = (sa - ca) ** 2 + (sb - cb) ** 2
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
         if r0 == 0 or r1 == 0:
-            raise self._error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
+            raise self.error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
         rejected = (_linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
                     else r0 != r1 and sqrt_diff_exceeds(r0, r1, tol))
         if rejected:
             if self.arc_rule == "linuxcnc":
                 tol = Fraction(28284, 1000000)  # for the message: 2 * 0.01 * sqrt(2) mm
-            raise self._error(
+            raise self.error(
                 "GC301",
                 f"arc end point is off its circle: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm "
                 f"(start=({a_name}{fmt_number(sa)},{b_name}{fmt_number(sb)}) centre=({a_name}{fmt_number(ca)},{b_name}{fmt_number(cb)}) "
@@ -1426,14 +1427,14 @@ class Interpreter:
                 iw or jw,
             )
         centre = self._rot_fwd(ca, cb) if rotated else (ca, cb)
-        self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
+        self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
                    turns=turns, end_deps=deps)
 
     # ------------------------------------------------------------------ G28/G30, G10, G92, G52
     def _home(self, k: int, axis_words: list[tuple[int, Word]], w: Word) -> None:
-        self._note_assumed(("units", "distance", "offset"))
-        inter, deps = self._program_target(axis_words, False)
-        self._emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
+        self.note_assumed(("units", "distance", "offset"))
+        inter, deps = self.program_target(axis_words, False)
+        self.emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
         home = self.home[k]
         end = list(self.pos)
         hdeps = [dict(d) for d in self.dep_pos] if self.track else None
@@ -1443,27 +1444,27 @@ class Interpreter:
             if hdeps is not None:
                 hdeps[i] = dict(self.dep_home[k][i])
         self._machine_xy(end)
-        self._emit(SegmentKind.RAPID, end, derived=f"{gname(k)} home", end_deps=hdeps)
+        self.emit(SegmentKind.RAPID, end, derived=f"{gname(k)} home", end_deps=hdeps)
 
     def _g10(self, words: dict[str, Word], axis_words: list[tuple[int, Word]], w: Word) -> None:
         lw, pw = words.get("L"), words.get("P")
         if lw is None:
-            raise self._error("GC208", "G10 needs an L word (L1, L2, L10, L20)", w)
+            raise self.error("GC208", "G10 needs an L word (L1, L2, L10, L20)", w)
         L = lw.value
         if L not in (1, 2, 10, 11, 20):
-            raise self._error("GC209", f"G10 {lw.text}: L must be 1, 2, 10, 11 or 20", lw)
+            raise self.error("GC209", f"G10 {lw.text}: L must be 1, 2, 10, 11 or 20", lw)
         if pw is None:
-            raise self._error("GC208", f"G10 L{L} needs a P word", w)
+            raise self.error("GC208", f"G10 L{L} needs a P word", w)
         P = pw.value
         if L in (2, 20):
             if P.denominator != 1 or not 0 <= P <= 9:
-                raise self._error("GC209", f"G10 L{L} {pw.text}: P must be an integer 0 (active) to 9 (G59.3)", pw)
+                raise self.error("GC209", f"G10 L{L} {pw.text}: P must be an integer 0 (active) to 9 (G59.3)", pw)
             name = self.wcs if P == 0 else WORK_OFFSETS[int(P) - 1]
             rw = words.get("R")
             reg = self.g5x[name]
             dreg = self.dep_g5x[name]
             if rw is not None and L == 20 and rw.value != self.rot[name]:
-                self._unknown("G10 L20 R", "G10 L20 with an R word that changes the rotation is not modelled "
+                self.unknown("G10 L20 R", "G10 L20 with an R word that changes the rotation is not modelled "
                               "(use G10 L2 R)", rw)
                 return
             if rw is not None:
@@ -1487,7 +1488,7 @@ class Interpreter:
                         if i == self.tool_axis:
                             d = dadd(d, self.dep_tlo, -1)
                         dreg[i] = d
-            self._recompute_offsets()
+            self.recompute_offsets()
         else:
             self._g10_tool(int(L), P, pw, axis_words)
 
@@ -1524,7 +1525,7 @@ class Interpreter:
         G43 (the table entry is not the active offset).
         """
         if P.denominator != 1 or P < 0:
-            raise self._error("GC209", f"G10 L{L} {pw.text}: P must be a non-negative integer tool number", pw)
+            raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a non-negative integer tool number", pw)
         tool = int(P)
         for i, aw in axis_words:
             if i == self.tool_axis:
@@ -1542,17 +1543,17 @@ class Interpreter:
                             deps = dadd(deps, self.dep_g92[i], -1)
                 self.tool_table[tool] = (length, deps)
             elif L != 1 or aw.value != 0:
-                self._unknown(f"G10 L{L}", f"G10 L{L} sets a tool offset on axis {self.axes[i]} ({aw.text}); nczones "
+                self.unknown(f"G10 L{L}", f"G10 L{L} sets a tool offset on axis {self.axes[i]} ({aw.text}); nczones "
                               "models tool length on the tool axis only", aw)
                 return
 
     def _g92(self, axis_words: list[tuple[int, Word]], w: Word) -> None:
         if not axis_words:
-            raise self._error("GC208", "G92 needs at least one axis word", w)
+            raise self.error("GC208", "G92 needs at least one axis word", w)
         for i, aw in axis_words:
             v = self._mm(aw.value, i)
-            if self._u is not None and i in (self._ix, self._iy):
-                self.g92[i] = self._u[0 if i == self._ix else 1] - v
+            if self.prerotation_xy is not None and i in (self._ix, self._iy):
+                self.g92[i] = self.prerotation_xy[0 if i == self._ix else 1] - v
                 continue
             tl = self.tlo if i == self.tool_axis else _ZERO
             self.g92[i] = self.pos[i] - self.g5x[self.wcs][i] - tl - v
@@ -1564,7 +1565,7 @@ class Interpreter:
         self.g92_params = list(self.g92)
         self.dep_g92_params = [dict(d) for d in self.dep_g92]
         self.g92_applied = True
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     def _g52(self, axis_words: list[tuple[int, Word]]) -> None:
         for i, aw in axis_words:
@@ -1573,7 +1574,7 @@ class Interpreter:
         self.g92_params = list(self.g92)
         self.dep_g92_params = [dict(d) for d in self.dep_g92]
         self.g92_applied = True
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     # ------------------------------------------------------------------ canned cycles
     def _cycle(self, motion: int, axis_words: list[tuple[int, Word]], words: dict[str, Word]) -> None:
@@ -1581,30 +1582,30 @@ class Interpreter:
         a_name, b_name, c_name = PLANE_AXES[plane]
         ia, ib, ic = self.index.get(a_name), self.index.get(b_name), self.index.get(c_name)
         if ia is None or ib is None or ic is None:
-            raise self._error("GC308", f"a canned cycle in plane G{int(plane)} needs axes {a_name}, {b_name} and {c_name}; this machine has {', '.join(self.axes)}")
+            raise self.error("GC308", f"a canned cycle in plane G{int(plane)} needs axes {a_name}, {b_name} and {c_name}; this machine has {', '.join(self.axes)}")
         for i, aw in axis_words:
             if self.axes[i] not in (a_name, b_name, c_name):
-                raise self._error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
+                raise self.error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
         if self.comp_on:
-            raise self._error("GC204", "canned cycles cannot be used with cutter compensation on")
+            raise self.error("GC204", "canned cycles cannot be used with cutter compensation on")
         if self.feed_mode == 93:
-            raise self._error("GC204", "canned cycles cannot be used with inverse time feed (G93)")
-        self._check_feed()
+            raise self.error("GC204", "canned cycles cannot be used with inverse time feed (G93)")
+        self.check_feed()
         swapped = motion == 840 and plane is not Plane.XY
         if swapped and self.track:
-            self._unknown("G84", "parameter ranges are not supported with G84 outside G17")
-        first = self._last_cycle != motion
+            self.unknown("G84", "parameter ranges are not supported with G84 outside G17")
+        first = self.last_cycle != motion
         rw = words.get("R")
         if rw is None:
             if first or self.cycle_r is None:
-                raise self._error("GC208", f"{gname(motion)} needs an R word (the retract plane) the first time")
+                raise self.error("GC208", f"{gname(motion)} needs an R word (the retract plane) the first time")
             rprog = self.cycle_r
         else:
             rprog = rw.value
         cw_ = words.get(c_name)
         if cw_ is None:
             if first or self.cycle_cc is None:
-                raise self._error("GC208", f"{gname(motion)} needs a {c_name} word (the bottom) the first time")
+                raise self.error("GC208", f"{gname(motion)} needs a {c_name} word (the bottom) the first time")
             cprog = self.cycle_cc
         else:
             cprog = cw_.value
@@ -1612,7 +1613,7 @@ class Interpreter:
         reps = 1
         if lw is not None:
             if lw.value.denominator != 1 or lw.value < 1:
-                raise self._error("GC209", f"canned cycle repeat count {lw.text} must be a positive integer", lw)
+                raise self.error("GC209", f"canned cycle repeat count {lw.text} must be a positive integer", lw)
             reps = int(lw.value)
         dwell = None
         delta = None
@@ -1620,53 +1621,53 @@ class Interpreter:
             pw = words.get("P")
             if pw is not None:
                 if pw.value < 0:
-                    raise self._error("GC209", f"dwell time {pw.text} is negative", pw)
+                    raise self.error("GC209", f"dwell time {pw.text} is negative", pw)
                 self.cycle_p = pw.value
             elif first and motion != 840:
-                raise self._error("GC208", f"{gname(motion)} needs a P word (dwell time) the first time")
+                raise self.error("GC208", f"{gname(motion)} needs a P word (dwell time) the first time")
             dwell = self.cycle_p if (pw is not None or not first) else _ZERO
         if motion in (730, 830):
             qw = words.get("Q")
             if qw is not None:
                 self.cycle_q = qw.value
             elif first or self.cycle_q is None:
-                raise self._error("GC208", f"{gname(motion)} needs a Q word (peck depth) the first time")
+                raise self.error("GC208", f"{gname(motion)} needs a Q word (peck depth) the first time")
             if self.cycle_q <= 0:
-                raise self._error("GC209", f"peck depth Q{fmt_number(self.cycle_q)} must be greater than 0", qw)
-            delta = self._len(self.cycle_q)
-        self._note_assumed(("units", "distance", "offset", "plane"))
+                raise self.error("GC209", f"peck depth Q{fmt_number(self.cycle_q)} must be greater than 0", qw)
+            delta = self.length_mm(self.cycle_q)
+        self.note_assumed(("units", "distance", "offset", "plane"))
         # Levels are (value, dependencies on axis ic); every comparison of two levels goes through
         # _level_lt, which says whether the branch is the same for every parameter value of the ranges.
         track = self.track
         nodeps: dict = {}
         current_cc = self.pos[ic]
         current_d = self.dep_pos[ic] if track else nodeps
-        if self._cycle_il is None:
-            self._cycle_il = current_cc
+        if self.cycle_il is None:
+            self.cycle_il = current_cc
             self._cycle_il_deps = dict(current_d)
-        old_cc, old_d = self._cycle_il, self._cycle_il_deps if track else nodeps
+        old_cc, old_d = self.cycle_il, self._cycle_il_deps if track else nodeps
         wd = {self.axes[i]: aw for i, aw in axis_words}
         if self.absolute:
             inc_a = inc_b = _ZERO
-            r = qadd(self._len(rprog), self.off[ic])
-            cc = qadd(self._len(cprog), self.off[ic])
+            r = qadd(self.length_mm(rprog), self.off[ic])
+            cc = qadd(self.length_mm(cprog), self.off[ic])
             r_d = cc_d = self.dep_off[ic] if track else nodeps
-            aa = qadd(self._len(wd[a_name].value), self.off[ia]) if a_name in wd else self.pos[ia]
-            bb = qadd(self._len(wd[b_name].value), self.off[ib]) if b_name in wd else self.pos[ib]
+            aa = qadd(self.length_mm(wd[a_name].value), self.off[ia]) if a_name in wd else self.pos[ia]
+            bb = qadd(self.length_mm(wd[b_name].value), self.off[ib]) if b_name in wd else self.pos[ib]
             a_d = (self.dep_off[ia] if a_name in wd else self.dep_pos[ia]) if track else nodeps
             b_d = (self.dep_off[ib] if b_name in wd else self.dep_pos[ib]) if track else nodeps
         else:
-            inc_a = self._len(wd[a_name].value) if a_name in wd else _ZERO
-            inc_b = self._len(wd[b_name].value) if b_name in wd else _ZERO
-            r = qadd(self._len(rprog), old_cc)
-            cc = qadd(r, self._len(cprog))
+            inc_a = self.length_mm(wd[a_name].value) if a_name in wd else _ZERO
+            inc_b = self.length_mm(wd[b_name].value) if b_name in wd else _ZERO
+            r = qadd(self.length_mm(rprog), old_cc)
+            cc = qadd(r, self.length_mm(cprog))
             r_d = cc_d = old_d
             aa, bb = self.pos[ia], self.pos[ib]
             a_d = self.dep_pos[ia] if track else nodeps
             b_d = self.dep_pos[ib] if track else nodeps
         lt = self._level_lt
         if lt((r, r_d), (cc, cc_d), ic, "the retract plane R is below the bottom"):
-            raise self._error("GC306", f"canned cycle retract plane R ({fmt_number(r)} mm machine) is below the bottom {c_name} ({fmt_number(cc)} mm machine)", rw or cw_)
+            raise self.error("GC306", f"canned cycle retract plane R ({fmt_number(r)} mm machine) is below the bottom {c_name} ({fmt_number(cc)} mm machine)", rw or cw_)
 
         def go(kind, a, b, c, derived, here=False):
             """A move to (a, b) in the plane — the hole, or where the tool stands (``here``) — and level c."""
@@ -1678,7 +1679,7 @@ class Interpreter:
                 if not here:
                     deps[ia], deps[ib] = dict(a_d), dict(b_d)
                 deps[ic] = dict(c[1])
-            self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
+            self.emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
 
         name = gname(motion)
         if lt((old_cc, old_d), (r, r_d), ic, "the initial level is below R"):
@@ -1711,16 +1712,16 @@ class Interpreter:
                 continue
             go(SegmentKind.LINE, aa, bb, (cc, cc_d), f"{name} feed")
             if dwell is not None:
-                self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
+                self.emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
             if motion in (840, 850, 890):
                 go(SegmentKind.LINE, aa, bb, clear, f"{name} retract")
             else:
                 go(SegmentKind.RAPID, aa, bb, clear, f"{name} retract")
         self.cycle_cc = cprog
         self.cycle_r = rprog
-        self._last_cycle = motion
+        self.last_cycle = motion
 
-    _last_cycle: int | None = None
+    last_cycle: int | None = None
     _cycle_il_deps: dict = {}
 
     def _level_lt(self, a: tuple[Fraction, dict], b: tuple[Fraction, dict], i: int, what: str) -> bool:
@@ -1767,18 +1768,18 @@ class Interpreter:
             ((n, c),) = coeffs.items()
             if self.branch_split is None:
                 self.branch_split = (n, -d0 / c)
-            self._unknown("parameter range", f"the canned cycle's branch ({what}) depends on {n}: it switches at "
-                          f"{n} = {fmt_number(self._written_deviation(n, -d0 / c))} inside the range; each side is a "
+            self.unknown("parameter range", f"the canned cycle's branch ({what}) depends on {n}: it switches at "
+                          f"{n} = {fmt_number(self.written_deviation(n, -d0 / c))} inside the range; each side is a "
                           "different path")
         elif always or never:
-            self._unknown("parameter range", f"the canned cycle's branch ({what}) at the nominal values differs from "
+            self.unknown("parameter range", f"the canned cycle's branch ({what}) at the nominal values differs from "
                           f"the branch for every value of {', '.join(sorted(coeffs))} in the range")
         else:
-            self._unknown("parameter range", f"the canned cycle's branch ({what}) depends on "
+            self.unknown("parameter range", f"the canned cycle's branch ({what}) depends on "
                           f"{' and '.join(sorted(coeffs))} together; each side is a different path (not split)")
         return nominal
 
-    def _written_deviation(self, name: str, dev: Fraction) -> Fraction:
+    def written_deviation(self, name: str, dev: Fraction) -> Fraction:
         """A deviation of the interpreted nominal value, as ``--param`` writes the parameter."""
         centre = self.param_centre.get(name, _ZERO)
         if name.startswith("H"):
@@ -1806,16 +1807,16 @@ class Interpreter:
             end[ix], end[iy], end[iz] = x + self.off[ix], y + self.off[iy], z + self.off[iz]
             return end
 
-        self._emit(SegmentKind.LINE, point(cc), feed=True, derived="G84 feed (LinuxCNC axis order outside G17)")
+        self.emit(SegmentKind.LINE, point(cc), feed=True, derived="G84 feed (LinuxCNC axis order outside G17)")
         if dwell is not None:
-            self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived="G84 dwell")
-        self._emit(SegmentKind.LINE, point(clear), feed=True, derived="G84 retract (LinuxCNC axis order outside G17)")
+            self.emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived="G84 dwell")
+        self.emit(SegmentKind.LINE, point(clear), feed=True, derived="G84 retract (LinuxCNC axis order outside G17)")
         actual = tuple(self.pos)
         believed = list(self.pos)
         believed[ia], believed[ib], believed[ic] = aa, bb, clear
         self.pos = believed
         if tuple(believed) != actual:
-            self._machine_at = actual
+            self.machine_at = actual
 
 
 _LINUXCNC_STATE = linuxcnc_state_parameters()

@@ -71,8 +71,8 @@ class LatheInterpreter(Interpreter):
         self.diameter_mode = "X" in machine.diameter_axes
 
     def execute(self, block: Block) -> None:
-        if self._m73:
-            self._m73_returns()
+        if self.m73_saved:
+            self.m73_returns()
         block = self._diameter_words(block)
         cycle = next(((k, w) for w in block.words if w.letter == "G" and (k := gkey(w.value)) in _G7X_KEYS), None)
         if cycle is None:
@@ -87,7 +87,7 @@ class LatheInterpreter(Interpreter):
         modes = [w for w in words if w.letter == "G" and gkey(w.value) in (70, 80)]
         if modes:
             if len(modes) > 1:
-                raise self._error("GC201", "G7 and G8 are in the same modal group; a block may contain only one of "
+                raise self.error("GC201", "G7 and G8 are in the same modal group; a block may contain only one of "
                                   "them", modes[1])
             self.diameter_mode = gkey(modes[0].value) == 70
             words = tuple(w for w in words if w is not modes[0])
@@ -108,7 +108,7 @@ class LatheInterpreter(Interpreter):
         for w in block.words:
             if w.letter in _CYCLE_LETTERS:
                 if w.letter in words:
-                    raise self._error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
+                    raise self.error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
                                       f"{w.text}); a letter may appear once", w)
                 words[w.letter] = w
             elif w is not gw:
@@ -116,36 +116,36 @@ class LatheInterpreter(Interpreter):
         for w in rest:
             if w.letter not in "GMFSTN" or (w.letter == "G" and gkey(w.value) in (0, 10, 20, 30, 280, 300, 920, 100,
                                                                                     520, 530, 800)):
-                raise self._error("GC205", f"{w.text or w.letter} in the block of the lathe cycle {name}: write it in "
+                raise self.error("GC205", f"{w.text or w.letter} in the block of the lathe cycle {name}: write it in "
                                   "a block of its own", w)
         if rest:  # F, S, T, M and modal G codes act first (LinuxCNC's order of execution: motion comes late)
             self._execute_general(Block(tuple(rest), block.span, block.index, block.number, block.messages))
         if self.unsupported or self.ended:
             return
         if "Q" not in words:
-            raise self._error("GC208", f"{name} needs a Q word: the number of the profile's subroutine", gw)
+            raise self.error("GC208", f"{name} needs a Q word: the number of the profile's subroutine", gw)
         if not isinstance(block, ShapeBlock):
-            self._unknown(name, f"{name}: the profile subroutine was not collected (the cycle block is built by a "
+            self.unknown(name, f"{name}: the profile subroutine was not collected (the cycle block is built by a "
                           "path of the language layer that does not read profiles, e.g. a line with parameters)", gw)
             return
         if self.plane is not Plane.XZ:
-            raise self._error("GC308", f"{name} can only be used in the XZ plane (G18) (LinuxCNC's error)", gw)
+            raise self.error("GC308", f"{name} can only be used in the XZ plane (G18) (LinuxCNC's error)", gw)
         iz, ix = self.index.get("Z"), self.index.get("X")
         if iz is None or ix is None:
-            raise self._error("GC308", f"a lathe cycle needs axes X and Z; this machine has {', '.join(self.axes)}",
+            raise self.error("GC308", f"a lathe cycle needs axes X and Z; this machine has {', '.join(self.axes)}",
                               gw)
         if self.comp_on or (self._comp is not None and self._comp.side is not None):
-            self._unknown(name, f"{name} with cutter compensation on is not modelled", gw)
+            self.unknown(name, f"{name} with cutter compensation on is not modelled", gw)
             return
-        if self._u is not None:
-            self._unknown(name, f"{name} in a rotated coordinate system (G10 L2 R) is not modelled", gw)
+        if self.prerotation_xy is not None:
+            self.unknown(name, f"{name} in a rotated coordinate system (G10 L2 R) is not modelled", gw)
             return
-        self._note_assumed(("units", "distance", "offset"))
+        self.note_assumed(("units", "distance", "offset"))
         # the rapid to X Z (the cycle's start point; absent words: where the tool is)
         axis = [(i, words[a]) for a, i in (("X", ix), ("Z", iz)) if a in words]
         if axis:
-            end, deps = self._program_target(axis, False)
-            self._emit(SegmentKind.RAPID, end, derived=f"{name} to the start point", end_deps=deps)
+            end, deps = self.program_target(axis, False)
+            self.emit(SegmentKind.RAPID, end, derived=f"{name} to the start point", end_deps=deps)
         self.motion = 0
         if self.track:
             ranged = getattr(self, "ranged", None)
@@ -153,7 +153,7 @@ class LatheInterpreter(Interpreter):
                 d = dadd(self.dep_pos[i], self.dep_off[i], -1)
                 names = sorted(k for k in d if ranged is None or f"{k}.{self.axes[i]}" in ranged or k in ranged)
                 if names:
-                    self._unknown("parameter range", f"{name}: the cycle's start point in the workpiece coordinate "
+                    self.unknown("parameter range", f"{name}: the cycle's start point in the workpiece coordinate "
                                   f"system depends on {', '.join(f'{k}.{self.axes[i]}' for k in names)}: the "
                                   "number and places of its passes would depend on it", gw)
                     return
@@ -168,12 +168,12 @@ class LatheInterpreter(Interpreter):
         fl = {k: float(words[k].value) for k in "DEIRUW" if k in words}
         p = int(words["P"].value) if "P" in words else 1
         if fl.get("I", 1.0) <= 0:
-            raise self._error("GC209", f"{name}: I must be greater than zero (LinuxCNC's error)", words["I"])
+            raise self.error("GC209", f"{name}: I must be greater than zero (LinuxCNC's error)", words["I"])
         start = complex(float(z0), float(x0))
         try:
             if code == 70:
                 if p < 1:
-                    raise self._error("GC209", f"{name}: P (the number of passes) must be at least 1", words["P"])
+                    raise self.error("GC209", f"{name}: P (the number of passes) must be at least 1", words["P"])
                 moves = g7x.g70(pieces, start, x=float(x0), z=float(z0), d=fl.get("D", 0.0), e=fl.get("E", 0.0),
                                 passes=p)
             else:
@@ -181,7 +181,7 @@ class LatheInterpreter(Interpreter):
                                 w=fl.get("W", 0.0), d=fl.get("D", 0.0), i=fl.get("I", 1.0), r=fl.get("R", 0.5),
                                 facing=code == 72)
         except g7x.G7xError as e:
-            self._unknown(name, f"{name}: LinuxCNC stops this cycle with an error or its result is not defined: {e}",
+            self.unknown(name, f"{name}: LinuxCNC stops this cycle with an error or its result is not defined: {e}",
                           gw)
             return
         self._emit_g7x(name, moves, iz, ix, unit)
@@ -198,28 +198,28 @@ class LatheInterpreter(Interpreter):
             ws: dict[str, Word] = {}
             for w in b.words:
                 if w.letter not in _PROFILE_LETTERS:
-                    self._unknown(name, f"{name}: the word {w.text or w.letter} in the profile (line {w.span.line}) "
+                    self.unknown(name, f"{name}: the word {w.text or w.letter} in the profile (line {w.span.line}) "
                                   "is not modelled", gw)
                     return None
                 if w.letter == "G":
                     k = gkey(w.value)
                     if k not in (0, 10, 20, 30):
-                        self._unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
+                        self.unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
                                       "G1 G2 G3 are modelled there (LinuxCNC ignores other codes of a profile block)",
                                       gw)
                         return None
                     motion = k
                     continue
                 if w.letter in ws:
-                    raise self._error("GC204", f"two {w.letter} words in one block of the profile", w)
+                    raise self.error("GC204", f"two {w.letter} words in one block of the profile", w)
                 ws[w.letter] = w
             end = complex(0.0, 0.0) if incremental else at
             if "U" in ws:
                 if incremental:
-                    raise self._error("GC204", f"{name}: U cannot be used in incremental mode (G91) (LinuxCNC's "
+                    raise self.error("GC204", f"{name}: U cannot be used in incremental mode (G91) (LinuxCNC's "
                                       "error)", ws["U"])
                 if "X" in ws:
-                    raise self._error("GC204", f"{name}: U and X in the same profile block", ws["U"])
+                    raise self.error("GC204", f"{name}: U and X in the same profile block", ws["U"])
                 u = float(ws["U"].value) / (2.0 if self.diameter_mode else 1.0)
                 end = complex(end.real, end.imag + u)
             elif "X" in ws:
@@ -227,10 +227,10 @@ class LatheInterpreter(Interpreter):
                 end = complex(end.real, float(xv))
             if "W" in ws:
                 if incremental:
-                    raise self._error("GC204", f"{name}: W cannot be used in incremental mode (G91) (LinuxCNC's "
+                    raise self.error("GC204", f"{name}: W cannot be used in incremental mode (G91) (LinuxCNC's "
                                       "error)", ws["W"])
                 if "Z" in ws:
-                    raise self._error("GC204", f"{name}: W and Z in the same profile block", ws["W"])
+                    raise self.error("GC204", f"{name}: W and Z in the same profile block", ws["W"])
                 end = complex(end.real + float(ws["W"].value), end.imag)
             elif "Z" in ws:
                 end = complex(float(ws["Z"].value), end.imag)
@@ -246,7 +246,7 @@ class LatheInterpreter(Interpreter):
                     return None
                 pieces.append(g7x.Round(motion == 30, at, centre, end))
             if "A" in ws and "C" in ws:
-                raise self._error("GC204", f"{name}: both A and C on a corner of the profile (LinuxCNC's error)",
+                raise self.error("GC204", f"{name}: both A and C on a corner of the profile (LinuxCNC's error)",
                                   ws["C"])
             if "A" in ws:
                 pieces.append(g7x.Fillet(float(ws["A"].value), end))
@@ -260,27 +260,27 @@ class LatheInterpreter(Interpreter):
                         gw: Word) -> complex | None:
         if "R" in ws:
             if "I" in ws or "K" in ws:
-                raise self._error("GC204", f"{name}: both R and I or K on an arc of the profile", ws["R"])
+                raise self.error("GC204", f"{name}: both R and I or K on an arc of the profile", ws["R"])
             r = float(ws["R"].value)
             chord = end - at
             n = chord.real * chord.real + chord.imag * chord.imag
             q = (r * r - n / 4) / n
             if q < 0:
-                raise self._error("GC302", f"{name}: the arc's radius {ws['R'].text} is too small to reach its end "
+                raise self.error("GC302", f"{name}: the arc's radius {ws['R'].text} is too small to reach its end "
                                   "point", ws["R"])
             centre = (at + end) / 2.0
             s = q ** 0.5
             d = complex(0.0 * s, 1.0 * s) * chord
             return centre + d if motion == 30 else centre - d
         if "I" not in ws and "K" not in ws:
-            raise self._error("GC208", f"{name}: either I or K must be present for an arc of the profile", None)
+            raise self.error("GC208", f"{name}: either I or K must be present for an arc of the profile", None)
         ci = float(ws["I"].value) if "I" in ws else 0.0
         ck = float(ws["K"].value) if "K" in ws else 0.0
         centre = complex(ck, ci) if self.arc_absolute else complex(ck, ci) + at
         r0, r1 = abs(at - centre), abs(end - centre)
         tol = 0.0002 if self.inch else 0.002  # LinuxCNC's RADIUS_TOLERANCE_INCH / _MM (arc_data_ijk)
         if abs(r0 - r1) > tol and abs(r0 - r1) > 0.001 * max(r0, r1):
-            raise self._error("GC301", f"{name}: an arc of the profile ends off its circle: radius {r0:.6g} at its "
+            raise self.error("GC301", f"{name}: an arc of the profile ends off its circle: radius {r0:.6g} at its "
                               f"start, {r1:.6g} at its end", ws.get("I") or ws.get("K"))
         return centre
 
@@ -298,18 +298,18 @@ class LatheInterpreter(Interpreter):
                 deps[ix] = dict(self.dep_off[ix])
             derived = f"{name} {m.label}"
             if m.kind == "rapid":
-                self._emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
+                self.emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
                 motion = 0
             elif m.kind == "feed":
-                self._check_feed()
-                self._emit(SegmentKind.LINE, end, feed=True, derived=derived, end_deps=deps)
+                self.check_feed()
+                self.emit(SegmentKind.LINE, end, feed=True, derived=derived, end_deps=deps)
                 motion = 10
             else:
                 assert m.centre is not None
-                self._check_feed()
+                self.check_feed()
                 centre = (qadd(Fraction(m.centre.real) * unit, self.off[iz]),
                           qadd(Fraction(m.centre.imag) * unit, self.off[ix]))
-                self._emit(SegmentKind.ARC, end, feed=True, plane=Plane.XZ, clockwise=not m.ccw, centre=centre,
+                self.emit(SegmentKind.ARC, end, feed=True, plane=Plane.XZ, clockwise=not m.ccw, centre=centre,
                            derived=derived, end_deps=deps)
                 motion = 30 if m.ccw else 20
         self.motion = motion  # LinuxCNC: the motion mode of the cycle's last move stays active

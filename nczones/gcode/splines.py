@@ -67,7 +67,7 @@ class _Pending:
 
 def spline_pending(it: Any) -> str | None:
     """Why an unfinished curve is pending (for the end of the program), or None."""
-    p = getattr(it, "_spline", None)
+    p = getattr(it, "spline_state", None)
     if p is None:
         return None
     return f"the {_NAME[p.code]} curve started at line {p.span.line if p.span else '?'} was never completed"
@@ -77,11 +77,11 @@ def _plane_words(it, words, axis_words, code):
     a, b, _ = PLANE_AXES[it.plane]
     for i, w in axis_words:
         if it.axes[i] not in (a, b):
-            it._unknown(_NAME[code], f"{_NAME[code]} with an {it.axes[i]} word ({w.text}): nczones models "
+            it.unknown(_NAME[code], f"{_NAME[code]} with an {it.axes[i]} word ({w.text}): nczones models "
                         f"spline curves in the active plane ({a}{b}) only", w)
             return None
     if a not in it.index or b not in it.index:
-        raise it._error("GC308", f"a spline in plane G{int(it.plane)} needs axes {a} and {b}")
+        raise it.error("GC308", f"a spline in plane G{int(it.plane)} needs axes {a} and {b}")
     has_a, has_b = a in words, b in words
     return a, b, has_a, has_b
 
@@ -90,18 +90,18 @@ def _emit_curve(it: Any, code: Any, degree: Any, knots: Any, control: Any, weigh
     try:
         Nurbs(degree, tuple(knots), tuple(control), tuple(weights))
     except NurbsError as exc:
-        it._unknown(_NAME[code], f"{_NAME[code]}: {exc}; nczones models clamped NURBS curves only")
+        it.unknown(_NAME[code], f"{_NAME[code]}: {exc}; nczones models clamped NURBS curves only")
         return
     if control[0] != tuple(it.pos):
-        it._emit(SegmentKind.LINE, list(control[0]), feed=True, derived=f"{_NAME[code]} to the first control point")
+        it.emit(SegmentKind.LINE, list(control[0]), feed=True, derived=f"{_NAME[code]} to the first control point")
     extra = (("degree", degree), ("knots", tuple(knots)), ("control", tuple(control)),
              ("weights", tuple(weights)), ("source", _NAME[code]))
-    n0 = len(it._out)
-    it._emit(SegmentKind.SPLINE, list(control[-1]), feed=True, plane=it.plane)
-    if len(it._out) > n0:
+    n0 = len(it.emitted)
+    it.emit(SegmentKind.SPLINE, list(control[-1]), feed=True, plane=it.plane)
+    if len(it.emitted) > n0:
         from dataclasses import replace
 
-        it._out[-1] = replace(it._out[-1], extra=extra)
+        it.emitted[-1] = replace(it.emitted[-1], extra=extra)
 
 
 def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> None:
@@ -109,19 +109,19 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
     code = motion
     name = _NAME[code]
     if it.comp_on:
-        raise it._error("GC204", f"{name} cannot be used with cutter radius compensation on")
-    it._check_feed()
-    it._note_assumed(("units", "distance", "offset", "plane"))
-    pend = getattr(it, "_spline", None)
+        raise it.error("GC204", f"{name} cannot be used with cutter radius compensation on")
+    it.check_feed()
+    it.note_assumed(("units", "distance", "offset", "plane"))
+    pend = getattr(it, "spline_state", None)
     if code in (50, 51):
         if it.plane is not Plane.XY:
-            raise it._error("GC204", f"{name}: splines must be in the XY plane (G17)")
+            raise it.error("GC204", f"{name}: splines must be in the XY plane (G17)")
         pw = _plane_words(it, words, axis_words, code)
         if pw is None:
             return
         cur = tuple(it.pos)
         ix, iy = it.index["X"], it.index["Y"]
-        end, _ = it._program_target(axis_words, False)
+        end, _ = it.program_target(axis_words, False)
         end = tuple(end)
 
         def off(p, dx, dy):
@@ -133,34 +133,34 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
         iw, jw = words.get("I"), words.get("J")
         if code == 51:
             if iw is None or jw is None:
-                raise it._error("GC208", "G5.1 needs both I and J", g1[1] if g1 else None)
-            ctrl = [cur, off(cur, it._len(iw.value), it._len(jw.value)), end]
+                raise it.error("GC208", "G5.1 needs both I and J", g1[1] if g1 else None)
+            ctrl = [cur, off(cur, it.length_mm(iw.value), it.length_mm(jw.value)), end]
             _emit_curve(it, code, 2, clamped_uniform_knots(3, 3), ctrl, [Fraction(1)] * 3)
             return
         pw_, qw = words.get("P"), words.get("Q")
         if pw_ is None or qw is None:
-            raise it._error("GC208", "G5 needs both P and Q", g1[1] if g1 else None)
+            raise it.error("GC208", "G5 needs both P and Q", g1[1] if g1 else None)
         if (iw is None) != (jw is None):
-            raise it._error("GC208", "G5 needs both I and J, or neither", iw or jw)
+            raise it.error("GC208", "G5 needs both I and J, or neither", iw or jw)
         if iw is None:
             prev = getattr(it, "_g5_next_ij", None)
             if prev is None:
-                raise it._error("GC208", "G5 without I and J needs a previous G5 (its -P, -Q are used)", g1[1] if g1 else None)
+                raise it.error("GC208", "G5 without I and J needs a previous G5 (its -P, -Q are used)", g1[1] if g1 else None)
             di, dj = prev
         else:
-            di, dj = it._len(iw.value), it._len(jw.value)
-        dp, dq = it._len(pw_.value), it._len(qw.value)
+            di, dj = it.length_mm(iw.value), it.length_mm(jw.value)
+        dp, dq = it.length_mm(pw_.value), it.length_mm(qw.value)
         ctrl = [cur, off(cur, di, dj), off(end, dp, dq), end]
         it._g5_next_ij = (-dp, -dq)
         _emit_curve(it, code, 3, clamped_uniform_knots(4, 4), ctrl, [Fraction(1)] * 4)
         return
     if code == 53:
         if pend is None or pend.code != 52:
-            raise it._error("GC208", "G5.3 without a G5.2 curve before it", g1[1] if g1 else None)
-        it._spline = None
+            raise it.error("GC208", "G5.3 without a G5.2 curve before it", g1[1] if g1 else None)
+        it.spline_state = None
         it.motion = None
         if len(pend.points) < pend.order:
-            raise it._error("GC209", f"a G5.2 curve of order L={pend.order} needs at least {pend.order} control "
+            raise it.error("GC209", f"a G5.2 curve of order L={pend.order} needs at least {pend.order} control "
                             f"points; it has {len(pend.points)}")
         knots = clamped_uniform_knots(len(pend.points), pend.order)
         _emit_curve(it, 52, pend.order - 1, knots, pend.points, pend.weights)
@@ -170,66 +170,66 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
         return
     a, b, has_a, has_b = pw
     if has_a != has_b:
-        raise it._error("GC208", f"{name}: a control point needs both {a} and {b}", axis_words[0][1])
+        raise it.error("GC208", f"{name}: a control point needs both {a} and {b}", axis_words[0][1])
     target = None
     if has_a:
         # incremental coordinates are relative to the curve's start (LinuxCNC keeps current_x/y until the end)
-        end, _ = it._program_target(axis_words, False)
+        end, _ = it.program_target(axis_words, False)
         target = tuple(end)
     if code == 52:
         if pend is not None and pend.code != 52:
             pend = None
         p = words.get("P")
         if pend is None:
-            pend = _Pending(52, tuple(it.pos), it._span)
+            pend = _Pending(52, tuple(it.pos), it.span)
             w0 = p.value if (p is not None and target is None and p.value > 0) else Fraction(1)
             pend.points.append(tuple(it.pos))
             pend.weights.append(w0)
-            it._spline = pend
+            it.spline_state = pend
         lw = words.get("L")
         if lw is not None and lw.value > 3:
             if lw.value.denominator != 1:
-                raise it._error("GC209", f"G5.2 order {lw.text} must be an integer", lw)
+                raise it.error("GC209", f"G5.2 order {lw.text} must be an integer", lw)
             pend.order = int(lw.value)
         if target is not None:
             if p is None or p.value <= 0:
-                raise it._error("GC208", "G5.2: every control point needs a positive weight P", p or axis_words[0][1])
+                raise it.error("GC208", "G5.2: every control point needs a positive weight P", p or axis_words[0][1])
             pend.points.append(target)
             pend.weights.append(p.value)
         elif p is not None and len(pend.points) > 1:
-            raise it._error("GC208", "G5.2: P without axis words is allowed only for the first control point", p)
+            raise it.error("GC208", "G5.2: P without axis words is allowed only for the first control point", p)
         return
     # G6.2
     kw, rw, pw_ = words.get("K"), words.get("R"), words.get("P")
     if pw_ is not None:
         if pend is not None:
-            it._unknown(name, "a new G6.2 curve (P word) started before the previous one had all its knots", pw_)
-            it._spline = None
+            it.unknown(name, "a new G6.2 curve (P word) started before the previous one had all its knots", pw_)
+            it.spline_state = None
             return
         if pw_.value.denominator != 1 or pw_.value < 2:
-            raise it._error("GC209", f"G6.2 order {pw_.text} must be an integer of at least 2", pw_)
-        pend = _Pending(62, tuple(it.pos), it._span)
+            raise it.error("GC209", f"G6.2 order {pw_.text} must be an integer of at least 2", pw_)
+        pend = _Pending(62, tuple(it.pos), it.span)
         pend.order = int(pw_.value)
         qv = words.get("Q")
         pend.q = qv.value if qv is not None else None
-        it._spline = pend
+        it.spline_state = pend
     if pend is None or pend.code != 62:
-        it._unknown(name, "G6.2 data before the block that gives the order P", (kw or rw or (g1[1] if g1 else None)))
+        it.unknown(name, "G6.2 data before the block that gives the order P", (kw or rw or (g1[1] if g1 else None)))
         return
     if kw is None:
-        raise it._error("GC208", "G6.2: every block needs a knot K", g1[1] if g1 else (axis_words[0][1] if axis_words else None))
+        raise it.error("GC208", "G6.2: every block needs a knot K", g1[1] if g1 else (axis_words[0][1] if axis_words else None))
     if target is not None:
         if len(pend.knots) != len(pend.points):
-            it._unknown(name, "a G6.2 control point after the trailing knots", axis_words[0][1])
-            it._spline = None
+            it.unknown(name, "a G6.2 control point after the trailing knots", axis_words[0][1])
+            it.spline_state = None
             return
         weight = rw.value if rw is not None else Fraction(1)
         if weight <= 0:
-            raise it._error("GC209", f"G6.2 weight {rw.text} must be positive", rw)
+            raise it.error("GC209", f"G6.2 weight {rw.text} must be positive", rw)
         pend.points.append(target)
         pend.weights.append(weight)
     pend.knots.append(kw.value)
     if pend.knots and len(pend.knots) == len(pend.points) + pend.order:
-        it._spline = None
+        it.spline_state = None
         _emit_curve(it, 62, pend.order - 1, pend.knots, pend.points, pend.weights)
         it._spline_last = True

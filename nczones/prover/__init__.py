@@ -417,7 +417,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
         if case_ranges and result.violations:
             # a violation names every ranged parameter: those its motion does not depend on at this
             # case's nominal value (another case's path may differ)
-            nominal = {r.name: run.interpreter._written_deviation(r.name, F0) for r in case_ranges}
+            nominal = {r.name: run.interpreter.written_deviation(r.name, F0) for r in case_ranges}
             result = replace(result, violations=tuple(
                 replace(v, params=tuple(v.params) + tuple((n, x) for n, x in nominal.items()
                                                           if n not in dict(v.params)))
@@ -426,7 +426,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
         if split is not None:
             if interpretations + len(cases) + 3 <= MAX_CASES:
                 at = split[1] + next(r.centre for r in case_ranges if r.name == split[0])
-                splits.append((split[0], run.interpreter._written_deviation(split[0], split[1])))
+                splits.append((split[0], run.interpreter.written_deviation(split[0], split[1])))
                 cases[0:0] = split_box(box, split[0], at)
                 continue
             result = replace(result, reasons=result.reasons + (budget_reason(None),))

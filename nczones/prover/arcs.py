@@ -707,7 +707,7 @@ def violation(prover: Any, enc: ArcEnclosure, witness: _Mark, proved: _Mark | No
         first_exit_parameter=enc.parameter(first), first_exit_exact=False,
         depth=depth, depth_exact=False, engine="exact",
         segment_kind="helix" if g.helix else "arc", derived=seg.derived,
-        params=prover._written_params(params), zones=tuple(z.name for z in bad), note=note,
+        params=prover.written_params(params), zones=tuple(z.name for z in bad), note=note,
         on_path=exact_point,
     )
 

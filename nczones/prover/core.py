@@ -81,7 +81,7 @@ class Prover:
     """Decides segments one by one for a machine, margin and parameter ranges."""
 
     #: The screen's zone constants by (zone, scale), made when first needed (:mod:`nczones.prover.screen`).
-    _screen_constants: dict | None = None
+    screen_constants: dict | None = None
 
     def __init__(self, machine: Machine, *, margin: Fraction = F0, params: tuple[ParamRange, ...] = (),
                  engine: str = "auto", rlimit: int | None = None, limits: RunLimits | None = None):
@@ -151,7 +151,7 @@ class Prover:
                 out.append(self.pvars[name])
         return out
 
-    def _param_relevant(self, seg: Segment) -> bool:
+    def param_relevant(self, seg: Segment) -> bool:
         if not self.params:
             return False
         if any(self._devs(seg, k, w) for k in range(len(self.axes)) for w in ("start", "end")):
@@ -202,7 +202,7 @@ class Prover:
 
     # ------------------------------------------------------------------ encodings
 
-    def _margin_decls(self, names: list[str]) -> tuple[str, dict[str, str]]:
+    def margin_decls(self, names: list[str]) -> tuple[str, dict[str, str]]:
         if self.margin == 0:
             return "", {a: "0.0" for a in self.axes}
         d = q(self.margin)
@@ -221,7 +221,7 @@ class Prover:
         hi = {a: max(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
         return tuple(z for z in self.zones if not box_fits(self.allowed, lo, hi, self.margin, tool_length, (z,)))
 
-    def _violation_formula(self, pt: dict[str, str], tool_len: str, enclosure: Mapping[str, tuple[Fraction, Fraction]],
+    def violation_formula(self, pt: dict[str, str], tool_len: str, enclosure: Mapping[str, tuple[Fraction, Fraction]],
                            zones: Iterable[Zone] | None = None) -> str:
         parts = []
         for z in self.zones if zones is None else zones:
@@ -242,7 +242,7 @@ class Prover:
                     t_max: Fraction | None = None) -> tuple[str, list[str]]:
         names = ["t"]
         body = ["(declare-const t Real)", f"(assert (<= 0.0 t {q(t_max if t_max is not None else F1)}))"]
-        mdecl, evars = self._margin_decls(names)
+        mdecl, evars = self.margin_decls(names)
         body.append(mdecl)
         if with_params:
             body.append(self._param_decls())
@@ -274,10 +274,10 @@ class Prover:
             zones = self.zones
         else:  # only the zones the piece's box does not fit can be violated on it
             zones = self.relevant_zones(piece.p0, piece.p1, seg.tool_length)
-        body.append(f"(assert {self._violation_formula(pt, tl, enclosure, zones)})")
+        body.append(f"(assert {self.violation_formula(pt, tl, enclosure, zones)})")
         return "".join(body), names
 
-    def _arc_query(self, seg: Segment, g: ArcGeom, with_params: bool,
+    def arc_query(self, seg: Segment, g: ArcGeom, with_params: bool,
                    w_dir: tuple[Fraction, Fraction] | None = None) -> tuple[str, list[str]]:
         """Encoding of an arc (exact for circular arcs, over-approximation for helices/spirals).
 
@@ -325,7 +325,7 @@ class Prover:
                 body.append(f"(assert (and {half0} (>= {cross_vb} 0.0)))")
             else:
                 body.append(f"(assert (or {half0} (>= {cross_vb} 0.0)))")
-        mdecl, evars = self._margin_decls(names)
+        mdecl, evars = self.margin_decls(names)
         body.append(mdecl)
         if with_params:
             body.append(self._param_decls())
@@ -357,7 +357,7 @@ class Prover:
         if not with_params:  # only the zones the arc's box does not fit can be violated
             zones = self.relevant_zones(tuple(enclosure[a][0] for a in self.axes),
                                         tuple(enclosure[a][1] for a in self.axes), seg.tool_length)
-        body.append(f"(assert {self._violation_formula(pt, tl, enclosure, zones)})")
+        body.append(f"(assert {self.violation_formula(pt, tl, enclosure, zones)})")
         return "".join(body), names
 
     @staticmethod
@@ -384,7 +384,7 @@ class Prover:
         if self.limits is not None:
             self.limits.checkpoint()
 
-    def _unknown(self, seg: Segment, ans: SolverAnswer, what: str = "") -> Outcome:
+    def unknown_outcome(self, seg: Segment, ans: SolverAnswer, what: str = "") -> Outcome:
         """The outcome of a solver ``unknown`` (its reason says which limit stopped it)."""
         return Outcome(reason=Reason(ans.reason(what), seg.span, seg.block, ans.code),
                         engine="budget" if ans.stopped == "budget" else "unknown")
@@ -426,17 +426,17 @@ class Prover:
         if seg.kind not in _LINE_LIKE and seg.kind is not SegmentKind.ARC:
             return Outcome(reason=Reason(f"segment kind {seg.kind.name} is not handled by the prover",
                                           seg.span, seg.block), engine="unknown")
-        if self._param_relevant(seg):
-            return self._check_with_params(seg)
-        return self._check_concrete(seg, ())
+        if self.param_relevant(seg):
+            return self.check_with_params(seg)
+        return self.check_concrete(seg, ())
 
-    def _check_with_params(self, seg: Segment) -> Outcome:
+    def check_with_params(self, seg: Segment) -> Outcome:
         self.stats["z3_segments"] += 1
         queries = []
         if seg.kind is SegmentKind.ARC:
             if any(self._devs(seg, k, "start") != self._devs(seg, k, "end") for k in range(len(self.axes))):
                 return self._check_arc_varying(seg)
-            queries.append(self._arc_query(seg, arc_geom(seg), True) + (True,))
+            queries.append(self.arc_query(seg, arc_geom(seg), True) + (True,))
         else:
             dogleg_varies = (seg.kind is SegmentKind.RAPID and self.machine.rapid_mode is RapidMode.DOGLEG
                              and tuple(self._devs(seg, k, "start") for k in range(len(self.axes)))
@@ -453,10 +453,10 @@ class Prover:
             if ans.status == "unsat":
                 continue
             if ans.status == "unknown":
-                return self._unknown(seg, ans)
+                return self.unknown_outcome(seg, ans)
             values = {p.name: _clamp(ans.values.get(self.pvars[p.name], F0), p.lo, p.hi) for p in self.params}
             concrete = self.instantiate(seg, values)
-            out = self._check_concrete(concrete, tuple(values.items()))
+            out = self.check_concrete(concrete, tuple(values.items()))
             if out.violation is not None:
                 return out
             return Outcome(reason=Reason("a parameter combination may violate a zone but no exact "
@@ -478,7 +478,7 @@ class Prover:
         """
         names = ["tau"]
         body = ["(declare-const tau Real)(assert (<= 0.0 tau))"]
-        mdecl, evars = self._margin_decls(names)
+        mdecl, evars = self.margin_decls(names)
         body.append(mdecl)
         body.append(self._param_decls())
         names += [self.pvars[p.name] for p in self.params]
@@ -494,7 +494,7 @@ class Prover:
             pt[a] = add(s0, f"(ite (<= 0.0 {d}) {forward} {backward})", evars[a])
             enclosure[a] = (min(seg.start[k], seg.end[k]) - slack, max(seg.start[k], seg.end[k]) + slack)
         tl = add(q(seg.tool_length), *self._tool_dev(seg))
-        body.append(f"(assert {self._violation_formula(pt, tl, enclosure)})")
+        body.append(f"(assert {self.violation_formula(pt, tl, enclosure)})")
         return "".join(body), names
 
     def _check_arc_varying(self, seg: Segment) -> Outcome:
@@ -549,7 +549,7 @@ class Prover:
                 if ((concrete.start[ia] - c[0]) ** 2 + (concrete.start[ib] - c[1]) ** 2
                         != (concrete.end[ia] - c[0]) ** 2 + (concrete.end[ib] - c[1]) ** 2) and any(combo):
                     continue
-            out = self._check_concrete(concrete, tuple(values.items()))
+            out = self.check_concrete(concrete, tuple(values.items()))
             if out.violation is not None:
                 return out
             if out.reason is not None and first_reason is None:
@@ -617,7 +617,7 @@ class Prover:
             lo[a], hi[a] = min(lo[a], b0), max(hi[a], b1)
         return lo, hi
 
-    def _check_concrete(self, seg: Segment, params: Params) -> Outcome:
+    def check_concrete(self, seg: Segment, params: Params) -> Outcome:
         if seg.kind is SegmentKind.ARC:
             return self._check_arc(seg, params)
         pieces = line_pieces(seg, self.machine)
@@ -625,11 +625,11 @@ class Prover:
         # once the budget is spent the exact tier decides what it can, even for engine="z3"
         use_z3 = (self.engine == "z3" or not self.all_decidable) and not (
             self.all_decidable and self.limits is not None and self.limits.budget_spent())
-        if self.engine == "auto" and all(self._bbox_fits(p.p0, p.p1, seg.tool_length) for p in pieces):
+        if self.engine == "auto" and all(self.bbox_fits(p.p0, p.p1, seg.tool_length) for p in pieces):
             self.stats["screened"] += 1
             return Outcome(engine="exact")
         for piece in pieces:
-            if self.engine == "auto" and self._bbox_fits(piece.p0, piece.p1, seg.tool_length):
+            if self.engine == "auto" and self.bbox_fits(piece.p0, piece.p1, seg.tool_length):
                 continue
             if not use_z3:
                 found = self._exact_line(seg, piece)
@@ -655,11 +655,11 @@ class Prover:
             if ans.status == "unsat":
                 continue
             if ans.status == "unknown":
-                return self._unknown(seg, ans)
+                return self.unknown_outcome(seg, ans)
             return Outcome(self._line_violation(seg, piece, ans.values["t"], params, "z3"), engine="z3")
         return Outcome(engine="z3" if use_z3 else "exact")
 
-    def _bbox_fits(self, lo_pt: Sequence[Fraction], hi_pt: Sequence[Fraction], tool_length: Fraction,
+    def bbox_fits(self, lo_pt: Sequence[Fraction], hi_pt: Sequence[Fraction], tool_length: Fraction,
                    lo_given: bool = False) -> bool:
         """Tier-1 screen: does the whole axis-aligned box spanned by two points fit (with margin)?"""
         lo = {a: min(x, y) for a, x, y in zip(self.axes, lo_pt, hi_pt)}
@@ -737,10 +737,10 @@ class Prover:
             first_exit=tuple(zip(self.axes, first_piece.at(first_t))),
             first_exit_parameter=first_piece.tau(first_t), first_exit_exact=first_exact,
             depth=depth, depth_exact=depth_exact, engine=engine, segment_kind=seg.kind.name.lower(),
-            derived=seg.derived, params=self._written_params(params), zones=tuple(z.name for z in bad),
+            derived=seg.derived, params=self.written_params(params), zones=tuple(z.name for z in bad),
         )
 
-    def _written_params(self, values: Params) -> tuple[tuple[str, Fraction], ...]:
+    def written_params(self, values: Params) -> tuple[tuple[str, Fraction], ...]:
         out = []
         for name, dev in values:
             p = self.prange[name]
@@ -792,12 +792,12 @@ class Prover:
                     self.stats["arc_enclosures"] = self.stats.get("arc_enclosures", 0) + 1
                     return decided
         self.stats["z3_segments"] += 1
-        body, names = self._arc_query(seg, g, False)
+        body, names = self.arc_query(seg, g, False)
         ans = self.solver.check(body, names, precision=60, nonlinear=True)
         if ans.status == "unsat":
             return Outcome(engine="z3")
         if ans.status == "unknown":
-            return self._unknown(seg, ans, "an arc")
+            return self.unknown_outcome(seg, ans, "an arc")
         v = self._arc_witness(seg, g, ans.values, params)
         if v is None and g.centre is not None and (g.helix or not g.exact):
             # split the sweep and prove the pieces (see prover/refine.py)
@@ -817,7 +817,7 @@ class Prover:
 
     def _arc_witness(self, seg: Segment, g: ArcGeom, values: dict[str, Fraction], params: Params) -> Violation | None:
         if not g.exact or g.helix:
-            return self._arc_witness_enclosed(seg, g, values, params)
+            return self.arc_witness_enclosed(seg, g, values, params)
         c = g.centre
         assert c is not None  # exact
         u = (g.s[0] - c[0], g.s[1] - c[1])
@@ -835,10 +835,10 @@ class Prover:
             pmap = dict(zip(self.axes, coords))
             bad = self.allowed.violated_zones(pmap, seg.tool_length, self.margin)
             if bad:
-                return self._arc_violation(seg, g, pmap, bad, params, True)
+                return self.arc_violation(seg, g, pmap, bad, params, True)
         return None
 
-    def _arc_witness_enclosed(self, seg: Segment, g: ArcGeom, values: dict[str, Fraction], params: Params,
+    def arc_witness_enclosed(self, seg: Segment, g: ArcGeom, values: dict[str, Fraction], params: Params,
                               retry: bool = True) -> Violation | None:
         """Certify a witness on an irrational path with a rational box around the exact point."""
         if g.centre is None:
@@ -906,7 +906,7 @@ class Prover:
                 if z not in bad:
                     raise InternalError("certified box centre does not violate")
                 width = max(hi[a] - lo[a] for a in self.axes)
-                return self._arc_violation(seg, g, mid, bad, params, False,
+                return self.arc_violation(seg, g, mid, bad, params, False,
                                            note=f"irrational path point; reported point within "
                                                 f"{float(width):.1e} mm of it, the whole enclosure violates")
         if retry:  # the over-approximation's point was spurious: try exact directions along the arc
@@ -921,12 +921,12 @@ class Prover:
                     den = 1 + m * m
                     p2 = (cc[0] + ((1 - m * m) * u0[0] + 2 * m * perp[0]) / den,
                           cc[1] + ((1 - m * m) * u0[1] + 2 * m * perp[1]) / den)
-                    v = self._arc_witness_enclosed(seg, g, {"x": p2[0], "y": p2[1]}, params, False)
+                    v = self.arc_witness_enclosed(seg, g, {"x": p2[0], "y": p2[1]}, params, False)
                     if v is not None:
                         return v
         return None
 
-    def _arc_violation(self, seg: Segment, g: ArcGeom, pmap: dict[str, Fraction], bad: Sequence[Zone],
+    def arc_violation(self, seg: Segment, g: ArcGeom, pmap: dict[str, Fraction], bad: Sequence[Zone],
                        params: Params, exact_point: bool, note: str = "") -> Violation:
         zone = bad[0]
         outside = ex.outside_point(self.allowed, zone, pmap, self.margin, seg.tool_length)
@@ -971,7 +971,7 @@ class Prover:
             first_exit=tuple((a, first_pt[a]) for a in self.axes), first_exit_parameter=first_param,
             first_exit_exact=False, depth=depth, depth_exact=False, engine="z3",
             segment_kind="arc" if not g.helix else "helix", derived=seg.derived,
-            params=self._written_params(params), zones=tuple(z.name for z in bad), note=note,
+            params=self.written_params(params), zones=tuple(z.name for z in bad), note=note,
             on_path=exact_point,
         )
 
@@ -1011,7 +1011,7 @@ class Prover:
             if dirv == u:
                 coords = list(seg.start)
                 return bool(self.allowed.violated_zones(dict(zip(self.axes, coords)), seg.tool_length, self.margin))
-            body, names = self._arc_query(seg, g, False, w_dir=dirv)
+            body, names = self.arc_query(seg, g, False, w_dir=dirv)
             return self.solver.check(body, [], nonlinear=True).status == "sat"
 
         # find the quarter containing the first violation

@@ -68,13 +68,13 @@ def check_cylindrical(prover: Any, seg: Segment) -> Any:
     from dataclasses import replace
 
     if seg.kind is not SegmentKind.DEVELOPED_ARC:
-        out = prover._check_with_params(seg) if prover._param_relevant(seg) else prover._check_concrete(seg, ())
+        out = prover.check_with_params(seg) if prover.param_relevant(seg) else prover.check_concrete(seg, ())
         if out.violation is not None:
             note = developed_note(seg, dict(out.violation.path_point))
             v = out.violation
             out.violation = replace(v, note=(v.note + "; " if v.note else "") + note)
         return out
-    if prover._param_relevant(seg):
+    if prover.param_relevant(seg):
         return Outcome(reason=Reason("parameter ranges are not supported on arcs in cylindrical interpolation "
                                       "(G07.1)", seg.span, seg.block), engine="unknown")
     try:

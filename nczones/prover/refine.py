@@ -2,7 +2,7 @@
 
 A helix (a circular arc in its plane with other axes moving linearly in the
 swept angle) and a spiral arc (radius moving linearly in the swept angle) are
-not polynomial, so :meth:`Prover._arc_query` proves a *containing* set: the
+not polynomial, so :meth:`Prover.arc_query` proves a *containing* set: the
 planar arc (or annular sector) times the whole range of every moving axis.
 When that enclosure admits a violation the exact path may not reach, this
 module splits the sweep into sub-arcs, proves each sub-arc's (much tighter)
@@ -36,7 +36,7 @@ Hence the piece's encoded set contains the exact sub-path, and ``unsat``
 proves it.  The pieces' sectors cover the whole sweep (each split inserts a
 direction strictly inside its parent's sector), so all pieces proved means
 the segment is proved.  A violation is only reported after
-:meth:`Prover._arc_witness_enclosed` certified it on the exact path (a
+:meth:`Prover.arc_witness_enclosed` certified it on the exact path (a
 rational box around an exact path point that certainly violates).
 """
 
@@ -121,7 +121,7 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
         pmap = dict(zip(prover.axes, ends))
         bad = prover.allowed.violated_zones(pmap, seg.tool_length, prover.margin)
         if bad:
-            return Outcome(prover._arc_violation(seg, g, pmap, bad, params, True), engine="exact")
+            return Outcome(prover.arc_violation(seg, g, pmap, bad, params, True), engine="exact")
     c = g.centre
     assert c is not None  # refinement splits arcs with a rational centre (helix, spiral)
     u = (g.s[0] - c[0], g.s[1] - c[1])
@@ -200,16 +200,16 @@ def refine_arc(prover: Any, seg: Segment, g: ArcGeom, params: Any) -> Any:
                                           "nor confirmed violated", seg.span, seg.block), engine="unknown")
         pg = piece_geom(a, b)
         prover.stats["refined_pieces"] = prover.stats.get("refined_pieces", 0) + 1
-        body, names = prover._arc_query(seg, pg, False)
+        body, names = prover.arc_query(seg, pg, False)
         ans = prover.solver.check(body, names, precision=60, nonlinear=True)
         if ans.status == "unsat":
             continue
         if ans.status == "unknown":
-            return prover._unknown(seg, ans, "a helix/spiral piece")
-        v = prover._arc_witness_enclosed(seg, g, ans.values, params, retry=False)
+            return prover.unknown_outcome(seg, ans, "a helix/spiral piece")
+        v = prover.arc_witness_enclosed(seg, g, ans.values, params, retry=False)
         mid = split(a, b)
         if v is None and mid is not None:
-            v = prover._arc_witness_enclosed(seg, g, {"x": c[0] + mid[0][0], "y": c[1] + mid[0][1]}, params,
+            v = prover.arc_witness_enclosed(seg, g, {"x": c[0] + mid[0][0], "y": c[1] + mid[0][1]}, params,
                                              retry=False)
         if v is not None:
             return Outcome(v, engine="z3")
@@ -238,7 +238,7 @@ def _scan_piece(prover: Any, seg: Segment, g: ArcGeom, da: tuple[Fraction, Fract
     """A certified violation at one of :data:`SCAN_DIRECTIONS` rational directions spread over the
     sector from ``da`` to ``db`` (tangent half-angle steps), or None.
 
-    Only a certification on the exact path (:meth:`Prover._arc_witness_enclosed`) is reported, so
+    Only a certification on the exact path (:meth:`Prover.arc_witness_enclosed`) is reported, so
     this can find a witness the pieces' enclosures were too coarse to confirm (a spiral that leaves
     a face by far less than the enclosure's width), never invent one.
     """
@@ -248,7 +248,7 @@ def _scan_piece(prover: Any, seg: Segment, g: ArcGeom, da: tuple[Fraction, Fract
         return None
     for i in range(1, SCAN_DIRECTIONS):
         d = _rot(da, round_down(m_end * i / SCAN_DIRECTIONS), g.ccw)
-        v = prover._arc_witness_enclosed(seg, g, {"x": c[0] + d[0], "y": c[1] + d[1]}, params, retry=False)
+        v = prover.arc_witness_enclosed(seg, g, {"x": c[0] + d[0], "y": c[1] + d[1]}, params, retry=False)
         if v is not None:
             return v
     return None

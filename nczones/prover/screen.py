@@ -192,10 +192,10 @@ class _ZoneConstants:
 
 
 def _constants(prover: Prover, z: SteppedZone, s: int) -> _ZoneConstants:
-    cache = prover._screen_constants
+    cache = prover.screen_constants
     if cache is None:
         cache = {}
-        prover._screen_constants = cache
+        prover.screen_constants = cache
     key = (id(z), s)
     got = cache.get(key)
     if got is None:

@@ -48,7 +48,7 @@ def _hull_query(prover: Any, seg: Segment, pts: Any) -> tuple[str, list[str]]:
     names = [f"l{j}" for j in range(len(pts))]
     body = ["".join(f"(declare-const {n} Real)(assert (>= {n} 0.0))" for n in names),
             f"(assert (= {add(*names)} 1.0))"]
-    mdecl, evars = prover._margin_decls(names)
+    mdecl, evars = prover.margin_decls(names)
     body.append(mdecl)
     pt, enclosure = {}, {}
     for k, a in enumerate(prover.axes):
@@ -62,7 +62,7 @@ def _hull_query(prover: Any, seg: Segment, pts: Any) -> tuple[str, list[str]]:
         pt[a] = add(term, evars[a])
     zones = prover.relevant_zones(tuple(enclosure[a][0] for a in prover.axes),
                                   tuple(enclosure[a][1] for a in prover.axes), seg.tool_length)
-    body.append(f"(assert {prover._violation_formula(pt, q(seg.tool_length), enclosure, zones)})")
+    body.append(f"(assert {prover.violation_formula(pt, q(seg.tool_length), enclosure, zones)})")
     return "".join(body), names
 
 
@@ -98,7 +98,7 @@ def check_spline(prover: Any, seg: Segment) -> Any:
     curve points and the refinement; only those count against
     :data:`SPLINE_PIECE_BUDGET`.
     """
-    if prover._param_relevant(seg):
+    if prover.param_relevant(seg):
         return Outcome(reason=Reason("parameter ranges are not supported on spline (NURBS) motion",
                                       seg.span, seg.block), engine="unknown")
     curve = spline_curve(seg)
@@ -137,7 +137,7 @@ def check_spline(prover: Any, seg: Segment) -> Any:
         if ans.status == "unsat":
             continue
         if ans.status == "unknown":
-            return prover._unknown(seg, ans, "a spline piece")
+            return prover.unknown_outcome(seg, ans, "a spline piece")
         hint = [ans.values.get(n, Fraction(0)) for n in names[: len(pts)]]
         found = _violating_point(prover, seg, c, hint)
         if found is not None:
@@ -157,7 +157,7 @@ def _hull_fits(prover: Any, seg: Segment, pts: Any) -> bool:
     n = len(prover.axes)
     lo_pt = tuple(min(q[k] for q in pts) for k in range(n))
     hi_pt = tuple(max(q[k] for q in pts) for k in range(n))
-    return bool(prover._bbox_fits(lo_pt, hi_pt, seg.tool_length))
+    return bool(prover.bbox_fits(lo_pt, hi_pt, seg.tool_length))
 
 
 def _violation(prover: Any, seg: Segment, curve: Nurbs, found: Any) -> Violation:

@@ -22,14 +22,14 @@ def run_ranges_property():
 
 
 def test_work_offsets_without_their_dependency_are_caught(monkeypatch):
-    original = Interpreter._recompute_offsets
+    original = Interpreter.recompute_offsets
 
     def broken(self):
         original(self)
         if self.track:  # the G54..G59.3 sources never reach a coordinate
             self.dep_off = [{k: c for k, c in d.items() if not k.startswith("G5")} for d in self.dep_off]
 
-    monkeypatch.setattr(Interpreter, "_recompute_offsets", broken)
+    monkeypatch.setattr(Interpreter, "recompute_offsets", broken)
     with pytest.raises(MetamorphicViolation):
         run_ranges_property()
 
@@ -40,7 +40,7 @@ def test_tool_lengths_without_their_dependency_are_caught(monkeypatch):
     def broken(self, g, words):
         original(self, g, words)
         self.dep_tlo = {}  # H<n> reaches neither the tool axis nor the tip zones
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     monkeypatch.setattr(Interpreter, "_tool_length", broken)
     with pytest.raises(MetamorphicViolation):

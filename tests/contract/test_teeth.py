@@ -54,7 +54,7 @@ def test_arcs_checked_only_at_their_end_points_are_caught(monkeypatch):
     def end_points_only(self, seg, params):
         for p in (seg.start, seg.end):
             point = Segment(SegmentKind.LINE, p, p, seg.axes, seg.block, seg.span, seg.tool_length)
-            out = self._check_concrete(point, params)
+            out = self.check_concrete(point, params)
             if out.violation is not None or out.reason is not None:
                 return out
         return core.Outcome(engine="exact")

@@ -97,7 +97,7 @@ def test_steep_helix_one_pulse_per_axis_per_step_and_within_one_pulse(cw, plane,
     plans = []
     for engine in ("vector", "reference"):
         ctl = Controller(machine(), start=seg.start, settings=Settings(engine=engine))
-        plans.append(ctl._plan(seg))
+        plans.append(ctl.plan(seg))
     pos, ref = plans[0].positions, plans[1].positions
     assert np.array_equal(pos, ref)  # both engines interleave the same way
     p0 = np.array(plans[0].p0)

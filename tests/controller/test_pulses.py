@@ -21,7 +21,7 @@ U = F(1, 1000)
 
 def _plan(ctl, seg):
     ctl.prog[:] = [round_pulse(v, u) for v, u in zip(seg.start, ctl.pulse)]
-    return ctl._plan(seg)
+    return ctl.plan(seg)
 
 
 @FAST

@@ -34,7 +34,7 @@ def _key(s):
 
 def _state(run):
     it = run.interpreter
-    return (tuple(it.pos), it.motion, it.cycle_r, it.cycle_cc, it.cycle_p, it._last_cycle, it._cycle_il,
+    return (tuple(it.pos), it.motion, it.cycle_r, it.cycle_cc, it.cycle_p, it.last_cycle, it.cycle_il,
             it.absolute, it.inch, it.feed, it.blocks, it.segment_count, dict(it.kind_counts), dict(it.assumed),
             [str(u) for u in run.unsupported])
 

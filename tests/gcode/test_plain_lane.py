@@ -148,7 +148,7 @@ def test_the_lane_takes_plain_moves_and_only_them(monkeypatch):
     taken = []
     original = Interpreter._lean_move
     monkeypatch.setattr(Interpreter, "_lean_move", lambda self, axis_at, values: (
-        taken.append(self._span.line), original(self, axis_at, values))[1])
+        taken.append(self.span.line), original(self, axis_at, values))[1])
     text = ("G21 G90 G1 X1 F100\nX2 S3 M3\nG0 Y1\nG91 X1\nX1 (note)\nG2 X1 Y1 I1\nG1 X1 M6\n"
             "N8 G1 X3 F50 S1 M8\nM2\n")
     assert _result(text) == _general(text)

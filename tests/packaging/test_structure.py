@@ -2,8 +2,9 @@
 
 ``lint-imports`` (``make lint``, contracts in pyproject.toml) keeps the layers and the independence of
 the prover and the controller; these tests keep what it does not see: a ``_private`` name imported from
-another file (or read from an imported module, ``module._name``), and an import loop among the modules
-at run time (imports under ``TYPE_CHECKING`` do not run).
+another file (or read from an imported module, ``module._name``), a private member of another file's
+class reached through an object (``prover._bbox_fits``), and an import loop among the modules at run
+time (imports under ``TYPE_CHECKING`` do not run).
 """
 
 from __future__ import annotations
@@ -74,6 +75,56 @@ def private_names_across_files(package: Path = PACKAGE) -> list[str]:
     return found
 
 
+def _private_names_defined(tree: ast.Module) -> set[str]:
+    """The private names a file defines: functions, classes, methods, class attributes and the attributes
+    its methods set on ``self``/``cls``."""
+    names: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            names.add(node.name)
+            if isinstance(node, ast.ClassDef):
+                for stmt in node.body:
+                    targets = (stmt.targets if isinstance(stmt, ast.Assign)
+                               else [stmt.target] if isinstance(stmt, ast.AnnAssign) else [])
+                    names.update(n.id for target in targets for n in ast.walk(target) if isinstance(n, ast.Name))
+        elif (isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store)
+              and isinstance(node.value, ast.Name) and node.value.id in ("self", "cls")):
+            names.add(node.attr)
+    return {n for n in names if _private(n)}
+
+
+def _own_object(node: ast.expr) -> bool:
+    """``self``, ``cls`` or ``super()``: a class reaching its own (or an inherited) member."""
+    return ((isinstance(node, ast.Name) and node.id in ("self", "cls"))
+            or (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "super"))
+
+
+def private_members_across_files(package: Path = PACKAGE) -> list[str]:
+    """``file:line: expr`` for every ``obj._name`` that reaches into another file's private member.
+
+    ``obj`` is anything but ``self``, ``cls`` or ``super()``, and ``_name`` is defined (as a function,
+    method, class, class attribute or attribute set on ``self``) in another file of the package and not in
+    this one (a name both define is taken as this file's own). Private attributes of foreign classes the
+    package does not define (``Fraction._numerator``) are not the package's names and are not reported.
+    """
+    modules = _modules(package)
+    trees = {m: ast.parse(path.read_text(encoding="utf-8")) for m, path in modules.items()}
+    defined = {m: _private_names_defined(tree) for m, tree in trees.items()}
+    found = []
+    for module, tree in trees.items():
+        hits = []
+        for node in ast.walk(tree):
+            if not (isinstance(node, ast.Attribute) and _private(node.attr)) or _own_object(node.value):
+                continue
+            if node.attr in defined[module]:
+                continue
+            owners = sorted(m for m, names in defined.items() if m != module and node.attr in names)
+            if owners:
+                hits.append((node.lineno, node.col_offset, f"{ast.unparse(node)} of {', '.join(owners)}"))
+        found += [f"{modules[module].relative_to(package.parent)}:{line}: {what}" for line, _, what in sorted(hits)]
+    return found
+
+
 def runtime_import_loops(package: Path = PACKAGE) -> list[list[str]]:
     """Cycles among the package's modules by the imports that run (nested imports included)."""
     modules = _modules(package)
@@ -117,6 +168,12 @@ def test_no_private_name_is_imported_from_another_file():
     assert private_names_across_files() == []
 
 
+def test_no_private_member_is_reached_through_an_object_from_another_file():
+    """``prover.bbox_fits(...)`` from a plug-in, not ``prover._bbox_fits(...)``: a member another file uses
+    is public in its class."""
+    assert private_members_across_files() == []
+
+
 def _plant(tmp_path: Path, files: dict[str, str]) -> Path:
     fake = tmp_path / "nczones"
     for name, text in {"__init__.py": "", "prover/__init__.py": "", **files}.items():
@@ -138,6 +195,43 @@ def test_the_scans_are_not_blind(tmp_path):
     found = private_names_across_files(fake)
     assert [f.split(": ", 1)[1] for f in found] == ["_helper from nczones.prover.a", "a._helper of nczones.prover.a"]
     assert runtime_import_loops(fake) == [["nczones.prover.a", "nczones.prover.c", "nczones.prover.a"]]
+
+
+def test_the_member_scan_is_not_blind(tmp_path):
+    """A private method, a private attribute set in ``__init__`` and a private class attribute reached
+    through an object from another file are reported; ``self``/``super()`` calls, a file's own private
+    members and a foreign class's private attribute are not."""
+    fake = _plant(tmp_path, {
+        "prover/core.py": (
+            "class Prover:\n"
+            "    _cache: dict = {}\n"
+            "\n"
+            "    def __init__(self):\n"
+            "        self._budget = 3\n"
+            "\n"
+            "    def _bbox_fits(self, box):\n"
+            "        return self._budget > 0\n"),
+        "prover/spline.py": (
+            "from fractions import Fraction\n"
+            "from .core import Prover\n"
+            "\n"
+            "\n"
+            "class Spline(Prover):\n"
+            "    def _own(self):\n"
+            "        return self._bbox_fits(None) and super()._bbox_fits(None)\n"
+            "\n"
+            "\n"
+            "def check(prover, other):\n"
+            "    q = Fraction(1, 3)\n"
+            "    other._own()\n"
+            "    q._numerator\n"
+            "    return prover._bbox_fits(None) and prover._budget and Prover._cache\n"),
+    })
+    found = private_members_across_files(fake)
+    assert [f.split(": ", 1)[1] for f in found] == [
+        "prover._bbox_fits of nczones.prover.core", "prover._budget of nczones.prover.core",
+        "Prover._cache of nczones.prover.core"]
+    assert all(f.startswith("nczones/prover/spline.py:14") for f in found)
 
 
 def test_no_import_loop_at_run_time():

@@ -53,7 +53,7 @@ def hard_program(repeats: int = 1, then: str = "") -> str:
 
 def hard_query(prover: Prover):
     seg = hard_segment()
-    return prover._arc_query(seg, arc_geom(seg), False)
+    return prover.arc_query(seg, arc_geom(seg), False)
 
 
 def test_a_query_that_cannot_finish_ends_unknown_within_its_time_limit():

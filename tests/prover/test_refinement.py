@@ -54,7 +54,7 @@ def test_safe_helix_near_the_step_is_proved_by_splitting():
     seg = helix((-10, 0, 10), (10, 0, 0), True)
     p = Prover(m)
     g = arc_geom(seg)
-    body, names = p._arc_query(seg, g, False)
+    body, names = p.arc_query(seg, g, False)
     ans = p.solver.check(body, names, precision=60)
     assert ans.status == "sat"  # the old single-enclosure proof fails ...
     assert p._arc_witness(seg, g, ans.values, ()) is None  # ... and finds no real violation

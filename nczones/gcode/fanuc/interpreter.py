@@ -215,15 +215,15 @@ class FanucInterpreter(Interpreter):
         self.clock = {3001: (0.0, _ZERO), 3002: (0.0, _ZERO)}
         self.last: dict[str, Fraction] = {}  # the last D, M, N words, for #4107 ...
         self._harmless_m = HARMLESS_M | machine.fanuc.harmless_m
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     # ------------------------------------------------------------------ offsets
-    def _recompute_offsets(self) -> None:
+    def recompute_offsets(self) -> None:
         g5 = self.g5x[self.wcs]
         ext = self.g5x.get("EXT")
         g52 = getattr(self, "g52", None)
         if ext is None or g52 is None:  # during Interpreter.__init__
-            return super()._recompute_offsets()
+            return super().recompute_offsets()
         off = [ext[i] + g5[i] + g52[i] + self.g92[i] for i in range(self.naxes)]
         if self.tool_axis is not None:
             off[self.tool_axis] += self.tlo
@@ -274,26 +274,26 @@ class FanucInterpreter(Interpreter):
             if g is None:
                 hint = "; valid in the linuxcnc dialect: set dialect = \"linuxcnc\" in [machine]" \
                     if k in LINUXCNC_ONLY_G else ""
-                raise self._error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}): not a "
+                raise self.error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}): not a "
                                   f"Fanuc mill G code; see specs/fanuc.md{hint}", w)
             if g == 0 and 0 in groups:
-                raise self._error("GC201", f"{gname(groups[0][0])} and {gname(k)} are both one-shot (group 00) "
+                raise self.error("GC201", f"{gname(groups[0][0])} and {gname(k)} are both one-shot (group 00) "
                                   "codes; write them in separate blocks", w)
             groups[g] = (k, w)
         if len(mcodes) > 3:
-            raise self._error("GC206", f"{len(mcodes)} M words in one block; at most 3 are allowed", mcodes[3][1])
+            raise self.error("GC206", f"{len(mcodes)} M words in one block; at most 3 are allowed", mcodes[3][1])
         g0 = groups.get(0)
         g1 = groups.get(1)
         g9 = groups.get(9)
         if g1 and g9 and g9[0] != 800:
-            self._unknown(f"{gname(g1[0])} {gname(g9[0])}", f"{gname(g1[0])} and the canned cycle "
+            self.unknown(f"{gname(g1[0])} {gname(g9[0])}", f"{gname(g1[0])} and the canned cycle "
                           f"{gname(g9[0])} in one block: which one the control runs depends on the model", g9[1])
         for k, w in gcodes:
             if k in UNKNOWN_G:
-                self._unknown(gname(k), UNKNOWN_G[k], w)
+                self.unknown(gname(k), UNKNOWN_G[k], w)
         for k, w in mcodes:
             if k not in self._harmless_m and k not in (2, 30, 6):
-                self._unknown(f"M{k}", f"M{k} is not a code nczones models (machine M codes may move anything; "
+                self.unknown(f"M{k}", f"M{k} is not a code nczones models (machine M codes may move anything; "
                               "list the harmless ones in [fanuc] harmless_m)", w)
         mset = {k for k, _ in mcodes}
         # ---- feed, spindle, tool
@@ -303,12 +303,12 @@ class FanucInterpreter(Interpreter):
         if "F" in words:
             f = words["F"].value
             if f < 0:
-                raise self._error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
+                raise self.error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
             self.feed = f
         if "T" in words:
             t = words["T"].value
             if t.denominator != 1 or t < 0:
-                raise self._error("GC209", f"tool number {words['T'].text} must be a non-negative integer", words["T"])
+                raise self.error("GC209", f"tool number {words['T'].text} must be a non-negative integer", words["T"])
             self.tool_selected = int(t)
         if 6 in mset:
             self.tool_in_spindle = self.tool_selected
@@ -345,13 +345,13 @@ class FanucInterpreter(Interpreter):
         # ---- work coordinate system (group 14)
         if 14 in groups:
             if self.prog is not None:
-                self._unknown(gname(groups[14][0]), "changing the workpiece coordinate system while a coordinate "
+                self.unknown(gname(groups[14][0]), "changing the workpiece coordinate system while a coordinate "
                               "transform (G68, G51, G51.1, G16) is active is not modelled", groups[14][1])
             self._select_wcs(groups[14], words)
         # ---- one-shot codes that use the axis words
         uses_axes = transform_axes
         if g0 is not None and self.prog is not None and g0[0] in (100, 270, 280, 290, 300, 520, 530, 920, 921):
-            self._unknown(gname(g0[0]), f"{gname(g0[0])} while a coordinate transform (G68, G51, G51.1, G16) is "
+            self.unknown(gname(g0[0]), f"{gname(g0[0])} while a coordinate transform (G68, G51, G51.1, G16) is "
                           "active is not modelled", g0[1])
         if g0 is not None:
             k = g0[0]
@@ -372,13 +372,13 @@ class FanucInterpreter(Interpreter):
                 self._fanuc_g53(axis_words, g0[1])
             elif k == 920:
                 if self.g52 != [_ZERO] * self.naxes:
-                    self._unknown("G92", "G92 while a local coordinate system (G52) is set: how the two combine "
+                    self.unknown("G92", "G92 while a local coordinate system (G52) is set: how the two combine "
                                   "depends on the control", g0[1])
                 self._g92(axis_words, g0[1])
             elif k == 921:
                 self.g92 = [_ZERO] * self.naxes
                 self.dep_g92 = [{} for _ in range(self.naxes)]
-                self._recompute_offsets()
+                self.recompute_offsets()
         # ---- group 09 and 01
         if g9 is not None:
             k = g9[0]
@@ -396,7 +396,7 @@ class FanucInterpreter(Interpreter):
                 self._cancel_cycle()
         if self.after_home and self.tool_axis is not None and any(i == self.tool_axis for i, _ in axis_words) \
                 and not (g0 and g0[0] in (280, 300, 530)) and 8 not in groups:
-            self._unknown("G28", "the tool axis moves after G28/G30 returned it with a tool length offset active: "
+            self.unknown("G28", "the tool axis moves after G28/G30 returned it with a tool length offset active: "
                           "whether the offset is still applied depends on the control's parameters", axis_words[0][1])
         if not uses_axes:
             moving = bool(axis_words) or (g1 is not None and g1[0] in (20, 30))
@@ -414,8 +414,8 @@ class FanucInterpreter(Interpreter):
                     deps[self.tool_axis] = dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
                 kind = SegmentKind.RAPID if self.motion == 0 or self.cycle is not None else SegmentKind.LINE
                 if kind is SegmentKind.LINE:
-                    self._check_feed()
-                self._emit(kind, end, feed=kind is SegmentKind.LINE, derived="tool length offset", end_deps=deps)
+                    self.check_feed()
+                self.emit(kind, end, feed=kind is SegmentKind.LINE, derived="tool length offset", end_deps=deps)
             self._tlo_shift = None
         if 2 in mset or 30 in mset:
             raise StopProgram
@@ -438,16 +438,16 @@ class FanucInterpreter(Interpreter):
             if h is None:
                 reg = self.tlo_register
                 if reg is None:
-                    raise self._error("GC208", f"{gname(k)} needs an H word with the offset number the first time", w)
+                    raise self.error("GC208", f"{gname(k)} needs an H word with the offset number the first time", w)
             else:
                 if h.value.denominator != 1 or h.value < 0:
-                    raise self._error("GC209", f"H word {h.text} must be a non-negative integer offset number", h)
+                    raise self.error("GC209", f"H word {h.text} must be a non-negative integer offset number", h)
                 reg = int(h.value)
             sign = 1 if k == 430 else -1
             if reg != 0 and reg not in self.h_geometry:
                 where = h if h is not None else w
                 known = ", ".join(f"H{r}" for r in sorted(self.h_geometry)) or "none"
-                raise self._error("GC310", f"tool length offset H{reg} is not in the machine file's [tool_lengths] "
+                raise self.error("GC310", f"tool length offset H{reg} is not in the machine file's [tool_lengths] "
                                   f"(known: {known})", where)
             length = self.h_geometry.get(reg, _ZERO) + self.h_wear.get(reg, _ZERO)
             self.tlo = sign * length
@@ -456,9 +456,9 @@ class FanucInterpreter(Interpreter):
             self.tool_register = reg
             self.dep_tlo = {f"H{reg}": sign} if reg != 0 else {}
             if sign < 0 and self.track and reg != 0:
-                self._unknown("G44", "parameter ranges on a tool length used with G44 (subtracted) are not "
+                self.unknown("G44", "parameter ranges on a tool length used with G44 (subtracted) are not "
                               "modelled", w)
-        self._recompute_offsets()
+        self.recompute_offsets()
         if self.tool_axis is not None and self.tlo != old:
             if self.settings.tool_length_motion == "move":
                 self._tlo_shift = self.tlo - old
@@ -472,33 +472,33 @@ class FanucInterpreter(Interpreter):
         if k == 541:
             p = words.get("P")
             if p is None or p.value.denominator != 1 or not 1 <= p.value <= 48:
-                raise self._error("GC209", "G54.1 needs P1 to P48 (the additional workpiece coordinate system)",
+                raise self.error("GC209", "G54.1 needs P1 to P48 (the additional workpiece coordinate system)",
                                   p or w)
             self.wcs = f"G54.1P{int(p.value)}"
         else:
             self.wcs = {540: "G54", 550: "G55", 560: "G56", 570: "G57", 580: "G58", 590: "G59"}[k]
         self.unset.discard("offset")
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     def _dwell(self, words: dict[str, Word], w: Word) -> None:
         """G04 X (seconds), U (seconds), P (milliseconds); none: an exact stop (no dwell)."""
         given = [x for x in (words.get("X"), words.get("U"), words.get("P")) if x is not None]
         if len(given) > 1:
-            raise self._error("GC204", "G04 takes one of X, U (seconds) and P (milliseconds)", given[1])
+            raise self.error("GC204", "G04 takes one of X, U (seconds) and P (milliseconds)", given[1])
         seconds = _ZERO
         if given:
             x = given[0]
             if x.value < 0:
-                raise self._error("GC209", f"dwell time {x.text} is negative", x)
+                raise self.error("GC209", f"dwell time {x.text} is negative", x)
             if x.letter == "P":
                 seconds = dwell_p_seconds(x.value)
             else:
                 seconds = x.value
-        self._emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
+        self.emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
 
     def _target(self, axis_words: AxisWords, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
         """The machine target of the block's axis words, with a pending tool length change on the tool axis."""
-        end, deps = self._program_target(axis_words, False, absolute)
+        end, deps = self.program_target(axis_words, False, absolute)
         shift = self._tlo_shift
         if shift is not None and self.tool_axis is not None and not any(i == self.tool_axis for i, _ in axis_words):
             end[self.tool_axis] = qadd(end[self.tool_axis], shift)
@@ -514,37 +514,37 @@ class FanucInterpreter(Interpreter):
         if self._first_after_transform:
             self._first_after_transform = False
             if not self.absolute:
-                self._unknown(gname(self.motion or 0), "the first move after a coordinate transform is cancelled must be "
+                self.unknown(gname(self.motion or 0), "the first move after a coordinate transform is cancelled must be "
                               "absolute (G90): the manuals give an incremental one no meaning")
                 return
         motion = self.motion
         if motion in (0, 10):
             if not axis_words and self._tlo_shift is None:
                 return
-            self._note_assumed(("units", "distance", "offset"))
+            self.note_assumed(("units", "distance", "offset"))
             end, deps = self._target(axis_words)
             if motion == 0:
-                self._emit(SegmentKind.RAPID, end, end_deps=deps)
+                self.emit(SegmentKind.RAPID, end, end_deps=deps)
             else:
-                self._check_feed()
-                self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+                self.check_feed()
+                self.emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         elif motion in (20, 30):
             if self._tlo_shift is not None:
-                self._unknown(gname(motion), "a tool length change in an arc block: the tool axis moves along "
+                self.unknown(gname(motion), "a tool length change in an arc block: the tool axis moves along "
                               "the arc in a way the manuals do not state")
                 return
             rw = words.get("R")
             if rw is not None and not any(i in self._plane_indices() for i, _ in axis_words):
                 return  # R arc to the point it starts from: a 0 degree arc, no motion (0i/30i)
-            self._arc(block, axis_words, words, motion == 20, False)
+            self.arc(block, axis_words, words, motion == 20, False)
         elif motion == 330:
             kw = words.get("F")
             if kw is None and self.feed == 0:
-                raise self._error("GC208", "G33 needs F (the lead)")
+                raise self.error("GC208", "G33 needs F (the lead)")
             end, deps = self._target(axis_words)
-            self._emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
+            self.emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
         else:
-            self._unknown(gname(motion or 0), f"{gname(motion or 0)} is not modelled")
+            self.unknown(gname(motion or 0), f"{gname(motion or 0)} is not modelled")
 
     def _plane_indices(self) -> tuple:
         a, b, _n = PLANE_AXES[self.plane]
@@ -554,45 +554,45 @@ class FanucInterpreter(Interpreter):
         if not axis_words:
             return
         end, deps = self._target(axis_words)
-        self._emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
+        self.emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
 
     def _fanuc_g53(self, axis_words: AxisWords, w: Word) -> None:
         """G53: a rapid to machine coordinates (the tool axis' offsets do not apply to it)."""
         if not self.absolute:
-            self._unknown("G53", "G53 in incremental mode (G91): the manuals give it no meaning", w)
+            self.unknown("G53", "G53 in incremental mode (G91): the manuals give it no meaning", w)
             return
         if not axis_words:
             return
-        self._note_assumed(("units",))
-        end, deps = self._program_target(axis_words, True)
+        self.note_assumed(("units",))
+        end, deps = self.program_target(axis_words, True)
         if self._tlo_shift is not None and self.tool_axis is not None and not any(
                 i == self.tool_axis for i, _ in axis_words):
             end[self.tool_axis] = qadd(end[self.tool_axis], self._tlo_shift)
         self._tlo_shift = None
         for i, _w in axis_words:
             self.after_home.discard(i)
-        self._emit(SegmentKind.RAPID, end, derived="G53", end_deps=deps)
+        self.emit(SegmentKind.RAPID, end, derived="G53", end_deps=deps)
 
     def _fanuc_home(self, k: int, axis_words: AxisWords, words: Words, w: Word) -> None:
         """G28 / G30 Pn: rapid to the intermediate point, then the named axes to the reference position."""
         if not axis_words:
-            self._unknown(gname(k), f"{gname(k)} without axis words: Fanuc moves no axis, Haas returns every "
+            self.unknown(gname(k), f"{gname(k)} without axis words: Fanuc moves no axis, Haas returns every "
                           "axis; nczones does not know which this machine does", w)
             return
         n = 1
         if k == 300:
             pw = words.get("P")
             if pw is not None and pw.value not in (2, 3, 4):
-                raise self._error("GC209", f"G30 {pw.text}: P is 2, 3 or 4 (the reference position number)", pw)
+                raise self.error("GC209", f"G30 {pw.text}: P is 2, 3 or 4 (the reference position number)", pw)
             n = 2 if pw is None else int(pw.value)
         home = self.references.get(n)
         if home is None:
-            self._unknown(f"G30 P{n}", f"the {n}{'nd' if n == 2 else 'rd' if n == 3 else 'th'} reference position "
+            self.unknown(f"G30 P{n}", f"the {n}{'nd' if n == 2 else 'rd' if n == 3 else 'th'} reference position "
                           f"is not in the machine file ([machine.reference_{n}])", w)
             return
-        self._note_assumed(("units", "distance", "offset"))
+        self.note_assumed(("units", "distance", "offset"))
         inter, deps = self._target(axis_words)
-        self._emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
+        self.emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
         self.intermediate = list(inter)
         end = list(self.pos)
         hdeps = [dict(d) for d in self.dep_pos] if self.track else None
@@ -602,46 +602,46 @@ class FanucInterpreter(Interpreter):
                 hdeps[i] = {}
             if i == self.tool_axis and self.tlo:
                 self.after_home.add(i)
-        self._emit(SegmentKind.RAPID, end, derived=f"{gname(k)} reference {n}", end_deps=hdeps)
+        self.emit(SegmentKind.RAPID, end, derived=f"{gname(k)} reference {n}", end_deps=hdeps)
 
     def _g29(self, axis_words: AxisWords, w: Word) -> None:
         """G29: from the reference position via G28's intermediate point to the target."""
         if self.intermediate is None:
-            self._unknown("G29", "G29 without an earlier G28/G30 intermediate point", w)
+            self.unknown("G29", "G29 without an earlier G28/G30 intermediate point", w)
             return
         if not axis_words:
             return
         mid = list(self.pos)
         for i, _aw in axis_words:
             mid[i] = self.intermediate[i]
-        self._emit(SegmentKind.RAPID, mid, derived="G29 intermediate")
+        self.emit(SegmentKind.RAPID, mid, derived="G29 intermediate")
         end, deps = self._target(axis_words)
-        self._emit(SegmentKind.RAPID, end, derived="G29", end_deps=deps)
+        self.emit(SegmentKind.RAPID, end, derived="G29", end_deps=deps)
 
     def _fanuc_g52(self, axis_words: AxisWords, w: Word) -> None:
         """G52: the local coordinate system's origin in the workpiece system (G52 IP0 cancels it)."""
         if not self.absolute:
-            self._unknown("G52", "G52 in incremental mode (G91) is not modelled", w)
+            self.unknown("G52", "G52 in incremental mode (G91) is not modelled", w)
             return
         for i, aw in axis_words:
             self.g52[i] = self._mm(aw.value, i)
             self.dep_g52[i] = {}
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     def _fanuc_g10(self, words: Words, axis_words: AxisWords, w: Word) -> None:
         """G10 L2 P0..P6 (EXT, G54..G59), L20 P1..P48 (G54.1), L10..L13 P R (tool offsets, memory C)."""
         lw, pw = words.get("L"), words.get("P")
         if lw is None:
-            raise self._error("GC208", "G10 needs an L word (L2, L20, L10 to L13)", w)
+            raise self.error("GC208", "G10 needs an L word (L2, L20, L10 to L13)", w)
         L = lw.value
         if pw is None:
-            raise self._error("GC208", f"G10 L{L} needs a P word", w)
+            raise self.error("GC208", f"G10 L{L} needs a P word", w)
         P = pw.value
         if L in (2, 20):
             top = 6 if L == 2 else 48
             low = 0 if L == 2 else 1
             if P.denominator != 1 or not low <= P <= top:
-                raise self._error("GC209", f"G10 L{L} {pw.text}: P must be an integer {low} to {top}", pw)
+                raise self.error("GC209", f"G10 L{L} {pw.text}: P must be an integer {low} to {top}", pw)
             name = (("EXT",) + WORK_OFFSETS[:6])[int(P)] if L == 2 else f"G54.1P{int(P)}"
             reg, dreg = self.g5x[name], self.dep_g5x[name]
             for i, aw in axis_words:
@@ -649,21 +649,21 @@ class FanucInterpreter(Interpreter):
                 reg[i] = v if self.absolute else reg[i] + v
                 if self.absolute:
                     dreg[i] = {}
-            self._recompute_offsets()
+            self.recompute_offsets()
         elif L in (10, 11, 12, 13):
             rw = words.get("R")
             if P.denominator != 1 or P < 0:
-                raise self._error("GC209", f"G10 L{L} {pw.text}: P must be a non-negative offset number", pw)
+                raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a non-negative offset number", pw)
             if rw is None:
-                raise self._error("GC208", f"G10 L{L} needs an R word with the offset value", w)
+                raise self.error("GC208", f"G10 L{L} needs an R word with the offset value", w)
             table = {10: self.h_geometry, 11: self.h_wear, 12: self.d_geometry, 13: self.d_wear}[int(L)]
-            v = self._len(rw.value)
+            v = self.length_mm(rw.value)
             number = int(P)
             table[number] = v if self.absolute else table.get(number, _ZERO) + v
         elif L in (1, 3, 50, 52):
-            self._unknown(f"G10 L{L}", f"G10 L{L} ({'tool offset memory A' if L == 1 else 'tool life data' if L == 3 else 'parameter input'}) is not modelled", lw)
+            self.unknown(f"G10 L{L}", f"G10 L{L} ({'tool offset memory A' if L == 1 else 'tool life data' if L == 3 else 'parameter input'}) is not modelled", lw)
         else:
-            raise self._error("GC209", f"G10 {lw.text}: L must be 2, 20 or 10 to 13 on a Fanuc mill", lw)
+            raise self.error("GC209", f"G10 {lw.text}: L must be 2, 20 or 10 to 13 on a Fanuc mill", lw)
 
     # ------------------------------------------------------------------ programmable transforms
     def _transform_codes(self, groups: dict, words: Words, axis_words: AxisWords) -> None:
@@ -681,7 +681,7 @@ class FanucInterpreter(Interpreter):
                 a, b, _n = PLANE_AXES[self.plane]
                 ia, ib = self.index.get(a), self.index.get(b)
                 if ia is None or ib is None:
-                    raise self._error("GC308", f"G16 in plane G{int(self.plane)} needs axes {a} and {b}", w)
+                    raise self.error("GC308", f"G16 in plane G{int(self.plane)} needs axes {a} and {b}", w)
                 self.polar = Polar(ia, ib)
             elif k == 500:
                 self.scaling = None
@@ -694,7 +694,7 @@ class FanucInterpreter(Interpreter):
                     self.mirroring = Mirror(kept) if kept else None
             elif k == 511:
                 if not self.absolute:
-                    self._unknown("G51.1", "G51.1 in incremental mode (G91) is not modelled", w)
+                    self.unknown("G51.1", "G51.1 in incremental mode (G91) is not modelled", w)
                     return
                 axes = dict(self.mirroring.axes) if self.mirroring is not None else {}
                 for i, aw in axis_words:
@@ -707,7 +707,7 @@ class FanucInterpreter(Interpreter):
             self._first_after_transform = True
         active = [x for x in (self.polar, self.scaling, self.mirroring, self.rotation) if x is not None]
         if len(active) > 1:
-            self._unknown("G68" if self.rotation is not None else "G51", "polar coordinates, scaling, mirror image "
+            self.unknown("G68" if self.rotation is not None else "G51", "polar coordinates, scaling, mirror image "
                           "and rotation are modelled one at a time: the order a control combines them in is not "
                           "modelled")
         if not active:
@@ -736,13 +736,13 @@ class FanucInterpreter(Interpreter):
         a, b, _n = PLANE_AXES[self.plane]
         ia, ib = self.index.get(a), self.index.get(b)
         if ia is None or ib is None:
-            raise self._error("GC308", f"G68 in plane G{int(self.plane)} needs axes {a} and {b}", w)
+            raise self.error("GC308", f"G68 in plane G{int(self.plane)} needs axes {a} and {b}", w)
         if not self.absolute and axis_words:
-            self._unknown("G68", "a G68 centre in incremental mode (G91) is not modelled", w)
+            self.unknown("G68", "a G68 centre in incremental mode (G91) is not modelled", w)
             return self.rotation
         rw = words.get("R")
         if rw is None:
-            self._unknown("G68", "G68 without R takes the angle from parameter 5410, which the machine file does "
+            self.unknown("G68", "G68 without R takes the angle from parameter 5410, which the machine file does "
                           "not hold", w)
             return self.rotation
         angle = rw.value
@@ -752,7 +752,7 @@ class FanucInterpreter(Interpreter):
 
     def _g51(self, words: Words, axis_words: AxisWords, w: Word) -> Scaling | None:
         if not self.absolute and axis_words:
-            self._unknown("G51", "a G51 centre in incremental mode (G91) is not modelled", w)
+            self.unknown("G51", "a G51 centre in incremental mode (G91) is not modelled", w)
             return self.scaling
         pw = words.get("P")
         per_axis = [words.get(letter) for letter in "IJK"]
@@ -768,11 +768,11 @@ class FanucInterpreter(Interpreter):
                 if i is not None and fw is not None:
                     factors[i] = fw.value
         else:
-            self._unknown("G51", "G51 needs either P or all of I, J, K; the defaults come from parameters 5411 and "
+            self.unknown("G51", "G51 needs either P or all of I, J, K; the defaults come from parameters 5411 and "
                           "5421, which the machine file does not hold", w)
             return self.scaling
         if any(f == 0 for f in factors):
-            raise self._error("GC209", "a scale factor of 0 (G51) collapses the axis", w)
+            raise self.error("GC209", "a scale factor of 0 (G51) collapses the axis", w)
         centre = tuple(self._centre(axis_words, i, w) for i in range(self.naxes))
         return Scaling(centre, tuple(factors))
 
@@ -786,7 +786,7 @@ class FanucInterpreter(Interpreter):
         for i, w in axis_words:
             if polar is not None and i in (polar.ia, polar.ib):
                 if not self.absolute:
-                    self._unknown("G16", "polar coordinates in incremental mode (G91) are not modelled", w)
+                    self.unknown("G16", "polar coordinates in incremental mode (G91) are not modelled", w)
                     return None
                 if i == polar.ia:
                     radius = self._mm(w.value, i)
@@ -803,7 +803,7 @@ class FanucInterpreter(Interpreter):
             radius = radius if radius is not None else polar.radius
             angle = angle if angle is not None else polar.angle
             if radius is None or angle is None:
-                self._unknown("G16", "the first polar coordinate command needs both the radius and the angle")
+                self.unknown("G16", "the first polar coordinate command needs both the radius and the angle")
                 return None
             p[polar.ia], p[polar.ib] = polar_point(radius, angle, self.settings.increment_mm)
             pd[polar.ia] = {}
@@ -833,7 +833,7 @@ class FanucInterpreter(Interpreter):
             for i in range(self.naxes):
                 if i in mixed:
                     if any(pd[j] for j in mixed):
-                        self._unknown("G68" if self.rotation is not None else "G51",
+                        self.unknown("G68" if self.rotation is not None else "G51",
                                       "parameter ranges on a point a coordinate transform moves are not modelled")
                     deps.append(dict(self.dep_off[i]))
                 else:
@@ -843,27 +843,27 @@ class FanucInterpreter(Interpreter):
     def _transformed_motion(self, block: Block, axis_words: AxisWords, words: Words) -> None:
         motion = self.motion
         if self._first_after_transform and not self.absolute:
-            self._unknown(gname(motion or 0), "the first move after G68, G51, G51.1 or G16 must be absolute (G90): "
+            self.unknown(gname(motion or 0), "the first move after G68, G51, G51.1 or G16 must be absolute (G90): "
                           "the manuals give an incremental one no meaning")
             return
         self._first_after_transform = False
         if motion not in (0, 10, 20, 30):
-            self._unknown(gname(motion or 0), f"{gname(motion or 0)} under a coordinate transform is not modelled")
+            self.unknown(gname(motion or 0), f"{gname(motion or 0)} under a coordinate transform is not modelled")
             return
         point = self._program_point(axis_words)
         if point is None:
             return
         p, pd = point
-        self._note_assumed(("units", "distance", "offset"))
+        self.note_assumed(("units", "distance", "offset"))
         if motion in (20, 30):
             self._transformed_arc(p, pd, words, motion == 20)
             return
         end, deps = self._transform_target(p, pd)
         if motion == 0:
-            self._emit(SegmentKind.RAPID, end, end_deps=deps)
+            self.emit(SegmentKind.RAPID, end, end_deps=deps)
         else:
-            self._check_feed()
-            self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+            self.check_feed()
+            self.emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         self.prog, self.prog_deps = p, pd
 
     def _transformed_arc(self, p: list[Fraction], pd: list[dict], words: Words, cw: bool) -> None:
@@ -873,18 +873,18 @@ class FanucInterpreter(Interpreter):
         a_name, b_name, n_name = PLANE_AXES[plane]
         ia, ib = self.index.get(a_name), self.index.get(b_name)
         if ia is None or ib is None:
-            raise self._error("GC308", f"an arc in plane G{int(plane)} needs axes {a_name} and {b_name}")
+            raise self.error("GC308", f"an arc in plane G{int(plane)} needs axes {a_name} and {b_name}")
         if self.polar is not None:
-            self._unknown("G16", "arcs in polar coordinate mode are not modelled")
+            self.unknown("G16", "arcs in polar coordinate mode are not modelled")
             return
         if self.rotation is not None and {self.rotation.ia, self.rotation.ib} != {ia, ib}:
-            self._unknown("G68", "an arc in another plane than the rotation's is not modelled")
+            self.unknown("G68", "an arc in another plane than the rotation's is not modelled")
             return
         fa = fb = Fraction(1)
         if self.scaling is not None:
             fa, fb = self.scaling.factors[ia], self.scaling.factors[ib]
             if abs(fa) != abs(fb):
-                self._unknown("G51", "an arc scaled differently on its two axes becomes an ellipse; not modelled")
+                self.unknown("G51", "an arc scaled differently on its two axes becomes an ellipse; not modelled")
                 return
         mirrored = {i for i, _c in self.mirroring.axes} if self.mirroring is not None else set()
         flips = (ia in mirrored) + (ib in mirrored) + (fa < 0) + (fb < 0)
@@ -892,10 +892,10 @@ class FanucInterpreter(Interpreter):
         offs = {"X": "I", "Y": "J", "Z": "K"}
         la, lb, ln = offs[a_name], offs[b_name], offs[n_name]
         if ln in words:
-            raise self._error("GC204", f"{ln} word {words[ln].text} given for an arc in plane G{int(plane)}",
+            raise self.error("GC204", f"{ln} word {words[ln].text} given for an arc in plane G{int(plane)}",
                               words[ln])
         rw = words.get("R")
-        self._check_feed()
+        self.check_feed()
         sa, sb = self._program()[ia], self._program()[ib]
         ea, eb = p[ia], p[ib]
         tol = self.arc_tolerance
@@ -903,51 +903,51 @@ class FanucInterpreter(Interpreter):
         pw = words.get("P")
         if pw is not None:
             if pw.value.denominator != 1 or pw.value < 1:
-                raise self._error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
+                raise self.error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
             turns = int(pw.value) - 1
         end, deps = self._transform_target(p, pd)
         if rw is not None:
-            r = self._len(rw.value)
+            r = self.length_mm(rw.value)
             if sa == ea and sb == eb:
                 return  # a 0 degree arc: no motion
             h2 = ((ea - sa) ** 2 + (eb - sb) ** 2) / 4
             if h2 > (abs(r) + tol) ** 2:
-                raise self._error("GC302", f"arc radius R{fmt_number(abs(r))} mm is too small to reach the end point", rw)
+                raise self.error("GC302", f"arc radius R{fmt_number(abs(r))} mm is too small to reach the end point", rw)
             r_machine = r * abs(fa)
             mh2 = ((end[ia] - self.pos[ia]) ** 2 + (end[ib] - self.pos[ib]) ** 2) / 4
             if mh2 >= r_machine ** 2:
                 centre = ((self.pos[ia] + end[ia]) / 2, (self.pos[ib] + end[ib]) / 2)
-                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise, centre=centre,
+                self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise, centre=centre,
                            turns=turns, end_deps=deps)
             else:
-                self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise, radius=r_machine,
+                self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise, radius=r_machine,
                            turns=turns, end_deps=deps)
             self.prog, self.prog_deps = p, pd
             return
         iw, jw = words.get(la), words.get(lb)
         if iw is None and jw is None:
-            raise self._error("GC208", f"arc without {la}, {lb} or R word: the centre or radius is missing")
-        ca = sa + (self._len(iw.value) if iw is not None else _ZERO)
-        cb = sb + (self._len(jw.value) if jw is not None else _ZERO)
+            raise self.error("GC208", f"arc without {la}, {lb} or R word: the centre or radius is missing")
+        ca = sa + (self.length_mm(iw.value) if iw is not None else _ZERO)
+        cb = sb + (self.length_mm(jw.value) if jw is not None else _ZERO)
         r0 = (sa - ca) ** 2 + (sb - cb) ** 2
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
         if r0 == 0 or r1 == 0:
-            raise self._error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
+            raise self.error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
         if r0 != r1 and sqrt_diff_exceeds(r0, r1, tol):
-            raise self._error("GC301", f"arc end point is off its circle by more than {fmt_number(tol)} mm", iw or jw)
+            raise self.error("GC301", f"arc end point is off its circle by more than {fmt_number(tol)} mm", iw or jw)
         centre_point = list(self._program())
         centre_point[ia], centre_point[ib] = ca, cb
         shift = self._tlo_shift
         machine_centre, _d = self._transform_target(centre_point, [{} for _ in range(self.naxes)])
         self._tlo_shift = shift
-        self._emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise,
+        self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=clockwise,
                    centre=(machine_centre[ia], machine_centre[ib]), turns=turns, end_deps=deps)
         self.prog, self.prog_deps = p, pd
 
     def _g92(self, axis_words: AxisWords, w: Word) -> None:
         """G92: the workpiece systems are shifted so the current position reads the given values."""
         if not axis_words:
-            raise self._error("GC208", "G92 needs at least one axis word", w)
+            raise self.error("GC208", "G92 needs at least one axis word", w)
         ext = self.g5x["EXT"]
         for i, aw in axis_words:
             tl = self.tlo if i == self.tool_axis else _ZERO
@@ -958,7 +958,7 @@ class FanucInterpreter(Interpreter):
                 if i == self.tool_axis:
                     d = dadd(d, self.dep_tlo, -1)
                 self.dep_g92[i] = d
-        self._recompute_offsets()
+        self.recompute_offsets()
 
     # ------------------------------------------------------------------ canned cycles
     def _fanuc_cycle(self, axis_words: AxisWords, words: Words, block: Block) -> None:
@@ -973,13 +973,13 @@ class FanucInterpreter(Interpreter):
         assert k is not None  # called in canned cycle mode
         name = gname(k)
         if self.plane is not Plane.XY:
-            self._unknown(name, f"{name} outside G17: the drilling axis depends on parameter 5101#0 FXY")
+            self.unknown(name, f"{name} outside G17: the drilling axis depends on parameter 5101#0 FXY")
             return
         if self.unsupported:
             return
         ix, iy, iz = self.index.get("X"), self.index.get("Y"), self.index.get("Z")
         if ix is None or iy is None or iz is None:
-            raise self._error("GC308", f"a canned cycle needs axes X, Y and Z; this machine has {', '.join(self.axes)}")
+            raise self.error("GC308", f"a canned cycle needs axes X, Y and Z; this machine has {', '.join(self.axes)}")
         data = self.cycle_data
         for letter in ("R", "Z", "Q", "P"):
             if letter in words:
@@ -988,27 +988,27 @@ class FanucInterpreter(Interpreter):
         reps = 1
         if kw is not None:
             if kw.value.denominator != 1 or kw.value < 0:
-                raise self._error("GC209", f"canned cycle repeat count {kw.text} must be a non-negative integer", kw)
+                raise self.error("GC209", f"canned cycle repeat count {kw.text} must be a non-negative integer", kw)
             reps = int(kw.value)
         missing = [letter for letter in ("R", "Z") if letter not in data]
         if missing:
-            self._unknown(name, f"{name} without {' and '.join(missing)} (R point, hole bottom) given since the cycle "
+            self.unknown(name, f"{name} without {' and '.join(missing)} (R point, hole bottom) given since the cycle "
                           "began: what the control then uses is not stated in the manuals")
             return
         if k in (730, 830) and any(x in words for x in "IJ"):
-            self._unknown(name, f"{name} with I or J: Haas's variable-peck mode is not modelled (on Fanuc K is "
+            self.unknown(name, f"{name} with I or J: Haas's variable-peck mode is not modelled (on Fanuc K is "
                           "the repeat count)")
             return
         if k in (730, 830) and "Q" not in data:
-            raise self._error("GC208", f"{name} needs Q (the depth of cut per peck)")
+            raise self.error("GC208", f"{name} needs Q (the depth of cut per peck)")
         if k in (730, 830) and data["Q"] <= 0:
-            raise self._error("GC209", f"peck depth Q{fmt_number(data['Q'])} must be greater than 0")
+            raise self.error("GC209", f"peck depth Q{fmt_number(data['Q'])} must be greater than 0")
         if k == 760 and "Q" not in data:
             data["Q"] = _ZERO
-        self._check_feed()
-        self._note_assumed(("units", "distance", "offset", "plane"))
+        self.check_feed()
+        self.note_assumed(("units", "distance", "offset", "plane"))
         if self._tlo_shift is not None:
-            self._unknown(name, "a tool length change in a canned cycle block is not modelled")
+            self.unknown(name, "a tool length change in a canned cycle block is not modelled")
             return
         if self.initial_level is None:
             self.initial_level = self.pos[iz]
@@ -1016,29 +1016,29 @@ class FanucInterpreter(Interpreter):
         initial = self.initial_level
         offz = self.off[iz]
         if self.absolute:
-            r = qadd(self._len(data["R"]), offz)
-            bottom = qadd(self._len(data["Z"]), offz)
+            r = qadd(self.length_mm(data["R"]), offz)
+            bottom = qadd(self.length_mm(data["Z"]), offz)
         else:
-            r = qadd(initial, self._len(data["R"]))
-            bottom = qadd(r, self._len(data["Z"]))
+            r = qadd(initial, self.length_mm(data["R"]))
+            bottom = qadd(r, self.length_mm(data["Z"]))
         wd = {self.axes[i]: aw for i, aw in axis_words}
         for i, aw in axis_words:
             if self.axes[i] not in ("X", "Y", "Z"):
-                raise self._error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
+                raise self.error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
         if reps == 0:
             return  # K0: the drilling data is stored, no hole is drilled
         if k in (730, 830):
-            step = self._len(data["Q"])
+            step = self.length_mm(data["Q"])
             back = self.settings.g73_retract if k == 730 else self.settings.g83_clearance
             if back is None:
                 param, key = ("5114", "g73_retract") if k == 730 else ("5115", "g83_clearance")
-                self._unknown(name, f"{name}'s {'retract' if k == 730 else 'clearance'} d is parameter {param}; "
+                self.unknown(name, f"{name}'s {'retract' if k == 730 else 'clearance'} d is parameter {param}; "
                               f"set [fanuc] {key} in the machine file")
                 return
         if k in (760,):
             shift = self.settings.boring_shift
             if shift is None:
-                self._unknown(name, "G76's shift direction is parameter 5101 bits RD1/RD2; set [fanuc] "
+                self.unknown(name, "G76's shift direction is parameter 5101 bits RD1/RD2; set [fanuc] "
                               "boring_shift in the machine file")
                 return
         dwell = dwell_p_seconds(data["P"]) if "P" in data and k in (760, 820, 840, 890, 740, 842, 843) else None
@@ -1049,10 +1049,10 @@ class FanucInterpreter(Interpreter):
             if (self.scaling is not None and self.scaling.factors[iz] != 1) or (
                     self.mirroring is not None and any(i == iz for i, _c in self.mirroring.axes)) or (
                     self.rotation is not None and iz in (self.rotation.ia, self.rotation.ib)):
-                self._unknown(name, f"{name} with the drilling axis scaled, mirrored or rotated is not modelled")
+                self.unknown(name, f"{name} with the drilling axis scaled, mirrored or rotated is not modelled")
                 return
             if self._first_after_transform and not self.absolute:
-                self._unknown(name, f"the first {name} hole after a coordinate transform must be absolute (G90)")
+                self.unknown(name, f"the first {name} hole after a coordinate transform must be absolute (G90)")
                 return
             self._first_after_transform = False
         xy_words = [(i, aw) for i, aw in axis_words if i in (ix, iy)]
@@ -1094,8 +1094,8 @@ class FanucInterpreter(Interpreter):
                         # the tool stood (a machine position with its own dependencies)
                         deps[iz] = dict(self.dep_off[iz] if z_deps is None else z_deps)
                     else:
-                        self._unknown(name, "parameter ranges with incremental canned cycles are not modelled")
-                self._emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
+                        self.unknown(name, "parameter ranges with incremental canned cycles are not modelled")
+                self.emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
 
             go(SegmentKind.RAPID, self.pos[iz], f"{name} position", z_deps=self.dep_pos[iz] if self.track else None)
             if self.pos[iz] != r or self.track:  # with ranges the levels differ for other values
@@ -1110,7 +1110,7 @@ class FanucInterpreter(Interpreter):
                     go(SegmentKind.RAPID, depth + (back or _ZERO), f"{name} {'retract' if k == 730 else 'approach'}")
             go(SegmentKind.LINE, bottom, f"{name} feed")
             if dwell:
-                self._emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
+                self.emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
             if k == 760:
                 sa, sb = self._boring_shift(data["Q"])
                 go(SegmentKind.RAPID, bottom, f"{name} shift", x=a + sa, y=b + sb)
@@ -1126,7 +1126,7 @@ class FanucInterpreter(Interpreter):
             self._program()[iz] = self.pos[iz] - self.off[iz]
 
     def _boring_shift(self, q: Fraction) -> tuple[Fraction, Fraction]:
-        d = self._len(abs(q))
+        d = self.length_mm(abs(q))
         shift = self.settings.boring_shift or "+X"  # _fanuc_cycle leaves G76 unknown without the setting
         return {"+X": (d, _ZERO), "-X": (-d, _ZERO), "+Y": (_ZERO, d), "-Y": (_ZERO, -d)}[shift]
 

@@ -189,18 +189,18 @@ class FanucLatheInterpreter(FanucInterpreter):
     def _plain(self, letters: str, values: tuple) -> bool:
         return False
 
-    def _recompute_offsets(self) -> None:
-        super()._recompute_offsets()
+    def recompute_offsets(self) -> None:
+        super().recompute_offsets()
         lathe_off = getattr(self, "lathe_off", None)
         if lathe_off:
             self.off = [v + lathe_off.get(i, _ZERO) for i, v in enumerate(self.off)]
 
-    def _emit(self, kind: SegmentKind, end: list[Fraction], **kw: Any) -> None:
-        n = len(self._out)
-        super()._emit(kind, end, **kw)
-        if self._tip_extra and len(self._out) > n:
-            seg = self._out[-1]
-            self._out[-1] = replace(seg, extra=seg.extra + self._tip_extra)
+    def emit(self, kind: SegmentKind, end: list[Fraction], **kw: Any) -> None:
+        n = len(self.emitted)
+        super().emit(kind, end, **kw)
+        if self._tip_extra and len(self.emitted) > n:
+            seg = self.emitted[-1]
+            self.emitted[-1] = replace(seg, extra=seg.extra + self._tip_extra)
 
     def _grid(self, i: int) -> Fraction:
         """The least increment of axis ``i`` in mm of machine coordinates (half of it on a diameter axis)."""
@@ -223,7 +223,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             elif self.system == "A" and letter in _INCREMENTAL and _INCREMENTAL[letter] in self.index:
                 i = self.index[_INCREMENTAL[letter]]
                 if any(j == i for j, _v, _inc, _w in out):
-                    raise self._error("GC204", f"{letter} and {_INCREMENTAL[letter]} in one block both move axis "
+                    raise self.error("GC204", f"{letter} and {_INCREMENTAL[letter]} in one block both move axis "
                                       f"{_INCREMENTAL[letter]}", w)
                 out.append((i, self._value(w, i), True, w))
         return out
@@ -241,7 +241,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                     deps[i] = dict(self.dep_off[i])
         return end, deps
 
-    def _program_target(self, axis_words: Any, g53: bool,
+    def program_target(self, axis_words: Any, g53: bool,
                         absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
         """The parent's target with the lathe's words: ``axis_words`` hold ``(index, Word)`` whose words the
         block normalised (radius values; incremental ones listed in ``self._incremental``)."""
@@ -285,16 +285,16 @@ class FanucLatheInterpreter(FanucInterpreter):
             if letter == "G":
                 k = gkey(w.value)
                 if k is None:
-                    raise self._error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at "
+                    raise self.error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at "
                                       "most one decimal", w)
                 gcodes.append((k, w))
             elif letter == "M":
                 if w.value.denominator != 1:
-                    raise self._error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
+                    raise self.error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
                 mcodes.append((w.value.numerator, w))
             else:
                 if letter in words:
-                    raise self._error("GC204", f"two {letter} words in one block ({words[letter].text or letter} "
+                    raise self.error("GC204", f"two {letter} words in one block ({words[letter].text or letter} "
                                       f"and {w.text or letter}); a letter may appear once", w)
                 words[letter] = w
         groups: dict[int, tuple[int, Word]] = {}
@@ -304,20 +304,20 @@ class FanucLatheInterpreter(FanucInterpreter):
                 other = "B" if self.system == "A" else "A"
                 hint = (f"; in G code system {other} it is a lathe code: set gcode_system = \"{other}\" in [fanuc]"
                         if k in LATHE_GROUPS[other] else "")
-                raise self._error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}): not a "
+                raise self.error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}): not a "
                                   f"Fanuc lathe G code of system {self.system}; see specs/turning.md{hint}", w)
             if g == 0 and 0 in groups:
-                raise self._error("GC201", f"{gname(groups[0][0])} and {gname(k)} are both one-shot (group 00) "
+                raise self.error("GC201", f"{gname(groups[0][0])} and {gname(k)} are both one-shot (group 00) "
                                   "codes; write them in separate blocks", w)
             groups[g] = (k, w)
         if len(mcodes) > 3:
-            raise self._error("GC206", f"{len(mcodes)} M words in one block; at most 3 are allowed", mcodes[3][1])
+            raise self.error("GC206", f"{len(mcodes)} M words in one block; at most 3 are allowed", mcodes[3][1])
         for k, w in gcodes:
             if k in _UNKNOWN:
-                self._unknown(gname(k), _UNKNOWN[k], w)
+                self.unknown(gname(k), _UNKNOWN[k], w)
         for k, w in mcodes:
             if k not in self._harmless_m and k not in (2, 30):
-                self._unknown(f"M{k}", f"M{k} is not a code nczones models (machine M codes may move anything, "
+                self.unknown(f"M{k}", f"M{k} is not a code nczones models (machine M codes may move anything, "
                               "a tailstock or a chuck among them; list the harmless ones in [fanuc] harmless_m)", w)
         mset = {k for k, _ in mcodes}
         g0 = groups.get(0)
@@ -328,7 +328,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 continue
             if self.system == "A" and letter in _INCREMENTAL and _INCREMENTAL[letter] in self.index:
                 continue
-            raise self._error("GC203", f"axis word {w.text or letter} names axis {letter}, which this machine does "
+            raise self.error("GC203", f"axis word {w.text or letter} names axis {letter}, which this machine does "
                               f"not have (axes: {', '.join(self.axes)})"
                               + (f"; {letter} is an incremental address in G code system A only" if letter in
                                  _INCREMENTAL and self.system == "B" else ""), w)
@@ -340,7 +340,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         if "F" in words:
             f = words["F"].value
             if f < 0:
-                raise self._error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
+                raise self.error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
             self.feed = f
         if mcodes:
             self.last["M"] = Fraction(mcodes[-1][0])
@@ -372,7 +372,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             if k == 40:
                 self._lathe_dwell(words, w)
             elif k == 100:
-                self._unknown("G10", "G10 on a lathe (tool offset and workpiece shift input) is not modelled", w)
+                self.unknown("G10", "G10 on a lathe (tool offset and workpiece shift input) is not modelled", w)
             elif k in (280, 300):
                 self._fanuc_home(k, self._normalised(self._axis_targets(words)), words, w)
             elif k == 270:
@@ -386,7 +386,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             elif k == 921:
                 self.g92 = [_ZERO] * self.naxes
                 self.dep_g92 = [{} for _ in range(self.naxes)]
-                self._recompute_offsets()
+                self.recompute_offsets()
             elif k in (700, 710, 720, 730):
                 self._shape_cycle(k, block, words, w)
             elif k in (740, 750):
@@ -418,7 +418,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         """``T`` tool and offset: ``T0101`` selects tool 1 and offset 1 (``T101`` too); offset 0 cancels."""
         t = tw.value
         if t.denominator != 1 or t < 0:
-            raise self._error("GC209", f"tool word {tw.text} must be a non-negative integer (Tttoo: tool tt, "
+            raise self.error("GC209", f"tool word {tw.text} must be a non-negative integer (Tttoo: tool tt, "
                               "offset oo)", tw)
         n = int(t)
         self.tool_selected = n // 100
@@ -428,7 +428,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             return
         if number and number not in self.machine.tool_offsets:
             known = ", ".join(str(k) for k in sorted(self.machine.tool_offsets)) or "none"
-            raise self._error("GC310", f"tool offset {number} ({tw.text}) is not in the machine file's "
+            raise self.error("GC310", f"tool offset {number} ({tw.text}) is not in the machine file's "
                               f"[tool_offsets] (known: {known})", tw)
         old = list(self.off)
         offset = self.machine.tool_offsets.get(number)
@@ -449,47 +449,47 @@ class FanucLatheInterpreter(FanucInterpreter):
         self.dep_tlo = {}
         self._tip_extra = (("tip_offset", tuple(tip)),) if tip else ()
         self.unset.discard("tool")
-        self._recompute_offsets()
+        self.recompute_offsets()
         if self.settings.tool_offset_motion == "move" and not self.unsupported:
             end = [p + (n_ - o) for p, n_, o in zip(self.pos, self.off, old)]
             if end != list(self.pos):
-                self._emit(SegmentKind.RAPID, end, derived=f"T{n:04d} tool offset")
+                self.emit(SegmentKind.RAPID, end, derived=f"T{n:04d} tool offset")
 
     def _lathe_dwell(self, words: dict[str, Word], w: Word) -> None:
         """G04 X/U seconds (not diameters), P milliseconds."""
         given = [x for x in (words.get("X"), words.get("U"), words.get("P")) if x is not None]
         if len(given) > 1:
-            raise self._error("GC204", "G04 takes one of X, U (seconds) and P (milliseconds)", given[1])
+            raise self.error("GC204", "G04 takes one of X, U (seconds) and P (milliseconds)", given[1])
         seconds = _ZERO
         if given:
             x = given[0]
             if x.value < 0:
-                raise self._error("GC209", f"dwell time {x.text} is negative", x)
+                raise self.error("GC209", f"dwell time {x.text} is negative", x)
             seconds = dwell_p_seconds(x.value) if x.letter == "P" else x.value
-        self._emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
+        self.emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
 
     def _lathe_g53(self, words: dict[str, Word], w: Word) -> None:
         targets = self._axis_targets(words)
         if any(inc for _i, _v, inc, _w in targets):
-            self._unknown("G53", "G53 with an incremental word (U, W): the manuals give it no meaning", w)
+            self.unknown("G53", "G53 with an incremental word (U, W): the manuals give it no meaning", w)
             return
         if not targets:
             return
-        self._note_assumed(("units",))
-        end, deps = self._program_target(self._normalised(targets), True)
-        self._emit(SegmentKind.RAPID, end, derived="G53", end_deps=deps)
+        self.note_assumed(("units",))
+        end, deps = self.program_target(self._normalised(targets), True)
+        self.emit(SegmentKind.RAPID, end, derived="G53", end_deps=deps)
 
     def _coordinate_setting(self, words: dict[str, Word], w: Word) -> None:
         """G50 (system A) / G92 (system B): X Z set the coordinate system; S alone clamps the spindle speed."""
         targets = self._axis_targets(words)
         if not targets:
             if "S" not in words:
-                raise self._error("GC208", f"{gname(500 if self.system == 'A' else 920)} needs axis words (the "
+                raise self.error("GC208", f"{gname(500 if self.system == 'A' else 920)} needs axis words (the "
                                   "coordinate system) or S (the spindle speed clamp)", w)
             return  # the spindle speed clamp: no effect on motion
         if any(inc for _i, _v, inc, _w in targets):
             # G50 U W shifts the coordinate system by the increments (0i-TD "Coordinate system setting")
-            self._unknown(gname(500 if self.system == "A" else 920), "a coordinate system shift by U/W is not "
+            self.unknown(gname(500 if self.system == "A" else 920), "a coordinate system shift by U/W is not "
                           "modelled", w)
             return
         self._g92(self._normalised(targets), w)
@@ -498,27 +498,27 @@ class FanucLatheInterpreter(FanucInterpreter):
         motion = self.motion
         axis_words = self._normalised(targets)
         if motion in (0, 10):
-            self._note_assumed(("units", "distance", "offset"))
-            end, deps = self._program_target(axis_words, False)
+            self.note_assumed(("units", "distance", "offset"))
+            end, deps = self.program_target(axis_words, False)
             if motion == 0:
-                self._emit(SegmentKind.RAPID, end, end_deps=deps)
+                self.emit(SegmentKind.RAPID, end, end_deps=deps)
             else:
-                self._check_feed()
-                self._emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+                self.check_feed()
+                self.emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         elif motion in (20, 30):
             if self.plane is not Plane.XZ and any(x in words for x in "IK"):
                 pass
             rw = words.get("R")
             if rw is not None and not axis_words:
                 return
-            self._arc(block, axis_words, self._arc_words(words), motion == 20, False)
+            self.arc(block, axis_words, self._arc_words(words), motion == 20, False)
         elif motion in (320, 330):
             if "F" not in words and self.feed == 0:
-                raise self._error("GC208", f"{gname(motion)} needs F (the lead)")
-            end, deps = self._program_target(axis_words, False)
-            self._emit(SegmentKind.LINE, end, derived=f"{gname(motion)} thread", end_deps=deps)
+                raise self.error("GC208", f"{gname(motion)} needs F (the lead)")
+            end, deps = self.program_target(axis_words, False)
+            self.emit(SegmentKind.LINE, end, derived=f"{gname(motion)} thread", end_deps=deps)
         else:
-            self._unknown(gname(motion or 0), f"{gname(motion or 0)} is not modelled")
+            self.unknown(gname(motion or 0), f"{gname(motion or 0)} is not modelled")
 
     def _arc_words(self, words: dict[str, Word]) -> dict[str, Word]:
         """The words the parent's arc code reads (its axis words come from the normalised targets)."""
@@ -533,7 +533,7 @@ class FanucLatheInterpreter(FanucInterpreter):
     def _zx(self) -> tuple[int, int]:
         iz, ix = self.index.get("Z"), self.index.get("X")
         if iz is None or ix is None:
-            raise self._error("GC308", f"a lathe cycle needs axes X and Z; this machine has {', '.join(self.axes)}")
+            raise self.error("GC308", f"a lathe cycle needs axes X and Z; this machine has {', '.join(self.axes)}")
         return iz, ix
 
     def _cycle_start(self, name: str) -> bool:
@@ -541,10 +541,10 @@ class FanucLatheInterpreter(FanucInterpreter):
         if self.unsupported:
             return False
         if self.plane is not Plane.XZ:
-            self._unknown(name, f"{name} outside the ZX plane (G18) is not modelled")
+            self.unknown(name, f"{name} outside the ZX plane (G18) is not modelled")
             return False
         if self.comp_on:
-            self._unknown(name, f"{name} with tool nose radius compensation on is not modelled")
+            self.unknown(name, f"{name} with tool nose radius compensation on is not modelled")
             return False
         if self.track:
             iz, ix = self._zx()
@@ -553,11 +553,11 @@ class FanucLatheInterpreter(FanucInterpreter):
                 d = dadd(self.dep_pos[i], self.dep_off[i], -1)
                 names = sorted(k for k in d if ranged is None or f"{k}.{self.axes[i]}" in ranged or k in ranged)
                 if names:
-                    self._unknown("parameter range", f"{name}: the cycle's start point in the workpiece coordinate "
+                    self.unknown("parameter range", f"{name}: the cycle's start point in the workpiece coordinate "
                                   f"system depends on {', '.join(f'{k}.{self.axes[i]}' for k in names)}: the number "
                                   "and places of its passes would depend on it")
                     return False
-        self._note_assumed(("units", "offset"))
+        self.note_assumed(("units", "offset"))
         return True
 
     def _len_word(self, w: Word | None, *, diameter: bool = False) -> Fraction | None:
@@ -567,7 +567,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         v = w.value
         if diameter and self.index.get("X") in self.diameter:
             v = v / 2
-        return self._len(v)
+        return self.length_mm(v)
 
     def _emit_moves(self, name: str, moves: list[Move], feed: Fraction | None) -> None:
         """Emit generated moves (program coordinates) as segments of the cycle block."""
@@ -591,19 +591,19 @@ class FanucLatheInterpreter(FanucInterpreter):
                     if m.feed is not None:
                         self.feed = m.feed
                     centre = (m.centre[0] + self.off[iz], m.centre[1] + self.off[ix])
-                    self._check_feed()
-                    self._emit(SegmentKind.ARC, end, feed=True, plane=Plane.XZ, clockwise=m.clockwise,
+                    self.check_feed()
+                    self.emit(SegmentKind.ARC, end, feed=True, plane=Plane.XZ, clockwise=m.clockwise,
                                centre=centre, derived=derived, end_deps=deps)
                 elif m.kind is SegmentKind.LINE:
                     if m.feed is not None:
                         self.feed = m.feed
                     if not m.synced:
-                        self._check_feed()
-                    self._emit(SegmentKind.LINE, end, feed=not m.synced, derived=derived, end_deps=deps)
+                        self.check_feed()
+                    self.emit(SegmentKind.LINE, end, feed=not m.synced, derived=derived, end_deps=deps)
                 elif m.kind is SegmentKind.DWELL:
-                    self._emit(SegmentKind.DWELL, list(self.pos), dwell=m.dwell_s, derived=derived)
+                    self.emit(SegmentKind.DWELL, list(self.pos), dwell=m.dwell_s, derived=derived)
                 else:
-                    self._emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
+                    self.emit(SegmentKind.RAPID, end, derived=derived, end_deps=deps)
         finally:
             self.feed = old_feed
 
@@ -613,7 +613,7 @@ class FanucLatheInterpreter(FanucInterpreter):
 
     def _pt(self, z: Fraction, x: Fraction) -> tuple[Fraction, Fraction]:
         """A program point from program-unit values (x already a radius) to mm."""
-        return (self._len(z), self._len(x))
+        return (self.length_mm(z), self.length_mm(x))
 
     # ------------------------------------------------------------------ single cycles (G90 G92 G94)
     def _single_cycle(self, targets: list, words: dict[str, Word], block: Block) -> None:
@@ -626,9 +626,9 @@ class FanucLatheInterpreter(FanucInterpreter):
         data = self.turning_data
         for i, _v, _inc, tw in targets:
             if i not in (iz, ix):
-                raise self._error("GC210", f"{name} takes X (U) and Z (W); {tw.text} names another axis", tw)
+                raise self.error("GC210", f"{name} takes X (U) and Z (W); {tw.text} names another axis", tw)
         if "R" in words:
-            data["R"] = self._len(words["R"].value)
+            data["R"] = self.length_mm(words["R"].value)
         z0, x0 = self._zx_program()
         # an omitted X or Z is the cycle's last end point (the tool is back at the start point)
         ze, xe = data.get("Z", z0), data.get("X", x0)
@@ -644,13 +644,13 @@ class FanucLatheInterpreter(FanucInterpreter):
         chamfer = None
         if kind == "thread":
             fw = words.get("F") or words.get("E")
-            lead = self._len(fw.value) if fw is not None else (self._len(self.feed) if self.feed else None)
+            lead = self.length_mm(fw.value) if fw is not None else (self.length_mm(self.feed) if self.feed else None)
             if lead is None or lead == 0:
-                raise self._error("GC208", f"{name} needs F (the thread lead)")
+                raise self.error("GC208", f"{name} needs F (the thread lead)")
             try:
                 chamfer = self._chamfer(name, lead)
             except CycleUnknown as e:
-                self._unknown(name, str(e))
+                self.unknown(name, str(e))
                 return
         moves = turning_cycle(name, (z0, x0), (ze, xe), taper, facing=kind == "face", thread=kind == "thread",
                               chamfer=chamfer)
@@ -669,7 +669,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         name = gname(k)
         if not isinstance(block, ShapeBlock) or "P" not in words or "Q" not in words:
             if k == 700:
-                raise self._error("GC208", "G70 needs P and Q (the finishing shape's first and last sequence "
+                raise self.error("GC208", "G70 needs P and Q (the finishing shape's first and last sequence "
                                   "numbers)", w)
             self._first_cycle_block(k, words, w)
             return
@@ -679,7 +679,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         try:
             approach, shape, first_rapid, first_moves_z, first_moves_x = self._shape(name, block.shape, start)
         except CycleUnknown as e:
-            self._unknown(name, str(e), w)
+            self.unknown(name, str(e), w)
             return
         feed = words["F"].value if "F" in words else None
         grid = self._grid_zx()
@@ -728,7 +728,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 moves = pattern_cycle(name, start, approach, shape, relief=(rz, rx), divisions=n,
                                       allowance=allowance, grid=grid)
         except CycleUnknown as e:
-            self._unknown(name, str(e), w)
+            self.unknown(name, str(e), w)
             return
         self._emit_moves(name, moves, feed)
 
@@ -739,22 +739,22 @@ class FanucLatheInterpreter(FanucInterpreter):
             data = self.rough[k // 10]
             if dw is not None:
                 if dw.value <= 0:
-                    raise self._error("GC209", f"{gname(k)} depth of cut {dw.text} must be greater than 0", dw)
-                data["depth"] = self._len(dw.value)  # a radius value, also on a diameter axis
+                    raise self.error("GC209", f"{gname(k)} depth of cut {dw.text} must be greater than 0", dw)
+                data["depth"] = self.length_mm(dw.value)  # a radius value, also on a diameter axis
             if "R" in words:
                 if words["R"].value < 0:
-                    raise self._error("GC209", f"{gname(k)} escape amount {words['R'].text} must not be negative",
+                    raise self.error("GC209", f"{gname(k)} escape amount {words['R'].text} must not be negative",
                                       words["R"])
-                data["retract"] = self._len(words["R"].value)
+                data["retract"] = self.length_mm(words["R"].value)
         elif k == 730:
             if "U" in words:
-                self.g73_rx = self._len(words["U"].value)  # radius
+                self.g73_rx = self.length_mm(words["U"].value)  # radius
             if "W" in words:
-                self.g73_rz = self._len(words["W"].value)
+                self.g73_rz = self.length_mm(words["W"].value)
             if "R" in words:
                 r = words["R"].value
                 if r.denominator != 1 or r < 1:
-                    raise self._error("GC209", f"G73 number of divisions {words['R'].text} must be a positive "
+                    raise self.error("GC209", f"G73 number of divisions {words['R'].text} must be a positive "
                                       "integer", words["R"])
                 self.g73_n = int(r)
 
@@ -810,7 +810,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                                    "not modelled")
             ez, ex = pos
             for i, v, incremental, _w in targets:
-                q = self._len(v)
+                q = self.length_mm(v)
                 if i == iz:
                     ez = pos[0] + q if incremental else q
                     if n == 0:
@@ -845,7 +845,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         """An arc of the shape with its exact centre (I/K, or R when its centre is rational)."""
         rw = bw.get("R")
         if rw is not None:
-            r = self._len(rw.value)
+            r = self.length_mm(rw.value)
             dz, dx = e[0] - s[0], e[1] - s[1]
             l2 = dz * dz + dx * dx
             if l2 == 0 or r == 0:
@@ -863,8 +863,8 @@ class FanucLatheInterpreter(FanucInterpreter):
             iw, kw = bw.get("I"), bw.get("K")
             if iw is None and kw is None:
                 raise CycleUnknown(f"{name}: the arc of line {b.span.line} has neither I/K nor R")
-            centre = (s[0] + (self._len(kw.value) if kw is not None else _ZERO),
-                      s[1] + (self._len(iw.value) if iw is not None else _ZERO))
+            centre = (s[0] + (self.length_mm(kw.value) if kw is not None else _ZERO),
+                      s[1] + (self.length_mm(iw.value) if iw is not None else _ZERO))
             r0 = (s[0] - centre[0]) ** 2 + (s[1] - centre[1]) ** 2
             r1 = (e[0] - centre[0]) ** 2 + (e[1] - centre[1]) ** 2
             if r0 != r1:
@@ -877,7 +877,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         targets = self._axis_targets(words)
         if not targets:  # the first block: G74 R(e)
             if "R" in words:
-                self.g74_back = self._len(words["R"].value)
+                self.g74_back = self.length_mm(words["R"].value)
             return
         if not self._cycle_start(name):
             return
@@ -891,17 +891,17 @@ class FanucLatheInterpreter(FanucInterpreter):
             elif i == ix:
                 xe = x0 + q if incremental else q
             else:
-                raise self._error("GC210", f"{name} takes X (U) and Z (W); {tw.text} names another axis", tw)
+                raise self.error("GC210", f"{name} takes X (U) and Z (W); {tw.text} names another axis", tw)
         along_z = k == 740
         haas = "I" in words or "K" in words
         try:
             if haas:
                 # the one-block form of Haas: I (X step) and K (Z step), D the relief; the back-off is a setting
-                step_x = self._len(words["I"].value) if "I" in words else None
-                step_z = self._len(words["K"].value) if "K" in words else None
+                step_x = self.length_mm(words["I"].value) if "I" in words else None
+                step_z = self.length_mm(words["K"].value) if "K" in words else None
                 peck = step_z if along_z else step_x
                 shift = step_x if along_z else step_z
-                relief = self._len(words["D"].value) if "D" in words else _ZERO
+                relief = self.length_mm(words["D"].value) if "D" in words else _ZERO
                 if peck is None:
                     raise CycleUnknown(f"{name} without {'K' if along_z else 'I'} (the peck depth)")
             else:
@@ -912,7 +912,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 p_mm = pw.value * inc if pw is not None else None
                 q_mm = qw.value * inc if qw is not None else None
                 peck, shift = (q_mm, p_mm) if along_z else (p_mm, q_mm)
-                relief = self._len(words["R"].value) if "R" in words else _ZERO
+                relief = self.length_mm(words["R"].value) if "R" in words else _ZERO
                 if peck is None:
                     raise CycleUnknown(f"{name} without {'Q' if along_z else 'P'} (the depth of each peck)")
             back = self.g74_back
@@ -922,7 +922,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             moves = peck_cycle(name, (z0, x0), (ze, xe), along_z=along_z, step_peck=peck, step_shift=shift or _ZERO,
                                back=back, relief=relief, grid=self._grid_zx())
         except CycleUnknown as e:
-            self._unknown(name, str(e), w)
+            self.unknown(name, str(e), w)
             return
         feed = words["F"].value if "F" in words else None
         self._emit_moves(name, moves, feed)
@@ -935,7 +935,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             if pw is not None:
                 p = pw.value
                 if p.denominator != 1 or p < 0:
-                    raise self._error("GC209", f"G76 {pw.text}: P is six digits mmrraa", pw)
+                    raise self.error("GC209", f"G76 {pw.text}: P is six digits mmrraa", pw)
                 m_, rest = divmod(int(p), 10000)
                 r_, a_ = divmod(rest, 100)
                 self.g76_m, self.g76_a = m_, Fraction(a_)
@@ -943,7 +943,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             if "Q" in words:
                 self.g76_dmin = words["Q"].value * self.settings.increment_mm  # least increments, radius
             if "R" in words:
-                self.g76_d = self._len(words["R"].value)
+                self.g76_d = self.length_mm(words["R"].value)
             return
         if not self._cycle_start("G76"):
             return
@@ -957,9 +957,9 @@ class FanucLatheInterpreter(FanucInterpreter):
             elif i == ix:
                 xe = x0 + q if incremental else q
             else:
-                raise self._error("GC210", f"G76 takes X (U) and Z (W); {tw.text} names another axis", tw)
+                raise self.error("GC210", f"G76 takes X (U) and Z (W); {tw.text} names another axis", tw)
         fw = words.get("F")
-        lead = self._len(fw.value) if fw is not None else (self._len(self.feed) if self.feed else None)
+        lead = self.length_mm(fw.value) if fw is not None else (self.length_mm(self.feed) if self.feed else None)
         try:
             if lead is None or lead == 0:
                 raise CycleUnknown("G76 needs F (the thread lead)")
@@ -968,9 +968,9 @@ class FanucLatheInterpreter(FanucInterpreter):
                 # the one-block form (Haas, FS15 format): K height, D first depth, A tool angle, I taper
                 if "K" not in words:
                     raise CycleUnknown("G76 (one-block form) without K (the thread height)")
-                height = self._len(words["K"].value)
-                first = self._len(words["D"].value)
-                taper = self._len(words["I"].value) if "I" in words else _ZERO
+                height = self.length_mm(words["K"].value)
+                first = self.length_mm(words["D"].value)
+                taper = self.length_mm(words["I"].value) if "I" in words else _ZERO
                 angle = words["A"].value if "A" in words else self.g76_a
                 if "P" in words or "Q" in words:
                     raise CycleUnknown("G76 (one-block form) with P or Q (cutting method, start angle): not modelled")
@@ -980,7 +980,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 inc = self.settings.increment_mm
                 height = words["P"].value * inc
                 first = words["Q"].value * inc
-                taper = self._len(words["R"].value) if "R" in words else _ZERO
+                taper = self.length_mm(words["R"].value) if "R" in words else _ZERO
                 angle = self.g76_a
             m_passes, dmin, allowance = self.g76_m, self.g76_dmin, self.g76_d
             missing = [name for name, v in (("g76_finish_passes (5142)", m_passes), ("g76_tool_angle (5143)", angle),
@@ -994,7 +994,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                                      min_depth=dmin, finish_allowance=allowance, finish_passes=m_passes,
                                      tool_angle=angle, chamfer=chamfer, grid=self._grid_zx())
         except CycleUnknown as e:
-            self._unknown("G76", str(e), w)
+            self.unknown("G76", str(e), w)
             return
         self._emit_moves("G76", moves, None)
 

@@ -222,7 +222,7 @@ def write(it: FanucInterpreter, n: int, value: tuple) -> None:
             raise _unknown(n, f"#{n} = <vacant>: what a control stores for a vacant offset is not modelled")
         it.g5x[name][i] = _mm(it, _exact(value), i)
         it.dep_g5x[name][i] = {}
-        it._recompute_offsets()
+        it.recompute_offsets()
         return
     tool = _tool_table(it, n)
     if tool is not None:
