@@ -49,14 +49,85 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from ..errors import Diagnostic, GcodeError
 from ..exact import to_float
 from ..motion import PLANE_AXES, Plane, SegmentKind
 
 if TYPE_CHECKING:
-    from .interpreter import Interpreter
+    from collections.abc import Sequence
+
+    from ..errors import SourceSpan
+    from ..machine import Machine
+    from ..motion import Segment
+    from .blocks import Block, Word
+
+
+class CompensatedInterpreter(Protocol):
+    """What cutter compensation reads and drives of the interpreter it compensates for
+    (:class:`nczones.gcode.interpreter.Interpreter`): its state, its emission of segments and its arc rule.
+
+    Declared here, below the interpreter, so that this module does not import the interpreter back.
+    """
+
+    pos: Sequence[Fraction]
+    dep_pos: list[dict[str, int]]
+    machine_at: tuple[Fraction, ...] | None
+    comp_on: bool
+    comp_just_off: bool
+    segment_count: int
+
+    @property
+    def machine(self) -> Machine: ...
+    @property
+    def axes(self) -> tuple[str, ...]: ...
+    @property
+    def index(self) -> dict[str, int]: ...
+    @property
+    def plane(self) -> Plane: ...
+    @property
+    def inch(self) -> bool: ...
+    @property
+    def track(self) -> bool: ...
+    @property
+    def ranged(self) -> frozenset[Any]: ...
+    @property
+    def off(self) -> list[Fraction]: ...
+    @property
+    def dep_off(self) -> list[dict[Any, Any]]: ...
+    @property
+    def tlo(self) -> Fraction: ...
+    @property
+    def tool_register(self) -> int | None: ...
+    @property
+    def tool_in_spindle(self) -> int: ...
+    @property
+    def feed(self) -> Fraction: ...
+    @property
+    def feed_mode(self) -> int: ...
+    @property
+    def prerotation_xy(self) -> list[Fraction] | None: ...
+    @property
+    def unsupported(self) -> Sequence[object]: ...
+    @property
+    def span(self) -> SourceSpan | None: ...
+    @property
+    def block_index(self) -> int: ...
+    @property
+    def kind_counts(self) -> dict[SegmentKind, int]: ...
+    @property
+    def emitted(self) -> list[Segment]: ...
+
+    def unknown(self, code: str, reason: str, word: Word | None = None) -> None: ...
+    def length_mm(self, v: Fraction) -> Fraction: ...
+    def deps_tuple(self, deps: list[dict[Any, Any]]) -> tuple[tuple[str, ...], ...]: ...
+    def tool_dep_names(self) -> tuple[str, ...]: ...
+    def emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
+             plane: Plane | None = None, clockwise: bool = False, centre: Any = None, radius: Any = None,
+             turns: int = 0, dwell: Fraction | None = None, end_deps: list[dict[Any, Any]] | None = None) -> None: ...
+    def arc(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], cw: bool,
+            g53: bool) -> None: ...
 
 __all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD"]
 
@@ -178,7 +249,7 @@ class CutterComp:
     ((Fraction(10, 1), Fraction(0, 1)), True)
     """
 
-    it: Interpreter
+    it: CompensatedInterpreter
     side: int | None = None
     radius: float = 0.0
     first: bool = True

@@ -60,10 +60,11 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from fractions import Fraction
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Union
+from typing import TYPE_CHECKING, Protocol, Union
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .interpreter import Interpreter
+    from ..machine import Machine
+    from ..motion import Plane
 
 __all__ = [
     "StateValue",
@@ -107,27 +108,79 @@ class StateParameter:
 
     key: int | str
     meaning: str
-    read: Callable[["Interpreter"], Reading]
+    read: Callable[["StateSource"], Reading]
 
 
 StateTable = Mapping[Union[int, str], StateParameter]
 
 
+class StateSource(Protocol):
+    """What the readers of state parameters read of the interpreter
+    (:class:`nczones.gcode.interpreter.Interpreter` provides it): modal state and the ``state_*`` accessors.
+
+    Declared here, below the interpreter, so that this module does not import the interpreter back.
+    """
+
+    @property
+    def machine(self) -> Machine: ...
+    @property
+    def index(self) -> dict[str, int]: ...
+    @property
+    def inch(self) -> bool: ...
+    @property
+    def absolute(self) -> bool: ...
+    @property
+    def arc_absolute(self) -> bool: ...
+    @property
+    def plane(self) -> Plane: ...
+    @property
+    def motion(self) -> int | None: ...
+    @property
+    def feed(self) -> Fraction: ...
+    @property
+    def feed_mode(self) -> int: ...
+    @property
+    def wcs(self) -> str: ...
+    @property
+    def rot(self) -> dict[str, Fraction]: ...
+    @property
+    def retract_r(self) -> bool: ...
+    @property
+    def tool_axis(self) -> int | None: ...
+    @property
+    def tool_selected(self) -> int: ...
+    @property
+    def tool_in_spindle(self) -> int: ...
+    @property
+    def tlo(self) -> Fraction: ...
+    @property
+    def g92_applied(self) -> bool: ...
+
+    def state_home(self, k: int, i: int) -> StateValue: ...
+    def state_work_offset(self, name: str, i: int) -> StateValue: ...
+    def state_spindle_tool_length(self) -> StateValue: ...
+    def state_program_position(self, i: int) -> StateValue: ...
+    def state_machine_position(self, i: int) -> StateValue: ...
+    def state_g92(self, i: int) -> StateValue: ...
+    def state_ccomp(self) -> int | None: ...
+    def state_applied_tool_length(self) -> StateValue: ...
+
+
 # --------------------------------------------------------------------------- readers
 
 
-def _program_len(it: Interpreter, sv: StateValue | None, rotary: bool) -> StateValue | None:
+def _program_len(it: StateSource, sv: StateValue | None, rotary: bool) -> StateValue | None:
     """A length in mm as the program's current units (G20: inches; the coefficients scale too)."""
     if sv is None or rotary or not it.inch:
         return sv
     return StateValue(sv.value / _INCH, {k: Fraction(v) / _INCH for k, v in sv.deps.items()})
 
 
-def _axis_reader(letter: str, what: Callable[[Interpreter, int], StateValue | None], *, program_units: bool,
-                 absent: Fraction = _ZERO) -> Callable[[Interpreter], Reading]:
+def _axis_reader(letter: str, what: Callable[[StateSource, int], StateValue | None], *, program_units: bool,
+                 absent: Fraction = _ZERO) -> Callable[[StateSource], Reading]:
     rotary = letter in "ABC"
 
-    def read(it: Interpreter) -> Reading:
+    def read(it: StateSource) -> Reading:
         i = it.index.get(letter)
         if i is None:
             return absent
@@ -139,20 +192,20 @@ def _axis_reader(letter: str, what: Callable[[Interpreter, int], StateValue | No
     return read
 
 
-def _offset_reader(name: str, letter: str) -> Callable[[Interpreter], Reading]:
+def _offset_reader(name: str, letter: str) -> Callable[[StateSource], Reading]:
     return _axis_reader(letter, lambda it, i: it.state_work_offset(name, i), program_units=False)
 
 
-def _constant(value: int) -> Callable[[Interpreter], Reading]:
+def _constant(value: int) -> Callable[[StateSource], Reading]:
     return lambda it: value
 
 
-def _unknown(it: Interpreter) -> Reading:
+def _unknown(it: StateSource) -> Reading:
     return None
 
 
-def _tool_axis_only(what: Callable[[Interpreter], StateValue | None], letter: str) -> Callable[[Interpreter], Reading]:
-    def read(it: Interpreter) -> Reading:
+def _tool_axis_only(what: Callable[[StateSource], StateValue | None], letter: str) -> Callable[[StateSource], Reading]:
+    def read(it: StateSource) -> Reading:
         i = it.index.get(letter)
         if i is None or i != it.tool_axis:
             return _ZERO

@@ -21,15 +21,29 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
 from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
 
-if TYPE_CHECKING:
-    from .core import Prover
+
+class ScreenedProver(Protocol):
+    """What the screen reads of the prover (:class:`nczones.prover.core.Prover` provides it): the zones,
+    the margin and the tool axis, and a cache of per-zone constants it keeps on the prover.
+
+    Declared here so that the screen does not import the prover's core back.
+    """
+
+    screen_constants: dict | None
+
+    @property
+    def zones(self) -> tuple[SteppedZone | BoxZone | PolygonZone, ...]: ...
+    @property
+    def margin(self) -> Fraction: ...
+    @property
+    def tool_axis(self) -> str | None: ...
 
 __all__ = ["screen_chunk"]
 
@@ -191,7 +205,7 @@ class _ZoneConstants:
                 self.max_t = _RangeTable(maxs_hi, np.minimum)
 
 
-def _constants(prover: Prover, z: SteppedZone, s: int) -> _ZoneConstants:
+def _constants(prover: ScreenedProver, z: SteppedZone, s: int) -> _ZoneConstants:
     cache = prover.screen_constants
     if cache is None:
         cache = {}
@@ -203,7 +217,7 @@ def _constants(prover: Prover, z: SteppedZone, s: int) -> _ZoneConstants:
     return got
 
 
-def screen_chunk(chunk: MotionChunk, prover: Prover) -> list[int]:
+def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
     """Row indices the screen could not prove (to be decided exactly), in order.
 
     Lines, rapids and dwells are screened by the bounding box of their end

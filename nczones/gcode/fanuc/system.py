@@ -45,14 +45,88 @@ length geometry ``#2001-`` and wear ``#2201-``, the other way round: see
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from ...machine import WORK_OFFSETS
 from ..interpreter import INCH
 from .expr import VACANT, SystemVariableUnknown
 
 if TYPE_CHECKING:
-    from .interpreter import FanucInterpreter
+    from collections.abc import Sequence
+
+    from ...motion import Plane
+
+
+class MacroState(Protocol):
+    """What system variables read and write of the Fanuc interpreter
+    (:class:`nczones.gcode.fanuc.interpreter.FanucInterpreter` provides it): modal state, offsets and the
+    tool offset memory.
+
+    Declared here, below the interpreter, so that this module does not import the interpreter back.
+    """
+
+    @property
+    def naxes(self) -> int: ...
+    @property
+    def rotary(self) -> tuple[bool, ...]: ...
+    @property
+    def inch(self) -> bool: ...
+    @property
+    def absolute(self) -> bool: ...
+    @property
+    def plane(self) -> Plane: ...
+    @property
+    def motion(self) -> int | None: ...
+    @property
+    def cycle(self) -> int | None: ...
+    @property
+    def retract_r(self) -> bool: ...
+    @property
+    def feed(self) -> Fraction: ...
+    @property
+    def feed_mode(self) -> int: ...
+    @property
+    def modal_flags(self) -> dict[int, bool]: ...
+    @property
+    def wcs(self) -> str: ...
+    @property
+    def g5x(self) -> dict[str, list[Fraction]]: ...
+    @property
+    def dep_g5x(self) -> dict[str, list[dict[str, int]]]: ...
+    @property
+    def off(self) -> list[Fraction]: ...
+    @property
+    def pos(self) -> Sequence[Fraction]: ...
+    @property
+    def prog(self) -> list[Fraction] | None: ...
+    @property
+    def last(self) -> dict[str, Fraction]: ...
+    @property
+    def track(self) -> bool: ...
+    @property
+    def tool_axis(self) -> int | None: ...
+    @property
+    def tool_selected(self) -> int: ...
+    @property
+    def tool_register(self) -> int | None: ...
+    @property
+    def tlo(self) -> Fraction: ...
+    @property
+    def tlo_register(self) -> int | None: ...
+    @property
+    def tlo_sign(self) -> int: ...
+    @property
+    def h_geometry(self) -> dict[int, Fraction]: ...
+    @property
+    def h_wear(self) -> dict[int, Fraction]: ...
+    @property
+    def d_geometry(self) -> dict[int, Fraction]: ...
+    @property
+    def d_wear(self) -> dict[int, Fraction]: ...
+    @property
+    def clock(self) -> dict[int, tuple[float, Fraction]]: ...
+
+    def recompute_offsets(self) -> None: ...
 
 __all__ = ["read", "write"]
 
@@ -73,20 +147,20 @@ def _unknown(n: int, why: str) -> SystemVariableUnknown:
     return SystemVariableUnknown(f"#{n}", why)
 
 
-def _ranged(it: FanucInterpreter, n: int) -> None:
+def _ranged(it: MacroState, n: int) -> None:
     if it.track:
         raise _unknown(n, f"reading #{n} while parameter ranges are proved: the value depends on the ranges, "
                        "and variables do not carry that dependency")
 
 
-def _units(it: FanucInterpreter, q: Fraction, i: int | None) -> Fraction:
+def _units(it: MacroState, q: Fraction, i: int | None) -> Fraction:
     """A length in mm as the program reads it (inches under G20; rotary axes in degrees)."""
     if it.inch and (i is None or not it.rotary[i]):
         return q / INCH
     return q
 
 
-def _mm(it: FanucInterpreter, q: Fraction, i: int | None) -> Fraction:
+def _mm(it: MacroState, q: Fraction, i: int | None) -> Fraction:
     if it.inch and (i is None or not it.rotary[i]):
         return q * INCH
     return q
@@ -103,7 +177,7 @@ def _offset_table(n: int) -> tuple[str, int] | None:
     return None
 
 
-def _tool_table(it: FanucInterpreter, n: int) -> tuple[dict[int, Fraction], int, bool] | None:
+def _tool_table(it: MacroState, n: int) -> tuple[dict[int, Fraction], int, bool] | None:
     """``(table, register, radius)`` of a tool offset variable (memory C), or None."""
     if 2001 <= n <= 2200:
         return it.h_wear, n - 2000, False
@@ -116,7 +190,7 @@ def _tool_table(it: FanucInterpreter, n: int) -> tuple[dict[int, Fraction], int,
     return None
 
 
-def _modal(it: FanucInterpreter, group: int) -> Fraction | None:
+def _modal(it: MacroState, group: int) -> Fraction | None:
     """The G code (number) of a modal group as #4001.. read it."""
     if group == 1:
         return Fraction(it.motion, 10) if it.motion is not None else None
@@ -149,7 +223,7 @@ def _modal(it: FanucInterpreter, group: int) -> Fraction | None:
     return None
 
 
-def read(it: FanucInterpreter, n: int) -> tuple:
+def read(it: MacroState, n: int) -> tuple:
     """The value of system variable ``#n`` (a double and its exact shadow)."""
     axes = it.naxes
     if 5001 <= n <= 5100:
@@ -209,7 +283,7 @@ def read(it: FanucInterpreter, n: int) -> tuple:
     raise _unknown(n, f"system variable #{n} is not one nczones models (specs/fanuc.md lists those it does)")
 
 
-def write(it: FanucInterpreter, n: int, value: tuple) -> None:
+def write(it: MacroState, n: int, value: tuple) -> None:
     """Set system variable ``#n``: offsets change the motion that follows."""
     where = _offset_table(n)
     if where is not None:
