@@ -64,7 +64,7 @@ import enum
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from fractions import Fraction
-from typing import Any
+from typing import Any, Generic, Protocol, TypeVar
 
 from .errors import Diagnostic, InvalidArgument, MachineFileError
 from .machine import SECTION_PARSERS, Machine, as_written, read_number
@@ -74,6 +74,9 @@ __all__ = [
     "RecoveryVariant",
     "ToolChangeConfig",
     "RecoveryLeg",
+    "PlanTerms",
+    "EXACT_TERMS",
+    "plan_legs",
     "TOOL_CHANGE_KEYS",
     "LEG_NAMES",
     "parse_tool_change_section",
@@ -91,6 +94,34 @@ __all__ = [
 TOOL_CHANGE_KEYS = ("position", "clearance", "retract_distance", "retract_axis", "approach_distance",
                     "approach_feed", "variant", "length_register")
 LEG_NAMES = ("retract", "to tool change", "to restart", "rapid down", "approach", "resume")
+
+
+T = TypeVar("T")
+
+
+class PlanTerms(Protocol[T]):
+    """The arithmetic a recovery plan is computed in: exact numbers (:data:`EXACT_TERMS`) for the
+    controller and a concrete break point, or a witness's own symbolic terms for a break point that is a
+    variable (the prover's SMT terms). The plan needs only these three operations."""
+
+    def number(self, v: Fraction) -> T: ...
+    def plus(self, a: T, d: Fraction) -> T: ...
+    def maximum(self, a: T, b: T) -> T: ...
+
+
+class _ExactTerms:
+    def number(self, v: Fraction) -> Fraction:
+        return v
+
+    def plus(self, a: Fraction, d: Fraction) -> Fraction:
+        return a + d
+
+    def maximum(self, a: Fraction, b: Fraction) -> Fraction:
+        return max(a, b)
+
+
+#: The plan in exact rational numbers.
+EXACT_TERMS: PlanTerms[Fraction] = _ExactTerms()
 
 
 class RecoveryVariant(enum.Enum):
@@ -128,10 +159,14 @@ class ToolChangeConfig:
         >>> cfg.above(Fraction(120)), cfg.above(Fraction(350))
         (Fraction(300, 1), Fraction(350, 1))
         """
+        return self.above_in(EXACT_TERMS, z)
+
+    def above_in(self, terms: PlanTerms[T], z: T) -> T:
+        """:meth:`above` computed in ``terms`` (exact numbers, or a witness's symbolic terms)."""
         if self.clearance is not None:
-            return max(z, self.clearance)
+            return terms.maximum(z, terms.number(self.clearance))
         assert self.retract_distance is not None  # exactly one of the two is set (class docstring)
-        return z + self.retract_distance
+        return terms.plus(z, self.retract_distance)
 
 
 class _Recode:
@@ -321,17 +356,17 @@ def tool_axis_index(machine: Machine) -> int | None:
 
 
 @dataclass(frozen=True, slots=True)
-class RecoveryLeg:
-    """One controller-made motion of a recovery (machine coordinates)."""
+class RecoveryLeg(Generic[T]):
+    """One controller-made motion of a recovery (machine coordinates, as numbers or as a witness's terms)."""
 
     name: str
     kind: SegmentKind  # RAPID or LINE
-    start: tuple[Fraction, ...]
-    end: tuple[Fraction, ...]
+    start: tuple[T, ...]
+    end: tuple[T, ...]
     tool_length: Fraction
     feed_mm_min: Fraction | None = None
 
-    def segment(self, axes: tuple[str, ...], like: Segment | None = None) -> Segment:
+    def segment(self: RecoveryLeg[Fraction], axes: tuple[str, ...], like: Segment | None = None) -> Segment:
         """As a :class:`Segment` (block and source of ``like``, ``derived`` names the leg)."""
         return Segment(self.kind, self.start, self.end, axes, block=like.block if like else 0,
                        span=like.span if like else None, tool_length=self.tool_length,
@@ -341,8 +376,8 @@ class RecoveryLeg:
 
 def recovery_legs(cfg: ToolChangeConfig, machine: Machine, break_point: Sequence[Fraction],
                   restart_point: Sequence[Fraction],
-                  length: Fraction, new_length: Fraction) -> tuple[RecoveryLeg, ...]:
-    """The five moves from the break point ``P`` to the restart point ``R'`` (module docstring).
+                  length: Fraction, new_length: Fraction) -> tuple[RecoveryLeg[Fraction], ...]:
+    """The five moves from the break point ``P`` to the restart point ``R'`` (module docstring), exact.
 
     ``restart_point`` is ``R`` for the broken tool; the legs end at ``R'`` =
     ``R`` shifted by ``new_length - length`` on the tool axis.
@@ -358,18 +393,41 @@ def recovery_legs(cfg: ToolChangeConfig, machine: Machine, break_point: Sequence
      ('to restart', ['200', '100', '300']), ('rapid down', ['200', '100', '235']),
      ('approach', ['200', '100', '230'])]
     """
+    return plan_legs(cfg, machine, tuple(Fraction(v) for v in break_point),
+                     tuple(Fraction(v) for v in restart_point), length, new_length, EXACT_TERMS)
+
+
+def plan_legs(cfg: ToolChangeConfig, machine: Machine, break_point: Sequence[T], restart_point: Sequence[T],
+              length: Fraction, new_length: Fraction, terms: PlanTerms[T]) -> tuple[RecoveryLeg[T], ...]:
+    """The recovery plan in ``terms``: which legs, from where to where, with which tool and how moved.
+
+    :func:`recovery_legs` is this plan in exact numbers; a witness that treats the break point as a
+    variable passes its own terms (the prover's SMT terms of ``P(s)``) and gets the same legs as terms.
+    A coordinate the plan does not change is passed through as the very same term, so a leg whose ends
+    differ in one coordinate only moves along that axis alone.
+
+    >>> from nczones.machine import load_machine
+    >>> m = load_machine("specs/examples/machines/mill_toolchange.toml")
+    >>> class Text:
+    ...     def number(self, v): return str(v)
+    ...     def plus(self, a, d): return a if d == 0 else f"{a}+{d}"
+    ...     def maximum(self, a, b): return f"max({a},{b})"
+    >>> P = ("px", "py", "pz")
+    >>> [(l.name, l.end) for l in plan_legs(tool_change_config(m), m, P, P, Fraction(120), Fraction(120), Text())]
+    ... # doctest: +NORMALIZE_WHITESPACE
+    [('retract', ('px', 'py', 'max(pz,300)')), ('to tool change', ('560', '200', '380')),
+     ('to restart', ('px', 'py', 'max(max(pz,300),pz+5)')), ('rapid down', ('px', 'py', 'pz+5')),
+     ('approach', ('px', 'py', 'pz'))]
+    """
     axes = machine.axis_names
     z = axes.index(cfg.retract_axis)
     ti = tool_axis_index(machine)
-    P = tuple(Fraction(v) for v in break_point)
-    restart = list(Fraction(v) for v in restart_point)
-    if ti is not None:
-        restart[ti] += new_length - length
-    R = tuple(restart)
-    T = cfg.position_tuple(axes)
-    P1 = tuple(cfg.above(v) if k == z else v for k, v in enumerate(P))
-    A = tuple(v + cfg.approach_distance if k == z else v for k, v in enumerate(R))
-    Q = tuple(max(cfg.above(v), A[z]) if k == z else v for k, v in enumerate(R))
+    P = tuple(break_point)
+    R = tuple(terms.plus(v, new_length - length) if k == ti else v for k, v in enumerate(restart_point))
+    T = tuple(terms.number(v) for v in cfg.position_tuple(axes))
+    P1 = tuple(cfg.above_in(terms, v) if k == z else v for k, v in enumerate(P))
+    A = tuple(terms.plus(v, cfg.approach_distance) if k == z else v for k, v in enumerate(R))
+    Q = tuple(terms.maximum(cfg.above_in(terms, v), A[z]) if k == z else v for k, v in enumerate(R))
     rapid = SegmentKind.RAPID
     return (
         RecoveryLeg("retract", rapid, P, P1, length),

@@ -9,17 +9,19 @@ break parameter is a variable.
   it is a point ``(x, y)`` with ``(x-cx)^2 + (y-cy)^2 = r^2`` inside the swept
   sector (half-plane tests, exact); on a helix the other axes are enclosed
   between their start and end values (an over-approximation).
-* The retract height is ``max(P_z, clearance)`` (or ``P_z + distance``), an
-  ``ite`` term; the restart point is the constant sequence start
-  (``start``) or ``P(s)`` itself (``breakpoint``), moved by the length
-  difference of the replacement tool.
+* The legs — which, from where to where, with which tool, rapid or feed —
+  are the shared plan (:func:`nczones.recovery.plan_legs`) computed in SMT
+  terms of the break variables: the restart point is the constant sequence
+  start (``start``) or ``P(s)`` itself (``breakpoint``), the plan's maxima
+  (the retract height ``max(P_z, clearance)``) become ``ite`` terms.  Only
+  how a leg is encoded is decided here.
 * A straight leg from ``A`` to ``B`` is ``A + t (B - A)``, ``0 <= t <= 1``: with
   ``A`` or ``B`` depending on ``s`` this has products ``s t`` (QF_NRA, decided
-  exactly by Z3's nlsat).  A single-axis leg (retract, rapid down, approach)
-  is the coordinate between its two ends (linear).  A dogleg rapid (the
-  machine's ``rapid_mode``) is, at time ``tau >= 0``,
-  ``A_i + sign(d_i) min(rate_i tau, |d_i|)`` with ``d = B - A`` (linear with
-  ``ite``).
+  exactly by Z3's nlsat).  A leg whose ends differ in one coordinate only (the
+  plan's retract, rapid down and approach) is that coordinate between its two
+  ends (linear).  A dogleg rapid (the machine's ``rapid_mode``) is, at time
+  ``tau >= 0``, ``A_i + sign(d_i) min(rate_i tau, |d_i|)`` with ``d = B - A``
+  (linear with ``ite``).
 
 One query per (cutting motion, leg) asks for a break point and a point of
 the leg outside the allowed set (exactly as :mod:`.smt` encodes zones, tip
@@ -48,10 +50,12 @@ from typing import Any
 from ..machine import Machine, RapidMode
 from ..motion import Segment, SegmentKind, segments_of
 from ..recovery import (
+    RecoveryLeg,
     RecoveryVariant,
     ToolChangeConfig,
     is_cutting,
     motion_sequences,
+    plan_legs,
     recovery_legs,
     replacement_length,
     shift_segment,
@@ -68,7 +72,6 @@ from .smt import add, mul, or_all, q, sub, zone_violation
 __all__ = ["RecoveryOutcome", "verify_recovery"]
 
 F0, F1 = Fraction(0), Fraction(1)
-LEGS = ("retract", "to tool change", "to restart", "rapid down", "approach")
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,6 +92,22 @@ def _ite_min(a: str, b: str) -> str:
     return f"(ite (<= {a} {b}) {a} {b})"
 
 
+class _SmtTerms:
+    """The shared recovery plan's arithmetic in SMT-LIB terms of the break variables."""
+
+    def number(self, v: Fraction) -> str:
+        return q(v)
+
+    def plus(self, a: str, d: Fraction) -> str:
+        return a if d == 0 else add(a, q(d))
+
+    def maximum(self, a: str, b: str) -> str:
+        return a if a == b else _ite_max(a, b)
+
+
+_SMT_TERMS = _SmtTerms()
+
+
 class _Encoder:
     """SMT terms of the recovery path of one cutting motion, as functions of the break variables."""
 
@@ -96,8 +115,6 @@ class _Encoder:
         self.m = machine
         self.cfg = cfg
         self.axes = machine.axis_names
-        self.z = self.axes.index(cfg.retract_axis)
-        self.ti = tool_axis_index(machine)
         self.margin = margin
         self.tool_axis = machine.allowed.tool_axis
         self.zones = machine.allowed.zones
@@ -151,32 +168,23 @@ class _Encoder:
                 names.append(v)
         return body, pt, names
 
-    def above(self, z: str) -> str:
-        if self.cfg.clearance is not None:
-            return _ite_max(z, q(self.cfg.clearance))
-        assert self.cfg.retract_distance is not None  # clearance or retract_distance is set
-        return add(z, q(self.cfg.retract_distance))
+    def legs(self, P: list[str], R: list[str], L: Fraction, L2: Fraction) -> tuple[RecoveryLeg[str], ...]:
+        """The shared plan's five legs from break point ``P`` to restart point ``R``, in SMT terms."""
+        return plan_legs(self.cfg, self.m, P, R, L, L2, _SMT_TERMS)
 
-    def legs(self, P: list[str], R: list[str], L: Fraction, L2: Fraction) -> tuple[Any, ...]:
-        """(name, kind, start terms, end terms, tool length) of the five legs."""
-        z, ti = self.z, self.ti
-        R2 = [add(r, q(L2 - L)) if k == ti and L2 != L else r for k, r in enumerate(R)]
-        T = [q(v) for v in self.cfg.position_tuple(self.axes)]
-        P1 = [self.above(p) if k == z else p for k, p in enumerate(P)]
-        A = [add(r, q(self.cfg.approach_distance)) if k == z else r for k, r in enumerate(R2)]
-        Q = [_ite_max(self.above(r), A[z]) if k == z else r for k, r in enumerate(R2)]
-        return (("retract", "single", P, P1, L), ("to tool change", "rapid", P1, T, L),
-                ("to restart", "rapid", T, Q, L2), ("rapid down", "single", Q, A, L2),
-                ("approach", "single", A, R2, L2))
-
-    def leg_points(self, kind: str, A: list[str], B: list[str], body: list[str]) -> list[str]:
-        if kind == "single":
+    def leg_points(self, leg: RecoveryLeg[str], body: list[str]) -> list[str]:
+        """The terms of a point of ``leg`` (its variables declared in ``body``)."""
+        A, B = list(leg.start), list(leg.end)
+        moving = [k for k, (a, b) in enumerate(zip(A, B)) if a != b]
+        if len(moving) <= 1:  # along one axis (or standing): that coordinate between the two ends
+            if not moving:
+                return A
+            k = moving[0]
             body.append("(declare-const w Real)")
-            k = self.z
             lo, hi = _ite_min(A[k], B[k]), _ite_max(A[k], B[k])
             body.append(f"(assert (and (<= {lo} w) (<= w {hi})))")
             return [("w" if i == k else a) for i, a in enumerate(A)]
-        if self.m.rapid_mode is RapidMode.DOGLEG:
+        if leg.kind is SegmentKind.RAPID and self.m.rapid_mode is RapidMode.DOGLEG:
             body.append("(declare-const tau Real)(assert (>= tau 0.0))")
             out = []
             for i, (a, b) in enumerate(zip(A, B)):
@@ -258,10 +266,11 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
         decl, P, names = bp
         S = segs[seq_of[i]].start
         R = P if cfg.variant is RecoveryVariant.BREAKPOINT else [q(v) for v in S]
-        for name, kind, A, B, Lleg in enc.legs(P, R, L, L2):
+        for leg in enc.legs(P, R, L, L2):
+            name = leg.name
             body = list(decl)
-            pt = enc.leg_points(kind, A, B, body)
-            body.append(f"(assert {enc.outside(pt, Lleg, body)})")
+            pt = enc.leg_points(leg, body)
+            body.append(f"(assert {enc.outside(pt, leg.tool_length, body)})")
             stats["recovery_queries"] += 1
             try:
                 ans = solver.check("".join(body), names)
