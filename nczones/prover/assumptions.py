@@ -27,9 +27,11 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "its doubles), or with dialect = \"fanuc\" what specs/fanuc.md says a Fanuc control makes of it; a "
     "code nczones cannot model makes the verdict unknown, never safe.",
     "Fanuc dialect: macro values are IEEE doubles, as the manuals state, and a position computed from "
-    "them, and a point moved by rotation (G68), scaling (G51) or polar input (G16), is rounded to the "
-    "least input increment, halves away from zero; a control that rounds otherwise can stand one "
-    "increment away from the proved path.",
+    "them, and a point moved by scaling (G51), is rounded to the least input increment, halves away from "
+    "zero; a control that rounds otherwise can stand one increment away from the proved path. A point "
+    "moved by rotation (G68) or polar input (G16) is the exact point rounded to the nearest increment: "
+    "the control computes it to within a millionth of an increment (a point nearer than that to halfway "
+    "between two increments makes the verdict unknown).",
     "The machine moves exactly along the programmed path: straight lines, exact circles (spirals for "
     "arcs whose end is off the circle within the tolerance), exact NURBS, rapids straight or dogleg as "
     "the machine file says; no corner blending (G64), following error or overshoot.",

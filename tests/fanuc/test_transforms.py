@@ -158,3 +158,85 @@ def test_range_verdicts_agree_with_their_end_values(width, transform):
         verify_text(prog, replace(m, offsets=MappingProxyType({"G54": (Q(100 + d), Q(50), Q(0))}))).verdict.label
         == "safe" for d in (-width, width))
     assert (ranged == "safe") == ends_safe
+
+
+# --------------------------------------------------------------------------- certified rotation and polar points
+
+def _reference_round(value, step):
+    """``value`` (an mpmath number) rounded to a multiple of ``step``, halves away from zero, and how far
+    (in steps) it is from the nearest halfway point."""
+    import mpmath
+
+    k = value / (mpmath.mpf(step.numerator) / step.denominator)
+    n = mpmath.floor(abs(k) + mpmath.mpf(1) / 2)
+    tie_distance = abs(abs(k) - mpmath.floor(abs(k)) - mpmath.mpf(1) / 2)
+    return Q(int(-n if k < 0 else n)) * step, tie_distance
+
+
+def _mp(q):
+    import mpmath
+
+    return mpmath.mpf(q.numerator) / q.denominator
+
+
+_STEP = Q(1, 1000)
+_decimals = st.integers(-2_000_000, 2_000_000).map(lambda n: Q(n, 1000))  # -2000..2000 mm on the 0.001 grid
+# angles with up to 3 decimals, often on the rational angles (multiples of 30 and 45 degrees)
+_angles = st.one_of(st.integers(-720_000, 720_000).map(lambda n: Q(n, 1000)),
+                    st.integers(-24, 24).map(lambda n: Q(30 * n)), st.integers(-16, 16).map(lambda n: Q(45 * n)))
+
+
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(_angles, _decimals, _decimals, _decimals, _decimals)
+def test_certified_rotation_is_the_exact_rotation_rounded(angle, x, y, cx, cy):
+    """Whenever the block is not unknown, the rotated point is the 50-digit mpmath rotation rounded to the
+    increment; it is unknown only within the guard of a rounding tie."""
+    import mpmath
+
+    from nczones.gcode.fanuc.transforms import TIE_GUARD, PointNotCertain, Rotation, rotate
+
+    mpmath.mp.dps = 50
+    t = _mp(angle) * mpmath.pi / 180
+    dx, dy = _mp(x - cx), _mp(y - cy)
+    ref = [_reference_round(dx * mpmath.cos(t) - dy * mpmath.sin(t), _STEP),
+           _reference_round(dx * mpmath.sin(t) + dy * mpmath.cos(t), _STEP)]
+    try:
+        got = rotate(Rotation(0, 1, cx, cy, angle), [x, y, Q(7)], _STEP)
+    except PointNotCertain:
+        assert min(d for _, d in ref) <= _mp(TIE_GUARD) + mpmath.mpf(10) ** -30
+        return
+    assert got == [cx + ref[0][0], cy + ref[1][0], Q(7)]
+
+
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(_angles, st.integers(0, 2_000_000).map(lambda n: Q(n, 1000)))
+def test_certified_polar_point_is_the_exact_point_rounded(angle, radius):
+    import mpmath
+
+    from nczones.gcode.fanuc.transforms import TIE_GUARD, PointNotCertain, polar_point
+
+    mpmath.mp.dps = 50
+    t = _mp(angle) * mpmath.pi / 180
+    ref = [_reference_round(_mp(radius) * mpmath.cos(t), _STEP), _reference_round(_mp(radius) * mpmath.sin(t), _STEP)]
+    try:
+        got = polar_point(radius, angle, _STEP)
+    except PointNotCertain:
+        assert min(d for _, d in ref) <= _mp(TIE_GUARD) + mpmath.mpf(10) ** -30
+        return
+    assert got == (ref[0][0], ref[1][0])
+
+
+def test_a_point_on_a_rounding_tie_is_unknown_not_rounded_by_a_guess():
+    # G68 R30 about (0, 0): X0 Y0.001 -> X' = -0.001 sin 30 = -0.0005, exactly halfway between two increments:
+    # a control computing sin 30 in doubles (0.49999999999999994) stands on 0, one rounding halves away on
+    # -0.001.  The block is unknown; the moves before it are kept.
+    out, run = segs(START + "G68 X0 Y0 R30.\nG1 X0 Y0.001 F100.\nG1 X5.\n")
+    assert run.status == "unknown" and run.unsupported[0].code == "G68"
+    assert "halfway between two increments" in run.unsupported[0].reason
+    assert len(out) == 1
+    # G16: radius 0.001 at 30 degrees: Y = 0.0005, a tie as well
+    out, run = segs(START + "G16 G1 X0.001 Y30. F100.\n")
+    assert run.status == "unknown" and run.unsupported[0].code == "G16"
+    # one increment further from the tie it is certain: 0.003 sin 30 = 0.0015 is a tie too, 0.002 sin 30 is not
+    out, run = segs(START + "G16 G1 X0.002 Y30. F100.\nG15\n")
+    assert run.status == "complete" and tuple(out[-1].end[:2]) == (Q("100.002"), Q("50.001"))

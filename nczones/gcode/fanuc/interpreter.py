@@ -50,7 +50,17 @@ from ..interpreter import (
     sqrt_diff_exceeds,
 )
 from .expr import FanucVariables
-from .transforms import Mirror, Polar, Rotation, Scaling, mirror, polar_point, rotate, scale
+from .transforms import (
+    Mirror,
+    PointNotCertain,
+    Polar,
+    Rotation,
+    Scaling,
+    mirror,
+    polar_point,
+    rotate,
+    scale,
+)
 
 #: A block's axis words (axis index, word) and its other words by letter.
 AxisWords: TypeAlias = "list[tuple[int, Word]]"
@@ -805,7 +815,11 @@ class FanucInterpreter(Interpreter):
             if radius is None or angle is None:
                 self.unknown("G16", "the first polar coordinate command needs both the radius and the angle")
                 return None
-            p[polar.ia], p[polar.ib] = polar_point(radius, angle, self.settings.increment_mm)
+            try:
+                p[polar.ia], p[polar.ib] = polar_point(radius, angle, self.settings.increment_mm)
+            except PointNotCertain as e:
+                self.unknown("G16", e.reason)
+                return None
             pd[polar.ia] = {}
             pd[polar.ib] = {}
             self.polar = Polar(polar.ia, polar.ib, radius, angle)
@@ -823,7 +837,11 @@ class FanucInterpreter(Interpreter):
             q = mirror(self.mirroring, q)
             mixed |= {i for i, _c in self.mirroring.axes}
         if self.rotation is not None:
-            q = rotate(self.rotation, q, step)
+            try:
+                q = rotate(self.rotation, q, step)
+            except PointNotCertain as e:  # the block is unknown; the candidate keeps the state going
+                self.unknown("G68", e.reason)
+                q = e.point
             mixed |= {self.rotation.ia, self.rotation.ib}
         end = [qadd(q[i], self.off[i]) for i in range(self.naxes)]
         self._tlo_shift = None  # the offsets hold the new tool length: this move carries it out

@@ -4,21 +4,148 @@ image (G51.1) and coordinate rotation (G68).
 Each acts on the *program point* (workpiece coordinates, mm, before offsets) about its centre in the
 workpiece system; the machine point is the transformed point plus the offsets (EXT, G54.., G52, G92, tool
 length).  The control holds positions as whole least increments, so a point the transform moves off the
-decimal grid (a rotation, a polar point, a scale factor) is rounded to the increment, halves away from zero,
-as :func:`~nczones.gcode.fanuc.expr.round_to` rounds; scaling and mirroring of decimals stay exact where
-they land on the grid.  One transform at a time: their order when combined differs between the manuals'
-models, and a combination is ``unknown``.
+decimal grid is rounded to the increment.  A scale factor's point is rational and is rounded exactly,
+halves away from zero, as :func:`~nczones.gcode.fanuc.expr.round_to` rounds; scaling and mirroring of
+decimals stay exact where they land on the grid.
+
+A rotation (G68) or a polar point (G16) involves cosines and sines: the point is *certified*, not computed
+in doubles.  The cosine and sine of the decimal angle are enclosed in rational intervals (exact where they
+are rational: multiples of 30 or 90 degrees, by Niven's theorem the only rational values), the coordinate
+is enclosed in a rational interval around the exact real value, and it is rounded to the nearest increment
+only when no rounding tie (a halfway point between two increments) lies within :data:`TIE_GUARD`
+increments of that interval: then every control that computes the point to within that guard and rounds to
+nearest, whatever it does with halves, stands on the same increment.  Otherwise
+:class:`PointNotCertain` is raised and the block is ``unknown`` (the point is not known exactly).  One
+transform at a time: their order when combined differs between the manuals' models, and a combination is
+``unknown``.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from fractions import Fraction
 
 from .expr import round_to
 
-__all__ = ["Rotation", "Scaling", "Mirror", "Polar", "rotate", "scale", "mirror", "polar_point"]
+__all__ = ["Rotation", "Scaling", "Mirror", "Polar", "PointNotCertain", "TIE_GUARD", "cos_sin_enclosure",
+           "certified_round", "rotate", "scale", "mirror", "polar_point"]
+
+#: How close (in least increments) to a rounding tie a rotated or polar coordinate may be before the point
+#: counts as not known: the precision the control is assumed to compute a transform with.
+TIE_GUARD = Fraction(1, 10**6)
+
+# pi to 45 decimals, and an upper bound one unit in the last place above
+_PI_LO = Fraction("3.141592653589793238462643383279502884197169399")
+_PI_HI = _PI_LO + Fraction(1, 10**45)
+_BITS = 128  # fixed point: integers in units of 2^-128
+_ITERATIONS = 17  # Taylor terms: the first omitted power is 34 or 35, (pi/2)^34 / 34! < 2e-32 < 2^-100
+#: a bound of the fixed-point sums' error, with the Taylor remainder: 2^16 units of 2^-128 (each of the
+#: 17 steps adds at most a few units; the margin is wide) plus 2^-100
+_ERROR = Fraction(2**16, 2**_BITS) + Fraction(1, 2**100)
+
+#: cos and sin of the angles (degrees, in [0, 360)) where they are rational
+_EXACT_COS = {Fraction(a): Fraction(c) for a, c in ((0, 1), (60, "1/2"), (90, 0), (120, "-1/2"), (180, -1),
+                                                     (240, "-1/2"), (270, 0), (300, "1/2"))}
+_EXACT_SIN = {Fraction(a): Fraction(s) for a, s in ((0, 0), (30, "1/2"), (90, 1), (150, "1/2"), (180, 0),
+                                                     (210, "-1/2"), (270, -1), (330, "-1/2"))}
+
+Interval = tuple[Fraction, Fraction]
+
+
+class PointNotCertain(Exception):
+    """A rotated or polar coordinate lies within :data:`TIE_GUARD` increments of a rounding tie.
+
+    ``reason`` says which; ``point`` is the nearest-increment candidate (for a caller that goes on after
+    recording the block as unknown)."""
+
+    def __init__(self, reason: str, point: list[Fraction]):
+        super().__init__(reason)
+        self.reason = reason
+        self.point = point
+
+
+def _taylor(t_units: int, first: int) -> int:
+    """``sum (-1)^k t^(2k+first) / (2k+first)!`` for ``t = t_units / 2^128``, in units of 2^-128
+    (``first`` 0: cosine, 1: sine; 0 <= t <= pi/2; error within :data:`_ERROR`)."""
+    one = 1 << _BITS
+    t2 = t_units * t_units >> _BITS
+    term = one if first == 0 else t_units
+    total = 0
+    n = first
+    for _ in range(_ITERATIONS):
+        total += term
+        term = -(term * t2 >> _BITS) // ((n + 1) * (n + 2))
+        n += 2
+    return total
+
+
+@functools.lru_cache(maxsize=256)
+def cos_sin_enclosure(angle_deg: Fraction) -> tuple[Interval, Interval]:
+    """Rational intervals that contain ``cos`` and ``sin`` of ``angle_deg`` degrees (points where exact).
+
+    The angle is reduced exactly to a quadrant and an angle ``r`` in [0, 90) degrees; ``r`` in radians
+    lies between ``r * pi_lo / 180`` and ``r * pi_hi / 180``, where cosine falls and sine rises, so their
+    Taylor sums at the two ends, widened by a bound of the remainder, enclose them.
+
+    >>> cos_sin_enclosure(Fraction(90))
+    ((Fraction(0, 1), Fraction(0, 1)), (Fraction(1, 1), Fraction(1, 1)))
+    >>> (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(Fraction(45))
+    >>> c_lo**2 < Fraction(1, 2) < c_hi**2 and s_lo**2 < Fraction(1, 2) < s_hi**2 and c_hi - c_lo < 1e-25
+    True
+    """
+    a = Fraction(angle_deg) % 360
+    c = _EXACT_COS.get(a)
+    s = _EXACT_SIN.get(a)
+    if c is not None and s is not None:
+        return (c, c), (s, s)
+    quadrant, r = divmod(a, 90)
+    lo_units = math.floor(r * _PI_LO / 180 * 2**_BITS)  # r in radians lies in [lo_units, hi_units] / 2^128
+    hi_units = math.ceil(r * _PI_HI / 180 * 2**_BITS)
+    unit = Fraction(1, 2**_BITS)
+    cr = (_taylor(hi_units, 0) * unit - _ERROR, _taylor(lo_units, 0) * unit + _ERROR)
+    sr = (_taylor(lo_units, 1) * unit - _ERROR, _taylor(hi_units, 1) * unit + _ERROR)
+    neg = lambda iv: (-iv[1], -iv[0])  # noqa: E731
+    cos_iv, sin_iv = {0: (cr, sr), 1: (neg(sr), cr), 2: (neg(cr), neg(sr)), 3: (sr, neg(cr))}[int(quadrant)]
+    if c is not None:
+        cos_iv = (c, c)
+    if s is not None:
+        sin_iv = (s, s)
+    return cos_iv, sin_iv
+
+
+def _times(v: Fraction, iv: Interval) -> Interval:
+    a, b = v * iv[0], v * iv[1]
+    return (a, b) if a <= b else (b, a)
+
+
+def certified_round(enclosure: Interval, step: Fraction) -> Fraction | None:
+    """The multiple of ``step`` nearest to every value of ``enclosure`` widened by :data:`TIE_GUARD`
+    steps, or None when a rounding tie (a halfway point between two multiples) lies within that.
+
+    >>> step = Fraction(1, 1000)
+    >>> certified_round((Fraction("0.0004"), Fraction("0.0004")), step)
+    Fraction(0, 1)
+    >>> certified_round((Fraction("0.0005"), Fraction("0.0005")), step) is None  # a tie: a control's halves
+    True
+    """
+    lo = enclosure[0] / step - TIE_GUARD - Fraction(1, 2)
+    hi = enclosure[1] / step + TIE_GUARD - Fraction(1, 2)
+    if math.floor(hi) >= math.ceil(lo):  # an integer k with lo <= k <= hi: the tie (k + 1/2) step
+        return None
+    return (math.floor(hi) + 1) * step
+
+
+def _coordinate(terms: list[tuple[Fraction, Interval]], step: Fraction, what: str) -> Fraction:
+    lo = sum((_times(v, iv)[0] for v, iv in terms), Fraction(0))
+    hi = sum((_times(v, iv)[1] for v, iv in terms), Fraction(0))
+    got = certified_round((lo, hi), step)
+    if got is None:
+        raise PointNotCertain(f"{what} is {float((lo + hi) / 2):.12g} mm, within {TIE_GUARD} increments of "
+                              f"halfway between two increments of {step} mm: the increment the control "
+                              "stands on depends on its arithmetic", [])
+    return got
 
 
 @dataclass(frozen=True, slots=True)
@@ -30,11 +157,6 @@ class Rotation:
     ca: Fraction
     cb: Fraction
     angle: Fraction
-
-    @property
-    def cos_sin(self) -> tuple[float, float]:
-        t = float(self.angle) * math.pi / 180.0
-        return math.cos(t), math.sin(t)
 
 
 @dataclass(frozen=True, slots=True)
@@ -63,15 +185,41 @@ class Polar:
 
 
 def rotate(rot: Rotation, p: list[Fraction], step: Fraction) -> list[Fraction]:
-    """The rotated point (doubles, rounded to ``step``); the other axes unchanged.
+    """The rotated point, certified and rounded to ``step`` (module docstring); the other axes unchanged.
+
+    Raises :class:`PointNotCertain` when a coordinate is within :data:`TIE_GUARD` of a rounding tie.
 
     >>> r = Rotation(0, 1, Fraction(0), Fraction(0), Fraction(90))
     >>> rotate(r, [Fraction(10), Fraction(0), Fraction(5)], Fraction(1, 1000))
     [Fraction(0, 1), Fraction(10, 1), Fraction(5, 1)]
+    >>> rotate(Rotation(0, 1, Fraction(0), Fraction(0), Fraction(30)), [Fraction(0), Fraction(1, 1000)],
+    ...        Fraction(1, 1000))  # x' = -0.001 sin 30 = -0.0005 exactly, a tie
+    Traceback (most recent call last):
+    ...
+    nczones.gcode.fanuc.transforms.PointNotCertain: G68 rotation: X is -0.0005 mm, ...
     """
-    c, s = rot.cos_sin
-    x = float(p[rot.ia] - rot.ca)
-    y = float(p[rot.ib] - rot.cb)
+    c, s = cos_sin_enclosure(rot.angle)
+    x = p[rot.ia] - rot.ca
+    y = p[rot.ib] - rot.cb
+    out = list(p)
+    names = "XYZABCUVW"
+    try:
+        out[rot.ia] = rot.ca + _coordinate([(x, c), (-y, s)], step, f"G68 rotation: {_axis(names, rot.ia)}")
+        out[rot.ib] = rot.cb + _coordinate([(x, s), (y, c)], step, f"G68 rotation: {_axis(names, rot.ib)}")
+    except PointNotCertain as e:
+        raise PointNotCertain(e.reason, _nearest(rot, p, step)) from None
+    return out
+
+
+def _axis(names: str, i: int) -> str:
+    return names[i] if i < len(names) else f"axis {i + 1}"
+
+
+def _nearest(rot: Rotation, p: list[Fraction], step: Fraction) -> list[Fraction]:
+    """A candidate point (doubles, rounded) for a caller that goes on after the block became unknown."""
+    t = float(rot.angle) * math.pi / 180.0
+    c, s = math.cos(t), math.sin(t)
+    x, y = float(p[rot.ia] - rot.ca), float(p[rot.ib] - rot.cb)
     out = list(p)
     out[rot.ia] = rot.ca + round_to((x * c - y * s, None), step)
     out[rot.ib] = rot.cb + round_to((x * s + y * c, None), step)
@@ -105,11 +253,23 @@ def mirror(mi: Mirror, p: list[Fraction]) -> list[Fraction]:
 
 
 def polar_point(radius: Fraction, angle: Fraction, step: Fraction) -> tuple[Fraction, Fraction]:
-    """``(r cos a, r sin a)`` (degrees), rounded to ``step``.
+    """``(r cos a, r sin a)`` (degrees), certified and rounded to ``step`` (module docstring).
+
+    Raises :class:`PointNotCertain` when a coordinate is within :data:`TIE_GUARD` of a rounding tie.
 
     >>> polar_point(Fraction(10), Fraction(30), Fraction(1, 1000))
     (Fraction(433, 50), Fraction(5, 1))
+    >>> polar_point(Fraction(1, 1000), Fraction(30), Fraction(1, 1000))  # 0.001 sin 30 = 0.0005, a tie
+    Traceback (most recent call last):
+    ...
+    nczones.gcode.fanuc.transforms.PointNotCertain: G16 polar point: the angle axis is 0.0005 mm, ...
     """
-    t = float(angle) * math.pi / 180.0
-    r = float(radius)
-    return round_to((r * math.cos(t), None), step), round_to((r * math.sin(t), None), step)
+    c, s = cos_sin_enclosure(angle)
+    try:
+        return (_coordinate([(radius, c)], step, "G16 polar point: the radius axis"),
+                _coordinate([(radius, s)], step, "G16 polar point: the angle axis"))
+    except PointNotCertain as e:
+        t = float(angle) * math.pi / 180.0
+        r = float(radius)
+        raise PointNotCertain(e.reason, [round_to((r * math.cos(t), None), step),
+                                         round_to((r * math.sin(t), None), step)]) from None
