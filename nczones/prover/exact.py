@@ -584,13 +584,20 @@ def box_certainly_violates(
 
     Sound for box and stepped zones: their predicate (with margin) is
     constant on the open cells cut by the zone constants shifted by
-    ``+-margin``; if no such value lies in ``[lo_a, hi_a]`` on any zone axis,
-    one test at the box centre decides the whole box.  Polygon zones: True
+    ``+-margin``; if no such value lies in ``[lo_a, hi_a]`` on any zone axis
+    where the box has width (an axis of one value, even a shifted constant,
+    is the centre's own), one test at the box centre decides the whole box.  Polygon zones: True
     only when the box grown by the margin meets no edge and its centre
     violates (the predicate is then constant over the box).
     """
     shift = tool_length if (zone.point is ZonePoint.TIP and tool_length) else F0
     centre = {a: (lo[a] + hi[a]) / 2 for a in lo}
+    if isinstance(zone, BoxZone) and not zone.forbid:
+        for a, z_lo, z_hi in zone.limits:  # one axis on which every point's margin box leaves the zone
+            if a in lo:
+                s = shift if a == allowed.tool_axis else F0
+                if (z_lo is not None and hi[a] - s - margin < z_lo) or (z_hi is not None and lo[a] - s + margin > z_hi):
+                    return True
     if isinstance(zone, PolygonZone):
         from ..zones.model import segment_meets_open_box  # exact clipping helper
 
@@ -603,7 +610,7 @@ def box_certainly_violates(
     else:
         axes_to_check = list(zone.axes)
     for a in axes_to_check:
-        if a not in lo:
+        if a not in lo or lo[a] == hi[a]:  # one value on this axis: the centre's test covers it
             continue
         s = shift if a == allowed.tool_axis else F0
         for c in zone_constants(zone, a):
