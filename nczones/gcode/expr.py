@@ -145,6 +145,11 @@ class Parameters:
             self.set(k, v)
 
     # -- public API -------------------------------------------------------------
+    @property
+    def scopes(self) -> list[dict[str, Value]]:
+        """The local scopes of named parameters, innermost last (one per o-word call)."""
+        return self._scopes
+
     def get(self, key: int | str) -> float:
         """The controller's double for ``#key`` (KeyError for an unset name)."""
         return float(self.read(key)[0])

@@ -1072,7 +1072,7 @@ _XYN[list(b"XYN")] = True
 
 def _cycle_state_ok(it: Any) -> bool:
     """The state in which a hole line (X/Y words only) under G81/G82 is exactly what :func:`_fast_cycle_run` builds."""
-    comp = getattr(it, "_comp", None)
+    comp = getattr(it, "cutter_comp", None)
     return (not it.unsupported and it.motion in (810, 820) and it.last_cycle == it.motion
             and it.absolute and it.plane is Plane.XY and it.feed_mode == 94 and it.feed > 0
             and not it.comp_on and not it.comp_just_off and (comp is None or comp.side is None)

@@ -36,7 +36,7 @@ import math
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
@@ -48,6 +48,9 @@ from .lexer import PlainBlock, fraction_raw, to_fraction
 from .segments import dadd, make_segment, with_tool_deps
 from .splines import SPLINE_CODES, spline_block, spline_pending
 from .state import StateParameter, StateTable, StateValue, linuxcnc_state_parameters
+
+if TYPE_CHECKING:
+    from .cutter_comp import CutterComp
 
 _NAME_PENDING = "NURBS"
 
@@ -348,7 +351,7 @@ class Interpreter:
         self.comp_on = False
         self.comp_just_off = False
         #: LinuxCNC cutter radius compensation, when the machine file asks for it (nczones.gcode.cutter_comp)
-        self._comp = None
+        self._comp: CutterComp | None = None
         if getattr(machine, "cutter_compensation", "none") == "linuxcnc":
             from .cutter_comp import CutterComp
 
@@ -395,6 +398,11 @@ class Interpreter:
         self.spline_state = self.cycle_il = self.last_cycle = None
         self._noted_straight = False
         self.m73_saved = []
+
+    @property
+    def cutter_comp(self) -> CutterComp | None:
+        """LinuxCNC cutter radius compensation's state, when the machine file asks for it."""
+        return self._comp
 
     # ------------------------------------------------------------------ helpers
     def recompute_offsets(self) -> None:
@@ -607,7 +615,7 @@ class Interpreter:
         state nczones does not model, raises the language layer's "unknown"
         (GC305) at that word; an assignment to an entry is unknown too.
         """
-        self._scopes = getattr(params, "_scopes", None)
+        self._scopes = getattr(params, "scopes", None)
         for key, entry in self.state_parameters().items():
             params.provide(key, self._state_reader(entry))
             params.guard(key, f"{_show_key(key)} ({entry.meaning}) is controller state; a program that assigns "

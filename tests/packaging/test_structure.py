@@ -91,8 +91,20 @@ def _own_object(node: ast.expr) -> bool:
             or (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "super"))
 
 
+def _member_reached(node: ast.AST) -> tuple[ast.expr, str] | None:
+    """``(obj, name)`` for ``obj.name`` and for ``getattr``/``setattr``/``hasattr``/``delattr(obj, "name")``."""
+    if isinstance(node, ast.Attribute):
+        return node.value, node.attr
+    if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+            and node.func.id in ("getattr", "setattr", "hasattr", "delattr") and len(node.args) >= 2
+            and isinstance(node.args[1], ast.Constant) and isinstance(node.args[1].value, str)):
+        return node.args[0], node.args[1].value
+    return None
+
+
 def private_members_across_files(package: Path = PACKAGE) -> list[str]:
-    """``file:line: expr`` for every ``obj._name`` that reaches into another file's private member.
+    """``file:line: expr`` for every ``obj._name`` (or ``getattr(obj, "_name")``) that reaches into another
+    file's private member.
 
     ``obj`` is anything but ``self``, ``cls`` or ``super()``, and ``_name`` is defined (as a function,
     method, class, class attribute or attribute set on ``self``) in another file of the package and not in
@@ -106,11 +118,13 @@ def private_members_across_files(package: Path = PACKAGE) -> list[str]:
     for module, tree in trees.items():
         hits = []
         for node in ast.walk(tree):
-            if not (isinstance(node, ast.Attribute) and _private(node.attr)) or _own_object(node.value):
+            reached = _member_reached(node)
+            if reached is None:
                 continue
-            if node.attr in defined[module]:
+            obj, name = reached
+            if not _private(name) or _own_object(obj) or name in defined[module]:
                 continue
-            owners = sorted(m for m, names in defined.items() if m != module and node.attr in names)
+            owners = sorted(m for m, names in defined.items() if m != module and name in names)
             if owners:
                 hits.append((node.lineno, node.col_offset, f"{ast.unparse(node)} of {', '.join(owners)}"))
         found += [f"{modules[module].relative_to(package.parent)}:{line}: {what}" for line, _, what in sorted(hits)]
@@ -216,13 +230,17 @@ def test_the_member_scan_is_not_blind(tmp_path):
             "    q = Fraction(1, 3)\n"
             "    other._own()\n"
             "    q._numerator\n"
-            "    return prover._bbox_fits(None) and prover._budget and Prover._cache\n"),
+            "    return prover._bbox_fits(None) and prover._budget and Prover._cache\n"
+            "\n"
+            "\n"
+            "def peek(prover):\n"
+            "    return getattr(prover, '_budget', None), getattr(prover, 'budget', None)\n"),
     })
     found = private_members_across_files(fake)
     assert [f.split(": ", 1)[1] for f in found] == [
         "prover._bbox_fits of nczones.prover.core", "prover._budget of nczones.prover.core",
-        "Prover._cache of nczones.prover.core"]
-    assert all(f.startswith("nczones/prover/spline.py:14") for f in found)
+        "Prover._cache of nczones.prover.core", "getattr(prover, '_budget', None) of nczones.prover.core"]
+    assert [f.split(": ", 1)[0] for f in found] == ["nczones/prover/spline.py:14"] * 3 + ["nczones/prover/spline.py:18"]
 
 
 def test_no_import_loop_not_even_for_the_type_checker():
