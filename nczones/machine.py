@@ -161,6 +161,9 @@ class FanucSettings:
     #: Parameter 5002#4 LGT: a lathe tool offset shifts the coordinate system (``"shift"``: LGT = 0, the next
     #: move carries it) or moves the tool in the T block (``"move"``).
     tool_offset_motion: str = "shift"
+    #: The path (channel) of a multi-path control whose slides this machine file describes: a program with
+    #: ``$n`` path headers is read as the program of path ``$path`` (``specs/turning.md``); None: not given.
+    path: int | None = None
 
     @property
     def increment_mm(self) -> Fraction:
@@ -619,7 +622,7 @@ _FANUC_LATHE_KEYS = ("gcode_system", "g71_depth", "g71_retract", "roughing_final
                      "tool_offset_motion")
 _FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_clearance", "boring_shift",
                "scaling_unit", "rotation_incremental", "atan_signed", "tool_length_motion",
-               "harmless_m") + _FANUC_LATHE_KEYS
+               "harmless_m", "path") + _FANUC_LATHE_KEYS
 #: Values of ``[machine] cutter_compensation``.
 CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
 #: Values of ``[machine] block_delete``: which positions of the block-delete switch a proof covers.
@@ -962,7 +965,7 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
                               "degrees", rd.loc.key(key, fline))
                 else:
                     kw[key] = q
-    for key, top in (("g73_divisions", 99999), ("g76_finish_passes", 99)):
+    for key, top in (("g73_divisions", 99999), ("g76_finish_passes", 99), ("path", 15)):
         if key in raw:
             value = raw[key]
             if not isinstance(value, int) or isinstance(value, bool) or not 1 <= value <= top:

@@ -101,6 +101,10 @@ class Interpretation:
                  library: Any = None, param_ranges: tuple = ()):
         self.source = source
         text = self.text = source.text
+        if dialect == "fanuc":
+            from .fanuc.paths import select_path
+
+            text = self.text = select_path(text, machine.fanuc.path, source.name)
         self.machine = machine
         self.file = source.name
         self.block_delete = block_delete

@@ -208,11 +208,21 @@ def test_g70_follows_the_shape_and_returns():
                    ("", F(5), F(50))]
 
 
-def test_g70_with_an_allowance_is_unknown_but_zero_words_are_read():
+def test_g70_with_u_w_proves_both_readings():
+    # The manuals define no U/W on G70 (Haas programs carry G71's words over).  Zero words change nothing;
+    # non-zero ones: the shape as programmed, then the shape moved by (W, U/2) = (0.2, 0.5) as G71 would leave
+    # the allowance, each from A and back to A; a control that ignores the words runs the first, one that
+    # applies them the second, so proving both covers either.
     m = lathe()
     prog = "G00 X60. Z5.\nG70 P10 Q20 U0 W0 D0.01 F0.1\nM30\n" + G73_SHAPE
     assert len(moves(prog, m)) == 5
-    assert "G70 with U" in unknown_reason(prog.replace("U0 W0", "U0.01 W0"), m)
+    got = moves(prog.replace("U0 W0", "U1. W0.2"), m)
+    first = [("G70 finishing pass", F(0), F(10)), ("G70 finishing pass", F(-10), F(20)),
+             ("G70 finishing pass", F(-20), F(20)), ("G70 finishing pass: return to the start point", F(5), F(30))]
+    moved = "G70 finishing pass moved by U/W"
+    second = [(moved, F(1, 5), F(21, 2)), (moved, F(-49, 5), F(41, 2)), (moved, F(-99, 5), F(41, 2)),
+              (f"{moved}: return to the start point", F(5), F(30))]
+    assert got == [("", F(5), F(30))] + first + second
 
 
 # ----------------------------------------------------------------------------------- G74 G75 G76

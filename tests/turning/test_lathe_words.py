@@ -152,3 +152,28 @@ def test_lathe_position_variables_of_a_diameter_axis_are_unknown():
     run = interpret_text("G00 X40. Z2.\n#1 = #5002\nG00 Z#1\n", m)
     segs = list(run.segments())
     assert not run.unsupported and segs[-1].end == (F(20), F(2))
+
+
+# ----------------------------------------------------------------------------------- multi-path programs
+
+TWO_PATHS = "%\n$1\nG00 X40. Z5.\nM30\n$2\nG00 X60. Z-10.\nG01 Z-20. F0.1\nM30\n$0\n#500=1\n%\n"
+
+
+def test_a_multi_path_program_is_read_as_the_path_the_machine_file_names():
+    # path 2's blocks only, with the file's line numbers
+    m2 = lathe(fanuc="path = 2")
+    run = interpret_text(TWO_PATHS, m2, file="twin.nc")
+    segs = list(run.segments())
+    assert [s.span.line for s in segs] == [6, 7]
+    assert moves(TWO_PATHS, m2) == [("", F(-10), F(30)), ("", F(-20), F(30))]
+    assert moves(TWO_PATHS, lathe(fanuc="path = 1")) == [("", F(5), F(20))]
+    for fanuc, words in (("", "name the path this machine file describes with [fanuc] path = 1"),
+                         ("path = 3", "names path 3 ([fanuc] path) but the program has only $1, $2")):
+        with pytest.raises(GcodeError) as e:
+            list(interpret_text(TWO_PATHS, lathe(fanuc=fanuc), file="twin.nc").segments())
+        d = e.value.diagnostics[0]
+        assert (d.code, d.span.line) == ("GC101", 2) and words in d.message, d.message
+    # a $ line further down a single-path program is no header: the parser rejects it as before
+    with pytest.raises(GcodeError) as e:
+        list(interpret_text("G00 X40.\n$2\n", m2).segments())
+    assert e.value.diagnostics[0].span.line == 2

@@ -685,13 +685,14 @@ class FanucLatheInterpreter(FanucInterpreter):
         grid = self._grid_zx()
         try:
             if k == 700:
-                extra = [x for x in ("U", "W") if x in words and words[x].value != 0]
-                if extra:
-                    raise CycleUnknown(f"G70 with {' and '.join(extra)}: a finishing allowance on G70 is not in "
-                                       "the manuals (Haas programs carry the G71 words over; what the control does "
-                                       "with them is not documented)")
                 moves = finish_moves(start, approach, shape)
-                feed = feed if feed is not None else None
+                shift = (self._len_word(words.get("W")) or _ZERO,
+                         self._len_word(words.get("U"), diameter=True) or _ZERO)
+                if shift != (_ZERO, _ZERO):
+                    # the manuals define no U/W on G70; the control either ignores them or leaves the
+                    # allowance as G71 does: both readings are proved (specs/turning.md, "G70")
+                    moves += finish_moves(start, approach.moved(*shift), [e.moved(*shift) for e in shape],
+                                          label="finishing pass moved by U/W")
                 self._emit_moves(name, moves, feed)
                 return
             allowance = (self._len_word(words.get("W")) or _ZERO, self._len_word(words.get("U"), diameter=True) or _ZERO)
