@@ -259,6 +259,7 @@ class CutterComp:
     cur: tuple[float, float] = (0.0, 0.0)  # compensated position, program frame (doubles)
     prog: tuple[float, float] = (0.0, 0.0)  # programmed position, program frame (doubles)
     machine_now: tuple | None = None  # where the last emitted segment ended (machine, exact)
+    orientation: int = 0  # lathe tool orientation (G41.1/G42.1 L): the controlled point is not the nose centre
     deps_now: list | None = None
 
     # ------------------------------------------------------------------ frame
@@ -307,13 +308,14 @@ class CutterComp:
             if d is None:
                 raise self.error(GC_STATE, f"{name} with no D word: the D word gives the tool diameter", word)
             radius = to_float(d.value) / 2
+            orientation = 0
             lw = words.get("L")
             if lw is not None:
                 if it.plane is not Plane.XZ:
                     raise self.error(GC_STATE, f"{name} with L word, but plane is not G18", lw)
-                if lw.value not in (0, 9):
-                    it.unknown(name, f"{name} L{lw.value}: the lathe tool orientation shifts the controlled point "
-                                "(LinuxCNC latheorigin); not modelled", lw)
+                if lw.value.denominator != 1 or not 0 <= lw.value <= 9:
+                    raise self.error(GC_STATE, f"{name} L{lw.text}: a lathe tool orientation is 0 to 9", lw)
+                orientation = int(lw.value)
         else:
             if d is None:
                 tool = it.tool_in_spindle
@@ -335,10 +337,11 @@ class CutterComp:
             else:
                 dia = diameters[tool]
             radius = to_float(dia / self._unit()) / 2.0
+            orientation = 0
             if it.plane is Plane.XZ and radius != 0.0:
                 it.unknown(name, f"{name} in G18 uses the tool table's lathe tool orientation, which shifts the "
                             "controlled point (LinuxCNC latheorigin) and is not in the machine file; use G41.1/G42.1 "
-                            "D<diameter> (orientation 0) or a mill tool in G17", word)
+                            "D<diameter> L<orientation>", word)
         if radius < 0.0:
             radius = -radius
             side = _RIGHT if side == LEFT else LEFT
@@ -362,6 +365,7 @@ class CutterComp:
                             "shifted copy of the nominal one", word)
         self.side = side
         self.radius = radius
+        self.orientation = orientation if it.plane is Plane.XZ else 0
         self.first = True
         self.queue = []
         it.comp_on = True
@@ -432,13 +436,26 @@ class CutterComp:
             move.feed = it.length_mm(it.feed)
         self.queue.append(move)
 
+    def _lathe_origin(self) -> tuple[Fraction, Fraction]:
+        """The shift (Z, X) from the nose centre to the controlled point of a lathe tool (LinuxCNC
+        ``latheorigin_z``/``latheorigin_x``): orientations 1, 2, 6 lower X by the radius and 3, 4, 8 raise it;
+        2, 3, 7 lower Z and 1, 4, 5 raise it; 0 and 9 (and a mill) none.  Exact: the radius double, times the
+        unit (LinuxCNC adds it in doubles, at most a unit in the last place away)."""
+        o = self.orientation
+        r = Fraction(self.radius) * self._unit()
+        dx = -r if o in (1, 2, 6) else r if o in (3, 4, 8) else Fraction(0)
+        dz = -r if o in (2, 3, 7) else r if o in (1, 4, 5) else Fraction(0)
+        return dz, dx
+
     def _dequeue(self) -> None:
-        """Emit the queued moves (LinuxCNC ``dequeue_canons``)."""
+        """Emit the queued moves (LinuxCNC ``dequeue_canons``; a lathe tool's moves shifted from the nose centre
+        to its controlled point)."""
         from .segments import make_segment, with_tool_deps
 
         it = self.it
         self.endpoint_valid = False
         ia, ib, _ = self._axes()
+        sa, sb = self._lathe_origin() if self.orientation else (Fraction(0), Fraction(0))
         for q in self.queue:
             start = self.machine_now
             assert start is not None  # set when compensation started (_start)
@@ -446,8 +463,8 @@ class CutterComp:
                 end = tuple(start)
             else:
                 e = list(q.end)
-                e[ia] = self._fmachine(ia, q.a)
-                e[ib] = self._fmachine(ib, q.b)
+                e[ia] = self._fmachine(ia, q.a) + sa
+                e[ib] = self._fmachine(ib, q.b) + sb
                 end = tuple(e)
             ds: tuple = ()
             de: tuple = ()
@@ -457,9 +474,12 @@ class CutterComp:
                 de = it.deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
                 dt = it.tool_dep_names()
             arc = q.kind is SegmentKind.ARC
+            centre = q.centre if arc else None
+            if centre is not None and (sa or sb):
+                centre = (centre[0] + sa, centre[1] + sb)
             if not it.unsupported:
                 seg = make_segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
-                               it.plane if arc else None, arc and q.turn < 0, q.centre if arc else None, None,
+                               it.plane if arc else None, arc and q.turn < 0, centre, None,
                                abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, ())
                 if dt:
                     seg = with_tool_deps(seg, dt)
@@ -736,6 +756,10 @@ class CutterComp:
             raise self.error(GC_BUG, "bug in tool radius comp (LinuxCNC: the entry arc's radii differ)")
         ia, ib, _ = self._axes()
         centre = (self._fmachine(ia, center_x), self._fmachine(ib, center_y))
+        if self.orientation not in (0, 9):
+            # LinuxCNC: "need this move for lathes to move the tool origin first.  otherwise, the arc isn't
+            # an arc" -- a feed to where the nose centre is, which moves the controlled point by the shift
+            self._enqueue(_Move(SegmentKind.LINE, cx, cy, self._corner_end(end)))
         self._enqueue(_Move(SegmentKind.ARC, end_x, end_y, list(end), ca=center_x, cb=center_y, centre=centre,
                             turn=turn, sweep=_find_turn(cx, cy, center_x, center_y, turn, end_x, end_y), deps=deps))
         self.cur = (end_x, end_y)

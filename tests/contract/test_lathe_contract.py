@@ -57,3 +57,35 @@ def lathe_cases(draw):
 def test_prover_and_controller_agree_on_generated_roughing_cycles(case):
     machine, text = case
     check_contract(machine, text)
+
+
+@st.composite
+def nose_compensation_cases(draw):
+    """A LinuxCNC lathe turning a stepped profile with G41.1/G42.1 D L (a lathe tool orientation 0-9): the
+    controlled point is the nose centre moved by the orientation, next to jaws the path may or may not reach."""
+    orientation = draw(st.integers(0, 9))
+    diameter = draw(st.sampled_from(["0.4", "0.8", "1.6"]))
+    side = draw(st.sampled_from(["G42.1", "G41.1"]))
+    x, z = draw(st.integers(4, 8)), 2
+    moves = [f"G1 Z{z - draw(st.integers(3, 6))}"]
+    for _ in range(draw(st.integers(1, 3))):
+        x += draw(st.integers(1, 3))
+        moves += [f"X{x}", f"Z-{draw(st.integers(8, 22))}"]
+    jx = draw(st.integers(4, x + 2))
+    zones = ('[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "-5", Z = "-40" }\nmax = { X = "40", Z = "40" }\n'
+             f'[[zones]]\nname = "jaws"\nkind = "box"\nforbid = true\nmin = {{ X = "{jx}", Z = "-24" }}\n'
+             f'max = {{ X = "{jx + 3}", Z = "-15" }}\n')
+    machine = parse_machine(
+        '[machine]\ntype = "lathe"\ndialect = "linuxcnc"\naxes = ["X", "Z"]\npulse = "0.01"\n'
+        'cutter_compensation = "linuxcnc"\n'
+        '[machine.rapid]\nX = "3000"\nZ = "3000"\n[machine.reference]\nX = "30"\nZ = "20"\n' + zones, "lathe.toml")
+    text = (f"G18 G8 G21 F100\nG0 X{x + 4} Z{z + 3}\nG0 X4 Z{z}\n"
+            f"{side} D{diameter} L{orientation}\n" + "\n".join(moves) + "\nG40 G0 X30\nZ20\nM2\n")
+    return machine, text
+
+
+@settings(max_examples=20)
+@given(nose_compensation_cases())
+def test_prover_and_controller_agree_on_lathe_nose_compensation(case):
+    machine, text = case
+    check_contract(machine, text)

@@ -244,3 +244,57 @@ def test_dependencies_of_compensated_points_are_those_of_the_programmed_points()
     assert run.status == "complete"
     for s in segs[1:]:
         assert s.deps_start[:2] == s.deps_end[:2] == (("G54",), ("G54",))
+
+
+def test_lathe_tool_orientation_moves_the_controlled_point():
+    """G42.1 D2 L3 in G18 (radius mode): LinuxCNC compensates the nose centre, then emits the controlled point,
+    the centre moved by latheorigin: orientation 3 lowers Z and raises X by the radius (interp_queue.cc).
+
+    Derivation (program = machine, frame (Z, X), r = 1, tool right of the path):
+    * N3 G1 Z2 from (5, 12): entry, the centre ends r to the right of the direction (-1, 0): (2, 13);
+    * N4 X8: direction (0, -1), a left turn with the tool on the right: convex, an arc around the programmed
+      corner (2, 12) from (2, 13) to (1, 12), then the line to (1, 8);
+    * every point and the arc's centre moved by (-1, +1): (1, 14), arc to (0, 13) about (1, 13), line to (0, 9);
+    * the first move starts where the tool stands (5, 12); after G40 the next move starts at (0, 9).
+    With L0 the same path without the shift."""
+    from tests.turning.helpers import lathe
+
+    m = lathe('cutter_compensation = "linuxcnc"\n', dialect="linuxcnc", diameter=False)
+    prog = "G18 G8 G21\nG0 X12 Z5\nG42.1 D2 L{o}\nG1 Z2 F100\nX8\nG40 G0 X20\nM2\n"
+
+    def path(o):
+        run = interpret_text(prog.format(o=o), m)
+        segs = list(run.segments())
+        assert not run.unsupported
+        iz, ix = m.axis_names.index("Z"), m.axis_names.index("X")
+        return [(s.kind.name, round(float(s.end[iz]), 9), round(float(s.end[ix]), 9),
+                 None if s.centre is None else (round(float(s.centre[0]), 9), round(float(s.centre[1]), 9)))
+                for s in segs]
+
+    assert path(3) == [("RAPID", 5, 12, None), ("LINE", 1, 14, None), ("ARC", 0, 13, (1, 13)),
+                       ("LINE", 0, 9, None), ("RAPID", 2, 20, None)]
+    assert path(0) == [("RAPID", 5, 12, None), ("LINE", 2, 13, None), ("ARC", 1, 12, (2, 12)),
+                       ("LINE", 1, 8, None), ("RAPID", 2, 20, None)]
+    # orientations 0 and 9 have no shift; the other seven move the point by +-r on X and/or Z
+    assert path(9) == path(0)
+    assert path(6)[1] == ("LINE", 2, 12, None) and path(5)[1] == ("LINE", 3, 13, None)
+
+
+def test_lathe_tool_entry_arc_moves_the_controlled_point_first():
+    """LinuxCNC's entry arc with a lathe tool is preceded by a feed to where the nose centre is (interp_convert.cc,
+    "need this move for lathes"): queued at the start, (5, 12) shifted to (4, 13); the arc is the L0 arc moved by
+    the shift (-1, +1).  With L0 there is no such move.  The flush at M1 moves the end of every queued move to
+    the compensated position (LinuxCNC's move_endpoint_and_flush: "we need to change all of them"), that feed's
+    too, so it ends where the arc ends."""
+    from tests.turning.helpers import lathe
+
+    m = lathe('cutter_compensation = "linuxcnc"\n', dialect="linuxcnc", diameter=False)
+    prog = "G18 G8 G21\nG0 X12 Z5\nG42.1 D2 L{o}\nG2 X12 Z-5 R10 F100\nM1\nG40 G0 X20\nM2\n"
+    iz, ix = m.axis_names.index("Z"), m.axis_names.index("X")
+    runs = {o: list(interpret_text(prog.format(o=o), m).segments()) for o in (0, 3)}
+    assert [s.kind.name for s in runs[0]] == ["RAPID", "ARC", "RAPID"]
+    assert [s.kind.name for s in runs[3]] == ["RAPID", "LINE", "ARC", "RAPID"]
+    line, arc, arc0 = runs[3][1], runs[3][2], runs[0][1]
+    assert (arc.end[iz], arc.end[ix]) == (arc0.end[iz] - 1, arc0.end[ix] + 1)
+    assert line.end == arc.end
+    assert arc.centre == (arc0.centre[0] - 1, arc0.centre[1] + 1)
