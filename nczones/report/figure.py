@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import os
 import types
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import Any
@@ -106,13 +106,39 @@ def _seg_points(seg: Segment, machine: Machine) -> np.ndarray:
     return np.asarray(path_points_float(seg, machine), dtype=float)
 
 
+def pass_name(derived: str) -> str:
+    """The generated pass a segment label belongs to: ``"G71 roughing pass 3: cut"`` -> ``"G71 roughing pass 3"``
+    (labels of lathe cycles, ``specs/turning.md``); "" for a label that names no pass.
+
+    >>> pass_name("G71 roughing pass 3: escape"), pass_name("G70 finishing pass 1"), pass_name("cutter comp corner")
+    ('G71 roughing pass 3', 'G70 finishing pass 1', '')
+    """
+    head = derived.split(":", 1)[0].strip()
+    return head if (" pass" in head or "position " in head) else ""
+
+
+def hot_passes(violations: Iterable[Any]) -> dict[int, frozenset[str] | None]:
+    """Block -> the generated passes to highlight (the failing pass alone, not the whole cycle block), or None
+    for the whole block (a violation in a segment that is no generated pass)."""
+    out: dict[int, frozenset[str] | None] = {}
+    for v in violations:
+        name = pass_name(getattr(v, "derived", "") or "")
+        if not name:
+            out[v.block] = None
+        elif v.block not in out or out[v.block] is not None:
+            out[v.block] = (out.get(v.block) or frozenset()) | {name}
+    return out
+
+
 def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (), *,
-                 max_segments: int = 200_000) -> PathFloat:
+                 max_segments: int = 200_000, passes: Mapping[int, frozenset[str] | None] | None = None) -> PathFloat:
     """Interpret ``program`` (a path or a :class:`~nczones.gcode.source.ProgramSource`) and keep
     float polylines for drawing.
 
     Violating blocks (``hot_blocks``) are always kept; other segments past
     ``max_segments`` are left out of the drawing (``drawn`` < ``segments``).
+    ``passes`` (:func:`hot_passes`) narrows a hot block to its failing generated passes: the block's other
+    passes are drawn as the rest of the path.
 
     >>> from nczones import load_machine
     >>> p = collect_path("specs/examples/programs/notch_dip.ngc", load_machine("specs/machines/grinder.toml"), {3})
@@ -132,6 +158,9 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
         if seg.tool_length:
             out.tool_lengths.add(seg.tool_length)
         is_hot = seg.block in hot
+        only = passes.get(seg.block) if passes else None
+        if is_hot and only is not None and pass_name(seg.derived) not in only:
+            is_hot = False
         if not is_hot and out.drawn >= max_segments:
             return
         out.drawn += 1
@@ -257,7 +286,7 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         machine = load_machine(machine)
     hot = {v.block for v in result.violations} if result is not None else set()
     if path is None:
-        path = collect_path(program, machine, hot)
+        path = collect_path(program, machine, hot, passes=hot_passes(result.violations) if result is not None else None)
     if plane is None:
         plane = relevant_planes(machine, result)[0]
     plane = (str(plane[0]).upper(), str(plane[1]).upper())

@@ -146,7 +146,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
 
     from ..errors import InputError
     from ..gcode.source import as_source
-    from .figure import collect_path, plot_program, relevant_planes
+    from .figure import collect_path, hot_passes, plot_program, relevant_planes
 
     program = program if program is not None else result.file
     if program:
@@ -165,7 +165,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
     figures = []
     if program:
         hot_blocks = {v.block for v in result.violations}
-        path = collect_path(program, machine, hot_blocks)
+        path = collect_path(program, machine, hot_blocks, passes=hot_passes(result.violations))
         for k, plane in enumerate(planes or relevant_planes(machine, result)):
             fig = plot_program(program, machine, plane, result, path=path)
             fig.set_size_inches(9, 5.2)

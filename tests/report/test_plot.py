@@ -58,3 +58,21 @@ def test_cli_plot_writes_a_png(tmp_path):
                           "../machines/grinder.toml", "-o", str(out), "--plane", "X,X"],
                          capture_output=True, text=True, cwd=EX)
     assert bad.returncode == 2 and "PL101" in bad.stderr and "Traceback" not in bad.stderr
+
+
+def test_a_counterexample_in_a_generated_pass_highlights_that_pass_alone():
+    """g71_jaws: the third roughing pass cuts into the jaws; the drawing's red curves are that pass's segments
+    (infeed, cut, escape, return), not the cycle block's every pass."""
+    from nczones.gcode import interpret
+    from nczones.report.figure import collect_path, hot_passes, pass_name
+
+    result, m = run_example("programs/g71_jaws.nc", "fanuc_lathe.toml")
+    v = result.violations[0]
+    assert pass_name(v.derived) == "G71 roughing pass 3"
+    block_segs = [s for s in interpret(str(EX / "programs/g71_jaws.nc"), m).segments() if s.block == v.block]
+    in_pass = [s for s in block_segs if pass_name(s.derived) == "G71 roughing pass 3"]
+    assert 2 <= len(in_pass) < len(block_segs)
+    narrowed = collect_path(str(EX / "programs/g71_jaws.nc"), m, {v.block}, passes=hot_passes(result.violations))
+    whole = collect_path(str(EX / "programs/g71_jaws.nc"), m, {v.block})
+    assert len(narrowed.hot_curves) == len(in_pass) and len(whole.hot_curves) == len(block_segs)
+    assert narrowed.segments == whole.segments
