@@ -154,6 +154,22 @@ class _Mapped:
 # --------------------------------------------------------------------------- pieces of the profile
 
 
+def _line_meets_circle(line_start: complex, line_end: complex, centre: complex, on_circle: complex,
+                       near: complex) -> complex:
+    """Where the line through ``line_start`` and ``line_end`` cuts the circle about ``centre`` through
+    ``on_circle``: of the two crossings the one nearer to ``near`` (a tangent line: its foot).  The double
+    operations of ``interp_g7x.cc`` in its order, the line turned onto the real axis about its end."""
+    diff = line_start - line_end
+    rot = _divr(_conj(diff), _abs(diff))
+    pe = _mul(on_circle - line_end, rot)
+    pc = _mul(centre - line_end, rot)
+    b = _norm(pc - pe) - pc.imag * pc.imag
+    b = 0.0 if b < 0 else math.sqrt(b)
+    s1 = _div(C(pc.real + b, 0.0), rot) + line_end
+    s2 = _div(C(pc.real - b, 0.0), rot) + line_end
+    return s1 if _abs(near - s1) < _abs(near - s2) else s2
+
+
 class Piece:
     """A straight, an arc, or a corner (fillet/chamfer) of the profile; Z + X i points."""
 
@@ -311,18 +327,7 @@ class Straight(Piece):
         assert isinstance(p, Round)
         if _abs(self.start - p.end) < TOLERANCE:
             return
-        diff = self.start - self.end
-        rot = _divr(_conj(diff), _abs(diff))
-        pe = _mul(p.end - self.end, rot)
-        pc = _mul(p.centre - self.end, rot)
-        b = _norm(pc - pe) - pc.imag * pc.imag
-        b = 0.0 if b < 0 else math.sqrt(b)
-        s1 = _div(C(pc.real + b, 0.0), rot) + self.end
-        s2 = _div(C(pc.real - b, 0.0), rot) + self.end
-        if _abs(self.start - s1) < _abs(self.start - s2):
-            self.start = p.end = s1
-        else:
-            self.start = p.end = s2
+        self.start = p.end = _line_meets_circle(self.start, self.end, p.centre, p.end, self.start)
 
 
 class Round(Piece):
@@ -480,18 +485,7 @@ class Round(Piece):
         nearer to this start."""
         if _abs(self.start - p.end) < TOLERANCE:
             return
-        diff = p.start - p.end
-        rot = _divr(_conj(diff), _abs(diff))
-        pe = _mul(self.end - p.end, rot)
-        pc = _mul(self.centre - p.end, rot)
-        b = _norm(pc - pe) - pc.imag * pc.imag
-        b = 0.0 if b < 0 else math.sqrt(b)
-        s1 = _div(C(pc.real + b, 0.0), rot) + p.end
-        s2 = _div(C(pc.real - b, 0.0), rot) + p.end
-        if _abs(self.start - s1) < _abs(self.start - s2):
-            self.start = p.end = s1
-        else:
-            self.start = p.end = s2
+        self.start = p.end = _line_meets_circle(p.start, p.end, self.centre, self.end, self.start)
 
     def meet_round(self, p: Round) -> None:
         """An arc ``p`` followed by this arc: they meet where the circles cross."""

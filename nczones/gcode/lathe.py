@@ -49,17 +49,8 @@ class LatheInterpreter(Interpreter):
 
     >>> from nczones.machine import parse_machine
     >>> from nczones.gcode import segments_text
-    >>> m = parse_machine('''
-    ... [machine]
-    ... axes = ["X", "Z"]
-    ... diameter_axes = ["X"]
-    ... [machine.rapid]
-    ... X = "1000"
-    ... Z = "1000"
-    ... [machine.reference]
-    ... X = "100"
-    ... Z = "100"
-    ... ''')
+    >>> m = parse_machine('[machine]\\naxes = ["X", "Z"]\\ndiameter_axes = ["X"]\\n[machine.rapid]\\nX = "1000"\\n'
+    ...                   'Z = "1000"\\n[machine.reference]\\nX = "100"\\nZ = "100"\\n')
     >>> segs = segments_text("G18 G21 G0 X40 Z2\\nG8 G0 X40\\nG7 X10\\n", m)
     >>> [[str(v) for v in s.end] for s in segs]
     [['20', '2'], ['40', '2'], ['5', '2']]

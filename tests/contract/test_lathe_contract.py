@@ -1,7 +1,7 @@
 """DESIGN §7 on generated lathe programs with roughing cycles: the prover's verdict on every generated pass
 against the reference controller running the same passes pulse by pulse (LinuxCNC G71/G70 with a profile
-subroutine, in radius or diameter mode; Fanuc G71 with its N-block shape), near chuck jaws placed where the
-passes may or may not reach."""
+subroutine, in radius or diameter mode; Fanuc G71 with its N-block shape; LinuxCNC G41.1/G42.1 nose
+compensation with a lathe tool orientation), near chuck jaws placed where the passes may or may not reach."""
 
 from __future__ import annotations
 
@@ -11,6 +11,16 @@ from hypothesis import strategies as st
 from nczones.machine import parse_machine
 
 from .contract import check_contract
+
+
+def _lathe(dialect: str, extra: str, jaws_min: tuple[int, int], jaws_max: tuple[int, int], travel_min_x: int = 0):
+    """A lathe (X radius, Z, pulse 0.01) inside a travel box, with chuck jaws ``(x, z)`` as a forbidden box."""
+    zones = (f'[[zones]]\nname = "travel"\nkind = "box"\nmin = {{ X = "{travel_min_x}", Z = "-40" }}\n'
+             'max = { X = "40", Z = "40" }\n[[zones]]\nname = "jaws"\nkind = "box"\nforbid = true\n'
+             f'min = {{ X = "{jaws_min[0]}", Z = "{jaws_min[1]}" }}\nmax = {{ X = "{jaws_max[0]}", Z = "{jaws_max[1]}" }}\n')
+    return parse_machine(
+        f'[machine]\ntype = "lathe"\ndialect = "{dialect}"\naxes = ["X", "Z"]\npulse = "0.01"\n' + extra
+        + '[machine.rapid]\nX = "3000"\nZ = "3000"\n[machine.reference]\nX = "30"\nZ = "20"\n' + zones, "lathe.toml")
 
 
 @st.composite
@@ -30,14 +40,9 @@ def lathe_cases(draw):
     retract = draw(st.sampled_from(["0.3", "0.5", "1"]))
     jz = points[-1][0] + draw(st.integers(-3, 2))
     jx = draw(st.integers(points[0][1], top + 1))
-    zones = ('[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "0", Z = "-40" }\nmax = { X = "40", Z = "40" }\n'
-             f'[[zones]]\nname = "jaws"\nkind = "box"\nforbid = true\nmin = {{ X = "{jx}", Z = "{jz - 6}" }}\n'
-             f'max = {{ X = "{jx + 2}", Z = "{jz}" }}\n')
-    machine = parse_machine(
-        f'[machine]\ntype = "lathe"\ndialect = "{dialect}"\naxes = ["X", "Z"]\npulse = "0.01"\n'
-        + ('diameter_axes = ["X"]\n' if diameter else "")
-        + '[machine.rapid]\nX = "3000"\nZ = "3000"\n[machine.reference]\nX = "30"\nZ = "20"\n'
-        + ('[fanuc]\ng71_retract = "0.5"\n' if dialect == "fanuc" else "") + zones, "lathe.toml")
+    extra = ('diameter_axes = ["X"]\n' if diameter else "") + (
+        '[fanuc]\ng71_retract = "0.5"\n' if dialect == "fanuc" else "")
+    machine = _lathe(dialect, extra, (jx, jz - 6), (jx + 2, jz))
     k = 2 if diameter else 1
     if dialect == "linuxcnc":
         body = "\n".join(f"G1 X{k * x} Z{z}" for z, x in points) + f"\nX{k * top}"
@@ -52,13 +57,6 @@ def lathe_cases(draw):
     return machine, text
 
 
-@settings(max_examples=25)
-@given(lathe_cases())
-def test_prover_and_controller_agree_on_generated_roughing_cycles(case):
-    machine, text = case
-    check_contract(machine, text)
-
-
 @st.composite
 def nose_compensation_cases(draw):
     """A LinuxCNC lathe turning a stepped profile with G41.1/G42.1 D L (a lathe tool orientation 0-9): the
@@ -67,25 +65,22 @@ def nose_compensation_cases(draw):
     diameter = draw(st.sampled_from(["0.4", "0.8", "1.6"]))
     side = draw(st.sampled_from(["G42.1", "G41.1"]))
     x, z = draw(st.integers(4, 8)), 2
-    moves = [f"G1 Z{z - draw(st.integers(3, 6))}"]
-    for _ in range(draw(st.integers(1, 3))):
+    zc = z - draw(st.integers(3, 6))
+    moves = [f"G1 Z{zc}"]
+    for _ in range(draw(st.integers(1, 3))):  # a staircase: X up, Z on towards the chuck (no concave gouge)
         x += draw(st.integers(1, 3))
-        moves += [f"X{x}", f"Z-{draw(st.integers(8, 22))}"]
+        zc -= draw(st.integers(3, 8))
+        moves += [f"X{x}", f"Z{zc}"]
     jx = draw(st.integers(4, x + 2))
-    zones = ('[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "-5", Z = "-40" }\nmax = { X = "40", Z = "40" }\n'
-             f'[[zones]]\nname = "jaws"\nkind = "box"\nforbid = true\nmin = {{ X = "{jx}", Z = "-24" }}\n'
-             f'max = {{ X = "{jx + 3}", Z = "-15" }}\n')
-    machine = parse_machine(
-        '[machine]\ntype = "lathe"\ndialect = "linuxcnc"\naxes = ["X", "Z"]\npulse = "0.01"\n'
-        'cutter_compensation = "linuxcnc"\n'
-        '[machine.rapid]\nX = "3000"\nZ = "3000"\n[machine.reference]\nX = "30"\nZ = "20"\n' + zones, "lathe.toml")
+    machine = _lathe("linuxcnc", 'cutter_compensation = "linuxcnc"\n', (jx, -24), (jx + 3, -15), -5)
     text = (f"G18 G8 G21 F100\nG0 X{x + 4} Z{z + 3}\nG0 X4 Z{z}\n"
             f"{side} D{diameter} L{orientation}\n" + "\n".join(moves) + "\nG40 G0 X30\nZ20\nM2\n")
     return machine, text
 
 
-@settings(max_examples=20)
-@given(nose_compensation_cases())
-def test_prover_and_controller_agree_on_lathe_nose_compensation(case):
+@settings(max_examples=45)
+@given(st.one_of(lathe_cases(), nose_compensation_cases()))
+def test_prover_and_controller_agree_on_generated_lathe_programs(case):
+    """Roughing cycles (G71, G70) in both dialects and LinuxCNC nose compensation with every orientation."""
     machine, text = case
     check_contract(machine, text)

@@ -275,6 +275,35 @@ class FanucInterpreter(Interpreter):
         return True
 
     # ------------------------------------------------------------------ one block
+    def _feed_word(self, fw: Word) -> None:
+        """F: the feed rate (not negative)."""
+        if fw.value < 0:
+            raise self.error("GC209", f"negative feed rate {fw.text}; F must be 0 or more", fw)
+        self.feed = fw.value
+
+    def _record_block(self, block: Block, mcodes: Any, mset: set) -> None:
+        """What a block leaves for the system variables (the last M and N) and the M0/M1 stops."""
+        if mcodes:
+            self.last["M"] = Fraction(mcodes[-1][0])
+        if block.number is not None:
+            self.last["N"] = block.number
+        if 0 in mset or 1 in mset:
+            self.stops.append(block.span.line if block.span else 0)
+
+    def _plain_modes(self, groups: dict) -> None:
+        """The modal groups mill and lathe read alike: plane (02), units (06), distance (03), G40 (07)."""
+        if 2 in groups:
+            self.plane = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}[groups[2][0]]
+            self.unset.discard("plane")
+        if 6 in groups:
+            self.inch = groups[6][0] == 200
+            self.unset.discard("units")
+        if 3 in groups:
+            self.absolute = groups[3][0] == 900
+            self.unset.discard("distance")
+        if 7 in groups and groups[7][0] == 400:
+            self.comp_on = False
+
     def _execute_general(self, block: Block) -> None:
         gcodes, mcodes, words, axis_words = self._split_words(block)
         # ---- modal groups: of one group the last code wins; one-shot codes one per block
@@ -311,10 +340,7 @@ class FanucInterpreter(Interpreter):
             self.feed_mode = groups[5][0] // 10
             self.unset.discard("feed")
         if "F" in words:
-            f = words["F"].value
-            if f < 0:
-                raise self.error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
-            self.feed = f
+            self._feed_word(words["F"])
         if "T" in words:
             t = words["T"].value
             if t.denominator != 1 or t < 0:
@@ -322,28 +348,13 @@ class FanucInterpreter(Interpreter):
             self.tool_selected = int(t)
         if 6 in mset:
             self.tool_in_spindle = self.tool_selected
-        if mcodes:
-            self.last["M"] = Fraction(mcodes[-1][0])
         if "D" in words:
             self.last["D"] = words["D"].value
-        if block.number is not None:
-            self.last["N"] = block.number
-        if 0 in mset or 1 in mset:
-            self.stops.append(block.span.line if block.span else 0)
+        self._record_block(block, mcodes, mset)
         # ---- modes
-        if 2 in groups:
-            self.plane = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}[groups[2][0]]
-            self.unset.discard("plane")
-        if 6 in groups:
-            self.inch = groups[6][0] == 200
-            self.unset.discard("units")
-        if 3 in groups:
-            self.absolute = groups[3][0] == 900
-            self.unset.discard("distance")
+        self._plain_modes(groups)
         if 10 in groups:
             self.retract_r = groups[10][0] == 990
-        if 7 in groups and groups[7][0] == 400:
-            self.comp_on = False
         # ---- programmable transforms (groups 17, 11, 22, 16); their blocks' axis words are centres
         transform_axes = False
         if any(g in groups for g in (17, 11, 22, 16)):

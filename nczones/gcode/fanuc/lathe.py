@@ -42,7 +42,7 @@ from ..turning import (
     thread_cycle_g76,
     turning_cycle,
 )
-from .interpreter import FanucInterpreter, dwell_p_seconds
+from .interpreter import FanucInterpreter
 
 __all__ = ["FanucLatheInterpreter", "LATHE_GROUPS", "SHAPE_CODES"]
 
@@ -338,28 +338,10 @@ class FanucLatheInterpreter(FanucInterpreter):
             self.feed_mode = 94 if k in (980, 940) else 95
             self.unset.discard("feed")
         if "F" in words:
-            f = words["F"].value
-            if f < 0:
-                raise self.error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
-            self.feed = f
-        if mcodes:
-            self.last["M"] = Fraction(mcodes[-1][0])
-        if block.number is not None:
-            self.last["N"] = block.number
-        if 0 in mset or 1 in mset:
-            self.stops.append(block.span.line if block.span else 0)
+            self._feed_word(words["F"])
+        self._record_block(block, mcodes, mset)
         # ---- modes
-        if 2 in groups:
-            self.plane = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}[groups[2][0]]
-            self.unset.discard("plane")
-        if 6 in groups:
-            self.inch = groups[6][0] == 200
-            self.unset.discard("units")
-        if 3 in groups:
-            self.absolute = groups[3][0] == 900
-            self.unset.discard("distance")
-        if 7 in groups and groups[7][0] == 400:
-            self.comp_on = False
+        self._plain_modes(groups)
         if 14 in groups:
             self._select_wcs(groups[14], words)
         if "T" in words:
@@ -370,7 +352,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             k, w = g0
             uses_axes = True
             if k == 40:
-                self._lathe_dwell(words, w)
+                self._dwell(words, w)  # G04 X/U are seconds, not diameters
             elif k == 100:
                 self.unknown("G10", "G10 on a lathe (tool offset and workpiece shift input) is not modelled", w)
             elif k in (280, 300):
@@ -454,19 +436,6 @@ class FanucLatheInterpreter(FanucInterpreter):
             end = [p + (n_ - o) for p, n_, o in zip(self.pos, self.off, old)]
             if end != list(self.pos):
                 self.emit(SegmentKind.RAPID, end, derived=f"T{n:04d} tool offset")
-
-    def _lathe_dwell(self, words: dict[str, Word], w: Word) -> None:
-        """G04 X/U seconds (not diameters), P milliseconds."""
-        given = [x for x in (words.get("X"), words.get("U"), words.get("P")) if x is not None]
-        if len(given) > 1:
-            raise self.error("GC204", "G04 takes one of X, U (seconds) and P (milliseconds)", given[1])
-        seconds = _ZERO
-        if given:
-            x = given[0]
-            if x.value < 0:
-                raise self.error("GC209", f"dwell time {x.text} is negative", x)
-            seconds = dwell_p_seconds(x.value) if x.letter == "P" else x.value
-        self.emit(SegmentKind.DWELL, list(self.pos), dwell=seconds)
 
     def _lathe_g53(self, words: dict[str, Word], w: Word) -> None:
         targets = self._axis_targets(words)
@@ -622,22 +591,11 @@ class FanucLatheInterpreter(FanucInterpreter):
         name = gname(k)
         if not self._cycle_start(name):
             return
-        iz, ix = self._zx()
         data = self.turning_data
-        for i, _v, _inc, tw in targets:
-            if i not in (iz, ix):
-                raise self.error("GC210", f"{name} takes X (U) and Z (W); {tw.text} names another axis", tw)
+        # an omitted X or Z is the cycle's last end point (the tool is back at the start point)
+        (z0, x0), (ze, xe) = self._cycle_end_point(name, targets, data)
         if "R" in words:
             data["R"] = self.length_mm(words["R"].value)
-        z0, x0 = self._zx_program()
-        # an omitted X or Z is the cycle's last end point (the tool is back at the start point)
-        ze, xe = data.get("Z", z0), data.get("X", x0)
-        for i, v, incremental, _w in targets:
-            q = self._mm(v, i)
-            if i == iz:
-                ze = z0 + q if incremental else q
-            else:
-                xe = x0 + q if incremental else q
         data["Z"], data["X"] = ze, xe
         taper = data.get("R", _ZERO)
         kind = {900: "turn", 770: "turn", 920: "thread", 780: "thread", 940: "face", 790: "face"}[k]
@@ -873,6 +831,25 @@ class FanucLatheInterpreter(FanucInterpreter):
         return Element(SegmentKind.ARC, s, e, centre, cw, b.span.line)
 
     # ------------------------------------------------------------------ G74 / G75
+    def _cycle_end_point(self, name: str, targets: list, last: dict | None = None
+                         ) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+        """The cycle's start point (where the tool is) and the end point its X (U) and Z (W) words give, program
+        coordinates (z, x); an omitted axis is ``last``'s ``"Z"``/``"X"`` (a modal cycle's last end point), else
+        the start's."""
+        iz, ix = self._zx()
+        z0, x0 = self._zx_program()
+        last = last or {}
+        ze, xe = last.get("Z", z0), last.get("X", x0)
+        for i, v, incremental, tw in targets:
+            if i not in (iz, ix):
+                raise self.error("GC210", f"{name} takes X (U) and Z (W); {tw.text} names another axis", tw)
+            q = self._mm(v, i)
+            if i == iz:
+                ze = z0 + q if incremental else q
+            else:
+                xe = x0 + q if incremental else q
+        return (z0, x0), (ze, xe)
+
     def _peck(self, k: int, words: dict[str, Word], w: Word) -> None:
         name = gname(k)
         targets = self._axis_targets(words)
@@ -882,17 +859,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             return
         if not self._cycle_start(name):
             return
-        iz, ix = self._zx()
-        z0, x0 = self._zx_program()
-        ze, xe = z0, x0
-        for i, v, incremental, tw in targets:
-            q = self._mm(v, i)
-            if i == iz:
-                ze = z0 + q if incremental else q
-            elif i == ix:
-                xe = x0 + q if incremental else q
-            else:
-                raise self.error("GC210", f"{name} takes X (U) and Z (W); {tw.text} names another axis", tw)
+        (z0, x0), (ze, xe) = self._cycle_end_point(name, targets)
         along_z = k == 740
         haas = "I" in words or "K" in words
         try:
@@ -948,17 +915,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             return
         if not self._cycle_start("G76"):
             return
-        iz, ix = self._zx()
-        z0, x0 = self._zx_program()
-        ze, xe = z0, x0
-        for i, v, incremental, tw in targets:
-            q = self._mm(v, i)
-            if i == iz:
-                ze = z0 + q if incremental else q
-            elif i == ix:
-                xe = x0 + q if incremental else q
-            else:
-                raise self.error("GC210", f"G76 takes X (U) and Z (W); {tw.text} names another axis", tw)
+        (z0, x0), (ze, xe) = self._cycle_end_point("G76", targets)
         fw = words.get("F")
         lead = self.length_mm(fw.value) if fw is not None else (self.length_mm(self.feed) if self.feed else None)
         try:

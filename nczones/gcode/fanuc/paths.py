@@ -37,10 +37,8 @@ def path_headers(text: str) -> list[tuple[int, int]]:
     []
     """
     lines = text.split("\n")
-    for first, line in enumerate(lines):
-        if not _LEAD.match(line.rstrip("\r")):
-            break
-    else:
+    first = next((i for i, line in enumerate(lines) if not _LEAD.match(line.rstrip("\r"))), None)
+    if first is None:
         return []
     if not _HEADER.match(lines[first].rstrip("\r")):
         return []
