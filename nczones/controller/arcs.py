@@ -41,7 +41,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidArgument
-from .pulses import ArcFrame, arc_frame, arc_step, arc_walk, plane_line, quadrant_of
+from .pulses import ArcFrame, arc_frame, arc_step, arc_walk, plane_line, quadrant_of, step_deltas
 
 __all__ = ["ArcPath", "arc_path", "arc_positions", "path_fractions", "path_fractions_moved", "SHORT_ARC_STEPS", "CANDIDATES"]
 
@@ -317,7 +317,7 @@ def _verify_fast(fr: ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: np.n
             return None
     elif -2 * b0 <= sb or -2 * int(B[:m].max()) <= sb:
         return None
-    dmin = np.diff(mins[:m], prepend=m0)
+    dmin = step_deltas(mins[:m], m0)
     if int(dmin.max()) > 1 or int(dmin.min()) < -1:
         return None
     # The three residuals e(w) = A^2 + w^2 - q for w = Bp - sb, Bp, Bp + sb: with T = 2 sb |Bp| > sb^2
@@ -481,7 +481,7 @@ def path_fractions_moved(pos: np.ndarray, p0: Sequence[int], pulse_mm: Sequence[
         hi = min(n, lo + FRACTION_CHUNK)
         code = np.zeros(hi - lo, dtype=np.uint8)
         for c, a in enumerate(moving):
-            d = np.diff(pos[lo:hi, a], prepend=prev[c])
+            d = step_deltas(pos[lo:hi, a], prev[c])
             if int(d.max()) > 1 or int(d.min()) < -1:
                 return _fractions_general(pos, p0, pulse_mm)
             m = d != 0

@@ -15,7 +15,10 @@ Two forms of one check:
   iff ``p >= ceil(b / u)``, ``p * u > b`` iff ``p >= floor(b / u) + 1``, ...),
   so a numpy comparison on int64 pulse counts is exact.  Stepped tables use
   ``searchsorted`` over ``floor(upto / u)``, which finds the same row as the
-  sequential comparison.  Polygons and forbid stepped zones are not compiled
+  sequential comparison; when the smallest and the largest reference-axis
+  position of the positions checked fall in the same row, every position
+  between does too (``searchsorted`` is monotone), and that row's limits are
+  compared at once.  Polygons and forbid stepped zones are not compiled
   (``compile`` returns None and callers use the reference).
 
 Tool-tip zones (``point = "tip"``) see the tool axis' coordinate minus the
@@ -198,10 +201,15 @@ class LimitMonitor:
 
             def test_stepped(pos, kr=kr, kl=kl, start=start, bounds=bounds, lo=lows, hi=highs, n=n):
                 r = pos[:, kr]
+                v = pos[:, kl]
+                if len(r):  # one row of the table for every position (searchsorted is monotone): no lookup each
+                    r_lo, r_hi = int(r.min()), int(r.max())
+                    row, row_hi = np.searchsorted(bounds, (r_lo, r_hi), side="left").tolist()
+                    if row == row_hi and row < n and r_lo >= start:
+                        return (v < lo[row]) | (v > hi[row])
                 idx = np.searchsorted(bounds, r, side="left")
                 outside = (r < start) | (idx >= n)
                 idx = np.minimum(idx, n - 1)
-                v = pos[:, kl]
                 return outside | (v < lo[idx]) | (v > hi[idx])
             return test_stepped
         return None

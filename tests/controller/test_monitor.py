@@ -163,6 +163,55 @@ def test_periodic_monitor_alarms_within_one_period_of_travel(case, feed):
     assert al.first_outside == tuple(v * U for v in expected)
 
 
+@FAST
+@given(st.data())
+def test_compiled_stepped_table_on_chunks_within_one_row_and_across_rows(data):
+    """A chunk whose reference-axis positions all lie in one row takes that row's limits at once; the answer
+    is the reference monitor's for every position, whether the chunk stays in a row, spans rows, or starts
+    before the table."""
+    uptos = sorted(set(data.draw(st.lists(st.integers(-400, 400), min_size=1, max_size=8))))
+    start = uptos[0] - data.draw(st.integers(0, 30))
+    bound = st.one_of(st.none(), st.integers(-60, 60))
+    regions = []
+    for u in uptos:
+        lo, hi = data.draw(bound), data.draw(bound)
+        if lo is not None and hi is not None and lo > hi:
+            lo, hi = hi, lo
+        regions.append(Region(F(u), None if lo is None else F(lo), None if hi is None else F(hi)))
+    zone = SteppedZone("t", "X", "Y", F(start), tuple(regions))
+    mon = LimitMonitor(dataclasses.replace(machine(), allowed=AllowedSet((zone,))))
+    comp = mon.compile(F(0))
+    # a band of X (often inside one row) walked in Y, as a chunk of a plan sees it
+    x0 = data.draw(st.integers(start - 40, uptos[-1] + 40)) * 1000
+    width = data.draw(st.sampled_from([0, 1, 500, 20_000, 900_000]))
+    xs = data.draw(st.lists(st.integers(x0, x0 + width), min_size=1, max_size=40))
+    ys = data.draw(st.lists(st.integers(-80_000, 80_000), min_size=len(xs), max_size=len(xs)))
+    pos = np.array([[x, y, 0] for x, y in zip(xs, ys)], dtype=np.int64)
+    expected = [bool(mon.check(tuple(row), F(0))) for row in pos.tolist()]
+    assert comp.bad(pos).tolist() == expected
+
+
+@settings(FAST, max_examples=15)
+@given(segments, st.sampled_from([1, 7, 64, 4096]))
+def test_first_alarm_pulse_does_not_depend_on_the_monitor_chunk(case, chunk):
+    """The vectorized monitor checks a plan in chunks; where the chunks end changes nothing: the alarm is at
+    the first pulse outside (the per-pulse reference loop's)."""
+    import nczones.controller.simulator as simulator
+
+    a, b, tl = case
+    m = _m()
+    seg = line(a, b, tool_length=tl)
+    ref = simulate([seg], m, settings=Settings(engine="reference"))
+    saved = simulator.LINE_CHUNK
+    simulator.LINE_CHUNK = chunk
+    try:
+        vec = simulate([seg], m, settings=Settings(engine="vector"))
+    finally:
+        simulator.LINE_CHUNK = saved
+    assert [(al.pulse_position, al.zone) for al in vec.alarms] == [(al.pulse_position, al.zone) for al in ref.alarms]
+    assert vec.pulses == ref.pulses and vec.steps == ref.steps
+
+
 def test_reverse_jog_moves_and_forward_jog_does_not():
     m = load_machine(GRINDER)
     down = line((300, 300), (300, 100), axes=("X", "Y"))

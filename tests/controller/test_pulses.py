@@ -11,7 +11,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from nczones.controller import Controller, round_pulse, simulate
-from nczones.controller.pulses import arc_centre, line_chunk, line_steps
+from nczones.controller.pulses import arc_centre, line_chunk, line_steps, step_deltas
 from nczones.motion import PLANE_AXES, Plane, SegmentKind
 
 from .helpers import FAST, F, arc, decimals, line, machine, rationals
@@ -45,6 +45,31 @@ def test_line_deviation_at_most_one_pulse_and_exact_end(coords):
         prev = p
     if n:
         assert np.array_equal(line_chunk(p0, tuple(b - a for a, b in zip(p0, p1)), n, 0, n), np.array(steps))
+
+
+@FAST
+@given(st.lists(st.integers(-3000, 3000), min_size=1, max_size=4), st.lists(st.integers(-10**6, 10**6), min_size=4,
+                                                                            max_size=4), st.data())
+def test_line_chunks_are_the_reference_steps_on_every_slice(delta, p0, data):
+    """Any slice lo..hi of a line, vectorized, is those rows of the per-step loop: the major axis (|d| = n,
+    either sign), standing axes and the minor axes' floor division alike."""
+    p0 = tuple(p0[:len(delta)])
+    if data.draw(st.booleans()):  # a second axis as long as the first: two major axes
+        delta = [delta[0], -delta[0], *delta[2:]] if len(delta) > 1 else delta
+    n = max(abs(d) for d in delta)
+    steps = np.array(list(line_steps(p0, tuple(p + d for p, d in zip(p0, delta)))), dtype=np.int64)
+    if n == 0:
+        return
+    lo = data.draw(st.integers(0, n - 1))
+    hi = data.draw(st.integers(lo + 1, n))
+    assert np.array_equal(line_chunk(p0, tuple(delta), n, lo, hi), steps[lo:hi].reshape(hi - lo, len(delta)))
+
+
+@FAST
+@given(st.lists(st.integers(-2**40, 2**40), max_size=50), st.integers(-2**40, 2**40))
+def test_step_deltas_are_numpy_diff_with_the_previous_position(col, prev):
+    col_a = np.array(col, dtype=np.int64)
+    assert np.array_equal(step_deltas(col_a, prev), np.diff(col_a, prepend=np.int64(prev)))
 
 
 def test_round_pulse_ties_go_up_and_sums_chain():
