@@ -54,6 +54,7 @@ Invariants
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Callable, Iterator
 from fractions import Fraction
@@ -964,12 +965,14 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         else:
             ca = start[arow, ia] + ia_col[0][arow]
             cb = start[arow, ib] + ib_col[0][arow]
-        # under LinuxCNC's rule the fast path takes only arcs within the default tolerance
-        # (LinuxCNC accepts all of those); the others go to the full interpreter
-        from .interpreter import DEFAULT_ARC_TOLERANCE
-
-        tol = it.arc_tolerance if getattr(it, "arc_rule", "fixed") == "fixed" else DEFAULT_ARC_TOLERANCE
-        if not _arcs_ok(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb, tol, S):
+        # under LinuxCNC's rule the arcs LinuxCNC accepts (the interpreter's rule, decided the same way);
+        # a run with an arc it refuses goes to the full interpreter, which reports it
+        if getattr(it, "arc_rule", "fixed") == "linuxcnc":
+            if not _arcs_ok_linuxcnc(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb,
+                                     bool(inch), S):
+                return None
+        elif not _arcs_ok(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb,
+                          it.arc_tolerance, S):
             return None
         centre = np.zeros((m, 2), dtype=np.int64)
         centre[arcs, 0] = ca
@@ -1060,6 +1063,37 @@ def _arcs_ok(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca:
         a0 = (int(sa[k]) - int(ca[k])) ** 2 + (int(sb[k]) - int(cb[k])) ** 2
         a1 = (int(ea[k]) - int(ca[k])) ** 2 + (int(eb[k]) - int(cb[k])) ** 2
         if a0 != a1 and sqrt_diff_exceeds(Fraction(a0), Fraction(a1), tt):
+            return False
+    return True
+
+
+def _arcs_ok_linuxcnc(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca: np.ndarray,
+                      cb: np.ndarray, inch: bool, S: int) -> bool:
+    """Every arc: both radii non-zero and accepted by LinuxCNC's rule (``interpreter.linuxcnc_rejects_arc``).
+
+    Arcs clearly inside the rule by a float test with a wide margin are accepted; every other arc is decided
+    by the interpreter's own function on its exact squared radii, so the answer is the interpreter's.
+    """
+    if np.any(((sa == ca) & (sb == cb)) | ((ea == ca) & (eb == cb))):
+        return False
+    unit = 10.0**S * (25.4 if inch else 1.0)  # scaled integers per program unit
+    r0 = np.sqrt((sa - ca).astype(np.float64) ** 2 + (sb - cb).astype(np.float64) ** 2) / unit
+    r1 = np.sqrt((ea - ca).astype(np.float64) ** 2 + (eb - cb).astype(np.float64) ** 2) / unit
+    tol = 2 * (0.001 if inch else 0.01) * math.sqrt(2)
+    err = np.abs(r1 - r0)
+    big = np.maximum(r0, r1)
+    slack = big * 1e-9 + 1e-9  # far above the rounding of these few operations
+    clear = (err + slack < tol) | ((err + slack < 100 * tol) & (err + slack < 0.001 * (big - slack)))
+    unsure = np.flatnonzero(~clear)
+    if unsure.size == 0:
+        return True
+    from .interpreter import linuxcnc_rejects_arc
+
+    den = 10 ** (2 * S)
+    for k in unsure.tolist():
+        a0 = (int(sa[k]) - int(ca[k])) ** 2 + (int(sb[k]) - int(cb[k])) ** 2
+        a1 = (int(ea[k]) - int(ca[k])) ** 2 + (int(eb[k]) - int(cb[k])) ** 2
+        if linuxcnc_rejects_arc(Fraction(a0, den), Fraction(a1, den), inch):
             return False
     return True
 

@@ -305,7 +305,7 @@ class Interpreter:
         chunk_size: int = DEFAULT_CHUNK_SIZE,
         param_ranges: Iterable[Any] = (),
     ):
-        #: "linuxcnc": accept I/J/K arcs exactly when LinuxCNC does (see _linuxcnc_rejects_arc)
+        #: "linuxcnc": accept I/J/K arcs exactly when LinuxCNC does (see linuxcnc_rejects_arc)
         self.arc_rule = "linuxcnc" if arc_tolerance == "linuxcnc" else "fixed"
         if self.arc_rule == "linuxcnc":
             arc_tolerance = LINUXCNC_RADIUS_TOLERANCE
@@ -1422,7 +1422,7 @@ class Interpreter:
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
         if r0 == 0 or r1 == 0:
             raise self.error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
-        rejected = (_linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
+        rejected = (linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
                     else r0 != r1 and sqrt_diff_exceeds(r0, r1, tol))
         if rejected:
             if self.arc_rule == "linuxcnc":
@@ -1834,7 +1834,7 @@ def _show_key(key: int | str) -> str:
     return f"#{key}" if isinstance(key, int) else f"#<{key}>"
 
 
-def _linuxcnc_rejects_arc(r0_sq: Fraction, r1_sq: Fraction, inch: bool) -> bool:
+def linuxcnc_rejects_arc(r0_sq: Fraction, r1_sq: Fraction, inch: bool) -> bool:
     """LinuxCNC's acceptance rule for an I/J/K arc (interp_arc.cc ``arc_data_ijk``), in its doubles.
 
     With ``A`` = CENTER_ARC_RADIUS_TOLERANCE (2 * 0.01 * sqrt 2 mm, or
@@ -1845,7 +1845,7 @@ def _linuxcnc_rejects_arc(r0_sq: Fraction, r1_sq: Fraction, inch: bool) -> bool:
     spiral from radius r0 to r1 that the machine moves.
 
     >>> from fractions import Fraction as F
-    >>> _linuxcnc_rejects_arc(F(100), F("100.5"), False), _linuxcnc_rejects_arc(F(1), F(4), False)
+    >>> linuxcnc_rejects_arc(F(100), F("100.5"), False), linuxcnc_rejects_arc(F(1), F(4), False)
     (False, True)
     """
     from math import sqrt

@@ -462,20 +462,26 @@ def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange,
         else:
             progress(line, total)
 
+    last_reported: list[int] = []
+
     def with_text(seq: Iterable[Any]) -> Iterator[Any]:
         for chunk in seq:
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
                 yield chunk
                 if progress is not None and len(chunk) and chunk.line is not None:
                     report(int(chunk.line[-1]))
+                    last_reported[:] = [int(chunk.line[-1])]
             else:
                 for s in chunk.segments():
                     yield s
                     if progress is not None and s.span is not None:
                         report(s.span.line)
+                        last_reported[:] = [s.span.line]
 
     result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file, limits=limits, profile=profile)
+    if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
+        report(last_reported[0])
     # fill the source text of violations and reasons (column chunks carry only line numbers)
     spans = [*(v.span for v in result.violations), *(r.span for r in result.reasons),
              *(u.span for u in run.unsupported)]

@@ -73,6 +73,8 @@ __all__ = ["verify_segments", "Prover"]
 
 F0 = Fraction(0)
 F1 = Fraction(1)
+#: Segments that come one by one are screened by columns this many at a time (:func:`verify_segments`).
+SEGMENT_BATCH = 1024
 #: Kinds the straight-piece path decides (a dwell is a point).
 _LINE_LIKE = frozenset({SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL})
 
@@ -1185,9 +1187,56 @@ def verify_segments(
             reasons.append(out.reason)
         return True
 
+    # segments that come one by one (the full interpreter's, a caller's) are screened in batches
+    batch: list[Segment] = []
+    batch_size = SEGMENT_BATCH if engine == "auto" else 0
+
+    def flush() -> bool:
+        """Decide the batched segments in order: the column screen first, the rest one by one."""
+        from .screen import segment_columns
+
+        segs = batch[:]
+        batch.clear()
+        proved: set[int] = set()
+        in_chunk: set[int] = set()
+        started = clock()
+        for chunk, rows in segment_columns(segs, prover):
+            flagged = screen_chunk(chunk, prover)
+            profile.screened(chunk, len(flagged), clock() - started)
+            n_proved = len(rows) - len(flagged)
+            prover.stats["screened"] += n_proved
+            prover.stats["segments"] += n_proved
+            in_chunk.update(rows)
+            proved.update(rows)
+            proved.difference_update(rows[k] for k in flagged)
+            started = clock()
+        for i, seg in enumerate(segs):
+            if i in proved:
+                if seg.span is not None:
+                    last_line[0] = seg.span.line
+                continue
+            if not handle(seg, i in in_chunk):
+                return False
+        return True
+
     try:
         with limits.watch():
             for item in segments:
+                if isinstance(item, Segment) and batch_size:
+                    batch.append(item)
+                    if len(batch) >= batch_size and not flush():
+                        truncated = True
+                        break
+                    continue
+                if isinstance(item, MotionChunk) and item.scale is None and batch_size:
+                    batch.extend(item.segments())
+                    if len(batch) >= batch_size and not flush():
+                        truncated = True
+                        break
+                    continue
+                if batch and not flush():
+                    truncated = True
+                    break
                 if isinstance(item, MotionChunk):
                     if len(item) and item.scale is not None and item.line is not None:
                         last_line[0] = int(item.line[0])
@@ -1213,6 +1262,8 @@ def verify_segments(
                         truncated = True
                 if truncated:
                     break
+            if batch and not truncated and not flush():
+                truncated = True
     except KeyboardInterrupt:
         interrupted = True
     if undecided:

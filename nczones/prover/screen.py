@@ -19,14 +19,14 @@ flagged, i.e. handled by exact Python integers downstream).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from fractions import Fraction
 from typing import Any, Protocol
 
 import numpy as np
 
-from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
-from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
+from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
+from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint, tip_offset
 
 
 class ScreenedProver(Protocol):
@@ -45,7 +45,7 @@ class ScreenedProver(Protocol):
     @property
     def tool_axis(self) -> str | None: ...
 
-__all__ = ["screen_chunk"]
+__all__ = ["screen_chunk", "segment_columns"]
 
 _LIMIT = 2**61
 _NEG = np.iinfo(np.int64).min // 4
@@ -332,3 +332,247 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
                 if rows.size:
                     ok[rows] = screen_rows(z, s, x0[rows], x1[rows], y0[rows], y1[rows])
     return np.flatnonzero(~ok).tolist()
+
+
+#: The finest decimal scale arc columns are built at (``10**-12`` mm).
+MAX_SEGMENT_SCALE = 12
+#: The scale of line, rapid and dwell columns (``10**-9`` mm): their boxes are rounded outwards to it.
+LINE_SCALE = 9
+_LINE_UNIT = 10**LINE_SCALE
+_LINE_KINDS = frozenset({SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL})
+_DEC_EXP: dict[int, int] = {1: 0}
+_LINE_MULT: dict[int, int | None] = {1: _LINE_UNIT}
+
+
+def _decimal_exponent(den: int) -> int:
+    """The least ``s`` with ``den`` dividing ``10**s``; ``MAX_SEGMENT_SCALE + 1`` when there is none that small."""
+    got = _DEC_EXP.get(den)
+    if got is None:
+        d, twos, fives = den, 0, 0
+        while d % 2 == 0:
+            d //= 2
+            twos += 1
+        while d % 5 == 0:
+            d //= 5
+            fives += 1
+        got = max(twos, fives) if d == 1 and max(twos, fives) <= MAX_SEGMENT_SCALE else MAX_SEGMENT_SCALE + 1
+        if len(_DEC_EXP) < 4096:
+            _DEC_EXP[den] = got
+    return got
+
+
+def _line_multiplier(den: int) -> int | None:
+    """``10**LINE_SCALE // den`` when ``den`` divides it (the value is exact in line columns), else None."""
+    q, r = divmod(_LINE_UNIT, den)
+    got = q if r == 0 else None
+    if len(_LINE_MULT) < 4096:
+        _LINE_MULT[den] = got
+    return got
+
+
+def _screenable(seg: Segment, prover: Prover) -> bool:
+    """Whether the prover decides ``seg`` on its concrete path, so that a proved box proves it."""
+    if seg.axes != prover.axes:
+        return False
+    if seg.extra and (any(k == "cylinder_radius" for k, _ in seg.extra)
+                      or (prover.has_tip_zones and tip_offset(seg.extra))):
+        return False
+    return not (prover.params and prover._param_relevant(seg))
+
+
+def segment_columns(segments: Sequence[Segment], prover: Prover) -> list[tuple[MotionChunk, list[int]]]:
+    """The segments the column screen can take, as column chunks, each with the indices of its rows in ``segments``.
+
+    A segment is taken when the prover would decide it on its concrete path
+    (:meth:`~nczones.prover.core.Prover.check`: a line, rapid, dwell or an
+    arc with a centre, not depending on a parameter range, no lathe tool-tip
+    shift, no developed arc) and its tool length is exact in the columns.
+
+    Invariant (soundness): the box :func:`screen_chunk` forms for a row
+    contains the segment's exact box.  Lines, rapids and dwells go into one
+    chunk at :data:`LINE_SCALE`, each row spanning its segment's box rounded
+    outwards there (from the floor of the low corner to the ceiling of the
+    high one; exact for decimals of at most that many places, and the full
+    interpreter's doubles are binary fractions that are not); a line, rapid
+    or dwell is screened by that box.  Arcs go into a second chunk at the
+    finest decimal scale any of them needs (at most
+    :data:`MAX_SEGMENT_SCALE`), taken only when their end points and centre
+    are such decimals, so their rows are exact.  The screen proves a row only
+    when its box (grown by the margin) fits every zone, and a box that fits
+    holds every smaller one, so a proved row is a proved segment; the rows it
+    cannot prove and the segments not taken are left for the per-segment
+    path, which decides them exactly.
+
+    >>> from fractions import Fraction as F
+    >>> from nczones.machine import parse_machine
+    >>> from nczones.prover import Prover
+    >>> m = parse_machine('[machine]\\naxes = ["X"]\\n[machine.rapid]\\nX = "1"\\n[machine.reference]\\nX = "0"\\n'
+    ...                   '[[zones]]\\nname = "t"\\nkind = "box"\\nmin = { X = "0" }\\nmax = { X = "10" }\\n')
+    >>> segs = [Segment(SegmentKind.LINE, (F(1, 4),), (F(1, 3),), ("X",)),
+    ...         Segment(SegmentKind.ARC, (F(0),), (F(0),), ("X",), centre=(F(1, 3), F(0)))]
+    >>> [(rows, c.scale, c.start[:, 0].tolist(), c.end[:, 0].tolist()) for c, rows in segment_columns(segs, Prover(m))]
+    [([0], 9, [250000000], [333333334])]
+    """
+    arcs: list[int] = []
+    line_rows: list[int] = []
+    starts: list[list[int]] = []
+    ends: list[list[int]] = []
+    tls: list[int] = []
+    kinds: list[int] = []
+    blocks: list[int] = []
+    lines: list[int] = []
+    unit = _LINE_UNIT
+    mults = _LINE_MULT
+    arc_kind = SegmentKind.ARC
+    line_kinds = _LINE_KINDS
+    simple = not prover.params and not prover.has_tip_zones
+    axes = prover.axes
+    for i, seg in enumerate(segments):
+        kind = seg.kind
+        if kind is arc_kind:
+            arcs.append(i)
+            continue
+        if kind not in line_kinds:
+            continue
+        if simple:
+            if seg.axes != axes or (seg.extra and any(k == "cylinder_radius" for k, _ in seg.extra)):
+                continue
+        elif not _screenable(seg, prover):
+            continue
+        tl = seg.tool_length
+        m_tl = mults.get(tl.denominator, 0)
+        if m_tl == 0:
+            m_tl = _line_multiplier(tl.denominator)
+        if m_tl is None:
+            continue
+        lo: list[int] = []
+        hi: list[int] = []
+        for a, b in zip(seg.start, seg.end):
+            na, da, nb, db = a.numerator, a.denominator, b.numerator, b.denominator
+            ma = mults.get(da, 0)
+            if ma == 0:
+                ma = _line_multiplier(da)
+            mb = mults.get(db, 0)
+            if mb == 0:
+                mb = _line_multiplier(db)
+            if ma is not None:
+                fa = ca = na * ma
+            else:
+                fa = (na * unit) // da
+                ca = -((-na * unit) // da)
+            if mb is not None:
+                fb = cb = nb * mb
+            else:
+                fb = (nb * unit) // db
+                cb = -((-nb * unit) // db)
+            lo.append(fa if fa <= fb else fb)
+            hi.append(ca if ca >= cb else cb)
+        line_rows.append(i)
+        starts.append(lo)
+        ends.append(hi)
+        tls.append(tl.numerator * m_tl)
+        kinds.append(int(kind))
+        blocks.append(seg.block)
+        sp = seg.span
+        lines.append(sp.line if sp is not None else 0)
+    out: list[tuple[MotionChunk, list[int]]] = []
+    if line_rows:
+        cols = _int64_rows(starts, ends, tls)
+        if cols is None:  # a number beyond int64: keep the rows below 2**60 (the rest are decided one by one)
+            keep = [k for k in range(len(line_rows))
+                    if max(map(abs, starts[k] + ends[k] + [tls[k]])) < 2**60]
+            line_rows = [line_rows[k] for k in keep]
+            starts, ends, tls = [starts[k] for k in keep], [ends[k] for k in keep], [tls[k] for k in keep]
+            kinds, blocks, lines = [kinds[k] for k in keep], [blocks[k] for k in keep], [lines[k] for k in keep]
+            cols = _int64_rows(starts, ends, tls) if keep else None
+        if cols is not None:
+            st, en, tl_col = cols
+            out.append((MotionChunk(axes, LINE_SCALE, kind=np.array(kinds, dtype=np.int8), start=st, end=en,
+                                    line=np.array(lines, dtype=np.int64), block=np.array(blocks, dtype=np.int64),
+                                    tool_length=tl_col), line_rows))
+    if arcs:
+        got = _arc_columns(segments, arcs, prover)
+        if got is not None:
+            out.append(got)
+    return out
+
+
+def _int64_rows(starts: list[list[int]], ends: list[list[int]],
+                tls: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    try:
+        n, k = len(starts), len(starts[0]) if starts else 0
+        return (np.array(starts, dtype=np.int64).reshape(n, k), np.array(ends, dtype=np.int64).reshape(n, k),
+                np.array(tls, dtype=np.int64))
+    except OverflowError:
+        return None
+
+
+def _arc_columns(segments: Sequence[Segment], which: list[int],
+                 prover: Prover) -> tuple[MotionChunk, list[int]] | None:
+    """The arcs among ``segments[which]`` whose numbers are decimals of at most MAX_SEGMENT_SCALE places, exact."""
+    exp = _decimal_exponent
+    limit = MAX_SEGMENT_SCALE
+    taken: list[int] = []
+    scale = 0
+    for i in which:
+        seg = segments[i]
+        c = seg.centre
+        if c is None or seg.plane is None or not _screenable(seg, prover):
+            continue
+        s = max(exp(seg.tool_length.denominator), exp(c[0].denominator), exp(c[1].denominator))
+        for v in seg.start:
+            s = max(s, exp(v.denominator))
+        for v in seg.end:
+            s = max(s, exp(v.denominator))
+        if s > limit:
+            continue
+        scale = max(scale, s)
+        taken.append(i)
+    unit: int = 10**scale
+    bound = 2**60
+    rows: list[int] = []
+    starts: list[list[int]] = []
+    ends: list[list[int]] = []
+    tls: list[int] = []
+    centres: list[tuple[int, int]] = []
+    planes: list[int] = []
+    cws: list[bool] = []
+    turns: list[int] = []
+    blocks: list[int] = []
+    lines: list[int] = []
+
+    def scaled(v: Fraction) -> int:
+        return v.numerator * (unit // v.denominator)
+
+    for i in taken:
+        seg = segments[i]
+        assert seg.centre is not None and seg.plane is not None  # taken above
+        st = [scaled(v) for v in seg.start]
+        en = [scaled(v) for v in seg.end]
+        tl = scaled(seg.tool_length)
+        ctr = (scaled(seg.centre[0]), scaled(seg.centre[1]))
+        if max(abs(v) for v in (*st, *en, tl, *ctr)) >= bound:
+            continue
+        rows.append(i)
+        starts.append(st)
+        ends.append(en)
+        tls.append(tl)
+        centres.append(ctr)
+        planes.append(int(seg.plane))
+        cws.append(bool(seg.clockwise))
+        turns.append(int(seg.turns))
+        blocks.append(seg.block)
+        lines.append(seg.span.line if seg.span is not None else 0)
+    if not rows:
+        return None
+    m = len(rows)
+    chunk = MotionChunk(
+        prover.axes, scale, kind=np.full(m, int(SegmentKind.ARC), dtype=np.int8),
+        start=np.array(starts, dtype=np.int64).reshape(m, len(prover.axes)),
+        end=np.array(ends, dtype=np.int64).reshape(m, len(prover.axes)),
+        line=np.array(lines, dtype=np.int64), block=np.array(blocks, dtype=np.int64),
+        tool_length=np.array(tls, dtype=np.int64), centre=np.array(centres, dtype=np.int64).reshape(m, 2),
+        plane=np.array(planes, dtype=np.int8), clockwise=np.array(cws, dtype=bool),
+        turns=np.array(turns, dtype=np.int32),
+    )
+    return chunk, rows
