@@ -8,8 +8,10 @@ child, so start-up counts the same way for every tool):
 
 * **regex pass** — Python reads the file and splits every line into words
   with one regular expression: the floor of "reading G-code";
-* **rs274** — LinuxCNC's C++ interpreter alone (``rs274 -g``; Debian package
-  ``linuxcnc-uspace``), skipped with a note when it is not installed;
+* **rs274** — LinuxCNC's C++ interpreter alone (``rs274 -g FILE /dev/null``: batch mode, its canonical
+  calls written to ``/dev/null``; Debian package ``linuxcnc-uspace``, no INI file or tool table needed),
+  skipped with a note when it is not installed; its exit status is printed beside it (``rs274 exit``),
+  since a program it refuses stops early;
 * **nczones interpret** — ``nczones.gcode.interpret`` over the whole program
   (text to motion, no proof);
 * **nczones verify** — the command line ``nczones verify`` end to end
@@ -92,9 +94,9 @@ import sys, time
 from nczones.gcode import interpret
 from nczones.machine import load_machine
 m = load_machine(sys.argv[2])
-tol = sys.argv[3] or None
+options = {"arc_tolerance": sys.argv[3]} if sys.argv[3] else {}
 n = 0
-for chunk in interpret(sys.argv[1], m, arc_tolerance=tol):
+for chunk in interpret(sys.argv[1], m, **options):
     n += len(chunk)
 print(n)
 """
@@ -153,16 +155,17 @@ def main() -> None:
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     nczones = [sys.executable, "-m", "nczones"]
     print("CPU seconds per process; ratio = nczones verify / peer, measured in this run")
-    print(f"{'program':58} {'regex':>7} {'rs274':>7} {'interp':>7} {'verify':>7}  exit  verify/rs274  verify/regex")
+    print(f"{'program':58} {'regex':>7} {'rs274':>7} {'interp':>7} {'verify':>7}  exit  rs274 exit  verify/rs274"
+          "  verify/regex  load")
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
         for name, path, dialect, tol in programs(a, d):
             machine = d / f"box-{dialect}.toml"
             machine.write_text(BOX.format(dialect=dialect))
             regex, _ = cpu_of([sys.executable, "-c", REGEX_PASS, str(path)], a.timeout)
-            peer = None
+            peer, peer_code = None, None
             if rs274 is not None and dialect == "linuxcnc":
-                peer, _ = cpu_of([rs274, "-g", str(path)], a.timeout)
+                peer, peer_code = cpu_of([rs274, "-g", str(path), os.devnull], a.timeout)
             interp, _ = cpu_of([sys.executable, "-c", INTERPRET, str(path), str(machine), tol], a.timeout, env)
             cmd = [*nczones, "verify", str(path), "--machine", str(machine), "--format", "json"]
             if tol:
@@ -171,7 +174,9 @@ def main() -> None:
             r_peer = "" if peer is None or verify is None else f"{verify / peer:.2f}"
             r_regex = "" if regex is None or verify is None else f"{verify / regex:.2f}"
             print(f"{name[:58]:58} {fmt(regex):>7} {fmt(peer) if rs274 else 'n/a':>7} {fmt(interp):>7} "
-                  f"{fmt(verify):>7}  {code if code is not None else '-':>4}  {r_peer:>12}  {r_regex:>12}", flush=True)
+                  f"{fmt(verify):>7}  {code if code is not None else '-':>4}  "
+                  f"{peer_code if peer_code is not None else '-':>10}  {r_peer:>12}  {r_regex:>12}  "
+                  f"{os.getloadavg()[0]:4.1f}", flush=True)
 
 
 if __name__ == "__main__":

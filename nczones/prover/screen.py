@@ -448,10 +448,20 @@ def segment_columns(segments: Sequence[Segment], prover: Prover) -> list[tuple[M
         lo: list[int] = []
         hi: list[int] = []
         for a, b in zip(seg.start, seg.end):
-            na, da, nb, db = a.numerator, a.denominator, b.numerator, b.denominator
+            na, da = a.numerator, a.denominator
             ma = mults.get(da, 0)
             if ma == 0:
                 ma = _line_multiplier(da)
+            if a is b:  # an axis that does not move (the interpreter keeps its number)
+                if ma is not None:
+                    fa = na * ma
+                    lo.append(fa)
+                    hi.append(fa)
+                else:
+                    lo.append((na * unit) // da)
+                    hi.append(-((-na * unit) // da))
+                continue
+            nb, db = b.numerator, b.denominator
             mb = mults.get(db, 0)
             if mb == 0:
                 mb = _line_multiplier(db)

@@ -10,9 +10,10 @@
   cells agree with exact point location.
 * Verdicts and violating blocks agree with Z3 sent every segment, for
   column chunks (grid screen, then the exact tier) and single segments,
-  lines and doglegs, allow and forbid polygons, with margins (arcs against
-  polygons are decided by the solver on both sides once the exact box test
-  fails, which is what makes them slow to compare here).
+  lines and doglegs, allow and forbid polygons, with margins; with arcs
+  against the polygons too (column chunks, segments screened in batches and
+  segments decided one by one give the same answer; where Z3 decides, it
+  agrees).
 """
 
 from __future__ import annotations
@@ -26,11 +27,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.machine import parse_machine
-from nczones.motion import Segment, SegmentKind
+from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover import exact as ex
 from nczones.prover import polygon as pg
 from nczones.prover import verify_segments
 from nczones.zones import AllowedSet, BoxZone, PolygonZone, ZonePoint
+from tests.prover.test_segment_batches import one_by_one
 from tests.prover.test_screen_chunks import AXES2, chunk_of, chunk_segments
 
 
@@ -163,8 +165,44 @@ def test_polygon_verdicts_agree_with_z3_per_segment(zone, segs, rapid_mode, marg
         return  # the solver could not decide: nothing to compare
     a = verify_segments([chunk_of(segs, 2, AXES2)], m, margin=margin)
     c = verify_segments(segs, m, margin=margin)
-    assert a.verdict == b.verdict == c.verdict
-    assert [v.block for v in a.violations] == [v.block for v in b.violations] == [v.block for v in c.violations]
+    with one_by_one():
+        d = verify_segments(segs, m, margin=margin)
+    assert a.verdict == b.verdict == c.verdict == d.verdict
+    assert [v.block for v in a.violations] == [v.block for v in b.violations] == [v.block for v in c.violations] \
+        == [v.block for v in d.violations]
+
+
+@st.composite
+def arcs_near_the_polygons(draw):
+    """Arcs (quarter, half, three-quarter and full turns, scale 2) around points near the stars' centre."""
+    out = []
+    for i in range(draw(st.integers(1, 4))):
+        c = (F(draw(st.integers(700, 1300)), 100), F(draw(st.integers(-100, 500)), 100))
+        u = (F(draw(st.integers(-350, 350)), 100), F(draw(st.integers(-350, 350)), 100))
+        if u == (0, 0):
+            u = (F(1), F(0))
+        e2 = draw(st.sampled_from([(u[1], -u[0]), (-u[0], -u[1]), (-u[1], u[0]), u]))
+        s, e = (c[0] + u[0], c[1] + u[1]), (c[0] + e2[0], c[1] + e2[1])
+        out.append(Segment(SegmentKind.ARC, s, e, AXES2, block=i, plane=Plane.XY, clockwise=draw(st.booleans()),
+                           centre=c))
+    return out
+
+
+@settings(max_examples=12, deadline=None, derandomize=True)
+@given(star_polygons(max_vertices=6).map(lambda z: replace(z, limits=(), point=ZonePoint.MACHINE)),
+       arcs_near_the_polygons(), st.sampled_from([F(0), F(0), F(1, 2)]))
+def test_arcs_against_polygons_agree_with_z3_per_segment(zone, segs, margin):
+    m = _polygon_machine(zone, "linear")
+    a = verify_segments([chunk_of(segs, 2, AXES2)], m, margin=margin)  # the column screen, then one by one
+    c = verify_segments(segs, m, margin=margin)  # screened in batches
+    with one_by_one():
+        d = verify_segments(segs, m, margin=margin)  # every arc on its own: exact box, enclosures, Z3
+    assert a.verdict == c.verdict == d.verdict
+    assert [v.block for v in a.violations] == [v.block for v in c.violations] == [v.block for v in d.violations]
+    b = verify_segments(segs, m, engine="z3", margin=margin)
+    if b.verdict.label != "unknown" and a.verdict.label != "unknown":
+        assert a.verdict == b.verdict
+        assert [v.block for v in a.violations] == [v.block for v in b.violations]
 
 
 def test_a_line_through_a_notch_is_found_without_the_solver():
