@@ -283,7 +283,7 @@ def _verify(
     profile = RunProfile()
     opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress, limits=limits,
                 profile=profile)
-    deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)]
+    deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)] if "/" in source.text else []
     positions = ((False, True) if mode == "both" else (mode == "on",)) if deleted else (False,)
     per_position: list[tuple[Result, Interpretation]] = []
     for skip in positions:
