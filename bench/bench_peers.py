@@ -181,7 +181,7 @@ def main() -> None:
             verify, code = cpu_of(cmd, a.timeout, env)
             r_peer = "" if peer is None or verify is None else f"{verify / peer:.2f}"
             r_regex = "" if regex is None or verify is None else f"{verify / regex:.2f}"
-            print(f"{name[:58]:58} {fmt(regex):>7} {fmt(peer) if rs274 else 'n/a':>7} {fmt(interp):>7} "
+            print(f"{name[:58]:58} {fmt(regex):>7} {fmt(peer) if rs274 and dialect == 'linuxcnc' else 'n/a':>7} {fmt(interp):>7} "
                   f"{fmt(verify):>7}  {code if code is not None else '-':>4}  "
                   f"{peer_code if peer_code is not None else '-':>10}  {r_peer:>12}  {r_regex:>12}  "
                   f"{os.getloadavg()[0]:4.1f}", flush=True)

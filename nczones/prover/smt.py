@@ -42,17 +42,38 @@ import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
-
-import z3
+from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from .exact import reachable
 
-__all__ = ["q", "Solver", "SolverAnswer", "zone_violation", "triangulate", "Z3_VERSION"]
+__all__ = ["q", "Solver", "SolverAnswer", "zone_violation", "triangulate", "z3_version"]
 
-Z3_VERSION = z3.get_version_string()
+if TYPE_CHECKING:
+    import z3
+
+
+def z3_version() -> str:
+    """The version of the Z3 library (``major.minor.build``), without loading Z3 when it is not loaded yet.
+
+    >>> import z3
+    >>> z3_version() == z3.get_version_string()
+    True
+    """
+    import sys
+
+    loaded = sys.modules.get("z3")
+    if loaded is not None:
+        return str(loaded.get_version_string())
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:  # the package's version is the library's, with a fourth (revision) number
+        return ".".join(version("z3-solver").split(".")[:3])
+    except PackageNotFoundError:  # a Z3 installed without its metadata (a system package)
+        import z3
+
+        return str(z3.get_version_string())
 F0 = Fraction(0)
 
 
@@ -353,30 +374,44 @@ class Solver:
     """
 
     name = "z3"
-    version = Z3_VERSION
 
     def __init__(self, rlimit: int | None = None, *, nonlinear_rlimit: int | None = None, limits: Any = None):
         from .limits import LINEAR_RLIMIT, NONLINEAR_RLIMIT
 
-        self.ctx = z3.Context()
+        #: The Z3 version every report names (Z3 itself is loaded at the first query).
+        self.version = z3_version()
+        self._ctx: z3.Context | None = None  # made at the first query: most runs never ask the solver
         self.rlimit = LINEAR_RLIMIT if rlimit is None else rlimit
         self.nonlinear_rlimit = NONLINEAR_RLIMIT if nonlinear_rlimit is None else nonlinear_rlimit
         self.limits = limits
         self.queries = 0
         self.seconds = 0.0
         self.stopped: dict[str, int] = {}
-        # ctrl_c false: Z3 must not install its own SIGINT handler while it solves (it would swallow
-        # Ctrl-C); the run's watchdog interrupts it instead (see limits.py)
-        # arith.nl.grobner false: the Groebner-basis lemmas of the nonlinear core are not bounded by the
-        # rlimit and ran for minutes on R-format arc queries that are decided in a second without them
-        self._eval("(set-option :ctrl_c false)(set-option :smt.random_seed 0)(set-option :sat.random_seed 0)"
-                   "(set-option :nlsat.seed 0)(set-option :smt.arith.nl.grobner false)")
+
+    @property
+    def ctx(self) -> z3.Context:
+        """The solver's Z3 context, made and configured when first used."""
+        if self._ctx is None:
+            import z3
+
+            self._ctx = z3.Context()
+            # ctrl_c false: Z3 must not install its own SIGINT handler while it solves (it would swallow
+            # Ctrl-C); the run's watchdog interrupts it instead (see limits.py)
+            # arith.nl.grobner false: the Groebner-basis lemmas of the nonlinear core are not bounded by the
+            # rlimit and ran for minutes on R-format arc queries that are decided in a second without them
+            self._eval("(set-option :ctrl_c false)(set-option :smt.random_seed 0)(set-option :sat.random_seed 0)"
+                       "(set-option :nlsat.seed 0)(set-option :smt.arith.nl.grobner false)")
+        return self._ctx
 
     def _eval(self, text: str) -> str:
+        import z3
+
         return str(z3.Z3_eval_smtlib2_string(self.ctx.ref(), text))
 
     def check(self, body: str, want: list[str], precision: int = 40, *, nonlinear: bool = False) -> SolverAnswer:
         import time
+
+        import z3
 
         if self.limits is not None:
             self.limits.checkpoint()
