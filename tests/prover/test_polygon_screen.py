@@ -32,8 +32,8 @@ from nczones.prover import exact as ex
 from nczones.prover import polygon as pg
 from nczones.prover import verify_segments
 from nczones.zones import AllowedSet, BoxZone, PolygonZone, ZonePoint
-from tests.prover.test_segment_batches import one_by_one
 from tests.prover.test_screen_chunks import AXES2, chunk_of, chunk_segments
+from tests.prover.test_segment_batches import one_by_one
 
 
 @st.composite
