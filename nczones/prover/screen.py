@@ -31,7 +31,9 @@ from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint, tip_offset
 
 class ScreenedProver(Protocol):
     """What the screen reads of the prover (:class:`nczones.prover.core.Prover` provides it): the zones,
-    the margin and the tool axis, and a cache of per-zone constants it keeps on the prover.
+    the margin and the tool axis, and a cache of per-zone constants it keeps on the prover; to take
+    segments into columns, its axes, parameter ranges, whether it has tip zones and which segments depend
+    on a range.
 
     Declared here so that the screen does not import the prover's core back.
     """
@@ -44,6 +46,13 @@ class ScreenedProver(Protocol):
     def margin(self) -> Fraction: ...
     @property
     def tool_axis(self) -> str | None: ...
+    @property
+    def axes(self) -> tuple[str, ...]: ...
+    @property
+    def params(self) -> tuple: ...
+    @property
+    def has_tip_zones(self) -> bool: ...
+    def param_relevant(self, seg: Segment) -> bool: ...
 
 __all__ = ["screen_chunk", "segment_columns"]
 
@@ -370,17 +379,17 @@ def _line_multiplier(den: int) -> int | None:
     return got
 
 
-def _screenable(seg: Segment, prover: Prover) -> bool:
+def _screenable(seg: Segment, prover: ScreenedProver) -> bool:
     """Whether the prover decides ``seg`` on its concrete path, so that a proved box proves it."""
     if seg.axes != prover.axes:
         return False
     if seg.extra and (any(k == "cylinder_radius" for k, _ in seg.extra)
                       or (prover.has_tip_zones and tip_offset(seg.extra))):
         return False
-    return not (prover.params and prover._param_relevant(seg))
+    return not (prover.params and prover.param_relevant(seg))
 
 
-def segment_columns(segments: Sequence[Segment], prover: Prover) -> list[tuple[MotionChunk, list[int]]]:
+def segment_columns(segments: Sequence[Segment], prover: ScreenedProver) -> list[tuple[MotionChunk, list[int]]]:
     """The segments the column screen can take, as column chunks, each with the indices of its rows in ``segments``.
 
     A segment is taken when the prover would decide it on its concrete path
@@ -518,7 +527,7 @@ def _int64_rows(starts: list[list[int]], ends: list[list[int]],
 
 
 def _arc_columns(segments: Sequence[Segment], which: list[int],
-                 prover: Prover) -> tuple[MotionChunk, list[int]] | None:
+                 prover: ScreenedProver) -> tuple[MotionChunk, list[int]] | None:
     """The arcs among ``segments[which]`` whose numbers are decimals of at most MAX_SEGMENT_SCALE places, exact."""
     exp = _decimal_exponent
     limit = MAX_SEGMENT_SCALE
