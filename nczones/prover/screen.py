@@ -25,6 +25,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
+from ..exact import decimal_places
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint, tip_offset
 
@@ -357,14 +358,8 @@ def _decimal_exponent(den: int) -> int:
     """The least ``s`` with ``den`` dividing ``10**s``; ``MAX_SEGMENT_SCALE + 1`` when there is none that small."""
     got = _DEC_EXP.get(den)
     if got is None:
-        d, twos, fives = den, 0, 0
-        while d % 2 == 0:
-            d //= 2
-            twos += 1
-        while d % 5 == 0:
-            d //= 5
-            fives += 1
-        got = max(twos, fives) if d == 1 and max(twos, fives) <= MAX_SEGMENT_SCALE else MAX_SEGMENT_SCALE + 1
+        places = decimal_places(Fraction(1, den))
+        got = places if places is not None and places <= MAX_SEGMENT_SCALE else MAX_SEGMENT_SCALE + 1
         if len(_DEC_EXP) < 4096:
             _DEC_EXP[den] = got
     return got
