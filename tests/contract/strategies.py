@@ -30,3 +30,20 @@ def contract_cases(draw, *, axes=(("X", "Y"), ("X", "Y", "Z")), allow_kinds=("st
         )
     )
     return machine, text
+
+
+@st.composite
+def roughing_profiles(draw):
+    """A monotone turning contour for a roughing cycle: its (z, x) points (x a radius that grows as z falls
+    from 0), the stock's radius above it, and the cycle's depth of cut and retract (decimal text)."""
+    n = draw(st.integers(1, 3))
+    x, z = draw(st.integers(2, 6)), 0
+    points = [(z, x)]
+    for _ in range(n):
+        z -= draw(st.integers(2, 8))
+        x += draw(st.integers(0, 3))
+        points.append((z, x))
+    top = x + draw(st.integers(1, 4))
+    depth = draw(st.sampled_from(["1", "1.5", "2"]))
+    retract = draw(st.sampled_from(["0.3", "0.5", "1"]))
+    return points, top, depth, retract

@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from nczones.machine import parse_machine
 
 from .contract import check_contract
+from .strategies import roughing_profiles
 
 
 def _lathe(dialect: str, extra: str, jaws_min: tuple[int, int], jaws_max: tuple[int, int], travel_min_x: int = 0):
@@ -28,16 +29,7 @@ def lathe_cases(draw):
     """A lathe (X radius, Z; jaws as a forbidden box) and a program with a G71 cycle over a monotone profile."""
     dialect = draw(st.sampled_from(["linuxcnc", "fanuc"]))
     diameter = draw(st.booleans())
-    n = draw(st.integers(1, 3))
-    x, z = draw(st.integers(2, 6)), 0
-    points = [(z, x)]
-    for _ in range(n):
-        z -= draw(st.integers(2, 8))
-        x += draw(st.integers(0, 3))
-        points.append((z, x))
-    top = x + draw(st.integers(1, 4))
-    depth = draw(st.sampled_from(["1", "1.5", "2"]))
-    retract = draw(st.sampled_from(["0.3", "0.5", "1"]))
+    points, top, depth, retract = draw(roughing_profiles())
     jz = points[-1][0] + draw(st.integers(-3, 2))
     jx = draw(st.integers(points[0][1], top + 1))
     extra = ('diameter_axes = ["X"]\n' if diameter else "") + (

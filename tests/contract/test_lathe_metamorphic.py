@@ -20,6 +20,7 @@ from nczones.exact import format_decimal
 from nczones.machine import parse_machine
 
 from .metamorphic import check_margins, check_ranges
+from .strategies import roughing_profiles
 
 F = Fraction
 
@@ -34,16 +35,7 @@ def lathe_machines_and_programs(draw):
     roughing cycle over a monotone contour, written in diameters or radii; Fanuc lathes use a tool offset."""
     dialect = draw(st.sampled_from(["linuxcnc", "fanuc"]))
     diameter = draw(st.booleans())
-    n = draw(st.integers(1, 3))
-    x, z = draw(st.integers(2, 6)), 0
-    points = [(z, x)]
-    for _ in range(n):
-        z -= draw(st.integers(2, 8))
-        x += draw(st.integers(0, 3))
-        points.append((z, x))
-    top = x + draw(st.integers(1, 4))
-    depth = draw(st.sampled_from(["1", "1.5", "2"]))
-    retract = draw(st.sampled_from(["0.3", "0.5", "1"]))
+    points, top, depth, retract = draw(roughing_profiles())
     g54_z = draw(st.sampled_from([0, 5, -3]))
     tool_x, tool_z = (draw(st.sampled_from([0, 10, 25])), draw(st.sampled_from([0, 8]))) \
         if dialect == "fanuc" else (0, 0)
