@@ -216,13 +216,14 @@ def _axis(names: str, i: int) -> str:
 
 
 def _nearest(rot: Rotation, p: list[Fraction], step: Fraction) -> list[Fraction]:
-    """A candidate point (doubles, rounded) for a caller that goes on after the block became unknown."""
-    t = float(rot.angle) * math.pi / 180.0
-    c, s = math.cos(t), math.sin(t)
-    x, y = float(p[rot.ia] - rot.ca), float(p[rot.ib] - rot.cb)
+    """A candidate point (the enclosures' midpoints, rounded) for a caller that goes on after the block
+    became unknown."""
+    (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(rot.angle)
+    c, s = (c_lo + c_hi) / 2, (s_lo + s_hi) / 2
+    x, y = p[rot.ia] - rot.ca, p[rot.ib] - rot.cb
     out = list(p)
-    out[rot.ia] = rot.ca + round_to((x * c - y * s, None), step)
-    out[rot.ib] = rot.cb + round_to((x * s + y * c, None), step)
+    out[rot.ia] = rot.ca + round_to((None, x * c - y * s), step)
+    out[rot.ib] = rot.cb + round_to((None, x * s + y * c), step)
     return out
 
 
@@ -236,7 +237,7 @@ def scale(sc: Scaling, p: list[Fraction], step: Fraction) -> list[Fraction]:
     out = []
     for v, c, f in zip(p, sc.centre, sc.factors):
         q = c + f * (v - c) if f != 1 else v
-        out.append(q if (q / step).denominator == 1 else round_to((float(q), q), step))
+        out.append(q if (q / step).denominator == 1 else round_to((None, q), step))
     return out
 
 
@@ -269,7 +270,6 @@ def polar_point(radius: Fraction, angle: Fraction, step: Fraction) -> tuple[Frac
         return (_coordinate([(radius, c)], step, "G16 polar point: the radius axis"),
                 _coordinate([(radius, s)], step, "G16 polar point: the angle axis"))
     except PointNotCertain as e:
-        t = float(angle) * math.pi / 180.0
-        r = float(radius)
-        raise PointNotCertain(e.reason, [round_to((r * math.cos(t), None), step),
-                                         round_to((r * math.sin(t), None), step)]) from None
+        mid_c, mid_s = (c[0] + c[1]) / 2, (s[0] + s[1]) / 2
+        raise PointNotCertain(e.reason, [round_to((None, radius * mid_c), step),
+                                         round_to((None, radius * mid_s), step)]) from None
