@@ -57,6 +57,9 @@ if TYPE_CHECKING:
     from ..gcode import Interpretation
 
 F0 = Fraction(0)
+#: Programs of fewer lines are read by the full interpreter alone: the vectorized fast path (numpy) costs
+#: more to load than it saves there, and the segments are the same either way.
+FAST_PATH_MIN_LINES = 512
 
 __all__ = [
     "verify",
@@ -407,11 +410,12 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
     cases = [ranges]
     results, first_run, splits = [], None, []
     interpretations = 0
+    fast = _line_count(source.text) >= FAST_PATH_MIN_LINES
     while cases:
         box = cases.pop(0)
         case_machine, case_ranges = centred(machine, box) if box else (machine, box)
         run = interpret(source, case_machine, track_dependencies=bool(box), param_ranges=case_ranges,
-                        block_delete=skip, **extra)
+                        block_delete=skip, fast=fast, **extra)
         interpretations += 1
         result = _verify_run(run, case_machine, case_ranges, **opts)
         if case_ranges and result.violations:

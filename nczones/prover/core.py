@@ -75,6 +75,9 @@ F0 = Fraction(0)
 F1 = Fraction(1)
 #: Segments that come one by one are screened by columns this many at a time (:func:`verify_segments`).
 SEGMENT_BATCH = 1024
+#: A run screens segments by columns (numpy) only once it has met this many motions; a smaller program is
+#: decided one by one on the exact path, which costs less than loading numpy (:func:`verify_segments`).
+SCREEN_MIN_SEGMENTS = 512
 #: Kinds the straight-piece path decides (a dwell is a point).
 _LINE_LIKE = frozenset({SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL})
 
@@ -1151,7 +1154,7 @@ def verify_segments(
     undecided: list[Segment] = []  # motions the spent budget left undecided (first one kept)
     n_undecided = 0
     last_line: list[int | None] = [None]
-    from .screen import screen_chunk
+    met = 0  # motions met so far: columns from SCREEN_MIN_SEGMENTS on
 
     def handle(seg: Segment, from_chunk: bool = False) -> bool:
         nonlocal n_undecided
@@ -1192,15 +1195,20 @@ def verify_segments(
     batch_size = SEGMENT_BATCH if engine == "auto" else 0
 
     def flush() -> bool:
-        """Decide the batched segments in order: the column screen first, the rest one by one."""
-        from .screen import segment_columns
-
+        """Decide the batched segments in order: the column screen first (in a run that has met
+        :data:`SCREEN_MIN_SEGMENTS` motions), the rest one by one."""
         segs = batch[:]
         batch.clear()
         proved: set[int] = set()
         in_chunk: set[int] = set()
         started = clock()
-        for chunk, rows in segment_columns(segs, prover):
+        if met >= SCREEN_MIN_SEGMENTS:
+            from .screen import screen_chunk, segment_columns
+
+            columns = segment_columns(segs, prover)
+        else:
+            columns = []
+        for chunk, rows in columns:
             flagged = screen_chunk(chunk, prover)
             profile.screened(chunk, len(flagged), clock() - started)
             n_proved = len(rows) - len(flagged)
@@ -1222,6 +1230,7 @@ def verify_segments(
     try:
         with limits.watch():
             for item in segments:
+                met += 1 if isinstance(item, Segment) else len(item)
                 if isinstance(item, Segment) and batch_size:
                     batch.append(item)
                     if len(batch) >= batch_size and not flush():
@@ -1242,6 +1251,8 @@ def verify_segments(
                         last_line[0] = int(item.line[0])
                     from_chunk = item.scale is not None and engine == "auto" and not prover.params
                     if from_chunk:
+                        from .screen import screen_chunk
+
                         n = len(item)
                         started = clock()
                         flagged = screen_chunk(item, prover)

@@ -629,7 +629,6 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
     restricts the test to those zones (default: all of ``allowed``).
     """
     from ..zones import BoxZone, SteppedZone
-    from .polygon import box_fits as polygon_box_fits
 
     d = margin
     for z in allowed.zones if zones is None else zones:
@@ -679,6 +678,8 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
                     r0, r1 = rng(a)
                     if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
                         return False
+            from .polygon import box_fits as polygon_box_fits
+
             (x0, x1), (y0, y1) = rng(z.plane[0]), rng(z.plane[1])
             if not polygon_box_fits(z, (x0, y0), (x1, y1)):
                 return False

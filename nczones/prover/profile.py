@@ -14,8 +14,6 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-import numpy as np
-
 from ..motion import MotionChunk, Segment, SegmentKind
 
 __all__ = ["RunProfile", "kind_label"]
@@ -66,6 +64,8 @@ class RunProfile:
         self.screen_s += seconds
         self.screened_rows += n - flagged
         if n and chunk.block is not None and chunk.kind is not None:
+            import numpy as np  # a column chunk exists only once numpy is loaded
+
             self.blocks = max(self.blocks, int(chunk.block[-1]) + 1)
             counts = np.bincount(chunk.kind.astype(np.int64), minlength=len(SegmentKind))
             for k, c in enumerate(counts.tolist()):

@@ -66,14 +66,43 @@ def z3_version() -> str:
     loaded = sys.modules.get("z3")
     if loaded is not None:
         return str(loaded.get_version_string())
-    from importlib.metadata import PackageNotFoundError, version
+    found = _wheel_version()
+    if found is not None:  # the wheel's version is the library's, with a fourth (revision) number
+        return ".".join(found.split(".")[:3])
+    import z3  # a Z3 installed without its metadata (a system package)
 
-    try:  # the package's version is the library's, with a fourth (revision) number
-        return ".".join(version("z3-solver").split(".")[:3])
-    except PackageNotFoundError:  # a Z3 installed without its metadata (a system package)
-        import z3
+    return str(z3.get_version_string())
 
-        return str(z3.get_version_string())
+
+def _wheel_version() -> str | None:
+    """The version of the ``z3-solver`` wheel that holds the ``z3`` package an import would load, from the
+    ``METADATA`` of its ``.dist-info`` folder beside it; None unless there is exactly one such folder.
+
+    Read directly: :mod:`importlib.metadata` costs about 10 ms of start-up to import.
+    """
+    import os
+    from importlib.util import find_spec
+
+    try:
+        spec = find_spec("z3")
+    except (ImportError, ValueError):
+        return None
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    folder = os.path.dirname(os.path.abspath(next(iter(spec.submodule_search_locations))))
+    try:
+        infos = [n for n in os.listdir(folder) if n.lower().startswith("z3_solver-") and n.endswith(".dist-info")]
+        if len(infos) != 1:
+            return None
+        with open(os.path.join(folder, infos[0], "METADATA"), encoding="utf-8") as fh:
+            for line in fh:
+                if line.startswith("Version:"):
+                    return line.split(":", 1)[1].strip() or None
+                if not line.strip():  # the headers end at the first blank line
+                    break
+    except OSError:
+        return None
+    return None
 F0 = Fraction(0)
 
 

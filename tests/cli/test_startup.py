@@ -44,6 +44,36 @@ def test_a_light_start_loads_no_heavy_module(code):
     assert loaded_after(code) == set()
 
 
+#: What a small verify must not load: numpy (the fast path and the column screen), the solver (nothing needs a
+#: query), the package metadata (the solver's version is read from its wheel), the drawing libraries and the
+#: other witness.
+NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.metadata", "nczones.controller",
+                          "nczones.fleet", "nczones.imports", "nczones.gcode.fastpath", "nczones.prover.screen",
+                          "nczones.prover.polygon")
+
+
+def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
+    program = tmp_path / "small.ngc"
+    program.write_text("\n".join(lines) + "\n")
+    code = (f"from nczones.cli import main\nassert main(['verify', {str(program)!r}, '--machine', {MILL!r}]) == 0\n"
+            f"import json; print(json.dumps(sorted(m for m in {NOT_FOR_A_SMALL_VERIFY!r} if m in sys.modules)))")
+    r = subprocess.run([sys.executable, "-c", "import sys\n" + code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    return set(json.loads(r.stdout.splitlines()[-1]))
+
+
+def test_a_small_verify_loads_neither_numpy_nor_the_solver(tmp_path):
+    assert loaded_by_verify(tmp_path, ["G90 G21", "G1 X10 Y10 F100", "M2"]) == set()
+
+
+def test_a_large_program_takes_the_vectorized_path(tmp_path):
+    from nczones.prover import FAST_PATH_MIN_LINES
+
+    lines = [f"G1 X{10 + k % 50}.{k % 10} Y{20 + k % 30}.5 F100" for k in range(FAST_PATH_MIN_LINES)]
+    loaded = loaded_by_verify(tmp_path, ["G90 G21", *lines, "M2"])
+    assert {"numpy", "nczones.gcode.fastpath", "nczones.prover.screen"} <= loaded and "z3" not in loaded
+
+
 def test_the_public_api_still_reaches_every_stage():
     """A heavy stage is loaded when it is used, and the package's names stay importable."""
     loaded = loaded_after("import nczones\nfrom nczones import Machine, load_machine, Segment, AllowedSet\n"

@@ -33,7 +33,7 @@ from nczones.prover import polygon as pg
 from nczones.prover import verify_segments
 from nczones.zones import AllowedSet, BoxZone, PolygonZone, ZonePoint
 from tests.prover.test_screen_chunks import AXES2, chunk_of, chunk_segments
-from tests.prover.test_segment_batches import one_by_one
+from tests.prover.test_segment_batches import by_columns, one_by_one
 
 
 @st.composite
@@ -164,7 +164,8 @@ def test_polygon_verdicts_agree_with_z3_per_segment(zone, segs, rapid_mode, marg
     if b.verdict.label == "unknown":
         return  # the solver could not decide: nothing to compare
     a = verify_segments([chunk_of(segs, 2, AXES2)], m, margin=margin)
-    c = verify_segments(segs, m, margin=margin)
+    with by_columns():
+        c = verify_segments(segs, m, margin=margin)
     with one_by_one():
         d = verify_segments(segs, m, margin=margin)
     assert a.verdict == b.verdict == c.verdict == d.verdict
@@ -194,7 +195,8 @@ def arcs_near_the_polygons(draw):
 def test_arcs_against_polygons_agree_with_z3_per_segment(zone, segs, margin):
     m = _polygon_machine(zone, "linear")
     a = verify_segments([chunk_of(segs, 2, AXES2)], m, margin=margin)  # the column screen, then one by one
-    c = verify_segments(segs, m, margin=margin)  # screened in batches
+    with by_columns():
+        c = verify_segments(segs, m, margin=margin)  # screened in batches
     with one_by_one():
         d = verify_segments(segs, m, margin=margin)  # every arc on its own: exact box, enclosures, Z3
     assert a.verdict == c.verdict == d.verdict

@@ -26,6 +26,7 @@ from fractions import Fraction as F
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+import nczones.prover as prover_api
 import nczones.prover.core as core
 from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind
@@ -84,6 +85,19 @@ def one_by_one():
         yield
     finally:
         core.SEGMENT_BATCH = old
+
+
+@contextlib.contextmanager
+def by_columns():
+    """The vectorized path whatever the program's size: the fast path's column chunks and segments screened
+    in batches (a small program is otherwise read by the full interpreter alone and decided one by one,
+    without loading numpy: ``FAST_PATH_MIN_LINES``, ``SCREEN_MIN_SEGMENTS``)."""
+    old = core.SCREEN_MIN_SEGMENTS, prover_api.FAST_PATH_MIN_LINES
+    core.SCREEN_MIN_SEGMENTS, prover_api.FAST_PATH_MIN_LINES = 0, 0
+    try:
+        yield
+    finally:
+        core.SCREEN_MIN_SEGMENTS, prover_api.FAST_PATH_MIN_LINES = old
 
 
 def outcome(r):
@@ -175,7 +189,8 @@ def fanuc_programs(draw):
 @settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(machines(), programs(), st.sampled_from([F(0), F(1, 2), F(13, 10)]))
 def test_full_interpreter_programs_agree(machine, program, margin):
-    got = verify_text(program, machine, margin=margin, max_violations=3)
+    with by_columns():
+        got = verify_text(program, machine, margin=margin, max_violations=3)
     with one_by_one():
         want = verify_text(program, machine, margin=margin, max_violations=3)
     assert outcome(got) == outcome(want), program
@@ -185,7 +200,8 @@ def test_full_interpreter_programs_agree(machine, program, margin):
 @given(machines(), programs(off_circle=F(1, 50)), st.sampled_from([F(0), F(3, 4)]))
 def test_linuxcnc_arc_tolerance_agrees(machine, program, margin):
     # end points off the circle by up to 0.02 mm: LinuxCNC's rule takes them as spirals
-    got = verify_text(program, machine, margin=margin, arc_tolerance="linuxcnc", max_violations=3)
+    with by_columns():
+        got = verify_text(program, machine, margin=margin, arc_tolerance="linuxcnc", max_violations=3)
     with one_by_one():
         want = verify_text(program, machine, margin=margin, arc_tolerance="linuxcnc", max_violations=3)
     assert outcome(got) == outcome(want), program
@@ -201,7 +217,8 @@ def test_parameter_ranges_agree(machine, program, name, width, margin):
         rng = f"H1={t(h - width)}..{t(h + width)}"
     else:
         rng = f"{name}={t(-width)}..{t(width)}"
-    got = verify_text(program, machine, margin=margin, params=[rng], max_violations=3)
+    with by_columns():
+        got = verify_text(program, machine, margin=margin, params=[rng], max_violations=3)
     with one_by_one():
         want = verify_text(program, machine, margin=margin, params=[rng], max_violations=3)
     assert outcome(got) == outcome(want), (program, rng)
@@ -215,7 +232,8 @@ def test_parameter_ranges_agree(machine, program, name, width, margin):
 @settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(machines(dialect="fanuc"), fanuc_programs(), st.sampled_from([F(0), F(1, 2)]))
 def test_fanuc_macros_agree(machine, program, margin):
-    got = verify_text(program, machine, margin=margin, max_violations=3)
+    with by_columns():
+        got = verify_text(program, machine, margin=margin, max_violations=3)
     with one_by_one():
         want = verify_text(program, machine, margin=margin, max_violations=3)
     assert outcome(got) == outcome(want), program
