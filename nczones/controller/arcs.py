@@ -33,7 +33,7 @@ including R-format centres whose rational enclosures need Python integers.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -41,9 +41,19 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidArgument
-from .pulses import ArcFrame, arc_frame, arc_step, arc_walk, plane_line, quadrant_of, step_deltas
+from .pulses import (
+    ArcFrame,
+    arc_frame,
+    arc_step,
+    arc_walk,
+    helix_chunk,
+    plane_line,
+    quadrant_of,
+    step_deltas,
+)
 
-__all__ = ["ArcPath", "arc_path", "arc_positions", "path_fractions", "path_fractions_moved", "SHORT_ARC_STEPS", "CANDIDATES"]
+__all__ = ["ArcPath", "ArcStream", "HelixColumns", "arc_path", "arc_positions", "path_fractions", "path_fractions_moved",
+           "unwrap", "SHORT_ARC_STEPS", "CANDIDATES", "STREAM_CHUNK"]
 
 #: Below this many estimated steps the reference loop is faster than numpy set-up.
 SHORT_ARC_STEPS = 48
@@ -55,6 +65,9 @@ OBJECT_VERIFY = False
 _INT64_SAFE = 1 << 62
 #: Steps per chunk in :func:`path_fractions_moved`.
 FRACTION_CHUNK = 1 << 16
+#: Planar steps per chunk of an :class:`ArcStream`: a chunk's positions (768 KB on three axes) and the
+#: walk's and the monitor's temporaries stay in the core's cache, and nothing of the arc's size is allocated.
+STREAM_CHUNK = 1 << 15
 
 
 @dataclass(frozen=True, slots=True)
@@ -119,22 +132,32 @@ def arc_positions(
     True
     """
     fr = arc_frame(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
-    est = fr.sweep * math.sqrt(fr.q) / min(fr.ai, fr.aj) if fr.q else 0.0
-    reach = 2 * math.isqrt(fr.q) + abs(fr.cx) + abs(fr.cy) + 4 * max(fr.ai, fr.aj)
-    big = 4 * reach * reach + fr.q >= _INT64_SAFE  # int64 verification impossible (e.g. R-format centres)
-    if fr.tiny or est < SHORT_ARC_STEPS or (big and not OBJECT_VERIFY):
-        w = arc_walk(start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
+    walk_args = (start_pulse, end_pulse, start, end, centre, clockwise, turns, pulse)
+    est, vectorized = _walk_plan(fr)
+    if not vectorized:
+        w = arc_walk(*walk_args)
         pos = np.empty((len(w.points), naxes), dtype=np.int64)
         pos[:, [i, j]] = np.array(w.points, dtype=np.int64).reshape(-1, 2)
         return pos, w.sweep_rad, w.radius_mm, w.walk_steps
     out = _Columns(naxes, i, j, fr.sj, int(est * 1.02) + 64)
-    walk = _walk(fr, turns, est, out)
+    walk = 0
+    for xs, ys in _walk(fr, turns, est):
+        out.put(xs, ys)
+        walk += len(xs)
     last = out.last() if walk else (start_pulse[0], start_pulse[1])
     tail = plane_line(last, (end_pulse[0], end_pulse[1]))
     if tail:
         out.put_rows(np.array(tail, dtype=np.int64))
     pos = out.result()
     return pos, fr.sweep, fr.radius_mm, walk
+
+
+def _walk_plan(fr: ArcFrame) -> tuple[float, bool]:
+    """The estimated number of walk steps, and whether the vectorized walk applies (else :func:`arc_walk`)."""
+    est = fr.sweep * math.sqrt(fr.q) / min(fr.ai, fr.aj) if fr.q else 0.0
+    reach = 2 * math.isqrt(fr.q) + abs(fr.cx) + abs(fr.cy) + 4 * max(fr.ai, fr.aj)
+    big = 4 * reach * reach + fr.q >= _INT64_SAFE  # int64 verification impossible (e.g. R-format centres)
+    return est, not (fr.tiny or est < SHORT_ARC_STEPS or (big and not OBJECT_VERIFY))
 
 
 class _Columns:
@@ -178,34 +201,39 @@ class _Columns:
         return self.buf[:self.n]
 
 
-def _walk(fr: ArcFrame, turns: int, est: float, out: _Columns) -> int:
-    """Put the walk's positions into ``out``; return the number of steps."""
+def _walk(fr: ArcFrame, turns: int, est: float, cap: int | None = None) -> Iterator[tuple[np.ndarray, np.ndarray]]:
+    """The walk's positions in pieces ``(xs, ys)`` (``ys`` mirrored, as in the frame) of at most ``cap`` steps.
+
+    Pieces may be views of temporaries: a consumer copies them before asking
+    for the next.  Every piece is non-empty.
+    """
     x, y, u, v, qc = fr.x, fr.y, fr.u, fr.v, fr.qcount
     walk = 0
     if fr.past_end(u, v, qc):
-        return 0
+        return
     limit = fr.limit(turns)
     budget = int(est) + 16  # steps proposed in total; the walk makes about est steps
+    most = CANDIDATES if cap is None else min(CANDIDATES, cap)
     while walk < limit:
-        k = min(_region_steps(fr, u, v), max(budget - walk, 16), CANDIDATES)
+        k = min(_region_steps(fr, u, v), max(budget - walk, 16), most)
         xs, ys = _candidates(fr, x, y, u, v, k)
         ok, stop, qc_at = _verify(fr, x, y, u, v, qc, xs, ys)
         take = min(ok, stop)
         if take:
-            out.put(xs[:take], ys[:take])
+            yield xs[:take], ys[:take]
             walk += take
             x, y = int(xs[take - 1]), int(ys[take - 1])
             u, v, qc = x * fr.ai - fr.cx, y * fr.aj - fr.cy, qc_at(take - 1)
         if stop < ok:  # candidate `stop` is a verified step past the end ray: the walk ends
-            return walk
+            return
         if ok < len(xs):  # the rule disagrees with candidate `ok`: one exact reference step
             dx, dy, nu, nv = arc_step(u, v, fr.q, fr.ai, fr.aj)
             nq = quadrant_of(nu, nv)
             nqc = qc + ((nq - qc) % 4)
             if fr.past_end(nu, nv, nqc):
-                return walk
+                return
             x, y, u, v, qc = x + dx, y + dy, nu, nv, nqc
-            out.put(np.array([x], dtype=np.int64), np.array([y], dtype=np.int64))
+            yield np.array([x], dtype=np.int64), np.array([y], dtype=np.int64)
             walk += 1
     raise InvalidArgument("arc walk did not reach its end")  # pragma: no cover - as in arc_walk
 
@@ -426,6 +454,238 @@ def _verify_general(fr: ArcFrame, x: int, y: int, u: int, v: int, qc: int, xs: n
     past = np.asarray(past, dtype=bool)
     stop = int(np.argmax(past)) if past.any() else n
     return ok, stop, qcs
+
+
+class HelixColumns:
+    """The helix columns of an arc's positions, filled chunk by chunk in order (the state is carried).
+
+    Each helix axis follows the swept angle, rounded to the nearest pulse: the
+    angle of every planar position, unwrapped (:func:`unwrap`), relative to the
+    start angle ``a0``, as a fraction of the sweep clipped to [0, 1] and made
+    non-decreasing; the axis ``k`` stands at ``a + floor(phi * (b - a) + 1/2)``
+    for each ``(k, a, b)`` of ``axes``, and the arc's last step at ``b``.
+
+    Invariant: every float operation is elementwise or carried exactly from
+    one chunk to the next (the unwrap correction, the first angle's whole
+    turns, the running maximum), so any chunking of the positions gives the
+    whole-array result bit for bit.
+
+    >>> pos = np.array([[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0], [1, 0, 0]])
+    >>> h = HelixColumns((0, 1), (1.0, 1.0), (0.0, 0.0), 1.0, 0.0, 2 * math.pi, [(2, 0, 8)])
+    >>> h.fill(pos[:2], False); h.fill(pos[2:], True)
+    >>> pos[:, 2].tolist()
+    [0, 2, 4, 6, 8]
+    """
+
+    __slots__ = ("plane", "pulse2", "centre", "sgn", "a0", "sweep", "axes", "prev_raw", "total", "shift", "run_max")
+
+    def __init__(self, plane: tuple[int, int], pulse2: tuple[float, float], centre: tuple[float, float], sgn: float,
+                 a0: float, sweep: float, axes: Sequence[tuple[int, int, int]]) -> None:
+        self.plane, self.pulse2, self.centre, self.sgn, self.a0, self.sweep = plane, pulse2, centre, sgn, a0, sweep
+        self.axes = tuple(axes)
+        self.prev_raw: float | None = None  # last raw angle of the previous chunk (unwrap across chunks)
+        self.total = 0.0  # the unwrap correction carried
+        self.shift: Any = None  # whole turns removed so that the first angle is near 0
+        self.run_max = -np.inf
+
+    def fill(self, pos: np.ndarray, last: bool) -> None:
+        """Write the helix columns of the next ``len(pos)`` positions (``last``: they end the arc)."""
+        m = len(pos)
+        if not m:
+            return
+        pi, pj = self.plane
+        fi, fj = self.pulse2
+        cx, cy = self.centre
+        yy = pos[:, pj] * fj
+        yy -= cy
+        if self.sgn < 0:
+            np.negative(yy, out=yy)  # == -1.0 * yy exactly
+        xx = pos[:, pi] * fi
+        xx -= cx
+        raw = np.arctan2(yy, xx, out=yy)
+        ext = raw if self.prev_raw is None else np.concatenate(([self.prev_raw], raw))
+        up, self.total = unwrap_from(ext, self.total)  # a fresh array: the steps below work in place
+        if self.prev_raw is not None:
+            up = up[1:]
+        self.prev_raw = float(raw[-1])
+        ang = up
+        ang -= self.a0
+        if self.shift is None:
+            self.shift = 2 * math.pi * np.round(ang[0] / (2 * math.pi))
+        ang -= self.shift
+        if self.sweep > 0:
+            phi = ang
+            phi /= self.sweep
+            np.clip(phi, 0.0, 1.0, out=phi)
+        else:
+            phi = np.ones(m)
+        np.maximum.accumulate(phi, out=phi)
+        if phi[0] < self.run_max:
+            np.maximum(phi, self.run_max, out=phi)
+        self.run_max = float(phi[-1])
+        for k, a, b in self.axes:
+            t = phi * (b - a)
+            t += 0.5
+            np.floor(t, out=t)
+            pos[:, k] = t
+            pos[:, k] += a
+            if last:
+                pos[m - 1, k] = b
+
+
+def unwrap_from(p: np.ndarray, total: float) -> tuple[np.ndarray, float]:
+    """:func:`unwrap` of ``p`` with a correction ``total`` already carried from before ``p[0]``.
+
+    ``p[0]`` itself gets ``total`` only as numpy would give it: callers pass the
+    previous chunk's last raw value there and drop it.
+    """
+    dd = np.diff(p)
+    idx = np.flatnonzero(np.abs(dd) >= math.pi)
+    up = p + total if total else p.copy()
+    if not len(idx):
+        return up, total
+    sub = dd[idx]
+    ddmod = np.mod(sub + math.pi, 2 * math.pi) - math.pi
+    ddmod[(ddmod == -math.pi) & (sub > 0)] = math.pi
+    corr = ddmod - sub
+    bounds = [*idx.tolist(), len(dd)]
+    for c, k, k_next in zip(corr.tolist(), bounds[:-1], bounds[1:]):
+        total += c  # numpy's cumsum adds the corrections in this order
+        up[k + 1:k_next + 1] = p[k + 1:k_next + 1] + total
+    return up, total
+
+
+def unwrap(p: np.ndarray) -> np.ndarray:
+    """``np.unwrap(p)`` bit for bit, touching only the jumps (an arc's angle jumps once per turn).
+
+    >>> a = np.array([3.0, 3.1, -3.1, -3.0, 3.1])
+    >>> bool(np.array_equal(unwrap(a), np.unwrap(a)))
+    True
+    """
+    if len(p) < 2:
+        return np.unwrap(p)
+    return unwrap_from(p, 0.0)[0]
+
+
+_ALLOCATOR_SETTLED = False
+
+
+def _settle_allocator() -> None:
+    """Free one large, never touched block once per process, so that a chunk's temporaries stay mapped.
+
+    glibc's malloc serves blocks above its mmap threshold (128 KB at start) by mmap and returns heap memory
+    above its trim threshold to the system; a stream's temporaries of 256 KB would be mapped, faulted in
+    page by page and unmapped again in every chunk (measured: 30,000 minor faults per R200 helix circle,
+    a third of its time).  Freeing an mmapped block raises both thresholds to its size (the allocator's
+    own adaptation), after which the temporaries are reused from the heap.  The block is never written,
+    so it costs no page faults; other allocators are unaffected.
+    """
+    global _ALLOCATOR_SETTLED
+    if not _ALLOCATOR_SETTLED:
+        block = np.empty(1 << 23, dtype=np.uint8)
+        del block
+        _ALLOCATOR_SETTLED = True
+
+
+class ArcStream:
+    """The vector engine's plan of one arc on every axis, computed chunk by chunk.
+
+    :meth:`chunks` yields ``(m, naxes)`` int64 arrays: the positions after
+    each step.  Concatenated, they are the whole plan: the planar walk of
+    :func:`arc_positions` in columns ``i``, ``j``; the helix columns of
+    :class:`HelixColumns` (``helix`` lists ``(k, a, b)``, ``helix_frame`` is
+    ``(pulse2, centre, sgn, a0)`` in floats); every other axis standing at
+    ``p0``; a steep helix's pulses interleaved (:func:`.pulses.helix_chunk`).
+    Each stage works on one chunk of at most ``chunk`` planar steps, with its
+    state carried (the walk's position, the helix angle, the previous row), so
+    the concatenation does not depend on the chunk size: the invariant the
+    tests check against the whole-array forms and the reference walk.  Nothing
+    of the size of the whole arc is allocated.
+
+    ``vectorized`` says whether the walk is the numpy one (else the arc is
+    small, or needs Python integers, and :func:`.pulses.arc_walk` runs whole).
+
+    >>> F = Fraction
+    >>> walk = ((10, 0), (10, 0), (F(10), F(0)), (F(10), F(0)), (F(0), F(0)), False, 0, (F(1), F(1)))
+    >>> s = ArcStream(3, 0, 1, walk, (10, 0, 0), [(2, 0, 6)], ((1.0, 1.0), (0.0, 0.0), 1.0, 0.0), chunk=5)
+    >>> parts = [c.copy() for c in s.chunks()]
+    >>> whole = ArcStream(3, 0, 1, walk, (10, 0, 0), [(2, 0, 6)], ((1.0, 1.0), (0.0, 0.0), 1.0, 0.0)).positions()
+    >>> s.vectorized, len(parts), bool(np.array_equal(np.vstack(parts), whole)), whole[-1].tolist()
+    (True, 12, True, [10, 0, 6])
+    """
+
+    def __init__(self, naxes: int, i: int, j: int, walk_args: tuple, p0: Sequence[int],
+                 helix: Sequence[tuple[int, int, int]], helix_frame: tuple, chunk: int | None = None) -> None:
+        self.naxes, self.i, self.j, self.walk_args = naxes, i, j, walk_args
+        self.p0 = tuple(int(v) for v in p0)
+        self.helix, self.helix_frame = tuple(helix), helix_frame
+        self.chunk = max(1, STREAM_CHUNK if chunk is None else chunk)
+        self.frame = arc_frame(*walk_args)
+        self.sweep_rad, self.radius_mm = self.frame.sweep, self.frame.radius_mm
+        self.est, self.vectorized = _walk_plan(self.frame)
+
+    def _pieces(self) -> Iterator[tuple[np.ndarray, np.ndarray, bool]]:
+        """The planar positions in non-empty pieces ``(xs, ys, mirrored)``."""
+        start_pulse, end_pulse = self.walk_args[0], self.walk_args[1]
+        if not self.vectorized:
+            w = arc_walk(*self.walk_args)
+            if w.points:
+                pts = np.array(w.points, dtype=np.int64).reshape(-1, 2)
+                yield pts[:, 0], pts[:, 1], False
+            return
+        fr = self.frame
+        last = (start_pulse[0], start_pulse[1])
+        for xs, ys in _walk(fr, self.walk_args[6], self.est, self.chunk):
+            yield xs, ys, fr.sj < 0
+            last = (int(xs[-1]), fr.sj * int(ys[-1]))
+        tail = plane_line(last, (end_pulse[0], end_pulse[1]))
+        if tail:
+            t = np.array(tail, dtype=np.int64)
+            yield t[:, 0], t[:, 1], False
+
+    def chunks(self) -> Iterator[np.ndarray]:
+        """The positions after each step, chunk by chunk (a chunk is valid until the next is asked for)."""
+        _settle_allocator()
+        size, i, j = self.chunk, self.i, self.j
+        buf = np.empty((size, self.naxes), dtype=np.int64, order="F")  # columns contiguous
+        moving = {i, j, *(k for k, _, _ in self.helix)}
+        for k in range(self.naxes):
+            if k not in moving:
+                buf[:, k] = self.p0[k]
+        hax = [k for k, _, _ in self.helix]
+        pulse2, centre, sgn, a0 = self.helix_frame
+        hc = HelixColumns((i, j), pulse2, centre, sgn, a0, self.sweep_rad, self.helix) if self.helix else None
+        prev: tuple[int, ...] = self.p0
+        pieces = self._pieces()
+        cur = next(pieces, None)
+        off = m = 0
+        while cur is not None:
+            xs, ys, mirrored = cur
+            take = min(size - m, len(xs) - off)
+            buf[m:m + take, i] = xs[off:off + take]
+            if mirrored:
+                np.negative(ys[off:off + take], out=buf[m:m + take, j])
+            else:
+                buf[m:m + take, j] = ys[off:off + take]
+            m += take
+            off += take
+            if off == len(xs):
+                cur, off = next(pieces, None), 0
+            if m == size or cur is None:
+                rows = buf[:m]
+                if hc is not None:
+                    hc.fill(rows, cur is None)
+                    rows = helix_chunk(rows, prev, hax)
+                    prev = tuple(int(v) for v in rows[-1])
+                m = 0
+                yield rows
+
+    def positions(self) -> np.ndarray:
+        """The whole plan as one ``(n, naxes)`` int64 array (the chunks concatenated)."""
+        parts = [np.array(c, dtype=np.int64, order="C") for c in self.chunks()]
+        if not parts:
+            return np.zeros((0, self.naxes), dtype=np.int64)
+        return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
 
 def path_fractions(pos: np.ndarray, p0: Sequence[int], pulse_mm: Sequence[float | Fraction]) -> np.ndarray:

@@ -49,7 +49,7 @@ from ..exact import format_decimal, seconds
 from ..machine import Axis, Machine, RapidMode
 from ..motion import Segment, SegmentKind, segments_of
 from ..zones import tip_offset, tip_shifted
-from .arcs import arc_positions, path_fractions_moved
+from .arcs import ArcStream, HelixColumns, path_fractions_moved, unwrap
 from .cylindrical import developed_arc_walk
 from .monitor import LimitMonitor
 from .pulses import (
@@ -57,12 +57,12 @@ from .pulses import (
     arc_centre,
     arc_walk,
     dogleg_steps,
-    helix_chunk,
     helix_steps,
     line_chunk,
     line_position,
     line_steps,
     round_pulse,
+    step_deltas,
 )
 from .spline import spline_walk
 
@@ -308,10 +308,29 @@ class _Plan:
     accdec: bool = False
     speed_mm_s: float = 0.0
     moved_total: tuple[int, ...] | None = None  # explicit: pulses per axis over all n steps (when known)
+    stream: ArcStream | None = None  # lazy: the arc's positions, computed chunk by chunk when it runs
+    make: Any = None  # lazy: builds the explicit plan (what anything but the streamed run reads)
+    streamed: bool = False  # the stream ran to its end: n and moved_total are known, positions are not kept
+
+    @property
+    def lazy(self) -> bool:
+        return self.make is not None and self.positions is None and self.delta is None
+
+    def materialize(self) -> None:
+        """Turn a lazy plan into an explicit one (the same positions, all at once, with path fractions)."""
+        if not self.lazy:
+            return
+        full = self.make()
+        for name in ("n", "positions", "sigma", "base_time_s", "accdec", "speed_mm_s", "moved_total"):
+            setattr(self, name, getattr(full, name))
+        self.stream, self.streamed = None, False
 
     def position(self, i: int) -> tuple[int, ...]:
         if i == 0:
             return self.p0
+        if self.streamed and i == self.n:  # the stream checked that its last row is p1
+            return self.p1
+        self.materialize()
         if self.delta is not None:
             return line_position(self.p0, self.delta, self.n, i)
         assert self.positions is not None  # a plan without delta is explicit
@@ -319,6 +338,7 @@ class _Plan:
 
     def positions_at(self, idx: np.ndarray) -> np.ndarray:
         """Positions after the given step counts (0 = the start), shape (len(idx), axes)."""
+        self.materialize()
         idx = np.asarray(idx, dtype=np.int64)
         if self.delta is not None:
             out = np.empty((len(idx), len(self.p0)), dtype=np.int64)
@@ -333,12 +353,14 @@ class _Plan:
 
     def chunk(self, lo: int, hi: int) -> np.ndarray:
         """Positions after steps lo+1..hi."""
+        self.materialize()
         if self.delta is not None:
             return line_chunk(self.p0, self.delta, self.n, lo, hi)
         assert self.positions is not None
         return self.positions[lo:hi]
 
     def iter_steps(self) -> Iterator[tuple[int, ...]]:
+        self.materialize()
         if self.delta is not None:
             yield from line_steps(self.p0, self.p1)
         else:
@@ -376,6 +398,7 @@ class _Plan:
 
     def times(self, lo: int, hi: int, tau_s: float) -> np.ndarray:
         """Completion times (s, relative to the motion's start) of steps lo+1..hi."""
+        self.materialize()
         if self.exact_times is not None:
             return self.exact_times[lo:hi].astype(float) / self.tick_den
         if self.delta is not None:
@@ -521,7 +544,9 @@ class Controller:
         return float(self.settings.pre_time_constant_ms) / 1000
 
     # ------------------------------------------------------------------ planning
-    def plan(self, seg: Segment) -> _Plan:
+    def plan(self, seg: Segment, *, lazy: bool = False) -> _Plan:
+        """The pulses of one motion.  ``lazy``: an arc of the vector engine is computed when it runs
+        (:meth:`run_plan` streams it chunk by chunk); anything that reads its positions first gets them all."""
         if tuple(seg.axes) != self.axes:
             raise InvalidArgument(f"segment axes {seg.axes} do not match the machine's axes {self.axes}")
         p0 = tuple(self.prog)
@@ -551,7 +576,7 @@ class Controller:
             plan.speed_mm_s = _path_length(axes, disp) / t if t > 0 else 0.0
             return plan
         if seg.kind is SegmentKind.ARC:
-            return self._plan_arc(seg, p0, p1)
+            return self._plan_arc(seg, p0, p1, lazy=lazy)
         if seg.kind is SegmentKind.DEVELOPED_ARC:  # G07.1: developed plane, then rotary pulses
             pos, length = developed_arc_walk(seg, self.pulse, p0)
             return plan_from_positions(self, seg, p0, p1, pos, length, "developed arc")
@@ -570,7 +595,7 @@ class Controller:
             t = max(t, abs(d) * 60 / float(a.max_feed_mm_min))
         return t
 
-    def _plan_arc(self, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...]) -> _Plan:
+    def _plan_arc(self, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...], lazy: bool = False) -> _Plan:
         i, j, _ = seg.plane_indices()
         s2 = (seg.start[i], seg.start[j])
         e2 = (seg.end[i], seg.end[j])
@@ -584,14 +609,36 @@ class Controller:
                 raise InvalidArgument("R-format arc centre enclosure is not far inside one pulse")
         walk_args = ((p0[i], p0[j]), (p1[i], p1[j]), s2, e2, centre, seg.clockwise, seg.turns,
                      (self.pulse[i], self.pulse[j]))
-        vector = self.settings.engine == "vector"
-        if vector:  # the same positions as arc_walk, computed vectorized (controller/arcs.py)
-            pos, sweep_rad, radius_mm, _ = arc_positions(len(p0), i, j, *walk_args)
+        # helix axes follow the swept angle (float angle; rounding to the nearest pulse)
+        helix = [k for k in range(len(p0)) if k not in (i, j) and p1[k] != p0[k]]
+        cx, cy = float(centre[0]), float(centre[1])
+        sgn = -1.0 if seg.clockwise else 1.0
+        a0 = math.atan2(sgn * (float(s2[1]) - cy), float(s2[0]) - cx)
+        pulse2 = (float(self.pulse[i]), float(self.pulse[j]))
+        helix_cols = [(k, p0[k], p1[k]) for k in helix]
+        helix_len2 = sum(float(seg.end[k] - seg.start[k]) ** 2 for k in range(len(p0))
+                         if k not in (i, j) and not self.machine.axes[k].rotary)
+        if self.settings.engine == "vector":  # the same positions as the reference, in chunks (controller/arcs.py)
+            stream = ArcStream(len(p0), i, j, walk_args, p0, helix_cols, (pulse2, (cx, cy), sgn, a0))
+            sweep_rad, radius_mm = stream.sweep_rad, stream.radius_mm
+            if lazy and stream.vectorized:
+                plan = _Plan(seg, p0, p1, 0, stream=stream, make=lambda: self._plan_arc(seg, p0, p1))
+                self._time_arc(plan, seg, i, j, p0, p1, math.sqrt((radius_mm * sweep_rad) ** 2 + helix_len2))
+                return plan
+            pos = stream.positions()
         else:
             walk = arc_walk(*walk_args)
             sweep_rad, radius_mm = walk.sweep_rad, walk.radius_mm
             pos = np.empty((len(walk.points), len(p0)), dtype=np.int64)
             pos[:, [i, j]] = np.array(walk.points, dtype=np.int64).reshape(-1, 2)
+            if len(pos):
+                if helix:
+                    _helix_columns(pos, (i, j), pulse2, (cx, cy), sgn, a0, sweep_rad, helix_cols)
+                for k in range(len(p0)):
+                    if k not in (i, j) and p1[k] == p0[k]:  # floor(phi * 0 + 0.5) == 0: the axis stands still
+                        pos[:, k] = p0[k]
+                if helix:  # a steep helix: interleave its pulses, at most one pulse per axis per step
+                    pos = np.array(helix_steps(pos.tolist(), p0, helix), dtype=np.int64).reshape(-1, len(p0))
         n = pos.shape[0]
         if n == 0 and p1 != p0:  # no step in the plane (a circle below two pulses), only the helix moves
             rows = list(line_steps(p0, p1))
@@ -601,31 +648,15 @@ class Controller:
                                                _path_length(self.machine.axes, [float(e - s) for s, e in zip(seg.start, seg.end)]))
             plan.accdec = self.mode is not Mode.CHECK
             return plan
-        # helix axes follow the swept angle (float angle; rounding to the nearest pulse)
-        helix = [k for k in range(len(p0)) if k not in (i, j) and p1[k] != p0[k]]
-        if helix:
-            cx, cy = float(centre[0]), float(centre[1])
-            sgn = -1.0 if seg.clockwise else 1.0
-            a0 = math.atan2(sgn * (float(s2[1]) - cy), float(s2[0]) - cx)
-            _helix_columns(pos, (i, j), (float(self.pulse[i]), float(self.pulse[j])), (cx, cy), sgn, a0,
-                           sweep_rad, [(k, p0[k], p1[k]) for k in helix])
-        helix_len2 = 0.0
-        for k in range(len(p0)):
-            if k in (i, j):
-                continue
-            if p1[k] == p0[k]:  # floor(phi * 0 + 0.5) == 0: the axis stands still
-                pos[:, k] = p0[k]
-            if not self.machine.axes[k].rotary:
-                helix_len2 += float(seg.end[k] - seg.start[k]) ** 2
-        if helix and n:  # a steep helix: interleave its pulses, at most one pulse per axis per step
-            pos = (helix_chunk(pos, p0, helix) if vector else
-                   np.array(helix_steps(pos.tolist(), p0, helix), dtype=np.int64).reshape(-1, len(p0)))
-            n = pos.shape[0]
         # path fraction after each step: cumulative chord length (floats, timing only)
         moving = [k for k in range(len(p0)) if k in (i, j) or k in helix]
         sigma, moved = path_fractions_moved(pos, p0, self.pulse, moving)
         plan = _Plan(seg, p0, p1, n, positions=pos, sigma=sigma, moved_total=moved)
-        length = math.sqrt((radius_mm * sweep_rad) ** 2 + helix_len2)
+        self._time_arc(plan, seg, i, j, p0, p1, math.sqrt((radius_mm * sweep_rad) ** 2 + helix_len2))
+        return plan
+
+    def _time_arc(self, plan: _Plan, seg: Segment, i: int, j: int, p0: tuple[int, ...], p1: tuple[int, ...],
+                  length: float) -> None:
         if self.mode is Mode.CHECK:
             rate = min(float(a.rapid_mm_min) for k, a in enumerate(self.machine.axes) if k in (i, j) or p1[k] != p0[k])
             plan.base_time_s = length * 60 / rate
@@ -634,7 +665,6 @@ class Controller:
             plan.base_time_s = self._feed_time(seg, [0.0 if k in (i, j) else d for k, d in enumerate(disp)], length)
         plan.accdec = self.mode is not Mode.CHECK
         plan.speed_mm_s = length / plan.base_time_s if plan.base_time_s > 0 else 0.0
-        return plan
 
     # ------------------------------------------------------------------ running
     def run(self, motion: Any) -> SimulationResult:
@@ -665,7 +695,7 @@ class Controller:
     def run_segment(self, seg: Segment) -> None:
         self.tool_length = seg.tool_length
         self.monitor = self._monitor_for(seg)
-        self.run_plan(seg, self.plan(seg))
+        self.run_plan(seg, self.plan(seg, lazy=True))
 
     def _monitor_for(self, seg: Segment) -> LimitMonitor:
         """The limit monitor for a segment: a lathe tool offset on an axis besides the tool axis moves the tool
@@ -684,6 +714,11 @@ class Controller:
 
     def run_plan(self, seg: Segment, plan: _Plan) -> None:
         """Run one planned motion (the recovery runs parts of plans through this)."""
+        streamed = None
+        if plan.lazy:
+            streamed = self._run_stream(plan)
+            if streamed is None or streamed[1] is not None:  # not streamable, or an alarm: the rest reads the plan
+                plan.materialize()
         self.motions += 1
         tau = self._tau_pre()
         t0 = self.clock
@@ -697,7 +732,9 @@ class Controller:
                     self.log("dwell", seg.block, seg.line, (("seconds", float(seg.dwell_s or 0)),))
             return
         self.overshoot_bound = max(self.overshoot_bound, plan.speed_mm_s * self.period_s)
-        if self.mode is Mode.LOCK:
+        if streamed is not None:
+            done, alarm = streamed
+        elif self.mode is Mode.LOCK:
             done, alarm = plan.n, None
         elif self.monitor_mode is MonitorMode.PULSE:
             done, alarm = self._monitor_pulse(plan)
@@ -734,6 +771,7 @@ class Controller:
         elif done == plan.n and plan.moved_total is not None:
             moved = list(plan.moved_total)
         else:
+            plan.materialize()
             assert plan.positions is not None
             rows = np.vstack([np.array(plan.p0, dtype=np.int64), plan.positions[:done]])
             moved = np.abs(np.diff(rows, axis=0)).sum(axis=0).tolist()
@@ -753,6 +791,48 @@ class Controller:
         return tuple((k, _sign(v)) for k, v in enumerate(d) if v)
 
     # per-pulse monitoring ------------------------------------------------------
+    def _run_stream(self, plan: _Plan) -> tuple[int, Any] | None:
+        """Monitor a lazy arc chunk by chunk as its stream computes it: ``(done, alarm)`` as
+        :meth:`_monitor_pulse` gives them, or None when the plan must be explicit (another monitor mode, the
+        reference monitor, the servo log, an empty walk).
+
+        Nothing of the arc's size is kept: per chunk, the compiled monitor (which stops at the first
+        position outside, exactly as on the explicit plan) and the pulses each moving axis made.  A run
+        to the end leaves ``n`` and the pulse totals in the plan; its last position is ``p1``.
+        """
+        stream = plan.stream
+        lock = self.mode is Mode.LOCK
+        if stream is None or self.settings.engine != "vector" or self._servo_on:
+            return None
+        if not lock and self.monitor_mode is not MonitorMode.PULSE:
+            return None
+        compiled = None if lock else self.monitor.compile(self.tool_length)
+        if compiled is None and not lock:
+            return None
+        moving = sorted({stream.i, stream.j, *(k for k, _, _ in stream.helix)})
+        totals = [0] * len(plan.p0)
+        prev = [np.int64(plan.p0[k]) for k in moving]
+        done = 0
+        last: tuple[int, ...] = plan.p0
+        for rows in stream.chunks():
+            if compiled is not None:
+                bad = compiled.bad(rows)
+                if bad.any():
+                    i = int(np.argmax(bad))
+                    return done + i + 1, (compiled.violated(np.ascontiguousarray(rows[i])), None, 0.0)
+            for c, k in enumerate(moving):
+                col = rows[:, k]
+                totals[k] += int(np.count_nonzero(step_deltas(col, prev[c])))
+                prev[c] = col[-1]
+            done += len(rows)
+            last = tuple(int(v) for v in rows[-1])
+        if not done:
+            return None
+        if last != plan.p1:  # pragma: no cover - by construction (the walk's approach and the helix end)
+            raise InvalidArgument("arc does not end on its rounded end point")
+        plan.n, plan.moved_total, plan.streamed = done, tuple(totals), True
+        return done, None
+
     def _monitor_pulse(self, plan: _Plan) -> tuple[int, Any]:
         tl = self.tool_length
         compiled = self.monitor.compile(tl) if self.settings.engine == "vector" else None
@@ -1021,115 +1101,21 @@ class Controller:
         )
 
 
-#: Steps per chunk when arc columns are computed (temporaries stay small and in cache).
+#: Steps per chunk when :func:`_helix_columns` fills a whole array (temporaries stay small and in cache).
 ARC_CHUNK = 1 << 16
 
 
 def _helix_columns(pos: np.ndarray, plane: Any, pulse2: Any, centre: Any, sgn: Any, a0: Any, sweep: Any,
                    axes: Any) -> None:
-    """Fill the helix columns of ``pos``: each axis follows the swept angle, rounded to the nearest pulse.
-
-    The angle of every planar position, unwrapped (:func:`_unwrap`), relative
-    to the start angle, as a fraction of the sweep clipped to [0, 1] and made
-    non-decreasing; the axis stands at ``p0 + floor(phi * d + 1/2)`` and the
-    last step at its rounded end.  Computed in chunks; every float operation
-    is elementwise or carried exactly, so the result equals the whole-array
-    computation bit for bit.
-    """
+    """Fill the helix columns of the whole array ``pos`` (:class:`.arcs.HelixColumns`, in ``ARC_CHUNK`` chunks)."""
     n = len(pos)
-    if not n:
-        return
-    pi, pj = plane
-    fi, fj = pulse2
-    cx, cy = centre
-    prev_raw = None  # last raw angle of the previous chunk (unwrap across chunks)
-    total = 0.0  # the unwrap correction carried
-    shift = None  # whole turns removed so that the first angle is near 0
-    run_max = -np.inf
+    h = HelixColumns(plane, pulse2, centre, sgn, a0, sweep, axes)
     for lo in range(0, n, ARC_CHUNK):
         hi = min(n, lo + ARC_CHUNK)
-        yy = pos[lo:hi, pj] * fj
-        yy -= cy
-        if sgn < 0:
-            np.negative(yy, out=yy)  # == -1.0 * yy exactly
-        xx = pos[lo:hi, pi] * fi
-        xx -= cx
-        raw = np.arctan2(yy, xx, out=yy)
-        ext = raw if prev_raw is None else np.concatenate(([prev_raw], raw))
-        up, total = _unwrap_from(ext, total)  # a fresh array: the steps below work in place
-        if prev_raw is not None:
-            up = up[1:]
-        prev_raw = float(raw[-1])
-        ang = up
-        ang -= a0
-        if shift is None:
-            shift = 2 * math.pi * np.round(ang[0] / (2 * math.pi))
-        ang -= shift
-        if sweep > 0:
-            phi = ang
-            phi /= sweep
-            np.clip(phi, 0.0, 1.0, out=phi)
-        else:
-            phi = np.ones(hi - lo)
-        np.maximum.accumulate(phi, out=phi)
-        if phi[0] < run_max:
-            np.maximum(phi, run_max, out=phi)
-        run_max = float(phi[-1])
-        for k, a, b in axes:
-            t = phi * (b - a)
-            t += 0.5
-            np.floor(t, out=t)
-            pos[lo:hi, k] = a + t.astype(np.int64)
-    for k, _, b in axes:
-        pos[n - 1, k] = b
+        h.fill(pos[lo:hi], hi == n)
 
 
-def _unwrap_from(p: np.ndarray, total: float) -> tuple[np.ndarray, float]:
-    """:func:`_unwrap` of ``p`` with a correction ``total`` already carried from before ``p[0]``.
-
-    ``p[0]`` itself gets ``total`` only as numpy would give it: callers pass the
-    previous chunk's last raw value there and drop it.
-    """
-    dd = np.diff(p)
-    idx = np.flatnonzero(np.abs(dd) >= math.pi)
-    up = p + total if total else p.copy()
-    if not len(idx):
-        return up, total
-    sub = dd[idx]
-    ddmod = np.mod(sub + math.pi, 2 * math.pi) - math.pi
-    ddmod[(ddmod == -math.pi) & (sub > 0)] = math.pi
-    corr = ddmod - sub
-    bounds = [*idx.tolist(), len(dd)]
-    for c, k, k_next in zip(corr.tolist(), bounds[:-1], bounds[1:]):
-        total += c  # numpy's cumsum adds the corrections in this order
-        up[k + 1:k_next + 1] = p[k + 1:k_next + 1] + total
-    return up, total
-
-
-def _unwrap(p: np.ndarray) -> np.ndarray:
-    """``np.unwrap(p)`` bit for bit, touching only the jumps (an arc's angle jumps once per turn).
-
-    >>> a = np.array([3.0, 3.1, -3.1, -3.0, 3.1])
-    >>> bool(np.array_equal(_unwrap(a), np.unwrap(a)))
-    True
-    """
-    if len(p) < 2:
-        return np.unwrap(p)
-    dd = np.diff(p)
-    idx = np.flatnonzero(np.abs(dd) >= math.pi)
-    if not len(idx):
-        return p.copy()
-    sub = dd[idx]
-    ddmod = np.mod(sub + math.pi, 2 * math.pi) - math.pi
-    ddmod[(ddmod == -math.pi) & (sub > 0)] = math.pi
-    corr = ddmod - sub
-    up = p.copy()
-    total = 0.0
-    bounds = [*idx.tolist(), len(dd)]
-    for c, k, k_next in zip(corr.tolist(), bounds[:-1], bounds[1:]):
-        total += c  # numpy's cumsum adds the corrections in this order
-        up[k + 1:k_next + 1] = p[k + 1:k_next + 1] + total
-    return up
+_unwrap = unwrap
 
 
 def _path_length(axes: Sequence[Axis], disp: list[float]) -> float:
