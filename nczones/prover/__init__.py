@@ -469,6 +469,9 @@ def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange,
     last_reported: list[int] = []
 
     def with_text(seq: Iterable[Any]) -> Iterator[Any]:
+        if progress is None:  # the chunks as they come (verify_segments batches an object chunk's segments)
+            yield from seq
+            return
         for chunk in seq:
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
                 yield chunk

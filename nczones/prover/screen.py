@@ -398,7 +398,12 @@ def segment_columns(segments: Sequence[Segment], prover: ScreenedProver) -> list
     outwards there (from the floor of the low corner to the ceiling of the
     high one; exact for decimals of at most that many places, and the full
     interpreter's doubles are binary fractions that are not); a line, rapid
-    or dwell is screened by that box.  Arcs go into a second chunk at the
+    or dwell is screened by that box.  The corners are computed per
+    distinct point (a segment that starts at the tuple the one before ended
+    at shares its row of numbers), in ``int64`` columns for decimals and
+    binary fractions (:func:`_scaled_bounds`, exact integer shifts) and by
+    Python's integers for every other number; a line with a number of
+    magnitude ``2**60`` or more at the scale is not taken.  Arcs go into a second chunk at the
     finest decimal scale any of them needs (at most
     :data:`MAX_SEGMENT_SCALE`), taken only when their end points and centre
     are such decimals, so their rows are exact.  The screen proves a row only
@@ -419,18 +424,20 @@ def segment_columns(segments: Sequence[Segment], prover: ScreenedProver) -> list
     """
     arcs: list[int] = []
     line_rows: list[int] = []
-    starts: list[list[int]] = []
-    ends: list[list[int]] = []
+    taken: list[Segment] = []
+    points: list[tuple[Fraction, ...]] = []  # the distinct start and end tuples of the taken segments
+    at_start: list[int] = []  # per taken segment, the index of its start and of its end in points
+    at_end: list[int] = []
     tls: list[int] = []
-    kinds: list[int] = []
-    blocks: list[int] = []
-    lines: list[int] = []
-    unit = _LINE_UNIT
     mults = _LINE_MULT
     arc_kind = SegmentKind.ARC
     line_kinds = _LINE_KINDS
     simple = not prover.params and not prover.has_tip_zones
     axes = prover.axes
+    prev_end: tuple | None = None
+    prev_at = -1
+    prev_tl: Fraction | None = None
+    tl_scaled: int | None = None
     for i, seg in enumerate(segments):
         kind = seg.kind
         if kind is arc_kind:
@@ -439,86 +446,163 @@ def segment_columns(segments: Sequence[Segment], prover: ScreenedProver) -> list
         if kind not in line_kinds:
             continue
         if simple:
-            if seg.axes != axes or (seg.extra and any(k == "cylinder_radius" for k, _ in seg.extra)):
+            if (seg.axes is not axes and seg.axes != axes) or (
+                    seg.extra and any(k == "cylinder_radius" for k, _ in seg.extra)):
                 continue
         elif not _screenable(seg, prover):
             continue
         tl = seg.tool_length
-        m_tl = mults.get(tl.denominator, 0)
-        if m_tl == 0:
-            m_tl = _line_multiplier(tl.denominator)
-        if m_tl is None:
+        if tl is not prev_tl:
+            m_tl = mults.get(tl.denominator, 0)
+            if m_tl == 0:
+                m_tl = _line_multiplier(tl.denominator)
+            prev_tl, tl_scaled = tl, (None if m_tl is None else tl.numerator * m_tl)
+        if tl_scaled is None:
             continue
-        lo: list[int] = []
-        hi: list[int] = []
-        for a, b in zip(seg.start, seg.end):
-            na, da = a.numerator, a.denominator
-            ma = mults.get(da, 0)
-            if ma == 0:
-                ma = _line_multiplier(da)
-            if a is b:  # an axis that does not move (the interpreter keeps its number)
-                if ma is not None:
-                    fa = na * ma
-                    lo.append(fa)
-                    hi.append(fa)
-                else:
-                    lo.append((na * unit) // da)
-                    hi.append(-((-na * unit) // da))
-                continue
-            nb, db = b.numerator, b.denominator
-            mb = mults.get(db, 0)
-            if mb == 0:
-                mb = _line_multiplier(db)
-            if ma is not None:
-                fa = ca = na * ma
-            else:
-                fa = (na * unit) // da
-                ca = -((-na * unit) // da)
-            if mb is not None:
-                fb = cb = nb * mb
-            else:
-                fb = (nb * unit) // db
-                cb = -((-nb * unit) // db)
-            lo.append(fa if fa <= fb else fb)
-            hi.append(ca if ca >= cb else cb)
+        tls.append(tl_scaled)
         line_rows.append(i)
-        starts.append(lo)
-        ends.append(hi)
-        tls.append(tl.numerator * m_tl)
-        kinds.append(int(kind))
-        blocks.append(seg.block)
-        sp = seg.span
-        lines.append(sp.line if sp is not None else 0)
+        taken.append(seg)
+        start = seg.start
+        if start is not prev_end:  # a segment mostly starts where the one before ended: the same tuple
+            prev_at = len(points)
+            points.append(start)
+        at_start.append(prev_at)
+        end = seg.end
+        if end is not start:
+            prev_at = len(points)
+            points.append(end)
+        at_end.append(prev_at)
+        prev_end = end
     out: list[tuple[MotionChunk, list[int]]] = []
     if line_rows:
-        cols = _int64_rows(starts, ends, tls)
-        if cols is None:  # a number beyond int64: keep the rows below 2**60 (the rest are decided one by one)
-            keep = [k for k in range(len(line_rows))
-                    if max(map(abs, starts[k] + ends[k] + [tls[k]])) < 2**60]
-            line_rows = [line_rows[k] for k in keep]
-            starts, ends, tls = [starts[k] for k in keep], [ends[k] for k in keep], [tls[k] for k in keep]
-            kinds, blocks, lines = [kinds[k] for k in keep], [blocks[k] for k in keep], [lines[k] for k in keep]
-            cols = _int64_rows(starts, ends, tls) if keep else None
-        if cols is not None:
-            st, en, tl_col = cols
-            out.append((MotionChunk(axes, LINE_SCALE, kind=np.array(kinds, dtype=np.int8), start=st, end=en,
-                                    line=np.array(lines, dtype=np.int64), block=np.array(blocks, dtype=np.int64),
-                                    tool_length=tl_col), line_rows))
-    if arcs:
-        got = _arc_columns(segments, arcs, prover)
+        got = _line_rows(points, at_start, at_end, tls, len(axes))
         if got is not None:
-            out.append(got)
+            keep, lo, hi, tl_col = got
+            if keep is not None:
+                line_rows = [line_rows[k] for k in keep]
+                taken = [taken[k] for k in keep]
+            if line_rows:
+                n = len(taken)
+                out.append((MotionChunk(
+                    axes, LINE_SCALE, kind=np.fromiter((int(s.kind) for s in taken), np.int8, n), start=lo, end=hi,
+                    line=np.fromiter((0 if s.span is None else s.span.line for s in taken), np.int64, n),
+                    block=np.fromiter((s.block for s in taken), np.int64, n), tool_length=tl_col), line_rows))
+    if arcs:
+        got_arcs = _arc_columns(segments, arcs, prover)
+        if got_arcs is not None:
+            out.append(got_arcs)
     return out
 
 
-def _int64_rows(starts: list[list[int]], ends: list[list[int]],
-                tls: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+def _line_rows(points: list[tuple[Fraction, ...]], at_start: list[int], at_end: list[int], tls: list[int],
+               k: int) -> tuple[list[int] | None, np.ndarray, np.ndarray, np.ndarray] | None:
+    """The rows of lines whose start and end are ``points[at_start[r]]`` and ``points[at_end[r]]``:
+    ``(kept, low corners, high corners, tool lengths)`` at :data:`LINE_SCALE`, each corner the floor of
+    the box's low corner and the ceiling of its high one.  A row with a number of magnitude ``2**60``
+    or more (in units of the scale) is left out: ``kept`` lists the rows kept, None when all are; the
+    result is None when none is."""
+    values = [v for p in points for v in p]
+    floors, ceils, done = _scaled_bounds(values)
+    bound = _ROW_BOUND
+    big: set[int] = set()  # points with a number beyond the bound
+    for j in np.flatnonzero(~done).tolist():
+        n, d = values[j].as_integer_ratio()
+        f = (n * _LINE_UNIT) // d
+        c = -((-n * _LINE_UNIT) // d)
+        if -bound < f and c < bound:
+            floors[j], ceils[j] = f, c
+        else:
+            big.add(j // k)
+    keep: list[int] | None = None
+    if big or any(not -bound < t < bound for t in tls):
+        keep = [r for r in range(len(at_start))
+                if at_start[r] not in big and at_end[r] not in big and -bound < tls[r] < bound]
+        if not keep:
+            return None
+        tls = [tls[r] for r in keep]
+        at_start = [at_start[r] for r in keep]
+        at_end = [at_end[r] for r in keep]
+    fl = floors.reshape(len(points), k)
+    cl = ceils.reshape(len(points), k)
+    s = np.array(at_start, dtype=np.intp)
+    e = np.array(at_end, dtype=np.intp)
+    return keep, np.minimum(fl[s], fl[e]), np.maximum(cl[s], cl[e]), np.array(tls, dtype=np.int64)
+
+
+#: Rows are built only from numbers below this magnitude (in units of :data:`LINE_SCALE`).
+_ROW_BOUND = 2**60
+_FIVE9 = 5**9  # 10**9 == 5**9 * 2**9
+
+
+def _scaled_bounds(values: list[Fraction]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(floor, ceiling, done)`` of ``v * 10**LINE_SCALE`` for every value, in ``int64`` arrays: exact where
+    ``done`` is True (the value a decimal of at most :data:`LINE_SCALE` places, or a binary fraction, with
+    numerator and denominator in ``int64`` and the result below ``2**58``), left for the caller elsewhere.
+
+    A binary fraction ``n / 2**k`` (``k > 9``) times ``10**9`` is ``n * 5**9 / 2**(k - 9)``; with
+    ``n = h * 2**26 + l`` (``0 <= l < 2**26``) the floor is
+    ``(h * 5**9 + ((l * 5**9) >> 26)) >> (k - 35)`` for ``k >= 35`` and
+    ``((h * 5**9) << (35 - k)) + ((l * 5**9) >> (k - 9))`` below, by integer shifts (floors) that stay
+    in ``int64``; the ceiling is minus the floor of ``-n``.
+    """
+    m = len(values)
+    floors = np.zeros(m, dtype=np.int64)
+    ceils = np.zeros(m, dtype=np.int64)
+    done = np.zeros(m, dtype=bool)
     try:
-        n, k = len(starts), len(starts[0]) if starts else 0
-        return (np.array(starts, dtype=np.int64).reshape(n, k), np.array(ends, dtype=np.int64).reshape(n, k),
-                np.array(tls, dtype=np.int64))
-    except OverflowError:
-        return None
+        n, d = _terms(values)
+    except OverflowError:  # a numerator or denominator beyond int64: every value by Python's integers
+        return floors, ceils, done
+    fits = (n > -2**62) & (n < 2**62)
+    # decimals of at most LINE_SCALE places: exact
+    dec = (_LINE_UNIT % d) == 0
+    mult = np.where(dec, _LINE_UNIT // np.minimum(d, _LINE_UNIT), 1)
+    exact = dec & fits & (np.abs(np.where(fits, n, 0)) <= (_ROW_BOUND - 1) // mult)
+    floors[exact] = ceils[exact] = n[exact] * mult[exact]
+    # binary fractions n / 2**k, k > LINE_SCALE
+    pow2 = ~dec & ((d & (d - 1)) == 0) & fits
+    if pow2.any():
+        df = d.astype(np.float64)  # a power of two below 2**63: exact
+        k = np.frexp(df)[1] - 1
+        small = np.abs(n.astype(np.float64)) * (1e9 / df) < 2.0**58  # relative error far below 1/2
+        sel = np.flatnonzero(pow2 & small)
+        if sel.size:
+            ns, ks = n[sel], k[sel].astype(np.int64)
+            floors[sel] = _floor_scaled(ns, ks)
+            ceils[sel] = -_floor_scaled(-ns, ks)
+            done[sel] = True
+    done |= exact
+    return floors, ceils, done
+
+
+def _terms_by_slots(values: list[Fraction]) -> tuple[np.ndarray, np.ndarray]:
+    return (np.array([v._numerator for v in values], dtype=np.int64),  # type: ignore[attr-defined]
+            np.array([v._denominator for v in values], dtype=np.int64))  # type: ignore[attr-defined]
+
+
+def _terms_by_properties(values: list[Fraction]) -> tuple[np.ndarray, np.ndarray]:
+    return (np.array([v.numerator for v in values], dtype=np.int64),
+            np.array([v.denominator for v in values], dtype=np.int64))
+
+
+def _slots_hold_terms() -> bool:
+    f = Fraction(-6, 4)
+    return getattr(f, "_numerator", None) == -3 and getattr(f, "_denominator", None) == 2
+
+
+#: Numerators and denominators of Fractions as ``int64`` arrays (OverflowError beyond): read from CPython's
+#: slots (4x faster than the properties) when they hold them, checked once.
+_terms = _terms_by_slots if _slots_hold_terms() else _terms_by_properties
+
+
+def _floor_scaled(n: np.ndarray, k: np.ndarray) -> np.ndarray:
+    """``floor(n * 10**9 / 2**k)`` for ``|n| < 2**62``, ``9 < k < 63`` and a result below ``2**58`` (see
+    :func:`_scaled_bounds`)."""
+    h = (n >> 26) * _FIVE9
+    low = (n & (2**26 - 1)) * _FIVE9
+    wide = k >= 35
+    return np.where(wide, (h + (low >> 26)) >> np.where(wide, k - 35, 0),
+                    (h << np.where(wide, 0, 35 - k)) + (low >> np.where(wide, 0, k - 9)))
 
 
 def _arc_columns(segments: Sequence[Segment], which: list[int],

@@ -20,6 +20,7 @@ only what the screen does not prove is decided one by one.  The properties:
 from __future__ import annotations
 
 import contextlib
+import math
 from decimal import Decimal
 from fractions import Fraction as F
 
@@ -283,6 +284,8 @@ def test_rows_contain_the_exact_boxes(specs):
                 assert hi - lo >= r_hi - r_lo - F(2, den)  # rounded by at most one unit each way
                 if (lo * den).denominator == 1 and (hi * den).denominator == 1:
                     assert (r_lo, r_hi) == (lo, hi)  # exact where the numbers are decimals
+                if seg.kind is not SegmentKind.ARC:  # the least such box: floor and ceiling at the scale
+                    assert (r_lo * den, r_hi * den) == (math.floor(lo * den), math.ceil(hi * den))
             if seg.kind is SegmentKind.ARC:  # arcs only when exact
                 assert (F(int(chunk.centre[k, 0]), den), F(int(chunk.centre[k, 1]), den)) == seg.centre
                 assert tuple(F(int(x), den) for x in chunk.start[k]) == seg.start
@@ -291,6 +294,58 @@ def test_rows_contain_the_exact_boxes(specs):
     for i, seg in enumerate(segs):  # lines are always taken; arcs when their numbers are decimals
         if seg.kind is not SegmentKind.ARC:
             assert i in taken
+
+
+#: Numbers of every kind the interpreters hand on: decimals, doubles of any magnitude (subnormal to huge, where
+#: the integer columns give way to Python's integers), arbitrary rationals, and values around the 2**60 bound.
+any_numbers = st.one_of(
+    numbers,
+    st.floats(allow_nan=False, allow_infinity=False).map(F),
+    st.floats(-1e-3, 1e-3, allow_nan=False).map(F),
+    st.integers(-2**61, 2**61).map(lambda n: F(n, 10**9)),
+    st.builds(lambda n, k: F(n, 2**k), st.integers(-2**62, 2**62), st.integers(0, 70)),
+    st.builds(lambda sign, n, den: F(sign * n, den), st.sampled_from([1, -1]),  # right at the 2**60 bound
+              st.integers(2**60 - 3, 2**60 + 3), st.sampled_from([10**9, 10**9 // 512, 2**9 * 10**9, 3 * 10**9])),
+)
+
+
+def _reference_row(seg: Segment) -> tuple[list[int], list[int]] | None:
+    """The row of a line at LINE_SCALE by Fractions: floor of the low corner, ceiling of the high one; None
+    when a number reaches 2**60 units (the row is then not taken)."""
+    den = 10**LINE_SCALE
+    lo = [math.floor(min(a, b) * den) for a, b in zip(seg.start, seg.end)]
+    hi = [math.ceil(max(a, b) * den) for a, b in zip(seg.start, seg.end)]
+    pts = [math.floor(v * den) for v in (*seg.start, *seg.end)] + [math.ceil(v * den) for v in (*seg.start, *seg.end)]
+    if any(abs(v) >= 2**60 for v in pts) or abs(seg.tool_length * den) >= 2**60:
+        return None
+    return lo, hi
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from([SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL]),
+                          st.lists(any_numbers, min_size=3, max_size=3), st.booleans(), st.booleans()),
+                min_size=1, max_size=40))
+def test_line_rows_are_floor_and_ceiling_of_the_exact_box(specs):
+    # chained as the interpreters chain them: a segment starts at the very tuple the one before ended at (its
+    # row of numbers is then shared), an axis that does not move keeps its number object, and dwells stay put
+    segs = []
+    at: tuple = (F(0), F(0), F(0))
+    for i, (kind, v, chained, keep_x) in enumerate(specs):
+        start = at if chained else tuple(F(x) for x in at)
+        end = start if kind is SegmentKind.DWELL else ((start[0] if keep_x else v[0]), v[1], v[2])
+        segs.append(Segment(kind, start, end, AXES, block=i))
+        at = end
+    got = {}
+    for chunk, rows in segment_columns(segs, Prover(_M)):
+        assert chunk.scale == LINE_SCALE
+        for k, i in enumerate(rows):
+            got[i] = (chunk.start[k].tolist(), chunk.end[k].tolist(), int(chunk.block[k]), int(chunk.kind[k]))
+    for i, seg in enumerate(segs):
+        want = _reference_row(seg)
+        if want is None:
+            assert i not in got
+        else:
+            assert got[i] == (*want, seg.block, int(seg.kind))
 
 
 def test_full_interpreter_segments_are_screened_by_columns():
