@@ -44,6 +44,7 @@ __all__ = [
     "Parameters",
     "EvalError",
     "evaluate",
+    "compile_expression",
     "word_value",
     "TOLERANCE_EQUAL",
     "MAX_PARAMETER",
@@ -339,6 +340,103 @@ def evaluate(node: Any, params: Parameters) -> Value:
 _TRUE = (1.0, Fraction(1))
 _FALSE = (0.0, Fraction(0))
 UNSET = (0.0, Fraction(0))  # what an unset numbered parameter reads
+
+#: Trees deeper than this are not compiled (:func:`compile_expression` leaves them to :func:`evaluate`).
+MAX_COMPILED_DEPTH = 64
+
+
+def compile_expression(node: Any) -> Callable[[Parameters], Value]:
+    """``evaluate(node, params)`` as a function of ``params``, the tree read once.
+
+    For expressions that run again (loop conditions, subroutine lines): the
+    nodes become nested closures that make the same double operations in the
+    same order with the same exact shadows and raise the same errors (each
+    operator, function and parameter read is :func:`evaluate`'s own:
+    :func:`binary_op`, :func:`unary_op`, the same parameter store; a
+    comparison reads the same two doubles).  Named parameters, computed
+    parameter numbers, ``EXISTS`` and ``ATAN`` are left to :func:`evaluate`
+    itself, as is a tree deeper than :data:`MAX_COMPILED_DEPTH` (whose
+    recursion limit must stay :func:`evaluate`'s).
+
+    >>> from nczones.gcode.parser import parse_line
+    >>> tree = parse_line("o1 while [#1 LT [2 * COS[60]] AND #2 EQ 0]", 1, "p").oword.args[0]
+    >>> params = Parameters()
+    >>> compile_expression(tree)(params) == evaluate(tree, params) == (1.0, Fraction(1))
+    True
+    """
+    if _depth(node, MAX_COMPILED_DEPTH) > MAX_COMPILED_DEPTH:
+        return lambda params: evaluate(node, params)
+    return _compile(node)
+
+
+def _depth(node: Any, limit: int) -> int:
+    """The depth of a tree, counted up to ``limit + 1``."""
+    if limit < 0:
+        return 1
+    tag = node[0]
+    if tag == BIN or tag == ATAN:
+        return 1 + max(_depth(node[-2], limit - 1), _depth(node[-1], limit - 1))
+    if tag == NEG or tag == PAR:
+        return 1 + _depth(node[1], limit - 1)
+    if tag == FN:
+        return 1 + _depth(node[2], limit - 1)
+    return 1
+
+
+_COMPARE = {
+    "gt": lambda a, b: a > b,
+    "ge": lambda a, b: a >= b,
+    "lt": lambda a, b: a < b,
+    "le": lambda a, b: a <= b,
+}
+
+
+def _compile(node: Any) -> Callable[[Parameters], Value]:
+    tag = node[0]
+    if tag == NUM:
+        value = (node[1], node[2])
+        return lambda params: value
+    if tag == PAR and node[1][0] == NUM:
+        d = node[1][1]
+        if d - d or abs(d - round(d)) > 0.0001:
+            return lambda params: evaluate(node, params)  # raises the parameter number's error
+        index = round(d)
+
+        def read(params: Parameters) -> Value:
+            if not 1 <= index <= params.max_parameter:
+                return evaluate(node, params)  # raises GC205
+            getter = params._providers.get(index)
+            if getter is None:
+                return params._num.get(index, UNSET)
+            return pair(getter())
+
+        return read
+    if tag == BIN:
+        op = node[1]
+        left, right = _compile(node[2]), _compile(node[3])
+        if node[3][0] == NUM and op in _COMPARE:
+            b = node[3][1]
+            if op == "lt":
+                return lambda params: _TRUE if left(params)[0] < b else _FALSE
+            if op == "gt":
+                return lambda params: _TRUE if left(params)[0] > b else _FALSE
+        test = _COMPARE.get(op)
+        if test is not None:
+            return lambda params: _TRUE if test(left(params)[0], right(params)[0]) else _FALSE
+        return lambda params: binary_op(op, left(params), right(params))
+    if tag == NEG:
+        inner = _compile(node[1])
+
+        def negate(params: Parameters) -> Value:
+            d, q = inner(params)
+            return (-d, -q if q is not None else None)
+
+        return negate
+    if tag == FN:
+        name = node[1]
+        arg = _compile(node[2])
+        return lambda params: unary_op(name, arg(params))
+    return lambda params: evaluate(node, params)  # NPAR, computed parameter numbers, ATAN, EXISTS
 
 
 def q_add(a: Any, b: Any) -> Fraction:  # Fractions, read through their slots

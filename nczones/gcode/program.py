@@ -89,7 +89,7 @@ Examples
 from __future__ import annotations
 
 import re
-from collections.abc import Generator, Iterator
+from collections.abc import Callable, Generator, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -97,7 +97,15 @@ from typing import Any, BinaryIO
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from .blocks import LANE_FULL, Block, ShapeBlock
-from .expr import EvalError, Parameters, evaluate, format_parameter, parameter_key, word_value
+from .expr import (
+    EvalError,
+    Parameters,
+    compile_expression,
+    evaluate,
+    format_parameter,
+    parameter_key,
+    word_value,
+)
 from .lexer import (
     G_MACRO_CALLS,
     M_CONTROL,
@@ -110,7 +118,7 @@ from .lexer import (
     scan_plain,
     scan_simple,
 )
-from .parser import ParsedLine, parse_line
+from .parser import OWord, ParsedLine, parse_line
 from .shapes import LAYOUT, RUNS, CompiledLine, compiled_line, line_shaped, parse_line_shaped
 
 __all__ = [
@@ -259,6 +267,9 @@ def _show(label: object) -> str:
 
 
 _BLANK = re.compile(r"[ \t]+")
+#: Keep the jumps O-words found and compile the conditions of lines that run again (tests turn it off to
+#: compare with searching and evaluating every time).
+_REUSE_CONTROL = True
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 
@@ -297,6 +308,8 @@ class Runner:
         self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
         self.scanned_all = False
         self.cache: dict[int, tuple] = {}  # offset -> (parsed line, line, next offset)
+        self.jumps: dict[tuple, tuple[str, int, int, str, int]] = {}  # skip_to's results by its arguments
+        self.compiled: dict[int, tuple] = {}  # id of an expression tree -> (the tree, its compiled form)
         self.index = first_index
         self.started = False
         self.main_label_seen = False
@@ -349,8 +362,23 @@ class Runner:
         """Find the next line ``<label> <keyword>`` with keyword in ``keywords``.
 
         Returns ``(keyword, pos, lineno, line, next_pos)``.  LinuxCNC matches
-        O-words by label, not by nesting, and so does this.
+        O-words by label, not by nesting, and so does this.  A jump found is
+        kept (the text does not change, and the subroutines the scan
+        registered stay registered), so a loop's jumps are searched once.
         """
+        if not _REUSE_CONTROL:
+            return self._skip_to(label, keywords, pos, lineno, what, line0, lineno0, nested_sub_error)
+        key = (label, keywords, pos, lineno, nested_sub_error)
+        found = self.jumps.get(key)
+        if found is not None:
+            return found
+        found = self._skip_to(label, keywords, pos, lineno, what, line0, lineno0, nested_sub_error)
+        if len(self.jumps) < 100_000:
+            self.jumps[key] = found
+        return found
+
+    def _skip_to(self, label: object, keywords: tuple[str, ...], pos: int, lineno: int, what: str, line0: str,
+                 lineno0: int, nested_sub_error: bool) -> tuple[str, int, int, str, int]:
         for p, ln, line, nxt in self.scan(pos, lineno):
             if "o" not in line and "O" not in line:
                 continue
@@ -565,7 +593,13 @@ class Runner:
                     pos, lineno = nxt, lineno + 1
                     continue
             # general path
-            target = yield from self.execute(parsed, line, lineno, pos, nxt)
+            ow = parsed.oword
+            if ow is not None and not parsed.comments and not parsed.percent and not (
+                    parsed.delete and self.block_delete):
+                # an O-word line without messages yields no block: executed without the generators
+                target = self.oword(ow, self.olabel(ow, lineno, line), line, lineno, pos, nxt)
+            else:
+                target = yield from self.execute(parsed, line, lineno, pos, nxt)
             if target is None:
                 return
             pos, lineno = target
@@ -590,8 +624,18 @@ class Runner:
             return "######"
 
     def evaluate(self, tree: Any, lineno: int, line: str, col: int = 1,
-                 end: int | None = None) -> tuple[Any, ...]:
+                 end: int | None = None, again: bool = False) -> tuple[Any, ...]:
+        """The value of ``tree``; ``again``: a tree of a line that runs again (a loop's, a subroutine's),
+        evaluated by its compiled form (:func:`~nczones.gcode.expr.compile_expression`, made once)."""
         try:
+            if again:
+                got = self.compiled.get(id(tree))
+                if got is None or got[0] is not tree:
+                    if len(self.compiled) >= 10_000:
+                        self.compiled.clear()
+                    got = self.compiled[id(tree)] = (tree, compile_expression(tree))  # the tree kept: its id stays
+                compiled: Callable[[Parameters], tuple[Any, ...]] = got[1]
+                return compiled(self.params)
             return evaluate(tree, self.params)
         except EvalError as e:
             if e.code.startswith("GC30"):
@@ -807,7 +851,16 @@ class Runner:
                       nxt: int) -> Generator[Block, None, tuple[int, int] | None]:
         ow = pl.oword
         assert ow is not None
-        kw = ow.keyword
+        label = self.olabel(ow, lineno, line)
+        messages = self.messages(pl.comments) if pl.comments else ()
+        if messages:
+            self.started = True
+            yield Block((), make_span(self.file, lineno, 1, len(line) + 1, line), self.index, pl.number, messages)
+            self.index += 1
+        return self.oword(ow, label, line, lineno, pos, nxt)
+
+    def olabel(self, ow: OWord, lineno: int, line: str) -> object:
+        """The label of an O-word: ``o[expr]`` evaluated (a non-negative integer)."""
         label = ow.label
         if isinstance(label, tuple):  # o[expr]
             d, _q = self.evaluate(label, lineno, line, ow.column, ow.end_column)
@@ -815,20 +868,23 @@ class Runner:
                 raise self.error("GC202", f"O-word number {d!r} is not a non-negative integer", lineno, line,
                                  ow.column, ow.end_column)
             label = int(d)
+        return label
+
+    def oword(self, ow: OWord, label: object, line: str, lineno: int, pos: int, nxt: int) -> tuple[int, int] | None:
+        """Execute an O-word line whose label is ``label`` (its comments' messages already yielded); the next
+        (pos, lineno)."""
+        kw = ow.keyword
         frame = self.frames[-1]
-        messages = self.messages(pl.comments) if pl.comments else ()
-        if messages:
-            self.started = True
-            yield Block((), make_span(self.file, lineno, 1, len(line) + 1, line), self.index, pl.number, messages)
-            self.index += 1
         here = (nxt, lineno + 1)
         if kw is None:
             # a Fanuc program number/subprogram label reached in the flow: a label only
             return here
         col, end = ow.column, ow.end_column
+        # the line may run again: its condition compiled
+        again = _REUSE_CONTROL and (len(self.frames) > 1 or bool(frame.loops))
 
         def cond() -> bool:
-            return bool(self.evaluate(ow.args[0], lineno, line, col, end)[0] != 0.0)
+            return bool(self.evaluate(ow.args[0], lineno, line, col, end, again)[0] != 0.0)
 
         if kw == "sub":
             self.subs.setdefault(label, here)
