@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from fractions import Fraction
+from itertools import chain
 from typing import Any, Protocol
 
 import numpy as np
@@ -501,7 +502,7 @@ def _line_rows(points: list[tuple[Fraction, ...]], at_start: list[int], at_end: 
     the box's low corner and the ceiling of its high one.  A row with a number of magnitude ``2**60``
     or more (in units of the scale) is left out: ``kept`` lists the rows kept, None when all are; the
     result is None when none is."""
-    values = [v for p in points for v in p]
+    values = list(chain.from_iterable(points))
     floors, ceils, done = _scaled_bounds(values)
     bound = _ROW_BOUND
     big: set[int] = set()  # points with a number beyond the bound
