@@ -18,6 +18,7 @@ are read by :func:`verify_options`, one program is verified by
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import sys
 from collections.abc import Sequence
@@ -40,6 +41,19 @@ EXIT_INTERRUPTED = 130
 
 #: Exit statuses from worst to best: several programs exit with the first one that occurs.
 EXIT_ORDER = (cli.EXIT_FAIL, cli.EXIT_INPUT, cli.EXIT_UNKNOWN, cli.EXIT_OK)
+
+#: The youngest generation's collection threshold while the command runs: interpreting a program allocates
+#: millions of small objects that reference counting frees, and collecting every 700 allocations (Python's
+#: default) cost 8 % of the CPU of a 100,000-line verify through the full interpreter.
+GC_THRESHOLD = 10_000
+
+
+def fewer_collections() -> None:
+    """Raise the garbage collector's first threshold to :data:`GC_THRESHOLD` (never lower it, never turn
+    a disabled collector on): cyclic garbage is still collected, a few thousand allocations later."""
+    first, second, third = gc.get_threshold()
+    if 0 < first < GC_THRESHOLD:
+        gc.set_threshold(GC_THRESHOLD, second, third)
 
 
 def worst_exit(codes: Sequence[int]) -> int:
@@ -178,6 +192,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.sarif_root is not None and not os.path.isdir(args.sarif_root):
         raise _command_line_error("VF108", f"--sarif-root {args.sarif_root}: not a directory")
     check_output_path(args.output)
+    fewer_collections()
     machine = cli.with_dialect(load_machine(args.machine), args.dialect)
     options = verify_options(args, machine)
     results: list = []
