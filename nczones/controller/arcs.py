@@ -682,10 +682,16 @@ class ArcStream:
 
     def positions(self) -> np.ndarray:
         """The whole plan as one ``(n, naxes)`` int64 array (the chunks concatenated)."""
-        parts = [np.array(c, dtype=np.int64, order="C") for c in self.chunks()]
-        if not parts:
-            return np.zeros((0, self.naxes), dtype=np.int64)
-        return parts[0] if len(parts) == 1 else np.concatenate(parts)
+        out = np.empty((int(self.est * 1.02) + 64, self.naxes), dtype=np.int64)  # pages never written cost nothing
+        n = 0
+        for c in self.chunks():
+            if n + len(c) > len(out):
+                grown = np.empty((max(2 * len(out), n + len(c)), self.naxes), dtype=np.int64)
+                grown[:n] = out[:n]
+                out = grown
+            out[n:n + len(c)] = c
+            n += len(c)
+        return out[:n]
 
 
 def path_fractions(pos: np.ndarray, p0: Sequence[int], pulse_mm: Sequence[float | Fraction]) -> np.ndarray:
