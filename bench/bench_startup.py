@@ -54,7 +54,7 @@ PROGRAM = "G90 G21\nG1 X10 Y10 F100\nM2\n"
 EAGER = ("import sys\nfrom nczones import cli\nimport nczones.prover as api, nczones.prover.core as core\n"
          "cli.chosen_command = lambda argv: None\ncli._one_blas_thread = lambda: None\n"
          "api.FAST_PATH_MIN_LINES = core.SCREEN_MIN_SEGMENTS = 0\nsys.exit(cli.main(sys.argv[1:]))")
-LAZY = "import sys\nfrom nczones import cli\nsys.exit(cli.main(sys.argv[1:]))"
+LAZY = "from nczones import cli\ncli.run()"
 
 
 def child_cpu(argv: list[str], env: dict[str, str]) -> float:

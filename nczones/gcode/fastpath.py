@@ -630,7 +630,7 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
         return ~bad, starts, ends_, (np.zeros(0, np.uint8), np.zeros(0, np.int32))
     line_of = np.zeros(b.size, dtype=np.int32)
     line_of[nl[nl + 1 < b.size] + 1] = 1
-    line_of = np.cumsum(line_of, dtype=np.int32)
+    np.cumsum(line_of, out=line_of)
     has_paren = data.find(b"(") >= 0 or data.find(b")") >= 0
     if has_paren:
         # parentheses: depth relative to the line start
@@ -656,20 +656,19 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
         comment = in_semi if in_paren is None else (in_paren | in_semi)
     else:
         comment = in_paren
-    hb = np.bincount(b, minlength=256)
-    if int(hb[:33].sum()) == int(hb[[_SP, _TAB, _CR, _NL]].sum()):
-        keep = b > 32  # no control bytes but blanks
+    # (byte tests by comparisons: a histogram or a table lookup would widen every byte to an index)
+    if ((b < 33) & (b != _SP) & (b != _TAB) & (b != _CR) & (b != _NL)).any():
+        keep = _KEEP[b]  # control bytes other than blanks are kept, and make their line not simple
     else:
-        keep = _KEEP[b]
+        keep = b > 32
     if comment is not None:
         keep &= ~comment
     c = b[keep]
-    if hb[97:123].any():
+    if ((b - np.uint8(97)) < 26).any():  # lower-case letters
         c = _UPPER[c]
     cl_line = line_of[keep]
     allowed = _allowed_table(it)
-    hist = np.bincount(c, minlength=256) if comment is not None else hb
-    if np.any(hist[~allowed & _KEEP]) or (comment is not None and np.any(hist[~allowed])):
+    if c.tobytes().translate(None, _allowed_bytes(allowed)):  # a code byte that is not allowed
         notok = ~allowed[c]
         bad[cl_line[notok]] = True
     # magic comments: rare; check by regex on lines with '('
@@ -679,6 +678,11 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
             if not bad[ln] and _MAGIC.search(data[starts[ln]:ends_[ln]].decode("latin-1")):
                 bad[ln] = True
     return ~bad, starts, ends_, (c, cl_line)
+
+
+def _allowed_bytes(allowed: np.ndarray) -> bytes:
+    """The bytes an :func:`_allowed_table` allows, for ``bytes.translate`` (which deletes them)."""
+    return bytes(np.flatnonzero(allowed).tolist())
 
 
 def _allowed_table(it: Any) -> np.ndarray:
@@ -741,25 +745,28 @@ def _parse_words(c, cl_line, lo_line, hi_line):
         return None
     decimals = np.zeros(nwords, dtype=np.int64)
     dots = np.flatnonzero(isdot)
-    word_id = np.cumsum(is_letter, dtype=np.int32) - 1 if dots.size or sp.size else np.zeros(0, np.int32)
     points = np.zeros(nwords, dtype=bool)
     if dots.size:
-        dw = word_id[dots]
+        dw = np.searchsorted(wstart, dots, side="right") - 1  # the word of each point
         if np.any(dw[1:] == dw[:-1]):
             return None  # two points in one word
         decimals[dw] = dcum[last[dw]] - dcum[dots]
         points[dw] = True
-    # integer value of the digit string: sum digit * 10**(digits to its right); the digits
-    # of word w are the ndig[w] consecutive entries of the digit list starting at first[w]
-    digits = d[isdigit].astype(np.int64)
+    # integer value of the digit string, by Horner's rule over all words at once: the digits of word w
+    # are the ndig[w] consecutive entries of the digit list starting at first[w]; step k appends the
+    # k-th digit of every word that has one (arrays of one entry per word, not per digit)
+    digits = d[isdigit]
     first = np.zeros(nwords, dtype=np.int64)
     np.cumsum(ndig[:-1], out=first[1:])
-    right = np.repeat(first + (ndig - 1), ndig) - np.arange(digits.size, dtype=np.int64)
-    digits *= _POW10[right]
-    value = np.add.reduceat(digits, first)
+    value = np.zeros(nwords, dtype=np.int64)
+    top = digits.size - 1
+    for k in range(int(ndig.max())):
+        at = first + k
+        np.minimum(at, top, out=at)
+        value = np.where(ndig > k, value * 10 + digits[at], value)
     if sp.size:
         neg = np.zeros(nwords, dtype=bool)
-        neg[word_id[sp[cc[sp] == 45]]] = True
+        neg[np.searchsorted(wstart, sp[cc[sp] == 45], side="right") - 1] = True
         value = np.where(neg, -value, value)
     return ln[wstart], cc[wstart], value, decimals, points
 
@@ -806,7 +813,10 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
             first_bad = int(rel[np.argmax(bad)])
             if first_bad == 0:
                 return None
-            chunk = _fast_run(interp, code, lo, lo + first_bad, block_counter, line0)
+            # the words of the lines before it, as parsing only those lines gives them (a word ends where
+            # the next begins, so cutting at a line changes no word)
+            k = int(np.searchsorted(parsed[0], lo + first_bad))
+            chunk = _fast_run(interp, code, lo, lo + first_bad, block_counter, line0, tuple(a[:k] for a in parsed))
             return None if chunk is None else (chunk, lo + first_bad)
         only_sm_lines = rel[isM | isS]  # blocks even when nothing else is left on the line
         keep = ~(isM | isS)

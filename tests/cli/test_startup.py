@@ -120,3 +120,17 @@ def test_the_chosen_command_is_the_first_word_that_is_no_option(argv, command):
 def test_a_command_built_alone_parses_as_in_the_full_parser():
     argv = ["verify", "p.ngc", "--machine", "m.toml", "--margin", "0.5", "--engine", "z3"]
     assert vars(cli.build_parser("verify").parse_args(argv)) == vars(cli.build_parser().parse_args(argv))
+
+
+def test_the_program_exits_with_the_status_main_returns(tmp_path):
+    # nczones.cli.run (the console script, python -m nczones) tunes the process, runs main and exits with its status
+    program = tmp_path / "out.ngc"
+    program.write_text("G90 G21\nG1 X900 Y10 F100\nM2\n")  # X beyond the mill's travel
+    code = (f"import sys\nsys.argv = ['nczones', 'verify', {str(program)!r}, '--machine', {MILL!r}]\n"
+            "from nczones.cli import run\nrun()")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 1 and "unsafe" in r.stdout, r.stderr
+    r = subprocess.run([sys.executable, "-m", "nczones", "--version"], capture_output=True, text=True, cwd=ROOT)
+    from nczones import __version__
+
+    assert r.returncode == 0 and __version__ in r.stdout

@@ -184,25 +184,31 @@ def test_a_percent_line_between_lines_of_code_ends_the_program_on_both_paths():
 
 
 @settings(max_examples=80, deadline=None, derandomize=True)
-@given(st.lists(st.tuples(st.sampled_from("XYZIJKF"), st.integers(-10**12, 10**12), st.integers(0, 6),
-                          st.booleans()), min_size=1, max_size=12))
+@given(st.lists(st.tuples(st.sampled_from("XYZIJKF"), st.one_of(st.integers(-10**12, 10**12),
+                                                                 st.integers(-(10**18 - 1), 10**18 - 1)),
+                          st.integers(0, 6), st.booleans(), st.booleans()), min_size=1, max_size=12))
 def test_digit_parser_is_exact(words):
+    # up to 18 digits (the most a word may have), words of different lengths, over several lines
     text = []
     want = []
-    for letter, v, dec, plus in words:
+    line_of = []
+    line = 0
+    for letter, v, dec, plus, new_line in words:
         digits = str(abs(v)).rjust(dec + 1, "0")
         lit = digits[: len(digits) - dec] + ("." + digits[len(digits) - dec:] if dec else "")
         sign = "-" if v < 0 else ("+" if plus else "")
         text.append(f"{letter}{sign}{lit}")
         want.append(Fraction(v, 10**dec))
-    code = np.frombuffer(" ".join(text).encode(), dtype=np.uint8)
-    code = code[code != 32]
-    parsed = fastpath._parse_words(code, np.zeros(code.size, dtype=np.int32), 0, 1)
+        line += bool(new_line and text[:-1])
+        line_of += [line] * len(text[-1])
+    code = np.frombuffer("".join(text).encode(), dtype=np.uint8)
+    parsed = fastpath._parse_words(code, np.array(line_of, dtype=np.int32), 0, line + 1)
     assert parsed is not None
-    _, letters, value, dec, points = parsed
+    lines, letters, value, dec, points = parsed
     got = [Fraction(int(v), 10 ** int(d)) for v, d in zip(value, dec)]
     assert got == want
     assert bytes(letters.tolist()).decode() == "".join(w[0] for w in words)
+    assert lines.tolist() == [line_of[sum(len(t) for t in text[:i])] for i in range(len(text))]
     assert points.tolist() == ["." in t for t in text]  # the Fanuc dialect's decimal point input rule reads it
 
 
@@ -210,6 +216,19 @@ def test_digit_parser_is_exact(words):
 def test_digit_parser_refuses_malformed_words(bad):
     code = np.frombuffer(bad.encode(), dtype=np.uint8)
     assert fastpath._parse_words(code, np.zeros(code.size, dtype=np.int32), 0, 1) is None
+
+
+@pytest.mark.parametrize("stop", ["M2", "M30", "M0", "M1", "G1 X1 M6", "M110"])
+def test_a_run_cut_by_another_m_code_is_read_once(stop, monkeypatch):
+    # the lines before the M code go fast from the words already parsed for the whole run
+    body = "\n".join(f"X{k % 97}.{k % 10}5 Y-{k % 31}.25" for k in range(3 * fastpath.MIN_RUN))
+    text = f"G21 G90 G17 G54\nG1 F800\n{body}\n{stop}\nX1 Y1\n" + body + "\nM2\n"
+    calls = []
+    parse = fastpath._parse_words
+    monkeypatch.setattr(fastpath, "_parse_words", lambda *a: calls.append(a[2:]) or parse(*a))
+    got = _fast(text, 1 << 20)
+    assert got[:2] == _full(text) and got[2] >= 3 * fastpath.MIN_RUN - 1
+    assert not any(a[0] == b[0] and a[1] < b[1] for a in calls for b in calls)  # no run's first lines again
 
 
 def test_axis_words_the_machine_lacks_are_never_dropped():
