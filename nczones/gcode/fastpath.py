@@ -668,9 +668,12 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
         c = _UPPER[c]
     cl_line = line_of[keep]
     allowed = _allowed_table(it)
-    if c.tobytes().translate(None, _allowed_bytes(allowed)):  # a code byte that is not allowed
-        notok = ~allowed[c]
-        bad[cl_line[notok]] = True
+    others = set(c.tobytes().translate(None, _allowed_bytes(allowed)))  # the code bytes that are not allowed
+    if len(others) > 8:
+        bad[cl_line[~allowed[c]]] = True
+    else:
+        for v in others:  # usually a few letters (H, T, P, ...): one comparison each instead of a table lookup
+            bad[cl_line[c == v]] = True
     # magic comments: rare; check by regex on lines with '('
     if op is not None:
         paren_lines = _distinct_sorted(line_of[op == 1])
@@ -712,8 +715,9 @@ def _parse_words(c, cl_line, lo_line, hi_line):
     removed); ``decimals`` counts the digits after the point.  At most 18
     digits, so no value can overflow ``int64``.
     """
-    sel_lo = np.searchsorted(cl_line, lo_line)
-    sel_hi = np.searchsorted(cl_line, hi_line)
+    line = cl_line.dtype.type  # a key of the array's own type: a Python int would widen the whole array first
+    sel_lo = np.searchsorted(cl_line, line(lo_line))
+    sel_hi = np.searchsorted(cl_line, line(hi_line))
     cc = c[sel_lo:sel_hi]
     ln = cl_line[sel_lo:sel_hi]
     if cc.size == 0:
@@ -734,15 +738,16 @@ def _parse_words(c, cl_line, lo_line, hi_line):
     isdigit = d < 10
     isdot = d == 254
     issign = (d == 251) | (d == 253)
+    if not (is_letter | isdigit | isdot | issign).all():
+        return None  # another byte (a line the classification did not let through)
     # a sign only right after the letter
     sp = np.flatnonzero(issign)
     if sp.size and not is_letter[sp - 1].all():
         return None
-    dcum = np.cumsum(isdigit, dtype=np.int32)
-    last = wend - 1
-    ndig = dcum[last] - dcum[wstart]
-    if np.any(ndig == 0) or np.any(ndig > 18):
-        return None
+    # a word is its letter, at most one sign, digits and at most one point: its digits are the rest
+    ndig = wend - wstart - 1
+    if sp.size:
+        ndig[np.searchsorted(wstart, sp, side="right") - 1] -= 1  # (one sign per word: it follows the letter)
     decimals = np.zeros(nwords, dtype=np.int64)
     dots = np.flatnonzero(isdot)
     points = np.zeros(nwords, dtype=bool)
@@ -750,8 +755,11 @@ def _parse_words(c, cl_line, lo_line, hi_line):
         dw = np.searchsorted(wstart, dots, side="right") - 1  # the word of each point
         if np.any(dw[1:] == dw[:-1]):
             return None  # two points in one word
-        decimals[dw] = dcum[last[dw]] - dcum[dots]
+        decimals[dw] = wend[dw] - 1 - dots  # only digits follow the point
+        ndig[dw] -= 1
         points[dw] = True
+    if np.any(ndig == 0) or np.any(ndig > 18):
+        return None
     # integer value of the digit string, by Horner's rule over all words at once: the digits of word w
     # are the ndig[w] consecutive entries of the digit list starting at first[w]; step k appends the
     # k-th digit of every word that has one (arrays of one entry per word, not per digit)

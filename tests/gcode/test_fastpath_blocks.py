@@ -212,7 +212,7 @@ def test_digit_parser_is_exact(words):
     assert points.tolist() == ["." in t for t in text]  # the Fanuc dialect's decimal point input rule reads it
 
 
-@pytest.mark.parametrize("bad", ["X1.2.3", "X+-1", "X", "X1-2", "1X2", "X.", "X1234567890123456789"])
+@pytest.mark.parametrize("bad", ["X1.2.3", "X+-1", "X", "X1-2", "1X2", "X.", "X1234567890123456789", "X1#2", "X1*2", "X.-1"])
 def test_digit_parser_refuses_malformed_words(bad):
     code = np.frombuffer(bad.encode(), dtype=np.uint8)
     assert fastpath._parse_words(code, np.zeros(code.size, dtype=np.int32), 0, 1) is None
