@@ -804,12 +804,15 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         keep = ~isN
         wl, wletter, wval, wdec = wl[keep], wletter[keep], wval[keep], wdec[keep]
     rel = wl - lo
-    # duplicates of a letter in a line
-    if rel.size:
-        bits = np.left_shift(np.int64(1), (wletter.astype(np.int64) - 65))
-        lstart = np.flatnonzero(np.concatenate(([True], rel[1:] != rel[:-1])))
-        if np.any(np.add.reduceat(bits, lstart) != np.bitwise_or.reduceat(bits, lstart)):
+    # duplicates of a letter in a line: a word with the letter of one of the (few) words before it in its
+    # line, compared at distances 1, 2, ... while some line has that many words (``rel`` is sorted)
+    same = rel[1:] == rel[:-1]
+    j = 1
+    while same.any():
+        if np.any(same & (wletter[j:] == wletter[:-j])):
             return None
+        j += 1
+        same = same[1:] & (rel[j:] == rel[:-j])
     # S and spindle/coolant M words (M3 M4 M5 M7 M8 M9) change nothing the motion depends on
     # (Interpreter._lean); a line with another M code ends the run before it
     isM = wletter == ord("M")

@@ -231,6 +231,14 @@ def test_a_run_cut_by_another_m_code_is_read_once(stop, monkeypatch):
     assert not any(a[0] == b[0] and a[1] < b[1] for a in calls for b in calls)  # no run's first lines again
 
 
+@pytest.mark.parametrize("line", ["X1 X2", "X1 Y2 X3", "X1 Y2 Z3 X4", "G1 X1 G1 Y2", "F10 X1 Y1 Z1 F20", "N5 X1 Y2 Y3"])
+def test_a_letter_twice_in_a_line_of_a_run_is_left_to_the_full_interpreter(line):
+    body = [f"X{k % 97}.{k % 10}5 Y-{k % 31}.25 Z{k % 3}" for k in range(2 * fastpath.MIN_RUN)]
+    body[fastpath.MIN_RUN + 3] = line
+    text = "G21 G90 G17 G54\nG1 F800\n" + "\n".join(body) + "\nM2\n"
+    assert _fast(text, 1 << 20)[:2] == _full(text)
+
+
 def test_axis_words_the_machine_lacks_are_never_dropped():
     xy = parse_machine('[machine]\naxes = ["X", "Y"]\n[machine.rapid]\nX = "1"\nY = "1"\n'
                        '[machine.reference]\nX = "0"\nY = "0"\n')
