@@ -21,57 +21,19 @@ import nczones.prover as prover_api
 import nczones.prover.core as core
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.prover.test_segment_batches import MACHINE as BATCH_MACHINE
 from tests.prover.test_segment_batches import by_columns, dec, t
 
-MACHINE = """
-[machine]
-axes = ["X", "Y", "Z"]
-rapid_mode = "{rapid}"
-[machine.rapid]
-X = "5000"
-Y = "5000"
-Z = "5000"
-[machine.reference]
-X = "1"
-Y = "1"
-Z = "40"
-[offsets]
-G54 = {{ X = "0", Y = "0", Z = "0" }}
-G55 = {{ X = "{g55x}", Y = "{g55y}", Z = "0" }}
-[tool_lengths]
-H1 = "{h1}"
-[[zones]]
-name = "travel"
-kind = "box"
-min = {{ X = "-1", Y = "-1", Z = "-60" }}
-max = {{ X = "{xmax}", Y = "{ymax}", Z = "60" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = {{ X = "{cx0}", Y = "{cy0}" }}
-max = {{ X = "{cx1}", Y = "{cy1}" }}
-[[zones]]
-name = "table"
-kind = "stepped"
-reference_axis = "X"
-limited_axis = "Y"
-from = "-1"
-regions = [{{ upto = "{step}", max = "{ymax}" }}, {{ upto = "200", max = "{ystep}" }}]
-[[zones]]
-name = "floor"
-kind = "box"
-point = "tip"
-min = {{ Z = "{floor}" }}
-"""
+#: test_segment_batches' machine (travel box, forbid box, stepped table, tool-tip floor) with a rapid mode to draw.
+MACHINE = BATCH_MACHINE.replace("[machine.rapid]", 'rapid_mode = "{rapid}"\n[machine.rapid]', 1)
 
 ALLOW_POLYGON = """
 [[zones]]
 name = "outline"
 kind = "polygon"
 plane = ["X", "Y"]
-vertices = [["-1", "-1"], ["{xmax}", "-1"], ["{xmax}", "{ymax}"], ["{nx1}", "{ymax}"], ["{nmid}", "{ny}"],
-            ["{nx0}", "{ymax}"], ["-1", "{ymax}"]]
+vertices = [["0", "0"], ["{xmax}", "0"], ["{xmax}", "{ymax}"], ["{nx1}", "{ymax}"], ["{nmid}", "{ny}"],
+            ["{nx0}", "{ymax}"], ["0", "{ymax}"]]
 """
 
 FORBID_POLYGON = """
@@ -90,7 +52,7 @@ def machines(draw):
     edge and a forbid triangle, each present or not."""
     xmax, ymax = dec(draw, 60, 90, 1), dec(draw, 60, 90, 1)
     cx0, cy0 = dec(draw, 10, 70, 1), dec(draw, 10, 70, 1)
-    v = dict(rapid=draw(st.sampled_from(["linear", "dogleg"])), xmax=xmax, ymax=ymax, cx0=cx0, cy0=cy0,
+    v = dict(dialect="linuxcnc", rapid=draw(st.sampled_from(["linear", "dogleg"])), xmax=xmax, ymax=ymax, cx0=cx0, cy0=cy0,
              cx1=cx0 + dec(draw, 1, 15, 1), cy1=cy0 + dec(draw, 1, 15, 1), step=dec(draw, 30, 80, 1),
              ystep=ymax - dec(draw, 0, 10, 1), g55x=dec(draw, -5, 5, 2), g55y=dec(draw, -5, 5, 2),
              h1=dec(draw, 10, 30, 2), floor=dec(draw, -80, -20, 1))
@@ -169,7 +131,7 @@ def test_the_numpy_free_path_agrees_with_the_vectorized_path_and_z3(machine, pro
 
 
 def test_the_thresholds_choose_the_path():
-    machine = parse_machine(MACHINE.format(rapid="linear", xmax="80", ymax="80", cx0="70", cy0="70", cx1="75",
+    machine = parse_machine(MACHINE.format(dialect="linuxcnc", rapid="linear", xmax="80", ymax="80", cx0="70", cy0="70", cx1="75",
                                            cy1="75", step="60", ystep="80", g55x="0", g55y="0", h1="20",
                                            floor="-50"))
     lines = [f"G1 X{10 + k % 7}.{k % 10} Y{20 + k % 5}.5" for k in range(600)]
