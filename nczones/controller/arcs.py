@@ -519,7 +519,8 @@ class HelixColumns:
             np.clip(phi, 0.0, 1.0, out=phi)
         else:
             phi = np.ones(m)
-        np.maximum.accumulate(phi, out=phi)
+        if m > 1 and not (phi[1:] >= phi[:-1]).all():  # the running maximum; a no-op where phi never falls
+            np.maximum.accumulate(phi, out=phi)
         if phi[0] < self.run_max:
             np.maximum(phi, self.run_max, out=phi)
         self.run_max = float(phi[-1])
