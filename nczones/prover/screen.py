@@ -551,7 +551,10 @@ def _scaled_bounds(values: list[Fraction]) -> tuple[np.ndarray, np.ndarray, np.n
     ceils = np.zeros(m, dtype=np.int64)
     done = np.zeros(m, dtype=bool)
     try:
-        n, d = _terms(values)
+        try:
+            n, d = _terms(values)
+        except AttributeError:  # a number that is not a Fraction (a caller's int): read by the properties
+            n, d = _terms_by_properties(values)
     except OverflowError:  # a numerator or denominator beyond int64: every value by Python's integers
         return floors, ceils, done
     fits = (n > -2**62) & (n < 2**62)

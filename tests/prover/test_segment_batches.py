@@ -304,6 +304,7 @@ any_numbers = st.one_of(
     st.floats(-1e-3, 1e-3, allow_nan=False).map(F),
     st.integers(-2**61, 2**61).map(lambda n: F(n, 10**9)),
     st.builds(lambda n, k: F(n, 2**k), st.integers(-2**62, 2**62), st.integers(0, 70)),
+    st.integers(-10**6, 10**6),  # a caller's plain int (the interpreters give Fractions)
     st.builds(lambda sign, n, den: F(sign * n, den), st.sampled_from([1, -1]),  # right at the 2**60 bound
               st.integers(2**60 - 3, 2**60 + 3), st.sampled_from([10**9, 10**9 // 512, 2**9 * 10**9, 3 * 10**9])),
 )
@@ -331,7 +332,7 @@ def test_line_rows_are_floor_and_ceiling_of_the_exact_box(specs):
     segs = []
     at: tuple = (F(0), F(0), F(0))
     for i, (kind, v, chained, keep_x) in enumerate(specs):
-        start = at if chained else tuple(F(x) for x in at)
+        start = at if chained else tuple(x if type(x) is int else F(x) for x in at)
         end = start if kind is SegmentKind.DWELL else ((start[0] if keep_x else v[0]), v[1], v[2])
         segs.append(Segment(kind, start, end, AXES, block=i))
         at = end
