@@ -219,6 +219,26 @@ def _float_developed_distance(p: Point, seg: Segment) -> float:
     return _min_distance([to_float(x) for x in p], at, samples=512)
 
 
+def _float_polar_distance(p: Point, seg: Segment) -> float:
+    """Distance (max over axes) from ``p`` to a polar move's machine path, in floats (samples, then near the best)."""
+    from .polar import polar_float_points, polar_of
+
+    q = [to_float(x) for x in p]
+    e = polar_of(seg)
+    if e is None:
+        return math.inf
+    ic = seg.axes.index(str(e["polar_rotary_axis"]))
+    n, lo, hi = 512, Fraction(0), Fraction(1)
+    pts = polar_float_points(seg, n)
+    for _ in range(4):  # the best sample, then 256 samples between its neighbours, three times
+        best = min(range(len(pts)), key=lambda k: max(abs(a - b) for a, b in zip(pts[k], q)))
+        k0, k1 = max(best - 1, 0), min(best + 1, len(pts) - 1)
+        lo, hi = lo + (hi - lo) * Fraction(k0, n), lo + (hi - lo) * Fraction(k1, n)
+        n = 256
+        pts = polar_float_points(seg, n, lo, hi, pts[k0][ic] - float(e["polar_c_entry"]))
+    return min(max(abs(a - b) for a, b in zip(pt, q)) for pt in pts)
+
+
 # --------------------------------------------------------------------------- reading the report
 
 
@@ -295,6 +315,8 @@ def _on_motion(p: Point, seg: Segment, machine: Machine, exact: bool, parameter:
         return _float_arc_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
     if seg.kind is SegmentKind.DEVELOPED_ARC:
         return _float_developed_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
+    if seg.kind is SegmentKind.POLAR:
+        return _float_polar_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
     return False
 
 

@@ -52,6 +52,7 @@ from ..zones import tip_offset, tip_shifted
 from .arcs import ArcStream, HelixColumns, path_fractions_moved, unwrap
 from .cylindrical import developed_arc_walk
 from .monitor import LimitMonitor
+from .polar import polar_walk
 from .pulses import (
     LINE_CHUNK,
     arc_centre,
@@ -580,6 +581,9 @@ class Controller:
         if seg.kind is SegmentKind.DEVELOPED_ARC:  # G07.1: developed plane, then rotary pulses
             pos, length = developed_arc_walk(seg, self.pulse, p0)
             return plan_from_positions(self, seg, p0, p1, pos, length, "developed arc")
+        if seg.kind is SegmentKind.POLAR:  # G12.1: the plane path converted to X (radius) and C (angle)
+            pos, length = polar_walk(seg, self.pulse, p0)
+            return plan_from_positions(self, seg, p0, p1, pos, length, "polar move")
         if seg.kind is SegmentKind.SPLINE:  # exact NURBS: flattened chords, see controller/spline.py
             pos, length = spline_walk(seg, self.pulse, p0)
             return plan_from_positions(self, seg, p0, p1, pos, length, "spline")

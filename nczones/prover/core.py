@@ -421,6 +421,13 @@ class Prover:
 
             cyl: Outcome = check_cylindrical(self, seg)
             return cyl
+        if seg.kind is SegmentKind.POLAR:
+            from .polar import (
+                check_polar,  # G12.1: square roots and arc tangents enclosed, see prover/polar.py
+            )
+
+            pol: Outcome = check_polar(self, seg)
+            return pol
         if seg.kind is SegmentKind.SPLINE:
             from .spline import (
                 check_spline,  # exact NURBS: control hulls + refinement, see prover/spline.py

@@ -137,7 +137,7 @@ def test_codes_of_the_other_system_are_named():
     assert "gcode_system = \"B\"" in e.value.diagnostics[0].message
 
 
-@pytest.mark.parametrize("code, text", [("G41", "G41 G01 X20. Z0 F0.1\n"), ("G12.1", "G12.1\n"),
+@pytest.mark.parametrize("code, text", [("G41", "G41 G01 X20. Z0 F0.1\n"), ("G50.2", "G50.2 P2 Q1\n"),
                                          ("G10", "G10 P1 X1.\n"), ("G83", "G83 X0 Z-10. R1. F0.1\n")])
 def test_unmodelled_lathe_codes_are_unknown(code, text):
     m = lathe()

@@ -43,6 +43,7 @@ from ..turning import (
     turning_cycle,
 )
 from .interpreter import FanucInterpreter
+from .polar import PolarState, mentions_polar, polar_block
 
 __all__ = ["FanucLatheInterpreter", "LATHE_GROUPS", "SHAPE_CODES"]
 
@@ -100,10 +101,6 @@ _UNKNOWN = {
     512: "polygon turning (G51.2) is not modelled",
     503: "workpiece coordinate system preset (G50.3) is not modelled",
     922: "workpiece coordinate system preset (G92.1) is not modelled",
-    121: "polar coordinate interpolation (G12.1) is not modelled",
-    131: "polar coordinate interpolation (G13.1) is not modelled",
-    1120: "polar coordinate interpolation (G112) is not modelled",
-    1130: "polar coordinate interpolation (G113) is not modelled",
     680: "mirror image for double turrets (G68) is not modelled",
     690: "mirror image for double turrets (G69) is not modelled",
     830: "the face drilling cycle (G83) of a turning centre's live tools is not modelled",
@@ -183,7 +180,13 @@ class FanucLatheInterpreter(FanucInterpreter):
     def fast_state_ok(self) -> bool:
         return False
 
+    #: Polar coordinate interpolation (G12.1), when on: see :mod:`nczones.gcode.fanuc.polar`.
+    polar_ip: PolarState | None = None
+
     def execute(self, block: Block) -> None:
+        if self.polar_ip is not None or mentions_polar(block):
+            polar_block(self, block)
+            return
         self._execute_general(block)
 
     def _plain(self, letters: str, values: tuple) -> bool:
