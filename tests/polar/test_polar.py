@@ -136,11 +136,12 @@ def test_incremental_words_and_system_b():
     assert a == b == [(F("22.3605"), F("26.565")), (F("22.3605"), F("63.435"))]
 
 
-def test_lines_moving_z_too_and_z_alone():
+def test_lines_moving_z_too_and_z_alone_and_a_dwell():
     m = machine()
-    segs = segments_text("G98\nG00 X40. Z2. C0.\nG12.1\nG01 Z-1. F100.\nX40. C10. Z-2.\nG13.1\n", m)
-    assert [s.kind for s in segs[1:]] == [SegmentKind.LINE, SegmentKind.POLAR]
-    assert segs[1].end == (F(20), F(199), F(0)) and segs[2].end[1] == F(198)
+    segs = segments_text("G98\nG00 X40. Z2. C0.\nG12.1\nG01 Z-1. F100.\nG04 X1.5\nX40. C10. Z-2.\nG13.1\n", m)
+    assert [s.kind for s in segs[1:]] == [SegmentKind.LINE, SegmentKind.DWELL, SegmentKind.POLAR]
+    assert segs[2].dwell_s == F("1.5")
+    assert segs[1].end == (F(20), F(199), F(0)) and segs[3].end[1] == F(198)
 
 
 @pytest.mark.parametrize("prog, code, line, col", [

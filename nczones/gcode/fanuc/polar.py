@@ -133,6 +133,9 @@ def polar_block(it: FanucLatheInterpreter, block: Block) -> None:
                             "mode with G13.1 first", w)
         if k in (10, 20, 30):
             g1 = k
+    if any(k == 40 for k, _ in gcodes):  # G04 X/U/P: a dwell, its X is seconds
+        it._execute_general(block)
+        return
     words = {w.letter: w for w in block.words if w.letter not in "GM"}
     if "T" in words:
         it.unknown("T", "a tool or tool offset change in polar coordinate interpolation mode moves the centre of "
