@@ -95,21 +95,22 @@ def developed_arc_positions(seg: Segment, pulses: tuple[Fraction, ...], p0: tupl
         cells[iz], cells[ic] = z, c
         row = tuple(cells)
         if row != last:
-            _append(rows, last, row)
+            append_steps(rows, last, row)
             last = row
     if last != p1:
-        _append(rows, last, p1)
+        append_steps(rows, last, p1)
     if not rows:
         return np.zeros((0, len(p0)), dtype=np.int64)
     return np.array(rows, dtype=np.int64)
 
 
-def _append(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
+def append_steps(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
+    """Append the move from pulse position ``a`` to ``b`` (at most two pulses apart) as single pulse steps."""
     if max(abs(x - y) for x, y in zip(a, b)) <= 1:
         rows.append(b)
         return
     if max(abs(x - y) for x, y in zip(a, b)) > 2:  # pragma: no cover - the invariant says at most 1
-        raise InvalidArgument(f"developed arc: a jump of more than two pulses between {a} and {b}")
+        raise InvalidArgument(f"a jump of more than two pulses between {a} and {b}")
     rows.extend(line_steps(a, b))
 
 

@@ -37,7 +37,8 @@ import numpy as np
 
 from ..errors import InvalidArgument
 from ..motion import Segment
-from .pulses import line_steps, round_pulse
+from .cylindrical import append_steps
+from .pulses import round_pulse
 
 __all__ = ["polar_positions", "polar_walk"]
 
@@ -152,20 +153,13 @@ def polar_positions(seg: Segment, pulses: tuple[Fraction, ...], p0: tuple[int, .
     for r in rows[keep].tolist():
         row = tuple(r)
         if row != last:
-            _append(out, last, row)
+            append_steps(out, last, row)
             last = row
     if last != p1:
-        _append(out, last, p1)
+        append_steps(out, last, p1)
     if not out:
         return np.zeros((0, len(p0)), dtype=np.int64)
     return np.array(out, dtype=np.int64)
-
-
-def _append(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
-    if max(abs(x - y) for x, y in zip(a, b)) <= 1:
-        rows.append(b)
-    else:
-        rows.extend(line_steps(a, b))
 
 
 def polar_walk(seg: Segment, pulses: tuple[Fraction, ...], p0: tuple[int, ...]) -> tuple[np.ndarray, float]:

@@ -35,7 +35,7 @@ from ..cylinder import DevelopedArc, Interval, cylinder_of, degree_length, devel
 from ..exact import format_decimal
 from ..motion import Segment, SegmentKind
 from . import exact as ex
-from .geometry import simple_in
+from .enclosed import box_depth, certify_box, enclosed_violation
 from .result import Outcome, Reason, Violation
 
 __all__ = ["check_cylindrical", "developed_note", "MAX_DEPTH", "BUDGET"]
@@ -155,51 +155,16 @@ class _ArcCheck:
         p, seg = self.p, self.seg
         z, _, c = self.point(f)
         lo, hi = self._dicts(z, c)
-        for zone in p.zones:
-            if ex.box_certainly_violates(p.allowed, zone, lo, hi, p.margin, seg.tool_length):
-                mid = {a: simple_in(lo[a], hi[a]) for a in seg.axes}
-                bad = p.allowed.violated_zones(mid, seg.tool_length, p.margin)
-                if zone not in bad:
-                    from ..errors import InternalError
-
-                    raise InternalError("certified developed-arc box centre does not violate")
-                return self._violation(f, mid, bad, proven_up_to)
-        return None
-
-    def _violation(self, f: Fraction, mid: dict[str, Fraction], bad: Any, proven_up_to: Fraction) -> Violation:
-        from ..errors import InternalError
-
-        p, seg = self.p, self.seg
-        zone = bad[0]
-        outside = ex.outside_point(p.allowed, zone, mid, p.margin, seg.tool_length)
-        if outside is None or zone not in p.allowed.violated_zones(outside, seg.tool_length):
-            raise InternalError(f"block {seg.block}: no point strictly outside inside the margin box")
-        # depth: a lower bound from certified points along the arc
-        depth = F0
+        got = certify_box(p, seg, lo, hi)
+        if got is None:
+            return None
+        mid, bad = got
+        depth = F0  # a lower bound from certified points along the arc
         for i in range(33):
-            g = Fraction(i, 32)
-            zz, _, cc = self.point(g)
-            lo, hi = self._dicts(zz, cc)
-            width = max(zz.width(), cc.width())
-            for zn in p.zones:
-                if ex.box_certainly_violates(p.allowed, zn, lo, hi, p.margin, seg.tool_length):
-                    pt = {a: simple_in(lo[a], hi[a]) for a in seg.axes}
-                    if zn in p.allowed.violated_zones(pt, seg.tool_length, p.margin):
-                        d = ex.point_depth(zn, p.allowed.seen_by(zn, pt, seg.tool_length), p.margin) - width
-                        depth = max(depth, d)
-        for zn in bad:
-            d = ex.point_depth(zn, p.allowed.seen_by(zn, mid, seg.tool_length), p.margin) - \
-                max(self.point(f)[0].width(), self.point(f)[2].width())
-            depth = max(depth, d)
-        width = max(self.point(f)[0].width(), self.point(f)[2].width())
+            zz, _, cc = self.point(Fraction(i, 32))
+            blo, bhi = self._dicts(zz, cc)
+            depth = max(depth, box_depth(p, seg, blo, bhi, max(zz.width(), cc.width())))
+        width = max(z.width(), c.width())
         note = (f"irrational path point (pi); reported point within {float(width):.1e} of it, the whole "
                 f"enclosure violates; {developed_note(seg, mid)}")
-        return Violation(
-            block=seg.block, span=seg.span, zone=zone.name,
-            point=tuple((a, outside[a]) for a in seg.axes),
-            path_point=tuple((a, mid[a]) for a in seg.axes),
-            parameter=f, parameter_exact=False,
-            first_exit=tuple((a, mid[a]) for a in seg.axes), first_exit_parameter=f, first_exit_exact=False,
-            depth=max(depth, F0), depth_exact=False, engine="exact", segment_kind="developed_arc",
-            derived=seg.derived, params=(), zones=tuple(z.name for z in bad), note=note, on_path=False,
-        )
+        return enclosed_violation(p, seg, f, mid, bad, width, depth, "developed_arc", note)

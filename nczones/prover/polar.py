@@ -49,7 +49,7 @@ from ..polar import (
     radius_range,
 )
 from . import exact as ex
-from .geometry import simple_in
+from .enclosed import box_depth, certify_box, enclosed_violation
 from .result import Outcome, Reason, Violation
 
 __all__ = ["check_polar", "polar_note", "MAX_DEPTH", "BUDGET"]
@@ -179,47 +179,15 @@ class _PolarCheck:
         if got is None:
             return None
         lo, hi, width = got
-        for zone in p.zones:
-            if ex.box_certainly_violates(p.allowed, zone, lo, hi, p.margin, seg.tool_length):
-                mid = {a: simple_in(lo[a], hi[a]) for a in seg.axes}
-                bad = p.allowed.violated_zones(mid, seg.tool_length, p.margin)
-                if zone not in bad:
-                    from ..errors import InternalError
-
-                    raise InternalError("certified polar box centre does not violate")
-                return self._violation(f, mid, bad, width)
-        return None
-
-    def _violation(self, f: Fraction, mid: dict[str, Fraction], bad: Any, width: Fraction) -> Violation:
-        from ..errors import InternalError
-
-        p, seg = self.p, self.seg
-        zone = bad[0]
-        outside = ex.outside_point(p.allowed, zone, mid, p.margin, seg.tool_length)
-        if outside is None or zone not in p.allowed.violated_zones(outside, seg.tool_length):
-            raise InternalError(f"block {seg.block}: no point strictly outside inside the margin box")
-        depth = F0
-        for zn in bad:  # a lower bound: the certified point's depth less its enclosure's width
-            depth = max(depth, ex.point_depth(zn, p.allowed.seen_by(zn, mid, seg.tool_length), p.margin) - width)
-        for g, th in sorted(self.theta.items()):  # and the points already followed along the path
-            got = self._point_box(g, th.mid())
-            if got is None:
-                continue
-            lo, hi, w = got
-            for zn in p.zones:
-                if ex.box_certainly_violates(p.allowed, zn, lo, hi, p.margin, seg.tool_length):
-                    pt = {a: simple_in(lo[a], hi[a]) for a in seg.axes}
-                    if zn in p.allowed.violated_zones(pt, seg.tool_length, p.margin):
-                        depth = max(depth, ex.point_depth(zn, p.allowed.seen_by(zn, pt, seg.tool_length),
-                                                          p.margin) - w)
+        hit = certify_box(p, seg, lo, hi)
+        if hit is None:
+            return None
+        mid, bad = hit
+        depth = F0  # a lower bound: the points already followed along the path
+        for g, th in sorted(self.theta.items()):
+            pb = self._point_box(g, th.mid())
+            if pb is not None:
+                depth = max(depth, box_depth(p, seg, pb[0], pb[1], pb[2]))
         note = (f"irrational path point (square root, arc tangent); reported point within {float(width):.1e} of "
                 f"it, the whole enclosure violates; {polar_note(seg, f)}")
-        return Violation(
-            block=seg.block, span=seg.span, zone=zone.name,
-            point=tuple((a, outside[a]) for a in seg.axes),
-            path_point=tuple((a, mid[a]) for a in seg.axes),
-            parameter=f, parameter_exact=False,
-            first_exit=tuple((a, mid[a]) for a in seg.axes), first_exit_parameter=f, first_exit_exact=False,
-            depth=max(depth, F0), depth_exact=False, engine="exact", segment_kind="polar",
-            derived=seg.derived, params=(), zones=tuple(z.name for z in bad), note=note, on_path=False,
-        )
+        return enclosed_violation(p, seg, f, mid, bad, width, depth, "polar", note)
