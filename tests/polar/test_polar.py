@@ -18,7 +18,14 @@ from nczones.errors import GcodeError
 from nczones.gcode import interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
-from nczones.polar import CentreCrossing, angle_range, polar_move, polar_move_of, radius_range, walk_angle
+from nczones.polar import (
+    CentreCrossing,
+    angle_range,
+    polar_move,
+    polar_move_of,
+    radius_range,
+    walk_angle,
+)
 from nczones.prover import verify_text
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -126,6 +133,11 @@ def test_clockwise_path_turns_c_negative_and_offsets_move_the_centre():
     # C-10.: (10, -10): radius sqrt(200) = 14.142136 -> 14.142; angle -45 -> machine C -40
     # U-20. (diameter): x = 10 - 10 = 0: (0, -10): radius 10, angle -90 -> machine C -85
     assert polar_ends(segs) == [(F(80) + F("14.142"), F(-40)), (F(90), F(-85))]
+
+
+def test_a_motion_with_m30_moves_first():
+    segs = segments_text("G98\nG00 X40. Z2. C0.\nG12.1\nG01 C10. F100. M30\nG01 C20.\n", machine())
+    assert polar_ends(segs) == [(F("22.3605"), F("26.565"))]
 
 
 def test_incremental_words_and_system_b():

@@ -40,7 +40,7 @@ from ...cylinder import Interval
 from ...motion import SegmentKind
 from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ..blocks import Block, Word
-from ..interpreter import AXIS_LETTERS, fmt_number, gkey, gname
+from ..interpreter import AXIS_LETTERS, StopProgram, fmt_number, gkey, gname
 
 if TYPE_CHECKING:
     from .lathe import FanucLatheInterpreter
@@ -160,11 +160,16 @@ def polar_block(it: FanucLatheInterpreter, block: Block) -> None:
                         "interpolation mode" + (" (arcs take I, J or R)" if letter in "IJKR" else ""), w)
     # the block's modes, feed and M codes as elsewhere, without its motion
     rest = tuple(w for w in block.words if not (w in moving or w.letter in "IJR"))
-    it._execute_general(Block(rest, block.span, block.index, block.number, block.messages))
-    if it.unsupported:
-        return
-    it.motion = motion
-    _move(it, st, block, words, motion)
+    stop = None
+    try:
+        it._execute_general(Block(rest, block.span, block.index, block.number, block.messages))
+    except StopProgram as e:  # M02/M30 in the block: the motion first
+        stop = e
+    if not it.unsupported:
+        it.motion = motion
+        _move(it, st, block, words, motion)
+    if stop is not None:
+        raise stop
 
 
 def _switch(it: FanucLatheInterpreter, block: Block) -> None:
