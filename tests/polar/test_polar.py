@@ -353,6 +353,20 @@ def test_passing_near_the_centre_swings_c_into_a_zone_and_the_counterexample_is_
     assert not Controller(m).run(segments_text(NEAR.format(y="2."), m)).alarms
 
 
+def test_tip_zones_see_the_tool_tip_through_a_lathe_tool_offset():
+    """With tool offset X80 the centre of rotation is machine X80; a tip zone sees machine X - 80."""
+    boss = clamp("0", "1", "80", "100", "boss").replace('forbid = true\n', 'forbid = true\npoint = "tip"\n')
+    m = machine(boss, extra='[tool_offsets]\n1 = { X = "80", Z = "0" }\n')
+    prog = "G98 T0101\n" + NEAR.format(y="0.5").split("\n", 1)[1]
+    r = verify_text(prog, m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "boss"
+    assert F(80) <= dict(r.violations[0].point)["X"] <= 81
+    from nczones.controller import Controller
+
+    assert Controller(m).run(segments_text(prog, m)).alarms[0].line == 5
+    assert verify_text("G98 T0101\n" + NEAR.format(y="2.").split("\n", 1)[1], m).verdict.label == "safe"
+
+
 def test_margin_and_parameter_ranges_compose():
     """A margin shrinks the room exactly; ranged work offsets make the mode unknown with the reason."""
     m = machine(clamp("28.5", "40", "100", "170"))
