@@ -55,6 +55,9 @@ __all__ = [
     "LINEAR_AXIS_OF",
     "Interval",
     "pi_interval",
+    "atan_point",
+    "asin_interval",
+    "sin_cos_interval",
     "degree_length",
     "DevelopedArc",
     "developed_arc",
@@ -209,24 +212,35 @@ def pi_interval() -> Interval:
     return 16 * _atan_small(Fraction(1, 5)) - 4 * _atan_small(Fraction(1, 239))
 
 
-def _atan_point(x: Fraction) -> Interval:
+def atan_point(x: Fraction) -> Interval:
+    """Enclosure of ``atan(x)`` (radians) for a rational ``x`` (series with remainder bounds).
+
+    >>> a = atan_point(Fraction(1))
+    >>> (4 * a).lo <= pi_interval().hi and pi_interval().lo <= (4 * a).hi
+    True
+    """
     if x < 0:
-        return -_atan_point(-x)
+        return -atan_point(-x)
     pi = pi_interval()
     if x > 1:
-        return pi / 2 - _atan_point(1 / x)
+        return pi / 2 - atan_point(1 / x)
     if x > Fraction(1, 2):
-        return pi / 4 + _atan_point((x - 1) / (x + 1))
+        return pi / 4 + atan_point((x - 1) / (x + 1))
     return _atan_small(x)
 
 
 def _atan(iv: Interval) -> Interval:
     """atan is increasing: the enclosure of the ends."""
-    return Interval(_atan_point(iv.lo).lo, _atan_point(iv.hi).hi)
+    return Interval(atan_point(iv.lo).lo, atan_point(iv.hi).hi)
 
 
-def _asin(iv: Interval) -> Interval:
-    """asin on ``[0, 1]`` (values above 1 are clipped to 1)."""
+def asin_interval(iv: Interval) -> Interval:
+    """Enclosure of ``asin`` over ``iv`` within ``[0, 1]`` (values above 1 are clipped to 1; radians).
+
+    >>> a = asin_interval(Interval.of(Fraction(1, 2)))
+    >>> (6 * a).lo <= pi_interval().hi and pi_interval().lo <= (6 * a).hi
+    True
+    """
     half_pi = pi_interval() / 2
 
     def at(x: Fraction, upper: bool) -> Fraction:
@@ -270,8 +284,14 @@ def _sin_cos_point(x: Fraction) -> tuple[Interval, Interval]:
     return Interval(_down(s - slack), round_up_scaled(s + slack)), Interval(_down(c - slack), round_up_scaled(c + slack))
 
 
-def _sin_cos(iv: Interval) -> tuple[Interval, Interval]:
-    """sin and cos over an interval: the value at the middle widened by the half width (Lipschitz 1)."""
+def sin_cos_interval(iv: Interval) -> tuple[Interval, Interval]:
+    """Enclosures of sin and cos over ``iv`` (radians, ``|x| <= 8``): the value at the middle widened by the half
+    width (Lipschitz 1).
+
+    >>> s, c = sin_cos_interval(pi_interval() / 6)
+    >>> s.contains(Fraction(1, 2)), abs(float(c.mid()) - 3 ** 0.5 / 2) < 1e-15, s.width() < Fraction(1, 10**50)
+    (True, True, True)
+    """
     m = iv.mid()
     m = _down(m)
     s, c = _sin_cos_point(m)
@@ -334,7 +354,7 @@ class DevelopedArc:
         True
         """
         phi = self.sweep * Fraction(f)
-        sn, cs = _sin_cos(phi)
+        sn, cs = sin_cos_interval(phi)
         if self.clockwise:
             sn = -sn
         ux, uy = self.u
@@ -407,7 +427,7 @@ def developed_arc(z0: Fraction, c0: Fraction, z1: Fraction, c1: Fraction, cylind
         sweep = pi_interval()
     else:
         x = half_chord / Interval.of(abs(r))
-        minor = 2 * _asin(Interval(max(x.lo, F0), x.hi))
+        minor = 2 * asin_interval(Interval(max(x.lo, F0), x.hi))
         sweep = minor if r > 0 else 2 * pi_interval() - minor
     return DevelopedArc(z0, c0, z1, c1, rc, r, clockwise, k, d, centre, u, rho, sweep, half_chord, half_circle)
 

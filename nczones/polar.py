@@ -41,7 +41,14 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
-from .cylinder import Interval, _asin, _atan_point, _sin_cos, pi_interval, round_up_scaled
+from .cylinder import (
+    Interval,
+    asin_interval,
+    atan_point,
+    pi_interval,
+    round_up_scaled,
+    sin_cos_interval,
+)
 
 if TYPE_CHECKING:
     from .motion import Segment
@@ -88,10 +95,10 @@ def atan2_rad(x: Fraction, y: Fraction) -> Interval:
         raise CentreCrossing("the angle of the centre of rotation is undefined")
     pi = pi_interval()
     if x > 0:
-        return _atan_point(y / x)
+        return atan_point(y / x)
     if x == 0:
         return pi / 2 if y > 0 else -(pi / 2)
-    a = _atan_point(y / x)
+    a = atan_point(y / x)
     return a + pi if y >= 0 else a - pi
 
 
@@ -189,7 +196,7 @@ class PlaneArc:
 
     def point(self, f: Fraction) -> IPoint:
         phi = self.sweep * Fraction(f)
-        sn, cs = _sin_cos(phi)
+        sn, cs = sin_cos_interval(phi)
         if self.clockwise:
             sn = -sn
         ux, uy = self.u
@@ -269,7 +276,7 @@ def plane_arc(p0: Point, p1: Point, clockwise: bool, *, centre: Point | None = N
         sweep = pi_interval()
     else:
         s = half_chord / Interval.of(abs(r))
-        minor = 2 * _asin(Interval(max(s.lo, F0), s.hi))
+        minor = 2 * asin_interval(Interval(max(s.lo, F0), s.hi))
         sweep = minor if r > 0 else 2 * pi_interval() - minor
     return PlaneArc(c, u, rho_iv, Interval.of(1), sweep, clockwise, rho_iv.hi)
 

@@ -30,7 +30,6 @@ from nczones.prover import verify_text
 
 ROOT = Path(__file__).resolve().parents[2]
 EX = ROOT / "specs" / "examples"
-mpmath.mp.dps = 60
 
 
 def machine(zones: str = "", pulse: str = "0.001", extra: str = "", offsets: str = 'G54 = { X = "0", Z = "200", C = "0" }'):
@@ -257,6 +256,11 @@ def test_enclosures_contain_the_60_digit_path(x0, y0, x1, y1, ci, cj, arc, cw, t
     Arcs end on their circle turned by the rational rotation of half-angle tangent t/10 (and, for a spiral,
     moved out by spiral/100 of the radius).
     """
+    with mpmath.workdps(60):
+        _enclosures_contain(x0, y0, x1, y1, ci, cj, arc, cw, t, spiral, fs)
+
+
+def _enclosures_contain(x0, y0, x1, y1, ci, cj, arc, cw, t, spiral, fs):
     centre = (x0 + ci, y0 + cj) if arc else None
     if arc:
         assume((ci, cj) != (0, 0))
