@@ -10,7 +10,7 @@ pulse on one axis.
 Arc rates are printed cold and warm separately (CPU time): *cold* is the first
 arc of a process, measured both in this process (after the line runs) and in
 ``--processes`` fresh processes that run nothing else (fresh memory pages and
-first calls cost there); *warm* is the fastest of the ``--repeat`` runs after
+first calls cost there; one OpenBLAS thread, as the ``nczones`` command sets); *warm* is the fastest of the ``--repeat`` runs after
 the first in this process.  The arc target holds only if every cold and warm
 figure meets it.
 
@@ -89,6 +89,10 @@ def _fresh_processes(n, radius):
     """Axis-pulses/s of the helices as the first arcs of ``n`` fresh processes (each prints its own CPU time)."""
     rates = []
     env = dict(os.environ, PYTHONHASHSEED="0")
+    if "OPENBLAS_NUM_THREADS" not in env and "OMP_NUM_THREADS" not in env:
+        # as the nczones command sets it: OpenBLAS's idle threads otherwise spin for about 0.05 s of CPU
+        # after numpy loads, which the child's process CPU time would count as the arc's
+        env["OPENBLAS_NUM_THREADS"] = "1"
     for _ in range(n):
         out = subprocess.run([sys.executable, __file__, "--first-arc", str(radius)], check=True, env=env,
                              capture_output=True, text=True).stdout
