@@ -39,6 +39,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 from .cylinder import (
@@ -102,8 +103,12 @@ def atan2_rad(x: Fraction, y: Fraction) -> Interval:
     return a + pi if y >= 0 else a - pi
 
 
+@lru_cache(maxsize=1 << 16)
 def atan2_deg(x: Fraction, y: Fraction) -> Interval:
     """``atan2(y, x)`` in degrees, in ``(-180, 180]``, enclosed.
+
+    Cached: the interpreter (following the angle) and the prover (enclosing it) meet the same rational
+    points, box corners and piece ends.
 
     >>> a = atan2_deg(Fraction(1), Fraction(1))
     >>> a.lo <= 45 <= a.hi, a.width() < Fraction(1, 10**50)
@@ -138,10 +143,9 @@ def angle_range(bx: Interval, by: Interval, near: Fraction) -> Interval | None:
     if bx.lo <= 0 <= bx.hi and by.lo <= 0 <= by.hi:
         return None
     out: Interval | None = None
-    for x in (bx.lo, bx.hi):
-        for y in (by.lo, by.hi):
-            a = _unwrap(atan2_deg(x, y), near)
-            out = a if out is None else out.hull(a)
+    for x, y in {(x, y) for x in (bx.lo, bx.hi) for y in (by.lo, by.hi)}:
+        a = _unwrap(atan2_deg(x, y), near)
+        out = a if out is None else out.hull(a)
     assert out is not None  # four corners
     if out.width() >= 179:
         return None

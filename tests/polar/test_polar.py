@@ -311,6 +311,20 @@ def _enclosures_contain(x0, y0, x1, y1, ci, cj, arc, cw, t, spiral, fs):
     event("arc" if arc else "line")
 
 
+@settings(max_examples=200, deadline=None, derandomize=True)
+@given(num=st.integers(-10**30, 10**30), den=st.integers(1, 10**30))
+def test_arc_tangent_enclosure_contains_the_80_digit_value(num, den):
+    """The fixed-point series of nczones.cylinder (its rounding errors counted) encloses atan within 1e-55."""
+    from nczones.cylinder import atan_point, pi_interval
+
+    with mpmath.workdps(80):
+        a = atan_point(F(num, den))
+        r = mpmath.atan(mpmath.mpf(num) / den)
+        assert a.lo <= r <= a.hi and a.width() < F(1, 10**55)
+        p = pi_interval()
+        assert p.lo <= mpmath.pi <= p.hi
+
+
 def test_walk_refuses_the_centre():
     with pytest.raises(CentreCrossing):
         walk_angle(polar_move((F(10), F(0)), (F(-10), F(0)), 0, F(0), F(0)))
