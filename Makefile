@@ -36,6 +36,9 @@ demo: $(RUNTIME)
 	$(BIN)/nczones verify specs/examples/programs/g71_clear.nc --machine specs/machines/fanuc_lathe.toml
 	$(BIN)/nczones verify specs/examples/programs/g71_jaws.nc --machine specs/machines/fanuc_lathe.toml; \
 	  test $$? -eq 1  # intentionally unsafe: the G71 cycle's third roughing pass runs into the chuck jaws
+	$(BIN)/nczones verify specs/examples/programs/polar_face.nc --machine specs/examples/machines/turning_centre.toml
+	$(BIN)/nczones verify specs/examples/programs/polar_face.nc --machine specs/examples/machines/turning_centre_clamp_near.toml; \
+	  test $$? -eq 1  # intentionally unsafe: in G12.1 the profile's corner near C135 reaches the clamp
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)
