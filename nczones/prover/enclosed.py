@@ -68,4 +68,5 @@ def enclosed_violation(p: Any, seg: Segment, f: Fraction, mid: dict[str, Fractio
         path_point=at, parameter=f, parameter_exact=False, first_exit=at, first_exit_parameter=f,
         first_exit_exact=False, depth=max(depth, F0), depth_exact=False, engine="exact", segment_kind=kind,
         derived=seg.derived, params=(), zones=tuple(z.name for z in bad), note=note, on_path=False,
+        exit_located=False,
     )

@@ -45,7 +45,10 @@ def render_text(result: Result, program: str = "") -> str:
         if v.source:
             out.append(f"    {shorten(v.source)}")
         fe = ("" if v.first_exit_exact else "~") + format_decimal(v.first_exit_parameter, 6)
-        out.append(f"    first exit at {_pt(v.first_exit)} (parameter {fe}); engine {v.engine}")
+        if v.exit_located:
+            out.append(f"    first exit at {_pt(v.first_exit)} (parameter {fe}); engine {v.engine}")
+        else:
+            out.append(f"    first exit not located (the point is outside; the path may leave earlier); engine {v.engine}")
         if result.margin:
             out.append(f"    path point {_pt(v.path_point)} has less than the margin {_d(result.margin)}")
         if v.params:
@@ -114,6 +117,7 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
             "first_exit_point_exact": _exact_point(v.first_exit),
             "first_exit_parameter": format_decimal(v.first_exit_parameter, 12),
             "first_exit_exact": v.first_exit_exact,
+            "first_exit_located": v.exit_located,
             "depth": _d(v.depth),
             "depth_exact": v.depth_exact,
             "segment_kind": v.segment_kind,

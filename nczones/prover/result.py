@@ -121,6 +121,9 @@ class Violation:
     leg: str = ""
     #: the switch positions the violation was found with when the proof covered several (``(("block_delete", "on"),)``)
     switches: tuple[tuple[str, str], ...] = ()
+    #: False when :attr:`first_exit` only repeats the witness of an enclosed irrational path (developed arcs,
+    #: polar moves, splines): outside, but not necessarily where the path first leaves the allowed set
+    exit_located: bool = True
 
     @property
     def line(self) -> int | None:

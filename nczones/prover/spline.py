@@ -184,4 +184,5 @@ def _violation(prover: Any, seg: Segment, curve: Nurbs, found: Any) -> Violation
         depth=depth, depth_exact=False, engine="z3", segment_kind="spline",
         derived=seg.derived, zones=tuple(z.name for z in bad),
         note="spline: a curve point outside (not necessarily the first exit; depth is at that point, a lower bound)",
+        exit_located=False,
     )

@@ -123,7 +123,8 @@ def _result_entries(result: Result, base_abs: tuple[str, str]) -> list[dict]:
         what = v.segment_kind + (f" ({v.derived})" if v.derived else "")
         depth = ("at least " if not v.depth_exact else "") + format_decimal(v.depth)
         text = (f"{what} leaves the allowed set (zone \"{v.zone}\"), {depth} mm deep: the point "
-                f"{_pt(v.point)} is outside; first exit at {_pt(v.first_exit)}")
+                f"{_pt(v.point)} is outside; " + (f"first exit at {_pt(v.first_exit)}" if v.exit_located else
+                                                  "first exit not located (the path may leave the allowed set earlier)"))
         if v.params:
             text += "; with parameters " + ", ".join(f"{n}={format_decimal(x)}" for n, x in v.params)
         for switch, position in v.switches:

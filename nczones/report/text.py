@@ -120,8 +120,12 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
             out.append(f"    {paint('caret', caret)}")
         out.append(f"    point {_pt(v.point)} is outside the allowed set "
                    f"(segment parameter {_par(v.parameter, v.parameter_exact)})")
-        out.append(f"    first exit at {_pt(v.first_exit)} "
-                   f"(segment parameter {_par(v.first_exit_parameter, v.first_exit_exact)}); engine {v.engine}")
+        if v.exit_located:
+            out.append(f"    first exit at {_pt(v.first_exit)} "
+                       f"(segment parameter {_par(v.first_exit_parameter, v.first_exit_exact)}); engine {v.engine}")
+        else:
+            out.append(f"    first exit not located: the point above is outside, the path may leave the allowed set "
+                       f"earlier; engine {v.engine}")
         others = [z for z in v.zones if z != v.zone]
         if others:
             out.append("    also outside: " + ", ".join(others))

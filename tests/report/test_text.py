@@ -76,3 +76,33 @@ def test_cli_text_is_plain_when_piped():
     assert r.stdout.startswith("programs/notch_dip.ngc:5:1: violation[wheel area]: line leaves the allowed set")
     assert "\x1b[" not in r.stdout and "\r" not in r.stderr  # no colour, no progress bar on a pipe
     assert (ROOT / "tests" / "golden" / "report" / "unsafe_notch_dip.txt").exists()
+
+
+def test_a_witness_on_an_enclosed_path_is_not_called_the_first_exit():
+    """A polar move's counterexample is a certified point, not a located first exit: the text, JSON and
+    SARIF reports say so, while an exactly located exit keeps its "first exit at" line."""
+    import json
+
+    import jsonschema
+
+    from nczones.machine import load_machine
+    from nczones.prover import verify
+    from nczones.prover.render import to_json_dict
+    from nczones.report.sarif import render_sarif
+
+    polar = verify(str(EX / "programs/polar_face.nc"),
+                   load_machine(EX / "machines/turning_centre_clamp_near.toml"), file="polar_face.nc")
+    exact, _ = run_example("programs/notch_dip.ngc", "grinder.toml")
+    assert polar.verdict.label == "unsafe" and exact.verdict.label == "unsafe"
+    v, w = polar.violations[0], exact.violations[0]
+    assert not v.exit_located and w.exit_located and w.first_exit_exact
+    text = render_text(polar, deterministic=True)
+    assert "first exit not located" in text and "first exit at" not in text
+    assert "first exit at X200 Y130" in render_text(exact, deterministic=True)
+    schema = json.loads((ROOT / "specs" / "report.schema.json").read_text())
+    for result, located in ((polar, False), (exact, True)):
+        doc = to_json_dict(result)
+        jsonschema.validate(doc, schema)
+        assert {x["first_exit_located"] for x in doc["violations"]} == {located}
+    sarif = render_sarif([polar], base=ROOT)
+    assert "first exit not located" in sarif and "first exit at" not in sarif
