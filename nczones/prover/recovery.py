@@ -71,6 +71,14 @@ from .smt import add, mul, or_all, q, sub, zone_violation
 
 __all__ = ["RecoveryOutcome", "verify_recovery"]
 
+#: Feed motions a tool can break in whose break points the recovery proof does not place: the recovery
+#: from them is ``unknown`` (RC201), never assumed (they are not LINE or ARC, see ``nczones.recovery.is_cutting``).
+_UNMODELLED_FEEDS = {
+    SegmentKind.DEVELOPED_ARC: "a developed arc in cylindrical interpolation (G07.1)",
+    SegmentKind.SPLINE: "a spline (G5, G5.1, G5.2, G6.2)",
+    SegmentKind.POLAR: "a move in polar coordinate interpolation (G12.1)",
+}
+
 F0, F1 = Fraction(0), Fraction(1)
 
 
@@ -253,6 +261,11 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
     for i, seg in enumerate(segs):
         if budget_spent:
             break
+        if seg.kind in _UNMODELLED_FEEDS and len(violations) < max_violations:
+            reasons.append(Reason(f"tool-break recovery: a break during {_UNMODELLED_FEEDS[seg.kind]} is not "
+                                  "modelled (unsupported); the recovery from this motion is not proved",
+                                  seg.span, seg.block, "RC201"))
+            continue
         if not is_cutting(seg) or len(violations) >= max_violations:
             continue
         stats["recovery_motions"] += 1

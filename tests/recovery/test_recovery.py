@@ -1,5 +1,6 @@
 """Tool-break recovery (issue 9): machine section, controller, prover, and their agreement."""
 
+from dataclasses import replace
 from fractions import Fraction as F
 from pathlib import Path
 
@@ -13,6 +14,7 @@ from nczones.controller.recovery import record_pulses
 from nczones.errors import MachineFileError
 from nczones.gcode import interpret, interpret_text
 from nczones.machine import load_machine, parse_machine
+from nczones.motion import SegmentKind, segments_of
 from nczones.prover import verify, verify_text
 from nczones.prover.recovery import verify_recovery
 from nczones.recovery import RecoveryVariant, motion_sequences, recovery_legs, tool_change_config
@@ -256,3 +258,51 @@ def test_recovery_under_parameter_ranges_is_never_called_safe():
     ranged = verify_text(program, machine, recovery="start", params=["G54.X=-0.001..0.001"])
     assert ranged.verdict.label != "safe"
     assert any(r.code == "RC204" for r in ranged.reasons)
+
+
+SPLINE_PROG = "G21 G90 G17 G54\nG43 H1\nG0 X100 Y100 Z110\nG5.1 X200 Y100 I50 J50 F600\nG0 Z270\n"
+TURNING_TOOL_CHANGE = """[tool_lengths]
+H1 = "0"
+
+[tool_change]
+position = { X = "200", Z = "600", C = "0" }
+retract_axis = "Z"
+clearance = "500"
+approach_distance = "5"
+approach_feed = "200"
+variant = "start"
+length_register = "H1"
+
+"""
+
+
+def test_a_break_in_a_feed_motion_recovery_does_not_place_is_never_called_safe():
+    """A tool breaks in any feed motion: splines and polar moves (whose break points are not placed) make the
+    recovery verdict unknown (RC201) instead of being skipped as if no tool could break there."""
+    m = load_machine(HIGH)
+    assert verify_text(SPLINE_PROG, m).verdict.label == "safe"
+    r = verify_text(SPLINE_PROG, m, recovery="start")
+    assert r.verdict.label == "unknown"
+    assert [x.code for x in r.reasons] == ["RC201"] and "spline" in r.reasons[0].message
+
+    text = (EX / "machines" / "turning_centre.toml").read_text().replace("[[zones]]", TURNING_TOOL_CHANGE + "[[zones]]", 1)
+    lathe = parse_machine(text, "turning_centre_tool_change.toml")
+    prog = (EX / "programs" / "polar_face.nc").read_text()
+    assert verify_text(prog, lathe).verdict.label == "safe"
+    r = verify_text(prog, lathe, recovery="start")
+    assert r.verdict.label == "unknown"
+    assert r.reasons and {x.code for x in r.reasons} == {"RC201"}
+    assert all("polar coordinate interpolation" in x.message for x in r.reasons)
+
+
+@pytest.mark.parametrize("kind", [k for k in SegmentKind
+                                  if k not in (SegmentKind.LINE, SegmentKind.ARC, SegmentKind.RAPID,
+                                               SegmentKind.DWELL)])
+def test_every_other_feed_kind_is_unknown_for_recovery(kind):
+    """Every segment kind that is a feed motion but not LINE or ARC (a kind added later included) gives RC201."""
+    m = load_machine(HIGH)
+    segs = list(segments_of(interpret_text(SPLINE_PROG.replace("G5.1 X200 Y100 I50 J50", "G1 X200 Y100"), m)))
+    feed = next(i for i, s in enumerate(segs) if s.kind is SegmentKind.LINE)
+    segs[feed] = replace(segs[feed], kind=kind)
+    out = verify_recovery(segs, m)
+    assert [r.code for r in out.reasons] == ["RC201"] and not out.violations
