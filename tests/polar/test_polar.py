@@ -500,3 +500,18 @@ def test_cli_verify_and_simulate_the_example():
     assert "polar interpolation plane" in bad.stdout
     sim = cli("simulate", prog, "--machine", "specs/examples/machines/turning_centre_clamp_near.toml")
     assert "zone \"clamp\" at line 8" in sim.stdout, sim.stdout + sim.stderr
+
+
+@pytest.mark.parametrize("var,unknown", [("#5003", True), ("#5023", True), ("#5043", True), ("#5001", True),
+                                         ("#5002", False), ("#5022", False)])
+def test_reading_a_polar_axis_position_in_the_mode_is_unknown(var, unknown):
+    """State the program reads composes with the mode: X and C positions are not modelled inside G12.1 (plane
+    or machine coordinate?), so a read is unknown; Z reads as everywhere, and after G13.1 C reads again."""
+    m = parse_machine((EX / "machines" / "turning_centre.toml").read_text())
+    prog = (f"G21 G98 G54\nG00 X40. Z2. C0.\nG01 Z-1. F200.\nG12.1\nG01 X40. C10. F100.\n#100={var}\nG13.1\n"
+            "G00 Z[10.+#100]\nM30\n")
+    r = verify_text(prog, m)
+    assert (r.verdict.label == "unknown") is unknown
+    assert any(f"{var}: a position" in x.message for x in r.reasons) is unknown
+    after = verify_text("G21 G98 G54\nG00 X40. Z2. C0.\nG12.1\nG01 X40. C10. F100.\nG13.1\n#100=#5003\nM30\n", m)
+    assert after.verdict.label == "safe"

@@ -1200,6 +1200,11 @@ def _lathe_variable(it: FanucLatheInterpreter, n: int) -> None:
     if 2000 <= n <= 2999 or 10000 <= n <= 19999:
         raise SystemVariableUnknown(f"#{n}", f"#{n}: the tool offset variables of a lathe (X, Z, R, T wear and "
                                     "geometry) are not modelled")
+    axis = (n - 5001) % 20
+    if it.polar_ip is not None and 5001 <= n <= 5100 and axis < len(it.axes) and it.axes[axis] in ("X", "C"):
+        raise SystemVariableUnknown(f"#{n}", f"#{n}: a position of {it.axes[axis]} in polar coordinate "
+                                    "interpolation (G12.1) is not modelled (the control may give the plane's "
+                                    "coordinate or the machine's)")
     if 5001 <= n <= 5100 or 5201 <= n <= 5340:
         i = (n - 5001) % 20 if n <= 5100 else (n - 5201) % 20
         if i in it.diameter:
