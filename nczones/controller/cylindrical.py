@@ -29,7 +29,9 @@ distribution).  Tests check both against the enclosed exact path.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from fractions import Fraction
+from itertools import chain
 
 import numpy as np
 
@@ -87,31 +89,35 @@ def developed_arc_positions(seg: Segment, pulses: tuple[Fraction, ...], p0: tupl
     pts = [sp] + list(walk.points)
     zq = [(2 * zf + FINE) // (2 * FINE) for zf, _ in pts]
     cq = [(2 * (FINE * num + sf * den) + FINE * den) // (2 * FINE * den) for _, sf in pts]
-    rows: list[tuple[int, ...]] = []
-    last = tuple(p0)
     base = list(p0)
-    for z, c in zip(zq, cq):
-        cells = list(base)
-        cells[iz], cells[ic] = z, c
-        row = tuple(cells)
-        if row != last:
-            append_steps(rows, last, row)
-            last = row
-    if last != p1:
-        append_steps(rows, last, p1)
-    if not rows:
+
+    def cells(z: int, c: int) -> tuple[int, ...]:
+        row = list(base)
+        row[iz], row[ic] = z, c
+        return tuple(row)
+
+    return join_steps((cells(z, c) for z, c in zip(zq, cq)), tuple(p0), p1)
+
+
+def join_steps(rows: Iterable[tuple[int, ...]], p0: tuple[int, ...], p1: tuple[int, ...]) -> np.ndarray:
+    """The single pulse steps from ``p0`` through ``rows`` (pulse positions at most two pulses apart, repeats
+    allowed) to ``p1``, as an ``(n, axes)`` int64 array without ``p0``."""
+    out: list[tuple[int, ...]] = []
+    last = p0
+    for row in chain(rows, (p1,)):
+        if row == last:
+            continue
+        jump = max(abs(x - y) for x, y in zip(last, row))
+        if jump > 2:  # pragma: no cover - the walks' invariant says at most 1
+            raise InvalidArgument(f"a jump of more than two pulses between {last} and {row}")
+        if jump <= 1:
+            out.append(row)
+        else:
+            out.extend(line_steps(last, row))
+        last = row
+    if not out:
         return np.zeros((0, len(p0)), dtype=np.int64)
-    return np.array(rows, dtype=np.int64)
-
-
-def append_steps(rows: list, a: tuple[int, ...], b: tuple[int, ...]) -> None:
-    """Append the move from pulse position ``a`` to ``b`` (at most two pulses apart) as single pulse steps."""
-    if max(abs(x - y) for x, y in zip(a, b)) <= 1:
-        rows.append(b)
-        return
-    if max(abs(x - y) for x, y in zip(a, b)) > 2:  # pragma: no cover - the invariant says at most 1
-        raise InvalidArgument(f"a jump of more than two pulses between {a} and {b}")
-    rows.extend(line_steps(a, b))
+    return np.array(out, dtype=np.int64)
 
 
 def developed_arc_walk(seg: Segment, pulse: tuple[Fraction, ...], p0: tuple[int, ...]) -> tuple[np.ndarray, float]:

@@ -37,7 +37,7 @@ import numpy as np
 
 from ..errors import InvalidArgument
 from ..motion import Segment
-from .cylindrical import append_steps
+from .cylindrical import join_steps
 from .pulses import round_pulse
 
 __all__ = ["polar_positions", "polar_walk"]
@@ -146,20 +146,9 @@ def polar_positions(seg: Segment, pulses: tuple[Fraction, ...], p0: tuple[int, .
     else:  # pragma: no cover - the interpreter refuses paths through the centre
         raise InvalidArgument(f"block {seg.block}: polar move too close to the centre of rotation to interpolate")
     p1 = tuple(round_pulse(v, q) for v, q in zip(seg.end, pulses))
-    out: list[tuple[int, ...]] = []
-    last = tuple(p0)
     keep = np.ones(rows.shape[0], dtype=bool)
     keep[1:] = np.abs(np.diff(rows, axis=0)).max(axis=1) > 0
-    for r in rows[keep].tolist():
-        row = tuple(r)
-        if row != last:
-            append_steps(out, last, row)
-            last = row
-    if last != p1:
-        append_steps(out, last, p1)
-    if not out:
-        return np.zeros((0, len(p0)), dtype=np.int64)
-    return np.array(out, dtype=np.int64)
+    return join_steps((tuple(r) for r in rows[keep].tolist()), tuple(p0), p1)
 
 
 def polar_walk(seg: Segment, pulses: tuple[Fraction, ...], p0: tuple[int, ...]) -> tuple[np.ndarray, float]:
