@@ -195,7 +195,7 @@ def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tupl
     if seg.kind is SegmentKind.SPLINE:
         return _spline_float_points(seg)
     if seg.kind is SegmentKind.POLAR:
-        from ..polar import polar_float_points
+        from .samples import polar_float_points
 
         return polar_float_points(seg)
     if seg.kind is SegmentKind.RAPID and machine is not None:
