@@ -170,6 +170,8 @@ _NO_PLAN = object()
 LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
 _CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
 _AXIS_USERS = {100: "G10", 280: "G28", 300: "G30", 920: "G92", 520: "G52"}
+#: Letters whose use LinuxCNC checks per block (Interpreter._check_word_users).
+_USED_BY = frozenset("ABCDEHLPQ")
 
 
 class StopProgram(Exception):
@@ -828,6 +830,8 @@ class Interpreter:
                 raise self.error("GC204", f"R word {words['R'].text or 'R'} with no G code that uses it (R is used by G2/G3, canned cycles and G10)", words["R"])
         if "R" in words and 19 in {k for k, _ in mcodes} and groups.get(13, (0,))[0] == 640:
             raise self.error("GC204", "R word is ambiguous in a block with both G64 and M19; write them in separate blocks", words["R"])
+        if not self.unsupported and not words.keys().isdisjoint(_USED_BY):
+            self._check_word_users(gcodes, mcodes, groups, words, axis_words)
         if g1 and g1[0] in (382, 383, 384, 385) and not axis_words:
             raise self.error("GC208", f"{gname(g1[0])} without axis words: a probing move needs a target", g1[1])
         # unsupported codes: stop emitting, keep checking blocks
@@ -1073,6 +1077,64 @@ class Interpreter:
         if len(self._plans) < 4096:
             self._plans[letters] = plan
         return plan
+
+    def _check_word_users(self, gcodes: list[tuple[int, Word]], mcodes: list[tuple[int, Word]],
+                          groups: dict[int, tuple[int, Word]], words: dict[str, Word],
+                          axis_words: list[tuple[int, Word]]) -> None:
+        """GC204 for a D, E, H, L, P or Q word that no code of the block uses, and for an A, B or C word in a
+        canned cycle: LinuxCNC's ``check_other_codes`` (``interp_check.cc``), which rejects such a block.
+
+        The motion a word may belong to is LinuxCNC's ``motion_to_be``: the block's own G0-G89, else the
+        active motion mode when the block has axis words (and no G10/G28/G30/G52/G92, which take them, and
+        no G43.1), else none.  Where LinuxCNC versions differ (2.9 refuses D with G70, G73 and G83; later
+        versions take it), the block is accepted.  After an unknown code the block is left alone, as for R.
+        """
+        if any(k in UNSUPPORTED_G for k, _ in gcodes) or any(
+                k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99) for k, _ in mcodes):
+            return
+        k0 = groups[0][0] if 0 in groups else None
+        comp = groups[7][0] if 7 in groups else None
+        length = groups[8][0] if 8 in groups else None
+        control = groups[13][0] if 13 in groups else None
+        spindle_mode = groups[14][0] if 14 in groups else None
+        if 1 in groups:
+            motion = groups[1][0]
+        elif k0 in _AXIS_USERS or length == 431:
+            motion = None
+        elif axis_words:
+            motion = self.motion
+        else:
+            motion = None
+        ms = {k for k, _ in mcodes}
+
+        def refuse(letter: str, users: str) -> None:
+            w = words[letter]
+            raise self.error("GC204", f"{w.text or letter} word with no {users} to use it; LinuxCNC refuses the "
+                                      "block", w)
+
+        for letter in "ABC":
+            if letter in words and motion is not None and (810 <= motion <= 890 or motion in (730, 740)):
+                raise self.error("GC204", f"{words[letter].text or letter} word in a canned cycle "
+                                          f"({gname(motion)}); LinuxCNC refuses the block", words[letter])
+        if "D" in words and comp not in (410, 411, 420, 421) and spindle_mode != 960 \
+                and motion not in (700, 710, 711, 712, 720, 721, 722, 730, 830):
+            refuse("D", "G41, G41.1, G42, G42.1, G70-G72, G73, G83 or G96")
+        if "E" in words and motion not in (760, 330, 331, 700) and ms.isdisjoint((66, 67, 68)):
+            refuse("E", "G70, G76, G33, G33.1, M66, M67 or M68")
+        if "H" in words and length not in (430, 432) and motion != 760:
+            refuse("H", "G43, G43.2 or G76")
+        if "L" in words and not (motion is not None and (810 <= motion <= 890 or motion in (730, 760, 52, 62))) \
+                and k0 != 100 and comp not in (410, 411, 420, 421) and 66 not in ms:
+            refuse("L", "G10, cutter compensation, canned cycle, M66 or NURBS code")
+        if "P" in words and k0 not in (100, 40) and control != 640 \
+                and motion not in (760, 820, 860, 880, 890, 50, 52, 62, 700, 20, 30, 740, 840) \
+                and ms.isdisjoint((50, 51, 52, 53, 62, 63, 64, 65, 66, 19)):
+            refuse("P", "G2, G3, G4, G5, G5.2, G6.2, G10, G64, G70, G74, G76, G82, G84, G86, G88, G89, "
+                        "M19, M50-M53 or M62-M66")
+        if "Q" in words and k0 != 100 and control != 640 \
+                and motion not in (830, 730, 50, 62, 760, 700, 710, 711, 712, 720, 721, 722) \
+                and ms.isdisjoint((66, 67, 68, 61, 19)):
+            refuse("Q", "G5, G6.2, G10, G64, G70-G72, G73, G76, G83, M19, M61 or M66-M68")
 
     def _lean(self, g: int | None, m: int | None, f: Any, extra: int) -> bool:
         """Apply the modal part of a plain straight move and return True, or return False untouched.
