@@ -962,6 +962,8 @@ class Interpreter:
                 self.recompute_offsets()
             elif k == 520:
                 self._g52(axis_words)
+        if 8 in groups and groups[8][0] == 431 and g1 is None:
+            nonmodal_uses_axes = True  # the axis words are G43.1's offsets, not a move (LinuxCNC motion_to_be)
         # 20: motion
         g53 = bool(g0 and g0[0] == 530)
         if g1:
@@ -1276,10 +1278,15 @@ class Interpreter:
             if self.tool_axis is None:
                 raise self.error("GC204", "G43.1 needs a tool axis in the machine file", w)
             axis = self.axes[self.tool_axis]
+            for other in self.axes:
+                ow = words.get(other)
+                if other != axis and ow is not None and ow.value != 0:
+                    self.unknown("G43.1", f"G43.1 {ow.text or other} offsets the tool on {other}; only the length on the "
+                                 f"tool axis {axis} is modelled", ow)
+                    return
             zw = words.get(axis)
-            if zw is None:
-                raise self.error("GC208", f"G43.1 needs a {axis} word with the tool length", w)
-            self.tlo = self.length_mm(zw.value)
+            # LinuxCNC: every axis G43.1 does not name gets offset 0
+            self.tlo = _ZERO if zw is None else self.length_mm(zw.value)
             self.tool_register = None
             self.dep_tlo = {}
         self.recompute_offsets()
