@@ -814,10 +814,12 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         j += 1
         same = same[1:] & (rel[j:] == rel[:-j])
     # S and spindle/coolant M words (M3 M4 M5 M7 M8 M9) change nothing the motion depends on
-    # (Interpreter._lean); a line with another M code ends the run before it
+    # (Interpreter._lean); the last S and M3/M4/M5 of the run become the spindle state LinuxCNC's checks read.
+    # A line with another M code ends the run before it
     isM = wletter == ord("M")
     isS = wletter == ord("S")
     only_sm_lines = None
+    spindle: tuple = (None, None)  # the run's last S value and last M3/M4/M5
     if isM.any() or isS.any():
         bad = isM & ((wdec != 0) | ~np.isin(wval, _LEAN_M_CODES))
         if bad.any():
@@ -830,6 +832,14 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
             chunk = _fast_run(interp, code, lo, lo + first_bad, block_counter, line0, tuple(a[:k] for a in parsed))
             return None if chunk is None else (chunk, lo + first_bad)
         only_sm_lines = rel[isM | isS]  # blocks even when nothing else is left on the line
+        if isS.any():
+            if it.feed_mode == 95 or np.any(wval[isS] < 0):
+                return None  # a speed that G95 feeds read line by line, or a negative one: the full path
+            k = int(np.flatnonzero(isS)[-1])
+            spindle = (Fraction(int(wval[k]), 10 ** int(wdec[k])), None)
+        dirs = isM & np.isin(wval, (3, 4, 5))
+        if dirs.any():
+            spindle = (spindle[0], int(wval[int(np.flatnonzero(dirs)[-1])]))
         keep = ~(isM | isS)
         rel, wletter, wval, wdec = rel[keep], wletter[keep], wval[keep], wdec[keep]
         wl = wl[keep]
@@ -935,8 +945,13 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     fidx = np.maximum.accumulate(np.where(fpres, np.arange(n), -1))
     feed_line = np.where(fidx >= 0, feed[np.maximum(fidx, 0)], f0)
     feedmove = (arc_rows | (moving & (mode == 1)))
-    if it.feed_mode == 94 and np.any(feedmove & (feed_line == 0)):
-        return None
+    feedcheck = feedmove | (gline == 1)  # LinuxCNC checks the feed of a G1 block without axis words too
+    if it.feed_mode != 93 and np.any(feedcheck & (feed_line == 0)):
+        return None  # LinuxCNC refuses a feed move without a feed rate: the full path says so
+    if it.feed_mode == 95 and feedcheck.any() and it.spindle_speed is not None and not it.spindle_speed:
+        return None  # G95 with spindle speed 0 (or not followed): the full path
+    if it.feed_mode == 93 and np.any(feedcheck & ~fpres):
+        return None  # G93 wants F in every feed block
     # positions
     pos0 = [_scaled_int(p, S) for p in it.pos]
     off = [_scaled_int(o, S) for o in it.off]
@@ -1019,6 +1034,10 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if fpres.any():
         last_f = Fraction(int(feed_line[-1]), den)
         it.feed = last_f / Fraction(254, 10) if inch else last_f
+    if spindle[0] is not None:
+        it.spindle_speed = spindle[0]
+    if spindle[1] is not None:
+        it.spindle_dir = 1 if spindle[1] == 3 else -1 if spindle[1] == 4 else 0
     if m:
         it.note_assumed(("units", "distance", "offset", "plane") if arcs.any() else ("units", "distance", "offset"))
     it.blocks += int(has_word.sum())

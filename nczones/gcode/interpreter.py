@@ -166,7 +166,8 @@ _M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7
             48: 9, 49: 9, 50: 9, 51: 9, 52: 9, 53: 9, 62: 5, 63: 5, 64: 5, 65: 5, 66: 5, 67: 5,
             68: 5, 70: 10, 71: 10, 72: 10, 73: 10}
 _NO_PLAN = object()
-#: Spindle and coolant M codes: no effect on motion, and a plain move may carry one (Interpreter._lean).
+#: Spindle and coolant M codes: no effect on motion, and a plain move may carry one (Interpreter._lean), which
+#: then keeps the spindle direction LinuxCNC's G84/G86/G33 checks read.
 LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
 _CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
 _AXIS_USERS = {100: "G10", 280: "G28", 300: "G30", 920: "G92", 520: "G52"}
@@ -345,7 +346,7 @@ class Interpreter:
         self.feed_mode = 93 if "G93" in modal else 95 if "G95" in modal else 94
         self.motion: int | None = None
         self.feed = _ZERO  # program units per minute
-        self.retract_r = False  # G98
+        self.retract_r = True  # G99: LinuxCNC starts retracting to R (interp_setup.cc retract_mode R_PLANE)
         self.cycle_r: Fraction | None = None
         self.cycle_cc: Fraction | None = None
         self.cycle_p = _ZERO
@@ -360,6 +361,10 @@ class Interpreter:
             self._comp = CutterComp(self)
         self.tool_selected = 0
         self.tool_in_spindle = 0
+        #: LinuxCNC's spindle state for the checks it makes: direction 1 (M3), -1 (M4), 0 (stopped), and the
+        #: S value; None where nczones does not follow it (after M72 restores a saved state).
+        self.spindle_dir: int | None = 0
+        self.spindle_speed: Fraction | None = _ZERO
         self.tlo = _ZERO
         self.tool_register: int | None = None
         # ---- offsets (mm, machine axes)
@@ -790,7 +795,7 @@ class Interpreter:
         gcodes, mcodes, words, axis_words = self._split_words(block)
         if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self.machine_at is None \
                 and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
-                               len(words) - len(axis_words) - ("F" in words) - ("S" in words)):
+                               len(words) - len(axis_words) - ("F" in words) - ("S" in words), words.get("S")):
             self._lean_move(tuple((k, i) for k, (i, _w) in enumerate(axis_words)), [w.value for _i, w in axis_words])
             return
         # ---- modal group checks
@@ -866,11 +871,18 @@ class Interpreter:
         if 5 in groups:
             self.feed_mode = groups[5][0] // 10
             self.unset.discard("feed")
+            if self.feed_mode in (94, 95):
+                self.feed = _ZERO  # LinuxCNC convert_feed_mode: G94 and G95 set the feed rate to 0
         if "F" in words:
             f = words["F"].value
             if f < 0:
                 raise self.error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
             self.feed = f
+        if "S" in words:
+            sv = words["S"].value
+            if sv < 0:
+                raise self.error("GC209", f"negative spindle speed {words['S'].text}; S must be 0 or more", words["S"])
+            self.spindle_speed = sv
         # 5-6: tool select and change
         if "T" in words:
             t = words["T"].value
@@ -880,6 +892,10 @@ class Interpreter:
         mset = {k for k, _ in mcodes}
         if 6 in mset:
             self.tool_in_spindle = self.tool_selected
+            self.spindle_dir = 0  # LinuxCNC convert_tool_change stops the spindle (TOOL_CHANGE_WITH_SPINDLE_ON off)
+        for k, d in ((3, 1), (4, -1), (5, 0), (19, 0)):
+            if k in mset:
+                self.spindle_dir = d
         if 61 in mset:
             q = words.get("Q")
             if q is None or q.value.denominator != 1 or q.value < 0:
@@ -961,7 +977,7 @@ class Interpreter:
                 self.g92_applied = True
                 self.recompute_offsets()
             elif k == 520:
-                self._g52(axis_words)
+                self._g52(axis_words, g0[1])
         if 8 in groups and groups[8][0] == 431 and g1 is None:
             nonmodal_uses_axes = True  # the axis words are G43.1's offsets, not a move (LinuxCNC motion_to_be)
         # 20: motion
@@ -1050,7 +1066,7 @@ class Interpreter:
             plan = self._plain_plan(letters)
         if plan is None:
             return False
-        axis_at, gk, mk, fk = plan
+        axis_at, gk, mk, fk, sk = plan
         g = m = None
         if gk >= 0:
             v = values[gk]
@@ -1062,7 +1078,7 @@ class Interpreter:
             if v._denominator != 1:
                 return False
             m = v._numerator
-        if not self._lean(g, m, values[fk] if fk >= 0 else None, 0):
+        if not self._lean(g, m, values[fk] if fk >= 0 else None, 0, values[sk] if sk >= 0 else None):
             return False
         self._lean_move(axis_at, values)
         return True
@@ -1075,7 +1091,7 @@ class Interpreter:
         if len(set(letters)) == len(letters) and all(c in self.index or c in "GMFS" for c in letters):
             axis_at = tuple((k, self.index[c]) for k, c in enumerate(letters) if c in self.index)
             if axis_at:
-                plan = (axis_at, letters.find("G"), letters.find("M"), letters.find("F"))
+                plan = (axis_at, letters.find("G"), letters.find("M"), letters.find("F"), letters.find("S"))
         if len(self._plans) < 4096:
             self._plans[letters] = plan
         return plan
@@ -1138,7 +1154,7 @@ class Interpreter:
                 and ms.isdisjoint((66, 67, 68, 61, 19)):
             refuse("Q", "G5, G6.2, G10, G64, G70-G72, G73, G76, G83, M19, M61 or M66-M68")
 
-    def _lean(self, g: int | None, m: int | None, f: Any, extra: int) -> bool:
+    def _lean(self, g: int | None, m: int | None, f: Any, extra: int, s: Any = None) -> bool:
         """Apply the modal part of a plain straight move and return True, or return False untouched.
 
         A plain move is at most one of G0/G1 (``g``: the G key), axis
@@ -1153,6 +1169,16 @@ class Interpreter:
         if extra or self.unsupported or self.prerotation_xy is not None or self.spline_state is not None or self.comp_on \
                 or self.comp_just_off or self.m73_saved:
             return False
+        speed = self.spindle_speed
+        if s is not None:
+            speed = s.value if isinstance(s, Word) else s
+            if speed < 0:
+                return False
+        if self.feed_mode != 94 and (g == 10 or (g is None and self.motion == 10)):
+            # G93 needs F in the block, G95 a feed and a spindle speed: the general path's checks
+            fnew = self.feed if f is None else (f.value if isinstance(f, Word) else f)
+            if self.feed_mode == 93 or not fnew or (speed is not None and not speed):
+                return False
         if m is not None and m not in LEAN_M:
             return False
         if g is not None:
@@ -1169,6 +1195,9 @@ class Interpreter:
             self.cycle_il = None
             self.last_cycle = None
             self.motion = g
+        if m is not None and m <= 5:
+            self.spindle_dir = 1 if m == 3 else -1 if m == 4 else 0
+        self.spindle_speed = speed
         return True
 
     def _lean_move(self, axis_at: tuple[tuple[int, int], ...], values: Sequence[Fraction]) -> None:
@@ -1245,6 +1274,7 @@ class Interpreter:
     def _restore_modal(self, snap: tuple) -> None:
         (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
          self.feed, self.retract_r) = snap
+        self.spindle_dir = self.spindle_speed = None  # M72 restores the spindle too: no longer followed
         self.recompute_offsets()
 
     def _tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
@@ -1334,6 +1364,8 @@ class Interpreter:
             return
         if self.unsupported:
             return
+        if motion in (10, 20, 30):
+            self._feed_rule(words, "g1" if motion == 10 else "arc")
         if motion in (0, 10):
             if g53 and not self.absolute:
                 raise self.error("GC207", "G53 cannot be used in incremental mode (G91)", axis_words[0][1] if axis_words else None)
@@ -1367,6 +1399,27 @@ class Interpreter:
         else:
             raise InternalError(f"motion mode {motion}")
 
+    def _feed_rule(self, words: dict[str, Word], what: str) -> None:
+        """LinuxCNC's feed checks of a G1 or arc block (``convert_straight``, ``convert_arc``): in G94 and G95 a
+        feed rate that is not 0 (G94/G95 set it to 0), in G95 a spindle speed, in G93 an F word in the block."""
+        if self.feed_mode == 93:
+            if "F" not in words:
+                raise self.error("GC305", f"inverse time feed (G93): every {'G1' if what == 'g1' else 'arc'} block needs "
+                                 "its own F word")
+        elif self.feed == 0:
+            self.check_feed(any_mode=True)
+        elif self.feed_mode == 95 and self.spindle_speed is not None and self.spindle_speed == 0:
+            raise self.error("GC305", "feed per revolution (G95) with spindle speed 0: write S before the move")
+
+    def _spindle_turning(self, name: str, direction: int | None = None) -> None:
+        """LinuxCNC refuses G33, G33.1, G86 with the spindle stopped, and G84 unless it turns clockwise."""
+        if self.spindle_dir is None:
+            return
+        if self.spindle_dir == 0:
+            raise self.error("GC305", f"spindle not turning in {name}: start it with M3 (or M4) first")
+        if direction is not None and self.spindle_dir != direction:
+            raise self.error("GC305", f"spindle turning counterclockwise (M4) in {name}: {name} taps with M3")
+
     def _spindle_synced(self, motion: int, axis_words: list[tuple[int, Word]], words: dict[str, Word], g53: bool) -> None:
         """G33 (threading) and G33.1 (rigid tapping): the geometry of LinuxCNC's spindle-synchronized moves.
 
@@ -1386,6 +1439,7 @@ class Interpreter:
             raise self.error("GC209", f"{name} pitch {kw.text} must be greater than 0", kw)
         if self.comp_on:
             raise self.error("GC204", f"{name} cannot be used with cutter compensation on")
+        self._spindle_turning(name)
         if not axis_words:
             return
         self.note_assumed(("units", "distance", "offset"))
@@ -1400,9 +1454,11 @@ class Interpreter:
         self.prerotation_xy_next = u0
         self.emit(SegmentKind.LINE, start, derived="G33.1 retract", end_deps=sdeps)
 
-    def check_feed(self) -> None:
-        if self.feed_mode == 94 and self.feed == 0:
-            raise self.error("GC305", "feed motion with zero feed rate: no F word has been given (write F before or in this block)")
+    def check_feed(self, any_mode: bool = False) -> None:
+        """GC305 for a feed motion at feed rate 0: in G94, or in every mode (``any_mode``, LinuxCNC's G95)."""
+        if (self.feed_mode == 94 or any_mode) and self.feed == 0:
+            raise self.error("GC305", "feed motion with zero feed rate: no F word since the start or the last G94/G95 "
+                             "(which set the feed rate to 0); write F before or in this block")
 
     # ------------------------------------------------------------------ arcs
     def arc(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], cw: bool, g53: bool) -> None:
@@ -1540,13 +1596,20 @@ class Interpreter:
             rw = words.get("R")
             reg = self.g5x[name]
             dreg = self.dep_g5x[name]
-            if rw is not None and L == 20 and rw.value != self.rot[name]:
-                self.unknown("G10 L20 R", "G10 L20 with an R word that changes the rotation is not modelled "
-                              "(use G10 L2 R)", rw)
+            if rw is not None and L == 20:
+                raise self.error("GC204", "R word in G10 L20: LinuxCNC sets a rotation only with G10 L2 R", rw)
+            ix, iy = self._ix, self._iy
+            if rw is not None and name == self.wcs and rw.value != self.rot[name] and ix >= 0 and iy >= 0 \
+                    and (self.g92[ix] or self.g92[iy]):
+                # LinuxCNC's convert_setup re-derives the position as rotate(program) + G5x, leaving G92 out of the
+                # rotation the canon layer applies to it: from here on its interpreter aims every relative move
+                # from a point where the machine is not
+                self.unknown("G10 L2 R", "changing the rotation of the active coordinate system while a G92/G52 "
+                              "offset is applied on X or Y is not modelled (LinuxCNC's interpreter loses the "
+                              "position); clear it with G92.1 first", rw)
                 return
             if rw is not None:
                 self.rot[name] = rw.value
-            ix, iy = self._ix, self._iy
             rot20 = L == 20 and self.rot[name] != 0 and any(i in (ix, iy) for i, _ in axis_words)
             if rot20:
                 self._g10_l20_rotated(name, axis_words)
@@ -1601,8 +1664,8 @@ class Interpreter:
         same in G59.3 without G92.  The active length changes only at the next
         G43 (the table entry is not the active offset).
         """
-        if P.denominator != 1 or P < 0:
-            raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a non-negative integer tool number", pw)
+        if P.denominator != 1 or P < 1:  # LinuxCNC check_g_codes: P >= 1 with L1, L10 and L11
+            raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a positive integer tool number", pw)
         tool = int(P)
         for i, aw in axis_words:
             if i == self.tool_axis:
@@ -1644,7 +1707,9 @@ class Interpreter:
         self.g92_applied = True
         self.recompute_offsets()
 
-    def _g52(self, axis_words: list[tuple[int, Word]]) -> None:
+    def _g52(self, axis_words: list[tuple[int, Word]], w: Word) -> None:
+        if not axis_words:
+            raise self.error("GC208", "G52 needs at least one axis word", w)
         for i, aw in axis_words:
             self.g92[i] = self._mm(aw.value, i)
             self.dep_g92[i] = {}
@@ -1665,9 +1730,11 @@ class Interpreter:
                 raise self.error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
         if self.comp_on:
             raise self.error("GC204", "canned cycles cannot be used with cutter compensation on")
+        self.check_feed(any_mode=True)  # LinuxCNC convert_cycle: in G94 and G95 alike
         if self.feed_mode == 93:
             raise self.error("GC204", "canned cycles cannot be used with inverse time feed (G93)")
-        self.check_feed()
+        if motion in (840, 860):
+            self._spindle_turning(gname(motion), 1 if motion == 840 else None)
         swapped = motion == 840 and plane is not Plane.XY
         if swapped and self.track:
             self.unknown("G84", "parameter ranges are not supported with G84 outside G17")
@@ -1702,7 +1769,8 @@ class Interpreter:
                 self.cycle_p = pw.value
             elif first and motion != 840:
                 raise self.error("GC208", f"{gname(motion)} needs a P word (dwell time) the first time")
-            dwell = self.cycle_p if (pw is not None or not first) else _ZERO
+            # G84 dwells the sticky P of any earlier cycle (LinuxCNC convert_cycle_xy: p_number or cycle_p)
+            dwell = self.cycle_p if (pw is not None or not first or motion == 840) else _ZERO
         if motion in (730, 830):
             qw = words.get("Q")
             if qw is not None:
@@ -1780,8 +1848,8 @@ class Interpreter:
                 depth = r - delta
                 while lt((cc, cc_d), (depth, r_d), ic, "a peck ends above the bottom"):
                     go(SegmentKind.LINE, aa, bb, (depth, r_d), f"{name} peck")
-                    if motion == 830:
-                        go(SegmentKind.RAPID, aa, bb, clear, f"{name} clear")
+                    if motion == 830:  # back out to R, not to the clear level (LinuxCNC convert_cycle_g83)
+                        go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} clear")
                     go(SegmentKind.RAPID, aa, bb, (depth + G83_RAPID_DELTA_MM, r_d), f"{name} back off")
                     depth -= delta
             if swapped:
@@ -1790,7 +1858,11 @@ class Interpreter:
             go(SegmentKind.LINE, aa, bb, (cc, cc_d), f"{name} feed")
             if dwell is not None:
                 self.emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
-            if motion in (840, 850, 890):
+            if motion == 850:  # feed out to R only, then rapid to the clear level (LinuxCNC convert_cycle_g85)
+                go(SegmentKind.LINE, aa, bb, (r, r_d), f"{name} retract")
+                if clear[0] != r:
+                    go(SegmentKind.RAPID, aa, bb, clear, f"{name} clear")
+            elif motion in (840, 890):
                 go(SegmentKind.LINE, aa, bb, clear, f"{name} retract")
             else:
                 go(SegmentKind.RAPID, aa, bb, clear, f"{name} retract")

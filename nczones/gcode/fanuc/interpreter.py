@@ -200,6 +200,7 @@ class FanucInterpreter(Interpreter):
         self.initial_level: Fraction | None = None
         self.initial_level_deps: dict = {}
         self.retract_r = False  # G98 at power-on
+        self.spindle_dir = self.spindle_speed = None  # LinuxCNC's spindle checks do not apply
         self.tlo_register: int | None = None
         self.tlo_sign = 1
         self.h_geometry = {k: v for k, v in machine.tool_lengths.items()}
@@ -263,12 +264,12 @@ class FanucInterpreter(Interpreter):
                 22: self.mirroring is not None}
 
     # ------------------------------------------------------------------ the plain-move lane
-    def _lean(self, g: int | None, m: int | None, f: Any, extra: int) -> bool:
+    def _lean(self, g: int | None, m: int | None, f: Any, extra: int, s: Any = None) -> bool:
         if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None:
             return False
         if m is not None and m not in (3, 4, 5, 7, 8, 9):
             return False
-        if not super()._lean(g, m, f, extra):
+        if not super()._lean(g, m, f, extra):  # S: no LinuxCNC spindle checks
             return False
         if m is not None:
             self.last["M"] = Fraction(m)

@@ -1,0 +1,193 @@
+"""Motion and errors where nczones differed from LinuxCNC's interpreter, found by ``tests/tools/rs274_diff.py``.
+
+Each expectation is LinuxCNC 2.9's ``rs274 -g`` canonical output of the same program, written out by hand
+(program coordinates; with G54 = 0, no G92 and no tool length they are the machine coordinates). The
+differential run that found them, and what it compares, is in ``specs/gcode-support.md``
+("Differential run against LinuxCNC").
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+
+from nczones.errors import GcodeError
+from nczones.gcode import interpret_text
+from nczones.machine import parse_machine
+from nczones.prover import verify_text
+
+MACHINE_TEXT = """
+[machine]
+axes = ["X", "Y", "Z"]
+pulse = "0.0001"
+[machine.rapid]
+X = "10000"
+Y = "10000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-100", Y = "-100", Z = "-100" }
+max = { X = "100", Y = "100", Z = "100" }
+[[zones]]
+name = "clamp"
+kind = "box"
+forbid = true
+min = { X = "7", Y = "-5", Z = "-100" }
+max = { X = "8", Y = "5", Z = "-0.5" }
+"""
+MACHINE = parse_machine(MACHINE_TEXT)
+
+
+def motion(text: str) -> list[tuple]:
+    """(kind, X, Y, Z) of every segment; dwells as ("DWELL", seconds)."""
+    run = interpret_text(text, MACHINE)
+    out: list[tuple] = []
+    for c in run:
+        for s in c.segments():
+            if s.kind.name == "DWELL":
+                out.append(("DWELL", s.dwell_s))
+            else:
+                out.append((s.kind.name, *s.end))
+    assert not run.unsupported, run.unsupported
+    return out
+
+
+def _rows(rows):
+    return [(r[0], *(Fraction(v) for v in r[1:])) for r in rows]
+
+
+def test_canned_cycles_retract_to_r_until_g98():
+    """LinuxCNC starts in G99 (``interp_setup.cc``: ``retract_mode(R_PLANE)``); nczones retracted to the
+    initial level as if G98 were active, and so proved the move to the next hole 1 mm above where it runs."""
+    assert motion("F100\nG81 X5 Y0 Z-3 R-1\nG81 X10 Z-3 R-1\nM2\n") == _rows([
+        ("RAPID", 5, 0, 0), ("RAPID", 5, 0, -1), ("LINE", 5, 0, -3), ("RAPID", 5, 0, -1),
+        ("RAPID", 10, 0, -1), ("LINE", 10, 0, -3), ("RAPID", 10, 0, -1)])
+
+
+def test_the_move_between_holes_through_a_clamp_is_unsafe():
+    """The wrong `safe`: after the first hole the tool travels at R = -1 (G99), through the clamp at X 7..8
+    whose top is Z -0.5; nczones had it travel at the initial level Z 0, above the clamp."""
+    result = verify_text("F100\nG81 X5 Y0 Z-3 R-1\nX10\nM2\n", MACHINE)
+    assert result.verdict.label == "unsafe"
+    assert {v.zone for v in result.violations} == {"clamp"}
+
+
+def test_g98_still_retracts_to_the_initial_level():
+    assert motion("F100\nG98 G81 X5 Y0 Z-3 R-1\nX10\nM2\n")[-4:] == _rows([
+        ("RAPID", 10, 0, 0), ("RAPID", 10, 0, -1), ("LINE", 10, 0, -3), ("RAPID", 10, 0, 0)])
+
+
+def test_g83_backs_out_to_r_between_pecks():
+    """``convert_cycle_g83``: each peck rapids out to R, not to the clear level (G98 initial level here)."""
+    assert motion("F100\nG98 G83 X7 Y0 Z-2.5 R-0.5 Q1\nM2\n") == _rows([
+        ("RAPID", 7, 0, 0), ("RAPID", 7, 0, "-0.5"), ("LINE", 7, 0, "-1.5"), ("RAPID", 7, 0, "-0.5"),
+        ("RAPID", 7, 0, "-1.246"), ("LINE", 7, 0, "-2.5"), ("RAPID", 7, 0, 0)])
+
+
+def test_g85_feeds_out_to_r_then_rapids_to_the_clear_level():
+    """``convert_cycle_g85``: feed to the bottom, feed back to R, rapid to the clear level."""
+    assert motion("F100\nG98 G85 X6 Y0 Z-6 R-2\nM2\n") == _rows([
+        ("RAPID", 6, 0, 0), ("RAPID", 6, 0, -2), ("LINE", 6, 0, -6), ("LINE", 6, 0, -2), ("RAPID", 6, 0, 0)])
+
+
+def test_g84_dwells_the_p_of_an_earlier_cycle():
+    """``convert_cycle_xy``: G84's dwell is its P word or the sticky P of any earlier cycle (here G82's)."""
+    rows = motion("F100\nM3 S1000\nG82 X1 Z-3 R1 P0.5\nG84 X2 Z-3 R1\nM2\n")
+    assert [r for r in rows if r[0] == "DWELL"] == [("DWELL", Fraction(1, 2)), ("DWELL", Fraction(1, 2))]
+
+
+def test_changing_the_active_rotation_with_g92_applied_is_unknown():
+    """``convert_setup`` re-derives the position as rotate(program) + G5x while the canon layer rotates
+    program + G92: rs274 aims ``G3 X[#<_x>-0.32]`` from X -0.1717 where the machine is at X -0.15 + ..., so
+    any relative move afterwards goes elsewhere than nczones would compute."""
+    run = interpret_text("G0 X2 Y3\nG92 X0 Y0\nG10 L2 P1 X1 R10\nG91 G0 X1\nM2\n", MACHINE)
+    segs = [s for c in run for s in c.segments()]
+    assert len(segs) == 1
+    assert [(u.code, u.span.line) for u in run.unsupported] == [("G10 L2 R", 3)]
+    # without G92, or keeping the rotation, LinuxCNC's interpreter stays where the machine is
+    for text in ("G0 X2 Y3\nG10 L2 P1 X1 R10\nG91 G0 X1\nM2\n", "G0 X2 Y3\nG92 X0 Y0\nG10 L2 P1 X1\nG91 G0 X1\nM2\n"):
+        run = interpret_text(text, MACHINE)
+        assert len([s for c in run for s in c.segments()]) == 2 and not run.unsupported
+
+
+def _error(text: str, fast: bool = True) -> GcodeError:
+    with pytest.raises(GcodeError) as info:
+        for _ in interpret_text(text, MACHINE, fast=fast):
+            pass
+    return info.value
+
+
+#: Programs LinuxCNC refuses, the line it names and its message (rs274's stderr).
+REFUSED = [
+    ("F100\nG94\nG1 X1\nM2\n", 3, "Cannot do g1 with zero feed rate"),
+    ("F100\nG95 S100 M3\nG1 X1\nM2\n", 3, "Cannot do g1 with zero feed rate"),
+    ("F100\nG94\nG2 X2 I1\nM2\n", 3, "Cannot make arc with zero feed rate"),
+    ("F100\nG94\nG0 X1\nG81 X1 Z-1 R0\nM2\n", 4, "Cannot feed with zero feed rate"),
+    ("G1\nM2\n", 1, "Cannot do g1 with zero feed rate"),
+    ("G95 F1\nG1 X1\nM2\n", 2, "Cannot feed with zero spindle speed in feed per rev mode"),
+    ("F10 M3 S10\nG95\nG1 X1 F1\nS0\nG1 X2\nM2\n", 5, "Cannot feed with zero spindle speed in feed per rev mode"),
+    ("G93 G1 X1 F10\nG1 X2\nM2\n", 2, "F word missing with inverse time g1 move"),
+    ("G93 F10\nG2 X2 I1\nM2\n", 2, "F word missing with inverse time arc move"),
+    ("G10 L1 P0 Z1\nM2\n", 1, "P value out of range with G10 L1"),
+    ("G10 L10 P0 Z1\nM2\n", 1, "P value out of range with G10 L10"),
+    ("G10 L11 P0 Z1\nM2\n", 1, "P value out of range with G10 L11"),
+    ("G10 L20 P1 X0 R1\nM2\n", 1, "R not allowed in G10 L20"),
+    ("G52\nM2\n", 1, "All axes missing with g52 or g92"),
+    ("S-1\nM2\n", 1, "Negative spindle speed used"),
+    ("G33 X1 K1\nM2\n", 1, "Spindle not turning in G33"),
+    ("M4 S100\nT1 M6\nG33 X1 K1\nM2\n", 3, "Spindle not turning in G33"),
+    ("M3 S100\nM19\nG33 X1 K1\nM2\n", 3, "Spindle not turning in G33"),
+    ("M3 S100\nM5\nG33.1 Z-1 K1\nM2\n", 3, "Spindle not turning in G33.1"),
+    ("F10\nG86 X1 Z-1 R1 P1\nM2\n", 2, "Spindle not turning in g86"),
+    ("F10 M4 S100\nG84 X1 Z-1 R1\nM2\n", 2, "Spindle turning counterclockwise in G84"),
+]
+
+#: Programs LinuxCNC runs through (the same features, in the state it accepts).
+ACCEPTED = [
+    "F100\nG94 F20\nG1 X1\nM2\n",
+    "F100\nG95 F1 S100\nG1 X1\nG1 X2 S200 M3\nM2\n",
+    "G93 G1 X1 F10\nG1 X2 F20\nG2 X4 I1 F5\nM2\n",
+    "G10 L1 P1 Z1\nG10 L10 P2 Z1\nG10 L11 P3 Z1\nM2\n",
+    "F10 M3 S100\nG84 X1 Z-1 R1\nM5\nM3\nG84 X2\nM2\n",
+    "F10 M3 S100\nG86 X1 Z-1 R1 P1\nM2\n",
+    "F10\nM3 S100\nM70\nM5\nM72\nG84 X1 Z-1 R1\nM2\n",  # M72 restores the spindle (not followed)
+    "M3 S100\nG33 X1 K1\nM2\n",
+]
+
+
+@pytest.mark.parametrize("fast", [True, False], ids=["lanes", "general"])
+@pytest.mark.parametrize("text,line,linuxcnc", REFUSED, ids=[r[2] + f" {k}" for k, r in enumerate(REFUSED)])
+def test_what_linuxcnc_refuses_nczones_refuses_on_the_same_line(text, line, linuxcnc, fast):
+    """Until these checks nczones verified the motion of such programs as if the controller ran it."""
+    err = _error(text, fast)
+    assert err.diagnostics[0].span is not None and err.diagnostics[0].span.line == line, (err.render(), linuxcnc)
+
+
+@pytest.mark.parametrize("fast", [True, False], ids=["lanes", "general"])
+@pytest.mark.parametrize("text", ACCEPTED)
+def test_what_linuxcnc_runs_nczones_runs(text, fast):
+    run = interpret_text(text, MACHINE, fast=fast)
+    for _ in run:  # raises GcodeError where nczones refuses
+        pass
+    assert not run.unsupported
+
+
+def test_the_lanes_see_spindle_and_feed_words_of_long_runs():
+    """The vectorized run and the plain lane follow S, M3/M4/M5 and G94's zeroed feed like the general path."""
+    moves = "".join(f"X{i} Y1\n" for i in range(40))
+    for head, tail, line in [
+        ("M3 S100 F10\n", "G95\nG1 X1\n", 43),           # G95 zeroes the feed
+        ("F10 G95\nS100\n", "S0\nG1 X3\n", 44),           # S0 in G95
+        ("F10\nM3 S100\n", "M5\nG86 X1 Z-1 R1 P1\n", 44),  # stopped by M5 in a run
+        ("F10\nM3 S100\nG1\n", "M4\nG84 X1 Z-1 R1\n", 45),  # M4 in a run of plain moves
+    ]:
+        text = head + "G1 " + moves + tail + "M2\n"
+        for fast in (True, False):
+            err = _error(text, fast)
+            assert err.diagnostics[0].span.line == line, (head, tail, fast, err.render())
