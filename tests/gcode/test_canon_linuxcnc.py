@@ -22,7 +22,6 @@ code, e.g. cutter compensation) is compared up to that point, which is what
 
 from __future__ import annotations
 
-import math
 import re
 from fractions import Fraction
 from pathlib import Path
@@ -35,6 +34,7 @@ from nczones.gcode import interpret
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 from tests.corpus import CORPUS
+from tests.oracles.rs274 import AXES6, canon_motion
 
 TESTS = CORPUS / "linuxcnc" / "tests"
 TSV = CORPUS / "linuxcnc" / "INTERP_TESTS.tsv"
@@ -54,8 +54,6 @@ SKIPPED = {
     "tests/interp/g72-missing-iteration": "the test only checks termination; no expected motion",
 }
 
-_CALL = re.compile(r"^\s*(?:\d+\s+)?N\S*\s+([A-Z_0-9]+)\((.*)\)\s*$")
-AXES6 = ("X", "Y", "Z", "A", "B", "C")
 
 
 def _cases():
@@ -107,79 +105,16 @@ def _machine(tooltable: Path | None):
     return parse_machine(text)
 
 
-def _num(s: str) -> Fraction:
-    return Fraction(s.strip())
-
-
 def _log_motion(expected: Path):
-    """Expected motions as (kind, machine-mm tuple of 6, arc info) from the canon log."""
-    unit = Fraction(1)
-    g5x = [Fraction(0)] * 6
-    g92 = [Fraction(0)] * 6
-    tlo = [Fraction(0)] * 6
-    plane = "XY"
-    rotation = Fraction(0)
-    moves = []
-
-    def place(x, y, off):
-        """Machine XY of program XY (log units): rotate(program + G92) + G5x + tool (emccanon)."""
-        x, y = x * unit + g92[0], y * unit + g92[1]
-        if rotation:
-            t = math.radians(float(rotation))
-            c, s = math.cos(t), math.sin(t)
-            x, y = Fraction(float(x) * c - float(y) * s), Fraction(float(x) * s + float(y) * c)
-        return x + off[0] - g92[0], y + off[1] - g92[1]
-
-    for line in expected.read_text(errors="replace").splitlines():
-        m = _CALL.match(line)
-        if not m:
+    """Expected motions as (kind, machine-mm tuple of 6, arc info) from the canon log
+    (:func:`tests.oracles.rs274.canon_motion`, dwells left out)."""
+    out = []
+    for m in canon_motion(expected.read_text(errors="replace")):
+        if m.kind == "DWELL":
             continue
-        name, args = m.group(1), m.group(2)
-        if name == "USE_LENGTH_UNITS":
-            unit = Fraction(254, 10) if "INCHES" in args else Fraction(1)
-        elif name == "SET_G5X_OFFSET":
-            v = [_num(a) for a in args.split(",")[1:7]]
-            g5x = [x * unit if i < 3 else x for i, x in enumerate(v)]
-        elif name == "SET_G92_OFFSET":
-            v = [_num(a) for a in args.split(",")[:6]]
-            g92 = [x * unit if i < 3 else x for i, x in enumerate(v)]
-        elif name == "SET_XY_ROTATION":
-            rotation = _num(args)
-        elif name == "USE_TOOL_LENGTH_OFFSET":
-            v = [_num(a) for a in re.split(r"[ ,]+", args.strip())]
-            tlo = [v[0] * unit, v[1] * unit, v[2] * unit, v[3], v[4], v[5]]
-        elif name == "SELECT_PLANE":
-            plane = {"CANON_PLANE_XY": "XY", "CANON_PLANE_XZ": "XZ", "CANON_PLANE_YZ": "YZ"}.get(args.strip(), args)
-        elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED", "STRAIGHT_PROBE", "RIGID_TAP"):
-            off = [g5x[i] + g92[i] + tlo[i] for i in range(6)]
-            v = [_num(a) for a in args.split(",")]
-            if name == "ARC_FEED":
-                fe, se, fc, sc, rot, ne, a, b, c = v
-                fa, sa, na = {"XY": ("X", "Y", "Z"), "XZ": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}[plane]
-                prog = {fa: fe, sa: se, na: ne, "A": a, "B": b, "C": c}
-                pt = [prog[ax] * (unit if i < 3 else 1) + off[i] for i, ax in enumerate(AXES6)]
-                if rotation:
-                    if plane != "XY":
-                        raise ValueError("arc outside XY with rotation")
-                    pt[0], pt[1] = place(prog["X"], prog["Y"], off)
-                    centre = place(fc, sc, off)
-                else:
-                    centre = (fc * unit + off[AXES6.index(fa)], sc * unit + off[AXES6.index(sa)])
-                moves.append(("ARC", tuple(pt), (int(rot), centre, unit, plane, rotation)))
-            else:
-                pt = [x * (unit if i < 3 else 1) + off[i] for i, x in enumerate(v[:6])]
-                if rotation:
-                    pt[0], pt[1] = place(v[0], v[1], off)
-                pt = tuple(pt)
-                if name == "RIGID_TAP":  # X Y Z only: tap to the point, back to the start (our two LINEs)
-                    prev = moves[-1][1] if moves else tuple([Fraction(0)] * 6)
-                    pt = pt[:3] + prev[3:]
-                    moves.append(("LINE", pt, (unit, rotation)))
-                    moves.append(("LINE", prev, (unit, rotation)))
-                    continue
-                kind = {"STRAIGHT_TRAVERSE": "RAPID", "STRAIGHT_FEED": "LINE"}.get(name, name)
-                moves.append((kind, pt, (unit, rotation)))
-    return moves
+        info = (m.direction, m.centre, m.unit, m.plane, m.rotation) if m.kind == "ARC" else (m.unit, m.rotation)
+        out.append((m.kind, m.end, info))
+    return out
 
 
 def _compare(d: str, prog: Path, tbl: Path | None):

@@ -1,0 +1,330 @@
+"""LinuxCNC's standalone interpreter ``rs274 -g`` as an oracle for nczones's interpreted motion.
+
+``rs274`` prints one canonical call per line (``src/emc/sai/saicanon.cc``): ``STRAIGHT_TRAVERSE``,
+``STRAIGHT_FEED``, ``ARC_FEED`` and ``RIGID_TAP`` in *program* coordinates and current units (4 decimals),
+the offsets they exclude as separate calls (``SET_G5X_OFFSET``, ``SET_G92_OFFSET``,
+``USE_TOOL_LENGTH_OFFSET``, ``SET_XY_ROTATION``) in the units current when they are printed, and on an
+error its message and the text of the offending line on stderr (``driver.cc`` ``report_error``).
+:func:`canon_motion` turns the log into motions in machine millimetres (machine = rotate(program + G92)
++ G5x + tool length, as ``emccanon.cc``) with an error bound per motion: every printed number is rounded
+to 0.0001 of its unit, so a coordinate built from k printed numbers is within k x 0.00005 units of the
+truth.  :func:`compare` holds nczones's segments to them.
+
+The standalone interpreter's tool table and parameter file are in inches (its external length unit):
+``Z0.5`` in the ``-t`` table is a 12.7 mm tool.  It starts at machine zero in G21 G90 G17 G54 G94.
+
+Only this module, ``tests/tools/rs274_diff.py`` (runs ``rs274``) and the tests read it; it shares no
+code with nczones's interpreter.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+
+from nczones.errors import GcodeError
+from nczones.gcode import interpret_text
+from nczones.machine import Machine, parse_machine
+
+AXES6 = ("X", "Y", "Z", "A", "B", "C")
+_CALL = re.compile(r"^\s*(?:\d+\s+)?N\S*\s+([A-Z_0-9]+)\((.*)\)\s*$")
+INCH = Fraction(254, 10)
+#: Half the last printed digit: the rounding of one 4-decimal number.
+HALF_DIGIT = Fraction(5, 100000)
+
+
+@dataclass(frozen=True, slots=True)
+class CanonMove:
+    """One motion of the log in machine mm (degrees for A B C).
+
+    ``kind``: ``RAPID``, ``LINE``, ``ARC`` or ``DWELL``; ``end``: X Y Z A B C; ``tol``: the rounding
+    bound of the linear coordinates (mm); ``rotation``/``direction``/``centre``/``plane`` for arcs
+    (``direction`` is LinuxCNC's signed turn count: > 0 counterclockwise, ``abs - 1`` full turns);
+    ``dwell_s`` for dwells.
+    """
+
+    kind: str
+    end: tuple[Fraction, ...]
+    tol: Fraction
+    direction: int = 0
+    centre: tuple[Fraction, Fraction] | None = None
+    plane: str = "XY"
+    dwell_s: Fraction | None = None
+    unit: Fraction = Fraction(1)  # mm per program unit when it was printed
+    rotation: Fraction = Fraction(0)  # the XY rotation in force (degrees)
+
+    def to_json(self) -> list:
+        """A compact row: trailing zero axes and the usual bound (0.00005) left out."""
+        end = list(self.end)
+        while len(end) > 3 and not end[-1]:
+            end.pop()
+        row: list = [self.kind, [_dec(v) for v in end], "" if self.tol == HALF_DIGIT else _dec(self.tol)]
+        if self.kind == "ARC":
+            assert self.centre is not None
+            row += [self.direction, [_dec(v) for v in self.centre], self.plane]
+        if self.kind == "DWELL":
+            row += [_dec(self.dwell_s or Fraction(0))]
+        return row
+
+    @classmethod
+    def from_json(cls, row: list) -> CanonMove:
+        end = tuple(Fraction(v) for v in row[1]) + (Fraction(0),) * (6 - len(row[1]))
+        kind, tol = row[0], Fraction(row[2]) if row[2] else HALF_DIGIT
+        if kind == "ARC":
+            return cls(kind, end, tol, int(row[3]), (Fraction(row[4][0]), Fraction(row[4][1])), row[5])
+        if kind == "DWELL":
+            return cls(kind, end, tol, dwell_s=Fraction(row[3]))
+        return cls(kind, end, tol)
+
+
+def _dec(v: Fraction) -> str:
+    """A value of the log as text: exact when it is a short decimal, else 9 decimals (rotated doubles)."""
+    d = v.denominator
+    while d % 2 == 0:
+        d //= 2
+    while d % 5 == 0:
+        d //= 5
+    if d == 1 and v.denominator <= 10**9:
+        s = f"{float(v):.9f}" if v.denominator > 1 else str(v.numerator)
+        return s.rstrip("0").rstrip(".") if "." in s else s
+    return f"{float(v):.9f}"
+
+
+def _num(s: str) -> Fraction:
+    return Fraction(s.strip())
+
+
+def canon_motion(log: str) -> list[CanonMove]:
+    """Motions of an ``rs274 -g`` log in machine mm, each with its rounding bound.
+
+    >>> log = '''  1 N..... USE_LENGTH_UNITS(CANON_UNITS_INCHES)
+    ...   2 N..... SET_G5X_OFFSET(1, 1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+    ...   3 N..... STRAIGHT_FEED(1.0000, 2.0000, 0.0000, 0.0000, 0.0000, 0.0000)'''
+    >>> m = canon_motion(log)[0]
+    >>> m.kind, m.end[:3], m.tol
+    ('LINE', (Fraction(254, 5), Fraction(254, 5), Fraction(0, 1)), Fraction(127, 50000))
+    """
+    unit = Fraction(1)
+    g5x = [Fraction(0)] * 6
+    g92 = [Fraction(0)] * 6
+    tlo = [Fraction(0)] * 6
+    # rounding bound (mm) of each offset component
+    g5x_e = [Fraction(0)] * 6
+    g92_e = [Fraction(0)] * 6
+    tlo_e = [Fraction(0)] * 6
+    plane = "XY"
+    rotation = Fraction(0)
+    moves: list[CanonMove] = []
+
+    def place(x: Fraction, y: Fraction) -> tuple[Fraction, Fraction]:
+        """Machine XY of program XY (mm, G92 not yet added): rotate(program + G92) + G5x + tool."""
+        x, y = x + g92[0], y + g92[1]
+        if rotation:
+            t = math.radians(float(rotation))
+            c, s = math.cos(t), math.sin(t)
+            x, y = Fraction(float(x) * c - float(y) * s), Fraction(float(x) * s + float(y) * c)
+        return x + g5x[0] + tlo[0], y + g5x[1] + tlo[1]
+
+    def bound(i: int) -> Fraction:
+        e = HALF_DIGIT * unit + g5x_e[i] + g92_e[i] + tlo_e[i]
+        return e * 2 if rotation else e
+
+    def scaled(values: list[Fraction]) -> tuple[list[Fraction], list[Fraction]]:
+        return ([v * unit if i < 3 else v for i, v in enumerate(values)],
+                [(HALF_DIGIT * unit if i < 3 else HALF_DIGIT) if v else Fraction(0) for i, v in enumerate(values)])
+
+    for line in log.splitlines():
+        m = _CALL.match(line)
+        if not m:
+            continue
+        name, args = m.group(1), m.group(2)
+        if name == "USE_LENGTH_UNITS":
+            unit = INCH if "INCHES" in args else Fraction(1)
+        elif name == "SET_G5X_OFFSET":
+            g5x, g5x_e = scaled([_num(a) for a in args.split(",")[1:7]])
+        elif name == "SET_G92_OFFSET":
+            g92, g92_e = scaled([_num(a) for a in args.split(",")[:6]])
+        elif name == "SET_XY_ROTATION":
+            rotation = _num(args)
+        elif name == "USE_TOOL_LENGTH_OFFSET":
+            tlo, tlo_e = scaled([_num(a) for a in re.split(r"[ ,]+", args.strip())][:6])
+        elif name == "SELECT_PLANE":
+            plane = {"CANON_PLANE_XY": "XY", "CANON_PLANE_XZ": "XZ", "CANON_PLANE_YZ": "YZ"}.get(args.strip(), args)
+        elif name == "DWELL":
+            prev, ptol = (moves[-1].end, moves[-1].tol) if moves else (tuple([Fraction(0)] * 6), Fraction(0))
+            moves.append(CanonMove("DWELL", prev, ptol, dwell_s=_num(args)))
+        elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED", "STRAIGHT_PROBE", "RIGID_TAP"):
+            off = [g5x[i] + g92[i] + tlo[i] for i in range(6)]
+            v = [_num(a) for a in args.split(",")]
+            tol = max(bound(i) for i in range(3))
+            if name == "ARC_FEED":
+                fe, se, fc, sc, rot, ne, a, b, c = v
+                fa, sa, na = {"XY": ("X", "Y", "Z"), "XZ": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}[plane]
+                prog = {fa: fe, sa: se, na: ne, "A": a, "B": b, "C": c}
+                pt = [prog[ax] * (unit if i < 3 else 1) + off[i] for i, ax in enumerate(AXES6)]
+                if rotation:
+                    if plane != "XY":
+                        raise ValueError("arc outside XY with rotation")
+                    pt[0], pt[1] = place(prog["X"] * unit, prog["Y"] * unit)
+                    centre = place(fc * unit, sc * unit)
+                else:
+                    centre = (fc * unit + off[AXES6.index(fa)], sc * unit + off[AXES6.index(sa)])
+                moves.append(CanonMove("ARC", tuple(pt), tol, int(rot), centre, plane, unit=unit, rotation=rotation))
+            else:
+                pt = [x * (unit if i < 3 else 1) + off[i] for i, x in enumerate(v[:6])]
+                if rotation:
+                    pt[0], pt[1] = place(v[0] * unit, v[1] * unit)
+                if name == "RIGID_TAP":  # X Y Z only: tap to the point, back to the start (nczones's two LINEs)
+                    prev = moves[-1].end if moves else tuple([Fraction(0)] * 6)
+                    moves.append(CanonMove("LINE", tuple(pt[:3]) + prev[3:], tol, unit=unit, rotation=rotation))
+                    moves.append(CanonMove("LINE", prev, tol, unit=unit, rotation=rotation))
+                    continue
+                kind = {"STRAIGHT_TRAVERSE": "RAPID", "STRAIGHT_FEED": "LINE"}.get(name, name)
+                moves.append(CanonMove(kind, tuple(pt), tol, unit=unit, rotation=rotation))
+    return moves
+
+
+def canon_error(returncode: int, stderr: str) -> tuple[str, str] | None:
+    """(message, offending line text) of a failed run, None for a clean one."""
+    if returncode == 0:
+        return None
+    lines = [ln for ln in stderr.splitlines() if ln.strip() and ln.strip() != "executing"]
+    lines = [ln.replace("executing", "") for ln in lines]
+    message = lines[0] if lines else "rs274 failed"
+    text = lines[1] if len(lines) > 1 else ""
+    return message.strip(), text
+
+
+def error_lines(program: str, text: str) -> tuple[int, ...]:
+    """1-based lines of ``program`` whose text is ``text`` (rs274 names the line by its text only)."""
+    want = text.strip()
+    return tuple(i for i, ln in enumerate(program.splitlines(), 1) if ln.strip() == want)
+
+
+def machine_text(axes: tuple[str, ...], tools_inch: dict[int, Fraction]) -> str:
+    """The nczones machine file of an rs274 run: its axes at machine zero, ``[tool_lengths]`` from the
+    tool table (inches, so x 25.4)."""
+    rapid = "\n".join(f'{a} = "10000"' for a in axes)
+    ref = "\n".join(f'{a} = "0"' for a in axes)
+    tools = "\n".join(f'H{n} = "{_dec(z * INCH)}"' for n, z in sorted(tools_inch.items()))
+    names = ", ".join(f'"{a}"' for a in axes)
+    return (f'[machine]\naxes = [{names}]\npulse = "0.0001"\n[machine.rapid]\n{rapid}\n'
+            f"[machine.reference]\n{ref}\n[tool_lengths]\n{tools}\n")
+
+
+def tool_table(tools_inch: dict[int, Fraction]) -> str:
+    """The ``rs274 -t`` tool table of the same tools.
+
+    The standalone interpreter starts with its current pocket at the table's first entry, so ``G43``
+    without H or a tool change would read that tool, and ``G10 L1`` to it would also load it: a first
+    entry T99 of length 0 the programs never name stands for the empty spindle."""
+    return "T99 P99 Z0 D0.1 ;\n" + "".join(f"T{n} P{n} Z{_dec(z)} D0.1 ;\n" for n, z in sorted(tools_inch.items()))
+
+
+@dataclass(frozen=True, slots=True)
+class Outcome:
+    """How nczones and the log compare: ``match``, ``unknown`` (nczones stopped where the log goes on;
+    the motion before it matched), ``path`` (a motion differs), ``missed-error`` (LinuxCNC refuses, nczones
+    runs past), ``false-error`` (nczones refuses what LinuxCNC runs), ``error-line`` (both refuse, on
+    different lines)."""
+
+    status: str
+    detail: str = ""
+
+
+def nczones_motion(program: str, machine: Machine):
+    """(segments, error, unsupported) of nczones on the program (DWELLs included)."""
+    run = interpret_text(program, machine, file="prog.ngc")
+    segs = []
+    error = None
+    try:
+        for chunk in run:
+            segs.extend(chunk.segments())
+    except GcodeError as exc:
+        error = exc
+    return segs, error, tuple(run.unsupported)
+
+
+def _moving(items, kind, end, start, tol):
+    """Drop straight moves that end where they start (nczones leaves some out, LinuxCNC prints them)."""
+    out = []
+    for it in items:
+        if kind(it) in ("RAPID", "LINE") and start(it) is not None and all(abs(a - b) <= tol for a, b in zip(start(it), end(it))):
+            continue
+        out.append(it)
+    return out
+
+
+def _canon_moving(moves: list[CanonMove], names: tuple[str, ...]) -> list[CanonMove]:
+    out = []
+    prev = tuple([Fraction(0)] * 6)
+    for mv in moves:
+        if mv.kind in ("RAPID", "LINE") and all(abs(mv.end[AXES6.index(a)] - prev[AXES6.index(a)]) <= mv.tol
+                                                for a in names):
+            prev = mv.end
+            continue
+        prev = mv.end
+        out.append(mv)
+    return out
+
+
+def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple[str, str] | None) -> Outcome:
+    """Hold nczones's interpretation of ``program`` to the log's motions and error."""
+    segs, err, unsupported = nczones_motion(program, machine)
+    names = machine.axis_names
+    segs = _moving(segs, lambda s: s.kind.name, lambda s: tuple(s.end[names.index(a)] for a in names),
+                   lambda s: s.start and tuple(s.start[names.index(a)] for a in names), Fraction(0))
+    moves = _canon_moving(moves, names)
+    n = min(len(segs), len(moves))
+    for k in range(n):
+        s, mv = segs[k], moves[k]
+        where = f"motion {k} (line {s.span.line if s.span else '?'})"
+        kind = s.kind.name
+        if kind != mv.kind:
+            return Outcome("path", f"{where}: {kind} vs rs274 {mv.kind}")
+        for a in names:
+            i = AXES6.index(a)
+            e, x = s.end[names.index(a)], mv.end[i]
+            t = mv.tol if i < 3 else HALF_DIGIT * 2
+            if abs(e - x) > t + Fraction(1, 10**9):
+                return Outcome("path", f"{where} {kind} axis {a}: {float(e):.5f} vs rs274 {float(x):.5f}")
+        if kind == "ARC":
+            assert mv.centre is not None
+            turns = abs(mv.direction) - 1
+            if (mv.direction < 0) != s.clockwise or turns != s.turns or s.plane.name != mv.plane:
+                return Outcome("path", f"{where}: arc cw={s.clockwise} turns={s.turns} {s.plane.name} vs rs274 "
+                                       f"{mv.direction} {mv.plane}")
+            if s.centre is not None:
+                for c, x in zip(s.centre, mv.centre):
+                    if abs(c - x) > mv.tol * 2 + Fraction(1, 10**9):
+                        return Outcome("path", f"{where}: centre {float(c):.5f} vs rs274 {float(x):.5f}")
+        if kind == "DWELL" and s.dwell_s is not None and mv.dwell_s is not None:
+            if abs(s.dwell_s - mv.dwell_s) > HALF_DIGIT:
+                return Outcome("path", f"{where}: dwell {s.dwell_s} vs rs274 {mv.dwell_s}")
+    if unsupported:
+        if len(segs) > len(moves):
+            return Outcome("path", f"{len(segs)} motions before unknown, rs274 has {len(moves)}")
+        return Outcome("unknown", unsupported[0].render())
+    if err is not None:
+        span = err.diagnostics[0].span
+        line = span.line if span is not None else None
+        first = err.render().splitlines()[0]
+        if error is None:
+            return Outcome("false-error", first)
+        lines = error_lines(program, error[1])
+        if lines and line not in lines:
+            return Outcome("error-line", f"nczones: {first} / rs274 lines {lines}: {error[0]}")
+        return Outcome("match", f"both refuse: {error[0]}")
+    if len(segs) != len(moves):
+        extra = f"; rs274 error: {error[0]} at {error[1]!r}" if error else ""
+        return Outcome("missed-error" if error and len(segs) > len(moves) else "path",
+                       f"{len(segs)} motions, rs274 {len(moves)}{extra}")
+    if error is not None:
+        return Outcome("missed-error", f"rs274: {error[0]} at {error[1]!r}")
+    return Outcome("match")
+
+
+def parse(text: str) -> Machine:
+    return parse_machine(text)
