@@ -101,7 +101,7 @@ def test_rotation_stops_the_fast_path_and_both_paths_agree():
 def test_what_is_not_modelled_under_rotation_is_unknown():
     for text, code in (("G10 L2 P1 R30\nG18 G2 X1 Z1 I1 F100\n", "G18 arc"),
                        ("G10 L2 P1 R30\nG0 Z5\nG81 X1 Y1 Z-1 R1 F100\n", "G81"),
-                       ("G10 L2 P1 R30\nG10 L20 P1 X1 R10\n", "G10 L20 R")):
+                       ("G0 X1\nG92 X0\nG10 L2 P1 R30\n", "G10 L2 R")):
         run = interpret_text(text, MILL)
         list(run.segments())
         assert run.status == "unknown" and run.unsupported[0].code == code, (text, run.unsupported)

@@ -51,7 +51,7 @@ def test_g33_1_taps_to_the_end_and_returns_to_the_start():
 
 
 def test_g91_g33_1_is_relative_to_the_start():
-    segs = segments_text("G0 X0 Y0 Z1\nG91 G33.1 Z-2 K1\nG33.1 Z-3 K1\n", MILL)
+    segs = segments_text("G0 X0 Y0 Z1 M3 S100\nG91 G33.1 Z-2 K1\nG33.1 Z-3 K1\n", MILL)
     assert [s.end[2] for s in segs[1:]] == [F(49), F(51), F(48), F(51)]
 
 
@@ -68,7 +68,7 @@ def test_g84_in_g18_and_g19_moves_as_linuxcnc_really_does():
     # LinuxCNC's G84 outside G17 feeds with the other vertical plane's axis order (its canon logs
     # tests/interp/g84/g18, g19); the next move starts where the machine is, aimed from where
     # the interpreter believes it is.
-    text = "G18 G98 G0 X0 Y2 Z0\nG84 X1 Z1 Y-1 R1 F10\nG0 X5\n"
+    text = "G18 G98 G0 X0 Y2 Z0 M3 S100\nG84 X1 Z1 Y-1 R1 F10\nG0 X5\n"
     segs = [s for s in segments_text(text, MILL) if s.kind is not SegmentKind.DWELL]
     ends = [(s.kind, s.end) for s in segs]
     assert ends == [
@@ -82,7 +82,7 @@ def test_g84_in_g18_and_g19_moves_as_linuxcnc_really_does():
     assert segs[-1].start == (F(102), F(1), F(51))
     assert all(a.end == b.start for a, b in zip(segs, segs[1:]))  # the path stays continuous
 
-    segs = [s for s in segments_text("G19 G99 G0 X2 Y0 Z0\nG84 Y1 Z2 X0.5 R3 F10\n", MILL)
+    segs = [s for s in segments_text("G19 G99 G0 X2 Y0 Z0 M3 S100\nG84 Y1 Z2 X0.5 R3 F10\n", MILL)
             if s.kind is SegmentKind.LINE]
     # G19: X <- Z value, Y <- the X-direction depth, Z <- Y value
     assert [s.end for s in segs] == [(F(102), F("0.5"), F(51)), (F(102), F(3), F(51))]

@@ -165,8 +165,9 @@ def canon_motion(log: str) -> list[CanonMove]:
                 prog = {fa: fe, sa: se, na: ne, "A": a, "B": b, "C": c}
                 pt = [prog[ax] * (unit if i < 3 else 1) + off[i] for i, ax in enumerate(AXES6)]
                 if rotation:
-                    if plane != "XY":
-                        raise ValueError("arc outside XY with rotation")
+                    if plane != "XY":  # rotated outside its plane: not followed (nczones: unknown); stop here
+                        moves.append(CanonMove("UNPARSED", tuple(pt), tol))
+                        break
                     pt[0], pt[1] = place(prog["X"] * unit, prog["Y"] * unit)
                     centre = place(fc * unit, sc * unit)
                 else:
@@ -277,6 +278,11 @@ def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple
     segs = _moving(segs, lambda s: s.kind.name, lambda s: tuple(s.end[names.index(a)] for a in names),
                    lambda s: s.start and tuple(s.start[names.index(a)] for a in names), Fraction(0))
     moves = _canon_moving(moves, names)
+    if any(m.kind == "UNPARSED" for m in moves):
+        cut = next(k for k, m in enumerate(moves) if m.kind == "UNPARSED")
+        moves = moves[:cut]
+        if not unsupported:
+            return Outcome("oracle-gap", f"rs274 moves on with an arc outside XY under rotation after motion {cut}")
     n = min(len(segs), len(moves))
     for k in range(n):
         s, mv = segs[k], moves[k]

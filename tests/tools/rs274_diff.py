@@ -105,8 +105,10 @@ class Generator:
         r = self.r
         roll = r.randrange(11)
         if roll == 0:
+            # rs274's canon layer hands the tool length back unconverted after G20/G21
+            # (saicanon GET_EXTERNAL_TOOL_LENGTH_ZOFFSET), real LinuxCNC converts it: switch without one
             self.units = r.choice(["G20", "G21"])
-            return [self.units]
+            return ["G49", self.units]
         if roll == 1:
             self.dist = r.choice(["G90", "G91"])
             return [self.dist]
@@ -391,7 +393,7 @@ def cmd_record(args) -> int:
             moves, error, _ = run_rs274(text, tools, work)
             machine = parse_machine(machine_text(axes, tools))
             o = compare(text, machine, moves, error)
-            if o.status == "match" and (len(moves) >= 5 or error):
+            if o.status == "match" and (len(moves) >= 5 or error) and all(m.kind != "UNPARSED" for m in moves):
                 name = f"g{seed:05d}"
                 (DATA / f"{name}.ngc").write_text(text)
                 index[name] = {"axes": list(axes), "tools_inch": {str(k): str(v) for k, v in tools.items()},
