@@ -417,7 +417,16 @@ class Interpreter:
         off = [g5[i] + self.g92[i] for i in range(self.naxes)]
         if self.tool_axis is not None:
             off[self.tool_axis] += self.tlo
+        old = getattr(self, "off", None)
         self.off = off
+        if self.cycle_il is not None and old is not None and off[self._cycle_il_axis] != old[self._cycle_il_axis]:
+            # LinuxCNC keeps a modal cycle's initial level in program coordinates (cycle_il): a tool length,
+            # G92 or work offset change between hole blocks moves it with the offsets
+            self.cycle_il += off[self._cycle_il_axis] - old[self._cycle_il_axis]
+            self._cycle_il_deps = {}
+            if self.track:
+                self.unknown("canned cycle", "an offset change while a canned cycle is modal moves its initial "
+                              "level; not followed with parameter ranges")
         if self.rot[self.wcs] or self.prerotation_xy is not None:
             self._update_rotation()
         if self.track:
@@ -1789,6 +1798,7 @@ class Interpreter:
         current_d = self.dep_pos[ic] if track else nodeps
         if self.cycle_il is None:
             self.cycle_il = current_cc
+            self._cycle_il_axis = ic
             self._cycle_il_deps = dict(current_d)
         old_cc, old_d = self.cycle_il, self._cycle_il_deps if track else nodeps
         wd = {self.axes[i]: aw for i, aw in axis_words}
@@ -1872,6 +1882,7 @@ class Interpreter:
 
     last_cycle: int | None = None
     _cycle_il_deps: dict = {}
+    _cycle_il_axis = 0
 
     def _level_lt(self, a: tuple[Fraction, dict], b: tuple[Fraction, dict], i: int, what: str) -> bool:
         """``a < b`` for two levels ``(value, dependencies)`` on axis ``i``: the branch of the path.

@@ -191,3 +191,18 @@ def test_the_lanes_see_spindle_and_feed_words_of_long_runs():
         for fast in (True, False):
             err = _error(text, fast)
             assert err.diagnostics[0].span.line == line, (head, tail, fast, err.render())
+
+
+def test_a_tool_length_change_between_holes_moves_the_initial_level_with_it():
+    """LinuxCNC keeps a modal cycle's initial level in program coordinates (``cycle_il``): after ``G43.1 Z-8``
+    the next hole's first move goes up to R = 2 at the old hole, in program terms, which is machine Z -6, and
+    the tool travels to the next hole there. nczones kept the level in machine coordinates and had it travel
+    at machine Z 2 (8 mm above where it runs)."""
+    rows = motion("F100\nG81 X5 Y0 Z-3 R2\nG43.1 Z-8\nX10\nM2\n")
+    assert rows[4:] == _rows([("RAPID", 5, 0, -6), ("RAPID", 10, 0, -6), ("LINE", 10, 0, -11), ("RAPID", 10, 0, -6)])
+
+
+def test_a_g92_change_between_holes_moves_the_g98_level_with_it():
+    rows = motion("F100\nG98 G81 X5 Y0 Z-3 R-1\nG92 Z4\nX10\nM2\n")
+    # rs274: to (10, 0, 4), (10, 0, -1), (10, 0, -3), back to the initial level 0, all with G92 Z -4
+    assert rows[4:] == _rows([("RAPID", 10, 0, 0), ("RAPID", 10, 0, -5), ("LINE", 10, 0, -7), ("RAPID", 10, 0, -4)])
