@@ -125,7 +125,8 @@ class Generator:
             f = self.feed(force=r.random() < 0.9)
             return [self.feed_mode + f]
         if roll == 6:
-            return [r.choice(["M3 S1000", "M4 S500", "M5", "S2000", "M8", "M9", "M7", "G64 P0.01", "G61", "G61.1"])]
+            return [r.choice(["M3 S1000", "M4 S500", "M5", "S2000", "M8", "M9", "M7", "G64 P0.01", "G61", "G61.1",
+                              "M70", "M72", "M19 R90"])]
         if roll == 7:
             return [f"F{r.choice(['100', '80', '2000'])}"]
         if roll == 8:
@@ -217,7 +218,12 @@ class Generator:
                               f"G30 {self.axis_words(1)}"])]
         if roll == 10:
             return [f"G53 G{r.choice([0, 1])} {self.axis_words()}{self.feed()}"]
-        return [f"G4 P{r.choice(['0.5', '1', '0', '2.25'])}"]
+        if r.random() < 0.5:
+            return [f"G4 P{r.choice(['0.5', '1', '0', '2.25', '[#1 * #1]'])}"]
+        if self.dist == "G91":
+            return [f"G33 {self.axis_words(r.randint(1, 2))} K{self.num(0.5, 2, 1)}",
+                    f"G33.1 Z{self.num(-5, -0.5)} K{self.num(0.5, 2, 1)}"][: r.randint(1, 2)]
+        return [r.choice([f"G33 Z[#<_z>+{self.num(-5, -0.5)}] K1", f"G33.1 X[#<_x>] Z[#<_z>+{self.num(-5, -0.5)}] K1.5"])]
 
     def canned(self) -> list[str]:
         r = self.r
