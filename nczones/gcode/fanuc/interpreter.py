@@ -205,6 +205,9 @@ class FanucInterpreter(Interpreter):
         self.tlo_sign = 1
         self.h_geometry = {k: v for k, v in machine.tool_lengths.items()}
         self.h_wear: dict[int, Fraction] = {}
+        #: geometry registers the program set (G10 L10 in G90, #11001 =): no longer the machine file's value, so
+        #: a --param range of that H does not reach them
+        self.h_set: set[int] = set()
         self.d_geometry = {k: v / 2 for k, v in machine.tool_diameters.items()}
         self.d_wear: dict[int, Fraction] = {}
         self._tlo_shift: Fraction | None = None  # a tool length change the block's move must carry out
@@ -476,8 +479,9 @@ class FanucInterpreter(Interpreter):
             self.tlo_register = reg
             self.tlo_sign = sign
             self.tool_register = reg
-            self.dep_tlo = {f"H{reg}": sign} if reg != 0 else {}
-            if sign < 0 and self.track and reg != 0:
+            ranged = reg != 0 and reg not in self.h_set
+            self.dep_tlo = {f"H{reg}": sign} if ranged else {}
+            if sign < 0 and self.track and ranged:
                 self.unknown("G44", "parameter ranges on a tool length used with G44 (subtracted) are not "
                               "modelled", w)
         self.recompute_offsets()
@@ -682,6 +686,8 @@ class FanucInterpreter(Interpreter):
             v = self.length_mm(rw.value)
             number = int(P)
             table[number] = v if self.absolute else table.get(number, _ZERO) + v
+            if L == 10 and self.absolute:
+                self.h_set.add(number)
         elif L in (1, 3, 50, 52):
             self.unknown(f"G10 L{L}", f"G10 L{L} ({'tool offset memory A' if L == 1 else 'tool life data' if L == 3 else 'parameter input'}) is not modelled", lw)
         else:

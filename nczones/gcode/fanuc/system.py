@@ -120,6 +120,8 @@ class MacroState(Protocol):
     @property
     def h_wear(self) -> dict[int, Fraction]: ...
     @property
+    def h_set(self) -> set[int]: ...
+    @property
     def d_geometry(self) -> dict[int, Fraction]: ...
     @property
     def d_wear(self) -> dict[int, Fraction]: ...
@@ -302,6 +304,8 @@ def write(it: MacroState, n: int, value: tuple) -> None:
     if tool is not None:
         table, reg, radius = tool
         table[reg] = _mm(it, _exact(value) if value is not VACANT else _ZERO, None)
+        if table is it.h_geometry:
+            it.h_set.add(reg)
         return
     if n in (3001, 3002):
         it.clock[n] = value

@@ -1,0 +1,119 @@
+"""Metamorphic soundness of `safe` in the Fanuc dialect (tests/contract/fanuc_metamorphic.py says what each
+relation is): ranges vs concrete values, margins, state reads, LinuxCNC vs Fanuc, block delete.
+
+CI size: a few dozen examples in all (derandomized); ``HYPOTHESIS_PROFILE=long`` runs 1,000 per relation,
+``NCZONES_FANUC_METAMORPHIC_EXAMPLES="ranges=500,margins=250"`` sets the counts of a seeded chunk
+(specs/contract.md has the runs).
+"""
+
+import os
+
+from hypothesis import given, settings
+
+from .fanuc_metamorphic import (
+    check_block_delete,
+    check_fanuc_state_reads,
+    check_translation,
+    fanuc_delete_cases,
+    fanuc_margin_cases,
+    fanuc_range_cases,
+    fanuc_read_cases,
+    twin_cases,
+)
+from .metamorphic import check_margins, check_ranges
+
+CI_EXAMPLES = {"ranges": 16, "margins": 6, "reads": 8, "translation": 10, "delete": 6}
+LONG_EXAMPLES = {"ranges": 1_000, "margins": 500, "reads": 500, "translation": 500, "delete": 500}
+
+
+def examples(name: str) -> int:
+    text = os.environ.get("NCZONES_FANUC_METAMORPHIC_EXAMPLES", "")
+    chunk = {k.strip(): int(v) for k, v in (item.split("=") for item in text.split(",") if item.strip())}
+    if name in chunk:
+        return chunk[name]
+    return LONG_EXAMPLES[name] if settings.default.max_examples > 100 else CI_EXAMPLES[name]
+
+
+@settings(max_examples=examples("ranges"))
+@given(fanuc_range_cases())
+def test_a_fanuc_range_verdict_holds_at_its_concrete_values(case):
+    machine, text, params = case
+    check_ranges(machine, text, params)
+
+
+@settings(max_examples=examples("margins"))
+@given(fanuc_margin_cases())
+def test_a_fanuc_margin_is_clearance(case):
+    machine, text, margin, shift = case
+    check_margins(machine, text, margin, shift)
+
+
+@settings(max_examples=examples("reads"))
+@given(fanuc_read_cases())
+def test_fanuc_system_variable_reads_verify_like_their_values(case):
+    machine, text = case
+    check_fanuc_state_reads(machine, text)
+
+
+@settings(max_examples=examples("translation"))
+@given(twin_cases())
+def test_the_same_motion_in_linuxcnc_and_fanuc_verifies_alike(case):
+    machine, linuxcnc, fanuc = case
+    check_translation(machine, linuxcnc, fanuc)
+
+
+@settings(max_examples=examples("delete"))
+@given(fanuc_delete_cases())
+def test_block_delete_both_is_the_worst_of_off_and_on(case):
+    machine, text = case
+    check_block_delete(machine, text)
+
+
+# ----------------------------------------------------------------------------- findings
+
+_MILL = """
+[machine]
+name = "fanuc finding"
+dialect = "fanuc"
+axes = ["X", "Y", "Z"]
+pulse = "0.001"
+rapid_mode = "linear"
+[machine.rapid]
+X = "6000"
+Y = "6000"
+Z = "6000"
+[machine.reference]
+X = "50"
+Y = "50"
+Z = "190"
+[offsets]
+G54 = { X = "0", Y = "0", Z = "0" }
+[tool_lengths]
+H1 = "50"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "0", Y = "0", Z = "0" }
+max = { X = "100", Y = "100", Z = "200" }
+"""
+
+
+def test_a_tool_length_the_program_set_does_not_follow_a_range_of_its_register():
+    """Finding (fixed): after ``G10 L10 P1 R80.`` (or ``#11001 = 80.``) the geometry of H1 is 80 whatever the
+    machine file says, but ``G43 H1`` still carried a dependency on the ``--param H1`` range, so the range
+    verification moved the tool by the range's deviation: ``H1=40..44`` on a machine file H1 = 50 proved
+    Z 197..201 instead of the real 199 and reported an `unsafe` that no value of H1 replays."""
+    from nczones.machine import parse_machine
+    from nczones.prover import verify_text
+
+    machine = parse_machine(_MILL, "finding.toml")
+    for write in ("G10 L10 P1 R80.", "#11001 = 80."):
+        text = f"G21 G90 G17 G40 G49 G54 G80 G94 F600.\n{write}\nG43 H1 Z119.\nM30\n"
+        for params in ((), ("H1=40..44",), ("H1=50..60",)):
+            assert verify_text(text, machine, params=params).verdict.label == "safe", (write, params)
+        check_ranges(machine, text, ("H1=40..44",))
+    # in G91 the program adds to the machine file's value: the range still applies (50..60 + 30 + 119)
+    text = "G21 G90 G17 G40 G49 G54 G80 G94 F600.\nG91 G10 L10 P1 R30.\nG90\nG43 H1 Z119.\nM30\n"
+    assert verify_text(text, machine).verdict.label == "safe"
+    assert verify_text(text, machine, params=("H1=50..60",)).verdict.label == "unsafe"
+    check_ranges(machine, text, ("H1=50..60",))
