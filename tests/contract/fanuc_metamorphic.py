@@ -321,25 +321,50 @@ def _local_block(draw, machine: Machine, s: _FanucState) -> list[str]:
 
 @st.composite
 def _rotate_block(draw, machine: Machine, s: _FanucState) -> list[str]:
-    """G68 about a point by a multiple of 90 degrees (targets aimed exactly) or by 30/45 (not aimed), one or
-    two absolute moves under it, G69, and an absolute move."""
-    angle = draw(st.sampled_from((90, 180, 270, -90, 30, 45)))
-    centre = {a: _vals(draw, F(-10), F(60)) for a in "XY"}
-    out = [f"G90 G68 X{_fd(centre['X'])} Y{_fd(centre['Y'])} R{angle}."]
-    quarter = {90: (0, 1, -1, 0), 180: (-1, 0, 0, -1), 270: (0, -1, 1, 0), -90: (0, -1, 1, 0)}
+    """A programmable transform about a centre (written, or the current point when its words are left out):
+    G68 by a multiple of 90 degrees (targets aimed exactly) or by 30/45 (not aimed), G51 scaling by P, G51.1
+    mirror image; one or two absolute moves under it, the cancel, and an absolute move."""
+    here = {a: s.pos[a] - s.off(a) for a in "XY"}
+    written = draw(st.booleans())
+    centre = {a: _vals(draw, F(-10), F(60)) for a in "XY"} if written else here
+    at = f"X{_fd(centre['X'])} Y{_fd(centre['Y'])} " if written else ""
+    kind = draw(st.sampled_from(("G68", "G68", "G51", "G51.1")))
+    if kind == "G68":
+        angle = draw(st.sampled_from((90, 180, 270, -90, 30, 45)))
+        out = [f"G90 G68 {at}R{angle}."]
+        quarter = {90: (0, 1, -1, 0), 180: (-1, 0, 0, -1), 270: (0, -1, 1, 0), -90: (0, -1, 1, 0)}
+
+        def inverse(w):  # the program point whose rotation about the centre is the workpiece point w
+            if angle not in quarter:
+                return None
+            c, m, n, d = quarter[angle]
+            return {"X": c * w["X"] + m * w["Y"], "Y": n * w["X"] + d * w["Y"]}
+        cancel = "G69"
+    elif kind == "G51":
+        factor = draw(st.sampled_from((F(2), F(1, 2), F(3, 2))))
+        out = [f"G90 G51 {at}P{_fd(factor)}"]
+
+        def inverse(w):
+            return {a: w[a] / factor for a in "XY"}
+        cancel = "G50"
+    else:
+        axes = draw(st.sampled_from(("X", "Y", "XY")))
+        out = ["G90 G51.1 " + " ".join(f"{a}{_fd(centre[a])}" for a in axes)]
+
+        def inverse(w):
+            return {a: -w[a] if a in axes else w[a] for a in "XY"}
+        cancel = "G50.1"
     for _ in range(draw(st.integers(1, 2))):
         target = {a: draw(_machine_value(machine, a, s)) for a in "XY"}
-        # the program point whose rotation about the centre lands on the target (workpiece system)
-        wx, wy = target["X"] - s.off("X") - centre["X"], target["Y"] - s.off("Y") - centre["Y"]
-        if angle in quarter:
-            c, m, n, d = quarter[angle]  # inverse rotation matrix rows (c m; n d)
-            px, py = c * wx + m * wy + centre["X"], n * wx + d * wy + centre["Y"]
-            s.pos.update(target)
+        w = {a: target[a] - s.off(a) - centre[a] for a in "XY"}
+        p = inverse(w)
+        if p is None or any(1000 % (p[a] + centre[a]).denominator for a in "XY"):
+            p = w  # not aimed
         else:
-            px, py = wx + centre["X"], wy + centre["Y"]
-        s.moved("XY", s.frame, target if angle in quarter else None)
-        out.append(f"G90 G{draw(st.sampled_from((0, 1)))} X{_fd(px)} Y{_fd(py)}")
-    out.append("G69")
+            s.pos.update(target)
+        s.moved("XY", s.frame, target if p is not w else None)
+        out.append(f"G90 G{draw(st.sampled_from((0, 1)))} X{_fd(p['X'] + centre['X'])} Y{_fd(p['Y'] + centre['Y'])}")
+    out.append(cancel)
     out.append(_move(draw, machine, s, "XY", s.frame, "G0"))
     return out
 

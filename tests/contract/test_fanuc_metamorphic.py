@@ -117,3 +117,34 @@ def test_a_tool_length_the_program_set_does_not_follow_a_range_of_its_register()
     assert verify_text(text, machine).verdict.label == "safe"
     assert verify_text(text, machine, params=("H1=50..60",)).verdict.label == "unsafe"
     check_ranges(machine, text, ("H1=50..60",))
+
+
+def test_a_transform_centre_taken_from_a_ranged_point_is_unknown():
+    """Finding (fixed): ``G68 R90.`` without X Y rotates about the current point, which depends on the
+    start position; the rotated point depends on that centre, but only the point's own dependencies were
+    checked, so over ``start.X=0..1`` the rotated move (X100 at the file's start, 100.5 at start.X = 0.5)
+    was proved `safe` for every value.  The same for a G51 scaling centre.  Now `unknown`, naming the
+    centre; a range the centre does not depend on is proved as before."""
+    from nczones.machine import parse_machine
+    from nczones.prover import verify_text
+
+    machine = parse_machine(_MILL.replace("[machine.reference]", '[machine.start]\nX = "50"\nY = "50"\nZ = "100"\n'
+                                          "[machine.reference]"), "finding.toml")
+    rotated = "G21 G90 G17 G40 G49 G54 G80 G94 F600.\nG68 R90.\nG90 G1 X50. Y0.\nG69\nG90 G0 X50. Y50.\nM30\n"
+    assert verify_text(rotated, machine).verdict.label == "safe"
+    from fractions import Fraction
+
+    from oracles.concrete import machine_at
+
+    moved = machine_at(machine, {"start.X": Fraction(1, 2)})
+    assert verify_text(rotated, moved).verdict.label == "unsafe"
+    over = verify_text(rotated, machine, params=("start.X=0..1",))
+    assert over.verdict.label == "unknown"
+    assert [(r.code, r.span.line if r.span else None) for r in over.reasons] == [("G68", 3)]
+    assert "centre" in over.reasons[0].message
+    assert verify_text(rotated, machine, params=("G54.Z=0..1",)).verdict.label == "safe"
+    check_ranges(machine, rotated, ("start.X=0..1",))
+    scaled = "G21 G90 G17 G40 G49 G54 G80 G94 F600.\nG51 P2.\nG90 G1 X25. Y50. Z50.\nG50\nG90 G0 X50. Y50.\nM30\n"
+    assert verify_text(scaled, machine).verdict.label == "safe"
+    assert verify_text(scaled, moved).verdict.label == "unsafe"
+    assert verify_text(scaled, machine, params=("start.X=0..1",)).verdict.label == "unknown"

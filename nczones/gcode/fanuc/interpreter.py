@@ -224,6 +224,9 @@ class FanucInterpreter(Interpreter):
         self.polar: Polar | None = None
         self.prog: list[Fraction] | None = None  # the program point while a transform is active
         self.prog_deps: list[dict] | None = None
+        #: per axis, the range dependencies of a transform centre taken from the current program point (G68 or
+        #: G51 without the centre's words); kept until every transform is off
+        self.centre_deps: dict[int, dict] = {}
         self._first_after_transform = False  # the first move after G68/G69, G51/G50, ... must be absolute
         self.vars: FanucVariables | None = None
         self.clock = {3001: (0.0, _ZERO), 3002: (0.0, _ZERO)}
@@ -741,6 +744,7 @@ class FanucInterpreter(Interpreter):
         if not active:
             self.prog = None
             self.prog_deps = None
+            self.centre_deps = {}
 
     def _program(self) -> list[Fraction]:
         """The program point (only while a transform is active)."""
@@ -758,7 +762,15 @@ class FanucInterpreter(Interpreter):
         for j, aw in axis_words:
             if j == i:
                 return self._mm(aw.value, i)
+        if self.track and self.prog_deps is not None and self._on_a_range(self.prog_deps[i], i):
+            self.centre_deps[i] = dadd(self.centre_deps.get(i, {}), self.prog_deps[i])
         return self._program()[i]
+
+    def _on_a_range(self, deps: dict, i: int) -> bool:
+        """Whether a coordinate on axis ``i`` with dependencies ``deps`` depends on a ranged parameter."""
+        if not self.ranged:
+            return bool(deps)
+        return any(c and (k if k.startswith("H") else f"{k}.{self.axes[i]}") in self.ranged for k, c in deps.items())
 
     def _g68(self, words: Words, axis_words: AxisWords, w: Word) -> Rotation | None:
         a, b, _n = PLANE_AXES[self.plane]
@@ -871,6 +883,10 @@ class FanucInterpreter(Interpreter):
                     if any(pd[j] for j in mixed):
                         self.unknown("G68" if self.rotation is not None else "G51",
                                       "parameter ranges on a point a coordinate transform moves are not modelled")
+                    elif any(self.centre_deps.get(j) for j in mixed):
+                        self.unknown("G68" if self.rotation is not None else "G51",
+                                      "parameter ranges on the centre of a coordinate transform (taken from the "
+                                      "current point: no centre words) are not modelled")
                     deps.append(dict(self.dep_off[i]))
                 else:
                     deps.append(dadd(pd[i], self.dep_off[i]))
