@@ -204,10 +204,17 @@ def _fanuc_block(draw, machine: Machine, s: _FanucState, kind: str, deletes: boo
             s.pos["Z"] = ref["Z"]
             return ["G91 G28 Z0.", "G90"]
         mid = {a: draw(_machine_value(machine, a, s)) for a in "XY"}
-        s.moved("XY", s.frame)
+        s.moved("XY", s.frame, mid)
         words = f"X{_fd(mid['X'] - s.off('X'))} Y{_fd(mid['Y'] - s.off('Y'))}"
         s.pos.update({"X": ref["X"], "Y": ref["Y"]})
-        return [f"G90 G28 {words}"]
+        out = [f"G90 G28 {words}"]
+        if draw(st.booleans()):  # back through the intermediate point (G29) to a target
+            axes = draw(st.sampled_from(("X", "Y", "XY")))
+            target = {a: draw(_machine_value(machine, a, s)) for a in axes}
+            s.moved(axes, s.frame, target)
+            out.append("G29 " + " ".join(f"{a}{_fd(target[a] - s.off(a))}" for a in axes))
+            s.pos.update(target)
+        return out
     if kind == "tool":
         return draw(_tool_block(machine, s))
     if kind == "offset":
@@ -231,9 +238,18 @@ def _fanuc_block(draw, machine: Machine, s: _FanucState, kind: str, deletes: boo
 def _tool_block(draw, machine: Machine, s: _FanucState) -> list[str]:
     """G43 H / G49 with a Z move in the block; tool length geometry or wear written first (G10 L10/L11 in G90
     or G91, #11001 =, #2001 =)."""
-    choice = draw(st.sampled_from(("H", "H", "G49", "L10", "L10+", "L11", "geo#", "wear#")))
+    choice = draw(st.sampled_from(("H", "H", "G49", "L10", "L10+", "L11", "geo#", "wear#", "G53")))
     n = draw(st.sampled_from((1, 2)))
     out = []
+    if choice == "G53":  # the tool axis moves by the change with a G53 move of the other axes
+        x = draw(_machine_value(machine, "X", s))
+        old = s.tool
+        s.tool, s.register, s.after_home = s.geometry[n] + s.wear[n], n, False
+        s.pos["Z"] += s.tool - old
+        if f"H{n}" not in s.fixed:
+            s.used.add(f"H{n}")
+        s.pos["X"] = x
+        return [f"G43 H{n} G53 X{_fd(x)}"]
     if choice == "G49":
         s.tool, s.register, s.after_home = F0, None, False
         z = draw(_machine_value(machine, "Z", s, tip=True))

@@ -148,3 +148,33 @@ def test_a_transform_centre_taken_from_a_ranged_point_is_unknown():
     assert verify_text(scaled, machine).verdict.label == "safe"
     assert verify_text(scaled, moved).verdict.label == "unsafe"
     assert verify_text(scaled, machine, params=("start.X=0..1",)).verdict.label == "unknown"
+
+
+def test_g29_and_g53_legs_carry_their_range_dependencies():
+    """Findings (fixed): the G29 leg to G28's intermediate point was emitted with the dependencies of the
+    reference position (none), so over ``G54.X=0..1`` the intermediate point, which moves with G54, was
+    proved only at the file's value (a wrong `safe`: at G54.X = 0.5 the leg enters a post); and a G53 block
+    that also carries out a G43 tool length change moved the tool axis without the H range's dependency
+    (a wrong `safe` over ``H1=50..51``)."""
+    from fractions import Fraction
+
+    from nczones.machine import parse_machine
+    from nczones.prover import verify_text
+
+    from oracles.concrete import machine_at
+
+    machine = parse_machine(
+        _MILL.replace("[machine.reference]", '[machine.start]\nX = "50"\nY = "10"\nZ = "100"\n[machine.reference]')
+        + '[[zones]]\nname = "post"\nkind = "box"\nforbid = true\nmin = { X = "90.2", Y = "45" }\n'
+        'max = { X = "95", Y = "55" }\n', "finding.toml")
+    g29 = "G21 G90 G17 G40 G49 G54 G80 G94 F600.\nG90 G28 X90. Y10.\nG29 X50.\nM30\n"
+    assert verify_text(g29, machine).verdict.label == "safe"
+    assert verify_text(g29, machine_at(machine, {"G54.X": Fraction(1, 2)})).verdict.label == "unsafe"
+    over = verify_text(g29, machine, params=("G54.X=0..1",))
+    assert over.verdict.label == "unsafe" and {(v.line, v.zone) for v in over.violations} == {(3, "post")}
+    check_ranges(machine, g29, ("G54.X=0..1",))
+    g53 = "G21 G90 G17 G40 G49 G54 G80 G94 F600.\nG90 G0 Z150.\nG43 H1 G53 X10.\nM30\n"
+    assert verify_text(g53, machine).verdict.label == "safe"
+    assert verify_text(g53, machine_at(machine, {"H1": Fraction(51)})).verdict.label == "unsafe"
+    assert verify_text(g53, machine, params=("H1=50..51",)).verdict.label == "unsafe"
+    check_ranges(machine, g53, ("H1=50..51",))

@@ -216,6 +216,7 @@ class FanucInterpreter(Interpreter):
         self.references.update(machine.fanuc.references)
         self.after_home: set[int] = set()  # axes returned by G28/G30 while a tool length offset was active
         self.intermediate: list | None = None  # G28/G30's intermediate point (machine), for G29
+        self.intermediate_deps: list[dict] | None = None  # its range dependencies
         self.stops: list = []  # M00/M01 lines, for the report
         # programmable transforms: each acts on the program point (mm, workpiece system) about its centre
         self.rotation: Rotation | None = None
@@ -597,6 +598,8 @@ class FanucInterpreter(Interpreter):
         if self._tlo_shift is not None and self.tool_axis is not None and not any(
                 i == self.tool_axis for i, _ in axis_words):
             end[self.tool_axis] = qadd(end[self.tool_axis], self._tlo_shift)
+            if deps is not None:
+                deps[self.tool_axis] = dadd(deps[self.tool_axis], self._tlo_shift_deps or {})
         self._tlo_shift = None
         for i, _w in axis_words:
             self.after_home.discard(i)
@@ -623,6 +626,7 @@ class FanucInterpreter(Interpreter):
         inter, deps = self._target(axis_words)
         self.emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
         self.intermediate = list(inter)
+        self.intermediate_deps = [dict(d) for d in deps] if deps is not None else None
         end = list(self.pos)
         hdeps = [dict(d) for d in self.dep_pos] if self.track else None
         for i, _aw in axis_words:
@@ -641,9 +645,12 @@ class FanucInterpreter(Interpreter):
         if not axis_words:
             return
         mid = list(self.pos)
+        mid_deps = [dict(d) for d in self.dep_pos] if self.track else None
         for i, _aw in axis_words:
             mid[i] = self.intermediate[i]
-        self.emit(SegmentKind.RAPID, mid, derived="G29 intermediate")
+            if mid_deps is not None:
+                mid_deps[i] = dict(self.intermediate_deps[i]) if self.intermediate_deps is not None else {}
+        self.emit(SegmentKind.RAPID, mid, derived="G29 intermediate", end_deps=mid_deps)
         end, deps = self._target(axis_words)
         self.emit(SegmentKind.RAPID, end, derived="G29", end_deps=deps)
 
