@@ -70,6 +70,8 @@ def fanuc_machines(draw, *, posts_max: int = 2, flat: int = 5) -> tuple[Machine,
     """(machine, its TOML text): a :func:`metamorphic.meta_machines` machine read in the Fanuc dialect."""
     _, text = draw(meta_machines(posts_max=posts_max, flat=flat))
     text = text.replace("[machine]\n", '[machine]\ndialect = "fanuc"\n', 1) + FANUC_SETTINGS
+    if draw(st.integers(0, 3)) == 0:  # parameter 5006#6 TOS = 1: the next tool axis move takes a G43 change
+        text += 'tool_length_motion = "shift"\n'
     return parse_machine(text, "fanuc.toml"), text
 
 
@@ -628,8 +630,9 @@ def check_block_delete(machine: Machine, text: str) -> None:
 @st.composite
 def twin_programs(draw, machine: Machine) -> tuple[str, str]:
     """(LinuxCNC text, Fanuc text), line for line the same motion, in codes both documents give one meaning:
-    G0/G1 in G54/G55 and G53, G91 steps, G2/G3 with I J, G28 with X Y, G43 H / G49 with a Z move, G10 L2 P in
-    G90, G52, G81 with R at or below the initial level, #5221 reads, a WHILE loop, block delete."""
+    G0/G1 in G54/G55 and G53, G91 steps, G2/G3 with I J (end absolute or incremental), G28 with X Y, G43 H /
+    G49 with a Z move, G10 L2 P in G90, G52 or G92 (not both: LinuxCNC shares their registers), G81 with R at
+    or below the initial level, #5221 reads, a WHILE loop, block delete."""
     s = _State(machine)
     lin = ["G21 G90 G17 G40 G49 G54 G80 G94 F600"]
     fan = ["G21 G90 G17 G40 G49 G54 G80 G94 F600."]
@@ -651,6 +654,7 @@ def twin_programs(draw, machine: Machine) -> tuple[str, str]:
         return offsets[s.frame][a] + (g52[a] if a in g52 else 0) + (s.tool if a == "Z" else 0)
 
     loops = 0
+    shifted = False
     for _ in range(draw(st.integers(1, 5))):
         kind = draw(st.sampled_from(("move", "move", "arc", "home", "tool", "offset", "local", "cycle", "read",
                                      "loop")))
@@ -680,8 +684,13 @@ def twin_programs(draw, machine: Machine) -> tuple[str, str]:
                 v = (v[1], -v[0]) if cw else (-v[1], v[0])
             end = (c[0] + v[0] * r, c[1] + v[1] * r)
             both(f"G90 G1 X{_fd(a0['X'] - off('X'))} Y{_fd(a0['Y'] - off('Y'))}")
-            both(f"G{'2' if cw else '3'} X{_fd(end[0] - off('X'))} Y{_fd(end[1] - off('Y'))} "
-                 f"I{_fd(c[0] - a0['X'])} J{_fd(c[1] - a0['Y'])}")
+            if draw(st.booleans()):
+                both(f"G{'2' if cw else '3'} X{_fd(end[0] - off('X'))} Y{_fd(end[1] - off('Y'))} "
+                     f"I{_fd(c[0] - a0['X'])} J{_fd(c[1] - a0['Y'])}")
+            else:  # incremental: the end from the start, I J as always
+                both(f"G91 G{'2' if cw else '3'} X{_fd(end[0] - a0['X'])} Y{_fd(end[1] - a0['Y'])} "
+                     f"I{_fd(c[0] - a0['X'])} J{_fd(c[1] - a0['Y'])}")
+                both("G90")
             s.pos.update({"X": end[0], "Y": end[1]})
         elif kind == "home":
             mid = {a: draw(_machine_value(machine, a, s)) for a in "XY"}
@@ -704,9 +713,17 @@ def twin_programs(draw, machine: Machine) -> tuple[str, str]:
             new = {a: _vals(draw, F(0), F(40)) if a != "Z" else _vals(draw, F(20), F(60), F(1)) for a in axes}
             offsets[name].update(new)
             both(f"G10 L2 P{1 if name == 'G54' else 2} " + " ".join(f"{a}{_fd(new[a])}" for a in axes))
-        elif kind == "local":
-            g52.update({a: _vals(draw, F(-10), F(10)) for a in "XY"})
-            both(f"G52 X{_fd(g52['X'])} Y{_fd(g52['Y'])}")
+        elif kind == "local" and not shifted:  # G52 or G92 in one program (LinuxCNC shares their registers)
+            if draw(st.booleans()):
+                g52.update({a: _vals(draw, F(-10), F(10)) for a in "XY"})
+                both(f"G52 X{_fd(g52['X'])} Y{_fd(g52['Y'])}")
+            else:
+                here = {a: _vals(draw, F(-20), F(20)) for a in "XY"}
+                for a in "XY":  # G92: the current point reads `here` in every workpiece system
+                    g52[a] = F0
+                    g52[a] = s.pos[a] - here[a] - off(a)
+                both(f"G92 X{_fd(here['X'])} Y{_fd(here['Y'])}")
+                shifted = True
         elif kind == "cycle":
             init = _vals(draw, F(60), F(190))
             both(f"G90 G53 G0 Z{_fd(init)}")
