@@ -16,7 +16,8 @@ Relations (each a test failure when broken; any exception other than a G-code in
 * **ranges vs concrete values** and **margins**: :func:`metamorphic.check_ranges` and
   :func:`metamorphic.check_margins` on these programs (concrete machines from :mod:`oracles.concrete`);
 * **state reads** (:func:`check_fanuc_state_reads`): a program and its copy with every system-variable
-  read replaced by the value it read verify alike (verdict, violating lines, zones, switch positions);
+  read replaced by the value it read verify alike (verdict, violating lines, zones), in each position of
+  the block-delete switch (the values read differ between them);
 * **dialect translation** (:func:`check_translation`): the same motion written in LinuxCNC and in Fanuc
   syntax, line for line, using only codes whose meaning specs/fanuc.md and specs/gcode-support.md
   document as identical, verify alike (verdict, violating lines and zones);
@@ -88,8 +89,6 @@ class _FanucState(_State):
         self.wear = {1: F0, 2: F0}
         self.g52 = {a: F0 for a in "XYZ"}
         self.g92 = {a: F0 for a in "XYZ"}
-        #: parameters the program overwrote (a work offset axis set by G10 L2 / #5221 =, a geometry by G10 L10)
-        self.fixed: set[str] = set()
         self.after_home = False  # G91 G28 Z0. with a tool length active: the next Z move needs G43/G49
         self.labels = 100
         self.subs: list[str] = []
@@ -98,11 +97,6 @@ class _FanucState(_State):
     def off(self, a):
         o = self.offsets[self.frame][a] + self.g52[a] + self.g92[a]
         return o + (self.tool if a == "Z" else 0)
-
-    def moved(self, axes: str, frame: str | None, target: dict | None = None) -> None:
-        super().moved(axes, frame, target)
-        self.used -= self.fixed
-        self.probes = [p for p in self.probes if p[0] not in self.fixed]
 
     def label(self) -> int:
         self.labels += 10
@@ -120,7 +114,8 @@ def _z_prefix(s: _FanucState, axes: str) -> str:
 
 @st.composite
 def fanuc_programs(draw, machine: Machine, *, reads: bool = True, deletes: bool = True, used: set | None = None,
-                   inside: Fraction | None = None, header: bool | None = None) -> str:
+                   inside: Fraction | None = None, header: bool | None = None, delete_odds: int = 5,
+                   extra: tuple[str, ...] = ()) -> str:
     """A Fanuc mill program for a :func:`fanuc_machines` machine (see the module docstring); ``used``
     collects the ``--param`` names its motion depends on (and the probes that aim ranges)."""
     s = _FanucState(machine)
@@ -141,11 +136,11 @@ def fanuc_programs(draw, machine: Machine, *, reads: bool = True, deletes: bool 
                          if target[a] in TRAVEL[a]]
         lines.append("G90")
     kinds = ["move", "move", "move", "arc", "home", "tool", "tool", "offset", "local", "rotate", "cycle",
-             "loop", "call"] + (["read", "read", "read"] if reads else [])
+             "loop", "call"] + (["read", "read", "read"] if reads else []) + list(extra)
     for _ in range(draw(st.integers(1, 5))):
         kind = draw(st.sampled_from(kinds))
         block = draw(_fanuc_block(machine, s, kind, deletes))
-        if deletes and len(block) == 1 and draw(st.integers(0, 5)) == 0:
+        if deletes and len(block) == 1 and draw(st.integers(0, delete_odds)) == 0:
             block = [draw(st.sampled_from(("/", "/", "/", "/1 ", "/2 "))) + block[0]]
         lines += block
     lines.append("M30")
@@ -248,8 +243,9 @@ def _tool_block(draw, machine: Machine, s: _FanucState) -> list[str]:
         old = s.tool
         s.tool, s.register, s.after_home = s.geometry[n] + s.wear[n], n, False
         s.pos["Z"] += s.tool - old
-        if f"H{n}" not in s.fixed:
-            s.used.add(f"H{n}")
+        s.used.add(f"H{n}")
+        if s.pos["Z"] in TRAVEL["Z"]:
+            s.probes.append((f"H{n}", 1 if s.pos["Z"] == TRAVEL["Z"][1] else -1))
         s.pos["X"] = x
         return [f"G43 H{n} G53 X{_fd(x)}"]
     if choice == "G49":
@@ -260,7 +256,6 @@ def _tool_block(draw, machine: Machine, s: _FanucState) -> list[str]:
     if choice in ("L10", "geo#"):
         value = _vals(draw, F(10), F(90))
         s.geometry[n] = value
-        s.fixed.add(f"H{n}")
         out.append(f"G10 L10 P{n} R{_fd(value)}" if choice == "L10" else f"#{11000 + n} = {_fd(value)}")
     elif choice == "L10+":
         d = _vals(draw, F(-5), F(5))
@@ -274,10 +269,9 @@ def _tool_block(draw, machine: Machine, s: _FanucState) -> list[str]:
     s.register = n
     s.after_home = False
     z = draw(_machine_value(machine, "Z", s, tip=True))
-    if f"H{n}" not in s.fixed:
-        s.used.add(f"H{n}")
-        if z in TRAVEL["Z"]:
-            s.probes.append((f"H{n}", 1 if z == TRAVEL["Z"][1] else -1))
+    s.used.add(f"H{n}")  # also when the program set it: then a range of H<n> must change nothing
+    if z in TRAVEL["Z"]:
+        s.probes.append((f"H{n}", 1 if z == TRAVEL["Z"][1] else -1))
     s.moved("Z", s.frame, {"Z": z})
     out.append(f"G43 H{n} G90 G0 Z{_fd(z - s.off('Z'))}")
     s.pos["Z"] = z
@@ -301,7 +295,6 @@ def _offset_block(draw, machine: Machine, s: _FanucState) -> list[str]:
         new = {a: _vals(draw, F(0), F(40)) if a != "Z" else _vals(draw, F(20), F(60), F(1)) for a in axes}
         for a in axes:
             s.offsets[name][a] = new[a]
-            s.fixed.add(f"{name}.{a}")
         if how == "L2":
             out.append(f"G10 L2 P{p} " + " ".join(f"{a}{_fd(new[a])}" for a in axes))
         else:
@@ -381,6 +374,9 @@ def _rotate_block(draw, machine: Machine, s: _FanucState) -> list[str]:
         else:
             s.pos.update(target)
         s.moved("XY", s.frame, target if p is not w else None)
+        if not written and kind != "G51.1":  # the centre moves with what the current point depends on
+            s.probes += [(f"{src}.{b}", sign) for src in ("start", s.frame) for b in "XY" for sign in (1, -1)
+                         if any(target[a] in TRAVEL[a] for a in "XY")]
         out.append(f"G90 G{draw(st.sampled_from((0, 1)))} X{_fd(p['X'] + centre['X'])} Y{_fd(p['Y'] + centre['Y'])}")
     out.append(cancel)
     out.append(_move(draw, machine, s, "XY", s.frame, "G0"))
@@ -505,7 +501,7 @@ def _read_block(draw, machine: Machine, s: _FanucState) -> list[str]:
 def fanuc_range_cases(draw):
     machine, _ = draw(fanuc_machines())
     used: set = set()
-    text = draw(fanuc_programs(machine, used=used))
+    text = draw(fanuc_programs(machine, used=used, extra=("rotate", "home", "tool", "offset")))
     return machine, text, draw(meta_ranges(machine, used))
 
 
@@ -521,7 +517,7 @@ def fanuc_margin_cases(draw):
 @st.composite
 def fanuc_read_cases(draw):
     machine, _ = draw(fanuc_machines())
-    text = draw(fanuc_programs(machine, reads=True, deletes=False))
+    text = draw(fanuc_programs(machine, reads=True))
     assume("#5" in text or "#11" in text or "#40" in text)
     return machine, text
 
@@ -529,7 +525,7 @@ def fanuc_read_cases(draw):
 @st.composite
 def fanuc_delete_cases(draw):
     machine, _ = draw(fanuc_machines())
-    text = draw(fanuc_programs(machine))
+    text = draw(fanuc_programs(machine, delete_odds=1))
     assume("\n/" in text)
     return machine, text
 
@@ -537,9 +533,10 @@ def fanuc_delete_cases(draw):
 # ----------------------------------------------------------------------------- state reads
 
 
-def fanuc_reads_substituted(machine: Machine, text: str) -> str | None:
-    """The program with every system-variable read (``#1000`` and up) replaced by the value it read, as a
-    bracketed decimal (None: the reads do not follow the text one to one, or a value is no short decimal)."""
+def fanuc_reads_substituted(machine: Machine, text: str, block_delete: bool = False) -> str | None:
+    """The program with every system-variable read (``#1000`` and up) replaced by the value it read with the
+    block-delete switch in the given position, as a bracketed decimal (None: the reads do not follow the
+    text one to one, or a value is no short decimal)."""
     import re
 
     from nczones.gcode import interpret_text
@@ -555,13 +552,15 @@ def fanuc_reads_substituted(machine: Machine, text: str) -> str | None:
 
     FanucInterpreter.system_read = recording  # type: ignore[method-assign]
     try:
-        run = interpret_text(text, machine, fast=False)
+        run = interpret_text(text, machine, fast=False, block_delete=block_delete)
         list(run.segments())
     finally:
         FanucInterpreter.system_read = original  # type: ignore[method-assign]
     # a read on the left of "=" is a write; the written ones are not reads
+    skipped = re.compile(r"[ \t]*/(?![2-9])")  # a line the switch skips when on ('/', '/1')
     tokens = [m for m in re.finditer(r"#(\d+)", text) if int(m.group(1)) >= 1000
-              and not re.match(r"\s*=(?!=)", text[m.end():])]
+              and not re.match(r"\s*=(?!=)", text[m.end():])
+              and not (block_delete and skipped.match(text, text.rfind("\n", 0, m.start()) + 1))]
     if run.unsupported or len(tokens) != len(values):
         return None
     out, pos = [], 0
@@ -580,18 +579,20 @@ def fanuc_reads_substituted(machine: Machine, text: str) -> str | None:
 
 def check_fanuc_state_reads(machine: Machine, text: str) -> None:
     """A Fanuc program and its copy with every system-variable read replaced by its value verify alike."""
-    copy = fanuc_reads_substituted(machine, text)
-    assume(copy is not None)
-    assert copy is not None
-    a = _verify(text, machine)
-    b = _verify(copy, machine)
+    positions = ("off", "on") if "\n/" in text else ("off",)
+    copies = [fanuc_reads_substituted(machine, text, position == "on") for position in positions]
+    assume(all(copy is not None for copy in copies))
     _counted("fanuc state reads")
-    _note(f"fanuc state reads: {a.verdict.label}")
-    key_a = [(v.line, v.zone, v.switches) for v in a.violations]
-    key_b = [(v.line, v.zone, v.switches) for v in b.violations]
-    _require(a.verdict.label == b.verdict.label and key_a == key_b,
-             f"reads {a.verdict.label} {key_a} {[r.code for r in a.reasons]} but values {b.verdict.label} "
-             f"{key_b} {[r.code for r in b.reasons]}\n{copy}")
+    for position, copy in zip(positions, copies):
+        assert copy is not None
+        a = _verify(text, machine, block_delete=position)
+        b = _verify(copy, machine, block_delete=position)
+        _note(f"fanuc state reads: {a.verdict.label}")
+        key_a = [(v.line, v.zone) for v in a.violations]
+        key_b = [(v.line, v.zone) for v in b.violations]
+        _require(a.verdict.label == b.verdict.label and key_a == key_b,
+                 f"block delete {position}: reads {a.verdict.label} {key_a} {[r.code for r in a.reasons]} but "
+                 f"values {b.verdict.label} {key_b} {[r.code for r in b.reasons]}\n{copy}")
 
 
 # ----------------------------------------------------------------------------- block delete
