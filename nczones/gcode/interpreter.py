@@ -1298,7 +1298,8 @@ class Interpreter:
             if h is not None:
                 if h.value.denominator != 1 or h.value < 0:
                     raise self.error("GC209", f"H word {h.text} must be a non-negative integer register number", h)
-                reg = int(h.value)
+                # H0 is the tool in the spindle (LinuxCNC find_tool_index: tool 0 is the spindle's table entry)
+                reg = int(h.value) or self.tool_in_spindle
             else:
                 reg = self.tool_in_spindle
             if reg in self.tool_table:
@@ -1728,6 +1729,23 @@ class Interpreter:
         self.recompute_offsets()
 
     # ------------------------------------------------------------------ canned cycles
+    def _linuxcnc_pecks(self, rprog: Fraction, cprog: Fraction, old_prog_mm: Fraction) -> int:
+        """How many pecks LinuxCNC's G73/G83 loop makes: ``for (d = r - q; d > bottom; d -= q)`` in doubles of
+        the program values (current units). Exact arithmetic differs where the bottom is a whole number of
+        pecks below R, give or take an ulp: LinuxCNC then pecks once more, or once less."""
+        q = to_float(self.cycle_q or _ZERO)
+        if self.absolute:
+            r, bottom = to_float(rprog), to_float(cprog)
+        else:
+            old = to_float(old_prog_mm / INCH if self.inch else old_prog_mm)
+            r = to_float(rprog) + old
+            bottom = r + to_float(cprog)
+        n, d = 0, r - q
+        while d > bottom and n < 1_000_000:
+            n += 1
+            d -= q
+        return n
+
     def _cycle(self, motion: int, axis_words: list[tuple[int, Word]], words: dict[str, Word]) -> None:
         plane = self.plane
         a_name, b_name, c_name = PLANE_AXES[plane]
@@ -1801,6 +1819,7 @@ class Interpreter:
             self._cycle_il_axis = ic
             self._cycle_il_deps = dict(current_d)
         old_cc, old_d = self.cycle_il, self._cycle_il_deps if track else nodeps
+        il_prog_mm = old_cc - self.off[ic]  # LinuxCNC's old_cc (program coordinates) for G91's R
         wd = {self.axes[i]: aw for i, aw in axis_words}
         if self.absolute:
             inc_a = inc_b = _ZERO
@@ -1856,7 +1875,11 @@ class Interpreter:
             if motion in (730, 830):
                 assert delta is not None  # Q read above for G73/G83
                 depth = r - delta
-                while lt((cc, cc_d), (depth, r_d), ic, "a peck ends above the bottom"):
+                pecks = None if track else self._linuxcnc_pecks(rprog, cprog, il_prog_mm)
+                while (lt((cc, cc_d), (depth, r_d), ic, "a peck ends above the bottom") if pecks is None
+                       else pecks > 0):
+                    if pecks is not None:
+                        pecks -= 1
                     go(SegmentKind.LINE, aa, bb, (depth, r_d), f"{name} peck")
                     if motion == 830:  # back out to R, not to the clear level (LinuxCNC convert_cycle_g83)
                         go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} clear")

@@ -206,3 +206,23 @@ def test_a_g92_change_between_holes_moves_the_g98_level_with_it():
     rows = motion("F100\nG98 G81 X5 Y0 Z-3 R-1\nG92 Z4\nX10\nM2\n")
     # rs274: to (10, 0, 4), (10, 0, -1), (10, 0, -3), back to the initial level 0, all with G92 Z -4
     assert rows[4:] == _rows([("RAPID", 10, 0, 0), ("RAPID", 10, 0, -5), ("LINE", 10, 0, -7), ("RAPID", 10, 0, -4)])
+
+
+def test_g43_h0_is_the_tool_in_the_spindle():
+    """LinuxCNC's ``find_tool_index`` reads tool 0 as the spindle's table entry: after ``T3 M6``, ``G43 H0`` applies
+    tool 3's length (rs274: ``USE_TOOL_LENGTH_OFFSET(0 0 50.8)`` for a 2 inch tool 3). nczones applied 0."""
+    machine = parse_machine(MACHINE_TEXT + '[tool_lengths]\nH1 = "25.4"\nH3 = "50.8"\n')
+    run = interpret_text("F10\nT3 M6\nG43 H0\nG1 X1 Z0\nM2\n", machine)
+    segs = [s for c in run for s in c.segments()]
+    assert [(s.end[2], s.tool_length) for s in segs] == [(Fraction("50.8"), Fraction("50.8"))]
+
+
+@pytest.mark.parametrize("text,feeds", [
+    ("F100\nG0 Z1.1015\nG99 G73 X0 Y0 Z[#<_z>-0.28] R[#<_z>] Q0.04\nM2\n", 7),  # nczones pecked once more
+    ("F100\nG0 Z14.5315\nG99 G73 X1 Y0 Z[#<_z>-6] R[#<_z>+5] Q1\nM2\n", 12),  # nczones pecked once less
+])
+def test_pecks_are_counted_as_linuxcnc_counts_them(text, feeds):
+    """LinuxCNC's G73/G83 loop (``for (d = r - q; d > bottom; d -= q)``) runs in doubles: where the bottom is a
+    whole number of pecks below R, it pecks once more or once less than exact arithmetic would. rs274 prints
+    ``feeds`` STRAIGHT_FEEDs for these programs (the pecks and the last feed to the bottom)."""
+    assert sum(1 for r in motion(text) if r[0] == "LINE") == feeds

@@ -204,15 +204,34 @@ def error_lines(program: str, text: str) -> tuple[int, ...]:
     return tuple(i for i, ln in enumerate(program.splitlines(), 1) if ln.strip() == want)
 
 
-def machine_text(axes: tuple[str, ...], tools_inch: dict[int, Fraction]) -> str:
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
+
+
+def machine_text(axes: tuple[str, ...], tools_inch: dict[int, Fraction],
+                 offsets_inch: dict[str, dict[str, Fraction]] | None = None) -> str:
     """The nczones machine file of an rs274 run: its axes at machine zero, ``[tool_lengths]`` from the
-    tool table (inches, so x 25.4)."""
+    tool table and ``[offsets]`` from the parameter file (both in inches, so x 25.4; degrees for A)."""
     rapid = "\n".join(f'{a} = "10000"' for a in axes)
     ref = "\n".join(f'{a} = "0"' for a in axes)
     tools = "\n".join(f'H{n} = "{_dec(z * INCH)}"' for n, z in sorted(tools_inch.items()))
     names = ", ".join(f'"{a}"' for a in axes)
+    offsets = ""
+    for name, values in (offsets_inch or {}).items():
+        vals = ", ".join(f'{a} = "{_dec(v if a in "ABC" else v * INCH)}"' for a, v in values.items())
+        offsets += f'"{name}" = {{ {vals} }}\n'
     return (f'[machine]\naxes = [{names}]\npulse = "0.0001"\n[machine.rapid]\n{rapid}\n'
-            f"[machine.reference]\n{ref}\n[tool_lengths]\n{tools}\n")
+            f"[machine.reference]\n{ref}\n[tool_lengths]\n{tools}\n"
+            + (f"[offsets]\n{offsets}" if offsets else ""))
+
+
+def var_file(offsets_inch: dict[str, dict[str, Fraction]]) -> str:
+    """The ``rs274 -v`` parameter file of the same work offsets (#5221 + 20 k: X, Y, Z, A of G54 + k)."""
+    lines = []
+    for name, values in offsets_inch.items():
+        base = 5221 + 20 * WORK_OFFSETS.index(name)
+        for a, v in values.items():
+            lines.append((base + "XYZA".index(a), _dec(v)))
+    return "".join(f"{k} {v}\n" for k, v in sorted(lines))  # rs274 wants them in order
 
 
 def tool_table(tools_inch: dict[int, Fraction]) -> str:

@@ -27,6 +27,7 @@ from pathlib import Path
 
 from nczones.machine import parse_machine
 from tests.oracles.rs274 import (
+    WORK_OFFSETS,
     CanonMove,
     Outcome,
     canon_error,
@@ -34,6 +35,7 @@ from tests.oracles.rs274 import (
     compare,
     machine_text,
     tool_table,
+    var_file,
 )
 
 DATA = Path(__file__).resolve().parents[1] / "gcode" / "data" / "rs274"
@@ -53,6 +55,12 @@ class Generator:
         r = self.r
         self.axes = ("X", "Y", "Z", "A") if r.random() < 0.25 else ("X", "Y", "Z")
         self.tools = {n: Fraction(r.randint(-200, 4000), 1000) for n in range(1, 5)}
+        #: work offsets from the parameter file (inches; A in degrees), in two programs of five
+        self.work_offsets: dict[str, dict[str, Fraction]] = {}
+        if r.random() < 0.4:
+            for name in r.sample(WORK_OFFSETS, r.randint(1, 4)):
+                self.work_offsets[name] = {a: Fraction(r.randint(-3000, 3000), 1000) for a in self.axes
+                                      if r.random() < 0.8}
         self.lines: list[str] = []
         self.subs: list[str] = []
         self.units = "G21"
@@ -137,7 +145,7 @@ class Generator:
 
     def straight(self) -> list[str]:
         r = self.r
-        code = r.choice(["G0", "G1", "G1", ""])
+        code = r.choice(["G0", "G1", "G1", "G1", "G0", ""])
         f = self.feed() if code != "G0" else ""
         words = self.axis_words()
         return [f"{code} {words}{f}".strip()]
@@ -305,30 +313,40 @@ class Generator:
         return "\n".join([*self.subs, *head, *body, "M2"]) + "\n"
 
 
-def generate(seed: int) -> tuple[str, tuple[str, ...], dict[int, Fraction]]:
-    """(program, machine axes, tool table in inches) of one seed."""
+Setup = tuple  # (machine axes, tool table in inches, work offsets in inches)
+
+
+def generate(seed: int) -> tuple[str, Setup]:
+    """(program, setup) of one seed."""
     g = Generator(seed)
     text = g.program()
-    return text, g.axes, g.tools
+    return text, (g.axes, g.tools, g.work_offsets)
 
 
-def run_rs274(program: str, tools: dict[int, Fraction], workdir: Path) -> tuple[list[CanonMove], tuple[str, str] | None, str]:
-    """rs274's motions, error and raw log of one program (a fresh tool table and no parameter file)."""
+def machine_of(setup: Setup):
+    axes, tools, offsets = setup
+    return parse_machine(machine_text(axes, tools, offsets))
+
+
+def run_rs274(program: str, setup: Setup, workdir: Path) -> tuple[list[CanonMove], tuple[str, str] | None, str]:
+    """rs274's motions, error and raw log of one program (a fresh tool table and parameter file)."""
+    _axes, tools, offsets = setup
     (workdir / "prog.ngc").write_text(program)
     (workdir / "tool.tbl").write_text(tool_table(tools))
     for stale in workdir.glob("*.var*"):
         stale.unlink()
+    (workdir / "prog.var").write_text(var_file(offsets))
     try:
-        p = subprocess.run([RS274, "-t", "tool.tbl", "-g", "prog.ngc"], cwd=workdir, capture_output=True,
-                           text=True, timeout=20, stdin=subprocess.DEVNULL)
+        p = subprocess.run([RS274, "-t", "tool.tbl", "-v", "prog.var", "-g", "prog.ngc"], cwd=workdir,
+                           capture_output=True, text=True, timeout=20, stdin=subprocess.DEVNULL)
     except subprocess.TimeoutExpired:
         return [], ("rs274 timed out", ""), ""
     return canon_motion(p.stdout), canon_error(p.returncode, p.stderr), p.stdout
 
 
-def outcome(program: str, axes: tuple[str, ...], tools: dict[int, Fraction], workdir: Path) -> Outcome:
-    moves, error, _ = run_rs274(program, tools, workdir)
-    machine = parse_machine(machine_text(axes, tools))
+def outcome(program: str, setup: Setup, workdir: Path) -> Outcome:
+    moves, error, _ = run_rs274(program, setup, workdir)
+    machine = machine_of(setup)
     try:
         return compare(program, machine, moves, error)
     except Exception as exc:  # noqa: BLE001 - an internal error of nczones is a finding too
@@ -344,10 +362,10 @@ def signature(o: Outcome) -> tuple[str, str]:
     return o.status, d.split("/")[-1][:40] if o.status == "error-line" else d[:30]
 
 
-def minimise(program: str, axes, tools, workdir: Path, status) -> tuple[str, Outcome]:
+def minimise(program: str, setup: Setup, workdir: Path, status) -> tuple[str, Outcome]:
     """Drop lines (then chunks of lines) while the outcome keeps its signature."""
     lines = program.splitlines()
-    best = outcome(program, axes, tools, workdir)
+    best = outcome(program, setup, workdir)
     chunk = max(1, len(lines) // 4)
     while chunk >= 1:
         i = 0
@@ -356,7 +374,7 @@ def minimise(program: str, axes, tools, workdir: Path, status) -> tuple[str, Out
             if not cand or cand[-1] != "M2":
                 i += chunk
                 continue
-            o = outcome("\n".join(cand) + "\n", axes, tools, workdir)
+            o = outcome("\n".join(cand) + "\n", setup, workdir)
             if signature(o) == status:
                 lines, best = cand, o
             else:
@@ -371,15 +389,15 @@ def cmd_run(args) -> int:
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         for seed in range(args.seed, args.seed + args.count):
-            text, axes, tools = generate(seed)
-            o = outcome(text, axes, tools, work)
+            text, setup = generate(seed)
+            o = outcome(text, setup, work)
             counts[o.status] += 1
             if o.status not in ("match", "unknown"):
-                small, mo = minimise(text, axes, tools, work, signature(o)) if args.minimise else (text, o)
+                small, mo = minimise(text, setup, work, signature(o)) if args.minimise else (text, o)
                 found.append((seed, small, mo))
-                print(f"--- seed {seed} {mo.status}: {mo.detail}\n    axes {axes} tools "
-                      f"{ {k: str(v) for k, v in tools.items()} }\n" + "".join(f"    | {ln}\n" for ln in small.splitlines()),
-                      flush=True)
+                print(f"--- seed {seed} {mo.status}: {mo.detail}\n    axes {setup[0]} tools "
+                      f"{ {k: str(v) for k, v in setup[1].items()} } offsets {setup[2]}\n"
+                      + "".join(f"    | {ln}\n" for ln in small.splitlines()), flush=True)
             elif o.status == "unknown" and args.verbose:
                 print(f"--- seed {seed} unknown: {o.detail}", flush=True)
     print("outcomes:", dict(counts))
@@ -395,14 +413,18 @@ def cmd_record(args) -> int:
         work = Path(tmp)
         seed = args.seed
         while len(index) < args.count and seed < args.seed + 20 * args.count:
-            text, axes, tools = generate(seed)
-            moves, error, _ = run_rs274(text, tools, work)
-            machine = parse_machine(machine_text(axes, tools))
+            text, setup = generate(seed)
+            axes, tools, offsets = setup
+            moves, error, _ = run_rs274(text, setup, work)
+            machine = machine_of(setup)
             o = compare(text, machine, moves, error)
-            if o.status == "match" and (len(moves) >= 5 or error) and all(m.kind != "UNPARSED" for m in moves):
+            refused = sum(1 for c in index.values() if c["error"])
+            wanted = len(moves) >= 5 if error is None else refused < args.count // 4  # mostly programs that run
+            if o.status == "match" and wanted and all(m.kind != "UNPARSED" for m in moves):
                 name = f"g{seed:05d}"
                 (DATA / f"{name}.ngc").write_text(text)
                 index[name] = {"axes": list(axes), "tools_inch": {str(k): str(v) for k, v in tools.items()},
+                               "offsets_inch": {k: {a: str(v) for a, v in o.items()} for k, o in offsets.items()},
                                "error": list(error) if error else None, "motion": [m.to_json() for m in moves]}
             seed += 1
     (DATA / "expected.json").write_text(json.dumps(index, separators=(",", ":"), sort_keys=True) + "\n")
