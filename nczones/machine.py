@@ -43,6 +43,7 @@ __all__ = [
     "ROTARY_AXES",
     "WORK_OFFSETS",
     "DEFAULT_MODAL",
+    "DEFAULT_RETRACT",
     "DIALECTS",
     "FanucSettings",
     "FANUC_OFFSETS",
@@ -74,7 +75,12 @@ MODAL_CHOICES = {
     "cutter": ("G40",),
     "tool": ("G49",),
     "cycle": ("G80",),
+    "retract": ("G98", "G99"),
 }
+#: The canned-cycle retract mode a dialect's control starts in when ``modal`` names neither G98 nor G99:
+#: LinuxCNC's interpreter starts in G99 (``interp_setup.cc``: ``retract_mode(R_PLANE)``; its sample INI files'
+#: ``RS274NGC_STARTUP_CODE`` do not set it), a Fanuc control in G98 at power-on.
+DEFAULT_RETRACT = {"linuxcnc": "G99", "fanuc": "G98"}
 
 
 class RapidMode(enum.Enum):

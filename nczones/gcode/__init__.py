@@ -219,7 +219,12 @@ class Interpretation:
 
     def assumed_modal_text(self) -> list[str]:
         """Human-readable lines for the report."""
-        return [f"{MODAL_GROUP_NAMES[g]}: assumed {c} from the machine file" for g, c in self.assumed_modal.items()]
+        named = set(self.interpreter.machine.modal)
+        return [f"{MODAL_GROUP_NAMES[g]}: assumed {c} "
+                + ("from the machine file" if g != "retract" or named & {"G98", "G99"} else
+                   f"(the {self.interpreter.dialect} control's start-up mode; name G98 or G99 in [machine] modal "
+                   "if the control starts otherwise)")
+                for g, c in self.assumed_modal.items()]
 
     @property
     def counts(self) -> dict[str, int]:

@@ -40,7 +40,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
-from ..machine import Machine
+from ..machine import DEFAULT_RETRACT, Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from .blocks import LANE_FULL, Block, Word
 from .expr import EvalError
@@ -111,7 +111,8 @@ for _g, _codes in {
 #: Names of the modal groups the report mentions when the program never set them.
 MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90/G91)",
                      "offset": "work offset (G54..G59.3)", "plane": "plane (G17/G18/G19)",
-                     "feed": "feed mode (G93/G94/G95)", "tool": "tool length (G43/G49)"}
+                     "feed": "feed mode (G93/G94/G95)", "tool": "tool length (G43/G49)",
+                     "retract": "retract mode (G98/G99)"}
 
 # Codes that cannot be modelled exactly: key -> reason.
 UNSUPPORTED_G = {
@@ -346,7 +347,7 @@ class Interpreter:
         self.feed_mode = 93 if "G93" in modal else 95 if "G95" in modal else 94
         self.motion: int | None = None
         self.feed = _ZERO  # program units per minute
-        self.retract_r = True  # G99: LinuxCNC starts retracting to R (interp_setup.cc retract_mode R_PLANE)
+        self.retract_r = self.initial_retract_r(modal)  # LinuxCNC: G99 unless the machine file says
         self.cycle_r: Fraction | None = None
         self.cycle_cc: Fraction | None = None
         self.cycle_p = _ZERO
@@ -386,7 +387,7 @@ class Interpreter:
         self.dep_tlo: dict = {}
         self.recompute_offsets()
         # ---- bookkeeping
-        self.unset = {"units", "distance", "offset", "plane", "feed", "tool"}
+        self.unset = {"units", "distance", "offset", "plane", "feed", "tool", "retract"}
         self.assumed: dict[str, str] = {}
         self.unsupported: list[Unsupported] = []
         #: program stops executed (M0, M1, M60) as (code, line), the first 100: the operator acts there
@@ -533,6 +534,17 @@ class Interpreter:
         """True once an unsupported code ended motion emission."""
         return bool(self.unsupported)
 
+    #: The dialect whose control's start-up state applies where the machine file's ``modal`` is silent.
+    dialect = "linuxcnc"
+
+    def initial_retract_r(self, modal: set[str]) -> bool:
+        """True (G99, back to R) or False (G98, back to the initial level) at the start of a program: the
+        machine file's ``modal`` if it names one, else the control's own start-up mode
+        (:data:`~nczones.machine.DEFAULT_RETRACT`)."""
+        if "G98" in modal or "G99" in modal:
+            return "G99" in modal
+        return DEFAULT_RETRACT[self.dialect] == "G99"
+
     def note_assumed(self, groups: tuple[str, ...]) -> None:
         for g in groups:
             if g in self.unset and g not in self.assumed:
@@ -546,6 +558,7 @@ class Interpreter:
             "plane": f"G{int(self.plane)}",
             "feed": f"G{self.feed_mode}",
             "tool": "G49" if self.tool_register is None and self.tlo == 0 else "G43",
+            "retract": "G99" if self.retract_r else "G98",
         }[group]
 
     def deps_tuple(self, deps: list[dict]) -> tuple[tuple[str, ...], ...]:
@@ -958,6 +971,7 @@ class Interpreter:
         # 18: retract mode
         if 10 in groups:
             self.retract_r = groups[10][0] == 990
+            self.unset.discard("retract")
         # 19: G28/G30, G10, G92, G52
         nonmodal_uses_axes = False
         if g0 and g0[0] != 40:
@@ -1762,6 +1776,7 @@ class Interpreter:
             raise self.error("GC204", "canned cycles cannot be used with inverse time feed (G93)")
         if motion in (840, 860):
             self._spindle_turning(gname(motion), 1 if motion == 840 else None)
+        self.note_assumed(("retract",))
         swapped = motion == 840 and plane is not Plane.XY
         if swapped and self.track:
             self.unknown("G84", "parameter ranges are not supported with G84 outside G17")

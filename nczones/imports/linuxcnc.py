@@ -19,7 +19,7 @@ from pathlib import Path
 
 from ..errors import SourceSpan
 from ..exact import MAX_ABS_LENGTH, format_decimal
-from ..machine import DEFAULT_MODAL, MODAL_CHOICES, ROTARY_AXES, WORK_OFFSETS
+from ..machine import DEFAULT_MODAL, DEFAULT_RETRACT, MODAL_CHOICES, ROTARY_AXES, WORK_OFFSETS
 from .ini import IniEntry, IniFile, parse_ini
 from .model import (
     INCH,
@@ -556,12 +556,12 @@ def startup_modal(block: str, label: str, how: str, span: SourceSpan | None, cho
         left.append(word)
     if left:
         c.note("IM201", f"{label}: {' '.join(left)} not taken; the machine file's modal list holds distance, units, "
-               "plane, work offset and feed modes (and G40, G49, G80)", span)
+               "plane, work offset, feed and retract modes (and G40, G49, G80)", span)
 
 
 def modal_changes(chosen: dict[str, tuple[str, str]]) -> tuple[tuple[str, str], ...]:
     """The chosen codes that differ from the machine file's default modal state, with how each was found."""
-    defaults = dict(zip(MODAL_GROUPS, DEFAULT_MODAL))
+    defaults = dict(zip(MODAL_GROUPS, DEFAULT_MODAL)) | {"retract": DEFAULT_RETRACT["linuxcnc"]}
     return tuple((code, how) for group, (code, how) in chosen.items() if defaults[group] != code)
 
 

@@ -74,7 +74,9 @@ def read_value(expr: str, before: str = "", machine=MILL) -> Fraction:
     ("#5021", 5), ("#5023", 300),                         # start position, machine
     ("#<_x>", -95), ("#<_abs_x>", 5), ("#<_abs_z>", 300),
     ("#<_coord_system>", 540), ("#<_metric>", 1), ("#<_absolute>", 1), ("#<_plane>", 170),
-    ("#<_motion_mode>", 800), ("#<_tool_offset>", 0), ("#<_retract_old_z>", 0), ("#<_current_tool>", 0),
+    ("#<_motion_mode>", 800), ("#<_tool_offset>", 0), ("#<_current_tool>", 0),
+    # LinuxCNC starts in G99 (interp_setup.cc: retract_mode(R_PLANE)); the machine file names neither
+    ("#<_retract_old_z>", 0), ("#<_retract_r_plane>", 1),
 ])
 def test_state_parameters_read_the_machine_file(expr, value):
     assert read_value(expr) == value

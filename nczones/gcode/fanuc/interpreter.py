@@ -199,7 +199,7 @@ class FanucInterpreter(Interpreter):
         self.cycle_data: dict = {}  # R, Z (program values), Q, P of the active cycle
         self.initial_level: Fraction | None = None
         self.initial_level_deps: dict = {}
-        self.retract_r = False  # G98 at power-on
+        self.retract_r = self.initial_retract_r(set(machine.modal))
         self.spindle_dir = self.spindle_speed = None  # LinuxCNC's spindle checks do not apply
         self.tlo_register: int | None = None
         self.tlo_sign = 1
@@ -363,6 +363,7 @@ class FanucInterpreter(Interpreter):
         self._plain_modes(groups)
         if 10 in groups:
             self.retract_r = groups[10][0] == 990
+            self.unset.discard("retract")
         # ---- programmable transforms (groups 17, 11, 22, 16); their blocks' axis words are centres
         transform_axes = False
         if any(g in groups for g in (17, 11, 22, 16)):
@@ -1065,7 +1066,7 @@ class FanucInterpreter(Interpreter):
         if k == 760 and "Q" not in data:
             data["Q"] = _ZERO
         self.check_feed()
-        self.note_assumed(("units", "distance", "offset", "plane"))
+        self.note_assumed(("units", "distance", "offset", "plane", "retract"))
         if self._tlo_shift is not None:
             self.unknown(name, "a tool length change in a canned cycle block is not modelled")
             return
