@@ -554,6 +554,9 @@ def outside_point(
     Candidates per zone axis are the box ends, the zone constants inside the
     box and the midpoints between consecutive ones: for boxes and stepped
     tables that hits every cell on which the zone's predicate is constant.
+    A polygon's slanted edges can pass between those candidates (a thin
+    blade, a slit); then the plane point is one of the open box strictly
+    inside or outside the polygon (:func:`nczones.prover.polygon.open_box_point`).
     """
     if margin == 0:
         return dict(p) if zone in allowed.violated_zones(p, tool_length) else None
@@ -573,6 +576,23 @@ def outside_point(
         q.update(zip(axes, combo))
         if zone in allowed.violated_zones(q, tool_length):
             return q
+    if isinstance(zone, PolygonZone) and all(a in p for a in zone.plane):
+        # the grid of vertex coordinates can miss a thin polygon (or a thin gap): a point of the open
+        # margin box strictly inside it (forbid) or outside it (allow), found exactly, with the limit
+        # axes' candidates
+        from .polygon import open_box_point
+
+        (x, y), s = zone.plane, shift
+        plane = open_box_point(zone, (p[x] - s.get(x, F0) - margin, p[y] - s.get(y, F0) - margin),
+                               (p[x] - s.get(x, F0) + margin, p[y] - s.get(y, F0) + margin), zone.forbid)
+        if plane is not None:
+            rest = [(a, c) for a, c in zip(axes, choices) if a not in zone.plane]
+            for combo in itertools.product(*(c for _, c in rest)):
+                q = dict(p)
+                q.update({x: plane[0] + s.get(x, F0), y: plane[1] + s.get(y, F0)})
+                q.update(zip((a for a, _ in rest), combo))
+                if zone in allowed.violated_zones(q, tool_length):
+                    return q
     return None
 
 

@@ -39,8 +39,8 @@ import numpy as np
 
 from ..zones import PolygonZone
 
-__all__ = ["EdgeBoxes", "PolygonGrid", "box_fits", "cached", "edge_boxes", "grid", "locate", "plane_violation",
-           "screen_rows"]
+__all__ = ["EdgeBoxes", "PolygonGrid", "box_fits", "cached", "edge_boxes", "grid", "locate", "open_box_point",
+           "plane_violation", "screen_rows"]
 
 F0 = Fraction(0)
 F1 = Fraction(1)
@@ -207,6 +207,64 @@ def box_fits(zone: PolygonZone, lo: Pt, hi: Pt) -> bool:
         return where < 0 if zone.forbid else where > 0
     # a flat box is the segment between its corners
     return not plane_violation(zone, lo, hi, F0)
+
+
+def open_box_point(zone: PolygonZone, lo: Pt, hi: Pt, inside: bool) -> Pt | None:
+    """A point of the open box ``(lo, hi)`` strictly inside the polygon (``inside``) or strictly outside it;
+    None when there is none.  Exact, for any simple polygon however thin.
+
+    The box is cut into horizontal slabs at the vertices' ``y`` values; no vertex lies inside a slab, so
+    the edges crossing it keep their order there and the polygon's cross-section at ``y`` is a row of
+    intervals between consecutive edges (inside and outside alternating, from outside).  For each
+    interval ``(L(y), R(y))`` (``L``, ``R`` linear in ``y``, or infinite) the ``y`` of the slab where it
+    meets ``(lo_x, hi_x)`` form an open interval found from two linear inequalities; its midpoint and the
+    middle of the overlap there is the point.  Invariant: the point is in no edge (it lies strictly
+    between two edges of its slab) and the crossing number puts it on the side asked for.
+
+    >>> F = Fraction
+    >>> blade = PolygonZone("b", ("X", "Y"), ((F(40), F(40)), (F(60), F(60)), (F(4999, 100), F(5001, 100))), forbid=True)
+    >>> q = open_box_point(blade, (F(49), F(46)), (F(53), F(50)), True)
+    >>> locate(blade, q), F(49) < q[0] < F(53) and F(46) < q[1] < F(50)
+    (1, True)
+    >>> open_box_point(blade, (F(0), F(0)), (F(1), F(1)), True) is None
+    True
+    """
+    (x0, y0), (x1, y1) = lo, hi
+    if not (x0 < x1 and y0 < y1):
+        return None
+    cuts = sorted({y0, y1} | {v[1] for v in zone.vertices if y0 < v[1] < y1})
+    edges = [(a, b) for a, b in zone.edges() if a[1] != b[1]]
+    for s0, s1 in zip(cuts, cuts[1:]):
+        mid = (s0 + s1) / 2
+        # x = alpha + beta y for each edge spanning the slab (an edge meeting the open slab spans it)
+        lines = sorted(
+            (a[0] + (mid - a[1]) * (b[0] - a[0]) / (b[1] - a[1]), a[0] - a[1] * (b[0] - a[0]) / (b[1] - a[1]),
+             (b[0] - a[0]) / (b[1] - a[1]))
+            for a, b in edges if min(a[1], b[1]) <= s0 and max(a[1], b[1]) >= s1)
+        bounds: list[tuple[Fraction, Fraction] | None] = [None, *((al, be) for _, al, be in lines), None]
+        pairs = list(zip(bounds, bounds[1:]))
+        for left, right in pairs[1::2] if inside else pairs[0::2]:
+            ya, yb = s0, s1
+            # left(y) < x1 and right(y) > x0, each an open half-line in y (or all or nothing)
+            for line, bound, below in ((left, x1, True), (right, x0, False)):
+                if line is None:
+                    continue
+                al, be = line
+                if be == 0:
+                    if (al >= bound) if below else (al <= bound):
+                        ya, yb = s1, s0
+                    continue
+                y = (bound - al) / be
+                if (be > 0) == below:
+                    yb = min(yb, y)
+                else:
+                    ya = max(ya, y)
+            if ya < yb:
+                y = (ya + yb) / 2
+                xl = x0 if left is None else max(x0, left[0] + left[1] * y)
+                xr = x1 if right is None else min(x1, right[0] + right[1] * y)
+                return ((xl + xr) / 2, y)
+    return None
 
 
 # --------------------------------------------------------------------------- the grid
