@@ -232,6 +232,20 @@ class _Aim:
         self.tool = F0
         self.register: int | None = None
         self.used: set[str] = {"start.X", "start.Y", "start.Z"}
+        #: keep targets in the allowed set (a boundary point is in it): the path between two may still leave
+        self.careful = False
+
+    def fits(self, target: dict[str, Fraction]) -> bool:
+        return not self.careful or self.m.allowed.contains(target, self.tool)
+
+    @st.composite
+    def inside(draw, self, target: dict[str, Fraction]) -> dict[str, Fraction]:
+        """``target``, or (careful, and it is outside) a grid point of the allowed set at its Z."""
+        if self.fits(target):
+            return target
+        grid = [{**target, "X": F(x), "Y": F(y)} for x in range(5, 100, 5) for y in range(5, 100, 5)]
+        grid = [p for p in grid if self.fits(p)]
+        return draw(st.sampled_from(grid)) if grid else dict(self.pos)
 
     def off(self, a: str) -> Fraction:
         return dict(zip("XYZ", self.m.offset(self.frame)))[a] + (self.tool if a == "Z" else 0)
@@ -308,6 +322,8 @@ def _blocks(draw, machine: Machine, s: _Aim, kind: str) -> list[str]:
                 target[a] = plane[a]
         if "Z" in axes and target["Z"] == s.pos["Z"]:
             target["Z"] = draw(_z_target(machine, s))
+        target = draw(s.inside(target))
+        axes = "".join(a for a in "XYZ" if a in axes or target[a] != s.pos[a])
         g = draw(st.sampled_from(("G0", "G0", "G1")))
         if how == "G53":
             s.pos = target
@@ -319,9 +335,11 @@ def _blocks(draw, machine: Machine, s: _Aim, kind: str) -> list[str]:
         s.pos = target
         return [f"{pre}G90 {g} {words}"]
     if kind == "arc":
-        a0 = draw(_plane_target(machine, s))
+        a0 = draw(s.inside(draw(_plane_target(machine, s))))
         x, y, r = draw(st.sampled_from(_TRIPLES))
-        k = draw(st.sampled_from((F(1, 2), F(1), F(2), F(3)) if r > 1 else (F(2), F(5), F(10))))
+        small = s.careful and draw(st.booleans())
+        k = draw(st.sampled_from(((F(1, 2), F(1)) if small else (F(1, 2), F(1), F(2), F(3))) if r > 1
+                                 else ((F(2), F(5)) if small else (F(2), F(5), F(10)))))
         signs = [(sx, sy, swap) for sx in (1, -1) for sy in (1, -1) for swap in (False, True)]
         sx, sy, swap = draw(st.sampled_from(signs))
         u = (sx * k * x, sy * k * y) if not swap else (sx * k * y, sy * k * x)  # start - centre
@@ -343,11 +361,13 @@ def _blocks(draw, machine: Machine, s: _Aim, kind: str) -> list[str]:
         s.tool, s.register = machine.tool_length(n), n
         target = dict(s.pos)
         target["Z"] = draw(_z_target(machine, s))
+        if not s.fits(target):
+            target["Z"] = s.pos["Z"] if s.fits(s.pos) else F(199)
         s.depend("Z", s.frame)
         s.pos = target
         return [f"G43 H{n} G90 G0 {_words(s, target, 'Z')}"]
     if kind == "incremental":
-        target = draw(_plane_target(machine, s))
+        target = draw(s.inside(draw(_plane_target(machine, s))))
         d = {a: target[a] - s.pos[a] for a in "XY"}
         s.pos = {**s.pos, "X": target["X"], "Y": target["Y"]}
         return [f"G91 {draw(st.sampled_from(('G0', 'G1')))} X{_dec(d['X'])} Y{_dec(d['Y'])}", "G90"]
@@ -358,6 +378,7 @@ def _blocks(draw, machine: Machine, s: _Aim, kind: str) -> list[str]:
 def polygon_programs(draw, machine: Machine, used: set | None = None) -> str:
     """A program for a :func:`polygon_machines` machine; ``used`` collects the ``--param`` names it depends on."""
     s = _Aim(machine)
+    s.careful = draw(st.integers(0, 2)) > 0
     lines = ["G21 G90 G17 G40 G49 G54 G80 G94 F600"]
     if draw(st.integers(0, 3)) == 0:
         lines += draw(_blocks(machine, s, "incremental"))

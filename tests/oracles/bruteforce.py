@@ -17,7 +17,7 @@ Paths, as DESIGN and :mod:`nczones.motion` define them:
 * ARC (I J K format, no helix): exact rational points of the circle (the
   tangent half-angle parametrisation of rotations), axis extremes and
   boundary crossings where they are rational, restricted exactly to the
-  swept angle.
+  swept angle; a spiral (end radius off the start radius) only its ends.
 """
 
 from __future__ import annotations
@@ -160,6 +160,10 @@ def arc_points(seg: Segment, machine: Machine, n: int = 64) -> list[tuple[Fracti
     ccw = not seg.clockwise
     full = u == w
     r2 = u[0] ** 2 + u[1] ** 2
+    if r2 != w[0] ** 2 + w[1] ** 2:
+        # a spiral (end off the circle within the arc tolerance): its inner points are not on the start
+        # circle and not rational in general; its two ends are the exact points it has
+        return [seg.start, seg.end]
     cands = []
     base = u
     for _ in range(4):
