@@ -622,8 +622,10 @@ def box_certainly_violates(
         from ..zones.model import segment_meets_open_box  # exact clipping helper
 
         x, y = zone.plane
-        gx = (lo[x] - margin - 1 / Fraction(10**30), hi[x] + margin + 1 / Fraction(10**30))
-        gy = (lo[y] - margin - 1 / Fraction(10**30), hi[y] + margin + 1 / Fraction(10**30))
+        # the box as the zone sees it: a tip zone whose plane holds the tool axis sees it less the tool length
+        sx, sy = (shift if a == allowed.tool_axis else F0 for a in (x, y))
+        gx = (lo[x] - sx - margin - 1 / Fraction(10**30), hi[x] - sx + margin + 1 / Fraction(10**30))
+        gy = (lo[y] - sy - margin - 1 / Fraction(10**30), hi[y] - sy + margin + 1 / Fraction(10**30))
         if any(segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
             return False
         axes_to_check = [a for a, _, _ in zone.limits]

@@ -11,6 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from .metamorphic import check_margins, check_ranges
+from nczones.zones import PolygonZone
+
 from .polygon_metamorphic import (
     check_engines,
     check_oracles,
@@ -132,3 +134,61 @@ def test_a_point_strictly_inside_or_outside_a_polygon_in_an_open_box(data):
     else:
         assert lo[0] < q[0] < hi[0] and lo[1] < q[1] < hi[1]
         assert locate(zone, q) == (1 if inside else -1)
+
+
+def test_a_box_certified_against_a_tip_polygon_sees_the_tool_length():
+    """Finding (fixed): box_certainly_violates tested a tip polygon's edges against the machine box, not the box
+    the tip sees (Z less the tool length) when the polygon's plane holds Z: a box with tip Z from 12 to 22 across
+    a chuck's top face (Z 20) was certified although its points above the face do not violate."""
+    import itertools
+    from fractions import Fraction as F
+
+    from nczones.prover.exact import box_certainly_violates
+    from nczones.zones import AllowedSet, ZonePoint
+
+    chuck = PolygonZone("chuck", ("X", "Z"), ((F(40), F(0)), (F(60), F(0)), (F(60), F(20)), (F(40), F(20))),
+                        forbid=True, point=ZonePoint.TIP)
+    allowed = AllowedSet((chuck,), "Z")
+    lo, hi = {"X": F(50), "Z": F(62)}, {"X": F(51), "Z": F(72)}
+    assert not box_certainly_violates(allowed, chuck, lo, hi, F(0), F(50))
+    assert box_certainly_violates(allowed, chuck, {"X": F(50), "Z": F(55)}, {"X": F(51), "Z": F(65)}, F(0), F(50))
+    assert box_certainly_violates(allowed, chuck, {"X": F(50), "Z": F(55)}, {"X": F(51), "Z": F(65)}, F(1), F(50))
+    for p in itertools.product((F(50), F(51)), (F(55), F(65))):
+        assert allowed.violated_zones(dict(zip("XZ", p)), F(50), F(1))
+
+
+@settings(max_examples=40 if examples("oracles") < 100 else 1_000)
+@given(st.data())
+def test_a_box_certified_against_polygon_zones_violates_at_every_point(data):
+    """box_certainly_violates (the certificate of witnesses on arcs, splines, developed arcs) on the polygon
+    machines: boxes around vertices and edge points, with the tool lengths, flat or not."""
+    import itertools
+    from fractions import Fraction as F
+
+    from nczones.prover.exact import box_certainly_violates
+
+    from .polygon_metamorphic import polygon_machines
+
+    machine, _ = data.draw(polygon_machines())
+    tool = data.draw(st.sampled_from((F(0), *machine.tool_lengths.values())))
+    margin = data.draw(st.sampled_from((F(0), F(1, 1000), F(1, 2))))
+    zone = data.draw(st.sampled_from(machine.zones))
+    polys = [z for z in machine.zones if isinstance(z, PolygonZone)]
+    lo, hi = {}, {}
+    base = {"X": F(50), "Y": F(50), "Z": F(100)}
+    if polys:
+        z = data.draw(st.sampled_from(polys))
+        v = data.draw(st.sampled_from(z.vertices))
+        for k, a in enumerate(z.plane):
+            base[a] = v[k] + (tool if a == "Z" and z.point.name == "TIP" else 0)
+    for a in "XYZ":
+        off = data.draw(st.sampled_from((F(0), margin, -margin, F(1, 100), F(-1, 3), F(-2))))
+        width = data.draw(st.sampled_from((F(0), F(1, 1000), F(1, 10), F(3))))
+        lo[a], hi[a] = base[a] + off, base[a] + off + width
+    if not box_certainly_violates(machine.allowed, zone, lo, hi, margin, tool):
+        return
+    corners = [dict(zip("XYZ", c)) for c in itertools.product(*((lo[a], hi[a]) for a in "XYZ"))]
+    inner = [{a: lo[a] + (hi[a] - lo[a]) * data.draw(st.fractions(0, 1, max_denominator=64)) for a in "XYZ"}
+             for _ in range(8)]
+    for p in corners + inner:
+        assert zone in machine.allowed.violated_zones(p, tool, margin), (zone.name, p, margin, tool)
