@@ -435,6 +435,15 @@ def polygon_oracle_cases(draw):
     return machine, text, draw(st.sampled_from((F(1, 1000), F(1, 100), F(1, 2))))
 
 
+@st.composite
+def polygon_engine_cases(draw):
+    machine, _ = draw(polygon_machines())
+    used: set = set()
+    text = draw(polygon_programs(machine, used))
+    params = draw(polygon_ranges(machine, used)) if draw(st.booleans()) else ()
+    return machine, text, draw(st.sampled_from((F(1, 1000), F(1, 100), F(1, 2)))), params
+
+
 # ----------------------------------------------------------------------------- the independent float oracle
 
 
@@ -622,8 +631,9 @@ def column_screen_forced():
         core.SCREEN_MIN_SEGMENTS = saved
 
 
-def check_engines(machine: Machine, text: str, margin: Fraction) -> None:
-    """One by one, through the column screen, and Z3 alone: one verdict, one set of violating blocks."""
+def check_engines(machine: Machine, text: str, margin: Fraction, params: tuple[str, ...] = ()) -> None:
+    """One by one, through the column screen, the fast interpreter's columns, and Z3 alone: one verdict, one set
+    of violating blocks (at margins 0 and ``d``); over ``params``, the default engine and Z3 alone alike."""
     from nczones.prover import Prover
     from nczones.prover.screen import screen_chunk, segment_columns
 
@@ -634,7 +644,8 @@ def check_engines(machine: Machine, text: str, margin: Fraction) -> None:
         with column_screen_forced():
             screened = _verify_segments(segs, machine, margin=d)
         z3 = _verify_segments(segs, machine, margin=d, engine="z3")
-        runs = {"one by one": auto, "column screen": screened, "z3": z3}
+        fast = _verify_segments(list(interpret_text(text, machine, fast=True)), machine, margin=d)
+        runs = {"one by one": auto, "column screen": screened, "z3": z3, "fast interpreter": fast}
         labels = {k: r.verdict.label for k, r in runs.items()}
         _note(f"engines: {'/'.join(sorted(set(labels.values())))}")
         _require(not ("safe" in labels.values() and "unsafe" in labels.values()),
@@ -655,3 +666,18 @@ def check_engines(machine: Machine, text: str, margin: Fraction) -> None:
                 _require(alone.verdict.label != "unsafe" and hit is None,
                          f"margin {d}: the column screen proves segment {i} (block {segs[i].block}) but Z3 alone says "
                          f"{alone.verdict.label} and the brute force {hit}")
+    if params:  # over parameter ranges: the default engine against Z3 alone
+        from nczones.prover import verify_text
+
+        try:
+            by = {e: verify_text(text, machine, params=params, engine=e, max_violations=1000) for e in ("auto", "z3")}
+        except InputError:
+            assume(False)
+            raise
+        labels = {e: r.verdict.label for e, r in by.items()}
+        _note(f"engines over ranges: {'/'.join(sorted(set(labels.values())))}")
+        _require(not ("safe" in labels.values() and "unsafe" in labels.values()),
+                 f"over {params} the engines disagree: {labels}")
+        if not any(r.reasons for r in by.values()):
+            lines = {e: sorted({v.line for v in r.violations}) for e, r in by.items()}
+            _require(lines["auto"] == lines["z3"], f"over {params} the engines report different lines: {lines}")

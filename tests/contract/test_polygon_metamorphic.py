@@ -16,12 +16,13 @@ from nczones.zones import PolygonZone
 from .polygon_metamorphic import (
     check_engines,
     check_oracles,
+    polygon_engine_cases,
     polygon_margin_cases,
     polygon_oracle_cases,
     polygon_range_cases,
 )
 
-CI_EXAMPLES = {"ranges": 12, "margins": 8, "oracles": 10, "engines": 8}
+CI_EXAMPLES = {"ranges": 8, "margins": 5, "oracles": 6, "engines": 4}
 LONG_EXAMPLES = {"ranges": 1_000, "margins": 1_000, "oracles": 1_000, "engines": 1_000}
 
 
@@ -55,10 +56,10 @@ def test_polygon_verdicts_agree_with_the_brute_force_and_shapely(case):
 
 
 @settings(max_examples=examples("engines"))
-@given(polygon_oracle_cases())
+@given(polygon_engine_cases())
 def test_the_column_screen_and_z3_decide_polygon_zones_alike(case):
-    machine, text, margin = case
-    check_engines(machine, text, margin)
+    machine, text, margin, params = case
+    check_engines(machine, text, margin, params)
 
 
 # ----------------------------------------------------------------------------- findings
@@ -105,7 +106,7 @@ def test_a_margin_box_meeting_a_thin_polygon_has_a_witness():
     assert verify_text("G1 X51 Y48 F100\n", machine, margin=Fraction(1, 2)).verdict.label == "safe"
 
 
-@settings(max_examples=60 if examples("oracles") < 100 else 2_000)
+@settings(max_examples=30 if examples("oracles") < 100 else 2_000)
 @given(st.data())
 def test_a_point_strictly_inside_or_outside_a_polygon_in_an_open_box(data):
     """open_box_point against Shapely: its point is in the open box and strictly on the side asked for; it
@@ -157,7 +158,7 @@ def test_a_box_certified_against_a_tip_polygon_sees_the_tool_length():
         assert allowed.violated_zones(dict(zip("XZ", p)), F(50), F(1))
 
 
-@settings(max_examples=40 if examples("oracles") < 100 else 1_000)
+@settings(max_examples=20 if examples("oracles") < 100 else 1_000)
 @given(st.data())
 def test_a_box_certified_against_polygon_zones_violates_at_every_point(data):
     """box_certainly_violates (the certificate of witnesses on arcs, splines, developed arcs) on the polygon
