@@ -59,7 +59,10 @@ def _dec(q: Fraction) -> str:
     return format_decimal(q)
 
 
-def _grid(draw, lo, hi, step=F(1, 2)) -> Fraction:
+HALF = F(1, 2)
+
+
+def _grid(draw, lo, hi, step=HALF) -> Fraction:
     return lo + step * draw(st.integers(0, int((hi - lo) / step)))
 
 

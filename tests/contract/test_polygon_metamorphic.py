@@ -10,9 +10,9 @@ import os
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from .metamorphic import check_margins, check_ranges
 from nczones.zones import PolygonZone
 
+from .metamorphic import check_margins, check_ranges
 from .polygon_metamorphic import (
     check_engines,
     check_oracles,
