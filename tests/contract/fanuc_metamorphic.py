@@ -154,6 +154,21 @@ def fanuc_programs(draw, machine: Machine, *, reads: bool = True, deletes: bool 
     return "\n".join(lines) + "\n"
 
 
+def _arc(draw, machine: Machine, s: _State, spiral: bool) -> tuple[dict, tuple, tuple, bool]:
+    """An arc of a quarter or a half turn from a drawn point (machine coordinates): (start, centre, end,
+    clockwise); with ``spiral`` the end radius is off by up to the arc tolerance."""
+    a0 = {a: draw(_machine_value(machine, a, s)) for a in "XY"}
+    r = _vals(draw, F(1), F(15))
+    cw = draw(st.booleans())
+    d = draw(st.sampled_from(((1, 0), (0, 1), (-1, 0), (0, -1))))
+    grow = draw(st.sampled_from((F0, F0, F(1, 1000), F(-1, 1000)))) if spiral else F0
+    c = (a0["X"] + d[0] * r, a0["Y"] + d[1] * r)
+    v = (-d[0], -d[1])
+    for _ in range(draw(st.integers(1, 2))):
+        v = (v[1], -v[0]) if cw else (-v[1], v[0])
+    return a0, c, (c[0] + v[0] * (r + grow), c[1] + v[1] * (r + grow)), cw
+
+
 def _move(draw, machine, s: _FanucState, axes: str, how: str, g: str) -> str:
     target = dict(s.pos)
     for a in axes:
@@ -177,16 +192,7 @@ def _fanuc_block(draw, machine: Machine, s: _FanucState, kind: str, deletes: boo
         axes = draw(st.sampled_from(("XY", "X", "Y", "Z", "XYZ")))
         return [_move(draw, machine, s, axes, how, draw(st.sampled_from(("G0", "G0", "G1"))))]
     if kind == "arc":
-        a0 = {a: draw(_machine_value(machine, a, s)) for a in "XY"}
-        r = _vals(draw, F(1), F(15))
-        cw = draw(st.booleans())
-        d = draw(st.sampled_from(((1, 0), (0, 1), (-1, 0), (0, -1))))
-        grow = draw(st.sampled_from((F0, F0, F(1, 1000), F(-1, 1000))))  # a spiral within the tolerance
-        c = (a0["X"] + d[0] * r, a0["Y"] + d[1] * r)
-        v = (-d[0], -d[1])
-        for _ in range(draw(st.integers(1, 2))):
-            v = (v[1], -v[0]) if cw else (-v[1], v[0])
-        end = (c[0] + v[0] * (r + grow), c[1] + v[1] * (r + grow))
+        a0, c, end, cw = _arc(draw, machine, s, spiral=True)
         ox, oy = s.off("X"), s.off("Y")
         s.pos = {"X": end[0], "Y": end[1], "Z": s.pos["Z"]}
         s.moved("XY", s.frame)
@@ -675,15 +681,7 @@ def twin_programs(draw, machine: Machine) -> tuple[str, str]:
                 both(f"{pre}G90 {g} {' '.join(f'{a}{_fd(target[a] - off(a))}' for a in axes)}")
             s.pos = target
         elif kind == "arc":
-            a0 = {a: draw(_machine_value(machine, a, s)) for a in "XY"}
-            r = _vals(draw, F(1), F(15))
-            cw = draw(st.booleans())
-            d = draw(st.sampled_from(((1, 0), (0, 1), (-1, 0), (0, -1))))
-            c = (a0["X"] + d[0] * r, a0["Y"] + d[1] * r)
-            v = (-d[0], -d[1])
-            for _ in range(draw(st.integers(1, 2))):
-                v = (v[1], -v[0]) if cw else (-v[1], v[0])
-            end = (c[0] + v[0] * r, c[1] + v[1] * r)
+            a0, c, end, cw = _arc(draw, machine, s, spiral=False)
             both(f"G90 G1 X{_fd(a0['X'] - off('X'))} Y{_fd(a0['Y'] - off('Y'))}")
             if draw(st.booleans()):
                 both(f"G{'2' if cw else '3'} X{_fd(end[0] - off('X'))} Y{_fd(end[1] - off('Y'))} "
