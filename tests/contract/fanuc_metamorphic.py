@@ -722,7 +722,7 @@ def twin_programs(draw, machine: Machine) -> tuple[str, str]:
                     g52[a] = F0
                     g52[a] = s.pos[a] - here[a] - off(a)
                 both(f"G92 X{_fd(here['X'])} Y{_fd(here['Y'])}")
-                shifted = True
+            shifted = True
         elif kind == "cycle":
             init = _vals(draw, F(60), F(190))
             both(f"G90 G53 G0 Z{_fd(init)}")
