@@ -913,6 +913,10 @@ class Interpreter:
             self.tool_selected = int(t)
         mset = {k for k, _ in mcodes}
         if 6 in mset:
+            if self.tool_selected == 0 and self.tool_in_spindle != 0:
+                self._unloaded = True
+            elif self.tool_selected != 0:
+                self._unloaded = False
             self.tool_in_spindle = self.tool_selected
             self.spindle_dir = 0  # LinuxCNC convert_tool_change stops the spindle (TOOL_CHANGE_WITH_SPINDLE_ON off)
         for k, d in ((3, 1), (4, -1), (5, 0), (19, 0)):
@@ -923,6 +927,7 @@ class Interpreter:
             if q is None or q.value.denominator != 1 or q.value < 0:
                 raise self.error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
             self.tool_in_spindle = int(q.value)
+            self._unloaded = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
         # 10: dwell
         if g0 and g0[0] == 40:
             p = words.get("P")
@@ -1316,6 +1321,12 @@ class Interpreter:
                 reg = int(h.value) or self.tool_in_spindle
             else:
                 reg = self.tool_in_spindle
+            if (h is None or h.value == 0) and self._unloaded:
+                # rs274 keeps the unloaded tool's entry in the spindle slot after T0 M6, and M61 changes only the
+                # number: G43 then applies the length of that entry
+                self.unknown("G43", "G43 of the tool in the spindle after T0 M6 or M61: LinuxCNC's interpreter "
+                              "reads the spindle slot's table entry, which those leave as it was; not modelled", h or w)
+                return
             if reg in self.tool_table:
                 self.tlo, self.dep_tlo = self.tool_table[reg]
                 self.tool_register = reg
@@ -1459,8 +1470,7 @@ class Interpreter:
         kw = words.get("K")
         if kw is None:
             raise self.error("GC208", f"{name} needs a K word (the pitch, distance per spindle revolution)")
-        if kw.value <= 0:
-            raise self.error("GC209", f"{name} pitch {kw.text} must be greater than 0", kw)
+        # any K, 0 and negative too: LinuxCNC checks only that the block has one; the path is the line either way
         if self.comp_on:
             raise self.error("GC204", f"{name} cannot be used with cutter compensation on")
         self._spindle_turning(name)
@@ -1833,6 +1843,14 @@ class Interpreter:
             self.cycle_il = current_cc
             self._cycle_il_axis = ic
             self._cycle_il_deps = dict(current_d)
+        elif self._cycle_il_axis != ic:
+            # a plane change between cycle blocks: LinuxCNC reads the same program number on the new normal axis
+            if track:
+                self.unknown(gname(motion), "a plane change while a canned cycle is modal is not followed with "
+                              "parameter ranges")
+                return
+            self.cycle_il = self.cycle_il - self.off[self._cycle_il_axis] + self.off[ic]
+            self._cycle_il_axis = ic
         old_cc, old_d = self.cycle_il, self._cycle_il_deps if track else nodeps
         il_prog_mm = old_cc - self.off[ic]  # LinuxCNC's old_cc (program coordinates) for G91's R
         wd = {self.axes[i]: aw for i, aw in axis_words}
@@ -1920,6 +1938,7 @@ class Interpreter:
 
     last_cycle: int | None = None
     _cycle_il_deps: dict = {}
+    _unloaded = False  # T0 M6 or M61 left the spindle slot's table entry behind the tool number
     _cycle_il_axis = 0
 
     def _level_lt(self, a: tuple[Fraction, dict], b: tuple[Fraction, dict], i: int, what: str) -> bool:

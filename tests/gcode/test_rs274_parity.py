@@ -226,3 +226,27 @@ def test_pecks_are_counted_as_linuxcnc_counts_them(text, feeds):
     whole number of pecks below R, it pecks once more or once less than exact arithmetic would. rs274 prints
     ``feeds`` STRAIGHT_FEEDs for these programs (the pecks and the last feed to the bottom)."""
     assert sum(1 for r in motion(text) if r[0] == "LINE") == feeds
+
+
+def test_g43_after_t0_m6_unloaded_a_tool_is_unknown():
+    """rs274 applies the unloaded tool 4's length to ``G43`` after ``T4 M6`` ``T0 M6`` (its spindle slot keeps the
+    entry); nczones applied 0. Unknown until the controller's behaviour there is pinned down."""
+    machine = parse_machine(MACHINE_TEXT + '[tool_lengths]\nH4 = "98.9076"\n')
+    run = interpret_text("F500\nT4 M6\nT0 M6\nG1 X-0.652 Z-1\nG43\nG1 X1 Y0 Z-1.472\nM2\n", machine)
+    assert len([s for c in run for s in c.segments()]) == 1
+    assert [(u.code, u.span.line) for u in run.unsupported] == [("G43", 5)]
+    run = interpret_text("F500\nM61 Q4\nG43\nG1 X1 Z-1\nM2\n", machine)  # rs274: length 0, the slot's entry
+    assert [s for c in run for s in c.segments()] == []
+    assert [(u.code, u.span.line) for u in run.unsupported] == [("G43", 3)]
+    run = interpret_text("F500\nG43\nG1 X1 Z-1\nM2\n", machine)  # never loaded: length 0, as rs274
+    assert [s.end[2] for c in run for s in c.segments()] == [-1] and not run.unsupported
+
+
+def test_a_plane_change_between_cycle_blocks_reads_the_initial_level_on_the_new_axis():
+    """LinuxCNC's initial level is one program number: after G17 cycles at Z 5 (tool length 25.4 mm), a G19 cycle
+    retracts X to 5 (rs274: ``STRAIGHT_TRAVERSE(5, 3, 0)``). nczones carried the machine Z level (30.4) over to X."""
+    machine = parse_machine(MACHINE_TEXT + '[tool_lengths]\nH1 = "25.4"\n')
+    run = interpret_text("F10\nG43 H1\nG0 Z5\nG98 G81 X0 Y0 Z-1 R1\nG19\nG81 X-1 Y3 Z0 R1\nM2\n", machine)
+    ends = [s.end for c in run for s in c.segments()][-4:]
+    assert ends == [tuple(Fraction(v) for v in e) for e in
+                    [(5, 3, "25.4"), (1, 3, "25.4"), (-1, 3, "25.4"), (5, 3, "25.4")]]

@@ -55,13 +55,14 @@ def test_g91_g33_1_is_relative_to_the_start():
     assert [s.end[2] for s in segs[1:]] == [F(49), F(51), F(48), F(51)]
 
 
-def test_g33_without_k_or_with_bad_k_is_an_error():
+def test_g33_without_k_is_an_error_any_k_value_is_not():
     with pytest.raises(GcodeError) as e:
         segments_text("G0 Z1\nG33 Z-1\n", MILL)
     assert e.value.diagnostics[0].code == "GC208"
-    with pytest.raises(GcodeError) as e:
-        segments_text("G0 Z1\nG33.1 Z-1 K-1\n", MILL)
-    assert e.value.diagnostics[0].code == "GC209"
+    # LinuxCNC takes any K (rs274 runs G33 K0, G33 K-1, G33.1 K0); only a missing K is refused
+    for k in ("K0", "K-1"):
+        segs = segments_text(f"G0 Z1 M3 S100\nG33.1 Z-1 {k}\n", MILL)
+        assert [s.end[2] for s in segs[1:]] == [F(49), F(51)]
 
 
 def test_g84_in_g18_and_g19_moves_as_linuxcnc_really_does():
