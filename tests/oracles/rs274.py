@@ -178,9 +178,10 @@ def canon_motion(log: str) -> list[CanonMove]:
                 if rotation:
                     pt[0], pt[1] = place(v[0] * unit, v[1] * unit)
                 if name == "RIGID_TAP":  # X Y Z only: tap to the point, back to the start (nczones's two LINEs)
-                    prev = moves[-1].end if moves else tuple([Fraction(0)] * 6)
+                    prev, ptol = (moves[-1].end, moves[-1].tol) if moves else (tuple([Fraction(0)] * 6), tol)
                     moves.append(CanonMove("LINE", tuple(pt[:3]) + prev[3:], tol, unit=unit, rotation=rotation))
-                    moves.append(CanonMove("LINE", prev, tol, unit=unit, rotation=rotation))
+                    # back to where the last printed move ended, within that print's rounding
+                    moves.append(CanonMove("LINE", prev, max(tol, ptol), unit=unit, rotation=rotation))
                     continue
                 kind = {"STRAIGHT_TRAVERSE": "RAPID", "STRAIGHT_FEED": "LINE"}.get(name, name)
                 moves.append(CanonMove(kind, tuple(pt), tol, unit=unit, rotation=rotation))

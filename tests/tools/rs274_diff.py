@@ -210,11 +210,11 @@ class Generator:
         if roll == 5:
             t = r.randint(0, 4)
             # rs274's own canon layer keeps no tool offset in the position it hands back after a tool change
-            # (saicanon GET_EXTERNAL_POSITION): a move right before M6 keeps the two in step, and G43 goes
-            # on a line of its own
+            # (saicanon GET_EXTERNAL_POSITION): a move right before M6 or M61 keeps the two in step, and G43
+            # goes on a line of its own
             sync = "G0 X0" if self.dist == "G91" else "G0 X[#<_x>]"
             return r.choice([[sync, f"T{t} M6"], [sync, f"T{t} M6", "G43"], [f"T{t}"], [sync, "M6"],
-                             [f"M61 Q{t}"]])
+                             [sync, f"M61 Q{t}"]])
         if roll == 6:
             return [f"G92 {self.axis_words()}"]
         if roll == 7:
