@@ -302,12 +302,15 @@ def _verify(
     if recovery is not None and not interrupted:
         from .recovery import verify_recovery
 
+        # The recovery is proved at one point of the parameter ranges (their nominal values where the
+        # ranges hold them, else their middles): its witnesses must lie inside the ranges.
+        rec_machine, at_values = _recovery_point(machine, ranges)
         found: list[Violation] = []
-        for skip in positions:
-            rerun = interpret(source, machine, block_delete=skip, **extra)
+        for skip in positions if at_values is not None else ():
+            rerun = interpret(source, rec_machine, block_delete=skip, **extra)
             try:
                 with limits.watch():
-                    rec = verify_recovery(rerun, machine, variant=recovery, margin=margin,
+                    rec = verify_recovery(rerun, rec_machine, variant=recovery, margin=margin,
                                           max_violations=max_violations, limits=limits)
             except KeyboardInterrupt:
                 interrupted = True
@@ -320,19 +323,20 @@ def _verify(
             for v in rec.violations:
                 if skip and any((v.line, v.break_line) == (w.line, w.break_line) for w in found):
                     continue
-                found.append(replace(v, span=_fix_span(v.span, source_text), switches=switch))
+                found.append(replace(v, span=_fix_span(v.span, source_text), switches=switch,
+                                     params=at_values or ()))
             reasons += [replace(r, span=_fix_span(r.span, source_text)) for r in rec.reasons
                         if not skip or r.message not in {x.message for x in reasons}]
         violations = sorted(violations + found,
                             key=lambda v: (("block_delete", "on") in v.switches, v.block, v.kind != "motion"))
         if ranges:
-            # The recovery proof runs at the nominal parameter values only; a
-            # verdict 'safe' over the ranges would claim more than was proved.
-            names = ", ".join(r.name for r in ranges)
+            # A verdict 'safe' over the ranges would claim more than was proved.
+            where = ("at " + ", ".join(f"{n} = {format_decimal(v)}" for n, v in at_values)
+                     if at_values is not None else "nowhere (a homing-error range excludes 0)")
             reasons.append(Reason(
-                f"RC204: the tool-break recovery was proved only at the nominal values of {names}; "
-                "recovery under parameter ranges is not modelled", None, None, "RC204"))
-        if not interrupted:
+                f"RC204: the tool-break recovery was proved only {where}, one point of the parameter ranges; "
+                "recovery over the whole ranges is not modelled", None, None, "RC204"))
+        if not interrupted and at_values is not None:
             notes += (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
                       f"{dict(rec.stats)['recovery_motions']} cutting motions",)
             result = replace(result, stats=result.stats + rec.stats)
@@ -343,6 +347,25 @@ def _verify(
                    timings=timings, extra={"counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=tuple(settings.items()))
+
+
+def _recovery_point(machine: Machine, ranges: tuple[ParamRange, ...]) -> tuple[Machine, tuple[tuple[str, Fraction], ...] | None]:
+    """The machine at the one point of the ranges where the tool-break recovery is proved, and that point
+    as witnesses name it (work offsets and the start as deviations, tool lengths absolute).
+
+    The nominal value where a range holds it, else the middle of the range (:func:`.cases.centred`).
+    ``None`` when no point can be chosen: a homing error is not interpreted, so a ``home.*`` range
+    without 0 has no point the recovery proof could stand at.
+    """
+    from .cases import centred
+
+    if not ranges:
+        return machine, ()
+    if any(r.name.startswith("home.") and not r.lo <= 0 <= r.hi for r in ranges):
+        return machine, None
+    at, moved = centred(machine, ranges)
+    values = tuple((r.name, at.tool_length(int(r.name[1:])) if r.absolute else r.centre) for r in moved)
+    return at, values
 
 
 #: A line the block-delete switch may skip: its first character other than blanks is "/".

@@ -46,7 +46,8 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "A margin d is clearance on every axis: the box of half-width d around every path point fits the "
     "allowed set.",
     "Cutter radius compensation is modelled only with cutter_compensation = \"linuxcnc\" (otherwise "
-    "unknown); tool-break recovery only with --recovery, at the nominal parameter values.",
+    "unknown); tool-break recovery only with --recovery and without --param ranges (with ranges it is "
+    "proved at one point of them and the verdict is at best unknown).",
     "Loops run at most --max-iterations times per entry (more is unknown); probing, M66 inputs and reads "
     "of spindle, coolant, override or HAL state are unknown.",
     "Numbers are exact: decimals as written, no float enters a proof; irrational quantities are enclosed "

@@ -260,6 +260,22 @@ def test_recovery_under_parameter_ranges_is_never_called_safe():
     assert any(r.code == "RC204" for r in ranged.reasons)
 
 
+def test_a_recovery_witness_under_parameter_ranges_lies_inside_them():
+    """The recovery is proved at one point of the ranges: with the tool length ranged away from the file's
+    value, a crash found at the file's value (outside the ranges) must not make the verdict unsafe."""
+    machine = load_machine(LOW)  # unsafe recovery at the file's H1 = 120: the tip at Z180 hits the clamp
+    program = PROG.read_text()
+    assert verify_text(program, machine, recovery="start").verdict.label == "unsafe"
+    short = verify_text(program, machine, recovery="start", params=["H1=0..1"])  # the tip above the clamp
+    assert short.verdict.label == "unknown" and not short.violations
+    assert [r.code for r in short.reasons] == ["RC204"] and "H1 = 0.5" in short.reasons[0].message
+    held = verify_text(program, machine, recovery="start", params=["H1=119..121", "G54.X=0.5..1"])
+    v = held.violations[0]
+    assert v.kind == "recovery" and dict(v.params) == {"H1": 120, "G54.X": F(3, 4)}
+    replay = verify_text(program, replace(machine, offsets={"G54": (F(3, 4), F(0), F(0))}), recovery="start")
+    assert [(w.break_line, w.leg) for w in replay.violations] == [(v.break_line, v.leg)]
+
+
 SPLINE_PROG = "G21 G90 G17 G54\nG43 H1\nG0 X100 Y100 Z110\nG5.1 X200 Y100 I50 J50 F600\nG0 Z270\n"
 TURNING_TOOL_CHANGE = """[tool_lengths]
 H1 = "0"
