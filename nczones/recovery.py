@@ -88,6 +88,7 @@ __all__ = [
     "motion_sequences",
     "same_tool",
     "shift_segment",
+    "tip_offsets",
 ]
 
 
@@ -367,11 +368,23 @@ class RecoveryLeg(Generic[T]):
     feed_mm_min: Fraction | None = None
 
     def segment(self: RecoveryLeg[Fraction], axes: tuple[str, ...], like: Segment | None = None) -> Segment:
-        """As a :class:`Segment` (block and source of ``like``, ``derived`` names the leg)."""
+        """As a :class:`Segment` (block and source of ``like``, ``derived`` names the leg).
+
+        The leg keeps the broken motion's tip offset (:func:`tip_offsets`): a lathe tool offset off the
+        tool axis moves the tip during the recovery as during the cut.
+        """
         return Segment(self.kind, self.start, self.end, axes, block=like.block if like else 0,
                        span=like.span if like else None, tool_length=self.tool_length,
                        feed_mm_min=self.feed_mm_min, derived=f"tool-break recovery: {self.name}",
-                       tool_register=like.tool_register if like else None)
+                       tool_register=like.tool_register if like else None,
+                       extra=tip_offsets(like) if like else ())
+
+
+def tip_offsets(seg: Segment) -> tuple[tuple[str, object], ...]:
+    """The ``tip_offset`` entry of a motion's ``extra`` (a lathe tool offset off the tool axis; tool-tip zones
+    see the machine position minus it), which every recovery leg from a break in that motion carries too:
+    the broken tool's tip, and the replacement's, which differs from it on the tool axis only."""
+    return tuple(e for e in seg.extra if e[0] == "tip_offset")
 
 
 def recovery_legs(cfg: ToolChangeConfig, machine: Machine, break_point: Sequence[Fraction],

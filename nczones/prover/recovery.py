@@ -62,7 +62,7 @@ from ..recovery import (
     tool_axis_index,
     tool_change_config,
 )
-from ..zones import ZonePoint
+from ..zones import ZonePoint, tip_offset
 from .core import Prover
 from .geometry import arc_geom, rational_point_on_arc
 from .limits import BudgetSpent
@@ -207,7 +207,9 @@ class _Encoder:
         body.append("(declare-const t Real)(assert (<= 0.0 t 1.0))")
         return [a if a == b else add(a, mul("t", f"(- {b} {a})")) for a, b in zip(A, B)]
 
-    def outside(self, pt: list[str], L: Fraction, body: list[str]) -> str:
+    def outside(self, pt: list[str], L: Fraction, body: list[str], tip: dict[str, Fraction]) -> str:
+        """A point outside the allowed set (with the margin box); tool-tip zones see the point minus the tool
+        length on the tool axis and minus ``tip`` (a lathe tool offset) on the other axes."""
         seen_base = {}
         for k, a in enumerate(self.axes):
             term = pt[k]
@@ -220,6 +222,10 @@ class _Encoder:
             seen = dict(seen_base)
             if zone.point is ZonePoint.TIP and self.tool_axis in seen:
                 seen[self.tool_axis] = sub(seen[self.tool_axis], q(L))
+            if zone.point is ZonePoint.TIP:
+                for a, d in tip.items():
+                    if a in seen and d:
+                        seen[a] = sub(seen[a], q(d))
             parts.append(zone_violation(zone, seen, None))
         return or_all(parts)
 
@@ -277,13 +283,14 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
                                   "encoded (unsupported)", seg.span, seg.block, "RC201"))
             continue
         decl, P, names = bp
+        tip = tip_offset(seg.extra)
         S = segs[seq_of[i]].start
         R = P if cfg.variant is RecoveryVariant.BREAKPOINT else [q(v) for v in S]
         for leg in enc.legs(P, R, L, L2):
             name = leg.name
             body = list(decl)
             pt = enc.leg_points(leg, body)
-            body.append(f"(assert {enc.outside(pt, leg.tool_length, body)})")
+            body.append(f"(assert {enc.outside(pt, leg.tool_length, body, tip)})")
             stats["recovery_queries"] += 1
             try:
                 ans = solver.check("".join(body), names)

@@ -276,6 +276,32 @@ def test_a_recovery_witness_under_parameter_ranges_lies_inside_them():
     assert [(w.break_line, w.leg) for w in replay.violations] == [(v.break_line, v.leg)]
 
 
+LATHE_TOOL_CHANGE = """[tool_change]
+position = { X = "240", Z = "650" }
+retract_axis = "Z"
+clearance = "600"
+approach_distance = "5"
+approach_feed = "200"
+
+"""
+
+
+def test_recovery_legs_keep_the_lathe_tool_offset_of_the_broken_tool():
+    """A lathe tool offset off the tool axis (X 80 on the radius) moves the tip during the recovery as during the
+    cut: the retract from a cut at tip radius 20 goes up Z into the tailstock (a tip zone, X 0..45 from Z 360).
+    Both witnesses used to check the legs' tip at the machine X (100) and called the recovery safe."""
+    text = (ROOT / "specs" / "machines" / "fanuc_lathe.toml").read_text()
+    lathe = parse_machine(text.replace("[fanuc]", LATHE_TOOL_CHANGE + "[fanuc]", 1), "fanuc_lathe_tool_change.toml")
+    prog = "G21 G18 G40 G54 G98\nT0101\nG0 X40. Z80.\nG1 Z60. F100\nG0 X200.\nM30\n"
+    assert verify_text(prog, lathe).verdict.label == "safe"
+    r = verify_text(prog, lathe, recovery="start")
+    assert r.verdict.label == "unsafe"
+    v = r.violations[0]
+    assert (v.kind, v.break_line, v.leg, v.zone) == ("recovery", 4, "retract", "tailstock")
+    sim = simulate(interpret_text(prog, lathe), lathe, break_at=(4, F(1, 2)))
+    assert [(a.kind, a.zone, a.derived) for a in sim.alarms] == [("recovery", "tailstock", "tool-break recovery: retract")]
+
+
 SPLINE_PROG = "G21 G90 G17 G54\nG43 H1\nG0 X100 Y100 Z110\nG5.1 X200 Y100 I50 J50 F600\nG0 Z270\n"
 TURNING_TOOL_CHANGE = """[tool_lengths]
 H1 = "0"
