@@ -87,20 +87,21 @@ _CUTTING = ("G1 ", "G2 ", "G3 ", "G81", "G83")
 def recovery_machines(draw, *, clear: bool = False) -> tuple[Machine, str]:
     """(machine, TOML text): a :func:`meta_machines` machine with ``[tool_change]`` and a fence near the legs.
 
-    ``clear``: the tool-change position and the clearance height lie inside the travel (not on its limits),
-    so that a recovery can be safe with a margin of one pulse."""
+    ``clear``: the tool-change position and the clearance height lie 3 mm inside the travel, so that a
+    recovery can be safe with a margin (of one pulse, or of up to 2 mm)."""
     _, text = draw(meta_machines())
     lines = {}
     for row in text.splitlines():
         if "=" in row and row.split("=")[0].strip() in ("H1", "H2"):
             lines[row.split("=")[0].strip()] = F(row.split('"')[1])
-    edges = (F(1), F(99)) if clear else (F0, F(100))
-    tc = {"X": draw(st.sampled_from((*edges, _vals(draw, F(1), F(99))))),
-          "Y": draw(st.sampled_from((*edges, _vals(draw, F(1), F(99))))),
-          "Z": draw(st.sampled_from((F(199) if clear else F(200), _vals(draw, F(150), F(199)))))}
+    edges = (F(3), F(97)) if clear else (F0, F(100))
+    top = F(197) if clear else F(200)
+    tc = {"X": draw(st.sampled_from((*edges, _vals(draw, F(3), F(97))))),
+          "Y": draw(st.sampled_from((*edges, _vals(draw, F(3), F(97))))),
+          "Z": draw(st.sampled_from((top, _vals(draw, F(150), F(197)))))}
     retract = {}
-    if draw(st.integers(0, 3)):
-        clearance = draw(st.sampled_from((F(199) if clear else F(200), _vals(draw, F(100), F(199)))))
+    if clear or draw(st.integers(0, 3)):
+        clearance = draw(st.sampled_from((top, _vals(draw, F(100), F(197)))))
         retract["clearance"] = clearance
         height = clearance
     else:
@@ -171,7 +172,7 @@ def recovery_range_cases(draw):
 
 @st.composite
 def recovery_margin_cases(draw):
-    machine, _ = draw(recovery_machines())
+    machine, _ = draw(recovery_machines(clear=draw(st.integers(0, 3)) > 0))
     margin = draw(st.sampled_from((F(1, 100), F(1, 10), F(1, 2), F(2))))
     text = draw(recovery_programs(machine, reads=False, inside=margin if draw(st.integers(0, 3)) else None))
     frac = [draw(st.sampled_from((F0, F(1, 3), F(-1, 2), F(9, 10), F(-99, 100)))) for _ in range(3)]
@@ -377,9 +378,7 @@ def _replay_fraction(machine: Machine, segs, v) -> Fraction | str:
     if seg.kind is SegmentKind.LINE:
         d = [b - a for a, b in zip(seg.start, seg.end)]
         k = max(range(len(d)), key=lambda j: abs(d[j]))
-        if d[k] == 0:
-            return None
-        t = (bp[k] - seg.start[k]) / d[k]
+        t = (bp[k] - seg.start[k]) / d[k] if d[k] else F0  # a motion of length 0: its start
         if not 0 <= t <= 1 or any(seg.start[j] + t * d[j] != bp[j] for j in range(len(d))):
             return "not on the first cutting motion of its line"
     else:
