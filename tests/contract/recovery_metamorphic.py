@@ -32,9 +32,10 @@ Relations (each a test failure when broken; any exception other than a G-code in
 * **the controller as the independent witness** (:func:`check_recovery_controller`): the reference
   controller runs the recovery from sampled break points (every cutting line of both block-delete
   positions, at the start, the middle and the end of its first cutting motion).  Proved `safe` with the
-  margin of one pulse ``u`` ⇒ no alarm at any of them.  A recovery alarm from a break in line ``b`` ⇒
-  the margin-0 proof has a recovery violation from ``b`` or a recovery reason for ``b`` (counted gray
-  when only the margin-``u`` proof has one).  Every recovery witness (not the ``resume`` leg) replayed
+  margin of one pulse ``u`` ⇒ no alarm at any of them.  A recovery alarm in leg ``k`` from a break in
+  line ``b`` ⇒ the margin-``u`` proof has a recovery violation from ``b`` in leg ``k`` or an earlier one
+  (the prover reports the first failing leg of a motion: the legs before it are proved for every break
+  point), or a reason there; counted gray when the margin-0 proof has none.  Every recovery witness (not the ``resume`` leg) replayed
   at its break point (the controller's step nearest to it) alarms when deeper than two pulses (the
   break point itself is quantized to a step: one pulse, plus the band of one pulse); shallower ones are
   counted as gray, not failed.
@@ -55,7 +56,7 @@ from nczones.gcode import interpret_text
 from nczones.machine import Machine, parse_machine
 from nczones.motion import SegmentKind, segments_of
 from nczones.prover import parse_param
-from nczones.recovery import ToolChangeConfig, is_cutting
+from nczones.recovery import LEG_NAMES, ToolChangeConfig, is_cutting
 
 from .metamorphic import (
     MetamorphicViolation,
@@ -428,19 +429,27 @@ def check_recovery_controller(machine: Machine, text: str) -> None:
                 alarms = [a for a in sim.alarms if a.kind == "recovery"]
                 if not alarms:
                     continue
-                if any(v.break_line == line for v in rec0):
-                    _note("recovery controller: alarm where the prover found the break line unsafe")
-                    continue
-                reasons = [r for r in r0.reasons if r.span is None or r.span.line == line
+                reasons = [r for r in (*r0.reasons, *ru.reasons) if r.span is None or r.span.line == line
                            or (not r.code.startswith("RC") and r.span.line <= line)]
                 if reasons:
                     _note("recovery controller: alarm where the prover is unknown")
                     continue
-                _require(any(v.break_line == line for v in recu),
+                leg = alarms[0].derived.split(": ", 1)[1]
+                found = [LEG_NAMES.index(v.leg) for v in recu if v.break_line == line and v.leg != "resume"]
+                _require(bool(found),
                          f"the controller alarms in the recovery from a break at line {line}:{frac} (block delete "
-                         f"{switch}, {alarms[0].derived}, zone {alarms[0].zone}), but the prover found no "
-                         f"recovery violation from line {line} even with margin {U}")
-                _note("gray band (recovery): alarm, unsafe only with margin u")
+                         f"{switch}, leg {leg!r}, zone {alarms[0].zone}), but the prover found no recovery "
+                         f"violation from line {line} even with margin {U}")
+                # the prover tries the legs in order and reports the first that fails: the legs before it are
+                # proved for every break point of the motion, with the margin of one pulse
+                _require(LEG_NAMES.index(leg) >= min(found),
+                         f"the controller alarms in leg {leg!r} from a break at line {line}:{frac} (block delete "
+                         f"{switch}, zone {alarms[0].zone}), a leg the prover proved with margin {U} (its first "
+                         f"failing leg there is {LEG_NAMES[min(found)]!r})")
+                if any(v.break_line == line for v in rec0):
+                    _note("recovery controller: alarm where the prover found the break line unsafe")
+                else:
+                    _note("gray band (recovery): alarm, unsafe only with margin u")
         mine = [w for w in rec0 if w.leg != "resume" and dict(w.switches).get("block_delete", "off") == switch]
         for v in mine[:3]:
             frac = _replay_fraction(machine, segs, v)
