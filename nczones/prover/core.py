@@ -438,6 +438,17 @@ class Prover:
         if seg.kind not in _LINE_LIKE and seg.kind is not SegmentKind.ARC:
             return Outcome(reason=Reason(f"segment kind {seg.kind.name} is not handled by the prover",
                                           seg.span, seg.block), engine="unknown")
+        if seg.kind is SegmentKind.ARC and seg.centre is not None and not seg.turns:
+            ia, ib, _ = seg.plane_indices()
+            u = (seg.start[ia] - seg.centre[0], seg.start[ib] - seg.centre[1])
+            w = (seg.end[ia] - seg.centre[0], seg.end[ib] - seg.centre[1])
+            if u != w and u[0] * w[1] - u[1] * w[0] == 0 and u[0] * w[0] + u[1] * w[1] > 0:
+                # LinuxCNC (posemath pmCircleInit) sweeps a whole turn when the end lies on the start's ray
+                # from the centre: a spiral lap that the sweep from start to end (none) does not hold
+                return Outcome(reason=Reason("arc whose end lies on the ray from the centre through its start "
+                                              "(a different radius within the arc tolerance): LinuxCNC moves a "
+                                              "whole spiral turn, which is not modelled", seg.span, seg.block),
+                               engine="unknown")
         if self.param_relevant(seg):
             return self.check_with_params(seg)
         return self.check_concrete(seg, ())

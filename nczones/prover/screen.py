@@ -164,7 +164,8 @@ def arc_boxes(chunk: MotionChunk, rows: np.ndarray, lo: np.ndarray, hi: np.ndarr
         r2e = w0 * w0 + w1 * w1
         rhi = _isqrt_ceil(np.maximum(r2s, r2e))
         grow = np.where(r2s == r2e, 0, 2 * (rhi - _isqrt_floor(np.minimum(r2s, r2e))))
-        full = ((sa == ea) & (sb == eb)) | (chunk.turns[r] > 0)
+        # a whole turn: back to the start, laps, or (LinuxCNC) an end on the start's ray from the centre
+        full = ((sa == ea) & (sb == eb)) | (chunk.turns[r] > 0) | ((u0 * w1 - u1 * w0 == 0) & (u0 * w0 + u1 * w1 > 0))
         ccw = ~chunk.clockwise[r].astype(bool)
         # in_sweep: clockwise from u to w is ccw from w to u
         p0, p1 = np.where(ccw, u0, w0), np.where(ccw, u1, w1)

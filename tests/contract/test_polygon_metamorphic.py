@@ -193,3 +193,48 @@ def test_a_box_certified_against_polygon_zones_violates_at_every_point(data):
              for _ in range(8)]
     for p in corners + inner:
         assert zone in machine.allowed.violated_zones(p, tool, margin), (zone.name, p, margin, tool)
+
+
+SPIRAL_MACHINE = """
+[machine]
+axes = ["X", "Y", "Z"]
+[machine.rapid]
+X = "6000"
+Y = "6000"
+Z = "6000"
+[machine.reference]
+X = "63"
+Y = "25"
+Z = "100"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "0", Y = "0", Z = "0" }
+max = { X = "100", Y = "100", Z = "200" }
+[[zones]]
+name = "wall"
+kind = "box"
+forbid = true
+min = { X = "66" }
+"""
+
+
+def test_an_arc_ending_on_its_start_ray_is_not_proved_safe():
+    """Finding (open, made unknown): Shapely in the long run (seed 1) found a spiral whose end lies on the ray
+    from the centre through its start, 0.0015 mm further out or in.  LinuxCNC (posemath pmCircleInit) sweeps a
+    whole turn there; the prover swept nothing and proved it safe although the turn reaches the wall at X 66.
+    The exact circle (end = start) is a whole turn and unsafe; the spirals are now unknown, in both the
+    one-by-one path and the column screen, never safe."""
+    from nczones.machine import parse_machine
+    from nczones.prover import verify_text
+
+    from .polygon_metamorphic import column_screen_forced
+
+    machine = parse_machine(SPIRAL_MACHINE)
+    assert verify_text("G90 G1 X63 Y20 F600\nG2 X63 Y20 I2 J0\nM30\n", machine).verdict.label == "unsafe"
+    for end in ("63.0015", "62.9985"):
+        for g in ("G2", "G3"):
+            text = f"G90 G1 X63 Y20 F600\n{g} X{end} Y20 I2 J0\nM30\n"
+            assert verify_text(text, machine).verdict.label == "unknown", text
+            with column_screen_forced():
+                assert verify_text(text, machine).verdict.label == "unknown", text
