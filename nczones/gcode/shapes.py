@@ -50,7 +50,8 @@ from .expr import (
 from .lexer import G_MACRO_CALLS, M_CONTROL, plain_decimal_value, to_double
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, ParsedLine, Parser, parse_line
 
-__all__ = ["parse_line_shaped", "line_shaped", "CompiledLine", "MAX_SHAPES", "RUNS", "LAYOUT", "compiled_line"]
+__all__ = ["parse_line_shaped", "line_shaped", "CompiledLine", "MAX_SHAPES", "RUNS", "LAYOUT", "compiled_line", "shaped",
+           "shape_source"]
 
 #: Shapes (and layouts) kept (a table is emptied when full: memory does not grow with the program).
 MAX_SHAPES = 4096
@@ -159,6 +160,12 @@ def _shaped(line: str, lineno: int, file: str) -> tuple[Any, tuple[str, ...] | N
     return shape, tuple(parts[1::2])
 
 
+def shaped(line: str, lineno: int, file: str) -> tuple[Any, tuple[str, ...] | None]:
+    """``(shape, the literals of this line)`` when the line's shape is known, else ``(its parse, None)``; the
+    layout of the line is registered either way (:data:`RUNS` when its shape has compiled code)."""
+    return _shaped(line, lineno, file)
+
+
 def _cutter(parts: list[str]) -> Callable[[str], tuple[str, ...]]:
     """A function cutting the literals out of a line of the layout of the line split into ``parts``."""
     cuts = []
@@ -199,13 +206,23 @@ class CompiledLine:
 
 
 class _Shape:
-    __slots__ = ("rebuild", "run", "columns")
+    __slots__ = ("rebuild", "run", "columns", "source")
     run: Any  # the compiled code, or None (a CompiledLine's shape always has it)
 
-    def __init__(self, rebuild: Callable[..., ParsedLine], run: Callable[..., Any] | None, columns: Any) -> None:
+    def __init__(self, rebuild: Callable[..., ParsedLine], run: Callable[..., Any] | None, columns: Any,
+                 source: tuple[ParsedLine, dict[int, str]]) -> None:
         self.rebuild = rebuild
         self.run = run
         self.columns = columns
+        self.source = source
+
+
+def shape_source(shape: Any) -> tuple[ParsedLine, dict[int, str]]:
+    """The parse of a shape's first line and, by ``id`` of each of its ``NUM`` nodes, the Python source of
+    that literal's text in a line of the shape (``P[k]``, or a sign or point before it: ``'-' + P[k]``), the
+    literals ``P`` being what the layout's cutter (:data:`RUNS`) cuts out of the line."""
+    source: tuple[ParsedLine, dict[int, str]] = shape.source
+    return source
 
 
 def _compile(line: str, parts: list[str], pl: ParsedLine) -> Any:
@@ -284,7 +301,7 @@ def _compile(line: str, parts: list[str], pl: ParsedLine) -> Any:
                                      None if pl.number is None else leaf_of[id(numbers[0][2])])
         except (_Unshaped, RecursionError):
             run = columns = None
-    return _Shape(rebuild, run, columns)
+    return _Shape(rebuild, run, columns, (pl, leaf_of))
 
 
 class _Unshaped(Exception):

@@ -287,6 +287,22 @@ def _verify(
     opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress, limits=limits,
                 profile=profile)
     deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)] if "/" in source.text else []
+    if (engine == "auto" and not ranges and recovery is None and not deleted and progress is None
+            and settings["dialect"] == "linuxcnc" and "#" in source.text):
+        # a parametric program: the double pass first (nczones.prover.doubles), the full path if it declines
+        from .doubles import double_pass_result
+
+        try:
+            quick = double_pass_result(source.text, machine, margin=margin, max_iterations=max_iterations)
+        except KeyboardInterrupt:
+            quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
+                f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
+                None, None, "VF204"),), interrupted=True, margin=margin, engine=engine)
+        if quick is not None:
+            return replace(quick, budget_s=limits.budget_s if limits is not None else budget_s,
+                           timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
+                           program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                           machine_sha256=machine.sha256, settings=tuple(settings.items()), file=source.name)
     positions = ((False, True) if mode == "both" else (mode == "on",)) if deleted else (False,)
     per_position: list[tuple[Result, Interpretation]] = []
     for skip in positions:

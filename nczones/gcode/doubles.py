@@ -1,0 +1,657 @@
+"""The double pass: a program's motion as the controller's doubles, enclosed exactly, for a quick proof.
+
+The full interpreter (:mod:`nczones.gcode.program`, :mod:`nczones.gcode.interpreter`) carries an exact
+value beside every double and builds a :class:`~nczones.motion.Segment` per motion; that is what a proof
+needs when a motion comes near a zone, and most of the time of a parametric program (expressions on every
+line, o-word loops).  The double pass runs a program of a small subset of LinuxCNC's language computing
+only the doubles the controller computes, and returns the machine positions of its motions as columns of
+doubles with a bound on how far each can be from the exact position the full interpreter would give.  A
+proof over boxes widened by that bound (:mod:`nczones.prover.doubles`) is a sound over-approximation of
+the full path's proof: when every box fits, every motion of the full path fits; when one does not, or the
+program leaves the subset, the pass *declines* and the full path runs as if it had not been tried.
+
+Why the bound holds
+-------------------
+Every double operation here is the one :func:`~nczones.gcode.expr.evaluate` makes, in the same order
+(``+ - * /`` inline, every other operator and function through the same
+:func:`~nczones.gcode.expr.binary_op` and :func:`~nczones.gcode.expr.unary_op`), so every condition, every
+loop count and every word's double is the full path's.  A word's exact value is its shadow when there is
+one, which is kept only when ``float(shadow) == double``, else the double itself: in both cases it is
+within half an ulp of the double.  The machine coordinate is the word plus the exact work offset; here it
+is the double sum ``d + float(offset)``.  So the exact coordinate ``m`` and the double ``m'`` here satisfy
+``|m - m'| <= (|d| + |offset| + |m'|) * 2**-53 <= (2|m'| + 2|offset|) * 2**-53`` (plus the smallest
+subnormal), and :meth:`DoublePath.enclosure` widens by more than that.  A straight move (G1, and G0 in
+either rapid mode: each axis moves monotonically from its start to its end) stays inside the box of its
+end points, so the box of a run of motions' end points, with the point before the first, holds every
+position of those motions.
+
+The subset
+----------
+The LinuxCNC dialect; numbered parameters ``#1``..``#5601`` that are not controller state, local named
+parameters; ``o`` ``if``/``elseif``/``else``/``endif`` and ``while``/``endwhile`` properly nested with
+labels not reused while open; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
+X Y Z words of the machine's axes, N, and M2/M30 alone to end; plain comments.  Everything else declines:
+other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
+subroutines, other loops, a motion while the units, distance mode or work offset are still the machine
+file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
+parameter read of controller state, any evaluation error.
+
+Invariant (``tests/gcode/test_double_pass.py``): whenever the pass returns, the full interpreter's run of
+the same program on the same machine completes with no unknown code, no error and no notes, with the same
+number of motions, and the end point of its k-th motion lies in the box of the pass's k-th row widened by
+the bound.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+from ..errors import GcodeError
+from .expr import MAX_PARAMETER, EvalError, binary_op, check_double, unary_op
+from .lexer import magic_comment
+from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
+from .program import _BLANK, _OLINE, _olabel
+from .shapes import LAYOUT, RUNS, shape_source, shaped
+
+__all__ = ["Declined", "DoublePath", "double_pass"]
+
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
+#: Integer G codes the pass follows, by modal group.
+_GROUPS = {0: "motion", 1: "motion", 80: "motion", 17: "plane", 18: "plane", 19: "plane", 21: "units",
+           40: "comp", 49: "tool", 90: "distance", 94: "feedmode",
+           54: "offset", 55: "offset", 56: "offset", 57: "offset", 58: "offset", 59: "offset"}
+#: The groups whose start-up state a straight move notes while the program has not set them.
+_NOTED = frozenset(("units", "distance", "offset"))
+_LETTERS = frozenset("GMFXYZ")
+_CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
+
+
+class Declined(Exception):
+    """The program leaves the double pass's subset (or may fail on the full path): ``reason`` says where."""
+
+    def __init__(self, reason: str):
+        super().__init__(reason)
+        self.reason = reason
+
+
+@dataclass(frozen=True, slots=True)
+class DoublePath:
+    """A program's motion as the pass computed it.
+
+    ``columns[a][k]`` is the double machine coordinate of axis ``axes[a]`` at the end of the k-th motion
+    (row 0: the start position, so row k is where motion k ends and row k-1 where it starts).
+    ``offset_bound[a]`` bounds the magnitude of every work offset the rows were computed with.
+    """
+
+    axes: tuple[str, ...]
+    columns: tuple[list[float], ...]
+    offset_bound: tuple[Fraction, ...]
+    motions: int
+    lines: int
+    rapids: int
+    #: blocks executed (lines with a word), as the full interpreter counts them
+    blocks: int
+
+    def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
+        """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
+        inclusive) on the full path: the box of rows ``first - 1``..``last`` widened by the bound of the
+        module's docstring.
+
+        >>> p = DoublePath(("X",), ([0.0, 0.1, 0.3],), (Fraction(0),), 2, 2, 0, 2)
+        >>> lo, hi = p.enclosure(1, 2)
+        >>> lo["X"] < 0 < Fraction(3, 10) < hi["X"], float(hi["X"] - Fraction(3, 10)) < 1e-15
+        (True, True)
+        """
+        lo: dict[str, Fraction] = {}
+        hi: dict[str, Fraction] = {}
+        for a, col in enumerate(self.columns):
+            part = col[first - 1:last + 1] if first > 1 or last + 1 < len(col) else col
+            a_lo, a_hi = min(part), max(part)
+            top = max(abs(a_lo), abs(a_hi))
+            widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
+            lo[self.axes[a]] = Fraction(a_lo) - widen
+            hi[self.axes[a]] = Fraction(a_hi) + widen
+        return lo, hi
+
+
+_ULP = Fraction(1, 2**52)
+_TINY = Fraction(1, 2**1000)
+
+
+def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
+    """Run ``text`` on ``machine`` in doubles (see the module's docstring); raise :class:`Declined` when the
+    program leaves the subset.
+
+    >>> from nczones.machine import parse_machine
+    >>> m = parse_machine('[machine]\\naxes=["X","Y"]\\n[machine.rapid]\\nX="1000"\\nY="1000"\\n'
+    ...                   '[machine.reference]\\nX="0"\\nY="0"\\n')
+    >>> p = double_pass("G21 G90 G54 F100\\n#1 = 0\\no1 while [#1 LT 3]\\nG1 X[#1 * 0.1] Y1\\n"
+    ...                 "#1 = [#1 + 1]\\no1 endwhile\\nM30\\n", m, max_iterations=100)
+    >>> p.motions, p.columns[0]
+    (3, [0.0, 0.0, 0.1, 0.2])
+    >>> double_pass("G21 G90 G54\\nG2 X1 Y1\\n", m, max_iterations=100)
+    Traceback (most recent call last):
+    ...
+    nczones.gcode.doubles.Declined: G2 is not followed by the double pass
+    """
+    return _Pass(text, machine, max_iterations).run()
+
+
+class _Pass:
+    def __init__(self, text: str, machine: Any, max_iterations: int):
+        if getattr(machine, "machine_type", "mill") != "mill" or getattr(machine, "diameter_axes", ()):
+            raise Declined("a lathe")
+        modal = set(machine.modal)
+        if modal & {"G20", "G91", "G93", "G95"}:
+            raise Declined("the machine starts in G20, G91, G93 or G95")
+        if "\r" in text:
+            text = text.replace("\r\n", "\n")
+        self.text = text
+        self.lines = text.split("\n")
+        #: each line's layout (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII
+        self.layouts = text.encode().translate(LAYOUT).split(b"\n") if text.isascii() else None
+        self.by_layout: dict[bytes, tuple] = {}  # layout -> (step, cutter)
+        self.max_iterations = max_iterations
+        self.axes = tuple(machine.axis_names)
+        self.index = {a: i for i, a in enumerate(self.axes)}
+        wcs = next((c for c in machine.modal if c.startswith(("G54", "G55", "G56", "G57", "G58", "G59"))), "G54")
+        if wcs not in WORK_OFFSETS:
+            raise Declined(f"the machine starts in {wcs}")
+        exact_offsets = {name: tuple(machine.offset(name)) for name in WORK_OFFSETS}
+        self.offsets = {int(name[1:]): tuple(float(v) for v in vec) for name, vec in exact_offsets.items()}
+        self.offset_bound = tuple(max(abs(vec[i]) for vec in exact_offsets.values()) for i in range(len(self.axes)))
+        self.off = self.offsets[int(wcs[1:])]
+        self.unset = set(_NOTED)
+        self.motion: int | None = None
+        self.feed = 0.0
+        self.pos = [float(v) for v in machine.start]
+        self.columns: tuple[list[float], ...] = tuple([v] for v in self.pos)
+        self.rapids = self.blocks = 0
+        self.S: dict[int, float] = {}  # numbered parameters set by the program (unset read 0)
+        self.N: dict[str, float] = {}  # the main program's named parameters
+        self.plans: dict[tuple, Any] = {}
+        #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
+        self.shape_steps: dict[Any, Any] = {}
+        self.pindex: dict[str, int] = {}
+        from .state import linuxcnc_state_parameters
+
+        self.state_keys = frozenset(k for k in linuxcnc_state_parameters() if isinstance(k, int)) | {3000, 3006}
+        self.env = {"S": self.S, "N": self.N, "D": Declined, "binary_op": binary_op, "unary_op": unary_op,
+                    "_atan": _atan, "_code": _code, "_pindex": self._pindex, "I": self.pindex}
+
+    # -- parameters ---------------------------------------------------------------------------------------
+    def _pindex(self, text: str) -> int:
+        """The parameter number a literal ``#text`` reads or writes; declines state and bad numbers."""
+        x = float(text)
+        i = round(x) if x - x == 0 else -1
+        if abs(x - i) > 0.0001 or not 1 <= i <= MAX_PARAMETER or i in self.state_keys:
+            raise Declined(f"parameter #{text}")
+        if len(self.pindex) < 10_000:
+            self.pindex[text] = i
+        return i
+
+    def _pconst(self, node: Any) -> str:
+        """The source of the parameter number of a parsed literal ``#<literal>``."""
+        i = _index_const(node)
+        if i in self.state_keys:
+            raise Declined(f"parameter #{i}")
+        return repr(i)
+
+    # -- the run ------------------------------------------------------------------------------------------
+    def run(self) -> DoublePath:
+        lines = self.lines
+        layouts = self.layouts
+        controls = self._controls()
+        count = len(lines)
+        steps: dict[int, Any] = {}  # the compiled lines of loop bodies, by index
+        by_layout = self.by_layout
+        counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
+        looping = 0  # open while loops
+        back = -1  # the index of the while an endwhile just jumped to
+        i = 0
+        while i < count:
+            ctrl = controls.get(i)
+            if ctrl is not None:
+                kw, target, cond = ctrl
+                if kw == "while":
+                    if back != i:
+                        counts[i] = 0
+                        looping += 1
+                    back = -1
+                    if _cond(cond) != 0.0:
+                        counts[i] += 1
+                        if counts[i] >= self.max_iterations:
+                            raise Declined("a loop at its iteration bound")
+                        i += 1
+                    else:
+                        looping -= 1
+                        i = target
+                elif kw == "endwhile":
+                    i = back = target
+                elif kw == "if":
+                    i += 1
+                    if _cond(cond) == 0.0:
+                        for kw2, at, cond2 in target:
+                            if kw2 == "endif" or kw2 == "else" or _cond(cond2) != 0.0:
+                                i = at + 1
+                                break
+                elif kw == "endif":
+                    i += 1
+                else:  # elseif, else: the branch before ran, on past the endif
+                    i = target
+                continue
+            if looping:
+                step = steps.get(i)
+                if step is None:
+                    step = steps[i] = self._step(i)
+                fn, parts = step
+            else:
+                fast = by_layout.get(layouts[i]) if layouts is not None else None
+                if fast is not None:
+                    fn, parts = fast[0], fast[1](lines[i])
+                else:
+                    fn, parts = self._step(i)
+            i += 1
+            if fn is not None:
+                try:
+                    if fn(parts):
+                        break
+                except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
+                    raise Declined(f"an evaluation error: {exc!r}") from None
+        motions = len(self.columns[0]) - 1
+        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
+                          self.blocks)
+
+    def _step(self, i: int) -> tuple[Any, tuple]:
+        """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
+        line = self.lines[i].removesuffix("\r")
+        if "(" in line or ";" in line or not line.isascii():
+            return self._parsed(line), ()
+        layout = line.encode().translate(LAYOUT)
+        hit = RUNS.get(layout)
+        if hit is None:
+            if not line.strip():
+                return None, ()
+            return self._fresh(line)
+        cut = hit[1]
+        fn = self._shape_step(hit[2])
+        if self.layouts is not None and layout == self.layouts[i]:
+            self.by_layout[layout] = (fn, cut)
+        return fn, cut(line)
+
+    # -- control lines ------------------------------------------------------------------------------------
+    def _controls(self) -> dict[int, tuple]:
+        """Every O-word line as the full path's scan sees it (``_OLINE`` on the line without blanks), matched
+        by nesting; each line's parse must agree.  ``{line index: (keyword, target, condition)}``: a
+        ``while``'s target is the index after its ``endwhile`` and an ``endwhile``'s its ``while``; an
+        ``if``'s the ``(keyword, index, condition)`` of its ``elseif``/``else``/``endif`` lines; an
+        ``elseif``'s or ``else``'s the index after the ``endif``."""
+        text = self.text
+        found = []
+        line_end = -1
+        index, counted = 0, 0
+        for m in _O_LETTER.finditer(text):
+            at = m.start()
+            if at < line_end:
+                continue
+            start = text.rfind("\n", 0, at) + 1
+            line_end = text.find("\n", at)
+            if line_end < 0:
+                line_end = len(text)
+            index += text.count("\n", counted, start)
+            counted = start
+            line = text[start:line_end].removesuffix("\r")
+            mo = _OLINE.match(_BLANK.sub("", line))
+            if mo is None:
+                continue
+            kw = mo.group(2).lower()
+            if kw not in ("if", "elseif", "else", "endif", "while", "endwhile"):
+                raise Declined(f"o-word {kw or 'label'}")
+            label = _olabel(mo)
+            try:
+                pl = parse_line(line, 1, "<double pass>")
+            except GcodeError:  # the full path reports it
+                raise Declined("an O-word line that does not parse") from None
+            ow = pl.oword
+            if ow is None or ow.keyword != kw or ow.label != label or pl.comments or pl.words or pl.assigns \
+                    or pl.delete or pl.percent or pl.unsupported is not None:
+                raise Declined("an O-word line read otherwise by the parser")
+            cond = self._compiled_cond(ow.args[0]) if kw in ("if", "elseif", "while") else None
+            found.append((index, kw, label, cond))
+        out: dict[int, tuple] = {}
+        stack: list[list] = []
+        for at, kw, label, cond in found:
+            if kw in ("if", "while"):
+                if any(s[1] == label for s in stack):
+                    raise Declined("an O-word label reused while open")
+                stack.append([kw, label, at, cond, []])
+                continue
+            if not stack or stack[-1][1] != label:
+                raise Declined("O-words not nested")
+            top = stack[-1]
+            if kw == "endwhile":
+                if top[0] != "while":
+                    raise Declined("O-words not nested")
+                stack.pop()
+                out[top[2]] = ("while", at + 1, top[3])
+                out[at] = ("endwhile", top[2], None)
+                continue
+            if top[0] != "if" or (top[4] and top[4][-1][0] == "else"):
+                raise Declined("O-words not nested")
+            top[4].append((kw, at, cond))
+            if kw == "endif":
+                stack.pop()
+                out[top[2]] = ("if", tuple(top[4]), top[3])
+                for k2, at2, _c in top[4]:
+                    out[at2] = (k2, at + 1, None)
+        if stack:
+            raise Declined("an O-word construct left open")
+        return out
+
+    # -- ordinary lines -----------------------------------------------------------------------------------
+    def _parsed(self, line: str) -> Any:
+        """The step of a line the parser reads afresh (comments, non-ASCII text, a new shape)."""
+        if not line.strip():
+            return None
+        try:
+            pl = parse_line(line, 1, "<double pass>")
+        except GcodeError:  # the full path reports it
+            raise Declined("a line that does not parse") from None
+        for comment, _col in pl.comments:
+            if magic_comment(comment) is not None:
+                raise Declined("a magic comment")
+        if pl.oword is not None or pl.delete or pl.percent or pl.unsupported is not None:
+            raise Declined("a line the double pass does not follow")
+        if not pl.words and not pl.assigns:
+            return None
+        em = _Emit(_const, self._pconst)
+        body: list[str] = []
+        vals, codes = _words(em, pl.words, body, _const_code)
+        writes = _assigns(em, pl.assigns, body, self._pconst)
+        plan = self._plan(_letters(pl.words), tuple(int(c) for c in codes))
+        return self._exec(body, writes, vals, None, {"PLAN": plan})
+
+    def _fresh(self, line: str) -> tuple:
+        """The step of an ASCII line without comments whose layout has no compiled shape yet."""
+        shape, literals = shaped(line, 1, "<double pass>")
+        if literals is not None and shape.run is not None:
+            return self._shape_step(shape), literals
+        return self._parsed(line), ()
+
+    def _shape_step(self, shape: Any) -> Any:
+        """The step of the lines of a shape (made once per pass): its literals, cut out of each line, are
+        ``P``."""
+        fn = self.shape_steps.get(shape)
+        if fn is not None:
+            return fn
+        pl, leaf_of = shape_source(shape)
+        if pl.oword is not None or pl.delete or pl.percent or pl.unsupported is not None or pl.comments:
+            raise Declined("a line the double pass does not follow")
+
+        def src(node: Any) -> str:
+            text = leaf_of.get(id(node))
+            if text is None:
+                raise Declined("a literal the shape does not cut")
+            return text
+
+        def index(node: Any) -> str:
+            return f"(I.get({src(node)}) or _pindex({src(node)}))"
+
+        em = _Emit(lambda node: f"float({src(node)})", index)
+        body: list[str] = []
+        vals, codes = _words(em, pl.words, body, src)
+        writes = _assigns(em, pl.assigns, body, index)
+        letters = _letters(pl.words)
+        made: dict[Any, Any] = {}
+
+        def plan_of(texts: Any) -> Any:
+            """The plan of a line of this shape whose G/M literals are ``texts``."""
+            every = texts if len(codes) > 1 else (texts,) if codes else ()
+            plan = made[texts] = self._plan(letters, tuple(_code(t) for t in every))
+            return plan
+
+        key = "None" if not codes else codes[0] if len(codes) == 1 else "(" + ", ".join(codes) + ",)"
+        fn = self.shape_steps[shape] = self._exec(body, writes, vals, key, {"PLANS": made, "PLAN_OF": plan_of})
+        return fn
+
+    def _compiled_cond(self, tree: Any) -> Any:
+        """A condition's step: ``step(())`` is its double."""
+        em = _Emit(_const, self._pconst)
+        body: list[str] = []
+        d = em.value(tree, body)
+        lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    return {d}"]
+        scope = dict(self.env)
+        exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
+        return scope["step"]
+
+    def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict) -> Any:
+        """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends)."""
+        lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
+        if key is None:
+            lines.append("    plan = PLAN")
+        else:
+            lines += [f"    plan = PLANS.get({key})", "    if plan is None:", f"        plan = PLAN_OF({key})"]
+        lines.append(f"    return plan(({''.join(v + ', ' for v in values)}))")
+        scope = dict(self.env)
+        scope.update(extra)
+        exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
+        return scope["step"]
+
+    def _end(self, values: tuple) -> bool:
+        """M2 or M30: the program ends."""
+        self.blocks += 1
+        return True
+
+    # -- words ----------------------------------------------------------------------------------------------
+    def _plan(self, letters: str, codes: tuple[int, ...]) -> Any:
+        """What a line with ``letters`` and G/M ``codes`` does, as a function of its other words' values
+        (True: the program ends); one per kind of line, shared by every step."""
+        key = (letters, codes)
+        plan = self.plans.get(key)
+        if plan is None:
+            plan = self.plans[key] = self._make_plan(letters, codes)
+        return plan
+
+    def _make_plan(self, letters: str, codes: tuple[int, ...]) -> Any:
+        gm = [x for x in letters if x in "GM"]
+        gs = [c for c, letter in zip(codes, gm) if letter == "G"]
+        ms = [c for c, letter in zip(codes, gm) if letter == "M"]
+        others = [x for x in letters if x not in "GM"]
+        if ms:
+            if ms not in ([2], [30]) or gs or others:
+                raise Declined("an M code the double pass does not follow")
+            return self._end
+        groups: dict[str, int] = {}
+        for g in gs:
+            group = _GROUPS.get(g)
+            if group is None:
+                raise Declined(f"G{g} is not followed by the double pass")
+            if group in groups:
+                raise Declined("two G codes of one modal group")
+            groups[group] = g
+        if len(set(others)) != len(others):
+            raise Declined("a word twice")
+        for x in others:
+            if x != "F" and x not in self.index:
+                raise Declined(f"an axis word {x} the machine does not have")
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x != "F"]
+        if groups.get("motion") == 80 and axes:
+            raise Declined("axis words with G80")
+        body = ["st.blocks += 1"] if letters else []
+        if "F" in others:
+            body += [f"f = v[{others.index('F')}]", "if not f > 0.0: raise D('a feed that is not positive')",
+                     "st.feed = f"]
+        sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
+        if sets:
+            body.append(f"unset.difference_update({tuple(sets)!r})")
+        if "offset" in groups:
+            body.append(f"st.off = OFFSETS[{groups['offset']}]")
+        if "motion" in groups:
+            body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
+        if axes:
+            body += ["mode = st.motion",
+                     "if mode is None: raise D('axis words without a motion mode')",
+                     "if mode == 1 and not st.feed > 0.0: raise D('G1 without a positive feed')",
+                     "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
+                     "off = st.off"]
+            body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
+            body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+            body.append("if not mode: st.rapids += 1")
+        lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
+        scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
+                                 "OFFSETS": self.offsets}
+        scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
+        exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
+        return scope["plan"]
+
+
+def _letters(words: Any) -> str:
+    letters = "".join(w[0] for w in words)
+    for letter in letters:
+        if letter not in _LETTERS:
+            raise Declined(f"a word {letter}")
+    return letters
+
+
+_O_LETTER = re.compile("[oO]")
+
+
+def _cond(cond: Any) -> float:
+    try:
+        value: float = cond(())
+    except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
+        raise Declined(f"an evaluation error: {exc!r}") from None
+    return value
+
+
+def _atan(y: float, x: float) -> float:
+    return check_double((math.atan2(y, x) * 180.0) / math.pi)
+
+
+_CODES: dict[str, int] = {}
+
+
+def _code(text: str) -> int:
+    """The integer a G or M literal names (``01``, ``1.``, ``1.000``); declines any other."""
+    c = _CODES.get(text)
+    if c is None:
+        m = _CODE_TEXT.fullmatch(text)
+        if m is None:
+            raise Declined(f"a code {text}")
+        c = _CODES[text] = int(m.group(1))
+    return c
+
+
+def _const(node: Any) -> str:
+    d = node[1]
+    if d - d:
+        raise Declined("a literal out of the double range")
+    return repr(d)
+
+
+def _const_code(node: Any) -> str:
+    """The source of the G or M code of a parsed literal: a whole number, else declined."""
+    q = node[2]
+    if q is None or q.denominator != 1 or q < 0:
+        raise Declined("a G or M code that is not a whole number")
+    return str(q.numerator)
+
+
+def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[str], list[str]]:
+    """Emit a line's words: the sources of their values (G and M excluded) and of their G and M codes."""
+    codes = []
+    vals = []
+    for letter, tree, *_rest in words:
+        if letter not in _LETTERS:
+            raise Declined(f"a word {letter}")
+        if letter in "GM":
+            if tree[0] != NUM:
+                raise Declined("a computed G or M code")
+            codes.append(code_src(tree))
+        else:
+            vals.append(em.value(tree, body))
+    return vals, codes
+
+
+def _assigns(em: _Emit, assigns: Any, body: list[str], index_src: Any) -> list[str]:
+    writes = []
+    for target, tree, *_rest in assigns:
+        if target[0] == NPAR:
+            name = str(target[1])
+            if name.startswith("_"):
+                raise Declined("a global named parameter")
+            dest = f"N[{name!r}]"
+        elif target[0] == PAR and target[1][0] == NUM:
+            dest = f"S[{index_src(target[1])}]"
+        else:
+            raise Declined("a computed parameter number")
+        writes.append(f"{dest} = {em.value(tree, body)}")
+    # every value is computed before the first is stored (LinuxCNC sets a line's parameters together)
+    return writes
+
+
+class _Emit:
+    """Straight-line code computing a tree's double as :func:`~nczones.gcode.expr.evaluate` does."""
+
+    _OPS = {"+", "-", "*", "/"}
+
+    def __init__(self, leaf: Any, index: Any):
+        self.leaf = leaf  # NUM node -> source of its double
+        self.index = index  # NUM node of a parameter number -> source of the number
+        self.n = 0
+
+    def value(self, node: Any, out: list[str]) -> str:
+        tag = node[0]
+        self.n += 1
+        d = f"d{self.n}"
+        if tag == NUM:
+            out.append(f"{d} = {self.leaf(node)}")
+        elif tag == PAR:
+            if node[1][0] != NUM:
+                raise Declined("a computed parameter number")
+            out.append(f"{d} = S.get({self.index(node[1])}, 0.0)")
+        elif tag == NPAR:
+            name = str(node[1])
+            if name.startswith("_"):
+                raise Declined("a global named parameter")
+            out.append(f"{d} = N[{name!r}]")
+        elif tag == BIN:
+            op = node[1]
+            a = self.value(node[2], out)
+            b = self.value(node[3], out)
+            if op in self._OPS:
+                if op == "/":
+                    out.append(f"if {b} == 0.0: raise D('a division by zero')")
+                out += [f"{d} = {a} {op} {b}", f"if {d} - {d}: raise D('not a finite number')"]
+            else:
+                out.append(f"{d} = binary_op({op!r}, ({a}, None), ({b}, None))[0]")
+        elif tag == NEG:
+            a = self.value(node[1], out)
+            out.append(f"{d} = -{a}")
+        elif tag == FN:
+            a = self.value(node[2], out)
+            if node[1] == "abs":
+                out += [f"if {a} - {a}: raise D('not a finite number')", f"{d} = abs({a})"]
+            else:
+                out.append(f"{d} = unary_op({node[1]!r}, ({a}, None))[0]")
+        elif tag == ATAN:
+            y = self.value(node[1], out)
+            x = self.value(node[2], out)
+            out.append(f"{d} = _atan({y}, {x})")
+        else:
+            raise Declined("EXISTS or another construct the double pass does not follow")
+        return d
+
+
+def _index_const(node: Any) -> int:
+    d = node[1]
+    if d - d:
+        raise Declined("a parameter number out of range")
+    i = round(d)
+    if abs(d - i) > 0.0001 or not 1 <= i <= MAX_PARAMETER:
+        raise Declined("a parameter number out of range")
+    return int(i)
