@@ -377,7 +377,10 @@ class _Pass:
 
     def _fresh(self, line: str) -> tuple:
         """The step of an ASCII line without comments whose layout has no compiled shape yet."""
-        shape, literals = shaped(line, 1, "<double pass>")
+        try:
+            shape, literals = shaped(line, 1, "<double pass>")
+        except GcodeError:  # the full path reports it
+            raise Declined("a line that does not parse") from None
         if literals is not None and shape.run is not None:
             return self._shape_step(shape), literals
         return self._parsed(line), ()
