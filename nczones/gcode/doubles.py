@@ -113,13 +113,15 @@ class DoublePath:
             a_lo, a_hi = min(part), max(part)
             top = max(abs(a_lo), abs(a_hi))
             widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
-            lo[self.axes[a]] = Fraction(a_lo) - widen
-            hi[self.axes[a]] = Fraction(a_hi) + widen
+            # outwards to multiples of 2**-60 mm (small denominators for the exact test)
+            lo[self.axes[a]] = Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID)
+            hi[self.axes[a]] = Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID)
         return lo, hi
 
 
 _ULP = Fraction(1, 2**52)
-_TINY = Fraction(1, 2**1000)
+_TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
+_GRID = 2**60
 
 
 def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
@@ -340,7 +342,7 @@ class _Pass:
                 out[top[2]] = ("while", at + 1, top[3])
                 out[at] = ("endwhile", top[2], None)
                 continue
-            if top[0] != "if" or (top[4] and top[4][-1][0] == "else"):
+            if top[0] != "if" or (kw != "endif" and top[4] and top[4][-1][0] == "else"):
                 raise Declined("O-words not nested")
             top[4].append((kw, at, cond))
             if kw == "endif":

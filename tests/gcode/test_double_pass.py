@@ -1,0 +1,262 @@
+"""The double pass (nczones/gcode/doubles.py) against the full interpreter.
+
+The module's invariant: whenever the pass returns, the full interpreter runs the same program to the end
+with no error, no unknown code and no note, with as many motions and blocks, and the exact start and end of
+its k-th motion lie in the pass's enclosure of motion k.  Checked on generated parametric programs in and
+around the subset (``NCZONES_DOUBLE_PASS_EXAMPLES=N`` for a long run), on fixed programs that the pass must
+accept, and on programs that it must decline (the reason each one is outside the subset).
+"""
+
+from __future__ import annotations
+
+import os
+from fractions import Fraction
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.gcode import interpret_text
+from nczones.gcode.doubles import Declined, DoublePath, double_pass
+from nczones.machine import parse_machine
+
+EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "120"))
+
+
+def machine_text(offsets: dict[str, tuple[str, str, str]] | None = None, start: tuple[str, str, str] = ("0", "0", "0"),
+                 modal: str | None = None, extra: str = "") -> str:
+    lines = ['[machine]', 'name = "double pass"', 'axes = ["X", "Y", "Z"]', 'pulse = "0.001"']
+    if modal is not None:
+        lines.append(f"modal = {modal}")
+    lines += ['[machine.rapid]', 'X = "5000"', 'Y = "5000"', 'Z = "5000"', '[machine.reference]',
+              'X = "0"', 'Y = "0"', 'Z = "0"', '[machine.start]',
+              f'X = "{start[0]}"', f'Y = "{start[1]}"', f'Z = "{start[2]}"']
+    if offsets:
+        lines.append("[offsets]")
+        for name, (x, y, z) in offsets.items():
+            lines.append(f'{name} = {{ X = "{x}", Y = "{y}", Z = "{z}" }}')
+    lines += ['[[zones]]', 'name = "travel"', 'kind = "box"',
+              'min = { X = "-100000", Y = "-100000", Z = "-100000" }',
+              'max = { X = "100000", Y = "100000", Z = "100000" }']
+    return "\n".join(lines) + "\n" + extra
+
+
+MACHINE = parse_machine(machine_text())
+
+
+def check_against_full(text: str, machine, max_iterations: int = 1000) -> DoublePath | None:
+    """The module's invariant for one program; the path, or None when the pass declined."""
+    try:
+        path = double_pass(text, machine, max_iterations=max_iterations)
+    except Declined:
+        return None
+    run = interpret_text(text, machine, max_loop_iterations=max_iterations)
+    segments = list(run.segments())
+    assert run.status == "complete", run.unsupported
+    assert run.assumed_modal_text() == [] and run.notes() == []
+    assert len(segments) == path.motions
+    assert run.counts["blocks"] == path.blocks
+    axes = machine.axis_names
+    for k, seg in enumerate(segments, start=1):
+        lo, hi = path.enclosure(k, k)
+        for i, a in enumerate(axes):
+            for v in (seg.start[i], seg.end[i]):
+                assert lo[a] <= v <= hi[a], (k, a, v, lo[a], hi[a])
+    return path
+
+
+# -- generated programs -------------------------------------------------------------------------------------
+
+numbers = st.one_of(
+    st.integers(-200, 200).map(str),
+    st.decimals(-500, 500, places=3, allow_nan=False, allow_infinity=False).map(lambda d: f"{d:f}"),
+    st.sampled_from(["0.1", "0.2", "0.3", ".5", "-.25", "1e", "123456789.123456789", "0.000000001"]),
+)
+params = st.sampled_from(["#1", "#2", "#3", "#31", "#100", "#<a>", "#<b>"])
+
+
+@st.composite
+def expressions(draw, depth: int = 2) -> str:
+    if depth == 0 or draw(st.integers(0, 2)) == 0:
+        return draw(st.one_of(numbers.filter(lambda s: s != "1e"), params))
+    kind = draw(st.integers(0, 3))
+    a = draw(expressions(depth - 1))
+    if kind == 0:
+        op = draw(st.sampled_from(["+", "-", "*", "/", "MOD"]))
+        return f"[{a} {op} {draw(expressions(depth - 1))}]"
+    if kind == 1:
+        fn = draw(st.sampled_from(["COS", "SIN", "ABS", "SQRT", "FIX", "FUP", "ROUND", "EXP", "LN"]))
+        return f"{fn}[{a}]"
+    if kind == 2:
+        return f"-{a}"
+    return f"ATAN[{a}]/[{draw(expressions(depth - 1))}]"
+
+
+@st.composite
+def conditions(draw) -> str:
+    op = draw(st.sampled_from(["LT", "GT", "LE", "GE", "EQ", "NE"]))
+    return f"[{draw(expressions(1))} {op} {draw(expressions(1))}]"
+
+
+@st.composite
+def motions(draw) -> str:
+    code = draw(st.sampled_from(["G0 ", "G1 ", "G01 ", "G1.0 ", "", ""]))
+    axes = draw(st.lists(st.sampled_from("XYZ"), min_size=1, max_size=3, unique=True))
+    words = " ".join(f"{a}{draw(st.one_of(numbers.filter(lambda s: s != '1e'), expressions(2)))}" for a in axes)
+    feed = draw(st.sampled_from(["", "", f" F{draw(st.sampled_from(['100', '250', '0', '-5', '[ABS[#1] + 50]']))}"]))
+    return f"{code}{words}{feed}"
+
+
+#: Lines outside the subset (each must make the pass decline, or the full path agree with it).
+OUTSIDE = ["G2 X1 Y1 R5", "G91", "G20", "M3 S1000", "#4 = #5221", "G43 H1", "T1 M6", "G10 L2 P1 X3",
+           "G92 X0", "(MSG, hello)", "(DEBUG, #1)", "G59.1", "G53 G0 X1", "G64 P0.01", "#4 = #<_x>", "G4 P1",
+           "/G1 X1", "%", "G1 X1 X2", "G0 G1 X1", "G80 X1", "G28", "M0", "S100", "#4 = EXISTS[#<a>]"]
+
+
+@st.composite
+def statements(draw, depth: int, labels: list[int]) -> list[str]:
+    kind = draw(st.integers(0, 9))
+    if kind <= 2:
+        target = draw(st.sampled_from(["#1", "#2", "#3", "#31", "#100", "#<a>", "#<b>"]))
+        return [f"{target} = {draw(expressions(2))}"]
+    if kind <= 5:
+        return [draw(motions())]
+    if kind == 6:
+        return [draw(st.sampled_from(["G54", "G55", "G56", "G57", "G58", "G59", "G21 G90", "G17", "G94 G40 G49",
+                                      "G80", "F200", "N10 G1 X1 F100", "(a plain comment)", "", "; comment",
+                                      "G1 X[#1] (with a comment)"]))]
+    if kind == 7 and depth > 0:
+        label = 100 + len(labels)
+        labels.append(label)
+        counter = draw(st.sampled_from(["#11", "#12", "#<i>"]))
+        n = draw(st.integers(0, 4))
+        body = [s for _ in range(draw(st.integers(1, 3))) for s in draw(statements(depth - 1, labels))]
+        return ([f"{counter} = 0", f"o{label} while [{counter} LT {n}]"] + body
+                + [f"{counter} = [{counter} + 1]", f"o{label} endwhile"])
+    if kind == 8 and depth > 0:
+        label = 100 + len(labels)
+        labels.append(label)
+        out = [f"o{label} if {draw(conditions())}"]
+        out += [s for _ in range(draw(st.integers(1, 2))) for s in draw(statements(depth - 1, labels))]
+        if draw(st.booleans()):
+            out.append(f"o{label} elseif {draw(conditions())}")
+            out += draw(statements(depth - 1, labels))
+        if draw(st.booleans()):
+            out.append(f"o{label} else")
+            out += draw(statements(depth - 1, labels))
+        return out + [f"o{label} endif"]
+    return [draw(st.sampled_from(OUTSIDE))] if draw(st.integers(0, 3)) == 0 else [draw(motions())]
+
+
+@st.composite
+def parametric_programs(draw) -> str:
+    head = draw(st.sampled_from(["G21 G90 G54 F300 G1", "G21 G90 G17 G54 G94 F800 G0", "G90 G54 F300", "G21 G90 G55 F50 G1",
+                                 "G21 G90 G54 G0", "G21 G90 G54 F100 G1"]))
+    if draw(st.integers(0, 4)):
+        head += "\n#<a> = 1.5\n#<b> = [#<a> * 2]"
+    labels: list[int] = []
+    body = [s for _ in range(draw(st.integers(1, 8))) for s in draw(statements(2, labels))]
+    tail = draw(st.sampled_from(["M30", "M2", "", "M30\nG1 X[1/0]"]))
+    eol = draw(st.sampled_from(["\n", "\n", "\r\n"]))
+    return eol.join([head, *body, tail]) + eol
+
+
+@st.composite
+def machines(draw):
+    def triple():
+        return tuple(draw(st.sampled_from(["0", "10", "-2.5", "0.1", "1000.0001"])) for _ in range(3))
+
+    offsets = {name: triple() for name in ("G54", "G55", "G57") if draw(st.booleans())}
+    modal = draw(st.sampled_from([None] * 12 + ['["G21", "G90", "G17", "G55"]', '["G20"]', '["G91"]']))
+    return parse_machine(machine_text(offsets, triple(), modal))
+
+
+@settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(parametric_programs(), machines(), st.sampled_from([1000, 3, 4]))
+def test_the_pass_is_enclosed_by_the_full_interpreter(text, machine, max_iterations):
+    check_against_full(text, machine, max_iterations)
+
+
+# -- fixed programs ----------------------------------------------------------------------------------------
+
+ACCEPTED = {
+    "expressions": "G21 G90 G17 G54 F800\n#1 = 0\n#2 = 0\nG1 X[#1 + 32.383] Y[#2 + 15.085]\n"
+                   "#1 = [#1 + 0.124]\nG1 X[#1 + 22.324] Y[#2 + 62.743]\nX[#1 * 0.1] Y.5\nM30\n",
+    "loop": "G90 G17 G21 G54 F800\n#1 = 0\n#5 = 0\no100 while [#1 LT 40]\n#2 = [#1 * 0.01]\n"
+            "#3 = [#2 * COS[#1 * 3.6]]\n#4 = [#2 * SIN[#1 * 3.6]]\no101 if [#4 GT 1000]\n#5 = [#5 + 1]\n"
+            "o101 endif\nG01 X#3 Y#4\n#1 = [#1 + 1]\no100 endwhile\nM30\n",
+    "branches": "G21 G90 G54 F100 (set up)\n#<n> = 3\no1 if [#<n> EQ 1]\nG1 X1\no1 elseif [#<n> EQ 3]\n"
+                "G0 X3 Y[#<n> / 3]\no1 else\nG1 X9\no1 endif\nG55\nG1 Z-1 ; a cut\nM2\n",
+    "offsets and rows": "G21 G90 G54 F100\nG0 X0.1 Y0.2 Z0.3\nG56 X[0.1 + 0.2]\nG1 Y[1/3] F[10 * 3]\nM30\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(ACCEPTED))
+def test_programs_the_pass_follows(name):
+    machine = parse_machine(machine_text({"G54": ("10", "-2.5", "0"), "G55": ("0.1", "0.1", "0.1"),
+                                          "G56": ("1000.0001", "0", "0")}, ("1", "2", "3")))
+    path = check_against_full(ACCEPTED[name], machine)
+    assert path is not None, "declined"
+    assert path.motions > 0
+
+
+def test_the_rows_are_the_controllers_doubles():
+    path = check_against_full("G21 G90 G54 F100\nG1 X[0.1 + 0.2] Y[1 / 3]\n#1 = 0.1\nG1 X[#1 * 3]\n", MACHINE)
+    assert path is not None
+    assert path.columns[0] == [0.0, 0.1 + 0.2, 0.1 * 3]
+    assert path.columns[1] == [0.0, 1 / 3, 1 / 3]
+    lo, hi = path.enclosure(2, 2)  # rows 1 and 2: X = 0.1 + 0.2 and 0.1 * 3, both 0.30000000000000004
+    assert lo["X"] < Fraction(3, 10) < hi["X"] and hi["X"] - lo["X"] < Fraction(1, 10**12)
+    assert lo["Y"] < Fraction(1, 3) < hi["Y"] and hi["Y"] - lo["Y"] < Fraction(1, 10**12)
+
+
+DECLINED = {
+    "an arc": ("G21 G90 G54 F100\n#1 = 1\nG2 X1 Y1\n", "G2"),
+    "incremental": ("G21 G91 G54 F100\n#1 = 1\nG1 X1\n", "G91"),
+    "inches": ("G20 G90 G54 F100\n#1 = 1\nG1 X1\n", "G20"),
+    "a spindle": ("G21 G90 G54 F100\n#1 = 1\nM3\nG1 X1\n", "M code"),
+    "a spindle speed": ("G21 G90 G54 F100\n#1 = 1\nS1000\nG1 X1\n", "word S"),
+    "state read": ("G21 G90 G54 F100\n#1 = #5221\nG1 X#1\n", "parameter"),
+    "a global name": ("G21 G90 G54 F100\n#<_a> = 1\nG1 X#<_a>\n", "global"),
+    "no feed": ("G21 G90 G54\n#1 = 1\nG1 X#1\n", "feed"),
+    "feed zero": ("G21 G90 G54 F0\n#1 = 1\nG0 X#1\n", "feed"),
+    "no units": ("G90 G54 F100\n#1 = 1\nG1 X#1\n", "units"),
+    "a message": ("G21 G90 G54 F100\n#1 = 1\n(MSG, hello)\nG1 X#1\n", "magic"),
+    "division by zero": ("G21 G90 G54 F100\n#1 = [1 / 0]\nG1 X#1\n", "division"),
+    "a subroutine": ("o<s> sub\nG1 X1\no<s> endsub\nG21 G90 G54 F100\n#1 = 1\no<s> call\n", "sub"),
+    "a repeat": ("G21 G90 G54 F100\n#1 = 1\no1 repeat [2]\nG1 X#1\no1 endrepeat\n", "repeat"),
+    "break": ("G21 G90 G54 F100\n#1 = 0\no1 while [1]\no1 break\no1 endwhile\n", "break"),
+    "the iteration bound": ("G21 G90 G54 F100\n#1 = 0\no1 while [#1 LT 5]\n#1 = [#1 + 1]\nG1 X#1\no1 endwhile\n",
+                            "iteration bound"),
+    "labels crossed": ("G21 G90 G54 F100\n#1 = 0\no1 if [1]\no2 if [1]\no1 endif\no2 endif\n", "nested"),
+    "a label reused inside": ("G21 G90 G54 F100\n#1 = 0\no1 if [1]\no1 if [1]\no1 endif\no1 endif\n", "reused"),
+    "block delete": ("G21 G90 G54 F100\n#1 = 1\n/G1 X#1\n", "does not follow"),
+    "a computed code": ("G21 G90 G54 F100\n#1 = 1\nG[#1] X2\n", "computed"),
+    "G1.5": ("G21 G90 G54 F100\n#1 = 1\nG1.5 X2\n", "code"),
+    "two motions": ("G21 G90 G54 F100\n#1 = 1\nG0 G1 X2\n", "modal group"),
+    "a tool length": ("G21 G90 G54 F100\n#1 = 1\nG43 H1\nG1 X#1\n", "word H"),
+    "G59.1": ("G21 G90 G59.1 F100\n#1 = 1\nG1 X#1\n", "code"),
+    "EXISTS": ("G21 G90 G54 F100\n#1 = EXISTS[#<a>]\nG1 X#1\n", "EXISTS"),
+    "a line that does not parse": ("G21 G90 G54 F100\n#1 = [1 +\nG1 X#1\n", "parse"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(DECLINED))
+def test_programs_outside_the_subset_are_declined(name):
+    text, why = DECLINED[name]
+    with pytest.raises(Declined, match=why):
+        double_pass(text, MACHINE, max_iterations=5)
+
+
+@pytest.mark.parametrize("modal", ['["G20"]', '["G91"]', '["G93"]', '["G59.1"]'])
+def test_a_machine_that_starts_outside_the_subset_is_declined(modal):
+    machine = parse_machine(machine_text(modal=modal))
+    with pytest.raises(Declined):
+        double_pass("G21 G90 G54 F100\n#1 = 1\nG1 X#1\n", machine, max_iterations=5)
+
+
+def test_a_lathe_is_declined():
+    lathe = parse_machine(machine_text().replace('pulse = "0.001"', 'pulse = "0.001"\ntype = "lathe"'))
+    with pytest.raises(Declined, match="lathe"):
+        double_pass("G21 G90 G54 F100\n#1 = 1\nG1 X#1\n", lathe, max_iterations=5)
