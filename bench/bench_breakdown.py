@@ -6,11 +6,14 @@ For the two rows of ``bench/bench_peers.py`` that go through the language layer 
 every line; the LinuxCNC o-word loop), against bench_peers' box machine, the package's bytecode
 compiled first, least CPU seconds (user + system) of ``--runs`` fresh processes:
 
+* **the double pass** (:mod:`nczones.gcode.doubles`, what ``nczones verify`` runs first on these programs):
+  **pass** (the program in doubles) and **boxes** (the exact proof of its enclosures), in the same process
+  before the full path;
 * **start** — a process that imports what a verify of such a program loads (the command line, the
   G-code layer, the prover and its column screen with numpy) and reads the machine file: CPU from the
   process's start;
-* in the same process (with the verify command's garbage-collector threshold),
-  ``verify_segments`` over ``interpret(...)`` as it streams, split by timing
+* the full path (what verify runs when the double pass declines), in the same process (with the verify
+  command's garbage-collector threshold), ``verify_segments`` over ``interpret(...)`` as it streams, split by timing
   wrappers into **interpret** (the time spent producing the interpreter's chunks), **columns**
   (``segment_columns``: the batches turned into integer rows), **screen** (``screen_chunk``) and
   **rest** (batching, the per-segment path, the result);
@@ -66,13 +69,24 @@ def chunks(it):
     while (chunk := step()) is not None:
         yield chunk
 
+from fractions import Fraction
+from nczones.gcode.doubles import double_pass
+from nczones.prover.doubles import prove_enclosures
+text = open(sys.argv[1]).read()
+t = time.process_time()
+path = double_pass(text, machine, max_iterations=100_000)
+spent["pass"] = time.process_time() - t
+t = time.process_time()
+assert prove_enclosures(path, machine, Fraction(0), 10**6) is not None
+spent["boxes"] = time.process_time() - t
 t = time.process_time()
 assert verify_segments(chunks(interpret(sys.argv[1], machine)), machine).verdict.label == "safe"
-spent["rest"] = time.process_time() - t - sum(spent.values())
+spent["rest"] = time.process_time() - t - sum(spent[p] for p in ("interpret", "columns", "screen"))
 spent["start"] = start
 print(json.dumps(spent))
 """
 
+PASS = ("start", "pass", "boxes")
 PARTS = ("start", "interpret", "columns", "screen", "rest")
 
 
@@ -90,8 +104,9 @@ def main() -> None:
                    stdout=subprocess.DEVNULL)
     rs274 = shutil.which("rs274")
     print(f"CPU seconds, least of {a.runs} fresh processes")
-    print(f"{'program':40} " + " ".join(f"{p:>9}" for p in PARTS)
-          + f" {'sum':>6} {'verify':>6} {'rs274':>6} {'rs274 start':>11}  load")
+    print(f"{'':40} {'the double pass':>29}   {'the full path':>49}")
+    print(f"{'program':40} " + " ".join(f"{p:>9}" for p in PASS) + f" {'sum':>6} "
+          + " ".join(f"{p:>9}" for p in PARTS[1:]) + f" {'sum':>6} {'verify':>6} {'rs274':>6} {'rs274 start':>11}  load")
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
         machine = d / "box.toml"
@@ -108,12 +123,13 @@ def main() -> None:
                 out = subprocess.run([sys.executable, "-c", SPLIT, str(path), str(machine)], env=env, check=True,
                                      capture_output=True, text=True).stdout
                 splits.append(json.loads(out))
-            best = min(splits, key=lambda s: sum(s[p] for p in PARTS))
+            best = {p: min(s[p] for s in splits) for p in set(PARTS) | set(PASS)}
             verify = min(cpu_of([sys.executable, "-m", "nczones", "verify", str(path), "--machine", str(machine),
                                  "--format", "json"], 600, env)[0] or 0.0 for _ in range(a.runs))
             peer = [min(cpu_of([rs274, "-g", str(p), os.devnull], 600)[0] or 0.0 for _ in range(a.runs))
                     for p in (path, tiny)] if rs274 else None
-            print(f"{name:40} " + " ".join(f"{best[p]:9.3f}" for p in PARTS)
+            print(f"{name:40} " + " ".join(f"{best[p]:9.3f}" for p in PASS) + f" {sum(best[p] for p in PASS):6.2f} "
+                  + " ".join(f"{best[p]:9.3f}" for p in PARTS[1:])
                   + f" {sum(best[p] for p in PARTS):6.2f} {verify:6.2f}"
                   + (f" {peer[0]:6.2f} {peer[1]:11.2f}" if peer else f" {'n/a':>6} {'n/a':>11}")
                   + f"  {os.getloadavg()[0]:4.1f}", flush=True)

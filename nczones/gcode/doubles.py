@@ -46,6 +46,7 @@ from __future__ import annotations
 
 import math
 import re
+from array import array
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -54,11 +55,13 @@ from ..errors import GcodeError
 from .expr import MAX_PARAMETER, EvalError, binary_op, check_double, unary_op
 from .lexer import magic_comment
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
-from .program import _BLANK, _OLINE, _olabel
+from .program import scan_oword
 from .shapes import LAYOUT, RUNS, shape_source, shaped
 
 __all__ = ["Declined", "DoublePath", "double_pass"]
 
+#: Motions the pass keeps (8 bytes per axis each); a longer program takes the full path, whose memory is flat.
+MAX_MOTIONS = 2_000_000
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows, by modal group.
 _GROUPS = {0: "motion", 1: "motion", 80: "motion", 17: "plane", 18: "plane", 19: "plane", 21: "units",
@@ -82,13 +85,13 @@ class Declined(Exception):
 class DoublePath:
     """A program's motion as the pass computed it.
 
-    ``columns[a][k]`` is the double machine coordinate of axis ``axes[a]`` at the end of the k-th motion
+    ``columns[a][k]`` (an ``array("d")``) is the double machine coordinate of axis ``axes[a]`` at the end of the k-th motion
     (row 0: the start position, so row k is where motion k ends and row k-1 where it starts).
     ``offset_bound[a]`` bounds the magnitude of every work offset the rows were computed with.
     """
 
     axes: tuple[str, ...]
-    columns: tuple[list[float], ...]
+    columns: tuple[array, ...]
     offset_bound: tuple[Fraction, ...]
     motions: int
     lines: int
@@ -101,7 +104,7 @@ class DoublePath:
         inclusive) on the full path: the box of rows ``first - 1``..``last`` widened by the bound of the
         module's docstring.
 
-        >>> p = DoublePath(("X",), ([0.0, 0.1, 0.3],), (Fraction(0),), 2, 2, 0, 2)
+        >>> p = DoublePath(("X",), (array("d", [0.0, 0.1, 0.3]),), (Fraction(0),), 2, 2, 0, 2)
         >>> lo, hi = p.enclosure(1, 2)
         >>> lo["X"] < 0 < Fraction(3, 10) < hi["X"], float(hi["X"] - Fraction(3, 10)) < 1e-15
         (True, True)
@@ -133,7 +136,7 @@ def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
     ...                   '[machine.reference]\\nX="0"\\nY="0"\\n')
     >>> p = double_pass("G21 G90 G54 F100\\n#1 = 0\\no1 while [#1 LT 3]\\nG1 X[#1 * 0.1] Y1\\n"
     ...                 "#1 = [#1 + 1]\\no1 endwhile\\nM30\\n", m, max_iterations=100)
-    >>> p.motions, p.columns[0]
+    >>> p.motions, list(p.columns[0])
     (3, [0.0, 0.0, 0.1, 0.2])
     >>> double_pass("G21 G90 G54\\nG2 X1 Y1\\n", m, max_iterations=100)
     Traceback (most recent call last):
@@ -150,8 +153,11 @@ class _Pass:
         modal = set(machine.modal)
         if modal & {"G20", "G91", "G93", "G95"}:
             raise Declined("the machine starts in G20, G91, G93 or G95")
+        # the lines as the full path reads them: a byte-order mark at the start and one "\r" before each
+        # newline and at the end dropped
+        text = text.removeprefix("\ufeff")
         if "\r" in text:
-            text = text.replace("\r\n", "\n")
+            text = text.replace("\r\n", "\n").removesuffix("\r")
         self.text = text
         self.lines = text.split("\n")
         #: each line's layout (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII
@@ -171,7 +177,7 @@ class _Pass:
         self.motion: int | None = None
         self.feed = 0.0
         self.pos = [float(v) for v in machine.start]
-        self.columns: tuple[list[float], ...] = tuple([v] for v in self.pos)
+        self.columns: tuple[array, ...] = tuple(array("d", [v]) for v in self.pos)
         self.rapids = self.blocks = 0
         self.S: dict[int, float] = {}  # numbered parameters set by the program (unset read 0)
         self.N: dict[str, float] = {}  # the main program's named parameters
@@ -270,7 +276,7 @@ class _Pass:
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
-        line = self.lines[i].removesuffix("\r")
+        line = self.lines[i]
         if "(" in line or ";" in line or not line.isascii():
             return self._parsed(line), ()
         layout = line.encode().translate(LAYOUT)
@@ -287,8 +293,8 @@ class _Pass:
 
     # -- control lines ------------------------------------------------------------------------------------
     def _controls(self) -> dict[int, tuple]:
-        """Every O-word line as the full path's scan sees it (``_OLINE`` on the line without blanks), matched
-        by nesting; each line's parse must agree.  ``{line index: (keyword, target, condition)}``: a
+        """Every O-word line as the full path's scan for jumps sees it
+        (:func:`~nczones.gcode.program.scan_oword`), matched by nesting; each line's parse must agree.  ``{line index: (keyword, target, condition)}``: a
         ``while``'s target is the index after its ``endwhile`` and an ``endwhile``'s its ``while``; an
         ``if``'s the ``(keyword, index, condition)`` of its ``elseif``/``else``/``endif`` lines; an
         ``elseif``'s or ``else``'s the index after the ``endif``."""
@@ -306,14 +312,13 @@ class _Pass:
                 line_end = len(text)
             index += text.count("\n", counted, start)
             counted = start
-            line = text[start:line_end].removesuffix("\r")
-            mo = _OLINE.match(_BLANK.sub("", line))
-            if mo is None:
+            line = text[start:line_end]
+            seen = scan_oword(line)
+            if seen is None:
                 continue
-            kw = mo.group(2).lower()
+            kw, label = seen
             if kw not in ("if", "elseif", "else", "endif", "while", "endwhile"):
                 raise Declined(f"o-word {kw or 'label'}")
-            label = _olabel(mo)
             try:
                 pl = parse_line(line, 1, "<double pass>")
             except GcodeError:  # the full path reports it
@@ -505,6 +510,7 @@ class _Pass:
                      "off = st.off"]
             body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
             body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+            body.append(f"if len(C0) > {MAX_MOTIONS}: raise D('more than {MAX_MOTIONS} motions')")
             body.append("if not mode: st.rapids += 1")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,

@@ -262,6 +262,21 @@ def _olabel(m: re.Match) -> int | str:
     return int(raw)
 
 
+def scan_oword(line: str) -> tuple[str, int | str] | None:
+    """``(keyword, label)`` of an O-word line as the scans for jumps read it (the line without blanks; the
+    keyword in lower case, ``""`` for a Fanuc program number), else None.
+
+    >>> scan_oword("N10 o100 WHILE [#1 LT 3]"), scan_oword("G1 X1")
+    (('while', 100), None)
+    """
+    if "o" not in line and "O" not in line:
+        return None
+    m = _OLINE.match(_BLANK.sub("", line))
+    if m is None:
+        return None
+    return m.group(2).lower(), _olabel(m)
+
+
 def _show(label: object) -> str:
     return f"o<{label}>" if isinstance(label, str) else f"o{label}"
 
@@ -380,13 +395,10 @@ class Runner:
     def _skip_to(self, label: object, keywords: tuple[str, ...], pos: int, lineno: int, what: str, line0: str,
                  lineno0: int, nested_sub_error: bool) -> tuple[str, int, int, str, int]:
         for p, ln, line, nxt in self.scan(pos, lineno):
-            if "o" not in line and "O" not in line:
+            seen = scan_oword(line)
+            if seen is None:
                 continue
-            m = _OLINE.match(_BLANK.sub("", line))
-            if m is None:
-                continue
-            lab = _olabel(m)
-            kw = m.group(2).lower()
+            kw, lab = seen
             if nested_sub_error and kw == "sub":
                 raise self.error("GC314", f"nested subroutine definition: {_show(lab)} sub inside "
                                  f"{_show(label)} sub", ln, line)

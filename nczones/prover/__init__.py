@@ -287,7 +287,7 @@ def _verify(
     opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress, limits=limits,
                 profile=profile)
     deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)] if "/" in source.text else []
-    if (engine == "auto" and not ranges and recovery is None and not deleted and progress is None
+    if (engine == "auto" and not ranges and recovery is None and not deleted
             and settings["dialect"] == "linuxcnc" and "#" in source.text):
         # a parametric program: the double pass first (nczones.prover.doubles), the full path if it declines
         from .doubles import double_pass_result
@@ -299,6 +299,13 @@ def _verify(
                 f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
                 None, None, "VF204"),), interrupted=True, margin=margin, engine=engine)
         if quick is not None:
+            if progress is not None and not quick.interrupted:  # done at once: the bar's last step
+                total = _line_count(source.text) or None
+                bar: Any = progress
+                if getattr(bar, "counts", False):
+                    bar(total or 0, total, motions=dict(quick.stats)["segments"], blocks=quick.extra["counts"]["blocks"])
+                else:
+                    bar(total or 0, total)
             return replace(quick, budget_s=limits.budget_s if limits is not None else budget_s,
                            timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
                            program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,

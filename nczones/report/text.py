@@ -179,7 +179,10 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
     if getattr(result, "interrupted", False):
         what += " (interrupted: a partial report)"
     parts = [f"{name}: {verdict}: {what}", f"{nseg} segment{'s' if nseg != 1 else ''} checked"]
-    if not deterministic:
+    if not deterministic and "double_pass_boxes" in stats:
+        boxes = stats["double_pass_boxes"]
+        parts[-1] += f" (by the double pass in {boxes} box{'es' if boxes != 1 else ''}, 0 solver queries)"
+    elif not deterministic:
         parts[-1] += (f" ({stats.get('screened', 0)} by screening, "
                       f"{stats.get('z3_queries', 0)} solver quer{'y' if stats.get('z3_queries', 0) == 1 else 'ies'})")
     if result.margin:

@@ -204,8 +204,8 @@ def test_programs_the_pass_follows(name):
 def test_the_rows_are_the_controllers_doubles():
     path = check_against_full("G21 G90 G54 F100\nG1 X[0.1 + 0.2] Y[1 / 3]\n#1 = 0.1\nG1 X[#1 * 3]\n", MACHINE)
     assert path is not None
-    assert path.columns[0] == [0.0, 0.1 + 0.2, 0.1 * 3]
-    assert path.columns[1] == [0.0, 1 / 3, 1 / 3]
+    assert list(path.columns[0]) == [0.0, 0.1 + 0.2, 0.1 * 3]
+    assert list(path.columns[1]) == [0.0, 1 / 3, 1 / 3]
     lo, hi = path.enclosure(2, 2)  # rows 1 and 2: X = 0.1 + 0.2 and 0.1 * 3, both 0.30000000000000004
     assert lo["X"] < Fraction(3, 10) < hi["X"] and hi["X"] - lo["X"] < Fraction(1, 10**12)
     assert lo["Y"] < Fraction(1, 3) < hi["Y"] and hi["Y"] - lo["Y"] < Fraction(1, 10**12)

@@ -174,12 +174,13 @@ def test_the_enclosure_holds_every_exact_value_the_double_stands_for(d, offset):
     """A word whose double is ``d`` has an exact value within half an ulp of it (its shadow, or ``d``); the machine
     coordinate is that plus the exact offset, and the pass's row is ``d + float(offset)`` in doubles."""
     import math
+    from array import array
 
     from nczones.gcode.doubles import DoublePath
 
     off = Fraction(offset)
     m = d + float(off)
-    path = DoublePath(("X",), ([m, m],), (abs(off),), 1, 1, 0, 1)
+    path = DoublePath(("X",), (array("d", [m, m]),), (abs(off),), 1, 1, 0, 1)
     lo, hi = path.enclosure(1, 1)
     half = Fraction(math.ulp(d)) / 2
     for word in (Fraction(d) - half, Fraction(d), Fraction(d) + half):
