@@ -185,3 +185,39 @@ def test_the_enclosure_holds_every_exact_value_the_double_stands_for(d, offset):
     half = Fraction(math.ulp(d)) / 2
     for word in (Fraction(d) - half, Fraction(d), Fraction(d) + half):
         assert lo["X"] <= word + off <= hi["X"]
+
+
+def test_the_progress_bar_gets_its_last_step(monkeypatch):
+    calls = []
+
+    def bar(line, total, **counts):
+        calls.append((line, total, counts))
+
+    bar.counts = True  # type: ignore[attr-defined]
+    r = verify_text(LOOP, machine_of("box", 100, 0), progress=bar)
+    assert "double_pass_boxes" in dict(r.stats)
+    assert calls == [(LOOP.count("\n"), LOOP.count("\n"), {"motions": 200, "blocks": 202})]
+
+
+def test_ctrl_c_in_the_double_pass_is_an_interrupted_result(monkeypatch):
+    import nczones.gcode.doubles as doubles
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(doubles, "double_pass", interrupted)
+    r = verify_text(LOOP, machine_of("box", 100, 0))
+    assert r.interrupted and r.verdict is Verdict.UNKNOWN
+    assert [x.code for x in r.reasons] == ["VF204"]
+
+
+def test_the_text_report_names_the_double_pass(tmp_path):
+    from nczones.cli import main
+
+    machine = tmp_path / "m.toml"
+    machine.write_text(HEAD + ZONES["box"].format(a=100, b=0))
+    program = tmp_path / "loop.ngc"
+    program.write_text(LOOP)
+    out = tmp_path / "report.txt"
+    assert main(["verify", "--machine", str(machine), str(program), "--output", str(out)]) == 0
+    assert "200 segments checked (by the double pass in 1 box, 0 solver queries)" in out.read_text()
