@@ -146,6 +146,10 @@ def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
     return _Pass(text, machine, max_iterations).run()
 
 
+#: The code of a step: its body, its parameter writes, its values, the source of its plan's key, its names.
+_Code = tuple[list[str], list[str], list[str], str, dict]
+
+
 class _Pass:
     def __init__(self, text: str, machine: Any, max_iterations: int):
         if getattr(machine, "machine_type", "mill") != "mill" or getattr(machine, "diameter_axes", ()):
@@ -162,7 +166,7 @@ class _Pass:
         self.lines = text.split("\n")
         #: each line's layout (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII
         self.layouts = text.encode().translate(LAYOUT).split(b"\n") if text.isascii() else None
-        self.by_layout: dict[bytes, tuple] = {}  # layout -> (step, cutter)
+        self.by_layout: dict[bytes, Any] = {}  # layout -> the step of its lines (the line itself its argument)
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
         self.index = {a: i for i, a in enumerate(self.axes)}
@@ -184,6 +188,7 @@ class _Pass:
         self.plans: dict[tuple, Any] = {}
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
+        self.shape_code: dict[Any, _Code] = {}
         self.pindex: dict[str, int] = {}
         from .state import linuxcnc_state_parameters
 
@@ -258,9 +263,9 @@ class _Pass:
                     step = steps[i] = self._step(i)
                 fn, parts = step
             else:
-                fast = by_layout.get(layouts[i]) if layouts is not None else None
-                if fast is not None:
-                    fn, parts = fast[0], fast[1](lines[i])
+                fn = by_layout.get(layouts[i]) if layouts is not None else None
+                if fn is not None:
+                    parts = lines[i]
                 else:
                     fn, parts = self._step(i)
             i += 1
@@ -286,30 +291,21 @@ class _Pass:
                 return None, ()
             return self._fresh(line)
         cut = hit[1]
-        fn = self._shape_step(hit[2])
         if self.layouts is not None and layout == self.layouts[i]:
-            self.by_layout[layout] = (fn, cut)
-        return fn, cut(line)
+            self.by_layout[layout] = self._shape_step(hit[2], cut)
+        return self._shape_step(hit[2]), cut(line)
 
     # -- control lines ------------------------------------------------------------------------------------
     def _controls(self) -> dict[int, tuple]:
         """Every O-word line as the full path's scan for jumps sees it
-        (:func:`~nczones.gcode.program.scan_oword`), matched by nesting; each line's parse must agree.  ``{line index: (keyword, target, condition)}``: a
-        ``while``'s target is the index after its ``endwhile`` and an ``endwhile``'s its ``while``; an
+        (:func:`~nczones.gcode.program.scan_oword`), matched by nesting; each line's parse must agree.
+        ``{line index: (keyword, target, condition)}``: a ``while``'s target is the index after its ``endwhile`` and an ``endwhile``'s its ``while``; an
         ``if``'s the ``(keyword, index, condition)`` of its ``elseif``/``else``/``endif`` lines; an
         ``elseif``'s or ``else``'s the index after the ``endif``."""
         text = self.text
         found = []
-        line_end = -1
         index, counted = 0, 0
-        for m in _O_LETTER.finditer(text):
-            at = m.start()
-            if at < line_end:
-                continue
-            start = text.rfind("\n", 0, at) + 1
-            line_end = text.find("\n", at)
-            if line_end < 0:
-                line_end = len(text)
+        for start, line_end in _lines_with_o(text):
             index += text.count("\n", counted, start)
             counted = start
             line = text[start:line_end]
@@ -392,12 +388,19 @@ class _Pass:
             return self._shape_step(shape), literals
         return self._parsed(line), ()
 
-    def _shape_step(self, shape: Any) -> Any:
-        """The step of the lines of a shape (made once per pass): its literals, cut out of each line, are
-        ``P``."""
-        fn = self.shape_steps.get(shape)
+    def _shape_step(self, shape: Any, cut: Any = None) -> Any:
+        """The step of the lines of a shape, made once per pass: of its literals (``P``), or, given the layout's
+        cutter, of the line itself (the literals cut out of it first)."""
+        fn = self.shape_steps.get(shape if cut is None else cut)
         if fn is not None:
             return fn
+        code = self.shape_code.get(shape)
+        if code is None:
+            code = self.shape_code[shape] = self._shape_code(shape)
+        fn = self.shape_steps[shape if cut is None else cut] = self._exec(*code, cut=cut)
+        return fn
+
+    def _shape_code(self, shape: Any) -> _Code:
         pl, leaf_of = shape_source(shape)
         if pl.oword is not None or pl.delete or pl.percent or pl.unsupported is not None or pl.comments:
             raise Declined("a line the double pass does not follow")
@@ -425,8 +428,7 @@ class _Pass:
             return plan
 
         key = "None" if not codes else codes[0] if len(codes) == 1 else "(" + ", ".join(codes) + ",)"
-        fn = self.shape_steps[shape] = self._exec(body, writes, vals, key, {"PLANS": made, "PLAN_OF": plan_of})
-        return fn
+        return body, writes, vals, key, {"PLANS": made, "PLAN_OF": plan_of}
 
     def _compiled_cond(self, tree: Any) -> Any:
         """A condition's step: ``step(())`` is its double."""
@@ -438,9 +440,12 @@ class _Pass:
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
-    def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict) -> Any:
-        """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends)."""
-        lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
+    def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict,
+              cut: Any = None) -> Any:
+        """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends);
+        ``step(line)`` with ``P = cut(line)`` first when a cutter is given."""
+        head = ["def step(P):"] if cut is None else ["def step(L):", "    P = CUT(L)"]
+        lines = head + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
         if key is None:
             lines.append("    plan = PLAN")
         else:
@@ -448,6 +453,7 @@ class _Pass:
         lines.append(f"    return plan(({''.join(v + ', ' for v in values)}))")
         scope = dict(self.env)
         scope.update(extra)
+        scope["CUT"] = cut
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
@@ -528,7 +534,18 @@ def _letters(words: Any) -> str:
     return letters
 
 
-_O_LETTER = re.compile("[oO]")
+def _lines_with_o(text: str) -> list[tuple[int, int]]:
+    """``(start, end)`` of every line with an ``o`` or ``O``, in order (``str.find``: most lines have none)."""
+    found = set()
+    n = len(text)
+    for letter in "oO":
+        at = text.find(letter)
+        while at >= 0:
+            end = text.find("\n", at)
+            end = n if end < 0 else end
+            found.add((text.rfind("\n", 0, at) + 1, end))
+            at = text.find(letter, end)
+    return sorted(found)
 
 
 def _cond(cond: Any) -> float:
