@@ -63,6 +63,7 @@ from .source import ProgramLike, ProgramSource, as_source, load_program, program
 __all__ = [
     "interpret",
     "interpret_text",
+    "checked_options",
     "segments",
     "segments_text",
     "ProgramSource",
@@ -345,6 +346,25 @@ def interpret(
     from ..exact import exact
 
     src = as_source(source, file=file, text_function="interpret_text")
+    tol = checked_options(machine, arc_tolerance, max_loop_iterations, dialect)
+    dialect = machine.dialect if dialect is None else dialect
+    return Interpretation(src, machine, block_delete=block_delete, track_dependencies=track_dependencies,
+                          arc_tolerance=tol, fast=fast, chunk_size=chunk_size,
+                          max_loop_iterations=max_loop_iterations, dialect=dialect, library=library,
+                          param_ranges=tuple(param_ranges))
+
+
+def checked_options(machine: Machine, arc_tolerance: Fraction | str, max_loop_iterations: int,
+                    dialect: str | None) -> Fraction | str:
+    """The arc tolerance as :func:`interpret` takes it, after the checks of its options
+    (:class:`~nczones.errors.InvalidArgument` for a negative tolerance, an iteration bound that is not a
+    positive integer, an unknown dialect).
+
+    >>> checked_options(None, "0.002", 10, "linuxcnc")
+    Fraction(1, 500)
+    """
+    from ..exact import exact
+
     tol: Fraction | str = "linuxcnc" if arc_tolerance == "linuxcnc" else exact(arc_tolerance)
     if isinstance(tol, Fraction) and tol < 0:
         raise InvalidArgument(f"arc_tolerance must not be negative, got {arc_tolerance!r}")
@@ -353,10 +373,7 @@ def interpret(
     dialect = machine.dialect if dialect is None else dialect
     if dialect not in ("linuxcnc", "fanuc"):
         raise InvalidArgument(f"dialect must be \"linuxcnc\" or \"fanuc\", got {dialect!r}")
-    return Interpretation(src, machine, block_delete=block_delete, track_dependencies=track_dependencies,
-                          arc_tolerance=tol, fast=fast, chunk_size=chunk_size,
-                          max_loop_iterations=max_loop_iterations, dialect=dialect, library=library,
-                          param_ranges=tuple(param_ranges))
+    return tol
 
 
 def interpret_text(text: str, machine: Machine, *, file: str = "<program>", **options: Any) -> Interpretation:

@@ -154,6 +154,8 @@ class _Pass:
     def __init__(self, text: str, machine: Any, max_iterations: int):
         if getattr(machine, "machine_type", "mill") != "mill" or getattr(machine, "diameter_axes", ()):
             raise Declined("a lathe")
+        if getattr(machine, "dialect", "linuxcnc") != "linuxcnc":
+            raise Declined("a machine of another dialect than LinuxCNC")
         modal = set(machine.modal)
         if modal & {"G20", "G91", "G93", "G95"}:
             raise Declined("the machine starts in G20, G91, G93 or G95")
@@ -498,6 +500,8 @@ class _Pass:
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
+        if "feedmode" in groups:  # LinuxCNC sets the feed rate to 0 on G94 (before it reads F)
+            body.append("st.feed = 0.0")
         if "F" in others:
             body += [f"f = v[{others.index('F')}]", "if not f > 0.0: raise D('a feed that is not positive')",
                      "st.feed = f"]
@@ -508,6 +512,8 @@ class _Pass:
             body.append(f"st.off = OFFSETS[{groups['offset']}]")
         if "motion" in groups:
             body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
+        if groups.get("motion") == 1 and not axes:  # G1 without axis words: LinuxCNC checks the feed too
+            body.append("if not st.feed > 0.0: raise D('G1 without a positive feed')")
         if axes:
             body += ["mode = st.motion",
                      "if mode is None: raise D('axis words without a motion mode')",

@@ -243,7 +243,7 @@ def _verify(
     limits: RunLimits | None = None,
 ) -> Result:
     from ..exact import exact, format_exact
-    from ..gcode import DEFAULT_ARC_TOLERANCE, interpret
+    from ..gcode import DEFAULT_ARC_TOLERANCE, checked_options, interpret
 
     t0 = time.perf_counter()
     if isinstance(margin, str):
@@ -288,7 +288,11 @@ def _verify(
                 profile=profile)
     deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)] if "/" in source.text else []
     if (engine == "auto" and not ranges and recovery is None and not deleted
-            and settings["dialect"] == "linuxcnc" and "#" in source.text):
+            and settings["dialect"] == "linuxcnc" and machine.dialect == "linuxcnc" and "#" in source.text):
+        # the options the full path refuses are refused before the pass too
+        checked_options(machine, tolerance, max_iterations, dialect)
+        if margin < 0:
+            raise InvalidArgument(f"margin must not be negative, got {margin}")
         # a parametric program: the double pass first (nczones.prover.doubles), the full path if it declines
         from .doubles import double_pass_result
 

@@ -189,6 +189,7 @@ ACCEPTED = {
     "branches": "G21 G90 G54 F100 (set up)\n#<n> = 3\no1 if [#<n> EQ 1]\nG1 X1\no1 elseif [#<n> EQ 3]\n"
                 "G0 X3 Y[#<n> / 3]\no1 else\nG1 X9\no1 endif\nG55\nG1 Z-1 ; a cut\nM2\n",
     "offsets and rows": "G21 G90 G54 F100\nG0 X0.1 Y0.2 Z0.3\nG56 X[0.1 + 0.2]\nG1 Y[1/3] F[10 * 3]\nM30\n",
+    "F after G94": "G21 G90 G54 F100\n#1 = 1\nG94 F10 G1 X#1\nG94\nF5\nG1 Y#1\nM30\n",
 }
 
 
@@ -239,6 +240,11 @@ DECLINED = {
     "G59.1": ("G21 G90 G59.1 F100\n#1 = 1\nG1 X#1\n", "code"),
     "EXISTS": ("G21 G90 G54 F100\n#1 = EXISTS[#<a>]\nG1 X#1\n", "EXISTS"),
     "a line that does not parse": ("G21 G90 G54 F100\n#1 = [1 +\nG1 X#1\n", "parse"),
+    # LinuxCNC checks the feed of a G1 block without axis words too (found by the dp-hunt relations)
+    "G1 alone without a feed": ("#1 = 1\nG21 G90 G54\nG1\nM30\n", "feed"),
+    # G94 sets the feed rate to 0 before F is read (convert_feed_mode; rs274 prints SET_FEED_RATE(0))
+    "G94 resets the feed": ("G21 G90 G54 F100\n#1 = 1\nG94\nG1 X1\nM30\n", "feed"),
+    "G94 on the line of the motion": ("G21 G90 G54 F100\n#1 = 1\nG94 G1 X1\nM30\n", "feed"),
 }
 
 
@@ -260,3 +266,13 @@ def test_a_lathe_is_declined():
     lathe = parse_machine(machine_text().replace('pulse = "0.001"', 'pulse = "0.001"\ntype = "lathe"'))
     with pytest.raises(Declined, match="lathe"):
         double_pass("G21 G90 G54 F100\n#1 = 1\nG1 X#1\n", lathe, max_iterations=5)
+
+
+def test_a_machine_of_another_dialect_is_declined():
+    from pathlib import Path
+
+    fanuc = Path(__file__).resolve().parents[2] / "specs" / "machines" / "fanuc_mill.toml"
+    from nczones.machine import load_machine
+
+    with pytest.raises(Declined, match="dialect"):
+        double_pass("G21 G90 G54 F100\n#1 = 1\nG1 X1\nM30\n", load_machine(fanuc), max_iterations=5)

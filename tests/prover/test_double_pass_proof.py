@@ -221,3 +221,14 @@ def test_the_text_report_names_the_double_pass(tmp_path):
     out = tmp_path / "report.txt"
     assert main(["verify", "--machine", str(machine), str(program), "--output", str(out)]) == 0
     assert "200 segments checked (by the double pass in 1 box, 0 solver queries)" in out.read_text()
+
+
+@pytest.mark.parametrize("option", [{"margin": "-0.5"}, {"max_iterations": 0}, {"max_iterations": 1.5},
+                                    {"arc_tolerance": "-1"}, {"arc_tolerance": "abc"}])
+def test_options_the_full_path_refuses_are_refused_with_the_pass(option):
+    # found by the dp-hunt relations: the pass ran before these were checked, a negative margin proved "safe"
+    from nczones.errors import NczonesError
+
+    text = "G21 G90 G54 F100\n#1 = 1\nG1 X100.3\nM30\n"
+    with pytest.raises(NczonesError):
+        verify_text(text, machine_of("box", 100, 0), **option)
