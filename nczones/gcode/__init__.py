@@ -343,8 +343,6 @@ def interpret(
     -------
     Interpretation
     """
-    from ..exact import exact
-
     src = as_source(source, file=file, text_function="interpret_text")
     tol = checked_options(machine, arc_tolerance, max_loop_iterations, dialect)
     dialect = machine.dialect if dialect is None else dialect
