@@ -329,10 +329,12 @@ class _Pass:
             found.append((index, kw, label, cond))
         out: dict[int, tuple] = {}
         stack: list[list] = []
+        opened: set = set()
         for at, kw, label, cond in found:
             if kw in ("if", "while"):
-                if any(s[1] == label for s in stack):
-                    raise Declined("an O-word label reused while open")
+                if label in opened:  # LinuxCNC refuses a label that opens two constructs ("duplicate O-word label")
+                    raise Declined("an O-word label reused")
+                opened.add(label)
                 stack.append([kw, label, at, cond, []])
                 continue
             if not stack or stack[-1][1] != label:

@@ -232,6 +232,8 @@ DECLINED = {
                             "iteration bound"),
     "labels crossed": ("G21 G90 G54 F100\n#1 = 0\no1 if [1]\no2 if [1]\no1 endif\no2 endif\n", "nested"),
     "a label reused inside": ("G21 G90 G54 F100\n#1 = 0\no1 if [1]\no1 if [1]\no1 endif\no1 endif\n", "reused"),
+    # rs274: "duplicate O-word label - already defined in line 3" (found by the dp-hunt relations)
+    "a label reused after": ("G21 G90 G54 F100\n#1 = 0\no1 if [1]\no1 endif\no1 if [1]\no1 endif\n", "reused"),
     "block delete": ("G21 G90 G54 F100\n#1 = 1\n/G1 X#1\n", "does not follow"),
     "a computed code": ("G21 G90 G54 F100\n#1 = 1\nG[#1] X2\n", "computed"),
     "G1.5": ("G21 G90 G54 F100\n#1 = 1\nG1.5 X2\n", "code"),
