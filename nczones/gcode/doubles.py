@@ -277,6 +277,8 @@ class _Pass:
                         break
                 except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
                     raise Declined(f"an evaluation error: {exc!r}") from None
+        if not all(math.isfinite(min(col)) and math.isfinite(max(col)) for col in self.columns):
+            raise Declined("a position beyond the double range")
         motions = len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
                           self.blocks)

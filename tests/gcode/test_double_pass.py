@@ -278,3 +278,9 @@ def test_a_machine_of_another_dialect_is_declined():
 
     with pytest.raises(Declined, match="dialect"):
         double_pass("G21 G90 G54 F100\n#1 = 1\nG1 X1\nM30\n", load_machine(fanuc), max_iterations=5)
+
+
+def test_a_position_beyond_the_double_range_is_declined():
+    huge = "9" * 400  # its double is infinite; the line has the shape of the one before, whose step reads it
+    with pytest.raises(Declined, match="a position beyond the double range"):
+        double_pass(f"G21 G90 G54 F100\n#1 = 1\nG1 X1 Y1\nG1 X{huge} Y2\n", MACHINE, max_iterations=5)
