@@ -226,6 +226,10 @@ def render_stats(result: Result, name: str = "") -> str:
     rate = f" ({prof['motions'] / total:,.0f} motions/s)" if total else ""
     lines = [f"{prof['motions']:,} motions in {prof['blocks']:,} blocks, {total:.3f} s{rate}; "
              f"{prof.get('motions_screened_vectorized', 0):,} motions proved by the vectorized screen"]
+    if "double_pass" in prof:
+        boxes = prof["double_pass"]["boxes"]
+        lines[0] += (f", {prof['double_pass']['motions']:,} by the double pass in {boxes:,} "
+                     f"box{'es' if boxes != 1 else ''} (its time is the interpretation's)")
     stopped = solver.get("stopped") or {}
     stops = (", stopped: " + ", ".join(f"{k} {v}" for k, v in stopped.items())) if stopped else ""
     lines.append(f"time by tier: vectorized screen {tiers.get('screen_vectorized_s', 0):.3f} s, exact tiers one by one "

@@ -232,3 +232,13 @@ def test_options_the_full_path_refuses_are_refused_with_the_pass(option):
     text = "G21 G90 G54 F100\n#1 = 1\nG1 X100.3\nM30\n"
     with pytest.raises(NczonesError):
         verify_text(text, machine_of("box", 100, 0), **option)
+
+
+def test_the_stats_name_the_double_pass():
+    from nczones.report.text import render_stats
+
+    r = verify_text(LOOP, machine_of("box", 100, 0), file="loop.ngc")
+    first = render_stats(r, "loop.ngc").splitlines()[0]
+    assert first.startswith("loop.ngc: stats: 200 motions in 202 blocks, ")
+    assert first.endswith("0 motions proved by the vectorized screen, 200 by the double pass in 1 box "
+                          "(its time is the interpretation's)")
