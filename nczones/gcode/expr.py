@@ -36,6 +36,8 @@ from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
 
+import numpy as np
+
 from ..errors import InvalidArgument
 from .lexer import fraction_raw, to_fraction
 from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
@@ -49,10 +51,49 @@ __all__ = [
     "TOLERANCE_EQUAL",
     "MAX_PARAMETER",
     "format_parameter",
+    "trig_degrees",
+    "atan_degrees",
 ]
 
 #: LinuxCNC compares EQ/NE with this absolute tolerance (``TOLERANCE_EQUAL``).
 TOLERANCE_EQUAL = 0.0001
+
+#: LinuxCNC's ``M_PIl``: pi as an x87 long double (64-bit significand).  SIN, COS and TAN compute
+#: ``sin((x * M_PIl) / 180.0)`` and ASIN, ACOS and ATAN ``(r * 180.0) / M_PIl`` (interp_execute.cc,
+#: interp_read.cc): in long double on x86-64, the result rounded to double.  numpy's ``longdouble`` is that
+#: type there (and calls the same libm); where it is not, these fall back to doubles (a last-bit difference
+#: from an x86-64 controller is then possible).
+_LD = np.longdouble if np.finfo(np.longdouble).nmant == 63 else None
+_PI_L = _LD("3.141592653589793238462643383279502884") if _LD is not None else None
+_TRIG = {"sin": (np.sin, math.sin), "cos": (np.cos, math.cos), "tan": (np.tan, math.tan)}
+
+
+def trig_degrees(name: str, d: float) -> float:
+    """SIN, COS or TAN of ``d`` degrees as LinuxCNC computes it (long double, then rounded to double).
+
+    >>> trig_degrees("sin", 30.0), trig_degrees("tan", 90.0) < 0  # math.sin(math.pi / 6) is 0.49999999999999994
+    (0.5, True)
+    """
+    ld, dbl = _TRIG[name]
+    if _LD is None:
+        return dbl((d * math.pi) / 180.0)
+    return float(ld((_LD(d) * _PI_L) / _LD(180.0)))
+
+
+def to_degrees(r: float) -> float:
+    """``(r * 180.0) / M_PIl`` rounded to double: LinuxCNC's radians to degrees after ASIN, ACOS and ATAN."""
+    if _LD is None:
+        return (r * 180.0) / math.pi
+    return float(_LD(r * 180.0) / _PI_L)
+
+
+def atan_degrees(y: float, x: float) -> float:
+    """``ATAN[y]/[x]`` in degrees as LinuxCNC computes it (``atan2`` in double, the degrees in long double).
+
+    >>> atan_degrees(1.0, 1.0), atan_degrees(0.0, -1.0)
+    (45.0, 180.0)
+    """
+    return check_double(to_degrees(math.atan2(y, x)))
 #: Highest numbered parameter (LinuxCNC ``RS274NGC_MAX_PARAMETERS - 1``).
 MAX_PARAMETER = 5601
 #: Subroutine arguments live in #1..#30 and are local to a call.
@@ -325,7 +366,7 @@ def evaluate(node: Any, params: Parameters) -> Value:
     if tag == ATAN:
         y = evaluate(node[1], params)[0]
         x = evaluate(node[2], params)[0]
-        return (check_double((math.atan2(y, x) * 180.0) / math.pi), None)
+        return (atan_degrees(y, x), None)
     if tag == EXISTS:
         par = node[1]
         if par[0] == NPAR:
@@ -555,13 +596,9 @@ def unary_op(name: str, value: Value) -> Value:
         if d < -1.0 or d > 1.0:
             raise EvalError("GC312", f"argument to {name.upper()} out of range: {d!r} (allowed -1 to 1)")
         r = math.acos(d) if name == "acos" else math.asin(d)
-        return (check_double((r * 180.0) / math.pi), None)
-    if name == "cos":
-        return (math.cos((d * math.pi) / 180.0), None)
-    if name == "sin":
-        return (math.sin((d * math.pi) / 180.0), None)
-    if name == "tan":
-        return (check_double(math.tan((d * math.pi) / 180.0)), None)
+        return (check_double(to_degrees(r)), None)
+    if name in ("cos", "sin", "tan"):
+        return (check_double(trig_degrees(name, d)), None)
     if name == "exp":
         try:
             return (check_double(math.exp(d)), None)

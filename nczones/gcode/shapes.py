@@ -28,7 +28,6 @@ every line of the corpus with its numbers changed).
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Callable
 from operator import itemgetter
@@ -38,8 +37,8 @@ from ..frozen import builder
 from .expr import (
     UNSET,
     EvalError,
+    atan_degrees,
     binary_op,
-    check_double,
     pair,
     q_add,
     q_div,
@@ -420,7 +419,7 @@ def _executor(spans: list[tuple[int, int]], pl: ParsedLine, leaf_of: dict[int, s
     lines.append(f"    return [{''.join(c + ', ' for c in columns)}]")
     scope: dict[str, Any] = {"_dec": _decimal, "_pdv": plain_decimal_value, "_dun": _decimal_uncached, "to_double": to_double,
              "_STOP_M": M_CONTROL, "G_MACRO_CALLS": G_MACRO_CALLS, "EvalError": EvalError, "UNSET": UNSET, "pair": pair, "binary_op": binary_op, "unary_op": unary_op,
-             "q_add": q_add, "q_sub": q_sub, "q_mul": q_mul, "q_div": q_div, "_atan": _atan,
+             "q_add": q_add, "q_sub": q_sub, "q_mul": q_mul, "q_div": q_div, "_atan": atan_degrees,
              "_IDX": _IDX, "_index": _index}
     exec(compile("\n".join(lines) + "\n", "<line shape run>", "exec"), scope)  # noqa: S102  # reprs only
     return scope["run"], scope["columns"]
@@ -456,10 +455,6 @@ def _exact(src: str) -> str:
 def _decimal(text: str) -> Any:
     """The exact value of a literal (sign included), as the parser's NUM leaf has it."""
     return plain_decimal_value(text) if len(text) < 5 else _decimal_uncached(text)
-
-
-def _atan(y: float, x: float) -> float:
-    return check_double((math.atan2(y, x) * 180.0) / math.pi)
 
 
 class _Emit:

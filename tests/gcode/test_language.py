@@ -36,10 +36,32 @@ def test_operators_functions_precedence(expr, expected):
 
 def test_trig_is_degrees_and_the_controllers_double():
     (c, s, a, t) = values("G0 X[COS[30]] X[SIN[30]] X[ATAN[1]/[1]] X[ASIN[1]]")
-    assert c == Fraction(math.cos((30.0 * math.pi) / 180.0))
-    assert s == Fraction(math.sin((30.0 * math.pi) / 180.0))
-    assert a == Fraction(math.atan2(1.0, 1.0) * 180.0 / math.pi)
-    assert t == Fraction(math.asin(1.0) * 180.0 / math.pi)
+    # LinuxCNC computes sin((x * M_PIl) / 180.0) in x87 long double: SIN[30] is 0.5, not the double
+    # formula's 0.49999999999999994 (and COS[30] one bit below it)
+    assert (c, s, a, t) == (Fraction(0.8660254037844386), Fraction(1, 2), 45, 90)
+
+
+#: Values LinuxCNC's ``rs274 -g`` computes (checked 2026-11-25 with a program moving by
+#: ``[[expr - value] * 10 / ulp]``: 0 each) where the double formulas give another double.
+LINUXCNC_TRIG = [
+    ("SIN[30]", 0.5), ("COS[60]", 0.5), ("TAN[45]", 1.0), ("TAN[135]", -1.0), ("SIN[45]", 0.7071067811865476),
+    ("TAN[60]", 1.7320508075688772), ("TAN[89]", 57.28996163075942), ("COS[89]", 0.01745240643728351),
+    ("TAN[90]", -3.98679762981171e19), ("SIN[3]", 0.052335956242943835), ("COS[300]", 0.5),
+    ("ATAN[2]/[0.7]", 70.70995378081126), ("ATAN[0.5]/[-1]", 153.434948822922), ("ATAN[7]/[6]", 49.398705354995535),
+    ("ACOS[0.1]", 84.2608295227332), ("ASIN[0.9]", 64.15806723683286),
+]
+
+
+@pytest.mark.parametrize("expr, linuxcnc", LINUXCNC_TRIG, ids=[e for e, _ in LINUXCNC_TRIG])
+def test_trig_is_computed_in_long_double_as_linuxcnc_does(expr, linuxcnc):
+    assert values(f"G0 X[{expr}]") == [Fraction(linuxcnc)]
+    assert values(f"#1 = 2\nG0 X[{expr} * [#1 - 1]]") == [Fraction(linuxcnc)]  # the compiled lane too
+
+
+def test_a_branch_on_sin_30_goes_where_linuxcnc_goes():
+    # the double formula's SIN[30] is below 0.5: the branch LinuxCNC does not take, 400 mm off
+    prog = "#1 = SIN[30]\no1 if [#1 LT 0.5]\nG1 X1 F100\no1 else\nG1 X500 F100\no1 endif\nM30\n"
+    assert values(prog) == [500]
 
 
 def test_reads_on_a_line_see_values_before_its_assignments():
