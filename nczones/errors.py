@@ -21,9 +21,11 @@ command line.
 from __future__ import annotations
 
 import enum
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 __all__ = [
+    "close_matches",
     "NczonesError",
     "InvalidArgument",
     "InternalError",
@@ -227,3 +229,15 @@ class MachineImportError(InputError):
 
 class ProjectFileError(InputError):
     """A bad fleet project file ``nczones.toml`` (codes FL1xx)."""
+
+
+def close_matches(word: str, choices: Iterable[str], n: int = 1) -> list[str]:
+    """The choices closest to a misspelt ``word``, for a message's "did you mean" (:mod:`difflib`, loaded only
+    when a message needs it).
+
+    >>> close_matches("uptp", ("upto", "min", "max"))
+    ['upto']
+    """
+    import difflib
+
+    return difflib.get_close_matches(word, list(choices), n=n)

@@ -38,7 +38,6 @@ increasing ``sigma``; positions reported to users are machine coordinates.
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -46,7 +45,7 @@ from math import floor
 from types import MappingProxyType
 from typing import Any
 
-from .errors import Diagnostic, InvalidArgument, MachineFileError, SourceSpan
+from .errors import Diagnostic, InvalidArgument, MachineFileError, SourceSpan, close_matches
 from .exact import format_decimal
 from .machine import SECTION_PARSERS, Machine, as_written, read_number
 
@@ -140,7 +139,7 @@ def _axis_section(rd: Any, axis: str, table: Mapping[str, Any]) -> HomingConfig 
     ok = True
     for key in table:
         if key not in HOMING_KEYS:
-            close = difflib.get_close_matches(key, HOMING_KEYS, n=1)
+            close = close_matches(key, HOMING_KEYS, n=1)
             hint = f"; did you mean {close[0]!r}?" if close else f"; allowed keys: {', '.join(HOMING_KEYS)}"
             rd.report("ZN140", f"{label}: unknown key {key!r}{hint}", span(key))
             ok = False
@@ -245,7 +244,7 @@ def parse_homing_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[st
             rd.report("ZN141", msg, rd.loc.key(axis, header))
             continue
         if axis not in axes:
-            close = difflib.get_close_matches(axis, axes, n=1)
+            close = close_matches(axis, axes, n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
             line = rd.loc.section(f"homing.{axis}")
             span = None

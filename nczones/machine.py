@@ -14,7 +14,6 @@ the JSON Schema is ``specs/machine.schema.json``.
 from __future__ import annotations
 
 import decimal
-import difflib
 import enum
 import functools
 import hashlib
@@ -29,7 +28,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
-from .errors import Diagnostic, MachineFileError, Severity, SourceSpan
+from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
 
@@ -543,7 +542,7 @@ def _check_keys(
 ) -> None:
     for key in table:
         if key not in allowed:
-            close = difflib.get_close_matches(key, allowed, n=1)
+            close = close_matches(key, allowed, n=1)
             hint = f"; did you mean {as_written(close[0])}?" if close else f"; allowed keys: {', '.join(allowed)}"
             span = rd.loc.key(key, start)
             if span is None and start is None:
@@ -820,7 +819,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     for key, value in raw_offsets.items():
         oname = key.replace(" ", "").upper() if isinstance(key, str) else key
         if oname not in WORK_OFFSETS and oname not in FANUC_OFFSETS:
-            close = difflib.get_close_matches(key, WORK_OFFSETS + FANUC_OFFSETS, n=1)
+            close = close_matches(key, WORK_OFFSETS + FANUC_OFFSETS, n=1)
             hint = f"; did you mean {as_written(close[0])}?" if close else f"; allowed: {', '.join(WORK_OFFSETS)}"
             rd.report("ZN101", f"[offsets]: unknown work offset {as_written(key)}{hint}", rd.loc.key(key, oline))
             continue
@@ -1274,7 +1273,7 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
             continue
         for key in rt:
             if key not in ("upto", "min", "max"):
-                close = difflib.get_close_matches(key, ("upto", "min", "max"), n=1)
+                close = close_matches(key, ("upto", "min", "max"), n=1)
                 hint = f"; did you mean {as_written(close[0])}?" if close else "; allowed keys: upto, min, max"
                 rd.report("ZN101", f"{rlabel}: unknown key {as_written(key)}{hint}", rd.loc.element("regions", header, i, key))
                 ok = False

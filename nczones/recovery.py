@@ -59,14 +59,13 @@ Rapids move as the machine's ``rapid_mode`` says (linear or dogleg).
 
 from __future__ import annotations
 
-import difflib
 import enum
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any, Generic, Protocol, TypeVar
 
-from .errors import Diagnostic, InvalidArgument, MachineFileError
+from .errors import Diagnostic, InvalidArgument, MachineFileError, close_matches
 from .machine import SECTION_PARSERS, Machine, as_written, read_number
 from .motion import Segment, SegmentKind
 
@@ -216,7 +215,7 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
     bad = False
     for key in raw:
         if key not in TOOL_CHANGE_KEYS:
-            close = difflib.get_close_matches(key, TOOL_CHANGE_KEYS, n=1)
+            close = close_matches(key, TOOL_CHANGE_KEYS, n=1)
             hint = f"; did you mean {as_written(close[0])}?" if close else f"; allowed keys: {', '.join(TOOL_CHANGE_KEYS)}"
             rd.report("ZN150", f"[tool_change]: unknown key {as_written(key)}{hint}", rd.loc.key(key, header))
             bad = True
@@ -236,7 +235,7 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
         else:
             for axis, v in pos_raw.items():
                 if axis not in axes:
-                    close = difflib.get_close_matches(axis, axes, n=1)
+                    close = close_matches(axis, axes, n=1)
                     hint = f"; did you mean {close[0]!r}?" if close else ""
                     rd.report("ZN152", f"[tool_change] position: unknown axis {as_written(axis)}; the machine's "
                               f"axes are {', '.join(axes)}{hint}", span)
@@ -256,7 +255,7 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
     default_axis = "Z" if "Z" in axes else axes[-1]
     retract_axis = raw.get("retract_axis", default_axis)
     if not isinstance(retract_axis, str) or retract_axis not in axes:
-        close = difflib.get_close_matches(str(retract_axis), axes, n=1)
+        close = close_matches(str(retract_axis), axes, n=1)
         hint = f"; did you mean {close[0]!r}?" if close else ""
         rd.report("ZN152", f"[tool_change] retract_axis: {as_written(retract_axis)} is not an axis of the machine "
                   f"({', '.join(axes)}){hint}", rd.loc.key("retract_axis", header))
@@ -293,7 +292,7 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
     try:
         variant = RecoveryVariant(variant_raw)
     except ValueError:
-        close = difflib.get_close_matches(str(variant_raw), [v.value for v in RecoveryVariant], n=1)
+        close = close_matches(str(variant_raw), [v.value for v in RecoveryVariant], n=1)
         hint = f"; did you mean {as_written(close[0])}?" if close else ""
         rd.report("ZN155", f"[tool_change] variant: {as_written(variant_raw)} is not allowed; use \"start\" or "
                   f"\"breakpoint\"{hint}", rd.loc.key("variant", header))

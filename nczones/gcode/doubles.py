@@ -52,7 +52,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import GcodeError
-from .expr import MAX_PARAMETER, EvalError, binary_op, check_double, unary_op
+from .expr import MAX_PARAMETER, TRIG_DEGREES, EvalError, atan_degrees, binary_op, unary_op
 from .lexer import magic_comment
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from .program import scan_oword
@@ -196,7 +196,8 @@ class _Pass:
 
         self.state_keys = frozenset(k for k in linuxcnc_state_parameters() if isinstance(k, int)) | {3000, 3006}
         self.env = {"S": self.S, "N": self.N, "D": Declined, "binary_op": binary_op, "unary_op": unary_op,
-                    "_atan": _atan, "_code": _code, "_pindex": self._pindex, "I": self.pindex}
+                    "_atan": _atan, "_code": _code, "_sin": TRIG_DEGREES["sin"],
+                    "_cos": TRIG_DEGREES["cos"], "_tan": TRIG_DEGREES["tan"], "_pindex": self._pindex, "I": self.pindex}
 
     # -- parameters ---------------------------------------------------------------------------------------
     def _pindex(self, text: str) -> int:
@@ -567,7 +568,7 @@ def _cond(cond: Any) -> float:
 
 
 def _atan(y: float, x: float) -> float:
-    return check_double((math.atan2(y, x) * 180.0) / math.pi)
+    return atan_degrees(y, x)
 
 
 _CODES: dict[str, int] = {}
@@ -674,6 +675,9 @@ class _Emit:
             a = self.value(node[2], out)
             if node[1] == "abs":
                 out += [f"if {a} - {a}: raise D('not a finite number')", f"{d} = abs({a})"]
+            elif node[1] in TRIG_DEGREES:  # unary_op's own function, without its dispatch
+                out += [f"if {a} - {a}: raise D('not a finite number')", f"{d} = _{node[1]}({a})",
+                        f"if {d} - {d}: raise D('not a finite number')"]
             else:
                 out.append(f"{d} = unary_op({node[1]!r}, ({a}, None))[0]")
         elif tag == ATAN:

@@ -3,7 +3,8 @@
 Values are IEEE doubles, as in the controller: every arithmetic operation,
 comparison, function and loop condition is computed on the double the
 controller computes (trigonometry in degrees, ``COS[x]`` is
-``cos((x * pi) / 180)`` exactly as ``interp_execute.cc`` writes it).
+``cos((x * M_PIl) / 180.0)`` in x87 long double exactly as ``interp_execute.cc``
+writes it and an x86-64 controller runs it, :mod:`nczones.gcode.x87`).
 
 Exact shadow (the documented choice for "plain decimals stay exact")
 ---------------------------------------------------------------------
@@ -36,9 +37,8 @@ from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
 
-import numpy as np
-
 from ..errors import InvalidArgument
+from . import x87
 from .lexer import fraction_raw, to_fraction
 from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
 
@@ -52,39 +52,35 @@ __all__ = [
     "MAX_PARAMETER",
     "format_parameter",
     "trig_degrees",
+    "TRIG_DEGREES",
     "atan_degrees",
 ]
 
 #: LinuxCNC compares EQ/NE with this absolute tolerance (``TOLERANCE_EQUAL``).
 TOLERANCE_EQUAL = 0.0001
 
-#: LinuxCNC's ``M_PIl``: pi as an x87 long double (64-bit significand).  SIN, COS and TAN compute
-#: ``sin((x * M_PIl) / 180.0)`` and ASIN, ACOS and ATAN ``(r * 180.0) / M_PIl`` (interp_execute.cc,
-#: interp_read.cc): in long double on x86-64, the result rounded to double.  numpy's ``longdouble`` is that
-#: type there (and calls the same libm); where it is not, these fall back to doubles (a last-bit difference
-#: from an x86-64 controller is then possible).
-_LD = np.longdouble if np.finfo(np.longdouble).nmant == 63 else None
-_PI_L = _LD("3.141592653589793238462643383279502884") if _LD is not None else None
-_TRIG = {"sin": (np.sin, math.sin), "cos": (np.cos, math.cos), "tan": (np.tan, math.tan)}
+#: SIN, COS and TAN of degrees as LinuxCNC computes them: ``sin((x * M_PIl) / 180.0)`` in x87 long double, the
+#: result rounded to double (:mod:`nczones.gcode.x87`); the double formula where the host has no 80-bit ``sinl``.
+TRIG_DEGREES: dict[str, Callable[[float], float]] = (
+    {"sin": x87.sin_degrees, "cos": x87.cos_degrees, "tan": x87.tan_degrees} if x87.AVAILABLE else
+    {"sin": lambda d: math.sin((d * math.pi) / 180.0), "cos": lambda d: math.cos((d * math.pi) / 180.0),
+     "tan": lambda d: math.tan((d * math.pi) / 180.0)})
 
 
 def trig_degrees(name: str, d: float) -> float:
-    """SIN, COS or TAN of ``d`` degrees as LinuxCNC computes it (long double, then rounded to double).
+    """SIN, COS or TAN of ``d`` degrees as LinuxCNC computes it (:data:`TRIG_DEGREES`).
 
     >>> trig_degrees("sin", 30.0), trig_degrees("tan", 90.0) < 0  # math.sin(math.pi / 6) is 0.49999999999999994
     (0.5, True)
     """
-    ld, dbl = _TRIG[name]
-    if _LD is None:
-        return dbl((d * math.pi) / 180.0)
-    return float(ld((_LD(d) * _PI_L) / _LD(180.0)))
+    return TRIG_DEGREES[name](d)
 
 
 def to_degrees(r: float) -> float:
     """``(r * 180.0) / M_PIl`` rounded to double: LinuxCNC's radians to degrees after ASIN, ACOS and ATAN."""
-    if _LD is None:
+    if not x87.AVAILABLE:
         return (r * 180.0) / math.pi
-    return float(_LD(r * 180.0) / _PI_L)
+    return x87.degrees_from_radians(r)
 
 
 def atan_degrees(y: float, x: float) -> float:
@@ -329,8 +325,8 @@ def evaluate(node: Any, params: Parameters) -> Value:
     >>> evaluate(tree, Parameters())
     (17.0, Fraction(17, 1))
     >>> tree = parse_line("X[COS[60]]", 1, "p").words[0][1]
-    >>> evaluate(tree, Parameters())[0] == math.cos((60.0 * math.pi) / 180.0)
-    True
+    >>> evaluate(tree, Parameters())[0]  # cos((60 * M_PIl) / 180.0) in long double; the double formula's is not 0.5
+    0.5
     """
     tag = node[0]
     if tag == NUM:
