@@ -36,9 +36,10 @@ from nczones.gcode import interpret_text
 from nczones.gcode.doubles import Declined, double_pass
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from oracles.bruteforce import first_violation
 
-CI_EXAMPLES = {"relations": 40, "oracle": 15}
-LONG_EXAMPLES = {"relations": 2_000, "oracle": 1_000}
+CI_EXAMPLES = {"relations": 40, "oracle": 15, "rasters": 4}
+LONG_EXAMPLES = {"relations": 2_000, "oracle": 1_000, "rasters": 200}
 
 
 def examples(name: str) -> int:
@@ -89,7 +90,8 @@ def machine_files(draw) -> str:
     lines += ["[[zones]]", 'name = "travel"', 'kind = "box"',
               "min = { " + ", ".join(f'{a} = "-{travel}"' for a in linear) + " }",
               "max = { " + ", ".join(f'{a} = "{travel}"' for a in linear) + " }"]
-    extra = draw(st.sampled_from(("none", "forbid", "stepped", "polygon", "tip")))
+    extra = draw(st.sampled_from(("none", "forbid", "stepped", "polygon", "tip", "notch", "forbid polygon",
+                                  "stepped y")))
     if extra == "forbid":
         lines += ["[[zones]]", 'name = "clamp"', 'kind = "box"', "forbid = true",
                   'min = { X = "20", Y = "20" }', 'max = { X = "30", Y = "30" }']
@@ -101,6 +103,18 @@ def machine_files(draw) -> str:
     elif extra == "polygon":
         lines += ["[[zones]]", 'name = "plate"', 'kind = "polygon"', 'plane = ["X", "Y"]',
                   'vertices = [["-90", "-90"], ["90", "-90"], ["90", "40"], ["30", "90"], ["-90", "90"]]']
+    elif extra == "notch":  # not convex: a box whose corners are inside may still cross the notch
+        lines += ["[[zones]]", 'name = "notched"', 'kind = "polygon"', 'plane = ["X", "Y"]',
+                  'vertices = [["-100", "-100"], ["100", "-100"], ["100", "100"], ["10", "100"], ["0", "20"],'
+                  ' ["-10", "100"], ["-100", "100"]]']
+    elif extra == "forbid polygon":
+        lines += ["[[zones]]", 'name = "wedge"', 'kind = "polygon"', "forbid = true", 'plane = ["Y", "X"]',
+                  'vertices = [["30", "-20"], ["60", "0"], ["30", "20"]]']
+    elif extra == "stepped y":
+        lines += ["[[zones]]", 'name = "table"', 'kind = "stepped"', 'reference_axis = "Y"',
+                  'limited_axis = "X"', 'from = "-100"',
+                  'regions = [{ upto = "-20", min = "-100", max = "100" }, { upto = "20", max = "50" },'
+                  ' { upto = "100", min = "-100", max = "100" }]']
     elif extra == "tip" and "Z" in axes:
         lines += ["[[zones]]", 'name = "vise"', 'kind = "box"', "forbid = true", 'point = "tip"',
                   'min = { X = "40", Y = "-10", Z = "-100" }', 'max = { X = "60", Y = "10", Z = "-20" }']
@@ -302,11 +316,12 @@ def programs(draw) -> str:
 
 
 # ---------------------------------------------------------------------------------------------- relations
-def _outcome(text: str, machine, with_pass: bool, **options) -> tuple:
+def _outcome(text: str, machine, with_pass: bool, decided: list | None = None, **options) -> tuple:
     """What ``verify_text`` says, with or without the double pass: the verdict and everything reported, or
     the input error (its type and message)."""
     saved = prover_doubles.double_pass_result
     calls = []
+    decided = [] if decided is None else decided
 
     def off(*args, **kwargs):
         calls.append(1)
@@ -317,11 +332,20 @@ def _outcome(text: str, machine, with_pass: bool, **options) -> tuple:
     try:
         r = verify_text(text, machine, **options)
         out = ("result", r.verdict, r.violations, r.reasons, r.notes)
+        if with_pass and any(k == "double_pass_boxes" for k, _ in r.stats):
+            decided.append(r)
     except NczonesError as exc:
         out = ("error", type(exc).__name__, str(exc))
     finally:
         prover_doubles.double_pass_result = saved
+    assert with_pass or calls or "#" not in text or out[0] == "error" or not _may_try(text), \
+        "switching the double pass off did not reach _verify"
     return out
+
+
+def _may_try(text: str) -> bool:
+    """Whether ``_verify`` tries the double pass on ``text`` (no block-delete line) with the options here."""
+    return not any(line.lstrip(" \t").startswith("/") for line in text.split("\n"))
 
 
 def check_relations(text: str, machine_toml: str, max_iterations: int, margin: str) -> str:
@@ -332,7 +356,8 @@ def check_relations(text: str, machine_toml: str, max_iterations: int, margin: s
         path = double_pass(text, machine, max_iterations=max_iterations)
     except Declined:
         path = None
-    with_pass = _outcome(text, machine, True, max_iterations=max_iterations, margin=margin)
+    decided: list = []
+    with_pass = _outcome(text, machine, True, decided, max_iterations=max_iterations, margin=margin)
     without = _outcome(text, machine, False, max_iterations=max_iterations, margin=margin)
     assert with_pass == without, f"relation 1: the verdicts differ\n{case}\nwith: {with_pass}\nwithout: {without}"
     if path is None:
@@ -353,6 +378,10 @@ def check_relations(text: str, machine_toml: str, max_iterations: int, margin: s
             for axis, v in zip(machine.axis_names, point):
                 assert lo[axis] <= v <= hi[axis], (f"relation 2: motion {k} {axis}={v} ({float(v)!r}) outside "
                                                    f"[{float(lo[axis])!r}, {float(hi[axis])!r}]\n{case}")
+    if decided:  # the pass's own safe: no exact point of the full path's motion may leave the allowed set
+        hit = first_violation(segments, machine, Fraction(margin))
+        assert hit is None, f"the double pass said safe, the brute force finds {hit}\n{case}"
+        return "safe by the pass"
     return "safe" if with_pass[0] == "result" and with_pass[1].name == "SAFE" else "path"
 
 
@@ -452,3 +481,25 @@ def check_oracle(text: str, machine_toml: str, positions: list, offsets: list) -
 @given(counted_programs())
 def test_counted_loops_move_where_the_oracle_computes(case):
     check_oracle(*case)
+
+
+@st.composite
+def rasters(draw) -> str:
+    """A raster of many straight moves in a loop (hundreds to thousands): the pass's boxes must split, down
+    to single motions along zone faces, notches and steps."""
+    n = draw(st.sampled_from((10, 100, 700, 1500)))
+    step = draw(st.sampled_from(("0.1", "0.13", "0.2", "0.25")))
+    start = draw(st.sampled_from(("-99", "-100", "-60", "-10")))
+    low, high = (draw(st.sampled_from(("-100", "-99.9", "-50", "0", "9.99", "19.9", "20", "60", "99.99", "100")))
+                 for _ in range(2))
+    z = draw(st.sampled_from(("", " Z-20", " Z[#1 * -0.01]", " Z-100.0000001")))
+    rapid = draw(st.sampled_from(("G1", "G0")))
+    wcs = draw(st.sampled_from(("G54", "G55", "G59")))
+    return (f"G21 G90 {wcs} F1000\n#1=0\no1 while [#1 LT {n}]\nG1 X[[#1 * {step}] + {start}] Y{low}{z}\n"
+            f"{rapid} Y{high}\n#1=[#1 + 1]\no1 endwhile\nM30\n")
+
+
+@settings(max_examples=examples("rasters"))
+@given(machine_files(), rasters(), st.sampled_from(("0", "0.05")))
+def test_rasters_split_like_the_full_path(machine_toml, text, margin):
+    event(check_relations(text, machine_toml, 100_000, margin))
