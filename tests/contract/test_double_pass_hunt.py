@@ -348,6 +348,15 @@ def _may_try(text: str) -> bool:
     return not any(line.lstrip(" \t").startswith("/") for line in text.split("\n"))
 
 
+#: Error codes of the full path behind findings the double pass still has (the regression tests below hold
+#: them); the generated programs that meet them are counted, not failed, so that the hunt goes on.
+KNOWN_FINDINGS: dict[str, str] = {"GC305": "findings 2 and 3 (G1 with no axis words and no feed; G94 resets F)"}
+
+
+def _known(outcome: tuple) -> bool:
+    return outcome[0] == "error" and any(f"error[{code}]" in outcome[2] for code in KNOWN_FINDINGS)
+
+
 def check_relations(text: str, machine_toml: str, max_iterations: int, margin: str) -> str:
     """Relations 1 and 2 for one program and machine; returns what the pass did (for statistics)."""
     machine = parse_machine(machine_toml)
@@ -359,6 +368,8 @@ def check_relations(text: str, machine_toml: str, max_iterations: int, margin: s
     decided: list = []
     with_pass = _outcome(text, machine, True, decided, max_iterations=max_iterations, margin=margin)
     without = _outcome(text, machine, False, max_iterations=max_iterations, margin=margin)
+    if with_pass != without and _known(without):
+        return "known finding"
     assert with_pass == without, f"relation 1: the verdicts differ\n{case}\nwith: {with_pass}\nwithout: {without}"
     if path is None:
         return "declined"
@@ -503,3 +514,46 @@ def rasters(draw) -> str:
 @given(machine_files(), rasters(), st.sampled_from(("0", "0.05")))
 def test_rasters_split_like_the_full_path(machine_toml, text, margin):
     event(check_relations(text, machine_toml, 100_000, margin))
+
+
+# ---------------------------------------------------------------------------------------------- findings
+_BOX_MACHINE = """[machine]
+axes = ["X", "Y", "Z"]
+[machine.rapid]
+X = "1000"
+Y = "1000"
+Z = "1000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-100", Y = "-100", Z = "-100" }
+max = { X = "100", Y = "100", Z = "100" }
+"""
+
+
+def _strict(text: str, machine_toml: str = _BOX_MACHINE) -> None:
+    """Relations 1 and 2 with no finding excused."""
+    saved = dict(KNOWN_FINDINGS)
+    KNOWN_FINDINGS.clear()
+    try:
+        check_relations(text, machine_toml, 1000, "0")
+    finally:
+        KNOWN_FINDINGS.update(saved)
+
+
+@pytest.mark.xfail(strict=True, reason="finding 2")
+def test_finding_2_g1_without_axis_words_needs_a_feed():
+    _strict("#1=1\nG1\nM30\n")
+
+
+@pytest.mark.xfail(strict=True, reason="finding 3")
+def test_finding_3_g94_resets_the_feed():
+    _strict("G21 G90 G54 F100\n#1=1\nG94\nG1 X1\nM30\n")
+
+
+def test_f_after_g94_on_one_line_is_the_feed():
+    _strict("G21 G90 G54\n#1=1\nG94 F10 G1 X1\nM30\n")
