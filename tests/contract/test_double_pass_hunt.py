@@ -126,14 +126,14 @@ _LITERALS = ("0", "1", "2", "-2.5", ".5", "-.5", "3.", "10", "100", "99.999", "0
              "0.0000000000000001", "1" + "0" * 20, "9" * 320, "+4", "--1", "33.333333333333333333", "25.4")
 _NUMBERED = ("1", "2", "3", "7", "31", "100", "5300", "5220", "5221", "5420", "5400", "5601", "5602", "0",
              "1.00001", "2.0", "[1+1]", "[#3]", "1.5", "02")
-_NAMED = ("a", "b", "Ab", "a b", "_g", "_x")
+_NAMED = ("a", "b", "Ab", "p1", "p2", "a b", "_g", "_x", "p3")
 _FUNCTIONS = ("ABS", "SQRT", "SIN", "COS", "TAN", "FIX", "FUP", "ROUND", "EXP", "LN", "ACOS", "ASIN")
 _BINARY = ("+", "-", "*", "/", "MOD", "**", "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR")
 
 
 def _parameter(draw, clean: bool = False) -> str:
     if draw(st.integers(0, 3)) == 0:
-        return f"#<{draw(st.sampled_from(_NAMED[:3] if clean else _NAMED))}>"
+        return f"#<{draw(st.sampled_from(_NAMED[:5] if clean else _NAMED))}>"
     common = draw(st.integers(0, 3 if clean else 2))
     if common:
         return f"#{common}"
@@ -300,13 +300,14 @@ def programs(draw) -> str:
     clean = draw(st.integers(0, 2)) > 0
     lines = ["#1=1"] if draw(st.booleans()) else []
     if clean and draw(st.integers(0, 3)):
-        lines.append("#<a>=0.5 #<b>=-2 #<ab>=3")
+        lines.append("#<a>=0.5 #<b>=-2 #<ab>=3 #<p1>=7 #<p2>=-60")
     lines.insert(draw(st.integers(0, len(lines))), draw(st.sampled_from(_HEADERS[:8] if clean else _HEADERS)))
     if not clean and draw(st.integers(0, 3)) == 0:
         lines.insert(0, "%" if draw(st.booleans()) else "(a program)")
     lines += draw(bodies(_Labels(clean), 2, min_size=1))
-    ends = ("M30", "M2", "", "m30", "M30\nG1 X500", "M30\n$%$", "%", "M30\n%")
-    end = draw(st.sampled_from(ends[:6] if clean else ends))
+    ends = ("M30", "M2", "", "m30", "M30\nG1 X500", "M30\n$%$", "M30\nG7", "M30\nG07.1 Y1\no9 sub", "%",
+            "M30\n%", "M30 G1", "M2 M30")
+    end = draw(st.sampled_from(ends[:8] if clean else ends))
     if end:
         lines.append(end)
     if not any("#" in line for line in lines):
