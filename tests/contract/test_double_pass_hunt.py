@@ -36,6 +36,7 @@ from nczones.gcode import interpret_text
 from nczones.gcode.doubles import Declined, double_pass
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+
 from oracles.bruteforce import first_violation
 
 CI_EXAMPLES = {"relations": 40, "oracle": 15, "rasters": 4}

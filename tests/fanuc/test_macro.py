@@ -222,3 +222,37 @@ def test_literal_and_computed_words_agree(n, places):
     got, _, _ = blocks(f"#1 = {text}\nG0 X{text} Y#1 Z[#1]\n")
     x, y, z = (w[1] for w in got[0][1:])
     assert x == y == z
+
+
+# ---------------------------------------------------------------- numbers beyond the double range
+
+_HUGE = "9" * 400
+
+
+@pytest.mark.parametrize("text", [f"#1 = {_HUGE}\n", f"#{_HUGE} = 1\n", f"#1 = [{_HUGE} + 1]\n", f"G0 X[{_HUGE}]\n"])
+def test_a_literal_beyond_the_double_range_in_an_expression_is_an_input_error(text):
+    # float() of such a literal raised OverflowError (a traceback) before
+    with pytest.raises(GcodeError, match="GC104.*number too large"):
+        blocks(text)
+
+
+def test_a_word_or_argument_beyond_the_double_range_keeps_its_exact_value():
+    from nczones.gcode import interpret_text
+
+    from .helpers import mill
+
+    m = mill()
+    (seg,) = list(interpret_text(f"G90 G54 G0 X{_HUGE}.0001\nM30\n", m, dialect="fanuc").segments())
+    assert seg.end[0] == Fraction(int(_HUGE)) + 100  # rounded to the increment, plus G54 X
+    with pytest.raises(GcodeError, match="GC312"):  # the argument's double is infinite: arithmetic fails
+        list(interpret_text(f"G65 P9000 A{_HUGE}\nM30\nO9000\n#2 = #1 + 1\nM99\n", m, dialect="fanuc").segments())
+
+
+def test_the_linuxcnc_hint_does_not_crash_on_a_huge_literal():
+    # a LinuxCNC syntax error's hint parses the line as Fanuc text, which overflowed
+    from nczones.gcode import interpret_text
+    from nczones.machine import parse_machine
+
+    m = parse_machine('[machine]\naxes=["X"]\n[machine.rapid]\nX="1000"\n[machine.reference]\nX="0"\n')
+    with pytest.raises(GcodeError, match="GC105"):
+        list(interpret_text(f"#1=ATAN[{_HUGE}]/[1e3]\nM30\n", m).segments())

@@ -165,6 +165,18 @@ def variable_index(value: tuple) -> int:
     return -n if d < 0 else n
 
 
+def double_of(q: Fraction) -> float:
+    """The double nearest ``q``, infinite beyond the double range (``float(q)`` raises there).
+
+    >>> double_of(Fraction(1, 10)), double_of(Fraction(-10**400))
+    (0.1, -inf)
+    """
+    try:
+        return q.numerator / q.denominator
+    except OverflowError:
+        return math.inf if q > 0 else -math.inf
+
+
 def round_to(value: tuple, step: Fraction) -> Fraction:
     """The exact value rounded to a multiple of ``step``, halves away from zero.
 

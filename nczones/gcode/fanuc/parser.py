@@ -167,7 +167,15 @@ class _Parser:
             raise _Fail("GC104", f"expected a number, found {self.shown(i)}", i, i + 1)
         text = m.group()
         q = decimal_value(text)
-        return (NUM, float(q), q), m.end()
+        return (NUM, self.double(q, i, m.end()), q), m.end()
+
+    def double(self, q: Fraction, start: int, end: int) -> float:
+        """The double of a literal; one beyond the double range is an error, not a crash."""
+        try:
+            return q.numerator / q.denominator
+        except OverflowError:
+            raise _Fail("GC104", f"number too large: {self.s[start:start + 12]}... ({end - start} characters) is "
+                        "beyond the range of the control's values", start, end) from None
 
     def open(self, i: int) -> None:
         self.depth += 1
@@ -198,7 +206,7 @@ class _Parser:
             raise _Fail("GC107", f"expected a variable number or '[expression]' after '#', found {self.shown(j)}",
                         i, j + 1)
         q = int(m.group())
-        return (VAR, (NUM, float(q), Fraction(q))), m.end()
+        return (VAR, (NUM, self.double(Fraction(q), j, m.end()), Fraction(q))), m.end()
 
     def primary(self, i: int, connectives: bool) -> tuple[Tree, int]:
         s = self.s
@@ -312,7 +320,7 @@ class _Parser:
         if m is None:
             raise _Fail("GC104", f"expected a sequence number, found {self.shown(i)}", i, i + 1)
         q = int(m.group())
-        return (NUM, float(q), Fraction(q)), m.end()
+        return (NUM, self.double(Fraction(q), i, m.end()), Fraction(q)), m.end()
 
     def loop_id(self, i: int, kw: str) -> tuple[int, int]:
         m = _INT.match(self.s, i)

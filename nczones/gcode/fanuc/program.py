@@ -58,6 +58,7 @@ from .expr import (
     FanucVariables,
     SystemVariableUnknown,
     compile_tree,
+    double_of,
     round_to,
     variable_index,
 )
@@ -574,7 +575,7 @@ class FanucRunner:
             self.rounded_count += 1
             if len(self.rounded) < 20:
                 self.rounded.append((lineno, text))
-            return round_to((float(q), q), inc)
+            return round_to((double_of(q), q), inc)
         return q
 
     def address_value(self, letter: str, value: tuple, cycle: bool) -> Fraction:
@@ -976,7 +977,7 @@ class FanucRunner:
                     raise self.error("GC204", f"{text}: {letter} cannot be a macro argument (G, L, N, O, P are not "
                                      "arguments)", lineno, line, col, end)
                 n = spec_one
-            args[n] = (float(q), q)
+            args[n] = (double_of(q), q)
         return args
 
     def push(self, frame: _Frame, lineno: int, line: str) -> None:
