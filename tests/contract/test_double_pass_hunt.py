@@ -385,6 +385,9 @@ def check_relations(text: str, machine_toml: str, max_iterations: int, margin: s
     assert run.notes() == [], f"relation 2: {run.notes()}\n{case}"
     assert len(segments) == path.motions, f"relation 2: {len(segments)} segments, {path.motions} rows\n{case}"
     assert run.counts["blocks"] == path.blocks, f"relation 2: {run.counts['blocks']} blocks, {path.blocks}\n{case}"
+    slow = list(interpret_text(text, machine, max_loop_iterations=max_iterations, fast=False).segments())
+    assert [(s.start, s.end) for s in slow] == [(s.start, s.end) for s in segments], \
+        f"the full path's vectorized lines and its general path move differently\n{case}"
     for k, seg in enumerate(segments, 1):
         lo, hi = path.enclosure(k, k)
         for point in (seg.start, seg.end):
@@ -559,3 +562,16 @@ def test_finding_3_g94_resets_the_feed():
 
 def test_f_after_g94_on_one_line_is_the_feed():
     _strict("G21 G90 G54\n#1=1\nG94 F10 G1 X1\nM30\n")
+
+
+_OUTSIDE = "G21 G90 G54 F100\n#1=1\nG1 X100.3\nM30\n"  # leaves the travel by 0.3 mm
+_INSIDE = "G21 G90 G54 F100\n#1=1\nG1 X10\nM30\n"
+
+
+@pytest.mark.xfail(strict=True, reason="finding 6")
+@pytest.mark.parametrize("text, options", [(_OUTSIDE, {"margin": "-0.5"}), (_INSIDE, {"max_iterations": 0}),
+                                           (_INSIDE, {"max_iterations": 1.5}), (_INSIDE, {"arc_tolerance": "-1"})],
+                         ids=["negative margin", "max_iterations 0", "max_iterations 1.5", "negative arc_tolerance"])
+def test_finding_6_options_are_checked_before_the_double_pass(text, options):
+    machine = parse_machine(_BOX_MACHINE)
+    assert _outcome(text, machine, True, **options) == _outcome(text, machine, False, **options)
