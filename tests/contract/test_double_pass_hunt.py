@@ -544,7 +544,42 @@ def rs274_cases(draw) -> tuple[str, dict]:
     offsets = {}
     for name in draw(st.lists(st.sampled_from(("G54", "G55", "G56", "G59")), max_size=3, unique=True)):
         offsets[name] = {a: Fraction(draw(st.sampled_from(_INCH_OFFSETS))) for a in "XYZ"}
-    return draw(programs()), offsets
+    return draw(st.one_of(programs(), expression_programs())), offsets
+
+
+_RS274_LITERALS = ("0", "1", "2", "-2.5", ".5", "-.5", "3.", "10", "0.1", "0.3", "45", "-7", "1.5", "360", "90")
+
+
+@st.composite
+def expression_programs(draw) -> str:
+    """Straight moves to expression values: every operator, function, sign and comparison of the language,
+    so that LinuxCNC's own arithmetic judges the pass's (and the full path's) doubles."""
+    def expr(depth: int) -> str:
+        kind = draw(st.integers(0, 8 if depth else 1))
+        if kind == 0:
+            return draw(st.sampled_from(_RS274_LITERALS))
+        if kind == 1:
+            return draw(st.sampled_from(("#1", "#2", "#<a>", "#3", "#1.00001", "#02")))
+        if kind <= 4:
+            return f"[{expr(depth - 1)} {draw(st.sampled_from(_BINARY))} {expr(depth - 1)}]"
+        if kind == 5:
+            return f"{draw(st.sampled_from(_FUNCTIONS))}[{expr(depth - 1)}]"
+        if kind == 6:
+            return f"ATAN[{expr(depth - 1)}]/[{expr(depth - 1)}]"
+        if kind == 7:
+            return f"-{expr(depth - 1)}"
+        return f"[{expr(depth - 1)}]"
+
+    lines = ["G21 G90 G54 F100", f"#<a>={draw(st.sampled_from(_RS274_LITERALS))}", f"#1={expr(1)} #2={expr(1)}",
+             f"#<a>={expr(2)}"]
+    for _ in range(draw(st.integers(1, 4))):
+        words = " ".join(f"{a}{expr(3)}" for a in draw(st.lists(st.sampled_from("XYZ"), min_size=1, max_size=3,
+                                                                   unique=True)))
+        lines.append(f"{draw(st.sampled_from(('G1', 'G0', '')))} {words}".strip())
+        if draw(st.booleans()):
+            lines.append(f"#3={expr(2)}")
+    lines.append("M30")
+    return "\n".join(lines) + "\n"
 
 
 def check_rs274(text: str, offsets_inch: dict, workdir) -> str:
