@@ -528,6 +528,30 @@ def test_rasters_split_like_the_full_path(machine_toml, text, margin):
     event(check_relations(text, machine_toml, 100_000, margin))
 
 
+_NOTCHED_ZONE = """[[zones]]
+name = "notched"
+kind = "polygon"
+plane = ["X", "Y"]
+vertices = [["-100", "-100"], ["100", "-100"], ["100", "100"], ["10", "100"], ["0", "20"], ["-10", "100"],
+            ["-100", "100"]]
+"""
+
+
+@pytest.mark.parametrize("near", ["19.9", "20.0001"])
+def test_seventy_thousand_motions_split_from_boxes_of_4096(near):
+    """More than 16 x 4096 motions: the pass's first split makes boxes of 4096 motions
+    (``prover.doubles.FIRST_BOX``); a raster that dips into a notch near x = 0 only, or stays just out of it."""
+    machine = parse_machine(_BOX_MACHINE + _NOTCHED_ZONE)
+    text = (f"G21 G90 G54 F1000\n#1=0\no1 while [#1 LT 35000]\n#2=[[#1 * 0.005] - 90]\n#3=29.9\n"
+            f"o2 if [ABS[#2] LT 12]\n#3={near}\no2 endif\nG1 X#2 Y-50\nG0 Y#3\n#1=[#1 + 1]\no1 endwhile\nM30\n")
+    decided: list = []
+    with_pass = _outcome(text, machine, True, decided, max_iterations=100_000)
+    assert with_pass == _outcome(text, machine, False, max_iterations=100_000)
+    assert with_pass[1].name == ("SAFE" if near == "19.9" else "UNSAFE")
+    if near == "19.9":  # the pass proved it, in boxes split down to the motions near the notch
+        assert dict(decided[0].stats)["double_pass_boxes"] > 16
+
+
 # ---------------------------------------------------------------------------------------------- LinuxCNC itself
 RS274 = os.environ.get("RS274", "/usr/bin/rs274")
 _INCH_OFFSETS = ("0", "0.5", "-0.25", "1.125", "-3.9375")
