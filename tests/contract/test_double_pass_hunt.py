@@ -72,11 +72,17 @@ def machine_files(draw) -> str:
     linear = [a for a in axes if a in "XYZ"]
     lines = ["[machine]", f"axes = {list(axes)!r}".replace("'", '"'),
              f'rapid_mode = "{draw(st.sampled_from(("linear", "dogleg")))}"']
-    modal = draw(st.lists(st.sampled_from(("G55", "G59", "G59.1", "G20", "G91", "G54", "G17", "G94")),
+    for key, values in (("cutter_compensation", ('"linuxcnc"', '"none"')), ("block_delete", ('"off"', '"on"')),
+                        ("pulse", ('"0.01"', '"0.0001"')), ("max_feed", ('"50"', '"100000"')),
+                        ("monitor_period_ms", ('"1"', '"100"'))):
+        if draw(st.integers(0, 4)) == 0:
+            lines.append(f"{key} = {draw(st.sampled_from(values))}")
+    modal = draw(st.lists(st.sampled_from(("G55", "G59", "G59.1", "G20", "G91", "G54", "G17", "G94", "G18", "G40",
+                                           "G49", "G80", "G99", "G98")),
                           max_size=2, unique=True))
     groups = {}
     for code in modal:
-        group = "wcs" if code.startswith("G5") else code
+        group = {"G5": "wcs", "G1": "plane", "G9": "retract" if code in ("G98", "G99") else code}.get(code[:2], code)
         groups.setdefault(group, code)
     if groups and draw(st.integers(0, 3)) == 0:
         lines.append(f"modal = {list(groups.values())!r}".replace("'", '"'))
