@@ -373,17 +373,32 @@ def _known(outcome: tuple) -> bool:
     return outcome[0] == "error" and any(f"error[{code}]" in outcome[2] for code in KNOWN_FINDINGS)
 
 
-def check_relations(text: str, machine_toml: str, max_iterations: int, margin: str) -> str:
+class _CountingBar:
+    """A progress callback like the CLI's bar (it also takes the motions and blocks so far)."""
+
+    counts = True
+
+    def __call__(self, line, total, motions=0, blocks=0):
+        assert total is None or 0 <= line <= total
+
+
+def _plain_bar(line, total):
+    assert total is None or 0 <= line <= total
+
+
+def check_relations(text: str, machine_toml: str, max_iterations: int, margin: str, progress=None) -> str:
     """Relations 1 and 2 for one program and machine; returns what the pass did (for statistics)."""
     machine = parse_machine(machine_toml)
-    case = f"program:\n{text!r}\nmachine:\n{machine_toml}\nmax_iterations={max_iterations} margin={margin}"
+    case = (f"program:\n{text!r}\nmachine:\n{machine_toml}\nmax_iterations={max_iterations} margin={margin} "
+            f"progress={progress}")
     try:
         path = double_pass(text, machine, max_iterations=max_iterations)
     except Declined:
         path = None
     decided: list = []
-    with_pass = _outcome(text, machine, True, decided, max_iterations=max_iterations, margin=margin)
-    without = _outcome(text, machine, False, max_iterations=max_iterations, margin=margin)
+    with_pass = _outcome(text, machine, True, decided, max_iterations=max_iterations, margin=margin,
+                         progress=progress)
+    without = _outcome(text, machine, False, max_iterations=max_iterations, margin=margin, progress=progress)
     if with_pass != without and _known(without):
         return "known finding"
     assert with_pass == without, f"relation 1: the verdicts differ\n{case}\nwith: {with_pass}\nwithout: {without}"
@@ -416,9 +431,10 @@ def check_relations(text: str, machine_toml: str, max_iterations: int, margin: s
 
 
 @settings(max_examples=examples("relations"))
-@given(machine_files(), programs(), st.sampled_from((1, 2, 3, 4, 5, 1000)), st.sampled_from(("0", "0", "0.5")))
-def test_the_double_pass_agrees_with_the_full_path(machine_toml, text, max_iterations, margin):
-    event(check_relations(text, machine_toml, max_iterations, margin))
+@given(machine_files(), programs(), st.sampled_from((1, 2, 3, 4, 5, 1000)), st.sampled_from(("0", "0", "0.5")),
+       st.sampled_from((None, None, _plain_bar, _CountingBar())))
+def test_the_double_pass_agrees_with_the_full_path(machine_toml, text, max_iterations, margin, progress):
+    event(check_relations(text, machine_toml, max_iterations, margin, progress))
 
 
 # ---------------------------------------------------------------------------------------------- the oracle
@@ -704,6 +720,13 @@ def test_finding_2_g1_without_axis_words_needs_a_feed():
 def test_finding_3_g94_resets_the_feed():
     # the pass kept the last F after G94 (LinuxCNC's convert_feed_mode sets it to 0)
     _strict("G21 G90 G54 F100\n#1=1\nG94\nG1 X1\nM30\n")
+
+
+def test_finding_1_an_if_with_an_else_is_followed():
+    # every if ... else ... endif declined: the nesting check refused the endif after an else
+    text = "G1 G21 G90 G54 F100\n#1=1\no2 if [#1 EQ 2]\nG1 X1\no2 else\nG1 X2\no2 endif\nM2\n"
+    assert list(double_pass(text, parse_machine(_BOX_MACHINE), max_iterations=10).columns[0]) == [0.0, 2.0]
+    _strict(text)
 
 
 def test_f_after_g94_on_one_line_is_the_feed():
