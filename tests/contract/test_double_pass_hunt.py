@@ -776,7 +776,7 @@ def test_finding_8_a_branch_on_sin_30_goes_where_linuxcnc_goes():
     _strict("G1 G21 G90 G54 F100\n#1=SIN[30]\no1 if [#1 LT 0.5]\nG1 X1\no1 else\nG1 X500\no1 endif\nM30\n")
 
 
-@pytest.mark.xfail(strict=True, reason="finding 8: the pass's own ATAN divides by the double pi")
 def test_finding_8_the_pass_computes_atan_as_linuxcnc_does():
+    # the pass's own ATAN divided by the double pi after the full path's was fixed
     _strict("G1 G21 G90 G54 F100\n#1=ATAN[2]/[0.7]\no1 if [#1 GT 70.70995378081126]\nG1 X1\no1 else\nG1 X2\n"
             "o1 endif\nM30\n")
