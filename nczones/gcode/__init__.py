@@ -45,20 +45,37 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable, Iterator
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import GcodeError, InvalidArgument, program_lines
 from ..machine import Machine
 from ..motion import MotionChunk, Segment
-from .interpreter import (
-    DEFAULT_ARC_TOLERANCE,
-    DEFAULT_CHUNK_SIZE,
-    MODAL_GROUP_NAMES,
-    Interpreter,
-    Unsupported,
-)
+from . import segments as _segments_module  # noqa: F401  # loaded first: the function segments() below keeps the name
 from .program import DEFAULT_MAX_LOOP_ITERATIONS
 from .source import ProgramLike, ProgramSource, as_source, load_program, program_text
+
+if TYPE_CHECKING:
+    from .interpreter import MODAL_GROUP_NAMES, Interpreter, Unsupported  # noqa: F401
+
+#: An arc whose end point lies farther than this (mm) from the circle through
+#: its start point around its centre is an error (GC301).
+DEFAULT_ARC_TOLERANCE = Fraction(2, 1000)
+#: Segments per object chunk.  Small on purpose: segments handed on young die young, so the
+#: garbage collector's older generations (whose passes visit every segment still held) stay
+#: small; measured on 100,000 plain lines: 4096 -> ~100k lines/s, 256 -> 111k, 128 -> 119k,
+#: the same as with the collector off.
+DEFAULT_CHUNK_SIZE = 128
+
+
+def __getattr__(name: str) -> Any:
+    """``Interpreter``, ``Unsupported`` and ``MODAL_GROUP_NAMES`` (:mod:`nczones.gcode.interpreter`), loaded
+    when first used: a program the double pass proves needs none of them."""
+    if name in ("Interpreter", "Unsupported", "MODAL_GROUP_NAMES"):
+        from . import interpreter
+
+        return getattr(interpreter, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 __all__ = [
     "interpret",
@@ -129,6 +146,8 @@ class Interpretation:
 
             cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
             lathe = bool(machine.diameter_axes) or uses_lathe(text)  # G7/G8, G70-G72: no fast path either
+            from .interpreter import Interpreter
+
             cls = CylindricalInterpreter if cylindrical else LatheInterpreter if lathe else Interpreter
             if cylindrical and lathe:
                 cls = _cylindrical_lathe()
@@ -221,6 +240,8 @@ class Interpretation:
     def assumed_modal_text(self) -> list[str]:
         """Human-readable lines for the report."""
         named = set(self.interpreter.machine.modal)
+        from .interpreter import MODAL_GROUP_NAMES
+
         return [f"{MODAL_GROUP_NAMES[g]}: assumed {c} "
                 + ("from the machine file" if g != "retract" or named & {"G98", "G99"} else
                    f"(the {self.interpreter.dialect} control's start-up mode; name G98 or G99 in [machine] modal "
@@ -278,6 +299,8 @@ def unknown_at_unsupported(interpreter: Interpreter, blocks: Iterable[Any]) -> I
         yield from blocks
     except UnsupportedGcode as exc:
         d = exc.diagnostic
+        from .interpreter import Unsupported
+
         interpreter.unsupported.append(Unsupported(d.code, d.message, d.span))
 
 

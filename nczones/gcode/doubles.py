@@ -98,27 +98,39 @@ class DoublePath:
     rapids: int
     #: blocks executed (lines with a word), as the full interpreter counts them
     blocks: int
+    #: the exact start position: an axis sits there, exactly, until a motion first moves it
+    start: tuple[Fraction, ...]
+    #: per axis, the first row a motion moved it to (0: no motion moves it)
+    first_row: tuple[int, ...]
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
-        inclusive) on the full path: the box of rows ``first - 1``..``last`` widened by the bound of the
-        module's docstring.
+        inclusive) on the full path: the box of rows ``first - 1``..``last``, the rows a motion computed
+        widened by the bound of the module's docstring, the rows at the start exact.
 
-        >>> p = DoublePath(("X",), (array("d", [0.0, 0.1, 0.3]),), (Fraction(0),), 2, 2, 0, 2)
+        >>> p = DoublePath(("X",), (array("d", [0.0, 0.1, 0.3]),), (Fraction(0),), 2, 2, 0, 2, (Fraction(0),), (1,))
         >>> lo, hi = p.enclosure(1, 2)
-        >>> lo["X"] < 0 < Fraction(3, 10) < hi["X"], float(hi["X"] - Fraction(3, 10)) < 1e-15
+        >>> lo["X"] == 0 < Fraction(3, 10) < hi["X"], float(hi["X"] - Fraction(3, 10)) < 1e-15
         (True, True)
+        >>> lo, hi = p.enclosure(2, 2)  # rows 1 and 2: 0.1 and 0.3 as the doubles of words, widened
+        >>> lo["X"] < Fraction(1, 10) and Fraction(3, 10) < hi["X"]
+        True
         """
         lo: dict[str, Fraction] = {}
         hi: dict[str, Fraction] = {}
         for a, col in enumerate(self.columns):
-            part = col[first - 1:last + 1] if first > 1 or last + 1 < len(col) else col
-            a_lo, a_hi = min(part), max(part)
-            top = max(abs(a_lo), abs(a_hi))
-            widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
-            # outwards to multiples of 2**-60 mm (small denominators for the exact test)
-            lo[self.axes[a]] = Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID)
-            hi[self.axes[a]] = Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID)
+            f = self.first_row[a]
+            bounds = [self.start[a]] if f == 0 or first - 1 < f else []  # rows at the start: exact
+            if f and f <= last:  # rows a motion computed: widened
+                begin = max(first - 1, f)
+                part = col[begin:last + 1] if begin > 0 or last + 1 < len(col) else col
+                a_lo, a_hi = min(part), max(part)
+                top = max(abs(a_lo), abs(a_hi))
+                widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
+                # outwards to multiples of 2**-60 mm (small denominators for the exact test)
+                bounds.append(Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID))
+                bounds.append(Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID))
+            lo[self.axes[a]], hi[self.axes[a]] = min(bounds), max(bounds)
         return lo, hi
 
 
@@ -182,6 +194,9 @@ class _Pass:
         self.unset = set(_NOTED)
         self.motion: int | None = None
         self.feed = 0.0
+        self.start = tuple(machine.start)
+        self.first_row = [0] * len(self.axes)  # the first row a motion moved each axis to (0: none yet)
+        self.pending = [True]  # some axis has not been moved yet
         self.pos = [float(v) for v in machine.start]
         self.columns: tuple[array, ...] = tuple(array("d", [v]) for v in self.pos)
         self.rapids = self.blocks = 0
@@ -282,7 +297,7 @@ class _Pass:
             raise Declined("a position beyond the double range")
         motions = len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
-                          self.blocks)
+                          self.blocks, self.start, tuple(self.first_row))
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -464,6 +479,14 @@ class _Pass:
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
+    def moved(self, axes: tuple[int, ...]) -> None:
+        """The motion about to be added moves ``axes``: the first such row of each."""
+        row = len(self.columns[0])
+        for i in axes:
+            if not self.first_row[i]:
+                self.first_row[i] = row
+        self.pending[0] = not all(self.first_row)
+
     def _end(self, values: tuple) -> bool:
         """M2 or M30: the program ends."""
         self.blocks += 1
@@ -525,13 +548,14 @@ class _Pass:
                      "if mode == 1 and not st.feed > 0.0: raise D('G1 without a positive feed')",
                      "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
                      "off = st.off"]
+            body.append(f"if PENDING[0]: st.moved({tuple(i for _k, i in axes)!r})")
             body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
             body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
             body.append(f"if len(C0) > {MAX_MOTIONS}: raise D('more than {MAX_MOTIONS} motions')")
             body.append("if not mode: st.rapids += 1")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "OFFSETS": self.offsets}
+                                 "OFFSETS": self.offsets, "PENDING": self.pending}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]

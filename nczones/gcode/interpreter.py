@@ -42,6 +42,10 @@ from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
 from ..machine import DEFAULT_RETRACT, Machine
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
+from . import (  # defined in the package, which loads this module lazily
+    DEFAULT_ARC_TOLERANCE,
+    DEFAULT_CHUNK_SIZE,
+)
 from .blocks import LANE_FULL, Block, Word
 from .expr import EvalError
 from .lexer import PlainBlock, fraction_raw, to_fraction
@@ -62,14 +66,6 @@ __all__ = [
     "MODAL_GROUP_NAMES",
 ]
 
-#: An arc whose end point lies farther than this (mm) from the circle through
-#: its start point around its centre is an error (GC301).
-DEFAULT_ARC_TOLERANCE = Fraction(2, 1000)
-#: Segments per object chunk.  Small on purpose: segments handed on young die young, so the
-#: garbage collector's older generations (whose passes visit every segment still held) stay
-#: small; measured on 100,000 plain lines: 4096 -> ~100k lines/s, 256 -> 111k, 128 -> 119k,
-#: the same as with the collector off.
-DEFAULT_CHUNK_SIZE = 128
 #: LinuxCNC's RADIUS_TOLERANCE_MM (0.00005 in): how far an R arc may fall short (arc_tolerance="linuxcnc").
 LINUXCNC_RADIUS_TOLERANCE = Fraction(5, 100000) * Fraction(254, 10)
 

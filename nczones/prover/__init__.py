@@ -48,7 +48,6 @@ from ..exact import format_decimal, parse_decimal
 from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
 from ..machine import Machine
-from .core import Prover, verify_segments
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .profile import RunProfile
 from .result import ParamRange, Reason, Result, Verdict, Violation
@@ -222,6 +221,16 @@ def verify_text(text: str, machine: Machine, *, file: str = "<program>", **optio
     Empty text (or whitespace only) raises :class:`~nczones.errors.GcodeError` ``GC109``.
     """
     return _verify(program_text(text, file).require_code(), machine, **options)
+
+
+def __getattr__(name: str) -> Any:
+    """``Prover`` and ``verify_segments`` (:mod:`nczones.prover.core`), loaded when first used: a program the
+    double pass proves needs neither."""
+    if name in ("Prover", "verify_segments"):
+        from . import core
+
+        return getattr(core, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _verify(
@@ -534,6 +543,8 @@ def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange,
                     if progress is not None and s.span is not None:
                         report(s.span.line)
                         last_reported[:] = [s.span.line]
+
+    from .core import verify_segments
 
     result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file, limits=limits, profile=profile)

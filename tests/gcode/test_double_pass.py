@@ -60,6 +60,8 @@ def check_against_full(text: str, machine, max_iterations: int = 1000) -> Double
     for k, seg in enumerate(segments, start=1):
         lo, hi = path.enclosure(k, k)
         for i, a in enumerate(axes):
+            if path.first_row[i] == 0 or path.first_row[i] > k:  # an axis no motion moved yet is at the start
+                assert lo[a] == hi[a] == machine.start[i]
             for v in (seg.start[i], seg.end[i]):
                 assert lo[a] <= v <= hi[a], (k, a, v, lo[a], hi[a])
     return path

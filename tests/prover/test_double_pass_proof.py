@@ -180,7 +180,7 @@ def test_the_enclosure_holds_every_exact_value_the_double_stands_for(d, offset):
 
     off = Fraction(offset)
     m = d + float(off)
-    path = DoublePath(("X",), (array("d", [m, m]),), (abs(off),), 1, 1, 0, 1)
+    path = DoublePath(("X",), (array("d", [m, m]),), (abs(off),), 1, 1, 0, 1, (Fraction(m),), (1,))
     lo, hi = path.enclosure(1, 1)
     half = Fraction(math.ulp(d)) / 2
     for word in (Fraction(d) - half, Fraction(d), Fraction(d) + half):
@@ -242,3 +242,12 @@ def test_the_stats_name_the_double_pass():
     assert first.startswith("loop.ngc: stats: 200 motions in 202 blocks, ")
     assert first.endswith("0 motions proved by the vectorized screen, 200 by the double pass in 1 box "
                           "(its time is the interpretation's)")
+
+
+def test_an_axis_the_program_never_moves_stays_exactly_at_its_start(monkeypatch):
+    # the start is on the travel's top face (Z = 50): a widened Z would leave it, the exact start does not
+    machine = parse_machine(HEAD.replace('[offsets]', '[machine.start]\nX = "0"\nY = "0"\nZ = "50"\n[offsets]')
+                            + ZONES["box"].format(a=50, b=0))
+    with_pass, without = both_ways(LOOP, machine, monkeypatch)
+    same_outcome(with_pass, without)
+    assert with_pass.verdict is Verdict.SAFE and "double_pass_boxes" in dict(with_pass.stats)
