@@ -196,7 +196,6 @@ class _Pass:
         self.feed = 0.0
         self.start = tuple(machine.start)
         self.first_row = [0] * len(self.axes)  # the first row a motion moved each axis to (0: none yet)
-        self.pending = [True]  # some axis has not been moved yet
         self.pos = [float(v) for v in machine.start]
         self.columns: tuple[array, ...] = tuple(array("d", [v]) for v in self.pos)
         self.rapids = self.blocks = 0
@@ -485,7 +484,6 @@ class _Pass:
         for i in axes:
             if not self.first_row[i]:
                 self.first_row[i] = row
-        self.pending[0] = not all(self.first_row)
 
     def _end(self, values: tuple) -> bool:
         """M2 or M30: the program ends."""
@@ -548,14 +546,14 @@ class _Pass:
                      "if mode == 1 and not st.feed > 0.0: raise D('G1 without a positive feed')",
                      "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
                      "off = st.off"]
-            body.append(f"if PENDING[0]: st.moved({tuple(i for _k, i in axes)!r})")
+            body.append(f"if {' or '.join(f'not FR[{i}]' for _k, i in axes)}: st.moved({tuple(i for _k, i in axes)!r})")
             body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
             body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
             body.append(f"if len(C0) > {MAX_MOTIONS}: raise D('more than {MAX_MOTIONS} motions')")
             body.append("if not mode: st.rapids += 1")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "OFFSETS": self.offsets, "PENDING": self.pending}
+                                 "OFFSETS": self.offsets, "FR": self.first_row}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
