@@ -8,10 +8,10 @@ codes exist there without two of one modal group), the message names it,
 other dialect models (:func:`unknown_hint`).
 
 >>> from nczones.errors import Diagnostic, GcodeError, SourceSpan
->>> e = GcodeError(Diagnostic("GC201", "G0 and G80 are in the same modal group",
-...                SourceSpan("p.nc", 1, 1, 3, "G00 G17 G40 G49 G80 G90")))
+>>> e = GcodeError(Diagnostic("GC201", "G0 and G1 are in the same modal group",
+...                SourceSpan("p.nc", 1, 1, 3, "G00 G17 G01 X5")))
 >>> print(with_hints(e, "linuxcnc").diagnostics[0].message)
-G0 and G80 are in the same modal group; valid in the fanuc dialect: set dialect = "fanuc" in [machine] (or pass --dialect fanuc)
+G0 and G1 are in the same modal group; valid in the fanuc dialect: set dialect = "fanuc" in [machine] (or pass --dialect fanuc)
 """
 
 from __future__ import annotations
@@ -40,6 +40,8 @@ def accepts(line: str, dialect: str) -> bool:
     dialect, and no two of them are in one modal group (what one line decides).
 
     >>> accepts("G00 G17 G40 G49 G80 G90", "fanuc"), accepts("G00 G17 G40 G49 G80 G90", "linuxcnc")
+    (True, True)
+    >>> accepts("G00 G01 X1", "fanuc"), accepts("G00 G01 X1", "linuxcnc")
     (True, False)
     >>> accepts("o100 while [#1 lt 3]", "linuxcnc"), accepts("WHILE [#1 LT 3] DO1", "linuxcnc")
     (True, False)
@@ -68,6 +70,7 @@ def accepts(line: str, dialect: str) -> bool:
     except _E:
         return False
     seen: set = set()
+    motion: set = set()
     for q in codes:
         k = gkey(q)
         if k is None:
@@ -77,9 +80,12 @@ def accepts(line: str, dialect: str) -> bool:
             if k in unknown:
                 continue
             return False
-        if g in seen and not (dialect == "fanuc" and g != 0):
-            return False
+        if g in seen and not (dialect == "fanuc" and g != 0) and not (dialect == "linuxcnc" and g == 1 and
+                                                                       (k == 800 or 800 in motion)):
+            return False  # LinuxCNC drops a G80 beside another motion code
         seen.add(g)
+        if g == 1:
+            motion.add(k)
     return True
 
 

@@ -826,7 +826,12 @@ class Interpreter:
                 else:
                     raise self.error("GC202", f"unknown G code {gname(k)} (written {w.text or gname(k)}); see specs/gcode-support.md for the supported codes", w)
             if g in groups:
-                raise self.error("GC201", f"{gname(groups[g][0])} and {gname(k)} are in the same modal group; a block may contain only one of them", w)
+                if g == 1 and 800 in (k, groups[g][0]):
+                    # LinuxCNC's read_g: G80 beside another motion code is dropped (either order, or G80 twice)
+                    if k == 800:
+                        continue
+                else:
+                    raise self.error("GC201", f"{gname(groups[g][0])} and {gname(k)} are in the same modal group; a block may contain only one of them", w)
             groups[g] = (k, w)
         mgroups: dict[int, tuple[int, Word]] = {}
         for k, w in mcodes:

@@ -17,7 +17,7 @@ dialect.  Not accepted, each with the reason in :data:`NOT_ACCEPTED`:
 
 * LinuxCNC rejects them: ``tests/interp/bad/``, test directories whose
   expected result is an error, and programs with an error LinuxCNC reports
-  as well (two motion codes in one block, ``G1`` without any ``F``, an
+  as well (two motion codes in one block other than G80, which LinuxCNC drops, ``G1`` without any ``F``, an
   unclosed comment, a codes LinuxCNC does not have, a subroutine-local
   parameter read after the return);
 * they need files or settings outside the program, which a program-only run
@@ -73,10 +73,6 @@ NOT_ACCEPTED: dict[str, str] = {
     "m98m99/06-": "expected result is an error", "nested-sub-error": "expected result is an error",
     "nested-sub-in-file-error": "expected result is an error", "iniparam-failassign": "expected result is an error",
     "illegal": "expected result is an error", "-error": "expected result is an error",
-    "camotics/examples/cameo/cameo.nc": "G00 and G80 in one block: LinuxCNC 'two G codes from the same modal group'",
-    "diagnostic/rgh.ngc": "G80 and G00 in one block (same modal group)",
-    "quick-tests/zero_length_move.ngc": "G80 and G00 in one block (same modal group)",
-    "violation_checks/sam_zero_length_move.ngc": "G80 and G00 in one block (same modal group)",
     "camotics/examples/compass/": "G1 before any F word: LinuxCNC 'cannot do G1 with zero feed rate'",
     "varRefTests/LocalNamedTest": "reads #<x>, local to the subroutine, after it returned: 'named parameter not defined'",
     "gcode-rs/tests/data/_samples.ngc": "unclosed comment '( brocken comment'",

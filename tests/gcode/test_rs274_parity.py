@@ -250,3 +250,40 @@ def test_a_plane_change_between_cycle_blocks_reads_the_initial_level_on_the_new_
     ends = [s.end for c in run for s in c.segments()][-4:]
     assert ends == [tuple(Fraction(v) for v in e) for e in
                     [(5, 3, "25.4"), (1, 3, "25.4"), (-1, 3, "25.4"), (5, 3, "25.4")]]
+
+
+@pytest.mark.parametrize(("text", "rows"), [
+    # rs274 -g: STRAIGHT_TRAVERSE(1, 0, 0) for both orders
+    ("G21 G90 G0 G80 X1\nM2\n", [("RAPID", 1, 0, 0)]),
+    ("G21 G90 G80 G0 X1\nM2\n", [("RAPID", 1, 0, 0)]),
+    ("G21 G90 G1 G80 X1 F100\nM2\n", [("LINE", 1, 0, 0)]),
+    ("G21 G90 G80 G80\nM2\n", []),
+    # the cycle runs: STRAIGHT_TRAVERSE to R, over the hole, STRAIGHT_FEED down, back to R (G99)
+    ("G21 G90 G80 G81 X1 Z-1 R1 F100\nM2\n", [("RAPID", 0, 0, 1), ("RAPID", 1, 0, 1), ("LINE", 1, 0, -1),
+                                              ("RAPID", 1, 0, 1)]),
+    # G80 G1 after a cycle: the G1 block feeds to X2 at Z1 (rs274: STRAIGHT_FEED(2, 0, 1))
+    ("G21 G90 G81 X1 Z-1 R1 F100\nG80 G1 X2\nM2\n", [("RAPID", 0, 0, 1), ("RAPID", 1, 0, 1), ("LINE", 1, 0, -1),
+                                                    ("RAPID", 1, 0, 1), ("LINE", 2, 0, 1)]),
+])
+def test_g80_beside_another_motion_code_is_dropped(text, rows):
+    """LinuxCNC's ``read_g`` (``interp_read.cc``) drops a G80 written beside another motion-group code, in either
+    order, and takes ``G80 G80`` as G80; nczones refused every such block (GC201), among them the corpus's
+    ``G00 G17 G21 G40 G49 G80 G90`` start-up lines. Expected rows: rs274's canonical output."""
+    assert motion(text) == _rows(rows)
+
+
+@pytest.mark.parametrize(("text", "code", "column"), [
+    ("G21 G90 G0 G1 X1\nM2\n", "GC201", 12),  # rs274: "Two g codes used from same modal group"
+    ("G21 G90 G0 X2\nG80 G80 X1\nM2\n", "GC205", 9),  # rs274: "Cannot use axis values with g80"
+])
+def test_motion_codes_linuxcnc_refuses_together(text, code, column):
+    with pytest.raises(GcodeError) as info:
+        motion(text)
+    d = info.value.diagnostics[0]
+    assert (d.code, d.span.column) == (code, column)
+
+
+def test_a_g80_beside_g0_is_checked_as_the_rapid():
+    """The block's rapid is proved like any other: into the clamp it is unsafe."""
+    assert verify_text("G21 G90 G0 G80 X7.5 Z-1\nM2\n", MACHINE).verdict.label == "unsafe"
+    assert verify_text("G21 G90 G80 G0 X6.5 Z-1\nM2\n", MACHINE).verdict.label == "safe"
