@@ -811,6 +811,10 @@ class Interpreter:
     def _execute_general(self, block: Block) -> None:
         """:meth:`execute` for a block the plain-move lane did not take."""
         gcodes, mcodes, words, axis_words = self._split_words(block)
+        if "@" in words or "^" in words:
+            # LinuxCNC's polar coordinates move X and Y (find_ends, convert_cycle_xy): never skip them
+            self.unknown("@ ^", "LinuxCNC polar coordinates (@ radius, ^ angle) are not modelled",
+                         words.get("@") or words["^"])
         if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self.machine_at is None \
                 and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
                                len(words) - len(axis_words) - ("F" in words) - ("S" in words), words.get("S")):

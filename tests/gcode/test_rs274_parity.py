@@ -287,3 +287,26 @@ def test_a_g80_beside_g0_is_checked_as_the_rapid():
     """The block's rapid is proved like any other: into the clamp it is unsafe."""
     assert verify_text("G21 G90 G0 G80 X7.5 Z-1\nM2\n", MACHINE).verdict.label == "unsafe"
     assert verify_text("G21 G90 G80 G0 X6.5 Z-1\nM2\n", MACHINE).verdict.label == "safe"
+
+
+@pytest.mark.parametrize("fast", [True, False], ids=["lanes", "general"])
+@pytest.mark.parametrize("text", [
+    # rs274 -g: STRAIGHT_TRAVERSE(1, 0, 0), STRAIGHT_FEED(7.5, 0, -1): into the clamp at X 7..8
+    "G21 G90 G0 X1\nG1 @7.5 ^0 Z-1 F10\nM2\n",
+    # rs274 -g: STRAIGHT_TRAVERSE(5, 0, -1), STRAIGHT_FEED(0, 5, -1): incremental angle about the origin
+    "G21 G90 G0 X5 Z-1\nG91 G1 ^90 F10\nM2\n",
+    # rs274 -g: STRAIGHT_FEED(200, 0, 0): out of travel
+    "G21 G90 G0 X1\nG1 @200 F10\nM2\n",
+    # a whole polar spiral in a loop, as the corpus's spiral.ngc (rs274: 800 STRAIGHT_FEEDs)
+    "G21 G90 G0 X2\no100 repeat [3]\nG91 G1 @-0.5 ^4.5 F10\no100 endrepeat\nM2\n",
+])
+def test_polar_coordinates_are_never_skipped(text, fast):
+    """LinuxCNC's ``@`` (radius) and ``^`` (angle) words move X and Y (``find_ends``, ``interp_find.cc``; in
+    G91 about the program origin from where the tool is).  nczones read them as words and ignored them: a
+    block of them moved nothing, and ``G1 @200 F10`` was proved `safe` on a 100 mm machine.  Polar
+    coordinates are not modelled: the program is `unknown` from the first such word."""
+    run = interpret_text(text, MACHINE, fast=fast)
+    segs = [s for c in run for s in c.segments()]
+    assert [(u.code, u.span.line) for u in run.unsupported] == [("@ ^", text.count("\n", 0, text.index("@") if "@" in text else text.index("^")) + 1)]
+    assert all(s.span.line < run.unsupported[0].span.line for s in segs)
+    assert verify_text(text, MACHINE).verdict.label == "unknown"
