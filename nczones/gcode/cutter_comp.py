@@ -326,6 +326,9 @@ class CutterComp:
                                       f"got {d.text}", d)
                 if d.value < 0:
                     raise self.error(GC_STATE, f"negative D word tool number {d.text} used", d)
+                if tool == 0:
+                    # D0 is the tool in the spindle: LinuxCNC find_tool_index gives tool 0 the spindle's entry
+                    tool = it.tool_in_spindle
             diameters = getattr(it.machine, "tool_diameters", {})
             if tool not in diameters:
                 if tool != 0:

@@ -310,3 +310,24 @@ def test_polar_coordinates_are_never_skipped(text, fast):
     assert [(u.code, u.span.line) for u in run.unsupported] == [("@ ^", text.count("\n", 0, text.index("@") if "@" in text else text.index("^")) + 1)]
     assert all(s.span.line < run.unsupported[0].span.line for s in segs)
     assert verify_text(text, MACHINE).verdict.label == "unknown"
+
+
+COMP_MACHINE = parse_machine(MACHINE_TEXT.replace('pulse = "0.0001"\n', 'pulse = "0.0001"\ncutter_compensation = "linuxcnc"\n')
+                             + '[tool_diameters]\nT1 = "2.54"\nT2 = "5.08"\n')
+
+
+@pytest.mark.parametrize("fast", [True, False], ids=["lanes", "general"])
+@pytest.mark.parametrize(("head", "y"), [("", "0"), ("T2 M6\n", "2.54"), ("T1 M6\n", "1.27")])
+def test_g41_d0_is_the_tool_in_the_spindle(head, y, fast):
+    """``convert_cutter_compensation_on`` reads D0 through ``find_tool_index``, where tool 0 is the spindle's
+    table entry (index 0, as for H0); nczones took D0 as tool number 0 and compensated by radius 0 with a
+    5.08 mm tool in the spindle, so the path it proved lay 2.54 mm off the path LinuxCNC cuts.  Rows: rs274 -g
+    with the tool table T1 D0.1, T2 D0.2 (inches): STRAIGHT_FEED(10, Y), (20, Y), (30, 0)."""
+    text = f"G21 F100\n{head}G0 X0 Y0 Z0\nG41 D0 G1 X10 Y0\nG1 X20\nG40 G1 X30\nM2\n"
+    run = interpret_text(text, COMP_MACHINE, fast=fast)
+    rows = [(s.kind.name, *s.end) for c in run for s in c.segments()]
+    assert not run.unsupported
+    want = _rows([("LINE", 10, y, 0), ("LINE", 20, y, 0), ("LINE", 30, 0, 0)])
+    got = [r for r in rows if r[0] == "LINE"]  # compensated in LinuxCNC's doubles; rs274 prints 4 decimals
+    assert len(got) == len(want) and all(abs(a - b) <= Fraction(1, 20000) for g, w in zip(got, want)
+                                         for a, b in zip(g[1:], w[1:])), (got, want)
