@@ -1056,6 +1056,11 @@ class Interpreter:
             if self.m73_saved and self._scopes is not None:
                 scope = self._scopes[-1]
                 self.m73_saved = [e for e in self.m73_saved if e[1] is not scope]
+        if self.machine_at is not None and (6 in mset or 61 in mset):
+            # after a tool change LinuxCNC re-reads where the machine is (read_inputs: refresh_actual_position),
+            # e.g. the compensated point G40 left the tool at, or where G84 outside G17 left it
+            self.pos = list(self.machine_at)
+            self.machine_at = None
         # 21: stop
         if self._comp is not None:
             if 2 in mset or 30 in mset:

@@ -331,3 +331,22 @@ def test_g41_d0_is_the_tool_in_the_spindle(head, y, fast):
     got = [r for r in rows if r[0] == "LINE"]  # compensated in LinuxCNC's doubles; rs274 prints 4 decimals
     assert len(got) == len(want) and all(abs(a - b) <= Fraction(1, 20000) for g, w in zip(got, want)
                                          for a, b in zip(g[1:], w[1:])), (got, want)
+
+
+@pytest.mark.parametrize("fast", [True, False], ids=["lanes", "general"])
+@pytest.mark.parametrize(("mid", "y"), [("T2 M6", "1.27"), ("M61 Q2", "1.27"), ("M5", "0")])
+def test_a_tool_change_after_g40_rereads_where_the_tool_is(mid, y, fast):
+    """After G40 LinuxCNC's interpreter holds the programmed point while the tool stands at the compensated one
+    (``convert_cutter_compensation_off``); a tool change (M6, M61) makes it re-read the real position
+    (``read_inputs``: ``refresh_actual_position``), so a following Z move stays at the compensated XY. nczones
+    moved back to the programmed point, a rapid 1.27 mm off the one the machine makes (the corpus's
+    ``useful-subroutines.ngc``). Rows: rs274 -g, tool table T1 D0.1, T2 D0.2 (inches); without the tool change
+    the rapid does go to Y 0."""
+    text = f"G21 F100\nT1 M6\nG0 X0 Y0 Z0\nG41 G1 X10 Y0\nG1 X20\nG40\n{mid}\nG0 Z5\nM2\n"
+    run = interpret_text(text, COMP_MACHINE, fast=fast)
+    rows = [(s.kind.name, *s.end) for c in run for s in c.segments()]
+    assert not run.unsupported
+    want = _rows([("RAPID", 0, 0, 0), ("LINE", 10, "1.27", 0), ("LINE", 20, "1.27", 0), ("RAPID", 20, y, 5)])
+    assert len(rows) == len(want) and all(g[0] == w[0] and all(abs(a - b) <= Fraction(1, 20000)
+                                                               for a, b in zip(g[1:], w[1:]))
+                                          for g, w in zip(rows, want)), (rows, want)
