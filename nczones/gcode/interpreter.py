@@ -810,6 +810,12 @@ class Interpreter:
 
     def _execute_general(self, block: Block) -> None:
         """:meth:`execute` for a block the plain-move lane did not take."""
+        messages = getattr(block, "messages", ())
+        if messages:
+            for msg in messages:
+                if msg.startswith("ABORT,"):
+                    # LinuxCNC's (abort, ...): the program stops with this text before the block runs
+                    raise self.error("GC305", f"the program aborts here (LinuxCNC (ABORT, ...)): {msg[6:].strip()}")
         gcodes, mcodes, words, axis_words = self._split_words(block)
         if "@" in words or "^" in words:
             # LinuxCNC's polar coordinates move X and Y (find_ends, convert_cycle_xy): never skip them

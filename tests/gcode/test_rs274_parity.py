@@ -146,6 +146,10 @@ REFUSED = [
     ("M3 S100\nM5\nG33.1 Z-1 K1\nM2\n", 3, "Spindle not turning in G33.1"),
     ("F10\nG86 X1 Z-1 R1 P1\nM2\n", 2, "Spindle not turning in g86"),
     ("F10 M4 S100\nG84 X1 Z-1 R1\nM2\n", 2, "Spindle turning counterclockwise in G84"),
+    # (abort, ...) stops the program with its text, before the block's motion (rs274 prints STRAIGHT_TRAVERSE(1)
+    # only); nczones read it as a message and proved the motion after it
+    ("G21 G0 X1\n(abort, stop here)\nG0 X2\nM2\n", 2, "stop here"),
+    ("G21 G0 X1\nG0 X2 (ABORT,now)\nM2\n", 2, "now"),
 ]
 
 #: Programs LinuxCNC runs through (the same features, in the state it accepts).
