@@ -817,10 +817,7 @@ class Interpreter:
                     # LinuxCNC's (abort, ...): the program stops with this text before the block runs
                     raise self.error("GC305", f"the program aborts here (LinuxCNC (ABORT, ...)): {msg[6:].strip()}")
         gcodes, mcodes, words, axis_words = self._split_words(block)
-        if "@" in words or "^" in words:
-            # LinuxCNC's polar coordinates move X and Y (find_ends, convert_cycle_xy): never skip them
-            self.unknown("@ ^", "LinuxCNC polar coordinates (@ radius, ^ angle) are not modelled",
-                         words.get("@") or words["^"])
+        polar = "@" in words or "^" in words
         if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self.machine_at is None \
                 and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
                                len(words) - len(axis_words) - ("F" in words) - ("S" in words), words.get("S")):
@@ -853,6 +850,9 @@ class Interpreter:
             raise self.error("GC206", f"{len(mcodes)} M words in one block; at most 4 are allowed", mcodes[4][1])
         g0 = groups.get(0)
         g1 = groups.get(1)
+        if polar and g0 and g0[0] in _AXIS_USERS:
+            raise self.error("GC205", f"polar coordinates (@, ^) can only be used for motion, not with {gname(g0[0])}",
+                             words.get("@") or words["^"])
         if g0 and g1 and g0[0] in _AXIS_USERS and g1[0] not in (800,) and axis_words:
             raise self.error("GC205", f"{gname(g0[0])} and {gname(g1[0])} both use the axis words of the block; write them in separate blocks", g1[1])
         if g1 and g1[0] == 800 and axis_words and not (g0 and g0[0] in _AXIS_USERS):
@@ -1021,6 +1021,8 @@ class Interpreter:
             nonmodal_uses_axes = True  # the axis words are G43.1's offsets, not a move (LinuxCNC motion_to_be)
         # 20: motion
         g53 = bool(g0 and g0[0] == 530)
+        if polar:
+            axis_words = self._polar(words, axis_words, g1, g53, nonmodal_uses_axes)
         if g1:
             k = g1[0]
             if k not in _CYCLES:
@@ -1371,6 +1373,67 @@ class Interpreter:
             self.tool_register = None
             self.dep_tlo = {}
         self.recompute_offsets()
+
+    def _polar(self, words: dict[str, Word], axis_words: list[tuple[int, Word]], g1: Any, g53: bool,
+               nonmodal: bool) -> list[tuple[int, Word]]:
+        """LinuxCNC's polar coordinates (``@`` radius, ``^`` angle in degrees) of a G0-G3 block as X and Y words
+        (``find_ends``, ``interp_find.cc``; a canned cycle's hole, ``convert_cycle_xy``), in LinuxCNC's doubles:
+        about the program origin, in G91 from where the tool is (the radius added to its distance from the
+        origin, then the angle to its direction).  G91 cycles repeated with L (the angle turns on every
+        repeat), cutter compensation, a rotated system and parameter ranges: unknown."""
+        w = words.get("@") or words["^"]
+        motion = g1[0] if g1 else self.motion
+        ix, iy = self._ix, self._iy
+        if "X" in words or "Y" in words:
+            raise self.error("GC205", "polar coordinates (@, ^) cannot be given with an X or Y word", w)
+        if self.plane is not Plane.XY:
+            raise self.error("GC205", "polar coordinates (@, ^) are allowed in the G17 plane only", w)
+        if g53:
+            raise self.error("GC207", "polar coordinates (@, ^) cannot be used with G53", w)
+        if motion is None and not nonmodal:
+            raise self.error("GC208", "polar coordinates (@, ^) without an active motion mode (G80 is active); "
+                             "write G0, G1, G2 or G3", w)
+        lw = words.get("L")
+        cycle = motion in _CYCLES
+        if nonmodal or not (motion in (0, 10, 20, 30) or (cycle and (self.absolute or lw is None or lw.value == 1))) \
+                or ix < 0 or iy < 0 or self.comp_on or self.prerotation_xy is not None or self.track or self.ranged \
+                or self.unsupported:
+            self.unknown("@ ^", "LinuxCNC polar coordinates (@ radius, ^ angle) are modelled for G0-G3 and single "
+                         "canned cycles, without cutter compensation, rotation or parameter ranges (G91 cycles with "
+                         "L turn the angle on every repeat: not modelled)", w)
+            return axis_words
+        unit = INCH if self.inch else _ONE
+        cx = (self.pos[ix] - self.off[ix]) / unit
+        cy = (self.pos[iy] - self.off[iy]) / unit
+        px, py = to_float(cx), to_float(cy)
+        rw, tw = words.get("@"), words.get("^")
+        d2r = math.pi / 180.0
+        if self.absolute:
+            if rw is not None and tw is not None:
+                r, t = to_float(rw.value), to_float(tw.value) * d2r
+            elif rw is not None:
+                if px == 0.0 and py == 0.0 and not cycle:  # convert_cycle_xy takes atan2(0, 0) = 0
+                    raise self.error("GC305", "polar coordinates at the origin need an angle (^)", rw)
+                r, t = to_float(rw.value), math.atan2(py, px)
+            else:
+                assert tw is not None
+                r, t = math.hypot(py, px), to_float(tw.value) * d2r
+            px, py = r * math.cos(t), r * math.sin(t)
+        else:
+            if px == 0.0 and py == 0.0:
+                raise self.error("GC305", "G91 motion with polar coordinates is indeterminate at the origin", w)
+            if rw is not None:
+                t, r = math.atan2(py, px), math.hypot(py, px) + to_float(rw.value)
+                px, py = r * math.cos(t), r * math.sin(t)
+            if tw is not None:
+                t, r = math.atan2(py, px) + to_float(tw.value) * d2r, math.hypot(py, px)
+                px, py = r * math.cos(t), r * math.sin(t)
+        x, y = Fraction(px), Fraction(py)
+        if not self.absolute:
+            x, y = x - cx, y - cy
+        out = [(i, v) for i, v in axis_words if i not in (ix, iy)]
+        out += [(ix, Word("X", x, w.span, w.text)), (iy, Word("Y", y, w.span, w.text))]
+        return sorted(out, key=lambda iw: iw[0])
 
     def program_target(self, axis_words: list[tuple[int, Word]], g53: bool, absolute: bool | None = None) -> tuple[list[Fraction], list[dict] | None]:
         absolute = self.absolute if absolute is None else absolute

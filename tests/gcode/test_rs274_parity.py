@@ -293,27 +293,66 @@ def test_a_g80_beside_g0_is_checked_as_the_rapid():
     assert verify_text("G21 G90 G80 G0 X6.5 Z-1\nM2\n", MACHINE).verdict.label == "safe"
 
 
+def _near(rows, want):
+    """Rows within rs274's printed 4 decimals (polar ends are LinuxCNC's doubles)."""
+    return len(rows) == len(want) and all(g[0] == w[0] and all(abs(a - b) <= Fraction(1, 20000)
+                                                               for a, b in zip(g[1:], w[1:]))
+                                          for g, w in zip(rows, want))
+
+
 @pytest.mark.parametrize("fast", [True, False], ids=["lanes", "general"])
-@pytest.mark.parametrize("text", [
+@pytest.mark.parametrize(("text", "rows"), [
     # rs274 -g: STRAIGHT_TRAVERSE(1, 0, 0), STRAIGHT_FEED(7.5, 0, -1): into the clamp at X 7..8
-    "G21 G90 G0 X1\nG1 @7.5 ^0 Z-1 F10\nM2\n",
-    # rs274 -g: STRAIGHT_TRAVERSE(5, 0, -1), STRAIGHT_FEED(0, 5, -1): incremental angle about the origin
-    "G21 G90 G0 X5 Z-1\nG91 G1 ^90 F10\nM2\n",
-    # rs274 -g: STRAIGHT_FEED(200, 0, 0): out of travel
-    "G21 G90 G0 X1\nG1 @200 F10\nM2\n",
-    # a whole polar spiral in a loop, as the corpus's spiral.ngc (rs274: 800 STRAIGHT_FEEDs)
-    "G21 G90 G0 X2\no100 repeat [3]\nG91 G1 @-0.5 ^4.5 F10\no100 endrepeat\nM2\n",
+    ("G21 G90 G0 X1\nG1 @7.5 ^0 Z-1 F10\nM2\n", [("RAPID", 1, 0, 0), ("LINE", "7.5", 0, -1)]),
+    # STRAIGHT_TRAVERSE(5, 0, -1), STRAIGHT_FEED(0, 5, -1): G91 turns the angle about the origin
+    ("G21 G90 G0 X5 Z-1\nG91 G1 ^90 F10\nM2\n", [("RAPID", 5, 0, -1), ("LINE", 0, 5, -1)]),
+    # STRAIGHT_FEED(0, 4, 0): G91 adds the radius first, then the angle
+    ("G21 G90 G0 X5\nG91 G1 ^90 @-1 F10\nM2\n", [("RAPID", 5, 0, 0), ("LINE", 0, 4, 0)]),
+    # STRAIGHT_FEED(200, 0, 0): out of travel
+    ("G21 G90 G0 X1\nG1 @200 F10\nM2\n", [("RAPID", 1, 0, 0), ("LINE", 200, 0, 0)]),
+    # ARC_FEED(0, 5, 0, 0, 1, 0): the arc's end in polar form
+    ("G21 G90 G0 X3 Y4\nG3 @5 ^90 I-3 J-4 F10\nM2\n", [("RAPID", 3, 4, 0), ("ARC", 0, 5, 0)]),
 ])
-def test_polar_coordinates_are_never_skipped(text, fast):
-    """LinuxCNC's ``@`` (radius) and ``^`` (angle) words move X and Y (``find_ends``, ``interp_find.cc``; in
-    G91 about the program origin from where the tool is).  nczones read them as words and ignored them: a
-    block of them moved nothing, and ``G1 @200 F10`` was proved `safe` on a 100 mm machine.  Polar
-    coordinates are not modelled: the program is `unknown` from the first such word."""
+def test_polar_coordinates_move_x_and_y(text, rows, fast):
+    """LinuxCNC's ``@`` (radius) and ``^`` (angle) words give the end of X and Y (``find_ends``,
+    ``interp_find.cc``, in doubles; in G91 about the program origin from where the tool is). nczones read
+    them as words and ignored them: such a block moved nothing, and ``G1 @200 F10`` was proved `safe` on a
+    100 mm machine (the corpus's ``spiral.ngc`` lost its 800 moves)."""
     run = interpret_text(text, MACHINE, fast=fast)
+    got = [(s.kind.name, *s.end) for c in run for s in c.segments()]
+    assert not run.unsupported
+    assert _near(got, _rows(rows)), got
+
+
+def test_a_polar_move_into_the_clamp_is_unsafe():
+    assert verify_text("G21 G90 G0 X1\nG1 @7.5 ^0 Z-1 F10\nM2\n", MACHINE).verdict.label == "unsafe"
+    assert verify_text("G21 G90 G0 X1\nG1 @200 F10\nM2\n", MACHINE).verdict.label == "unsafe"
+
+
+def test_a_canned_cycle_drills_at_the_polar_point():
+    """``convert_cycle_xy``: rs274 -g STRAIGHT_TRAVERSE(5, 0, 2), (0, 5, 2), (0, 5, 1), STRAIGHT_FEED(0, 5, -1),
+    STRAIGHT_TRAVERSE(0, 5, 1)."""
+    assert _near(motion("G21 G90 G0 X5 Z2\nG81 @5 ^90 Z-1 R1 F10\nM2\n"), _rows([
+        ("RAPID", 5, 0, 2), ("RAPID", 0, 5, 2), ("RAPID", 0, 5, 1), ("LINE", 0, 5, -1), ("RAPID", 0, 5, 1)]))
+
+
+def test_a_g91_cycle_repeated_with_polar_steps_is_unknown():
+    """With L, LinuxCNC turns the angle again on every repeat (``CYCLE_MACRO``): not modelled."""
+    run = interpret_text("G21 G90 G0 X5 Z2\nG91 G81 R-1 Z-3 ^60 L6 F10\nM2\n", MACHINE)
     segs = [s for c in run for s in c.segments()]
-    assert [(u.code, u.span.line) for u in run.unsupported] == [("@ ^", text.count("\n", 0, text.index("@") if "@" in text else text.index("^")) + 1)]
-    assert all(s.span.line < run.unsupported[0].span.line for s in segs)
-    assert verify_text(text, MACHINE).verdict.label == "unknown"
+    assert [(u.code, u.span.line) for u in run.unsupported] == [("@ ^", 2)] and len(segs) == 1
+
+
+@pytest.mark.parametrize(("text", "line"), [
+    ("G21 G90 G0 X0 Y0\nG1 @5 F10\nM2\n", 2),  # rs274: Must specify angle in polar coordinate if at the origin
+    ("G21 G91 G1 ^5 F10\nM2\n", 1),  # G91 motion with polar coordinates is indeterminate when at the origin
+    ("G21 G90 G1 X1 @5 F10\nM2\n", 1),  # Cannot specify both polar coordinate and X word
+    ("G21 G18\nG1 @5 ^1 F10\nM2\n", 2),  # Cannot use polar coordinate except in G17 plane
+    ("G21 G90 G0 X5 Z2\nG28 @1\nM2\n", 2),  # Polar coordinates can only be used for motion
+    ("G21 G90 G0 X5 Z2\nG80\n@5 F10\nM2\n", 3),  # Cannot use axis values without a g code that uses them
+])
+def test_polar_coordinates_linuxcnc_refuses(text, line):
+    assert _error(text).diagnostics[0].span.line == line
 
 
 COMP_MACHINE = parse_machine(MACHINE_TEXT.replace('pulse = "0.0001"\n', 'pulse = "0.0001"\ncutter_compensation = "linuxcnc"\n')
