@@ -39,7 +39,8 @@ HALF_DIGIT = Fraction(5, 100000)
 class CanonMove:
     """One motion of the log in machine mm (degrees for A B C).
 
-    ``kind``: ``RAPID``, ``LINE``, ``ARC`` or ``DWELL``; ``end``: X Y Z A B C; ``tol``: the rounding
+    ``kind``: ``RAPID``, ``LINE``, ``ARC``, ``DWELL`` or ``SPLINE`` (its end is not printed: the start);
+    ``end``: X Y Z A B C; ``tol``: the rounding
     bound of the linear coordinates (mm); ``rotation``/``direction``/``centre``/``plane`` for arcs
     (``direction`` is LinuxCNC's signed turn count: > 0 counterclockwise, ``abs - 1`` full turns);
     ``dwell_s`` for dwells.
@@ -155,6 +156,11 @@ def canon_motion(log: str) -> list[CanonMove]:
         elif name == "DWELL":
             prev, ptol = (moves[-1].end, moves[-1].tol) if moves else (tuple([Fraction(0)] * 6), Fraction(0))
             moves.append(CanonMove("DWELL", prev, ptol, dwell_s=_num(args)))
+        elif name == "NURBS_FEED":
+            # G5.1/G5.2 (saicanon prints the number of control points only): a SPLINE whose end is not in
+            # the log; compare() checks its kind, the next motion's end checks where it went
+            prev, ptol = (moves[-1].end, moves[-1].tol) if moves else (tuple([Fraction(0)] * 6), Fraction(0))
+            moves.append(CanonMove("SPLINE", prev, ptol, unit=unit, rotation=rotation))
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED", "STRAIGHT_PROBE", "RIGID_TAP"):
             off = [g5x[i] + g92[i] + tlo[i] for i in range(6)]
             v = [_num(a) for a in args.split(",")]
@@ -255,9 +261,10 @@ class Outcome:
     detail: str = ""
 
 
-def nczones_motion(program: str, machine: Machine):
-    """(segments, error, unsupported) of nczones on the program (DWELLs included)."""
-    run = interpret_text(program, machine, file="prog.ngc")
+def nczones_motion(program: str, machine: Machine, **options):
+    """(segments, error, unsupported) of nczones on the program (DWELLs included); ``options`` as
+    :func:`nczones.gcode.interpret` (the corpus run passes ``arc_tolerance="linuxcnc"``)."""
+    run = interpret_text(program, machine, file="prog.ngc", **options)
     segs = []
     error = None
     try:
@@ -280,20 +287,73 @@ def _moving(items, kind, end, start, tol):
 
 def _canon_moving(moves: list[CanonMove], names: tuple[str, ...]) -> list[CanonMove]:
     out = []
-    prev = tuple([Fraction(0)] * 6)
+    prev: tuple[Fraction, ...] | None = tuple([Fraction(0)] * 6)
     for mv in moves:
-        if mv.kind in ("RAPID", "LINE") and all(abs(mv.end[AXES6.index(a)] - prev[AXES6.index(a)]) <= mv.tol
-                                                for a in names):
+        if mv.kind in ("RAPID", "LINE") and prev is not None and all(
+                abs(mv.end[AXES6.index(a)] - prev[AXES6.index(a)]) <= mv.tol for a in names):
             prev = mv.end
             continue
-        prev = mv.end
+        prev = None if mv.kind == "SPLINE" else mv.end  # a spline's end is not in the log
         out.append(mv)
     return out
 
 
-def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple[str, str] | None) -> Outcome:
-    """Hold nczones's interpretation of ``program`` to the log's motions and error."""
-    segs, err, unsupported = nczones_motion(program, machine)
+#: A straight move this short (in units of the log's last digit) may vanish in the log's rounding, or appear
+#: there as a step of one digit: where the two sides differ, such a move of either side is skipped (a CAM
+#: program's 0.0000001 mm moves).
+TINY_DIGITS = 4
+
+
+def _tiny_seg(s, names: tuple[str, ...], unit: Fraction) -> bool:
+    if s.kind.name not in ("RAPID", "LINE") or not s.start:
+        return False
+    lim = TINY_DIGITS * HALF_DIGIT * unit
+    return all(abs(s.end[k] - s.start[k]) <= lim for k in range(len(names)))
+
+
+def _tiny_move(moves: list[CanonMove], j: int, names: tuple[str, ...]) -> bool:
+    mv = moves[j]
+    if mv.kind not in ("RAPID", "LINE") or (j and moves[j - 1].kind == "SPLINE"):
+        return False
+    prev = moves[j - 1].end if j else tuple([Fraction(0)] * 6)
+    lim = TINY_DIGITS * HALF_DIGIT * mv.unit
+    return all(abs(mv.end[AXES6.index(a)] - prev[AXES6.index(a)]) <= lim for a in names)
+
+
+def _differs(s, mv: CanonMove, names: tuple[str, ...], k: int) -> str | None:
+    """How nczones's segment ``s`` differs from the log's motion ``mv`` (None: they agree)."""
+    where = f"motion {k} (line {s.span.line if s.span else '?'})"
+    kind = s.kind.name
+    if kind != mv.kind:
+        return f"{where}: {kind} vs rs274 {mv.kind}"
+    if kind == "SPLINE":
+        return None
+    for a in names:
+        i = AXES6.index(a)
+        e, x = s.end[names.index(a)], mv.end[i]
+        t = mv.tol if i < 3 else HALF_DIGIT * 2
+        if abs(e - x) > t + Fraction(1, 10**9):
+            return f"{where} {kind} axis {a}: {float(e):.5f} vs rs274 {float(x):.5f}"
+    if kind == "ARC":
+        assert mv.centre is not None
+        turns = abs(mv.direction) - 1
+        if (mv.direction < 0) != s.clockwise or turns != s.turns or s.plane.name != mv.plane:
+            return f"{where}: arc cw={s.clockwise} turns={s.turns} {s.plane.name} vs rs274 {mv.direction} {mv.plane}"
+        if s.centre is not None:
+            for c, x in zip(s.centre, mv.centre):
+                if abs(c - x) > mv.tol * 2 + Fraction(1, 10**9):
+                    return f"{where}: centre {float(c):.5f} vs rs274 {float(x):.5f}"
+    if kind == "DWELL" and s.dwell_s is not None and mv.dwell_s is not None:
+        if abs(s.dwell_s - mv.dwell_s) > HALF_DIGIT:
+            return f"{where}: dwell {s.dwell_s} vs rs274 {mv.dwell_s}"
+    return None
+
+
+def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple[str, str] | None,
+            **options) -> Outcome:
+    """Hold nczones's interpretation of ``program`` to the log's motions and error (``options`` go to the
+    interpreter)."""
+    segs, err, unsupported = nczones_motion(program, machine, **options)
     names = machine.axis_names
     segs = _moving(segs, lambda s: s.kind.name, lambda s: tuple(s.end[names.index(a)] for a in names),
                    lambda s: s.start and tuple(s.start[names.index(a)] for a in names), Fraction(0))
@@ -303,35 +363,25 @@ def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple
         moves = moves[:cut]
         if not unsupported:
             return Outcome("oracle-gap", f"rs274 moves on with an arc outside XY under rotation after motion {cut}")
-    n = min(len(segs), len(moves))
-    for k in range(n):
-        s, mv = segs[k], moves[k]
-        where = f"motion {k} (line {s.span.line if s.span else '?'})"
-        kind = s.kind.name
-        if kind != mv.kind:
-            return Outcome("path", f"{where}: {kind} vs rs274 {mv.kind}")
-        for a in names:
-            i = AXES6.index(a)
-            e, x = s.end[names.index(a)], mv.end[i]
-            t = mv.tol if i < 3 else HALF_DIGIT * 2
-            if abs(e - x) > t + Fraction(1, 10**9):
-                return Outcome("path", f"{where} {kind} axis {a}: {float(e):.5f} vs rs274 {float(x):.5f}")
-        if kind == "ARC":
-            assert mv.centre is not None
-            turns = abs(mv.direction) - 1
-            if (mv.direction < 0) != s.clockwise or turns != s.turns or s.plane.name != mv.plane:
-                return Outcome("path", f"{where}: arc cw={s.clockwise} turns={s.turns} {s.plane.name} vs rs274 "
-                                       f"{mv.direction} {mv.plane}")
-            if s.centre is not None:
-                for c, x in zip(s.centre, mv.centre):
-                    if abs(c - x) > mv.tol * 2 + Fraction(1, 10**9):
-                        return Outcome("path", f"{where}: centre {float(c):.5f} vs rs274 {float(x):.5f}")
-        if kind == "DWELL" and s.dwell_s is not None and mv.dwell_s is not None:
-            if abs(s.dwell_s - mv.dwell_s) > HALF_DIGIT:
-                return Outcome("path", f"{where}: dwell {s.dwell_s} vs rs274 {mv.dwell_s}")
+    i = j = matched = 0
+    while i < len(segs) and j < len(moves):
+        why = _differs(segs[i], moves[j], names, i)
+        if why is None:
+            i, j, matched = i + 1, j + 1, matched + 1
+        elif _tiny_seg(segs[i], names, moves[j].unit):
+            i += 1
+        elif _tiny_move(moves, j, names):
+            j += 1
+        elif i and j and moves[j - 1].kind == "SPLINE" and moves[j].kind in ("RAPID", "LINE") and all(
+                abs(moves[j].end[AXES6.index(a)] - segs[i - 1].end[k]) <= moves[j].tol for k, a in enumerate(names)):
+            j += 1  # a move to where the spline ended (not in the log: nczones left it out)
+        else:
+            return Outcome("path", why)
+    n_segs = matched + sum(1 for s in segs[i:] if not _tiny_seg(s, names, moves[-1].unit if moves else Fraction(1)))
+    n_moves = matched + sum(1 for k in range(j, len(moves)) if not _tiny_move(moves, k, names))
     if unsupported:
-        if len(segs) > len(moves):
-            return Outcome("path", f"{len(segs)} motions before unknown, rs274 has {len(moves)}")
+        if n_segs > n_moves:
+            return Outcome("path", f"{n_segs} motions before unknown, rs274 has {n_moves}")
         return Outcome("unknown", unsupported[0].render())
     if err is not None:
         span = err.diagnostics[0].span
@@ -343,10 +393,10 @@ def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple
         if lines and line not in lines:
             return Outcome("error-line", f"nczones: {first} / rs274 lines {lines}: {error[0]}")
         return Outcome("match", f"both refuse: {error[0]}")
-    if len(segs) != len(moves):
+    if n_segs != n_moves:
         extra = f"; rs274 error: {error[0]} at {error[1]!r}" if error else ""
-        return Outcome("missed-error" if error and len(segs) > len(moves) else "path",
-                       f"{len(segs)} motions, rs274 {len(moves)}{extra}")
+        return Outcome("missed-error" if error and n_segs > n_moves else "path",
+                       f"{n_segs} motions, rs274 {n_moves}{extra}")
     if error is not None:
         return Outcome("missed-error", f"rs274: {error[0]} at {error[1]!r}")
     return Outcome("match")

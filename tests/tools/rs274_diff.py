@@ -328,7 +328,8 @@ def machine_of(setup: Setup):
     return parse_machine(machine_text(axes, tools, offsets))
 
 
-def run_rs274(program: str, setup: Setup, workdir: Path) -> tuple[list[CanonMove], tuple[str, str] | None, str]:
+def run_rs274(program: str, setup: Setup, workdir: Path,
+              timeout: float = 20) -> tuple[list[CanonMove], tuple[str, str] | None, str]:
     """rs274's motions, error and raw log of one program (a fresh tool table and parameter file)."""
     _axes, tools, offsets = setup
     (workdir / "prog.ngc").write_text(program)
@@ -338,7 +339,7 @@ def run_rs274(program: str, setup: Setup, workdir: Path) -> tuple[list[CanonMove
     (workdir / "prog.var").write_text(var_file(offsets))
     try:
         p = subprocess.run([RS274, "-t", "tool.tbl", "-v", "prog.var", "-g", "prog.ngc"], cwd=workdir,
-                           capture_output=True, text=True, timeout=20, stdin=subprocess.DEVNULL)
+                           capture_output=True, text=True, errors="replace", timeout=timeout, stdin=subprocess.DEVNULL)
     except subprocess.TimeoutExpired:
         return [], ("rs274 timed out", ""), ""
     return canon_motion(p.stdout), canon_error(p.returncode, p.stderr), p.stdout
