@@ -960,7 +960,7 @@ class Interpreter:
             self.unset.discard("plane")
         # 12: units
         if 6 in groups:
-            self.inch = groups[6][0] == 200
+            self._set_units(groups[6][0] == 200)
             self.unset.discard("units")
         # 13: cutter comp
         if 7 in groups and self._comp is not None:
@@ -1317,7 +1317,22 @@ class Interpreter:
         return (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
                 self.feed, self.retract_r)
 
+    def _set_units(self, inch: bool) -> None:
+        """G20/G21 (and M72's restore): LinuxCNC's convert_length_units converts the positions and offsets it
+        holds, but not a modal cycle's initial level (``cycle_il``, a program number): the next hole block
+        retracts to that number read in the new units."""
+        if inch != self.inch and self.cycle_il is not None:
+            if self.track:
+                self.unknown("canned cycle", "a units change (G20/G21) while a canned cycle is modal moves its "
+                             "initial level; not followed with parameter ranges")
+            ax = self._cycle_il_axis
+            number = (self.cycle_il - self.off[ax]) / (INCH if self.inch else _ONE)
+            self.cycle_il = number * (INCH if inch else _ONE) + self.off[ax]
+            self._cycle_il_deps = {}
+        self.inch = inch
+
     def _restore_modal(self, snap: tuple) -> None:
+        self._set_units(snap[0])
         (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
          self.feed, self.retract_r) = snap
         self.spindle_dir = self.spindle_speed = None  # M72 restores the spindle too: no longer followed

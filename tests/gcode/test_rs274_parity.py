@@ -393,3 +393,27 @@ def test_a_tool_change_after_g40_rereads_where_the_tool_is(mid, y, fast):
     assert len(rows) == len(want) and all(g[0] == w[0] and all(abs(a - b) <= Fraction(1, 20000)
                                                                for a, b in zip(g[1:], w[1:]))
                                           for g, w in zip(rows, want)), (rows, want)
+
+
+@pytest.mark.parametrize("switch", ["G21\n", "M72\n"])
+def test_a_units_change_under_a_modal_cycle_keeps_the_initial_level_as_a_number(switch):
+    """LinuxCNC's convert_length_units converts the positions and offsets, not a modal cycle's initial level
+    (``cycle_il``): after G20 cycles from Z 3.2044 in, the next hole in mm retracts to Z 3.2044 mm. rs274:
+    ``STRAIGHT_TRAVERSE(5, 25.4, 81.3918)``, ``(5, 25.4, 2)``, ``STRAIGHT_FEED(5, 25.4, -2)``,
+    ``STRAIGHT_TRAVERSE(5, 25.4, 3.2044)``. nczones retracted to 81.39176 mm, where the level had been."""
+    head = "G21 G17 G90 G98 F100\nM70\n" if switch == "M72\n" else "G17 G90 G98 F100\n"
+    rows = motion(head + "G20\nG0 X1 Y1 Z3.2044\nG81 X2 Z-2.0 R2\n" + switch + "X5\nM2\n")
+    assert rows[-4:] == _rows([("RAPID", 5, "25.4", "81.39176"), ("RAPID", 5, "25.4", 2),
+                               ("LINE", 5, "25.4", -2), ("RAPID", 5, "25.4", "3.2044")])
+
+
+def test_the_low_retract_after_a_units_change_runs_into_the_clamp():
+    """The wrong ``safe``: the hole at X5 Y0 retracts to Z 3.2044 mm (not 81 mm), and the G0 X7.5 after it
+    travels at that level; with a clamp whose top is Z 5 there, the program is unsafe."""
+    machine = parse_machine(MACHINE_TEXT.replace('max = { X = "100", Y = "100", Z = "100" }',
+                                                 'max = { X = "100", Y = "100", Z = "200" }')
+                            .replace('max = { X = "8", Y = "5", Z = "-0.5" }', 'max = { X = "8", Y = "5", Z = "5" }'))
+    text = "G17 G90 G98 F100\nG20\nG0 X0 Y0 Z3.2044\nG81 X0.1 Z-0.05 R0.1\nG21\nX5 Y0\nG80\nG0 X7.5\nM2\n"
+    result = verify_text(text, machine)
+    assert result.verdict.label == "unsafe"
+    assert {v.zone for v in result.violations} == {"clamp"}
