@@ -818,7 +818,8 @@ class Interpreter:
                     raise self.error("GC305", f"the program aborts here (LinuxCNC (ABORT, ...)): {msg[6:].strip()}")
         gcodes, mcodes, words, axis_words = self._split_words(block)
         polar = "@" in words or "^" in words
-        if axis_words and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track and self.machine_at is None \
+        if axis_words and not polar and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track \
+                and self.machine_at is None \
                 and self._lean(gcodes[0][0] if gcodes else None, mcodes[0][0] if mcodes else None, words.get("F"),
                                len(words) - len(axis_words) - ("F" in words) - ("S" in words), words.get("S")):
             self._lean_move(tuple((k, i) for k, (i, _w) in enumerate(axis_words)), [w.value for _i, w in axis_words])

@@ -417,3 +417,15 @@ def test_the_low_retract_after_a_units_change_runs_into_the_clamp():
     result = verify_text(text, machine)
     assert result.verdict.label == "unsafe"
     assert {v.zone for v in result.violations} == {"clamp"}
+
+
+def test_polar_words_meet_ranges_and_the_double_pass():
+    """Where polar words meet other features: under a ``--param`` range the polar end is unknown, never proved
+    at the nominal values; in a parametric program the double pass declines (``@`` is outside its subset) and
+    the full path finds the move out of travel."""
+    text = "G21 G90 G0 X1\nG1 @5 ^0 F10\nM2\n"
+    assert verify_text(text, MACHINE).verdict.label == "safe"
+    ranged = verify_text(text, MACHINE, params=["G54.X=-1..1"])
+    assert ranged.verdict.label == "unknown" and any("polar" in r.message for r in ranged.reasons)
+    parametric = verify_text("#1 = 40\nG21 G90 G54 F10\nG1 X1\nG1 @[#1 * 5] ^0\nM2\n", MACHINE)
+    assert parametric.verdict.label == "unsafe" and parametric.violations[0].line == 4
