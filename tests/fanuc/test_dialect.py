@@ -120,7 +120,8 @@ _coords = st.decimals(min_value=-50, max_value=50, places=3, allow_nan=False, al
 @st.composite
 def common_programs(draw):
     """Programs valid in both dialects with the same meaning: G0/G1 moves and semicircle/full-circle
-    arcs with decimal points, G90/G91, G17, G54/G55, F, G43 H with a Z move, G49 with a Z move."""
+    arcs with decimal points, G90/G91, G17, G54/G55, F, G43 H with a Z move, G49 with a Z move (those two in
+    G90: see below)."""
     lines = ["G0 G90 G17 G54 X0. Y0. Z0."]
     absolute = True
     for _ in range(draw(st.integers(1, 12))):
@@ -146,8 +147,13 @@ def common_programs(draw):
         elif kind == "wcs":
             lines.append(draw(st.sampled_from(["G54", "G55"])))
         else:
+            # in G90 only: with an incremental Z word the dialects differ.  Fanuc (TOS = 0) moves by the
+            # increment plus the length change ([0i] "Tool length compensation" example: G91 G43 Z-32. H01
+            # with H01 = -4 moves -36; tests/fanuc/test_offsets.py); LinuxCNC re-expresses the current point
+            # in the new offset and moves by the increment alone (rs274: G91 G1 G43 H1 Z0 does not move)
             z = draw(_coords)
-            lines.append(draw(st.sampled_from([f"G1 G43 H1 Z{z} F100.", f"G0 G43 H2 Z{z}", f"G0 G49 Z{z}"])))
+            line = draw(st.sampled_from([f"G1 G43 H1 Z{z} F100.", f"G0 G43 H2 Z{z}", f"G0 G49 Z{z}"]))
+            lines.append(line if absolute else f"G90 {line}\nG91")
     return "\n".join(lines) + "\nM30\n"
 
 

@@ -372,6 +372,10 @@ class FanucInterpreter(Interpreter):
         # ---- tool length (group 08): the tool axis moves with this block's move, or alone
         if 8 in groups and groups[8][0] in (430, 440, 490):
             self._fanuc_tool_length(groups[8], words)
+        elif 8 not in groups and "H" in words and self.tool_register is not None:
+            # a bare H in G43/G44 mode switches the offset: [0i] "Tool length compensation", whose example
+            # cancels with ``G00 Z57.0 H00`` (H00's value 0) in G43 mode
+            self._fanuc_tool_length((430 if self.tlo_sign > 0 else 440, words["H"]), words)
         # ---- work coordinate system (group 14)
         if 14 in groups:
             if self.prog is not None:
@@ -531,7 +535,12 @@ class FanucInterpreter(Interpreter):
         """The machine target of the block's axis words, with a pending tool length change on the tool axis."""
         end, deps = self.program_target(axis_words, False, absolute)
         shift = self._tlo_shift
-        if shift is not None and self.tool_axis is not None and not any(i == self.tool_axis for i, _ in axis_words):
+        incremental = not (self.absolute if absolute is None else absolute)
+        # an absolute tool axis word already reads the new length through the offsets; an incremental one
+        # moves from where the old length put the tool, so the change is added to the increment:
+        # [0i] "Tool length compensation", N2 ``G91 G00 G43 Z-32.0 H01`` (H01 = -4.0) moves Z by -36
+        if shift is not None and self.tool_axis is not None and (
+                incremental or not any(i == self.tool_axis for i, _ in axis_words)):
             end[self.tool_axis] = qadd(end[self.tool_axis], shift)
             if deps is not None:
                 deps[self.tool_axis] = dadd(deps[self.tool_axis], self._tlo_shift_deps or {})

@@ -1,0 +1,243 @@
+"""Fanuc positions and offsets: incremental moves across a tool length change, a bare H, G92 in G91,
+lathe G50 during a tool offset, canned cycle R/Z across G90/G91 — each derived from the manual beside it.
+
+Sources (specs/fanuc.md, specs/turning.md "Sources"):
+
+* [0i] FANUC Series 0i-MODEL D Operator's Manual B-64304EN, "Tool length compensation": the example
+  "Tool length compensation (in boring holes #1, #2, and #3)" with H01 = -4.0 (below, block for block), and
+  parameter 5006#6 TOS = 0 (compensation by moving the axis);
+  "Setting a workpiece coordinate system" (G92): "If IP_ is an incremental command value, the workpiece
+  coordinate system is defined so that the current tool position coincides with the result of adding the
+  specified incremental value to the coordinates of the previous tool position";
+* [0i-T] the same manual for lathes, "Coordinate system setting" (G50): "If a coordinate system is set using
+  G50 during offset, a coordinate system in which the position before offset matches the position specified
+  in G50 is set".
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction as Q
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nczones.gcode import interpret_text
+from nczones.machine import parse_machine
+from nczones.prover import verify_text
+
+from .helpers import ends
+
+# ----------------------------------------------------------------------------------------------- the mill
+
+#: A mill with no work offset (machine = program + tool length on Z), H1 = -4.0 as in the manual's example,
+#: H2 = 100 and H3 = 150.5 (positive lengths), and a vise jaw under the manual's second hole (X150 Y30): its
+#: top at machine Z -75.
+JAW_MILL = """
+[machine]
+name = "0i-MD example mill"
+dialect = "fanuc"
+axes = ["X", "Y", "Z"]
+[machine.rapid]
+X = "10000"
+Y = "10000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[tool_lengths]
+H1 = "-4.0"
+H2 = "100"
+H3 = "150.5"
+[[zones]]
+name = "vise jaw"
+kind = "box"
+forbid = true
+min = { X = "145", Y = "25", Z = "-100" }
+max = { X = "155", Y = "35", Z = "-75" }
+"""
+
+#: [0i] "Tool length compensation", Example (boring holes #1, #2, #3), H01 = -4.0, as printed (N1 is G91).
+MANUAL_EXAMPLE = """\
+O0001
+N1 G91 G00 X120.0 Y80.0
+N2 G43 Z-32.0 H01
+N3 G01 Z-21.0 F1000
+N4 G04 P2000
+N5 G00 Z21.0
+N6 X30.0 Y-50.0
+N7 G01 Z-41.0
+N8 G00 Z41.0
+N9 X50.0 Y30.0
+N10 G01 Z-25.0
+N11 G04 P2000
+N12 G00 Z57.0 H00
+N13 X-200.0 Y-60.0
+N14 M2
+"""
+
+#: The Z move of each block of the example, from the manual's figure: N2 is the increment plus the new
+#: offset minus the old, -32 + (-4 - 0) = -36; N12 cancels with H00 in G43 mode (a bare H, no G43 in the
+#: block), 57 + (0 - (-4)) = +61; the others are their increments.  They sum to 0: the tool is back where it
+#: started.
+MANUAL_Z_MOVES = [-36, -21, 21, -41, 41, -25, 61]
+
+
+def jaw_mill():
+    return parse_machine(JAW_MILL, "jaw.toml")
+
+
+def _segments(text, machine):
+    run = interpret_text(text, machine, file="t.nc")
+    segs = list(run.segments())
+    assert not run.unsupported, run.unsupported
+    return segs
+
+
+def test_manual_tool_length_example_block_for_block():
+    segs = [s for s in _segments(MANUAL_EXAMPLE, jaw_mill()) if s.kind.name != "DWELL"]
+    z = [s.end[2] for s in segs]
+    start = [Q(0)] + z[:-1]
+    dz = [b - a for a, b in zip(start, z) if b != a]
+    assert dz == MANUAL_Z_MOVES
+    assert sum(dz) == 0 and z[-1] == 0
+    # the hole bottoms in machine Z: #1 0 - 36 - 21 = -57, #2 -36 - 41 = -77, #3 -36 - 25 = -61
+    bottoms = {(s.end[0], s.end[1]): s.end[2] for s in segs if s.kind.name == "LINE"}
+    assert bottoms == {(120, 80): -57, (150, 30): -77, (200, 60): -61}
+
+
+#: The same motion written in G90 (program Z = machine Z - (-4) while H01 is active): the reference the G91
+#: program must agree with.
+MANUAL_EXAMPLE_G90 = """\
+N1 G90 G00 X120.0 Y80.0
+N2 G43 Z-32.0 H01
+N3 G01 Z-53.0 F1000
+N5 G00 Z-32.0
+N6 X150.0 Y30.0
+N7 G01 Z-73.0
+N8 G00 Z-32.0
+N9 X200.0 Y60.0
+N10 G01 Z-57.0
+N12 G00 Z0 H00
+N13 X0 Y0
+N14 M2
+"""
+
+
+def test_the_jaw_under_the_second_hole_is_entered_in_g91_as_in_g90():
+    # hole #2 goes to machine Z -77, 2 mm into the jaw whose top is at -75 (nczones read N2 as -32, the
+    # bottom as -73, 2 mm above the jaw, and proved the program safe)
+    m = jaw_mill()
+    for text in (MANUAL_EXAMPLE, MANUAL_EXAMPLE_G90):
+        r = verify_text(text, m)
+        assert r.verdict.label == "unsafe", text
+        assert r.violations[0].zone == "vise jaw"
+    g91 = [s.end for s in _segments(MANUAL_EXAMPLE, m) if s.kind.name != "DWELL"]
+    g90 = [s.end for s in _segments(MANUAL_EXAMPLE_G90, m)]
+    assert g91 == g90
+
+
+def test_the_jaw_example_past_512_motions_and_with_variables():
+    # the vectorized tier (> 512 motions, the fast path taking the plain G91 lines) and the language layer
+    # (a variable in the text) reach the same wrong-then-right point
+    m = jaw_mill()
+    tail = "".join("X1.\nX-1.\n" for _ in range(300))
+    long = MANUAL_EXAMPLE.replace("N14 M2\n", tail + "M2\n")
+    r = verify_text(long, m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "vise jaw"
+    assert r.profile["motions_screened_vectorized"] > 512
+    run = interpret_text(long, m)
+    assert sum(len(c) for c in run) == 613 and run.counts["fast_lines"] >= 600
+    macro = MANUAL_EXAMPLE.replace("N2 G43 Z-32.0 H01", "#1 = -32.0\nN2 G43 Z#1 H01")
+    r = verify_text(macro, m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "vise jaw"
+    # and with the jaw 3 mm lower (top at -78) the real bottom -77 clears it: safe, not a blanket unsafe
+    lower = parse_machine(JAW_MILL.replace('Z = "-75"', 'Z = "-78"'), "jaw.toml")
+    assert verify_text(long, lower).verdict.label == "safe"
+
+
+def test_the_fast_path_leaves_tool_length_blocks_to_the_interpreter():
+    # runs of plain G91 lines between tool length changes (G43 H2, a bare H3, G49 with a Z word): the fast
+    # path and the full interpreter give the same segments, and the last point is the rule's:
+    # +100 (G43 H2), +50.5 (H3), then G91 G49 Z-1. moves -1 - 150.5: Z ends at -1
+    run = "".join("X1.\nX-1.\n" for _ in range(300))
+    text = "G91 G00\nG43 H2\n" + run + "H3\n" + run + "G49 Z-1.\n" + run + "M30\n"
+    m = jaw_mill()
+    fast = interpret_text(text, m, fast=True)
+    fsegs = [(s.kind, s.start, s.end) for s in fast.segments()]
+    full = [(s.kind, s.start, s.end) for s in interpret_text(text, m, fast=False).segments()]
+    assert fsegs == full and fast.counts["fast_lines"] >= 600
+    assert fsegs[-1][2] == (0, 0, -1)
+
+
+def test_g44_and_g49_with_an_incremental_tool_axis_word():
+    m = jaw_mill()
+    # G91 G44 Z-32. H2 from Z0: -32 + (-100 - 0) = -132 (nczones moved -32: a whole tool length short)
+    assert ends("G91 G00 G44 Z-32. H2\n", m) == [(0, 0, -132)]
+    # G43 H2 alone moves +100 (TOS = 0); G91 G49 Z-10.: -10 + (0 - 100) = -110, ending at Z -10
+    assert ends("G43 H2\nG91 G00 G49 Z-10.\n", m) == [(0, 0, 100), (0, 0, -10)]
+    # G91 G01 G43 Z5. H3 after G43 H2 (at 100): 5 + (150.5 - 100) = 55.5, ending at 155.5
+    assert ends("G43 H2\nG91 G01 G43 Z5. H3 F100.\n", m) == [(0, 0, 100), (0, 0, Q("155.5"))]
+    # in G90 the tool axis word names the position with the new length: G90 G43 Z-32. H2 -> -32 + 100
+    assert ends("G90 G00 G43 Z-32. H2\n", m) == [(0, 0, 68)]
+
+
+def test_g43_without_a_tool_axis_word_moves_the_tool_axis_by_the_change():
+    # TOS = 0 ([0i] "Tool length compensation": compensation by moving the axis): G43 H2 with only an X word
+    # moves Z by +100 in the same block, in G90 and in G91 alike; G49 alone moves back by -100
+    m = jaw_mill()
+    assert ends("G91 G00 G43 H2 X10.\nG49\n", m) == [(10, 0, 100), (10, 0, 0)]
+    assert ends("G90 G00 G43 H2 X10.\nG49\n", m) == [(10, 0, 100), (10, 0, 0)]
+
+
+def test_a_bare_h_switches_the_offset_in_g43_and_g44_mode():
+    m = jaw_mill()
+    # G43 mode: H3 alone switches 100 -> 150.5 (a move of +50.5); H0 cancels the length (the manual's N12)
+    assert ends("G43 H2\nH3\nH0\n", m) == [(0, 0, 100), (0, 0, Q("150.5")), (0, 0, 0)]
+    # G44 mode: the lengths are subtracted: -100, then -150.5
+    assert ends("G44 H2\nH3\n", m) == [(0, 0, -100), (0, 0, Q("-150.5"))]
+    # G49 mode: an H word alone changes nothing (no tool length compensation is active)
+    assert ends("G49 H2\nH3\nG0 Z1.\n", m) == [(0, 0, 1)]
+    # with an absolute tool axis word in the block: the word names the position with the new length
+    assert ends("G90 G43 H2\nG0 Z5. H3\n", m) == [(0, 0, 100), (0, 0, Q("155.5"))]
+
+
+def test_a_bare_h_reaches_a_zone_nczones_missed():
+    # G43 H2 at Z0 (machine 100), then H3: the real spindle goes to 150.5, into a guard above 120
+    text = "G90 G00 G43 Z0 H2\nX10.\nH3\nX20.\n"
+    guard = JAW_MILL + '[[zones]]\nname = "guard"\nkind = "box"\nforbid = true\nmin = { X = "5", Y = "-5", ' \
+        'Z = "120" }\nmax = { X = "15", Y = "5", Z = "200" }\n'
+    r = verify_text(text, parse_machine(guard, "guard.toml"))
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "guard"
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(["G43", "G44", "G49", ""]), st.sampled_from(["H0", "H1", "H2", "H3", ""]),
+                          st.integers(-50, 50)), min_size=1, max_size=6))
+def test_incremental_and_absolute_twins_reach_the_same_points(steps):
+    # metamorphic: the rule "machine Z = program Z + active length" makes a G91 program and its G90 twin
+    # (each tool axis word the running program Z) end every block at the same machine point
+    lengths = {0: Q(0), 1: Q("-4"), 2: Q(100), 3: Q("150.5")}
+    mode, reg = "G49", None
+    prog_z = Q(0)
+    g91, g90 = ["G91 G00"], ["G90 G00"]
+    for code, h, dz in steps:
+        if code:
+            mode = code
+        if mode == "G49":
+            h = ""
+        if code in ("G43", "G44") and reg is None and not h:
+            h = "H0"
+        if h:
+            reg = int(h[1:])
+        if code == "G49":
+            reg = None
+        prog_z += dz
+        g91.append(f"{code} Z{dz}. {h}")
+        g90.append(f"{code} Z{prog_z}. {h}")
+    m = jaw_mill()
+    a = ends("\n".join(g91) + "\n", m)
+    b = ends("\n".join(g90) + "\n", m)
+    assert a == b
+    sign = {"G43": 1, "G44": -1, "G49": 0}[mode]
+    assert a[-1][2] == prog_z + (sign * lengths[reg] if reg is not None else 0)
