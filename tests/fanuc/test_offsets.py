@@ -24,6 +24,7 @@ from hypothesis import strategies as st
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.turning.helpers import lathe, moves
 
 from .helpers import ends
 
@@ -241,3 +242,68 @@ def test_incremental_and_absolute_twins_reach_the_same_points(steps):
     assert a == b
     sign = {"G43": 1, "G44": -1, "G49": 0}[mode]
     assert a[-1][2] == prog_z + (sign * lengths[reg] if reg is not None else 0)
+
+
+# ------------------------------------------------------------------------------------------------ G92 in G91
+
+
+def test_g92_in_g91_adds_the_increment_to_the_current_reading():
+    # G54 X = 100 (tests/fanuc/helpers.py).  G90 G54 X1.: machine 101, reading 1.  G91 G92 X5.: the reading
+    # becomes 1 + 5 = 6 at machine 101, so the G92 shift is -5 and G90 X0 goes to 0 + 100 - 5 = 95.
+    # (Read as absolute, the reading would be 5: shift -4, X0 at 96.)
+    assert ends("G90 G54 G0 X1.\nG91 G92 X5.\nG90 X0\n") == [(101, 0, 0), (95, 0, 0)]
+    # G92 in G90 afterwards sets the reading absolutely again: at 95 (reading 0) G90 G92 X10. -> shift
+    # 95 - 100 - 10 = -15, X0 at 85
+    assert ends("G90 G54 G0 X1.\nG91 G92 X5.\nG90 X0\nG92 X10.\nX0\n")[-1] == (85, 0, 0)
+    # on the tool axis with a tool length active the same rule holds: Z reads its reading plus the increment
+    # (G54 Z -200, EXT Z 1, H1 100: G43 Z0 H1 -> machine -99, reading 0; G91 G92 Z2. -> reading 2;
+    # G90 Z0 -> -101)
+    assert ends("G90 G54 G0 G43 Z0 H1\nG91 G92 Z2.\nG90 Z0\n") == [(0, 0, -99), (0, 0, -101)]
+
+
+def test_g92_in_g91_reaches_a_zone_nczones_missed():
+    m = parse_machine(JAW_MILL.replace('[tool_lengths]', '[offsets]\nG54 = { X = "100" }\n[tool_lengths]')
+                      + '[[zones]]\nname = "stop"\nkind = "box"\nforbid = true\nmin = { X = "90", Y = "10", '
+                        'Z = "-5" }\nmax = { X = "95.5", Y = "20", Z = "5" }\n', "g92.toml")
+    # the approach at Y0 passes below the stop; at Y15 the tool goes to X 95 (reading 0), inside it (read as
+    # absolute, X 96: outside)
+    r = verify_text("G90 G54 G0 X1.\nG91 G92 X5.\nG90 Y15.\nX0\n", m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "stop"
+
+
+# ------------------------------------------------------------------------------------ lathe G50 with offset
+
+
+def test_lathe_g50_during_a_tool_offset_sets_the_position_before_offset_on_both_axes():
+    # The lathe stands at machine X200 Z200 (radius); tool offset 1 is X+80 (radius) Z+50, "shift" (T0101
+    # does not move).  G50 X100. Z50.: the position before offset (the machine position less the work
+    # shifts, without the tool offset) reads X100 (radius 50) and Z50, so the work shift is X 200 - 50 = 150,
+    # Z 200 - 50 = 150, and with the tool offset X00 Z0 goes to X 20 + 150 + 80 = 250, Z 0 + 150 + 50 = 200.
+    # (nczones read Z as the offset tip: shift 100, Z0 at 150; X was already by this rule.)
+    m = lathe(offsets='1 = { X = "80", Z = "50" }')
+    assert moves("T0101\nG50 X100. Z50.\nG00 X40. Z0\n", m) == [("", Q(200), Q(250))]
+    # each axis alone, by the same rule
+    assert moves("T0101\nG50 X100.\nG00 X40.\n", m) == [("", Q(200), Q(250))]
+    assert moves("T0101\nG50 Z50.\nG00 Z0\n", m) == [("", Q(200), Q(200))]
+    # without an offset the rule is the old one: X 20 + 150 = 170, Z 0 + 150 = 150
+    assert moves("G50 X100. Z50.\nG00 X40. Z0\n", m) == [("", Q(150), Q(170))]
+
+
+def test_lathe_g50_u_w_shift_the_reading_by_the_increment():
+    # after G50 X100. Z50. (as above, work shift X150 Z150 + offset), G50 U10. W-5.: the readings become
+    # X110 (radius +5) and Z45, so the shifts fall by 5 (X) and -5 (Z): X40. Z0 -> X 20 + 145 + 80 = 245,
+    # Z 0 + 155 + 50 = 205
+    m = lathe(offsets='1 = { X = "80", Z = "50" }')
+    assert moves("T0101\nG50 X100. Z50.\nG50 U10. W-5.\nG00 X40. Z0\n", m) == [("", Q(205), Q(245))]
+    # system B: G92 in G91 (U and W do not exist), the same rule
+    mb = lathe(offsets='1 = { X = "80", Z = "50" }', fanuc='gcode_system = "B"')
+    assert moves("T0101\nG90 G92 X100. Z50.\nG91 G92 X10. Z-5.\nG90 G00 X40. Z0\n", mb) == [
+        ("", Q(205), Q(245))]
+
+
+def test_lathe_g50_during_offset_reaches_a_zone_nczones_missed():
+    zones = ('[[zones]]\nname = "steady"\nkind = "box"\nforbid = true\nmin = { X = "240", Z = "195" }\n'
+             'max = { X = "260", Z = "205" }\n')
+    m = lathe(offsets='1 = { X = "80", Z = "50" }', zones=zones)
+    r = verify_text("T0101\nG50 X100. Z50.\nG00 X40. Z0\n", m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "steady"

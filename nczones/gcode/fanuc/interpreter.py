@@ -1013,18 +1013,34 @@ class FanucInterpreter(Interpreter):
                    centre=(machine_centre[ia], machine_centre[ib]), turns=turns, end_deps=deps)
         self.prog, self.prog_deps = p, pd
 
-    def _g92(self, axis_words: AxisWords, w: Word) -> None:
-        """G92: the workpiece systems are shifted so the current position reads the given values."""
+    #: G92 (G50 on a lathe) during a tool length offset sets the position *before* the offset to the value
+    #: (the lathe: [0i-T] "If a coordinate system is set using G50 during offset, a coordinate system in which
+    #: the position before offset matches the position specified in G50 is set"); the mill keeps the
+    #: tool tip reading the value
+    g92_before_offset = False
+
+    def _g92(self, axis_words: AxisWords, w: Word, incremental: set[int] | None = None) -> None:
+        """G92: the workpiece systems are shifted so the current position reads the given values.
+
+        In G91 (or, on a lathe, by U/W: the axes of ``incremental``) a value is an increment: the current
+        position then reads its previous reading plus the increment ([0i] "Setting a workpiece coordinate
+        system", method using G92: "If IP_ is an incremental command value, the workpiece coordinate system
+        is defined so that the current tool position coincides with the result of adding the specified
+        incremental value to the coordinates of the previous tool position"), so the G92 shift falls by the
+        increment and nothing else changes."""
         if not axis_words:
             raise self.error("GC208", "G92 needs at least one axis word", w)
         ext = self.g5x["EXT"]
         for i, aw in axis_words:
-            tl = self.tlo if i == self.tool_axis else _ZERO
+            if (not self.absolute) if incremental is None else i in incremental:
+                self.g92[i] = self.g92[i] - self._mm(aw.value, i)  # the dependencies stay those of the old shift
+                continue
+            tl = self.tlo if i == self.tool_axis and not self.g92_before_offset else _ZERO
             self.g92[i] = self.pos[i] - ext[i] - self.g5x[self.wcs][i] - self.g52[i] - tl - self._mm(aw.value, i)
             if self.track:
                 d = dadd(dadd(self.dep_pos[i], self.dep_g5x[self.wcs][i], -1), self.dep_g5x["EXT"][i], -1)
                 d = dadd(d, self.dep_g52[i], -1)
-                if i == self.tool_axis:
+                if i == self.tool_axis and not self.g92_before_offset:
                     d = dadd(d, self.dep_tlo, -1)
                 self.dep_g92[i] = d
         self.recompute_offsets()
@@ -1053,6 +1069,8 @@ class FanucInterpreter(Interpreter):
         for letter in ("R", "Z", "Q", "P"):
             if letter in words:
                 data[letter] = words[letter].value
+                if letter in "RZ":
+                    data[letter + "90"] = self.absolute  # the distance mode the value was written in
         kw = words.get("K") or words.get("L")
         reps = 1
         if kw is not None:

@@ -158,6 +158,9 @@ class FanucLatheInterpreter(FanucInterpreter):
     """
 
     shape_codes = SHAPE_CODES
+    #: [0i-T] "Coordinate system setting": G50 during a tool offset sets the position before the offset, on
+    #: X and Z alike
+    g92_before_offset = True
 
     def __init__(self, machine: Machine, **kwargs: Any):
         self.lathe_off: dict[int, Fraction] = {}
@@ -681,12 +684,11 @@ class FanucLatheInterpreter(FanucInterpreter):
                 raise self.error("GC208", f"{gname(500 if self.system == 'A' else 920)} needs axis words (the "
                                   "coordinate system) or S (the spindle speed clamp)", w)
             return  # the spindle speed clamp: no effect on motion
-        if any(inc for _i, _v, inc, _w in targets):
-            # G50 U W shifts the coordinate system by the increments (0i-TD "Coordinate system setting")
-            self.unknown(gname(500 if self.system == "A" else 920), "a coordinate system shift by U/W is not "
-                          "modelled", w)
-            return
-        self._g92(self._normalised(targets), w)
+        # U/W (system A) or G91 (system B): the current position reads its previous reading plus the
+        # increment ([0i-T] "Coordinate system setting"; FanucInterpreter._g92)
+        axis_words = self._normalised(targets)
+        incremental = {i for (i, _v, inc, _w) in targets if inc}
+        self._g92(axis_words, w, incremental)
 
     def _lathe_motion(self, block: Block, targets: list, words: dict[str, Word]) -> None:
         motion = self.motion
