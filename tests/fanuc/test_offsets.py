@@ -26,7 +26,7 @@ from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from tests.turning.helpers import lathe, moves
 
-from .helpers import ends
+from .helpers import ends, mill
 
 # ----------------------------------------------------------------------------------------------- the mill
 
@@ -307,3 +307,20 @@ def test_lathe_g50_during_offset_reaches_a_zone_nczones_missed():
     m = lathe(offsets='1 = { X = "80", Z = "50" }', zones=zones)
     r = verify_text("T0101\nG50 X100. Z50.\nG00 X40. Z0\n", m)
     assert r.verdict.label == "unsafe" and r.violations[0].zone == "steady"
+
+
+# ------------------------------------------------------------------------- canned cycle R/Z across G90/G91
+
+
+def test_canned_cycle_r_z_kept_across_a_distance_mode_change_is_unknown():
+    # R and Z given in G90, the next hole in G91 without them: the manual does not say whether the stored
+    # numbers are read again as increments or keep the levels they named
+    run = interpret_text("G90 G54 G0 X0 Y0 Z10.\nG99 G81 X1. R2. Z-5. F100.\nG91 X1.\nG80\n", mill(), file="t.nc")
+    list(run.segments())
+    assert run.unsupported and run.unsupported[0].code == "G81"
+    assert "G90" in run.unsupported[0].reason and "G91" in run.unsupported[0].reason
+    # given again after the change: modelled (R from the initial level, Z from R)
+    run = interpret_text("G90 G54 G0 X0 Y0 Z10.\nG99 G81 X1. R2. Z-5. F100.\nG91 X1. R-8. Z-7.\nG80\n", mill(),
+                         file="t.nc")
+    list(run.segments())
+    assert not run.unsupported

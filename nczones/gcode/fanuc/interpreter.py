@@ -1082,6 +1082,17 @@ class FanucInterpreter(Interpreter):
             self.unknown(name, f"{name} without {' and '.join(missing)} (R point, hole bottom) given since the cycle "
                           "began: what the control then uses is not stated in the manuals")
             return
+        switched = [letter for letter in ("R", "Z") if data.get(letter + "90", self.absolute) != self.absolute]
+        if switched:
+            # the manual reads R and Z by the distance mode of the block ("Canned cycle for drilling": in G91,
+            # R from the initial level, Z from R) but does not say what a value kept from a block in the other
+            # mode means after G90/G91 changes: the number again in the new mode, or the level it named
+            written = "G90" if data[switched[0] + "90"] else "G91"
+            self.unknown(name, f"{' and '.join(switched)} kept from a block in {written}, used in "
+                          f"{'G90' if self.absolute else 'G91'}: whether the control reads the stored value in the "
+                          "new distance mode or keeps the level it named is not stated in the manuals; give "
+                          f"{' and '.join(switched)} again after the change")
+            return
         if k in (730, 830) and any(x in words for x in "IJ"):
             self.unknown(name, f"{name} with I or J: Haas's variable-peck mode is not modelled (on Fanuc K is "
                           "the repeat count)")
