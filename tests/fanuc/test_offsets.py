@@ -324,3 +324,38 @@ def test_canned_cycle_r_z_kept_across_a_distance_mode_change_is_unknown():
                          file="t.nc")
     list(run.segments())
     assert not run.unsupported
+
+
+# ------------------------------------------------------------------- what the manuals leave open: unknown
+
+
+def _unknown(text, machine):
+    run = interpret_text(text, machine, file="t.nc")
+    list(run.segments())
+    return run.unsupported[0] if run.unsupported else None
+
+
+def test_shift_type_length_change_then_an_incremental_tool_axis_move_is_unknown():
+    # tool_length_motion = "shift" (TOS = 1): the next tool axis move takes the change; whether an
+    # incremental one carries it (as the TOS = 0 example does) is not stated: unknown, in every lane
+    m = parse_machine(JAW_MILL + '[fanuc]\ntool_length_motion = "shift"\n', "shift.toml")
+    u = _unknown("G90 G43 H2\nG91 G00 Z-10.\n", m)
+    assert u is not None and u.code == "G43" and "shift" in u.reason
+    assert _unknown("G91 G00 G44 Z-10. H2\n", m).code == "G44"
+    # past 512 lines (the fast path and the plain-move lane must not take the G91 Z lines either)
+    run = "".join("Z1.\nZ-1.\n" for _ in range(300))
+    assert _unknown("G90 G43 H2\nG91 G00\n" + run, m) is not None
+    # an absolute tool axis move takes it (5 + 100 = 105); incremental moves after that are increments
+    assert ends("G90 G43 H2\nG00 Z5.\nG91 Z-10.\n", m) == [(0, 0, 105), (0, 0, 95)]
+    # X/Y moves in G91 do not touch it
+    assert ends("G90 G43 H2\nG91 X5.\nG90 Z0\n", m) == [(5, 0, 0), (5, 0, 100)]
+
+
+def test_mill_g92_on_the_tool_axis_with_a_tool_length_is_unknown():
+    # the lathe's G50 sets the position before offset; the mill's reading (nczones: the tool tip) is not
+    # confirmed by a manual sentence, and the two differ by the tool length
+    m = jaw_mill()
+    u = _unknown("G90 G43 H2 Z0\nG92 Z10.\nG0 Z0\n", m)
+    assert u is not None and u.code == "G92" and "tool length" in u.reason
+    # without a length, on the other axes, or incremental (both readings add the increment): modelled
+    assert _unknown("G90 G49 Z0\nG92 Z10.\nG43 H2 X1. Y1.\nG92 X0 Y0\nG91 G92 Z1.\n", m) is None

@@ -212,6 +212,8 @@ class FanucInterpreter(Interpreter):
         self.d_wear: dict[int, Fraction] = {}
         self._tlo_shift: Fraction | None = None  # a tool length change the block's move must carry out
         self._tlo_shift_deps: dict | None = None
+        #: with tool_length_motion = "shift": a length change no absolute tool axis move has taken yet
+        self._tlo_untaken = False
         self.references = {1: tuple(machine.reference)}
         self.references.update(machine.fanuc.references)
         self.after_home: set[int] = set()  # axes returned by G28/G30 while a tool length offset was active
@@ -262,7 +264,8 @@ class FanucInterpreter(Interpreter):
 
     def fast_state_ok(self) -> bool:
         """Nothing the vectorized fast path does not model is active."""
-        return self.cycle is None and self._tlo_shift is None and not self.after_home and self.prog is None
+        return self.cycle is None and self._tlo_shift is None and not self.after_home and self.prog is None \
+            and not self._tlo_untaken
 
     @property
     def modal_flags(self) -> dict[int, bool]:
@@ -272,7 +275,8 @@ class FanucInterpreter(Interpreter):
 
     # ------------------------------------------------------------------ the plain-move lane
     def _lean(self, g: int | None, m: int | None, f: Any, extra: int, s: Any = None) -> bool:
-        if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None:
+        if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None \
+                or self._tlo_untaken:
             return False
         if m is not None and m not in (3, 4, 5, 7, 8, 9):
             return False
@@ -432,6 +436,18 @@ class FanucInterpreter(Interpreter):
                 and not (g0 and g0[0] in (280, 300, 530)) and 8 not in groups:
             self.unknown("G28", "the tool axis moves after G28/G30 returned it with a tool length offset active: "
                           "whether the offset is still applied depends on the control's parameters", axis_words[0][1])
+        if self._tlo_untaken and not transform_axes and not (g0 and g0[0] in (100, 520, 920)) and (
+                self.cycle is not None or any(i == self.tool_axis for i, _ in axis_words)):
+            if not self.absolute:
+                # TOS = 1: the next tool axis move takes the change ([0i] "Tool length compensation"); for an
+                # incremental one the manuals do not say whether the increment carries it
+                code = "G49" if self.tool_register is None else "G43" if self.tlo_sign > 0 else "G44"
+                self.unknown(code, "an incremental tool axis move after a tool length change "
+                              "with tool_length_motion = \"shift\" (parameter 5006#6 TOS = 1): whether the move "
+                              "carries the change is not stated in the manuals; move the tool axis in G90 first",
+                              axis_words[0][1] if axis_words else None)
+            elif not (g0 and g0[0] == 530):
+                self._tlo_untaken = False
         if not uses_axes:
             moving = bool(axis_words) or (g1 is not None and g1[0] in (20, 30))
             if self.cycle is not None and (axis_words or "R" in words) and g1 is None:
@@ -498,6 +514,8 @@ class FanucInterpreter(Interpreter):
             if self.settings.tool_length_motion == "move":
                 self._tlo_shift = self.tlo - old
                 self._tlo_shift_deps = dadd(self.dep_tlo, old_deps, -1) if self.track else None
+            else:
+                self._tlo_untaken = True
             self.after_home.discard(self.tool_axis)
         elif self.tool_axis is not None:
             self.after_home.discard(self.tool_axis)
@@ -1035,6 +1053,14 @@ class FanucInterpreter(Interpreter):
             if (not self.absolute) if incremental is None else i in incremental:
                 self.g92[i] = self.g92[i] - self._mm(aw.value, i)  # the dependencies stay those of the old shift
                 continue
+            if i == self.tool_axis and not self.g92_before_offset and (self.tlo or self.dep_tlo):
+                # the lathe manual sets the position *before* the offset to a G50 value; the mill reading
+                # (the tool tip, as nczones' G92 sets it) is not confirmed by a manual sentence, and the two
+                # differ by the tool length
+                self.unknown("G92", "G92 on the tool axis while a tool length offset is active: whether the "
+                              "value is the position with or without the tool length is not confirmed for "
+                              "Fanuc mills (the lathe manual sets the position before offset); cancel the "
+                              "offset (G49) first or leave the tool axis out of G92", w)
             tl = self.tlo if i == self.tool_axis and not self.g92_before_offset else _ZERO
             self.g92[i] = self.pos[i] - ext[i] - self.g5x[self.wcs][i] - self.g52[i] - tl - self._mm(aw.value, i)
             if self.track:
