@@ -15,9 +15,11 @@ dependency tracking) and changes what differs (``specs/fanuc.md``):
   tool length``, where the transform is polar coordinates (G16), scaling
   (G51), programmable mirror image (G51.1) and rotation (G68), applied in
   that order about their centres in the workpiece system;
-* a tool length change (G43/G44 H, G49) moves the tool axis at once
-  (parameter 5006#6 TOS = 0, ``[fanuc] tool_length_motion = "move"``), with
-  the block's move or alone;
+* a tool length change (G43/G44 H, G49, or a bare H in G43/G44 mode) moves
+  the tool axis at once (parameter 5006#6 TOS = 0, ``[fanuc]
+  tool_length_motion = "move"``), with the block's move or alone; an
+  incremental tool axis word moves by the increment plus the change;
+* G92 in G91 adds the increment to the current reading;
 * canned cycles are group 09: position at the current level, rapid to R,
   the cycle, back to the initial level (G98) or R (G99); K repeats; P dwell
   in milliseconds; G73 and G83 with the retract/clearance of parameters 5114
