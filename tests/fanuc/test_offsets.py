@@ -88,8 +88,8 @@ def jaw_mill():
     return parse_machine(JAW_MILL, "jaw.toml")
 
 
-def _segments(text, machine):
-    run = interpret_text(text, machine, file="t.nc")
+def _segments(text, machine, **options):
+    run = interpret_text(text, machine, file="t.nc", **options)
     segs = list(run.segments())
     assert not run.unsupported, run.unsupported
     return segs
@@ -359,3 +359,32 @@ def test_mill_g92_on_the_tool_axis_with_a_tool_length_is_unknown():
     assert u is not None and u.code == "G92" and "tool length" in u.reason
     # without a length, on the other axes, or incremental (both readings add the increment): modelled
     assert _unknown("G90 G49 Z0\nG92 Z10.\nG43 H2 X1. Y1.\nG92 X0 Y0\nG91 G92 Z1.\n", m) is None
+
+
+# --------------------------------------------------------------------------------------- a real program
+
+STROKE = "serial-number-macro/work/cambam stick 2/numbers_0.nc"
+
+
+def test_a_cam_stroke_written_in_g91_engraves_at_the_tool_length_plane():
+    # A CamBam post's engraving stroke (corpus, GPL-3.0), run entirely in G91 and inch:
+    #   G91 G0 X0.1392 Y-0.4606 / G43 Z0.25 H1 / G1 Z-0.254 F5. / arcs / G0 Z0.254 / G28 G91 Z0.0
+    # With H1 = -12 in (-304.8 mm: the tool tip 12 in below the spindle's home reading) the G43 block moves
+    # 0.25 in + (-12 in - 0) = -11.75 in (-298.45 mm), the plunge ends 0.254 in lower at -304.9016 mm: 0.004 in
+    # (0.1016 mm) below the H1 plane, the engraving depth the program means.  (Read without the change, the
+    # stroke was engraved 0.25 in above the spindle's start, in the air.)
+    import pytest
+
+    from tests.corpus import CORPUS
+
+    path = CORPUS / STROKE
+    if not path.is_file():
+        pytest.skip("corpus not available")
+    m = parse_machine(JAW_MILL.replace('H1 = "-4.0"', 'H1 = "-304.8"').split("[[zones]]")[0], "inch.toml")
+    # (some arc end points are off their circles by more than the default 0.002 mm: the post rounds to 0.0001 in)
+    segs = _segments(path.read_text(encoding="utf-8"), m, arc_tolerance="0.005")
+    z = [s.end[2] for s in segs]
+    assert min(z) == Q("-304.9016")
+    assert Q("-298.45") in z and z[-1] == 0  # the approach level, and home at the end (G28 Z)
+    cut = [s for s in segs if s.kind.name == "ARC"]
+    assert cut and all(s.end[2] == Q("-304.9016") for s in cut)
