@@ -388,3 +388,14 @@ def test_a_cam_stroke_written_in_g91_engraves_at_the_tool_length_plane():
     assert Q("-298.45") in z and z[-1] == 0  # the approach level, and home at the end (G28 Z)
     cut = [s for s in segs if s.kind.name == "ARC"]
     assert cut and all(s.end[2] == Q("-304.9016") for s in cut)
+
+
+def test_a_reference_return_in_the_block_of_a_tool_length_change_in_g91_is_unknown():
+    # G91 G28 Z0 G49 with G43 H2 active: the G00 rule would put the intermediate point 100 mm lower; whether
+    # a reference return's intermediate point carries the change is not stated: unknown
+    m = jaw_mill()
+    u = _unknown("G90 G43 H2 Z0\nG91 G28 Z0 G49\n", m)
+    assert u is not None and u.code == "G28"
+    # in separate blocks the return is modelled as before: G28 Z0 in G91, the intermediate point where the
+    # tool stands (100), then the reference (0)
+    assert ends("G90 G43 H2 Z0\nG91 G28 Z0\nG49\n", m)[:3] == [(0, 0, 100), (0, 0, 100), (0, 0, 0)]
