@@ -347,6 +347,8 @@ def test_shift_type_length_change_then_an_incremental_tool_axis_move_is_unknown(
     assert _unknown("G90 G43 H2\nG91 G00\n" + run, m) is not None
     # an absolute tool axis move takes it (5 + 100 = 105); incremental moves after that are increments
     assert ends("G90 G43 H2\nG00 Z5.\nG91 Z-10.\n", m) == [(0, 0, 105), (0, 0, 95)]
+    # a G90 block without a tool axis word does not take it
+    assert _unknown("G90 G43 H2\nX5.\nG91 Z-1.\n", m) is not None
     # X/Y moves in G91 do not touch it
     assert ends("G90 G43 H2\nG91 X5.\nG90 Z0\n", m) == [(5, 0, 0), (5, 0, 100)]
 

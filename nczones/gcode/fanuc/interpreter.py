@@ -448,8 +448,8 @@ class FanucInterpreter(Interpreter):
                               "with tool_length_motion = \"shift\" (parameter 5006#6 TOS = 1): whether the move "
                               "carries the change is not stated in the manuals; move the tool axis in G90 first",
                               axis_words[0][1] if axis_words else None)
-            elif not (g0 and g0[0] == 530):
-                self._tlo_untaken = False
+            elif not (g0 and g0[0] == 530) and any(i == self.tool_axis for i, _ in axis_words):
+                self._tlo_untaken = False  # an absolute tool axis word (not G53) takes the change
         if not uses_axes:
             moving = bool(axis_words) or (g1 is not None and g1[0] in (20, 30))
             if self.cycle is not None and (axis_words or "R" in words) and g1 is None:
