@@ -393,6 +393,13 @@ class FanucInterpreter(Interpreter):
         if g0 is not None and self.prog is not None and g0[0] in (100, 270, 280, 290, 300, 520, 530, 920, 921):
             self.unknown(gname(g0[0]), f"{gname(g0[0])} while a coordinate transform (G68, G51, G51.1, G16) is "
                           "active is not modelled", g0[1])
+        if g0 is not None and g0[0] in (270, 280, 290, 300) and self._tlo_shift is not None and not self.absolute \
+                and any(i == self.tool_axis for i, _ in axis_words):
+            # the G00 rule (increment + change) is the manual's; for the intermediate point of a reference
+            # return the manuals do not say it, and a cancel in the return block may act at the reference
+            self.unknown(gname(g0[0]), f"{gname(g0[0])} with an incremental tool axis word in the block of a tool "
+                          "length change: whether the intermediate point carries the change is not stated in the "
+                          "manuals; change the tool length in another block", g0[1])
         if g0 is not None:
             k = g0[0]
             uses_axes = uses_axes or k in (40, 100, 270, 280, 290, 300, 520, 530, 920)
