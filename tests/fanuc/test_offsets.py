@@ -58,7 +58,9 @@ min = { X = "145", Y = "25", Z = "-100" }
 max = { X = "155", Y = "35", Z = "-75" }
 """
 
-#: [0i] "Tool length compensation", Example (boring holes #1, #2, #3), H01 = -4.0, as printed (N1 is G91).
+#: [0i] "Tool length compensation", Example (boring holes #1, #2, #3), H01 = -4.0, transcribed from the
+#: manual (no copy of it is stored with the project: the issue quotes N2 as ``G91 G00 G43 Z-32.0 H01``, here
+#: G91 G00 are modal from N1, and N12 as ``G00 Z57.0 H00``; the Z moves below sum to 0 as the issue says).
 MANUAL_EXAMPLE = """\
 O0001
 N1 G91 G00 X120.0 Y80.0
