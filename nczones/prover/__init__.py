@@ -174,13 +174,16 @@ def verify(
     ``kind == "recovery"``.
 
     ``block_delete`` (default: the machine file's ``block_delete``, itself
-    ``"both"`` by default) says which positions of the block-delete switch
-    the proof covers: ``"both"`` verifies a program that has lines starting
-    with ``/`` with the switch off (the lines run) and on (they are
-    skipped); a violation found in one position only names it
-    (``Violation.switches``).  ``"off"``/``"on"`` fix the switch.  The notes
-    of a program with ``/`` lines say what was verified; stops (M0, M1,
-    M60) are noted too.
+    ``"both"`` by default) says which positions of the block-delete switches
+    the proof covers (:mod:`nczones.blockskip`; Fanuc ``/1`` .. ``/9``,
+    LinuxCNC one switch): ``"both"`` verifies a program that has lines
+    starting with ``/`` with each switch it uses off (the lines run) and on
+    (they are skipped), in every combination (:func:`switch_combinations`,
+    past :data:`MAX_SWITCH_COMBINATIONS` unknown, VF206); a violation names
+    the positions of the switches it depends on (``Violation.switches``).
+    ``"off"``/``"on"`` fix every switch, ``"1=on,2=off"`` single ones.  The
+    notes of a program with ``/`` lines say what was verified; stops (M0,
+    M1, M60) are noted too.
 
     ``dialect`` overrides the machine's ``[machine] dialect`` (``"linuxcnc"``
     or ``"fanuc"``, ``specs/fanuc.md``); ``library`` is a folder of Fanuc
