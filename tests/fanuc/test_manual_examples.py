@@ -356,8 +356,9 @@ def drill(holes, *, initial, r, z, retract, feed_out=False, shift=None, pecks=No
     at rapid at the current level; 2 rapid to the R point; 3 the hole (feed; ``pecks``: the depths of
     the cuts and how the tool comes back between them); 4 at the bottom; 5 back at rapid to the
     initial level (G98) or to R (G99) — the manual's figures draw the G98 return from the bottom straight
-    to the initial level — or with ``feed_out`` at feed to R, then (G98) at rapid to the initial level.
-    ``holes``: (x, y, G98?)."""
+    to the initial level (so does a third-party transcription of the operations, zanotowane.pl "G81
+    Drilling Spot Boring": "Op 4) Rapid traverse to Initial level (G98) or R point level (G99)") — or
+    with ``feed_out`` at feed to R, then (G98) at rapid to the initial level.  ``holes``: (x, y, G98?)."""
     moves, level = [], initial
     for x, y, g98 in holes:
         moves.append(("R", P(x, y, level)))
