@@ -334,10 +334,29 @@ def _verify(
                            machine_sha256=machine.sha256, settings=tuple(settings.items()), file=source.name)
     free, combos, complete = switch_combinations(used, modes)
     per_position: list[tuple[Result, Interpretation]] = []
+    seen: set[int] = set()
     for skip in combos:
-        per_position.append(_verify_cases(source, machine, ranges, skip, extra, opts))
-        if per_position[-1][0].interrupted:  # Ctrl-C: the other combinations are not verified
+        case_result, case_run, case_seen = _verify_cases(source, machine, ranges, skip, extra, opts)
+        per_position.append((case_result, case_run))
+        seen |= case_seen
+        if case_result.interrupted:  # Ctrl-C: the other combinations are not verified
             break
+    unseen = sorted(n for n in seen - set(used) if modes[n] == "both")
+    if unseen and not any(r.interrupted for r, _ in per_position):
+        # a switch only a library program uses (the main text does not show it): verified again with it
+        # among the free switches (a third switch met only then is not: VF206 below)
+        used = {**used, **{n: [] for n in unseen}}
+        free, combos, complete = switch_combinations(used, modes)
+        per_position, seen = [], set()
+        for skip in combos:
+            case_result, case_run, case_seen = _verify_cases(source, machine, ranges, skip, extra, opts)
+            per_position.append((case_result, case_run))
+            seen |= case_seen
+            if case_result.interrupted:
+                break
+        if seen - set(used) and any(modes[n] == "both" for n in seen - set(used)):
+            complete = False
+            free = sorted(set(free) | {n for n in seen - set(used) if modes[n] == "both"})
     result, first_run = per_position[0]
     if len(combos) > 1:
         result = _merge_switch_combinations([(c, r) for c, (r, _) in zip(combos, per_position)], free, complete,
@@ -346,7 +365,8 @@ def _verify(
     violations, reasons, notes = list(result.violations), list(result.reasons), result.notes
     if not complete:
         reasons.append(_combinations_reason(free))
-    notes += _switch_notes(used, modes, free, complete, first_run.interpreter.stops)
+    notes += _switch_notes({**{n: [] for n in seen if n not in used}, **used}, modes, free, complete,
+                           first_run.interpreter.stops)
     if recovery is not None and not interrupted:
         from .recovery import verify_recovery
 
@@ -439,11 +459,13 @@ def switch_combinations(used: dict[int, list[int]], modes: dict[int, str]
 
     >>> switch_combinations({2: [3], 5: [7]}, {n: "both" for n in range(1, 10)})[1]
     [frozenset(), frozenset({2}), frozenset({5}), frozenset({2, 5})]
-    >>> switch_combinations({2: [3], 5: [7]}, {**{n: "both" for n in range(1, 10)}, 5: "on"})[:2]
-    ([2], [frozenset({5}), frozenset({2, 5})])
+    >>> free, combos, _ = switch_combinations({2: [3], 5: [7]}, {**{n: "both" for n in range(1, 10)}, 5: "on",
+    ...                                                            8: "on"})
+    >>> free, [sorted(c) for c in combos]
+    ([2], [[5, 8], [2, 5, 8]])
     """
     free = sorted(n for n in used if modes[n] == "both")
-    on = frozenset(n for n in used if modes[n] == "on")
+    on = frozenset(n for n in modes if modes[n] == "on")  # also those only a library program may use
     if 2 ** len(free) <= MAX_SWITCH_COMBINATIONS:
         subsets = [frozenset(n for k, n in enumerate(free) if bits >> k & 1) for bits in range(2 ** len(free))]
         subsets.sort(key=lambda c: (len(c), sorted(c)))
@@ -468,8 +490,9 @@ def _switch_notes(used: dict[int, list[int]], modes: dict[int, str], free: list[
     for n in sorted(used):
         lines = used[n]
         switch = "the block-delete switch" if n == 1 else f"block-delete switch /{n}"
-        where = (f"{len(lines)} line(s) start with {'/ (or /1)' if n == 1 else f'/{n}'}, the first at line "
-                 f"{lines[0]}")
+        label = '/ (or /1)' if n == 1 else f'/{n}'
+        where = (f"{len(lines)} line(s) start with {label}, the first at line {lines[0]}" if lines
+                 else f"lines of a called library program start with {label}")
         others = ", ".join(f"/{k}" for k in free if k != n)
         notes += ({"both": f"{where}: verified with {switch} off (those lines run) and on (they are skipped)"
                            + (f", in every combination with {others}" if others and complete else "")
@@ -540,7 +563,7 @@ def _merge_switch_combinations(runs: list[tuple[frozenset[int], Result]], free: 
 
 
 def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRange, ...], skip: frozenset[int],
-                  extra: dict[str, Any], opts: dict[str, Any]) -> tuple[Result, Interpretation]:
+                  extra: dict[str, Any], opts: dict[str, Any]) -> tuple[Result, Interpretation, set[int]]:
     """Prove one combination of the block-skip switches (those on) over the parameter ranges: (result, first interpretation).
 
     The path is built per case: a branch that switches inside a range splits
@@ -553,6 +576,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
 
     cases = [ranges]
     results, first_run, splits = [], None, []
+    seen: set[int] = set()
     interpretations = 0
     fast = _line_count(source.text) >= FAST_PATH_MIN_LINES
     while cases:
@@ -562,6 +586,8 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
                         block_delete=skip, fast=fast, **extra)
         interpretations += 1
         result = _verify_run(run, case_machine, case_ranges, **opts)
+        for runner in run.runners:  # the Fanuc language layer: the block-skip switches its lines use
+            seen |= getattr(runner, "seen_switches", set())
         if case_ranges and result.violations:
             # a violation names every ranged parameter: those its motion does not depend on at this
             # case's nominal value (another case's path may differ)
@@ -590,7 +616,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
                                                        "cases on each side and at the switching value",),
                          extra={"splits": tuple(splits)})
     assert first_run is not None  # the loop ran at least once (it starts with one case)
-    return result, first_run
+    return result, first_run, seen
 
 
 def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange, ...], *, margin: Fraction,

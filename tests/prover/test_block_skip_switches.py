@@ -119,6 +119,22 @@ def test_too_many_free_switches_is_unknown_unless_fixed():
     assert dict(r.violations[0].switches)["block_delete/7"] == "off"
 
 
+def test_a_switch_only_a_library_program_uses(tmp_path):
+    # O9001 (a --library file) steps X by 10 to X90 and, switch 3 off, drops the tip to Z-10 inside the
+    # clamp (X 85..115, tip Z below 15); the main text has no '/' line at all
+    (tmp_path / "O9001.nc").write_text("O9001\nG91 G00 X10.\n/3 G00 Z-60.\nM99\n")
+    program = HEAD + "G00 X80.\nG43 H1 Z50.\nM98 P9001\nG90 G00 Z50.\nM30\n%\n"
+    m = _fanuc()
+    r = verify_text(program, m, library=str(tmp_path))
+    assert r.verdict is Verdict.UNSAFE
+    assert r.violations[0].switches == (("block_delete/3", "off"),)
+    assert any("library program start with /3" in n for n in r.notes)
+    # fixed on, the library line is skipped (it ran before: a fixed switch reached only the main text)
+    on = verify_text(program, m, library=str(tmp_path), block_delete="3=on")
+    assert on.verdict is Verdict.SAFE and any("/3 ON only" in n for n in on.notes)
+    assert verify_text(program, m, library=str(tmp_path), block_delete="3=off").verdict is Verdict.UNSAFE
+
+
 def test_the_vectorized_tier_long_program():
     # > 512 lines: the same reproducer after 600 plain moves far from the clamp
     pad = "".join(f"G01 X{-50 - (k % 7)}. Y{-50 - (k % 5)}. F1000.\n" for k in range(600))

@@ -202,6 +202,9 @@ class FanucRunner:
         #: the optional block skip switches that are on (BDT1..BDT9): their '/n' lines are skipped
         self.skipped = skipped_switches(block_delete)
         self.block_delete = 1 in self.skipped  # '/' alone (and '/1'): the plain lanes see only these
+        #: the switches of every '/n' line met (run or skipped), library programs included: a proof covers
+        #: the switches the main text shows, and a switch only a library program uses must be added to them
+        self.seen_switches: set[int] = set()
         self.library = Path(library) if library is not None else None
         self.state = state  # the interpreter: its units and canned cycle decide how words are read
         self.max_loops = max_loop_iterations
@@ -376,7 +379,7 @@ class FanucRunner:
                     if parsed is not None and self.plain_ok(parsed[2], parsed[3], line):
                         delete, number, letters, values = parsed
                         pos, lineno0, lineno = nxt, lineno, lineno + 1
-                        if delete and self.block_delete:
+                        if delete and self.skips(1):
                             continue
                         if letters:
                             self.started = self.ran = True
@@ -441,13 +444,18 @@ class FanucRunner:
             raise GcodeError(Diagnostic("GC314", f"end of the text inside subprogram O{frame.program}: M99 is "
                                         "missing", SourceSpan(frame.source.file, lineno, 1)))
 
+    def skips(self, switch: int) -> bool:
+        """Whether a line starting with ``/switch`` is skipped (its switch on); the switch is recorded."""
+        self.seen_switches.add(switch)
+        return switch in self.skipped
+
     # -- one general line -------------------------------------------------------------------
     def execute(self, compiled: tuple, pos: int, lineno: int) -> _Flow:
         fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled
         self.current_pos = pos
         frame = self.frames[-1]
         here = (nxt, lineno + 1)
-        if fl.delete and fl.delete in self.skipped:
+        if fl.delete and self.skips(fl.delete):
             return here
         if fl.percent:
             if self.started:
@@ -510,7 +518,7 @@ class FanucRunner:
         """A line without NC words (assignments, IF, GOTO, WHILE, DO, END, comments): the next
         ``(pos, lineno)``, or None when a #3000 alarm stops the program."""
         fl, _words, assigns, stmt, line, nxt = compiled[:6]
-        if fl.delete and fl.delete in self.skipped:
+        if fl.delete and self.skips(fl.delete):
             return nxt, lineno + 1
         if fl.unmodelled is not None:
             reason, col, end = fl.unmodelled
@@ -817,7 +825,7 @@ class FanucRunner:
             if sfl.percent or sfl.program is not None:
                 raise self.error("GC314", f"the finishing shape from N{int(pword[1])} runs into the end of the "
                                  f"program before N{int(qword[1])}", lineno, line, qword[2], qword[3])
-            if not (sfl.delete and sfl.delete in self.skipped):
+            if not (sfl.delete and self.skips(sfl.delete)):
                 if sfl.unmodelled is not None or assigns or stmt is not None:
                     raise self.unsupported(f"G{int(next(v[1] for v in values if v[0] == 'G' and v[1] in self.shape_codes))}",
                                            "a macro statement inside a lathe cycle's finishing shape: the manuals "
