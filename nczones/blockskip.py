@@ -81,7 +81,7 @@ def skipped_switches(block_delete: bool | Collection[int]) -> frozenset[int]:
         return frozenset(SWITCHES)
     if block_delete is False:
         return frozenset()
-    return frozenset(block_delete)  # type: ignore[arg-type]
+    return frozenset(block_delete)
 
 
 def used_switches(text: str, dialect: str) -> dict[int, list[int]]:

@@ -89,7 +89,7 @@ Examples
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Generator, Iterator
+from collections.abc import Callable, Collection, Generator, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -314,7 +314,7 @@ def _skipped_unread(line: str) -> bool:
 
 
 class Runner:
-    def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
+    def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool | Collection[int],
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
                  fast_runs: dict | None = None, lane: Any = None):
         self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
@@ -1097,7 +1097,7 @@ def iter_blocks(
     file: str = "<program>",
     *,
     params: Parameters | None = None,
-    block_delete: bool = False,
+    block_delete: bool | Collection[int] = False,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     max_call_depth: int = 100,
     first_line: int = 1,
@@ -1162,7 +1162,7 @@ def read_program(
     path: str | Path,
     *,
     params: Parameters | None = None,
-    block_delete: bool = False,
+    block_delete: bool | Collection[int] = False,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     max_call_depth: int = 100,
 ) -> Iterator[Block]:

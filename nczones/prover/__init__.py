@@ -550,8 +550,8 @@ def _merge_switch_combinations(runs: list[tuple[frozenset[int], Result]], free: 
     notes = list(first.notes)
     splits = list(first.extra.get("splits", ()))
     for _, r in runs[1:]:
-        for k, x in r.stats:
-            stats[k] = stats.get(k, 0) + x
+        for k, count in r.stats:
+            stats[k] = stats.get(k, 0) + count
         notes += [n for n in r.notes if n not in notes]
         splits += list(r.extra.get("splits", ()))
     out = [v for _, _, v in violations]
