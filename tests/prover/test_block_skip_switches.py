@@ -247,6 +247,16 @@ def test_linuxcnc_slash_digit_lines_follow_rs274(line, hashes):
             verify_text(program, m, block_delete=mode)
 
 
+def test_linuxcnc_slash_digit_lines_in_a_long_program():
+    # > 512 lines (the vectorized tier takes the plain runs): the /1 line is still skipped unread
+    m = parse_machine(LINUXCNC)
+    pad = "".join(f"G1 X{k % 3} Y{k % 5} F100\n" for k in range(600))
+    program = pad + "G0 X1 Y0\n/1 G0 X4\n//G0 X4\nG0 Y2\nM2\n"
+    assert verify_text(program, m, block_delete="on").verdict is Verdict.SAFE
+    with pytest.raises(GcodeError, match="GC101"):
+        verify_text(program, m)
+
+
 @pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC's rs274 is not installed")
 @pytest.mark.parametrize("line", ["/1 G0 X4", "//G0 X4", "/ G0 X4", "/G0 X[1+3]"])
 def test_linuxcnc_block_delete_agrees_with_rs274(tmp_path, line):
