@@ -20,6 +20,7 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
+import jsonschema
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -161,6 +162,9 @@ def test_cli_exit_codes_and_reports(tmp_path):
     doc = json.loads(js.stdout)
     assert doc["violations"][0]["switches"] == {"block_delete/2": "on"}
     assert doc["settings"]["block_delete"] == "both"
+    schema = json.loads(Path("specs/report.schema.json").read_text())
+    jsonschema.validate(doc, schema)
+    jsonschema.validate(json.loads(run("--format", "json", "--block-delete", "off,2=on").stdout), schema)
     fixed = run("--block-delete", "2=off")
     assert fixed.returncode == 0, fixed.stdout + fixed.stderr
     assert "/2 OFF only" in fixed.stdout
