@@ -333,28 +333,19 @@ def _verify(
                            program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                            machine_sha256=machine.sha256, settings=tuple(settings.items()), file=source.name)
     free, combos, complete = switch_combinations(used, modes)
-    per_position: list[tuple[Result, Interpretation]] = []
-    seen: set[int] = set()
-    for skip in combos:
-        case_result, case_run, case_seen = _verify_cases(source, machine, ranges, skip, extra, opts)
-        per_position.append((case_result, case_run))
-        seen |= case_seen
-        if case_result.interrupted:  # Ctrl-C: the other combinations are not verified
-            break
+    combos, per_position, seen, complete, runs_done = _verify_combinations(
+        combos, free, complete, lambda skip: _verify_cases(source, machine, ranges, skip, extra, opts),
+        fanuc=settings["dialect"] == "fanuc")
     unseen = sorted(n for n in seen - set(used) if modes[n] == "both")
     if unseen and not any(r.interrupted for r, _ in per_position):
         # a switch only a library program uses (the main text does not show it): verified again with it
         # among the free switches (a third switch met only then is not: VF206 below)
         used = {**used, **{n: [] for n in unseen}}
         free, combos, complete = switch_combinations(used, modes)
-        per_position, seen = [], set()
-        for skip in combos:
-            case_result, case_run, case_seen = _verify_cases(source, machine, ranges, skip, extra, opts)
-            per_position.append((case_result, case_run))
-            seen |= case_seen
-            if case_result.interrupted:
-                break
-        if seen - set(used) and any(modes[n] == "both" for n in seen - set(used)):
+        combos, per_position, seen, complete, runs_done = _verify_combinations(
+            combos, free, complete, lambda skip: _verify_cases(source, machine, ranges, skip, extra, opts),
+            fanuc=settings["dialect"] == "fanuc")
+        if any(modes[n] == "both" for n in seen - set(used)):
             complete = False
             free = sorted(set(free) | {n for n in seen - set(used) if modes[n] == "both"})
     result, first_run = per_position[0]
@@ -367,6 +358,10 @@ def _verify(
         reasons.append(_combinations_reason(free))
     notes += _switch_notes({**{n: [] for n in seen if n not in used}, **used}, modes, free, complete,
                            first_run.interpreter.stops)
+    if len(combos) > runs_done:
+        notes += (f"{runs_done} of the {len(combos)} combinations of the block-skip switches were interpreted: "
+                  "the others differ from one of them only in switches its run never reached a line of, so "
+                  "their path is the same",)
     if recovery is not None and not interrupted:
         from .recovery import verify_recovery
 
@@ -436,7 +431,7 @@ def _recovery_point(machine: Machine, ranges: tuple[ParamRange, ...]) -> tuple[M
     return at, values
 
 
-#: The most combinations of block-skip switch positions one proof verifies (4 switches left to "both").
+#: The most runs of block-skip switch combinations one proof interprets (all of 4 free switches).
 MAX_SWITCH_COMBINATIONS = 16
 
 
@@ -446,16 +441,50 @@ def switch_name(n: int) -> str:
     return "block_delete" if n == 1 else f"block_delete/{n}"
 
 
+def _verify_combinations(combos: list[frozenset[int]], free: list[int], complete: bool,
+                         run: Callable[[frozenset[int]], tuple[Result, Interpretation, set[int]]], *, fanuc: bool
+                         ) -> tuple[list[frozenset[int]], list[tuple[Result, Interpretation]], set[int], bool, int]:
+    """Verify the combinations: (the combinations verified, their (result, first interpretation), the
+    switches met, whether every combination was verified, how many were interpreted).
+
+    Two combinations can differ only if a run reaches a line of a switch they differ in: the interpreter
+    reads a switch at its lines only, so a run that met none of a switch's lines is the same run with the
+    switch in the other position (the Fanuc runner records the switches it meets, library programs
+    included; a LinuxCNC run counts as meeting all).  A combination that agrees with an interpreted one on
+    every free switch that run met takes its result without a run.  Past
+    :data:`MAX_SWITCH_COMBINATIONS` interpreted runs the rest is not verified (``complete`` False)."""
+    done: list[tuple[frozenset[int], set[int], tuple[Result, Interpretation]]] = []
+    verified: list[frozenset[int]] = []
+    out: list[tuple[Result, Interpretation]] = []
+    seen: set[int] = set()
+    for skip in combos:
+        same = next((r for d, met, r in done if all((n in skip) == (n in d) for n in met)), None)
+        if same is None:
+            if len(done) >= MAX_SWITCH_COMBINATIONS:
+                complete = False
+                break
+            result, interp, met = run(skip)
+            seen |= met
+            same = (result, interp)
+            done.append((skip, (met & set(free)) if fanuc else set(free), same))
+        verified.append(skip)
+        out.append(same)
+        if same[0].interrupted:  # Ctrl-C: the other combinations are not verified
+            break
+    return verified, out, seen, complete, len(done)
+
+
 def switch_combinations(used: dict[int, list[int]], modes: dict[int, str]
                         ) -> tuple[list[int], list[frozenset[int]], bool]:
     """The block-skip switches left free (used by the program, set to ``both``), the combinations of
-    switches that are on to verify (the first: every free switch off) and whether they are all of them.
+    switches that are on to verify (the first: every free switch off; then by how many are on) and whether
+    they are all of them.
 
     Any two switches can interact (a skipped ``G91``, ``G92`` or offset line changes what every later line
-    does), so every combination of the free switches is verified: with k free switches, 2**k runs.  Fixed
-    switches and switches the program does not use add none.  Past :data:`MAX_SWITCH_COMBINATIONS` only all
-    off, each switch alone on, and all on are verified (their witnesses are real), and the verdict cannot
-    be ``safe`` (VF206).
+    does), so every combination of the free switches is listed (2**k, at most 512); fixed switches and
+    switches the program does not use add none.  :func:`_verify_combinations` interprets only those whose
+    runs can differ, at most :data:`MAX_SWITCH_COMBINATIONS`; past that the verdict cannot be ``safe``
+    (VF206; the witnesses found are real).
 
     >>> switch_combinations({2: [3], 5: [7]}, {n: "both" for n in range(1, 10)})[1]
     [frozenset(), frozenset({2}), frozenset({5}), frozenset({2, 5})]
@@ -466,21 +495,19 @@ def switch_combinations(used: dict[int, list[int]], modes: dict[int, str]
     """
     free = sorted(n for n in used if modes[n] == "both")
     on = frozenset(n for n in modes if modes[n] == "on")  # also those only a library program may use
-    if 2 ** len(free) <= MAX_SWITCH_COMBINATIONS:
-        subsets = [frozenset(n for k, n in enumerate(free) if bits >> k & 1) for bits in range(2 ** len(free))]
-        subsets.sort(key=lambda c: (len(c), sorted(c)))
-        return free, [on | c for c in subsets], True
-    subsets = [frozenset()] + [frozenset((n,)) for n in free] + [frozenset(free)]
-    return free, [on | c for c in subsets], False
+    subsets = [frozenset(n for k, n in enumerate(free) if bits >> k & 1) for bits in range(2 ** len(free))]
+    subsets.sort(key=lambda c: (len(c), sorted(c)))
+    return free, [on | c for c in subsets], True
 
 
 def _combinations_reason(free: list[int]) -> Reason:
     names = ", ".join(f"/{n}" for n in free)
-    return Reason(f"VF206: the program uses {len(free)} block-skip switches left to both positions ({names}): their "
-                  f"{2 ** len(free)} combinations exceed the {MAX_SWITCH_COMBINATIONS} one proof verifies; only all "
-                  "off, each switch alone on and all on were verified.  Fix the positions of the switches the "
-                  "operator does not use with --block-delete or the machine file's block_delete (e.g. 3=off,4=off)",
-                  None, None, "VF206")
+    return Reason(f"VF206: the program uses {len(free)} block-skip switches left to both positions ({names}): of "
+                  f"their {2 ** len(free)} combinations more than {MAX_SWITCH_COMBINATIONS} can take different "
+                  "paths (their runs reach lines of the switches they differ in), more than one proof runs; "
+                  f"the {MAX_SWITCH_COMBINATIONS} with the fewest switches on were verified.  Fix the positions of "
+                  "the switches the operator does not use with --block-delete or the machine file's block_delete "
+                  "(e.g. 3=off,4=off)", None, None, "VF206")
 
 
 def _switch_notes(used: dict[int, list[int]], modes: dict[int, str], free: list[int], complete: bool,

@@ -120,6 +120,27 @@ def test_too_many_free_switches_is_unknown_unless_fixed():
     assert dict(r.violations[0].switches)["block_delete/7"] == "off"
 
 
+def test_combinations_whose_runs_cannot_differ_are_not_run():
+    # /5 /6 /7 are in O2000, which only /4 calls (switch 4 off); /2 is after M30 (never run).  Of the 32
+    # combinations of /2 and /4 .. /7 only 8 + 1 runs can differ: with switch 4 on no run reaches a /5, /6
+    # or /7 line, and no run reaches the /2 line.  Without that the 32 would exceed the 16 runs (VF206).
+    sub = "O2000\n/5 G00 Z5.\n/6 X100.\n/7 G00 Z60.\nM99\n"
+    program = HEAD + "G43 H1 Z50.\n/4 M98 P2000\nX0\nM30\n/2 G00 X500.\n" + sub + "%\n"
+    r = verify_text(program, _fanuc())
+    assert not any(x.code == "VF206" for x in r.reasons)
+    assert any("9 of the 32 combinations" in n for n in r.notes), r.notes
+    # switches 4, 5, 6 off: the tip at Z5 crosses the clamp (X 85..115) at line 12 (/6 X100.) whatever /7
+    # and /2 are; rising from Z5 at X100 (line 13) needs /7 off too
+    got = {v.line: dict(v.switches) for v in r.violations}
+    assert got[12] == {"block_delete/4": "off", "block_delete/5": "off", "block_delete/6": "off"}
+    assert got[13] == {"block_delete/4": "off", "block_delete/5": "off", "block_delete/6": "off",
+                       "block_delete/7": "off"}
+    # /2 before the call instead: 2 x 8 + 2 x 1 = 18 runs can differ, more than 16: VF206
+    r = verify_text(program.replace("/4 M98", "/2 Z55.\n/4 M98").replace("M30\n/2 G00 X500.\n", "M30\n"),
+                    _fanuc())
+    assert r.verdict is Verdict.UNSAFE and any(x.code == "VF206" for x in r.reasons)
+
+
 def test_a_switch_only_a_library_program_uses(tmp_path):
     # O9001 (a --library file) steps X by 10 to X90 and, switch 3 off, drops the tip to Z-10 inside the
     # clamp (X 85..115, tip Z below 15); the main text has no '/' line at all
