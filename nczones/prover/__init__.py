@@ -576,7 +576,11 @@ def _merge_switch_combinations(runs: list[tuple[frozenset[int], Result]], free: 
     stats: dict[str, Any] = dict(first.stats)
     notes = list(first.notes)
     splits = list(first.extra.get("splits", ()))
+    counted = {id(first)}
     for _, r in runs[1:]:
+        if id(r) in counted:  # a combination that took another's run (its path is the same): counted once
+            continue
+        counted.add(id(r))
         for k, count in r.stats:
             stats[k] = stats.get(k, 0) + count
         notes += [n for n in r.notes if n not in notes]
