@@ -304,3 +304,40 @@ def test_linuxcnc_block_delete_agrees_with_rs274(tmp_path, line):
             theirs = [mv.end[:3] for mv in canon_motion(run.stdout) if mv.kind in ("RAPID", "LINE")]
             assert [tuple(x) for x in ours] == [tuple(x) for x in theirs], (line, skip)
             assert all(isinstance(x, Fraction) for e in ours for x in e)
+
+
+@pytest.mark.long
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC's rs274 is not installed")
+def test_linuxcnc_corpus_block_delete_lines_agree_with_rs274_in_both_positions(tmp_path):
+    # every LinuxCNC corpus program with a line starting with '/' (14 on 2026-12-06), through rs274 -g with
+    # and without -b and through nczones with the switch on and off: the same motion (or the same refusal)
+    from tests.corpus import CORPUS
+    from tests.oracles.rs274 import canon_error, canon_motion, compare
+    from tests.tools.rs274_corpus import BAD_PERCENT, NO_END, TOOLS, machine_for
+    from tests.tools.rs274_diff import RS274, tool_table, var_file
+
+    root = CORPUS / "linuxcnc"
+    if not root.is_dir():
+        pytest.skip("the corpus is not here")
+    files = sorted(p for p in root.rglob("*.ngc") if used_switches(p.read_text(errors="replace"), "linuxcnc"))
+    assert files
+    tools = {n: Fraction(0) for n in TOOLS}
+    m = machine_for(tools)
+    (tmp_path / "tool.tbl").write_text(tool_table(tools))
+    (tmp_path / "prog.var").write_text(var_file({}))
+    bad = []
+    for path in files:
+        program = path.read_text(errors="replace")
+        (tmp_path / "prog.ngc").write_text(program)
+        for flag, skip in ((["-b"], True), ([], False)):
+            run = subprocess.run([RS274, "-t", "tool.tbl", "-v", "prog.var", "-g", *flag, "prog.ngc"], cwd=tmp_path,
+                                 capture_output=True, text=True, errors="replace", timeout=120,
+                                 stdin=subprocess.DEVNULL)
+            error = canon_error(run.returncode, run.stderr)
+            if error is not None and (error[0] == NO_END or (error[0] == BAD_PERCENT and error[1].strip() == "%")):
+                error = None
+            outcome = compare(program, m, canon_motion(run.stdout), error, arc_tolerance="linuxcnc",
+                              block_delete=skip)
+            if outcome.status != "match":
+                bad.append((str(path.relative_to(root)), skip, outcome.status, outcome.detail[:200]))
+    assert not bad, bad
