@@ -185,7 +185,9 @@ def test_cli_exit_codes_and_reports(tmp_path):
     assert doc["settings"]["block_delete"] == "both"
     schema = json.loads(Path("specs/report.schema.json").read_text())
     jsonschema.validate(doc, schema)
-    jsonschema.validate(json.loads(run("--format", "json", "--block-delete", "off,2=on").stdout), schema)
+    fixed_on = json.loads(render_report(verify_text(LIFT, _fanuc(), block_delete="off,2=on"), "json"))
+    assert fixed_on["settings"]["block_delete"] == "off,2=on"
+    jsonschema.validate(fixed_on, schema)
     fixed = run("--block-delete", "2=off")
     assert fixed.returncode == 0, fixed.stdout + fixed.stderr
     assert "/2 OFF only" in fixed.stdout
@@ -208,7 +210,9 @@ def test_every_format_names_the_switch():
 _LINES = ("Z5.", "Z50.", "X100.", "X0", "X200.", "G91", "G90", "Y-100.", "Y0", "X-30.")
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# CI size 12 examples; HYPOTHESIS_PROFILE=long (settings.default.max_examples > 100) runs 300
+@settings(max_examples=12 if settings.default.max_examples <= 100 else 300, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.tuples(st.sampled_from((None, 1, 2, 3)), st.sampled_from(_LINES)), min_size=2, max_size=6))
 def test_result_is_the_worst_over_explicit_combinations(body):
     text = HEAD + "G43 H1 Z50.\n" + "".join((f"/{n} " if n == 1 and k % 2 else "/ " if n == 1 else
