@@ -210,11 +210,23 @@ def test_every_format_names_the_switch():
 _LINES = ("Z5.", "Z50.", "X100.", "X0", "X200.", "G91", "G90", "Y-100.", "Y0", "X-30.")
 
 
-# CI size 12 examples; HYPOTHESIS_PROFILE=long (settings.default.max_examples > 100) runs 300
-@settings(max_examples=12 if settings.default.max_examples <= 100 else 300, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow])
-@given(st.lists(st.tuples(st.sampled_from((None, 1, 2, 3)), st.sampled_from(_LINES)), min_size=2, max_size=6))
+_BODIES = st.lists(st.tuples(st.sampled_from((None, 1, 2, 3)), st.sampled_from(_LINES)), min_size=2, max_size=6)
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_BODIES)
 def test_result_is_the_worst_over_explicit_combinations(body):
+    _check_worst(body)
+
+
+@pytest.mark.long
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_BODIES)
+def test_result_is_the_worst_over_explicit_combinations_long(body):
+    _check_worst(body)
+
+
+def _check_worst(body):
     text = HEAD + "G43 H1 Z50.\n" + "".join((f"/{n} " if n == 1 and k % 2 else "/ " if n == 1 else
                                              f"/{n} " if n else "") + code + "\n"
                                             for k, (n, code) in enumerate(body)) + "G90 G00 Z50.\nM30\n%\n"
