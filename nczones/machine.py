@@ -28,6 +28,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
+from .blockskip import format_block_delete, parse_block_delete
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
@@ -233,7 +234,8 @@ class Machine:
     dialect: str = "linuxcnc"
     #: The Fanuc parameters (``[fanuc]``, ``[variables]``, ``[macros]``); defaults when not given.
     fanuc: FanucSettings = field(default_factory=FanucSettings)
-    #: Block-delete switch positions a proof covers: "both" (default), "off" (``/`` lines run), "on" (skipped).
+    #: Block-delete switch positions a proof covers: "both" (default), "off" (``/`` lines run), "on" (skipped),
+    #: or per switch (Fanuc ``/1`` .. ``/9``) as :func:`nczones.blockskip.format_block_delete` writes it.
     block_delete: str = "both"
     #: ``"mill"`` or ``"lathe"`` (``[machine] type``): a lathe reads its dialect's lathe G codes.
     machine_type: str = "mill"
@@ -630,7 +632,8 @@ _FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_cl
                "harmless_m", "path") + _FANUC_LATHE_KEYS
 #: Values of ``[machine] cutter_compensation``.
 CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
-#: Values of ``[machine] block_delete``: which positions of the block-delete switch a proof covers.
+#: Values of ``[machine] block_delete`` for every switch at once: which positions of the block-delete
+#: switches a proof covers (per switch: ``"1=on,2=off"``, :mod:`nczones.blockskip`).
 BLOCK_DELETE_MODES = ("both", "off", "on")
 _ZONE_COMMON = ("name", "kind", "forbid", "point")
 _ZONE_KEYS = {
@@ -839,11 +842,13 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                   "(G41/G42 make the result unknown) or \"linuxcnc\" (modelled as LinuxCNC does it)",
                   rd.loc.key("cutter_compensation", mline))
     tool_diameters = _register_table(rd, data, "tool_diameters", "T", "tool number", 'T1 = "6"')
-    block_delete = mt.get("block_delete", "both")
-    if block_delete not in BLOCK_DELETE_MODES:
-        rd.report("ZN114", f"[machine] block_delete: {as_written(block_delete)} is not allowed; use \"both\" (verify "
-                  "the program with the block-delete switch off and on), \"off\" (lines starting with / are "
-                  "executed) or \"on\" (they are skipped)", rd.loc.key("block_delete", mline))
+    block_delete_raw = mt.get("block_delete", "both")
+    try:
+        block_delete = format_block_delete(parse_block_delete(block_delete_raw))
+    except ValueError as e:
+        rd.report("ZN114", f"[machine] block_delete: {as_written(block_delete_raw)} is not allowed: {e}; or a "
+                  "table { 1 = \"on\", 2 = \"off\" }",
+                  rd.loc.key("block_delete", mline))
         block_delete = "both"
 
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)

@@ -398,7 +398,7 @@ def _show(axes: tuple[str, ...], p: Point) -> str:
     return " ".join(f"{a}{format_decimal(x, 6)}" for a, x in zip(axes, p))
 
 
-def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: bool) -> list[Segment]:
+def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: frozenset[int]) -> list[Segment]:
     from .gcode import interpret
 
     options: dict[str, Any] = {}
@@ -415,13 +415,28 @@ def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: 
     return list(interpret(source, machine, **options).segments())
 
 
-def _skips_deleted_blocks(v: Mapping[str, Any], settings: Mapping[str, Any]) -> bool:
-    """Whether the violation's path skips the lines starting with / (the block-delete switch on)."""
-    switches = v.get("switches")
-    if isinstance(switches, Mapping) and "block_delete" in switches:
-        return bool(switches["block_delete"] == "on")
+def _skips_deleted_blocks(v: Mapping[str, Any], settings: Mapping[str, Any]) -> frozenset[int]:
+    """The block-skip switches on along the violation's path (their lines skipped): those the violation
+    names on, and those the settings fix on; a switch left to both that it does not name is off."""
+    from .blockskip import parse_block_delete
+
     mode = settings.get("block_delete")
-    return mode is True or mode == "on"
+    try:
+        modes = parse_block_delete("on" if mode is True else mode if isinstance(mode, str) else "both")
+    except ValueError:
+        modes = parse_block_delete("both")
+    on = {n for n, p in modes.items() if p == "on"}
+    switches = v.get("switches")
+    if isinstance(switches, Mapping):
+        for name, position in switches.items():
+            if name == "block_delete" or (isinstance(name, str) and name.startswith("block_delete/")
+                                          and name[13:].isdigit()):
+                n = 1 if name == "block_delete" else int(name[13:])
+                if position == "on":
+                    on.add(n)
+                else:
+                    on.discard(n)
+    return frozenset(on)
 
 
 def replay_report(doc: Mapping[str, Any], *, base: str | None = None, machine_file: str | None = None,

@@ -96,7 +96,7 @@ def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]
         "arc_tolerance": cli.arc_tolerance(args.arc_tolerance),
         "max_iterations": args.max_iterations,
         "library": cli.library_folder(args.library),
-        "block_delete": args.block_delete,
+        "block_delete": _block_delete(args.block_delete),
         "budget_s": _budget(args.budget),
     }
 
@@ -245,10 +245,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--recovery", choices=("start", "breakpoint"), default=None,
                    help="also prove the automatic tool-break recovery of the machine's [tool_change] "
                         "from every break point, restarting at the sequence start or at the break point")
-    p.add_argument("--block-delete", choices=("both", "off", "on"), default=None,
-                   help="block-delete switch positions to verify for lines starting with /: both (the default, "
-                        "unless the machine file's block_delete says otherwise), off (the lines run) or on "
-                        "(they are skipped); every report says what was verified")
+    p.add_argument("--block-delete", default=None, metavar="both|off|on|N=POS,...",
+                   help="block-delete switch positions to verify for lines starting with / (Fanuc: /1 .. /9, "
+                        "/ is /1): both (the default, unless the machine file's block_delete says otherwise: "
+                        "every combination of the switches the program uses), off (the lines run) or on (they "
+                        "are skipped) for every switch, or per switch, e.g. 1=on,2=off or off,2=both "
+                        "(switches not named: both); every report says what was verified")
     p.add_argument("--engine", choices=("auto", "z3"), default="auto",
                    help="auto: exact vectorized decisions where they are exact, Z3 for the rest (default); "
                         "z3: every segment through Z3 (the reference path)")
@@ -297,3 +299,15 @@ def _budget(text: str | None) -> float | None:
         raise _command_line_error("VF109", f"--budget {text!r}: expected a positive number of seconds (e.g. 60) "
                                            "or 'none'")
     return value
+
+
+def _block_delete(text: str | None) -> str | None:
+    """``--block-delete``: both|off|on, or positions per switch (``1=on,2=off``), canonical (``VF110``)."""
+    from ..blockskip import format_block_delete, parse_block_delete
+
+    if text is None:
+        return None
+    try:
+        return format_block_delete(parse_block_delete(text))
+    except ValueError as e:
+        raise _command_line_error("VF110", f"--block-delete {text!r}: {e}") from None

@@ -102,6 +102,14 @@ def _choice(*allowed: str | None) -> Callable[[Any], Any]:
     return check
 
 
+def _block_delete(value: Any) -> str:
+    from ..blockskip import format_block_delete, parse_block_delete
+
+    if not isinstance(value, (str, dict)):
+        raise ValueError(f"{value!r}: expected both, off, on or positions per switch (\"1=on,2=off\")")
+    return format_block_delete(parse_block_delete(value))
+
+
 def _positive_int(value: Any) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or value < 1:
         raise ValueError(f"{value!r}: expected a whole number of at least 1")
@@ -145,7 +153,8 @@ SETTINGS: dict[str, Setting] = {s.name: s for s in (
     Setting("arc_tolerance", "arc_tolerance", _arc_tolerance, "arc end-point tolerance (mm) or \"linuxcnc\""),
     Setting("max_iterations", "max_iterations", _positive_int, "loop iterations per entry before unknown"),
     Setting("max_violations", "max_violations", _positive_int, "violating blocks reported per program"),
-    Setting("block_delete", "block_delete", _choice("both", "off", "on"), "block-delete switch positions"),
+    Setting("block_delete", "block_delete", _block_delete, "block-delete switch positions (both|off|on, or "
+            "per switch: \"1=on,2=off\")"),
     Setting("dialect", "dialect", _choice("linuxcnc", "fanuc"), "G-code dialect (overrides the machine's)"),
     Setting("library", "library", _library, "folder of subprogram files (relative to the project root)"),
     Setting("budget", "budget_s", _budget, "seconds of proof work per job"),

@@ -43,7 +43,7 @@ Errors in the program raise :class:`~nczones.errors.GcodeError` (codes
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Iterator
+from collections.abc import Collection, Iterable, Iterator
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -113,7 +113,7 @@ class Interpretation:
         took the vectorized fast path).
     """
 
-    def __init__(self, source: ProgramSource, machine: Machine, *, block_delete: bool,
+    def __init__(self, source: ProgramSource, machine: Machine, *, block_delete: bool | Collection[int],
                  track_dependencies: bool, arc_tolerance: Fraction | str, fast: bool, chunk_size: int,
                  max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, dialect: str = "linuxcnc",
                  library: Any = None, param_ranges: tuple = ()):
@@ -273,7 +273,7 @@ def _cylindrical_lathe() -> type:
     return type("CylindricalLatheInterpreter", (CylindricalInterpreter, LatheInterpreter), {})
 
 
-def program_blocks(text: str, file: str, block_delete: bool, interpreter: Interpreter | None = None,
+def program_blocks(text: str, file: str, block_delete: bool | Collection[int], interpreter: Interpreter | None = None,
             first_line: int = 1, max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS) -> Iterator[Any]:
     """The language layer's blocks; an UnsupportedGcode ends them as ``unknown``."""
     from .expr import Parameters
@@ -309,7 +309,7 @@ def interpret(
     machine: Machine,
     *,
     file: str | None = None,
-    block_delete: bool = False,
+    block_delete: bool | Collection[int] = False,
     track_dependencies: bool = False,
     arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE,
     fast: bool = True,
@@ -332,9 +332,11 @@ def interpret(
     machine : Machine
     file : str, optional
         Name used in diagnostics (default: the path as given).
-    block_delete : bool
+    block_delete : bool or collection of int
         True skips blocks starting with ``/`` (the block-delete switch is on);
-        default False executes them, as LinuxCNC does by default.
+        default False executes them, as LinuxCNC does by default.  A collection
+        names the switches that are on (Fanuc ``/1`` .. ``/9``, ``/`` is 1;
+        LinuxCNC's one switch is 1): ``{2}`` skips the ``/2`` lines only.
     track_dependencies : bool
         Fill ``Segment.deps_start/deps_end`` for parameter ranges (disables
         the fast path).

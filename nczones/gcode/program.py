@@ -89,7 +89,7 @@ Examples
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Generator, Iterator
+from collections.abc import Callable, Collection, Generator, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -305,8 +305,16 @@ class FastRunRequest:
         self.pos, self.lineno, self.index, self.resume = pos, lineno, index, None
 
 
+def _skipped_unread(line: str) -> bool:
+    """Whether a line starts with '/' and LinuxCNC, its block-delete switch on, skips it unread: only its
+    comments are checked (an unclosed or nested comment is an error even there, ``rs274 -b``), so a line
+    with a comment is left to the parser."""
+    head = line.lstrip(" \t")
+    return head[:1] == "/" and "(" not in head
+
+
 class Runner:
-    def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool,
+    def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool | Collection[int],
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
                  fast_runs: dict | None = None, lane: Any = None):
         self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
@@ -315,7 +323,8 @@ class Runner:
         self.src = source
         self.file = file
         self.params = params
-        self.block_delete = block_delete
+        # LinuxCNC has one block-delete switch (number 1 of the nine a setting names)
+        self.block_delete = block_delete if isinstance(block_delete, bool) else 1 in block_delete
         self.max_loops = max_loop_iterations
         self.max_depth = max_call_depth
         self.frames: list[_Frame] = [_Frame("main")]
@@ -523,6 +532,10 @@ class Runner:
                     return
                 line = read
                 parsed = None
+                if self.block_delete and _skipped_unread(line):
+                    # LinuxCNC reads nothing after the '/' of a line its switch skips ('/1 G0', '//G0')
+                    pos, lineno = nxt, lineno + 1
+                    continue
             if parsed is None:
                 # '#' or '[' outside comments: for the parser only (both scanners would refuse the line)
                 parsed = None if (("#" in line or "[" in line) and "(" not in line and ";" not in line) \
@@ -1084,7 +1097,7 @@ def iter_blocks(
     file: str = "<program>",
     *,
     params: Parameters | None = None,
-    block_delete: bool = False,
+    block_delete: bool | Collection[int] = False,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     max_call_depth: int = 100,
     first_line: int = 1,
@@ -1149,7 +1162,7 @@ def read_program(
     path: str | Path,
     *,
     params: Parameters | None = None,
-    block_delete: bool = False,
+    block_delete: bool | Collection[int] = False,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
     max_call_depth: int = 100,
 ) -> Iterator[Block]:

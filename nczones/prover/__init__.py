@@ -174,13 +174,16 @@ def verify(
     ``kind == "recovery"``.
 
     ``block_delete`` (default: the machine file's ``block_delete``, itself
-    ``"both"`` by default) says which positions of the block-delete switch
-    the proof covers: ``"both"`` verifies a program that has lines starting
-    with ``/`` with the switch off (the lines run) and on (they are
-    skipped); a violation found in one position only names it
-    (``Violation.switches``).  ``"off"``/``"on"`` fix the switch.  The notes
-    of a program with ``/`` lines say what was verified; stops (M0, M1,
-    M60) are noted too.
+    ``"both"`` by default) says which positions of the block-delete switches
+    the proof covers (:mod:`nczones.blockskip`; Fanuc ``/1`` .. ``/9``,
+    LinuxCNC one switch): ``"both"`` verifies a program that has lines
+    starting with ``/`` with each switch it uses off (the lines run) and on
+    (they are skipped), in every combination (:func:`switch_combinations`,
+    past :data:`MAX_SWITCH_COMBINATIONS` unknown, VF206); a violation names
+    the positions of the switches it depends on (``Violation.switches``).
+    ``"off"``/``"on"`` fix every switch, ``"1=on,2=off"`` single ones.  The
+    notes of a program with ``/`` lines say what was verified; stops (M0,
+    M1, M60) are noted too.
 
     ``dialect`` overrides the machine's ``[machine] dialect`` (``"linuxcnc"``
     or ``"fanuc"``, ``specs/fanuc.md``); ``library`` is a folder of Fanuc
@@ -268,9 +271,14 @@ def _verify(
         extra["dialect"] = dialect
     if library is not None:
         extra["library"] = library
-    mode = block_delete if block_delete is not None else getattr(machine, "block_delete", "both")
-    if mode not in ("both", "off", "on"):
-        raise InvalidArgument(f"block_delete must be 'both', 'off' or 'on', not {mode!r}")
+    from ..blockskip import format_block_delete, parse_block_delete, used_switches
+
+    try:
+        modes = parse_block_delete(block_delete if block_delete is not None
+                                   else getattr(machine, "block_delete", "both"))
+    except ValueError as e:
+        raise InvalidArgument(f"block_delete: {e}") from None
+    mode = format_block_delete(modes)
     tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
     # Every option that can change the verdict, as JSON values: reports carry them and
     # `nczones replay` re-runs with them.  A new option of verify() belongs here too.
@@ -295,7 +303,8 @@ def _verify(
     profile = RunProfile()
     opts = dict(margin=margin, engine=engine, max_violations=max_violations, progress=progress, limits=limits,
                 profile=profile)
-    deleted = [m.start() for m in _BLOCK_DELETE_LINE.finditer(source.text)] if "/" in source.text else []
+    used = used_switches(source.text, str(settings["dialect"]))
+    deleted = bool(used)
     if (engine == "auto" and not ranges and recovery is None and not deleted
             and settings["dialect"] == "linuxcnc" and machine.dialect == "linuxcnc" and "#" in source.text):
         # the options the full path refuses are refused before the pass too
@@ -323,18 +332,36 @@ def _verify(
                            timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
                            program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                            machine_sha256=machine.sha256, settings=tuple(settings.items()), file=source.name)
-    positions = ((False, True) if mode == "both" else (mode == "on",)) if deleted else (False,)
-    per_position: list[tuple[Result, Interpretation]] = []
-    for skip in positions:
-        per_position.append(_verify_cases(source, machine, ranges, skip, extra, opts))
-        if per_position[-1][0].interrupted:  # Ctrl-C: the other position is not verified
-            break
+    free, combos, complete = switch_combinations(used, modes)
+    combos, per_position, seen, complete, runs_done = _verify_combinations(
+        combos, free, complete, lambda skip: _verify_cases(source, machine, ranges, skip, extra, opts),
+        fanuc=settings["dialect"] == "fanuc")
+    unseen = sorted(n for n in seen - set(used) if modes[n] == "both")
+    if unseen and not any(r.interrupted for r, _ in per_position):
+        # a switch only a library program uses (the main text does not show it): verified again with it
+        # among the free switches (a third switch met only then is not: VF206 below)
+        used = {**used, **{n: [] for n in unseen}}
+        free, combos, complete = switch_combinations(used, modes)
+        combos, per_position, seen, complete, runs_done = _verify_combinations(
+            combos, free, complete, lambda skip: _verify_cases(source, machine, ranges, skip, extra, opts),
+            fanuc=settings["dialect"] == "fanuc")
+        if any(modes[n] == "both" for n in seen - set(used)):
+            complete = False
+            free = sorted(set(free) | {n for n in seen - set(used) if modes[n] == "both"})
     result, first_run = per_position[0]
-    if len(per_position) == 2:
-        result = _both_switch_positions(result, per_position[1][0], max_violations)
+    if len(combos) > 1:
+        result = _merge_switch_combinations([(c, r) for c, (r, _) in zip(combos, per_position)], free, complete,
+                                             max_violations)
     interrupted = any(r.interrupted for r, _ in per_position)
     violations, reasons, notes = list(result.violations), list(result.reasons), result.notes
-    notes += _switch_notes(source.text, deleted, mode, first_run.interpreter.stops)
+    if not complete:
+        reasons.append(_combinations_reason(free))
+    notes += _switch_notes({**{n: [] for n in seen if n not in used}, **used}, modes, free, complete,
+                           first_run.interpreter.stops)
+    if len(combos) > runs_done:
+        notes += (f"{runs_done} of the {len(combos)} combinations of the block-skip switches were interpreted: "
+                  "the others differ from one of them only in switches its run never reached a line of, so "
+                  "their path is the same",)
     if recovery is not None and not interrupted:
         from .recovery import verify_recovery
 
@@ -342,7 +369,7 @@ def _verify(
         # ranges hold them, else their middles): its witnesses must lie inside the ranges.
         rec_machine, at_values = _recovery_point(machine, ranges)
         found: list[Violation] = []
-        for skip in positions if at_values is not None else ():
+        for skip in combos if at_values is not None else ():
             rerun = interpret(source, rec_machine, block_delete=skip, **extra)
             try:
                 with limits.watch():
@@ -355,16 +382,16 @@ def _verify(
                 break
             source_text = source_lines(source.text, [v.span.line for v in rec.violations if v.span is not None]
                                        + [r.span.line for r in rec.reasons if r.span is not None])
-            switch = (("block_delete", "on" if skip else "off"),) if len(positions) == 2 else ()
+            switch = tuple((switch_name(n), "on" if n in skip else "off") for n in free)
             for v in rec.violations:
-                if skip and any((v.line, v.break_line) == (w.line, w.break_line) for w in found):
+                if any((v.line, v.break_line) == (w.line, w.break_line) for w in found):
                     continue
                 found.append(replace(v, span=_fix_span(v.span, source_text), switches=switch,
                                      params=at_values or ()))
             reasons += [replace(r, span=_fix_span(r.span, source_text)) for r in rec.reasons
-                        if not skip or r.message not in {x.message for x in reasons}]
+                        if r.message not in {x.message for x in reasons}]
         violations = sorted(violations + found,
-                            key=lambda v: (("block_delete", "on") in v.switches, v.block, v.kind != "motion"))
+                            key=lambda v: (sum(p == "on" for _, p in v.switches), v.block, v.kind != "motion"))
         if ranges:
             # A verdict 'safe' over the ranges would claim more than was proved.
             where = ("at " + ", ".join(f"{n} = {format_decimal(v)}" for n, v in at_values)
@@ -404,22 +431,104 @@ def _recovery_point(machine: Machine, ranges: tuple[ParamRange, ...]) -> tuple[M
     return at, values
 
 
-#: A line the block-delete switch may skip: its first character other than blanks is "/".
-_BLOCK_DELETE_LINE = re.compile(r"(?m)^[ \t]*/")
+#: The most runs of block-skip switch combinations one proof interprets (all of 4 free switches).
+MAX_SWITCH_COMBINATIONS = 16
 
 
-def _switch_notes(text: str, deleted: list[int], mode: str, stops: Iterable[tuple[int, Any]]) -> tuple[str, ...]:
-    """What the report says about the operator's switches: block delete, stops."""
+def switch_name(n: int) -> str:
+    """The name of block-skip switch *n* in ``Violation.switches`` and reports: ``block_delete`` for
+    ``/`` and ``/1`` (the name of earlier versions), ``block_delete/2`` .. ``block_delete/9``."""
+    return "block_delete" if n == 1 else f"block_delete/{n}"
+
+
+def _verify_combinations(combos: list[frozenset[int]], free: list[int], complete: bool,
+                         run: Callable[[frozenset[int]], tuple[Result, Interpretation, set[int]]], *, fanuc: bool
+                         ) -> tuple[list[frozenset[int]], list[tuple[Result, Interpretation]], set[int], bool, int]:
+    """Verify the combinations: (the combinations verified, their (result, first interpretation), the
+    switches met, whether every combination was verified, how many were interpreted).
+
+    Two combinations can differ only if a run reaches a line of a switch they differ in: the interpreter
+    reads a switch at its lines only, so a run that met none of a switch's lines is the same run with the
+    switch in the other position (the Fanuc runner records the switches it meets, library programs
+    included; a LinuxCNC run counts as meeting all).  A combination that agrees with an interpreted one on
+    every free switch that run met takes its result without a run.  Past
+    :data:`MAX_SWITCH_COMBINATIONS` interpreted runs the rest is not verified (``complete`` False)."""
+    done: list[tuple[frozenset[int], set[int], tuple[Result, Interpretation]]] = []
+    verified: list[frozenset[int]] = []
+    out: list[tuple[Result, Interpretation]] = []
+    seen: set[int] = set()
+    for skip in combos:
+        same = next((r for d, met, r in done if all((n in skip) == (n in d) for n in met)), None)
+        if same is None:
+            if len(done) >= MAX_SWITCH_COMBINATIONS:
+                complete = False
+                break
+            result, interp, met = run(skip)
+            seen |= met
+            same = (result, interp)
+            done.append((skip, (met & set(free)) if fanuc else set(free), same))
+        verified.append(skip)
+        out.append(same)
+        if same[0].interrupted:  # Ctrl-C: the other combinations are not verified
+            break
+    return verified, out, seen, complete, len(done)
+
+
+def switch_combinations(used: dict[int, list[int]], modes: dict[int, str]
+                        ) -> tuple[list[int], list[frozenset[int]], bool]:
+    """The block-skip switches left free (used by the program, set to ``both``), the combinations of
+    switches that are on to verify (the first: every free switch off; then by how many are on) and whether
+    they are all of them.
+
+    Any two switches can interact (a skipped ``G91``, ``G92`` or offset line changes what every later line
+    does), so every combination of the free switches is listed (2**k, at most 512); fixed switches and
+    switches the program does not use add none.  :func:`_verify_combinations` interprets only those whose
+    runs can differ, at most :data:`MAX_SWITCH_COMBINATIONS`; past that the verdict cannot be ``safe``
+    (VF206; the witnesses found are real).
+
+    >>> switch_combinations({2: [3], 5: [7]}, {n: "both" for n in range(1, 10)})[1]
+    [frozenset(), frozenset({2}), frozenset({5}), frozenset({2, 5})]
+    >>> free, combos, _ = switch_combinations({2: [3], 5: [7]}, {**{n: "both" for n in range(1, 10)}, 5: "on",
+    ...                                                            8: "on"})
+    >>> free, [sorted(c) for c in combos]
+    ([2], [[5, 8], [2, 5, 8]])
+    """
+    free = sorted(n for n in used if modes[n] == "both")
+    on = frozenset(n for n in modes if modes[n] == "on")  # also those only a library program may use
+    subsets = [frozenset(n for k, n in enumerate(free) if bits >> k & 1) for bits in range(2 ** len(free))]
+    subsets.sort(key=lambda c: (len(c), sorted(c)))
+    return free, [on | c for c in subsets], True
+
+
+def _combinations_reason(free: list[int]) -> Reason:
+    names = ", ".join(f"/{n}" for n in free)
+    return Reason(f"VF206: the program uses {len(free)} block-skip switches left to both positions ({names}): of "
+                  f"their {2 ** len(free)} combinations more than {MAX_SWITCH_COMBINATIONS} can take different "
+                  "paths (their runs reach lines of the switches they differ in), more than one proof runs; "
+                  f"the {MAX_SWITCH_COMBINATIONS} with the fewest switches on were verified.  Fix the positions of "
+                  "the switches the operator does not use with --block-delete or the machine file's block_delete "
+                  "(e.g. 3=off,4=off)", None, None, "VF206")
+
+
+def _switch_notes(used: dict[int, list[int]], modes: dict[int, str], free: list[int], complete: bool,
+                  stops: Iterable[tuple[int, Any]]) -> tuple[str, ...]:
+    """What the report says about the operator's switches: block skip, stops."""
     notes: tuple[str, ...] = ()
-    if deleted:
-        lines = sorted({text.count("\n", 0, at) + 1 for at in deleted})
-        where = f"{len(lines)} line(s) start with '/' (block delete), the first at line {lines[0]}"
-        notes += ({"both": f"{where}: verified with the block-delete switch off (those lines run) and on "
-                           "(they are skipped); a violation found in one position says which",
-                   "off": f"{where}: verified with the block-delete switch OFF only (those lines run), as the "
-                          "machine file or --block-delete fixes it; with the switch on the path differs",
-                   "on": f"{where}: verified with the block-delete switch ON only (those lines are skipped), as "
-                         "the machine file or --block-delete fixes it; with the switch off the path differs"}[mode],)
+    for n in sorted(used):
+        lines = used[n]
+        switch = "the block-delete switch" if n == 1 else f"block-delete switch /{n}"
+        label = '/ (or /1)' if n == 1 else f'/{n}'
+        where = (f"{len(lines)} line(s) start with {label}, the first at line {lines[0]}" if lines
+                 else f"lines of a called library program start with {label}")
+        others = ", ".join(f"/{k}" for k in free if k != n)
+        notes += ({"both": f"{where}: verified with {switch} off (those lines run) and on (they are skipped)"
+                           + (f", in every combination with {others}" if others and complete else "")
+                           + (f", but not in every combination with {others} (VF206)" if not complete else "")
+                           + "; a violation found in some positions only says which",
+                   "off": f"{where}: verified with {switch} OFF only (those lines run), as the machine file or "
+                          "--block-delete fixes it; with the switch on the path differs",
+                   "on": f"{where}: verified with {switch} ON only (those lines are skipped), as the machine "
+                         "file or --block-delete fixes it; with the switch off the path differs"}[modes[n]],)
     if stops:
         codes = sorted({k for k, _ in stops})
         names = {0: "M0 (program stop)", 1: "M1 (optional stop)", 60: "M60 (pallet change stop)"}
@@ -430,33 +539,63 @@ def _switch_notes(text: str, deleted: list[int], mode: str, stops: Iterable[tupl
     return notes
 
 
-def _both_switch_positions(off: Result, on: Result, max_violations: int) -> Result:
-    """One result from the block-delete switch off and on: a violation at a source line (and zone) found in
-    one position only carries that position (``Violation.switches``); one found in both, none."""
+def _merge_switch_combinations(runs: list[tuple[frozenset[int], Result]], free: list[int], complete: bool,
+                               max_violations: int) -> Result:
+    """One result from the runs of several switch combinations.
+
+    A violation (a source line, zone, kind) is reported once, with the positions of the free switches it
+    depends on (``Violation.switches``): a switch is left out when flipping it keeps the violation in every
+    combination where it is found (then the witness is the one with that switch off); a violation found in
+    every combination names none.  When not every combination was verified every free switch is named."""
     def key(v):
         return (v.line, v.zone, v.kind, v.break_line)
 
-    on_keys = {key(v) for v in on.violations}
-    off_keys = {key(v) for v in off.violations}
-    violations = [v if key(v) in on_keys else replace(v, switches=(("block_delete", "off"),)) for v in off.violations]
-    violations += [replace(v, switches=(("block_delete", "on"),)) for v in on.violations if key(v) not in off_keys]
-    reasons = list(off.reasons)
-    for r in on.reasons:
-        if (r.message, r.span) not in {(x.message, x.span) for x in reasons}:
-            reasons.append(replace(r, message=r.message + " (with the block-delete switch on)"))
-    stats = dict(off.stats)
-    for k, v in on.stats:
-        stats[k] = stats.get(k, 0) + v
-    verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
-    return replace(off, verdict=verdict, violations=tuple(violations[:max_violations]), reasons=tuple(reasons),
-                   notes=off.notes + tuple(n for n in on.notes if n not in off.notes), stats=tuple(stats.items()),
-                   truncated=off.truncated or on.truncated or len(violations) > max_violations,
-                   extra={"splits": tuple(off.extra.get("splits", ())) + tuple(on.extra.get("splits", ()))})
+    found: dict[tuple, dict[frozenset[int], Violation]] = {}
+    for combo, r in runs:
+        for v in r.violations:
+            found.setdefault(key(v), {}).setdefault(combo, v)
+    violations: list[tuple[int, int, Violation]] = []
+    order = {combo: k for k, (combo, _) in enumerate(runs)}
+    for where in found.values():
+        combos = set(where)
+        named = [n for n in free if not complete or any(c ^ {n} not in combos for c in combos)]
+        loose = set(free) - set(named)
+        combo = min((c for c in combos if not c & loose), key=order.__getitem__)
+        v = where[combo]
+        violations.append((order[combo], len(violations), replace(
+            v, switches=tuple((switch_name(n), "on" if n in combo else "off") for n in named))))
+    violations.sort(key=lambda t: (t[0], t[1]))
+    first = runs[0][1]
+    reasons = list(first.reasons)
+    for combo, r in runs[1:]:
+        on = ", ".join(f"/{n}" for n in free if n in combo)
+        for x in r.reasons:
+            if (x.message, x.span) not in {(y.message, y.span) for y in first.reasons} and \
+                    x.message not in {y.message for y in reasons}:
+                reasons.append(replace(x, message=x.message + f" (with the block-skip switch(es) {on} on)"))
+    stats: dict[str, Any] = dict(first.stats)
+    notes = list(first.notes)
+    splits = list(first.extra.get("splits", ()))
+    counted = {id(first)}
+    for _, r in runs[1:]:
+        if id(r) in counted:  # a combination that took another's run (its path is the same): counted once
+            continue
+        counted.add(id(r))
+        for k, count in r.stats:
+            stats[k] = stats.get(k, 0) + count
+        notes += [n for n in r.notes if n not in notes]
+        splits += list(r.extra.get("splits", ()))
+    out = [v for _, _, v in violations]
+    verdict = Verdict.UNSAFE if out else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    return replace(first, verdict=verdict, violations=tuple(out[:max_violations]), reasons=tuple(reasons),
+                   notes=tuple(notes), stats=tuple(stats.items()),
+                   truncated=any(r.truncated for _, r in runs) or len(out) > max_violations,
+                   extra={"splits": tuple(splits)})
 
 
-def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRange, ...], skip: bool,
-                  extra: dict[str, Any], opts: dict[str, Any]) -> tuple[Result, Interpretation]:
-    """Prove one position of the block-delete switch over the parameter ranges: (result, first interpretation).
+def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRange, ...], skip: frozenset[int],
+                  extra: dict[str, Any], opts: dict[str, Any]) -> tuple[Result, Interpretation, set[int]]:
+    """Prove one combination of the block-skip switches (those on) over the parameter ranges: (result, first interpretation).
 
     The path is built per case: a branch that switches inside a range splits
     it (:mod:`nczones.prover.cases`), each case interpreted afresh with its
@@ -468,6 +607,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
 
     cases = [ranges]
     results, first_run, splits = [], None, []
+    seen: set[int] = set()
     interpretations = 0
     fast = _line_count(source.text) >= FAST_PATH_MIN_LINES
     while cases:
@@ -477,6 +617,8 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
                         block_delete=skip, fast=fast, **extra)
         interpretations += 1
         result = _verify_run(run, case_machine, case_ranges, **opts)
+        for runner in run.runners:  # the Fanuc language layer: the block-skip switches its lines use
+            seen |= getattr(runner, "seen_switches", set())
         if case_ranges and result.violations:
             # a violation names every ranged parameter: those its motion does not depend on at this
             # case's nominal value (another case's path may differ)
@@ -505,7 +647,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, ranges: tuple[ParamRa
                                                        "cases on each side and at the switching value",),
                          extra={"splits": tuple(splits)})
     assert first_run is not None  # the loop ran at least once (it starts with one case)
-    return result, first_run
+    return result, first_run, seen
 
 
 def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange, ...], *, margin: Fraction,

@@ -35,8 +35,10 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "The machine moves exactly along the programmed path: straight lines, exact circles (spirals for "
     "arcs whose end is off the circle within the tolerance), exact NURBS, rapids straight or dogleg as "
     "the machine file says; no corner blending (G64), following error or overshoot.",
-    "Block delete: both positions of the switch are verified unless the machine file (block_delete) or "
-    "--block-delete fixes one, which the report then says; an optional stop (M1) does not move the "
+    "Block delete: every block-skip switch the program uses (Fanuc /1 .. /9, / is /1; LinuxCNC's one "
+    "switch) is verified in both positions, in every combination with the others, unless the machine "
+    "file (block_delete) or --block-delete fixes it, which the report then says (more than 16 "
+    "combinations whose runs can differ: unknown, VF206); an optional stop (M1) does not move the "
     "machine in either position.",
     "The operator does not move the machine during the program: no jogging or handwheel moves during a "
     "stop (M0, M1, M60) or feed hold, no manual data input, no mirror-image, axis-lock or Z-neglect "

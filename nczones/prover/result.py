@@ -119,7 +119,8 @@ class Violation:
     break_parameter: Fraction | None = None
     break_point: tuple[tuple[str, Fraction], ...] = ()
     leg: str = ""
-    #: the switch positions the violation was found with when the proof covered several (``(("block_delete", "on"),)``)
+    #: the switch positions the violation was found with when the proof covered several (``(("block_delete", "on"),)``;
+    #: Fanuc ``/2`` .. ``/9``: ``block_delete/2`` ..): only the switches it depends on, empty when found in every one
     switches: tuple[tuple[str, str], ...] = ()
     #: False when :attr:`first_exit` only repeats the witness of an enclosed irrational path (developed arcs,
     #: polar moves, splines): outside, but not necessarily where the path first leaves the allowed set

@@ -9,7 +9,7 @@ adds: Macro B (``#`` variables, ``WHILE``/``DO``/``END``, ``IF``/``THEN``, ``G65
 moving at once (TOS = 0), ``G53``, ``G28`` (``G91 G28 Z0.``), ``G52``, ``G92``/``G92.1``, ``G68``
 rotation, canned cycles, system-variable reads (``#5221``.., ``#5001``.., ``#5021``.., ``#5083``,
 ``#11001``, ``#4014`` modal reads in ``IF .. THEN``) and block delete (``/``, also on macro statements
-inside a loop, and ``/2`` which runs in both positions).
+inside a loop, and ``/2``, ``/3``: switches of their own, BDT2 and BDT3).
 
 Relations (each a test failure when broken; any exception other than a G-code input error fails too):
 
@@ -21,9 +21,10 @@ Relations (each a test failure when broken; any exception other than a G-code in
 * **dialect translation** (:func:`check_translation`): the same motion written in LinuxCNC and in Fanuc
   syntax, line for line, using only codes whose meaning specs/fanuc.md and specs/gcode-support.md
   document as identical, verify alike (verdict, violating lines and zones);
-* **block delete** (:func:`check_block_delete`): the verdict with the switch in ``both`` positions is
-  the worst of ``off`` and ``on``, and its violations are those of the two positions, each labelled
-  with the position it was found in.
+* **block delete** (:func:`check_block_delete`): the verdict with the switches in ``both`` positions is
+  the worst over every combination of the switches the program uses, each verified alone with the
+  switches fixed, and its violations are those of the combinations, each found in every combination
+  that agrees with the switch positions it is labelled with (issue 33, class 5).
 """
 
 from __future__ import annotations
@@ -141,7 +142,7 @@ def fanuc_programs(draw, machine: Machine, *, reads: bool = True, deletes: bool 
         kind = draw(st.sampled_from(kinds))
         block = draw(_fanuc_block(machine, s, kind, deletes))
         if deletes and len(block) == 1 and draw(st.integers(0, delete_odds)) == 0:
-            block = [draw(st.sampled_from(("/", "/", "/", "/1 ", "/2 "))) + block[0]]
+            block = [draw(st.sampled_from(("/", "/", "/", "/1 ", "/2 ", "/3 "))) + block[0]]
         lines += block
     lines.append("M30")
     for sub in s.subs:
@@ -563,7 +564,7 @@ def fanuc_reads_substituted(machine: Machine, text: str, block_delete: bool = Fa
     finally:
         FanucInterpreter.system_read = original  # type: ignore[method-assign]
     # a read on the left of "=" is a write; the written ones are not reads
-    skipped = re.compile(r"[ \t]*/(?![2-9])")  # a line the switch skips when on ('/', '/1')
+    skipped = re.compile(r"[ \t]*/")  # a line the switches skip when on ('/', '/1' .. '/9')
     tokens = [m for m in re.finditer(r"#(\d+)", text) if int(m.group(1)) >= 1000
               and not re.match(r"\s*=(?!=)", text[m.end():])
               and not (block_delete and skipped.match(text, text.rfind("\n", 0, m.start()) + 1))]
@@ -608,27 +609,37 @@ _ORDER = {"safe": 0, "unknown": 1, "unsafe": 2}
 
 
 def check_block_delete(machine: Machine, text: str) -> None:
-    """``both`` is the worst of ``off`` and ``on``; its violations are theirs, labelled by position."""
+    """``both`` is the worst over every combination of the switches used (each verified with the switches
+    fixed); its violations are theirs, each found in every combination agreeing with its labels."""
+    import itertools
+
+    from nczones.blockskip import used_switches
+
     both = _verify(text, machine, block_delete="both")
-    off = _verify(text, machine, block_delete="off")
-    on = _verify(text, machine, block_delete="on")
+    used = sorted(used_switches(text, "fanuc"))
+    names = ["block_delete" if n == 1 else f"block_delete/{n}" for n in used]
+    found: dict[tuple[str, ...], set] = {}
+    labels = []
+    for bits in itertools.product(("off", "on"), repeat=len(used)):
+        run = _verify(text, machine, block_delete=",".join(f"{n}={p}" for n, p in zip(used, bits)) or "off")
+        found[bits] = {(v.line, v.zone) for v in run.violations}
+        labels.append(run.verdict.label)
     _counted("fanuc block delete")
-    _note(f"block delete: off {off.verdict.label}, on {on.verdict.label}")
-    worst = max(off.verdict.label, on.verdict.label, key=_ORDER.__getitem__)
-    _require(both.verdict.label == worst,
-             f"block delete both: {both.verdict.label}, but off {off.verdict.label} and on {on.verdict.label}")
-    found = {"off": {(v.line, v.zone) for v in off.violations}, "on": {(v.line, v.zone) for v in on.violations}}
+    _note(f"block delete: {len(used)} switch(es), " + ", ".join(sorted(set(labels))))
+    worst = max(labels, key=_ORDER.__getitem__)
+    _require(both.verdict.label == worst, f"block delete both: {both.verdict.label}, but the combinations {labels}")
     for v in both.violations:
-        where = dict(v.switches).get("block_delete")
-        for position in ((where,) if where else ("off", "on")):
-            _require((v.line, v.zone) in found[position],
-                     f"block delete both reports line {v.line} ({v.zone}) for position {position}, which does "
-                     f"not find it: {sorted(found[position], key=str)}")
-    labelled = {(v.line, v.zone, dict(v.switches).get("block_delete")) for v in both.violations}
-    for position, keys in found.items():
-        for line, zone in keys:
-            _require((line, zone, position) in labelled or (line, zone, None) in labelled,
-                     f"line {line} ({zone}) violates with the switch {position} but not in 'both'")
+        named = dict(v.switches)
+        for bits, keys in found.items():
+            if all(named.get(name, p) == p for name, p in zip(names, bits)):
+                _require((v.line, v.zone) in keys,
+                         f"block delete both reports line {v.line} ({v.zone}) with {named}, but the combination "
+                         f"{dict(zip(names, bits))} does not find it: {sorted(keys, key=str)}")
+    reported = {(v.line, v.zone) for v in both.violations}
+    for bits, keys in found.items():
+        for key in keys:
+            _require(key in reported or len(both.violations) >= 20,
+                     f"line {key[0]} ({key[1]}) violates with {dict(zip(names, bits))} but not in 'both'")
 
 
 # ----------------------------------------------------------------------------- dialect translation

@@ -346,9 +346,9 @@ def check_recovery_state_reads(machine: Machine, text: str) -> None:
 
 
 def _positions(text: str) -> tuple[bool, ...]:
-    from nczones.prover import _BLOCK_DELETE_LINE
+    from nczones.blockskip import used_switches
 
-    return (False, True) if _BLOCK_DELETE_LINE.search(text) else (False,)
+    return (False, True) if used_switches(text, "linuxcnc") else (False,)
 
 
 def _break_steps(machine: Machine, segs, index: int) -> tuple[list[tuple[int, ...]], int] | None:

@@ -34,12 +34,13 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Generator, Iterator
+from collections.abc import Callable, Collection, Generator, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
 from typing import Any, Protocol, TypeVar
 
+from ...blockskip import skipped_switches
 from ...errors import Diagnostic, GcodeError, SourceSpan
 from ...machine import FanucSettings
 from ..blocks import LANE_FULL
@@ -191,14 +192,19 @@ class FanucRunner:
     """The Fanuc language layer of one program run (see the module docstring and :func:`iter_blocks`)."""
 
     def __init__(self, source: _LineSource, file: str, variables: FanucVariables, *,
-                 settings: FanucSettings | None = None, block_delete: bool = False,
+                 settings: FanucSettings | None = None, block_delete: bool | Collection[int] = False,
                  library: str | os.PathLike | None = None, state: Any = None,
                  max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, first_line: int = 1, first_index: int = 0,
                  fast_runs: dict | None = None, lane: Callable[..., int] | None = None):
         self.settings = settings or FanucSettings()
         self.main = _Source(source, file)
         self.vars = variables
-        self.block_delete = block_delete
+        #: the optional block skip switches that are on (BDT1..BDT9): their '/n' lines are skipped
+        self.skipped = skipped_switches(block_delete)
+        self.block_delete = 1 in self.skipped  # '/' alone (and '/1'): the plain lanes see only these
+        #: the switches of every '/n' line met (run or skipped), library programs included: a proof covers
+        #: the switches the main text shows, and a switch only a library program uses must be added to them
+        self.seen_switches: set[int] = set()
         self.library = Path(library) if library is not None else None
         self.state = state  # the interpreter: its units and canned cycle decide how words are read
         self.max_loops = max_loop_iterations
@@ -373,7 +379,7 @@ class FanucRunner:
                     if parsed is not None and self.plain_ok(parsed[2], parsed[3], line):
                         delete, number, letters, values = parsed
                         pos, lineno0, lineno = nxt, lineno, lineno + 1
-                        if delete and self.block_delete:
+                        if delete and self.skips(1):
                             continue
                         if letters:
                             self.started = self.ran = True
@@ -438,13 +444,18 @@ class FanucRunner:
             raise GcodeError(Diagnostic("GC314", f"end of the text inside subprogram O{frame.program}: M99 is "
                                         "missing", SourceSpan(frame.source.file, lineno, 1)))
 
+    def skips(self, switch: int) -> bool:
+        """Whether a line starting with ``/switch`` is skipped (its switch on); the switch is recorded."""
+        self.seen_switches.add(switch)
+        return switch in self.skipped
+
     # -- one general line -------------------------------------------------------------------
     def execute(self, compiled: tuple, pos: int, lineno: int) -> _Flow:
         fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled
         self.current_pos = pos
         frame = self.frames[-1]
         here = (nxt, lineno + 1)
-        if fl.delete == 1 and self.block_delete:
+        if fl.delete and self.skips(fl.delete):
             return here
         if fl.percent:
             if self.started:
@@ -507,7 +518,7 @@ class FanucRunner:
         """A line without NC words (assignments, IF, GOTO, WHILE, DO, END, comments): the next
         ``(pos, lineno)``, or None when a #3000 alarm stops the program."""
         fl, _words, assigns, stmt, line, nxt = compiled[:6]
-        if fl.delete == 1 and self.block_delete:
+        if fl.delete and self.skips(fl.delete):
             return nxt, lineno + 1
         if fl.unmodelled is not None:
             reason, col, end = fl.unmodelled
@@ -814,7 +825,7 @@ class FanucRunner:
             if sfl.percent or sfl.program is not None:
                 raise self.error("GC314", f"the finishing shape from N{int(pword[1])} runs into the end of the "
                                  f"program before N{int(qword[1])}", lineno, line, qword[2], qword[3])
-            if not (sfl.delete == 1 and self.block_delete):
+            if not (sfl.delete and self.skips(sfl.delete)):
                 if sfl.unmodelled is not None or assigns or stmt is not None:
                     raise self.unsupported(f"G{int(next(v[1] for v in values if v[0] == 'G' and v[1] in self.shape_codes))}",
                                            "a macro statement inside a lathe cycle's finishing shape: the manuals "
@@ -1110,7 +1121,7 @@ def iter_blocks(
     *,
     variables: FanucVariables | None = None,
     settings: FanucSettings | None = None,
-    block_delete: bool = False,
+    block_delete: bool | Collection[int] = False,
     library: str | Path | None = None,
     state: Any = None,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
