@@ -322,7 +322,6 @@ def test_tool_length_compensation_sentence():
 
 
 @covers("G43", "G49")
-@pytest.mark.xfail(strict=True, reason="issue 33 class 1 (and 2: the bare H00), fixed on branch fanuc-offsets")
 def test_tool_length_compensation_example():
     # [0i] "Tool length compensation", the example (H01 = -4.0; the block comments are the manual's):
     #   N1 G91 G00 X120.0 Y80.0 ;        (1) positioning                 X 120, Y 80
