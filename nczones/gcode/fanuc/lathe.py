@@ -881,7 +881,15 @@ class FanucLatheInterpreter(FanucInterpreter):
             allowance = (self._len_word(words.get("W")) or _ZERO, self._len_word(words.get("U"), diameter=True) or _ZERO)
             if k in (710, 720):
                 data = self.rough[k // 10]
-                depth = self._len_word(words.get("D")) if "D" in words else data["depth"]
+                dword = words.get("D")
+                if dword is not None and "." not in dword.text:
+                    # the one-block form: Haas reads D in units (D0.1); the FS10/11 and FS15 tape formats read
+                    # the depth of cut without a decimal point in least input increments, as G74/G75's P/Q
+                    # are: which one a control follows is not known here (specs/turning.md, "G71/G72")
+                    raise CycleUnknown(f"{name} {dword.text}: the depth of cut D without a decimal point is read "
+                                       "in mm (Haas) or in least input increments (FS10/11, FS15 tape format), "
+                                       "not known for this control; write it with a decimal point")
+                depth = self._len_word(dword) if dword is not None else data["depth"]
                 retract = data["retract"]
                 if "D" in words and "R" in words and k == 710 and words["R"].value not in (0, 1):
                     raise CycleUnknown(f"{name} R{fmt_number(words['R'].value)}: in the one-block form R1 selects type II; "
@@ -904,6 +912,11 @@ class FanucLatheInterpreter(FanucInterpreter):
                                     allowance=allowance, type_one=not type_two, infeed_rapid=first_rapid,
                                     final_pass=self.settings.roughing_final_pass, grid=grid)
             else:
+                extra = [x for x in ("I", "K", "D") if x in words]
+                if extra:
+                    # the FS10/11 (FS15) one-block form G73 P Q I K U W D: relief I/K and divisions D
+                    raise CycleUnknown(f"G73 with {', '.join(extra)} (the one-block FS10/11 form: relief I, K and "
+                                       "the number of divisions D) is not modelled")
                 rx, rz, n = self.g73_rx, self.g73_rz, self.g73_n
                 if rx is None or rz is None or n is None:
                     raise CycleUnknown("G73 without its first block (G73 U W R: the relief and the number of "
