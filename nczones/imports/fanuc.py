@@ -45,7 +45,7 @@ from .model import (
 __all__ = ["read_fanuc", "Parameter", "parse_listing", "BIT_PARAMETERS"]
 
 #: Bit parameters the import reads (their values must be 8 binary digits).
-BIT_PARAMETERS = frozenset({0, 1001, 1004, 1006, 1013, 1300, 1310, 1401, 3401, 3402, 5006, 5101, 5400, 6001, 6004})
+BIT_PARAMETERS = frozenset({0, 1001, 1004, 1006, 1013, 1300, 1310, 1401, 3401, 3402, 5002, 5006, 5101, 5400, 6001, 6004})
 
 #: Least command increment per increment system (1004 / 1013 bits), metric (mm, deg) and inch.
 _INCREMENTS = {
@@ -361,7 +361,7 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     if ipr is not None and ipr[0]:
         c.note("IM201", "parameter 1004 #7 IPR = 1: values without a decimal point are ten times the least input "
                "increment; the machine file has no place for it", ipr[1])
-    settings = _fanuc_settings(ls, names, n_axes, inc_system, bool(ini and ini[0]), c)
+    settings = _fanuc_settings(ls, names, n_axes, inc_system, bool(ini and ini[0]), c, lathe=bool(diameter))
     macros = _macros(ls, c)
     references: list[tuple[str, dict[str, Sourced]]] = []
     for number, n in ((1241, 2), (1242, 3), (1243, 4)):
@@ -405,7 +405,7 @@ Row = tuple[str, str, str]
 
 
 def _fanuc_settings(ls: _Listing, names: dict[int, str], n_axes: int, systems: dict[int, str], inch_input: bool,
-                    c: Collector) -> tuple[Row, ...]:
+                    c: Collector, lathe: bool = False) -> tuple[Row, ...]:
     """The ``[fanuc]`` table: the parameters nczones' Fanuc dialect models (``specs/fanuc.md``)."""
     rows: list[Row] = []
 
@@ -464,6 +464,17 @@ def _fanuc_settings(ls: _Listing, names: dict[int, str], n_axes: int, systems: d
     if tos is not None:
         rows.append(("tool_length_motion", '"shift"' if tos[0] else '"move"', f"5006 #6 TOS = {int(tos[0])} "
                      f"{where(tos[1])}"))
+    if lathe:
+        # a lathe's tool offsets: 5002#4 LGT (geometry by coordinate shift or by tool movement) and #5 LGC
+        # (offset number 0 cancels the geometry offset too)
+        lgt, lgc = ls.bit(5002, 4), ls.bit(5002, 5)
+        if lgt is not None:
+            rows.append(("tool_offset_motion", '"move"' if lgt[0] else '"shift"',
+                         f"5002 #4 LGT = {int(lgt[0])} {where(lgt[1])}"))
+        if lgc is not None:
+            rows.append(("tool_offset_cancel", '"all"' if lgc[0] else '"wear"',
+                         f"5002 #5 LGC = {int(lgc[0])}: T0100 cancels {'geometry and wear' if lgc[0] else 'the wear only'} "
+                         f"{where(lgc[1])}"))
     return tuple(rows)
 
 

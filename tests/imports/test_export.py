@@ -258,3 +258,13 @@ max = {{ X = "{d(F(x1, 2000))}", Z = "{d(F(z1, 1000))}" }}
     assert back.diameter_axes == ("X",) and back.is_lathe
     assert _same_allowed_set(m, back)
     assert back.reference == m.reference
+
+
+def test_fanuc_import_reads_the_lathe_tool_offset_bits():
+    # 5002 #4 LGT = 0 (coordinate shift), #5 LGC = 1 (offset number 0 cancels the geometry too); a lathe only
+    text = ("%\nN01006A1P00001000A2P00000000\nN01020A1P88A2P90\nN01420A1P15000A2P20000\n"
+            "N05002P00100000\n%\n")
+    m = import_text(text, "lathe.prm", "fanuc").machine
+    assert (m.fanuc.tool_offset_motion, m.fanuc.tool_offset_cancel) == ("shift", "all")
+    m = import_text(text.replace("N05002P00100000", "N05002P00010000"), "lathe.prm", "fanuc").machine
+    assert (m.fanuc.tool_offset_motion, m.fanuc.tool_offset_cancel) == ("move", "wear")

@@ -30,7 +30,7 @@ from fractions import Fraction
 from typing import Any
 
 from ...cylinder import Interval
-from ...machine import Machine
+from ...machine import Machine, ToolOffset
 from ...motion import Plane, SegmentKind
 from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ..blocks import Block, ShapeBlock, Word
@@ -639,6 +639,12 @@ class FanucLatheInterpreter(FanucInterpreter):
                               f"[tool_offsets] (known: {known})", tw)
         old = list(self.off)
         offset = self.machine.tool_offsets.get(number)
+        if (number == 0 and self.settings.tool_offset_motion == "shift"
+                and self.settings.tool_offset_cancel == "wear"):
+            # parameter 5002#5 LGC = 0 (the default): with the geometry offset by coordinate shift (LGT = 0),
+            # offset number 0 cancels the wear offset only; the geometry offset in effect stays
+            prev = self.machine.tool_offsets.get(self.offset_number)
+            offset = ToolOffset(0, prev.geometry) if prev is not None else None
         self.offset_number = number
         self.lathe_off = {}
         tl = _ZERO
