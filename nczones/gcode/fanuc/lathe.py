@@ -187,6 +187,9 @@ class FanucLatheInterpreter(FanucInterpreter):
         #: the thread chamfer in leads: G76's first block (P..rr..), else parameter 5130
         self.thread_leads: Fraction | None = None
         self._tip_extra: tuple = ()
+        #: after a G70-G73 cycle whose shape changes the group-01 mode: the modes the control may be in (the
+        #: one before the cycle, the shape's last); None when there is no doubt
+        self.modes_after_cycle: frozenset[int] | None = None
 
     # ------------------------------------------------------------------ state
     def in_cycle(self) -> bool:  # drilling cycles with K repeats are not modelled on lathes
@@ -397,6 +400,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 uses_axes = False
         # ---- group 01: motion and the single cycles
         if g1 is not None:
+            self.modes_after_cycle = None
             k = g1[0]
             if k in (900, 920, 940, 770, 780, 790) and (self.system == "A") == (k in (900, 920, 940)):
                 self.turning = k
@@ -409,6 +413,12 @@ class FanucLatheInterpreter(FanucInterpreter):
             if self.turning is not None and (targets or "R" in words):
                 self._single_cycle(targets, words, block)
             elif targets and not self.unsupported:
+                if g1 is None and self.modes_after_cycle is not None and not self._same_path_modes():
+                    modes = " or ".join(gname(k) for k in sorted(self.modes_after_cycle))
+                    self.unknown("G70", f"the motion mode after a G70-G73 cycle: the manuals do not say whether "
+                                 f"the control is in the mode before the cycle or in the finishing shape's last "
+                                 f"({modes}); give G00 or G01 in the first move after the cycle")
+                    return
                 self._lathe_motion(block, targets, words)
         if 2 in mset or 30 in mset:
             raise StopProgram
@@ -854,8 +864,24 @@ class FanucLatheInterpreter(FanucInterpreter):
         return thread_chamfer(lead, leads, self.settings.thread_chamfer_angle, self._grid_zx())
 
     # ------------------------------------------------------------------ G70-G73
+    def _same_path_modes(self) -> bool:
+        """Whether every mode the control may be in after a G70-G73 cycle moves on the same path: G00 and
+        G01 are both straight with ``rapid_mode = "linear"``."""
+        return self.modes_after_cycle is not None and self.modes_after_cycle <= {0, 10} and (
+            self.machine.rapid_mode.value == "linear")
+
     def _shape_cycle(self, k: int, block: Block, words: dict[str, Word], w: Word) -> None:
         name = gname(k)
+        if isinstance(block, ShapeBlock) and "P" in words and "Q" in words:
+            # the group-01 codes of the shape: the control runs (G70) or reads (G71-G73) them; which mode it is
+            # in afterwards the manuals do not say
+            last = None
+            for b in block.shape:
+                for x in b.words:
+                    if x.letter == "G" and gkey(x.value) in (0, 10, 20, 30):
+                        last = gkey(x.value)
+            if last is not None and last != self.motion and self.motion in (0, 10, 20, 30):
+                self.modes_after_cycle = frozenset({last, self.motion})
         if not isinstance(block, ShapeBlock) or "P" not in words or "Q" not in words:
             if k == 700:
                 raise self.error("GC208", "G70 needs P and Q (the finishing shape's first and last sequence "
