@@ -47,6 +47,10 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "zones are proved against the square of half-width R (tip 0/9) or 2R (tips 1-8) around the imaginary "
     "tool tip on X and Z (the largest over the machine file's tool offsets), which contains that circle; a "
     "tip zone that cannot be enlarged so makes the verdict unknown.",
+    "Fanuc dialect: a tool change moves no axis: M06 on a machining centre and the T code that indexes a "
+    "lathe's turret (with tool_offset_motion = \"shift\") only change the tool and its offsets, unless "
+    "[macros] calls a program for them, whose moves are proved; the machine builder's tool change motion and "
+    "the turret's swing are not checked (M06 on a lathe is unknown).",
     "A margin d is clearance on every axis: the box of half-width d around every path point fits the "
     "allowed set.",
     "Cutter radius compensation is modelled only with cutter_compensation = \"linuxcnc\" (otherwise "
