@@ -274,11 +274,12 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
             c.error("IM106", f"parameter 1006 A{k} #0 ROT = {int(rot[0])} makes axis {names[k]} "
                     f"{'rotary' if rot[0] else 'linear'}; the machine file treats A, B, C as rotary and the others "
                     "as linear", rot[1])
-    # diameter axes (1006#3 DIA = 1): program words are diameters, and so are the axis' machine coordinates
-    # ("Display of axis position: displayed as diameter value", B-62754EN 9.4) and the parameters that hold
-    # them: the stored stroke checks 1320-1327 and the reference positions 1240-1243 (B-64310EN: "for an
-    # axis with diameter specification, set a diameter value").  The machine file counts machine coordinates
-    # as radii (diameter_axes): those values are halved.
+    # diameter axes (1006#3 DIA = 1): program words are diameters, and so are the axis' positions ("Display
+    # of axis position: displayed as diameter value", B-62754EN 9.4).  The stored stroke checks 1320-1327
+    # are set as diameters on such an axis (the parameter manuals B-64310EN / B-63950EN, 1320); the
+    # reference positions 1240-1243, machine coordinates of the same axis, are read the same way (an
+    # inference the IM203 note states).  The machine file counts machine coordinates as radii
+    # (diameter_axes): those values are halved.
     diameter: dict[int, SourceSpan] = {}
     for k in range(1, n_axes + 1):
         dia = ls.bit(1006, 3, k)
@@ -289,8 +290,9 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
                 continue
             diameter[k] = dia[1]
             c.note("IM203", f"parameter 1006 A{k} #3 DIA = 1: axis {names[k]} is programmed in diameter "
-                   f"(diameter_axes); its stored stroke limits and reference positions are diameters, halved to "
-                   "the machine file's radius", dia[1])
+                   f"(diameter_axes); its stored stroke limits (1320-1327) are diameters, and its reference "
+                   "positions (1240-1243) are taken as diameters too; both halved to the machine file's radius",
+                   dia[1])
     c.raise_if_failed()
 
     def length(number: int, k: int, *, speed: bool = False) -> Sourced | None:
