@@ -93,6 +93,15 @@ def test_note_counts_only_length_words():
     assert len(notes) == 1 and notes[0].startswith("1 length word ") and "X100" in notes[0], notes
 
 
+def test_thread_start_angle_q_is_not_a_length():
+    # [0i-T] "Thread cutting (G32)": Q is the threading start angle shift in 0.001 deg, without a decimal point;
+    # G92's Q the same.  Not a length: the note does not count it.
+    m = lathe(fanuc='decimal_point_input = "increment"\nthread_chamfer = "0"')
+    prog = "G00 X40. Z5.\nG32 Z-20. F1.5 Q180000\nG00 X60.\nZ5.\nG92 X38. Z-20. F1.5 Q90000\nM30\n"
+    r = verify_text(prog, m)
+    assert not any("without a decimal point" in n for n in r.notes), r.notes
+
+
 def test_one_block_g71_depth_without_a_decimal_point_is_unknown():
     # Haas reads D in mm (D0.15), the FS10/11 / FS15 tape formats in least input increments: not known which
     fanuc = 'g71_retract = "1"'

@@ -185,6 +185,9 @@ class _Frame:
 _CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 _CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
 _LATHE_PQ = frozenset((70, 71, 72, 73, 74, 75, 76))
+#: Lathe threading codes whose Q is the start angle shift (0.001 deg, without a decimal point), not a length:
+#: G32 and G92 (system A), G33 and G78 (system B).
+_LATHE_Q_ANGLE = frozenset((32, 33, 78, 92))
 #: Lathe cycles whose R is a count or a flag in some forms (G73 R(d) divisions; one-block G71/G72 R1 type II).
 _LATHE_R_COUNT = frozenset((71, 72, 73))
 
@@ -339,7 +342,7 @@ class FanucRunner:
             for w in fl.words)
         # a lathe's G70-G76 read P, Q and some R words as sequence numbers and counts (word_values)
         plain = not (gcodes & _SPECIAL_G) and not any(w[0] == "K" for w in fl.words) and not (
-            self.shape_codes and gcodes & _LATHE_PQ)
+            self.shape_codes and gcodes & (_LATHE_PQ | _LATHE_Q_ANGLE) and any(w[0] in "QR" for w in fl.words))
         out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes, calls, plain)
         if self.cached < 200_000:
             source.cache[pos] = out
@@ -534,7 +537,7 @@ class FanucRunner:
         # ([0i-T] "Multiple repetitive cycle": ns/nf, G74/G75 Δi Δk and G76 Δdmin, k, Δd "without a decimal
         # point"); R is a count in G73's first block (d, the number of divisions) and a flag in the one-block
         # G71/G72/G73 form with P and Q (R1: type II); R of G71/G72/G74-G76 without P/Q is a length (e, Δd, d, i)
-        integer_q = lathe and bool(gcodes & _LATHE_PQ)
+        integer_q = lathe and bool(gcodes & (_LATHE_PQ | _LATHE_Q_ANGLE))
         count_r = lathe and bool(gcodes & _LATHE_R_COUNT) and (
             73 in gcodes or any(w[0] == "P" for w in words))
         g51 = 51 in gcodes
