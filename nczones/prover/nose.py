@@ -54,15 +54,17 @@ def _hull(points: list[tuple[Fraction, Fraction]]) -> list[tuple[Fraction, Fract
     if len(pts) <= 2:
         return pts
 
-    def cross(o, a, b) -> Fraction:
+    Pt = tuple[Fraction, Fraction]
+
+    def cross(o: Pt, a: Pt, b: Pt) -> Fraction:
         return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
 
-    lower: list = []
+    lower: list[Pt] = []
     for p in pts:
         while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
             lower.pop()
         lower.append(p)
-    upper: list = []
+    upper: list[Pt] = []
     for p in reversed(pts):
         while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
             upper.pop()
