@@ -290,10 +290,15 @@ def _fanuc(machine: Machine, notes: _Notes, step: Fraction, include_machine: boo
         minus.append(f"A{k}P{count(lo, False, f'axis {a} stroke check 1 minus')}")
     out: list[str] = []
     if include_machine:
-        out.append("(MACHINE PARAMETERS 1020, 1240, 1420 FOLLOW: CHECK THEM BEFORE LOADING)")
+        out.append("(MACHINE PARAMETERS " + ("1006, " if machine.diameter_axes else "")
+                   + "1020, 1240, 1420 FOLLOW: CHECK THEM BEFORE LOADING)")
+        if machine.diameter_axes:
+            # 1006 #3 DIA on the diameter axes (#0 ROT on A B C): the other bits of 1006 are the machine's
+            out.append("(1006: ONLY #3 DIA AND #0 ROT ARE SET HERE; MERGE THE MACHINE'S OTHER BITS)")
+            out.append("N01006" + "".join(
+                f"A{k}P{'00001000' if a in machine.diameter_axes else '00000001' if a in 'ABC' else '00000000'}"
+                for k, a in enumerate(axes, 1)))
         out.append("N01020" + "".join(f"A{k}P{ord(a)}" for k, a in enumerate(axes, 1)))
-        out.append("N01006" + "".join(f"A{k}P{'00001000' if a in machine.diameter_axes else '00000001' if a in 'ABC' else '00000000'}"
-                                      for k, a in enumerate(axes, 1)))
         out.append("N01240" + "".join(f"A{k}P{count(machine.reference[k - 1] * dia[a], None, f'axis {a} reference')}"
                                       for k, a in enumerate(axes, 1)))
         rates = []
