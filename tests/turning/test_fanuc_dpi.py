@@ -113,3 +113,17 @@ def test_one_block_g73_with_divisions_d_is_unknown():
     why = unknown_reason("G00 X60. Z5.\nG73 P10 Q20 I4. K0 U0 W0 D3 F0.2\n" + G73_SHAPE, lathe(
         fanuc='g73_relief_x = "5"\ng73_relief_z = "0"\ng73_divisions = 2'))
     assert "one-block" in why
+
+
+def test_cli_exit_status_of_the_bundled_program_under_dpi_zero(tmp_path, capsys):
+    # the reported symptom: exit 2 (GC209 "Q20 ... sequence number") with DPI = 0; now exit 1 (unsafe) as
+    # with DPI = 1
+    from nczones.cli import main
+
+    text = (ROOT / "specs/machines/fanuc_lathe.toml").read_text()
+    machine = tmp_path / "lathe_dpi0.toml"
+    machine.write_text(text.replace("[fanuc]\n", '[fanuc]\ndecimal_point_input = "increment"\n'))
+    prog = str(ROOT / "specs/examples/programs/g71_jaws.nc")
+    assert main(["verify", prog, "--machine", str(machine)]) == 1
+    out = capsys.readouterr().out
+    assert "violation[jaws]" in out and "GC209" not in out
