@@ -39,7 +39,7 @@ def _first_line(result) -> int:
 
 
 @pytest.mark.parametrize("long", [False, True], ids=["short", "vectorized"])
-def test_bundled_g71_jaws_is_unsafe_under_both_decimal_point_settings(long):
+def test_bundled_g71_jaws_is_unsafe_under_dpi_zero(long):
     # specs/examples/examples.toml: g71_jaws.nc on fanuc_lathe.toml is unsafe, first at line 7 (the G71 block),
     # zone "jaws".  Its only words without a decimal point are P10 Q20 (sequence numbers), so DPI = 0 must give
     # the same verdict.  The long variant adds 600 moves after the cycle (the vectorized tier, > 512 motions).
