@@ -126,3 +126,12 @@ def test_the_nose_radius_is_never_more_permissive(top, z_end, tip, radius, d):
     without = verify_text(prog, _machine(radius="0", tip=tip)).verdict
     assert not (with_nose is Verdict.SAFE and without is not Verdict.SAFE)
     assert with_nose in (Verdict.SAFE, Verdict.UNSAFE)
+
+
+def test_the_double_pass_of_a_linuxcnc_lathe_program_sees_the_nose_too():
+    # a LinuxCNC program with '#' takes the double pass (nczones.prover.doubles); G7: X words are diameters
+    m = lathe(zones=JAWS, dialect="linuxcnc", offsets='1 = { X = "0", Z = "0", R = "0.8", tip = 0 }')
+    prog = "#1=65\nG18 G7\nG00 X200 Z200\nG00 X#1 Z150\nG01 Z120 F100\nG00 X200\n"
+    assert verify_text(prog, m).verdict is Verdict.UNSAFE
+    m0 = lathe(zones=JAWS, dialect="linuxcnc", offsets='1 = { X = "0", Z = "0", R = "0", tip = 0 }')
+    assert verify_text(prog, m0).verdict is Verdict.SAFE
