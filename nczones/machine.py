@@ -167,6 +167,9 @@ class FanucSettings:
     #: Parameter 5002#4 LGT: a lathe tool offset shifts the coordinate system (``"shift"``: LGT = 0, the next
     #: move carries it) or moves the tool in the T block (``"move"``).
     tool_offset_motion: str = "shift"
+    #: Parameter 5002#5 LGC (with LGT = 0): offset number 0 (``T0100``) cancels the wear offset only, the
+    #: geometry offset stays (``"wear"``, LGC = 0, the default) or cancels both (``"all"``, LGC = 1).
+    tool_offset_cancel: str = "wear"
     #: The path (channel) of a multi-path control whose slides this machine file describes: a program with
     #: ``$n`` path headers is read as the program of path ``$path`` (``specs/turning.md``); None: not given.
     path: int | None = None
@@ -626,7 +629,7 @@ _MACHINE_KEYS = (
 _FANUC_LATHE_KEYS = ("gcode_system", "g71_depth", "g71_retract", "roughing_final_pass", "g73_relief_x",
                      "g73_relief_z", "g73_divisions", "g74_retract", "thread_chamfer", "thread_chamfer_angle",
                      "g76_finish_passes", "g76_tool_angle", "g76_min_depth", "g76_finish_allowance",
-                     "tool_offset_motion")
+                     "tool_offset_motion", "tool_offset_cancel")
 _FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_clearance", "boring_shift",
                "scaling_unit", "rotation_incremental", "atan_signed", "tool_length_motion",
                "harmless_m", "path") + _FANUC_LATHE_KEYS
@@ -917,6 +920,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
 _CHOICES = {
     "gcode_system": GCODE_SYSTEMS,
     "tool_offset_motion": ("shift", "move"),
+    "tool_offset_cancel": ("wear", "all"),
     "decimal_point_input": ("calculator", "increment"),
     "increment_system": ("IS-A", "IS-B", "IS-C"),
     "boring_shift": ("+X", "-X", "+Y", "-Y"),

@@ -263,10 +263,17 @@ def _fanuc(machine: Machine, notes: _Notes, step: Fraction, include_machine: boo
             n = r
         return int(n)
 
+    # a diameter axis (diameter_axes, parameter 1006#3 DIA = 1): the control's machine coordinates and the
+    # parameters holding them (1240, 1320-1325) are diameters; the machine file's are radii
+    dia = {a: Fraction(2) if a in machine.diameter_axes else Fraction(1) for a in axes}
     plus: list[str] = []
     minus: list[str] = []
     for k, a in enumerate(axes, 1):
         lo, hi = box.get(a, (None, None))
+        if lo is not None:
+            lo = lo * dia[a]
+        if hi is not None:
+            hi = hi * dia[a]
         if lo is None and hi is None:
             plus.append(f"A{k}P-1")
             minus.append(f"A{k}P1")
@@ -283,9 +290,16 @@ def _fanuc(machine: Machine, notes: _Notes, step: Fraction, include_machine: boo
         minus.append(f"A{k}P{count(lo, False, f'axis {a} stroke check 1 minus')}")
     out: list[str] = []
     if include_machine:
-        out.append("(MACHINE PARAMETERS 1020, 1240, 1420 FOLLOW: CHECK THEM BEFORE LOADING)")
+        out.append("(MACHINE PARAMETERS " + ("1006, " if machine.diameter_axes else "")
+                   + "1020, 1240, 1420 FOLLOW: CHECK THEM BEFORE LOADING)")
+        if machine.diameter_axes:
+            # 1006 #3 DIA on the diameter axes (#0 ROT on A B C): the other bits of 1006 are the machine's
+            out.append("(1006: ONLY #3 DIA AND #0 ROT ARE SET HERE; MERGE THE MACHINE'S OTHER BITS)")
+            out.append("N01006" + "".join(
+                f"A{k}P{'00001000' if a in machine.diameter_axes else '00000001' if a in 'ABC' else '00000000'}"
+                for k, a in enumerate(axes, 1)))
         out.append("N01020" + "".join(f"A{k}P{ord(a)}" for k, a in enumerate(axes, 1)))
-        out.append("N01240" + "".join(f"A{k}P{count(machine.reference[k - 1], None, f'axis {a} reference')}"
+        out.append("N01240" + "".join(f"A{k}P{count(machine.reference[k - 1] * dia[a], None, f'axis {a} reference')}"
                                       for k, a in enumerate(axes, 1)))
         rates = []
         for k, a in enumerate(axes, 1):
@@ -304,6 +318,7 @@ def _fanuc(machine: Machine, notes: _Notes, step: Fraction, include_machine: boo
         for k, a in enumerate(axes, 1):
             lo, hi = bounds.get(a, (None, None))
             alo, ahi = box.get(a, (None, None))
+            lo, hi, alo, ahi = (None if v is None else v * dia[a] for v in (lo, hi, alo, ahi))
             for side, value, allow_bound in (("minus", lo, alo), ("plus", hi, ahi)):
                 if value is None or abs(value) >= limit:
                     if allow_bound is None or abs(allow_bound) >= limit:
@@ -326,6 +341,8 @@ def _fanuc(machine: Machine, notes: _Notes, step: Fraction, include_machine: boo
         "%",
         f"(STORED STROKE CHECKS FROM {_tape(machine.source)} BY NCZONES EXPORT-ZONES)",
         f"(AXES {names}; INTEGER LENGTHS IN {format_decimal(step)} MM OR DEG, {_FANUC_INCREMENTS[step]})",
+        *(["(" + " ".join(f"A{k}={a}" for k, a in enumerate(axes, 1) if a in machine.diameter_axes)
+           + ": DIAMETER VALUES, FOR 1006#3 DIA = 1)"] if machine.diameter_axes else []),
         "(" + ("THESE HOLD THE MACHINE FILE'S ALLOWED SET EXACTLY" if notes.exact
                else "THE CONTROL CANNOT HOLD EVERY ZONE: IT ALLOWS MORE THAN THE MACHINE FILE") + ")",
     ]

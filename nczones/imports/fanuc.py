@@ -45,7 +45,7 @@ from .model import (
 __all__ = ["read_fanuc", "Parameter", "parse_listing", "BIT_PARAMETERS"]
 
 #: Bit parameters the import reads (their values must be 8 binary digits).
-BIT_PARAMETERS = frozenset({0, 1001, 1004, 1006, 1013, 1300, 1310, 1401, 3401, 3402, 5006, 5101, 5400, 6001, 6004})
+BIT_PARAMETERS = frozenset({0, 1001, 1004, 1006, 1013, 1300, 1310, 1401, 3401, 3402, 5002, 5006, 5101, 5400, 6001, 6004})
 
 #: Least command increment per increment system (1004 / 1013 bits), metric (mm, deg) and inch.
 _INCREMENTS = {
@@ -274,10 +274,25 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
             c.error("IM106", f"parameter 1006 A{k} #0 ROT = {int(rot[0])} makes axis {names[k]} "
                     f"{'rotary' if rot[0] else 'linear'}; the machine file treats A, B, C as rotary and the others "
                     "as linear", rot[1])
+    # diameter axes (1006#3 DIA = 1): program words are diameters, and so are the axis' positions ("Display
+    # of axis position: displayed as diameter value", B-62754EN 9.4).  The stored stroke checks 1320-1327
+    # are set as diameters on such an axis (the parameter manuals B-64310EN / B-63950EN, 1320); the
+    # reference positions 1240-1243, machine coordinates of the same axis, are read the same way (an
+    # inference the IM203 note states).  The machine file counts machine coordinates as radii
+    # (diameter_axes): those values are halved.
+    diameter: dict[int, SourceSpan] = {}
+    for k in range(1, n_axes + 1):
         dia = ls.bit(1006, 3, k)
         if dia is not None and dia[0]:
-            c.note("IM201", f"parameter 1006 A{k} #3 DIA = 1: axis {names[k]} is programmed in diameter; diameter "
-                   "axes have no place in the machine file yet, so it is taken as a radius axis", dia[1])
+            if names[k] in ROTARY_AXES:
+                c.note("IM201", f"parameter 1006 A{k} #3 DIA = 1 on the rotary axis {names[k]}: ignored (only linear "
+                       "axes take diameters)", dia[1])
+                continue
+            diameter[k] = dia[1]
+            c.note("IM203", f"parameter 1006 A{k} #3 DIA = 1: axis {names[k]} is programmed in diameter "
+                   f"(diameter_axes); its stored stroke limits (1320-1327) are diameters, and its reference "
+                   "positions (1240-1243) are taken as diameters too; both halved to the machine file's radius",
+                   dia[1])
     c.raise_if_failed()
 
     def length(number: int, k: int, *, speed: bool = False) -> Sourced | None:
@@ -304,6 +319,13 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
             scale, how = increment[k], f"{what} x {format_decimal(increment[k])} {'deg' if rotary else 'mm'} ({inc_how[k]})"
         return Sourced(q * scale, how, span)
 
+    def coordinate(number: int, k: int) -> Sourced | None:
+        """A machine coordinate parameter (1240-1243, 1320-1327): on a diameter axis a diameter, halved."""
+        v = length(number, k)
+        if v is None or k not in diameter:
+            return v
+        return Sourced(v.value / 2, f"{v.how}, a diameter (1006 A{k} #3 DIA = 1): / 2", v.span)
+
     # rapid rates (1420)
     rapid: dict[str, Sourced] = {}
     for k in range(1, n_axes + 1):
@@ -319,7 +341,7 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     # reference positions (1240: where reference return ends; 1241-1243 the 2nd to 4th)
     reference: dict[str, Sourced] = {}
     for k in range(1, n_axes + 1):
-        v = length(1240, k)
+        v = coordinate(1240, k)
         if v is None:
             v = Sourced(Fraction(0), f"no parameter 1240 A{k}: the control's default 0")
         if in_range(c, v.value, v.how, v.span):
@@ -327,7 +349,7 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     if 1240 not in params:
         c.note("IM203", "no parameter 1240 (the reference position): taken as machine zero on every axis",
                file=path)
-    zones = _stroke_checks(ls, names, n_axes, length, c)
+    zones = _stroke_checks(ls, names, n_axes, coordinate, c)
 
     # modal state at power-on and decimal-point input
     modal: list[tuple[str, str]] = []
@@ -341,12 +363,12 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
     if ipr is not None and ipr[0]:
         c.note("IM201", "parameter 1004 #7 IPR = 1: values without a decimal point are ten times the least input "
                "increment; the machine file has no place for it", ipr[1])
-    settings = _fanuc_settings(ls, names, n_axes, inc_system, bool(ini and ini[0]), c)
+    settings = _fanuc_settings(ls, names, n_axes, inc_system, bool(ini and ini[0]), c, lathe=bool(diameter))
     macros = _macros(ls, c)
     references: list[tuple[str, dict[str, Sourced]]] = []
     for number, n in ((1241, 2), (1242, 3), (1243, 4)):
         if number in params:
-            vs = {names[k]: v for k in range(1, n_axes + 1) if (v := length(number, k)) is not None}
+            vs = {names[k]: v for k in range(1, n_axes + 1) if (v := coordinate(number, k)) is not None}
             for a in axes:
                 vs.setdefault(a, Sourced(Fraction(0), f"no {number} for axis {a}: the control's default 0"))
             references.append((f"machine.reference_{n}", vs))
@@ -371,7 +393,11 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
         rapid=frozen(rapid), reference=frozen(reference),
         rapid_mode=rapid_mode,
         modal=tuple(modal), zones=zones, homing=homing, notes=tuple(c.notes),
-        extra=(("dialect", '"fanuc"', "a Fanuc control: programs are read in the Fanuc dialect"),),
+        extra=(("dialect", '"fanuc"', "a Fanuc control: programs are read in the Fanuc dialect"),) + ((
+            ("type", '"lathe"', "a diameter axis (1006 #3 DIA = 1): a lathe control"),
+            ("diameter_axes", "[" + ", ".join(f'"{names[k]}"' for k in sorted(diameter)) + "]",
+             "1006 #3 DIA = 1: " + ", ".join(f"A{k} ({sp.file}:{sp.line})" for k, sp in sorted(diameter.items()))),
+        ) if diameter else ()),
         axis_tables=tuple((name, frozen(vs)) for name, vs in references),
         tables=tuple((name, rows) for name, rows in (("fanuc", settings), ("macros", macros)) if rows),
     )
@@ -381,7 +407,7 @@ Row = tuple[str, str, str]
 
 
 def _fanuc_settings(ls: _Listing, names: dict[int, str], n_axes: int, systems: dict[int, str], inch_input: bool,
-                    c: Collector) -> tuple[Row, ...]:
+                    c: Collector, lathe: bool = False) -> tuple[Row, ...]:
     """The ``[fanuc]`` table: the parameters nczones' Fanuc dialect models (``specs/fanuc.md``)."""
     rows: list[Row] = []
 
@@ -440,6 +466,17 @@ def _fanuc_settings(ls: _Listing, names: dict[int, str], n_axes: int, systems: d
     if tos is not None:
         rows.append(("tool_length_motion", '"shift"' if tos[0] else '"move"', f"5006 #6 TOS = {int(tos[0])} "
                      f"{where(tos[1])}"))
+    if lathe:
+        # a lathe's tool offsets: 5002#4 LGT (geometry by coordinate shift or by tool movement) and #5 LGC
+        # (offset number 0 cancels the geometry offset too)
+        lgt, lgc = ls.bit(5002, 4), ls.bit(5002, 5)
+        if lgt is not None:
+            rows.append(("tool_offset_motion", '"move"' if lgt[0] else '"shift"',
+                         f"5002 #4 LGT = {int(lgt[0])} {where(lgt[1])}"))
+        if lgc is not None:
+            rows.append(("tool_offset_cancel", '"all"' if lgc[0] else '"wear"',
+                         f"5002 #5 LGC = {int(lgc[0])}: T0100 cancels {'geometry and wear' if lgc[0] else 'the wear only'} "
+                         f"{where(lgc[1])}"))
     return tuple(rows)
 
 

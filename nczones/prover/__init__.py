@@ -264,6 +264,12 @@ def _verify(
     if not isinstance(max_violations, int) or max_violations < 1:
         raise InvalidArgument(f"max_violations must be a positive integer, got {max_violations!r}")
     ranges = tuple(parse_param(p, machine) if isinstance(p, str) else p for p in params)
+    # a lathe tool's nose radius: the tip zones enlarged by the nose's reach (nczones.prover.nose), or a
+    # reason the verdict cannot be safe
+    from .nose import nose_zones
+
+    machine, nose_note, nose_reason = nose_zones(machine)
+    nose_reasons = (Reason(nose_reason, None, None, "VF207"),) if nose_reason else ()
     extra: dict[str, Any] = {"max_loop_iterations": max_iterations}
     if arc_tolerance is not None:
         extra["arc_tolerance"] = arc_tolerance
@@ -328,6 +334,11 @@ def _verify(
                     bar(total or 0, total, motions=dict(quick.stats)["segments"], blocks=quick.extra["counts"]["blocks"])
                 else:
                     bar(total or 0, total)
+            if nose_note or nose_reasons:
+                quick = replace(quick, notes=quick.notes + ((nose_note,) if nose_note else ()),
+                                reasons=quick.reasons + nose_reasons,
+                                verdict=(Verdict.UNKNOWN if nose_reasons and quick.verdict is Verdict.SAFE
+                                         else quick.verdict))
             return replace(quick, budget_s=limits.budget_s if limits is not None else budget_s,
                            timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
                            program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
@@ -362,6 +373,8 @@ def _verify(
         notes += (f"{runs_done} of the {len(combos)} combinations of the block-skip switches were interpreted: "
                   "the others differ from one of them only in switches its run never reached a line of, so "
                   "their path is the same",)
+    notes += (nose_note,) if nose_note else ()
+    reasons += nose_reasons
     if recovery is not None and not interrupted:
         from .recovery import verify_recovery
 

@@ -45,6 +45,14 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "switches; feed and rapid overrides change speed only (a dogleg rapid keeps its shape).",
     "Zones are exact: touching a forbid zone's boundary is allowed, a forbid zone without interior "
     "(min = max on an axis) forbids nothing, tool-tip zones see machine Z minus the active tool length.",
+    "Lathe tool nose: the tool's cutting edge is the nose circle of its tool offset's radius; tool-tip "
+    "zones are proved against the square of half-width R (tip 0/9) or 2R (tips 1-8) around the imaginary "
+    "tool tip on X and Z (the largest over the machine file's tool offsets), which contains that circle; a "
+    "tip zone that cannot be enlarged so makes the verdict unknown.",
+    "Fanuc dialect: a tool change moves no axis: M06 on a machining centre and the T code that indexes a "
+    "lathe's turret (with tool_offset_motion = \"shift\") only change the tool and its offsets, unless "
+    "[macros] calls a program for them, whose moves are proved; the machine builder's tool change motion and "
+    "the turret's swing are not checked (M06 on a lathe is unknown).",
     "A margin d is clearance on every axis: the box of half-width d around every path point fits the "
     "allowed set.",
     "Cutter radius compensation is modelled only with cutter_compensation = \"linuxcnc\" (otherwise "

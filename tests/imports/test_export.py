@@ -17,6 +17,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nczones.cli import main
+from nczones.exact import format_decimal
 from nczones.imports import import_text
 from nczones.imports.export import export_zones
 from nczones.machine import Machine, parse_machine
@@ -177,3 +178,93 @@ def test_cli_exit_status_says_whether_the_control_holds_it_exactly(tmp_path, cap
     assert main(["export-zones", str(stepped), "--kind", "fanuc"]) == 1
     captured = capsys.readouterr()
     assert captured.out.startswith("%\n") and "note[EX101]" in captured.err and "stepped" in captured.err
+
+
+# ------------------------------------------------------------------ a Fanuc lathe's diameter axis (1006#3 DIA)
+# FANUC Series 0i-D / 30i parameter manuals (B-64310EN, B-63950EN), 1320/1321: the stored stroke limits are
+# machine coordinates, and on an axis with diameter specification (1006#3 DIA = 1) "a diameter value" is set;
+# the 16/18-TC operator's manual B-62754EN 9.4 ("Diameter and radius programming"): "Display of axis position:
+# displayed as diameter value".  The machine file counts a diameter axis' machine coordinate as a radius
+# (diameter_axes, specs/turning.md), so the parameter value is twice the machine file's.
+
+LATHE = parse_machine("""
+[machine]
+name = "lathe"
+type = "lathe"
+dialect = "fanuc"
+axes = ["X", "Z"]
+diameter_axes = ["X"]
+rapid = { X = "12000", Z = "15000" }
+reference = { X = "120", Z = "400" }
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-1", Z = "0" }
+max = { X = "125.25", Z = "700" }
+[[zones]]
+name = "turret guard"
+kind = "box"
+forbid = true
+min = { X = "100", Z = "600" }
+max = { X = "130", Z = "710" }
+""", "lathe.toml")
+
+
+def test_fanuc_export_writes_diameters_for_a_diameter_axis():
+    r = export_zones(LATHE, "fanuc", include_machine=True)
+    lines = r.text.splitlines()
+    # X radius 125.25 -> diameter 250.5 = 250500 counts of 0.001; -1 -> -2000; Z as written
+    assert "N01320A1P250500A2P700000" in lines and "N01321A1P-2000A2P0" in lines
+    assert "N01322A1P260000A2P710000" in lines and "N01323A1P200000A2P600000" in lines
+    assert "N01006A1P00001000A2P00000000" in lines  # DIA on X
+    assert "N01240A1P240000A2P400000" in lines  # the reference X 120 (radius) is 240 on the control
+    assert r.exact
+
+
+def test_fanuc_import_halves_a_diameter_axis_and_keeps_diameter_axes():
+    # 1320 X 225.0 (a diameter) allows the tool to a radius of 112.5
+    text = ("%\nN01006A1P00001000A2P00000000\nN01020A1P88A2P90\nN01240A1P220000A2P300000\n"
+            "N01320A1P225000A2P305000\nN01321A1P-2000A2P-5000\nN01420A1P15000A2P20000\n%\n")
+    m = import_text(text, "lathe.prm", "fanuc").machine
+    assert m.diameter_axes == ("X",) and m.is_lathe
+    (z,) = [z for z in m.zones if not z.forbid]
+    assert z.bounds()["X"] == (F(-1), F(225, 2)) and z.bounds()["Z"] == (F(-5), F(305))
+    assert m.reference == (F(110), F(300))
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(xs=st.lists(st.integers(-50_000, 150_000), min_size=2, max_size=2, unique=True),
+       zs=st.lists(st.integers(-50_000, 150_000), min_size=2, max_size=2, unique=True))
+def test_round_trip_of_a_lathe_keeps_radii_and_diameter_axes(xs, zs):
+    # radii on a 0.0005 grid (a diameter of whole 0.001 counts): exact both ways
+    (x0, x1), (z0, z1) = sorted(xs), sorted(zs)
+    d = format_decimal
+    m = parse_machine(f"""
+[machine]
+type = "lathe"
+dialect = "fanuc"
+axes = ["X", "Z"]
+diameter_axes = ["X"]
+rapid = {{ X = "12000", Z = "15000" }}
+reference = {{ X = "{d(F((x0 + x1) // 2, 2000))}", Z = "{d(F(z0, 1000))}" }}
+[[zones]]
+name = "travel"
+kind = "box"
+min = {{ X = "{d(F(x0, 2000))}", Z = "{d(F(z0, 1000))}" }}
+max = {{ X = "{d(F(x1, 2000))}", Z = "{d(F(z1, 1000))}" }}
+""", "lathe.toml")
+    back, r = _round_trip(m, "fanuc")
+    assert r.exact, [n.message for n in r.notes]
+    assert back.diameter_axes == ("X",) and back.is_lathe
+    assert _same_allowed_set(m, back)
+    assert back.reference == m.reference
+
+
+def test_fanuc_import_reads_the_lathe_tool_offset_bits():
+    # 5002 #4 LGT = 0 (coordinate shift), #5 LGC = 1 (offset number 0 cancels the geometry too); a lathe only
+    text = ("%\nN01006A1P00001000A2P00000000\nN01020A1P88A2P90\nN01420A1P15000A2P20000\n"
+            "N05002P00100000\n%\n")
+    m = import_text(text, "lathe.prm", "fanuc").machine
+    assert (m.fanuc.tool_offset_motion, m.fanuc.tool_offset_cancel) == ("shift", "all")
+    m = import_text(text.replace("N05002P00100000", "N05002P00010000"), "lathe.prm", "fanuc").machine
+    assert (m.fanuc.tool_offset_motion, m.fanuc.tool_offset_cancel) == ("move", "wear")

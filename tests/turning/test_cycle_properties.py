@@ -97,16 +97,18 @@ def _with_g54z(machine, dz):
 
 
 def test_parameter_range_on_the_work_offset_moves_every_pass():
-    # g71_clear.nc leaves its passes 2.1 mm before the jaws' face: safe for G54.Z in -1..1, unsafe for -3..0
-    # (at -3 the passes reach 0.9 mm into the jaws); every concrete value agrees with the range's verdict.
+    # g71_clear.nc leaves its passes 2.1 mm before the jaws' face, 1.3 mm once the reach of tool 1's nose
+    # (R 0.4 at tip 3: 2R = 0.8, specs/turning.md "Tool nose radius") is taken off: safe for G54.Z in -1..1,
+    # unsafe for -3..0 (at -3 the nose's square reaches 1.7 mm into the jaws); every concrete value agrees
+    # with the range's verdict (at -1.3 the square touches the face: safe).
     m = load_machine(ROOT / "specs/machines/fanuc_lathe.toml")
     prog = ROOT / "specs/examples/programs/g71_clear.nc"
     assert verify(prog, m, params=["G54.Z=-1..1"]).verdict.label == "safe"
     r = verify(prog, m, params=["G54.Z=-3..0"])
     assert r.verdict.label == "unsafe" and "roughing pass" in r.violations[0].derived
     value = dict(r.violations[0].params)["G54.Z"]
-    assert value < Fraction(-21, 10)
-    for dz, label in ((F(-3), "unsafe"), (F(-21, 10), "safe"), (F(-1), "safe"), (F(1), "safe"), (value, "unsafe")):
+    assert value < Fraction(-13, 10)
+    for dz, label in ((F(-3), "unsafe"), (F(-13, 10), "safe"), (F(-14, 10), "unsafe"), (F(-1), "safe"), (F(1), "safe"), (value, "unsafe")):
         assert verify(prog, _with_g54z(m, dz)).verdict.label == label, dz
 
 

@@ -298,3 +298,24 @@ def test_missing_shape_block_is_an_error():
     with pytest.raises(GcodeError) as e:
         moves("G00 X50. Z2.\nG71 U5. R1.\nG71 P10 Q30 F0.2\n" + G71_SHAPE, lathe())
     assert e.value.diagnostics[0].code == "GC314" and "N30" in e.value.diagnostics[0].message
+
+
+# ----------------------------------------------------------------------------------- the mode after G70-G73
+
+def test_the_motion_mode_after_a_shape_cycle_is_unknown_when_it_changes_the_path():
+    # G70-G76 are one-shot (group 00, [0i-T] "G code list"); the finishing shape's blocks set group 01 (G01,
+    # G02) when the control runs them, and the manuals do not say which mode is in effect after the cycle.
+    # A bare move after it is unknown unless every candidate moves on the same path.
+    arc_shape = "N10 G00 X20. Z0\nG01 X30. Z-5.\nN20 G02 X40. Z-10. R5.\n"
+    why = unknown_reason("G00 X60. Z5.\nG70 P10 Q20 F0.1\nX100. Z20.\nM30\n" + arc_shape, lathe())
+    assert "motion mode after a G70-G73 cycle" in why and "G2" in why
+    # with a G code the move is modelled
+    got = moves("G00 X60. Z5.\nG70 P10 Q20 F0.1\nG00 X100. Z20.\nM30\n" + arc_shape, lathe())
+    assert got[-1] == ("", F(20), F(50))
+    # G00 before, G01 last: both straight with rapid_mode = "linear" (the helper's lathe): modelled
+    got = moves("G00 X60. Z5.\nG70 P10 Q20 F0.1\nX100. Z20.\nM30\n" + G73_SHAPE, lathe())
+    assert got[-1] == ("", F(20), F(50))
+    # ... but not with a dogleg rapid
+    why = unknown_reason("G00 X60. Z5.\nG70 P10 Q20 F0.1\nX100. Z20.\nM30\n" + G73_SHAPE,
+                         lathe('rapid_mode = "dogleg"\n'))
+    assert "motion mode after" in why

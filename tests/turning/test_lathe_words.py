@@ -76,10 +76,29 @@ def test_g28_u0_w0_returns_via_the_current_point():
 
 def test_t_code_offsets_shift_the_coordinates():
     # T0101: offset 1 is X+80 (radius) Z+50: X40. Z2. puts the tip at r20 Z2, the turret at X100 Z52.
-    # T0100 cancels: the next X40. goes back to X20 (the tool does not move in the T block: "shift").
-    m = lathe(offsets='1 = { X = "80", Z = "50" }')
+    # T0100 with tool_offset_cancel = "all" (parameter 5002#5 LGC = 1) cancels: the next X40. goes back to
+    # X20 (the tool does not move in the T block: "shift").
+    m = lathe(offsets='1 = { X = "80", Z = "50" }', fanuc='tool_offset_cancel = "all"')
     got = moves("T0101\nG00 X40. Z2.\nT0100\nG00 X40. Z2.\n", m)
     assert got == [("", F(52), F(100)), ("", F(2), F(20))]
+
+
+def test_t0100_keeps_the_geometry_offset_by_default():
+    # Parameter 5002#5 LGC = 0 (the factory setting; [fanuc] tool_offset_cancel = "wear"): with the geometry
+    # offset by coordinate shift (LGT = 0) offset number 0 cancels the wear offset only.  Offset 1: geometry
+    # X+80 Z+50, wear X+0.5.  T0101, X40. Z2.: turret X 20 + 80.5 = 100.5, Z52.  After T0100 the same X40.
+    # Z2. puts the turret at X 20 + 80 = 100 (the wear gone, the geometry kept), Z52.
+    m = lathe(offsets='1 = { X = "80", Z = "50", wear = { X = "0.5" } }')
+    got = moves("T0101\nG00 X40. Z2.\nT0100\nG00 X40. Z2.\n", m)
+    assert got == [("", F(52), F(201, 2)), ("", F(52), F(100))]
+    # end to end: the turret's travel ends at Z 180.  After T0100, G00 Z120. puts the turret at Z 170 (geometry
+    # kept: inside) and G00 Z140. at Z 190 (outside): unsafe.  Read as a full cancel, Z140. would be the turret
+    # at Z140 and the proof safe.
+    zones = ('[[zones]]\nname = "travel"\nkind = "box"\n'
+             'min = { X = "0", Z = "-100" }\nmax = { X = "250", Z = "180" }\n')
+    m = lathe(offsets='1 = { X = "80", Z = "50" }', zones=zones, extra='start = { X = "150", Z = "150" }\n')
+    r = verify_text("T0101\nG00 X100. Z120.\nT0100\nG00 Z140.\n", m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "travel" and r.violations[0].span.line == 4
 
 
 def test_t_code_offsets_move_in_the_t_block():

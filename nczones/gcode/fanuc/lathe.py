@@ -30,7 +30,7 @@ from fractions import Fraction
 from typing import Any
 
 from ...cylinder import Interval
-from ...machine import Machine
+from ...machine import Machine, ToolOffset
 from ...motion import Plane, SegmentKind
 from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ..blocks import Block, ShapeBlock, Word
@@ -190,6 +190,9 @@ class FanucLatheInterpreter(FanucInterpreter):
         #: the thread chamfer in leads: G76's first block (P..rr..), else parameter 5130
         self.thread_leads: Fraction | None = None
         self._tip_extra: tuple = ()
+        #: after a G70-G73 cycle whose shape changes the group-01 mode: the modes the control may be in (the
+        #: one before the cycle, the shape's last); None when there is no doubt
+        self.modes_after_cycle: frozenset[int] | None = None
 
     # ------------------------------------------------------------------ state
     def in_cycle(self) -> bool:  # drilling cycles with K repeats are not modelled on lathes
@@ -400,6 +403,7 @@ class FanucLatheInterpreter(FanucInterpreter):
                 uses_axes = False
         # ---- group 01: motion and the single cycles
         if g1 is not None:
+            self.modes_after_cycle = None
             k = g1[0]
             if k in (900, 920, 940, 770, 780, 790) and (self.system == "A") == (k in (900, 920, 940)):
                 self.turning = k
@@ -412,6 +416,12 @@ class FanucLatheInterpreter(FanucInterpreter):
             if self.turning is not None and (targets or "R" in words):
                 self._single_cycle(targets, words, block)
             elif targets and not self.unsupported:
+                if g1 is None and self.modes_after_cycle is not None and not self._same_path_modes():
+                    modes = " or ".join(gname(k) for k in sorted(self.modes_after_cycle))
+                    self.unknown("G70", f"the motion mode after a G70-G73 cycle: the manuals do not say whether "
+                                 f"the control is in the mode before the cycle or in the finishing shape's last "
+                                 f"({modes}); give G00 or G01 in the first move after the cycle")
+                    return
                 self._lathe_motion(block, targets, words)
         if 2 in mset or 30 in mset:
             raise StopProgram
@@ -642,6 +652,12 @@ class FanucLatheInterpreter(FanucInterpreter):
                               f"[tool_offsets] (known: {known})", tw)
         old = list(self.off)
         offset = self.machine.tool_offsets.get(number)
+        if (number == 0 and self.settings.tool_offset_motion == "shift"
+                and self.settings.tool_offset_cancel == "wear"):
+            # parameter 5002#5 LGC = 0 (the default): with the geometry offset by coordinate shift (LGT = 0),
+            # offset number 0 cancels the wear offset only; the geometry offset in effect stays
+            prev = self.machine.tool_offsets.get(self.offset_number)
+            offset = ToolOffset(0, prev.geometry) if prev is not None else None
         self.offset_number = number
         self.lathe_off = {}
         tl = _ZERO
@@ -850,8 +866,24 @@ class FanucLatheInterpreter(FanucInterpreter):
         return thread_chamfer(lead, leads, self.settings.thread_chamfer_angle, self._grid_zx())
 
     # ------------------------------------------------------------------ G70-G73
+    def _same_path_modes(self) -> bool:
+        """Whether every mode the control may be in after a G70-G73 cycle moves on the same path: G00 and
+        G01 are both straight with ``rapid_mode = "linear"``."""
+        return self.modes_after_cycle is not None and self.modes_after_cycle <= {0, 10} and (
+            self.machine.rapid_mode.value == "linear")
+
     def _shape_cycle(self, k: int, block: Block, words: dict[str, Word], w: Word) -> None:
         name = gname(k)
+        if isinstance(block, ShapeBlock) and "P" in words and "Q" in words:
+            # the group-01 codes of the shape: the control runs (G70) or reads (G71-G73) them; which mode it is
+            # in afterwards the manuals do not say
+            last = None
+            for b in block.shape:
+                for x in b.words:
+                    if x.letter == "G" and gkey(x.value) in (0, 10, 20, 30):
+                        last = gkey(x.value)
+            if last is not None and last != self.motion and self.motion in (0, 10, 20, 30):
+                self.modes_after_cycle = frozenset({last, self.motion})
         if not isinstance(block, ShapeBlock) or "P" not in words or "Q" not in words:
             if k == 700:
                 raise self.error("GC208", "G70 needs P and Q (the finishing shape's first and last sequence "
@@ -883,7 +915,15 @@ class FanucLatheInterpreter(FanucInterpreter):
             allowance = (self._len_word(words.get("W")) or _ZERO, self._len_word(words.get("U"), diameter=True) or _ZERO)
             if k in (710, 720):
                 data = self.rough[k // 10]
-                depth = self._len_word(words.get("D")) if "D" in words else data["depth"]
+                dword = words.get("D")
+                if dword is not None and "." not in dword.text:
+                    # the one-block form: Haas reads D in units (D0.1); the FS10/11 and FS15 tape formats read
+                    # the depth of cut without a decimal point in least input increments, as G74/G75's P/Q
+                    # are: which one a control follows is not known here (specs/turning.md, "G71/G72")
+                    raise CycleUnknown(f"{name} {dword.text}: the depth of cut D without a decimal point is read "
+                                       "in mm (Haas) or in least input increments (FS10/11, FS15 tape format), "
+                                       "not known for this control; write it with a decimal point")
+                depth = self._len_word(dword) if dword is not None else data["depth"]
                 retract = data["retract"]
                 if "D" in words and "R" in words and k == 710 and words["R"].value not in (0, 1):
                     raise CycleUnknown(f"{name} R{fmt_number(words['R'].value)}: in the one-block form R1 selects type II; "
@@ -906,6 +946,11 @@ class FanucLatheInterpreter(FanucInterpreter):
                                     allowance=allowance, type_one=not type_two, infeed_rapid=first_rapid,
                                     final_pass=self.settings.roughing_final_pass, grid=grid)
             else:
+                extra = [x for x in ("I", "K", "D") if x in words]
+                if extra:
+                    # the FS10/11 (FS15) one-block form G73 P Q I K U W D: relief I/K and divisions D
+                    raise CycleUnknown(f"G73 with {', '.join(extra)} (the one-block FS10/11 form: relief I, K and "
+                                       "the number of divisions D) is not modelled")
                 rx, rz, n = self.g73_rx, self.g73_rz, self.g73_n
                 if rx is None or rz is None or n is None:
                     raise CycleUnknown("G73 without its first block (G73 U W R: the relief and the number of "

@@ -186,6 +186,11 @@ class _Frame:
 _CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
 _CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
 _LATHE_PQ = frozenset((70, 71, 72, 73, 74, 75, 76))
+#: Lathe threading codes whose Q is the start angle shift (0.001 deg, without a decimal point), not a length:
+#: G32 and G92 (system A), G33 and G78 (system B).
+_LATHE_Q_ANGLE = frozenset((32, 33, 78, 92))
+#: Lathe cycles whose R is a count or a flag in some forms (G73 R(d) divisions; one-block G71/G72 R1 type II).
+_LATHE_R_COUNT = frozenset((71, 72, 73))
 
 
 class FanucRunner:
@@ -341,7 +346,9 @@ class FanucRunner:
             w[0] in "GM" and (w[1] == EXPR or w[2][0] in (_CALL_G if w[0] == "G" else _CALL_M)
                               or w[2][0] in (self.custom_g if w[0] == "G" else self.custom_m))
             for w in fl.words)
-        plain = not (gcodes & _SPECIAL_G) and not any(w[0] == "K" for w in fl.words)
+        # a lathe's G70-G76 read P, Q and some R words as sequence numbers and counts (word_values)
+        plain = not (gcodes & _SPECIAL_G) and not any(w[0] == "K" for w in fl.words) and not (
+            self.shape_codes and gcodes & (_LATHE_PQ | _LATHE_Q_ANGLE) and any(w[0] in "QR" for w in fl.words))
         out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes, calls, plain)
         if self.cached < 200_000:
             source.cache[pos] = out
@@ -538,7 +545,12 @@ class FanucRunner:
         cycle = not lathe and (bool(gcodes & _CYCLE_G) or (not (gcodes & _CANCEL_CYCLE_G) and in_cycle is not None
                                                             and in_cycle()))
         # a lathe's G70-G76 read P and Q as sequence numbers or counts of the least increment, not lengths
-        integer_q = lathe and bool(gcodes & _LATHE_PQ)
+        # ([0i-T] "Multiple repetitive cycle": ns/nf, G74/G75 Δi Δk and G76 Δdmin, k, Δd "without a decimal
+        # point"); R is a count in G73's first block (d, the number of divisions) and a flag in the one-block
+        # G71/G72/G73 form with P and Q (R1: type II); R of G71/G72/G74-G76 without P/Q is a length (e, Δd, d, i)
+        integer_q = lathe and bool(gcodes & (_LATHE_PQ | _LATHE_Q_ANGLE))
+        count_r = lathe and bool(gcodes & _LATHE_R_COUNT) and (
+            73 in gcodes or any(w[0] == "P" for w in words))
         g51 = 51 in gcodes
         degrees = 68 in gcodes  # G68 R is an angle
         dwell = 4 in gcodes  # G04 X/U are seconds (increment 0.001 s)
@@ -556,6 +568,8 @@ class FanucRunner:
                     q = round_to(value, self._inc_mm)
                 elif integer_q and letter == "Q":
                     q = round_to(value, Fraction(1))
+                elif count_r and letter == "R":
+                    q = value[1] if value[1] is not None else Fraction(value[0])
                 else:
                     q = self.address_value(letter, value, cycle)
             else:
@@ -566,7 +580,8 @@ class FanucRunner:
                 elif dwell and letter in "XU":
                     if not point and self._dpi_increment:
                         q = q / 1000
-                elif letter in LENGTH_LETTERS and not (letter == "K" and cycle) and not (integer_q and letter == "Q"):
+                elif letter in LENGTH_LETTERS and not (letter == "K" and cycle) and not (
+                        integer_q and letter == "Q") and not (count_r and letter == "R"):
                     q = self.literal("A" if degrees and letter == "R" else letter, q, point, lineno, text)
             values.append((letter, q, col, end, text))
         return values
