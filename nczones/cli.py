@@ -245,6 +245,8 @@ COMMANDS: Mapping[str, Command] = MappingProxyType({
                       "re-check the counterexamples of a JSON report exactly against the files it names"),
     "fleet": Command("nczones.commands.fleet",
                      "verify a library of programs against its machines, incrementally (serial or on Dask)"),
+    "linuxcnc-filter": Command("nczones.commands.linuxcnc_filter",
+                               "LinuxCNC's [FILTER] program: pass a program through only when it is proved safe"),
 })
 
 #: Subcommand registrars by command name; each command's module adds its own when imported.
