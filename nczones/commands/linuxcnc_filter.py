@@ -37,7 +37,8 @@ if TYPE_CHECKING:
     from ..machine import Machine
     from ..prover.result import Result
 
-__all__ = ["register", "find_machine", "ProgressLines", "operator_message", "REPORT_SUFFIX", "MAX_LISTED"]
+__all__ = ["register", "find_machine", "ProgressLines", "operator_message", "ini_snippet", "REPORT_SUFFIX",
+           "MAX_LISTED", "EXTENSIONS"]
 
 #: The full report is written beside the program under its name plus this suffix and ``.html`` (or ``.txt``).
 REPORT_SUFFIX = ".nczones"
@@ -74,6 +75,43 @@ class ProgressLines:
     def __call__(self, line: int, total: int | None, **_: Any) -> None:
         if total:
             self.emit(max(0, min(100, (100 * line) // total)))
+
+
+#: The program extensions the INI snippet sends through the filter (LinuxCNC itself opens .ngc; the others are
+#: what CAM post-processors commonly write for it).
+EXTENSIONS = ("ngc", "nc", "tap")
+
+
+def ini_snippet(machine_path: str, ini_path: str | None = None, command: str = "nczones linuxcnc-filter") -> str:
+    """The INI lines that put the filter in front of a LinuxCNC machine (docs/linuxcnc-filter.md).
+
+    ``MACHINE`` is written relative to the INI's folder when ``ini_path`` is given (the filter resolves it
+    from there), else as given.
+
+    >>> print(ini_snippet("/cfg/mill.toml", "/cfg/mill.ini"), end="")
+    # nczones: every program the GUI opens is proved against the machine file first
+    # (add the PROGRAM_EXTENSION line and the ngc/nc/tap lines to an existing [FILTER] section)
+    [FILTER]
+    PROGRAM_EXTENSION = .ngc,.nc,.tap G-code proved by nczones
+    ngc = nczones linuxcnc-filter
+    nc = nczones linuxcnc-filter
+    tap = nczones linuxcnc-filter
+    <BLANKLINE>
+    [NCZONES]
+    MACHINE = mill.toml
+    """
+    path = machine_path
+    if ini_path is not None:
+        folder = os.path.dirname(os.path.abspath(ini_path))
+        path = os.path.relpath(os.path.abspath(machine_path), folder)
+    lines = ["# nczones: every program the GUI opens is proved against the machine file first",
+             "# (add the PROGRAM_EXTENSION line and the "
+             + "/".join(EXTENSIONS) + " lines to an existing [FILTER] section)",
+             "[FILTER]",
+             "PROGRAM_EXTENSION = " + ",".join("." + e for e in EXTENSIONS) + " G-code proved by nczones"]
+    lines += [f"{e} = {command}" for e in EXTENSIONS]
+    lines += ["", "[NCZONES]", f"MACHINE = {path}"]
+    return "\n".join(lines) + "\n"
 
 
 def _error(code: str, message: str, where: str = "<linuxcnc-filter>") -> InputError:

@@ -277,3 +277,29 @@ def test_progress_lines_are_what_axis_matches(tmp_path, capsys):
     assert code == 0 and out == program.read_text(encoding="utf-8")
     values = [int(progress_re.match(line + "\n").group(1)) for line in err.splitlines()]
     assert values[0] == 0 and values[-1] == 100 and values == sorted(set(values))
+
+
+def test_import_machine_writes_the_ini_snippet_the_filter_reads(tmp_path, capsys):
+    """import-machine --linuxcnc-filter: the snippet appended to the INI makes the filter find the machine
+    file just written (MACHINE relative to the INI's folder), and the [FILTER] lines name the filter."""
+    from nczones.cli import main
+    from nczones.commands.linuxcnc_filter import find_machine
+
+    ini = tmp_path / "cfg" / "mill.ini"
+    ini.parent.mkdir()
+    ini.write_text("[TRAJ]\nCOORDINATES = X Y Z\nLINEAR_UNITS = mm\n[AXIS_X]\nMIN_LIMIT = 0\nMAX_LIMIT = 10\n",
+                   encoding="utf-8")
+    machine = tmp_path / "machines" / "mill.toml"
+    machine.parent.mkdir()
+    snippet = tmp_path / "snippet.ini"
+    assert main(["import-machine", str(ini), "-o", str(machine), "--linuxcnc-filter", str(snippet)]) == 0
+    out, err = capsys.readouterr()
+    assert f"{snippet}: the [FILTER] and [NCZONES] lines" in out and err == ""
+    text = snippet.read_text(encoding="utf-8")
+    assert "\nngc = nczones linuxcnc-filter\n" in text and "\nMACHINE = ../machines/mill.toml\n" in text
+    ini.write_text(ini.read_text(encoding="utf-8") + text, encoding="utf-8")
+    assert os.path.samefile(find_machine(None, str(ini)), machine)
+    # Without -o there is no machine file path to name: refused before anything is written.
+    assert main(["import-machine", str(ini), "--linuxcnc-filter", str(tmp_path / "s2.ini")]) == 2
+    out, err = capsys.readouterr()
+    assert "error[LF103]" in err and out == "" and not (tmp_path / "s2.ini").exists()
