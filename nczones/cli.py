@@ -41,6 +41,34 @@ EXIT_INTERNAL = 4
 
 Handler = Callable[[argparse.Namespace], int]
 
+#: The optional dependencies by top-level module: the extra that installs each (pyproject.toml).  The core
+#: install (``pip install nczones``) is what ``verify`` needs; a command that needs a missing one stops with
+#: one line naming the extra (``PK101``, exit 2).
+EXTRAS: Mapping[str, str] = MappingProxyType({
+    "matplotlib": "plot", "shapely": "plot", "dask": "fleet", "distributed": "fleet",
+})
+
+
+def missing_extra(exc: BaseException, command: str = "") -> Diagnostic | None:
+    """The ``PK101`` diagnostic for an import of an optional dependency that is not installed (else None).
+
+    >>> print(missing_extra(ModuleNotFoundError("No module named 'matplotlib'", name="matplotlib"), "plot").render())
+    <environment>: error[PK101]: nczones plot needs matplotlib, which is not installed: pip install 'nczones[plot]' (or 'nczones[all]')
+    >>> missing_extra(ModuleNotFoundError("No module named 'foo'", name="foo")) is None
+    True
+    """
+    if not isinstance(exc, ModuleNotFoundError) or not exc.name:
+        return None
+    top = exc.name.split(".")[0]
+    extra = EXTRAS.get(top)
+    if extra is None:
+        return None
+    if extra == "plot" and command in ("verify", "replay"):
+        extra = "html"  # the same packages, named for what they serve there (--format html)
+    who = f"nczones {command}" if command else "this command"
+    return Diagnostic("PK101", f"{who} needs {top}, which is not installed: pip install 'nczones[{extra}]' "
+                               "(or 'nczones[all]')", file="<environment>")
+
 
 def _bound(value: Fraction | None) -> str:
     return "unbounded" if value is None else format_decimal(value)
@@ -325,6 +353,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("nczones: interrupted", file=sys.stderr)
         return 130
+    except ModuleNotFoundError as exc:
+        missing = missing_extra(exc, getattr(args, "command", "") or "")
+        if missing is None:
+            traceback.print_exc()
+            print("nczones: internal error (the traceback above is a bug in nczones; please report it)",
+                  file=sys.stderr)
+            return EXIT_INTERNAL
+        print(missing.render(), file=sys.stderr)
+        return EXIT_INPUT
     except OSError as exc:  # reading or writing the user's files and streams (one line, never a traceback)
         _quiet_stdout(exc)
         where = f" {exc.filename}" if exc.filename is not None else (
