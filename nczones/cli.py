@@ -14,9 +14,12 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import signal
 import sys
+import threading
 import traceback
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 from fractions import Fraction
 from types import MappingProxyType
@@ -31,13 +34,43 @@ from .zones import PolygonZone, SteppedZone
 if TYPE_CHECKING:
     from .gcode.source import ProgramSource
 
-__all__ = ["main", "EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL"]
+__all__ = ["main", "EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL", "EXIT_INTERRUPTED",
+           "EXIT_TERMINATED"]
 
 EXIT_OK = 0
 EXIT_FAIL = 1
 EXIT_INPUT = 2
 EXIT_UNKNOWN = 3
 EXIT_INTERNAL = 4
+#: Ctrl-C (SIGINT) stopped the run: 128 + 2, as shells report it.
+EXIT_INTERRUPTED = 130
+#: SIGTERM (a CI job cancelled, ``timeout``) stopped the run: 128 + 15.  The run stops as for Ctrl-C (the
+#: partial report, VF204) and exits with this status.
+EXIT_TERMINATED = 143
+
+_terminated = [False]
+
+
+def _on_sigterm(signum: int, frame: Any) -> None:
+    """SIGTERM takes Ctrl-C's path: KeyboardInterrupt, which the commands turn into a partial report."""
+    _terminated[0] = True
+    raise KeyboardInterrupt
+
+
+@contextmanager
+def sigterm_as_interrupt() -> Iterator[None]:
+    """While a command runs, SIGTERM stops it the way Ctrl-C does (only in the main thread, and only when
+    SIGTERM has its default disposition: an embedding program's own handler is left alone)."""
+    _terminated[0] = False
+    if threading.current_thread() is not threading.main_thread() \
+            or signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
+        yield
+        return
+    previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 Handler = Callable[[argparse.Namespace], int]
 
@@ -338,6 +371,16 @@ def main(argv: Sequence[str] | None = None) -> int:
     _one_blas_thread()
     parser = build_parser(chosen_command(arguments))
     args = parser.parse_args(arguments)
+    with sigterm_as_interrupt():
+        code = _run_handler(args)
+    if _terminated[0] and code == EXIT_INTERRUPTED:
+        print("nczones: stopped by SIGTERM (as by Ctrl-C: the report above is partial)", file=sys.stderr)
+        return EXIT_TERMINATED
+    return code
+
+
+def _run_handler(args: argparse.Namespace) -> int:
+    """Run the chosen command: its exit status, every user error one line (exit 2), a bug exit 4."""
     try:
         code: int = args.handler(args)
         return code
@@ -352,7 +395,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_INTERNAL
     except KeyboardInterrupt:
         print("nczones: interrupted", file=sys.stderr)
-        return 130
+        return EXIT_INTERRUPTED
     except ModuleNotFoundError as exc:
         missing = missing_extra(exc, getattr(args, "command", "") or "")
         if missing is None:
