@@ -183,7 +183,8 @@ def operator_message(result: Result, program: str, report: str | None, machine: 
         for r in result.reasons[:MAX_LISTED]:
             where = f"line {r.span.line}" if r.span is not None else "program"
             code = f" [{r.code}]" if r.code else ""
-            lines.append(f"  {where}{code}: {r.message}")
+            message = r.message[len(r.code) + 2:] if r.code and r.message.startswith(r.code + ": ") else r.message
+            lines.append(f"  {where}{code}: {message}")
         rest = len(result.reasons) - MAX_LISTED
     if rest > 0:
         lines.append(f"  ... and {rest} more")

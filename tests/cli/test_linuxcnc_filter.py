@@ -303,3 +303,17 @@ def test_import_machine_writes_the_ini_snippet_the_filter_reads(tmp_path, capsys
     assert main(["import-machine", str(ini), "--linuxcnc-filter", str(tmp_path / "s2.ini")]) == 2
     out, err = capsys.readouterr()
     assert "error[LF103]" in err and out == "" and not (tmp_path / "s2.ini").exists()
+
+
+def test_unknown_program_is_refused_with_the_reason(tmp_path, capsys):
+    """A call of a subroutine file (SUBROUTINE_PATH is not read) is unknown: exit 3, nothing on standard
+    output, the line and code for the operator (once), the report beside the program."""
+    from nczones.cli import main
+
+    program = tmp_path / "sub.ngc"
+    program.write_text("G21 G90\nG0 X-250 Y300\no<foo> call\nM2\n", encoding="utf-8")
+    assert main(["linuxcnc-filter", str(program), "--machine", str(ROOT / "specs/machines/grinder.toml")]) == 3
+    out, err = capsys.readouterr()
+    assert out == "" and "sub.ngc could NOT be proved safe and was not loaded (verdict unknown)" in err
+    assert "  line 3 [GC303]: subroutine o<foo> is not defined" in err and "GC303: GC303" not in err
+    assert list(tmp_path.glob("sub.ngc.nczones.*"))
