@@ -223,7 +223,9 @@ def _run(args: argparse.Namespace) -> int:
     ini = args.ini or os.environ.get("INI_FILE_NAME") or None
     machine = cli.with_dialect(load_machine(find_machine(args.machine, ini)), "linuxcnc")
     source = cli.program_source(args.program)
-    result = verify(source, machine, progress=progress, budget_s=args.budget)
+    from .verify import budget_seconds
+
+    result = verify(source, machine, progress=progress, budget_s=budget_seconds(args.budget))
     progress.emit(100)
     if result.verdict is Verdict.SAFE and not result.interrupted:
         with open(args.program, "rb") as fh:
@@ -255,9 +257,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="the machine file (default: [NCZONES] MACHINE of the INI, else the INI's name with .toml)")
     p.add_argument("--ini", metavar="FILE.ini", default=None,
                    help="the LinuxCNC INI file (default: $INI_FILE_NAME, which the linuxcnc launcher sets)")
-    p.add_argument("--budget", type=float, default=DEFAULT_BUDGET_S, metavar="SECONDS",
-                   help=f"time for solver work (default {DEFAULT_BUDGET_S:g}); what is left undecided is unknown "
-                        "and the program is refused")
+    p.add_argument("--budget", default=None, metavar="SECONDS",
+                   help=f"time for solver work (default {DEFAULT_BUDGET_S:g}; 'none' for no limit); what is left "
+                        "undecided is unknown and the program is refused")
     p.set_defaults(handler=_run)
 
 

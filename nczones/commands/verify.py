@@ -34,7 +34,8 @@ if TYPE_CHECKING:
     from ..machine import Machine
     from ..prover.result import Result
 
-__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "EXIT_INTERRUPTED"]
+__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "budget_seconds",
+           "EXIT_INTERRUPTED"]
 
 #: Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it).
 EXIT_INTERRUPTED = 130
@@ -97,7 +98,7 @@ def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]
         "max_iterations": args.max_iterations,
         "library": cli.library_folder(args.library),
         "block_delete": args.block_delete,
-        "budget_s": _budget(args.budget),
+        "budget_s": budget_seconds(args.budget),
     }
 
 
@@ -300,7 +301,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 cli.REGISTRARS["verify"] = register
 
 
-def _budget(text: str | None) -> float | None:
+def budget_seconds(text: str | None) -> float | None:
     """``--budget``: positive seconds, or "none" (``VF109``)."""
     if text is None:
         return DEFAULT_BUDGET_S
