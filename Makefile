@@ -1,5 +1,5 @@
 # Two commands do all the set-up on a fresh machine (Python 3.11 + pip):
-#   make demo   create .venv, install nczones (runtime dependencies only), verify the bundled example
+#   make demo   create .venv, install nczones (the core: Z3 and numpy, all verify needs), verify the examples
 #   make test   create .venv, install nczones with its test extras, run every test
 # CI runs .ci/run: make test, then ruff and lint-imports (make lint), mypy and the wheel test (and it
 # installs chromium for the browser tests; make test never installs system packages: without chromium

@@ -14,9 +14,12 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import signal
 import sys
+import threading
 import traceback
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 from fractions import Fraction
 from types import MappingProxyType
@@ -31,15 +34,73 @@ from .zones import PolygonZone, SteppedZone
 if TYPE_CHECKING:
     from .gcode.source import ProgramSource
 
-__all__ = ["main", "EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL"]
+__all__ = ["main", "EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL", "EXIT_INTERRUPTED",
+           "EXIT_TERMINATED"]
 
 EXIT_OK = 0
 EXIT_FAIL = 1
 EXIT_INPUT = 2
 EXIT_UNKNOWN = 3
 EXIT_INTERNAL = 4
+#: Ctrl-C (SIGINT) stopped the run: 128 + 2, as shells report it.
+EXIT_INTERRUPTED = 130
+#: SIGTERM (a CI job cancelled, ``timeout``) stopped the run: 128 + 15.  The run stops as for Ctrl-C (the
+#: partial report, VF204) and exits with this status.
+EXIT_TERMINATED = 143
+
+_terminated = [False]
+
+
+def _on_sigterm(signum: int, frame: Any) -> None:
+    """SIGTERM takes Ctrl-C's path: KeyboardInterrupt, which the commands turn into a partial report."""
+    _terminated[0] = True
+    raise KeyboardInterrupt
+
+
+@contextmanager
+def sigterm_as_interrupt() -> Iterator[None]:
+    """While a command runs, SIGTERM stops it the way Ctrl-C does (only in the main thread, and only when
+    SIGTERM has its default disposition: an embedding program's own handler is left alone)."""
+    _terminated[0] = False
+    if threading.current_thread() is not threading.main_thread() \
+            or signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
+        yield
+        return
+    previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 Handler = Callable[[argparse.Namespace], int]
+
+#: The optional dependencies by top-level module: the extra that installs each (pyproject.toml).  The core
+#: install (``pip install nczones``) is what ``verify`` needs; a command that needs a missing one stops with
+#: one line naming the extra (``PK101``, exit 2).
+EXTRAS: Mapping[str, str] = MappingProxyType({
+    "matplotlib": "plot", "shapely": "plot", "dask": "fleet", "distributed": "fleet",
+})
+
+
+def missing_extra(exc: BaseException, command: str = "") -> Diagnostic | None:
+    """The ``PK101`` diagnostic for an import of an optional dependency that is not installed (else None).
+
+    >>> print(missing_extra(ModuleNotFoundError("No module named 'matplotlib'", name="matplotlib"), "plot").render())
+    <environment>: error[PK101]: nczones plot needs matplotlib, which is not installed: pip install 'nczones[plot]' (or 'nczones[all]')
+    >>> missing_extra(ModuleNotFoundError("No module named 'foo'", name="foo")) is None
+    True
+    """
+    if not isinstance(exc, ModuleNotFoundError) or not exc.name:
+        return None
+    top = exc.name.split(".")[0]
+    extra = EXTRAS.get(top)
+    if extra is None:
+        return None
+    if extra == "plot" and command in ("verify", "replay"):
+        extra = "html"  # the same packages, named for what they serve there (--format html)
+    who = f"nczones {command}" if command else "this command"
+    return Diagnostic("PK101", f"{who} needs {top}, which is not installed: pip install 'nczones[{extra}]' "
+                               "(or 'nczones[all]')", file="<environment>")
 
 
 def _bound(value: Fraction | None) -> str:
@@ -245,6 +306,8 @@ COMMANDS: Mapping[str, Command] = MappingProxyType({
                       "re-check the counterexamples of a JSON report exactly against the files it names"),
     "fleet": Command("nczones.commands.fleet",
                      "verify a library of programs against its machines, incrementally (serial or on Dask)"),
+    "linuxcnc-filter": Command("nczones.commands.linuxcnc_filter",
+                               "LinuxCNC's [FILTER] program: pass a program through only when it is proved safe"),
 })
 
 #: Subcommand registrars by command name; each command's module adds its own when imported.
@@ -308,6 +371,16 @@ def main(argv: Sequence[str] | None = None) -> int:
     _one_blas_thread()
     parser = build_parser(chosen_command(arguments))
     args = parser.parse_args(arguments)
+    with sigterm_as_interrupt():
+        code = _run_handler(args)
+    if _terminated[0] and code == EXIT_INTERRUPTED:
+        print("nczones: stopped by SIGTERM (as by Ctrl-C: the report above is partial)", file=sys.stderr)
+        return EXIT_TERMINATED
+    return code
+
+
+def _run_handler(args: argparse.Namespace) -> int:
+    """Run the chosen command: its exit status, every user error one line (exit 2), a bug exit 4."""
     try:
         code: int = args.handler(args)
         return code
@@ -322,7 +395,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_INTERNAL
     except KeyboardInterrupt:
         print("nczones: interrupted", file=sys.stderr)
-        return 130
+        return EXIT_INTERRUPTED
+    except ModuleNotFoundError as exc:
+        missing = missing_extra(exc, getattr(args, "command", "") or "")
+        if missing is None:
+            traceback.print_exc()
+            print("nczones: internal error (the traceback above is a bug in nczones; please report it)",
+                  file=sys.stderr)
+            return EXIT_INTERNAL
+        print(missing.render(), file=sys.stderr)
+        return EXIT_INPUT
     except OSError as exc:  # reading or writing the user's files and streams (one line, never a traceback)
         _quiet_stdout(exc)
         where = f" {exc.filename}" if exc.filename is not None else (

@@ -41,8 +41,8 @@ class Interrupted:
     wall_after_signal_s: float
 
 
-def interrupt(proc: subprocess.Popen, *, wall_limit_s: float = 60.0) -> Interrupted:
-    """Send SIGINT and wait for the child to end; measure what it spent after the signal.
+def interrupt(proc: subprocess.Popen, *, wall_limit_s: float = 60.0, sig: int = signal.SIGINT) -> Interrupted:
+    """Send SIGINT (or ``sig``) and wait for the child to end; measure what it spent after the signal.
 
     The child's CPU is read from ``/proc`` until it is a zombie (ended, not yet
     reaped, its times still readable), then its output is collected.  Its output
@@ -51,7 +51,7 @@ def interrupt(proc: subprocess.Popen, *, wall_limit_s: float = 60.0) -> Interrup
     has_proc = Path("/proc").is_dir()
     cpu0 = cpu_seconds(proc.pid) if has_proc else 0.0
     t0 = time.monotonic()
-    proc.send_signal(signal.SIGINT)
+    proc.send_signal(sig)
     cpu_end = cpu0
     while has_proc and time.monotonic() - t0 < wall_limit_s:
         fields = _stat_fields(proc.pid)

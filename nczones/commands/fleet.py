@@ -47,6 +47,8 @@ def run_fleet_check(args: argparse.Namespace) -> int:
                            cluster_threshold=args.cluster_threshold,
                            progress=True if args.progress else (False if args.no_progress else None))
     cells = project.cells(machines=args.machine or None, programs=args.program or None)
+    if not cells:  # a CI job whose glob matches nothing must not pass with "0 jobs ran"
+        raise _usage("FL112", "no program selected: " + _empty_selection(project, args))
     with Store(_store_path(project, args)) as store:
         summary = run_check(project, store, options, cells=cells, force=args.force)
         from ..fleet.status import status_text
@@ -72,6 +74,21 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     print(f"{project.name}: {text[-2].split(': ', 1)[1]}; {summary.wall_s:.2f} s"
           + (f" on {summary.executor}" if summary.executor else "") + rate + split)
     return summary.exit_code
+
+
+def _empty_selection(project: Project, args: argparse.Namespace) -> str:
+    """What selected no (program, machine) cell: the globs and machine names, as written."""
+    unknown = [m for m in args.machine if m not in {e.name for e in project.machines}]
+    if unknown:
+        return (f"--machine {', '.join(unknown)}: no such machine in {project.name} (machines: "
+                f"{', '.join(e.name for e in project.machines)})")
+    machines = [e for e in project.machines if not args.machine or e.name in args.machine]
+    globs = "; ".join(f"{e.name}: programs = {list(e.programs)}" for e in machines)
+    where = f" under {project.root}"
+    if args.program:
+        return (f"--program {', '.join(repr(g) for g in args.program)} matches none of the machines' programs"
+                f"{where} ({globs})")
+    return f"the programs globs match no file{where} ({globs})"
 
 
 def run_fleet_status(args: argparse.Namespace) -> int:

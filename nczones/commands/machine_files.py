@@ -15,7 +15,7 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from .. import cli
-from ..errors import Diagnostic, InvalidArgument
+from ..errors import Diagnostic, InputError, InvalidArgument
 from ..imports import KINDS, ImportResult, import_machine
 from ..imports.export import EXPORT_KINDS
 from ..imports.render import KIND_LABELS
@@ -63,7 +63,18 @@ def _emit(text: str, output: str | None, summary_line: str, notes: Iterable[Diag
 def _run_import(args: argparse.Namespace) -> int:
     result = import_machine(args.source, args.kind, output=args.output, parameter_file=args.parameter_file,
                             tool_table=args.tool_table)
+    if args.linuxcnc_filter and (result.imported.kind != "linuxcnc" or not args.output):
+        raise InputError(Diagnostic(
+            "LF103", "--linuxcnc-filter writes the INI lines that name the machine file: it needs a LinuxCNC INI "
+            "as SOURCE and -o M.toml" + ("" if args.output else " (the machine file's path)"),
+            file="<command line>"))
     _emit(result.text, args.output, summary(result, args.output), result.notes)
+    if args.linuxcnc_filter:
+        from .linuxcnc_filter import ini_snippet
+
+        _write(args.linuxcnc_filter, ini_snippet(args.output, args.source))
+        print(f"{args.linuxcnc_filter}: the [FILTER] and [NCZONES] lines for {args.source} "
+              "(docs/linuxcnc-filter.md)", file=sys.stdout)
     return cli.EXIT_OK
 
 
@@ -87,6 +98,9 @@ def register_import(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--tool-table", metavar="TBL",
                    help="LinuxCNC: read tool lengths and diameters from this .tbl file instead of the one "
                    "[EMCIO] TOOL_TABLE names")
+    p.add_argument("--linuxcnc-filter", metavar="SNIPPET.ini",
+                   help="LinuxCNC: also write the INI lines ([FILTER] and [NCZONES] MACHINE) that make the GUI run "
+                   "nczones linuxcnc-filter on every program it opens (docs/linuxcnc-filter.md); needs -o")
     p.set_defaults(handler=_run_import)
 
 

@@ -8,7 +8,7 @@ could not be read or parsed, else 3 if any is unknown, else 0.  With
 report object); with ``--format sarif`` one SARIF log with one run.
 Ctrl-C stops the run: the reports of the programs verified so far (the
 current one partial, marked interrupted) are written and the exit status is
-130.
+130 (143 when SIGTERM stopped it the same way, see :func:`nczones.cli.sigterm_as_interrupt`).
 
 The parts are one function each so that later options slot in: the options
 are read by :func:`verify_options`, one program is verified by
@@ -34,7 +34,8 @@ if TYPE_CHECKING:
     from ..machine import Machine
     from ..prover.result import Result
 
-__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "EXIT_INTERRUPTED"]
+__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "budget_seconds",
+           "EXIT_INTERRUPTED"]
 
 #: Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it).
 EXIT_INTERRUPTED = 130
@@ -97,7 +98,7 @@ def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]
         "max_iterations": args.max_iterations,
         "library": cli.library_folder(args.library),
         "block_delete": _block_delete(args.block_delete),
-        "budget_s": _budget(args.budget),
+        "budget_s": budget_seconds(args.budget),
     }
 
 
@@ -214,9 +215,22 @@ def _run(args: argparse.Namespace) -> int:
             break
     if results or args.format in ("json", "sarif"):
         write_output(args.output, render_many(results, errors, args, machine, len(programs) > 1))
+    if args.output is not None:  # the report went to a file: the verdicts still show where the run was started
+        print_summaries(results, args.output)
     if results and results[-1][2].interrupted:
         return EXIT_INTERRUPTED
     return worst_exit(codes)
+
+
+def print_summaries(results: list, output: str) -> None:
+    """With ``--output``: each program's one-line summary (the text report's last line) on standard output,
+    then where the report is, so a CI log or a terminal still shows the verdicts."""
+    from ..report.text import summary_line
+
+    color = _color(sys.stdout)
+    for _, _, result in results:
+        print(summary_line(result, result.file or "<program>", color=color))
+    print(f"report written to {output}")
 
 
 def _color(stream: TextIO) -> bool:
@@ -231,8 +245,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = cli.add_command(
         sub, "verify",
         description="Prove that every motion of each PROGRAM stays inside the machine's allowed set, or report "
-                    "exact counterexamples. Exit status: 0 safe, 1 unsafe, 2 bad input, 3 unknown; with several "
-                    "programs the worst (1 before 2 before 3 before 0); 130 when Ctrl-C stopped the run.")
+                    "exact counterexamples (with --output the report goes to the file and each program's one-line summary "
+                    "to standard output). Exit status: 0 safe, 1 unsafe, 2 bad input, 3 unknown; with several "
+                    "programs the worst (1 before 2 before 3 before 0); 130 when Ctrl-C stopped the run, 143 when SIGTERM "
+                    "did.")
     p.add_argument("programs", nargs="+", metavar="PROGRAM",
                    help="G-code program file(s); '-' reads standard input; several files (e.g. a shell glob) "
                         "give one report each")
@@ -275,7 +291,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="text (compiler-style), json (specs/report.schema.json; a list for several programs), "
                         "html (one self-contained file with plots; one program), sarif (SARIF 2.1.0 for code "
                         "scanning)")
-    p.add_argument("--output", metavar="FILE", help="write the report to FILE instead of standard output")
+    p.add_argument("--output", metavar="FILE",
+                   help="write the report to FILE instead of standard output (standard output then shows each "
+                        "program's one-line summary)")
     p.add_argument("--sarif-root", metavar="DIR",
                    help="directory that SARIF artifact URIs are relative to (uriBaseId SRCROOT; default the "
                         "working directory, e.g. the repository root in CI)")
@@ -285,7 +303,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 cli.REGISTRARS["verify"] = register
 
 
-def _budget(text: str | None) -> float | None:
+def budget_seconds(text: str | None) -> float | None:
     """``--budget``: positive seconds, or "none" (``VF109``)."""
     if text is None:
         return DEFAULT_BUDGET_S

@@ -41,7 +41,8 @@ class CheckOptions:
     """How a fleet run executes (none of this changes a verdict, so none of it is in a job key).
 
     ``executor``: ``"auto"`` (a local Dask cluster, unless fewer than
-    ``cluster_threshold`` jobs need to run: those run in this process),
+    ``cluster_threshold`` jobs need to run or Dask, the ``[fleet]`` extra, is not installed: then they run
+    in this process),
     ``"serial"``, ``"local"`` (always the local cluster) or a scheduler
     address.  ``split_lines``: split programs of more than twice that many
     lines where that is sound (None, the default: never; see
@@ -277,6 +278,13 @@ def _quiet_half_built_solver_contexts() -> None:
     sys.unraisablehook = hook
 
 
+def _have_dask() -> bool:
+    """True when Dask's distributed scheduler is installed (the ``[fleet]`` extra)."""
+    import importlib.util
+
+    return importlib.util.find_spec("distributed") is not None
+
+
 def choose_executor(options: CheckOptions, jobs: int) -> Any:
     """The executor for ``jobs`` tasks under ``options`` (see :class:`CheckOptions`)."""
     import os
@@ -288,8 +296,8 @@ def choose_executor(options: CheckOptions, jobs: int) -> Any:
         address = os.environ.get("DASK_SCHEDULER_ADDRESS")
         if address:
             how = address
-        elif jobs < options.cluster_threshold:
-            how = "serial"
+        elif jobs < options.cluster_threshold or not _have_dask():
+            how = "serial"  # without the [fleet] extra (Dask) "auto" runs in this process
         else:
             how = "local"
     if how == "serial":

@@ -32,6 +32,25 @@ def _verdict(c: CellRow) -> str | None:
     return None if c.status == "pending" else c.verdict
 
 
+#: A finding in the text matrix is cut to about this many characters, at a word boundary.
+FINDING_CHARS = 120
+
+
+def cut_at_word(text: str, width: int = FINDING_CHARS) -> str:
+    """``text`` cut to at most ``width`` characters at the last space before the limit, ``…`` marking the
+    cut (a single word longer than ``width`` is cut inside it, as nothing else fits).
+
+    >>> cut_at_word("the quick brown fox", 12), cut_at_word("short", 12), cut_at_word("abcdefghijklmnop", 8)
+    ('the quick…', 'short', 'abcdefg…')
+    """
+    if len(text) <= width:
+        return text
+    head = text[:width]  # keeps width - 1 characters and the mark
+    space = head.rfind(" ")
+    cut = head[:space].rstrip(" ,;:") if space > 0 else head[:width - 1]
+    return cut + "…"
+
+
 def first_finding(c: CellRow) -> str:
     if c.violations:
         v = c.violations[0]
@@ -40,8 +59,8 @@ def first_finding(c: CellRow) -> str:
         r = c.reasons[0]
         loc = r.get("location")
         where = f"line {loc['line']}: " if isinstance(loc, dict) and loc.get("line") else ""
-        return where + str(r.get("message", "")).splitlines()[0][:120]
-    return c.message.splitlines()[0][:120] if c.message else ""
+        return where + cut_at_word(str(r.get("message", "")).splitlines()[0])
+    return cut_at_word(c.message.splitlines()[0]) if c.message else ""
 
 
 def _matrix(cells: list[CellRow]) -> tuple[list[str], list[str], dict[tuple[str, str], CellRow]]:

@@ -50,7 +50,7 @@ from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
 from ..machine import Machine
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .profile import RunProfile
-from .result import ParamRange, Reason, Result, Verdict, Violation
+from .result import ParamRange, Reason, Result, Verdict, Violation, reason_code
 
 if TYPE_CHECKING:
     from ..gcode import Interpretation
@@ -717,7 +717,7 @@ def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange,
     for u in run.unsupported:
         span = _fix_span(u.span, source_text)
         hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
-        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, u.code))
+        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, reason_code(u.code)))
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
     if run.counts.get("spline"):
         notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "

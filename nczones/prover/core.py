@@ -58,7 +58,7 @@ from .geometry import (
     simple_in,
     sqrt_bounds,
 )
-from .result import Outcome, ParamRange, Reason, Result, Verdict, Violation
+from .result import Outcome, ParamRange, Reason, Result, Verdict, Violation, reason_code
 from .smt import Solver, add, mul, or_all, q, sub, zone_violation
 
 if TYPE_CHECKING:
@@ -1310,7 +1310,10 @@ def verify_segments(
             + (f" near line {line}" if line is not None else "")
             + ": the rest of the program was not checked", None, None, "VF204"))
     for u in unsupported:
-        reasons.append(Reason(getattr(u, "message", str(u)), getattr(u, "span", None), None, getattr(u, "code", "")))
+        named, message = getattr(u, "code", ""), getattr(u, "message", str(u))
+        if reason_code(named) != named and not message.startswith(named + ": "):
+            message = f"{named}: {message}"  # the construct stays named when the code is the scheme's
+        reasons.append(Reason(message, getattr(u, "span", None), None, reason_code(named)))
     if violations:
         verdict = Verdict.UNSAFE
     elif reasons:

@@ -246,6 +246,6 @@ class RunLimits:
                     os.write(old_fd, data)
                 except OSError:
                     pass
-            if int(signal.SIGINT) in data:
+            if int(signal.SIGINT) in data or int(signal.SIGTERM) in data:  # SIGTERM: nczones.cli's handler
                 self.interrupted = True
                 self._fire("interrupt")

@@ -8,7 +8,24 @@ from fractions import Fraction
 
 from ..errors import SourceSpan
 
-__all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange", "Outcome"]
+__all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange", "Outcome", "reason_code", "NOT_MODELLED"]
+
+#: The reason code of a construct nczones does not model (a G/M code in a mode it does not follow, LinuxCNC
+#: polar words in a cycle, a Fanuc system variable ...): the interpreter names the construct (``G41``,
+#: ``@ ^``, ``#5405``), which the reason's message starts with; the code stays in the ``XX123`` scheme.
+NOT_MODELLED = "GC390"
+
+
+def reason_code(code: str) -> str:
+    """The code a :class:`Reason` carries for an interpreter's unknown named ``code``: itself when it is in
+    the ``XX123`` scheme, else :data:`NOT_MODELLED` (the construct stays first in the message).
+
+    >>> reason_code("GC302"), reason_code("@ ^"), reason_code("#5405"), reason_code("G10 L2 R"), reason_code("")
+    ('GC302', 'GC390', 'GC390', 'GC390', '')
+    """
+    if not code or (len(code) == 5 and code[:2].isalpha() and code[:2].isupper() and code[2:].isdigit()):
+        return code
+    return NOT_MODELLED
 
 
 class Verdict(enum.IntEnum):
