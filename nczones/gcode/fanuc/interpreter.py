@@ -217,7 +217,7 @@ class FanucInterpreter(Interpreter):
         self.after_home: set[int] = set()  # axes returned by G28/G30 while a tool length offset was active
         self.intermediate: list | None = None  # G28/G30's intermediate point (machine), for G29
         self.intermediate_deps: list[dict] | None = None  # its range dependencies
-        self.stops: list = []  # M00/M01 lines, for the report
+        self.stops: list[tuple[int, int]] = []  # (0 or 1, line) of M00/M01, as the LinuxCNC interpreter's
         # programmable transforms: each acts on the program point (mm, workpiece system) about its centre
         self.rotation: Rotation | None = None
         self.scaling: Scaling | None = None
@@ -295,8 +295,9 @@ class FanucInterpreter(Interpreter):
             self.last["M"] = Fraction(mcodes[-1][0])
         if block.number is not None:
             self.last["N"] = block.number
-        if 0 in mset or 1 in mset:
-            self.stops.append(block.span.line if block.span else 0)
+        for k in (0, 1):
+            if k in mset and len(self.stops) < 100:
+                self.stops.append((k, block.span.line if block.span else 0))
 
     def _plain_modes(self, groups: dict) -> None:
         """The modal groups mill and lathe read alike: plane (02), units (06), distance (03), G40 (07)."""
