@@ -1088,6 +1088,8 @@ class FanucInterpreter(Interpreter):
                 raise self.error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
         if reps == 0:
             return  # K0: the drilling data is stored, no hole is drilled
+        if self.too_many(name, f"{name} {kw.text if kw is not None else ''}", reps, kw):
+            return
         if k in (730, 830):
             step = self.length_mm(data["Q"])
             back = self.settings.g73_retract if k == 730 else self.settings.g83_clearance
@@ -1117,7 +1119,9 @@ class FanucInterpreter(Interpreter):
                 return
             self._first_after_transform = False
         xy_words = [(i, aw) for i, aw in axis_words if i in (ix, iy)]
-        for _rep in range(reps):
+        for rep in range(reps):
+            if rep and self.budget_gone(name, f"{kw.text if kw is not None else ''} had drilled {rep} holes", kw):
+                return
             target = list(self.pos)
             if transformed:
                 point = self._program_point(xy_words)
@@ -1163,6 +1167,8 @@ class FanucInterpreter(Interpreter):
                 go(SegmentKind.RAPID, r, f"{name} to R")
             if k in (730, 830):
                 depth = r
+                if self.too_many(name, f"{name} Q{fmt_number(data['Q'])} (one peck per Q)", -((bottom - r) // step) - 1):
+                    return
                 while depth - step > bottom:  # G73: back off d; G83: out to R, down to d above the cut
                     depth -= step
                     go(SegmentKind.LINE, depth, f"{name} peck")
