@@ -145,3 +145,15 @@ def test_nested_while_loops_end_within_the_budget():
     assert time.perf_counter() - t0 < 15
     assert r.verdict.label == "unknown" and r.reasons[0].code == "VF203", r.reasons
     assert "budget of 1 s" in r.reasons[0].message and "DO2 loop had run" in r.reasons[0].message
+
+
+def test_a_violating_canned_cycle_block_with_many_holes_ends_within_the_budget():
+    """One G81 block of 1,500 holes, 0.001 mm apart, from X84.4 into the clamp (program X 85 to 115 at Y10, the
+    clamp's Y -270..-190 in machine coordinates is program Y -20..60): from hole 600 on every hole violates.
+    Each violating motion of a block already reported only deepened its depth, exactly, at tens of ms a
+    motion (1,200 holes took 47 s, 90,000 holes hours); past the budget the depth stays a lower bound."""
+    t0 = time.perf_counter()
+    r = verify_text("O1\nG90 G54 G0 X84.4 Y10. Z10.\nG91 G81 X0.001 Z-1. R-1. K1500 F100.\nG80\nM30\n",
+                    load_machine(FANUC_MILL), budget_s=1)
+    assert time.perf_counter() - t0 < 20
+    assert r.verdict.label == "unsafe" and any(v.line == 3 and v.zone == "clamp" for v in r.violations)
