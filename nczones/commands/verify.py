@@ -275,15 +275,17 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "\"linuxcnc\" for LinuxCNC's own acceptance rule")
     p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
                    help="iterations a loop (while, do, repeat) may run per entry before the verdict becomes "
-                        f"unknown (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")
+                        f"unknown (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS}); a repeat count above it (M98/G65 "
+                        "L, a canned cycle's K/L, its pecks) is unknown at its block")
     cli.add_dialect_arguments(p)
     p.add_argument("--max-violations", type=int, default=20, metavar="N",
                    help="stop after N violating blocks per program (default 20); the report says when the "
                         "list was cut")
     p.add_argument("--budget", default=None, metavar="SECONDS",
-                   help=f"time per program for solver work and refinement (default {DEFAULT_BUDGET_S:g}; 'none' "
-                        "for no limit); motions still undecided then are unknown ('budget spent'), the exact "
-                        "tiers check the rest")
+                   help=f"time per program for solver work, refinement and repetitions (default "
+                        f"{DEFAULT_BUDGET_S:g}; 'none' for no limit); motions still undecided then are unknown "
+                        "('budget spent'), the exact tiers check the rest; a loop or repeat past it ends the "
+                        "interpretation as unknown (VF203)")
     p.add_argument("--stats", action="store_true",
                    help="after each text report, where the time went: per tier and per motion kind, the solver "
                         "calls and the slowest blocks (the JSON report always has them in stats.profile)")

@@ -154,6 +154,7 @@ class Interpretation:
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
                                track_dependencies=track_dependencies, chunk_size=chunk_size,
                                param_ranges=param_ranges)
+        self.interpreter.max_repeats = max_loop_iterations  # a canned cycle's repeats and pecks count too
         # lathes read diameters, U/W words and cycles with shapes: no fast path
         self.fast = fast and not self.interpreter.track and not cylindrical and not machine.is_lathe \
             and not machine.diameter_axes and not lathe

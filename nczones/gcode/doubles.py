@@ -242,6 +242,9 @@ class _Pass:
         counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
         looping = 0  # open while loops
         back = -1  # the index of the while an endwhile just jumped to
+        # iterations of all loops together: nested loops, each within its bound, may still run for hours; past
+        # this the pass declines and the full path runs them under the run's budget (nczones.prover.limits)
+        total, most = 0, 10 * self.max_iterations
         i = 0
         while i < count:
             ctrl = controls.get(i)
@@ -254,7 +257,8 @@ class _Pass:
                     back = -1
                     if _cond(cond) != 0.0:
                         counts[i] += 1
-                        if counts[i] >= self.max_iterations:
+                        total += 1
+                        if counts[i] >= self.max_iterations or total > most:
                             raise Declined("a loop at its iteration bound")
                         i += 1
                     else:

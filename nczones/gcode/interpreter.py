@@ -49,6 +49,7 @@ from . import (  # defined in the package, which loads this module lazily
 from .blocks import LANE_FULL, Block, Word
 from .expr import EvalError
 from .lexer import PlainBlock, fraction_raw, to_fraction
+from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
 from .segments import dadd, make_segment, with_tool_deps
 from .splines import SPLINE_CODES, spline_block, spline_pending
 from .state import StateParameter, StateTable, StateValue, linuxcnc_state_parameters
@@ -516,6 +517,28 @@ class Interpreter:
         span = word.span if word is not None else self.span
         if not self.unsupported:
             self.unsupported.append(Unsupported(code, reason, span))
+
+    #: The most repetitions one block may make (a canned cycle's L/K, its pecks): ``max_loop_iterations``,
+    #: set by :class:`~nczones.gcode.Interpretation`.
+    max_repeats: int = DEFAULT_MAX_LOOP_ITERATIONS
+
+    def too_many(self, name: str, what: str, count: int, word: Word | None = None) -> bool:
+        """True (and unknown at ``word``) when a block would repeat ``count`` times, more than
+        ``max_repeats``: checked before any repetition is made, so none is held in memory."""
+        if count <= self.max_repeats:
+            return False
+        self.unknown(name, f"{what} repeats {count} times, more than {self.max_repeats} (max_loop_iterations, "
+                     "--max-iterations); not interpreted further", word)
+        return True
+
+    def budget_gone(self, name: str, what: str, word: Word | None = None) -> bool:
+        """At each repetition of a block: True (and unknown, VF203, saying what was counted) once the watched
+        run's budget is spent."""
+        why = interpretation_spent()
+        if why is None:
+            return False
+        self.unknown("VF203", f"{why}: {name} {what}; not interpreted further", word)
+        return True
 
     def finish(self) -> None:
         """End of the program text: a spline curve still waiting for data makes the result unknown."""
@@ -1906,6 +1929,8 @@ class Interpreter:
             if lw.value.denominator != 1 or lw.value < 1:
                 raise self.error("GC209", f"canned cycle repeat count {lw.text} must be a positive integer", lw)
             reps = int(lw.value)
+            if self.too_many(gname(motion), f"{gname(motion)} {lw.text}", reps, lw):
+                return
         dwell = None
         delta = None
         if motion in (820, 840, 860, 890):
@@ -1990,6 +2015,8 @@ class Interpreter:
             current_cc, current_d = r, r_d
         clear = (r, r_d) if self.retract_r else (old_cc, old_d)
         for rep in range(reps):
+            if rep and self.budget_gone(name, f"{lw.text if lw is not None else ''} had made {rep} repeats", lw):
+                return
             if rep or not self.absolute:  # absolute: the increments are zero
                 aa = qadd(aa, inc_a)
                 bb = qadd(bb, inc_b)
@@ -2004,8 +2031,16 @@ class Interpreter:
                 assert delta is not None  # Q read above for G73/G83
                 depth = r - delta
                 pecks = None if track else self._linuxcnc_pecks(rprog, cprog, il_prog_mm)
+                if pecks is not None and self.too_many(name, f"{name} Q{fmt_number(self.cycle_q or _ZERO)} (one "
+                                                       "peck per Q)", pecks):
+                    return
+                made = 0
                 while (lt((cc, cc_d), (depth, r_d), ic, "a peck ends above the bottom") if pecks is None
                        else pecks > 0):
+                    made += 1
+                    if made > self.max_repeats:  # with parameter ranges the count is not known before
+                        self.too_many(name, f"{name} (one peck per Q)", made)
+                        return
                     if pecks is not None:
                         pecks -= 1
                     go(SegmentKind.LINE, aa, bb, (depth, r_d), f"{name} peck")

@@ -90,6 +90,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Collection, Generator, Iterator
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -132,6 +133,22 @@ __all__ = [
 
 DEFAULT_MAX_LOOP_ITERATIONS = 100_000
 MAX_REPORTED_ERRORS = 10
+
+#: The run limits (:class:`nczones.prover.limits.RunLimits`) whose ``watch()`` block is executing: interpretation
+#: is lazy, it runs inside that block, and its repetitions ask :func:`interpretation_spent`.
+WATCHED_LIMITS: ContextVar[Any] = ContextVar("nczones_watched_limits", default=None)
+
+
+def interpretation_spent() -> str | None:
+    """Why interpretation must stop now: the watched run's budget (``--budget``) is spent; None when no run
+    is watched, it has no budget or budget is left.  Asked at every repetition (a loop iteration, a jump
+    back, a repeat of a call or of a canned cycle): a program that repeats for hours ends within the budget,
+    as ``unknown`` (VF203) at the repetition that found it spent."""
+    lim = WATCHED_LIMITS.get()
+    if lim is None or lim.budget_s is None or not lim.budget_spent():
+        return None
+    return (f"budget of {lim.budget_s:g} s spent after {lim.spent_at or lim.elapsed():.1f} s while interpreting "
+            "the program (raise --budget)")
 
 
 class UnsupportedGcode(NczonesError):
@@ -839,6 +856,11 @@ class Runner:
             count = int(lv)
         if count == 0:
             return nxt, lineno + 1
+        if count > self.max_loops:
+            raise self.unsupported("GC302", f"M98 P{pword.text[1:]} L{lword.text[1:] if lword else ''} repeats "
+                                   f"{count} times, more than {self.max_loops} (max_loop_iterations, "
+                                   "--max-iterations); not interpreted further", lineno, line, *loc,
+                                   cls=IterationBoundExceeded)
         label = int(p)
         self.find_definitions()
         body = self.fanuc.get(label)
@@ -860,6 +882,8 @@ class Runner:
                              f"{_show(frame.label)} endsub", lineno, line, *loc)
         frame.repeats -= 1
         if frame.repeats > 0:
+            self.budget_left(f"O{frame.label} (called at line {frame.ret[1] - 1}) had {frame.repeats} repeats left",
+                             lineno, line)
             frame.loops.clear()
             frame.ifs.clear()
             return frame.body
@@ -1077,6 +1101,15 @@ class Runner:
             raise self.unsupported("GC302", f"{_show(loop.label)} {loop.kind} loop ran more than "
                                    f"{self.max_loops} iterations (max_loop_iterations); not interpreted further",
                                    lineno, line, cls=IterationBoundExceeded)
+        self.budget_left(f"{_show(loop.label)} {loop.kind} loop had run {loop.count} iterations", lineno, line)
+
+    def budget_left(self, what: str, lineno: int, line: str) -> None:
+        """At every repetition (a loop iteration, a repeat of an M98 call): past the run's budget the
+        interpretation ends here as unknown (VF203), saying what was counted."""
+        why = interpretation_spent()
+        if why is not None:
+            raise self.unsupported("VF203", f"{why}: {what}; not interpreted further", lineno, line,
+                                   cls=IterationBoundExceeded)
 
     def check_open_frames(self, lineno: int) -> None:
         frame = self.frames[-1]

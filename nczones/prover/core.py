@@ -1178,6 +1178,16 @@ def verify_segments(
         nonlocal n_undecided
         if seg.span is not None:
             last_line[0] = seg.span.line
+        if seg.block in seen_blocks and limits.budget_spent():
+            # the block is already a violation: its other motions would only deepen its reported depth (an
+            # exact depth costs tens of ms a motion, and one canned-cycle block may hold 100,000 holes); past
+            # the budget the depth stays a lower bound, marked inexact
+            old = next(i for i, v in enumerate(violations) if v.block == seg.block)
+            if violations[old].depth_exact:
+                from dataclasses import replace
+
+                violations[old] = replace(violations[old], depth_exact=False)
+            return True
         started = clock()
         out = prover.check(seg)
         profile.decided(seg, clock() - started, counted=not from_chunk)

@@ -19,6 +19,14 @@ No run is unbounded (README, "Standards"):
   motions that would need one are ``unknown`` ("budget spent"), while the
   exact tiers (screens, exact line decisions) still check the rest of the
   program, so the report is complete for everything they decide.
+* **Interpretation**: while a run is watched, the language layers and the
+  interpreters ask :func:`nczones.gcode.program.interpretation_spent` at every repetition they
+  make (a loop iteration, a jump back, a repeat of a subprogram call or of a
+  canned cycle); once the budget is spent the interpretation ends there as
+  ``unknown`` (``VF203``, naming the block and what it counted), so a
+  program whose loops would run for hours (nested ``WHILE`` loops, each
+  within ``--max-iterations``) ends within the budget too.  A straight-line
+  program is never stopped by it: its length bounds its interpretation.
 * **Ctrl-C**: while a run is watched (:meth:`RunLimits.watch`, in the main
   thread), SIGINT reaches the watchdog through :func:`signal.set_wakeup_fd`;
   it interrupts the running Z3 query at once (Z3's interrupt: a Python
@@ -43,6 +51,8 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
+from ..gcode.program import WATCHED_LIMITS
+
 __all__ = ["RunLimits", "BudgetSpent", "DEFAULT_BUDGET_S", "DEFAULT_QUERY_TIME_S", "LINEAR_RLIMIT",
            "NONLINEAR_RLIMIT"]
 
@@ -57,7 +67,6 @@ NONLINEAR_RLIMIT = 5_000_000
 
 
 _Active = tuple[int, Any, "float | None", str]
-
 
 class BudgetSpent(Exception):
     """Raised inside the prover when the program's budget is spent (control flow, never shown)."""
@@ -182,6 +191,7 @@ class RunLimits:
         if self._thread is not None:  # nested: the outer watch does the work
             yield self
             return
+        token = WATCHED_LIMITS.set(self)
         old_fd = None
         if threading.current_thread() is threading.main_thread():
             try:
@@ -210,6 +220,7 @@ class RunLimits:
                     pass
             self._thread.join(1.0)
             self._thread = None
+            WATCHED_LIMITS.reset(token)
             if self._wake is not None:
                 for s in self._wake:
                     s.close()

@@ -30,7 +30,11 @@ _AXES = ["X", "Y", "Z", "A", "B", "C"]
 
 
 def _machine(inch: bool):
-    return parse_machine(
+    return parse_machine(_machine_text(inch))
+
+
+def _machine_text(inch: bool) -> str:
+    return (
         '[machine]\ndialect = "fanuc"\naxes = ' + str(_AXES).replace("'", '"')
         + (f'\nmodal = ["{"G20" if inch else "G21"}"]\n')
         + "[machine.rapid]\n" + "\n".join(f'{a} = "30000"' for a in _AXES) + "\n"
@@ -49,9 +53,13 @@ def _lathe(path: str, channel: int | None = None):
     """A lathe for the corpus's lathe programs: X a diameter axis, the offsets they select, the parameters their
     cycles read (values of the kind Haas ships: 0.02 in escape, 0.01 in back-off), and their machine M codes
     (M16 M26 M27 M41 tool, gear and coolant functions, M21/M22 the tailstock) declared harmless."""
+    return parse_machine(_lathe_text(path, channel))
+
+
+def _lathe_text(path: str, channel: int | None = None) -> str:
     inch = path.startswith("hass-cnc-programs/CNC LATHE/")
     system = "B" if path in SYSTEM_B else "A"
-    return parse_machine(
+    return (
         '[machine]\ntype = "lathe"\ndialect = "fanuc"\naxes = ["X", "Z", "C"]\ndiameter_axes = ["X"]\n'
         f'modal = ["{"G20" if inch else "G21"}"]\n'
         '[machine.rapid]\nX = "30000"\nZ = "30000"\nC = "30000"\n'
@@ -61,6 +69,31 @@ def _lathe(path: str, channel: int | None = None):
         f'g74_retract = "{"0.01" if inch else "0.25"}"\nthread_chamfer = "0"\ng76_finish_passes = 1\n'
         'g76_tool_angle = "60"\ng76_min_depth = "0.001"\ng76_finish_allowance = "0"\n'
         "harmless_m = [16, 21, 22, 26, 27, 41]\n" + (f"path = {channel}\n" if channel else ""))
+
+
+def fanuc_machine_file(rel: str, folder: Path) -> Path:
+    """A machine file for the corpus program ``rel`` (relative to the corpus: ``fanuc/...`` or a Fanuc row of
+    the main MANIFEST) as ``nczones verify`` reads it: the machines above (a lathe for the lathe programs, on
+    the first path of a multi-path program), with a travel box and a forbidden block the prover checks."""
+    path = rel.removeprefix("fanuc/")
+    family = dict(rows()).get(path, "") if rel.startswith("fanuc/") else ""
+    if "lathe" in family.lower():
+        channels = sorted({n for _, n in path_headers((FANUC / path).read_text(encoding="utf-8")) if n})
+        text = _lathe_text(path, channels[0] if channels else None)
+        zones = ('[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "-1000", Z = "-1000" }\n'
+                 'max = { X = "1000", Z = "1000" }\n')
+        name = "lathe" + ("_inch" if path.startswith("hass-cnc-programs/CNC LATHE/") else "") + (
+            "_b" if path in SYSTEM_B else "") + (f"_p{channels[0]}" if channels else "")
+    else:
+        text = _machine_text(path.startswith(INCH))
+        zones = ('[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "-2000", Y = "-2000", Z = "-2000" }\n'
+                 'max = { X = "2000", Y = "2000", Z = "2000" }\n[[zones]]\nname = "clamp"\nkind = "box"\n'
+                 'forbid = true\nmin = { X = "500", Y = "500", Z = "-2000" }\nmax = { X = "600", Y = "600", Z = "-500" }\n')
+        name = "mill_inch" if path.startswith(INCH) else "mill"
+    out = folder / f"fanuc_{name}.toml"
+    if not out.exists():
+        out.write_text(text + zones)
+    return out
 
 
 def rows() -> list[tuple[str, str]]:
@@ -186,3 +219,18 @@ def test_fanuc_lathe_corpus_outcomes(capsys):
     for o in outcomes:
         if o[2] == "rejected" and "citizen" in o[0]:
             assert o[4].startswith("path $1: ") and ("G600" in o[4] or "M97" in o[4]), o
+
+
+def test_verify_over_the_whole_fanuc_corpus_has_no_internal_error_and_no_hang(tmp_path, capsys):
+    """Issue 33, class 6: every Fanuc program with M00/M01 ended in exit 4 in ``verify`` (3 of the 17 mill
+    programs here).  Every program of the Fanuc corpus and every Fanuc row of the main MANIFEST (51) runs
+    through ``nczones verify`` in process (``tests/corpus_verify.py``: ``--budget 10``, a hang alarm after
+    300 s) on the machines above with a travel box: exit 0 to 3, never 4, never a hang."""
+    from tests.corpus_verify import fanuc_programs, run
+
+    programs = fanuc_programs()
+    counts, bad, slowest = run(programs, lambda item: fanuc_machine_file(item[0], tmp_path))
+    with capsys.disabled():
+        print(f"\nverify over {len(programs)} Fanuc corpus programs: exits {dict(counts)}, slowest {slowest:.1f} s")
+    assert not bad, bad
+    assert len(programs) >= 50 and counts[0] >= 30, counts

@@ -221,7 +221,7 @@ class FanucInterpreter(Interpreter):
         self.after_home: set[int] = set()  # axes returned by G28/G30 while a tool length offset was active
         self.intermediate: list | None = None  # G28/G30's intermediate point (machine), for G29
         self.intermediate_deps: list[dict] | None = None  # its range dependencies
-        self.stops: list = []  # M00/M01 lines, for the report
+        self.stops: list[tuple[int, int]] = []  # (0 or 1, line) of M00/M01, as the LinuxCNC interpreter's
         # programmable transforms: each acts on the program point (mm, workpiece system) about its centre
         self.rotation: Rotation | None = None
         self.scaling: Scaling | None = None
@@ -301,8 +301,9 @@ class FanucInterpreter(Interpreter):
             self.last["M"] = Fraction(mcodes[-1][0])
         if block.number is not None:
             self.last["N"] = block.number
-        if 0 in mset or 1 in mset:
-            self.stops.append(block.span.line if block.span else 0)
+        for k in (0, 1):
+            if k in mset and len(self.stops) < 100:
+                self.stops.append((k, block.span.line if block.span else 0))
 
     def _plain_modes(self, groups: dict) -> None:
         """The modal groups mill and lathe read alike: plane (02), units (06), distance (03), G40 (07)."""
@@ -1160,6 +1161,8 @@ class FanucInterpreter(Interpreter):
                 raise self.error("GC210", f"cannot put an {self.axes[i].lower()} word ({aw.text}) in a canned cycle", aw)
         if reps == 0:
             return  # K0: the drilling data is stored, no hole is drilled
+        if self.too_many(name, f"{name} {kw.text if kw is not None else ''}", reps, kw):
+            return
         if k in (730, 830):
             step = self.length_mm(data["Q"])
             back = self.settings.g73_retract if k == 730 else self.settings.g83_clearance
@@ -1189,7 +1192,9 @@ class FanucInterpreter(Interpreter):
                 return
             self._first_after_transform = False
         xy_words = [(i, aw) for i, aw in axis_words if i in (ix, iy)]
-        for _rep in range(reps):
+        for rep in range(reps):
+            if rep and self.budget_gone(name, f"{kw.text if kw is not None else ''} had drilled {rep} holes", kw):
+                return
             target = list(self.pos)
             if transformed:
                 point = self._program_point(xy_words)
@@ -1235,6 +1240,8 @@ class FanucInterpreter(Interpreter):
                 go(SegmentKind.RAPID, r, f"{name} to R")
             if k in (730, 830):
                 depth = r
+                if self.too_many(name, f"{name} Q{fmt_number(data['Q'])} (one peck per Q)", -((bottom - r) // step) - 1):
+                    return
                 while depth - step > bottom:  # G73: back off d; G83: out to R, down to d above the cut
                     depth -= step
                     go(SegmentKind.LINE, depth, f"{name} peck")

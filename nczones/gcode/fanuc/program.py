@@ -52,6 +52,7 @@ from ..program import (
     IterationBoundExceeded,
     StringSource,
     UnsupportedGcode,
+    interpretation_spent,
 )
 from .expr import (
     VACANT,
@@ -702,6 +703,24 @@ class FanucRunner:
             raise self.unsupported("WHILE", f"the DO{loop.m} loop ran more than {self.max_loops} iterations "
                                    "(max_loop_iterations); not interpreted further", lineno, line,
                                    cls=IterationBoundExceeded)
+        self.budget_left(f"the DO{loop.m} loop had run {loop.count} iterations", lineno, line)
+
+    def budget_left(self, what: str, lineno: int, line: str, col: int = 1, end: int | None = None) -> None:
+        """At every repetition (a loop iteration, a jump back, a repeat of a call): past the run's budget the
+        interpretation ends here as unknown (VF203), saying what was counted."""
+        why = interpretation_spent()
+        if why is not None:
+            raise self.unsupported("VF203", f"{why}: {what}; not interpreted further", lineno, line, col, end,
+                                   cls=IterationBoundExceeded)
+
+    def repeat_count(self, what: str, count: int, lineno: int, line: str, col: int = 1,
+                     end: int | None = None) -> None:
+        """A call's or a cycle's repeat count above ``max_loop_iterations`` ends the interpretation as unknown
+        at its block, before any repetition runs."""
+        if count > self.max_loops:
+            raise self.unsupported(what.split()[0], f"{what} repeats {count} times, more than {self.max_loops} "
+                                   "(max_loop_iterations, --max-iterations); not interpreted further", lineno,
+                                   line, col, end, cls=IterationBoundExceeded)
 
     def find_end(self, source: _Source, m: int, pos: int, lineno: int, lineno0: int, line0: str) -> tuple[int, int]:
         """``(pos, lineno)`` of the ``END m`` closing the loop opened on line ``lineno0`` (scanning from ``pos``)."""
@@ -746,6 +765,7 @@ class FanucRunner:
                 raise self.unsupported("GOTO", f"{what} {n} jumped back more than {self.max_loops} times "
                                        "(max_loop_iterations); not interpreted further", lineno, line, col, end,
                                        cls=IterationBoundExceeded)
+            self.budget_left(f"{what} {n} had jumped back {self.jumps_back} times", lineno, line, col, end)
         while frame.loops:  # leave the loops whose range does not hold the target
             loop = frame.loops[-1]
             if tpos > loop.head[0]:
@@ -939,6 +959,7 @@ class FanucRunner:
             count = int(lword[1]) if lword is not None and lword[1].denominator == 1 else 1
             if count <= 0:
                 return here
+            self.repeat_count(f"M97 P{int(pword[1])} L{count}", count, lineno, line, word[2], word[3])
             frame = self.frames[-1]
             target = self.jump(int(pword[1]), nxt, lineno, line, pword[2], pword[3], "M97 P")
             self.push(_Frame("m97", frame.source, frame.program, here, target, count), lineno, line)
@@ -965,6 +986,8 @@ class FanucRunner:
             count, program = divmod(program, 10000)  # M98 P30002: the digits before the last four repeat
         if count == 0:
             return here
+        self.repeat_count(f"M98 {pword[4]}{' ' + lword[4] if lword is not None else ''} (subprogram O{program})",
+                          count, lineno, line, word[2], word[3])
         return self.call_sub(program, count, here, lineno, line, "M98")
 
     def call_words(self, words: list, what: str, lineno: int, line: str,
@@ -1045,6 +1068,7 @@ class FanucRunner:
                    what: str, custom: bool = False) -> tuple[int, int]:
         if repeats == 0:
             return ret
+        self.repeat_count(f"{what} P{program} L{repeats}", repeats, lineno, line)
         source, body = self.locate(program, lineno, line, what)
         frame = _Frame("macro", source, program, ret, body, repeats, self.vars.local, args, custom=custom)
         self.push(frame, lineno, line)
@@ -1061,6 +1085,8 @@ class FanucRunner:
             return self.jump(int(pword[1]), nxt, lineno, line, pword[2], pword[3], "M99 P")
         frame.repeats -= 1
         if frame.repeats > 0 and pword is None:
+            self.budget_left(f"O{frame.program} (called at line {frame.ret[1] - 1}) had {frame.repeats} repeats "
+                             "left", lineno, line, col, end)
             frame.loops.clear()
             if frame.saved is not None:  # the next repetition of a macro starts with its arguments only
                 self.vars.local = [VACANT] * len(self.vars.local)
@@ -1083,6 +1109,7 @@ class FanucRunner:
                 raise self.unsupported("M99", f"M99 {pword[4]} jumped back more than {self.max_loops} times "
                                        "(max_loop_iterations); not interpreted further", lineno, line, col, end,
                                        cls=IterationBoundExceeded)
+            self.budget_left(f"M99 {pword[4]} had jumped back {self.jumps_back} times", lineno, line, col, end)
         caller.loops.clear()
         return target
 
