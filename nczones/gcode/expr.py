@@ -54,6 +54,8 @@ __all__ = [
     "trig_degrees",
     "TRIG_DEGREES",
     "atan_degrees",
+    "lcnc_integer",
+    "lcnc_round",
 ]
 
 #: LinuxCNC compares EQ/NE with this absolute tolerance (``TOLERANCE_EQUAL``).
@@ -266,6 +268,15 @@ class Parameters:
         self._scopes.append({})
         return saved
 
+    def push_locals(self) -> None:
+        """Enter an M98 subprogram: a new frame of local names (LinuxCNC's enter_context), #1..#30 shared."""
+        self._scopes.append({})
+
+    def pop_locals(self) -> None:
+        """Leave an M98 subprogram (M99): its local names are discarded (leave_context)."""
+        if len(self._scopes) > 1:
+            self._scopes.pop()
+
     def pop_scope(self, saved: tuple) -> None:
         """Leave a subroutine: restore #1..#30 and the caller's local names."""
         for i, v in enumerate(saved, start=1):
@@ -275,6 +286,33 @@ class Parameters:
                 self._num[i] = v
         if len(self._scopes) > 1:
             self._scopes.pop()
+
+
+def lcnc_integer(value: Fraction) -> int | None:
+    """The integer LinuxCNC reads for an integer word (H, L, T, M, an O number, M98's P): its double
+    within 0.0001 of an integer (``Interp::read_integer_value``: floor, then ceil when the rest is above
+    0.9999), None when it is farther (LinuxCNC: "Non-integer value for integer").
+
+    >>> lcnc_integer(Fraction("2.00001")), lcnc_integer(Fraction("2.99995")), lcnc_integer(Fraction("2.5"))
+    (2, 3, None)
+    """
+    if value.denominator == 1:
+        return value.numerator
+    d = value.numerator / value.denominator
+    n = math.floor(d)
+    if d - n > 0.9999:
+        return math.ceil(d)
+    return None if d - n > 0.0001 else n
+
+
+def lcnc_round(value: Fraction) -> int:
+    """LinuxCNC's ``round_to_int`` of a word's double: ``nearbyint``, to the nearest integer, halves to even
+    (``o.. repeat [2.6]`` runs 3 times, ``[2.5]`` twice).
+
+    >>> lcnc_round(Fraction("2.6")), lcnc_round(Fraction("2.5")), lcnc_round(Fraction("3.5"))
+    (3, 2, 4)
+    """
+    return value.numerator if value.denominator == 1 else round(value.numerator / value.denominator)
 
 
 def word_value(value: Value) -> Fraction:

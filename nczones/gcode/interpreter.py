@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -47,7 +47,7 @@ from . import (  # defined in the package, which loads this module lazily
     DEFAULT_CHUNK_SIZE,
 )
 from .blocks import LANE_FULL, Block, Word
-from .expr import EvalError
+from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
 from .segments import dadd, make_segment, with_tool_deps
 from .splines import SPLINE_CODES, spline_block, spline_pending
@@ -157,6 +157,9 @@ UNSUPPORTED_G = {
     1121: "polar coordinate interpolation (G112) is not modelled",
 }
 # Harmless codes: no effect on the path.
+#: Words LinuxCNC reads as integers within 0.0001 of one (``read_integer_value``: read_h, read_l, read_t).
+_INTEGER_LETTERS = ("H", "L", "T")
+
 _HARMLESS_M = {0, 1, 3, 4, 5, 7, 8, 9, 19, 48, 49, 50, 51, 52, 53, 60, 62, 63, 64, 65, 66, 67, 68,
                70, 71, 72}
 _M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8,
@@ -817,6 +820,12 @@ class Interpreter:
                     # LinuxCNC's (abort, ...): the program stops with this text before the block runs
                     raise self.error("GC305", f"the program aborts here (LinuxCNC (ABORT, ...)): {msg[6:].strip()}")
         gcodes, mcodes, words, axis_words = self._split_words(block)
+        for letter in _INTEGER_LETTERS:
+            w = words.get(letter)
+            if w is not None and w.value.denominator != 1:
+                n = lcnc_integer(w.value)  # LinuxCNC read_integer_value: T[2.00001] is T2
+                if n is not None:
+                    words[letter] = replace(w, value=Fraction(n))
         polar = "@" in words or "^" in words
         if axis_words and not polar and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track \
                 and self.machine_at is None \
@@ -1611,9 +1620,12 @@ class Interpreter:
         turns = 0
         pw = words.get("P")
         if pw is not None:
-            if pw.value.denominator != 1 or pw.value < 1:
+            # LinuxCNC check_other_codes: round_to_int(P) within 0.001 of P, at least 1
+            pd = pw.value.numerator / pw.value.denominator
+            pr = round(pd)
+            if abs(pr - pd) > 0.001 or pr < 1:
                 raise self.error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
-            turns = int(pw.value) - 1
+            turns = pr - 1
         self.note_assumed(("units", "distance", "offset", "plane"))
         end, deps = self.program_target(axis_words, False)
         rotated = self.prerotation_xy is not None
@@ -1718,10 +1730,19 @@ class Interpreter:
         if pw is None:
             raise self.error("GC208", f"G10 L{L} needs a P word", w)
         P = pw.value
+        # LinuxCNC check_g10: P rounded half away from zero (p_int) must be within 0.0002 below P + 0.0001, i.e.
+        # P is in [p_int - 0.5, p_int + 0.0001]: G10 L2 P1.6 passes the check
+        pd = P.numerator / P.denominator
+        p_int = int(pd + 0.5) if pd >= 0 else int(pd - 0.5)
+        if (pd + 0.0001) - p_int > 0.0002:
+            raise self.error("GC209", f"G10 L{L} {pw.text}: P must be an integer (LinuxCNC: P value not an integer "
+                              "with G10)", pw)
         if L in (2, 20):
-            if P.denominator != 1 or not 0 <= P <= 9:
+            if not 0 <= p_int <= 9:
                 raise self.error("GC209", f"G10 L{L} {pw.text}: P must be an integer 0 (active) to 9 (G59.3)", pw)
-            name = self.wcs if P == 0 else WORK_OFFSETS[int(P) - 1]
+            # convert_setup then truncates P + 0.0001: G10 L2 P1.6 and P1.5 write G54 (P1)
+            k = int(pd + 0.0001)
+            name = self.wcs if k == 0 else WORK_OFFSETS[k - 1]
             rw = words.get("R")
             reg = self.g5x[name]
             dreg = self.dep_g5x[name]
@@ -1759,7 +1780,10 @@ class Interpreter:
                         dreg[i] = d
             self.recompute_offsets()
         else:
-            self._g10_tool(int(L), P, pw, axis_words)
+            if p_int < 1:  # LinuxCNC check_g10: P >= 1 with L1, L10 and L11
+                raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a positive integer tool number", pw)
+            # convert_setup_tool: is_near_int, the tool number (int)(P + 0.5)
+            self._g10_tool(int(L), Fraction(int(pd + 0.5)), pw, axis_words)
 
     def _g10_l20_rotated(self, name: str, axis_words: list[tuple[int, Word]]) -> None:
         """G10 L20 on X/Y of a rotated system: the offset that makes the current position read the values.

@@ -103,6 +103,7 @@ from .expr import (
     compile_expression,
     evaluate,
     format_parameter,
+    lcnc_integer,
     parameter_key,
     word_value,
 )
@@ -813,17 +814,18 @@ class Runner:
                  nxt: int) -> tuple[int, int]:
         if pword is None:
             raise self.error("GC317", "M98 needs a P word naming the subprogram (M98 P1000)", lineno, line, *loc)
-        p = pword.value
-        if p.denominator != 1 or p < 0:
+        # P and L are read as LinuxCNC reads integers: within 0.0001 of one (read_integer_value)
+        p = lcnc_integer(pword.value)
+        if p is None or p < 0:
             raise self.error("GC317", f"M98 P{pword.text[1:]}: the program number must be a non-negative integer",
                              lineno, line, pword.span.column, pword.span.end_column)
         count = 1
         if lword is not None:
-            lv = lword.value
-            if lv.denominator != 1 or lv < 0:
+            lv = lcnc_integer(lword.value)
+            if lv is None or lv < 0:
                 raise self.error("GC317", f"M98 L{lword.text[1:]}: the repeat count must be a non-negative integer",
                                  lineno, line, lword.span.column, lword.span.end_column)
-            count = int(lv)
+            count = lv
         if count == 0:
             return nxt, lineno + 1
         label = int(p)
@@ -835,7 +837,18 @@ class Runner:
                                  f"with 'o{label} call'", lineno, line, *loc)
             raise self.error("GC317", f"M98 P{label}: no subprogram O{label} in this file", lineno, line, *loc)
         self.push(_Frame("m98", label, (nxt, lineno + 1), None, body, count), lineno, line)
+        self.params.push_locals()  # LinuxCNC: every M98 call (each L repeat too) has its own named locals
         return body
+
+    def set_value(self, value: Any) -> None:
+        """``#<_value>`` and ``#<_value_returned>`` as LinuxCNC's read_o leaves them at an endsub, return or
+        M99: the value returned, else 0 and 0 (a subroutine that returns nothing resets them)."""
+        if value is None:
+            self.params.write("_value", (0.0, Fraction(0)))
+            self.params.write("_value_returned", (0.0, Fraction(0)))
+        else:
+            self.params.write("_value", value)
+            self.params.write("_value_returned", (1.0, Fraction(1)))
 
     def return_m99(self, loc: tuple[int, int], line: str, lineno: int) -> tuple[int, int]:
         frame = self.frames[-1]
@@ -845,10 +858,13 @@ class Runner:
         if frame.kind != "m98":
             raise self.error("GC315", f"M99 inside {_show(frame.label)} sub; an 'o.. sub' subroutine ends with "
                              f"{_show(frame.label)} endsub", lineno, line, *loc)
+        self.set_value(None)  # LinuxCNC read_o: M99 returns no value
+        self.params.pop_locals()
         frame.repeats -= 1
         if frame.repeats > 0:
             frame.loops.clear()
             frame.ifs.clear()
+            self.params.push_locals()  # the next repeat is a new call (a new frame)
             return frame.body
         self.frames.pop()
         return frame.ret
@@ -876,10 +892,11 @@ class Runner:
         label = ow.label
         if isinstance(label, tuple):  # o[expr]
             d, _q = self.evaluate(label, lineno, line, ow.column, ow.end_column)
-            if d != int(d) or d < 0:
+            n = lcnc_integer(Fraction(d))  # LinuxCNC read_integer_value: within 0.0001 of an integer
+            if n is None or n < 0:
                 raise self.error("GC202", f"O-word number {d!r} is not a non-negative integer", lineno, line,
                                  ow.column, ow.end_column)
-            label = int(d)
+            label = n
         return label
 
     def oword(self, ow: OWord, label: object, line: str, lineno: int, pos: int, nxt: int) -> tuple[int, int] | None:
@@ -900,8 +917,13 @@ class Runner:
 
         if kw == "sub":
             self.subs.setdefault(label, here)
-            _k, _p, ln, _l, after = self.skip_to(label, ("endsub",), nxt, lineno + 1, "sub", line, lineno,
-                                                 nested_sub_error=True)
+            _k, _p, ln, eline, after = self.skip_to(label, ("endsub",), nxt, lineno + 1, "sub", line, lineno,
+                                                    nested_sub_error=True)
+            # LinuxCNC's read_o sets #<_value> when it reads an endsub, also the one that ends a definition it
+            # skips: to the endsub's value, else 0 (with #<_value_returned>)
+            end_ow = parse_line(eline, ln, self.file).oword
+            self.set_value(self.evaluate(end_ow.args[0], ln, eline, end_ow.column, end_ow.end_column)
+                           if end_ow is not None and end_ow.args else None)
             return after, ln + 1
         if kw == "call":
             args = tuple(self.evaluate(a, lineno, line, col, end) for a in ow.args)
@@ -931,11 +953,7 @@ class Runner:
                 value = self.evaluate(ow.args[0], lineno, line, col, end)
             assert frame.saved is not None  # an "o" frame saved the caller's scope when it was pushed
             self.params.pop_scope(frame.saved)
-            if ow.args:
-                self.params.write("_value", value)
-                self.params.write("_value_returned", (1.0, Fraction(1)))
-            else:
-                self.params.write("_value_returned", (0.0, Fraction(0)))
+            self.set_value(value if ow.args else None)
             self.frames.pop()
             return frame.ret
         if kw == "if":
@@ -986,7 +1004,7 @@ class Runner:
             return loop.head
         if kw == "repeat":
             d = self.evaluate(ow.args[0], lineno, line, col, end)[0]
-            n = int(d)
+            n = round(d)  # LinuxCNC round_to_int (nearbyint): [2.6] repeats 3 times, [2.5] twice
             if n <= 0:
                 _k, _p, ln, _l, after = self.skip_to(label, ("endrepeat",), nxt, lineno + 1, "repeat", line, lineno)
                 return after, ln + 1
