@@ -80,6 +80,11 @@ class LatheInterpreter(Interpreter):
             if len(modes) > 1:
                 raise self.error("GC201", "G7 and G8 are in the same modal group; a block may contain only one of "
                                   "them", modes[1])
+            if any(w.letter == "M" and w.value in (70, 72, 73) for w in words):
+                # LinuxCNC saves/restores (convert_m) before it runs G7/G8 (convert_g), but reads the block's X
+                # with the mode from before: not followed
+                self.unknown("G7/G8", "G7 or G8 in a block with M70, M72 or M73 is not modelled; write them in "
+                             "separate blocks", modes[0])
             self.diameter_mode = gkey(modes[0].value) == 70
             words = tuple(w for w in words if w is not modes[0])
         if self.diameter_mode and any(w.letter == "X" for w in words):
