@@ -55,6 +55,7 @@ __all__ = [
     "TRIG_DEGREES",
     "atan_degrees",
     "lcnc_integer",
+    "read_only",
     "lcnc_round",
 ]
 
@@ -107,6 +108,21 @@ PREDEFINED = frozenset(
     "_x _y _z _a _b _c _u _v _w _abs_x _abs_y _abs_z _abs_a _abs_b _abs_c _abs_u _abs_v _abs_w "
     "_current_tool _current_pocket _selected_tool _selected_pocket _task _call_level _remap_level".split()
 )
+
+
+#: Named parameters a program may not assign (LinuxCNC: "Cannot assign to read-only parameter"): the
+#: predefined ones and the value of the last subroutine.  (``#<_hal[...]>``/``#<_ini[...]>``: rs274 without
+#: HAL or INI takes the assignment; they stay unknown.)
+READ_ONLY = PREDEFINED | {"_value", "_value_returned"}
+
+
+def read_only(key: int | str) -> bool:
+    """Is ``#key`` a parameter LinuxCNC refuses to assign?
+
+    >>> read_only("_value"), read_only("_x"), read_only("_mine"), read_only(5220)
+    (True, True, False, False)
+    """
+    return isinstance(key, str) and key in READ_ONLY
 
 
 class EvalError(Exception):

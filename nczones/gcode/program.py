@@ -64,7 +64,7 @@ Errors and the unsupported mechanism
   syntax, ``GC3xx`` run-time language errors (undefined named parameter
   GC310, division by zero GC311, math domain GC312, unknown subroutine
   GC313, unmatched control flow GC314, return outside a subroutine GC315,
-  call depth GC316, M98 errors GC317).  A lexical or syntax error in an
+  call depth GC316, M98 errors GC317, assignment to a read-only parameter GC318).  A lexical or syntax error in an
   executed line is reported together with those of up to nine following
   lines.
 * Language that cannot be modelled raises :class:`UnsupportedGcode`
@@ -105,6 +105,7 @@ from .expr import (
     format_parameter,
     lcnc_integer,
     parameter_key,
+    read_only,
     word_value,
 )
 from .lexer import (
@@ -707,6 +708,9 @@ class Runner:
             if key in (3000, 3006):
                 raise self.unsupported("GC301", f"#{key} (Fanuc alarm / message stop) is not supported",
                                        lineno, line, col, end)
+            if read_only(key):
+                raise self.error("GC318", f"#<{key}> is read-only: LinuxCNC refuses to assign it (only a "
+                                 "program's own parameters may be assigned)", lineno, line, col, end)
             guarded = params.guarded(key)
             if guarded is not None:
                 raise self.unsupported("GC305", guarded, lineno, line, col, end)
