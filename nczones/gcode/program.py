@@ -252,6 +252,9 @@ class _Frame:
     ifs: list = field(default_factory=list)
 
 
+#: LinuxCNC's call levels, the main program's included (``INTERP_SUB_ROUTINE_LEVELS``, interp_internal.hh).
+LINUXCNC_CALL_LEVELS = 10
+
 _OLINE = re.compile(r"/?(?:[nN][\d.]+)?[oO](<[^>]*>|\d+)([A-Za-z]*)")
 _FANUC_END = re.compile(r"[mM][ \t]*0*99(?![\d.])")
 _PROGRAM_END_HINT = re.compile(r"(?:^|[^a-zA-Z])[mM][ \t]*0*(?:2|30)(?![\d.])|^[ \t]*%")
@@ -321,7 +324,14 @@ class Runner:
         self.max_loops = max_loop_iterations
         self.max_depth = max_call_depth
         self.frames: list[_Frame] = [_Frame("main")]
-        self.subs: dict[object, tuple[int, int]] = {}  # label -> (pos, lineno) of the line after "sub"
+        #: label -> (pos, lineno) of the line after "sub": the subroutines defined so far, as LinuxCNC's offset
+        #: map holds them (a definition the flow executed, or found by a call searching forward)
+        self.subs: dict[object, tuple[int, int]] = {}
+        #: label -> every "o<label> sub" of the file, (pos, lineno) of the line after it (find_definitions)
+        self.all_subs: dict[object, list[tuple[int, int]]] = {}
+        #: (sub, label) -> (line, keyword) of the first if/while/repeat/do executed with that label in that sub
+        #: ("" the main program): LinuxCNC's offset map refuses a label reused on another line
+        self.control_lines: dict[tuple, tuple[int, str]] = {}
         self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
         self.scanned_all = False
         self.cache: dict[int, tuple] = {}  # offset -> (parsed line, line, next offset)
@@ -404,8 +414,6 @@ class Runner:
             if nested_sub_error and kw == "sub":
                 raise self.error("GC314", f"nested subroutine definition: {_show(lab)} sub inside "
                                  f"{_show(label)} sub", ln, line)
-            if kw == "sub" and lab not in self.subs:
-                self.subs[lab] = (nxt, ln + 1)
             if lab == label and kw in keywords:
                 return kw, p, ln, line, nxt
         raise self.error("GC314", f"{_show(label)} {what} has no matching "
@@ -425,7 +433,7 @@ class Runner:
             lab = _olabel(m)
             kw = m.group(2).lower()
             if kw == "sub":
-                self.subs.setdefault(lab, (nxt, ln + 1))
+                self.all_subs.setdefault(lab, []).append((nxt, ln + 1))
             elif kw == "" and isinstance(lab, int):
                 self.fanuc.setdefault(lab, (nxt, ln + 1))
 
@@ -773,7 +781,7 @@ class Runner:
         body = self.subs.get(label)
         if body is None:
             self.find_definitions()
-            body = self.subs.get(label)
+            body = self.all_subs.get(label, [None])[0]
         if body is None:
             raise self.error("GC313", f"{qw[4]}: subroutine o{label} (the cycle's profile) is not defined in this "
                              "file", lineno, line, qw[2], qw[3])
@@ -836,7 +844,7 @@ class Runner:
         self.find_definitions()
         body = self.fanuc.get(label)
         if body is None:
-            if label in self.subs:
+            if label in self.all_subs:
                 raise self.error("GC317", f"M98 P{label}: o{label} is an 'o{label} sub' subroutine; call it "
                                  f"with 'o{label} call'", lineno, line, *loc)
             raise self.error("GC317", f"M98 P{label}: no subprogram O{label} in this file", lineno, line, *loc)
@@ -876,6 +884,10 @@ class Runner:
     def push(self, frame: _Frame, lineno: int, line: str) -> None:
         if len(self.frames) > self.max_depth:
             raise self.error("GC316", f"subroutine calls nested deeper than {self.max_depth} levels", lineno, line)
+        if len(self.frames) >= LINUXCNC_CALL_LEVELS:
+            raise self.error("GC316", f"subroutine calls nested deeper than {LINUXCNC_CALL_LEVELS - 1} levels: "
+                             f"LinuxCNC has {LINUXCNC_CALL_LEVELS} call levels with the main program "
+                             "(INTERP_SUB_ROUTINE_LEVELS; 'Too many subroutine levels')", lineno, line)
         self.frames.append(frame)
 
     # -- O-words ----------------------------------------------------------------
@@ -920,7 +932,16 @@ class Runner:
             return bool(self.evaluate(ow.args[0], lineno, line, col, end, again)[0] != 0.0)
 
         if kw == "sub":
-            self.subs.setdefault(label, here)
+            known = self.subs.get(label)
+            if known is not None:
+                # LinuxCNC control_save_offset: a sub is defined once; reached again (in a loop, or after a call
+                # found it searching forward) it is "found in illegal location", elsewhere "redefining sub"
+                raise self.error("GC314", f"{_show(label)} sub " + (
+                    "reached again: a subroutine defined (or called) before may not be defined here (LinuxCNC: "
+                    "found in illegal location)" if known == here else
+                    f"redefines {_show(label)} (defined at line {known[1] - 1}); a subroutine is defined once"),
+                    lineno, line, col, end)
+            self.subs[label] = here
             _k, _p, ln, eline, after = self.skip_to(label, ("endsub",), nxt, lineno + 1, "sub", line, lineno,
                                                     nested_sub_error=True)
             # LinuxCNC's read_o sets #<_value> when it reads an endsub, also the one that ends a definition it
@@ -933,9 +954,17 @@ class Runner:
             args = tuple(self.evaluate(a, lineno, line, col, end) for a in ow.args)
             body = self.subs.get(label)
             if body is None:
+                # LinuxCNC control_back_to: a sub not defined yet is searched forward from the call (a definition
+                # above, inside a skipped if or loop, is not found); found, it is defined there
                 self.find_definitions()
-                body = self.subs.get(label)
+                body = next((b for b in self.all_subs.get(label, ()) if b[1] > lineno), None)
+                if body is not None:
+                    self.subs[label] = body
             if body is None:
+                if label in self.all_subs:
+                    raise self.error("GC313", f"subroutine {_show(label)} is not defined here: its definition was not "
+                                     "executed (it is in a skipped branch or loop) and there is none after the call",
+                                     lineno, line, col, end)
                 if isinstance(label, str):
                     raise self.unsupported("GC303", f"subroutine o<{label}> is not defined in this file "
                                            "(external subroutine files are not supported)", lineno, line, col, end)
@@ -960,6 +989,8 @@ class Runner:
             self.set_value(value if ow.args else None)
             self.frames.pop()
             return frame.ret
+        if kw in ("if", "while", "repeat", "do"):
+            self.control_label(frame, label, kw, lineno, line, col, end)
         if kw == "if":
             return self.branch(label, cond(), frame, nxt, lineno, line, open_if=True)
         if kw == "elseif":
@@ -1045,6 +1076,19 @@ class Runner:
             _k, _p, ln, _l, after = self.skip_to(label, (end_kw,), nxt, lineno + 1, kw, line, lineno)
             return after, ln + 1
         raise AssertionError(kw)  # pragma: no cover
+
+    def control_label(self, frame: _Frame, label: object, kw: str, lineno: int, line: str, col: int,
+                      end: int) -> None:
+        """LinuxCNC's offset map: an if/while/repeat label (named per subroutine) belongs to one line; the same
+        label on another line is "duplicate O-word label" (a ``while`` may close a ``do`` of its label)."""
+        key = ("" if frame.kind == "main" else frame.label, label)
+        seen = self.control_lines.get(key)
+        if seen is None:
+            self.control_lines[key] = (lineno, kw)
+        elif seen[0] != lineno and kw != "do" and not (kw == "while" and seen[1] == "do"):
+            raise self.error("GC314", f"{_show(label)} {kw}: the label {_show(label)} is already used by the "
+                             f"{seen[1]} at line {seen[0]}; LinuxCNC refuses a duplicate O-word label (use another "
+                             "number)", lineno, line, col, end)
 
     def branch(self, label: object, taken: bool, frame: _Frame, nxt: int, lineno: int, line: str,
                open_if: bool) -> tuple[int, int]:

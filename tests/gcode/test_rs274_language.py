@@ -1,5 +1,5 @@
 """LinuxCNC language and modal meaning where nczones proved a path LinuxCNC does not take (issue 33, classes
-11, 12, 13, 18, 19 and the errors of its "also compared" list).
+11, 12, 13, 14, 18, 19 and the errors of its "also compared" list).
 
 Every expected motion is the canonical output of LinuxCNC 2.9's ``rs274 -g`` (the installed
 ``linuxcnc-uspace`` 2.9.0~pre1) of the same program, quoted in the test (program coordinates; G54 = 0, so
@@ -171,6 +171,24 @@ def test_m98_l_and_p_within_the_tolerance():
     assert_unsafe_in_every_lane(text, CLAMP_X10)
 
 
+# ---------------------------------------------------------------- class 14: G70 with a non-integer P
+G70_P = "G18 G21 F100\no1 sub\nG1 X5 Z0\nG1 X8 Z-10\nX12\no1 endsub\nG0 X12 Z4\nG70 Q1 X12 Z2 D1 E0 P2.6\nM2\n"
+
+
+def test_g70_counts_int_p_passes_spaced_by_the_real_p():
+    """interp_g7x.cc (LinuxCNC 2.9) ``for(int pass=p; pass>0; pass--)`` with ``distance=(pass-1)*(d-e)/p+e`` in
+    the double P: P2.6 makes 2 passes, the first 1/2.6 = 0.3846 mm off the profile.  rs274:
+    ``STRAIGHT_TRAVERSE(5.3684, 0, 0.1105)``, ``STRAIGHT_FEED(8.2862, 0, -9.6154)``, ``STRAIGHT_FEED(12, 0,
+    -9.6154)``, then the last pass on the profile.  nczones divided by 2 (0.5 mm off: Z -9.5), past the clamp
+    at Z -9.65..-9.58; P0.5 makes no pass (nczones refused it)."""
+    m = machine('X = "9", Y = "-5", Z = "-9.65"', 'X = "11", Y = "5", Z = "-9.58"')
+    got = moves(G70_P, m)
+    assert [(k, round(float(x), 4), round(float(z), 4)) for k, x, _y, z in got[3:6]] == [
+        ("RAPID", 5.3684, 0.1105), ("LINE", 8.2862, -9.6154), ("LINE", 12.0, -9.6154)]
+    assert_unsafe_in_every_lane(G70_P, m)
+    assert len(moves(G70_P.replace("P2.6", "P0.5"), m)) == 2  # the rapids to X12 Z4 and to X12 Z2 only
+
+
 # ---------------------------------------------------------------- class 13: #<_value> resets
 CLAMP_X0 = machine('X = "-1", Y = "-5", Z = "-100"', 'X = "1", Y = "5", Z = "-1"')
 
@@ -233,13 +251,47 @@ def test_a_comment_inside_a_word_is_an_error():
         assert d.code == "GC101" and d.span.column == 9, lane
 
 
+@pytest.mark.parametrize("text,line,col", [
+    # rs274: "5: duplicate O-word label - already defined in line 2"
+    ("G0 X0\no1 if [1]\nG0 X1\no1 endif\no1 if [1]\nG0 X2\no1 endif\nM2\n", 5, 1),
+    # rs274: "4: duplicate O-word label: 'o1 repeat [2]' - defined in line 1"
+    ("o1 repeat [2]\nG0 X1\no1 endrepeat\no1 repeat [2]\nG0 X2\no1 endrepeat\nM2\n", 4, 1),
+    # rs274: "4: duplicate O-word label - already defined in line 2" (an if inside the while of its label)
+    ("#1 = 0\no1 while [#1 LT 5]\n#1 = [#1 + 1]\no1 if [#1 EQ 2]\no1 endif\no1 endwhile\nM2\n", 4, 1),
+    # rs274: "redefining sub: o|2| already defined"
+    ("o2 sub\nG0 X5\no2 endsub\no2 sub\nG0 X7\no2 endsub\no2 call\nM2\n", 4, 1),
+    # rs274: "sub: o|2| found in illegal location" (called, found searching forward, then reached)
+    ("o2 call\nG0 X1\no2 sub\nG0 Y5\no2 endsub\nM2\n", 3, 1),
+    # rs274: "EOF in file seeking o-word: o<2>": a definition in a skipped if is not made (rs274 names the
+    # last line; nczones the call)
+    ("o1 if [0]\no2 sub\nG0 X5\no2 endsub\no1 endif\no2 call\nM2\n", 6, 1),
+    # rs274: "Too many subroutine levels" at the tenth nested call
+    ("".join(f"o{k} sub\no{k + 1} call\no{k} endsub\n" for k in range(1, 11)) + "o11 sub\nG0 Z1\no11 endsub\n"
+     "o1 call\nM2\n", 26, 1),  # o10 call
+])
+def test_o_word_errors_linuxcnc_reports(text, line, col):
+    with pytest.raises(GcodeError) as e:
+        moves(text, CLAMP_X0)
+    d = e.value.diagnostics[0]
+    assert (d.span.line, d.span.column) == (line, col), d
+    assert d.code in ("GC313", "GC314", "GC316")
+
+
+def test_subroutines_found_forward_and_labels_per_subroutine():
+    """rs274 runs these: a call finds a sub defined after it (main program before the definitions), the same
+    if label in two subs and in the main program (``o2#1``, ``o3#1``, ``#1``)."""
+    text = ("o2 sub\no1 if [1]\nG0 Y5\no1 endif\no2 endsub\no3 sub\no1 if [1]\nG0 Y6\no1 endif\no3 endsub\n"
+            "o2 call\no2 call\no3 call\no1 if [1]\nG0 Y7\no1 endif\no4 call\nM2\no4 sub\nG0 Y8\no4 endsub\n")
+    assert [y for _k, _x, y, _z in moves(text, CLAMP_X0)] == [5, 5, 6, 7, 8]
+
+
 # ---------------------------------------------------------------- against rs274 itself, where installed
 RS274 = shutil.which("rs274")
 
 
 @pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is not installed")
 @pytest.mark.parametrize("text", [G92_RESTORE, TOOL_RESTORE, DIAMETER_RESTORE,
-                                  "F100\no1 repeat [2.6]\nG91 G1 X10\no1 endrepeat\nM2\n",
+                                  "F100\no1 repeat [2.6]\nG91 G1 X10\no1 endrepeat\nM2\n", G70_P,
                                   "#<y> = 0\nM98 P100\nG0 X[#<y>] Y0 Z-5\nM2\nO100\n#<y> = 10\nM99\n"])
 def test_the_quoted_programs_match_rs274(text):
     with tempfile.TemporaryDirectory() as tmp:
