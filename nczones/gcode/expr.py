@@ -218,6 +218,10 @@ class Parameters:
         """Set ``#key`` from a Fraction, int or float (no ``on_write`` call)."""
         self._store(self._key(key), pair(value))
 
+    def unprovide(self, key: int | str) -> None:
+        """Take back what :meth:`provide` gave ``#key`` (its stored value is read again)."""
+        self._providers.pop(self._key(key), None)
+
     def provide(self, key: int | str, getter: Callable[[], object]) -> None:
         """Make ``#key`` a computed parameter: reads call ``getter()``."""
         self._providers[self._key(key)] = getter

@@ -852,9 +852,19 @@ class Runner:
         self.params.push_locals()  # LinuxCNC: every M98 call (each L repeat too) has its own named locals
         return body
 
+    def value_unknown(self, why: str) -> None:
+        """``#<_value>`` and ``#<_value_returned>`` read as unknown (GC305) until the next endsub, return or M99."""
+        def unknown() -> object:
+            raise EvalError("GC305", why)
+
+        for key in ("_value", "_value_returned"):
+            self.params.provide(key, unknown)
+
     def set_value(self, value: Any) -> None:
         """``#<_value>`` and ``#<_value_returned>`` as LinuxCNC's read_o leaves them at an endsub, return or
         M99: the value returned, else 0 and 0 (a subroutine that returns nothing resets them)."""
+        self.params.unprovide("_value")
+        self.params.unprovide("_value_returned")
         if value is None:
             self.params.write("_value", (0.0, Fraction(0)))
             self.params.write("_value_returned", (0.0, Fraction(0)))
@@ -947,8 +957,19 @@ class Runner:
             # LinuxCNC's read_o sets #<_value> when it reads an endsub, also the one that ends a definition it
             # skips: to the endsub's value, else 0 (with #<_value_returned>)
             end_ow = parse_line(eline, ln, self.file).oword
-            self.set_value(self.evaluate(end_ow.args[0], ln, eline, end_ow.column, end_ow.end_column)
-                           if end_ow is not None and end_ow.args else None)
+            if end_ow is not None and end_ow.args:
+                try:
+                    value = evaluate(end_ow.args[0], self.params)
+                except EvalError:
+                    # LinuxCNC reads a name not defined there as nothing while it defines a sub (read_named_
+                    # parameter, defining_sub): #<_value> is then what its reader's variable held
+                    self.value_unknown(f"#<_value> after the definition of {_show(label)} (line {lineno}): its "
+                                       f"endsub value at line {ln} reads a parameter not defined outside a call, "
+                                       "which LinuxCNC reads as an undefined value")
+                else:
+                    self.set_value(value)
+            else:
+                self.set_value(None)
             return after, ln + 1
         if kw == "call":
             args = tuple(self.evaluate(a, lineno, line, col, end) for a in ow.args)

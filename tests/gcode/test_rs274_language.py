@@ -211,6 +211,17 @@ def test_value_is_set_by_the_endsub_of_a_skipped_definition_and_by_m99():
     assert moves(text, CLAMP_X0) == rows(("RAPID", 0, 0, -5))
 
 
+def test_value_after_a_definition_whose_endsub_reads_a_local_is_unknown():
+    """LinuxCNC reads an undefined name as nothing while it defines a sub (``read_named_parameter``:
+    ``defining_sub``), so ``#<_value>`` is whatever its reader's variable held: unknown, not 0 (and not an error:
+    the corpus's probe macros end with such an endsub)."""
+    run = interpret_text("o1 sub\n#<y> = 1\no1 endsub [#<y>]\nG0 X1\nG0 X#<_value>\nM2\n", CLAMP_X0)
+    assert len([s for c in run for s in c.segments()]) == 1
+    assert [(u.code, u.span.line) for u in run.unsupported] == [("GC305", 5)]
+    assert moves("o1 sub\n#<y> = 1\no1 endsub [#<y>]\no2 sub\no2 endsub\nG0 X#<_value>\nM2\n", CLAMP_X0) == rows(
+        ("RAPID", 0, 0, 0))  # the next endsub sets it again
+
+
 def test_value_is_read_only():
     """rs274: "Cannot assign to read-only parameter #<_value>" at ``#<_value> = 3``."""
     for text in ("#<_value> = 3\nG0 X1\nM2\n", "G0 X1\n#<_x> = 2 G0 X2\nM2\n"):
