@@ -362,7 +362,7 @@ class Interpreter:
         self.tool_selected = 0
         self.tool_in_spindle = 0
         #: LinuxCNC's spindle state for the checks it makes: direction 1 (M3), -1 (M4), 0 (stopped), and the
-        #: S value; None where nczones does not follow it (after M72 restores a saved state).
+        #: S value; None where nczones does not follow it (M72 restores them as LinuxCNC does).
         self.spindle_dir: int | None = 0
         self.spindle_speed: Fraction | None = _ZERO
         self.tlo = _ZERO
