@@ -54,6 +54,9 @@ __all__ = [
     "trig_degrees",
     "TRIG_DEGREES",
     "atan_degrees",
+    "lcnc_integer",
+    "read_only",
+    "lcnc_round",
 ]
 
 #: LinuxCNC compares EQ/NE with this absolute tolerance (``TOLERANCE_EQUAL``).
@@ -105,6 +108,21 @@ PREDEFINED = frozenset(
     "_x _y _z _a _b _c _u _v _w _abs_x _abs_y _abs_z _abs_a _abs_b _abs_c _abs_u _abs_v _abs_w "
     "_current_tool _current_pocket _selected_tool _selected_pocket _task _call_level _remap_level".split()
 )
+
+
+#: Named parameters a program may not assign (LinuxCNC: "Cannot assign to read-only parameter"): the
+#: predefined ones and the value of the last subroutine.  (``#<_hal[...]>``/``#<_ini[...]>``: rs274 without
+#: HAL or INI takes the assignment; they stay unknown.)
+READ_ONLY = PREDEFINED | {"_value", "_value_returned"}
+
+
+def read_only(key: int | str) -> bool:
+    """Is ``#key`` a parameter LinuxCNC refuses to assign?
+
+    >>> read_only("_value"), read_only("_x"), read_only("_mine"), read_only(5220)
+    (True, True, False, False)
+    """
+    return isinstance(key, str) and key in READ_ONLY
 
 
 class EvalError(Exception):
@@ -200,6 +218,10 @@ class Parameters:
         """Set ``#key`` from a Fraction, int or float (no ``on_write`` call)."""
         self._store(self._key(key), pair(value))
 
+    def unprovide(self, key: int | str) -> None:
+        """Take back what :meth:`provide` gave ``#key`` (its stored value is read again)."""
+        self._providers.pop(self._key(key), None)
+
     def provide(self, key: int | str, getter: Callable[[], object]) -> None:
         """Make ``#key`` a computed parameter: reads call ``getter()``."""
         self._providers[self._key(key)] = getter
@@ -266,6 +288,15 @@ class Parameters:
         self._scopes.append({})
         return saved
 
+    def push_locals(self) -> None:
+        """Enter an M98 subprogram: a new frame of local names (LinuxCNC's enter_context), #1..#30 shared."""
+        self._scopes.append({})
+
+    def pop_locals(self) -> None:
+        """Leave an M98 subprogram (M99): its local names are discarded (leave_context)."""
+        if len(self._scopes) > 1:
+            self._scopes.pop()
+
     def pop_scope(self, saved: tuple) -> None:
         """Leave a subroutine: restore #1..#30 and the caller's local names."""
         for i, v in enumerate(saved, start=1):
@@ -275,6 +306,33 @@ class Parameters:
                 self._num[i] = v
         if len(self._scopes) > 1:
             self._scopes.pop()
+
+
+def lcnc_integer(value: Fraction) -> int | None:
+    """The integer LinuxCNC reads for an integer word (H, L, T, M, an O number, M98's P): its double
+    within 0.0001 of an integer (``Interp::read_integer_value``: floor, then ceil when the rest is above
+    0.9999), None when it is farther (LinuxCNC: "Non-integer value for integer").
+
+    >>> lcnc_integer(Fraction("2.00001")), lcnc_integer(Fraction("2.99995")), lcnc_integer(Fraction("2.5"))
+    (2, 3, None)
+    """
+    if value.denominator == 1:
+        return value.numerator
+    d = value.numerator / value.denominator
+    n = math.floor(d)
+    if d - n > 0.9999:
+        return math.ceil(d)
+    return None if d - n > 0.0001 else n
+
+
+def lcnc_round(value: Fraction) -> int:
+    """LinuxCNC's ``round_to_int`` of a word's double: ``nearbyint``, to the nearest integer, halves to even
+    (``o.. repeat [2.6]`` runs 3 times, ``[2.5]`` twice).
+
+    >>> lcnc_round(Fraction("2.6")), lcnc_round(Fraction("2.5")), lcnc_round(Fraction("3.5"))
+    (3, 2, 4)
+    """
+    return value.numerator if value.denominator == 1 else round(value.numerator / value.denominator)
 
 
 def word_value(value: Value) -> Fraction:

@@ -680,7 +680,14 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
         for ln in paren_lines.tolist():
             if not bad[ln] and _MAGIC.search(data[starts[ln]:ends_[ln]].decode("latin-1")):
                 bad[ln] = True
+        # a comment inside a word (X1(c)0, X(c)1): removing it would join the word; LinuxCNC refuses the line
+        for m in _COMMENT_IN_WORD.finditer(data):
+            bad[line_of[m.start()]] = True
     return ~bad, starts, ends_, (c, cl_line)
+
+
+#: A comment after a letter or a number and before a number: inside a word (the full path refuses it, GC101).
+_COMMENT_IN_WORD = re.compile(rb"[0-9A-Za-z.][ \t]*(?:\([^()\n]*\)[ \t]*)+[0-9.+\-]")
 
 
 def _allowed_bytes(allowed: np.ndarray) -> bytes:

@@ -680,7 +680,7 @@ class _Path:
         self.pieces = ps
 
     # ------------------------------------------------------------------ the cycles
-    def g70(self, out: _Sink, x: float, z: float, d: float, e: float, passes: int) -> None:
+    def g70(self, out: _Sink, x: float, z: float, d: float, e: float, passes: float) -> None:
         self.pieces[0].start = C(z, x)
         if self.should_rotate():
             self.rotate()
@@ -688,8 +688,11 @@ class _Path:
         self.do_finish()
         self.monotonic()
         mapped = _Mapped(out, self.state)
-        for n in range(passes, 0, -1):
-            out.label = f"finishing pass {passes - n + 1}"
+        # interp_g7x.cc do_g70: ``for(int pass=p; pass>0; pass--)`` counts int(P) (toward zero) passes, each at
+        # ``(pass-1)*(d-e)/p+e`` with the double P: P2.6 makes 2 passes, the outer at (d - e) / 2.6 + e
+        count = int(passes)
+        for n in range(count, 0, -1):
+            out.label = f"finishing pass {count - n + 1}"
             distance = (n - 1) * (d - e) / passes + e
             q = self.copy()
             q.add_distance(distance)
@@ -827,8 +830,8 @@ def _cxx_min(a: float, b: float) -> float:
 # --------------------------------------------------------------------------- entry points
 
 
-def g70(pieces: list[Piece], start: complex, *, x: float, z: float, d: float, e: float, passes: int) -> list[Out]:
-    """LinuxCNC's G70: ``passes`` finishing passes at distances ``(n - 1) (d - e) / passes + e`` from the profile,
+def g70(pieces: list[Piece], start: complex, *, x: float, z: float, d: float, e: float, passes: float) -> list[Out]:
+    """LinuxCNC's G70: ``int(passes)`` finishing passes at distances ``(n - 1) (d - e) / passes + e`` from the profile,
     each from a rapid to its start.  ``start`` is where the tool stands (after the cycle's rapid to X Z)."""
     sink = _Sink(start)
     _run(lambda p: p.g70(sink, x, z, d, e, passes), pieces)

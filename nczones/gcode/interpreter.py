@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -47,7 +47,7 @@ from . import (  # defined in the package, which loads this module lazily
     DEFAULT_CHUNK_SIZE,
 )
 from .blocks import LANE_FULL, Block, Word
-from .expr import EvalError
+from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
 from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
 from .segments import dadd, make_segment, with_tool_deps
@@ -158,6 +158,9 @@ UNSUPPORTED_G = {
     1121: "polar coordinate interpolation (G112) is not modelled",
 }
 # Harmless codes: no effect on the path.
+#: Words LinuxCNC reads as integers within 0.0001 of one (``read_integer_value``: read_h, read_l, read_t).
+_INTEGER_LETTERS = ("H", "L", "T")
+
 _HARMLESS_M = {0, 1, 3, 4, 5, 7, 8, 9, 19, 48, 49, 50, 51, 52, 53, 60, 62, 63, 64, 65, 66, 67, 68,
                70, 71, 72}
 _M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8,
@@ -360,7 +363,7 @@ class Interpreter:
         self.tool_selected = 0
         self.tool_in_spindle = 0
         #: LinuxCNC's spindle state for the checks it makes: direction 1 (M3), -1 (M4), 0 (stopped), and the
-        #: S value; None where nczones does not follow it (after M72 restores a saved state).
+        #: S value; None where nczones does not follow it (M72 restores them as LinuxCNC does).
         self.spindle_dir: int | None = 0
         self.spindle_speed: Fraction | None = _ZERO
         self.tlo = _ZERO
@@ -840,6 +843,12 @@ class Interpreter:
                     # LinuxCNC's (abort, ...): the program stops with this text before the block runs
                     raise self.error("GC305", f"the program aborts here (LinuxCNC (ABORT, ...)): {msg[6:].strip()}")
         gcodes, mcodes, words, axis_words = self._split_words(block)
+        for letter in _INTEGER_LETTERS:
+            w = words.get(letter)
+            if w is not None and w.value.denominator != 1:
+                n = lcnc_integer(w.value)  # LinuxCNC read_integer_value: T[2.00001] is T2
+                if n is not None:
+                    words[letter] = replace(w, value=Fraction(n))
         polar = "@" in words or "^" in words
         if axis_words and not polar and len(gcodes) <= 1 and len(mcodes) <= 1 and not self.track \
                 and self.machine_at is None \
@@ -905,22 +914,10 @@ class Interpreter:
                 if k in (410, 420, 411, 421):
                     self.comp_on = True
         for k, w in mcodes:
-            if k == 73:
-                if self._scopes is None or len(self._scopes) <= 1:
-                    self.unknown("M73", "M73 outside an o-word subroutine (main program or M98 subprogram): "
-                                  "its restore on return is not modelled", w)
-            elif k not in _HARMLESS_M and k not in (2, 30, 6, 61, 98, 99):
+            if k not in _HARMLESS_M and k not in (2, 30, 6, 61, 73, 98, 99):
                 self.unknown(f"M{k}", f"M{k} is not a code nczones models (user M codes may run anything)", w)
             if k in (0, 1, 60) and len(self.stops) < 100:
                 self.stops.append((k, w.span.line if w.span is not None else 0))
-        if 70 in {k for k, _ in mcodes}:
-            self._saved_modal = self._modal_snapshot()
-        if 73 in {k for k, _ in mcodes} and self._scopes is not None and len(self._scopes) > 1:
-            # LinuxCNC M73: save like M70 in this call frame, restore automatically on its return/endsub
-            self._saved_modal = self._modal_snapshot()
-            scope = self._scopes[-1]
-            self.m73_saved = [e for e in self.m73_saved if e[1] is not scope]
-            self.m73_saved.append((len(self._scopes), scope, self._saved_modal))
         if self._comp is not None and self._comp.side is not None:
             self._comp.check_block(groups, mcodes, words, axis_words, self.motion)
         # ---- order of execution
@@ -963,6 +960,9 @@ class Interpreter:
                 raise self.error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
             self.tool_in_spindle = int(q.value)
             self._unloaded = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
+        if mgroups.get(10) is not None:
+            # LinuxCNC convert_m: M70-M73 after F, S, T and M6 of the block, before its G codes and motion
+            self._modal_context(mgroups[10][0], mgroups[10][1])
         # 10: dwell
         if g0 and g0[0] == 40:
             p = words.get("P")
@@ -1079,15 +1079,6 @@ class Interpreter:
                     pass
                 else:
                     self._motion_block(block, axis_words, words, g1, g53)
-        if 72 in mset:
-            if self._saved_modal is None:
-                raise self.error("GC204", "M72 restores a modal state, but no M70 saved one", mgroups[10][1])
-            self._restore_modal(self._saved_modal)
-        if 71 in mset:
-            self._saved_modal = None
-            if self.m73_saved and self._scopes is not None:
-                scope = self._scopes[-1]
-                self.m73_saved = [e for e in self.m73_saved if e[1] is not scope]
         if self.machine_at is not None and (6 in mset or 61 in mset):
             # after a tool change LinuxCNC re-reads where the machine is (read_inputs: refresh_actual_position),
             # e.g. the compensated point G40 left the tool at, or where G84 outside G17 left it
@@ -1314,12 +1305,62 @@ class Interpreter:
 
     # ------------------------------------------------------------------ pieces
     _noted_straight = False
-    _saved_modal: tuple | None = None
+    _contexts: list | None = None  # [scope, depth, snapshot | None, auto-restore] per call frame (M70-M73)
     cycle_il: Fraction | None = None
     _spline = None  # an unfinished G5.2/G6.2 curve (nczones.gcode.splines)
 
-    m73_saved: list = []  # (scope depth, scope object, snapshot) of M73s whose subroutine has not returned
+    m73_saved: list = []  # the contexts of M73s (auto-restore) whose call frame has not returned
     _scopes: list | None = None  # the language layer's local scopes (one per o-word call)
+
+    def _frame_alive(self, ctx: list) -> bool:
+        scopes = self._scopes
+        if ctx[0] is None or scopes is None:
+            return True
+        depth = ctx[1]
+        return len(scopes) >= depth and scopes[depth - 1] is ctx[0]
+
+    def _frame_context(self, create: bool) -> list | None:
+        """The M70-M73 context of the current call frame (LinuxCNC's ``sub_context[call_level]``, cleared when
+        a call enters it): a call frame is a local-scope object of the language layer (o-word and M98 calls);
+        the main program (or blocks without the language layer) is frame None."""
+        scopes = self._scopes
+        scope, depth = (scopes[-1], len(scopes)) if scopes is not None and len(scopes) > 1 else (None, 1)
+        ctxs = self._contexts
+        if ctxs is None:
+            ctxs = self._contexts = []
+        found = None
+        keep = []
+        for ctx in ctxs:
+            if ctx[0] is scope and ctx[1] == depth:
+                found = ctx
+            if ctx[3] or self._frame_alive(ctx):  # a returned frame's context is gone (auto ones: m73_returns)
+                keep.append(ctx)
+        ctxs[:] = keep
+        if found is None and create:
+            found = [scope, depth, None, False]
+            ctxs.append(found)
+        return found
+
+    def _modal_context(self, k: int, w: Word) -> None:
+        """M70 (save), M71 (invalidate), M72 (restore), M73 (save, restore when this call returns): LinuxCNC's
+        ``convert_m``, ``save_settings`` and ``restore_settings`` on the current call frame."""
+        if k in (70, 73):
+            ctx = self._frame_context(True)
+            assert ctx is not None
+            ctx[2] = self._modal_snapshot()
+            if k == 73 and ctx[0] is not None and not ctx[3]:
+                ctx[3] = True  # at the main level M73 only saves (LinuxCNC: nothing to return to)
+                self.m73_saved = [*self.m73_saved, ctx]
+        elif k == 71:
+            ctx = self._frame_context(False)
+            if ctx is not None:
+                ctx[2] = None  # LinuxCNC clears CONTEXT_VALID only: a later M70 re-arms an M73's restore
+        elif k == 72:
+            ctx = self._frame_context(False)
+            if ctx is None or ctx[2] is None:
+                raise self.error("GC204", "M72 restores the modal state M70 or M73 saved in this call frame, but none "
+                                 "is saved here (LinuxCNC: cannot restore context from invalid stack frame)", w)
+            self._restore_modal(ctx[2], w)
 
     def m73_returns(self) -> None:
         """Restore the state M73 saved in every subroutine that has returned since (innermost first).
@@ -1328,18 +1369,27 @@ class Interpreter:
         the language layer's scope stack; checked before every block and every
         state parameter read, so nothing observes the state in between.
         """
-        scopes = self._scopes
         while self.m73_saved:
-            assert scopes is not None  # M73 is taken only inside a call (with scopes)
-            depth, scope, snap = self.m73_saved[-1]
-            if len(scopes) >= depth and scopes[depth - 1] is scope:
+            ctx = self.m73_saved[-1]
+            if self._frame_alive(ctx):
                 break
-            self.m73_saved.pop()
-            self._restore_modal(snap)
+            self.m73_saved = self.m73_saved[:-1]
+            if self._contexts is not None and ctx in self._contexts:
+                self._contexts.remove(ctx)
+            if ctx[2] is not None:  # LinuxCNC leave_context: restores if the frame is still valid (no M71)
+                self._restore_modal(ctx[2], None)
 
     def _modal_snapshot(self) -> tuple:
+        """What LinuxCNC's save_settings keeps (``write_g_codes``, ``write_settings``) that nczones follows:
+        units, distance and arc-centre modes, plane, work offset, feed mode and F, retract mode, cutter
+        compensation, whether a tool length is applied (G43 when it is not zero, else G49), whether G92 is
+        applied (#5210), the lathe diameter mode and the spindle (direction and S)."""
         return (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
-                self.feed, self.retract_r)
+                self.feed, self.retract_r, self._comp_key(), self.tlo != 0, self.g92_applied,
+                bool(getattr(self, "diameter_mode", False)), self.spindle_dir, self.spindle_speed)
+
+    def _comp_key(self) -> tuple:
+        return (self.comp_on, None if self._comp is None else self._comp.side)
 
     def _set_units(self, inch: bool) -> None:
         """G20/G21 (and M72's restore): LinuxCNC's convert_length_units converts the positions and offsets it
@@ -1355,11 +1405,49 @@ class Interpreter:
             self._cycle_il_deps = {}
         self.inch = inch
 
-    def _restore_modal(self, snap: tuple) -> None:
-        self._set_units(snap[0])
-        (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
-         self.feed, self.retract_r) = snap
-        self.spindle_dir = self.spindle_speed = None  # M72 restores the spindle too: no longer followed
+    def _restore_modal(self, snap: tuple, w: Word | None) -> None:
+        """LinuxCNC's restore_settings: G20/G21 first if it differs, then one block of the codes of every group
+        that differs from the saved state (``gen_settings``), run in the order of execution: feed mode (G94
+        and G95 set the feed to 0), ``F%.1f`` of the saved feed if it differs (not in G93), the lathe diameter
+        mode, the plane, cutter compensation, ``G43`` (the tool in the spindle: the saved length is not kept,
+        only whether one was applied) or ``G49``, the work offset, the distance modes, the retract mode and
+        ``G92.3``/``G92.2``.  The motion mode is not restored."""
+        (inch, absolute, arc_absolute, plane, wcs, feed_mode, feed, retract_r, comp, tlo_on, g92_on,
+         diameter, spindle_dir, spindle_speed) = snap
+        old_feed, old_speed = self.feed, self.spindle_speed
+        if inch != self.inch:
+            self._set_units(inch)
+        if feed_mode != self.feed_mode:
+            self.feed_mode = feed_mode
+            if feed_mode in (94, 95):
+                self.feed = _ZERO
+        if feed != old_feed and feed_mode != 93:
+            # gen_settings writes " F%.1f": the double rounded to one decimal (an F below 0.05 restores F0)
+            self.feed = round(Fraction(float(feed)), 1)
+        # " S%.0f" if the speed differs; M3/M4/M5 (gen_m_codes) if the direction does; None: not followed
+        if spindle_speed is None or old_speed is None:
+            self.spindle_speed = None
+        elif spindle_speed != old_speed:
+            self.spindle_speed = Fraction(round(Fraction(float(spindle_speed))))
+        self.spindle_dir = spindle_dir
+        if hasattr(self, "diameter_mode"):
+            self.diameter_mode = diameter
+        self.plane = plane
+        if comp != self._comp_key():
+            self.unknown("M72", "restoring cutter compensation (M72, or the return of an M73 subroutine, with "
+                         "compensation switched since the save) is not modelled", w)
+        if tlo_on != (self.tlo != 0):
+            self._tool_length((430 if tlo_on else 490, w), {})  # type: ignore[arg-type]
+        self.wcs = wcs
+        self.absolute, self.arc_absolute, self.retract_r = absolute, arc_absolute, retract_r
+        if g92_on != self.g92_applied:
+            if g92_on:  # G92.3: the stored offsets
+                self.g92 = list(self.g92_params)
+                self.dep_g92 = [dict(d) for d in self.dep_g92_params]
+            else:  # G92.2
+                self.g92 = [_ZERO] * self.naxes
+                self.dep_g92 = [{} for _ in range(self.naxes)]
+            self.g92_applied = g92_on
         self.recompute_offsets()
 
     def _tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
@@ -1634,9 +1722,12 @@ class Interpreter:
         turns = 0
         pw = words.get("P")
         if pw is not None:
-            if pw.value.denominator != 1 or pw.value < 1:
+            # LinuxCNC check_other_codes: round_to_int(P) within 0.001 of P, at least 1
+            pd = pw.value.numerator / pw.value.denominator
+            pr = round(pd)
+            if abs(pr - pd) > 0.001 or pr < 1:
                 raise self.error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
-            turns = int(pw.value) - 1
+            turns = pr - 1
         self.note_assumed(("units", "distance", "offset", "plane"))
         end, deps = self.program_target(axis_words, False)
         rotated = self.prerotation_xy is not None
@@ -1741,10 +1832,19 @@ class Interpreter:
         if pw is None:
             raise self.error("GC208", f"G10 L{L} needs a P word", w)
         P = pw.value
+        # LinuxCNC check_g10: P rounded half away from zero (p_int) must be within 0.0002 below P + 0.0001, i.e.
+        # P is in [p_int - 0.5, p_int + 0.0001]: G10 L2 P1.6 passes the check
+        pd = P.numerator / P.denominator
+        p_int = int(pd + 0.5) if pd >= 0 else int(pd - 0.5)
+        if (pd + 0.0001) - p_int > 0.0002:
+            raise self.error("GC209", f"G10 L{L} {pw.text}: P must be an integer (LinuxCNC: P value not an integer "
+                              "with G10)", pw)
         if L in (2, 20):
-            if P.denominator != 1 or not 0 <= P <= 9:
+            if not 0 <= p_int <= 9:
                 raise self.error("GC209", f"G10 L{L} {pw.text}: P must be an integer 0 (active) to 9 (G59.3)", pw)
-            name = self.wcs if P == 0 else WORK_OFFSETS[int(P) - 1]
+            # convert_setup then truncates P + 0.0001: G10 L2 P1.6 and P1.5 write G54 (P1)
+            k = int(pd + 0.0001)
+            name = self.wcs if k == 0 else WORK_OFFSETS[k - 1]
             rw = words.get("R")
             reg = self.g5x[name]
             dreg = self.dep_g5x[name]
@@ -1782,7 +1882,10 @@ class Interpreter:
                         dreg[i] = d
             self.recompute_offsets()
         else:
-            self._g10_tool(int(L), P, pw, axis_words)
+            if p_int < 1:  # LinuxCNC check_g10: P >= 1 with L1, L10 and L11
+                raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a positive integer tool number", pw)
+            # convert_setup_tool: is_near_int, the tool number (int)(P + 0.5)
+            self._g10_tool(int(L), Fraction(int(pd + 0.5)), pw, axis_words)
 
     def _g10_l20_rotated(self, name: str, axis_words: list[tuple[int, Word]]) -> None:
         """G10 L20 on X/Y of a rotated system: the offset that makes the current position read the values.

@@ -80,6 +80,11 @@ class LatheInterpreter(Interpreter):
             if len(modes) > 1:
                 raise self.error("GC201", "G7 and G8 are in the same modal group; a block may contain only one of "
                                   "them", modes[1])
+            if any(w.letter == "M" and w.value in (70, 72, 73) for w in words):
+                # LinuxCNC saves/restores (convert_m) before it runs G7/G8 (convert_g), but reads the block's X
+                # with the mode from before: not followed
+                self.unknown("G7/G8", "G7 or G8 in a block with M70, M72 or M73 is not modelled; write them in "
+                             "separate blocks", modes[0])
             self.diameter_mode = gkey(modes[0].value) == 70
             words = tuple(w for w in words if w is not modes[0])
         if self.diameter_mode and any(w.letter == "X" for w in words):
@@ -157,14 +162,12 @@ class LatheInterpreter(Interpreter):
         if len(pieces) <= 1:
             return  # LinuxCNC: a profile of one piece or none does nothing more
         fl = {k: float(words[k].value) for k in "DEIRUW" if k in words}
-        p = int(words["P"].value) if "P" in words else 1
+        p = float(words["P"].value) if "P" in words else 1.0  # G70's P, a double (interp_g7x.cc)
         if fl.get("I", 1.0) <= 0:
             raise self.error("GC209", f"{name}: I must be greater than zero (LinuxCNC's error)", words["I"])
         start = complex(float(z0), float(x0))
         try:
-            if code == 70:
-                if p < 1:
-                    raise self.error("GC209", f"{name}: P (the number of passes) must be at least 1", words["P"])
+            if code == 70:  # (P below 1: no pass, as LinuxCNC 2.9's loop; no error)
                 moves = g7x.g70(pieces, start, x=float(x0), z=float(z0), d=fl.get("D", 0.0), e=fl.get("E", 0.0),
                                 passes=p)
             else:

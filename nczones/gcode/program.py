@@ -64,7 +64,7 @@ Errors and the unsupported mechanism
   syntax, ``GC3xx`` run-time language errors (undefined named parameter
   GC310, division by zero GC311, math domain GC312, unknown subroutine
   GC313, unmatched control flow GC314, return outside a subroutine GC315,
-  call depth GC316, M98 errors GC317).  A lexical or syntax error in an
+  call depth GC316, M98 errors GC317, assignment to a read-only parameter GC318).  A lexical or syntax error in an
   executed line is reported together with those of up to nine following
   lines.
 * Language that cannot be modelled raises :class:`UnsupportedGcode`
@@ -104,7 +104,9 @@ from .expr import (
     compile_expression,
     evaluate,
     format_parameter,
+    lcnc_integer,
     parameter_key,
+    read_only,
     word_value,
 )
 from .lexer import (
@@ -267,6 +269,9 @@ class _Frame:
     ifs: list = field(default_factory=list)
 
 
+#: LinuxCNC's call levels, the main program's included (``INTERP_SUB_ROUTINE_LEVELS``, interp_internal.hh).
+LINUXCNC_CALL_LEVELS = 10
+
 _OLINE = re.compile(r"/?(?:[nN][\d.]+)?[oO](<[^>]*>|\d+)([A-Za-z]*)")
 _FANUC_END = re.compile(r"[mM][ \t]*0*99(?![\d.])")
 _PROGRAM_END_HINT = re.compile(r"(?:^|[^a-zA-Z])[mM][ \t]*0*(?:2|30)(?![\d.])|^[ \t]*%")
@@ -345,7 +350,14 @@ class Runner:
         self.max_loops = max_loop_iterations
         self.max_depth = max_call_depth
         self.frames: list[_Frame] = [_Frame("main")]
-        self.subs: dict[object, tuple[int, int]] = {}  # label -> (pos, lineno) of the line after "sub"
+        #: label -> (pos, lineno) of the line after "sub": the subroutines defined so far, as LinuxCNC's offset
+        #: map holds them (a definition the flow executed, or found by a call searching forward)
+        self.subs: dict[object, tuple[int, int]] = {}
+        #: label -> every "o<label> sub" of the file, (pos, lineno) of the line after it (find_definitions)
+        self.all_subs: dict[object, list[tuple[int, int]]] = {}
+        #: (sub, label) -> (line, keyword) of the first if/while/repeat/do executed with that label in that sub
+        #: ("" the main program): LinuxCNC's offset map refuses a label reused on another line
+        self.control_lines: dict[tuple, tuple[int, str]] = {}
         self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
         self.scanned_all = False
         self.cache: dict[int, tuple] = {}  # offset -> (parsed line, line, next offset)
@@ -428,8 +440,6 @@ class Runner:
             if nested_sub_error and kw == "sub":
                 raise self.error("GC314", f"nested subroutine definition: {_show(lab)} sub inside "
                                  f"{_show(label)} sub", ln, line)
-            if kw == "sub" and lab not in self.subs:
-                self.subs[lab] = (nxt, ln + 1)
             if lab == label and kw in keywords:
                 return kw, p, ln, line, nxt
         raise self.error("GC314", f"{_show(label)} {what} has no matching "
@@ -449,7 +459,7 @@ class Runner:
             lab = _olabel(m)
             kw = m.group(2).lower()
             if kw == "sub":
-                self.subs.setdefault(lab, (nxt, ln + 1))
+                self.all_subs.setdefault(lab, []).append((nxt, ln + 1))
             elif kw == "" and isinstance(lab, int):
                 self.fanuc.setdefault(lab, (nxt, ln + 1))
 
@@ -736,6 +746,9 @@ class Runner:
             if key in (3000, 3006):
                 raise self.unsupported("GC301", f"#{key} (Fanuc alarm / message stop) is not supported",
                                        lineno, line, col, end)
+            if read_only(key):
+                raise self.error("GC318", f"#<{key}> is read-only: LinuxCNC refuses to assign it (only a "
+                                 "program's own parameters may be assigned)", lineno, line, col, end)
             guarded = params.guarded(key)
             if guarded is not None:
                 raise self.unsupported("GC305", guarded, lineno, line, col, end)
@@ -798,7 +811,7 @@ class Runner:
         body = self.subs.get(label)
         if body is None:
             self.find_definitions()
-            body = self.subs.get(label)
+            body = self.all_subs.get(label, [None])[0]
         if body is None:
             raise self.error("GC313", f"{qw[4]}: subroutine o{label} (the cycle's profile) is not defined in this "
                              "file", lineno, line, qw[2], qw[3])
@@ -843,17 +856,18 @@ class Runner:
                  nxt: int) -> tuple[int, int]:
         if pword is None:
             raise self.error("GC317", "M98 needs a P word naming the subprogram (M98 P1000)", lineno, line, *loc)
-        p = pword.value
-        if p.denominator != 1 or p < 0:
+        # P and L are read as LinuxCNC reads integers: within 0.0001 of one (read_integer_value)
+        p = lcnc_integer(pword.value)
+        if p is None or p < 0:
             raise self.error("GC317", f"M98 P{pword.text[1:]}: the program number must be a non-negative integer",
                              lineno, line, pword.span.column, pword.span.end_column)
         count = 1
         if lword is not None:
-            lv = lword.value
-            if lv.denominator != 1 or lv < 0:
+            lv = lcnc_integer(lword.value)
+            if lv is None or lv < 0:
                 raise self.error("GC317", f"M98 L{lword.text[1:]}: the repeat count must be a non-negative integer",
                                  lineno, line, lword.span.column, lword.span.end_column)
-            count = int(lv)
+            count = lv
         if count == 0:
             return nxt, lineno + 1
         if count > self.max_loops:
@@ -865,12 +879,33 @@ class Runner:
         self.find_definitions()
         body = self.fanuc.get(label)
         if body is None:
-            if label in self.subs:
+            if label in self.all_subs:
                 raise self.error("GC317", f"M98 P{label}: o{label} is an 'o{label} sub' subroutine; call it "
                                  f"with 'o{label} call'", lineno, line, *loc)
             raise self.error("GC317", f"M98 P{label}: no subprogram O{label} in this file", lineno, line, *loc)
         self.push(_Frame("m98", label, (nxt, lineno + 1), None, body, count), lineno, line)
+        self.params.push_locals()  # LinuxCNC: every M98 call (each L repeat too) has its own named locals
         return body
+
+    def value_unknown(self, why: str) -> None:
+        """``#<_value>`` and ``#<_value_returned>`` read as unknown (GC305) until the next endsub, return or M99."""
+        def unknown() -> object:
+            raise EvalError("GC305", why)
+
+        for key in ("_value", "_value_returned"):
+            self.params.provide(key, unknown)
+
+    def set_value(self, value: Any) -> None:
+        """``#<_value>`` and ``#<_value_returned>`` as LinuxCNC's read_o leaves them at an endsub, return or
+        M99: the value returned, else 0 and 0 (a subroutine that returns nothing resets them)."""
+        self.params.unprovide("_value")
+        self.params.unprovide("_value_returned")
+        if value is None:
+            self.params.write("_value", (0.0, Fraction(0)))
+            self.params.write("_value_returned", (0.0, Fraction(0)))
+        else:
+            self.params.write("_value", value)
+            self.params.write("_value_returned", (1.0, Fraction(1)))
 
     def return_m99(self, loc: tuple[int, int], line: str, lineno: int) -> tuple[int, int]:
         frame = self.frames[-1]
@@ -880,12 +915,15 @@ class Runner:
         if frame.kind != "m98":
             raise self.error("GC315", f"M99 inside {_show(frame.label)} sub; an 'o.. sub' subroutine ends with "
                              f"{_show(frame.label)} endsub", lineno, line, *loc)
+        self.set_value(None)  # LinuxCNC read_o: M99 returns no value
+        self.params.pop_locals()
         frame.repeats -= 1
         if frame.repeats > 0:
             self.budget_left(f"O{frame.label} (called at line {frame.ret[1] - 1}) had {frame.repeats} repeats left",
                              lineno, line)
             frame.loops.clear()
             frame.ifs.clear()
+            self.params.push_locals()  # the next repeat is a new call (a new frame)
             return frame.body
         self.frames.pop()
         return frame.ret
@@ -893,6 +931,10 @@ class Runner:
     def push(self, frame: _Frame, lineno: int, line: str) -> None:
         if len(self.frames) > self.max_depth:
             raise self.error("GC316", f"subroutine calls nested deeper than {self.max_depth} levels", lineno, line)
+        if len(self.frames) >= LINUXCNC_CALL_LEVELS:
+            raise self.error("GC316", f"subroutine calls nested deeper than {LINUXCNC_CALL_LEVELS - 1} levels: "
+                             f"LinuxCNC has {LINUXCNC_CALL_LEVELS} call levels with the main program "
+                             "(INTERP_SUB_ROUTINE_LEVELS; 'Too many subroutine levels')", lineno, line)
         self.frames.append(frame)
 
     # -- O-words ----------------------------------------------------------------
@@ -913,10 +955,11 @@ class Runner:
         label = ow.label
         if isinstance(label, tuple):  # o[expr]
             d, _q = self.evaluate(label, lineno, line, ow.column, ow.end_column)
-            if d != int(d) or d < 0:
+            n = lcnc_integer(Fraction(d))  # LinuxCNC read_integer_value: within 0.0001 of an integer
+            if n is None or n < 0:
                 raise self.error("GC202", f"O-word number {d!r} is not a non-negative integer", lineno, line,
                                  ow.column, ow.end_column)
-            label = int(d)
+            label = n
         return label
 
     def oword(self, ow: OWord, label: object, line: str, lineno: int, pos: int, nxt: int) -> tuple[int, int] | None:
@@ -936,17 +979,50 @@ class Runner:
             return bool(self.evaluate(ow.args[0], lineno, line, col, end, again)[0] != 0.0)
 
         if kw == "sub":
-            self.subs.setdefault(label, here)
-            _k, _p, ln, _l, after = self.skip_to(label, ("endsub",), nxt, lineno + 1, "sub", line, lineno,
-                                                 nested_sub_error=True)
+            known = self.subs.get(label)
+            if known is not None:
+                # LinuxCNC control_save_offset: a sub is defined once; reached again (in a loop, or after a call
+                # found it searching forward) it is "found in illegal location", elsewhere "redefining sub"
+                raise self.error("GC314", f"{_show(label)} sub " + (
+                    "reached again: a subroutine defined (or called) before may not be defined here (LinuxCNC: "
+                    "found in illegal location)" if known == here else
+                    f"redefines {_show(label)} (defined at line {known[1] - 1}); a subroutine is defined once"),
+                    lineno, line, col, end)
+            self.subs[label] = here
+            _k, _p, ln, eline, after = self.skip_to(label, ("endsub",), nxt, lineno + 1, "sub", line, lineno,
+                                                    nested_sub_error=True)
+            # LinuxCNC's read_o sets #<_value> when it reads an endsub, also the one that ends a definition it
+            # skips: to the endsub's value, else 0 (with #<_value_returned>)
+            end_ow = parse_line(eline, ln, self.file).oword
+            if end_ow is not None and end_ow.args:
+                try:
+                    value = evaluate(end_ow.args[0], self.params)
+                except EvalError:
+                    # LinuxCNC reads a name not defined there as nothing while it defines a sub (read_named_
+                    # parameter, defining_sub): #<_value> is then what its reader's variable held
+                    self.value_unknown(f"#<_value> after the definition of {_show(label)} (line {lineno}): its "
+                                       f"endsub value at line {ln} reads a parameter not defined outside a call, "
+                                       "which LinuxCNC reads as an undefined value")
+                else:
+                    self.set_value(value)
+            else:
+                self.set_value(None)
             return after, ln + 1
         if kw == "call":
             args = tuple(self.evaluate(a, lineno, line, col, end) for a in ow.args)
             body = self.subs.get(label)
             if body is None:
+                # LinuxCNC control_back_to: a sub not defined yet is searched forward from the call (a definition
+                # above, inside a skipped if or loop, is not found); found, it is defined there
                 self.find_definitions()
-                body = self.subs.get(label)
+                body = next((b for b in self.all_subs.get(label, ()) if b[1] > lineno), None)
+                if body is not None:
+                    self.subs[label] = body
             if body is None:
+                if label in self.all_subs:
+                    raise self.error("GC313", f"subroutine {_show(label)} is not defined here: its definition was not "
+                                     "executed (it is in a skipped branch or loop) and there is none after the call",
+                                     lineno, line, col, end)
                 if isinstance(label, str):
                     raise self.unsupported("GC303", f"subroutine o<{label}> is not defined in this file "
                                            "(external subroutine files are not supported)", lineno, line, col, end)
@@ -968,13 +1044,11 @@ class Runner:
                 value = self.evaluate(ow.args[0], lineno, line, col, end)
             assert frame.saved is not None  # an "o" frame saved the caller's scope when it was pushed
             self.params.pop_scope(frame.saved)
-            if ow.args:
-                self.params.write("_value", value)
-                self.params.write("_value_returned", (1.0, Fraction(1)))
-            else:
-                self.params.write("_value_returned", (0.0, Fraction(0)))
+            self.set_value(value if ow.args else None)
             self.frames.pop()
             return frame.ret
+        if kw in ("if", "while", "repeat", "do"):
+            self.control_label(frame, label, kw, lineno, line, col, end)
         if kw == "if":
             return self.branch(label, cond(), frame, nxt, lineno, line, open_if=True)
         if kw == "elseif":
@@ -1023,7 +1097,7 @@ class Runner:
             return loop.head
         if kw == "repeat":
             d = self.evaluate(ow.args[0], lineno, line, col, end)[0]
-            n = int(d)
+            n = round(d)  # LinuxCNC round_to_int (nearbyint): [2.6] repeats 3 times, [2.5] twice
             if n <= 0:
                 _k, _p, ln, _l, after = self.skip_to(label, ("endrepeat",), nxt, lineno + 1, "repeat", line, lineno)
                 return after, ln + 1
@@ -1060,6 +1134,19 @@ class Runner:
             _k, _p, ln, _l, after = self.skip_to(label, (end_kw,), nxt, lineno + 1, kw, line, lineno)
             return after, ln + 1
         raise AssertionError(kw)  # pragma: no cover
+
+    def control_label(self, frame: _Frame, label: object, kw: str, lineno: int, line: str, col: int,
+                      end: int) -> None:
+        """LinuxCNC's offset map: an if/while/repeat label (named per subroutine) belongs to one line; the same
+        label on another line is "duplicate O-word label" (a ``while`` may close a ``do`` of its label)."""
+        key = ("" if frame.kind == "main" else frame.label, label)
+        seen = self.control_lines.get(key)
+        if seen is None:
+            self.control_lines[key] = (lineno, kw)
+        elif seen[0] != lineno and kw != "do" and not (kw == "while" and seen[1] == "do"):
+            raise self.error("GC314", f"{_show(label)} {kw}: the label {_show(label)} is already used by the "
+                             f"{seen[1]} at line {seen[0]}; LinuxCNC refuses a duplicate O-word label (use another "
+                             "number)", lineno, line, col, end)
 
     def branch(self, label: object, taken: bool, frame: _Frame, nxt: int, lineno: int, line: str,
                open_if: bool) -> tuple[int, int]:

@@ -44,6 +44,7 @@ from .expr import (
     q_div,
     q_mul,
     q_sub,
+    read_only,
     unary_op,
 )
 from .lexer import G_MACRO_CALLS, M_CONTROL, plain_decimal_value, to_double
@@ -392,6 +393,8 @@ def _executor(spans: list[tuple[int, int]], pl: ParsedLine, leaf_of: dict[int, s
     for k, (target, tree, _c, _e) in enumerate(pl.assigns):
         if target[0] == NPAR:
             key = repr(target[1])
+            if read_only(target[1]):
+                body.append("return None")  # the general path refuses it (GC318)
             body.append(f"if {key} in params._guarded: return None")
         elif target[0] == PAR and target[1][0] == NUM and id(target[1]) in leaf_of:
             key = f"k{k}"

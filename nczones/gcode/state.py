@@ -283,8 +283,9 @@ def linuxcnc_state_parameters() -> StateTable:
     add("_retract_r_plane", "G99 active (retract to R)", lambda it: 1 if it.retract_r else 0)
     add("_retract_old_z", "G98 active (retract to the initial level)", lambda it: 0 if it.retract_r else 1)
     add("_feed", "programmed feed rate (program units)", lambda it: it.feed)
-    add("_lathe_diameter_mode", "G7 active (G7 itself is unknown: 0)", _constant(0))
-    add("_lathe_radius_mode", "G8 active", _constant(1))
+    # G7/G8 live in the lathe interpreter (nczones.gcode.lathe); the others have no diameter mode (G8)
+    add("_lathe_diameter_mode", "G7 active", lambda it: 1 if getattr(it, "diameter_mode", False) else 0)
+    add("_lathe_radius_mode", "G8 active", lambda it: 0 if getattr(it, "diameter_mode", False) else 1)
     for name, what in (("_line", "current sequence number"), ("_vmajor", "LinuxCNC version"),
                        ("_vminor", "LinuxCNC version"), ("_spindle_on", "spindle state"),
                        ("_spindle_cw", "spindle direction"), ("_mist", "mist coolant"), ("_flood", "flood coolant"),

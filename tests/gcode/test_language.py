@@ -141,9 +141,9 @@ def test_while_do_repeat_break_continue():
 #1 = 0
 o1 while [#1 LT 5]
   #1 = [#1 + 1]
-  o1 if [#1 EQ 2]
+  o6 if [#1 EQ 2]
     o1 continue
-  o1 endif
+  o6 endif
   o2 if [#1 EQ 4]
     o1 break
   o2 endif
@@ -161,7 +161,7 @@ o5 repeat [0]
 o5 endrepeat
 M2
 """
-    assert values(prog) == [1, 3]
+    assert values(prog) == [1, 3]  # (an "o1 if" inside "o1 while" is LinuxCNC's duplicate O-word label)
     assert values(prog, "Y") == [4, 3]
     assert values(prog, "Z") == [1, 1, 1]
 

@@ -119,9 +119,8 @@ def test_m71_cancels_the_m73_restore_of_its_frame():
     assert xs == [F(0), F(1), F(101)]  # restored to G91 after the first call, still G90 after the second
 
 
-def test_m73_in_the_main_program_is_unknown():
-    from nczones.gcode import interpret_text
-
-    run = interpret_text("M73\nG0 X1\n", MILL)
-    list(run.segments())
-    assert run.status == "unknown" and run.unsupported[0].code == "M73"
+def test_m73_in_the_main_program_saves_like_m70():
+    """LinuxCNC at call level 0: "M73 at top level: nothing to return to; storing context anyway" (convert_m);
+    rs274 then restores it at M72: G0 X5, G91 X1 (6), M72 (G90), X1 (1)."""
+    xs = [s.end[0] for s in segments_text("G53 G0 X0 Y0 Z0\nG0 X5\nM73\nG91\nG0 X1\nM72\nG0 X1\nM2\n", MILL)]
+    assert [x - 100 for x in xs[1:]] == [F(5), F(6), F(1)]  # G54 X is 100
