@@ -205,10 +205,13 @@ def verify(
     nczones.errors.GcodeError: specs/examples/programs/O1000: error[GC100]: cannot read the program: No such file or directory
     """
     source = as_source(program, file=file, text_function="verify_text").require_code()
-    return _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
-                   arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
-                   max_iterations=max_iterations, dialect=dialect, library=library, block_delete=block_delete,
-                   budget_s=budget_s, limits=limits)
+    result = _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
+                     arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
+                     max_iterations=max_iterations, dialect=dialect, library=library, block_delete=block_delete,
+                     budget_s=budget_s, limits=limits)
+    if source.notes:  # what reading the bytes assumed (a byte order mark, comment bytes read as CP1252)
+        result = replace(result, notes=source.notes + tuple(result.notes))
+    return result
 
 
 #: :func:`verify` under the name that says what it takes.
