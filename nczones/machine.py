@@ -20,6 +20,7 @@ import hashlib
 import json
 import os
 import re
+import shlex
 import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
@@ -644,6 +645,25 @@ _ZONE_KEYS = {
 SECTION_PARSERS: dict[str, Callable[[Any, Any, tuple[str, ...]], Any]] = {}
 
 
+#: What a controller configuration looks like when it is given where a machine file belongs.  The same
+#: signs ``nczones.imports.detect_kind`` reads (that layer sits above this one, so they are repeated here).
+_FOREIGN = (
+    (re.compile(r"^\s*\[(?:EMC|EMCMOT|EMCIO|TRAJ|KINS|RS274NGC|TASK|HAL|DISPLAY|FILTER|AXIS_[A-Z]|JOINT_\d+)\]\s*$",
+                re.M), "a LinuxCNC INI file"),
+    (re.compile(r"^\s*\$\d+\s*=", re.M), "a Grbl $$ settings dump"),
+    (re.compile(r"^\s*N\s*\d{1,5}\s*(?:Q\s*1\s*)?(?:[AS]\s*\d+\s*)?[PMI]\s*[-+.\d]", re.M | re.I),
+     "a Fanuc parameter listing"),
+)
+
+
+def _controller_configuration(text: str) -> str | None:
+    """What controller configuration ``text`` (not valid TOML) looks like, or None."""
+    for pattern, label in _FOREIGN:
+        if pattern.search(text):
+            return label
+    return None
+
+
 def parse_machine(text: str, path: str = "<machine>") -> Machine:
     """Read a machine from TOML text; see :func:`load_machine`.
 
@@ -674,6 +694,15 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
             lines = text.splitlines()
             span = SourceSpan(path, line, col, col + 1, lines[line - 1] if line <= len(lines) else "")
         reason = re.sub(r"\s*\(at (?:line \d+, column \d+|end of document)\)", "", str(exc))
+        foreign = _controller_configuration(text)
+        if foreign is not None:  # issue 38: an INI, a $$ dump or a parameter listing given as --machine
+            shown = path if not path.startswith("<") else "CONFIG"
+            target = (os.path.splitext(os.path.basename(shown))[0] or "machine") + ".toml"
+            quoted = shlex.quote(shown)
+            span = None  # the TOML parser's complaint is beside the point
+            reason = (f"this looks like {foreign}, not a machine file: convert it once with "
+                       f"`nczones import-machine {quoted} -o {shlex.quote(target)}` and pass "
+                       f"{shlex.quote(target)} to --machine")
         rd.report("ZN100", f"not valid TOML: {reason}", span)
         raise MachineFileError(rd.diagnostics) from None
     machine = _build(rd, data)

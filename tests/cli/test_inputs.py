@@ -362,3 +362,21 @@ def test_the_python_api_reads_a_str_as_a_path_never_as_text(tmp_path, monkeypatc
     assert verify("O1001", machine).verdict.value == verify(tmp_path / "O1001", machine).verdict.value
     assert verify_text("G0 X10 Y300\n", machine).verdict.value == verify("O1001", machine).verdict.value
     assert [s.end for s in segments_text("G0 X10 Y300\n", machine)] == [s.end for s in segments("O1001", machine)]
+
+
+@pytest.mark.parametrize("name, text, label", [
+    ("lathe.ini", "[EMC]\nMACHINE = LinuxCNC-HAL-SIM-LATHE\n[TRAJ]\nCOORDINATES = X Z\n", "a LinuxCNC INI file"),
+    ("grbl $$.txt", "$0=10\n$1=25\n$130=200.000\n", "a Grbl $$ settings dump"),
+    ("params.txt", "%\nN01320A1P500000A2P400000\n%\n", "a Fanuc parameter listing"),
+])
+def test_a_controller_configuration_given_as_machine_names_the_import_command(tmp_path, name, text, label):
+    # issue 38: an INI passed as --machine gave "ZN100 not valid TOML" with no hint; the decision (specs/machine-file.md):
+    # an error naming the exact import-machine command, never an import on the fly that the gate would not show
+    (tmp_path / "p.nc").write_text("G0 X1\n")
+    (tmp_path / name).write_text(text)
+    r = nczones("verify", "p.nc", "--machine", name, cwd=tmp_path)
+    assert (r.returncode, r.stdout) == (2, "")
+    stem = name.rsplit(".", 1)[0]
+    src, out = (f"'{name}'", f"'{stem}.toml'") if " " in name else (name, f"{stem}.toml")
+    assert r.stderr == (f"{name}: error[ZN100]: not valid TOML: this looks like {label}, not a machine file: convert "
+                        f"it once with `nczones import-machine {src} -o {out}` and pass {out} to --machine\n")
