@@ -233,3 +233,17 @@ def test_kind_given_wrong_is_a_clear_error(tmp_path, capsys):
     assert main(["import-machine", str(p), "--kind", "linuxcnc"]) == 2
     err = capsys.readouterr().err
     assert "error[IM1" in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("name", ["Mill\x7f", "Mill\x01\x1f X", 'Shop "A" \\ back\tslash', "Fräse Ø"])
+def test_machine_names_with_control_characters_round_trip(tmp_path, name):
+    # issue 38: the writer quoted with json.dumps, which leaves DEL (0x7f) raw; TOML forbids it in a string and in a
+    # comment, so the import failed with IM110 blamed on the configuration. The name read back must be the
+    # name written in [EMC] MACHINE (LinuxCNC's INI reader keeps the value after "= " as it is, trailing blanks cut).
+    p = tmp_path / "m.ini"
+    p.write_bytes(("[EMC]\nMACHINE = " + name + "\n" + BASE).encode("utf-8"))
+    r = import_machine(p)
+    assert r.machine.name == name
+    from nczones.machine import parse_machine
+
+    assert parse_machine(r.text).name == name
