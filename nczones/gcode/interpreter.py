@@ -51,7 +51,14 @@ from .expr import EvalError
 from .lexer import PlainBlock, fraction_raw, to_fraction
 from .segments import dadd, make_segment, with_tool_deps
 from .splines import SPLINE_CODES, spline_block, spline_pending
-from .state import StateParameter, StateTable, StateValue, linuxcnc_state_parameters
+from .state import (
+    DEBUG_FLAG,
+    DEBUG_FLAG_DEFAULT,
+    StateParameter,
+    StateTable,
+    StateValue,
+    linuxcnc_state_parameters,
+)
 
 if TYPE_CHECKING:
     from .cutter_comp import CutterComp
@@ -641,6 +648,7 @@ class Interpreter:
         (GC305) at that word; an assignment to an entry is unknown too.
         """
         self._scopes = getattr(params, "scopes", None)
+        params.set(DEBUG_FLAG, DEBUG_FLAG_DEFAULT)  # #5599, an ordinary parameter that starts at 1
         for key, entry in self.state_parameters().items():
             params.provide(key, self._state_reader(entry))
             params.guard(key, f"{_show_key(key)} ({entry.meaning}) is controller state; a program that assigns "
