@@ -236,6 +236,9 @@ class Machine:
     fanuc: FanucSettings = field(default_factory=FanucSettings)
     #: Block-delete switch positions a proof covers: "both" (default), "off" (``/`` lines run), "on" (skipped).
     block_delete: str = "both"
+    #: How far an arc's end may be off its circle (``[machine] arc_tolerance``): mm, ``"linuxcnc"`` or ``"grbl"``
+    #: (the control's own rule); None: ``--arc-tolerance`` or its default.
+    arc_tolerance: Fraction | str | None = None
     #: ``"mill"`` or ``"lathe"`` (``[machine] type``): a lathe reads its dialect's lathe G codes.
     machine_type: str = "mill"
     #: Axes whose program words are diameters (``[machine] diameter_axes``); machine coordinates, zones and
@@ -617,7 +620,7 @@ _TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones", "f
              "tool_offsets")
 _MACHINE_KEYS = (
     "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
-    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect", "block_delete",
+    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect", "block_delete", "arc_tolerance",
     "reference_2", "reference_3", "reference_4",
     "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
     "reference_2", "reference_3", "reference_4", "type", "diameter_axes",
@@ -631,6 +634,9 @@ _FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_cl
                "harmless_m", "path") + _FANUC_LATHE_KEYS
 #: Values of ``[machine] cutter_compensation``.
 CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
+#: The named values of ``[machine] arc_tolerance`` (a control's own rule; otherwise a length in mm).
+ARC_TOLERANCE_RULES = ("linuxcnc", "grbl")
+
 #: Values of ``[machine] block_delete``: which positions of the block-delete switch a proof covers.
 BLOCK_DELETE_MODES = ("both", "off", "on")
 _ZONE_COMMON = ("name", "kind", "forbid", "point")
@@ -875,6 +881,19 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                   "executed) or \"on\" (they are skipped)", rd.loc.key("block_delete", mline))
         block_delete = "both"
 
+    arc_tol: Fraction | str | None = None
+    if "arc_tolerance" in mt:
+        raw = mt["arc_tolerance"]
+        if raw in ARC_TOLERANCE_RULES:
+            arc_tol = raw
+        elif type(raw) is str and not _PLAIN_DECIMAL.match(raw):
+            rd.report("ZN114", f"[machine] arc_tolerance: {as_written(raw)} is not allowed; use a length in mm "
+                      "(such as \"0.002\"), \"linuxcnc\" or \"grbl\" (the control's own rule)",
+                      rd.loc.key("arc_tolerance", mline))
+        else:
+            arc_tol = read_number(rd, raw, "[machine] arc_tolerance", rd.loc.key("arc_tolerance", mline),
+                                  nonnegative=True, limit=Fraction(10))
+
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
     tool_offsets = _tool_offsets(rd, data.get("tool_offsets", {}), axes)
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
@@ -900,7 +919,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         allowed=allowed, modal=modal, tool_axis=tool_axis, source=rd.path,
         sections=MappingProxyType(sections), cutter_compensation=comp,
         tool_diameters=MappingProxyType(tool_diameters), dialect=dialect or "linuxcnc", fanuc=fanuc,
-        block_delete=block_delete,
+        block_delete=block_delete, arc_tolerance=arc_tol,
         machine_type=machine_type or "mill", diameter_axes=diameter_axes, tool_offsets=MappingProxyType(tool_offsets),
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.

@@ -252,9 +252,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--engine", choices=("auto", "z3"), default="auto",
                    help="auto: exact vectorized decisions where they are exact, Z3 for the rest (default); "
                         "z3: every segment through Z3 (the reference path)")
-    p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc",
-                   help="largest mismatch (mm) of an arc end point with its circle (default 0.002), or "
-                        "\"linuxcnc\" for LinuxCNC's own acceptance rule")
+    p.add_argument("--arc-tolerance", default=None, metavar="MM|linuxcnc|grbl",
+                   help="largest mismatch (mm) of an arc end point with its circle (default: the machine file's "
+                        "arc_tolerance, else 0.002), or \"linuxcnc\"/\"grbl\" for that control's own acceptance rule")
     p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
                    help="iterations a loop (while, do, repeat) may run per entry before the verdict becomes "
                         f"unknown (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")

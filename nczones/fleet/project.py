@@ -117,8 +117,8 @@ def _params(value: Any) -> list[str]:
 
 
 def _arc_tolerance(value: Any) -> str:
-    if value == "linuxcnc":
-        return "linuxcnc"
+    if value in ("linuxcnc", "grbl"):
+        return value
     return _decimal_text(value)
 
 

@@ -274,6 +274,9 @@ def _verify(
     mode = block_delete if block_delete is not None else getattr(machine, "block_delete", "both")
     if mode not in ("both", "off", "on"):
         raise InvalidArgument(f"block_delete must be 'both', 'off' or 'on', not {mode!r}")
+    if arc_tolerance is None and machine.arc_tolerance is not None:  # the machine file's [machine] arc_tolerance
+        arc_tolerance = machine.arc_tolerance
+        extra["arc_tolerance"] = arc_tolerance
     tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
     # Every option that can change the verdict, as JSON values: reports carry them and
     # `nczones replay` re-runs with them.  A new option of verify() belongs here too.
