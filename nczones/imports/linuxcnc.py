@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
 
-from ..errors import SourceSpan
+from ..errors import Diagnostic, InvalidArgument, SourceSpan
 from ..exact import MAX_ABS_LENGTH, format_decimal
 from ..machine import DEFAULT_MODAL, DEFAULT_RETRACT, MODAL_CHOICES, ROTARY_AXES, WORK_OFFSETS
 from .ini import IniEntry, IniFile, parse_ini
@@ -609,6 +609,31 @@ def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ..
         if not target.exists():
             c.note("IM203", f"{e.describe()}: {target} does not exist; no tool lengths or diameters taken", e.span)
             return lengths, diameters
+    return _read_tool_table(target, c, axes, lin)
+
+
+def read_tool_table(path: str | Path, units: str, axes: tuple[str, ...] = ("X", "Y", "Z")
+                    ) -> tuple[dict[int, Fraction], dict[int, Fraction], tuple[Diagnostic, ...]]:
+    """A LinuxCNC tool table (``.tbl``) on its own: tool lengths (Z) and diameters in mm, and the notes.
+
+    ``units`` is the table's length unit, LinuxCNC's ``[TRAJ] LINEAR_UNITS`` (``"mm"`` or ``"inch"``):
+    a table does not say it.  Raises :class:`~nczones.errors.MachineImportError` (``IM1xx``) on a bad
+    table, as ``import-machine`` would.  ``nczones verify --tool-table`` reads tools with it.
+    """
+    lin = _LINEAR_UNITS.get(units.strip().lower())
+    if lin is None:
+        raise InvalidArgument(f"tool table units {units!r}: use mm or inch")
+    c = Collector()
+    lengths, diameters = _read_tool_table(Path(path), c, axes, lin)
+    c.raise_if_failed()
+    return ({k: v.value for k, v in lengths.items()}, {k: v.value for k, v in diameters.items()},
+            tuple(c.notes))
+
+
+def _read_tool_table(target: Path, c: Collector, axes: tuple[str, ...], lin: tuple[Fraction, str]
+                     ) -> tuple[dict[int, Sourced], dict[int, Sourced]]:
+    lengths: dict[int, Sourced] = {}
+    diameters: dict[int, Sourced] = {}
     text = read_source(target, "tool table", "IM109")
     tpath = str(target)
     factor, unit = lin
