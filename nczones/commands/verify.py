@@ -198,9 +198,9 @@ def with_tool_table(machine: Machine, path: str, units: str | None) -> tuple[Mac
     if machine.dialect != "linuxcnc":
         raise _command_line_error("VF110", f"--tool-table {path}: reads a LinuxCNC tool table (.tbl); this "
                                            f"machine's dialect is {machine.dialect}")
-    lengths, diameters, notes = read_tool_table(path, units, machine.axis_names)
-    for note in notes:
-        print(note.render(), file=sys.stderr)
+    lengths, diameters, table_notes = read_tool_table(path, units, machine.axis_names)
+    for skipped in table_notes:
+        print(skipped.render(), file=sys.stderr)
     try:
         with open(path, "rb") as fh:
             digest = hashlib.sha256(fh.read()).hexdigest()

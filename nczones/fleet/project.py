@@ -118,7 +118,7 @@ def _params(value: Any) -> list[str]:
 
 def _arc_tolerance(value: Any) -> str:
     if value in ("linuxcnc", "grbl"):
-        return value
+        return str(value)
     return _decimal_text(value)
 
 
