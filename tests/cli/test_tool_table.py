@@ -25,27 +25,45 @@ def nczones(*args: str, cwd: Path) -> subprocess.CompletedProcess:
     return r
 
 
-@pytest.mark.parametrize("table, units, code", [
-    ("T1 P1 Z50 D6\n", "mm", 0),        # 200 + 100 + 50 = 350 <= 400: safe
-    ("T1 P1 Z4 D0.25\n", "mm", 0),      # 304: safe
-    ("T1 P1 Z4 D0.25\n", "inch", 1),    # 4 in = 101.6 mm: 401.6 > 400: unsafe
-    ("T2 P1 Z1\n", "mm", 2),            # no T1 in the table: H1 has no length; GC310, never a guess
+@pytest.mark.parametrize("table, units, verdict", [
+    ("T1 P1 Z50 D6\n", "mm", "safe"),        # 200 + 100 + 50 = 350 <= 400
+    ("T1 P1 Z4 D0.25\n", "mm", "safe"),      # 304
+    ("T1 P1 Z4 D0.25\n", "inch", "unsafe"),  # 4 in = 101.6 mm: 401.6 > 400
 ])
-def test_the_table_replaces_the_machine_files_tools(tmp_path, table, units, code):
-    (tmp_path / "p.ngc").write_text(PROGRAM)
+def test_the_table_replaces_the_machine_files_tools(tmp_path, table, units, verdict):
+    from nczones.commands.verify import with_tool_table
+    from nczones.machine import load_machine
+    from nczones.prover import verify_text
+
+    machine = load_machine(MILL)
+    assert verify_text(PROGRAM, machine).verdict.label == "unsafe"  # the machine file's H1 = 120: Z420
     (tmp_path / "shop.tbl").write_text(table)
-    assert nczones("verify", "p.ngc", "--machine", MILL, cwd=tmp_path).returncode == 1  # H1 = 120: Z420
-    r = nczones("verify", "p.ngc", "--machine", MILL, "--tool-table", "shop.tbl", "--tool-table-units", units,
-                cwd=tmp_path)
-    assert r.returncode == code, r.stdout + r.stderr
-    if code == 2:
-        assert "error[GC310]: tool length register H1 is not in" in r.stderr
-    else:
-        assert "note: tool lengths and diameters from the tool table shop.tbl" in r.stdout
+    with_table, note = with_tool_table(machine, str(tmp_path / "shop.tbl"), units)
+    assert verify_text(PROGRAM, with_table).verdict.label == verdict
+    assert note.startswith(f"tool lengths and diameters from the tool table {tmp_path / 'shop.tbl'} ({units}")
 
 
-def test_units_are_required_and_a_bad_table_is_exit_2(tmp_path):
+def test_a_tool_the_table_lacks_has_no_length(tmp_path):
+    from nczones.commands.verify import with_tool_table
+    from nczones.errors import GcodeError
+    from nczones.machine import load_machine
+    from nczones.prover import verify_text
+
+    (tmp_path / "shop.tbl").write_text("T2 P1 Z1\n")
+    with_table, _ = with_tool_table(load_machine(MILL), str(tmp_path / "shop.tbl"), "mm")
+    with pytest.raises(GcodeError) as e:  # never a guessed length
+        verify_text(PROGRAM, with_table)
+    assert e.value.diagnostics[0].code == "GC310"
+
+
+def test_the_command_line(tmp_path):
     (tmp_path / "p.ngc").write_text(PROGRAM)
+    (tmp_path / "good.tbl").write_text("T1 P1 Z50\nTOOLNO POCKET LENGTH\n")
+    r = nczones("verify", "p.ngc", "--machine", MILL, "--tool-table", "good.tbl", "--tool-table-units", "mm",
+                cwd=tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "p.ngc: note: tool lengths and diameters from the tool table good.tbl (mm, sha256 " in r.stdout
+    assert "good.tbl:2:1: note[IM204]" in r.stderr  # the line LinuxCNC skips is said, not fatal
     (tmp_path / "shop.tbl").write_text("T1 P1 Z1,5\n")
     r = nczones("verify", "p.ngc", "--machine", MILL, "--tool-table", "shop.tbl", cwd=tmp_path)
     assert r.returncode == 2 and "error[VF110]" in r.stderr and "--tool-table-units" in r.stderr
