@@ -258,13 +258,13 @@ def program_source(name: str) -> ProgramSource:
     return (read_stdin() if name == "-" else load_program(name)).require_code()
 
 
-def arc_tolerance(text: str) -> Fraction | str:
-    """``--arc-tolerance``: "linuxcnc" or a non-negative decimal (mm).
+def arc_tolerance(text: str | None) -> Fraction | str | None:
+    """``--arc-tolerance``: "linuxcnc", "grbl" or a non-negative decimal (mm); None (not given) stays None.
 
     >>> arc_tolerance("0.002"), arc_tolerance("linuxcnc")
     (Fraction(1, 500), 'linuxcnc')
     """
-    if text == "linuxcnc":
+    if text is None or text in ("linuxcnc", "grbl"):  # None: the machine file's arc_tolerance, else 0.002
         return text
     try:
         q = parse_decimal(text)
@@ -272,7 +272,7 @@ def arc_tolerance(text: str) -> Fraction | str:
         q = None
     if q is None or q < 0:
         raise InputError(Diagnostic("VF104", f"--arc-tolerance {text!r}: expected a non-negative decimal number "
-                                             "of mm (e.g. 0.002) or 'linuxcnc'", file="<command line>"))
+                                             "of mm (e.g. 0.002), 'linuxcnc' or 'grbl'", file="<command line>"))
     return q
 
 

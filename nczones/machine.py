@@ -20,6 +20,7 @@ import hashlib
 import json
 import os
 import re
+import shlex
 import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
@@ -240,6 +241,9 @@ class Machine:
     #: Block-delete switch positions a proof covers: "both" (default), "off" (``/`` lines run), "on" (skipped),
     #: or per switch (Fanuc ``/1`` .. ``/9``) as :func:`nczones.blockskip.format_block_delete` writes it.
     block_delete: str = "both"
+    #: How far an arc's end may be off its circle (``[machine] arc_tolerance``): mm, ``"linuxcnc"`` or ``"grbl"``
+    #: (the control's own rule); None: ``--arc-tolerance`` or its default.
+    arc_tolerance: Fraction | str | None = None
     #: ``"mill"`` or ``"lathe"`` (``[machine] type``): a lathe reads its dialect's lathe G codes.
     machine_type: str = "mill"
     #: Axes whose program words are diameters (``[machine] diameter_axes``); machine coordinates, zones and
@@ -621,7 +625,7 @@ _TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones", "f
              "tool_offsets")
 _MACHINE_KEYS = (
     "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
-    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect", "block_delete",
+    "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect", "block_delete", "arc_tolerance",
     "reference_2", "reference_3", "reference_4",
     "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
     "reference_2", "reference_3", "reference_4", "type", "diameter_axes",
@@ -635,6 +639,9 @@ _FANUC_KEYS = ("decimal_point_input", "increment_system", "g73_retract", "g83_cl
                "harmless_m", "path") + _FANUC_LATHE_KEYS
 #: Values of ``[machine] cutter_compensation``.
 CUTTER_COMPENSATION_MODES = ("none", "linuxcnc")
+#: The named values of ``[machine] arc_tolerance`` (a control's own rule; otherwise a length in mm).
+ARC_TOLERANCE_RULES = ("linuxcnc", "grbl")
+
 #: Values of ``[machine] block_delete`` for every switch at once: which positions of the block-delete
 #: switches a proof covers (per switch: ``"1=on,2=off"``, :mod:`nczones.blockskip`).
 BLOCK_DELETE_MODES = ("both", "off", "on")
@@ -648,6 +655,25 @@ _ZONE_KEYS = {
 #: Extra top-level sections other parts of nczones read (homing, tool change):
 #: name -> parser(reader, raw table, axes) returning a value for Machine.sections.
 SECTION_PARSERS: dict[str, Callable[[Any, Any, tuple[str, ...]], Any]] = {}
+
+
+#: What a controller configuration looks like when it is given where a machine file belongs.  The same
+#: signs ``nczones.imports.detect_kind`` reads (that layer sits above this one, so they are repeated here).
+_FOREIGN = (
+    (re.compile(r"^\s*\[(?:EMC|EMCMOT|EMCIO|TRAJ|KINS|RS274NGC|TASK|HAL|DISPLAY|FILTER|AXIS_[A-Z]|JOINT_\d+)\]\s*$",
+                re.M), "a LinuxCNC INI file"),
+    (re.compile(r"^\s*\$\d+\s*=", re.M), "a Grbl $$ settings dump"),
+    (re.compile(r"^\s*N\s*\d{1,5}\s*(?:Q\s*1\s*)?(?:[AS]\s*\d+\s*)?[PMI]\s*[-+.\d]", re.M | re.I),
+     "a Fanuc parameter listing"),
+)
+
+
+def _controller_configuration(text: str) -> str | None:
+    """What controller configuration ``text`` (not valid TOML) looks like, or None."""
+    for pattern, label in _FOREIGN:
+        if pattern.search(text):
+            return label
+    return None
 
 
 def parse_machine(text: str, path: str = "<machine>") -> Machine:
@@ -680,6 +706,15 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
             lines = text.splitlines()
             span = SourceSpan(path, line, col, col + 1, lines[line - 1] if line <= len(lines) else "")
         reason = re.sub(r"\s*\(at (?:line \d+, column \d+|end of document)\)", "", str(exc))
+        foreign = _controller_configuration(text)
+        if foreign is not None:  # issue 38: an INI, a $$ dump or a parameter listing given as --machine
+            shown = path if not path.startswith("<") else "CONFIG"
+            target = (os.path.splitext(os.path.basename(shown))[0] or "machine") + ".toml"
+            quoted = shlex.quote(shown)
+            span = None  # the TOML parser's complaint is beside the point
+            reason = (f"this looks like {foreign}, not a machine file: convert it once with "
+                       f"`nczones import-machine {quoted} -o {shlex.quote(target)}` and pass "
+                       f"{shlex.quote(target)} to --machine")
         rd.report("ZN100", f"not valid TOML: {reason}", span)
         raise MachineFileError(rd.diagnostics) from None
     machine = _build(rd, data)
@@ -854,6 +889,19 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                   rd.loc.key("block_delete", mline))
         block_delete = "both"
 
+    arc_tol: Fraction | str | None = None
+    if "arc_tolerance" in mt:
+        raw = mt["arc_tolerance"]
+        if raw in ARC_TOLERANCE_RULES:
+            arc_tol = raw
+        elif type(raw) is str and not _PLAIN_DECIMAL.match(raw):
+            rd.report("ZN114", f"[machine] arc_tolerance: {as_written(raw)} is not allowed; use a length in mm "
+                      "(such as \"0.002\"), \"linuxcnc\" or \"grbl\" (the control's own rule)",
+                      rd.loc.key("arc_tolerance", mline))
+        else:
+            arc_tol = read_number(rd, raw, "[machine] arc_tolerance", rd.loc.key("arc_tolerance", mline),
+                                  nonnegative=True, limit=Fraction(10))
+
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
     tool_offsets = _tool_offsets(rd, data.get("tool_offsets", {}), axes)
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
@@ -879,7 +927,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         allowed=allowed, modal=modal, tool_axis=tool_axis, source=rd.path,
         sections=MappingProxyType(sections), cutter_compensation=comp,
         tool_diameters=MappingProxyType(tool_diameters), dialect=dialect or "linuxcnc", fanuc=fanuc,
-        block_delete=block_delete,
+        block_delete=block_delete, arc_tolerance=arc_tol,
         machine_type=machine_type or "mill", diameter_axes=diameter_axes, tool_offsets=MappingProxyType(tool_offsets),
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.

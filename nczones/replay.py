@@ -404,7 +404,7 @@ def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: 
     options: dict[str, Any] = {}
     if settings.get("arc_tolerance") is not None:
         tol = settings["arc_tolerance"]
-        options["arc_tolerance"] = tol if tol == "linuxcnc" else parse_rational(tol)
+        options["arc_tolerance"] = tol if tol in ("linuxcnc", "grbl") else parse_rational(tol)
     if isinstance(settings.get("max_iterations"), int):
         options["max_loop_iterations"] = settings["max_iterations"]
     options["block_delete"] = skip

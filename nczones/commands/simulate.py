@@ -193,7 +193,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--filter", choices=("exponential", "linear"), default="exponential",
                    help="shape of the filter after interpolation (--accdec-after-ms): exponential (default) or "
                         "linear (moving average)")
-    p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc", help='largest mismatch (mm) of an arc end point with its circle (default 0.002), or "linuxcnc" for LinuxCNC\'s own acceptance rule')
+    p.add_argument("--arc-tolerance", default=None, metavar="MM|linuxcnc|grbl", help='largest mismatch (mm) of an arc end point with its circle (default: the machine file\'s arc_tolerance, else 0.002), or "linuxcnc"/"grbl" for that control\'s own acceptance rule')
     p.add_argument("--events", action="store_true", help="include the event log in the JSON output")
     p.add_argument("--break-at", metavar="LINE[:FRACTION]", default=None,
                    help="break the tool in the first cutting motion of LINE after FRACTION of it (default 0) "

@@ -181,6 +181,38 @@ def render_many(results: list, errors: list[tuple[int, str, InputError]], args: 
                    + (render_stats(r) if stats else "") for _, source, r in results)
 
 
+def with_tool_table(machine: Machine, path: str, units: str | None) -> tuple[Machine, str]:
+    """``machine`` with the tool lengths and diameters of a LinuxCNC tool table (``--tool-table``), and the
+    note the reports carry.  The table replaces the machine file's ``[tool_lengths]``/``[tool_diameters]``
+    whole, as LinuxCNC reads its table (a tool not in it has none).  ``units`` is required (``VF111``): a
+    table is in the machine's ``[TRAJ] LINEAR_UNITS``, which it does not say."""
+    import hashlib
+    from dataclasses import replace
+    from types import MappingProxyType
+
+    from ..imports.linuxcnc import read_tool_table
+
+    if units is None:
+        raise _command_line_error("VF111", f"--tool-table {path}: give --tool-table-units mm or inch (a LinuxCNC "
+                                           "tool table is in the configuration's [TRAJ] LINEAR_UNITS, which the "
+                                           "table itself does not say)")
+    if machine.dialect != "linuxcnc":
+        raise _command_line_error("VF111", f"--tool-table {path}: reads a LinuxCNC tool table (.tbl); this "
+                                           f"machine's dialect is {machine.dialect}")
+    lengths, diameters, table_notes = read_tool_table(path, units, machine.axis_names)
+    for skipped in table_notes:
+        print(skipped.render(), file=sys.stderr)
+    try:
+        with open(path, "rb") as fh:
+            digest = hashlib.sha256(fh.read()).hexdigest()
+    except OSError:  # read a moment ago
+        digest = "?"
+    note = (f"tool lengths and diameters from the tool table {path} ({units}, sha256 {digest[:12]}; "
+            f"{len(lengths)} length(s)), replacing the machine file's")
+    return replace(machine, tool_lengths=MappingProxyType(lengths),
+                   tool_diameters=MappingProxyType(diameters)), note
+
+
 def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
 
@@ -195,6 +227,9 @@ def _run(args: argparse.Namespace) -> int:
     check_output_path(args.output)
     fewer_collections()
     machine = cli.with_dialect(load_machine(args.machine), args.dialect)
+    table_note = None
+    if args.tool_table is not None:
+        machine, table_note = with_tool_table(machine, args.tool_table, args.tool_table_units)
     options = verify_options(args, machine)
     results: list = []
     errors: list[tuple[int, str, InputError]] = []
@@ -209,6 +244,10 @@ def _run(args: argparse.Namespace) -> int:
             errors.append((k, program, exc))
             codes.append(cli.EXIT_INPUT)
             continue
+        if table_note is not None:
+            from dataclasses import replace
+
+            result = replace(result, notes=(table_note,) + tuple(result.notes))
         results.append((k, source, result))
         codes.append(result.verdict.exit_code)
         if result.interrupted:  # Ctrl-C: report what was done, verify no further program
@@ -254,6 +293,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "give one report each")
     p.add_argument("--machine", required=True, metavar="M.toml",
                    help="the machine file: axes, zones, offsets, tool lengths (specs/machine-file.md)")
+    p.add_argument("--tool-table", default=None, metavar="TBL",
+                   help="take tool lengths and diameters from this LinuxCNC tool table (.tbl) instead of the "
+                        "machine file's; needs --tool-table-units")
+    p.add_argument("--tool-table-units", choices=("mm", "inch"), default=None,
+                   help="the tool table's length unit: the configuration's [TRAJ] LINEAR_UNITS")
     p.add_argument("--margin", default="0", metavar="D", help="required clearance in mm on every axis (default 0)")
     p.add_argument("--param", action="append", default=[], metavar="NAME=LO..HI",
                    help="parameter range: G54.X=-2..2 (offset deviation), H1=195..205 (tool length), "
@@ -270,9 +314,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--engine", choices=("auto", "z3"), default="auto",
                    help="auto: exact vectorized decisions where they are exact, Z3 for the rest (default); "
                         "z3: every segment through Z3 (the reference path)")
-    p.add_argument("--arc-tolerance", default="0.002", metavar="MM|linuxcnc",
-                   help="largest mismatch (mm) of an arc end point with its circle (default 0.002), or "
-                        "\"linuxcnc\" for LinuxCNC's own acceptance rule")
+    p.add_argument("--arc-tolerance", default=None, metavar="MM|linuxcnc|grbl",
+                   help="largest mismatch (mm) of an arc end point with its circle (default: the machine file's "
+                        "arc_tolerance, else 0.002), or \"linuxcnc\"/\"grbl\" for that control's own acceptance rule")
     p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
                    help="iterations a loop (while, do, repeat) may run per entry before the verdict becomes "
                         f"unknown (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS}); a repeat count above it (M98/G65 "

@@ -125,8 +125,8 @@ def _params(value: Any) -> list[str]:
 
 
 def _arc_tolerance(value: Any) -> str:
-    if value == "linuxcnc":
-        return "linuxcnc"
+    if value in ("linuxcnc", "grbl"):
+        return str(value)
     return _decimal_text(value)
 
 
@@ -150,7 +150,7 @@ SETTINGS: dict[str, Setting] = {s.name: s for s in (
     Setting("params", "params", _params, "parameter ranges NAME=LO..HI (list of strings)"),
     Setting("recovery", "recovery", _choice("start", "breakpoint"), "prove tool-break recovery"),
     Setting("engine", "engine", _choice("auto", "z3"), "proof engine"),
-    Setting("arc_tolerance", "arc_tolerance", _arc_tolerance, "arc end-point tolerance (mm) or \"linuxcnc\""),
+    Setting("arc_tolerance", "arc_tolerance", _arc_tolerance, "arc end-point tolerance (mm), \"linuxcnc\" or \"grbl\"; default: the machine file's"),
     Setting("max_iterations", "max_iterations", _positive_int, "loop iterations per entry before unknown"),
     Setting("max_violations", "max_violations", _positive_int, "violating blocks reported per program"),
     Setting("block_delete", "block_delete", _block_delete, "block-delete switch positions (both|off|on, or "
@@ -476,7 +476,7 @@ def verify_kwargs(settings: Iterable[tuple[str, Any]], root: str | os.PathLike) 
         setting = SETTINGS[key]
         if key in ("margin",):
             value = parse_decimal(value)
-        elif key == "arc_tolerance" and value != "linuxcnc":
+        elif key == "arc_tolerance" and value not in ("linuxcnc", "grbl"):
             value = parse_decimal(value)
         elif key == "params":
             value = tuple(value)

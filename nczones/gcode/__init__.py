@@ -312,7 +312,7 @@ def interpret(
     file: str | None = None,
     block_delete: bool | Collection[int] = False,
     track_dependencies: bool = False,
-    arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE,
+    arc_tolerance: Fraction | str | None = None,
     fast: bool = True,
     chunk_size: int = DEFAULT_CHUNK_SIZE,
     max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
@@ -341,9 +341,11 @@ def interpret(
     track_dependencies : bool
         Fill ``Segment.deps_start/deps_end`` for parameter ranges (disables
         the fast path).
-    arc_tolerance : Fraction, decimal str, or "linuxcnc"
+    arc_tolerance : Fraction, decimal str, "linuxcnc" or "grbl"
         Largest allowed mismatch (mm) of an arc's end point with its circle
-        (default 0.002 mm).  ``"linuxcnc"`` accepts exactly the I/J/K arcs
+        (default: the machine file's ``arc_tolerance``, else 0.002 mm).
+        ``"grbl"`` is Grbl's rule as nczones takes it: I/J/K arcs off by at
+        most 0.005 mm, R arcs not short at all.  ``"linuxcnc"`` accepts exactly the I/J/K arcs
         LinuxCNC accepts (0.028 mm, or up to 2.8 mm within 0.1 %) and R arcs
         short by at most 0.00127 mm; an accepted arc whose end is off its
         circle is modelled as the spiral the machine moves.
@@ -378,7 +380,7 @@ def interpret(
                           param_ranges=tuple(param_ranges))
 
 
-def checked_options(machine: Machine, arc_tolerance: Fraction | str, max_loop_iterations: int,
+def checked_options(machine: Machine, arc_tolerance: Fraction | str | None, max_loop_iterations: int,
                     dialect: str | None) -> Fraction | str:
     """The arc tolerance as :func:`interpret` takes it, after the checks of its options
     (:class:`~nczones.errors.InvalidArgument` for a negative tolerance, an iteration bound that is not a
@@ -389,7 +391,11 @@ def checked_options(machine: Machine, arc_tolerance: Fraction | str, max_loop_it
     """
     from ..exact import exact
 
-    tol: Fraction | str = "linuxcnc" if arc_tolerance == "linuxcnc" else exact(arc_tolerance)
+    if arc_tolerance is None:  # the machine file's, else the default
+        arc_tolerance = getattr(machine, "arc_tolerance", None)
+        if arc_tolerance is None:
+            arc_tolerance = DEFAULT_ARC_TOLERANCE
+    tol: Fraction | str = arc_tolerance if arc_tolerance in ("linuxcnc", "grbl") else exact(arc_tolerance)
     if isinstance(tol, Fraction) and tol < 0:
         raise InvalidArgument(f"arc_tolerance must not be negative, got {arc_tolerance!r}")
     if not isinstance(max_loop_iterations, int) or isinstance(max_loop_iterations, bool) or max_loop_iterations < 1:

@@ -199,7 +199,10 @@ class _Pass:
         self.pos = [float(v) for v in machine.start]
         self.columns: tuple[array, ...] = tuple(array("d", [v]) for v in self.pos)
         self.rapids = self.blocks = 0
-        self.S: dict[int, float] = {}  # numbered parameters set by the program (unset read 0)
+        from .state import DEBUG_FLAG, DEBUG_FLAG_DEFAULT
+
+        # numbered parameters set by the program (unset read 0); #5599 starts at 1 (nczones.gcode.state)
+        self.S: dict[int, float] = {DEBUG_FLAG: float(DEBUG_FLAG_DEFAULT)}
         self.N: dict[str, float] = {}  # the main program's named parameters
         self.plans: dict[tuple, Any] = {}
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)

@@ -52,7 +52,14 @@ from .lexer import PlainBlock, fraction_raw, to_fraction
 from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
 from .segments import dadd, make_segment, with_tool_deps
 from .splines import SPLINE_CODES, spline_block, spline_pending
-from .state import StateParameter, StateTable, StateValue, linuxcnc_state_parameters
+from .state import (
+    DEBUG_FLAG,
+    DEBUG_FLAG_DEFAULT,
+    StateParameter,
+    StateTable,
+    StateValue,
+    linuxcnc_state_parameters,
+)
 
 if TYPE_CHECKING:
     from .cutter_comp import CutterComp
@@ -66,6 +73,13 @@ __all__ = [
     "LINUXCNC_RADIUS_TOLERANCE",
     "MODAL_GROUP_NAMES",
 ]
+
+#: Grbl's arc rule as nczones takes it (``arc_tolerance = "grbl"``).  Grbl's gcode.c accepts an I/J/K arc when
+#: its end radius differs from its start radius by at most 0.005 mm, or by at most 0.5 mm and 0.1 % of the
+#: radius; it then moves on the start radius and ends with a straight segment to the end point, where
+#: nczones proves LinuxCNC's spiral.  nczones accepts the first part only (0.005 mm, which bounds that
+#: difference); a larger mismatch is GC301.  R arcs: Grbl errors when the chord exceeds 2R, no tolerance.
+GRBL_ARC_TOLERANCE = Fraction(5, 1000)
 
 #: LinuxCNC's RADIUS_TOLERANCE_MM (0.00005 in): how far an R arc may fall short (arc_tolerance="linuxcnc").
 LINUXCNC_RADIUS_TOLERANCE = Fraction(5, 100000) * Fraction(254, 10)
@@ -309,10 +323,13 @@ class Interpreter:
         chunk_size: int = DEFAULT_CHUNK_SIZE,
         param_ranges: Iterable[Any] = (),
     ):
-        #: "linuxcnc": accept I/J/K arcs exactly when LinuxCNC does (see linuxcnc_rejects_arc)
-        self.arc_rule = "linuxcnc" if arc_tolerance == "linuxcnc" else "fixed"
+        #: "linuxcnc": accept I/J/K arcs exactly when LinuxCNC does (see linuxcnc_rejects_arc); "grbl": I/J/K
+        #: arcs off by at most GRBL_ARC_TOLERANCE, R arcs not short at all (Grbl's gcode.c, see there)
+        self.arc_rule = arc_tolerance if arc_tolerance in ("linuxcnc", "grbl") else "fixed"
         if self.arc_rule == "linuxcnc":
             arc_tolerance = LINUXCNC_RADIUS_TOLERANCE
+        elif self.arc_rule == "grbl":
+            arc_tolerance = GRBL_ARC_TOLERANCE
         elif not isinstance(arc_tolerance, Fraction) or arc_tolerance < 0:
             from ..exact import exact
 
@@ -667,6 +684,7 @@ class Interpreter:
         (GC305) at that word; an assignment to an entry is unknown too.
         """
         self._scopes = getattr(params, "scopes", None)
+        params.set(DEBUG_FLAG, DEBUG_FLAG_DEFAULT)  # #5599, an ordinary parameter that starts at 1
         for key, entry in self.state_parameters().items():
             params.provide(key, self._state_reader(entry))
             params.guard(key, f"{_show_key(key)} ({entry.meaning}) is controller state; a program that assigns "
@@ -1746,6 +1764,8 @@ class Interpreter:
             off_a, off_b = self.off[ia], self.off[ib]
         tol = self.arc_tolerance
         if rw is not None:
+            if self.arc_rule == "grbl":
+                tol = _ZERO  # Grbl refuses an R arc whose chord is longer than 2R at all (h_x2_div_d < 0)
             r = self.length_mm(rw.value)
             if sa == ea and sb == eb:
                 raise self.error("GC303", "R-format arc whose end point equals its start point: the centre is undefined (use I/J/K for a full circle)", rw)

@@ -7,7 +7,12 @@ in front of a machine:
 
 * a path is always a path: a file that does not exist or cannot be read is
   one error (``GC100``), never G-code text;
-* the bytes must be UTF-8 text without NUL bytes (``GC108``);
+* the bytes must be UTF-8 text without NUL bytes (``GC108``); a byte order
+  mark decides the encoding instead (UTF-8, UTF-16 LE or BE), and bytes that
+  are not UTF-8 inside a comment (``(...)`` or after ``;``) are read as
+  CP1252 (Latin-1 for the five bytes CP1252 leaves undefined), the usual
+  shop encodings, with a note in :attr:`ProgramSource.notes`; outside a
+  comment they stay an error;
 * a line may hold at most :data:`MAX_LINE_CHARS` characters (``GC110``): a
   real block is a few hundred characters at most, and a file whose line
   ends are lost (``\\r`` only, or binary data) would otherwise be read as
@@ -68,6 +73,8 @@ class ProgramSource:
     name: str
     sha256: str
     path: str | None = None
+    #: What reading assumed (a byte order mark, comment bytes read as CP1252); verify reports them as notes.
+    notes: tuple[str, ...] = ()
 
     @property
     def is_empty(self) -> bool:
@@ -90,22 +97,105 @@ class ProgramSource:
 ProgramLike = str | os.PathLike | ProgramSource
 
 
-def _decode(data: bytes, name: str) -> str:
-    """UTF-8 text, or one GC108 error for binary or non-UTF-8 bytes."""
+#: Byte order marks and the encoding each names (UTF-32 is not a shop encoding: its NULs stay GC108).
+_BOMS = ((b"\xef\xbb\xbf", "utf-8", "UTF-8"), (b"\xff\xfe", "utf-16-le", "UTF-16 LE"),
+         (b"\xfe\xff", "utf-16-be", "UTF-16 BE"))
+
+
+def _comment_spans(line: str) -> list[tuple[int, int]]:
+    """The ``(...)`` comments of one line and a ``;`` comment to its end, as [start, end) offsets.
+
+    An unclosed ``(`` runs to the end of the line (the parser refuses it later).
+    """
+    spans, i, n = [], 0, len(line)
+    while i < n:
+        c = line[i]
+        if c == "(":
+            j = line.find(")", i + 1)
+            j = n if j < 0 else j + 1
+            spans.append((i, j))
+            i = j
+        elif c == ";":
+            spans.append((i, n))
+            break
+        else:
+            i += 1
+    return spans
+
+
+def _cp1252(byte: int) -> str:
+    try:
+        return bytes([byte]).decode("cp1252")
+    except UnicodeDecodeError:  # 0x81, 0x8d, 0x8f, 0x90, 0x9d: undefined in CP1252
+        return chr(byte)
+
+
+def _decode_comments(data: bytes, name: str) -> tuple[str, tuple[str, ...]]:
+    """UTF-8 text whose non-UTF-8 bytes all lie in comments, those read as CP1252; else GC108 on the first."""
+    text = data.decode("utf-8", errors="surrogateescape")
+    out: list[str] = []
+    lines_noted: list[int] = []
+    offset = 0  # byte offset of the current line
+    for number, line in enumerate(text.split("\n"), 1):
+        raw_len = len(line.encode("utf-8", errors="surrogateescape"))
+        if any("\udc80" <= c <= "\udcff" for c in line):
+            spans = _comment_spans(line)
+            chars = list(line)
+            for k, c in enumerate(chars):
+                if "\udc80" <= c <= "\udcff":
+                    if not any(a <= k < b for a, b in spans):
+                        byte_at = offset + len(line[:k].encode("utf-8", errors="surrogateescape"))
+                        raise GcodeError(Diagnostic(
+                            "GC108", f"not UTF-8 text: byte 0x{data[byte_at]:02x} at offset {byte_at} (line "
+                                     f"{number}) is not valid UTF-8 and is not inside a comment; save the "
+                                     "program as UTF-8 (or ASCII)", file=name))
+                    chars[k] = _cp1252(ord(c) - 0xDC00)
+            line = "".join(chars)
+            lines_noted.append(number)
+        out.append(line)
+        offset += raw_len + 1
+    shown = ", ".join(map(str, lines_noted[:5])) + (", ..." if len(lines_noted) > 5 else "")
+    note = (f"the program is not UTF-8: bytes inside comments on line(s) {shown} were read as CP1252/Latin-1 "
+            "(comments only; they do not change what the machine does)")
+    return "\n".join(out), (note,)
+
+
+def _decode(data: bytes, name: str) -> tuple[str, tuple[str, ...]]:
+    """The text and what reading it assumed; one GC108 error for binary bytes or non-UTF-8 bytes outside comments.
+
+    A byte order mark decides the encoding (UTF-8, UTF-16 LE/BE).  Without one,
+    the text is UTF-8, except that bytes that are not UTF-8 inside comments
+    are read as CP1252 (Latin-1), with a note.
+    """
+    notes: tuple[str, ...] = ()
+    for bom, codec, label in _BOMS:
+        if data.startswith(bom):
+            try:
+                text = data[len(bom):].decode(codec)
+            except UnicodeDecodeError as exc:
+                at = exc.start + len(bom)
+                raise GcodeError(Diagnostic("GC108", f"not {label} text although it starts with a {label} byte "
+                                                     f"order mark: the bytes at offset {at} are not valid "
+                                                     f"{label}", file=name)) from None
+            if "\0" in text:
+                at = text.index("\0")
+                raise GcodeError(Diagnostic("GC108", f"a binary file, not G-code text: a NUL character (character "
+                                                     f"{at} of the {label} text)", file=name))
+            if codec != "utf-8":
+                notes = (f"the program is {label} text (read by its byte order mark)",)
+            return text, notes
     nul = data.find(b"\0")
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
-        line = data.count(b"\n", 0, exc.start) + 1
         if nul < 0 or nul > exc.start:
-            raise GcodeError(Diagnostic("GC108", f"not UTF-8 text: byte 0x{data[exc.start]:02x} at offset "
-                                                 f"{exc.start} (line {line}) is not valid UTF-8; save the "
-                                                 "program as UTF-8 (or ASCII)", file=name)) from None
+            bad = data[:nul] if nul >= 0 else data
+            text, notes = _decode_comments(bad, name)
     if nul >= 0:
         line = data.count(b"\n", 0, nul) + 1
         raise GcodeError(Diagnostic("GC108", f"a binary file, not G-code text: a NUL byte at offset {nul} "
                                              f"(line {line})", file=name))
-    return text
+    return text, notes
 
 
 def _check_lines(text: str, name: str) -> None:
@@ -129,9 +219,9 @@ def _check_lines(text: str, name: str) -> None:
 
 
 def _source(data: bytes, name: str, path: str | None) -> ProgramSource:
-    text = _decode(data, name)
+    text, notes = _decode(data, name)
     _check_lines(text, name)
-    return ProgramSource(text, name, hashlib.sha256(data).hexdigest(), path)
+    return ProgramSource(text, name, hashlib.sha256(data).hexdigest(), path, notes)
 
 
 def load_program(path: str | os.PathLike, name: str | None = None) -> ProgramSource:

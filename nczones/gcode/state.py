@@ -71,6 +71,8 @@ __all__ = [
     "StateParameter",
     "StateTable",
     "linuxcnc_state_parameters",
+    "DEBUG_FLAG",
+    "DEBUG_FLAG_DEFAULT",
     "AXIS_LETTERS",
     "WORK_OFFSET_NAMES",
 ]
@@ -214,6 +216,13 @@ def _tool_axis_only(what: Callable[[StateSource], StateValue | None], letter: st
     return read
 
 
+#: LinuxCNC's ``#5599``: whether ``(DEBUG, ...)`` comments print (1) or not (0).  It moves nothing, so a program may
+#: set and read it as any parameter; it is volatile (not kept in the parameter file) and starts at 1, as
+#: ``rs274`` shows: ``G0 X[#5599]`` at the start of a program traverses to X1.
+DEBUG_FLAG = 5599
+DEBUG_FLAG_DEFAULT = 1
+
+
 def linuxcnc_state_parameters() -> StateTable:
     """The state parameters of LinuxCNC's interpreter (numbering of ``interp_parameter_def.hh``).
 
@@ -260,8 +269,10 @@ def linuxcnc_state_parameters() -> StateTable:
         lambda it: it.machine.tool_diameters.get(it.tool_in_spindle))
     for key, what in ((5411, "front angle"), (5412, "back angle"), (5413, "orientation")):
         add(key, f"lathe tool {what} of the tool in the spindle", _unknown)
-    for key in (5599, 5600, 5601):
-        add(key, "controller flag (debug output, tool changer fault)", _unknown)
+    # #5599 (the (DEBUG,) output flag) is not state: an ordinary volatile parameter that starts at
+    # DEBUG_FLAG_DEFAULT (see there); #5600/#5601 are the tool changer's fault flag and code (iocontrol v2)
+    for key in (5600, 5601):
+        add(key, "controller flag (tool changer fault)", _unknown)
     # named parameters (interp_namedparams.cc)
     add("_current_tool", "tool in the spindle", t[5400].read)
     add("_selected_tool", "tool selected by T", lambda it: it.tool_selected)

@@ -296,7 +296,10 @@ def read_grbl(path: str, text: str, c: Collector) -> ImportedMachine:
         axes=axes, axes_how=f"the axes with settings, {_LAYOUT_NAMES[layout]}",
         rapid=frozen(rapid), reference=frozen(reference), start=frozen(start), pulse=frozen(pulse),
         rapid_mode=("linear", "Grbl moves G0 on a straight line"),
-        extra=(("dialect", '"linuxcnc"', "Grbl reads the RS-274/NGC subset LinuxCNC's dialect describes"),),
+        extra=(("dialect", '"linuxcnc"', "Grbl reads the RS-274/NGC subset LinuxCNC's dialect describes"),
+               ("arc_tolerance", '"grbl"', "Grbl's arc check (gcode.c): an I/J arc's end radius may differ from "
+                "its start radius by 0.005 mm (nczones does not take Grbl's wider 0.1 %, up to 0.5 mm), an R arc "
+                "not at all")),
         modal=modal,
         offsets=frozen({k: frozen(v) for k, v in offsets.items()}),
         zones=(zone,) if lo else (), homing=homing_drafts, notes=tuple(c.notes),

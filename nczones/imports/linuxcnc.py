@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
 
-from ..errors import SourceSpan
+from ..errors import Diagnostic, InvalidArgument, SourceSpan
 from ..exact import MAX_ABS_LENGTH, format_decimal
 from ..machine import DEFAULT_MODAL, DEFAULT_RETRACT, MODAL_CHOICES, ROTARY_AXES, WORK_OFFSETS
 from .ini import IniEntry, IniFile, parse_ini
@@ -565,6 +565,30 @@ def modal_changes(chosen: dict[str, tuple[str, str]]) -> tuple[tuple[str, str], 
     return tuple((code, how) for group, (code, how) in chosen.items() if defaults[group] != code)
 
 
+def _stored_link(table: Path, line: str) -> str:
+    """A hint when a tool table line is a path to an existing file: a symbolic link stored as a plain file.
+
+    Git writes a symlink as a file holding its target where links are not made (an archive, a checkout
+    with ``core.symlinks=false``).  LinuxCNC reads such a file as a table whose one line it skips; the
+    import does the same and says how to get the real table read.
+    """
+    text = line.strip()
+    if not text or any(ch.isspace() for ch in text) or len(text) > 4096:
+        return ""
+    try:
+        linked = (table.parent / text)
+        exists = linked.is_file() and linked.resolve() != table.resolve()
+    except (OSError, ValueError):
+        return ""
+    if exists:
+        return (f"; the file holds only the path {text!r}, which exists: it looks like a symbolic link stored as "
+                f"a file (make it a link, or give --tool-table {linked})")
+    if "/" in text or text.lower().endswith(".tbl"):
+        return (f"; the file holds only the path {text!r}: it looks like a symbolic link stored as a file, whose "
+                f"target {linked} is not there (put the real table there, or give --tool-table)")
+    return ""
+
+
 def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ...],
            lin: tuple[Fraction, str]) -> tuple[dict[int, Sourced], dict[int, Sourced]]:
     lengths: dict[int, Sourced] = {}
@@ -585,6 +609,31 @@ def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ..
         if not target.exists():
             c.note("IM203", f"{e.describe()}: {target} does not exist; no tool lengths or diameters taken", e.span)
             return lengths, diameters
+    return _read_tool_table(target, c, axes, lin)
+
+
+def read_tool_table(path: str | Path, units: str, axes: tuple[str, ...] = ("X", "Y", "Z")
+                    ) -> tuple[dict[int, Fraction], dict[int, Fraction], tuple[Diagnostic, ...]]:
+    """A LinuxCNC tool table (``.tbl``) on its own: tool lengths (Z) and diameters in mm, and the notes.
+
+    ``units`` is the table's length unit, LinuxCNC's ``[TRAJ] LINEAR_UNITS`` (``"mm"`` or ``"inch"``):
+    a table does not say it.  Raises :class:`~nczones.errors.MachineImportError` (``IM1xx``) on a bad
+    table, as ``import-machine`` would.  ``nczones verify --tool-table`` reads tools with it.
+    """
+    lin = _LINEAR_UNITS.get(units.strip().lower())
+    if lin is None:
+        raise InvalidArgument(f"tool table units {units!r}: use mm or inch")
+    c = Collector()
+    lengths, diameters = _read_tool_table(Path(path), c, axes, lin)
+    c.raise_if_failed()
+    return ({k: v.value for k, v in lengths.items()}, {k: v.value for k, v in diameters.items()},
+            tuple(c.notes))
+
+
+def _read_tool_table(target: Path, c: Collector, axes: tuple[str, ...], lin: tuple[Fraction, str]
+                     ) -> tuple[dict[int, Sourced], dict[int, Sourced]]:
+    lengths: dict[int, Sourced] = {}
+    diameters: dict[int, Sourced] = {}
     text = read_source(target, "tool table", "IM109")
     tpath = str(target)
     factor, unit = lin
@@ -606,14 +655,31 @@ def _tools(ini: IniFile, c: Collector, override: str | None, axes: tuple[str, ..
             fields[letter] = (number, line_span(tpath, i, body, m.start(), m.end()))
         if bad is not None:
             token, span, letter = bad
+            # LinuxCNC (tooldata_common.cc tooldata_read_entry) reads each word with sscanf: a word whose
+            # letter it knows and whose text starts with a number is read up to where the number ends
+            # ("Z1,5" is Z1); the import refuses such a word rather than guess (IM102).  Any other word
+            # makes LinuxCNC skip the whole line ("Unrecognized line skipped"): a note, the line is skipped.
+            c_prefix = (r"\s*[+-]?\d" if letter in "TPQ"
+                        else r"\s*[+-]?(?:\d|\.\d)")
+            if letter in "TPXYZABCUVWDIJQ" and re.match(c_prefix, token[1:]):
+                c.error("IM102", f"malformed tool table entry {token!r}: LinuxCNC reads only the number at its "
+                        "start (C's sscanf stops at the first character that is not part of it); write the "
+                        "number plainly, such as Z1.5", span)
+                continue
             hint = (" (this looks like the tool table format of LinuxCNC before 2.4, which it no longer reads: "
                     "write T<n> P<pocket> Z<length> D<diameter>)" if token[0].isdigit() or token.isalpha() else "")
             what = f"{letter} takes a whole number" if letter in "TPQ" else (
                 "expected a letter T P X Y Z A B C U V W D I J or Q followed by a number")
-            c.error("IM102", f"malformed tool table entry {token!r}: {what}; LinuxCNC skips this line{hint}", span)
+            link = _stored_link(target, data)
+            if link:
+                hint += link
+            # LinuxCNC reads the rest of the table (a warning on its console): a note, and no tool from the line
+            c.note("IM204", f"malformed tool table entry {token!r}: {what}; LinuxCNC skips this line, and so "
+                   f"does the import (no tool taken from it){hint}", span)
             continue
         if "T" not in fields:
-            c.error("IM102", "a tool table line without a T word (the tool number)", line_span(tpath, i, body))
+            c.note("IM204", "a tool table line without a T word (the tool number): LinuxCNC skips it, and so does "
+                   "the import", line_span(tpath, i, body))
             continue
         tool = int(fields["T"][0])
         tspan = fields["T"][1]

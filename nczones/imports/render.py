@@ -9,8 +9,10 @@ taken, rounded or assumed) close the file.  The text is checked by
 
 from __future__ import annotations
 
-import json
+import re
 from fractions import Fraction
+
+import tomli_w
 
 from ..exact import format_decimal
 from .model import ImportedMachine, Sourced, ZoneDraft
@@ -27,7 +29,13 @@ _WIDTH = 30
 
 
 def _s(text: str) -> str:
-    return json.dumps(text, ensure_ascii=False)
+    """``text`` as a TOML basic string, quoted by tomli-w (TOML's escapes, not JSON's: DEL and other control
+    characters are escaped as TOML requires)."""
+    return tomli_w.dumps({"v": text}).partition(" = ")[2].rstrip("\n")
+
+
+#: Characters a TOML comment may not hold (every control character but tab).
+_CONTROL = re.compile(r"[\x00-\x08\x0a-\x1f\x7f]")
 
 
 def _q(value: Fraction) -> str:
@@ -35,7 +43,8 @@ def _q(value: Fraction) -> str:
 
 
 def _clean(text: str) -> str:
-    return " ".join(text.split())
+    """Comment text on one line, control characters shown as ``\\xNN`` (TOML comments may not hold them)."""
+    return _CONTROL.sub(lambda m: f"\\x{ord(m.group()):02x}", " ".join(text.split()))
 
 
 def _line(assignment: str, comment: str = "") -> str:
@@ -80,7 +89,7 @@ def render_toml(im: ImportedMachine) -> str:
     """The machine file text (ends with a newline)."""
     label = KIND_LABELS.get(im.kind, im.kind)
     out = [
-        f"# Machine file imported from {im.source} ({label}) by `nczones import-machine`.",
+        f"# Machine file imported from {_clean(im.source)} ({label}) by `nczones import-machine`.",
         "# Each value's comment names the setting it came from. The notes at the end say",
         "# what could not be taken; read them, then check this file with `nczones check-machine`.",
         "",

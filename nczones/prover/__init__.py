@@ -208,10 +208,13 @@ def verify(
     nczones.errors.GcodeError: specs/examples/programs/O1000: error[GC100]: cannot read the program: No such file or directory
     """
     source = as_source(program, file=file, text_function="verify_text").require_code()
-    return _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
-                   arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
-                   max_iterations=max_iterations, dialect=dialect, library=library, block_delete=block_delete,
-                   budget_s=budget_s, limits=limits)
+    result = _verify(source, machine, margin=margin, params=params, engine=engine, max_violations=max_violations,
+                     arc_tolerance=arc_tolerance, progress=progress, recovery=recovery,
+                     max_iterations=max_iterations, dialect=dialect, library=library, block_delete=block_delete,
+                     budget_s=budget_s, limits=limits)
+    if source.notes:  # what reading the bytes assumed (a byte order mark, comment bytes read as CP1252)
+        result = replace(result, notes=source.notes + tuple(result.notes))
+    return result
 
 
 #: :func:`verify` under the name that says what it takes.
@@ -285,6 +288,9 @@ def _verify(
     except ValueError as e:
         raise InvalidArgument(f"block_delete: {e}") from None
     mode = format_block_delete(modes)
+    if arc_tolerance is None and machine.arc_tolerance is not None:  # the machine file's [machine] arc_tolerance
+        arc_tolerance = machine.arc_tolerance
+        extra["arc_tolerance"] = arc_tolerance
     tolerance = arc_tolerance if arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
     # Every option that can change the verdict, as JSON values: reports carry them and
     # `nczones replay` re-runs with them.  A new option of verify() belongs here too.

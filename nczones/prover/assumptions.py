@@ -33,8 +33,10 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "the control computes it to within a millionth of an increment (a point nearer than that to halfway "
     "between two increments makes the verdict unknown).",
     "The machine moves exactly along the programmed path: straight lines, exact circles (spirals for "
-    "arcs whose end is off the circle within the tolerance), exact NURBS, rapids straight or dogleg as "
-    "the machine file says; no corner blending (G64), following error or overshoot.",
+    "arcs whose end is off the circle within the tolerance; a Grbl control, arc_tolerance = \"grbl\", "
+    "moves such an arc on its start radius and then straight to the end point, at most 0.005 mm from "
+    "that spiral), exact NURBS, rapids straight or dogleg as the machine file says; no corner blending "
+    "(G64), following error or overshoot.",
     "Block delete: every block-skip switch the program uses (Fanuc /1 .. /9, / is /1; LinuxCNC's one "
     "switch) is verified in both positions, in every combination with the others, unless the machine "
     "file (block_delete) or --block-delete fixes it, which the report then says (more than 16 "

@@ -78,12 +78,37 @@ def test_a_binary_file_gets_one_message(tmp_path):
     assert r.stderr == "tool.nc: error[GC108]: a binary file, not G-code text: a NUL byte at offset 7 (line 1)\n"
 
 
-def test_non_utf8_text_gets_one_message(tmp_path):
-    (tmp_path / "latin1.nc").write_bytes(b"G21\nG0 X1 (Bohrung \xd8 5 mm)\n")
+def test_non_utf8_text_outside_a_comment_gets_one_message(tmp_path):
+    (tmp_path / "latin1.nc").write_bytes(b"G21\nG0 X1 \xd8 (Bohrung 5 mm)\n")
     r = nczones("verify", "latin1.nc", "--machine", MILL, cwd=tmp_path)
     assert r.returncode == 2
-    assert r.stderr == ("latin1.nc: error[GC108]: not UTF-8 text: byte 0xd8 at offset 19 (line 2) is not valid "
-                        "UTF-8; save the program as UTF-8 (or ASCII)\n")
+    assert r.stderr == ("latin1.nc: error[GC108]: not UTF-8 text: byte 0xd8 at offset 10 (line 2) is not valid "
+                        "UTF-8 and is not inside a comment; save the program as UTF-8 (or ASCII)\n")
+
+
+def test_latin1_and_cp1252_bytes_in_comments_are_read_with_a_note(tmp_path):
+    # issue 38: a shop's comment with Ø (Latin-1 0xd8), ° (0xb0) or € (CP1252 0x80) no longer rejects the program
+    (tmp_path / "latin1.nc").write_bytes(b"G21 G90 G54\nG0 X1 (Bohrung \xd8 5 mm, \x80)\nG0 X2 ; Tiefe 3\xb0\n")
+    r = nczones("verify", "latin1.nc", "--machine", MILL, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert ("latin1.nc: note: the program is not UTF-8: bytes inside comments on line(s) 2, 3 were read as "
+            "CP1252/Latin-1") in r.stdout
+    from nczones.gcode.source import load_program
+
+    assert load_program(tmp_path / "latin1.nc").text.splitlines()[1:] == ["G0 X1 (Bohrung Ø 5 mm, €)",
+                                                                          "G0 X2 ; Tiefe 3°"]
+
+
+@pytest.mark.parametrize("codec, bom, label", [("utf-16-le", b"\xff\xfe", "UTF-16 LE"),
+                                               ("utf-16-be", b"\xfe\xff", "UTF-16 BE"),
+                                               ("utf-8", b"\xef\xbb\xbf", None)])
+def test_a_byte_order_mark_decides_the_encoding(tmp_path, codec, bom, label):
+    text = "G21 G90 G54\nG0 X1 (Ø 5)\nG0 X500\n"  # G54 X150 + X500 leaves mill.toml's table: the program is read, not skipped
+    (tmp_path / "p.nc").write_bytes(bom + text.encode(codec))
+    r = nczones("verify", "p.nc", "--machine", MILL, cwd=tmp_path)
+    assert r.returncode == 1, r.stderr
+    assert "p.nc:3:" in r.stdout and "unsafe" in r.stdout
+    assert (f"p.nc: note: the program is {label} text (read by its byte order mark)" in r.stdout) == (label is not None)
 
 
 def test_a_huge_single_line_is_refused_at_once_with_a_short_excerpt(tmp_path):
@@ -337,3 +362,21 @@ def test_the_python_api_reads_a_str_as_a_path_never_as_text(tmp_path, monkeypatc
     assert verify("O1001", machine).verdict.value == verify(tmp_path / "O1001", machine).verdict.value
     assert verify_text("G0 X10 Y300\n", machine).verdict.value == verify("O1001", machine).verdict.value
     assert [s.end for s in segments_text("G0 X10 Y300\n", machine)] == [s.end for s in segments("O1001", machine)]
+
+
+@pytest.mark.parametrize("name, text, label", [
+    ("lathe.ini", "[EMC]\nMACHINE = LinuxCNC-HAL-SIM-LATHE\n[TRAJ]\nCOORDINATES = X Z\n", "a LinuxCNC INI file"),
+    ("grbl $$.txt", "$0=10\n$1=25\n$130=200.000\n", "a Grbl $$ settings dump"),
+    ("params.txt", "%\nN01320A1P500000A2P400000\n%\n", "a Fanuc parameter listing"),
+])
+def test_a_controller_configuration_given_as_machine_names_the_import_command(tmp_path, name, text, label):
+    # issue 38: an INI passed as --machine gave "ZN100 not valid TOML" with no hint; the decision (specs/machine-file.md):
+    # an error naming the exact import-machine command, never an import on the fly that the gate would not show
+    (tmp_path / "p.nc").write_text("G0 X1\n")
+    (tmp_path / name).write_text(text)
+    r = nczones("verify", "p.nc", "--machine", name, cwd=tmp_path)
+    assert (r.returncode, r.stdout) == (2, "")
+    stem = name.rsplit(".", 1)[0]
+    src, out = (f"'{name}'", f"'{stem}.toml'") if " " in name else (name, f"{stem}.toml")
+    assert r.stderr == (f"{name}: error[ZN100]: not valid TOML: this looks like {label}, not a machine file: convert "
+                        f"it once with `nczones import-machine {src} -o {out}` and pass {out} to --machine\n")

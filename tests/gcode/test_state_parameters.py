@@ -176,7 +176,7 @@ def test_g28_1_and_g92_3_keep_the_dependencies_of_what_they_stored():
     assert last.end[0] == 15 and last.deps_end[0] == ()   # X = 5 + G92 (10 - 0 - G54.X) + G54.X
 
 
-@pytest.mark.parametrize("expr", ["#5061", "#5070", "#5399", "#5411", "#5599", "#<_spindle_on>", "#<_rpm>",
+@pytest.mark.parametrize("expr", ["#5061", "#5070", "#5399", "#5411", "#5600", "#<_spindle_on>", "#<_rpm>",
                                   "#<_feed_override>", "#<_vmajor>", "#5410"])
 def test_state_nczones_does_not_model_is_unknown(expr):
     run = interpret(f"G0 X1\nG53 G0 X[{expr}]\nM30\n", MILL)
@@ -202,7 +202,8 @@ def test_the_table_covers_the_linuxcnc_state_parameters():
     expected = (set(range(5021, 5030)) | set(range(5061, 5071)) | set(range(5081, 5090))
                 | set(range(5161, 5170)) | set(range(5181, 5190)) | set(range(5210, 5220))
                 | {5220} | {5221 + 20 * n + k for n in range(9) for k in range(10)}
-                | {5399} | set(range(5400, 5414)) | set(range(5420, 5429)) | {5599, 5600, 5601})
+                | {5399} | set(range(5400, 5414)) | set(range(5420, 5429)) | {5600, 5601})
+    # #5599, the (DEBUG,) flag, is an ordinary parameter that starts at 1: tests/gcode/test_debug_flag.py
     assert numbered == expected
     from nczones.gcode.expr import PREDEFINED
 

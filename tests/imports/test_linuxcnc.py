@@ -233,3 +233,58 @@ def test_kind_given_wrong_is_a_clear_error(tmp_path, capsys):
     assert main(["import-machine", str(p), "--kind", "linuxcnc"]) == 2
     err = capsys.readouterr().err
     assert "error[IM1" in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("name", ["Mill\x7f", "Mill\x01\x1f X", 'Shop "A" \\ back\tslash', "Fräse Ø"])
+def test_machine_names_with_control_characters_round_trip(tmp_path, name):
+    # issue 38: the writer quoted with json.dumps, which leaves DEL (0x7f) raw; TOML forbids it in a string and in a
+    # comment, so the import failed with IM110 blamed on the configuration. The name read back must be the
+    # name written in [EMC] MACHINE (LinuxCNC's INI reader keeps the value after "= " as it is, trailing blanks cut).
+    p = tmp_path / "m.ini"
+    p.write_bytes(("[EMC]\nMACHINE = " + name + "\n" + BASE).encode("utf-8"))
+    r = import_machine(p)
+    assert r.machine.name == name
+    from nczones.machine import parse_machine
+
+    assert parse_machine(r.text).name == name
+
+
+def test_tool_table_lines_linuxcnc_skips_are_notes_and_the_rest_is_read(tmp_path):
+    # LinuxCNC's tooldata_read_entry (src/emc/tooldata/tooldata_common.cc): a word with an unknown letter, or
+    # whose number sscanf cannot read, makes the line invalid; tooldata_load prints "Unrecognized line
+    # skipped" and reads on.  A line without T is stored as tool -1 (no tool).  So the table below gives
+    # LinuxCNC exactly T2 (Z80 mm) and T5 (Z7 mm), and the import the same, with notes.
+    (tmp_path / "t.tbl").write_text("TOOLNO POCKET LENGTH\n  1  1  +0.5\nT2 P2 Z80 D10\nP3 Z5\n"
+                                    "T4 P4 Zabc\nt5 p5 z7 ; lower case is read (toupper)\n")
+    p = _ini(tmp_path, BASE + "[EMCIO]\nTOOL_TABLE = t.tbl\n")
+    r = import_machine(p)
+    assert r.machine.tool_lengths == {2: F(80), 5: F(7)}
+    skipped = [n for n in r.notes if n.code == "IM204"]
+    assert [n.span.line for n in skipped] == [1, 2, 4, 5]
+    assert all(n.severity is Severity.NOTE for n in skipped)
+
+
+def test_a_number_sscanf_reads_only_in_part_is_still_an_error(tmp_path):
+    # "Z1,5": sscanf("%lf") reads 1 and LinuxCNC takes Z1; the import refuses to guess between 1 and 1.5
+    (tmp_path / "t.tbl").write_text("T1 P1 Z1,5\n")
+    p = _ini(tmp_path, BASE + "[EMCIO]\nTOOL_TABLE = t.tbl\n")
+    with pytest.raises(MachineImportError) as e:
+        import_machine(p)
+    assert _codes(e.value) == ["IM102"]
+    assert "reads only the number at its start" in e.value.diagnostics[0].message
+
+
+def test_a_symlinked_tool_table_is_followed_and_a_stored_link_is_named(tmp_path):
+    (tmp_path / "real").mkdir()
+    (tmp_path / "real" / "shop.tbl").write_text("T3 P3 Z42\n")
+    (tmp_path / "linked.tbl").symlink_to(tmp_path / "real" / "shop.tbl")
+    p = _ini(tmp_path, BASE + "[EMCIO]\nTOOL_TABLE = linked.tbl\n")
+    assert import_machine(p).machine.tool_lengths == {3: F(42)}
+    # the same link written as a plain file holding its target (a checkout without symlinks): LinuxCNC skips
+    # that one line, so no tools; the note says what the file is and how to get the table read
+    (tmp_path / "linked.tbl").unlink()
+    (tmp_path / "linked.tbl").write_text("real/shop.tbl")
+    r = import_machine(p)
+    assert r.machine.tool_lengths == {}
+    (note,) = [n for n in r.notes if n.code == "IM204"]
+    assert "symbolic link stored as a file" in note.message and "--tool-table" in note.message
