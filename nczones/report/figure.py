@@ -50,13 +50,15 @@ def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> lis
     [('X', 'Y'), ('X', 'Z')]
     >>> relevant_planes(load_machine("specs/machines/grinder.toml"))
     [('X', 'Y')]
+    >>> relevant_planes(load_machine("specs/machines/fanuc_lathe.toml"))  # a lathe: Z horizontal, X up
+    [('Z', 'X')]
     """
     names = machine.axis_names
     order = {a: i for i, a in enumerate(names)}
     if len(names) < 2:
         return []
     if len(names) == 2:
-        return [(names[0], names[1])]
+        return [("Z", "X")] if _lathe_like(machine) else [(names[0], names[1])]
 
     def pair(a: str, b: str) -> tuple[str, str]:
         return (a, b) if order[a] < order[b] else (b, a)
@@ -85,7 +87,15 @@ def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> lis
                 add(pair(outside[0], next(a for a in names if a != outside[0])))
     if not planes:
         planes.append((names[0], names[1]))
+    if _lathe_like(machine):  # lathe programmers read Z horizontal, X up
+        planes = [("Z", "X") if set(p) == {"X", "Z"} else p for p in planes]
+        planes = list(dict.fromkeys(planes))
     return planes[:limit]
+
+
+def _lathe_like(machine: Any) -> bool:
+    """A lathe (``[machine] type = "lathe"``) or a two-axis X/Z machine."""
+    return bool(getattr(machine, "is_lathe", False)) or set(machine.axis_names) == {"X", "Z"}
 
 
 @dataclass
@@ -288,7 +298,7 @@ def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
 
 def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane: Sequence[str] | None = None,
                  result: Any = None, *, ax: Any = None, path: PathFloat | None = None, title: str | None = None,
-                 legend: bool = True) -> Any:
+                 legend: bool = True, diameter: bool = False) -> Any:
     """Draw a program's toolpath over the allowed set of a machine; returns the figure.
 
     Parameters
@@ -306,6 +316,9 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         Draw into it (its figure is returned).
     path : PathFloat, optional
         A path already collected by :func:`collect_path` (saves interpreting again).
+    diameter : bool
+        Read the machine's ``diameter_axes`` (a lathe's X) in diameter: tick labels twice the machine
+        coordinate, the axis label says so.  The drawn data stay machine coordinates (radius).
 
     Returns
     -------
@@ -397,7 +410,15 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
     if path.drawn < path.segments:
         ax.text(0.99, 0.01, f"{path.segments - path.drawn} of {path.segments} segments not drawn",
                 transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="#555555")
-    ax.set_title(title if title is not None else f"{machine.name}: {plane[0]}{plane[1]} plane")
+    if diameter:
+        from matplotlib.ticker import FuncFormatter
+
+        unit = {a.name: ("deg" if a.rotary else "mm") for a in machine.axes}
+        for axis_name, mpl_axis in zip(plane, (ax.xaxis, ax.yaxis)):
+            if axis_name in getattr(machine, "diameter_axes", ()):
+                mpl_axis.set_major_formatter(FuncFormatter(lambda x, _pos: f"{2 * x:g}"))
+                mpl_axis.set_label_text(f"{axis_name} (diameter, {unit[axis_name]})")
+    ax.set_title(title if title is not None else f"{machine.name}: {plane[0]}{plane[1]} plane", fontsize=10, wrap=True)
     if legend:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, framealpha=0.9, borderaxespad=0)
     fig.tight_layout()

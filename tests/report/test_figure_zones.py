@@ -135,3 +135,19 @@ def test_plot_machine_draws_tip_zones_for_the_tool_in_use():
     b = jaws[0].get_bbox()
     assert (b.x0, b.x1, b.y0, b.y1) == (150, 190, 105, 112)
     plt.close(ax.figure)
+
+
+def test_lathe_view_z_horizontal_x_up_and_diameter():
+    """A lathe's default view puts Z horizontal and X up; diameter=True labels X ticks as diameters (twice the
+    machine radius) while the drawn data stay machine coordinates (the witness X111 radius)."""
+    m = load_machine(MACHINES / "fanuc_lathe.toml")
+    source = str(EX / "programs/g71_jaws.nc")
+    result = verify(source, m)
+    assert relevant_planes(m, result)[0] == ("Z", "X")
+    fig = plot_program(source, m, result=result, diameter=True)
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == "Z (mm)" and ax.get_ylabel() == "X (diameter, mm)"
+    assert ax.yaxis.get_major_formatter()(50.0, 0) == "100"
+    sc = next(c for c in ax.collections if c.get_gid() == "counterexample")
+    assert sc.get_offsets().tolist()[0][1] == 111.0  # X111 radius, the turret in machine coordinates
+    plt.close(fig)
