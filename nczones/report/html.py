@@ -31,6 +31,7 @@ from .. import __version__
 from ..errors import program_lines
 from ..exact import format_decimal
 from ..prover.result import Result
+from . import numbers
 
 __all__ = ["render_html"]
 
@@ -68,9 +69,6 @@ def _e(text: object) -> str:
 def _d(x: Fraction) -> str:
     return format_decimal(x, 12)
 
-
-def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
-    return " ".join(f"{a}{_d(v)}" for a, v in pairs)
 
 
 def _svg(fig: Any, salt: str) -> str:
@@ -195,7 +193,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
         ("Solver", _e(result.solver + ("" if deterministic else f" {result.solver_version}"))
                    + f"; engine {_e(result.engine)}"),
         ("nczones", _e(__version__)),
-        ("Checked", _e(", ".join(f"{k} {v}" for k, v in stats.items()) or "—")),
+        ("Checked", _e(numbers.checked_in_words(stats))),
     ]
     if not deterministic and result.timings:
         rows.append(("Timings", _e(", ".join(f"{k.removesuffix('_s')} {t:.3f} s" for k, t in result.timings))))
@@ -204,6 +202,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
     summary = "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in rows)
 
     # violations table
+    res = numbers.resolution_of(machine)
     hot: dict[int, str] = {}
     vrows = []
     for i, v in enumerate(result.violations, 1):
@@ -211,14 +210,14 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
         if ln is not None:
             hot.setdefault(ln, f"violation[{v.zone}]")
         link = f'<a href="#L{ln}">{ln}:{v.span.column}</a>' if ln is not None and v.span else "—"
-        depth = ("≥ " if not v.depth_exact else "") + _d(v.depth)
+        depth = ("≥ " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact, numbers.depth_step(res))
         params = ", ".join([f"{n}={_d(x)}" for n, x in v.params] + [f"{s.replace('_', '-')} {p}" for s, p in v.switches])
         vrows.append(
             f'<tr class="violation" id="v{i}"><td>{link}</td><td><code>{_e(v.source)}</code></td>'
             f"<td>{_e(v.zone)}</td><td>{_e(v.kind)}: {_e(v.segment_kind)}"
             f"{(' (' + _e(v.derived) + ')') if v.derived else ''}</td>"
-            f"<td><code>{_e(_pt(v.point))}</code></td><td>{_e(depth)} mm</td>"
-            f"<td><code>{_e(_pt(v.first_exit))}</code></td><td>{_e(params) or '—'}</td>"
+            f"<td><code>{_e(numbers.point(v.point, res))}</code></td><td>{_e(depth)} mm</td>"
+            f"<td><code>{_e(numbers.point(v.first_exit, res))}</code></td><td>{_e(params) or '—'}</td>"
             f"<td>{_e(v.engine)}</td></tr>")
     unknown_lines = set()
     rrows = []
