@@ -92,6 +92,8 @@ def _check(source, machine_path):
                 checked += 1
             elif not patches["allowed-set"].get_path().contains_point(xy):
                 checked += 1
+            else:  # inside the drawn allowed set: only where the zone's bound is not in this plane
+                assert not set(zone.axes) <= set(plane), (plane, v.zone, xy)
         plt.close(fig)
     assert checked >= 1
 
@@ -151,3 +153,50 @@ def test_lathe_view_z_horizontal_x_up_and_diameter():
     sc = next(c for c in ax.collections if c.get_gid() == "counterexample")
     assert sc.get_offsets().tolist()[0][1] == 111.0  # X111 radius, the turret in machine coordinates
     plt.close(fig)
+
+
+STEPPED_TIP_MILL = """
+[machine]
+name = "mill with a stepped floor for the tool tip"
+units = "mm"
+axes = ["X", "Y", "Z"]
+pulse = "0.001"
+rapid_mode = "linear"
+monitor_period_ms = "2"
+[machine.rapid]
+X = "15000"
+Y = "15000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "400"
+[offsets]
+G54 = { X = "0", Y = "0", Z = "0" }
+[tool_lengths]
+H1 = "120"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "0", Y = "0", Z = "0" }
+max = { X = "600", Y = "400", Z = "400" }
+[[zones]]
+name = "floor"
+kind = "stepped"
+point = "tip"
+reference_axis = "X"
+limited_axis = "Z"
+from = "0"
+regions = [{ upto = "200", min = "50", max = "400" }, { upto = "600", min = "100", max = "400" }]
+"""
+
+
+def test_witness_outside_a_stepped_tip_table(tmp_path):
+    """A stepped table (limit-value table) of the tool tip, moved by the tool length: with H1 = 120 the tip's
+    floor Z100 over X200..600 is machine Z220 there; G1 Z70 at X300 (tip Z70) is below it, machine Z190."""
+    machine = tmp_path / "m.toml"
+    machine.write_text(STEPPED_TIP_MILL, encoding="utf-8")
+    _check(program_text("G21 G90 G54\nG43 H1\nG0 X300 Y50 Z200\nG1 Z70 F100\nM2\n", "t.ngc"), machine)
+    m = load_machine(machine)
+    floor = next(z for z in placed_zones(m, (Fraction(120), ())) if z.name == "floor")
+    assert [(r.upto, r.min) for r in floor.regions] == [(200, 170), (600, 220)]
