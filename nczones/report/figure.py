@@ -263,15 +263,18 @@ def placed_zones(machine: Machine, placement: Placement | None) -> tuple[Zone, .
 
 
 def placement_label(machine: Machine, placement: Placement | None) -> str:
-    """How a placement reads in a legend: ``"tool tip, tool offset Z50 X80"``."""
+    """How a placement reads in a legend: ``"tool tip, tool offset Z50 X80"`` (a lathe), ``"tool tip, tool length
+    120"`` (a mill)."""
     from ..exact import format_decimal
 
     if placement is None:
         return "tool tip"
     length, tip = placement
+    others = [f"{a}{format_decimal(v)}" for a, v in tip if v]
+    if not others:  # a mill: the tool length alone
+        return f"tool tip, tool length {format_decimal(length)}" if length else "tool tip"
     parts = ([f"{machine.allowed.tool_axis}{format_decimal(length)}"] if length and machine.allowed.tool_axis else [])
-    parts += [f"{a}{format_decimal(v)}" for a, v in tip if v]
-    return "tool tip, tool offset " + " ".join(parts) if parts else "tool tip"
+    return "tool tip, tool offset " + " ".join(parts + others)
 
 
 def drawing_placements(path: PathFloat) -> list[Placement]:
@@ -298,7 +301,7 @@ def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
 
 def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane: Sequence[str] | None = None,
                  result: Any = None, *, ax: Any = None, path: PathFloat | None = None, title: str | None = None,
-                 legend: bool = True, diameter: bool = False) -> Any:
+                 legend: bool = True, diameter: bool = False, zoom: bool = False) -> Any:
     """Draw a program's toolpath over the allowed set of a machine; returns the figure.
 
     Parameters
@@ -319,6 +322,9 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
     diameter : bool
         Read the machine's ``diameter_axes`` (a lathe's X) in diameter: tick labels twice the machine
         coordinate, the axis label says so.  The drawn data stay machine coordinates (radius).
+    zoom : bool
+        Show only the violations (with ``result``): the violating blocks' paths, counterexample points and
+        first exits, padded; everything is still drawn (pan or reset the limits to see the whole machine).
 
     Returns
     -------
@@ -407,6 +413,8 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         padx, pady = 0.03 * (max(x1, hi[0]) - min(x0, lo[0])), 0.03 * (max(y1, hi[1]) - min(y0, lo[1]))
         ax.set_xlim(min(x0, lo[0] - padx), max(x1, hi[0] + padx))
         ax.set_ylim(min(y0, lo[1] - pady), max(y1, hi[1] + pady))
+    if zoom and result is not None and result.violations:
+        _zoom_to_violations(ax, path, result, plane, h, v)
     if path.drawn < path.segments:
         ax.text(0.99, 0.01, f"{path.segments - path.drawn} of {path.segments} segments not drawn",
                 transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="#555555")
@@ -423,6 +431,25 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, framealpha=0.9, borderaxespad=0)
     fig.tight_layout()
     return fig
+
+
+def _zoom_to_violations(ax: Any, path: PathFloat, result: Any, plane: tuple[str, str], h: int, v: int) -> None:
+    """Set the view to the violating paths, witnesses and first exits (padded by a quarter, at least 5 units)."""
+    from ..exact import to_float
+
+    pts = [p[:, [h, v]] for p, _ in path.hot_curves]
+    for x in result.violations:
+        for q in (dict(x.point), dict(x.first_exit)):
+            if plane[0] in q and plane[1] in q:
+                pts.append(np.asarray([[to_float(q[plane[0]]), to_float(q[plane[1]])]]))
+    if not pts:
+        return
+    stacked = np.concatenate([np.asarray(p).reshape(-1, 2) for p in pts])
+    lo, hi = stacked.min(axis=0), stacked.max(axis=0)
+    half = np.maximum((hi - lo) * 0.75, 5.0)  # the extent plus a quarter on each side, at least 5 mm
+    mid = (lo + hi) / 2
+    ax.set_xlim(mid[0] - half[0], mid[0] + half[0])
+    ax.set_ylim(mid[1] - half[1], mid[1] + half[1])
 
 
 def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any, *, tip_label: str = "tool tip") -> Any:

@@ -200,3 +200,19 @@ def test_witness_outside_a_stepped_tip_table(tmp_path):
     m = load_machine(machine)
     floor = next(z for z in placed_zones(m, (Fraction(120), ())) if z.name == "floor")
     assert [(r.upto, r.min) for r in floor.regions] == [(200, 170), (600, 220)]
+
+
+def test_zoom_to_the_violation_keeps_the_witness_in_view():
+    """helix_into_vise_corner: the helix is a few pixels of a 600 x 400 travel; zoom=True shows the violating
+    block and its witness (X106 Y68, first exit at the vise corner X110 Y60), the whole machine stays drawn."""
+    m = load_machine(MACHINES / "mill.toml")
+    source = str(EX / "programs/helix_into_vise_corner.ngc")
+    result = verify(source, m)
+    fig = plot_program(source, m, ("X", "Y"), result, zoom=True)
+    ax = fig.axes[0]
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    for q in (dict(result.violations[0].point), dict(result.violations[0].first_exit)):
+        assert x0 < float(q["X"]) < x1 and y0 < float(q["Y"]) < y1
+    assert x1 - x0 < 100 and y1 - y0 < 100  # not the 600 x 400 travel
+    assert "allowed-set" in _patches(ax)
+    plt.close(fig)
