@@ -24,7 +24,7 @@ from __future__ import annotations
 import os
 import types
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import Any
 
@@ -414,7 +414,7 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         ax.set_xlim(min(x0, lo[0] - padx), max(x1, hi[0] + padx))
         ax.set_ylim(min(y0, lo[1] - pady), max(y1, hi[1] + pady))
     if zoom and result is not None and result.violations:
-        _zoom_to_violations(ax, path, result, plane, h, v)
+        _zoom_to_violations(ax, path, result, plane, machine)
     if path.drawn < path.segments:
         ax.text(0.99, 0.01, f"{path.segments - path.drawn} of {path.segments} segments not drawn",
                 transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="#555555")
@@ -433,23 +433,53 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
     return fig
 
 
-def _zoom_to_violations(ax: Any, path: PathFloat, result: Any, plane: tuple[str, str], h: int, v: int) -> None:
-    """Set the view to the violating paths, witnesses and first exits (padded by a quarter, at least 5 units)."""
+def violation_view(path: PathFloat, result: Any, plane: Sequence[str], machine: Machine) -> Any:
+    """The view ``((x0, x1), (y0, y1))`` around the violating paths, witnesses and first exits in ``plane``
+    (their extent plus a quarter on each side, at least 5 units either way); None when nothing shows there."""
     from ..exact import to_float
 
+    h, v = machine.axis_names.index(plane[0]), machine.axis_names.index(plane[1])
     pts = [p[:, [h, v]] for p, _ in path.hot_curves]
     for x in result.violations:
         for q in (dict(x.point), dict(x.first_exit)):
             if plane[0] in q and plane[1] in q:
                 pts.append(np.asarray([[to_float(q[plane[0]]), to_float(q[plane[1]])]]))
     if not pts:
-        return
+        return None
     stacked = np.concatenate([np.asarray(p).reshape(-1, 2) for p in pts])
     lo, hi = stacked.min(axis=0), stacked.max(axis=0)
-    half = np.maximum((hi - lo) * 0.75, 5.0)  # the extent plus a quarter on each side, at least 5 mm
+    half = np.maximum((hi - lo) * 0.75, 5.0)
     mid = (lo + hi) / 2
-    ax.set_xlim(mid[0] - half[0], mid[0] + half[0])
-    ax.set_ylim(mid[1] - half[1], mid[1] + half[1])
+    return (mid[0] - half[0], mid[0] + half[0]), (mid[1] - half[1], mid[1] + half[1])
+
+
+def path_within(path: PathFloat, plane: Sequence[str], machine: Machine, view: Any) -> PathFloat:
+    """``path`` without the feeds and rapids whose box misses ``view`` in ``plane`` (a zoomed figure draws only
+    what it shows; the violating blocks are always kept)."""
+    h, v = machine.axis_names.index(plane[0]), machine.axis_names.index(plane[1])
+    (x0, x1), (y0, y1) = view
+
+    def meets(a: np.ndarray) -> np.ndarray:  # a: (n, k, naxes) -> (n,) bool
+        lo, hi = a.min(axis=1), a.max(axis=1)
+        return (hi[:, h] >= x0) & (lo[:, h] <= x1) & (hi[:, v] >= y0) & (lo[:, v] <= y1)
+
+    def lines(arrs: list[np.ndarray]) -> list[np.ndarray]:
+        kept = [a[meets(a)] for a in arrs if len(a)]
+        return [a for a in kept if len(a)]
+
+    def curves(arrs: list[np.ndarray]) -> list[np.ndarray]:
+        return [c for c in arrs if len(c) and bool(meets(c[None, :, :])[0])]
+
+    return replace(path, feed_lines=lines(path.feed_lines), rapid_lines=lines(path.rapid_lines),
+                   feed_curves=curves(path.feed_curves), rapid_curves=curves(path.rapid_curves))
+
+
+def _zoom_to_violations(ax: Any, path: PathFloat, result: Any, plane: tuple[str, str], machine: Machine) -> None:
+    """Set the view to :func:`violation_view`."""
+    view = violation_view(path, result, plane, machine)
+    if view is not None:
+        ax.set_xlim(*view[0])
+        ax.set_ylim(*view[1])
 
 
 def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any, *, tip_label: str = "tool tip") -> Any:

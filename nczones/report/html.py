@@ -144,7 +144,14 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
 
     from ..errors import InputError
     from ..gcode.source import as_source
-    from .figure import collect_path, hot_passes, plot_program, relevant_planes
+    from .figure import (
+        collect_path,
+        hot_passes,
+        path_within,
+        plot_program,
+        relevant_planes,
+        violation_view,
+    )
 
     program = program if program is not None else result.file
     if program:
@@ -173,7 +180,20 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
                          if not m.group(2).startswith(("counterexample", "first-exit", "violating-block",
                                                        "toolpath", "allowed-set", "forbid-")) else m.group(0), svg)
             plt.close(fig)
-            figures.append((plane, svg))
+            figures.append((plane, svg, False))
+            # the same plane around the violations (a violation is often a few pixels of the whole machine);
+            # only what that view shows is drawn, its ids prefixed so the page's ids stay unique
+            view = violation_view(path, result, plane, machine) if result.violations else None
+            if view is not None:
+                near = path_within(path, plane, machine, view)
+                fig = plot_program(program, machine, plane, result, path=near, zoom=True,
+                                   title=f"{machine.name}: {plane[0]}{plane[1]} plane, around the violations")
+                fig.set_size_inches(9, 5.2)
+                svg = _svg(fig, f"nczones-{k}z")
+                svg = re.sub(r'(id="|url\(#|href="#)([A-Za-z_][\w.-]*)',
+                             lambda m: f"{m.group(1)}f{k}z-{m.group(2)}", svg)  # noqa: B023 - called within this iteration
+                plt.close(fig)
+                figures.append((plane, svg, True))
 
     # summary
     stats = dict(result.stats)
@@ -242,7 +262,12 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
     ]
     if figures:
         parts.append('<section id="plots"><h2>Toolpath and allowed set</h2>')
-        for plane, svg in figures:
+        for plane, svg, zoomed in figures:
+            if zoomed:
+                parts.append(f'<figure class="plot zoom" data-plane="{_e(plane[0])}{_e(plane[1])}">{svg}'
+                             f"<figcaption>{_e(plane[0])}{_e(plane[1])} plane around the violations (the figure "
+                             "above shows the whole machine).</figcaption></figure>")
+                continue
             parts.append(f'<figure class="plot" data-plane="{_e(plane[0])}{_e(plane[1])}">{svg}'
                          f"<figcaption>{_e(plane[0])}{_e(plane[1])} plane: allowed set green, forbidden "
                          "zones hatched red, feeds solid, rapids dashed, violating blocks red, "
