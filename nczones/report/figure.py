@@ -461,7 +461,8 @@ def path_within(path: PathFloat, plane: Sequence[str], machine: Machine, view: A
 
     def meets(a: np.ndarray) -> np.ndarray:  # a: (n, k, naxes) -> (n,) bool
         lo, hi = a.min(axis=1), a.max(axis=1)
-        return (hi[:, h] >= x0) & (lo[:, h] <= x1) & (hi[:, v] >= y0) & (lo[:, v] <= y1)
+        inside: np.ndarray = (hi[:, h] >= x0) & (lo[:, h] <= x1) & (hi[:, v] >= y0) & (lo[:, v] <= y1)
+        return inside
 
     def lines(arrs: list[np.ndarray]) -> list[np.ndarray]:
         kept = [a[meets(a)] for a in arrs if len(a)]
