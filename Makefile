@@ -11,7 +11,7 @@ STAMP := $(VENV)/.installed
 RUNTIME := $(VENV)/.installed-runtime
 PYTEST_ARGS ?=
 
-.PHONY: demo test lint typecheck bench clean
+.PHONY: demo test lint typecheck bench clean notebooks
 
 $(VENV)/bin/python:
 	$(PYTHON) -m venv $(VENV)
@@ -49,6 +49,9 @@ lint: $(STAMP)
 
 typecheck: $(STAMP)
 	$(BIN)/mypy
+
+notebooks: $(STAMP)  # run the teaching notebooks and save them with their outputs
+	$(BIN)/python -m tests.tools.run_notebooks
 
 clean:
 	rm -rf $(VENV) build dist *.egg-info

@@ -4,7 +4,8 @@ The matrix comes as text (one row per program, one column per machine,
 ``.`` safe, ``X`` unsafe, ``?`` unknown, ``E`` error, blank: the program
 does not run on that machine, ``-`` not verified yet), as JSON
 (:func:`status_json`) or as an HTML page (:func:`write_status_html`) whose
-cells link to each job's text and JSON report, written beside the page.
+cells link to each job's text and JSON report, written beside the page, with
+totals per program and per machine.
 
 A diff compares the cells of the latest run with those of the run before
 (:func:`diff_runs`): newly unsafe first, then newly unknown or error, then
@@ -15,6 +16,7 @@ from __future__ import annotations
 
 import html
 import json
+import posixpath
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -26,6 +28,13 @@ __all__ = ["SYMBOLS", "status_text", "status_json", "write_status_html", "Change
 
 SYMBOLS = {"safe": ".", "unsafe": "X", "unknown": "?", "error": "E", None: "-"}
 _RANK = {"unsafe": 0, "error": 1, "unknown": 2, "safe": 3, None: 4}
+
+
+def _totals(cells: list[CellRow]) -> str:
+    """``"1 X, 2 ."``: the cells counted by verdict symbol, worst first."""
+    counts = _counts(cells)
+    return ", ".join(f"{n} {SYMBOLS.get(v if v != 'pending' else None, '-')}"
+                     for v, n in sorted(counts.items(), key=lambda x: _RANK.get(x[0], 5)))
 
 
 def _verdict(c: CellRow) -> str | None:
@@ -129,7 +138,7 @@ body{font-family:system-ui,sans-serif;margin:1.5em;color:#222}
 table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px;text-align:center;font-size:13px}
 th.p,td.p{text-align:left;font-family:monospace}th.m{writing-mode:vertical-rl;transform:rotate(180deg)}
 td.safe{background:#d8f5d0}td.unsafe{background:#f7c5c0;font-weight:bold}td.unknown{background:#fbe9a8}
-td.error{background:#e0c8f0}td.pending{background:#eee}a{color:inherit;text-decoration:none}
+td.error{background:#e0c8f0}td.pending{background:#eee}td.total{font-family:monospace;white-space:nowrap}a{color:inherit;text-decoration:none}
 """
 
 
@@ -154,9 +163,13 @@ def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | 
             f.write_text(text, encoding="utf-8")
             written.append(f)
     e = html.escape
+    # program paths are relative to the project file's folder; a folder they all share is said once, in the header
+    dirs = [posixpath.dirname(p) for p in programs]
+    common = posixpath.commonpath(dirs) if dirs and all(dirs) else ""
     rows = []
     for p in programs:
-        tds = [f'<td class="p">{e(p)}</td>']
+        shown = posixpath.relpath(p, common) if common else p
+        tds = [f'<td class="p" title="{e(p)}">{e(shown)}</td>']
         for m in machines:
             c = grid.get((p, m))
             if c is None:
@@ -172,14 +185,19 @@ def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | 
                            f'<a href="{ref}.json">j</a></td>')
             else:
                 tds.append(f'<td class="{cls}" title="{tip}">{label}</td>')
+        tds.append(f'<td class="total">{e(_totals([grid[(p, m)] for m in machines if (p, m) in grid]))}</td>')
         rows.append("<tr>" + "".join(tds) + "</tr>")
+    rows.append('<tr class="totals"><th class="p">totals per machine</th>'
+                + "".join(f'<td class="total">{e(_totals([grid[(p, m)] for p in programs if (p, m) in grid]))}</td>'
+                          for m in machines) + f'<td class="total">{e(_totals(cells))}</td></tr>')
     counts = ", ".join(f"{n} {v}" for v, n in sorted(_counts(cells).items(), key=lambda x: _RANK.get(x[0], 5)))
     head = "".join(f'<th class="m">{e(m)}</th>' for m in machines)
     page = (f"<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>{e(title)}</title>"
             f"<style>{_CSS}</style></head><body>\n<h1>{e(title)}</h1>\n"
             f"<p>run {run.run_id}{' (interrupted)' if run.interrupted else ''}: {len(cells)} cells: {e(counts)}; "
             f"{run.ran} jobs ran, {run.reused} reused. Each cell links to its text report (and JSON: j).</p>\n"
-            f"<table><tr><th class=\"p\">program</th>{head}</tr>\n" + "\n".join(rows) + "\n</table>\n"
+            f"<table><tr><th class=\"p\">program{e(f' (in {common}/)') if common else ''}</th>{head}"
+            "<th>totals per program</th></tr>\n" + "\n".join(rows) + "\n</table>\n"
             "<p>. safe, X unsafe, ? unknown, E error, - not verified</p>\n</body></html>\n")
     path.write_text(page, encoding="utf-8")
     return written

@@ -37,10 +37,11 @@ def render_report(result: Any, fmt: str = "text", *, machine: Any = None, progra
     :class:`~nczones.gcode.source.ProgramSource`) defaults to ``result.file``.
     """
     if fmt == "text":
+        from .numbers import resolution_of
         from .text import render_text
 
         return render_text(result, program if isinstance(program, str) else "", color=color,
-                           deterministic=deterministic)
+                           deterministic=deterministic, resolution=resolution_of(machine))
     if fmt == "json":
         from ..prover.render import render_json
 

@@ -8,9 +8,13 @@ in red and, when a verification :class:`~nczones.prover.Result` is given,
 its counterexample points (red crosses, SVG id ``counterexample``) and first
 exits (hollow circles, ``first-exit``).
 
-Tool-tip zones are drawn where the *spindle* would have to be for the tip to
-enter them when one tool length is in use (the counterexample points are
-machine coordinates), labelled with that tool length.
+Every zone is drawn where the proof puts it, in machine coordinates (the
+counterexample points are machine coordinates): tool-tip zones are moved by
+the placement of the tool active at the violating block — its length on the
+tool axis and its offsets on the other axes (a lathe's X offset, wear
+included) — with the prover's own :func:`nczones.zones.tip_shifted`
+(:func:`placed_zones`), labelled with that offset; a program whose
+violations saw several tools gets each placement's tip zones.
 
 Floats here are for drawing only; nothing feeds back into a proof.
 """
@@ -28,7 +32,7 @@ import numpy as np
 
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint, tip_offset, tip_shifted
 
 __all__ = ["plot_program", "relevant_planes", "collect_path", "PathFloat"]
 
@@ -46,13 +50,15 @@ def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> lis
     [('X', 'Y'), ('X', 'Z')]
     >>> relevant_planes(load_machine("specs/machines/grinder.toml"))
     [('X', 'Y')]
+    >>> relevant_planes(load_machine("specs/machines/fanuc_lathe.toml"))  # a lathe: Z horizontal, X up
+    [('Z', 'X')]
     """
     names = machine.axis_names
     order = {a: i for i, a in enumerate(names)}
     if len(names) < 2:
         return []
     if len(names) == 2:
-        return [(names[0], names[1])]
+        return [("Z", "X")] if _lathe_like(machine) else [(names[0], names[1])]
 
     def pair(a: str, b: str) -> tuple[str, str]:
         return (a, b) if order[a] < order[b] else (b, a)
@@ -81,7 +87,15 @@ def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> lis
                 add(pair(outside[0], next(a for a in names if a != outside[0])))
     if not planes:
         planes.append((names[0], names[1]))
+    if _lathe_like(machine):  # lathe programmers read Z horizontal, X up
+        planes = [("Z", "X") if set(p) == {"X", "Z"} else p for p in planes]
+        planes = list(dict.fromkeys(planes))
     return planes[:limit]
+
+
+def _lathe_like(machine: Any) -> bool:
+    """A lathe (``[machine] type = "lathe"``) or a two-axis X/Z machine."""
+    return bool(getattr(machine, "is_lathe", False)) or set(machine.axis_names) == {"X", "Z"}
 
 
 @dataclass
@@ -96,6 +110,8 @@ class PathFloat:
     hot_curves: list[tuple[np.ndarray, bool]] = field(default_factory=list)  # (points, rapid)
     tool_lengths: set = field(default_factory=set)
     hot_tool_length: Fraction | None = None
+    placements: set = field(default_factory=set)  # every Placement a segment carries
+    hot_placements: dict = field(default_factory=dict)  # violating block -> Placement of its first hot segment
     segments: int = 0
     drawn: int = 0
 
@@ -157,6 +173,7 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
             return
         if seg.tool_length:
             out.tool_lengths.add(seg.tool_length)
+        out.placements.add(placement_of(seg))
         is_hot = seg.block in hot
         only = passes.get(seg.block) if passes else None
         if is_hot and only is not None and pass_name(seg.derived) not in only:
@@ -168,6 +185,7 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
         if is_hot:
             if out.hot_tool_length is None:
                 out.hot_tool_length = seg.tool_length
+            out.hot_placements.setdefault(seg.block, placement_of(seg))
             out.hot_curves.append((_seg_points(seg, machine), rapid))
         elif not (seg.kind is SegmentKind.LINE or (rapid and not dogleg)):  # curves and doglegs
             (out.rapid_curves if rapid else out.feed_curves).append(_seg_points(seg, machine))
@@ -194,6 +212,8 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
         if len(tl):
             for v in np.unique(tl[tl != 0]):
                 out.tool_lengths.add(Fraction(int(v), 10**chunk.scale))
+            for v in np.unique(tl[idx]):  # column rows carry no tip offset (the prover reads none either)
+                out.placements.add((Fraction(int(v), 10**chunk.scale), ()))
         idx = idx[:room]
         out.drawn += len(idx)
         if len(idx):
@@ -210,29 +230,69 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
     return out
 
 
-def _shifted_machine(machine: Machine, tool_length: Fraction | None) -> tuple[Any, Fraction | None]:
-    """A drawing proxy whose tip boxes sit where the spindle is when the tip touches them."""
-    if not tool_length or machine.tool_axis is None:
-        return machine, None
-    zones: list[Zone] = []
-    shifted = False
-    for z in machine.zones:
-        if z.point is ZonePoint.TIP and isinstance(z, BoxZone) and machine.tool_axis in z.bounds():
-            limits = tuple((a, None if lo is None else lo + tool_length if a == machine.tool_axis else lo,
-                            None if hi is None else hi + tool_length if a == machine.tool_axis else hi)
-                           for a, lo, hi in z.limits)
-            from ..exact import format_decimal
+Placement = tuple[Fraction, tuple[tuple[str, Fraction], ...]]
+"""Where a segment's tool tip is: (tool length on the tool axis, offsets on other axes as ``Segment.extra``'s
+``tip_offset``)."""
 
-            zones.append(replace(z, name=f"{z.name} (at tool length {format_decimal(tool_length)})",
-                                 limits=limits, point=ZonePoint.MACHINE))
-            shifted = True
-        else:
-            zones.append(z)
-    if not shifted:
-        return machine, None
-    proxy = types.SimpleNamespace(name=machine.name, axes=machine.axes, axis_names=machine.axis_names,
-                                  start=machine.start, reference=machine.reference, zones=tuple(zones))
-    return proxy, tool_length
+
+def placement_of(seg: Segment) -> Placement:
+    """The tool placement a segment carries (what its tool-tip zones see)."""
+    return (seg.tool_length or Fraction(0), tuple(sorted(tip_offset(seg.extra).items())) if seg.extra else ())
+
+
+def placed_zones(machine: Machine, placement: Placement | None) -> tuple[Zone, ...]:
+    """The machine's zones in machine coordinates for one tool placement: the tool-tip zones moved by the
+    tool length on the tool axis and by the tool offsets on the other axes, exactly as the prover places
+    them (:func:`nczones.zones.tip_shifted` of the segment's :func:`nczones.zones.tip_offset`, and
+    :meth:`nczones.zones.AllowedSet.seen_by` for the tool length); machine zones unchanged.
+
+    >>> from nczones import load_machine
+    >>> m = load_machine("specs/machines/fanuc_lathe.toml")
+    >>> jaws = next(z for z in placed_zones(m, (Fraction(50), (("X", Fraction(80)),))) if z.name == "jaws")
+    >>> [(a, str(lo), str(hi)) for a, lo, hi in jaws.limits]
+    [('X', '105', '112'), ('Z', '150', '190')]
+    """
+    if placement is None:
+        return tuple(machine.zones)
+    length, tip = placement
+    shift = dict(tip)
+    axis = machine.allowed.tool_axis
+    if length and axis is not None:
+        shift[axis] = shift.get(axis, Fraction(0)) + length
+    return tip_shifted(machine.allowed, shift).zones if any(shift.values()) else tuple(machine.zones)
+
+
+def placement_label(machine: Machine, placement: Placement | None) -> str:
+    """How a placement reads in a legend: ``"tool tip, tool offset Z50 X80"`` (a lathe), ``"tool tip, tool length
+    120"`` (a mill)."""
+    from ..exact import format_decimal
+
+    if placement is None:
+        return "tool tip"
+    length, tip = placement
+    others = [f"{a}{format_decimal(v)}" for a, v in tip if v]
+    if not others:  # a mill: the tool length alone
+        return f"tool tip, tool length {format_decimal(length)}" if length else "tool tip"
+    parts = ([f"{machine.allowed.tool_axis}{format_decimal(length)}"] if length and machine.allowed.tool_axis else [])
+    return "tool tip, tool offset " + " ".join(parts + others)
+
+
+def drawing_placements(path: PathFloat) -> list[Placement]:
+    """The placements to draw tip zones for: those of the violating segments (in order), else the one
+    placement the program uses besides "no tool" (none when it uses several)."""
+    if path.hot_placements:
+        return list(dict.fromkeys(path.hot_placements.values()))
+    used = [p for p in path.placements if p != (Fraction(0), ())]
+    return used if len(used) == 1 else []
+
+
+def _drawing_machine(machine: Machine, placement: Placement | None) -> Any:
+    """A drawing proxy of ``machine`` whose zones are :func:`placed_zones`."""
+    if placement is None:
+        return machine
+    return types.SimpleNamespace(name=machine.name, axes=machine.axes, axis_names=machine.axis_names,
+                                 start=machine.start, reference=machine.reference,
+                                 zones=placed_zones(machine, placement))
 
 
 def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
@@ -241,7 +301,7 @@ def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
 
 def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane: Sequence[str] | None = None,
                  result: Any = None, *, ax: Any = None, path: PathFloat | None = None, title: str | None = None,
-                 legend: bool = True) -> Any:
+                 legend: bool = True, diameter: bool = False, zoom: bool = False) -> Any:
     """Draw a program's toolpath over the allowed set of a machine; returns the figure.
 
     Parameters
@@ -259,6 +319,12 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         Draw into it (its figure is returned).
     path : PathFloat, optional
         A path already collected by :func:`collect_path` (saves interpreting again).
+    diameter : bool
+        Read the machine's ``diameter_axes`` (a lathe's X) in diameter: tick labels twice the machine
+        coordinate, the axis label says so.  The drawn data stay machine coordinates (radius).
+    zoom : bool
+        Show only the violations (with ``result``): the violating blocks' paths, counterexample points and
+        first exits, padded; everything is still drawn (pan or reset the limits to see the whole machine).
 
     Returns
     -------
@@ -300,10 +366,13 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
     if ax is None:
         fig, ax = plt.subplots(figsize=(7.5, 5))
     fig = ax.figure
-    tool_length = path.hot_tool_length if path.hot_tool_length else (
-        next(iter(path.tool_lengths)) if len(path.tool_lengths) == 1 else None)
-    drawing_machine, _ = _shifted_machine(machine, tool_length)
-    draw_allowed_set(drawing_machine, plane, ax)
+    # every zone where the proof puts it: tip zones moved by the placement of the tool active at each
+    # violating block (each further placement adds its own tip zones), machine zones as they are
+    placements = drawing_placements(path)
+    first = placements[0] if placements else None
+    draw_allowed_set(_drawing_machine(machine, first), plane, ax, tip_label=placement_label(machine, first))
+    for k, extra in enumerate(placements[1:], start=2):
+        draw_tip_zones(_drawing_machine(machine, extra), plane, ax, placement_label(machine, extra), k)
     blue = "#1f4e9c"
     feeds = [a[:, :, [h, v]] for a in path.feed_lines]
     feed_segs = (list(np.concatenate(feeds)) if feeds else []) + _project(path.feed_curves, h, v)
@@ -344,17 +413,77 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         padx, pady = 0.03 * (max(x1, hi[0]) - min(x0, lo[0])), 0.03 * (max(y1, hi[1]) - min(y0, lo[1]))
         ax.set_xlim(min(x0, lo[0] - padx), max(x1, hi[0] + padx))
         ax.set_ylim(min(y0, lo[1] - pady), max(y1, hi[1] + pady))
+    if zoom and result is not None and result.violations:
+        _zoom_to_violations(ax, path, result, plane, machine)
     if path.drawn < path.segments:
         ax.text(0.99, 0.01, f"{path.segments - path.drawn} of {path.segments} segments not drawn",
                 transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="#555555")
-    ax.set_title(title if title is not None else f"{machine.name}: {plane[0]}{plane[1]} plane")
+    if diameter:
+        from matplotlib.ticker import FuncFormatter
+
+        unit = {a.name: ("deg" if a.rotary else "mm") for a in machine.axes}
+        for axis_name, mpl_axis in zip(plane, (ax.xaxis, ax.yaxis)):
+            if axis_name in getattr(machine, "diameter_axes", ()):
+                mpl_axis.set_major_formatter(FuncFormatter(lambda x, _pos: f"{2 * x:g}"))
+                mpl_axis.set_label_text(f"{axis_name} (diameter, {unit[axis_name]})")
+    ax.set_title(title if title is not None else f"{machine.name}: {plane[0]}{plane[1]} plane", fontsize=10, wrap=True)
     if legend:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, framealpha=0.9, borderaxespad=0)
     fig.tight_layout()
     return fig
 
 
-def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any) -> Any:
+def violation_view(path: PathFloat, result: Any, plane: Sequence[str], machine: Machine) -> Any:
+    """The view ``((x0, x1), (y0, y1))`` around the violating paths, witnesses and first exits in ``plane``
+    (their extent plus a quarter on each side, at least 5 units either way); None when nothing shows there."""
+    from ..exact import to_float
+
+    h, v = machine.axis_names.index(plane[0]), machine.axis_names.index(plane[1])
+    pts = [p[:, [h, v]] for p, _ in path.hot_curves]
+    for x in result.violations:
+        for q in (dict(x.point), dict(x.first_exit)):
+            if plane[0] in q and plane[1] in q:
+                pts.append(np.asarray([[to_float(q[plane[0]]), to_float(q[plane[1]])]]))
+    if not pts:
+        return None
+    stacked = np.concatenate([np.asarray(p).reshape(-1, 2) for p in pts])
+    lo, hi = stacked.min(axis=0), stacked.max(axis=0)
+    half = np.maximum((hi - lo) * 0.75, 5.0)
+    mid = (lo + hi) / 2
+    return (mid[0] - half[0], mid[0] + half[0]), (mid[1] - half[1], mid[1] + half[1])
+
+
+def path_within(path: PathFloat, plane: Sequence[str], machine: Machine, view: Any) -> PathFloat:
+    """``path`` without the feeds and rapids whose box misses ``view`` in ``plane`` (a zoomed figure draws only
+    what it shows; the violating blocks are always kept)."""
+    h, v = machine.axis_names.index(plane[0]), machine.axis_names.index(plane[1])
+    (x0, x1), (y0, y1) = view
+
+    def meets(a: np.ndarray) -> np.ndarray:  # a: (n, k, naxes) -> (n,) bool
+        lo, hi = a.min(axis=1), a.max(axis=1)
+        inside: np.ndarray = (hi[:, h] >= x0) & (lo[:, h] <= x1) & (hi[:, v] >= y0) & (lo[:, v] <= y1)
+        return inside
+
+    def lines(arrs: list[np.ndarray]) -> list[np.ndarray]:
+        kept = [a[meets(a)] for a in arrs if len(a)]
+        return [a for a in kept if len(a)]
+
+    def curves(arrs: list[np.ndarray]) -> list[np.ndarray]:
+        return [c for c in arrs if len(c) and bool(meets(c[None, :, :])[0])]
+
+    return replace(path, feed_lines=lines(path.feed_lines), rapid_lines=lines(path.rapid_lines),
+                   feed_curves=curves(path.feed_curves), rapid_curves=curves(path.rapid_curves))
+
+
+def _zoom_to_violations(ax: Any, path: PathFloat, result: Any, plane: tuple[str, str], machine: Machine) -> None:
+    """Set the view to :func:`violation_view`."""
+    view = violation_view(path, result, plane, machine)
+    if view is not None:
+        ax.set_xlim(*view[0])
+        ax.set_ylim(*view[1])
+
+
+def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any, *, tip_label: str = "tool tip") -> Any:
     """Draw the allowed set in ``plane``: the intersection of the allow zones green, forbid zones hatched.
 
     Each zone is projected to the plane (the drawing of :mod:`nczones.report.plot`);
@@ -419,7 +548,7 @@ def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any) -> Any:
         g = geom(z)
         if g is None:
             continue
-        tip = ", tool tip" if z.point is ZonePoint.TIP else ""
+        tip = f", {tip_label}" if z.point is ZonePoint.TIP else ""
         p = patch(g, facecolor="#e06666", alpha=0.4, hatch="//", edgecolor="#b22222", zorder=2,
                   label=f"{z.name} (forbidden{tip})")
         if p is not None:
@@ -430,3 +559,43 @@ def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any) -> Any:
     ax.set_xlabel(f"{plane[0]} ({unit[plane[0]]})")
     ax.set_ylabel(f"{plane[1]} ({unit[plane[1]]})")
     return ax
+
+
+def draw_tip_zones(machine: Any, plane: tuple[str, str], ax: Any, label: str, k: int) -> None:
+    """Draw the tool-tip zones of one more tool placement (a program whose violations saw several tools):
+    forbid zones hatched (SVG id ``forbid-NAME@k``), allow zones outlined (``allow-NAME@k``)."""
+    from matplotlib.patches import PathPatch
+    from matplotlib.path import Path as MplPath
+    from shapely.geometry import Polygon as ShapelyPolygon
+    from shapely.geometry import box as shapely_box
+    from shapely.ops import unary_union
+
+    from .plot import zone_patches
+
+    xlim, ylim = ax.get_xlim(), ax.get_ylim()
+    view = shapely_box(-1e8, -1e8, 1e8, 1e8)
+    for z in machine.zones:
+        if z.point is not ZonePoint.TIP:
+            continue
+        drawn = zone_patches(z, plane, xlim, ylim)
+        if drawn is None:
+            continue
+        kind, shapes = drawn
+        g = (unary_union([shapely_box(x, y, x + w, y + hh) for (x, y), w, hh in shapes]) if kind == "rects"
+             else ShapelyPolygon(shapes).buffer(0)).intersection(view)
+        polys = [g] if g.geom_type == "Polygon" else [p for p in getattr(g, "geoms", []) if p.geom_type == "Polygon"]
+        verts, codes = [], []
+        for poly in polys:
+            xy = list(poly.exterior.coords)
+            verts += xy
+            codes += [MplPath.MOVETO] + [MplPath.LINETO] * (len(xy) - 2) + [MplPath.CLOSEPOLY]
+        if not verts:
+            continue
+        if z.forbid:
+            p = ax.add_patch(PathPatch(MplPath(verts, codes), facecolor="#e06666", alpha=0.3, hatch="\\\\",
+                                       edgecolor="#b22222", zorder=2, label=f"{z.name} (forbidden, {label})"))
+            p.set_gid(f"forbid-{z.name}@{k}")
+        else:
+            p = ax.add_patch(PathPatch(MplPath(verts, codes), facecolor="none", edgecolor="#2e7d32", ls="--",
+                                       zorder=2, label=f"{z.name} (allowed, {label})"))
+            p.set_gid(f"allow-{z.name}@{k}")

@@ -31,6 +31,7 @@ from .. import __version__
 from ..errors import program_lines
 from ..exact import format_decimal
 from ..prover.result import Result
+from . import numbers
 
 __all__ = ["render_html"]
 
@@ -68,9 +69,6 @@ def _e(text: object) -> str:
 def _d(x: Fraction) -> str:
     return format_decimal(x, 12)
 
-
-def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
-    return " ".join(f"{a}{_d(v)}" for a, v in pairs)
 
 
 def _svg(fig: Any, salt: str) -> str:
@@ -146,7 +144,14 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
 
     from ..errors import InputError
     from ..gcode.source import as_source
-    from .figure import collect_path, hot_passes, plot_program, relevant_planes
+    from .figure import (
+        collect_path,
+        hot_passes,
+        path_within,
+        plot_program,
+        relevant_planes,
+        violation_view,
+    )
 
     program = program if program is not None else result.file
     if program:
@@ -175,7 +180,20 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
                          if not m.group(2).startswith(("counterexample", "first-exit", "violating-block",
                                                        "toolpath", "allowed-set", "forbid-")) else m.group(0), svg)
             plt.close(fig)
-            figures.append((plane, svg))
+            figures.append((plane, svg, False))
+            # the same plane around the violations (a violation is often a few pixels of the whole machine);
+            # only what that view shows is drawn, its ids prefixed so the page's ids stay unique
+            view = violation_view(path, result, plane, machine) if result.violations else None
+            if view is not None:
+                near = path_within(path, plane, machine, view)
+                fig = plot_program(program, machine, plane, result, path=near, zoom=True,
+                                   title=f"{machine.name}: {plane[0]}{plane[1]} plane, around the violations")
+                fig.set_size_inches(9, 5.2)
+                svg = _svg(fig, f"nczones-{k}z")
+                svg = re.sub(r'(id="|url\(#|href="#)([A-Za-z_][\w.-]*)',
+                             lambda m: f"{m.group(1)}f{k}z-{m.group(2)}", svg)  # noqa: B023 - called within this iteration
+                plt.close(fig)
+                figures.append((plane, svg, True))
 
     # summary
     stats = dict(result.stats)
@@ -195,7 +213,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
         ("Solver", _e(result.solver + ("" if deterministic else f" {result.solver_version}"))
                    + f"; engine {_e(result.engine)}"),
         ("nczones", _e(__version__)),
-        ("Checked", _e(", ".join(f"{k} {v}" for k, v in stats.items()) or "—")),
+        ("Checked", _e(numbers.checked_in_words(stats))),
     ]
     if not deterministic and result.timings:
         rows.append(("Timings", _e(", ".join(f"{k.removesuffix('_s')} {t:.3f} s" for k, t in result.timings))))
@@ -204,6 +222,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
     summary = "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in rows)
 
     # violations table
+    res = numbers.resolution_of(machine)
     hot: dict[int, str] = {}
     vrows = []
     for i, v in enumerate(result.violations, 1):
@@ -211,14 +230,14 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
         if ln is not None:
             hot.setdefault(ln, f"violation[{v.zone}]")
         link = f'<a href="#L{ln}">{ln}:{v.span.column}</a>' if ln is not None and v.span else "—"
-        depth = ("≥ " if not v.depth_exact else "") + _d(v.depth)
+        depth = ("≥ " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact, numbers.depth_step(res))
         params = ", ".join([f"{n}={_d(x)}" for n, x in v.params] + [f"{s.replace('_', '-')} {p}" for s, p in v.switches])
         vrows.append(
             f'<tr class="violation" id="v{i}"><td>{link}</td><td><code>{_e(v.source)}</code></td>'
             f"<td>{_e(v.zone)}</td><td>{_e(v.kind)}: {_e(v.segment_kind)}"
             f"{(' (' + _e(v.derived) + ')') if v.derived else ''}</td>"
-            f"<td><code>{_e(_pt(v.point))}</code></td><td>{_e(depth)} mm</td>"
-            f"<td><code>{_e(_pt(v.first_exit))}</code></td><td>{_e(params) or '—'}</td>"
+            f"<td><code>{_e(numbers.point(v.point, res))}</code></td><td>{_e(depth)} mm</td>"
+            f"<td><code>{_e(numbers.point(v.first_exit, res))}</code></td><td>{_e(params) or '—'}</td>"
             f"<td>{_e(v.engine)}</td></tr>")
     unknown_lines = set()
     rrows = []
@@ -243,7 +262,12 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
     ]
     if figures:
         parts.append('<section id="plots"><h2>Toolpath and allowed set</h2>')
-        for plane, svg in figures:
+        for plane, svg, zoomed in figures:
+            if zoomed:
+                parts.append(f'<figure class="plot zoom" data-plane="{_e(plane[0])}{_e(plane[1])}">{svg}'
+                             f"<figcaption>{_e(plane[0])}{_e(plane[1])} plane around the violations (the figure "
+                             "above shows the whole machine).</figcaption></figure>")
+                continue
             parts.append(f'<figure class="plot" data-plane="{_e(plane[0])}{_e(plane[1])}">{svg}'
                          f"<figcaption>{_e(plane[0])}{_e(plane[1])} plane: allowed set green, forbidden "
                          "zones hatched red, feeds solid, rapids dashed, violating blocks red, "

@@ -250,9 +250,21 @@ def mark_points(points: Iterable[tuple[float, float]], ax: Any, *, label: str = 
 
 
 def plot_machine(machine: Machine, segments: Iterable[Segment] = (), plane: tuple[str, str] | None = None,
-                 ax: Any = None) -> Any:
-    """Zones plus an optional toolpath in one call (the notebooks' entry point)."""
-    ax = plot_zones(machine, plane, ax, legend=False)
+                 ax: Any = None, *, placement: Any = "auto") -> Any:
+    """Zones plus an optional toolpath in one call (the notebooks' entry point).
+
+    Tool-tip zones are drawn where the proof puts them for the machine position
+    (:func:`nczones.report.figure.placed_zones`): ``placement`` is a
+    ``(tool length, tip offsets)`` pair, None for the zones as written, or
+    ``"auto"``: the one tool placement the segments use (besides "no tool").
+    """
+    from .figure import _drawing_machine, placement_of
+
+    segments = list(segments)
+    if placement == "auto":
+        used = {placement_of(s) for s in segments} - {(Fraction(0), ())}
+        placement = next(iter(used)) if len(used) == 1 else None
+    ax = plot_zones(_drawing_machine(machine, placement), plane, ax, legend=False)
     plane = plane or (machine.axis_names[0], machine.axis_names[1])
     plot_path(segments, plane, ax, machine=machine)
     ax.legend(loc="best", fontsize=8, framealpha=0.9)

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from fractions import Fraction
 from pathlib import Path, PurePosixPath
 from typing import Any
@@ -32,6 +32,7 @@ from urllib.parse import quote
 from .. import __version__
 from ..exact import format_decimal, format_rational, seconds
 from ..prover.result import Result
+from . import numbers
 
 __all__ = ["to_sarif", "render_sarif", "RULES", "artifact_uri"]
 
@@ -98,10 +99,6 @@ def artifact_uri(path: str, base: str | os.PathLike | None = None,
     return quote(PurePosixPath(*Path(rel).parts).as_posix()), True
 
 
-def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
-    return " ".join(f"{a}{format_decimal(v)}" for a, v in pairs)
-
-
 def _location(file: str | None, line: int | None, column: int | None, snippet: str,
               base: tuple[str, str]) -> list[dict]:
     if not file or file.startswith("<") or line is None:
@@ -116,15 +113,18 @@ def _location(file: str | None, line: int | None, column: int | None, snippet: s
     return [{"physicalLocation": {"artifactLocation": artifact, "region": region}}]
 
 
-def _result_entries(result: Result, base_abs: tuple[str, str]) -> list[dict]:
+def _result_entries(result: Result, base_abs: tuple[str, str], resolution: dict[str, Fraction] | None = None) -> list[dict]:
     results = []
     for v in result.violations:
         rule = "NCZ002" if v.kind == "recovery" else "NCZ001"
         what = v.segment_kind + (f" ({v.derived})" if v.derived else "")
-        depth = ("at least " if not v.depth_exact else "") + format_decimal(v.depth)
+        # the message is read by people (numbers.py); the properties below keep the exact decimals
+        depth = ("at least " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact,
+                                                                          numbers.depth_step(resolution))
         text = (f"{what} leaves the allowed set (zone \"{v.zone}\"), {depth} mm deep: the point "
-                f"{_pt(v.point)} is outside; " + (f"first exit at {_pt(v.first_exit)}" if v.exit_located else
-                                                  "first exit not located (the path may leave the allowed set earlier)"))
+                f"{numbers.point(v.point, resolution)} is outside; " + (
+                    f"first exit at {numbers.point(v.first_exit, resolution)}" if v.exit_located else
+                    "first exit not located (the path may leave the allowed set earlier)"))
         if v.params:
             text += "; with parameters " + ", ".join(f"{n}={format_decimal(x)}" for n, x in v.params)
         for switch, position in v.switches:
@@ -239,7 +239,7 @@ def to_sarif(result: Result | Sequence[Result], *, base: str | os.PathLike[str] 
     where = (base_abs, os.path.abspath(base_abs if files_from is None else os.fspath(files_from)))
     results = []
     for r in results_in:
-        results.extend(_result_entries(r, where))
+        results.extend(_result_entries(r, where, numbers.resolution_of(machine)))
     if len(results_in) == 1:
         run_props = _program_properties(results_in[0], deterministic)
     else:

@@ -19,13 +19,14 @@ internal counters), for golden files.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+from collections.abc import Mapping
 from fractions import Fraction
 from typing import Any
 
 from ..errors import caret_excerpt
 from ..exact import format_decimal
 from ..prover.result import Result, Verdict
+from . import numbers
 
 __all__ = ["render_text", "use_color"]
 
@@ -59,9 +60,6 @@ def _d(x: Fraction) -> str:
     return format_decimal(x, 12)
 
 
-def _pt(pairs: Iterable[tuple[str, Fraction]]) -> str:
-    return " ".join(f"{a}{_d(v)}" for a, v in pairs)
-
 
 def _par(x: Fraction, exact: bool) -> str:
     return ("" if exact else "~") + format_decimal(x, 6)
@@ -74,7 +72,7 @@ def _caret(text: str, column: int, end_column: int | None) -> tuple[str, str]:
 
 
 def render_text(result: Result, program: str = "", *, color: bool = False,
-                deterministic: bool = False) -> str:
+                deterministic: bool = False, resolution: Mapping[str, Fraction] | None = None) -> str:
     """The compiler-style report of a :class:`~nczones.prover.Result`.
 
     Parameters
@@ -86,6 +84,9 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
         ANSI colours (the CLI passes :func:`use_color` of standard output).
     deterministic : bool
         Leave out timings, the solver version and solver counters.
+    resolution : mapping, optional
+        Axis -> pulse of the machine: points that are not short exact decimals are written rounded to
+        it and marked ``≈``, depths to the finest pulse (:mod:`nczones.report.numbers`).
 
     Examples
     --------
@@ -111,17 +112,18 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
         what = v.segment_kind + (f" ({v.derived})" if v.derived else "")
         if v.kind == "recovery":
             what = "recovery " + what
-        depth = ("at least " if not v.depth_exact else "") + _d(v.depth)
+        depth = ("at least " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact,
+                                                                          numbers.depth_step(resolution))
         out.append(f"{paint('loc', loc + ':')} {paint('violation', f'violation[{v.zone}]:')} "
                    f"{what} leaves the allowed set, {depth} mm deep")
         if v.span is not None and v.span.text:
             src, caret = _caret(v.span.text, v.span.column, v.span.end_column)
             out.append(f"    {src}")
             out.append(f"    {paint('caret', caret)}")
-        out.append(f"    point {_pt(v.point)} is outside the allowed set "
+        out.append(f"    point {numbers.point(v.point, resolution)} is outside the allowed set "
                    f"(segment parameter {_par(v.parameter, v.parameter_exact)})")
         if v.exit_located:
-            out.append(f"    first exit at {_pt(v.first_exit)} "
+            out.append(f"    first exit at {numbers.point(v.first_exit, resolution)} "
                        f"(segment parameter {_par(v.first_exit_parameter, v.first_exit_exact)}); engine {v.engine}")
         else:
             out.append(f"    first exit not located: the point above is outside, the path may leave the allowed set "
@@ -130,7 +132,7 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
         if others:
             out.append("    also outside: " + ", ".join(others))
         if result.margin:
-            out.append(f"    path point {_pt(v.path_point)} is closer than the margin {_d(result.margin)} mm")
+            out.append(f"    path point {numbers.point(v.path_point, resolution)} is closer than the margin {_d(result.margin)} mm")
         if v.params:
             out.append("    with parameters " + ", ".join(f"{n}={_d(x)}" for n, x in v.params))
         for switch, position in v.switches:

@@ -61,7 +61,8 @@ def test_report_is_self_contained_and_complete():
     for line in (5, 6, 8, 9):
         assert f'<a href="#L{line}">' in page and re.search(rf'class="line hot" id="L{line}"', page)
     assert 'class="line" id="L4"' in page
-    assert page.count("<svg") == 1 and 'id="counterexample"' in page and 'id="violating-block-1"' in page
+    # the whole plane and the same plane around the violations (ids of the second prefixed: unique in the page)
+    assert page.count("<svg") == 2 and page.count('id="counterexample"') == 1 and 'id="violating-block-1"' in page
     assert "z3 " + result.solver_version in page and "Timings" in page
     # user text is escaped: the program's comment holds "& back <out>"
     assert "&amp; back &lt;out&gt;" in page and "<out>" not in page
@@ -96,8 +97,8 @@ max = { X = "10", Y = "10" }
 def test_mill_report_plots_the_planes_the_zones_use():
     result, m = run_example("programs/drill_vise.ngc", "mill.toml")
     page = render_html(result, m, str(EX / "programs/drill_vise.ngc"))
-    assert re.findall(r'data-plane="(\w+)"', page) == ["XY", "XZ"]
-    assert page.count('id="counterexample"') == 2  # marked in both planes
+    assert re.findall(r'<figure class="plot" data-plane="(\w+)"', page) == ["XY", "XZ"]
+    assert page.count('id="counterexample"') == 2  # marked in both planes (the zoomed figures' ids are prefixed)
 
 
 def test_unknown_report_lists_the_reason():
@@ -162,7 +163,7 @@ def test_chromium_renders_the_report_with_the_violation_marked(tmp_path):
     probe.feed(r.stdout)
     assert probe.body_attrs.get("data-rendered") == "yes"  # the inline script ran
     assert probe._count_text == "1"
-    assert probe.svg_in_figure == 1
+    assert probe.svg_in_figure == 2  # the whole plane and the zoom around the violation
     tag, attrs = probe.ids["counterexample"]
     assert tag == "g"  # matplotlib's group holding the marker paths
     assert "violating-block-1" in probe.ids and "allowed-set" in probe.ids
@@ -196,3 +197,17 @@ def test_cli_html(tmp_path):
     assert r.returncode == 1, r.stderr
     page = out.read_text(encoding="utf-8")
     assert 'id="counterexample"' in page and '<tr class="violation"' in page
+
+
+def test_zoomed_figure_around_the_violation_ids_unique():
+    """Issue 37: the helix of helix_into_vise_corner is a few pixels of the 600 x 400 travel; the report adds each
+    plane around the violations, drawing only what that view shows, and every id in the page stays unique."""
+    result, m = run_example("programs/helix_into_vise_corner.ngc", "mill.toml")
+    page = render_html(result, m, str(EX / "programs/helix_into_vise_corner.ngc"), deterministic=True)
+    # the zoomed figures add no id of the whole-plane figures (their own are prefixed f<k>z-)
+    assert page.count('id="counterexample"') == 2 and page.count('id="allowed-set"') == 2
+    zoom_ids = [i for i in re.findall(r'\bid="([^"]+)"', page) if re.match(r"f\dz-", i)]
+    assert zoom_ids and len(zoom_ids) == len(set(zoom_ids))
+    zooms = re.findall(r'<figure class="plot zoom" data-plane="(\w+)">', page)
+    assert zooms == ["XY", "XZ"]
+    assert "f0z-counterexample" in page and "around the violations" in page

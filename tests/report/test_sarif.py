@@ -9,6 +9,7 @@ from importlib import resources
 import jsonschema
 import pytest
 
+from nczones.report import numbers
 from nczones.report.sarif import RULES, artifact_uri, to_sarif
 
 from .helpers import EX, GOLDEN, run_example
@@ -43,8 +44,9 @@ def test_sarif_validates_against_the_schema(program, base, machine, opts):
         assert (region["startLine"], region["startColumn"]) == (v.line, v.span.column)
         assert res["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == program
         assert res["ruleId"] == "NCZ001" and res["level"] == "error"
-        point = " ".join(f"{a}{x}" for a, x in res["properties"]["point"].items())
-        assert point in res["message"]["text"]  # the counterexample is in the message
+        assert list(res["properties"]["point"]) == [a for a, _ in v.point]
+        # the counterexample is in the message, as people read it (to the machine's pulse, nczones.report.numbers)
+        assert numbers.point(v.point, numbers.resolution_of(m)) in res["message"]["text"]
     for res in run["results"][len(result.violations):]:
         assert res["ruleId"] == "NCZ003" and res["level"] == "warning"
 

@@ -25,8 +25,11 @@ CASES = [
 
 @pytest.mark.parametrize("name,program,base,machine,opts", CASES, ids=[c[0] for c in CASES])
 def test_text_golden(name, program, base, machine, opts):
-    result, _ = run_example(program, machine, base=base, **opts)
-    check_golden(name, render_text(result, deterministic=True))
+    from nczones.report.numbers import resolution_of
+
+    result, m = run_example(program, machine, base=base, **opts)
+    # as the CLI renders it (render_report passes the machine's resolution)
+    check_golden(name, render_text(result, deterministic=True, resolution=resolution_of(m)))
 
 
 def test_several_violations_in_execution_order_with_carets():
