@@ -925,6 +925,7 @@ class Interpreter:
             self.tool_selected = int(t)
         mset = {k for k, _ in mcodes}
         if 6 in mset:
+            self._tool_change_moves()
             if self.tool_selected == 0 and self.tool_in_spindle != 0:
                 self._unloaded = True
             elif self.tool_selected != 0:
@@ -1693,6 +1694,40 @@ class Interpreter:
                    turns=turns, end_deps=deps)
 
     # ------------------------------------------------------------------ G28/G30, G10, G92, G52
+    def _tool_change_moves(self) -> None:
+        """The moves LinuxCNC makes at M6 on a machine configured for them (``[machine] tool_change_*``).
+
+        ``convert_tool_change`` (interp_convert.cc) traverses Z to machine 0 (``TOOL_CHANGE_QUILL_UP``), then
+        every axis to the G30 position (``TOOL_CHANGE_AT_G30``), and the task's ``CHANGE_TOOL`` (emccanon.cc)
+        then moves on a straight line to ``TOOL_CHANGE_POSITION`` in machine coordinates; the interpreter
+        re-reads the position after the change.  All are rapids in machine coordinates."""
+        m = self.machine
+        if getattr(m, "tool_change_quill_up", False) and "Z" in self.index:
+            iz = self.index["Z"]
+            end = list(self.pos)
+            end[iz] = _ZERO
+            deps = [dict(d) for d in self.dep_pos] if self.track else None
+            if deps is not None:
+                deps[iz] = {}
+            self.emit(SegmentKind.RAPID, end, derived="M6 quill up (TOOL_CHANGE_QUILL_UP)", end_deps=deps)
+        if getattr(m, "tool_change_at_g30", False):
+            home = self.home[300]
+            end = list(home)
+            deps = [dict(d) for d in self.dep_home[300]] if self.track else None
+            self._machine_xy(end)
+            self.emit(SegmentKind.RAPID, end, derived="M6 to the G30 position (TOOL_CHANGE_AT_G30)", end_deps=deps)
+        position = getattr(m, "tool_change_position", None)
+        if position:
+            end = list(self.pos)
+            deps = [dict(d) for d in self.dep_pos] if self.track else None
+            for a, v in position.items():
+                i = self.index[a]
+                end[i] = v
+                if deps is not None:
+                    deps[i] = {}
+            self.emit(SegmentKind.RAPID, end, derived="M6 to the tool change position (TOOL_CHANGE_POSITION)",
+                      end_deps=deps)
+
     def _home(self, k: int, axis_words: list[tuple[int, Word]], w: Word) -> None:
         self.note_assumed(("units", "distance", "offset"))
         inter, deps = self.program_target(axis_words, False)

@@ -176,6 +176,15 @@ def _program_len(it: StateSource, sv: StateValue | None, rotary: bool) -> StateV
     return StateValue(sv.value / _INCH, {k: Fraction(v) / _INCH for k, v in sv.deps.items()})
 
 
+def _machine_len(it: StateSource, sv: StateValue | None, rotary: bool = False) -> StateValue | None:
+    """A length in mm as the control's own units (``[machine] control_units``, LinuxCNC's
+    ``[TRAJ] LINEAR_UNITS``), whatever G20/G21 is active: LinuxCNC keeps its offsets, stored positions and
+    tool table in them (on an inch machine ``#5221`` after ``G21 G10 L2 P1 X25.4`` reads 1)."""
+    if sv is None or rotary or getattr(it.machine, "control_units", "mm") != "inch":
+        return sv
+    return StateValue(sv.value / _INCH, {k: Fraction(v) / _INCH for k, v in sv.deps.items()})
+
+
 def _axis_reader(letter: str, what: Callable[[StateSource, int], StateValue | None], *, program_units: bool,
                  absent: Fraction = _ZERO) -> Callable[[StateSource], Reading]:
     rotary = letter in "ABC"
@@ -185,9 +194,9 @@ def _axis_reader(letter: str, what: Callable[[StateSource, int], StateValue | No
         if i is None:
             return absent
         sv = what(it, i)
-        # LinuxCNC keeps offsets and stored positions in its "user units", the machine's: mm for
-        # every nczones machine file
-        return _program_len(it, sv, rotary) if program_units else sv
+        # LinuxCNC keeps offsets and stored positions in its "user units", the machine's
+        # ([machine] control_units)
+        return _program_len(it, sv, rotary) if program_units else _machine_len(it, sv, rotary)
 
     return read
 
@@ -209,16 +218,25 @@ def _tool_axis_only(what: Callable[[StateSource], StateValue | None], letter: st
         i = it.index.get(letter)
         if i is None or i != it.tool_axis:
             return _ZERO
-        return what(it)
+        return _machine_len(it, what(it))
 
     return read
+
+
+def _tool_diameter(it: StateSource) -> Reading:
+    d = it.machine.tool_diameters.get(it.tool_in_spindle)
+    if d is None:
+        return None
+    sv = _machine_len(it, StateValue(d))
+    return None if sv is None else sv.value
 
 
 def linuxcnc_state_parameters() -> StateTable:
     """The state parameters of LinuxCNC's interpreter (numbering of ``interp_parameter_def.hh``).
 
-    Lengths of ``#5081``-``#5089``, ``#5161``-``#5390`` and ``#5401``-``#5409``
-    are in the machine's units (mm: LinuxCNC's "user units"), positions
+    Lengths of ``#5081``-``#5089``, ``#5161``-``#5390``, ``#5401``-``#5409`` and ``#5410``
+    are in the control's units (LinuxCNC's "user units", ``[machine] control_units``: mm unless the
+    machine file says "inch"), whatever G20/G21 is active; positions
     ``#5420``-``#5428``, ``#5021``-``#5029`` and ``#<_x>``, ``#<_abs_x>`` ...
     in the program's current units.  An axis the machine lacks reads 0.
     """
@@ -256,8 +274,7 @@ def linuxcnc_state_parameters() -> StateTable:
         add(5230 + 20 * n, f"{name} XY rotation (degrees, G10 L2 R)", lambda it, name=name: it.rot[name])
     add(5399, "M66 input wait result", _unknown)
     add(5400, "tool in the spindle", lambda it: it.tool_in_spindle)
-    add(5410, "diameter of the tool in the spindle",
-        lambda it: it.machine.tool_diameters.get(it.tool_in_spindle))
+    add(5410, "diameter of the tool in the spindle", _tool_diameter)
     for key, what in ((5411, "front angle"), (5412, "back angle"), (5413, "orientation")):
         add(key, f"lathe tool {what} of the tool in the spindle", _unknown)
     for key in (5599, 5600, 5601):
