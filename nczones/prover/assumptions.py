@@ -35,6 +35,11 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "The machine moves exactly along the programmed path: straight lines, exact circles (spirals for "
     "arcs whose end is off the circle within the tolerance), exact NURBS, rapids straight or dogleg as "
     "the machine file says; no corner blending (G64), following error or overshoot.",
+    "LinuxCNC dialect, tool change: M6 moves the machine only as the machine file says, each move a rapid in "
+    "machine coordinates: tool_change_quill_up (Z to machine 0), then tool_change_at_g30 (every axis to the G30 "
+    "position), then [machine.tool_change_position] (a straight move there, LinuxCNC's TOOL_CHANGE_POSITION); "
+    "without them M6 does not move the machine. The tool changer's own mechanism (carousel, arm) stays clear of "
+    "the zones, and M6 is not remapped (REMAP=M6 runs a program nczones does not see).",
     "Block delete: both positions of the switch are verified unless the machine file (block_delete) or "
     "--block-delete fixes one, which the report then says; an optional stop (M1) does not move the "
     "machine in either position.",
