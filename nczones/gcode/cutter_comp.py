@@ -329,7 +329,8 @@ class CutterComp:
                 if tool == 0:
                     # D0 is the tool in the spindle: LinuxCNC find_tool_index gives tool 0 the spindle's entry
                     tool = it.tool_in_spindle
-            diameters = getattr(it.machine, "tool_diameters", {})
+            diameters = dict(getattr(it.machine, "tool_diameters", {}))
+            diameters.update(getattr(it, "tool_diameters_set", {}))  # G10 L1/L10/L11 R
             if tool not in diameters:
                 if tool != 0:
                     known = ", ".join(f"T{t}" for t in sorted(diameters)) or "none"

@@ -373,6 +373,7 @@ class Interpreter:
         self.g92_applied = False
         self.home = {280: tuple(machine.reference), 300: tuple(machine.reference)}
         self.tool_table: dict[int, tuple[Fraction, dict]] = {}  # G10 L1/L10/L11 writes
+        self.tool_diameters_set: dict[int, Fraction] = {}  # G10 L1/L10/L11 R writes (mm)
         self.pos: Sequence[Fraction] = list(machine.start)  # a tuple once the first move is emitted
         # dependency tracking (per axis: {source: coefficient})
         self.dep_pos = [{"start": 1} for _ in range(n)]
@@ -691,12 +692,46 @@ class Interpreter:
         """The G28 (``k = 280``) or G30 (300) position, machine coordinates, mm."""
         return StateValue(self.home[k][i], self._named_deps(self.dep_home[k][i], i))
 
-    def state_machine_position(self, i: int) -> StateValue:
+    def tool_diameter(self, tool: int) -> Fraction | None:
+        """Tool ``tool``'s diameter, mm: what G10 L1/L10/L11 R set, else the machine file's ``[tool_diameters]``."""
+        d = self.tool_diameters_set.get(tool)
+        return d if d is not None else self.machine.tool_diameters.get(tool)
+
+    def _compensated(self, i: int) -> Fraction | None | bool:
+        """While cutter compensation has moved, LinuxCNC's current point of a plane axis is the compensated one
+        (``settings->current_x``: the last move's end offset by the radius, before the next corner adjusts it),
+        not the programmed one: that point in machine mm, ``None`` where nczones does not follow it exactly
+        (rotation, parameter ranges: the read is then unknown), ``False`` off the plane or without compensation."""
+        comp = self._comp
+        if not self.comp_on:
+            return False
+        if comp is None:
+            return None  # G41/G42 not modelled: the run is unknown anyway; never the programmed point
+        if not comp.active or comp.first:
+            return False  # no compensated move yet (or radius 0): the programmed point
+        ia, ib, _ = comp._axes()
+        if i not in (ia, ib):
+            return False
+        if self.prerotation_xy is not None or self.track:
+            return None
+        return comp._fmachine(i, comp.cur[0 if i == ia else 1])
+
+    def state_machine_position(self, i: int) -> StateValue | None:
         """Where axis ``i`` is, machine coordinates, mm (degrees for rotary axes)."""
+        c = self._compensated(i)
+        if c is None:
+            return None
+        if c is not False:
+            return StateValue(c, {})
         return StateValue(self.pos[i], self._named_deps(self.dep_pos[i], i))
 
-    def state_program_position(self, i: int) -> StateValue:
+    def state_program_position(self, i: int) -> StateValue | None:
         """Where axis ``i`` is in the current coordinate system (all offsets off), mm."""
+        c = self._compensated(i)
+        if c is None:
+            return None
+        if c is not False:
+            return StateValue(c - self.off[i], {})
         if self.prerotation_xy is not None and i in (self._ix, self._iy):
             return StateValue(self.prerotation_xy[0 if i == self._ix else 1] - self.g92[i], {})
         return StateValue(self.pos[i] - self.off[i], self._named_deps(dadd(self.dep_pos[i], self.dep_off[i], -1), i)
@@ -1794,7 +1829,7 @@ class Interpreter:
                         dreg[i] = d
             self.recompute_offsets()
         else:
-            self._g10_tool(int(L), P, pw, axis_words)
+            self._g10_tool(int(L), P, pw, axis_words, words.get("R"))
 
     def _g10_l20_rotated(self, name: str, axis_words: list[tuple[int, Word]]) -> None:
         """G10 L20 on X/Y of a rotated system: the offset that makes the current position read the values.
@@ -1818,7 +1853,8 @@ class Interpreter:
         self.dep_g5x[name][ix] = {}
         self.dep_g5x[name][iy] = {}
 
-    def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words: list[tuple[int, Word]]) -> None:
+    def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words: list[tuple[int, Word]],
+                  rw: Word | None = None) -> None:
         """G10 L1/L10/L11: write the tool table entry of tool P (LinuxCNC ``convert_setup_tool``).
 
         Only the tool-axis length is modelled; an offset on another axis (a
@@ -1831,6 +1867,10 @@ class Interpreter:
         if P.denominator != 1 or P < 1:  # LinuxCNC check_g_codes: P >= 1 with L1, L10 and L11
             raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a positive integer tool number", pw)
         tool = int(P)
+        if rw is not None:
+            # convert_setup_tool: the R word is the tool's radius (diameter = 2 R, in the control's units): what
+            # G41/G42 D and #5410 read from then on
+            self.tool_diameters_set[tool] = self.length_mm(rw.value) * 2
         for i, aw in axis_words:
             if i == self.tool_axis:
                 v = self._mm(aw.value, i)

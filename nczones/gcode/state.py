@@ -62,6 +62,8 @@ from fractions import Fraction
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Protocol, Union
 
+from .expr import EvalError
+
 if TYPE_CHECKING:  # pragma: no cover
     from ..machine import Machine
     from ..motion import Plane
@@ -159,8 +161,8 @@ class StateSource(Protocol):
     def state_home(self, k: int, i: int) -> StateValue: ...
     def state_work_offset(self, name: str, i: int) -> StateValue: ...
     def state_spindle_tool_length(self) -> StateValue: ...
-    def state_program_position(self, i: int) -> StateValue: ...
-    def state_machine_position(self, i: int) -> StateValue: ...
+    def state_program_position(self, i: int) -> StateValue | None: ...
+    def state_machine_position(self, i: int) -> StateValue | None: ...
     def state_g92(self, i: int) -> StateValue: ...
     def state_ccomp(self) -> int | None: ...
     def state_applied_tool_length(self) -> StateValue: ...
@@ -223,8 +225,23 @@ def _tool_axis_only(what: Callable[[StateSource], StateValue | None], letter: st
     return read
 
 
+def _not_under_comp(read: Callable[[StateSource], Reading]) -> Callable[[StateSource], Reading]:
+    """``#5420``-``#5428``: LinuxCNC refuses to read them while cutter compensation is on
+    (``read_parameter`` in interp_read.cc: "Cannot read current position with cutter radius compensation on");
+    ``#<_x>`` .. read the compensated point instead (``Interpreter.state_program_position``)."""
+
+    def guarded(it: StateSource) -> Reading:
+        if getattr(it, "comp_on", False) and getattr(it, "dialect", "linuxcnc") == "linuxcnc":
+            raise EvalError("GC325", "cannot read the current position (#5420-#5428) with cutter radius "
+                                     "compensation on (LinuxCNC refuses it; #<_x> .. read the compensated point)")
+        return read(it)
+
+    return guarded
+
+
 def _tool_diameter(it: StateSource) -> Reading:
-    d = it.machine.tool_diameters.get(it.tool_in_spindle)
+    get = getattr(it, "tool_diameter", None)
+    d = get(it.tool_in_spindle) if get is not None else it.machine.tool_diameters.get(it.tool_in_spindle)
     if d is None:
         return None
     sv = _machine_len(it, StateValue(d))
@@ -261,10 +278,10 @@ def linuxcnc_state_parameters() -> StateTable:
             add(5221 + 20 * n + k, f"{name} {a} offset", _offset_reader(name, a))
         add(5401 + k, f"stored {a} offset of the tool in the spindle (tool table)",
             _tool_axis_only(lambda it: it.state_spindle_tool_length(), a))
-        add(5420 + k, f"current {a} in program coordinates",
-            _axis_reader(a, lambda it, i: it.state_program_position(i), program_units=True))
+        position = _axis_reader(a, lambda it, i: it.state_program_position(i), program_units=True)
+        add(5420 + k, f"current {a} in program coordinates", _not_under_comp(position))
         low = a.lower()
-        add("_" + low, f"current {a} in program coordinates", t[5420 + k].read)
+        add("_" + low, f"current {a} in program coordinates", position)
         add("_abs_" + low, f"current {a} in machine coordinates (program units)", t[5021 + k].read)
     add(5070, "probe result", _unknown)
     add(5210, "G92 offset applied (1) or not (0)", lambda it: 1 if it.g92_applied else 0)

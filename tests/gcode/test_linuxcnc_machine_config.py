@@ -323,3 +323,99 @@ def test_verify_on_an_inch_control_is_not_25_4_times_larger(lane):
     text = f"G21\nG10 L2 P1 X25.4\nG53 G0 X300\n{many}G53 G0 Y5\nG53 G0 X[#5221 * 10]\nM2\n"
     assert verify_text(text, machine('control_units = "inch"', CLAMP)).verdict.label == "unsafe"
     assert verify_text(text, machine("", CLAMP)).verdict.label == "safe"
+
+
+# ------------------------------------------------------------------------------------------ class 17: reads under comp
+
+COMP_MACHINE = 'cutter_compensation = "linuxcnc"'
+COMP_PROGRAM = """G21 G17 G90
+G10 L2 P1 X100 Y50
+G10 L1 P1 R1.27
+T1 M6
+G0 X0 Y-5
+G41 D1
+G1 F100 X10 Y0
+G0 Z[#<_x>]
+G0 Z[#<_y>]
+G1 X10 Y10
+G0 Z[#<_abs_x>]
+G0 Z[#<_abs_y>]
+G3 X0 Y10 I-5 J0
+G0 Z[#<_x>]
+G0 Z[#<_y>]
+G2 X-10 Y10 I-5 J0
+G0 Z[#<_x>]
+G0 Z[#<_y>]
+G40
+G1 X-15 Y10
+G0 Z[#<_x>]
+M2
+"""
+#: rs274 -i on COMP_PROGRAM (G54 X100 Y50; the tool radius is G10 L1 P1 R1.27, which LinuxCNC's comp reads in
+#: place of the machine file's 10 mm diameter): each read moves Z to the value read.  While compensation is on,
+#: LinuxCNC's current point (#<_x>, #<_abs_x>: interp_namedparams.cc reads settings->current_x) is the
+#: compensated end of the last move *before* the next corner adjusts it: after the entry move to X10 Y0 (from
+#: X0 Y-5, tool on the left) the end offset 1.27 perpendicular to the entry direction, X9.4320 Y1.1359; after
+#: X10 Y10, X8.73 Y10 (abs X108.73 Y60; the concave corner with the arc then pulls the printed move back to
+#: Y8.73, the reading stays); after the G3 arc (centre X5 Y10, tool inside) X1.27; after the G2 arc X-11.27;
+#: after G40 the programmed point X-15.
+COMP_RS274_Z = ["9.4320", "1.1359", "108.7300", "60.0000", "1.2700", "10.0000", "-11.2700", "10.0000", "-15.0000"]
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is not installed")
+def test_recorded_reads_under_comp_are_what_rs274_prints(tmp_path):
+    got = rs274_traverses(COMP_PROGRAM, "", tmp_path)
+    z_reads = [t.split()[3] for t in got if t.startswith("STRAIGHT_TRAVERSE")][1:]  # after the G0 X0 Y-5
+    assert z_reads == COMP_RS274_Z
+
+
+def test_reads_under_comp_are_the_compensated_point():
+    m = machine(COMP_MACHINE)
+    zs = [e[2] for k, e in ends(COMP_PROGRAM, m) if k == "RAPID"][1:]
+    assert [f"{float(z):.4f}" for z in zs] == COMP_RS274_Z
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is not installed")
+def test_rs274_refuses_5420_under_comp(tmp_path):
+    (tmp_path / "m.ini").write_text(INI.format(emcio=""))
+    (tmp_path / "m.var").write_text(VAR)
+    (tmp_path / "m.tbl").write_text(TBL)
+    text = COMP_PROGRAM.replace("G0 Z[#<_x>]\nG0 Z[#<_y>]\nG1 X10 Y10", "G0 Z[#5420]\nG1 X10 Y10")
+    (tmp_path / "p.ngc").write_text(text)
+    p = subprocess.run([RS274, "-i", "m.ini", "-t", "m.tbl", "-v", "m.var", "-g", "p.ngc"], cwd=tmp_path,
+                       capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
+    assert "Cannot read current position with cutter radius compensation on" in p.stdout + p.stderr
+
+
+def test_5420_under_comp_is_linuxcnc_s_error():
+    """interp_read.cc read_parameter: #5420-#5428 with cutter_comp_side on is an error (recorded above)."""
+    from nczones.errors import GcodeError
+
+    text = COMP_PROGRAM.replace("G0 Z[#<_x>]\nG0 Z[#<_y>]\nG1 X10 Y10", "G0 Z[#5420]\nG1 X10 Y10")
+    with pytest.raises(GcodeError) as e:
+        ends(text, machine(COMP_MACHINE))
+    assert e.value.diagnostics[0].code == "GC325" and e.value.diagnostics[0].span.line == 8
+    # a read of #<_x> with G41 modal but cutter_compensation = "none" is never the programmed point
+    r = verify_text("G0 X0 Y-5\nG41 D1\nG1 F100 X10 Y0\nG0 Z[#<_x>]\nM2\n", machine())
+    assert r.verdict.label == "unknown"
+
+
+SLAB = '''
+[[zones]]
+name = "slab"
+kind = "box"
+forbid = true
+min = { X = "109.2", Y = "79", Z = "-1" }
+max = { X = "109.6", Y = "81", Z = "1" }
+'''
+
+
+@pytest.mark.parametrize("lane", ["short", "many"])
+def test_verify_uses_the_compensated_reading(lane):
+    """#1 = #<_x> after the entry move reads X9.432 (program), not the programmed X10: the rapid to X[#1] at Y30
+    ends at machine X109.432, inside the slab (X109.2-109.6); read as X10 it would stop at 110, clear of it."""
+    many = "".join(f"G1 F1000 X{-(k % 2)} Y-5\n" for k in range(600)) if lane == "many" else ""
+    text = ("G21 G17 G90\nG10 L2 P1 X100 Y50\nG10 L1 P1 R1.27\nT1 M6\nG0 X0 Y-5\n" + many
+            + "G41 D1\nG1 F100 X10 Y0\n#1 = #<_x>\nG1 X10 Y10\nG40\nG0 X20 Y10\nG0 Y30\nG0 X[#1]\nM2\n")
+    r = verify_text(text, machine(COMP_MACHINE, SLAB))
+    assert r.verdict.label == "unsafe" and {v.zone for v in r.violations} == {"slab"}
