@@ -1737,6 +1737,8 @@ class Interpreter:
         then moves on a straight line to ``TOOL_CHANGE_POSITION`` in machine coordinates; the interpreter
         re-reads the position after the change.  All are rapids in machine coordinates."""
         m = self.machine
+        if self.dialect != "linuxcnc":
+            return  # LinuxCNC INI settings (a Fanuc tool change: specs/fanuc.md)
         if getattr(m, "tool_change_quill_up", False) and "Z" in self.index:
             iz = self.index["Z"]
             end = list(self.pos)
