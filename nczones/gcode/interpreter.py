@@ -697,41 +697,38 @@ class Interpreter:
         d = self.tool_diameters_set.get(tool)
         return d if d is not None else self.machine.tool_diameters.get(tool)
 
-    def _compensated(self, i: int) -> Fraction | None | bool:
+    def _compensated(self, i: int) -> tuple[bool, Fraction | None]:
         """While cutter compensation has moved, LinuxCNC's current point of a plane axis is the compensated one
         (``settings->current_x``: the last move's end offset by the radius, before the next corner adjusts it),
-        not the programmed one: that point in machine mm, ``None`` where nczones does not follow it exactly
-        (rotation, parameter ranges: the read is then unknown), ``False`` off the plane or without compensation."""
+        not the programmed one: (True, that point in machine mm), (True, None) where nczones does not follow it
+        exactly (rotation, parameter ranges, compensation not modelled: the read is then unknown), (False, None)
+        off the plane or without compensation (the programmed point)."""
         comp = self._comp
         if not self.comp_on:
-            return False
+            return False, None
         if comp is None:
-            return None  # G41/G42 not modelled: the run is unknown anyway; never the programmed point
+            return True, None  # G41/G42 not modelled: the run is unknown anyway; never the programmed point
         if not comp.active or comp.first:
-            return False  # no compensated move yet (or radius 0): the programmed point
+            return False, None  # no compensated move yet (or radius 0): the programmed point
         ia, ib, _ = comp._axes()
         if i not in (ia, ib):
-            return False
+            return False, None
         if self.prerotation_xy is not None or self.track:
-            return None
-        return comp._fmachine(i, comp.cur[0 if i == ia else 1])
+            return True, None
+        return True, comp._fmachine(i, comp.cur[0 if i == ia else 1])
 
     def state_machine_position(self, i: int) -> StateValue | None:
         """Where axis ``i`` is, machine coordinates, mm (degrees for rotary axes)."""
-        c = self._compensated(i)
-        if c is None:
-            return None
-        if c is not False:
-            return StateValue(c, {})
+        comped, c = self._compensated(i)
+        if comped:
+            return None if c is None else StateValue(c, {})
         return StateValue(self.pos[i], self._named_deps(self.dep_pos[i], i))
 
     def state_program_position(self, i: int) -> StateValue | None:
         """Where axis ``i`` is in the current coordinate system (all offsets off), mm."""
-        c = self._compensated(i)
-        if c is None:
-            return None
-        if c is not False:
-            return StateValue(c - self.off[i], {})
+        comped, c = self._compensated(i)
+        if comped:
+            return None if c is None else StateValue(c - self.off[i], {})
         if self.prerotation_xy is not None and i in (self._ix, self._iy):
             return StateValue(self.prerotation_xy[0 if i == self._ix else 1] - self.g92[i], {})
         return StateValue(self.pos[i] - self.off[i], self._named_deps(dadd(self.dep_pos[i], self.dep_off[i], -1), i)
