@@ -419,3 +419,85 @@ def test_verify_uses_the_compensated_reading(lane):
             + "G41 D1\nG1 F100 X10 Y0\n#1 = #<_x>\nG1 X10 Y10\nG40\nG0 X20 Y10\nG0 Y30\nG0 X[#1]\nM2\n")
     r = verify_text(text, machine(COMP_MACHINE, SLAB))
     assert r.verdict.label == "unsafe" and {v.zone for v in r.violations} == {"slab"}
+
+
+# a concave corner after an arc whose sweep grows a little when its end is pulled back: LinuxCNC allows
+# .0254 (G21) or .001 (G20) of growth before "Arc move in concave corner cannot be reached by the tool without
+# gouging" (interp_queue.cc move_endpoint_and_flush); nczones allowed .001 in both and refused this program
+GROW_PROGRAM = """G21 G17 G90 F100
+G10 L1 P1 R1.27
+T1 M6
+G0 X0 Y-10 Z0
+G42 D1
+G1 X-10 Y-10
+G3 X-20 Y-20 R10.1
+G1 X-10 Y-20
+G1 X-10 Y-10
+G3 X0 Y-10 R5.5
+G40
+G1 X20 Y10
+M2
+"""
+#: rs274 -g on GROW_PROGRAM (its motion lines).
+GROW_RS274 = """    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)
+   14 N..... STRAIGHT_TRAVERSE(0.0000, -10.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+   16 N..... STRAIGHT_FEED(-10.0000, -8.7300, 0.0000, 0.0000, 0.0000, 0.0000)
+   17 N..... ARC_FEED(-21.2699, -19.9875, -9.9005, -20.0995, 1, 0.0000, 0.0000, 0.0000, 0.0000)
+   18 N..... ARC_FEED(-20.0000, -21.2700, -20.0000, -20.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)
+   19 N..... STRAIGHT_FEED(-10.0000, -21.2700, 0.0000, 0.0000, 0.0000, 0.0000)
+   20 N..... ARC_FEED(-8.7300, -20.0000, -10.0000, -20.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)
+   21 N..... STRAIGHT_FEED(-8.7300, -13.3585, 0.0000, 0.0000, 0.0000, 0.0000)
+   22 N..... ARC_FEED(1.1545, -10.5291, -5.0000, -7.7087, 1, 0.0000, 0.0000, 0.0000, 0.0000)
+   24 N..... STRAIGHT_FEED(20.0000, 10.0000, 0.0000, 0.0000, 0.0000, 0.0000)
+"""
+
+
+def _oracle_comp_machine():
+    from tests.oracles.rs274 import machine_text
+
+    text = machine_text(("X", "Y", "Z"), {1: F(0)})
+    return parse_machine(text.replace("[machine]\n", '[machine]\ncutter_compensation = "linuxcnc"\n', 1)
+                         + '[tool_diameters]\nT1 = "2.54"\n')
+
+
+def test_arc_sweep_growth_in_a_concave_corner_as_linuxcnc_allows():
+    from tests.oracles.rs274 import canon_motion, compare
+
+    outcome = compare(GROW_PROGRAM, _oracle_comp_machine(), canon_motion(GROW_RS274), None)
+    assert outcome.status == "match", outcome.detail
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is not installed")
+def test_reads_under_comp_match_rs274_on_generated_profiles(tmp_path):
+    """Random compensated profiles (lines and R arcs on a 5 mm grid, G41/G42, three radii) with a read of
+    #<_x>, #<_y>, #<_abs_x> or #<_abs_y> after every move, each moving Z to it: nczones's motion is rs274's
+    (or both refuse).  340 seeds matched when this was written (the growth tolerance above was the one
+    difference); 25 run here."""
+    import random
+
+    from tests.oracles.rs274 import compare
+    from tests.tools.rs274_diff import run_rs274
+
+    machine_ = _oracle_comp_machine()
+    setup = (("X", "Y", "Z"), {1: F(0)}, {})
+    for seed in range(25):
+        rng = random.Random(seed)
+        lines = ["G21 G17 G90 F100", f"G10 L1 P1 R{rng.choice(['0.5', '1', '1.27'])}", "T1 M6", "G0 X0 Y-10 Z0",
+                 f"{rng.choice(['G41', 'G42'])} D1"]
+        x, y = 0, -10
+        for k in range(rng.randint(2, 6)):
+            nx, ny = x + rng.choice([-10, 0, 10, 15]), y + rng.choice([-10, 0, 10, 15])
+            if (nx, ny) == (x, y):
+                ny += 10
+            if k and rng.random() < 0.4:
+                chord = ((nx - x) ** 2 + (ny - y) ** 2) ** 0.5
+                lines.append(f"{rng.choice(['G2', 'G3'])} X{nx} Y{ny} R{round(chord / 2 + rng.choice([0.5, 3, 8]), 1)}")
+            else:
+                lines.append(f"G1 X{nx} Y{ny}")
+            x, y = nx, ny
+            lines.append(f"G0 Z[#<_{rng.choice(['x', 'y', 'abs_x', 'abs_y'])}>]")
+        lines += ["G40", f"G1 X{x + 20} Y{y + 20}", "G0 Z[#<_x>]", "M2"]
+        text = "\n".join(lines) + "\n"
+        moves, err, _ = run_rs274(text, setup, tmp_path)
+        outcome = compare(text, machine_, moves, err)
+        assert outcome.status == "match", (seed, outcome.detail, text)
