@@ -288,7 +288,10 @@ UNITS_RS274 = [
 
 @pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is not installed")
 def test_recorded_inch_parameters_are_what_rs274_prints(tmp_path):
-    got = rs274_traverses(UNITS_PROGRAM, "", tmp_path)
+    for _ in range(3):  # a parallel rs274 can replace the standalone's shared tool data (see _rs274_outcome)
+        got = rs274_traverses(UNITS_PROGRAM, "", tmp_path)
+        if got == UNITS_RS274:
+            break
     assert got == UNITS_RS274
 
 
@@ -364,8 +367,11 @@ COMP_RS274_Z = ["9.4320", "1.1359", "108.7300", "60.0000", "1.2700", "10.0000", 
 
 @pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is not installed")
 def test_recorded_reads_under_comp_are_what_rs274_prints(tmp_path):
-    got = rs274_traverses(COMP_PROGRAM, "", tmp_path)
-    z_reads = [t.split()[3] for t in got if t.startswith("STRAIGHT_TRAVERSE")][1:]  # after the G0 X0 Y-5
+    for _ in range(3):  # a parallel rs274 can replace the standalone's shared tool data (see _rs274_outcome)
+        got = rs274_traverses(COMP_PROGRAM, "", tmp_path)
+        z_reads = [t.split()[3] for t in got if t.startswith("STRAIGHT_TRAVERSE")][1:]  # after the G0 X0 Y-5
+        if z_reads == COMP_RS274_Z:
+            break
     assert z_reads == COMP_RS274_Z
 
 
