@@ -251,6 +251,16 @@ class Machine:
     diameter_axes: tuple[str, ...] = ()
     #: Lathe tool offsets by offset number (``[tool_offsets]``).
     tool_offsets: Mapping[int, ToolOffset] = field(default_factory=lambda: MappingProxyType({}))
+    #: The control's own length unit (LinuxCNC ``[TRAJ] LINEAR_UNITS``): ``"mm"`` or ``"inch"``.  LinuxCNC
+    #: keeps its numbered state parameters (offsets, stored positions, tool table) in it.
+    control_units: str = "mm"
+    #: LinuxCNC ``[EMCIO] TOOL_CHANGE_QUILL_UP``: M6 first rapids the Z axis to machine Z 0.
+    tool_change_quill_up: bool = False
+    #: LinuxCNC ``[EMCIO] TOOL_CHANGE_AT_G30``: M6 rapids to the G30 position (every axis at once).
+    tool_change_at_g30: bool = False
+    #: LinuxCNC ``[EMCIO] TOOL_CHANGE_POSITION``: M6 moves the axes given here (machine coordinates, mm/deg)
+    #: on a straight line at the change, after the moves above; axis name -> position.
+    tool_change_position: Mapping[str, Fraction] = field(default_factory=lambda: MappingProxyType({}))
 
     @property
     def is_lathe(self) -> bool:
@@ -629,7 +639,10 @@ _MACHINE_KEYS = (
     "reference_2", "reference_3", "reference_4",
     "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
     "reference_2", "reference_3", "reference_4", "type", "diameter_axes",
+    "control_units", "tool_change_quill_up", "tool_change_at_g30", "tool_change_position",
 )
+#: Values of ``[machine] control_units`` (LinuxCNC's ``[TRAJ] LINEAR_UNITS``).
+CONTROL_UNITS = ("mm", "inch")
 _FANUC_LATHE_KEYS = ("gcode_system", "g71_depth", "g71_retract", "roughing_final_pass", "g73_relief_x",
                      "g73_relief_z", "g73_divisions", "g74_retract", "thread_chamfer", "thread_chamfer_angle",
                      "g76_finish_passes", "g76_tool_angle", "g76_min_depth", "g76_finish_allowance",
@@ -903,6 +916,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                                   nonnegative=True, limit=Fraction(10))
 
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
+    control_units, tc_quill, tc_g30, tc_position = _linuxcnc_control(rd, mt, mline, axes, dialect)
     tool_offsets = _tool_offsets(rd, data.get("tool_offsets", {}), axes)
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
 
@@ -929,6 +943,8 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         tool_diameters=MappingProxyType(tool_diameters), dialect=dialect or "linuxcnc", fanuc=fanuc,
         block_delete=block_delete, arc_tolerance=arc_tol,
         machine_type=machine_type or "mill", diameter_axes=diameter_axes, tool_offsets=MappingProxyType(tool_offsets),
+        control_units=control_units, tool_change_quill_up=tc_quill, tool_change_at_g30=tc_g30,
+        tool_change_position=MappingProxyType(tc_position),
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.
     bad = allowed.violated_zones(machine.point(start_t))
@@ -974,6 +990,41 @@ _CHOICES = {
     "boring_shift": ("+X", "-X", "+Y", "-Y"),
     "tool_length_motion": ("move", "shift"),
 }
+
+
+def _linuxcnc_control(rd: _Reader, mt: Mapping, mline: int | None, axes: tuple[str, ...],
+                      dialect: str) -> tuple[str, bool, bool, dict[str, Fraction]]:
+    """``control_units`` and the tool-change keys of ``[machine]`` (LinuxCNC's ``[TRAJ] LINEAR_UNITS`` and
+    ``[EMCIO] TOOL_CHANGE_QUILL_UP`` / ``TOOL_CHANGE_AT_G30`` / ``TOOL_CHANGE_POSITION``)."""
+    units = mt.get("control_units", "mm")
+    if units not in CONTROL_UNITS:
+        rd.report("ZN114", f"[machine] control_units: {as_written(units)} is not allowed; use \"mm\" or \"inch\" "
+                  "(LinuxCNC's [TRAJ] LINEAR_UNITS: the unit of its numbered parameters)",
+                  rd.loc.key("control_units", mline))
+        units = "mm"
+    flags = []
+    for key in ("tool_change_quill_up", "tool_change_at_g30"):
+        v = mt.get(key, False)
+        if not isinstance(v, bool):
+            rd.report("ZN103", f"[machine] {key}: expected true or false, got {as_written(v)}", rd.loc.key(key, mline))
+            v = False
+        flags.append(v)
+    position: dict[str, Fraction] = {}
+    raw = mt.get("tool_change_position")
+    if raw is not None:
+        if not isinstance(raw, Mapping):
+            rd.report("ZN103", f"[machine] tool_change_position: expected a table of axis positions such as "
+                      f"{{ Z = \"0\" }}, got {as_written(raw)}", rd.loc.key("tool_change_position", mline))
+        else:
+            position = _per_axis(rd, raw, axes, "[machine.tool_change_position]",
+                                 rd.loc.section("machine.tool_change_position"), required=False,
+                                 inline=("tool_change_position", mline))
+    given = [k for k in ("tool_change_quill_up", "tool_change_at_g30", "tool_change_position", "control_units")
+             if k in mt]
+    if given and dialect != "linuxcnc":
+        rd.report("ZN115", f"[machine] {given[0]} is read only in the linuxcnc dialect (a LinuxCNC INI setting)",
+                  rd.loc.key(given[0], mline), Severity.WARNING)
+    return units, flags[0], flags[1], position
 
 
 def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, axes: tuple[str, ...],

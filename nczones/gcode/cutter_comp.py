@@ -329,7 +329,8 @@ class CutterComp:
                 if tool == 0:
                     # D0 is the tool in the spindle: LinuxCNC find_tool_index gives tool 0 the spindle's entry
                     tool = it.tool_in_spindle
-            diameters = getattr(it.machine, "tool_diameters", {})
+            diameters = dict(getattr(it.machine, "tool_diameters", {}))
+            diameters.update(getattr(it, "tool_diameters_set", {}))  # G10 L1/L10/L11 R
             if tool not in diameters:
                 if tool != 0:
                     known = ", ".join(f"T{t}" for t in sorted(diameters)) or "none"
@@ -510,7 +511,8 @@ class CutterComp:
                 if abs(r1 - r2) > 0.01:
                     raise self.error(GC_BUG, f"cutter compensation generated an invalid arc with mismatched radii "
                                       f"{r1:.6f} and {r2:.6f} (LinuxCNC reports this as a BUG and stops)")
-                if l1 and self.endpoint_valid and abs(l2) > abs(l1) + 0.001:
+                # interp_queue.cc: the sweep may grow by .0254 (in G21) or .001 (in G20) before it is a gouge
+                if l1 and self.endpoint_valid and abs(l2) > abs(l1) + (0.001 if self.it.inch else 0.0254):
                     raise self.error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation)")
             else:

@@ -617,8 +617,14 @@ class _Path:
         ps = self.pieces
         v1 = ps[0].end - ps[0].start
         v2 = ps[-1].start - ps[0].start
-        angle = _div(v1, v2)
-        if angle.imag < 0:
+        if v2 == 0:
+            # the cycle starts where the profile's last piece starts: LinuxCNC divides by a zero complex, which
+            # GCC's __divdc3 turns into (copysign(inf, c) * a, copysign(inf, c) * b); its imaginary part is
+            # negative exactly when v1's is (NaN, never negative, when v1's is 0)
+            negative = math.copysign(math.inf, v2.real) * v1.imag < 0
+        else:
+            negative = _div(v1, v2).imag < 0
+        if negative:
             distance = -distance
         first = ps.pop(0)
         current = 0.0

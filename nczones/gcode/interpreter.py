@@ -394,6 +394,7 @@ class Interpreter:
         self.g92_applied = False
         self.home = {280: tuple(machine.reference), 300: tuple(machine.reference)}
         self.tool_table: dict[int, tuple[Fraction, dict]] = {}  # G10 L1/L10/L11 writes
+        self.tool_diameters_set: dict[int, Fraction] = {}  # G10 L1/L10/L11 R writes (mm)
         self.pos: Sequence[Fraction] = list(machine.start)  # a tuple once the first move is emitted
         # dependency tracking (per axis: {source: coefficient})
         self.dep_pos = [{"start": 1} for _ in range(n)]
@@ -735,12 +736,43 @@ class Interpreter:
         """The G28 (``k = 280``) or G30 (300) position, machine coordinates, mm."""
         return StateValue(self.home[k][i], self._named_deps(self.dep_home[k][i], i))
 
-    def state_machine_position(self, i: int) -> StateValue:
+    def tool_diameter(self, tool: int) -> Fraction | None:
+        """Tool ``tool``'s diameter, mm: what G10 L1/L10/L11 R set, else the machine file's ``[tool_diameters]``."""
+        d = self.tool_diameters_set.get(tool)
+        return d if d is not None else self.machine.tool_diameters.get(tool)
+
+    def _compensated(self, i: int) -> tuple[bool, Fraction | None]:
+        """While cutter compensation has moved, LinuxCNC's current point of a plane axis is the compensated one
+        (``settings->current_x``: the last move's end offset by the radius, before the next corner adjusts it),
+        not the programmed one: (True, that point in machine mm), (True, None) where nczones does not follow it
+        exactly (rotation, parameter ranges, compensation not modelled: the read is then unknown), (False, None)
+        off the plane or without compensation (the programmed point)."""
+        comp = self._comp
+        if not self.comp_on:
+            return False, None
+        if comp is None:
+            return True, None  # G41/G42 not modelled: the run is unknown anyway; never the programmed point
+        if not comp.active or comp.first:
+            return False, None  # no compensated move yet (or radius 0): the programmed point
+        ia, ib, _ = comp._axes()
+        if i not in (ia, ib):
+            return False, None
+        if self.prerotation_xy is not None or self.track:
+            return True, None
+        return True, comp._fmachine(i, comp.cur[0 if i == ia else 1])
+
+    def state_machine_position(self, i: int) -> StateValue | None:
         """Where axis ``i`` is, machine coordinates, mm (degrees for rotary axes)."""
+        comped, c = self._compensated(i)
+        if comped:
+            return None if c is None else StateValue(c, {})
         return StateValue(self.pos[i], self._named_deps(self.dep_pos[i], i))
 
-    def state_program_position(self, i: int) -> StateValue:
+    def state_program_position(self, i: int) -> StateValue | None:
         """Where axis ``i`` is in the current coordinate system (all offsets off), mm."""
+        comped, c = self._compensated(i)
+        if comped:
+            return None if c is None else StateValue(c - self.off[i], {})
         if self.prerotation_xy is not None and i in (self._ix, self._iy):
             return StateValue(self.prerotation_xy[0 if i == self._ix else 1] - self.g92[i], {})
         return StateValue(self.pos[i] - self.off[i], self._named_deps(dadd(self.dep_pos[i], self.dep_off[i], -1), i)
@@ -963,6 +995,7 @@ class Interpreter:
             self.tool_selected = int(t)
         mset = {k for k, _ in mcodes}
         if 6 in mset:
+            self._tool_change_moves()
             if self.tool_selected == 0 and self.tool_in_spindle != 0:
                 self._unloaded = True
             elif self.tool_selected != 0:
@@ -1827,6 +1860,42 @@ class Interpreter:
                    turns=turns, end_deps=deps)
 
     # ------------------------------------------------------------------ G28/G30, G10, G92, G52
+    def _tool_change_moves(self) -> None:
+        """The moves LinuxCNC makes at M6 on a machine configured for them (``[machine] tool_change_*``).
+
+        ``convert_tool_change`` (interp_convert.cc) traverses Z to machine 0 (``TOOL_CHANGE_QUILL_UP``), then
+        every axis to the G30 position (``TOOL_CHANGE_AT_G30``), and the task's ``CHANGE_TOOL`` (emccanon.cc)
+        then moves on a straight line to ``TOOL_CHANGE_POSITION`` in machine coordinates; the interpreter
+        re-reads the position after the change.  All are rapids in machine coordinates."""
+        m = self.machine
+        if self.dialect != "linuxcnc":
+            return  # LinuxCNC INI settings (a Fanuc tool change: specs/fanuc.md)
+        if getattr(m, "tool_change_quill_up", False) and "Z" in self.index:
+            iz = self.index["Z"]
+            end = list(self.pos)
+            end[iz] = _ZERO
+            deps = [dict(d) for d in self.dep_pos] if self.track else None
+            if deps is not None:
+                deps[iz] = {}
+            self.emit(SegmentKind.RAPID, end, derived="M6 quill up (TOOL_CHANGE_QUILL_UP)", end_deps=deps)
+        if getattr(m, "tool_change_at_g30", False):
+            home = self.home[300]
+            end = list(home)
+            deps = [dict(d) for d in self.dep_home[300]] if self.track else None
+            self._machine_xy(end)
+            self.emit(SegmentKind.RAPID, end, derived="M6 to the G30 position (TOOL_CHANGE_AT_G30)", end_deps=deps)
+        position = getattr(m, "tool_change_position", None)
+        if position:
+            end = list(self.pos)
+            deps = [dict(d) for d in self.dep_pos] if self.track else None
+            for a, v in position.items():
+                i = self.index[a]
+                end[i] = v
+                if deps is not None:
+                    deps[i] = {}
+            self.emit(SegmentKind.RAPID, end, derived="M6 to the tool change position (TOOL_CHANGE_POSITION)",
+                      end_deps=deps)
+
     def _home(self, k: int, axis_words: list[tuple[int, Word]], w: Word) -> None:
         self.note_assumed(("units", "distance", "offset"))
         inter, deps = self.program_target(axis_words, False)
@@ -1905,7 +1974,7 @@ class Interpreter:
             if p_int < 1:  # LinuxCNC check_g10: P >= 1 with L1, L10 and L11
                 raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a positive integer tool number", pw)
             # convert_setup_tool: is_near_int, the tool number (int)(P + 0.5)
-            self._g10_tool(int(L), Fraction(int(pd + 0.5)), pw, axis_words)
+            self._g10_tool(int(L), Fraction(int(pd + 0.5)), pw, axis_words, words.get("R"))
 
     def _g10_l20_rotated(self, name: str, axis_words: list[tuple[int, Word]]) -> None:
         """G10 L20 on X/Y of a rotated system: the offset that makes the current position read the values.
@@ -1929,7 +1998,8 @@ class Interpreter:
         self.dep_g5x[name][ix] = {}
         self.dep_g5x[name][iy] = {}
 
-    def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words: list[tuple[int, Word]]) -> None:
+    def _g10_tool(self, L: int, P: Fraction, pw: Word, axis_words: list[tuple[int, Word]],
+                  rw: Word | None = None) -> None:
         """G10 L1/L10/L11: write the tool table entry of tool P (LinuxCNC ``convert_setup_tool``).
 
         Only the tool-axis length is modelled; an offset on another axis (a
@@ -1942,6 +2012,10 @@ class Interpreter:
         if P.denominator != 1 or P < 1:  # LinuxCNC check_g_codes: P >= 1 with L1, L10 and L11
             raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a positive integer tool number", pw)
         tool = int(P)
+        if rw is not None:
+            # convert_setup_tool: the R word is the tool's radius (diameter = 2 R, in the control's units): what
+            # G41/G42 D and #5410 read from then on
+            self.tool_diameters_set[tool] = self.length_mm(rw.value) * 2
         for i, aw in axis_words:
             if i == self.tool_axis:
                 v = self._mm(aw.value, i)

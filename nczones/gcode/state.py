@@ -62,6 +62,8 @@ from fractions import Fraction
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Protocol, Union
 
+from .expr import EvalError
+
 if TYPE_CHECKING:  # pragma: no cover
     from ..machine import Machine
     from ..motion import Plane
@@ -161,8 +163,8 @@ class StateSource(Protocol):
     def state_home(self, k: int, i: int) -> StateValue: ...
     def state_work_offset(self, name: str, i: int) -> StateValue: ...
     def state_spindle_tool_length(self) -> StateValue: ...
-    def state_program_position(self, i: int) -> StateValue: ...
-    def state_machine_position(self, i: int) -> StateValue: ...
+    def state_program_position(self, i: int) -> StateValue | None: ...
+    def state_machine_position(self, i: int) -> StateValue | None: ...
     def state_g92(self, i: int) -> StateValue: ...
     def state_ccomp(self) -> int | None: ...
     def state_applied_tool_length(self) -> StateValue: ...
@@ -178,6 +180,15 @@ def _program_len(it: StateSource, sv: StateValue | None, rotary: bool) -> StateV
     return StateValue(sv.value / _INCH, {k: Fraction(v) / _INCH for k, v in sv.deps.items()})
 
 
+def _machine_len(it: StateSource, sv: StateValue | None, rotary: bool = False) -> StateValue | None:
+    """A length in mm as the control's own units (``[machine] control_units``, LinuxCNC's
+    ``[TRAJ] LINEAR_UNITS``), whatever G20/G21 is active: LinuxCNC keeps its offsets, stored positions and
+    tool table in them (on an inch machine ``#5221`` after ``G21 G10 L2 P1 X25.4`` reads 1)."""
+    if sv is None or rotary or getattr(it.machine, "control_units", "mm") != "inch":
+        return sv
+    return StateValue(sv.value / _INCH, {k: Fraction(v) / _INCH for k, v in sv.deps.items()})
+
+
 def _axis_reader(letter: str, what: Callable[[StateSource, int], StateValue | None], *, program_units: bool,
                  absent: Fraction = _ZERO) -> Callable[[StateSource], Reading]:
     rotary = letter in "ABC"
@@ -187,9 +198,9 @@ def _axis_reader(letter: str, what: Callable[[StateSource, int], StateValue | No
         if i is None:
             return absent
         sv = what(it, i)
-        # LinuxCNC keeps offsets and stored positions in its "user units", the machine's: mm for
-        # every nczones machine file
-        return _program_len(it, sv, rotary) if program_units else sv
+        # LinuxCNC keeps offsets and stored positions in its "user units", the machine's
+        # ([machine] control_units)
+        return _program_len(it, sv, rotary) if program_units else _machine_len(it, sv, rotary)
 
     return read
 
@@ -211,7 +222,7 @@ def _tool_axis_only(what: Callable[[StateSource], StateValue | None], letter: st
         i = it.index.get(letter)
         if i is None or i != it.tool_axis:
             return _ZERO
-        return what(it)
+        return _machine_len(it, what(it))
 
     return read
 
@@ -223,11 +234,35 @@ DEBUG_FLAG = 5599
 DEBUG_FLAG_DEFAULT = 1
 
 
+def _not_under_comp(read: Callable[[StateSource], Reading]) -> Callable[[StateSource], Reading]:
+    """``#5420``-``#5428``: LinuxCNC refuses to read them while cutter compensation is on
+    (``read_parameter`` in interp_read.cc: "Cannot read current position with cutter radius compensation on");
+    ``#<_x>`` .. read the compensated point instead (``Interpreter.state_program_position``)."""
+
+    def guarded(it: StateSource) -> Reading:
+        if getattr(it, "comp_on", False) and getattr(it, "dialect", "linuxcnc") == "linuxcnc":
+            raise EvalError("GC325", "cannot read the current position (#5420-#5428) with cutter radius "
+                                     "compensation on (LinuxCNC refuses it; #<_x> .. read the compensated point)")
+        return read(it)
+
+    return guarded
+
+
+def _tool_diameter(it: StateSource) -> Reading:
+    get = getattr(it, "tool_diameter", None)
+    d = get(it.tool_in_spindle) if get is not None else it.machine.tool_diameters.get(it.tool_in_spindle)
+    if d is None:
+        return None
+    sv = _machine_len(it, StateValue(d))
+    return None if sv is None else sv.value
+
+
 def linuxcnc_state_parameters() -> StateTable:
     """The state parameters of LinuxCNC's interpreter (numbering of ``interp_parameter_def.hh``).
 
-    Lengths of ``#5081``-``#5089``, ``#5161``-``#5390`` and ``#5401``-``#5409``
-    are in the machine's units (mm: LinuxCNC's "user units"), positions
+    Lengths of ``#5081``-``#5089``, ``#5161``-``#5390``, ``#5401``-``#5409`` and ``#5410``
+    are in the control's units (LinuxCNC's "user units", ``[machine] control_units``: mm unless the
+    machine file says "inch"), whatever G20/G21 is active; positions
     ``#5420``-``#5428``, ``#5021``-``#5029`` and ``#<_x>``, ``#<_abs_x>`` ...
     in the program's current units.  An axis the machine lacks reads 0.
     """
@@ -252,10 +287,10 @@ def linuxcnc_state_parameters() -> StateTable:
             add(5221 + 20 * n + k, f"{name} {a} offset", _offset_reader(name, a))
         add(5401 + k, f"stored {a} offset of the tool in the spindle (tool table)",
             _tool_axis_only(lambda it: it.state_spindle_tool_length(), a))
-        add(5420 + k, f"current {a} in program coordinates",
-            _axis_reader(a, lambda it, i: it.state_program_position(i), program_units=True))
+        position = _axis_reader(a, lambda it, i: it.state_program_position(i), program_units=True)
+        add(5420 + k, f"current {a} in program coordinates", _not_under_comp(position))
         low = a.lower()
-        add("_" + low, f"current {a} in program coordinates", t[5420 + k].read)
+        add("_" + low, f"current {a} in program coordinates", position)
         add("_abs_" + low, f"current {a} in machine coordinates (program units)", t[5021 + k].read)
     add(5070, "probe result", _unknown)
     add(5210, "G92 offset applied (1) or not (0)", lambda it: 1 if it.g92_applied else 0)
@@ -265,8 +300,7 @@ def linuxcnc_state_parameters() -> StateTable:
         add(5230 + 20 * n, f"{name} XY rotation (degrees, G10 L2 R)", lambda it, name=name: it.rot[name])
     add(5399, "M66 input wait result", _unknown)
     add(5400, "tool in the spindle", lambda it: it.tool_in_spindle)
-    add(5410, "diameter of the tool in the spindle",
-        lambda it: it.machine.tool_diameters.get(it.tool_in_spindle))
+    add(5410, "diameter of the tool in the spindle", _tool_diameter)
     for key, what in ((5411, "front angle"), (5412, "back angle"), (5413, "orientation")):
         add(key, f"lathe tool {what} of the tool in the spindle", _unknown)
     # #5599 (the (DEBUG,) output flag) is not state: an ordinary volatile parameter that starts at

@@ -5,7 +5,8 @@ short: ``[TRAJ]`` gives the axes and units, ``[AXIS_<L>]`` and (for identity
 kinematics) ``[JOINT_<n>]`` the soft limits, rapid rates and home positions,
 ``[EMCMOT] SERVO_PERIOD`` the monitor period, ``[RS274NGC]`` the start-up
 modal state and the parameter file (work offsets, the G28 position),
-``[EMCIO] TOOL_TABLE`` the tool lengths and diameters.  Every length is
+``[EMCIO] TOOL_TABLE`` the tool lengths and diameters, ``[EMCIO] TOOL_CHANGE_QUILL_UP``,
+``TOOL_CHANGE_AT_G30`` and ``TOOL_CHANGE_POSITION`` the moves of M6.  Every length is
 converted from the machine units (``LINEAR_UNITS``) to mm exactly.
 """
 
@@ -437,6 +438,49 @@ def read_linuxcnc(
 
     homing = _homing(axes, old_style, identity, homing_entry, converted, c)
 
+    # tool change: the moves M6 makes (interp_convert.cc convert_tool_change, emccanon.cc CHANGE_TOOL)
+    extra: list[tuple[str, str, str]] = [
+        ("dialect", '"linuxcnc"', "LinuxCNC's RS-274/NGC"),
+        ("cutter_compensation", '"linuxcnc"', "G41/G42 as LinuxCNC's interpreter does them")]
+    if lin[1] == "in":
+        extra.append(("control_units", '"inch"', f"{lin_e.describe() if lin_e is not None else 'LINEAR_UNITS'}: "
+                      "LinuxCNC keeps its numbered parameters (#5161-#5390, #5401-#5409) in inches"))
+    for key in ("TOOL_CHANGE_QUILL_UP", "TOOL_CHANGE_AT_G30"):
+        e = ini.get("EMCIO", key)
+        if e is not None and rd.boolean(e):
+            extra.append((key.lower(), "true", f"{e.describe()} ({e.where()}): M6 moves the machine"))
+    if any(k == "tool_change_at_g30" for k, _, _ in extra):
+        differs = [a for a in axes if g30[a].value != reference[a].value]
+        if differs:
+            at = ini.get("EMCIO", "TOOL_CHANGE_AT_G30")
+            c.error("IM111", f"{at.describe() if at else 'TOOL_CHANGE_AT_G30'}: M6 moves to the G30 position "
+                    f"({' '.join(f'{a}{format_decimal(g30[a].value)}' for a in axes)} mm), but the machine file "
+                    "has one reference position for G28 and G30 and the G28 position differs on "
+                    f"{', '.join(differs)}; store the same position in #5161-#5169 and #5181-#5189 (G28.1 and "
+                    "G30.1 at one point) so every tool change is proved where it goes",
+                    g30[differs[0]].span or (at.span if at else None), file=var_path)
+    tc_position: dict[str, Sourced] = {}
+    tcp = ini.get("EMCIO", "TOOL_CHANGE_POSITION")
+    if tcp is not None:
+        words = tcp.value.split()
+        # taskclass.cc readToolChange: sscanf of 9, else 6, else 3 numbers (X Y Z [A B C [U V W]])
+        count = 9 if len(words) >= 9 else 6 if len(words) >= 6 else 3 if len(words) >= 3 else 0
+        if count == 0:
+            c.error("IM105", f"{tcp.describe()}: {tcp.value!r} is not a position; LinuxCNC reads 3 (X Y Z), "
+                    "6 (X Y Z A B C) or 9 (X Y Z A B C U V W) numbers, and ignores the setting otherwise",
+                    tcp.span)
+        for k in range(count):
+            letter = LETTERS[k]
+            q = c.real(words[k], f"{tcp.describe()} ({letter})", tcp.span)
+            if q is None or letter not in axes:
+                continue
+            factor, unit = unit_of(letter)
+            tc_position[letter] = Sourced(q * factor, f"{tcp.describe()}: {letter} {words[k]}"
+                                          + _conversion(unit, False), tcp.span)
+        if tc_position:
+            for v in tc_position.values():
+                in_range(c, v.value, v.how, v.span)
+
     name_e = ini.get("EMC", "MACHINE")
     name = name_e.value if name_e is not None and name_e.value else Path(path).stem
     c.raise_if_failed()
@@ -454,8 +498,8 @@ def read_linuxcnc(
         rapid_mode=("linear", "LinuxCNC moves G0 on a straight line"),
         monitor_period_ms=period,
         modal=modal,
-        extra=(("dialect", '"linuxcnc"', "LinuxCNC's RS-274/NGC"),
-               ("cutter_compensation", '"linuxcnc"', "G41/G42 as LinuxCNC's interpreter does them")),
+        extra=tuple(extra),
+        axis_tables=(("machine.tool_change_position", frozen(tc_position)),) if tc_position else (),
         offsets=frozen({k: frozen(v) for k, v in offsets.items()}),
         tool_lengths=frozen(lengths),
         tool_diameters=frozen(diameters),

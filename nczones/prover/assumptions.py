@@ -37,6 +37,11 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "moves such an arc on its start radius and then straight to the end point, at most 0.005 mm from "
     "that spiral), exact NURBS, rapids straight or dogleg as the machine file says; no corner blending "
     "(G64), following error or overshoot.",
+    "LinuxCNC dialect, tool change: M6 moves the machine only as the machine file says, each move a rapid in "
+    "machine coordinates: tool_change_quill_up (Z to machine 0), then tool_change_at_g30 (every axis to the G30 "
+    "position), then [machine.tool_change_position] (a straight move there, LinuxCNC's TOOL_CHANGE_POSITION); "
+    "without them M6 does not move the machine. The tool changer's own mechanism (carousel, arm) stays clear of "
+    "the zones, and M6 is not remapped (REMAP=M6 runs a program nczones does not see).",
     "Block delete: every block-skip switch the program uses (Fanuc /1 .. /9, / is /1; LinuxCNC's one "
     "switch) is verified in both positions, in every combination with the others, unless the machine "
     "file (block_delete) or --block-delete fixes it, which the report then says (more than 16 "

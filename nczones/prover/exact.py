@@ -607,8 +607,8 @@ def box_certainly_violates(
     ``+-margin``; if no such value lies in ``[lo_a, hi_a]`` on any zone axis
     where the box has width (an axis of one value, even a shifted constant,
     is the centre's own), one test at the box centre decides the whole box.  Polygon zones: True
-    only when the box grown by the margin meets no edge and its centre
-    violates (the predicate is then constant over the box).
+    only when the box grown by the margin meets no edge, or the box is one point in the polygon's plane,
+    and its centre violates (the predicate is then constant over the box).
     """
     shift = tool_length if (zone.point is ZonePoint.TIP and tool_length) else F0
     centre = {a: (lo[a] + hi[a]) / 2 for a in lo}
@@ -626,7 +626,12 @@ def box_certainly_violates(
         sx, sy = (shift if a == allowed.tool_axis else F0 for a in (x, y))
         gx = (lo[x] - sx - margin - 1 / Fraction(10**30), hi[x] - sx + margin + 1 / Fraction(10**30))
         gy = (lo[y] - sy - margin - 1 / Fraction(10**30), hi[y] - sy + margin + 1 / Fraction(10**30))
-        if any(segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
+        # a box of one point in the polygon's plane (a helix of a rational circle: only the axis along it is
+        # enclosed) sees the polygon part of the predicate at that one point, whatever edges its margin box
+        # crosses: the zone is a prism and the margin box a product, so that part is the same for every point
+        # of the box, and the centre's test below decides it
+        flat = lo[x] == hi[x] and lo[y] == hi[y]
+        if not flat and any(segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
             return False
         axes_to_check = [a for a, _, _ in zone.limits]
     else:

@@ -216,7 +216,8 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59
 
 def machine_text(axes: tuple[str, ...], tools_inch: dict[int, Fraction],
                  offsets_inch: dict[str, dict[str, Fraction]] | None = None) -> str:
-    """The nczones machine file of an rs274 run: its axes at machine zero, ``[tool_lengths]`` from the
+    """The nczones machine file of an rs274 run (an inch control: ``control_units = "inch"``, as the standalone
+    interpreter keeps its numbered parameters in inches): its axes at machine zero, ``[tool_lengths]`` from the
     tool table and ``[offsets]`` from the parameter file (both in inches, so x 25.4; degrees for A)."""
     rapid = "\n".join(f'{a} = "10000"' for a in axes)
     ref = "\n".join(f'{a} = "0"' for a in axes)
@@ -226,7 +227,7 @@ def machine_text(axes: tuple[str, ...], tools_inch: dict[int, Fraction],
     for name, values in (offsets_inch or {}).items():
         vals = ", ".join(f'{a} = "{_dec(v if a in "ABC" else v * INCH)}"' for a, v in values.items())
         offsets += f'"{name}" = {{ {vals} }}\n'
-    return (f'[machine]\naxes = [{names}]\npulse = "0.0001"\n[machine.rapid]\n{rapid}\n'
+    return (f'[machine]\naxes = [{names}]\npulse = "0.0001"\ncontrol_units = "inch"\n[machine.rapid]\n{rapid}\n'
             f"[machine.reference]\n{ref}\n[tool_lengths]\n{tools}\n"
             + (f"[offsets]\n{offsets}" if offsets else ""))
 
