@@ -93,8 +93,6 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..prover.limits import DEFAULT_BUDGET_S
-
     p = cli.add_command(sub, "plot")
     p.add_argument("program", metavar="PROGRAM", help="the G-code program file; '-' reads standard input")
     p.add_argument("--machine", required=True, metavar="M.toml",
@@ -105,8 +103,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--no-verify", dest="verify", action="store_false",
                    help="draw only; do not verify (no violations marked)")
     p.add_argument("--budget", default=None, metavar="SECONDS",
-                   help=f"time for the verification and, again, for the interpretation that draws the program "
-                        f"(default {DEFAULT_BUDGET_S:g}; 'none' for no limit): a loop, repeat or cycle pass past "
+                   help="time for the verification and, again, for the interpretation that draws the program "
+                        "(default: verify's, 60; 'none' for no limit): a loop, repeat or cycle pass past "
                         "it ends the drawing there, with a note")
     p.add_argument("--dpi", type=int, default=120, help="resolution of a PNG in dots per inch (default 120)")
     p.add_argument("--dialect", choices=("linuxcnc", "fanuc"), default=None,

@@ -186,7 +186,6 @@ def _run(args: argparse.Namespace) -> int:
 
 def register(sub: argparse._SubParsersAction) -> None:
     from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
-    from ..prover.limits import DEFAULT_BUDGET_S
 
     p = cli.add_command(sub, "simulate",
                        description="Run PROGRAM through the reference controller pulse by pulse. Exit status: 0 "
@@ -216,7 +215,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="iterations a loop (while, do, repeat) may run per entry before the simulation stops "
                         f"there (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")
     p.add_argument("--budget", default=None, metavar="SECONDS",
-                   help=f"time for the interpretation (default {DEFAULT_BUDGET_S:g}; 'none' for no limit): a loop, "
+                   help="time for the interpretation (default: verify's, 60; 'none' for no limit): a loop, "
                         "repeat or cycle pass past it stops the simulation there (VF203, exit 2)")
     p.add_argument("--format", choices=("text", "json"), default="text",
                    help="text (readable) or json (specs/simulate.schema.json)")
