@@ -873,7 +873,7 @@ def g71(pieces: list[Piece], start: complex, *, cycle: int, x: float, z: float, 
 
 def g72(pieces: list[Piece], start: complex, **kw: Any) -> list[Out]:
     """LinuxCNC's G72 facing cycle: :func:`g71` with the profile turned by 90 degrees."""
-    return g71(pieces, start, facing=True, **kw)  # type: ignore[arg-type]
+    return g71(pieces, start, facing=True, **kw)
 
 
 def _run(fn: Callable[[_Path], None], pieces: list[Piece], guard: PassGuard | None = None) -> None:
