@@ -724,6 +724,14 @@ class _Path:
         mapped = _Mapped(out, self.state)
         self.delta = max(i, 2 * TOLERANCE)
         self.escape = _mulr(r, C(1.0, 1.0))
+        if self.guard is not None:
+            # before any pass is made: the levels from the start's level down to the profile's lowest point
+            # (its pieces are monotonic: the lowest is an end point), one every delta, each cut at least once;
+            # one level of slack for the doubles (the exact number is counted as the cuts are made)
+            top = self.pieces[0].start.imag
+            levels = (top - min(min(p.start.imag, p.end.imag) for p in self.pieces)) / self.delta
+            if levels == levels:
+                self.guard.count("roughing passes", int(min(levels, 1e18)) - 1, at_least=True)
         out.label = "roughing: to the start"
         mapped.rapid(self.pieces[0].start)
         if self.pieces[-1].end.imag < self.pieces[0].start.imag:

@@ -176,7 +176,7 @@ class LatheInterpreter(Interpreter):
                                 w=fl.get("W", 0.0), d=fl.get("D", 0.0), i=fl.get("I", 1.0), r=fl.get("R", 0.5),
                                 facing=code == 72, guard=self.pass_guard(name))
         except PassBound as e:
-            self.unknown(e.code, e.reason if e.code == "VF203" else f"{name}: {e.reason}", gw)
+            self.unknown(e.code, e.reason, gw)
             return
         except g7x.G7xError as e:
             self.unknown(name, f"{name}: LinuxCNC stops this cycle with an error or its result is not defined: {e}",

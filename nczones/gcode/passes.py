@@ -34,10 +34,12 @@ class PassGuard:
     max_passes: int
     spent: Callable[[], str | None] = lambda: None
 
-    def count(self, what: str, n: int) -> None:
-        """Raise :class:`PassBound` when the cycle would make ``n`` ``what`` (more than ``max_passes``)."""
+    def count(self, what: str, n: int, *, at_least: bool = False) -> None:
+        """Raise :class:`PassBound` when the cycle would make ``n`` ``what`` (more than ``max_passes``;
+        ``at_least``: ``n`` is a lower bound of the count)."""
         if n > self.max_passes:
-            raise PassBound(self.name, f"the cycle would make {n} {what}, more than {self.max_passes} "
+            raise PassBound(self.name, f"the cycle would make {'at least ' if at_least else ''}{n} {what}, more than "
+                                       f"{self.max_passes} "
                                        "(max_loop_iterations, --max-iterations); not interpreted further")
 
     def tick(self, what: str) -> None:

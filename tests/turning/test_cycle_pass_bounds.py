@@ -160,6 +160,17 @@ def test_linuxcnc_g70_passes_are_counted_before_any_is_made():
     assert time.perf_counter() - t0 < 20
 
 
+def test_linuxcnc_g71_levels_are_counted_before_any_pass_is_made(tmp_path):
+    """I0.0001 from X10 down to the profile's bottom X4: the levels 10 - 0.0001 k above 4, k = 0..59999, are 60,000
+    cuts; --max-iterations 1000 refuses the cycle before any pass is made, with a lower bound of the count (the
+    levels are doubles: one of slack)."""
+    prog = tmp_path / "g71.ngc"
+    prog.write_text(LC.format(cycle="G71 Q1 X10 Z1 D0 I0.0001 R0.5"))
+    rc, out, secs = _cli(prog, LC_LATHE, "--max-iterations", "1000")
+    assert "G71: the cycle would make at least 59999 roughing passes, more than 1000" in out and ":8:" in out, out
+    assert rc == 3 and secs < 30
+
+
 def test_linuxcnc_g71_within_max_iterations_ends_within_the_budget(tmp_path):
     """I0.0001 from X10 to X4: ~60,000 cuts, within --max-iterations 1000000: the budget (1 s) ends it as unknown
     (VF203)."""
