@@ -56,20 +56,30 @@ def _run(args: argparse.Namespace) -> int:
     use_agg_backend()
     import matplotlib.pyplot as plt
 
+    from ..prover.limits import interpretation_budget
     from ..report.figure import plot_program
     from ..report.progress import progress_for
+    from .verify import budget_seconds
 
+    budget = budget_seconds(args.budget)
     result = None
     if args.verify:
         from ..prover import verify
 
         bar = progress_for(sys.stderr, "verify")
         try:
-            result = verify(source, machine, progress=bar)
+            result = verify(source, machine, progress=bar, budget_s=budget)
         finally:
             if bar is not None:
                 bar.close()
-    fig = plot_program(source, machine, plane, result)
+    # drawing interprets the program again: its repetitions ask the same budget (a fresh one: verify spent its
+    # own), so a program that loops for hours is drawn up to where the budget ends it
+    with interpretation_budget(budget) as lim:
+        fig = plot_program(source, machine, plane, result)
+    if lim.spent_at is not None:
+        print(f"{source.name}: note: the budget of {budget:g} s was spent while interpreting the program for "
+              "the drawing; the plot shows it up to the repetition that found it spent (raise --budget)",
+              file=sys.stderr)
     try:
         fig.savefig(args.output, dpi=args.dpi)
     except OSError as exc:
@@ -92,6 +102,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--plane", metavar="H,V", help="axes of the plot plane, e.g. X,Z (default: a plane the zones use)")
     p.add_argument("--no-verify", dest="verify", action="store_false",
                    help="draw only; do not verify (no violations marked)")
+    p.add_argument("--budget", default=None, metavar="SECONDS",
+                   help="time for the verification and, again, for the interpretation that draws the program "
+                        "(default: verify's, 60; 'none' for no limit): a loop, repeat or cycle pass past "
+                        "it ends the drawing there, with a note")
     p.add_argument("--dpi", type=int, default=120, help="resolution of a PNG in dots per inch (default 120)")
     p.add_argument("--dialect", choices=("linuxcnc", "fanuc"), default=None,
                    help="how the program text is read (default: the machine file's [machine] dialect)")

@@ -136,20 +136,32 @@ def _run(args: argparse.Namespace) -> int:
         if result is not None:
             break
     notes: list[str] = []
+    budget_stop = False
     if result is None:
+        from ..prover.limits import interpretation_budget
+        from .verify import budget_seconds
+
+        budget = budget_seconds(args.budget)
         run = interpret(source, machine, arc_tolerance=cli.arc_tolerance(args.arc_tolerance),
                         max_loop_iterations=_max_iterations(args.max_iterations), library=library)
         from ..report.progress import progress_for
 
         bar = progress_for(sys.stderr, "simulate")
         try:
-            result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings, progress=bar,
-                              break_at=_break_at(args.break_at))
+            # interpretation is lazy: it runs inside simulate(), whose repetitions (loops, repeats, cycle passes)
+            # ask the budget and end as VF203 once it is spent
+            with interpretation_budget(budget):
+                result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings,
+                                  progress=bar, break_at=_break_at(args.break_at))
         finally:
             if bar is not None:
                 bar.close()
         for u in run.unsupported:
-            notes.append(f"{u.span}: {u.code} is not supported ({u.reason}); the simulation stopped there")
+            if u.code == "VF203":
+                budget_stop = True
+                notes.append(f"{u.span}: {u.code}: {u.reason}; the simulation stopped there")
+            else:
+                notes.append(f"{u.span}: {u.code} is not supported ({u.reason}); the simulation stopped there")
         if run.assumed_modal:
             notes.extend(run.assumed_modal_text())
         notes.extend(run.notes())
@@ -167,7 +179,7 @@ def _run(args: argparse.Namespace) -> int:
         sys.stdout.write(text + f"  dialect: {machine.dialect}\n" + "".join(f"  note: {n}\n" for n in notes))
     if result.alarms:
         return cli.EXIT_FAIL
-    if any("not supported" in n for n in notes):
+    if budget_stop or any("not supported" in n for n in notes):
         return cli.EXIT_INPUT
     return cli.EXIT_OK
 
@@ -202,6 +214,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
                    help="iterations a loop (while, do, repeat) may run per entry before the simulation stops "
                         f"there (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")
+    p.add_argument("--budget", default=None, metavar="SECONDS",
+                   help="time for the interpretation (default: verify's, 60; 'none' for no limit): a loop, "
+                        "repeat or cycle pass past it stops the simulation there (VF203, exit 2)")
     p.add_argument("--format", choices=("text", "json"), default="text",
                    help="text (readable) or json (specs/simulate.schema.json)")
     for extra in EXTRA_OPTIONS:

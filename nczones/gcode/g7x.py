@@ -19,6 +19,9 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
+
+from .passes import PassGuard
 
 __all__ = ["Piece", "Out", "G7xError", "g70", "g71", "g72", "TOLERANCE"]
 
@@ -569,6 +572,7 @@ class _Path:
         self.delta = 0.5
         self.escape = C(0.3, 0.3)
         self.pocket_starts: list[complex] = []
+        self.guard: PassGuard | None = None
 
     def copy(self) -> _Path:
         q = _Path([p.copy() for p in self.pieces])
@@ -687,6 +691,9 @@ class _Path:
 
     # ------------------------------------------------------------------ the cycles
     def g70(self, out: _Sink, x: float, z: float, d: float, e: float, passes: float) -> None:
+        count = int(passes)
+        if self.guard is not None:  # counted before any pass is made
+            self.guard.count("finishing passes", count)
         self.pieces[0].start = C(z, x)
         if self.should_rotate():
             self.rotate()
@@ -696,9 +703,10 @@ class _Path:
         mapped = _Mapped(out, self.state)
         # interp_g7x.cc do_g70: ``for(int pass=p; pass>0; pass--)`` counts int(P) (toward zero) passes, each at
         # ``(pass-1)*(d-e)/p+e`` with the double P: P2.6 makes 2 passes, the outer at (d - e) / 2.6 + e
-        count = int(passes)
         for n in range(count, 0, -1):
             out.label = f"finishing pass {count - n + 1}"
+            if self.guard is not None:
+                self.guard.tick(f"{count - n} finishing passes")
             distance = (n - 1) * (d - e) / passes + e
             q = self.copy()
             q.add_distance(distance)
@@ -722,6 +730,14 @@ class _Path:
         mapped = _Mapped(out, self.state)
         self.delta = max(i, 2 * TOLERANCE)
         self.escape = _mulr(r, C(1.0, 1.0))
+        if self.guard is not None:
+            # before any pass is made: the levels from the start's level down to the profile's lowest point
+            # (its pieces are monotonic: the lowest is an end point), one every delta, each cut at least once;
+            # one level of slack for the doubles (the exact number is counted as the cuts are made)
+            top = self.pieces[0].start.imag
+            levels = (top - min(min(p.start.imag, p.end.imag) for p in self.pieces)) / self.delta
+            if levels == levels:
+                self.guard.count("roughing passes", int(min(levels, 1e18)) - 1, at_least=True)
         out.label = "roughing: to the start"
         mapped.rapid(self.pieces[0].start)
         if self.pieces[-1].end.imag < self.pieces[0].start.imag:
@@ -756,6 +772,8 @@ class _Path:
             self.steps += 1
             if self.steps > _MAX_STEPS:
                 raise G7xError("the roughing cycle does not end (LinuxCNC would loop forever)")
+            if self.guard is not None:
+                self.guard.tick(f"{self.cuts} roughing passes")
             while x - TOLERANCE > at[0].imag:
                 x -= self.delta
             label(f"roughing pass {self.cuts + 1}: infeed")
@@ -800,6 +818,8 @@ class _Path:
                     break
                 self.cuts += 1
                 n = self.cuts
+                if self.guard is not None:
+                    self.guard.count("roughing passes", n)
                 dest = C(destination, at[0].imag)
                 label(f"roughing pass {n}: cut")
                 out.straight(dest)
@@ -836,16 +856,17 @@ def _cxx_min(a: float, b: float) -> float:
 # --------------------------------------------------------------------------- entry points
 
 
-def g70(pieces: list[Piece], start: complex, *, x: float, z: float, d: float, e: float, passes: float) -> list[Out]:
+def g70(pieces: list[Piece], start: complex, *, x: float, z: float, d: float, e: float, passes: float,
+        guard: PassGuard | None = None) -> list[Out]:
     """LinuxCNC's G70: ``int(passes)`` finishing passes at distances ``(n - 1) (d - e) / passes + e`` from the profile,
     each from a rapid to its start.  ``start`` is where the tool stands (after the cycle's rapid to X Z)."""
     sink = _Sink(start)
-    _run(lambda p: p.g70(sink, x, z, d, e, passes), pieces)
+    _run(lambda p: p.g70(sink, x, z, d, e, passes), pieces, guard)
     return sink.moves
 
 
 def g71(pieces: list[Piece], start: complex, *, cycle: int, x: float, z: float, u: float, w: float, d: float,
-        i: float, r: float, facing: bool = False) -> list[Out]:
+        i: float, r: float, facing: bool = False, guard: PassGuard | None = None) -> list[Out]:
     """LinuxCNC's G71 (``facing``: G72) roughing cycle; ``cycle`` is 0 (G71), 1 (G71.1: no pockets) or 2 (G71.2:
     the pockets only)."""
     sink = _Sink(start)
@@ -860,17 +881,18 @@ def g71(pieces: list[Piece], start: complex, *, cycle: int, x: float, z: float, 
             path_pieces.append(Straight(end, C(end.real, x)))
     elif abs(dback.imag) > 0 and dfront.real * (z - end.real) < 0:
         path_pieces.append(Straight(end, C(z, end.imag)))
-    _run(lambda p: p.g71(sink, cycle, x, z, u, w, d, i, r, rotate=facing), path_pieces)
+    _run(lambda p: p.g71(sink, cycle, x, z, u, w, d, i, r, rotate=facing), path_pieces, guard)
     return sink.moves
 
 
-def g72(pieces: list[Piece], start: complex, **kw: float | int) -> list[Out]:
+def g72(pieces: list[Piece], start: complex, **kw: Any) -> list[Out]:
     """LinuxCNC's G72 facing cycle: :func:`g71` with the profile turned by 90 degrees."""
-    return g71(pieces, start, facing=True, **kw)  # type: ignore[arg-type]
+    return g71(pieces, start, facing=True, **kw)
 
 
-def _run(fn: Callable[[_Path], None], pieces: list[Piece]) -> None:
+def _run(fn: Callable[[_Path], None], pieces: list[Piece], guard: PassGuard | None = None) -> None:
     path = _Path([p.copy() for p in pieces])
+    path.guard = guard
     try:
         fn(path)
     except (IndexError, ZeroDivisionError, ValueError) as e:  # LinuxCNC reads past its list or divides by 0

@@ -49,6 +49,7 @@ from . import (  # defined in the package, which loads this module lazily
 from .blocks import LANE_FULL, Block, Word
 from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
+from .passes import PassGuard
 from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
 from .segments import dadd, make_segment, with_tool_deps
 from .splines import SPLINE_CODES, spline_block, spline_pending
@@ -551,6 +552,11 @@ class Interpreter:
         self.unknown(name, f"{what} repeats {count} times, more than {self.max_repeats} (max_loop_iterations, "
                      "--max-iterations); not interpreted further", word)
         return True
+
+    def pass_guard(self, name: str) -> PassGuard:
+        """The bounds of one lathe cycle's passes (:mod:`nczones.gcode.passes`): ``max_repeats`` passes and
+        the watched run's budget."""
+        return PassGuard(name, self.max_repeats, interpretation_spent)
 
     def budget_gone(self, name: str, what: str, word: Word | None = None) -> bool:
         """At each repetition of a block: True (and unknown, VF203, saying what was counted) once the watched

@@ -23,6 +23,7 @@ from ..motion import Plane, SegmentKind
 from . import g7x
 from .blocks import Block, ShapeBlock, Word
 from .interpreter import INCH, Interpreter, dadd, gkey, qadd
+from .passes import PassBound
 
 __all__ = ["LatheInterpreter", "uses_lathe"]
 
@@ -169,11 +170,14 @@ class LatheInterpreter(Interpreter):
         try:
             if code == 70:  # (P below 1: no pass, as LinuxCNC 2.9's loop; no error)
                 moves = g7x.g70(pieces, start, x=float(x0), z=float(z0), d=fl.get("D", 0.0), e=fl.get("E", 0.0),
-                                passes=p)
+                                passes=p, guard=self.pass_guard(name))
             else:
                 moves = g7x.g71(pieces, start, cycle=sub, x=float(x0), z=float(z0), u=fl.get("U", 0.0),
                                 w=fl.get("W", 0.0), d=fl.get("D", 0.0), i=fl.get("I", 1.0), r=fl.get("R", 0.5),
-                                facing=code == 72)
+                                facing=code == 72, guard=self.pass_guard(name))
+        except PassBound as e:
+            self.unknown(e.code, e.reason, gw)
+            return
         except g7x.G7xError as e:
             self.unknown(name, f"{name}: LinuxCNC stops this cycle with an error or its result is not defined: {e}",
                           gw)

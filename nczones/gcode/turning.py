@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from ..motion import SegmentKind
+from .passes import PassGuard
 
 __all__ = ["Element", "Move", "CycleUnknown", "round_to_grid", "round_surd", "rough_cycle", "pattern_cycle",
            "finish_moves", "turning_cycle", "thread_chamfer", "peck_cycle", "thread_cycle_g76", "Pt"]
@@ -389,7 +390,7 @@ def _point_on_arc_h(centre: Pt, s: Pt, e: Pt, cw: bool, dh: Fraction, r2: Fracti
 
 def rough_cycle(code: str, start: Pt, approach: Element, shape: Sequence[Element], *, facing: bool,
                 depth: Fraction, retract: Fraction, allowance: Pt, type_one: bool, infeed_rapid: bool,
-                final_pass: bool, grid: Pt) -> list[Move]:
+                final_pass: bool, grid: Pt, guard: PassGuard | None = None) -> list[Move]:
     """The moves of Fanuc's G71 (``facing=False``) or G72 (``facing=True``) roughing cycle.
 
     Parameters
@@ -476,6 +477,14 @@ def rough_cycle(code: str, start: Pt, approach: Element, shape: Sequence[Element
         moves.append(Move(kind, frame.back(p), label, None if centre is None else frame.back(centre),
                           frame.clockwise(cw)))
 
+    if guard is not None:
+        # the levels are the k >= 1 with ha - k * depth above the lowest point: counted before any is made
+        # (ceil((ha - lowest) / depth) - 1, the lowest point taken as a float when it is irrational; the loop
+        # below checks the exact count too)
+        if lowest[0] == "line":
+            guard.count("roughing passes", max(0, -((ha - lowest[1]) // -depth) - 1))
+        else:  # one less, for the float's error
+            guard.count("roughing passes", max(0, -((ha - Fraction(_surd_value(lowest))) // -depth) - 2))
     k = 0
     level = ha
     while True:
@@ -483,6 +492,9 @@ def rough_cycle(code: str, start: Pt, approach: Element, shape: Sequence[Element
         if _surd_compare(("line", nxt, _ZERO, _ZERO), lowest) <= 0:
             break
         k += 1
+        if guard is not None:
+            guard.count("roughing passes", k)
+            guard.tick(f"{k - 1} roughing passes")
         level = nxt
         xs = _level_crossings(closing, level)
         if len(xs) % 2:
@@ -528,7 +540,7 @@ def _round_crossing(x: tuple, frame: _Frame, cut_axis: int, step: Fraction) -> F
 
 
 def pattern_cycle(code: str, start: Pt, approach: Element, shape: Sequence[Element], *, relief: Pt,
-                  divisions: int, allowance: Pt, grid: Pt) -> list[Move]:
+                  divisions: int, allowance: Pt, grid: Pt, guard: PassGuard | None = None) -> list[Move]:
     """Fanuc's G73 pattern repeating cycle: the shape (with its first block) cut ``divisions`` times, moved by
     ``allowance + relief * (divisions - j) / (divisions - 1)`` in pass j, each pass from the start point and
     back to it at rapid (0i-TD "Pattern repeating").
@@ -546,8 +558,12 @@ def pattern_cycle(code: str, start: Pt, approach: Element, shape: Sequence[Eleme
     """
     if divisions < 1:
         raise CycleUnknown(f"{code}: the number of divisions must be at least 1")
+    if guard is not None:
+        guard.count("pattern passes (divisions)", divisions)
     moves: list[Move] = []
     for j in range(1, divisions + 1):
+        if guard is not None:
+            guard.tick(f"{j - 1} pattern passes")
         f = Fraction(divisions - j, divisions - 1) if divisions > 1 else _ZERO
         dz = allowance[0] + round_to_grid(relief[0] * f, grid[0])
         dx = allowance[1] + round_to_grid(relief[1] * f, grid[1])
@@ -639,7 +655,7 @@ def thread_chamfer(lead: Fraction, leads: Fraction, angle: Fraction, grid: Pt) -
 
 
 def peck_cycle(code: str, start: Pt, end: Pt, *, along_z: bool, step_peck: Fraction, step_shift: Fraction,
-               back: Fraction, relief: Fraction, grid: Pt) -> list[Move]:
+               back: Fraction, relief: Fraction, grid: Pt, guard: PassGuard | None = None) -> list[Move]:
     """Fanuc's G74 (end face peck drilling/grooving: pecks along Z, shifts along X) and G75 (outer/inner
     grooving: pecks along X, shifts along Z).
 
@@ -673,6 +689,14 @@ def peck_cycle(code: str, start: Pt, end: Pt, *, along_z: bool, step_peck: Fract
     if s1 != s0:
         if step_shift <= 0:
             raise CycleUnknown(f"{code}: the shift amount must be greater than 0 to reach the end point")
+    if guard is not None:
+        # counted before any is made: 1 + ceil(|s1 - s0| / shift) positions, ceil(|p1 - p0| / peck) pecks
+        # (at least 1) at each
+        n_pos = 1 + (-(-abs(s1 - s0) // step_shift) if s1 != s0 else 0)
+        n_peck = max(1, -(-abs(p1 - p0) // step_peck))
+        guard.count("shift positions", n_pos)
+        guard.count("pecks in all", n_pos * n_peck)
+    if s1 != s0:
         n = 1
         while True:
             s = s0 + sdir * n * step_shift
@@ -684,6 +708,8 @@ def peck_cycle(code: str, start: Pt, end: Pt, *, along_z: bool, step_peck: Fract
     moves: list[Move] = []
     for j, s in enumerate(positions, start=1):
         label = f"position {j}"
+        if guard is not None:
+            guard.tick(f"{j - 1} shift positions")
         if j > 1:
             moves.append(Move(SegmentKind.RAPID, pt(p0, s), f"{label}: shift"))
         depth = p0
@@ -716,7 +742,7 @@ def peck_cycle(code: str, start: Pt, end: Pt, *, along_z: bool, step_peck: Fract
 
 def thread_cycle_g76(code: str, start: Pt, end: Pt, *, taper: Fraction, height: Fraction, first_depth: Fraction,
                      min_depth: Fraction, finish_allowance: Fraction, finish_passes: int, tool_angle: Fraction,
-                     chamfer: Pt | None, grid: Pt) -> list[Move]:
+                     chamfer: Pt | None, grid: Pt, guard: PassGuard | None = None) -> list[Move]:
     """Fanuc's G76 multiple threading cycle, single-edge infeed along the flank.
 
     ``end`` is the programmed point: X at the thread's root, Z at its end.  Roughing pass n (n = 1, 2, ...)
@@ -753,8 +779,14 @@ def thread_cycle_g76(code: str, start: Pt, end: Pt, *, taper: Fraction, height: 
         if dn >= limit:
             break
         n += 1
+        if guard is not None:  # the depths are counted before any pass is made
+            guard.count("thread passes", n + finish_passes)
+            if n % 1000 == 0:
+                guard.tick(f"{n} thread depths")
         depths.append((dn, f"thread pass {n}"))
         last = dn
+    if guard is not None:
+        guard.count("thread passes", n + (1 if finish_allowance else 0) + finish_passes)
     if finish_allowance:
         n += 1
         depths.append((limit, f"thread pass {n}"))

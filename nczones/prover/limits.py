@@ -27,6 +27,10 @@ No run is unbounded (README, "Standards"):
   program whose loops would run for hours (nested ``WHILE`` loops, each
   within ``--max-iterations``) ends within the budget too.  A straight-line
   program is never stopped by it: its length bounds its interpretation.
+  The commands that interpret without proving (``simulate``, ``plot
+  --no-verify``) bound their interpretation the same way through
+  :func:`interpretation_budget` (their ``--budget``, default
+  :data:`DEFAULT_BUDGET_S`).
 * **Ctrl-C**: while a run is watched (:meth:`RunLimits.watch`, in the main
   thread), SIGINT reaches the watchdog through :func:`signal.set_wakeup_fd`;
   it interrupts the running Z3 query at once (Z3's interrupt: a Python
@@ -53,7 +57,7 @@ from typing import Any
 
 from ..gcode.program import WATCHED_LIMITS
 
-__all__ = ["RunLimits", "BudgetSpent", "DEFAULT_BUDGET_S", "DEFAULT_QUERY_TIME_S", "LINEAR_RLIMIT",
+__all__ = ["RunLimits", "BudgetSpent", "interpretation_budget", "DEFAULT_BUDGET_S", "DEFAULT_QUERY_TIME_S", "LINEAR_RLIMIT",
            "NONLINEAR_RLIMIT"]
 
 #: Seconds a program may spend on solver work and refinement (``--budget``).
@@ -260,3 +264,17 @@ class RunLimits:
             if int(signal.SIGINT) in data or int(signal.SIGTERM) in data:  # SIGTERM: nczones.cli's handler
                 self.interrupted = True
                 self._fire("interrupt")
+
+
+@contextmanager
+def interpretation_budget(budget_s: float | None = DEFAULT_BUDGET_S) -> Iterator[RunLimits]:
+    """Bound the interpretation run inside the block by ``budget_s`` seconds (None: no bound), for the commands
+    that interpret without proving (``simulate``, ``plot``): the interpreters' repetitions ask it as they ask
+    :meth:`RunLimits.watch`'s budget and end as ``unknown`` (VF203) once it is spent.  No watchdog thread and
+    no Ctrl-C handling: no solver query runs here.  A ``verify`` inside the block watches its own limits."""
+    lim = RunLimits(budget_s=budget_s, query_time_s=None)
+    token = WATCHED_LIMITS.set(lim)
+    try:
+        yield lim
+    finally:
+        WATCHED_LIMITS.reset(token)

@@ -35,6 +35,7 @@ from ...motion import Plane, SegmentKind
 from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ..blocks import Block, ShapeBlock, Word
 from ..interpreter import AXIS_LETTERS, StopProgram, dadd, fmt_number, gkey, gname, qadd
+from ..passes import PassBound
 from ..turning import (
     CycleUnknown,
     Element,
@@ -944,7 +945,8 @@ class FanucLatheInterpreter(FanucInterpreter):
                                        f"{'X' if not facing else 'Z'}")
                 moves = rough_cycle(name, start, approach, shape, facing=facing, depth=depth, retract=retract,
                                     allowance=allowance, type_one=not type_two, infeed_rapid=first_rapid,
-                                    final_pass=self.settings.roughing_final_pass, grid=grid)
+                                    final_pass=self.settings.roughing_final_pass, grid=grid,
+                                    guard=self.pass_guard(name))
             else:
                 extra = [x for x in ("I", "K", "D") if x in words]
                 if extra:
@@ -957,7 +959,10 @@ class FanucLatheInterpreter(FanucInterpreter):
                                        "divisions) and without [fanuc] g73_relief_x, g73_relief_z, g73_divisions "
                                        "(parameters 5135-5137)")
                 moves = pattern_cycle(name, start, approach, shape, relief=(rz, rx), divisions=n,
-                                      allowance=allowance, grid=grid)
+                                      allowance=allowance, grid=grid, guard=self.pass_guard(name))
+        except PassBound as e:
+            self.unknown(e.code, e.reason, w)
+            return
         except CycleUnknown as e:
             self.unknown(name, str(e), w)
             return
@@ -1160,7 +1165,10 @@ class FanucLatheInterpreter(FanucInterpreter):
                 raise CycleUnknown(f"{name}'s return amount e is parameter 5139; give the first block ({name} R..) "
                                    "or set [fanuc] g74_retract")
             moves = peck_cycle(name, (z0, x0), (ze, xe), along_z=along_z, step_peck=peck, step_shift=shift or _ZERO,
-                               back=back, relief=relief, grid=self._grid_zx())
+                               back=back, relief=relief, grid=self._grid_zx(), guard=self.pass_guard(name))
+        except PassBound as e:
+            self.unknown(e.code, e.reason, w)
+            return
         except CycleUnknown as e:
             self.unknown(name, str(e), w)
             return
@@ -1222,7 +1230,11 @@ class FanucLatheInterpreter(FanucInterpreter):
             chamfer = self._chamfer("G76", lead)
             moves = thread_cycle_g76("G76", (z0, x0), (ze, xe), taper=taper, height=height, first_depth=first,
                                      min_depth=dmin, finish_allowance=allowance, finish_passes=m_passes,
-                                     tool_angle=angle, chamfer=chamfer, grid=self._grid_zx())
+                                     tool_angle=angle, chamfer=chamfer, grid=self._grid_zx(),
+                                     guard=self.pass_guard("G76"))
+        except PassBound as e:
+            self.unknown(e.code, e.reason, w)
+            return
         except CycleUnknown as e:
             self.unknown("G76", str(e), w)
             return
