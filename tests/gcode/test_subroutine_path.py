@@ -1,0 +1,116 @@
+"""LinuxCNC subroutine files (issue 38, "LinuxCNC programs as shops keep them"): ``o<name> call`` of a sub
+the program does not define reads ``name.ngc`` from LinuxCNC's ``[RS274NGC] SUBROUTINE_PATH`` folders, in
+order (src/emc/rs274ngc/interp_o_word.cc ``find_ngc_file``); nczones takes them from ``--library`` (one
+folder or an ``os.pathsep`` list).  Diagnostics and violations name the subroutine file and its line.
+
+The motion is held to LinuxCNC's own ``rs274 -i t.ini`` with ``SUBROUTINE_PATH = nothere:subs``: the
+first folder has no file, the second does (rs274 2.9 prints ``STRAIGHT_FEED(10, 0, 5)`` then
+``STRAIGHT_FEED(10, 10, 5)`` for ``o<square> call [10]``; without the INI it stops with "EOF in file ...
+seeking o-word: o<square>").
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from nczones.machine import load_machine
+from nczones.prover import verify_text as verify
+from tests.oracles.rs274 import canon_error, canon_motion, compare, machine_text
+
+MILL = "specs/machines/mill.toml"
+# square.ngc line 2 is "G1 X#1 F100", line 3 "G1 Y#1"
+SQUARE = "o<square> sub\nG1 X#1 F100\nG1 Y#1\no<square> endsub\nM2\n"
+RS274 = os.environ.get("RS274", "/usr/bin/rs274")
+
+
+@pytest.fixture
+def subs(tmp_path: Path) -> Path:
+    folder = tmp_path / "subs"
+    folder.mkdir()
+    (folder / "square.ngc").write_text(SQUARE)
+    return folder
+
+
+def _program(value: str, before: str = "", after: str = "") -> str:
+    # the mill: G54 puts program X0 Y0 Z0 at machine X150 Y100 Z100; travel X 0..600, Y 0..400
+    return f"G21 G90 G17 G54\nG0 X0 Y0 Z100\n{before}o<square> call [{value}]\n{after}G0 Z110\nM2\n"
+
+
+@pytest.mark.skipif(not Path(RS274).exists(), reason="LinuxCNC's rs274 is not installed")
+def test_motion_from_a_subroutine_file_is_linuxcncs(tmp_path: Path, subs: Path):
+    program = "G21 G90 G17\nG0 X0 Y0 Z5\no<square> call [10]\nG0 Z10\nM2\n"
+    (tmp_path / "prog.ngc").write_text(program)
+    (tmp_path / "t.ini").write_text("[RS274NGC]\nSUBROUTINE_PATH = nothere:subs\n")
+    p = subprocess.run([RS274, "-i", "t.ini", "-g", "prog.ngc"], cwd=tmp_path, capture_output=True, text=True,
+                       errors="replace", timeout=20, stdin=subprocess.DEVNULL)
+    moves = canon_motion(p.stdout)
+    assert len(moves) >= 4  # the two feeds of the subroutine are in the log
+    machine = load_machine_text(machine_text(("X", "Y", "Z"), {}))
+    library = os.pathsep.join((str(tmp_path / "nothere"), str(subs)))
+    assert compare(program, machine, moves, canon_error(p.returncode, p.stderr), library=library).status == "match"
+
+
+def load_machine_text(text: str):
+    from nczones.machine import parse_machine
+
+    return parse_machine(text)
+
+
+def test_without_a_library_the_call_stays_unknown_and_says_how():
+    result = verify(_program("10"), load_machine(MILL), file="main.ngc")
+    assert result.verdict.label == "unknown"
+    (reason,) = [r for r in result.reasons if r.code == "GC303"]
+    assert "--library" in reason.message and "SUBROUTINE_PATH" in reason.message
+
+
+@pytest.mark.parametrize("case", ["short", "parametric", "long"])
+def test_a_violation_in_the_subroutine_file_names_that_file(subs: Path, case: str):
+    # X500 from G54's X150 is machine X650, past the travel's 600: the feed at square.ngc:2 leaves it,
+    # then square.ngc:3 (Y500 -> machine Y600 > 400) and the main program's G0 Z110 (still at X650)
+    value, before, after = "500", "", ""
+    if case == "parametric":  # '#' in the text: the double pass must hand the call to the full path
+        before, value = "#<v> = 500\n", "#<v>"
+    if case == "long":  # > 512 motions around the call: runs of plain lines on both sides
+        before = "".join(f"G1 X{i % 7} Y{i % 5} F1000\n" for i in range(600))
+        after = "".join(f"G1 X{i % 7} Y{i % 5} Z100\n" for i in range(600))
+    machine = load_machine(MILL)
+    result = verify(_program(value, before, after), machine, file="main.ngc", library=subs)
+    assert result.verdict.label == "unsafe"
+    where = [(v.span.file, v.span.line) for v in result.violations]
+    sub_file = str(subs / "square.ngc")
+    assert where[:2] == [(sub_file, 2), (sub_file, 3)]
+    assert result.violations[0].span.text == "G1 X#1 F100"
+    if case == "long":  # the return lands in the main program's second run of plain lines (line 605 + 1)
+        assert where[2] == ("main.ngc", 3 + 600 + 1)
+    else:
+        assert where[2][0] == "main.ngc"
+    # inside the travel the same program is safe
+    ok = verify(_program("10" if case != "parametric" else "#<v>",
+                         before.replace("500", "10"), after), machine, file="main.ngc", library=subs)
+    assert ok.verdict.label == "safe", ok.reasons
+
+
+def test_the_first_folder_with_the_file_wins_and_a_file_without_the_sub_is_an_error(tmp_path: Path, subs: Path):
+    first = tmp_path / "first"
+    first.mkdir()
+    (first / "square.ngc").write_text("o<square> sub\nG1 X1 F100\no<square> endsub\nM2\n")
+    machine = load_machine(MILL)
+    result = verify(_program("500"), machine, file="main.ngc", library=os.pathsep.join((str(first), str(subs))))
+    assert result.verdict.label == "safe"  # first/square.ngc moves to X1 only
+    (first / "square.ngc").write_text("o<other> sub\no<other> endsub\n")
+    from nczones.errors import GcodeError
+
+    with pytest.raises(GcodeError) as err:
+        verify(_program("500"), machine, file="main.ngc", library=[first, subs])
+    assert err.value.diagnostics[0].code == "GC313" and "o<square>" in err.value.diagnostics[0].message
+
+
+def test_the_library_is_searched_only_for_calls_the_file_does_not_define(tmp_path: Path, subs: Path):
+    # the program's own o<square> (to X1) is LinuxCNC's choice over the file's (rs274: the offset map first)
+    program = "G21 G90 G54\nG0 X0 Y0 Z100\no<square> sub\nG1 X1 F100\no<square> endsub\no<square> call [500]\nM2\n"
+    assert verify(program, load_machine(MILL), library=subs).verdict.label == "safe"
+
