@@ -11,6 +11,7 @@ converted from the machine units (``LINEAR_UNITS``) to mm exactly.
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -462,7 +463,21 @@ def read_linuxcnc(
         zones=zones,
         homing=homing,
         notes=tuple(c.notes),
+        subroutine_path=_subroutine_path(ini, path),
     )
+
+
+def _subroutine_path(ini: IniFile, path: str) -> tuple[tuple[str, ...], str]:
+    """``[RS274NGC] SUBROUTINE_PATH``: its folders (':'-separated, relative ones against the INI's folder, where
+    LinuxCNC runs; rs274ngc_pre.cc init) as absolute paths, and where it was written."""
+    e = ini.get("RS274NGC", "SUBROUTINE_PATH")
+    if e is None or not e.value.strip():
+        return (), ""
+    base = os.path.dirname(os.path.abspath(path))
+    folders = tuple(os.path.normpath(os.path.join(base, os.path.expanduser(f.strip())))
+                    for f in e.value.split(":") if f.strip())
+    return folders, f"{e.describe()} ({e.where()}): o<name> call reads name.ngc from these folders"
+
 
 
 #: Parameter number -> (value, where it stands in the parameter file).

@@ -114,3 +114,52 @@ def test_the_library_is_searched_only_for_calls_the_file_does_not_define(tmp_pat
     program = "G21 G90 G54\nG0 X0 Y0 Z100\no<square> sub\nG1 X1 F100\no<square> endsub\no<square> call [500]\nM2\n"
     assert verify(program, load_machine(MILL), library=subs).verdict.label == "safe"
 
+
+
+def test_the_machine_files_subroutine_path_is_read_relative_to_it(tmp_path: Path, subs: Path):
+    text = Path(MILL).read_text() + '\n[linuxcnc]\nsubroutine_path = ["missing", "subs"]\n'
+    (tmp_path / "m.toml").write_text(text)
+    machine = load_machine(tmp_path / "m.toml")
+    assert machine.subroutine_path == (str(tmp_path / "missing"), str(subs))
+    result = verify(_program("500"), machine, file="main.ngc")
+    assert result.verdict.label == "unsafe" and result.violations[0].span.file == str(subs / "square.ngc")
+    # --library folders come first (as given on the command line), then the machine file's
+    other = tmp_path / "other"
+    other.mkdir()
+    (other / "square.ngc").write_text("o<square> sub\nG1 X1 F100\no<square> endsub\nM2\n")
+    assert verify(_program("500"), machine, file="main.ngc", library=other).verdict.label == "safe"
+
+
+@pytest.mark.parametrize("bad, code", [('subroutine_path = "subs"', "ZN103"), ("subroutine_path = [1]", "ZN103"),
+                                       ('subroutine_pth = ["subs"]', "ZN101")])
+def test_a_bad_subroutine_path_is_a_machine_file_error(tmp_path: Path, bad: str, code: str):
+    from nczones.errors import MachineFileError
+
+    (tmp_path / "m.toml").write_text(Path(MILL).read_text() + f"\n[linuxcnc]\n{bad}\n")
+    with pytest.raises(MachineFileError) as err:
+        load_machine(tmp_path / "m.toml")
+    assert [d.code for d in err.value.errors] == [code]
+    assert err.value.errors[0].span is not None and err.value.errors[0].span.line > 1
+
+
+def test_import_machine_takes_subroutine_path_from_the_ini(tmp_path: Path):
+    from nczones.imports import import_machine
+
+    gold = Path("tests/golden/import/linuxcnc")
+    cfg = tmp_path / "cfg"
+    (cfg / "subs").mkdir(parents=True)
+    (cfg / "subs" / "square.ngc").write_text(SQUARE)
+    for name in ("mill_mm.tbl", "mill_mm.var"):
+        (cfg / name).write_text((gold / name).read_text())
+    ini = (gold / "mill_mm.ini").read_text().replace("[RS274NGC]\n", "[RS274NGC]\nSUBROUTINE_PATH = nothere:subs\n")
+    (cfg / "mill.ini").write_text(ini)
+    out = tmp_path / "out" / "mill.toml"
+    out.parent.mkdir()
+    result = import_machine(str(cfg / "mill.ini"), output=str(out))
+    assert 'subroutine_path = ["../cfg/nothere", "../cfg/subs"]' in result.text
+    out.write_text(result.text)
+    machine = load_machine(out)
+    assert machine.subroutine_path == (str(cfg / "nothere"), str(cfg / "subs"))
+    program = "G21 G90 G54\nG0 X0 Y0 Z10\no<square> call [1000]\nM2\n"
+    got = verify(program, machine, file="main.ngc")
+    assert got.verdict.label == "unsafe" and got.violations[0].span.file == str(cfg / "subs" / "square.ngc")
