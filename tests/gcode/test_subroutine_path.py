@@ -151,15 +151,17 @@ def test_import_machine_takes_subroutine_path_from_the_ini(tmp_path: Path):
     (cfg / "subs" / "square.ngc").write_text(SQUARE)
     for name in ("mill_mm.tbl", "mill_mm.var"):
         (cfg / name).write_text((gold / name).read_text())
+    # find_ngc_file (interp_o_word.cc): [DISPLAY] PROGRAM_PREFIX first, then SUBROUTINE_PATH in order
     ini = (gold / "mill_mm.ini").read_text().replace("[RS274NGC]\n", "[RS274NGC]\nSUBROUTINE_PATH = nothere:subs\n")
+    ini = ini.replace("[DISPLAY]\n", "[DISPLAY]\nPROGRAM_PREFIX = progs/\n")
     (cfg / "mill.ini").write_text(ini)
     out = tmp_path / "out" / "mill.toml"
     out.parent.mkdir()
     result = import_machine(str(cfg / "mill.ini"), output=str(out))
-    assert 'subroutine_path = ["../cfg/nothere", "../cfg/subs"]' in result.text
+    assert 'subroutine_path = ["../cfg/progs", "../cfg/nothere", "../cfg/subs"]' in result.text
     out.write_text(result.text)
     machine = load_machine(out)
-    assert machine.subroutine_path == (str(cfg / "nothere"), str(cfg / "subs"))
+    assert machine.subroutine_path == (str(cfg / "progs"), str(cfg / "nothere"), str(cfg / "subs"))
     program = "G21 G90 G54\nG0 X0 Y0 Z10\no<square> call [1000]\nM2\n"
     got = verify(program, machine, file="main.ngc")
     assert got.verdict.label == "unsafe" and got.violations[0].span.file == str(cfg / "subs" / "square.ngc")
