@@ -12,6 +12,7 @@ seeking o-word: o<square>").
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 from pathlib import Path
 
@@ -165,3 +166,20 @@ def test_import_machine_takes_subroutine_path_from_the_ini(tmp_path: Path):
     program = "G21 G90 G54\nG0 X0 Y0 Z10\no<square> call [1000]\nM2\n"
     got = verify(program, machine, file="main.ngc")
     assert got.verdict.label == "unsafe" and got.violations[0].span.file == str(cfg / "subs" / "square.ngc")
+
+
+def test_the_html_report_lists_the_subroutine_file_with_its_lines_marked(subs: Path):
+    pytest.importorskip("matplotlib")
+    from nczones.gcode.source import program_text
+    from nczones.report.html import render_html
+
+    machine = load_machine(MILL)
+    program = _program("500")
+    result = verify(program, machine, file="main.ngc", library=subs)
+    page = render_html(result, machine, program_text(program, "main.ngc"), deterministic=True)
+    sub_file = str(subs / "square.ngc")
+    # the violations at square.ngc:2 and :3 link to that file's listing, not to main.ngc's lines 2 and 3
+    assert f'<a href="#F1L2">{sub_file}:2:1</a>' in page and f'<a href="#F1L3">{sub_file}:3:1</a>' in page
+    assert f"Called file <code>{sub_file}</code>" in page
+    assert re.search(r'class="line hot" id="F1L2"[^>]*><a class="ln" href="#F1L2">2</a>G1 X#1 F100', page)
+    assert 'id="L3"' in page and not re.search(r'class="line hot" id="L3"', page)  # main.ngc:3 is the call
