@@ -183,3 +183,25 @@ def test_the_html_report_lists_the_subroutine_file_with_its_lines_marked(subs: P
     assert f"Called file <code>{sub_file}</code>" in page
     assert re.search(r'class="line hot" id="F1L2"[^>]*><a class="ln" href="#F1L2">2</a>G1 X#1 F100', page)
     assert 'id="L3"' in page and not re.search(r'class="line hot" id="L3"', page)  # main.ngc:3 is the call
+
+
+def test_fleet_reads_the_machine_files_subroutine_path_and_reruns_when_a_sub_file_changes(tmp_path: Path):
+    import sys
+
+    sys.path.insert(0, str(Path("tests/fleet").resolve()))
+    from fleet_helpers import check
+
+    lib = tmp_path / "lib"
+    (lib / "machines" / "subs").mkdir(parents=True)
+    (lib / "programs").mkdir()
+    (lib / "machines" / "mill.toml").write_text(Path(MILL).read_text() + '\n[linuxcnc]\nsubroutine_path = ["subs"]\n')
+    (lib / "machines" / "subs" / "square.ngc").write_text(SQUARE)
+    (lib / "programs" / "p.ngc").write_text(_program("10"))
+    (lib / "nczones.toml").write_text('[project]\nname = "subs"\n\n[machines.mill]\nfile = "machines/mill.toml"\n'
+                                      'programs = ["programs/*.ngc"]\n')
+    first, cells = check(lib / "nczones.toml", tmp_path / "s.sqlite")
+    assert [v[2] for v in cells.values()] == ["safe"]
+    # the sub file now moves 500 mm (past the travel): the machine file and program are unchanged, the cell runs
+    (lib / "machines" / "subs" / "square.ngc").write_text(SQUARE.replace("X#1", "X[#1 * 50]"))
+    again, cells = check(lib / "nczones.toml", tmp_path / "s.sqlite")
+    assert again.ran == 1 and [v[2] for v in cells.values()] == ["unsafe"]
