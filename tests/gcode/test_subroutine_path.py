@@ -205,3 +205,21 @@ def test_fleet_reads_the_machine_files_subroutine_path_and_reruns_when_a_sub_fil
     (lib / "machines" / "subs" / "square.ngc").write_text(SQUARE.replace("X#1", "X[#1 * 50]"))
     again, cells = check(lib / "nczones.toml", tmp_path / "s.sqlite")
     assert again.ran == 1 and [v[2] for v in cells.values()] == ["unsafe"]
+
+
+def test_the_command_line_takes_library_repeated_or_as_a_path_list(tmp_path: Path, subs: Path, capsys):
+    from nczones.cli import main
+
+    (tmp_path / "main.ngc").write_text(_program("500"))
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    base = ["verify", str(tmp_path / "main.ngc"), "--machine", MILL]
+    assert main(base + ["--library", str(empty), "--library", str(subs)]) == 1  # unsafe
+    out = capsys.readouterr().out
+    assert f"{subs / 'square.ngc'}:2:1: violation[travel]" in out
+    assert main(base + ["--library", os.pathsep.join((str(empty), str(subs)))]) == 1
+    capsys.readouterr()
+    assert main(base + ["--library", str(empty)]) == 3  # unknown: GC303
+    assert "GC303" in capsys.readouterr().out
+    assert main(base + ["--library", str(tmp_path / "nothere")]) == 2
+    assert "VF105" in capsys.readouterr().err
