@@ -340,12 +340,14 @@ def _skipped_unread(line: str) -> bool:
 class Runner:
     def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool | Collection[int],
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
-                 fast_runs: dict | None = None, lane: Any = None, library: Collection[str | Path] = ()):
+                 fast_runs: dict | None = None, lane: Any = None, library: Collection[str | Path] = (),
+                 files: dict[str, dict] | None = None):
         #: folders searched for ``name.ngc`` when ``o<name> call`` names a subroutine the file does not define
         #: (LinuxCNC's [RS274NGC] SUBROUTINE_PATH, in order)
         self.library = tuple(Path(d) for d in library)
-        #: path of a subroutine file -> its reading state (``_PER_FILE``), kept between calls
-        self.files: dict[str, dict] = {}
+        #: path of a subroutine file -> its reading state (``_PER_FILE``), kept between calls (``files``: the
+        #: caller's dict, which then shows the files read)
+        self.files: dict[str, dict] = {} if files is None else files
         self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
         self.lane = lane  # plain blocks are offered to it before they are built (see iter_blocks)
         self.first_line = first_line
@@ -1287,6 +1289,7 @@ def iter_blocks(
     first_index: int = 0,
     lane: Any = None,
     library: Collection[str | Path] = (),
+    files: dict[str, dict] | None = None,
 ) -> Iterator[Block]:
     """Execute the program's control and yield its blocks in execution order.
 
@@ -1314,6 +1317,7 @@ def iter_blocks(
         Where ``o<name> call`` finds ``name.ngc`` when the text does not
         define ``o<name> sub`` (LinuxCNC's ``[RS274NGC] SUBROUTINE_PATH``,
         searched in order); without one such a call is ``unknown`` (GC303).
+        ``files`` (a dict, filled as the files are read) shows which.
     lane : callable, optional
         ``lane(letters, values, span, index) -> int``: the consumer's way to
         execute the blocks that would be yielded as a
@@ -1342,7 +1346,8 @@ def iter_blocks(
     if not isinstance(text, str):
         raise TypeError(f"iter_blocks expects the program text as str, got {type(text).__name__}")
     runner = Runner(StringSource(text), file, params if params is not None else Parameters(), block_delete,
-                     max_loop_iterations, max_call_depth, first_line, first_index, lane=lane, library=library)
+                     max_loop_iterations, max_call_depth, first_line, first_index, lane=lane, library=library,
+                     files=files)
     return runner.run()
 
 

@@ -223,3 +223,9 @@ def test_the_command_line_takes_library_repeated_or_as_a_path_list(tmp_path: Pat
     assert "GC303" in capsys.readouterr().out
     assert main(base + ["--library", str(tmp_path / "nothere")]) == 2
     assert "VF105" in capsys.readouterr().err
+
+
+def test_the_result_notes_name_the_subroutine_files_read(subs: Path):
+    result = verify(_program("10"), load_machine(MILL), file="main.ngc", library=subs)
+    assert result.verdict.label == "safe"
+    assert any(str(subs / "square.ngc") in n and "o<square>" in n for n in result.notes), result.notes
