@@ -137,10 +137,10 @@ def render_toml(im: ImportedMachine, output: str | None = None) -> str:
     if folders:
         # relative to where the machine file goes; without -o, as if beside the INI (where LinuxCNC reads them)
         base = os.path.dirname(os.path.abspath(output if output else im.source))
-        shown = [os.path.relpath(f, base) for f in folders]
+        relative = [os.path.relpath(f, base) for f in folders]
         out.append("")
         out.append("[linuxcnc]")
-        out.append(_line("subroutine_path = [" + ", ".join(_s(f) for f in shown) + "]", how))
+        out.append(_line("subroutine_path = [" + ", ".join(_s(f) for f in relative) + "]", how))
     for header, rows in im.tables:
         out.append("")
         out.append(f"[{header}]")

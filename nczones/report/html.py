@@ -236,7 +236,7 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
             f"<td><code>{_e(_pt(v.point))}</code></td><td>{_e(depth)} mm</td>"
             f"<td><code>{_e(_pt(v.first_exit))}</code></td><td>{_e(params) or '—'}</td>"
             f"<td>{_e(v.engine)}</td></tr>")
-    unknown_lines = set()
+    unknown_lines: set[int] = set()
     rrows = []
     for i, r in enumerate(result.reasons, 1):
         ln = r.span.line if r.span is not None else None

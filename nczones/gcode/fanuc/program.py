@@ -199,7 +199,7 @@ class FanucRunner:
 
     def __init__(self, source: _LineSource, file: str, variables: FanucVariables, *,
                  settings: FanucSettings | None = None, block_delete: bool | Collection[int] = False,
-                 library: str | os.PathLike | None = None, state: Any = None,
+                 library: str | os.PathLike | Collection[str] | None = None, state: Any = None,
                  max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, first_line: int = 1, first_index: int = 0,
                  fast_runs: dict | None = None, lane: Callable[..., int] | None = None):
         self.settings = settings or FanucSettings()
@@ -212,7 +212,7 @@ class FanucRunner:
         #: the switches the main text shows, and a switch only a library program uses must be added to them
         self.seen_switches: set[int] = set()
         #: the library folders, in order (one, or several joined by os.pathsep as --library gives them)
-        self.libraries = tuple(Path(f) for f in os.fspath(library).split(os.pathsep) if f) \
+        self.libraries: tuple[Path, ...] = tuple(Path(f) for f in os.fspath(library).split(os.pathsep) if f) \
             if isinstance(library, (str, os.PathLike)) else tuple(Path(f) for f in library or ())
         self.library = self.libraries[0] if len(self.libraries) == 1 else None
         self.state = state  # the interpreter: its units and canned cycle decide how words are read
