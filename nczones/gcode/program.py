@@ -348,6 +348,7 @@ class Runner:
         #: path of a subroutine file -> its reading state (``_PER_FILE``), kept between calls (``files``: the
         #: caller's dict, which then shows the files read)
         self.files: dict[str, dict] = {} if files is None else files
+        self.found: dict[str, Path] = {}  # label -> its subroutine file
         self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
         self.lane = lane  # plain blocks are offered to it before they are built (see iter_blocks)
         self.first_line = first_line
@@ -390,9 +391,12 @@ class Runner:
         """Switch to the file ``<label>.ngc`` of the first library folder that has one (LinuxCNC's
         find_ngc_file: the name in lower case, ``.ngc``, SUBROUTINE_PATH in order); ``(the caller's state,
         the body of its o<label> sub)``, or None where no folder has the file."""
-        path = next((d / f"{label}.ngc" for d in self.library if (d / f"{label}.ngc").is_file()), None)
-        if path is None:
-            return None
+        path = self.found.get(label)
+        if path is None:  # searched once per name: a call in a loop does not stat the folders again
+            path = next((d / f"{label}.ngc" for d in self.library if (d / f"{label}.ngc").is_file()), None)
+            if path is None:
+                return None
+            self.found[label] = path
         key = str(path)
         caller = self._state()
         state = self.files.get(key)
