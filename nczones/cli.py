@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import signal
 import sys
 import threading
@@ -227,9 +228,11 @@ def add_dialect_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--dialect", choices=("linuxcnc", "fanuc"), default=None,
                    help="how the program text is read (default: the machine file's [machine] dialect, else "
                         "linuxcnc); see specs/fanuc.md")
-    p.add_argument("--library", metavar="DIR", default=None,
-                   help="a folder of subprogram files (O1234, O1234.nc, ...) that Fanuc M98/G65 calls search "
-                        "when the program is not in the file")
+    p.add_argument("--library", metavar="DIR", default=None, action="append",
+                   help="a folder of subprogram files: Fanuc M98/G65 calls read O1234, O1234.nc, ... from it, "
+                        "LinuxCNC 'o<name> call' reads name.ngc (as SUBROUTINE_PATH) when the program does not "
+                        "define the subroutine; LinuxCNC: repeatable, or folders separated by "
+                        f"{os.pathsep!r}, searched in order")
 
 
 def with_dialect(machine: Machine, dialect: str | None) -> Machine:
@@ -241,14 +244,17 @@ def with_dialect(machine: Machine, dialect: str | None) -> Machine:
     return replace(machine, dialect=dialect)
 
 
-def library_folder(path: str | None) -> str | None:
-    """``--library DIR``: an existing folder, or an input error (exit 2)."""
-    import os
-
-    if path is not None and not os.path.isdir(path):
-        raise InputError(Diagnostic("VF105", f"--library {path!r}: not a folder of subprogram files",
-                                    file="<command line>"))
-    return path
+def library_folder(path: str | list[str] | None) -> str | None:
+    """``--library DIR`` (repeated, or folders joined by ``os.pathsep``): existing folders, joined by
+    ``os.pathsep`` in the order given, or an input error (exit 2)."""
+    if path is None:
+        return None
+    folders = [f for p in ([path] if isinstance(path, str) else path) for f in p.split(os.pathsep) if f]
+    for folder in folders:
+        if not os.path.isdir(folder):
+            raise InputError(Diagnostic("VF105", f"--library {folder!r}: not a folder of subprogram files",
+                                        file="<command line>"))
+    return os.pathsep.join(folders) if folders else None
 
 
 def program_source(name: str) -> ProgramSource:

@@ -261,6 +261,10 @@ class Machine:
     #: LinuxCNC ``[EMCIO] TOOL_CHANGE_POSITION``: M6 moves the axes given here (machine coordinates, mm/deg)
     #: on a straight line at the change, after the moves above; axis name -> position.
     tool_change_position: Mapping[str, Fraction] = field(default_factory=lambda: MappingProxyType({}))
+    #: Folders a LinuxCNC ``o<name> call`` reads ``name.ngc`` from when the program does not define the sub
+    #: (``[linuxcnc] subroutine_path``, LinuxCNC's ``[RS274NGC] SUBROUTINE_PATH``), in order; resolved against
+    #: the machine file's folder.
+    subroutine_path: tuple[str, ...] = ()
 
     @property
     def is_lathe(self) -> bool:
@@ -632,7 +636,8 @@ def _per_axis(
 
 
 _TOP_KEYS = ("machine", "offsets", "tool_lengths", "tool_diameters", "zones", "fanuc", "variables", "macros",
-             "tool_offsets")
+             "tool_offsets", "linuxcnc")
+_LINUXCNC_KEYS = ("subroutine_path",)
 _MACHINE_KEYS = (
     "name", "units", "axes", "pulse", "rapid_mode", "monitor_period_ms", "rapid", "max_feed",
     "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect", "block_delete", "arc_tolerance",
@@ -768,6 +773,28 @@ def load_machine(path: str | os.PathLike[str]) -> Machine:
         ) from None
     text = text.replace("\r\n", "\n").replace("\r", "\n")  # universal newlines, as text files are read
     return replace(parse_machine(text, str(path)), sha256=hashlib.sha256(data).hexdigest())
+
+
+def _linuxcnc_settings(rd: _Reader, data: Mapping[str, Any], dialect: Any) -> tuple[str, ...]:
+    """``[linuxcnc] subroutine_path``: a list of folders (relative ones against the machine file's folder)."""
+    if "linuxcnc" not in data:
+        return ()
+    raw = data["linuxcnc"]
+    line = rd.loc.section("linuxcnc")
+    if not isinstance(raw, Mapping):
+        rd.report("ZN103", f"[linuxcnc]: expected a table, got {as_written(raw)}", rd.loc.header(line))
+        return ()
+    _check_keys(rd, raw, _LINUXCNC_KEYS, "[linuxcnc]", line)
+    if dialect == "fanuc":
+        rd.report("ZN115", "[linuxcnc] is read only in the linuxcnc dialect; the fanuc dialect reads subprograms "
+                  "from --library", rd.loc.header(line), Severity.WARNING)
+    value = raw.get("subroutine_path", [])
+    if not isinstance(value, list) or not all(isinstance(v, str) and v for v in value):
+        rd.report("ZN103", f"[linuxcnc] subroutine_path: expected a list of folders such as [\"subs\", "
+                  f"\"../common\"], got {as_written(value)}", rd.loc.key("subroutine_path", line))
+        return ()
+    base = os.path.dirname(rd.path) if not rd.path.startswith("<") else ""
+    return tuple(os.path.normpath(os.path.join(base, v)) for v in value)
 
 
 def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
@@ -917,6 +944,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
 
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
     control_units, tc_quill, tc_g30, tc_position = _linuxcnc_control(rd, mt, mline, axes, dialect)
+    subroutine_path = _linuxcnc_settings(rd, data, dialect)
     tool_offsets = _tool_offsets(rd, data.get("tool_offsets", {}), axes)
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
 
@@ -945,6 +973,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         machine_type=machine_type or "mill", diameter_axes=diameter_axes, tool_offsets=MappingProxyType(tool_offsets),
         control_units=control_units, tool_change_quill_up=tc_quill, tool_change_at_g30=tc_g30,
         tool_change_position=MappingProxyType(tc_position),
+        subroutine_path=subroutine_path,
     )
     # The program starts with no tool length active (G49), so tip zones see Z itself.
     bad = allowed.violated_zones(machine.point(start_t))

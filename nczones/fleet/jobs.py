@@ -171,6 +171,10 @@ def plan_jobs(project: Project, cells: Iterable[Cell], version: str | None = Non
             if lib not in libraries:
                 libraries[lib] = _library_digest(project.root / lib)
             hashed += "\0library:" + libraries[lib]
+        for folder in machines[cell.machine].subroutine_path:  # [linuxcnc] subroutine_path: its files count too
+            if folder not in libraries:
+                libraries[folder] = _library_digest(project.root / folder)
+            hashed += "\0subroutines:" + libraries[folder]
         settings_sha = _sha(hashed.encode())
         key = job_key(program_sha[cell.program], machine_sha[cell.machine], settings_sha, version)
         cell_keys[where] = key

@@ -102,6 +102,9 @@ def run_task(task: dict[str, Any]) -> dict[str, Any]:
                               "worker": _worker_name()}
     try:
         machine = machine_for(task["machine_file"], task["machine_text"], task["machine_sha256"])
+        if machine.subroutine_path and task.get("root"):  # named relative to the project root, as the file is
+            machine = dataclasses.replace(machine, subroutine_path=tuple(
+                os.path.join(task["root"], p) for p in machine.subroutine_path))
         kwargs = verify_kwargs(task["settings"], task["root"])
         if task["kind"] == "chunk":
             answer["result"] = _verify_chunk(task, machine, kwargs)

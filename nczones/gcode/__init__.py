@@ -129,6 +129,11 @@ class Interpretation:
         self.max_loop_iterations = max_loop_iterations
         self.dialect = dialect
         self.library = library
+        #: LinuxCNC: the folders ``o<name> call`` reads ``name.ngc`` from (``library``: one folder or several,
+        #: then the machine file's [linuxcnc] subroutine_path)
+        self.subroutine_path: tuple = () if dialect == "fanuc" else linuxcnc_library(library, machine)
+        #: the subroutine files the run read (path -> the runner's state of it)
+        self.subroutine_files: dict[str, dict] = {}
         #: The Fanuc language layer's runners (one per piece of the program it read), for their notes.
         self.runners: list = []
         self._variables: Any = None
@@ -191,7 +196,8 @@ class Interpretation:
         piece of it starting at ``first_line``): its blocks, ending as ``unknown`` at an unsupported code."""
         it = self.interpreter
         if self.dialect != "fanuc":
-            yield from program_blocks(text, self.file, self.block_delete, it, max_loop_iterations=self.max_loop_iterations)
+            yield from program_blocks(text, self.file, self.block_delete, it, max_loop_iterations=self.max_loop_iterations,
+                                      library=self.subroutine_path, files=self.subroutine_files)
             return
         from .fanuc.program import FanucRunner
         from .program import StringSource
@@ -220,7 +226,8 @@ class Interpretation:
     def notes(self) -> list[str]:
         """What the report should say about how the program was read (dialect-specific)."""
         if self.dialect != "fanuc":
-            return []
+            return [f"o<{os.path.splitext(os.path.basename(f))[0]}> read from the subroutine file {f} (the proof holds for its text as read)"
+                    for f in self.subroutine_files]
         from .dialects import fanuc_notes
 
         return fanuc_notes(self)
@@ -274,8 +281,22 @@ def _cylindrical_lathe() -> type:
     return type("CylindricalLatheInterpreter", (CylindricalInterpreter, LatheInterpreter), {})
 
 
+def linuxcnc_library(library: Any, machine: Any) -> tuple:
+    """The folders a LinuxCNC program's ``o<name> call`` reads ``name.ngc`` from: ``library`` (a folder, a
+    list of folders, or an ``os.pathsep``-separated string of them), then the machine file's
+    ``[linuxcnc] subroutine_path``."""
+    out: list = []
+    if isinstance(library, (str, os.PathLike)):
+        out += [p for p in os.fspath(library).split(os.pathsep) if p]
+    elif library is not None:
+        out += [os.fspath(p) for p in library]
+    out += list(getattr(machine, "subroutine_path", ()) or ())
+    return tuple(out)
+
+
 def program_blocks(text: str, file: str, block_delete: bool | Collection[int], interpreter: Interpreter | None = None,
-            first_line: int = 1, max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS) -> Iterator[Any]:
+            first_line: int = 1, max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS,
+            library: Collection = (), files: dict | None = None) -> Iterator[Any]:
     """The language layer's blocks; an UnsupportedGcode ends them as ``unknown``."""
     from .expr import Parameters
     from .program import iter_blocks
@@ -283,13 +304,14 @@ def program_blocks(text: str, file: str, block_delete: bool | Collection[int], i
     params = Parameters()
     if interpreter is None:
         yield from iter_blocks(text, file=file, params=params, block_delete=block_delete,
-                               max_loop_iterations=max_loop_iterations)
+                               max_loop_iterations=max_loop_iterations, library=library, files=files)
         return
     interpreter.bind_parameters(params)
     yield from unknown_at_unsupported(interpreter,
                                        iter_blocks(text, file=file, params=params, block_delete=block_delete,
                                                    max_loop_iterations=max_loop_iterations,
-                                                   lane=interpreter.lane_for_blocks()))
+                                                   lane=interpreter.lane_for_blocks(), library=library,
+                                                   files=files))
 
 
 def unknown_at_unsupported(interpreter: Interpreter, blocks: Iterable[Any]) -> Iterator[Any]:

@@ -109,7 +109,9 @@ def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[M
             yield from it.run(interp.blocks(interp.text))
             return
         yield from it.run(program_blocks(interp.text, interp.file, interp.block_delete, it,
-                                  max_loop_iterations=interp.max_loop_iterations))
+                                  max_loop_iterations=interp.max_loop_iterations,
+                                  library=getattr(interp, "subroutine_path", ()),
+                                  files=getattr(interp, "subroutine_files", None)))
         return
     block_counter = [0]
     line0 = 0
@@ -191,7 +193,9 @@ def _language_layer_with_runs(interp: Any, runs: dict[int, list]) -> Iterator[Mo
         params = Parameters()
         it.bind_parameters(params)
         runner = Runner(StringSource(interp.text), interp.file, params, interp.block_delete,
-                         interp.max_loop_iterations, 100, fast_runs=runs, lane=it.lane_for_blocks())
+                         interp.max_loop_iterations, 100, fast_runs=runs, lane=it.lane_for_blocks(),
+                         library=getattr(interp, "subroutine_path", ()),
+                         files=getattr(interp, "subroutine_files", None))
         flow = unknown_at_unsupported(it, runner.run())
     requests: list[FastRunRequest] = []
 

@@ -267,6 +267,8 @@ class _Frame:
     repeats: int = 0
     loops: list[_Loop] = field(default_factory=list)
     ifs: list = field(default_factory=list)
+    #: the calling file's reading state (see ``Runner._PER_FILE``) when the subroutine is in another file
+    caller: dict | None = None
 
 
 #: LinuxCNC's call levels, the main program's included (``INTERP_SUB_ROUTINE_LEVELS``, interp_internal.hh).
@@ -338,7 +340,15 @@ def _skipped_unread(line: str) -> bool:
 class Runner:
     def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool | Collection[int],
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
-                 fast_runs: dict | None = None, lane: Any = None):
+                 fast_runs: dict | None = None, lane: Any = None, library: Collection[str | Path] = (),
+                 files: dict[str, dict] | None = None):
+        #: folders searched for ``name.ngc`` when ``o<name> call`` names a subroutine the file does not define
+        #: (LinuxCNC's [RS274NGC] SUBROUTINE_PATH, in order)
+        self.library = tuple(Path(d) for d in library)
+        #: path of a subroutine file -> its reading state (``_PER_FILE``), kept between calls (``files``: the
+        #: caller's dict, which then shows the files read)
+        self.files: dict[str, dict] = {} if files is None else files
+        self.found: dict[str, Path] = {}  # label -> its subroutine file
         self.fast_runs = fast_runs  # offsets of lines where a FastRunRequest is yielded (see run)
         self.lane = lane  # plain blocks are offered to it before they are built (see iter_blocks)
         self.first_line = first_line
@@ -366,6 +376,44 @@ class Runner:
         self.index = first_index
         self.started = False
         self.main_label_seen = False
+
+    #: what the runner keeps per file read: the main program's, or a subroutine file's while its sub runs
+    _PER_FILE = ("src", "file", "cache", "jumps", "subs", "all_subs", "fanuc", "scanned_all", "control_lines")
+
+    def _state(self) -> dict:
+        return {a: getattr(self, a) for a in self._PER_FILE}
+
+    def _load(self, state: dict) -> None:
+        for a, v in state.items():
+            setattr(self, a, v)
+
+    def external_sub(self, label: str, lineno: int, line: str, col: int, end: int) -> tuple[dict, tuple[int, int]] | None:
+        """Switch to the file ``<label>.ngc`` of the first library folder that has one (LinuxCNC's
+        find_ngc_file: the name in lower case, ``.ngc``, SUBROUTINE_PATH in order); ``(the caller's state,
+        the body of its o<label> sub)``, or None where no folder has the file."""
+        path = self.found.get(label)
+        if path is None:  # searched once per name: a call in a loop does not stat the folders again
+            path = next((d / f"{label}.ngc" for d in self.library if (d / f"{label}.ngc").is_file()), None)
+            if path is None:
+                return None
+            self.found[label] = path
+        key = str(path)
+        caller = self._state()
+        state = self.files.get(key)
+        if state is None:
+            text = path.read_bytes().decode("utf-8", errors="replace")
+            state = {"src": StringSource(text), "file": key, "cache": {}, "jumps": {}, "subs": {}, "all_subs": {},
+                     "fanuc": {}, "scanned_all": False, "control_lines": {}}
+            self.files[key] = state
+        self._load(state)
+        self.find_definitions()
+        body = self.subs.get(label) or next(iter(self.all_subs.get(label, ())), None)
+        if body is None:
+            self._load(caller)
+            raise self.error("GC313", f"subroutine file {key} has no o<{label}> sub (LinuxCNC reads the "
+                             "subroutine from the file named after it)", lineno, line, col, end)
+        self.subs[label] = body
+        return caller, body
 
     # -- diagnostics --------------------------------------------------------------
     def span(self, lineno: int, line: str, col: int = 1, end: int | None = None) -> SourceSpan:
@@ -450,7 +498,7 @@ class Runner:
         if self.scanned_all:
             return
         self.scanned_all = True
-        for _p, ln, line, nxt in self.scan(0, self.first_line):
+        for _p, ln, line, nxt in self.scan(0, 1 if self.file in self.files else self.first_line):
             if "o" not in line and "O" not in line:
                 continue
             m = _OLINE.match(_BLANK.sub("", line))
@@ -474,6 +522,7 @@ class Runner:
         file = self.file
         cache = self.cache
         in_text = type(src) is StringSource
+        main_src = src
         fast = self.fast_runs
         lane = self.lane
         declined = -1  # the offset whose request the caller just declined
@@ -655,6 +704,9 @@ class Runner:
             if target is None:
                 return
             pos, lineno = target
+            if self.src is not src:  # a call into a subroutine file, or the return from one
+                src, file, cache = self.src, self.file, self.cache
+                fast = self.fast_runs if src is main_src else None  # its offsets are the main program's
 
     def messages(self, comments: tuple) -> tuple[str, ...]:
         out = []
@@ -1024,8 +1076,23 @@ class Runner:
                                      "executed (it is in a skipped branch or loop) and there is none after the call",
                                      lineno, line, col, end)
                 if isinstance(label, str):
-                    raise self.unsupported("GC303", f"subroutine o<{label}> is not defined in this file "
-                                           "(external subroutine files are not supported)", lineno, line, col, end)
+                    found = self.external_sub(label, lineno, line, col, end)
+                    if found is not None:
+                        caller, body = found
+                        new = _Frame("o", label, here, None, body, caller=caller)
+                        try:
+                            self.push(new, lineno, line)
+                        except GcodeError:
+                            self._load(caller)
+                            raise
+                        new.saved = self.params.push_scope(args)
+                        return body
+                    where = (" nor as " + " or ".join(str(d / f"{label}.ngc") for d in self.library)
+                             if self.library else
+                             " (pass --library DIR, or name LinuxCNC's SUBROUTINE_PATH in the machine file, to read "
+                             "subroutine files)")
+                    raise self.unsupported("GC303", f"subroutine o<{label}> is not defined in this file{where}",
+                                           lineno, line, col, end)
                 if label in self.fanuc:
                     raise self.error("GC313", f"o{label} is a Fanuc subprogram (O{label} ... M99); call it with "
                                      f"M98 P{label}", lineno, line, col, end)
@@ -1046,6 +1113,8 @@ class Runner:
             self.params.pop_scope(frame.saved)
             self.set_value(value if ow.args else None)
             self.frames.pop()
+            if frame.caller is not None:  # back in the calling file
+                self._load(frame.caller)
             return frame.ret
         if kw in ("if", "while", "repeat", "do"):
             self.control_label(frame, label, kw, lineno, line, col, end)
@@ -1223,6 +1292,8 @@ def iter_blocks(
     first_line: int = 1,
     first_index: int = 0,
     lane: Any = None,
+    library: Collection[str | Path] = (),
+    files: dict[str, dict] | None = None,
 ) -> Iterator[Block]:
     """Execute the program's control and yield its blocks in execution order.
 
@@ -1246,6 +1317,11 @@ def iter_blocks(
         Line number of the text's first line and index of its first block,
         for a piece cut from a longer program (spans and diagnostics then
         name the program's own lines).
+    library : folders, optional
+        Where ``o<name> call`` finds ``name.ngc`` when the text does not
+        define ``o<name> sub`` (LinuxCNC's ``[RS274NGC] SUBROUTINE_PATH``,
+        searched in order); without one such a call is ``unknown`` (GC303).
+        ``files`` (a dict, filled as the files are read) shows which.
     lane : callable, optional
         ``lane(letters, values, span, index) -> int``: the consumer's way to
         execute the blocks that would be yielded as a
@@ -1274,7 +1350,8 @@ def iter_blocks(
     if not isinstance(text, str):
         raise TypeError(f"iter_blocks expects the program text as str, got {type(text).__name__}")
     runner = Runner(StringSource(text), file, params if params is not None else Parameters(), block_delete,
-                     max_loop_iterations, max_call_depth, first_line, first_index, lane=lane)
+                     max_loop_iterations, max_call_depth, first_line, first_index, lane=lane, library=library,
+                     files=files)
     return runner.run()
 
 

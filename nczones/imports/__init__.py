@@ -98,7 +98,7 @@ def import_text(
         imported = reader(path, text, c, parameter_file=parameter_file, tool_table=tool_table)
     else:
         imported = reader(path, text, c)
-    toml = render_toml(imported)
+    toml = render_toml(imported, output)
     try:
         machine = parse_machine(toml, output or f"{Path(path).stem}.toml")
     except MachineFileError as exc:

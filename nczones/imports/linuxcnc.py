@@ -12,6 +12,7 @@ converted from the machine units (``LINEAR_UNITS``) to mm exactly.
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -506,7 +507,27 @@ def read_linuxcnc(
         zones=zones,
         homing=homing,
         notes=tuple(c.notes),
+        subroutine_path=_subroutine_path(ini, path),
     )
+
+
+def _subroutine_path(ini: IniFile, path: str) -> tuple[tuple[str, ...], str]:
+    """Where ``o<name> call`` finds ``name.ngc`` (interp_o_word.cc find_ngc_file): ``[DISPLAY] PROGRAM_PREFIX``
+    first, then the ':'-separated ``[RS274NGC] SUBROUTINE_PATH`` folders (relative ones against the INI's folder,
+    where LinuxCNC runs; rs274ngc_pre.cc init), as absolute paths, and where they were written."""
+    base = os.path.dirname(os.path.abspath(path))
+    folders: list[str] = []
+    how: list[str] = []
+    for section, key in (("DISPLAY", "PROGRAM_PREFIX"), ("RS274NGC", "SUBROUTINE_PATH")):
+        e = ini.get(section, key)
+        if e is None or not e.value.strip():
+            continue
+        parts = [e.value.strip()] if key == "PROGRAM_PREFIX" else e.value.split(":")
+        found = [os.path.normpath(os.path.join(base, os.path.expanduser(f.strip()))) for f in parts if f.strip()]
+        folders += [f for f in found if f not in folders]
+        how.append(f"{e.describe()} ({e.where()})")
+    return tuple(folders), "; then ".join(how) + ": o<name> call reads name.ngc from these folders, in order"
+
 
 
 #: Parameter number -> (value, where it stands in the parameter file).

@@ -124,6 +124,9 @@ class ImportedMachine:
     axis_tables: tuple[tuple[str, Mapping[str, Sourced]], ...] = ()
     #: More tables (``"fanuc"``, ``"macros"``): rows of (key, TOML value, comment).
     tables: tuple[tuple[str, tuple[tuple[str, str, str], ...]], ...] = ()
+    #: LinuxCNC ``[RS274NGC] SUBROUTINE_PATH``: (absolute folders in order, where it was written); written as
+    #: ``[linuxcnc] subroutine_path`` relative to the machine file's folder.
+    subroutine_path: tuple[tuple[str, ...], str] = ((), "")
 
 
 class Collector:

@@ -9,6 +9,7 @@ taken, rounded or assumed) close the file.  The text is checked by
 
 from __future__ import annotations
 
+import os
 import re
 from fractions import Fraction
 
@@ -85,8 +86,9 @@ def _zone(out: list[str], axes: tuple[str, ...], z: ZoneDraft) -> None:
             out.append(f"{side} = {{ {', '.join(items)} }}")
 
 
-def render_toml(im: ImportedMachine) -> str:
-    """The machine file text (ends with a newline)."""
+def render_toml(im: ImportedMachine, output: str | None = None) -> str:
+    """The machine file text (ends with a newline); ``output`` is where it is written (the folders of
+    ``[linuxcnc] subroutine_path`` are relative to it; to the source's folder without one)."""
     label = KIND_LABELS.get(im.kind, im.kind)
     out = [
         f"# Machine file imported from {_clean(im.source)} ({label}) by `nczones import-machine`.",
@@ -131,6 +133,14 @@ def render_toml(im: ImportedMachine) -> str:
             out.append(f"[{header}]")
             for n in sorted(registers):
                 out.append(_line(f"{prefix}{n} = {_q(registers[n].value)}", _how(registers[n])))
+    folders, how = im.subroutine_path
+    if folders:
+        # relative to where the machine file goes; without -o, as if beside the INI (where LinuxCNC reads them)
+        base = os.path.dirname(os.path.abspath(output if output else im.source))
+        relative = [os.path.relpath(f, base) for f in folders]
+        out.append("")
+        out.append("[linuxcnc]")
+        out.append(_line("subroutine_path = [" + ", ".join(_s(f) for f in relative) + "]", how))
     for header, rows in im.tables:
         out.append("")
         out.append(f"[{header}]")

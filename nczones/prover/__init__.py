@@ -186,8 +186,11 @@ def verify(
     M1, M60) are noted too.
 
     ``dialect`` overrides the machine's ``[machine] dialect`` (``"linuxcnc"``
-    or ``"fanuc"``, ``specs/fanuc.md``); ``library`` is a folder of Fanuc
-    subprogram files that ``M98``/``G65`` calls search.
+    or ``"fanuc"``, ``specs/fanuc.md``); ``library`` is a folder (or a list
+    of folders, or folders joined by ``os.pathsep``, searched in order) of
+    subprogram files: Fanuc ``M98``/``G65`` calls search it for ``O1234``
+    files, a LinuxCNC ``o<name> call`` of a sub the program does not define
+    reads ``name.ngc`` from it (LinuxCNC's ``SUBROUTINE_PATH``).
 
     ``budget_s`` (seconds, None for none) bounds the solver work and
     refinement of the whole run (:mod:`nczones.prover.limits`): what it
@@ -278,6 +281,8 @@ def _verify(
         extra["arc_tolerance"] = arc_tolerance
     if dialect is not None:
         extra["dialect"] = dialect
+    if library is not None and not isinstance(library, (str, os.PathLike)):
+        library = os.pathsep.join(os.fspath(f) for f in library)  # several folders, in order (LinuxCNC, Fanuc)
     if library is not None:
         extra["library"] = library
     from ..blockskip import format_block_delete, parse_block_delete, used_switches

@@ -147,14 +147,16 @@ def hot_passes(violations: Iterable[Any]) -> dict[int, frozenset[str] | None]:
 
 
 def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (), *,
-                 max_segments: int = 200_000, passes: Mapping[int, frozenset[str] | None] | None = None) -> PathFloat:
+                 max_segments: int = 200_000, passes: Mapping[int, frozenset[str] | None] | None = None,
+                 library: Any = None) -> PathFloat:
     """Interpret ``program`` (a path or a :class:`~nczones.gcode.source.ProgramSource`) and keep
     float polylines for drawing.
 
     Violating blocks (``hot_blocks``) are always kept; other segments past
     ``max_segments`` are left out of the drawing (``drawn`` < ``segments``).
     ``passes`` (:func:`hot_passes`) narrows a hot block to its failing generated passes: the block's other
-    passes are drawn as the rest of the path.
+    passes are drawn as the rest of the path.  ``library``: the subprogram folders of the run
+    (:func:`nczones.prover.verify`'s ``library``, in ``Result.settings``).
 
     >>> from nczones import load_machine
     >>> p = collect_path("specs/examples/programs/notch_dip.ngc", load_machine("specs/machines/grinder.toml"), {3})
@@ -193,7 +195,7 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
             pair = np.asarray([[float(c) for c in seg.start], [float(c) for c in seg.end]], dtype=float)
             (out.rapid_lines if rapid else out.feed_lines).append(pair[None, :, :])
 
-    run = interpret(program, machine)
+    run = interpret(program, machine) if library is None else interpret(program, machine, library=library)
     for chunk in run:
         if not isinstance(chunk, MotionChunk) or chunk.scale is None or len(chunk) == 0:
             for seg in (chunk.segments() if isinstance(chunk, MotionChunk) else [chunk]):
@@ -352,7 +354,8 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         machine = load_machine(machine)
     hot = {v.block for v in result.violations} if result is not None else set()
     if path is None:
-        path = collect_path(program, machine, hot, passes=hot_passes(result.violations) if result is not None else None)
+        path = collect_path(program, machine, hot, passes=hot_passes(result.violations) if result is not None else None,
+                            library=dict(result.settings).get("library") if result is not None else None)
     if plane is None:
         plane = relevant_planes(machine, result)[0]
     plane = (str(plane[0]).upper(), str(plane[1]).upper())

@@ -170,7 +170,8 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
     figures = []
     if program:
         hot_blocks = {v.block for v in result.violations}
-        path = collect_path(program, machine, hot_blocks, passes=hot_passes(result.violations))
+        path = collect_path(program, machine, hot_blocks, passes=hot_passes(result.violations),
+                            library=dict(result.settings).get("library"))
         for k, plane in enumerate(planes or relevant_planes(machine, result)):
             fig = plot_program(program, machine, plane, result, path=path)
             fig.set_size_inches(9, 5.2)
@@ -221,15 +222,30 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
         rows.append(("Notes", "<br>".join(_e(n) for n in result.notes)))
     summary = "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in rows)
 
-    # violations table
+    # violations table; a line of another file (a subroutine file of a call) links to that file's listing
     res = numbers.resolution_of(machine)
     hot: dict[int, str] = {}
+    others: dict[str, tuple[dict[int, str], set[int]]] = {}  # file -> (its hot lines, its unknown lines)
+
+    def other(span: Any) -> tuple[dict[int, str], set[int]] | None:
+        file = getattr(span, "file", None)
+        if span is None or not file or file == name or (program is not None and file == program.name):
+            return None
+        return others.setdefault(file, ({}, set()))
+
+    def anchor(span: Any, ln: int) -> str:
+        if other(span) is None:
+            return f'<a href="#L{ln}">{ln}:{span.column}</a>'
+        k = list(others).index(span.file) + 1
+        return f'<a href="#F{k}L{ln}">{_e(span.file)}:{ln}:{span.column}</a>'
+
     vrows = []
     for i, v in enumerate(result.violations, 1):
         ln = v.line
         if ln is not None:
-            hot.setdefault(ln, f"violation[{v.zone}]")
-        link = f'<a href="#L{ln}">{ln}:{v.span.column}</a>' if ln is not None and v.span else "—"
+            elsewhere = other(v.span)
+            (hot if elsewhere is None else elsewhere[0]).setdefault(ln, f"violation[{v.zone}]")
+        link = anchor(v.span, ln) if ln is not None and v.span else "—"
         depth = ("≥ " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact, numbers.depth_step(res))
         params = ", ".join([f"{n}={_d(x)}" for n, x in v.params] + [f"{s.replace('_', '-')} {p}" for s, p in v.switches])
         vrows.append(
@@ -239,13 +255,14 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
             f"<td><code>{_e(numbers.point(v.point, res))}</code></td><td>{_e(depth)} mm</td>"
             f"<td><code>{_e(numbers.point(v.first_exit, res))}</code></td><td>{_e(params) or '—'}</td>"
             f"<td>{_e(v.engine)}</td></tr>")
-    unknown_lines = set()
+    unknown_lines: set[int] = set()
     rrows = []
     for i, r in enumerate(result.reasons, 1):
         ln = r.span.line if r.span is not None else None
         if ln is not None:
-            unknown_lines.add(ln)
-        link = f'<a href="#L{ln}">{ln}:{r.span.column}</a>' if r.span is not None else "—"
+            elsewhere = other(r.span)
+            (unknown_lines if elsewhere is None else elsewhere[1]).add(ln)
+        link = anchor(r.span, ln) if r.span is not None and ln is not None else "—"
         rrows.append(f'<tr class="reason" id="r{i}"><td>{link}</td><td>{_e(r.code) or "—"}</td>'
                      f"<td>{_e(r.message)}</td></tr>")
 
@@ -289,6 +306,16 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
     if lines:
         parts.append('<section id="listing"><h2>Program</h2><pre class="listing">'
                      f"{_listing(lines, hot, unknown_lines, context, listing_limit)}</pre></section>")
+    for k, (file, (file_hot, file_unknown)) in enumerate(others.items(), 1):
+        try:  # a subroutine file the run read (LinuxCNC SUBROUTINE_PATH, Fanuc library): its own listing
+            with open(file, "rb") as fh:
+                other_lines = program_lines(fh.read().decode("utf-8", errors="replace"))
+        except OSError:
+            continue
+        listing = _listing(other_lines, file_hot, file_unknown, context, listing_limit)
+        parts.append(f'<section class="listing-file" id="file-{k}"><h2>Called file <code>{_e(file)}</code></h2>'
+                     '<pre class="listing">' + listing.replace(' id="L', f' id="F{k}L').replace('href="#L', f'href="#F{k}L')
+                     + "</pre></section>")
     from ..prover.assumptions import SAFE_ASSUMPTIONS
 
     parts.append('<section id="assumptions"><h2>What <code>safe</code> assumes</h2><ul>'

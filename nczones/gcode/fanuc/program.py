@@ -199,7 +199,7 @@ class FanucRunner:
 
     def __init__(self, source: _LineSource, file: str, variables: FanucVariables, *,
                  settings: FanucSettings | None = None, block_delete: bool | Collection[int] = False,
-                 library: str | os.PathLike | None = None, state: Any = None,
+                 library: str | os.PathLike | Collection[str] | None = None, state: Any = None,
                  max_loop_iterations: int = DEFAULT_MAX_LOOP_ITERATIONS, first_line: int = 1, first_index: int = 0,
                  fast_runs: dict | None = None, lane: Callable[..., int] | None = None):
         self.settings = settings or FanucSettings()
@@ -211,7 +211,10 @@ class FanucRunner:
         #: the switches of every '/n' line met (run or skipped), library programs included: a proof covers
         #: the switches the main text shows, and a switch only a library program uses must be added to them
         self.seen_switches: set[int] = set()
-        self.library = Path(library) if library is not None else None
+        #: the library folders, in order (one, or several joined by os.pathsep as --library gives them)
+        self.libraries: tuple[Path, ...] = tuple(Path(f) for f in os.fspath(library).split(os.pathsep) if f) \
+            if isinstance(library, (str, os.PathLike)) else tuple(Path(f) for f in library or ())
+        self.library = self.libraries[0] if len(self.libraries) == 1 else None
         self.state = state  # the interpreter: its units and canned cycle decide how words are read
         self.max_loops = max_loop_iterations
         self.first_line = first_line
@@ -1046,14 +1049,14 @@ class FanucRunner:
             if body is not None:
                 return here, body
         source = self.library_sources.get(program)
-        if source is None and self.library is not None:
-            path = _library_file(self.library, program)
+        if source is None and self.libraries:
+            path = next((p for p in (_library_file(f, program) for f in self.libraries) if p is not None), None)
             if path is not None:
                 text = path.read_bytes().decode("utf-8", errors="replace")
                 source = _Source(StringSource(text), str(path))
                 self.library_sources[program] = source
         if source is None:
-            where = (f" nor in the library {self.library}" if self.library is not None
+            where = (f" nor in the library {os.pathsep.join(map(str, self.libraries))}" if self.libraries
                      else " (pass --library DIR to search a folder of subprogram files)")
             raise self.error("GC317", f"{what}: no program O{program} in this file{where}", lineno, line)
         return source, source.program(program) or (0, 1)
