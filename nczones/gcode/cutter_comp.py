@@ -279,6 +279,14 @@ class CutterComp:
         """Exact machine coordinate of a program-frame double."""
         return Fraction(value) * self._unit() + self.it.off[i]
 
+    def current_point(self, i: int) -> tuple[bool, Fraction | None]:
+        """Axis ``i`` of the compensated current point (LinuxCNC's ``settings->current_x`` ..), machine
+        coordinates: ``(False, None)`` for an axis outside the compensation plane."""
+        ia, ib, _ = self._axes()
+        if i not in (ia, ib):
+            return False, None
+        return True, self._fmachine(i, self.cur[0 if i == ia else 1])
+
     def error(self, code: str, message: str, word: Any = None) -> GcodeError:
         span = word.span if word is not None else self.it.span
         return GcodeError(Diagnostic(code, message, span))

@@ -760,12 +760,12 @@ class Interpreter:
             return True, None  # G41/G42 not modelled: the run is unknown anyway; never the programmed point
         if not comp.active or comp.first:
             return False, None  # no compensated move yet (or radius 0): the programmed point
-        ia, ib, _ = comp._axes()
-        if i not in (ia, ib):
+        in_plane, point = comp.current_point(i)
+        if not in_plane:
             return False, None
         if self.prerotation_xy is not None or self.track:
             return True, None
-        return True, comp._fmachine(i, comp.cur[0 if i == ia else 1])
+        return True, point
 
     def state_machine_position(self, i: int) -> StateValue | None:
         """Where axis ``i`` is, machine coordinates, mm (degrees for rotary axes)."""

@@ -22,7 +22,6 @@ Floats here are for drawing only; nothing feeds back into a proof.
 from __future__ import annotations
 
 import os
-import types
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
@@ -32,7 +31,8 @@ import numpy as np
 
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint, tip_offset, tip_shifted
+from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
+from .placement import Placement, drawing_machine, placement_label, placement_of
 
 __all__ = ["plot_program", "relevant_planes", "collect_path", "PathFloat"]
 
@@ -232,53 +232,6 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
     return out
 
 
-Placement = tuple[Fraction, tuple[tuple[str, Fraction], ...]]
-"""Where a segment's tool tip is: (tool length on the tool axis, offsets on other axes as ``Segment.extra``'s
-``tip_offset``)."""
-
-
-def placement_of(seg: Segment) -> Placement:
-    """The tool placement a segment carries (what its tool-tip zones see)."""
-    return (seg.tool_length or Fraction(0), tuple(sorted(tip_offset(seg.extra).items())) if seg.extra else ())
-
-
-def placed_zones(machine: Machine, placement: Placement | None) -> tuple[Zone, ...]:
-    """The machine's zones in machine coordinates for one tool placement: the tool-tip zones moved by the
-    tool length on the tool axis and by the tool offsets on the other axes, exactly as the prover places
-    them (:func:`nczones.zones.tip_shifted` of the segment's :func:`nczones.zones.tip_offset`, and
-    :meth:`nczones.zones.AllowedSet.seen_by` for the tool length); machine zones unchanged.
-
-    >>> from nczones import load_machine
-    >>> m = load_machine("specs/machines/fanuc_lathe.toml")
-    >>> jaws = next(z for z in placed_zones(m, (Fraction(50), (("X", Fraction(80)),))) if z.name == "jaws")
-    >>> [(a, str(lo), str(hi)) for a, lo, hi in jaws.limits]
-    [('X', '105', '112'), ('Z', '150', '190')]
-    """
-    if placement is None:
-        return tuple(machine.zones)
-    length, tip = placement
-    shift = dict(tip)
-    axis = machine.allowed.tool_axis
-    if length and axis is not None:
-        shift[axis] = shift.get(axis, Fraction(0)) + length
-    return tip_shifted(machine.allowed, shift).zones if any(shift.values()) else tuple(machine.zones)
-
-
-def placement_label(machine: Machine, placement: Placement | None) -> str:
-    """How a placement reads in a legend: ``"tool tip, tool offset Z50 X80"`` (a lathe), ``"tool tip, tool length
-    120"`` (a mill)."""
-    from ..exact import format_decimal
-
-    if placement is None:
-        return "tool tip"
-    length, tip = placement
-    others = [f"{a}{format_decimal(v)}" for a, v in tip if v]
-    if not others:  # a mill: the tool length alone
-        return f"tool tip, tool length {format_decimal(length)}" if length else "tool tip"
-    parts = ([f"{machine.allowed.tool_axis}{format_decimal(length)}"] if length and machine.allowed.tool_axis else [])
-    return "tool tip, tool offset " + " ".join(parts + others)
-
-
 def drawing_placements(path: PathFloat) -> list[Placement]:
     """The placements to draw tip zones for: those of the violating segments (in order), else the one
     placement the program uses besides "no tool" (none when it uses several)."""
@@ -286,15 +239,6 @@ def drawing_placements(path: PathFloat) -> list[Placement]:
         return list(dict.fromkeys(path.hot_placements.values()))
     used = [p for p in path.placements if p != (Fraction(0), ())]
     return used if len(used) == 1 else []
-
-
-def _drawing_machine(machine: Machine, placement: Placement | None) -> Any:
-    """A drawing proxy of ``machine`` whose zones are :func:`placed_zones`."""
-    if placement is None:
-        return machine
-    return types.SimpleNamespace(name=machine.name, axes=machine.axes, axis_names=machine.axis_names,
-                                 start=machine.start, reference=machine.reference,
-                                 zones=placed_zones(machine, placement))
 
 
 def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
@@ -373,9 +317,9 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
     # violating block (each further placement adds its own tip zones), machine zones as they are
     placements = drawing_placements(path)
     first = placements[0] if placements else None
-    draw_allowed_set(_drawing_machine(machine, first), plane, ax, tip_label=placement_label(machine, first))
+    draw_allowed_set(drawing_machine(machine, first), plane, ax, tip_label=placement_label(machine, first))
     for k, extra in enumerate(placements[1:], start=2):
-        draw_tip_zones(_drawing_machine(machine, extra), plane, ax, placement_label(machine, extra), k)
+        draw_tip_zones(drawing_machine(machine, extra), plane, ax, placement_label(machine, extra), k)
     blue = "#1f4e9c"
     feeds = [a[:, :, [h, v]] for a in path.feed_lines]
     feed_segs = (list(np.concatenate(feeds)) if feeds else []) + _project(path.feed_curves, h, v)
@@ -545,12 +489,15 @@ def draw_allowed_set(machine: Any, plane: tuple[str, str], ax: Any, *, tip_label
         if len(allow) > 1:
             for _z, g in allow:
                 patch(g, facecolor="none", edgecolor="#4c8c4c", lw=0.6, ls=":", zorder=1)
+    # one patch per zone name: a tip zone the proof enlarges by a lathe tool's nose radius is several zones of
+    # one name (nczones.prover.nose), drawn as their union
+    forbidden: dict[str, tuple[Zone, list[Any]]] = {}
     for z in machine.zones:
-        if not z.forbid:
-            continue
-        g = geom(z)
-        if g is None:
-            continue
+        g = geom(z) if z.forbid else None
+        if g is not None:
+            forbidden.setdefault(z.name, (z, []))[1].append(g)
+    for z, gs in forbidden.values():
+        g = unary_union(gs)
         tip = f", {tip_label}" if z.point is ZonePoint.TIP else ""
         p = patch(g, facecolor="#e06666", alpha=0.4, hatch="//", edgecolor="#b22222", zorder=2,
                   label=f"{z.name} (forbidden{tip})")
@@ -577,6 +524,7 @@ def draw_tip_zones(machine: Any, plane: tuple[str, str], ax: Any, label: str, k:
 
     xlim, ylim = ax.get_xlim(), ax.get_ylim()
     view = shapely_box(-1e8, -1e8, 1e8, 1e8)
+    named: dict[tuple[str, bool], tuple[Zone, list[Any]]] = {}  # zones of one name (a nose-enlarged polygon): one patch
     for z in machine.zones:
         if z.point is not ZonePoint.TIP:
             continue
@@ -584,8 +532,11 @@ def draw_tip_zones(machine: Any, plane: tuple[str, str], ax: Any, label: str, k:
         if drawn is None:
             continue
         kind, shapes = drawn
-        g = (unary_union([shapely_box(x, y, x + w, y + hh) for (x, y), w, hh in shapes]) if kind == "rects"
-             else ShapelyPolygon(shapes).buffer(0)).intersection(view)
+        named.setdefault((z.name, z.forbid), (z, []))[1].append(
+            unary_union([shapely_box(x, y, x + w, y + hh) for (x, y), w, hh in shapes]) if kind == "rects"
+            else ShapelyPolygon(shapes).buffer(0))
+    for z, gs in named.values():
+        g = unary_union(gs).intersection(view)
         polys = [g] if g.geom_type == "Polygon" else [p for p in getattr(g, "geoms", []) if p.geom_type == "Polygon"]
         verts, codes = [], []
         for poly in polys:

@@ -254,17 +254,17 @@ def plot_machine(machine: Machine, segments: Iterable[Segment] = (), plane: tupl
     """Zones plus an optional toolpath in one call (the notebooks' entry point).
 
     Tool-tip zones are drawn where the proof puts them for the machine position
-    (:func:`nczones.report.figure.placed_zones`): ``placement`` is a
+    (:func:`nczones.report.placement.placed_zones`): ``placement`` is a
     ``(tool length, tip offsets)`` pair, None for the zones as written, or
     ``"auto"``: the one tool placement the segments use (besides "no tool").
     """
-    from .figure import _drawing_machine, placement_of
+    from .placement import drawing_machine, placement_of
 
     segments = list(segments)
     if placement == "auto":
         used = {placement_of(s) for s in segments} - {(Fraction(0), ())}
         placement = next(iter(used)) if len(used) == 1 else None
-    ax = plot_zones(_drawing_machine(machine, placement), plane, ax, legend=False)
+    ax = plot_zones(drawing_machine(machine, placement), plane, ax, legend=False)
     plane = plane or (machine.axis_names[0], machine.axis_names[1])
     plot_path(segments, plane, ax, machine=machine)
     ax.legend(loc="best", fontsize=8, framealpha=0.9)

@@ -24,10 +24,10 @@ from nczones.report.figure import (  # noqa: E402
     collect_path,
     drawing_placements,
     hot_passes,
-    placed_zones,
     plot_program,
     relevant_planes,
 )
+from nczones.report.placement import placed_zones  # noqa: E402
 
 from .helpers import EX, MACHINES  # noqa: E402
 
@@ -112,14 +112,17 @@ def test_witness_inside_the_drawn_zone_programs(name):
 
 def test_lathe_jaws_are_drawn_in_turret_coordinates():
     """specs/machines/fanuc_lathe.toml: jaws (tip) X25..32 Z100..140, tool offset 1 X80 Z50: the turret meets
-    them at X105..112 Z150..190 (machine = tip + offset)."""
+    them at X105..112 Z150..190 (machine = tip + offset), and the proof checks them grown on X and Z by the
+    0.8 mm reach of the tools' nose radius (nczones.prover.nose): X104.2..112.8 Z149.2..190.8."""
     m = load_machine(MACHINES / "fanuc_lathe.toml")
     jaws = next(z for z in placed_zones(m, (Fraction(50), (("X", Fraction(80)),))) if z.name == "jaws")
-    assert dict((a, (lo, hi)) for a, lo, hi in jaws.limits) == {"X": (105, 112), "Z": (150, 190)}
+    reach = Fraction(4, 5)
+    assert dict((a, (lo, hi)) for a, lo, hi in jaws.limits) == {"X": (105 - reach, 112 + reach),
+                                                                  "Z": (150 - reach, 190 + reach)}
     source = str(EX / "programs/g71_jaws.nc")
     fig = plot_program(source, m, ("Z", "X"), verify(source, m))
     ext = _patches(fig.axes[0])["forbid-jaws"].get_path().get_extents()
-    assert (ext.x0, ext.x1, ext.y0, ext.y1) == (150, 190, 105, 112)
+    assert (ext.x0, ext.x1, ext.y0, ext.y1) == pytest.approx((149.2, 190.8, 104.2, 112.8))
     plt.close(fig)
 
 
@@ -135,7 +138,9 @@ def test_plot_machine_draws_tip_zones_for_the_tool_in_use():
     ax = plot_machine(m, segs, plane=("Z", "X"))
     jaws = [p for p in ax.patches if (p.get_label() or "").startswith("jaws (")]
     b = jaws[0].get_bbox()
-    assert (b.x0, b.x1, b.y0, b.y1) == (150, 190, 105, 112)
+    # the jaws at Z150-190 X105-112 in turret coordinates, grown on Z and X by the 0.8 mm reach of the tools'
+    # nose radius, as the proof checks them (nczones.prover.nose)
+    assert (b.x0, b.x1, b.y0, b.y1) == pytest.approx((149.2, 190.8, 104.2, 112.8))
     plt.close(ax.figure)
 
 
