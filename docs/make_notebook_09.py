@@ -40,11 +40,20 @@ for s in segs[:12]:
     print(f"line {s.span.line}: {s.kind.name:5} to X{format_decimal(s.end[0])} Z{format_decimal(s.end[1])}  {s.derived}")"""),
 md("""## The shape is clear; the third pass is not
 
-Cut along the shape alone and the tool stays clear of the jaws: it ends on their face (X50, Z-62).
+Cut along the shape alone and the tool's imaginary tip stays clear of the jaws: it ends on their face
+(X50, Z-62). That is a proof for a sharp tool. This tool has a nose radius (R0.4, tip 3): its edge is a
+circle near the imaginary tip, and nczones proves the whole square of half-width 2R around the tip clear
+of the tip zones, whichever way the tip points (`specs/turning.md`), so a shape that runs on the jaws'
+face is reported as a possible touch of 0.8 mm: cut to the face with a finishing allowance, or leave room.
 The roughing levels above the shape's last point cut to that Z, which lies over the jaws: the third
 pass is the first whose level is below the jaws' top."""),
 code("""shape_only = "G21 G18 G99\\nT0101\\nG00 X80. Z2.\\nG00 X30.\\nG01 Z-20. F0.25\\nX40. Z-30.\\nZ-45.\\nX50. Z-62.\\n"
-print("the shape alone:", verify_text(shape_only, lathe).verdict.label)
+from dataclasses import replace
+from types import MappingProxyType
+sharp = replace(lathe, tool_offsets=MappingProxyType(
+    {n: replace(t, nose_radius=0, wear_radius=0) for n, t in lathe.tool_offsets.items()}))
+print("the shape alone, a sharp tool:", verify_text(shape_only, sharp).verdict.label)
+print("the shape alone, this tool:   ", verify_text(shape_only, lathe).verdict.label)
 r = verify(jaws_prog, lathe)
 print("the G71 cycle:  ", r.verdict.label)
 v = r.violations[0]
