@@ -38,16 +38,28 @@ PRODUCTIONS: dict[str, set[str]] = {
     "g53": {"G53"},
     "reference": {"G28", "G30"},
     "dwell": {"G04"},
-    "cycle": {"G73", "G74", "G76", "G81", "G82", "G83", "G84", "G85", "G86", "G89", "G98", "G99", "G80"},
+    "cycle": {"G73", "G74", "G76", "G81", "G82", "G83", "G84", "G84.2", "G84.3", "G85", "G86", "G89", "G98", "G99",
+              "G80"},
     "macro": {"#", "IF", "GOTO", "WHILE", "DO", "END"},
     "m98": {"M98", "M99"},
     "g65": {"G65"},
     "g66": {"G66", "G67"},
     "skip": {"/"},
     "mcodes": {"M03", "M05", "M06", "M08", "M09", "M30"},
+    "end": {"M02", "M30"},
+    "planes": {"G18", "G19", "G17"},
+    "g27_g29": {"G27", "G29"},
+    "g33": {"G33"},
+    "g93": {"G93", "G94"},
+    "scaling": {"G50", "G51"},
+    "mirror": {"G50.1", "G51.1"},
+    "rotation": {"G68", "G69"},
+    "polar": {"G15", "G16"},
+    "m97": {"M97", "M99"},
+    "m99p": {"M98", "M99"},
 }
 
-CYCLES = (73, 74, 76, 81, 82, 83, 84, 85, 86, 89)
+CYCLES = ("73", "74", "76", "81", "82", "83", "84", "84.2", "84.3", "85", "86", "89")
 
 
 @dataclass
@@ -61,6 +73,7 @@ class GenState:
     subs: list = field(default_factory=list)  # (number, body lines)
     next_sub: int = 100
     next_label: int = 1000
+    local_subs: list = field(default_factory=list)  # M97 targets: lines after M30 of the main program
     depth: int = 0  # call nesting while generating
     vars: int = 0
 
@@ -228,16 +241,18 @@ def p_cycle(draw, st_: GenState):
     else:
         r = _value(draw, st_, -10, -1)
         z = _value(draw, st_, -20, -1)
-    q = f" Q{_lit(draw, 1, 6, inch=st_.inch, decimals=1)}" if c in (73, 76, 83) else ""
-    p = " P200" if c in (76, 82, 89, 74, 84) and draw(st.booleans()) else ""
+    q = f" Q{_lit(draw, 1, 6, inch=st_.inch, decimals=1)}" if c in ("73", "76", "83") else ""
+    p = " P200" if c in ("76", "82", "89", "74", "84") and draw(st.booleans()) else ""
     # class 7 (fanuc-bounds): small K only
     k = draw(st.sampled_from(["", "", " K2", " K3", " K1", " K#121", " K[#121 + 1]"]))
+    if c in ("84.2", "84.3"):
+        k = ""  # finding N3 (test_reference_findings.py): K of G84.2/G84.3 is read as a length
     if "#121" in k:
         st_.lines.append(f"#121 = {draw(st.sampled_from(['0.5', '1.5', '2.5', '1.4', '0.49', '2.0']))}")
     st_.lines.append(f"{d} {ret} G{c} {_axes(draw, st_, 'XY', need=0)} R{r} Z{z}{q}{p}{k} F100.".replace("  ", " "))
     for _ in range(draw(st.integers(0, 3))):
         more = _axes(draw, st_, "XY")
-        kk = draw(st.sampled_from(["", "", " K2", " K0"]))
+        kk = draw(st.sampled_from(["", "", " K2", " K0"])) if c not in ("84.2", "84.3") else ""
         st_.lines.append(f"{more}{kk}")
     st_.lines.append(draw(st.sampled_from(["G80", "G00", "G80 G00"])))
 
@@ -356,10 +371,125 @@ def p_mcodes(draw, st_: GenState):
     st_.lines.append(draw(st.sampled_from(["M03 S1000", "M05", "M08", "M09", "T2 M06"])))
 
 
+def p_planes(draw, st_: GenState):
+    plane = draw(st.sampled_from(["G18", "G19"]))
+    d = _dist(draw, st_)
+    letters = "XZ" if plane == "G18" else "YZ"
+    st_.lines.append(f"{plane} {d} G01 {_axes(draw, st_, letters)} F200.")
+    if draw(st.booleans()):
+        # an R arc in that plane (G91: the chord shorter than the diameter)
+        a, b = letters
+        st_.absolute = False
+        st_.lines.append(f"G91 G02 {a}3. {b}0 R2. F100.")
+    st_.lines.append("G17")
+
+
+def p_g27_g29(draw, st_: GenState):
+    if st_.tl:
+        return
+    st_.absolute = True
+    st_.lines.append(f"G90 G27 {_axes(draw, st_, 'XY')}")
+    st_.lines.append(f"G90 G28 X{_value(draw, st_, -20, 20)} Y{_value(draw, st_, -20, 20)}")
+    st_.lines.append(f"G29 {_axes(draw, st_, 'XY')}")
+
+
+def p_g33(draw, st_: GenState):
+    d = _dist(draw, st_)
+    st_.lines.append(f"{d} G33 Z{_value(draw, st_, -10, 10)} F1.5")
+    st_.lines.append("G00")
+
+
+def p_g93(draw, st_: GenState):
+    d = _dist(draw, st_)
+    st_.lines.append(f"{d} G93 G01 {_axes(draw, st_)} F2.")
+    st_.lines.append("G94 F500.")
+
+
+def _transform_moves(draw, st_: GenState) -> None:
+    for _ in range(draw(st.integers(1, 3))):
+        g = draw(st.sampled_from(["G00", "G01"]))
+        z = f" Z{_value(draw, st_, -10, 10)}" if draw(st.booleans()) else ""
+        st_.lines.append(f"G90 {g} X{_value(draw, st_, -30, 30)} Y{_value(draw, st_, -30, 30)}{z}")
+
+
+def p_scaling(draw, st_: GenState):
+    if st_.inch:
+        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
+    st_.absolute = True
+    # finding N4 (test_reference_findings.py): a G51 line whose length words all have a decimal point
+    # reads P without a decimal point as the factor itself, not in scaling_unit: P written with a point
+    p = draw(st.sampled_from(["P2.", "P0.5", "P1.5", "P1.25", "P3."]))
+    st_.lines.append(f"G90 G51 X{_value(draw, st_, -10, 10)} Y{_value(draw, st_, -10, 10)} {p}")
+    _transform_moves(draw, st_)
+    st_.lines.append("G50")
+    _transform_moves(draw, st_)
+
+
+def p_mirror(draw, st_: GenState):
+    if st_.inch:
+        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
+    st_.absolute = True
+    st_.lines.append(f"G90 G51.1 {_axes(draw, st_, 'XY', lo=-10, hi=10)}")
+    _transform_moves(draw, st_)
+    st_.lines.append(draw(st.sampled_from(["G50.1 X0 Y0", "G50.1"])))
+    _transform_moves(draw, st_)
+
+
+def p_rotation(draw, st_: GenState):
+    if st_.inch:
+        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
+    st_.absolute = True
+    r = draw(st.sampled_from(["90.", "180.", "270.", "-90.", "0."]))
+    st_.lines.append(f"G90 G68 X{_value(draw, st_, -10, 10)} Y{_value(draw, st_, -10, 10)} R{r}")
+    _transform_moves(draw, st_)
+    st_.lines.append("G69")
+    _transform_moves(draw, st_)
+
+
+def p_polar(draw, st_: GenState):
+    if st_.inch:
+        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
+    st_.absolute = True
+    st_.lines.append("G90 G16")
+    for _ in range(draw(st.integers(1, 3))):
+        a = draw(st.sampled_from(["0.", "90.", "180.", "270.", "-90.", "450."]))
+        st_.lines.append(f"G01 X{_value(draw, st_, 0, 30)} Y{a}")
+    st_.lines.append("G15")
+    _transform_moves(draw, st_)
+
+
+def p_m97(draw, st_: GenState):
+    if st_.depth:
+        return
+    lab = st_.next_label
+    st_.next_label += 1
+    st_.local_subs.append(f"N{lab} G91 G01 X{_lit(draw, -5, 5, inch=st_.inch, decimals=1)} "
+                          f"Y{_lit(draw, -5, 5, inch=st_.inch, decimals=1)} F100.")
+    st_.local_subs.append("M99")
+    st_.lines.append(f"M97 P{lab}" + draw(st.sampled_from(["", " L2"])))
+    st_.absolute = False
+
+
+def p_m99p(draw, st_: GenState):
+    if st_.depth:
+        return
+    num = st_.next_sub
+    st_.next_sub += 1
+    lab = st_.next_label
+    st_.next_label += 1
+    st_.subs.append((num, [f"G91 G01 X{_lit(draw, -5, 5, inch=st_.inch, decimals=1)} F100.", f"M99 P{lab}"]))
+    st_.lines.append(f"M98 P{num}")
+    st_.lines.append("G91 G01 Y7. F100.")  # jumped over by M99 P
+    st_.lines.append(f"N{lab} G91 G01 X1. F100.")
+    st_.absolute = False
+
+
 GENERATORS = {"move": p_move, "arc": p_arc, "tool_length": p_tool_length, "work": p_work, "g10": p_g10,
               "g52": p_g52, "g92": p_g92, "g53": p_g53, "reference": p_reference, "dwell": p_dwell,
               "cycle": p_cycle, "macro": p_macro, "m98": p_m98, "g65": p_g65, "g66": p_g66,
-              "skip": p_skip, "mcodes": p_mcodes}
+              "skip": p_skip, "mcodes": p_mcodes, "planes": p_planes, "g27_g29": p_g27_g29, "g33": p_g33,
+              "g93": p_g93, "scaling": p_scaling, "mirror": p_mirror, "rotation": p_rotation, "polar": p_polar,
+              "m97": p_m97, "m99p": p_m99p}
 SAFE = ("move", "arc", "dwell", "mcodes")
 
 
@@ -379,7 +509,8 @@ def fanuc_programs(draw, max_statements: int = 8):
     st_.lines.append("G90 G17 G40 G49 G80 G94 G54 F500.")
     st_.lines.append("G00 " + _axes(draw, st_, "XYZ", need=3, lo=-10, hi=10))
     _body(draw, st_, draw(st.integers(1, max_statements)))
-    st_.lines.append("M30")
+    st_.lines.append(draw(st.sampled_from(["M30", "M30", "M02"])))
+    st_.lines.extend(st_.local_subs)
     for num, body in st_.subs:
         st_.lines.append(f"O{num:04d}")
         st_.lines.extend(body)

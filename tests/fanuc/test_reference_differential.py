@@ -123,3 +123,69 @@ def test_grammar_covers_every_modelled_code():
     produced = {_norm(c) for codes in PRODUCTIONS.values() for c in codes}
     missing = sorted(c for c in modelled - produced if c not in NOT_GENERATED)
     assert not missing, f"codes specs/fanuc.md marks modelled with no production in ref_grammar.py: {missing}"
+
+
+# ------------------------------------------------------------------------------------------- mutations
+
+def _mutate_g44_adds(monkeypatch):
+    """Offset rule: G44 adds the tool length instead of subtracting it ([0i] "Tool length compensation")."""
+    from nczones.gcode.fanuc.interpreter import FanucInterpreter
+
+    original = FanucInterpreter._fanuc_tool_length
+
+    def broken(self, g, words):
+        original(self, g, words)
+        if g[0] == 440 and self.tlo != 0:
+            flipped = -self.tlo
+            if getattr(self, "_tlo_shift", None) is not None:
+                self._tlo_shift += flipped - self.tlo
+            self.tlo = flipped
+            self.recompute_offsets()
+
+    monkeypatch.setattr(FanucInterpreter, "_fanuc_tool_length", broken)
+
+
+def _mutate_g66_one_shot(monkeypatch):
+    """Modal restore: the G66 modal call is dropped after its first call (as if G67 followed it)."""
+    from nczones.gcode.fanuc.program import FanucRunner
+
+    original = FanucRunner.call_macro
+
+    def broken(self, program, repeats, args, ret, lineno, line, what, custom=False):
+        out = original(self, program, repeats, args, ret, lineno, line, what, custom)
+        if what == "G66":
+            self.modal_call = None
+        return out
+
+    monkeypatch.setattr(FanucRunner, "call_macro", broken)
+
+
+def _mutate_counts_truncate(monkeypatch):
+    """Count rounding: a computed repeat count (L, K) is truncated instead of rounded ([Sinha] "Real versus
+    integer values": 1000.5 is 1001)."""
+    from fractions import Fraction
+
+    from nczones.gcode.fanuc.program import FanucRunner
+
+    original = FanucRunner.address_value
+
+    def broken(self, letter, value, cycle):
+        if letter == "L" or (letter == "K" and cycle):
+            q = value[1] if value[1] is not None else Fraction(value[0])
+            return Fraction(int(q))
+        return original(self, letter, value, cycle)
+
+    monkeypatch.setattr(FanucRunner, "address_value", broken)
+
+
+@pytest.mark.long
+@pytest.mark.parametrize("mutation", [_mutate_g44_adds, _mutate_g66_one_shot, _mutate_counts_truncate],
+                         ids=["offset-rule-G44", "modal-restore-G66", "count-rounding-L-K"])
+def test_mutations_are_caught(monkeypatch, mutation):
+    """Each mutation makes the CI-size differential (the same derandomized examples) fail."""
+    mutation(monkeypatch)
+    check, counts, failures = _differential(EXAMPLES)
+    with pytest.raises(AssertionError):
+        check()
+    assert failures, counts
+    print(f"{mutation.__name__}: caught after {sum(counts.values())} programs: {failures[0][3]}")

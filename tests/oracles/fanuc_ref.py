@@ -45,6 +45,7 @@ AXES = "XYZ"
 LENGTH_LETTERS = set("XYZIJKRQ")  # K is the repeat count inside a canned cycle block
 INTEGER_LETTERS = set("MSTHDPLN")
 INCH = F(254, 10)
+CYCLE_CODES = (73, 74, 76, 81, 82, 83, 84, 85, 86, 89, F(842, 10), F(843, 10))
 
 
 class RefUnknown(Exception):
@@ -390,7 +391,11 @@ class Reader:
         self.common = {int(k.lstrip("#")): float(v) for k, v in machine.common.items()}
         self.locals: list[dict] = [{}]
         self.steps = 0
-        self.last_g = {1: 0}
+        self.plane = 17
+        self.xf: tuple | None = None  # the active coordinate transform (G16, G51, G51.1, G68)
+        self.polar = [F(0), F(0)]  # G16: the last radius and angle
+        self.intermediate: dict = {}  # G28/G30 intermediate point per axis (machine), for G29
+        self.ret_label: int | None = None  # M99 P n
 
     # -------------------------------------------------------------------------- units and offsets
 
@@ -645,6 +650,9 @@ class Reader:
                 raise RefUnknown("DO without WHILE")
             else:
                 r = self.block(ln, pc)
+                if isinstance(r, tuple):
+                    pc = self.find_label(pc + 1, r[1])
+                    continue
                 if r == "end":
                     return
                 if r == "return":
@@ -673,14 +681,14 @@ class Reader:
 
     # -------------------------------------------------------------------------- one NC block
 
-    def block(self, ln: Line, pc: int) -> str | None:
+    def block(self, ln: Line, pc: int):
         words = ln.words
         gs: list[Fraction] = []
         other: dict[str, Fraction] = {}
         letters = [w.letter for w in words]
         in_cycle_block = self.cycle is not None or any(
-            w.letter == "G" and w.text is not None and F(w.text) in (73, 74, 76, 81, 82, 83, 84, 85, 86, 89)
-            for w in words)
+            w.letter == "G" and w.text is not None and F(w.text) in CYCLE_CODES for w in words)
+        self._raw = {w.letter: w for w in words}
         for w in words:
             v = self.value(w, in_cycle=in_cycle_block)
             if v is VACANT:
@@ -705,7 +713,7 @@ class Reader:
             g.discard(F(67))
         m = other.get("M")
         if m in (2, 30):
-            return "end"
+            return "end"  # [0i]: M02/M30 end the main program
         if m == 98:
             p = int(other["P"])
             if "L" in other:
@@ -717,8 +725,19 @@ class Reader:
             self.modal_state_only(g, other)
             for _ in range(count):
                 self.call(p, new_level=False)
+                if self.ret_label is not None:
+                    label, self.ret_label = self.ret_label, None
+                    return ("goto", label)
+            return None
+        if m == 97:
+            # [Haas] M97 P n L: a local subprogram at block N n of the current program, to its M99
+            tgt = self.find_label(pc, int(other["P"]))
+            for _ in range(int(other.get("L", 1))):
+                self.exec_from(tgt, level_kind="sub")
             return None
         if m == 99:
+            # [0i] "Subprogram": M99 P n returns to block N n of the calling program
+            self.ret_label = int(other["P"]) if "P" in other else None
             return "return"
         if m in (0, 1):
             raise RefUnknown("M00/M01 (class 6: fanuc-bounds)")
@@ -727,7 +746,8 @@ class Reader:
         self.modal_state_only(g, other)
 
         # ------------------------------------------------------------- group 00
-        one_shot = [c for c in g if c in (4, 10, 28, 30, 52, 53, 92, F(921, 10))]
+        self.transform_codes(g, other)
+        one_shot = [c for c in g if c in (4, 10, 27, 28, 29, 30, 52, 53, 92, F(921, 10))]
         axes = {a: other[a] for a in AXES if a in other}
         if one_shot:
             c = one_shot[0]
@@ -762,6 +782,13 @@ class Reader:
             if c in (28, 30):
                 self.reference_return(c, axes, other)
                 return None
+            if c == 27:
+                # [0i] "Reference position return": G27 IP_ positions to IP_ at rapid (then checks)
+                self.move(axes, other, None, kind="rapid")
+                return None
+            if c == 29:
+                self.g29(axes)
+                return None
 
         # ------------------------------------------------------------- canned cycle
         if self.cycle is not None:
@@ -782,6 +809,7 @@ class Reader:
         return None
 
     _pending_tl = None
+    _raw: dict = {}
 
     def modal_state_only(self, g: set, other: dict) -> None:
         """The modal codes of a block, in group order."""
@@ -794,10 +822,8 @@ class Reader:
                 self.absolute = True
             elif c == 91:
                 self.absolute = False
-            elif c == 17:
-                pass
-            elif c in (18, 19):
-                raise RefUnknown("G18/G19")
+            elif c in (17, 18, 19):
+                self.plane = int(c)
             elif c in (54, 55, 56, 57, 58, 59):
                 self.wcs = f"G{int(c)}"
             elif c == F(541, 10):
@@ -806,15 +832,17 @@ class Reader:
                 self.retract_initial = True
             elif c == 99:
                 self.retract_initial = False
-            elif c in (0, 1, 2, 3):
+            elif c in (0, 1, 2, 3, 33):
                 self.motion = int(c)
                 self.cycle = None  # [0i]: a group 01 code cancels the canned cycle
             elif c == 80:
                 self.cycle = None
-            elif c in (73, 74, 76, 81, 82, 83, 84, 85, 86, 89):
+            elif c in (73, 74, 76, 81, 82, 83, 84, 85, 86, 89, F(842, 10), F(843, 10)):
+                if self.plane != 17:
+                    raise RefUnknown("a canned cycle outside G17 (parameter 5101#0 FXY)")
                 if self.cycle is None:
                     self.cyc = {"initial": self.pos[2]}
-                self.cycle = int(c)
+                self.cycle = c
             elif c in (43, 44, 49):
                 self.tl_mode = int(c)
                 self._pending_tl = "mode"
@@ -830,19 +858,23 @@ class Reader:
         v = self.h_geom.get(self.tl_h, F(0)) + self.h_wear.get(self.tl_h, F(0))
         return v if self.tl_mode == 43 else -v
 
-    def move(self, axes: dict, other: dict, new_tl) -> None:
-        """A G00/G01/G02/G03 block.  G90: the end is the commanded point plus the offsets; G91: the
+    def move(self, axes: dict, other: dict, new_tl, kind: str | None = None) -> None:
+        """A G00/G01/G02/G03/G33 block.  G90: the end is the commanded point plus the offsets; G91: the
         commanded increment from the current position; an axis not commanded keeps its program position.
         A tool length change: with TOS = 0 the tool axis moves by the change in the same block (B-64304EN
         example: H01 = -4.0, ``G91 G00 G43 Z-32.0 H01`` moves Z by -36)."""
         old_prog = self.program_pos()
         if new_tl is not None:
             self.tl = new_tl
-        u = self.unit()
         prog = list(old_prog)
+        axes = dict(axes)
+        if self.xf is not None and self.xf[0] == "polar":
+            axes = self.polar_point(axes)
         for a, v in axes.items():
             i = AXES.index(a)
             prog[i] = v if self.absolute else old_prog[i] + v
+        if self.xf is not None:
+            prog = self.transformed(prog, axes)
         end = self.to_machine(prog)
         # the axes not commanded and not the tool axis stay where the machine is (a work system change
         # alone does not move, [0i] "Workpiece coordinate system")
@@ -851,11 +883,142 @@ class Reader:
                 end[i] = self.pos[i]
         if "Z" not in axes and new_tl is None:
             end[2] = self.pos[2]
-        del u
-        kind = {0: "rapid", 1: "line", 2: "arc", 3: "arc"}[self.motion]
-        if kind == "arc" and not axes:
-            kind = "line"
+        if kind is None:
+            kind = {0: "rapid", 1: "line", 2: "arc", 3: "arc", 33: "line"}[self.motion]
+            if kind == "arc" and not axes:
+                kind = "line"
         self.emit(kind, end)
+
+    # -------------------------------------------------------------------------- coordinate transforms
+
+    def transform_codes(self, g: set, other: dict) -> None:
+        """G15/G16 polar coordinates, G50/G51 scaling, G50.1/G51.1 mirror image, G69/G68 rotation.
+
+        [0i] "Scaling": ``G51 X_ Y_ Z_ P_``: scaling about (X, Y, Z) by P (P without a decimal point in
+        units of 0.001, parameter 5400#7 SCR = 0), the centre omitted: the current position.
+        [0i] "Programmable mirror image": ``G51.1 IP_``: a mirror image about the position IP_ of the named
+        axes; ``G50.1 IP_`` cancels.  [0i] "Coordinate system rotation": ``G68 a_ b_ R_``: rotation by R
+        degrees counter-clockwise about (a, b) in the plane.  [0i] "Polar coordinate command": under G16
+        the first axis of the plane is the radius and the second the angle, measured from the workpiece
+        zero (G90)."""
+        raw = self._raw
+        u = self.increment()
+        for c in sorted(g):
+            if c == 15:
+                if self.xf is not None and self.xf[0] == "polar":
+                    self.xf = None
+            elif c == 16:
+                self._one_transform()
+                self.xf = ("polar",)
+            elif c == 50:
+                if self.xf is not None and self.xf[0] == "scale":
+                    self.xf = None
+            elif c == 51:
+                self._one_transform()
+                here = self.program_pos()
+                cx = other.pop("X", here[0])
+                cy = other.pop("Y", here[1])
+                cz = other.pop("Z", here[2])
+                w = raw.get("P")
+                if w is None:
+                    raise RefUnknown("G51 without P")
+                p = other.pop("P")
+                if w.text is not None and "." not in w.text:
+                    p = p * F(1, 1000)  # parameter 5400#7 SCR = 0: P in units of 0.001
+                if p == 0:
+                    raise RefError("scale factor 0")
+                self.xf = ("scale", cx, cy, p, cz)  # P scales X, Y and Z
+            elif c == F(501, 10):
+                if self.xf is not None and self.xf[0] == "mirror":
+                    named = [a for a in "XY" if a in other]
+                    for a in named:
+                        other.pop(a)
+                    left = {a: v for a, v in self.xf[1].items() if named and a not in named}
+                    self.xf = ("mirror", left) if left else None
+            elif c == F(511, 10):
+                self._one_transform()
+                centres = {a: other.pop(a) for a in "XY" if a in other}
+                self.xf = ("mirror", centres)
+            elif c == 69:
+                if self.xf is not None and self.xf[0] == "rot":
+                    self.xf = None
+            elif c == 68:
+                self._one_transform()
+                here = self.program_pos()
+                cx = other.pop("X", here[0])
+                cy = other.pop("Y", here[1])
+                if "R" not in other:
+                    raise RefUnknown("G68 without R (parameter 5410)")
+                self.xf = ("rot", cx, cy, other.pop("R"))
+        del u
+
+    def _one_transform(self) -> None:
+        if self.xf is not None:
+            raise RefUnknown("two transforms at once")
+        if self.plane != 17:
+            raise RefUnknown("a transform outside G17")
+
+    @staticmethod
+    def _cos_sin(deg: Fraction) -> tuple[Fraction, Fraction]:
+        d = deg % 360
+        table = {0: (1, 0), 90: (0, 1), 180: (-1, 0), 270: (0, -1)}
+        if d not in table:
+            raise RefUnknown(f"an angle of {deg} degrees (the reference computes quarter turns only)")
+        c, s = table[d]
+        return F(c), F(s)
+
+    def polar_point(self, axes: dict) -> dict:
+        if not self.absolute:
+            raise RefUnknown("G91 in polar mode")
+        if "X" in axes:
+            self.polar[0] = axes.pop("X")
+        if "Y" in axes:
+            self.polar[1] = axes.pop("Y")
+        c, s = self._cos_sin(self.polar[1])
+        axes["X"] = self.polar[0] * c
+        axes["Y"] = self.polar[0] * s
+        return axes
+
+    def transformed(self, prog: list, axes: dict) -> list:
+        """The program point under the active transform, rounded to the least increment ([0i]
+        "Increment system": positions are whole increments; halves away from zero)."""
+        kind = self.xf[0]
+        if kind == "polar":
+            return prog
+        if not self.absolute or not ("X" in axes and "Y" in axes):
+            raise RefUnknown("a move under a transform that is not absolute on X and Y")
+        x, y, z = prog
+        if kind == "scale":
+            _, cx, cy, p, cz = self.xf
+            x, y = cx + p * (x - cx), cy + p * (y - cy)
+            if "Z" in axes:
+                z = cz + p * (z - cz)
+        elif kind == "mirror":
+            cs = self.xf[1]
+            if "X" in cs:
+                x = 2 * cs["X"] - x
+            if "Y" in cs:
+                y = 2 * cs["Y"] - y
+        elif kind == "rot":
+            _, cx, cy, r = self.xf
+            c, s = self._cos_sin(r)
+            x, y = cx + (x - cx) * c - (y - cy) * s, cy + (x - cx) * s + (y - cy) * c
+        inc = self.increment()
+        return [round_half_away(x, inc), round_half_away(y, inc), round_half_away(z, inc)]
+
+    def g29(self, axes: dict) -> None:
+        """[0i] "Reference position return": G29 IP_ moves the named axes from the reference position to
+        the intermediate point of the last G28/G30, then to IP_."""
+        if not self.absolute:
+            raise RefUnknown("G29 in G91")
+        mid = list(self.pos)
+        for a in axes:
+            i = AXES.index(a)
+            if i not in self.intermediate:
+                raise RefUnknown("G29 without an intermediate point on that axis")
+            mid[i] = self.intermediate[i]
+        self.emit("rapid", mid)
+        self.move(axes, {}, None, kind="rapid")
 
     def g10(self, other: dict) -> None:
         """[0i] "Programmable data input": G10 L2 P0..P6 (EXT, G54..G59), L20 P1..P48 (G54.1), axis values
@@ -906,6 +1069,8 @@ class Reader:
         for i in range(3):
             if AXES[i] not in axes:
                 mid[i] = self.pos[i]
+            else:
+                self.intermediate[i] = mid[i]
         self.emit("rapid", mid)
         end = list(mid)
         for a in axes:
@@ -983,7 +1148,7 @@ class Reader:
             elif c == 86:
                 self.emit("line", at(bottom))
                 self.emit("rapid", at(back))
-            elif c in (74, 84, 85, 89):
+            elif c in (74, 84, 85, 89, F(842, 10), F(843, 10)):
                 self.emit("line", at(bottom))
                 if c != 85:
                     self.emit("dwell", self.pos)
