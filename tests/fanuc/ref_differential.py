@@ -16,7 +16,14 @@ from fractions import Fraction
 from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.motion import SegmentKind
-from tests.oracles.fanuc_ref import RefError, RefMachine, RefUnknown, reference_motion
+from tests.oracles.fanuc_ref import (
+    RefError,
+    RefLathe,
+    RefMachine,
+    RefUnknown,
+    reference_lathe_motion,
+    reference_motion,
+)
 
 from .helpers import mill
 
@@ -107,3 +114,57 @@ def first_difference(o: Outcome) -> str:
         if a != b:
             return f"motion {i}: nczones {a} reference {b}"
     return f"lengths: nczones {len(o.ours)} reference {len(o.ref)}"
+
+
+LATHE = """
+[machine]
+name = "reference lathe"
+type = "lathe"
+dialect = "fanuc"
+axes = ["X", "Z"]
+diameter_axes = ["X"]
+[machine.rapid]
+X = "12000"
+Z = "15000"
+[machine.reference]
+X = "240"
+Z = "650"
+[offsets]
+G54 = { X = "0", Z = "200" }
+G55 = { X = "5", Z = "180" }
+[tool_offsets]
+1 = { X = "80", Z = "50", R = "0.4", tip = 3 }
+2 = { X = "85", Z = "45", R = "0.2", tip = 3, wear = { X = "0.01", Z = "-0.02" } }
+3 = { X = "70", Z = "60" }
+[fanuc]
+thread_chamfer = "0"
+"""
+
+
+def ref_lathe() -> RefLathe:
+    """The reference's copy of LATHE (geometry + wear added by hand)."""
+    return RefLathe(work={"G54": [F(0), F(200)], "G55": [F(5), F(180)]},
+                    tool_offsets={1: (F(80), F(50)), 2: (F("85.01"), F("44.98")), 3: (F(70), F(60))})
+
+
+_LATHES: list = []
+
+
+def compare_lathe(text: str) -> Outcome:
+    from nczones.machine import parse_machine
+
+    if not _LATHES:
+        _LATHES.append(parse_machine(LATHE, "lathe.toml"))
+    start = (F(240), F(650))
+    try:
+        ref = normalise(reference_lathe_motion(text, ref_lathe()), start)
+    except RefUnknown as exc:
+        return Outcome("skip", f"reference: {exc}")
+    run = interpret_text(text, _LATHES[0], file="lathe.nc")
+    segs = [(_KIND.get(s.kind, str(s.kind)), tuple(s.end)) for s in run.segments()]
+    if run.status != "complete":
+        return Outcome("skip", f"nczones {run.status}: {[u.code for u in run.unsupported]}")
+    ours = normalise(segs, start)
+    if ours != ref:
+        return Outcome("differ", "motion", ours, ref)
+    return Outcome("same")

@@ -516,3 +516,79 @@ def fanuc_programs(draw, max_statements: int = 8):
         st_.lines.extend(body)
     st_.lines.append("%")
     return "\n".join(st_.lines) + "\n"
+
+
+# ------------------------------------------------------------------------------------------------ lathe
+
+LATHE_PRODUCTIONS: dict[str, set[str]] = {
+    "lathe_move": {"G00", "G01", "X", "Z", "U", "W"},
+    "lathe_arc": {"G02", "G03"},
+    "lathe_tool": {"T"},
+    "lathe_g50": {"G50"},
+    "lathe_cycle": {"G90", "G92", "G94"},
+    "lathe_g32": {"G32"},
+    "lathe_work": {"G54", "G55"},
+    "lathe_g28": {"G28"},
+}
+
+
+def _lathe_xz(draw, st_: GenState, *, both: bool = False) -> str:
+    words = []
+    x = draw(st.sampled_from(["X", "U", ""])) if not both else draw(st.sampled_from(["X", "U"]))
+    z = draw(st.sampled_from(["Z", "W", ""])) if not both else draw(st.sampled_from(["Z", "W"]))
+    if not x and not z:
+        x = "X"
+    if x:
+        lo, hi = (0, 120) if x == "X" else (-20, 20)
+        words.append(f"{x}{_value(draw, st_, lo, hi)}")
+    if z:
+        lo, hi = (-60, 60) if z == "Z" else (-20, 20)
+        words.append(f"{z}{_value(draw, st_, lo, hi)}")
+    return " ".join(words)
+
+
+@st.composite
+def lathe_programs(draw, max_statements: int = 8):
+    """A Fanuc lathe program (G code system A, X diameters)."""
+    st_ = GenState()
+    st_.lines += ["%", "O0002", "G21", "G18 G40 G97 G99 G54 F0.2"]
+    tool = False
+    must_both = False
+    for _ in range(draw(st.integers(1, max_statements))):
+        kind = draw(st.sampled_from(sorted(LATHE_PRODUCTIONS)))
+        if kind == "lathe_move" or must_both:
+            g = draw(st.sampled_from(["G00", "G01", "G0", "G1"]))
+            st_.lines.append(f"{g} {_lathe_xz(draw, st_, both=must_both)}")
+            must_both = False
+        elif kind == "lathe_arc":
+            r = draw(st.integers(3, 9))
+            g = draw(st.sampled_from(["G02", "G03"]))
+            st_.lines.append(f"{g} U{2 * draw(st.integers(1, r))}. W-{draw(st.integers(1, r))}. R{r}.")
+        elif kind == "lathe_tool":
+            st_.lines.append(draw(st.sampled_from(["T0101", "T0202", "T0303", "T0102", "T101", "T0203"])))
+            tool = True
+            must_both = True  # LGT = 0: the shift is taken by the next move; name both axes
+        elif kind == "lathe_g50":
+            if tool:
+                continue  # class 4 (fanuc-lathe): G50 while a tool offset is active is excluded
+            st_.lines.append(f"G50 X{_lit(draw, 100, 400, inch=False)} Z{_lit(draw, 100, 500, inch=False)}")
+        elif kind == "lathe_cycle":
+            c = draw(st.sampled_from(["G90", "G94", "G92"]))
+            f = "F1.5" if c == "G92" else "F0.2"
+            st_.lines.append(f"G00 X{_lit(draw, 60, 120, inch=False)} Z{_lit(draw, 5, 20, inch=False)}")
+            st_.lines.append(f"{c} X{_lit(draw, 20, 58, inch=False)} Z{_lit(draw, -40, 0, inch=False)} {f}")
+            for _ in range(draw(st.integers(0, 2))):
+                st_.lines.append(draw(st.sampled_from([f"X{_lit(draw, 20, 58, inch=False)}",
+                                                       f"Z{_lit(draw, -40, 0, inch=False)}"])))
+            st_.lines.append("G00")
+        elif kind == "lathe_g32":
+            st_.lines.append(f"G32 W{_lit(draw, -20, -1, inch=False)} F1.5")
+            st_.lines.append("G00")
+        elif kind == "lathe_work":
+            st_.lines.append(draw(st.sampled_from(["G54", "G55"])))
+            must_both = True
+        elif kind == "lathe_g28":
+            st_.lines.append(draw(st.sampled_from(["G28 U0. W0.", "G28 U0.", "G28 W0."])))
+            must_both = True
+    st_.lines += ["M30", "%"]
+    return "\n".join(st_.lines) + "\n"

@@ -21,12 +21,14 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from .ref_differential import compare, first_difference
-from .ref_grammar import PRODUCTIONS, fanuc_programs
+from .ref_differential import compare, compare_lathe, first_difference
+from .ref_grammar import PRODUCTIONS, fanuc_programs, lathe_programs
 
 SPEC = Path(__file__).resolve().parents[2] / "specs" / "fanuc.md"
 EXAMPLES = int(os.environ.get("FANUC_REF_EXAMPLES", "300"))
 LONG = int(os.environ.get("FANUC_REF_LONG", "20000"))
+LATHE_EXAMPLES = int(os.environ.get("FANUC_REF_LATHE_EXAMPLES", "100"))
+LATHE_LONG = int(os.environ.get("FANUC_REF_LATHE_LONG", "5000"))
 
 #: Codes specs/fanuc.md marks modelled that the grammar does not write, each with the reason.
 NOT_GENERATED: dict[str, str] = {
@@ -68,6 +70,34 @@ def test_nczones_moves_as_the_reference_long():
     check()
     print(f"fanuc reference differential: {counts}")
     assert counts["same"] >= 0.9 * (counts["same"] + counts["skip"]), counts
+
+
+def _lathe(n: int, derandomize: bool = True):
+    counts = {"same": 0, "skip": 0, "differ": 0}
+
+    @settings(max_examples=n, deadline=None, database=None, derandomize=derandomize,
+              suppress_health_check=list(HealthCheck))
+    @given(lathe_programs())
+    def check(text):
+        o = compare_lathe(text)
+        counts[o.status] += 1
+        assert o.status != "differ", f"{first_difference(o)}\n{text}"
+
+    return check, counts
+
+
+def test_nczones_turns_as_the_reference():
+    """Lathe (G code system A): X diameters, U/W, T offsets (geometry + wear), G50, G90/G92/G94, G32, G28."""
+    check, counts = _lathe(LATHE_EXAMPLES)
+    check()
+    assert counts["same"] >= 0.9 * (counts["same"] + counts["skip"]), counts
+
+
+@pytest.mark.long
+def test_nczones_turns_as_the_reference_long():
+    check, counts = _lathe(LATHE_LONG, derandomize=False)
+    check()
+    print(f"fanuc lathe reference differential: {counts}")
 
 
 # ------------------------------------------------------------------------------------------- coverage

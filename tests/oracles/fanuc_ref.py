@@ -363,6 +363,7 @@ class Reader:
     """Run one program (text) and collect its motion."""
 
     MAX_STEPS = 200_000
+    length_letters = LENGTH_LETTERS
     round_step = F(1)
 
     def __init__(self, machine: RefMachine, *, block_delete: bool = False):
@@ -528,7 +529,7 @@ class Reader:
         when DPI = 0 ([16i-PB] 7.3).  A macro value: the double rounded as the control rounds it — a length
         to the least input increment, an integer address to an integer ([Sinha]), halves away from zero.
         A vacant variable drops the word ([0i] "Vacant variables": ``G90 X#1`` is ``G90``)."""
-        is_length = w.letter in LENGTH_LETTERS and not (w.letter == "K" and in_cycle)
+        is_length = w.letter in self.length_letters and not (w.letter == "K" and in_cycle)
         if w.text is not None:
             q = F(w.text)
             if is_length and "." not in w.text and self.mc.decimal_point_input == "increment":
@@ -1197,3 +1198,182 @@ class Reader:
 def reference_motion(text: str, machine: RefMachine, *, block_delete: bool = False) -> list:
     """The motion of ``text``: ``[(kind, (x, y, z)), ...]`` in machine coordinates (mm)."""
     return Reader(machine, block_delete=block_delete).run(text)
+
+
+# ---------------------------------------------------------------------------------------------- lathe
+
+@dataclass
+class RefLathe:
+    """A two-axis Fanuc lathe (G code system A): X a diameter axis, machine values radii (mm)."""
+
+    work: dict  # "G54".. -> [x (radius), z]
+    tool_offsets: dict  # offset number -> (x, z) geometry + wear (radius, mm)
+    ref1: tuple = (F(240), F(650))
+    start: tuple = (F(240), F(650))
+    common: dict = field(default_factory=dict)
+    decimal_point_input: str = "calculator"
+
+
+class LatheReader(Reader):
+    """The lathe rules of [0i-T] (FANUC 0i-TD B-64304EN, G code system A):
+
+    * "Diameter and radius programming": on a diameter axis X and U are diameters (the machine moves half);
+    * "Absolute and incremental programming": X Z absolute, U W incremental (system A);
+    * "Tool offset": T xx yy selects tool xx and offset yy; the offset (geometry + wear) is added to the
+      machine position so the tip reaches the programmed point; with parameter 5002#4 LGT = 0 the offset
+      shifts the coordinate system: the T block itself does not move;
+    * "Coordinate system setting (G50)": G50 X Z makes the current position read X (a diameter) Z;
+    * "Canned cycle" G90 (outer diameter cutting: 1 rapid X, 2 feed Z, 3 feed X back, 4 rapid Z back),
+      G94 (end face: 1 rapid Z, 2 feed X, 3 feed Z back, 4 rapid X back), G92 (threading: 1 rapid X,
+      2 thread along Z, 3 rapid X back, 4 rapid Z back; thread chamfer 0); X (U), Z (W) are modal in the
+      cycle: a block with X alone repeats it with the last Z.
+    """
+
+    length_letters = LENGTH_LETTERS | set("UW")
+
+    def __init__(self, lathe: RefLathe, *, block_delete: bool = False):
+        mc = RefMachine(work={k: [v[0], F(0), v[1]] for k, v in lathe.work.items()}, lengths={},
+                        ref1=(lathe.ref1[0], F(0), lathe.ref1[1]), start=(lathe.start[0], F(0), lathe.start[1]),
+                        common=lathe.common, decimal_point_input=lathe.decimal_point_input)
+        super().__init__(mc, block_delete=block_delete)
+        self.lathe = lathe
+        self.toff = [F(0), F(0), F(0)]
+        self.g50 = [F(0), F(0), F(0)]
+        self.plane = 18
+        self.lcycle: int | None = None
+        self.cyc_xz: dict = {}
+
+    def offset(self) -> list:
+        w = self.work.get(self.wcs) or [F(0)] * 3
+        return [w[a] + self.g50[a] + self.toff[a] for a in range(3)]
+
+    def run(self, text: str) -> list:
+        out = super().run(text)
+        return [(k, (e[0], e[2])) for k, e in out]
+
+    def lathe_axes(self, other: dict) -> dict:
+        """Program targets (absolute, radius) of the axes named by X Z U W."""
+        prog = self.program_pos()
+        t = {}
+        if "X" in other:
+            t["X"] = other["X"] / 2
+        elif "U" in other:
+            t["X"] = prog[0] + other["U"] / 2
+        if "Z" in other:
+            t["Z"] = other["Z"]
+        elif "W" in other:
+            t["Z"] = prog[2] + other["W"]
+        return t
+
+    def block(self, ln: Line, pc: int):
+        words = ln.words
+        gs, other = [], {}
+        self._raw = {w.letter: w for w in words}
+        for w in words:
+            v = self.value(w)
+            if v is VACANT:
+                continue
+            if w.letter == "G":
+                gs.append(v)
+            else:
+                other[w.letter] = v
+        g = set(gs)
+        if F(65) in g:
+            return self.call_macro(other, modal=False)
+        m = other.get("M")
+        if m in (2, 30):
+            return "end"
+        if m == 98:
+            p = int(other["P"])
+            count = int(other.get("L", 1))
+            for _ in range(count):
+                self.call(p, new_level=False)
+            return None
+        if m == 99:
+            self.ret_label = None
+            return "return"
+        for c in sorted(g):
+            if c in (0, 1, 2, 3, 32):
+                self.motion, self.lcycle = int(c), None
+            elif c in (90, 92, 94):
+                self.lcycle = int(c)
+                self.cyc_xz = {}
+            elif c in (54, 55, 56, 57, 58, 59):
+                self.wcs = f"G{int(c)}"
+            elif c in (18, 21, 40, 97, 98, 99, 96):
+                pass
+            elif c in (4, 50, 28):
+                pass
+            else:
+                raise RefUnknown(f"lathe G{c}")
+        if "T" in other:
+            t = int(other["T"])
+            off = t % 100
+            if off == 0:
+                raise RefUnknown("T xx00 (parameter 5002#5 LGC decides)")
+            x, z = self.lathe.tool_offsets[off]
+            self.toff = [x, F(0), z]  # LGT = 0: a shift, no motion in this block
+        if F(4) in g:
+            self.emit("dwell", self.pos)
+            return None
+        if F(50) in g:
+            # [0i-T] G50 X Z: the current position (before offset) reads X Z
+            if any(v != 0 for v in self.toff):
+                raise RefUnknown("G50 with a tool offset active (class 4: fanuc-lathe)")
+            prog = self.program_pos()
+            for a, i in (("X", 0), ("Z", 2)):
+                if a in other:
+                    val = other[a] / 2 if a == "X" else other[a]
+                    self.g50[i] += prog[i] - val
+            return None
+        if F(28) in g:
+            t = self.lathe_axes(other)
+            mid = list(self.pos)
+            for a in t:
+                i = 0 if a == "X" else 2
+                mid[i] = self.to_machine([t.get("X", F(0)), F(0), t.get("Z", F(0))])[i]
+            self.emit("rapid", mid)
+            end = list(mid)
+            for a in t:
+                i = 0 if a == "X" else 2
+                end[i] = self.mc.ref1[i]
+            self.emit("rapid", end)
+            return None
+        t = self.lathe_axes(other)
+        if not t:
+            return None
+        if self.lcycle is not None:
+            self.cyc_xz.update(t)
+            if "X" not in self.cyc_xz or "Z" not in self.cyc_xz:
+                raise RefUnknown("a lathe cycle without X or Z")
+            self.box_cycle()
+            return None
+        prog = self.program_pos()
+        target = [t.get("X", prog[0]), F(0), t.get("Z", prog[2])]
+        end = self.to_machine(target)
+        if "X" not in t:
+            end[0] = self.pos[0]
+        if "Z" not in t:
+            end[2] = self.pos[2]
+        kind = {0: "rapid", 1: "line", 2: "arc", 3: "arc", 32: "line"}[self.motion]
+        self.emit(kind, end)
+        return None
+
+    def box_cycle(self) -> None:
+        start = list(self.pos)
+        tgt = self.to_machine([self.cyc_xz["X"], F(0), self.cyc_xz["Z"]])
+        x, z = tgt[0], tgt[2]
+        c = self.lcycle
+        if c == 90:
+            steps = [("rapid", x, start[2]), ("line", x, z), ("line", start[0], z), ("rapid", start[0], start[2])]
+        elif c == 94:
+            steps = [("rapid", start[0], z), ("line", x, z), ("line", x, start[2]), ("rapid", start[0], start[2])]
+        else:
+            steps = [("rapid", x, start[2]), ("line", x, z), ("rapid", start[0], z), ("rapid", start[0], start[2])]
+        for kind, a, b in steps:
+            self.emit(kind, [a, F(0), b])
+
+
+def reference_lathe_motion(text: str, lathe: RefLathe, *, block_delete: bool = False) -> list:
+    """The motion of a lathe program: ``[(kind, (x radius, z)), ...]`` in machine coordinates."""
+    return LatheReader(lathe, block_delete=block_delete).run(text)
