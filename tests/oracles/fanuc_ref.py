@@ -847,6 +847,10 @@ class Reader:
             elif c in (43, 44, 49):
                 self.tl_mode = int(c)
                 self._pending_tl = "mode"
+        if "H" in other and self._pending_tl is None and self.tl_mode in (43, 44):
+            # [0i-MB] 14.1.2 "independent specification of the H command": an H word alone in G43/G44
+            # mode changes the offset (B-64304EN's example cancels with N12 G00 Z57.0 H00)
+            self._pending_tl = "H"
         if "H" in other and (self._pending_tl is not None):
             self.tl_h = int(other["H"])
         if self._pending_tl is not None:
