@@ -57,6 +57,11 @@ PRODUCTIONS: dict[str, set[str]] = {
     "polar": {"G15", "G16"},
     "m97": {"M97", "M99"},
     "m99p": {"M98", "M99"},
+    "state_read": {"#5001", "#5021", "#4003", "#4001"},
+    "g91_work": {"G54", "G55", "G91"},
+    "cycle_tl": {"G43", "G81", "G83"},
+    "vacant": {"#"},
+    "computed_g": {"G"},
 }
 
 CYCLES = ("73", "74", "76", "81", "82", "83", "84", "84.2", "84.3", "85", "86", "89")
@@ -189,8 +194,8 @@ def p_g10(draw, st_: GenState):
         st_.lines.append(f"{d} G10 L20 P{draw(st.integers(1, 3))} {_axes(draw, st_, 'XYZ', lo=-300, hi=300)}")
     else:
         st_.lines.append(f"{d} G10 {kind} P{draw(st.integers(1, 2))} R{_value(draw, st_, 0, 150)}")
-        # a changed length takes effect at the next G43/G44: re-state it so both readers agree
-        if st_.tl:
+        # a changed length takes effect at the next G43/G44 (specs/fanuc.md; the reader does the same)
+        if st_.tl and draw(st.booleans()):
             st_.lines.append("G49")
             st_.tl = False
 
@@ -218,7 +223,7 @@ def p_g92(draw, st_: GenState):
 
 def p_g53(draw, st_: GenState):
     st_.absolute = True
-    st_.lines.append("G90 G53 G00 " + _axes(draw, st_, "XY" if st_.tl else "XYZ", lo=-200, hi=200))
+    st_.lines.append("G90 G53 G00 " + _axes(draw, st_, "XYZ", lo=-200, hi=200))
 
 
 def p_reference(draw, st_: GenState):
@@ -484,12 +489,67 @@ def p_m99p(draw, st_: GenState):
     st_.absolute = False
 
 
+def p_state_read(draw, st_: GenState):
+    n = 100 + draw(st.integers(0, 9))
+    var = draw(st.sampled_from(["#5001", "#5002", "#5003", "#5021", "#5022", "#5023"]))
+    st_.lines.append(f"#{n} = {var} + {_lit(draw, -5, 5, inch=st_.inch, decimals=2)}")
+    axis = "XYZ"[int(var[-1]) - 1]
+    if var.startswith("#502"):
+        # a machine position: back to the workpiece system through the offsets is not this test's point;
+        # use it only as a number in an incremental move
+        st_.absolute = False
+        st_.lines.append(f"G91 G01 {axis}[[#{n} - {var}] * 2] F100.")
+    else:
+        st_.absolute = True
+        st_.lines.append(f"G90 G01 {axis}#{n} F100.")
+    if draw(st.booleans()):
+        st_.lines.append(f"IF [#4003 EQ 91] THEN #{n} = 1.5")
+        st_.lines.append(f"IF [#4001 EQ 1] THEN #{n} = #{n} + 1.")
+        st_.lines.append(f"G91 G00 X#{n}")
+        st_.absolute = False
+
+
+def p_g91_work(draw, st_: GenState):
+    st_.absolute = False
+    c = draw(st.sampled_from(["G54", "G55", "G54.1 P3", "G56"]))
+    st_.lines.append(f"G91 {c} G00 {_axes(draw, st_, 'XY' if st_.tl else 'XYZ', lo=-10, hi=10)}")
+
+
+def p_cycle_tl(draw, st_: GenState):
+    st_.absolute = True
+    h = draw(st.sampled_from(["G43 H1", "G43 H2", "G44 H1", "G49"]))
+    st_.lines.append(f"G90 G00 {h} Z{_value(draw, st_, 20, 60)}")
+    st_.tl = h != "G49"
+    c = draw(st.sampled_from(["G81", "G83 Q2.", "G82 P100", "G73 Q1.5"]))
+    ret = draw(st.sampled_from(["G98", "G99"]))
+    st_.lines.append(f"{ret} {c} X{_value(draw, st_, -10, 10)} Y{_value(draw, st_, -10, 10)} "
+                     f"R{_value(draw, st_, 1, 5)} Z{_value(draw, st_, -15, -1)} F100.")
+    if draw(st.booleans()):
+        st_.lines.append(f"X{_value(draw, st_, -10, 10)}")
+    st_.lines.append("G80")
+
+
+def p_vacant(draw, st_: GenState):
+    d = _dist(draw, st_)
+    n = 130 + draw(st.integers(0, 5))  # #130-#135 are never assigned: vacant, the word is dropped
+    st_.lines.append(f"{d} G01 X#{n} Y{_value(draw, st_, -20, 20)} Z-#{n} F100.")
+
+
+def p_computed_g(draw, st_: GenState):
+    code = draw(st.sampled_from(["90", "91"]))
+    st_.absolute = code == "90"
+    st_.lines.append(f"#140 = {code}")
+    st_.lines.append(f"#141 = {draw(st.sampled_from(['0', '1']))}")
+    st_.lines.append(f"G#140 G[#141] {_axes(draw, st_, 'XY')} F100.")
+
+
 GENERATORS = {"move": p_move, "arc": p_arc, "tool_length": p_tool_length, "work": p_work, "g10": p_g10,
               "g52": p_g52, "g92": p_g92, "g53": p_g53, "reference": p_reference, "dwell": p_dwell,
               "cycle": p_cycle, "macro": p_macro, "m98": p_m98, "g65": p_g65, "g66": p_g66,
               "skip": p_skip, "mcodes": p_mcodes, "planes": p_planes, "g27_g29": p_g27_g29, "g33": p_g33,
               "g93": p_g93, "scaling": p_scaling, "mirror": p_mirror, "rotation": p_rotation, "polar": p_polar,
-              "m97": p_m97, "m99p": p_m99p}
+              "m97": p_m97, "m99p": p_m99p, "state_read": p_state_read, "g91_work": p_g91_work,
+              "cycle_tl": p_cycle_tl, "vacant": p_vacant, "computed_g": p_computed_g}
 SAFE = ("move", "arc", "dwell", "mcodes")
 
 
