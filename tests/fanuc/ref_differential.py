@@ -71,7 +71,7 @@ def normalise(motions, start=ORIGIN) -> list:
 
 @dataclass
 class Outcome:
-    status: str  # "same", "differ", "skip"
+    status: str  # "same", "differ", "skip" (one side does not model it), "reject" (both refuse the program)
     reason: str = ""
     ours: list | None = None
     ref: list | None = None
@@ -95,7 +95,7 @@ def compare(text: str, dpi: str = "calculator", block_delete: bool = False) -> O
         run, segs = nczones_motion(text, dpi, block_delete)
     except GcodeError as exc:
         if ref_err is not None:
-            return Outcome("same", "both reject")
+            return Outcome("reject", "both reject")
         return Outcome("differ", f"nczones rejects: {exc}", None, ref)
     if run.status != "complete":
         return Outcome("skip", f"nczones {run.status}: {[u.code for u in run.unsupported]}")

@@ -62,6 +62,7 @@ PRODUCTIONS: dict[str, set[str]] = {
     "cycle_tl": {"G43", "G81", "G83"},
     "vacant": {"#"},
     "computed_g": {"G"},
+    "plain_run": {"G01"},
 }
 
 CYCLES = ("73", "74", "76", "81", "82", "83", "84", "84.2", "84.3", "85", "86", "89")
@@ -543,13 +544,32 @@ def p_computed_g(draw, st_: GenState):
     st_.lines.append(f"G#140 G[#141] {_axes(draw, st_, 'XY')} F100.")
 
 
+def p_plain_run(draw, st_: GenState, *, force: bool = False):
+    """A run of more than 512 plain G01 lines (decimal literals only): the vectorized fast path's tier
+    (tests/fanuc/test_fastpath.py holds it to the full path; here both to the reference)."""
+    if not force and draw(st.integers(0, 9)) != 0:
+        return
+    import random
+
+    rnd = random.Random(draw(st.integers(0, 2**32 - 1)))
+    n = rnd.randint(513, 560)
+    g91 = draw(st.booleans())
+    st_.absolute = not g91
+    st_.lines.append("G91 G01 F300." if g91 else "G90 G01 F300.")
+    span = 3 if g91 else 40
+    for _ in range(n):
+        axes = rnd.sample("XYZ", rnd.randint(1, 3))
+        st_.lines.append(" ".join(f"{a}{rnd.randint(-span, span)}.{rnd.randint(0, 999):03d}" for a in "XYZ"
+                                  if a in axes))
+
+
 GENERATORS = {"move": p_move, "arc": p_arc, "tool_length": p_tool_length, "work": p_work, "g10": p_g10,
               "g52": p_g52, "g92": p_g92, "g53": p_g53, "reference": p_reference, "dwell": p_dwell,
               "cycle": p_cycle, "macro": p_macro, "m98": p_m98, "g65": p_g65, "g66": p_g66,
               "skip": p_skip, "mcodes": p_mcodes, "planes": p_planes, "g27_g29": p_g27_g29, "g33": p_g33,
               "g93": p_g93, "scaling": p_scaling, "mirror": p_mirror, "rotation": p_rotation, "polar": p_polar,
               "m97": p_m97, "m99p": p_m99p, "state_read": p_state_read, "g91_work": p_g91_work,
-              "cycle_tl": p_cycle_tl, "vacant": p_vacant, "computed_g": p_computed_g}
+              "cycle_tl": p_cycle_tl, "vacant": p_vacant, "computed_g": p_computed_g, "plain_run": p_plain_run}
 SAFE = ("move", "arc", "dwell", "mcodes")
 
 
