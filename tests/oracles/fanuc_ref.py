@@ -1027,7 +1027,10 @@ class Reader:
 
     def g10(self, other: dict) -> None:
         """[0i] "Programmable data input": G10 L2 P0..P6 (EXT, G54..G59), L20 P1..P48 (G54.1), axis values
-        absolute in G90, added in G91; L10/L11 P R: tool length geometry / wear (memory C)."""
+        absolute in G90, added in G91; L10/L11 P R: tool length geometry / wear (memory C).
+
+        A changed length of the active H takes effect at the next G43/G44 (or H): this follows
+        specs/fanuc.md — no manual sentence was found for it, so here the reader is not independent."""
         L, P = int(other["L"]), int(other.get("P", 0))
         u = self.unit()
         if L in (2, 20):
