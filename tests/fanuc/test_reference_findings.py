@@ -1,9 +1,8 @@
-"""New mismatches the Fanuc reference differential found (issue 33), kept as strict xfail regression tests.
+"""Mismatches the Fanuc reference differential found (issue 33), as regression tests.
 
 Each program is minimal; the expected motion is derived by hand below it from the manual, and the reference
-reader (tests/oracles/fanuc_ref.py) gives the same.  nczones/gcode/fanuc/ is not changed on this branch
-(others are editing it): the tests are ``xfail(strict=True)`` and turn into failures the day the class is
-fixed, when the marker must go.
+reader (tests/oracles/fanuc_ref.py) gives the same.  N1, N3 and N4 are fixed in nczones/gcode/fanuc/ (each
+test failed before its fix); a class still open stays ``xfail(strict=True)`` until it is fixed.
 
 The test mill (tests/fanuc/helpers.py): G54 = (100, 50, -200), EXT = (0, 0, 1), H1 = 100, H2 = 150.5,
 start at machine (0, 0, 0).  machine = program + EXT + G54 (+ G92) (+ tool length on Z).
@@ -41,9 +40,6 @@ def test_n1_reference_reads_g92_1_as_a_preset():
     assert _both(N1) == N1_EXPECTED
 
 
-@pytest.mark.xfail(strict=True, reason="N1: nczones takes the axis words of G92.1 X0 Y0 Z0 as a rapid to the "
-                   "program point (X0 Y0 Z0 of G54, machine (100, 50, -199)) and the next G91 move starts "
-                   "from there: the machine really stays at X 105 and ends at 106, not 101")
 def test_n1_g92_1_with_axis_words_does_not_move():
     _, segs = nczones_motion(N1, "calculator", False)
     assert normalise(segs) == N1_EXPECTED
@@ -68,9 +64,6 @@ def test_n3_reference_reads_k_of_g84_2_as_a_count():
     assert _both(N3, "increment") == N3_EXPECTED
 
 
-@pytest.mark.xfail(strict=True, reason="N3: the language layer does not count G84.2/G84.3 as canned cycles "
-                   "(_CYCLE_G / _SPECIAL_G), so their K is read as a length: K2 becomes 0.002 with DPI = 0 and "
-                   "the program is refused (GC209); a computed K[1.5] is rounded to 1.5 and refused too")
 def test_n3_g84_2_repeat_count_is_a_count():
     _, segs = nczones_motion(N3, "increment", False)
     assert normalise(segs) == N3_EXPECTED
@@ -91,9 +84,6 @@ def test_n4_reference_reads_p_in_scaling_units():
     assert _both(N4) == N4_EXPECTED
 
 
-@pytest.mark.xfail(strict=True, reason="N4: a G51 line whose length words all have a decimal point is taken "
-                   "by the plain lane, which reads P3 as the factor 3 (machine X 130): the same line with X0 "
-                   "(no decimal point) goes to the language layer and scales by 0.003 as the spec says")
 def test_n4_g51_p_without_point_is_in_scaling_units_on_every_lane():
     _, segs = nczones_motion(N4, "calculator", False)
     assert normalise(segs) == N4_EXPECTED
@@ -140,8 +130,6 @@ def test_n1_n4_walls_are_hit_by_the_reference_motion():
     assert normalise(reference_motion(N4B, ref_machine()))[-1][1][0] == Q("109.97")
 
 
-@pytest.mark.xfail(strict=True, reason="N1 end to end: the real path 105 -> 106 enters the wall at X 105.5; "
-                   "nczones proves 105 -> 100 -> 101 and says safe")
 def test_n1_verify_is_not_safe():
     assert _verdict(N1, "105.5", "110") == "unsafe"
 
@@ -151,7 +139,62 @@ N4B = "G21\nG90 G54 G0 X0 Y0 Z0\nG90 G51 X10. Y0. P3\nG90 G00 X0. Y0.\nG50\nM30\
 # nczones's factor 3: 10 + 3 * (0 - 10) = -20 -> machine 80, away from the wall.
 
 
-@pytest.mark.xfail(strict=True, reason="N4 end to end: P3 read as 3 on the plain lane sends the proved path "
-                   "to X 80 while the machine goes to 109.97 through the wall at 105..108: a wrong safe")
 def test_n4_verify_is_not_safe():
     assert _verdict(N4B, "105", "108") == "unsafe"
+
+
+# ------------------------------------------------- the same, past 512 motions (vectorized tier, fast path)
+
+_PAD = "".join("G1 Y0.001 F100.\nG1 Y0.\n" for _ in range(300))
+
+
+def _long(text: str, after: str) -> str:
+    """``text`` with 600 short G1 moves (X unchanged, Y 0 <-> 0.001) after its line ``after`` and again
+    before M30, so the construct sits in the middle of a program the vectorized tier screens."""
+    head, tail = text.split(after, 1)
+    return head + after + _PAD + tail.replace("M30\n", _PAD + "M30\n")
+
+
+def _long_verdict(text: str, lo: str, hi: str):
+    from nczones.prover import verify_text
+
+    from .helpers import mill
+
+    return verify_text(text, mill(tables=_WALL.format(lo=lo, hi=hi)), file="n.nc")
+
+
+def test_n1_past_512_motions_is_not_safe():
+    # N1 with the padding at X 105 (outside the wall 105.5..110): the G91 X1. still ends at 106 and
+    # crosses the wall; without the fix the proved path goes 105 -> 100 -> 101
+    text = _long(N1, "G90 G54 G0 X5. Y5. Z5.\n").replace("G1 Y0.001", "G1 Y5.001").replace("G1 Y0.\n", "G1 Y5.\n")
+    r = _long_verdict(text, "105.5", "110")
+    assert r.verdict.label == "unsafe"
+    assert r.profile["motions_screened_vectorized"] > 512
+
+
+def test_n4_past_512_motions_is_not_safe():
+    text = _long(N4B, "G90 G54 G0 X0 Y0 Z0\n")
+    r = _long_verdict(text, "105", "108")
+    assert r.verdict.label == "unsafe"
+    assert r.profile["motions_screened_vectorized"] > 512
+
+
+def test_n3_verify_short_and_long():
+    # N3 on the DPI = 0 mill: the cycle's deepest point is machine Z -204 at X 110.  A floor box at
+    # X 109..111 whose top is at Z -203.5 is entered by both repeats (-197 -> -204): unsafe, short and long
+    # (before the fix the program was refused: GC209).
+    from nczones.prover import verify_text
+
+    from .helpers import mill
+
+    floor = ('[[zones]]\nname = "floor"\nkind = "box"\nforbid = true\n'
+             'min = { X = "109", Y = "0", Z = "-300" }\nmax = { X = "111", Y = "200", Z = "-203.5" }\n')
+    m = mill('decimal_point_input = "increment"', tables=floor)
+    assert verify_text(N3, m, file="n.nc").verdict.label == "unsafe"
+    long = _long(N3, "G90 G54 G0 X0 Y0 Z10.\n")
+    r = verify_text(long, m, file="n.nc")
+    assert r.verdict.label == "unsafe"
+    assert r.profile["motions_screened_vectorized"] > 512
+    # and with the floor top at -204.5 (below the cycle's bottom) the same program is safe, not refused
+    m2 = mill('decimal_point_input = "increment"', tables=floor.replace("-203.5", "-204.5"))
+    assert verify_text(long, m2, file="n.nc").verdict.label == "safe"

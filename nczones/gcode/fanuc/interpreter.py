@@ -403,7 +403,7 @@ class FanucInterpreter(Interpreter):
                           "manuals; change the tool length in another block", g0[1])
         if g0 is not None:
             k = g0[0]
-            uses_axes = uses_axes or k in (40, 100, 270, 280, 290, 300, 520, 530, 920)
+            uses_axes = uses_axes or k in (40, 100, 270, 280, 290, 300, 520, 530, 920, 921)
             if k == 40:
                 self._dwell(words, g0[1])
             elif k == 100:
