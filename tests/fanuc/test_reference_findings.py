@@ -12,8 +12,6 @@ from __future__ import annotations
 
 from fractions import Fraction as Q
 
-import pytest
-
 from tests.oracles.fanuc_ref import reference_motion
 
 from .ref_differential import nczones_motion, normalise, ref_machine
@@ -102,10 +100,6 @@ def test_n2_reference_rounds_to_the_input_increment():
     assert _both(N2) == N2_EXPECTED
 
 
-@pytest.mark.xfail(strict=True, reason="N2 (minor, <= 0.0005 mm): under G68/G51/G51.1/G16 in G20 nczones "
-                   "rounds the transformed point to 0.001 mm (99.997) instead of the inch input increment; "
-                   "untransformed inch moves are exact.  The 30i manual's note (the error between input and "
-                   "command increments is at most half the least command increment) covers both readings")
 def test_n2_inch_transformed_point_on_the_inch_grid():
     _, segs = nczones_motion(N2, "calculator", False)
     assert normalise(segs) == N2_EXPECTED
@@ -198,3 +192,28 @@ def test_n3_verify_short_and_long():
     # and with the floor top at -204.5 (below the cycle's bottom) the same program is safe, not refused
     m2 = mill('decimal_point_input = "increment"', tables=floor.replace("-203.5", "-204.5"))
     assert verify_text(long, m2, file="n.nc").verdict.label == "safe"
+
+
+_THIN = ('[[zones]]\nname = "wall"\nkind = "box"\nforbid = true\n'
+         'min = {{ X = "{lo}", Y = "49.9999" }}\nmax = {{ X = "{hi}", Y = "50.0001" }}\n')
+
+
+def test_n2_verify_short_and_long():
+    # N2 ends at machine X 99.99746, Y 50 (derived above).  A thin wall at X 99.9972..99.9974 (Y 50 +- 0.0001,
+    # clear of the first rapid from (0, 0, 0), which crosses X 99.9973 at Y 49.99865) lies just past that end:
+    # the real path 100 -> 99.99746 stays clear of it (safe); the 0.001 mm grid sent the proved path to
+    # 99.997, through the wall (unsafe): the rounding decides the verdict, short and past 512 motions
+    # (the padding moves Y by 0.001 in = 0.0254 mm at X 100, clear of the wall too).
+    from nczones.prover import verify_text
+
+    from .helpers import mill
+
+    def run(text, lo, hi):
+        return verify_text(text, mill(tables=_THIN.format(lo=lo, hi=hi)), file="n.nc")
+
+    assert run(N2, "99.9972", "99.9974").verdict.label == "safe"
+    r = run(_long(N2, "G90 G54 G0 X0 Y0 Z0\n"), "99.9972", "99.9974")
+    assert r.verdict.label == "safe"
+    assert r.profile["motions_screened_vectorized"] > 512
+    # and a wall the real end enters (99.9974..99.9975) is hit
+    assert run(N2, "99.9974", "99.9975").verdict.label == "unsafe"
