@@ -77,13 +77,14 @@ class Outcome:
     ref: list | None = None
 
 
-def nczones_motion(text: str, dpi: str, block_delete: bool):
+def nczones_motion(text: str, dpi: str, block_delete):
+    """``block_delete``: True (switch 1 on), False, or the collection of the switches that are on."""
     run = interpret_text(text, nczones_machine(dpi), file="gen.nc", block_delete=block_delete)
     segs = [(_KIND.get(s.kind, str(s.kind)), tuple(s.end)) for s in run.segments()]
     return run, segs
 
 
-def compare(text: str, dpi: str = "calculator", block_delete: bool = False) -> Outcome:
+def compare(text: str, dpi: str = "calculator", block_delete=False) -> Outcome:
     try:
         ref = normalise(reference_motion(text, ref_machine(dpi), block_delete=block_delete))
         ref_err = None

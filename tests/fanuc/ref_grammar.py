@@ -5,17 +5,12 @@ Each production says which codes of specs/fanuc.md it writes (``PRODUCTIONS``: p
 ``tests/fanuc/test_reference_differential.py::test_grammar_covers_every_modelled_code`` parses
 specs/fanuc.md and fails when a code it marks modelled has no production.
 
-The generator keeps to programs whose meaning the manual fixes.  Exclusions, each naming the class of
-issue 33 being fixed on another branch (the lead removes them at merge):
-
-* class 1 (fanuc-offsets): no G43/G44/G49 with a Z word in G91 — ``_tool_length`` writes those in G90
-  only;
-* class 2 (fanuc-offsets): no bare H word in G43/G44 mode — every H is written with G43/G44;
-* class 3 (fanuc-offsets): no G92 in G91 — ``_g92`` writes G90;
-* class 5 (fanuc-skip): only ``/`` (``/1``), never ``/2``..``/9``;
-* class 6 (fanuc-bounds): no M00/M01;
-* class 7 (fanuc-bounds): repeat counts stay small (L, K at most 3).
-Lathe classes 4, 8-10 (fanuc-lathe) are outside this mill grammar.
+The generator keeps to programs whose meaning the manual fixes.  The classes of issue 33 are fixed and
+written: G43/G44/G49 with a Z word in G91 (class 1), a bare H in G43/G44 mode (2), G92 in G91 (3), lathe
+G50 while a tool offset is active (4, ``lathe_programs``), ``/1``..``/9`` (5: the differential draws which
+switches are on), M00/M01 (6), G92.1 with axis words, G84.2/G84.3 with K, G51 P without a decimal point,
+transforms in G20 (the reference findings N1-N4).  Repeat counts stay small (L, K at most 3: class 7's
+bounds are tested in tests/fanuc/test_stops_and_bounds.py; the reference reader is slow).
 """
 
 from __future__ import annotations
@@ -45,7 +40,7 @@ PRODUCTIONS: dict[str, set[str]] = {
     "g65": {"G65"},
     "g66": {"G66", "G67"},
     "skip": {"/"},
-    "mcodes": {"M03", "M05", "M06", "M08", "M09", "M30"},
+    "mcodes": {"M00", "M01", "M03", "M05", "M06", "M08", "M09", "M30"},
     "end": {"M02", "M30"},
     "planes": {"G18", "G19", "G17"},
     "g27_g29": {"G27", "G29"},
@@ -73,6 +68,7 @@ class GenState:
     absolute: bool = True
     inch: bool = False
     tl: bool = False  # a tool length offset is active
+    tl_mode: int = 49  # the group 08 code in force (G43, G44, G49)
     g92: bool = False
     g52: bool = False
     lines: list = field(default_factory=list)
@@ -165,16 +161,20 @@ def p_arc(draw, st_: GenState):
 
 def p_tool_length(draw, st_: GenState):
     h = draw(st.integers(0, 2))
-    code = draw(st.sampled_from(["G43", "G44", "G49"]))
+    # a bare H in G43/G44 mode changes the offset (class 2)
+    code = draw(st.sampled_from(["G43", "G44", "G49"] + (["", ""] if st_.tl_mode in (43, 44) else [])))
     hw = "" if code == "G49" else f" H{h}"
     z = ""
     if draw(st.booleans()):
-        # class 1 (fanuc-offsets): G43/G44/G49 with a tool-axis word in G91 is excluded: write G90
-        st_.absolute = True
-        z = f" G90 Z{_value(draw, st_, -20, 60)}"
+        # G90 or G91 (class 1: in G91 the axis moves by the increment plus the change of offset)
+        g9 = draw(st.sampled_from(["G90", "G91"]))
+        st_.absolute = g9 == "G90"
+        z = f" {g9} Z{_value(draw, st_, -20, 60) if st_.absolute else _value(draw, st_, -20, 20)}"
     g = draw(st.sampled_from(["G00", "G01 F500."]))
-    st_.lines.append(f"{g} {code}{hw}{z}")
-    st_.tl = code != "G49" and h != 0
+    st_.lines.append(f"{g} {code}{hw}{z}".replace("  ", " "))
+    if code:
+        st_.tl_mode = int(code[1:])
+    st_.tl = st_.tl_mode != 49 and h != 0
 
 
 def p_work(draw, st_: GenState):
@@ -199,6 +199,7 @@ def p_g10(draw, st_: GenState):
         if st_.tl and draw(st.booleans()):
             st_.lines.append("G49")
             st_.tl = False
+            st_.tl_mode = 49
 
 
 def p_g52(draw, st_: GenState):
@@ -213,13 +214,13 @@ def p_g92(draw, st_: GenState):
     if st_.g52:
         return
     if draw(st.integers(0, 3)) == 0 and st_.g92:
-        # NEW finding N1 (test_reference_findings.py): nczones moves to the axis words of
-        # "G92.1 X0 Y0 Z0" (the preset's format), a Fanuc control does not move; bare G92.1 here
-        st_.lines.append("G92.1")
+        # G92.1 (the preset's format "G92.1 IP 0": the axis words do not move, finding N1)
+        st_.lines.append(draw(st.sampled_from(["G92.1", "G92.1 X0 Y0 Z0", "G92.1 X0"])))
         return
-    st_.absolute = True  # class 3 (fanuc-offsets): G92 in G91 excluded
+    d = draw(st.sampled_from(["G90", "G91"]))  # G92 in G91 (class 3): the increment adds to the reading
+    st_.absolute = d == "G90"
     st_.g92 = True
-    st_.lines.append("G90 G92 " + _axes(draw, st_, "XYZ", lo=-20, hi=20))
+    st_.lines.append(f"{d} G92 " + _axes(draw, st_, "XYZ", lo=-20, hi=20))
 
 
 def p_g53(draw, st_: GenState):
@@ -249,10 +250,8 @@ def p_cycle(draw, st_: GenState):
         z = _value(draw, st_, -20, -1)
     q = f" Q{_lit(draw, 1, 6, inch=st_.inch, decimals=1)}" if c in ("73", "76", "83") else ""
     p = " P200" if c in ("76", "82", "89", "74", "84") and draw(st.booleans()) else ""
-    # class 7 (fanuc-bounds): small K only
+    # small K only (the reference reader is slow); G84.2/G84.3 too (finding N3)
     k = draw(st.sampled_from(["", "", " K2", " K3", " K1", " K#121", " K[#121 + 1]"]))
-    if c in ("84.2", "84.3"):
-        k = ""  # finding N3 (test_reference_findings.py): K of G84.2/G84.3 is read as a length
     if "#121" in k:
         st_.lines.append(f"#121 = {draw(st.sampled_from(['0.5', '1.5', '2.5', '1.4', '0.49', '2.0']))}")
     st_.lines.append(f"{d} {ret} G{c} {_axes(draw, st_, 'XY', need=0)} R{r} Z{z}{q}{p}{k} F100.".replace("  ", " "))
@@ -366,15 +365,19 @@ def p_skip(draw, st_: GenState):
     st_.lines = []
     p_move(draw, st_, allow_z=not st_.tl or True)
     lines, st_.lines = st_.lines, saved
-    # class 5 (fanuc-skip): only '/' (switch 1)
-    st_.lines.extend("/" + ln if i == len(lines) - 1 else ln for i, ln in enumerate(lines))
+    # '/' (switch 1) or '/1'..'/9' (class 5); the differential draws which switches are on
+    sw = draw(st.sampled_from(["", "", "1", "2", "3", "9"]))
+    st_.lines.extend(f"/{sw}" + ln if i == len(lines) - 1 else ln for i, ln in enumerate(lines))
     # the distance mode after a skipped block is either: make it explicit again
     st_.lines.append(draw(st.sampled_from(["G90", "G91"])))
     st_.absolute = st_.lines[-1] == "G90"
 
 
 def p_mcodes(draw, st_: GenState):
-    st_.lines.append(draw(st.sampled_from(["M03 S1000", "M05", "M08", "M09", "T2 M06"])))
+    st_.lines.append(draw(st.sampled_from(["M03 S1000", "M05", "M08", "M09", "T2 M06", "M00", "M01",
+                                           f"G91 G00 X{_lit(draw, -5, 5, inch=st_.inch)} M01"])))
+    if st_.lines[-1].startswith("G91"):
+        st_.absolute = False
 
 
 def p_planes(draw, st_: GenState):
@@ -419,12 +422,9 @@ def _transform_moves(draw, st_: GenState) -> None:
 
 
 def p_scaling(draw, st_: GenState):
-    if st_.inch:
-        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
     st_.absolute = True
-    # finding N4 (test_reference_findings.py): a G51 line whose length words all have a decimal point
-    # reads P without a decimal point as the factor itself, not in scaling_unit: P written with a point
-    p = draw(st.sampled_from(["P2.", "P0.5", "P1.5", "P1.25", "P3."]))
+    # P without a decimal point is in scaling_unit (0.001) on every lane (finding N4)
+    p = draw(st.sampled_from(["P2.", "P0.5", "P1.5", "P1.25", "P3.", "P2000", "P500", "P3"]))
     st_.lines.append(f"G90 G51 X{_value(draw, st_, -10, 10)} Y{_value(draw, st_, -10, 10)} {p}")
     _transform_moves(draw, st_)
     st_.lines.append("G50")
@@ -432,8 +432,6 @@ def p_scaling(draw, st_: GenState):
 
 
 def p_mirror(draw, st_: GenState):
-    if st_.inch:
-        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
     st_.absolute = True
     st_.lines.append(f"G90 G51.1 {_axes(draw, st_, 'XY', lo=-10, hi=10)}")
     _transform_moves(draw, st_)
@@ -442,8 +440,6 @@ def p_mirror(draw, st_: GenState):
 
 
 def p_rotation(draw, st_: GenState):
-    if st_.inch:
-        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
     st_.absolute = True
     r = draw(st.sampled_from(["90.", "180.", "270.", "-90.", "0."]))
     st_.lines.append(f"G90 G68 X{_value(draw, st_, -10, 10)} Y{_value(draw, st_, -10, 10)} R{r}")
@@ -453,8 +449,6 @@ def p_rotation(draw, st_: GenState):
 
 
 def p_polar(draw, st_: GenState):
-    if st_.inch:
-        return  # finding N2 (test_reference_findings.py): G20 under a transform rounds in mm
     st_.absolute = True
     st_.lines.append("G90 G16")
     for _ in range(draw(st.integers(1, 3))):
@@ -521,6 +515,7 @@ def p_cycle_tl(draw, st_: GenState):
     h = draw(st.sampled_from(["G43 H1", "G43 H2", "G44 H1", "G49"]))
     st_.lines.append(f"G90 G00 {h} Z{_value(draw, st_, 20, 60)}")
     st_.tl = h != "G49"
+    st_.tl_mode = int(h[1:3])
     c = draw(st.sampled_from(["G81", "G83 Q2.", "G82 P100", "G73 Q1.5"]))
     ret = draw(st.sampled_from(["G98", "G99"]))
     st_.lines.append(f"{ret} {c} X{_value(draw, st_, -10, 10)} Y{_value(draw, st_, -10, 10)} "
@@ -632,7 +627,6 @@ def lathe_programs(draw, max_statements: int = 8):
     """A Fanuc lathe program (G code system A, X diameters)."""
     st_ = GenState()
     st_.lines += ["%", "O0002", "G21", "G18 G40 G97 G99 G54 F0.2"]
-    tool = False
     must_both = False
     for _ in range(draw(st.integers(1, max_statements))):
         kind = draw(st.sampled_from(sorted(LATHE_PRODUCTIONS)))
@@ -646,11 +640,9 @@ def lathe_programs(draw, max_statements: int = 8):
             st_.lines.append(f"{g} U{2 * draw(st.integers(1, r))}. W-{draw(st.integers(1, r))}. R{r}.")
         elif kind == "lathe_tool":
             st_.lines.append(draw(st.sampled_from(["T0101", "T0202", "T0303", "T0102", "T101", "T0203"])))
-            tool = True
             must_both = True  # LGT = 0: the shift is taken by the next move; name both axes
         elif kind == "lathe_g50":
-            if tool:
-                continue  # class 4 (fanuc-lathe): G50 while a tool offset is active is excluded
+            # also while a tool offset is active (class 4: the position before offset reads the values)
             st_.lines.append(f"G50 X{_lit(draw, 100, 400, inch=False)} Z{_lit(draw, 100, 500, inch=False)}")
         elif kind == "lathe_cycle":
             c = draw(st.sampled_from(["G90", "G94", "G92"]))

@@ -43,7 +43,9 @@ def _differential(n: int, seed: int | None = None):
 
     @settings(max_examples=n, deadline=None, database=None, derandomize=seed is None,
               suppress_health_check=list(HealthCheck))
-    @given(fanuc_programs(), st.sampled_from(["calculator", "increment"]), st.booleans())
+    # which optional block skip switches are on (BDT1..BDT9): each example one combination, drawn
+    @given(fanuc_programs(), st.sampled_from(["calculator", "increment"]),
+           st.frozensets(st.sampled_from([1, 2, 3, 9])))
     def check(text, dpi, block_delete):
         o = compare(text, dpi, block_delete)
         counts[o.status] += 1

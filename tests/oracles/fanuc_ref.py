@@ -366,9 +366,11 @@ class Reader:
     length_letters = LENGTH_LETTERS
     round_step = F(1)
 
-    def __init__(self, machine: RefMachine, *, block_delete: bool = False):
+    def __init__(self, machine: RefMachine, *, block_delete=False):
         self.mc = machine
-        self.block_delete = block_delete
+        # the optional block skip switches that are on: True is switch 1 alone ('/' is '/1'), a collection
+        # names them (BDT1..BDT9)
+        self.skip_on = {1} if block_delete is True else set(block_delete or ())
         self.work = {k: list(v) for k, v in machine.work.items()}
         self.work.setdefault("EXT", [F(0)] * 3)
         self.h_geom = {int(k): F(v) for k, v in machine.lengths.items()}
@@ -609,12 +611,13 @@ class Reader:
                 if level_kind == "main":
                     return
                 raise RefError("a subprogram ran into the next program")
-            if ln.skip is not None:
-                if ln.skip != 1:
-                    raise RefUnknown("/2../9 (class 5: fanuc-skip)")
-                if self.block_delete:
-                    pc += 1
-                    continue
+            # [0i] "Optional block skip": "When a slash followed by a number (/n, n = 1 to 9) is specified
+            # at the head of a block, and optional block skip switch n on the machine operator panel is set
+            # to on, the information contained in the block for which /n is specified is ignored"; "/1" may
+            # be written "/".  A switch that is off: the block runs as if no slash were there.
+            if ln.skip is not None and ln.skip in self.skip_on:
+                pc += 1
+                continue
             k = ln.kind
             if k == "empty":
                 pc += 1
@@ -740,8 +743,9 @@ class Reader:
             # [0i] "Subprogram": M99 P n returns to block N n of the calling program
             self.ret_label = int(other["P"]) if "P" in other else None
             return "return"
-        if m in (0, 1):
-            raise RefUnknown("M00/M01 (class 6: fanuc-bounds)")
+        # M00 / M01 ([0i] "Program stop (M00)", "Optional stop (M01)"): automatic operation stops after
+        # the block is executed and "the modal information remains unchanged"; cycle start resumes it.  No
+        # motion of its own: the block runs as any other (and M01 the same whether its switch is on or off).
 
         # ------------------------------------------------------------- modal codes of the block
         self.modal_state_only(g, other)
@@ -1051,13 +1055,16 @@ class Reader:
 
     def g92_set(self, axes: dict) -> None:
         """[0i] "Workpiece coordinate system setting": G92 IP_ shifts the workpiece systems so that the
-        current tool position reads IP_ (the programmed position, before the tool length offset)."""
-        if not self.absolute:
-            raise RefUnknown("G92 in G91 (class 3: fanuc-offsets)")
+        current tool position reads IP_ (the programmed position, before the tool length offset).
+        In G91: "If IP_ is an incremental command value, the workpiece coordinate system is defined so that
+        the current tool position coincides with the result of adding the specified incremental value to
+        the coordinates of the previous tool position" (B-64304EN "Setting a workpiece coordinate system",
+        method using G92): the new reading is the old one plus the increment."""
         for a, v in axes.items():
             i = AXES.index(a)
             cur = self.program_pos()[i] * self.unit()
-            self.g92[i] += cur - v * self.unit()
+            new = v * self.unit() if self.absolute else cur + v * self.unit()
+            self.g92[i] += cur - new
 
     def reference_return(self, c, axes: dict, other: dict) -> None:
         """[0i] "Reference position return": G28 IP_ moves the named axes at rapid to the intermediate
@@ -1324,14 +1331,16 @@ class LatheReader(Reader):
             self.emit("dwell", self.pos)
             return None
         if F(50) in g:
-            # [0i-T] G50 X Z: the current position (before offset) reads X Z
-            if any(v != 0 for v in self.toff):
-                raise RefUnknown("G50 with a tool offset active (class 4: fanuc-lathe)")
-            prog = self.program_pos()
+            # [0i-T] G50 X Z: the current position reads X Z.  "If a coordinate system is set using G50
+            # during offset, a coordinate system in which the position before offset matches the position
+            # specified in G50 is set": the position before offset is the machine position less the work
+            # system and G50 shift only (the tool offset not subtracted), on both axes alike:
+            # pos - (work + g50') = value, so g50' = pos - work - value.
+            w = self.work.get(self.wcs) or [F(0)] * 3
             for a, i in (("X", 0), ("Z", 2)):
                 if a in other:
                     val = other[a] / 2 if a == "X" else other[a]
-                    self.g50[i] += prog[i] - val
+                    self.g50[i] = self.pos[i] - w[i] - val
             return None
         if F(28) in g:
             t = self.lathe_axes(other)
