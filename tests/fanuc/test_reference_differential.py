@@ -2,8 +2,8 @@
 
 * ``test_nczones_moves_as_the_reference`` — generated Fanuc mill programs (tests/fanuc/ref_grammar.py) run
   through ``nczones.gcode.interpret`` (what ``verify`` proves) and tests/oracles/fanuc_ref.py give the same
-  motion (kind and exact machine end point of every motion), in both decimal point input settings and both
-  positions of the block-delete switch.  CI size: ``FANUC_REF_EXAMPLES`` (default 300); the long profile
+  motion (kind and exact machine end point of every motion), in both decimal point input settings and, per
+  example, a drawn combination of the optional block skip switches /1, /2, /3, /9 that are on.  CI size: ``FANUC_REF_EXAMPLES`` (default 300); the long profile
   (``-m long``): ``FANUC_REF_LONG`` (default 20,000).
 * ``test_grammar_covers_every_modelled_code`` — every code specs/fanuc.md marks modelled has a production in
   the grammar, or a line in ``NOT_GENERATED`` saying why not.

@@ -59,3 +59,44 @@ def test_incremental_cycle_repeats():
     assert out[1:] == [("rapid", (10, 0, 5)), ("rapid", (10, 0, 2)), ("line", (10, 0, -2)), ("rapid", (10, 0, 2)),
                        ("rapid", (20, 0, 2)), ("line", (20, 0, -2)), ("rapid", (20, 0, 2)),
                        ("rapid", (30, 0, 2)), ("line", (30, 0, -2)), ("rapid", (30, 0, 2))]
+
+
+def test_g92_in_g91_adds_the_increment_to_the_reading():
+    # B-64304EN "Setting a workpiece coordinate system", method using G92: "If IP_ is an incremental command
+    # value, the workpiece coordinate system is defined so that the current tool position coincides with the
+    # result of adding the specified incremental value to the coordinates of the previous tool position".
+    # From machine X 10 (reading 10): G91 G92 X3. -> the position reads 13; G90 X15. -> machine 12.
+    m = RefMachine(work=dict(ZERO), lengths={})
+    out = reference_motion("G21\nG90 G00 X10.\nG91 G92 X3.\nG90 X15.\nM30\n", m)
+    assert [e for _, e in out] == [(10, 0, 0), (12, 0, 0)]
+
+
+def test_optional_block_skip_switches_are_nine():
+    # B-64304EN "Optional block skip": a block with /n is skipped while switch n is on; '/' is '/1'.
+    m = RefMachine(work=dict(ZERO), lengths={})
+    text = "G21\nG90 G00 X1.\n/2 X2.\n/ X3.\n/9 X4.\nM30\n"
+    ends = {sw: [e[0] for _, e in reference_motion(text, m, block_delete=sw)] for sw in ((), frozenset({2}), frozenset({1, 9}), True)}
+    assert ends == {(): [1, 2, 3, 4], frozenset({2}): [1, 3, 4], frozenset({1, 9}): [1, 2], True: [1, 2, 4]}
+
+
+def test_m00_m01_stop_without_motion():
+    # B-64304EN "Program stop (M00)" / "Optional stop (M01)": the block is executed, then automatic
+    # operation stops (modal information unchanged) until cycle start: the motion is that of the program
+    # without M00/M01.
+    m = RefMachine(work=dict(ZERO), lengths={})
+    with_stops = reference_motion("G21\nG91 G00 X1. M00\nM01\nX2.\nM30\n", m)
+    assert [e for _, e in with_stops] == [(1, 0, 0), (3, 0, 0)]
+
+
+def test_lathe_g50_during_offset_sets_the_position_before_offset():
+    # 0i-TD B-64304EN "Coordinate system setting": "If a coordinate system is set using G50 during offset, a
+    # coordinate system in which the position before offset matches the position specified in G50 is set."
+    # Machine (X radius 240, Z 650), G54 = 0, offset 1 = (X 10, Z 5) radius, LGT = 0 (a shift, no motion).
+    # T0101 then G50 X200. Z300.: the position before offset (machine - work - shift) reads X 100 (radius)
+    # and Z 300, on both axes alike: shift = (240 - 100, 650 - 300) = (140, 350).  G00 X100. Z300. then goes
+    # to the programmed point + shift + offset = (100 + 140 + 10, 300 + 350 + 5) = (250, 655).
+    from tests.oracles.fanuc_ref import RefLathe, reference_lathe_motion
+
+    lathe = RefLathe(work={"G54": [Q(0), Q(0)]}, tool_offsets={1: (Q(10), Q(5))})
+    out = reference_lathe_motion("G21\nG54\nT0101\nG50 X200. Z300.\nG00 X200. Z300.\nM30\n", lathe)
+    assert out[-1][1] == (250, 655)
