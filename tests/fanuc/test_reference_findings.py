@@ -217,3 +217,23 @@ def test_n2_verify_short_and_long():
     assert r.profile["motions_screened_vectorized"] > 512
     # and a wall the real end enters (99.9974..99.9975) is hit
     assert run(N2, "99.9974", "99.9975").verdict.label == "unsafe"
+
+
+# ------------------------------------------------- found by the long run after N2's fix: an axis at its centre
+
+N2B = "G20\nG90 G54 G0 X0 Y0 Z0\nG54.1 P3\nG90 G51 X0 Y0 P2.\nG90 G00 X0 Y0\nG50\nM30\n"
+# X0 Y0 Z0 in G54: machine (100, 50, -199).  G54.1 P3 = (500, 20, -210) (+ EXT Z 1): no motion; the
+# position now reads Z = -199 - (-209) = 10 mm = 0.393700.. in, off the 0.0001 in grid.
+# G51 X0 Y0 P2.: the Z centre is the current Z ([0i] "Scaling": an axis without a centre word scales about
+# the current position).  G00 X0 Y0 in P3: machine (500, 20); Z is not commanded and sits at its centre:
+# it does not move (-199), and there is nothing to round.
+N2B_EXPECTED = [("rapid", (Q(100), Q(50), Q(-199))), ("rapid", (Q(500), Q(20), Q(-199)))]
+
+
+def test_n2b_reference_keeps_an_axis_at_its_centre():
+    assert _both(N2B) == N2B_EXPECTED
+
+
+def test_n2b_an_axis_at_its_scaling_centre_is_not_rounded():
+    _, segs = nczones_motion(N2B, "calculator", False)
+    assert normalise(segs) == N2B_EXPECTED
