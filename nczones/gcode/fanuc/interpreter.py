@@ -42,6 +42,7 @@ from ...machine import FANUC_OFFSETS, Machine
 from ...motion import PLANE_AXES, Plane, SegmentKind
 from ..blocks import Block, Word
 from ..interpreter import (
+    INCH,
     WORK_OFFSETS,
     Interpreter,
     StopProgram,
@@ -403,7 +404,7 @@ class FanucInterpreter(Interpreter):
                           "manuals; change the tool length in another block", g0[1])
         if g0 is not None:
             k = g0[0]
-            uses_axes = uses_axes or k in (40, 100, 270, 280, 290, 300, 520, 530, 920)
+            uses_axes = uses_axes or k in (40, 100, 270, 280, 290, 300, 520, 530, 920, 921)
             if k == 40:
                 self._dwell(words, g0[1])
             elif k == 100:
@@ -891,7 +892,7 @@ class FanucInterpreter(Interpreter):
                 self.unknown("G16", "the first polar coordinate command needs both the radius and the angle")
                 return None
             try:
-                p[polar.ia], p[polar.ib] = polar_point(radius, angle, self.settings.increment_mm)
+                p[polar.ia], p[polar.ib] = polar_point(radius, angle, self._grid_step())
             except PointNotCertain as e:
                 self.unknown("G16", e.reason)
                 return None
@@ -900,9 +901,15 @@ class FanucInterpreter(Interpreter):
             self.polar = Polar(polar.ia, polar.ib, radius, angle)
         return p, pd
 
+    def _grid_step(self) -> Fraction:
+        """The least input increment of a linear axis, in mm: a transformed point is rounded to it.  In G20 it
+        is the inch increment (IS-B: 0.0001 in = 0.00254 mm; B-64304EN "Increment system"), not 0.001 mm."""
+        inc = self.settings.increment_mm
+        return inc / 10 * INCH if self.inch else inc
+
     def _transform_target(self, p: list[Fraction], pd: list[dict]) -> tuple[list[Fraction], list[dict] | None]:
         """The machine point of a program point: polar (already in ``p``), scaling, mirror, rotation, offsets."""
-        step = self.settings.increment_mm
+        step = self._grid_step()
         q = p
         mixed: set[int] = set()
         if self.scaling is not None:

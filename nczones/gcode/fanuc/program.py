@@ -100,7 +100,8 @@ _M_LANGUAGE = frozenset((2, 30, 97, 98, 99))
 _CALL_G = frozenset((65, 66, 67))
 _CALL_M = frozenset((97, 98, 99))
 #: G codes under which a block's words are read specially (G04 seconds, G51 factors, G68 angle, cycles).
-_SPECIAL_G = frozenset((4, 51, 68, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
+_SPECIAL_G = frozenset((4, 51, 68, 73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89, Fraction("84.2"),
+                        Fraction("84.3")))
 _END_HINT = re.compile(r"[Mm]0*(?:2|30|99)(?![\d.])|^[ \t]*%")
 _LOOP_WORD = re.compile(r"(?i:end|do)[ \t]*\d")
 _N_LABEL = re.compile(r"[ \t]*(?:/[1-9]?[ \t]*)?[Nn][ \t]*(\d+)")
@@ -184,7 +185,8 @@ class _Frame:
 
 
 #: Literal G codes of a block that change how its words are read.
-_CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89))
+#: G84.2/G84.3 (rigid tapping) are canned cycles too: their K is the repeat count.
+_CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89, Fraction("84.2"), Fraction("84.3")))
 _CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
 _LATHE_PQ = frozenset((70, 71, 72, 73, 74, 75, 76))
 #: Lathe threading codes whose Q is the start angle shift (0.001 deg, without a decimal point), not a length:
@@ -417,6 +419,14 @@ class FanucRunner:
         program end, call or custom code, no lathe cycle that reads a shape."""
         if _INT_LENGTH.search(line) or (self._long_inch if self._inch() else self._long_mm).search(line):
             return False
+        if "G" in letters:
+            # G51's P (and I J K) without a decimal point is in scaling_unit (word_values): the plain lane
+            # would read P3 as the factor 3
+            i = letters.find("G")
+            while i >= 0:
+                if values[i] == 51:
+                    return False
+                i = letters.find("G", i + 1)
         if self.shape_codes and "G" in letters:
             i = letters.find("G")
             while i >= 0:

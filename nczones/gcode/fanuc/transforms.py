@@ -236,7 +236,12 @@ def scale(sc: Scaling, p: list[Fraction], step: Fraction) -> list[Fraction]:
     """
     out = []
     for v, c, f in zip(p, sc.centre, sc.factors):
-        q = c + f * (v - c) if f != 1 else v
+        # a coordinate at its centre is not moved, so not rounded either: in G20 a centre taken from the
+        # current position may lie off the inch grid (a metric work offset), and the axis stays where it is
+        if f == 1 or v == c:
+            out.append(v)
+            continue
+        q = c + f * (v - c)
         out.append(q if (q / step).denominator == 1 else round_to((None, q), step))
     return out
 
