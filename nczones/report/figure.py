@@ -31,7 +31,7 @@ import numpy as np
 
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from .placement import Placement, drawing_machine, placement_label, placement_of
 
 __all__ = ["plot_program", "relevant_planes", "collect_path", "PathFloat"]
