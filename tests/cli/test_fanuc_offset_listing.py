@@ -136,3 +136,19 @@ def test_the_command_line(tmp_path):
     r = nczones("verify", "p.nc", "--machine", str(ROOT / "specs" / "machines" / "mill.toml"), "--tool-table",
                 "ofs.txt", "--tool-table-units", "mm", cwd=tmp_path)
     assert r.returncode == 2 and "error[VF111]" in r.stderr and "dialect is linuxcnc" in r.stderr
+
+
+@pytest.mark.parametrize("blocks, verdict", [
+    (("G10 P10001 X160. Z50. R0.4 Q3",), "safe"),                    # machine Z = -60 + 200 + 50 = 190
+    (("G10 P10001 X160. Z-150. R0.4 Q3",), "unsafe"),                # -60 + 200 - 150 = -10 < travel's 0
+    (("G10 P10001 X160. Z50. R0.4 Q3", "G10 P1 X0 Z-200. R0 Q3"), "unsafe"),  # geometry + wear = -150
+])
+def test_a_lathe_listing_moves_the_carriage(tmp_path, blocks, verdict):
+    """fanuc_lathe.toml: G54 Z = 200, travel Z 0..700; T0101 adds offset 1 (geometry + wear) to the machine
+    position (machine = program + work offset + geometry + wear, specs/machine-file.md [tool_offsets])."""
+    (tmp_path / "l.nc").write_text("T0101\nG0 X100. Z-60.\nM30\n")
+    (tmp_path / "t.txt").write_text(listing(*blocks))
+    r = nczones("verify", "l.nc", "--machine", LATHE, "--tool-table", "t.txt", "--tool-table-units", "mm",
+                "--tool-table-x-offset", "diameter", cwd=tmp_path)
+    assert r.returncode == {"safe": 0, "unsafe": 1}[verdict], r.stdout + r.stderr
+    assert "l.nc: note: lathe tool offsets from the Fanuc offset listing t.txt (mm, sha256 " in r.stdout
