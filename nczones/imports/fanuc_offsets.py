@@ -20,7 +20,7 @@ import re
 from fractions import Fraction
 from pathlib import Path
 
-from ..errors import Diagnostic, InputError
+from ..errors import Diagnostic, InputError, SourceSpan
 from ..machine import ToolOffset
 from .model import line_span, read_source
 
@@ -57,7 +57,7 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
     text = read_source(path, "tool offset listing", "VF111")
     p = str(path)
     errors: list[Diagnostic] = []
-    blocks: list[tuple[int, str, dict[str, tuple[str, object]]]] = []
+    blocks: list[tuple[int, str, dict[str, tuple[str, SourceSpan]]]] = []
     stated: str | None = None
     for i, raw in enumerate(text.split("\n"), 1):
         line = raw.rstrip("\r")
@@ -69,7 +69,7 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
         stripped = body.strip()
         if not stripped or stripped == "%" or re.fullmatch(r"[Oo]\d+", stripped):
             continue
-        words: dict[str, tuple[str, object]] = {}
+        words: dict[str, tuple[str, SourceSpan]] = {}
         pos = 0
         bad = None
         while pos < len(body):
@@ -145,12 +145,12 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
     out.units = units or stated
     factor = _INCH if out.units == "inch" else Fraction(1)
 
-    def value(words: dict, letter: str) -> Fraction:
+    def value(words: dict[str, tuple[str, SourceSpan]], letter: str) -> Fraction:
         return Fraction(words[letter][0]) * factor
 
     seen: dict[tuple, int] = {}
 
-    def once(key: tuple, i: int, line: str, words: dict) -> bool:
+    def once(key: tuple, i: int, line: str, words: dict[str, tuple[str, SourceSpan]]) -> bool:
         if key in seen:
             errors.append(Diagnostic("VF111", f"the same offset is set twice (first at line {seen[key]})",
                                      words["P"][1]))
