@@ -217,10 +217,12 @@ def with_tool_table(machine: Machine, path: str, units: str | None,
                     "file's [tool_offsets]")
             return replace(machine, tool_offsets=MappingProxyType(listing.offsets)), note
         note = (f"tool lengths and diameters from the Fanuc offset listing {path} (memory {listing.memory}, "
-                f"{listing.units}, sha256 {digest[:12]}; {len(listing.lengths)} length(s), geometry + wear), "
+                f"{listing.units}, sha256 {digest[:12]}; {len(listing.lengths)} length(s), geometry and wear), "
                 "replacing the machine file's")
         return replace(machine, tool_lengths=MappingProxyType(listing.lengths),
-                       tool_diameters=MappingProxyType(listing.diameters)), note
+                       tool_diameters=MappingProxyType(listing.diameters),
+                       tool_length_wear=MappingProxyType(listing.length_wear),
+                       tool_radius_wear=MappingProxyType(listing.radius_wear)), note
     # a .tbl line starts with T<n> (a pre-2.4 table with its number: the .tbl reader says what LinuxCNC does)
     looks_tbl = any(re.match(r"\s*(?:[Tt][+-]?)?\d", ln) for ln in text.split("\n"))
     if not looks_tbl and any(ln.split(";")[0].strip() for ln in text.split("\n")):

@@ -40,11 +40,14 @@ def is_fanuc_listing(text: str) -> bool:
 
 
 class FanucListing:
-    """The tools of a listing, in mm: ``lengths``/``diameters`` by register (mill), ``offsets`` (lathe)."""
+    """The tools of a listing, in mm: ``lengths``/``diameters`` (geometry) and the memory C wear
+    (``length_wear``, ``radius_wear``: a radius) by register (mill), ``offsets`` (lathe)."""
 
     def __init__(self) -> None:
         self.lengths: dict[int, Fraction] = {}
         self.diameters: dict[int, Fraction] = {}
+        self.length_wear: dict[int, Fraction] = {}
+        self.radius_wear: dict[int, Fraction] = {}
         self.offsets: dict[int, ToolOffset] = {}
         self.memory = ""
         self.units: str | None = None
@@ -179,10 +182,13 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
             raise InputError(errors)
         if tables[10] or tables[12] or tables[13]:
             out.memory = "C"
+            # a register the listing gives (geometry or wear) exists, its other half 0: H = geometry + wear
             for n in set(tables[10]) | set(tables[11]):
-                out.lengths[n] = tables[10].get(n, Fraction(0)) + tables[11].get(n, Fraction(0))
+                out.lengths[n] = tables[10].get(n, Fraction(0))
+                out.length_wear[n] = tables[11].get(n, Fraction(0))
             for n in set(tables[12]) | set(tables[13]):
-                out.diameters[n] = 2 * (tables[12].get(n, Fraction(0)) + tables[13].get(n, Fraction(0)))
+                out.diameters[n] = 2 * tables[12].get(n, Fraction(0))
+                out.radius_wear[n] = tables[13].get(n, Fraction(0))
         else:
             out.memory = "A"
             for n, v in tables[11].items():

@@ -70,15 +70,38 @@ def test_memory_c_and_a_registers(tmp_path):
                                             "G10 L13 P1 R-0.02", "G10 L11 P2 R0.1", "G10 L12 P3 R3."))
     c = read_fanuc_listing(tmp_path / "c.txt", "mm", lathe=False)
     assert c.memory == "C"
-    assert c.lengths == {1: F("199.5"), 2: F("0.1")}          # geometry + wear; P2 wear only
-    assert c.diameters == {1: 2 * F("4.98"), 3: F(6)}         # 2 x (radius geometry + wear)
+    # geometry and wear kept apart, as the control's registers (#11001.. and #10001..); a register given only
+    # in one half has 0 in the other
+    assert c.lengths == {1: F(200), 2: F(0)} and c.length_wear == {1: F("-0.5"), 2: F("0.1")}
+    assert c.diameters == {1: F(10), 3: F(6)} and c.radius_wear == {1: F("-0.02"), 3: F(0)}  # diameter 2 x radius
     (tmp_path / "a.txt").write_text(listing("G10 L11 P1 R5.", "G10 L11 P2 R100."))
     a = read_fanuc_listing(tmp_path / "a.txt", "inch", lathe=False)
     assert a.memory == "A"                                    # one value for H and D (a radius for D)
+    assert a.length_wear == {} and a.radius_wear == {}
     assert a.lengths == {1: F(127), 2: F(2540)}               # inches x 25.4
     assert a.diameters == {1: F(254), 2: F(5080)}
     (tmp_path / "g20.txt").write_text(listing("G20", "G10 L11 P1 R1."))
     assert read_fanuc_listing(tmp_path / "g20.txt", None, lathe=False).lengths == {1: F("25.4")}
+
+
+@pytest.mark.parametrize("program, verdict", [
+    # the listing: H1 geometry 240, wear -40 (the control applies 200: Z-50).  G10 L11 (G90) replaces the wear
+    # only: 240 + 20 = 260 reaches Z10, above travel.  Summing the two halves into one length would have
+    # proved 200 + 20 = 220 (Z-30) safe.
+    ("G90 G54 G0 X10. Y10.\nG10 L11 P1 R20.\nG43 H1 Z50.\nM30\n", "unsafe"),
+    ("G90 G54 G0 X10. Y10.\nG43 H1 Z50.\nM30\n", "safe"),
+    # #10001 reads the wear (-40), #11001 the geometry (240); machine Z = Z - 300 + 200
+    ("G90 G54 G0 X10. Y10.\nG43 H1 Z[50. - #10001 - 50.]\nM30\n", "safe"),    # Z40: 40 - 300 + 200 = -60
+    ("G90 G54 G0 X10. Y10.\nG43 H1 Z[#11001 - 130.]\nM30\n", "unsafe"),       # Z110: 110 - 300 + 200 = 10
+])
+def test_memory_c_wear_stays_apart_from_geometry(tmp_path, program, verdict):
+    from nczones.commands.verify import with_tool_table
+    from nczones.machine import load_machine
+    from nczones.prover import verify_text
+
+    (tmp_path / "ofs.txt").write_text(listing("G10 L10 P1 R240.", "G10 L11 P1 R-40."))
+    machine, _ = with_tool_table(load_machine(MILL), str(tmp_path / "ofs.txt"), "mm")
+    assert verify_text(program, machine).verdict.label == verdict
 
 
 def test_lathe_listing(tmp_path):
