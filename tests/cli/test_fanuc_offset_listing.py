@@ -22,6 +22,8 @@ from fractions import Fraction as F
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 ROOT = Path(__file__).resolve().parents[2]
 MILL = str(ROOT / "specs" / "machines" / "fanuc_mill.toml")
@@ -175,3 +177,38 @@ def test_a_lathe_listing_moves_the_carriage(tmp_path, blocks, verdict):
                 "--tool-table-x-offset", "diameter", cwd=tmp_path)
     assert r.returncode == {"safe": 0, "unsafe": 1}[verdict], r.stdout + r.stderr
     assert "l.nc: note: lathe tool offsets from the Fanuc offset listing t.txt (mm, sha256 " in r.stdout
+
+
+_DECIMAL = st.builds(lambda i, f, neg: f"{'-' if neg else ''}{i}.{f}", st.integers(0, 999), st.integers(0, 9999),
+                     st.booleans())
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.dictionaries(st.tuples(st.sampled_from((10, 11, 12, 13)), st.integers(1, 200)), _DECIMAL, min_size=1,
+                       max_size=8), st.booleans(), st.sampled_from(("mm", "inch")))
+def test_a_memory_c_listing_reads_back_exactly(values, packed, units):
+    """Every register written is read back as the exact decimal (x 25.4 for inch; x 2 for a D diameter),
+    spaces between words or none; a register given in one half has 0 in the other."""
+    import tempfile
+
+    from nczones.imports.fanuc_offsets import read_fanuc_listing
+
+    if not any(L != 11 for L, _ in values):
+        values[(10, 1)] = "1.5"  # an L11-only listing is memory A
+    sep = "" if packed else " "
+    text = listing(*(sep.join(("G10", f"L{L}", f"P{n}", f"R{v}")) for (L, n), v in values.items()))
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "ofs.txt"
+        path.write_text(text)
+        got = read_fanuc_listing(path, units, lathe=False)
+    k = F(254, 10) if units == "inch" else F(1)
+    tables = {10: got.lengths, 11: got.length_wear, 12: got.diameters, 13: got.radius_wear}
+    for (L, n), v in values.items():
+        assert tables[L][n] == F(v) * k * (2 if L == 12 else 1)
+    for a, b in ((10, 11), (12, 13)):
+        assert set(tables[a]) == set(tables[b]) == {n for (L, n) in values if L in (a, b)}
+        for n in tables[a]:
+            if (a, n) not in values:
+                assert tables[a][n] == 0
+            if (b, n) not in values:
+                assert tables[b][n] == 0
