@@ -251,6 +251,11 @@ class Machine:
     diameter_axes: tuple[str, ...] = ()
     #: Lathe tool offsets by offset number (``[tool_offsets]``).
     tool_offsets: Mapping[int, ToolOffset] = field(default_factory=lambda: MappingProxyType({}))
+    #: Fanuc tool compensation memory C wear by register, mm: tool length wear of H<n> and cutter radius
+    #: wear of D<n> (``#10001``.., ``#12001``..).  Not in the machine file: set from a Fanuc offset listing
+    #: (``verify --tool-table``); the lengths and diameters above are then the geometry.
+    tool_length_wear: Mapping[int, Fraction] = field(default_factory=lambda: MappingProxyType({}))
+    tool_radius_wear: Mapping[int, Fraction] = field(default_factory=lambda: MappingProxyType({}))
     #: The control's own length unit (LinuxCNC ``[TRAJ] LINEAR_UNITS``): ``"mm"`` or ``"inch"``.  LinuxCNC
     #: keeps its numbered state parameters (offsets, stored positions, tool table) in it.
     control_units: str = "mm"

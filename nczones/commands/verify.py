@@ -20,6 +20,7 @@ from __future__ import annotations
 import argparse
 import gc
 import os
+import re
 import sys
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, TextIO
@@ -181,32 +182,64 @@ def render_many(results: list, errors: list[tuple[int, str, InputError]], args: 
                    + (render_stats(r) if stats else "") for _, source, r in results)
 
 
-def with_tool_table(machine: Machine, path: str, units: str | None) -> tuple[Machine, str]:
-    """``machine`` with the tool lengths and diameters of a LinuxCNC tool table (``--tool-table``), and the
-    note the reports carry.  The table replaces the machine file's ``[tool_lengths]``/``[tool_diameters]``
-    whole, as LinuxCNC reads its table (a tool not in it has none).  ``units`` is required (``VF111``): a
-    table is in the machine's ``[TRAJ] LINEAR_UNITS``, which it does not say."""
+def with_tool_table(machine: Machine, path: str, units: str | None,
+                    x_offsets: str | None = None) -> tuple[Machine, str]:
+    """``machine`` with the tools of a tool table (``--tool-table``), and the note the reports carry.
+
+    The format is told by the content: a Fanuc tool offset listing (``G10`` blocks, as the control punches
+    its offset memory out; :mod:`nczones.imports.fanuc_offsets`) or a LinuxCNC tool table (``.tbl``).  The
+    table replaces the machine file's ``[tool_lengths]``/``[tool_diameters]`` (a lathe listing:
+    ``[tool_offsets]``) whole, as the control uses only its memory (a tool not in it has none).  ``units``
+    is required (``VF111``) unless a listing states G20/G21: a table is in the control's unit."""
     import hashlib
     from dataclasses import replace
     from types import MappingProxyType
 
+    from ..imports.fanuc_offsets import is_fanuc_listing, read_fanuc_listing
     from ..imports.linuxcnc import read_tool_table
 
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read()
+    except OSError as exc:
+        raise _command_line_error("VF111", f"--tool-table {path}: cannot read it: {exc.strerror or exc}") from None
+    digest = hashlib.sha256(data).hexdigest()
+    text = data.decode("utf-8", errors="replace")
+    if is_fanuc_listing(text):
+        if machine.dialect != "fanuc":
+            raise _command_line_error("VF111", f"--tool-table {path}: a Fanuc tool offset listing (G10 blocks); "
+                                               f"this machine's dialect is {machine.dialect}")
+        listing = read_fanuc_listing(path, units, machine.is_lathe, machine.axis_names, machine.diameter_axes,
+                                     x_offsets)
+        if machine.is_lathe:
+            note = (f"lathe tool offsets from the Fanuc offset listing {path} ({listing.units}, sha256 "
+                    f"{digest[:12]}; {len(listing.offsets)} offset(s), geometry and wear), replacing the machine "
+                    "file's [tool_offsets]")
+            return replace(machine, tool_offsets=MappingProxyType(listing.offsets)), note
+        note = (f"tool lengths and diameters from the Fanuc offset listing {path} (memory {listing.memory}, "
+                f"{listing.units}, sha256 {digest[:12]}; {len(listing.lengths)} length(s), geometry and wear), "
+                "replacing the machine file's")
+        return replace(machine, tool_lengths=MappingProxyType(listing.lengths),
+                       tool_diameters=MappingProxyType(listing.diameters),
+                       tool_length_wear=MappingProxyType(listing.length_wear),
+                       tool_radius_wear=MappingProxyType(listing.radius_wear)), note
+    # a .tbl line starts with T<n> (a pre-2.4 table with its number: the .tbl reader says what LinuxCNC does)
+    looks_tbl = any(re.match(r"\s*(?:[Tt][+-]?)?\d", ln) for ln in text.split("\n"))
+    if not looks_tbl and any(ln.split(";")[0].strip() for ln in text.split("\n")):
+        raise _command_line_error("VF111", f"--tool-table {path}: neither a LinuxCNC tool table (.tbl: lines "
+                                           "T<n> P<pocket> Z<length> D<diameter>) nor a Fanuc tool offset listing "
+                                           "(G10 L10/L11/L12/L13 P<n> R<value>, or G10 P<n> X Z R Q for a lathe)")
     if units is None:
         raise _command_line_error("VF111", f"--tool-table {path}: give --tool-table-units mm or inch (a LinuxCNC "
                                            "tool table is in the configuration's [TRAJ] LINEAR_UNITS, which the "
                                            "table itself does not say)")
     if machine.dialect != "linuxcnc":
-        raise _command_line_error("VF111", f"--tool-table {path}: reads a LinuxCNC tool table (.tbl); this "
-                                           f"machine's dialect is {machine.dialect}")
+        raise _command_line_error("VF111", f"--tool-table {path}: reads a LinuxCNC tool table (.tbl) or a Fanuc "
+                                           f"offset listing; this is a .tbl and the machine's dialect is "
+                                           f"{machine.dialect}")
     lengths, diameters, table_notes = read_tool_table(path, units, machine.axis_names)
     for skipped in table_notes:
         print(skipped.render(), file=sys.stderr)
-    try:
-        with open(path, "rb") as fh:
-            digest = hashlib.sha256(fh.read()).hexdigest()
-    except OSError:  # read a moment ago
-        digest = "?"
     note = (f"tool lengths and diameters from the tool table {path} ({units}, sha256 {digest[:12]}; "
             f"{len(lengths)} length(s)), replacing the machine file's")
     return replace(machine, tool_lengths=MappingProxyType(lengths),
@@ -229,7 +262,8 @@ def _run(args: argparse.Namespace) -> int:
     machine = cli.with_dialect(load_machine(args.machine), args.dialect)
     table_note = None
     if args.tool_table is not None:
-        machine, table_note = with_tool_table(machine, args.tool_table, args.tool_table_units)
+        machine, table_note = with_tool_table(machine, args.tool_table, args.tool_table_units,
+                                                args.tool_table_x_offset)
     options = verify_options(args, machine)
     results: list = []
     errors: list[tuple[int, str, InputError]] = []
@@ -294,10 +328,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--machine", required=True, metavar="M.toml",
                    help="the machine file: axes, zones, offsets, tool lengths (specs/machine-file.md)")
     p.add_argument("--tool-table", default=None, metavar="TBL",
-                   help="take tool lengths and diameters from this LinuxCNC tool table (.tbl) instead of the "
+                   help="take tool lengths and diameters from this LinuxCNC tool table (.tbl) or Fanuc tool "
+                        "offset listing (G10 blocks, as the control outputs its offset memory) instead of the "
                         "machine file's; needs --tool-table-units")
     p.add_argument("--tool-table-units", choices=("mm", "inch"), default=None,
-                   help="the tool table's length unit: the configuration's [TRAJ] LINEAR_UNITS")
+                   help="the tool table's length unit: the configuration's [TRAJ] LINEAR_UNITS, the Fanuc "
+                        "control's input unit (a listing that states G20/G21 needs none)")
+    p.add_argument("--tool-table-x-offset", choices=("diameter", "radius"), default=None,
+                   help="a Fanuc lathe listing's X on a diameter axis is a diameter or a radius (parameter "
+                        "5004#1 ORC)")
     p.add_argument("--margin", default="0", metavar="D", help="required clearance in mm on every axis (default 0)")
     p.add_argument("--param", action="append", default=[], metavar="NAME=LO..HI",
                    help="parameter range: G54.X=-2..2 (offset deviation), H1=195..205 (tool length), "

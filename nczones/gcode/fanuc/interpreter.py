@@ -207,12 +207,12 @@ class FanucInterpreter(Interpreter):
         self.tlo_register: int | None = None
         self.tlo_sign = 1
         self.h_geometry = {k: v for k, v in machine.tool_lengths.items()}
-        self.h_wear: dict[int, Fraction] = {}
+        self.h_wear: dict[int, Fraction] = dict(machine.tool_length_wear)  # a listing's L11 (memory C)
         #: geometry registers the program set (G10 L10 in G90, #11001 =): no longer the machine file's value, so
         #: a --param range of that H does not reach them
         self.h_set: set[int] = set()
         self.d_geometry = {k: v / 2 for k, v in machine.tool_diameters.items()}
-        self.d_wear: dict[int, Fraction] = {}
+        self.d_wear: dict[int, Fraction] = dict(machine.tool_radius_wear)  # a listing's L13
         self._tlo_shift: Fraction | None = None  # a tool length change the block's move must carry out
         self._tlo_shift_deps: dict | None = None
         #: with tool_length_motion = "shift": a length change no absolute tool axis move has taken yet
