@@ -377,6 +377,10 @@ def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple
             j += 1  # a move to where the spline ended (not in the log: nczones left it out)
         else:
             return Outcome("path", why)
+    while i and i == len(segs) and j < len(moves) and moves[j - 1].kind == "SPLINE" and moves[j].kind in (
+            "RAPID", "LINE") and all(abs(moves[j].end[AXES6.index(a)] - segs[i - 1].end[k]) <= moves[j].tol
+                                     for k, a in enumerate(names)):
+        j += 1  # the same after the last segment (rs274 prints a bare G0 after a spline as that move)
     n_segs = matched + sum(1 for s in segs[i:] if not _tiny_seg(s, names, moves[-1].unit if moves else Fraction(1)))
     n_moves = matched + sum(1 for k in range(j, len(moves)) if not _tiny_move(moves, k, names))
     if unsupported:

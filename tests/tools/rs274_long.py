@@ -1,0 +1,152 @@
+"""The long profile of the grammar-driven differential against ``rs274 -g``, in chunks that are kept.
+
+    nice -n 10 python -m tests.tools.rs274_long run --out runs/rs274 --start 100000 --count 50000 --chunk 500
+    python -m tests.tools.rs274_long summary --out runs/rs274
+
+Each chunk of ``--chunk`` seeds is written to ``OUT/chunk-<first seed>.json`` when it ends (counts, CPU time,
+the commit, every mismatch with its seed and class); a chunk already there is skipped, so a stopped run
+goes on where it stopped. A mismatch is run a second time before it is kept (a transient failure of the
+host, e.g. rs274 not finding its tool table while packages are reinstalled, is counted as ``flaky``).
+``summary`` adds the chunks up and groups the mismatches by class (``classify``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from collections import Counter
+from pathlib import Path
+
+from tests.oracles.rs274 import compare
+from tests.tools.rs274_diff import generate, machine_of, run_rs274
+
+#: (class, why) by a pattern of the outcome's detail or of the program: the first that matches names it
+CLASSES: tuple[tuple[str, str, str], ...] = (
+    ("detail", r"GC324", "finding-comp-concave: nczones refuses a concave corner after a G0 entry that "
+                         "LinuxCNC 2.9 runs (cutter comp)"),
+    ("text", r"M7[023]", "lcnc-modal-restore (class 11, also compared: the feed after M72)"),
+    ("text", r"_value", "lcnc-value (class 13)"),
+    ("detail", r"rs274 timed out", "rs274 timeout"),
+)
+
+
+def classify(status: str, detail: str, text: str) -> str:
+    for where, pattern, name in CLASSES:
+        if re.search(pattern, detail if where == "detail" else text):
+            return name.split(":")[0].split(" (")[0]
+    return "unclassified"
+
+
+def one(seed: int, work: Path) -> tuple[str, str, bool, bool]:
+    """(status, detail, rs274 accepted, nczones unknown) of one seed."""
+    text, setup = generate(seed)
+    moves, error, _ = run_rs274(text, setup, work)
+    try:
+        o = compare(text, machine_of(setup), moves, error)
+    except Exception as exc:  # noqa: BLE001 - an internal error of nczones is a finding too
+        return "crash", f"{type(exc).__name__}: {exc}", error is None, False
+    return o.status, o.detail, error is None, o.status == "unknown"
+
+
+def run_chunk(first: int, count: int, work: Path) -> dict:
+    t0 = time.process_time()
+    c0 = _children_cpu()
+    counts: Counter = Counter()
+    accepted = unknown = flaky = 0
+    mismatches = []
+    for seed in range(first, first + count):
+        status, detail, ok, unk = one(seed, work)
+        if status not in ("match", "unknown"):
+            again = one(seed, work)
+            if again[0] in ("match", "unknown"):
+                flaky += 1
+                status, detail, ok, unk = again
+        counts[status] += 1
+        accepted += ok
+        unknown += unk
+        if status not in ("match", "unknown"):
+            text, _ = generate(seed)
+            mismatches.append({"seed": seed, "status": status, "detail": detail[:300],
+                               "class": classify(status, detail, text)})
+    return {"first": first, "count": count, "outcomes": dict(counts), "rs274_accepted": accepted,
+            "nczones_unknown": unknown, "flaky": flaky, "mismatches": mismatches,
+            "cpu_s": round(time.process_time() - t0 + _children_cpu() - c0, 1), "commit": _commit()}
+
+
+def _children_cpu() -> float:
+    import resource
+
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def _commit() -> str:
+    try:
+        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
+                              cwd=Path(__file__).parent).stdout.strip()
+    except OSError:
+        return "?"
+
+
+def cmd_run(args) -> int:
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        for first in range(args.start, args.start + args.count, args.chunk):
+            path = out / f"chunk-{first}.json"
+            if path.exists():
+                continue
+            res = run_chunk(first, min(args.chunk, args.start + args.count - first), Path(tmp))
+            path.write_text(json.dumps(res, indent=1) + "\n")
+            print(f"chunk {first}: {res['outcomes']} cpu {res['cpu_s']} s", flush=True)
+    return 0
+
+
+def summary(out: Path) -> dict:
+    total: Counter = Counter()
+    classes: Counter = Counter()
+    examples: dict[str, list[int]] = {}
+    n = accepted = unknown = flaky = 0
+    cpu = 0.0
+    commits = set()
+    for path in sorted(out.glob("chunk-*.json")):
+        res = json.loads(path.read_text())
+        n += res["count"]
+        accepted += res["rs274_accepted"]
+        unknown += res["nczones_unknown"]
+        flaky += res["flaky"]
+        cpu += res["cpu_s"]
+        commits.add(res["commit"])
+        total.update(res["outcomes"])
+        for m in res["mismatches"]:
+            classes[m["class"]] += 1
+            examples.setdefault(m["class"], []).append(m["seed"])
+    return {"programs": n, "rs274_accepted": accepted, "nczones_unknown": unknown, "flaky": flaky,
+            "outcomes": dict(total), "classes": dict(classes),
+            "examples": {k: v[:10] for k, v in examples.items()}, "cpu_s": round(cpu), "commits": sorted(commits)}
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    run = sub.add_parser("run")
+    run.add_argument("--out", required=True)
+    run.add_argument("--start", type=int, default=100000)
+    run.add_argument("--count", type=int, default=50000)
+    run.add_argument("--chunk", type=int, default=500)
+    s = sub.add_parser("summary")
+    s.add_argument("--out", required=True)
+    args = ap.parse_args(argv)
+    if args.cmd == "run":
+        return cmd_run(args)
+    print(json.dumps(summary(Path(args.out)), indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
