@@ -18,6 +18,7 @@ import argparse
 import json
 import os
 import random
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -39,7 +40,7 @@ from tests.oracles.rs274 import (
 )
 
 DATA = Path(__file__).resolve().parents[1] / "gcode" / "data" / "rs274"
-RS274 = os.environ.get("RS274", "/usr/bin/rs274")
+RS274 = os.environ.get("RS274") or shutil.which("rs274") or "/usr/bin/rs274"
 
 #: Classes of issue 33 other branches are fixing: the generator leaves their constructs out (``exclude``) so
 #: that a mismatch here is a new finding; the lead drops a name from the default when its fix is merged.
@@ -55,6 +56,42 @@ KNOWN_CLASSES = {
     "finding-break-in-if": "break/continue of a loop nested in an if/loop/sub: nczones GC314 on the outer end",
     "finding-do-continue": "a continue in a do-while loop: LinuxCNC 2.9 then runs the next repeat loop twice over",
     "finding-g5-no-ij": "G5/G5.1 without I J (not right after a G5): LinuxCNC 2.9 runs it, nczones GC208",
+}
+
+#: Rows of specs/gcode-support.md's tables (their first cell) each production of the generator writes;
+#: ``tests/gcode/test_rs274_grammar.py`` fails when a modelled row has none.
+PRODUCTIONS: dict[str, tuple[str, ...]] = {
+    "straight": ("G0 G1", "F S T M6 M61"),
+    "arc": ("G2 G3", "arc tolerance"),
+    "modal": ("G17 G18 G19", "G20 G21", "G54..G59, G59.1..G59.3", "G90 G91, G90.1 G91.1", "G93 G94 G95",
+              "G96 G97", "G61 G61.1 G64", "M70 M72", "F S T M6 M61", "M0 M1 M3-M5 M7-M9 M19 (with its R Q P words) "
+              "M48-M53 M60 M62-M68 M71"),
+    "offsets": ("G4", "G10 L2 / L20", "G10 L1 / L10 / L11", "G28 G30", "G43 H / G43 (tool in spindle) / G43.1 / G49",
+                "G52", "G53", "G92 G92.1 G92.2 G92.3", "G33", "G33.1", "F S T M6 M61"),
+    "canned": ("G73 G81 G82 G83 G84 G85 G86 G89", "G80"),
+    "control": ("o-word if/else/endif", "o-word while/endwhile", "o-word repeat/endrepeat", "o-word sub/endsub/call"),
+    "flow": ("o-word elseif", "o-word do/while", "o-word break/continue", "o-word return", "named subroutines and "
+             "locals", "`#<_value>`"),
+    "polar": ("`@` `^` (polar coordinates)",),
+    "spline": ("G5 G5.1 G5.2/G5.3 G6.2",),
+    "comp": ("G40", "G41 G42 G41.1 G42.1"),
+    "mcodes": ("M0 M1 M3-M5 M7-M9 M19 (with its R Q P words) M48-M53 M60 M62-M68 M71",),
+    "params": ("`#5021`-`#5029`, `#<_abs_x>`..", "`#5081`-`#5089`", "`#5161`-`#5169`, `#5181`-`#5189`",
+               "`#5210`, `#5211`-`#5219`", "`#5220`, `#<_coord_system>`", "`#5221`-`#5390`",
+               "`#5400`, `#5401`-`#5409`, `#5410`", "`#5420`-`#5428`, `#<_x>`..",
+               "`#<_metric>` `#<_imperial>` `#<_absolute>` `#<_incremental>` `#<_inverse_time>` "
+               "`#<_units_per_minute>` `#<_units_per_rev>` `#<_ijk_absolute_mode>` `#<_tool_offset>` "
+               "`#<_motion_mode>` `#<_plane>` `#<_ccomp>` `#<_retract_r_plane>` `#<_retract_old_z>` `#<_feed>` "
+               "`#<_current_tool>` `#<_selected_tool>` `#<_lathe_diameter_mode>` `#<_lathe_radius_mode>`"),
+    "m73sub": ("M73", "M70 M72"),
+    "m98": ("o-word M98/M99",),
+    "rare": ("other G codes", "`(ABORT, text)`", "M2 M30", "arc tolerance", "G61 G61.1 G64"),
+    "program": ("M2 M30",),
+}
+
+#: Modelled rows the generator does not write, and why.
+NOT_GENERATED: dict[str, str] = {
+    "G7.1 / G107": "not a LinuxCNC code (Fanuc cylindrical interpolation): rs274 refuses it, no reference here",
 }
 
 #: Pythagorean directions: points of the circle of radius 5 with integer coordinates.
@@ -584,7 +621,10 @@ def run_rs274(program: str, setup: Setup, workdir: Path,
         stale.unlink()
     (workdir / "prog.var").write_text(var_file(offsets))
     try:
-        p = subprocess.run([RS274, "-t", "tool.tbl", "-v", "prog.var", "-g", "prog.ngc"], cwd=workdir,
+        # HOME: rs274 keeps its tool table in $HOME/.tool.mmap, shared by every rs274 of the user: two runs at
+        # once read each other's tools ("Requested tool 3 not found in the tool table")
+        env = {**os.environ, "HOME": str(workdir)}
+        p = subprocess.run([RS274, "-t", "tool.tbl", "-v", "prog.var", "-g", "prog.ngc"], cwd=workdir, env=env,
                            capture_output=True, text=True, errors="replace", timeout=timeout, stdin=subprocess.DEVNULL)
     except subprocess.TimeoutExpired:
         return [], ("rs274 timed out", ""), ""
