@@ -128,3 +128,16 @@ def test_long_differential_against_rs274():
 def test_ci_seeds_do_not_use_a_filtered_class_by_accident():
     """The known-class filters are on by default (the lead drops them when the fixes are merged)."""
     assert set(rs274_diff.KNOWN_CLASSES) <= Generator(1).exclude
+
+
+@pytest.mark.long
+@pytest.mark.parametrize("name", ["offset-g92", "restore-distance", "pecks-round"])
+def test_a_broken_interpreter_fails_the_ci_differential(name):
+    """Mutation check (``tests/tools/rs274_mutants.py``): one offset rule, one modal restore and one count
+    rounding broken in nczones's LinuxCNC interpreter each make the CI-size differential find mismatches."""
+    from tests.tools.rs274_mutants import mutant
+
+    _rs274_or_skip()
+    with mutant(name):
+        _counts, bad = differential(CI_SEEDS)
+    assert bad, f"the CI-size differential did not notice the mutant {name}"

@@ -719,6 +719,28 @@ def cmd_record(args) -> int:
     return 0
 
 
+FINDINGS = DATA.parent / "rs274_findings"
+#: the setup of every finding: X Y Z, four tools of 0.1 inch, no parameter-file offsets
+FINDING_SETUP: Setup = (("X", "Y", "Z"), {n: Fraction(1, 10) for n in range(1, 5)}, {})
+
+
+def cmd_findings(args) -> int:
+    """Run every program of tests/gcode/data/rs274_findings through rs274 and nczones; with --record, write
+    rs274's output beside it (NAME.rs274.txt)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        work = Path(tmp)
+        for path in sorted(FINDINGS.glob("*.ngc")):
+            text = path.read_text()
+            _moves, error, log = run_rs274(text, FINDING_SETUP, work)
+            if args.record:
+                path.with_suffix(".rs274.txt").write_text(
+                    f"$ rs274 -t tool.tbl -g {path.name}   (tool.tbl: T99 + T1..T4 Z0.1 D0.1)\n{log}"
+                    + (f"error: {error[0]}\nat: {error[1]}\n" if error else "exit 0\n"))
+            o = outcome(text, FINDING_SETUP, work)
+            print(f"{path.stem}: {o.status} {o.detail}")
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -730,11 +752,13 @@ def main(argv: list[str] | None = None) -> int:
     rec = sub.add_parser("record")
     rec.add_argument("--count", type=int, default=150)
     rec.add_argument("--seed", type=int, default=100000)
+    fnd = sub.add_parser("findings")
+    fnd.add_argument("--record", action="store_true")
     args = ap.parse_args(argv)
     if not Path(RS274).exists():
         print(f"{RS274} not found (LinuxCNC's standalone interpreter, package linuxcnc-uspace)", file=sys.stderr)
         return 2
-    return cmd_run(args) if args.cmd == "run" else cmd_record(args)
+    return {"run": cmd_run, "record": cmd_record, "findings": cmd_findings}[args.cmd](args)
 
 
 if __name__ == "__main__":

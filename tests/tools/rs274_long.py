@@ -27,17 +27,19 @@ from tests.tools.rs274_diff import generate, machine_of, run_rs274
 
 #: (class, why) by a pattern of the outcome's detail or of the program: the first that matches names it
 CLASSES: tuple[tuple[str, str, str], ...] = (
-    ("detail", r"GC324", "finding-comp-concave: nczones refuses a concave corner after a G0 entry that "
-                         "LinuxCNC 2.9 runs (cutter comp)"),
-    ("text", r"M7[023]", "lcnc-modal-restore (class 11, also compared: the feed after M72)"),
-    ("text", r"_value", "lcnc-value (class 13)"),
-    ("detail", r"rs274 timed out", "rs274 timeout"),
+    ("detail", r"GC32\d", "finding-comp-concave: nczones refuses a concave corner LinuxCNC 2.9 runs (comp)"),
+    ("both", r"(?s)(zero feed rate|[Ss]pindle|feed per rev).*\x00.*M7[023]",
+     "lcnc-modal-restore: feed (G93 -> G94) or spindle after an M72/M73 restore (class 11)"),
+    ("text", r"M7[23]", "lcnc-modal-restore: after an M72/M73 restore (class 11)"),
+    ("text", r"_value", "lcnc-value: #<_value> (class 13)"),
+    ("detail", r"rs274 timed out", "rs274-timeout"),
 )
 
 
 def classify(status: str, detail: str, text: str) -> str:
     for where, pattern, name in CLASSES:
-        if re.search(pattern, detail if where == "detail" else text):
+        subject = {"detail": detail, "text": text, "both": detail + "\x00" + text}[where]
+        if re.search(pattern, subject):
             return name.split(":")[0].split(" (")[0]
     return "unclassified"
 
@@ -124,6 +126,7 @@ def summary(out: Path) -> dict:
         commits.add(res["commit"])
         total.update(res["outcomes"])
         for m in res["mismatches"]:
+            m["class"] = classify(m["status"], m["detail"], generate(m["seed"])[0])  # the classes of now
             classes[m["class"]] += 1
             examples.setdefault(m["class"], []).append(m["seed"])
     return {"programs": n, "rs274_accepted": accepted, "nczones_unknown": unknown, "flaky": flaky,
