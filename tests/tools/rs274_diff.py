@@ -128,6 +128,9 @@ class Generator:
         self.ijk = "G91.1"
         self.feed_mode = "G94"
         self.cycle = False
+        #: the modal motion the next block inherits: G0 G1 G2 G3 "cycle", None (G80) or "?" (not known here:
+        #: after a loop, a branch or a call); a block without a motion code is written only after G0/G1
+        self.motion: str | None = None
         self.onum = 100
         self.depth = 0
         self.m98_subs: list[str] = []
@@ -212,8 +215,11 @@ class Generator:
     def straight(self) -> list[str]:
         r = self.r
         code = r.choice(["G0", "G1", "G1", "G1", "G0", ""])
-        f = self.feed() if code != "G0" else ""
+        if not code and self.motion not in ("G0", "G1"):
+            code = "G1"  # a bare block after G2/G3 or G80 is refused (no I J K / no motion mode)
+        f = self.feed() if (code or self.motion) != "G0" else ""
         words = self.axis_words()
+        self.motion = code or self.motion
         return [f"{code} {words}{f}".strip()]
 
     def arc(self) -> list[str]:
@@ -238,7 +244,8 @@ class Generator:
             end = f"{fa}[#<_{fa.lower()}>+{fmt(dx)}] {sa}[#<_{sa.lower()}>+{fmt(dy)}]"
         if full and r.random() < 0.5:
             end = ""
-        if r.random() < 0.3 and not full:
+        self.motion = code
+        if r.random() < 0.3 and not full and (ex, ey) != (-cx, -cy):
             radius = 5 * s * r.choice([1, 1, 1.5, 3])
             if r.random() < 0.3:
                 radius = -radius
@@ -294,10 +301,12 @@ class Generator:
             return [f"G53 G{r.choice([0, 1])} {self.axis_words()}{self.feed()}"]
         if r.random() < 0.5:
             return [f"G4 P{r.choice(['0.5', '1', '0', '2.25', '[#1 * #1]'])}"]
+        spin = ["M3 S800"] if r.random() < 0.85 else []  # G33/G33.1 with the spindle stopped: both refuse
         if self.dist == "G91":
-            return [f"G33 {self.axis_words(r.randint(1, 2))} K{self.num(0.5, 2, 1)}",
+            return spin + [f"G33 {self.axis_words(r.randint(1, 2))} K{self.num(0.5, 2, 1)}",
                     f"G33.1 Z{self.num(-5, -0.5)} K{self.num(0.5, 2, 1)}"][: r.randint(1, 2)]
-        return [r.choice([f"G33 Z[#<_z>+{self.num(-5, -0.5)}] K1", f"G33.1 X[#<_x>] Z[#<_z>+{self.num(-5, -0.5)}] K1.5"])]
+        return spin + [r.choice([f"G33 Z[#<_z>+{self.num(-5, -0.5)}] K1",
+                                 f"G33.1 X[#<_x>] Z[#<_z>+{self.num(-5, -0.5)}] K1.5"])]
 
     def canned(self) -> list[str]:
         r = self.r
@@ -308,19 +317,23 @@ class Generator:
         if code in ("G82", "G89", "G86"):
             extra += f" P{r.choice(['0.5', '1'])}"
         fa, sa, na, *_ = PLANES[self.plane]
+        self.motion = "cycle"
         if self.dist == "G91":
             pos = f"{fa}{self.num(-10, 10)} {sa}{self.num(-10, 10)} {na}{self.num(-8, -0.5)} R{self.num(-2, 5)}"
             if r.random() < 0.4:
                 extra += f" L{r.randint(2, 4)}"
         else:
             pos = (f"{fa}[#<_{fa.lower()}>+{self.num(-10, 10)}] {sa}{self.num()} "
-                   f"{na}[#<_{na.lower()}>+{self.num(-8, -0.5)}] R[#<_{na.lower()}>+{self.num(-2, 5)}]")
+                   f"{na}[#<_{na.lower()}>+{self.num(-8, -0.5)}] R[#<_{na.lower()}>+{self.num(-0.3, 5)}]")
         lines = [f"{r.choice(['G98', 'G99', ''])} {code} {pos}{extra}{self.feed()}".strip()]
+        if code in ("G84", "G86") and r.random() < 0.85:
+            lines.insert(0, "M3 S1000")  # both refuse the cycle with the spindle stopped (G84: or in M4)
         for _ in range(r.randint(0, 3)):
             lines.append(f"{fa}{self.num(-10, 10)} {sa}{self.num(-10, 10)}" if self.dist == "G91"
                          else f"{fa}{self.num()} {sa}[#<_{sa.lower()}>+{self.num(-5, 5)}]")
         if r.random() < 0.8:
             lines.append("G80")
+            self.motion = None
         return lines
 
     def control(self) -> list[str]:
@@ -412,7 +425,7 @@ class Generator:
             if roll < 0.6:
                 out.append(f"{r.choice(['G1', 'G1', 'G0'])} {pt()}")
             else:
-                rad = self.num(12, 40, 1)
+                rad = self.num(45, 60, 1)  # at least half of any chord between two of these points
                 out.append(f"{r.choice(['G2', 'G3'])} {pt()} R{rad}")
         out += ["G40", f"G1 {pt()}"]
         return out
@@ -576,7 +589,16 @@ class Generator:
         if name in ("m73sub", "m98", "flow", "comp", "spline", "polar") and self.in_m98:
             name = "straight"
         self.used.add(name)
-        return getattr(self, name)()
+        out = getattr(self, name)()
+        if name in ("control", "flow", "m98", "m73sub", "rare", "offsets", "polar", "spline", "mcodes"):
+            self.motion = "?"  # a loop or branch may not run, a call ends elsewhere, G33/G53/G80 ...
+        elif name == "comp":
+            self.motion = "G1"
+        elif name == "params":
+            self.motion = "G0"
+        elif name == "modal" and "G80" in out:
+            self.motion = None
+        return out
 
     def program(self) -> str:
         r = self.r

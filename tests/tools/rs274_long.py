@@ -83,7 +83,7 @@ def run_chunk(first: int, count: int, work: Path) -> dict:
                                "class": classify(status, detail, text)})
     return {"first": first, "count": count, "outcomes": dict(counts), "rs274_accepted": accepted,
             "nczones_unknown": unknown, "flaky": flaky, "mismatches": mismatches,
-            "cpu_s": round(time.process_time() - t0 + _children_cpu() - c0, 1), "commit": _commit()}
+            "cpu_s": round(time.process_time() - t0 + _children_cpu() - c0, 1), "commit": COMMIT}
 
 
 def _children_cpu() -> float:
@@ -99,6 +99,9 @@ def _commit() -> str:
                               cwd=Path(__file__).parent).stdout.strip()
     except OSError:
         return "?"
+
+
+COMMIT = _commit()  # the code this process loaded
 
 
 def cmd_run(args) -> int:
