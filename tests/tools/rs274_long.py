@@ -34,8 +34,8 @@ CLASSES: tuple[tuple[str, str, str], ...] = (
                                                  "refuses, nczones runs)"),
     ("text", r"(?s)G10 L2 P\d[^\n]* R-?\d.*G(28|30) [XYZA]", "finding-rot-g28: G28/G30 with axis words in a "
                                                           "rotated system (G10 L2 R)"),
-    ("text", r"(?s)M61 Q\d.*(#5400|_current_tool)", "oracle-m61-tool: the standalone rs274 reports tool 0 after "
-                                                    "M61 (explained)"),
+    ("text", r"(?s)M61 Q\d.*(#5400|_current_tool|\nG4[12]\n)", "oracle-m61-tool: the standalone rs274 keeps "
+                                                              "tool 0 after M61 (its #5400, G41's diameter)"),
     ("text", r"M7[23]", "lcnc-modal-restore: after an M72/M73 restore (class 11)"),
     ("text", r"_value", "lcnc-value: #<_value> (class 13)"),
     ("detail", r"rs274 timed out", "rs274-timeout"),
