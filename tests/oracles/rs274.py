@@ -288,12 +288,16 @@ def _moving(items, kind, end, start, tol):
 def _canon_moving(moves: list[CanonMove], names: tuple[str, ...]) -> list[CanonMove]:
     out = []
     prev: tuple[Fraction, ...] | None = tuple([Fraction(0)] * 6)
+    ptol = Fraction(0)
     for mv in moves:
+        # within the rounding of either print: an arc's end printed in inches and the same point printed
+        # again in mm after G21 differ by up to 0.00127 mm
         if mv.kind in ("RAPID", "LINE") and prev is not None and all(
-                abs(mv.end[AXES6.index(a)] - prev[AXES6.index(a)]) <= mv.tol for a in names):
-            prev = mv.end
+                abs(mv.end[AXES6.index(a)] - prev[AXES6.index(a)]) <= max(mv.tol, ptol) for a in names):
+            prev, ptol = mv.end, mv.tol
             continue
         prev = None if mv.kind == "SPLINE" else mv.end  # a spline's end is not in the log
+        ptol = mv.tol
         out.append(mv)
     return out
 

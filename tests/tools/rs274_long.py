@@ -118,7 +118,9 @@ def cmd_run(args) -> int:
     return 0
 
 
-def summary(out: Path) -> dict:
+def summary(out: Path, recheck: bool = False) -> dict:
+    """Totals of the chunks; with ``recheck`` every kept mismatch is run again with the code of now (the
+    generator must be the run's: its programs are regenerated from the seed) and counted where it lands."""
     total: Counter = Counter()
     classes: Counter = Counter()
     examples: dict[str, list[int]] = {}
@@ -135,6 +137,15 @@ def summary(out: Path) -> dict:
         commits.add(res["commit"])
         total.update(res["outcomes"])
         for m in res["mismatches"]:
+            if recheck:
+                with tempfile.TemporaryDirectory() as tmp:
+                    status, detail, _ok, _unk = one(m["seed"], Path(tmp))
+                if status in ("match", "unknown"):
+                    total[m["status"]] -= 1
+                    total[status] += 1
+                    classes["fixed in the oracle since (re-run: " + status + ")"] += 1
+                    continue
+                m["status"], m["detail"] = status, detail
             m["class"] = classify(m["status"], m["detail"], generate(m["seed"])[0])  # the classes of now
             classes[m["class"]] += 1
             examples.setdefault(m["class"], []).append(m["seed"])
@@ -153,10 +164,11 @@ def main(argv: list[str] | None = None) -> int:
     run.add_argument("--chunk", type=int, default=500)
     s = sub.add_parser("summary")
     s.add_argument("--out", required=True)
+    s.add_argument("--recheck", action="store_true")
     args = ap.parse_args(argv)
     if args.cmd == "run":
         return cmd_run(args)
-    print(json.dumps(summary(Path(args.out)), indent=1))
+    print(json.dumps(summary(Path(args.out), args.recheck), indent=1))
     return 0
 
 
