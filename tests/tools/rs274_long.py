@@ -30,6 +30,9 @@ CLASSES: tuple[tuple[str, str, str], ...] = (
     ("detail", r"GC32\d", "finding-comp-concave: nczones refuses a concave corner LinuxCNC 2.9 runs (comp)"),
     ("both", r"(?s)(zero feed rate|[Ss]pindle|feed per rev).*\x00.*M7[023]",
      "lcnc-modal-restore: feed (G93 -> G94) or spindle after an M72/M73 restore (class 11)"),
+    ("text", r"(?s)o\d+ (break|continue)\n.*o\d+ (do|repeat)", "finding-loop-after-jump: after a break/continue "
+                                                               "LinuxCNC 2.9 runs a later do/repeat loop a "
+                                                               "different number of times"),
     ("detail", r"F word missing with inverse time", "finding-g93-spline-f: G5/G5.1 in G93 without F (LinuxCNC "
                                                  "refuses, nczones runs)"),
     ("text", r"(?s)G10 L2 P\d[^\n]* R-?\d.*G(28|30) [XYZA]", "finding-rot-g28: G28/G30 with axis words in a "
