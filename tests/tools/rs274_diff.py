@@ -7,6 +7,10 @@ the motion in machine coordinates and where each refuses the program (``tests/or
     python -m tests.tools.rs274_diff run --count 2000 --seed 1        # compare, minimise mismatches
     python -m tests.tools.rs274_diff record --count 150 --seed 1000   # rewrite tests/gcode/data/rs274
 
+The generator is a grammar: ``PRODUCTIONS`` names the rows of specs/gcode-support.md each production writes
+(``tests/gcode/test_rs274_grammar.py`` checks the coverage and runs the CI-size differential;
+``tests/tools/rs274_long.py`` the long profile; ``findings`` re-runs tests/gcode/data/rs274_findings).
+
 ``record`` keeps only programs nczones matches and writes them with rs274's parsed motion to
 ``tests/gcode/data/rs274/`` (``tests/gcode/test_rs274_recorded.py`` holds nczones to them without
 rs274).  One program at a time, one process: it is meant to run beside other work.
