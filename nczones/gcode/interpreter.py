@@ -385,6 +385,9 @@ class Interpreter:
         self.spindle_dir: int | None = 0
         self.spindle_speed: Fraction | None = _ZERO
         self.tlo = _ZERO
+        #: the units (inch?) in force when the applied tool length was set: LinuxCNC 2.9's convert_length_units
+        #: does not convert its tool offset, so a G43/G49 after a G20/G21 moves the position by the stale number
+        self.tlo_inch: bool | None = None
         self.tool_register: int | None = None
         # ---- offsets (mm, machine axes)
         self.g5x = {name: list(machine.offset(name)) for name in WORK_OFFSETS}
@@ -1510,6 +1513,13 @@ class Interpreter:
     def _tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
         k, w = g
         self.unset.discard("tool")
+        if self.tlo != 0 and self.tlo_inch is not None and self.tlo_inch != self.inch:
+            # rs274 (2.9.0~pre1): G21 G43 H1, G20, G49, G0 X1 moves Z by 12.66 inch for a 0.519 inch tool
+            # (current_z += the offset still in mm): the machine moves an axis the program does not name
+            self.unknown("G43", f"G{k // 10}{'.1' if k == 431 else ''} after a G20/G21 while a tool length is "
+                         "applied: LinuxCNC 2.9 keeps that length in the old units and moves the tool axis by the "
+                         "unconverted number; not modelled", w)
+        self.tlo_inch = self.inch
         if k == 490:
             self.tlo = _ZERO
             self.tool_register = None

@@ -272,11 +272,14 @@ def linuxcnc_state_parameters() -> StateTable:
         t[key] = StateParameter(key, meaning, read)
 
     for k, a in enumerate(AXIS_LETTERS):
-        add(5021 + k, f"current {a} in machine coordinates (program units)",
-            _axis_reader(a, lambda it, i: it.state_machine_position(i), program_units=True))
+        machine_position = _axis_reader(a, lambda it, i: it.state_machine_position(i), program_units=True)
+        # rs274 of LinuxCNC 2.9.0~pre1 (the installed reference) reads #5021-#5029 and #5081-#5089 as 0 whatever
+        # the position and the applied tool length (newer LinuxCNC: the position, the length): version-dependent
+        add(5021 + k, f"current {a} in machine coordinates (LinuxCNC 2.9.0~pre1 reads 0, newer versions the "
+            "position: version-dependent)", _unknown)
         add(5061 + k, f"probe result {a}", _unknown)
-        add(5081 + k, f"tool length offset applied to {a} (G43)",
-            _tool_axis_only(lambda it: it.state_applied_tool_length(), a))
+        add(5081 + k, f"tool length offset applied to {a} (G43; LinuxCNC 2.9.0~pre1 reads 0, newer versions the "
+            "length: version-dependent)", _unknown)
         add(5161 + k, f"G28 position {a}",
             _axis_reader(a, lambda it, i: it.state_home(280, i), program_units=False))
         add(5181 + k, f"G30 position {a}",
@@ -291,7 +294,7 @@ def linuxcnc_state_parameters() -> StateTable:
         add(5420 + k, f"current {a} in program coordinates", _not_under_comp(position))
         low = a.lower()
         add("_" + low, f"current {a} in program coordinates", position)
-        add("_abs_" + low, f"current {a} in machine coordinates (program units)", t[5021 + k].read)
+        add("_abs_" + low, f"current {a} in machine coordinates (program units)", machine_position)
     add(5070, "probe result", _unknown)
     add(5210, "G92 offset applied (1) or not (0)", lambda it: 1 if it.g92_applied else 0)
     add(5220, "active coordinate system (1 = G54 ... 9 = G59.3)",

@@ -49,14 +49,7 @@ RS274 = os.environ.get("RS274") or shutil.which("rs274") or "/usr/bin/rs274"
 #: Classes of issue 33 other branches are fixing: the generator leaves their constructs out (``exclude``) so
 #: that a mismatch here is a new finding; the lead drops a name from the default when its fix is merged.
 KNOWN_CLASSES = {
-    "lcnc-modal-restore": "class 11 (lcnc-interp): M72/M73 restore of G92, G43/G49 and G8",
-    "lcnc-repeat-round": "class 12 (lcnc-interp): a real repeat count rounds as LinuxCNC (counts stay integers)",
-    "lcnc-value": "class 13 (lcnc-interp): #<_value> after a sub without a value (read only after one with)",
-    "lcnc-machine-units": "class 16 (lcnc-machine): #5081, #5161, #5211, #5221.., #5401.. in machine units",
-    "lcnc-ccomp-position": "class 17 (lcnc-machine): #<_x>/#5420 read while cutter comp is on (never read there)",
-    "lcnc-m98-locals": "class 18 (lcnc-interp): a named local written in an M98 subprogram",
     # found by this generator (tests/gcode/data/rs274_findings/): left out so that the long run finds others
-    "finding-5021": "#5021-#5029 read as the machine position; LinuxCNC 2.9 has no such parameters (0)",
     "finding-break-in-if": "break/continue of a loop nested in an if/loop/sub: nczones GC314 on the outer end",
     "finding-do-continue": "a continue in a do-while loop: LinuxCNC 2.9 then runs the next repeat loop twice over",
     "finding-g5-no-ij": "G5/G5.1 without I J (not right after a G5): LinuxCNC 2.9 runs it, nczones GC208",

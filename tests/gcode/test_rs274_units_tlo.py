@@ -1,0 +1,46 @@
+"""rs274 differential findings fixed on branch rs274-fix (LinuxCNC 2.9.0~pre1's rs274 is the reference).
+
+* A G20/G21 while a tool length is applied, then G49 (or G43, or M72's restore of G49): LinuxCNC 2.9's
+  ``convert_length_units`` converts the position but not the tool offset, so ``G49`` adds the old-unit
+  number to the new-unit position.  Recorded with ``rs274 -g`` (tool table ``T1 P1 Z0.519``):
+  ``G21 G90 F100 / G43 H1 / G20 / G49 / G0 X1`` gives ``STRAIGHT_TRAVERSE(25.4000, 0.0000, 321.6554 ...)``
+  (mm): Z = (-0.519 + 13.1826) inch = 12.6636 inch = 321.655 mm, a Z move the program does not write.
+  nczones does not model it: the verdict is ``unknown`` naming G49, never the ``safe`` of a Z that stays.
+* ``#5021``-``#5029`` and ``#5081``-``#5089``: rs274 2.9.0~pre1 reads 0 (param-5021.ngc), newer LinuxCNC the
+  position / applied length: ``unknown`` (GC305), version-dependent.
+"""
+from __future__ import annotations
+
+import pytest
+
+from nczones.machine import load_machine
+from nczones.prover import verify_text as verify
+
+MILL = load_machine("specs/machines/mill.toml")
+MOVES = "".join(f"G1 X{i % 7} Y{i % 5}\n" for i in range(600))  # > 512 motions: the vectorized tier
+
+
+@pytest.mark.parametrize("body", [
+    "G21 G90 G0 X0 Y0\nF100\nG43 H1\nG20\nG49\nG0 X1\n",
+    "G21 G90 G0 X0 Y0\nF100\n" + MOVES + "G43 H1\nG20\nG49\nG0 X1\n" + MOVES.replace("G1", "G1 G21", 1),
+    "G21 G90 G0 X0 Y0\nF100\n#1 = 1\nG43 H1\nG20\nG49\nG0 X[#1]\n",                  # the double pass ('#')
+    "G21 G90 G0 X0 Y0\nF100\n#1 = 1\n" + MOVES + "G43 H1\nG20\nG49\nG0 X[#1]\n",
+    # M73 in a subroutine: its return restores G21 first, then G49 (LinuxCNC restore_settings)
+    "o100 sub\nM73\nG20\nG43 H1\no100 endsub\nG21 G90 G0 X0 Y0\nF100\no100 call\nG0 X1\n",
+])
+def test_g49_after_a_units_change_under_g43_is_unknown(body):
+    result = verify(body + "M30\n", MILL)
+    assert result.verdict.label == "unknown", result.verdict
+    assert "G20/G21 while a tool length is applied" in " ".join(r.message for r in result.reasons), result.reasons
+
+
+def test_g49_in_the_units_of_its_g43_is_still_proved():
+    result = verify("G21 G90 G0 X0 Y0\nF100\nG43 H1\nG20\nG21\nG49\nG0 X1\nM30\n", MILL)
+    assert "G20/G21" not in " ".join(r.message for r in result.reasons), result.reasons
+
+
+@pytest.mark.parametrize("param", ["#5021", "#5083"])
+def test_version_dependent_parameters_are_unknown_end_to_end(param):
+    result = verify(f"G21 G90\nG43 H1\nG0 X[{param} * 0 + 1]\nM30\n", MILL)
+    assert result.verdict.label == "unknown"
+    assert "version-dependent" in " ".join(r.message for r in result.reasons), result.reasons
