@@ -1474,14 +1474,16 @@ class Interpreter:
         ``G92.3``/``G92.2``.  The motion mode is not restored."""
         (inch, absolute, arc_absolute, plane, wcs, feed_mode, feed, retract_r, comp, tlo_on, g92_on,
          diameter, spindle_dir, spindle_speed) = snap
-        old_feed, old_speed = self.feed, self.spindle_speed
+        old_feed, old_speed, old_mode = self.feed, self.spindle_speed, self.feed_mode
         if inch != self.inch:
             self._set_units(inch)
         if feed_mode != self.feed_mode:
             self.feed_mode = feed_mode
             if feed_mode in (94, 95):
                 self.feed = _ZERO
-        if feed != old_feed and feed_mode != 93:
+        # not when G93 was in force at the restore either: rs274 restoring G94 over G93 F30 sets the feed to 0
+        # and refuses the next G1 (rs274_findings/restore-g93-feed.ngc)
+        if feed != old_feed and feed_mode != 93 and old_mode != 93:
             # gen_settings writes " F%.1f": the double rounded to one decimal (an F below 0.05 restores F0)
             self.feed = round(Fraction(float(feed)), 1)
         # " S%.0f" if the speed differs; M3/M4/M5 (gen_m_codes) if the direction does; None: not followed

@@ -248,6 +248,17 @@ def _not_under_comp(read: Callable[[StateSource], Reading]) -> Callable[[StateSo
     return guarded
 
 
+def _spindle_entry(read: Callable[[StateSource], Reading]) -> Callable[[StateSource], Reading]:
+    """A reading of the spindle slot's tool table entry: after T0 M6 or M61 rs274 keeps the entry that was there
+    (``#5400`` reads 0 after ``M61 Q2``, rs274_findings/m61-current-tool.ngc): unknown there."""
+    def guarded(it: StateSource) -> Reading:
+        if getattr(it, "_unloaded", False):
+            return None
+        return read(it)
+
+    return guarded
+
+
 def _tool_diameter(it: StateSource) -> Reading:
     get = getattr(it, "tool_diameter", None)
     d = get(it.tool_in_spindle) if get is not None else it.machine.tool_diameters.get(it.tool_in_spindle)
@@ -288,8 +299,8 @@ def linuxcnc_state_parameters() -> StateTable:
             _axis_reader(a, lambda it, i: it.state_g92(i), program_units=False))
         for n, name in enumerate(WORK_OFFSET_NAMES):
             add(5221 + 20 * n + k, f"{name} {a} offset", _offset_reader(name, a))
-        add(5401 + k, f"stored {a} offset of the tool in the spindle (tool table)",
-            _tool_axis_only(lambda it: it.state_spindle_tool_length(), a))
+        add(5401 + k, f"stored {a} offset of the tool in the spindle (tool table; unknown after T0 M6 or M61)",
+            _spindle_entry(_tool_axis_only(lambda it: it.state_spindle_tool_length(), a)))
         position = _axis_reader(a, lambda it, i: it.state_program_position(i), program_units=True)
         add(5420 + k, f"current {a} in program coordinates", _not_under_comp(position))
         low = a.lower()
@@ -302,8 +313,9 @@ def linuxcnc_state_parameters() -> StateTable:
     for n, name in enumerate(WORK_OFFSET_NAMES):
         add(5230 + 20 * n, f"{name} XY rotation (degrees, G10 L2 R)", lambda it, name=name: it.rot[name])
     add(5399, "M66 input wait result", _unknown)
-    add(5400, "tool in the spindle", lambda it: it.tool_in_spindle)
-    add(5410, "diameter of the tool in the spindle", _tool_diameter)
+    add(5400, "tool in the spindle (unknown after T0 M6 or M61: rs274 keeps the spindle slot's old entry)",
+        _spindle_entry(lambda it: it.tool_in_spindle))
+    add(5410, "diameter of the tool in the spindle (unknown after T0 M6 or M61)", _spindle_entry(_tool_diameter))
     for key, what in ((5411, "front angle"), (5412, "back angle"), (5413, "orientation")):
         add(key, f"lathe tool {what} of the tool in the spindle", _unknown)
     # #5599 (the (DEBUG,) output flag) is not state: an ordinary volatile parameter that starts at

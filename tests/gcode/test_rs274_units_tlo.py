@@ -11,12 +11,17 @@
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
-from nczones.machine import load_machine
+from nczones.gcode import GcodeError
+from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify_text as verify
 
 MILL = load_machine("specs/machines/mill.toml")
+COMP = parse_machine(Path("specs/machines/mill.toml").read_text().replace(
+    "[machine]\n", '[machine]\ncutter_compensation = "linuxcnc"\n', 1) + '\n[tool_diameters]\nT1 = "6"\nT2 = "10"\n')
 MOVES = "".join(f"G1 X{i % 7} Y{i % 5}\n" for i in range(600))  # > 512 motions: the vectorized tier
 
 
@@ -44,3 +49,25 @@ def test_version_dependent_parameters_are_unknown_end_to_end(param):
     result = verify(f"G21 G90\nG43 H1\nG0 X[{param} * 0 + 1]\nM30\n", MILL)
     assert result.verdict.label == "unknown"
     assert "version-dependent" in " ".join(r.message for r in result.reasons), result.reasons
+
+
+def test_m72_restoring_g94_over_g93_leaves_the_feed_at_zero():
+    """rs274_findings/restore-g93-feed.ngc, recorded: ``G21 G90 F100 / M70 / G93 F30 / M72 / G1 X1`` -> rs274
+    ``SET_FEED_MODE(0, 0)`` then ``SET_FEED_RATE(0.0000)`` (no F100: gen_settings writes no F while G93 is in
+    force) and "Cannot do g1 with zero feed rate".  nczones restored F100 and proved the G1."""
+    for text in ("G21 G90 F100\nM70\nG93 F30\nM72\nG1 X1\nM30\n",
+                 "G21 G90 F100\n#1 = 1\nM70\nG93 F30\nM72\n" + MOVES.replace("G1", "G0", 600) + "G1 X[#1]\nM30\n"):
+        with pytest.raises(GcodeError) as e:
+            verify(text, MILL)
+        assert "feed" in str(e.value).lower()
+
+
+@pytest.mark.parametrize("body", ["T1 M6\nM61 Q2\nG0 X[#5400]\n", "T1 M6\nM61 Q2\nG0 X[#5410]\n",
+                                  "T1 M6\nM61 Q2\nG0 Z[#5403]\n", "M61 Q2\nG41\nG1 X10 F100\nG40\nG0 X0\n"])
+def test_spindle_slot_reads_after_m61_are_unknown(body):
+    """rs274_findings/m61-current-tool.ngc: after ``M61 Q2`` rs274 reads ``#5400`` as 0 (nczones read 2), and
+    ``M61 Q4 / G41 / G1 X22.8 Y-16.8`` ends at X22.8 (rs274) where nczones offset it by T4's diameter: the
+    standalone interpreter keeps the spindle slot's table entry (as for G43 after M61, already unknown)."""
+    result = verify("G21 G90 G0 X0 Y0\n" + body + "M30\n", COMP)
+    assert result.verdict.label == "unknown", result.verdict
+    assert "M61" in " ".join(r.message for r in result.reasons), result.reasons
