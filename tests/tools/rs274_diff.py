@@ -50,8 +50,6 @@ RS274 = os.environ.get("RS274") or shutil.which("rs274") or "/usr/bin/rs274"
 #: that a mismatch here is a new finding; the lead drops a name from the default when its fix is merged.
 KNOWN_CLASSES = {
     # found by this generator (tests/gcode/data/rs274_findings/): left out so that the long run finds others
-    "finding-break-in-if": "break/continue of a loop nested in an if/loop/sub: nczones GC314 on the outer end",
-    "finding-do-continue": "a continue in a do-while loop: LinuxCNC 2.9 then runs the next repeat loop twice over",
     "finding-g5-no-ij": "G5/G5.1 without I J (not right after a G5): LinuxCNC 2.9 runs it, nczones GC208",
 }
 

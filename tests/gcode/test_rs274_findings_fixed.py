@@ -71,3 +71,32 @@ def test_spindle_slot_reads_after_m61_are_unknown(body):
     result = verify("G21 G90 G0 X0 Y0\n" + body + "M30\n", COMP)
     assert result.verdict.label == "unknown", result.verdict
     assert "M61" in " ".join(r.message for r in result.reasons), result.reasons
+
+
+FINDINGS = Path(__file__).parent / "data" / "rs274_findings"
+
+
+@pytest.mark.parametrize(("name", "many"), [("do-continue-repeat", False), ("while-break-then-do", False),
+                                            ("do-continue-repeat", True), ("while-break-then-do", True)])
+def test_a_loop_after_break_or_continue_is_unknown(name, many):
+    """Recorded in rs274_findings/NAME.rs274.txt: after a ``continue`` in a ``do`` rs274 runs the next
+    ``repeat [3]`` 6 times (6 ``STRAIGHT_FEED``, nczones wrote 3); after a ``break`` out of a ``while`` the
+    next ``do`` body runs once (2 traverses, nczones 8).  LinuxCNC 2.9's loop state: unknown (GC390)."""
+    text = (FINDINGS / f"{name}.ngc").read_text()
+    if many:
+        text = text.replace("G21 G90 F500\n", "G21 G90 F500\n" + MOVES, 1)
+    result = verify(text, MILL)
+    assert result.verdict.label == "unknown", result.verdict
+    assert any(r.code == "GC390" and "after a" in r.message for r in result.reasons), result.reasons
+
+
+@pytest.mark.parametrize("many", [False, True])
+def test_break_of_a_loop_inside_an_if_runs(many):
+    """rs274_findings/break-in-if.ngc: LinuxCNC runs it (rs274: X1, then Y1); nczones refused the outer
+    ``o1 endif`` (GC314): the ifs opened inside the loop are left with it.  The loop body moves X#3 for #3 = 1
+    before the break at #3 = 2, then Y1."""
+    text = (FINDINGS / "break-in-if.ngc").read_text()
+    if many:
+        text = text.replace("G21 G90\n", "G21 G90\nF100\n" + MOVES, 1)
+    result = verify(text, MILL)
+    assert result.verdict.label != "unknown", result.reasons
