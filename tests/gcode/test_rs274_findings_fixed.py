@@ -100,3 +100,33 @@ def test_break_of_a_loop_inside_an_if_runs(many):
         text = text.replace("G21 G90\n", "G21 G90\nF100\n" + MOVES, 1)
     result = verify(text, MILL)
     assert result.verdict.label != "unknown", result.reasons
+
+
+def test_g5_in_g93_without_f_is_refused():
+    """rs274_findings/g93-spline-without-f.ngc: rs274 "F word missing with inverse time arc move" at
+    ``G5 X2 Y3 P1 Q1`` (G93, the F only on the block before); nczones ran it."""
+    for text in ("G21 G90 G93 F10\nG5 X1 Y1 I1 J0 P1 Q1 F20\nG5 X2 Y3 P1 Q1\nM2\n",
+                 "G21 G90 F100\n#1 = 3\n" + MOVES + "G93 F10\nG5 X1 Y1 I1 J0 P1 Q1 F20\nG5 X2 Y[#1] P1 Q1\nM2\n"):
+        with pytest.raises(GcodeError) as e:
+            verify(text, MILL)
+        assert "G93" in str(e.value) and "G5" in str(e.value)
+
+
+@pytest.mark.parametrize("many", [False, True])
+def test_modal_g5_1_without_ij_feeds_straight(many):
+    """rs274 on ``G21 G90 F100 / G1 X1 / G5.1 X8 Y2 I1 J0 / X10 Y4``: the modal block without I J is a
+    STRAIGHT_FEED(10, 4) (rs274_findings/g5-without-ij.ngc); ``G5.1 X8 Y2`` with its word is refused ("Must
+    specify both I and J with G5.1").  nczones refused the modal block (GC208)."""
+    pre = "G21 G90 F100\n#1 = 4\n" + (MOVES if many else "")
+    result = verify(pre + "G0 X0 Y0\nG1 X1\nG5.1 X8 Y2 I1 J0\nX10 Y[#1]\nM2\n", MILL)
+    assert result.verdict.label != "unknown", result.reasons
+    with pytest.raises(GcodeError):
+        verify(pre + "G1 X1\nG5.1 X8 Y2\nM2\n", MILL)
+
+
+def test_g5_without_ij_not_after_a_g5_is_unknown():
+    """rs274 runs ``G1 X1 / G5 X5 Y5 P1 Q1`` (a NURBS_FEED whose points ``rs274 -g`` does not print): unknown,
+    not the GC208 refusal it was."""
+    result = verify("G21 G90 F100\nG0 X0 Y0\nG1 X1\nG5 X5 Y5 P1 Q1\nM2\n", MILL)
+    assert result.verdict.label == "unknown"
+    assert any("G5 without I and J" in r.message for r in result.reasons), result.reasons
