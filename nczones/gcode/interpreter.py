@@ -1481,9 +1481,9 @@ class Interpreter:
             self.feed_mode = feed_mode
             if feed_mode in (94, 95):
                 self.feed = _ZERO
-        # not when G93 was in force at the restore either: rs274 restoring G94 over G93 F30 sets the feed to 0
-        # and refuses the next G1 (rs274_findings/restore-g93-feed.ngc)
-        if feed != old_feed and feed_mode != 93 and old_mode != 93:
+        # M72 (w, not an M73 return) over G93: rs274 restoring G94 over G93 F30 sets the feed to 0 and refuses
+        # the next G1 (rs274_findings/restore-g93-feed.ngc); an M73 return there restores F (generator seed 19)
+        if feed != old_feed and feed_mode != 93 and (old_mode != 93 or w is None):
             # gen_settings writes " F%.1f": the double rounded to one decimal (an F below 0.05 restores F0)
             self.feed = round(Fraction(float(feed)), 1)
         # " S%.0f" if the speed differs; M3/M4/M5 (gen_m_codes) if the direction does; None: not followed

@@ -130,3 +130,10 @@ def test_g5_without_ij_not_after_a_g5_is_unknown():
     result = verify("G21 G90 F100\nG0 X0 Y0\nG1 X1\nG5 X5 Y5 P1 Q1\nM2\n", MILL)
     assert result.verdict.label == "unknown"
     assert any("G5 without I and J" in r.message for r in result.reasons), result.reasons
+
+
+def test_m73_return_over_g93_restores_the_feed():
+    """Generator seed 19, minimised: ``o100 sub / M73 / G94 F300 / G93 F30 / o100 endsub / F500 / o100 call /
+    G1 Z-0.8``: rs274 runs the G1 (the return restores G94 and F500), unlike M72 over G93 (feed 0)."""
+    text = "o100 sub\nM73\nG94 F300\nG93 F30\no100 endsub\nG21 G90 G0 X0 Y0\nF500\no100 call\nG1 X1\nM2\n"
+    assert verify(text, MILL).verdict.label != "unknown"

@@ -50,6 +50,10 @@ RS274 = os.environ.get("RS274") or shutil.which("rs274") or "/usr/bin/rs274"
 #: that a mismatch here is a new finding; the lead drops a name from the default when its fix is merged.
 KNOWN_CLASSES = {
     # found by this generator (tests/gcode/data/rs274_findings/): left out so that the long run finds others
+    # unknown by design now (fixed on rs274-fix, tested in tests/gcode/test_rs274_findings_fixed.py): left out so
+    # that the CI seeds keep comparing motion
+    "finding-5021": "#5021-#5029, #5081-#5089: version-dependent (2.9.0~pre1 reads 0), unknown (GC305) by design",
+    "finding-g5-no-ij": "G5 without I J not after a G5: unknown by design (rs274 -g prints no control points)",
 }
 
 #: Rows of specs/gcode-support.md's tables (their first cell) each production of the generator writes;
@@ -449,7 +453,7 @@ class Generator:
               ("#<_lathe_radius_mode>", None),
               # lcnc-machine-units (class 16): LinuxCNC keeps these in machine units, the standalone rs274
               # in inches (its tool table and parameter file), nczones in mm
-              ("#5081", "lcnc-machine-units"), ("#5083", "lcnc-machine-units"), ("#5161", "lcnc-machine-units"),
+              ("#5081", "finding-5021"), ("#5083", "finding-5021"), ("#5161", "lcnc-machine-units"),
               ("#5163", "lcnc-machine-units"), ("#5181", "lcnc-machine-units"), ("#5211", "lcnc-machine-units"),
               ("#5213", "lcnc-machine-units"), ("#5221", "lcnc-machine-units"), ("#5223", "lcnc-machine-units"),
               ("#5241", "lcnc-machine-units"), ("#5383", "lcnc-machine-units"), ("#5403", "lcnc-machine-units"),
