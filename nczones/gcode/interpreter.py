@@ -1918,6 +1918,13 @@ class Interpreter:
         self.note_assumed(("units", "distance", "offset"))
         inter, deps = self.program_target(axis_words, False)
         self.emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
+        if axis_words and self.rot[self.wcs] and self.dialect == "linuxcnc" and not self.unsupported:
+            # rs274 (rs274_findings/rotated-g28-axis.ngc): G28 X-8 after G10 L2 P0 Y6 homes X in the
+            # rotated program frame, so machine Y moves too (nczones homed machine X only); not modelled
+            self.unknown(gname(k), f"{gname(k)} with axis words in a coordinate system rotated by G10 L2 R: "
+                         "LinuxCNC homes the named axes in the program frame (other machine axes move too); "
+                         "not modelled", w)
+            return
         home = self.home[k]
         end = list(self.pos)
         hdeps = [dict(d) for d in self.dep_pos] if self.track else None

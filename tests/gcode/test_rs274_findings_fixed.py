@@ -137,3 +137,14 @@ def test_m73_return_over_g93_restores_the_feed():
     G1 Z-0.8``: rs274 runs the G1 (the return restores G94 and F500), unlike M72 over G93 (feed 0)."""
     text = "o100 sub\nM73\nG94 F300\nG93 F30\no100 endsub\nG21 G90 G0 X0 Y0\nF500\no100 call\nG1 X1\nM2\n"
     assert verify(text, MILL).verdict.label != "unknown"
+
+
+@pytest.mark.parametrize("pre", ["", MOVES, "#1 = -8\n"])
+def test_g28_with_axis_words_in_a_rotated_system_is_unknown(pre):
+    """rs274_findings/rotated-g28-axis.ngc (recorded): after ``G10 L2 P0 Y6 R-39.9``, ``G28 X-8`` ends with
+    machine Y at -0.00001 in rs274 (X homed in the rotated program frame moves Y); nczones kept Y at 7.60034."""
+    x = "X[#1]" if pre.startswith("#") else "X-8"
+    text = f"G21 G90 F100\nG0 X0 Y0\n{pre}G10 L2 P0 Y6 R-39.9\nG28 {x}\nG0 X-1 Y-7 Z-10\nM2\n"
+    result = verify(text, MILL)
+    assert result.verdict.label == "unknown", result.verdict
+    assert any("rotated by G10 L2 R" in r.message for r in result.reasons), result.reasons
