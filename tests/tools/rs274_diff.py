@@ -291,7 +291,9 @@ class Generator:
             # goes on a line of its own
             sync = "G0 X0" if self.dist == "G91" else "G0 X[#<_x>]"
             return r.choice([[sync, f"T{t} M6"], [sync, f"T{t} M6", "G43"], [f"T{t}"], [sync, "M6"],
-                             [sync, f"M61 Q{t}"]])
+                             # after M61 the spindle slot's entry is unknown by design (G43, G41, #5400-#5410):
+                             # half the time a tool change follows, so later reads still compare
+                             [sync, f"M61 Q{t}"] + ([sync, f"T{t} M6"] if r.random() < 0.5 else [])])
         if roll == 6:
             return [f"G92 {self.axis_words()}"]
         if roll == 7:
