@@ -385,6 +385,9 @@ class Interpreter:
         self.spindle_dir: int | None = 0
         self.spindle_speed: Fraction | None = _ZERO
         self.tlo = _ZERO
+        #: the units (inch?) in force when the applied tool length was set: LinuxCNC 2.9's convert_length_units
+        #: does not convert its tool offset, so a G43/G49 after a G20/G21 moves the position by the stale number
+        self.tlo_inch: bool | None = None
         self.tool_register: int | None = None
         # ---- offsets (mm, machine axes)
         self.g5x = {name: list(machine.offset(name)) for name in WORK_OFFSETS}
@@ -1471,13 +1474,20 @@ class Interpreter:
         ``G92.3``/``G92.2``.  The motion mode is not restored."""
         (inch, absolute, arc_absolute, plane, wcs, feed_mode, feed, retract_r, comp, tlo_on, g92_on,
          diameter, spindle_dir, spindle_speed) = snap
-        old_feed, old_speed = self.feed, self.spindle_speed
+        old_feed, old_speed, old_mode = self.feed, self.spindle_speed, self.feed_mode
         if inch != self.inch:
             self._set_units(inch)
         if feed_mode != self.feed_mode:
             self.feed_mode = feed_mode
             if feed_mode in (94, 95):
                 self.feed = _ZERO
+        if old_mode == 93 and feed_mode != 93:
+            # rs274 restoring G94 over G93 F30 leaves the feed at 0 in rs274_findings/restore-g93-feed.ngc (M72)
+            # and in generator seed 7024 (M73), but restores F500 in seed 19 (a G94 F300 before the G93): the
+            # rule is not known here
+            self.unknown("M72" if w is not None else "M73", "the feed after restoring G94/G95 over G93 (M72, or "
+                         "the return of an M73 subroutine): LinuxCNC 2.9 leaves it at 0 or restores F depending on "
+                         "the state history; not modelled", w)
         if feed != old_feed and feed_mode != 93:
             # gen_settings writes " F%.1f": the double rounded to one decimal (an F below 0.05 restores F0)
             self.feed = round(Fraction(float(feed)), 1)
@@ -1510,6 +1520,13 @@ class Interpreter:
     def _tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
         k, w = g
         self.unset.discard("tool")
+        if self.tlo != 0 and self.tlo_inch is not None and self.tlo_inch != self.inch:
+            # rs274 (2.9.0~pre1): G21 G43 H1, G20, G49, G0 X1 moves Z by 12.66 inch for a 0.519 inch tool
+            # (current_z += the offset still in mm): the machine moves an axis the program does not name
+            self.unknown("G43", f"G{k // 10}{'.1' if k == 431 else ''} after a G20/G21 while a tool length is "
+                         "applied: LinuxCNC 2.9 keeps that length in the old units and moves the tool axis by the "
+                         "unconverted number; not modelled", w)
+        self.tlo_inch = self.inch
         if k == 490:
             self.tlo = _ZERO
             self.tool_register = None
@@ -1906,6 +1923,13 @@ class Interpreter:
         self.note_assumed(("units", "distance", "offset"))
         inter, deps = self.program_target(axis_words, False)
         self.emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
+        if axis_words and self.rot[self.wcs] and self.dialect == "linuxcnc" and not self.unsupported:
+            # rs274 (rs274_findings/rotated-g28-axis.ngc): G28 X-8 after G10 L2 P0 Y6 R-39.9 homes X in the
+            # rotated program frame, so machine Y moves too (nczones homed machine X only); not modelled
+            self.unknown(gname(k), f"{gname(k)} with axis words in a coordinate system rotated by G10 L2 R: "
+                         "LinuxCNC homes the named axes in the program frame (other machine axes move too); "
+                         "not modelled", w)
+            return
         home = self.home[k]
         end = list(self.pos)
         hdeps = [dict(d) for d in self.dep_pos] if self.track else None

@@ -249,6 +249,7 @@ class _Loop:
     head: tuple[int, int]  # (pos, lineno) of the while line / the line after do / repeat
     remaining: int = 0
     count: int = 0
+    ifs: int = 0  # the frame's open ifs when the loop began: a break/continue leaves those opened inside
 
 
 #: LinuxCNC's lathe cycles that read their profile from a subroutine (Q): G70, G71, G71.1, G71.2, G72, G72.1,
@@ -368,6 +369,8 @@ class Runner:
         #: (sub, label) -> (line, keyword) of the first if/while/repeat/do executed with that label in that sub
         #: ("" the main program): LinuxCNC's offset map refuses a label reused on another line
         self.control_lines: dict[tuple, tuple[int, str]] = {}
+        #: the first break/continue that ran (keyword, line): a loop beginning after it is unknown
+        self.jumped: tuple[str, int] | None = None
         self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
         self.scanned_all = False
         self.cache: dict[int, tuple] = {}  # offset -> (parsed line, line, next offset)
@@ -1138,8 +1141,12 @@ class Runner:
                 raise self.error("GC314", f"{_show(label)} endif without {_show(label)} if", lineno, line, col, end)
             frame.ifs.pop()
             return here
+        if kw in ("do", "repeat") or (kw == "while" and not (
+                frame.loops and frame.loops[-1].label == label and (
+                    frame.loops[-1].kind == "do" or frame.loops[-1].head == (pos, lineno)))):
+            self.loop_after_jump(kw, label, lineno, line, col, end)
         if kw == "do":
-            frame.loops.append(_Loop("do", label, here))
+            frame.loops.append(_Loop("do", label, here, ifs=len(frame.ifs)))
             return here
         if kw == "while":
             loops = frame.loops
@@ -1153,7 +1160,7 @@ class Runner:
             if loops and loops[-1].label == label and loops[-1].kind == "while" and loops[-1].head == (pos, lineno):
                 loop = loops[-1]
             else:
-                loop = _Loop("while", label, (pos, lineno))
+                loop = _Loop("while", label, (pos, lineno), ifs=len(frame.ifs))
                 loops.append(loop)
             if cond():
                 self.count(loop, lineno, line)
@@ -1170,7 +1177,7 @@ class Runner:
             if n <= 0:
                 _k, _p, ln, _l, after = self.skip_to(label, ("endrepeat",), nxt, lineno + 1, "repeat", line, lineno)
                 return after, ln + 1
-            loop = _Loop("repeat", label, here, remaining=n)
+            loop = _Loop("repeat", label, here, remaining=n, ifs=len(frame.ifs))
             self.count(loop, lineno, line)
             frame.loops.append(loop)
             return here
@@ -1184,6 +1191,10 @@ class Runner:
             return here
         if kw in ("break", "continue"):
             loop = self.innermost(frame, label, ("while", "do", "repeat"), kw, lineno, line, col, end)
+            # the ifs opened inside the loop are left with it (LinuxCNC runs rs274_findings/break-in-if.ngc)
+            del frame.ifs[loop.ifs:]
+            if self.jumped is None:
+                self.jumped = (kw, lineno)
             if kw == "continue":
                 if loop.kind == "while":
                     return loop.head
@@ -1203,6 +1214,16 @@ class Runner:
             _k, _p, ln, _l, after = self.skip_to(label, (end_kw,), nxt, lineno + 1, kw, line, lineno)
             return after, ln + 1
         raise AssertionError(kw)  # pragma: no cover
+
+    def loop_after_jump(self, kw: str, label: object, lineno: int, line: str, col: int, end: int) -> None:
+        """A loop that begins after a break or continue ran: LinuxCNC 2.9's loop state is then wrong (rs274 runs
+        a ``repeat [3]`` after a ``continue`` in a ``do`` 6 times, a ``do`` body after a ``break`` out of a
+        ``while`` once: rs274_findings/do-continue-repeat.ngc, while-break-then-do.ngc); not modelled."""
+        if self.jumped is not None:
+            jkw, jline = self.jumped
+            raise self.unsupported("GC390", f"o-word {kw} after a {jkw} (line {jline}): LinuxCNC 2.9 runs a loop "
+                                   "that begins after a break or continue a different number of times than "
+                                   "written (its loop state is left behind); not modelled", lineno, line, col, end)
 
     def control_label(self, frame: _Frame, label: object, kw: str, lineno: int, line: str, col: int,
                       end: int) -> None:

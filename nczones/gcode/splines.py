@@ -111,6 +111,10 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
     if it.comp_on:
         raise it.error("GC204", f"{name} cannot be used with cutter radius compensation on")
     it.check_feed()
+    if code in (50, 51) and it.feed_mode == 93 and "F" not in words:
+        # rs274: "F word missing with inverse time arc move" (rs274_findings/g93-spline-without-f.ngc)
+        raise it.error("GC305", f"inverse time feed (G93): every {name} block needs its own F word",
+                       g1[1] if g1 else None)
     it.note_assumed(("units", "distance", "offset", "plane"))
     pend = getattr(it, "spline_state", None)
     if code in (50, 51):
@@ -132,6 +136,12 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
 
         iw, jw = words.get("I"), words.get("J")
         if code == 51:
+            if iw is None and jw is None and not g1:
+                # a modal G5.1 block (no G5.1 word) without I J: rs274 2.9.0~pre1 feeds straight to its end
+                # (rs274_findings/g5-without-ij.ngc: STRAIGHT_FEED(10, 4)); with the word it refuses, as here
+                end_pt, deps = it.program_target(axis_words, False)
+                it.emit(SegmentKind.LINE, end_pt, feed=True, end_deps=deps)
+                return
             if iw is None or jw is None:
                 raise it.error("GC208", "G5.1 needs both I and J", g1[1] if g1 else None)
             ctrl = [cur, off(cur, it.length_mm(iw.value), it.length_mm(jw.value)), end]
@@ -145,7 +155,11 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
         if iw is None:
             prev = getattr(it, "_g5_next_ij", None)
             if prev is None:
-                raise it.error("GC208", "G5 without I and J needs a previous G5 (its -P, -Q are used)", g1[1] if g1 else None)
+                # LinuxCNC 2.9 runs it (rs274_findings/g5-without-ij.ngc: a NURBS_FEED whose control points rs274 -g
+                # does not print): its start direction is not known here
+                it.unknown("G5", "G5 without I and J that does not follow a G5: LinuxCNC 2.9 runs it with a start "
+                           "direction nczones does not model", g1[1] if g1 else None)
+                return
             di, dj = prev
         else:
             di, dj = it.length_mm(iw.value), it.length_mm(jw.value)

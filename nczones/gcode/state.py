@@ -248,6 +248,17 @@ def _not_under_comp(read: Callable[[StateSource], Reading]) -> Callable[[StateSo
     return guarded
 
 
+def _spindle_entry(read: Callable[[StateSource], Reading]) -> Callable[[StateSource], Reading]:
+    """A reading of the spindle slot's tool table entry: after T0 M6 or M61 rs274 keeps the entry that was there
+    (``#5400`` reads 0 after ``M61 Q2``, rs274_findings/m61-current-tool.ngc): unknown there."""
+    def guarded(it: StateSource) -> Reading:
+        if getattr(it, "_unloaded", False):
+            return None
+        return read(it)
+
+    return guarded
+
+
 def _tool_diameter(it: StateSource) -> Reading:
     get = getattr(it, "tool_diameter", None)
     d = get(it.tool_in_spindle) if get is not None else it.machine.tool_diameters.get(it.tool_in_spindle)
@@ -272,11 +283,14 @@ def linuxcnc_state_parameters() -> StateTable:
         t[key] = StateParameter(key, meaning, read)
 
     for k, a in enumerate(AXIS_LETTERS):
-        add(5021 + k, f"current {a} in machine coordinates (program units)",
-            _axis_reader(a, lambda it, i: it.state_machine_position(i), program_units=True))
+        machine_position = _axis_reader(a, lambda it, i: it.state_machine_position(i), program_units=True)
+        # rs274 of LinuxCNC 2.9.0~pre1 (the installed reference) reads #5021-#5029 and #5081-#5089 as 0 whatever
+        # the position and the applied tool length (newer LinuxCNC: the position, the length): version-dependent
+        add(5021 + k, f"current {a} in machine coordinates (LinuxCNC 2.9.0~pre1 reads 0, newer versions the "
+            "position: version-dependent)", _unknown)
         add(5061 + k, f"probe result {a}", _unknown)
-        add(5081 + k, f"tool length offset applied to {a} (G43)",
-            _tool_axis_only(lambda it: it.state_applied_tool_length(), a))
+        add(5081 + k, f"tool length offset applied to {a} (G43; LinuxCNC 2.9.0~pre1 reads 0, newer versions the "
+            "length: version-dependent)", _unknown)
         add(5161 + k, f"G28 position {a}",
             _axis_reader(a, lambda it, i: it.state_home(280, i), program_units=False))
         add(5181 + k, f"G30 position {a}",
@@ -285,13 +299,13 @@ def linuxcnc_state_parameters() -> StateTable:
             _axis_reader(a, lambda it, i: it.state_g92(i), program_units=False))
         for n, name in enumerate(WORK_OFFSET_NAMES):
             add(5221 + 20 * n + k, f"{name} {a} offset", _offset_reader(name, a))
-        add(5401 + k, f"stored {a} offset of the tool in the spindle (tool table)",
-            _tool_axis_only(lambda it: it.state_spindle_tool_length(), a))
+        add(5401 + k, f"stored {a} offset of the tool in the spindle (tool table; unknown after T0 M6 or M61)",
+            _spindle_entry(_tool_axis_only(lambda it: it.state_spindle_tool_length(), a)))
         position = _axis_reader(a, lambda it, i: it.state_program_position(i), program_units=True)
         add(5420 + k, f"current {a} in program coordinates", _not_under_comp(position))
         low = a.lower()
         add("_" + low, f"current {a} in program coordinates", position)
-        add("_abs_" + low, f"current {a} in machine coordinates (program units)", t[5021 + k].read)
+        add("_abs_" + low, f"current {a} in machine coordinates (program units)", machine_position)
     add(5070, "probe result", _unknown)
     add(5210, "G92 offset applied (1) or not (0)", lambda it: 1 if it.g92_applied else 0)
     add(5220, "active coordinate system (1 = G54 ... 9 = G59.3)",
@@ -299,8 +313,9 @@ def linuxcnc_state_parameters() -> StateTable:
     for n, name in enumerate(WORK_OFFSET_NAMES):
         add(5230 + 20 * n, f"{name} XY rotation (degrees, G10 L2 R)", lambda it, name=name: it.rot[name])
     add(5399, "M66 input wait result", _unknown)
-    add(5400, "tool in the spindle", lambda it: it.tool_in_spindle)
-    add(5410, "diameter of the tool in the spindle", _tool_diameter)
+    add(5400, "tool in the spindle (unknown after T0 M6 or M61: rs274 keeps the spindle slot's old entry)",
+        _spindle_entry(lambda it: it.tool_in_spindle))
+    add(5410, "diameter of the tool in the spindle (unknown after T0 M6 or M61)", _spindle_entry(_tool_diameter))
     for key, what in ((5411, "front angle"), (5412, "back angle"), (5413, "orientation")):
         add(key, f"lathe tool {what} of the tool in the spindle", _unknown)
     # #5599 (the (DEBUG,) output flag) is not state: an ordinary volatile parameter that starts at
