@@ -337,7 +337,7 @@ class CutterComp:
                 if tool == 0:
                     # D0 is the tool in the spindle: LinuxCNC find_tool_index gives tool 0 the spindle's entry
                     tool = it.tool_in_spindle
-            if (d is None or d.value == 0) and getattr(it, "_unloaded", False):
+            if (d is None or d.value == 0) and getattr(it, "spindle_slot_stale", False):
                 # as G43 without H: rs274 reads the spindle slot's table entry, which T0 M6 and M61 leave behind
                 # (rs274_findings/m61-current-tool.ngc: M61 Q4 G41 G1 X22.8 is offset by another diameter)
                 it.unknown(name, f"{name} of the tool in the spindle after T0 M6 or M61: LinuxCNC's interpreter "

@@ -1006,9 +1006,9 @@ class Interpreter:
         if 6 in mset:
             self._tool_change_moves()
             if self.tool_selected == 0 and self.tool_in_spindle != 0:
-                self._unloaded = True
+                self.spindle_slot_stale = True
             elif self.tool_selected != 0:
-                self._unloaded = False
+                self.spindle_slot_stale = False
             self.tool_in_spindle = self.tool_selected
             self.spindle_dir = 0  # LinuxCNC convert_tool_change stops the spindle (TOOL_CHANGE_WITH_SPINDLE_ON off)
         for k, d in ((3, 1), (4, -1), (5, 0), (19, 0)):
@@ -1019,7 +1019,7 @@ class Interpreter:
             if q is None or q.value.denominator != 1 or q.value < 0:
                 raise self.error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
             self.tool_in_spindle = int(q.value)
-            self._unloaded = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
+            self.spindle_slot_stale = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
         if mgroups.get(10) is not None:
             # LinuxCNC convert_m: M70-M73 after F, S, T and M6 of the block, before its G codes and motion
             self._modal_context(mgroups[10][0], mgroups[10][1])
@@ -1540,7 +1540,7 @@ class Interpreter:
                 reg = int(h.value) or self.tool_in_spindle
             else:
                 reg = self.tool_in_spindle
-            if (h is None or h.value == 0) and self._unloaded:
+            if (h is None or h.value == 0) and self.spindle_slot_stale:
                 # rs274 keeps the unloaded tool's entry in the spindle slot after T0 M6, and M61 changes only the
                 # number: G43 then applies the length of that entry
                 self.unknown("G43", "G43 of the tool in the spindle after T0 M6 or M61: LinuxCNC's interpreter "
@@ -2295,7 +2295,7 @@ class Interpreter:
 
     last_cycle: int | None = None
     _cycle_il_deps: dict = {}
-    _unloaded = False  # T0 M6 or M61 left the spindle slot's table entry behind the tool number
+    spindle_slot_stale = False  # T0 M6 or M61 left the spindle slot's table entry behind the tool number
     _cycle_il_axis = 0
 
     def _level_lt(self, a: tuple[Fraction, dict], b: tuple[Fraction, dict], i: int, what: str) -> bool:

@@ -252,7 +252,7 @@ def _spindle_entry(read: Callable[[StateSource], Reading]) -> Callable[[StateSou
     """A reading of the spindle slot's tool table entry: after T0 M6 or M61 rs274 keeps the entry that was there
     (``#5400`` reads 0 after ``M61 Q2``, rs274_findings/m61-current-tool.ngc): unknown there."""
     def guarded(it: StateSource) -> Reading:
-        if getattr(it, "_unloaded", False):
+        if getattr(it, "spindle_slot_stale", False):
             return None
         return read(it)
 
