@@ -252,7 +252,7 @@ def library_folder(path: str | list[str] | None) -> str | None:
     folders = [f for p in ([path] if isinstance(path, str) else path) for f in p.split(os.pathsep) if f]
     for folder in folders:
         if not os.path.isdir(folder):
-            raise InputError(Diagnostic("VF105", f"--library {folder!r}: not a folder of subprogram files",
+            raise InputError(Diagnostic("VF112", f"--library {folder!r}: not a folder of subprogram files",
                                         file="<command line>"))
     return os.pathsep.join(folders) if folders else None
 
