@@ -96,7 +96,6 @@ FAMILIES: tuple[Family, ...] = (
 )
 
 _E, _W, _N, _U, _R = KINDS
-_EU = f"{_E} / {_U}"
 
 _GS = "specs/gcode-support.md"
 _FA = "specs/fanuc.md"
@@ -112,9 +111,10 @@ _CI = "docs/ci.md"
 _RM = "README.md"
 
 #: Codes that still mean two things (one code, two unrelated problems): each is a debt, to be split by giving
-#: one meaning a new code.  The test fails when a code here is no longer doubly used (remove it then) and
+#: one meaning a new code.  Empty since issue 34 split VF105 (VF112) and GC301-GC305, GC311 (GC391-GC395,
+#: GC326).  The test fails when a code here is no longer doubly used (remove it then) and
 #: when a code not here is marked ``" / "`` in its kind.
-TWO_MEANINGS: frozenset[str] = frozenset({"GC301", "GC302", "GC303", "GC304", "GC305", "GC311"})
+TWO_MEANINGS: frozenset[str] = frozenset()
 
 CATALOGUE: tuple[Code, ...] = (
     # -- GC1xx: reading the program, lexical
@@ -161,24 +161,17 @@ CATALOGUE: tuple[Code, ...] = (
     Code("GC236", _E, _TU, "polar coordinate interpolation on a machine without the linear axis X and rotary "
                            "axis C"),
     # -- GC3xx: interpretation
-    Code("GC301", _EU, _GS, "an arc's end point off its circle by more than the arc tolerance (error); "
-                            "also a construct read but not supported, such as M97, G65-type calls, #3000 "
-                            "(unknown)"),
-    Code("GC302", _EU, _GS, "an R arc's radius too small to reach its end point (error); also a loop, "
-                            "M98 L repeat or lathe-cycle profile past max_iterations (unknown)"),
-    Code("GC303", _EU, _GS, "an R arc whose end point equals its start point (error); also a subroutine "
-                            "called but found in no file or folder (unknown)"),
-    Code("GC304", _EU, "", "a zero-radius arc (R0, or the centre at the start or end point) (error); also "
-                           "M99 in the main program, which restarts it forever (unknown)"),
-    Code("GC305", _EU, _GS, "a block the control refuses in its run-time state: feed 0, the spindle not "
-                            "turning for G33/G84/G95, an (ABORT, ...), polar words at the origin, G93 without F "
-                            "(error); also a read of controller state nczones does not know (unknown)"),
+    Code("GC301", _E, _GS, "an arc's end point off its circle by more than the arc tolerance"),
+    Code("GC302", _E, _MF, "an R arc's radius too small to reach its end point"),
+    Code("GC303", _E, "", "an R arc whose end point equals its start point: the centre is undefined"),
+    Code("GC304", _E, "", "a zero-radius arc (R0, or the centre at the start or end point)"),
+    Code("GC305", _E, _GS, "a block the control refuses in its run-time state: feed 0, the spindle not turning "
+                           "for G33/G84/G95, an (ABORT, ...), polar words at the origin, G93 without F"),
     Code("GC306", _E, "", "a canned cycle's retract plane R below its bottom"),
     Code("GC308", _E, "", "a plane, arc, cycle, spline or rotation needs axes this machine does not have"),
     Code("GC310", _E, _MF, "a tool register or named parameter the program uses is not defined (H not in "
                            "[tool_lengths], a lathe tool offset, #<name> never set)"),
-    Code("GC311", _E, _GS, "division or MOD by zero; also the move right after G40 is an arc (LinuxCNC "
-                           "requires a straight one)"),
+    Code("GC311", _E, _FA, "division or MOD by zero"),
     Code("GC312", _E, _FA, "a computation that cannot be done: a function's domain, overflow, infinity or "
                            "not a number, an expression nested too deep"),
     Code("GC313", _E, _GS, "a subroutine called but not defined where it must be (skipped definition, a folder "
@@ -197,10 +190,21 @@ CATALOGUE: tuple[Code, ...] = (
     Code("GC323", _E, _GS, "cutter compensation: the tool radius not less than an inside arc's radius"),
     Code("GC324", _E, _GS, "cutter compensation: a concave corner the tool cannot reach without gouging"),
     Code("GC325", _E, _GS, "cutter compensation: an operation LinuxCNC refuses while it is on"),
+    Code("GC326", _E, _GS, "cutter compensation: the move right after G40 is an arc (LinuxCNC requires a "
+                           "straight one; GC311 until issue 34)"),
     Code("GC329", _E, _GS, "cutter compensation: LinuxCNC's internal consistency checks"),
     Code("GC330", _E, _CY, "an arc that cannot be drawn in cylindrical or polar coordinate interpolation (R0, "
                            "equal start and end, a chord longer than 2|R|)"),
     Code("GC390", _U, _GS, "a construct nczones does not model; the message starts with the construct"),
+    Code("GC391", _U, _GS, "a Fanuc or Haas construct in a LinuxCNC program: a macro statement (IF, GOTO, "
+                           "WHILE), M97, G65-type calls, #3000, M99 P (GC301 until issue 34)"),
+    Code("GC392", _U, _GS, "a loop, an M98 L repeat or a lathe-cycle profile past max_iterations "
+                           "(GC302 until issue 34)"),
+    Code("GC393", _U, _GS, "a subroutine called but found in no file or folder; --library or the machine "
+                           "file's subroutine_path names where (GC303 until issue 34)"),
+    Code("GC394", _U, _GS, "M99 in the main program, which restarts it forever (GC304 until issue 34)"),
+    Code("GC395", _U, _GS, "controller state nczones does not know: a state parameter, HAL pin or INI value "
+                           "read, or a state parameter assigned (GC305 until issue 34)"),
     # -- ZN: machine file
     Code("ZN099", _E, _MF, "the machine file cannot be read (missing, a directory, no permission, not UTF-8)"),
     Code("ZN100", _E, _MF, "not valid TOML (or a controller configuration given as the machine file)"),
@@ -363,8 +367,9 @@ def render_page() -> str:
         "",
         "Every code nczones reports, once: a diagnostic (`error`: exit 2; `warning`, `note`: nothing stops), the",
         "code of a reason for the verdict `unknown`, or a SARIF rule. A code is stable: it keeps its meaning and",
-        "is never reused. \"Documented in\" names the page that says more. `error / unknown` marks a code still",
-        "raised both ways for two different problems (to be split; `TWO_MEANINGS` in the catalogue).",
+        "is never reused. \"Documented in\" names the page that says more; an empty cell: this page is its",
+        "documentation. A kind such as `error / unknown` would mark a code raised both ways for two problems, a",
+        "debt listed in `TWO_MEANINGS` of the catalogue (none is left).",
         "",
     ]
     entries = by_code()

@@ -105,7 +105,7 @@ def with_hints(exc: GcodeError, dialect: str) -> GcodeError:
 
 def unknown_hint(code: str, line: str, dialect: str) -> str:
     """A sentence for an ``unknown`` reason when the other dialect models the line's code, else ``""``."""
-    if dialect == "linuxcnc" and (code == "GC301" or code.startswith(("G68", "G65", "G66", "G51", "G50", "G15",
+    if dialect == "linuxcnc" and (code == "GC391" or code.startswith(("G68", "G65", "G66", "G51", "G50", "G15",
                                                                       "G16", "G54.1", "M97", "M99"))):
         if accepts(line, "fanuc"):
             return "; " + _hint("fanuc")

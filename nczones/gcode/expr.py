@@ -227,7 +227,7 @@ class Parameters:
         self._providers[self._key(key)] = getter
 
     def guard(self, key: int | str, reason: str) -> None:
-        """Make an assignment to ``#key`` by the program unknown (the language layer's GC305), for ``reason``."""
+        """Make an assignment to ``#key`` by the program unknown (the language layer's GC395), for ``reason``."""
         self._guarded[self._key(key)] = reason
 
     def guarded(self, key: int | str) -> str | None:
@@ -407,7 +407,7 @@ def evaluate(node: Any, params: Parameters) -> Value:
             return params.read(key)
         except KeyError:
             if isinstance(key, str) and (key.startswith(("_hal[", "_ini[")) or key in PREDEFINED):
-                raise EvalError("GC305", f"#<{key}> reads controller state (HAL pins, INI values, predefined "
+                raise EvalError("GC395", f"#<{key}> reads controller state (HAL pins, INI values, predefined "
                                 "parameters) that nobody provided") from None
             raise EvalError("GC310", f"named parameter #<{key}> is not defined") from None
     if tag == BIN:

@@ -691,7 +691,7 @@ class Interpreter:
         Every entry is computed on each read (the current position, offsets,
         tool, modes, ...); a read that depends on a parameter range, or of
         state nczones does not model, raises the language layer's "unknown"
-        (GC305) at that word; an assignment to an entry is unknown too.
+        (GC395) at that word; an assignment to an entry is unknown too.
         """
         self._scopes = getattr(params, "scopes", None)
         params.set(DEBUG_FLAG, DEBUG_FLAG_DEFAULT)  # #5599, an ordinary parameter that starts at 1
@@ -710,14 +710,14 @@ class Interpreter:
                 self.m73_returns()
             got = entry.read(self)
             if got is None:
-                raise EvalError("GC305", f"{_show_key(entry.key)} reads the {entry.meaning}, controller state "
+                raise EvalError("GC395", f"{_show_key(entry.key)} reads the {entry.meaning}, controller state "
                                          "nczones does not model")
             if type(got) is StateValue:
                 if self.ranged:
                     hit = sorted(n for n, c in got.deps.items() if c and n in self.ranged)
                     if hit:
                         raise EvalError(
-                            "GC305",
+                            "GC395",
                             f"{_show_key(entry.key)} ({entry.meaning}) depends on the parameter "
                             f"range{'s' if len(hit) > 1 else ''} {', '.join(hit)}; nczones does not follow a range "
                             "through expressions, so the program is verified only up to this read")
@@ -1129,7 +1129,7 @@ class Interpreter:
         moving = bool(axis_words or (g1 and g1[0] in (20, 30)))
         if moving and not nonmodal_uses_axes and self.motion is not None:
             if self.motion in (20, 30) and self.comp_just_off:
-                raise self.error("GC311", "the move just after turning off cutter compensation (G40) must be straight, not an arc", (g1[1] if g1 else axis_words[0][1]))
+                raise self.error("GC326", "the move just after turning off cutter compensation (G40) must be straight, not an arc", (g1[1] if g1 else axis_words[0][1]))
             self.comp_just_off = False
         if not nonmodal_uses_axes:
             if g53 and not (g1 and g1[0] in (0, 10)) and not (self.motion in (0, 10) and not g1):

@@ -745,7 +745,7 @@ class Runner:
                 return compiled(self.params)
             return evaluate(tree, self.params)
         except EvalError as e:
-            if e.code.startswith("GC30"):
+            if e.code.startswith(("GC39", "GC30")):  # GC39x: a reason for unknown (GC30x: before issue 34)
                 raise self.unsupported(e.code, e.message, lineno, line, col, end) from None
             raise self.error(e.code, e.message, lineno, line, col, end) from None
         except RecursionError:
@@ -765,7 +765,7 @@ class Runner:
             return (yield from self.execute_oword(pl, line, lineno, pos, nxt))
         if pl.unsupported is not None:
             reason, col, end = pl.unsupported
-            raise self.unsupported("GC301", reason, lineno, line, col, end)
+            raise self.unsupported("GC391", reason, lineno, line, col, end)
         params = self.params
         # every read on the line sees the values from before the line's assignments
         words: list[tuple] = []  # (letter, value, column, end column, text)
@@ -785,12 +785,12 @@ class Runner:
                     m99 = (col, end)
                     continue
                 if n == 97:
-                    raise self.unsupported("GC301", "M97 local subprogram calls (Haas) are not supported",
+                    raise self.unsupported("GC391", "M97 local subprogram calls (Haas) are not supported",
                                            lineno, line, col, end)
                 if n in (2, 30):
                     stop = True
             if letter == "G" and 65 <= value.numerator // value.denominator <= 67 and value in G_MACRO_CALLS:
-                raise self.unsupported("GC301", f"G{value} macro calls are not supported", lineno, line, col, end)
+                raise self.unsupported("GC391", f"G{value} macro calls are not supported", lineno, line, col, end)
             words.append((letter, value, col, end, text))
         values = []
         for target, tree, col, end in pl.assigns:
@@ -799,14 +799,14 @@ class Runner:
             except EvalError as e:
                 raise self.error(e.code, e.message, lineno, line, col, end) from None
             if key in (3000, 3006):
-                raise self.unsupported("GC301", f"#{key} (Fanuc alarm / message stop) is not supported",
+                raise self.unsupported("GC391", f"#{key} (Fanuc alarm / message stop) is not supported",
                                        lineno, line, col, end)
             if read_only(key):
                 raise self.error("GC318", f"#<{key}> is read-only: LinuxCNC refuses to assign it (only a "
                                  "program's own parameters may be assigned)", lineno, line, col, end)
             guarded = params.guarded(key)
             if guarded is not None:
-                raise self.unsupported("GC305", guarded, lineno, line, col, end)
+                raise self.unsupported("GC395", guarded, lineno, line, col, end)
             values.append((key, self.evaluate(tree, lineno, line, col, end)))
         for key, value in values:
             params.write(key, value)
@@ -847,7 +847,7 @@ class Runner:
             return self.call_m98(pword, lword, m98, line, lineno, nxt)
         if m99 is not None:
             if pword is not None:
-                raise self.unsupported("GC301", "M99 P (return to a sequence number) is not supported",
+                raise self.unsupported("GC391", "M99 P (return to a sequence number) is not supported",
                                        lineno, line, *m99)
             return self.return_m99(m99, line, lineno)
         return nxt, lineno + 1
@@ -880,7 +880,7 @@ class Runner:
         while len(self.frames) > depth:
             steps += 1
             if steps > self.max_loops:
-                raise self.unsupported("GC302", f"the profile o{label} of a lathe cycle did not return within "
+                raise self.unsupported("GC392", f"the profile o{label} of a lathe cycle did not return within "
                                        f"{self.max_loops} lines (max_loop_iterations)", lineno, line,
                                        cls=IterationBoundExceeded)
             text, nxt = self.src.line_at(pos)
@@ -926,7 +926,7 @@ class Runner:
         if count == 0:
             return nxt, lineno + 1
         if count > self.max_loops:
-            raise self.unsupported("GC302", f"M98 P{pword.text[1:]} L{lword.text[1:] if lword else ''} repeats "
+            raise self.unsupported("GC392", f"M98 P{pword.text[1:]} L{lword.text[1:] if lword else ''} repeats "
                                    f"{count} times, more than {self.max_loops} (max_loop_iterations, "
                                    "--max-iterations); not interpreted further", lineno, line, *loc,
                                    cls=IterationBoundExceeded)
@@ -943,9 +943,9 @@ class Runner:
         return body
 
     def value_unknown(self, why: str) -> None:
-        """``#<_value>`` and ``#<_value_returned>`` read as unknown (GC305) until the next endsub, return or M99."""
+        """``#<_value>`` and ``#<_value_returned>`` read as unknown (GC395) until the next endsub, return or M99."""
         def unknown() -> object:
-            raise EvalError("GC305", why)
+            raise EvalError("GC395", why)
 
         for key in ("_value", "_value_returned"):
             self.params.provide(key, unknown)
@@ -965,7 +965,7 @@ class Runner:
     def return_m99(self, loc: tuple[int, int], line: str, lineno: int) -> tuple[int, int]:
         frame = self.frames[-1]
         if frame.kind == "main":
-            raise self.unsupported("GC304", "M99 in the main program restarts it forever; endless programs "
+            raise self.unsupported("GC394", "M99 in the main program restarts it forever; endless programs "
                                    "are not supported", lineno, line, *loc)
         if frame.kind != "m98":
             raise self.error("GC315", f"M99 inside {_show(frame.label)} sub; an 'o.. sub' subroutine ends with "
@@ -1094,7 +1094,7 @@ class Runner:
                              if self.library else
                              " (pass --library DIR, or name LinuxCNC's SUBROUTINE_PATH in the machine file, to read "
                              "subroutine files)")
-                    raise self.unsupported("GC303", f"subroutine o<{label}> is not defined in this file{where}",
+                    raise self.unsupported("GC393", f"subroutine o<{label}> is not defined in this file{where}",
                                            lineno, line, col, end)
                 if label in self.fanuc:
                     raise self.error("GC313", f"o{label} is a Fanuc subprogram (O{label} ... M99); call it with "
@@ -1275,7 +1275,7 @@ class Runner:
     def count(self, loop: _Loop, lineno: int, line: str) -> None:
         loop.count += 1
         if loop.count > self.max_loops:
-            raise self.unsupported("GC302", f"{_show(loop.label)} {loop.kind} loop ran more than "
+            raise self.unsupported("GC392", f"{_show(loop.label)} {loop.kind} loop ran more than "
                                    f"{self.max_loops} iterations (max_loop_iterations); not interpreted further",
                                    lineno, line, cls=IterationBoundExceeded)
         self.budget_left(f"{_show(loop.label)} {loop.kind} loop had run {loop.count} iterations", lineno, line)

@@ -261,12 +261,12 @@ def test_max_iterations_bounds_loops(tmp_path):
     assert nczones("verify", "loop.ngc", "--machine", MILL, cwd=tmp_path).returncode == 0
     r = nczones("verify", "loop.ngc", "--machine", MILL, "--max-iterations", "10", cwd=tmp_path)
     assert r.returncode == 3
-    assert "loop.ngc:2:1: unknown[GC302]: o100 while loop ran more than 10 iterations (max_loop_iterations)" in r.stdout
+    assert "loop.ngc:2:1: unknown[GC392]: o100 while loop ran more than 10 iterations (max_loop_iterations)" in r.stdout
     bad = nczones("verify", "loop.ngc", "--machine", MILL, "--max-iterations", "0", cwd=tmp_path)
     assert bad.returncode == 2
     assert bad.stderr == "<command line>: error[VF105]: --max-iterations 0: must be at least 1\n"
     sim = nczones("simulate", "loop.ngc", "--machine", MILL, "--max-iterations", "10", cwd=tmp_path)
-    assert sim.returncode == 2 and "GC302" in sim.stdout
+    assert sim.returncode == 2 and "GC392" in sim.stdout
 
 
 def test_simulate_and_plot_take_the_same_inputs(tmp_path):

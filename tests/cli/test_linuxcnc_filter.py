@@ -315,5 +315,5 @@ def test_unknown_program_is_refused_with_the_reason(tmp_path, capsys):
     assert main(["linuxcnc-filter", str(program), "--machine", str(ROOT / "specs/machines/grinder.toml")]) == 3
     out, err = capsys.readouterr()
     assert out == "" and "sub.ngc could NOT be proved safe and was not loaded (verdict unknown)" in err
-    assert "  line 3 [GC303]: subroutine o<foo> is not defined" in err and "GC303: GC303" not in err
+    assert "  line 3 [GC393]: subroutine o<foo> is not defined" in err and "GC393: GC393" not in err
     assert list(tmp_path.glob("sub.ngc.nczones.*"))

@@ -22,7 +22,7 @@ dialect.  Not accepted, each with the reason in :data:`NOT_ACCEPTED`:
   parameter read after the return);
 * they need files or settings outside the program, which a program-only run
   cannot have and LinuxCNC run without them rejects: external subroutine
-  files (``o<name> call`` of a sub not in the file; our ``GC303``), user
+  files (``o<name> call`` of a sub not in the file; our ``GC393``), user
   M codes M100-M199 (executables in the PROGRAM_PREFIX directory), codes
   remapped in an INI file (M11-M13 laser raster, M428/M429 and G68.2/G69
   5-axis kinematics), HAL pins and INI values read as parameters
@@ -90,7 +90,7 @@ NOT_ACCEPTED: dict[str, str] = {
     "wz-tests/130207L.ngc": "M111 is a user M code (external file M111)",
 }
 #: Outcome codes that mean "needs a file outside the program" whatever the path.
-NEEDS_OUTSIDE_CODES = {"GC303": "calls a subroutine that is not in the file (LinuxCNC searches SUBROUTINE_PATH)"}
+NEEDS_OUTSIDE_CODES = {"GC393": "calls a subroutine that is not in the file (LinuxCNC searches SUBROUTINE_PATH)"}
 
 
 programs = corpus_programs

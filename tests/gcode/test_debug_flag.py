@@ -4,7 +4,7 @@ LinuxCNC's manual: "#5599 - Flag for controlling the output of (DEBUG,) statemen
 default=1" (volatile).  ``rs274 -g`` on ``G0 X[#5599]`` / ``#5599 = 0`` / ``G0 X[#5599 + 3]`` prints
 ``STRAIGHT_TRAVERSE(1.0000, ...)`` then ``STRAIGHT_TRAVERSE(3.0000, ...)``: it reads 1 before any
 assignment and the assigned value after.  nczones made every program that sets it (shops set it at the top of
-programs and subroutines) unknown (GC305).  Checked here in every lane: the full interpreter, the double pass
+programs and subroutines) unknown (GC395).  Checked here in every lane: the full interpreter, the double pass
 (the programs hold '#'), and the vectorized tier (> 512 motions).
 """
 

@@ -196,17 +196,17 @@ def test_m98_block_keeps_its_other_words():
 def test_loop_bound_is_a_clear_unknown_not_a_hang():
     with pytest.raises(IterationBoundExceeded) as e:
         list(iter_blocks("o1 while [1]\nG0 X1\no1 endwhile\n", "loop.ngc", max_loop_iterations=50))
-    assert e.value.code == "GC302" and e.value.span.line == 1
+    assert e.value.code == "GC392" and e.value.span.line == 1
     assert "50" in e.value.reason
     assert isinstance(e.value, UnsupportedGcode) and not isinstance(e.value, GcodeError)
 
 
 @pytest.mark.parametrize(
     "prog, code, line",
-    [("G0 X1\nG65 P9010 A1\n", "GC301", 2), ("IF [#1 GT 0] GOTO 10\n", "GC301", 1),
-     ("WHILE [#1 LT 3] DO1\n", "GC301", 1), ("#3000 = 1 (ALARM)\n", "GC301", 1), ("M97 P100\n", "GC301", 1),
-     ("o<probe_it> call\n", "GC303", 1), ("G0 X1\nM99\n", "GC304", 2), ("G0 X#<_hal[x.pos]>\n", "GC305", 1),
-     ("G0 X#<_x>\n", "GC305", 1)],
+    [("G0 X1\nG65 P9010 A1\n", "GC391", 2), ("IF [#1 GT 0] GOTO 10\n", "GC391", 1),
+     ("WHILE [#1 LT 3] DO1\n", "GC391", 1), ("#3000 = 1 (ALARM)\n", "GC391", 1), ("M97 P100\n", "GC391", 1),
+     ("o<probe_it> call\n", "GC393", 1), ("G0 X1\nM99\n", "GC394", 2), ("G0 X#<_hal[x.pos]>\n", "GC395", 1),
+     ("G0 X#<_x>\n", "GC395", 1)],
 )
 def test_unsupported_language_is_reported_with_line(prog, code, line):
     gen = iter_blocks(prog, "u.ngc")

@@ -79,6 +79,6 @@ def test_nested_loops_end_within_the_budget(hash_):
 
 
 def test_repeat_loop_ends_within_the_budget():
-    # o1 repeat [99999999] counts its iterations (GC302 past 100,000); the budget ends it before
+    # o1 repeat [99999999] counts its iterations (GC392 past 100,000); the budget ends it before
     r = _run("o1 repeat [99999999]\nG91 G1 X0.001 F100\nG1 X-0.001\nG90\no1 endrepeat\nM2\n", budget_s=1)
-    assert r.verdict.label == "unknown" and r.reasons[0].code in ("VF203", "GC302"), r.reasons
+    assert r.verdict.label == "unknown" and r.reasons[0].code in ("VF203", "GC392"), r.reasons

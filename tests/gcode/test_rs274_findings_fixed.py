@@ -7,7 +7,7 @@
   (mm): Z = (-0.519 + 13.1826) inch = 12.6636 inch = 321.655 mm, a Z move the program does not write.
   nczones does not model it: the verdict is ``unknown`` naming G49, never the ``safe`` of a Z that stays.
 * ``#5021``-``#5029`` and ``#5081``-``#5089``: rs274 2.9.0~pre1 reads 0 (param-5021.ngc), newer LinuxCNC the
-  position / applied length: ``unknown`` (GC305), version-dependent.
+  position / applied length: ``unknown`` (GC395), version-dependent.
 """
 from __future__ import annotations
 

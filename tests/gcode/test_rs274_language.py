@@ -217,7 +217,7 @@ def test_value_after_a_definition_whose_endsub_reads_a_local_is_unknown():
     the corpus's probe macros end with such an endsub)."""
     run = interpret_text("o1 sub\n#<y> = 1\no1 endsub [#<y>]\nG0 X1\nG0 X#<_value>\nM2\n", CLAMP_X0)
     assert len([s for c in run for s in c.segments()]) == 1
-    assert [(u.code, u.span.line) for u in run.unsupported] == [("GC305", 5)]
+    assert [(u.code, u.span.line) for u in run.unsupported] == [("GC395", 5)]
     assert moves("o1 sub\n#<y> = 1\no1 endsub [#<y>]\no2 sub\no2 endsub\nG0 X#<_value>\nM2\n", CLAMP_X0) == rows(
         ("RAPID", 0, 0, 0))  # the next endsub sets it again
 

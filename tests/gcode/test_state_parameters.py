@@ -128,7 +128,7 @@ def test_a_read_that_depends_on_a_range_is_unknown_at_the_read():
     result = verify(program, machine, params=["G54.X=-1..1"])
     assert result.verdict.label == "unknown"
     (reason,) = result.reasons
-    assert reason.code == "GC305" and reason.span.line == 3 and reason.span.column == 8
+    assert reason.code == "GC395" and reason.span.line == 3 and reason.span.column == 8
     assert "G54.X" in reason.message
     # a range the read does not depend on keeps the proof
     assert verify(program, machine, params=["G54.Y=-1..1"]).verdict.label == "safe"
@@ -156,7 +156,7 @@ def test_range_dependencies_follow_the_state(program, param, unknown):
     list(run.segments())
     assert bool(run.unsupported) is unknown, run.unsupported
     if unknown:
-        assert run.unsupported[0].code == "GC305" and param.split("=")[0] in run.unsupported[0].reason
+        assert run.unsupported[0].code == "GC395" and param.split("=")[0] in run.unsupported[0].reason
 
 
 def test_g28_1_and_g92_3_keep_the_dependencies_of_what_they_stored():
@@ -178,7 +178,7 @@ def test_state_nczones_does_not_model_is_unknown(expr):
     segs = list(run.segments())
     assert len(segs) == 1  # the move before the read
     (u,) = run.unsupported
-    assert u.code == "GC305" and u.span.line == 2 and "does not model" in u.reason
+    assert u.code == "GC395" and u.span.line == 2 and "does not model" in u.reason
 
 
 # (#<_x> = 2 is LinuxCNC's error "Cannot assign to read-only parameter": tests/gcode/test_rs274_language.py)
@@ -188,7 +188,7 @@ def test_assigning_state_is_unknown(assign):
         run = interpret(program, MILL)
         segs = list(run.segments())
         assert len(segs) == 1
-        assert run.unsupported[0].code == "GC305" and run.unsupported[0].span.line == 2
+        assert run.unsupported[0].code == "GC395" and run.unsupported[0].span.line == 2
 
 
 def test_the_table_covers_the_linuxcnc_state_parameters():
@@ -212,8 +212,8 @@ def test_5021_and_5081_are_version_dependent(program):
     """rs274 of LinuxCNC 2.9.0~pre1 (the installed reference, tests/gcode/data/rs274_findings/param-5021.ngc):
     ``(debug, #5021)`` after ``G0 X10`` prints 0.000000 and ``#5083`` after ``T1 M6 G43 H1`` (Z 0.519 inch in
     the tool table) prints 0.000000; newer LinuxCNC reads the position and the applied length.  A program
-    that moves by them is ``unknown`` (GC305), not proved for one version."""
+    that moves by them is ``unknown`` (GC395), not proved for one version."""
     run = interpret(program + "M30\n", MILL)
     list(run.segments())
-    assert [u.code for u in run.unsupported] == ["GC305"], run.unsupported
+    assert [u.code for u in run.unsupported] == ["GC395"], run.unsupported
     assert "version-dependent" in run.unsupported[0].reason

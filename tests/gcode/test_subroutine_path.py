@@ -64,7 +64,7 @@ def load_machine_text(text: str):
 def test_without_a_library_the_call_stays_unknown_and_says_how():
     result = verify(_program("10"), load_machine(MILL), file="main.ngc")
     assert result.verdict.label == "unknown"
-    (reason,) = [r for r in result.reasons if r.code == "GC303"]
+    (reason,) = [r for r in result.reasons if r.code == "GC393"]
     assert "--library" in reason.message and "SUBROUTINE_PATH" in reason.message
 
 
@@ -219,8 +219,8 @@ def test_the_command_line_takes_library_repeated_or_as_a_path_list(tmp_path: Pat
     assert f"{subs / 'square.ngc'}:2:1: violation[travel]" in out
     assert main(base + ["--library", os.pathsep.join((str(empty), str(subs)))]) == 1
     capsys.readouterr()
-    assert main(base + ["--library", str(empty)]) == 3  # unknown: GC303
-    assert "GC303" in capsys.readouterr().out
+    assert main(base + ["--library", str(empty)]) == 3  # unknown: GC393
+    assert "GC393" in capsys.readouterr().out
     assert main(base + ["--library", str(tmp_path / "nothere")]) == 2
     # VF112, its own code: VF105 is --max-iterations (issue 34: one code, one meaning)
     assert "error[VF112]: --library" in capsys.readouterr().err

@@ -148,7 +148,7 @@ def test_the_iteration_bound_is_unknown_not_safe(monkeypatch):
     machine = machine_of("box", 100, 0)
     with_pass, without = both_ways(LOOP, machine, monkeypatch, max_iterations=199)
     same_outcome(with_pass, without)
-    assert with_pass.verdict is Verdict.UNKNOWN and with_pass.reasons[0].code == "GC302"
+    assert with_pass.verdict is Verdict.UNKNOWN and with_pass.reasons[0].code == "GC392"
     with_pass, without = both_ways(LOOP, machine, monkeypatch, max_iterations=200)  # 200 iterations are allowed
     same_outcome(with_pass, without)
     assert with_pass.verdict is Verdict.SAFE

@@ -52,7 +52,7 @@ KNOWN_CLASSES = {
     # found by this generator (tests/gcode/data/rs274_findings/): left out so that the long run finds others
     # unknown by design now (fixed on rs274-fix, tested in tests/gcode/test_rs274_findings_fixed.py): left out so
     # that the CI seeds keep comparing motion
-    "finding-5021": "#5021-#5029, #5081-#5089: version-dependent (2.9.0~pre1 reads 0), unknown (GC305) by design",
+    "finding-5021": "#5021-#5029, #5081-#5089: version-dependent (2.9.0~pre1 reads 0), unknown (GC395) by design",
     "finding-g5-no-ij": "G5 without I J not after a G5: unknown by design (rs274 -g prints no control points)",
 }
 

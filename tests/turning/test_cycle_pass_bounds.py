@@ -130,7 +130,7 @@ M2
 def test_linuxcnc_g71_passes_are_compared_with_max_iterations(hash_):
     """G71 Q1 X10 Z1 I0.5 on the profile (Z1 X4) (Z-10 X4) (Z-10 X10): as with I2 (levels 10, 8, 6, then the
     profile's bottom 4 is followed: tests/turning/test_linuxcnc_g7x.py derives these passes) the cuts are at the
-    levels 10 - 0.5 k above 4 (radius), k = 0..11: 12 cuts.  (The profile's 3 lines count too, GC302.)"""
+    levels 10 - 0.5 k above 4 (radius), k = 0..11: 12 cuts.  (The profile's 3 lines count too, GC392.)"""
     text = hash_ + LC.format(cycle="G71 Q1 X10 Z1 D0 I0.5 R0.5")
     line = 8 + bool(hash_)
     _not_bounded(_verify(text, LC_LATHE, max_iterations=12))
