@@ -16,6 +16,10 @@ export-zones`` could not write into a control's settings.
 
 Anything else that escapes is an internal bug and is reported as such by the
 command line.
+
+Every code, with its kind and one-line meaning, is listed once in
+:mod:`nczones.error_codes` (``specs/errors.md`` is generated from it); a new
+code is added there.
 """
 
 from __future__ import annotations

@@ -17,7 +17,7 @@ import pytest
 
 from nczones import error_codes
 from nczones.errors import GcodeError
-from nczones.machine import load_machine, parse_machine
+from nczones.machine import Machine, load_machine, parse_machine
 from nczones.prover import verify_text
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -54,7 +54,7 @@ def test_each_interpreter_reason_for_unknown_has_its_own_code(code, old, body, o
     assert error_codes.by_code()[old].kind == "error"  # the old number keeps its error only
 
 
-def _comp_machine() -> object:
+def _comp_machine() -> Machine:
     """A mill with LinuxCNC cutter compensation and tool 1 of diameter 2 (as tests/gcode/test_cutter_comp.py)."""
     return parse_machine('''
 [machine]
@@ -84,7 +84,8 @@ def test_an_arc_right_after_g40_is_gc326_and_division_by_zero_stays_gc311(lane):
     with pytest.raises(GcodeError) as e:
         verify_text(text, _comp_machine())
     assert e.value.code == "GC326" and "G40" in e.value.diagnostics[0].message
-    assert e.value.diagnostics[0].span.line == text.count("\n") - 1  # the G2 line
+    span = e.value.diagnostics[0].span
+    assert span is not None and span.line == text.count("\n") - 1  # the G2 line
     with pytest.raises(GcodeError) as e:
         verify_text(HEAD + LANES[lane] + "#2 = [1 / 0]\nG0 X#2\nM2\n", MILL)
     assert e.value.code == "GC311" and "divide by zero" in e.value.diagnostics[0].message

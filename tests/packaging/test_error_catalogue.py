@@ -11,6 +11,8 @@ import re
 from collections import defaultdict
 from pathlib import Path
 
+import pytest
+
 from nczones import error_codes as ec
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -147,7 +149,7 @@ def test_no_code_is_defined_by_two_tables() -> None:
                        + "\n".join(f"  {c}: {' / '.join(w)}" for c, w in sorted(twice.items())))
 
 
-def test_the_generator_writes_and_checks(tmp_path: Path, monkeypatch, capsys) -> None:
+def test_the_generator_writes_and_checks(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(tmp_path)
     (tmp_path / "specs").mkdir()
     assert ec.main(["--check"]) == 1
