@@ -123,8 +123,8 @@ CATALOGUE: tuple[Code, ...] = (
                            "text after ';' in the fanuc dialect, '/0', a comment inside a word, a wrong path header)"),
     Code("GC102", _E, "", "a comment not closed: missing ')'"),
     Code("GC103", _E, "", "a nested comment: '(' inside a comment (LinuxCNC)"),
-    Code("GC104", _E, "specs/contract.md", "a number expected and not found, or a number too large "
-                                           "(a letter without a value, a bad sequence number)"),
+    Code("GC104", _E, "", "a number expected and not found, or a number too large "
+                          "(a letter without a value, a bad sequence number)"),
     Code("GC105", _E, _FA, "a malformed expression: brackets not closed or nested too deep, a function "
                            "without its bracketed arguments"),
     Code("GC106", _E, "", "an unknown function name in an expression (the message lists the known ones)"),
@@ -222,7 +222,7 @@ CATALOGUE: tuple[Code, ...] = (
     Code("ZN113", _E, _MF, "a tip zone on a machine without a tool axis"),
     Code("ZN114", _E, _MF, "a setting not among its choices (type, dialect, cutter_compensation, arc_tolerance, "
                            "block_delete, control_units, [fanuc] keys)"),
-    Code("ZN115", _W, _MF, "a section or key read only in another dialect (ignored)"),
+    Code("ZN115", _W, _MF, "a section or key this machine's dialect or type does not read (ignored)"),
     Code("ZN120", _E, _MF, "an empty zone"),
     Code("ZN121", _E, _MF, "upto not strictly increasing"),
     Code("ZN122", _E, _MF, "min greater than max"),
@@ -301,7 +301,7 @@ CATALOGUE: tuple[Code, ...] = (
     Code("RC203", _U, _RE, "recovery: a thin set the proof cannot decide"),
     Code("RC204", _U, _RE, "recovery over parameter ranges is not modelled"),
     # -- SM: simulate
-    Code("SM101", _E, "", "a time option (ms) that is not a non-negative decimal"),
+    Code("SM101", _E, "", "--accdec-before-ms / --accdec-after-ms: not a non-negative decimal number of ms"),
     Code("SM102", _E, "", "simulate --max-iterations below 1"),
     Code("SM110", _E, _RE, "--break-at: the line has no cutting motion that ran"),
     Code("SM111", _E, _RE, "--break-at: malformed (not LINE[:FRACTION])"),
