@@ -6,8 +6,9 @@ the single source: ``specs/errors.md`` is generated from it
 (``python -m nczones.error_codes --write``), and
 ``tests/packaging/test_error_catalogue.py`` fails when a code in the package
 source is not here, a code here is used nowhere (unless reserved or retired),
-a code is listed twice, the page is stale, or a spec names a code that is not
-here.
+a code is listed twice, a code is raised as another kind than listed here (an
+error code as a reason for unknown: a second meaning), the page is stale, or
+a spec names a code that is not here.
 
 The kinds:
 

@@ -2,7 +2,10 @@
 with its meaning, and ``specs/errors.md`` is generated from it.
 
 The package source is scanned for code literals (``"GC101"``, ``'ZN148'``: two or three capital letters
-and three digits in quotes); the specs and docs for code mentions.  Each failure says what to change where.
+and three digits in quotes); the specs and docs for code mentions.  Where a literal is the first argument of
+a call whose kind is known (``self.error(...)``, ``self.unsupported(...)``, ``c.note(...)``), the kind must be
+the catalogue's: an error code raised as a reason for ``unknown`` is a second meaning.  Each failure says what
+to change where.
 """
 
 from __future__ import annotations
@@ -26,6 +29,16 @@ _ROW = re.compile(r"^\|\s*`?([A-Z]{2,3}\d{3})`?\s*\|\s*(.*?)\s*\|", re.M)
 
 _REGEN = "then regenerate the page: python -m nczones.error_codes --write"
 
+#: The call a code literal is the first argument of tells its kind (``self.error("GC201", ...)``,
+#: ``self.unsupported("GC392", ...)``, ``c.note("IM201", ...)``); other sites are not classified.
+_CALL = re.compile(r"([A-Za-z_][\w.]*)\(\s*$")
+_CALL_KINDS = {
+    **dict.fromkeys(("error", "Diagnostic", "fail", "_Fail", "_fail", "_usage", "_error", "_command_line_error",
+                     "report"), "error"),
+    **dict.fromkeys(("unsupported", "unknown", "Reason", "PassBound"), "unknown"),
+    **dict.fromkeys(("note", "add"), "note"),
+}
+
 
 def _used() -> dict[str, list[str]]:
     """Every code literal in the package source (the catalogue itself excluded) -> its places."""
@@ -37,6 +50,27 @@ def _used() -> dict[str, list[str]]:
         for lineno, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
             for m in _LITERAL.finditer(line):
                 out[m.group(2)].append(f"{rel}:{lineno}")
+    return out
+
+
+def _raised_as() -> dict[str, dict[str, list[str]]]:
+    """code -> kind -> places, for the literals that are the first argument of a call whose kind is known."""
+    out: dict[str, dict[str, list[str]]] = defaultdict(lambda: defaultdict(list))
+    for path in sorted(PACKAGE.rglob("*.py")):
+        rel = path.relative_to(ROOT).as_posix()
+        if rel == CATALOGUE_FILE:
+            continue
+        lines = path.read_text(encoding="utf-8").splitlines()
+        for i, line in enumerate(lines):
+            for m in _LITERAL.finditer(line):
+                before = line[:m.start()] if line[:m.start()].strip() or not i else lines[i - 1]
+                call = _CALL.search(before)
+                name = call.group(1).rsplit(".", 1)[-1] if call else ""
+                # the language layer's EvalError: GC39x is a reason for unknown (program.py), the rest errors
+                kind = ("unknown" if m.group(2).startswith("GC39") else "error") if name == "EvalError" \
+                    else _CALL_KINDS.get(name)
+                if kind is not None:
+                    out[m.group(2)][kind].append(f"{rel}:{i + 1}")
     return out
 
 
@@ -85,6 +119,22 @@ def test_each_code_once_in_its_family_with_a_kind_and_a_meaning() -> None:
         if len(kinds) > 1:
             assert c.code in ec.TWO_MEANINGS, (f"{c.code} is raised as {c.kind}: one code, two meanings; give "
                                                f"one of them a new code (or list it in TWO_MEANINGS, as a debt)")
+
+
+def test_each_code_is_raised_as_its_kind_only() -> None:
+    """An error code raised as a reason for unknown (or the reverse) is a second meaning: give it a new code."""
+    known = ec.by_code()
+    wrong = []
+    for code, kinds in sorted(_raised_as().items()):
+        allowed = set(known[code].kind.split(" / ")) if code in known else set()
+        if "warning" in allowed:
+            allowed.add("error")  # a machine-file warning is reported as its errors are, with a severity
+        for kind, places in sorted(kinds.items()):
+            if kind not in allowed:
+                wrong.append(f"{code} ({known[code].kind if code in known else 'not catalogued'}) raised as "
+                             f"{kind} at {', '.join(places[:3])}")
+    assert not wrong, ("codes raised as another kind than the catalogue gives (one code, two meanings: give the "
+                       "new use a new code in " + CATALOGUE_FILE + "):\n  " + "\n  ".join(wrong))
 
 
 def test_codes_with_two_meanings_are_the_listed_debts_only() -> None:
