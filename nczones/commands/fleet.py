@@ -73,6 +73,8 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     split = f", {summary.split} split into chunks" if summary.split else ""
     print(f"{project.name}: {text[-2].split(': ', 1)[1]}; {summary.wall_s:.2f} s"
           + (f" on {summary.executor}" if summary.executor else "") + rate + split)
+    if summary.choice:
+        print(f"executor: {summary.executor}: {summary.choice}")
     return summary.exit_code
 
 
