@@ -73,6 +73,8 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     split = f", {summary.split} split into chunks" if summary.split else ""
     print(f"{project.name}: {text[-2].split(': ', 1)[1]}; {summary.wall_s:.2f} s"
           + (f" on {summary.executor}" if summary.executor else "") + rate + split)
+    if summary.choice:
+        print(f"executor: {summary.executor}: {summary.choice}")
     return summary.exit_code
 
 
@@ -171,16 +173,16 @@ def register_check(fsub: argparse._SubParsersAction) -> None:
     how = p.add_mutually_exclusive_group()
     how.add_argument("--scheduler", metavar="tcp://HOST:8786",
                      default=os.environ.get("DASK_SCHEDULER_ADDRESS") or None,
-                     help="submit the jobs to this Dask scheduler (default: $DASK_SCHEDULER_ADDRESS, else a local "
-                          "cluster started for the run)")
+                     help="submit the jobs to this Dask scheduler (default: $DASK_SCHEDULER_ADDRESS, else chosen by "
+                          "measurement: a local cluster only where it is projected to win)")
     how.add_argument("--serial", action="store_true", help="verify in this process, one job after the other")
     how.add_argument("--cluster", action="store_true",
                      help="always start the local cluster, even for a few jobs")
     p.add_argument("--workers", type=int, metavar="N",
                    help="worker processes of the local cluster (default: one per core)")
     p.add_argument("--cluster-threshold", type=int, default=50, metavar="N",
-                   help="with fewer than N jobs to run, verify them in this process instead of starting a local "
-                        "cluster (default 50)")
+                   help="with fewer than N jobs to run, verify them in this process; from N on, time the first "
+                        "8 and start a local cluster only if it is projected to win (default 50)")
     p.add_argument("--split-lines", type=int, metavar="N",
                    help="split programs of more than 2N lines into chunks of about N lines verified on several "
                         "workers, where that is sound (default: never split; it pays only when verifying a line "

@@ -40,9 +40,10 @@ EXIT_BY_VERDICT = {"unsafe": 1, "error": 2, "unknown": 3, "safe": 0}
 class CheckOptions:
     """How a fleet run executes (none of this changes a verdict, so none of it is in a job key).
 
-    ``executor``: ``"auto"`` (a local Dask cluster, unless fewer than
-    ``cluster_threshold`` jobs need to run or Dask, the ``[fleet]`` extra, is not installed: then they run
-    in this process),
+    ``executor``: ``"auto"`` (in this process when fewer than ``cluster_threshold`` jobs need to run or
+    Dask, the ``[fleet]`` extra, is not installed; otherwise the first :data:`PROBE_JOBS` jobs run in
+    this process and are timed, and a local Dask cluster takes the rest only when it is projected to win
+    by :func:`projected_seconds`),
     ``"serial"``, ``"local"`` (always the local cluster) or a scheduler
     address.  ``split_lines``: split programs of more than twice that many
     lines where that is sound (None, the default: never; see
@@ -77,6 +78,10 @@ class CheckSummary:
     wall_s: float = 0.0
     executor: str = ""
     interrupted: bool = False
+    #: (jobs measured in this process, their wall seconds, jobs left) when ``"auto"`` measured first.
+    probe: tuple[int, float, int] = (0, 0.0, 0)
+    #: Why the executor was chosen, when it was chosen by measurement ("" otherwise).
+    choice: str = ""
     verdicts: dict[str, int] = field(default_factory=dict)
     problems: list[str] = field(default_factory=list)
 
@@ -216,9 +221,14 @@ def run_check(project: Project, store: Store, options: CheckOptions = CheckOptio
     try:
         if todo:
             with _ctrl_c_noted() as ctrl_c:
-                executor = (make_executor or choose_executor)(options, len(todo))
-                summary.executor = executor.name
-                _execute(project, plan, todo, store, executor, options, summary, err, ctrl_c)
+                if make_executor is None and _may_measure(options, len(todo)):
+                    todo = _probe(project, plan, todo, store, options, summary, err, ctrl_c)
+                    executor = _measured_executor(options, summary)
+                else:
+                    executor = (make_executor or choose_executor)(options, len(todo))
+                    summary.executor = executor.name
+                if todo:
+                    _execute(project, plan, todo, store, executor, options, summary, err, ctrl_c)
     except KeyboardInterrupt:
         interrupted = True
         _quiet_half_built_solver_contexts()
@@ -305,6 +315,73 @@ def choose_executor(options: CheckOptions, jobs: int) -> Any:
     if how == "local":
         return local_cluster(options.workers, attempts=options.attempts)
     return connect(how, attempts=options.attempts)
+
+
+#: Jobs verified in this process before ``"auto"`` decides whether a local cluster can win (they count).
+PROBE_JOBS = 8
+#: Wall seconds a local cluster takes to start and import nczones in its workers, and the coordination
+#: cost per task on top of the job itself (scheduler, client and transfer beside the workers).  Measured on a
+#: 2-core machine: 4.2-5.6 s to start; 1,020 jobs of 85 ms (wall, serial) took 105 s on two workers, 103 ms a
+#: job instead of 42.5, so about 60 ms per task (specs/fleet.md, "Choosing the executor").
+CLUSTER_START_S = 5.0
+TASK_OVERHEAD_S = 0.06
+#: The cluster must be projected to take at most this fraction of the serial time to be chosen.
+CLUSTER_MUST_WIN = 0.8
+
+
+def _may_measure(options: CheckOptions, jobs: int) -> bool:
+    """True when ``"auto"`` would start a local cluster: then the first jobs are measured first."""
+    import os
+
+    return (options.executor == "auto" and not os.environ.get("DASK_SCHEDULER_ADDRESS")
+            and jobs >= options.cluster_threshold and _have_dask() and options.split_lines is None)
+
+
+def _probe(project: Project, plan: JobPlan, todo: list[Job], store: Store, options: CheckOptions,
+           summary: CheckSummary, err: TextIO, ctrl_c: threading.Event) -> list[Job]:
+    """Verify the first :data:`PROBE_JOBS` jobs in this process; note their wall time; the jobs left."""
+    from .execute import SerialExecutor
+
+    first, rest = todo[:PROBE_JOBS], todo[PROBE_JOBS:]
+    t0 = time.perf_counter()
+    _execute(project, plan, first, store, SerialExecutor(), options, summary, err, ctrl_c)
+    summary.probe = (len(first), time.perf_counter() - t0, len(rest))
+    return rest
+
+
+def projected_seconds(job_s: float, jobs: int, workers: int) -> tuple[float, float]:
+    """(serial, local cluster) wall seconds projected for ``jobs`` jobs of ``job_s`` seconds each.
+
+    >>> projected_seconds(0.085, 1000, 2)   # the bundled-library measurement: the cluster loses
+    (85.0, 107.5)
+    >>> projected_seconds(1.0, 1000, 2)[1] < 0.8 * 1000   # second-long jobs: it wins
+    True
+    """
+    serial = job_s * jobs
+    cluster = CLUSTER_START_S + jobs * (job_s / max(1, workers) + TASK_OVERHEAD_S)
+    return round(serial, 6), round(cluster, 6)
+
+
+def _measured_executor(options: CheckOptions, summary: CheckSummary) -> Any:
+    """The executor for the jobs left after the probe: a local cluster only where it is projected to win."""
+    import os
+
+    from .execute import SerialExecutor, local_cluster
+
+    measured, seconds, rest = summary.probe
+    workers = min(options.workers or os.cpu_count() or 1, os.cpu_count() or 1)
+    serial, cluster = projected_seconds(seconds / max(1, measured), rest, workers)
+    if rest and cluster < CLUSTER_MUST_WIN * serial:
+        executor = local_cluster(options.workers, attempts=options.attempts)
+        why = "a local cluster is projected to win"
+    else:
+        executor = SerialExecutor()
+        why = "a local cluster cannot win"
+    summary.executor = executor.name
+    summary.choice = (f"measured {seconds / max(1, measured) * 1000:.0f} ms a job over the first {measured}: "
+                      f"{why} ({rest} jobs left: {serial:.1f} s serial, {cluster:.1f} s projected on "
+                      f"{workers} worker{'s' if workers != 1 else ''} with its start)")
+    return executor
 
 
 def _execute(project: Project, plan: JobPlan, todo: list[Job], store: Store, executor: Any,
