@@ -40,6 +40,8 @@ def _clean(value):
         return {k: _clean(v) for k, v in value.items() if k not in VOLATILE}
     if isinstance(value, list):
         return [_clean(v) for v in value]
+    if isinstance(value, str):
+        return value.replace(str(ROOT), "<checkout>")
     return value
 
 
@@ -54,7 +56,7 @@ def _verify(program: Path, machine: Path, extra: list[str]) -> dict:
             code = main(["verify", str(program), "--machine", str(machine), "--budget", "10",
                          "--format", "json", "--output", str(out), *extra])
         report = json.loads(out.read_text(encoding="utf-8")) if out.exists() and out.stat().st_size else None
-    errors = [line for line in err.getvalue().splitlines() if "error" in line][:3]
+    errors = [line.replace(str(ROOT), "<checkout>") for line in err.getvalue().splitlines() if "error" in line][:3]
     return {"exit": code, "report": _clean(report), "errors": errors}
 
 
