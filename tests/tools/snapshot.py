@@ -113,9 +113,22 @@ def _split(row: dict) -> tuple[dict, dict]:
     return {"exit": row["exit"], "errors": row["errors"], "report": report}, {"stats": stats}
 
 
-def diff(old_path: Path, new_path: Path) -> int:
-    """Print every difference; exit 1 when a verdict, witness or report field differs, else 0."""
-    old, new = _load(old_path), _load(new_path)
+def _renamed(rows: dict[str, dict], renames: list[str]) -> dict[str, dict]:
+    """``rows`` with every ``NEW`` of ``OLD=NEW`` written back as ``OLD`` (an intended, explained rename)."""
+    if not renames:
+        return rows
+    text = json.dumps(rows)
+    for pair in renames:
+        before, after = pair.split("=", 1)
+        text = text.replace(after, before)
+    return json.loads(text)
+
+
+def diff(old_path: Path, new_path: Path, renames: list[str] | None = None) -> int:
+    """Print every difference; exit 1 when a verdict, witness or report field differs, else 0.
+
+    ``renames`` (``OLD=NEW``, e.g. an error code split in two) are undone in the new snapshot first."""
+    old, new = _load(old_path), _renamed(_load(new_path), renames or [])
     meaning = stats_only = 0
     for name in sorted(set(old) | set(new)):
         if name not in old or name not in new:
@@ -143,11 +156,13 @@ def main(argv: list[str] | None = None) -> int:
     d = sub.add_parser("diff")
     d.add_argument("old", type=Path)
     d.add_argument("new", type=Path)
+    d.add_argument("--rename", action="append", default=[], metavar="OLD=NEW",
+                   help="an intended rename (an error code) undone before comparing")
     args = parser.parse_args(argv)
     if args.command == "run":
         os.environ.setdefault("NCZONES_CORPUS", str(ROOT.parent / "shared" / "corpus"))
         return run(args.out, args.only)
-    return diff(args.old, args.new)
+    return diff(args.old, args.new, args.rename)
 
 
 if __name__ == "__main__":
