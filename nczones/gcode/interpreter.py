@@ -41,7 +41,15 @@ from typing import TYPE_CHECKING, Any
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
 from ..machine import DEFAULT_RETRACT, Machine
-from ..motion import PLANE_AXES, FrameRotation, MotionChunk, Plane, ProgramFrame, Segment, SegmentKind
+from ..motion import (
+    PLANE_AXES,
+    FrameRotation,
+    MotionChunk,
+    Plane,
+    ProgramFrame,
+    Segment,
+    SegmentKind,
+)
 from . import (  # defined in the package, which loads this module lazily
     DEFAULT_ARC_TOLERANCE,
     DEFAULT_CHUNK_SIZE,
