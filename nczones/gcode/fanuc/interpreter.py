@@ -335,7 +335,7 @@ class FanucInterpreter(Interpreter):
             self.unset.discard("plane")
         if 6 in groups:
             self.inch = groups[6][0] == 200
-            self._frame = None
+            self.invalidate_frame()
             self.unset.discard("units")
         if 3 in groups:
             self.absolute = groups[3][0] == 900
@@ -772,7 +772,7 @@ class FanucInterpreter(Interpreter):
             if g not in groups:
                 continue
             k, w = groups[g]
-            self._frame = None  # the program frame names the transform
+            self.invalidate_frame()  # the program frame names the transform
             on = k in (160, 510, 511, 680)
             if on:
                 self._enter_transform()
