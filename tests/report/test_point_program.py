@@ -14,11 +14,13 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from fractions import Fraction as F
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from nczones.exact import format_decimal
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
@@ -239,6 +241,14 @@ def test_fanuc_lathe_diameter_with_work_shift_and_tool_offset():
     assert _pp(v) == _line_point((F(20), F(5)), (F(200), F(-5)), v.parameter)
     text_report = render_report(r, "text", machine=m, deterministic=True)
     assert "(program coordinates: G54, X as diameter)" in text_report
+    # the HTML table shows the same point under the machine point, from the page's data
+    page = render_report(r, "html", machine=m, deterministic=True)
+    shown = re.findall(r'<span class="point-program" data-point-program="1">([^<]*)</span>', page)
+    # X exact (a short decimal); Z a repeating decimal: rounded to the 0.001 pulse and marked ≈
+    z = mz - 255
+    assert z.denominator % 3 == 0
+    assert shown == [f"X{format_decimal(2 * (mx - 75))} Z≈{format_decimal(F(round(z * 1000), 1000))} "
+                     "(program coordinates: G54, X as diameter)"]
 
 
 # --------------------------------------------------------------------------- Fanuc mill: G52 + G68
