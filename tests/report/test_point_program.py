@@ -304,3 +304,21 @@ def test_shifting_the_work_offset_and_the_program_keeps_the_machine_points(dx, d
     a, b = run((0, 0, 0)), run((dx, dy, dz))
     assert a.point == b.point and a.first_exit == b.first_exit
     assert _pp(b) == tuple(x - d for x, d in zip(_pp(a), (dx, dy, dz)))
+
+
+def test_fanuc_mill_g52_in_the_vectorized_tier():
+    """Fanuc, more than 512 motions in column chunks: G54 X150 Y100 Z100, G52 X5 Y-5 (a local shift), G43 H1
+    (120): the program point of the witness is machine - (155, 95, 220), on the programmed line."""
+    m = parse_machine(FANUC_MILL.replace('max = { X = "600", Y = "400", Z = "400" }',
+                                         'max = { X = "600", Y = "400", Z = "600" }'))
+    pre = [f"G01 X{i % 10}. Y{i % 7}." for i in range(300)]
+    text = "\n".join(["G21 G90 G17 G54 G43 H1 F1000", "G52 X5. Y-5.", "G00 X0 Y0 Z10.", *pre, "G01 X0 Y0",
+                      "G01 X500. Y0", *pre, "M30"]) + "\n"
+    columns = [c for c in interpret_text(text, m) if getattr(c, "scale", None) is not None]
+    assert columns and all(c.frame is not None and c.frame.offset == (F(155), F(95), F(220)) for c in columns)
+    r = verify_text(text, m, file="p.nc")
+    assert dict(r.stats)["segments"] > 512
+    v = _only(r, "G01 X500. Y0")
+    mx, my, mz = (x for _a, x in v.point)
+    assert _pp(v) == (mx - 155, my - 95, mz - 220)
+    assert _pp(v) == _line_point((F(0), F(0), F(10)), (F(500), F(0), F(10)), v.parameter)
