@@ -265,7 +265,7 @@ class FanucInterpreter(Interpreter):
     def make_frame(self) -> ProgramFrame:
         """The program frame (:class:`~nczones.motion.ProgramFrame`): ``machine = program + self.off`` (EXT,
         work offset, G52, G92, tool offsets), G68 rotating about its centre; a diameter axis of a lathe; no
-        program point under G51 scaling, G51.1 mirror image, G16 polar coordinates or G12.1."""
+        program point under G51 scaling, G51.1 mirror image, G16 polar coordinates, G12.1 or G07.1."""
         rot = None
         r = self.rotation
         if r is not None:
@@ -276,7 +276,8 @@ class FanucInterpreter(Interpreter):
         opaque = ""
         for on, what in ((self.scaling, "scaling (G51)"), (self.mirroring, "mirror image (G51.1)"),
                          (self.polar, "polar coordinates (G16)"), (getattr(self, "polar_ip", None),
-                                                                  "polar coordinate interpolation (G12.1)")):
+                                                                  "polar coordinate interpolation (G12.1)"),
+                         (getattr(self, "cylinder", None), "cylindrical interpolation (G07.1)")):
             if on is not None:
                 opaque = f"{what} is active: the program point is not given"
                 break
