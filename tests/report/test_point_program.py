@@ -106,7 +106,14 @@ def _check_mill_g92(r, p0, p1):
 def test_mill_g54_g92_tool_length_short_program():
     m = parse_machine(MILL)
     text, p0, p1 = _mill_g92_program()
-    _check_mill_g92(verify_text(text, m, file="p.ngc"), p0, p1)
+    r = verify_text(text, m, file="p.ngc")
+    _check_mill_g92(r, p0, p1)
+    # JSON and SARIF carry the same exact program point
+    doc = json.loads(render_report(r, "json", machine=m, deterministic=True))["violations"][0]
+    sarif = json.loads(render_report(r, "sarif", machine=m, deterministic=True))["runs"][0]["results"][0]
+    pp = dict(r.violations[0].point_program)
+    assert doc["point_program_exact"] == sarif["properties"]["pointProgramExact"] == {a: str(x) for a, x in pp.items()}
+    assert doc["program_frame"]["work"] == "G54" and doc["point_program_missing"] == ""
 
 
 def test_mill_g54_g92_in_the_vectorized_tier():
