@@ -44,7 +44,7 @@ if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to t
     import numpy as np
 
 __all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes", "arc_path_float",
-           "segments_of"]
+           "segments_of", "ProgramFrame", "FrameRotation"]
 
 
 class SegmentKind(enum.IntEnum):
@@ -78,6 +78,101 @@ def arc_plane_axes(plane: Plane) -> tuple[str, str, str]:
     ('Z', 'X', 'Y')
     """
     return PLANE_AXES[plane]
+
+
+_INCH = Fraction(254, 10)
+
+
+@dataclass(frozen=True, slots=True)
+class FrameRotation:
+    """A coordinate rotation in the plane of two axes, as the control applies it.
+
+    ``machine (a, b) = R(program (a, b) + before) + after``, ``R`` the rotation by ``degrees`` counter-clockwise
+    with the cosine and sine the interpreter used (``cos``, ``sin``: LinuxCNC's doubles taken exactly, or the
+    midpoint of Fanuc's certified enclosure): LinuxCNC ``G10 L2 R`` has ``before`` = the G92/G52 shift and
+    ``after`` = the work offset (and tool offset); Fanuc ``G68`` has ``before`` = −centre, ``after`` = centre +
+    every offset.
+    """
+
+    axes: tuple[str, str]
+    degrees: Fraction
+    cos: Fraction
+    sin: Fraction
+    before: tuple[Fraction, Fraction]
+    after: tuple[Fraction, Fraction]
+
+
+@dataclass(frozen=True, slots=True)
+class ProgramFrame:
+    """How the program's coordinates map onto machine coordinates at a block (issue 37's ``point_program``).
+
+    ``machine = program' + offset`` per axis, where ``program'`` is the program value in mm (inch converted,
+    a diameter axis halved) and ``offset`` is everything the control adds: the work offset (``work``:
+    G54..G59.3, Fanuc also EXT, G54.1 Pn), the G92/G50 shift, G52 local shift and the tool offsets (the
+    length on the tool axis, a lathe tool's X offset), so the program point is where the tool tip is.
+    ``rotation``: an XY (or G68 plane) rotation; its axes use it instead of ``offset``.
+    ``diameter``: axes the program writes as diameters.  ``inch``: the program's units are inches (G20).
+    ``opaque``: why the program point cannot be given (a transform not inverted, such as Fanuc G51
+    scaling); empty otherwise.
+
+    The interpreter makes one per change of these (segments share it); reports invert it only for a
+    violation's point (:meth:`program_point`).
+
+    >>> F = Fraction
+    >>> f = ProgramFrame("G54", (F(100), F(-50)), diameter=("X",))
+    >>> f.program_point(("X", "Z"), (F(131), F(-60)))
+    (('X', Fraction(62, 1)), ('Z', Fraction(-10, 1)))
+    """
+
+    work: str
+    offset: tuple[Fraction, ...]
+    rotation: FrameRotation | None = None
+    diameter: tuple[str, ...] = ()
+    inch: bool = False
+    opaque: str = ""
+
+    @property
+    def exact(self) -> bool:
+        """False when a rotation is involved: its inverse uses the control's rounded cosine and sine, and the
+        control rounded the rotated point, so the program point is close but not exact."""
+        return self.rotation is None
+
+    def program_point(self, axes: tuple[str, ...], point: tuple[Fraction, ...]) -> tuple[tuple[str, Fraction], ...]:
+        """The program coordinates (program units: mm or inch, degrees; diameters on diameter axes) of a
+        machine point.  Raises ValueError when the frame is :attr:`opaque`."""
+        if self.opaque:
+            raise ValueError(self.opaque)
+        mm = [p - o for p, o in zip(point, self.offset)]
+        rot = self.rotation
+        if rot is not None and rot.axes[0] in axes and rot.axes[1] in axes:
+            ia, ib = axes.index(rot.axes[0]), axes.index(rot.axes[1])
+            x = point[ia] - rot.after[0]
+            y = point[ib] - rot.after[1]
+            c, s = rot.cos, rot.sin
+            norm = c * c + s * s  # the inverse of [[c, -s], [s, c]] is [[c, s], [-s, c]] / (c² + s²)
+            mm[ia] = (c * x + s * y) / norm - rot.before[0]
+            mm[ib] = (c * y - s * x) / norm - rot.before[1]
+        out = []
+        for name, v in zip(axes, mm):
+            if name in self.diameter:
+                v = 2 * v
+            if self.inch and name not in ("A", "B", "C"):
+                v = v / _INCH
+            out.append((name, v))
+        return tuple(out)
+
+    def describe(self) -> str:
+        """How the frame reads in a report: ``G54, G20 (inch), X as diameter, rotated 30° in XY``."""
+        parts = [self.work]
+        if self.inch:
+            parts.append("inch")
+        if self.diameter:
+            parts.append(", ".join(self.diameter) + " as diameter")
+        if self.rotation is not None:
+            from .exact import format_decimal
+
+            parts.append(f"rotated {format_decimal(self.rotation.degrees)}° in {''.join(self.rotation.axes)}")
+        return ", ".join(parts)
 
 
 @dataclass(frozen=True, slots=True)
@@ -123,6 +218,10 @@ class Segment:
         after ``G43 H1`` with the machine file's length, ``()`` after a length
         the program wrote itself (``G10 L1``), whatever ``tool_register``
         says.  Empty when dependencies are not tracked.
+    frame : ProgramFrame or None
+        The program's coordinate frame at the block (work offset, G92/G52, rotation, diameter, units, tool
+        offsets), for reports of a violation's point in program coordinates; None when the producer did
+        not record it.  Not part of equality (two equal motions may be written in different frames).
     """
 
     kind: SegmentKind
@@ -145,6 +244,7 @@ class Segment:
     deps_end: tuple[tuple[str, ...], ...] = ()
     deps_tool: tuple[str, ...] = ()
     extra: tuple[tuple[str, object], ...] = field(default=())
+    frame: ProgramFrame | None = field(default=None, compare=False)
 
     @property
     def line(self) -> int | None:
@@ -272,6 +372,8 @@ class MotionChunk:
     objects: tuple[Segment, ...] | None = None
     dwell: np.ndarray | None = None
     derived: np.ndarray | None = None
+    #: the program frame every row was written in (a column run never changes offsets), see Segment.frame
+    frame: ProgramFrame | None = None
 
     def __len__(self) -> int:
         if self.scale is None:
@@ -314,7 +416,7 @@ class MotionChunk:
                 arc["derived"] = str(self.derived[i])
             yield Segment(
                 kind, start, end, self.axes, int(blocks[i]), span,
-                Fraction(int(lengths[i]), den), feed, **arc,
+                Fraction(int(lengths[i]), den), feed, **arc, frame=self.frame,
             )
 
 

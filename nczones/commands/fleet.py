@@ -108,7 +108,8 @@ def run_fleet_status(args: argparse.Namespace) -> int:
             raise _usage("FL300", "the store has no run yet: run 'nczones fleet check' first")
         rows = store.cells(run.run_id)
         if args.format == "html":
-            written = write_status_html(run, rows, store, args.output, f"nczones fleet: {project.name}")
+            written = write_status_html(run, rows, store, args.output, f"nczones fleet: {project.name}",
+                                        project=project, html_reports=args.html_reports)
             print(f"{args.output}: the matrix of run {run.run_id} ({len(rows)} cells) and {len(written) - 1} "
                   "reports", file=sys.stderr)
             return cli.EXIT_OK
@@ -213,6 +214,10 @@ def register_status(fsub: argparse._SubParsersAction) -> None:
                    help="text (a matrix and the cells that are not safe), json, or html (a page, with the reports "
                         "written to a reports/ folder beside it; needs --output)")
     p.add_argument("--output", metavar="FILE", help="write to FILE instead of standard output")
+    p.add_argument("--html-reports", choices=("all", "not-safe", "none"), default="all",
+                   help="with --format html: the cells whose HTML report (with its plots) is made, by verifying "
+                        "the job again, and linked from the cell (default all; a report already beside the page "
+                        "is kept); text and JSON reports are always written")
     p.set_defaults(handler=run_fleet_status)
 
 

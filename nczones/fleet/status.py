@@ -4,8 +4,9 @@ The matrix comes as text (one row per program, one column per machine,
 ``.`` safe, ``X`` unsafe, ``?`` unknown, ``E`` error, blank: the program
 does not run on that machine, ``-`` not verified yet), as JSON
 (:func:`status_json`) or as an HTML page (:func:`write_status_html`) whose
-cells link to each job's text and JSON report, written beside the page, with
-totals per program and per machine.
+cells link to each job's HTML report (generated on demand, :func:`html_report`),
+text and JSON report, written beside the page, with totals per program and
+per machine.
 
 A diff compares the cells of the latest run with those of the run before
 (:func:`diff_runs`): newly unsafe first, then newly unknown or error, then
@@ -19,12 +20,19 @@ import json
 import posixpath
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .store import CellRow, Run, Store
 
+if TYPE_CHECKING:
+    from .jobs import Job, JobPlan
+    from .project import Project
+
 __all__ = ["SYMBOLS", "status_text", "status_json", "write_status_html", "Change", "diff_runs", "diff_text",
-           "diff_json"]
+           "diff_json", "html_report", "HTML_REPORTS"]
+
+#: which cells ``fleet status --format html`` writes an HTML report for (``--html-reports``)
+HTML_REPORTS = ("all", "not-safe", "none")
 
 SYMBOLS = {"safe": ".", "unsafe": "X", "unknown": "?", "error": "E", None: "-"}
 _RANK = {"unsafe": 0, "error": 1, "unknown": 2, "safe": 3, None: 4}
@@ -142,12 +150,60 @@ td.error{background:#e0c8f0}td.pending{background:#eee}td.total{font-family:mono
 """
 
 
-def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | Path, title: str) -> list[Path]:
-    """Write the HTML matrix to ``path`` and each cell's reports to ``reports/KEY.txt|json`` beside it.
+def html_report(project: Project, plan: JobPlan, job: Job, verdict: str | None = None) -> tuple[str | None, str]:
+    """The HTML report (:func:`nczones.report.render_report`) of a stored job, made on demand: the job is
+    verified again with its settings in this process (the store keeps its text and JSON reports, not the
+    Result the page draws).  Returns ``(page, "")``, or ``(None, why)`` when no page is made: the program
+    or machine file changed since (its SHA-256 is not the job's), it cannot be read, or the verdict comes
+    out other than ``verdict`` (the stored one; a budget or time limit hit differently)."""
+    import dataclasses
+    import os
 
-    Returns the files written.  The page is self-contained (no network
-    resources); a cell links to its text report, its title shows the first
-    finding.
+    from ..errors import InputError
+    from ..gcode.source import load_program
+    from ..machine import parse_machine
+    from ..prover import verify
+    from ..report import render_report
+    from .project import verify_kwargs
+
+    try:
+        source = load_program(project.root / job.program, job.program)
+        file = project.machine(job.machine).file
+        shown = file.relative_to(project.root).as_posix() if file.is_relative_to(project.root) else str(file)
+        machine = parse_machine(plan.machine_text[job.machine], shown)
+    except (InputError, OSError, KeyError, ValueError) as exc:
+        return None, f"cannot read the job's files again: {exc}"
+    if source.sha256 != job.program_sha256:
+        return None, "the program changed since the run"
+    machine = dataclasses.replace(machine, sha256=job.machine_sha256)
+    if machine.subroutine_path:
+        machine = dataclasses.replace(machine, subroutine_path=tuple(
+            os.path.join(project.root, p) for p in machine.subroutine_path))
+    try:
+        result = verify(source, machine, **verify_kwargs(job.settings, project.root))
+    except InputError as exc:
+        return None, f"the job cannot be verified again: {exc.render()}"
+    if verdict is not None and result.verdict.label != verdict:
+        return None, f"verified again it is {result.verdict.label}, not {verdict} (a budget or time limit)"
+    try:
+        return render_report(result, "html", machine=machine, program=source), ""
+    except InputError as exc:
+        return None, f"the report cannot be drawn: {exc.render()}"
+
+
+def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | Path, title: str, *,
+                      project: Project | None = None, html_reports: str = "all") -> list[Path]:
+    """Write the HTML matrix to ``path`` and each cell's reports to ``reports/KEY.html|txt|json`` beside it.
+
+    Returns the files written (a kept ``KEY.html`` is not rewritten and not listed).  The page is
+    self-contained (no network resources); a cell links to its HTML report (the verdict symbol), its text
+    report (``t``) and JSON report (``j``); its title shows the first finding.
+
+    HTML reports are made on demand (:func:`html_report`) for the cells ``html_reports`` selects
+    (:data:`HTML_REPORTS`: ``all``, ``not-safe``, ``none``) when ``project`` is given and the cell's job is
+    the one the project's files give today (same job key: same program and machine bytes, settings and
+    nczones); a job's page is named by its key, so a page already beside the matrix is kept, not made
+    again.  A cell without a page links its symbol to the text report and says why in its title.
     """
     path = Path(path)
     folder = path.parent / "reports"
@@ -162,6 +218,7 @@ def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | 
             f = folder / f"{key}.{ext}"
             f.write_text(text, encoding="utf-8")
             written.append(f)
+    pages, no_page = _html_pages(cells, project, html_reports, folder, written)
     e = html.escape
     # program paths are relative to the project file's folder; a folder they all share is said once, in the header
     dirs = [posixpath.dirname(p) for p in programs]
@@ -178,13 +235,18 @@ def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | 
             v = _verdict(c)
             cls = v or "pending"
             label = SYMBOLS[v]
-            tip = e(f"{p} on {m}: {v or 'not verified'}" + (f": {first_finding(c)}" if first_finding(c) else ""))
+            tip = f"{p} on {m}: {v or 'not verified'}" + (f": {first_finding(c)}" if first_finding(c) else "")
             if c.job_key and v is not None and c.status != "error":
                 ref = f"reports/{c.job_key}"
-                tds.append(f'<td class="{cls}" title="{tip}"><a href="{ref}.txt">{label}</a> '
-                           f'<a href="{ref}.json">j</a></td>')
+                if c.job_key in pages:
+                    main = f'<a class="html" href="{ref}.html">{label}</a> <a href="{ref}.txt">t</a>'
+                else:
+                    why = no_page.get(c.job_key, "")
+                    tip += f" (no HTML report: {why})" if why else ""
+                    main = f'<a href="{ref}.txt">{label}</a>'
+                tds.append(f'<td class="{cls}" title="{e(tip)}">{main} <a href="{ref}.json">j</a></td>')
             else:
-                tds.append(f'<td class="{cls}" title="{tip}">{label}</td>')
+                tds.append(f'<td class="{cls}" title="{e(tip)}">{label}</td>')
         tds.append(f'<td class="total">{e(_totals([grid[(p, m)] for m in machines if (p, m) in grid]))}</td>')
         rows.append("<tr>" + "".join(tds) + "</tr>")
     rows.append('<tr class="totals"><th class="p">totals per machine</th>'
@@ -192,15 +254,58 @@ def write_status_html(run: Run, cells: list[CellRow], store: Store, path: str | 
                           for m in machines) + f'<td class="total">{e(_totals(cells))}</td></tr>')
     counts = ", ".join(f"{n} {v}" for v, n in sorted(_counts(cells).items(), key=lambda x: _RANK.get(x[0], 5)))
     head = "".join(f'<th class="m">{e(m)}</th>' for m in machines)
+    links = ("Each cell links to its HTML report (the symbol), its text report (t) and JSON report (j)." if pages
+             else "Each cell links to its text report (and JSON: j).")
     page = (f"<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>{e(title)}</title>"
             f"<style>{_CSS}</style></head><body>\n<h1>{e(title)}</h1>\n"
             f"<p>run {run.run_id}{' (interrupted)' if run.interrupted else ''}: {len(cells)} cells: {e(counts)}; "
-            f"{run.ran} jobs ran, {run.reused} reused. Each cell links to its text report (and JSON: j).</p>\n"
+            f"{run.ran} jobs ran, {run.reused} reused. {links}</p>\n"
             f"<table><tr><th class=\"p\">program{e(f' (in {common}/)') if common else ''}</th>{head}"
             "<th>totals per program</th></tr>\n" + "\n".join(rows) + "\n</table>\n"
             "<p>. safe, X unsafe, ? unknown, E error, - not verified</p>\n</body></html>\n")
     path.write_text(page, encoding="utf-8")
     return written
+
+
+def _html_pages(cells: list[CellRow], project: Project | None, which: str, folder: Path,
+                written: list[Path]) -> tuple[set[str], dict[str, str]]:
+    """Make (or keep) the HTML report of each selected cell's job: the keys that have a page beside the
+    matrix, and why the others have none."""
+    if which not in HTML_REPORTS:
+        raise ValueError(f"html_reports must be one of {HTML_REPORTS}, not {which!r}")
+    if project is None or which == "none":
+        return set(), {}
+    from .jobs import plan_jobs
+
+    wanted = [c for c in cells if c.job_key and c.status != "error" and _verdict(c) not in (None, "error")
+              and (which == "all" or _verdict(c) != "safe")]
+    if not wanted:
+        return set(), {}
+    where = {(c.program, c.machine) for c in wanted}
+    plan = plan_jobs(project, [c for c in project.cells() if (c.program, c.machine) in where])
+    pages: set[str] = set()
+    no_page: dict[str, str] = {}
+    for c in wanted:
+        key = c.job_key
+        assert key is not None
+        if key in pages or key in no_page:
+            continue
+        f = folder / f"{key}.html"
+        if plan.cell_keys.get((c.program, c.machine)) != key:
+            no_page[key] = ("the program, the machine file, the settings or nczones changed since this run "
+                            "(run nczones fleet check)")
+            continue
+        if f.is_file():  # a job's page depends only on its key
+            pages.add(key)
+            continue
+        page, why = html_report(project, plan, plan.jobs[key], _verdict(c))
+        if page is None:
+            no_page[key] = why
+            continue
+        f.write_text(page, encoding="utf-8")
+        written.append(f)
+        pages.add(key)
+    return pages, no_page
 
 
 @dataclass(frozen=True, slots=True)

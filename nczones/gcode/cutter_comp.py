@@ -60,7 +60,7 @@ if TYPE_CHECKING:
 
     from ..errors import SourceSpan
     from ..machine import Machine
-    from ..motion import Segment
+    from ..motion import ProgramFrame, Segment
     from .blocks import Block, Word
 
 
@@ -123,6 +123,7 @@ class CompensatedInterpreter(Protocol):
     def length_mm(self, v: Fraction) -> Fraction: ...
     def deps_tuple(self, deps: list[dict[Any, Any]]) -> tuple[tuple[str, ...], ...]: ...
     def tool_dep_names(self) -> tuple[str, ...]: ...
+    def program_frame(self) -> ProgramFrame: ...
     def emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
              plane: Plane | None = None, clockwise: bool = False, centre: Any = None, radius: Any = None,
              turns: int = 0, dwell: Fraction | None = None, end_deps: list[dict[Any, Any]] | None = None) -> None: ...
@@ -497,7 +498,8 @@ class CutterComp:
             if not it.unsupported:
                 seg = make_segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
                                it.plane if arc else None, arc and q.turn < 0, centre, None,
-                               abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, ())
+                               abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, (),
+                               it.program_frame())
                 if dt:
                     seg = with_tool_deps(seg, dt)
                 it.emitted.append(seg)
@@ -888,7 +890,8 @@ class CutterComp:
             if not it.unsupported:
                 at = tuple(it.machine_at)
                 seg = make_segment(SegmentKind.DWELL, at, at, it.axes, it.block_index, it.span, it.tlo,
-                               None, None, False, None, None, 0, seconds, "", it.tool_register, deps, deps, ())
+                               None, None, False, None, None, 0, seconds, "", it.tool_register, deps, deps, (),
+                               it.program_frame())
                 it.emitted.append(with_tool_deps(seg, dt) if dt else seg)
                 it.segment_count += 1
                 it.kind_counts[SegmentKind.DWELL] += 1

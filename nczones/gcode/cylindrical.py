@@ -158,6 +158,7 @@ class CylindricalInterpreter(Interpreter):
                               "switches the mode off)", aw)
         if aw.value == 0:
             self.cylinder = None
+            self.invalidate_frame()
             return
         if self.cylinder is not None:
             raise self.error("GC230", f"G07.1 {aw.text}: cylindrical interpolation is already on (radius "
@@ -176,6 +177,7 @@ class CylindricalInterpreter(Interpreter):
             self.unknown("G07.1", "cylindrical interpolation in a rotated coordinate system (G10 L2 R) is not modelled", w)
         radius = aw.value * INCH if self.inch else aw.value
         self.cylinder = CylinderMode(letter, linear, self.index[letter], self.index[linear], radius)
+        self.invalidate_frame()
 
     # ------------------------------------------------------------------ blocks in the mode
     def _in_mode(self, block: Block) -> None:

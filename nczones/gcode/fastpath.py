@@ -1036,6 +1036,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         block=block_of_line[rows].astype(np.int64), tool_length=np.full(m, tl, dtype=np.int64),
         centre=centre, plane=plane_col, clockwise=cw, turns=turns,
         feed=(feed_line[rows] if it.feed_mode == 94 else None), file=interp.file,
+        frame=it.program_frame(),  # a run of simple lines changes no offset, unit or transform
     )
     # hand the state back to the interpreter
     den = 10**S
@@ -1315,6 +1316,7 @@ def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         line=np.repeat(holes + (lo + 1 + line0), T).astype(np.int64),
         block=np.repeat(block_of_line[holes], T).astype(np.int64), tool_length=np.full(rows, tl, dtype=np.int64),
         feed=np.full(rows, f_s, dtype=np.int64), file=interp.file, dwell=dwell_col, derived=derived,
+        frame=it.program_frame(),
     )
     # hand the state back to the interpreter (as _cycle/_emit leave it)
     den = 10**S

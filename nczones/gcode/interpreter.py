@@ -41,7 +41,15 @@ from typing import TYPE_CHECKING, Any
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
 from ..machine import DEFAULT_RETRACT, Machine
-from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
+from ..motion import (
+    PLANE_AXES,
+    FrameRotation,
+    MotionChunk,
+    Plane,
+    ProgramFrame,
+    Segment,
+    SegmentKind,
+)
 from . import (  # defined in the package, which loads this module lazily
     DEFAULT_ARC_TOLERANCE,
     DEFAULT_CHUNK_SIZE,
@@ -461,6 +469,42 @@ class Interpreter:
                 deps.append(d)
             self.dep_off = deps
 
+    # ------------------------------------------------------------------ the program frame (reports)
+    #: the frame segments carry (Segment.frame), made on the first motion after a change: a new ``self.off``
+    #: list (every offset, tool length and work offset change makes one) or ``invalidate_frame`` (units,
+    #: diameter mode, transforms)
+    _frame: ProgramFrame | None = None
+    _frame_off: Any = None
+
+    def invalidate_frame(self) -> None:
+        """State the program frame reads changed without a new ``self.off`` (G20/G21, G7/G8, a transform)."""
+        self._frame = None
+
+    def program_frame(self) -> ProgramFrame:
+        """The program's coordinate frame now (:class:`~nczones.motion.ProgramFrame`), cached until it changes."""
+        f = self._frame
+        if f is None or self._frame_off is not self.off:
+            f = self._frame = self.make_frame()
+            self._frame_off = self.off
+        return f
+
+    def make_frame(self) -> ProgramFrame:
+        """A new :class:`~nczones.motion.ProgramFrame` of the current state: ``machine = program + self.off``,
+        XY rotated about the work offset after the G92 shift (LinuxCNC ``rotate_and_offset_pos``), X a
+        diameter in G7."""
+        rot = None
+        r = self.rot[self.wcs]
+        ix, iy = self._ix, self._iy
+        if r and ix >= 0 and iy >= 0:
+            t = to_float(r) * math.pi / 180.0  # as _update_rotation computes them
+            g5 = self.g5x[self.wcs]
+            rot = FrameRotation((self.axes[ix], self.axes[iy]), r, Fraction(math.cos(t)), Fraction(math.sin(t)),
+                                (self.g92[ix], self.g92[iy]), (g5[ix], g5[iy]))
+        diameter = ("X",) if getattr(self, "diameter_mode", False) and "X" in self.index else ()
+        opaque = "cylindrical interpolation (G07.1): the program writes developed lengths" \
+            if getattr(self, "cylinder", None) is not None else ""
+        return ProgramFrame(self.wcs, tuple(self.off), rot, diameter, self.inch, opaque)
+
     # ------------------------------------------------------------------ XY rotation (G10 L2 R)
     machine_at: tuple[Fraction, ...] | None = None  # where the machine really is, if not at self.pos
     prerotation_xy: list[Fraction] | None = None  # pre-rotation XY (program mm + G92) while a rotation is active
@@ -660,9 +704,12 @@ class Interpreter:
             de = self.deps_tuple(end_deps if end_deps is not None else self.dep_pos)
             dt = self.tool_dep_names()
         if not self.unsupported:
+            fr = self._frame
+            if fr is None or self._frame_off is not self.off:
+                fr = self.program_frame()
             seg = make_segment(kind, start, endt, self.axes, self.block_index, self.span, self.tlo, fmm,
                            plane, clockwise, centre, radius, turns, dwell, derived, self.tool_register,
-                           ds, de, ())
+                           ds, de, (), fr)
             if dt:
                 seg = with_tool_deps(seg, dt)
             self.emitted.append(seg)
@@ -1355,9 +1402,12 @@ class Interpreter:
         else:
             kind = SegmentKind.RAPID
         end = tuple(end)
+        fr = self._frame
+        if fr is None or self._frame_off is not self.off:
+            fr = self.program_frame()
         self.emitted.append(make_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, self.block_index,
                                   self.span, self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register,
-                                  (), (), ()))
+                                  (), (), (), fr))
         self.segment_count += 1
         self.kind_counts[kind] += 1
         self.pos = end
@@ -1464,6 +1514,7 @@ class Interpreter:
             self.cycle_il = number * (INCH if inch else _ONE) + self.off[ax]
             self._cycle_il_deps = {}
         self.inch = inch
+        self._frame = None
 
     def _restore_modal(self, snap: tuple, w: Word | None) -> None:
         """LinuxCNC's restore_settings: G20/G21 first if it differs, then one block of the codes of every group
@@ -1499,6 +1550,7 @@ class Interpreter:
         self.spindle_dir = spindle_dir
         if hasattr(self, "diameter_mode"):
             self.diameter_mode = diameter
+            self._frame = None
         self.plane = plane
         if comp != self._comp_key():
             self.unknown("M72", "restoring cutter compensation (M72, or the return of an M73 subroutine, with "

@@ -87,6 +87,7 @@ class LatheInterpreter(Interpreter):
                 self.unknown("G7/G8", "G7 or G8 in a block with M70, M72 or M73 is not modelled; write them in "
                              "separate blocks", modes[0])
             self.diameter_mode = gkey(modes[0].value) == 70
+            self.invalidate_frame()
             words = tuple(w for w in words if w is not modes[0])
         if self.diameter_mode and any(w.letter == "X" for w in words):
             words = tuple(replace(w, value=w.value / 2) if w.letter == "X" else w for w in words)

@@ -14,7 +14,8 @@ from ..motion import Segment
 
 __all__ = ["make_segment", "dadd", "with_tool_deps"]
 
-#: ``Segment(...)`` with all fields but ``deps_tool`` positional, in order, built 3x faster (see nczones.frozen).
+#: ``Segment(...)`` with all fields but ``deps_tool`` positional, in order (``frame`` last), built 3x faster
+#: (see nczones.frozen).
 make_segment = builder(Segment, tuple(f for f in Segment.__dataclass_fields__ if f != "deps_tool"), deps_tool=())
 
 

@@ -1213,7 +1213,12 @@ def verify_segments(
             if len(violations) >= max_violations:
                 return False
             seen_blocks.add(seg.block)
-            violations.append(out.violation)
+            v = out.violation
+            if seg.frame is not None and v.frame is None:  # for the program point, reports only
+                from dataclasses import replace
+
+                v = replace(v, frame=seg.frame)
+            violations.append(v)
         elif out.reason is not None:
             reasons.append(out.reason)
         return True
@@ -1372,4 +1377,4 @@ def _chunk_rows(chunk: MotionChunk, rows: Iterable[int]) -> Iterator[Segment]:
         if chunk.derived is not None:  # canned-cycle rows name what produced them (reports)
             arc["derived"] = str(chunk.derived[i])
         yield Segment(kind, start, end, chunk.axes, int(chunk.block[i]), span,
-                      Fraction(int(chunk.tool_length[i]), den), None, **arc)
+                      Fraction(int(chunk.tool_length[i]), den), None, **arc, frame=chunk.frame)

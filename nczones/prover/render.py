@@ -16,9 +16,9 @@ from fractions import Fraction
 from .. import __version__
 from ..errors import shorten
 from ..exact import format_decimal, format_rational, seconds
-from .result import Result, Verdict
+from .result import Result, Verdict, Violation, point_program_missing
 
-__all__ = ["render_text", "render_json", "to_json_dict"]
+__all__ = ["render_text", "render_json", "to_json_dict", "program_point_json"]
 
 
 def _d(x: Fraction) -> str:
@@ -127,6 +127,7 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
             "params_exact": {n: format_rational(x) for n, x in v.params},
             "switches": dict(v.switches),
             "note": v.note,
+            **program_point_json(v),
         })
         if v.kind == "recovery":
             violations[-1].update({
@@ -165,6 +166,33 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
         "timings": {} if deterministic else {k: seconds(v) for k, v in result.timings},
     }
     return doc
+
+
+def program_point_json(v: Violation) -> dict:
+    """The ``point_program`` fields of a violation's JSON: the point in the program's coordinates (decimals
+    and exact rationals), the frame it was computed in, and why it is missing when it is (issue 37).
+
+    ``point_program_exact`` is the exact image of ``point_exact`` under the inverse frame; with a rotation
+    (``program_frame.exact`` false) that inverse uses the cosine and sine the control computed, so it is
+    the program point to within the control's rounding, not a proof-grade value.
+    """
+    pp = v.point_program
+    frame = v.frame
+    return {
+        "point_program": None if pp is None else {a: _d(x) for a, x in pp},
+        "point_program_exact": None if pp is None else _exact_point(pp),
+        "point_program_missing": point_program_missing(v),
+        "program_frame": None if frame is None or pp is None else {
+            "work": frame.work,
+            "units": "inch" if frame.inch else "mm",
+            "diameter_axes": list(frame.diameter),
+            "rotation": None if frame.rotation is None else {
+                "axes": list(frame.rotation.axes), "degrees": _d(frame.rotation.degrees)},
+            "exact": frame.exact,
+            "offset": {a: _d(o) for a, o in zip((a for a, _ in v.point), frame.offset)},
+            "description": frame.describe(),
+        },
+    }
 
 
 def render_json(result: Result, *, deterministic: bool = False) -> str:

@@ -7,8 +7,10 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 from ..errors import SourceSpan
+from ..motion import ProgramFrame
 
-__all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange", "Outcome", "reason_code", "NOT_MODELLED"]
+__all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange", "Outcome", "reason_code", "NOT_MODELLED",
+           "point_program_missing"]
 
 #: The reason code of a construct nczones does not model (a G/M code in a mode it does not follow, LinuxCNC
 #: polar words in a cycle, a Fanuc system variable ...): the interpreter names the construct (``G41``,
@@ -142,14 +144,45 @@ class Violation:
     #: False when :attr:`first_exit` only repeats the witness of an enclosed irrational path (developed arcs,
     #: polar moves, splines): outside, but not necessarily where the path first leaves the allowed set
     exit_located: bool = True
+    #: the program's coordinate frame at the violating block (work offset, G92/G52, rotation, diameter, units,
+    #: tool offsets; :class:`~nczones.motion.ProgramFrame`), from the segment; None when not recorded
+    frame: ProgramFrame | None = field(default=None, compare=False)
 
     @property
     def line(self) -> int | None:
         return None if self.span is None else self.span.line
 
     @property
+    def point_program(self) -> tuple[tuple[str, Fraction], ...] | None:
+        """:attr:`point` in the program's coordinates (program units, diameters on diameter axes, the tool
+        tip): the inverse of :attr:`frame` (exact unless ``frame.exact`` is False: a rotation).  None without
+        a frame, for a recovery move (it runs outside the program's frame), with parameter ranges (the
+        frame holds the nominal offsets, the witness deviated ones) and when the frame cannot be inverted
+        (:func:`point_program_missing` says why)."""
+        if point_program_missing(self):
+            return None
+        assert self.frame is not None
+        return self.frame.program_point(tuple(a for a, _ in self.point), tuple(x for _, x in self.point))
+
+    @property
     def source(self) -> str:
         return "" if self.span is None else self.span.text.rstrip("\r\n")
+
+
+def point_program_missing(v: Violation) -> str:
+    """Why a violation has no :attr:`Violation.point_program` ("" when it has one).
+
+    >>> point_program_missing(Violation(0, None, "z", (), (), Fraction(0), True, (), Fraction(0), True,
+    ...                                 Fraction(0), True, "exact", "line"))
+    'the program frame was not recorded'
+    """
+    if v.frame is None:
+        return "the program frame was not recorded"
+    if v.kind != "motion":
+        return "a recovery move runs in machine coordinates"
+    if v.params:
+        return "with parameter ranges the witness's offsets differ from the frame's nominal ones"
+    return v.frame.opaque
 
 
 @dataclass(frozen=True, slots=True)

@@ -248,11 +248,14 @@ def render_html(result: Result, machine: Any, program: Any = None, *, planes: An
         link = anchor(v.span, ln) if ln is not None and v.span else "—"
         depth = ("≥ " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact, numbers.depth_step(res))
         params = ", ".join([f"{n}={_d(x)}" for n, x in v.params] + [f"{s.replace('_', '-')} {p}" for s, p in v.switches])
+        in_program = numbers.program_point(v, res)
+        program_cell = "" if in_program is None else \
+            f'<br><span class="point-program" data-point-program="1">{_e(in_program)}</span>'
         vrows.append(
             f'<tr class="violation" id="v{i}"><td>{link}</td><td><code>{_e(v.source)}</code></td>'
             f"<td>{_e(v.zone)}</td><td>{_e(v.kind)}: {_e(v.segment_kind)}"
             f"{(' (' + _e(v.derived) + ')') if v.derived else ''}</td>"
-            f"<td><code>{_e(numbers.point(v.point, res))}</code></td><td>{_e(depth)} mm</td>"
+            f"<td><code>{_e(numbers.point(v.point, res))}</code> (machine){program_cell}</td><td>{_e(depth)} mm</td>"
             f"<td><code>{_e(numbers.point(v.first_exit, res))}</code></td><td>{_e(params) or '—'}</td>"
             f"<td>{_e(v.engine)}</td></tr>")
     unknown_lines: set[int] = set()

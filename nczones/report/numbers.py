@@ -24,7 +24,7 @@ from fractions import Fraction
 
 from ..exact import decimal_places, format_decimal
 
-__all__ = ["coord", "point", "depth", "resolution_of", "checked_in_words"]
+__all__ = ["coord", "point", "depth", "resolution_of", "checked_in_words", "program_point"]
 
 #: the most places an exact decimal is written with
 EXACT_PLACES = 12
@@ -57,6 +57,23 @@ def point(pairs: Iterable[tuple[str, Fraction]], resolution: Mapping[str, Fracti
     """``X110 Y60 Z≈242.097``: each axis to its own resolution."""
     res = resolution or {}
     return " ".join(f"{a}{coord(v, res.get(a))}" for a, v in pairs)
+
+
+def program_point(v: object, resolution: Mapping[str, Fraction] | None = None) -> str | None:
+    """A violation's point in the program's coordinates, as people read it, with its frame:
+    ``X62 Z-60.95 (program coordinates: G54, X as diameter)``; None when the report has no program point
+    (:attr:`nczones.prover.Violation.point_program`).  A diameter axis is written to twice its pulse, an
+    inch program to 6 places; a rotated frame's point is marked approximate."""
+    pp = getattr(v, "point_program", None)
+    frame = getattr(v, "frame", None)
+    if pp is None or frame is None:
+        return None
+    res: dict[str, Fraction] = {}
+    if not frame.inch:
+        res = {a: (2 * r if a in frame.diameter else r) for a, r in (resolution or {}).items()}
+    text = point(pp, res)
+    how = frame.describe() + ("" if frame.exact else "; approximate: the control rounds the rotation")
+    return f"{text} (program coordinates: {how})"
 
 
 def depth(q: Fraction, exact: bool = True, step: Fraction | None = None) -> str:

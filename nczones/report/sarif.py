@@ -150,6 +150,11 @@ def _result_entries(result: Result, base_abs: tuple[str, str], resolution: dict[
             "paramsExact": {n: format_rational(x) for n, x in v.params},
             "switches": dict(v.switches),
         }
+        pp = v.point_program
+        if pp is not None:  # the point in the program's coordinates (issue 37), as in the JSON report
+            props["pointProgram"] = {a: format_decimal(x) for a, x in pp}
+            props["pointProgramExact"] = {a: format_rational(x) for a, x in pp}
+            text = text[:-1] + f"; in program coordinates {numbers.program_point(v, resolution)}."
         if v.kind == "recovery":
             props.update({"breakLine": v.break_line, "leg": v.leg,
                           "breakPointExact": {a: format_rational(x) for a, x in v.break_point}})

@@ -6,9 +6,11 @@ One entry per violating block in execution order::
         G1 X50
         ^~~~~~
         point X380 Y130 is outside the allowed set (segment parameter 0.766667…)
+        that is X-20 Y130 (program coordinates: G54)
         first exit at X200 Y130 (segment parameter 0.166667…); engine exact
 
-then the reasons for ``unknown`` (``file:line:col: unknown[CODE]: ...``),
+(the second point line is the same point in the program's coordinates: the inverse of the work offset,
+G92/G52, rotation, diameter mode and tool offsets at that block, see ``ProgramFrame``), then the reasons for ``unknown`` (``file:line:col: unknown[CODE]: ...``),
 the notes, and a one-line summary.  Colour (ANSI) only when asked for;
 :func:`use_color` decides for a stream (a terminal, ``NO_COLOR`` unset,
 ``TERM`` not ``dumb``).  ``deterministic=True`` leaves out everything that
@@ -99,6 +101,7 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
         G1 X50
         ^~~~~~
         point X380 Y130 is outside the allowed set (segment parameter 0.766667…)
+        that is X-20 Y130 (program coordinates: G54)
         first exit at X200 Y130 (segment parameter 0.166667…); engine exact
     dip.ngc: unsafe: 1 violating block, the first at line 4; 3 segments checked; dialect linuxcnc; solver z3
     """
@@ -122,6 +125,9 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
             out.append(f"    {paint('caret', caret)}")
         out.append(f"    point {numbers.point(v.point, resolution)} is outside the allowed set "
                    f"(segment parameter {_par(v.parameter, v.parameter_exact)})")
+        in_program = numbers.program_point(v, resolution)
+        if in_program is not None:
+            out.append(f"    that is {in_program}")
         if v.exit_located:
             out.append(f"    first exit at {numbers.point(v.first_exit, resolution)} "
                        f"(segment parameter {_par(v.first_exit_parameter, v.first_exit_exact)}); engine {v.engine}")

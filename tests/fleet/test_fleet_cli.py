@@ -48,8 +48,11 @@ def test_the_bundled_library_has_mixed_verdicts_and_every_example(tmp_path):
     assert verdicts[("../programs/notch_over.ngc", "grinder")] == "safe"
     assert verdicts[("../programs/x_near_limit.ngc", "mill_start")] == "safe"  # margin 1 from [[settings]]
     page = tmp_path / "site" / "index.html"
-    r = nczones("fleet", "status", str(LIBRARY), "--store", str(store), "--format", "html", "--output", str(page))
+    # HTML reports verify each job again (tests/fleet/test_fleet_status_html.py covers them): none here
+    r = nczones("fleet", "status", str(LIBRARY), "--store", str(store), "--format", "html", "--output", str(page),
+                "--html-reports", "none")
     assert r.returncode == 0
+    assert not list((page.parent / "reports").glob("*.html"))
     html = page.read_text()
     key = next(c["job_key"] for c in doc["cells"] if c["program"] == "../programs/notch_dip.ngc")
     assert f'href="reports/{key}.txt"' in html and "http" not in html.split("<body>")[1]

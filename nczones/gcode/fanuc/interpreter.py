@@ -39,7 +39,7 @@ from fractions import Fraction
 from typing import Any, TypeAlias
 
 from ...machine import FANUC_OFFSETS, Machine
-from ...motion import PLANE_AXES, Plane, SegmentKind
+from ...motion import PLANE_AXES, FrameRotation, Plane, ProgramFrame, SegmentKind
 from ..blocks import Block, Word
 from ..interpreter import (
     INCH,
@@ -59,6 +59,7 @@ from .transforms import (
     Polar,
     Rotation,
     Scaling,
+    cos_sin_enclosure,
     mirror,
     polar_point,
     rotate,
@@ -261,6 +262,28 @@ class FanucInterpreter(Interpreter):
                 deps.append(d)
             self.dep_off = deps
 
+    def make_frame(self) -> ProgramFrame:
+        """The program frame (:class:`~nczones.motion.ProgramFrame`): ``machine = program + self.off`` (EXT,
+        work offset, G52, G92, tool offsets), G68 rotating about its centre; a diameter axis of a lathe; no
+        program point under G51 scaling, G51.1 mirror image, G16 polar coordinates, G12.1 or G07.1."""
+        rot = None
+        r = self.rotation
+        if r is not None:
+            (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(r.angle)
+            off = self.off
+            rot = FrameRotation((self.axes[r.ia], self.axes[r.ib]), r.angle, (c_lo + c_hi) / 2, (s_lo + s_hi) / 2,
+                                (-r.ca, -r.cb), (r.ca + off[r.ia], r.cb + off[r.ib]))
+        opaque = ""
+        for on, what in ((self.scaling, "scaling (G51)"), (self.mirroring, "mirror image (G51.1)"),
+                         (self.polar, "polar coordinates (G16)"), (getattr(self, "polar_ip", None),
+                                                                  "polar coordinate interpolation (G12.1)"),
+                         (getattr(self, "cylinder", None), "cylindrical interpolation (G07.1)")):
+            if on is not None:
+                opaque = f"{what} is active: the program point is not given"
+                break
+        diameter = tuple(self.axes[i] for i in sorted(getattr(self, "diameter", ())))
+        return ProgramFrame(self.wcs, tuple(self.off), rot, diameter, self.inch, opaque)
+
     def in_cycle(self) -> bool:
         """A canned cycle is active (the language layer reads K as its repeat count)."""
         return self.cycle is not None
@@ -313,6 +336,7 @@ class FanucInterpreter(Interpreter):
             self.unset.discard("plane")
         if 6 in groups:
             self.inch = groups[6][0] == 200
+            self.invalidate_frame()
             self.unset.discard("units")
         if 3 in groups:
             self.absolute = groups[3][0] == 900
@@ -749,6 +773,7 @@ class FanucInterpreter(Interpreter):
             if g not in groups:
                 continue
             k, w = groups[g]
+            self.invalidate_frame()  # the program frame names the transform
             on = k in (160, 510, 511, 680)
             if on:
                 self._enter_transform()

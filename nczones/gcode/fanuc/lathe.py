@@ -499,6 +499,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             self._execute_general(Block(tuple(others), block.span, block.index, block.number, block.messages))
         if k in POLAR_OFF:
             self.polar_ip = None
+            self.invalidate_frame()
             return
         if self.polar_ip is not None:
             raise self.error("GC234", f"{w.text or gname(k)}: polar coordinate interpolation is already on; cancel it "
@@ -526,6 +527,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             return
         self.note_assumed(("units", "offset"))
         self.polar_ip = PolarState(ix, ic, self.off[ix], self.pos[ic], (x0, Fraction(0)), (self._grid(ix), self.settings.increment_mm))
+        self.invalidate_frame()
 
 
     def _polar_move(self, st: PolarState, block: Block, words: dict[str, Word], motion: int) -> None:
