@@ -124,11 +124,22 @@ def _renamed(rows: dict[str, dict], renames: list[str]) -> dict[str, dict]:
     return json.loads(text)
 
 
-def diff(old_path: Path, new_path: Path, renames: list[str] | None = None) -> int:
+def _without(value, keys: set[str]):
+    """``value`` without the report fields ``keys`` (fields a change added on purpose)."""
+    if isinstance(value, dict):
+        return {k: _without(v, keys) for k, v in value.items() if k not in keys}
+    if isinstance(value, list):
+        return [_without(v, keys) for v in value]
+    return value
+
+
+def diff(old_path: Path, new_path: Path, renames: list[str] | None = None, ignore: list[str] | None = None) -> int:
     """Print every difference; exit 1 when a verdict, witness or report field differs, else 0.
 
-    ``renames`` (``OLD=NEW``, e.g. an error code split in two) are undone in the new snapshot first."""
+    ``ignore`` names report fields left out on both sides; ``renames`` (``OLD=NEW``, e.g. an error code split in two) are undone in the new snapshot first."""
     old, new = _load(old_path), _renamed(_load(new_path), renames or [])
+    if ignore:
+        old, new = _without(old, set(ignore)), _without(new, set(ignore))
     meaning = stats_only = 0
     for name in sorted(set(old) | set(new)):
         if name not in old or name not in new:
@@ -158,11 +169,13 @@ def main(argv: list[str] | None = None) -> int:
     d.add_argument("new", type=Path)
     d.add_argument("--rename", action="append", default=[], metavar="OLD=NEW",
                    help="an intended rename (an error code) undone before comparing")
+    d.add_argument("--ignore", action="append", default=[], metavar="FIELD",
+                   help="a report field added on purpose, left out of both sides")
     args = parser.parse_args(argv)
     if args.command == "run":
         os.environ.setdefault("NCZONES_CORPUS", str(ROOT.parent / "shared" / "corpus"))
         return run(args.out, args.only)
-    return diff(args.old, args.new, args.rename)
+    return diff(args.old, args.new, args.rename, args.ignore)
 
 
 if __name__ == "__main__":
