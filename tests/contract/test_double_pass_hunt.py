@@ -38,7 +38,7 @@ import pytest
 from hypothesis import event, given, settings
 from hypothesis import strategies as st
 
-import nczones.prover.doubles as prover_doubles
+import nczones.pipeline.verification as prover_doubles
 from nczones.errors import NczonesError
 from nczones.gcode import interpret_text
 from nczones.gcode.doubles import Declined, double_pass
