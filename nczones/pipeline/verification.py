@@ -66,7 +66,16 @@ def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_ite
 
 def verify_source(source: ProgramSource, machine: Machine, options: VerifyOptions, *,
                   progress: Callable[..., object] | None = None) -> Result:
-    """Verify one program (see :func:`nczones.prover.verify` for the options' meaning)."""
+    """Verify one program (see :func:`nczones.prover.verify` for the options' meaning); ``progress`` is
+    called as ``progress(line, total_lines)`` after each chunk of motion is checked."""
+    result = _verify_source(source, machine, options, progress)
+    if source.notes:  # what reading the bytes assumed (a byte order mark, comment bytes read as CP1252)
+        result = replace(result, notes=source.notes + tuple(result.notes))
+    return result
+
+
+def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptions,
+                   progress: Callable[..., object] | None) -> Result:
     from ..blockskip import format_block_delete, used_switches
     from ..exact import exact
     from ..gcode import DEFAULT_ARC_TOLERANCE, checked_options

@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
@@ -154,10 +153,7 @@ def verify(
         margin=margin, params=params, engine=engine, max_violations=max_violations, arc_tolerance=arc_tolerance,
         recovery=recovery, max_iterations=max_iterations, dialect=dialect, library=library,
         block_delete=block_delete, budget_s=budget_s, limits=limits)
-    result = _run(source, machine, options, progress)
-    if source.notes:  # what reading the bytes assumed (a byte order mark, comment bytes read as CP1252)
-        result = replace(result, notes=source.notes + tuple(result.notes))
-    return result
+    return _run(source, machine, options, progress)
 
 
 #: :func:`verify` under the name that says what it takes.

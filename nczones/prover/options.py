@@ -218,7 +218,7 @@ class VerifyOptions:
                 kw[name] = s[name]
         tol = s.get("arc_tolerance")
         if tol is not None:
-            kw["arc_tolerance"] = tol if tol in ("linuxcnc", "grbl") else parse_rational(str(tol))
+            kw["arc_tolerance"] = tol if tol in ("linuxcnc", "grbl") else parse_rational(tol)
         if s.get("dialect") in ("linuxcnc", "fanuc"):
             kw["dialect"] = s["dialect"]
         if isinstance(s.get("library"), str):
