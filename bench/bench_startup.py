@@ -51,7 +51,7 @@ PROGRAM = "G90 G21\nG1 X10 Y10 F100\nM2\n"
 
 #: ``nczones`` the eager way: the parser built from every command's module, OpenBLAS with its own threads,
 #: and any program, however small, through the vectorized path.
-EAGER = ("import sys\nfrom nczones import cli\nimport nczones.prover as api, nczones.prover.core as core\n"
+EAGER = ("import sys\nfrom nczones import cli\nimport nczones.pipeline.verification as api, nczones.prover.core as core\n"
          "cli.chosen_command = lambda argv: None\ncli._one_blas_thread = lambda: None\n"
          "api.FAST_PATH_MIN_LINES = core.SCREEN_MIN_SEGMENTS = 0\nsys.exit(cli.main(sys.argv[1:]))")
 LAZY = "from nczones import cli\ncli.run()"

@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 
 from . import __version__
 from .errors import Diagnostic, InputError, InvalidArgument, NczonesError
-from .exact import format_decimal, parse_decimal
+from .exact import format_decimal
 from .machine import Machine, load_machine
 from .zones import PolygonZone, SteppedZone
 
@@ -247,14 +247,9 @@ def with_dialect(machine: Machine, dialect: str | None) -> Machine:
 def library_folder(path: str | list[str] | None) -> str | None:
     """``--library DIR`` (repeated, or folders joined by ``os.pathsep``): existing folders, joined by
     ``os.pathsep`` in the order given, or an input error (exit 2)."""
-    if path is None:
-        return None
-    folders = [f for p in ([path] if isinstance(path, str) else path) for f in p.split(os.pathsep) if f]
-    for folder in folders:
-        if not os.path.isdir(folder):
-            raise InputError(Diagnostic("VF112", f"--library {folder!r}: not a folder of subprogram files",
-                                        file="<command line>"))
-    return os.pathsep.join(folders) if folders else None
+    from .prover.options import library_folders
+
+    return library_folders(path)
 
 
 def program_source(name: str) -> ProgramSource:
@@ -270,16 +265,9 @@ def arc_tolerance(text: str | None) -> Fraction | str | None:
     >>> arc_tolerance("0.002"), arc_tolerance("linuxcnc")
     (Fraction(1, 500), 'linuxcnc')
     """
-    if text is None or text in ("linuxcnc", "grbl"):  # None: the machine file's arc_tolerance, else 0.002
-        return text
-    try:
-        q = parse_decimal(text)
-    except ValueError:  # InvalidArgument is a ValueError
-        q = None
-    if q is None or q < 0:
-        raise InputError(Diagnostic("VF104", f"--arc-tolerance {text!r}: expected a non-negative decimal number "
-                                             "of mm (e.g. 0.002), 'linuxcnc' or 'grbl'", file="<command line>"))
-    return q
+    from .prover.options import arc_tolerance_option
+
+    return arc_tolerance_option(text)
 
 
 @dataclass(frozen=True, slots=True)

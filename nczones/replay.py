@@ -399,20 +399,13 @@ def _show(axes: tuple[str, ...], p: Point) -> str:
 
 
 def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: frozenset[int]) -> list[Segment]:
-    from .gcode import interpret
+    """The motion of the program as the report's settings interpret it (:class:`VerifyOptions`), with the
+    block-skip switches ``skip`` on."""
+    from .pipeline.verification import interpretation
+    from .prover.options import VerifyOptions
 
-    options: dict[str, Any] = {}
-    if settings.get("arc_tolerance") is not None:
-        tol = settings["arc_tolerance"]
-        options["arc_tolerance"] = tol if tol in ("linuxcnc", "grbl") else parse_rational(tol)
-    if isinstance(settings.get("max_iterations"), int):
-        options["max_loop_iterations"] = settings["max_iterations"]
-    options["block_delete"] = skip
-    if settings.get("dialect") in ("linuxcnc", "fanuc"):
-        options["dialect"] = settings["dialect"]
-    if isinstance(settings.get("library"), str):
-        options["library"] = settings["library"]
-    return list(interpret(source, machine, **options).segments())
+    options = VerifyOptions.from_settings(settings)
+    return list(interpretation(source, machine, options, skip=skip).segments())
 
 
 def _skips_deleted_blocks(v: Mapping[str, Any], settings: Mapping[str, Any]) -> frozenset[int]:

@@ -216,7 +216,8 @@ def _write_report(result: Result, machine: Machine, source: Any, program: str) -
 
 def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
-    from ..prover import verify
+    from ..pipeline.verification import verify_source
+    from ..prover.options import VerifyOptions
     from ..prover.result import Verdict
 
     progress = ProgressLines(sys.stderr)
@@ -225,7 +226,7 @@ def _run(args: argparse.Namespace) -> int:
     source = cli.program_source(args.program)
     from .verify import budget_seconds
 
-    result = verify(source, machine, progress=progress, budget_s=budget_seconds(args.budget))
+    result = verify_source(source, machine, VerifyOptions(budget_s=budget_seconds(args.budget)), progress=progress)
     progress.emit(100)
     if result.verdict is Verdict.SAFE and not result.interrupted:
         with open(args.program, "rb") as fh:

@@ -64,11 +64,12 @@ def _run(args: argparse.Namespace) -> int:
     budget = budget_seconds(args.budget)
     result = None
     if args.verify:
-        from ..prover import verify
+        from ..pipeline.verification import verify_source
+        from ..prover.options import VerifyOptions
 
         bar = progress_for(sys.stderr, "verify")
         try:
-            result = verify(source, machine, progress=bar, budget_s=budget)
+            result = verify_source(source, machine, VerifyOptions(budget_s=budget), progress=bar)
         finally:
             if bar is not None:
                 bar.close()

@@ -117,8 +117,7 @@ def render_text(result: Any, program: str) -> str:
 
 def _run(args: argparse.Namespace) -> int:
     from ..cli import program_source
-    from ..controller import Settings, simulate
-    from ..gcode import interpret
+    from ..controller import Settings
     from ..machine import load_machine
 
     machine = cli.with_dialect(load_machine(args.machine), args.dialect)
@@ -138,33 +137,24 @@ def _run(args: argparse.Namespace) -> int:
     notes: list[str] = []
     budget_stop = False
     if result is None:
-        from ..prover.limits import interpretation_budget
+        from ..pipeline.simulation import simulate_source
+        from ..prover.options import VerifyOptions
+        from ..report.progress import progress_for
         from .verify import budget_seconds
 
+        # the interpretation's settings, checked in the order the command always checked them
         budget = budget_seconds(args.budget)
-        run = interpret(source, machine, arc_tolerance=cli.arc_tolerance(args.arc_tolerance),
-                        max_loop_iterations=_max_iterations(args.max_iterations), library=library)
-        from ..report.progress import progress_for
-
+        options = VerifyOptions(arc_tolerance=cli.arc_tolerance(args.arc_tolerance),
+                                max_iterations=_max_iterations(args.max_iterations), library=library,
+                                budget_s=budget)
         bar = progress_for(sys.stderr, "simulate")
         try:
-            # interpretation is lazy: it runs inside simulate(), whose repetitions (loops, repeats, cycle passes)
-            # ask the budget and end as VF203 once it is spent
-            with interpretation_budget(budget):
-                result = simulate(run, machine, mode=args.mode, monitor=args.monitor, settings=settings,
-                                  progress=bar, break_at=_break_at(args.break_at))
+            result, notes, budget_stop = simulate_source(source, machine, options, progress=bar, mode=args.mode,
+                                                         monitor=args.monitor, settings=settings,
+                                                         break_at=_break_at(args.break_at))
         finally:
             if bar is not None:
                 bar.close()
-        for u in run.unsupported:
-            if u.code == "VF203":
-                budget_stop = True
-                notes.append(f"{u.span}: {u.code}: {u.reason}; the simulation stopped there")
-            else:
-                notes.append(f"{u.span}: {u.code} is not supported ({u.reason}); the simulation stopped there")
-        if run.assumed_modal:
-            notes.extend(run.assumed_modal_text())
-        notes.extend(run.notes())
     if args.format == "json":
         data = result.to_json()
         data["program"] = source.name

@@ -27,12 +27,12 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from .. import cli
 from ..errors import Diagnostic, InputError
-from ..exact import parse_decimal
 from ..prover.limits import DEFAULT_BUDGET_S
 
 if TYPE_CHECKING:
     from ..gcode.source import ProgramSource
     from ..machine import Machine
+    from ..prover.options import VerifyOptions
     from ..prover.result import Result
 
 __all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "budget_seconds",
@@ -74,44 +74,24 @@ def _command_line_error(code: str, message: str) -> InputError:
     return InputError(Diagnostic(code, message, file="<command line>"))
 
 
-def verify_options(args: argparse.Namespace, machine: Machine) -> dict[str, Any]:
-    """The keyword arguments of :func:`nczones.prover.verify` from the command line (``VF1xx`` errors)."""
-    from ..prover import parse_param
+def verify_options(args: argparse.Namespace, machine: Machine) -> VerifyOptions:
+    """The options of :func:`nczones.prover.verify` from the command line, read and checked
+    (:meth:`~nczones.prover.options.VerifyOptions.from_args`: ``VF1xx`` errors), ``--param`` ranges read
+    against ``machine``."""
+    from ..prover.options import VerifyOptions
 
-    try:
-        margin = parse_decimal(args.margin)
-    except ValueError:  # InvalidArgument is a ValueError
-        raise _command_line_error("VF102", f"--margin {args.margin!r}: expected a decimal number of mm "
-                                           "(e.g. 0.001)") from None
-    if margin < 0:
-        raise _command_line_error("VF102", f"--margin {args.margin}: must not be negative")
-    if args.max_violations < 1:
-        raise _command_line_error("VF103", f"--max-violations {args.max_violations}: must be at least 1")
-    if args.max_iterations < 1:
-        raise _command_line_error("VF105", f"--max-iterations {args.max_iterations}: must be at least 1")
-    return {
-        "margin": margin,
-        "params": tuple(parse_param(p, machine) for p in args.param),
-        "engine": args.engine,
-        "max_violations": args.max_violations,
-        "recovery": args.recovery,
-        "arc_tolerance": cli.arc_tolerance(args.arc_tolerance),
-        "max_iterations": args.max_iterations,
-        "library": cli.library_folder(args.library),
-        "block_delete": _block_delete(args.block_delete),
-        "budget_s": budget_seconds(args.budget),
-    }
+    return VerifyOptions.from_args(args, machine)
 
 
-def verify_one(program: str, machine: Machine, options: dict[str, Any]) -> tuple[ProgramSource, Result]:
+def verify_one(program: str, machine: Machine, options: VerifyOptions) -> tuple[ProgramSource, Result]:
     """Read and verify one program (a path or ``-``) with a progress bar on a terminal: (source, result)."""
-    from ..prover import verify
+    from ..pipeline.verification import verify_source
     from ..report.progress import progress_for
 
     source = cli.program_source(program)
     bar = progress_for(sys.stderr, "verify")
     try:
-        return source, verify(source, machine, progress=bar, **options)
+        return source, verify_source(source, machine, options, progress=bar)
     finally:
         if bar is not None:
             bar.close()
@@ -389,28 +369,7 @@ cli.REGISTRARS["verify"] = register
 
 
 def budget_seconds(text: str | None) -> float | None:
-    """``--budget``: positive seconds, or "none" (``VF109``)."""
-    if text is None:
-        return DEFAULT_BUDGET_S
-    if text.strip().lower() == "none":
-        return None
-    try:
-        value: float | None = float(parse_decimal(text))
-    except ValueError:  # InvalidArgument is a ValueError
-        value = None
-    if value is None or not value > 0:
-        raise _command_line_error("VF109", f"--budget {text!r}: expected a positive number of seconds (e.g. 60) "
-                                           "or 'none'")
-    return value
+    """``--budget``: positive seconds, or "none" (``VF109``; :func:`nczones.prover.options.budget_seconds`)."""
+    from ..prover.options import budget_seconds as read
 
-
-def _block_delete(text: str | None) -> str | None:
-    """``--block-delete``: both|off|on, or positions per switch (``1=on,2=off``), canonical (``VF110``)."""
-    from ..blockskip import format_block_delete, parse_block_delete
-
-    if text is None:
-        return None
-    try:
-        return format_block_delete(parse_block_delete(text))
-    except ValueError as e:
-        raise _command_line_error("VF110", f"--block-delete {text!r}: {e}") from None
+    return read(text)

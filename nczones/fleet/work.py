@@ -29,10 +29,12 @@ import tempfile
 import time
 import traceback
 from collections import OrderedDict
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .jobs import code_version
-from .project import verify_kwargs
+
+if TYPE_CHECKING:
+    from ..prover.options import VerifyOptions
 
 __all__ = ["run_task", "record", "error_record", "machine_for"]
 
@@ -95,6 +97,7 @@ def error_record(program: str, message: str, wall_s: float, code: str = "") -> d
 def run_task(task: dict[str, Any]) -> dict[str, Any]:
     """Run one task (see the module docstring); never raises for a problem of the job itself."""
     from ..errors import InputError
+    from ..prover.options import VerifyOptions
 
     t0 = time.perf_counter()
     program = task["program"]
@@ -105,11 +108,11 @@ def run_task(task: dict[str, Any]) -> dict[str, Any]:
         if machine.subroutine_path and task.get("root"):  # named relative to the project root, as the file is
             machine = dataclasses.replace(machine, subroutine_path=tuple(
                 os.path.join(task["root"], p) for p in machine.subroutine_path))
-        kwargs = verify_kwargs(task["settings"], task["root"])
+        options = VerifyOptions.from_settings(task["settings"], root=task["root"])
         if task["kind"] == "chunk":
-            answer["result"] = _verify_chunk(task, machine, kwargs)
+            answer["result"] = _verify_chunk(task, machine, options)
         else:
-            result = _verify_whole(task, machine, kwargs)
+            result = _verify_whole(task, machine, options)
             answer["record"] = record(result, program, time.perf_counter() - t0)
     except InputError as exc:
         answer["record"] = error_record(program, exc.render(), time.perf_counter() - t0, exc.code)
@@ -134,16 +137,16 @@ def _finished(result: Any) -> Any:
     return result
 
 
-def _verify_whole(task: dict[str, Any], machine: Any, kwargs: dict[str, Any]) -> Any:
+def _verify_whole(task: dict[str, Any], machine: Any, options: VerifyOptions) -> Any:
     from ..gcode import load_program
-    from ..prover import verify
+    from ..pipeline.verification import verify_source
 
     path = task.get("program_path")
     if path is not None:
         source = load_program(path, task["program"])
         if source.sha256 != task["program_sha256"]:
             raise _changed(task["program"])
-        return _finished(verify(source, machine, **kwargs))
+        return _finished(verify_source(source.require_code(), machine, options))
     data: bytes = task["program_data"]
     if hashlib.sha256(data).hexdigest() != task["program_sha256"]:
         raise _changed(task["program"])
@@ -154,7 +157,7 @@ def _verify_whole(task: dict[str, Any], machine: Any, kwargs: dict[str, Any]) ->
         source = load_program(tmp, task["program"])
     finally:
         os.unlink(tmp)
-    return _finished(verify(source, machine, **kwargs))
+    return _finished(verify_source(source.require_code(), machine, options))
 
 
 def _changed(program: str) -> Exception:
@@ -164,8 +167,9 @@ def _changed(program: str) -> Exception:
                                           "its job key was computed from); run the fleet again", file=program))
 
 
-def _verify_chunk(task: dict[str, Any], machine: Any, kwargs: dict[str, Any]) -> Any:
-    from ..prover import verify_text
+def _verify_chunk(task: dict[str, Any], machine: Any, options: VerifyOptions) -> Any:
+    from ..gcode.source import program_text
+    from ..pipeline.verification import verify_source
     from .split import shift_result
 
     chunk = task["chunk"]
@@ -179,5 +183,5 @@ def _verify_chunk(task: dict[str, Any], machine: Any, kwargs: dict[str, Any]) ->
         text = chunk.text(source.text)
     if chunk.position is not None:
         machine = dataclasses.replace(machine, start=chunk.position)
-    result = _finished(verify_text(text, machine, file=task["program"], **kwargs))
+    result = _finished(verify_source(program_text(text, task["program"]).require_code(), machine, options))
     return shift_result(result, chunk)

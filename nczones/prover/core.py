@@ -63,13 +63,14 @@ from .smt import Solver, add, mul, or_all, q, sub, zone_violation
 
 if TYPE_CHECKING:
     from .limits import RunLimits
+    from .options import VerifyOptions
     from .profile import RunProfile
     from .smt import SolverAnswer
 
 #: Parameter deviations as the solver found them: ``(name, deviation)`` pairs.
 Params = tuple[tuple[str, Fraction], ...]
 
-__all__ = ["verify_segments", "Prover"]
+__all__ = ["verify_segments", "prove", "Prover"]
 
 F0 = Fraction(0)
 F1 = Fraction(1)
@@ -1071,6 +1072,17 @@ def eval_lit(text: str) -> Fraction:
 
 def _clamp(x: Fraction, lo: Fraction, hi: Fraction) -> Fraction:
     return max(lo, min(hi, x))
+
+
+def prove(motion: Iterable[Segment | MotionChunk], machine: Machine, options: VerifyOptions, *, file: str = "",
+          profile: RunProfile | None = None) -> Result:
+    """Prove ``motion`` (segments or chunks in execution order) against ``machine`` with the options' margin,
+    parameter ranges (:class:`~nczones.prover.result.ParamRange` values), engine, violation limit and run
+    limits: :func:`verify_segments` with the settings of one :class:`~nczones.prover.options.VerifyOptions`.
+    The prover never reads program text; :mod:`nczones.pipeline` turns a program into motion first."""
+    return verify_segments(motion, machine, margin=options.margin, params=options.ranges(machine),
+                           engine=options.engine, max_violations=options.max_violations, file=file,
+                           limits=options.run_limits(), profile=profile)
 
 
 def verify_segments(

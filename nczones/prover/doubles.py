@@ -1,4 +1,5 @@
-"""``safe`` from the double pass (:mod:`nczones.gcode.doubles`): boxes that hold the motion, proved exactly.
+"""``safe`` from the double pass (:mod:`nczones.gcode.doubles`, run by :mod:`nczones.pipeline`): boxes that hold
+the motion, proved exactly.
 
 The double pass gives every motion's end point as doubles with a bound on its distance from the full
 path's exact point, and :meth:`~nczones.gcode.doubles.DoublePath.enclosure` turns a run of motions into an
@@ -20,7 +21,7 @@ from ..machine import Machine
 from .exact import box_fits
 from .result import Result, Verdict
 
-__all__ = ["prove_enclosures", "double_pass_result"]
+__all__ = ["prove_enclosures", "prove_double_path"]
 
 #: A box that does not fit is split into this many.
 SPLIT = 16
@@ -55,17 +56,14 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
     return boxes
 
 
-def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_iterations: int) -> Result | None:
-    """A ``safe`` result for ``text`` from the double pass, or None when the pass declines or its boxes do not
-    prove the program (the caller then runs the full path)."""
-    from ..gcode.doubles import Declined, double_pass
+def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: float | None = None) -> Result | None:
+    """A ``safe`` result for the double pass's path (:func:`nczones.gcode.doubles.double_pass`), or None when
+    its boxes do not prove the program (the caller then runs the full path).  ``started`` is when the pass
+    began (:func:`time.perf_counter`), for the timings."""
     from .smt import z3_version
 
-    started = time.perf_counter()
-    try:
-        path = double_pass(text, machine, max_iterations=max_iterations)
-    except Declined:
-        return None
+    if started is None:
+        started = time.perf_counter()
     boxes = prove_enclosures(path, machine, margin, max_boxes=max(64, path.motions // 16))
     if boxes is None:
         return None

@@ -38,7 +38,7 @@ import pytest
 from hypothesis import event, given, settings
 from hypothesis import strategies as st
 
-import nczones.prover.doubles as prover_doubles
+import nczones.pipeline.verification as prover_doubles
 from nczones.errors import NczonesError
 from nczones.gcode import interpret_text
 from nczones.gcode.doubles import Declined, double_pass
@@ -361,12 +361,12 @@ def _outcome(text: str, machine, with_pass: bool, decided: list | None = None, *
     finally:
         prover_doubles.double_pass_result = saved
     assert with_pass or calls or "#" not in text or out[0] == "error" or not _may_try(text), \
-        "switching the double pass off did not reach _verify"
+        "switching the double pass off did not reach the pipeline"
     return out
 
 
 def _may_try(text: str) -> bool:
-    """Whether ``_verify`` tries the double pass on ``text`` (no block-delete line) with the options here."""
+    """Whether the pipeline tries the double pass on ``text`` (no block-delete line) with the options here."""
     return not any(line.lstrip(" \t").startswith("/") for line in text.split("\n"))
 
 

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-import nczones.prover.doubles as prover_doubles
+import nczones.pipeline.verification as prover_doubles
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from nczones.prover.result import Verdict

@@ -17,7 +17,7 @@ from fractions import Fraction as F
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-import nczones.prover as prover_api
+import nczones.pipeline.verification as prover_api
 import nczones.prover.core as core
 from nczones.machine import parse_machine
 from nczones.prover import verify_text

@@ -1,0 +1,584 @@
+"""Verification: one program's text → interpretation → lane → proof, and what the report needs of the text.
+
+:func:`verify_source` is the pipeline of :func:`nczones.prover.verify` (see :mod:`nczones.pipeline`).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import replace
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
+
+from ..errors import InvalidArgument
+from ..exact import format_decimal
+from ..gcode.source import ProgramSource
+from ..machine import Machine
+from ..prover.limits import RunLimits
+from ..prover.options import VerifyOptions
+from ..prover.profile import RunProfile
+from ..prover.result import ParamRange, Reason, Result, Verdict, Violation, reason_code
+
+if TYPE_CHECKING:
+    from ..gcode import Interpretation
+
+__all__ = ["verify_source", "interpretation", "double_pass_result", "switch_combinations",
+           "switch_name", "source_lines", "FAST_PATH_MIN_LINES", "MAX_SWITCH_COMBINATIONS"]
+
+F0 = Fraction(0)
+#: Programs of fewer lines are read by the full interpreter alone: the vectorized fast path (numpy) costs
+#: more to load than it saves there, and the segments are the same either way.
+FAST_PATH_MIN_LINES = 512
+
+
+def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptions, *,
+                   skip: frozenset[int] | None = None, ranges: tuple[ParamRange, ...] = (),
+                   fast: bool = True) -> Interpretation:
+    """The interpretation of ``source`` on ``machine`` with the options' dialect, library, loop bound and
+    arc tolerance (:func:`nczones.gcode.interpret`); ``skip`` the block-skip switches on (None: the
+    interpreter's default, none), ``ranges`` parameter ranges whose dependencies are tracked, ``fast`` the
+    vectorized fast path allowed."""
+    from ..gcode import interpret
+
+    extra = options.interpret_keywords(machine)
+    if skip is not None:
+        extra["block_delete"] = skip
+    if ranges:
+        extra.update(track_dependencies=True, param_ranges=ranges)
+    return interpret(source, machine, fast=fast, **extra)
+
+
+def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_iterations: int) -> Result | None:
+    """A ``safe`` result for ``text`` from the double pass (:mod:`nczones.gcode.doubles`, proved by
+    :func:`nczones.prover.doubles.prove_double_path`), or None when the pass declines or its boxes do not
+    prove the program (the caller then runs the full path)."""
+    from ..gcode.doubles import Declined, double_pass
+    from ..prover.doubles import prove_double_path
+
+    started = time.perf_counter()
+    try:
+        path = double_pass(text, machine, max_iterations=max_iterations)
+    except Declined:
+        return None
+    return prove_double_path(path, machine, margin, started)
+
+
+def verify_source(source: ProgramSource, machine: Machine, options: VerifyOptions, *,
+                  progress: Callable[..., object] | None = None) -> Result:
+    """Verify one program (see :func:`nczones.prover.verify` for the options' meaning); ``progress`` is
+    called as ``progress(line, total_lines)`` after each chunk of motion is checked."""
+    result = _verify_source(source, machine, options, progress)
+    if source.notes:  # what reading the bytes assumed (a byte order mark, comment bytes read as CP1252)
+        result = replace(result, notes=source.notes + tuple(result.notes))
+    return result
+
+
+def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptions,
+                   progress: Callable[..., object] | None) -> Result:
+    from ..blockskip import format_block_delete, used_switches
+    from ..exact import exact
+    from ..gcode import DEFAULT_ARC_TOLERANCE, checked_options
+    from ..prover.nose import nose_zones
+
+    t0 = time.perf_counter()
+    margin = exact(options.margin)
+    ranges = options.ranges(machine)
+    # a lathe tool's nose radius: the tip zones enlarged by the nose's reach (nczones.prover.nose), or a
+    # reason the verdict cannot be safe
+    machine, nose_note, nose_reason = nose_zones(machine)
+    nose_reasons = (Reason(nose_reason, None, None, "VF207"),) if nose_reason else ()
+    modes = options.block_delete_modes(machine)
+    mode = format_block_delete(modes)
+    options = replace(options, params=ranges, arc_tolerance=options.machine_tolerance(machine), block_delete=mode)
+    tolerance = options.arc_tolerance if options.arc_tolerance is not None else DEFAULT_ARC_TOLERANCE
+    # Every option that can change the verdict, as JSON values: reports carry them and `nczones replay`
+    # re-runs with them (VerifyOptions.to_settings).
+    settings = options.to_settings(machine)
+    dialect = options.effective_dialect(machine)
+    limits = options.run_limits()
+    options = replace(options, limits=limits)
+    # one budget for the whole program: every case and switch position draws on it
+    # one profile too: the progress bar counts the motions of every case, and --stats sums them
+    profile = RunProfile()
+    used = used_switches(source.text, dialect)
+    deleted = bool(used)
+    if (options.engine == "auto" and not ranges and options.recovery is None and not deleted
+            and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and "#" in source.text):
+        # the options the full path refuses are refused before the pass too
+        checked_options(machine, tolerance, options.max_iterations, options.dialect)
+        if margin < 0:
+            raise InvalidArgument(f"margin must not be negative, got {margin}")
+        # a parametric program: the double pass first, the full path if it declines
+        try:
+            quick = double_pass_result(source.text, machine, margin=margin, max_iterations=options.max_iterations)
+        except KeyboardInterrupt:
+            quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
+                f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
+                None, None, "VF204"),), interrupted=True, margin=margin, engine=options.engine)
+        if quick is not None:
+            if progress is not None and not quick.interrupted:  # done at once: the bar's last step
+                total = _line_count(source.text) or None
+                bar: Any = progress
+                if getattr(bar, "counts", False):
+                    bar(total or 0, total, motions=dict(quick.stats)["segments"], blocks=quick.extra["counts"]["blocks"])
+                else:
+                    bar(total or 0, total)
+            if nose_note or nose_reasons:
+                quick = replace(quick, notes=quick.notes + ((nose_note,) if nose_note else ()),
+                                reasons=quick.reasons + nose_reasons,
+                                verdict=(Verdict.UNKNOWN if nose_reasons and quick.verdict is Verdict.SAFE
+                                         else quick.verdict))
+            return replace(quick, budget_s=limits.budget_s,
+                           timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
+                           program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                           machine_sha256=machine.sha256, settings=settings, file=source.name)
+
+    def cases(skip: frozenset[int]) -> tuple[Result, Interpretation, set[int]]:
+        return _verify_cases(source, machine, options, skip, progress, profile)
+
+    free, combos, complete = switch_combinations(used, modes)
+    combos, per_position, seen, complete, runs_done = _verify_combinations(
+        combos, free, complete, cases, fanuc=dialect == "fanuc")
+    unseen = sorted(n for n in seen - set(used) if modes[n] == "both")
+    if unseen and not any(r.interrupted for r, _ in per_position):
+        # a switch only a library program uses (the main text does not show it): verified again with it
+        # among the free switches (a third switch met only then is not: VF206 below)
+        used = {**used, **{n: [] for n in unseen}}
+        free, combos, complete = switch_combinations(used, modes)
+        combos, per_position, seen, complete, runs_done = _verify_combinations(
+            combos, free, complete, cases, fanuc=dialect == "fanuc")
+        if any(modes[n] == "both" for n in seen - set(used)):
+            complete = False
+            free = sorted(set(free) | {n for n in seen - set(used) if modes[n] == "both"})
+    result, first_run = per_position[0]
+    if len(combos) > 1:
+        result = _merge_switch_combinations([(c, r) for c, (r, _) in zip(combos, per_position)], free, complete,
+                                             options.max_violations)
+    interrupted = any(r.interrupted for r, _ in per_position)
+    violations, reasons, notes = list(result.violations), list(result.reasons), result.notes
+    if not complete:
+        reasons.append(_combinations_reason(free))
+    notes += _switch_notes({**{n: [] for n in seen if n not in used}, **used}, modes, free, complete,
+                           first_run.interpreter.stops)
+    if len(combos) > runs_done:
+        notes += (f"{runs_done} of the {len(combos)} combinations of the block-skip switches were interpreted: "
+                  "the others differ from one of them only in switches its run never reached a line of, so "
+                  "their path is the same",)
+    notes += (nose_note,) if nose_note else ()
+    reasons += nose_reasons
+    if options.recovery is not None and not interrupted:
+        found, reasons, interrupted, note, stats = _verify_recovery(source, machine, options, combos, free,
+                                                                    reasons, limits)
+        violations = sorted(violations + found,
+                            key=lambda v: (sum(p == "on" for _, p in v.switches), v.block, v.kind != "motion"))
+        notes += note
+        result = replace(result, stats=result.stats + stats)
+    verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    timings = (("total_s", time.perf_counter() - t0),) + result.timings
+    return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
+                   interrupted=interrupted, budget_s=limits.budget_s, profile=profile.as_dict(),
+                   timings=timings, extra={"counts": first_run.counts, "splits": result.extra.get("splits", ())},
+                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   machine_sha256=machine.sha256, settings=settings)
+
+
+def _verify_recovery(source: ProgramSource, machine: Machine, options: VerifyOptions,
+                     combos: list[frozenset[int]], free: list[int], reasons: list[Reason], limits: RunLimits
+                     ) -> tuple[list[Violation], list[Reason], bool, tuple[str, ...], tuple[tuple[str, Any], ...]]:
+    """The tool-break recovery proved from every break point of every switch combination: (violations,
+    reasons so far and its own, interrupted, notes, stats)."""
+    from ..prover.recovery import verify_recovery
+
+    ranges = options.ranges(machine)
+    interrupted = False
+    # The recovery is proved at one point of the parameter ranges (their nominal values where the
+    # ranges hold them, else their middles): its witnesses must lie inside the ranges.
+    rec_machine, at_values = _recovery_point(machine, ranges)
+    found: list[Violation] = []
+    rec = None
+    for skip in combos if at_values is not None else ():
+        rerun = interpretation(source, rec_machine, replace(options, params=()), skip=skip)
+        try:
+            with limits.watch():
+                rec = verify_recovery(rerun, rec_machine, variant=options.recovery, margin=options.margin,
+                                      max_violations=options.max_violations, limits=limits)
+        except KeyboardInterrupt:
+            interrupted = True
+            reasons.append(Reason(f"interrupted (Ctrl-C) after {limits.elapsed():.1f} s while the tool-break "
+                                  "recovery was proved: it was not checked completely", None, None, "VF204"))
+            break
+        source_text = source_lines(source.text, [v.span.line for v in rec.violations if v.span is not None]
+                                   + [r.span.line for r in rec.reasons if r.span is not None])
+        switch = tuple((switch_name(n), "on" if n in skip else "off") for n in free)
+        for v in rec.violations:
+            if any((v.line, v.break_line) == (w.line, w.break_line) for w in found):
+                continue
+            found.append(replace(v, span=_fix_span(v.span, source_text), switches=switch,
+                                 params=at_values or ()))
+        reasons += [replace(r, span=_fix_span(r.span, source_text)) for r in rec.reasons
+                    if r.message not in {x.message for x in reasons}]
+    if ranges:
+        # A verdict 'safe' over the ranges would claim more than was proved.
+        where = ("at " + ", ".join(f"{n} = {format_decimal(v)}" for n, v in at_values)
+                 if at_values is not None else "nowhere (a homing-error range excludes 0)")
+        reasons.append(Reason(
+            f"RC204: the tool-break recovery was proved only {where}, one point of the parameter ranges; "
+            "recovery over the whole ranges is not modelled", None, None, "RC204"))
+    notes: tuple[str, ...] = ()
+    stats: tuple[tuple[str, Any], ...] = ()
+    if not interrupted and at_values is not None and rec is not None:
+        notes = (f"tool-break recovery ({rec.variant.value} variant) checked from every break point of "
+                 f"{dict(rec.stats)['recovery_motions']} cutting motions",)
+        stats = rec.stats
+    return found, reasons, interrupted, notes, stats
+
+
+def _recovery_point(machine: Machine, ranges: tuple[ParamRange, ...]) -> tuple[Machine, tuple[tuple[str, Fraction], ...] | None]:
+    """The machine at the one point of the ranges where the tool-break recovery is proved, and that point
+    as witnesses name it (work offsets and the start as deviations, tool lengths absolute).
+
+    The nominal value where a range holds it, else the middle of the range (:func:`.cases.centred`).
+    ``None`` when no point can be chosen: a homing error is not interpreted, so a ``home.*`` range
+    without 0 has no point the recovery proof could stand at.
+    """
+    from ..prover.cases import centred
+
+    if not ranges:
+        return machine, ()
+    if any(r.name.startswith("home.") and not r.lo <= 0 <= r.hi for r in ranges):
+        return machine, None
+    at, moved = centred(machine, ranges)
+    values = tuple((r.name, at.tool_length(int(r.name[1:])) if r.absolute else r.centre) for r in moved)
+    return at, values
+
+
+#: The most runs of block-skip switch combinations one proof interprets (all of 4 free switches).
+MAX_SWITCH_COMBINATIONS = 16
+
+
+def switch_name(n: int) -> str:
+    """The name of block-skip switch *n* in ``Violation.switches`` and reports: ``block_delete`` for
+    ``/`` and ``/1`` (the name of earlier versions), ``block_delete/2`` .. ``block_delete/9``."""
+    return "block_delete" if n == 1 else f"block_delete/{n}"
+
+
+def _verify_combinations(combos: list[frozenset[int]], free: list[int], complete: bool,
+                         run: Callable[[frozenset[int]], tuple[Result, Interpretation, set[int]]], *, fanuc: bool
+                         ) -> tuple[list[frozenset[int]], list[tuple[Result, Interpretation]], set[int], bool, int]:
+    """Verify the combinations: (the combinations verified, their (result, first interpretation), the
+    switches met, whether every combination was verified, how many were interpreted).
+
+    Two combinations can differ only if a run reaches a line of a switch they differ in: the interpreter
+    reads a switch at its lines only, so a run that met none of a switch's lines is the same run with the
+    switch in the other position (the Fanuc runner records the switches it meets, library programs
+    included; a LinuxCNC run counts as meeting all).  A combination that agrees with an interpreted one on
+    every free switch that run met takes its result without a run.  Past
+    :data:`MAX_SWITCH_COMBINATIONS` interpreted runs the rest is not verified (``complete`` False)."""
+    done: list[tuple[frozenset[int], set[int], tuple[Result, Interpretation]]] = []
+    verified: list[frozenset[int]] = []
+    out: list[tuple[Result, Interpretation]] = []
+    seen: set[int] = set()
+    for skip in combos:
+        same = next((r for d, met, r in done if all((n in skip) == (n in d) for n in met)), None)
+        if same is None:
+            if len(done) >= MAX_SWITCH_COMBINATIONS:
+                complete = False
+                break
+            result, interp, met = run(skip)
+            seen |= met
+            same = (result, interp)
+            done.append((skip, (met & set(free)) if fanuc else set(free), same))
+        verified.append(skip)
+        out.append(same)
+        if same[0].interrupted:  # Ctrl-C: the other combinations are not verified
+            break
+    return verified, out, seen, complete, len(done)
+
+
+def switch_combinations(used: dict[int, list[int]], modes: dict[int, str]
+                        ) -> tuple[list[int], list[frozenset[int]], bool]:
+    """The block-skip switches left free (used by the program, set to ``both``), the combinations of
+    switches that are on to verify (the first: every free switch off; then by how many are on) and whether
+    they are all of them.
+
+    Any two switches can interact (a skipped ``G91``, ``G92`` or offset line changes what every later line
+    does), so every combination of the free switches is listed (2**k, at most 512); fixed switches and
+    switches the program does not use add none.  :func:`_verify_combinations` interprets only those whose
+    runs can differ, at most :data:`MAX_SWITCH_COMBINATIONS`; past that the verdict cannot be ``safe``
+    (VF206; the witnesses found are real).
+
+    >>> switch_combinations({2: [3], 5: [7]}, {n: "both" for n in range(1, 10)})[1]
+    [frozenset(), frozenset({2}), frozenset({5}), frozenset({2, 5})]
+    >>> free, combos, _ = switch_combinations({2: [3], 5: [7]}, {**{n: "both" for n in range(1, 10)}, 5: "on",
+    ...                                                            8: "on"})
+    >>> free, [sorted(c) for c in combos]
+    ([2], [[5, 8], [2, 5, 8]])
+    """
+    free = sorted(n for n in used if modes[n] == "both")
+    on = frozenset(n for n in modes if modes[n] == "on")  # also those only a library program may use
+    subsets = [frozenset(n for k, n in enumerate(free) if bits >> k & 1) for bits in range(2 ** len(free))]
+    subsets.sort(key=lambda c: (len(c), sorted(c)))
+    return free, [on | c for c in subsets], True
+
+
+def _combinations_reason(free: list[int]) -> Reason:
+    names = ", ".join(f"/{n}" for n in free)
+    return Reason(f"VF206: the program uses {len(free)} block-skip switches left to both positions ({names}): of "
+                  f"their {2 ** len(free)} combinations more than {MAX_SWITCH_COMBINATIONS} can take different "
+                  "paths (their runs reach lines of the switches they differ in), more than one proof runs; "
+                  f"the {MAX_SWITCH_COMBINATIONS} with the fewest switches on were verified.  Fix the positions of "
+                  "the switches the operator does not use with --block-delete or the machine file's block_delete "
+                  "(e.g. 3=off,4=off)", None, None, "VF206")
+
+
+def _switch_notes(used: dict[int, list[int]], modes: dict[int, str], free: list[int], complete: bool,
+                  stops: Iterable[tuple[int, Any]]) -> tuple[str, ...]:
+    """What the report says about the operator's switches: block skip, stops."""
+    notes: tuple[str, ...] = ()
+    for n in sorted(used):
+        lines = used[n]
+        switch = "the block-delete switch" if n == 1 else f"block-delete switch /{n}"
+        label = '/ (or /1)' if n == 1 else f'/{n}'
+        where = (f"{len(lines)} line(s) start with {label}, the first at line {lines[0]}" if lines
+                 else f"lines of a called library program start with {label}")
+        others = ", ".join(f"/{k}" for k in free if k != n)
+        notes += ({"both": f"{where}: verified with {switch} off (those lines run) and on (they are skipped)"
+                           + (f", in every combination with {others}" if others and complete else "")
+                           + (f", but not in every combination with {others} (VF206)" if not complete else "")
+                           + "; a violation found in some positions only says which",
+                   "off": f"{where}: verified with {switch} OFF only (those lines run), as the machine file or "
+                          "--block-delete fixes it; with the switch on the path differs",
+                   "on": f"{where}: verified with {switch} ON only (those lines are skipped), as the machine "
+                         "file or --block-delete fixes it; with the switch off the path differs"}[modes[n]],)
+    if stops:
+        codes = sorted({k for k, _ in stops})
+        names = {0: "M0 (program stop)", 1: "M1 (optional stop)", 60: "M60 (pallet change stop)"}
+        notes += (f"{', '.join(names[k] for k in codes)} at line(s) "
+                  f"{', '.join(str(n) for n in sorted({n for _, n in stops})[:10])}: no motion"
+                  + ("; the path is the same with the optional-stop switch on or off" if 1 in codes else "")
+                  + "; axes the operator moves while the program is stopped are not modelled",)
+    return notes
+
+
+def _merge_switch_combinations(runs: list[tuple[frozenset[int], Result]], free: list[int], complete: bool,
+                               max_violations: int) -> Result:
+    """One result from the runs of several switch combinations.
+
+    A violation (a source line, zone, kind) is reported once, with the positions of the free switches it
+    depends on (``Violation.switches``): a switch is left out when flipping it keeps the violation in every
+    combination where it is found (then the witness is the one with that switch off); a violation found in
+    every combination names none.  When not every combination was verified every free switch is named."""
+    def key(v):
+        return (v.line, v.zone, v.kind, v.break_line)
+
+    found: dict[tuple, dict[frozenset[int], Violation]] = {}
+    for combo, r in runs:
+        for v in r.violations:
+            found.setdefault(key(v), {}).setdefault(combo, v)
+    violations: list[tuple[int, int, Violation]] = []
+    order = {combo: k for k, (combo, _) in enumerate(runs)}
+    for where in found.values():
+        combos = set(where)
+        named = [n for n in free if not complete or any(c ^ {n} not in combos for c in combos)]
+        loose = set(free) - set(named)
+        combo = min((c for c in combos if not c & loose), key=order.__getitem__)
+        v = where[combo]
+        violations.append((order[combo], len(violations), replace(
+            v, switches=tuple((switch_name(n), "on" if n in combo else "off") for n in named))))
+    violations.sort(key=lambda t: (t[0], t[1]))
+    first = runs[0][1]
+    reasons = list(first.reasons)
+    for combo, r in runs[1:]:
+        on = ", ".join(f"/{n}" for n in free if n in combo)
+        for x in r.reasons:
+            if (x.message, x.span) not in {(y.message, y.span) for y in first.reasons} and \
+                    x.message not in {y.message for y in reasons}:
+                reasons.append(replace(x, message=x.message + f" (with the block-skip switch(es) {on} on)"))
+    stats: dict[str, Any] = dict(first.stats)
+    notes = list(first.notes)
+    splits = list(first.extra.get("splits", ()))
+    counted = {id(first)}
+    for _, r in runs[1:]:
+        if id(r) in counted:  # a combination that took another's run (its path is the same): counted once
+            continue
+        counted.add(id(r))
+        for k, count in r.stats:
+            stats[k] = stats.get(k, 0) + count
+        notes += [n for n in r.notes if n not in notes]
+        splits += list(r.extra.get("splits", ()))
+    out = [v for _, _, v in violations]
+    verdict = Verdict.UNSAFE if out else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    return replace(first, verdict=verdict, violations=tuple(out[:max_violations]), reasons=tuple(reasons),
+                   notes=tuple(notes), stats=tuple(stats.items()),
+                   truncated=any(r.truncated for _, r in runs) or len(out) > max_violations,
+                   extra={"splits": tuple(splits)})
+
+
+def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],
+                  progress: Callable[..., object] | None, profile: RunProfile
+                  ) -> tuple[Result, Interpretation, set[int]]:
+    """Prove one combination of the block-skip switches (those on) over the parameter ranges: (result, first interpretation).
+
+    The path is built per case: a branch that switches inside a range splits
+    it (:mod:`nczones.prover.cases`), each case interpreted afresh with its
+    nominal values inside it.  ``result.extra["splits"]`` lists where
+    (parameter, value as ``--param`` writes it).
+    """
+    from ..prover.cases import MAX_CASES, budget_reason, centred, merge, split_box
+
+    ranges = options.ranges(machine)
+    cases = [ranges]
+    results, first_run, splits = [], None, []
+    seen: set[int] = set()
+    interpretations = 0
+    fast = _line_count(source.text) >= FAST_PATH_MIN_LINES
+    while cases:
+        box = cases.pop(0)
+        case_machine, case_ranges = centred(machine, box) if box else (machine, box)
+        run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
+        interpretations += 1
+        result = _verify_run(run, case_machine, replace(options, params=case_ranges), progress, profile)
+        for runner in run.runners:  # the Fanuc language layer: the block-skip switches its lines use
+            seen |= getattr(runner, "seen_switches", set())
+        if case_ranges and result.violations:
+            # a violation names every ranged parameter: those its motion does not depend on at this
+            # case's nominal value (another case's path may differ)
+            nominal = {r.name: run.interpreter.written_deviation(r.name, F0) for r in case_ranges}
+            result = replace(result, violations=tuple(
+                replace(v, params=tuple(v.params) + tuple((n, x) for n, x in nominal.items()
+                                                          if n not in dict(v.params)))
+                for v in result.violations))
+        split = run.interpreter.branch_split
+        if split is not None:
+            if interpretations + len(cases) + 3 <= MAX_CASES:
+                at = split[1] + next(r.centre for r in case_ranges if r.name == split[0])
+                splits.append((split[0], run.interpreter.written_deviation(split[0], split[1])))
+                cases[0:0] = split_box(box, split[0], at)
+                continue
+            result = replace(result, reasons=result.reasons + (budget_reason(None),))
+        first_run = first_run or run
+        results.append(result)
+        if result.interrupted:  # Ctrl-C: the remaining cases are not verified
+            break
+    result = merge(results, max_violations=options.max_violations, params=ranges)
+    if splits:
+        where = ", ".join(f"{n} = {format_decimal(v)}" for n, v in splits)
+        result = replace(result, notes=result.notes + (f"the path branches inside the parameter ranges (a canned "
+                                                       f"cycle's levels cross) at {where}: proved as separate "
+                                                       "cases on each side and at the switching value",),
+                         extra={"splits": tuple(splits)})
+    assert first_run is not None  # the loop ran at least once (it starts with one case)
+    return result, first_run, seen
+
+
+def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, progress: Any,
+                profile: RunProfile) -> Result:
+    """Prove one interpretation (one case): its result with source text, unknown codes and notes filled in."""
+    from ..motion import MotionChunk
+
+    # a progress callback with a true ``counts`` attribute (the CLI's bar) also gets the motions and
+    # blocks executed so far, loops and subroutines counted as they run
+    counts = bool(getattr(progress, "counts", False))
+    total = _line_count(run.text) or None if progress is not None else None
+
+    def report(line: int) -> None:
+        assert progress is not None
+        if counts:
+            progress(line, total, motions=profile.motions, blocks=profile.blocks)
+        else:
+            progress(line, total)
+
+    last_reported: list[int] = []
+
+    def with_text(seq: Iterable[Any]) -> Iterator[Any]:
+        if progress is None:  # the chunks as they come (verify_segments batches an object chunk's segments)
+            yield from seq
+            return
+        for chunk in seq:
+            if isinstance(chunk, MotionChunk) and chunk.scale is not None:
+                yield chunk
+                if progress is not None and len(chunk) and chunk.line is not None:
+                    report(int(chunk.line[-1]))
+                    last_reported[:] = [int(chunk.line[-1])]
+            else:
+                for s in chunk.segments():
+                    yield s
+                    if progress is not None and s.span is not None:
+                        report(s.span.line)
+                        last_reported[:] = [s.span.line]
+
+    from ..prover.core import prove
+
+    result = prove(with_text(run), machine, options, file=run.file, profile=profile)
+    if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
+        report(last_reported[0])
+    # fill the source text of violations and reasons (column chunks carry only line numbers)
+    spans = [*(v.span for v in result.violations), *(r.span for r in result.reasons),
+             *(u.span for u in run.unsupported)]
+    wanted = [s.line for s in spans if s is not None and not s.text and s.line >= 1]
+    source_text = source_lines(run.text, wanted)
+    violations = tuple(replace(v, span=_fix_span(v.span, source_text)) for v in result.violations)
+    reasons = list(replace(r, span=_fix_span(r.span, source_text)) for r in result.reasons)
+    from ..gcode.dialects import unknown_hint
+
+    for u in run.unsupported:
+        span = _fix_span(u.span, source_text)
+        hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
+        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, reason_code(u.code)))
+    notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
+    if run.counts.get("spline"):
+        notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "
+                  "programmed curve; a controller that approximates them (LinuxCNC turns some G5.2/G6.2 "
+                  "curves into biarcs) may deviate from it, see specs/gcode-support.md",)
+    verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes)
+
+
+def _fix_span(span: Any, source_text: dict[int, str]) -> Any:
+    """A span with its line's source text (column chunks and derived spans carry only the line number)."""
+    if span is None or span.text or span.line not in source_text:
+        return span
+    return replace(span, text=source_text[span.line])
+
+
+def _line_count(text: str) -> int:
+    """Lines as spans number them (:func:`nczones.errors.program_lines`), without splitting the text."""
+    return text.count("\n") + (1 if text and not text.endswith("\n") else 0)
+
+
+def source_lines(text: str, wanted: Iterable[int], step: int = 1 << 16) -> dict[int, str]:
+    r"""The text of the 1-based lines ``wanted`` (numbered as spans number them, see
+    :func:`nczones.errors.program_lines`), without splitting the whole program: only the needed
+    lines are cut out, so memory stays flat.
+
+    >>> source_lines("G1 X1\nG1 X2\r\nG1 X3 (a\x0cb)", [3, 2, 9])
+    {2: 'G1 X2', 3: 'G1 X3 (a\x0cb)'}
+    """
+    want = sorted(set(int(w) for w in wanted if w >= 1))
+    if not want:
+        return {}
+    out = {}
+    line, pos, n = 1, 0, len(text)
+    for w in want:
+        # skip whole windows by counting their newlines, then walk inside the window
+        while line < w and pos < n:
+            k = text.count("\n", pos, pos + step)
+            if line + k < w:
+                line += k
+                pos += step
+                continue
+            while line < w:
+                nl = text.find("\n", pos)
+                if nl < 0:
+                    pos = n
+                    break
+                pos = nl + 1
+                line += 1
+        if pos >= n:
+            break
+        nl = text.find("\n", pos)
+        out[w] = text[pos:(n if nl < 0 else nl)].removesuffix("\r")
+    if 1 in out:
+        out[1] = out[1].removeprefix("\ufeff")
+    return out
