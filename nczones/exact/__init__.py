@@ -53,6 +53,7 @@ from .elementary import (
 )
 from .interval import (
     GRID_BITS,
+    Bounds,
     Interval,
     is_square,
     max_bound,
@@ -81,6 +82,7 @@ __all__ = [
     "MAX_ABS_LENGTH",
     "GRID_BITS",
     "Interval",
+    "Bounds",
     "round_down_scaled",
     "round_up_scaled",
     "round_down",

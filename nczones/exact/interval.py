@@ -48,6 +48,7 @@ __all__ = [
     "min_bound",
     "is_square",
     "sqrt_interval",
+    "Bounds",
 ]
 
 #: Outward rounding grid (bits) of every :class:`Interval` operation.
@@ -55,6 +56,10 @@ GRID_BITS = 200
 _SCALE = 1 << GRID_BITS
 
 _F0 = Fraction(0)
+
+#: An enclosure as a bare ``(lo, hi)`` pair, for code that does its own exact arithmetic on the ends
+#: (:meth:`Interval.bounds` gives it); the same invariant: ``lo <= value <= hi``.
+Bounds = tuple[Fraction, Fraction]
 
 
 def round_down_scaled(x: Fraction) -> Fraction:
@@ -239,7 +244,7 @@ class Interval:
     def contains(self, x: Fraction | int) -> bool:
         return self.lo <= Fraction(x) <= self.hi
 
-    def bounds(self) -> tuple[Fraction, Fraction]:
+    def bounds(self) -> Bounds:
         """``(lo, hi)``: the pair form some callers keep (exact arithmetic of their own on the ends)."""
         return self.lo, self.hi
 
