@@ -205,3 +205,18 @@ def test_grid_rounding(x, bits):
 def test_bounds_of_limits():
     assert max_bound(None, F(1)) == F(1) and max_bound(F(2), None) == F(2) and max_bound(F(1), F(2)) == F(2)
     assert min_bound(None, F(1)) == F(1) and min_bound(F(1), F(2)) == F(1) and min_bound(None, None) is None
+
+
+def test_one_core():
+    """No second Interval class, π, or limit-bound helper outside nczones/exact (issue 34: one exact core).
+
+    Doubles that reproduce a control's own arithmetic (``math.pi`` in the LinuxCNC interpreter and cutter
+    compensation, the x87 sine) are not enclosures and stay where they are."""
+    import re
+    from pathlib import Path
+
+    package = Path(__file__).resolve().parents[2] / "nczones"
+    pattern = re.compile(r"class \w*Interval\b|^\w*Interval = |atan\(1/5\)|3\.14159|def _?(max|min)_bound\b", re.M)
+    found = [f"{p.relative_to(package)}: {m.group(0)}" for p in sorted(package.rglob("*.py"))
+             if p.parent.name != "exact" for m in pattern.finditer(p.read_text(encoding="utf-8"))]
+    assert found == []
