@@ -39,6 +39,7 @@ __all__ = [
 
 _F0 = Fraction(0)
 _F1 = Fraction(1)
+_M1 = Fraction(-1)
 _HALF = Fraction(1, 2)
 #: Guard bits of the fixed-point arctangent series beyond the requested grid.
 _GUARD = 16
@@ -189,40 +190,45 @@ def asin_interval(iv: Interval) -> Interval:
     return Interval(at(iv.lo, False), at(iv.hi, True))
 
 
-def _sin_cos_point(x: Fraction) -> tuple[Interval, Interval]:
-    """Enclosures of sin(x) and cos(x) for a rational ``|x| <= 8`` (Taylor series, Lagrange remainder).
+def _sin_cos_point(x: Fraction, bits: int = GRID_BITS) -> tuple[Interval, Interval]:
+    """Enclosures of sin(x) and cos(x) for a rational ``|x| <= 8``: Taylor series in fixed point.
 
-    The terms ``x**n / n!`` are rounded towards 0 by :func:`round_down_scaled` (each by less than
-    ``2**-GRID_BITS``); the rounding of a term carries into
-    the later ones by a factor below ``e**|x| < e**8 < 4096``, so the sums are off by less than
-    ``(n + 2) 4096`` units of ``2**-GRID_BITS``.  The series stop once ``n > |x|`` and the next term is
-    below ``2**-(GRID_BITS + 8)``: from there the terms decrease, so the remainder of each series (its
-    Lagrange form ``|x|**(n+1) / (n+1)!``) is below the next term.  The enclosure is the sum widened by
-    both.
+    Integers scaled by ``S = 2**(bits + 32)``: ``X = floor(x S)`` (so ``x' = X / S`` is within one unit of
+    ``x``, and sine and cosine, 1-Lipschitz, move by less than one unit), the terms
+    ``t_n = floor(t_(n-1) X / (n S))`` from ``t_0 = S``, which approximate ``T_n = x'**n / n! S``.  The
+    error ``e_n = |t_n - T_n|`` obeys ``e_n <= e_(n-1) |x'| / n + 1``, so
+    ``e_n <= sum_m |x'|**m / m! <= e**8 < 4096`` units.  The terms go alternately into the sine (odd
+    ``n``) and cosine (even ``n``) sums; the loop stops at the first ``n > |x'|`` with ``t_n = 0``: then
+    ``T_n < 4097`` units and, ``n`` being past ``|x'|``, the terms decrease from there, so the rest of each
+    alternating series is below ``T_n`` too.  With ``N`` terms each sum is within
+    ``4096 N + 4097 + 1`` units of the exact value; the enclosure is the sum widened by
+    ``4096 (N + 2)`` units, its ends rounded outwards to ``2**-bits``.
     """
-    s, c = _F0, _F1
-    term = _F1  # x^n / n!
+    shift = bits + 32
+    big = x.numerator << shift
+    xs = big // x.denominator
+    t = 1 << shift
+    s, c = 0, t
     n = 0
-    ax = abs(x)
-    bound = Fraction(1, 1 << (GRID_BITS + 8))
+    limit = abs(xs)
     while True:
         n += 1
-        term = term * x / n
-        term = round_down_scaled(term) if term > 0 else -round_down_scaled(-term)
-        if n % 4 == 1:
-            s += term
-        elif n % 4 == 2:
-            c -= term
-        elif n % 4 == 3:
-            s -= term
+        t = (t * xs) // (n << shift)
+        r = n % 4
+        if r == 1:
+            s += t
+        elif r == 2:
+            c -= t
+        elif r == 3:
+            s -= t
         else:
-            c += term
-        # the next term bounds the remainder of both series (with the rounding slack)
-        if n > ax and abs(term) * ax / (n + 1) < bound:
+            c += t
+        if t == 0 and (n << shift) > limit:
             break
-    slack = abs(term) * ax / (n + 1) + Fraction((n + 2) * 4096, 1 << GRID_BITS)
-    return (Interval(round_down_scaled(s - slack), round_up_scaled(s + slack)),
-            Interval(round_down_scaled(c - slack), round_up_scaled(c + slack)))
+    err = 4096 * (n + 2)
+    scale = 1 << shift
+    return (Interval(round_down(Fraction(s - err, scale), bits), round_up(Fraction(s + err, scale), bits)),
+            Interval(round_down(Fraction(c - err, scale), bits), round_up(Fraction(c + err, scale), bits)))
 
 
 def sin_cos_interval(iv: Interval) -> tuple[Interval, Interval]:
@@ -239,8 +245,9 @@ def sin_cos_interval(iv: Interval) -> tuple[Interval, Interval]:
     m = round_down_scaled(iv.mid())
     s, c = _sin_cos_point(m)
     h = max(iv.hi - m, m - iv.lo)
-    s, c = s.widen(h), c.widen(h)
-    return (Interval(max(s.lo, -_F1), min(s.hi, _F1)), Interval(max(c.lo, -_F1), min(c.hi, _F1)))
+    if h:
+        s, c = s.widen(h), c.widen(h)
+    return (Interval(max(s.lo, _M1), min(s.hi, _F1)), Interval(max(c.lo, _M1), min(c.hi, _F1)))
 
 
 def degrees(rad: Interval) -> Interval:
@@ -258,7 +265,13 @@ def radians(deg: Fraction | Interval) -> Interval:
     >>> radians(Fraction(180)) == pi_interval()
     True
     """
-    return pi_interval() * deg / 180
+    p = pi_interval()
+    if isinstance(deg, Interval):
+        return p * deg / 180
+    lo, hi = p.lo * deg / 180, p.hi * deg / 180  # one product per end (exact), then rounded outwards
+    if deg < 0:
+        lo, hi = hi, lo
+    return Interval(round_down_scaled(lo), round_up_scaled(hi))
 
 
 #: cos and sin of the angles (degrees, in [0, 360)) where they are rational
