@@ -190,45 +190,41 @@ def asin_interval(iv: Interval) -> Interval:
     return Interval(at(iv.lo, False), at(iv.hi, True))
 
 
-def _sin_cos_point(x: Fraction, bits: int = GRID_BITS) -> tuple[Interval, Interval]:
-    """Enclosures of sin(x) and cos(x) for a rational ``|x| <= 8``: Taylor series in fixed point.
+def _sin_cos_point(x: Fraction) -> tuple[Interval, Interval]:
+    """Enclosures of sin(x) and cos(x) for a rational ``|x| <= 8`` (Taylor series, Lagrange remainder).
 
-    Integers scaled by ``S = 2**(bits + 32)``: ``X = floor(x S)`` (so ``x' = X / S`` is within one unit of
-    ``x``, and sine and cosine, 1-Lipschitz, move by less than one unit), the terms
-    ``t_n = floor(t_(n-1) X / (n S))`` from ``t_0 = S``, which approximate ``T_n = x'**n / n! S``.  The
-    error ``e_n = |t_n - T_n|`` obeys ``e_n <= e_(n-1) |x'| / n + 1``, so
-    ``e_n <= sum_m |x'|**m / m! <= e**8 < 4096`` units.  The terms go alternately into the sine (odd
-    ``n``) and cosine (even ``n``) sums; the loop stops at the first ``n > |x'|`` with ``t_n = 0``: then
-    ``T_n < 4097`` units and, ``n`` being past ``|x'|``, the terms decrease from there, so the rest of each
-    alternating series is below ``T_n`` too.  With ``N`` terms each sum is within
-    ``4096 N + 4097 + 1`` units of the exact value; the enclosure is the sum widened by
-    ``4096 (N + 2)`` units, its ends rounded outwards to ``2**-bits``.
+    The terms ``x**n / n!`` are rounded towards 0 by :func:`round_down_scaled` (each by less than
+    ``2**-GRID_BITS``); the rounding of a term carries into the later ones by a factor below
+    ``e**|x| < e**8 < 4096``, so the sums are off by less than ``(n + 2) 4096`` units of
+    ``2**-GRID_BITS``.  The series stop once ``n > |x|`` and the next term is below
+    ``2**-(GRID_BITS + 8)``: from there the terms decrease, so the remainder of each series (alternating,
+    decreasing: below its first omitted term) is below the next term.  The enclosure is the sum widened
+    by both.  (Exact ``Fraction`` terms rather than fixed-point integers: the numbers of the cylindrical
+    and polar enclosures, and so their reported points, stay those they were before the core.)
     """
-    shift = bits + 32
-    big = x.numerator << shift
-    xs = big // x.denominator
-    t = 1 << shift
-    s, c = 0, t
+    s, c = _F0, _F1
+    term = _F1  # x^n / n!
     n = 0
-    limit = abs(xs)
+    ax = abs(x)
+    bound = Fraction(1, 1 << (GRID_BITS + 8))
     while True:
         n += 1
-        t = (t * xs) // (n << shift)
-        r = n % 4
-        if r == 1:
-            s += t
-        elif r == 2:
-            c -= t
-        elif r == 3:
-            s -= t
+        term = term * x / n
+        term = round_down_scaled(term) if term > 0 else -round_down_scaled(-term)
+        if n % 4 == 1:
+            s += term
+        elif n % 4 == 2:
+            c -= term
+        elif n % 4 == 3:
+            s -= term
         else:
-            c += t
-        if t == 0 and (n << shift) > limit:
+            c += term
+        # the next term bounds the remainder of both series (with the rounding slack)
+        if n > ax and abs(term) * ax / (n + 1) < bound:
             break
-    err = 4096 * (n + 2)
-    scale = 1 << shift
-    return (Interval(round_down(Fraction(s - err, scale), bits), round_up(Fraction(s + err, scale), bits)),
-            Interval(round_down(Fraction(c - err, scale), bits), round_up(Fraction(c + err, scale), bits)))
+    slack = abs(term) * ax / (n + 1) + Fraction((n + 2) * 4096, 1 << GRID_BITS)
+    return (Interval(round_down_scaled(s - slack), round_up_scaled(s + slack)),
+            Interval(round_down_scaled(c - slack), round_up_scaled(c + slack)))
 
 
 def sin_cos_interval(iv: Interval) -> tuple[Interval, Interval]:
