@@ -13,10 +13,12 @@ moves stay straight in machine coordinates (``s`` is linear in ``C``), so a
 G01 in the mode is an ordinary exact LINE.  A G02/G03 is a circle in
 ``(Z, s)`` — an ellipse in ``(Z, C)`` whose chord end lies at the irrational
 developed distance ``D = k (C1 - C0)`` — so its geometry is *enclosed*: every
-quantity here is an :class:`Interval` of rationals that contains the exact
-value (pi from Machin's formula; square roots, sines, cosines and arc sines by
-series with remainder bounds; all rounding outward on a ``2**-GRID_BITS``
-grid).
+quantity here is an :class:`~nczones.exact.Interval` of rationals that
+contains the exact value (pi, square roots, sines, cosines and arc sines from
+the exact core :mod:`nczones.exact`; all rounding outward on a
+``2**-GRID_BITS`` grid).  ``Interval``, ``pi_interval``, ``atan_point``,
+``asin_interval``, ``sin_cos_interval`` and ``GRID_BITS`` are the core's,
+re-exported here for the callers that name them from this module.
 
 Conventions of a developed arc (``SegmentKind.DEVELOPED_ARC``)
 ---------------------------------------------------------------
@@ -41,11 +43,19 @@ fractions.  No float is used.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
 from typing import TYPE_CHECKING
+
+from .exact import (
+    GRID_BITS,
+    Interval,
+    asin_interval,
+    pi_interval,
+    round_up_scaled,
+    sin_cos_interval,
+)
+from .exact import atan_interval as atan_point
 
 if TYPE_CHECKING:
     from .motion import Segment
@@ -65,247 +75,11 @@ __all__ = [
     "cylinder_of",
 ]
 
-#: Outward rounding grid (bits) of every interval operation.
-GRID_BITS = 200
-_SCALE = 1 << GRID_BITS
-
 #: The linear axis parallel to each rotary axis (the cylinder's axis).
 LINEAR_AXIS_OF = {"A": "X", "B": "Y", "C": "Z"}
 
 F0 = Fraction(0)
 F1 = Fraction(1)
-
-
-def _down(x: Fraction) -> Fraction:
-    if x.denominator <= _SCALE:
-        return x
-    return Fraction((x.numerator * _SCALE) // x.denominator, _SCALE)
-
-
-def round_up_scaled(x: Fraction) -> Fraction:
-    if x.denominator <= _SCALE:
-        return x
-    return Fraction(-((-x.numerator * _SCALE) // x.denominator), _SCALE)
-
-
-@dataclass(frozen=True, slots=True)
-class Interval:
-    """A closed rational interval ``[lo, hi]`` (outward-rounded arithmetic).
-
-    >>> a = Interval.of(1) / 3
-    >>> a.lo <= Fraction(1, 3) <= a.hi, a.width() < Fraction(1, 10**60)
-    (True, True)
-    >>> (Interval(Fraction(-1), Fraction(2)) * Interval(Fraction(3), Fraction(4))).lo
-    Fraction(-4, 1)
-    """
-
-    lo: Fraction
-    hi: Fraction
-
-    @staticmethod
-    def of(x: Fraction | int | str) -> "Interval":
-        q = Fraction(x)
-        return Interval(q, q)
-
-    @staticmethod
-    def _coerce(x: "Interval | Fraction | int") -> "Interval":
-        return x if isinstance(x, Interval) else Interval.of(x)
-
-    def __add__(self, o: "Interval | Fraction | int") -> "Interval":
-        o = Interval._coerce(o)
-        return Interval(_down(self.lo + o.lo), round_up_scaled(self.hi + o.hi))
-
-    __radd__ = __add__
-
-    def __neg__(self) -> "Interval":
-        return Interval(-self.hi, -self.lo)
-
-    def __sub__(self, o: "Interval | Fraction | int") -> "Interval":
-        return self + (-Interval._coerce(o))
-
-    def __rsub__(self, o: "Interval | Fraction | int") -> "Interval":
-        return Interval._coerce(o) - self
-
-    def __mul__(self, o: "Interval | Fraction | int") -> "Interval":
-        o = Interval._coerce(o)
-        ps = (self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi)
-        return Interval(_down(min(ps)), round_up_scaled(max(ps)))
-
-    __rmul__ = __mul__
-
-    def __truediv__(self, o: "Interval | Fraction | int") -> "Interval":
-        o = Interval._coerce(o)
-        if o.lo <= 0 <= o.hi:
-            raise ZeroDivisionError("interval division by an interval containing 0")
-        return self * Interval(_down(1 / o.hi), round_up_scaled(1 / o.lo))
-
-    def __rtruediv__(self, o: "Interval | Fraction | int") -> "Interval":
-        return Interval._coerce(o) / self
-
-    def sqr(self) -> "Interval":
-        if self.lo >= 0:
-            return Interval(_down(self.lo * self.lo), round_up_scaled(self.hi * self.hi))
-        if self.hi <= 0:
-            return Interval(_down(self.hi * self.hi), round_up_scaled(self.lo * self.lo))
-        return Interval(F0, round_up_scaled(max(self.lo * self.lo, self.hi * self.hi)))
-
-    def sqrt(self) -> "Interval":
-        """Square root of the non-negative part (negative lower ends are clipped to 0)."""
-        lo = max(self.lo, F0)
-        hi = max(self.hi, F0)
-        return Interval(_sqrt_floor(lo), _sqrt_ceil(hi))
-
-    def hull(self, o: "Interval | Fraction | int") -> "Interval":
-        o = Interval._coerce(o)
-        return Interval(min(self.lo, o.lo), max(self.hi, o.hi))
-
-    def widen(self, d: Fraction) -> "Interval":
-        return Interval(self.lo - d, self.hi + d)
-
-    def width(self) -> Fraction:
-        return self.hi - self.lo
-
-    def mid(self) -> Fraction:
-        return (self.lo + self.hi) / 2
-
-    def contains(self, x: Fraction | int) -> bool:
-        return self.lo <= Fraction(x) <= self.hi
-
-
-def _sqrt_floor(x: Fraction) -> Fraction:
-    n = math.isqrt((x.numerator * _SCALE * _SCALE) // x.denominator)
-    return Fraction(n, _SCALE)
-
-
-def _sqrt_ceil(x: Fraction) -> Fraction:
-    lo = _sqrt_floor(x)
-    return lo if lo * lo == x else lo + Fraction(1, _SCALE)
-
-
-# --------------------------------------------------------------------------- elementary functions
-
-
-def _atan_small(x: Fraction) -> Interval:
-    """atan(x) for 0 <= x <= 1/2 by its alternating series in fixed point (enclosure).
-
-    Integers scaled by ``S = 2**(GRID_BITS + 16)``: ``X = floor(x S)``, ``X2 = floor(X**2 / S)`` (so
-    ``x**2 S - 2 <= X2 <= x**2 S``), the powers ``p_k = floor(p_(k-1) X2 / S)`` from ``p_0 = X``.  Each
-    ``p_k`` is below ``x**(2k+1) S`` by less than 3 units (the error shrinks by 4 a step and grows by at most
-    2), each term ``p_k // (2k+1)`` by less than 4; the series stops when ``p_k`` is 0, so the rest of it is
-    below 4 units too.  The enclosure is the sum widened by 4 units a term and 8 more.
-    """
-    bits = GRID_BITS + 16
-    big = 1 << bits
-    xs = (x.numerator << bits) // x.denominator
-    x2 = (xs * xs) >> bits
-    p, total, k = xs, 0, 0
-    while p:
-        term = p // (2 * k + 1)
-        total = total + term if k % 2 == 0 else total - term
-        p = (p * x2) >> bits
-        k += 1
-    err = 4 * k + 8
-    return Interval(_down(Fraction(total - err, big)), round_up_scaled(Fraction(total + err, big)))
-
-
-@lru_cache(maxsize=1)
-def pi_interval() -> Interval:
-    """Machin's pi = 16 atan(1/5) - 4 atan(1/239), enclosed.
-
-    >>> p = pi_interval()
-    >>> Fraction(333, 106) < p.lo <= p.hi < Fraction(355, 113), p.width() < Fraction(1, 10**55)
-    (True, True)
-    """
-    return 16 * _atan_small(Fraction(1, 5)) - 4 * _atan_small(Fraction(1, 239))
-
-
-def atan_point(x: Fraction) -> Interval:
-    """Enclosure of ``atan(x)`` (radians) for a rational ``x`` (series with remainder bounds).
-
-    >>> a = atan_point(Fraction(1))
-    >>> (4 * a).lo <= pi_interval().hi and pi_interval().lo <= (4 * a).hi
-    True
-    """
-    if x < 0:
-        return -atan_point(-x)
-    pi = pi_interval()
-    if x > 1:
-        return pi / 2 - atan_point(1 / x)
-    if x > Fraction(1, 2):
-        return pi / 4 + atan_point((x - 1) / (x + 1))
-    return _atan_small(x)
-
-
-def _atan(iv: Interval) -> Interval:
-    """atan is increasing: the enclosure of the ends."""
-    return Interval(atan_point(iv.lo).lo, atan_point(iv.hi).hi)
-
-
-def asin_interval(iv: Interval) -> Interval:
-    """Enclosure of ``asin`` over ``iv`` within ``[0, 1]`` (values above 1 are clipped to 1; radians).
-
-    >>> a = asin_interval(Interval.of(Fraction(1, 2)))
-    >>> (6 * a).lo <= pi_interval().hi and pi_interval().lo <= (6 * a).hi
-    True
-    """
-    half_pi = pi_interval() / 2
-
-    def at(x: Fraction, upper: bool) -> Fraction:
-        if x <= 0:
-            return F0
-        if x >= 1:
-            return half_pi.hi if upper else half_pi.lo
-        c = Interval.of(1 - x * x).sqrt()
-        ratio = Interval(_down(x / c.hi), round_up_scaled(x / c.lo)) if c.lo > 0 else None
-        if ratio is None:
-            return half_pi.hi if upper else F0
-        a = _atan(ratio)
-        return a.hi if upper else a.lo
-
-    return Interval(at(iv.lo, False), at(iv.hi, True))
-
-
-def _sin_cos_point(x: Fraction) -> tuple[Interval, Interval]:
-    """Enclosures of sin(x) and cos(x) for a rational |x| <= 8 (Taylor, Lagrange remainder)."""
-    s, c = F0, F1
-    term = F1  # x^n / n!
-    n = 0
-    ax = abs(x)
-    bound = Fraction(1, 1 << (GRID_BITS + 8))
-    while True:
-        n += 1
-        term = term * x / n
-        term = _down(term) if term > 0 else -_down(-term)
-        if n % 4 == 1:
-            s += term
-        elif n % 4 == 2:
-            c -= term
-        elif n % 4 == 3:
-            s -= term
-        else:
-            c += term
-        # the next term bounds the remainder of both series (with the rounding slack)
-        if n > ax and abs(term) * ax / (n + 1) < bound:
-            break
-    slack = abs(term) * ax / (n + 1) + Fraction((n + 2) * 4096, _SCALE)  # e**8 < 4096: rounding carried by later terms
-    return Interval(_down(s - slack), round_up_scaled(s + slack)), Interval(_down(c - slack), round_up_scaled(c + slack))
-
-
-def sin_cos_interval(iv: Interval) -> tuple[Interval, Interval]:
-    """Enclosures of sin and cos over ``iv`` (radians, ``|x| <= 8``): the value at the middle widened by the half
-    width (Lipschitz 1).
-
-    >>> s, c = sin_cos_interval(pi_interval() / 6)
-    >>> s.contains(Fraction(1, 2)), abs(float(c.mid()) - 3 ** 0.5 / 2) < 1e-15, s.width() < Fraction(1, 10**50)
-    (True, True, True)
-    """
-    m = iv.mid()
-    m = _down(m)
-    s, c = _sin_cos_point(m)
-    h = max(iv.hi - m, m - iv.lo)
-    one = Interval(-F1, F1)
-    s, c = s.widen(h), c.widen(h)
-    return (Interval(max(s.lo, one.lo), min(s.hi, one.hi)), Interval(max(c.lo, one.lo), min(c.hi, one.hi)))
 
 
 def degree_length(cylinder_radius: Fraction) -> Interval:

@@ -42,10 +42,11 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
-from .cylinder import (
+from .exact import (
     Interval,
     asin_interval,
-    atan_point,
+    atan2_interval,
+    degrees,
     pi_interval,
     round_up_scaled,
     sin_cos_interval,
@@ -81,12 +82,9 @@ class CentreCrossing(ValueError):
     """The path passes through (or within the resolution of the enclosures of) the centre of rotation."""
 
 
-def _deg(rad: Interval) -> Interval:
-    return rad * 180 / pi_interval()
-
-
 def atan2_rad(x: Fraction, y: Fraction) -> Interval:
-    """Enclosure of ``atan2(y, x)`` in ``(-pi, pi]`` radians, for a rational point other than the origin.
+    """Enclosure of ``atan2(y, x)`` in ``(-pi, pi]`` radians, for a rational point other than the origin
+    (:func:`nczones.exact.atan2_interval`; the origin is a :class:`CentreCrossing`).
 
     >>> a = atan2_rad(Fraction(-1), Fraction(0))
     >>> a.contains(Fraction(314159, 100000)) or a.lo > 3
@@ -94,13 +92,7 @@ def atan2_rad(x: Fraction, y: Fraction) -> Interval:
     """
     if x == 0 and y == 0:
         raise CentreCrossing("the angle of the centre of rotation is undefined")
-    pi = pi_interval()
-    if x > 0:
-        return atan_point(y / x)
-    if x == 0:
-        return pi / 2 if y > 0 else -(pi / 2)
-    a = atan_point(y / x)
-    return a + pi if y >= 0 else a - pi
+    return atan2_interval(y, x)
 
 
 @lru_cache(maxsize=1 << 16)
@@ -114,7 +106,7 @@ def atan2_deg(x: Fraction, y: Fraction) -> Interval:
     >>> a.lo <= 45 <= a.hi, a.width() < Fraction(1, 10**50)
     (True, True)
     """
-    return _deg(atan2_rad(x, y))
+    return degrees(atan2_rad(x, y))
 
 
 def _unwrap(a: Interval, near: Fraction) -> Interval:

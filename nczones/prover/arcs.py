@@ -52,6 +52,7 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
+from ..exact import Bounds, atan_interval
 from ..motion import Segment
 from . import exact as ex
 from .geometry import ArcGeom, atan_bounds, half_tan, in_sweep, pi_bounds, simple_in, sqrt_bounds  # noqa: F401
@@ -70,15 +71,14 @@ BITS = 96
 #: Bisection steps of the first exit (a quarter turn / 2**24).
 EXIT_STEPS = 24
 
-Interval = tuple[Fraction, Fraction]
 Vec = tuple[Fraction, Fraction]
-IVec = tuple[Interval, Interval]
+IVec = tuple[Bounds, Bounds]
 Box = tuple[dict[str, Fraction], dict[str, Fraction]]
 Hit = tuple[Any, dict[str, Fraction], list]  # (zone, point, violated zones)
 _GRID = 2**72
 
 
-def _out(iv: Interval) -> Interval:
+def _out(iv: Bounds) -> Bounds:
     """``iv`` rounded outwards to multiples of ``2**-72`` (keeps the numbers short; still encloses)."""
     lo, hi = iv
     return (Fraction(lo.numerator * _GRID // lo.denominator, _GRID),
@@ -86,42 +86,16 @@ def _out(iv: Interval) -> Interval:
 
 
 _PI = pi_bounds()
-_FIX = 96  # bits of the fixed-point arctangent
+_FIX = 96  # bits of the arctangent's grid
 
 
-def _atan_iv(m: Fraction) -> Interval:
-    """Enclosure of ``atan(m)`` for ``0 <= m <= 1`` in fixed-point integers (about ``2**-90`` wide).
-
-    ``atan(m) = π/4 + atan((m-1)/(m+1))`` for ``m > 1/2`` keeps the series
-    argument within ``1/2``; every truncated term is off by less than one
-    unit, the input rounding moves the result by less than one unit
-    (``atan`` is 1-Lipschitz), and the tail is below the first term left out.
-    """
-    if m == 0:
-        return F0, F0
-    shift = F0, F0
-    y = m
-    if m > Fraction(1, 2):
-        y = (m - 1) / (m + 1)
-        shift = _PI[0] / 4, _PI[1] / 4
-    sign = -1 if y < 0 else 1
-    y = abs(y)
-    one = 1 << _FIX
-    yy = y.numerator * one // y.denominator  # floor(|y| * 2**FIX)
-    y2 = yy * yy >> _FIX
-    term, total, k = yy, 0, 0
-    while term != 0:
-        total += term // (2 * k + 1) if k % 2 == 0 else -(term // (2 * k + 1))
-        term = term * y2 >> _FIX
-        k += 1
-    err = 2 * k + 4  # truncations, the input rounding, the tail (|next term| < 1 unit when it reached 0)
-    lo, hi = Fraction(total - err, one), Fraction(total + err, one)
-    if sign < 0:
-        lo, hi = -hi, -lo
-    return shift[0] + lo, shift[1] + hi
+def _atan_iv(m: Fraction) -> Bounds:
+    """Enclosure of ``atan(m)`` for ``0 <= m <= 1`` on a ``2**-96`` grid (about ``2**-94`` wide):
+    :func:`nczones.exact.atan_interval` as a pair."""
+    return atan_interval(m, _FIX).bounds()
 
 
-def _angle_iv(bases: list[Vec], v: Vec, ccw: bool) -> Interval:
+def _angle_iv(bases: list[Vec], v: Vec, ccw: bool) -> Bounds:
     """Enclosure of the angle from ``bases[0]`` to ``v`` in the arc's direction, in ``[0, 2π)``
     (``bases``: the start direction turned by 0, 1, 2, 3 right angles in that direction)."""
     for k, base in enumerate(bases):
@@ -138,24 +112,24 @@ def _angle_iv(bases: list[Vec], v: Vec, ccw: bool) -> Interval:
     return F0, 2 * _PI[1]
 
 
-def _imul(a: Interval, b: Interval) -> Interval:
+def _imul(a: Bounds, b: Bounds) -> Bounds:
     p = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
     return min(p), max(p)
 
 
-def _iadd(a: Interval, b: Interval) -> Interval:
+def _iadd(a: Bounds, b: Bounds) -> Bounds:
     return a[0] + b[0], a[1] + b[1]
 
 
-def _isub(a: Interval, b: Interval) -> Interval:
+def _isub(a: Bounds, b: Bounds) -> Bounds:
     return a[0] - b[1], a[1] - b[0]
 
 
-def _pt(x: Fraction) -> Interval:
+def _pt(x: Fraction) -> Bounds:
     return x, x
 
 
-def _cross(a: IVec, b: IVec) -> Interval:
+def _cross(a: IVec, b: IVec) -> Bounds:
     """cross(a, b) of two interval vectors."""
     return _isub(_imul(a[0], b[1]), _imul(a[1], b[0]))
 
@@ -177,7 +151,7 @@ class _Mark:
         self.g = g  # position (for E: a lower bound of it)
         self.d = d  # rational direction from the centre (d-marks)
         self.box: Box | None = None  # cached point enclosure: (lo, hi) dicts
-        self.theta: Interval | None = None  # cached angle enclosure
+        self.theta: Bounds | None = None  # cached angle enclosure
 
 
 class ArcEnclosure:
@@ -232,11 +206,11 @@ class ArcEnclosure:
         self.helix = g.helix
         self.moving = [k for k in range(len(g.start)) if k not in (self.ia, self.ib) and g.start[k] != g.end[k]]
         self.nu = sqrt_bounds(self.u2, BITS)  # |d| of every d-mark (rotations keep the length)
-        self.rs: Interval = (F0, F0)
-        self.re: Interval = (F0, F0)
+        self.rs: Bounds = (F0, F0)
+        self.re: Bounds = (F0, F0)
         if g.centre is None:
             r = abs(g.r_signed or F0)
-            self.rho_const: Interval | None = (r, r)
+            self.rho_const: Bounds | None = (r, r)
         elif not self.spiral:
             self.rho_const = sqrt_bounds(g.r2_lo, BITS)
         else:
@@ -253,7 +227,7 @@ class ArcEnclosure:
         self.full = g.s == g.e  # back to the start point after whole turns (ArcGeom.full also counts laps)
         self.turns = seg.turns
         self.marks = self._initial_marks()
-        self._total: Interval | None = None
+        self._total: Bounds | None = None
 
     # ------------------------------------------------------------------ marks
 
@@ -264,7 +238,7 @@ class ArcEnclosure:
         p = self.g.s if mk.kind == "S" else self.g.e
         return (_isub(_pt(p[0]), self.C[0]), _isub(_pt(p[1]), self.C[1]))
 
-    def _sign(self, iv: Interval) -> int | None:
+    def _sign(self, iv: Bounds) -> int | None:
         if iv[0] > 0:
             return 1
         if iv[1] < 0:
@@ -317,11 +291,11 @@ class ArcEnclosure:
         d = base if m == 0 else _rot(base, m, self.ccw)
         return _Mark("d", gpos, d)
 
-    def _theta(self, mk: _Mark) -> Interval:
+    def _theta(self, mk: _Mark) -> Bounds:
         """Enclosure of the swept angle from the start to the mark."""
         if mk.theta is not None:
             return mk.theta
-        theta: Interval
+        theta: Bounds
         if mk.kind == "S":
             theta = (F0, F0)
         elif mk.kind == "E":
@@ -335,7 +309,7 @@ class ArcEnclosure:
         mk.theta = theta
         return theta
 
-    def total(self) -> Interval:
+    def total(self) -> Bounds:
         """Enclosure of the whole swept angle (laps included)."""
         if self._total is not None:
             return self._total
@@ -349,7 +323,7 @@ class ArcEnclosure:
         self._total = _out(total)
         return self._total
 
-    def _fraction(self, theta: Interval) -> Interval:
+    def _fraction(self, theta: Bounds) -> Bounds:
         """Enclosure of θ/Θ, clipped to [0, 1]."""
         t_lo, t_hi = self.total()
         if t_lo <= 0:
@@ -358,14 +332,14 @@ class ArcEnclosure:
         hi = min(F1, theta[1] / t_lo) if theta[1] >= 0 else F0
         return _out((lo, max(lo, hi)))
 
-    def _rho(self, f: Interval) -> Interval:
+    def _rho(self, f: Bounds) -> Bounds:
         """Radius enclosure at the angle fractions ``f``."""
         if self.rho_const is not None:
             return self.rho_const
         vals = [r0 + (r1 - r0) * x for r0 in self.rs for r1 in self.re for x in f]
         return _out((max(F0, min(vals)), max(vals)))
 
-    def _axis_values(self, f: Interval) -> dict[int, Interval]:
+    def _axis_values(self, f: Bounds) -> dict[int, Bounds]:
         out = {}
         for k in self.moving:
             a, b = self.g.start[k], self.g.end[k]
@@ -417,12 +391,12 @@ class ArcEnclosure:
 
     def piece_box(self, a: _Mark, b: _Mark) -> Box:
         """A rational box holding the path between two marks (less than a half turn apart)."""
-        f: Interval = (F0, F1)
+        f: Bounds = (F0, F1)
         if self.spiral or self.moving:
             f = (self._fraction(self._theta(a))[0], self._fraction(self._theta(b))[1])
         rho = self._rho(f)
-        xs: list[Interval] = []
-        ys: list[Interval] = []
+        xs: list[Bounds] = []
+        ys: list[Bounds] = []
         da, db = self._dir_interval(a), self._dir_interval(b)
         if self.circle_exact:
             for mk in (a, b):
@@ -464,8 +438,8 @@ class ArcEnclosure:
                 lo[self.axes[k]], hi[self.axes[k]] = v0, v1
         return lo, hi
 
-    def _monotone_spiral(self, a: _Mark, b: _Mark, da: IVec, db: IVec, rho: Interval,
-                         xs: list[Interval], ys: list[Interval]) -> tuple[list[Interval], list[Interval]]:
+    def _monotone_spiral(self, a: _Mark, b: _Mark, da: IVec, db: IVec, rho: Bounds,
+                         xs: list[Bounds], ys: list[Bounds]) -> tuple[list[Bounds], list[Bounds]]:
         """A spiral piece's plane ranges from its two end points where the coordinate is monotone.
 
         On a piece whose sector holds no axis direction, the direction angle
@@ -489,7 +463,7 @@ class ArcEnclosure:
         ub = self._unit(b.d) if b.kind == "d" else self._unit_interval(b, db)
         cos = (min(ua[0][0], ub[0][0]), max(ua[0][1], ub[0][1]))
         sin = (min(ua[1][0], ub[1][0]), max(ua[1][1], ub[1][1]))
-        s: Interval = (F1, F1) if self.ccw else (-F1, -F1)
+        s: Bounds = (F1, F1) if self.ccw else (-F1, -F1)
         dx = _isub(_imul(r_rate, cos), _imul(s, _imul(rho, sin)))
         dy = _iadd(_imul(r_rate, sin), _imul(s, _imul(rho, cos)))
         ends = (self.point_box(a), self.point_box(b))

@@ -31,8 +31,8 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..cylinder import DevelopedArc, Interval, cylinder_of, degree_length, developed_arc_of
-from ..exact import format_decimal
+from ..cylinder import DevelopedArc, cylinder_of, degree_length, developed_arc_of
+from ..exact import Interval, format_decimal, round_up_scaled
 from ..motion import Segment, SegmentKind
 from . import exact as ex
 from .enclosed import box_depth, certify_box, enclosed_violation
@@ -113,8 +113,6 @@ class _ArcCheck:
     def _box(self, fa: Fraction, fb: Fraction) -> Any:
         za, sa, _ = self.point(fa)
         zb, sb, _ = self.point(fb)
-        from ..cylinder import round_up_scaled
-
         alpha = self.arc.sweep.hi * (fb - fa)
         h = round_up_scaled(self.arc.rho.hi * alpha * alpha / 8)
         z = za.hull(zb).widen(h)

@@ -29,10 +29,11 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
+from ..exact import max_bound, min_bound
 from ..zones import AllowedSet, BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 
 __all__ = [
-    "Interval",
+    "ParamRange",
     "line_violation",
     "first_point",
     "point_depth",
@@ -50,8 +51,9 @@ F1 = Fraction(1)
 
 
 @dataclass(frozen=True, slots=True)
-class Interval:
-    """A non-empty interval of ``t`` with rational ends; ``lo_closed``/``hi_closed`` say which ends belong."""
+class ParamRange:
+    """A non-empty interval of the motion parameter ``t`` with rational ends; ``lo_closed``/``hi_closed`` say
+    which ends belong.  A set of parameters, exact: not an enclosure (that is :class:`nczones.exact.Interval`)."""
 
     lo: Fraction
     hi: Fraction
@@ -72,16 +74,16 @@ class Interval:
         )
 
 
-UNIT = Interval(F0, F1, True, True)
+UNIT = ParamRange(F0, F1, True, True)
 
 
-def _make(lo: Fraction, hi: Fraction, lc: bool, hc: bool) -> Interval | None:
+def _make(lo: Fraction, hi: Fraction, lc: bool, hc: bool) -> ParamRange | None:
     if lo > hi or (lo == hi and not (lc and hc)):
         return None
-    return Interval(lo, hi, lc, hc)
+    return ParamRange(lo, hi, lc, hc)
 
 
-def _intersect(a: Interval | None, b: Interval | None) -> Interval | None:
+def _intersect(a: ParamRange | None, b: ParamRange | None) -> ParamRange | None:
     if a is None or b is None:
         return None
     if a.lo > b.lo:
@@ -99,15 +101,15 @@ def _intersect(a: Interval | None, b: Interval | None) -> Interval | None:
     return _make(lo, hi, lc, hc)
 
 
-def _atom(alpha: Fraction, beta: Fraction, strict: bool) -> Interval | None:
+def _atom(alpha: Fraction, beta: Fraction, strict: bool) -> ParamRange | None:
     """``{t in [0,1] : alpha + beta t < 0}`` (``<=`` when not strict)."""
     if beta == 0:
         ok = alpha < 0 if strict else alpha <= 0
         return UNIT if ok else None
     x = -alpha / beta
     if beta > 0:  # t < x
-        return _intersect(UNIT, Interval(min(x, F0) - 1, x, True, not strict) if x >= F0 - 1 else None)
-    return _intersect(UNIT, Interval(x, max(x, F1) + 1, not strict, True))
+        return _intersect(UNIT, ParamRange(min(x, F0) - 1, x, True, not strict) if x >= F0 - 1 else None)
+    return _intersect(UNIT, ParamRange(x, max(x, F1) + 1, not strict, True))
 
 
 class _Line:
@@ -129,12 +131,12 @@ class _Line:
             return a - self.shift, b - self.shift
         return a, b
 
-    def lt(self, axis: str, c: Fraction, strict: bool = True) -> Interval | None:
+    def lt(self, axis: str, c: Fraction, strict: bool = True) -> ParamRange | None:
         """t where coord(t) < c (<= when not strict)."""
         a, b = self.ends(axis)
         return _atom(a - c, b - a, strict)
 
-    def gt(self, axis: str, c: Fraction, strict: bool = True) -> Interval | None:
+    def gt(self, axis: str, c: Fraction, strict: bool = True) -> ParamRange | None:
         a, b = self.ends(axis)
         return _atom(c - a, a - b, strict)
 
@@ -144,8 +146,8 @@ def decidable(zone: Zone) -> bool:
     return isinstance(zone, (BoxZone, SteppedZone, PolygonZone))
 
 
-def _all(parts: Iterable[Interval | None]) -> Interval | None:
-    out: Interval | None = UNIT
+def _all(parts: Iterable[ParamRange | None]) -> ParamRange | None:
+    out: ParamRange | None = UNIT
     for p in parts:
         out = _intersect(out, p)
         if out is None:
@@ -153,16 +155,16 @@ def _all(parts: Iterable[Interval | None]) -> Interval | None:
     return out
 
 
-def _union(parts: Iterable[Interval | None]) -> list[Interval]:
+def _union(parts: Iterable[ParamRange | None]) -> list[ParamRange]:
     """Sorted union (merged where they overlap or touch with a closed end)."""
     items = sorted((p for p in parts if p is not None), key=lambda i: (i.lo, not i.lo_closed))
-    out: list[Interval] = []
+    out: list[ParamRange] = []
     for it in items:
         if out:
             last = out[-1]
             if it.lo < last.hi or (it.lo == last.hi and (it.lo_closed or last.hi_closed)):
                 if it.hi > last.hi or (it.hi == last.hi and it.hi_closed and not last.hi_closed):
-                    out[-1] = Interval(last.lo, it.hi, last.lo_closed, it.hi_closed)
+                    out[-1] = ParamRange(last.lo, it.hi, last.lo_closed, it.hi_closed)
                 continue
         out.append(it)
     return out
@@ -176,7 +178,7 @@ def line_violation(
     margin: Fraction = F0,
     tool_length: Fraction = F0,
     tool_axis: str | None = "Z",
-) -> list[Interval]:
+) -> list[ParamRange]:
     """Exact set of ``t`` in ``[0,1]`` whose margin box violates ``zone``.
 
     Examples
@@ -188,7 +190,7 @@ def line_violation(
     >>> line_violation(notch, (F(5), F(6)), (F(25), F(6)), ("X", "Y"))
     []
     >>> line_violation(notch, (F(5), F(6)), (F(25), F(2)), ("X", "Y"))
-    [Interval(lo=Fraction(3, 4), hi=Fraction(1, 1), lo_closed=False, hi_closed=True)]
+    [ParamRange(lo=Fraction(3, 4), hi=Fraction(1, 1), lo_closed=False, hi_closed=True)]
     """
     d = margin
     ln = _Line(p0, p1, axes, zone, tool_length, tool_axis)
@@ -233,8 +235,8 @@ def line_violation(
                     continue
                 reg, nxt = zone.regions[i], zone.regions[i + 1]
                 b = reg.upto
-                lo = _max_bound(reg.min, nxt.min)
-                hi = _min_bound(reg.max, nxt.max)
+                lo = max_bound(reg.min, nxt.min)
+                hi = min_bound(reg.max, nxt.max)
                 if lo is not None and hi is not None and not lo < hi:
                     continue
                 conds = [ln.lt(r, b + d, False), ln.gt(r, b - d, False)]
@@ -262,7 +264,7 @@ def line_violation(
     raise TypeError(f"line_violation cannot decide a {zone.kind} zone")
 
 
-def _polygon_violation(zone: PolygonZone, ln: _Line, d: Fraction) -> list[Interval]:
+def _polygon_violation(zone: PolygonZone, ln: _Line, d: Fraction) -> list[ParamRange]:
     """A polygon is a prism: its plane part (:func:`nczones.prover.polygon.plane_violation`) times the
     box of its limits.  An allow prism is violated where either part is; a forbid prism where both
     are (the margin box is a product too, so it meets the prism's interior iff each part does)."""
@@ -306,23 +308,7 @@ def reachable(zone: SteppedZone, lo: Fraction, hi: Fraction) -> range:
     return range(first, min(last + 1, len(ups)))
 
 
-def _max_bound(a, b):
-    if a is None:
-        return b
-    if b is None:
-        return a
-    return max(a, b)
-
-
-def _min_bound(a, b):
-    if a is None:
-        return b
-    if b is None:
-        return a
-    return min(a, b)
-
-
-def first_point(intervals: list[Interval]) -> tuple[Fraction, bool]:
+def first_point(intervals: list[ParamRange]) -> tuple[Fraction, bool]:
     """Infimum of a non-empty union and whether it is attained."""
     first = intervals[0]
     return first.lo, first.lo_closed

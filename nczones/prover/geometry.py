@@ -16,17 +16,20 @@ A :class:`~nczones.motion.Segment` becomes one or more *pieces*:
 
 Invariants: every coordinate is a ``Fraction``; nothing here rounds.
 Irrational quantities are only ever *enclosed* (``sqrt_bounds``,
-``atan_bounds``, ``pi_bounds``) in rational intervals that contain them.
+``atan_bounds``, ``pi_bounds``: the exact core's :mod:`nczones.exact`
+enclosures as ``(lo, hi)`` pairs) in rational intervals that contain them.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import InvalidArgument
+from ..exact import atan_interval, is_square, pi_interval, sqrt_interval
+from ..exact import round_down as exact_round_down
+from ..exact import round_up as exact_round_up
 from ..machine import Machine, RapidMode
 from ..motion import PLANE_AXES, Segment, SegmentKind
 
@@ -131,113 +134,58 @@ def line_pieces(seg: Segment, machine: Machine | None) -> tuple[LinePiece, ...]:
 # --------------------------------------------------------------------------- enclosures
 
 
-def is_square(q: Fraction) -> Fraction | None:
-    """The exact rational square root of ``q``, or None when it is irrational.
-
-    >>> is_square(Fraction(9, 4)), is_square(Fraction(2))
-    (Fraction(3, 2), None)
-    """
-    if q < 0:
-        return None
-    n, d = q.numerator, q.denominator
-    rn, rd = math.isqrt(n), math.isqrt(d)
-    if rn * rn == n and rd * rd == d:
-        return Fraction(rn, rd)
-    return None
-
-
 #: Resolution (bits after the binary point) of outward-rounded enclosures: far below any pulse, and it keeps
 #: the numbers refinement multiplies together from growing without bound.
 ENCLOSURE_BITS = 128
 
 
 def round_down(x: Fraction, bits: int = ENCLOSURE_BITS) -> Fraction:
-    """The largest multiple of ``2**-bits`` not above ``x`` (``x`` itself when it is one).
+    """:func:`nczones.exact.round_down` at :data:`ENCLOSURE_BITS` unless told.
 
     >>> round_down(Fraction(1, 3), 4), round_down(Fraction(-1, 3), 4), round_down(Fraction(3, 8), 4)
     (Fraction(5, 16), Fraction(-3, 8), Fraction(3, 8))
     """
-    scale = 1 << bits
-    if scale % x.denominator == 0:
-        return x
-    return Fraction((x.numerator * scale) // x.denominator, scale)
+    return exact_round_down(x, bits)
 
 
 def round_up(x: Fraction, bits: int = ENCLOSURE_BITS) -> Fraction:
-    """The smallest multiple of ``2**-bits`` not below ``x``.
+    """:func:`nczones.exact.round_up` at :data:`ENCLOSURE_BITS` unless told.
 
     >>> round_up(Fraction(1, 3), 4), round_up(Fraction(-1, 3), 4)
     (Fraction(3, 8), Fraction(-5, 16))
     """
-    return -round_down(-x, bits)
+    return exact_round_up(x, bits)
 
 
 def sqrt_bounds(q: Fraction, bits: int = 96) -> tuple[Fraction, Fraction]:
-    """Rational ``lo <= sqrt(q) <= hi`` with ``hi - lo <= 2**-bits`` (exact if square).
+    """Rational ``lo <= sqrt(q) <= hi`` with ``hi - lo <= 2**-bits`` (exact if square):
+    :func:`nczones.exact.sqrt_interval` as a pair.
 
     >>> lo, hi = sqrt_bounds(Fraction(2), 20)
     >>> lo * lo <= 2 <= hi * hi, float(hi - lo) <= 2**-20
     (True, True)
     """
-    if q < 0:
-        raise InvalidArgument(f"sqrt of a negative number {q}")
-    exact = is_square(q)
-    if exact is not None:
-        return exact, exact
-    scale = 1 << bits
-    # floor(sqrt(q) * scale) = isqrt(floor(q * scale^2))
-    lo_n = math.isqrt(q.numerator * scale * scale // q.denominator)
-    return Fraction(lo_n, scale), Fraction(lo_n + 1, scale)
+    return sqrt_interval(q, bits).bounds()
 
 
-def _atan_series(x: Fraction, terms: int) -> tuple[Fraction, Fraction]:
-    """Alternating Taylor series of atan for 0 <= x <= 1/2: an enclosure."""
-    s = F0
-    p = x
-    x2 = x * x
-    for k in range(terms):
-        s += (p if k % 2 == 0 else -p) / (2 * k + 1)
-        p *= x2
-    nxt = p / (2 * terms + 1)  # magnitude of the next term bounds the error
-    return (s - nxt, s) if terms % 2 else (s, s + nxt)
-
-
-def pi_bounds(terms: int = 40) -> tuple[Fraction, Fraction]:
-    """Machin: pi = 16 atan(1/5) - 4 atan(1/239), as a rational enclosure.
+def pi_bounds() -> tuple[Fraction, Fraction]:
+    """π enclosed: :func:`nczones.exact.pi_interval` as a pair.
 
     >>> lo, hi = pi_bounds()
     >>> Fraction(3141592653589793238, 10**18) < lo < hi < Fraction(3141592653589793239, 10**18)
     True
     """
-    a_lo, a_hi = _atan_series(Fraction(1, 5), terms)
-    b_lo, b_hi = _atan_series(Fraction(1, 239), terms)
-    return 16 * a_lo - 4 * b_hi, 16 * a_hi - 4 * b_lo
+    return pi_interval().bounds()
 
 
-_PI = pi_bounds()
-
-
-def atan_bounds(x: Fraction, terms: int = 40) -> tuple[Fraction, Fraction]:
-    """Rational enclosure of ``atan(x)`` for ``x >= 0``.
+def atan_bounds(x: Fraction, bits: int = ENCLOSURE_BITS) -> tuple[Fraction, Fraction]:
+    """Rational enclosure of ``atan(x)``: :func:`nczones.exact.atan_interval` as a pair.
 
     >>> lo, hi = atan_bounds(Fraction(1))
     >>> lo <= pi_bounds()[1] / 4 and pi_bounds()[0] / 4 <= hi
     True
     """
-    if x < 0:
-        lo, hi = atan_bounds(-x, terms)
-        return -hi, -lo
-    if x.denominator > 1 << ENCLOSURE_BITS:  # atan is increasing: enclose from rounded arguments
-        x_lo, x_hi = round_down(x), round_up(x)
-        return round_down(atan_bounds(x_lo, terms)[0]), round_up(atan_bounds(x_hi, terms)[1])
-    if x > 1:  # atan(x) = pi/2 - atan(1/x)
-        lo, hi = atan_bounds(1 / x, terms)
-        return _PI[0] / 2 - hi, _PI[1] / 2 - lo
-    if x > Fraction(1, 2):  # atan(x) = pi/4 + atan((x-1)/(x+1)), |(x-1)/(x+1)| <= 1/3
-        y = (x - 1) / (x + 1)
-        lo, hi = atan_bounds(y, terms)
-        return _PI[0] / 4 + lo, _PI[1] / 4 + hi
-    return _atan_series(x, terms)
+    return atan_interval(x, bits).bounds()
 
 
 # --------------------------------------------------------------------------- arcs

@@ -36,8 +36,7 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..cylinder import Interval
-from ..exact import format_decimal
+from ..exact import Interval, format_decimal
 from ..motion import Segment
 from ..polar import (
     CentreCrossing,

@@ -23,6 +23,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import ClassVar, Union
 
+from ..exact import max_bound, min_bound
+
 __all__ = [
     "ZonePoint",
     "Region",
@@ -179,8 +181,8 @@ class SteppedZone:
         for reg, nxt in zip(self.regions, self.regions[1:]):
             b = reg.upto
             if r - d <= b <= r + d:
-                lo = _max_bound(reg.min, nxt.min)
-                hi = _min_bound(reg.max, nxt.max)
+                lo = max_bound(reg.min, nxt.min)
+                hi = min_bound(reg.max, nxt.max)
                 if _open_nonempty(lo, hi) and _lt(lim - d, hi) and _gt(lim + d, lo):
                     return True
         return False
@@ -191,22 +193,6 @@ class SteppedZone:
         lo = None if any(m is None for m in mins) else min(m for m in mins if m is not None)
         hi = None if any(m is None for m in maxs) else max(m for m in maxs if m is not None)
         return {self.reference_axis: (self.start, self.regions[-1].upto), self.limited_axis: (lo, hi)}
-
-
-def _max_bound(a: Fraction | None, b: Fraction | None) -> Fraction | None:
-    if a is None:
-        return b
-    if b is None:
-        return a
-    return max(a, b)
-
-
-def _min_bound(a: Fraction | None, b: Fraction | None) -> Fraction | None:
-    if a is None:
-        return b
-    if b is None:
-        return a
-    return min(a, b)
 
 
 Limits = tuple[tuple[str, Fraction | None, Fraction | None], ...]
@@ -458,7 +444,7 @@ class AllowedSet:
                 continue
             for axis, (lo, hi) in z.bounds().items():
                 old_lo, old_hi = out.get(axis, (None, None))
-                out[axis] = (_max_bound(old_lo, lo), _min_bound(old_hi, hi))
+                out[axis] = (max_bound(old_lo, lo), min_bound(old_hi, hi))
         return out
 
 

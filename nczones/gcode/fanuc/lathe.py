@@ -29,7 +29,7 @@ from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
-from ...cylinder import Interval
+from ...exact import Interval, is_square
 from ...machine import Machine, ToolOffset
 from ...motion import Plane, SegmentKind
 from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
@@ -1091,7 +1091,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             h2 = r * r / l2 - Fraction(1, 4)
             if h2 < 0:
                 raise CycleUnknown(f"{name}: the R arc of line {b.span.line} cannot reach its end point")
-            t = _rational_sqrt(h2)
+            t = is_square(h2)
             if t is None:
                 raise CycleUnknown(f"{name}: the R arc of line {b.span.line} has an irrational centre; write it with "
                                    "I and K (the exact intersections with the roughing levels need the centre)")
@@ -1271,18 +1271,3 @@ def _lathe_variable(it: FanucLatheInterpreter, n: int) -> None:
         if i in it.diameter:
             raise SystemVariableUnknown(f"#{n}", f"#{n}: a position or offset of the diameter axis "
                                         f"{it.axes[i]} (the control reads it as a diameter) is not modelled")
-
-
-def _rational_sqrt(q: Fraction) -> Fraction | None:
-    """The square root of ``q`` when it is rational, else None."""
-    import math
-
-    if q < 0:
-        return None
-    n, d = q.numerator, q.denominator
-    rn, rd = math.isqrt(n), math.isqrt(d)
-    if rn * rn == n and rd * rd == d:
-        return Fraction(rn, rd)
-    return None
-
-

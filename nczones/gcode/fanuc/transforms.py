@@ -9,24 +9,24 @@ halves away from zero, as :func:`~nczones.gcode.fanuc.expr.round_to` rounds; sca
 decimals stay exact where they land on the grid.
 
 A rotation (G68) or a polar point (G16) involves cosines and sines: the point is *certified*, not computed
-in doubles.  The cosine and sine of the decimal angle are enclosed in rational intervals (exact where they
-are rational: multiples of 30 or 90 degrees, by Niven's theorem the only rational values), the coordinate
-is enclosed in a rational interval around the exact real value, and it is rounded to the nearest increment
-only when no rounding tie (a halfway point between two increments) lies within :data:`TIE_GUARD`
-increments of that interval: then every control that computes the point to within that guard and rounds to
-nearest, whatever it does with halves, stands on the same increment.  Otherwise
-:class:`PointNotCertain` is raised and the block is ``unknown`` (the point is not known exactly).  One
-transform at a time: their order when combined differs between the manuals' models, and a combination is
-``unknown``.
+in doubles. The cosine and sine of the decimal angle are enclosed in rational intervals by the exact core
+(:func:`nczones.exact.sin_cos_degrees`; exact where they are rational: multiples of 30 or 90 degrees, by
+Niven's theorem the only rational values), the coordinate is enclosed in a rational interval around the
+exact real value, and it is rounded to the nearest increment only when no rounding tie (a halfway point
+between two increments) lies within :data:`TIE_GUARD` increments of that interval: then every control that
+computes the point to within that guard and rounds to nearest, whatever it does with halves, stands on the
+same increment. Otherwise :class:`PointNotCertain` is raised and the block is ``unknown`` (the point is not
+known exactly). One transform at a time: their order when combined differs between the manuals' models, and
+a combination is ``unknown``.
 """
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 from fractions import Fraction
 
+from ...exact import Bounds, sin_cos_degrees
 from .expr import round_to
 
 __all__ = ["Rotation", "Scaling", "Mirror", "Polar", "PointNotCertain", "TIE_GUARD", "cos_sin_enclosure",
@@ -35,23 +35,6 @@ __all__ = ["Rotation", "Scaling", "Mirror", "Polar", "PointNotCertain", "TIE_GUA
 #: How close (in least increments) to a rounding tie a rotated or polar coordinate may be before the point
 #: counts as not known: the precision the control is assumed to compute a transform with.
 TIE_GUARD = Fraction(1, 10**6)
-
-# pi to 45 decimals, and an upper bound one unit in the last place above
-_PI_LO = Fraction("3.141592653589793238462643383279502884197169399")
-_PI_HI = _PI_LO + Fraction(1, 10**45)
-_BITS = 128  # fixed point: integers in units of 2^-128
-_ITERATIONS = 17  # Taylor terms: the first omitted power is 34 or 35, (pi/2)^34 / 34! < 2e-32 < 2^-100
-#: a bound of the fixed-point sums' error, with the Taylor remainder: 2^16 units of 2^-128 (each of the
-#: 17 steps adds at most a few units; the margin is wide) plus 2^-100
-_ERROR = Fraction(2**16, 2**_BITS) + Fraction(1, 2**100)
-
-#: cos and sin of the angles (degrees, in [0, 360)) where they are rational
-_EXACT_COS = {Fraction(a): Fraction(c) for a, c in ((0, 1), (60, "1/2"), (90, 0), (120, "-1/2"), (180, -1),
-                                                     (240, "-1/2"), (270, 0), (300, "1/2"))}
-_EXACT_SIN = {Fraction(a): Fraction(s) for a, s in ((0, 0), (30, "1/2"), (90, 1), (150, "1/2"), (180, 0),
-                                                     (210, "-1/2"), (270, -1), (330, "-1/2"))}
-
-Interval = tuple[Fraction, Fraction]
 
 
 class PointNotCertain(Exception):
@@ -66,28 +49,9 @@ class PointNotCertain(Exception):
         self.point = point
 
 
-def _taylor(t_units: int, first: int) -> int:
-    """``sum (-1)^k t^(2k+first) / (2k+first)!`` for ``t = t_units / 2^128``, in units of 2^-128
-    (``first`` 0: cosine, 1: sine; 0 <= t <= pi/2; error within :data:`_ERROR`)."""
-    one = 1 << _BITS
-    t2 = t_units * t_units >> _BITS
-    term = one if first == 0 else t_units
-    total = 0
-    n = first
-    for _ in range(_ITERATIONS):
-        total += term
-        term = -(term * t2 >> _BITS) // ((n + 1) * (n + 2))
-        n += 2
-    return total
-
-
-@functools.lru_cache(maxsize=256)
-def cos_sin_enclosure(angle_deg: Fraction) -> tuple[Interval, Interval]:
-    """Rational intervals that contain ``cos`` and ``sin`` of ``angle_deg`` degrees (points where exact).
-
-    The angle is reduced exactly to a quadrant and an angle ``r`` in [0, 90) degrees; ``r`` in radians
-    lies between ``r * pi_lo / 180`` and ``r * pi_hi / 180``, where cosine falls and sine rises, so their
-    Taylor sums at the two ends, widened by a bound of the remainder, enclose them.
+def cos_sin_enclosure(angle_deg: Fraction) -> tuple[Bounds, Bounds]:
+    """Rational intervals that contain ``cos`` and ``sin`` of ``angle_deg`` degrees (points where exact):
+    :func:`nczones.exact.sin_cos_degrees` as pairs.
 
     >>> cos_sin_enclosure(Fraction(90))
     ((Fraction(0, 1), Fraction(0, 1)), (Fraction(1, 1), Fraction(1, 1)))
@@ -95,32 +59,16 @@ def cos_sin_enclosure(angle_deg: Fraction) -> tuple[Interval, Interval]:
     >>> c_lo**2 < Fraction(1, 2) < c_hi**2 and s_lo**2 < Fraction(1, 2) < s_hi**2 and c_hi - c_lo < 1e-25
     True
     """
-    a = Fraction(angle_deg) % 360
-    c = _EXACT_COS.get(a)
-    s = _EXACT_SIN.get(a)
-    if c is not None and s is not None:
-        return (c, c), (s, s)
-    quadrant, r = divmod(a, 90)
-    lo_units = math.floor(r * _PI_LO / 180 * 2**_BITS)  # r in radians lies in [lo_units, hi_units] / 2^128
-    hi_units = math.ceil(r * _PI_HI / 180 * 2**_BITS)
-    unit = Fraction(1, 2**_BITS)
-    cr = (_taylor(hi_units, 0) * unit - _ERROR, _taylor(lo_units, 0) * unit + _ERROR)
-    sr = (_taylor(lo_units, 1) * unit - _ERROR, _taylor(hi_units, 1) * unit + _ERROR)
-    neg = lambda iv: (-iv[1], -iv[0])  # noqa: E731
-    cos_iv, sin_iv = {0: (cr, sr), 1: (neg(sr), cr), 2: (neg(cr), neg(sr)), 3: (sr, neg(cr))}[int(quadrant)]
-    if c is not None:
-        cos_iv = (c, c)
-    if s is not None:
-        sin_iv = (s, s)
-    return cos_iv, sin_iv
+    s, c = sin_cos_degrees(Fraction(angle_deg))
+    return c.bounds(), s.bounds()
 
 
-def _times(v: Fraction, iv: Interval) -> Interval:
+def _times(v: Fraction, iv: Bounds) -> Bounds:
     a, b = v * iv[0], v * iv[1]
     return (a, b) if a <= b else (b, a)
 
 
-def certified_round(enclosure: Interval, step: Fraction) -> Fraction | None:
+def certified_round(enclosure: Bounds, step: Fraction) -> Fraction | None:
     """The multiple of ``step`` nearest to every value of ``enclosure`` widened by :data:`TIE_GUARD`
     steps, or None when a rounding tie (a halfway point between two multiples) lies within that.
 
@@ -137,7 +85,7 @@ def certified_round(enclosure: Interval, step: Fraction) -> Fraction | None:
     return (math.floor(hi) + 1) * step
 
 
-def _coordinate(terms: list[tuple[Fraction, Interval]], step: Fraction, what: str) -> Fraction:
+def _coordinate(terms: list[tuple[Fraction, Bounds]], step: Fraction, what: str) -> Fraction:
     lo = sum((_times(v, iv)[0] for v, iv in terms), Fraction(0))
     hi = sum((_times(v, iv)[1] for v, iv in terms), Fraction(0))
     got = certified_round((lo, hi), step)

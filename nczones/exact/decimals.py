@@ -20,7 +20,7 @@ import re
 from fractions import Fraction
 from typing import Any
 
-from .errors import InvalidArgument
+from ..errors import InvalidArgument
 
 __all__ = [
     "Fraction",
