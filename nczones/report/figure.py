@@ -124,6 +124,7 @@ class PathFloat:
     hot_where: list[int] = field(default_factory=list)
     files: list[str] = field(default_factory=list)
     thinned: int = 0  # points left out of the drawing by thin_path (never of a violating block)
+    thin_cell: float = 0.0  # thin_path's grid cell: every left-out point lies within cell * sqrt(axes) of a drawn one
 
 
 #: a where code is ``file index * WHERE_FILE + line`` (line 0: no line)
@@ -513,14 +514,15 @@ def thin_path(path: PathFloat, max_points: int) -> PathFloat:
             continue
         cuts = np.nonzero(r[1:] != r[:-1])[0] + 1
         curves, wheres = np.split(p, cuts), np.split(w, cuts)
-        if kept_points > max_points:  # even the ends are too many: every k-th polyline
+        if kept_points > max_points:  # even the ends are too many: every k-th polyline (no distance bound)
             step = -(-kept_points // max_points)
             curves, wheres = curves[::step], wheres[::step]
+            cell = float("inf")
         out.append((curves, wheres))
     drawn = sum(len(c) for curves, _ in out for c in curves)
     return replace(path, feed_lines=[], rapid_lines=[], feed_where=[], rapid_where=[],
                    feed_curves=out[0][0], feed_curve_where=out[0][1], rapid_curves=out[1][0],
-                   rapid_curve_where=out[1][1], thinned=path.thinned + total - drawn)
+                   rapid_curve_where=out[1][1], thinned=path.thinned + total - drawn, thin_cell=cell)
 
 
 def violation_view(path: PathFloat, result: Any, plane: Sequence[str], machine: Machine) -> Any:

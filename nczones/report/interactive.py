@@ -237,7 +237,7 @@ def _polyline(curves: list[np.ndarray], wheres: list[np.ndarray], idx: list[int]
     return coords, [None if c < 0 else where_index(c) for c in codes.tolist()]
 
 
-def view_data(path: PathFloat, result: Any, machine: Machine, *, max_points: int = MAX_POINTS) -> dict[str, Any]:
+def view_data(path: PathFloat, result: Any, machine: Machine, *, max_points: int | None = None) -> dict[str, Any]:
     """The interactive view's figure (JSON-ready): ``traces``, ``layout``, ``views`` (the whole machine, then
     one around each violation: ``ranges`` per view axis), ``start`` (the view shown first: the first
     violation's, else the whole machine), ``where`` ((file, line) of each index the traces' ``customdata``
@@ -259,7 +259,7 @@ def view_data(path: PathFloat, result: Any, machine: Machine, *, max_points: int
     names = machine.axis_names
     idx = [names.index(a) for a in axes]
     lims = _limits(machine, axes)
-    thin = thin_path(path, max_points)
+    thin = thin_path(path, MAX_POINTS if max_points is None else max_points)
     where: list[tuple[str, int | None]] = []
     index_of: dict[int, int] = {}
 

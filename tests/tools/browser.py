@@ -189,7 +189,7 @@ class Browser:
         target = self.call("Target.createTarget", {"url": "about:blank"})
         session = self.call("Target.attachToTarget", {"targetId": target["targetId"], "flatten": True})["sessionId"]
         page = Page(self, session, target["targetId"])
-        for domain in ("Page", "Runtime", "Log"):
+        for domain in ("Page", "Runtime", "Log", "Network"):
             self.call(f"{domain}.enable", session=session)
         self.call("Emulation.setDeviceMetricsOverride",
                   {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False}, session=session)
@@ -233,15 +233,43 @@ class Page:
                 out.append(f"log: {p['entry'].get('text')} {p['entry'].get('url', '')}")
         return out
 
-    def click(self, x: float, y: float) -> None:
-        """A left click at viewport position (x, y), as a mouse does it (move, press, release)."""
-        self.call("Input.dispatchMouseEvent", {"type": "mouseMoved", "x": x, "y": y})
-        for kind in ("mousePressed", "mouseReleased"):
-            self.call("Input.dispatchMouseEvent", {"type": kind, "x": x, "y": y, "button": "left", "clickCount": 1})
+    def requests(self) -> list[str]:
+        """The URLs the page asked for so far (the page itself included)."""
+        return [ev["params"]["request"]["url"] for ev in self.browser.events(self.session)
+                if ev["method"] == "Network.requestWillBeSent"]
 
-    def screenshot(self, path: str, *, full_page: bool = False) -> None:
+    def wait_for(self, expression: str, timeout: float = 60.0) -> Any:
+        """Poll a JavaScript expression until it is truthy; its value (raises BrowserError after ``timeout``)."""
+        deadline = time.monotonic() + timeout
+        while True:
+            value = self.eval(expression)
+            if value:
+                return value
+            if time.monotonic() > deadline:
+                raise BrowserError(f"not true within {timeout} s: {expression}")
+            time.sleep(0.02)
+
+    def click(self, x: float, y: float) -> None:
+        """A left click at viewport position (x, y), as a mouse does it (move, press, hold, release)."""
+        self.call("Input.dispatchMouseEvent", {"type": "mouseMoved", "x": x, "y": y})
+        self.call("Input.dispatchMouseEvent", {"type": "mousePressed", "x": x, "y": y, "button": "left",
+                                               "clickCount": 1})
+        # held for two animation frames, as a hand does: WebGL plots (Plotly's 3-D) see the button in a frame
+        self.eval("new Promise(function (ok) { requestAnimationFrame(function () { requestAnimationFrame(ok); }); })",
+                  await_promise=True)
+        self.call("Input.dispatchMouseEvent", {"type": "mouseReleased", "x": x, "y": y, "button": "left",
+                                               "clickCount": 1})
+
+    def screenshot(self, path: str, *, full_page: bool = False, selector: str | None = None) -> None:
+        """A PNG of the viewport, the whole page, or the element ``selector`` (CSS) scrolled into view."""
         params: dict[str, Any] = {"format": "png"}
-        if full_page:
+        if selector is not None:
+            box = self.eval(f"(function () {{ var e = document.querySelector({json.dumps(selector)}); "
+                            "e.scrollIntoView(); var r = e.getBoundingClientRect(); "
+                            "return {x: r.left + scrollX, y: r.top + scrollY, width: r.width, height: r.height}; })()")
+            params["clip"] = {**box, "scale": 1}
+            params["captureBeyondViewport"] = True
+        elif full_page:
             params["captureBeyondViewport"] = True
             size = self.call("Page.getLayoutMetrics")["cssContentSize"]
             params["clip"] = {"x": 0, "y": 0, "width": size["width"], "height": size["height"], "scale": 1}
