@@ -237,7 +237,8 @@ def _view_section(path: Any, result: Result, machine: Any, library: str | None, 
                 "zones and violations.</p></section>")
     data = view_data(path, result, machine)
     main = {name, getattr(program, "name", None), ""}
-    labels, anchors = [], []
+    labels: list[str] = []
+    anchors: list[str | None] = []
     for file, ln in data.pop("where"):
         if ln is None:
             labels.append(file or "—")

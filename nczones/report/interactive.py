@@ -133,8 +133,8 @@ def _zone_solids(zone: Zone, axes: Sequence[str], lims: list[tuple[float, float]
         if not rest:
             return [("prism", poly, (i, j), None, 0.0, 0.0)]
         k = rest[0]
-        lo, hi = span(k, *bounds.get(axes[k], (None, None)))
-        return [("prism", poly, (i, j), k, lo, hi)]
+        bottom, top = span(k, *bounds.get(axes[k], (None, None)))
+        return [("prism", poly, (i, j), k, bottom, top)]
     if not any(a in bounds for a in axes):
         return []
     lo = [span(k, *bounds.get(a, (None, None)))[0] for k, a in enumerate(axes)]
@@ -168,18 +168,20 @@ def _solid_traces3d(solid: Any, name: str, forbid: bool, group: str, first: bool
     mesh = {"type": "mesh3d", "x": [p[0] for p in pts], "y": [p[1] for p in pts], "z": [p[2] for p in pts],
             "i": [f[0] for f in faces], "j": [f[1] for f in faces], "k": [f[2] for f in faces],
             "color": colour, "opacity": 0.35 if forbid else 0.07, "flatshading": True, "name": name,
-            "legendgroup": group, "showlegend": first, "hoverinfo": "name", "hovertemplate": None}
+            "legendgroup": group, "showlegend": first, "hoverinfo": "name"}
     ex: list[float | None] = []
     ey: list[float | None] = []
     ez: list[float | None] = []
+
+    def stroke(corners: list[list[float]]) -> None:  # one polyline of the edges, then a gap
+        ex.extend([c[0] for c in corners] + [None])
+        ey.extend([c[1] for c in corners] + [None])
+        ez.extend([c[2] for c in corners] + [None])
+
     for loop in (range(n), range(n, 2 * n)):
-        for q in [*loop, loop[0]]:
-            ex.append(pts[q][0]), ey.append(pts[q][1]), ez.append(pts[q][2])
-        ex.append(None), ey.append(None), ez.append(None)
+        stroke([pts[q] for q in [*loop, loop[0]]])
     for q in range(n):
-        for p in (pts[q], pts[q + n]):
-            ex.append(p[0]), ey.append(p[1]), ez.append(p[2])
-        ex.append(None), ey.append(None), ez.append(None)
+        stroke([pts[q], pts[q + n]])
     edges = {"type": "scatter3d", "mode": "lines", "x": ex, "y": ey, "z": ez, "name": name, "legendgroup": group,
              "showlegend": False, "hoverinfo": "name",
              "line": {"color": "#b22222" if forbid else _GREEN, "width": 3 if forbid else 2}}
