@@ -14,6 +14,7 @@ Chromium absent: these page tests skip, except in CI (CI=true), where they fail:
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import os
@@ -47,7 +48,9 @@ EXAMPLES = {
 }
 
 
+@functools.lru_cache(maxsize=None)
 def _view(name: str):
+    """(result, machine, view data) of an example, computed once per test session (the data is not changed)."""
     program, machine_path = EXAMPLES[name]
     m = load_machine(machine_path)
     source = str(EX / program)
@@ -145,17 +148,17 @@ def _long_program(passes: int) -> str:
 
 
 def test_a_long_path_is_thinned_never_the_violating_block():
-    """600 vectorized-tier passes (12,000 moves): the view draws at most its budget, the violating blocks in
+    """300 vectorized-tier passes (6,000 moves): the view draws at most its budget, the violating blocks in
     full: G1 Z-10 from machine Z 280 (60 + G54 Z100 + H1 120) down to 210 (-10 + 220), and the G0 Z60 back up,
     which starts inside the vise."""
     m = load_machine(MACHINES / "mill.toml")
-    text = _long_program(600)
+    text = _long_program(300)
     result = verify_text(text, m, file="long.ngc")
     n = text.count("\n")
     assert [v.line for v in result.violations] == [n - 2, n - 1]  # G1 Z-10, G0 Z60
     path = collect_path(program_text(text, "long.ngc"), m, {v.block for v in result.violations})
-    data = view_data(path, result, m, max_points=2000)
-    assert data["drawn"] <= 2000 < path.segments and data["thinned"] > 0
+    data = view_data(path, result, m, max_points=1000)
+    assert data["drawn"] <= 1000 < path.segments and data["thinned"] > 0
     hot = {t["name"]: t for t in data["traces"] if t.get("meta") == "hot"}
     assert [c for c in hot["violating block"]["z"] if c is not None] == [280.0, 210.0]
     assert [c for c in hot["violating block (rapid)"]["z"] if c is not None] == [210.0, 280.0]
