@@ -80,9 +80,12 @@ function nczonesView() {
   var select = document.getElementById("view3d-select");
   if (!window.Plotly || !gd) { return; }
   var keys = ["x", "y", "z"];
+  function esc(text) {  // Plotly reads a few HTML tags in hover text: program text is shown as written
+    return text.replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
+  }
   D.traces.forEach(function (t) {
     if (t.customdata && t.meta) {
-      t.hovertext = t.customdata.map(function (k) { return k === null ? "" : D.labels[k]; });
+      t.hovertext = t.customdata.map(function (k) { return k === null ? "" : esc(D.labels[k]); });
       t.hovertemplate = "%{hovertext}<extra>" + t.name + "</extra>";
     }
   });

@@ -136,6 +136,20 @@ def test_hover_and_click_targets_name_the_violating_line():
     assert lines == {v.line for v in result.violations}
 
 
+def test_program_text_in_the_view_data_cannot_leave_its_script_element():
+    """The view's data (labels hold program text) is JSON in a <script type="application/json">: a comment
+    "</script><img src=x onerror=alert[1]>" on a motion line stays data (``<`` written ``\\u003c``)."""
+    from nczones.report.html import render_html, without_library
+
+    m = load_machine(MACHINES / "mill.toml")
+    text = "G21 G90 G54 F100\nG0 X10 Y10 Z100 (</script><img src=x onerror=alert[1]>)\nM2\n"
+    result = verify_text(text, m, file="t.ngc")
+    page = without_library(render_html(result, m, program_text(text, "t.ngc")))
+    assert "</script><img" not in page and "<img" not in page
+    payload = re.search(r'<script type="application/json" id="view3d-data">(.*?)</script>', page, re.S).group(1)
+    assert "line 2: G0 X10 Y10 Z100 (</script><img src=x onerror=alert[1]>)" in json.loads(payload)["labels"]
+
+
 def _long_program(passes: int) -> str:
     """Zig-zag passes of 20 short moves at tip Z-5 (G54 Z100, H1 = 120: machine Z215), then one plunge into the
     vise: program X-30 Y20 Z-10 is tip X120 Y120 Z90, inside the vise X100-140 Y60-180 Z50-130 of mill.toml."""
