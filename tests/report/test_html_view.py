@@ -92,7 +92,10 @@ def _zone_solids(data: dict, zone: str) -> list[dict]:
 def test_each_witness_lies_in_the_drawn_zone_it_names(name):
     """The ✕ (◆ in 3-D) of each witness, as the view draws it, inside the drawn solid of its forbid zone, outside
     the solid of its allow zone; the witness coordinates are the exact point of the verdict, as floats."""
-    result, m, data = _view(name)
+    _check_witnesses(*_view(name))
+
+
+def _check_witnesses(result, m, data) -> None:
     marks = next(t for t in data["traces"] if t.get("meta") == "witness")
     keys = ("x", "y", "z")[:len(data["axes"])]
     checked = 0
@@ -113,6 +116,76 @@ def test_each_witness_lies_in_the_drawn_zone_it_names(name):
             assert not any(_inside_solid(t, point, -1e-6) for t in solids), (v.zone, point)
         checked += 1
     assert checked >= 1
+
+
+MILL_L_CLAMP = """
+[machine]
+name = "mill with an L-shaped clamp and a stepped floor"
+units = "mm"
+axes = ["X", "Y", "Z"]
+pulse = "0.001"
+rapid_mode = "linear"
+[machine.rapid]
+X = "10000"
+Y = "10000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "400"
+[offsets]
+G54 = { X = "0", Y = "0", Z = "0" }
+[tool_lengths]
+H1 = "100"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "0", Y = "0", Z = "0" }
+max = { X = "600", Y = "400", Z = "400" }
+[[zones]]
+name = "clamp"
+kind = "polygon"
+forbid = true
+point = "tip"
+plane = ["X", "Y"]
+vertices = [["100", "100"], ["200", "100"], ["200", "150"], ["140", "150"], ["140", "250"], ["100", "250"]]
+min = { Z = "0" }
+max = { Z = "80" }
+[[zones]]
+name = "floor"
+kind = "stepped"
+point = "tip"
+reference_axis = "X"
+limited_axis = "Z"
+from = "0"
+regions = [{ upto = "300", min = "20", max = "400" }, { upto = "600", min = "60", max = "400" }]
+"""
+
+
+def test_3d_solids_of_a_polygon_prism_and_a_stepped_table(tmp_path):
+    """A polygon zone is a prism along the third axis, a stepped table stacked boxes, both moved by the tool
+    length (H1 = 100) as the proof moves tip zones.  Line 4 plunges the tip to Z50 at X120 Y200, in the L's
+    upright (X100-140, Y150-250; the clamp is Z0-80 for the tip, machine Z100-180); line 7 takes the tip to Z40
+    at X400, below the floor's Z60 over X300-600 (machine Z160)."""
+    machine = tmp_path / "m.toml"
+    machine.write_text(MILL_L_CLAMP, encoding="utf-8")
+    m = load_machine(machine)
+    text = "G21 G90 G54 F100\nG43 H1\nG0 X120 Y200 Z250\nG1 Z50\nG0 Z250\nG0 X400 Y50\nG1 Z40\nG0 Z250\nM2\n"
+    result = verify_text(text, m, file="t.ngc")
+    assert {(v.line, v.zone) for v in result.violations} >= {(4, "clamp"), (7, "floor")}
+    path = collect_path(program_text(text, "t.ngc"), m, {v.block for v in result.violations})
+    data = view_data(path, result, m)
+    _check_witnesses(result, m, data)
+    clamp = [t for t in data["traces"] if t["type"] == "mesh3d" and t["name"].startswith("clamp (")]
+    assert len(clamp) == 1 and sorted(set(clamp[0]["z"])) == [100.0, 180.0]
+    # the cap is the L itself (ear clipping of a non-convex polygon): its n - 2 = 4 triangles cover
+    # 100 x 50 + 40 x 100 = 9,000 mm2
+    x, y = clamp[0]["x"], clamp[0]["y"]
+    cap = list(zip(clamp[0]["i"], clamp[0]["j"], clamp[0]["k"]))[:4]
+    area = sum(abs((x[b] - x[a]) * (y[c] - y[a]) - (x[c] - x[a]) * (y[b] - y[a])) / 2 for a, b, c in cap)
+    assert area == pytest.approx(9000.0)
+    floor = [t for t in data["traces"] if t["type"] == "mesh3d" and t["name"].startswith("floor (")]
+    assert sorted(min(t["z"]) for t in floor) == [120.0, 160.0]  # the tip's Z20 and Z60, plus 100
 
 
 def test_the_view_starts_around_the_first_violation_and_reaches_the_whole_machine():
