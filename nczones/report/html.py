@@ -64,6 +64,7 @@ pre.listing{background:#fafafa;border:1px solid #ddd;padding:.4em 0;overflow-x:a
 tr.violation td:first-child a,tr.reason td:first-child a{font-weight:bold}
 .muted{color:#666;font-size:.85em}
 #view3d-plot{width:100%;height:620px;border:1px solid #ddd}.view-controls{margin:.4em 0}.view-controls select{max-width:40em}
+@media print{#view3d,.view-link{display:none}}
 """
 
 # plotly.js is embedded as text and run after the page's load event: the summary, tables, figures and
