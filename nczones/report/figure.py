@@ -34,7 +34,7 @@ from ..motion import MotionChunk, Segment, SegmentKind
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from .placement import Placement, drawing_machine, placement_label, placement_of
 
-__all__ = ["plot_program", "relevant_planes", "collect_path", "PathFloat"]
+__all__ = ["plot_program", "relevant_planes", "collect_path", "PathFloat", "thin_path"]
 
 
 def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> list[tuple[str, str]]:
@@ -114,6 +114,35 @@ class PathFloat:
     hot_placements: dict = field(default_factory=dict)  # violating block -> Placement of its first hot segment
     segments: int = 0
     drawn: int = 0
+    # where each drawn point comes from, for hover and click (:func:`where_code`): one int64 array per entry
+    # of feed_lines/rapid_lines (one code per row) and of feed_curves/rapid_curves (one per point); one int per
+    # hot curve; files: the file names the codes index (the program's and its called files')
+    feed_where: list[np.ndarray] = field(default_factory=list)
+    rapid_where: list[np.ndarray] = field(default_factory=list)
+    feed_curve_where: list[np.ndarray] = field(default_factory=list)
+    rapid_curve_where: list[np.ndarray] = field(default_factory=list)
+    hot_where: list[int] = field(default_factory=list)
+    files: list[str] = field(default_factory=list)
+    thinned: int = 0  # points left out of the drawing by thin_path (never of a violating block)
+    thin_cell: float = 0.0  # thin_path's grid cell: every left-out point lies within cell * sqrt(axes) of a drawn one
+
+
+#: a where code is ``file index * WHERE_FILE + line`` (line 0: no line)
+WHERE_FILE = 1 << 32
+
+
+def where_code(path: PathFloat, file: str | None, line: int | None) -> int:
+    """The code of (file, line) in ``path.files`` (the file added when new)."""
+    name = file or ""
+    if name not in path.files:
+        path.files.append(name)
+    return path.files.index(name) * WHERE_FILE + (line or 0)
+
+
+def where_of(path: PathFloat, code: int) -> tuple[str, int | None]:
+    """(file, line) of a where code (line None for 0)."""
+    k, line = divmod(int(code), WHERE_FILE)
+    return path.files[k], (line or None)
 
 
 def _seg_points(seg: Segment, machine: Machine) -> np.ndarray:
@@ -184,16 +213,21 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
             return
         out.drawn += 1
         rapid = seg.kind is SegmentKind.RAPID
+        where = where_code(out, seg.span.file if seg.span is not None else None, seg.line)
         if is_hot:
             if out.hot_tool_length is None:
                 out.hot_tool_length = seg.tool_length
             out.hot_placements.setdefault(seg.block, placement_of(seg))
             out.hot_curves.append((_seg_points(seg, machine), rapid))
+            out.hot_where.append(where)
         elif not (seg.kind is SegmentKind.LINE or (rapid and not dogleg)):  # curves and doglegs
-            (out.rapid_curves if rapid else out.feed_curves).append(_seg_points(seg, machine))
+            pts = _seg_points(seg, machine)
+            (out.rapid_curves if rapid else out.feed_curves).append(pts)
+            (out.rapid_curve_where if rapid else out.feed_curve_where).append(np.full(len(pts), where, np.int64))
         else:
             pair = np.asarray([[float(c) for c in seg.start], [float(c) for c in seg.end]], dtype=float)
             (out.rapid_lines if rapid else out.feed_lines).append(pair[None, :, :])
+            (out.rapid_where if rapid else out.feed_where).append(np.asarray([where], np.int64))
 
     run = interpret(program, machine) if library is None else interpret(program, machine, library=library)
     for chunk in run:
@@ -221,10 +255,13 @@ def collect_path(program: Any, machine: Machine, hot_blocks: Iterable[int] = (),
         if len(idx):
             pairs = np.stack([np.asarray(chunk.start)[idx] / den, np.asarray(chunk.end)[idx] / den], axis=1)
             rapid = kinds[idx] == SegmentKind.RAPID.value
+            where = where_code(out, chunk.file, 0) + np.asarray(chunk.line)[idx].astype(np.int64)
             if rapid.any():
                 out.rapid_lines.append(pairs[rapid])
+                out.rapid_where.append(where[rapid])
             if (~rapid).any():
                 out.feed_lines.append(pairs[~rapid])
+                out.feed_where.append(where[~rapid])
         if special.any():
             for i, seg in enumerate(chunk.segments()):
                 if special[i]:
@@ -362,9 +399,11 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         ax.set_ylim(min(y0, lo[1] - pady), max(y1, hi[1] + pady))
     if zoom and result is not None and result.violations:
         _zoom_to_violations(ax, path, result, plane, machine)
-    if path.drawn < path.segments:
-        ax.text(0.99, 0.01, f"{path.segments - path.drawn} of {path.segments} segments not drawn",
-                transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="#555555")
+    if path.drawn < path.segments or path.thinned:
+        note = [f"{path.segments - path.drawn} of {path.segments} segments not drawn"] if path.drawn < path.segments else []
+        note += [f"path thinned for drawing ({path.thinned} points left out)"] if path.thinned else []
+        ax.text(0.99, 0.01, "; ".join(note), transform=ax.transAxes, ha="right", va="bottom", fontsize=7,
+                color="#555555")
     if diameter:
         from matplotlib.ticker import FuncFormatter
 
@@ -378,6 +417,112 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, framealpha=0.9, borderaxespad=0)
     fig.tight_layout()
     return fig
+
+
+def _flat_runs(lines: list[np.ndarray], line_where: list[np.ndarray], curves: list[np.ndarray],
+               curve_where: list[np.ndarray], naxes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Points, where codes and run numbers of the continuous polylines of ``lines`` (rows joined where one
+    ends where the next starts) and ``curves`` (one run each)."""
+    pts, wheres, runs = [], [], []
+    n_runs = 0
+    if lines:
+        seg = np.concatenate(lines).reshape(-1, 2, naxes)
+        w = np.concatenate(line_where)
+        breaks = np.ones(len(seg), bool)
+        breaks[1:] = np.any(seg[1:, 0] != seg[:-1, 1], axis=1)
+        run_of_row = np.cumsum(breaks) - 1
+        end_pos = np.arange(len(seg)) + np.cumsum(breaks)
+        out = np.empty((len(seg) + int(breaks.sum()), naxes))
+        ow = np.empty(len(out), np.int64)
+        orun = np.empty(len(out), np.int64)
+        out[end_pos] = seg[:, 1]
+        ow[end_pos] = w
+        orun[end_pos] = run_of_row
+        start_pos = end_pos[breaks] - 1
+        out[start_pos] = seg[breaks, 0]
+        ow[start_pos] = w[breaks]
+        orun[start_pos] = run_of_row[breaks]
+        pts.append(out)
+        wheres.append(ow)
+        runs.append(orun)
+        n_runs = int(run_of_row[-1]) + 1
+    for c, w in zip(curves, curve_where):
+        pts.append(np.asarray(c, float).reshape(-1, naxes))
+        wheres.append(np.asarray(w, np.int64))
+        runs.append(np.full(len(c), n_runs, np.int64))
+        n_runs += 1
+    if not pts:
+        return np.empty((0, naxes)), np.empty(0, np.int64), np.empty(0, np.int64)
+    return np.concatenate(pts), np.concatenate(wheres), np.concatenate(runs)
+
+
+def _snap_keep(points: np.ndarray, runs: np.ndarray, cell: float) -> np.ndarray:
+    """Which points to keep: a run's first and last, and each point entering a grid cell (side ``cell``)
+    other than its predecessor's.  A left-out point lies in its predecessor's cell, so in the cell of the
+    last kept point before it: the drawn line stays within ``cell * sqrt(axes)`` of every point."""
+    keep = np.ones(len(points), bool)
+    if len(points) < 2:
+        return keep
+    grid = np.floor(points / cell).astype(np.int64)
+    same_run = runs[1:] == runs[:-1]
+    keep[1:] = ~same_run | np.any(grid[1:] != grid[:-1], axis=1)
+    keep[:-1] |= ~same_run  # the last point of each run
+    return keep
+
+
+def thin_path(path: PathFloat, max_points: int) -> PathFloat:
+    r"""``path`` drawn with at most about ``max_points`` points in its feeds and rapids (a long program's
+    report stays small and opens fast); the violating blocks (``hot_curves``) are never thinned.
+
+    Points are left out on a grid: a point in the same grid cell as its predecessor on the path is not drawn
+    (:func:`_snap_keep`), the cell doubling from 1/8192 of the path's extent until the budget holds, so the drawn
+    line stays within a cell's diagonal of the path.  Only when even the polylines' end points exceed the
+    budget are whole polylines left out, evenly.  ``thinned`` counts the points not drawn.  The thinned path
+    keeps its feeds and rapids as polylines (``feed_curves``, ``rapid_curves``).
+
+    >>> from nczones import load_machine
+    >>> m = load_machine("specs/machines/mill.toml")
+    >>> text = "G21 G90 G54 F100\nG0 X0 Y0 Z0\n" + "".join(f"G1 X{k % 200 / 100} Y{k // 200}\n" for k in range(4000))
+    >>> from nczones.gcode.source import program_text
+    >>> p = collect_path(program_text(text, "t.ngc"), m)
+    >>> t = thin_path(p, 1000)
+    >>> sum(len(c) for c in t.feed_curves) <= 1000 < 4000, t.thinned > 0
+    (True, True)
+    """
+    naxes = len(path.axes)
+    parts = [_flat_runs(path.feed_lines, path.feed_where, path.feed_curves, path.feed_curve_where, naxes),
+             _flat_runs(path.rapid_lines, path.rapid_where, path.rapid_curves, path.rapid_curve_where, naxes)]
+    total = sum(len(p) for p, _, _ in parts)
+    if total <= max_points:
+        return path
+    finite = [p[np.isfinite(p).all(axis=1)] for p, _, _ in parts if len(p)]
+    stacked = np.concatenate(finite) if finite else np.zeros((1, naxes))
+    extent = float(np.max(stacked.max(axis=0) - stacked.min(axis=0))) or 1.0
+    cell = extent / 8192
+    keeps = [np.ones(len(p), bool) for p, _, _ in parts]
+    for _ in range(24):  # the cell reaches twice the extent: every run down to its two ends
+        keeps = [_snap_keep(p, r, cell) for p, _, r in parts]
+        if sum(int(k.sum()) for k in keeps) <= max_points:
+            break
+        cell *= 2
+    out: list[tuple[list[np.ndarray], list[np.ndarray]]] = []
+    kept_points = sum(int(k.sum()) for k in keeps)
+    for (p, w, r), keep in zip(parts, keeps):
+        p, w, r = p[keep], w[keep], r[keep]
+        if not len(p):
+            out.append(([], []))
+            continue
+        cuts = np.nonzero(r[1:] != r[:-1])[0] + 1
+        curves, wheres = np.split(p, cuts), np.split(w, cuts)
+        if kept_points > max_points:  # even the ends are too many: every k-th polyline (no distance bound)
+            step = -(-kept_points // max_points)
+            curves, wheres = curves[::step], wheres[::step]
+            cell = float("inf")
+        out.append((curves, wheres))
+    drawn = sum(len(c) for curves, _ in out for c in curves)
+    return replace(path, feed_lines=[], rapid_lines=[], feed_where=[], rapid_where=[],
+                   feed_curves=out[0][0], feed_curve_where=out[0][1], rapid_curves=out[1][0],
+                   rapid_curve_where=out[1][1], thinned=path.thinned + total - drawn, thin_cell=cell)
 
 
 def violation_view(path: PathFloat, result: Any, plane: Sequence[str], machine: Machine) -> Any:
@@ -411,15 +556,20 @@ def path_within(path: PathFloat, plane: Sequence[str], machine: Machine, view: A
         inside: np.ndarray = (hi[:, h] >= x0) & (lo[:, h] <= x1) & (hi[:, v] >= y0) & (lo[:, v] <= y1)
         return inside
 
-    def lines(arrs: list[np.ndarray]) -> list[np.ndarray]:
-        kept = [a[meets(a)] for a in arrs if len(a)]
-        return [a for a in kept if len(a)]
+    def lines(arrs: list[np.ndarray], wheres: list[np.ndarray]) -> tuple[list[np.ndarray], list[np.ndarray]]:
+        masks = [meets(a) for a in arrs]
+        kept = [(a[m], w[m]) for a, w, m in zip(arrs, wheres, masks) if m.any()]
+        return [a for a, _ in kept], [w for _, w in kept]
 
-    def curves(arrs: list[np.ndarray]) -> list[np.ndarray]:
-        return [c for c in arrs if len(c) and bool(meets(c[None, :, :])[0])]
+    def curves(arrs: list[np.ndarray], wheres: list[np.ndarray]) -> tuple[list[np.ndarray], list[np.ndarray]]:
+        kept = [(c, w) for c, w in zip(arrs, wheres) if len(c) and bool(meets(c[None, :, :])[0])]
+        return [c for c, _ in kept], [w for _, w in kept]
 
-    return replace(path, feed_lines=lines(path.feed_lines), rapid_lines=lines(path.rapid_lines),
-                   feed_curves=curves(path.feed_curves), rapid_curves=curves(path.rapid_curves))
+    (fl, fw), (rl, rw) = lines(path.feed_lines, path.feed_where), lines(path.rapid_lines, path.rapid_where)
+    (fc, fcw), (rc, rcw) = (curves(path.feed_curves, path.feed_curve_where),
+                            curves(path.rapid_curves, path.rapid_curve_where))
+    return replace(path, feed_lines=fl, rapid_lines=rl, feed_curves=fc, rapid_curves=rc, feed_where=fw,
+                   rapid_where=rw, feed_curve_where=fcw, rapid_curve_where=rcw)
 
 
 def _zoom_to_violations(ax: Any, path: PathFloat, result: Any, plane: tuple[str, str], machine: Machine) -> None:
