@@ -700,7 +700,7 @@ def _allowed_bytes(allowed: np.ndarray) -> bytes:
 
 
 def _allowed_table(it: Any) -> np.ndarray:
-    letters = set(b"GIJKFNSM") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
+    letters = set(b"GIJKRFNSM") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
     allowed = np.zeros(256, dtype=bool)
     for ch in letters | set(b"0123456789.+-"):
         allowed[ch] = True
@@ -933,6 +933,16 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     any_ijk = np.zeros(n, dtype=bool)
     for _col, pres in ijk.values():
         any_ijk |= pres
+    r_col = r_pres = None
+    rmask = wletter == ord("R")
+    if rmask.any():  # R-format arcs (the R word on a line that is no arc: the full path)
+        r_col = np.zeros(n, dtype=np.int64)
+        r_pres = np.zeros(n, dtype=bool)
+        r_col[rel[rmask]] = scaled(rmask)
+        r_pres[rel[rmask]] = True
+        if np.any(r_pres & any_ijk):
+            return None  # R and I/J/K in one arc: the full path refuses it
+        any_ijk = any_ijk | r_pres
     is_arc_line = (mode == 2) | (mode == 3)
     if np.any(any_ijk & ~is_arc_line):
         return None
@@ -989,7 +999,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     kind = np.where(mode[rows] == 0, SegmentKind.RAPID, np.where(mode[rows] == 1, SegmentKind.LINE, SegmentKind.ARC)).astype(np.int8)
     st = start[rows]
     en = end[rows]
-    centre = plane_col = cw = turns = None
+    centre = plane_col = cw = turns = radius = None
     arcs = kind == SegmentKind.ARC
     if arcs.any():
         plane = it.plane
@@ -1004,26 +1014,51 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         arow = rows[arcs]
         ia_col = ijk.get(la, (np.zeros(n, np.int64), np.zeros(n, bool)))
         ib_col = ijk.get(lb, (np.zeros(n, np.int64), np.zeros(n, bool)))
-        if np.any(~(ia_col[1][arow] | ib_col[1][arow])):
-            return None  # R format or missing centre: full path
+        r_rows = None
+        if r_pres is not None and r_pres[arow].any():
+            assert r_col is not None
+            r_rows = r_pres[arow]
+            got = _r_arcs(start[arow[r_rows], ia], start[arow[r_rows], ib], end[arow[r_rows], ia],
+                          end[arow[r_rows], ib], r_col[arow[r_rows]])
+            if got is None:
+                return None
+            r_half, r_ca, r_cb = got
+        if np.any(~(ia_col[1][arow] | ib_col[1][arow] | (False if r_rows is None else r_rows))):
+            return None  # missing centre: full path
         if it.arc_absolute:
             ca = np.where(ia_col[1][arow], ia_col[0][arow] + off[ia], off[ia])
             cb = np.where(ib_col[1][arow], ib_col[0][arow] + off[ib], off[ib])
         else:
             ca = start[arow, ia] + ia_col[0][arow]
             cb = start[arow, ib] + ib_col[0][arow]
+        radius = None
+        if r_rows is not None:
+            ij = ~r_rows
+            ca, cb = ca[ij], cb[ij]
+        else:
+            ij = slice(None)
         # under LinuxCNC's rule the arcs LinuxCNC accepts (the interpreter's rule, decided the same way);
         # a run with an arc it refuses goes to the full interpreter, which reports it
         if getattr(it, "arc_rule", "fixed") == "linuxcnc":
-            if not _arcs_ok_linuxcnc(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb,
-                                     bool(inch), S):
+            if not _arcs_ok_linuxcnc(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia],
+                                     end[arow[ij], ib], ca, cb, bool(inch), S):
                 return None
-        elif not _arcs_ok(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb,
+        elif not _arcs_ok(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia], end[arow[ij], ib], ca, cb,
                           it.arc_tolerance, S):
             return None
         centre = np.zeros((m, 2), dtype=np.int64)
-        centre[arcs, 0] = ca
-        centre[arcs, 1] = cb
+        if r_rows is None:
+            centre[arcs, 0] = ca
+            centre[arcs, 1] = cb
+        else:
+            at = np.flatnonzero(arcs)
+            centre[at[ij], 0] = ca
+            centre[at[ij], 1] = cb
+            centre[at[r_rows], 0] = r_ca
+            centre[at[r_rows], 1] = r_cb
+            radius = np.zeros(m, dtype=np.int64)
+            assert r_col is not None
+            radius[at[r_rows]] = np.where(r_half, 0, r_col[arow[r_rows]])
         plane_col = np.where(arcs, int(plane), 0).astype(np.int8)
         cw = arcs & (mode[rows] == 2)
         turns = np.zeros(m, dtype=np.int32)
@@ -1036,6 +1071,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         block=block_of_line[rows].astype(np.int64), tool_length=np.full(m, tl, dtype=np.int64),
         centre=centre, plane=plane_col, clockwise=cw, turns=turns,
         feed=(feed_line[rows] if it.feed_mode == 94 else None), file=interp.file,
+        radius=radius if radius is not None and radius.any() else None,
     )
     # hand the state back to the interpreter
     den = 10**S
@@ -1090,6 +1126,44 @@ def _scaled_int(q: Fraction, S: int) -> int:
     if v.denominator != 1:
         raise ValueError("not representable")
     return int(v)
+
+
+#: Chord components and radii (scaled) of R-format arcs the fast path takes: squares stay in ``int64``.
+_R_LIMIT = 2**30
+
+
+def _r_arcs(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray,
+            r: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """R-format arcs as ``Interpreter.arc`` emits them: ``(half, ca, cb)`` where ``half`` marks the half
+    circles (chord exactly ``2|R|``: the chord's midpoint is their centre, ``ca``/``cb``), the other rows
+    keep their signed R (no centre); None when a row needs the full path: start equal to end (GC303, or
+    Fanuc's arc of no motion), R = 0 (GC304), a chord longer than ``2|R|`` (GC302, or a half circle within
+    the radius tolerance), a chord within the interpreter's relative ``_TINY`` of ``2|R|`` but not equal
+    (taken as a half circle there), a midpoint that is not on the scale, or numbers whose squares could
+    leave ``int64``.
+
+    The decision is exact: ``D = chord**2`` and ``4 R**2`` are exact integers; a row is a plain R arc when
+    ``D < 4 R**2 (1 - 10**-12)**2``, i.e. ``D * 10**24 < 4 R**2 (10**12 - 1)**2``, decided with a float
+    only where the two sides differ by far more than its rounding (``D / 4R**2 < 1 - 10**-9``), and with
+    Python integers on the few others.
+    """
+    da = ea - sa
+    db = eb - sb
+    if np.any((np.abs(da) >= _R_LIMIT) | (np.abs(db) >= _R_LIMIT) | (np.abs(r) >= _R_LIMIT) | (r == 0)):
+        return None
+    d2 = da * da + db * db
+    if np.any(d2 == 0):
+        return None
+    r4 = 4 * r * r
+    half = d2 == r4
+    near = ~half & (d2.astype(np.float64) / r4.astype(np.float64) >= 1 - 1e-9)
+    for k in np.flatnonzero(near).tolist():
+        if int(d2[k]) * 10**24 >= int(r4[k]) * (10**12 - 1) ** 2:
+            return None  # a half circle by the interpreter's tolerance, or too short an R
+    ma, mb = sa + ea, sb + eb
+    if np.any(half & (((ma | mb) & 1) != 0)):
+        return None  # a half circle whose centre is not on the scale
+    return half, np.where(half, ma // 2, 0), np.where(half, mb // 2, 0)
 
 
 def _arcs_ok(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca: np.ndarray, cb: np.ndarray,
