@@ -1,29 +1,30 @@
 """Certified enclosures of R-format arc centres, in columns (DESIGN §2, §9).
 
 An R-format arc (``G2 X.. Y.. R..``) from ``s`` to ``e`` with signed radius ``R`` has its centre at
-``c = (s + e) / 2 + sign * t / 2 * (-d_b, d_a)``, ``d = e - s``, ``t = sqrt((4 R**2 - |d|**2) / |d|**2)``
-and ``sign = -1`` when the centre is to the right of the chord (G2 with R > 0, G3 with R < 0), else
-``+1`` (:meth:`nczones.prover.geometry.ArcGeom.r_format_parts`, the same formula with ``k = t / 2``).
-``t`` is irrational in general, so the column screen takes the centre as an integer box
-``[lo, hi]`` (per plane axis, in units of ``10**-scale / m``) that certainly holds it:
+``c = (s + e) / 2 + sign * t / 2 * (-d_b, d_a)``, ``d = e - s``, ``t = sqrt(X / D)`` with
+``D = d_a**2 + d_b**2``, ``X = 4 R**2 - D``, and ``sign = -1`` when the centre is to the right of the
+chord (G2 with R > 0, G3 with R < 0), else ``+1`` (:meth:`nczones.prover.geometry.ArcGeom.r_format_parts`,
+the same formula with ``k = t / 2``).  ``t`` is irrational in general, so the column screen takes the
+centre as an integer box ``[lo, hi]`` per plane axis, in units ``m`` times finer than the chunk's scale
+(:func:`fine_factor`), that certainly holds it.  The inputs are exact integers; the doubles only move
+bounds outwards, each by more than its certified error (``u = 2**-53``, IEEE-754 round to nearest,
+correctly rounded ``+ - * / sqrt``):
 
-* ``d_a, d_b`` and ``2R`` are integers below ``2**26`` in magnitude (other rows are not enclosed), so
-  ``D = d_a**2 + d_b**2 < 2**53`` and ``X = 4 R**2 - D`` (``|X| < 2**52``) are exact in ``int64`` and
-  exact as doubles;
-* the double ``t' = sqrt(X / D)`` (one correctly rounded division, one correctly rounded square root)
-  is within ``2u`` relative of ``t`` (``u = 2**-53``); the double ``v = t' * float(d_b * m)`` (``d_b * m``
-  an exact integer below ``2**56``, rounded once to a double, then one rounded product) is within ``4u``
-  relative of ``t * d_b * m``;
-* the enclosure widens ``v`` by ``|v| * 2**-40 + 1`` (far more than ``4u |v|`` plus the rounding of that
-  subtraction) before the floor and the ceiling, so ``2 m c`` lies in ``[2 m M + floor(v - w),
-  2 m M + ceil(v + w)]`` exactly (``2 M = s + e``, an integer), and halving with the floor and the ceiling
-  keeps it.
+* ``D' = d_a'**2 + d_b'**2`` and ``S' = 4 R'**2`` (``'``: the double of an integer, within ``u``
+  relative) are within ``4u`` relative of ``D`` and ``4 R**2``, so ``X`` is within
+  ``e_X = 2**-49 (S' + D')`` (at least ``8u (S + D)``) of ``X' = S' - D'``; a row with
+  ``X' <= 2 e_X`` is not enclosed (a chord of about ``2|R|`` or more: the interpreter gives a half
+  circle a rational centre, anything else is the exact path's to decide);
+* ``t`` lies in ``[sqrt((X' - e_X) / D' (1 - 2**-45)) (1 - 2**-45), sqrt((X' + e_X) / D' (1 + 2**-45))
+  (1 + 2**-45)]``: the factors ``1 ± 2**-45`` cover ``D'``'s error and the rounding of the sum, the
+  division and the square root (each at most ``u``, together far below ``2**-45``);
+* ``v = t * sign * (-d_b m)`` (and ``t * sign * d_a m`` for the other axis) lies between the products of
+  the ``t`` bounds with the double of ``sign * (-d_b m)``, widened by ``2**-44`` relative (the rounding of
+  that double and of the products) and by 1 unit; its floor and ceiling are exact integers, and
+  ``2 m c = m (s + e) + v`` is halved with the floor and the ceiling.
 
-No decision rests on a double compared with a threshold: every double only moves a bound outwards by
-less than its certified error.  Rows outside the magnitudes above, or with ``X <= 0`` (a chord of at
-least ``2|R|``: the interpreter gives a half circle a rational centre, and anything else is the exact
-path's to refuse), or ``D = 0``, are reported as not enclosed; the screen flags them and the exact
-per-motion path decides them.
+Rows whose numbers, refined by ``m``, could reach ``2**59`` are not enclosed; :func:`rformat_boxes`
+reports them with ``ok`` False, the screen flags them and the exact per-motion path decides them.
 
 This module is the one place of these enclosures (the column screen, :func:`rformat_boxes`, reads it).
 """
@@ -34,13 +35,12 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["centre_enclosure", "rformat_boxes", "ENCLOSE_LIMIT"]
+__all__ = ["centre_enclosure", "rformat_boxes", "fine_factor"]
 
-#: Chord components and ``2|R|`` (in units of the chunk's scale) must be below this to be enclosed.
-ENCLOSE_LIMIT = 2**26
 #: Values in units of the fine scale stay below this (``int64`` sums of a few of them never wrap).
 _FINE_LIMIT = 2**59
-_REL = 2.0**-40
+_WIDE = 2.0**-45
+_REL = 2.0**-44
 
 
 def fine_factor(scale: int, magnitude: int) -> int:
@@ -61,38 +61,41 @@ def centre_enclosure(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndar
                      cw: np.ndarray, m: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """``(ok, a_lo, a_hi, b_lo, b_hi)``: the centre of each R-format arc (start ``(sa, sb)``, end ``(ea, eb)``,
     signed radius ``r``, clockwise ``cw``; ``int64`` at one scale) lies in ``[a_lo, a_hi] x [b_lo, b_hi]``
-    in units ``m`` times finer, where ``ok``; see the module docstring.  The caller keeps ``|sa + ea| * m``
-    (and the same for ``b``) below ``2**59``.
+    in units ``m`` times finer, where ``ok``; see the module docstring.  The caller keeps every input
+    times ``2 m`` below ``2**59``.
 
     >>> A = lambda *v: np.array(v, dtype=np.int64)
-    >>> ok, alo, ahi, blo, bhi = centre_enclosure(A(0), A(0), A(2), A(0), A(2), np.array([True]), 1000)
-    >>> bool(ok[0]), int(alo[0]) <= 1000 <= int(ahi[0]), int(blo[0]) < -1732050 < int(bhi[0]), int(bhi[0] - blo[0]) < 4
-    (True, True, True, True)
+    >>> ok, alo, ahi, blo, bhi = centre_enclosure(A(0), A(0), A(2), A(0), A(2), np.array([True]), 10**8)
+    >>> bool(ok[0]), [int(v[0]) for v in (alo, ahi, blo, bhi)]  # G2 X2 Y0 R2 from 0: the centre is (1, -sqrt 3)
+    (True, [99999999, 100000001, -173205082, -173205080])
     """
     da = ea - sa
     db = eb - sb
-    ok = ((np.abs(da) < ENCLOSE_LIMIT) & (np.abs(db) < ENCLOSE_LIMIT) & (np.abs(r) < ENCLOSE_LIMIT // 2)
-          & (r != 0))
-    da = np.where(ok, da, 0)
-    db = np.where(ok, db, 0)
-    rr = np.where(ok, r, 1)
-    d2 = da * da + db * db
-    x = 4 * rr * rr - d2
-    ok &= (d2 > 0) & (x > 0)
-    d2 = np.where(ok, d2, 1)
-    x = np.where(ok, x, 1)
-    t = np.sqrt(x.astype(np.float64) / d2.astype(np.float64))
+    daf, dbf, rf = da.astype(np.float64), db.astype(np.float64), r.astype(np.float64)
+    d2 = daf * daf + dbf * dbf
+    s4 = 4.0 * rf * rf
+    x = s4 - d2
+    ex = (s4 + d2) * 2.0**-49
+    ok = (d2 > 0) & (x > 2 * ex)
+    d2 = np.where(ok, d2, 1.0)
+    x = np.where(ok, x, 1.0)
+    ex = np.where(ok, ex, 0.0)
+    t_lo = np.sqrt((x - ex) / d2 * (1 - _WIDE)) * (1 - _WIDE)
+    t_hi = np.sqrt((x + ex) / d2 * (1 + _WIDE)) * (1 + _WIDE)
     right = cw.astype(bool) != (r < 0)
-    sign = np.where(right, -1.0, 1.0)
-    va = sign * t * (-(db * m)).astype(np.float64)
-    vb = sign * t * (da * m).astype(np.float64)
-    wa = np.abs(va) * _REL + 1.0
-    wb = np.abs(vb) * _REL + 1.0
+    sign = np.where(right, -1, 1)
     ma, mb = (sa + ea) * m, (sb + eb) * m
-    a_lo = (ma + np.floor(va - wa).astype(np.int64)) // 2
-    a_hi = -((-(ma + np.ceil(va + wa).astype(np.int64))) // 2)
-    b_lo = (mb + np.floor(vb - wb).astype(np.int64)) // 2
-    b_hi = -((-(mb + np.ceil(vb + wb).astype(np.int64))) // 2)
+
+    def bounds(mid: np.ndarray, k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        kf = (k * m).astype(np.float64)
+        v1, v2 = t_lo * kf, t_hi * kf
+        lo, hi = np.minimum(v1, v2), np.maximum(v1, v2)
+        lo = np.floor(lo - np.abs(lo) * _REL - 1.0).astype(np.int64)
+        hi = np.ceil(hi + np.abs(hi) * _REL + 1.0).astype(np.int64)
+        return (mid + lo) // 2, -((-(mid + hi)) // 2)
+
+    a_lo, a_hi = bounds(ma, -sign * db)
+    b_lo, b_hi = bounds(mb, sign * da)
     return ok, a_lo, a_hi, b_lo, b_hi
 
 

@@ -249,6 +249,27 @@ def _constants(prover: ScreenedProver, z: SteppedZone, s: int) -> _ZoneConstants
     return got
 
 
+#: A chunk with R-format rows is screened at this scale at least (``10**-6`` mm): their boxes are rounded
+#: outwards to the scale, and a program written in whole millimetres (scale 0) would lose up to 1 mm.
+R_SCALE = 6
+
+
+def _refined(chunk: MotionChunk) -> MotionChunk:
+    """``chunk`` at :data:`R_SCALE` (its coordinates, centres, radii and tool lengths times a power of ten,
+    exact), or as it is when a value would reach ``2**59`` there."""
+    from dataclasses import replace
+
+    assert chunk.scale is not None and chunk.start is not None and chunk.end is not None \
+        and chunk.tool_length is not None
+    f = 10 ** (R_SCALE - chunk.scale)
+    cols = [c for c in (chunk.start, chunk.end, chunk.tool_length, chunk.centre, chunk.radius) if c is not None]
+    if max(int(np.abs(c).max(initial=0)) for c in cols) >= 2**59 // f:
+        return chunk
+    return replace(chunk, scale=R_SCALE, start=chunk.start * f, end=chunk.end * f, tool_length=chunk.tool_length * f,
+                   centre=None if chunk.centre is None else chunk.centre * f,
+                   radius=None if chunk.radius is None else chunk.radius * f)
+
+
 def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
     """Row indices the screen could not prove (to be decided exactly), in order.
 
@@ -258,6 +279,8 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
     n = len(chunk)
     if n == 0:
         return []
+    if chunk.radius is not None and chunk.scale is not None and chunk.scale < R_SCALE:
+        chunk = _refined(chunk)
     s = chunk.scale
     start, end, tl, kinds = chunk.start, chunk.end, chunk.tool_length, chunk.kind
     assert s is not None and start is not None and end is not None and tl is not None and kinds is not None, \
