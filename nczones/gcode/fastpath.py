@@ -678,6 +678,8 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
     else:
         for v in others:  # usually a few letters (H, T, P, ...): one comparison each instead of a table lookup
             bad[cl_line[c == v]] = True
+    if others.isdisjoint(b"R") and c.size and (c == _R).any():
+        _mark_r_with_other_g(c, cl_line, bad)
     # magic comments: rare; check by regex on lines with '('
     if op is not None:
         paren_lines = _distinct_sorted(line_of[op == 1])
@@ -688,6 +690,48 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
         for m in _COMMENT_IN_WORD.finditer(data):
             bad[line_of[m.start()]] = True
     return ~bad, starts, ends_, (c, cl_line)
+
+
+_R, _G, _DOT = ord("R"), ord("G"), ord(".")
+
+
+def _mark_r_with_other_g(c: np.ndarray, cl_line: np.ndarray, bad: np.ndarray) -> None:
+    """Mark not simple the lines holding an ``R`` word and a G code other than 0-3 (a canned cycle's R
+    level, G10, a rotation): the fast path would refuse them anyway, and a run that starts with such a line
+    (the first block of a drilling cycle) costs the full path more lines than the line itself.
+
+    >>> c = np.frombuffer(b"G81X1R2G2X1R3G02X1R1G0003R1G2.1R1", dtype=np.uint8)
+    >>> bad = np.zeros(5, dtype=bool)
+    >>> _mark_r_with_other_g(c, np.repeat(np.arange(5), [7, 6, 7, 7, 6]).astype(np.int32), bad)
+    >>> bad.tolist()
+    [True, False, False, False, True]
+    """
+    gp = np.flatnonzero(c == _G)
+    if gp.size == 0:
+        return
+    n = c.size
+
+    def at(k: int) -> np.ndarray:
+        i = gp + k
+        return np.where(i < n, c[np.minimum(i, n - 1)], 0)
+
+    # a G code of value 0..3: zeros, then at most one digit 0..3, then no digit and no point
+    small = np.zeros(gp.size, dtype=bool)
+    zeros = np.ones(gp.size, dtype=bool)  # the digits so far are all zeros
+    for k in range(1, 20):
+        b = at(k)
+        digit = (b >= 48) & (b <= 57)
+        end = ~digit & (b != _DOT)
+        small |= zeros & end & (k > 1)  # G0, G00: only zeros
+        nxt = at(k + 1)
+        small |= zeros & (b >= 49) & (b <= 51) & ~((nxt >= 48) & (nxt <= 57)) & (nxt != _DOT)
+        zeros &= b == 48
+        if not zeros.any():
+            break
+    other_g_lines = cl_line[gp[~small]]
+    if other_g_lines.size:
+        both = set(other_g_lines.tolist()).intersection(cl_line[c == _R].tolist())
+        bad[list(both)] = True
 
 
 #: A comment after a letter or a number and before a number: inside a word (the full path refuses it, GC101).

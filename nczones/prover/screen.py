@@ -279,6 +279,7 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
     n = len(chunk)
     if n == 0:
         return []
+    coarse = chunk
     if chunk.radius is not None and chunk.scale is not None and chunk.scale < R_SCALE:
         chunk = _refined(chunk)
     s = chunk.scale
@@ -303,6 +304,19 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
         arows = np.flatnonzero(is_arc)
         if chunk.centre is None or chunk.plane is None:
             ok[arows] = False
+        elif chunk is not coarse and chunk.radius is not None:
+            # refined for the R-format rows: the I/J rows are boxed at their own scale (their squares stay
+            # in int64 there), then scaled up exactly
+            assert coarse.start is not None and coarse.end is not None and coarse.scale is not None
+            rf = chunk.radius[arows] != 0
+            ij = arows[~rf]
+            if ij.size:
+                lo0, hi0 = np.minimum(coarse.start, coarse.end), np.maximum(coarse.start, coarse.end)
+                ok[ij] = arc_boxes(coarse, ij, lo0, hi0)
+                f = 10 ** (s - coarse.scale)
+                lo[ij], hi[ij] = lo0[ij] * f, hi0[ij] * f
+            if rf.any():
+                ok[arows[rf]] = arc_boxes(chunk, arows[rf], lo, hi)
         else:
             ok[arows] = arc_boxes(chunk, arows, lo, hi)
     axes = list(chunk.axes)

@@ -368,3 +368,24 @@ def test_verify_r_arc_program_over_512_motions(hashes, fanuc, monkeypatch):
     assert exact.verdict is r.verdict and [v.line for v in exact.violations] == expected
     safe = verify_text(text.replace("R-10", "R10"), m)
     assert safe.verdict is Verdict.SAFE
+
+
+def test_ij_rows_beside_r_rows_keep_their_own_scale():
+    # a whole-millimetre chunk (scale 0) holding an R row is screened at 1e-6 mm; its I/J arc of radius
+    # 5000 mm (5e9 units there: its square would leave int64) is boxed at scale 0 and scaled up, so both
+    # rows are proved by the screen against a 20 m box
+    ij = Segment(SegmentKind.ARC, (F(5000), F(0), F(0)), (F(0), F(5000), F(0)), AXES3, block=0, plane=Plane.XY,
+                 centre=(F(0), F(0)))
+    r = Segment(SegmentKind.ARC, (F(0), F(0), F(0)), (F(8), F(0), F(0)), AXES3, block=1, plane=Plane.XY,
+                clockwise=True, radius=F(5))
+    ch = rchunk([r, r], 0)
+    ch = MotionChunk(AXES3, 0, kind=ch.kind, start=np.array([[5000, 0, 0], [0, 0, 0]]),
+                     end=np.array([[0, 5000, 0], [8, 0, 0]]), line=ch.line, block=np.array([0, 1]),
+                     tool_length=ch.tool_length, centre=np.array([[0, 0], [0, 0]]), plane=ch.plane,
+                     clockwise=np.array([False, True]), turns=ch.turns, radius=np.array([0, 5]))
+    assert [s.centre for s in ch.segments()] == [ij.centre, None]
+    assert screen_chunk(ch, _prover(_machine("10000", "10000"))) == []
+    # the top of the R arc is Y = 2 exactly (centre (4, -3)): at 1.999999 it is flagged, and found unsafe
+    assert screen_chunk(ch, _prover(_machine("10000", "1.999999"))) == [0, 1]  # (the I/J arc reaches Y 5000)
+    got = verify_segments([ch], _machine("10000", "5000"))
+    assert got.verdict is Verdict.SAFE and got.profile["motions_screened_vectorized"] == 2
