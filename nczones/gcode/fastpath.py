@@ -715,6 +715,10 @@ def _mark_r_with_other_g(c: np.ndarray, cl_line: np.ndarray, bad: np.ndarray) ->
         i = gp + k
         return np.where(i < n, c[np.minimum(i, n - 1)], 0)
 
+    b1, b2 = at(1), at(2)  # the common G0 G1 G2 G3 first (one digit 0-3, then no digit and no point)
+    gp = gp[~((b1 >= 48) & (b1 <= 51) & ((b2 < 48) | (b2 > 57)) & (b2 != _DOT))]
+    if gp.size == 0:
+        return
     # a G code of value 0..3: zeros, then at most one digit 0..3, then no digit and no point
     small = np.zeros(gp.size, dtype=bool)
     zeros = np.ones(gp.size, dtype=bool)  # the digits so far are all zeros

@@ -80,7 +80,7 @@ def rarcs(draw, scale=3, block=0):
     r = h + draw(st.sampled_from([0, 1, 7, mag, 50 * mag, 10**6]))
     r = F(r, den) * (-1 if draw(st.integers(0, 3)) == 0 else 1)
     seg = Segment(SegmentKind.ARC, tuple(start), tuple(end), AXES3, block=block, plane=plane,
-                  clockwise=draw(st.booleans()), radius=r)
+                  clockwise=draw(st.booleans()), radius=r, turns=draw(st.sampled_from([0, 0, 0, 1])))  # P2: a lap more
     return seg  # (a square q gives a rational centre: still an R-format row in the columns)
 
 
@@ -248,6 +248,13 @@ def test_an_extreme_exactly_on_the_face_is_left_to_the_exact_path():
     seg = Segment(SegmentKind.ARC, (F(0), F(0), F(0)), (F(8), F(0), F(0)), AXES3, plane=Plane.XY,
                   clockwise=True, radius=F(5))
     m = _machine("1000", "2")
+    # a chord of exactly 2|R| given as an R-format segment (the interpreter gives it a centre): not enclosed,
+    # the exact path's (it is the half circle above the chord, up to Y = 4: safe below Y 5, unsafe below Y 3)
+    half = Segment(SegmentKind.ARC, (F(0), F(0), F(0)), (F(8), F(0), F(0)), AXES3, plane=Plane.XY,
+                   clockwise=True, radius=F(4))
+    assert screen_chunk(rchunk([half], 2), _prover(_machine("1000", "5"))) == [0]
+    assert verify_segments([rchunk([half], 2)], _machine("1000", "5")).verdict is Verdict.SAFE
+    assert verify_segments([rchunk([half], 2)], _machine("1000", "3")).verdict is Verdict.UNSAFE
     assert screen_chunk(rchunk([seg], 2), _prover(m)) == [0]  # the enclosure touches the face
     assert verify_segments([rchunk([seg], 2)], m).verdict is Verdict.SAFE
     r = verify_segments([rchunk([seg], 2)], _machine("1000", "1.99"))
