@@ -51,10 +51,10 @@ def fine_factor(scale: int, magnitude: int) -> int:
     >>> fine_factor(3, 200_000), fine_factor(9, 5), fine_factor(0, 2**40)
     (1000000, 1, 10000)
     """
-    k = max(0, 9 - scale)
-    while k > 0 and max(magnitude, 1) * 10**k >= 2**56:
+    k = max(0, 9 - int(scale))
+    while k > 0 and max(int(magnitude), 1) * 10**k >= 2**56:
         k -= 1
-    return 10**k
+    return int(10**k)
 
 
 def centre_enclosure(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, r: np.ndarray,
