@@ -396,3 +396,21 @@ def test_ij_rows_beside_r_rows_keep_their_own_scale():
     assert screen_chunk(ch, _prover(_machine("10000", "1.999999"))) == [0, 1]  # (the I/J arc reaches Y 5000)
     got = verify_segments([ch], _machine("10000", "5000"))
     assert got.verdict is Verdict.SAFE and got.profile["motions_screened_vectorized"] == 2
+
+
+def test_segment_columns_take_r_arcs_exactly():
+    # the full interpreter's segments (programs with '#'): R arcs go into the arc chunk with their signed R,
+    # and the chunk's rows read back as the same segments (centre None, the radius as written)
+    from nczones.prover.screen import segment_columns
+
+    segs = [Segment(SegmentKind.ARC, (F(0), F(0), F(0)), (F(2), F(0), F("-0.5")), AXES3, block=0, plane=Plane.XY,
+                    clockwise=True, radius=F("-2.125")),
+            Segment(SegmentKind.LINE, (F(2), F(0), F("-0.5")), (F(3), F(1), F(0)), AXES3, block=1),
+            Segment(SegmentKind.ARC, (F(3), F(1), F(0)), (F(1), F(1), F(0)), AXES3, block=2, plane=Plane.XY,
+                    centre=(F(2), F(1)))]
+    cols = segment_columns(segs, _prover(_machine("1000", "1000")))
+    arcs = [(c, rows) for c, rows in cols if c.radius is not None]
+    assert len(arcs) == 1 and arcs[0][1] == [0, 2]
+    back = list(arcs[0][0].segments())
+    assert [(s.centre, s.radius, s.start, s.end, s.clockwise) for s in back] == \
+        [(s.centre, s.radius, s.start, s.end, s.clockwise) for s in (segs[0], segs[2])]
