@@ -414,3 +414,39 @@ def test_segment_columns_take_r_arcs_exactly():
     back = list(arcs[0][0].segments())
     assert [(s.centre, s.radius, s.start, s.end, s.clockwise) for s in back] == \
         [(s.centre, s.radius, s.start, s.end, s.clockwise) for s in (segs[0], segs[2])]
+
+
+@pytest.mark.skipif(__import__("shutil").which("rs274") is None, reason="LinuxCNC's rs274 is not installed")
+@pytest.mark.parametrize("plane", [17, 18, 19])
+def test_fast_path_r_arcs_match_rs274(plane, tmp_path):
+    # rs274 -g prints every ARC_FEED with its centre (4 decimals): the fast path's R arcs (signed R, no centre)
+    # have the centre of the exact geometry within the log's rounding, their end points and directions match
+    # (tests/oracles/rs274.py compares the rest of the motion)
+    import math
+
+    from nczones.prover.geometry import arc_geom
+    from tests.tools.rs274_diff import machine_of, outcome, run_rs274
+
+    setup = (("X", "Y", "Z"), {}, {})
+    text = rarc_text(200, seed=40 + plane, plane=plane)
+    assert outcome(text, setup, tmp_path).status == "match"
+    moves, error, _log = run_rs274(text, setup, tmp_path)
+    assert error is None
+    run = interpret_text(text, machine_of(setup))
+    segs = [s for ch in run for s in ch.segments()]
+    assert run.fast_lines > 150
+    arcs = [s for s in segs if s.kind is SegmentKind.ARC]
+    logged = [m for m in moves if m.kind == "ARC"]
+    assert len(arcs) == len(logged) > 150
+    n_r = 0
+    for s, mv in zip(arcs, logged):
+        g = arc_geom(s)
+        if g.centre is None:
+            n_r += 1
+            (al, ah), (bl, bh) = g.centre_bounds(64)
+            centre = ((al + ah) / 2, (bl + bh) / 2)
+        else:
+            centre = g.centre
+        for c, x in zip(centre, mv.centre):
+            assert math.isclose(float(c), float(x), abs_tol=float(mv.tol) * 2 + 1e-9)
+    assert n_r > 100
