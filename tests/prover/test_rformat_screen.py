@@ -450,3 +450,64 @@ def test_fast_path_r_arcs_match_rs274(plane, tmp_path):
         for c, x in zip(centre, mv.centre):
             assert math.isclose(float(c), float(x), abs_tol=float(mv.tol) * 2 + 1e-9)
     assert n_r > 100
+
+
+@st.composite
+def plane_arcs(draw):
+    """R arcs in G17/G18/G19 at scale 2, some helical, among them 3-4-5 arcs (chord 8 along the plane's first
+    axis, |R| 5, G2: the top of the circle, 2 above the chord, on the arc) whose top is a candidate face."""
+    out, faces = [], {0: [], 1: [], 2: []}
+    for i in range(draw(st.integers(1, 4))):
+        plane = draw(st.sampled_from(list(Plane)))
+        ia, ib = PLANE_IDX[plane]
+        start = [F(draw(st.integers(-300, 300)), 100) for _ in range(3)]
+        end = list(start)
+        if draw(st.booleans()):
+            end[ia] += 8
+            r, cw = F(5), True
+            faces[ib].append(start[ib] + 2)
+        else:
+            da, db = F(draw(st.integers(-400, 400)), 100), F(draw(st.integers(-400, 400)), 100)
+            if da == db == 0:
+                da = F(1)
+            end[ia] += da
+            end[ib] += db
+            r = max(abs(da), abs(db)) + F(draw(st.integers(1, 500)), 100)
+            r, cw = (r if draw(st.integers(0, 2)) else -r), draw(st.booleans())
+        if draw(st.booleans()):
+            end[3 - ia - ib] += F(draw(st.integers(-200, 200)), 100)  # a helix
+        out.append(Segment(SegmentKind.ARC, tuple(start), tuple(end), AXES3, block=i, plane=plane, clockwise=cw,
+                           radius=r))
+    maxes = []
+    for k in range(3):
+        pick = faces[k] and draw(st.booleans())
+        maxes.append(draw(st.sampled_from(faces[k])) if pick else F(draw(st.integers(0, 900)), 100))
+    return out, maxes
+
+
+@settings(max_examples=6, deadline=None, derandomize=True)
+@given(plane_arcs())
+def test_screened_rformat_chunk_agrees_in_every_plane_and_on_helices(case):
+    _agrees_in_every_plane(case)
+
+
+@pytest.mark.long
+@settings(max_examples=200, deadline=None, derandomize=True)
+@given(plane_arcs())
+def test_screened_rformat_chunk_agrees_in_every_plane_and_on_helices_long(case):
+    _agrees_in_every_plane(case)
+
+
+def _agrees_in_every_plane(case):
+    from dataclasses import replace
+
+    from nczones.zones import AllowedSet, BoxZone
+
+    segs, maxes = case
+    base = _machine("1000", "1000")
+    m = replace(base, allowed=AllowedSet((BoxZone("travel", tuple((a, F(-1000), hi) for a, hi in zip(AXES3, maxes))),),
+                                         base.allowed.tool_axis))
+    a = verify_segments([rchunk(segs, 2)], m)
+    b = verify_segments(segs, m)  # the exact path, one by one
+    assert a.verdict == b.verdict
+    assert [v.block for v in a.violations] == [v.block for v in b.violations]
