@@ -35,6 +35,7 @@ modules are imported; their import time is printed on its own), for
 from __future__ import annotations
 
 import argparse
+import math
 import random
 import sys
 import tempfile
@@ -121,6 +122,39 @@ def expr_program(n: int, seed: int = 7) -> str:
         else:
             out.append(f"G1 X[#1 + {rnd.uniform(0, 100):.3f}] Y[#2 + {rnd.uniform(0, 100):.3f}]")
     out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def rarc_program(n: int, seed: int = 11, dialect: str = "linuxcnc") -> str:
+    """About ``n`` lines of R-format arcs as posts and hand programming write them: ``G2``/``G3`` with
+    ``X Y R`` (some modal, some with a negative R: the long way round), a ``G1`` line every 20th line.
+    Fanuc: every length with a decimal point, ``O``/``%`` framing."""
+    rnd = random.Random(seed)
+    if dialect == "fanuc":
+        out = ["%", "O1000 (R ARCS)", "G00 G17 G40 G49 G80 G90 G21", "G54 G00 X0. Y0.", "G01 F800."]
+    else:
+        out = ["G21 G90 G17 G54", "G0 X0 Y0", "G1 F800"]
+    x = y = 0.0
+    g = 2
+    while len(out) < n - (3 if dialect == "fanuc" else 1):
+        x1 = round(min(max(x + rnd.uniform(-5, 5), -200), 200), 3)
+        y1 = round(min(max(y + rnd.uniform(-5, 5), -200), 200), 3)
+        if len(out) % 20 == 0:
+            out.append(f"G1 X{x1:.3f} Y{y1:.3f}")
+            g = 0
+        else:
+            half = math.hypot(x1 - x, y1 - y) / 2
+            if half < 0.01:
+                continue
+            r = round(half * rnd.uniform(1.001, 4) + 0.001, 3)
+            if rnd.random() < 0.1:
+                r = -r
+            word = "" if g in (2, 3) and rnd.random() < 0.5 else f"G{rnd.choice((2, 3))} "
+            if word:
+                g = int(word[1])
+            out.append(f"{word}X{x1:.3f} Y{y1:.3f} R{r:.3f}")
+        x, y = x1, y1
+    out += ["M30", "%"] if dialect == "fanuc" else ["M30"]
     return "\n".join(out) + "\n"
 
 

@@ -1,7 +1,7 @@
 """nczones beside a peer interpreter (a script, not a test): CPU seconds on the same files, in one run.
 
     python bench/bench_peers.py [--lines 1000000] [--small 100000] [--corpus 10] [--macro 100000]
-                                [--timeout 300] [--skip-large] [--repeat 3]
+                                [--timeout 300] [--skip-large] [--repeat 3] [--only TEXT]
 
 Columns, every one the CPU seconds of its own process (user + system of the
 child, so start-up counts the same way for every tool), the least of ``--repeat`` runs (default 3: other
@@ -16,14 +16,16 @@ load on a shared machine only ever adds time):
 * **nczones interpret** — ``nczones.gcode.interpret`` over the whole program
   (text to motion, no proof);
 * **nczones verify** — the command line ``nczones verify`` end to end
-  (start-up, machine, interpretation, proof), against a large box.
+  (start-up, machine, interpretation, proof), against a large box; **verify MiB** is that process's
+  peak resident memory (``wait4``'s ``ru_maxrss`` of that child alone).
 
 The package's bytecode is compiled once before any timing (an installed package has it; without it,
 every process compiles the modules again where ``PYTHONDONTWRITEBYTECODE`` is set).
 
 Ratios are taken within the same run: ``verify / rs274`` where rs274 ran,
 and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
-``--small``), an expression on every line (``--small``), stellabee1.ngc with
+``--small``), an expression on every line (``--small``), R-format arcs (``--small`` lines of
+``G2``/``G3 X.. Y.. R..``, ``bench_gcode.rarc_program``; LinuxCNC, and Fanuc without an rs274 column), stellabee1.ngc with
 ``--arc-tolerance linuxcnc``, the corpus's ``--corpus`` largest LinuxCNC
 programs, and generated Fanuc Custom Macro B and LinuxCNC o-word loops of
 about ``--macro`` executed lines.
@@ -34,11 +36,12 @@ from __future__ import annotations
 import argparse
 import csv
 import os
-import resource
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
+import threading
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -86,19 +89,30 @@ print(n)
 REPEAT = [1]
 
 
+#: Peak resident memory (MiB) of the last command :func:`cpu_of` measured (its least-CPU run), None if stopped.
+LAST_RSS: list[float | None] = [None]
+
+
 def cpu_of(cmd: list[str], timeout: float, env: dict | None = None) -> tuple[float | None, int | None]:
     """CPU seconds (user + system) of a child process and its exit status, the least of :data:`REPEAT` runs
-    (a run that times out is not repeated); None on timeout."""
+    (a run that times out is not repeated); None on timeout.  The peak resident memory of that child alone
+    (``wait4``'s ``ru_maxrss``, not the largest of all children) is left in :data:`LAST_RSS`."""
     best, code = None, None
+    LAST_RSS[0] = None
     for _ in range(REPEAT[0]):
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+        timer = threading.Timer(timeout, proc.kill)
+        timer.start()
         try:
-            out = subprocess.run(cmd, capture_output=True, timeout=timeout, env=env)
-        except subprocess.TimeoutExpired:
+            _pid, status, usage = os.wait4(proc.pid, 0)
+        finally:
+            timer.cancel()
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        if proc.returncode == -signal.SIGKILL:
             return None, None
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-        best, code = cpu if best is None else min(best, cpu), out.returncode
+        cpu = usage.ru_utime + usage.ru_stime
+        if best is None or cpu < best:
+            best, code, LAST_RSS[0] = cpu, proc.returncode, usage.ru_maxrss / 1024
     return best, code
 
 
@@ -131,6 +145,8 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
         gen(f"G1, {a.lines:,} lines", bench_gcode.cam_program(a.lines))
     gen(f"G1, {a.small:,} lines", bench_gcode.cam_program(a.small))
     gen(f"an expression on every line, {a.small:,}", bench_gcode.expr_program(a.small))
+    gen(f"R-format arcs, {a.small:,} lines", bench_gcode.rarc_program(a.small))
+    gen(f"R-format arcs, Fanuc, {a.small:,} lines", bench_gcode.rarc_program(a.small, dialect="fanuc"), "fanuc")
     if STELLABEE.is_file():
         out.append(("stellabee1.ngc --arc-tolerance linuxcnc", STELLABEE, "linuxcnc", "linuxcnc"))
     manifest = CORPUS / "MANIFEST.tsv"
@@ -160,6 +176,7 @@ def main() -> None:
     ap.add_argument("--macro", type=int, default=100_000)
     ap.add_argument("--timeout", type=float, default=300.0)
     ap.add_argument("--skip-large", action="store_true", help="leave out the --lines program")
+    ap.add_argument("--only", help="only the rows whose name holds this text (e.g. 'R-format')")
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs of every command per row; the least CPU time is printed (the machine is shared)")
     a = ap.parse_args()
@@ -178,10 +195,12 @@ def main() -> None:
     print(f"CPU seconds per process, the least of {REPEAT[0]} run(s); ratio = nczones verify / peer, measured in "
           "this run")
     print(f"{'program':58} {'regex':>7} {'rs274':>7} {'interp':>7} {'verify':>7}  exit  rs274 exit  verify/rs274"
-          "  verify/regex  load")
+          "  verify/regex  verify MiB  load")
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
         for name, path, dialect, tol in programs(a, d):
+            if a.only and a.only not in name:
+                continue
             machine = d / f"box-{dialect}.toml"
             machine.write_text(BOX.format(dialect=dialect))
             regex, _ = cpu_of([sys.executable, "-c", REGEX_PASS, str(path)], a.timeout)
@@ -193,12 +212,13 @@ def main() -> None:
             if tol:
                 cmd += ["--arc-tolerance", tol]
             verify, code = cpu_of(cmd, a.timeout, env)
+            rss = LAST_RSS[0]
             r_peer = "" if peer is None or verify is None else f"{verify / peer:.2f}"
             r_regex = "" if regex is None or verify is None else f"{verify / regex:.2f}"
             print(f"{name[:58]:58} {fmt(regex):>7} {fmt(peer) if rs274 and dialect == 'linuxcnc' else 'n/a':>7} {fmt(interp):>7} "
                   f"{fmt(verify):>7}  {code if code is not None else '-':>4}  "
                   f"{peer_code if peer_code is not None else '-':>10}  {r_peer:>12}  {r_regex:>12}  "
-                  f"{os.getloadavg()[0]:4.1f}", flush=True)
+                  f"{'' if rss is None else f'{rss:.0f}':>10}  {os.getloadavg()[0]:4.1f}", flush=True)
 
 
 if __name__ == "__main__":

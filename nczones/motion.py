@@ -343,12 +343,15 @@ class MotionChunk:
       columns (``centre`` shape (n, 2), ``plane`` int8 17/18/19,
       ``clockwise`` bool, ``turns`` int32) are filled when any row is an arc
       (rows of other kinds hold zeros there).  Only segments whose numbers
-      are all exact decimals at that scale, whose arc centres are rational,
-      and that need no dependency tracking go into column chunks.
+      are all exact decimals at that scale, whose arc centres are rational
+      (or R-format arcs given by ``radius``, below), and that need no dependency tracking go into column chunks.
       Optional columns: ``dwell`` (``int64``, the dwell time in seconds
       times ``10**scale`` on DWELL rows, 0 elsewhere; when None, dwells have
       no time) and ``derived`` (object array of str, what produced each row,
-      such as ``"G81 retract"``; when None, every row is written motion).
+      such as ``"G81 retract"``; when None, every row is written motion) and ``radius`` (``int64``,
+      the signed R times ``10**scale`` on the rows of R-format arcs whose centre is not rational or
+      not computed, 0 elsewhere: such a row has ``centre`` 0 and stands for the segment with
+      ``centre=None`` and that ``radius``; when None, every arc row has its centre).
     * **objects** (``scale`` is None): ``objects`` holds the segments.
 
     ``segments()`` gives per-segment views in both forms, so consumers may
@@ -374,6 +377,7 @@ class MotionChunk:
     derived: np.ndarray | None = None
     #: the program frame every row was written in (a column run never changes offsets), see Segment.frame
     frame: ProgramFrame | None = None
+    radius: np.ndarray | None = None
 
     def __len__(self) -> int:
         if self.scale is None:
@@ -407,6 +411,8 @@ class MotionChunk:
                     centre=(Fraction(int(self.centre[i, 0]), den), Fraction(int(self.centre[i, 1]), den)),
                     turns=int(self.turns[i]),
                 )
+                if self.radius is not None and self.radius[i]:
+                    arc["centre"], arc["radius"] = None, Fraction(int(self.radius[i]), den)
             feed = None
             if self.feed is not None and kind in (SegmentKind.LINE, SegmentKind.ARC):
                 feed = Fraction(int(self.feed[i]), den)

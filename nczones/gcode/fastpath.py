@@ -678,6 +678,8 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
     else:
         for v in others:  # usually a few letters (H, T, P, ...): one comparison each instead of a table lookup
             bad[cl_line[c == v]] = True
+    if others.isdisjoint(b"R") and c.size and (c == _R).any():
+        _mark_r_with_other_g(c, cl_line, bad)
     # magic comments: rare; check by regex on lines with '('
     if op is not None:
         paren_lines = _distinct_sorted(line_of[op == 1])
@@ -690,6 +692,52 @@ def _classify(data: bytes, it: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
     return ~bad, starts, ends_, (c, cl_line)
 
 
+_R, _G, _DOT = ord("R"), ord("G"), ord(".")
+
+
+def _mark_r_with_other_g(c: np.ndarray, cl_line: np.ndarray, bad: np.ndarray) -> None:
+    """Mark not simple the lines holding an ``R`` word and a G code other than 0-3 (a canned cycle's R
+    level, G10, a rotation): the fast path would refuse them anyway, and a run that starts with such a line
+    (the first block of a drilling cycle) costs the full path more lines than the line itself.
+
+    >>> c = np.frombuffer(b"G81X1R2G2X1R3G02X1R1G0003R1G2.1R1", dtype=np.uint8)
+    >>> bad = np.zeros(5, dtype=bool)
+    >>> _mark_r_with_other_g(c, np.repeat(np.arange(5), [7, 6, 7, 7, 6]).astype(np.int32), bad)
+    >>> bad.tolist()
+    [True, False, False, False, True]
+    """
+    gp = np.flatnonzero(c == _G)
+    if gp.size == 0:
+        return
+    n = c.size
+
+    def at(k: int) -> np.ndarray:
+        i = gp + k
+        return np.where(i < n, c[np.minimum(i, n - 1)], 0)
+
+    b1, b2 = at(1), at(2)  # the common G0 G1 G2 G3 first (one digit 0-3, then no digit and no point)
+    gp = gp[~((b1 >= 48) & (b1 <= 51) & ((b2 < 48) | (b2 > 57)) & (b2 != _DOT))]
+    if gp.size == 0:
+        return
+    # a G code of value 0..3: zeros, then at most one digit 0..3, then no digit and no point
+    small = np.zeros(gp.size, dtype=bool)
+    zeros = np.ones(gp.size, dtype=bool)  # the digits so far are all zeros
+    for k in range(1, 20):
+        b = at(k)
+        digit = (b >= 48) & (b <= 57)
+        end = ~digit & (b != _DOT)
+        small |= zeros & end & (k > 1)  # G0, G00: only zeros
+        nxt = at(k + 1)
+        small |= zeros & (b >= 49) & (b <= 51) & ~((nxt >= 48) & (nxt <= 57)) & (nxt != _DOT)
+        zeros &= b == 48
+        if not zeros.any():
+            break
+    other_g_lines = cl_line[gp[~small]]
+    if other_g_lines.size:
+        both = set(other_g_lines.tolist()).intersection(cl_line[c == _R].tolist())
+        bad[list(both)] = True
+
+
 #: A comment after a letter or a number and before a number: inside a word (the full path refuses it, GC101).
 _COMMENT_IN_WORD = re.compile(rb"[0-9A-Za-z.][ \t]*(?:\([^()\n]*\)[ \t]*)+[0-9.+\-]")
 
@@ -700,7 +748,7 @@ def _allowed_bytes(allowed: np.ndarray) -> bytes:
 
 
 def _allowed_table(it: Any) -> np.ndarray:
-    letters = set(b"GIJKFNSM") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
+    letters = set(b"GIJKRFNSM") | {ord(a) for a in it.axes if a in "XYZABCUVW"}
     allowed = np.zeros(256, dtype=bool)
     for ch in letters | set(b"0123456789.+-"):
         allowed[ch] = True
@@ -933,6 +981,16 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     any_ijk = np.zeros(n, dtype=bool)
     for _col, pres in ijk.values():
         any_ijk |= pres
+    r_col = r_pres = None
+    rmask = wletter == ord("R")
+    if rmask.any():  # R-format arcs (the R word on a line that is no arc: the full path)
+        r_col = np.zeros(n, dtype=np.int64)
+        r_pres = np.zeros(n, dtype=bool)
+        r_col[rel[rmask]] = scaled(rmask)
+        r_pres[rel[rmask]] = True
+        if np.any(r_pres & any_ijk):
+            return None  # R and I/J/K in one arc: the full path refuses it
+        any_ijk = any_ijk | r_pres
     is_arc_line = (mode == 2) | (mode == 3)
     if np.any(any_ijk & ~is_arc_line):
         return None
@@ -989,7 +1047,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     kind = np.where(mode[rows] == 0, SegmentKind.RAPID, np.where(mode[rows] == 1, SegmentKind.LINE, SegmentKind.ARC)).astype(np.int8)
     st = start[rows]
     en = end[rows]
-    centre = plane_col = cw = turns = None
+    centre = plane_col = cw = turns = radius = None
     arcs = kind == SegmentKind.ARC
     if arcs.any():
         plane = it.plane
@@ -1004,26 +1062,51 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         arow = rows[arcs]
         ia_col = ijk.get(la, (np.zeros(n, np.int64), np.zeros(n, bool)))
         ib_col = ijk.get(lb, (np.zeros(n, np.int64), np.zeros(n, bool)))
-        if np.any(~(ia_col[1][arow] | ib_col[1][arow])):
-            return None  # R format or missing centre: full path
+        r_rows = None
+        if r_pres is not None and r_pres[arow].any():
+            assert r_col is not None
+            r_rows = r_pres[arow]
+            got = _r_arcs(start[arow[r_rows], ia], start[arow[r_rows], ib], end[arow[r_rows], ia],
+                          end[arow[r_rows], ib], r_col[arow[r_rows]])
+            if got is None:
+                return None
+            r_half, r_ca, r_cb = got
+        if np.any(~(ia_col[1][arow] | ib_col[1][arow] | (False if r_rows is None else r_rows))):
+            return None  # missing centre: full path
         if it.arc_absolute:
             ca = np.where(ia_col[1][arow], ia_col[0][arow] + off[ia], off[ia])
             cb = np.where(ib_col[1][arow], ib_col[0][arow] + off[ib], off[ib])
         else:
             ca = start[arow, ia] + ia_col[0][arow]
             cb = start[arow, ib] + ib_col[0][arow]
+        radius = None
+        if r_rows is not None:
+            ij = ~r_rows
+            ca, cb = ca[ij], cb[ij]
+        else:
+            ij = slice(None)
         # under LinuxCNC's rule the arcs LinuxCNC accepts (the interpreter's rule, decided the same way);
         # a run with an arc it refuses goes to the full interpreter, which reports it
         if getattr(it, "arc_rule", "fixed") == "linuxcnc":
-            if not _arcs_ok_linuxcnc(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb,
-                                     bool(inch), S):
+            if not _arcs_ok_linuxcnc(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia],
+                                     end[arow[ij], ib], ca, cb, bool(inch), S):
                 return None
-        elif not _arcs_ok(start[arow, ia], start[arow, ib], end[arow, ia], end[arow, ib], ca, cb,
+        elif not _arcs_ok(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia], end[arow[ij], ib], ca, cb,
                           it.arc_tolerance, S):
             return None
         centre = np.zeros((m, 2), dtype=np.int64)
-        centre[arcs, 0] = ca
-        centre[arcs, 1] = cb
+        if r_rows is None:
+            centre[arcs, 0] = ca
+            centre[arcs, 1] = cb
+        else:
+            at = np.flatnonzero(arcs)
+            centre[at[ij], 0] = ca
+            centre[at[ij], 1] = cb
+            centre[at[r_rows], 0] = r_ca
+            centre[at[r_rows], 1] = r_cb
+            radius = np.zeros(m, dtype=np.int64)
+            assert r_col is not None
+            radius[at[r_rows]] = np.where(r_half, 0, r_col[arow[r_rows]])
         plane_col = np.where(arcs, int(plane), 0).astype(np.int8)
         cw = arcs & (mode[rows] == 2)
         turns = np.zeros(m, dtype=np.int32)
@@ -1037,6 +1120,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         centre=centre, plane=plane_col, clockwise=cw, turns=turns,
         feed=(feed_line[rows] if it.feed_mode == 94 else None), file=interp.file,
         frame=it.program_frame(),  # a run of simple lines changes no offset, unit or transform
+        radius=radius if radius is not None and radius.any() else None,
     )
     # hand the state back to the interpreter
     den = 10**S
@@ -1091,6 +1175,44 @@ def _scaled_int(q: Fraction, S: int) -> int:
     if v.denominator != 1:
         raise ValueError("not representable")
     return int(v)
+
+
+#: Chord components and radii (scaled) of R-format arcs the fast path takes: squares stay in ``int64``.
+_R_LIMIT = 2**30
+
+
+def _r_arcs(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray,
+            r: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """R-format arcs as ``Interpreter.arc`` emits them: ``(half, ca, cb)`` where ``half`` marks the half
+    circles (chord exactly ``2|R|``: the chord's midpoint is their centre, ``ca``/``cb``), the other rows
+    keep their signed R (no centre); None when a row needs the full path: start equal to end (GC303, or
+    Fanuc's arc of no motion), R = 0 (GC304), a chord longer than ``2|R|`` (GC302, or a half circle within
+    the radius tolerance), a chord within the interpreter's relative ``_TINY`` of ``2|R|`` but not equal
+    (taken as a half circle there), a midpoint that is not on the scale, or numbers whose squares could
+    leave ``int64``.
+
+    The decision is exact: ``D = chord**2`` and ``4 R**2`` are exact integers; a row is a plain R arc when
+    ``D < 4 R**2 (1 - 10**-12)**2``, i.e. ``D * 10**24 < 4 R**2 (10**12 - 1)**2``, decided with a float
+    only where the two sides differ by far more than its rounding (``D / 4R**2 < 1 - 10**-9``), and with
+    Python integers on the few others.
+    """
+    da = ea - sa
+    db = eb - sb
+    if np.any((np.abs(da) >= _R_LIMIT) | (np.abs(db) >= _R_LIMIT) | (np.abs(r) >= _R_LIMIT) | (r == 0)):
+        return None
+    d2 = da * da + db * db
+    if np.any(d2 == 0):
+        return None
+    r4 = 4 * r * r
+    half = d2 == r4
+    near = ~half & (d2.astype(np.float64) / r4.astype(np.float64) >= 1 - 1e-9)
+    for k in np.flatnonzero(near).tolist():
+        if int(d2[k]) * 10**24 >= int(r4[k]) * (10**12 - 1) ** 2:
+            return None  # a half circle by the interpreter's tolerance, or too short an R
+    ma, mb = sa + ea, sb + eb
+    if np.any(half & (((ma | mb) & 1) != 0)):
+        return None  # a half circle whose centre is not on the scale
+    return half, np.where(half, ma // 2, 0), np.where(half, mb // 2, 0)
 
 
 def _arcs_ok(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca: np.ndarray, cb: np.ndarray,

@@ -1386,6 +1386,8 @@ def _chunk_rows(chunk: MotionChunk, rows: Iterable[int]) -> Iterator[Segment]:
             arc = dict(plane=Plane(int(chunk.plane[i])), clockwise=bool(chunk.clockwise[i]),
                        centre=(Fraction(int(chunk.centre[i, 0]), den), Fraction(int(chunk.centre[i, 1]), den)),
                        turns=int(chunk.turns[i]))
+            if chunk.radius is not None and chunk.radius[i]:  # an R-format arc: its centre is not in the columns
+                arc["centre"], arc["radius"] = None, Fraction(int(chunk.radius[i]), den)
         if chunk.derived is not None:  # canned-cycle rows name what produced them (reports)
             arc["derived"] = str(chunk.derived[i])
         yield Segment(kind, start, end, chunk.axes, int(chunk.block[i]), span,

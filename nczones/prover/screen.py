@@ -145,6 +145,7 @@ def arc_boxes(chunk: MotionChunk, rows: np.ndarray, lo: np.ndarray, hi: np.ndarr
     assert chunk.plane is not None and chunk.centre is not None and chunk.start is not None \
         and chunk.end is not None and chunk.turns is not None and chunk.clockwise is not None  # arcs, columns form
     planes = chunk.plane[rows]
+    rformat = None if chunk.radius is None else chunk.radius[rows] != 0
     for pv in sorted(set(planes.tolist())):  # (np.unique would import numpy.ma, ~10 ms)
         sel = planes == pv
         a_name, b_name, _ = PLANE_AXES[Plane(int(pv))]
@@ -152,6 +153,25 @@ def arc_boxes(chunk: MotionChunk, rows: np.ndarray, lo: np.ndarray, hi: np.ndarr
             ok[sel] = False
             continue
         ia, ib = axes.index(a_name), axes.index(b_name)
+        if rformat is not None and rformat.any():
+            rsel = sel & rformat
+            if rsel.any():  # R-format rows (no rational centre): the certified centre enclosure
+                assert chunk.scale is not None and chunk.radius is not None
+                from .rformat import rformat_boxes
+
+                r = rows[rsel]
+                sa, sb = chunk.start[r, ia], chunk.start[r, ib]
+                ea, eb = chunk.end[r, ia], chunk.end[r, ib]
+                got, lo_a, hi_a, lo_b, hi_b = rformat_boxes(sa, sb, ea, eb, chunk.radius[r],
+                                                             chunk.clockwise[r], chunk.turns[r], chunk.scale)
+                lo[r, ia] = np.minimum(lo_a, np.minimum(sa, ea))
+                hi[r, ia] = np.maximum(hi_a, np.maximum(sa, ea))
+                lo[r, ib] = np.minimum(lo_b, np.minimum(sb, eb))
+                hi[r, ib] = np.maximum(hi_b, np.maximum(sb, eb))
+                ok[rsel] = got
+            sel = sel & ~rformat
+            if not sel.any():
+                continue
         r = rows[sel]
         sa, sb = chunk.start[r, ia], chunk.start[r, ib]
         ea, eb = chunk.end[r, ia], chunk.end[r, ib]
@@ -229,6 +249,27 @@ def _constants(prover: ScreenedProver, z: SteppedZone, s: int) -> _ZoneConstants
     return got
 
 
+#: A chunk with R-format rows is screened at this scale at least (``10**-6`` mm): their boxes are rounded
+#: outwards to the scale, and a program written in whole millimetres (scale 0) would lose up to 1 mm.
+R_SCALE = 6
+
+
+def _refined(chunk: MotionChunk) -> MotionChunk:
+    """``chunk`` at :data:`R_SCALE` (its coordinates, centres, radii and tool lengths times a power of ten,
+    exact), or as it is when a value would reach ``2**59`` there."""
+    from dataclasses import replace
+
+    assert chunk.scale is not None and chunk.start is not None and chunk.end is not None \
+        and chunk.tool_length is not None
+    f = 10 ** (R_SCALE - chunk.scale)
+    cols = [c for c in (chunk.start, chunk.end, chunk.tool_length, chunk.centre, chunk.radius) if c is not None]
+    if max(int(np.abs(c).max(initial=0)) for c in cols) >= 2**59 // f:
+        return chunk
+    return replace(chunk, scale=R_SCALE, start=chunk.start * f, end=chunk.end * f, tool_length=chunk.tool_length * f,
+                   centre=None if chunk.centre is None else chunk.centre * f,
+                   radius=None if chunk.radius is None else chunk.radius * f)
+
+
 def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
     """Row indices the screen could not prove (to be decided exactly), in order.
 
@@ -238,6 +279,9 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
     n = len(chunk)
     if n == 0:
         return []
+    coarse = chunk
+    if chunk.radius is not None and chunk.scale is not None and chunk.scale < R_SCALE:
+        chunk = _refined(chunk)
     s = chunk.scale
     start, end, tl, kinds = chunk.start, chunk.end, chunk.tool_length, chunk.kind
     assert s is not None and start is not None and end is not None and tl is not None and kinds is not None, \
@@ -246,6 +290,7 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
         max(int(np.abs(start).max(initial=0)), int(np.abs(end).max(initial=0))) > _LIMIT
         or int(np.abs(tl).max(initial=0)) > _LIMIT
         or (chunk.centre is not None and int(np.abs(chunk.centre).max(initial=0)) > _LIMIT)
+        or (chunk.radius is not None and int(np.abs(chunk.radius).max(initial=0)) > _LIMIT)
     ):
         return list(range(n))
     lo = np.minimum(start, end)
@@ -259,6 +304,19 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
         arows = np.flatnonzero(is_arc)
         if chunk.centre is None or chunk.plane is None:
             ok[arows] = False
+        elif chunk is not coarse and chunk.radius is not None:
+            # refined for the R-format rows: the I/J rows are boxed at their own scale (their squares stay
+            # in int64 there), then scaled up exactly
+            assert coarse.start is not None and coarse.end is not None and coarse.scale is not None
+            rf = chunk.radius[arows] != 0
+            ij = arows[~rf]
+            if ij.size:
+                lo0, hi0 = np.minimum(coarse.start, coarse.end), np.maximum(coarse.start, coarse.end)
+                ok[ij] = arc_boxes(coarse, ij, lo0, hi0)
+                f = 10 ** (s - coarse.scale)
+                lo[ij], hi[ij] = lo0[ij] * f, hi0[ij] * f
+            if rf.any():
+                ok[arows[rf]] = arc_boxes(chunk, arows[rf], lo, hi)
         else:
             ok[arows] = arc_boxes(chunk, arows, lo, hi)
     axes = list(chunk.axes)
@@ -612,7 +670,8 @@ def _floor_scaled(n: np.ndarray, k: np.ndarray) -> np.ndarray:
 
 def _arc_columns(segments: Sequence[Segment], which: list[int],
                  prover: ScreenedProver) -> tuple[MotionChunk, list[int]] | None:
-    """The arcs among ``segments[which]`` whose numbers are decimals of at most MAX_SEGMENT_SCALE places, exact."""
+    """The arcs among ``segments[which]`` whose numbers are decimals of at most MAX_SEGMENT_SCALE places, exact
+    (R-format arcs without a rational centre by their ``radius`` column, :mod:`nczones.prover.rformat`)."""
     exp = _decimal_exponent
     limit = MAX_SEGMENT_SCALE
     taken: list[int] = []
@@ -620,7 +679,11 @@ def _arc_columns(segments: Sequence[Segment], which: list[int],
     for i in which:
         seg = segments[i]
         c = seg.centre
-        if c is None or seg.plane is None or not _screenable(seg, prover):
+        if c is None:
+            if seg.radius is None:
+                continue
+            c = (seg.radius, seg.radius)  # an R-format arc: its radius goes into the columns
+        if seg.plane is None or not _screenable(seg, prover):
             continue
         s = max(exp(seg.tool_length.denominator), exp(c[0].denominator), exp(c[1].denominator))
         for v in seg.start:
@@ -643,19 +706,25 @@ def _arc_columns(segments: Sequence[Segment], which: list[int],
     turns: list[int] = []
     blocks: list[int] = []
     lines: list[int] = []
+    radii: list[int] = []
 
     def scaled(v: Fraction) -> int:
         return v.numerator * (unit // v.denominator)
 
     for i in taken:
         seg = segments[i]
-        assert seg.centre is not None and seg.plane is not None  # taken above
+        assert seg.plane is not None  # taken above
         st = [scaled(v) for v in seg.start]
         en = [scaled(v) for v in seg.end]
         tl = scaled(seg.tool_length)
-        ctr = (scaled(seg.centre[0]), scaled(seg.centre[1]))
-        if max(abs(v) for v in (*st, *en, tl, *ctr)) >= bound:
+        if seg.centre is None:
+            assert seg.radius is not None  # taken above
+            ctr, rad = (0, 0), scaled(seg.radius)
+        else:
+            ctr, rad = (scaled(seg.centre[0]), scaled(seg.centre[1])), 0
+        if max(abs(v) for v in (*st, *en, tl, *ctr, rad)) >= bound:
             continue
+        radii.append(rad)
         rows.append(i)
         starts.append(st)
         ends.append(en)
@@ -677,5 +746,6 @@ def _arc_columns(segments: Sequence[Segment], which: list[int],
         tool_length=np.array(tls, dtype=np.int64), centre=np.array(centres, dtype=np.int64).reshape(m, 2),
         plane=np.array(planes, dtype=np.int8), clockwise=np.array(cws, dtype=bool),
         turns=np.array(turns, dtype=np.int32),
+        radius=np.array(radii, dtype=np.int64) if any(radii) else None,
     )
     return chunk, rows
