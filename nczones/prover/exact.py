@@ -270,6 +270,7 @@ def _stepped_violation(zone: SteppedZone, ln: _Line, d: Fraction) -> list[Interv
                 parts.append(_intersect(touch, ln.gt(lim, reg.max - d)))
         return _union(parts)
 
+
 @LINE_VIOLATION.register(PolygonZone)
 def _polygon_violation(zone: PolygonZone, ln: _Line, d: Fraction) -> list[Interval]:
     """A polygon is a prism: its plane part (:func:`nczones.prover.polygon.plane_violation`) times the
