@@ -114,7 +114,8 @@ class Coverage:
 
 def coverage(kinds: tuple[type, ...] = ZONE_KINDS, tables: list[KindTable[Any]] | None = None) -> Coverage:
     """Cross ``kinds`` with ``tables`` (default: every table made so far)."""
-    missing, fallback = [], []
+    missing: list[tuple[str, str]] = []
+    fallback: list[tuple[str, str]] = []
     for table in TABLES if tables is None else tables:
         for kind in table.missing(kinds):
             (fallback if table.has_fallback else missing).append((table.name, kind.__name__))
