@@ -30,7 +30,8 @@ from . import __version__
 from .errors import Diagnostic, InputError, InvalidArgument, NczonesError
 from .exact import format_decimal
 from .machine import Machine, load_machine
-from .zones import PolygonZone, SteppedZone
+from .zones import BoxZone, PolygonZone, SteppedZone, Zone
+from .zones.kinds import KindTable
 
 if TYPE_CHECKING:
     from .gcode.source import ProgramSource
@@ -108,6 +109,39 @@ def _bound(value: Fraction | None) -> str:
     return "unbounded" if value is None else format_decimal(value)
 
 
+def _zone_lines(z: Zone, role: str, tip: str, extra: str = "") -> list[str]:
+    ranges = ", ".join(f"{a} [{_bound(lo)}, {_bound(hi)}]" for a, (lo, hi) in z.bounds().items())
+    return [f"    {z.name}: {role} {z.kind}{tip}{extra} {ranges}"]
+
+
+#: The lines of ``check-machine`` that describe one zone (``role`` "allow"/"forbid", ``tip`` " (tool tip)" or
+#: ""), per zone kind.  Fallback: its kind and bounds.
+ZONE_LINES: KindTable[Callable[[Any, str, str], list[str]]] = KindTable("cli.zone_lines", fallback=_zone_lines)
+ZONE_LINES.set(BoxZone, _zone_lines)
+
+
+@ZONE_LINES.register(PolygonZone)
+def _polygon_lines(z: PolygonZone, role: str, tip: str) -> list[str]:
+    return _zone_lines(z, role, tip, f" in {z.plane[0]}{z.plane[1]} with {len(z.vertices)} vertices")
+
+
+@ZONE_LINES.register(SteppedZone)
+def _stepped_lines(z: SteppedZone, role: str, tip: str) -> list[str]:
+    lines = [
+        f"    {z.name}: {role} stepped table{tip}, {z.limited_axis} limited by "
+        f"{z.reference_axis}, {len(z.regions)} regions from {format_decimal(z.start)}"
+    ]
+    lower = z.start
+    for i, r in enumerate(z.regions):
+        bracket = "[" if i == 0 else "("
+        lines.append(
+            f"      region {i + 1}: {z.reference_axis} {bracket}{format_decimal(lower)}, "
+            f"{format_decimal(r.upto)}] -> {z.limited_axis} [{_bound(r.min)}, {_bound(r.max)}]"
+        )
+        lower = r.upto
+    return lines
+
+
 def describe_machine(machine: Machine) -> str:
     """A readable summary of a machine (what ``check-machine`` prints).
 
@@ -181,23 +215,7 @@ def describe_machine(machine: Machine) -> str:
     for z in machine.zones:
         role = "forbid" if z.forbid else "allow"
         tip = " (tool tip)" if z.point.value == "tip" else ""
-        if isinstance(z, SteppedZone):
-            lines.append(
-                f"    {z.name}: {role} stepped table{tip}, {z.limited_axis} limited by "
-                f"{z.reference_axis}, {len(z.regions)} regions from {format_decimal(z.start)}"
-            )
-            lower = z.start
-            for i, r in enumerate(z.regions):
-                bracket = "[" if i == 0 else "("
-                lines.append(
-                    f"      region {i + 1}: {z.reference_axis} {bracket}{format_decimal(lower)}, "
-                    f"{format_decimal(r.upto)}] -> {z.limited_axis} [{_bound(r.min)}, {_bound(r.max)}]"
-                )
-                lower = r.upto
-        else:
-            ranges = ", ".join(f"{a} [{_bound(lo)}, {_bound(hi)}]" for a, (lo, hi) in z.bounds().items())
-            extra = f" in {z.plane[0]}{z.plane[1]} with {len(z.vertices)} vertices" if isinstance(z, PolygonZone) else ""
-            lines.append(f"    {z.name}: {role} {z.kind}{tip}{extra} {ranges}")
+        lines += ZONE_LINES(z, role, tip)
     bbox = machine.allowed.bounding_box()
     if bbox:
         lines.append(

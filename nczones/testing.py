@@ -23,7 +23,7 @@ wrong.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from fractions import Fraction
 from typing import Any, cast
 
@@ -37,7 +37,8 @@ except ModuleNotFoundError as exc:  # a plain install: the strategies need the [
 
 from .exact import format_decimal
 from .machine import Machine, parse_machine
-from .zones import PolygonZone, Region, SteppedZone
+from .zones import BoxZone, PolygonZone, Region, SteppedZone, Zone
+from .zones.kinds import KindTable
 
 __all__ = [
     "decimals",
@@ -400,20 +401,38 @@ def boundary_values(machine: Machine, axis: str) -> tuple[Fraction, ...]:
     """
     values: set[Fraction] = set()
     for z in machine.zones:
-        if isinstance(z, SteppedZone):
-            if axis == z.reference_axis:
-                values.add(z.start)
-                values.update(z.uptos)
-            if axis == z.limited_axis:
-                values.update(v for r in z.regions for v in (r.min, r.max) if v is not None)
-        else:
-            if isinstance(z, PolygonZone) and axis in z.plane:
-                k = z.plane.index(axis)
-                values.update(v[k] for v in z.vertices)
-            for a, (lo, hi) in z.bounds().items():
-                if a == axis:
-                    values.update(v for v in (lo, hi) if v is not None)
+        values.update(BOUNDARY_VALUES(z, axis))
     return tuple(sorted(values))
+
+
+def _bounds_values(z: Zone, axis: str) -> list[Fraction]:
+    return [v for a, (lo, hi) in z.bounds().items() if a == axis for v in (lo, hi) if v is not None]
+
+
+#: The zone's boundary values on one axis (:func:`boundary_values`), per zone kind.  Fallback: its bounds.
+BOUNDARY_VALUES: KindTable[Callable[[Any, str], list[Fraction]]] = KindTable(
+    "testing.boundary_values", fallback=_bounds_values)
+BOUNDARY_VALUES.set(BoxZone, _bounds_values)
+
+
+@BOUNDARY_VALUES.register(SteppedZone)
+def _stepped_values(z: SteppedZone, axis: str) -> list[Fraction]:
+    values: list[Fraction] = []
+    if axis == z.reference_axis:
+        values.append(z.start)
+        values += z.uptos
+    if axis == z.limited_axis:
+        values += [v for r in z.regions for v in (r.min, r.max) if v is not None]
+    return values
+
+
+@BOUNDARY_VALUES.register(PolygonZone)
+def _polygon_values(z: PolygonZone, axis: str) -> list[Fraction]:
+    values: list[Fraction] = []
+    if axis in z.plane:
+        k = z.plane.index(axis)
+        values += [v[k] for v in z.vertices]
+    return values + _bounds_values(z, axis)
 
 
 @st.composite

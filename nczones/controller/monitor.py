@@ -31,11 +31,13 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
 from ..machine import Machine
-from ..zones import BoxZone, SteppedZone, Zone, ZonePoint
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones.kinds import KindTable
 
 __all__ = ["LimitMonitor", "CompiledCheck", "MonitorStats"]
 
@@ -127,13 +129,7 @@ class LimitMonitor:
         out = []
         for z in allowed.zones:
             q = allowed.seen_by(z, p, tool_length)
-            if isinstance(z, SteppedZone) and not z.forbid:
-                bad = not self._stepped_allows(z, q)
-            elif z.forbid:
-                bad = z.interior_contains(q)
-            else:
-                bad = not z.contains(q)
-            if bad:
+            if POINT_VIOLATES(z, self, q):
                 out.append(z.name)
         return tuple(out)
 
@@ -161,55 +157,93 @@ class LimitMonitor:
         return tool_length if tip else Fraction(0)
 
     def _compile_zone(self, z: Zone, tl: Fraction) -> Callable[[np.ndarray], np.ndarray] | None:
-        if isinstance(z, BoxZone):
-            cols, los, his = [], [], []
-            for axis, lo, hi in z.limits:
-                k = self.index[axis]
-                u, s = self.pulse[k], self._shift(z, axis, tl)
-                if z.forbid:  # open interior: lo < p*u - s < hi
-                    lo_i = -_BIG if lo is None else math.floor((lo + s) / u) + 1
-                    hi_i = _BIG if hi is None else math.ceil((hi + s) / u) - 1
-                else:
-                    lo_i = -_BIG if lo is None else math.ceil((lo + s) / u)
-                    hi_i = _BIG if hi is None else math.floor((hi + s) / u)
-                cols.append(k)
-                los.append(lo_i)
-                his.append(hi_i)
-            cols_a = np.array(cols, dtype=np.intp)
-            lo_a = np.array(los, dtype=np.int64)
-            hi_a = np.array(his, dtype=np.int64)
-            if z.forbid:
-                def test(pos, c=cols_a, lo=lo_a, hi=hi_a):
-                    sub = pos[:, c]
-                    return np.all((sub >= lo) & (sub <= hi), axis=1)
-            else:
-                def test(pos, c=cols_a, lo=lo_a, hi=hi_a):
-                    sub = pos[:, c]
-                    return np.any((sub < lo) | (sub > hi), axis=1)
-            return test
-        if isinstance(z, SteppedZone) and not z.forbid:
-            kr, kl = self.index[z.reference_axis], self.index[z.limited_axis]
-            ur, ul = self.pulse[kr], self.pulse[kl]
-            sr, sl = self._shift(z, z.reference_axis, tl), self._shift(z, z.limited_axis, tl)
-            start = math.ceil((z.start + sr) / ur)
-            bounds = np.array([math.floor((r.upto + sr) / ur) for r in z.regions], dtype=np.int64)
-            lows = np.array([-_BIG if r.min is None else math.ceil((r.min + sl) / ul) for r in z.regions],
-                            dtype=np.int64)
-            highs = np.array([_BIG if r.max is None else math.floor((r.max + sl) / ul) for r in z.regions],
-                             dtype=np.int64)
-            n = len(z.regions)
+        return COMPILED(z, self, tl)
 
-            def test_stepped(pos, kr=kr, kl=kl, start=start, bounds=bounds, lo=lows, hi=highs, n=n):
-                r = pos[:, kr]
-                v = pos[:, kl]
-                if len(r):  # one row of the table for every position (searchsorted is monotone): no lookup each
-                    r_lo, r_hi = int(r.min()), int(r.max())
-                    row, row_hi = np.searchsorted(bounds, (r_lo, r_hi), side="left").tolist()
-                    if row == row_hi and row < n and r_lo >= start:
-                        return (v < lo[row]) | (v > hi[row])
-                idx = np.searchsorted(bounds, r, side="left")
-                outside = (r < start) | (idx >= n)
-                idx = np.minimum(idx, n - 1)
-                return outside | (v < lo[idx]) | (v > hi[idx])
-            return test_stepped
+
+def _violates(z: Zone, monitor: LimitMonitor, q: Mapping[str, Fraction]) -> bool:
+    return z.interior_contains(q) if z.forbid else not z.contains(q)
+
+
+#: Does the position ``q`` (in mm, as the zone sees it) violate the zone, by the controller's own test, per zone
+#: kind?  Fallback: the zone's membership (forbidden: its interior; allowed: the closed set).
+POINT_VIOLATES: KindTable[Callable[[Any, LimitMonitor, Mapping[str, Fraction]], bool]] = KindTable(
+    "controller.monitor.point_violates", fallback=_violates)
+POINT_VIOLATES.set(BoxZone, _violates)
+POINT_VIOLATES.set(PolygonZone, _violates)
+
+
+@POINT_VIOLATES.register(SteppedZone)
+def _stepped_violates(z: SteppedZone, monitor: LimitMonitor, q: Mapping[str, Fraction]) -> bool:
+    if z.forbid:
+        return z.interior_contains(q)
+    return not monitor._stepped_allows(z, q)  # the lookup the controller does, counted
+
+
+def _not_compiled(z: Zone, monitor: LimitMonitor, tl: Fraction) -> None:
+    return None
+
+
+#: The vectorized test of one zone for one tool length (pulse positions -> violates), per zone kind; None:
+#: the zone has none (then the monitor checks point by point).  Fallback: none.
+COMPILED: KindTable[Callable[[Any, LimitMonitor, Fraction], Callable[[np.ndarray], np.ndarray] | None]] = KindTable(
+    "controller.monitor.compiled", fallback=_not_compiled)
+COMPILED.set(PolygonZone, _not_compiled)
+
+
+@COMPILED.register(BoxZone)
+def _box_compiled(z: BoxZone, monitor: LimitMonitor, tl: Fraction) -> Callable[[np.ndarray], np.ndarray] | None:
+    cols, los, his = [], [], []
+    for axis, lo, hi in z.limits:
+        k = monitor.index[axis]
+        u, s = monitor.pulse[k], monitor._shift(z, axis, tl)
+        if z.forbid:  # open interior: lo < p*u - s < hi
+            lo_i = -_BIG if lo is None else math.floor((lo + s) / u) + 1
+            hi_i = _BIG if hi is None else math.ceil((hi + s) / u) - 1
+        else:
+            lo_i = -_BIG if lo is None else math.ceil((lo + s) / u)
+            hi_i = _BIG if hi is None else math.floor((hi + s) / u)
+        cols.append(k)
+        los.append(lo_i)
+        his.append(hi_i)
+    cols_a = np.array(cols, dtype=np.intp)
+    lo_a = np.array(los, dtype=np.int64)
+    hi_a = np.array(his, dtype=np.int64)
+    if z.forbid:
+        def test(pos, c=cols_a, lo=lo_a, hi=hi_a):
+            sub = pos[:, c]
+            return np.all((sub >= lo) & (sub <= hi), axis=1)
+    else:
+        def test(pos, c=cols_a, lo=lo_a, hi=hi_a):
+            sub = pos[:, c]
+            return np.any((sub < lo) | (sub > hi), axis=1)
+    return test
+
+
+@COMPILED.register(SteppedZone)
+def _stepped_compiled(z: SteppedZone, monitor: LimitMonitor, tl: Fraction) -> Callable[[np.ndarray], np.ndarray] | None:
+    if z.forbid:
         return None
+    kr, kl = monitor.index[z.reference_axis], monitor.index[z.limited_axis]
+    ur, ul = monitor.pulse[kr], monitor.pulse[kl]
+    sr, sl = monitor._shift(z, z.reference_axis, tl), monitor._shift(z, z.limited_axis, tl)
+    start = math.ceil((z.start + sr) / ur)
+    bounds = np.array([math.floor((r.upto + sr) / ur) for r in z.regions], dtype=np.int64)
+    lows = np.array([-_BIG if r.min is None else math.ceil((r.min + sl) / ul) for r in z.regions],
+                    dtype=np.int64)
+    highs = np.array([_BIG if r.max is None else math.floor((r.max + sl) / ul) for r in z.regions],
+                     dtype=np.int64)
+    n = len(z.regions)
+
+    def test_stepped(pos, kr=kr, kl=kl, start=start, bounds=bounds, lo=lows, hi=highs, n=n):
+        r = pos[:, kr]
+        v = pos[:, kl]
+        if len(r):  # one row of the table for every position (searchsorted is monotone): no lookup each
+            r_lo, r_hi = int(r.min()), int(r.max())
+            row, row_hi = np.searchsorted(bounds, (r_lo, r_hi), side="left").tolist()
+            if row == row_hi and row < n and r_lo >= start:
+                return (v < lo[row]) | (v > hi[row])
+        idx = np.searchsorted(bounds, r, side="left")
+        outside = (r < start) | (idx >= n)
+        idx = np.minimum(idx, n - 1)
+        return outside | (v < lo[idx]) | (v > hi[idx])
+    return test_stepped

@@ -17,13 +17,16 @@ one), a bound beyond the control's range.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 from ..errors import Diagnostic, InvalidArgument, Severity
 from ..exact import decimal_places, format_decimal
 from ..machine import Machine
-from ..zones import BoxZone, ZonePoint
+from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
+from ..zones.kinds import KindTable
 from .model import INCH
 
 __all__ = ["EXPORT_KINDS", "ExportResult", "export_zones"]
@@ -71,6 +74,16 @@ def _round(q: Fraction, step: Fraction, up: bool) -> Fraction:
     return k * step
 
 
+#: The zone as the box a control's limits hold, or (a string) what it is when the control has no equivalent
+#: ("a polygon": an allowed one is written as its bounding box, a forbidden one is left out), per zone kind.
+#: Fallback: no equivalent.
+CONTROL_BOX: KindTable[Callable[[Any], BoxZone | str]] = KindTable(
+    "imports.export.control_box", fallback=lambda z: f"a {z.kind} zone")
+CONTROL_BOX.set(BoxZone, lambda z: z)
+CONTROL_BOX.set(SteppedZone, lambda z: "a stepped limit-value table")
+CONTROL_BOX.set(PolygonZone, lambda z: "a polygon")
+
+
 def _held_zones(machine: Machine, notes: _Notes, forbid_slots: int) -> tuple[Bounds, list[BoxZone]]:
     """The allowed box (intersection of the allow boxes) and the forbid boxes the control can take."""
     box: Bounds = {}
@@ -81,8 +94,9 @@ def _held_zones(machine: Machine, notes: _Notes, forbid_slots: int) -> tuple[Bou
             notes.add("EX101", f"{where}: a tool-tip zone; the control's limits see the machine position only, so it "
                       "is left out (the control allows more than the machine file)")
             continue
-        if not isinstance(z, BoxZone):
-            what = "a stepped limit-value table" if z.kind == "stepped" else "a polygon"
+        held = CONTROL_BOX(z)
+        if isinstance(held, str):
+            what = held
             if not z.forbid:
                 bounds = ", ".join(f"{a} [{_b(lo)}, {_b(hi)}]" for a, (lo, hi) in z.bounds().items())
                 notes.add("EX101", f"{where}: {what} has no equivalent on this control; its bounding box "
@@ -93,11 +107,11 @@ def _held_zones(machine: Machine, notes: _Notes, forbid_slots: int) -> tuple[Bou
                 notes.add("EX101", f"{where}: a forbidden {what[2:]} has no equivalent on this control; left out "
                           "(the control allows more than the machine file)")
             continue
-        if not z.forbid:
-            for a, lo, hi in z.limits:
+        if not held.forbid:
+            for a, lo, hi in held.limits:
                 _narrow(box, a, lo, hi)
         elif len(forbids) < forbid_slots:
-            forbids.append(z)
+            forbids.append(held)
         else:
             why = ("LinuxCNC's soft limits hold no forbidden area" if forbid_slots == 0
                    else "a Fanuc control holds two forbidden boxes (stored stroke checks 2 and 3)")

@@ -34,14 +34,15 @@ the exact point and certainly violates); a failed re-check raises
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError, InvalidArgument
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import PolygonZone, SteppedZone, Zone, ZonePoint, tip_offset, tip_shifted
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint, tip_offset, tip_shifted
+from ..zones.kinds import KindTable
 from . import exact as ex
 from .exact import box_fits
 from .geometry import (
@@ -59,7 +60,7 @@ from .geometry import (
     sqrt_bounds,
 )
 from .result import Outcome, ParamRange, Reason, Result, Verdict, Violation, reason_code
-from .smt import Solver, add, mul, or_all, q, sub, zone_violation
+from .smt import REFERENCE_AXIS, Solver, add, mul, or_all, q, sub, zone_violation
 
 if TYPE_CHECKING:
     from .limits import RunLimits
@@ -81,6 +82,21 @@ SEGMENT_BATCH = 1024
 SCREEN_MIN_SEGMENTS = 512
 #: Kinds the straight-piece path decides (a dwell is a point).
 _LINE_LIKE = frozenset({SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL})
+
+#: Does the arcs' enclosure route (prover/arcs.py, taken when every zone says yes) decide arcs against this
+#: zone?  Not against an allowed polygon.  Fallback: no (arcs go to the SMT tier).
+ARC_ENCLOSURES: KindTable[Callable[[Any], bool]] = KindTable("prover.core.arc_enclosures", fallback=lambda z: False)
+ARC_ENCLOSURES.set(BoxZone, lambda z: True)
+ARC_ENCLOSURES.set(SteppedZone, lambda z: True)
+ARC_ENCLOSURES.set(PolygonZone, lambda z: z.forbid)
+
+#: Does Z3 re-check the exact tier's violation of this zone (for its witness parameter)?  Not a polygon's:
+#: its encoding grows with the vertices (seconds for a thousand); the exact tier's witness stands, re-checked
+#: by the zone's own membership test.  Fallback: yes.
+Z3_CONFIRMS: KindTable[bool] = KindTable("prover.core.z3_confirms", fallback=True)
+Z3_CONFIRMS.set(BoxZone, True)
+Z3_CONFIRMS.set(SteppedZone, True)
+Z3_CONFIRMS.set(PolygonZone, False)
 
 
 class Prover:
@@ -110,7 +126,7 @@ class Prover:
         self.prange = {p.name: p for p in self.params}
         self.all_decidable = all(ex.decidable(z) for z in self.zones)
         #: box_fits can prove a box inside every zone (no allow polygon)
-        self.boxable = not any(isinstance(z, PolygonZone) and not z.forbid for z in self.zones)
+        self.boxable = all(ARC_ENCLOSURES.of(z)(z) for z in self.zones)
         self.has_tip_zones = any(z.point is ZonePoint.TIP for z in self.zones)
         self._tip_provers: dict[tuple, Prover] = {}
 
@@ -235,9 +251,10 @@ class Prover:
             if z.point is ZonePoint.TIP and self.tool_axis in seen:
                 seen[self.tool_axis] = sub(seen[self.tool_axis], tool_len)
             ref = None
-            if isinstance(z, SteppedZone):
-                lo, hi = enclosure[z.reference_axis]
-                if z.point is ZonePoint.TIP and z.reference_axis == self.tool_axis:
+            ref_axis = REFERENCE_AXIS(z)
+            if ref_axis is not None:
+                lo, hi = enclosure[ref_axis]
+                if z.point is ZonePoint.TIP and ref_axis == self.tool_axis:
                     ref = None
                 else:
                     ref = (lo - self.margin, hi + self.margin)
@@ -665,8 +682,8 @@ class Prover:
                 t_model = None
                 # a polygon's witness is the exact tier's, re-checked by the zone's own membership test
                 # (the solver's polygon encoding grows with the vertices: seconds for a thousand)
-                if (self.limits is None or not self.limits.budget_spent()) and not any(
-                        isinstance(z, PolygonZone) for z, _ in found):
+                if (self.limits is None or not self.limits.budget_spent()) and all(
+                        Z3_CONFIRMS.of(z) for z, _ in found):
                     body, names = self._line_query(seg, piece, False)
                     ans = self.solver.check(body, names)
                     if ans.status == "unsat":

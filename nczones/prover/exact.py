@@ -24,13 +24,14 @@ irrational paths.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 from ..exact import max_bound, min_bound
 from ..zones import AllowedSet, BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones.kinds import KindTable
 
 __all__ = [
     "ParamRange",
@@ -142,8 +143,9 @@ class _Line:
 
 
 def decidable(zone: Zone) -> bool:
-    """Zones :func:`line_violation` decides: all of them (boxes, stepped tables, polygons)."""
-    return isinstance(zone, (BoxZone, SteppedZone, PolygonZone))
+    """Zones :func:`line_violation` decides: the kinds of :data:`LINE_VIOLATION` (boxes, stepped tables,
+    polygons)."""
+    return type(zone) in LINE_VIOLATION.kinds
 
 
 def _all(parts: Iterable[ParamRange | None]) -> ParamRange | None:
@@ -192,9 +194,16 @@ def line_violation(
     >>> line_violation(notch, (F(5), F(6)), (F(25), F(2)), ("X", "Y"))
     [ParamRange(lo=Fraction(3, 4), hi=Fraction(1, 1), lo_closed=False, hi_closed=True)]
     """
-    d = margin
-    ln = _Line(p0, p1, axes, zone, tool_length, tool_axis)
-    if isinstance(zone, BoxZone):
+    return LINE_VIOLATION(zone, _Line(p0, p1, axes, zone, tool_length, tool_axis), margin)
+
+
+#: The exact set of ``t`` whose margin box violates the zone along a straight piece, per zone kind: the kinds
+#: with an entry are :func:`decidable` (the others go to the SMT tier).
+LINE_VIOLATION: KindTable[Callable[[Any, _Line, Fraction], list[ParamRange]]] = KindTable("prover.exact.line_violation")
+
+
+@LINE_VIOLATION.register(BoxZone)
+def _box_violation(zone: BoxZone, ln: _Line, d: Fraction) -> list[ParamRange]:
         if zone.forbid:
             if _flat(zone.limits):
                 return []  # no interior, nothing forbidden, whatever the margin
@@ -212,7 +221,10 @@ def line_violation(
             if hi is not None:
                 parts.append(ln.gt(axis, hi - d))
         return _union(parts)
-    if isinstance(zone, SteppedZone):
+
+
+@LINE_VIOLATION.register(SteppedZone)
+def _stepped_violation(zone: SteppedZone, ln: _Line, d: Fraction) -> list[ParamRange]:
         r, lim = zone.reference_axis, zone.limited_axis
         parts = []
         ra, rb = ln.ends(r)
@@ -259,11 +271,9 @@ def line_violation(
             if reg.max is not None:
                 parts.append(_intersect(touch, ln.gt(lim, reg.max - d)))
         return _union(parts)
-    if isinstance(zone, PolygonZone):
-        return _polygon_violation(zone, ln, d)
-    raise TypeError(f"line_violation cannot decide a {zone.kind} zone")
 
 
+@LINE_VIOLATION.register(PolygonZone)
 def _polygon_violation(zone: PolygonZone, ln: _Line, d: Fraction) -> list[ParamRange]:
     """A polygon is a prism: its plane part (:func:`nczones.prover.polygon.plane_violation`) times the
     box of its limits.  An allow prism is violated where either part is; a forbid prism where both
@@ -319,26 +329,44 @@ def first_point(intervals: list[ParamRange]) -> tuple[Fraction, bool]:
 
 def zone_constants(zone: Zone, axis: str) -> list[Fraction]:
     """The zone's boundary values on one axis (where its predicate can change)."""
+    return sorted(set(ZONE_CONSTANTS(zone, axis)))
+
+
+#: The zone's boundary values on one axis, per zone kind (unsorted, repeats allowed).
+ZONE_CONSTANTS: KindTable[Callable[[Any, str], list[Fraction]]] = KindTable("prover.exact.zone_constants")
+
+
+@ZONE_CONSTANTS.register(BoxZone)
+def _box_constants(zone: BoxZone, axis: str) -> list[Fraction]:
     out: list[Fraction] = []
-    if isinstance(zone, BoxZone):
-        for a, lo, hi in zone.limits:
-            if a == axis:
-                out += [v for v in (lo, hi) if v is not None]
-    elif isinstance(zone, SteppedZone):
-        if axis == zone.reference_axis:
-            out.append(zone.start)
-            out += list(zone.uptos)
-        elif axis == zone.limited_axis:
-            for reg in zone.regions:
-                out += [v for v in (reg.min, reg.max) if v is not None]
-    else:
-        if axis in zone.plane:
-            k = zone.plane.index(axis)
-            out += [v[k] for v in zone.vertices]
-        for a, lo, hi in zone.limits:
-            if a == axis:
-                out += [v for v in (lo, hi) if v is not None]
-    return sorted(set(out))
+    for a, lo, hi in zone.limits:
+        if a == axis:
+            out += [v for v in (lo, hi) if v is not None]
+    return out
+
+
+@ZONE_CONSTANTS.register(SteppedZone)
+def _stepped_constants(zone: SteppedZone, axis: str) -> list[Fraction]:
+    out: list[Fraction] = []
+    if axis == zone.reference_axis:
+        out.append(zone.start)
+        out += list(zone.uptos)
+    elif axis == zone.limited_axis:
+        for reg in zone.regions:
+            out += [v for v in (reg.min, reg.max) if v is not None]
+    return out
+
+
+@ZONE_CONSTANTS.register(PolygonZone)
+def _polygon_constants(zone: PolygonZone, axis: str) -> list[Fraction]:
+    out: list[Fraction] = []
+    if axis in zone.plane:
+        k = zone.plane.index(axis)
+        out += [v[k] for v in zone.vertices]
+    for a, lo, hi in zone.limits:
+        if a == axis:
+            out += [v for v in (lo, hi) if v is not None]
+    return out
 
 
 def _rect_dist(p: tuple[Fraction, Fraction], rect: Any) -> Fraction:
@@ -399,46 +427,59 @@ def point_depth(zone: Zone, p: Mapping[str, Fraction], margin: Fraction = F0) ->
     >>> point_depth(box, {"X": F(12)}), point_depth(box, {"X": F(9)}, F(2))
     (Fraction(2, 1), Fraction(1, 1))
     """
-    d = margin
-    if isinstance(zone, BoxZone):
-        if zone.forbid:
-            if _flat(zone.limits):
-                return F0
-            slacks = []
-            for a, lo, hi in zone.limits:
-                if lo is not None:
-                    slacks.append(p[a] - (lo - d))
-                if hi is not None:
-                    slacks.append((hi + d) - p[a])
-            return max(F0, min(slacks)) if slacks else F0
-        gaps = [F0]
+    return POINT_DEPTH(zone, p, margin)
+
+
+#: :func:`point_depth` per zone kind (``d`` the margin).
+POINT_DEPTH: KindTable[Callable[[Any, Mapping[str, Fraction], Fraction], Fraction]] = KindTable("prover.exact.point_depth")
+
+
+@POINT_DEPTH.register(BoxZone)
+def _box_depth(zone: BoxZone, p: Mapping[str, Fraction], d: Fraction) -> Fraction:
+    if zone.forbid:
+        if _flat(zone.limits):
+            return F0
+        slacks = []
         for a, lo, hi in zone.limits:
             if lo is not None:
-                gaps.append(lo + d - p[a])
+                slacks.append(p[a] - (lo - d))
             if hi is not None:
-                gaps.append(p[a] - (hi - d))
-        return max(gaps)
-    if isinstance(zone, SteppedZone):
-        q = (p[zone.reference_axis], p[zone.limited_axis])
-        if zone.forbid:
-            best = F0
-            for i, reg in enumerate(zone.regions):
-                if reg.min is not None and reg.max is not None and not reg.min < reg.max:
-                    continue
-                rect = ((zone.region_lower(i) - d, reg.upto + d),
-                        (None if reg.min is None else reg.min - d, None if reg.max is None else reg.max + d))
-                slacks = [q[0] - rect[0][0], rect[0][1] - q[0]]
-                if rect[1][0] is not None:
-                    slacks.append(q[1] - rect[1][0])
-                if rect[1][1] is not None:
-                    slacks.append(rect[1][1] - q[1])
-                best = max(best, min(slacks))
-            return best
-        rects = _stepped_eroded_rects(zone, d)
-        if not rects:
-            return F0
-        return min(_rect_dist(q, r) for r in rects)
-    # polygon
+                slacks.append((hi + d) - p[a])
+        return max(F0, min(slacks)) if slacks else F0
+    gaps = [F0]
+    for a, lo, hi in zone.limits:
+        if lo is not None:
+            gaps.append(lo + d - p[a])
+        if hi is not None:
+            gaps.append(p[a] - (hi - d))
+    return max(gaps)
+
+
+@POINT_DEPTH.register(SteppedZone)
+def _stepped_depth(zone: SteppedZone, p: Mapping[str, Fraction], d: Fraction) -> Fraction:
+    q = (p[zone.reference_axis], p[zone.limited_axis])
+    if zone.forbid:
+        best = F0
+        for i, reg in enumerate(zone.regions):
+            if reg.min is not None and reg.max is not None and not reg.min < reg.max:
+                continue
+            rect = ((zone.region_lower(i) - d, reg.upto + d),
+                    (None if reg.min is None else reg.min - d, None if reg.max is None else reg.max + d))
+            slacks = [q[0] - rect[0][0], rect[0][1] - q[0]]
+            if rect[1][0] is not None:
+                slacks.append(q[1] - rect[1][0])
+            if rect[1][1] is not None:
+                slacks.append(rect[1][1] - q[1])
+            best = max(best, min(slacks))
+        return best
+    rects = _stepped_eroded_rects(zone, d)
+    if not rects:
+        return F0
+    return min(_rect_dist(q, r) for r in rects)
+
+
+@POINT_DEPTH.register(PolygonZone)
+def _polygon_depth(zone: PolygonZone, p: Mapping[str, Fraction], d: Fraction) -> Fraction:
     q = (p[zone.plane[0]], p[zone.plane[1]])
     dist = min(_seg_dist_inf(q, a, b) for a, b in zone.edges())
     lim_gap = F0
@@ -522,7 +563,15 @@ def line_depth(
         if best is None or v > best:
             best, best_t = v, t
     assert best is not None  # t = 0 and t = 1 are candidates
-    return best, best_t, exact and not isinstance(zone, PolygonZone)
+    return best, best_t, exact and LINE_DEPTH_EXACT.of(zone)
+
+
+#: Is the depth along a line piecewise linear with breakpoints at the zone constants (then
+#: :func:`line_depth` is exact)?  Not for a polygon's slanted edges.  Fallback: no (a lower bound).
+LINE_DEPTH_EXACT: KindTable[bool] = KindTable("prover.exact.line_depth_exact", fallback=False)
+LINE_DEPTH_EXACT.set(BoxZone, True)
+LINE_DEPTH_EXACT.set(SteppedZone, True)
+LINE_DEPTH_EXACT.set(PolygonZone, False)
 
 
 # --------------------------------------------------------------------------- witnesses
@@ -562,7 +611,22 @@ def outside_point(
         q.update(zip(axes, combo))
         if zone in allowed.violated_zones(q, tool_length):
             return q
-    if isinstance(zone, PolygonZone) and all(a in p for a in zone.plane):
+    return OUTSIDE_POINT_MORE(zone, allowed, p, margin, tool_length, shift, axes, choices)
+
+
+#: Where the grid of zone constants can miss a violating point of the margin box: a kind's own search
+#: (``None``: none found).  Fallback: no further search (no witness point; the caller says so).
+OUTSIDE_POINT_MORE: KindTable[Callable[..., dict[str, Fraction] | None]] = KindTable(
+    "prover.exact.outside_point_more", fallback=lambda zone, *args: None)
+OUTSIDE_POINT_MORE.set(BoxZone, lambda zone, *args: None)  # the grid hits every cell of a box
+OUTSIDE_POINT_MORE.set(SteppedZone, lambda zone, *args: None)  # and of a stepped table
+
+
+@OUTSIDE_POINT_MORE.register(PolygonZone)
+def _polygon_outside_point(zone: PolygonZone, allowed: AllowedSet, p: dict[str, Fraction], margin: Fraction,
+                           tool_length: Fraction, shift: dict[str, Fraction], axes: list[str],
+                           choices: list[list[Fraction]]) -> dict[str, Fraction] | None:
+    if all(a in p for a in zone.plane):
         # the grid of vertex coordinates can miss a thin polygon (or a thin gap): a point of the open
         # margin box strictly inside it (forbid) or outside it (allow), found exactly, with the limit
         # axes' candidates
@@ -598,31 +662,10 @@ def box_certainly_violates(
     """
     shift = tool_length if (zone.point is ZonePoint.TIP and tool_length) else F0
     centre = {a: (lo[a] + hi[a]) / 2 for a in lo}
-    if isinstance(zone, BoxZone) and not zone.forbid:
-        for a, z_lo, z_hi in zone.limits:  # one axis on which every point's margin box leaves the zone
-            if a in lo:
-                s = shift if a == allowed.tool_axis else F0
-                if (z_lo is not None and hi[a] - s - margin < z_lo) or (z_hi is not None and lo[a] - s + margin > z_hi):
-                    return True
-    if isinstance(zone, PolygonZone):
-        from ..zones.model import segment_meets_open_box  # exact clipping helper
-
-        x, y = zone.plane
-        # the box as the zone sees it: a tip zone whose plane holds the tool axis sees it less the tool length
-        sx, sy = (shift if a == allowed.tool_axis else F0 for a in (x, y))
-        gx = (lo[x] - sx - margin - 1 / Fraction(10**30), hi[x] - sx + margin + 1 / Fraction(10**30))
-        gy = (lo[y] - sy - margin - 1 / Fraction(10**30), hi[y] - sy + margin + 1 / Fraction(10**30))
-        # a box of one point in the polygon's plane (a helix of a rational circle: only the axis along it is
-        # enclosed) sees the polygon part of the predicate at that one point, whatever edges its margin box
-        # crosses: the zone is a prism and the margin box a product, so that part is the same for every point
-        # of the box, and the centre's test below decides it
-        flat = lo[x] == hi[x] and lo[y] == hi[y]
-        if not flat and any(segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
-            return False
-        axes_to_check = [a for a, _, _ in zone.limits]
-    else:
-        axes_to_check = list(zone.axes)
-    for a in axes_to_check:
+    cells = CERTAIN_CELLS(zone, allowed, lo, hi, margin, shift)
+    if isinstance(cells, bool):
+        return cells
+    for a in cells:
         if a not in lo or lo[a] == hi[a]:  # one value on this axis: the centre's test covers it
             continue
         s = shift if a == allowed.tool_axis else F0
@@ -633,6 +676,51 @@ def box_certainly_violates(
     return zone in allowed.violated_zones(centre, tool_length, margin)
 
 
+#: :func:`box_certainly_violates` per zone kind, first step: True/False when the kind decides the box at once,
+#: else the axes on which the zone constants (shifted by the margin) must stay out of the box for the centre's
+#: test to decide it.  Fallback: False (not certified: the caller goes on without the certificate).
+CERTAIN_CELLS: KindTable[Callable[..., bool | list[str]]] = KindTable(
+    "prover.exact.certain_cells", fallback=lambda zone, *args: False)
+
+
+@CERTAIN_CELLS.register(BoxZone)
+def _box_cells(zone: BoxZone, allowed: AllowedSet, lo: dict[str, Fraction], hi: dict[str, Fraction],
+               margin: Fraction, shift: Fraction) -> bool | list[str]:
+    if not zone.forbid:
+        for a, z_lo, z_hi in zone.limits:  # one axis on which every point's margin box leaves the zone
+            if a in lo:
+                s = shift if a == allowed.tool_axis else F0
+                if (z_lo is not None and hi[a] - s - margin < z_lo) or (z_hi is not None and lo[a] - s + margin > z_hi):
+                    return True
+    return list(zone.axes)
+
+
+@CERTAIN_CELLS.register(SteppedZone)
+def _stepped_cells(zone: SteppedZone, allowed: AllowedSet, lo: dict[str, Fraction], hi: dict[str, Fraction],
+                   margin: Fraction, shift: Fraction) -> bool | list[str]:
+    return list(zone.axes)
+
+
+@CERTAIN_CELLS.register(PolygonZone)
+def _polygon_cells(zone: PolygonZone, allowed: AllowedSet, lo: dict[str, Fraction], hi: dict[str, Fraction],
+                   margin: Fraction, shift: Fraction) -> bool | list[str]:
+    from ..zones.model import segment_meets_open_box  # exact clipping helper
+
+    x, y = zone.plane
+    # the box as the zone sees it: a tip zone whose plane holds the tool axis sees it less the tool length
+    sx, sy = (shift if a == allowed.tool_axis else F0 for a in (x, y))
+    gx = (lo[x] - sx - margin - 1 / Fraction(10**30), hi[x] - sx + margin + 1 / Fraction(10**30))
+    gy = (lo[y] - sy - margin - 1 / Fraction(10**30), hi[y] - sy + margin + 1 / Fraction(10**30))
+    # a box of one point in the polygon's plane (a helix of a rational circle: only the axis along it is
+    # enclosed) sees the polygon part of the predicate at that one point, whatever edges its margin box
+    # crosses: the zone is a prism and the margin box a product, so that part is the same for every point
+    # of the box, and the centre's test below decides it
+    flat = lo[x] == hi[x] and lo[y] == hi[y]
+    if not flat and any(segment_meets_open_box(a, b, (gx[0], gy[0]), (gx[1], gy[1])) for a, b in zone.edges()):
+        return False
+    return [a for a, _, _ in zone.limits]
+
+
 def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_length: Fraction,
              zones: Iterable[Zone] | None = None) -> bool:
     """Exact test: every point of the box ``[lo, hi]`` has a fitting margin box (boxes, stepped tables).
@@ -641,8 +729,6 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
     edge meets the open box and its centre is inside, or outside).  ``zones``
     restricts the test to those zones (default: all of ``allowed``).
     """
-    from ..zones import BoxZone, SteppedZone
-
     d = margin
     for z in allowed.zones if zones is None else zones:
         shift = tool_length if (z.point is ZonePoint.TIP and tool_length) else F0
@@ -651,49 +737,66 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
             s = shift if a == allowed.tool_axis else F0  # noqa: B023 - called within this iteration
             return lo[a] - s - d, hi[a] - s + d
 
-        if isinstance(z, BoxZone):
-            if z.forbid:
-                if not any(
-                    (hi_ is not None and rng(a)[0] >= hi_) or (lo_ is not None and rng(a)[1] <= lo_)
-                    for a, lo_, hi_ in z.limits
-                ):
-                    return False
-            else:
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
-                        return False
-        elif isinstance(z, SteppedZone):
-            r0, r1 = rng(z.reference_axis)
-            l0, l1 = rng(z.limited_axis)
-            if z.forbid:
-                for i in reachable(z, r0, r1):
-                    reg = z.regions[i]
-                    if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
-                        return False
-            else:
-                if r0 < z.start or r1 > z.regions[-1].upto:
-                    return False
-                for i in reachable(z, r0, r1):
-                    reg = z.regions[i]
-                    if i > 0 and r1 <= z.regions[i - 1].upto:
-                        continue
-                    if (reg.min is not None and l0 < reg.min) or (reg.max is not None and l1 > reg.max):
-                        return False
-        elif isinstance(z, PolygonZone):
-            if z.forbid:
-                b = z.bounds()
-                if any((bh is not None and rng(a)[0] >= bh) or (bl is not None and rng(a)[1] <= bl)
-                       for a, (bl, bh) in b.items() if a in lo):
-                    continue
-            else:
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
-                        return False
-            from .polygon import box_fits as polygon_box_fits
+        if not BOX_FITS(z, rng, lo):
+            return False
+    return True
 
-            (x0, x1), (y0, y1) = rng(z.plane[0]), rng(z.plane[1])
-            if not polygon_box_fits(z, (x0, y0), (x1, y1)):
+
+#: Does the box ``lo`` (its lower corner, by axis) to ``rng(axis) -> (lo, hi)`` (its range as the zone sees
+#: it, margin included) fit the zone?  Fallback: not shown (the box is not proved inside, a later tier decides).
+Rng = Callable[[str], tuple[Fraction, Fraction]]
+BOX_FITS: KindTable[Callable[[Any, Rng, Mapping[str, Fraction]], bool]] = KindTable(
+    "prover.exact.box_fits", fallback=lambda z, rng, lo: False)
+
+
+@BOX_FITS.register(BoxZone)
+def _box_box_fits(z: BoxZone, rng: Rng, lo: Mapping[str, Fraction]) -> bool:
+    if z.forbid:
+        return any(
+            (hi_ is not None and rng(a)[0] >= hi_) or (lo_ is not None and rng(a)[1] <= lo_)
+            for a, lo_, hi_ in z.limits
+        )
+    for a, lo_, hi_ in z.limits:
+        r0, r1 = rng(a)
+        if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
+            return False
+    return True
+
+
+@BOX_FITS.register(SteppedZone)
+def _stepped_box_fits(z: SteppedZone, rng: Rng, lo: Mapping[str, Fraction]) -> bool:
+    r0, r1 = rng(z.reference_axis)
+    l0, l1 = rng(z.limited_axis)
+    if z.forbid:
+        for i in reachable(z, r0, r1):
+            reg = z.regions[i]
+            if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
+                return False
+    else:
+        if r0 < z.start or r1 > z.regions[-1].upto:
+            return False
+        for i in reachable(z, r0, r1):
+            reg = z.regions[i]
+            if i > 0 and r1 <= z.regions[i - 1].upto:
+                continue
+            if (reg.min is not None and l0 < reg.min) or (reg.max is not None and l1 > reg.max):
                 return False
     return True
+
+
+@BOX_FITS.register(PolygonZone)
+def _polygon_box_fits(z: PolygonZone, rng: Rng, lo: Mapping[str, Fraction]) -> bool:
+    if z.forbid:
+        b = z.bounds()
+        if any((bh is not None and rng(a)[0] >= bh) or (bl is not None and rng(a)[1] <= bl)
+               for a, (bl, bh) in b.items() if a in lo):
+            return True
+    else:
+        for a, lo_, hi_ in z.limits:
+            r0, r1 = rng(a)
+            if (lo_ is not None and r0 < lo_) or (hi_ is not None and r1 > hi_):
+                return False
+    from .polygon import box_fits as polygon_box_fits
+
+    (x0, x1), (y0, y1) = rng(z.plane[0]), rng(z.plane[1])
+    return polygon_box_fits(z, (x0, y0), (x1, y1))

@@ -25,12 +25,15 @@ enlarged here: the verdict is then ``unknown`` (:func:`nose_zones` returns the r
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
+from typing import Any
 
 from ..exact import format_decimal
 from ..machine import Machine
-from ..zones import AllowedSet, BoxZone, ZonePoint
+from ..zones import AllowedSet, BoxZone, SteppedZone, Zone, ZonePoint
+from ..zones.kinds import KindTable
 from ..zones.model import PolygonZone
 
 __all__ = ["nose_reach", "nose_zones"]
@@ -76,6 +79,45 @@ def _grow(lo: Fraction | None, hi: Fraction | None, d: Fraction) -> tuple[Fracti
     return (None if lo is None else lo - d, None if hi is None else hi + d)
 
 
+def _not_modelled(z: Zone, reach: Fraction, what: str | None = None) -> str:
+    what = what or f"a {z.kind} zone"
+    return (f"tool nose radius: the tip zone \"{z.name}\" is {what}; enlarging it by the "
+            f"nose's reach ({format_decimal(reach)} mm) is not modelled")
+
+
+#: The zones that hold the nose square of half-width ``reach`` around the imaginary tool tip wherever the
+#: tip zone holds the tip (allowed: shrunk, forbidden: grown), per zone kind; or the reason for ``unknown``.
+#: Fallback: not modelled (``unknown``).
+NOSE_GROWN: KindTable[Callable[[Any, Fraction], tuple[Zone, ...] | str]] = KindTable(
+    "prover.nose.grown", fallback=_not_modelled)
+NOSE_GROWN.set(SteppedZone, _not_modelled)
+
+
+@NOSE_GROWN.register(BoxZone)
+def _box_grown(z: BoxZone, reach: Fraction) -> tuple[Zone, ...] | str:
+    d = reach if z.forbid else -reach
+    limits = tuple((a, *_grow(lo, hi, d)) if a in _PLANE else (a, lo, hi) for a, lo, hi in z.limits)
+    if any(lo is not None and hi is not None and lo > hi for _a, lo, hi in limits):
+        # an allowed box narrower than the nose
+        return (f"tool nose radius: the allowed tip zone \"{z.name}\" is narrower than the "
+                f"nose's reach ({format_decimal(reach)} mm on each side)")
+    return (replace(z, limits=limits),)
+
+
+@NOSE_GROWN.register(PolygonZone)
+def _polygon_grown(z: PolygonZone, reach: Fraction) -> tuple[Zone, ...] | str:
+    if not z.forbid:
+        return _not_modelled(z, reach, "an allowed polygon")
+    if set(z.plane) != set(_PLANE):
+        return _not_modelled(z, reach, "a polygon outside the ZX plane")
+    out: list[Zone] = [z]
+    for a, b in z.edges():
+        corners = [(p[0] + su * reach, p[1] + sv * reach) for p in (a, b) for su in (-1, 1)
+                   for sv in (-1, 1)]
+        out.append(replace(z, vertices=tuple(_hull(corners))))
+    return tuple(out)
+
+
 def nose_zones(machine: Machine) -> tuple[Machine, str | None, str | None]:
     """``(machine with its tip zones enlarged, note, reason for unknown)``; the machine unchanged (and no
     note) when it is no lathe or no tool offset has a nose radius."""
@@ -88,25 +130,10 @@ def nose_zones(machine: Machine) -> tuple[Machine, str | None, str | None]:
         if z.point is not ZonePoint.TIP:
             out.append(z)
             continue
-        if isinstance(z, BoxZone):
-            d = reach if z.forbid else -reach
-            limits = tuple((a, *_grow(lo, hi, d)) if a in _PLANE else (a, lo, hi) for a, lo, hi in z.limits)
-            if any(lo is not None and hi is not None and lo > hi for _a, lo, hi in limits):
-                # an allowed box narrower than the nose
-                return machine, None, (f"tool nose radius: the allowed tip zone \"{z.name}\" is narrower than the "
-                                       f"nose's reach ({format_decimal(reach)} mm on each side)")
-            out.append(replace(z, limits=limits))
-        elif isinstance(z, PolygonZone) and z.forbid and set(z.plane) == set(_PLANE):
-            out.append(z)
-            for a, b in z.edges():
-                corners = [(p[0] + su * reach, p[1] + sv * reach) for p in (a, b) for su in (-1, 1)
-                           for sv in (-1, 1)]
-                out.append(replace(z, vertices=tuple(_hull(corners))))
-        else:
-            what = "an allowed polygon" if isinstance(z, PolygonZone) and not z.forbid else (
-                "a polygon outside the ZX plane" if isinstance(z, PolygonZone) else f"a {z.kind} zone")
-            return machine, None, (f"tool nose radius: the tip zone \"{z.name}\" is {what}; enlarging it by the "
-                                   f"nose's reach ({format_decimal(reach)} mm) is not modelled")
+        grown = NOSE_GROWN(z, reach)
+        if isinstance(grown, str):
+            return machine, None, grown
+        out.extend(grown)
     note = (f"tool nose radius: the tip zones were proved against the square of half-width "
             f"{format_decimal(reach)} mm on X and Z around the imaginary tool tip, which holds the nose circle of "
             "every tool offset (R for tip 0/9, 2R for tips 1-8); a violation means that square reaches into the "

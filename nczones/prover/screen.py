@@ -29,6 +29,7 @@ import numpy as np
 from ..exact import decimal_places
 from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
 from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint, tip_offset
+from ..zones.kinds import KindTable
 
 
 class ScreenedProver(Protocol):
@@ -220,21 +221,20 @@ class _ZoneConstants:
     """A zone's limits scaled to ``10**scale`` (rounded towards the inside), with range tables."""
 
     def __init__(self, z: SteppedZone, s: int):
-        if isinstance(z, SteppedZone):
-            self.ups_dn = np.array([_scaled(r.upto, s, False, 0) for r in z.regions], dtype=np.int64)
-            self.ups_up = np.array([_scaled(r.upto, s, True, 0) for r in z.regions], dtype=np.int64)
-            self.start_dn = _scaled(z.start, s, False, _NEG)
-            self.start_up = _scaled(z.start, s, True, _NEG)
-            if z.forbid:
-                mins = np.array([_scaled(r.min, s, False, _NEG) for r in z.regions], dtype=np.int64)
-                maxs = np.array([_scaled(r.max, s, True, _POS) for r in z.regions], dtype=np.int64)
-                self.min_t = _RangeTable(mins, np.minimum)
-                self.max_t = _RangeTable(maxs, np.maximum)
-            else:
-                mins_lo = np.array([_scaled(r.min, s, True, _NEG) for r in z.regions], dtype=np.int64)
-                maxs_hi = np.array([_scaled(r.max, s, False, _POS) for r in z.regions], dtype=np.int64)
-                self.min_t = _RangeTable(mins_lo, np.maximum)
-                self.max_t = _RangeTable(maxs_hi, np.minimum)
+        self.ups_dn = np.array([_scaled(r.upto, s, False, 0) for r in z.regions], dtype=np.int64)
+        self.ups_up = np.array([_scaled(r.upto, s, True, 0) for r in z.regions], dtype=np.int64)
+        self.start_dn = _scaled(z.start, s, False, _NEG)
+        self.start_up = _scaled(z.start, s, True, _NEG)
+        if z.forbid:
+            mins = np.array([_scaled(r.min, s, False, _NEG) for r in z.regions], dtype=np.int64)
+            maxs = np.array([_scaled(r.max, s, True, _POS) for r in z.regions], dtype=np.int64)
+            self.min_t = _RangeTable(mins, np.minimum)
+            self.max_t = _RangeTable(maxs, np.maximum)
+        else:
+            mins_lo = np.array([_scaled(r.min, s, True, _NEG) for r in z.regions], dtype=np.int64)
+            maxs_hi = np.array([_scaled(r.max, s, False, _POS) for r in z.regions], dtype=np.int64)
+            self.min_t = _RangeTable(mins_lo, np.maximum)
+            self.max_t = _RangeTable(maxs_hi, np.minimum)
 
 
 def _constants(prover: ScreenedProver, z: SteppedZone, s: int) -> _ZoneConstants:
@@ -332,76 +332,99 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
                 a_lo, a_hi = a_lo - tl, a_hi - tl
             return a_lo, a_hi
 
-        if isinstance(z, BoxZone):
-            if z.forbid:
-                clear = np.zeros(n, dtype=bool)
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if hi_ is not None:
-                        clear |= r0 >= _scaled(hi_, s, True, _POS)
-                    if lo_ is not None:
-                        clear |= r1 <= _scaled(lo_, s, False, _NEG)
-                ok &= clear
-            else:
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if lo_ is not None:
-                        ok &= r0 >= _scaled(lo_, s, True, _NEG)
-                    if hi_ is not None:
-                        ok &= r1 <= _scaled(hi_, s, False, _POS)
-        elif isinstance(z, SteppedZone):
-            k = _constants(prover, z, s)
-            r0, r1 = rng(z.reference_axis)
-            l0, l1 = rng(z.limited_axis)
-            last = len(k.ups_dn) - 1
-            # region range reached by [r0, r1] (closed), generous at rounding
-            i0 = np.searchsorted(k.ups_up, r0, side="left")
-            i1 = np.searchsorted(k.ups_dn, r1, side="left")
-            i0c = np.minimum(i0, last)
-            i1c = np.minimum(i1, last)
-            if z.forbid:
-                lo_i = np.maximum(np.minimum(i0c, i1c) - 1, 0)
-                hi_i = np.minimum(i1c + 1, last)
-                below = l1 <= k.min_t.query(lo_i, hi_i)
-                above = l0 >= k.max_t.query(lo_i, hi_i)
-                outside = (r1 <= k.start_dn) | (r0 >= k.ups_up[-1])
-                ok &= below | above | outside
-            else:
-                inside = (r0 >= k.start_up) & (r1 <= k.ups_dn[-1]) & (i1 <= last)
-                hi_i = np.minimum(i1c + 1, last)  # a rounded boundary may reach one more row
-                ok &= inside & (l0 >= k.min_t.query(i0c, hi_i)) & (l1 <= k.max_t.query(i0c, hi_i))
-        elif isinstance(z, PolygonZone):
-            from .polygon import screen_rows
-
-            if z.plane[0] not in axes or z.plane[1] not in axes:
-                ok[:] = False
-                break
-            x0, x1 = rng(z.plane[0])
-            y0, y1 = rng(z.plane[1])
-            if z.forbid:  # clear when the box misses the prism's limits or the polygon (its grid)
-                clear = np.zeros(n, dtype=bool)
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if hi_ is not None:
-                        clear |= r0 >= _scaled(hi_, s, True, _POS)
-                    if lo_ is not None:
-                        clear |= r1 <= _scaled(lo_, s, False, _NEG)
-                todo = ok & ~clear
-                if todo.any():
-                    rows = np.flatnonzero(todo)
-                    clear[rows] = screen_rows(z, s, x0[rows], x1[rows], y0[rows], y1[rows])
-                ok &= clear
-            else:
-                for a, lo_, hi_ in z.limits:
-                    r0, r1 = rng(a)
-                    if lo_ is not None:
-                        ok &= r0 >= _scaled(lo_, s, True, _NEG)
-                    if hi_ is not None:
-                        ok &= r1 <= _scaled(hi_, s, False, _POS)
-                rows = np.flatnonzero(ok)
-                if rows.size:
-                    ok[rows] = screen_rows(z, s, x0[rows], x1[rows], y0[rows], y1[rows])
+        ZONE_ROWS(z, prover, rng, ok, s, axes)
     return np.flatnonzero(~ok).tolist()
+
+
+RowRange = Callable[[str], tuple[np.ndarray, np.ndarray]]
+
+
+def _unscreened(z: object, prover: ScreenedProver, rng: RowRange, ok: np.ndarray, s: int, axes: list[str]) -> None:
+    ok[:] = False
+
+
+#: Set to False the rows of ``ok`` (a bool column, changed in place) whose box (``rng(axis)``: its integer
+#: range at scale ``s`` as the zone sees it, margin included) the screen cannot show inside the zone (allowed)
+#: or clear of its interior (forbidden), per zone kind.  Fallback: no row is shown (the exact tier decides).
+ZONE_ROWS: KindTable[Callable[..., None]] = KindTable("prover.screen.zone_rows", fallback=_unscreened)
+
+
+@ZONE_ROWS.register(BoxZone)
+def _box_rows(z: BoxZone, prover: ScreenedProver, rng: RowRange, ok: np.ndarray, s: int, axes: list[str]) -> None:
+    if z.forbid:
+        clear = np.zeros(len(ok), dtype=bool)
+        for a, lo_, hi_ in z.limits:
+            r0, r1 = rng(a)
+            if hi_ is not None:
+                clear |= r0 >= _scaled(hi_, s, True, _POS)
+            if lo_ is not None:
+                clear |= r1 <= _scaled(lo_, s, False, _NEG)
+        ok &= clear
+    else:
+        for a, lo_, hi_ in z.limits:
+            r0, r1 = rng(a)
+            if lo_ is not None:
+                ok &= r0 >= _scaled(lo_, s, True, _NEG)
+            if hi_ is not None:
+                ok &= r1 <= _scaled(hi_, s, False, _POS)
+
+
+@ZONE_ROWS.register(SteppedZone)
+def _stepped_rows(z: SteppedZone, prover: ScreenedProver, rng: RowRange, ok: np.ndarray, s: int, axes: list[str]) -> None:
+    k = _constants(prover, z, s)
+    r0, r1 = rng(z.reference_axis)
+    l0, l1 = rng(z.limited_axis)
+    last = len(k.ups_dn) - 1
+    # region range reached by [r0, r1] (closed), generous at rounding
+    i0 = np.searchsorted(k.ups_up, r0, side="left")
+    i1 = np.searchsorted(k.ups_dn, r1, side="left")
+    i0c = np.minimum(i0, last)
+    i1c = np.minimum(i1, last)
+    if z.forbid:
+        lo_i = np.maximum(np.minimum(i0c, i1c) - 1, 0)
+        hi_i = np.minimum(i1c + 1, last)
+        below = l1 <= k.min_t.query(lo_i, hi_i)
+        above = l0 >= k.max_t.query(lo_i, hi_i)
+        outside = (r1 <= k.start_dn) | (r0 >= k.ups_up[-1])
+        ok &= below | above | outside
+    else:
+        inside = (r0 >= k.start_up) & (r1 <= k.ups_dn[-1]) & (i1 <= last)
+        hi_i = np.minimum(i1c + 1, last)  # a rounded boundary may reach one more row
+        ok &= inside & (l0 >= k.min_t.query(i0c, hi_i)) & (l1 <= k.max_t.query(i0c, hi_i))
+
+
+@ZONE_ROWS.register(PolygonZone)
+def _polygon_rows(z: PolygonZone, prover: ScreenedProver, rng: RowRange, ok: np.ndarray, s: int, axes: list[str]) -> None:
+    from .polygon import screen_rows
+
+    if z.plane[0] not in axes or z.plane[1] not in axes:
+        ok[:] = False
+        return
+    x0, x1 = rng(z.plane[0])
+    y0, y1 = rng(z.plane[1])
+    if z.forbid:  # clear when the box misses the prism's limits or the polygon (its grid)
+        clear = np.zeros(len(ok), dtype=bool)
+        for a, lo_, hi_ in z.limits:
+            r0, r1 = rng(a)
+            if hi_ is not None:
+                clear |= r0 >= _scaled(hi_, s, True, _POS)
+            if lo_ is not None:
+                clear |= r1 <= _scaled(lo_, s, False, _NEG)
+        todo = ok & ~clear
+        if todo.any():
+            rows = np.flatnonzero(todo)
+            clear[rows] = screen_rows(z, s, x0[rows], x1[rows], y0[rows], y1[rows])
+        ok &= clear
+    else:
+        for a, lo_, hi_ in z.limits:
+            r0, r1 = rng(a)
+            if lo_ is not None:
+                ok &= r0 >= _scaled(lo_, s, True, _NEG)
+            if hi_ is not None:
+                ok &= r1 <= _scaled(hi_, s, False, _POS)
+        rows = np.flatnonzero(ok)
+        if rows.size:
+            ok[rows] = screen_rows(z, s, x0[rows], x1[rows], y0[rows], y1[rows])
 
 
 #: The finest decimal scale arc columns are built at (``10**-12`` mm).

@@ -39,13 +39,14 @@ encoded.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones.kinds import KindTable
 from .exact import reachable
 
 __all__ = ["q", "Solver", "SolverAnswer", "zone_violation", "triangulate", "z3_version"]
@@ -225,88 +226,110 @@ def zone_violation(zone: Zone, pt: dict[str, str], ref_range: tuple[Fraction, Fr
     >>> zone_violation(BoxZone("b", (("X", F(0), F(1)),)), {"X": "x"}, None)
     '(or (< x 0.0) (> x 1.0))'
     """
-    if isinstance(zone, BoxZone):
-        conds = []
-        for a, lo, hi in zone.limits:
-            if zone.forbid:
-                if lo is not None:
-                    conds.append(f"(> {pt[a]} {q(lo)})")
-                if hi is not None:
-                    conds.append(f"(< {pt[a]} {q(hi)})")
-            else:
-                if lo is not None:
-                    conds.append(f"(< {pt[a]} {q(lo)})")
-                if hi is not None:
-                    conds.append(f"(> {pt[a]} {q(hi)})")
-        return _and(conds) if zone.forbid else or_all(conds)
-    if isinstance(zone, SteppedZone):
-        r, lim = pt[zone.reference_axis], pt[zone.limited_axis]
-        regs = zone.regions
-        idx = range(len(regs)) if ref_range is None else reachable(zone, *ref_range)
-        parts = []
+    return ZONE_VIOLATION(zone, pt, ref_range)
+
+
+#: :func:`zone_violation` per zone kind (no fallback: a kind the SMT tier cannot encode is not modelled).
+ZONE_VIOLATION: KindTable[Callable[[Any, dict[str, str], tuple[Fraction, Fraction] | None], str]] = KindTable(
+    "prover.smt.zone_violation")
+
+
+@ZONE_VIOLATION.register(BoxZone)
+def _box_violation(zone: BoxZone, pt: dict[str, str], ref_range: tuple[Fraction, Fraction] | None) -> str:
+    conds = []
+    for a, lo, hi in zone.limits:
         if zone.forbid:
-            for i in idx:
-                reg = regs[i]
-                c = [f"(< {q(zone.region_lower(i))} {r})", f"(< {r} {q(reg.upto)})"]
-                if reg.min is not None:
-                    c.append(f"(< {q(reg.min)} {lim})")
-                if reg.max is not None:
-                    c.append(f"(< {lim} {q(reg.max)})")
-                parts.append(_and(c))
-                if i + 1 < len(regs):
-                    nxt = regs[i + 1]
-                    lo = _maxb(reg.min, nxt.min)
-                    hi = _minb(reg.max, nxt.max)
-                    if lo is None or hi is None or lo < hi:
-                        c = [f"(= {r} {q(reg.upto)})"]
-                        if lo is not None:
-                            c.append(f"(< {q(lo)} {lim})")
-                        if hi is not None:
-                            c.append(f"(< {lim} {q(hi)})")
-                        parts.append(_and(c))
-            return or_all(parts)
-        parts.append(f"(< {r} {q(zone.start)})")
-        parts.append(f"(> {r} {q(regs[-1].upto)})")
+            if lo is not None:
+                conds.append(f"(> {pt[a]} {q(lo)})")
+            if hi is not None:
+                conds.append(f"(< {pt[a]} {q(hi)})")
+        else:
+            if lo is not None:
+                conds.append(f"(< {pt[a]} {q(lo)})")
+            if hi is not None:
+                conds.append(f"(> {pt[a]} {q(hi)})")
+    return _and(conds) if zone.forbid else or_all(conds)
+
+
+@ZONE_VIOLATION.register(SteppedZone)
+def _stepped_violation(zone: SteppedZone, pt: dict[str, str], ref_range: tuple[Fraction, Fraction] | None) -> str:
+    r, lim = pt[zone.reference_axis], pt[zone.limited_axis]
+    regs = zone.regions
+    idx = range(len(regs)) if ref_range is None else reachable(zone, *ref_range)
+    parts = []
+    if zone.forbid:
         for i in idx:
             reg = regs[i]
-            rel = "<=" if i == 0 else "<"
-            out = []
+            c = [f"(< {q(zone.region_lower(i))} {r})", f"(< {r} {q(reg.upto)})"]
             if reg.min is not None:
-                out.append(f"(< {lim} {q(reg.min)})")
+                c.append(f"(< {q(reg.min)} {lim})")
             if reg.max is not None:
-                out.append(f"(> {lim} {q(reg.max)})")
-            if out:
-                parts.append(_and([f"({rel} {q(zone.region_lower(i))} {r})", f"(<= {r} {q(reg.upto)})", or_all(out)]))
+                c.append(f"(< {lim} {q(reg.max)})")
+            parts.append(_and(c))
+            if i + 1 < len(regs):
+                nxt = regs[i + 1]
+                lo = _maxb(reg.min, nxt.min)
+                hi = _minb(reg.max, nxt.max)
+                if lo is None or hi is None or lo < hi:
+                    c = [f"(= {r} {q(reg.upto)})"]
+                    if lo is not None:
+                        c.append(f"(< {q(lo)} {lim})")
+                    if hi is not None:
+                        c.append(f"(< {lim} {q(hi)})")
+                    parts.append(_and(c))
         return or_all(parts)
-    if isinstance(zone, PolygonZone):
-        x, y = pt[zone.plane[0]], pt[zone.plane[1]]
-        tris, diags = _triangulation(zone)
-        if zone.forbid:
-            inside = [_and([f"(> {_cross_term(a, b, x, y)} 0.0)" for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))]) for t in tris]
-            for a, b in diags:
-                inside.append(_and([
-                    f"(= {_cross_term(a, b, x, y)} 0.0)",
-                    f"(< {q(min(a[0], b[0]))} {x})" if a[0] != b[0] else "true",
-                    f"(< {x} {q(max(a[0], b[0]))})" if a[0] != b[0] else "true",
-                    f"(< {q(min(a[1], b[1]))} {y})" if a[1] != b[1] else "true",
-                    f"(< {y} {q(max(a[1], b[1]))})" if a[1] != b[1] else "true",
-                ]))
-            lims = []
-            for a, lo, hi in zone.limits:
-                if lo is not None:
-                    lims.append(f"(> {pt[a]} {q(lo)})")
-                if hi is not None:
-                    lims.append(f"(< {pt[a]} {q(hi)})")
-            return _and([or_all(inside)] + lims)
-        closed = [_and([f"(>= {_cross_term(a, b, x, y)} 0.0)" for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))]) for t in tris]
-        out = [f"(not {or_all(closed)})"]
+    parts.append(f"(< {r} {q(zone.start)})")
+    parts.append(f"(> {r} {q(regs[-1].upto)})")
+    for i in idx:
+        reg = regs[i]
+        rel = "<=" if i == 0 else "<"
+        out = []
+        if reg.min is not None:
+            out.append(f"(< {lim} {q(reg.min)})")
+        if reg.max is not None:
+            out.append(f"(> {lim} {q(reg.max)})")
+        if out:
+            parts.append(_and([f"({rel} {q(zone.region_lower(i))} {r})", f"(<= {r} {q(reg.upto)})", or_all(out)]))
+    return or_all(parts)
+
+
+@ZONE_VIOLATION.register(PolygonZone)
+def _polygon_violation(zone: PolygonZone, pt: dict[str, str], ref_range: tuple[Fraction, Fraction] | None) -> str:
+    x, y = pt[zone.plane[0]], pt[zone.plane[1]]
+    tris, diags = _triangulation(zone)
+    if zone.forbid:
+        inside = [_and([f"(> {_cross_term(a, b, x, y)} 0.0)" for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))]) for t in tris]
+        for a, b in diags:
+            inside.append(_and([
+                f"(= {_cross_term(a, b, x, y)} 0.0)",
+                f"(< {q(min(a[0], b[0]))} {x})" if a[0] != b[0] else "true",
+                f"(< {x} {q(max(a[0], b[0]))})" if a[0] != b[0] else "true",
+                f"(< {q(min(a[1], b[1]))} {y})" if a[1] != b[1] else "true",
+                f"(< {y} {q(max(a[1], b[1]))})" if a[1] != b[1] else "true",
+            ]))
+        lims = []
         for a, lo, hi in zone.limits:
             if lo is not None:
-                out.append(f"(< {pt[a]} {q(lo)})")
+                lims.append(f"(> {pt[a]} {q(lo)})")
             if hi is not None:
-                out.append(f"(> {pt[a]} {q(hi)})")
-        return or_all(out)
-    raise InternalError(f"unknown zone kind {zone!r}")
+                lims.append(f"(< {pt[a]} {q(hi)})")
+        return _and([or_all(inside)] + lims)
+    closed = [_and([f"(>= {_cross_term(a, b, x, y)} 0.0)" for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))]) for t in tris]
+    out = [f"(not {or_all(closed)})"]
+    for a, lo, hi in zone.limits:
+        if lo is not None:
+            out.append(f"(< {pt[a]} {q(lo)})")
+        if hi is not None:
+            out.append(f"(> {pt[a]} {q(hi)})")
+    return or_all(out)
+
+
+#: The axis whose enclosure prunes the encoding (``ref_range`` of :func:`zone_violation`: the rows a stepped
+#: table can reach), per zone kind.  Fallback: None (the whole zone is encoded).
+REFERENCE_AXIS: KindTable[Callable[[Any], str | None]] = KindTable("prover.smt.reference_axis", fallback=lambda z: None)
+REFERENCE_AXIS.set(BoxZone, lambda z: None)
+REFERENCE_AXIS.set(SteppedZone, lambda z: z.reference_axis)
+REFERENCE_AXIS.set(PolygonZone, lambda z: None)
 
 
 def _maxb(a, b):

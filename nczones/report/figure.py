@@ -22,7 +22,7 @@ Floats here are for drawing only; nothing feeds back into a proof.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import Any
@@ -32,6 +32,7 @@ import numpy as np
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, Segment, SegmentKind
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones.kinds import KindTable
 from .placement import Placement, drawing_machine, placement_label, placement_of
 
 __all__ = ["plot_program", "relevant_planes", "collect_path", "PathFloat", "thin_path"]
@@ -69,17 +70,9 @@ def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> lis
         if p[0] != p[1] and p not in planes and all(a in order for a in p):
             planes.append(p)
 
-    for z in machine.zones:
-        if isinstance(z, SteppedZone):
-            add(pair(z.reference_axis, z.limited_axis))
-        elif isinstance(z, PolygonZone):
-            add(pair(*z.plane))
-    for z in machine.zones:
-        if isinstance(z, BoxZone):
-            bounded = sorted((a for a, (lo, hi) in z.bounds().items() if lo is not None or hi is not None),
-                             key=lambda a: order.get(a, len(order)))
-            for other in bounded[1:]:
-                add(pair(bounded[0], other))
+    planes_of = [ZONE_PLANES(z, order) for z in machine.zones]
+    for p in [p for own, _ in planes_of for p in own] + [p for _, spanned in planes_of for p in spanned]:
+        add(pair(*p))
     if result is not None:
         for v in result.violations:
             outside = [a for a, _ in v.point if a in order]
@@ -91,6 +84,21 @@ def relevant_planes(machine: Machine, result: Any = None, limit: int = 3) -> lis
         planes = [("Z", "X") if set(p) == {"X", "Z"} else p for p in planes]
         planes = list(dict.fromkeys(planes))
     return planes[:limit]
+
+
+def _bounded_planes(z: Zone, order: Mapping[str, int]) -> tuple[list[tuple[str, str]], list[tuple[str, str]]]:
+    bounded = sorted((a for a, (lo, hi) in z.bounds().items() if lo is not None or hi is not None),
+                     key=lambda a: order.get(a, len(order)))
+    return [], [(bounded[0], other) for other in bounded[1:]]
+
+
+#: The planes that show a zone (:func:`relevant_planes`), per zone kind: ``(its own planes, the planes its
+#: bounded axes span)``; every zone's own planes come before any spanned one.  Fallback: by its bounds.
+ZONE_PLANES: KindTable[Callable[[Any, Mapping[str, int]], tuple[list[tuple[str, str]], list[tuple[str, str]]]]] = (
+    KindTable("report.figure.zone_planes", fallback=_bounded_planes))
+ZONE_PLANES.set(BoxZone, _bounded_planes)
+ZONE_PLANES.set(SteppedZone, lambda z, order: ([(z.reference_axis, z.limited_axis)], []))
+ZONE_PLANES.set(PolygonZone, lambda z, order: ([z.plane], []))
 
 
 def _lathe_like(machine: Any) -> bool:

@@ -10,7 +10,7 @@ Nothing here feeds back into a proof.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from fractions import Fraction
 from typing import Any
 
@@ -21,7 +21,8 @@ from matplotlib.patches import Rectangle
 from ..exact import to_float
 from ..machine import Machine
 from ..motion import Segment, SegmentKind, arc_path_float
-from ..zones import PolygonZone, SteppedZone, Zone
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone
+from ..zones.kinds import KindTable
 
 __all__ = ["plot_zones", "plot_path", "mark_points", "plot_machine", "path_points_float", "view_limits"]
 
@@ -50,25 +51,12 @@ def _finite(v: Fraction | None, default: float) -> float:
 
 def zone_patches(zone: Zone, plane: tuple[str, str], xlim: Any, ylim: Any) -> tuple[str, list[Any]] | None:
     """Rectangles/polygons (float) that draw ``zone`` in ``plane``; None if not drawable."""
+    return ZONE_PATCHES(zone, plane)
+
+
+def _bounds_patches(zone: Zone, plane: tuple[str, str]) -> tuple[str, list[Any]] | None:
     h, v = plane
-    if isinstance(zone, SteppedZone):
-        rects = []
-        if {zone.reference_axis, zone.limited_axis} != {h, v}:
-            return None
-        for i, reg in enumerate(zone.regions):
-            a, b = to_float(zone.region_lower(i)), to_float(reg.upto)
-            lo, hi = _finite(reg.min, -1e9), _finite(reg.max, 1e9)
-            if zone.reference_axis == h:
-                rects.append(((a, lo), b - a, hi - lo))
-            else:
-                rects.append(((lo, a), hi - lo, b - a))
-        return ("rects", rects)
     bounds = zone.bounds()
-    if isinstance(zone, PolygonZone) and tuple(zone.plane) in ((h, v), (v, h)):
-        pts = [(to_float(p[0]), to_float(p[1])) for p in zone.vertices]
-        if tuple(zone.plane) == (v, h):
-            pts = [(y, x) for x, y in pts]
-        return ("poly", pts)
     if h not in bounds and v not in bounds:
         return None
     hx = bounds.get(h, (None, None))
@@ -76,6 +64,39 @@ def zone_patches(zone: Zone, plane: tuple[str, str], xlim: Any, ylim: Any) -> tu
     x0, x1 = _finite(hx[0], -1e9), _finite(hx[1], 1e9)
     y0, y1 = _finite(vy[0], -1e9), _finite(vy[1], 1e9)
     return ("rects", [((x0, y0), x1 - x0, y1 - y0)])
+
+
+#: :func:`zone_patches` per zone kind.  Fallback: the rectangle of its bounds.
+ZONE_PATCHES: KindTable[Callable[[Any, tuple[str, str]], tuple[str, list[Any]] | None]] = KindTable(
+    "report.plot.zone_patches", fallback=_bounds_patches)
+ZONE_PATCHES.set(BoxZone, _bounds_patches)
+
+
+@ZONE_PATCHES.register(SteppedZone)
+def _stepped_patches(zone: SteppedZone, plane: tuple[str, str]) -> tuple[str, list[Any]] | None:
+    h, v = plane
+    rects = []
+    if {zone.reference_axis, zone.limited_axis} != {h, v}:
+        return None
+    for i, reg in enumerate(zone.regions):
+        a, b = to_float(zone.region_lower(i)), to_float(reg.upto)
+        lo, hi = _finite(reg.min, -1e9), _finite(reg.max, 1e9)
+        if zone.reference_axis == h:
+            rects.append(((a, lo), b - a, hi - lo))
+        else:
+            rects.append(((lo, a), hi - lo, b - a))
+    return ("rects", rects)
+
+
+@ZONE_PATCHES.register(PolygonZone)
+def _polygon_patches(zone: PolygonZone, plane: tuple[str, str]) -> tuple[str, list[Any]] | None:
+    h, v = plane
+    if tuple(zone.plane) in ((h, v), (v, h)):
+        pts = [(to_float(p[0]), to_float(p[1])) for p in zone.vertices]
+        if tuple(zone.plane) == (v, h):
+            pts = [(y, x) for x, y in pts]
+        return ("poly", pts)
+    return _bounds_patches(zone, plane)
 
 
 def plot_zones(machine: Machine, plane: tuple[str, str] | None = None, ax: Any = None, *,

@@ -32,6 +32,7 @@ __all__ = [
     "BoxZone",
     "PolygonZone",
     "Zone",
+    "ZONE_KINDS",
     "AllowedSet",
     "Point",
     "translated",
@@ -381,6 +382,9 @@ class PolygonZone:
 
 
 Zone = Union[SteppedZone, BoxZone, PolygonZone]
+
+#: Every zone kind (the per-kind tables of nczones/zones/kinds.py are checked against this list).
+ZONE_KINDS: tuple[type, ...] = (SteppedZone, BoxZone, PolygonZone)
 
 
 @dataclass(frozen=True, slots=True)

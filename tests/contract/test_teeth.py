@@ -6,6 +6,7 @@ it to fail with a :class:`ContractViolation`.
 """
 
 import inspect
+from fractions import Fraction
 
 import pytest
 from hypothesis import Phase, given, settings
@@ -13,6 +14,7 @@ from hypothesis import Phase, given, settings
 import nczones.prover.core as core
 import nczones.prover.exact as ex
 from nczones.motion import Segment, SegmentKind
+from nczones.zones import Region, SteppedZone
 
 from .contract import ContractViolation, check_contract
 from .strategies import contract_cases
@@ -29,12 +31,18 @@ def run_property(cases, max_examples):
     prop()
 
 
-def _patched_line_violation(old: str, new: str):
-    src = inspect.getsource(ex.line_violation)
+def _patched_stepped_violation(old: str, new: str):
+    """The exact tier's stepped-table entry (``ex.LINE_VIOLATION``) with ``old`` replaced by ``new``."""
+    fn = ex.LINE_VIOLATION.of(STEP)
+    src = inspect.getsource(fn)
     assert old in src, "the prover's stepped-table encoding changed; update this injected bug"
+    src = "\n".join(line for line in src.splitlines() if not line.startswith("@"))  # not registered again
     ns = dict(vars(ex))
     exec(compile(src.replace(old, new), ex.__file__, "exec"), ns)
-    return ns["line_violation"]
+    return ns[fn.__name__]
+
+
+STEP = SteppedZone("t", "X", "Y", Fraction(0), (Region(Fraction(1)),))
 
 
 TOUCH = "touch = _all([ln.lt(r, b + d, False), ln.gt(r, a - d, i != 0)])"
@@ -43,8 +51,8 @@ TOUCH = "touch = _all([ln.lt(r, b + d, False), ln.gt(r, a - d, i != 0)])"
 def test_stepped_regions_open_at_their_bounds_are_caught(monkeypatch):
     # Bug: region i of an allow table covers upto[i-1] < r < upto[i] (its own upto left out),
     # so a motion exactly on a region boundary is never compared with that region's limits.
-    broken = _patched_line_violation(TOUCH, "touch = _all([ln.lt(r, b + d, True), ln.gt(r, a - d, True)])")
-    monkeypatch.setattr(ex, "line_violation", broken)
+    broken = _patched_stepped_violation(TOUCH, "touch = _all([ln.lt(r, b + d, True), ln.gt(r, a - d, True)])")
+    monkeypatch.setitem(ex.LINE_VIOLATION._entries, SteppedZone, broken)
     with pytest.raises(ContractViolation):
         run_property(contract_cases(axes=(("X", "Y"),), allow_kinds=("stepped",), arcs=False,
                                     pulses=("0.01",), boundary_bias=0.95, inside_biases=(0.0, 0.3)), 400)
