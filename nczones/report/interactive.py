@@ -19,14 +19,15 @@ Floats here are for drawing only; nothing feeds back into a proof.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
 
 from ..exact import to_float
 from ..machine import Machine
-from ..zones import PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
+from ..zones.kinds import KindTable
 from .figure import PathFloat, drawing_placements, relevant_planes, thin_path, where_code
 from .placement import drawing_machine, placement_label
 
@@ -108,38 +109,55 @@ def _triangles(poly: list[tuple[float, float]]) -> list[tuple[int, int, int]]:
 def _zone_solids(zone: Zone, axes: Sequence[str], lims: list[tuple[float, float]]) -> list[Any]:
     """The zone as solids in the view's axes: ("box", lo, hi) per box, ("prism", polygon, (i, j), k, lo, hi) for
     a polygon of axes i, j extruded along k; [] when it does not show in these axes."""
-    def span(k: int, lo: Any, hi: Any) -> tuple[float, float]:
-        return (lims[k][0] if lo is None else to_float(lo), lims[k][1] if hi is None else to_float(hi))
+    return ZONE_SOLIDS(zone, axes, lims)
 
+
+def _span(lims: list[tuple[float, float]], k: int, lo: Any, hi: Any) -> tuple[float, float]:
+    return (lims[k][0] if lo is None else to_float(lo), lims[k][1] if hi is None else to_float(hi))
+
+
+def _bounds_solids(zone: Zone, axes: Sequence[str], lims: list[tuple[float, float]]) -> list[Any]:
     bounds = zone.bounds()
-    if isinstance(zone, SteppedZone):
-        if zone.reference_axis not in axes or zone.limited_axis not in axes:
-            return []
-        r, m = axes.index(zone.reference_axis), axes.index(zone.limited_axis)
-        out = []
-        for i, reg in enumerate(zone.regions):
-            lo = [span(k, None, None)[0] for k in range(len(axes))]
-            hi = [span(k, None, None)[1] for k in range(len(axes))]
-            lo[r], hi[r] = to_float(zone.region_lower(i)), to_float(reg.upto)
-            lo[m], hi[m] = span(m, reg.min, reg.max)
-            out.append(("box", lo, hi))
-        return out
-    if isinstance(zone, PolygonZone):
-        if not set(zone.plane) <= set(axes):
-            return []
-        i, j = axes.index(zone.plane[0]), axes.index(zone.plane[1])
-        poly = [(to_float(v[0]), to_float(v[1])) for v in zone.vertices]
-        rest = [k for k in range(len(axes)) if k not in (i, j)]
-        if not rest:
-            return [("prism", poly, (i, j), None, 0.0, 0.0)]
-        k = rest[0]
-        bottom, top = span(k, *bounds.get(axes[k], (None, None)))
-        return [("prism", poly, (i, j), k, bottom, top)]
     if not any(a in bounds for a in axes):
         return []
-    lo = [span(k, *bounds.get(a, (None, None)))[0] for k, a in enumerate(axes)]
-    hi = [span(k, *bounds.get(a, (None, None)))[1] for k, a in enumerate(axes)]
+    lo = [_span(lims, k, *bounds.get(a, (None, None)))[0] for k, a in enumerate(axes)]
+    hi = [_span(lims, k, *bounds.get(a, (None, None)))[1] for k, a in enumerate(axes)]
     return [("box", lo, hi)]
+
+
+#: :func:`_zone_solids` per zone kind.  Fallback: the box of its bounds.
+ZONE_SOLIDS: KindTable[Callable[[Any, Sequence[str], list[tuple[float, float]]], list[Any]]] = KindTable(
+    "report.interactive.zone_solids", fallback=_bounds_solids)
+ZONE_SOLIDS.set(BoxZone, _bounds_solids)
+
+
+@ZONE_SOLIDS.register(SteppedZone)
+def _stepped_solids(zone: SteppedZone, axes: Sequence[str], lims: list[tuple[float, float]]) -> list[Any]:
+    if zone.reference_axis not in axes or zone.limited_axis not in axes:
+        return []
+    r, m = axes.index(zone.reference_axis), axes.index(zone.limited_axis)
+    out = []
+    for i, reg in enumerate(zone.regions):
+        lo = [_span(lims, k, None, None)[0] for k in range(len(axes))]
+        hi = [_span(lims, k, None, None)[1] for k in range(len(axes))]
+        lo[r], hi[r] = to_float(zone.region_lower(i)), to_float(reg.upto)
+        lo[m], hi[m] = _span(lims, m, reg.min, reg.max)
+        out.append(("box", lo, hi))
+    return out
+
+
+@ZONE_SOLIDS.register(PolygonZone)
+def _polygon_solids(zone: PolygonZone, axes: Sequence[str], lims: list[tuple[float, float]]) -> list[Any]:
+    if not set(zone.plane) <= set(axes):
+        return []
+    i, j = axes.index(zone.plane[0]), axes.index(zone.plane[1])
+    poly = [(to_float(v[0]), to_float(v[1])) for v in zone.vertices]
+    rest = [k for k in range(len(axes)) if k not in (i, j)]
+    if not rest:
+        return [("prism", poly, (i, j), None, 0.0, 0.0)]
+    k = rest[0]
+    bottom, top = _span(lims, k, *zone.bounds().get(axes[k], (None, None)))
+    return [("prism", poly, (i, j), k, bottom, top)]
 
 
 def _box_prism(lo: Sequence[float], hi: Sequence[float]) -> tuple[list[tuple[float, float]], float, float]:
