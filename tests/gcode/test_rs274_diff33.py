@@ -15,6 +15,7 @@ Each expected value is rs274's (LinuxCNC 2.9.0~pre1, ``rs274 -g``), recorded bes
 """
 from __future__ import annotations
 
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
@@ -201,3 +202,24 @@ def test_a_program_rs274_runs_forever_is_compared_up_to_where_it_got(monkeypatch
     moves, error, _ = rs274_diff.run_rs274(text, FINDING_SETUP, tmp_path, timeout=20)
     assert error == ("rs274 timed out", "") and len(moves) > 100
     assert rs274_diff.outcome(text, FINDING_SETUP, tmp_path).status == "unknown"
+
+
+@pytest.mark.parametrize("depth", ["-3.3", "-3"])
+def test_a_peck_count_off_by_a_broken_rule_is_still_a_difference(depth):
+    """R1 to Z-3.3 with Q1 is 4.3 pecks: LinuxCNC's loop (``d > bottom``) feeds to 0, -1, -2, -3 before the last
+    plunge to -3.3.  nczones's own motion stands for rs274's here (it follows that loop; the CI differential holds
+    it to rs274); the ``pecks-round`` mutant (tests/tools/rs274_mutants.py: round 4.3 to 4, one peck less) ends
+    its missing peck 0.3 above the bottom, not at a whole number of pecks from it: a difference, not the ulp
+    peck.  R1 to Z-3 is 4 pecks exactly: the mutant agrees with the loop, no difference."""
+    from tests.oracles.rs274 import AXES6, HALF_DIGIT, CanonMove, nczones_motion
+    from tests.tools.rs274_mutants import mutant
+
+    text = f"G21 G90 F100\nG0 X0 Y0 Z10\nG99 G83 X1 Y1 Z{depth} R1 Q1\nG80\nM2\n"
+    machine = machine_of(FINDING_SETUP)
+    segs, _err, _uns = nczones_motion(text, machine)
+    moves = [CanonMove(s.kind.name, tuple(s.end) + (Fraction(0),) * (len(AXES6) - len(s.end)), HALF_DIGIT)
+             for s in segs]
+    assert compare(text, machine, moves, None).status == "match"
+    with mutant("pecks-round"):
+        o = compare(text, machine, moves, None)
+    assert o.status == ("path" if depth == "-3.3" else "match"), o

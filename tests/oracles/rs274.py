@@ -358,12 +358,18 @@ def _differs(s, mv: CanonMove, names: tuple[str, ...], k: int) -> str | None:
 _PECKING = re.compile(r"G0*(73|83)(?![\d.])", re.IGNORECASE)
 
 
-def _extra_pecks(points: list[tuple[Fraction, ...]], kinds: list[str], at: int, n: int, tol: Fraction) -> bool:
-    """Whether the ``n`` straight moves from ``at`` (end points ``points``, kinds ``kinds``) stay on the line of the
-    hole the path is drilling, inside the part of it the moves before ``at`` already swept: a G73/G83 peck more or
-    less than the other side makes (LinuxCNC's peck loop compares doubles, ``peck-count-after-g49.ngc``).  The
-    hole: the moves before ``at`` back to the last one that changed an axis other than the one the skipped moves
-    move along; the swept part: the range of their end points on that axis (a continuous path covers it)."""
+def _extra_pecks(points: list[tuple[Fraction, ...]], kinds: list[str], at: int, n: int, tol: Fraction,
+                 after: tuple[Fraction, ...] | None = None) -> bool:
+    """Whether the ``n`` straight moves from ``at`` (end points ``points``, kinds ``kinds``) are a G73/G83 peck
+    more than the other side makes where the hole's depth is a whole number of pecks (LinuxCNC's peck loop
+    compares doubles an ulp off: ``peck-count-after-g49.ngc``, seed 202145): they stay on the hole's line inside
+    the part of it already swept, and each of their feeds ends at the hole's bottom or one peck above it.
+
+    The hole: the moves before ``at`` back to the last one that changed an axis other than the one the skipped
+    moves move along; the swept part: the range of their end points on that axis, with ``after`` (the point
+    both sides reach next) when it is on the line (a continuous path covers that range); the bottom: the lowest
+    of them; the peck: the step between the hole's last two feeds.  A peck count off by a fraction of a peck
+    (a broken count rule) ends its extra feed elsewhere and stays a difference."""
     if at == 0 or at + n > len(points) or any(k not in ("RAPID", "LINE") for k in kinds[at:at + n]):
         return False
     prev = points[at - 1]
@@ -371,14 +377,26 @@ def _extra_pecks(points: list[tuple[Fraction, ...]], kinds: list[str], at: int, 
     if len(moving) != 1:
         return False
     (c,) = moving
-    lo = hi = prev[c]
+
+    def on_line(p: tuple[Fraction, ...]) -> bool:
+        return all(abs(p[k] - prev[k]) <= tol for k in range(len(prev)) if k != c)
+
     b = at - 1
-    while b > 0 and all(abs(points[b - 1][k] - prev[k]) <= tol for k in range(len(prev)) if k != c):
+    while b > 0 and on_line(points[b - 1]):
         b -= 1
-        lo, hi = min(lo, points[b][c]), max(hi, points[b][c])
     if b == at - 1:
         return False
-    return all(lo - tol <= p[c] <= hi + tol for p in points[at:at + n])
+    levels = [p[c] for p in points[b:at]] + ([after[c]] if after is not None and on_line(after) else [])
+    lo, hi = min(levels), max(levels)
+    feeds = [points[k][c] for k in range(b, at) if kinds[k] == "LINE"]
+    peck = abs(feeds[-1] - feeds[-2]) if len(feeds) >= 2 else None
+    for k in range(at, at + n):
+        e = points[k][c]
+        if not lo - tol <= e <= hi + tol:
+            return False
+        if kinds[k] == "LINE" and abs(e - lo) > tol and (peck is None or abs(e - lo - peck) > tol):
+            return False
+    return True
 
 
 def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple[str, str] | None,
@@ -411,9 +429,10 @@ def compare(program: str, machine: Machine, moves: list[CanonMove], error: tuple
             # one peck more or less (G73/G83 whose depth is a whole number of pecks, from a position LinuxCNC
             # holds as a double off by an ulp): the same swept set, its moves skipped on the side that has them
             tol = moves[j].tol * 2
-            skip = next(((n, 0) for n in (1, 2, 3) if j + n < len(moves) and _extra_pecks(m_pts, m_kinds, j, n, tol)
+            skip = next(((n, 0) for n in (1, 2, 3) if j + n < len(moves)
+                         and _extra_pecks(m_pts, m_kinds, j, n, tol, m_pts[j + n])
                          and _differs(segs[i], moves[j + n], names, i) is None), None) or next(
-                ((0, n) for n in (1, 2, 3) if i + n < len(segs) and _extra_pecks(s_pts, s_kinds, i, n, tol)
+                ((0, n) for n in (1, 2, 3) if i + n < len(segs) and _extra_pecks(s_pts, s_kinds, i, n, tol, s_pts[i + n])
                  and _differs(segs[i + n], moves[j], names, i + n) is None), None)
             if skip is not None:
                 j, i, pecks = j + skip[0], i + skip[1], pecks + 1
