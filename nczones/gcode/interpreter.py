@@ -1490,11 +1490,13 @@ class Interpreter:
                 self.feed_inverse_rate = False
         if old_mode == 93 and feed_mode != 93:
             # rs274 restoring G94 over G93 F30 leaves the feed at 0 in rs274_findings/restore-g93-feed.ngc (M72)
-            # and in generator seed 7024 (M73), but restores F500 in seed 19 (a G94 F300 before the G93): the
-            # rule is not known here
+            # and in generator seed 7024 (M73), but restores F500 in seed 19 (a G94 F300 before the G93).  The rule
+            # (branch diff33): a G93 F is not the feed rate, so the rate is still the saved one in the first two,
+            # and 2.9.0~pre1's gen_settings writes F only when it differs, after the G94 that zeroed it; newer
+            # LinuxCNC writes F always (interp_convert.cc, LinuxCNC issue 1987): version-dependent
             self.unknown("M72" if w is not None else "M73", "the feed after restoring G94/G95 over G93 (M72, or "
-                         "the return of an M73 subroutine): LinuxCNC 2.9 leaves it at 0 or restores F depending on "
-                         "the state history; not modelled", w)
+                         "the return of an M73 subroutine): LinuxCNC 2.9.0~pre1 leaves it at 0 when the saved feed "
+                         "rate equals the current one, newer versions restore F; version-dependent, not modelled", w)
         if feed != old_feed and feed_mode != 93:
             # gen_settings writes " F%.1f": the double rounded to one decimal (an F below 0.05 restores F0)
             self.feed = round(Fraction(float(feed)), 1)
