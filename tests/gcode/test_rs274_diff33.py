@@ -223,3 +223,32 @@ def test_a_peck_count_off_by_a_broken_rule_is_still_a_difference(depth):
     with mutant("pecks-round"):
         o = compare(text, machine, moves, None)
     assert o.status == ("path" if depth == "-3.3" else "match"), o
+
+
+# -- a repeat around a do whose continue ran (seed 215995) ---------------------------------------------------
+
+REPEAT_DO = ("o100 repeat [1]\n#101 = 0\no101 do\n#101 = [#101 + 1]\no102 if [#101 GT 1]\no101 continue\no102 endif\n"
+             "o101 while [#101 LT 2]\nG91 G1 Z-1\nG90\no100 endrepeat\n")
+
+
+@pytest.mark.parametrize("pre", ["", MOVES], ids=["short", "vectorized"])
+def test_a_repeat_around_a_do_whose_continue_ran_is_unknown(pre):
+    """rs274 on ``G21 G90 F100`` + REPEAT_DO + ``G0 X5 / M2`` never ends: ``STRAIGHT_FEED(0, 0, -3332)`` after 10,000
+    log lines, one Z-1 feed per pass.  The ``continue`` leaves LinuxCNC 2.9's ``doing_continue`` set (the do's
+    closing ``while`` does not clear it), so the repeat's exit at ``endrepeat`` loops back and recounts: the
+    repeat runs again, forever here.  nczones ran it once (one Z-1 feed: ``safe``); now unknown (GC390)."""
+    result = verify("G21 G90 G54 F100\nG0 X0 Y0\n" + pre + REPEAT_DO + "G0 X5\nM30\n", MILL)
+    assert result.verdict.label == "unknown", result.verdict
+    assert any(r.code == "GC390" and "endrepeat after a continue in a do" in r.message for r in result.reasons), \
+        result.reasons
+
+
+@pytest.mark.parametrize("loop", ["while", "no-continue"])
+def test_a_repeat_around_a_while_continue_or_a_plain_do_is_proved(loop):
+    """A ``continue`` in a ``while`` is cleared at its ``endwhile`` (LinuxCNC's skipping endwhile resets
+    ``doing_continue``), and a ``do`` without ``continue`` sets nothing: the repeat ends as written."""
+    body = (REPEAT_DO.replace("o101 do\n", "o101 while [#101 LT 2]\n").replace("o101 while [#101 LT 2]\nG91",
+                                                                              "o101 endwhile\nG91")
+            if loop == "while" else REPEAT_DO.replace("o101 continue\n", ""))
+    result = verify("G21 G90 G54 F100\nG0 X0 Y0\n" + body + "G0 X5\nM30\n", MILL)
+    assert result.verdict.label == "safe", (result.verdict, result.reasons)
