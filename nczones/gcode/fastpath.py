@@ -1127,7 +1127,9 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     it.pos = [Fraction(int(v), den) for v in end[-1]]
     last_mode = int(mode[-1])
     it.motion = None if last_mode < 0 else last_mode * 10
-    if fpres.any():
+    if it.feed_mode == 93 and feedcheck.any():
+        it.feed_inverse_rate = True  # LinuxCNC's feed rate is now a move's length x F (Interpreter._motion_block)
+    if fpres.any() and it.feed_mode != 93:  # an F in G93 is the block's own (Interpreter: #<_feed> keeps G94's)
         last_f = Fraction(int(feed_line[-1]), den)
         it.feed = last_f / Fraction(254, 10) if inch else last_f
     if spindle[0] is not None:

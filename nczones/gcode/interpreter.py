@@ -1033,11 +1033,16 @@ class Interpreter:
             self.unset.discard("feed")
             if self.feed_mode in (94, 95):
                 self.feed = _ZERO  # LinuxCNC convert_feed_mode: G94 and G95 set the feed rate to 0
+                self.feed_inverse_rate = False
         if "F" in words:
             f = words["F"].value
             if f < 0:
                 raise self.error("GC209", f"negative feed rate {words['F'].text}; F must be 0 or more", words["F"])
-            self.feed = f
+            if self.feed_mode != 93:
+                # LinuxCNC execute_block calls convert_feed_rate only outside G93: an inverse-time F is the block's
+                # own and leaves the feed rate (#<_feed>, what M70 saves) at its G94/G95 value
+                self.feed = f
+                self.feed_inverse_rate = False
         if "S" in words:
             sv = words["S"].value
             if sv < 0:
@@ -1358,7 +1363,8 @@ class Interpreter:
             fv: Any = f.value if isinstance(f, Word) else f  # a Fraction, read through its slots
             if fv._numerator < 0:
                 return False
-            self.feed = fv
+            if self.feed_mode != 93:  # an inverse-time F is the block's own (see _execute_general)
+                self.feed = fv
         if g is not None:
             self.cycle_il = None
             self.last_cycle = None
@@ -1532,16 +1538,20 @@ class Interpreter:
             self.feed_mode = feed_mode
             if feed_mode in (94, 95):
                 self.feed = _ZERO
+                self.feed_inverse_rate = False
         if old_mode == 93 and feed_mode != 93:
             # rs274 restoring G94 over G93 F30 leaves the feed at 0 in rs274_findings/restore-g93-feed.ngc (M72)
-            # and in generator seed 7024 (M73), but restores F500 in seed 19 (a G94 F300 before the G93): the
-            # rule is not known here
+            # and in generator seed 7024 (M73), but restores F500 in seed 19 (a G94 F300 before the G93).  The rule
+            # (branch diff33): a G93 F is not the feed rate, so the rate is still the saved one in the first two,
+            # and 2.9.0~pre1's gen_settings writes F only when it differs, after the G94 that zeroed it; newer
+            # LinuxCNC writes F always (interp_convert.cc, LinuxCNC issue 1987): version-dependent
             self.unknown("M72" if w is not None else "M73", "the feed after restoring G94/G95 over G93 (M72, or "
-                         "the return of an M73 subroutine): LinuxCNC 2.9 leaves it at 0 or restores F depending on "
-                         "the state history; not modelled", w)
+                         "the return of an M73 subroutine): LinuxCNC 2.9.0~pre1 leaves it at 0 when the saved feed "
+                         "rate equals the current one, newer versions restore F; version-dependent, not modelled", w)
         if feed != old_feed and feed_mode != 93:
             # gen_settings writes " F%.1f": the double rounded to one decimal (an F below 0.05 restores F0)
             self.feed = round(Fraction(float(feed)), 1)
+            self.feed_inverse_rate = False
         # " S%.0f" if the speed differs; M3/M4/M5 (gen_m_codes) if the direction does; None: not followed
         if spindle_speed is None or old_speed is None:
             self.spindle_speed = None
@@ -1731,12 +1741,19 @@ class Interpreter:
             return
         if self.unsupported:
             return
+        if self.feed_mode == 93 and motion != 0:
+            # LinuxCNC's inverse_time_rate_straight/_arc set the feed rate to the move's length x F (a double of a
+            # square root): #<_feed> reads it until the next F in G94/G95 or a G94/G95
+            self.feed_inverse_rate = True
         if motion in (10, 20, 30):
             self._feed_rule(words, "g1" if motion == 10 else "arc")
         if motion in (0, 10):
             if g53 and not self.absolute:
                 raise self.error("GC207", "G53 cannot be used in incremental mode (G91)", axis_words[0][1] if axis_words else None)
             if not axis_words:
+                return
+            if g53 and any(i == self.tool_axis for i, _ in axis_words) and self.tool_length_units_stale(
+                    "G53 (a move of the tool axis in machine coordinates)", axis_words[0][1]):
                 return
             self.note_assumed(("units", "distance") if g53 else ("units", "distance", "offset"))
             end, deps = self.program_target(axis_words, g53)
@@ -1810,6 +1827,10 @@ class Interpreter:
             return
         self.note_assumed(("units", "distance", "offset"))
         start = list(self.pos)
+        # after G84 outside G17 the machine is not where the interpreter believes (_g84_swapped): RIGID_TAP
+        # feeds from where the machine is and reverses back to there (rs274: the tap's second STRAIGHT_FEED ends
+        # at the G84 retract's end), while the interpreter's position stays at its own start
+        actual = self.machine_at
         u0 = list(self.prerotation_xy) if self.prerotation_xy is not None else None
         end, deps = self.program_target(axis_words, False)
         if motion == 330:
@@ -1818,7 +1839,11 @@ class Interpreter:
         sdeps = [dict(d) for d in self.dep_pos] if self.track else None
         self.emit(SegmentKind.LINE, end, derived="G33.1 tap", end_deps=deps)
         self.prerotation_xy_next = u0
-        self.emit(SegmentKind.LINE, start, derived="G33.1 retract", end_deps=sdeps)
+        self.emit(SegmentKind.LINE, list(actual) if actual is not None else start, derived="G33.1 retract",
+                  end_deps=sdeps)
+        if actual is not None:
+            self.pos = start
+            self.machine_at = actual
 
     def check_feed(self, any_mode: bool = False) -> None:
         """GC305 for a feed motion at feed rate 0: in G94, or in every mode (``any_mode``, LinuxCNC's G95)."""
@@ -1945,6 +1970,9 @@ class Interpreter:
         m = self.machine
         if self.dialect != "linuxcnc":
             return  # LinuxCNC INI settings (a Fanuc tool change: specs/fanuc.md)
+        if (getattr(m, "tool_change_quill_up", False) or getattr(m, "tool_change_at_g30", False)) \
+                and self.tool_length_units_stale("M6 (its move to the tool change position)", None):
+            return
         if getattr(m, "tool_change_quill_up", False) and "Z" in self.index:
             iz = self.index["Z"]
             end = list(self.pos)
@@ -1971,10 +1999,27 @@ class Interpreter:
             self.emit(SegmentKind.RAPID, end, derived="M6 to the tool change position (TOOL_CHANGE_POSITION)",
                       end_deps=deps)
 
+    def tool_length_units_stale(self, what: str, w: Word | None) -> bool:
+        """Unknown (True) for ``what`` after a G20/G21 made while a tool length is applied, on LinuxCNC.
+
+        LinuxCNC 2.9's rs274 re-reads the applied tool length at a units change without converting it (see
+        ``_tool_length``); the interpreter's computations that use it then put the tool axis elsewhere than
+        the program says: G43/G49, ``find_relative`` (G28/G30's home, M6's quill up and G30 position) and
+        ``find_ends`` of a G53 move of the tool axis (interp_find.cc)."""
+        if self.dialect != "linuxcnc" or self.tlo == 0 or self.tlo_inch is None or self.tlo_inch == self.inch:
+            return False
+        self.unknown(what.split()[0], f"{what} after a G20/G21 while a tool length is applied: LinuxCNC 2.9 keeps "
+                     "that length in the old units and moves the tool axis by the unconverted number; not modelled",
+                     w)
+        return True
+
     def _home(self, k: int, axis_words: list[tuple[int, Word]], w: Word) -> None:
         self.note_assumed(("units", "distance", "offset"))
         inter, deps = self.program_target(axis_words, False)
         self.emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
+        if (not axis_words or any(i == self.tool_axis for i, _ in axis_words)) \
+                and self.tool_length_units_stale(f"{gname(k)} (its home move of the tool axis)", w):
+            return
         if axis_words and self.rot[self.wcs] and self.dialect == "linuxcnc" and not self.unsupported:
             # rs274 (rs274_findings/rotated-g28-axis.ngc): G28 X-8 after G10 L2 P0 Y6 R-39.9 homes X in the
             # rotated program frame, so machine Y moves too (nczones homed machine X only); not modelled
@@ -2094,6 +2139,9 @@ class Interpreter:
         if P.denominator != 1 or P < 1:  # LinuxCNC check_g_codes: P >= 1 with L1, L10 and L11
             raise self.error("GC209", f"G10 L{L} {pw.text}: P must be a positive integer tool number", pw)
         tool = int(P)
+        if L != 1 and any(i == self.tool_axis for i, _ in axis_words) and self.tool_length_units_stale(
+                f"G10 L{L} (find_current_in_system_without_tlo adds the applied length)", pw):
+            return
         if rw is not None:
             # convert_setup_tool: the R word is the tool's radius (diameter = 2 R, in the control's units): what
             # G41/G42 D and #5410 read from then on
@@ -2346,6 +2394,7 @@ class Interpreter:
         self.last_cycle = motion
 
     last_cycle: int | None = None
+    feed_inverse_rate = False  # a G93 feed move set LinuxCNC's feed rate to its length x F (#<_feed> unknown)
     _cycle_il_deps: dict = {}
     spindle_slot_stale = False  # T0 M6 or M61 left the spindle slot's table entry behind the tool number
     _cycle_il_axis = 0

@@ -371,6 +371,7 @@ class Runner:
         self.control_lines: dict[tuple, tuple[int, str]] = {}
         #: the first break/continue that ran (keyword, line): a loop beginning after it is unknown
         self.jumped: tuple[str, int] | None = None
+        self.do_continued: int | None = None  # the line of a continue that ran in a do loop (LinuxCNC's flag stays)
         self.fanuc: dict[int, tuple[int, int]] = {}  # O number -> (pos, lineno) of the line after it
         self.scanned_all = False
         self.cache: dict[int, tuple] = {}  # offset -> (parsed line, line, next offset)
@@ -1187,6 +1188,13 @@ class Runner:
             if loop.remaining > 0:
                 self.count(loop, lineno, line)
                 return loop.head
+            if self.do_continued is not None:
+                # a continue in a do leaves LinuxCNC 2.9's doing_continue set (the do's closing while does not
+                # clear it): the repeat's last endrepeat then loops back and the whole repeat runs again (rs274
+                # never ends on generator seed 215995, a repeat [1] around such a do)
+                raise self.unsupported("GC390", f"{_show(label)} endrepeat after a continue in a do loop (line "
+                                       f"{self.do_continued}): LinuxCNC 2.9 runs the repeat again (its loop state "
+                                       "is left behind); not modelled", lineno, line, col, end)
             frame.loops.pop()
             return here
         if kw in ("break", "continue"):
@@ -1195,6 +1203,8 @@ class Runner:
             del frame.ifs[loop.ifs:]
             if self.jumped is None:
                 self.jumped = (kw, lineno)
+            if kw == "continue" and loop.kind == "do" and self.do_continued is None:
+                self.do_continued = lineno
             if kw == "continue":
                 if loop.kind == "while":
                     return loop.head

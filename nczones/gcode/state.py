@@ -342,7 +342,8 @@ def linuxcnc_state_parameters() -> StateTable:
     add("_ccomp", "cutter compensation (400 off, 410 left, 420 right)", lambda it: it.state_ccomp())
     add("_retract_r_plane", "G99 active (retract to R)", lambda it: 1 if it.retract_r else 0)
     add("_retract_old_z", "G98 active (retract to the initial level)", lambda it: 0 if it.retract_r else 1)
-    add("_feed", "programmed feed rate (program units)", lambda it: it.feed)
+    add("_feed", "feed rate (program units; after a feed move in G93 LinuxCNC's is that move's length x F, "
+        "not followed)", lambda it: None if getattr(it, "feed_inverse_rate", False) else it.feed)
     # G7/G8 live in the lathe interpreter (nczones.gcode.lathe); the others have no diameter mode (G8)
     add("_lathe_diameter_mode", "G7 active", lambda it: 1 if getattr(it, "diameter_mode", False) else 0)
     add("_lathe_radius_mode", "G8 active", lambda it: 0 if getattr(it, "diameter_mode", False) else 1)

@@ -26,6 +26,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 from collections import Counter
 from fractions import Fraction
 from pathlib import Path
@@ -634,32 +635,61 @@ def generate(seed: int) -> tuple[str, Setup]:
 
 
 def machine_of(setup: Setup):
-    """The nczones machine of a setup: cutter compensation as LinuxCNC, the table's D0.1 (inch) diameters."""
+    """The nczones machine of a setup: cutter compensation and the arc acceptance rule as LinuxCNC (nczones's
+    default 0.002 mm refuses I/J/K arcs LinuxCNC runs: seed 202870), the table's D0.1 (inch) diameters."""
     axes, tools, offsets = setup
     text = machine_text(axes, tools, offsets)
-    text = text.replace('pulse = "0.0001"\n', 'pulse = "0.0001"\ncutter_compensation = "linuxcnc"\n', 1)
+    text = text.replace('pulse = "0.0001"\n', 'pulse = "0.0001"\ncutter_compensation = "linuxcnc"\n'
+                        'arc_tolerance = "linuxcnc"\n', 1)
     diameters = "\n".join(f'T{n} = "2.54"' for n in (*sorted(tools), 99))
     return parse_machine(text + f"[tool_diameters]\n{diameters}\n")
 
 
+#: The most of an rs274 log read (bytes): a program LinuxCNC runs forever (seed 202426: a do loop after a continue)
+#: prints about 2.6 MB a second; the motion before it is compared, the rest is not read.
+LOG_LIMIT = 4_000_000
+
+
 def run_rs274(program: str, setup: Setup, workdir: Path,
               timeout: float = 20) -> tuple[list[CanonMove], tuple[str, str] | None, str]:
-    """rs274's motions, error and raw log of one program (a fresh tool table and parameter file)."""
+    """rs274's motions, error and raw log of one program (a fresh tool table and parameter file).
+
+    A run that does not end within ``timeout`` seconds or prints more than ``LOG_LIMIT`` bytes is stopped: its
+    error is ``("rs274 timed out", "")`` and its motions are those of the log up to there (its last, possibly cut,
+    line dropped), so nczones is compared up to where rs274 got."""
     _axes, tools, offsets = setup
     (workdir / "prog.ngc").write_text(program)
     (workdir / "tool.tbl").write_text(tool_table(tools))
     for stale in workdir.glob("*.var*"):
         stale.unlink()
     (workdir / "prog.var").write_text(var_file(offsets))
-    try:
-        # HOME: rs274 keeps its tool table in $HOME/.tool.mmap, shared by every rs274 of the user: two runs at
-        # once read each other's tools ("Requested tool 3 not found in the tool table")
-        env = {**os.environ, "HOME": str(workdir)}
-        p = subprocess.run([RS274, "-t", "tool.tbl", "-v", "prog.var", "-g", "prog.ngc"], cwd=workdir, env=env,
-                           capture_output=True, text=True, errors="replace", timeout=timeout, stdin=subprocess.DEVNULL)
-    except subprocess.TimeoutExpired:
-        return [], ("rs274 timed out", ""), ""
-    return canon_motion(p.stdout), canon_error(p.returncode, p.stderr), p.stdout
+    # HOME: rs274 keeps its tool table in $HOME/.tool.mmap, shared by every rs274 of the user: two runs at
+    # once read each other's tools ("Requested tool 3 not found in the tool table")
+    env = {**os.environ, "HOME": str(workdir)}
+    out_path, err_path = workdir / "rs274.out", workdir / "rs274.err"
+    with out_path.open("wb") as out, err_path.open("wb") as err:
+        p = subprocess.Popen([RS274, "-t", "tool.tbl", "-v", "prog.var", "-g", "prog.ngc"], cwd=workdir, env=env,
+                             stdout=out, stderr=err, stdin=subprocess.DEVNULL)
+        deadline = time.monotonic() + timeout
+        stopped = False
+        while True:
+            try:
+                p.wait(timeout=0.05)  # returns as soon as rs274 ends
+                break
+            except subprocess.TimeoutExpired:
+                if time.monotonic() > deadline or out_path.stat().st_size > LOG_LIMIT:
+                    p.kill()
+                    p.wait()
+                    stopped = True
+                    break
+    with out_path.open("rb") as f:
+        raw = f.read(LOG_LIMIT)
+    log = raw.decode(errors="replace")
+    if stopped:
+        log = log[:log.rfind("\n") + 1]
+        return canon_motion(log), ("rs274 timed out", ""), log
+    stderr = err_path.read_bytes().decode(errors="replace")
+    return canon_motion(log), canon_error(p.returncode, stderr), log
 
 
 def outcome(program: str, setup: Setup, workdir: Path) -> Outcome:

@@ -47,9 +47,9 @@ def _offset_g92(original):
 
 
 def _restore_distance(original):
-    def restore(self, snap):
+    def restore(self, snap, *rest):  # _restore_modal(snap, w) since M73's return was modelled
         keep = self.absolute
-        original(self, snap)
+        original(self, snap, *rest)
         self.absolute = keep
     return restore
 
