@@ -710,10 +710,15 @@ def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange,
                         report(s.span.line)
                         last_reported[:] = [s.span.line]
 
+    from .blend import CornerCheck
     from .core import verify_segments
 
-    result = verify_segments(with_text(run), machine, margin=margin, params=ranges, engine=engine,
+    # the corners the control may round (specs/path-modes.md), proved as the motion passes
+    corners = CornerCheck(machine, margin, ranges, run.interpreter.path_modes)
+    result = verify_segments(corners.watch(with_text(run)), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file, limits=limits, profile=profile)
+    if not result.interrupted:
+        result = replace(result, reasons=result.reasons + tuple(corners.finish()))
     if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
         report(last_reported[0])
     # fill the source text of violations and reasons (column chunks carry only line numbers)

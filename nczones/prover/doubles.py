@@ -34,7 +34,16 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
 
     The whole program's box first; a box that does not fit is split in :data:`SPLIT` (the first time, in
     boxes of :data:`FIRST_BOX` motions).
+
+    Corner blending (``specs/path-modes.md``): the pass's programs run in the machine's start-up path mode
+    (a G61 or G64 in the text declines).  In G64 without tolerance a rounded corner between two straight
+    motions stays in the box of the two (it uses at most half of each), so every box also holds the motion
+    after its last one: each corner is in some box.  With ``path_tolerance`` (``G64 P p``, whose Q is p) the
+    path stays within ``2 p`` of the programmed one: the margin grows by that much.
     """
+    blending = machine.path_mode == "G64"
+    if blending and machine.path_tolerance:
+        margin += 2 * machine.path_tolerance
     allowed = machine.allowed
     zero = Fraction(0)
     todo = [(1, path.motions)] if path.motions else []
@@ -44,7 +53,7 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         boxes += 1
         if boxes > max_boxes:
             return None
-        lo, hi = path.enclosure(first, last)
+        lo, hi = path.enclosure(first, min(last + 1, path.motions) if blending else last)
         if box_fits(allowed, lo, hi, margin, zero):
             continue
         if first == last:
