@@ -46,6 +46,9 @@ DEPTH = 5
 SPLIT = 16
 #: At most this many corner reasons per run (the rest are counted).
 MAX_REASONS = 20
+#: How much of each straight motion a LinuxCNC blend may use (``BLEND_DIST_FRACTION``, specs/path-modes.md).
+#: The column screen's boxes lie in the box of the two motions whatever this is; the exact regions use it.
+BLEND_FRACTION = Fraction(1, 2)
 
 F0 = Fraction(0)
 Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
@@ -202,8 +205,9 @@ class CornerCheck:
         """None when the no-tolerance corner region fits, else a part of it that does not."""
         c = a.end
         if _linear(a, self.dogleg) and _linear(b, self.dogleg) and b.start == c:
-            m1 = tuple((s + e) / 2 for s, e in zip(a.start, a.end))
-            m2 = tuple((s + e) / 2 for s, e in zip(b.start, b.end))
+            f = BLEND_FRACTION
+            m1 = tuple(e + f * (s - e) for s, e in zip(a.start, a.end))
+            m2 = tuple(s + f * (e - s) for s, e in zip(b.start, b.end))
             d1 = tuple(m - x for m, x in zip(m1, c))
             d2 = tuple(m - x for m, x in zip(m2, c))
             return self._refine(c, d1, d2, F0, Fraction(1), F0, Fraction(1), tls, DEPTH)
