@@ -18,8 +18,7 @@ from hypothesis import strategies as st
 from nczones.machine import parse_machine
 from nczones.prover import blend as blend_module
 from nczones.prover import verify_text
-
-from oracles.blend import blend_arc, parabolic_blend
+from tests.oracles.blend import blend_arc, parabolic_blend
 
 MACHINE = """
 [machine]
