@@ -648,7 +648,7 @@ class Interpreter:
             return PathMode(False, None, _ZERO, "linuxcnc", machine.path_mode)
         tol = machine.path_tolerance
         if tol:
-            return PathMode(True, tol, tol, "linuxcnc", f"G64 P{tol}")
+            return PathMode(True, tol, tol, "linuxcnc", f"G64 P{fmt_number(tol)}")
         return PathMode(True, None, _ZERO, "linuxcnc", "G64")
 
     def set_path_mode(self, mode: PathMode) -> None:

@@ -71,9 +71,7 @@ class CornerCheck:
         # parameter ranges move every position by at most their size: the boxes grow by that much
         self.widen = sum((max(abs(r.lo), abs(r.hi)) for r in ranges), F0)
         self.modes = modes
-        # a forbid box without interior (min = max on an axis) forbids nothing: left out of the box test
-        self.zones = tuple(z for z in self.allowed.zones if not (
-            z.forbid and any(lo is not None and lo == hi for _a, lo, hi in getattr(z, "limits", ()))))
+        self.zones = self.allowed.zones
         self.reasons: list[Reason] = []
         self.more = 0
         self.corners = 0
@@ -185,7 +183,7 @@ class CornerCheck:
             if failed is None:
                 return
         if bound is not None:
-            bad = self._near(a, tls, bound) or self._near(b, tls, bound)
+            bad = self._near(a, tls, mode, True) or self._near(b, tls, mode, False)
             if bad is None:
                 return
             failed = failed or bad
@@ -239,12 +237,19 @@ class CornerCheck:
                     return bad
         return None
 
-    def _near(self, seg: Segment, tls: tuple[Fraction, Fraction], bound: Fraction) -> Box | None:
-        """None when every point within ``bound`` of ``seg`` fits (pieces of a line refined), else a piece."""
+    def _near(self, seg: Segment, tls: tuple[Fraction, Fraction], mode: PathMode, end: bool) -> Box | None:
+        """None when every point the control may move through near this corner on ``seg``'s side fits, else a
+        part that may not.  A blend keeps within the tolerance p of the half of ``seg`` at the corner
+        (``end``: the corner is its end); naive-CAM merging (q > 0, feeds only: ``STRAIGHT_TRAVERSE`` flushes
+        the chain) may replace the whole motion by a chord within q of it, blended within p."""
+        tol = mode.tolerance or F0
+        whole = mode.naive > 0 and seg.kind is not SegmentKind.RAPID
+        bound = tol + mode.naive if whole else tol
         if _linear(seg, self.dogleg):
             d = tuple(e - s for s, e in zip(seg.start, seg.end))
-            return self._near_line(seg.start, d, F0, Fraction(1), tls, bound, DEPTH + 1)
-        box = _piece_box(seg)
+            t0, t1 = (F0, Fraction(1)) if whole else ((Fraction(1, 2), Fraction(1)) if end else (F0, Fraction(1, 2)))
+            return self._near_line(seg.start, d, t0, t1, tls, bound, DEPTH + 1)
+        box = _piece_box(seg) if whole else _half_box(seg, self.dogleg, end)
         if box is None:
             return (seg.start, seg.end)
         return None if self._fits(box, tls, bound) else box

@@ -667,6 +667,8 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
 
         if isinstance(z, BoxZone):
             if z.forbid:
+                if any(lo_ is not None and lo_ == hi_ for _a, lo_, hi_ in z.limits):
+                    continue  # no interior: forbids nothing
                 if not any(
                     (hi_ is not None and rng(a)[0] >= hi_) or (lo_ is not None and rng(a)[1] <= lo_)
                     for a, lo_, hi_ in z.limits
@@ -683,6 +685,8 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
             if z.forbid:
                 for i in reachable(z, r0, r1):
                     reg = z.regions[i]
+                    if reg.min is not None and reg.min == reg.max:
+                        continue  # a flat row has no interior
                     if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
                         return False
             else:
