@@ -718,7 +718,7 @@ def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange,
     result = verify_segments(corners.watch(with_text(run)), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file, limits=limits, profile=profile)
     if not result.interrupted:
-        result = replace(result, reasons=result.reasons + tuple(corners.finish()))
+        result = replace(result, reasons=result.reasons + tuple(corners.finish(v.block for v in result.violations)))
     if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
         report(last_reported[0])
     # fill the source text of violations and reasons (column chunks carry only line numbers)

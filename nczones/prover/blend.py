@@ -79,6 +79,7 @@ class CornerCheck:
         self.prev_stop = True  # no corner before the first motion
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
         self._seen: set[str] = set()
+        self._blocks: list[tuple[int, int]] = []  # the blocks of each reason's two motions
 
     # ------------------------------------------------------------------ the stream
     def watch(self, chunks: Iterable[Any]) -> Iterator[Any]:
@@ -96,9 +97,15 @@ class CornerCheck:
                 for seg in chunk.segments():
                     self._segment(seg)
 
-    def finish(self) -> list[Reason]:
-        """The reasons (VF208) after the last chunk."""
+    def finish(self, violating: Iterable[int] = ()) -> list[Reason]:
+        """The reasons (VF208) after the last chunk; a corner next to a ``violating`` block (index) is left
+        out: the verdict is ``unsafe`` there anyway and the violation names the block."""
         self._close_stretch()
+        bad = set(violating)
+        if bad:
+            kept = [(r, blocks) for r, blocks in zip(self.reasons, self._blocks) if bad.isdisjoint(blocks)]
+            self.reasons = [r for r, _b in kept]
+            self._blocks = [b for _r, b in kept]
         if self.more:
             self.reasons.append(Reason(f"{BLEND_CODE}: {self.more} more blended corner(s) could not be proved inside "
                                        "the allowed set", None, None, BLEND_CODE))
@@ -289,7 +296,7 @@ class CornerCheck:
         text = ""
         if box is not None:
             text = " may pass " + " ".join(
-                f"{n}{format_decimal(lo)}" if lo == hi else f"{n}{format_decimal(lo)}..{format_decimal(hi)}"
+                f"{n}{format_decimal(lo, 4)}" if lo == hi else f"{n}{format_decimal(lo, 4)}..{format_decimal(hi, 4)}"
                 for n, lo, hi in zip(self.axes, box[0], box[1]))
             tls = (a.tool_length, b.tool_length)
             hit = [z for z in self.zones if not self._fits(box, tls, F0, zones=(z,))][:3]
@@ -297,6 +304,7 @@ class CornerCheck:
                 zone = ", " + ", ".join(f"{'inside' if z.forbid else 'outside'} `{z.name}`" for z in hit)
         msg = f"{BLEND_CODE}: the blend between {where} ({mode.code}){text}{zone}: {why}"
         self.reasons.append(Reason(msg, b.span, b.block, BLEND_CODE))
+        self._blocks.append((a.block, b.block))
 
     # ------------------------------------------------------------------ column chunks (numpy screen)
     def _columns(self, chunk: MotionChunk) -> None:
@@ -423,6 +431,30 @@ def _piece_box(seg: Segment) -> Box | None:
         (xl, xh), (yl, yh) = g.plane_bbox()
         lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
         lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = xl, xh, yl, yh
+        return tuple(lo), tuple(hi)
+    if seg.kind is SegmentKind.SPLINE:
+        # a NURBS curve with positive weights lies in the convex hull of its control points
+        extra = dict(seg.extra)
+        control, weights = extra.get("control"), extra.get("weights")
+        if not control or not weights or any(w <= 0 for w in weights):  # type: ignore[union-attr]
+            return None
+        pts = [seg.start, seg.end, *control]  # type: ignore[misc]
+        return tuple(map(min, *pts)), tuple(map(max, *pts))
+    if seg.kind is SegmentKind.DEVELOPED_ARC:
+        from ..cylinder import cylinder_of, developed_arc_of
+
+        info = cylinder_of(seg)
+        try:
+            arc = developed_arc_of(seg)
+        except ValueError:
+            return None
+        assert info is not None  # developed_arc_of needs it
+        iz, ic = seg.axes.index(info[0]), seg.axes.index(info[1])
+        lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+        for k in range(4):
+            z, _s, c = arc.box(Fraction(k, 4), Fraction(k + 1, 4))
+            lo[iz], hi[iz] = min(lo[iz], z.lo), max(hi[iz], z.hi)
+            lo[ic], hi[ic] = min(lo[ic], c.lo), max(hi[ic], c.hi)
         return tuple(lo), tuple(hi)
     return None
 
