@@ -44,6 +44,10 @@ BLEND_CODE = "VF208"
 DEPTH = 5
 #: Screened corner boxes split in this many parts when their union does not fit.
 SPLIT = 16
+#: The integer scale of the screen of object segments (coordinates that are multiples of 1/SCALE).
+SCALE = 10**15
+#: Box tests the exact refinement of a run may spend; past them a corner that does not fit at once is unknown.
+MAX_TESTS = 200_000
 #: At most this many corner reasons per run (the rest are counted).
 MAX_REASONS = 20
 #: How much of each straight motion a LinuxCNC blend may use (``BLEND_DIST_FRACTION``, specs/path-modes.md).
@@ -72,9 +76,21 @@ class CornerCheck:
         self.widen = sum((max(abs(r.lo), abs(r.hi)) for r in ranges), F0)
         self.modes = modes
         self.zones = self.allowed.zones
+        # the axes some zone constrains: screening boxes are computed on them only (others stay 0)
+        named: set[str] = set()
+        for z in self.zones:
+            named.update(a for a, _lo, _hi in getattr(z, "limits", ()))
+            named.update(getattr(z, "plane", ()))
+            named.update(a for a in (getattr(z, "reference_axis", None), getattr(z, "limited_axis", None)) if a)
+        if machine.allowed.tool_axis:
+            named.add(machine.allowed.tool_axis)
+        self.rel = [i for i, a in enumerate(self.axes) if a in named]
         self.reasons: list[Reason] = []
         self.more = 0
         self.corners = 0
+        self.tests = 0  # box tests so far (MAX_TESTS)
+        self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer points, bound)
+        self._int_cache: dict[int, Any] = {}
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
@@ -87,7 +103,9 @@ class CornerCheck:
         for chunk in chunks:
             yield chunk
             if isinstance(chunk, MotionChunk) and chunk.scale is not None:
+                self._flush()
                 self._columns(chunk)
+                self._flush()
             elif isinstance(chunk, MotionChunk):
                 for seg in chunk.objects or ():
                     self._segment(seg)
@@ -96,10 +114,13 @@ class CornerCheck:
             else:
                 for seg in chunk.segments():
                     self._segment(seg)
+            if len(self.pending) >= 4096:
+                self._flush()
 
     def finish(self, violating: Iterable[int] = ()) -> list[Reason]:
         """The reasons (VF208) after the last chunk; a corner next to a ``violating`` block (index) is left
         out: the verdict is ``unsafe`` there anyway and the violation names the block."""
+        self._flush()
         self._close_stretch()
         bad = set(violating)
         if bad:
@@ -131,7 +152,7 @@ class CornerCheck:
             return
         prev = self.prev
         if prev is not None and not self.prev_stop:
-            self._corner(prev, seg, self.mode_of(prev.block))
+            self._queue(prev, seg, self.mode_of(prev.block))
         mode = self.mode_of(seg.block)
         self.prev, self.prev_stop = seg, not mode.blend
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
@@ -155,6 +176,108 @@ class CornerCheck:
                     lo[i] = min(lo[i], box[0][i])
                     hi[i] = max(hi[i], box[1][i])
             self._close_stretch()
+
+    def _queue(self, a: Segment, b: Segment, mode: PathMode) -> None:
+        """A corner to prove: screened with others first (:meth:`_flush`).
+
+        The common corner (two straight motions, LinuxCNC) is kept as integers (``SCALE``) on the zones'
+        axes: the box of its three points, grown by the mode's bound when it has one."""
+        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg) and mode.dialect == "linuxcnc":
+            bound = mode.bound()
+            if bound is not None or not mode.naive:
+                pts = [self._ints(a.start), self._ints(a.end), self._ints(b.end)]
+                if None not in pts:
+                    self.pending.append((a, b, mode, None, pts, bound or F0))
+                    return
+        box = self._screen_box(a, b, mode)
+        if box is None:
+            self._corner(a, b, mode)
+        else:
+            self.pending.append((a, b, mode, box, None, F0))
+
+    def _ints(self, p: tuple[Fraction, ...]) -> list[int] | None:
+        """``p`` on the zones' axes times ``SCALE`` (None when a coordinate is not a multiple of 1/SCALE)."""
+        got = self._int_cache.get(id(p))
+        if got is not None and got[0] is p:
+            return got[1]
+        out = []
+        for i in self.rel:
+            x = p[i]
+            d = x.denominator
+            if SCALE % d:
+                return None
+            out.append(x.numerator * (SCALE // d))
+        self._int_cache[id(p)] = (p, out)
+        return out
+
+    def _screen_box(self, a: Segment, b: Segment, mode: PathMode) -> Box | None:
+        """A box holding every enclosure :meth:`_corner` may try for this corner (None: prove it alone).
+
+        No tolerance: two straight motions' region lies in the box of the two (it uses at most half of each:
+        each coordinate of ``C + (M1 - C) + (M2 - C)`` is between the two motions' far ends); other motions'
+        region is the Minkowski sum of their half boxes less ``C``.  With a bound: both motions' boxes grown
+        by it."""
+        if mode.dialect == "fanuc" and mode.tolerance is None:
+            return None
+        bound = mode.bound()
+        if bound is None and mode.naive:
+            return None
+        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg):
+            # the common case, on the zones' axes only
+            lo, hi = [F0] * len(self.axes), [F0] * len(self.axes)
+            for i in self.rel:
+                x, y, z = a.start[i], a.end[i], b.end[i]
+                lo[i], hi[i] = min(x, y, z), max(x, y, z)
+                if bound:
+                    lo[i] -= bound
+                    hi[i] += bound
+            return tuple(lo), tuple(hi)
+        if bound is None:
+            ba, bb = _half_box(a, self.dogleg, end=True), _half_box(b, self.dogleg, end=False)
+            if ba is None or bb is None:
+                return None
+            c = a.end
+            return (tuple(x + y - z for x, y, z in zip(ba[0], bb[0], c)),
+                    tuple(x + y - z for x, y, z in zip(ba[1], bb[1], c)))
+        pa, pb = _piece_box(a), _piece_box(b)
+        if pa is None or pb is None:
+            return None
+        g = bound or F0
+        return tuple(min(x, y) - g for x, y in zip(pa[0], pb[0])), tuple(max(x, y) + g for x, y in zip(pa[1], pb[1]))
+
+    def _flush(self) -> None:
+        """Prove the queued corners: the box of many at once, halves of what does not fit, one by one at last."""
+        items, self.pending = self.pending, []
+        self._int_cache = {}
+        todo = [(0, len(items))] if items else []
+        n = len(self.axes)
+        while todo:
+            lo_i, hi_i = todo.pop()
+            group = items[lo_i:hi_i]
+            tls = {x for a, b, *_r in group for x in (a.tool_length, b.tool_length)}
+            if len(tls) == 1:
+                lo, hi = [F0] * n, [F0] * n
+                ints = [e for e in group if e[4] is not None]
+                boxes = [e[3] for e in group if e[4] is None]
+                g = max(e[5] for e in group)
+                for k, i in enumerate(self.rel):
+                    cand_lo, cand_hi = [], []
+                    if ints:
+                        cand_lo.append(Fraction(min(min(q[k] for q in e[4]) for e in ints), SCALE) - g)
+                        cand_hi.append(Fraction(max(max(q[k] for q in e[4]) for e in ints), SCALE) + g)
+                    if boxes:
+                        cand_lo.append(min(box[0][i] for box in boxes))
+                        cand_hi.append(max(box[1][i] for box in boxes))
+                    lo[i], hi[i] = min(cand_lo), max(cand_hi)
+                if self._fits((tuple(lo), tuple(hi)), tls, F0):
+                    self.corners += len(group)
+                    continue
+            if len(group) == 1:
+                a, b, mode, *_r = group[0]
+                self._corner(a, b, mode)
+                continue
+            size = -(-len(group) // SPLIT)
+            todo.extend((x, min(x + size, hi_i)) for x in range(lo_i, hi_i, size))
 
     def _stop(self) -> None:
         self.prev_stop = True
@@ -234,7 +357,7 @@ class CornerCheck:
         box = (tuple(lo), tuple(hi))
         if self._fits(box, tls, F0):
             return None
-        if depth == 0:
+        if depth == 0 or self.tests > MAX_TESTS:
             return box
         am, bm = (a0 + a1) / 2, (b0 + b1) / 2
         for aa, ab in ((a0, am), (am, a1)):
@@ -268,13 +391,14 @@ class CornerCheck:
         box = (tuple(map(min, p, q)), tuple(map(max, p, q)))
         if self._fits(box, tls, bound):
             return None
-        if depth == 0:
+        if depth == 0 or self.tests > MAX_TESTS:
             return box
         tm = (t0 + t1) / 2
         return (self._near_line(s, d, t0, tm, tls, bound, depth - 1)
                 or self._near_line(s, d, tm, t1, tls, bound, depth - 1))
 
     def _fits(self, box: Box, tls: Iterable[Fraction], extra: Fraction, zones: Any = None) -> bool:
+        self.tests += 1
         w = self.widen
         lo = {a: x - w for a, x in zip(self.axes, box[0])}
         hi = {a: x + w for a, x in zip(self.axes, box[1])}
