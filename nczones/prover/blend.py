@@ -199,7 +199,8 @@ class CornerCheck:
         """``p`` on the zones' axes times ``SCALE`` (None when a coordinate is not a multiple of 1/SCALE)."""
         got = self._int_cache.get(id(p))
         if got is not None and got[0] is p:
-            return got[1]
+            cached: list[int] = got[1]
+            return cached
         out = []
         for i in self.rel:
             x = p[i]
@@ -485,6 +486,7 @@ class CornerCheck:
             h_hi = np.where(lin, np.maximum(mid, 2 * starts), 2 * hi)
             c_lo = t_lo[i] + h_lo[j] - 2 * ends[i]
             c_hi = t_hi[i] + h_hi[j] - 2 * ends[i]
+            assert chunk.scale is not None  # a column chunk
             scale2 = 2 * 10**chunk.scale
             bounds = [m.bound() for m in (table[k][1] for k in range(len(table)))]
             widen = np.array([0 if b is None else -((-b * scale2).numerator // (b * scale2).denominator)
@@ -509,6 +511,7 @@ class CornerCheck:
                 scale2: int, at: Any) -> None:
         """Prove the corners ``i[k]``/``j[k]`` whose boxes are ``c_lo``/``c_hi`` (integers over ``scale2``): the
         union of many at once, halves of what does not fit, one by one exactly at the end."""
+        assert chunk.scale is not None  # a column chunk
         den = 10**chunk.scale
         todo = [(0, int(i.size))]
         while todo:
@@ -558,11 +561,11 @@ def _piece_box(seg: Segment) -> Box | None:
         return tuple(lo), tuple(hi)
     if seg.kind is SegmentKind.SPLINE:
         # a NURBS curve with positive weights lies in the convex hull of its control points
-        extra = dict(seg.extra)
+        extra: dict[str, Any] = dict(seg.extra)
         control, weights = extra.get("control"), extra.get("weights")
-        if not control or not weights or any(w <= 0 for w in weights):  # type: ignore[union-attr]
+        if not control or not weights or any(w <= 0 for w in weights):
             return None
-        pts = [seg.start, seg.end, *control]  # type: ignore[misc]
+        pts = [seg.start, seg.end, *control]
         return tuple(map(min, *pts)), tuple(map(max, *pts))
     if seg.kind is SegmentKind.DEVELOPED_ARC:
         from ..cylinder import cylinder_of, developed_arc_of

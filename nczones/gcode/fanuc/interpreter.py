@@ -370,8 +370,8 @@ class FanucInterpreter(Interpreter):
         # ---- modes
         self._plain_modes(groups)
         if 15 in groups:  # G61 exact stop mode; G62 (corner override), G63 (tapping), G64: cutting mode, blending
-            code = groups[15][0]
-            self.set_path_mode(self._fanuc_path_mode(code != 610, gname(code)))
+            mode_key = groups[15][0]
+            self.set_path_mode(self._fanuc_path_mode(mode_key != 610, gname(mode_key)))
         if g0 and g0[0] == 90:  # G09: exact stop at the end of this block's motion only
             self.path_modes.append((self.block_index, self._fanuc_path_mode(False, "G09")))
             self.path_modes.append((self.block_index + 1, self.path_mode))
