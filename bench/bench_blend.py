@@ -1,6 +1,6 @@
 """Cost of the corner-blending proof (issue 35, specs/path-modes.md) beside the exact-path verdict.
 
-    python bench/bench_blend.py [--lines 1000000]
+    python bench/bench_blend.py [--lines 1000000] [--zones box|stepped|both]
 
 A generated CAM-like program (``G1`` moves in a 300 mm square, G64 corners everywhere) is verified twice on
 the same machine: with ``path_mode = "G61"`` (no corner is rounded: the exact-path proof alone) and with
@@ -77,11 +77,14 @@ def timed(program: Path, m) -> tuple[float, str]:
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--lines", type=int, default=1_000_000)
+    ap.add_argument("--zones", choices=("box", "stepped", "both"), default="both")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         program = Path(tmp) / "cam.ngc"
         generate(args.lines, program)
         for name, zones in (("box", BOX), ("stepped table", STEP)):
+            if args.zones != "both" and not name.startswith(args.zones):
+                continue
             exact_s, exact_v = timed(program, machine("G61", zones))
             blend_s, blend_v = timed(program, machine("G64", zones))
             print(f"{args.lines} lines, {name}: exact path {exact_s:.2f} s ({exact_v}), with G64 corners "
