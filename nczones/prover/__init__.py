@@ -714,7 +714,7 @@ def _verify_run(run: Interpretation, machine: Machine, ranges: tuple[ParamRange,
     from .core import verify_segments
 
     # the corners the control may round (specs/path-modes.md), proved as the motion passes
-    corners = CornerCheck(machine, margin, ranges, run.interpreter.path_modes)
+    corners = CornerCheck(machine, margin, ranges, run.interpreter.path_modes, limits)
     result = verify_segments(corners.watch(with_text(run)), machine, margin=margin, params=ranges, engine=engine,
                              max_violations=max_violations, file=run.file, limits=limits, profile=profile)
     if not result.interrupted:

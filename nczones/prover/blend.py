@@ -24,6 +24,7 @@ refined one by one in exact arithmetic.
 
 from __future__ import annotations
 
+import time
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
@@ -44,8 +45,11 @@ BLEND_CODE = "VF208"
 DEPTH = 5
 #: Screened corner boxes split in this many parts when their union does not fit.
 SPLIT = 16
-#: The integer scale of the screen of object segments (coordinates that are multiples of 1/SCALE).
-SCALE = 10**15
+#: The integer scale of the screen of object segments (coordinates that are multiples of 1/SCALE: decimals of
+#: up to 15 places, and the doubles of parametric programs, binary fractions of up to 64 places).
+SCALE = 10**15 * 2**64
+#: The share of the run's time budget the corner proofs may spend refining (the per-motion proof keeps the rest).
+REFINE_SHARE = 0.25
 #: Box tests the exact refinement of a run may spend; past them a corner that does not fit at once is unknown.
 MAX_TESTS = 200_000
 #: At most this many corner reasons per run (the rest are counted).
@@ -66,7 +70,7 @@ class CornerCheck:
     """
 
     def __init__(self, machine: Machine, margin: Fraction, ranges: Sequence[ParamRange],
-                 modes: list[tuple[int, PathMode]]):
+                 modes: list[tuple[int, PathMode]], limits: Any = None):
         self.machine = machine
         self.allowed = machine.allowed
         self.margin = margin
@@ -89,7 +93,11 @@ class CornerCheck:
         self.more = 0
         self.corners = 0
         self.tests = 0  # box tests so far (MAX_TESTS)
-        self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer points, bound)
+        self.limits = limits  # the run's budget (RunLimits): spent, no corner is refined any more
+        budget = getattr(limits, "budget_s", None)
+        self.refine_cap = REFINE_SHARE * budget if budget else 60.0  # seconds of corner proofs at most
+        self.refine_s = 0.0
+        self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer lo, hi, bound)
         self._int_cache: dict[int, Any] = {}
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
@@ -185,15 +193,16 @@ class CornerCheck:
         if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg) and mode.dialect == "linuxcnc":
             bound = mode.bound()
             if bound is not None or not mode.naive:
-                pts = [self._ints(a.start), self._ints(a.end), self._ints(b.end)]
-                if None not in pts:
-                    self.pending.append((a, b, mode, None, pts, bound or F0))
+                p0, p1, p2 = self._ints(a.start), self._ints(a.end), self._ints(b.end)
+                if p0 is not None and p1 is not None and p2 is not None:
+                    self.pending.append((a, b, mode, None, list(map(min, p0, p1, p2)), list(map(max, p0, p1, p2)),
+                                         bound or None))
                     return
         box = self._screen_box(a, b, mode)
         if box is None:
             self._corner(a, b, mode)
         else:
-            self.pending.append((a, b, mode, box, None, F0))
+            self.pending.append((a, b, mode, box, None, None, None))
 
     def _ints(self, p: tuple[Fraction, ...]) -> list[int] | None:
         """``p`` on the zones' axes times ``SCALE`` (None when a coordinate is not a multiple of 1/SCALE)."""
@@ -255,22 +264,23 @@ class CornerCheck:
         while todo:
             lo_i, hi_i = todo.pop()
             group = items[lo_i:hi_i]
-            tls = {x for a, b, *_r in group for x in (a.tool_length, b.tool_length)}
-            if len(tls) == 1:
+            t0 = group[0][0].tool_length
+            if all((a.tool_length is t0 or a.tool_length == t0) and (b.tool_length is t0 or b.tool_length == t0)
+                   for a, b, *_r in group):
                 lo, hi = [F0] * n, [F0] * n
                 ints = [e for e in group if e[4] is not None]
                 boxes = [e[3] for e in group if e[4] is None]
-                g = max(e[5] for e in group)
+                g = max((e[6] for e in ints if e[6] is not None), default=F0)
                 for k, i in enumerate(self.rel):
                     cand_lo, cand_hi = [], []
                     if ints:
-                        cand_lo.append(Fraction(min(min(q[k] for q in e[4]) for e in ints), SCALE) - g)
-                        cand_hi.append(Fraction(max(max(q[k] for q in e[4]) for e in ints), SCALE) + g)
+                        cand_lo.append(Fraction(min(e[4][k] for e in ints), SCALE) - g)
+                        cand_hi.append(Fraction(max(e[5][k] for e in ints), SCALE) + g)
                     if boxes:
                         cand_lo.append(min(box[0][i] for box in boxes))
                         cand_hi.append(max(box[1][i] for box in boxes))
                     lo[i], hi[i] = min(cand_lo), max(cand_hi)
-                if self._fits((tuple(lo), tuple(hi)), tls, F0):
+                if self._fits((tuple(lo), tuple(hi)), (t0,), F0):
                     self.corners += len(group)
                     continue
             if len(group) == 1:
@@ -298,6 +308,13 @@ class CornerCheck:
 
     def _corner(self, a: Segment, b: Segment, mode: PathMode) -> None:
         """Prove the blend between motions ``a`` and ``b`` (``mode``: the one ``a`` runs in)."""
+        t0 = time.perf_counter()
+        try:
+            self._prove_corner(a, b, mode)
+        finally:
+            self.refine_s += time.perf_counter() - t0
+
+    def _prove_corner(self, a: Segment, b: Segment, mode: PathMode) -> None:
         self.corners += 1
         if mode.dialect == "fanuc" and mode.tolerance is None:
             return  # the run's hull (_close_stretch)
@@ -327,6 +344,8 @@ class CornerCheck:
         else:
             why = ("LinuxCNC's planner may round this corner using up to half of each motion (G64 without P); "
                    "G61, or G64 P with a tolerance that fits, proves it")
+        if self._spent():
+            why += " (the refinement budget was spent: the enclosure was not split further)"
         self._reason(a, b, mode, failed, why)
 
     # ------------------------------------------------------------------ enclosures
@@ -358,7 +377,7 @@ class CornerCheck:
         box = (tuple(lo), tuple(hi))
         if self._fits(box, tls, F0):
             return None
-        if depth == 0 or self.tests > MAX_TESTS:
+        if depth == 0 or self._spent():
             return box
         am, bm = (a0 + a1) / 2, (b0 + b1) / 2
         for aa, ab in ((a0, am), (am, a1)):
@@ -392,11 +411,18 @@ class CornerCheck:
         box = (tuple(map(min, p, q)), tuple(map(max, p, q)))
         if self._fits(box, tls, bound):
             return None
-        if depth == 0 or self.tests > MAX_TESTS:
+        if depth == 0 or self._spent():
             return box
         tm = (t0 + t1) / 2
         return (self._near_line(s, d, t0, tm, tls, bound, depth - 1)
                 or self._near_line(s, d, tm, t1, tls, bound, depth - 1))
+
+    def _spent(self) -> bool:
+        """The refinement budget is spent: MAX_TESTS box tests, or a quarter of the run's time budget spent in
+        corner proofs (the per-motion proof keeps the rest), or the run's budget itself."""
+        if self.tests > MAX_TESTS or self.refine_s > self.refine_cap:
+            return True
+        return self.limits is not None and self.limits.budget_spent()
 
     def _fits(self, box: Box, tls: Iterable[Fraction], extra: Fraction, zones: Any = None) -> bool:
         self.tests += 1
