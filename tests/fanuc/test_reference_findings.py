@@ -204,11 +204,11 @@ def test_n2_verify_short_and_long():
     # the real path 100 -> 99.99746 stays clear of it (safe); the 0.001 mm grid sent the proved path to
     # 99.997, through the wall (unsafe): the rounding decides the verdict, short and past 512 motions
     # (the padding moves Y by 0.001 in = 0.0254 mm at X 100, clear of the wall too).
+    from dataclasses import replace
+
     from nczones.prover import verify_text
 
     from .helpers import mill
-
-    from dataclasses import replace
 
     def run(text, lo, hi):
         # exact stop mode: the corner at N2's end, 0.0002 mm from the wall, would be rounded in cutting mode
