@@ -244,6 +244,11 @@ class Machine:
     #: How far an arc's end may be off its circle (``[machine] arc_tolerance``): mm, ``"linuxcnc"`` or ``"grbl"``
     #: (the control's own rule); None: ``--arc-tolerance`` or its default.
     arc_tolerance: Fraction | str | None = None
+    #: The path control mode at start (``[machine] path_mode``): "G64" blends corners, "G61"/"G61.1" do not
+    path_mode: str = "G64"
+    #: ``[machine] path_tolerance``: LinuxCNC starts in ``G64 P<it>`` (its INI's start-up code); on a Fanuc
+    #: control the bound on how far acc/dec corner rounding leaves the programmed path (``specs/path-modes.md``)
+    path_tolerance: Fraction | None = None
     #: ``"mill"`` or ``"lathe"`` (``[machine] type``): a lathe reads its dialect's lathe G codes.
     machine_type: str = "mill"
     #: Axes whose program words are diameters (``[machine] diameter_axes``); machine coordinates, zones and
@@ -650,7 +655,10 @@ _MACHINE_KEYS = (
     "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
     "reference_2", "reference_3", "reference_4", "type", "diameter_axes",
     "control_units", "tool_change_quill_up", "tool_change_at_g30", "tool_change_position",
+    "path_mode", "path_tolerance",
 )
+#: Values of ``[machine] path_mode``: the path control mode the control starts in (``specs/path-modes.md``).
+PATH_MODES = ("G64", "G61", "G61.1")
 #: Values of ``[machine] control_units`` (LinuxCNC's ``[TRAJ] LINEAR_UNITS``).
 CONTROL_UNITS = ("mm", "inch")
 _FANUC_LATHE_KEYS = ("gcode_system", "g71_depth", "g71_retract", "roughing_final_pass", "g73_relief_x",
@@ -947,6 +955,19 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
             arc_tol = read_number(rd, raw, "[machine] arc_tolerance", rd.loc.key("arc_tolerance", mline),
                                   nonnegative=True, limit=Fraction(10))
 
+    path_mode = "G64"  # LinuxCNC's interpreter and a Fanuc control both start blending (specs/path-modes.md)
+    if "path_mode" in mt:
+        raw = mt["path_mode"]
+        if type(raw) is str and raw.strip().upper() in PATH_MODES:
+            path_mode = raw.strip().upper()
+        else:
+            rd.report("ZN114", f"[machine] path_mode: {as_written(raw)} is not allowed; use \"G64\" (blending, "
+                      "the default), \"G61\" (exact path) or \"G61.1\" (exact stop)", rd.loc.key("path_mode", mline))
+    path_tol: Fraction | None = None
+    if "path_tolerance" in mt:
+        path_tol = read_number(rd, mt["path_tolerance"], "[machine] path_tolerance",
+                               rd.loc.key("path_tolerance", mline), nonnegative=True, limit=Fraction(10))
+
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
     control_units, tc_quill, tc_g30, tc_position = _linuxcnc_control(rd, mt, mline, axes, dialect)
     subroutine_path = _linuxcnc_settings(rd, data, dialect)
@@ -974,7 +995,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         allowed=allowed, modal=modal, tool_axis=tool_axis, source=rd.path,
         sections=MappingProxyType(sections), cutter_compensation=comp,
         tool_diameters=MappingProxyType(tool_diameters), dialect=dialect or "linuxcnc", fanuc=fanuc,
-        block_delete=block_delete, arc_tolerance=arc_tol,
+        block_delete=block_delete, arc_tolerance=arc_tol, path_mode=path_mode, path_tolerance=path_tol,
         machine_type=machine_type or "mill", diameter_axes=diameter_axes, tool_offsets=MappingProxyType(tool_offsets),
         control_units=control_units, tool_change_quill_up=tc_quill, tool_change_at_g30=tc_g30,
         tool_change_position=MappingProxyType(tc_position),

@@ -31,6 +31,7 @@ the controller uses a rational enclosure far inside one pulse.
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 import math
 from collections.abc import Callable, Iterator
@@ -43,8 +44,8 @@ from .errors import InvalidArgument, SourceSpan
 if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to the code that builds them
     import numpy as np
 
-__all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "arc_plane_axes", "arc_path_float",
-           "segments_of", "ProgramFrame", "FrameRotation"]
+__all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "PathMode", "arc_plane_axes",
+           "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation"]
 
 
 class SegmentKind(enum.IntEnum):
@@ -55,6 +56,38 @@ class SegmentKind(enum.IntEnum):
     DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.cylinder
     SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (Segment.extra), see nczones.nurbs
     POLAR = 6  # G01/G02/G03 in polar coordinate interpolation (G12.1): a plane path in machine X/C, see nczones.polar
+
+
+@dataclass(frozen=True, slots=True)
+class PathMode:
+    """The path control mode a motion runs in (``specs/path-modes.md``): program meaning, from the interpreter.
+
+    ``blend``: the control may round the corner at the END of the motion (LinuxCNC G64, a Fanuc control's
+    cutting mode G64/G62); False for G61, G61.1 (LinuxCNC), G61, G63 and a block with G09 (Fanuc).
+    ``tolerance``: LinuxCNC ``G64 P`` in mm (None: no tolerance, P absent or 0), or the machine file's
+    ``path_tolerance`` on a Fanuc control; ``naive``: LinuxCNC's naive-CAM merging tolerance (``G64 Q``,
+    which defaults to P) in mm; ``dialect``: whose planner rounds (``"linuxcnc"`` or ``"fanuc"``);
+    ``code``: the code as written, for reports.
+
+    >>> PathMode(True, None, Fraction(0), "linuxcnc", "G64").bound() is None
+    True
+    >>> PathMode(True, Fraction(1, 100), Fraction(1, 100), "linuxcnc", "G64 P0.01").bound()
+    Fraction(1, 50)
+    """
+
+    blend: bool
+    tolerance: Fraction | None = None
+    naive: Fraction = Fraction(0)
+    dialect: str = "linuxcnc"
+    code: str = "G64"
+
+    def bound(self) -> Fraction | None:
+        """How far the moved path may leave the programmed one near a corner (None: not bounded by a tolerance)."""
+        if not self.blend:
+            return Fraction(0)
+        if self.tolerance is None or self.tolerance <= 0:
+            return None
+        return self.tolerance + self.naive
 
 
 class Plane(enum.IntEnum):
@@ -383,6 +416,15 @@ class MotionChunk:
         if self.scale is None:
             return len(self.objects or ())
         return 0 if self.kind is None else int(self.kind.shape[0])
+
+    def rows(self, a: int, b: int) -> MotionChunk:
+        """Rows ``a`` to ``b`` (exclusive) as a chunk of their own: every column sliced, whatever columns the
+        class has (a new column cannot be forgotten by a caller), the frame and file kept."""
+        if self.scale is None:
+            return dataclasses.replace(self, objects=(self.objects or ())[a:b])
+        return dataclasses.replace(self, **{
+            f.name: getattr(self, f.name)[a:b] for f in dataclasses.fields(self)
+            if f.name not in ("axes", "scale", "file", "objects", "frame") and getattr(self, f.name) is not None})
 
     def segments(self, lines: dict[int, str] | None = None) -> Iterator[Segment]:
         """Per-segment views (exact Fractions); ``lines`` maps line numbers to source text."""

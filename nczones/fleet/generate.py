@@ -120,6 +120,7 @@ units = "mm"
 axes = ["X", "Y", "Z"]
 pulse = "0.001"
 rapid_mode = "linear"
+path_mode = "G61"          # exact path: corners are not rounded (specs/path-modes.md)
 
 [machine.rapid]
 X = "15000"

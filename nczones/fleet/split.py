@@ -155,7 +155,11 @@ def splittable(text: str, machine: Any, settings: Mapping[str, Any]) -> str | No
     """Why ``text`` cannot be split (a short reason), or None when it can.
 
     >>> from nczones import load_machine
+    >>> from dataclasses import replace
     >>> m = load_machine("specs/machines/mill.toml")
+    >>> splittable("G90 G1 X1 F100\\nG1 X2\\n", m, {})
+    'a machine that starts blending corners (path_mode G64) is verified whole'
+    >>> m = replace(m, path_mode="G61")
     >>> splittable("G90 G1 X1 F100\\nG1 X2\\n", m, {})
     >>> splittable("G91 G1 X1 F100\\n", m, {})
     'uses G91 (only the codes listed in nczones.fleet.split split)'
@@ -265,6 +269,9 @@ def _early_refusal(machine: Any, settings: Mapping[str, Any]) -> str | None:
     dialect = settings.get("dialect") or getattr(machine, "dialect", "linuxcnc")
     if dialect != "linuxcnc":
         return f"the {dialect} dialect is verified whole"
+    if getattr(machine, "path_mode", "G64") not in ("G61", "G61.1"):
+        # the corner between two chunks may be rounded (specs/path-modes.md); neither chunk sees it
+        return "a machine that starts blending corners (path_mode G64) is verified whole"
     return None
 
 

@@ -45,6 +45,7 @@ from ..motion import (
     PLANE_AXES,
     FrameRotation,
     MotionChunk,
+    PathMode,
     Plane,
     ProgramFrame,
     Segment,
@@ -429,6 +430,9 @@ class Interpreter:
         self.emitted: list[Segment] = []
         self._plans: dict = {}  # letters of a PlainBlock -> how the plain lane reads it (_plain_plan)
         self.block_index = 0  # the index of the block being executed
+        #: the path control mode (specs/path-modes.md) from each block index on: (first block, mode), in order
+        self.path_mode = self.initial_path_mode(machine)
+        self.path_modes: list[tuple[int, PathMode]] = [(-1, self.path_mode)]
         self._declined = -1  # the index of the last block lane() declined
         self.span: SourceSpan | None = None
         # the state every block reads, as instance attributes (reading a class default is slower)
@@ -681,6 +685,37 @@ class Interpreter:
                 return None
             names.append(k)
         return tuple(sorted(names))
+
+    def initial_path_mode(self, machine: Machine) -> PathMode:
+        """The path control mode at start: ``[machine] path_mode`` and ``path_tolerance`` (LinuxCNC: the INI's
+        start-up ``G64 P<tolerance>``, whose Q defaults to P; interp_convert.cc ``convert_control_mode``)."""
+        if machine.path_mode != "G64":
+            return PathMode(False, None, _ZERO, "linuxcnc", machine.path_mode)
+        tol = machine.path_tolerance
+        if tol:
+            return PathMode(True, tol, tol, "linuxcnc", f"G64 P{fmt_number(tol)}")
+        return PathMode(True, None, _ZERO, "linuxcnc", "G64")
+
+    def set_path_mode(self, mode: PathMode) -> None:
+        """The path control mode from the current block on (its motion included)."""
+        if mode != self.path_mode:
+            self.path_mode = mode
+            if self.path_modes[-1][0] == self.block_index:
+                self.path_modes[-1] = (self.block_index, mode)
+            else:
+                self.path_modes.append((self.block_index, mode))
+
+    def _control_mode(self, code: int, words: dict) -> None:
+        """G61, G61.1, G64 [P] [Q] (LinuxCNC ``convert_control_mode``: P < 0 or absent is no tolerance, Q
+        absent is P, in program units)."""
+        if code != 640:
+            self.set_path_mode(PathMode(False, None, _ZERO, "linuxcnc", "G61" if code == 610 else "G61.1"))
+            return
+        unit = INCH if self.inch else Fraction(1)
+        p = words["P"].value * unit if "P" in words and words["P"].value >= 0 else None
+        q = words["Q"].value * unit if "Q" in words and words["Q"].value >= 0 else p
+        written = " ".join(["G64"] + [w.text for k, w in sorted(words.items()) if k in "PQ" and w.text])
+        self.set_path_mode(PathMode(True, p if p else None, q or _ZERO, "linuxcnc", written))
 
     def emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
               plane: Plane | None = None, clockwise: bool = False, centre: Any = None, radius: Any = None,
@@ -1049,6 +1084,8 @@ class Interpreter:
                 raise self.error("GC209", f"negative spindle speed {words['S'].text}; S must be 0 or more", words["S"])
             self.spindle_speed = sv
         # 5-6: tool select and change
+        if 13 in groups:
+            self._control_mode(groups[13][0], words)
         if "T" in words:
             t = words["T"].value
             if t.denominator != 1 or t < 0:

@@ -443,6 +443,7 @@ def read_linuxcnc(
     extra: list[tuple[str, str, str]] = [
         ("dialect", '"linuxcnc"', "LinuxCNC's RS-274/NGC"),
         ("cutter_compensation", '"linuxcnc"', "G41/G42 as LinuxCNC's interpreter does them")]
+    extra.extend(startup_path_mode(ini.get("RS274NGC", "RS274NGC_STARTUP_CODE"), lin[1]))
     if lin[1] == "in":
         extra.append(("control_units", '"inch"', f"{lin_e.describe() if lin_e is not None else 'LINEAR_UNITS'}: "
                       "LinuxCNC keeps its numbered parameters (#5161-#5390, #5401-#5409) in inches"))
@@ -596,12 +597,39 @@ def _modal(ini: IniFile, c: Collector, unit: str, params: Params) -> tuple[tuple
                                 f"stopped ({span.file}:{span.line})")
     e = ini.get("RS274NGC", "RS274NGC_STARTUP_CODE")
     if e is not None:
-        startup_modal(e.value, e.describe(), f"{e.describe()} ({e.where()})", e.span, chosen, c)
+        startup_modal(e.value, e.describe(), f"{e.describe()} ({e.where()})", e.span, chosen, c, path_codes=True)
     return modal_changes(chosen)
 
 
+def startup_path_mode(entry: IniEntry | None, units: str) -> list[tuple[str, str, str]]:
+    """``path_mode`` / ``path_tolerance`` from RS274NGC_STARTUP_CODE's G61, G61.1 or G64 P (the last one wins,
+    as the interpreter executes the block; P in the machine's units at start-up, inch for LINEAR_UNITS = inch).
+
+    >>> ini = parse_ini("x.ini", "[RS274NGC]\\nRS274NGC_STARTUP_CODE = G17 G21 G64 P0.01\\n", Collector())
+    >>> [k + " = " + v for k, v, _ in startup_path_mode(ini.get("RS274NGC", "RS274NGC_STARTUP_CODE"), "mm")]
+    ['path_tolerance = "0.01"']
+    """
+    if entry is None:
+        return []
+    found = list(re.finditer(r"G\s*0*(61\.1|61|64)(?![\d.])(?:\s*P\s*([+]?\d*\.?\d+))?", entry.value, re.I))
+    if not found:
+        return []
+    code, p = found[-1].group(1), found[-1].group(2)
+    how = f"{entry.describe()} ({entry.where()}): the interpreter starts in G{code}"
+    if code != "64":
+        return [("path_mode", f'"G{code}"', how)]
+    if p is None or Fraction(p) == 0:
+        return []  # G64 without tolerance is the default
+    # P is in the units in force when G64 runs: a G20/G21 earlier in the block (executed first in a block: the
+    # units group comes before path control), else the machine's
+    before = re.findall(r"G\s*0*(20|21)(?![\d.])", entry.value, re.I)
+    inch = before[-1] == "20" if before else units == "in"
+    tol = Fraction(p) * (Fraction(254, 10) if inch else 1)
+    return [("path_tolerance", f'"{format_decimal(tol)}"', f"{how} P{p} (its Q defaults to P)")]
+
+
 def startup_modal(block: str, label: str, how: str, span: SourceSpan | None, chosen: dict[str, tuple[str, str]],
-                  c: Collector) -> None:
+                  c: Collector, path_codes: bool = False) -> None:
     """Take the modal G codes of a start-up block into ``chosen`` (group -> (code, how)); note the rest.
 
     >>> c = Collector(); chosen = {}
@@ -610,8 +638,15 @@ def startup_modal(block: str, label: str, how: str, span: SourceSpan | None, cho
     ('G18', 'G20', 'start-up: G64 P0.01 not taken')
     """
     left: list[str] = []
+    path_words = False  # path_codes: G61, G61.1, G64 and G64's P and Q are taken by startup_path_mode
     for letter, number in re.findall(r"([A-Za-z])\s*([-+]?\d*\.?\d*)", block):
         word = f"{letter.upper()}{number}"
+        if path_codes and letter.upper() == "G" and re.fullmatch(r"0*(61(\.1)?|64)", number):
+            path_words = number.lstrip("0") == "64"
+            continue
+        if path_words and letter.upper() in "PQ":
+            continue
+        path_words = False
         if letter.upper() == "G" and re.fullmatch(r"\d+(?:\.\d+)?", number):
             code = "G" + format_decimal(Fraction(number))
             group = next((g for g, codes in MODAL_GROUPS.items() if code in codes), None)

@@ -508,9 +508,15 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
                         report(s.span.line)
                         last_reported[:] = [s.span.line]
 
+    from ..prover.blend import CornerCheck
     from ..prover.core import prove
 
-    result = prove(with_text(run), machine, options, file=run.file, profile=profile)
+    # the corners the control may round (specs/path-modes.md), proved as the motion passes
+    corners = CornerCheck(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
+                          options.run_limits())
+    result = prove(corners.watch(with_text(run)), machine, options, file=run.file, profile=profile)
+    if not result.interrupted:
+        result = replace(result, reasons=result.reasons + tuple(corners.finish(v.block for v in result.violations)))
     if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
         report(last_reported[0])
     # fill the source text of violations and reasons (column chunks carry only line numbers)

@@ -32,11 +32,19 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "moved by rotation (G68) or polar input (G16) is the exact point rounded to the nearest increment: "
     "the control computes it to within a millionth of an increment (a point nearer than that to halfway "
     "between two increments makes the verdict unknown).",
-    "The machine moves exactly along the programmed path: straight lines, exact circles (spirals for "
-    "arcs whose end is off the circle within the tolerance; a Grbl control, arc_tolerance = \"grbl\", "
-    "moves such an arc on its start radius and then straight to the end point, at most 0.005 mm from "
-    "that spiral), exact NURBS, rapids straight or dogleg as the machine file says; no corner blending "
-    "(G64), following error or overshoot.",
+    "The machine moves along the programmed path: straight lines, exact circles (spirals for arcs whose "
+    "end is off the circle within the tolerance; a Grbl control, arc_tolerance = \"grbl\", moves such an "
+    "arc on its start radius and then straight to the end point, at most 0.005 mm from that spiral), "
+    "exact NURBS, rapids straight or dogleg as the machine file says, except where its path mode rounds "
+    "corners; no following error or overshoot.",
+    "Corner blending (specs/path-modes.md): the corner after a motion in G64 (LinuxCNC, the default) or "
+    "cutting mode (Fanuc G64/G62/G63, the default) may be rounded, in G61, G61.1 and after a Fanuc G09 "
+    "block not. LinuxCNC G64 uses at most half of each of the two motions (BLEND_DIST_FRACTION); G64 P p "
+    "(its Q defaults to P) stays within p + q of the programmed path, assuming a blend the planner takes "
+    "as nearly straight (a direction change under 0.002 rad) stays within p too and the feed override is "
+    "constant during a blend; a Fanuc control in cutting mode stays in the convex hull of the motions "
+    "since its last exact stop, or within [machine] path_tolerance. A dogleg rapid stops exactly at both "
+    "ends. A corner whose enclosure may leave the allowed set is unknown (VF208).",
     "LinuxCNC dialect, tool change: M6 moves the machine only as the machine file says, each move a rapid in "
     "machine coordinates: tool_change_quill_up (Z to machine 0), then tool_change_at_g30 (every axis to the G30 "
     "position), then [machine.tool_change_position] (a straight move there, LinuxCNC's TOOL_CHANGE_POSITION); "

@@ -35,7 +35,18 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
 
     The whole program's box first; a box that does not fit is split in :data:`SPLIT` (the first time, in
     boxes of :data:`FIRST_BOX` motions).
+
+    Corner blending (``specs/path-modes.md``): the pass's programs run in the machine's start-up path mode
+    (a G61 or G64 in the text declines).  In G64 without tolerance a rounded corner between two straight
+    motions uses at most half of each, so it lies in the box of the two: a corner inside a box is proved with
+    it, and every corner between two boxes is proved on its own (:func:`_corner_fits`).  With
+    ``path_tolerance`` (``G64 P p``, whose Q is p) the path stays within ``2 p`` of the programmed one: the
+    margin grows by that much instead.
     """
+    corners = machine.path_mode == "G64"
+    if corners and machine.path_tolerance:
+        margin += 2 * machine.path_tolerance
+        corners = False
     allowed = machine.allowed
     zero = Fraction(0)
     todo = [(1, path.motions)] if path.motions else []
@@ -47,6 +58,8 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
             return None
         lo, hi = path.enclosure(first, last)
         if box_fits(allowed, lo, hi, margin, zero):
+            if corners and last < path.motions and not _corner_fits(path, allowed, margin, last):
+                return None
             continue
         if first == last:
             return None
@@ -54,6 +67,17 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         size = FIRST_BOX if n > FIRST_BOX * SPLIT and first == 1 and last == path.motions else -(-n // SPLIT)
         todo.extend((a, min(a + size - 1, last)) for a in range(first, last + 1, size))
     return boxes
+
+
+def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
+    """Does the blend region of the corner between motions ``k`` and ``k + 1`` fit?  Every point of it is
+    ``P1 + a (M1 - P1) + b (M2 - P1)`` (``a, b`` in [0, 1], ``M1``, ``M2`` the midpoints of the motions,
+    ``P0``, ``P1``, ``P2`` rows ``k - 1``, ``k``, ``k + 1``): in the box of ``P1``, ``M1``, ``M2`` and
+    ``(P0 + P2) / 2``, each bounded with the rows' boxes (``path.enclosure(r + 1, r)`` is row r's alone)."""
+    (l0, h0), (l1, h1), (l2, h2) = (path.enclosure(r + 1, r) for r in (k - 1, k, k + 1))
+    lo = {a: min(l1[a], (l0[a] + l1[a]) / 2, (l1[a] + l2[a]) / 2, (l0[a] + l2[a]) / 2) for a in l1}
+    hi = {a: max(h1[a], (h0[a] + h1[a]) / 2, (h1[a] + h2[a]) / 2, (h0[a] + h2[a]) / 2) for a in h1}
+    return box_fits(allowed, lo, hi, margin, Fraction(0))
 
 
 def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: float | None = None) -> Result | None:

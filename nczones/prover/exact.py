@@ -752,6 +752,8 @@ BOX_FITS: KindTable[Callable[[Any, Rng, Mapping[str, Fraction]], bool]] = KindTa
 @BOX_FITS.register(BoxZone)
 def _box_box_fits(z: BoxZone, rng: Rng, lo: Mapping[str, Fraction]) -> bool:
     if z.forbid:
+        if any(lo_ is not None and lo_ == hi_ for _a, lo_, hi_ in z.limits):
+            return True  # no interior: forbids nothing (as line_violation)
         return any(
             (hi_ is not None and rng(a)[0] >= hi_) or (lo_ is not None and rng(a)[1] <= lo_)
             for a, lo_, hi_ in z.limits
@@ -770,6 +772,8 @@ def _stepped_box_fits(z: SteppedZone, rng: Rng, lo: Mapping[str, Fraction]) -> b
     if z.forbid:
         for i in reachable(z, r0, r1):
             reg = z.regions[i]
+            if reg.min is not None and reg.min == reg.max:
+                continue  # a flat row has no interior
             if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
                 return False
     else:

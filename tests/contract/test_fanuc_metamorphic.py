@@ -128,8 +128,10 @@ def test_a_transform_centre_taken_from_a_ranged_point_is_unknown():
     from nczones.machine import parse_machine
     from nczones.prover import verify_text
 
+    # exact stop mode: this finding is about the centre, not cutting mode's corners (specs/path-modes.md)
     machine = parse_machine(_MILL.replace("[machine.reference]", '[machine.start]\nX = "50"\nY = "50"\nZ = "100"\n'
-                                          "[machine.reference]"), "finding.toml")
+                                          "[machine.reference]").replace("[machine]\n", '[machine]\npath_mode = "G61"\n', 1),
+                            "finding.toml")
     rotated = "G21 G90 G17 G40 G49 G54 G80 G94 F600.\nG68 R90.\nG90 G1 X50. Y0.\nG69\nG90 G0 X50. Y50.\nM30\n"
     assert verify_text(rotated, machine).verdict.label == "safe"
     from fractions import Fraction

@@ -29,6 +29,7 @@ def machine(pulse="0.001", zones=""):
 [machine]
 axes = ["X", "Z", "C"]
 pulse = "{pulse}"
+path_mode = "G61"  # exact stop: these tests are about the developed arc, not corner blending
 [machine.rapid]
 X = "5000"
 Z = "5000"

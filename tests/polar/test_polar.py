@@ -41,6 +41,7 @@ dialect = "fanuc"
 axes = ["X", "Z", "C"]
 diameter_axes = ["X"]
 pulse = "{pulse}"
+path_mode = "G61"  # exact stop mode: these tests are about polar interpolation, not corner rounding
 {extra}
 [machine.rapid]
 X = "6000"

@@ -110,6 +110,8 @@ def test_a_tool_length_the_program_wrote_ignores_the_machine_files_range(param):
 CYCLE_TEXT = """
 [machine]
 axes = ["X", "Y", "Z"]
+# exact path: G64 may round the corner above the clamp (specs/path-modes.md); these tests are about the branch
+path_mode = "G61"
 [machine.rapid]
 X = "10000"
 Y = "10000"
@@ -249,6 +251,9 @@ def test_a_flat_forbid_zone_forbids_nothing_with_any_margin(margin, engine):
 SPIRAL_MACHINE = """
 [machine]
 axes = ["X", "Y"]
+# exact path: the rapid's corner with the spiral is proved on boxes that reach the spiral's larger radius
+# (specs/path-modes.md); this test is about the spiral itself
+path_mode = "G61"
 [machine.rapid]
 X = "10000"
 Y = "10000"

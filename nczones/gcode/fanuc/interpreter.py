@@ -39,7 +39,7 @@ from fractions import Fraction
 from typing import Any, TypeAlias
 
 from ...machine import FANUC_OFFSETS, Machine
-from ...motion import PLANE_AXES, FrameRotation, Plane, ProgramFrame, SegmentKind
+from ...motion import PLANE_AXES, FrameRotation, PathMode, Plane, ProgramFrame, SegmentKind
 from ..blocks import Block, Word
 from ..interpreter import (
     INCH,
@@ -393,6 +393,12 @@ class FanucInterpreter(Interpreter):
         self._record_block(block, mcodes, mset)
         # ---- modes
         self._plain_modes(groups)
+        if 15 in groups:  # G61 exact stop mode; G62 (corner override), G63 (tapping), G64: cutting mode, blending
+            mode_key = groups[15][0]
+            self.set_path_mode(self._fanuc_path_mode(mode_key != 610, gname(mode_key)))
+        if g0 and g0[0] == 90:  # G09: exact stop at the end of this block's motion only
+            self.path_modes.append((self.block_index, self._fanuc_path_mode(False, "G09")))
+            self.path_modes.append((self.block_index + 1, self.path_mode))
         if 10 in groups:
             self.retract_r = groups[10][0] == 990
             self.unset.discard("retract")
@@ -506,6 +512,16 @@ class FanucInterpreter(Interpreter):
             raise StopProgram
 
     # ------------------------------------------------------------------ pieces
+    def initial_path_mode(self, machine: Machine) -> PathMode:
+        """A Fanuc control starts in cutting mode G64 unless ``[machine] path_mode`` says G61."""
+        return self._fanuc_path_mode(machine.path_mode == "G64", machine.path_mode, machine)
+
+    def _fanuc_path_mode(self, blend: bool, code: str, machine: Machine | None = None) -> PathMode:
+        """Cutting mode rounds corners by acc/dec after interpolation: bounded only by the machine file's
+        ``path_tolerance`` (specs/path-modes.md)."""
+        tol = (machine or self.machine).path_tolerance if blend else None
+        return PathMode(blend, tol if tol else None, Fraction(0), "fanuc", code)
+
     def _cancel_cycle(self) -> None:
         self.cycle = None
         self.cycle_data = {}

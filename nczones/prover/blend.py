@@ -1,0 +1,672 @@
+"""Corner blending: the enclosure of the path the machine really moves, proved (``specs/path-modes.md``).
+
+The per-motion proof (:mod:`nczones.prover.core`) is about the programmed path.  In a blending path mode
+(LinuxCNC G64, a Fanuc control's cutting mode) the control rounds the corner between two motions; this
+module proves, beside that proof, that every rounded corner stays in the allowed set, or names the corner
+whose enclosure may leave it (an ``unknown`` reason, VF208, never ``safe``).  The enclosures, derived from
+LinuxCNC's trajectory planner in ``specs/path-modes.md``:
+
+* LinuxCNC, ``G64`` without tolerance: a blend uses at most half of each of the two motions, so every point
+  of it is ``C + a (M1 - C) + b (M2 - C)`` with ``a, b`` in ``[0, 1]``, ``C`` the corner and ``M1``, ``M2``
+  the midpoints of the two lines (a parallelogram; for an arc the box of the whole arc stands for its
+  half, and the region is the Minkowski sum of the two boxes less ``C``).
+* LinuxCNC, ``G64 P p Q q`` (Q defaults to P): every point within ``p + q`` of the programmed path (naive-CAM
+  merging within ``q``, then blends within ``p``): the two motions' boxes with the margin enlarged by
+  ``p + q``; with ``q = 0`` the region above proves a corner too.
+* Fanuc cutting mode with ``[machine] path_tolerance t``: within ``t`` of the programmed path; without it,
+  acc/dec after interpolation keeps the path in the convex hull of the run of motions between exact stops:
+  that run's box must fit.
+
+The fast path is kept fast: column chunks are screened with numpy (the box of many corner regions at once;
+for lines every corner region lies in the box of its two motions), and only regions near a zone are
+refined one by one in exact arithmetic.
+"""
+
+from __future__ import annotations
+
+import time
+from bisect import bisect_right
+from collections.abc import Iterable, Iterator, Sequence
+from fractions import Fraction
+from typing import Any
+
+from ..errors import InvalidArgument
+from ..exact import format_decimal
+from ..machine import Machine, RapidMode
+from ..motion import MotionChunk, PathMode, Segment, SegmentKind
+from .exact import box_fits
+from .result import ParamRange, Reason
+
+__all__ = ["BLEND_CODE", "CornerCheck"]
+
+#: The code of every reason this module gives.
+BLEND_CODE = "VF208"
+#: Corner regions refined at most this many times (4 sub-regions each).
+DEPTH = 5
+#: Screened corner boxes split in this many parts when their union does not fit.
+SPLIT = 16
+#: The integer scale of the screen of object segments (coordinates that are multiples of 1/SCALE: decimals of
+#: up to 15 places, and the doubles of parametric programs, binary fractions of up to 64 places).
+SCALE = 10**15 * 2**64
+#: The share of the run's time budget the corner proofs may spend refining (the per-motion proof keeps the rest).
+REFINE_SHARE = 0.25
+#: Box tests the exact refinement of a run may spend; past them a corner that does not fit at once is unknown.
+MAX_TESTS = 200_000
+#: At most this many corner reasons per run (the rest are counted).
+MAX_REASONS = 20
+#: How much of each straight motion a LinuxCNC blend may use (``BLEND_DIST_FRACTION``, specs/path-modes.md).
+#: The column screen's boxes lie in the box of the two motions whatever this is; the exact regions use it.
+BLEND_FRACTION = Fraction(1, 2)
+
+F0 = Fraction(0)
+Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
+
+
+class CornerCheck:
+    """Follows a run's motion (wrap the chunks with :meth:`watch`) and proves its blended corners.
+
+    ``modes`` is the interpreter's table of path modes, ``(first block index, PathMode)`` in order; it may
+    grow while the run is read (the interpreter is never behind the chunks it gave).
+    """
+
+    def __init__(self, machine: Machine, margin: Fraction, ranges: Sequence[ParamRange],
+                 modes: list[tuple[int, PathMode]], limits: Any = None):
+        self.machine = machine
+        self.allowed = machine.allowed
+        self.margin = margin
+        self.axes = machine.axis_names
+        self.dogleg = machine.rapid_mode is RapidMode.DOGLEG
+        # parameter ranges move every position by at most their size: the boxes grow by that much
+        self.widen = sum((max(abs(r.lo), abs(r.hi)) for r in ranges), F0)
+        self.modes = modes
+        self.zones = self.allowed.zones
+        # the axes some zone constrains: screening boxes are computed on them only (others stay 0)
+        named: set[str] = set()
+        for z in self.zones:
+            named.update(a for a, _lo, _hi in getattr(z, "limits", ()))
+            named.update(getattr(z, "plane", ()))
+            named.update(a for a in (getattr(z, "reference_axis", None), getattr(z, "limited_axis", None)) if a)
+        if machine.allowed.tool_axis:
+            named.add(machine.allowed.tool_axis)
+        self.rel = [i for i, a in enumerate(self.axes) if a in named]
+        self.reasons: list[Reason] = []
+        self.more = 0
+        self.corners = 0
+        self.tests = 0  # box tests so far (MAX_TESTS)
+        self.limits = limits  # the run's budget (RunLimits): spent, no corner is refined any more
+        budget = getattr(limits, "budget_s", None)
+        self.refine_cap = REFINE_SHARE * budget if budget else 60.0  # seconds of corner proofs at most
+        self.refine_s = 0.0
+        self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer lo, hi, bound)
+        self._int_cache: dict[int, Any] = {}
+        self.prev: Segment | None = None
+        self.prev_stop = True  # no corner before the first motion
+        self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
+        self._seen: set[str] = set()
+        self._blocks: list[tuple[int, int]] = []  # the blocks of each reason's two motions
+
+    # ------------------------------------------------------------------ the stream
+    def watch(self, chunks: Iterable[Any]) -> Iterator[Any]:
+        """The chunks unchanged; each one's corners proved as it passes."""
+        for chunk in chunks:
+            yield chunk
+            if isinstance(chunk, MotionChunk) and chunk.scale is not None:
+                self._flush()
+                self._columns(chunk)
+                self._flush()
+            elif isinstance(chunk, MotionChunk):
+                for seg in chunk.objects or ():
+                    self._segment(seg)
+            elif isinstance(chunk, Segment):
+                self._segment(chunk)
+            else:
+                for seg in chunk.segments():
+                    self._segment(seg)
+            if len(self.pending) >= 4096:
+                self._flush()
+
+    def finish(self, violating: Iterable[int] = ()) -> list[Reason]:
+        """The reasons (VF208) after the last chunk; a corner next to a ``violating`` block (index) is left
+        out: the verdict is ``unsafe`` there anyway and the violation names the block."""
+        self._flush()
+        self._close_stretch()
+        bad = set(violating)
+        if bad:
+            kept = [(r, blocks) for r, blocks in zip(self.reasons, self._blocks) if bad.isdisjoint(blocks)]
+            self.reasons = [r for r, _b in kept]
+            self._blocks = [b for _r, b in kept]
+        if self.more:
+            self.reasons.append(Reason(f"{BLEND_CODE}: {self.more} more blended corner(s) could not be proved inside "
+                                       "the allowed set", None, None, BLEND_CODE))
+        return self.reasons
+
+    def mode_of(self, block: int) -> PathMode:
+        table = self.modes
+        k = bisect_right(table, block, key=lambda e: e[0]) - 1
+        return table[max(k, 0)][1]
+
+    # ------------------------------------------------------------------ one motion at a time (exact)
+    def _segment(self, seg: Segment) -> None:
+        kind = seg.kind
+        if kind is SegmentKind.DWELL:
+            self._stop()
+            return
+        if seg.start == seg.end and kind is not SegmentKind.ARC:
+            return  # a move of length 0: LinuxCNC's canon drops it, no corner
+        if kind is SegmentKind.RAPID and self.dogleg:
+            # a dogleg rapid is positioning with an in-position check at both ends (specs/path-modes.md)
+            self._stop()
+            self.prev = seg
+            return
+        prev = self.prev
+        if prev is not None and not self.prev_stop:
+            self._queue(prev, seg, self.mode_of(prev.block))
+        mode = self.mode_of(seg.block)
+        self.prev, self.prev_stop = seg, not mode.blend
+        if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
+            box = _piece_box(seg)
+            if box is None:
+                self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
+            elif self.stretch is None:
+                self.stretch = [list(box[0]), list(box[1]), seg, seg]
+            else:
+                lo, hi = self.stretch[0], self.stretch[1]
+                for i in range(len(lo)):
+                    lo[i] = min(lo[i], box[0][i])
+                    hi[i] = max(hi[i], box[1][i])
+                self.stretch[3] = seg
+        elif self.stretch is not None:
+            self.stretch[3] = seg  # the motion that ends the run with an exact stop still belongs to it
+            lo, hi = self.stretch[0], self.stretch[1]
+            box = _piece_box(seg)
+            if box is not None:
+                for i in range(len(lo)):
+                    lo[i] = min(lo[i], box[0][i])
+                    hi[i] = max(hi[i], box[1][i])
+            self._close_stretch()
+
+    def _queue(self, a: Segment, b: Segment, mode: PathMode) -> None:
+        """A corner to prove: screened with others first (:meth:`_flush`).
+
+        The common corner (two straight motions, LinuxCNC) is kept as integers (``SCALE``) on the zones'
+        axes: the box of its three points, grown by the mode's bound when it has one."""
+        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg) and mode.dialect == "linuxcnc":
+            bound = mode.bound()
+            if bound is not None or not mode.naive:
+                p0, p1, p2 = self._ints(a.start), self._ints(a.end), self._ints(b.end)
+                if p0 is not None and p1 is not None and p2 is not None:
+                    self.pending.append((a, b, mode, None, list(map(min, p0, p1, p2)), list(map(max, p0, p1, p2)),
+                                         bound or None))
+                    return
+        box = self._screen_box(a, b, mode)
+        if box is None:
+            self._corner(a, b, mode)
+        else:
+            self.pending.append((a, b, mode, box, None, None, None))
+
+    def _ints(self, p: tuple[Fraction, ...]) -> list[int] | None:
+        """``p`` on the zones' axes times ``SCALE`` (None when a coordinate is not a multiple of 1/SCALE)."""
+        got = self._int_cache.get(id(p))
+        if got is not None and got[0] is p:
+            cached: list[int] = got[1]
+            return cached
+        out = []
+        for i in self.rel:
+            x = p[i]
+            d = x.denominator
+            if SCALE % d:
+                return None
+            out.append(x.numerator * (SCALE // d))
+        self._int_cache[id(p)] = (p, out)
+        return out
+
+    def _screen_box(self, a: Segment, b: Segment, mode: PathMode) -> Box | None:
+        """A box holding every enclosure :meth:`_corner` may try for this corner (None: prove it alone).
+
+        No tolerance: two straight motions' region lies in the box of the two (it uses at most half of each:
+        each coordinate of ``C + (M1 - C) + (M2 - C)`` is between the two motions' far ends); other motions'
+        region is the Minkowski sum of their half boxes less ``C``.  With a bound: both motions' boxes grown
+        by it."""
+        if mode.dialect == "fanuc" and mode.tolerance is None:
+            return None
+        bound = mode.bound()
+        if bound is None and mode.naive:
+            return None
+        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg):
+            # the common case, on the zones' axes only
+            lo, hi = [F0] * len(self.axes), [F0] * len(self.axes)
+            for i in self.rel:
+                x, y, z = a.start[i], a.end[i], b.end[i]
+                lo[i], hi[i] = min(x, y, z), max(x, y, z)
+                if bound:
+                    lo[i] -= bound
+                    hi[i] += bound
+            return tuple(lo), tuple(hi)
+        if bound is None:
+            ba, bb = _half_box(a, self.dogleg, end=True), _half_box(b, self.dogleg, end=False)
+            if ba is None or bb is None:
+                return None
+            c = a.end
+            return (tuple(x + y - z for x, y, z in zip(ba[0], bb[0], c)),
+                    tuple(x + y - z for x, y, z in zip(ba[1], bb[1], c)))
+        pa, pb = _piece_box(a), _piece_box(b)
+        if pa is None or pb is None:
+            return None
+        g = bound or F0
+        return tuple(min(x, y) - g for x, y in zip(pa[0], pb[0])), tuple(max(x, y) + g for x, y in zip(pa[1], pb[1]))
+
+    def _flush(self) -> None:
+        """Prove the queued corners: the box of many at once, halves of what does not fit, one by one at last."""
+        items, self.pending = self.pending, []
+        self._int_cache = {}
+        todo = [(0, len(items))] if items else []
+        n = len(self.axes)
+        while todo:
+            lo_i, hi_i = todo.pop()
+            group = items[lo_i:hi_i]
+            t0 = group[0][0].tool_length
+            if all((a.tool_length is t0 or a.tool_length == t0) and (b.tool_length is t0 or b.tool_length == t0)
+                   for a, b, *_r in group):
+                lo, hi = [F0] * n, [F0] * n
+                ints = [e for e in group if e[4] is not None]
+                boxes = [e[3] for e in group if e[4] is None]
+                g = max((e[6] for e in ints if e[6] is not None), default=F0)
+                for k, i in enumerate(self.rel):
+                    cand_lo, cand_hi = [], []
+                    if ints:
+                        cand_lo.append(Fraction(min(e[4][k] for e in ints), SCALE) - g)
+                        cand_hi.append(Fraction(max(e[5][k] for e in ints), SCALE) + g)
+                    if boxes:
+                        cand_lo.append(min(box[0][i] for box in boxes))
+                        cand_hi.append(max(box[1][i] for box in boxes))
+                    lo[i], hi[i] = min(cand_lo), max(cand_hi)
+                if self._fits((tuple(lo), tuple(hi)), (t0,), F0):
+                    self.corners += len(group)
+                    continue
+            if len(group) == 1:
+                a, b, mode, *_r = group[0]
+                self._corner(a, b, mode)
+                continue
+            size = -(-len(group) // SPLIT)
+            todo.extend((x, min(x + size, hi_i)) for x in range(lo_i, hi_i, size))
+
+    def _stop(self) -> None:
+        self.prev_stop = True
+        self._close_stretch()
+
+    def _close_stretch(self) -> None:
+        st, self.stretch = self.stretch, None
+        if st is None or st[2] is st[3]:
+            return
+        self.corners += 1
+        lo, hi = tuple(st[0]), tuple(st[1])
+        if not self._fits((lo, hi), (st[2].tool_length, st[3].tool_length), F0):
+            self._reason(st[2], st[3], self.mode_of(st[2].block), (lo, hi),
+                         "a Fanuc control in cutting mode rounds corners by acc/dec after interpolation, which keeps "
+                         "the path inside the convex hull of the motions between exact stops; give [machine] "
+                         "path_tolerance (the control's bound) or program G61/G09")
+
+    def _corner(self, a: Segment, b: Segment, mode: PathMode) -> None:
+        """Prove the blend between motions ``a`` and ``b`` (``mode``: the one ``a`` runs in)."""
+        t0 = time.perf_counter()
+        try:
+            self._prove_corner(a, b, mode)
+        finally:
+            self.refine_s += time.perf_counter() - t0
+
+    def _prove_corner(self, a: Segment, b: Segment, mode: PathMode) -> None:
+        self.corners += 1
+        if mode.dialect == "fanuc" and mode.tolerance is None:
+            return  # the run's hull (_close_stretch)
+        tls = (a.tool_length, b.tool_length)
+        bound = mode.bound()
+        naive = mode.naive > 0
+        if bound is None and naive:
+            self._reason(a, b, mode, None, "G64 Q without P merges collinear motions (naive CAM) and blends them "
+                                           "with no tolerance: not modelled; give P")
+            return
+        failed: Box | None = None
+        if not naive:
+            failed = self._region(a, b, tls)
+            if failed is None:
+                return
+        if bound is not None:
+            bad = self._near(a, tls, mode, True) or self._near(b, tls, mode, False)
+            if bad is None:
+                return
+            failed = failed or bad
+        if mode.dialect == "fanuc":
+            why = (f"a Fanuc control in cutting mode may leave the programmed path by up to path_tolerance "
+                   f"{format_decimal(mode.tolerance or F0)} mm at this corner")
+        elif bound is not None:
+            why = (f"LinuxCNC's planner may leave the programmed path by up to {format_decimal(bound)} mm here "
+                   "(G64 P plus the naive-CAM Q, which defaults to P)")
+        else:
+            why = ("LinuxCNC's planner may round this corner using up to half of each motion (G64 without P); "
+                   "G61, or G64 P with a tolerance that fits, proves it")
+        if self._spent():
+            why += " (the refinement budget was spent: the enclosure was not split further)"
+        self._reason(a, b, mode, failed, why)
+
+    # ------------------------------------------------------------------ enclosures
+    def _region(self, a: Segment, b: Segment, tls: tuple[Fraction, Fraction]) -> Box | None:
+        """None when the no-tolerance corner region fits, else a part of it that does not."""
+        c = a.end
+        if _linear(a, self.dogleg) and _linear(b, self.dogleg) and b.start == c:
+            f = BLEND_FRACTION
+            m1 = tuple(e + f * (s - e) for s, e in zip(a.start, a.end))
+            m2 = tuple(s + f * (e - s) for s, e in zip(b.start, b.end))
+            d1 = tuple(m - x for m, x in zip(m1, c))
+            d2 = tuple(m - x for m, x in zip(m2, c))
+            return self._refine(c, d1, d2, F0, Fraction(1), F0, Fraction(1), tls, DEPTH)
+        ba, bb = _half_box(a, self.dogleg, end=True), _half_box(b, self.dogleg, end=False)
+        if ba is None or bb is None:
+            return (c, c)
+        lo = tuple(x + y - z for x, y, z in zip(ba[0], bb[0], c))
+        hi = tuple(x + y - z for x, y, z in zip(ba[1], bb[1], c))
+        return None if self._fits((lo, hi), tls, F0) else (lo, hi)
+
+    def _refine(self, c: tuple[Fraction, ...], d1: tuple[Fraction, ...], d2: tuple[Fraction, ...],
+                a0: Fraction, a1: Fraction, b0: Fraction, b1: Fraction, tls: tuple[Fraction, Fraction],
+                depth: int) -> Box | None:
+        lo, hi = [], []
+        for x, u, v in zip(c, d1, d2):
+            vals = (x + a0 * u + b0 * v, x + a1 * u + b0 * v, x + a0 * u + b1 * v, x + a1 * u + b1 * v)
+            lo.append(min(vals))
+            hi.append(max(vals))
+        box = (tuple(lo), tuple(hi))
+        if self._fits(box, tls, F0):
+            return None
+        if depth == 0 or self._spent():
+            return box
+        am, bm = (a0 + a1) / 2, (b0 + b1) / 2
+        for aa, ab in ((a0, am), (am, a1)):
+            for ba, bb in ((b0, bm), (bm, b1)):
+                bad = self._refine(c, d1, d2, aa, ab, ba, bb, tls, depth - 1)
+                if bad is not None:
+                    return bad
+        return None
+
+    def _near(self, seg: Segment, tls: tuple[Fraction, Fraction], mode: PathMode, end: bool) -> Box | None:
+        """None when every point the control may move through near this corner on ``seg``'s side fits, else a
+        part that may not.  A blend keeps within the tolerance p of the half of ``seg`` at the corner
+        (``end``: the corner is its end); naive-CAM merging (q > 0, feeds only: ``STRAIGHT_TRAVERSE`` flushes
+        the chain) may replace the whole motion by a chord within q of it, blended within p."""
+        tol = mode.tolerance or F0
+        whole = mode.naive > 0 and seg.kind is not SegmentKind.RAPID
+        bound = tol + mode.naive if whole else tol
+        if _linear(seg, self.dogleg):
+            d = tuple(e - s for s, e in zip(seg.start, seg.end))
+            t0, t1 = (F0, Fraction(1)) if whole else ((Fraction(1, 2), Fraction(1)) if end else (F0, Fraction(1, 2)))
+            return self._near_line(seg.start, d, t0, t1, tls, bound, DEPTH + 1)
+        box = _piece_box(seg) if whole else _half_box(seg, self.dogleg, end)
+        if box is None:
+            return (seg.start, seg.end)
+        return None if self._fits(box, tls, bound) else box
+
+    def _near_line(self, s: tuple[Fraction, ...], d: tuple[Fraction, ...], t0: Fraction, t1: Fraction,
+                   tls: tuple[Fraction, Fraction], bound: Fraction, depth: int) -> Box | None:
+        p = tuple(x + t0 * y for x, y in zip(s, d))
+        q = tuple(x + t1 * y for x, y in zip(s, d))
+        box = (tuple(map(min, p, q)), tuple(map(max, p, q)))
+        if self._fits(box, tls, bound):
+            return None
+        if depth == 0 or self._spent():
+            return box
+        tm = (t0 + t1) / 2
+        return (self._near_line(s, d, t0, tm, tls, bound, depth - 1)
+                or self._near_line(s, d, tm, t1, tls, bound, depth - 1))
+
+    def _spent(self) -> bool:
+        """The refinement budget is spent: MAX_TESTS box tests, or a quarter of the run's time budget spent in
+        corner proofs (the per-motion proof keeps the rest), or the run's budget itself."""
+        if self.tests > MAX_TESTS or self.refine_s > self.refine_cap:
+            return True
+        return self.limits is not None and self.limits.budget_spent()
+
+    def _fits(self, box: Box, tls: Iterable[Fraction], extra: Fraction, zones: Any = None) -> bool:
+        self.tests += 1
+        w = self.widen
+        lo = {a: x - w for a, x in zip(self.axes, box[0])}
+        hi = {a: x + w for a, x in zip(self.axes, box[1])}
+        return all(box_fits(self.allowed, lo, hi, self.margin + extra, tl, self.zones if zones is None else zones)
+                   for tl in set(tls))
+
+    # ------------------------------------------------------------------ reasons
+    def _reason(self, a: Segment, b: Segment, mode: PathMode, box: Box | None, why: str) -> None:
+        la, lb = a.line, b.line
+        where = f"lines {la} and {lb}" if la != lb else f"line {la}"
+        key = f"{la}:{lb}"
+        if key in self._seen:
+            return
+        self._seen.add(key)
+        if len(self.reasons) >= MAX_REASONS:
+            self.more += 1
+            return
+        zone = ""
+        text = ""
+        if box is not None:
+            text = " may pass " + " ".join(
+                f"{n}{format_decimal(lo, 4)}" if lo == hi else f"{n}{format_decimal(lo, 4)}..{format_decimal(hi, 4)}"
+                for n, lo, hi in zip(self.axes, box[0], box[1]))
+            tls = (a.tool_length, b.tool_length)
+            hit = [z for z in self.zones if not self._fits(box, tls, F0, zones=(z,))][:3]
+            if hit:
+                zone = ", " + ", ".join(f"{'inside' if z.forbid else 'outside'} `{z.name}`" for z in hit)
+        msg = f"{BLEND_CODE}: the blend between {where} ({mode.code}){text}{zone}: {why}"
+        self.reasons.append(Reason(msg, b.span, b.block, BLEND_CODE))
+        self._blocks.append((a.block, b.block))
+
+    # ------------------------------------------------------------------ column chunks (numpy screen)
+    def _columns(self, chunk: MotionChunk) -> None:
+        """A column chunk: corner boxes in integers (scale ``2 * 10**scale``), screened many at a time."""
+        import numpy as np
+
+        from .screen import arc_boxes
+
+        n = len(chunk)
+        kinds, starts, ends = chunk.kind, chunk.start, chunk.end
+        if n == 0 or kinds is None or starts is None or ends is None or chunk.block is None \
+                or chunk.tool_length is None:
+            return
+        table = self.modes
+        mode_blocks = np.array([b for b, _m in table], dtype=np.int64)
+        at = np.maximum(np.searchsorted(mode_blocks, chunk.block, side="right") - 1, 0)
+        used = [table[k][1] for k in sorted(set(at.tolist()))]
+        simple = {int(SegmentKind.LINE), int(SegmentKind.RAPID), int(SegmentKind.ARC), int(SegmentKind.DWELL)}
+        if (not set(np.unique(kinds).tolist()) <= simple or (self.dogleg and (kinds == SegmentKind.RAPID).any())
+                or any(m.blend and (m.dialect == "fanuc" and m.tolerance is None or m.bound() is None and m.naive)
+                       for m in used)
+                or max(int(np.abs(starts).max()), int(np.abs(ends).max())) >= 2**58):
+            for seg in chunk.segments():  # the exact path, one motion at a time
+                self._segment(seg)
+            return
+        dwell = kinds == SegmentKind.DWELL
+        moving = (starts != ends).any(axis=1) | (kinds == SegmentKind.ARC)
+        rows = np.flatnonzero(moving & ~dwell)
+        if rows.size == 0:
+            if dwell.any():
+                self._stop()
+            return
+        first, last = int(rows[0]), int(rows[-1])
+        if dwell[:first].any():
+            self._stop()
+        self._segment(_row(chunk, first))  # the corner with the chunk before
+        blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at]
+        dwells = np.cumsum(dwell)
+        i, j = rows[:-1], rows[1:]
+        keep = blend[i] & (dwells[j] == dwells[i])
+        i, j = i[keep], j[keep]
+        if i.size:
+            lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
+            arcs = np.flatnonzero(kinds == SegmentKind.ARC)
+            boxed = np.ones(n, dtype=bool)
+            if arcs.size:
+                boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)
+            linear = kinds != SegmentKind.ARC
+            mid = starts + ends
+            lin = linear[:, None]
+            t_lo = np.where(lin, np.minimum(mid, 2 * ends), 2 * lo)
+            t_hi = np.where(lin, np.maximum(mid, 2 * ends), 2 * hi)
+            h_lo = np.where(lin, np.minimum(mid, 2 * starts), 2 * lo)
+            h_hi = np.where(lin, np.maximum(mid, 2 * starts), 2 * hi)
+            c_lo = t_lo[i] + h_lo[j] - 2 * ends[i]
+            c_hi = t_hi[i] + h_hi[j] - 2 * ends[i]
+            assert chunk.scale is not None  # a column chunk
+            scale2 = 2 * 10**chunk.scale
+            bounds = [m.bound() for m in (table[k][1] for k in range(len(table)))]
+            widen = np.array([0 if b is None else -((-b * scale2).numerator // (b * scale2).denominator)
+                              for b in bounds], dtype=np.int64)[at[i]]
+            tol = widen > 0
+            if tol.any():  # within the bound of both motions' boxes
+                n_lo = 2 * np.minimum(lo[i], lo[j]) - widen[:, None]
+                n_hi = 2 * np.maximum(hi[i], hi[j]) + widen[:, None]
+                c_lo = np.where(tol[:, None], n_lo, c_lo)
+                c_hi = np.where(tol[:, None], n_hi, c_hi)
+            tls = chunk.tool_length
+            joined = (starts[j] == ends[i]).all(axis=1)  # else the exact path (the corner is not one point)
+            self._screen(chunk, c_lo, c_hi, i, j, boxed[i] & boxed[j] & joined, tls[i], tls[j], scale2, at)
+        seg = _row(chunk, last)
+        if last != first:
+            self.prev = seg
+            self.prev_stop = not self.mode_of(seg.block).blend
+        if dwell[last:].any():
+            self._stop()
+
+    def _screen(self, chunk: MotionChunk, c_lo: Any, c_hi: Any, i: Any, j: Any, boxed: Any, tl_a: Any, tl_b: Any,
+                scale2: int, at: Any) -> None:
+        """Prove the corners ``i[k]``/``j[k]`` whose boxes are ``c_lo``/``c_hi`` (integers over ``scale2``): the
+        union of many at once, halves of what does not fit, one by one exactly at the end."""
+        assert chunk.scale is not None  # a column chunk
+        den = 10**chunk.scale
+        todo = [(0, int(i.size))]
+        while todo:
+            a, b = todo.pop()
+            same = bool((tl_a[a:b] == tl_a[a]).all() and (tl_b[a:b] == tl_a[a]).all())
+            if same and boxed[a:b].all():
+                box = (tuple(Fraction(int(x), scale2) for x in c_lo[a:b].min(axis=0)),
+                       tuple(Fraction(int(x), scale2) for x in c_hi[a:b].max(axis=0)))
+                if self._fits(box, (Fraction(int(tl_a[a]), den),), F0):
+                    self.corners += b - a
+                    continue
+            if b - a == 1:
+                p, q = int(i[a]), int(j[a])
+                self._corner(_row(chunk, p), _row(chunk, q), self.modes[int(at[p])][1])
+                continue
+            size = -(-(b - a) // SPLIT)
+            todo.extend((x, min(x + size, b)) for x in range(a, b, size))
+
+
+def _row(chunk: MotionChunk, k: int) -> Segment:
+    """Row ``k`` of a column chunk as a segment (``MotionChunk.segments`` for one row)."""
+    return next(chunk.rows(k, k + 1).segments())
+
+
+def _linear(seg: Segment, dogleg: bool) -> bool:
+    return seg.kind is SegmentKind.LINE or (seg.kind is SegmentKind.RAPID and not dogleg)
+
+
+def _piece_box(seg: Segment) -> Box | None:
+    """A box holding every point of ``seg`` (lines, rapids straight or dogleg, arcs); None for other kinds."""
+    if seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
+        return tuple(map(min, seg.start, seg.end)), tuple(map(max, seg.start, seg.end))
+    if seg.kind is SegmentKind.ARC:
+        from .geometry import arc_geom
+
+        try:
+            g = arc_geom(seg)
+        except InvalidArgument:  # an arc the per-motion proof refuses: no box
+            return None
+        (xl, xh), (yl, yh) = g.plane_bbox()
+        lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+        lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = xl, xh, yl, yh
+        return tuple(lo), tuple(hi)
+    if seg.kind is SegmentKind.SPLINE:
+        # a NURBS curve with positive weights lies in the convex hull of its control points
+        extra: dict[str, Any] = dict(seg.extra)
+        control, weights = extra.get("control"), extra.get("weights")
+        if not control or not weights or any(w <= 0 for w in weights):
+            return None
+        pts = [seg.start, seg.end, *control]
+        return tuple(map(min, *pts)), tuple(map(max, *pts))
+    if seg.kind is SegmentKind.DEVELOPED_ARC:
+        from ..cylinder import cylinder_of, developed_arc_of
+
+        info = cylinder_of(seg)
+        try:
+            arc = developed_arc_of(seg)
+        except ValueError:
+            return None
+        assert info is not None  # developed_arc_of needs it
+        iz, ic = seg.axes.index(info[0]), seg.axes.index(info[1])
+        lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+        for k in range(4):
+            z, _s, c = arc.box(Fraction(k, 4), Fraction(k + 1, 4))
+            lo[iz], hi[iz] = min(lo[iz], z.lo), max(hi[iz], z.hi)
+            lo[ic], hi[ic] = min(lo[ic], c.lo), max(hi[ic], c.hi)
+        return tuple(lo), tuple(hi)
+    return None
+
+
+def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
+    """A box holding the half of ``seg`` at its end (``end``) or start: a line's and a circular arc's (of less
+    than a whole turn) half, the whole box of other motions."""
+    m = tuple((s + e) / 2 for s, e in zip(seg.start, seg.end))
+    p = seg.end if end else seg.start
+    if _linear(seg, dogleg):
+        return tuple(map(min, m, p)), tuple(map(max, m, p))
+    if seg.kind is SegmentKind.ARC:
+        half = _half_arc_box(seg, end)
+        if half is not None:
+            # the other axes (a helix's) move with the angle: the half of their travel at that end
+            lo, hi = list(map(min, m, p)), list(map(max, m, p))
+            (xl, xh), (yl, yh), ia, ib = half
+            lo[ia], hi[ia], lo[ib], hi[ib] = xl, xh, yl, yh
+            return tuple(lo), tuple(hi)
+    return _piece_box(seg)
+
+
+def _half_arc_box(seg: Segment, end: bool) -> Any:
+    """``((lo, hi) first axis, (lo, hi) second axis, ia, ib)`` holding the half of the sweep of a circular arc with
+    a rational centre at its end (``end``) or start; None for a whole turn, a spiral or an R-format arc.
+
+    The angular middle of the sweep points along ``u + w`` (``u``, ``w``: start and end from the centre, of
+    equal length; the opposite when the sweep is more than half a turn, ``u`` turned a quarter for half a
+    turn); the middle point is ``c + r d / |d|``, enclosed with rational square-root bounds.
+    """
+    from .geometry import arc_geom, in_sweep, sqrt_bounds
+
+    try:
+        g = arc_geom(seg)
+    except InvalidArgument:
+        return None
+    if g.full or g.centre is None or g.r2_lo != g.r2_hi:
+        return None
+    c = g.centre
+    u = (g.s[0] - c[0], g.s[1] - c[1])
+    w = (g.e[0] - c[0], g.e[1] - c[1])
+    cross = u[0] * w[1] - u[1] * w[0]
+    if cross == 0:  # half a turn: u turned a quarter in the sweep's sense
+        d = (-u[1], u[0]) if g.ccw else (u[1], -u[0])
+    else:
+        d = (u[0] + w[0], u[1] + w[1])
+        if (cross < 0) == g.ccw:  # more than half a turn
+            d = (-d[0], -d[1])
+    k_lo, k_hi = sqrt_bounds(g.r2_hi / (d[0] * d[0] + d[1] * d[1]))
+    mid = [sorted((c[i] + d[i] * k_lo, c[i] + d[i] * k_hi)) for i in (0, 1)]
+    a, b = (d, w) if end else (u, d)
+    p = g.e if end else g.s
+    r_lo, r_hi = sqrt_bounds(g.r2_hi)
+    out = []
+    for i in (0, 1):
+        lo, hi = min(mid[i][0], p[i]), max(mid[i][1], p[i])
+        for sgn in (1, -1):
+            v = (Fraction(sgn), F0) if i == 0 else (F0, Fraction(sgn))
+            if in_sweep(a, b, v, g.ccw, False):
+                if sgn > 0:
+                    hi = max(hi, c[i] + r_hi)
+                else:
+                    lo = min(lo, c[i] - r_hi)
+        out.append((lo, hi))
+    return out[0], out[1], g.ia, g.ib
+
