@@ -222,7 +222,7 @@ CATALOGUE: tuple[Code, ...] = (
     Code("ZN112", _E, _MF, "two zones with the same name"),
     Code("ZN113", _E, _MF, "a tip zone on a machine without a tool axis"),
     Code("ZN114", _E, _MF, "a setting not among its choices (type, dialect, cutter_compensation, arc_tolerance, "
-                           "block_delete, control_units, [fanuc] keys)"),
+                           "block_delete, control_units, path_mode, [fanuc] keys)"),
     Code("ZN115", _W, _MF, "a section or key this machine's dialect or type does not read (ignored)"),
     Code("ZN120", _E, _MF, "an empty zone"),
     Code("ZN121", _E, _MF, "upto not strictly increasing"),
@@ -296,6 +296,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF205", _U, "", "the solver could not decide (incomplete)"),
     Code("VF206", _U, _RM, "block-delete switch positions: the program is verified in some of them only"),
     Code("VF207", _U, _RM, "a lathe tool's nose radius with a zone the nose cannot be checked against"),
+    Code("VF208", _U, "specs/path-modes.md", "a corner the control may round (G64, Fanuc cutting mode) may leave "
+                                               "the allowed set"),
     # -- RC: recovery
     Code("RC201", _U, _RE, "a recovery (break) motion nczones does not encode"),
     Code("RC202", _U, _RE, "recovery: the solver's limit"),

@@ -212,7 +212,8 @@ def split_program(text: str, machine: Any, settings: Mapping[str, Any],
     moved forward to the next line that sets the motion mode, or dropped.
 
     >>> from nczones import load_machine
-    >>> m = load_machine("specs/machines/mill.toml")
+    >>> from dataclasses import replace
+    >>> m = replace(load_machine("specs/machines/mill.toml"), path_mode="G61")  # G64: never split
     >>> prog = "G21 G90 G54\\nG0 X10 Y10 Z50\\nG1 X20 F300\\nX30\\nG1 Y20\\nX40\\n"
     >>> chunks = split_program(prog, m, {}, chunk_lines=2)
     >>> [(c.first_line, c.preamble, c.position) for c in chunks][1:]   # doctest: +NORMALIZE_WHITESPACE
