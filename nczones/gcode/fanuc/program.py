@@ -55,6 +55,7 @@ from ..program import (
     interpretation_spent,
 )
 from .expr import (
+    LOCALS,
     VACANT,
     Context,
     FanucVariables,
@@ -632,8 +633,15 @@ class FanucRunner:
     def assign(self, target: Callable[[], int], value: Callable[[], tuple], lineno: int, line: str, col: int,
                end: int, fl: FanucLine) -> bool:
         """``#i = value``; True when it raised a #3000 alarm (the program stops)."""
-        n = self.evaluate(target, lineno, line, col, end)
-        v = self.evaluate(value, lineno, line, col, end)
+        try:
+            n = target()
+            v = value()
+        except (EvalError, SystemVariableUnknown, RecursionError):  # again through evaluate: the diagnostic
+            n = self.evaluate(target, lineno, line, col, end)
+            v = self.evaluate(value, lineno, line, col, end)
+        if 0 < n <= LOCALS and self.vars.on_write is None:
+            self.vars.local[n] = v  # FanucVariables.write's first case, inline
+            return False
         if n in (3000, 3006):
             message = fl.comments[0][0].strip() if fl.comments else ""
             number = int(round_to(v, Fraction(1))) if v is not VACANT else 0
@@ -660,7 +668,11 @@ class FanucRunner:
         if kind == "output":
             return here
         if kind == "if":
-            if self.evaluate(stmt[1], lineno, line, col, end)[0] == 0.0:
+            try:
+                cond = stmt[1]()
+            except (EvalError, SystemVariableUnknown, RecursionError):
+                cond = self.evaluate(stmt[1], lineno, line, col, end)
+            if cond[0] == 0.0:
                 return here
             then = stmt[2]
             if then[0] == "goto":
@@ -686,7 +698,12 @@ class FanucRunner:
                                      "identification numbers (1, 2, 3)", lineno, line, col, end)
                 loop = _Loop(m, (pos, lineno))
                 loops.append(loop)
-            if kind == "do" or self.evaluate(stmt[1], lineno, line, col, end)[0] != 0.0:
+            if kind == "while":
+                try:
+                    cond = stmt[1]()
+                except (EvalError, SystemVariableUnknown, RecursionError):
+                    cond = self.evaluate(stmt[1], lineno, line, col, end)
+            if kind == "do" or cond[0] != 0.0:
                 self.count(loop, lineno, line)
                 return here
             loops.pop()
