@@ -119,7 +119,7 @@ class _Loop:
 class _Source:
     """A program text and its index of program numbers and sequence-number labels."""
 
-    __slots__ = ("src", "file", "programs", "extents", "labels", "cache")
+    __slots__ = ("src", "file", "programs", "extents", "labels", "cache", "plain")
 
     def __init__(self, src: _LineSource, file: str):
         self.src = src
@@ -128,6 +128,9 @@ class _Source:
         self.extents: list = []  # (start pos, end pos) of each program text: O line to the next O line
         self.labels: dict[int, list] = {}
         self.cache: dict[int, tuple] = {}  # offset -> the compiled line (FanucRunner.compiled)
+        #: offset -> (line, next offset, scan_plain of it, lengths_ok metric, lengths_ok inch) of a plain line
+        #: that runs again (in a loop or a subprogram; FanucRunner.run)
+        self.plain: dict[int, tuple] = {}
 
     def index(self) -> None:
         """Find every program number line and every block with a sequence number (once)."""
@@ -384,27 +387,41 @@ class FanucRunner:
                         declined = -1
                         continue
                     declined = pos
-                line, nxt = src.line_at(pos)
-                if line is None:
-                    self.end_of_text(lineno)
-                    return
-                if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
-                    parsed = scan_plain(line)
-                    if parsed is not None and self.plain_ok(parsed[2], parsed[3], line):
-                        delete, number, letters, values = parsed
-                        pos, lineno0, lineno = nxt, lineno, lineno + 1
-                        if delete and self.skips(1):
-                            continue
-                        if letters:
-                            self.started = self.ran = True
-                            span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
-                            taken = lane(letters, values, span, self.index) if lane is not None else 0
-                            if not taken:
-                                yield plain_block(letters, values, span, self.index, number, None)
-                            self.index += 1
-                            if taken == 2:
-                                yield LANE_FULL
+                hit = source.plain.get(pos)
+                if hit is not None:  # a plain line run before (in a loop or a subprogram)
+                    line, nxt, parsed = hit[0], hit[1], hit[2]
+                    ok = self.modal_call is None and (hit[4] if self._inch() else hit[3]) and self.plain_words_ok(
+                        parsed[2], parsed[3])
+                else:
+                    line, nxt = src.line_at(pos)
+                    if line is None:
+                        self.end_of_text(lineno)
+                        return
+                    parsed = None
+                    if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
+                        parsed = scan_plain(line)
+                    ok = parsed is not None and self.plain_ok(parsed[2], parsed[3], line)
+                    if parsed is not None and (frame.loops or len(self.frames) > 1) and self.cached < 200_000:
+                        # the line runs again: keep its scan and which unit systems its literals pass in
+                        source.plain[pos] = (line, nxt, parsed, self.lengths_ok(line, False),
+                                             self.lengths_ok(line, True))
+                        self.cached += 1
+                if ok:
+                    assert parsed is not None
+                    delete, number, letters, values = parsed
+                    pos, lineno0, lineno = nxt, lineno, lineno + 1
+                    if delete and self.skips(1):
                         continue
+                    if letters:
+                        self.started = self.ran = True
+                        span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
+                        taken = lane(letters, values, span, self.index) if lane is not None else 0
+                        if not taken:
+                            yield plain_block(letters, values, span, self.index, number, None)
+                        self.index += 1
+                        if taken == 2:
+                            yield LANE_FULL
+                    continue
                 compiled = self.compiled(source, pos, line, lineno, nxt)
             if compiled[1] or compiled[0].percent or compiled[0].program is not None:
                 target = yield from self.execute(compiled, pos, lineno)
@@ -418,8 +435,16 @@ class FanucRunner:
         """Whether a plain line's values are its words' values and the line does nothing the general path
         must see: no length literal without a decimal point or with more decimals than the increment, no
         program end, call or custom code, no lathe cycle that reads a shape."""
-        if _INT_LENGTH.search(line) or (self._long_inch if self._inch() else self._long_mm).search(line):
-            return False
+        return self.lengths_ok(line, self._inch()) and self.plain_words_ok(letters, values)
+
+    def lengths_ok(self, line: str, inch: bool) -> bool:
+        """No length literal of the line without a decimal point or with more decimals than the increment
+        (in inch or metric input)."""
+        return not (_INT_LENGTH.search(line) or (self._long_inch if inch else self._long_mm).search(line))
+
+    def plain_words_ok(self, letters: str, values: tuple) -> bool:
+        """:meth:`plain_ok` but for the literals' text: no program end, call or custom code, no G51, no lathe
+        cycle that reads a shape (this depends on the state: it is checked on every run of a line)."""
         if "G" in letters:
             # G51's P (and I J K) without a decimal point is in scaling_unit (word_values): the plain lane
             # would read P3 as the factor 3
@@ -507,6 +532,12 @@ class FanucRunner:
             return self.statement(stmt, fl, pos, lineno, line, nxt)
         if not words:
             return here
+        if maybe_calls and len(words) == 1:
+            w = words[0]
+            if w[0] == "M" and w[1] == LITERAL and w[2][0] == 99:
+                # a bare M99 (the end of every subprogram): what calls() does with it, without building the
+                # block's value list (M99 is a call code before any custom M code; no other word runs)
+                return self.return_m99(None, ("M", w[2][0], w[3], w[4], w[5]), lineno, line, nxt)
         values = self.plain_values(words, lineno, line) if plain else self.word_values(words, gcodes, lineno, line)
         if maybe_calls:
             calls = [v for v in values if v[0] == "G" and v[1] in (65, 66, 67)]
