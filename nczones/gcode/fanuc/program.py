@@ -359,7 +359,12 @@ class FanucRunner:
         # a lathe's G70-G76 read P, Q and some R words as sequence numbers and counts (word_values)
         plain = not (gcodes & _SPECIAL_G) and not any(w[0] == "K" for w in fl.words) and not (
             self.shape_codes and gcodes & (_LATHE_PQ | _LATHE_Q_ANGLE) and any(w[0] in "QR" for w in fl.words))
-        out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes, calls, plain)
+        # an NC line the run hands to the interpreter's plain-move lane (no macro statement, call, M code or
+        # special G code; words evaluated by plain_values): FanucRunner.run
+        simple = (bool(words) and plain and not calls and not assigns and stmt is None and not fl.delete
+                  and not fl.percent and fl.program is None and fl.unmodelled is None
+                  and not any(w[0] == "M" for w in fl.words))
+        out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes, calls, plain, simple)
         if self.cached < 200_000:
             source.cache[pos] = out
             self.cached += 1
@@ -423,6 +428,23 @@ class FanucRunner:
                             yield LANE_FULL
                     continue
                 compiled = self.compiled(source, pos, line, lineno, nxt)
+            if compiled[9] and self.modal_call is None and not self.shape_codes:
+                # an NC line with expressions (X#3 Y[#1 * 2]): what execute() -> nc() -> block() do with it,
+                # its values handed to the plain-move lane without a block (yielded when the lane declines)
+                line, nxt = compiled[4], compiled[5]
+                values = self.plain_values(compiled[1], lineno, line)
+                self.current_pos = pos
+                self.started = self.ran = True
+                span = make_span(source.file, lineno, 1, len(line) + 1, line)
+                taken = lane("".join([v[0] for v in values]), tuple([v[1] for v in values]), span,
+                             self.index) if lane is not None and values else 0
+                if not taken:
+                    yield plain_block_of(values, span, self.index, compiled[0].number)
+                self.index += 1
+                if taken == 2:
+                    yield LANE_FULL
+                pos, lineno = nxt, lineno + 1
+                continue
             if compiled[1] or compiled[0].percent or compiled[0].program is not None:
                 target = yield from self.execute(compiled, pos, lineno)
             else:
@@ -498,7 +520,7 @@ class FanucRunner:
 
     # -- one general line -------------------------------------------------------------------
     def execute(self, compiled: tuple, pos: int, lineno: int) -> _Flow:
-        fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled
+        fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled[:9]
         self.current_pos = pos
         frame = self.frames[-1]
         here = (nxt, lineno + 1)
@@ -532,12 +554,18 @@ class FanucRunner:
             return self.statement(stmt, fl, pos, lineno, line, nxt)
         if not words:
             return here
-        if maybe_calls and len(words) == 1:
+        if maybe_calls and len(words) <= 2:
             w = words[0]
-            if w[0] == "M" and w[1] == LITERAL and w[2][0] == 99:
+            if len(words) == 1 and w[0] == "M" and w[1] == LITERAL and w[2][0] == 99:
                 # a bare M99 (the end of every subprogram): what calls() does with it, without building the
                 # block's value list (M99 is a call code before any custom M code; no other word runs)
                 return self.return_m99(None, ("M", w[2][0], w[3], w[4], w[5]), lineno, line, nxt)
+            if len(words) == 2 and w[0] == "M" and w[1] == LITERAL and w[2][0] == 98 and words[1][0] == "P" \
+                    and words[1][1] == LITERAL:
+                # M98 P<n>: what calls() does with it (M98 before any custom code; P the only other word)
+                p = words[1]
+                return self.m98(("P", p[2][0], p[3], p[4], p[5]), None, ("M", w[2][0], w[3], w[4], w[5]), lineno,
+                                line, here)
         values = self.plain_values(words, lineno, line) if plain else self.word_values(words, gcodes, lineno, line)
         if maybe_calls:
             calls = [v for v in values if v[0] == "G" and v[1] in (65, 66, 67)]
@@ -548,6 +576,7 @@ class FanucRunner:
     def plain_values(self, words: tuple, lineno: int, line: str) -> list:
         """:meth:`word_values` of a block with no G04, G51, G68, canned cycle code or K word."""
         values = []
+        inc = None  # the linear axes' increment (read once per block)
         for letter, kind, payload, col, end, text, var in words:
             if kind == EXPR:
                 try:
@@ -557,7 +586,12 @@ class FanucRunner:
                 if value is VACANT or (var is not None and self.evaluate(var, lineno, line, col, end) is VACANT):
                     continue  # a vacant variable drops its word
                 if letter in LENGTH_LETTERS:
-                    q = round_to(value, self._inc_mm if letter in "ABC" or not self._inch() else self._inc_inch)
+                    if letter in "ABC":
+                        q = round_to(value, self._inc_mm)
+                    else:
+                        if inc is None:
+                            inc = self._inc_inch if self._inch() else self._inc_mm
+                        q = round_to(value, inc)
                 else:
                     q = self.address_value(letter, value, False)
             else:
@@ -643,7 +677,8 @@ class FanucRunner:
                     return q * self.increment(letter)
             return q
         inc = self.increment(letter)
-        if (q / inc).denominator != 1:
+        # q / inc not an integer (Fraction's division by integers: denominators are positive, inc > 0)
+        if (q.numerator * inc.denominator) % (q.denominator * inc.numerator):
             self.rounded_count += 1
             if len(self.rounded) < 20:
                 self.rounded.append((lineno, text))
