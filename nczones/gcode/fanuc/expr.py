@@ -44,7 +44,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
-from typing import TypeAlias
+from typing import Any, TypeAlias
 
 from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_sub
 from ..lexer import fraction_raw, to_double, to_fraction
@@ -415,7 +415,7 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
                 check_double(d)
             if qa is None or qb is None or not qb._numerator:
                 return (d, None)
-            q = q_div(qa, qb)
+            q: Any = q_div(qa, qb)
             return (d, q) if q._numerator / q._denominator == d else (d, None)
         return div
     qop = {"+": q_add, "-": q_sub, "*": q_mul}[op]
@@ -428,7 +428,7 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
                 check_double(d)
             if qa is None or qb is None:
                 return (d, None)
-            q = qop(qa, qb)
+            q: Any = qop(qa, qb)
             return (d, q) if q._numerator / q._denominator == d else (d, None)
         return add
     if op == "-":
@@ -440,7 +440,7 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
                 check_double(d)
             if qa is None or qb is None:
                 return (d, None)
-            q = qop(qa, qb)
+            q: Any = qop(qa, qb)
             return (d, q) if q._numerator / q._denominator == d else (d, None)
         return sub
 
@@ -452,7 +452,7 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
             check_double(d)
         if qa is None or qb is None:
             return (d, None)
-        q = qop(qa, qb)
+        q: Any = qop(qa, qb)
         return (d, q) if q._numerator / q._denominator == d else (d, None)
     return mul
 
