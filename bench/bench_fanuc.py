@@ -90,6 +90,16 @@ def call_program(lines: int) -> str:
         "O9010 (ONE HOLE)", "G00 X#24 Y#25", "G01 Z-#7", "M99"]) + "\n"
 
 
+def subprogram_program(lines: int) -> str:
+    """M98 calls: per iteration WHILE, the call, the subprogram's three lines (G0 with expressions, G1, M99),
+    the increment, END."""
+    reps = max(1, lines // 6)
+    return "\n".join([
+        "O4000 (SUBS)", "G90 G17 G21 G54 F300.", "#1 = 0",
+        f"WHILE [#1 LT {reps}] DO1", "M98 P9020", "#1 = #1 + 1", "END1", "M30",
+        "O9020 (SUB)", "G00 X[#1 * 0.1] Y[#1 * 0.05]", "G01 Z-2.", "M99"]) + "\n"
+
+
 def linuxcnc_macro_program(lines: int) -> str:
     reps = max(1, lines // MACRO_BODY)
     return "\n".join([

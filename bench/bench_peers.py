@@ -27,8 +27,10 @@ and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
 ``--small``), an expression on every line (``--small``), R-format arcs (``--small`` lines of
 ``G2``/``G3 X.. Y.. R..``, ``bench_gcode.rarc_program``; LinuxCNC, and Fanuc without an rs274 column), stellabee1.ngc with
 ``--arc-tolerance linuxcnc``, the corpus's ``--corpus`` largest LinuxCNC
-programs, and generated Fanuc Custom Macro B and LinuxCNC o-word loops of
-about ``--macro`` executed lines.
+programs, and generated Fanuc Custom Macro B loops (a WHILE loop, a G65 call per iteration, an M98 call
+per iteration) and LinuxCNC o-word loops of about ``--macro`` executed lines.  Interpretation and verify
+run with a loop bound above any row's iterations (``--max-iterations``), so a row of a million lines is
+interpreted to its end rather than stopped as ``unknown`` at the default bound of 100,000 iterations.
 """
 
 from __future__ import annotations
@@ -122,6 +124,7 @@ from nczones.gcode import interpret
 from nczones.machine import load_machine
 m = load_machine(sys.argv[2])
 options = {"arc_tolerance": sys.argv[3]} if sys.argv[3] else {}
+options["max_loop_iterations"] = 10**9  # the loop rows run past the default bound (as verify's below)
 n = 0
 for chunk in interpret(sys.argv[1], m, **options):
     n += len(chunk)
@@ -160,6 +163,8 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
                 continue
             out.append((f"corpus {Path(r['path']).name}", CORPUS / r["path"], "linuxcnc", ""))
     gen(f"Fanuc Macro B loop, {a.macro:,} executed lines", bench_fanuc.macro_program(a.macro), "fanuc")
+    gen(f"Fanuc G65 call per iteration, {a.macro:,} lines", bench_fanuc.call_program(a.macro), "fanuc")
+    gen(f"Fanuc M98 call per iteration, {a.macro:,} lines", bench_fanuc.subprogram_program(a.macro), "fanuc")
     gen(f"LinuxCNC o-word loop, {a.macro:,} executed lines", bench_fanuc.linuxcnc_macro_program(a.macro))
     return out
 
@@ -208,7 +213,10 @@ def main() -> None:
             if rs274 is not None and dialect == "linuxcnc":
                 peer, peer_code = cpu_of([rs274, "-g", str(path), os.devnull], a.timeout)
             interp, _ = cpu_of([sys.executable, "-c", INTERPRET, str(path), str(machine), tol], a.timeout, env)
-            cmd = [*nczones, "verify", str(path), "--machine", str(machine), "--format", "json"]
+            # --max-iterations: a loop row of more than 100,000 iterations is interpreted to its end (the default
+            # bound would stop it early as unknown)
+            cmd = [*nczones, "verify", str(path), "--machine", str(machine), "--format", "json",
+                   "--max-iterations", "1000000000"]
             if tol:
                 cmd += ["--arc-tolerance", tol]
             verify, code = cpu_of(cmd, a.timeout, env)

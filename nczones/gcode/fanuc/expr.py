@@ -44,10 +44,10 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
-from typing import TypeAlias
+from typing import Any, TypeAlias
 
-from ..expr import EvalError, binary_op, check_double
-from ..lexer import to_double, to_fraction
+from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_sub
+from ..lexer import fraction_raw, to_double, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "EvalError",
@@ -378,7 +378,11 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         left = compile_tree(node[2], variables, ctx, in_address)
         right = compile_tree(node[3], variables, ctx, in_address)
         if op in ("+", "-", "*", "/"):
+            if _SLOTS:
+                return _arithmetic(op, left, right)
             return lambda: binary_op(op, left(), right())
+        if op in _COMPARE:
+            return _COMPARE[op](left, right)
         return lambda: _binop(op, left(), right())
     if tag == FN:
         name = node[1]
@@ -390,6 +394,87 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         b = compile_tree(node[3], variables, ctx, in_address)
         return lambda: _two(name, a(), b(), ctx)
     raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
+
+
+#: Whether Fractions are read through their slots (CPython): the arithmetic closures then inline
+#: :func:`nczones.gcode.expr.binary_op` (the same operations in the same order, one call less per node).
+_SLOTS = to_fraction is fraction_raw
+
+
+def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    """``left op right`` for + - * /: :func:`binary_op` inlined (bit-identical: the double is the same IEEE
+    operation, checked for NaN/infinity the same way, the exact shadow kept only if it rounds to it)."""
+    if op == "/":
+        def div() -> Value:
+            a, qa = left()
+            b, qb = right()
+            if b == 0.0:
+                raise EvalError("GC311", "attempt to divide by zero")
+            d = a / b
+            if d - d:  # NaN or infinity (d - d is NaN for both, 0.0 otherwise)
+                check_double(d)
+            if qa is None or qb is None or not qb._numerator:
+                return (d, None)
+            q: Any = q_div(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return div
+    qop = {"+": q_add, "-": q_sub, "*": q_mul}[op]
+    if op == "+":
+        def add() -> Value:
+            a, qa = left()
+            b, qb = right()
+            d = a + b
+            if d - d:
+                check_double(d)
+            if qa is None or qb is None:
+                return (d, None)
+            q: Any = qop(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return add
+    if op == "-":
+        def sub() -> Value:
+            a, qa = left()
+            b, qb = right()
+            d = a - b
+            if d - d:
+                check_double(d)
+            if qa is None or qb is None:
+                return (d, None)
+            q: Any = qop(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return sub
+
+    def mul() -> Value:
+        a, qa = left()
+        b, qb = right()
+        d = a * b
+        if d - d:
+            check_double(d)
+        if qa is None or qb is None:
+            return (d, None)
+        q: Any = qop(qa, qb)
+        return (d, q) if q._numerator / q._denominator == d else (d, None)
+    return mul
+
+
+def _gt(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] > right()[0] else _FALSE
+
+
+def _ge(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] >= right()[0] else _FALSE
+
+
+def _lt(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] < right()[0] else _FALSE
+
+
+def _le(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] <= right()[0] else _FALSE
+
+
+#: The order comparisons as closures (:func:`_binop`'s gt/ge/lt/le: the doubles compared, vacant as 0).
+_COMPARE = {"gt": _gt, "ge": _ge, "lt": _lt, "le": _le}
 
 
 def evaluate_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None) -> Value:

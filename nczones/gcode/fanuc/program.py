@@ -55,6 +55,7 @@ from ..program import (
     interpretation_spent,
 )
 from .expr import (
+    LOCALS,
     VACANT,
     Context,
     FanucVariables,
@@ -118,7 +119,7 @@ class _Loop:
 class _Source:
     """A program text and its index of program numbers and sequence-number labels."""
 
-    __slots__ = ("src", "file", "programs", "extents", "labels", "cache")
+    __slots__ = ("src", "file", "programs", "extents", "labels", "cache", "plain")
 
     def __init__(self, src: _LineSource, file: str):
         self.src = src
@@ -127,6 +128,9 @@ class _Source:
         self.extents: list = []  # (start pos, end pos) of each program text: O line to the next O line
         self.labels: dict[int, list] = {}
         self.cache: dict[int, tuple] = {}  # offset -> the compiled line (FanucRunner.compiled)
+        #: offset -> (line, next offset, scan_plain of it, lengths_ok metric, lengths_ok inch) of a plain line
+        #: that runs again (in a loop or a subprogram; FanucRunner.run)
+        self.plain: dict[int, tuple] = {}
 
     def index(self) -> None:
         """Find every program number line and every block with a sequence number (once)."""
@@ -355,7 +359,12 @@ class FanucRunner:
         # a lathe's G70-G76 read P, Q and some R words as sequence numbers and counts (word_values)
         plain = not (gcodes & _SPECIAL_G) and not any(w[0] == "K" for w in fl.words) and not (
             self.shape_codes and gcodes & (_LATHE_PQ | _LATHE_Q_ANGLE) and any(w[0] in "QR" for w in fl.words))
-        out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes, calls, plain)
+        # an NC line the run hands to the interpreter's plain-move lane (no macro statement, call, M code or
+        # special G code; words evaluated by plain_values): FanucRunner.run
+        simple = (bool(words) and plain and not calls and not assigns and stmt is None and not fl.delete
+                  and not fl.percent and fl.program is None and fl.unmodelled is None
+                  and not any(w[0] == "M" for w in fl.words))
+        out = (fl, tuple(words), assigns, stmt, line, nxt, gcodes, calls, plain, simple)
         if self.cached < 200_000:
             source.cache[pos] = out
             self.cached += 1
@@ -383,28 +392,59 @@ class FanucRunner:
                         declined = -1
                         continue
                     declined = pos
-                line, nxt = src.line_at(pos)
-                if line is None:
-                    self.end_of_text(lineno)
-                    return
-                if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
-                    parsed = scan_plain(line)
-                    if parsed is not None and self.plain_ok(parsed[2], parsed[3], line):
-                        delete, number, letters, values = parsed
-                        pos, lineno0, lineno = nxt, lineno, lineno + 1
-                        if delete and self.skips(1):
-                            continue
-                        if letters:
-                            self.started = self.ran = True
-                            span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
-                            taken = lane(letters, values, span, self.index) if lane is not None else 0
-                            if not taken:
-                                yield plain_block(letters, values, span, self.index, number, None)
-                            self.index += 1
-                            if taken == 2:
-                                yield LANE_FULL
+                hit = source.plain.get(pos)
+                if hit is not None:  # a plain line run before (in a loop or a subprogram)
+                    line, nxt, parsed = hit[0], hit[1], hit[2]
+                    ok = self.modal_call is None and (hit[4] if self._inch() else hit[3]) and self.plain_words_ok(
+                        parsed[2], parsed[3])
+                else:
+                    line, nxt = src.line_at(pos)
+                    if line is None:
+                        self.end_of_text(lineno)
+                        return
+                    parsed = None
+                    if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
+                        parsed = scan_plain(line)
+                    ok = parsed is not None and self.plain_ok(parsed[2], parsed[3], line)
+                    if parsed is not None and (frame.loops or len(self.frames) > 1) and self.cached < 200_000:
+                        # the line runs again: keep its scan and which unit systems its literals pass in
+                        source.plain[pos] = (line, nxt, parsed, self.lengths_ok(line, False),
+                                             self.lengths_ok(line, True))
+                        self.cached += 1
+                if ok:
+                    assert parsed is not None
+                    delete, number, letters, values = parsed
+                    pos, lineno0, lineno = nxt, lineno, lineno + 1
+                    if delete and self.skips(1):
                         continue
+                    if letters:
+                        self.started = self.ran = True
+                        span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
+                        taken = lane(letters, values, span, self.index) if lane is not None else 0
+                        if not taken:
+                            yield plain_block(letters, values, span, self.index, number, None)
+                        self.index += 1
+                        if taken == 2:
+                            yield LANE_FULL
+                    continue
                 compiled = self.compiled(source, pos, line, lineno, nxt)
+            if compiled[9] and self.modal_call is None and not self.shape_codes:
+                # an NC line with expressions (X#3 Y[#1 * 2]): what execute() -> nc() -> block() do with it,
+                # its values handed to the plain-move lane without a block (yielded when the lane declines)
+                line, nxt = compiled[4], compiled[5]
+                values = self.plain_values(compiled[1], lineno, line)
+                self.current_pos = pos
+                self.started = self.ran = True
+                span = make_span(source.file, lineno, 1, len(line) + 1, line)
+                taken = lane("".join([v[0] for v in values]), tuple([v[1] for v in values]), span,
+                             self.index) if lane is not None and values else 0
+                if not taken:
+                    yield plain_block_of(values, span, self.index, compiled[0].number)
+                self.index += 1
+                if taken == 2:
+                    yield LANE_FULL
+                pos, lineno = nxt, lineno + 1
+                continue
             if compiled[1] or compiled[0].percent or compiled[0].program is not None:
                 target = yield from self.execute(compiled, pos, lineno)
             else:
@@ -417,8 +457,16 @@ class FanucRunner:
         """Whether a plain line's values are its words' values and the line does nothing the general path
         must see: no length literal without a decimal point or with more decimals than the increment, no
         program end, call or custom code, no lathe cycle that reads a shape."""
-        if _INT_LENGTH.search(line) or (self._long_inch if self._inch() else self._long_mm).search(line):
-            return False
+        return self.lengths_ok(line, self._inch()) and self.plain_words_ok(letters, values)
+
+    def lengths_ok(self, line: str, inch: bool) -> bool:
+        """No length literal of the line without a decimal point or with more decimals than the increment
+        (in inch or metric input)."""
+        return not (_INT_LENGTH.search(line) or (self._long_inch if inch else self._long_mm).search(line))
+
+    def plain_words_ok(self, letters: str, values: tuple) -> bool:
+        """:meth:`plain_ok` but for the literals' text: no program end, call or custom code, no G51, no lathe
+        cycle that reads a shape (this depends on the state: it is checked on every run of a line)."""
         if "G" in letters:
             # G51's P (and I J K) without a decimal point is in scaling_unit (word_values): the plain lane
             # would read P3 as the factor 3
@@ -472,7 +520,7 @@ class FanucRunner:
 
     # -- one general line -------------------------------------------------------------------
     def execute(self, compiled: tuple, pos: int, lineno: int) -> _Flow:
-        fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled
+        fl, words, assigns, stmt, line, nxt, gcodes, maybe_calls, plain = compiled[:9]
         self.current_pos = pos
         frame = self.frames[-1]
         here = (nxt, lineno + 1)
@@ -506,6 +554,18 @@ class FanucRunner:
             return self.statement(stmt, fl, pos, lineno, line, nxt)
         if not words:
             return here
+        if maybe_calls and len(words) <= 2:
+            w = words[0]
+            if len(words) == 1 and w[0] == "M" and w[1] == LITERAL and w[2][0] == 99:
+                # a bare M99 (the end of every subprogram): what calls() does with it, without building the
+                # block's value list (M99 is a call code before any custom M code; no other word runs)
+                return self.return_m99(None, ("M", w[2][0], w[3], w[4], w[5]), lineno, line, nxt)
+            if len(words) == 2 and w[0] == "M" and w[1] == LITERAL and w[2][0] == 98 and words[1][0] == "P" \
+                    and words[1][1] == LITERAL:
+                # M98 P<n>: what calls() does with it (M98 before any custom code; P the only other word)
+                p = words[1]
+                return self.m98(("P", p[2][0], p[3], p[4], p[5]), None, ("M", w[2][0], w[3], w[4], w[5]), lineno,
+                                line, here)
         values = self.plain_values(words, lineno, line) if plain else self.word_values(words, gcodes, lineno, line)
         if maybe_calls:
             calls = [v for v in values if v[0] == "G" and v[1] in (65, 66, 67)]
@@ -516,6 +576,7 @@ class FanucRunner:
     def plain_values(self, words: tuple, lineno: int, line: str) -> list:
         """:meth:`word_values` of a block with no G04, G51, G68, canned cycle code or K word."""
         values = []
+        inc = None  # the linear axes' increment (read once per block)
         for letter, kind, payload, col, end, text, var in words:
             if kind == EXPR:
                 try:
@@ -525,7 +586,12 @@ class FanucRunner:
                 if value is VACANT or (var is not None and self.evaluate(var, lineno, line, col, end) is VACANT):
                     continue  # a vacant variable drops its word
                 if letter in LENGTH_LETTERS:
-                    q = round_to(value, self._inc_mm if letter in "ABC" or not self._inch() else self._inc_inch)
+                    if letter in "ABC":
+                        q = round_to(value, self._inc_mm)
+                    else:
+                        if inc is None:
+                            inc = self._inc_inch if self._inch() else self._inc_mm
+                        q = round_to(value, inc)
                 else:
                     q = self.address_value(letter, value, False)
             else:
@@ -611,7 +677,8 @@ class FanucRunner:
                     return q * self.increment(letter)
             return q
         inc = self.increment(letter)
-        if (q / inc).denominator != 1:
+        # q / inc not an integer (Fraction's division by integers: denominators are positive, inc > 0)
+        if (q.numerator * inc.denominator) % (q.denominator * inc.numerator):
             self.rounded_count += 1
             if len(self.rounded) < 20:
                 self.rounded.append((lineno, text))
@@ -632,8 +699,15 @@ class FanucRunner:
     def assign(self, target: Callable[[], int], value: Callable[[], tuple], lineno: int, line: str, col: int,
                end: int, fl: FanucLine) -> bool:
         """``#i = value``; True when it raised a #3000 alarm (the program stops)."""
-        n = self.evaluate(target, lineno, line, col, end)
-        v = self.evaluate(value, lineno, line, col, end)
+        try:
+            n = target()
+            v = value()
+        except (EvalError, SystemVariableUnknown, RecursionError):  # again through evaluate: the diagnostic
+            n = self.evaluate(target, lineno, line, col, end)
+            v = self.evaluate(value, lineno, line, col, end)
+        if 0 < n <= LOCALS and self.vars.on_write is None:
+            self.vars.local[n] = v  # FanucVariables.write's first case, inline
+            return False
         if n in (3000, 3006):
             message = fl.comments[0][0].strip() if fl.comments else ""
             number = int(round_to(v, Fraction(1))) if v is not VACANT else 0
@@ -660,7 +734,11 @@ class FanucRunner:
         if kind == "output":
             return here
         if kind == "if":
-            if self.evaluate(stmt[1], lineno, line, col, end)[0] == 0.0:
+            try:
+                cond = stmt[1]()
+            except (EvalError, SystemVariableUnknown, RecursionError):
+                cond = self.evaluate(stmt[1], lineno, line, col, end)
+            if cond[0] == 0.0:
                 return here
             then = stmt[2]
             if then[0] == "goto":
@@ -686,7 +764,12 @@ class FanucRunner:
                                      "identification numbers (1, 2, 3)", lineno, line, col, end)
                 loop = _Loop(m, (pos, lineno))
                 loops.append(loop)
-            if kind == "do" or self.evaluate(stmt[1], lineno, line, col, end)[0] != 0.0:
+            if kind == "while":
+                try:
+                    cond = stmt[1]()
+                except (EvalError, SystemVariableUnknown, RecursionError):
+                    cond = self.evaluate(stmt[1], lineno, line, col, end)
+            if kind == "do" or cond[0] != 0.0:
                 self.count(loop, lineno, line)
                 return here
             loops.pop()
