@@ -60,8 +60,11 @@ from .shapes import LAYOUT, RUNS, shape_source, shaped
 
 __all__ = ["Declined", "DoublePath", "double_pass"]
 
-#: Motions the pass keeps (8 bytes per axis each); a longer program takes the full path, whose memory is flat.
+#: Motions the pass keeps (8 bytes per axis each) when it is run without ``on_window``: it keeps them all.
 MAX_MOTIONS = 2_000_000
+#: Motions of a window when the pass is run with ``on_window``: the rows are handed over and dropped each time
+#: this many have been computed, so memory is flat and no program is too long for the pass.
+WINDOW = 1 << 16
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows, by modal group.
 _GROUPS = {0: "motion", 1: "motion", 80: "motion", 17: "plane", 18: "plane", 19: "plane", 21: "units",
@@ -102,11 +105,13 @@ class DoublePath:
     start: tuple[Fraction, ...]
     #: per axis, the first row a motion moved it to (0: no motion moves it)
     first_row: tuple[int, ...]
+    #: the row ``columns[a][0]`` is (a window of a long program: rows ``row0``..``motions``; 0: every row)
+    row0: int = 0
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
-        inclusive) on the full path: the box of rows ``first - 1``..``last``, the rows a motion computed
-        widened by the bound of the module's docstring, the rows at the start exact.
+        inclusive, ``first > row0``) on the full path: the box of rows ``first - 1``..``last``, the rows a
+        motion computed widened by the bound of the module's docstring, the rows at the start exact.
 
         >>> p = DoublePath(("X",), (array("d", [0.0, 0.1, 0.3]),), (Fraction(0),), 2, 2, 0, 2, (Fraction(0),), (1,))
         >>> lo, hi = p.enclosure(1, 2)
@@ -122,8 +127,9 @@ class DoublePath:
             f = self.first_row[a]
             bounds = [self.start[a]] if f == 0 or first - 1 < f else []  # rows at the start: exact
             if f and f <= last:  # rows a motion computed: widened
-                begin = max(first - 1, f)
-                part = col[begin:last + 1] if begin > 0 or last + 1 < len(col) else col
+                begin = max(first - 1, f) - self.row0
+                end = last + 1 - self.row0
+                part = col[begin:end] if begin > 0 or end < len(col) else col
                 a_lo, a_hi = min(part), max(part)
                 top = max(abs(a_lo), abs(a_hi))
                 widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
@@ -139,9 +145,18 @@ _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnorm
 _GRID = 2**60
 
 
-def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
+def double_pass(text: str, machine: Any, *, max_iterations: int, on_window: Any = None,
+                window: int | None = None) -> DoublePath:
     """Run ``text`` on ``machine`` in doubles (see the module's docstring); raise :class:`Declined` when the
     program leaves the subset.
+
+    Without ``on_window`` the path holds every row (and the pass declines past :data:`MAX_MOTIONS`
+    motions).  With it, each time ``window`` (default :data:`WINDOW`) motions past the window's first row
+    have been computed, ``on_window(path)`` is called with a :class:`DoublePath` of rows ``row0``..``motions`` (its counts so far)
+    and those rows are dropped but the last two: windows overlap by one motion (the last motion of a
+    window is the first of the next), so a check that needs a motion and the one before it finds both in
+    one window.  ``on_window`` returns False to stop the pass (it then declines).  The path returned is the
+    last window, with the whole program's counts.
 
     >>> from nczones.machine import parse_machine
     >>> m = parse_machine('[machine]\\naxes=["X","Y"]\\n[machine.rapid]\\nX="1000"\\nY="1000"\\n'
@@ -155,7 +170,7 @@ def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
     ...
     nczones.gcode.doubles.Declined: G2 is not followed by the double pass
     """
-    return _Pass(text, machine, max_iterations).run()
+    return _Pass(text, machine, max_iterations, on_window, WINDOW if window is None else window).run()
 
 
 #: The code of a step: its body, its parameter writes, its values, the source of its plan's key, its names.
@@ -163,7 +178,13 @@ _Code = tuple[list[str], list[str], list[str], str, dict]
 
 
 class _Pass:
-    def __init__(self, text: str, machine: Any, max_iterations: int):
+    def __init__(self, text: str, machine: Any, max_iterations: int, on_window: Any = None, window: int = WINDOW):
+        if window < 1:
+            raise ValueError(f"a window of at least one motion, got {window}")
+        self.on_window = on_window
+        #: rows of a full window (the one before its first motion included); past it the window is handed over
+        self.rows = window + 1 if on_window is not None else MAX_MOTIONS + 2
+        self.row0 = 0  # the row columns[a][0] is
         if getattr(machine, "machine_type", "mill") != "mill" or getattr(machine, "diameter_axes", ()):
             raise Declined("a lathe")
         if getattr(machine, "dialect", "linuxcnc") != "linuxcnc":
@@ -299,11 +320,26 @@ class _Pass:
                         break
                 except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
                     raise Declined(f"an evaluation error: {exc!r}") from None
+        return self._path()
+
+    def _path(self) -> DoublePath:
+        """The rows held now as a path (every row, or the current window)."""
         if not all(math.isfinite(min(col)) and math.isfinite(max(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
-        motions = len(self.columns[0]) - 1
+        motions = self.row0 + len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
-                          self.blocks, self.start, tuple(self.first_row))
+                          self.blocks, self.start, tuple(self.first_row), self.row0)
+
+    def full(self) -> None:
+        """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
+        if self.on_window is None:
+            raise Declined(f"more than {MAX_MOTIONS} motions")
+        if not self.on_window(self._path()):
+            raise Declined("a window of the double pass that its boxes do not prove")
+        keep = len(self.columns[0]) - 2
+        for col in self.columns:
+            del col[:keep]
+        self.row0 += keep
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -487,7 +523,7 @@ class _Pass:
 
     def moved(self, axes: tuple[int, ...]) -> None:
         """The motion about to be added moves ``axes``: the first such row of each."""
-        row = len(self.columns[0])
+        row = self.row0 + len(self.columns[0])
         for i in axes:
             if not self.first_row[i]:
                 self.first_row[i] = row
@@ -556,7 +592,7 @@ class _Pass:
             body.append(f"if {' or '.join(f'not FR[{i}]' for _k, i in axes)}: st.moved({tuple(i for _k, i in axes)!r})")
             body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
             body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
-            body.append(f"if len(C0) > {MAX_MOTIONS}: raise D('more than {MAX_MOTIONS} motions')")
+            body.append(f"if len(C0) >= {self.rows}: st.full()")
             body.append("if not mode: st.rapids += 1")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
