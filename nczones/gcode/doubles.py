@@ -47,6 +47,7 @@ from __future__ import annotations
 import math
 import re
 from array import array
+from bisect import bisect_right
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -65,6 +66,8 @@ MAX_MOTIONS = 2_000_000
 #: Motions of a window when the pass is run with ``on_window``: the rows are handed over and dropped each time
 #: this many have been computed, so memory is flat and no program is too long for the pass.
 WINDOW = 1 << 16
+#: Characters of the text the pass splits into lines at a time (a list of lines costs ~10x the text).
+PIECE = 1 << 22
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows, by modal group.
 _GROUPS = {0: "motion", 1: "motion", 80: "motion", 17: "plane", 18: "plane", 19: "plane", 21: "units",
@@ -198,9 +201,8 @@ class _Pass:
         if "\r" in text:
             text = text.replace("\r\n", "\n").removesuffix("\r")
         self.text = text
-        self.lines = text.split("\n")
-        #: each line's layout (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII
-        self.layouts = text.encode().translate(LAYOUT).split(b"\n") if text.isascii() else None
+        #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it)
+        self.src = _Lines(text)
         self.by_layout: dict[bytes, Any] = {}  # layout -> the step of its lines (the line itself its argument)
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
@@ -257,10 +259,13 @@ class _Pass:
 
     # -- the run ------------------------------------------------------------------------------------------
     def run(self) -> DoublePath:
-        lines = self.lines
-        layouts = self.layouts
+        src = self.src
         controls = self._controls()
-        count = len(lines)
+        count = src.count
+        ascii_text = src.ascii
+        lo = hi = 0  # the lines lo..hi-1 are src's current piece: lines and layouts
+        lines: list[str] = []
+        layouts: list[bytes] = []
         steps: dict[int, Any] = {}  # the compiled lines of loop bodies, by index
         by_layout = self.by_layout
         counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
@@ -308,9 +313,11 @@ class _Pass:
                     step = steps[i] = self._step(i)
                 fn, parts = step
             else:
-                fn = by_layout.get(layouts[i]) if layouts is not None else None
+                if not lo <= i < hi:
+                    lo, hi, lines, layouts = src.piece(i)
+                fn = by_layout.get(layouts[i - lo]) if ascii_text else None
                 if fn is not None:
-                    parts = lines[i]
+                    parts = lines[i - lo]
                 else:
                     fn, parts = self._step(i)
             i += 1
@@ -343,7 +350,7 @@ class _Pass:
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
-        line = self.lines[i]
+        line, own_layout = self.src.line(i)
         if "(" in line or ";" in line or not line.isascii():
             return self._parsed(line), ()
         layout = line.encode().translate(LAYOUT)
@@ -353,7 +360,7 @@ class _Pass:
                 return None, ()
             return self._fresh(line)
         cut = hit[1]
-        if self.layouts is not None and layout == self.layouts[i]:
+        if own_layout is not None and layout == own_layout:
             self.by_layout[layout] = self._shape_step(hit[2], cut)
         return self._shape_step(hit[2]), cut(line)
 
@@ -600,6 +607,50 @@ class _Pass:
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
+
+
+class _Lines:
+    """The lines of a text as ``text.split("\n")`` has them, with their layouts
+    (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII, split a piece of about ``size``
+    characters at a time: the pass reads them in order but for jumps, and holds one piece."""
+
+    def __init__(self, text: str, size: int | None = None):
+        size = PIECE if size is None else max(1, size)
+        self.text = text
+        self.ascii = text.isascii()
+        self.count = text.count("\n") + 1
+        # pieces end just after a newline (the last at the end of the text): their first character and line
+        self.starts = [0]
+        self.first = [0]
+        at, line = 0, 0
+        while True:
+            cut = text.find("\n", at + size)
+            if cut < 0:
+                break
+            line += text.count("\n", at, cut + 1)
+            at = cut + 1
+            self.starts.append(at)
+            self.first.append(line)
+        self.cached: tuple = (0, 0, [], [])
+
+    def piece(self, i: int) -> tuple[int, int, list[str], list[bytes]]:
+        """``(first line, end line, lines, layouts)`` of the piece that holds line ``i``."""
+        lo, hi, _lines, _layouts = self.cached
+        if lo <= i < hi:
+            return self.cached
+        k = bisect_right(self.first, i) - 1
+        begin = self.starts[k]
+        last = k + 1 == len(self.starts)
+        part = self.text[begin:] if last else self.text[begin:self.starts[k + 1] - 1]
+        lines = part.split("\n")
+        layouts = part.encode().translate(LAYOUT).split(b"\n") if self.ascii else []
+        self.cached = (self.first[k], self.first[k] + len(lines), lines, layouts)
+        return self.cached
+
+    def line(self, i: int) -> tuple[str, bytes | None]:
+        """Line ``i`` and its layout (None: the text is not ASCII)."""
+        lo, _hi, lines, layouts = self.piece(i)
+        return lines[i - lo], (layouts[i - lo] if self.ascii else None)
 
 
 def _letters(words: Any) -> str:

@@ -161,3 +161,24 @@ def test_a_window_whose_boxes_do_not_fit_stops_the_pass():
     r = prove_double_path(last, machine, Fraction(0), None, proof)
     assert r is not None and r.verdict is Verdict.SAFE and proof.windows == 4  # 1..8, 8..15, 15..22, 22..29
     assert dict(r.stats)["double_pass_boxes"] == proof.boxes + 1  # the last window, 29..30, one box
+
+
+@SETTINGS
+@given(parametric_programs(), st.integers(1, 40))
+def test_the_text_read_in_small_pieces_is_the_same_pass(monkeypatch, text, piece):
+    # the pass splits the text into lines a piece of PIECE characters at a time (flat memory); in pieces of
+    # a few characters every loop and branch jumps across pieces: the rows are those of one piece
+    machine = machine_of("box", 100, 0)
+    try:
+        whole = double_pass(text, machine, max_iterations=1000)
+    except Declined as exc:
+        monkeypatch.setattr(doubles, "PIECE", piece)
+        with pytest.raises(Declined) as again:
+            double_pass(text, machine, max_iterations=1000)
+        assert again.value.reason == exc.reason
+        return
+    monkeypatch.setattr(doubles, "PIECE", piece)
+    small = double_pass(text, machine, max_iterations=1000)
+    assert [list(c) for c in small.columns] == [list(c) for c in whole.columns]
+    assert (small.motions, small.blocks, small.rapids, small.first_row) == (whole.motions, whole.blocks,
+                                                                            whole.rapids, whole.first_row)
