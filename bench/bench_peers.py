@@ -224,7 +224,7 @@ def scaling(sizes: list[int], repeat: int, env: dict) -> None:
         d = Path(tmp)
         machine = d / "box.toml"
         # a box the 10M-line CAM walk stays in (the default box is left after about 4M lines)
-        machine.write_text(BOX.format(dialect="linuxcnc").replace('100000"', '100000000"'))
+        machine.write_text(BOX.format(dialect="linuxcnc").replace('100000"', '900000"'))
         for name, make in (("CAM G1", "cam_program"), ("expression every line", "expr_program")):
             before = None
             for n in sizes:

@@ -67,7 +67,7 @@ MAX_MOTIONS = 2_000_000
 #: this many have been computed, so memory is flat and no program is too long for the pass.
 WINDOW = 1 << 16
 #: Characters of the text the pass splits into lines at a time (a list of lines costs ~10x the text).
-PIECE = 1 << 22
+PIECE = 1 << 20
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows, by modal group.
 _GROUPS = {0: "motion", 1: "motion", 80: "motion", 17: "plane", 18: "plane", 19: "plane", 21: "units",
