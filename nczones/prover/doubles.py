@@ -77,7 +77,8 @@ class WindowProof:
 
 
 def _max_boxes(path: Any) -> int:
-    return max(64, (path.motions - getattr(path, "row0", 0)) // 16)
+    motions: int = path.motions - getattr(path, "row0", 0)
+    return max(64, motions // 16)
 
 
 def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: float | None = None,

@@ -30,7 +30,7 @@ from nczones.prover.result import Verdict
 from tests.gcode.test_double_pass import parametric_programs
 from tests.prover.test_double_pass_proof import ZONES, both_ways, machine_of, same_outcome
 
-EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "25"))
+EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "15"))
 SETTINGS = settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
                     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
                                            HealthCheck.function_scoped_fixture])
