@@ -2,6 +2,10 @@
 
     python bench/bench_peers.py [--lines 1000000] [--small 100000] [--corpus 10] [--macro 100000]
                                 [--timeout 300] [--skip-large] [--repeat 3] [--only TEXT]
+    python bench/bench_peers.py --scaling [--sizes 10000,1000000,5000000] [--ten-million] [--repeat 1]
+
+``--scaling`` prints, instead, ``nczones verify`` of CAM G1 and "an expression on every line" at each size:
+CPU, the child's peak RSS and the marginal µs/line between consecutive sizes (issue 36: no size cliff).
 
 Columns, every one the CPU seconds of its own process (user + system of the
 child, so start-up counts the same way for every tool), the least of ``--repeat`` runs (default 3: other
@@ -229,5 +233,60 @@ def main() -> None:
                   f"{'' if rss is None else f'{rss:.0f}':>10}  {os.getloadavg()[0]:4.1f}", flush=True)
 
 
+def cpu_rss_of(cmd: list[str], env: dict | None = None) -> tuple[float, int, int]:
+    """CPU seconds (user + system), peak RSS in MB and exit status of one child process, measured for that
+    child alone (:func:`os.wait4`), not for all children together."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    _pid, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    return usage.ru_utime + usage.ru_stime, usage.ru_maxrss // 1024, proc.returncode
+
+
+def scaling(sizes: list[int], repeat: int, env: dict) -> None:
+    """``nczones verify`` of CAM G1 and of "an expression on every line" at each size: CPU, peak RSS and the
+    marginal CPU per line between consecutive sizes (flat cost per line: the marginal cost stays the same)."""
+    print(f"\nscaling: nczones verify, least CPU of {repeat} run(s); peak RSS of that child; marginal = "
+          "(CPU - CPU of the size before) / (lines - lines before)")
+    print(f"{'class':24} {'lines':>11} {'CPU s':>8} {'RSS MB':>7} {'µs/line':>8} {'marginal µs/line':>17}  exit")
+    with tempfile.TemporaryDirectory() as tmp:
+        d = Path(tmp)
+        machine = d / "box.toml"
+        # a box the 10M-line CAM walk stays in (the default box is left after about 4M lines)
+        machine.write_text(BOX.format(dialect="linuxcnc").replace('100000"', '900000"'))
+        for name, make in (("CAM G1", "cam_program"), ("expression every line", "expr_program")):
+            before = None
+            for n in sizes:
+                path = d / "program.ngc"
+                # written by a child: a parent grown by the text would pass its peak RSS on to the forked child
+                subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {str(Path(__file__).parent)!r}); "
+                                f"import bench_gcode; open({str(path)!r}, 'w').write(bench_gcode.{make}({n}))"],
+                               check=True)
+                cmd = [sys.executable, "-m", "nczones", "verify", str(path), "--machine", str(machine),
+                       "--format", "json"]
+                runs = [cpu_rss_of(cmd, env) for _ in range(repeat)]
+                cpu = min(r[0] for r in runs)
+                rss = max(r[1] for r in runs)
+                code = runs[0][2]
+                marginal = "" if before is None else f"{(cpu - before[1]) / (n - before[0]) * 1e6:.2f}"
+                print(f"{name:24} {n:>11,} {cpu:>8.2f} {rss:>7} {cpu / n * 1e6:>8.2f} {marginal:>17}  {code:>4}",
+                      flush=True)
+                before = (n, cpu)
+                path.unlink()
+
+
 if __name__ == "__main__":
-    main()
+    if "--scaling" in sys.argv:
+        ap = argparse.ArgumentParser(description="nczones verify at growing sizes (CPU, peak RSS, marginal µs/line)")
+        ap.add_argument("--scaling", action="store_true")
+        ap.add_argument("--sizes", default="10000,1000000,5000000", help="comma-separated line counts")
+        ap.add_argument("--ten-million", action="store_true", help="add a 10,000,000-line row per class")
+        ap.add_argument("--repeat", type=int, default=1)
+        a = ap.parse_args()
+        sizes = [int(v) for v in a.sizes.split(",")] + ([10_000_000] if a.ten_million else [])
+        env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+        print(f"machine: {machine_description()}")
+        subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "nczones")], check=True,
+                       stdout=subprocess.DEVNULL)
+        scaling(sorted(sizes), max(1, a.repeat), env)
+    else:
+        main()

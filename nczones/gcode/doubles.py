@@ -47,6 +47,7 @@ from __future__ import annotations
 import math
 import re
 from array import array
+from bisect import bisect_right
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -60,8 +61,13 @@ from .shapes import LAYOUT, RUNS, shape_source, shaped
 
 __all__ = ["Declined", "DoublePath", "double_pass"]
 
-#: Motions the pass keeps (8 bytes per axis each); a longer program takes the full path, whose memory is flat.
+#: Motions the pass keeps (8 bytes per axis each) when it is run without ``on_window``: it keeps them all.
 MAX_MOTIONS = 2_000_000
+#: Motions of a window when the pass is run with ``on_window``: the rows are handed over and dropped each time
+#: this many have been computed, so memory is flat and no program is too long for the pass.
+WINDOW = 1 << 16
+#: Characters of the text the pass splits into lines at a time (a list of lines costs ~10x the text).
+PIECE = 1 << 20
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows, by modal group.
 _GROUPS = {0: "motion", 1: "motion", 80: "motion", 17: "plane", 18: "plane", 19: "plane", 21: "units",
@@ -102,11 +108,13 @@ class DoublePath:
     start: tuple[Fraction, ...]
     #: per axis, the first row a motion moved it to (0: no motion moves it)
     first_row: tuple[int, ...]
+    #: the row ``columns[a][0]`` is (a window of a long program: rows ``row0``..``motions``; 0: every row)
+    row0: int = 0
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
-        inclusive) on the full path: the box of rows ``first - 1``..``last``, the rows a motion computed
-        widened by the bound of the module's docstring, the rows at the start exact.
+        inclusive, ``first > row0``) on the full path: the box of rows ``first - 1``..``last``, the rows a
+        motion computed widened by the bound of the module's docstring, the rows at the start exact.
 
         >>> p = DoublePath(("X",), (array("d", [0.0, 0.1, 0.3]),), (Fraction(0),), 2, 2, 0, 2, (Fraction(0),), (1,))
         >>> lo, hi = p.enclosure(1, 2)
@@ -122,8 +130,9 @@ class DoublePath:
             f = self.first_row[a]
             bounds = [self.start[a]] if f == 0 or first - 1 < f else []  # rows at the start: exact
             if f and f <= last:  # rows a motion computed: widened
-                begin = max(first - 1, f)
-                part = col[begin:last + 1] if begin > 0 or last + 1 < len(col) else col
+                begin = max(first - 1, f) - self.row0
+                end = last + 1 - self.row0
+                part = col[begin:end] if begin > 0 or end < len(col) else col
                 a_lo, a_hi = min(part), max(part)
                 top = max(abs(a_lo), abs(a_hi))
                 widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
@@ -139,9 +148,18 @@ _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnorm
 _GRID = 2**60
 
 
-def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
+def double_pass(text: str, machine: Any, *, max_iterations: int, on_window: Any = None,
+                window: int | None = None) -> DoublePath:
     """Run ``text`` on ``machine`` in doubles (see the module's docstring); raise :class:`Declined` when the
     program leaves the subset.
+
+    Without ``on_window`` the path holds every row (and the pass declines past :data:`MAX_MOTIONS`
+    motions).  With it, each time ``window`` (default :data:`WINDOW`) motions past the window's first row
+    have been computed, ``on_window(path)`` is called with a :class:`DoublePath` of rows ``row0``..``motions`` (its counts so far)
+    and those rows are dropped but the last two: windows overlap by one motion (the last motion of a
+    window is the first of the next), so a check that needs a motion and the one before it finds both in
+    one window.  ``on_window`` returns False to stop the pass (it then declines).  The path returned is the
+    last window, with the whole program's counts.
 
     >>> from nczones.machine import parse_machine
     >>> m = parse_machine('[machine]\\naxes=["X","Y"]\\n[machine.rapid]\\nX="1000"\\nY="1000"\\n'
@@ -155,7 +173,7 @@ def double_pass(text: str, machine: Any, *, max_iterations: int) -> DoublePath:
     ...
     nczones.gcode.doubles.Declined: G2 is not followed by the double pass
     """
-    return _Pass(text, machine, max_iterations).run()
+    return _Pass(text, machine, max_iterations, on_window, WINDOW if window is None else window).run()
 
 
 #: The code of a step: its body, its parameter writes, its values, the source of its plan's key, its names.
@@ -163,7 +181,13 @@ _Code = tuple[list[str], list[str], list[str], str, dict]
 
 
 class _Pass:
-    def __init__(self, text: str, machine: Any, max_iterations: int):
+    def __init__(self, text: str, machine: Any, max_iterations: int, on_window: Any = None, window: int = WINDOW):
+        if window < 1:
+            raise ValueError(f"a window of at least one motion, got {window}")
+        self.on_window = on_window
+        #: rows of a full window (the one before its first motion included); past it the window is handed over
+        self.rows = window + 1 if on_window is not None else MAX_MOTIONS + 2
+        self.row0 = 0  # the row columns[a][0] is
         if getattr(machine, "machine_type", "mill") != "mill" or getattr(machine, "diameter_axes", ()):
             raise Declined("a lathe")
         if getattr(machine, "dialect", "linuxcnc") != "linuxcnc":
@@ -177,9 +201,8 @@ class _Pass:
         if "\r" in text:
             text = text.replace("\r\n", "\n").removesuffix("\r")
         self.text = text
-        self.lines = text.split("\n")
-        #: each line's layout (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII
-        self.layouts = text.encode().translate(LAYOUT).split(b"\n") if text.isascii() else None
+        #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it)
+        self.src = _Lines(text)
         self.by_layout: dict[bytes, Any] = {}  # layout -> the step of its lines (the line itself its argument)
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
@@ -236,10 +259,13 @@ class _Pass:
 
     # -- the run ------------------------------------------------------------------------------------------
     def run(self) -> DoublePath:
-        lines = self.lines
-        layouts = self.layouts
+        src = self.src
         controls = self._controls()
-        count = len(lines)
+        count = src.count
+        ascii_text = src.ascii
+        lo = hi = 0  # the lines lo..hi-1 are src's current piece: lines and layouts
+        lines: list[str] = []
+        layouts: list[bytes] = []
         steps: dict[int, Any] = {}  # the compiled lines of loop bodies, by index
         by_layout = self.by_layout
         counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
@@ -287,9 +313,11 @@ class _Pass:
                     step = steps[i] = self._step(i)
                 fn, parts = step
             else:
-                fn = by_layout.get(layouts[i]) if layouts is not None else None
+                if not lo <= i < hi:
+                    lo, hi, lines, layouts = src.piece(i)
+                fn = by_layout.get(layouts[i - lo]) if ascii_text else None
                 if fn is not None:
-                    parts = lines[i]
+                    parts = lines[i - lo]
                 else:
                     fn, parts = self._step(i)
             i += 1
@@ -299,15 +327,30 @@ class _Pass:
                         break
                 except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
                     raise Declined(f"an evaluation error: {exc!r}") from None
+        return self._path()
+
+    def _path(self) -> DoublePath:
+        """The rows held now as a path (every row, or the current window)."""
         if not all(math.isfinite(min(col)) and math.isfinite(max(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
-        motions = len(self.columns[0]) - 1
+        motions = self.row0 + len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
-                          self.blocks, self.start, tuple(self.first_row))
+                          self.blocks, self.start, tuple(self.first_row), self.row0)
+
+    def full(self) -> None:
+        """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
+        if self.on_window is None:
+            raise Declined(f"more than {MAX_MOTIONS} motions")
+        if not self.on_window(self._path()):
+            raise Declined("a window of the double pass that its boxes do not prove")
+        keep = len(self.columns[0]) - 2
+        for col in self.columns:
+            del col[:keep]
+        self.row0 += keep
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
-        line = self.lines[i]
+        line, own_layout = self.src.line(i)
         if "(" in line or ";" in line or not line.isascii():
             return self._parsed(line), ()
         layout = line.encode().translate(LAYOUT)
@@ -317,7 +360,7 @@ class _Pass:
                 return None, ()
             return self._fresh(line)
         cut = hit[1]
-        if self.layouts is not None and layout == self.layouts[i]:
+        if own_layout is not None and layout == own_layout:
             self.by_layout[layout] = self._shape_step(hit[2], cut)
         return self._shape_step(hit[2]), cut(line)
 
@@ -487,7 +530,7 @@ class _Pass:
 
     def moved(self, axes: tuple[int, ...]) -> None:
         """The motion about to be added moves ``axes``: the first such row of each."""
-        row = len(self.columns[0])
+        row = self.row0 + len(self.columns[0])
         for i in axes:
             if not self.first_row[i]:
                 self.first_row[i] = row
@@ -556,7 +599,7 @@ class _Pass:
             body.append(f"if {' or '.join(f'not FR[{i}]' for _k, i in axes)}: st.moved({tuple(i for _k, i in axes)!r})")
             body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
             body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
-            body.append(f"if len(C0) > {MAX_MOTIONS}: raise D('more than {MAX_MOTIONS} motions')")
+            body.append(f"if len(C0) >= {self.rows}: st.full()")
             body.append("if not mode: st.rapids += 1")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
@@ -564,6 +607,50 @@ class _Pass:
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
+
+
+class _Lines:
+    """The lines of a text as ``text.split("\n")`` has them, with their layouts
+    (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII, split a piece of about ``size``
+    characters at a time: the pass reads them in order but for jumps, and holds one piece."""
+
+    def __init__(self, text: str, size: int | None = None):
+        size = PIECE if size is None else max(1, size)
+        self.text = text
+        self.ascii = text.isascii()
+        self.count = text.count("\n") + 1
+        # pieces end just after a newline (the last at the end of the text): their first character and line
+        self.starts = [0]
+        self.first = [0]
+        at, line = 0, 0
+        while True:
+            cut = text.find("\n", at + size)
+            if cut < 0:
+                break
+            line += text.count("\n", at, cut + 1)
+            at = cut + 1
+            self.starts.append(at)
+            self.first.append(line)
+        self.cached: tuple = (0, 0, [], [])
+
+    def piece(self, i: int) -> tuple[int, int, list[str], list[bytes]]:
+        """``(first line, end line, lines, layouts)`` of the piece that holds line ``i``."""
+        lo, hi, _lines, _layouts = self.cached
+        if lo <= i < hi:
+            return self.cached
+        k = bisect_right(self.first, i) - 1
+        begin = self.starts[k]
+        last = k + 1 == len(self.starts)
+        part = self.text[begin:] if last else self.text[begin:self.starts[k + 1] - 1]
+        lines = part.split("\n")
+        layouts = part.encode().translate(LAYOUT).split(b"\n") if self.ascii else []
+        self.cached = (self.first[k], self.first[k] + len(lines), lines, layouts)
+        return self.cached
+
+    def line(self, i: int) -> tuple[str, bytes | None]:
+        """Line ``i`` and its layout (None: the text is not ASCII)."""
+        lo, _hi, lines, layouts = self.piece(i)
+        return lines[i - lo], (layouts[i - lo] if self.ascii else None)
 
 
 def _letters(words: Any) -> str:

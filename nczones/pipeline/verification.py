@@ -54,14 +54,16 @@ def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_ite
     :func:`nczones.prover.doubles.prove_double_path`), or None when the pass declines or its boxes do not
     prove the program (the caller then runs the full path)."""
     from ..gcode.doubles import Declined, double_pass
-    from ..prover.doubles import prove_double_path
+    from ..prover.doubles import WindowProof, prove_double_path
 
     started = time.perf_counter()
+    # the motion in windows proved as they come: memory flat, no program too long for the pass
+    windows = WindowProof(machine, margin)
     try:
-        path = double_pass(text, machine, max_iterations=max_iterations)
+        path = double_pass(text, machine, max_iterations=max_iterations, on_window=windows)
     except Declined:
         return None
-    return prove_double_path(path, machine, margin, started)
+    return prove_double_path(path, machine, margin, started, windows)
 
 
 def verify_source(source: ProgramSource, machine: Machine, options: VerifyOptions, *,

@@ -21,7 +21,7 @@ from ..machine import Machine
 from .exact import box_fits
 from .result import Result, Verdict
 
-__all__ = ["prove_enclosures", "prove_double_path"]
+__all__ = ["prove_enclosures", "prove_double_path", "WindowProof"]
 
 #: A box that does not fit is split into this many.
 SPLIT = 16
@@ -49,7 +49,8 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         corners = False
     allowed = machine.allowed
     zero = Fraction(0)
-    todo = [(1, path.motions)] if path.motions else []
+    start = getattr(path, "row0", 0) + 1  # a window of a long program holds rows row0..motions
+    todo = [(start, path.motions)] if path.motions >= start else []
     boxes = 0
     while todo:
         first, last = todo.pop()
@@ -64,7 +65,7 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         if first == last:
             return None
         n = last - first + 1
-        size = FIRST_BOX if n > FIRST_BOX * SPLIT and first == 1 and last == path.motions else -(-n // SPLIT)
+        size = FIRST_BOX if n > FIRST_BOX * SPLIT and first == start and last == path.motions else -(-n // SPLIT)
         todo.extend((a, min(a + size - 1, last)) for a in range(first, last + 1, size))
     return boxes
 
@@ -80,17 +81,45 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
     return box_fits(allowed, lo, hi, margin, Fraction(0))
 
 
-def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: float | None = None) -> Result | None:
+class WindowProof:
+    """``on_window`` for :func:`nczones.gcode.doubles.double_pass`: proves each window of a long program as
+    the pass hands it over (then the pass drops its rows), counting the boxes; False stops the pass."""
+
+    def __init__(self, machine: Machine, margin: Fraction):
+        self.machine = machine
+        self.margin = margin
+        self.boxes = 0
+        self.windows = 0
+
+    def __call__(self, path: Any) -> bool:
+        boxes = prove_enclosures(path, self.machine, self.margin, max_boxes=_max_boxes(path))
+        if boxes is None:
+            return False
+        self.boxes += boxes
+        self.windows += 1
+        return True
+
+
+def _max_boxes(path: Any) -> int:
+    motions: int = path.motions - getattr(path, "row0", 0)
+    return max(64, motions // 16)
+
+
+def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: float | None = None,
+                      windows: WindowProof | None = None) -> Result | None:
     """A ``safe`` result for the double pass's path (:func:`nczones.gcode.doubles.double_pass`), or None when
     its boxes do not prove the program (the caller then runs the full path).  ``started`` is when the pass
-    began (:func:`time.perf_counter`), for the timings."""
+    began (:func:`time.perf_counter`), for the timings; ``windows`` the proof of the windows the pass handed
+    over before ``path``, its last."""
     from .smt import z3_version
 
     if started is None:
         started = time.perf_counter()
-    boxes = prove_enclosures(path, machine, margin, max_boxes=max(64, path.motions // 16))
+    boxes = prove_enclosures(path, machine, margin, max_boxes=_max_boxes(path))
     if boxes is None:
         return None
+    if windows is not None:
+        boxes += windows.boxes
     n = path.motions
     stats = (("segments", n), ("pieces", 0), ("screened", n), ("exact_decided", 0), ("z3_segments", 0),
              ("z3_queries", 0), ("double_pass_boxes", boxes))
