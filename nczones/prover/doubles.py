@@ -60,8 +60,11 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
     """A ``safe`` result for the double pass's path (:func:`nczones.gcode.doubles.double_pass`), or None when
     its boxes do not prove the program (the caller then runs the full path).  ``started`` is when the pass
     began (:func:`time.perf_counter`), for the timings."""
+    from ..solids import machine_solids
     from .smt import z3_version
 
+    if machine_solids(machine) is not None:
+        return None  # the boxes are about the controlled point; tool solids need the full path
     if started is None:
         started = time.perf_counter()
     boxes = prove_enclosures(path, machine, margin, max_boxes=max(64, path.motions // 16))
