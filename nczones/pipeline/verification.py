@@ -181,8 +181,7 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     timings = (("total_s", time.perf_counter() - t0),) + result.timings
     return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
                    interrupted=interrupted, budget_s=limits.budget_s, profile=profile.as_dict(),
-                   timings=timings, extra={"counts": first_run.counts, "splits": result.extra.get("splits", ()),
-                          **{k: result.extra[k] for k in ("clearance",) if k in result.extra}},
+                   timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
 
