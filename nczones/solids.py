@@ -121,7 +121,8 @@ _FIXTURE_KEYS = {"box": ("name", "kind", "min", "max"),
 def _parts(rd: Any, raw: Any, where: str, header: int | None, spindle: bool) -> tuple[Part, ...] | None:
     if not isinstance(raw, list) or not raw or not all(isinstance(p, Mapping) for p in raw):
         rd.report("ZN161", f"{where} parts: expected a list of {{ name, diameter, length }} tables, from the "
-                  f"{'gauge line' if spindle else 'tip'} up, got {as_written(raw)}", rd.loc.key("parts", header))
+                  f"{'gauge line' if spindle else 'tip'} up, got {as_written(raw)}",
+                  rd.loc.key("parts", header) or rd.loc.header(header))
         return None
     out, z = [], F0
     ok = True
@@ -240,7 +241,7 @@ def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fi
             rd.report("ZN161", f"[[fixtures]] {k + 1}: expected a table, got {as_written(t)}", rd.loc.header(header))
             continue
         kind = t.get("kind")
-        if kind not in _FIXTURE_KEYS:
+        if not isinstance(kind, str) or kind not in _FIXTURE_KEYS:
             rd.report("ZN163", f"[[fixtures]] {k + 1}: kind {as_written(kind)} is not one of \"box\", \"cylinder\"",
                       rd.loc.key("kind", header) or rd.loc.header(header))
             continue
