@@ -304,7 +304,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF210", _U, _MF, "tool solids: an arc near a fixture its enclosure cannot decide, or a motion kind "
                            "the solids proof does not model"),
     Code("VF211", _U, _MF, "tool solids: a motion under G49 (no H register names the tool in the spindle)"),
-    Code("VF212", _U, _MF, "tool solids with parameter ranges: the solids are checked at nominal values only"),
+    Code("VF212", _U, _MF, "tool solids with parameter ranges (checked at nominal values only) or "
+                           "tool-break recovery (legs not checked for solids)"),
     # -- RC: recovery
     Code("RC201", _U, _RE, "a recovery (break) motion nczones does not encode"),
     Code("RC202", _U, _RE, "recovery: the solver's limit"),

@@ -177,7 +177,11 @@ class SolidsChecker:
                           "is not known, so its solids were not checked against the fixtures (select the tool's "
                           "length with G43 H<n>; the assembly of [[tools]] number n is used)")
             return
-        if seg.kind is SegmentKind.ARC:
+        moved = [a for k, a in enumerate(seg.axes) if a not in "XYZ" and seg.start[k] != seg.end[k]]
+        if moved:  # a rotary or extra linear axis may carry the fixtures or the tool: not modelled
+            self._unknown(seg, "VF210", f"the motion moves {', '.join(moved)}: the tool solids are modelled on a "
+                          "machine moving X, Y and Z only")
+        elif seg.kind is SegmentKind.ARC:
             self._arc(seg, parts)
         elif seg.kind in (SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL):
             for piece in line_pieces(seg, self.machine):
@@ -337,6 +341,9 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     if options.ranges(machine) and solids.fixtures:
         reasons += (Reason("parameter ranges do not move the tool solids yet: the solids were checked at the "
                            "nominal offsets and tool lengths only", None, None, "VF212"),)
+    if options.recovery and solids.fixtures:
+        reasons += (Reason("tool-break recovery legs are proved for the controlled point only: the tool solids "
+                           "are not checked on them yet", None, None, "VF212"),)
     verdict = result.verdict
     if result.interrupted:
         pass
