@@ -228,9 +228,12 @@ class SolidsChecker:
                 self._clear(part, fx, gmin, seg)
                 if gmin >= _thr(fx, part.radius):
                     continue
-                t = self._inside(fx, part, span, t, px, dx, py, dy)
-                if t is None:
-                    continue
+                inside = self._inside(fx, part, span, t, px, dx, py, dy)
+                if inside is None:  # never a silent safe: the part meets the fixture, only no witness was found
+                    self._unknown(seg, "VF210", f"the {part.label()} meets `{fx.name}` but no witness point was "
+                                  "found")
+                    return True
+                t = inside
                 self._report(seg, part, fx, (px + dx * t, py + dy * t, pz + dz * t), tau0 + t * (tau1 - tau0),
                              p0, p1, t, lo, hi)
                 return True

@@ -194,6 +194,17 @@ def programs(draw):
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(programs())
 def test_never_a_wrong_safe(text):
+    _against_oracle(text)
+
+
+@pytest.mark.long
+@settings(max_examples=2000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs())
+def test_never_a_wrong_safe_long(text):
+    _against_oracle(text)
+
+
+def _against_oracle(text):
     machine = parse_machine(ORACLE_MACHINE, "oracle.toml")
     r = verify_text(text, machine)
     solids = machine_solids(machine)
