@@ -35,7 +35,15 @@ from typing import TYPE_CHECKING, Any
 from ..machine import Machine
 from ..motion import Segment, SegmentKind
 from ..solids import FixtureBox, FixtureCylinder, Part, Solids
-from .geometry import arc_geom, line_pieces, sqrt_bounds
+from .geometry import (
+    arc_bases,
+    arc_geom,
+    half_tan,
+    in_sweep,
+    line_pieces,
+    rational_point_on_arc,
+    sqrt_bounds,
+)
 from .result import Reason, Result, Violation
 
 if TYPE_CHECKING:
@@ -48,6 +56,8 @@ F1 = Fraction(1)
 _HALF = Fraction(1, 2)
 
 Fixture = FixtureBox | FixtureCylinder
+#: Arc pieces the solids proof may split an arc into before it says ``unknown`` (VF210).
+ARC_PIECES = 64
 
 
 @dataclass(slots=True)
@@ -163,6 +173,7 @@ class SolidsChecker:
     #: (part label, fixture name) -> (least clearance lower bound, line)
     clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
     _blocks: set[int] = field(default_factory=set)
+    _arc_witness: bool = False
 
     def __post_init__(self) -> None:
         axes = self.machine.axis_names
@@ -274,35 +285,108 @@ class SolidsChecker:
         self._blocks.add(seg.block)
         self.violations.append(Violation(
             block=seg.block, span=seg.span, zone=fx.name, point=(("X", cx), ("Y", cy), ("Z", cz)),
-            path_point=tuple(zip(axes, path)), parameter=tau, parameter_exact=True,
+            path_point=tuple(zip(axes, path)), parameter=tau, parameter_exact=not self._arc_witness,
             first_exit=tuple(zip(axes, path)), first_exit_parameter=tau, first_exit_exact=False,
             depth=depth, depth_exact=False, engine="exact", segment_kind=seg.kind.name.lower(),
             derived=seg.derived, kind="solid", zones=(part.name,), note=note, exit_located=False,
             frame=seg.frame))
 
     def _arc(self, seg: Segment, parts: tuple[Part, ...]) -> None:
+        """Arcs: pieces of the sweep (cut at quarter turns, then halved, at most :data:`ARC_PIECES`), each
+        enclosed by its box; an undecided piece is tried at its ends (exact points of the circle, on a
+        plane arc) before it is split; what the budget leaves is ``unknown``."""
         g = arc_geom(seg)
-        (a0, a1), (b0, b1) = g.plane_bbox()
-        lo_c = list(min(s, e) for s, e in zip(seg.start, seg.end))
-        hi_c = list(max(s, e) for s, e in zip(seg.start, seg.end))
-        lo_c[g.ia], hi_c[g.ia], lo_c[g.ib], hi_c[g.ib] = a0, a1, b0, b1
+        lo_c = [min(s, e) for s, e in zip(seg.start, seg.end)]
+        hi_c = [max(s, e) for s, e in zip(seg.start, seg.end)]
+        if not g.exact:  # an R-format arc with an irrational centre, a spiral: the whole arc's box
+            (lo_c[g.ia], hi_c[g.ia]), (lo_c[g.ib], hi_c[g.ib]) = g.plane_bbox()
+            self._arc_pieces(seg, parts, [(lo_c, hi_c, None)])
+            return
+        c = g.centre
+        assert c is not None
+        u = (g.s[0] - c[0], g.s[1] - c[1])
+        w = (g.e[0] - c[0], g.e[1] - c[1])
+        bases = arc_bases(u, g.ccw)
+        if g.full:
+            cuts = bases + [u]
+        else:
+            cuts = [u] + [b for b in bases[1:] if b != w and in_sweep(u, w, b, g.ccw, False)] + [w]
+        pieces = list(zip(cuts, cuts[1:]))
+        self._arc_pieces(seg, parts, [(lo_c, hi_c, pc) for pc in pieces], g)
+
+    def _arc_pieces(self, seg: Segment, parts: tuple[Part, ...], queue: list, g: Any = None) -> None:
+        budget = ARC_PIECES
+        while queue:
+            lo_c, hi_c, piece = queue.pop()
+            box_lo, box_hi = list(lo_c), list(hi_c)
+            if piece is not None:  # the piece's own plane box (exact extremes)
+                (box_lo[g.ia], box_hi[g.ia]), (box_lo[g.ib], box_hi[g.ib]) = self._piece_box(seg, g, piece)
+            hit = self._box_hits(seg, parts, box_lo, box_hi)
+            if hit is None:
+                continue
+            part, fx = hit
+            ends = [seg.start, seg.end] if piece is None else [self._arc_point(seg, g, v) for v in piece]
+            for pt in ends:  # an exact witness at a piece's end (a helix's interior points have irrational Z)
+                self._arc_witness = True  # the parameter of an arc's point is its angle: not reported exactly
+                try:
+                    if pt is not None and self._line(seg, (part,), pt, pt, F0, F0):
+                        return
+                finally:
+                    self._arc_witness = False
+            if piece is None or budget <= 0:
+                self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}` with the {part.label()}: "
+                              f"{'its pieces' if piece is not None else 'its enclosing box'} meet the fixture and "
+                              "no point of it was found inside (a tangency, or the refinement budget is spent)")
+                return
+            budget -= 1
+            a, b = piece
+            m = half_tan(a, b, g.ccw)
+            if m is None or m <= 0:
+                self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}`: its piece could not be split")
+                return
+            mid = rational_point_on_arc(g, m / 2, base=a)
+            mid_v = (mid[0] - g.centre[0], mid[1] - g.centre[1])
+            queue += [(lo_c, hi_c, (a, mid_v)), (lo_c, hi_c, (mid_v, b))]
+
+    def _piece_box(self, seg: Segment, g: Any, piece: tuple) -> tuple:
+        c = g.centre
+        a, b = piece
+        start, end = list(seg.start), list(seg.end)
+        start[g.ia], start[g.ib] = c[0] + a[0], c[1] + a[1]
+        end[g.ia], end[g.ib] = c[0] + b[0], c[1] + b[1]
+        sub = Segment(SegmentKind.ARC, tuple(start), tuple(end), seg.axes, plane=seg.plane, clockwise=seg.clockwise,
+                      centre=c)
+        return arc_geom(sub).plane_bbox()
+
+    def _arc_point(self, seg: Segment, g: Any, v: tuple) -> tuple | None:
+        """The exact path point at direction ``v`` from the centre: on a plane arc always, on a helix only at
+        its start and end (elsewhere the height is irrational)."""
+        c = g.centre
+        p = list(seg.start)
+        p[g.ia], p[g.ib] = c[0] + v[0], c[1] + v[1]
+        if not g.helix:
+            return tuple(p)
+        for q in (seg.start, seg.end):
+            if (q[g.ia], q[g.ib]) == (p[g.ia], p[g.ib]):
+                return q
+        return None
+
+    def _box_hits(self, seg: Segment, parts: tuple[Part, ...], lo_c: list, hi_c: list) -> tuple | None:
+        """The first part and fixture the box of controlled positions may bring together (None: none)."""
         bx, by, bz = (lo_c[self.ix], hi_c[self.ix]), (lo_c[self.iy], hi_c[self.iy]), (lo_c[self.iz], hi_c[self.iz])
+        clear = []  # a clearance counts from a box that proves every pair (a refined box gives a tighter one)
         for part in parts:
             lo, hi = self._offsets(seg, part)
             for fx in self.solids.fixtures:
                 if (fx.z1 is not None and bz[0] + lo >= fx.z1) or (fx.z0 is not None and bz[1] + hi <= fx.z0):
                     continue
                 gmin = _rect_gap2(fx, bx, by)
-                self._clear(part, fx, gmin, seg)
-                if gmin >= _thr(fx, part.radius):
-                    continue
-                for end, tau in ((seg.start, F0), (seg.end, F1)):  # an exact witness at an end of the arc
-                    if self._line(seg, (part,), end, end, tau, tau):
-                        return
-                self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}` with the {part.label()}: its "
-                              "enclosing box meets the fixture and its ends clear it; the swept solid of an arc "
-                              "is not decided exactly yet")
-                return
+                if gmin < _thr(fx, part.radius):
+                    return part, fx
+                clear.append((part, fx, gmin))
+        for part, fx, gmin in clear:
+            self._clear(part, fx, gmin, seg)
+        return None
 
 
 def _rect_gap2(fx: Fixture, bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:

@@ -242,3 +242,27 @@ def test_parametric_program_without_tool_length_is_not_proved_by_the_double_pass
 
 
 MACHINE_MILL_TEXT = MACHINE.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("z, expected", [("40", "safe"), ("10", "unsafe")])
+def test_arc_past_the_jaw_corner_is_decided_by_pieces(z, expected):
+    # a quarter arc about (60, -40) of radius 40 from (60, 0) to (100, -40): its box X 60..100, Y -40..0
+    # touches the jaw's corner (100, 0), the arc itself stays 40√2 - 40 ≈ 16.57 from it. At tip Z40 only the
+    # cutter (radius 5) is at the jaw's heights: safe, 11.57 clear. At tip Z10 the holder (radius 31.5,
+    # 50..110) is too: it enters near the arc's middle (its ends are 40 from the jaw), so the witness needs a
+    # point inside the arc
+    text = HEADER + f"G0 X60 Y0 Z100\nG1 Z{z} F300\nG2 X100 Y-40 I0 J-40\nG0 Z100\nM30\n"
+    r = verify_text(text, _mill())
+    assert r.verdict.label == expected, (r.reasons, r.violations)
+    if expected == "unsafe":
+        v = r.violations[0]
+        assert v.line == 6 and v.zones == ("holder",) and not v.parameter_exact
+        path = tuple(x for _, x in v.path_point)
+        assert (path[0] - 60) ** 2 + (path[1] + 40) ** 2 == 40 ** 2  # exactly on the circle
+        holder = machine_solids(_mill()).tools[1][2]
+        vise = next(f for f in machine_solids(_mill()).fixtures if f.name == "vise")
+        assert inside_part_and_fixture(tuple(x for _, x in v.point), path, holder, vise, Fraction(100))
+    else:
+        clear = {(p, f): c for p, f, c, _ in r.extra["clearance"]}
+        c = clear[("cutter (Ø10 × 25 at 0..25 above the tip)", "vise")]
+        assert 0 < c <= Fraction(1157, 100)
