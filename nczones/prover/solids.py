@@ -14,10 +14,11 @@ Along a straight piece ``p(t)`` the height condition is an interval of ``t`` (li
 is a convex piecewise quadratic with rational breakpoints (where ``x(t)`` or ``y(t)`` crosses a side), so its
 minimum over that interval is rational and found exactly: the piece violates iff the minimum is below
 ``thr``.  The witness is the rational ``t`` of the minimum (moved into the open interval when needed) and a
-rational contact point inside both the part and the fixture.  Arcs and helices are enclosed: the box of the
-controlled point over the arc (exact extremes) grown by the part is tested against the fixture; what the
-enclosure cannot prove is tried at the arc's ends (an exact witness) and is otherwise ``unknown`` with
-reason ``VF210``.  A motion without a known tool (G49 while tools are described) is ``unknown`` (``VF211``).
+rational contact point inside both the part and the fixture.  Arcs and helices are enclosed
+piece by piece (:meth:`SolidsChecker._arc`): the box of the controlled point over a piece of the sweep
+(exact extremes) grown by the part is tested against the fixture; an undecided piece is tried at its ends
+(exact points of the circle) and split, at most :data:`ARC_PIECES` times; what is left is ``unknown``
+with reason ``VF210``.  A motion without a known tool (G49 while tools are described) is ``unknown`` (``VF211``).
 
 The least clearance per part and fixture is the least horizontal distance between them at the moments their
 heights overlap (the distance between two vertical solids at overlapping heights), a certified lower bound
