@@ -1089,7 +1089,7 @@ def prove(motion: Iterable[Segment | MotionChunk], machine: Machine, options: Ve
     if solids is not None:
         from .solids import prove_with_solids
 
-        return prove_with_solids(motion, machine, solids, options, file=file, profile=profile)
+        return prove_with_solids(motion, machine, solids, options, verify_segments, file=file, profile=profile)
     return verify_segments(motion, machine, margin=options.margin, params=options.ranges(machine),
                            engine=options.engine, max_violations=options.max_violations, file=file,
                            limits=options.run_limits(), profile=profile)

@@ -401,15 +401,15 @@ def _rect_gap2(fx: Fixture, bx: tuple[Fraction, Fraction], by: tuple[Fraction, F
     return gx * gx + gy * gy
 
 
-def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, options: VerifyOptions, *,
-                      file: str = "", profile: Any = None) -> Result:
-    """:func:`nczones.prover.core.prove` of ``motion`` (the controlled point against the zones) joined with
-    the proof of the tool solids against the fixtures, fed the same motions as they pass."""
+def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, options: VerifyOptions,
+                      verify_segments: Any, *, file: str = "", profile: Any = None) -> Result:
+    """``verify_segments`` (:func:`nczones.prover.core.verify_segments`, passed in: this module sits below
+    the driver) of ``motion`` (the controlled point against the zones) joined with the proof of the tool
+    solids against the fixtures, fed the same motions as they pass."""
     from dataclasses import replace
 
     from ..exact import format_decimal
     from ..motion import segments_of
-    from .core import verify_segments
     from .result import Verdict
 
     checker = SolidsChecker(machine, solids)
