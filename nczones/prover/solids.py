@@ -420,7 +420,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
                 checker.feed(seg)
             yield item
 
-    result = verify_segments(tee(), machine, margin=options.margin, params=options.ranges(machine),
+    result: Result = verify_segments(tee(), machine, margin=options.margin, params=options.ranges(machine),
                              engine=options.engine, max_violations=options.max_violations, file=file,
                              limits=options.run_limits(), profile=profile)
     violations = result.violations + tuple(checker.violations[:max(0, options.max_violations
