@@ -175,6 +175,7 @@ class SolidsChecker:
     clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
     _blocks: set[int] = field(default_factory=set)
     _arc_witness: bool = False
+    _labels: dict[Part, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         axes = self.machine.axis_names
@@ -210,20 +211,40 @@ class SolidsChecker:
         shift = F0 if part.spindle else -seg.tool_length
         return part.z0 + shift, part.z1 + shift
 
+    def _key(self, part: Part, fx: Fixture) -> tuple[str, str]:
+        label = self._labels.get(part)
+        if label is None:
+            label = self._labels[part] = part.label()
+        return label, fx.name
+
     def _clear(self, part: Part, fx: Fixture, gmin: Fraction, seg: Segment) -> None:
         thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
+        key = self._key(part, fx)
+        best = self.clearance.get(key)
+        if best is not None and best[0] + thr_r >= 0 and gmin >= (best[0] + thr_r) ** 2:
+            return  # cannot lower the least clearance (no square root needed)
         c = sqrt_bounds(gmin, 64)[0] - thr_r
-        key = (part.label(), fx.name)
-        if key not in self.clearance or c < self.clearance[key][0]:
+        if best is None or c < best[0]:
             self.clearance[key] = (c, seg.line)
+
+    def _far(self, part: Part, fx: Fixture, bx: tuple, by: tuple) -> bool:
+        """Is the box ``bx × by`` of the part's axis so far from the fixture that the part cannot meet it nor
+        come closer than its least clearance so far?  (A cheap screen before the exact minimum.)"""
+        gap2 = _rect_gap2(fx, bx, by)
+        thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
+        best = self.clearance.get(self._key(part, fx))
+        return best is not None and best[0] >= 0 and gap2 >= (best[0] + thr_r) ** 2
 
     def _line(self, seg: Segment, parts: tuple[Part, ...], p0: tuple, p1: tuple, tau0: Fraction,
               tau1: Fraction) -> bool:
         px, py, pz = p0[self.ix], p0[self.iy], p0[self.iz]
         dx, dy, dz = p1[self.ix] - px, p1[self.iy] - py, p1[self.iz] - pz
+        bx, by = (min(px, px + dx), max(px, px + dx)), (min(py, py + dy), max(py, py + dy))
         for part in parts:
             lo, hi = self._offsets(seg, part)
             for fx in self.solids.fixtures:
+                if self._far(part, fx, bx, by):
+                    continue
                 span: _Span | None = _Span(F0, F1)
                 if fx.z1 is not None:  # pz + dz t + lo < z1
                     span = span.above(fx.z1 - pz - lo, -dz) if span else None
