@@ -39,6 +39,9 @@ demo: $(RUNTIME)
 	$(BIN)/nczones verify specs/examples/programs/polar_face.nc --machine specs/examples/machines/turning_centre.toml
 	$(BIN)/nczones verify specs/examples/programs/polar_face.nc --machine specs/examples/machines/turning_centre_clamp_near.toml; \
 	  test $$? -eq 1  # intentionally unsafe: in G12.1 the profile's corner near C135 reaches the clamp
+	$(BIN)/nczones verify specs/examples/programs/holder_clears_vise.ngc --machine specs/machines/mill_solids.toml
+	$(BIN)/nczones verify specs/examples/programs/holder_hits_vise.ngc --machine specs/machines/mill_solids.toml; \
+	  test $$? -eq 1  # intentionally unsafe: the cutter clears the vise jaw, its Ø63 holder does not
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)

@@ -248,6 +248,11 @@ CATALOGUE: tuple[Code, ...] = (
     Code("ZN155", _E, _RE, "[tool_change]: variant other than start / breakpoint"),
     Code("ZN156", _E, _RE, "[tool_change]: both or neither of clearance and retract_distance"),
     Code("ZN157", _E, _RE, "[tool_change]: length_register is not H<n>, or not in [tool_lengths]"),
+    Code("ZN160", _E, _MF, "[[tools]], [spindle], [[fixtures]]: unknown key"),
+    Code("ZN161", _E, _MF, "[[tools]], [spindle], [[fixtures]]: not a table or list, a missing key or name"),
+    Code("ZN162", _E, _MF, "[[tools]]: number not a tool number 0..9999, or a tool described twice"),
+    Code("ZN163", _E, _MF, "[[fixtures]]: kind not box / cylinder, or an empty box or cylinder"),
+    Code("ZN164", _E, _MF, "tool or fixture solids on a machine without the axes X, Y and Z"),
     # -- IM: import-machine
     Code("IM100", _E, _MI, "the configuration cannot be read (missing, a directory, no permission, not UTF-8, "
                            "binary)"),
@@ -298,6 +303,11 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF207", _U, _RM, "a lathe tool's nose radius with a zone the nose cannot be checked against"),
     Code("VF208", _U, "specs/path-modes.md", "a corner the control may round (G64, Fanuc cutting mode) may leave "
                                                "the allowed set"),
+    Code("VF210", _U, _MF, "tool solids: an arc near a fixture its enclosure cannot decide, or a motion kind "
+                           "the solids proof does not model"),
+    Code("VF211", _U, _MF, "tool solids: a motion under G49 (no H register names the tool in the spindle)"),
+    Code("VF212", _U, _MF, "tool solids with parameter ranges (checked at nominal values only) or "
+                           "tool-break recovery (legs not checked for solids)"),
     # -- RC: recovery
     Code("RC201", _U, _RE, "a recovery (break) motion nczones does not encode"),
     Code("RC202", _U, _RE, "recovery: the solver's limit"),

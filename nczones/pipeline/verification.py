@@ -40,7 +40,10 @@ def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptio
     interpreter's default, none), ``ranges`` parameter ranges whose dependencies are tracked, ``fast`` the
     vectorized fast path allowed."""
     from ..gcode import interpret
+    from ..solids import machine_solids
 
+    if machine_solids(machine) is not None:
+        fast = False  # the column chunks do not carry the H register that picks the tool assembly
     extra = options.interpret_keywords(machine)
     if skip is not None:
         extra["block_delete"] = skip
@@ -180,7 +183,7 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     timings = (("total_s", time.perf_counter() - t0),) + result.timings
     return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
                    interrupted=interrupted, budget_s=limits.budget_s, profile=profile.as_dict(),
-                   timings=timings, extra={"counts": first_run.counts, "splits": result.extra.get("splits", ())},
+                   timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
 
@@ -534,7 +537,7 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
         span = _fix_span(u.span, source_text)
         hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
         reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, reason_code(u.code)))
-    notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
+    notes = tuple(run.assumed_modal_text()) + tuple(run.notes()) + tuple(result.notes)  # + solids' clearances
     if run.counts.get("spline"):
         notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "
                   "programmed curve; a controller that approximates them (LinuxCNC turns some G5.2/G6.2 "

@@ -64,6 +64,11 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "zones are proved against the square of half-width R (tip 0/9) or 2R (tips 1-8) around the imaginary "
     "tool tip on X and Z (the largest over the machine file's tool offsets), which contains that circle; a "
     "tip zone that cannot be enlarged so makes the verdict unknown.",
+    "Tool solids (a machine file with [[tools]] or [spindle]): every part is the cylinder the machine "
+    "file gives, enclosing the real cutter, shank, holder or spindle nose; the tool in the spindle is the"
+    " [[tools]] entry numbered like the active tool length register (G43 H<n>: tool n) and its tip is at "
+    "machine Z minus the active tool length; fixtures are where the machine file puts them (forbid box "
+    "zones included).",
     "Fanuc dialect: a tool change moves no axis: M06 on a machining centre and the T code that indexes a "
     "lathe's turret (with tool_offset_motion = \"shift\") only change the tool and its offsets, unless "
     "[macros] calls a program for them, whose moves are proved; the machine builder's tool change motion and "

@@ -1096,7 +1096,17 @@ def prove(motion: Iterable[Segment | MotionChunk], machine: Machine, options: Ve
     """Prove ``motion`` (segments or chunks in execution order) against ``machine`` with the options' margin,
     parameter ranges (:class:`~nczones.prover.result.ParamRange` values), engine, violation limit and run
     limits: :func:`verify_segments` with the settings of one :class:`~nczones.prover.options.VerifyOptions`.
-    The prover never reads program text; :mod:`nczones.pipeline` turns a program into motion first."""
+    The prover never reads program text; :mod:`nczones.pipeline` turns a program into motion first.
+
+    A machine with tool and fixture solids (:mod:`nczones.solids`) also has every motion's swept tool solids
+    proved against its fixtures (:mod:`nczones.prover.solids`), and the two results are joined."""
+    from ..solids import machine_solids
+
+    solids = machine_solids(machine)
+    if solids is not None:
+        from .solids import prove_with_solids
+
+        return prove_with_solids(motion, machine, solids, options, verify_segments, file=file, profile=profile)
     return verify_segments(motion, machine, margin=options.margin, params=options.ranges(machine),
                            engine=options.engine, max_violations=options.max_violations, file=file,
                            limits=options.run_limits(), profile=profile)

@@ -92,6 +92,10 @@ class WindowProof:
         self.windows = 0
 
     def __call__(self, path: Any) -> bool:
+        from ..solids import machine_solids
+
+        if machine_solids(self.machine) is not None:
+            return False  # the boxes are about the controlled point; tool solids need the full path
         boxes = prove_enclosures(path, self.machine, self.margin, max_boxes=_max_boxes(path))
         if boxes is None:
             return False
@@ -111,8 +115,11 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
     its boxes do not prove the program (the caller then runs the full path).  ``started`` is when the pass
     began (:func:`time.perf_counter`), for the timings; ``windows`` the proof of the windows the pass handed
     over before ``path``, its last."""
+    from ..solids import machine_solids
     from .smt import z3_version
 
+    if machine_solids(machine) is not None:
+        return None  # the boxes are about the controlled point; tool solids need the full path
     if started is None:
         started = time.perf_counter()
     boxes = prove_enclosures(path, machine, margin, max_boxes=_max_boxes(path))

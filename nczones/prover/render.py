@@ -10,6 +10,7 @@ expansion is rounded to 12 places and marked with ``…``).
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Iterable
 from fractions import Fraction
 
@@ -161,6 +162,9 @@ def to_json_dict(result: Result, *, deterministic: bool = False) -> dict:
         "margin": _d(result.margin),
         "params": [{"name": p.name, "lo": _d(p.written[0]), "hi": _d(p.written[1])} for p in result.params],
         "notes": list(result.notes),
+        **({"clearance": [{"part": p, "fixture": f, "at_least": format_decimal(Fraction(math.floor(c * 1000), 1000)),
+                           "at_least_exact": format_rational(c), "line": line}
+                          for p, f, c, line in result.extra["clearance"]]} if result.extra.get("clearance") else {}),
         "stats": ({"segments": dict(result.stats).get("segments", 0)} if deterministic
                   else {**dict(result.stats), **({"profile": result.profile} if result.profile else {})}),
         "timings": {} if deterministic else {k: seconds(v) for k, v in result.timings},

@@ -63,6 +63,21 @@ def _d(x: Fraction) -> str:
 
 
 
+def _solid_lines(v: Any, loc: str, what: str, depth: str, resolution: Any, paint: Any) -> list[str]:
+    """A tool solid entering a fixture: the part, the fixture, the contact point, the controlled point."""
+    part = v.zones[0] if v.zones else "the tool"
+    out = [f"{paint('loc', loc + ':')} {paint('violation', f'violation[{v.zone}]:')} "
+           f"{what}: the {part} enters fixture `{v.zone}`, {depth} mm deep"]
+    if v.span is not None and v.span.text:
+        src, caret = _caret(v.span.text, v.span.column, v.span.end_column)
+        out += [f"    {src}", f"    {paint('caret', caret)}"]
+    out.append(f"    contact point {numbers.point(v.point, resolution)} is inside both, with the controlled point at "
+               f"{numbers.point(v.path_point, resolution)} (segment parameter {_par(v.parameter, v.parameter_exact)})")
+    if v.note:
+        out.append(f"    note: {v.note}")
+    return out
+
+
 def _par(x: Fraction, exact: bool) -> str:
     return ("" if exact else "~") + format_decimal(x, 6)
 
@@ -117,6 +132,9 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
             what = "recovery " + what
         depth = ("at least " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact,
                                                                           numbers.depth_step(resolution))
+        if v.kind == "solid":  # a tool solid in a fixture (nczones.prover.solids)
+            out.extend(_solid_lines(v, loc, what, depth, resolution, paint))
+            continue
         out.append(f"{paint('loc', loc + ':')} {paint('violation', f'violation[{v.zone}]:')} "
                    f"{what} leaves the allowed set, {depth} mm deep")
         if v.span is not None and v.span.text:

@@ -26,6 +26,7 @@ NOT_EXPRESSIBLE = {
     "box_min_greater_than_max": "order between two values",
     "polygon_limits_after_multiline_vertices": "order between two values",
     "self_intersecting_polygon": "geometry",
+    "bad_solids_axes": "tool solids need the axes X, Y and Z (a relation between sections)",
     "degenerate_polygon": "geometry",
     "duplicate_zone_names": "uniqueness of one field across array elements",
     "start_outside": "membership of the start position in the allowed set",

@@ -1,0 +1,470 @@
+"""The proof that the tool assembly's swept solids stay out of the fixtures (issue 39, the mill core).
+
+Each part of the active tool (:mod:`nczones.solids`) is a vertical cylinder of radius ``r`` over ``lo..hi``
+relative to the machine Z position (``lo = z0 - tool length`` for a tool part: the tip is at machine Z minus
+the active tool length; ``z0`` for a spindle part).  At the controlled position ``p`` it meets the open
+interior of a fixture exactly when
+
+* the heights overlap: ``p_z + lo < f_z1`` and ``p_z + hi > f_z0`` (open: touching is allowed), and
+* in XY the closed disk of radius ``r`` about ``p_xy`` meets the open fixture section, i.e.
+  ``g(p) < thr`` with ``g`` the squared distance from ``p_xy`` to the closed rectangle (a box; ``thr = r²``)
+  or to the centre (a cylinder of radius ``R``; ``thr = (R + r)²``) — the rounded box / grown disk.
+
+Along a straight piece ``p(t)`` the height condition is an interval of ``t`` (linear inequalities) and ``g``
+is a convex piecewise quadratic with rational breakpoints (where ``x(t)`` or ``y(t)`` crosses a side), so its
+minimum over that interval is rational and found exactly: the piece violates iff the minimum is below
+``thr``.  The witness is the rational ``t`` of the minimum (moved into the open interval when needed) and a
+rational contact point inside both the part and the fixture.  Arcs and helices are enclosed
+piece by piece (:meth:`SolidsChecker._arc`): the box of the controlled point over a piece of the sweep
+(exact extremes) grown by the part is tested against the fixture; an undecided piece is tried at its ends
+(exact points of the circle) and split, at most :data:`ARC_PIECES` times; what is left is ``unknown``
+with reason ``VF210``.  A motion without a known tool (G49 while tools are described) is ``unknown`` (``VF211``).
+
+The least clearance per part and fixture is the least horizontal distance between them at the moments their
+heights overlap (the distance between two vertical solids at overlapping heights), a certified lower bound
+(square roots rounded down); lines give it exactly up to that rounding, arcs a lower bound from their box.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
+
+from ..machine import Machine
+from ..motion import Segment, SegmentKind
+from ..solids import FixtureBox, FixtureCylinder, Part, Solids
+from .geometry import (
+    arc_bases,
+    arc_geom,
+    half_tan,
+    in_sweep,
+    line_pieces,
+    rational_point_on_arc,
+    sqrt_bounds,
+)
+from .result import Reason, Result, Violation
+
+if TYPE_CHECKING:
+    from .options import VerifyOptions
+
+__all__ = ["SolidsChecker"]
+
+F0 = Fraction(0)
+F1 = Fraction(1)
+_HALF = Fraction(1, 2)
+
+Fixture = FixtureBox | FixtureCylinder
+#: Arc pieces the solids proof may split an arc into before it says ``unknown`` (VF210).
+ARC_PIECES = 64
+
+
+@dataclass(slots=True)
+class _Span:
+    """``t`` in ``lo..hi`` with open or closed ends (None: empty)."""
+
+    lo: Fraction
+    hi: Fraction
+    lo_open: bool = False
+    hi_open: bool = False
+
+    def above(self, a: Fraction, b: Fraction) -> _Span | None:
+        """Intersect with ``a + b t > 0``."""
+        if b == 0:
+            return self if a > 0 else None
+        c = -a / b
+        if b > 0:
+            if c > self.lo or (c == self.lo and not self.lo_open):
+                self.lo, self.lo_open = c, True
+        elif c < self.hi or (c == self.hi and not self.hi_open):
+            self.hi, self.hi_open = c, True
+        return self if self.ok() else None
+
+    def ok(self) -> bool:
+        return self.lo < self.hi or (self.lo == self.hi and not self.lo_open and not self.hi_open)
+
+
+def _quad_min(coef: tuple[Fraction, Fraction, Fraction], a: Fraction, b: Fraction) -> tuple[Fraction, Fraction]:
+    """Minimum ``(value, t)`` of ``q2 t² + q1 t + q0`` over ``[a, b]`` (convex: q2 >= 0)."""
+    q2, q1, q0 = coef
+    cands = [a, b]
+    if q2 > 0:
+        v = -q1 / (2 * q2)
+        if a < v < b:
+            cands.append(v)
+    return min(((q2 * t + q1) * t + q0, t) for t in cands)
+
+
+def _gap_coef(p0: Fraction, d: Fraction, lo: Fraction | None, hi: Fraction | None,
+              mid: Fraction) -> tuple[Fraction, Fraction]:
+    """The signed gap outside ``[lo, hi]`` of ``p0 + d t`` on a piece around ``mid``, as ``(c0, c1)``."""
+    x = p0 + d * mid
+    if lo is not None and x < lo:
+        return lo - p0, -d
+    if hi is not None and x > hi:
+        return p0 - hi, d
+    return F0, F0
+
+
+def _g_coef(fx: Fixture, px: Fraction, dx: Fraction, py: Fraction, dy: Fraction,
+            mid: Fraction) -> tuple[Fraction, Fraction, Fraction]:
+    if isinstance(fx, FixtureCylinder):
+        ax, ay = px - fx.cx, py - fx.cy
+    else:
+        ax, dx = _gap_coef(px, dx, fx.x0, fx.x1, mid)
+        ay, dy = _gap_coef(py, dy, fx.y0, fx.y1, mid)
+    return dx * dx + dy * dy, 2 * (ax * dx + ay * dy), ax * ax + ay * ay
+
+
+def _breaks(fx: Fixture, px: Fraction, dx: Fraction, py: Fraction, dy: Fraction) -> list[Fraction]:
+    if isinstance(fx, FixtureCylinder):
+        return []
+    out = []
+    for p, d, sides in ((px, dx, (fx.x0, fx.x1)), (py, dy, (fx.y0, fx.y1))):
+        if d != 0:
+            out += [(s - p) / d for s in sides if s is not None]
+    return out
+
+
+def _thr(fx: Fixture, r: Fraction) -> Fraction:
+    return (fx.radius + r) ** 2 if isinstance(fx, FixtureCylinder) else r * r
+
+
+def _g(fx: Fixture, x: Fraction, y: Fraction) -> Fraction:
+    if isinstance(fx, FixtureCylinder):
+        return (x - fx.cx) ** 2 + (y - fx.cy) ** 2
+    gx = max(F0, (fx.x0 - x) if fx.x0 is not None else F0, (x - fx.x1) if fx.x1 is not None else F0)
+    gy = max(F0, (fx.y0 - y) if fx.y0 is not None else F0, (y - fx.y1) if fx.y1 is not None else F0)
+    return gx * gx + gy * gy
+
+
+def _contact(fx: Fixture, part: Part, x: Fraction, y: Fraction, z: Fraction, lo: Fraction,
+             hi: Fraction) -> tuple[Fraction, Fraction, Fraction]:
+    """A rational point inside the part at ``(x, y, z)`` and inside the fixture's open interior (the caller
+    checked that they meet)."""
+    zl = z + lo if fx.z0 is None else max(z + lo, fx.z0)
+    zh = z + hi if fx.z1 is None else min(z + hi, fx.z1)
+    zc = (zl + zh) / 2
+    if isinstance(fx, FixtureCylinder):
+        lam = part.radius / (fx.radius + part.radius)  # |q - p| < r and |q - C| < R (module docstring)
+        return x + (fx.cx - x) * lam, y + (fx.cy - y) * lam, zc
+    d_hi = sqrt_bounds(_g(fx, x, y))[1]
+    delta = (part.radius - d_hi) / 4  # > 0: clamp into the box shrunk by delta, within d + delta·√2 < r
+    out = []
+    for v, a, b in ((x, fx.x0, fx.x1), (y, fx.y0, fx.y1)):
+        a2 = None if a is None else a + delta
+        b2 = None if b is None else b - delta
+        if a2 is not None and b2 is not None and a2 > b2:
+            a2 = b2 = (a + b) / 2  # type: ignore[operator]
+        v = v if a2 is None else max(v, a2)
+        out.append(v if b2 is None else min(v, b2))
+    return out[0], out[1], zc
+
+
+@dataclass
+class SolidsChecker:
+    """Fed every motion in execution order; collects violations, reasons and least clearances."""
+
+    machine: Machine
+    solids: Solids
+    violations: list[Violation] = field(default_factory=list)
+    reasons: list[Reason] = field(default_factory=list)
+    #: (part label, fixture name) -> (least clearance lower bound, line)
+    clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
+    _blocks: set[int] = field(default_factory=set)
+    _arc_witness: bool = False
+    _labels: dict[Part, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        axes = self.machine.axis_names
+        self.ix, self.iy, self.iz = axes.index("X"), axes.index("Y"), axes.index("Z")
+
+    def feed(self, seg: Segment) -> None:
+        if seg.block in self._blocks or not self.solids.fixtures:
+            return
+        parts = self.solids.parts_for(seg.tool_register)
+        if parts is None:
+            self._unknown(seg, "VF211", "no tool length is active (G49): which tool assembly is in the spindle "
+                          "is not known, so its solids were not checked against the fixtures (select the tool's "
+                          "length with G43 H<n>; the assembly of [[tools]] number n is used)")
+            return
+        moved = [a for k, a in enumerate(seg.axes) if a not in "XYZ" and seg.start[k] != seg.end[k]]
+        if moved:  # a rotary or extra linear axis may carry the fixtures or the tool: not modelled
+            self._unknown(seg, "VF210", f"the motion moves {', '.join(moved)}: the tool solids are modelled on a "
+                          "machine moving X, Y and Z only")
+        elif seg.kind is SegmentKind.ARC:
+            self._arc(seg, parts)
+        elif seg.kind in (SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL):
+            for piece in line_pieces(seg, self.machine):
+                if self._line(seg, parts, piece.p0, piece.p1, piece.tau0, piece.tau1):
+                    return
+        else:
+            self._unknown(seg, "VF210", f"the tool solids along a {seg.kind.name.lower()} motion are not modelled")
+
+    def _unknown(self, seg: Segment, code: str, message: str) -> None:
+        self._blocks.add(seg.block)
+        self.reasons.append(Reason(message, seg.span, seg.block, code))
+
+    def _offsets(self, seg: Segment, part: Part) -> tuple[Fraction, Fraction]:
+        shift = F0 if part.spindle else -seg.tool_length
+        return part.z0 + shift, part.z1 + shift
+
+    def _key(self, part: Part, fx: Fixture) -> tuple[str, str]:
+        label = self._labels.get(part)
+        if label is None:
+            label = self._labels[part] = part.label()
+        return label, fx.name
+
+    def _clear(self, part: Part, fx: Fixture, gmin: Fraction, seg: Segment) -> None:
+        thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
+        key = self._key(part, fx)
+        best = self.clearance.get(key)
+        if best is not None and best[0] + thr_r >= 0 and gmin >= (best[0] + thr_r) ** 2:
+            return  # cannot lower the least clearance (no square root needed)
+        c = sqrt_bounds(gmin, 64)[0] - thr_r
+        if best is None or c < best[0]:
+            self.clearance[key] = (c, seg.line)
+
+    def _far(self, part: Part, fx: Fixture, bx: tuple, by: tuple) -> bool:
+        """Is the box ``bx × by`` of the part's axis so far from the fixture that the part cannot meet it nor
+        come closer than its least clearance so far?  (A cheap screen before the exact minimum.)"""
+        gap2 = _rect_gap2(fx, bx, by)
+        thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
+        best = self.clearance.get(self._key(part, fx))
+        return best is not None and best[0] >= 0 and gap2 >= (best[0] + thr_r) ** 2
+
+    def _line(self, seg: Segment, parts: tuple[Part, ...], p0: tuple, p1: tuple, tau0: Fraction,
+              tau1: Fraction) -> bool:
+        px, py, pz = p0[self.ix], p0[self.iy], p0[self.iz]
+        dx, dy, dz = p1[self.ix] - px, p1[self.iy] - py, p1[self.iz] - pz
+        bx, by = (min(px, px + dx), max(px, px + dx)), (min(py, py + dy), max(py, py + dy))
+        for part in parts:
+            lo, hi = self._offsets(seg, part)
+            for fx in self.solids.fixtures:
+                if self._far(part, fx, bx, by):
+                    continue
+                span: _Span | None = _Span(F0, F1)
+                if fx.z1 is not None:  # pz + dz t + lo < z1
+                    span = span.above(fx.z1 - pz - lo, -dz) if span else None
+                if fx.z0 is not None and span is not None:  # pz + dz t + hi > z0
+                    span = span.above(pz + hi - fx.z0, dz)
+                if span is None:
+                    continue
+                cuts = sorted({span.lo, span.hi, *(b for b in _breaks(fx, px, dx, py, dy) if span.lo < b < span.hi)})
+                best = min((_quad_min(_g_coef(fx, px, dx, py, dy, (a + b) / 2), a, b)
+                            for a, b in zip(cuts, cuts[1:])), default=None)
+                if best is None:  # a closed single point
+                    best = (_g(fx, px + dx * span.lo, py + dy * span.lo), span.lo)
+                gmin, t = best
+                self._clear(part, fx, gmin, seg)
+                if gmin >= _thr(fx, part.radius):
+                    continue
+                inside = self._inside(fx, part, span, t, px, dx, py, dy)
+                if inside is None:  # never a silent safe: the part meets the fixture, only no witness was found
+                    self._unknown(seg, "VF210", f"the {part.label()} meets `{fx.name}` but no witness point was "
+                                  "found")
+                    return True
+                t = inside
+                self._report(seg, part, fx, (px + dx * t, py + dy * t, pz + dz * t), tau0 + t * (tau1 - tau0),
+                             p0, p1, t, lo, hi)
+                return True
+        return False
+
+    def _inside(self, fx: Fixture, part: Part, span: _Span, t: Fraction, px: Fraction, dx: Fraction,
+                py: Fraction, dy: Fraction) -> Fraction | None:
+        """``t`` moved into the open span, keeping ``g < thr`` (g is continuous; bounded halving)."""
+        if not ((t == span.lo and span.lo_open) or (t == span.hi and span.hi_open)):
+            return t
+        other = span.hi if t == span.lo else span.lo
+        thr = _thr(fx, part.radius)
+        step = (other - t) / 2
+        for _ in range(400):
+            u = t + step
+            if _g(fx, px + dx * u, py + dy * u) < thr:
+                return u
+            step /= 2
+        return None  # pragma: no cover - g is continuous at t and below thr there
+
+    def _report(self, seg: Segment, part: Part, fx: Fixture, p: tuple, tau: Fraction, p0: tuple, p1: tuple,
+                t: Fraction, lo: Fraction, hi: Fraction) -> None:
+        x, y, z = p
+        cx, cy, cz = _contact(fx, part, x, y, z, lo, hi)
+        path = tuple(a + t * (b - a) for a, b in zip(p0, p1))
+        axes = self.machine.axis_names
+        thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
+        depth_xy = thr_r - sqrt_bounds(_g(fx, x, y), 64)[1]
+        depth_z = min(v for v in ((fx.z1 - (z + lo)) if fx.z1 is not None else None,
+                                  ((z + hi) - fx.z0) if fx.z0 is not None else None, depth_xy) if v is not None)
+        depth = max(F0, min(depth_xy, depth_z))
+        from ..exact import format_decimal
+
+        where = f"line {seg.line}" if seg.line is not None else f"block {seg.block}"
+        pt = " ".join(f"{a}{format_decimal(v, 4)}" for a, v in zip("XYZ", (x, y, z)))
+        note = (f"{part.label()} enters `{fx.name}` at {where}, {pt}, {format_decimal(depth, 3)} mm deep "
+                f"(contact point X{format_decimal(cx, 4)} Y{format_decimal(cy, 4)} Z{format_decimal(cz, 4)})")
+        self._blocks.add(seg.block)
+        self.violations.append(Violation(
+            block=seg.block, span=seg.span, zone=fx.name, point=(("X", cx), ("Y", cy), ("Z", cz)),
+            path_point=tuple(zip(axes, path)), parameter=tau, parameter_exact=not self._arc_witness,
+            first_exit=tuple(zip(axes, path)), first_exit_parameter=tau, first_exit_exact=False,
+            depth=depth, depth_exact=False, engine="exact", segment_kind=seg.kind.name.lower(),
+            derived=seg.derived, kind="solid", zones=(part.name,), note=note, exit_located=False,
+            frame=seg.frame))
+
+    def _arc(self, seg: Segment, parts: tuple[Part, ...]) -> None:
+        """Arcs: pieces of the sweep (cut at quarter turns, then halved, at most :data:`ARC_PIECES`), each
+        enclosed by its box; an undecided piece is tried at its ends (exact points of the circle, on a
+        plane arc) before it is split; what the budget leaves is ``unknown``."""
+        g = arc_geom(seg)
+        lo_c = [min(s, e) for s, e in zip(seg.start, seg.end)]
+        hi_c = [max(s, e) for s, e in zip(seg.start, seg.end)]
+        if not g.exact:  # an R-format arc with an irrational centre, a spiral: the whole arc's box
+            (lo_c[g.ia], hi_c[g.ia]), (lo_c[g.ib], hi_c[g.ib]) = g.plane_bbox()
+            self._arc_pieces(seg, parts, [(lo_c, hi_c, None)])
+            return
+        c = g.centre
+        assert c is not None
+        u = (g.s[0] - c[0], g.s[1] - c[1])
+        w = (g.e[0] - c[0], g.e[1] - c[1])
+        bases = arc_bases(u, g.ccw)
+        if g.full:
+            cuts = bases + [u]
+        else:
+            cuts = [u] + [b for b in bases[1:] if b != w and in_sweep(u, w, b, g.ccw, False)] + [w]
+        pieces = list(zip(cuts, cuts[1:]))
+        self._arc_pieces(seg, parts, [(lo_c, hi_c, pc) for pc in pieces], g)
+
+    def _arc_pieces(self, seg: Segment, parts: tuple[Part, ...], queue: list, g: Any = None) -> None:
+        budget = ARC_PIECES
+        while queue:
+            lo_c, hi_c, piece = queue.pop()
+            box_lo, box_hi = list(lo_c), list(hi_c)
+            if piece is not None:  # the piece's own plane box (exact extremes)
+                (box_lo[g.ia], box_hi[g.ia]), (box_lo[g.ib], box_hi[g.ib]) = self._piece_box(seg, g, piece)
+            hit = self._box_hits(seg, parts, box_lo, box_hi)
+            if hit is None:
+                continue
+            part, fx = hit
+            ends = [seg.start, seg.end] if piece is None else [self._arc_point(seg, g, v) for v in piece]
+            for pt in ends:  # an exact witness at a piece's end (a helix's interior points have irrational Z)
+                self._arc_witness = True  # the parameter of an arc's point is its angle: not reported exactly
+                try:
+                    if pt is not None and self._line(seg, (part,), pt, pt, F0, F0):
+                        return
+                finally:
+                    self._arc_witness = False
+            if piece is None or budget <= 0:
+                self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}` with the {part.label()}: "
+                              f"{'its pieces' if piece is not None else 'its enclosing box'} meet the fixture and "
+                              "no point of it was found inside (a tangency, or the refinement budget is spent)")
+                return
+            budget -= 1
+            a, b = piece
+            m = half_tan(a, b, g.ccw)
+            if m is None or m <= 0:
+                self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}`: its piece could not be split")
+                return
+            mid = rational_point_on_arc(g, m / 2, base=a)
+            mid_v = (mid[0] - g.centre[0], mid[1] - g.centre[1])
+            queue += [(lo_c, hi_c, (a, mid_v)), (lo_c, hi_c, (mid_v, b))]
+
+    def _piece_box(self, seg: Segment, g: Any, piece: tuple) -> tuple:
+        c = g.centre
+        a, b = piece
+        start, end = list(seg.start), list(seg.end)
+        start[g.ia], start[g.ib] = c[0] + a[0], c[1] + a[1]
+        end[g.ia], end[g.ib] = c[0] + b[0], c[1] + b[1]
+        sub = Segment(SegmentKind.ARC, tuple(start), tuple(end), seg.axes, plane=seg.plane, clockwise=seg.clockwise,
+                      centre=c)
+        return arc_geom(sub).plane_bbox()
+
+    def _arc_point(self, seg: Segment, g: Any, v: tuple) -> tuple | None:
+        """The exact path point at direction ``v`` from the centre: on a plane arc always, on a helix only at
+        its start and end (elsewhere the height is irrational)."""
+        c = g.centre
+        p = list(seg.start)
+        p[g.ia], p[g.ib] = c[0] + v[0], c[1] + v[1]
+        if not g.helix:
+            return tuple(p)
+        for q in (seg.start, seg.end):
+            if (q[g.ia], q[g.ib]) == (p[g.ia], p[g.ib]):
+                return q
+        return None
+
+    def _box_hits(self, seg: Segment, parts: tuple[Part, ...], lo_c: list, hi_c: list) -> tuple | None:
+        """The first part and fixture the box of controlled positions may bring together (None: none)."""
+        bx, by, bz = (lo_c[self.ix], hi_c[self.ix]), (lo_c[self.iy], hi_c[self.iy]), (lo_c[self.iz], hi_c[self.iz])
+        clear = []  # a clearance counts from a box that proves every pair (a refined box gives a tighter one)
+        for part in parts:
+            lo, hi = self._offsets(seg, part)
+            for fx in self.solids.fixtures:
+                if (fx.z1 is not None and bz[0] + lo >= fx.z1) or (fx.z0 is not None and bz[1] + hi <= fx.z0):
+                    continue
+                gmin = _rect_gap2(fx, bx, by)
+                if gmin < _thr(fx, part.radius):
+                    return part, fx
+                clear.append((part, fx, gmin))
+        for part, fx, gmin in clear:
+            self._clear(part, fx, gmin, seg)
+        return None
+
+
+def _rect_gap2(fx: Fixture, bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:
+    """Least squared XY distance between the rectangle ``bx × by`` and the fixture's box section / centre."""
+    if isinstance(fx, FixtureCylinder):
+        gx = max(F0, bx[0] - fx.cx, fx.cx - bx[1])
+        gy = max(F0, by[0] - fx.cy, fx.cy - by[1])
+    else:
+        gx = max(F0, (bx[0] - fx.x1) if fx.x1 is not None else F0, (fx.x0 - bx[1]) if fx.x0 is not None else F0)
+        gy = max(F0, (by[0] - fx.y1) if fx.y1 is not None else F0, (fx.y0 - by[1]) if fx.y0 is not None else F0)
+    return gx * gx + gy * gy
+
+
+def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, options: VerifyOptions,
+                      verify_segments: Any, *, file: str = "", profile: Any = None) -> Result:
+    """``verify_segments`` (:func:`nczones.prover.core.verify_segments`, passed in: this module sits below
+    the driver) of ``motion`` (the controlled point against the zones) joined with the proof of the tool
+    solids against the fixtures, fed the same motions as they pass."""
+    from dataclasses import replace
+
+    from ..exact import format_decimal
+    from ..motion import segments_of
+    from .result import Verdict
+
+    checker = SolidsChecker(machine, solids)
+
+    def tee() -> Iterator[Any]:
+        for item in motion:
+            for seg in segments_of(item):
+                checker.feed(seg)
+            yield item
+
+    result: Result = verify_segments(tee(), machine, margin=options.margin, params=options.ranges(machine),
+                             engine=options.engine, max_violations=options.max_violations, file=file,
+                             limits=options.run_limits(), profile=profile)
+    violations = result.violations + tuple(checker.violations[:max(0, options.max_violations
+                                                                  - len(result.violations))])
+    reasons = result.reasons + tuple(checker.reasons)
+    if options.ranges(machine) and solids.fixtures:
+        reasons += (Reason("parameter ranges do not move the tool solids yet: the solids were checked at the "
+                           "nominal offsets and tool lengths only", None, None, "VF212"),)
+    if options.recovery and solids.fixtures:
+        reasons += (Reason("tool-break recovery legs are proved for the controlled point only: the tool solids "
+                           "are not checked on them yet", None, None, "VF212"),)
+    verdict = result.verdict
+    if result.interrupted:
+        pass
+    elif violations:
+        verdict = Verdict.UNSAFE
+    elif reasons:
+        verdict = Verdict.UNKNOWN
+    notes = tuple(
+        f"least clearance: {part} is at least {format_decimal(Fraction(math.floor(c * 1000), 1000))} mm from "
+        f"`{fx}` at line {line} (horizontal distance while their heights overlap, a certified lower bound)"
+        for (part, fx), (c, line) in sorted(checker.clearance.items()) if c >= 0)
+    extra = dict(result.extra)
+    extra["clearance"] = tuple((part, fx, c, line) for (part, fx), (c, line) in sorted(checker.clearance.items()))
+    return replace(result, verdict=verdict, violations=violations, reasons=reasons, notes=result.notes + notes,
+                   extra=extra)

@@ -1,0 +1,318 @@
+"""Tool assemblies and fixtures as solids: the ``[[tools]]``, ``[spindle]`` and ``[[fixtures]]`` sections.
+
+A mill's tool is a stack of vertical cylinders along the tool axis (Z), from the tip up: the cutter, the shank,
+the holder (each ``{ name, diameter, length }``).  A ball or bull nose cutter is taken as its enclosing
+cylinder, a truncated cone (a tapered holder) as the cylinder of its larger diameter: both enclose the real
+solid, so a proof about them holds for it.  The spindle nose (``[spindle] parts``) is the same kind of stack
+measured from the gauge line (the machine Z position with no tool length) up; it is on the spindle whatever
+tool is in it.  Fixtures are solids in machine coordinates: boxes (``kind = "box"``, ``min``/``max`` per axis
+X, Y, Z, an axis left out unbounded) and vertical cylinders (``kind = "cylinder"``, ``centre = { X, Y }``,
+``radius``, optional ``min_z``/``max_z``); every ``forbid = true`` box zone is a fixture box too.  Touching a
+fixture is allowed (as with forbid zones): only the interior is forbidden.
+
+The sections are parsed into :attr:`nczones.machine.Machine.sections` (``"tools"``, ``"spindle"``,
+``"fixtures"``); :func:`machine_solids` gathers them.  The proof is :mod:`nczones.prover.solids`.
+Codes ZN160-ZN164 (``specs/machine-file.md``, "Tools and fixtures as solids").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from fractions import Fraction
+from types import MappingProxyType
+from typing import Any
+
+from .exact import format_decimal
+from .machine import SECTION_PARSERS, Machine, as_written, read_number
+
+__all__ = ["Part", "FixtureBox", "FixtureCylinder", "Solids", "machine_solids"]
+
+F0 = Fraction(0)
+
+
+@dataclass(frozen=True, slots=True)
+class Part:
+    """A vertical cylinder of ``radius`` over ``z0..z1`` above its reference (the tip, or the gauge line for
+    a spindle part)."""
+
+    name: str
+    radius: Fraction
+    z0: Fraction
+    z1: Fraction
+    spindle: bool = False
+
+    def label(self) -> str:
+        """``holder (Ø63 × 40 at 95..135 above the tip)``."""
+        ref = "the gauge line" if self.spindle else "the tip"
+        return (f"{self.name} (Ø{format_decimal(2 * self.radius)} × {format_decimal(self.z1 - self.z0)} at "
+                f"{format_decimal(self.z0)}..{format_decimal(self.z1)} above {ref})")
+
+
+@dataclass(frozen=True, slots=True)
+class FixtureBox:
+    """An axis-parallel box in machine coordinates; None is unbounded.  Its interior is forbidden."""
+
+    name: str
+    x0: Fraction | None
+    x1: Fraction | None
+    y0: Fraction | None
+    y1: Fraction | None
+    z0: Fraction | None
+    z1: Fraction | None
+
+
+@dataclass(frozen=True, slots=True)
+class FixtureCylinder:
+    """A vertical cylinder (axis Z) in machine coordinates; its interior is forbidden."""
+
+    name: str
+    cx: Fraction
+    cy: Fraction
+    radius: Fraction
+    z0: Fraction | None
+    z1: Fraction | None
+
+
+Fixture = FixtureBox | FixtureCylinder
+
+
+@dataclass(frozen=True, slots=True)
+class Solids:
+    """What the solids proof needs from a machine: tool stacks by tool number, spindle parts, fixtures."""
+
+    tools: Mapping[int, tuple[Part, ...]]
+    spindle: tuple[Part, ...]
+    fixtures: tuple[Fixture, ...]
+
+    def parts_for(self, tool: int | None) -> tuple[Part, ...] | None:
+        """The parts that move with the spindle when tool ``tool`` is active (None: not known)."""
+        if tool is None:
+            return None if self.tools else self.spindle
+        return self.tools.get(tool, ()) + self.spindle
+
+
+def machine_solids(machine: Machine) -> Solids | None:
+    """The machine's solids, or None when it declares no tool or spindle solids (nothing to prove)."""
+    sec = machine.sections
+    tools = sec.get("tools") or {}
+    spindle = sec.get("spindle") or ()
+    if not tools and not spindle:
+        return None
+    fixtures: list[Fixture] = list(sec.get("fixtures") or ())
+    from .zones import BoxZone
+
+    for z in machine.allowed.zones:
+        if isinstance(z, BoxZone) and z.forbid:
+            lim = {a: (lo, hi) for a, lo, hi in z.limits}
+            x, y, zz = lim.get("X", (None, None)), lim.get("Y", (None, None)), lim.get("Z", (None, None))
+            fixtures.append(FixtureBox(z.name, x[0], x[1], y[0], y[1], zz[0], zz[1]))
+    return Solids(MappingProxyType(dict(tools)), tuple(spindle), tuple(fixtures))
+
+
+# --------------------------------------------------------------------------- reading
+
+_PART_KEYS = ("name", "diameter", "length")
+_TOOL_KEYS = ("number", "name", "parts")
+_FIXTURE_KEYS = {"box": ("name", "kind", "min", "max"),
+                 "cylinder": ("name", "kind", "centre", "radius", "min_z", "max_z")}
+
+
+def _parts(rd: Any, raw: Any, where: str, header: int | None, spindle: bool) -> tuple[Part, ...] | None:
+    if not isinstance(raw, list) or not raw or not all(isinstance(p, Mapping) for p in raw):
+        rd.report("ZN161", f"{where} parts: expected a list of {{ name, diameter, length }} tables, from the "
+                  f"{'gauge line' if spindle else 'tip'} up, got {as_written(raw)}",
+                  rd.loc.key("parts", header) or rd.loc.header(header))
+        return None
+    out, z = [], F0
+    ok = True
+    for i, p in enumerate(raw):
+        for key in p:
+            if key not in _PART_KEYS:
+                rd.report("ZN160", f"{where} part {i + 1}: unknown key {as_written(key)}; allowed keys: "
+                          f"{', '.join(_PART_KEYS)}", rd.loc.element("parts", header, i, key))
+                ok = False
+        missing = [k for k in ("diameter", "length") if k not in p]
+        if missing:
+            rd.report("ZN161", f"{where} part {i + 1}: missing {', '.join(missing)}",
+                      rd.loc.element("parts", header, i, "name"))
+            ok = False
+            continue
+        name = p.get("name", f"part {i + 1}")
+        if not isinstance(name, str) or not name:
+            rd.report("ZN161", f"{where} part {i + 1}: name must be a non-empty string, got {as_written(name)}",
+                      rd.loc.element("parts", header, i, "name"))
+            ok = False
+        d = read_number(rd, p["diameter"], f"{where} part {i + 1} diameter",
+                        rd.loc.element("parts", header, i, "diameter"), positive=True)
+        ln = read_number(rd, p["length"], f"{where} part {i + 1} length",
+                         rd.loc.element("parts", header, i, "length"), positive=True)
+        if d is None or ln is None or not ok:
+            ok = False
+            continue
+        out.append(Part(str(name), d / 2, z, z + ln, spindle))
+        z += ln
+    return tuple(out) if ok else None
+
+
+def parse_tools_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[int, tuple[Part, ...]]:
+    """``[[tools]]``: ``number`` (the tool number, 0..9999) and ``parts`` from the tip up.
+
+    >>> from nczones.machine import parse_machine
+    >>> m = parse_machine('''
+    ... [machine]
+    ... axes = ["X", "Y", "Z"]
+    ... [machine.rapid]
+    ... X = "1000"
+    ... Y = "1000"
+    ... Z = "1000"
+    ... [machine.reference]
+    ... X = "0"
+    ... Y = "0"
+    ... Z = "0"
+    ... [[tools]]
+    ... number = 1
+    ... parts = [{ name = "cutter", diameter = "10", length = "30" }, { name = "holder", diameter = "63", length = "40" }]
+    ... ''')
+    >>> m.sections["tools"][1][1].label()
+    'holder (Ø63 × 40 at 30..70 above the tip)'
+    """
+    out: dict[int, tuple[Part, ...]] = {}
+    if not isinstance(raw, list):
+        rd.report("ZN161", f"[[tools]]: expected an array of tables ([[tools]]), got {as_written(raw)}",
+                  rd.loc.key("tools", None))
+        return MappingProxyType(out)
+    _solids_axes(rd, axes, "tools")
+    for k, t in enumerate(raw):
+        header = rd.loc.section("tools", k)
+        if not isinstance(t, Mapping):
+            rd.report("ZN161", f"[[tools]] {k + 1}: expected a table, got {as_written(t)}", rd.loc.header(header))
+            continue
+        for key in t:
+            if key not in _TOOL_KEYS:
+                rd.report("ZN160", f"[[tools]] {k + 1}: unknown key {as_written(key)}; allowed keys: "
+                          f"{', '.join(_TOOL_KEYS)}", rd.loc.key(key, header))
+        num = t.get("number")
+        if isinstance(num, bool) or not isinstance(num, int) or not 0 <= num <= 9999:
+            rd.report("ZN162", f"[[tools]] {k + 1}: number must be a whole tool number 0..9999, got "
+                      f"{as_written(num)}", rd.loc.key("number", header) or rd.loc.header(header))
+            continue
+        if num in out:
+            rd.report("ZN162", f"[[tools]] {k + 1}: tool {num} is described twice", rd.loc.key("number", header))
+            continue
+        parts = _parts(rd, t.get("parts"), f"[[tools]] number {num}", header, False)
+        if parts is not None:
+            out[num] = parts
+    return MappingProxyType(out)
+
+
+def parse_spindle_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Part, ...]:
+    """``[spindle] parts``: the spindle nose as a stack of cylinders from the gauge line up."""
+    header = rd.loc.section("spindle")
+    if not isinstance(raw, Mapping):
+        rd.report("ZN161", f"[spindle]: expected a table with parts, got {as_written(raw)}",
+                  rd.loc.key("spindle", None))
+        return ()
+    _solids_axes(rd, axes, "spindle")
+    for key in raw:
+        if key != "parts":
+            rd.report("ZN160", f"[spindle]: unknown key {as_written(key)}; allowed keys: parts",
+                      rd.loc.key(key, header))
+    return _parts(rd, raw.get("parts"), "[spindle]", header, True) or ()
+
+
+def _solids_axes(rd: Any, axes: tuple[str, ...], section: str) -> None:
+    if not all(a in axes for a in "XYZ"):
+        rd.report("ZN164", f"[{section}]: solids need the axes X, Y and Z (a vertical tool axis); this machine "
+                  f"has {', '.join(axes)}", rd.loc.header(rd.loc.section(section)))
+
+
+def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fixture, ...]:
+    """``[[fixtures]]``: boxes and vertical cylinders in machine coordinates."""
+    out: list[Fixture] = []
+    if not isinstance(raw, list):
+        rd.report("ZN161", f"[[fixtures]]: expected an array of tables, got {as_written(raw)}",
+                  rd.loc.key("fixtures", None))
+        return ()
+    _solids_axes(rd, axes, "fixtures")
+    for k, t in enumerate(raw):
+        header = rd.loc.section("fixtures", k)
+        if not isinstance(t, Mapping):
+            rd.report("ZN161", f"[[fixtures]] {k + 1}: expected a table, got {as_written(t)}", rd.loc.header(header))
+            continue
+        kind = t.get("kind")
+        if not isinstance(kind, str) or kind not in _FIXTURE_KEYS:
+            rd.report("ZN163", f"[[fixtures]] {k + 1}: kind {as_written(kind)} is not one of \"box\", \"cylinder\"",
+                      rd.loc.key("kind", header) or rd.loc.header(header))
+            continue
+        name = t.get("name")
+        if not isinstance(name, str) or not name:
+            rd.report("ZN161", f"[[fixtures]] {k + 1}: name must be a non-empty string, got {as_written(name)}",
+                      rd.loc.key("name", header) or rd.loc.header(header))
+            continue
+        for key in t:
+            if key not in _FIXTURE_KEYS[kind]:
+                rd.report("ZN160", f"[[fixtures]] {name!r}: unknown key {as_written(key)} for a {kind}; allowed "
+                          f"keys: {', '.join(_FIXTURE_KEYS[kind])}", rd.loc.key(key, header))
+        fx = _fixture_box(rd, t, name, header) if kind == "box" else _fixture_cylinder(rd, t, name, header)
+        if fx is not None:
+            out.append(fx)
+    return tuple(out)
+
+
+def _bound(rd: Any, table: Any, axis: str, what: str, span: Any) -> Fraction | None:
+    if not isinstance(table, Mapping) or axis not in table:
+        return None
+    return read_number(rd, table[axis], f"{what} {axis}", span)
+
+
+def _fixture_box(rd: Any, t: Mapping, name: str, header: int | None) -> FixtureBox | None:
+    lo, hi = t.get("min", {}), t.get("max", {})
+    vals: list[Fraction | None] = []
+    ok = True
+    for key, table in (("min", lo), ("max", hi)):
+        if not isinstance(table, Mapping) or any(a not in "XYZ" or len(a) != 1 for a in table):
+            rd.report("ZN161", f"[[fixtures]] {name!r} {key}: expected a table of X, Y, Z values, got "
+                      f"{as_written(table)}", rd.loc.key(key, header))
+            ok = False
+    if not ok:
+        return None
+    for a in "XYZ":
+        a0 = _bound(rd, lo, a, f"[[fixtures]] {name!r} min", lambda a=a: rd.loc.key_in("min", header, a))
+        a1 = _bound(rd, hi, a, f"[[fixtures]] {name!r} max", lambda a=a: rd.loc.key_in("max", header, a))
+        if a0 is not None and a1 is not None and a0 >= a1:
+            rd.report("ZN163", f"[[fixtures]] {name!r}: min {a} {format_decimal(a0)} is not below max {a} "
+                      f"{format_decimal(a1)} (an empty box)", rd.loc.key_in("max", header, a))
+            ok = False
+        vals += [a0, a1]
+    return FixtureBox(name, *vals) if ok and not rd.failed else None
+
+
+def _fixture_cylinder(rd: Any, t: Mapping, name: str, header: int | None) -> FixtureCylinder | None:
+    c = t.get("centre")
+    if not isinstance(c, Mapping) or set(c) != {"X", "Y"}:
+        rd.report("ZN161", f"[[fixtures]] {name!r} centre: expected {{ X = \"..\", Y = \"..\" }}, got "
+                  f"{as_written(c)}", rd.loc.key("centre", header) or rd.loc.header(header))
+        return None
+    cx = read_number(rd, c["X"], f"[[fixtures]] {name!r} centre X", rd.loc.key_in("centre", header, "X"))
+    cy = read_number(rd, c["Y"], f"[[fixtures]] {name!r} centre Y", rd.loc.key_in("centre", header, "Y"))
+    if "radius" not in t:
+        rd.report("ZN161", f"[[fixtures]] {name!r}: missing radius", rd.loc.header(header))
+        return None
+    r = read_number(rd, t["radius"], f"[[fixtures]] {name!r} radius", rd.loc.key("radius", header), positive=True)
+    z0 = read_number(rd, t["min_z"], f"[[fixtures]] {name!r} min_z", rd.loc.key("min_z", header)) \
+        if "min_z" in t else None
+    z1 = read_number(rd, t["max_z"], f"[[fixtures]] {name!r} max_z", rd.loc.key("max_z", header)) \
+        if "max_z" in t else None
+    if z0 is not None and z1 is not None and z0 >= z1:
+        rd.report("ZN163", f"[[fixtures]] {name!r}: min_z {format_decimal(z0)} is not below max_z "
+                  f"{format_decimal(z1)} (an empty cylinder)", rd.loc.key("max_z", header))
+        return None
+    if cx is None or cy is None or r is None:
+        return None
+    return FixtureCylinder(name, cx, cy, r, z0, z1)
+
+
+SECTION_PARSERS["tools"] = parse_tools_section
+SECTION_PARSERS["spindle"] = parse_spindle_section
+SECTION_PARSERS["fixtures"] = parse_fixtures_section

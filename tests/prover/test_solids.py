@@ -1,0 +1,268 @@
+"""Tool assemblies and fixtures as solids (issue 39, the mill core): the bundled example, every lane end to
+end (short programs, more than 512 motions, parameters '#'), G49, machine-file errors, and the prover
+against the independent oracle of tests/oracles/solids.py on generated programs."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.errors import MachineFileError
+from nczones.gcode import segments_text
+from nczones.machine import load_machine, parse_machine
+from nczones.prover import verify, verify_text
+from nczones.solids import machine_solids
+from tests.oracles.solids import inside_part_and_fixture, sampled_hit
+
+ROOT = Path(__file__).resolve().parents[2]
+MACHINE = ROOT / "specs/machines/mill_solids.toml"
+PROGRAMS = ROOT / "specs/examples/programs"
+
+
+def _mill():
+    return load_machine(MACHINE)
+
+
+# The example machine (specs/machines/mill_solids.toml): the vise's jaw is X 100..250, Y 0..80, Z 0..60;
+# tool 1 = cutter Ø10 × 25, shank Ø10 × 15, holder Ø63 × 60 (40..100 above the tip), H1 = 100.
+
+
+def test_example_holder_hits_vise():
+    r = verify(str(PROGRAMS / "holder_hits_vise.ngc"), _mill())
+    assert r.verdict.label == "unsafe"
+    v = r.violations[0]
+    # G1 Z10 at X80: the holder's axis is 20 from the jaw face (X100) and its radius is 31.5, so it enters the
+    # jaw once its bottom (tip + 40) is below the jaw top 60: the tip goes down to Z10 on line 6
+    assert v.kind == "solid" and v.zone == "vise" and v.zones == ("holder",) and v.line == 6
+    assert "holder (Ø63 × 60 at 40..100 above the tip) enters `vise` at line 6" in v.note
+    point = tuple(x for _, x in v.point)
+    path = tuple(x for _, x in v.path_point)
+    holder = machine_solids(_mill()).tools[1][2]
+    vise = next(f for f in machine_solids(_mill()).fixtures if f.name == "vise")
+    assert inside_part_and_fixture(point, path, holder, vise, Fraction(100))
+    # the tip alone clears the jaw: no violation names a zone through the controlled point
+    assert all(x.kind == "solid" for x in r.violations)
+
+
+def test_example_holder_clears_vise_with_clearance():
+    r = verify(str(PROGRAMS / "holder_clears_vise.ngc"), _mill())
+    assert r.verdict.label == "safe", r.reasons
+    # at X60 the holder reaches X 60 + 31.5 = 91.5, 8.5 from the jaw face X100, while it is below the jaw top
+    assert any(n.startswith("least clearance: holder (Ø63 × 60 at 40..100 above the tip) is at least 8.5 mm "
+                            "from `vise`") for n in r.notes)
+    clear = {(p, f): c for p, f, c, _ in r.extra["clearance"]}
+    assert clear[("holder (Ø63 × 60 at 40..100 above the tip)", "vise")] == Fraction(17, 2)
+
+
+HEADER = "G21 G90 G17 G54\nT1 M6\nG43 H1\n"
+
+
+def _long(x_hit: str, n: int = 300) -> str:
+    """More than 512 motions, safe zig-zags away from the vise, then one plunge at ``X{x_hit}``."""
+    body = "".join(f"G1 X{-50 + (i % 2) * 10} Y{i % 50}\n" for i in range(2 * n))
+    return HEADER + "G0 X-50 Y0 Z100\nG1 Z10 F500\n" + body + f"G0 Z100\nG0 X{x_hit} Y40\nG1 Z10\nG0 Z100\nM30\n"
+
+
+@pytest.mark.parametrize("x, expected", [("80", "unsafe"), ("60", "safe")])
+def test_long_program_vectorized_tier(x, expected):
+    r = verify_text(_long(x), _mill())
+    assert r.verdict.label == expected, (r.reasons, r.violations)
+    if expected == "unsafe":
+        assert r.violations[0].zones == ("holder",) and r.violations[0].line == 3 + 2 + 600 + 3
+
+
+@pytest.mark.parametrize("x, expected", [("80", "unsafe"), ("60", "safe")])
+def test_parametric_program_double_pass(x, expected):
+    text = f"#1 = {x}\n" + HEADER + "G0 X#1 Y40 Z100\nG1 Z10 F300\nG0 Z100\nM30\n"
+    r = verify_text(text, _mill())
+    assert r.verdict.label == expected, (r.reasons, r.violations)
+
+
+def test_motion_under_g49_is_unknown():
+    r = verify_text("G21 G90 G54\nG0 X-50 Y0 Z300\nM30\n", _mill())
+    assert r.verdict.label == "unknown"
+    assert [x.code for x in r.reasons] == ["VF211"]
+
+
+def test_cylinder_fixture_and_spindle_nose():
+    # the clamp post: centre X400 Y200, radius 15, up to Z50. The cutter (radius 5) at Y200 enters it when
+    # X < 400 + 15 + 5 = 420 and the tip is below 50
+    r = verify_text(HEADER + "G0 X430 Y200 Z100\nG1 Z40 F300\nG1 X419\nG0 Z100\nM30\n", _mill())
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "clamp" and r.violations[0].line == 6
+    r = verify_text(HEADER + "G0 X430 Y200 Z100\nG1 Z40 F300\nG1 X420\nG0 Z100\nM30\n", _mill())
+    assert r.verdict.label == "safe", (r.reasons, r.violations)
+
+
+MACHINE_HEAD = """[machine]
+axes = ["X", "Y", "Z"]
+[machine.rapid]
+X = "1000"
+Y = "1000"
+Z = "1000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "400"
+"""
+
+
+@pytest.mark.parametrize("tail, code, line", [
+    ('[[tools]]\nnumber = 1\nparts = [{ name = "cutter", diameter = "10", lenght = "5" }]\n', "ZN160", 13),
+    ('[[tools]]\nnumber = 1\n', "ZN161", None),
+    ('[[tools]]\nnumber = -1\nparts = [{ diameter = "10", length = "5" }]\n', "ZN162", 12),
+    ('[spindle]\nparts = [{ diameter = "10", length = "5" }]\n[[fixtures]]\nname = "a"\nkind = "cone"\n',
+     "ZN163", 15),
+    ('[[tools]]\nnumber = 1\nparts = [{ diameter = "0", length = "5" }]\n', "ZN106", 13),
+])
+def test_machine_file_errors(tail, code, line):
+    with pytest.raises(MachineFileError) as e:
+        parse_machine(MACHINE_HEAD + tail, "m.toml")
+    d = e.value.diagnostics[0]
+    assert d.code == code
+    if line is not None:
+        assert d.span is not None and d.span.line == line
+
+
+def test_solids_need_xyz():
+    text = MACHINE_HEAD.replace('["X", "Y", "Z"]', '["X", "Z"]').replace('Y = "1000"\n', "").replace('Y = "0"\n', "")
+    with pytest.raises(MachineFileError) as e:
+        parse_machine(text + '[spindle]\nparts = [{ diameter = "10", length = "5" }]\n', "m.toml")
+    assert e.value.diagnostics[0].code == "ZN164"
+
+
+# --------------------------------------------------------------------------- against the oracle
+
+ORACLE_MACHINE = MACHINE_HEAD.replace('Z = "400"', 'Z = "300"') + """[offsets]
+G54 = { X = "0", Y = "0", Z = "0" }
+[tool_lengths]
+H1 = "50"
+H2 = "80"
+[[tools]]
+number = 1
+parts = [{ name = "cutter", diameter = "6", length = "20" }, { name = "holder", diameter = "40", length = "30" }]
+[[tools]]
+number = 2
+parts = [{ name = "drill", diameter = "4", length = "50" }, { name = "holder", diameter = "32", length = "30" }]
+[[zones]]
+name = "jaw"
+kind = "box"
+forbid = true
+point = "tip"
+min = { X = "0", Y = "0", Z = "0" }
+max = { X = "40", Y = "30", Z = "25" }
+[[fixtures]]
+name = "post"
+kind = "cylinder"
+centre = { X = "-30", Y = "40" }
+radius = "8"
+max_z = "35"
+"""
+
+coord = st.integers(-80, 80).map(lambda v: Fraction(v, 2))
+height = st.integers(5, 160).map(lambda v: Fraction(v, 2))
+
+
+@st.composite
+def programs(draw):
+    """Lines and helical arcs (G2/G3 a quarter or half turn about a drawn centre, the end exactly on the
+    circle) around the jaw and the post, with tool 1 or 2."""
+    h = draw(st.sampled_from([1, 2]))
+    lines = [f"G21 G90 G17 G54\nT{h} M6\nG43 H{h}", "G0 X-60 Y-60 Z120"]
+    px, py = Fraction(-60), Fraction(-60)
+    for _ in range(draw(st.integers(1, 4))):
+        z = draw(height)
+        if draw(st.booleans()):
+            px, py = draw(coord), draw(coord)
+            lines.append(f"G1 X{float(px)} Y{float(py)} Z{float(z)} F500")
+            continue
+        i, j = draw(coord) / 2, draw(coord) / 2
+        if i == 0 and j == 0:
+            i = Fraction(5)
+        cw = draw(st.booleans())
+        cx, cy = px + i, py + j
+        ux, uy = px - cx, py - cy
+        ex, ey = draw(st.sampled_from([(uy, -ux) if cw else (-uy, ux), (-ux, -uy)]))
+        px, py = cx + ex, cy + ey
+        lines.append(f"G{2 if cw else 3} X{float(px)} Y{float(py)} Z{float(z)} I{float(i)} J{float(j)} F500")
+    return "\n".join(lines) + "\nM30\n"
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs())
+def test_never_a_wrong_safe(text):
+    _against_oracle(text)
+
+
+@pytest.mark.long
+@settings(max_examples=2000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs())
+def test_never_a_wrong_safe_long(text):
+    _against_oracle(text)
+
+
+def _against_oracle(text):
+    machine = parse_machine(ORACLE_MACHINE, "oracle.toml")
+    r = verify_text(text, machine)
+    solids = machine_solids(machine)
+    segs = segments_text(text, machine, fast=False)
+    hit = None
+    for seg in segs:
+        parts = solids.parts_for(seg.tool_register)
+        if parts:
+            hit = hit or sampled_hit(seg, parts, solids.fixtures, 48)
+    if hit is not None and r.verdict.label == "safe":
+        raise AssertionError(f"safe, but the oracle finds {hit[0].name} in {hit[1].name} at {hit[2]}")
+    for v in r.violations:
+        if v.kind != "solid":
+            continue
+        seg = next(s for s in segs if s.block == v.block)
+        part = next(p for p in solids.parts_for(seg.tool_register) if p.name in v.zones)
+        fx = next(f for f in solids.fixtures if f.name == v.zone)
+        point = tuple(x for _, x in v.point)
+        path = tuple(x for _, x in v.path_point)
+        assert inside_part_and_fixture(point, path, part, fx, seg.tool_length), v.note
+
+
+def test_parametric_program_without_tool_length_is_not_proved_by_the_double_pass():
+    # the double pass declines T and H words, so a parametric program it takes runs under G49: its boxes are
+    # about the controlled point only and would prove this program; the tool in the spindle is not known
+    text = "#1 = 80\nG21 G90 G17 G54\nG0 X#1 Y40 Z300\nG0 Z200\nM30\n"
+    r = verify_text(text, _mill())
+    assert r.verdict.label == "unknown" and [x.code for x in r.reasons] == ["VF211", "VF211"][: len(r.reasons)]
+    # a spindle-only machine: the nose (Ø120 from the gauge line up) at X80 reaches X140, inside the jaw
+    # (X 100..250, up to Z60) once the gauge line is below 60
+    spindle_only = MACHINE_MILL_TEXT.split("[[tools]]")[0] + (
+        '[spindle]\nparts = [{ name = "spindle nose", diameter = "120", length = "80" }]\n')
+    r = verify_text("#1 = 80\nG21 G90 G17 G54\nG0 X#1 Y40 Z300\nG0 Z50\nM30\n", parse_machine(spindle_only))
+    assert r.verdict.label == "unsafe" and r.violations[0].zones == ("spindle nose",)
+
+
+MACHINE_MILL_TEXT = MACHINE.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("z, expected", [("40", "safe"), ("10", "unsafe")])
+def test_arc_past_the_jaw_corner_is_decided_by_pieces(z, expected):
+    # a quarter arc about (60, -40) of radius 40 from (60, 0) to (100, -40): its box X 60..100, Y -40..0
+    # touches the jaw's corner (100, 0), the arc itself stays 40√2 - 40 ≈ 16.57 from it. At tip Z40 only the
+    # cutter (radius 5) is at the jaw's heights: safe, 11.57 clear. At tip Z10 the holder (radius 31.5,
+    # 50..110) is too: it enters near the arc's middle (its ends are 40 from the jaw), so the witness needs a
+    # point inside the arc
+    text = HEADER + f"G0 X60 Y0 Z100\nG1 Z{z} F300\nG2 X100 Y-40 I0 J-40\nG0 Z100\nM30\n"
+    r = verify_text(text, _mill())
+    assert r.verdict.label == expected, (r.reasons, r.violations)
+    if expected == "unsafe":
+        v = r.violations[0]
+        assert v.line == 6 and v.zones == ("holder",) and not v.parameter_exact
+        path = tuple(x for _, x in v.path_point)
+        assert (path[0] - 60) ** 2 + (path[1] + 40) ** 2 == 40 ** 2  # exactly on the circle
+        holder = machine_solids(_mill()).tools[1][2]
+        vise = next(f for f in machine_solids(_mill()).fixtures if f.name == "vise")
+        assert inside_part_and_fixture(tuple(x for _, x in v.point), path, holder, vise, Fraction(100))
+    else:
+        clear = {(p, f): c for p, f, c, _ in r.extra["clearance"]}
+        c = clear[("cutter (Ø10 × 25 at 0..25 above the tip)", "vise")]
+        assert 0 < c <= Fraction(1157, 100)
