@@ -477,6 +477,23 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     return result, first_run, seen
 
 
+def _solids_blend_reasons(machine: Machine, run: Interpretation) -> tuple[Reason, ...]:
+    """The tool solids are proved on the programmed path (:mod:`nczones.prover.solids`); where the control may
+    round a corner (G64, Fanuc cutting mode) the holder sweeps the rounded path, which that proof does not
+    model: a reason the verdict cannot be ``safe`` (specs/path-modes.md)."""
+    from ..solids import machine_solids
+
+    solids = machine_solids(machine)
+    if solids is None or not solids.fixtures:
+        return ()
+    blending = sorted({m.code for _block, m in run.interpreter.path_modes if m.blend})
+    if not blending:
+        return ()
+    return (Reason(f"tool solids are proved on the programmed path; the program runs in {', '.join(blending)}, "
+                   "where the control may round corners and the tool sweeps the rounded path: set [machine] "
+                   "path_mode = \"G61\" (exact path) if the machine runs so", None, None, "VF210"),)
+
+
 def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, progress: Any,
                 profile: RunProfile) -> Result:
     """Prove one interpretation (one case): its result with source text, unknown codes and notes filled in."""
@@ -522,6 +539,7 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
     result = prove(corners.watch(with_text(run)), machine, options, file=run.file, profile=profile)
     if not result.interrupted:
         result = replace(result, reasons=result.reasons + tuple(corners.finish(v.block for v in result.violations)))
+        result = replace(result, reasons=result.reasons + _solids_blend_reasons(machine, run))
     if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
         report(last_reported[0])
     # fill the source text of violations and reasons (column chunks carry only line numbers)

@@ -61,6 +61,20 @@ def test_example_holder_clears_vise_with_clearance():
 HEADER = "G21 G90 G17 G54\nT1 M6\nG43 H1\n"
 
 
+def test_solids_under_g64_are_not_proved_on_the_rounded_corners():
+    """The holder sweeps the path the control moves; in G64 it rounds corners, which the solids proof does not
+    model: the clear example is safe on the exact-path machine and unknown (VF210) once it may blend, from the
+    machine's start-up mode or a G64 in the program."""
+    text = (PROGRAMS / "holder_clears_vise.ngc").read_text(encoding="utf-8")
+    assert verify_text(text, _mill()).verdict.label == "safe"
+    blending = parse_machine(MACHINE.read_text(encoding="utf-8").replace('path_mode = "G61"', 'path_mode = "G64"'))
+    for machine, program in ((blending, text), (_mill(), "G64\n" + text)):
+        r = verify_text(program, machine)
+        assert r.verdict.label == "unknown" and "VF210" in {x.code for x in r.reasons}, r.reasons
+        assert any("G64" in x.message and "rounded path" in x.message for x in r.reasons)
+
+
+
 def _long(x_hit: str, n: int = 300) -> str:
     """More than 512 motions, safe zig-zags away from the vise, then one plunge at ``X{x_hit}``."""
     body = "".join(f"G1 X{-50 + (i % 2) * 10} Y{i % 50}\n" for i in range(2 * n))
