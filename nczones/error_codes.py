@@ -303,8 +303,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF207", _U, _RM, "a lathe tool's nose radius with a zone the nose cannot be checked against"),
     Code("VF208", _U, "specs/path-modes.md", "a corner the control may round (G64, Fanuc cutting mode) may leave "
                                                "the allowed set"),
-    Code("VF210", _U, _MF, "tool solids: an arc near a fixture its enclosure cannot decide, or a motion kind "
-                           "the solids proof does not model"),
+    Code("VF210", _U, _MF, "tool solids: an arc near a fixture its enclosure cannot decide, a motion kind "
+                           "the solids proof does not model, or corners the control may round (G64)"),
     Code("VF211", _U, _MF, "tool solids: a motion under G49 (no H register names the tool in the spindle)"),
     Code("VF212", _U, _MF, "tool solids with parameter ranges (checked at nominal values only) or "
                            "tool-break recovery (legs not checked for solids)"),
