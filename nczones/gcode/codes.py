@@ -25,7 +25,7 @@ from fractions import Fraction
 
 __all__ = ["CLAIMS", "LANES", "Code", "LINUXCNC_G", "LINUXCNC_M", "FANUC_G", "gname", "g_key",
            "claimed", "decline_reason", "modal_groups", "LANE_INTERPRETER", "LANE_PLAIN", "LANE_FASTPATH",
-           "LANE_DOUBLES", "FANUC_CYCLE_G", "FANUC_CANCEL_CYCLE_G"]
+           "LANE_DOUBLES", "FANUC_CYCLE_G", "FANUC_CANCEL_CYCLE_G", "LaneCodes"]
 
 #: The lanes' names.
 LANE_INTERPRETER, LANE_PLAIN, LANE_FASTPATH, LANE_DOUBLES = "full", "plain", "fastpath", "doubles"
@@ -163,3 +163,28 @@ def decline_reason(table: dict[int, Code], lane: str, key: int) -> str | None:
 def modal_groups(table: dict[int, Code]) -> dict[int, int]:
     """key -> modal group number, for the codes with one."""
     return {k: c.group for k, c in table.items() if c.group is not None}
+
+
+@dataclass(frozen=True, slots=True)
+class LaneCodes:
+    """What one lane declares about a dialect's codes: each lane module holds one (``CODES``).
+
+    ``claims_g(key)``/``claims_m(number)``: the lane computes blocks with that code (and must agree with
+    the full interpreter); ``decline_g``/``decline_m``: why it does not (None when it claims the code).
+    """
+
+    lane: str
+    g: dict[int, Code]
+    m: dict[int, Code]
+
+    def claims_g(self, key: int) -> bool:
+        return decline_reason(self.g, self.lane, key) is None
+
+    def claims_m(self, number: int) -> bool:
+        return decline_reason(self.m, self.lane, number) is None
+
+    def decline_g(self, key: int) -> str | None:
+        return decline_reason(self.g, self.lane, key)
+
+    def decline_m(self, number: int) -> str | None:
+        return decline_reason(self.m, self.lane, number)

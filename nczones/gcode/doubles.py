@@ -52,14 +52,14 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import GcodeError
-from .codes import LANE_DOUBLES, LINUXCNC_G, claimed
+from .codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from .expr import MAX_PARAMETER, TRIG_DEGREES, EvalError, atan_degrees, binary_op, unary_op
 from .lexer import magic_comment
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from .program import scan_oword
 from .shapes import LAYOUT, RUNS, shape_source, shaped
 
-__all__ = ["Declined", "DoublePath", "double_pass"]
+__all__ = ["CODES", "Declined", "DoublePath", "double_pass"]
 
 #: Motions the pass keeps (8 bytes per axis each); a longer program takes the full path, whose memory is flat.
 MAX_MOTIONS = 2_000_000
@@ -68,6 +68,9 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
                 12: "offset"}
 _GROUPS = {k // 10: _GROUP_NAMES[LINUXCNC_G[k].group or 0] for k in sorted(claimed(LINUXCNC_G, LANE_DOUBLES))}
+
+#: The codes this lane claims and declines (the code table).
+CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
 _LETTERS = frozenset("GMFXYZ")

@@ -63,16 +63,19 @@ from typing import Any
 import numpy as np
 
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
-from .codes import LANE_FASTPATH, LINUXCNC_G, claimed
+from .codes import LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from .interpreter import LEAN_M
 
-__all__ = ["run_with_fastpath", "MIN_RUN"]
+__all__ = ["CODES", "run_with_fastpath", "MIN_RUN"]
 
 #: M codes a simple line may carry (spindle and coolant; the interpreter's plain lane takes the same).
 _LEAN_M_CODES = np.array(sorted(LEAN_M), dtype=np.int64)
 #: The motion modes a run of simple lines may start in (the code table's fast-path claims, less the G81/G82
 #: hole lines, which _fast_cycle_run takes).
 _RUN_MOTIONS = frozenset({None} | (claimed(LINUXCNC_G, LANE_FASTPATH) - {810, 820}))
+
+#: The codes this lane claims and declines (the code table).
+CODES = LaneCodes(LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M)
 #: Shorter runs of simple lines are left to the full interpreter.
 MIN_RUN = 64
 _MAX_SCALE = 9

@@ -55,7 +55,15 @@ from . import (  # defined in the package, which loads this module lazily
     DEFAULT_CHUNK_SIZE,
 )
 from .blocks import LANE_FULL, Block, Word
-from .codes import LANE_PLAIN, LINUXCNC_G, LINUXCNC_M, claimed, modal_groups
+from .codes import (
+    LANE_INTERPRETER,
+    LANE_PLAIN,
+    LINUXCNC_G,
+    LINUXCNC_M,
+    LaneCodes,
+    claimed,
+    modal_groups,
+)
 from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
 from .passes import PassGuard
@@ -82,6 +90,8 @@ __all__ = [
     "DEFAULT_ARC_TOLERANCE",
     "LINUXCNC_RADIUS_TOLERANCE",
     "MODAL_GROUP_NAMES",
+    "PLAIN_CODES",
+    "FULL_CODES",
 ]
 
 #: Grbl's arc rule as nczones takes it (``arc_tolerance = "grbl"``).  Grbl's gcode.c accepts an I/J/K arc when
@@ -173,6 +183,9 @@ _NO_PLAN = object()
 #: Spindle and coolant M codes: no effect on motion, and a plain move may carry one (Interpreter._lean), which
 #: then keeps the spindle direction LinuxCNC's G84/G86/G33 checks read.
 LEAN_M = claimed(LINUXCNC_M, LANE_PLAIN)
+#: The codes the plain lane and the full interpreter claim and decline (the code table).
+PLAIN_CODES = LaneCodes(LANE_PLAIN, LINUXCNC_G, LINUXCNC_M)
+FULL_CODES = LaneCodes(LANE_INTERPRETER, LINUXCNC_G, LINUXCNC_M)
 _CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
 _AXIS_USERS = {100: "G10", 280: "G28", 300: "G30", 920: "G92", 520: "G52"}
 #: Letters whose use LinuxCNC checks per block (Interpreter._check_word_users).
