@@ -25,7 +25,7 @@ from fractions import Fraction
 
 __all__ = ["CLAIMS", "LANES", "Code", "LINUXCNC_G", "LINUXCNC_M", "FANUC_G", "gname", "g_key",
            "claimed", "decline_reason", "modal_groups", "LANE_INTERPRETER", "LANE_PLAIN", "LANE_FASTPATH",
-           "LANE_DOUBLES", "FANUC_CYCLE_G", "FANUC_CANCEL_CYCLE_G", "LaneCodes"]
+           "LANE_DOUBLES", "LATHE_REASON", "FANUC_CYCLE_G", "FANUC_CANCEL_CYCLE_G", "LaneCodes"]
 
 #: The lanes' names.
 LANE_INTERPRETER, LANE_PLAIN, LANE_FASTPATH, LANE_DOUBLES = "full", "plain", "fastpath", "doubles"
@@ -57,6 +57,9 @@ def gname(key: int) -> str:
 _PLAIN_NO = "not a plain G0/G1 move: the plain lane hands the block to the full path"
 _FAST_NO = "not a simple line (G0-G3, axis words, F, S, spindle/coolant M): the fast path hands it on"
 _FAST_CYCLE = CLAIMS  # G81/G82 hole lines after the cycle's first block (fastpath._fast_cycle_run)
+#: The fast path's decline of a lathe code: the interpretation takes the whole program by the full path.
+LATHE_REASON = "a lathe program (G7/G8, G70-G72): the whole program takes the full path"
+_LATHE_G = frozenset((70, 80, 700, 710, 711, 712, 720, 721, 722))
 _DBL_NO = "not followed by the double pass: the program takes the full path"
 _UNSUPPORTED = "the full path answers unknown: "
 
@@ -100,7 +103,7 @@ def _linuxcnc_g() -> dict[int, Code]:
             table[k] = _row(k, group,
                             full=_UNSUPPORTED + "see interpreter.UNSUPPORTED_G" if k in _LINUXCNC_UNKNOWN_G else CLAIMS,
                             plain=CLAIMS if k in _PLAIN_G else _PLAIN_NO,
-                            fast=CLAIMS if k in _FAST_G else _FAST_NO,
+                            fast=CLAIMS if k in _FAST_G else LATHE_REASON if k in _LATHE_G else _FAST_NO,
                             doubles=CLAIMS if k in _DOUBLES_G else _DBL_NO)
     return table
 
