@@ -137,8 +137,8 @@ def _linuxcnc_m() -> dict[int, Code]:
 LINUXCNC_M: dict[int, Code] = _linuxcnc_m()
 
 # Fanuc (milling, system A-C share these): the canned cycles and the codes that cancel one.
-FANUC_CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89, Fraction("84.2"), Fraction("84.3")))
-FANUC_CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
+FANUC_CYCLE_G: frozenset[int | Fraction] = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89, Fraction("84.2"), Fraction("84.3")))
+FANUC_CANCEL_CYCLE_G: frozenset[int | Fraction] = frozenset((0, 1, 2, 3, 80))
 #: Fanuc G codes (by 10 * number) this table names: the cycles (group 9) and motion group 1.
 FANUC_G: dict[int, Code] = {
     **{int(g * 10): _row(int(g * 10), 9, fast=_FAST_NO, doubles="the double pass runs LinuxCNC only")

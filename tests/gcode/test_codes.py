@@ -19,7 +19,7 @@ import pytest
 
 from nczones.errors import GcodeError
 from nczones.gcode import fastpath, interpret_text
-from nczones.gcode.codes import LATHE_REASON, LINUXCNC_G, LINUXCNC_M, gname
+from nczones.gcode.codes import FANUC_G, LATHE_REASON, LINUXCNC_G, LINUXCNC_M, gname
 from nczones.gcode.doubles import CODES as DOUBLES_CODES
 from nczones.gcode.doubles import Declined, double_pass
 from nczones.gcode.fastpath import CODES as FAST_CODES
@@ -114,6 +114,13 @@ def test_plain_lane_claims_or_declines_each_code(case, monkeypatch):
     assert key in ([g for g, _m in taken] if kind == "G" else [m for _g, m in taken])
 
 
+def _there_and_back(block: str, point: str, n: int) -> str:
+    """``n`` blocks of the code from (0, 0) to (1, y) and back: an arc's I changes sign on the way back."""
+    back = block.replace(f"X1{point}", f"X0{point}").replace(f"Y1{point}", f"Y0{point}")
+    back = back.replace("I0.5", "I-0.5")
+    return "".join((block if i % 2 == 0 else back) + "\n" for i in range(n))
+
+
 def _lines(n: int, y: int) -> str:
     return "".join(f"G1 X{i % 7}.5 Y{y}\n" for i in range(n))
 
@@ -135,7 +142,7 @@ def test_fast_path_claims_or_declines_each_code(case):
         assert not run.fast  # the program-wide decline the table names
     if want[0] and want[0][0] != "error" and kind == "G" and FAST_CODES.claims_g(key) and key not in (810, 820):
         # a run of the code itself is the fast path's (G0-G3: simple lines)
-        body = "".join(_block(kind, key).replace("X1", f"X{2 * (i % 2)}") + "\n" for i in range(n))
+        body = _there_and_back(_block(kind, key), "", n)
         text = HEAD + "G0 X0 Y0\n" + body + "M30\n"
         run = interpret_text(text, MACHINE)
         segs = [(s.kind, s.start, s.end, s.line) for c in run for s in c.segments()]
@@ -160,3 +167,39 @@ def test_double_pass_claims_or_declines_each_code(case):
     ends = [float(v) for s in want[0] for v in s[2]]
     rows = [col[k] for k in range(1, path.motions + 1) for col in path.columns]
     assert len(rows) == len(ends) and rows == pytest.approx(ends, abs=1e-9)
+
+
+FANUC_BLOCKS = {730: "G73 X1. Y1. Z-1. R1. Q0.5", 740: "M4 S100\nG74 X1. Y1. Z-1. R1.",
+                760: "M3 S100\nG76 X1. Y1. Z-1. R1. Q0.1", 842: "M3 S100\nG84.2 X1. Y1. Z-1. R1. F1.",
+                843: "M4 S100\nG84.3 X1. Y1. Z-1. R1. F1.", 840: "M3 S100\nG84 X1. Y1. Z-1. R1.",
+                860: "M3 S100\nG86 X1. Y1. Z-1. R1.", 870: "G87 X1. Y1. Z-1. R1.",
+                20: "G2 X1. Y0. I0.5 J0.", 30: "G3 X1. Y0. I0.5 J0.", 0: "G0 X1. Y1.", 10: "G1 X1. Y1.",
+                800: "G80"}
+
+
+@pytest.mark.parametrize("key", sorted(FANUC_G), ids=gname)
+def test_fanuc_fast_path_claims_or_declines_each_code(key):
+    """Fanuc: the code's block between two runs of simple lines; the fast path gives the full path's result,
+    and takes a run of a code it claims."""
+    from tests.fanuc.helpers import mill
+
+    machine = mill()
+    n = fastpath.MIN_RUN + 8
+    block = FANUC_BLOCKS.get(key, f"{gname(key)} X1. Y1. Z-1. R1.")
+    lines = "".join(f"G1 X{i % 7}.5 Y1. F100.\n" for i in range(n))
+    text = "%\nO1000\nG17 G40 G49 G80 G90 G21 G54\n" + lines + block + "\n" + lines + "M30\n%\n"
+
+    def run(fast):
+        it = interpret_text(text, machine, fast=fast)
+        try:
+            return [(s.kind, s.start, s.end, s.line) for s in it.segments()], [str(u) for u in it.unsupported]
+        except GcodeError as exc:
+            return ("error", exc.diagnostics[0].code), []
+
+    assert run(True) == run(False)
+    if FANUC_G[key].lanes["fastpath"] == "" and key != 800:
+        body = _there_and_back(block, ".", n)
+        text = "%\nO1000\nG17 G40 G49 G80 G90 G21 G54 F100.\nG0 X0. Y0.\n" + body + "M30\n%\n"
+        it = interpret_text(text, machine)
+        list(it)
+        assert it.fast_lines >= n - 1
