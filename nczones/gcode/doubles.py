@@ -53,13 +53,14 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import GcodeError
+from .codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from .expr import MAX_PARAMETER, TRIG_DEGREES, EvalError, atan_degrees, binary_op, unary_op
 from .lexer import magic_comment
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from .program import scan_oword
 from .shapes import LAYOUT, RUNS, shape_source, shaped
 
-__all__ = ["Declined", "DoublePath", "double_pass"]
+__all__ = ["CODES", "Declined", "DoublePath", "double_pass"]
 
 #: Motions the pass keeps (8 bytes per axis each) when it is run without ``on_window``: it keeps them all.
 MAX_MOTIONS = 2_000_000
@@ -69,10 +70,13 @@ WINDOW = 1 << 16
 #: Characters of the text the pass splits into lines at a time (a list of lines costs ~10x the text).
 PIECE = 1 << 20
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
-#: Integer G codes the pass follows, by modal group.
-_GROUPS = {0: "motion", 1: "motion", 80: "motion", 17: "plane", 18: "plane", 19: "plane", 21: "units",
-           40: "comp", 49: "tool", 90: "distance", 94: "feedmode",
-           54: "offset", 55: "offset", 56: "offset", 57: "offset", 58: "offset", 59: "offset"}
+#: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
+_GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
+                12: "offset"}
+_GROUPS = {k // 10: _GROUP_NAMES[LINUXCNC_G[k].group or 0] for k in sorted(claimed(LINUXCNC_G, LANE_DOUBLES))}
+
+#: The codes this lane claims and declines (the code table).
+CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
 _LETTERS = frozenset("GMFXYZ")

@@ -63,12 +63,19 @@ from typing import Any
 import numpy as np
 
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
+from .codes import LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from .interpreter import LEAN_M
 
-__all__ = ["run_with_fastpath", "MIN_RUN"]
+__all__ = ["CODES", "run_with_fastpath", "MIN_RUN"]
 
 #: M codes a simple line may carry (spindle and coolant; the interpreter's plain lane takes the same).
 _LEAN_M_CODES = np.array(sorted(LEAN_M), dtype=np.int64)
+#: The motion modes a run of simple lines may start in (the code table's fast-path claims, less the G81/G82
+#: hole lines, which _fast_cycle_run takes).
+_RUN_MOTIONS = frozenset({None} | (claimed(LINUXCNC_G, LANE_FASTPATH) - {810, 820}))
+
+#: The codes this lane claims and declines (the code table).
+CODES = LaneCodes(LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M)
 #: Shorter runs of simple lines are left to the full interpreter.
 MIN_RUN = 64
 _MAX_SCALE = 9
@@ -511,7 +518,7 @@ def _percent_cut(text: str) -> str | None:
 
 def _state_ok(it: Any) -> bool:
     ok = getattr(it, "fast_state_ok", None)  # what a dialect's interpreter adds (Fanuc: no cycle, transform)
-    return (not it.unsupported and it.motion in (None, 0, 10, 20, 30) and not it.comp_just_off
+    return (not it.unsupported and it.motion in _RUN_MOTIONS and not it.comp_just_off
             and not it.comp_on and not it.track and it.prerotation_xy is None  # no XY rotation (G10 L2 R) active
             and it.machine_at is None  # the machine is where the interpreter believes (G84 outside G17)
             and (ok is None or ok()))

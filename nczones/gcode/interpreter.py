@@ -56,6 +56,15 @@ from . import (  # defined in the package, which loads this module lazily
     DEFAULT_CHUNK_SIZE,
 )
 from .blocks import LANE_FULL, Block, Word
+from .codes import (
+    LANE_INTERPRETER,
+    LANE_PLAIN,
+    LINUXCNC_G,
+    LINUXCNC_M,
+    LaneCodes,
+    claimed,
+    modal_groups,
+)
 from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
 from .passes import PassGuard
@@ -82,6 +91,8 @@ __all__ = [
     "DEFAULT_ARC_TOLERANCE",
     "LINUXCNC_RADIUS_TOLERANCE",
     "MODAL_GROUP_NAMES",
+    "PLAIN_CODES",
+    "FULL_CODES",
 ]
 
 #: Grbl's arc rule as nczones takes it (``arc_tolerance = "grbl"``).  Grbl's gcode.c accepts an I/J/K arc when
@@ -107,27 +118,8 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59
 _WCS_BY_KEY = {540: "G54", 550: "G55", 560: "G56", 570: "G57", 580: "G58", 590: "G59",
                591: "G59.1", 592: "G59.2", 593: "G59.3"}
 
-# G codes keyed by 10 * number (G59.1 -> 591).
-GROUP_OF: dict[int, int] = {}
-for _g, _codes in {
-    0: (40, 100, 280, 281, 300, 301, 520, 530, 920, 921, 922, 923),
-    1: (0, 10, 20, 30, 330, 331, 382, 383, 384, 385, 730, 760, 800, 810, 820, 830, 840, 850,
-        860, 870, 880, 890, 50, 51, 52, 53, 62, 700, 710, 711, 712, 720, 721, 722),
-    2: (170, 180, 190, 171, 181, 191),
-    3: (900, 910),
-    4: (901, 911),
-    5: (930, 940, 950),
-    6: (200, 210),
-    7: (400, 410, 420, 411, 421),
-    8: (430, 431, 432, 490),
-    10: (980, 990),
-    12: (540, 550, 560, 570, 580, 590, 591, 592, 593),
-    13: (610, 611, 640),
-    14: (960, 970),
-    15: (70, 80),
-}.items():
-    for _c in _codes:
-        GROUP_OF[_c] = _g
+# G codes keyed by 10 * number (G59.1 -> 591); their modal groups from the dialect's code table.
+GROUP_OF: dict[int, int] = modal_groups(LINUXCNC_G)
 
 #: Names of the modal groups the report mentions when the program never set them.
 MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90/G91)",
@@ -187,13 +179,14 @@ _INTEGER_LETTERS = ("H", "L", "T")
 
 _HARMLESS_M = {0, 1, 3, 4, 5, 7, 8, 9, 19, 48, 49, 50, 51, 52, 53, 60, 62, 63, 64, 65, 66, 67, 68,
                70, 71, 72}
-_M_GROUP = {0: 4, 1: 4, 2: 4, 30: 4, 60: 4, 6: 6, 61: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8,
-            48: 9, 49: 9, 50: 9, 51: 9, 52: 9, 53: 9, 62: 5, 63: 5, 64: 5, 65: 5, 66: 5, 67: 5,
-            68: 5, 70: 10, 71: 10, 72: 10, 73: 10}
+_M_GROUP = modal_groups(LINUXCNC_M)
 _NO_PLAN = object()
 #: Spindle and coolant M codes: no effect on motion, and a plain move may carry one (Interpreter._lean), which
 #: then keeps the spindle direction LinuxCNC's G84/G86/G33 checks read.
-LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
+LEAN_M = claimed(LINUXCNC_M, LANE_PLAIN)
+#: The codes the plain lane and the full interpreter claim and decline (the code table).
+PLAIN_CODES = LaneCodes(LANE_PLAIN, LINUXCNC_G, LINUXCNC_M)
+FULL_CODES = LaneCodes(LANE_INTERPRETER, LINUXCNC_G, LINUXCNC_M)
 _CYCLES = {730, 810, 820, 830, 840, 850, 860, 890}
 _AXIS_USERS = {100: "G10", 280: "G28", 300: "G30", 920: "G92", 520: "G52"}
 #: Letters whose use LinuxCNC checks per block (Interpreter._check_word_users).

@@ -44,6 +44,7 @@ from ...blockskip import skipped_switches
 from ...errors import Diagnostic, GcodeError, SourceSpan
 from ...machine import FanucSettings
 from ..blocks import LANE_FULL
+from ..codes import FANUC_CANCEL_CYCLE_G, FANUC_CYCLE_G
 from ..expr import EvalError
 from ..lexer import make_span, plain_block, plain_block_of, scan_plain
 from ..program import (
@@ -190,8 +191,8 @@ class _Frame:
 
 #: Literal G codes of a block that change how its words are read.
 #: G84.2/G84.3 (rigid tapping) are canned cycles too: their K is the repeat count.
-_CYCLE_G = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89, Fraction("84.2"), Fraction("84.3")))
-_CANCEL_CYCLE_G = frozenset((0, 1, 2, 3, 80))
+_CYCLE_G = FANUC_CYCLE_G
+_CANCEL_CYCLE_G = FANUC_CANCEL_CYCLE_G
 _LATHE_PQ = frozenset((70, 71, 72, 73, 74, 75, 76))
 #: Lathe threading codes whose Q is the start angle shift (0.001 deg, without a decimal point), not a length:
 #: G32 and G92 (system A), G33 and G78 (system B).
