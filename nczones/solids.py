@@ -17,7 +17,7 @@ Codes ZN160-ZN164 (``specs/machine-file.md``, "Tools and fixtures as solids").
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
 from types import MappingProxyType
@@ -25,6 +25,8 @@ from typing import Any
 
 from .exact import format_decimal
 from .machine import SECTION_PARSERS, Machine, as_written, read_number
+from .zones import BoxZone, PolygonZone, SteppedZone
+from .zones.kinds import KindTable
 
 __all__ = ["Part", "FixtureBox", "FixtureCylinder", "Solids", "machine_solids"]
 
@@ -84,6 +86,9 @@ class Solids:
     tools: Mapping[int, tuple[Part, ...]]
     spindle: tuple[Part, ...]
     fixtures: tuple[Fixture, ...]
+    #: forbidden zones of a kind that is not a fixture solid (:data:`ZONE_FIXTURE`): not checked against the
+    #: tool solids, so the verdict cannot be ``safe``
+    unmodelled: tuple[str, ...] = ()
 
     def parts_for(self, tool: int | None) -> tuple[Part, ...] | None:
         """The parts that move with the spindle when tool ``tool`` is active (None: not known)."""
@@ -93,21 +98,46 @@ class Solids:
 
 
 def machine_solids(machine: Machine) -> Solids | None:
-    """The machine's solids, or None when it declares no tool or spindle solids (nothing to prove)."""
+    """The machine's solids, or None when it declares no tool or spindle solids (nothing to prove).
+
+    Forbidden zones become fixtures through :data:`ZONE_FIXTURE` (a forbid box is a fixture box); a forbidden
+    zone of a kind without an entry there is named in ``unmodelled``, and the verdict cannot be ``safe``."""
     sec = machine.sections
     tools = sec.get("tools") or {}
     spindle = sec.get("spindle") or ()
     if not tools and not spindle:
         return None
     fixtures: list[Fixture] = list(sec.get("fixtures") or ())
-    from .zones import BoxZone
-
+    unmodelled: list[str] = []
     for z in machine.allowed.zones:
-        if isinstance(z, BoxZone) and z.forbid:
-            lim = {a: (lo, hi) for a, lo, hi in z.limits}
-            x, y, zz = lim.get("X", (None, None)), lim.get("Y", (None, None)), lim.get("Z", (None, None))
-            fixtures.append(FixtureBox(z.name, x[0], x[1], y[0], y[1], zz[0], zz[1]))
-    return Solids(MappingProxyType(dict(tools)), tuple(spindle), tuple(fixtures))
+        if z.forbid:
+            fixture = ZONE_FIXTURE(z)
+            if fixture is None:
+                unmodelled.append(z.name)
+            else:
+                fixtures.append(fixture)
+    return Solids(MappingProxyType(dict(tools)), tuple(spindle), tuple(fixtures), tuple(unmodelled))
+
+
+def _no_fixture(zone: Any) -> Fixture | None:
+    return None
+
+
+#: A forbidden zone as a fixture solid, per zone kind.  Fallback: none (the zone is not checked against the
+#: tool solids, and a run that has them is ``unknown``: :attr:`Solids.unmodelled`).
+ZONE_FIXTURE: KindTable[Callable[[Any], Fixture | None]] = KindTable("solids.zone_fixture", fallback=_no_fixture)
+
+
+# A forbidden stepped table or polygon is not a fixture solid yet (issue 39: prisms): named, never skipped.
+ZONE_FIXTURE.set(SteppedZone, _no_fixture)
+ZONE_FIXTURE.set(PolygonZone, _no_fixture)
+
+
+@ZONE_FIXTURE.register(BoxZone)
+def _box_fixture(z: BoxZone) -> Fixture | None:
+    lim = {a: (lo, hi) for a, lo, hi in z.limits}
+    x, y, zz = lim.get("X", (None, None)), lim.get("Y", (None, None)), lim.get("Z", (None, None))
+    return FixtureBox(z.name, x[0], x[1], y[0], y[1], zz[0], zz[1])
 
 
 # --------------------------------------------------------------------------- reading

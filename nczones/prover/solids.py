@@ -447,6 +447,11 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     violations = result.violations + tuple(checker.violations[:max(0, options.max_violations
                                                                   - len(result.violations))])
     reasons = result.reasons + tuple(checker.reasons)
+    if solids.unmodelled:
+        reasons += (Reason(f"forbidden zone{'s' if len(solids.unmodelled) > 1 else ''} "
+                           f"{', '.join(f'`{n}`' for n in solids.unmodelled)} of a kind the tool solids are not "
+                           "checked against (only boxes and [[fixtures]] are solids): the tip is proved, the holder "
+                           "is not", None, None, "VF210"),)
     if options.ranges(machine) and solids.fixtures:
         reasons += (Reason("parameter ranges do not move the tool solids yet: the solids were checked at the "
                            "nominal offsets and tool lengths only", None, None, "VF212"),)

@@ -58,6 +58,17 @@ def test_example_holder_clears_vise_with_clearance():
     assert clear[("holder (Ø63 × 60 at 40..100 above the tip)", "vise")] == Fraction(17, 2)
 
 
+def test_a_forbidden_polygon_is_not_a_solid_fixture_and_the_verdict_says_so():
+    """Only boxes and [[fixtures]] are fixture solids: a forbidden polygon far from the tip's path could still
+    meet the holder, so it is named and the verdict is unknown (VF210), never safe."""
+    text = (PROGRAMS / "holder_clears_vise.ngc").read_text(encoding="utf-8")
+    polygon = ('\n[[zones]]\nname = "clamp plate"\nkind = "polygon"\nforbid = true\nplane = ["X", "Y"]\n'
+               'vertices = [["500", "500"], ["520", "500"], ["520", "520"]]\n')
+    r = verify_text(text, parse_machine(MACHINE.read_text(encoding="utf-8") + polygon))
+    assert r.verdict.label == "unknown"
+    assert any(x.code == "VF210" and "`clamp plate`" in x.message for x in r.reasons), r.reasons
+
+
 HEADER = "G21 G90 G17 G54\nT1 M6\nG43 H1\n"
 
 
