@@ -538,7 +538,9 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
                           options.run_limits())
     result = prove(corners.watch(with_text(run)), machine, options, file=run.file, profile=profile)
     if not result.interrupted:
-        result = replace(result, reasons=result.reasons + tuple(corners.finish(v.block for v in result.violations)))
+        upto = max(v.block for v in result.violations) if result.truncated and result.violations else None
+        result = replace(result, reasons=result.reasons + tuple(corners.finish((v.block for v in result.violations),
+                                                                              upto)))
         result = replace(result, reasons=result.reasons + _solids_blend_reasons(machine, run))
     if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
         report(last_reported[0])

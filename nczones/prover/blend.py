@@ -125,17 +125,20 @@ class CornerCheck:
             if len(self.pending) >= 4096:
                 self._flush()
 
-    def finish(self, violating: Iterable[int] = ()) -> list[Reason]:
+    def finish(self, violating: Iterable[int] = (), upto: int | None = None) -> list[Reason]:
         """The reasons (VF208) after the last chunk; a corner next to a ``violating`` block (index) is left
-        out: the verdict is ``unsafe`` there anyway and the violation names the block."""
+        out: the verdict is ``unsafe`` there anyway and the violation names the block.  ``upto``: the last
+        block the proof examined when it stopped at its violation limit; corners after it are left out too
+        (how far the motion was read past it depends on how it was batched, and the verdict is ``unsafe``)."""
         self._flush()
         self._close_stretch()
         bad = set(violating)
-        if bad:
-            kept = [(r, blocks) for r, blocks in zip(self.reasons, self._blocks) if bad.isdisjoint(blocks)]
+        if bad or upto is not None:
+            kept = [(r, blocks) for r, blocks in zip(self.reasons, self._blocks)
+                    if bad.isdisjoint(blocks) and (upto is None or max(blocks) <= upto)]
             self.reasons = [r for r, _b in kept]
             self._blocks = [b for _r, b in kept]
-        if self.more:
+        if self.more and upto is None:
             self.reasons.append(Reason(f"{BLEND_CODE}: {self.more} more blended corner(s) could not be proved inside "
                                        "the allowed set", None, None, BLEND_CODE))
         return self.reasons

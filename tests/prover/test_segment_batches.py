@@ -102,8 +102,14 @@ def by_columns():
 
 
 def outcome(r):
+    """Verdict, violating blocks and reasons.  Beside violations (``unsafe``) the reasons are left out: how
+    far past its violation limit a run reads, and whether a corner (VF208) or a spiral's solver query near a
+    violation ends in a reason, depends on the batching, while the verdict is ``unsafe`` either way (found
+    by this test after issue 35; on the old main too for the spirals: an unknown reason at one block beside
+    two violations).  Where the verdict is ``safe`` or ``unknown`` every reason is compared."""
+    unsafe = r.verdict.label == "unsafe"
     return (r.verdict.label, tuple(sorted(v.block for v in r.violations)),
-            tuple(sorted((x.code, x.block) for x in r.reasons)))
+            () if unsafe else tuple(sorted((x.code, x.block) for x in r.reasons)))
 
 
 def t(x):
