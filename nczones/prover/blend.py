@@ -62,6 +62,31 @@ F0 = Fraction(0)
 Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
 
 
+def _range_widening(ranges: Sequence[ParamRange], axes: Sequence[str], tool_axis: str | None) -> dict[str, Fraction]:
+    """How far the parameter ranges move a position, per axis (a sound bound: the sum of the ranges' sizes
+    that act on the axis).
+
+    >>> from nczones.prover.result import ParamRange
+    >>> r = [ParamRange("G54.Y", Fraction(-1), Fraction(1), (Fraction(-1), Fraction(1))),
+    ...      ParamRange("H1", Fraction(-2), Fraction(1), (Fraction(198), Fraction(201)))]
+    >>> _range_widening(r, ("X", "Y", "Z"), "Z")
+    {'X': Fraction(0, 1), 'Y': Fraction(1, 1), 'Z': Fraction(2, 1)}
+    """
+    out = {a: F0 for a in axes}
+    for r in ranges:
+        size = max(abs(r.lo), abs(r.hi))
+        prefix, _, axis = r.name.partition(".")
+        if axis in out and prefix.upper() != "H":
+            on: Sequence[str] = (axis,)
+        elif r.name.upper().startswith("H") and not axis and tool_axis in out:
+            on = (tool_axis,)
+        else:
+            on = tuple(axes)
+        for a in on:
+            out[a] += size
+    return out
+
+
 class CornerCheck:
     """Follows a run's motion (wrap the chunks with :meth:`watch`) and proves its blended corners.
 
@@ -76,8 +101,9 @@ class CornerCheck:
         self.margin = margin
         self.axes = machine.axis_names
         self.dogleg = machine.rapid_mode is RapidMode.DOGLEG
-        # parameter ranges move every position by at most their size: the boxes grow by that much
-        self.widen = sum((max(abs(r.lo), abs(r.hi)) for r in ranges), F0)
+        # parameter ranges move positions by at most their size, each on its own axis (G54.X, home.X, start.X:
+        # X; H: the tool axis; any other name: every axis): the boxes grow by that much there
+        self.widen_axis = _range_widening(ranges, machine.axis_names, machine.allowed.tool_axis)
         self.modes = modes
         self.zones = self.allowed.zones
         # the axes some zone constrains: screening boxes are computed on them only (others stay 0)
@@ -429,9 +455,9 @@ class CornerCheck:
 
     def _fits(self, box: Box, tls: Iterable[Fraction], extra: Fraction, zones: Any = None) -> bool:
         self.tests += 1
-        w = self.widen
-        lo = {a: x - w for a, x in zip(self.axes, box[0])}
-        hi = {a: x + w for a, x in zip(self.axes, box[1])}
+        w = self.widen_axis
+        lo = {a: x - w[a] for a, x in zip(self.axes, box[0])}
+        hi = {a: x + w[a] for a, x in zip(self.axes, box[1])}
         return all(box_fits(self.allowed, lo, hi, self.margin + extra, tl, self.zones if zones is None else zones)
                    for tl in set(tls))
 

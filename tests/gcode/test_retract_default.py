@@ -15,6 +15,7 @@ from nczones.prover import verify_text
 
 MACHINE = """
 [machine]
+path_mode = "G61"  # exact path: this test is not about corner blending (tests/prover/test_blending.py is)
 axes = ["X", "Y", "Z"]
 pulse = "0.0001"
 dialect = "{dialect}"

@@ -22,6 +22,7 @@ from nczones.prover import verify_text
 
 MACHINE = parse_machine('''
 [machine]
+path_mode = "G61"  # exact path: this test is not about corner blending (tests/prover/test_blending.py is)
 axes = ["X", "Y", "Z"]
 [machine.rapid]
 X = "10000"

@@ -15,6 +15,7 @@ from nczones.prover import Verdict, verify_text
 #: allowed: Z >= -40 for X <= 5, only Z >= -25 for 5 < X <= 50 (a stepped table), X/Y within +-50
 MACHINE = parse_machine("""
 [machine]
+path_mode = "G61"  # exact path: this test is not about corner blending (tests/prover/test_blending.py is)
 axes = ["X", "Y", "Z"]
 [machine.rapid]
 X = "1000"

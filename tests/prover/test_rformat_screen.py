@@ -180,6 +180,7 @@ max = {{ X = "{forbid.split(',')[2]}", Y = "{forbid.split(',')[3]}" }}
 """
     return parse_machine(f"""
 [machine]
+path_mode = "G61"  # exact path: this test is not about corner blending (tests/prover/test_blending.py is)
 axes = ["X", "Y", "Z"]
 dialect = "{dialect}"
 [machine.rapid]
