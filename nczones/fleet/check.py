@@ -371,6 +371,7 @@ def _measured_executor(options: CheckOptions, summary: CheckSummary) -> Any:
     measured, seconds, rest = summary.probe
     workers = min(options.workers or os.cpu_count() or 1, os.cpu_count() or 1)
     serial, cluster = projected_seconds(seconds / max(1, measured), rest, workers)
+    executor: Any
     if rest and cluster < CLUSTER_MUST_WIN * serial:
         executor = local_cluster(options.workers, attempts=options.attempts)
         why = "a local cluster is projected to win"
