@@ -56,6 +56,7 @@ from .exact import (
     sin_cos_interval,
 )
 from .exact import atan_interval as atan_point
+from .motion import Developed
 
 if TYPE_CHECKING:
     from .motion import Segment
@@ -215,10 +216,8 @@ def developed_arc(z0: Fraction, c0: Fraction, z1: Fraction, c1: Fraction, cylind
 
 def cylinder_of(seg: Segment) -> tuple[str, str, Fraction] | None:
     """``(linear axis, rotary axis, cylinder radius)`` of a motion made in G07.1 mode, else None."""
-    extra = dict(seg.extra)
-    if "cylinder_radius" not in extra:
-        return None
-    return str(extra["linear_axis"]), str(extra["rotary_axis"]), Fraction(extra["cylinder_radius"])  # type: ignore[call-overload]
+    d = seg.payload(Developed)
+    return None if d is None else (d.linear_axis, d.rotary_axis, d.cylinder_radius)
 
 
 def developed_arc_of(seg: Segment) -> DevelopedArc:

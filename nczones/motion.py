@@ -37,7 +37,7 @@ import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from .errors import InvalidArgument, SourceSpan
 
@@ -45,7 +45,8 @@ if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to t
     import numpy as np
 
 __all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "PathMode", "arc_plane_axes",
-           "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation"]
+           "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation", "Payload", "Developed",
+           "TipOffset", "SplineCurve", "PolarData", "tip_offset"]
 
 
 class SegmentKind(enum.IntEnum):
@@ -54,7 +55,7 @@ class SegmentKind(enum.IntEnum):
     RAPID = 2  # G0 and derived rapids; expanded by the machine's rapid_mode downstream
     DWELL = 3  # G4: no motion, start == end
     DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.cylinder
-    SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (Segment.extra), see nczones.nurbs
+    SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (a SplineCurve in Segment.extra), see nczones.nurbs
     POLAR = 6  # G01/G02/G03 in polar coordinate interpolation (G12.1): a plane path in machine X/C, see nczones.polar
 
 
@@ -209,6 +210,73 @@ class ProgramFrame:
 
 
 @dataclass(frozen=True, slots=True)
+class Developed:
+    """A motion made in cylindrical interpolation (G07.1): the axes and radius of the developed surface."""
+
+    linear_axis: str
+    rotary_axis: str
+    cylinder_radius: Fraction
+
+
+@dataclass(frozen=True, slots=True)
+class TipOffset:
+    """Tool offsets off the tool axis (a lathe's X offset): ``point = "tip"`` zones see machine − offset."""
+
+    offsets: tuple[tuple[str, Fraction], ...]
+
+
+@dataclass(frozen=True, slots=True)
+class SplineCurve:
+    """The exact clamped NURBS of a ``SegmentKind.SPLINE`` (control points in machine coordinates)."""
+
+    degree: int
+    knots: tuple[Fraction, ...]
+    control: tuple[tuple[Fraction, ...], ...]
+    weights: tuple[Fraction, ...]
+    source: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class PolarData:
+    """A motion made in polar coordinate interpolation (G12.1): its plane path and how it maps to X/C.
+
+    ``start``/``end`` are the programmed plane points, ``turns`` the whole turns of C at the start,
+    ``x_off``/``c_entry`` the linear axis's offset and C at entry, ``grid`` the (linear, rotary) output
+    grid, ``arc`` whether it is a G02/G03 with ``centre`` (I/J) or ``radius`` (R).
+    """
+
+    start: tuple[Fraction, Fraction]
+    end: tuple[Fraction, Fraction]
+    turns: int
+    x_off: Fraction
+    c_entry: Fraction
+    linear_axis: str
+    rotary_axis: str
+    grid: tuple[Fraction, Fraction]
+    arc: bool
+    centre: tuple[Fraction, Fraction] | None = None
+    radius: Fraction | None = None
+
+
+def tip_offset(extra: tuple[Payload, ...]) -> dict[str, Fraction]:
+    """The tool offsets off the tool axis a segment's ``extra`` carries (a lathe's X offset; :class:`TipOffset`):
+    ``point = "tip"`` zones see ``machine - offset`` there.
+
+    >>> tip_offset((TipOffset((("X", Fraction(3)),)),)), tip_offset(())
+    ({'X': Fraction(3, 1)}, {})
+    """
+    for p in extra:
+        if type(p) is TipOffset:
+            return dict(p.offsets)
+    return {}
+
+
+#: What a segment may carry besides its geometry (``Segment.extra``), one value of each type at most.
+Payload = Developed | TipOffset | SplineCurve | PolarData
+_P = TypeVar("_P", Developed, TipOffset, SplineCurve, PolarData)
+
+
+@dataclass(frozen=True, slots=True)
 class Segment:
     """One motion in machine coordinates.
 
@@ -251,6 +319,10 @@ class Segment:
         after ``G43 H1`` with the machine file's length, ``()`` after a length
         the program wrote itself (``G10 L1``), whatever ``tool_register``
         says.  Empty when dependencies are not tracked.
+    extra : tuple of Payload
+        Typed data a motion kind or mode needs besides the fields above, read with :meth:`payload`:
+        :class:`SplineCurve` (G5 family), :class:`Developed` (G07.1), :class:`PolarData` (G12.1),
+        :class:`TipOffset` (a lathe tool's offsets off the tool axis).
     frame : ProgramFrame or None
         The program's coordinate frame at the block (work offset, G92/G52, rotation, diameter, units, tool
         offsets), for reports of a violation's point in program coordinates; None when the producer did
@@ -276,12 +348,25 @@ class Segment:
     deps_start: tuple[tuple[str, ...], ...] = ()
     deps_end: tuple[tuple[str, ...], ...] = ()
     deps_tool: tuple[str, ...] = ()
-    extra: tuple[tuple[str, object], ...] = field(default=())
+    extra: tuple[Payload, ...] = field(default=())
     frame: ProgramFrame | None = field(default=None, compare=False)
 
     @property
     def line(self) -> int | None:
         return None if self.span is None else self.span.line
+
+    def payload(self, kind: type[_P]) -> _P | None:
+        """The payload of type ``kind`` the segment carries in ``extra`` (None if it carries none).
+
+        >>> seg = Segment(SegmentKind.LINE, (Fraction(0),), (Fraction(1),), ("X",),
+        ...               extra=(TipOffset((("X", Fraction(2)),)),))
+        >>> seg.payload(TipOffset).offsets, seg.payload(Developed) is None
+        ((('X', Fraction(2, 1)),), True)
+        """
+        for p in self.extra:
+            if type(p) is kind:
+                return p
+        return None
 
     def axis_index(self, name: str) -> int:
         return self.axes.index(name)

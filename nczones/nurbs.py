@@ -254,5 +254,9 @@ def spline_curve(seg: "Segment") -> Nurbs:
     The interpreter stores the curve in the segment's ``extra``: ``degree``,
     ``knots``, ``control`` points and ``weights``.
     """
-    e = dict(seg.extra)
-    return Nurbs(e["degree"], e["knots"], e["control"], e["weights"])  # type: ignore[arg-type]
+    from .motion import SplineCurve
+
+    e = seg.payload(SplineCurve)
+    if e is None:
+        raise ValueError("not a spline: the segment carries no SplineCurve")
+    return Nurbs(e.degree, e.knots, e.control, e.weights)

@@ -40,7 +40,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from .exact import (
     Interval,
@@ -51,6 +51,7 @@ from .exact import (
     round_up_scaled,
     sin_cos_interval,
 )
+from .motion import PolarData
 
 if TYPE_CHECKING:
     from .motion import Segment
@@ -385,12 +386,9 @@ def polar_move(p0: Point, p1: Point, turns: int, x_off: Fraction, c_entry: Fract
     return PolarMove(p0, p1, turns, x_off, c_entry, pa)
 
 
-def polar_of(seg: Segment) -> dict[str, Any] | None:
+def polar_of(seg: Segment) -> PolarData | None:
     """The polar data a segment made in G12.1 mode carries in ``Segment.extra`` (``None`` otherwise)."""
-    extra = dict(seg.extra)
-    if "polar_start" not in extra:
-        return None
-    return extra
+    return seg.payload(PolarData)
 
 
 def polar_move_of(seg: Segment) -> PolarMove:
@@ -398,8 +396,5 @@ def polar_move_of(seg: Segment) -> PolarMove:
     e = polar_of(seg)
     if e is None:
         raise ValueError("not a motion made in polar coordinate interpolation (G12.1)")
-    centre = e.get("polar_centre")
-    radius = e.get("polar_radius")
-    return polar_move(e["polar_start"], e["polar_end"], int(e["polar_turns"]), Fraction(e["polar_x_off"]),
-                      Fraction(e["polar_c_entry"]), clockwise=seg.clockwise, centre=centre, radius=radius,
-                      arc=bool(e.get("polar_arc")))
+    return polar_move(e.start, e.end, e.turns, e.x_off, e.c_entry, clockwise=seg.clockwise, centre=e.centre,
+                      radius=e.radius, arc=e.arc)

@@ -67,7 +67,7 @@ from typing import Any, Generic, Protocol, TypeVar
 
 from .errors import Diagnostic, InvalidArgument, MachineFileError, close_matches
 from .machine import SECTION_PARSERS, Machine, as_written, read_number
-from .motion import Segment, SegmentKind
+from .motion import Segment, SegmentKind, TipOffset
 
 __all__ = [
     "RecoveryVariant",
@@ -379,11 +379,11 @@ class RecoveryLeg(Generic[T]):
                        extra=tip_offsets(like) if like else ())
 
 
-def tip_offsets(seg: Segment) -> tuple[tuple[str, object], ...]:
-    """The ``tip_offset`` entry of a motion's ``extra`` (a lathe tool offset off the tool axis; tool-tip zones
+def tip_offsets(seg: Segment) -> tuple[TipOffset, ...]:
+    """The :class:`~nczones.motion.TipOffset` of a motion's ``extra`` (a lathe tool offset off the tool axis; tool-tip zones
     see the machine position minus it), which every recovery leg from a break in that motion carries too:
     the broken tool's tip, and the replacement's, which differs from it on the tool axis only."""
-    return tuple(e for e in seg.extra if e[0] == "tip_offset")
+    return tuple(e for e in seg.extra if type(e) is TipOffset)
 
 
 def recovery_legs(cfg: ToolChangeConfig, machine: Machine, break_point: Sequence[Fraction],

@@ -44,8 +44,8 @@ from typing import Any
 from .errors import Diagnostic, InputError, InvalidArgument
 from .exact import format_decimal, parse_rational, to_float
 from .machine import Machine, RapidMode, load_machine
-from .motion import Segment, SegmentKind, arc_path_float
-from .zones import tip_offset, tip_shifted
+from .motion import Segment, SegmentKind, arc_path_float, tip_offset
+from .zones import tip_shifted
 
 __all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "ReplayError",
            "IRRATIONAL_TOLERANCE_MM"]
@@ -228,7 +228,7 @@ def _float_polar_distance(p: Point, seg: Segment) -> float:
     e = polar_of(seg)
     if e is None:
         return math.inf
-    ic = seg.axes.index(str(e["polar_rotary_axis"]))
+    ic = seg.axes.index(e.rotary_axis)
     n, lo, hi = 512, Fraction(0), Fraction(1)
     pts = polar_float_points(seg, n)
     for _ in range(4):  # the best sample, then 256 samples between its neighbours, three times
@@ -236,7 +236,7 @@ def _float_polar_distance(p: Point, seg: Segment) -> float:
         k0, k1 = max(best - 1, 0), min(best + 1, len(pts) - 1)
         lo, hi = lo + (hi - lo) * Fraction(k0, n), lo + (hi - lo) * Fraction(k1, n)
         n = 256
-        pts = polar_float_points(seg, n, lo, hi, pts[k0][ic] - float(e["polar_c_entry"]))
+        pts = polar_float_points(seg, n, lo, hi, pts[k0][ic] - float(e.c_entry))
     return min(max(abs(a - b) for a, b in zip(pt, q)) for pt in pts)
 
 
@@ -298,27 +298,47 @@ def _concrete_machine(machine: Machine, params: dict[str, Fraction]) -> tuple[Ma
 def _on_motion(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
     if tuple(p) in (tuple(seg.start), tuple(seg.end)):
         return True
-    if seg.kind is SegmentKind.LINE or (seg.kind is SegmentKind.RAPID and machine.rapid_mode is RapidMode.LINEAR):
-        return on_line(p, seg.start, seg.end) is not None
-    if seg.kind is SegmentKind.RAPID:
-        rates = tuple(machine.axis(a).rapid_mm_min for a in machine.axis_names)
-        return on_dogleg(p, seg.start, seg.end, rates) is not None
-    if seg.kind is SegmentKind.SPLINE and parameter is not None:
-        from .nurbs import Nurbs
+    return _ON_MOTION[seg.kind](p, seg, machine, exact, parameter)
 
-        e = dict(seg.extra)
-        curve = Nurbs(e["degree"], e["knots"], e["control"], e["weights"])  # type: ignore[arg-type]
-        lo, hi = curve.domain
-        return tuple(curve.point(lo + parameter * (hi - lo))) == tuple(p)
-    if exact:
-        return seg.kind is SegmentKind.ARC and on_arc(p, seg)
-    if seg.kind is SegmentKind.ARC:
-        return _float_arc_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
-    if seg.kind is SegmentKind.DEVELOPED_ARC:
-        return _float_developed_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
-    if seg.kind is SegmentKind.POLAR:
-        return _float_polar_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
-    return False
+
+def _on_straight(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
+    if seg.kind is SegmentKind.LINE or machine.rapid_mode is RapidMode.LINEAR:
+        return on_line(p, seg.start, seg.end) is not None
+    rates = tuple(machine.axis(a).rapid_mm_min for a in machine.axis_names)
+    return on_dogleg(p, seg.start, seg.end, rates) is not None
+
+
+def _on_spline(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
+    if parameter is None:
+        return False
+    from .nurbs import spline_curve
+
+    curve = spline_curve(seg)
+    lo, hi = curve.domain
+    return tuple(curve.point(lo + parameter * (hi - lo))) == tuple(p)
+
+
+def _on_arc(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
+    return on_arc(p, seg) if exact else _float_arc_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
+
+
+def _on_float_curve(distance: Callable[[Point, Segment], float]) -> Callable[..., bool]:
+    """A curve whose points are irrational in general: on it within the tolerance, never exactly."""
+    return lambda p, seg, machine, exact, parameter: not exact and distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
+
+
+#: Whether a counterexample's point lies on a motion, per motion kind (docs/design.md §10 "How to add a
+#: motion kind"); the segment's start and end are on every kind.
+_ON_MOTION: dict[SegmentKind, Callable[[Point, Segment, Machine, bool, Fraction | None], bool]] = {
+    SegmentKind.LINE: _on_straight,
+    SegmentKind.RAPID: _on_straight,
+    SegmentKind.DWELL: lambda p, seg, machine, exact, parameter: False,
+    SegmentKind.ARC: _on_arc,
+    SegmentKind.SPLINE: _on_spline,
+    SegmentKind.DEVELOPED_ARC: _on_float_curve(_float_developed_distance),
+    SegmentKind.POLAR: _on_float_curve(_float_polar_distance),
+}
+REPLAYED_KINDS = frozenset(_ON_MOTION)
 
 
 def _recovery_legs(v: Mapping[str, Any], seg: Segment, segs: list[Segment], machine: Machine,

@@ -57,9 +57,9 @@ def developed_arc_positions(seg: Segment, pulses: tuple[Fraction, ...], p0: tupl
     ``pulses`` are the machine's pulse lengths, ``p0`` where the controller
     stands (pulses).  The last row is the rounded end point of ``seg``.
 
-    >>> from nczones.motion import Segment, SegmentKind
+    >>> from nczones.motion import Developed, Segment, SegmentKind
     >>> F = Fraction
-    >>> ex = (("cylinder_radius", F(10)), ("linear_axis", "Z"), ("rotary_axis", "C"))
+    >>> ex = (Developed("Z", "C", F(10)),)
     >>> seg = Segment(SegmentKind.DEVELOPED_ARC, (F(0), F(0)), (F(2), F(0)), ("Z", "C"),
     ...               clockwise=True, radius=F(1), extra=ex)
     >>> pos = developed_arc_positions(seg, (F(1, 1000), F(1, 1000)), (0, 0))

@@ -31,12 +31,11 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import Any
 
 import numpy as np
 
 from ..errors import InvalidArgument
-from ..motion import Segment
+from ..motion import PolarData, Segment
 from .cylindrical import join_steps
 from .pulses import round_pulse
 
@@ -50,31 +49,32 @@ class _Path:
     """The plane path of one segment in doubles."""
 
     def __init__(self, seg: Segment):
-        e: dict[str, Any] = dict(seg.extra)
-        if "polar_start" not in e:
+        e = seg.payload(PolarData)
+        if e is None:
             raise InvalidArgument("not a motion made in polar coordinate interpolation (G12.1)")
-        (x0, y0), (x1, y1) = e["polar_start"], e["polar_end"]
+        (x0, y0), (x1, y1) = e.start, e.end
         self.p0 = (float(x0), float(y0))
         self.p1 = (float(x1), float(y1))
-        self.x_off = float(e["polar_x_off"])
-        self.c_entry = float(e["polar_c_entry"])
-        turns = int(e["polar_turns"])
+        self.x_off = float(e.x_off)
+        self.c_entry = float(e.c_entry)
+        turns = e.turns
         self.theta0 = math.degrees(math.atan2(self.p0[1], self.p0[0])) + 360.0 * turns
-        self.ix = seg.axes.index(str(e["polar_linear_axis"]))
-        self.ic = seg.axes.index(str(e["polar_rotary_axis"]))
-        self.arc = bool(e.get("polar_arc"))
+        self.ix = seg.axes.index(e.linear_axis)
+        self.ic = seg.axes.index(e.rotary_axis)
+        self.arc = e.arc
         if not self.arc:
             return
         cw = seg.clockwise
-        if e.get("polar_centre") is not None:
-            cx, cy = (float(v) for v in e["polar_centre"])
+        if e.centre is not None:
+            cx, cy = (float(v) for v in e.centre)
             a0 = math.atan2(self.p0[1] - cy, self.p0[0] - cx)
             a1 = math.atan2(self.p1[1] - cy, self.p1[0] - cx)
             d = (a0 - a1) if cw else (a1 - a0)
             d %= 2 * math.pi
             sweep = d if d > 1e-15 else 2 * math.pi
         else:
-            r = float(e["polar_radius"])
+            assert e.radius is not None  # an arc has I/J or R
+            r = float(e.radius)
             dx, dy = self.p1[0] - self.p0[0], self.p1[1] - self.p0[1]
             chord = math.hypot(dx, dy)
             right = (cw and r > 0) or (not cw and r < 0)
@@ -120,11 +120,9 @@ def _rows(path: _Path, seg: Segment, pulses: tuple[Fraction, ...], p0: tuple[int
 def polar_positions(seg: Segment, pulses: tuple[Fraction, ...], p0: tuple[int, ...]) -> np.ndarray:
     """The commanded pulse positions after each step of a polar move (``(steps, axes)`` int64).
 
-    >>> from nczones.motion import Segment, SegmentKind
+    >>> from nczones.motion import PolarData, Segment, SegmentKind
     >>> F = Fraction
-    >>> ex = (("polar_start", (F(10), F(0))), ("polar_end", (F(10), F(10))), ("polar_turns", 0),
-    ...       ("polar_x_off", F(0)), ("polar_c_entry", F(0)), ("polar_linear_axis", "X"),
-    ...       ("polar_rotary_axis", "C"), ("polar_grid", (F(1, 1000), F(1, 1000))), ("polar_arc", False))
+    >>> ex = (PolarData((F(10), F(0)), (F(10), F(10)), 0, F(0), F(0), "X", "C", (F(1, 1000), F(1, 1000)), False),)
     >>> seg = Segment(SegmentKind.POLAR, (F(10), F(0)), (F("14.142"), F(45)), ("X", "C"), extra=ex)
     >>> pos = polar_positions(seg, (F(1, 1000), F(1, 1000)), (10000, 0))
     >>> pos[-1].tolist(), int(abs(pos[1:] - pos[:-1]).max())

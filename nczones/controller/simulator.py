@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import enum
 import math
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -47,8 +47,8 @@ import numpy as np
 from ..errors import InvalidArgument, program_lines
 from ..exact import format_decimal, seconds
 from ..machine import Axis, Machine, RapidMode
-from ..motion import Segment, SegmentKind, segments_of
-from ..zones import tip_offset, tip_shifted
+from ..motion import Segment, SegmentKind, segments_of, tip_offset
+from ..zones import tip_shifted
 from .arcs import ArcStream, HelixColumns, path_fractions_moved, unwrap
 from .cylindrical import developed_arc_walk
 from .monitor import LimitMonitor
@@ -552,42 +552,46 @@ class Controller:
             raise InvalidArgument(f"segment axes {seg.axes} do not match the machine's axes {self.axes}")
         p0 = tuple(self.prog)
         p1 = tuple(round_pulse(v, u) for v, u in zip(seg.end, self.pulse))
+        return _PLANNERS[seg.kind](self, seg, p0, p1, lazy)
+
+    def _plan_dwell(self, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...], lazy: bool = False) -> _Plan:
+        return _Plan(seg, p0, p0, 0, delta=tuple(0 for _ in p0), base_time_s=float(seg.dwell_s or 0))
+
+    def _plan_straight(self, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...], lazy: bool = False) -> _Plan:
+        """A line, or a rapid as the machine moves it (straight, or a dogleg when ``rapid_mode = "dogleg"``)."""
         delta = tuple(b - a for a, b in zip(p0, p1))
         check = self.mode is Mode.CHECK
         axes = self.machine.axes
         disp = [float(e - s) for s, e in zip(seg.start, seg.end)]
-        if seg.kind is SegmentKind.DWELL:
-            return _Plan(seg, p0, p0, 0, delta=tuple(0 for _ in p0), base_time_s=float(seg.dwell_s or 0))
         if seg.kind is SegmentKind.RAPID and self.machine.rapid_mode is RapidMode.DOGLEG:
             periods = tuple(a.pulse * 60 / a.rapid_mm_min for a in axes)
             pos, ticks, den = dogleg_steps(p0, p1, periods)
             plan = _Plan(seg, p0, p1, len(ticks), positions=pos, exact_times=ticks, tick_den=den)
             plan.speed_mm_s = math.sqrt(sum(float(a.rapid_mm_min) ** 2 for a, d in zip(axes, delta) if d)) / 60
             return plan
-        if seg.kind in (SegmentKind.RAPID, SegmentKind.LINE):
-            n = max((abs(d) for d in delta), default=0)
-            plan = _Plan(seg, p0, p1, n, delta=delta)
-            rates = [a.rapid_mm_min for a in axes]
-            if seg.kind is SegmentKind.RAPID or check:
-                t = max((abs(d) * 60 / float(r) for d, r in zip(disp, rates)), default=0.0)
-            else:
-                t = self._feed_time(seg, disp, _path_length(axes, disp))
-            plan.base_time_s = t
-            plan.accdec = not check
-            plan.speed_mm_s = _path_length(axes, disp) / t if t > 0 else 0.0
-            return plan
-        if seg.kind is SegmentKind.ARC:
-            return self._plan_arc(seg, p0, p1, lazy=lazy)
-        if seg.kind is SegmentKind.DEVELOPED_ARC:  # G07.1: developed plane, then rotary pulses
-            pos, length = developed_arc_walk(seg, self.pulse, p0)
-            return plan_from_positions(self, seg, p0, p1, pos, length, "developed arc")
-        if seg.kind is SegmentKind.POLAR:  # G12.1: the plane path converted to X (radius) and C (angle)
-            pos, length = polar_walk(seg, self.pulse, p0)
-            return plan_from_positions(self, seg, p0, p1, pos, length, "polar move")
-        if seg.kind is SegmentKind.SPLINE:  # exact NURBS: flattened chords, see controller/spline.py
-            pos, length = spline_walk(seg, self.pulse, p0)
-            return plan_from_positions(self, seg, p0, p1, pos, length, "spline")
-        raise InvalidArgument(f"unknown segment kind {seg.kind!r}")
+        n = max((abs(d) for d in delta), default=0)
+        plan = _Plan(seg, p0, p1, n, delta=delta)
+        rates = [a.rapid_mm_min for a in axes]
+        if seg.kind is SegmentKind.RAPID or check:
+            t = max((abs(d) * 60 / float(r) for d, r in zip(disp, rates)), default=0.0)
+        else:
+            t = self._feed_time(seg, disp, _path_length(axes, disp))
+        plan.base_time_s = t
+        plan.accdec = not check
+        plan.speed_mm_s = _path_length(axes, disp) / t if t > 0 else 0.0
+        return plan
+
+    def _plan_developed(self, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...], lazy: bool = False) -> _Plan:
+        pos, length = developed_arc_walk(seg, self.pulse, p0)  # G07.1: developed plane, then rotary pulses
+        return plan_from_positions(self, seg, p0, p1, pos, length, "developed arc")
+
+    def _plan_polar(self, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...], lazy: bool = False) -> _Plan:
+        pos, length = polar_walk(seg, self.pulse, p0)  # G12.1: the plane path converted to X and C
+        return plan_from_positions(self, seg, p0, p1, pos, length, "polar move")
+
+    def _plan_spline(self, seg: Segment, p0: tuple[int, ...], p1: tuple[int, ...], lazy: bool = False) -> _Plan:
+        pos, length = spline_walk(seg, self.pulse, p0)  # exact NURBS: flattened chords, see controller/spline.py
+        return plan_from_positions(self, seg, p0, p1, pos, length, "spline")
 
     def _feed_time(self, seg: Segment, disp: list[float], length: float) -> float:
         if seg.feed_mm_min is None or seg.feed_mm_min <= 0:
@@ -1104,6 +1108,19 @@ class Controller:
             blind_spot=blind, servo=self._servo_log(), notes=tuple(self.notes),
         )
 
+
+#: How the controller plans each motion kind into pulses (docs/design.md §10 "How to add a motion kind";
+#: tests/prover/test_segment_kinds.py crosses every kind with this table).
+_PLANNERS: dict[SegmentKind, Callable[..., _Plan]] = {
+    SegmentKind.LINE: Controller._plan_straight,
+    SegmentKind.RAPID: Controller._plan_straight,
+    SegmentKind.DWELL: Controller._plan_dwell,
+    SegmentKind.ARC: Controller._plan_arc,
+    SegmentKind.DEVELOPED_ARC: Controller._plan_developed,
+    SegmentKind.POLAR: Controller._plan_polar,
+    SegmentKind.SPLINE: Controller._plan_spline,
+}
+PLANNED_KINDS = frozenset(_PLANNERS)
 
 #: Steps per chunk when :func:`_helix_columns` fills a whole array (temporaries stay small and in cache).
 ARC_CHUNK = 1 << 16

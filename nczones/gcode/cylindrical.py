@@ -41,7 +41,7 @@ import re
 from dataclasses import replace
 from fractions import Fraction
 
-from ..motion import SegmentKind
+from ..motion import Developed, SegmentKind
 from .blocks import Block, Word
 from .interpreter import AXIS_LETTERS, INCH, ROTARY, Interpreter, fmt_number, gkey
 
@@ -94,8 +94,8 @@ class CylinderMode:
         self.rotary, self.linear, self.ir, self.il, self.radius = rotary, linear, ir, il, radius
 
     @property
-    def extra(self) -> tuple[tuple[str, object], ...]:
-        return (("cylinder_radius", self.radius), ("linear_axis", self.linear), ("rotary_axis", self.rotary))
+    def extra(self) -> tuple[Developed]:
+        return (Developed(self.linear, self.rotary, self.radius),)
 
 
 class CylindricalInterpreter(Interpreter):
@@ -118,7 +118,7 @@ class CylindricalInterpreter(Interpreter):
     >>> segs = segments_text("G0 Z30 C30\\nG7.1 C57.3\\nG1 Z40 F100\\nG2 Z50 C40 R10\\nG7.1 C0\\nG0 C0\\n", m)
     >>> [s.kind.name for s in segs]
     ['RAPID', 'LINE', 'DEVELOPED_ARC', 'RAPID']
-    >>> dict(segs[2].extra)["cylinder_radius"], segs[2].radius, segs[2].clockwise
+    >>> segs[2].extra[0].cylinder_radius, segs[2].radius, segs[2].clockwise
     (Fraction(573, 10), Fraction(10, 1), True)
     """
 

@@ -41,7 +41,7 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..motion import PLANE_AXES, Plane, SegmentKind
+from ..motion import PLANE_AXES, Plane, SegmentKind, SplineCurve
 from ..nurbs import Nurbs, NurbsError, clamped_uniform_knots
 
 __all__ = ["SPLINE_CODES", "spline_block", "spline_pending"]
@@ -94,8 +94,7 @@ def _emit_curve(it: Any, code: Any, degree: Any, knots: Any, control: Any, weigh
         return
     if control[0] != tuple(it.pos):
         it.emit(SegmentKind.LINE, list(control[0]), feed=True, derived=f"{_NAME[code]} to the first control point")
-    extra = (("degree", degree), ("knots", tuple(knots)), ("control", tuple(control)),
-             ("weights", tuple(weights)), ("source", _NAME[code]))
+    extra = (SplineCurve(degree, tuple(knots), tuple(map(tuple, control)), tuple(weights), _NAME[code]),)
     n0 = len(it.emitted)
     it.emit(SegmentKind.SPLINE, list(control[-1]), feed=True, plane=it.plane)
     if len(it.emitted) > n0:

@@ -33,7 +33,7 @@ from typing import Any
 from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
-from ..motion import MotionChunk, PathMode, Segment, SegmentKind
+from ..motion import MotionChunk, PathMode, Segment, SegmentKind, SplineCurve
 from .exact import box_fits
 from .result import ParamRange, Reason
 
@@ -612,10 +612,10 @@ def _piece_box(seg: Segment) -> Box | None:
         return tuple(lo), tuple(hi)
     if seg.kind is SegmentKind.SPLINE:
         # a NURBS curve with positive weights lies in the convex hull of its control points
-        extra: dict[str, Any] = dict(seg.extra)
-        control, weights = extra.get("control"), extra.get("weights")
-        if not control or not weights or any(w <= 0 for w in weights):
+        curve = seg.payload(SplineCurve)
+        if curve is None or not curve.control or any(w <= 0 for w in curve.weights):
             return None
+        control = curve.control
         pts = [seg.start, seg.end, *control]
         return tuple(map(min, *pts)), tuple(map(max, *pts))
     if seg.kind is SegmentKind.DEVELOPED_ARC:

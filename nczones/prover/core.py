@@ -36,12 +36,13 @@ from __future__ import annotations
 import time
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from fractions import Fraction
+from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError, InvalidArgument
 from ..machine import Machine, RapidMode
-from ..motion import MotionChunk, Segment, SegmentKind
-from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint, tip_offset, tip_shifted
+from ..motion import Developed, MotionChunk, Segment, SegmentKind, tip_offset
+from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint, tip_shifted
 from ..zones.kinds import KindTable
 from . import exact as ex
 from .exact import box_fits
@@ -80,8 +81,6 @@ SEGMENT_BATCH = 1024
 #: A run screens segments by columns (numpy) only once it has met this many motions; a smaller program is
 #: decided one by one on the exact path, which costs less than loading numpy (:func:`verify_segments`).
 SCREEN_MIN_SEGMENTS = 512
-#: Kinds the straight-piece path decides (a dwell is a point).
-_LINE_LIKE = frozenset({SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL})
 
 #: Does the arcs' enclosure route (prover/arcs.py, taken when every zone says yes) decide arcs against this
 #: zone?  Not against an allowed polygon.  Fallback: no (arcs go to the SMT tier).
@@ -432,30 +431,12 @@ class Prover:
             if shift:
                 return self._tip_prover(shift).check(seg)
         self.stats["segments"] += 1
-        if seg.kind is SegmentKind.DEVELOPED_ARC or (seg.extra and "cylinder_radius" in dict(seg.extra)):
-            from .cylindrical import (
-                check_cylindrical,  # G07.1: pi enclosed, see prover/cylindrical.py
-            )
+        if seg.payload(Developed) is not None:  # a line in G07.1 mode is proved on the developed surface
+            return _decide_developed(self, seg)
+        return DECIDERS[seg.kind](self, seg)
 
-            cyl: Outcome = check_cylindrical(self, seg)
-            return cyl
-        if seg.kind is SegmentKind.POLAR:
-            from .polar import (
-                check_polar,  # G12.1: square roots and arc tangents enclosed, see prover/polar.py
-            )
-
-            pol: Outcome = check_polar(self, seg)
-            return pol
-        if seg.kind is SegmentKind.SPLINE:
-            from .spline import (
-                check_spline,  # exact NURBS: control hulls + refinement, see prover/spline.py
-            )
-
-            spl: Outcome = check_spline(self, seg)
-            return spl
-        if seg.kind not in _LINE_LIKE and seg.kind is not SegmentKind.ARC:
-            return Outcome(reason=Reason(f"segment kind {seg.kind.name} is not handled by the prover",
-                                          seg.span, seg.block), engine="unknown")
+    def decide_point_path(self, seg: Segment) -> Outcome:
+        """Lines, rapids, dwells and circular arcs: the exact tiers, then Z3 (with parameter ranges)."""
         if seg.kind is SegmentKind.ARC and seg.centre is not None and not seg.turns:
             ia, ib, _ = seg.plane_indices()
             u = (seg.start[ia] - seg.centre[0], seg.start[ib] - seg.centre[1])
@@ -1076,6 +1057,44 @@ class Prover:
                 coords[g.ia], coords[g.ib] = p2
                 return dict(zip(self.axes, coords))
         return None
+
+
+def _decide_developed(prover: Prover, seg: Segment) -> Outcome:
+    from .cylindrical import check_cylindrical  # G07.1: pi enclosed, see prover/cylindrical.py
+
+    out: Outcome = check_cylindrical(prover, seg)
+    return out
+
+
+def _decide_polar(prover: Prover, seg: Segment) -> Outcome:
+    from .polar import (
+        check_polar,  # G12.1: square roots and arc tangents enclosed, see prover/polar.py
+    )
+
+    out: Outcome = check_polar(prover, seg)
+    return out
+
+
+def _decide_spline(prover: Prover, seg: Segment) -> Outcome:
+    from .spline import (
+        check_spline,  # exact NURBS: control hulls + refinement, see prover/spline.py
+    )
+
+    out: Outcome = check_spline(prover, seg)
+    return out
+
+
+#: The decider of each motion kind: the prover's tiers for it, exact first, Z3 only for what remains
+#: (docs/design.md §10 "How to add a motion kind"; tests/prover/test_segment_kinds.py crosses every kind).
+DECIDERS: Mapping[SegmentKind, Callable[[Prover, Segment], Outcome]] = MappingProxyType({
+    SegmentKind.LINE: Prover.decide_point_path,
+    SegmentKind.ARC: Prover.decide_point_path,
+    SegmentKind.RAPID: Prover.decide_point_path,
+    SegmentKind.DWELL: Prover.decide_point_path,
+    SegmentKind.DEVELOPED_ARC: _decide_developed,
+    SegmentKind.SPLINE: _decide_spline,
+    SegmentKind.POLAR: _decide_polar,
+})
 
 
 def eval_lit(text: str) -> Fraction:

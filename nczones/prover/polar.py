@@ -94,9 +94,9 @@ class _PolarCheck:
         self.move = move
         e = polar_of(seg)
         assert e is not None  # polar_move_of(seg) succeeded
-        self.ix = seg.axes.index(str(e["polar_linear_axis"]))
-        self.ic = seg.axes.index(str(e["polar_rotary_axis"]))
-        gx, gc = e["polar_grid"]
+        self.ix = seg.axes.index(e.linear_axis)
+        self.ic = seg.axes.index(e.rotary_axis)
+        gx, gc = e.grid
         self.gx, self.gc = Fraction(gx), Fraction(gc)
         self.theta: dict[Fraction, Interval] = {F0: move.start_angle()}
         self.used = 0

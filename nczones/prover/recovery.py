@@ -48,7 +48,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..machine import Machine, RapidMode
-from ..motion import Segment, SegmentKind, segments_of
+from ..motion import Segment, SegmentKind, segments_of, tip_offset
 from ..recovery import (
     RecoveryLeg,
     RecoveryVariant,
@@ -62,7 +62,7 @@ from ..recovery import (
     tool_axis_index,
     tool_change_config,
 )
-from ..zones import ZonePoint, tip_offset
+from ..zones import ZonePoint
 from .core import Prover
 from .geometry import arc_geom, rational_point_on_arc
 from .limits import BudgetSpent

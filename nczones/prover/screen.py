@@ -27,8 +27,8 @@ from typing import Any, Protocol
 import numpy as np
 
 from ..exact import decimal_places
-from ..motion import PLANE_AXES, MotionChunk, Plane, Segment, SegmentKind
-from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint, tip_offset
+from ..motion import PLANE_AXES, Developed, MotionChunk, Plane, Segment, SegmentKind, tip_offset
+from ..zones import BoxZone, PolygonZone, SteppedZone, ZonePoint
 from ..zones.kinds import KindTable
 
 
@@ -461,7 +461,7 @@ def _screenable(seg: Segment, prover: ScreenedProver) -> bool:
     """Whether the prover decides ``seg`` on its concrete path, so that a proved box proves it."""
     if seg.axes != prover.axes:
         return False
-    if seg.extra and (any(k == "cylinder_radius" for k, _ in seg.extra)
+    if seg.extra and (seg.payload(Developed) is not None
                       or (prover.has_tip_zones and tip_offset(seg.extra))):
         return False
     return not (prover.params and prover.param_relevant(seg))
@@ -530,7 +530,7 @@ def segment_columns(segments: Sequence[Segment], prover: ScreenedProver) -> list
             continue
         if simple:
             if (seg.axes is not axes and seg.axes != axes) or (
-                    seg.extra and any(k == "cylinder_radius" for k, _ in seg.extra)):
+                    seg.payload(Developed) is not None):
                 continue
         elif not _screenable(seg, prover):
             continue

@@ -14,9 +14,9 @@ from fractions import Fraction
 from typing import Any
 
 from ..machine import Machine
-from ..motion import Segment
+from ..motion import Segment, tip_offset
 from ..prover.nose import nose_zones
-from ..zones import Zone, tip_offset, tip_shifted
+from ..zones import Zone, tip_shifted
 
 __all__ = ["Placement", "drawing_machine", "placed_zones", "placement_label", "placement_of"]
 

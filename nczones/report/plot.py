@@ -209,16 +209,10 @@ def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tupl
     With ``machine``, rapids are drawn the way that machine moves them (a
     dogleg polyline when its ``rapid_mode`` is ``dogleg``).
     """
-    if seg.kind is SegmentKind.ARC:
-        return _arc_float_points(seg)
-    if seg.kind is SegmentKind.DEVELOPED_ARC:
-        return _developed_arc_float_points(seg)
-    if seg.kind is SegmentKind.SPLINE:
-        return _spline_float_points(seg)
-    if seg.kind is SegmentKind.POLAR:
-        from .samples import polar_float_points
+    return _FLOAT_POINTS[seg.kind](seg, machine)
 
-        return polar_float_points(seg)
+
+def _straight_float_points(seg: Segment, machine: Machine | None) -> list[tuple[float, ...]]:
     if seg.kind is SegmentKind.RAPID and machine is not None:
         from ..prover.geometry import line_pieces
 
@@ -226,6 +220,25 @@ def path_points_float(seg: Segment, machine: Machine | None = None) -> list[tupl
         pts = [pieces[0].p0] + [p.p1 for p in pieces]
         return [tuple(to_float(c) for c in p) for p in pts]
     return [tuple(to_float(c) for c in seg.start), tuple(to_float(c) for c in seg.end)]
+
+
+def _polar_float_points(seg: Segment, machine: Machine | None) -> list[tuple[float, ...]]:
+    from .samples import polar_float_points
+
+    return polar_float_points(seg)
+
+
+#: How a plot samples each motion kind (docs/design.md §10 "How to add a motion kind").
+_FLOAT_POINTS: dict[SegmentKind, Callable[[Segment, Machine | None], list[tuple[float, ...]]]] = {
+    SegmentKind.LINE: _straight_float_points,
+    SegmentKind.RAPID: _straight_float_points,
+    SegmentKind.DWELL: _straight_float_points,
+    SegmentKind.ARC: lambda seg, machine: _arc_float_points(seg),
+    SegmentKind.DEVELOPED_ARC: lambda seg, machine: _developed_arc_float_points(seg),
+    SegmentKind.SPLINE: lambda seg, machine: _spline_float_points(seg),
+    SegmentKind.POLAR: _polar_float_points,
+}
+SAMPLED_KINDS = frozenset(_FLOAT_POINTS)
 
 
 def plot_path(

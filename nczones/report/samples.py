@@ -28,7 +28,7 @@ def polar_float_points(seg: Segment, samples: int = 48, lo: Fraction = F0, hi: F
     move = polar_move_of(seg)
     e = polar_of(seg)
     assert e is not None
-    ix, ic = seg.axes.index(str(e["polar_linear_axis"])), seg.axes.index(str(e["polar_rotary_axis"]))
+    ix, ic = seg.axes.index(e.linear_axis), seg.axes.index(e.rotary_axis)
     theta = float(move.start_angle().mid()) if theta_lo is None else theta_lo
     out = []
     for k in range(samples + 1):

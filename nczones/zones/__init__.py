@@ -9,7 +9,6 @@ from .model import (
     SteppedZone,
     Zone,
     ZonePoint,
-    tip_offset,
     tip_shifted,
     translated,
 )
@@ -23,7 +22,6 @@ __all__ = [
     "SteppedZone",
     "Zone",
     "ZonePoint",
-    "tip_offset",
     "tip_shifted",
     "translated",
 ]

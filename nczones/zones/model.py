@@ -36,7 +36,6 @@ __all__ = [
     "AllowedSet",
     "Point",
     "translated",
-    "tip_offset",
     "tip_shifted",
 ]
 
@@ -480,15 +479,6 @@ def translated(zone: Zone, shift: Mapping[str, Fraction]) -> Zone:
     dr, dl = shift.get(zone.reference_axis, _ZERO), shift.get(zone.limited_axis, _ZERO)
     return replace(zone, start=zone.start + dr,
                    regions=tuple(Region(r.upto + dr, _shift(r.min, dl), _shift(r.max, dl)) for r in zone.regions))
-
-
-def tip_offset(extra: tuple) -> dict[str, Fraction]:
-    """The tool offsets on axes other than the tool axis that a segment carries (a lathe's X offset,
-    ``Segment.extra`` key ``"tip_offset"``): ``point = "tip"`` zones see ``machine - offset`` there."""
-    for key, value in extra:
-        if key == "tip_offset":
-            return dict(value)
-    return {}
 
 
 def tip_shifted(allowed: AllowedSet, shift: Mapping[str, Fraction]) -> AllowedSet:

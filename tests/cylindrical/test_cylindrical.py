@@ -17,7 +17,7 @@ from nczones.cylinder import Interval, degree_length, developed_arc, developed_a
 from nczones.errors import GcodeError
 from nczones.gcode import segments_text
 from nczones.machine import parse_machine
-from nczones.motion import SegmentKind
+from nczones.motion import Developed, SegmentKind
 from nczones.prover import verify_text
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -77,9 +77,9 @@ def test_mode_emits_lines_and_developed_arcs_and_keeps_positions_exact():
     # positions chain exactly through the mode switches
     assert all(a.end == b.start for a, b in zip(segs, segs[1:]))
     arc = segs[3]
-    assert dict(arc.extra) == {"cylinder_radius": F(20), "linear_axis": "Z", "rotary_axis": "C"}
+    assert arc.extra == (Developed("Z", "C", F(20)),)
     assert arc.radius == 7 and not arc.clockwise
-    assert "cylinder_radius" in dict(segs[2].extra) and "cylinder_radius" not in dict(segs[5].extra)
+    assert segs[2].payload(Developed) is not None and segs[5].payload(Developed) is None
     # the same motion without the mode: the same machine positions for every line
     plain = segments_text("G0 X5 Z30 C30\nG1 Z31 F100\nG1 Z32 C40.5\nG1 Z34 C50\nG1 X4 Z35\nG1 Z36 C51\nG0 X0\n", m)
     assert [s.end for s in plain] == [s.end for s in segs]
@@ -90,7 +90,7 @@ def test_g107_and_incremental_and_inch():
     segs = segments_text("G0 Z10 C10\nG107 C10\nG91 G2 Z2 C5 R3 F50\nG107 C0\n", m)
     assert segs[-1].kind is SegmentKind.DEVELOPED_ARC and segs[-1].end[1:] == (F(12), F(15))
     segs = segments_text("G20\nG0 Z1 C10\nG7.1 C1\nG1 Z2 C20 F5\nG2 Z3 C30 R1\nG7.1 C0\n", m)
-    assert dict(segs[-1].extra)["cylinder_radius"] == F("25.4")
+    assert segs[-1].payload(Developed).cylinder_radius == F("25.4")
     assert segs[-1].end[1] == F("76.2") and segs[-1].radius == F("25.4")
 
 

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from nczones.errors import GcodeError
 from nczones.gcode import interpret, interpret_text, segments_text
 from nczones.machine import parse_machine
-from nczones.motion import Plane, SegmentKind
+from nczones.motion import Plane, SegmentKind, SplineCurve
 from tests.corpus import CORPUS
 
 F = Fraction
@@ -301,8 +301,9 @@ def test_incomplete_g6_2_curve_is_unknown_and_a_complete_one_is_a_spline():
             "G6.2 K2\nG6.2 K2\nG6.2 K2\nG1 X0\n")
     segs = segments_text(text, MILL)
     assert [s.kind for s in segs] == [SegmentKind.RAPID, SegmentKind.SPLINE, SegmentKind.LINE]
-    e = dict(segs[1].extra)
-    assert e["degree"] == 2 and e["knots"] == (0, 0, 0, 1, 2, 2, 2) and e["weights"] == (1, 1, 2, 1)
+    e = segs[1].payload(SplineCurve)
+    assert e is not None and e.source == "G6.2"
+    assert e.degree == 2 and e.knots == (0, 0, 0, 1, 2, 2, 2) and e.weights == (1, 1, 2, 1)
     assert segs[1].end == segs[2].start and segs[1].end[:2] == (F(104), F(4))
 
 

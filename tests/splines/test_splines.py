@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from nczones.controller.spline import FLATNESS, spline_chord_points, spline_positions
 from nczones.machine import parse_machine
-from nczones.motion import Plane, Segment, SegmentKind
+from nczones.motion import Plane, Segment, SegmentKind, SplineCurve
 from nczones.nurbs import Nurbs, clamped_uniform_knots
 from nczones.prover.core import Prover, verify_segments
 from nczones.prover.result import Verdict
@@ -94,8 +94,7 @@ max = { X = "4", Y = "-1" }
 
 
 def spline_segment(c: Nurbs) -> Segment:
-    extra = (("degree", c.degree), ("knots", c.knots), ("control", c.points), ("weights", c.weights),
-             ("source", "G5.2"))
+    extra = (SplineCurve(c.degree, c.knots, c.points, c.weights, "G5.2"),)
     return Segment(SegmentKind.SPLINE, c.points[0], c.points[-1], ("X", "Y"), block=0, plane=Plane.XY,
                    feed_mm_min=F(100), extra=extra)
 

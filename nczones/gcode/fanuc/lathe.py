@@ -31,7 +31,7 @@ from typing import Any
 
 from ...exact import Interval, is_square
 from ...machine import Machine, ToolOffset
-from ...motion import Plane, SegmentKind
+from ...motion import Plane, PolarData, SegmentKind, TipOffset
 from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ..blocks import Block, ShapeBlock, Word
 from ..interpreter import AXIS_LETTERS, StopProgram, dadd, fmt_number, gkey, gname, qadd
@@ -190,7 +190,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         self.g76_d: Fraction | None = fs.g76_finish_allowance
         #: the thread chamfer in leads: G76's first block (P..rr..), else parameter 5130
         self.thread_leads: Fraction | None = None
-        self._tip_extra: tuple = ()
+        self._tip_extra: tuple[TipOffset, ...] = ()
         #: after a G70-G73 cycle whose shape changes the group-01 mode: the modes the control may be in (the
         #: one before the cycle, the shape's last); None when there is no doubt
         self.modes_after_cycle: frozenset[int] | None = None
@@ -583,14 +583,8 @@ class FanucLatheInterpreter(FanucInterpreter):
         end[st.ix] = st.x_off + round_sqrt_to_grid(x1 * x1 + y1 * y1, gx)
         end[st.ic] = st.c_entry + round_to_grid(theta.mid(), gc)
         turns = round((theta.mid() - atan2_deg(x1, y1).mid()) / 360)
-        tag: tuple[tuple[str, object], ...] = (
-            ("polar_start", p0), ("polar_end", p1), ("polar_turns", st.turns), ("polar_x_off", st.x_off),
-            ("polar_c_entry", st.c_entry), ("polar_linear_axis", self.axes[st.ix]), ("polar_rotary_axis", self.axes[st.ic]),
-            ("polar_grid", st.grid), ("polar_arc", arc))
-        if centre is not None:
-            tag += (("polar_centre", centre),)
-        if radius is not None:
-            tag += (("polar_radius", radius),)
+        tag = (PolarData(p0, p1, st.turns, st.x_off, st.c_entry, self.axes[st.ix], self.axes[st.ic], st.grid, arc,
+                         centre, radius),)
         n0 = len(self.emitted)
         self.emit(SegmentKind.POLAR, end, feed=True, clockwise=cw)
         if len(self.emitted) > n0:
@@ -676,7 +670,7 @@ class FanucLatheInterpreter(FanucInterpreter):
         self.tlo = tl
         self.tool_register = number if number else None
         self.dep_tlo = {}
-        self._tip_extra = (("tip_offset", tuple(tip)),) if tip else ()
+        self._tip_extra = (TipOffset(tuple(tip)),) if tip else ()
         self.unset.discard("tool")
         self.recompute_offsets()
         if self.settings.tool_offset_motion == "move" and not self.unsupported:
