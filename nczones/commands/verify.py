@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 from .. import cli
 from ..errors import Diagnostic, InputError
 from ..prover.limits import DEFAULT_BUDGET_S
+from ..report import FORMATS
 
 if TYPE_CHECKING:
     from ..gcode.source import ProgramSource
@@ -352,7 +353,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--stats", action="store_true",
                    help="after each text report, where the time went: per tier and per motion kind, the solver "
                         "calls and the slowest blocks (the JSON report always has them in stats.profile)")
-    p.add_argument("--format", choices=("text", "json", "html", "sarif"), default="text",
+    p.add_argument("--format", choices=FORMATS, default="text",
                    help="text (compiler-style), json (specs/report.schema.json; a list for several programs), "
                         "html (one self-contained file with plots; one program), sarif (SARIF 2.1.0 for code "
                         "scanning)")

@@ -22,11 +22,47 @@ matplotlib.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
-__all__ = ["render_report", "plot_program", "relevant_planes", "FORMATS"]
+__all__ = ["render_report", "plot_program", "relevant_planes", "FORMATS", "RENDERERS"]
 
-FORMATS = ("text", "json", "html", "sarif")
+def _text(result: Any, machine: Any, program: Any, color: bool, deterministic: bool) -> str:
+    from .numbers import resolution_of
+    from .text import render_text
+
+    return render_text(result, program if isinstance(program, str) else "", color=color,
+                       deterministic=deterministic, resolution=resolution_of(machine))
+
+
+def _json(result: Any, machine: Any, program: Any, color: bool, deterministic: bool) -> str:
+    from ..prover.render import render_json
+
+    return render_json(result, deterministic=deterministic)
+
+
+def _sarif(result: Any, machine: Any, program: Any, color: bool, deterministic: bool) -> str:
+    from .sarif import render_sarif
+
+    return render_sarif(result, machine=machine, deterministic=deterministic)
+
+
+def _html(result: Any, machine: Any, program: Any, color: bool, deterministic: bool) -> str:
+    if machine is None:
+        from ..errors import InvalidArgument
+
+        raise InvalidArgument("the html report needs the machine (render_report(..., machine=m))")
+    use_agg_backend()
+    from .html import render_html
+
+    return render_html(result, machine, program, deterministic=deterministic)
+
+
+#: The renderer of each report format, by the name ``--format`` takes (docs/design.md §10 "How to add a
+#: report format"); each imports its module when it runs, so importing this package loads none of them.
+RENDERERS: dict[str, Callable[[Any, Any, Any, bool, bool], str]] = {
+    "text": _text, "json": _json, "html": _html, "sarif": _sarif}
+FORMATS = tuple(RENDERERS)
 
 
 def render_report(result: Any, fmt: str = "text", *, machine: Any = None, program: Any = None, color: bool = False,
@@ -36,32 +72,12 @@ def render_report(result: Any, fmt: str = "text", *, machine: Any = None, progra
     ``machine`` is needed for ``html`` (the plots); ``program`` (a path or a
     :class:`~nczones.gcode.source.ProgramSource`) defaults to ``result.file``.
     """
-    if fmt == "text":
-        from .numbers import resolution_of
-        from .text import render_text
+    renderer = RENDERERS.get(fmt)
+    if renderer is None:
+        from ..errors import InvalidArgument
 
-        return render_text(result, program if isinstance(program, str) else "", color=color,
-                           deterministic=deterministic, resolution=resolution_of(machine))
-    if fmt == "json":
-        from ..prover.render import render_json
-
-        return render_json(result, deterministic=deterministic)
-    if fmt == "sarif":
-        from .sarif import render_sarif
-
-        return render_sarif(result, machine=machine, deterministic=deterministic)
-    if fmt == "html":
-        if machine is None:
-            from ..errors import InvalidArgument
-
-            raise InvalidArgument("the html report needs the machine (render_report(..., machine=m))")
-        use_agg_backend()
-        from .html import render_html
-
-        return render_html(result, machine, program, deterministic=deterministic)
-    from ..errors import InvalidArgument
-
-    raise InvalidArgument(f"unknown report format {fmt!r}; allowed: {', '.join(FORMATS)}")
+        raise InvalidArgument(f"unknown report format {fmt!r}; allowed: {', '.join(FORMATS)}")
+    return renderer(result, machine, program, color, deterministic)
 
 
 def use_agg_backend() -> None:
