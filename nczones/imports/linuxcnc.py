@@ -295,6 +295,33 @@ def read_linuxcnc(
             if in_range(c, slowest.value, slowest.how, slowest.span):
                 rapid[a] = slowest
 
+    # maximum accelerations (the planner's blend arcs, nczones.controller.blending): like the rapid rates
+    traj_acc = ini.get("TRAJ", "MAX_LINEAR_ACCELERATION") or ini.get("TRAJ", "MAX_ACCELERATION")
+    accel: dict[str, Sourced] = {}
+    for a in axes:
+        acc_candidates: list[Sourced] = []
+        ae = axis_entry(a, "MAX_ACCELERATION")
+        if ae is not None:
+            acc_candidates.extend(v for v in [converted(ae, a)] if v is not None)
+        else:
+            factor, unit = unit_of(a)
+            acc_candidates.append(Sourced(factor, f"no [AXIS_{a}] MAX_ACCELERATION: LinuxCNC's default of 1 "
+                                          f"{unit}/s^2"))
+            c.note("IM203", f"axis {a}: no MAX_ACCELERATION; LinuxCNC's default of 1 machine unit per second "
+                   "squared is taken", ini.sections.get(info[a].section or "", None), file=path)
+        acc_candidates.extend(v for je in joint_entries(a, "MAX_ACCELERATION") if (v := converted(je, a)))
+        if traj_acc is not None and a not in ROTARY_AXES:
+            acc_candidates.extend(v for v in [converted(traj_acc, a)] if v is not None)
+        for v in acc_candidates:
+            if v.value <= 0:
+                c.error("IM108", f"{v.how}: a maximum acceleration must be greater than 0", v.span)
+        good_acc = [v for v in acc_candidates if v.value > 0]
+        if good_acc:
+            lowest = min(good_acc, key=lambda v: v.value)
+            if in_range(c, lowest.value, lowest.how, lowest.span):
+                how = lowest.how.replace(" in, x", " in/s^2, x").replace(" grad, x", " grad/s^2, x")
+                accel[a] = Sourced(lowest.value, how, lowest.span)
+
     # home positions (where homing leaves the axis)
     home: dict[str, Sourced] = {}
     traj_home = ini.get("TRAJ", "HOME")
@@ -501,7 +528,8 @@ def read_linuxcnc(
         monitor_period_ms=period,
         modal=modal,
         extra=tuple(extra),
-        axis_tables=(("machine.tool_change_position", frozen(tc_position)),) if tc_position else (),
+        axis_tables=((("machine.acceleration", frozen(accel)),) if accel else ())
+        + ((("machine.tool_change_position", frozen(tc_position)),) if tc_position else ()),
         offsets=frozen({k: frozen(v) for k, v in offsets.items()}),
         tool_lengths=frozen(lengths),
         tool_diameters=frozen(diameters),
