@@ -11,6 +11,7 @@ from fractions import Fraction
 
 import pytest
 
+from nczones.cli import main
 from nczones.controller import Settings, simulate
 from nczones.controller.blending import BlendArc, blend_motion, blends
 from nczones.errors import InvalidArgument, MachineFileError
@@ -147,3 +148,17 @@ def test_acceleration_table_is_validated(table, code):
     with pytest.raises(MachineFileError) as e:
         _machine(accel=table)
     assert code in [d.code for d in e.value.diagnostics]
+
+
+def test_simulate_command_takes_the_blending_option(tmp_path, capsys):
+    machine = tmp_path / "m.toml"
+    machine.write_text(MACHINE.format(x0="95", y0="1", x1="99", y1="5", accel=ACCEL, extra=""))
+    prog = tmp_path / "l.ngc"
+    prog.write_text(L_CORNER)
+    assert main(["simulate", str(prog), "--machine", str(machine)]) != 0  # auto: blends, alarms in the clamp
+    assert "clamp" in capsys.readouterr().out
+    assert main(["simulate", str(prog), "--machine", str(machine), "--blending", "exact"]) == 0
+    capsys.readouterr()
+    machine.write_text(MACHINE.format(x0="95", y0="1", x1="99", y1="5", accel="", extra=""))
+    assert main(["simulate", str(prog), "--machine", str(machine), "--blending", "linuxcnc"]) == 2
+    assert "acceleration" in capsys.readouterr().err
