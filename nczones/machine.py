@@ -607,6 +607,14 @@ def _register_table(rd: _Reader, data: Mapping[str, Any], section: str, prefix: 
     return out
 
 
+def _accelerations(rd: _Reader, mt: Mapping[str, Any], axes: tuple[str, ...], mline: int | None) -> dict[str, Fraction]:
+    """``[machine.acceleration]``: every axis' maximum acceleration (mm/s^2, deg/s^2), or none at all."""
+    if mt.get("acceleration") is None:
+        return {}
+    return _per_axis(rd, mt["acceleration"], axes, "[machine.acceleration]", rd.loc.section("machine.acceleration"),
+                     required=True, inline=("acceleration", mline), positive=True)
+
+
 def _per_axis(
     rd: _Reader,
     value: Any,
@@ -871,11 +879,6 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
         if q is not None:
             max_feed = {a: q for a in axes}
 
-    accel: dict[str, Fraction] = {}
-    if mt.get("acceleration") is not None:
-        accel = _per_axis(rd, mt["acceleration"], axes, "[machine.acceleration]", rd.loc.section("machine.acceleration"),
-                          required=True, inline=("acceleration", mline), positive=True)
-
     rapid_mode_raw = mt.get("rapid_mode", "linear")
     try:
         rapid_mode = RapidMode(rapid_mode_raw)
@@ -990,9 +993,8 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     if rd.failed or period is None:
         return None
 
-    axis_objs = tuple(
-        Axis(a, pulse[a], rapid[a], max_feed[a], a in ROTARY_AXES, accel.get(a)) for a in axes
-    )
+    axis_objs = tuple(Axis(a, pulse[a], rapid[a], max_feed[a], a in ROTARY_AXES, accel.get(a))
+                      for accel in [_accelerations(rd, mt, axes, mline)] for a in axes)
     allowed = AllowedSet(tuple(zones), tool_axis)
     start_t = tuple(start[a] for a in axes)
     ref_t = tuple(reference[a] for a in axes)
