@@ -693,7 +693,8 @@ class Controller:
         items: Iterable[Segment | BlendArc] = segments_of(motion)
         if blends(self.machine, self.settings.blending):
             self.log("blending", data=(("planner", "linuxcnc"),))
-            items = blend_motion(items, self.machine, motion if self.mode_source is None else self.mode_source)
+            items = blend_motion(segments_of(motion), self.machine,
+                                 motion if self.mode_source is None else self.mode_source)
         for seg in items:
             if self.halted:
                 skipped += 1

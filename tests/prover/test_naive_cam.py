@@ -110,3 +110,14 @@ def test_p0_with_q_is_q_without_p():
     m = _machine(f"{x - 0.5:.3f}", f"{y - 0.5:.3f}", f"{x + 0.5:.3f}", f"{y + 0.5:.3f}")
     assert verify_text(_program(pts, "G64 P0 Q0.01"), m).verdict.label == "unknown"
     assert verify_text(_program(pts, "G64 P0 Q0.01"), _machine("5", "150", "20", "160")).verdict.label == "safe"
+
+
+def test_with_parameters_in_the_text():
+    # '#' in a LinuxCNC program would take the double pass; G64 in the text makes it decline (prover/doubles.py),
+    # so the corners are proved as above
+    pts = _zigzag(10)
+    x, y = _deep_blend_point(pts)
+    m = _machine(f"{x - 0.5:.3f}", f"{y - 0.5:.3f}", f"{x + 0.5:.3f}", f"{y + 0.5:.3f}")
+    text = "#1 = 0.01\n" + _program(pts).replace("G64 Q0.01", "G64 Q#1")
+    assert verify_text(text, m).verdict.label == "unknown"
+    assert verify_text(text, _machine("5", "150", "20", "160")).verdict.label == "safe"
