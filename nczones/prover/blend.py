@@ -202,7 +202,7 @@ class CornerCheck:
         mode = self.mode_of(seg.block)
         self.prev, self.prev_stop = seg, not mode.blend
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
-            box = _piece_box(seg)
+            box = _hull_box(seg)
             if box is None:
                 self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
             elif self.stretch is None:
@@ -216,7 +216,7 @@ class CornerCheck:
         elif self.stretch is not None:
             self.stretch[3] = seg  # the motion that ends the run with an exact stop still belongs to it
             lo, hi = self.stretch[0], self.stretch[1]
-            box = _piece_box(seg)
+            box = _hull_box(seg)
             if box is not None:
                 for i in range(len(lo)):
                     lo[i] = min(lo[i], box[0][i])
@@ -831,3 +831,51 @@ def _union(a: Box | None, b: Box | None) -> Box | None:
     if a is None or b is None:
         return None
     return tuple(map(min, a[0], b[0])), tuple(map(max, a[1], b[1]))
+
+
+def _hull_box(seg: Segment) -> Box | None:
+    """A box holding every machine position of ``seg`` for the hull of a Fanuc run (:func:`_piece_box`, and a
+    polar move's (G12.1) machine X and C: the box of its pieces' enclosures, as ``nczones.prover.polar`` walks
+    them; None when the path comes too near the centre of rotation)."""
+    if seg.kind is not SegmentKind.POLAR:
+        return _piece_box(seg)
+    from ..polar import (
+        CentreCrossing,
+        angle_range,
+        point_angle,
+        polar_move_of,
+        polar_of,
+        radius_range,
+    )
+
+    try:
+        move = polar_move_of(seg)
+    except ValueError:
+        return None
+    e = polar_of(seg)
+    assert e is not None  # polar_move_of(seg) succeeded
+    ix, ic = seg.axes.index(str(e["polar_linear_axis"])), seg.axes.index(str(e["polar_rotary_axis"]))
+    gx, gc = (Fraction(g) for g in e["polar_grid"])
+    lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+    xs, cs = [], []
+    theta = move.start_angle()
+    stack = [(fa, fb, 0) for fa, fb in reversed(move.first_pieces())]
+    try:
+        while stack:
+            fa, fb, depth = stack.pop()
+            bx, by = move.box(fa, fb)
+            ang = angle_range(bx, by, theta.mid())
+            if ang is not None:
+                xs.append(move.x_off + radius_range(bx, by))
+                cs.append(move.c_entry + ang)
+                theta = point_angle(move.point(fb), theta.mid())
+                continue
+            if depth >= 20 or len(stack) > 1000:
+                return None
+            mid = (fa + fb) / 2
+            stack.extend(((mid, fb, depth + 1), (fa, mid, depth + 1)))
+    except CentreCrossing:
+        return None
+    lo[ix], hi[ix] = min(lo[ix], *(x.lo for x in xs)) - gx, max(hi[ix], *(x.hi for x in xs)) + gx
+    lo[ic], hi[ic] = min(lo[ic], *(c.lo for c in cs)) - gc, max(hi[ic], *(c.hi for c in cs)) + gc
+    return tuple(lo), tuple(hi)
