@@ -100,6 +100,9 @@ class Axis:
     rapid_mm_min: Fraction
     max_feed_mm_min: Fraction
     rotary: bool = False
+    #: ``[machine.acceleration]``: the axis' maximum acceleration, mm/s^2 (deg/s^2); None when the file does not
+    #: give it (LinuxCNC's ``[AXIS_x] MAX_ACCELERATION``; the reference controller blends corners with it)
+    accel_mm_s2: Fraction | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -604,6 +607,14 @@ def _register_table(rd: _Reader, data: Mapping[str, Any], section: str, prefix: 
     return out
 
 
+def _accelerations(rd: _Reader, mt: Mapping[str, Any], axes: tuple[str, ...], mline: int | None) -> dict[str, Fraction]:
+    """``[machine.acceleration]``: every axis' maximum acceleration (mm/s^2, deg/s^2), or none at all."""
+    if mt.get("acceleration") is None:
+        return {}
+    return _per_axis(rd, mt["acceleration"], axes, "[machine.acceleration]", rd.loc.section("machine.acceleration"),
+                     required=True, inline=("acceleration", mline), positive=True)
+
+
 def _per_axis(
     rd: _Reader,
     value: Any,
@@ -655,7 +666,7 @@ _MACHINE_KEYS = (
     "reference", "start", "tool_axis", "modal", "cutter_compensation", "dialect",
     "reference_2", "reference_3", "reference_4", "type", "diameter_axes",
     "control_units", "tool_change_quill_up", "tool_change_at_g30", "tool_change_position",
-    "path_mode", "path_tolerance",
+    "path_mode", "path_tolerance", "acceleration",
 )
 #: Values of ``[machine] path_mode``: the path control mode the control starts in (``specs/path-modes.md``).
 PATH_MODES = ("G64", "G61", "G61.1")
@@ -982,9 +993,8 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     if rd.failed or period is None:
         return None
 
-    axis_objs = tuple(
-        Axis(a, pulse[a], rapid[a], max_feed[a], a in ROTARY_AXES) for a in axes
-    )
+    axis_objs = tuple(Axis(a, pulse[a], rapid[a], max_feed[a], a in ROTARY_AXES, accel.get(a))
+                      for accel in [_accelerations(rd, mt, axes, mline)] for a in axes)
     allowed = AllowedSet(tuple(zones), tool_axis)
     start_t = tuple(start[a] for a in axes)
     ref_t = tuple(reference[a] for a in axes)

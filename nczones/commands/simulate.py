@@ -128,6 +128,7 @@ def _run(args: argparse.Namespace) -> int:
         post_time_constant_ms=_decimal_option("--accdec-after-ms", args.accdec_after_ms),
         post_filter=args.filter,
         log_motions=args.format == "json" and args.events,
+        blending=args.blending,
     )
     result = None
     for runner in RUNNERS:
@@ -195,6 +196,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--filter", choices=("exponential", "linear"), default="exponential",
                    help="shape of the filter after interpolation (--accdec-after-ms): exponential (default) or "
                         "linear (moving average)")
+    p.add_argument("--blending", choices=("auto", "exact", "linuxcnc"), default="auto",
+                   help="corners: LinuxCNC's blend arcs (linuxcnc; needs [machine.acceleration]), the programmed "
+                        "path (exact), or auto: blend where the machine starts in G64 and gives accelerations "
+                        "(specs/path-modes.md)")
     p.add_argument("--arc-tolerance", default=None, metavar="MM|linuxcnc|grbl", help='largest mismatch (mm) of an arc end point with its circle (default: the machine file\'s arc_tolerance, else 0.002), or "linuxcnc"/"grbl" for that control\'s own acceptance rule')
     p.add_argument("--events", action="store_true", help="include the event log in the JSON output")
     p.add_argument("--break-at", metavar="LINE[:FRACTION]", default=None,

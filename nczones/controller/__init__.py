@@ -13,6 +13,8 @@ Public API
     Pulse distribution (linear, circular, dogleg rapids) in exact integers.
 :mod:`nczones.controller.monitor`
     The limit monitor (sequential limit-value-table lookup, compiled integer checks).
+:mod:`nczones.controller.blending`
+    LinuxCNC's blend arcs at G64 corners (``Settings(blending="auto"|"exact"|"linuxcnc")``).
 """
 
 from .monitor import CompiledCheck, LimitMonitor, MonitorStats

@@ -38,7 +38,7 @@ from __future__ import annotations
 import enum
 import math
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any
 
@@ -50,6 +50,7 @@ from ..machine import Axis, Machine, RapidMode
 from ..motion import Segment, SegmentKind, segments_of, tip_offset
 from ..zones import tip_shifted
 from .arcs import ArcStream, HelixColumns, path_fractions_moved, unwrap
+from .blending import BlendArc, arc_pulse_positions, blend_motion, blends
 from .cylindrical import developed_arc_walk
 from .monitor import LimitMonitor
 from .polar import polar_walk
@@ -103,7 +104,9 @@ class Settings:
     ``"exponential"`` first-order lag, or ``"linear"`` moving average);
     a mapping axis -> ms gives one per axis.  The filtered servo output is
     logged at ``servo_period_ms`` (normal mode only).  ``engine`` is
-    ``"vector"`` or ``"reference"``.
+    ``"vector"`` or ``"reference"``.  ``blending`` (``nczones.controller.blending``): ``"auto"`` rounds corners
+    with LinuxCNC's blend arcs where the machine starts in G64 (LinuxCNC dialect, ``[machine.acceleration]``
+    given), ``"linuxcnc"`` always, ``"exact"`` never (the programmed path).
     """
 
     pre_time_constant_ms: Fraction = Fraction(0)
@@ -113,6 +116,7 @@ class Settings:
     servo_max_samples: int = 200_000
     engine: str = "vector"
     log_motions: bool = True
+    blending: str = "auto"
 
     def post_tau_ms(self, axis: str) -> float:
         v = self.post_time_constant_ms
@@ -489,6 +493,9 @@ class Controller:
         self.break_at = break_at
         #: program text lines, to quote an alarm's block when segments carry no text
         self.source_lines: list[str] | None = None
+        #: what carries the program's path modes (an interpretation's ``interpreter.path_modes``), when the
+        #: motion given to :meth:`run` is not the interpretation itself
+        self.mode_source: Any = None
         self.mode = Mode(mode)
         self.monitor_mode = MonitorMode(monitor)
         self.settings = settings or Settings()
@@ -687,11 +694,19 @@ class Controller:
             if bad:
                 self.record_alarm(None, tuple(self.counter), bad, (), note="start position outside the allowed set")
         skipped = 0
-        for seg in segments_of(motion):
+        items: Iterable[Segment | BlendArc] = segments_of(motion)
+        if blends(self.machine, self.settings.blending):
+            self.log("blending", data=(("planner", "linuxcnc"),))
+            items = blend_motion(segments_of(motion), self.machine,
+                                 motion if self.mode_source is None else self.mode_source)
+        for seg in items:
             if self.halted:
                 skipped += 1
                 continue
-            self.run_segment(seg)
+            if isinstance(seg, BlendArc):
+                self.run_blend(seg)
+            else:
+                self.run_segment(seg)
         if self.halted and skipped:
             self.log("halt", data=(("blocks_not_run", skipped),))
         if not self.halted:
@@ -704,6 +719,18 @@ class Controller:
         self.tool_length = seg.tool_length
         self.monitor = self._monitor_for(seg)
         self.run_plan(seg, self.plan(seg, lazy=True))
+
+    def run_blend(self, arc: BlendArc) -> None:
+        """Run a blend arc (``nczones.controller.blending``) as the motion of its corner's first block."""
+        seg = replace(arc.seg, kind=SegmentKind.LINE, start=tuple(Fraction(v) for v in arc.start),
+                      end=tuple(Fraction(v) for v in arc.end), feed_mm_min=Fraction(arc.speed_mm_s * 60),
+                      derived="G64 blend arc")
+        self.tool_length = seg.tool_length
+        self.monitor = self._monitor_for(seg)
+        p0 = tuple(self.prog)
+        pos = arc_pulse_positions(arc, self.pulse, p0)
+        p1 = tuple(int(v) for v in pos[-1]) if len(pos) else p0
+        self.run_plan(seg, plan_from_positions(self, seg, p0, p1, pos, arc.radius * arc.sweep, "blend arc"))
 
     def _monitor_for(self, seg: Segment) -> LimitMonitor:
         """The limit monitor for a segment: a lathe tool offset on an axis besides the tool axis moves the tool
@@ -1217,6 +1244,7 @@ def simulate(
     text = getattr(motion, "text", None)
     if isinstance(text, str):
         ctl.source_lines = program_lines(text)
+    ctl.mode_source = motion
     if progress is not None:
         items = _reporting(items, progress, getattr(motion, "text", None))
     return ctl.run(items)

@@ -18,6 +18,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
+from typing import Any
 
 from ..errors import Diagnostic, InvalidArgument, SourceSpan
 from ..exact import MAX_ABS_LENGTH, format_decimal
@@ -262,38 +263,10 @@ def read_linuxcnc(
         c.note("IM201", "no MIN_LIMIT or MAX_LIMIT on any axis: the machine file gets no zone, so every "
                "position is allowed", file=path)
 
-    # rapid rates
-    traj_vel = ini.get("TRAJ", "MAX_LINEAR_VELOCITY") or ini.get("TRAJ", "MAX_VELOCITY")
-    rapid: dict[str, Sourced] = {}
-    for a in axes:
-        candidates: list[Sourced] = []
-        ve = axis_entry(a, "MAX_VELOCITY")
-        if ve is not None:
-            v = converted(ve, a, per_min=True)
-            if v is not None:
-                candidates.append(v)
-        else:
-            factor, _ = unit_of(a)
-            candidates.append(Sourced(factor * 60, f"no [AXIS_{a}] MAX_VELOCITY: LinuxCNC's default of 1 unit "
-                                      "per second, x 60"))
-            c.note("IM203", f"axis {a}: no MAX_VELOCITY; LinuxCNC's default of 1 machine unit per second is taken",
-                   ini.sections.get(info[a].section or "", None), file=path)
-        for je in joint_entries(a, "MAX_VELOCITY"):
-            v = converted(je, a, per_min=True)
-            if v is not None:
-                candidates.append(v)
-        if traj_vel is not None and a not in ROTARY_AXES:
-            v = converted(traj_vel, a, per_min=True)
-            if v is not None:
-                candidates.append(v)
-        good = [v for v in candidates if v.value > 0]
-        for v in candidates:
-            if v.value <= 0:
-                c.error("IM108", f"{v.how}: a maximum velocity must be greater than 0", v.span)
-        if good:
-            slowest = min(good, key=lambda v: v.value)
-            if in_range(c, slowest.value, slowest.how, slowest.span):
-                rapid[a] = slowest
+    # rapid rates and maximum accelerations (the controller's blend arcs): the smallest of axis, joints, trajectory
+    limits = (lambda a: ini.sections.get(info[a].section or "", None), axis_entry, joint_entries, converted, unit_of)
+    rapid = _axis_maxima(VELOCITY, ini, c, axes, limits, path)
+    accel = _axis_maxima(ACCELERATION, ini, c, axes, limits, path)
 
     # home positions (where homing leaves the axis)
     home: dict[str, Sourced] = {}
@@ -501,7 +474,8 @@ def read_linuxcnc(
         monitor_period_ms=period,
         modal=modal,
         extra=tuple(extra),
-        axis_tables=(("machine.tool_change_position", frozen(tc_position)),) if tc_position else (),
+        axis_tables=((("machine.acceleration", frozen(accel)),) if accel else ())
+        + ((("machine.tool_change_position", frozen(tc_position)),) if tc_position else ()),
         offsets=frozen({k: frozen(v) for k, v in offsets.items()}),
         tool_lengths=frozen(lengths),
         tool_diameters=frozen(diameters),
@@ -510,6 +484,62 @@ def read_linuxcnc(
         notes=tuple(c.notes),
         subroutine_path=_subroutine_path(ini, path),
     )
+
+
+@dataclass(frozen=True)
+class _Maximum:
+    """An axis maximum the import reads: the INI key, the [TRAJ] caps, and how it is written."""
+
+    key: str
+    traj: tuple[str, str]
+    per_min: bool
+    what: str  # "velocity" / "acceleration"
+    default: str  # the default's description, {a} the axis letter, {unit} its machine unit
+    note: str
+
+
+VELOCITY = _Maximum("MAX_VELOCITY", ("MAX_LINEAR_VELOCITY", "MAX_VELOCITY"), True, "velocity",
+                    "no [AXIS_{a}] MAX_VELOCITY: LinuxCNC's default of 1 unit per second, x 60",
+                    "axis {a}: no MAX_VELOCITY; LinuxCNC's default of 1 machine unit per second is taken")
+ACCELERATION = _Maximum("MAX_ACCELERATION", ("MAX_LINEAR_ACCELERATION", "MAX_ACCELERATION"), False, "acceleration",
+                        "no [AXIS_{a}] MAX_ACCELERATION: LinuxCNC's default of 1 {unit}/s^2",
+                        "axis {a}: no MAX_ACCELERATION; LinuxCNC's default of 1 machine unit per second squared "
+                        "is taken")
+
+
+def _axis_maxima(spec: _Maximum, ini: IniFile, c: Collector, axes: tuple[str, ...], limits: tuple[Any, ...],
+                 path: str) -> dict[str, Sourced]:
+    """Per axis the smallest of ``[AXIS_<L>] <key>`` (LinuxCNC's default: 1 unit per second, or per second
+    squared: ``DEFAULT_AXIS_MAX_ACCELERATION``), its joints' ``<key>`` and, for linear axes, the ``[TRAJ]`` cap
+    (2.9 name, then 2.7's); velocities x 60 (per minute); 0 or less is ``IM108``.  ``limits``: the reader's
+    (section of an axis, axis entry, joint entries, converted, unit of an axis)."""
+    section_of, axis_entry, joint_entries, converted, unit_of = limits
+    traj = ini.get("TRAJ", spec.traj[0]) or ini.get("TRAJ", spec.traj[1])
+    out: dict[str, Sourced] = {}
+    for a in axes:
+        candidates: list[Sourced] = []
+        e = axis_entry(a, spec.key)
+        if e is not None:
+            candidates.extend(v for v in [converted(e, a, per_min=spec.per_min)] if v is not None)
+        else:
+            factor, unit = unit_of(a)
+            candidates.append(Sourced(factor * (60 if spec.per_min else 1), spec.default.format(a=a, unit=unit)))
+            c.note("IM203", spec.note.format(a=a), section_of(a), file=path)
+        candidates.extend(v for je in joint_entries(a, spec.key)
+                          if (v := converted(je, a, per_min=spec.per_min)) is not None)
+        if traj is not None and a not in ROTARY_AXES:
+            candidates.extend(v for v in [converted(traj, a, per_min=spec.per_min)] if v is not None)
+        good = [v for v in candidates if v.value > 0]
+        for v in candidates:
+            if v.value <= 0:
+                c.error("IM108", f"{v.how}: a maximum {spec.what} must be greater than 0", v.span)
+        if good:
+            lowest = min(good, key=lambda v: v.value)
+            if in_range(c, lowest.value, lowest.how, lowest.span):
+                how = lowest.how if spec.per_min else lowest.how.replace(" in, x", " in/s^2, x").replace(
+                    " grad, x", " grad/s^2, x")
+                out[a] = Sourced(lowest.value, how, lowest.span)
+    return out
 
 
 def _subroutine_path(ini: IniFile, path: str) -> tuple[tuple[str, ...], str]:

@@ -57,6 +57,9 @@ MAX_REASONS = 20
 #: How much of each straight motion a LinuxCNC blend may use (``BLEND_DIST_FRACTION``, specs/path-modes.md).
 #: The column screen's boxes lie in the box of the two motions whatever this is; the exact regions use it.
 BLEND_FRACTION = Fraction(1, 2)
+#: LinuxCNC's naive-CAM chain (``G64 Q``) holds at most this many points (``emccanon.cc`` ``linkable``: a chain of
+#: more than 100 points takes no more): one merged line spans at most this many programmed motions.
+NAIVE_CHAIN = 101
 
 F0 = Fraction(0)
 Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
@@ -130,6 +133,8 @@ class CornerCheck:
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
         self._seen: set[str] = set()
         self._blocks: list[tuple[int, int]] = []  # the blocks of each reason's two motions
+        self.naive = _NaiveWindows()  # G64 Q without P: corners proved over the merging windows
+        self._naive_modes = 0  # the length of the mode table when it was last searched for G64 Q without P
 
     # ------------------------------------------------------------------ the stream
     def watch(self, chunks: Iterable[Any]) -> Iterator[Any]:
@@ -158,6 +163,7 @@ class CornerCheck:
         (how far the motion was read past it depends on how it was batched, and the verdict is ``unsafe``)."""
         self._flush()
         self._close_stretch()
+        self._naive_close()
         bad = set(violating)
         if bad or upto is not None:
             kept = [(r, blocks) for r, blocks in zip(self.reasons, self._blocks)
@@ -188,12 +194,15 @@ class CornerCheck:
             self.prev = seg
             return
         prev = self.prev
-        if prev is not None and not self.prev_stop:
+        joined = prev is not None and not self.prev_stop
+        if self._naive_tracked():
+            self._naive_track(seg, joined)
+        if prev is not None and joined:
             self._queue(prev, seg, self.mode_of(prev.block))
         mode = self.mode_of(seg.block)
         self.prev, self.prev_stop = seg, not mode.blend
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
-            box = _piece_box(seg)
+            box = _hull_box(seg)
             if box is None:
                 self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
             elif self.stretch is None:
@@ -207,7 +216,7 @@ class CornerCheck:
         elif self.stretch is not None:
             self.stretch[3] = seg  # the motion that ends the run with an exact stop still belongs to it
             lo, hi = self.stretch[0], self.stretch[1]
-            box = _piece_box(seg)
+            box = _hull_box(seg)
             if box is not None:
                 for i in range(len(lo)):
                     lo[i] = min(lo[i], box[0][i])
@@ -219,6 +228,9 @@ class CornerCheck:
 
         The common corner (two straight motions, LinuxCNC) is kept as integers (``SCALE``) on the zones'
         axes: the box of its three points, grown by the mode's bound when it has one."""
+        if _naive_only(mode):
+            self.naive.pending.append((a, b, mode, self.naive.count - 2))
+            return
         if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg) and mode.dialect == "linuxcnc":
             bound = mode.bound()
             if bound is not None or not mode.naive:
@@ -322,6 +334,51 @@ class CornerCheck:
     def _stop(self) -> None:
         self.prev_stop = True
         self._close_stretch()
+        self._naive_close()
+
+    # ------------------------------------------------------------------ G64 Q without P (naive CAM, no tolerance)
+    def _naive_tracked(self) -> bool:
+        """Are motion boxes kept for G64 Q without P (the mode table has had such a mode)?"""
+        if len(self.modes) != self._naive_modes:
+            self._naive_modes = len(self.modes)
+            self.naive.active = self.naive.active or any(_naive_only(m) for _b, m in self.modes)
+        return self.naive.active
+
+    def _naive_track(self, seg: Segment, joined: bool) -> None:
+        """Keep ``seg``'s box in the run's window; prove the corners whose forward window is complete."""
+        nv = self.naive
+        if not joined:
+            self._naive_close()
+        nv.add(_piece_box(seg))
+        while nv.pending and nv.pending[0][3] + NAIVE_CHAIN < nv.count:
+            self._naive_corner(*nv.pending.pop(0))
+
+    def _naive_close(self) -> None:
+        """The run ended (an exact stop, a dwell, the end): prove its waiting corners, start a new window."""
+        nv = self.naive
+        while nv.pending:
+            self._naive_corner(*nv.pending.pop(0))
+        nv.restart()
+
+    def _naive_corner(self, a: Segment, b: Segment, mode: PathMode, ia: int) -> None:
+        """The corner after motion ``ia`` of the run in G64 Q without P (specs/path-modes.md §2): the planner
+        blends, with no tolerance, lines that naive CAM merged from up to NAIVE_CHAIN motions.  The line before
+        the corner ``C`` runs from a programmed point at most NAIVE_CHAIN motions back, the one after to one at
+        most NAIVE_CHAIN ahead, and a blend uses at most half of each, so every point is ``C + (x - C) + (y - C)``
+        with ``x``, ``y`` in the boxes of those windows (for two lines: the triangle of their far ends and C)."""
+        self.corners += 1
+        c = a.end
+        region: Box | None = None
+        tls = (a.tool_length, b.tool_length)
+        if b.start == c:
+            for exact in (False, True):
+                region = self.naive.region(ia, c, exact)
+                if region is not None and self._fits(region, tls, F0):
+                    return
+        self._reason(a, b, mode, region or (c, c),
+                     f"G64 Q without P: LinuxCNC merges up to {NAIVE_CHAIN} motions within Q into one line (naive "
+                     "CAM) and blends the merged lines with no tolerance, using up to half of each, so the corner "
+                     "may be rounded over the motions around it; give P")
 
     def _close_stretch(self) -> None:
         st, self.stretch = self.stretch, None
@@ -503,7 +560,8 @@ class CornerCheck:
         at = np.maximum(np.searchsorted(mode_blocks, chunk.block, side="right") - 1, 0)
         used = [table[k][1] for k in sorted(set(at.tolist()))]
         simple = {int(SegmentKind.LINE), int(SegmentKind.RAPID), int(SegmentKind.ARC), int(SegmentKind.DWELL)}
-        if (not set(np.unique(kinds).tolist()) <= simple or (self.dogleg and (kinds == SegmentKind.RAPID).any())
+        if (self._naive_tracked()  # G64 Q without P: every motion joins the merging windows, one at a time
+                or not set(np.unique(kinds).tolist()) <= simple or (self.dogleg and (kinds == SegmentKind.RAPID).any())
                 or any(m.blend and (m.dialect == "fanuc" and m.tolerance is None or m.bound() is None and m.naive)
                        for m in used)
                 or max(int(np.abs(starts).max()), int(np.abs(ends).max())) >= 2**58):
@@ -699,3 +757,125 @@ def _half_arc_box(seg: Segment, end: bool) -> Any:
         out.append((lo, hi))
     return out[0], out[1], g.ia, g.ib
 
+
+
+def _naive_only(mode: PathMode) -> bool:
+    """LinuxCNC ``G64 Q q`` without P: naive-CAM merging and blends with no tolerance."""
+    return mode.blend and mode.dialect == "linuxcnc" and bool(mode.naive) and not mode.tolerance
+
+
+class _NaiveWindows:
+    """The boxes of a run's last motions, for G64 Q without P: by motion, united per group of SMALL motions (an
+    exact window is its whole groups and the motions at its two ends), and per block of NAIVE_CHAIN motions (a
+    window of NAIVE_CHAIN motions touches at most two blocks: the quick, coarser test)."""
+
+    SMALL = 10
+
+    def __init__(self) -> None:
+        self.active = False
+        self.pending: list[tuple[Segment, Segment, PathMode, int]] = []  # (a, b, mode, index of a)
+        self.count = 0  # motions seen (absolute index of the next one)
+        self.first = 0  # the run's first motion
+        self.boxes: dict[int, Box | None] = {}
+        self.small: dict[int, Box | None] = {}
+        self.blocks: dict[int, Box | None] = {}
+
+    def restart(self) -> None:
+        self.first = self.count
+        self.boxes.clear()
+        self.small.clear()
+        self.blocks.clear()
+
+    def add(self, box: Box | None) -> None:
+        k = self.count
+        self.boxes[k] = box
+        self.boxes.pop(k - 3 * NAIVE_CHAIN, None)
+        for table, size in ((self.small, self.SMALL), (self.blocks, NAIVE_CHAIN)):
+            g = k // size
+            if g in table:
+                table[g] = _union(table[g], box)
+            else:
+                table[g] = box
+                table.pop(g - 3 * NAIVE_CHAIN // size - 1, None)
+        self.count += 1
+
+    def _span(self, lo: int, hi: int, exact: bool) -> Box | None:
+        """A box holding motions ``lo .. hi - 1`` (all of the run): their union, or the union of their blocks."""
+        if exact:
+            n = self.SMALL
+            g0, g1 = -(-lo // n), hi // n  # the whole groups inside
+            if g0 >= g1:
+                parts = [self.boxes.get(k) for k in range(lo, hi)]
+            else:
+                parts = ([self.boxes.get(k) for k in range(lo, g0 * n)] + [self.small.get(g) for g in range(g0, g1)]
+                         + [self.boxes.get(k) for k in range(g1 * n, hi)])
+        else:
+            parts = [self.blocks.get(k) for k in range(lo // NAIVE_CHAIN, (hi - 1) // NAIVE_CHAIN + 1)]
+        out: Box | None = parts[0] if parts else None
+        for p in parts[1:]:
+            out = _union(out, p)
+        return out
+
+    def region(self, ia: int, c: tuple[Fraction, ...], exact: bool) -> Box | None:
+        """The box of ``C + (x - C) + (y - C)``, x in the window before the corner after motion ``ia``, y in the one
+        after (None when a motion has no box)."""
+        before = self._span(max(self.first, ia - NAIVE_CHAIN + 1), ia + 1, exact)
+        after = self._span(ia + 1, min(self.count, ia + NAIVE_CHAIN + 1), exact)
+        if before is None or after is None:
+            return None
+        return (tuple(x + y - z for x, y, z in zip(before[0], after[0], c)),
+                tuple(x + y - z for x, y, z in zip(before[1], after[1], c)))
+
+
+def _union(a: Box | None, b: Box | None) -> Box | None:
+    if a is None or b is None:
+        return None
+    return tuple(map(min, a[0], b[0])), tuple(map(max, a[1], b[1]))
+
+
+def _hull_box(seg: Segment) -> Box | None:
+    """A box holding every machine position of ``seg`` for the hull of a Fanuc run (:func:`_piece_box`, and a
+    polar move's (G12.1) machine X and C: the box of its pieces' enclosures, as ``nczones.prover.polar`` walks
+    them; None when the path comes too near the centre of rotation)."""
+    if seg.kind is not SegmentKind.POLAR:
+        return _piece_box(seg)
+    from ..polar import (
+        CentreCrossing,
+        angle_range,
+        point_angle,
+        polar_move_of,
+        polar_of,
+        radius_range,
+    )
+
+    try:
+        move = polar_move_of(seg)
+    except ValueError:
+        return None
+    e = polar_of(seg)
+    assert e is not None  # polar_move_of(seg) succeeded
+    ix, ic = seg.axes.index(e.linear_axis), seg.axes.index(e.rotary_axis)
+    gx, gc = e.grid
+    lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+    xs, cs = [], []
+    theta = move.start_angle()
+    stack = [(fa, fb, 0) for fa, fb in reversed(move.first_pieces())]
+    try:
+        while stack:
+            fa, fb, depth = stack.pop()
+            bx, by = move.box(fa, fb)
+            ang = angle_range(bx, by, theta.mid())
+            if ang is not None:
+                xs.append(move.x_off + radius_range(bx, by))
+                cs.append(move.c_entry + ang)
+                theta = point_angle(move.point(fb), theta.mid())
+                continue
+            if depth >= 20 or len(stack) > 1000:
+                return None
+            mid = (fa + fb) / 2
+            stack.extend(((mid, fb, depth + 1), (fa, mid, depth + 1)))
+    except CentreCrossing:
+        return None
+    lo[ix], hi[ix] = min(lo[ix], *(x.lo for x in xs)) - gx, max(hi[ix], *(x.hi for x in xs)) + gx
+    lo[ic], hi[ic] = min(lo[ic], *(c.lo for c in cs)) - gc, max(hi[ic], *(c.hi for c in cs)) + gc
+    return tuple(lo), tuple(hi)

@@ -115,3 +115,34 @@ def blend_arc(start: tuple[float, float], corner: tuple[float, float], end: tupl
     sweep = (a1 - a0 + math.pi) % (2 * math.pi) - math.pi  # the short way round (less than half a turn)
     return [(centre[0] + r_plan * math.cos(a0 + sweep * k / samples),
              centre[1] + r_plan * math.sin(a0 + sweep * k / samples)) for k in range(samples + 1)]
+
+
+def naive_cam(start: tuple[float, float], points: list[tuple[float, float]], q: float) -> list[tuple[float, float]]:
+    """The vertices of the lines LinuxCNC's naive CAM sends the planner for the straight feeds from ``start``
+    through ``points`` (``emccanon.cc`` ``see_segment`` / ``linkable`` / ``flush_segments``, v2.9.0-pre1): a point
+    joins the chain while the chain has at most 100 points, it is not the chain's start, and every chained point
+    lies within ``q`` of the line from the chain's start to it; otherwise the chain is sent as one line."""
+    out = [start]
+    chain: list[tuple[float, float]] = []
+    end = start
+
+    def linkable(p: tuple[float, float]) -> bool:
+        if q == 0 or len(chain) > 100 or p == end:
+            return False
+        mx, my = p[0] - end[0], p[1] - end[1]
+        mm = mx * mx + my * my
+        for c in chain:
+            t = max(0.0, min(1.0, ((c[0] - end[0]) * mx + (c[1] - end[1]) * my) / mm))
+            if math.hypot(c[0] - end[0] - t * mx, c[1] - end[1] - t * my) > q:
+                return False
+        return True
+
+    for p in points:
+        if chain and not linkable(p):
+            end = chain[-1]
+            out.append(end)
+            chain = []
+        chain.append(p)
+    if chain:
+        out.append(chain[-1])
+    return out
