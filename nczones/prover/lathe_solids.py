@@ -231,8 +231,10 @@ class LatheSolidsChecker:
         bx, bz = (min(p[0], p[0] + d[0]), max(p[0], p[0] + d[0])), (min(p[1], p[1] + d[1]), max(p[1], p[1] + d[1]))
         for part, fx, rect in rects:
             best = self.clearance.get((part.label(), fx.name))
-            if best is not None and _box_dist2(rect, bx, bz) >= best[0] * best[0]:
-                continue  # cannot meet the fixture nor come closer than the least clearance so far
+            if best is not None:
+                d2 = _box_dist2(rect, bx, bz)
+                if d2 > 0 and d2 >= best[0] * best[0]:
+                    continue  # cannot meet the fixture (apart) nor come closer than the least clearance so far
             t = _open_span(rect, p, d)
             if t is None:
                 self._clear(part, fx, _dist2_min(rect, p, d), seg)
