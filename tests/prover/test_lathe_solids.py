@@ -236,8 +236,9 @@ def programs(draw):
     for _ in range(draw(st.integers(1, 5))):
         kind = draw(st.sampled_from(["line", "line", "arc", "change"]))
         if kind == "change":
-            t = 3 - t
-            lines.append(f"T0{t}0{t}")
+            t = 3 - t  # the offsets differ: the tip moves relative to the program's frame, so go somewhere known
+            x, z = draw(coord_x), draw(coord_z)
+            lines.append(f"T0{t}0{t}\nG00 X{float(2 * x)} Z{float(z - 130)}")
         elif kind == "line":
             x, z = draw(coord_x), draw(coord_z)
             lines.append(f"G0{draw(st.sampled_from([0, 1]))} X{float(2 * x)} Z{float(z - 130)} F0.2")
