@@ -218,11 +218,11 @@ parts = [
 name = "tailstock quill"
 kind = "cylinder"
 radius = "20"
-min_z = "190"
+min_z = "260"
 """
 
-coord_x = st.integers(-20, 160).map(lambda v: Fraction(v, 2))
-coord_z = st.integers(40, 360).map(lambda v: Fraction(v, 2))
+coord_x = st.integers(-20, 120).map(lambda v: Fraction(v, 2))
+coord_z = st.integers(120, 400).map(lambda v: Fraction(v, 2))
 
 
 @st.composite
@@ -231,9 +231,9 @@ def programs(draw):
     arcs (a quarter or half turn about a drawn centre, the end exactly on the circle) around the chuck, the
     jaws and the tailstock quill, with tool 1 or 2 and maybe a change between them."""
     t = draw(st.sampled_from([1, 2]))
-    x, z = Fraction(60), Fraction(170)
+    x, z = Fraction(60), Fraction(150)
     lines = [f"G21 G18 G99 G40\nT0{t}0{t}", f"G00 X{float(2 * x)} Z{float(z - 130)}"]
-    for _ in range(draw(st.integers(1, 5))):
+    for _ in range(draw(st.integers(1, 4))):
         kind = draw(st.sampled_from(["line", "line", "arc", "change"]))
         if kind == "change":
             t = 3 - t  # the offsets differ: the tip moves relative to the program's frame, so go somewhere known
