@@ -167,8 +167,9 @@ class LatheSolidsChecker:
         return sx, sz
 
     def _rects(self, parts: tuple[LathePart, ...], shift: tuple[Fraction, Fraction]) -> list:
-        """``(part, fixture, rect)`` for every part, fixture and section rectangle: the open rectangle of
-        controlled positions where the part enters the fixture (module docstring)."""
+        """``(part, fixture, rect, key)`` for every part, fixture and section rectangle: the open rectangle of
+        controlled positions where the part enters the fixture (module docstring); ``key`` names the pair in
+        :attr:`clearance`."""
         key = (parts, shift)
         out = self._pairs.get(key)
         if out is None:
@@ -176,10 +177,11 @@ class LatheSolidsChecker:
             sx, sz = shift
             for part in parts:
                 a, b, c, d = part.rect()
+                label = part.label()
                 for fx in self.solids.fixtures:
                     for f0, f1 in fx.sections():
                         out.append((part, fx, (_add(f0, sx - b), _add(f1, sx - a), _add(fx.z0, sz - d),
-                                               _add(fx.z1, sz - c))))
+                                               _add(fx.z1, sz - c)), (label, fx.name)))
             self._pairs[key] = out
         return out
 
@@ -216,8 +218,7 @@ class LatheSolidsChecker:
         self._blocks.add(seg.block)
         self.reasons.append(Reason(message, seg.span, seg.block, code))
 
-    def _clear(self, part: LathePart, fx: LatheFixture, d2: Fraction, seg: Segment) -> None:
-        key = (part.label(), fx.name)
+    def _clear(self, key: tuple[str, str], d2: Fraction, seg: Segment) -> None:
         best = self.clearance.get(key)
         if best is not None and d2 >= best[0] * best[0]:
             return
@@ -229,17 +230,17 @@ class LatheSolidsChecker:
         p = (p0[self.ix], p0[self.iz])
         d = (p1[self.ix] - p[0], p1[self.iz] - p[1])
         bx, bz = (min(p[0], p[0] + d[0]), max(p[0], p[0] + d[0])), (min(p[1], p[1] + d[1]), max(p[1], p[1] + d[1]))
-        for part, fx, rect in rects:
-            best = self.clearance.get((part.label(), fx.name))
+        for part, fx, rect, key in rects:
+            best = self.clearance.get(key)
             if best is not None:
                 d2 = _box_dist2(rect, bx, bz)
                 if d2 > 0 and d2 >= best[0] * best[0]:
                     continue  # cannot meet the fixture (apart) nor come closer than the least clearance so far
             t = _open_span(rect, p, d)
             if t is None:
-                self._clear(part, fx, _dist2_min(rect, p, d), seg)
+                self._clear(key, _dist2_min(rect, p, d), seg)
                 continue
-            self.clearance[(part.label(), fx.name)] = (F0, seg.line)
+            self.clearance[key] = (F0, seg.line)
             path = tuple(a + t * (b - a) for a, b in zip(p0, p1))
             self._report(seg, part, fx, rect, path, tau0 + t * (tau1 - tau0), exact=True)
             return True
@@ -317,17 +318,16 @@ class LatheSolidsChecker:
             bx, bz = self._piece_box(seg, g, piece)
             hit = None
             clear = []
-            for part, fx, rect in rects:
-                d2 = _box_dist2(rect, bx, bz)
-                if _meets_open(rect, bx, bz):
-                    hit = (part, fx, rect)
+            for entry in rects:
+                if _meets_open(entry[2], bx, bz):
+                    hit = entry
                     break
-                clear.append((part, fx, d2))
-            if hit is None:
-                for part, fx, d2 in clear:
-                    self._clear(part, fx, d2, seg)
+                clear.append((entry[3], _box_dist2(entry[2], bx, bz)))
+            if hit is None:  # a clearance counts from a piece that proves every pair
+                for key, d2 in clear:
+                    self._clear(key, d2, seg)
                 continue
-            part, fx, rect = hit
+            part, fx = hit[0], hit[1]
             if piece is not None:
                 for v in piece:  # an exact witness at a piece's end (a rational point of the circle)
                     pt = list(seg.start)
