@@ -305,3 +305,18 @@ def test_every_violating_block_is_reported():
     text = HEAD + "T0101\nG00 X30. Z5.\nG01 Z-80. F0.1\nG00 Z5.\nG01 Z-80.\nG00 Z5.\nM30\n%\n"
     r = verify_text(text, _lathe())
     assert [v.line for v in r.violations] == [6, 7, 8, 9]
+
+
+@pytest.mark.parametrize("thickness, expected", [("16", "unsafe"), ("0", "safe")])
+def test_a_parts_thickness_reaches_further_from_the_axis(thickness, expected):
+    # a blade X -1..0 from the tip at radius 29 (X58 in G7), Z 0..10, beside the jaws (radii 30..70, Z 60..90):
+    # in the plane it reaches radius 29 only, but 16 thick (8 either side of the plane) its corner is
+    # √(29² + 8²) = √905 > 30 from the axis: inside the jaws.  The proof grows it to X -9..8 (radius 37)
+    m = parse_machine(LINUXCNC.replace('{ name = "bar holder", x = ["-30", "45"], z = ["35", "95"] }',
+                                       f'{{ name = "blade", x = ["-1", "0"], z = ["0", "10"], thickness = "{thickness}" }}'),
+                      "m.toml")
+    blade = machine_solids(m).tools[1][0]
+    jaws = machine_solids(m).fixtures[0]
+    assert part_meets(blade, jaws, Fraction(29), Fraction(70)) == (expected == "unsafe")  # the oracle in space
+    r = verify_text("G18 G21 G90 G54\nT1 M6\nG43 H1\nG0 X58 Z5\nG1 Z-60 F100\nG0 Z5\nM30\n", m)
+    assert r.verdict.label == expected, (r.reasons, r.violations)
