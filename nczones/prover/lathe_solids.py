@@ -152,6 +152,8 @@ class LatheSolidsChecker:
     clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
     _blocks: set[int] = field(default_factory=set)
     _pairs: dict[tuple, list] = field(default_factory=dict)
+    #: id of a rectangle of :attr:`_pairs` -> (the clearance it was grown by, the grown bounds)
+    _grown: dict[int, tuple] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         axes = self.machine.axis_names
@@ -226,16 +228,26 @@ class LatheSolidsChecker:
         if best is None or c < best[0]:
             self.clearance[key] = (c, seg.line)
 
+    def _apart(self, rect: Rect, c: Fraction, bx: tuple[Fraction, Fraction], bz: tuple[Fraction, Fraction]) -> bool:
+        """Is the box ``bx × bz`` at least ``c`` (>= 0) from ``rect`` on X or on Z?  Then no point of it is in
+        the open rectangle (it touches at most) and none is nearer than ``c``: comparisons with the rectangle
+        grown by ``c``, kept until ``c`` changes."""
+        grown = self._grown.get(id(rect))
+        if grown is None or grown[0] is not c:
+            grown = (c, _add(rect[0], -c), _add(rect[1], c), _add(rect[2], -c), _add(rect[3], c))
+            self._grown[id(rect)] = grown
+        _, e0, e1, e2, e3 = grown
+        return ((e0 is not None and bx[1] <= e0) or (e1 is not None and bx[0] >= e1)
+                or (e2 is not None and bz[1] <= e2) or (e3 is not None and bz[0] >= e3))
+
     def _line(self, seg: Segment, rects: list, p0: tuple, p1: tuple, tau0: Fraction, tau1: Fraction) -> bool:
         p = (p0[self.ix], p0[self.iz])
         d = (p1[self.ix] - p[0], p1[self.iz] - p[1])
         bx, bz = (min(p[0], p[0] + d[0]), max(p[0], p[0] + d[0])), (min(p[1], p[1] + d[1]), max(p[1], p[1] + d[1]))
         for part, fx, rect, key in rects:
             best = self.clearance.get(key)
-            if best is not None:
-                d2 = _box_dist2(rect, bx, bz)
-                if d2 > 0 and d2 >= best[0] * best[0]:
-                    continue  # cannot meet the fixture (apart) nor come closer than the least clearance so far
+            if best is not None and self._apart(rect, best[0], bx, bz):
+                continue  # cannot enter the fixture nor come closer than the least clearance so far
             t = _open_span(rect, p, d)
             if t is None:
                 self._clear(key, _dist2_min(rect, p, d), seg)
