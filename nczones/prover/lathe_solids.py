@@ -64,7 +64,7 @@ def _add(v: Bound, d: Fraction) -> Bound:
     return None if v is None else v + d
 
 
-def _open_span(rect: Rect, p: tuple[Fraction, Fraction], d: tuple[Fraction, Fraction]) -> tuple | None:
+def _open_span(rect: Rect, p: tuple[Fraction, Fraction], d: tuple[Fraction, Fraction]) -> Fraction | None:
     """``t`` in ``[0, 1]`` strictly inside ``rect`` along ``p + d t``: a rational ``t`` in the middle of the
     overlap, or None when the piece stays out of the open rectangle."""
     lo: Fraction | None = None

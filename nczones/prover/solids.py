@@ -436,7 +436,8 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     from .result import Verdict
 
     lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
-    checker: Any = LatheSolidsChecker(machine, solids) if lathe else SolidsChecker(machine, solids)
+    checker: Any = (LatheSolidsChecker(machine, solids) if isinstance(solids, LatheSolids)
+                    else SolidsChecker(machine, solids))
     meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 
     def tee() -> Iterator[Any]:
