@@ -258,8 +258,10 @@ def parse_spindle_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Par
 
 def _solids_axes(rd: Any, axes: tuple[str, ...], section: str) -> None:
     if not all(a in axes for a in "XYZ"):
+        lathe = ("; on a lathe (X and Z) the turret tool is [[tools]] rectangles and the fixtures [[fixtures]] "
+                 "chucks (specs/turning.md): [spindle] has no lathe form") if is_lathe_axes(axes) else ""
         rd.report("ZN164", f"[{section}]: solids need the axes X, Y and Z (a vertical tool axis); this machine "
-                  f"has {', '.join(axes)}", rd.loc.header(rd.loc.section(section)))
+                  f"has {', '.join(axes)}{lathe}", rd.loc.header(rd.loc.section(section)))
 
 
 def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fixture, ...]:
