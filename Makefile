@@ -42,6 +42,9 @@ demo: $(RUNTIME)
 	$(BIN)/nczones verify specs/examples/programs/holder_clears_vise.ngc --machine specs/machines/mill_solids.toml
 	$(BIN)/nczones verify specs/examples/programs/holder_hits_vise.ngc --machine specs/machines/mill_solids.toml; \
 	  test $$? -eq 1  # intentionally unsafe: the cutter clears the vise jaw, its Ø63 holder does not
+	$(BIN)/nczones verify specs/examples/programs/boring_bar_clears_chuck.nc --machine specs/machines/lathe_solids.toml
+	$(BIN)/nczones verify specs/examples/programs/boring_bar_hits_chuck.nc --machine specs/machines/lathe_solids.toml; \
+	  test $$? -eq 1  # intentionally unsafe: the boring bar's tip clears the jaws, its holder does not
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q -n 2 $(PYTEST_ARGS)

@@ -253,6 +253,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("ZN162", _E, _MF, "[[tools]]: number not a tool number 0..9999, or a tool described twice"),
     Code("ZN163", _E, _MF, "[[fixtures]]: kind not box / cylinder, or an empty box or cylinder"),
     Code("ZN164", _E, _MF, "tool or fixture solids on a machine without the axes X, Y and Z"),
+    Code("ZN165", _E, _MF, "a lathe tool part: x or z not a [low, high] pair with low below high"),
+    Code("ZN166", _E, _MF, "a lathe fixture: kind not chuck / cylinder, or an empty ring or height range"),
     # -- IM: import-machine
     Code("IM100", _E, _MI, "the configuration cannot be read (missing, a directory, no permission, not UTF-8, "
                            "binary)"),

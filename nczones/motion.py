@@ -46,7 +46,7 @@ if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to t
 
 __all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "PathMode", "arc_plane_axes",
            "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation", "Payload", "Developed",
-           "TipOffset", "SplineCurve", "PolarData", "tip_offset"]
+           "TipOffset", "SplineCurve", "PolarData", "TurretTool", "tip_offset"]
 
 
 class SegmentKind(enum.IntEnum):
@@ -271,9 +271,17 @@ def tip_offset(extra: tuple[Payload, ...]) -> dict[str, Fraction]:
     return {}
 
 
+@dataclass(frozen=True, slots=True)
+class TurretTool:
+    """The turret tool a Fanuc lathe motion runs with (the T word's tool number, not its offset), carried when
+    the machine describes turret tool solids (:mod:`nczones.lathe_solids`)."""
+
+    number: int
+
+
 #: What a segment may carry besides its geometry (``Segment.extra``), one value of each type at most.
-Payload = Developed | TipOffset | SplineCurve | PolarData
-_P = TypeVar("_P", Developed, TipOffset, SplineCurve, PolarData)
+Payload = Developed | TipOffset | SplineCurve | PolarData | TurretTool
+_P = TypeVar("_P", Developed, TipOffset, SplineCurve, PolarData, TurretTool)
 
 
 @dataclass(frozen=True, slots=True)
@@ -322,7 +330,7 @@ class Segment:
     extra : tuple of Payload
         Typed data a motion kind or mode needs besides the fields above, read with :meth:`payload`:
         :class:`SplineCurve` (G5 family), :class:`Developed` (G07.1), :class:`PolarData` (G12.1),
-        :class:`TipOffset` (a lathe tool's offsets off the tool axis).
+        :class:`TipOffset` (a lathe tool's offsets off the tool axis), :class:`TurretTool` (a lathe's T tool).
     frame : ProgramFrame or None
         The program's coordinate frame at the block (work offset, G92/G52, rotation, diameter, units, tool
         offsets), for reports of a violation's point in program coordinates; None when the producer did

@@ -24,6 +24,7 @@ from types import MappingProxyType
 from typing import Any
 
 from .exact import format_decimal
+from .lathe_solids import is_lathe_axes, lathe_solids, parse_lathe_fixtures, parse_lathe_tools
 from .machine import SECTION_PARSERS, Machine, as_written, read_number
 from .zones import BoxZone, PolygonZone, SteppedZone
 from .zones.kinds import KindTable
@@ -102,6 +103,8 @@ def machine_solids(machine: Machine) -> Solids | None:
 
     Forbidden zones become fixtures through :data:`ZONE_FIXTURE` (a forbid box is a fixture box); a forbidden
     zone of a kind without an entry there is named in ``unmodelled``, and the verdict cannot be ``safe``."""
+    if is_lathe_axes(machine.axis_names):  # a lathe: turret tools and solids of revolution
+        return lathe_solids(machine)  # type: ignore[return-value]
     sec = machine.sections
     tools = sec.get("tools") or {}
     spindle = sec.get("spindle") or ()
@@ -212,6 +215,8 @@ def parse_tools_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[int
         rd.report("ZN161", f"[[tools]]: expected an array of tables ([[tools]]), got {as_written(raw)}",
                   rd.loc.key("tools", None))
         return MappingProxyType(out)
+    if is_lathe_axes(axes):  # a lathe's turret tools: rectangles relative to the tip (nczones.lathe_solids)
+        return parse_lathe_tools(rd, raw)  # type: ignore[return-value]
     _solids_axes(rd, axes, "tools")
     for k, t in enumerate(raw):
         header = rd.loc.section("tools", k)
@@ -253,8 +258,10 @@ def parse_spindle_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Par
 
 def _solids_axes(rd: Any, axes: tuple[str, ...], section: str) -> None:
     if not all(a in axes for a in "XYZ"):
+        lathe = ("; on a lathe (X and Z) the turret tool is [[tools]] rectangles and the fixtures [[fixtures]] "
+                 "chucks (specs/turning.md): [spindle] has no lathe form") if is_lathe_axes(axes) else ""
         rd.report("ZN164", f"[{section}]: solids need the axes X, Y and Z (a vertical tool axis); this machine "
-                  f"has {', '.join(axes)}", rd.loc.header(rd.loc.section(section)))
+                  f"has {', '.join(axes)}{lathe}", rd.loc.header(rd.loc.section(section)))
 
 
 def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fixture, ...]:
@@ -264,6 +271,8 @@ def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fi
         rd.report("ZN161", f"[[fixtures]]: expected an array of tables, got {as_written(raw)}",
                   rd.loc.key("fixtures", None))
         return ()
+    if is_lathe_axes(axes):  # a lathe: solids of revolution about the spindle axis (nczones.lathe_solids)
+        return parse_lathe_fixtures(rd, raw)  # type: ignore[return-value]
     _solids_axes(rd, axes, "fixtures")
     for k, t in enumerate(raw):
         header = rd.loc.section("fixtures", k)

@@ -22,7 +22,7 @@ Public API
 >>> from nczones.fleet import load_project
 >>> project = load_project("specs/examples/library")
 >>> len(project.machines), len({c.program for c in project.cells()}) >= 30
-(13, True)
+(14, True)
 """
 
 from __future__ import annotations

@@ -86,6 +86,27 @@ def _zone(out: list[str], axes: tuple[str, ...], z: ZoneDraft) -> None:
             out.append(f"{side} = {{ {', '.join(items)} }}")
 
 
+def _tool_solids(out: list[str], im: ImportedMachine) -> None:
+    """The tools whose table gives a diameter, as ``[[tools]]`` solids written commented out: a tool table
+    gives the cutter's diameter but neither its length nor the holder, and a made-up length would make a
+    proof about an invented tool (specs/machine-import.md, "Tool solids")."""
+    known = [(n, d) for n, d in sorted(im.tool_diameters.items()) if d.value > 0]
+    if not known or not all(a in im.axes for a in "XYZ"):
+        return  # a lathe's turret tools are rectangles the tool table has nothing for
+    out.append("")
+    out.append("# [[tools]] is not written: a tool solid also needs the cutter's length and the holder's diameter and")
+    out.append("# length, which the tool table does not give (its Z is the whole tool's length below the gauge line).")
+    out.append("# What the table gives, as the section's parts (replace each \"?\", add the holder, remove the '#'s;")
+    out.append("# specs/machine-file.md, \"Tools and fixtures as solids\"):")
+    for n, d in known:
+        length = im.tool_lengths.get(n)
+        out.append("# [[tools]]")
+        out.append("# " + _line(f"number = {n}", f"tool length {format_decimal(length.value)} mm below the gauge "
+                                 "line: the parts from the tip up to the gauge line add up to it" if length is not None else ""))
+        out.append("# " + _line(f"parts = [{{ name = \"cutter\", diameter = {_q(d.value)}, length = \"?\" }}]",
+                                _how(d)))
+
+
 def render_toml(im: ImportedMachine, output: str | None = None) -> str:
     """The machine file text (ends with a newline); ``output`` is where it is written (the folders of
     ``[linuxcnc] subroutine_path`` are relative to it; to the source's folder without one)."""
@@ -133,6 +154,7 @@ def render_toml(im: ImportedMachine, output: str | None = None) -> str:
             out.append(f"[{header}]")
             for n in sorted(registers):
                 out.append(_line(f"{prefix}{n} = {_q(registers[n].value)}", _how(registers[n])))
+    _tool_solids(out, im)
     folders, how = im.subroutine_path
     if folders:
         # relative to where the machine file goes; without -o, as if beside the INI (where LinuxCNC reads them)

@@ -69,6 +69,14 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     " [[tools]] entry numbered like the active tool length register (G43 H<n>: tool n) and its tip is at "
     "machine Z minus the active tool length; fixtures are where the machine file puts them (forbid box "
     "zones included).",
+    "Lathe tool solids (a lathe's [[tools]] parts): the tool lies on centre height (its tip and its "
+    "parts' section in the plane through the spindle axis, Y = 0); every part is the rectangle the "
+    "machine file gives, enclosing the real insert, bar or holder in that plane (a round bar along Z by "
+    "its diameter), grown by half its thickness across it; the tool at the turret is the [[tools]] entry "
+    "of the T word's tool number (Fanuc) or of the tool length register (LinuxCNC) and its tip is the "
+    "controlled point minus the tool offsets; the other stations of the turret carry nothing that reaches "
+    "a fixture; the fixtures are solids of revolution about the spindle axis (a forbid box zone "
+    "revolved).",
     "Fanuc dialect: a tool change moves no axis: M06 on a machining centre and the T code that indexes a "
     "lathe's turret (with tool_offset_motion = \"shift\") only change the tool and its offsets, unless "
     "[macros] calls a program for them, whose moves are proved; the machine builder's tool change motion and "

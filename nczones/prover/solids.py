@@ -430,10 +430,15 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     from dataclasses import replace
 
     from ..exact import format_decimal
+    from ..lathe_solids import LatheSolids
     from ..motion import segments_of
+    from .lathe_solids import CLEARANCE_MEANING, LatheSolidsChecker
     from .result import Verdict
 
-    checker = SolidsChecker(machine, solids)
+    lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
+    checker: Any = (LatheSolidsChecker(machine, solids) if isinstance(solids, LatheSolids)
+                    else SolidsChecker(machine, solids))
+    meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 
     def tee() -> Iterator[Any]:
         for item in motion:
@@ -467,7 +472,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
         verdict = Verdict.UNKNOWN
     notes = tuple(
         f"least clearance: {part} is at least {format_decimal(Fraction(math.floor(c * 1000), 1000))} mm from "
-        f"`{fx}` at line {line} (horizontal distance while their heights overlap, a certified lower bound)"
+        f"`{fx}` at line {line} ({meaning})"
         for (part, fx), (c, line) in sorted(checker.clearance.items()) if c >= 0)
     extra = dict(result.extra)
     extra["clearance"] = tuple((part, fx, c, line) for (part, fx), (c, line) in sorted(checker.clearance.items()))

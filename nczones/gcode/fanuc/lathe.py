@@ -31,7 +31,7 @@ from typing import Any
 
 from ...exact import Interval, is_square
 from ...machine import Machine, ToolOffset
-from ...motion import Plane, PolarData, SegmentKind, TipOffset
+from ...motion import Plane, PolarData, SegmentKind, TipOffset, TurretTool
 from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ..blocks import Block, ShapeBlock, Word
 from ..interpreter import AXIS_LETTERS, StopProgram, dadd, fmt_number, gkey, gname, qadd
@@ -191,6 +191,8 @@ class FanucLatheInterpreter(FanucInterpreter):
         #: the thread chamfer in leads: G76's first block (P..rr..), else parameter 5130
         self.thread_leads: Fraction | None = None
         self._tip_extra: tuple[TipOffset, ...] = ()
+        #: ``(TurretTool(n),)`` after ``T`` on a machine with turret tool solids (the tool, not the offset)
+        self._turret_extra: tuple[TurretTool, ...] = ()
         #: after a G70-G73 cycle whose shape changes the group-01 mode: the modes the control may be in (the
         #: one before the cycle, the shape's last); None when there is no doubt
         self.modes_after_cycle: frozenset[int] | None = None
@@ -223,9 +225,10 @@ class FanucLatheInterpreter(FanucInterpreter):
     def emit(self, kind: SegmentKind, end: list[Fraction], **kw: Any) -> None:
         n = len(self.emitted)
         super().emit(kind, end, **kw)
-        if self._tip_extra and len(self.emitted) > n:
+        more = self._tip_extra + self._turret_extra
+        if more and len(self.emitted) > n:
             seg = self.emitted[-1]
-            self.emitted[-1] = replace(seg, extra=seg.extra + self._tip_extra)
+            self.emitted[-1] = replace(seg, extra=seg.extra + more)
 
     def _grid(self, i: int) -> Fraction:
         """The least increment of axis ``i`` in mm of machine coordinates (half of it on a diameter axis)."""
@@ -640,6 +643,8 @@ class FanucLatheInterpreter(FanucInterpreter):
         n = int(t)
         self.tool_selected = n // 100
         self.tool_in_spindle = n // 100
+        if self.machine.sections.get("tools"):  # turret tool solids (nczones.lathe_solids) follow the tool
+            self._turret_extra = (TurretTool(n // 100),)
         number = n % 100
         if number == self.offset_number:
             return
