@@ -33,8 +33,7 @@ from typing import Any
 from ..exact import format_decimal
 from ..lathe_solids import LatheFixture, LathePart, LatheSolids, turret_tool
 from ..machine import Machine
-from ..motion import Segment, SegmentKind
-from ..zones import tip_offset
+from ..motion import Segment, SegmentKind, tip_offset
 from .geometry import (
     arc_bases,
     arc_geom,
