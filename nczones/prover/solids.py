@@ -173,6 +173,9 @@ class SolidsChecker:
     reasons: list[Reason] = field(default_factory=list)
     #: (part label, fixture name) -> (least clearance lower bound, line)
     clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
+    #: block -> (the active parts, the tool length, the part, the fixture) of each solid violation, for the
+    #: report's drawing of the tool at the contact (:mod:`nczones.report.solids_view`)
+    contacts: dict[int, tuple[tuple[Part, ...], Fraction, Part, Fixture]] = field(default_factory=dict)
     _blocks: set[int] = field(default_factory=set)
     _arc_witness: bool = False
     _labels: dict[Part, str] = field(default_factory=dict)
@@ -305,6 +308,7 @@ class SolidsChecker:
         note = (f"{part.label()} enters `{fx.name}` at {where}, {pt}, {format_decimal(depth, 3)} mm deep "
                 f"(contact point X{format_decimal(cx, 4)} Y{format_decimal(cy, 4)} Z{format_decimal(cz, 4)})")
         self._blocks.add(seg.block)
+        self.contacts[seg.block] = (self.solids.parts_for(seg.tool_register) or (part,), seg.tool_length, part, fx)
         self.violations.append(Violation(
             block=seg.block, span=seg.span, zone=fx.name, point=(("X", cx), ("Y", cy), ("Z", cz)),
             path_point=tuple(zip(axes, path)), parameter=tau, parameter_exact=not self._arc_witness,
@@ -470,6 +474,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
         f"`{fx}` at line {line} (horizontal distance while their heights overlap, a certified lower bound)"
         for (part, fx), (c, line) in sorted(checker.clearance.items()) if c >= 0)
     extra = dict(result.extra)
+    extra["solid_contacts"] = dict(checker.contacts)
     extra["clearance"] = tuple((part, fx, c, line) for (part, fx), (c, line) in sorted(checker.clearance.items()))
     return replace(result, verdict=verdict, violations=violations, reasons=reasons, notes=result.notes + notes,
                    extra=extra)
