@@ -27,6 +27,7 @@ heights overlap (the distance between two vertical solids at overlapping heights
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
@@ -233,7 +234,7 @@ class SolidsChecker:
             self._batch_size = min(SCREEN_BATCH, 2 * self._batch_size)
             screened = needs_exact_columns(chunk, a, b, (self.ix, self.iy, self.iz), parts, self.solids.fixtures,
                                            self._best)
-            self._settle(screened, lambda k, lo=a: next(iter(chunk.rows(lo + k, lo + k + 1).segments())))
+            self._settle(screened, functools.partial(_row_segment, chunk, a))
             a = b
 
     def _best(self, part: Part, fx: Fixture) -> Fraction | None:
@@ -520,6 +521,11 @@ class SolidsChecker:
         for part, fx, gmin in clear:
             self._clear(part, fx, gmin, seg)
         return None
+
+
+def _row_segment(chunk: MotionChunk, base: int, k: int) -> Segment:
+    """Row ``base + k`` of a column chunk as a segment."""
+    return next(iter(chunk.rows(base + k, base + k + 1).segments()))
 
 
 def _rect_gap2(fx: Fixture, bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:

@@ -72,7 +72,7 @@ def _walk(seed: int, n: int) -> str:
     return "\n".join(out) + "\nM30\n"
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow,
                                                                  HealthCheck.function_scoped_fixture])
 @given(text=programs())
 def test_screen_agrees_with_the_exact_proof_short(text, monkeypatch):
@@ -80,7 +80,7 @@ def test_screen_agrees_with_the_exact_proof_short(text, monkeypatch):
     assert _facts(screened) == _facts(exact), text
 
 
-@pytest.mark.parametrize("seed, machine", [(1, ORACLE_MACHINE), (2, ORACLE_MACHINE), (3, OFF_GRID)])
+@pytest.mark.parametrize("seed, machine", [(2, ORACLE_MACHINE), (3, OFF_GRID)])
 def test_screen_agrees_with_the_exact_proof_columns(seed, machine, monkeypatch):
     text = _walk(seed, 700)  # > 512 lines: the vectorized fast path's column chunks
     exact, screened = _both(text, machine, monkeypatch)

@@ -14,18 +14,14 @@ from pathlib import Path
 
 import pytest
 
-from nczones.replay import replay_file
+from nczones.machine import load_machine
+from nczones.prover import verify
+from nczones.prover.render import to_json_dict
+from nczones.replay import ReplayError, replay_report
 
 ROOT = Path(__file__).resolve().parents[2]
 EX = ROOT / "specs" / "examples"
 GOLDEN = EX / "reports" / "holder_hits_vise.json"
-
-
-def _replay(tmp_path: Path, doc: dict) -> subprocess.CompletedProcess:
-    report = tmp_path / "r.json"
-    report.write_text(json.dumps(doc))
-    return subprocess.run([sys.executable, "-m", "nczones", "replay", str(report)], capture_output=True, text=True,
-                          cwd=ROOT)
 
 
 def test_the_holder_example_replays_confirmed():
@@ -48,21 +44,21 @@ def test_the_holder_example_replays_confirmed():
     # inside the jaw and under the holder's axis, but below its bottom 115 - 60 = 55
     ({"X": "102", "Y": "40", "Z": "54"}, "is not inside the part 'holder'"),
 ])
-def test_a_moved_witness_is_not_reproduced(tmp_path, point, why):
+def test_a_moved_witness_is_not_reproduced(point, why):
+    # (the command's exit status for a check not reproduced, 1, is tested in tests/report/test_replay.py)
     doc = json.loads(GOLDEN.read_text())
     doc["violations"] = doc["violations"][:1]
     doc["violations"][0]["point_exact"] = point
-    r = _replay(tmp_path, doc)
-    assert r.returncode == 1, r.stdout + r.stderr
-    assert "NOT REPRODUCED" in r.stdout and why in r.stdout
+    (check,) = replay_report(doc, base=str(ROOT))
+    assert not check.confirmed and why in check.message, check.message
 
 
-def test_a_path_point_off_the_motion_is_not_reproduced(tmp_path):
+def test_a_path_point_off_the_motion_is_not_reproduced():
     doc = json.loads(GOLDEN.read_text())
     doc["violations"] = doc["violations"][:1]
     doc["violations"][0]["path_point_exact"] = {"X": "81", "Y": "40", "Z": "115"}  # line 6 runs at X80
-    r = _replay(tmp_path, doc)
-    assert r.returncode == 1 and "is not on the line of block 4" in r.stdout
+    (check,) = replay_report(doc, base=str(ROOT))
+    assert not check.confirmed and "is not on the line of block 4" in check.message
 
 
 def test_an_arc_contact_replays(tmp_path):
@@ -72,25 +68,22 @@ def test_an_arc_contact_replays(tmp_path):
     prog = tmp_path / "arc.ngc"
     prog.write_text("G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X60 Y0 Z100\nG1 Z10 F300\nG2 X100 Y-40 I0 J-40\n"
                     "G0 Z100\nM30\n")
-    out = subprocess.run([sys.executable, "-m", "nczones", "verify", str(prog), "--machine",
-                          "specs/machines/mill_solids.toml", "--format", "json"], capture_output=True, text=True,
-                         cwd=ROOT)
-    doc = json.loads(out.stdout)
+    machine = load_machine(ROOT / "specs/machines/mill_solids.toml")
+    doc = to_json_dict(verify(str(prog), machine))
     assert doc["verdict"] == "unsafe" and doc["violations"][0]["segment_kind"] == "arc"
-    report = tmp_path / "arc.json"
-    report.write_text(out.stdout)
-    checks = replay_file(str(report), base=str(ROOT))
+    checks = replay_report(doc)
     assert checks and all(c.confirmed and c.exact for c in checks), [c.message for c in checks]
 
 
-def test_malformed_solid_violations_are_input_errors(tmp_path):
+def test_malformed_solid_violations_are_input_errors():
     doc = json.loads(GOLDEN.read_text())
     doc["violations"][0]["zones"] = []
-    r = _replay(tmp_path, doc)
-    assert r.returncode == 2 and "error[RP106]" in r.stderr
+    with pytest.raises(ReplayError) as err:
+        replay_report(doc, base=str(ROOT))
+    assert err.value.code == "RP106"
     # a solid violation against a machine without solids (the grinder of notch_dip)
     doc = json.loads((EX / "reports" / "notch_dip.json").read_text())
-    v = doc["violations"][0]
-    v.update(kind="solid", zones=["holder"], point_exact={"X": "0", "Y": "0", "Z": "0"})
-    r = _replay(tmp_path, doc)
-    assert r.returncode == 2 and "error[RP105]" in r.stderr, r.stdout + r.stderr
+    doc["violations"][0].update(kind="solid", zones=["holder"], point_exact={"X": "0", "Y": "0", "Z": "0"})
+    with pytest.raises(ReplayError) as err:
+        replay_report(doc, base=str(ROOT))
+    assert err.value.code == "RP105"

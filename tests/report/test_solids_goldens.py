@@ -41,7 +41,12 @@ def test_solids_goldens(name, program):
     check_golden(f"{name}.txt", render_text(result, deterministic=True, resolution=resolution_of(m)))
     doc = to_json_dict(result, deterministic=True)
     check_golden(f"{name}.json", _here(json.dumps(doc, indent=2, ensure_ascii=False) + "\n"))
-    check_golden(f"{name}.html", _here(_page_text(render_html(result, m, str(EX / program), deterministic=True))))
+    page = render_html(result, m, str(EX / program), deterministic=True)
+    check_golden(f"{name}.html", _here(_page_text(page)))
+    # the drawings (checked from their data in tests/report/test_solids_view.py) are on the page: the clamp
+    # (a [[fixtures]] cylinder no zone draws) always, the tool at the contact where the holder hits
+    assert 'fixture-clamp"' in page
+    assert ('contact-part-1"' in page and "tool part entering it" in page) == name.startswith("unsafe")
     drawn = [{"violation": i, "line": v.line, "fixture": fx.name,
               "parts": [{"name": s.name, "entering": hit, "centre": [str(c) for c in s.centre],
                          "radius": str(s.radius), "z": [str(s.z0), str(s.z1)]} for s, hit in parts]}

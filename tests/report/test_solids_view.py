@@ -97,18 +97,10 @@ def test_the_3d_view_draws_the_witness_inside_the_part_and_the_fixture(hits):
             assert ring.contains_point(q[:2]) and min(t["z"]) <= q[2] <= max(t["z"]), (i, t["name"])
 
 
-def test_the_fixed_program_draws_the_fixtures_and_no_contact():
-    result, m = run_example(CLEARS, "mill_solids.toml")
-    assert result.verdict.label == "safe"
-    assert contact_solids(result) == []
-    page = render_html(result, m, str(EX / CLEARS))
-    assert "fixture-clamp" in page and "contact-part" not in page
-
-
-def test_the_html_report_shows_the_tool_at_the_contact(hits):
-    result, m = hits
-    page = render_html(result, m, str(EX / HITS))
-    assert 'contact-part-1"' in page and "tool part entering it" in page
+def test_the_fixed_program_has_no_contact():
+    result, _m = run_example(CLEARS, "mill_solids.toml")
+    assert result.verdict.label == "safe" and contact_solids(result) == []
+    # its HTML page (tests/report/test_solids_goldens.py) draws the clamp and no tool
 
 
 @pytest.mark.long  # a browser start: about 30 s on the shared CI cores
