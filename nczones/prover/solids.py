@@ -190,6 +190,7 @@ class SolidsChecker:
     screened_out: int = 0
     screened_exact: int = 0
     screened_pairs: int = 0
+    column_rows: int = 0  # rows screened straight from the fast path's columns
     _batch: list[Segment] = field(default_factory=list)
     _batch_size: int = 4
     _blocks: set[int] = field(default_factory=set)
@@ -229,6 +230,7 @@ class SolidsChecker:
             return
         self.flush()
         a, n = 0, len(chunk)
+        self.column_rows += n
         while a < n:
             b = min(n, a + self._batch_size)
             self._batch_size = min(SCREEN_BATCH, 2 * self._batch_size)

@@ -16,7 +16,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import nczones.prover.solids as solids_mod
+from nczones.gcode import interpret_text, segments_text
 from nczones.machine import parse_machine
+from nczones.motion import MotionChunk
 from nczones.prover import verify_text
 from tests.prover.test_solids import ORACLE_MACHINE as G64_MACHINE
 from tests.prover.test_solids import programs
@@ -112,4 +114,20 @@ def test_the_screen_leaves_most_motions_to_numpy(monkeypatch):
     r = verify_text(text, parse_machine(ORACLE_MACHINE, "m.toml"))
     assert r.verdict.label == "safe", r.reasons
     checker = made[-1]
+    assert checker.column_rows >= 780  # the fast path's columns, screened as they are
     assert checker.screened_out >= 780 and checker.screened_exact + checker.screened_pairs <= 20
+
+
+def test_the_fast_path_records_the_tool_register():
+    """A run of simple lines has no H or T word (gcode/codes.py: the fast path declines G43, G49, M6 and T),
+    so its column chunk has one tool register: the one the full interpreter gives every segment of it."""
+    text = "G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X150 Y150 Z100\n" + "".join(
+        f"G1 X{150 + (i % 7)} Y{150 + (i % 5)} F500\n" for i in range(2500)) + "G0 Z200\nT2 M6\nG43 H2\n" + "".join(
+        f"G1 X{150 + (i % 3)} Y{150 + (i % 4)}\n" for i in range(2500)) + "M30\n"
+    machine = parse_machine(ORACLE_MACHINE, "m.toml")
+    fast = segments_text(text, machine)
+    full = segments_text(text, machine, fast=False)
+    assert [(s.block, s.tool_register) for s in fast] == [(s.block, s.tool_register) for s in full]
+    chunks = [c for c in interpret_text(text, machine) if isinstance(c, MotionChunk) and c.scale is not None]
+    assert chunks and all(c.tools_known for c in chunks)
+    assert 2 in {c.tool_register for c in chunks}
