@@ -384,7 +384,9 @@ class MotionChunk:
       such as ``"G81 retract"``; when None, every row is written motion) and ``radius`` (``int64``,
       the signed R times ``10**scale`` on the rows of R-format arcs whose centre is not rational or
       not computed, 0 elsewhere: such a row has ``centre`` 0 and stands for the segment with
-      ``centre=None`` and that ``radius``; when None, every arc row has its centre).
+      ``centre=None`` and that ``radius``; when None, every arc row has its centre).  ``tool_register``
+      (one for the whole chunk, None under G49) is meaningful when ``tools_known``: the vectorized fast path
+      records it (its runs have no H or T word), other producers leave ``tools_known`` False.
     * **objects** (``scale`` is None): ``objects`` holds the segments.
 
     ``segments()`` gives per-segment views in both forms, so consumers may

@@ -20,6 +20,10 @@ piece by piece (:meth:`SolidsChecker._arc`): the box of the controlled point ove
 (exact points of the circle) and split, at most :data:`ARC_PIECES` times; what is left is ``unknown``
 with reason ``VF210``.  A motion without a known tool (G49 while tools are described) is ``unknown`` (``VF211``).
 
+Straight motions are screened first in batches (:mod:`nczones.prover.solids_screen`, numpy; on the fast
+path's column chunks straight from the columns): only the motions the screen cannot decide reach the exact
+proof above, so that a CAM program of a million lines costs little more than its point-only verdict.
+
 The least clearance per part and fixture is the least horizontal distance between them at the moments their
 heights overlap (the distance between two vertical solids at overlapping heights), a certified lower bound
 (square roots rounded down); lines give it exactly up to that rounding, arcs a lower bound from their box.
