@@ -332,6 +332,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("RP103", _E, "", "the report names no machine file or program file (pass --machine / --program), "
                           "or --base is not a directory"),
     Code("RP104", _E, "", "a value in the report is malformed (parameters, margin, params_exact)"),
+    Code("RP105", _E, "", "a solid violation (kind = \"solid\") on a machine file without tool or spindle solids"),
+    Code("RP106", _E, "", "a solid violation that does not name its tool part (zones = [part])"),
     # -- FL: fleet
     Code("FL100", _E, _FL, "no project file"),
     Code("FL101", _E, _FL, "the project file is not UTF-8 or not TOML"),

@@ -477,7 +477,9 @@ class MotionChunk:
       such as ``"G81 retract"``; when None, every row is written motion) and ``radius`` (``int64``,
       the signed R times ``10**scale`` on the rows of R-format arcs whose centre is not rational or
       not computed, 0 elsewhere: such a row has ``centre`` 0 and stands for the segment with
-      ``centre=None`` and that ``radius``; when None, every arc row has its centre).
+      ``centre=None`` and that ``radius``; when None, every arc row has its centre).  ``tool_register``
+      (one for the whole chunk, None under G49) is meaningful when ``tools_known``: the vectorized fast path
+      records it (its runs have no H or T word), other producers leave ``tools_known`` False.
     * **objects** (``scale`` is None): ``objects`` holds the segments.
 
     ``segments()`` gives per-segment views in both forms, so consumers may
@@ -504,6 +506,10 @@ class MotionChunk:
     #: the program frame every row was written in (a column run never changes offsets), see Segment.frame
     frame: ProgramFrame | None = None
     radius: np.ndarray | None = None
+    #: the tool length register of every row (``G43 H<n>``; None under G49), valid when ``tools_known``: the
+    #: producer (the vectorized fast path) recorded it; the tool solids pick the assembly by it
+    tool_register: int | None = None
+    tools_known: bool = False
 
     def __len__(self) -> int:
         if self.scale is None:
@@ -517,7 +523,8 @@ class MotionChunk:
             return dataclasses.replace(self, objects=(self.objects or ())[a:b])
         return dataclasses.replace(self, **{
             f.name: getattr(self, f.name)[a:b] for f in dataclasses.fields(self)
-            if f.name not in ("axes", "scale", "file", "objects", "frame") and getattr(self, f.name) is not None})
+            if f.name not in ("axes", "scale", "file", "objects", "frame", "tool_register", "tools_known")
+            and getattr(self, f.name) is not None})
 
     def segments(self, lines: dict[int, str] | None = None) -> Iterator[Segment]:
         """Per-segment views (exact Fractions); ``lines`` maps line numbers to source text."""
@@ -557,7 +564,7 @@ class MotionChunk:
                 arc["derived"] = str(self.derived[i])
             yield Segment(
                 kind, start, end, self.axes, int(blocks[i]), span,
-                Fraction(int(lengths[i]), den), feed, **arc, frame=self.frame,
+                Fraction(int(lengths[i]), den), feed, **arc, frame=self.frame, tool_register=self.tool_register,
             )
 
 

@@ -20,7 +20,10 @@ counterexample as exact rationals (``point_exact``, ``path_point_exact``,
    or dogleg —, a circular arc, a NURBS curve at the reported parameter, a
    tool-break recovery leg from the reported break point), that the point
    lies within the margin of it on every axis, and that the point is outside
-   the allowed set, in the zone the report names.
+   the allowed set, in the zone the report names.  A tool solid in a fixture
+   (``kind = "solid"``) is checked instead by placing the named tool part at
+   the path point and testing that the witness is inside it and inside the
+   fixture (:func:`_check_solid`).
 
 A path point that is irrational (on a helix, an R-format arc with an
 irrational centre, a developed arc; the report marks it
@@ -375,7 +378,8 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
     def result(ok: bool, message: str) -> Check:
         return Check(program, line, block if isinstance(block, int) else -1, zone, ok, exact, message)
 
-    point = _point(v.get("point_exact"), axes, "point_exact", where)
+    solid = v.get("kind") == "solid"  # the witness is a point of X, Y, Z (inside a tool part and a fixture)
+    point = _point(v.get("point_exact"), ("X", "Y", "Z") if solid else axes, "point_exact", where)
     path = _point(v.get("path_point_exact"), axes, "path_point_exact", where)
     nominal = tuple(x - d for x, d in zip(path, shift))
     mine = [s for s in segs if s.block == block]
@@ -398,6 +402,9 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
     if not hits:
         return result(False, f"the path point {_show(axes, path)} is not on the {what} of block {block}"
                              + ("" if exact else f" (not within {IRRATIONAL_TOLERANCE_MM} mm)"))
+    if solid:
+        how = "exactly" if exact else f"within {IRRATIONAL_TOLERANCE_MM} mm (an irrational path point)"
+        return result(*_check_solid(v, point, nominal, hits, machine, how, where))
     gap = max(abs(a - b) for a, b in zip(point, path))
     if gap > margin:
         return result(False, f"the point {_show(axes, point)} is {format_decimal(gap)} mm from the path point, "
@@ -412,6 +419,56 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
     with_params = f" with {', '.join(f'{n}={x}' for n, x in params.items())}" if params else ""
     return result(True, f"the point {_show(axes, point)} is outside zone {zone!r} (exact) and the path point "
                         f"lies on the {what} of block {block} {how}{with_params}")
+
+
+def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Segment], machine: Machine,
+                 how: str, where: str) -> tuple[bool, str]:
+    """A tool solid in a fixture (``kind = "solid"``): the assembly placed with its controlled point at the
+    path point (the part's heights from the motion's own tool length), the witness ``point`` inside the part
+    the report names (a closed vertical cylinder) and inside the open interior of the fixture (its ``zone``),
+    checked here in exact rationals, independently of the prover's distance computation."""
+    from .solids import FixtureCylinder, machine_solids
+
+    solids = machine_solids(machine)
+    if solids is None:
+        raise _fail("RP105", "a solid violation, but the machine file describes no tool or spindle solids "
+                             "([[tools]], [spindle])", where)
+    names = v.get("zones")
+    if not isinstance(names, list) or len(names) != 1 or not isinstance(names[0], str):
+        raise _fail("RP106", f"a solid violation names its part in zones = [part], got {names!r}", where)
+    part_name, zone = names[0], v.get("zone", "")
+    fixtures = [f for f in solids.fixtures if f.name == zone]
+    if not fixtures:
+        return False, f"the machine has no fixture {zone!r}"
+    axes = machine.axis_names
+    ix, iy, iz = axes.index("X"), axes.index("Y"), axes.index("Z")
+    qx, qy, qz = point
+    px, py, pz = path[ix], path[iy], path[iz]
+    placed = False
+    for seg in hits:
+        for part in solids.parts_for(seg.tool_register) or ():
+            if part.name != part_name:
+                continue
+            placed = True
+            base = pz if part.spindle else pz - seg.tool_length
+            if not ((qx - px) ** 2 + (qy - py) ** 2 <= part.radius ** 2 and base + part.z0 <= qz <= base + part.z1):
+                continue
+            for fx in fixtures:
+                if isinstance(fx, FixtureCylinder):
+                    inside_xy = (qx - fx.cx) ** 2 + (qy - fx.cy) ** 2 < fx.radius ** 2
+                else:
+                    inside_xy = all((lo is None or lo < q) and (hi is None or q < hi)
+                                    for q, lo, hi in ((qx, fx.x0, fx.x1), (qy, fx.y0, fx.y1)))
+                if inside_xy and (fx.z0 is None or fx.z0 < qz) and (fx.z1 is None or qz < fx.z1):
+                    return True, (f"the point {_show(('X', 'Y', 'Z'), point)} is inside the {part.label()} placed at the path "
+                                  f"point {_show(axes, path)} and inside fixture {zone!r} (exact), and the path point "
+                                  f"lies on the {v.get('segment_kind', 'motion')} of block {v.get('block')} {how}")
+            return False, (f"the point {_show(('X', 'Y', 'Z'), point)} is inside the {part.label()} at the path point, "
+                           f"but not inside fixture {zone!r}")
+    if not placed:
+        return False, f"the tool assembly active at block {v.get('block')} has no part {part_name!r}"
+    return False, (f"the point {_show(('X', 'Y', 'Z'), point)} is not inside the part {part_name!r} placed at the path point "
+                   f"{_show(axes, path)}")
 
 
 def _show(axes: tuple[str, ...], p: Point) -> str:

@@ -1128,6 +1128,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         feed=(feed_line[rows] if it.feed_mode == 94 else None), file=interp.file,
         frame=it.program_frame(),  # a run of simple lines changes no offset, unit or transform
         radius=radius if radius is not None and radius.any() else None,
+        tool_register=it.tool_register, tools_known=True,  # a run of simple lines changes no tool (no H, T)
     )
     # hand the state back to the interpreter
     den = 10**S
@@ -1447,7 +1448,7 @@ def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         line=np.repeat(holes + (lo + 1 + line0), T).astype(np.int64),
         block=np.repeat(block_of_line[holes], T).astype(np.int64), tool_length=np.full(rows, tl, dtype=np.int64),
         feed=np.full(rows, f_s, dtype=np.int64), file=interp.file, dwell=dwell_col, derived=derived,
-        frame=it.program_frame(),
+        frame=it.program_frame(), tool_register=it.tool_register, tools_known=True,
     )
     # hand the state back to the interpreter (as _cycle/_emit leave it)
     den = 10**S

@@ -40,10 +40,9 @@ def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptio
     interpreter's default, none), ``ranges`` parameter ranges whose dependencies are tracked, ``fast`` the
     vectorized fast path allowed."""
     from ..gcode import interpret
-    from ..solids import machine_solids
 
-    if machine_solids(machine) is not None:
-        fast = False  # the column chunks do not carry the H register that picks the tool assembly
+    # a machine with tool solids takes the fast path too: its column chunks record the tool register that
+    # picks the assembly (MotionChunk.tool_register), and the solids check screens their columns
     extra = options.interpret_keywords(machine)
     if skip is not None:
         extra["block_delete"] = skip

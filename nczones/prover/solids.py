@@ -20,6 +20,10 @@ piece by piece (:meth:`SolidsChecker._arc`): the box of the controlled point ove
 (exact points of the circle) and split, at most :data:`ARC_PIECES` times; what is left is ``unknown``
 with reason ``VF210``.  A motion without a known tool (G49 while tools are described) is ``unknown`` (``VF211``).
 
+Straight motions are screened first in batches (:mod:`nczones.prover.solids_screen`, numpy; on the fast
+path's column chunks straight from the columns): only the motions the screen cannot decide reach the exact
+proof above, so that a CAM program of a million lines costs little more than its point-only verdict.
+
 The least clearance per part and fixture is the least horizontal distance between them at the moments their
 heights overlap (the distance between two vertical solids at overlapping heights), a certified lower bound
 (square roots rounded down); lines give it exactly up to that rounding, arcs a lower bound from their box.
@@ -27,14 +31,17 @@ heights overlap (the distance between two vertical solids at overlapping heights
 
 from __future__ import annotations
 
+import functools
 import math
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from ..machine import Machine
-from ..motion import Segment, SegmentKind
+from ..motion import MotionChunk, Segment, SegmentKind
 from ..solids import FixtureBox, FixtureCylinder, Part, Solids
 from .geometry import (
     arc_bases,
@@ -46,6 +53,7 @@ from .geometry import (
     sqrt_bounds,
 )
 from .result import Reason, Result, Violation
+from .solids_screen import Screened, group_by_tool, needs_exact, needs_exact_columns
 
 if TYPE_CHECKING:
     from .options import VerifyOptions
@@ -59,6 +67,11 @@ _HALF = Fraction(1, 2)
 Fixture = FixtureBox | FixtureCylinder
 #: Arc pieces the solids proof may split an arc into before it says ``unknown`` (VF210).
 ARC_PIECES = 64
+#: Straight motions screened together (:mod:`nczones.prover.solids_screen`).
+SCREEN_BATCH = 16384
+#: Whether the checker screens (tests turn it off to compare with the exact proof of every motion).
+SCREEN = True
+_STRAIGHT = (SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL)
 
 
 @dataclass(slots=True)
@@ -173,16 +186,120 @@ class SolidsChecker:
     reasons: list[Reason] = field(default_factory=list)
     #: (part label, fixture name) -> (least clearance lower bound, line)
     clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
+    #: block -> (the active parts, the tool length, the part, the fixture) of each solid violation, for the
+    #: report's drawing of the tool at the contact (:mod:`nczones.report.solids_view`)
+    contacts: dict[int, tuple[tuple[Part, ...], Fraction, Part, Fixture]] = field(default_factory=dict)
+    #: screen straight motions in batches before the exact proof (False: every motion exactly; None: SCREEN)
+    screen: bool | None = None
+    screened_out: int = 0
+    screened_exact: int = 0
+    screened_pairs: int = 0
+    column_rows: int = 0  # rows screened straight from the fast path's columns
+    _batch: list[Segment] = field(default_factory=list)
+    _batch_size: int = 4
     _blocks: set[int] = field(default_factory=set)
     _arc_witness: bool = False
     _labels: dict[Part, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
+        if self.screen is None:
+            self.screen = SCREEN
         axes = self.machine.axis_names
         self.ix, self.iy, self.iz = axes.index("X"), axes.index("Y"), axes.index("Z")
 
     def feed(self, seg: Segment) -> None:
+        """Check one motion (straight motions are screened in batches first: call :meth:`flush` at the end)."""
         if seg.block in self._blocks or not self.solids.fixtures:
+            return
+        if self.screen and seg.kind in _STRAIGHT and self.solids.parts_for(seg.tool_register) is not None \
+                and all(a in "XYZ" or seg.start[k] == seg.end[k] for k, a in enumerate(seg.axes)):
+            self._batch.append(seg)
+            if len(self._batch) >= self._batch_size:
+                self.flush()
+            return
+        self.flush()
+        self._exact(seg)
+
+    def feed_chunk(self, chunk: MotionChunk) -> None:
+        """Check a column chunk (:class:`~nczones.motion.MotionChunk`) of the vectorized fast path: its rows
+        screened straight from the columns (slices growing like the batches of :meth:`flush`), only the
+        undecided rows made into segments and proved exactly.  A chunk that did not record its tool register
+        (``tools_known`` False) is checked segment by segment."""
+        if not self.solids.fixtures:
+            return
+        parts = self.solids.parts_for(chunk.tool_register)
+        if chunk.scale is None or not chunk.tools_known or not self.screen or parts is None:
+            for seg in chunk.segments():
+                self.feed(seg)
+            return
+        self.flush()
+        a, n = 0, len(chunk)
+        self.column_rows += n
+        while a < n:
+            b = min(n, a + self._batch_size)
+            self._batch_size = min(SCREEN_BATCH, 2 * self._batch_size)
+            screened = needs_exact_columns(chunk, a, b, (self.ix, self.iy, self.iz), parts, self.solids.fixtures,
+                                           self._best)
+            self._settle(screened, functools.partial(_row_segment, chunk, a))
+            a = b
+
+    def _best(self, part: Part, fx: Fixture) -> Fraction | None:
+        got = self.clearance.get(self._key(part, fx))
+        return None if got is None else got[0]
+
+    def flush(self) -> None:
+        """Screen the batched straight motions (:mod:`nczones.prover.solids_screen`) and prove the undecided
+        ones exactly, in program order."""
+        batch, self._batch = self._batch, []
+        if not batch:
+            return
+        self._batch_size = min(SCREEN_BATCH, 2 * self._batch_size)  # small at first: the exact proof of the
+        # first motions sets the least clearances the screen compares with
+        for register, idx in group_by_tool(batch).items():
+            parts = self.solids.parts_for(register) or ()
+            screened = needs_exact([batch[k] for k in idx], (self.ix, self.iy, self.iz), parts, self.solids.fixtures,
+                                   self._best)
+            self._settle(screened, lambda k, idx=idx: batch[idx[k]])  # type: ignore[misc]
+
+    def _settle(self, screened: Screened, seg_at: Callable[[int], Segment]) -> None:
+        """Prove exactly what the screen left: the ``hit`` motions in program order (every pair, as the exact
+        proof of every motion would), then per pair its candidates nearest first, the pair alone, until the
+        rest cannot come closer than the pair's least clearance (none of them can meet the fixture:
+        :class:`~nczones.prover.solids_screen.Screened`).  A block's motions from its first violation on are
+        not checked further (as in program order); those before it are.  The verdict, the violations, the
+        reasons and the least clearances are those of the exact proof of every motion; where several
+        motions reach a least clearance, the line given may be another of them."""
+        cache: dict[int, Segment] = {}
+
+        def at(k: int) -> Segment:
+            if k not in cache:
+                cache[k] = seg_at(k)
+            return cache[k]
+
+        before = set(self._blocks)
+        stopped: dict[int, int] = {}  # block -> the row of its first violation (or unknown) in this batch
+        hits = np.flatnonzero(screened.hit).tolist()
+        self.screened_exact += len(hits)
+        self.screened_out += len(screened.hit) - len(hits)
+        for k in hits:
+            seg = at(k)
+            self._exact(seg)
+            if seg.block in self._blocks and seg.block not in before:
+                stopped.setdefault(seg.block, k)
+        for pair in screened.pairs:
+            rows = np.flatnonzero(pair.cand)
+            for k in rows[np.argsort(pair.key[rows], kind="stable")].tolist():
+                if pair.far(k, self._best(pair.part, pair.fixture)):
+                    break  # sorted: the rest are at least as far
+                seg = at(k)
+                if seg.block in before or stopped.get(seg.block, k + 1) <= k:
+                    continue  # the exact proof of the violating motion itself stopped at the violation
+                self.screened_pairs += 1
+                for piece in line_pieces(seg, self.machine):
+                    self._line(seg, (pair.part,), piece.p0, piece.p1, piece.tau0, piece.tau1, (pair.fixture,))
+
+    def _exact(self, seg: Segment) -> None:
+        if seg.block in self._blocks:
             return
         parts = self.solids.parts_for(seg.tool_register)
         if parts is None:
@@ -236,13 +353,13 @@ class SolidsChecker:
         return best is not None and best[0] >= 0 and gap2 >= (best[0] + thr_r) ** 2
 
     def _line(self, seg: Segment, parts: tuple[Part, ...], p0: tuple, p1: tuple, tau0: Fraction,
-              tau1: Fraction) -> bool:
+              tau1: Fraction, fixtures: tuple[Fixture, ...] | None = None) -> bool:
         px, py, pz = p0[self.ix], p0[self.iy], p0[self.iz]
         dx, dy, dz = p1[self.ix] - px, p1[self.iy] - py, p1[self.iz] - pz
         bx, by = (min(px, px + dx), max(px, px + dx)), (min(py, py + dy), max(py, py + dy))
         for part in parts:
             lo, hi = self._offsets(seg, part)
-            for fx in self.solids.fixtures:
+            for fx in self.solids.fixtures if fixtures is None else fixtures:
                 if self._far(part, fx, bx, by):
                     continue
                 span: _Span | None = _Span(F0, F1)
@@ -305,6 +422,7 @@ class SolidsChecker:
         note = (f"{part.label()} enters `{fx.name}` at {where}, {pt}, {format_decimal(depth, 3)} mm deep "
                 f"(contact point X{format_decimal(cx, 4)} Y{format_decimal(cy, 4)} Z{format_decimal(cz, 4)})")
         self._blocks.add(seg.block)
+        self.contacts[seg.block] = (self.solids.parts_for(seg.tool_register) or (part,), seg.tool_length, part, fx)
         self.violations.append(Violation(
             block=seg.block, span=seg.span, zone=fx.name, point=(("X", cx), ("Y", cy), ("Z", cz)),
             path_point=tuple(zip(axes, path)), parameter=tau, parameter_exact=not self._arc_witness,
@@ -411,6 +529,11 @@ class SolidsChecker:
         return None
 
 
+def _row_segment(chunk: MotionChunk, base: int, k: int) -> Segment:
+    """Row ``base + k`` of a column chunk as a segment."""
+    return next(iter(chunk.rows(base + k, base + k + 1).segments()))
+
+
 def _rect_gap2(fx: Fixture, bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:
     """Least squared XY distance between the rectangle ``bx × by`` and the fixture's box section / centre."""
     if isinstance(fx, FixtureCylinder):
@@ -442,13 +565,17 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
 
     def tee() -> Iterator[Any]:
         for item in motion:
-            for seg in segments_of(item):
-                checker.feed(seg)
+            if isinstance(item, MotionChunk):
+                checker.feed_chunk(item)
+            else:
+                for seg in segments_of(item):
+                    checker.feed(seg)
             yield item
 
     result: Result = verify_segments(tee(), machine, margin=options.margin, params=options.ranges(machine),
                              engine=options.engine, max_violations=options.max_violations, file=file,
                              limits=options.run_limits(), profile=profile)
+    checker.flush()
     violations = result.violations + tuple(checker.violations[:max(0, options.max_violations
                                                                   - len(result.violations))])
     reasons = result.reasons + tuple(checker.reasons)
@@ -475,6 +602,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
         f"`{fx}` at line {line} ({meaning})"
         for (part, fx), (c, line) in sorted(checker.clearance.items()) if c >= 0)
     extra = dict(result.extra)
+    extra["solid_contacts"] = dict(checker.contacts)
     extra["clearance"] = tuple((part, fx, c, line) for (part, fx), (c, line) in sorted(checker.clearance.items()))
     return replace(result, verdict=verdict, violations=violations, reasons=reasons, notes=result.notes + notes,
                    extra=extra)

@@ -365,6 +365,9 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
     draw_allowed_set(drawing_machine(machine, first), plane, ax, tip_label=placement_label(machine, first))
     for k, extra in enumerate(placements[1:], start=2):
         draw_tip_zones(drawing_machine(machine, extra), plane, ax, placement_label(machine, extra), k)
+    from .solids_view import draw_contacts
+
+    draw_contacts(ax, machine, plane, result)  # fixture solids, the tool at each solid violation's contact
     blue = "#1f4e9c"
     feeds = [a[:, :, [h, v]] for a in path.feed_lines]
     feed_segs = (list(np.concatenate(feeds)) if feeds else []) + _project(path.feed_curves, h, v)

@@ -294,6 +294,9 @@ def view_data(path: PathFloat, result: Any, machine: Machine, *, max_points: int
     kind = "scatter3d" if three else "scatter"
     keys = ("x", "y", "z")[:len(axes)]
     traces = _zone_traces(machine, path, axes, lims)
+    from .solids_view import contact_traces
+
+    traces += contact_traces(result, machine, axes, lims, _solid_traces3d)
 
     def line_trace(name: str, coords: list[list[float | None]], custom: list[int | None], meta: str,
                    line: dict[str, Any]) -> dict[str, Any]:

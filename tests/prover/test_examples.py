@@ -44,6 +44,8 @@ def test_example_golden(case):
         for name in case.get("counterexample_params", []):
             assert name in dict(v.params)
         m = load_machine(EX / case["machine"])
+        if v.kind == "solid":  # a tool part in a fixture: its witness is checked by replay (tests/report)
+            return
         # the reported point is strictly outside the allowed set
         pt = dict(v.point)
         allowed = m.allowed
