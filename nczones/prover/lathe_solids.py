@@ -33,7 +33,7 @@ from typing import Any
 from ..exact import format_decimal
 from ..lathe_solids import LatheFixture, LathePart, LatheSolids, turret_tool
 from ..machine import Machine
-from ..motion import Segment, SegmentKind, tip_offset
+from ..motion import MotionChunk, Segment, SegmentKind, tip_offset
 from .geometry import (
     arc_bases,
     arc_geom,
@@ -149,6 +149,9 @@ class LatheSolidsChecker:
     reasons: list[Reason] = field(default_factory=list)
     #: (part label, fixture name) -> (least clearance lower bound, line)
     clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
+    #: block -> the assembly at a contact, for the report's drawing of the tool; the lathe's turret parts
+    #: are not drawn yet, so it stays empty (the report draws the path and the zones)
+    contacts: dict[int, tuple] = field(default_factory=dict)
     _blocks: set[int] = field(default_factory=set)
     _pairs: dict[tuple, list] = field(default_factory=dict)
     #: id of a rectangle of :attr:`_pairs` -> (the clearance it was grown by, the grown bounds)
@@ -187,6 +190,15 @@ class LatheSolidsChecker:
         return out
 
     # ------------------------------------------------------------------ feeding
+    def feed_chunk(self, chunk: MotionChunk) -> None:
+        """A column chunk of the vectorized fast path, row by row (its segments carry the chunk's tool
+        register when it recorded one; otherwise the register is unknown and the motion is ``VF211``)."""
+        for seg in chunk.segments():
+            self.feed(seg)
+
+    def flush(self) -> None:
+        """Nothing is batched on a lathe: every motion is proved as it is fed."""
+
     def feed(self, seg: Segment) -> None:
         if seg.block in self._blocks or not self.solids.fixtures:
             return
