@@ -252,3 +252,18 @@ def test_a_repeat_around_a_while_continue_or_a_plain_do_is_proved(loop):
             if loop == "while" else REPEAT_DO.replace("o101 continue\n", ""))
     result = verify("G21 G90 G54 F100\nG0 X0 Y0\n" + body + "G0 X5\nM30\n", MILL)
     assert result.verdict.label == "safe", (result.verdict, result.reasons)
+
+
+# -- a spline's end held as LinuxCNC's double (the oracle's, seed 331616) ----------------------------------
+
+def test_the_move_to_a_spline_end_is_matched_within_the_doubles_slack():
+    """rs274 prints a bare ``G0`` after G5 curves as a traverse to the curve's end (its canon does not hold the
+    end; nczones leaves it out). Here the end's Y is 28.77215 (``Y28.86`` + ``#<_value>`` = -0.08785, a double a
+    few ulps below the decimal) - 26.4406 = 2.33155, which the log prints as 2.3316: 5e-5 + 1.1e-15 mm from
+    nczones's exact value of the double, past the half digit by the double's error. Every other comparison
+    allows 1e-9 mm beyond the rounding; the skip of that traverse did not (a false path mismatch)."""
+    log = _recorded("spline-end-double")
+    assert "STRAIGHT_TRAVERSE(-21.6020, 2.3316, 6.2490," in log and log.count("NURBS_FEED") == 3
+    text = (FINDINGS / "spline-end-double.ngc").read_text()
+    outcome = compare(text, machine_of(FINDING_SETUP), canon_motion(log), None)
+    assert outcome.status == "match", outcome
