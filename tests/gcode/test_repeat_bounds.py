@@ -17,7 +17,7 @@ from nczones.machine import load_machine
 from nczones.prover import verify_text
 
 MILL = Path(__file__).resolve().parents[2] / "specs" / "machines" / "mill.toml"
-START = "G21 G90 G54 G0 X10 Y10 Z10\n"
+START = "G21 G90 G54 G61 G0 X10 Y10 Z10\n"  # G61: about repeats, not corner blending (VF208 under load)
 SUB = "O2\nG91 G1 X0.001 F100\nG1 X-0.001\nG90\nM99\n"  # two feed moves that come back: one repeat = 2 motions
 
 
