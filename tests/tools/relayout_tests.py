@@ -16,7 +16,8 @@ What a run does, in order:
    path; an old folder's ``__init__.py`` goes to each new folder that has none (the suite imports these
    folders as packages), then the old folder is removed;
 2. in each file it moved: ``Path(__file__)...parents[N]`` grows by how much deeper the file now is, and a
-   relative import of a sibling that went to another folder becomes an absolute ``tests.`` import;
+   relative import of a sibling that went to another folder becomes an absolute ``tests.`` import (then
+   ``ruff check --fix --select I`` sorts the imports of the edited files, when ruff is installed);
 3. in every text file of the repository (Python, Markdown, TOML, Makefile, CI scripts, notebooks; not the
    golden outputs, not this script): ``tests/OLD/...`` paths and ``tests.OLD.`` module names become the new
    ones (file by file for the split folders).
@@ -281,6 +282,7 @@ def run(root: Path, dry: bool) -> Report:
     report = Report()
     tracked = _tracked(root)
     plan = _plan(root, report)
+    plan.sort(key=lambda move: not move[0].startswith("copy:"))  # copy an __init__.py before moving it
     for old, new in plan:
         if new == "delete:":
             if not dry:
@@ -298,7 +300,16 @@ def run(root: Path, dry: bool) -> Report:
         _fix_moved_file(root, old, new, report, dry)
     _rewrite_references(root, moves, report, dry)
     _remove_empty(root, dry)
+    if not dry:
+        _sort_imports(root, [p for p in report.edited if p.endswith(".py")])
     return report
+
+
+def _sort_imports(root: Path, paths: list[str]) -> None:
+    """An import made absolute may sit in the wrong isort block: let ruff sort the edited files' imports."""
+    ruff = shutil.which("ruff") or str(Path(sys.executable).with_name("ruff"))
+    if paths and Path(ruff).exists():
+        subprocess.run([ruff, "check", "--fix", "--select", "I", "--quiet", *paths], cwd=root, check=False)
 
 
 def main(argv: list[str] | None = None) -> int:
