@@ -181,7 +181,7 @@ FANUC_BLOCKS = {730: "G73 X1. Y1. Z-1. R1. Q0.5", 740: "M4 S100\nG74 X1. Y1. Z-1
 def test_fanuc_fast_path_claims_or_declines_each_code(key):
     """Fanuc: the code's block between two runs of simple lines; the fast path gives the full path's result,
     and takes a run of a code it claims."""
-    from tests.fanuc.helpers import mill
+    from tests.gcode.fanuc.helpers import mill
 
     machine = mill()
     n = fastpath.MIN_RUN + 8

@@ -287,7 +287,7 @@ def test_m19_takes_an_r_word_and_g4_with_an_explicit_motion_code_moves():
 @pytest.mark.parametrize("code", ["G71.2 Q1 P2 D0.5", "G72.1 Q1 P2 D0.5"])
 def test_linuxcnc_lathe_cycle_without_its_profile_is_an_error(code):
     """LinuxCNC's G71/G72 read their profile from o<Q>: a subroutine the file does not define is an error, as
-    LinuxCNC's call of it is (the cycles themselves: tests/turning/test_linuxcnc_g7x.py)."""
+    LinuxCNC's call of it is (the cycles themselves: tests/gcode/turning/test_linuxcnc_g7x.py)."""
     with pytest.raises(GcodeError) as e:
         list(interpret_text(f"G21\nG0 X1\n{code}\nX2 Y3 R1 K0\n", MILL).segments())
     assert e.value.diagnostics[0].code == "GC313" and e.value.diagnostics[0].span.line == 3

@@ -12,8 +12,7 @@ from hypothesis import strategies as st
 from nczones.errors import InvalidArgument, MachineFileError
 from nczones.exact import decimal_places, exact, format_decimal, parse_decimal
 from nczones.machine import parse_machine
-
-from .strategies import FAST
+from tests.zones.strategies import FAST
 
 BASE = """
 [machine]

@@ -16,7 +16,7 @@ from nczones.cli import main
 from nczones.machine import load_machine
 from nczones.prover import verify_text
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 FANUC_MILL = ROOT / "specs" / "machines" / "fanuc_mill.toml"
 FANUC_LATHE = ROOT / "specs" / "machines" / "fanuc_lathe.toml"
 LINUXCNC_MILL = ROOT / "specs" / "machines" / "mill.toml"

@@ -34,7 +34,7 @@ _KIND = {SegmentKind.RAPID: "rapid", SegmentKind.LINE: "line", SegmentKind.ARC: 
 
 
 def ref_machine(dpi: str = "calculator") -> RefMachine:
-    """The reference's copy of tests/fanuc/helpers.py's mill (the numbers written again, not read from
+    """The reference's copy of tests/gcode/fanuc/helpers.py's mill (the numbers written again, not read from
     nczones's parsed machine)."""
     return RefMachine(
         work={"G54": [F(100), F(50), F(-200)], "G55": [F(300), F(50), F(-200)], "EXT": [F(0), F(0), F(1)],

@@ -12,7 +12,7 @@ from nczones.errors import GcodeError, MachineFileError
 from nczones.gcode import interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
-from tests.turning.helpers import F, lathe, moves, unknown_reason
+from tests.gcode.turning.helpers import F, lathe, moves, unknown_reason
 
 
 def test_machine_file_reads_the_lathe_keys():

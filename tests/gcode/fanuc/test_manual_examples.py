@@ -32,7 +32,7 @@ from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 
-SPEC = Path(__file__).resolve().parents[2] / "specs" / "fanuc.md"
+SPEC = Path(__file__).resolve().parents[3] / "specs" / "fanuc.md"
 
 MANUAL = """
 [machine]

@@ -1,6 +1,6 @@
 """Golden machine positions of the Fanuc dialect, each derived by hand beside it.
 
-The test mill (tests/fanuc/helpers.py): G54 = (100, 50, -200), G55 = (300, 50, -200), EXT = (0, 0, 1),
+The test mill (tests/gcode/fanuc/helpers.py): G54 = (100, 50, -200), G55 = (300, 50, -200), EXT = (0, 0, 1),
 G54.1 P3 = (500, 20, -210), H1 = 100, H2 = 150.5, the 2nd reference position (-100, -50, -10), the start
 at (0, 0, 0).  machine = program + EXT + G5x + G52 + G92 + tool length (Z).
 """

@@ -1,6 +1,6 @@
 """nczones's Fanuc interpreter held to the independent reference reader (issue 33).
 
-* ``test_nczones_moves_as_the_reference`` — generated Fanuc mill programs (tests/fanuc/ref_grammar.py) run
+* ``test_nczones_moves_as_the_reference`` — generated Fanuc mill programs (tests/gcode/fanuc/ref_grammar.py) run
   through ``nczones.gcode.interpret`` (what ``verify`` proves) and tests/oracles/fanuc_ref.py give the same
   motion (kind and exact machine end point of every motion), in both decimal point input settings and, per
   example, a drawn combination of the optional block skip switches /1, /2, /3, /9 that are on.  CI size: ``FANUC_REF_EXAMPLES`` (default 300); the long profile
@@ -24,7 +24,7 @@ from hypothesis import strategies as st
 from .ref_differential import compare, compare_lathe, first_difference
 from .ref_grammar import PRODUCTIONS, fanuc_programs, lathe_programs
 
-SPEC = Path(__file__).resolve().parents[2] / "specs" / "fanuc.md"
+SPEC = Path(__file__).resolve().parents[3] / "specs" / "fanuc.md"
 EXAMPLES = int(os.environ.get("FANUC_REF_EXAMPLES", "300"))
 LONG = int(os.environ.get("FANUC_REF_LONG", "20000"))
 LATHE_EXAMPLES = int(os.environ.get("FANUC_REF_LATHE_EXAMPLES", "100"))

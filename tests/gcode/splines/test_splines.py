@@ -16,7 +16,7 @@ from nczones.nurbs import Nurbs, clamped_uniform_knots
 from nczones.prover.core import Prover, verify_segments
 from nczones.prover.result import Verdict
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 coord = st.integers(-40, 40).map(lambda v: F(v, 4))
 weight = st.integers(1, 6).map(lambda v: F(v, 2))

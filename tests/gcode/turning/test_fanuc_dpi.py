@@ -24,9 +24,9 @@ import pytest
 from nczones.machine import load_machine
 from nczones.prover import verify_text
 from nczones.prover.result import Verdict
-from tests.turning.helpers import lathe, moves, unknown_reason
+from tests.gcode.turning.helpers import lathe, moves, unknown_reason
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 G71_JAWS = (ROOT / "specs/examples/programs/g71_jaws.nc").read_text()
 
 

@@ -25,7 +25,7 @@ from tests.corpus import FANUC
 pytestmark = [pytest.mark.corpus,
               pytest.mark.skipif(not (FANUC / "MANIFEST.tsv").is_file(), reason="fanuc corpus not available")]
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 _AXES = ["X", "Y", "Z", "A", "B", "C"]
 
 

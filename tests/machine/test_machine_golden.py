@@ -8,7 +8,7 @@ exit 0 and print exactly their ``.expected`` summary on stdout.
 
 Regenerate the golden files (then review the diff by eye!) with::
 
-    NCZONES_REGEN_GOLDEN=1 python -m pytest -q tests/foundation/test_machine_golden.py
+    NCZONES_REGEN_GOLDEN=1 python -m pytest -q tests/machine/test_machine_golden.py
 """
 
 from __future__ import annotations

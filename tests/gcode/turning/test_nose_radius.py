@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 from nczones.exact import format_decimal
 from nczones.prover import verify_text
 from nczones.prover.result import Verdict
-from tests.turning.helpers import lathe
+from tests.gcode.turning.helpers import lathe
 
 F = Fraction
 

@@ -20,7 +20,7 @@ import pytest
 from nczones.machine import load_machine
 from nczones.prover import verify_text
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 FANUC_LATHE = ROOT / "specs" / "machines" / "fanuc_lathe.toml"
 LC_LATHE = ROOT / "specs" / "machines" / "lathe.toml"
 JAWS = (ROOT / "specs" / "examples" / "programs" / "g71_jaws.nc").read_text()
@@ -81,7 +81,7 @@ PRE = "%\nO1\nG21 G18 G99\nT0101\n"
     ("G00 X50. Z-10.\nG75 R0.5\nG75 X40. Z-12. P2000 Q1000 F0.1\nG00 X100. Z20.\nM30\n", 9, "pecks in all"),
     # G76 P010060 Q100 R0, height P1300 (1.3 mm), first depth Q500 (0.5 mm): depths 0.5 sqrt(n) (at least 0.1
     # more each) below 1.3: 0.5, 0.707, 0.866, 1.0, 1.118, 1.225 (n = 1..6; n = 7 gives 1.323), then m = 01
-    # finishing pass: 7 passes (tests/turning/test_fanuc_cycles.py derives the same passes)
+    # finishing pass: 7 passes (tests/gcode/turning/test_fanuc_cycles.py derives the same passes)
     ("G00 X32. Z5.\nG76 P010060 Q100 R0\nG76 X27.4 Z-20. P1300 Q500 F2.\nG00 X100. Z20.\nM30\n", 7,
      "thread passes"),
 ])
@@ -129,7 +129,7 @@ M2
 @pytest.mark.parametrize("hash_", ["", "#1 = 1\n"])  # '#': the double pass is tried first
 def test_linuxcnc_g71_passes_are_compared_with_max_iterations(hash_):
     """G71 Q1 X10 Z1 I0.5 on the profile (Z1 X4) (Z-10 X4) (Z-10 X10): as with I2 (levels 10, 8, 6, then the
-    profile's bottom 4 is followed: tests/turning/test_linuxcnc_g7x.py derives these passes) the cuts are at the
+    profile's bottom 4 is followed: tests/gcode/turning/test_linuxcnc_g7x.py derives these passes) the cuts are at the
     levels 10 - 0.5 k above 4 (radius), k = 0..11: 12 cuts.  (The profile's 3 lines count too, GC392.)"""
     text = hash_ + LC.format(cycle="G71 Q1 X10 Z1 D0 I0.5 R0.5")
     line = 8 + bool(hash_)

@@ -149,7 +149,7 @@ def common_programs(draw):
         else:
             # in G90 only: with an incremental Z word the dialects differ.  Fanuc (TOS = 0) moves by the
             # increment plus the length change ([0i] "Tool length compensation" example: G91 G43 Z-32. H01
-            # with H01 = -4 moves -36; tests/fanuc/test_offsets.py); LinuxCNC re-expresses the current point
+            # with H01 = -4 moves -36; tests/gcode/fanuc/test_offsets.py); LinuxCNC re-expresses the current point
             # in the new offset and moves by the increment alone (rs274: G91 G1 G43 H1 Z0 does not move)
             z = draw(_coords)
             line = draw(st.sampled_from([f"G1 G43 H1 Z{z} F100.", f"G0 G43 H2 Z{z}", f"G0 G49 Z{z}"]))

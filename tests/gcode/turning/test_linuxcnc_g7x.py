@@ -16,7 +16,7 @@ from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import Verdict, verify_segments
 from tests.corpus import CORPUS
-from tests.turning.helpers import F, lathe, moves, unknown_reason
+from tests.gcode.turning.helpers import F, lathe, moves, unknown_reason
 
 
 def _lc(diameter: bool = False, zones: str = ""):

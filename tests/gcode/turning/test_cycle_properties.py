@@ -14,9 +14,9 @@ from hypothesis import strategies as st
 from nczones.gcode import interpret_text
 from nczones.machine import load_machine
 from nczones.prover import verify
-from tests.turning.helpers import F, lathe
+from tests.gcode.turning.helpers import F, lathe
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 
 
 @st.composite

@@ -2,7 +2,7 @@
 (tests/oracles/fanuc_ref.py against nczones's Fanuc interpreter).
 
 Each production says which codes of specs/fanuc.md it writes (``PRODUCTIONS``: production name -> codes);
-``tests/fanuc/test_reference_differential.py::test_grammar_covers_every_modelled_code`` parses
+``tests/gcode/fanuc/test_reference_differential.py::test_grammar_covers_every_modelled_code`` parses
 specs/fanuc.md and fails when a code it marks modelled has no production.
 
 The generator keeps to programs whose meaning the manual fixes.  The classes of issue 33 are fixed and
@@ -10,7 +10,7 @@ written: G43/G44/G49 with a Z word in G91 (class 1), a bare H in G43/G44 mode (2
 G50 while a tool offset is active (4, ``lathe_programs``), ``/1``..``/9`` (5: the differential draws which
 switches are on), M00/M01 (6), G92.1 with axis words, G84.2/G84.3 with K, G51 P without a decimal point,
 transforms in G20 (the reference findings N1-N4).  Repeat counts stay small (L, K at most 3: class 7's
-bounds are tested in tests/fanuc/test_stops_and_bounds.py; the reference reader is slow).
+bounds are tested in tests/gcode/fanuc/test_stops_and_bounds.py; the reference reader is slow).
 """
 
 from __future__ import annotations
@@ -541,7 +541,7 @@ def p_computed_g(draw, st_: GenState):
 
 def p_plain_run(draw, st_: GenState, *, force: bool = False):
     """A run of more than 512 plain G01 lines (decimal literals only): the vectorized fast path's tier
-    (tests/fanuc/test_fastpath.py holds it to the full path; here both to the reference)."""
+    (tests/gcode/fanuc/test_fastpath.py holds it to the full path; here both to the reference)."""
     if not force and draw(st.integers(0, 9)) != 0:
         return
     import random

@@ -1,5 +1,5 @@
 """Golden positions from the Fanuc manuals for the codes of specs/fanuc.md that only a turning centre
-models (the rules: tests/fanuc/test_manual_examples.py; marked with ``@covers``).
+models (the rules: tests/gcode/fanuc/test_manual_examples.py; marked with ``@covers``).
 
 The machine: a Fanuc turning centre, X a diameter axis (machine X a radius, its increment 0.0005), Z, C
 in degrees (increment 0.001); G54 = (0, 200, 0) puts the work zero on the face.

@@ -4,7 +4,7 @@ Each program is minimal; the expected motion is derived by hand below it from th
 reader (tests/oracles/fanuc_ref.py) gives the same.  N1, N3 and N4 are fixed in nczones/gcode/fanuc/ (each
 test failed before its fix); a class still open stays ``xfail(strict=True)`` until it is fixed.
 
-The test mill (tests/fanuc/helpers.py): G54 = (100, 50, -200), EXT = (0, 0, 1), H1 = 100, H2 = 150.5,
+The test mill (tests/gcode/fanuc/helpers.py): G54 = (100, 50, -200), EXT = (0, 0, 1), H1 = 100, H2 = 150.5,
 start at machine (0, 0, 0).  machine = program + EXT + G54 (+ G92) (+ tool length on Z).
 """
 

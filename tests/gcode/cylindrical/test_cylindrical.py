@@ -20,7 +20,7 @@ from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 from nczones.prover import verify_text
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 EX = ROOT / "specs" / "examples"
 
 

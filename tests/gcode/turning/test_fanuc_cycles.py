@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from nczones.gcode import interpret_text
-from tests.turning.helpers import F, lathe, moves, unknown_reason
+from tests.gcode.turning.helpers import F, lathe, moves, unknown_reason
 
 R, L = "RAPID", "LINE"
 

@@ -24,7 +24,7 @@ from hypothesis import strategies as st
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
-from tests.turning.helpers import lathe, moves
+from tests.gcode.turning.helpers import lathe, moves
 
 from .helpers import ends, mill
 
@@ -250,7 +250,7 @@ def test_incremental_and_absolute_twins_reach_the_same_points(steps):
 
 
 def test_g92_in_g91_adds_the_increment_to_the_current_reading():
-    # G54 X = 100 (tests/fanuc/helpers.py).  G90 G54 X1.: machine 101, reading 1.  G91 G92 X5.: the reading
+    # G54 X = 100 (tests/gcode/fanuc/helpers.py).  G90 G54 X1.: machine 101, reading 1.  G91 G92 X5.: the reading
     # becomes 1 + 5 = 6 at machine 101, so the G92 shift is -5 and G90 X0 goes to 0 + 100 - 5 = 95.
     # (Read as absolute, the reading would be 5: shift -4, X0 at 96.)
     assert ends("G90 G54 G0 X1.\nG91 G92 X5.\nG90 X0\n") == [(101, 0, 0), (95, 0, 0)]
