@@ -25,12 +25,9 @@ from nczones.gcode.doubles import Declined, double_pass
 from nczones.gcode.fastpath import CODES as FAST_CODES
 from nczones.gcode.interpreter import GROUP_OF, PLAIN_CODES, Interpreter
 from nczones.machine import parse_machine
+from tests.machines import machine_text
 
-MACHINE = parse_machine(
-    '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.001"\n'
-    '[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
-    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[tool_lengths]\nH1 = "10"\n'
-)
+MACHINE = parse_machine(machine_text("mill_xyz", extra='[tool_lengths]\nH1 = "10"\n'))
 
 #: A block using each G code (key: 10 * number); a code not listed here uses its name alone.
 G_BLOCKS = {

@@ -13,44 +13,13 @@ from nczones.gcode import interpret, interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.motion import Plane, SegmentKind
 from tests.corpus import CORPUS
+from tests.machines import machine_text
 
 F = Fraction
 BAD = CORPUS / "linuxcnc" / "tests" / "interp" / "bad"
 
-MILL = parse_machine(
-    """
-[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "299"
-Z = "400"
-[offsets]
-G54 = { X = "100", Y = "0", Z = "50" }
-G55 = { X = "200", Y = "10", Z = "60" }
-[tool_lengths]
-H1 = "120"
-H2 = "95.5"
-"""
-)
-XY = parse_machine(
-    """
-[machine]
-axes = ["X", "Y"]
-pulse = "0.001"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-"""
-)
+MILL = parse_machine(machine_text("mill_g54_g55_h1_h2"))
+XY = parse_machine(machine_text("xy_fast"))
 
 
 def ends(text, machine=MILL, **kw):

@@ -19,6 +19,7 @@ from nczones.gcode import segments_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
 ROOT = Path(__file__).resolve().parents[3]
 EX = ROOT / "specs" / "examples"
@@ -117,8 +118,7 @@ def test_mode_errors_have_codes_lines_and_columns(prog, code, line, col):
 
 
 def test_mode_on_a_machine_without_the_linear_axis_is_an_error():
-    m = parse_machine('[machine]\naxes = ["X", "C"]\n[machine.rapid]\nX = "1"\nC = "1"\n'
-                      '[machine.reference]\nX = "0"\nC = "0"\n')
+    m = parse_machine(machine_text("xc_unit"))
     with pytest.raises(GcodeError) as exc:
         segments_text("G7.1 C10\n", m)
     assert exc.value.diagnostics[0].code == "GC232" and "Z" in exc.value.diagnostics[0].message

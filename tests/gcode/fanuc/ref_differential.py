@@ -16,6 +16,7 @@ from fractions import Fraction
 from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.motion import SegmentKind
+from tests.machines import machine_text
 from tests.oracles.fanuc_ref import (
     RefError,
     RefLathe,
@@ -117,29 +118,7 @@ def first_difference(o: Outcome) -> str:
     return f"lengths: nczones {len(o.ours)} reference {len(o.ref)}"
 
 
-LATHE = """
-[machine]
-name = "reference lathe"
-type = "lathe"
-dialect = "fanuc"
-axes = ["X", "Z"]
-diameter_axes = ["X"]
-[machine.rapid]
-X = "12000"
-Z = "15000"
-[machine.reference]
-X = "240"
-Z = "650"
-[offsets]
-G54 = { X = "0", Z = "200" }
-G55 = { X = "5", Z = "180" }
-[tool_offsets]
-1 = { X = "80", Z = "50", R = "0.4", tip = 3 }
-2 = { X = "85", Z = "45", R = "0.2", tip = 3, wear = { X = "0.01", Z = "-0.02" } }
-3 = { X = "70", Z = "60" }
-[fanuc]
-thread_chamfer = "0"
-"""
+LATHE = machine_text("fanuc_reference_lathe")
 
 
 def ref_lathe() -> RefLathe:

@@ -16,6 +16,7 @@ from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
 from .helpers import mill
 
@@ -57,7 +58,7 @@ def test_linuxcnc_unknown_gets_a_hint_for_fanuc_macro_statements():
 def test_default_dialect_is_linuxcnc_and_the_machine_file_sets_it():
     base = mill()
     assert replace(base, dialect="linuxcnc").dialect == "linuxcnc"
-    text = "[machine]\naxes=[\"X\"]\n[machine.rapid]\nX=\"1\"\n[machine.reference]\nX=\"0\"\n"
+    text = machine_text("x_unit")
     assert parse_machine(text).dialect == "linuxcnc"
     assert parse_machine(text.replace("[machine]\n", "[machine]\ndialect = \"fanuc\"\n")).dialect == "fanuc"
 

@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from nczones.errors import GcodeError
 from nczones.gcode.fanuc.expr import VACANT
 from nczones.gcode.program import IterationBoundExceeded, UnsupportedGcode
+from tests.machines import machine_text
 
 from .helpers import blocks, var
 
@@ -253,6 +254,6 @@ def test_the_linuxcnc_hint_does_not_crash_on_a_huge_literal():
     from nczones.gcode import interpret_text
     from nczones.machine import parse_machine
 
-    m = parse_machine('[machine]\naxes=["X"]\n[machine.rapid]\nX="1000"\n[machine.reference]\nX="0"\n')
+    m = parse_machine(machine_text("x_unit", set={"machine.rapid.X": "1000"}))
     with pytest.raises(GcodeError, match="GC105"):
         list(interpret_text(f"#1=ATAN[{_HUGE}]/[1e3]\nM30\n", m).segments())

@@ -31,44 +31,11 @@ import pytest
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
+from tests.machines import machine_text
 
 SPEC = Path(__file__).resolve().parents[3] / "specs" / "fanuc.md"
 
-MANUAL = """
-[machine]
-name = "manual examples mill"
-dialect = "fanuc"
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[machine.reference_2]
-X = "-100"
-Y = "-50"
-Z = "-10"
-[offsets]
-G54 = { X = "0", Y = "0", Z = "0" }
-G55 = { X = "100", Y = "200", Z = "0" }
-G56 = { X = "300", Y = "0", Z = "0" }
-G57 = { X = "0", Y = "400", Z = "0" }
-G58 = { X = "0", Y = "0", Z = "-50" }
-G59 = { X = "-10", Y = "-20", Z = "-30" }
-"G54.1P1" = { X = "7", Y = "8", Z = "9" }
-[tool_lengths]
-H1 = "-4"
-H2 = "10"
-[fanuc]
-decimal_point_input = "calculator"
-increment_system = "IS-B"
-g73_retract = "2"
-g83_clearance = "1"
-boring_shift = "+X"
-"""
+MANUAL = machine_text("fanuc_manual_examples_mill")
 
 #: code -> the goldens that cover it (filled by @covers)
 COVERED: dict[str, list[str]] = {}

@@ -13,6 +13,7 @@ from fractions import Fraction as Q
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
+from tests.machines import machine_text
 
 COVERED: dict[str, list[str]] = {}
 
@@ -25,25 +26,7 @@ def covers(*codes: str) -> Callable:
     return mark
 
 
-TURNING_CENTRE = """
-[machine]
-name = "manual examples turning centre"
-type = "lathe"
-dialect = "fanuc"
-axes = ["X", "Z", "C"]
-diameter_axes = ["X"]
-pulse = { X = "0.0005", Z = "0.001", C = "0.001" }
-[machine.rapid]
-X = "12000"
-Z = "15000"
-C = "36000"
-[machine.reference]
-X = "100"
-Z = "400"
-C = "0"
-[offsets]
-G54 = { X = "0", Z = "200", C = "0" }
-"""
+TURNING_CENTRE = machine_text("fanuc_manual_turning_centre")
 
 
 @covers("G12.1", "G13.1")

@@ -25,6 +25,7 @@ from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from tests.gcode.turning.helpers import lathe, moves
+from tests.machines import machine_text
 
 from .helpers import ends, mill
 
@@ -33,30 +34,7 @@ from .helpers import ends, mill
 #: A mill with no work offset (machine = program + tool length on Z), H1 = -4.0 as in the manual's example,
 #: H2 = 100 and H3 = 150.5 (positive lengths), and a vise jaw under the manual's second hole (X150 Y30): its
 #: top at machine Z -75.
-JAW_MILL = """
-[machine]
-name = "0i-MD example mill"
-dialect = "fanuc"
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[tool_lengths]
-H1 = "-4.0"
-H2 = "100"
-H3 = "150.5"
-[[zones]]
-name = "vise jaw"
-kind = "box"
-forbid = true
-min = { X = "145", Y = "25", Z = "-100" }
-max = { X = "155", Y = "35", Z = "-75" }
-"""
+JAW_MILL = machine_text("fanuc_0imd_jaw_mill")
 
 #: [0i] "Tool length compensation", Example (boring holes #1, #2, #3), H01 = -4.0, transcribed from the
 #: manual (no copy of it is stored with the project: the issue quotes N2 as ``G91 G00 G43 Z-32.0 H01``, here

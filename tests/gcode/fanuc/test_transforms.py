@@ -15,6 +15,7 @@ from hypothesis import strategies as st
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
 from .helpers import ends, mill
 
@@ -100,28 +101,7 @@ def test_first_move_after_cancel_must_be_absolute():
 
 # ---------------------------------------------------------------- parameter ranges through a transform
 
-FENCE = """
-[machine]
-name = "rotated fence"
-dialect = "fanuc"
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[offsets]
-G54 = { X = "100", Y = "50" }
-[[zones]]
-name = "fence"
-kind = "box"
-forbid = true
-min = { X = "108", Y = "0" }
-max = { X = "200", Y = "200" }
-"""
+FENCE = machine_text("fanuc_rotated_fence")
 
 ROTATED = "G90 G17 G54 G0 X0 Y0 Z0\nG68 X0 Y0 R90.\nG1 Y-5. F100.\nG1 X10. F100.\nG69\n"
 # derivation: after R90, Y-5 is (5, 0) and X10 (with Y-5) is (5, 10) -> machine X 105 at G54.X 100:

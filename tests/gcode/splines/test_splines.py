@@ -15,6 +15,7 @@ from nczones.motion import Plane, Segment, SegmentKind
 from nczones.nurbs import Nurbs, clamped_uniform_knots
 from nczones.prover.core import Prover, verify_segments
 from nczones.prover.result import Verdict
+from tests.machines import machine_text
 
 ROOT = Path(__file__).resolve().parents[3]
 
@@ -69,28 +70,7 @@ def test_clamped_ends_and_invalid_curves():
         Nurbs(2, (F(0), F(1), F(2), F(3), F(4), F(5)), ((F(0),), (F(1),), (F(2),)), (F(1),) * 3)
 
 
-MACHINE = parse_machine('''
-[machine]
-axes = ["X", "Y"]
-pulse = "0.01"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-[[zones]]
-name = "table"
-kind = "box"
-min = { X = "-12", Y = "-12" }
-max = { X = "12", Y = "5" }
-[[zones]]
-name = "post"
-kind = "box"
-forbid = true
-min = { X = "3", Y = "-2" }
-max = { X = "4", Y = "-1" }
-''')
+MACHINE = parse_machine(machine_text("xy_table_post"))
 
 
 def spline_segment(c: Nurbs) -> Segment:

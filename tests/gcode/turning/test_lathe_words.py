@@ -13,6 +13,7 @@ from nczones.gcode import interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from tests.gcode.turning.helpers import F, lathe, moves, unknown_reason
+from tests.machines import machine_text
 
 
 def test_machine_file_reads_the_lathe_keys():
@@ -26,16 +27,14 @@ def test_machine_file_reads_the_lathe_keys():
 
 
 def test_lathe_keys_on_a_mill_warn():
-    m = parse_machine('[machine]\ndialect = "fanuc"\naxes = ["X", "Z"]\n[machine.rapid]\nX = "1"\nZ = "1"\n'
-                      '[machine.reference]\nX = "0"\nZ = "0"\n[fanuc]\ng71_retract = "1"\n')
+    m = parse_machine(machine_text("fanuc_xz_g71_retract"))
     assert [w.code for w in m.warnings] == ["ZN115"]
 
 
 def test_diameter_axis_must_be_linear():
     with pytest.raises(MachineFileError) as e:
         lathe(axes='["X", "Z", "C"]', extra='diameter_axes = ["C"]\n'.replace("diameter_axes", "#"), diameter=False)
-        parse_machine('[machine]\naxes = ["X", "C"]\ndiameter_axes = ["C"]\n[machine.rapid]\nX = "1"\nC = "1"\n'
-                      '[machine.reference]\nX = "0"\nC = "0"\n')
+        parse_machine(machine_text("xc_unit", set={"machine.diameter_axes": ["C"]}))  # C is rotary
     assert e.value.diagnostics[0].code == "ZN107"
 
 

@@ -17,6 +17,7 @@ from nczones.machine import parse_machine
 from nczones.prover import Verdict, verify_segments
 from tests.corpus import CORPUS
 from tests.gcode.turning.helpers import F, lathe, moves, unknown_reason
+from tests.machines import machine_text
 
 
 def _lc(diameter: bool = False, zones: str = ""):
@@ -135,18 +136,7 @@ def test_the_prover_names_the_pass_and_the_controller_agrees():
 
 
 CANON = CORPUS / "linuxcnc" / "tests" / "interp"
-_MACHINE = """[machine]
-axes = ["X", "Z"]
-pulse = "0.0001"
-[machine.rapid]
-X = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Z = "0"
-[tool_lengths]
-H2 = "0"
-"""
+_MACHINE = machine_text("xz_fine_h2")
 
 
 @pytest.mark.skipif(not CANON.is_dir(), reason="the external corpus is not here")
