@@ -10,6 +10,12 @@ import pytest
 
 from tests.machines import machine_text
 
+# cli/linuxcnc/frontend.py runs under LinuxCNC's system Python with its `linuxcnc` module
+# (tests/cli/test_linuxcnc_filter.py starts it through the linuxcnc launcher); it is not a module of the test
+# suite.  (It had a conftest.py of its own, whose module name "conftest" clashed with this file's: the folders
+# without __init__.py share one module namespace.)
+collect_ignore = ["cli/linuxcnc/frontend.py"]
+
 
 @pytest.fixture
 def machine_file(tmp_path: Path) -> Callable[..., Path]:
