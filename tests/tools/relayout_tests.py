@@ -5,6 +5,15 @@ Usage, from the repository root (a git checkout)::
     python -m tests.tools.relayout_tests            # move, rewrite references, print what it did
     python -m tests.tools.relayout_tests --dry-run  # print what it would do, change nothing
 
+After merging a branch written against the old layout, merge with git's directory-rename detection off, so
+that a file the branch added to an old folder stays there for this script to move (and fix); then run it::
+
+    git -c merge.directoryRenames=false merge BRANCH && python -m tests.tools.relayout_tests
+
+(with detection on, git itself moves such a file into the new folder, as a "file location" conflict, and
+its ``parents[N]`` and relative imports are left unfixed).  Edits a branch made to a moved file follow the
+rename either way.
+
 The layout: a test folder is named after the nczones package or module it tests (tests/gcode/fanuc for
 nczones/gcode/fanuc/, tests/polar for nczones/polar.py), except the named cross-cutting folders
 (tests/packaging/test_layout.py lists them).  Today's feature folders are moved by FOLDER_RULES (every file
