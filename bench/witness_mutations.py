@@ -39,7 +39,7 @@ DIFFERENTIAL = [
     "tests/homing/test_cli.py",
     "tests/recovery/test_recovery.py::test_prover_and_controller_agree_on_the_example",
     "tests/recovery/test_recovery.py::test_prover_and_controller_agree_on_generated_machines",
-    "tests/splines/test_splines.py::test_controller_stays_within_one_and_a_quarter_pulses_of_the_curve",
+    "tests/gcode/splines/test_splines.py::test_controller_stays_within_one_and_a_quarter_pulses_of_the_curve",
     "tests/contract/test_contract.py::test_contract_on_tables_and_boxes",
 ]
 
@@ -48,7 +48,7 @@ OWN = {
     "homing": ["nczones/homing.py", "tests/homing/test_simulation.py"],
     "recovery": ["nczones/recovery.py", "tests/recovery/test_recovery.py::test_recovery_legs_follow_the_section",
                  "tests/recovery/test_recovery.py::test_motion_sequences_of_the_example"],
-    "nurbs": ["nczones/nurbs.py", "tests/splines/test_splines.py"],
+    "nurbs": ["nczones/nurbs.py", "tests/gcode/splines/test_splines.py"],
 }
 
 

@@ -1,7 +1,7 @@
 """``nczones verify`` over whole corpora: every program ends with exit 0, 1, 2 or 3, never 4 (an internal
 error), and within a bounded time (issue 33, class 6 and 7).
 
-Used by ``tests/gcode/test_corpus_verify.py`` (the LinuxCNC corpus) and ``tests/fanuc/test_corpus.py`` (the
+Used by ``tests/gcode/test_corpus_verify.py`` (the LinuxCNC corpus) and ``tests/gcode/fanuc/test_corpus.py`` (the
 Fanuc corpus); ``python -m tests.corpus_verify`` runs both whole and prints the counts for specs/.
 """
 
@@ -111,7 +111,7 @@ if __name__ == "__main__":  # the full run: python -m tests.corpus_verify DIR (D
     import tempfile
 
     folder = Path(sys.argv[1] if len(sys.argv) > 1 else tempfile.mkdtemp())
-    from tests.fanuc.test_corpus import fanuc_machine_file
+    from tests.gcode.fanuc.test_corpus import fanuc_machine_file
 
     lcnc = folder / "linuxcnc.toml"
     lcnc.write_text(LINUXCNC_MACHINE)

@@ -13,7 +13,7 @@ Everything the proofs rest on lives here, once, below every other module of nczo
   radians (:func:`sin_cos_interval`) and in degrees (:func:`sin_cos_degrees`).
 
 Each enclosure contains the exact real value (the argument is in each
-docstring; ``tests/foundation/test_exact_core.py`` checks them against mpmath).
+docstring; ``tests/exact/test_exact_core.py`` checks them against mpmath).
 
 >>> parse_decimal("0.1") + parse_decimal("0.2") == parse_decimal("0.3")
 True

@@ -3,7 +3,7 @@
 Every function returns an :class:`~nczones.exact.Interval` of rationals that
 contains the exact real value; nothing here uses a float.  The soundness
 argument of each is in its docstring; the test suite checks them once
-against mpmath at high precision (``tests/foundation/test_exact_core.py``).
+against mpmath at high precision (``tests/exact/test_exact_core.py``).
 
 Invariants
 ----------

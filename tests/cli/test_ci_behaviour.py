@@ -10,6 +10,7 @@ import time
 from pathlib import Path
 
 from nczones.cli import main
+from tests.machines import machine_text
 from tests.processes import cpu_seconds, interrupt
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -17,9 +18,7 @@ GRINDER = str(ROOT / "specs/machines/grinder.toml")
 
 
 def _project(root: Path, globs: str = '["*.ngc"]') -> Path:
-    (root / "m.toml").write_text('[machine]\naxes = ["X"]\n[machine.rapid]\nX = "1000"\n'
-                                 '[machine.reference]\nX = "0"\n[[zones]]\nname = "travel"\nkind = "box"\n'
-                                 'min = { X = "0" }\nmax = { X = "10" }\n', encoding="utf-8")
+    (root / "m.toml").write_text(machine_text("x_travel_10"), encoding="utf-8")
     (root / "nczones.toml").write_text(f'[machines.m]\nfile = "m.toml"\nprograms = {globs}\n', encoding="utf-8")
     return root
 

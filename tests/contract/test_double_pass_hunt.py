@@ -44,6 +44,7 @@ from nczones.gcode import interpret_text
 from nczones.gcode.doubles import Declined, double_pass
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
 from oracles.bruteforce import first_violation
 
@@ -692,22 +693,7 @@ def test_linuxcnc_moves_inside_the_double_pass_boxes(tmp_path_factory, case):
 
 
 # ---------------------------------------------------------------------------------------------- findings
-_BOX_MACHINE = """[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-100", Y = "-100", Z = "-100" }
-max = { X = "100", Y = "100", Z = "100" }
-"""
+_BOX_MACHINE = machine_text("box_100_fast")
 
 
 def _strict(text: str, machine_toml: str = _BOX_MACHINE) -> None:

@@ -10,6 +10,8 @@ import os
 
 from hypothesis import given, settings
 
+from tests.machines import machine_text
+
 from .fanuc_metamorphic import (
     check_block_delete,
     check_fanuc_state_reads,
@@ -71,31 +73,7 @@ def test_block_delete_both_is_the_worst_of_off_and_on(case):
 
 # ----------------------------------------------------------------------------- findings
 
-_MILL = """
-[machine]
-name = "fanuc finding"
-dialect = "fanuc"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-rapid_mode = "linear"
-[machine.rapid]
-X = "6000"
-Y = "6000"
-Z = "6000"
-[machine.reference]
-X = "50"
-Y = "50"
-Z = "190"
-[offsets]
-G54 = { X = "0", Y = "0", Z = "0" }
-[tool_lengths]
-H1 = "50"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "0" }
-max = { X = "100", Y = "100", Z = "200" }
-"""
+_MILL = machine_text("fanuc_finding_mill")
 
 
 def test_a_tool_length_the_program_set_does_not_follow_a_range_of_its_register():

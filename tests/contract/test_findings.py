@@ -8,24 +8,9 @@ from fractions import Fraction as F
 from nczones.controller import simulate
 from nczones.machine import parse_machine
 from nczones.motion import Segment, SegmentKind
+from tests.machines import machine_text
 
-MACHINE = """
-[machine]
-axes = ["X", "Y"]
-pulse = "0.01"
-monitor_period_ms = "2"
-[machine.rapid]
-X = "6000"
-Y = "6000"
-[machine.reference]
-X = "10"
-Y = "10"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0" }
-max = { X = "70", Y = "70" }
-"""
+MACHINE = machine_text("xy_pulse_001_travel_70")
 
 
 def test_periodic_alarm_reports_the_excursion_it_caught():

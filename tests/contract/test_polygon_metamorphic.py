@@ -11,6 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.zones import PolygonZone
+from tests.machines import machine_text
 
 from .metamorphic import check_margins, check_ranges
 from .polygon_metamorphic import (
@@ -64,27 +65,7 @@ def test_the_column_screen_and_z3_decide_polygon_zones_alike(case):
 
 # ----------------------------------------------------------------------------- findings
 
-BLADE_MACHINE = """
-[machine]
-axes = ["X", "Y"]
-[machine.rapid]
-X = "6000"
-Y = "6000"
-[machine.reference]
-X = "10"
-Y = "10"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0" }
-max = { X = "100", Y = "100" }
-[[zones]]
-name = "blade"
-kind = "polygon"
-forbid = true
-plane = ["X", "Y"]
-vertices = [["40", "40"], ["60", "60"], ["49.99", "50.01"]]
-"""
+BLADE_MACHINE = machine_text("xy_blade_polygon")
 
 
 def test_a_margin_box_meeting_a_thin_polygon_has_a_witness():
@@ -195,28 +176,7 @@ def test_a_box_certified_against_polygon_zones_violates_at_every_point(data):
         assert zone in machine.allowed.violated_zones(p, tool, margin), (zone.name, p, margin, tool)
 
 
-SPIRAL_MACHINE = """
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "6000"
-Y = "6000"
-Z = "6000"
-[machine.reference]
-X = "63"
-Y = "25"
-Z = "100"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "0" }
-max = { X = "100", Y = "100", Z = "200" }
-[[zones]]
-name = "wall"
-kind = "box"
-forbid = true
-min = { X = "66" }
-"""
+SPIRAL_MACHINE = machine_text("xyz_spiral_wall")
 
 
 def test_an_arc_ending_on_its_start_ray_is_not_proved_safe():

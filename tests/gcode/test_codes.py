@@ -25,12 +25,9 @@ from nczones.gcode.doubles import Declined, double_pass
 from nczones.gcode.fastpath import CODES as FAST_CODES
 from nczones.gcode.interpreter import GROUP_OF, PLAIN_CODES, Interpreter
 from nczones.machine import parse_machine
+from tests.machines import machine_text
 
-MACHINE = parse_machine(
-    '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.001"\n'
-    '[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
-    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[tool_lengths]\nH1 = "10"\n'
-)
+MACHINE = parse_machine(machine_text("mill_xyz", extra='[tool_lengths]\nH1 = "10"\n'))
 
 #: A block using each G code (key: 10 * number); a code not listed here uses its name alone.
 G_BLOCKS = {
@@ -181,7 +178,7 @@ FANUC_BLOCKS = {730: "G73 X1. Y1. Z-1. R1. Q0.5", 740: "M4 S100\nG74 X1. Y1. Z-1
 def test_fanuc_fast_path_claims_or_declines_each_code(key):
     """Fanuc: the code's block between two runs of simple lines; the fast path gives the full path's result,
     and takes a run of a code it claims."""
-    from tests.fanuc.helpers import mill
+    from tests.gcode.fanuc.helpers import mill
 
     machine = mill()
     n = fastpath.MIN_RUN + 8

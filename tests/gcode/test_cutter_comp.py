@@ -257,7 +257,7 @@ def test_lathe_tool_orientation_moves_the_controlled_point():
     * every point and the arc's centre moved by (-1, +1): (1, 14), arc to (0, 13) about (1, 13), line to (0, 9);
     * the first move starts where the tool stands (5, 12); after G40 the next move starts at (0, 9).
     With L0 the same path without the shift."""
-    from tests.turning.helpers import lathe
+    from tests.gcode.turning.helpers import lathe
 
     m = lathe('cutter_compensation = "linuxcnc"\n', dialect="linuxcnc", diameter=False)
     prog = "G18 G8 G21\nG0 X12 Z5\nG42.1 D2 L{o}\nG1 Z2 F100\nX8\nG40 G0 X20\nM2\n"
@@ -286,7 +286,7 @@ def test_lathe_tool_entry_arc_moves_the_controlled_point_first():
     the shift (-1, +1).  With L0 there is no such move.  The flush at M1 moves the end of every queued move to
     the compensated position (LinuxCNC's move_endpoint_and_flush: "we need to change all of them"), that feed's
     too, so it ends where the arc ends."""
-    from tests.turning.helpers import lathe
+    from tests.gcode.turning.helpers import lathe
 
     m = lathe('cutter_compensation = "linuxcnc"\n', dialect="linuxcnc", diameter=False)
     prog = "G18 G8 G21\nG0 X12 Z5\nG42.1 D2 L{o}\nG2 X12 Z-5 R10 F100\nM1\nG40 G0 X20\nM2\n"

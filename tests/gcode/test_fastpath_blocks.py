@@ -20,11 +20,9 @@ from hypothesis import strategies as st
 from nczones.errors import GcodeError
 from nczones.gcode import fastpath, interpret_text
 from nczones.machine import parse_machine
+from tests.machines import machine_text
 
-MACHINE = parse_machine(
-    '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\n[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
-    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[tool_lengths]\nH1 = "100"\n'
-)
+MACHINE = parse_machine(machine_text("mill_xyz", set={"machine.pulse": "0.0001"}, extra='[tool_lengths]\nH1 = "100"\n'))
 
 
 def _key(s):
@@ -240,8 +238,7 @@ def test_a_letter_twice_in_a_line_of_a_run_is_left_to_the_full_interpreter(line)
 
 
 def test_axis_words_the_machine_lacks_are_never_dropped():
-    xy = parse_machine('[machine]\naxes = ["X", "Y"]\n[machine.rapid]\nX = "1"\nY = "1"\n'
-                       '[machine.reference]\nX = "0"\nY = "0"\n')
+    xy = parse_machine(machine_text("xy_unit"))
     text = "G1 F100\n" + "X1 Y1\n" * 100 + "X2 Z5\n" + "X1 Y1\n" * 100
     with pytest.raises(GcodeError) as e:
         list(interpret_text(text, xy).segments())

@@ -19,12 +19,9 @@ from nczones.errors import GcodeError
 from nczones.gcode import fastpath, interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
+from tests.machines import machine_text
 
-MACHINE = parse_machine(
-    '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\n[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
-    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[tool_lengths]\nH1 = "100"\nH2 = "37.125"\n'
-    '[offsets]\nG54 = { X = "10", Y = "-20.5", Z = "-100" }\nG55 = { X = "-3.25", Y = "7", Z = "0.125" }\n'
-)
+MACHINE = parse_machine(machine_text("mill_offsets_h1_h2"))
 
 
 def _key(s):
@@ -176,31 +173,7 @@ def test_initial_level_below_r_goes_up_to_r_every_hole():
     assert sum(1 for k in got[0] if k[-1] == "G81 up to R") == 101
 
 
-CLAMP_MACHINE = parse_machine('''
-[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-rapid_mode = "dogleg"
-[machine.rapid]
-X = "1000"
-Y = "500"
-Z = "800"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "100"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "0" }
-max = { X = "300", Y = "300", Z = "200" }
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = { X = "100", Y = "60", Z = "0" }
-max = { X = "140", Y = "180", Z = "30" }
-''')
+CLAMP_MACHINE = parse_machine(machine_text("dogleg_mill_clamp"))
 
 
 def assert_same_proof_with_and_without_fast_path(text: str, machine) -> None:

@@ -20,24 +20,9 @@ from hypothesis import strategies as st
 from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
+from tests.machines import machine_text
 
-MACHINE = parse_machine("""
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "5000"
-Y = "5000"
-Z = "5000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-5000", Y = "-5000", Z = "-5000" }
-max = { X = "5000", Y = "5000", Z = "5000" }
-""")
+MACHINE = parse_machine(machine_text("box_5000"))
 
 
 def _run(text, fast):

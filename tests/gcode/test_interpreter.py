@@ -13,44 +13,13 @@ from nczones.gcode import interpret, interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.motion import Plane, SegmentKind, SplineCurve
 from tests.corpus import CORPUS
+from tests.machines import machine_text
 
 F = Fraction
 BAD = CORPUS / "linuxcnc" / "tests" / "interp" / "bad"
 
-MILL = parse_machine(
-    """
-[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "299"
-Z = "400"
-[offsets]
-G54 = { X = "100", Y = "0", Z = "50" }
-G55 = { X = "200", Y = "10", Z = "60" }
-[tool_lengths]
-H1 = "120"
-H2 = "95.5"
-"""
-)
-XY = parse_machine(
-    """
-[machine]
-axes = ["X", "Y"]
-pulse = "0.001"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-"""
-)
+MILL = parse_machine(machine_text("mill_g54_g55_h1_h2"))
+XY = parse_machine(machine_text("xy_fast"))
 
 
 def ends(text, machine=MILL, **kw):
@@ -287,7 +256,7 @@ def test_m19_takes_an_r_word_and_g4_with_an_explicit_motion_code_moves():
 @pytest.mark.parametrize("code", ["G71.2 Q1 P2 D0.5", "G72.1 Q1 P2 D0.5"])
 def test_linuxcnc_lathe_cycle_without_its_profile_is_an_error(code):
     """LinuxCNC's G71/G72 read their profile from o<Q>: a subroutine the file does not define is an error, as
-    LinuxCNC's call of it is (the cycles themselves: tests/turning/test_linuxcnc_g7x.py)."""
+    LinuxCNC's call of it is (the cycles themselves: tests/gcode/turning/test_linuxcnc_g7x.py)."""
     with pytest.raises(GcodeError) as e:
         list(interpret_text(f"G21\nG0 X1\n{code}\nX2 Y3 R1 K0\n", MILL).segments())
     assert e.value.diagnostics[0].code == "GC313" and e.value.diagnostics[0].span.line == 3

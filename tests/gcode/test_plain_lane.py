@@ -25,13 +25,9 @@ from nczones.gcode.lexer import PlainBlock
 from nczones.gcode.program import iter_blocks
 from nczones.machine import parse_machine
 from tests.corpus import CORPUS
+from tests.machines import machine_text
 
-MACHINE = parse_machine(
-    '[machine]\naxes = ["X", "Y", "Z", "A"]\npulse = "0.001"\n'
-    '[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\nA = "1000"\n'
-    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\nA = "0"\n'
-    '[offsets]\nG55 = { X = "10.5", Z = "-3" }\n[tool_lengths]\nH1 = "100"\nH2 = "12.25"\n'
-)
+MACHINE = parse_machine(machine_text("xyza_g55_h1_h2"))
 
 
 def _result(text: str, machine=MACHINE, block_delete=False):

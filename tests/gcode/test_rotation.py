@@ -8,23 +8,10 @@ from fractions import Fraction
 from nczones.gcode import interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
+from tests.machines import machine_text
 
 F = Fraction
-MILL = parse_machine(
-    """
-[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-"""
-)
+MILL = parse_machine(machine_text("mill_xyz"))
 
 
 def _rot(x: float, y: float, deg: float, ox: float = 0.0, oy: float = 0.0) -> tuple[Fraction, Fraction]:

@@ -22,6 +22,7 @@ import pytest
 
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify_text as verify
+from tests import machines
 from tests.oracles.rs274 import canon_motion, compare, machine_text
 from tests.tools.rs274_diff import FINDING_SETUP, machine_of
 
@@ -73,33 +74,7 @@ def test_feed_after_g93_then_g94_is_zero_again():
 
 # -- G33.1 after G84 outside G17 ----------------------------------------------------------------------------
 
-BOX = parse_machine("""[machine]
-name = "box"
-units = "mm"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-rapid_mode = "linear"
-max_feed = "6000"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-100", Y = "-100", Z = "-100" }
-max = { X = "100", Y = "100", Z = "100" }
-[[zones]]
-name = "post"
-kind = "box"
-forbid = true
-min = { X = "-4.5", Y = "-4", Z = "-13" }
-max = { X = "-3.5", Y = "-3", Z = "-12" }
-""")
+BOX = parse_machine(machines.machine_text("rs274_box"))
 
 
 def test_the_recorded_tap_starts_and_ends_where_g84_left_the_machine():

@@ -16,31 +16,9 @@ from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
-MACHINE_TEXT = """
-[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.0001"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-100", Y = "-100", Z = "-100" }
-max = { X = "100", Y = "100", Z = "100" }
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = { X = "7", Y = "-5", Z = "-100" }
-max = { X = "8", Y = "5", Z = "-0.5" }
-"""
+MACHINE_TEXT = machine_text("box_100_clamp_parity")
 MACHINE = parse_machine(MACHINE_TEXT)
 
 

@@ -10,25 +10,10 @@ from nczones.errors import GcodeError
 from nczones.gcode import segments_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
+from tests.machines import machine_text
 
 F = Fraction
-MILL = parse_machine(
-    """
-[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[offsets]
-G54 = { X = "100", Y = "0", Z = "50" }
-"""
-)
+MILL = parse_machine(machine_text("mill_xyz", extra='[offsets]\nG54 = { X = "100", Y = "0", Z = "50" }\n'))
 
 
 def test_g33_is_a_straight_line_to_the_end_point_with_k_as_pitch():

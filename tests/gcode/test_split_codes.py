@@ -19,6 +19,7 @@ from nczones import error_codes
 from nczones.errors import GcodeError
 from nczones.machine import Machine, load_machine, parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
 ROOT = Path(__file__).resolve().parents[2]
 MILL = load_machine(ROOT / "specs" / "machines" / "mill.toml")
@@ -56,23 +57,7 @@ def test_each_interpreter_reason_for_unknown_has_its_own_code(code, old, body, o
 
 def _comp_machine() -> Machine:
     """A mill with LinuxCNC cutter compensation and tool 1 of diameter 2 (as tests/gcode/test_cutter_comp.py)."""
-    return parse_machine('''
-[machine]
-axes = ["X", "Y", "Z"]
-cutter_compensation = "linuxcnc"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[offsets]
-G54 = { X = "100", Y = "50" }
-[tool_diameters]
-T1 = "2"
-''')
+    return parse_machine(machine_text("mill_cutter_comp_g54"))
 
 
 @pytest.mark.parametrize("lane", LANES)

@@ -12,37 +12,12 @@ from nczones.gcode.state import linuxcnc_state_parameters
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import parse_param
 from nczones.prover import verify_text as verify
+from tests.machines import machine_text
 
 F = Fraction
 MILL_FILE = "specs/machines/mill.toml"
 
-MILL = parse_machine(
-    """
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "1"
-Y = "2"
-Z = "400"
-[machine.start]
-X = "5"
-Y = "6"
-Z = "300"
-[offsets]
-G54 = { X = "100", Y = "0", Z = "50" }
-G55 = { X = "200", Y = "10", Z = "60" }
-"G59.3" = { X = "-7", Y = "-8", Z = "-9" }
-[tool_lengths]
-H1 = "120"
-H2 = "95.5"
-[tool_diameters]
-T2 = "6"
-"""
-)
+MILL = parse_machine(machine_text("mill_start_all_offsets"))
 
 
 def reads(program: str, machine=MILL, **options) -> list[Fraction]:

@@ -12,11 +12,9 @@ import pytest
 from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
+from tests.machines import machine_text
 
-MACHINE = parse_machine(
-    '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\n[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
-    '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[tool_lengths]\nH1 = "10"\n'
-)
+MACHINE = parse_machine(machine_text("mill_xyz", set={"machine.pulse": "0.0001"}, extra='[tool_lengths]\nH1 = "10"\n'))
 PREAMBLE = "G21 G90 G17 G54 F100 T1 M6 G43 H1\n"
 
 REFUSED = [
@@ -117,7 +115,6 @@ def test_after_an_unknown_code_the_block_is_left_alone():
 
 def test_the_fanuc_dialect_is_not_held_to_linuxcncs_rule():
     fanuc = parse_machine(
-        '[machine]\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\ndialect = "fanuc"\n[machine.rapid]\nX = "1000"\n'
-        'Y = "1000"\nZ = "1000"\n[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n')
+        machine_text("mill_xyz", set={"machine.pulse": "0.0001", "machine.dialect": "fanuc"}))
     segments = [s for c in interpret_text("G21 G90 G94 F100\nG01 X1 E3\nM30\n", fanuc) for s in c.segments()]
     assert [s.end[0] for s in segments] == [1]

@@ -22,6 +22,7 @@ from nczones.imports import import_text
 from nczones.imports.export import export_zones
 from nczones.machine import Machine, parse_machine
 from nczones.testing import machines
+from tests.machines import machine_text
 
 F = Fraction
 
@@ -95,36 +96,7 @@ def test_what_the_control_holds_contains_the_allowed_set(m, kind):
         assert _same_allowed_set(m, back)
 
 
-MILL = parse_machine("""
-[machine]
-name = "mill"
-axes = ["X", "Y", "Z"]
-rapid = { X = "12000", Y = "12000", Z = "8000" }
-reference = { X = "100", Y = "100", Z = "-10" }
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "-400" }
-max = { X = "800.0005", Y = "500", Z = "0" }
-[[zones]]
-name = "tool changer"
-kind = "box"
-forbid = true
-min = { X = "700", Y = "400" }
-[[zones]]
-name = "vise"
-kind = "box"
-forbid = true
-point = "tip"
-min = { X = "200", Y = "100", Z = "-400" }
-max = { X = "300", Y = "200", Z = "-300" }
-[[zones]]
-name = "clamp"
-kind = "polygon"
-forbid = true
-plane = ["X", "Y"]
-vertices = [["10", "10"], ["20", "10"], ["15", "20"]]
-""", "mill.toml")
+MILL = parse_machine(machine_text("export_mill"), "mill.toml")
 
 
 def test_fanuc_rounds_outwards_and_says_what_it_left_out():
@@ -156,7 +128,7 @@ def test_linuxcnc_cannot_hold_forbidden_areas_and_converts_to_inches():
 ])
 def test_cli_bad_options(tmp_path, capsys, args, text):
     m = tmp_path / "m.toml"
-    m.write_text("[machine]\naxes = [\"X\"]\nrapid = { X = \"100\" }\nreference = { X = \"0\" }\n")
+    m.write_text(machine_text("export_x_bare"))
     try:
         code = main(["export-zones", str(m), *args])
     except SystemExit as exc:  # argparse refuses a choice before the command runs
@@ -168,8 +140,7 @@ def test_cli_bad_options(tmp_path, capsys, args, text):
 
 def test_cli_exit_status_says_whether_the_control_holds_it_exactly(tmp_path, capsys):
     exact = tmp_path / "box.toml"
-    exact.write_text('[machine]\naxes = ["X"]\nrapid = { X = "100" }\nreference = { X = "0" }\n'
-                     '[[zones]]\nname = "t"\nkind = "box"\nmin = { X = "-1" }\nmax = { X = "1" }\n')
+    exact.write_text(machine_text("export_x_box"))
     assert main(["export-zones", str(exact), "--kind", "linuxcnc", "-o", str(tmp_path / "out.ini")]) == 0
     out = capsys.readouterr().out
     assert "holds the allowed set exactly" in out
@@ -187,27 +158,7 @@ def test_cli_exit_status_says_whether_the_control_holds_it_exactly(tmp_path, cap
 # displayed as diameter value".  The machine file counts a diameter axis' machine coordinate as a radius
 # (diameter_axes, specs/turning.md), so the parameter value is twice the machine file's.
 
-LATHE = parse_machine("""
-[machine]
-name = "lathe"
-type = "lathe"
-dialect = "fanuc"
-axes = ["X", "Z"]
-diameter_axes = ["X"]
-rapid = { X = "12000", Z = "15000" }
-reference = { X = "120", Z = "400" }
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-1", Z = "0" }
-max = { X = "125.25", Z = "700" }
-[[zones]]
-name = "turret guard"
-kind = "box"
-forbid = true
-min = { X = "100", Z = "600" }
-max = { X = "130", Z = "710" }
-""", "lathe.toml")
+LATHE = parse_machine(machine_text("export_fanuc_lathe"), "lathe.toml")
 
 
 def test_fanuc_export_writes_diameters_for_a_diameter_axis():

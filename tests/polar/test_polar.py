@@ -27,6 +27,7 @@ from nczones.polar import (
     walk_angle,
 )
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
 ROOT = Path(__file__).resolve().parents[2]
 EX = ROOT / "specs" / "examples"
@@ -179,8 +180,7 @@ def test_mode_errors_have_codes_lines_and_columns(prog, code, line, col):
 
 
 def test_machine_without_a_c_axis_is_an_error():
-    m = parse_machine('[machine]\ntype = "lathe"\ndialect = "fanuc"\naxes = ["X", "Z"]\ndiameter_axes = ["X"]\n'
-                      '[machine.rapid]\nX = "1000"\nZ = "1000"\n[machine.reference]\nX = "50"\nZ = "50"\n')
+    m = parse_machine(machine_text("fanuc_xz_lathe"))
     with pytest.raises(GcodeError) as e:
         segments_text("G00 X40. Z2.\nG112\n", m)
     assert e.value.diagnostics[0].code == "GC236" and "X, Z" in e.value.diagnostics[0].message
@@ -205,8 +205,7 @@ def test_paths_through_the_centre_and_unmodelled_words_are_unknown(prog, words):
 
 
 def test_linuxcnc_has_no_polar_interpolation():
-    m = parse_machine('[machine]\naxes = ["X", "Z", "C"]\n[machine.rapid]\nX = "1000"\nZ = "1000"\nC = "1000"\n'
-                      '[machine.reference]\nX = "0"\nZ = "0"\nC = "0"\n')
+    m = parse_machine(machine_text("xzc_linuxcnc"))
     for code in ("G12.1", "G112"):
         with pytest.raises(GcodeError) as e:
             segments_text(f"{code}\nG1 X1 F10\n", m)
@@ -214,8 +213,7 @@ def test_linuxcnc_has_no_polar_interpolation():
 
 
 def test_fanuc_mill_keeps_polar_interpolation_unknown():
-    m = parse_machine('[machine]\ndialect = "fanuc"\naxes = ["X", "Y", "Z", "C"]\n[machine.rapid]\nX = "1000"\n'
-                      'Y = "1000"\nZ = "1000"\nC = "1000"\n[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\nC = "0"\n')
+    m = parse_machine(machine_text("fanuc_xyzc"))
     run = interpret_text("G12.1\nG1 X1 F10\n", m)
     list(run.segments())
     assert run.unsupported[0].code == "G12.1" and "lathe" in run.unsupported[0].reason

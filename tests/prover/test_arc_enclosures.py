@@ -28,10 +28,10 @@ from nczones.prover.core import Prover, arc_bases
 from nczones.prover.geometry import arc_geom, in_sweep, rational_point_on_arc
 from nczones.prover.limits import RunLimits
 from nczones.zones import AllowedSet, BoxZone, Region, SteppedZone
+from tests.machines import machine_text
 
 AXES = ("X", "Y", "Z")
-BASE = parse_machine('[machine]\naxes = ["X", "Y", "Z"]\n[machine.rapid]\nX = "1"\nY = "1"\nZ = "1"\n'
-                     '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n')
+BASE = parse_machine(machine_text("xyz_unit"))
 
 
 def machine_with(zones):

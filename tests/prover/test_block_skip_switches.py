@@ -32,6 +32,7 @@ from nczones.machine import load_machine, parse_machine
 from nczones.prover import MAX_SWITCH_COMBINATIONS, Verdict, verify_text
 from nczones.replay import replay_report
 from nczones.report import render_report
+from tests.machines import machine_text
 
 FANUC_MILL = "specs/machines/fanuc_mill.toml"
 # fanuc_mill.toml: G54 = (-400, -250, -300), H1 = 110; the clamp (a tip zone) is machine X -315..-285,
@@ -254,23 +255,7 @@ def _check_worst(body):
 
 # ---- LinuxCNC: one switch; /1 and // lines as rs274 reads them ---------------------------------------
 
-LINUXCNC = """
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-100", Y = "-100", Z = "-100" }
-max = { X = "3", Y = "100", Z = "100" }
-"""
+LINUXCNC = machine_text("box_x3")
 
 
 @pytest.mark.parametrize("line", ["/1 G0 X4", "//G0 X4", "/2 G0 X4", "  /1G0 X4"])

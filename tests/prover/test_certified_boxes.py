@@ -20,6 +20,7 @@ from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from nczones.prover.exact import box_certainly_violates
 from nczones.testing import machines
+from tests.machines import machine_text
 
 F = Fraction
 ROOT = Path(__file__).resolve().parents[2]
@@ -63,23 +64,7 @@ def test_a_certified_box_violates_at_every_point(case, data):
             assert zone in machine.allowed.violated_zones(p, tool_length, margin), (zone.name, p, margin)
 
 
-TRAVEL = parse_machine("""
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "6000"
-Y = "6000"
-Z = "6000"
-[machine.reference]
-X = "30"
-Y = "50"
-Z = "190"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "0" }
-max = { X = "100", Y = "100", Z = "200" }
-""")
+TRAVEL = parse_machine(machine_text("xyz_travel_100_200"))
 
 
 def test_a_flat_box_on_a_shifted_face_is_certified():

@@ -20,24 +20,11 @@ from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from nczones.prover.result import Verdict
 from tests.gcode.test_double_pass import parametric_programs
+from tests.machines import machine_text
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "60"))
 
-HEAD = """[machine]
-name = "zones"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "5000"
-Y = "5000"
-Z = "5000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[offsets]
-G55 = { X = "3.5", Y = "-1" }
-"""
+HEAD = machine_text("mill_g55_zones_head")
 
 ZONES = {
     "box": '[[zones]]\nname = "travel"\nkind = "box"\nmin = {{ X = "-{a}", Y = "-{a}", Z = "-{a}" }}\n'

@@ -19,27 +19,9 @@ import pytest
 
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
-MACHINE = parse_machine('''
-[machine]
-path_mode = "G61"  # exact path: this test is not about corner blending (tests/prover/test_blending.py is)
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "50"
-
-[[zones]]
-name = "post"
-kind = "polygon"
-forbid = true
-plane = ["X", "Y"]
-vertices = [["4", "12"], ["12", "4"], ["20", "20"]]
-''')
+MACHINE = parse_machine(machine_text("helix_post_polygon"))
 
 
 def _programs(arc: str) -> dict[str, str]:

@@ -11,33 +11,10 @@ import pytest
 
 from nczones.machine import parse_machine
 from nczones.prover import Verdict, verify_text
+from tests.machines import machine_text
 
 #: allowed: Z >= -40 for X <= 5, only Z >= -25 for 5 < X <= 50 (a stepped table), X/Y within +-50
-MACHINE = parse_machine("""
-[machine]
-path_mode = "G61"  # exact path: this test is not about corner blending (tests/prover/test_blending.py is)
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "10"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "table"
-kind = "stepped"
-reference_axis = "X"
-limited_axis = "Z"
-from = "-50"
-regions = [{upto = "5", min = "-40"}, {upto = "50", min = "-25"}]
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-50", Y = "-50" }
-max = { X = "50", Y = "50", Z = "10" }
-""")
+MACHINE = parse_machine(machine_text("helix_stepped_table"))
 
 
 def program(turns: int, z_end: int) -> str:

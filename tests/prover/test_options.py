@@ -24,26 +24,9 @@ from nczones.prover import VerifyOptions, verify_text
 from nczones.prover.core import prove
 from nczones.prover.limits import DEFAULT_BUDGET_S
 from nczones.prover.result import ParamRange
+from tests.machines import machine_text
 
-MACHINE = parse_machine('''
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[tool_lengths]
-H1 = "100"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-5", Y = "-5", Z = "-200" }
-max = { X = "20", Y = "20", Z = "50" }
-''')
+MACHINE = parse_machine(machine_text("options_mill_h1"))
 
 PROGRAM = "G90 G21\n/G1 X30 F100\nG1 X10 Y10 F100\nG2 X10 Y10 I5 J0\nM2\n"
 

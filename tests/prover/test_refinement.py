@@ -19,24 +19,15 @@ from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover import Prover, Verdict, arcs, refine, verify_segments
 from nczones.prover.geometry import arc_geom
 from nczones.zones import AllowedSet, Region, SteppedZone
+from tests.machines import machine_text
 
 AXES = ("X", "Y", "Z")
 
 
 def machine(step_z: int, low_z: int = -20):
     """A stepped table along X: for X <= 0 the tool must stay at Z >= step_z, beyond at Z >= low_z."""
-    base = parse_machine("""
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "3000"
-Y = "3000"
-Z = "3000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-""")
+    rapid = {f"machine.rapid.{axis}": "3000" for axis in "XYZ"}
+    base = parse_machine(machine_text("xyz_unit", set=rapid))
     z = SteppedZone("table", "X", "Z", F(-50), (Region(F(0), F(step_z), None), Region(F(50), F(low_z), None)))
     return replace(base, allowed=AllowedSet((z,), base.allowed.tool_axis))
 

@@ -33,6 +33,7 @@ from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover import Prover, verify_text
 from nczones.prover.screen import LINE_SCALE, segment_columns
+from tests.machines import machine_text
 
 MACHINE = """
 [machine]
@@ -247,18 +248,7 @@ def test_fanuc_macros_agree(machine, program, margin):
 
 
 AXES = ("X", "Y", "Z")
-_M = parse_machine("""
-[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "1"
-Y = "1"
-Z = "1"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-""")
+_M = parse_machine(machine_text("xyz_unit"))
 
 numbers = st.one_of(
     st.integers(-10**6, 10**6).map(lambda n: F(n, 1000)),  # decimals

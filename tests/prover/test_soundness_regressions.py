@@ -15,6 +15,7 @@ from nczones.gcode import interpret_text as interpret
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import parse_param
 from nczones.prover import verify_text as verify
+from tests.machines import machine_text
 from tests.oracles.concrete import machine_at
 
 F = Fraction
@@ -31,30 +32,7 @@ def witness_values(result) -> dict[str, Fraction]:
 
 # ----------------------------------------------------------------------------- 1. dogleg rapids
 
-DOGLEG_TEXT = """
-[machine]
-axes = ["X", "Y"]
-rapid_mode = "dogleg"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-[machine.reference]
-X = "0"
-Y = "100"
-[offsets]
-G54 = { X = "0", Y = "0" }
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-10", Y = "-10" }
-max = { X = "200", Y = "200" }
-[[zones]]
-name = "post"
-kind = "box"
-forbid = true
-min = { X = "75", Y = "15" }
-max = { X = "85", Y = "25" }
-"""
+DOGLEG_TEXT = machine_text("dogleg_post")
 DOGLEG = parse_machine(DOGLEG_TEXT, "dogleg.toml")
 DOG_MOVE = "G21 G90 G54\nG0 X100 Y0\nM30\n"
 DOG_HOME = "G21 G90 G54\nG0 X105\nG0 Y-5\nG28\nM30\n"   # the G28 home leg runs diagonally through the post
@@ -107,36 +85,7 @@ def test_a_tool_length_the_program_wrote_ignores_the_machine_files_range(param):
 
 # ----------------------------------------------------------------------------- 3. canned cycles branch on R
 
-CYCLE_TEXT = """
-[machine]
-axes = ["X", "Y", "Z"]
-# exact path: G64 may round the corner above the clamp (specs/path-modes.md); these tests are about the branch
-path_mode = "G61"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "300"
-[offsets]
-G54 = { X = "0", Y = "0", Z = "100" }
-[tool_lengths]
-H1 = "120"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-10", Y = "-50", Z = "0" }
-max = { X = "200", Y = "50", Z = "400" }
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-point = "tip"
-min = { X = "40", Y = "-10", Z = "183" }
-max = { X = "60", Y = "10", Z = "190" }
-"""
+CYCLE_TEXT = machine_text("cycle_clamp_g61")
 CYCLE = parse_machine(CYCLE_TEXT, "cycle.toml")
 # R (machine) = 81 + 100 + H1: above the initial level 300 for H1 > 119 (the cycle climbs to R and moves over
 # the clamp at tip level 181), below it for H1 < 119 (it moves at the initial level: tip 300 - H1, in the
@@ -183,19 +132,7 @@ def test_a_branch_on_two_ranged_parameters_together_is_unknown():
 
 
 def test_cutter_compensation_from_a_position_that_moves_with_a_range_is_unknown():
-    m = parse_machine("""
-[machine]
-axes = ["X", "Y"]
-cutter_compensation = "linuxcnc"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-[offsets]
-G54 = { X = "10", Y = "0" }
-""")
+    m = parse_machine(machine_text("xy_cutter_comp_g54"))
     prog = "G90 G54\nG41.1 D2 G1 X20 Y10 F100\nX30\nG40 X40\nM30\n"
     assert verify(prog, m).verdict.label == "safe"
     result = verify(prog, m, params=["G54.X=-1..1"])
@@ -206,35 +143,7 @@ G54 = { X = "10", Y = "0" }
 
 # ----------------------------------------------------------------------------- 6. internal errors on valid input
 
-FLAT = parse_machine("""
-[machine]
-axes = ["X", "Y"]
-[machine.rapid]
-X = "10000"
-Y = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-10", Y = "-10" }
-max = { X = "200", Y = "200" }
-[[zones]]
-name = "flat"
-kind = "box"
-forbid = true
-min = { X = "50", Y = "20" }
-max = { X = "50", Y = "40" }
-[[zones]]
-name = "flat row"
-kind = "stepped"
-forbid = true
-reference_axis = "X"
-limited_axis = "Y"
-from = "100"
-regions = [{ upto = "120", min = "60", max = "60" }, { upto = "140", min = "50", max = "70" }]
-""")
+FLAT = parse_machine(machine_text("xy_flat_zone"))
 
 
 @pytest.mark.parametrize("margin", ["0", "1", "0.001"])

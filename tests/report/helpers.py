@@ -27,3 +27,14 @@ def check_golden(name: str, actual: str) -> None:
         path.write_text(actual, encoding="utf-8")
     expected = path.read_text(encoding="utf-8")
     assert actual == expected, f"{name} differs from the golden file (NCZONES_UPDATE_GOLDENS=1 rewrites it)"
+
+
+def verify_with_hot_path(source, machine_path: Path):
+    """(machine, result, path) of ``source`` on the machine file: the path collected around the violating
+    blocks and their passes, as the figure and the interactive view draw it (report tests of both)."""
+    from nczones.report.figure import collect_path, hot_passes
+
+    m = load_machine(machine_path)
+    result = verify(source, m)
+    path = collect_path(source, m, {v.block for v in result.violations}, passes=hot_passes(result.violations))
+    return m, result, path

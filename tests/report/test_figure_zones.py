@@ -21,15 +21,14 @@ from nczones import load_machine  # noqa: E402
 from nczones.gcode.source import program_text  # noqa: E402
 from nczones.prover import verify  # noqa: E402
 from nczones.report.figure import (  # noqa: E402
-    collect_path,
     drawing_placements,
-    hot_passes,
     plot_program,
     relevant_planes,
 )
 from nczones.report.placement import placed_zones  # noqa: E402
+from tests.machines import machine_text
 
-from .helpers import EX, MACHINES  # noqa: E402
+from .helpers import EX, MACHINES, verify_with_hot_path  # noqa: E402
 
 CASES = {
     # mill, tip box moved by the G43 tool length
@@ -65,10 +64,8 @@ def _patches(ax):
 
 
 def _check(source, machine_path):
-    m = load_machine(machine_path)
-    result = verify(source, m)
+    m, result, path = verify_with_hot_path(source, machine_path)
     assert result.violations, "a known unsafe case"
-    path = collect_path(source, m, {v.block for v in result.violations}, passes=hot_passes(result.violations))
     placements = drawing_placements(path)
     planes = relevant_planes(m, result)
     checked = 0
@@ -160,31 +157,12 @@ def test_lathe_view_z_horizontal_x_up_and_diameter():
     plt.close(fig)
 
 
-STEPPED_TIP_MILL = """
-[machine]
-name = "mill with a stepped floor for the tool tip"
-units = "mm"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-rapid_mode = "linear"
-monitor_period_ms = "2"
-[machine.rapid]
-X = "15000"
-Y = "15000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "400"
-[offsets]
-G54 = { X = "0", Y = "0", Z = "0" }
-[tool_lengths]
-H1 = "120"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "0" }
-max = { X = "600", Y = "400", Z = "400" }
+# the report tests' mill (tests/machines/report_mill.toml: travel 600 x 400 x 400, H1 = 120) at G54 = 0
+STEPPED_TIP_MILL = machine_text("report_mill", set={
+    "machine.name": "mill with a stepped floor for the tool tip", "machine.units": "mm",
+    "machine.rapid_mode": "linear", "machine.monitor_period_ms": "2",
+    "machine.rapid.X": "15000", "machine.rapid.Y": "15000", "offsets.G54": {"X": "0", "Y": "0", "Z": "0"},
+}, extra="""\
 [[zones]]
 name = "floor"
 kind = "stepped"
@@ -193,7 +171,7 @@ reference_axis = "X"
 limited_axis = "Z"
 from = "0"
 regions = [{ upto = "200", min = "50", max = "400" }, { upto = "600", min = "100", max = "400" }]
-"""
+""")
 
 
 def test_witness_outside_a_stepped_tip_table(tmp_path):

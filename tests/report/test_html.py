@@ -14,6 +14,7 @@ from nczones.gcode.source import program_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from nczones.report.html import render_html, without_library
+from tests.machines import machine_text
 
 from .helpers import EX, GOLDEN, run_example
 
@@ -71,22 +72,7 @@ def test_report_is_self_contained_and_complete():
 
 
 def test_user_text_is_escaped_everywhere():
-    m = parse_machine('''
-[machine]
-name = "<script>alert(1)</script>"
-axes = ["X", "Y"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-[[zones]]
-name = "a<b>&\\"zone\\""
-kind = "box"
-min = { X = "0", Y = "0" }
-max = { X = "10", Y = "10" }
-''', "evil<1>.toml")
+    m = parse_machine(machine_text("html_escape"), "evil<1>.toml")
     prog = "(<img src=x onerror=alert[2]>)\nG1 X20 F100\n"
     result = verify_text(prog, m, file="<b>evil</b>.ngc")
     page = without_library(render_html(result, m, program_text(prog, "<b>evil</b>.ngc")))

@@ -29,11 +29,12 @@ from hypothesis import strategies as st
 
 from nczones import load_machine
 from nczones.gcode.source import program_text
-from nczones.prover import verify, verify_text
-from nczones.report.figure import PathFloat, collect_path, hot_passes, thin_path
+from nczones.prover import verify_text
+from nczones.report.figure import PathFloat, collect_path, thin_path
 from nczones.report.interactive import plotly_js, view_data
+from tests.machines import machine_text
 
-from .helpers import EX, MACHINES, ROOT
+from .helpers import EX, MACHINES, ROOT, verify_with_hot_path
 
 IN_CI = os.environ.get("CI", "").lower() == "true"
 SCREENSHOTS = Path(os.environ.get("NCZONES_SCREENSHOTS", ROOT / "build" / "screenshots"))
@@ -52,10 +53,7 @@ EXAMPLES = {
 def _view(name: str):
     """(result, machine, view data) of an example, computed once per test session (the data is not changed)."""
     program, machine_path = EXAMPLES[name]
-    m = load_machine(machine_path)
-    source = str(EX / program)
-    result = verify(source, m)
-    path = collect_path(source, m, {v.block for v in result.violations}, passes=hot_passes(result.violations))
+    m, result, path = verify_with_hot_path(str(EX / program), machine_path)
     return result, m, view_data(path, result, m)
 
 
@@ -118,30 +116,11 @@ def _check_witnesses(result, m, data) -> None:
     assert checked >= 1
 
 
-MILL_L_CLAMP = """
-[machine]
-name = "mill with an L-shaped clamp and a stepped floor"
-units = "mm"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-rapid_mode = "linear"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "400"
-[offsets]
-G54 = { X = "0", Y = "0", Z = "0" }
-[tool_lengths]
-H1 = "100"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "0" }
-max = { X = "600", Y = "400", Z = "400" }
+# the report tests' mill (tests/machines/report_mill.toml: travel 600 x 400 x 400) at G54 = 0, H1 = 100
+MILL_L_CLAMP = machine_text("report_mill", set={
+    "machine.name": "mill with an L-shaped clamp and a stepped floor", "machine.units": "mm",
+    "machine.rapid_mode": "linear", "offsets.G54": {"X": "0", "Y": "0", "Z": "0"}, "tool_lengths.H1": "100",
+}, extra="""\
 [[zones]]
 name = "clamp"
 kind = "polygon"
@@ -159,7 +138,7 @@ reference_axis = "X"
 limited_axis = "Z"
 from = "0"
 regions = [{ upto = "300", min = "20", max = "400" }, { upto = "600", min = "60", max = "400" }]
-"""
+""")
 
 
 def test_3d_solids_of_a_polygon_prism_and_a_stepped_table(tmp_path):

@@ -25,32 +25,11 @@ from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from nczones.report import render_report
+from tests.machines import machine_text
 
 # A LinuxCNC mill whose offsets the test states: G54 X150 Y100 Z100, tool length H1 = 120 (G43 moves
 # machine Z up by it: machine Z = program Z + G54 Z + G92 Z + 120).  Travel X 0..600.
-MILL = """
-[machine]
-name = "test mill"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "400"
-[offsets]
-G54 = { X = "150", Y = "100", Z = "100" }
-[tool_lengths]
-H1 = "120"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Y = "0", Z = "0" }
-max = { X = "600", Y = "400", Z = "400" }
-"""
+MILL = machine_text("report_mill")
 
 G54 = (F(150), F(100), F(100))
 H1 = F(120)
@@ -171,27 +150,7 @@ def test_inch_program_point_is_in_inches():
 # --------------------------------------------------------------------------- lathes in diameter
 
 
-LATHE = """
-[machine]
-name = "test lathe"
-type = "lathe"
-axes = ["X", "Z"]
-diameter_axes = ["X"]
-pulse = "0.001"
-[machine.rapid]
-X = "5000"
-Z = "5000"
-[machine.reference]
-X = "100"
-Z = "300"
-[offsets]
-G54 = { X = "10", Z = "200" }
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Z = "0" }
-max = { X = "150", Z = "400" }
-"""
+LATHE = machine_text("report_lathe")
 
 
 def test_linuxcnc_lathe_diameter_with_work_shift():
@@ -207,30 +166,7 @@ def test_linuxcnc_lathe_diameter_with_work_shift():
     assert v.frame is not None and v.frame.diameter == ("X",)
 
 
-FANUC_LATHE = """
-[machine]
-name = "test Fanuc lathe"
-type = "lathe"
-dialect = "fanuc"
-axes = ["X", "Z"]
-diameter_axes = ["X"]
-pulse = "0.001"
-[machine.rapid]
-X = "5000"
-Z = "5000"
-[machine.reference]
-X = "100"
-Z = "500"
-[offsets]
-G54 = { X = "0", Z = "200" }
-[tool_offsets]
-1 = { X = "80", Z = "50" }
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "0", Z = "0" }
-max = { X = "150", Z = "500" }
-"""
+FANUC_LATHE = machine_text("report_fanuc_lathe")
 
 
 def test_fanuc_lathe_diameter_with_work_shift_and_tool_offset():

@@ -78,7 +78,7 @@ def _example_jobs() -> list[tuple[str, Path, Path, list[str]]]:
 def _corpus_jobs(folder: Path) -> list[tuple[str, Path, Path, list[str]]]:
     from tests.corpus import CORPUS
     from tests.corpus_verify import LINUXCNC_MACHINE, fanuc_programs, linuxcnc_programs
-    from tests.fanuc.test_corpus import fanuc_machine_file
+    from tests.gcode.fanuc.test_corpus import fanuc_machine_file
 
     lcnc = folder / "linuxcnc.toml"
     lcnc.write_text(LINUXCNC_MACHINE, encoding="utf-8")

@@ -1,0 +1,243 @@
+"""Mismatches the Fanuc reference differential found (issue 33), as regression tests.
+
+Each program is minimal; the expected motion is derived by hand below it from the manual, and the reference
+reader (tests/oracles/fanuc_ref.py) gives the same.  N1, N3 and N4 are fixed in nczones/gcode/fanuc/ (each
+test failed before its fix); a class still open stays ``xfail(strict=True)`` until it is fixed.
+
+The test mill (tests/gcode/fanuc/helpers.py): G54 = (100, 50, -200), EXT = (0, 0, 1), H1 = 100, H2 = 150.5,
+start at machine (0, 0, 0).  machine = program + EXT + G54 (+ G92) (+ tool length on Z).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction as Q
+
+from tests.oracles.fanuc_ref import reference_motion
+
+from .ref_differential import nczones_motion, normalise, ref_machine
+
+
+def _both(text: str, dpi: str = "calculator"):
+    ref = normalise(reference_motion(text, ref_machine(dpi)))
+    return ref
+
+
+# --------------------------------------------------------------------------------------------------- N1
+
+N1 = "G21\nG90 G54 G0 X5. Y5. Z5.\nG92 X0 Y0 Z0\nG92.1 X0 Y0 Z0\nG91 G0 X1.\nM30\n"
+# G54 X5 Y5 Z5: machine (5 + 100, 5 + 50, 5 - 200 + 1) = (105, 55, -194).
+# G92 X0 Y0 Z0: no motion; the current point reads 0.
+# G92.1 X0 Y0 Z0 (FANUC 0i-MD B-64304EN "Workpiece coordinate system preset (G92.1)", format
+#   "G92.1 IP 0;": the workpiece system of the named axes is preset, returned to its unshifted G54 state):
+#   no motion.
+# G91 G0 X1.: from machine X 105 by +1: (106, 55, -194).
+N1_EXPECTED = [("rapid", (Q(105), Q(55), Q(-194))), ("rapid", (Q(106), Q(55), Q(-194)))]
+
+
+def test_n1_reference_reads_g92_1_as_a_preset():
+    assert _both(N1) == N1_EXPECTED
+
+
+def test_n1_g92_1_with_axis_words_does_not_move():
+    _, segs = nczones_motion(N1, "calculator", False)
+    assert normalise(segs) == N1_EXPECTED
+
+
+# --------------------------------------------------------------------------------------------------- N3
+
+N3 = "G21\nG90 G54 G0 X0 Y0 Z10.\nG99 G84.2 X10. R2. Z-5. K2 F100.\nG80\nM30\n"
+# decimal_point_input = "increment" (DPI = 0): K is the repeat count of a canned cycle, not a length
+# (B-64304EN "Canned cycle for drilling": "K_ : Number of repeats"), so K2 is two, whatever DPI says.
+# Z10: (100, 50, 10 - 200 + 1) = (100, 50, -189) = the initial level.
+# G84.2 (rigid tapping, as G84): X10 at rapid (110, 50, -189); rapid to R2: -197; feed to Z-5: -204;
+# (dwell); feed out to R: -197 (G99 stays at R).  The second repeat in G90 drills the same hole: the
+# positioning and the rapid to R do not move; feed to -204, feed out to -197.
+N3_EXPECTED = [("rapid", (Q(100), Q(50), Q(-189))), ("rapid", (Q(110), Q(50), Q(-189))),
+               ("rapid", (Q(110), Q(50), Q(-197))), ("line", (Q(110), Q(50), Q(-204))),
+               ("line", (Q(110), Q(50), Q(-197))), ("line", (Q(110), Q(50), Q(-204))),
+               ("line", (Q(110), Q(50), Q(-197)))]
+
+
+def test_n3_reference_reads_k_of_g84_2_as_a_count():
+    assert _both(N3, "increment") == N3_EXPECTED
+
+
+def test_n3_g84_2_repeat_count_is_a_count():
+    _, segs = nczones_motion(N3, "increment", False)
+    assert normalise(segs) == N3_EXPECTED
+
+
+# --------------------------------------------------------------------------------------------------- N4
+
+N4 = "G21\nG90 G54 G0 X0 Y0 Z0\nG90 G51 X0. Y0. P3\nG90 G00 X10. Y0.\nG50\nM30\n"
+# X0 Y0 Z0: (100, 50, -199).
+# G51 X0. Y0. P3: B-64304EN "Scaling": P without a decimal point is in units of 0.001 (parameter 5400#7
+# SCR = 0; specs/fanuc.md: "P/I/J/K without a decimal point in scaling_unit"), so the factor is 0.003
+# about (0, 0) (Z: about the current Z, 0).
+# X10. Y0. under scaling: X = 0 + 0.003 * 10 = 0.03 -> machine 100.03; Y 0 -> 50; Z not commanded.
+N4_EXPECTED = [("rapid", (Q(100), Q(50), Q(-199))), ("rapid", (Q("100.03"), Q(50), Q(-199)))]
+
+
+def test_n4_reference_reads_p_in_scaling_units():
+    assert _both(N4) == N4_EXPECTED
+
+
+def test_n4_g51_p_without_point_is_in_scaling_units_on_every_lane():
+    _, segs = nczones_motion(N4, "calculator", False)
+    assert normalise(segs) == N4_EXPECTED
+
+
+# --------------------------------------------------------------------------------------------------- N2
+
+N2 = "G20\nG90 G54 G0 X0 Y0 Z0\nG68 X0 Y0 R180.\nG90 G00 X0.0001 Y0.\nG69\nM30\n"
+# G20 on a metric machine: positions in inches, least input increment 0.0001 in (B-64304EN "Increment
+# system", IS-B).  X0 Y0 Z0: (100, 50, -199).  G68 R180 about (0, 0): X0.0001 -> -0.0001 in, on the inch
+# grid, = -0.00254 mm -> machine 99.99746.
+N2_EXPECTED = [("rapid", (Q(100), Q(50), Q(-199))), ("rapid", (Q("99.99746"), Q(50), Q(-199)))]
+
+
+def test_n2_reference_rounds_to_the_input_increment():
+    assert _both(N2) == N2_EXPECTED
+
+
+def test_n2_inch_transformed_point_on_the_inch_grid():
+    _, segs = nczones_motion(N2, "calculator", False)
+    assert normalise(segs) == N2_EXPECTED
+
+
+# ------------------------------------------------------------------------- N1 and N4 end to end (verify)
+
+_WALL = '[[zones]]\nname = "wall"\nkind = "box"\nforbid = true\nmin = {{ X = "{lo}", Y = "0" }}\nmax = {{ X = "{hi}", Y = "200" }}\n'
+
+
+def _verdict(text: str, lo: str, hi: str) -> str:
+    from nczones.prover import verify_text
+
+    from .helpers import mill
+
+    return verify_text(text, mill(tables=_WALL.format(lo=lo, hi=hi)), file="n.nc").verdict.label
+
+
+def test_n1_n4_walls_are_hit_by_the_reference_motion():
+    # the walls below are entered by the motion derived above (reference): N1 ends at X 106, N4b at 109.97
+    assert N1_EXPECTED[-1][1][0] == 106
+    assert normalise(reference_motion(N4B, ref_machine()))[-1][1][0] == Q("109.97")
+
+
+def test_n1_verify_is_not_safe():
+    assert _verdict(N1, "105.5", "110") == "unsafe"
+
+
+N4B = "G21\nG90 G54 G0 X0 Y0 Z0\nG90 G51 X10. Y0. P3\nG90 G00 X0. Y0.\nG50\nM30\n"
+# factor 0.003 about X 10: X0 -> 10 + 0.003 * (0 - 10) = 9.97 -> machine 109.97 (from 100: through 105..108).
+# nczones's factor 3: 10 + 3 * (0 - 10) = -20 -> machine 80, away from the wall.
+
+
+def test_n4_verify_is_not_safe():
+    assert _verdict(N4B, "105", "108") == "unsafe"
+
+
+# ------------------------------------------------- the same, past 512 motions (vectorized tier, fast path)
+
+_PAD = "".join("G1 Y0.001 F100.\nG1 Y0.\n" for _ in range(300))
+
+
+def _long(text: str, after: str) -> str:
+    """``text`` with 600 short G1 moves (X unchanged, Y 0 <-> 0.001) after its line ``after`` and again
+    before M30, so the construct sits in the middle of a program the vectorized tier screens."""
+    head, tail = text.split(after, 1)
+    return head + after + _PAD + tail.replace("M30\n", _PAD + "M30\n")
+
+
+def _long_verdict(text: str, lo: str, hi: str):
+    from nczones.prover import verify_text
+
+    from .helpers import mill
+
+    return verify_text(text, mill(tables=_WALL.format(lo=lo, hi=hi)), file="n.nc")
+
+
+def test_n1_past_512_motions_is_not_safe():
+    # N1 with the padding at X 105 (outside the wall 105.5..110): the G91 X1. still ends at 106 and
+    # crosses the wall; without the fix the proved path goes 105 -> 100 -> 101
+    text = _long(N1, "G90 G54 G0 X5. Y5. Z5.\n").replace("G1 Y0.001", "G1 Y5.001").replace("G1 Y0.\n", "G1 Y5.\n")
+    r = _long_verdict(text, "105.5", "110")
+    assert r.verdict.label == "unsafe"
+    assert r.profile["motions_screened_vectorized"] > 512
+
+
+def test_n4_past_512_motions_is_not_safe():
+    text = _long(N4B, "G90 G54 G0 X0 Y0 Z0\n")
+    r = _long_verdict(text, "105", "108")
+    assert r.verdict.label == "unsafe"
+    assert r.profile["motions_screened_vectorized"] > 512
+
+
+def test_n3_verify_short_and_long():
+    # N3 on the DPI = 0 mill: the cycle's deepest point is machine Z -204 at X 110.  A floor box at
+    # X 109..111 whose top is at Z -203.5 is entered by both repeats (-197 -> -204): unsafe, short and long
+    # (before the fix the program was refused: GC209).
+    from nczones.prover import verify_text
+
+    from .helpers import mill
+
+    floor = ('[[zones]]\nname = "floor"\nkind = "box"\nforbid = true\n'
+             'min = { X = "109", Y = "0", Z = "-300" }\nmax = { X = "111", Y = "200", Z = "-203.5" }\n')
+    m = mill('decimal_point_input = "increment"', tables=floor)
+    assert verify_text(N3, m, file="n.nc").verdict.label == "unsafe"
+    long = _long(N3, "G90 G54 G0 X0 Y0 Z10.\n")
+    r = verify_text(long, m, file="n.nc")
+    assert r.verdict.label == "unsafe"
+    assert r.profile["motions_screened_vectorized"] > 512
+    # and with the floor top at -204.5 (below the cycle's bottom) the same program is safe, not refused
+    m2 = mill('decimal_point_input = "increment"', tables=floor.replace("-203.5", "-204.5"))
+    assert verify_text(long, m2, file="n.nc").verdict.label == "safe"
+
+
+_THIN = ('[[zones]]\nname = "wall"\nkind = "box"\nforbid = true\n'
+         'min = {{ X = "{lo}", Y = "49.9999" }}\nmax = {{ X = "{hi}", Y = "50.0001" }}\n')
+
+
+def test_n2_verify_short_and_long():
+    # N2 ends at machine X 99.99746, Y 50 (derived above).  A thin wall at X 99.9972..99.9974 (Y 50 +- 0.0001,
+    # clear of the first rapid from (0, 0, 0), which crosses X 99.9973 at Y 49.99865) lies just past that end:
+    # the real path 100 -> 99.99746 stays clear of it (safe); the 0.001 mm grid sent the proved path to
+    # 99.997, through the wall (unsafe): the rounding decides the verdict, short and past 512 motions
+    # (the padding moves Y by 0.001 in = 0.0254 mm at X 100, clear of the wall too).
+    from dataclasses import replace
+
+    from nczones.prover import verify_text
+
+    from .helpers import mill
+
+    def run(text, lo, hi):
+        # exact stop mode: the corner at N2's end, 0.0002 mm from the wall, would be rounded in cutting mode
+        # (specs/path-modes.md); this test is about the rounding of the end point
+        return verify_text(text, replace(mill(tables=_THIN.format(lo=lo, hi=hi)), path_mode="G61"), file="n.nc")
+
+    assert run(N2, "99.9972", "99.9974").verdict.label == "safe"
+    r = run(_long(N2, "G90 G54 G0 X0 Y0 Z0\n"), "99.9972", "99.9974")
+    assert r.verdict.label == "safe"
+    assert r.profile["motions_screened_vectorized"] > 512
+    # and a wall the real end enters (99.9974..99.9975) is hit
+    assert run(N2, "99.9974", "99.9975").verdict.label == "unsafe"
+
+
+# ------------------------------------------------- found by the long run after N2's fix: an axis at its centre
+
+N2B = "G20\nG90 G54 G0 X0 Y0 Z0\nG54.1 P3\nG90 G51 X0 Y0 P2.\nG90 G00 X0 Y0\nG50\nM30\n"
+# X0 Y0 Z0 in G54: machine (100, 50, -199).  G54.1 P3 = (500, 20, -210) (+ EXT Z 1): no motion; the
+# position now reads Z = -199 - (-209) = 10 mm = 0.393700.. in, off the 0.0001 in grid.
+# G51 X0 Y0 P2.: the Z centre is the current Z ([0i] "Scaling": an axis without a centre word scales about
+# the current position).  G00 X0 Y0 in P3: machine (500, 20); Z is not commanded and sits at its centre:
+# it does not move (-199), and there is nothing to round.
+N2B_EXPECTED = [("rapid", (Q(100), Q(50), Q(-199))), ("rapid", (Q(500), Q(20), Q(-199)))]
+
+
+def test_n2b_reference_keeps_an_axis_at_its_centre():
+    assert _both(N2B) == N2B_EXPECTED
+
+
+def test_n2b_an_axis_at_its_scaling_centre_is_not_rounded():
+    _, segs = nczones_motion(N2B, "calculator", False)
+    assert normalise(segs) == N2B_EXPECTED
