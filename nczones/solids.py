@@ -24,7 +24,7 @@ from types import MappingProxyType
 from typing import Any
 
 from .exact import format_decimal
-from .machine import SECTION_PARSERS, Machine, as_written, read_number
+from .machine import Machine, as_written, declares_solids, read_number
 from .zones import BoxZone, PolygonZone, SteppedZone
 from .zones.kinds import KindTable
 
@@ -102,11 +102,11 @@ def machine_solids(machine: Machine) -> Solids | None:
 
     Forbidden zones become fixtures through :data:`ZONE_FIXTURE` (a forbid box is a fixture box); a forbidden
     zone of a kind without an entry there is named in ``unmodelled``, and the verdict cannot be ``safe``."""
+    if not declares_solids(machine):
+        return None
     sec = machine.sections
     tools = sec.get("tools") or {}
     spindle = sec.get("spindle") or ()
-    if not tools and not spindle:
-        return None
     fixtures: list[Fixture] = list(sec.get("fixtures") or ())
     unmodelled: list[str] = []
     for z in machine.allowed.zones:
@@ -343,6 +343,3 @@ def _fixture_cylinder(rd: Any, t: Mapping, name: str, header: int | None) -> Fix
     return FixtureCylinder(name, cx, cy, r, z0, z1)
 
 
-SECTION_PARSERS["tools"] = parse_tools_section
-SECTION_PARSERS["spindle"] = parse_spindle_section
-SECTION_PARSERS["fixtures"] = parse_fixtures_section

@@ -146,16 +146,23 @@ class Interpretation:
             cylindrical = False
             cls = FanucLatheInterpreter if machine.is_lathe else FanucInterpreter
         else:
-            from .cylindrical import CylindricalInterpreter, uses_cylindrical
-            from .lathe import LatheInterpreter, uses_lathe
+            from .mentions import uses_cylindrical, uses_lathe
 
             cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
             lathe = bool(machine.diameter_axes) or uses_lathe(text)  # G7/G8, G70-G72: no fast path either
             from .interpreter import Interpreter
 
-            cls = CylindricalInterpreter if cylindrical else LatheInterpreter if lathe else Interpreter
+            cls = Interpreter
             if cylindrical and lathe:
                 cls = _cylindrical_lathe()
+            elif cylindrical:
+                from .cylindrical import CylindricalInterpreter
+
+                cls = CylindricalInterpreter
+            elif lathe:
+                from .lathe import LatheInterpreter
+
+                cls = LatheInterpreter
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
                                track_dependencies=track_dependencies, chunk_size=chunk_size,
                                param_ranges=param_ranges)

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..gcode.source import ProgramSource
-from ..machine import Machine
+from ..machine import Machine, declares_solids
 from ..prover.limits import RunLimits
 from ..prover.options import VerifyOptions
 from ..prover.profile import RunProfile
@@ -40,9 +40,8 @@ def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptio
     interpreter's default, none), ``ranges`` parameter ranges whose dependencies are tracked, ``fast`` the
     vectorized fast path allowed."""
     from ..gcode import interpret
-    from ..solids import machine_solids
 
-    if machine_solids(machine) is not None:
+    if declares_solids(machine):  # (nczones.solids.machine_solids is not None)
         fast = False  # the column chunks do not carry the H register that picks the tool assembly
     extra = options.interpret_keywords(machine)
     if skip is not None:
@@ -481,6 +480,8 @@ def _solids_blend_reasons(machine: Machine, run: Interpretation) -> tuple[Reason
     """The tool solids are proved on the programmed path (:mod:`nczones.prover.solids`); where the control may
     round a corner (G64, Fanuc cutting mode) the holder sweeps the rounded path, which that proof does not
     model: a reason the verdict cannot be ``safe`` (specs/path-modes.md)."""
+    if not declares_solids(machine):
+        return ()
     from ..solids import machine_solids
 
     solids = machine_solids(machine)
