@@ -104,6 +104,8 @@ def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[M
     it = interp.interpreter
     fanuc = getattr(interp, "dialect", "linuxcnc") == "fanuc"
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
+    if isinstance(interp.text, FileText) and "%" in interp.text:  # % lines: cut from the text in memory
+        interp.text = materialized(interp.text)
     text = _percent_cut(interp.text)
     if not text or (_fanuc_needs_language_layer(text) if fanuc else _needs_language_layer(text, it, size)):
         if isinstance(interp.text, FileText):  # the language layer reads the text in memory

@@ -351,7 +351,7 @@ def _streamed(path: str, name: str) -> ProgramSource | None:
             parts = data.split(b"\n")
             line += len(parts[0])
             if len(parts) > 1:
-                if max(line, *map(len, parts[1:-1])) > MAX_LINE_CHARS:
+                if max([line, *map(len, parts[1:-1])]) > MAX_LINE_CHARS:
                     os.close(fd)
                     return None
                 line = len(parts[-1])
@@ -434,15 +434,16 @@ class FileText:
         pos = start
         while pos < end:
             w0, window = self._at(pos)
+            if w0 + len(window) < min(end, pos + len(sub)):  # too short for a match at pos: read on from pos
+                self._w0, self._window = pos, self._read(pos, min(self.n, pos + max(WINDOW_BYTES, 2 * len(sub))))
+                w0, window = self._w0, self._window
             stop = min(end, w0 + len(window))
             k = window.find(sub, pos - w0, stop - w0)
             if k >= 0:
                 return w0 + k
             if stop >= end:
                 return -1
-            # the next window overlaps this one by len(sub) - 1: a match across the edge is found there
-            pos = max(pos + 1, stop - len(sub) + 1)
-            self._w0, self._window = pos, self._read(pos, min(self.n, pos + WINDOW_BYTES))
+            pos = stop - len(sub) + 1  # every match starting before this was looked for (> pos: see above)
         return -1
 
     def index(self, sub: str, start: int | None = None, end: int | None = None) -> int:
