@@ -338,6 +338,7 @@ def _streamed(path: str, name: str) -> ProgramSource | None:
         blank = True
         line = 0  # characters of the line not yet ended
         offset = 0
+        present: set[str] = set()
         while True:
             data = os.pread(fd, WINDOW_BYTES, offset)
             if not data:
@@ -348,22 +349,44 @@ def _streamed(path: str, name: str) -> ProgramSource | None:
                 return None
             if blank and data.strip():
                 blank = False
-            parts = data.split(b"\n")
-            line += len(parts[0])
-            if len(parts) > 1:
-                if max([line, *map(len, parts[1:-1])]) > MAX_LINE_CHARS:
-                    os.close(fd)
-                    return None
-                line = len(parts[-1])
+            present.update(c for c in _NOTED if c.encode() in data)
+            line = _line_after(data, line)
+            if line < 0:
+                os.close(fd)
+                return None
             offset += len(data)
-        if line > MAX_LINE_CHARS or offset != st.st_size:
+        if offset != st.st_size:
             os.close(fd)
             return None
-        text = FileText(fd, offset, blank, (st.st_size, st.st_mtime_ns, st.st_ino), name)
+        text = FileText(fd, offset, blank, (st.st_size, st.st_mtime_ns, st.st_ino), name,
+                        frozenset(_NOTED) - present)
     except OSError:
         os.close(fd)
         return None
     return ProgramSource(text, name, digest.hexdigest(), path)  # type: ignore[arg-type]
+
+
+#: The characters whose absence from a streamed file the first read notes, so that asking for them (the
+#: lanes' ``"#" in text``, ``text.find("O")``...) costs no further pass over the file.
+_NOTED = "#/%OoMm([;\r"
+
+
+def _line_after(data: bytes, line: int) -> int:
+    """The length of the unfinished last line after ``data``, given ``line`` characters of a line before it;
+    -1 when a line is longer than :data:`MAX_LINE_CHARS` (the scan of ``_check_lines``: a window at a time)."""
+    first = data.find(b"\n")
+    if first < 0:
+        line += len(data)
+        return -1 if line > MAX_LINE_CHARS else line
+    if line + first > MAX_LINE_CHARS:
+        return -1
+    pos, n = first + 1, len(data)
+    while n - pos > MAX_LINE_CHARS:
+        nl = data.rfind(b"\n", pos, pos + MAX_LINE_CHARS + 1)
+        if nl < 0:
+            return -1
+        pos = nl + 1
+    return n - data.rfind(b"\n") - 1
 
 
 class FileText:
@@ -376,10 +399,13 @@ class FileText:
     changed while it is read is an error (:meth:`check_unchanged`).
     """
 
-    __slots__ = ("fd", "n", "blank", "stamp", "name", "_w0", "_window", "__weakref__")
+    __slots__ = ("fd", "n", "blank", "stamp", "name", "absent", "_w0", "_window", "__weakref__")
 
-    def __init__(self, fd: int, n: int, blank: bool, stamp: tuple[int, int, int], name: str):
+    def __init__(self, fd: int, n: int, blank: bool, stamp: tuple[int, int, int], name: str,
+                 absent: frozenset[str] = frozenset()):
         self.fd, self.n, self.blank, self.stamp, self.name = fd, n, blank, stamp, name
+        #: characters known not to occur in the file
+        self.absent = absent
         self._w0 = 0
         self._window = ""
 
@@ -431,6 +457,8 @@ class FileText:
         start, end = self._span(start, end)
         if not sub:
             return start if start <= end else -1
+        if sub in self.absent:
+            return -1
         pos = start
         while pos < end:
             w0, window = self._at(pos)
@@ -483,10 +511,16 @@ class FileText:
         while lo < n:
             hi = lo + size
             if hi >= n:
-                hi = n
-            else:
-                cut = self.find("\n", hi - 1)
-                hi = n if cut < 0 else cut + 1
+                yield os.pread(self.fd, n - lo, lo)
+                return
+            data = os.pread(self.fd, size + 4096, lo)  # most often holds the first newline from hi - 1
+            cut = data.find(b"\n", size - 1)
+            if cut >= 0:
+                yield data[:cut + 1]
+                lo += cut + 1
+                continue
+            cut = self.find("\n", hi - 1)
+            hi = n if cut < 0 else cut + 1
             yield os.pread(self.fd, hi - lo, lo)
             lo = hi
 
