@@ -708,7 +708,8 @@ def section_parser(name: str) -> Callable[[Any, Any, tuple[str, ...]], Any]:
     import importlib
 
     module, _, function = SECTION_PARSERS[name].partition(":")
-    return getattr(importlib.import_module(module), function)
+    parser: Callable[[Any, Any, tuple[str, ...]], Any] = getattr(importlib.import_module(module), function)
+    return parser
 
 
 #: What a controller configuration looks like when it is given where a machine file belongs.  The same
