@@ -2,10 +2,12 @@
 
     python bench/bench_peers.py [--lines 1000000] [--small 100000] [--corpus 10] [--macro 100000]
                                 [--timeout 300] [--skip-large] [--repeat 3] [--only TEXT]
-    python bench/bench_peers.py --scaling [--sizes 10000,1000000,5000000] [--ten-million] [--repeat 1]
+    python bench/bench_peers.py --scaling [--sizes 10000,1000000,5000000] [--ten-million] [--repeat 1] [--only TEXT]
 
-``--scaling`` prints, instead, ``nczones verify`` of CAM G1 and "an expression on every line" at each size:
-CPU, the child's peak RSS and the marginal µs/line between consecutive sizes (issue 36: no size cliff).
+``--scaling`` prints, instead, ``nczones verify`` of each class (CAM G1, an expression on every line, R-format
+arcs in both dialects, the LinuxCNC o-word loop and the Fanuc WHILE, G65 and M98 loops; ``--only TEXT`` picks
+some) at each size: CPU, the child's peak RSS and the marginal µs/line between consecutive sizes, then the
+marginal µs/line of every size step per class (issue 36: no size cliff).
 
 Columns, every one the CPU seconds of its own process (user + system of the
 child, so start-up counts the same way for every tool), the least of ``--repeat`` runs (default 3: other
@@ -242,36 +244,63 @@ def cpu_rss_of(cmd: list[str], env: dict | None = None) -> tuple[float, int, int
     return usage.ru_utime + usage.ru_stime, usage.ru_maxrss // 1024, proc.returncode
 
 
-def scaling(sizes: list[int], repeat: int, env: dict) -> None:
-    """``nczones verify`` of CAM G1 and of "an expression on every line" at each size: CPU, peak RSS and the
-    marginal CPU per line between consecutive sizes (flat cost per line: the marginal cost stays the same)."""
+#: The classes ``--scaling`` measures: (name, module, generator call with ``{n}``, dialect).  Each generator
+#: writes about ``n`` lines, or about ``n`` executed lines for the loops (their iterations are bounded by
+#: ``--max-iterations`` above any size).
+SCALING_CLASSES = (
+    ("CAM G1", "bench_gcode", "cam_program({n})", "linuxcnc"),
+    ("expression every line", "bench_gcode", "expr_program({n})", "linuxcnc"),
+    ("R-format arcs", "bench_gcode", "rarc_program({n})", "linuxcnc"),
+    ("R-format arcs, Fanuc", "bench_gcode", "rarc_program({n}, dialect='fanuc')", "fanuc"),
+    ("o-word loop", "bench_fanuc", "linuxcnc_macro_program({n})", "linuxcnc"),
+    ("Macro B WHILE loop", "bench_fanuc", "macro_program({n})", "fanuc"),
+    ("Fanuc G65 call loop", "bench_fanuc", "call_program({n})", "fanuc"),
+    ("Fanuc M98 call loop", "bench_fanuc", "subprogram_program({n})", "fanuc"),
+)
+
+
+def scaling(sizes: list[int], repeat: int, env: dict, only: str = "") -> None:
+    """``nczones verify`` of every class of :data:`SCALING_CLASSES` (``only``: those whose name holds it) at
+    each size: CPU, peak RSS and the marginal CPU per line between consecutive sizes (flat cost per line: the
+    marginal cost stays the same from 10k to 10M lines), then a summary of the marginal costs per class."""
     print(f"\nscaling: nczones verify, least CPU of {repeat} run(s); peak RSS of that child; marginal = "
           "(CPU - CPU of the size before) / (lines - lines before)")
     print(f"{'class':24} {'lines':>11} {'CPU s':>8} {'RSS MB':>7} {'µs/line':>8} {'marginal µs/line':>17}  exit")
+    summary: list[tuple[str, list[str]]] = []
+    iterations = str(max(sizes) + 100)
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
-        machine = d / "box.toml"
-        # a box the 10M-line CAM walk stays in (the default box is left after about 4M lines)
-        machine.write_text(BOX.format(dialect="linuxcnc").replace('100000"', '900000"'))
-        for name, make in (("CAM G1", "cam_program"), ("expression every line", "expr_program")):
+        for name, module, call, dialect in SCALING_CLASSES:
+            if only and only.lower() not in name.lower():
+                continue
+            machine = d / f"box_{dialect}.toml"
+            # a box the 10M-line CAM walk stays in (the default box is left after about 4M lines)
+            machine.write_text(BOX.format(dialect=dialect).replace('100000"', '900000"'))
             before = None
+            marginals: list[str] = []
             for n in sizes:
                 path = d / "program.ngc"
                 # written by a child: a parent grown by the text would pass its peak RSS on to the forked child
                 subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {str(Path(__file__).parent)!r}); "
-                                f"import bench_gcode; open({str(path)!r}, 'w').write(bench_gcode.{make}({n}))"],
+                                f"import {module}; open({str(path)!r}, 'w').write({module}.{call.format(n=n)})"],
                                check=True)
                 cmd = [sys.executable, "-m", "nczones", "verify", str(path), "--machine", str(machine),
-                       "--format", "json"]
+                       "--format", "json", "--max-iterations", iterations]
                 runs = [cpu_rss_of(cmd, env) for _ in range(repeat)]
                 cpu = min(r[0] for r in runs)
                 rss = max(r[1] for r in runs)
                 code = runs[0][2]
                 marginal = "" if before is None else f"{(cpu - before[1]) / (n - before[0]) * 1e6:.2f}"
+                if marginal:
+                    marginals.append(f"{before[0]:,}→{n:,}: {marginal}")
                 print(f"{name:24} {n:>11,} {cpu:>8.2f} {rss:>7} {cpu / n * 1e6:>8.2f} {marginal:>17}  {code:>4}",
                       flush=True)
                 before = (n, cpu)
                 path.unlink()
+            summary.append((name, marginals))
+    print("\nmarginal µs/line per size step (flat cost per line: the steps agree):")
+    for name, marginals in summary:
+        print(f"  {name:24} {'; '.join(marginals)}")
 
 
 if __name__ == "__main__":
@@ -281,12 +310,13 @@ if __name__ == "__main__":
         ap.add_argument("--sizes", default="10000,1000000,5000000", help="comma-separated line counts")
         ap.add_argument("--ten-million", action="store_true", help="add a 10,000,000-line row per class")
         ap.add_argument("--repeat", type=int, default=1)
+        ap.add_argument("--only", default="", help="only the classes whose name holds this text")
         a = ap.parse_args()
         sizes = [int(v) for v in a.sizes.split(",")] + ([10_000_000] if a.ten_million else [])
         env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
         print(f"machine: {machine_description()}")
         subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "nczones")], check=True,
                        stdout=subprocess.DEVNULL)
-        scaling(sorted(sizes), max(1, a.repeat), env)
+        scaling(sorted(sizes), max(1, a.repeat), env, a.only)
     else:
         main()

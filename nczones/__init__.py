@@ -8,9 +8,6 @@ motion), :mod:`nczones.zones` and :mod:`nczones.machine`, :mod:`nczones.prover`
 
 __version__ = "0.1.0"
 
-from . import homing as _homing  # noqa: E402,F401  (registers the [homing] section)
-from . import recovery as _recovery  # noqa: E402,F401  (registers the [tool_change] section)
-from . import solids as _solids  # noqa: E402,F401  (registers the [[tools]], [spindle], [[fixtures]] sections)
 from .errors import GcodeError, InputError, InvalidArgument, MachineFileError, NczonesError  # noqa: E402
 from .exact import exact, format_decimal, parse_decimal  # noqa: E402
 from .machine import Machine, load_machine, parse_machine  # noqa: E402

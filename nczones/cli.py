@@ -270,11 +270,12 @@ def library_folder(path: str | list[str] | None) -> str | None:
     return library_folders(path)
 
 
-def program_source(name: str) -> ProgramSource:
-    """The program ``name`` names: ``-`` is standard input, anything else a file (``GC1xx`` errors)."""
+def program_source(name: str, *, stream: bool = False) -> ProgramSource:
+    """The program ``name`` names: ``-`` is standard input, anything else a file (``GC1xx`` errors); ``stream``:
+    a large plain file is left on disk and read as it is verified (:func:`nczones.gcode.source.load_program`)."""
     from .gcode.source import load_program, read_stdin
 
-    return (read_stdin() if name == "-" else load_program(name)).require_code()
+    return (read_stdin() if name == "-" else load_program(name, stream=stream)).require_code()
 
 
 def arc_tolerance(text: str | None) -> Fraction | str | None:

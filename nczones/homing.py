@@ -47,7 +47,7 @@ from typing import Any
 
 from .errors import Diagnostic, InvalidArgument, MachineFileError, SourceSpan, close_matches
 from .exact import format_decimal
-from .machine import SECTION_PARSERS, Machine, as_written, read_number
+from .machine import Machine, as_written, read_number
 
 __all__ = [
     "HomingConfig",
@@ -203,7 +203,7 @@ def _axis_section(rd: Any, axis: str, table: Mapping[str, Any]) -> HomingConfig 
 
 
 def parse_homing_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[str, HomingConfig]:
-    """The ``[homing]`` parser registered in :data:`nczones.machine.SECTION_PARSERS`.
+    """The ``[homing]`` parser, listed in :data:`nczones.machine.SECTION_PARSERS`.
 
     Returns axis name -> :class:`HomingConfig` for the valid axis sections;
     problems are reported to ``rd`` with codes ZN140-ZN147.
@@ -260,7 +260,6 @@ def parse_homing_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[st
     return MappingProxyType(out)
 
 
-SECTION_PARSERS["homing"] = parse_homing_section
 
 
 def homing_config(machine: Machine, axis: str | None = None) -> dict[str, HomingConfig]:

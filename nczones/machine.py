@@ -694,9 +694,33 @@ _ZONE_KEYS = {
     "polygon": _ZONE_COMMON + ("plane", "vertices", "min", "max"),
 }
 
-#: Extra top-level sections other parts of nczones read (homing, tool change):
-#: name -> parser(reader, raw table, axes) returning a value for Machine.sections.
-SECTION_PARSERS: dict[str, Callable[[Any, Any, tuple[str, ...]], Any]] = {}
+#: Extra top-level sections other parts of nczones read (homing, tool change, tool solids), as an explicit
+#: table: section name -> ``"module:function"`` of its parser(reader, raw table, axes), whose value goes to
+#: ``Machine.sections``.  The module is imported only when a machine file has the section (no import of
+#: ``nczones`` loads them for their side effects; docs/design.md §3).  The order is the order of their
+#: diagnostics.
+SECTION_PARSERS: dict[str, str] = {
+    "homing": "nczones.homing:parse_homing_section",
+    "tool_change": "nczones.recovery:parse_tool_change_section",
+    "tools": "nczones.solids:parse_tools_section",
+    "spindle": "nczones.solids:parse_spindle_section",
+    "fixtures": "nczones.solids:parse_fixtures_section",
+}
+
+
+def declares_solids(machine: Machine) -> bool:
+    """Does the machine declare tool or spindle solids (``[[tools]]``, ``[spindle]``)?  Only then is
+    :mod:`nczones.solids` imported to build them (:func:`nczones.solids.machine_solids`)."""
+    return bool(machine.sections.get("tools") or machine.sections.get("spindle"))
+
+
+def section_parser(name: str) -> Callable[[Any, Any, tuple[str, ...]], Any]:
+    """The parser of the extra section ``name`` (a key of :data:`SECTION_PARSERS`), its module imported now."""
+    import importlib
+
+    module, _, function = SECTION_PARSERS[name].partition(":")
+    parser: Callable[[Any, Any, tuple[str, ...]], Any] = getattr(importlib.import_module(module), function)
+    return parser
 
 
 #: What a controller configuration looks like when it is given where a machine file belongs.  The same
@@ -986,9 +1010,9 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     zones = _zones(rd, data.get("zones", []), axes, tool_axis)
 
     sections: dict[str, Any] = {}
-    for key, parser in SECTION_PARSERS.items():
+    for key in SECTION_PARSERS:
         if key in data:
-            sections[key] = parser(rd, data[key], axes)
+            sections[key] = section_parser(key)(rd, data[key], axes)
 
     if rd.failed or period is None:
         return None

@@ -66,7 +66,7 @@ from fractions import Fraction
 from typing import Any, Generic, Protocol, TypeVar
 
 from .errors import Diagnostic, InvalidArgument, MachineFileError, close_matches
-from .machine import SECTION_PARSERS, Machine, as_written, read_number
+from .machine import Machine, as_written, read_number
 from .motion import Segment, SegmentKind, TipOffset
 
 __all__ = [
@@ -183,7 +183,7 @@ class _Recode:
 
 
 def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolChangeConfig | None:
-    """The ``[tool_change]`` parser registered in :data:`nczones.machine.SECTION_PARSERS`.
+    """The ``[tool_change]`` parser, listed in :data:`nczones.machine.SECTION_PARSERS`.
 
     Problems are reported with codes ZN150-ZN156 (``specs/recovery.md``).
 
@@ -318,7 +318,6 @@ def parse_tool_change_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> ToolC
                             alpha, feed, variant, register)
 
 
-SECTION_PARSERS["tool_change"] = parse_tool_change_section
 
 
 def tool_change_config(machine: Machine, variant: RecoveryVariant | str | None = None) -> ToolChangeConfig:

@@ -25,7 +25,7 @@ from typing import Any
 
 from .exact import format_decimal
 from .lathe_solids import is_lathe_axes, lathe_solids, parse_lathe_fixtures, parse_lathe_tools
-from .machine import SECTION_PARSERS, Machine, as_written, read_number
+from .machine import Machine, as_written, declares_solids, read_number
 from .zones import BoxZone, PolygonZone, SteppedZone
 from .zones.kinds import KindTable
 
@@ -103,13 +103,13 @@ def machine_solids(machine: Machine) -> Solids | None:
 
     Forbidden zones become fixtures through :data:`ZONE_FIXTURE` (a forbid box is a fixture box); a forbidden
     zone of a kind without an entry there is named in ``unmodelled``, and the verdict cannot be ``safe``."""
+    if not declares_solids(machine):
+        return None
     if is_lathe_axes(machine.axis_names):  # a lathe: turret tools and solids of revolution
         return lathe_solids(machine)  # type: ignore[return-value]
     sec = machine.sections
     tools = sec.get("tools") or {}
     spindle = sec.get("spindle") or ()
-    if not tools and not spindle:
-        return None
     fixtures: list[Fixture] = list(sec.get("fixtures") or ())
     unmodelled: list[str] = []
     for z in machine.allowed.zones:
@@ -352,6 +352,3 @@ def _fixture_cylinder(rd: Any, t: Mapping, name: str, header: int | None) -> Fix
     return FixtureCylinder(name, cx, cy, r, z0, z1)
 
 
-SECTION_PARSERS["tools"] = parse_tools_section
-SECTION_PARSERS["spindle"] = parse_spindle_section
-SECTION_PARSERS["fixtures"] = parse_fixtures_section

@@ -84,12 +84,15 @@ def verify_options(args: argparse.Namespace, machine: Machine) -> VerifyOptions:
     return VerifyOptions.from_args(args, machine)
 
 
-def verify_one(program: str, machine: Machine, options: VerifyOptions) -> tuple[ProgramSource, Result]:
-    """Read and verify one program (a path or ``-``) with a progress bar on a terminal: (source, result)."""
+def verify_one(program: str, machine: Machine, options: VerifyOptions,
+               stream: bool = False) -> tuple[ProgramSource, Result]:
+    """Read and verify one program (a path or ``-``) with a progress bar on a terminal: (source, result).
+
+    ``stream``: a large plain program file is read as it is verified, not held in memory (issue 36)."""
     from ..pipeline.verification import verify_source
     from ..report.progress import progress_for
 
-    source = cli.program_source(program)
+    source = cli.program_source(program, stream=stream)
     bar = progress_for(sys.stderr, "verify")
     try:
         return source, verify_source(source, machine, options, progress=bar)
@@ -251,7 +254,8 @@ def _run(args: argparse.Namespace) -> int:
     codes: list[int] = []
     for k, program in enumerate(programs):
         try:
-            source, result = verify_one(program, machine, options)
+            # the HTML report draws the program from its text: not streamed
+            source, result = verify_one(program, machine, options, stream=args.format != "html")
         except InputError as exc:
             if len(programs) == 1:
                 raise

@@ -52,7 +52,7 @@ from ..machine import Machine
 from ..motion import MotionChunk, Segment
 from . import segments as _segments_module  # noqa: F401  # loaded first: the function segments() below keeps the name
 from .program import DEFAULT_MAX_LOOP_ITERATIONS
-from .source import ProgramLike, ProgramSource, as_source, load_program, program_text
+from .source import ProgramLike, ProgramSource, as_source, load_program, materialized, program_text
 
 if TYPE_CHECKING:
     from .interpreter import MODAL_GROUP_NAMES, Interpreter, Unsupported  # noqa: F401
@@ -119,6 +119,9 @@ class Interpretation:
                  library: Any = None, param_ranges: tuple = ()):
         self.source = source
         text = self.text = source.text
+        if not (fast and dialect == "linuxcnc"):
+            # a streamed file (FileText) is read block by block only by the LinuxCNC fast path
+            text = self.text = materialized(text)
         if dialect == "fanuc":
             from .fanuc.paths import select_path
 
@@ -146,16 +149,23 @@ class Interpretation:
             cylindrical = False
             cls = FanucLatheInterpreter if machine.is_lathe else FanucInterpreter
         else:
-            from .cylindrical import CylindricalInterpreter, uses_cylindrical
-            from .lathe import LatheInterpreter, uses_lathe
+            from .mentions import uses_cylindrical, uses_lathe
 
             cylindrical = uses_cylindrical(text)  # G07.1/G107: the mode's interpreter, no fast path
             lathe = bool(machine.diameter_axes) or uses_lathe(text)  # G7/G8, G70-G72: no fast path either
             from .interpreter import Interpreter
 
-            cls = CylindricalInterpreter if cylindrical else LatheInterpreter if lathe else Interpreter
+            cls = Interpreter
             if cylindrical and lathe:
                 cls = _cylindrical_lathe()
+            elif cylindrical:
+                from .cylindrical import CylindricalInterpreter
+
+                cls = CylindricalInterpreter
+            elif lathe:
+                from .lathe import LatheInterpreter
+
+                cls = LatheInterpreter
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
                                track_dependencies=track_dependencies, chunk_size=chunk_size,
                                param_ranges=param_ranges)
@@ -177,6 +187,7 @@ class Interpretation:
 
                 yield from run_with_fastpath(self)
             else:
+                self.text = materialized(self.text)
                 yield from self.interpreter.run(self.blocks(self.text))
         except GcodeError as exc:
             from .dialects import with_hints
@@ -269,7 +280,7 @@ class Interpretation:
         lines: dict[int, str] = {}
         for chunk in self:
             if chunk.scale is not None and not lines:
-                lines = dict(enumerate(program_lines(self.text), start=1))
+                lines = dict(enumerate(program_lines(materialized(self.text)), start=1))
             yield from chunk.segments(lines)
 
 

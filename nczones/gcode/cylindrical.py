@@ -37,21 +37,18 @@ position exact (the mode changes only how motion blocks are read).
 
 from __future__ import annotations
 
-import re
 from dataclasses import replace
 from fractions import Fraction
 
 from ..motion import Developed, SegmentKind
 from .blocks import Block, Word
 from .interpreter import AXIS_LETTERS, INCH, ROTARY, Interpreter, fmt_number, gkey
+from .mentions import PIECE_CHARS, uses_cylindrical
 
 __all__ = ["CylindricalInterpreter", "uses_cylindrical", "CylinderMode"]
 
 _G71, _G107 = 71, 1070
-#: G07.1 / G107 in lower-cased text (within a line; blanks as in ``G7 .1``).  Searched in lower-cased pieces
-#: rather than with ``re.I``, which is 4x slower: a literal first character lets the search skip ahead.
-_MENTION = re.compile(r"g[ \t]*0*(?:7[ \t]*\.[ \t]*1(?![0-9])|107(?![0-9.]))")
-_PIECE_CHARS = 1 << 16
+_PIECE_CHARS = PIECE_CHARS
 
 # G codes (keys 10 x number) allowed in the mode and what the others are called in messages
 _ALLOWED_G = {10, 20, 30, 40, 900, 910, 930, 940, 950, 410, 420, 400, 610, 611, 640, 800}
@@ -66,23 +63,6 @@ _FORBIDDEN_WHY = {
     200: "units cannot be changed in cylindrical interpolation mode",
     210: "units cannot be changed in cylindrical interpolation mode",
 }
-
-
-def uses_cylindrical(text: str) -> bool:
-    """Does the program text mention G07.1 / G107 (then the full interpreter with the mode runs it)?
-
-    >>> uses_cylindrical("G7.1 C20"), uses_cylindrical("g07 .1C0"), uses_cylindrical("G107 C5"), uses_cylindrical("G7.15 G1070")
-    (True, True, True, False)
-    """
-    n = len(text)
-    lo = 0
-    while lo < n:  # pieces cut after a newline: no copy of the whole program
-        hi = text.find("\n", lo + _PIECE_CHARS)
-        hi = n if hi < 0 else hi + 1
-        if _MENTION.search(text[lo:hi].lower()) is not None:
-            return True
-        lo = hi
-    return False
 
 
 class CylinderMode:

@@ -65,6 +65,7 @@ import numpy as np
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
 from .codes import LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from .interpreter import LEAN_M
+from .source import FileText, materialized
 
 __all__ = ["CODES", "run_with_fastpath", "MIN_RUN"]
 
@@ -103,8 +104,13 @@ def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[M
     it = interp.interpreter
     fanuc = getattr(interp, "dialect", "linuxcnc") == "fanuc"
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
+    if isinstance(interp.text, FileText) and "%" in interp.text:  # % lines: cut from the text in memory
+        interp.text = materialized(interp.text)
     text = _percent_cut(interp.text)
     if not text or (_fanuc_needs_language_layer(text) if fanuc else _needs_language_layer(text, it, size)):
+        if isinstance(interp.text, FileText):  # the language layer reads the text in memory
+            interp.text = materialized(interp.text)
+            text = _percent_cut(interp.text)
         if text is None:
             text = interp.text  # the language layer reads the whole program, % lines included
         if text and _utf8_exact(interp.text):
@@ -317,6 +323,9 @@ def _encoded_blocks(src: str | bytes, size: int) -> Iterator[bytes]:
 
     Only one block is encoded at a time, so no second copy of the program is made.
     """
+    if isinstance(src, FileText):  # a streamed file: the same cuts, read from the file
+        yield from src.blocks(size)
+        return
     n = len(src)
     lo = 0
     while lo < n:

@@ -13,7 +13,6 @@ What the model cannot follow is ``unknown`` with a reason (``specs/turning.md``,
 
 from __future__ import annotations
 
-import re
 from dataclasses import replace
 from fractions import Fraction
 from typing import Any
@@ -23,6 +22,7 @@ from ..motion import Plane, SegmentKind
 from . import g7x
 from .blocks import Block, ShapeBlock, Word
 from .interpreter import INCH, Interpreter, dadd, gkey, qadd
+from .mentions import uses_lathe
 from .passes import PassBound
 
 __all__ = ["LatheInterpreter", "uses_lathe"]
@@ -33,16 +33,6 @@ _CYCLE_LETTERS = frozenset("XZQDEIPRUWK")
 #: Words a profile block may hold: the motion, the end point, the centre or radius, corners; F S T M N are read
 #: and ignored (LinuxCNC only reads the profile's blocks, it does not execute them).
 _PROFILE_LETTERS = frozenset("GXZUWIKRACFSTMN")
-_MENTION = re.compile(r"g\s*0*7\s*[0-2]?(?![\d.])|g\s*0*8(?![\d.])|g\s*0*7\s*[0-2]\s*\.\s*[0-2]")
-
-
-def uses_lathe(text: str) -> bool:
-    """Does a LinuxCNC program mention G7, G8 or G70-G72 (then the lathe interpreter runs it, no fast path)?
-
-    >>> uses_lathe("G7 X20"), uses_lathe("g71.1 q100"), uses_lathe("G7.1 C20"), uses_lathe("G1 X70 G80")
-    (True, True, False, False)
-    """
-    return _MENTION.search(text.lower()) is not None
 
 
 class LatheInterpreter(Interpreter):

@@ -37,6 +37,7 @@ from __future__ import annotations
 import hashlib
 import os
 import sys
+from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import BinaryIO
 
@@ -51,6 +52,9 @@ __all__ = [
     "program_text",
     "as_source",
     "STDIN_NAME",
+    "FileText",
+    "STREAM_MIN_BYTES",
+    "materialized",
 ]
 
 #: The longest line accepted, in characters (LinuxCNC accepts 255, Fanuc
@@ -79,7 +83,17 @@ class ProgramSource:
     @property
     def is_empty(self) -> bool:
         """True for no text or whitespace only."""
+        if isinstance(self.text, FileText):
+            return self.text.blank
         return not self.text.strip()
+
+    def materialized(self) -> ProgramSource:
+        """Itself with its whole text in memory (a streamed source, :class:`FileText`, read now)."""
+        if isinstance(self.text, FileText):
+            from dataclasses import replace
+
+            return replace(self, text=self.text.read_all())
+        return self
 
     def require_code(self) -> ProgramSource:
         """Itself, or :class:`~nczones.errors.GcodeError` ``GC109`` when it is empty or only whitespace."""
@@ -224,10 +238,13 @@ def _source(data: bytes, name: str, path: str | None) -> ProgramSource:
     return ProgramSource(text, name, hashlib.sha256(data).hexdigest(), path, notes)
 
 
-def load_program(path: str | os.PathLike, name: str | None = None) -> ProgramSource:
+def load_program(path: str | os.PathLike, name: str | None = None, *, stream: bool = False) -> ProgramSource:
     """Read the program file at ``path`` (``GC100`` when it cannot be read, ``GC108``, ``GC110``).
 
-    ``name`` is what diagnostics and reports call it (default: the path as given).
+    ``name`` is what diagnostics and reports call it (default: the path as given).  With ``stream``, a file of
+    at least :data:`STREAM_MIN_BYTES` bytes of plain ASCII text is not read into memory: its ``text`` is a
+    :class:`FileText` that reads the file a window at a time (the verify pipeline streams it; whoever needs
+    the whole text calls :meth:`ProgramSource.materialized`).  Any other file is read whole, as without it.
 
     >>> load_program("specs/examples/programs/notch_dip.ngc").text.splitlines()[4]
     'G1 X50'
@@ -240,6 +257,10 @@ def load_program(path: str | os.PathLike, name: str | None = None) -> ProgramSou
     if not isinstance(path_s, str):
         raise InvalidArgument(f"a program path must be text, not {type(path_s).__name__}")
     shown = name or path_s
+    if stream:
+        streamed = _streamed(path_s, shown)
+        if streamed is not None:
+            return streamed
     try:
         with open(path_s, "rb") as fh:
             data = fh.read()
@@ -290,3 +311,237 @@ def as_source(program: ProgramLike, *, file: str | None = None, text_function: s
         raise InvalidArgument(f"a program is a path (str or os.PathLike) or a ProgramSource, not "
                               f"{type(program).__name__}; pass text to {text_function}()")
     return load_program(program, file)
+
+
+#: The size from which :func:`load_program` with ``stream`` leaves a file on disk (smaller files are read
+#: whole: their text costs less than the windows' reads).
+STREAM_MIN_BYTES = 16 << 20
+
+#: The bytes :class:`FileText` keeps in memory at a time (one window of the file).
+WINDOW_BYTES = 1 << 20
+
+
+def _streamed(path: str, name: str) -> ProgramSource | None:
+    """A :class:`ProgramSource` whose text stays in the file, or None (read it whole): the file is smaller than
+    :data:`STREAM_MIN_BYTES`, cannot be opened (the whole read reports it), or is not plain ASCII text with
+    lines of at most :data:`MAX_LINE_CHARS` characters (the whole read decodes it or reports it)."""
+    try:
+        fd = os.open(path, os.O_RDONLY)
+    except (OSError, ValueError):
+        return None
+    try:
+        st = os.fstat(fd)
+        if st.st_size < STREAM_MIN_BYTES:
+            os.close(fd)
+            return None
+        digest = hashlib.sha256()
+        blank = True
+        line = 0  # characters of the line not yet ended
+        offset = 0
+        present: set[str] = set()
+        while True:
+            data = os.pread(fd, WINDOW_BYTES, offset)
+            if not data:
+                break
+            digest.update(data)
+            if not data.isascii() or b"\0" in data:
+                os.close(fd)
+                return None
+            if blank and data.strip():
+                blank = False
+            present.update(c for c in _NOTED if c.encode() in data)
+            line = _line_after(data, line)
+            if line < 0:
+                os.close(fd)
+                return None
+            offset += len(data)
+        if offset != st.st_size:
+            os.close(fd)
+            return None
+        text = FileText(fd, offset, blank, (st.st_size, st.st_mtime_ns, st.st_ino), name,
+                        frozenset(_NOTED) - present)
+    except OSError:
+        os.close(fd)
+        return None
+    return ProgramSource(text, name, digest.hexdigest(), path)  # type: ignore[arg-type]
+
+
+#: The characters whose absence from a streamed file the first read notes, so that asking for them (the
+#: lanes' ``"#" in text``, ``text.find("O")``...) costs no further pass over the file.
+_NOTED = "#/%OoMm([;\r"
+
+
+def _line_after(data: bytes, line: int) -> int:
+    """The length of the unfinished last line after ``data``, given ``line`` characters of a line before it;
+    -1 when a line is longer than :data:`MAX_LINE_CHARS` (the scan of ``_check_lines``: a window at a time)."""
+    first = data.find(b"\n")
+    if first < 0:
+        line += len(data)
+        return -1 if line > MAX_LINE_CHARS else line
+    if line + first > MAX_LINE_CHARS:
+        return -1
+    pos, n = first + 1, len(data)
+    while n - pos > MAX_LINE_CHARS:
+        nl = data.rfind(b"\n", pos, pos + MAX_LINE_CHARS + 1)
+        if nl < 0:
+            return -1
+        pos = nl + 1
+    return n - data.rfind(b"\n") - 1
+
+
+class FileText:
+    """The text of a plain ASCII program file, read from the file a window at a time instead of held whole.
+
+    It answers the few ``str`` questions the streamed verification asks (``len``, ``in``, ``find``, ``count``
+    of one character, ``endswith``, slices, ``isascii``) exactly as the ``str`` of the file would, and gives
+    the file in blocks cut after a newline (:meth:`blocks`); anything else is not an attribute (a loud error,
+    never a silent empty text).  Character offsets are byte offsets (ASCII).  The file stays open; a file
+    changed while it is read is an error (:meth:`check_unchanged`).
+    """
+
+    __slots__ = ("fd", "n", "blank", "stamp", "name", "absent", "_w0", "_window", "__weakref__")
+
+    def __init__(self, fd: int, n: int, blank: bool, stamp: tuple[int, int, int], name: str,
+                 absent: frozenset[str] = frozenset()):
+        self.fd, self.n, self.blank, self.stamp, self.name = fd, n, blank, stamp, name
+        #: characters known not to occur in the file
+        self.absent = absent
+        self._w0 = 0
+        self._window = ""
+
+    def __del__(self) -> None:
+        try:
+            os.close(self.fd)
+        except (OSError, AttributeError, TypeError):
+            pass
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __bool__(self) -> bool:
+        return self.n > 0
+
+    def __repr__(self) -> str:
+        return f"FileText({self.name!r}, {self.n} characters)"
+
+    def _read(self, start: int, stop: int) -> str:
+        data = os.pread(self.fd, max(0, stop - start), start)
+        return data.decode("ascii")
+
+    def _at(self, pos: int) -> tuple[int, str]:
+        """The window that holds ``pos`` (read when ``pos`` is outside the current one)."""
+        if not self._w0 <= pos < self._w0 + len(self._window):
+            self._w0 = pos
+            self._window = self._read(pos, min(self.n, pos + WINDOW_BYTES))
+        return self._w0, self._window
+
+    def _span(self, start: int | None, end: int | None) -> tuple[int, int]:
+        start = 0 if start is None else (max(0, self.n + start) if start < 0 else min(start, self.n))
+        end = self.n if end is None else (max(0, self.n + end) if end < 0 else min(end, self.n))
+        return start, end
+
+    def __getitem__(self, key: slice) -> str:
+        if not isinstance(key, slice) or key.step not in (None, 1):
+            raise TypeError("FileText takes slices without a step")
+        start, end = self._span(key.start, key.stop)
+        if end <= start:
+            return ""
+        w0, window = self._at(start)
+        if end <= w0 + len(window):
+            return window[start - w0:end - w0]
+        return self._read(start, end)
+
+    def find(self, sub: str | bytes, start: int | None = None, end: int | None = None) -> int:
+        if isinstance(sub, bytes):
+            sub = sub.decode("ascii")
+        start, end = self._span(start, end)
+        if not sub:
+            return start if start <= end else -1
+        if sub in self.absent:
+            return -1
+        pos = start
+        while pos < end:
+            w0, window = self._at(pos)
+            if w0 + len(window) < min(end, pos + len(sub)):  # too short for a match at pos: read on from pos
+                self._w0, self._window = pos, self._read(pos, min(self.n, pos + max(WINDOW_BYTES, 2 * len(sub))))
+                w0, window = self._w0, self._window
+            stop = min(end, w0 + len(window))
+            k = window.find(sub, pos - w0, stop - w0)
+            if k >= 0:
+                return w0 + k
+            if stop >= end:
+                return -1
+            pos = stop - len(sub) + 1  # every match starting before this was looked for (> pos: see above)
+        return -1
+
+    def index(self, sub: str, start: int | None = None, end: int | None = None) -> int:
+        k = self.find(sub, start, end)
+        if k < 0:
+            raise ValueError("substring not found")
+        return k
+
+    def count(self, sub: str, start: int | None = None, end: int | None = None) -> int:
+        if len(sub) != 1:
+            raise ValueError("FileText counts single characters only")
+        start, end = self._span(start, end)
+        total, pos = 0, start
+        while pos < end:
+            stop = min(end, pos + WINDOW_BYTES)
+            if end - start <= WINDOW_BYTES:
+                w0, window = self._at(pos)
+                if stop <= w0 + len(window):
+                    return total + window.count(sub, pos - w0, stop - w0)
+            total += os.pread(self.fd, stop - pos, pos).count(sub.encode("ascii"))
+            pos = stop
+        return total
+
+    def __contains__(self, sub: str) -> bool:
+        return self.find(sub) >= 0
+
+    def endswith(self, suffix: str) -> bool:
+        return self[max(0, self.n - len(suffix)):] == suffix
+
+    def isascii(self) -> bool:
+        return True
+
+    def blocks(self, size: int) -> Iterator[bytes]:
+        """The file in blocks of about ``size`` bytes, each cut after a newline (or at the end), as
+        ``_encoded_blocks`` cuts a ``str``: the cut is the first newline at or after ``size - 1``."""
+        lo, n = 0, self.n
+        while lo < n:
+            hi = lo + size
+            if hi >= n:
+                yield os.pread(self.fd, n - lo, lo)
+                return
+            data = os.pread(self.fd, size + 4096, lo)  # most often holds the first newline from hi - 1
+            cut = data.find(b"\n", size - 1)
+            if cut >= 0:
+                yield data[:cut + 1]
+                lo += cut + 1
+                continue
+            cut = self.find("\n", hi - 1)
+            hi = n if cut < 0 else cut + 1
+            yield os.pread(self.fd, hi - lo, lo)
+            lo = hi
+
+    def pieces(self, size: int) -> Iterator[str]:
+        """The text in pieces of about ``size`` characters, each cut after a newline (or at the end)."""
+        for blk in self.blocks(size):
+            yield blk.decode("ascii")
+
+    def read_all(self) -> str:
+        """The whole text (for the paths that need it in memory)."""
+        self.check_unchanged()
+        return self._read(0, self.n)
+
+    def check_unchanged(self) -> None:
+        """GC100 when the file changed since it was first read (its text would not be the text hashed)."""
+        st = os.fstat(self.fd)
+        if (st.st_size, st.st_mtime_ns, st.st_ino) != self.stamp:
+            raise GcodeError(Diagnostic("GC100", "cannot read the program: the file changed while it was being "
+                                                 "verified; verify it again", file=self.name))
+
+
+def materialized(text: str | FileText) -> str:
+    """``text`` itself, or the whole text of a :class:`FileText`."""
+    return text.read_all() if isinstance(text, FileText) else text

@@ -13,8 +13,8 @@ from typing import TYPE_CHECKING, Any
 
 from ..errors import InvalidArgument
 from ..exact import format_decimal
-from ..gcode.source import ProgramSource
-from ..machine import Machine
+from ..gcode.source import FileText, ProgramSource
+from ..machine import Machine, declares_solids
 from ..prover.limits import RunLimits
 from ..prover.options import VerifyOptions
 from ..prover.profile import RunProfile
@@ -105,6 +105,8 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     # one budget for the whole program: every case and switch position draws on it
     # one profile too: the progress bar counts the motions of every case, and --stats sums them
     profile = RunProfile()
+    if isinstance(source.text, FileText) and not _streams(source.text, machine, options, dialect, ranges):
+        source = source.materialized()
     used = used_switches(source.text, dialect)
     deleted = bool(used)
     if (options.engine == "auto" and not ranges and options.recovery is None and not deleted
@@ -179,12 +181,25 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
         notes += note
         result = replace(result, stats=result.stats + stats)
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
+    if isinstance(source.text, FileText):
+        source.text.check_unchanged()  # the text verified is the text hashed
     timings = (("total_s", time.perf_counter() - t0),) + result.timings
     return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
                    interrupted=interrupted, budget_s=limits.budget_s, profile=profile.as_dict(),
                    timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
+
+
+def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: str,
+             ranges: tuple[ParamRange, ...]) -> bool:
+    """Whether a streamed file (:class:`~nczones.gcode.source.FileText`) can be verified without its whole
+    text in memory: a LinuxCNC program without parameters (``#``: the double pass reads the text) or block
+    delete (``/``), without ranges, recovery or tool solids.  Its lanes then read it block by block (the fast
+    path; a program that needs the language layer is read whole there) and the lines of violations are read
+    back from the file."""
+    return (dialect == "linuxcnc" and machine.dialect == "linuxcnc" and not ranges and options.recovery is None
+            and not declares_solids(machine) and "#" not in text and "/" not in text)
 
 
 def _verify_recovery(source: ProgramSource, machine: Machine, options: VerifyOptions,
@@ -480,6 +495,8 @@ def _solids_blend_reasons(machine: Machine, run: Interpretation) -> tuple[Reason
     """The tool solids are proved on the programmed path (:mod:`nczones.prover.solids`); where the control may
     round a corner (G64, Fanuc cutting mode) the holder sweeps the rounded path, which that proof does not
     model: a reason the verdict cannot be ``safe`` (specs/path-modes.md)."""
+    if not declares_solids(machine):
+        return ()
     from ..solids import machine_solids
 
     solids = machine_solids(machine)

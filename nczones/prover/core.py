@@ -1119,12 +1119,14 @@ def prove(motion: Iterable[Segment | MotionChunk], machine: Machine, options: Ve
 
     A machine with tool and fixture solids (:mod:`nczones.solids`) also has every motion's swept tool solids
     proved against its fixtures (:mod:`nczones.prover.solids`), and the two results are joined."""
-    from ..solids import machine_solids
+    from ..machine import declares_solids
 
-    solids = machine_solids(machine)
-    if solids is not None:
+    if declares_solids(machine):
+        from ..solids import machine_solids
         from .solids import prove_with_solids
 
+        solids = machine_solids(machine)
+        assert solids is not None  # declares_solids is machine_solids' own test
         return prove_with_solids(motion, machine, solids, options, verify_segments, file=file, profile=profile)
     return verify_segments(motion, machine, margin=options.margin, params=options.ranges(machine),
                            engine=options.engine, max_violations=options.max_violations, file=file,

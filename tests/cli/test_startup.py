@@ -21,7 +21,7 @@ MILL = str(ROOT / "specs" / "machines" / "mill.toml")
 
 #: What a light start must not load: the numeric and drawing libraries, the solver, and the two witnesses.
 HEAVY = ("numpy", "z3", "shapely", "matplotlib", "nczones.controller", "nczones.prover", "nczones.report",
-         "nczones.gcode", "nczones.fleet", "nczones.imports")
+         "nczones.gcode", "nczones.fleet", "nczones.imports", "nczones.homing", "nczones.recovery", "nczones.solids")
 
 
 def loaded_after(code: str) -> set[str]:
@@ -49,7 +49,8 @@ def test_a_light_start_loads_no_heavy_module(code):
 #: other witness.
 NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.metadata", "nczones.controller",
                           "nczones.fleet", "nczones.imports", "nczones.gcode.fastpath", "nczones.prover.screen",
-                          "nczones.prover.polygon")
+                          "nczones.prover.polygon", "nczones.homing", "nczones.recovery", "nczones.solids",
+                          "nczones.gcode.lathe", "nczones.gcode.cylindrical", "nczones.gcode.g7x")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -72,6 +73,27 @@ def test_a_large_program_takes_the_vectorized_path(tmp_path):
     lines = [f"G1 X{10 + k % 50}.{k % 10} Y{20 + k % 30}.5 F100" for k in range(FAST_PATH_MIN_LINES)]
     loaded = loaded_by_verify(tmp_path, ["G90 G21", *lines, "M2"])
     assert {"numpy", "nczones.gcode.fastpath", "nczones.prover.screen"} <= loaded and "z3" not in loaded
+
+
+def test_a_machine_file_section_imports_its_parser_when_it_appears():
+    """Issue 34: no module is imported for its side effects; the extra sections of a machine file are an explicit
+    table (section -> "module:function"), and a section's module is imported when a file has the section."""
+    homing_mill = str(ROOT / "specs" / "machines" / "homing_mill.toml")
+    solids_mill = str(ROOT / "specs" / "machines" / "mill_solids.toml")
+    probe = "import sys\nfrom nczones import load_machine\nm = load_machine({!r})\n" \
+            "print(sorted(m.sections), sorted(x for x in ('nczones.homing', 'nczones.recovery', 'nczones.solids') " \
+            "if x in sys.modules))"
+    for machine, sections, modules in ((MILL, [], []), (homing_mill, ["homing"], ["nczones.homing"]),
+                                       (solids_mill, ["fixtures", "spindle", "tools"], ["nczones.solids"])):
+        r = subprocess.run([sys.executable, "-c", probe.format(machine)], capture_output=True, text=True, cwd=ROOT)
+        assert r.returncode == 0, r.stderr
+        assert r.stdout.split("\n")[0] == f"{sections} {modules}"
+    from nczones.machine import SECTION_PARSERS, section_parser
+
+    for name, where in SECTION_PARSERS.items():
+        module, _, function = where.partition(":")
+        assert callable(section_parser(name)) and section_parser(name).__module__ == module
+        assert section_parser(name).__name__ == function
 
 
 def test_the_public_api_still_reaches_every_stage():
