@@ -12,6 +12,7 @@ defined yet, recursion, named parameters in a sub, ``#<_value>``, a value return
 from __future__ import annotations
 
 import os
+from fractions import Fraction
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -143,3 +144,29 @@ def test_verify_of_a_call_loop_matches_the_unrolled_program(reps, x_max):
         assert a.verdict == Verdict.SAFE and (a.profile or {}).get("double_pass", {}).get("motions") == 2 * reps
     else:
         assert a.verdict == Verdict.UNSAFE and a.violations
+
+
+values = st.tuples(st.floats(-1e6, 1e6, allow_nan=False), st.none())
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.dictionaries(st.integers(1, 40), values, max_size=12), st.lists(values, max_size=33))
+def test_a_call_frame_saves_sets_and_restores_exactly(before, args):
+    """The full path's frame (Parameters.push_scope/pop_scope, made cheaper for issue 36) against LinuxCNC's
+    rule: inside, #k is the k-th argument for k <= 30 and unset beyond the arguments, #31.. untouched; after
+    the endsub every numbered parameter reads as before (one unset before reads 0 again)."""
+    from nczones.gcode.expr import SUB_PARAMS, Parameters
+
+    p = Parameters()
+    for k, v in before.items():
+        p.write(k, v)
+    saved = p.push_scope(tuple(args))
+    for k in range(1, 41):
+        inside = p.read(k)
+        if k <= SUB_PARAMS:
+            assert inside == (args[k - 1] if k <= len(args) else (0.0, Fraction(0)))
+        else:
+            assert inside == before.get(k, (0.0, Fraction(0)))
+    p.pop_scope(saved)
+    assert {k: p.read(k) for k in range(1, 41)} == {k: before.get(k, (0.0, Fraction(0))) for k in range(1, 41)}
+    assert all(p.exists(k) for k in range(1, 41))
