@@ -29,9 +29,10 @@ The subset
 ----------
 The LinuxCNC dialect; numbered parameters ``#1``..``#5601`` that are not controller state, local named
 parameters; ``o`` ``if``/``elseif``/``else``/``endif`` and ``while``/``endwhile`` properly nested with
-labels not reused; ``o.. sub``/``endsub`` at the top level without named parameters in the body, and
-``o.. call`` of a sub defined before the call in the flow (not recursive, at most :data:`MAX_CALLS` open: the
-caller's #1..#30 saved, set from the arguments, restored at the endsub, as the full path's
+labels not reused; ``o.. sub``/``endsub`` at the top level, and ``o.. call`` of a sub defined before the
+call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1..#30 and local named
+parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
+restored at the endsub, as the full path's
 ``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
 X Y Z words of the machine's axes, N, and M2/M30 alone to end; plain comments.  Everything else declines:
 other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
@@ -92,7 +93,6 @@ MAX_CALLS = 5
 #: The O-word keywords the pass follows.
 _FOLLOWED = frozenset(("if", "elseif", "else", "endif", "while", "endwhile", "sub", "endsub", "call"))
 _SUB_KEYS = frozenset(range(1, SUB_PARAMS + 1))
-_NAMED = re.compile(r"#[ \t]*<")
 _BLANKS = re.compile(r"[ \t]+")
 
 #: The codes this lane claims and declines (the code table).
@@ -253,7 +253,8 @@ class _Pass:
         self.N: dict[str, float] = {}  # the main program's named parameters
         self.plans: dict[tuple, Any] = {}
         self.subs: dict[Any, int] = {}  # the subs defined so far: the index of their body's first line
-        self.calls: list[tuple[int, dict, Any]] = []  # open calls: (return index, caller's #1..#30, label)
+        #: open calls: (return index, caller's #1..#30, label, caller's local named parameters)
+        self.calls: list[tuple[int, dict, Any, dict]] = []
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
         self.shape_code: dict[Any, _Code] = {}
@@ -481,17 +482,16 @@ class _Pass:
         if len(stack) != 1 or stack[0][:2] != ["sub", label]:
             raise Declined("O-words not nested")
         top = stack.pop()
-        if _NAMED.search(self.text, top[4][0], start):  # a call's named parameters are its own (not followed)
-            raise Declined("a named parameter in a subroutine")
         out[top[2]] = ("sub", (at + 1, label), None)
         out[at] = ("endsub", None, None)
 
     def _sub_flow(self, kw: str, i: int, target: Any, args: Any, looping: int) -> tuple[int, int]:
         """A sub definition reached, a call or an endsub (as the full path's ``Runner.oword``): the next line and
         the open loops and calls.  A call saves the caller's #1..#30, sets them from its arguments (the rest
-        unset) and runs the body; its endsub restores them.  Declined: a call of a sub not defined before it in
+        unset) and runs the body with no local named parameters; its endsub restores them (as
+        ``Parameters.push_scope`` / ``pop_scope``).  Declined: a call of a sub not defined before it in
         the flow, a recursive call, calls nested more than :data:`MAX_CALLS` deep."""
-        S, calls = self.S, self.calls
+        S, N, calls = self.S, self.N, self.calls
         if kw == "sub":
             after, label = target
             if label in self.subs:  # reached again (the full path reports it)
@@ -507,14 +507,17 @@ class _Pass:
             for k in saved:
                 del S[k]
             S.update(zip(range(1, SUB_PARAMS + 1), values))
-            calls.append((i + 1, saved, target))
+            calls.append((i + 1, saved, target, dict(N)))
+            N.clear()  # a call's local named parameters start empty (the caller's are not visible)
             return body, looping + 1  # the body runs again: its lines compiled once (as a loop body's)
         if not calls:
             raise Declined("an endsub outside a call")
-        ret, saved, _label = calls.pop()
+        ret, saved, _label, named = calls.pop()
         for k in S.keys() & _SUB_KEYS:
             del S[k]
         S.update(saved)
+        N.clear()
+        N.update(named)
         return ret, looping - 1
 
     # -- ordinary lines -----------------------------------------------------------------------------------

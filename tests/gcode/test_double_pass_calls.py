@@ -6,7 +6,7 @@ from its arguments and leaves the rest unset (they read 0); its ``endsub`` resto
 with 0 to 4 arguments, from loops and from other subroutines, and write #1..#3 and #31 in both: whenever the
 pass returns, the full interpreter's run must agree with it (``check_against_full``: the same motions, each
 inside its row's enclosure, no error or note).  Programs outside what the pass follows (a call of a sub not
-defined yet, recursion, named parameters in a sub, ``#<_value>``, a value returned, ``return``) must be declined.
+defined yet, recursion, a caller's named parameter read in a sub, ``#<_value>``, a value returned, ``return``) must be declined.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ from .test_double_pass import (
 )
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "60"))
-TARGETS = ["#1", "#2", "#3", "#30", "#31"]
+TARGETS = ["#1", "#2", "#3", "#30", "#31", "#<a>"]
 
 
 @st.composite
@@ -97,13 +97,24 @@ def test_a_call_sets_and_restores_the_callers_parameters():
     assert list(path.columns[0]) == [0.0, 7.0, 1.0] and list(path.columns[1]) == [0.0, 0.0, 2.0]
 
 
+def test_a_call_has_its_own_named_parameters():
+    # LinuxCNC: a call has its own local named parameters (enter_context), dropped at the endsub: the sub's #<a>
+    # is 2 (twice its argument), the caller's #<a> is 5 again after the call
+    text = ("o100 sub\n#<a> = [#1 * 2]\nG1 X#<a>\no100 endsub\nG21 G90 G54 F100\n#<a> = 5\n"
+            "o100 call [1]\nG1 X#<a>\nM30\n")
+    path = check_against_full(text, MACHINE)
+    assert path is not None, "declined"
+    assert list(path.columns[0]) == [0.0, 2.0, 5.0]
+
+
 SUB = "o100 sub\nG1 X#1\no100 endsub\n"
 DECLINED_CALLS = {
     "a call before the definition": ("G21 G90 G54 F100\n#1 = 1\no100 call [1]\n" + SUB + "M30\n", "not defined"),
     "recursion": ("o100 sub\no101 if [#1 GT 0]\no100 call [#1 - 1]\no101 endif\no100 endsub\n"
                   "G21 G90 G54 F100\no100 call [3]\nM30\n", "recursive"),
-    "a named parameter in a sub": ("o100 sub\n#<a> = #1\nG1 X#<a>\no100 endsub\nG21 G90 G54 F100\no100 call [1]\n",
-                                   "named parameter"),
+    # LinuxCNC: a sub has its own local names; the caller's #<a> is not visible (the full path's error)
+    "a caller's name read in a sub": ("o100 sub\nG1 X#<a>\no100 endsub\nG21 G90 G54 F100\n#<a> = 1\no100 call\n",
+                                      "KeyError"),
     "#<_value>": (SUB + "G21 G90 G54 F100\no100 call [1]\n#1 = #<_value>\nG1 X#1\n", "_value"),
     "a value returned": ("o100 sub\nG1 X#1\no100 endsub [#1]\nG21 G90 G54 F100\no100 call [1]\n", "returning"),
     "return": ("o100 sub\nG1 X#1\no100 return\no100 endsub\nG21 G90 G54 F100\no100 call [1]\n", "return"),
