@@ -29,10 +29,15 @@ The subset
 ----------
 The LinuxCNC dialect; numbered parameters ``#1``..``#5601`` that are not controller state, local named
 parameters; ``o`` ``if``/``elseif``/``else``/``endif`` and ``while``/``endwhile`` properly nested with
-labels not reused while open; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
+labels not reused; ``o.. sub``/``endsub`` at the top level, and ``o.. call`` of a sub defined before the
+call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1..#30 and local named
+parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
+restored at the endsub, as the full path's
+``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
 X Y Z words of the machine's axes, N, and M2/M30 alone to end; plain comments.  Everything else declines:
 other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
-subroutines, other loops, a motion while the units, distance mode or work offset are still the machine
+other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
+loops, a motion while the units, distance mode or work offset are still the machine
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error.
 
@@ -54,7 +59,15 @@ from typing import Any
 
 from ..errors import GcodeError
 from .codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
-from .expr import MAX_PARAMETER, TRIG_DEGREES, EvalError, atan_degrees, binary_op, unary_op
+from .expr import (
+    MAX_PARAMETER,
+    SUB_PARAMS,
+    TRIG_DEGREES,
+    EvalError,
+    atan_degrees,
+    binary_op,
+    unary_op,
+)
 from .lexer import magic_comment
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from .program import scan_oword
@@ -74,6 +87,13 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
                 12: "offset"}
 _GROUPS = {k // 10: _GROUP_NAMES[LINUXCNC_G[k].group or 0] for k in sorted(claimed(LINUXCNC_G, LANE_DOUBLES))}
+
+#: Calls open at once the pass follows (LinuxCNC has 10 call levels with the main program).
+MAX_CALLS = 5
+#: The O-word keywords the pass follows.
+_FOLLOWED = frozenset(("if", "elseif", "else", "endif", "while", "endwhile", "sub", "endsub", "call"))
+_SUB_KEYS = frozenset(range(1, SUB_PARAMS + 1))
+_BLANKS = re.compile(r"[ \t]+")
 
 #: The codes this lane claims and declines (the code table).
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
@@ -232,6 +252,9 @@ class _Pass:
         self.S: dict[int, float] = {DEBUG_FLAG: float(DEBUG_FLAG_DEFAULT)}
         self.N: dict[str, float] = {}  # the main program's named parameters
         self.plans: dict[tuple, Any] = {}
+        self.subs: dict[Any, int] = {}  # the subs defined so far: the index of their body's first line
+        #: open calls: (return index, caller's #1..#30, label, caller's local named parameters)
+        self.calls: list[tuple[int, dict, Any, dict]] = []
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
         self.shape_code: dict[Any, _Code] = {}
@@ -306,9 +329,9 @@ class _Pass:
                             if kw2 == "endif" or kw2 == "else" or _cond(cond2) != 0.0:
                                 i = at + 1
                                 break
-                elif kw == "endif":
-                    i += 1
-                else:  # elseif, else: the branch before ran, on past the endif
+                elif kw == "sub" or kw == "call" or kw == "endsub":
+                    i, looping = self._sub_flow(kw, i, target, cond, looping)
+                else:  # elseif, else: the branch before ran, on past the endif (endif: on to the next line)
                     i = target
                 continue
             if looping:
@@ -386,22 +409,17 @@ class _Pass:
             if seen is None:
                 continue
             kw, label = seen
-            if kw not in ("if", "elseif", "else", "endif", "while", "endwhile"):
-                raise Declined(f"o-word {kw or 'label'}")
-            try:
-                pl = parse_line(line, 1, "<double pass>")
-            except GcodeError:  # the full path reports it
-                raise Declined("an O-word line that does not parse") from None
-            ow = pl.oword
-            if ow is None or ow.keyword != kw or ow.label != label or pl.comments or pl.words or pl.assigns \
-                    or pl.delete or pl.percent or pl.unsupported is not None:
-                raise Declined("an O-word line read otherwise by the parser")
-            cond = self._compiled_cond(ow.args[0]) if kw in ("if", "elseif", "while") else None
-            found.append((index, kw, label, cond))
+            found.append((index, kw, label, self._control_line(line, kw, label), start))
         out: dict[int, tuple] = {}
         stack: list[list] = []
         opened: set = set()
-        for at, kw, label, cond in found:
+        for at, kw, label, cond, start in found:
+            if kw == "call":
+                out[at] = ("call", label, cond)
+                continue
+            if kw == "sub" or kw == "endsub":
+                self._sub_control(kw, label, at, start, stack, opened, out)
+                continue
             if kw in ("if", "while"):
                 if label in opened:  # LinuxCNC refuses a label that opens two constructs ("duplicate O-word label")
                     raise Declined("an O-word label reused")
@@ -428,7 +446,79 @@ class _Pass:
                     out[at2] = (k2, at + 1, None)
         if stack:
             raise Declined("an O-word construct left open")
+        if any(kw == "sub" for _a, kw, *_r in found) and "_value" in _BLANKS.sub("", text.lower()):
+            # an endsub sets #<_value> and #<_value_returned> (the pass does not follow them)
+            raise Declined("a program with subroutines that names #<_value>")
         return out
+
+    def _control_line(self, line: str, kw: str, label: Any) -> Any:
+        """The compiled condition of an O-word line (a call's: its arguments'), after its parse agrees."""
+        if kw not in _FOLLOWED:
+            raise Declined(f"o-word {kw or 'label'}")
+        try:
+            pl = parse_line(line, 1, "<double pass>")
+        except GcodeError:  # the full path reports it
+            raise Declined("an O-word line that does not parse") from None
+        ow = pl.oword
+        if ow is None or ow.keyword != kw or ow.label != label or pl.comments or pl.words or pl.assigns \
+                or pl.delete or pl.percent or pl.unsupported is not None:
+            raise Declined("an O-word line read otherwise by the parser")
+        if kw == "call":
+            if len(ow.args) > SUB_PARAMS:
+                raise Declined("a call with more than 30 arguments")
+            return tuple(self._compiled_cond(a) for a in ow.args)
+        if kw == "endsub" and ow.args:
+            raise Declined("an endsub returning a value")
+        return self._compiled_cond(ow.args[0]) if kw in ("if", "elseif", "while") else None
+
+    def _sub_control(self, kw: str, label: Any, at: int, start: int, stack: list, opened: set, out: dict) -> None:
+        """A ``sub`` (opened at the top level only) or its ``endsub`` matched (:meth:`_controls`)."""
+        if kw == "sub":
+            if stack or label in opened:
+                raise Declined("a sub inside another construct, or its label reused")
+            opened.add(label)
+            stack.append([kw, label, at, None, [start]])
+            return
+        if len(stack) != 1 or stack[0][:2] != ["sub", label]:
+            raise Declined("O-words not nested")
+        top = stack.pop()
+        out[top[2]] = ("sub", (at + 1, label), None)
+        out[at] = ("endsub", None, None)
+
+    def _sub_flow(self, kw: str, i: int, target: Any, args: Any, looping: int) -> tuple[int, int]:
+        """A sub definition reached, a call or an endsub (as the full path's ``Runner.oword``): the next line and
+        the open loops and calls.  A call saves the caller's #1..#30, sets them from its arguments (the rest
+        unset) and runs the body with no local named parameters; its endsub restores them (as
+        ``Parameters.push_scope`` / ``pop_scope``).  Declined: a call of a sub not defined before it in
+        the flow, a recursive call, calls nested more than :data:`MAX_CALLS` deep."""
+        S, N, calls = self.S, self.N, self.calls
+        if kw == "sub":
+            after, label = target
+            if label in self.subs:  # reached again (the full path reports it)
+                raise Declined("a sub defined twice")
+            self.subs[label] = i + 1
+            return after, looping
+        if kw == "call":
+            body = self.subs.get(target)
+            if body is None or len(calls) >= MAX_CALLS or any(c[2] == target for c in calls):
+                raise Declined("a call of a sub not defined before it, recursive or nested deeply")
+            values = [_cond(a) for a in args]
+            saved = {k: S[k] for k in S.keys() & _SUB_KEYS}
+            for k in saved:
+                del S[k]
+            S.update(zip(range(1, SUB_PARAMS + 1), values))
+            calls.append((i + 1, saved, target, dict(N)))
+            N.clear()  # a call's local named parameters start empty (the caller's are not visible)
+            return body, looping + 1  # the body runs again: its lines compiled once (as a loop body's)
+        if not calls:
+            raise Declined("an endsub outside a call")
+        ret, saved, _label, named = calls.pop()
+        for k in S.keys() & _SUB_KEYS:
+            del S[k]
+        S.update(saved)
+        N.clear()
+        N.update(named)
+        return ret, looping - 1
 
     # -- ordinary lines -----------------------------------------------------------------------------------
     def _parsed(self, line: str) -> Any:

@@ -97,6 +97,10 @@ def atan_degrees(y: float, x: float) -> float:
 MAX_PARAMETER = 5601
 #: Subroutine arguments live in #1..#30 and are local to a call.
 SUB_PARAMS = 30
+#: The numbered parameters a subroutine call saves and sets (#1..#30).
+_SUB_KEYS = frozenset(range(1, SUB_PARAMS + 1))
+_ZERO: tuple = (0.0, Fraction(0))
+_ONE: tuple = (1.0, Fraction(1))
 
 
 #: LinuxCNC's predefined read-only named parameters; the interpreter may ``provide`` them.
@@ -277,16 +281,31 @@ class Parameters:
         else:
             self._scopes[-1][key] = value
 
-    def push_scope(self, args: tuple[Value, ...]) -> tuple:
-        """Enter a subroutine: save #1..#30, set them from ``args``, new local names."""
-        saved = tuple(self._num.get(i) for i in range(1, SUB_PARAMS + 1))
-        for i in range(1, SUB_PARAMS + 1):
-            if i <= len(args):
-                self._num[i] = args[i - 1]
-            else:
-                self._num.pop(i, None)
+    def push_scope(self, args: tuple[Value, ...]) -> dict:
+        """Enter a subroutine: save #1..#30, set them from ``args``, new local names.  The saved frame is the
+        caller's #1..#30 that were set (a dict: the unset ones read 0 again after :meth:`pop_scope`)."""
+        num = self._num
+        saved = {k: num[k] for k in num.keys() & _SUB_KEYS}
+        for k in saved:
+            del num[k]
+        if args:
+            num.update(zip(range(1, SUB_PARAMS + 1), args))
         self._scopes.append({})
         return saved
+
+    def set_returned(self, value: Value | None) -> None:
+        """``#<_value>`` and ``#<_value_returned>`` as an endsub, return or M99 leaves them: ``value`` and 1,
+        else (None) 0 and 0; a computed read of either (:meth:`provide`) is taken back.  Each is an assignment
+        by the program (``on_write`` is called)."""
+        providers = self._providers
+        if "_value" in providers or "_value_returned" in providers:
+            providers.pop("_value", None)
+            providers.pop("_value_returned", None)
+        got = (value, _ONE) if value is not None else (_ZERO, _ZERO)
+        self._globals["_value"], self._globals["_value_returned"] = got
+        if self.on_write is not None:
+            self.on_write("_value", got[0][0])
+            self.on_write("_value_returned", got[1][0])
 
     def push_locals(self) -> None:
         """Enter an M98 subprogram: a new frame of local names (LinuxCNC's enter_context), #1..#30 shared."""
@@ -297,16 +316,14 @@ class Parameters:
         if len(self._scopes) > 1:
             self._scopes.pop()
 
-    def pop_scope(self, saved: tuple) -> None:
-        """Leave a subroutine: restore #1..#30 and the caller's local names."""
-        for i, v in enumerate(saved, start=1):
-            if v is None:
-                self._num.pop(i, None)
-            else:
-                self._num[i] = v
+    def pop_scope(self, saved: dict) -> None:
+        """Leave a subroutine: restore #1..#30 (``saved``, from :meth:`push_scope`) and the caller's local names."""
+        num = self._num
+        for k in num.keys() & _SUB_KEYS:
+            del num[k]
+        num.update(saved)
         if len(self._scopes) > 1:
             self._scopes.pop()
-
 
 def lcnc_integer(value: Fraction) -> int | None:
     """The integer LinuxCNC reads for an integer word (H, L, T, M, an O number, M98's P): its double

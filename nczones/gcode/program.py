@@ -263,7 +263,7 @@ class _Frame:
     kind: str  # "main", "o", "m98"
     label: object = None
     ret: tuple[int, int] = (0, 0)
-    saved: tuple | None = None
+    saved: dict | None = None
     body: tuple[int, int] = (0, 0)
     repeats: int = 0
     loops: list[_Loop] = field(default_factory=list)
@@ -954,14 +954,7 @@ class Runner:
     def set_value(self, value: Any) -> None:
         """``#<_value>`` and ``#<_value_returned>`` as LinuxCNC's read_o leaves them at an endsub, return or
         M99: the value returned, else 0 and 0 (a subroutine that returns nothing resets them)."""
-        self.params.unprovide("_value")
-        self.params.unprovide("_value_returned")
-        if value is None:
-            self.params.write("_value", (0.0, Fraction(0)))
-            self.params.write("_value_returned", (0.0, Fraction(0)))
-        else:
-            self.params.write("_value", value)
-            self.params.write("_value_returned", (1.0, Fraction(1)))
+        self.params.set_returned(value)
 
     def return_m99(self, loc: tuple[int, int], line: str, lineno: int) -> tuple[int, int]:
         frame = self.frames[-1]
@@ -1065,7 +1058,7 @@ class Runner:
                 self.set_value(None)
             return after, ln + 1
         if kw == "call":
-            args = tuple(self.evaluate(a, lineno, line, col, end) for a in ow.args)
+            args = tuple(self.evaluate(a, lineno, line, col, end, again) for a in ow.args)
             body = self.subs.get(label)
             if body is None:
                 # LinuxCNC control_back_to: a sub not defined yet is searched forward from the call (a definition
@@ -1112,7 +1105,7 @@ class Runner:
                                      "it must end with M99", lineno, line, col, end)
                 raise self.error("GC315", f"{_show(label)} {kw} outside a subroutine", lineno, line, col, end)
             if ow.args:
-                value = self.evaluate(ow.args[0], lineno, line, col, end)
+                value = self.evaluate(ow.args[0], lineno, line, col, end, again)
             assert frame.saved is not None  # an "o" frame saved the caller's scope when it was pushed
             self.params.pop_scope(frame.saved)
             self.set_value(value if ow.args else None)
