@@ -144,7 +144,7 @@ def segment_tool(seg: Segment) -> int | None:
     return seg.tool_register if tool is None else tool
 
 
-def tip_shift(seg: Segment, tool_axis: str) -> tuple[Fraction, Fraction]:
+def tip_shift(seg: Segment, tool_axis: str | None) -> tuple[Fraction, Fraction]:
     """The controlled point minus the tool tip, on X and Z (the tool length on the tool axis, the motion's
     tip offset on the other)."""
     off = tip_offset(seg.extra) if seg.extra else {}
