@@ -379,7 +379,10 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
         return Check(program, line, block if isinstance(block, int) else -1, zone, ok, exact, message)
 
     solid = v.get("kind") == "solid"  # the witness is a point of X, Y, Z (inside a tool part and a fixture)
-    point = _point(v.get("point_exact"), ("X", "Y", "Z") if solid else axes, "point_exact", where)
+    from .lathe_solids import is_lathe_axes
+
+    space = (("X", "Z") if is_lathe_axes(axes) else ("X", "Y", "Z")) if solid else axes  # a lathe: its section
+    point = _point(v.get("point_exact"), space, "point_exact", where)
     path = _point(v.get("path_point_exact"), axes, "path_point_exact", where)
     nominal = tuple(x - d for x, d in zip(path, shift))
     mine = [s for s in segs if s.block == block]
@@ -427,6 +430,7 @@ def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Seg
     path point (the part's heights from the motion's own tool length), the witness ``point`` inside the part
     the report names (a closed vertical cylinder) and inside the open interior of the fixture (its ``zone``),
     checked here in exact rationals, independently of the prover's distance computation."""
+    from .lathe_solids import LatheSolids
     from .solids import FixtureCylinder, machine_solids
 
     solids = machine_solids(machine)
@@ -436,6 +440,8 @@ def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Seg
     names = v.get("zones")
     if not isinstance(names, list) or len(names) != 1 or not isinstance(names[0], str):
         raise _fail("RP106", f"a solid violation names its part in zones = [part], got {names!r}", where)
+    if isinstance(solids, LatheSolids):  # a lathe's turret tool against fixtures of revolution
+        return _check_lathe_solid(v, point, path, hits, machine, solids, how)
     part_name, zone = names[0], v.get("zone", "")
     fixtures = [f for f in solids.fixtures if f.name == zone]
     if not fixtures:
@@ -468,6 +474,49 @@ def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Seg
     if not placed:
         return False, f"the tool assembly active at block {v.get('block')} has no part {part_name!r}"
     return False, (f"the point {_show(('X', 'Y', 'Z'), point)} is not inside the part {part_name!r} placed at the path point "
+                   f"{_show(axes, path)}")
+
+
+def _check_lathe_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Segment], machine: Machine,
+                       solids: Any, how: str) -> tuple[bool, str]:
+    """A lathe's turret tool part in a fixture of revolution, in the section through the spindle axis
+    (``specs/turning.md``, "Tool and fixture solids"): the part's rectangle relative to the tip (grown by half
+    its thickness, as the proof uses it) placed at the path point minus the motion's tool offsets, the
+    witness ``(X, Z)`` in that closed rectangle and in the open section of the fixture (``|X|`` between its
+    radii, Z inside its range), in exact rationals, independently of the prover's Minkowski rectangles."""
+    from .prover.lathe_solids import segment_tool, tip_shift
+
+    part_name, zone = v["zones"][0], v.get("zone", "")
+    fixtures = [f for f in solids.fixtures if f.name == zone]
+    if not fixtures:
+        return False, f"the machine has no fixture {zone!r}"
+    axes = machine.axis_names
+    qx, qz = point
+    px, pz = path[axes.index("X")], path[axes.index("Z")]
+    shown = _show(("X", "Z"), point)
+    placed = False
+    for seg in hits:
+        tool = segment_tool(seg)
+        for part in solids.tools.get(tool, ()) if tool is not None else ():
+            if part.name != part_name:
+                continue
+            placed = True
+            sx, sz = tip_shift(seg, machine.tool_axis)
+            a, b, c, d = part.rect()
+            if not (px - sx + a <= qx <= px - sx + b and pz - sz + c <= qz <= pz - sz + d):
+                continue
+            for fx in fixtures:
+                in_r = fx.r_in < abs(qx) and (fx.r_out is None or abs(qx) < fx.r_out)
+                if in_r and (fx.z0 is None or fx.z0 < qz) and (fx.z1 is None or qz < fx.z1):
+                    return True, (f"the point {shown} is inside the {part.label()} of tool {tool} placed at the "
+                                  f"path point {_show(axes, path)} and inside fixture {zone!r} (exact, in the "
+                                  f"section through the spindle axis), and the path point lies on the "
+                                  f"{v.get('segment_kind', 'motion')} of block {v.get('block')} {how}")
+            return False, (f"the point {shown} is inside the {part.label()} at the path point, but not inside "
+                           f"fixture {zone!r}")
+    if not placed:
+        return False, f"the turret tool active at block {v.get('block')} has no part {part_name!r}"
+    return False, (f"the point {shown} is not inside the part {part_name!r} placed at the path point "
                    f"{_show(axes, path)}")
 
 

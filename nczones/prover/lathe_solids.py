@@ -45,7 +45,7 @@ from .geometry import (
 )
 from .result import Reason, Violation
 
-__all__ = ["LatheSolidsChecker", "ARC_PIECES", "CLEARANCE_MEANING"]
+__all__ = ["LatheSolidsChecker", "ARC_PIECES", "CLEARANCE_MEANING", "segment_tool", "tip_shift"]
 
 F0 = Fraction(0)
 F1 = Fraction(1)
@@ -138,6 +138,21 @@ def _box_dist2(rect: Rect, bx: tuple[Fraction, Fraction], bz: tuple[Fraction, Fr
     return gx * gx + gz * gz
 
 
+def segment_tool(seg: Segment) -> int | None:
+    """The turret tool a motion runs with: its :class:`~nczones.motion.TurretTool`, else its tool register."""
+    tool = turret_tool(seg.extra) if seg.extra else None
+    return seg.tool_register if tool is None else tool
+
+
+def tip_shift(seg: Segment, tool_axis: str | None) -> tuple[Fraction, Fraction]:
+    """The controlled point minus the tool tip, on X and Z (the tool length on the tool axis, the motion's
+    tip offset on the other)."""
+    off = tip_offset(seg.extra) if seg.extra else {}
+    sx = seg.tool_length if tool_axis == "X" else off.get("X", F0)
+    sz = seg.tool_length if tool_axis == "Z" else off.get("Z", F0)
+    return sx, sz
+
+
 @dataclass
 class LatheSolidsChecker:
     """Fed every motion in execution order; collects violations, reasons and least clearances (the
@@ -149,9 +164,10 @@ class LatheSolidsChecker:
     reasons: list[Reason] = field(default_factory=list)
     #: (part label, fixture name) -> (least clearance lower bound, line)
     clearance: dict[tuple[str, str], tuple[Fraction, int | None]] = field(default_factory=dict)
-    #: block -> the assembly at a contact, for the report's drawing of the tool; the lathe's turret parts
-    #: are not drawn yet, so it stays empty (the report draws the path and the zones)
-    contacts: dict[int, tuple] = field(default_factory=dict)
+    #: block -> (the turret tool's parts, the tip shift (X, Z), the part that enters, the fixture) at a
+    #: contact, for the report's drawing of the tool (:mod:`nczones.report.solids_view`)
+    contacts: dict[int, tuple[tuple[LathePart, ...], tuple[Fraction, Fraction], LathePart, LatheFixture]] = field(
+        default_factory=dict)
     _blocks: set[int] = field(default_factory=set)
     _pairs: dict[tuple, list] = field(default_factory=dict)
     #: id of a rectangle of :attr:`_pairs` -> (the clearance it was grown by, the grown bounds)
@@ -165,10 +181,7 @@ class LatheSolidsChecker:
     # ------------------------------------------------------------------ which rectangles
     def _tip_shift(self, seg: Segment) -> tuple[Fraction, Fraction]:
         """The controlled point minus the tool tip, on X and Z."""
-        off = tip_offset(seg.extra) if seg.extra else {}
-        sx = seg.tool_length if self.tool_axis == "X" else off.get("X", F0)
-        sz = seg.tool_length if self.tool_axis == "Z" else off.get("Z", F0)
-        return sx, sz
+        return tip_shift(seg, self.tool_axis)
 
     def _rects(self, parts: tuple[LathePart, ...], shift: tuple[Fraction, Fraction]) -> list:
         """``(part, fixture, rect, key)`` for every part, fixture and section rectangle: the open rectangle of
@@ -202,9 +215,7 @@ class LatheSolidsChecker:
     def feed(self, seg: Segment) -> None:
         if seg.block in self._blocks or not self.solids.fixtures:
             return
-        tool = turret_tool(seg.extra) if seg.extra else None
-        if tool is None:
-            tool = seg.tool_register
+        tool = segment_tool(seg)
         if tool is None:
             self._unknown(seg, "VF211", "no turret tool is known (no T word yet, or G49): which tool's solids move "
                           "with the turret is not known, so they were not checked against the fixtures")
@@ -291,6 +302,9 @@ class LatheSolidsChecker:
                 f"Z{format_decimal(cz, 4)}, in the section through the spindle axis)")
         axes = self.machine.axis_names
         self._blocks.add(seg.block)
+        tool = segment_tool(seg)
+        self.contacts[seg.block] = (self.solids.tools.get(tool, (part,)) if tool is not None else (part,),
+                                    (sx, sz), part, fx)
         pp = tuple(zip(axes, path))
         self.violations.append(Violation(
             block=seg.block, span=seg.span, zone=fx.name, point=(("X", cx), ("Z", cz)), path_point=pp,

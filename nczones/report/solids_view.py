@@ -18,6 +18,12 @@ parts are"), in exact rationals first, and drawn with the fixture it enters:
   its circle (the drawing contains the solid, so a point inside the solid is inside the drawing).
 
 The machine's ``[[fixtures]]`` that no forbid zone draws are drawn too (a cylinder clamp, a chuck).
+
+A lathe (:mod:`nczones.lathe_solids`) is drawn in its section through the spindle axis (the plane figure
+Z-X; it has no 3-D view): every part of the turret tool is its rectangle relative to the tip (grown by half
+its thickness, as the proof uses it) placed at the path point minus the tool offsets, and a fixture of
+revolution is its section rectangles, both signs of X (``fixture-NAME`` for +X, ``fixture-NAME-mirror``
+for -X); the fixture entered is the section rectangle that holds the witness.
 """
 
 from __future__ import annotations
@@ -28,6 +34,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
+from ..lathe_solids import LatheFixture, LathePart
 from ..solids import FixtureCylinder, machine_solids
 
 __all__ = ["DrawnSolid", "contact_solids", "fixture_solids", "draw_contacts", "contact_traces", "SIDES"]
@@ -67,6 +74,29 @@ def _fixture(fx: Any) -> DrawnSolid:
     return DrawnSolid(fx.name, fx.z0, fx.z1, box=(fx.x0, fx.x1, fx.y0, fx.y1))
 
 
+def _lathe_sections(fx: LatheFixture) -> list[DrawnSolid]:
+    """A fixture of revolution as its section rectangles (X signed), +X first."""
+    return [DrawnSolid(fx.name, fx.z0, fx.z1, box=(lo, hi, None, None)) for lo, hi in fx.sections()]
+
+
+def _inside(v: Fraction, lo: Fraction | None, hi: Fraction | None) -> bool:
+    return (lo is None or lo < v) and (hi is None or v < hi)
+
+
+def _lathe_contact(v: Any, contact: tuple) -> tuple[list[tuple[DrawnSolid, bool]], DrawnSolid]:
+    """The turret tool's parts at the violation's path point and the fixture's section holding the witness."""
+    parts, (sx, sz), hit, fx = contact
+    p, q = dict(v.path_point), dict(v.point)
+    tx, tz = p["X"] - sx, p["Z"] - sz  # the tool tip
+    drawn = []
+    for part in parts:
+        a, b, c, d = part.rect()
+        drawn.append((DrawnSolid(part.name, tz + c, tz + d, box=(tx + a, tx + b, None, None)), part == hit))
+    sections = _lathe_sections(fx)
+    entered = next((s for s in sections if _inside(q["X"], *s.span("X"))), sections[0])
+    return drawn, entered
+
+
 def contact_solids(result: Any) -> list[tuple[int, Any, list[tuple[DrawnSolid, bool]], DrawnSolid]]:
     """Per solid violation (1-based index, violation): the parts of the assembly at its path point (each with
     True for the part that enters the fixture) and the fixture."""
@@ -76,6 +106,9 @@ def contact_solids(result: Any) -> list[tuple[int, Any, list[tuple[DrawnSolid, b
     out = []
     for i, v in enumerate(result.violations, 1):
         if v.kind != "solid" or v.block not in contacts:
+            continue
+        if isinstance(contacts[v.block][2], LathePart):  # a lathe's turret tool, in the section
+            out.append((i, v, *_lathe_contact(v, contacts[v.block])))
             continue
         parts, length, hit, fx = contacts[v.block]
         p = dict(v.path_point)
@@ -95,7 +128,8 @@ def fixture_solids(machine: Any) -> list[DrawnSolid]:
     if solids is None:
         return []
     zones = {z.name for z in machine.allowed.zones if z.forbid}
-    return [_fixture(f) for f in solids.fixtures if f.name not in zones]
+    return [d for f in solids.fixtures if f.name not in zones
+            for d in (_lathe_sections(f) if isinstance(f, LatheFixture) else [_fixture(f)])]
 
 
 def _interval(lo: Fraction | None, hi: Fraction | None, lim: tuple[float, float]) -> tuple[float, float]:
@@ -122,10 +156,12 @@ def draw_contacts(ax: Any, machine: Any, plane: Sequence[str], result: Any) -> N
     if not set(pl) <= {"X", "Y", "Z"}:
         return
     xlim, ylim = ax.get_xlim(), ax.get_ylim()
+    seen: set[str] = set()
     for f in fixture_solids(machine):
         p = _patch(ax, f, pl, facecolor="#b0b0b0", alpha=0.5, hatch="xx", edgecolor="#404040", zorder=2,
-                   label=f"{f.name} (fixture)")
-        p.set_gid(f"fixture-{f.name}")
+                   label=None if f.name in seen else f"{f.name} (fixture)")
+        p.set_gid(f"fixture-{f.name}-mirror" if f.name in seen else f"fixture-{f.name}")
+        seen.add(f.name)
     labels = {"fixture": "fixture entered (machine position)", "hit": "tool part entering it",
               "tool": "the rest of the tool at the contact"}
     for n, (i, _v, parts, fx) in enumerate(contact_solids(result)):

@@ -53,3 +53,31 @@ def test_solids_goldens(name, program):
              for i, v, parts, fx in contact_solids(result)]
     check_golden(f"{name}.contacts.json", json.dumps(drawn, indent=2, ensure_ascii=False) + "\n")
     assert doc["verdict"] == ("unsafe" if name.startswith("unsafe") else "safe")
+
+
+LATHE_CASES = [("unsafe_boring_bar_hits_chuck", "programs/boring_bar_hits_chuck.nc"),
+               ("safe_boring_bar_clears_chuck", "programs/boring_bar_clears_chuck.nc")]
+
+
+@pytest.mark.parametrize("name, program", LATHE_CASES, ids=[c[0] for c in LATHE_CASES])
+def test_lathe_solids_goldens(name, program):
+    """The lathe's boring bar against the chuck jaws (specs/machines/lathe_solids.toml) as text, JSON and HTML,
+    and the turret parts and the fixture section drawn at each contact (X and Z spans, exact; checked against
+    the witness in tests/report/test_lathe_solids_view.py)."""
+    result, m = run_example(program, "lathe_solids.toml")
+    check_golden(f"{name}.txt", render_text(result, deterministic=True, resolution=resolution_of(m)))
+    doc = to_json_dict(result, deterministic=True)
+    check_golden(f"{name}.json", _here(json.dumps(doc, indent=2, ensure_ascii=False) + "\n"))
+    page = render_html(result, m, str(EX / program), deterministic=True)
+    check_golden(f"{name}.html", _here(_page_text(page)))
+    assert 'fixture-jaws"' in page and 'fixture-jaws-mirror"' in page
+    assert ('contact-part-1"' in page and "tool part entering it" in page) == name.startswith("unsafe")
+
+    def spans(s):
+        return {a: [str(x) for x in s.span(a)] for a in "XZ"}
+
+    drawn = [{"violation": i, "line": v.line, "fixture": {"name": fx.name, **spans(fx)},
+              "parts": [{"name": s.name, "entering": hit, **spans(s)} for s, hit in parts]}
+             for i, v, parts, fx in contact_solids(result)]
+    check_golden(f"{name}.contacts.json", json.dumps(drawn, indent=2, ensure_ascii=False) + "\n")
+    assert doc["verdict"] == ("unsafe" if name.startswith("unsafe") else "safe")
