@@ -426,6 +426,9 @@ class Interpreter:
         #: the path control mode (specs/path-modes.md) from each block index on: (first block, mode), in order
         self.path_mode = self.initial_path_mode(machine)
         self.path_modes: list[tuple[int, PathMode]] = [(-1, self.path_mode)]
+        #: the tool the program put in the spindle (M6, M61) from each block index on: (first block, tool), in
+        #: order; the tool solids hold it to the active tool length register (nczones.prover.solids)
+        self.spindle_tools: list[tuple[int, int]] = []
         #: LinuxCNC's G61/G61.1/G64 and its P and Q numbers as written (program units), what M70/M73 save
         #: and M72 (or an M73 subroutine's return) restores when they differ (``restore_settings``)
         self.path_words: tuple[int, Fraction | None, Fraction | None] = self._initial_path_words(machine)
@@ -713,6 +716,14 @@ class Interpreter:
             return
         written = " ".join(["G64"] + [f"{k}{fmt_number(v)}" for k, v in (("P", p), ("Q", q)) if v is not None])
         self._g64(p, q, f"{written} (restored)")
+
+    def spindle_changed(self) -> None:
+        """Record ``tool_in_spindle`` from the current block on (``spindle_tools``)."""
+        table = self.spindle_tools
+        if table and table[-1][0] == self.block_index:
+            table[-1] = (self.block_index, self.tool_in_spindle)
+        elif not table or table[-1][1] != self.tool_in_spindle:
+            table.append((self.block_index, self.tool_in_spindle))
 
     def set_path_mode(self, mode: PathMode) -> None:
         """The path control mode from the current block on (its motion included)."""
@@ -1123,6 +1134,7 @@ class Interpreter:
             elif self.tool_selected != 0:
                 self.spindle_slot_stale = False
             self.tool_in_spindle = self.tool_selected
+            self.spindle_changed()
             self.spindle_dir = 0  # LinuxCNC convert_tool_change stops the spindle (TOOL_CHANGE_WITH_SPINDLE_ON off)
         for k, d in ((3, 1), (4, -1), (5, 0), (19, 0)):
             if k in mset:
@@ -1132,6 +1144,7 @@ class Interpreter:
             if q is None or q.value.denominator != 1 or q.value < 0:
                 raise self.error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
             self.tool_in_spindle = int(q.value)
+            self.spindle_changed()
             self.spindle_slot_stale = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
         if mgroups.get(10) is not None:
             # LinuxCNC convert_m: M70-M73 after F, S, T and M6 of the block, before its G codes and motion
