@@ -105,7 +105,7 @@ def _box_fits(z: BoxZone, hull: Sequence[Pt], axes: tuple[str, str]) -> bool | N
                 return True
         if any(v is None for a in axes for v in lim.get(a, (None, None))):
             return None  # an unbounded box: only the axes above are tried
-        corners = [(x, y) for x in lim[axes[0]] for y in lim[axes[1]]]
+        corners = [(x, y) for x in lim[axes[0]] if x is not None for y in lim[axes[1]] if y is not None]
         n = len(hull)
         return any(all(_cross(hull[i], hull[(i + 1) % n], c) <= 0 for c in corners) for i in range(n))
     return all((lo is None or p[k] >= lo) and (hi is None or p[k] <= hi)
@@ -128,7 +128,7 @@ def _polygon_fits(z: PolygonZone, hull: Sequence[Pt], axes: tuple[str, str]) -> 
             return False
     # no edge meets the open hull: it lies wholly inside the polygon's interior or wholly outside
     n = len(h)
-    centre = (sum(p[0] for p in h) / n, sum(p[1] for p in h) / n)
+    centre = (sum((p[0] for p in h), Fraction(0)) / n, sum((p[1] for p in h), Fraction(0)) / n)
     where = locate(z, centre)
     return where < 0 if z.forbid else where > 0
 
