@@ -67,6 +67,8 @@ F0 = Fraction(0)
 Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
 
 
+#: the most points of a Fanuc run on a two-axis machine kept for its convex hull (beyond: its box decides)
+HULL_POINTS = 400_000
 #: the tip offsets of motions without any (CornerCheck._shifts)
 _NO_SHIFT: frozenset[tuple[tuple[str, Fraction], ...]] = frozenset({()})
 
@@ -149,8 +151,8 @@ class CornerCheck:
         self._stretch_shifts: set[tuple[tuple[str, Fraction], ...]] = set()
         # a two-axis machine (a lathe): the corners of the run's motion boxes, whose convex hull is proved
         # where the run's box does not fit (nczones.prover.hull2d)
-        self._stretch_pts: list[tuple[Fraction, Fraction]] | None = [] if len(self.axes) == 2 else None
-        self._stretch_kept = 0
+        self._stretch_pts: list[tuple[Fraction, ...]] | None = [] if len(self.axes) == 2 else None
+        self._last_extra: tuple[Any, tuple[tuple[str, Fraction], ...]] = ((), ())
         self._naive_modes = 0  # the length of the mode table when it was last searched for G64 Q without P
 
     # ------------------------------------------------------------------ the stream
@@ -425,28 +427,30 @@ class CornerCheck:
                 self._blocks[-1] = range(st[2].block, st[3].block + 1)
 
     def _hull_add(self, seg: Segment, box: Box, first: bool) -> None:
-        """Keep the ends of a straight motion, or the corners of another's box, for the run's convex hull
-        (two-axis machines)."""
+        """Keep the ends of a straight motion (the segment's own tuples: nothing is computed unless the run's box
+        does not fit), or the corners of another's box, for the run's convex hull (two-axis machines); a run of
+        more than HULL_POINTS points keeps its box only."""
         if first:
-            self._stretch_pts, self._stretch_kept = ([] if len(self.axes) == 2 else None), 0
+            self._stretch_pts = [] if len(self.axes) == 2 else None
         pts = self._stretch_pts
         if pts is None:
             return
         if _linear(seg, self.dogleg):
-            pts.extend(((seg.start[0], seg.start[1]), (seg.end[0], seg.end[1])))
+            pts.append(seg.start)
+            pts.append(seg.end)
         else:
             (x0, y0), (x1, y1) = box
             pts.extend(((x0, y0), (x0, y1), (x1, y0), (x1, y1)))
-        if len(pts) > 4096 + 2 * self._stretch_kept:  # bounded memory: the hull's vertices hold the same hull
-            pts[:] = convex_hull(pts)
-            self._stretch_kept = len(pts)
+        if len(pts) > HULL_POINTS:
+            self._stretch_pts = None
 
     def _hull_fits(self, tls: tuple[Fraction, Fraction]) -> bool:
         """The run's convex hull (not its box) fits, on a two-axis machine (specs/path-modes.md §3)."""
-        pts = self._stretch_pts
-        self._stretch_pts, self._stretch_kept = ([] if len(self.axes) == 2 else None), 0
-        if not pts:
+        kept = self._stretch_pts
+        self._stretch_pts = [] if len(self.axes) == 2 else None
+        if not kept:
             return False
+        pts = [(p[0], p[1]) for p in kept]
         w = self.widen_axis
         wx, wy = w[self.axes[0]], w[self.axes[1]]
         hull = convex_hull((x + sx * wx, y + sy * wy) for x, y in convex_hull(pts) for sx in (-1, 1)
@@ -586,9 +590,14 @@ class CornerCheck:
 
     def _shift(self, seg: Segment) -> tuple[tuple[str, Fraction], ...]:
         """``seg``'s tool offsets off the tool axis, as a key (empty: none, or no tip zone to move)."""
-        if not seg.extra or not self.has_tip_zones:
+        extra = seg.extra
+        if not extra or not self.has_tip_zones:
             return ()
-        return tuple(sorted(tip_offset(seg.extra).items()))
+        if extra is self._last_extra[0]:  # the interpreter shares one payload tuple while the offsets hold
+            return self._last_extra[1]
+        key = tuple(sorted(tip_offset(extra).items()))
+        self._last_extra = (extra, key)
+        return key
 
     def _allowed_sets(self) -> list[Any]:
         """The allowed sets a box is tested against: the tip zones moved by each offset of the motions in play."""
