@@ -68,7 +68,7 @@ Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
 
 
 #: the most points of a Fanuc run on a two-axis machine kept for its convex hull (beyond: its box decides)
-HULL_POINTS = 400_000
+HULL_POINTS = 100_000
 #: the tip offsets of motions without any (CornerCheck._shifts)
 _NO_SHIFT: frozenset[tuple[tuple[str, Fraction], ...]] = frozenset({()})
 
