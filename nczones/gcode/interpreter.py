@@ -426,6 +426,12 @@ class Interpreter:
         #: the path control mode (specs/path-modes.md) from each block index on: (first block, mode), in order
         self.path_mode = self.initial_path_mode(machine)
         self.path_modes: list[tuple[int, PathMode]] = [(-1, self.path_mode)]
+        #: the tool the program put in the spindle (M6, M61) from each block index on: (first block, tool), in
+        #: order; the tool solids hold it to the active tool length register (nczones.prover.solids)
+        self.spindle_tools: list[tuple[int, int]] = []
+        #: LinuxCNC's G61/G61.1/G64 and its P and Q numbers as written (program units), what M70/M73 save
+        #: and M72 (or an M73 subroutine's return) restores when they differ (``restore_settings``)
+        self.path_words: tuple[int, Fraction | None, Fraction | None] = self._initial_path_words(machine)
         self._declined = -1  # the index of the last block lane() declined
         self.span: SourceSpan | None = None
         # the state every block reads, as instance attributes (reading a class default is slower)
@@ -689,6 +695,36 @@ class Interpreter:
             return PathMode(True, tol, tol, "linuxcnc", f"G64 P{fmt_number(tol)}")
         return PathMode(True, None, _ZERO, "linuxcnc", "G64")
 
+    def _initial_path_words(self, machine: Machine) -> tuple[int, Fraction | None, Fraction | None]:
+        """The start-up mode as G-code numbers (the INI's start-up ``G64 P<tolerance>``, in the start-up units)."""
+        if machine.path_mode != "G64":
+            return (611 if machine.path_mode == "G61.1" else 610, None, None)
+        tol = machine.path_tolerance
+        number = tol / INCH if tol and self.inch else tol or None
+        return (640, number, number)
+
+    def _restore_path_mode(self, words: tuple[int, Fraction | None, Fraction | None]) -> None:
+        """M72 / an M73 subroutine's return: LinuxCNC's restore_settings writes G61, G61.1 or ``G64 P Q`` when
+        the saved numbers differ from the current ones, after restoring the units: the numbers are read in the
+        restored units (rs274 2.9.0~pre1: ``G21 G64 P1``, ``G20``, ``M70``, ``G61``, ``M72`` sets the tolerance
+        to 1 in inches)."""
+        if words == self.path_words:
+            return
+        code, p, q = words
+        if code != 640:
+            self._control_mode(code, {})
+            return
+        written = " ".join(["G64"] + [f"{k}{fmt_number(v)}" for k, v in (("P", p), ("Q", q)) if v is not None])
+        self._g64(p, q, f"{written} (restored)")
+
+    def spindle_changed(self) -> None:
+        """Record ``tool_in_spindle`` from the current block on (``spindle_tools``)."""
+        table = self.spindle_tools
+        if table and table[-1][0] == self.block_index:
+            table[-1] = (self.block_index, self.tool_in_spindle)
+        elif not table or table[-1][1] != self.tool_in_spindle:
+            table.append((self.block_index, self.tool_in_spindle))
+
     def set_path_mode(self, mode: PathMode) -> None:
         """The path control mode from the current block on (its motion included)."""
         if mode != self.path_mode:
@@ -703,12 +739,18 @@ class Interpreter:
         absent is P, in program units)."""
         if code != 640:
             self.set_path_mode(PathMode(False, None, _ZERO, "linuxcnc", "G61" if code == 610 else "G61.1"))
+            self.path_words = (code, None, None)
             return
-        unit = INCH if self.inch else Fraction(1)
-        p = words["P"].value * unit if "P" in words and words["P"].value >= 0 else None
-        q = words["Q"].value * unit if "Q" in words and words["Q"].value >= 0 else p
         written = " ".join(["G64"] + [w.text for k, w in sorted(words.items()) if k in "PQ" and w.text])
+        self._g64(words["P"].value if "P" in words else None, words["Q"].value if "Q" in words else None, written)
+
+    def _g64(self, p_number: Fraction | None, q_number: Fraction | None, written: str) -> None:
+        """G64 with LinuxCNC's P and Q numbers as written (program units; None: absent)."""
+        unit = INCH if self.inch else Fraction(1)
+        p = p_number * unit if p_number is not None and p_number >= 0 else None
+        q = q_number * unit if q_number is not None and q_number >= 0 else p
         self.set_path_mode(PathMode(True, p if p else None, q or _ZERO, "linuxcnc", written))
+        self.path_words = (640, p_number, q_number)
 
     def emit(self, kind: SegmentKind, end: list[Fraction], *, feed: bool = False, derived: str = "",
               plane: Plane | None = None, clockwise: bool = False, centre: Any = None, radius: Any = None,
@@ -1092,6 +1134,7 @@ class Interpreter:
             elif self.tool_selected != 0:
                 self.spindle_slot_stale = False
             self.tool_in_spindle = self.tool_selected
+            self.spindle_changed()
             self.spindle_dir = 0  # LinuxCNC convert_tool_change stops the spindle (TOOL_CHANGE_WITH_SPINDLE_ON off)
         for k, d in ((3, 1), (4, -1), (5, 0), (19, 0)):
             if k in mset:
@@ -1101,6 +1144,7 @@ class Interpreter:
             if q is None or q.value.denominator != 1 or q.value < 0:
                 raise self.error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
             self.tool_in_spindle = int(q.value)
+            self.spindle_changed()
             self.spindle_slot_stale = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
         if mgroups.get(10) is not None:
             # LinuxCNC convert_m: M70-M73 after F, S, T and M6 of the block, before its G codes and motion
@@ -1532,7 +1576,7 @@ class Interpreter:
         applied (#5210), the lathe diameter mode and the spindle (direction and S)."""
         return (self.inch, self.absolute, self.arc_absolute, self.plane, self.wcs, self.feed_mode,
                 self.feed, self.retract_r, self._comp_key(), self.tlo != 0, self.g92_applied,
-                bool(getattr(self, "diameter_mode", False)), self.spindle_dir, self.spindle_speed)
+                bool(getattr(self, "diameter_mode", False)), self.spindle_dir, self.spindle_speed, self.path_words)
 
     def _comp_key(self) -> tuple:
         return (self.comp_on, None if self._comp is None else self._comp.side)
@@ -1560,7 +1604,7 @@ class Interpreter:
         only whether one was applied) or ``G49``, the work offset, the distance modes, the retract mode and
         ``G92.3``/``G92.2``.  The motion mode is not restored."""
         (inch, absolute, arc_absolute, plane, wcs, feed_mode, feed, retract_r, comp, tlo_on, g92_on,
-         diameter, spindle_dir, spindle_speed) = snap
+         diameter, spindle_dir, spindle_speed, path_words) = snap
         old_feed, old_speed, old_mode = self.feed, self.spindle_speed, self.feed_mode
         if inch != self.inch:
             self._set_units(inch)
@@ -1608,6 +1652,7 @@ class Interpreter:
                 self.dep_g92 = [{} for _ in range(self.naxes)]
             self.g92_applied = g92_on
         self.recompute_offsets()
+        self._restore_path_mode(path_words)
 
     def _tool_length(self, g: tuple[int, Word], words: dict[str, Word]) -> None:
         k, w = g

@@ -548,16 +548,23 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
 
     from ..prover.blend import CornerCheck
     from ..prover.core import prove
+    from ..prover.solids import SpindleToolCheck
 
     # the corners the control may round (specs/path-modes.md), proved as the motion passes
     corners = CornerCheck(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
                           options.run_limits())
-    result = prove(corners.watch(with_text(run)), machine, options, file=run.file, profile=profile)
+    stream = corners.watch(with_text(run))
+    spindle = SpindleToolCheck(run.interpreter.spindle_tools) if SpindleToolCheck.wanted(machine) else None
+    if spindle is not None:  # the tool the program put in the spindle against the assembly the solids take
+        stream = spindle.watch(stream)
+    result = prove(stream, machine, options, file=run.file, profile=profile)
     if not result.interrupted:
         upto = max(v.block for v in result.violations) if result.truncated and result.violations else None
         result = replace(result, reasons=result.reasons + tuple(corners.finish((v.block for v in result.violations),
                                                                               upto)))
         result = replace(result, reasons=result.reasons + _solids_blend_reasons(machine, run))
+        if spindle is not None:
+            result = replace(result, reasons=result.reasons + spindle.reasons())
     if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)
         report(last_reported[0])
     # fill the source text of violations and reasons (column chunks carry only line numbers)

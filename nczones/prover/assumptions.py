@@ -66,7 +66,8 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "tip zone that cannot be enlarged so makes the verdict unknown.",
     "Tool solids (a machine file with [[tools]] or [spindle]): every part is the cylinder the machine "
     "file gives, enclosing the real cutter, shank, holder or spindle nose; the tool in the spindle is the"
-    " [[tools]] entry numbered like the active tool length register (G43 H<n>: tool n) and its tip is at "
+    " [[tools]] entry numbered like the active tool length register (G43 H<n>: tool n; a motion after the "
+    "program's own M6 or M61 put another tool in the spindle is unknown) and its tip is at "
     "machine Z minus the active tool length; fixtures are where the machine file puts them (forbid box "
     "zones included).",
     "Lathe tool solids (a lathe's [[tools]] parts): the tool lies on centre height (its tip and its "

@@ -33,8 +33,10 @@ from typing import Any
 from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
-from ..motion import MotionChunk, PathMode, Segment, SegmentKind, SplineCurve
+from ..motion import MotionChunk, PathMode, Segment, SegmentKind, SplineCurve, tip_offset
+from ..zones import ZonePoint, tip_shifted
 from .exact import box_fits
+from .hull2d import convex_hull, hull_fits
 from .result import ParamRange, Reason
 
 __all__ = ["BLEND_CODE", "CornerCheck"]
@@ -63,6 +65,12 @@ NAIVE_CHAIN = 101
 
 F0 = Fraction(0)
 Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
+
+
+#: the most points of a Fanuc run on a two-axis machine kept for its convex hull (beyond: its box decides)
+HULL_POINTS = 100_000
+#: the tip offsets of motions without any (CornerCheck._shifts)
+_NO_SHIFT: frozenset[tuple[tuple[str, Fraction], ...]] = frozenset({()})
 
 
 def _range_widening(ranges: Sequence[ParamRange], axes: Sequence[str], tool_axis: str | None) -> dict[str, Fraction]:
@@ -132,8 +140,19 @@ class CornerCheck:
         self.prev_stop = True  # no corner before the first motion
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
         self._seen: set[str] = set()
-        self._blocks: list[tuple[int, int]] = []  # the blocks of each reason's two motions
+        self._blocks: list[tuple[int, int] | range] = []  # the blocks of each reason's two motions (a Fanuc run: all)
         self.naive = _NaiveWindows()  # G64 Q without P: corners proved over the merging windows
+        # a lathe's tool offsets off the tool axis (TipOffset): tip zones see machine - offset, as the per-motion
+        # proof does (Prover._tip_prover); the offsets of the motions a test is about, and the moved zone sets
+        self.has_tip_zones = any(z.point is ZonePoint.TIP for z in self.zones)
+        self._shifts: frozenset[tuple[tuple[str, Fraction], ...]] = _NO_SHIFT
+        self._unshifted = [self.allowed]
+        self._shifted: dict[tuple[tuple[str, Fraction], ...], Any] = {(): self.allowed}
+        self._stretch_shifts: set[tuple[tuple[str, Fraction], ...]] = set()
+        # a two-axis machine (a lathe): the corners of the run's motion boxes, whose convex hull is proved
+        # where the run's box does not fit (nczones.prover.hull2d)
+        self._stretch_pts: list[tuple[Fraction, ...]] | None = [] if len(self.axes) == 2 else None
+        self._last_extra: tuple[Any, tuple[tuple[str, Fraction], ...]] = ((), ())
         self._naive_modes = 0  # the length of the mode table when it was last searched for G64 Q without P
 
     # ------------------------------------------------------------------ the stream
@@ -207,20 +226,28 @@ class CornerCheck:
                 self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
             elif self.stretch is None:
                 self.stretch = [list(box[0]), list(box[1]), seg, seg]
+                self._stretch_shifts = {self._shift(seg)}
+                self._hull_add(seg, box, True)
             else:
                 lo, hi = self.stretch[0], self.stretch[1]
                 for i in range(len(lo)):
                     lo[i] = min(lo[i], box[0][i])
                     hi[i] = max(hi[i], box[1][i])
                 self.stretch[3] = seg
+                self._stretch_shifts.add(self._shift(seg))
+                self._hull_add(seg, box, False)
         elif self.stretch is not None:
             self.stretch[3] = seg  # the motion that ends the run with an exact stop still belongs to it
+            self._stretch_shifts.add(self._shift(seg))
             lo, hi = self.stretch[0], self.stretch[1]
             box = _hull_box(seg)
             if box is not None:
                 for i in range(len(lo)):
                     lo[i] = min(lo[i], box[0][i])
                     hi[i] = max(hi[i], box[1][i])
+                self._hull_add(seg, box, False)
+            else:
+                self._stretch_pts = None  # a motion without a box: the run's box decides
             self._close_stretch()
 
     def _queue(self, a: Segment, b: Segment, mode: PathMode) -> None:
@@ -321,6 +348,7 @@ class CornerCheck:
                         cand_lo.append(min(box[0][i] for box in boxes))
                         cand_hi.append(max(box[1][i] for box in boxes))
                     lo[i], hi[i] = min(cand_lo), max(cand_hi)
+                self._shifts = frozenset(self._shift(x) for a, b, *_r in group for x in (a, b))
                 if self._fits((tuple(lo), tuple(hi)), (t0,), F0):
                     self.corners += len(group)
                     continue
@@ -370,6 +398,7 @@ class CornerCheck:
         c = a.end
         region: Box | None = None
         tls = (a.tool_length, b.tool_length)
+        self._shifts = frozenset((self._shift(a), self._shift(b)))
         if b.start == c:
             for exact in (False, True):
                 region = self.naive.region(ia, c, exact)
@@ -386,15 +415,55 @@ class CornerCheck:
             return
         self.corners += 1
         lo, hi = tuple(st[0]), tuple(st[1])
-        if not self._fits((lo, hi), (st[2].tool_length, st[3].tool_length), F0):
+        self._shifts = frozenset(self._stretch_shifts or {()})
+        tls = (st[2].tool_length, st[3].tool_length)
+        if not self._fits((lo, hi), tls, F0) and not self._hull_fits(tls):
+            n = len(self.reasons)
             self._reason(st[2], st[3], self.mode_of(st[2].block), (lo, hi),
                          "a Fanuc control in cutting mode rounds corners by acc/dec after interpolation, which keeps "
                          "the path inside the convex hull of the motions between exact stops; give [machine] "
                          "path_tolerance (the control's bound) or program G61/G09")
+            if len(self.reasons) > n:  # the run's every block: a violation inside it makes the reason redundant
+                self._blocks[-1] = range(st[2].block, st[3].block + 1)
+
+    def _hull_add(self, seg: Segment, box: Box, first: bool) -> None:
+        """Keep the ends of a straight motion (the segment's own tuples: nothing is computed unless the run's box
+        does not fit), or the corners of another's box, for the run's convex hull (two-axis machines); a run of
+        more than HULL_POINTS points keeps its box only."""
+        if first:
+            self._stretch_pts = [] if len(self.axes) == 2 else None
+        pts = self._stretch_pts
+        if pts is None:
+            return
+        if _linear(seg, self.dogleg):
+            pts.append(seg.start)
+            pts.append(seg.end)
+        else:
+            (x0, y0), (x1, y1) = box
+            pts.extend(((x0, y0), (x0, y1), (x1, y0), (x1, y1)))
+        if len(pts) > HULL_POINTS:
+            self._stretch_pts = None
+
+    def _hull_fits(self, tls: tuple[Fraction, Fraction]) -> bool:
+        """The run's convex hull (not its box) fits, on a two-axis machine (specs/path-modes.md §3)."""
+        kept = self._stretch_pts
+        self._stretch_pts = [] if len(self.axes) == 2 else None
+        if not kept:
+            return False
+        pts = [(p[0], p[1]) for p in kept]
+        w = self.widen_axis
+        wx, wy = w[self.axes[0]], w[self.axes[1]]
+        hull = convex_hull((x + sx * wx, y + sy * wy) for x, y in convex_hull(pts) for sx in (-1, 1)
+                           for sy in (-1, 1)) if wx or wy else convex_hull(pts)
+        tool_axis = self.allowed.tool_axis
+        axes = (self.axes[0], self.axes[1])
+        return all(hull_fits(hull, axes, allowed, self.margin, {tool_axis: tl} if tool_axis and tl else {})
+                   for allowed in self._allowed_sets() for tl in set(tls))
 
     def _corner(self, a: Segment, b: Segment, mode: PathMode) -> None:
         """Prove the blend between motions ``a`` and ``b`` (``mode``: the one ``a`` runs in)."""
         t0 = time.perf_counter()
+        self._shifts = frozenset((self._shift(a), self._shift(b)))
         try:
             self._prove_corner(a, b, mode)
         finally:
@@ -510,13 +579,37 @@ class CornerCheck:
             return True
         return self.limits is not None and self.limits.budget_spent()
 
-    def _fits(self, box: Box, tls: Iterable[Fraction], extra: Fraction, zones: Any = None) -> bool:
+    def _fits(self, box: Box, tls: Iterable[Fraction], extra: Fraction, zone: int | None = None) -> bool:
         self.tests += 1
         w = self.widen_axis
         lo = {a: x - w[a] for a, x in zip(self.axes, box[0])}
         hi = {a: x + w[a] for a, x in zip(self.axes, box[1])}
-        return all(box_fits(self.allowed, lo, hi, self.margin + extra, tl, self.zones if zones is None else zones)
-                   for tl in set(tls))
+        return all(box_fits(allowed, lo, hi, self.margin + extra, tl,
+                            allowed.zones if zone is None else (allowed.zones[zone],))
+                   for allowed in self._allowed_sets() for tl in set(tls))
+
+    def _shift(self, seg: Segment) -> tuple[tuple[str, Fraction], ...]:
+        """``seg``'s tool offsets off the tool axis, as a key (empty: none, or no tip zone to move)."""
+        extra = seg.extra
+        if not extra or not self.has_tip_zones:
+            return ()
+        if extra is self._last_extra[0]:  # the interpreter shares one payload tuple while the offsets hold
+            return self._last_extra[1]
+        key = tuple(sorted(tip_offset(extra).items()))
+        self._last_extra = (extra, key)
+        return key
+
+    def _allowed_sets(self) -> list[Any]:
+        """The allowed sets a box is tested against: the tip zones moved by each offset of the motions in play."""
+        if self._shifts == _NO_SHIFT:
+            return self._unshifted
+        out = []
+        for key in self._shifts:
+            got = self._shifted.get(key)
+            if got is None:
+                got = self._shifted[key] = tip_shifted(self.allowed, dict(key))
+            out.append(got)
+        return out
 
     # ------------------------------------------------------------------ reasons
     def _reason(self, a: Segment, b: Segment, mode: PathMode, box: Box | None, why: str) -> None:
@@ -536,7 +629,7 @@ class CornerCheck:
                 f"{n}{format_decimal(lo, 4)}" if lo == hi else f"{n}{format_decimal(lo, 4)}..{format_decimal(hi, 4)}"
                 for n, lo, hi in zip(self.axes, box[0], box[1]))
             tls = (a.tool_length, b.tool_length)
-            hit = [z for z in self.zones if not self._fits(box, tls, F0, zones=(z,))][:3]
+            hit = [z for k, z in enumerate(self.zones) if not self._fits(box, tls, F0, zone=k)][:3]
             if hit:
                 zone = ", " + ", ".join(f"{'inside' if z.forbid else 'outside'} `{z.name}`" for z in hit)
         msg = f"{BLEND_CODE}: the blend between {where} ({mode.code}){text}{zone}: {why}"

@@ -58,7 +58,7 @@ from .solids_screen import Screened, group_by_tool, needs_exact, needs_exact_col
 if TYPE_CHECKING:
     from .options import VerifyOptions
 
-__all__ = ["SolidsChecker"]
+__all__ = ["SolidsChecker", "SpindleToolCheck"]
 
 F0 = Fraction(0)
 F1 = Fraction(1)
@@ -606,3 +606,57 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     extra["clearance"] = tuple((part, fx, c, line) for (part, fx), (c, line) in sorted(checker.clearance.items()))
     return replace(result, verdict=verdict, violations=violations, reasons=reasons, notes=result.notes + notes,
                    extra=extra)
+
+
+class SpindleToolCheck:
+    """The tool solids take the ``[[tools]]`` entry numbered like the active tool length register (``G43 H<n>``,
+    specs/machine-file.md "Which tool"), at that register's length.  Where the program's own ``M6`` (or ``M61``)
+    has put another tool in the spindle while that register stays active (``T2 M6`` with no ``G43 H2`` after
+    it, or ``T1 M6`` / ``G43 H2``), the machine moves tool T's solids at another tip height than the proof: the
+    motion is ``unknown`` (``VF211``), never proved with the wrong tool.
+
+    ``spindle_tools`` is the interpreter's live table of (first block, tool in the spindle); ``watch`` passes the
+    motion through unchanged and looks at the segments only once the program has changed a tool."""
+
+    def __init__(self, spindle_tools: list[tuple[int, int]]) -> None:
+        self.table = spindle_tools
+        self.reason: Reason | None = None
+
+    @staticmethod
+    def wanted(machine: Machine) -> bool:
+        """Does ``machine`` have tool assemblies whose choice the check guards?"""
+        from ..solids import machine_solids
+
+        solids = machine_solids(machine)
+        return solids is not None and bool(solids.tools) and bool(solids.fixtures)
+
+    def watch(self, items: Iterable[Any]) -> Iterator[Any]:
+        from ..motion import segments_of
+
+        for item in items:
+            if self.reason is None and self.table:
+                for seg in segments_of(item):
+                    if self._check(seg):
+                        break
+            yield item
+
+    def _check(self, seg: Segment) -> bool:
+        from bisect import bisect_right
+
+        from ..lathe_solids import turret_tool
+
+        reg = seg.tool_register
+        if reg is None or seg.derived.startswith("M6") or turret_tool(seg.extra) is not None:
+            return False  # G49 is VF211 already; a tool change's own moves carry the old tool; a Fanuc turret's T
+        k = bisect_right(self.table, seg.block, key=lambda e: e[0]) - 1
+        tool = self.table[k][1] if k >= 0 else 0
+        if tool in (0, reg):
+            return False
+        self.reason = Reason(f"tool {tool} is in the spindle (M6) while the active tool length is H{reg}: the tool "
+                             f"solids are those of [[tools]] number {reg} at H{reg}'s length, not tool {tool}'s, so "
+                             f"they were not proved for the tool the machine holds (give G43 H{tool} after the tool "
+                             "change)", seg.span, seg.block, "VF211")
+        return True
+
+    def reasons(self) -> tuple[Reason, ...]:
+        return () if self.reason is None else (self.reason,)

@@ -388,6 +388,7 @@ class FanucInterpreter(Interpreter):
             self.tool_selected = int(t)
         if 6 in mset:
             self.tool_in_spindle = self.tool_selected
+            self.spindle_changed()
         if "D" in words:
             self.last["D"] = words["D"].value
         self._record_block(block, mcodes, mset)

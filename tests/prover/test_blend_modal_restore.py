@@ -1,0 +1,118 @@
+"""M70-M73 save and restore LinuxCNC's path control mode (G61 / G61.1 / G64 P Q), and the corners see it.
+
+LinuxCNC's ``save_settings`` keeps the path control mode with its tolerances, and ``restore_settings`` (M72, and
+the return of a subroutine that ran M73) writes ``G61``, ``G61.1`` or ``G64 P Q`` back when the saved numbers
+differ from the current ones, after restoring the units.  rs274 2.9.0~pre1 (``rs274 -g``) shows it: after
+``M70 / G61 / M72`` it prints ``SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, 0.000000)``; after ``G64 P1 / M70 /
+G64 P0.001 / M72`` it prints ``SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, 1.000000)``; and after ``G21 G64 P1 /
+G20 / M70 / G61 / M72`` it prints ``CONTINUOUS, 1.000000`` under ``USE_LENGTH_UNITS(CANON_UNITS_INCHES)`` (the
+canonical layer reads it in inches: 25.4 mm).  nczones forgot the path mode on restore, so a program that
+switched to G61 inside an M70/M72 pair or an M73 subroutine had its later corners proved on the exact path:
+a wrong ``safe``.  The expected modes here are read from rs274's own log (:func:`_rs274_modes`), never from
+nczones; the verdicts from the enclosure of specs/path-modes.md.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+from fractions import Fraction
+
+import pytest
+
+from nczones.gcode import interpret_text
+from nczones.prover import verify_text
+from nczones.prover.blend import BLEND_CODE
+from tests.prover.test_blending import machine
+
+INCH = Fraction(254, 10)
+L_CORNER = "G1 F100 X100 Y0\nG1 X100 Y100\n"  # the issue's L corner around `clamp` X95..99 Y1..5
+
+# Programs whose last motions (the L corner) run in a restored G64 (no tolerance, or a wide one): the corner
+# may pass the clamp 1 mm inside it (specs/path-modes.md §2: the half-motion parallelogram; with P2, Q = P,
+# up to 4 mm from the path), so the verdict is `unknown` (VF208), never `safe`.
+RESTORED = {
+    "m70-g61-m72": "M70\nG61\nM72\n" + L_CORNER,
+    "m70-g61.1-m72": "M70\nG61.1\nM72\n" + L_CORNER,
+    "m73-subroutine": "o100 sub\nM73\nG61\no100 endsub\no100 call\n" + L_CORNER,
+    "m72-tolerance": "G64 P2\nM70\nG64 P0.001\nM72\n" + L_CORNER,
+    "m73-tolerance": "G64 P2\no100 sub\nM73\nG64 P0.001\no100 endsub\no100 call\n" + L_CORNER,
+    "m72-in-inch": "G21 G64 P1\nG20\nM70\nG61\nM72\nG21\n" + L_CORNER,
+}
+
+# No restore: the G61 of a subroutine without M73 stays (rs274: no SET_MOTION_CONTROL_MODE on return), M71
+# invalidates the M73 context; the corner is on the exact path and clears the clamp by 1 mm.
+KEPT = {
+    "subroutine-without-m73": "o100 sub\nG61\no100 endsub\no100 call\n" + L_CORNER,
+    "m73-then-m71": "o100 sub\nM73\nG61\nM71\no100 endsub\no100 call\n" + L_CORNER,
+}
+
+
+def _rs274_modes(program: str, tmp_path) -> list[tuple[bool, Fraction | None]]:
+    """(blend, tolerance in mm) in force at each STRAIGHT_FEED of rs274's log, read from its
+    ``USE_LENGTH_UNITS`` and ``SET_MOTION_CONTROL_MODE`` calls (the canonical layer converts the tolerance with
+    the units in force, ``FROM_PROG_LEN``)."""
+    from tests.tools.rs274_diff import FINDING_SETUP, run_rs274
+
+    _moves, error, log = run_rs274(program + "M2\n", FINDING_SETUP, tmp_path, timeout=20)
+    assert error is None, error
+    unit, mode, out = Fraction(1), (True, None), []
+    for line in log.splitlines():
+        if "USE_LENGTH_UNITS" in line:
+            unit = INCH if "INCHES" in line else Fraction(1)
+        elif m := re.search(r"SET_MOTION_CONTROL_MODE\((\w+)(?:, ([0-9.]+))?\)", line):
+            tol = Fraction(m.group(2)) * unit if m.group(2) else None
+            mode = (m.group(1) == "CANON_CONTINUOUS", tol or None)
+        elif "STRAIGHT_FEED" in line:
+            out.append(mode)
+    return out
+
+
+def _nczones_modes(program: str) -> list[tuple[bool, Fraction | None]]:
+    run = interpret_text(program, machine())
+    segs = list(run.segments())
+    table = run.interpreter.path_modes
+    modes = []
+    for s in segs:
+        mode = [m for first, m in table if first <= s.block][-1]
+        modes.append((mode.blend, mode.tolerance if mode.blend else None))
+    return modes
+
+
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC's rs274 is not installed")
+@pytest.mark.parametrize("name", sorted({**RESTORED, **KEPT}))
+def test_the_path_mode_after_a_restore_is_rs274s(name, tmp_path):
+    program = {**RESTORED, **KEPT}[name]
+    assert _nczones_modes(program) == _rs274_modes(program, tmp_path)
+
+
+@pytest.mark.parametrize("name", sorted(RESTORED))
+def test_a_corner_in_a_restored_g64_is_not_safe(name):
+    r = verify_text(RESTORED[name], machine())
+    assert r.verdict.label == "unknown" and not r.violations
+    assert [x for x in r.reasons if x.code == BLEND_CODE]
+
+
+@pytest.mark.parametrize("name", sorted(KEPT))
+def test_a_corner_in_a_kept_g61_is_safe(name):
+    assert verify_text(KEPT[name], machine()).verdict.label == "safe"
+
+
+# The same restore before > 512 motions (the vectorized tier proves the corners of column chunks) and with
+# '#' in the text (the double pass): the L corner comes last, after 600 short moves far from the clamp.
+FILLER = "".join(f"G1 X{10 + i % 7} Y{20 + i % 5}\n" for i in range(600))
+
+
+@pytest.mark.parametrize("name", ["m70-g61-m72", "m73-subroutine", "m72-tolerance"])
+@pytest.mark.parametrize("lane", ["vectorized", "double pass"])
+def test_the_restore_holds_in_every_lane(name, lane):
+    head, _, tail = RESTORED[name].partition(L_CORNER)
+    assert not tail
+    program = head + "F100\n" + FILLER + "G1 X0 Y0\n" + ("#1 = 100\nG1 X#1 Y0\nG1 X#1 Y100\n" if lane == "double pass"
+                                          else "G1 X100 Y0\nG1 X100 Y100\n")
+    r = verify_text(program, machine())
+    assert r.verdict.label == "unknown" and not r.violations
+    assert [x for x in r.reasons if x.code == BLEND_CODE]
+    # the same program kept in G61 (no M72 / M73 restore) is safe: the restore, not the filler, decides
+    assert verify_text(program.replace("M72\n", "").replace("M73\n", "").replace("G64 P2\n", ""),
+                       machine()).verdict.label == "safe"
