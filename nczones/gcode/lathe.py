@@ -104,6 +104,13 @@ class LatheInterpreter(Interpreter):
         words: dict[str, Word] = {}
         rest: list[Word] = []
         for w in block.words:
+            if w.letter in "UW" and w.letter not in self.index:
+                # LinuxCNC reads the cycle's block as any block: a letter of an axis the machine lacks is refused
+                # ("Bad character 'u' used"); only the profile's blocks read U, W, A, C whatever the axes
+                # (interp_g7x.cc switch_settings)
+                raise self.error("GC203", f"axis word {w.text or w.letter} names axis {w.letter}, which this machine "
+                                  f"does not have (axes: {', '.join(self.axes)}): LinuxCNC refuses it in the block of "
+                                  f"{name} too (its error: Bad character '{w.letter.lower()}' used)", w)
             if w.letter in _CYCLE_LETTERS:
                 if w.letter in words:
                     raise self.error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
@@ -119,6 +126,11 @@ class LatheInterpreter(Interpreter):
         if rest:  # F, S, T, M and modal G codes act first (LinuxCNC's order of execution: motion comes late)
             self._execute_general(Block(tuple(rest), block.span, block.index, block.number, block.messages))
         if self.unsupported or self.ended:
+            return
+        if any(k in words for k in "UW"):
+            self.unknown(name, f"{name}: U or W in the cycle's block on a machine with that axis: LinuxCNC's rapid "
+                          "to the start point moves the axis as well as taking it as the allowance (not modelled)",
+                          words.get("U") or words["W"])
             return
         if "Q" not in words:
             raise self.error("GC208", f"{name} needs a Q word: the number of the profile's subroutine", gw)
@@ -173,9 +185,9 @@ class LatheInterpreter(Interpreter):
                 moves = g7x.g70(pieces, start, x=float(x0), z=float(z0), d=fl.get("D", 0.0), e=fl.get("E", 0.0),
                                 passes=p, guard=self.pass_guard(name))
             else:
-                moves = g7x.g71(pieces, start, cycle=sub, x=float(x0), z=float(z0), u=fl.get("U", 0.0),
-                                w=fl.get("W", 0.0), d=fl.get("D", 0.0), i=fl.get("I", 1.0), r=fl.get("R", 0.5),
-                                facing=code == 72, guard=self.pass_guard(name))
+                moves = self._roughing(name, pieces, start, sub, code == 72, fl, gw)
+                if moves is None:
+                    return
         except PassBound as e:
             self.unknown(e.code, e.reason, gw)
             return
@@ -184,6 +196,24 @@ class LatheInterpreter(Interpreter):
                           gw)
             return
         self._emit_g7x(name, moves, iz, ix, unit)
+
+    def _roughing(self, name: str, pieces: list[g7x.Piece], start: complex, sub: int, facing: bool,
+                  fl: dict[str, float], gw: Word) -> list[g7x.Out] | None:
+        """G71/G72's moves as the installed LinuxCNC 2.9.0~pre1 makes them, when the 2.9 versions after it make the
+        same; None (after an unknown) where they differ: the machine's version decides, the program does not say."""
+        kw = dict(cycle=sub, x=start.imag, z=start.real, u=fl.get("U", 0.0), w=fl.get("W", 0.0), d=fl.get("D", 0.0),
+                  i=fl.get("I", 1.0), r=fl.get("R", 0.5), facing=facing)
+        moves = g7x.g71(pieces, start, guard=self.pass_guard(name), **kw)  # type: ignore[arg-type]
+        try:
+            later = g7x.g71(pieces, start, later=True, **kw)  # type: ignore[arg-type]
+        except g7x.G7xError:
+            later = None
+        if later != moves:
+            self.unknown(name, f"{name}: LinuxCNC 2.9.0~pre1 (the reference nczones follows) and the later 2.9 "
+                          "versions cut this profile differently (the closing straight and pocket loop of "
+                          "interp_g7x.cc changed after 2.9.0~pre1): the machine's version decides", gw)
+            return None
+        return moves
 
     def _profile(self, name: str, shape: tuple[Block, ...], start: complex, gw: Word) -> list[g7x.Piece] | None:
         """The profile's pieces as ``convert_g7x`` reads them: the first from the cycle's start point; X halved in
@@ -272,15 +302,20 @@ class LatheInterpreter(Interpreter):
             d = complex(0.0 * s, 1.0 * s) * chord
             return centre + d if motion == 30 else centre - d
         if "I" not in ws and "K" not in ws:
-            raise self.error("GC208", f"{name}: either I or K must be present for an arc of the profile", None)
+            raise self.error("GC208", f"{name}: either I or K must be present for an arc of the profile (LinuxCNC's "
+                             "error, on this line)", next(iter(ws.values()), None))
         ci = float(ws["I"].value) if "I" in ws else 0.0
         ck = float(ws["K"].value) if "K" in ws else 0.0
         centre = complex(ck, ci) if self.arc_absolute else complex(ck, ci) + at
         r0, r1 = abs(at - centre), abs(end - centre)
         tol = 0.0002 if self.inch else 0.002  # LinuxCNC's RADIUS_TOLERANCE_INCH / _MM (arc_data_ijk)
         if abs(r0 - r1) > tol and abs(r0 - r1) > 0.001 * max(r0, r1):
-            raise self.error("GC301", f"{name}: an arc of the profile ends off its circle: radius {r0:.6g} at its "
-                              f"start, {r1:.6g} at its end", ws.get("I") or ws.get("K"))
+            # 2.9.0~pre1 takes the arc as written (no check); LinuxCNC after it refuses it (arc_data_ijk, commit
+            # b2d2c2d1): the version decides, and the moves of an arc off its circle are not modelled
+            self.unknown(name, f"{name}: an arc of the profile ends off its circle (radius {r0:.6g} at its start, "
+                          f"{r1:.6g} at its end): LinuxCNC 2.9.0~pre1 cuts it unchecked, later versions refuse it",
+                          ws.get("I") or ws.get("K") or gw)
+            return None
         return centre
 
     def _emit_g7x(self, name: str, moves: list[g7x.Out], iz: int, ix: int, unit: Fraction) -> None:
