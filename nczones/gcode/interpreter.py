@@ -949,9 +949,7 @@ class Interpreter:
                     raise self.error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at most one decimal", w)
                 gcodes.append((k, w))
             elif letter == "M":
-                if w.value.denominator != 1:
-                    raise self.error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
-                mcodes.append((w.value.numerator, w))
+                mcodes.append((self._m_number(w), w))
             else:
                 if letter in words:
                     raise self.error("GC204", f"two {letter} words in one block ({words[letter].text or letter} and {w.text or letter}); a letter may appear once", w)
@@ -967,6 +965,26 @@ class Interpreter:
                         )
                     axis_words.append((i, w))
         return gcodes, mcodes, words, axis_words
+
+    def _m_number(self, w: Word) -> int:
+        """An M word's number.  LinuxCNC reads it as an integer within 0.0001 (``read_m`` ->
+        ``read_integer_value``: ``M[3.00001]`` is M3, ``M[3.0001]`` "Non integer value for integer") and refuses a
+        negative one and one above 199 (rs274 2.9.0~pre1: "Negative m code used", "M-code greater than 199")."""
+        if self.dialect != "linuxcnc":
+            if w.value.denominator != 1:
+                raise self.error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
+            return w.value.numerator
+        n = lcnc_integer(w.value)
+        if n is None:
+            raise self.error("GC202", f"M code {w.text or w.value} is not an integer: LinuxCNC reads an M number "
+                             f"within 0.0001 of an integer (its error: Non integer value for integer)", w)
+        if n < 0:
+            raise self.error("GC202", f"negative M code {w.text or w.value} (LinuxCNC's error: Negative m code used)",
+                             w)
+        if n > 199:
+            raise self.error("GC202", f"M code {w.text or w.value} is M{n}, above 199: LinuxCNC's M codes are 0-199 "
+                             "(its error: M-code greater than 199)", w)
+        return n
 
     def _execute_general(self, block: Block) -> None:
         """:meth:`execute` for a block the plain-move lane did not take."""
