@@ -101,23 +101,7 @@ class LatheInterpreter(Interpreter):
     def _g7x_block(self, block: Block, key: int, gw: Word) -> None:
         code, sub = _G7X_KEYS[key]
         name = f"G{code}" + (f".{sub}" if sub else "")
-        words: dict[str, Word] = {}
-        rest: list[Word] = []
-        for w in block.words:
-            if w.letter in "UW" and w.letter not in self.index:
-                # LinuxCNC reads the cycle's block as any block: a letter of an axis the machine lacks is refused
-                # ("Bad character 'u' used"); only the profile's blocks read U, W, A, C whatever the axes
-                # (interp_g7x.cc switch_settings)
-                raise self.error("GC203", f"axis word {w.text or w.letter} names axis {w.letter}, which this machine "
-                                  f"does not have (axes: {', '.join(self.axes)}): LinuxCNC refuses it in the block of "
-                                  f"{name} too (its error: Bad character '{w.letter.lower()}' used)", w)
-            if w.letter in _CYCLE_LETTERS:
-                if w.letter in words:
-                    raise self.error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
-                                      f"{w.text}); a letter may appear once", w)
-                words[w.letter] = w
-            elif w is not gw:
-                rest.append(w)
+        words, rest = self._cycle_words(block, gw, name)
         for w in rest:
             if w.letter not in "GMFSTN" or (w.letter == "G" and gkey(w.value) in (0, 10, 20, 30, 280, 300, 920, 100,
                                                                                     520, 530, 800)):
@@ -127,16 +111,16 @@ class LatheInterpreter(Interpreter):
             self._execute_general(Block(tuple(rest), block.span, block.index, block.number, block.messages))
         if self.unsupported or self.ended:
             return
-        if any(k in words for k in "UW"):
-            self.unknown(name, f"{name}: U or W in the cycle's block on a machine with that axis: LinuxCNC's rapid "
-                          "to the start point moves the axis as well as taking it as the allowance (not modelled)",
-                          words.get("U") or words["W"])
-            return
         if "Q" not in words:
             raise self.error("GC208", f"{name} needs a Q word: the number of the profile's subroutine", gw)
         if not isinstance(block, ShapeBlock):
             self.unknown(name, f"{name}: the profile subroutine was not collected (the cycle block is built by a "
                           "path of the language layer that does not read profiles, e.g. a line with parameters)", gw)
+            return
+        if any(k in words for k in "UW"):
+            self.unknown(name, f"{name}: U or W in the cycle's block on a machine with that axis: LinuxCNC's rapid "
+                          "to the start point moves the axis as well as taking it as the allowance (not modelled)",
+                          words.get("U") or words["W"])
             return
         if self.plane is not Plane.XZ:
             raise self.error("GC308", f"{name} can only be used in the XZ plane (G18) (LinuxCNC's error)", gw)
@@ -196,6 +180,26 @@ class LatheInterpreter(Interpreter):
                           gw)
             return
         self._emit_g7x(name, moves, iz, ix, unit)
+
+    def _cycle_words(self, block: Block, gw: Word, name: str) -> tuple[dict[str, Word], list[Word]]:
+        """The cycle's own words by letter and the block's other words.  LinuxCNC reads the cycle's block as any
+        block: U or W of an axis the machine lacks is refused ("Bad character 'u' used"); only the profile's
+        blocks read U, W, A, C whatever the axes (interp_g7x.cc switch_settings)."""
+        words: dict[str, Word] = {}
+        rest: list[Word] = []
+        for w in block.words:
+            if w.letter in "UW" and w.letter not in self.index:
+                raise self.error("GC203", f"axis word {w.text or w.letter} names axis {w.letter}, which this machine "
+                                  f"does not have (axes: {', '.join(self.axes)}): LinuxCNC refuses it in the block of "
+                                  f"{name} too (its error: Bad character '{w.letter.lower()}' used)", w)
+            if w.letter in _CYCLE_LETTERS:
+                if w.letter in words:
+                    raise self.error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
+                                      f"{w.text}); a letter may appear once", w)
+                words[w.letter] = w
+            elif w is not gw:
+                rest.append(w)
+        return words, rest
 
     def _roughing(self, name: str, pieces: list[g7x.Piece], start: complex, sub: int, facing: bool,
                   fl: dict[str, float], gw: Word) -> list[g7x.Out] | None:
