@@ -157,29 +157,47 @@ class LatheInterpreter(Interpreter):
         pieces = self._profile(name, block.shape, complex(float(z0), float(x0)), gw)
         if pieces is None:
             return
-        if len(pieces) <= 1:
-            return  # LinuxCNC: a profile of one piece or none does nothing more
+        start = complex(float(z0), float(x0))
+        if len(pieces) <= 1:  # LinuxCNC: a profile of one piece or none does nothing more
+            self._no_move(name, pieces, start, gw)
+            return
+        moves = self._cycle_moves(name, code, sub, pieces, start, words, gw)
+        if moves is not None:
+            self._emit_g7x(name, moves, iz, ix, unit)
+
+    def _cycle_moves(self, name: str, code: int, sub: int, pieces: list[g7x.Piece], start: complex,
+                     words: dict[str, Word], gw: Word) -> list[g7x.Out] | None:
+        """The cycle's moves; None (after an unknown) where nczones does not follow LinuxCNC."""
         fl = {k: float(words[k].value) for k in "DEIRUW" if k in words}
         p = float(words["P"].value) if "P" in words else 1.0  # G70's P, a double (interp_g7x.cc)
         if fl.get("I", 1.0) <= 0:
             raise self.error("GC209", f"{name}: I must be greater than zero (LinuxCNC's error)", words["I"])
-        start = complex(float(z0), float(x0))
         try:
             if code == 70:  # (P below 1: no pass, as LinuxCNC 2.9's loop; no error)
-                moves = g7x.g70(pieces, start, x=float(x0), z=float(z0), d=fl.get("D", 0.0), e=fl.get("E", 0.0),
+                moves = g7x.g70(pieces, start, x=start.imag, z=start.real, d=fl.get("D", 0.0), e=fl.get("E", 0.0),
                                 passes=p, guard=self.pass_guard(name))
             else:
                 moves = self._roughing(name, pieces, start, sub, code == 72, fl, gw)
-                if moves is None:
-                    return
         except PassBound as e:
             self.unknown(e.code, e.reason, gw)
-            return
+            return None
         except g7x.G7xError as e:
             self.unknown(name, f"{name}: LinuxCNC stops this cycle with an error or its result is not defined: {e}",
                           gw)
-            return
-        self._emit_g7x(name, moves, iz, ix, unit)
+            return None
+        if moves is not None and not moves:
+            self._no_move(name, pieces, start, gw)
+            return None
+        return moves
+
+    def _no_move(self, name: str, pieces: list[g7x.Piece], start: complex, gw: Word) -> None:
+        """A cycle that makes no move (G70 with P below 1, a profile of one piece): LinuxCNC 2.9.0~pre1 leaves its
+        position where reading the profile ended (its end), where the tool is not; the next block's absent axis
+        words take that position.  Later versions (commit b1f3e7d8) restore the start.  Unknown when the two
+        differ."""
+        if pieces and pieces[-1].end != start:
+            self.unknown(name, f"{name} makes no move here, and LinuxCNC 2.9.0~pre1 then takes the profile's end as "
+                          "its position (later versions the start): the next move depends on the version", gw)
 
     def _cycle_words(self, block: Block, gw: Word, name: str) -> tuple[dict[str, Word], list[Word]]:
         """The cycle's own words by letter and the block's other words.  LinuxCNC reads the cycle's block as any
@@ -299,8 +317,11 @@ class LatheInterpreter(Interpreter):
             n = chord.real * chord.real + chord.imag * chord.imag
             q = (r * r - n / 4) / n
             if q < 0:
-                raise self.error("GC302", f"{name}: the arc's radius {ws['R'].text} is too small to reach its end "
-                                  "point", ws["R"])
+                # interp_g7x.cc takes the square root of the negative number without a check: a NaN centre, and
+                # LinuxCNC goes on reading the profile (rs274 2.9.0~pre1 runs or stops later): not followed
+                self.unknown(name, f"{name}: the arc's radius {ws['R'].text} is too small to reach its end point; "
+                              "LinuxCNC computes no centre for it (NaN) and does not stop there", ws["R"])
+                return None
             centre = (at + end) / 2.0
             s = q ** 0.5
             d = complex(0.0 * s, 1.0 * s) * chord

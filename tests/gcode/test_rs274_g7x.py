@@ -137,6 +137,38 @@ def test_an_arc_without_i_or_k_in_the_profile_is_refused_on_its_line():
     assert d.code == "GC208" and d.span is not None and d.span.line == 3
 
 
+# --------------------------------------------------------------------------- class 5: a cycle that makes no move
+# Seed 10092, minimised: G70 with P0.5 makes no pass (int(P) = 0).  rs274 2.9.0~pre1 then moves the next block
+# `X30.4` (G7: radius 15.2) from where the tool is, (X0, Z0.9), to (X15.2, Z0.2): STRAIGHT_TRAVERSE(0, 0, 0.9),
+# STRAIGHT_FEED(15.2, 0, 0.2) — reading the profile left its position at the profile's end Z0.2 (convert_g7x sets
+# current_x/z per profile block; the restore of the start came with commit b1f3e7d8, later).  nczones went to
+# (15.2, 0.9).  A block at X [14, 15], Z [0.2, 0.4] is crossed by the real feed (Z 0.255 at X14, 0.209 at X15)
+# and not by the old one: it was proved clear.  Version-dependent: unknown.
+NO_MOVE = "o100 sub\nG1 Z0.2 X17.6\no100 endsub\nG18 G7 G21 G90 G40 F100\n{pre}G70 Q100 Z0.9 D1 P0.5\nX30.4\nM2\n"
+BLOCK = ('[[zones]]\nname = "block"\nkind = "box"\nforbid = true\nmin = { X = "14", Z = "0.2" }\n'
+         'max = { X = "15", Z = "0.4" }\n')
+
+
+@pytest.mark.parametrize("pre", ["G0 X0 Z0.9\n", LONG_PRE.replace("G0 X10.6 Z0", "G0 X0 Z0.9"),
+                                 "#1 = 0.9\nG0 X0 Z#1\n"], ids=["short", "long", "params"])
+def test_a_cycle_that_makes_no_move_leaves_a_version_dependent_position(pre):
+    result = verify_text(NO_MOVE.format(pre=pre), _machine(BLOCK), file="p.ngc")
+    assert result.verdict is Verdict.UNKNOWN, result.verdict
+    assert any("makes no move" in r.message for r in result.reasons), result.reasons
+
+
+# --------------------------------------------------------------------------- class 6: an R arc too short
+# Seed 11261, minimised: `G2 Z-4.2 X8.574 R2.613` in a G70 profile cannot reach its end; interp_g7x.cc takes the
+# square root of a negative number (a NaN centre) and reads on: rs274 stops on the next line ("either I or K must
+# be present for arc").  nczones refused the R arc itself (GC302, a line earlier).  Now unknown there.
+def test_a_profile_r_arc_too_short_is_unknown():
+    text = ("o100 sub\nG2 Z-4.2 X8.574 R2.613\nX9.83 Z-15.389 A0.8\no100 endsub\nG18 G8 G21 G90 G40 F100\n"
+            "G0 X11.1 Z1.7\nG70 Q100 X9.1 E0.868 P2.5\nM2\n")
+    result = verify_text(text, _machine(), file="p.ngc")
+    assert result.verdict is Verdict.UNKNOWN
+    assert any("too small to reach" in r.message for r in result.reasons), result.reasons
+
+
 # --------------------------------------------------------------------------- the differential
 def _differential(seeds: range) -> Counter:
     counts: Counter = Counter()
