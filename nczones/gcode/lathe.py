@@ -254,6 +254,10 @@ class LatheInterpreter(Interpreter):
                     return None
                 if w.letter == "G":
                     k = gkey(w.value)
+                    if k in (900, 910, 901, 911):
+                        # G90/G91/G90.1/G91.1: convert_g7x reads the profile's blocks without executing them and
+                        # takes the distance modes in force at the cycle (switch_settings): no effect
+                        continue
                     if k not in (0, 10, 20, 30):
                         self.unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
                                       "G1 G2 G3 are modelled there (LinuxCNC ignores other codes of a profile block)",

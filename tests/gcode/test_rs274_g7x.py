@@ -169,6 +169,21 @@ def test_a_profile_r_arc_too_short_is_unknown():
     assert any("too small to reach" in r.message for r in result.reasons), result.reasons
 
 
+# --------------------------------------------------------------------------- G90/G91 inside the profile
+# convert_g7x reads the profile's blocks without executing them and takes the distance modes in force at the cycle
+# (interp_g7x.cc switch_settings, old.distance_mode()): rs274 2.9.0~pre1 cuts the STEP profile written after a
+# G91 line exactly as without it (26 identical motions: X4, Z-10, X10 read as absolute).  nczones was unknown.
+@pytest.mark.parametrize("pre", ["", LONG_PRE, "#1 = 10\nG0 X#1 Z2\n"], ids=["short", "long", "params"])
+def test_a_distance_mode_in_the_profile_changes_nothing(pre):
+    text = STEP.format(pre=pre)
+    with_g91 = text.replace("o1 sub\n", "o1 sub\nG91\n").replace("o1 endsub", "G90\no1 endsub")
+    jaw = ('[[zones]]\nname = "jaw"\nkind = "box"\nforbid = true\nmin = { X = "3.95", Z = "-6" }\n'
+           'max = { X = "4.05", Z = "-5" }\n')
+    got = verify_text(with_g91, _machine(jaw), file="p.ngc")
+    assert got.verdict is Verdict.UNSAFE and got.violations[0].zone == "jaw"
+    assert got.violations[0].derived == verify_text(text, _machine(jaw), file="p.ngc").violations[0].derived
+
+
 # --------------------------------------------------------------------------- the differential
 def _differential(seeds: range) -> Counter:
     counts: Counter = Counter()
