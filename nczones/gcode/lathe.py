@@ -172,6 +172,7 @@ class LatheInterpreter(Interpreter):
         p = float(words["P"].value) if "P" in words else 1.0  # G70's P, a double (interp_g7x.cc)
         if fl.get("I", 1.0) <= 0:
             raise self.error("GC209", f"{name}: I must be greater than zero (LinuxCNC's error)", words["I"])
+        moves: list[g7x.Out] | None
         try:
             if code == 70:  # (P below 1: no pass, as LinuxCNC 2.9's loop; no error)
                 moves = g7x.g70(pieces, start, x=start.imag, z=start.real, d=fl.get("D", 0.0), e=fl.get("E", 0.0),
