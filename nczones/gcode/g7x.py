@@ -699,6 +699,15 @@ class _Path:
             self.guard.count("finishing passes", count)
         self.pieces[0].start = C(z, x)
         if self.should_rotate():
+            if not self.later:
+                # 2.9.0~pre1's do_g70 also checks the turned copy (``path.monotonic()``, dropped with commit
+                # 654f5103): "Not monotonic" where the profile is monotonic in neither frame
+                q = self.copy()
+                q.pieces.pop(0)
+                q.swap()
+                q.rotate()
+                q.swap()
+                q.monotonic()
             self.rotate()
         self.swap()
         self.do_finish()

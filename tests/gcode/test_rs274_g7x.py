@@ -169,6 +169,19 @@ def test_a_profile_r_arc_too_short_is_unknown():
     assert any("too small to reach" in r.message for r in result.reasons), result.reasons
 
 
+# --------------------------------------------------------------------------- class 7: G70's check of the turned copy
+# Seed 101720, minimised: a G70 whose profile (G7: X-7.6 is radius -3.8) is not monotonic as drawn, so do_g70 turns
+# a copy by 90 degrees; 2.9.0~pre1 then checks that copy (path.monotonic(), dropped later with commit 654f5103)
+# and stops: rs274 prints the rapid to X29 Z2.7 (radius 14.5), then "G7X error: Not monotonic".  nczones cut three
+# moves (the later versions' G70).  Now unknown (LinuxCNC stops there).
+def test_a_g70_profile_monotonic_in_neither_frame_is_not_cut():
+    text = ("o100 sub\nG1 X-7.6 Z0.2\nG3 X0.6 Z-1.5 R3.294\no100 endsub\nG18 G7 G21 G90 G40 F100\nG0 X29 Z2.7\n"
+            "G70 Q100 E1\nM2\n")
+    result = verify_text(text, _machine(), file="p.ngc")
+    assert result.verdict is Verdict.UNKNOWN
+    assert any("Not monotonic" in r.message for r in result.reasons), result.reasons
+
+
 # --------------------------------------------------------------------------- G90/G91 inside the profile
 # convert_g7x reads the profile's blocks without executing them and takes the distance modes in force at the cycle
 # (interp_g7x.cc switch_settings, old.distance_mode()): rs274 2.9.0~pre1 cuts the STEP profile written after a
