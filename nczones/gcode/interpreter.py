@@ -969,7 +969,8 @@ class Interpreter:
     def _m_number(self, w: Word) -> int:
         """An M word's number.  LinuxCNC reads it as an integer within 0.0001 (``read_m`` ->
         ``read_integer_value``: ``M[3.00001]`` is M3, ``M[3.0001]`` "Non integer value for integer") and refuses a
-        negative one and one above 199 (rs274 2.9.0~pre1: "Negative m code used", "M-code greater than 199")."""
+        negative one ("Negative m code used").  One above 199 is refused only when the INI remaps no such M code
+        (``m_remapped`` is looked up first: ``M428`` of LinuxCNC's own configurations): it stays unknown here."""
         if self.dialect != "linuxcnc":
             if w.value.denominator != 1:
                 raise self.error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
@@ -981,9 +982,6 @@ class Interpreter:
         if n < 0:
             raise self.error("GC202", f"negative M code {w.text or w.value} (LinuxCNC's error: Negative m code used)",
                              w)
-        if n > 199:
-            raise self.error("GC202", f"M code {w.text or w.value} is M{n}, above 199: LinuxCNC's M codes are 0-199 "
-                             "(its error: M-code greater than 199)", w)
         return n
 
     def _execute_general(self, block: Block) -> None:
