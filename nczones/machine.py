@@ -172,8 +172,9 @@ class FanucSettings:
     #: move carries it) or moves the tool in the T block (``"move"``).
     tool_offset_motion: str = "shift"
     #: Parameter 5002#5 LGC (with LGT = 0): offset number 0 (``T0100``) cancels the wear offset only, the
-    #: geometry offset stays (``"wear"``, LGC = 0, the default) or cancels both (``"all"``, LGC = 1).
-    tool_offset_cancel: str = "wear"
+    #: geometry offset stays (``"wear"``) or cancels both (``"all"``); None: not given (no manual text for the
+    #: parameter was found: ``T..00`` under a geometry offset is then unknown, specs/turning.md).
+    tool_offset_cancel: str | None = None
     #: The path (channel) of a multi-path control whose slides this machine file describes: a program with
     #: ``$n`` path headers is read as the program of path ``$path`` (``specs/turning.md``); None: not given.
     path: int | None = None

@@ -573,6 +573,9 @@ class _Path:
         self.escape = C(0.3, 0.3)
         self.pocket_starts: list[complex] = []
         self.guard: PassGuard | None = None
+        #: the pocket loop of LinuxCNC after 2.9.0~pre1 (commits 48a3ee4a and 111fd213: stop at the last piece,
+        #: step on from a piece whose end is reached); False: the installed 2.9.0~pre1's loop
+        self.later = False
 
     def copy(self) -> _Path:
         q = _Path([p.copy() for p in self.pieces])
@@ -696,6 +699,15 @@ class _Path:
             self.guard.count("finishing passes", count)
         self.pieces[0].start = C(z, x)
         if self.should_rotate():
+            if not self.later:
+                # 2.9.0~pre1's do_g70 also checks the turned copy (``path.monotonic()``, dropped with commit
+                # 654f5103): "Not monotonic" where the profile is monotonic in neither frame
+                q = self.copy()
+                q.pieces.pop(0)
+                q.swap()
+                q.rotate()
+                q.swap()
+                q.monotonic()
             self.rotate()
         self.swap()
         self.do_finish()
@@ -795,9 +807,9 @@ class _Path:
                             return
                         k += 1
                 return
-            if k == len(ps) - 1:
+            if self.later and k == len(ps) - 1:
                 return
-            if abs(at[0].imag - x) > TOLERANCE or ps[k].end == at[0]:
+            if abs(at[0].imag - x) > TOLERANCE or (self.later and ps[k].end == at[0]):
                 k += 1
                 continue
             for j in range(k, len(ps)):
@@ -866,22 +878,27 @@ def g70(pieces: list[Piece], start: complex, *, x: float, z: float, d: float, e:
 
 
 def g71(pieces: list[Piece], start: complex, *, cycle: int, x: float, z: float, u: float, w: float, d: float,
-        i: float, r: float, facing: bool = False, guard: PassGuard | None = None) -> list[Out]:
+        i: float, r: float, facing: bool = False, guard: PassGuard | None = None, later: bool = False) -> list[Out]:
     """LinuxCNC's G71 (``facing``: G72) roughing cycle; ``cycle`` is 0 (G71), 1 (G71.1: no pockets) or 2 (G71.2:
-    the pockets only)."""
+    the pockets only).
+
+    ``later=False`` computes it as the installed LinuxCNC 2.9.0~pre1 (git f1270d6e) does; ``later=True`` as the
+    2.9 branch after it (interp_g7x.cc of 2.9.1 and later: the closing straight of commits 03793cc9, bb75d9cc and
+    c38c192f, the pocket loop of 48a3ee4a and 111fd213).  The interpreter compares the two (specs/turning.md)."""
     sink = _Sink(start)
     path_pieces = list(pieces)
-    # convert_g7x: a profile that ends moving along the cut axis, on the far side of the start's level, is
-    # closed by a straight from its end to that level
-    end = path_pieces[-1].end
-    dfront = path_pieces[0].end - path_pieces[0].start
-    dback = path_pieces[-1].end - path_pieces[-1].start
-    if not facing:
-        if abs(dback.real) > 0 and dfront.imag * (x - end.imag) < 0:
-            path_pieces.append(Straight(end, C(end.real, x)))
-    elif abs(dback.imag) > 0 and dfront.real * (z - end.real) < 0:
-        path_pieces.append(Straight(end, C(z, end.imag)))
-    _run(lambda p: p.g71(sink, cycle, x, z, u, w, d, i, r, rotate=facing), path_pieces, guard)
+    if later:
+        # convert_g7x after 2.9.0~pre1: a profile that ends moving along the cut axis, on the far side of the
+        # start's level, is closed by a straight from its end to that level
+        end = path_pieces[-1].end
+        dfront = path_pieces[0].end - path_pieces[0].start
+        dback = path_pieces[-1].end - path_pieces[-1].start
+        if not facing:
+            if abs(dback.real) > 0 and dfront.imag * (x - end.imag) < 0:
+                path_pieces.append(Straight(end, C(end.real, x)))
+        elif abs(dback.imag) > 0 and dfront.real * (z - end.real) < 0:
+            path_pieces.append(Straight(end, C(z, end.imag)))
+    _run(lambda p: p.g71(sink, cycle, x, z, u, w, d, i, r, rotate=facing), path_pieces, guard, later)
     return sink.moves
 
 
@@ -890,11 +907,16 @@ def g72(pieces: list[Piece], start: complex, **kw: Any) -> list[Out]:
     return g71(pieces, start, facing=True, **kw)
 
 
-def _run(fn: Callable[[_Path], None], pieces: list[Piece], guard: PassGuard | None = None) -> None:
+def _run(fn: Callable[[_Path], None], pieces: list[Piece], guard: PassGuard | None = None,
+         later: bool = False) -> None:
     path = _Path([p.copy() for p in pieces])
     path.guard = guard
+    path.later = later
     try:
         fn(path)
     except (IndexError, ZeroDivisionError, ValueError) as e:  # LinuxCNC reads past its list or divides by 0
         raise G7xError(f"the profile is degenerate for the cycle ({type(e).__name__}); LinuxCNC's behaviour here "
                        "is undefined") from None
+    except RecursionError:  # 2.9.0~pre1's pocket recursion that never ends (fixed by 48a3ee4a): a crash there
+        raise G7xError("the roughing cycle's pocket recursion does not end (LinuxCNC 2.9.0~pre1 recurses until "
+                       "it fails)") from None

@@ -991,9 +991,7 @@ class Interpreter:
                     raise self.error("GC202", f"unknown G code {w.text or 'G' + str(w.value)}: G codes have at most one decimal", w)
                 gcodes.append((k, w))
             elif letter == "M":
-                if w.value.denominator != 1:
-                    raise self.error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
-                mcodes.append((w.value.numerator, w))
+                mcodes.append((self._m_number(w), w))
             else:
                 if letter in words:
                     raise self.error("GC204", f"two {letter} words in one block ({words[letter].text or letter} and {w.text or letter}); a letter may appear once", w)
@@ -1009,6 +1007,24 @@ class Interpreter:
                         )
                     axis_words.append((i, w))
         return gcodes, mcodes, words, axis_words
+
+    def _m_number(self, w: Word) -> int:
+        """An M word's number.  LinuxCNC reads it as an integer within 0.0001 (``read_m`` ->
+        ``read_integer_value``: ``M[3.00001]`` is M3, ``M[3.0001]`` "Non integer value for integer") and refuses a
+        negative one ("Negative m code used").  One above 199 is refused only when the INI remaps no such M code
+        (``m_remapped`` is looked up first: ``M428`` of LinuxCNC's own configurations): it stays unknown here."""
+        if self.dialect != "linuxcnc":
+            if w.value.denominator != 1:
+                raise self.error("GC202", f"unknown M code {w.text or w.value}: M codes are integers", w)
+            return w.value.numerator
+        n = lcnc_integer(w.value)
+        if n is None:
+            raise self.error("GC202", f"M code {w.text or w.value} is not an integer: LinuxCNC reads an M number "
+                             f"within 0.0001 of an integer (its error: Non integer value for integer)", w)
+        if n < 0:
+            raise self.error("GC202", f"negative M code {w.text or w.value} (LinuxCNC's error: Negative m code used)",
+                             w)
+        return n
 
     def _execute_general(self, block: Block) -> None:
         """:meth:`execute` for a block the plain-move lane did not take."""

@@ -91,16 +91,7 @@ class LatheInterpreter(Interpreter):
     def _g7x_block(self, block: Block, key: int, gw: Word) -> None:
         code, sub = _G7X_KEYS[key]
         name = f"G{code}" + (f".{sub}" if sub else "")
-        words: dict[str, Word] = {}
-        rest: list[Word] = []
-        for w in block.words:
-            if w.letter in _CYCLE_LETTERS:
-                if w.letter in words:
-                    raise self.error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
-                                      f"{w.text}); a letter may appear once", w)
-                words[w.letter] = w
-            elif w is not gw:
-                rest.append(w)
+        words, rest = self._cycle_words(block, gw, name)
         for w in rest:
             if w.letter not in "GMFSTN" or (w.letter == "G" and gkey(w.value) in (0, 10, 20, 30, 280, 300, 920, 100,
                                                                                     520, 530, 800)):
@@ -115,6 +106,11 @@ class LatheInterpreter(Interpreter):
         if not isinstance(block, ShapeBlock):
             self.unknown(name, f"{name}: the profile subroutine was not collected (the cycle block is built by a "
                           "path of the language layer that does not read profiles, e.g. a line with parameters)", gw)
+            return
+        if any(k in words for k in "UW"):
+            self.unknown(name, f"{name}: U or W in the cycle's block on a machine with that axis: LinuxCNC's rapid "
+                          "to the start point moves the axis as well as taking it as the allowance (not modelled)",
+                          words.get("U") or words["W"])
             return
         if self.plane is not Plane.XZ:
             raise self.error("GC308", f"{name} can only be used in the XZ plane (G18) (LinuxCNC's error)", gw)
@@ -151,29 +147,86 @@ class LatheInterpreter(Interpreter):
         pieces = self._profile(name, block.shape, complex(float(z0), float(x0)), gw)
         if pieces is None:
             return
-        if len(pieces) <= 1:
-            return  # LinuxCNC: a profile of one piece or none does nothing more
+        start = complex(float(z0), float(x0))
+        if len(pieces) <= 1:  # LinuxCNC: a profile of one piece or none does nothing more
+            self._no_move(name, pieces, start, gw)
+            return
+        moves = self._cycle_moves(name, code, sub, pieces, start, words, gw)
+        if moves is not None:
+            self._emit_g7x(name, moves, iz, ix, unit)
+
+    def _cycle_moves(self, name: str, code: int, sub: int, pieces: list[g7x.Piece], start: complex,
+                     words: dict[str, Word], gw: Word) -> list[g7x.Out] | None:
+        """The cycle's moves; None (after an unknown) where nczones does not follow LinuxCNC."""
         fl = {k: float(words[k].value) for k in "DEIRUW" if k in words}
         p = float(words["P"].value) if "P" in words else 1.0  # G70's P, a double (interp_g7x.cc)
         if fl.get("I", 1.0) <= 0:
             raise self.error("GC209", f"{name}: I must be greater than zero (LinuxCNC's error)", words["I"])
-        start = complex(float(z0), float(x0))
+        moves: list[g7x.Out] | None
         try:
             if code == 70:  # (P below 1: no pass, as LinuxCNC 2.9's loop; no error)
-                moves = g7x.g70(pieces, start, x=float(x0), z=float(z0), d=fl.get("D", 0.0), e=fl.get("E", 0.0),
+                moves = g7x.g70(pieces, start, x=start.imag, z=start.real, d=fl.get("D", 0.0), e=fl.get("E", 0.0),
                                 passes=p, guard=self.pass_guard(name))
             else:
-                moves = g7x.g71(pieces, start, cycle=sub, x=float(x0), z=float(z0), u=fl.get("U", 0.0),
-                                w=fl.get("W", 0.0), d=fl.get("D", 0.0), i=fl.get("I", 1.0), r=fl.get("R", 0.5),
-                                facing=code == 72, guard=self.pass_guard(name))
+                moves = self._roughing(name, pieces, start, sub, code == 72, fl, gw)
         except PassBound as e:
             self.unknown(e.code, e.reason, gw)
-            return
+            return None
         except g7x.G7xError as e:
             self.unknown(name, f"{name}: LinuxCNC stops this cycle with an error or its result is not defined: {e}",
                           gw)
-            return
-        self._emit_g7x(name, moves, iz, ix, unit)
+            return None
+        if moves is not None and not moves:
+            self._no_move(name, pieces, start, gw)
+            return None
+        return moves
+
+    def _no_move(self, name: str, pieces: list[g7x.Piece], start: complex, gw: Word) -> None:
+        """A cycle that makes no move (G70 with P below 1, a profile of one piece): LinuxCNC 2.9.0~pre1 leaves its
+        position where reading the profile ended (its end), where the tool is not; the next block's absent axis
+        words take that position.  Later versions (commit b1f3e7d8) restore the start.  Unknown when the two
+        differ."""
+        if pieces and pieces[-1].end != start:
+            self.unknown(name, f"{name} makes no move here, and LinuxCNC 2.9.0~pre1 then takes the profile's end as "
+                          "its position (later versions the start): the next move depends on the version", gw)
+
+    def _cycle_words(self, block: Block, gw: Word, name: str) -> tuple[dict[str, Word], list[Word]]:
+        """The cycle's own words by letter and the block's other words.  LinuxCNC reads the cycle's block as any
+        block: U or W of an axis the machine lacks is refused ("Bad character 'u' used"); only the profile's
+        blocks read U, W, A, C whatever the axes (interp_g7x.cc switch_settings)."""
+        words: dict[str, Word] = {}
+        rest: list[Word] = []
+        for w in block.words:
+            if w.letter in "UW" and w.letter not in self.index:
+                raise self.error("GC203", f"axis word {w.text or w.letter} names axis {w.letter}, which this machine "
+                                  f"does not have (axes: {', '.join(self.axes)}): LinuxCNC refuses it in the block of "
+                                  f"{name} too (its error: Bad character '{w.letter.lower()}' used)", w)
+            if w.letter in _CYCLE_LETTERS:
+                if w.letter in words:
+                    raise self.error("GC204", f"two {w.letter} words in one block ({words[w.letter].text} and "
+                                      f"{w.text}); a letter may appear once", w)
+                words[w.letter] = w
+            elif w is not gw:
+                rest.append(w)
+        return words, rest
+
+    def _roughing(self, name: str, pieces: list[g7x.Piece], start: complex, sub: int, facing: bool,
+                  fl: dict[str, float], gw: Word) -> list[g7x.Out] | None:
+        """G71/G72's moves as the installed LinuxCNC 2.9.0~pre1 makes them, when the 2.9 versions after it make the
+        same; None (after an unknown) where they differ: the machine's version decides, the program does not say."""
+        kw = dict(cycle=sub, x=start.imag, z=start.real, u=fl.get("U", 0.0), w=fl.get("W", 0.0), d=fl.get("D", 0.0),
+                  i=fl.get("I", 1.0), r=fl.get("R", 0.5), facing=facing)
+        moves = g7x.g71(pieces, start, guard=self.pass_guard(name), **kw)  # type: ignore[arg-type]
+        try:
+            later = g7x.g71(pieces, start, later=True, **kw)  # type: ignore[arg-type]
+        except g7x.G7xError:
+            later = None
+        if later != moves:
+            self.unknown(name, f"{name}: LinuxCNC 2.9.0~pre1 (the reference nczones follows) and the later 2.9 "
+                          "versions cut this profile differently (the closing straight and pocket loop of "
+                          "interp_g7x.cc changed after 2.9.0~pre1): the machine's version decides", gw)
+            return None
+        return moves
 
     def _profile(self, name: str, shape: tuple[Block, ...], start: complex, gw: Word) -> list[g7x.Piece] | None:
         """The profile's pieces as ``convert_g7x`` reads them: the first from the cycle's start point; X halved in
@@ -192,6 +245,10 @@ class LatheInterpreter(Interpreter):
                     return None
                 if w.letter == "G":
                     k = gkey(w.value)
+                    if k in (900, 910, 901, 911):
+                        # G90/G91/G90.1/G91.1: convert_g7x reads the profile's blocks without executing them and
+                        # takes the distance modes in force at the cycle (switch_settings): no effect
+                        continue
                     if k not in (0, 10, 20, 30):
                         self.unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
                                       "G1 G2 G3 are modelled there (LinuxCNC ignores other codes of a profile block)",
@@ -255,22 +312,30 @@ class LatheInterpreter(Interpreter):
             n = chord.real * chord.real + chord.imag * chord.imag
             q = (r * r - n / 4) / n
             if q < 0:
-                raise self.error("GC302", f"{name}: the arc's radius {ws['R'].text} is too small to reach its end "
-                                  "point", ws["R"])
+                # interp_g7x.cc takes the square root of the negative number without a check: a NaN centre, and
+                # LinuxCNC goes on reading the profile (rs274 2.9.0~pre1 runs or stops later): not followed
+                self.unknown(name, f"{name}: the arc's radius {ws['R'].text} is too small to reach its end point; "
+                              "LinuxCNC computes no centre for it (NaN) and does not stop there", ws["R"])
+                return None
             centre = (at + end) / 2.0
             s = q ** 0.5
             d = complex(0.0 * s, 1.0 * s) * chord
             return centre + d if motion == 30 else centre - d
         if "I" not in ws and "K" not in ws:
-            raise self.error("GC208", f"{name}: either I or K must be present for an arc of the profile", None)
+            raise self.error("GC208", f"{name}: either I or K must be present for an arc of the profile (LinuxCNC's "
+                             "error, on this line)", next(iter(ws.values()), None))
         ci = float(ws["I"].value) if "I" in ws else 0.0
         ck = float(ws["K"].value) if "K" in ws else 0.0
         centre = complex(ck, ci) if self.arc_absolute else complex(ck, ci) + at
         r0, r1 = abs(at - centre), abs(end - centre)
         tol = 0.0002 if self.inch else 0.002  # LinuxCNC's RADIUS_TOLERANCE_INCH / _MM (arc_data_ijk)
         if abs(r0 - r1) > tol and abs(r0 - r1) > 0.001 * max(r0, r1):
-            raise self.error("GC301", f"{name}: an arc of the profile ends off its circle: radius {r0:.6g} at its "
-                              f"start, {r1:.6g} at its end", ws.get("I") or ws.get("K"))
+            # 2.9.0~pre1 takes the arc as written (no check); LinuxCNC after it refuses it (arc_data_ijk, commit
+            # b2d2c2d1): the version decides, and the moves of an arc off its circle are not modelled
+            self.unknown(name, f"{name}: an arc of the profile ends off its circle (radius {r0:.6g} at its start, "
+                          f"{r1:.6g} at its end): LinuxCNC 2.9.0~pre1 cuts it unchecked, later versions refuse it",
+                          ws.get("I") or ws.get("K") or gw)
+            return None
         return centre
 
     def _emit_g7x(self, name: str, moves: list[g7x.Out], iz: int, ix: int, unit: Fraction) -> None:

@@ -276,7 +276,7 @@ def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
                     "as linear", rot[1])
     # diameter axes (1006#3 DIA = 1): program words are diameters, and so are the axis' positions ("Display
     # of axis position: displayed as diameter value", B-62754EN 9.4).  The stored stroke checks 1320-1327
-    # are set as diameters on such an axis (the parameter manuals B-64310EN / B-63950EN, 1320); the
+    # are read as diameters on such an axis (no manual text found: the sound side, specs/machine-import.md); the
     # reference positions 1240-1243, machine coordinates of the same axis, are read the same way (an
     # inference the IM203 note states).  The machine file counts machine coordinates as radii
     # (diameter_axes): those values are halved.
@@ -474,9 +474,11 @@ def _fanuc_settings(ls: _Listing, names: dict[int, str], n_axes: int, systems: d
             rows.append(("tool_offset_motion", '"move"' if lgt[0] else '"shift"',
                          f"5002 #4 LGT = {int(lgt[0])} {where(lgt[1])}"))
         if lgc is not None:
-            rows.append(("tool_offset_cancel", '"all"' if lgc[0] else '"wear"',
-                         f"5002 #5 LGC = {int(lgc[0])}: T0100 cancels {'geometry and wear' if lgc[0] else 'the wear only'} "
-                         f"{where(lgc[1])}"))
+            # written commented out: no manual text for 5002#5 was found (specs/machine-import.md), so which of
+            # its values keeps the geometry offset is not certain; unset, T..00 under a geometry offset is unknown
+            rows.append(("# tool_offset_cancel", '"all"' if lgc[0] else '"wear"',
+                         f"5002 #5 LGC = {int(lgc[0])} {where(lgc[1])}: LGC = 1 is read as 'T0100 cancels the "
+                         "geometry offset too', not confirmed by a manual text here: check it, then remove the '#'"))
     return tuple(rows)
 
 

@@ -186,7 +186,10 @@ def test_g70_counts_int_p_passes_spaced_by_the_real_p():
     assert [(k, round(float(x), 4), round(float(z), 4)) for k, x, _y, z in got[3:6]] == [
         ("RAPID", 5.3684, 0.1105), ("LINE", 8.2862, -9.6154), ("LINE", 12.0, -9.6154)]
     assert_unsafe_in_every_lane(G70_P, m)
-    assert len(moves(G70_P.replace("P2.6", "P0.5"), m)) == 2  # the rapids to X12 Z4 and to X12 Z2 only
+    # P0.5 makes no pass; 2.9.0~pre1 then takes the profile's end as its position (the start is restored only
+    # by later versions, b1f3e7d8): unknown after the rapids to X12 Z4 and to X12 Z2 (specs/turning.md, "Version")
+    run = interpret_text(G70_P.replace("P2.6", "P0.5"), m)
+    assert len([s for c in run for s in c.segments()]) == 2 and "makes no move" in run.unsupported[0].reason
 
 
 # ---------------------------------------------------------------- class 13: #<_value> resets

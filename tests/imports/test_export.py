@@ -215,7 +215,11 @@ def test_fanuc_import_reads_the_lathe_tool_offset_bits():
     # 5002 #4 LGT = 0 (coordinate shift), #5 LGC = 1 (offset number 0 cancels the geometry too); a lathe only
     text = ("%\nN01006A1P00001000A2P00000000\nN01020A1P88A2P90\nN01420A1P15000A2P20000\n"
             "N05002P00100000\n%\n")
-    m = import_text(text, "lathe.prm", "fanuc").machine
-    assert (m.fanuc.tool_offset_motion, m.fanuc.tool_offset_cancel) == ("shift", "all")
+    # LGT's reading is the 0i-TC operator's manual's (B-64114EN, 14.1: "LGT = 0 (Tool geometry compensation is
+    # based on shift of the coordinate system.)", "LGT = 1 (... based on tool movement.)"); for LGC no manual text
+    # was found: it is written commented out, and the machine file leaves tool_offset_cancel unset
+    im = import_text(text, "lathe.prm", "fanuc")
+    assert (im.machine.fanuc.tool_offset_motion, im.machine.fanuc.tool_offset_cancel) == ("shift", None)
+    assert '# tool_offset_cancel = "all"' in im.text
     m = import_text(text.replace("N05002P00100000", "N05002P00010000"), "lathe.prm", "fanuc").machine
-    assert (m.fanuc.tool_offset_motion, m.fanuc.tool_offset_cancel) == ("move", "wear")
+    assert (m.fanuc.tool_offset_motion, m.fanuc.tool_offset_cancel) == ("move", None)

@@ -456,9 +456,7 @@ class FanucInterpreter(Interpreter):
                                   "depends on the control", g0[1])
                 self._g92(axis_words, g0[1])
             elif k == 921:
-                self.g92 = [_ZERO] * self.naxes
-                self.dep_g92 = [{} for _ in range(self.naxes)]
-                self.recompute_offsets()
+                self._fanuc_g92_1(axis_words, g0[1])
         # ---- group 09 and 01
         if g9 is not None:
             k = g9[0]
@@ -742,6 +740,33 @@ class FanucInterpreter(Interpreter):
         for i, aw in axis_words:
             self.g52[i] = self._mm(aw.value, i)
             self.dep_g52[i] = {}
+        self.recompute_offsets()
+
+    def _fanuc_g92_1(self, axis_words: AxisWords, w: Word) -> None:
+        """G92.1 IP 0 (workpiece coordinate system preset): the G92 shift of the named axes is cancelled.
+
+        No manual text for the preset was found (specs/fanuc.md): what it does beyond cancelling the G92 shift
+        of the axes it names (a local coordinate system G52, the axes it does not name, a value other than 0)
+        is unknown rather than guessed."""
+        named = {i for i, _aw in axis_words}
+        if not named:
+            self.unknown("G92.1", "G92.1 without axis words: which axes the preset acts on is not modelled", w)
+            return
+        if any(aw.value != 0 for _i, aw in axis_words):
+            self.unknown("G92.1", "G92.1 with an axis value other than 0 (the format is G92.1 IP 0) is not modelled",
+                         w)
+            return
+        if any(v != 0 for v in self.g52):
+            self.unknown("G92.1", "G92.1 while a local coordinate system (G52) is set: whether the preset cancels it "
+                         "is not modelled", w)
+            return
+        if any(v != 0 or self.dep_g92[i] for i, v in enumerate(self.g92) if i not in named):
+            self.unknown("G92.1", "G92.1 that does not name an axis with a G92 shift: whether that axis is preset too "
+                         "is not modelled", w)
+            return
+        for i in named:
+            self.g92[i] = _ZERO
+            self.dep_g92[i] = {}
         self.recompute_offsets()
 
     def _fanuc_g10(self, words: Words, axis_words: AxisWords, w: Word) -> None:

@@ -394,9 +394,7 @@ class FanucLatheInterpreter(FanucInterpreter):
             elif (k == 500 and self.system == "A") or (k == 920 and self.system == "B"):
                 self._coordinate_setting(words, w)
             elif k == 921:
-                self.g92 = [_ZERO] * self.naxes
-                self.dep_g92 = [{} for _ in range(self.naxes)]
-                self.recompute_offsets()
+                self._fanuc_g92_1(self._normalised(self._axis_targets(words)), w)
             elif k in (700, 710, 720, 730):
                 self._shape_cycle(k, block, words, w)
             elif k in (740, 750):
@@ -654,12 +652,21 @@ class FanucLatheInterpreter(FanucInterpreter):
                               f"[tool_offsets] (known: {known})", tw)
         old = list(self.off)
         offset = self.machine.tool_offsets.get(number)
-        if (number == 0 and self.settings.tool_offset_motion == "shift"
-                and self.settings.tool_offset_cancel == "wear"):
-            # parameter 5002#5 LGC = 0 (the default): with the geometry offset by coordinate shift (LGT = 0),
-            # offset number 0 cancels the wear offset only; the geometry offset in effect stays
+        if number == 0 and self.settings.tool_offset_motion == "shift":
+            # parameter 5002#5 LGC: with the geometry offset by coordinate shift (LGT = 0), offset number 0
+            # cancels the wear offset only ("wear") or the geometry too ("all").  No manual text for the
+            # parameter was found (specs/turning.md): when the machine file does not say which, and a geometry
+            # offset is in effect, the next position depends on it: unknown
             prev = self.machine.tool_offsets.get(self.offset_number)
-            offset = ToolOffset(0, prev.geometry) if prev is not None else None
+            cancel = self.settings.tool_offset_cancel
+            if cancel is None and prev is not None and any(v for _a, v in prev.geometry):
+                self.unknown("T", f"{tw.text}: whether offset number 0 cancels the geometry offset of offset "
+                             f"{self.offset_number} is the control's parameter 5002#5 LGC, which the machine file "
+                             "does not give: set [fanuc] tool_offset_cancel = \"wear\" (the geometry stays) or "
+                             "\"all\"", tw)
+                return
+            if cancel == "wear":
+                offset = ToolOffset(0, prev.geometry) if prev is not None else None
         self.offset_number = number
         self.lathe_off = {}
         tl = _ZERO

@@ -202,7 +202,7 @@ def test_fanuc_lathe_corpus_outcomes(capsys):
         for o in outcomes:
             print(f"  {o[2]:9} {o[0]}: {o[3]} {o[4][:110]}")
     assert len(outcomes) >= 12
-    # 8 of 12: the Haas G71/G70/G75/G76 programs (G70 with U/W proved in both readings, specs/turning.md), the
+    # 7 of 12: the Haas G71/G70/G75/G76 programs (G70 with U/W proved in both readings, specs/turning.md), the
     # Fanuc 0T programs, the 28,905-line system B program.  Every other program with its reason:
     assert {o[0]: (o[2], o[3]) for o in outcomes if o[2] != "complete"} == {
         # a Citizen L-series program: read path by path ($1, $2), M97 on a Citizen is a machine function,
@@ -214,8 +214,11 @@ def test_fanuc_lathe_corpus_outcomes(capsys):
         # G71 P45 Q58: the program has no N58 at all (it was edited: later cycles say Q55); the control stops
         # with PS0063 at that block, and nczones rejects the program there
         "hass-cnc-programs/CNC LATHE/O58215.nc": ("rejected", "GC314"),
+        # T0100 under a geometry offset: whether offset number 0 cancels it is parameter 5002#5 LGC, for which no
+        # manual text was found; the corpus machine does not set tool_offset_cancel (specs/turning.md)
+        "gcodeworkshop/examples/FANUC0T.nc": ("unknown", "T"),
     }, counts
-    assert len(complete) / len(outcomes) >= 0.60, counts
+    assert len(complete) / len(outcomes) >= 0.55, counts  # 7 of 12 (FANUC0T.nc unknown since tool_offset_cancel)
     for o in outcomes:
         if o[2] == "rejected" and "citizen" in o[0]:
             assert o[4].startswith("path $1: ") and ("G600" in o[4] or "M97" in o[4]), o

@@ -82,12 +82,12 @@ def test_t_code_offsets_shift_the_coordinates():
     assert got == [("", F(52), F(100)), ("", F(2), F(20))]
 
 
-def test_t0100_keeps_the_geometry_offset_by_default():
-    # Parameter 5002#5 LGC = 0 (the factory setting; [fanuc] tool_offset_cancel = "wear"): with the geometry
-    # offset by coordinate shift (LGT = 0) offset number 0 cancels the wear offset only.  Offset 1: geometry
-    # X+80 Z+50, wear X+0.5.  T0101, X40. Z2.: turret X 20 + 80.5 = 100.5, Z52.  After T0100 the same X40.
-    # Z2. puts the turret at X 20 + 80 = 100 (the wear gone, the geometry kept), Z52.
-    m = lathe(offsets='1 = { X = "80", Z = "50", wear = { X = "0.5" } }')
+def test_t0100_keeps_the_geometry_offset_with_tool_offset_cancel_wear():
+    # [fanuc] tool_offset_cancel = "wear" (parameter 5002#5 LGC, read as 0: no manual text for it was found,
+    # specs/turning.md): with the geometry offset by coordinate shift (LGT = 0) offset number 0 cancels the wear
+    # offset only.  Offset 1: geometry X+80 Z+50, wear X+0.5.  T0101, X40. Z2.: turret X 20 + 80.5 = 100.5, Z52.
+    # After T0100 the same X40. Z2. puts the turret at X 20 + 80 = 100 (the wear gone, the geometry kept), Z52.
+    m = lathe(offsets='1 = { X = "80", Z = "50", wear = { X = "0.5" } }', fanuc='tool_offset_cancel = "wear"')
     got = moves("T0101\nG00 X40. Z2.\nT0100\nG00 X40. Z2.\n", m)
     assert got == [("", F(52), F(201, 2)), ("", F(52), F(100))]
     # end to end: the turret's travel ends at Z 180.  After T0100, G00 Z120. puts the turret at Z 170 (geometry
@@ -95,9 +95,29 @@ def test_t0100_keeps_the_geometry_offset_by_default():
     # at Z140 and the proof safe.
     zones = ('[[zones]]\nname = "travel"\nkind = "box"\n'
              'min = { X = "0", Z = "-100" }\nmax = { X = "250", Z = "180" }\n')
-    m = lathe(offsets='1 = { X = "80", Z = "50" }', zones=zones, extra='start = { X = "150", Z = "150" }\n')
+    m = lathe(offsets='1 = { X = "80", Z = "50" }', zones=zones, extra='start = { X = "150", Z = "150" }\n',
+              fanuc='tool_offset_cancel = "wear"')
     r = verify_text("T0101\nG00 X100. Z120.\nT0100\nG00 Z140.\n", m)
     assert r.verdict.label == "unsafe" and r.violations[0].zone == "travel" and r.violations[0].span.line == 4
+
+
+def test_t0100_under_a_geometry_offset_is_unknown_when_the_machine_file_does_not_say():
+    # The same program, tool_offset_cancel not given: "wear" makes it unsafe, "all" safe (above); the manual
+    # sentence for 5002#5 LGC was not found, so nczones takes no default: unknown on the T0100 line, naming the
+    # key.  (Before: the default "wear", written from memory, decided.)
+    zones = ('[[zones]]\nname = "travel"\nkind = "box"\n'
+             'min = { X = "0", Z = "-100" }\nmax = { X = "250", Z = "180" }\n')
+    m = lathe(offsets='1 = { X = "80", Z = "50" }', zones=zones, extra='start = { X = "150", Z = "150" }\n')
+    for program in ("T0101\nG00 X100. Z120.\nT0100\nG00 Z140.\n",
+                    "".join(f"G00 X{100 + k % 2}. Z{100 + k % 3}.\n" for k in range(600))
+                    + "T0101\nG00 X100. Z120.\nT0100\nG00 Z140.\n",
+                    "#1 = 140.\nT0101\nG00 X100. Z120.\nT0100\nG00 Z#1\n"):
+        r = verify_text(program, m)
+        assert r.verdict.label == "unknown", r.verdict
+        assert any("tool_offset_cancel" in x.message for x in r.reasons), r.reasons
+    # no geometry offset in effect: nothing depends on the parameter
+    m = lathe(offsets='1 = { wear = { X = "0.5" } }', zones=zones, extra='start = { X = "150", Z = "150" }\n')
+    assert verify_text("T0101\nG00 X100. Z120.\nT0100\nG00 Z140.\n", m).verdict.label == "safe"
 
 
 def test_t_code_offsets_move_in_the_t_block():
