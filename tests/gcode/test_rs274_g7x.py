@@ -80,7 +80,7 @@ def test_rs274_cuts_that_g72_at_x9_7949():
         ("LINE", Fraction("9.7949"), 0)]
 
 
-# G71 of the bundled step (tests/turning/test_linuxcnc_g7x.py): both versions cut it alike, and nczones follows
+# G71 of the bundled step (tests/gcode/turning/test_linuxcnc_g7x.py): both versions cut it alike, and nczones follows
 # it (every level X10, 8, 6 then the profile): unsafe at the collar the last pass runs along (X4 on Z1..-10).
 STEP = "o1 sub\nG1 X4\nZ-10\nX10\no1 endsub\nG18 G8 G21 F100\n{pre}G0 X10 Z1\nG71 Q1 X10 Z1 D0 I2 R0.5\nM2\n"
 

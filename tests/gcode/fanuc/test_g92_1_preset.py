@@ -4,7 +4,7 @@ nczones read ``G92.1`` as "cancel the G92 shift of every axis", whatever the blo
 system in place.  The sentence that would say which axes the preset acts on and whether it also cancels G52
 was written from memory (issue 33's leftovers) and could not be found in a manual here (specs/fanuc.md, the
 G92.1 row).  The one reading every candidate agrees on is kept: ``G92.1 X0 Y0 Z0`` with only G92 shifts on the
-named axes returns them to the unshifted workpiece system (``tests/fanuc/test_reference_findings.py`` N1).
+named axes returns them to the unshifted workpiece system (``tests/gcode/fanuc/test_reference_findings.py`` N1).
 The rest is unknown.  Through ``verify_text`` on a short program, one with > 512 motions and one with a
 macro variable.
 """
@@ -15,7 +15,7 @@ import pytest
 
 from nczones.machine import parse_machine
 from nczones.prover import Verdict, verify_text
-from tests.fanuc.helpers import MILL
+from tests.gcode.fanuc.helpers import MILL
 
 ZONES = ('[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "0", Y = "0", Z = "-250" }\n'
          'max = { X = "300", Y = "200", Z = "0" }\n')
