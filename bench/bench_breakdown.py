@@ -6,7 +6,7 @@ For the two rows of ``bench/bench_peers.py`` that go through the language layer 
 every line; the LinuxCNC o-word loop), against bench_peers' box machine, the package's bytecode
 compiled first, least CPU seconds (user + system) of ``--runs`` fresh processes:
 
-* **the double pass** (:mod:`nczones.gcode.doubles`, what ``nczones verify`` runs first on these programs):
+* **the double pass** (:mod:`nczones.gcode.linuxcnc.doubles`, what ``nczones verify`` runs first on these programs):
   **pass** (the program in doubles) and **boxes** (the exact proof of its enclosures), in the same process
   before the full path;
 * **start** — a process that imports what a verify of such a program loads (the command line, the
@@ -70,7 +70,7 @@ def chunks(it):
         yield chunk
 
 from fractions import Fraction
-from nczones.gcode.doubles import double_pass
+from nczones.gcode.linuxcnc.doubles import double_pass
 from nczones.prover.doubles import prove_enclosures
 text = open(sys.argv[1]).read()
 t = time.process_time()

@@ -32,36 +32,36 @@ ROOT = Path(__file__).resolve().parents[1]
 
 #: The tests that hold the two witnesses to each other (the contract suite in the wide sense).
 DIFFERENTIAL = [
-    "tests/homing/test_prover.py::test_z3_model_latches_where_the_simulation_latches",
-    "tests/homing/test_prover.py::test_closed_form_origin_error_is_the_simulations",
-    "tests/homing/test_prover.py::test_one_pitch_counterexample_is_reproduced_by_the_simulation",
-    "tests/homing/test_simulation.py::test_simulation_matches_the_closed_form",
-    "tests/homing/test_cli.py",
-    "tests/recovery/test_recovery.py::test_prover_and_controller_agree_on_the_example",
-    "tests/recovery/test_recovery.py::test_prover_and_controller_agree_on_generated_machines",
-    "tests/gcode/splines/test_splines.py::test_controller_stays_within_one_and_a_quarter_pulses_of_the_curve",
+    "tests/plans/homing/test_prover.py::test_z3_model_latches_where_the_simulation_latches",
+    "tests/plans/homing/test_prover.py::test_closed_form_origin_error_is_the_simulations",
+    "tests/plans/homing/test_prover.py::test_one_pitch_counterexample_is_reproduced_by_the_simulation",
+    "tests/plans/homing/test_simulation.py::test_simulation_matches_the_closed_form",
+    "tests/plans/homing/test_cli.py",
+    "tests/plans/recovery/test_recovery.py::test_prover_and_controller_agree_on_the_example",
+    "tests/plans/recovery/test_recovery.py::test_prover_and_controller_agree_on_generated_machines",
+    "tests/gcode/linuxcnc/splines/test_splines.py::test_controller_stays_within_one_and_a_quarter_pulses_of_the_curve",
     "tests/contract/test_contract.py::test_contract_on_tables_and_boxes",
 ]
 
 #: Each shared module's own tests (its doctests and the unit tests written from its spec).
 OWN = {
-    "homing": ["nczones/homing.py", "tests/homing/test_simulation.py"],
-    "recovery": ["nczones/recovery.py", "tests/recovery/test_recovery.py::test_recovery_legs_follow_the_section",
-                 "tests/recovery/test_recovery.py::test_motion_sequences_of_the_example"],
-    "nurbs": ["nczones/nurbs.py", "tests/gcode/splines/test_splines.py"],
+    "homing": ["nczones/plans/homing.py", "tests/plans/homing/test_simulation.py"],
+    "recovery": ["nczones/plans/recovery.py", "tests/plans/recovery/test_recovery.py::test_recovery_legs_follow_the_section",
+                 "tests/plans/recovery/test_recovery.py::test_motion_sequences_of_the_example"],
+    "nurbs": ["nczones/geometry/nurbs.py", "tests/gcode/linuxcnc/splines/test_splines.py"],
 }
 
 
 #: name -> (where, shared module whose own tests to run, file, text, mutated text, what the bug is)
 MUTATIONS = {
-    "S-homing": ("shared", "homing", "nczones/homing.py",
+    "S-homing": ("shared", "homing", "nczones/plans/homing.py",
                  "k = floor((a - residue) / pitch) + 1", "k = -((residue - a) // pitch)",
                  "the latched grid point is the first one at or after the arming position (not strictly after)"),
-    "S-recovery": ("shared", "recovery", "nczones/recovery.py",
+    "S-recovery": ("shared", "recovery", "nczones/plans/recovery.py",
                    "A = tuple(terms.plus(v, cfg.approach_distance) if k == z",
                    "A = tuple(terms.plus(v, 2 * cfg.approach_distance) if k == z",
                    "the plan's rapid stops twice the approach distance above the restart point"),
-    "S-spline": ("shared", "nurbs", "nczones/nurbs.py",
+    "S-spline": ("shared", "nurbs", "nczones/geometry/nurbs.py",
                  'e["control"], e["weights"])', 'e["control"], (Fraction(1),) * len(e["weights"]))',
                  "the exact curve of a spline ignores its weights (a B-spline, not the programmed NURBS)"),
     "C-homing": ("controller", None, "nczones/controller/homing.py", "            lo = A\n", "            lo = prev\n",

@@ -3,7 +3,7 @@
 Run ``python docs/cam_groove.py`` to print the Markdown block, or
 ``python docs/cam_groove.py --write`` to replace the block between the
 markers in specs/cylindrical.md.  Exact quantities come from nczones (the
-enclosures of nczones.cylinder); the deviation between the two paths is a
+enclosures of nczones.geometry.cylinder); the deviation between the two paths is a
 report number, measured in floats on the developed surface (dense sampling,
 1e-6 mm resolution is far below the printed precision).
 """
@@ -18,7 +18,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from nczones.cylinder import degree_length, developed_arc_of  # noqa: E402
+from nczones.geometry.cylinder import degree_length, developed_arc_of  # noqa: E402
 from nczones.gcode import segments  # noqa: E402
 from nczones.machine import load_machine  # noqa: E402
 from nczones.prover import verify  # noqa: E402
@@ -87,7 +87,7 @@ def compute() -> dict:
         "bytes_arc": sum(len(b) + 1 for b in _code(arc_prog)),
         "verdicts": {},
     }
-    from nczones.cylinder import pi_interval
+    from nczones.geometry.cylinder import pi_interval
 
     out["sweep_deg"] = (g.sweep.mid() * 180 / pi_interval().mid())
     for name, mach in (("clamp C160..200", m), ("clamp C150..200", near)):

@@ -31,7 +31,7 @@ from nczones.machine import load_machine
 from nczones.gcode import segments_text
 from nczones.prover import verify_text
 from nczones.controller import simulate
-from nczones.cylinder import pi_interval, degree_length, developed_arc_of
+from nczones.geometry.cylinder import pi_interval, degree_length, developed_arc_of
 
 EX = Path("..") / "specs" / "examples"
 machine = load_machine(EX / "machines" / "cylinder.toml")

@@ -18,7 +18,7 @@ and shows the configuration where it ends one grid pitch off."""),
 code("""from fractions import Fraction as F
 import matplotlib.pyplot as plt
 from nczones import load_machine, format_decimal
-from nczones.homing import homing_config, edge_to_grid_distance, exactness_margin, window_is_clear
+from nczones.plans.homing import homing_config, edge_to_grid_distance, exactness_margin, window_is_clear
 from nczones.controller.homing import simulate_homing, measure_grid_shift
 from nczones.prover.homing import prove_homing, find_one_pitch_error
 

@@ -27,7 +27,7 @@ from nczones import load_machine, format_decimal
 from nczones.gcode import interpret
 from nczones.prover import verify
 from nczones.controller import simulate
-from nczones.recovery import tool_change_config, recovery_legs, motion_sequences
+from nczones.plans.recovery import tool_change_config, recovery_legs, motion_sequences
 
 PROGRAM = "../specs/examples/programs/recovery_clamp.ngc"
 low = load_machine("../specs/examples/machines/mill_toolchange.toml")

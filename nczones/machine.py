@@ -701,8 +701,8 @@ _ZONE_KEYS = {
 #: ``nczones`` loads them for their side effects; docs/design.md §3).  The order is the order of their
 #: diagnostics.
 SECTION_PARSERS: dict[str, str] = {
-    "homing": "nczones.homing:parse_homing_section",
-    "tool_change": "nczones.recovery:parse_tool_change_section",
+    "homing": "nczones.plans.homing:parse_homing_section",
+    "tool_change": "nczones.plans.recovery:parse_tool_change_section",
     "tools": "nczones.solids:parse_tools_section",
     "spindle": "nczones.solids:parse_spindle_section",
     "fixtures": "nczones.solids:parse_fixtures_section",

@@ -54,9 +54,9 @@ class SegmentKind(enum.IntEnum):
     ARC = 1  # G2/G3, helices included
     RAPID = 2  # G0 and derived rapids; expanded by the machine's rapid_mode downstream
     DWELL = 3  # G4: no motion, start == end
-    DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.cylinder
-    SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (a SplineCurve in Segment.extra), see nczones.nurbs
-    POLAR = 6  # G01/G02/G03 in polar coordinate interpolation (G12.1): a plane path in machine X/C, see nczones.polar
+    DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.geometry.cylinder
+    SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (a SplineCurve in Segment.extra), see nczones.geometry.nurbs
+    POLAR = 6  # G01/G02/G03 in polar coordinate interpolation (G12.1): a plane path in machine X/C, see nczones.geometry.polar
 
 
 @dataclass(frozen=True, slots=True)

@@ -202,7 +202,7 @@ def _min_distance(p: list[float], at: Callable[[float], list[float]], samples: i
 
 
 def _float_developed_distance(p: Point, seg: Segment) -> float:
-    from .cylinder import cylinder_of, developed_arc_of
+    from .geometry.cylinder import cylinder_of, developed_arc_of
 
     info = cylinder_of(seg)
     if info is None:
@@ -224,7 +224,7 @@ def _float_developed_distance(p: Point, seg: Segment) -> float:
 
 def _float_polar_distance(p: Point, seg: Segment) -> float:
     """Distance (max over axes) from ``p`` to a polar move's machine path, in floats (samples, then near the best)."""
-    from .polar import polar_of
+    from .geometry.polar import polar_of
     from .report.samples import polar_float_points
 
     q = [to_float(x) for x in p]
@@ -314,7 +314,7 @@ def _on_straight(p: Point, seg: Segment, machine: Machine, exact: bool, paramete
 def _on_spline(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
     if parameter is None:
         return False
-    from .nurbs import spline_curve
+    from .geometry.nurbs import spline_curve
 
     curve = spline_curve(seg)
     lo, hi = curve.domain
@@ -347,7 +347,7 @@ REPLAYED_KINDS = frozenset(_ON_MOTION)
 def _recovery_legs(v: Mapping[str, Any], seg: Segment, segs: list[Segment], machine: Machine,
                    settings: Mapping[str, Any], break_point: Point) -> list[Segment]:
     """The recovery motion the counterexample names (a leg from the break point, or the resumed cut)."""
-    from .recovery import (
+    from .plans.recovery import (
         RecoveryVariant,
         motion_sequences,
         recovery_legs,

@@ -3,7 +3,7 @@
 With ``--prove`` the Z3 proofs (:mod:`nczones.prover.homing`) run, and every
 counterexample they find is replayed by the controller's pulse simulation
 (:mod:`nczones.controller.homing`): two independent witnesses of one
-configuration (:mod:`nczones.homing`).
+configuration (:mod:`nczones.plans.homing`).
 
 Exit status: 0 homing ended exactly at machine zero (or, with ``--prove``,
 every claim holds for the machine as configured); 1 an alarm, an origin
@@ -23,8 +23,8 @@ from .. import cli
 from ..controller.homing import HomingRun, simulate_homing
 from ..errors import InvalidArgument
 from ..exact import format_decimal, seconds
-from ..homing import HomingConfig, homing_config, installation_start
 from ..machine import Machine, load_machine
+from ..plans.homing import HomingConfig, homing_config, installation_start
 
 __all__ = ["register", "parse_length", "replay_counterexample"]
 

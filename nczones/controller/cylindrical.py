@@ -11,7 +11,7 @@ Method (all exact integers and rationals):
    ``u_s = u_c k_lo / 4`` mm on ``s`` (``k_lo`` a rational just below ``k``),
    so one fine step is at most a quarter pulse on either machine axis.
 2. The exact circle (start ``(Z0, 0)``, end ``(Z1, D)``, centre) is replaced
-   by rationals within ``1e-18`` mm (enclosures of :mod:`nczones.cylinder`),
+   by rationals within ``1e-18`` mm (enclosures of :mod:`nczones.geometry.cylinder`),
    and :func:`nczones.controller.pulses.arc_walk` walks it on the fine grid
    from the grid point nearest the exact start: every walk point is within
    one fine step of that circle.
@@ -35,8 +35,8 @@ from itertools import chain
 
 import numpy as np
 
-from ..cylinder import cylinder_of, developed_arc_of
 from ..errors import InvalidArgument
+from ..geometry.cylinder import cylinder_of, developed_arc_of
 from ..motion import Segment
 from .pulses import arc_walk, line_steps, round_pulse
 

@@ -1,11 +1,11 @@
 """Homing pulse by pulse: the reference controller's run of a ``[homing.<axis>]`` section.
 
 The configuration and the arithmetic that says where homing ends are
-:mod:`nczones.homing` (``specs/homing.md``); this module runs it the way a
+:mod:`nczones.plans.homing` (``specs/homing.md``); this module runs it the way a
 controller does: one pulse at a time in the search direction, the switch
 state, the arming of the grid latch and the grid crossings as integer
 comparisons on positions scaled by one common denominator, then the move by
-the grid shift.  The tests hold the pulse loop to :func:`nczones.homing.predict_latch`.
+the grid shift.  The tests hold the pulse loop to :func:`nczones.plans.homing.predict_latch`.
 
 >>> cfg = HomingConfig("X", -1, Fraction(3000), Fraction(300), Fraction(5),
 ...                    Fraction(20), Fraction(10), Fraction(3), switch_jitter=Fraction(1, 50))
@@ -24,7 +24,7 @@ from typing import Any
 
 from ..errors import InternalError, InvalidArgument, MachineFileError
 from ..exact import format_decimal
-from ..homing import HomingConfig, check_pulse_multiples, installation_start
+from ..plans.homing import HomingConfig, check_pulse_multiples, installation_start
 
 __all__ = [
     "HomingEvent",
@@ -170,7 +170,7 @@ def simulate_homing(
     Invariants: the axis moves one pulse at a time in the search direction;
     the switch state, the arming of the grid latch and grid crossings are
     integer comparisons on positions scaled by one common denominator; the
-    latched position equals :func:`nczones.homing.predict_latch`.
+    latched position equals :func:`nczones.plans.homing.predict_latch`.
 
     Examples
     --------
@@ -311,7 +311,7 @@ def measure_grid_shift(
 
     The stored grid shift is ``machine_zero - latched grid position`` (signed,
     machine coordinates, whole pulses).  Without ``start`` the run starts at
-    :func:`nczones.homing.installation_start`, clear of the dog.
+    :func:`nczones.plans.homing.installation_start`, clear of the dog.
 
     >>> cfg = HomingConfig("X", -1, Fraction(3000), Fraction(300), Fraction(5),
     ...                    Fraction(20), Fraction(10), Fraction("3.2505"))

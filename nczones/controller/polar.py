@@ -24,7 +24,7 @@ converted point is below 1e-9 pulse for paths of metres):
 Invariant: every commanded position is within half a pulse (plus the double
 rounding) of the converted exact path on each axis, and consecutive positions
 differ by at most one pulse per axis.  Tests check both against the exact
-enclosures of :mod:`nczones.polar`.
+enclosures of :mod:`nczones.geometry.polar`.
 """
 
 from __future__ import annotations

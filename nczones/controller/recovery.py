@@ -1,6 +1,6 @@
 """Automatic tool-break recovery, run by the reference controller (DESIGN §6).
 
-The plan — which legs, to where, with which tool — is :mod:`nczones.recovery`
+The plan — which legs, to where, with which tool — is :mod:`nczones.plans.recovery`
 (``specs/recovery.md``); this module runs it pulse by pulse: the break after
 a given fraction of a cutting motion's interpolation steps, the recovery legs
 through the controller's own interpolation and limit monitor, the resumed cut
@@ -19,7 +19,7 @@ import numpy as np
 
 from ..errors import Diagnostic, InputError, InvalidArgument
 from ..motion import Segment, segments_of
-from ..recovery import (
+from ..plans.recovery import (
     RecoveryVariant,
     is_cutting,
     recovery_legs,

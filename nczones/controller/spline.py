@@ -1,6 +1,6 @@
 """Pulse distribution along SPLINE segments (exact NURBS curves).
 
-The curve (:func:`nczones.nurbs.spline_curve`) is cut at its knots
+The curve (:func:`nczones.geometry.nurbs.spline_curve`) is cut at its knots
 and each piece is halved by exact knot insertion until it is *flat*: every
 control point ``P_j`` of a piece with ``n + 1`` points lies within
 :data:`FLATNESS` pulses, on every axis, of the chord point
@@ -29,8 +29,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import InvalidArgument
+from ..geometry.nurbs import spline_curve
 from ..motion import Segment
-from ..nurbs import spline_curve
 from .pulses import line_steps, round_pulse
 
 __all__ = ["FLATNESS", "spline_chord_points", "spline_positions", "spline_walk"]

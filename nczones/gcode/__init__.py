@@ -163,7 +163,7 @@ class Interpretation:
 
                 cls = CylindricalInterpreter
             elif lathe:
-                from .lathe import LatheInterpreter
+                from .linuxcnc.lathe import LatheInterpreter
 
                 cls = LatheInterpreter
         self.interpreter = cls(machine, file=self.file, arc_tolerance=arc_tolerance,
@@ -287,7 +287,7 @@ class Interpretation:
 def _cylindrical_lathe() -> type:
     """The interpreter of a LinuxCNC program with both G07.1 and lathe codes (or a diameter axis)."""
     from .cylindrical import CylindricalInterpreter
-    from .lathe import LatheInterpreter
+    from .linuxcnc.lathe import LatheInterpreter
 
     return type("CylindricalLatheInterpreter", (CylindricalInterpreter, LatheInterpreter), {})
 

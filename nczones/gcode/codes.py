@@ -6,7 +6,7 @@ A *lane* is a way a program's blocks become motion (docs/design.md §9, §10 "Ho
 - ``plain``: its plain-move lane (``Interpreter._lean``/``_plain``): G0/G1 with axis words, F, S and one
   spindle or coolant M code;
 - ``fastpath``: the vectorized fast path (:mod:`nczones.gcode.fastpath`), runs of simple lines;
-- ``doubles``: the double pass (:mod:`nczones.gcode.doubles`), LinuxCNC programs with ``#``.
+- ``doubles``: the double pass (:mod:`nczones.gcode.linuxcnc.doubles`), LinuxCNC programs with ``#``.
 
 Each code's row says, per lane, :data:`CLAIMS` (the lane computes it, and must agree with the full
 interpreter) or a decline reason (the lane hands the block or the program to the full path, or the full

@@ -5,7 +5,7 @@ has no cylindrical interpolation) switches the mode on for the rotary axis
 named, on a cylinder of radius ``r`` (mm, or inches under G20); ``G07.1 C0``
 switches it off.  In the mode the rotary word is an angle in degrees, and
 motion is programmed on the developed surface: the plane is (linear axis,
-developed rotary axis), Z-C for C (see :mod:`nczones.cylinder`).
+developed rotary axis), Z-C for C (see :mod:`nczones.geometry.cylinder`).
 
 * ``G01`` is a straight line in the developed plane — and, because the
   developed coordinate is ``s = pi R C / 180``, linear in C, also a straight
@@ -143,7 +143,7 @@ class CylindricalInterpreter(Interpreter):
         if self.cylinder is not None:
             raise self.error("GC230", f"G07.1 {aw.text}: cylindrical interpolation is already on (radius "
                               f"{fmt_number(self.cylinder.radius)} mm); cancel it with G07.1 {self.cylinder.rotary}0 first", w)
-        from ..cylinder import LINEAR_AXIS_OF
+        from ..geometry.cylinder import LINEAR_AXIS_OF
 
         linear = LINEAR_AXIS_OF[letter]
         if linear not in self.index:
@@ -250,7 +250,7 @@ class CylindricalInterpreter(Interpreter):
         if z0 == z1 and c0 == c1:
             raise self.error("GC330", "arc whose end point equals its start point: the centre is undefined "
                               "in cylindrical interpolation (R format only)", rw)
-        from ..cylinder import degree_length
+        from ..geometry.cylinder import degree_length
 
         k_mm = degree_length(cyl.radius)
         d = k_mm * (c1 - c0)

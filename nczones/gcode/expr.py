@@ -4,7 +4,7 @@ Values are IEEE doubles, as in the controller: every arithmetic operation,
 comparison, function and loop condition is computed on the double the
 controller computes (trigonometry in degrees, ``COS[x]`` is
 ``cos((x * M_PIl) / 180.0)`` in x87 long double exactly as ``interp_execute.cc``
-writes it and an x86-64 controller runs it, :mod:`nczones.gcode.x87`).
+writes it and an x86-64 controller runs it, :mod:`nczones.gcode.linuxcnc.x87`).
 
 Exact shadow (the documented choice for "plain decimals stay exact")
 ---------------------------------------------------------------------
@@ -38,8 +38,8 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import InvalidArgument
-from . import x87
 from .lexer import fraction_raw, to_fraction
+from .linuxcnc import x87
 from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
 
 __all__ = [
@@ -63,7 +63,7 @@ __all__ = [
 TOLERANCE_EQUAL = 0.0001
 
 #: SIN, COS and TAN of degrees as LinuxCNC computes them: ``sin((x * M_PIl) / 180.0)`` in x87 long double, the
-#: result rounded to double (:mod:`nczones.gcode.x87`); the double formula where the host has no 80-bit ``sinl``.
+#: result rounded to double (:mod:`nczones.gcode.linuxcnc.x87`); the double formula where the host has no 80-bit ``sinl``.
 TRIG_DEGREES: dict[str, Callable[[float], float]] = (
     {"sin": x87.sin_degrees, "cos": x87.cos_degrees, "tan": x87.tan_degrees} if x87.AVAILABLE else
     {"sin": lambda d: math.sin((d * math.pi) / 180.0), "cos": lambda d: math.cos((d * math.pi) / 180.0),

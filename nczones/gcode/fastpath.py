@@ -1135,10 +1135,8 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         block=block_of_line[rows].astype(np.int64), tool_length=np.full(m, tl, dtype=np.int64),
         centre=centre, plane=plane_col, clockwise=cw, turns=turns,
         feed=(feed_line[rows] if it.feed_mode == 94 else None), file=interp.file,
-        frame=it.program_frame(),  # a run of simple lines changes no offset, unit or transform
-        radius=radius if radius is not None and radius.any() else None,
-        tool_register=it.tool_register, tools_known=True,  # a run of simple lines changes no tool (no H, T)
-    )
+        frame=it.program_frame(), tool_register=it.tool_register, tools_known=True,  # a run of simple lines
+        radius=radius if radius is not None and radius.any() else None)  # changes no offset, unit, transform, tool
     # hand the state back to the interpreter
     den = 10**S
     it.pos = [Fraction(int(v), den) for v in end[-1]]

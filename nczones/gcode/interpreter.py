@@ -67,11 +67,8 @@ from .codes import (
 )
 from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
-from .passes import PassGuard
-from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
-from .segments import dadd, make_segment, with_tool_deps
-from .splines import SPLINE_CODES, spline_block, spline_pending
-from .state import (
+from .linuxcnc.splines import SPLINE_CODES, spline_block, spline_pending
+from .linuxcnc.state import (
     DEBUG_FLAG,
     DEBUG_FLAG_DEFAULT,
     StateParameter,
@@ -79,9 +76,12 @@ from .state import (
     StateValue,
     linuxcnc_state_parameters,
 )
+from .passes import PassGuard
+from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
+from .segments import dadd, make_segment, with_tool_deps
 
 if TYPE_CHECKING:
-    from .cutter_comp import CutterComp
+    from .linuxcnc.cutter_comp import CutterComp
 
 _NAME_PENDING = "NURBS"
 
@@ -289,7 +289,7 @@ class Interpreter:
         machine file's values, Fractions) and optional ``lo_open``/``hi_open``
         (such as :class:`nczones.prover.ParamRange`).  Implies tracking.  A
         state parameter read whose value depends on one of them makes the
-        interpretation unknown (:mod:`nczones.gcode.state`).
+        interpretation unknown (:mod:`nczones.gcode.linuxcnc.state`).
     chunk_size : int
         Segments per emitted :class:`~nczones.motion.MotionChunk`.
 
@@ -374,10 +374,10 @@ class Interpreter:
         self.cycle_q: Fraction | None = None
         self.comp_on = False
         self.comp_just_off = False
-        #: LinuxCNC cutter radius compensation, when the machine file asks for it (nczones.gcode.cutter_comp)
+        #: LinuxCNC cutter radius compensation, when the machine file asks for it (nczones.gcode.linuxcnc.cutter_comp)
         self._comp: CutterComp | None = None
         if getattr(machine, "cutter_compensation", "none") == "linuxcnc":
-            from .cutter_comp import CutterComp
+            from .linuxcnc.cutter_comp import CutterComp
 
             self._comp = CutterComp(self)
         self.tool_selected = 0
@@ -423,15 +423,7 @@ class Interpreter:
         self.emitted: list[Segment] = []
         self._plans: dict = {}  # letters of a PlainBlock -> how the plain lane reads it (_plain_plan)
         self.block_index = 0  # the index of the block being executed
-        #: the path control mode (specs/path-modes.md) from each block index on: (first block, mode), in order
-        self.path_mode = self.initial_path_mode(machine)
-        self.path_modes: list[tuple[int, PathMode]] = [(-1, self.path_mode)]
-        #: the tool the program put in the spindle (M6, M61) from each block index on: (first block, tool), in
-        #: order; the tool solids hold it to the active tool length register (nczones.prover.solids)
-        self.spindle_tools: list[tuple[int, int]] = []
-        #: LinuxCNC's G61/G61.1/G64 and its P and Q numbers as written (program units), what M70/M73 save
-        #: and M72 (or an M73 subroutine's return) restores when they differ (``restore_settings``)
-        self.path_words: tuple[int, Fraction | None, Fraction | None] = self._initial_path_words(machine)
+        self._init_block_tables(machine)
         self._declined = -1  # the index of the last block lane() declined
         self.span: SourceSpan | None = None
         # the state every block reads, as instance attributes (reading a class default is slower)
@@ -695,6 +687,18 @@ class Interpreter:
             return PathMode(True, tol, tol, "linuxcnc", f"G64 P{fmt_number(tol)}")
         return PathMode(True, None, _ZERO, "linuxcnc", "G64")
 
+    def _init_block_tables(self, machine: Machine) -> None:
+        """The per-block tables the proofs read besides the motion, and the path mode's numbers."""
+        #: the path control mode (specs/path-modes.md) from each block index on: (first block, mode), in order
+        self.path_mode = self.initial_path_mode(machine)
+        self.path_modes: list[tuple[int, PathMode]] = [(-1, self.path_mode)]
+        #: the tool the program put in the spindle (M6, M61) from each block index on: (first block, tool), in
+        #: order; the tool solids hold it to the active tool length register (nczones.prover.solids)
+        self.spindle_tools: list[tuple[int, int]] = []
+        #: LinuxCNC's G61/G61.1/G64 and its P and Q numbers as written (program units), what M70/M73 save
+        #: and M72 (or an M73 subroutine's return) restores when they differ (``restore_settings``)
+        self.path_words: tuple[int, Fraction | None, Fraction | None] = self._initial_path_words(machine)
+
     def _initial_path_words(self, machine: Machine) -> tuple[int, Fraction | None, Fraction | None]:
         """The start-up mode as G-code numbers (the INI's start-up ``G64 P<tolerance>``, in the start-up units)."""
         if machine.path_mode != "G64":
@@ -717,8 +721,9 @@ class Interpreter:
         written = " ".join(["G64"] + [f"{k}{fmt_number(v)}" for k, v in (("P", p), ("Q", q)) if v is not None])
         self._g64(p, q, f"{written} (restored)")
 
-    def spindle_changed(self) -> None:
-        """Record ``tool_in_spindle`` from the current block on (``spindle_tools``)."""
+    def put_in_spindle(self, tool: int) -> None:
+        """M6 / M61: ``tool`` is in the spindle from the current block on (``tool_in_spindle``, ``spindle_tools``)."""
+        self.tool_in_spindle = tool
         table = self.spindle_tools
         if table and table[-1][0] == self.block_index:
             table[-1] = (self.block_index, self.tool_in_spindle)
@@ -818,7 +823,7 @@ class Interpreter:
                               "it changes the controller in ways nczones does not follow")
 
     def state_parameters(self) -> StateTable:
-        """The dialect's table of state parameters (:mod:`nczones.gcode.state`); LinuxCNC's here."""
+        """The dialect's table of state parameters (:mod:`nczones.gcode.linuxcnc.state`); LinuxCNC's here."""
         return _LINUXCNC_STATE
 
     def _state_reader(self, entry: StateParameter) -> Any:
@@ -842,7 +847,7 @@ class Interpreter:
             return got
         return read
 
-    # the state the readers of nczones.gcode.state see: (value, dependencies as parameter names)
+    # the state the readers of nczones.gcode.linuxcnc.state see: (value, dependencies as parameter names)
     def _named_deps(self, deps: dict, i: int | None, sign: int = 1) -> dict[str, int]:
         if not self.track or not deps:
             return {}
@@ -924,7 +929,7 @@ class Interpreter:
             return 400
         if self._comp is None or self._comp.side is None:
             return None
-        from .cutter_comp import LEFT
+        from .linuxcnc.cutter_comp import LEFT
 
         return 410 if self._comp.side == LEFT else 420
 
@@ -1149,8 +1154,7 @@ class Interpreter:
                 self.spindle_slot_stale = True
             elif self.tool_selected != 0:
                 self.spindle_slot_stale = False
-            self.tool_in_spindle = self.tool_selected
-            self.spindle_changed()
+            self.put_in_spindle(self.tool_selected)
             self.spindle_dir = 0  # LinuxCNC convert_tool_change stops the spindle (TOOL_CHANGE_WITH_SPINDLE_ON off)
         for k, d in ((3, 1), (4, -1), (5, 0), (19, 0)):
             if k in mset:
@@ -1159,8 +1163,7 @@ class Interpreter:
             q = words.get("Q")
             if q is None or q.value.denominator != 1 or q.value < 0:
                 raise self.error("GC208", "M61 needs a Q word with a non-negative integer tool number", mgroups[6][1])
-            self.tool_in_spindle = int(q.value)
-            self.spindle_changed()
+            self.put_in_spindle(int(q.value))
             self.spindle_slot_stale = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
         if mgroups.get(10) is not None:
             # LinuxCNC convert_m: M70-M73 after F, S, T and M6 of the block, before its G codes and motion
@@ -1513,7 +1516,7 @@ class Interpreter:
     _noted_straight = False
     _contexts: list | None = None  # [scope, depth, snapshot | None, auto-restore] per call frame (M70-M73)
     cycle_il: Fraction | None = None
-    _spline = None  # an unfinished G5.2/G6.2 curve (nczones.gcode.splines)
+    _spline = None  # an unfinished G5.2/G6.2 curve (nczones.gcode.linuxcnc.splines)
 
     m73_saved: list = []  # the contexts of M73s (auto-restore) whose call frame has not returned
     _scopes: list | None = None  # the language layer's local scopes (one per o-word call)

@@ -1,6 +1,6 @@
 """Cheap searches of a program's text that choose its interpreter before any block is read.
 
-They live apart from the interpreters they choose (:mod:`nczones.gcode.cylindrical`, :mod:`nczones.gcode.lathe`)
+They live apart from the interpreters they choose (:mod:`nczones.gcode.cylindrical`, :mod:`nczones.gcode.linuxcnc.lathe`)
 so that a program which needs neither does not import them (start-up, issue 36).
 """
 

@@ -52,10 +52,10 @@ def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptio
 
 
 def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_iterations: int) -> Result | None:
-    """A ``safe`` result for ``text`` from the double pass (:mod:`nczones.gcode.doubles`, proved by
+    """A ``safe`` result for ``text`` from the double pass (:mod:`nczones.gcode.linuxcnc.doubles`, proved by
     :func:`nczones.prover.doubles.prove_double_path`), or None when the pass declines or its boxes do not
     prove the program (the caller then runs the full path)."""
-    from ..gcode.doubles import Declined, double_pass
+    from ..gcode.linuxcnc.doubles import Declined, double_pass
     from ..prover.doubles import WindowProof, prove_double_path
 
     started = time.perf_counter()
@@ -82,7 +82,7 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
                    progress: Callable[..., object] | None) -> Result:
     from ..blockskip import format_block_delete, used_switches
     from ..exact import exact
-    from ..gcode import DEFAULT_ARC_TOLERANCE, checked_options
+    from ..gcode import DEFAULT_ARC_TOLERANCE
     from ..prover.nose import nose_zones
 
     t0 = time.perf_counter()
@@ -111,34 +111,10 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     deleted = bool(used)
     if (options.engine == "auto" and not ranges and options.recovery is None and not deleted
             and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and "#" in source.text):
-        # the options the full path refuses are refused before the pass too
-        checked_options(machine, tolerance, options.max_iterations, options.dialect)
-        if margin < 0:
-            raise InvalidArgument(f"margin must not be negative, got {margin}")
-        # a parametric program: the double pass first, the full path if it declines
-        try:
-            quick = double_pass_result(source.text, machine, margin=margin, max_iterations=options.max_iterations)
-        except KeyboardInterrupt:
-            quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
-                f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
-                None, None, "VF204"),), interrupted=True, margin=margin, engine=options.engine)
+        quick = _double_pass_first(source, machine, options, tolerance, margin, t0, progress,
+                                   (nose_note, nose_reasons), settings)
         if quick is not None:
-            if progress is not None and not quick.interrupted:  # done at once: the bar's last step
-                total = _line_count(source.text) or None
-                bar: Any = progress
-                if getattr(bar, "counts", False):
-                    bar(total or 0, total, motions=dict(quick.stats)["segments"], blocks=quick.extra["counts"]["blocks"])
-                else:
-                    bar(total or 0, total)
-            if nose_note or nose_reasons:
-                quick = replace(quick, notes=quick.notes + ((nose_note,) if nose_note else ()),
-                                reasons=quick.reasons + nose_reasons,
-                                verdict=(Verdict.UNKNOWN if nose_reasons and quick.verdict is Verdict.SAFE
-                                         else quick.verdict))
-            return replace(quick, budget_s=limits.budget_s,
-                           timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
-                           program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
-                           machine_sha256=machine.sha256, settings=settings, file=source.name)
+            return quick
 
     def cases(skip: frozenset[int]) -> tuple[Result, Interpretation, set[int]]:
         return _verify_cases(source, machine, options, skip, progress, profile)
@@ -189,6 +165,47 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
                    timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
+
+
+def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,
+                       margin: Fraction, t0: float, progress: Callable[..., object] | None,
+                       nose: tuple[str | None, tuple[Reason, ...]], settings: Any) -> Result | None:
+    """A parametric LinuxCNC program's result by the double pass, or None when the pass declines (the full
+    path then decides)."""
+    from ..gcode import checked_options
+
+    nose_note, nose_reasons = nose
+    limits = options.limits
+    assert limits is not None  # set by _verify_source
+    # the options the full path refuses are refused before the pass too
+    checked_options(machine, tolerance, options.max_iterations, options.dialect)
+    if margin < 0:
+        raise InvalidArgument(f"margin must not be negative, got {margin}")
+    # a parametric program: the double pass first, the full path if it declines
+    try:
+        quick = double_pass_result(source.text, machine, margin=margin, max_iterations=options.max_iterations)
+    except KeyboardInterrupt:
+        quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
+            f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
+            None, None, "VF204"),), interrupted=True, margin=margin, engine=options.engine)
+    if quick is None:
+        return None
+    if progress is not None and not quick.interrupted:  # done at once: the bar's last step
+        total = _line_count(source.text) or None
+        bar: Any = progress
+        if getattr(bar, "counts", False):
+            bar(total or 0, total, motions=dict(quick.stats)["segments"], blocks=quick.extra["counts"]["blocks"])
+        else:
+            bar(total or 0, total)
+    if nose_note or nose_reasons:
+        quick = replace(quick, notes=quick.notes + ((nose_note,) if nose_note else ()),
+                        reasons=quick.reasons + nose_reasons,
+                        verdict=(Verdict.UNKNOWN if nose_reasons and quick.verdict is Verdict.SAFE
+                                 else quick.verdict))
+    return replace(quick, budget_s=limits.budget_s,
+                   timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
+                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   machine_sha256=machine.sha256, settings=settings, file=source.name)
 
 
 def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: str,

@@ -770,7 +770,7 @@ def _piece_box(seg: Segment) -> Box | None:
         pts = [seg.start, seg.end, *control]
         return tuple(map(min, *pts)), tuple(map(max, *pts))
     if seg.kind is SegmentKind.DEVELOPED_ARC:
-        from ..cylinder import cylinder_of, developed_arc_of
+        from ..geometry.cylinder import cylinder_of, developed_arc_of
 
         info = cylinder_of(seg)
         try:
@@ -932,7 +932,7 @@ def _hull_box(seg: Segment) -> Box | None:
     them; None when the path comes too near the centre of rotation)."""
     if seg.kind is not SegmentKind.POLAR:
         return _piece_box(seg)
-    from ..polar import (
+    from ..geometry.polar import (
         CentreCrossing,
         angle_range,
         point_angle,

@@ -31,8 +31,8 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..cylinder import DevelopedArc, cylinder_of, degree_length, developed_arc_of
 from ..exact import Interval, format_decimal, round_up_scaled
+from ..geometry.cylinder import DevelopedArc, cylinder_of, degree_length, developed_arc_of
 from ..motion import Segment, SegmentKind
 from . import exact as ex
 from .enclosed import box_depth, certify_box, enclosed_violation

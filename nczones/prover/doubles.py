@@ -1,8 +1,8 @@
-"""``safe`` from the double pass (:mod:`nczones.gcode.doubles`, run by :mod:`nczones.pipeline`): boxes that hold
+"""``safe`` from the double pass (:mod:`nczones.gcode.linuxcnc.doubles`, run by :mod:`nczones.pipeline`): boxes that hold
 the motion, proved exactly.
 
 The double pass gives every motion's end point as doubles with a bound on its distance from the full
-path's exact point, and :meth:`~nczones.gcode.doubles.DoublePath.enclosure` turns a run of motions into an
+path's exact point, and :meth:`~nczones.gcode.linuxcnc.doubles.DoublePath.enclosure` turns a run of motions into an
 exact box holding every position of those motions.  When such boxes, proved with the exact box test of the
 per-motion path (:func:`nczones.prover.exact.box_fits`, every zone kind, the margin), cover every motion,
 every motion of the full path fits: the program is ``safe``.  This is a sound over-approximation of the
@@ -82,7 +82,7 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
 
 
 class WindowProof:
-    """``on_window`` for :func:`nczones.gcode.doubles.double_pass`: proves each window of a long program as
+    """``on_window`` for :func:`nczones.gcode.linuxcnc.doubles.double_pass`: proves each window of a long program as
     the pass hands it over (then the pass drops its rows), counting the boxes; False stops the pass."""
 
     def __init__(self, machine: Machine, margin: Fraction):
@@ -111,7 +111,7 @@ def _max_boxes(path: Any) -> int:
 
 def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: float | None = None,
                       windows: WindowProof | None = None) -> Result | None:
-    """A ``safe`` result for the double pass's path (:func:`nczones.gcode.doubles.double_pass`), or None when
+    """A ``safe`` result for the double pass's path (:func:`nczones.gcode.linuxcnc.doubles.double_pass`), or None when
     its boxes do not prove the program (the caller then runs the full path).  ``started`` is when the pass
     began (:func:`time.perf_counter`), for the timings; ``windows`` the proof of the windows the pass handed
     over before ``path``, its last."""

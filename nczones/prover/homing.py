@@ -1,6 +1,6 @@
 """Z3 proofs about homing with a near-zero dog, grid points and a grid shift.
 
-The model is the configuration's arithmetic (:mod:`nczones.homing`), written as
+The model is the configuration's arithmetic (:mod:`nczones.plans.homing`), written as
 linear integer/real arithmetic over exact rationals (search coordinate
 ``sigma = direction * x``, lengths in mm, pulse positions as integers):
 
@@ -16,13 +16,13 @@ linear integer/real arithmetic over exact rationals (search coordinate
 Each claim is proved by showing its negation unsatisfiable (universally
 quantified over the detector phase and the trip offsets), or refuted with a
 counterexample, which the closed form of the same arithmetic
-(:func:`nczones.homing.origin_error_pulses`) confirms; the pulse simulation of
+(:func:`nczones.plans.homing.origin_error_pulses`) confirms; the pulse simulation of
 the reference controller replays it independently (``nczones home --prove``,
 the differential tests).  Z3 runs with a fixed random seed and a timeout; a
 timeout gives ``unknown``, never ``proved``.
 
 >>> from fractions import Fraction
->>> from nczones.homing import HomingConfig
+>>> from nczones.plans.homing import HomingConfig
 >>> cfg = HomingConfig("X", -1, Fraction(3000), Fraction(300), Fraction(5), Fraction(20),
 ...                    Fraction(10), Fraction(3), switch_jitter=Fraction(1, 50), start=Fraction(40))
 >>> prove_exact_after_installation(cfg, Fraction(1, 1000)).status.value
@@ -45,7 +45,7 @@ import z3
 
 from ..errors import InvalidArgument
 from ..exact import format_decimal
-from ..homing import (
+from ..plans.homing import (
     HomingConfig,
     edge_to_grid_distance,
     exactness_margin,
@@ -84,7 +84,7 @@ class HomingCounterexample:
 
     ``origin_error_pulses`` is what the Z3 model says (controller zero minus
     machine zero, machine pulses); ``confirmed`` says that the closed form of
-    the grid arithmetic (:func:`nczones.homing.origin_error_pulses`) gives the
+    the grid arithmetic (:func:`nczones.plans.homing.origin_error_pulses`) gives the
     same error at the same phase and trip offset.
     """
 
@@ -404,7 +404,7 @@ def prove_homing(cfg: HomingConfig, pulse: Fraction) -> HomingProofReport:
 
     Examples
     --------
-    >>> from nczones.homing import HomingConfig
+    >>> from nczones.plans.homing import HomingConfig
     >>> cfg = HomingConfig("X", -1, Fraction(3000), Fraction(300), Fraction(5), Fraction(20),
     ...                    Fraction(10), Fraction(3), switch_jitter=Fraction(1, 50), start=Fraction(40))
     >>> report = prove_homing(cfg, Fraction(1, 1000))

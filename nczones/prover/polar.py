@@ -2,7 +2,7 @@
 
 A polar move (``SegmentKind.POLAR``) is a line or an arc in the programmed
 plane; the machine follows it with X = ``x_off + |p|`` and C = ``c_entry +``
-the unwound angle of ``p`` (:mod:`nczones.polar`).  Square roots and arc
+the unwound angle of ``p`` (:mod:`nczones.geometry.polar`).  Square roots and arc
 tangents of rationals are irrational, so the move is decided by sound
 enclosure and refinement (DESIGN §5), as developed arcs are:
 
@@ -37,8 +37,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..exact import Interval, format_decimal
-from ..motion import Segment
-from ..polar import (
+from ..geometry.polar import (
     CentreCrossing,
     PolarMove,
     angle_range,
@@ -47,6 +46,7 @@ from ..polar import (
     polar_of,
     radius_range,
 )
+from ..motion import Segment
 from . import exact as ex
 from .enclosed import box_depth, certify_box, enclosed_violation
 from .result import Outcome, Reason, Violation

@@ -1,6 +1,6 @@
 """Proving tool-break recovery: every break point, every recovery leg (DESIGN §6, issue 9).
 
-The recovery path (:func:`nczones.recovery.recovery_legs`) depends
+The recovery path (:func:`nczones.plans.recovery.recovery_legs`) depends
 on where the tool breaks.  The prover does not sample break points: the
 break parameter is a variable.
 
@@ -10,7 +10,7 @@ break parameter is a variable.
   sector (half-plane tests, exact); on a helix the other axes are enclosed
   between their start and end values (an over-approximation).
 * The legs — which, from where to where, with which tool, rapid or feed —
-  are the shared plan (:func:`nczones.recovery.plan_legs`) computed in SMT
+  are the shared plan (:func:`nczones.plans.recovery.plan_legs`) computed in SMT
   terms of the break variables: the restart point is the constant sequence
   start (``start``) or ``P(s)`` itself (``breakpoint``), the plan's maxima
   (the retract height ``max(P_z, clearance)``) become ``ite`` terms.  Only
@@ -49,7 +49,7 @@ from typing import Any
 
 from ..machine import Machine, RapidMode
 from ..motion import Segment, SegmentKind, segments_of, tip_offset
-from ..recovery import (
+from ..plans.recovery import (
     RecoveryLeg,
     RecoveryVariant,
     ToolChangeConfig,
@@ -72,7 +72,7 @@ from .smt import add, mul, or_all, q, sub, zone_violation
 __all__ = ["RecoveryOutcome", "verify_recovery"]
 
 #: Feed motions a tool can break in whose break points the recovery proof does not place: the recovery
-#: from them is ``unknown`` (RC201), never assumed (they are not LINE or ARC, see ``nczones.recovery.is_cutting``).
+#: from them is ``unknown`` (RC201), never assumed (they are not LINE or ARC, see ``nczones.plans.recovery.is_cutting``).
 _UNMODELLED_FEEDS = {
     SegmentKind.DEVELOPED_ARC: "a developed arc in cylindrical interpolation (G07.1)",
     SegmentKind.SPLINE: "a spline (G5, G5.1, G5.2, G6.2)",

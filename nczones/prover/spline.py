@@ -1,10 +1,10 @@
-"""Prover for SPLINE segments (exact NURBS curves, :mod:`nczones.nurbs`).
+"""Prover for SPLINE segments (exact NURBS curves, :mod:`nczones.geometry.nurbs`).
 
 Enclosure: with positive weights the whole curve lies in the convex hull of
 its control points, and the curve over one knot span in the convex hull of
 that span's ``degree + 1`` control points.  The box of all control points
 is screened first (one exact test proves most curves); otherwise each knot
-span is a piece (:meth:`nczones.nurbs.Nurbs.span_curve`, no knot
+span is a piece (:meth:`nczones.geometry.nurbs.Nurbs.span_curve`, no knot
 insertion), and each piece is
 
 1. screened exactly: the bounding box of its control points fits every zone
@@ -30,8 +30,8 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
+from ..geometry.nurbs import Nurbs, spline_curve
 from ..motion import Segment
-from ..nurbs import Nurbs, spline_curve
 from ..zones import ZonePoint
 from . import exact as ex
 from .result import Outcome, Reason, Violation

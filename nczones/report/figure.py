@@ -290,6 +290,20 @@ def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
     return [a[..., [h, v]] for a in arrs]
 
 
+def _draw_zones(ax: Any, machine: Machine, plane: Sequence[str], path: Any, result: Any) -> None:
+    """Every zone where the proof puts it: tip zones moved by the placement of the tool active at each
+    violating block (each further placement adds its own tip zones), machine zones as they are; the fixture
+    solids and the tool at each solid violation's contact."""
+    from .solids_view import draw_contacts
+
+    placements = drawing_placements(path)
+    first = placements[0] if placements else None
+    draw_allowed_set(drawing_machine(machine, first), plane, ax, tip_label=placement_label(machine, first))
+    for k, extra in enumerate(placements[1:], start=2):
+        draw_tip_zones(drawing_machine(machine, extra), plane, ax, placement_label(machine, extra), k)
+    draw_contacts(ax, machine, plane, result)
+
+
 def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane: Sequence[str] | None = None,
                  result: Any = None, *, ax: Any = None, path: PathFloat | None = None, title: str | None = None,
                  legend: bool = True, diameter: bool = False, zoom: bool = False) -> Any:
@@ -358,16 +372,7 @@ def plot_program(program: Any, machine: Machine | str | os.PathLike[str], plane:
     if ax is None:
         fig, ax = plt.subplots(figsize=(7.5, 5))
     fig = ax.figure
-    # every zone where the proof puts it: tip zones moved by the placement of the tool active at each
-    # violating block (each further placement adds its own tip zones), machine zones as they are
-    placements = drawing_placements(path)
-    first = placements[0] if placements else None
-    draw_allowed_set(drawing_machine(machine, first), plane, ax, tip_label=placement_label(machine, first))
-    for k, extra in enumerate(placements[1:], start=2):
-        draw_tip_zones(drawing_machine(machine, extra), plane, ax, placement_label(machine, extra), k)
-    from .solids_view import draw_contacts
-
-    draw_contacts(ax, machine, plane, result)  # fixture solids, the tool at each solid violation's contact
+    _draw_zones(ax, machine, plane, path, result)
     blue = "#1f4e9c"
     feeds = [a[:, :, [h, v]] for a in path.feed_lines]
     feed_segs = (list(np.concatenate(feeds)) if feeds else []) + _project(path.feed_curves, h, v)

@@ -220,6 +220,15 @@ def _solid_traces2d(solid: Any, name: str, forbid: bool, group: str, first: bool
              "line": {"color": "#b22222" if forbid else _GREEN, "width": 1.5}}]
 
 
+def _contact_traces(result: Any, machine: Machine, axes: Sequence[str], lims: list[tuple[float, float]]
+                    ) -> list[dict[str, Any]]:
+    """The fixture solids and the tool at each solid violation's contact (:mod:`nczones.report.solids_view`)."""
+    from .solids_view import contact_traces
+
+    out: list[dict[str, Any]] = contact_traces(result, machine, axes, lims, _solid_traces3d)
+    return out
+
+
 def _zone_traces(machine: Machine, path: PathFloat, axes: Sequence[str], lims: list[tuple[float, float]]
                  ) -> list[dict[str, Any]]:
     """Every zone where the proof puts it: tip zones moved by the placement of the tool active at the
@@ -293,10 +302,7 @@ def view_data(path: PathFloat, result: Any, machine: Machine, *, max_points: int
     three = len(axes) == 3
     kind = "scatter3d" if three else "scatter"
     keys = ("x", "y", "z")[:len(axes)]
-    traces = _zone_traces(machine, path, axes, lims)
-    from .solids_view import contact_traces
-
-    traces += contact_traces(result, machine, axes, lims, _solid_traces3d)
+    traces = _zone_traces(machine, path, axes, lims) + _contact_traces(result, machine, axes, lims)
 
     def line_trace(name: str, coords: list[list[float | None]], custom: list[int | None], meta: str,
                    line: dict[str, Any]) -> dict[str, Any]:

@@ -173,7 +173,7 @@ def _arc_float_points(seg: Segment, steps_per_turn: int = 360) -> list[tuple[flo
 
 def _developed_arc_float_points(seg: Segment, samples: int = 48) -> list[tuple[float, ...]]:
     """Float samples of a G07.1 arc in machine coordinates (linear axis mm, rotary degrees)."""
-    from ..cylinder import cylinder_of, developed_arc_of
+    from ..geometry.cylinder import cylinder_of, developed_arc_of
 
     info = cylinder_of(seg)
     if info is None:
@@ -193,7 +193,7 @@ def _developed_arc_float_points(seg: Segment, samples: int = 48) -> list[tuple[f
 
 def _spline_float_points(seg: Segment, per_span: int = 12) -> list[tuple[float, ...]]:
     """Float samples of a SPLINE's exact NURBS curve (exact points at rational parameters, then floats)."""
-    from ..nurbs import spline_curve
+    from ..geometry.nurbs import spline_curve
 
     curve = spline_curve(seg)
     out = [tuple(to_float(c) for c in curve.points[0])]

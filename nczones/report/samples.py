@@ -1,7 +1,7 @@
 """Float samples of exactly defined paths, for plots and for replaying a report's points.
 
 Floats are for pictures and approximate distances only: the prover and the controller never read
-these.  The exact geometry lives in :mod:`nczones.polar` and the other curve modules.
+these.  The exact geometry lives in :mod:`nczones.geometry.polar` and the other curve modules.
 """
 
 from __future__ import annotations
@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
+from ..geometry.polar import polar_move_of, polar_of
 from ..motion import Segment
-from ..polar import polar_move_of, polar_of
 
 __all__ = ["polar_float_points"]
 

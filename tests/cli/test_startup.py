@@ -21,7 +21,7 @@ MILL = str(ROOT / "specs" / "machines" / "mill.toml")
 
 #: What a light start must not load: the numeric and drawing libraries, the solver, and the two witnesses.
 HEAVY = ("numpy", "z3", "shapely", "matplotlib", "nczones.controller", "nczones.prover", "nczones.report",
-         "nczones.gcode", "nczones.fleet", "nczones.imports", "nczones.homing", "nczones.recovery", "nczones.solids")
+         "nczones.gcode", "nczones.fleet", "nczones.imports", "nczones.plans.homing", "nczones.plans.recovery", "nczones.solids")
 
 
 def loaded_after(code: str) -> set[str]:
@@ -49,8 +49,8 @@ def test_a_light_start_loads_no_heavy_module(code):
 #: other witness.
 NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.metadata", "nczones.controller",
                           "nczones.fleet", "nczones.imports", "nczones.gcode.fastpath", "nczones.prover.screen",
-                          "nczones.prover.polygon", "nczones.homing", "nczones.recovery", "nczones.solids",
-                          "nczones.gcode.lathe", "nczones.gcode.cylindrical", "nczones.gcode.g7x")
+                          "nczones.prover.polygon", "nczones.plans.homing", "nczones.plans.recovery", "nczones.solids",
+                          "nczones.gcode.linuxcnc.lathe", "nczones.gcode.cylindrical", "nczones.gcode.linuxcnc.g7x")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -81,9 +81,9 @@ def test_a_machine_file_section_imports_its_parser_when_it_appears():
     homing_mill = str(ROOT / "specs" / "machines" / "homing_mill.toml")
     solids_mill = str(ROOT / "specs" / "machines" / "mill_solids.toml")
     probe = "import sys\nfrom nczones import load_machine\nm = load_machine({!r})\n" \
-            "print(sorted(m.sections), sorted(x for x in ('nczones.homing', 'nczones.recovery', 'nczones.solids') " \
+            "print(sorted(m.sections), sorted(x for x in ('nczones.plans.homing', 'nczones.plans.recovery', 'nczones.solids') " \
             "if x in sys.modules))"
-    for machine, sections, modules in ((MILL, [], []), (homing_mill, ["homing"], ["nczones.homing"]),
+    for machine, sections, modules in ((MILL, [], []), (homing_mill, ["homing"], ["nczones.plans.homing"]),
                                        (solids_mill, ["fixtures", "spindle", "tools"], ["nczones.solids"])):
         r = subprocess.run([sys.executable, "-c", probe.format(machine)], capture_output=True, text=True, cwd=ROOT)
         assert r.returncode == 0, r.stderr

@@ -55,8 +55,8 @@ from nczones.errors import InputError, MachineFileError
 from nczones.gcode import interpret_text
 from nczones.machine import Machine, parse_machine
 from nczones.motion import SegmentKind, segments_of
+from nczones.plans.recovery import LEG_NAMES, ToolChangeConfig, is_cutting
 from nczones.prover import parse_param
-from nczones.recovery import LEG_NAMES, ToolChangeConfig, is_cutting
 
 from .metamorphic import (
     MetamorphicViolation,

@@ -1,4 +1,4 @@
-"""The double pass (:mod:`nczones.gcode.doubles`, :mod:`nczones.prover.doubles`) against the full path.
+"""The double pass (:mod:`nczones.gcode.linuxcnc.doubles`, :mod:`nczones.prover.doubles`) against the full path.
 
 An adversary's generator, written apart from the double pass's own tests: programs at the edges of the
 pass's subset (parameter reads and writes, odd numbers, codes written oddly, work offsets, feeds, modal
@@ -11,7 +11,7 @@ path"):
    verdict, violations, reasons and notes, or the same input error; when the pass itself decided
    ``safe``, the brute force (``tests/oracles/bruteforce.py``) finds no exact point of the full path's
    motion outside the allowed set.
-2. Whenever :func:`~nczones.gcode.doubles.double_pass` returns a path, the full interpreter completes
+2. Whenever :func:`~nczones.gcode.linuxcnc.doubles.double_pass` returns a path, the full interpreter completes
    with no unknown code, no assumed modal state and no notes, with as many segments and blocks as the
    path, its vectorized and general runs move alike, and the start and end of its k-th segment lie in
    ``path.enclosure(k, k)``.
@@ -41,7 +41,7 @@ from hypothesis import strategies as st
 import nczones.pipeline.verification as prover_doubles
 from nczones.errors import NczonesError
 from nczones.gcode import interpret_text
-from nczones.gcode.doubles import Declined, double_pass
+from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from tests.machines import machine_text

@@ -20,10 +20,10 @@ import pytest
 from nczones.errors import GcodeError
 from nczones.gcode import fastpath, interpret_text
 from nczones.gcode.codes import FANUC_G, LATHE_REASON, LINUXCNC_G, LINUXCNC_M, gname
-from nczones.gcode.doubles import CODES as DOUBLES_CODES
-from nczones.gcode.doubles import Declined, double_pass
 from nczones.gcode.fastpath import CODES as FAST_CODES
 from nczones.gcode.interpreter import GROUP_OF, PLAIN_CODES, Interpreter
+from nczones.gcode.linuxcnc.doubles import CODES as DOUBLES_CODES
+from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.machine import parse_machine
 from tests.machines import machine_text
 

@@ -213,8 +213,8 @@ def test_corpus_outcomes_sample(capsys):
 
 def test_nurbs_programs_are_interpreted_as_splines():
     """G6.2 and G5.2 corpus programs end complete, with SPLINE segments whose curves are valid clamped NURBS."""
+    from nczones.geometry.nurbs import spline_curve
     from nczones.motion import SegmentKind
-    from nczones.nurbs import spline_curve
 
     rels = [r for r, _ in programs() if re.search(r"nurbs/G6/homer #1=1\.ngc$|nurbs/G5/nurbs-zx\.ngc$", r)]
     if len(rels) < 2:

@@ -1,4 +1,4 @@
-"""LinuxCNC cutter radius compensation (nczones.gcode.cutter_comp): hand-computed paths, refusals, identities."""
+"""LinuxCNC cutter radius compensation (nczones.gcode.linuxcnc.cutter_comp): hand-computed paths, refusals, identities."""
 
 from __future__ import annotations
 

@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from nczones.gcode import interpret_text
-from nczones.gcode.doubles import double_pass
+from nczones.gcode.linuxcnc.doubles import double_pass
 from nczones.machine import load_machine
 from nczones.prover import verify_text
 from nczones.prover.core import Verdict

@@ -1,4 +1,4 @@
-"""The double pass (nczones/gcode/doubles.py) against the full interpreter.
+"""The double pass (nczones/gcode/linuxcnc/doubles.py) against the full interpreter.
 
 The module's invariant: whenever the pass returns, the full interpreter runs the same program to the end
 with no error, no unknown code and no note, with as many motions and blocks, and the exact start and end of
@@ -17,7 +17,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nczones.gcode import interpret_text
-from nczones.gcode.doubles import Declined, DoublePath, double_pass
+from nczones.gcode.linuxcnc.doubles import Declined, DoublePath, double_pass
 from nczones.machine import parse_machine
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "120"))

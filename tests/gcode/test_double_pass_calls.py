@@ -18,7 +18,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from nczones.gcode.doubles import Declined, double_pass
+from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.prover import Verdict, verify_text
 
 from .test_double_pass import (

@@ -8,7 +8,7 @@ from fractions import Fraction
 import pytest
 
 from nczones.gcode import interpret_text as interpret
-from nczones.gcode.state import linuxcnc_state_parameters
+from nczones.gcode.linuxcnc.state import linuxcnc_state_parameters
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import parse_param
 from nczones.prover import verify_text as verify

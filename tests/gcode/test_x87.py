@@ -1,4 +1,4 @@
-"""LinuxCNC's trigonometry in x87 long double (nczones/gcode/x87.py) against numpy's 80-bit longdouble.
+"""LinuxCNC's trigonometry in x87 long double (nczones/gcode/linuxcnc/x87.py) against numpy's 80-bit longdouble.
 
 numpy's ``longdouble`` is the x87 format on x86-64 and its ``sin`` calls the same ``sinl``: an independent
 computation of the same formulas (``sin((x * M_PIl) / 180.0)``, ``(r * 180.0) / M_PIl``), rounded to double

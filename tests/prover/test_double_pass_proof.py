@@ -163,7 +163,7 @@ def test_the_enclosure_holds_every_exact_value_the_double_stands_for(d, offset):
     import math
     from array import array
 
-    from nczones.gcode.doubles import DoublePath
+    from nczones.gcode.linuxcnc.doubles import DoublePath
 
     off = Fraction(offset)
     m = d + float(off)
@@ -187,7 +187,7 @@ def test_the_progress_bar_gets_its_last_step(monkeypatch):
 
 
 def test_ctrl_c_in_the_double_pass_is_an_interrupted_result(monkeypatch):
-    import nczones.gcode.doubles as doubles
+    import nczones.gcode.linuxcnc.doubles as doubles
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt

@@ -1,7 +1,7 @@
 """The double pass in windows (issue 36: no size cliff, flat memory).
 
 The pass hands its motion to the prover in windows of ``WINDOW`` motions and drops them
-(:func:`nczones.gcode.doubles.double_pass` with ``on_window``), so no program is too long for it and its
+(:func:`nczones.gcode.linuxcnc.doubles.double_pass` with ``on_window``), so no program is too long for it and its
 memory is flat.  Here the window is made tiny so that short programs cross many window edges, and:
 
 - the windows, put back together (each window's first row is the last motion's start, the overlap of one
@@ -21,9 +21,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-import nczones.gcode.doubles as doubles
+import nczones.gcode.linuxcnc.doubles as doubles
 import nczones.pipeline.verification as pipeline
-from nczones.gcode.doubles import Declined, double_pass
+from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.prover import verify_text
 from nczones.prover.doubles import WindowProof, prove_double_path
 from nczones.prover.result import Verdict

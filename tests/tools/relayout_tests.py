@@ -15,7 +15,7 @@ its ``parents[N]`` and relative imports are left unfixed).  Edits a branch made 
 rename either way.
 
 The layout: a test folder is named after the nczones package or module it tests (tests/gcode/fanuc for
-nczones/gcode/fanuc/, tests/polar for nczones/polar.py), except the named cross-cutting folders
+nczones/gcode/fanuc/, tests/polar for nczones/geometry/polar.py), except the named cross-cutting folders
 (tests/packaging/test_layout.py lists them).  Today's feature folders are moved by FOLDER_RULES (every file
 under the old folder, whatever its name: a branch merged later that adds a file to an old folder gets it
 moved by the next run) and SPLIT_RULES (an old folder whose files go to several packages, by file name).
@@ -51,8 +51,12 @@ from pathlib import Path
 FOLDER_RULES: dict[str, str] = {
     "tests/fanuc": "tests/gcode/fanuc",  # nczones/gcode/fanuc/
     "tests/turning": "tests/gcode/turning",  # nczones/gcode/turning.py, lathe.py, g7x.py
-    "tests/cylindrical": "tests/gcode/cylindrical",  # nczones/gcode/cylindrical.py (+ nczones/cylinder.py)
-    "tests/splines": "tests/gcode/splines",  # nczones/gcode/splines.py (+ nczones/nurbs.py)
+    "tests/cylindrical": "tests/gcode/cylindrical",  # nczones/gcode/cylindrical.py (+ nczones/geometry/cylinder.py)
+    "tests/splines": "tests/gcode/linuxcnc/splines",  # nczones/gcode/linuxcnc/splines.py (+ geometry/nurbs.py)
+    "tests/gcode/splines": "tests/gcode/linuxcnc/splines",  # (where the first layout put them)
+    "tests/homing": "tests/plans/homing",  # nczones/plans/homing.py (+ the controller's and prover's homing)
+    "tests/recovery": "tests/plans/recovery",  # nczones/plans/recovery.py (+ the controller's and prover's)
+    "tests/polar": "tests/geometry/polar",  # nczones/geometry/polar.py (+ the G12.1 lanes)
 }
 
 # old folder -> [(file name pattern, new folder)], first match wins; SPLIT_DEFAULT if none matches

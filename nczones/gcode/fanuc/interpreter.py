@@ -387,8 +387,7 @@ class FanucInterpreter(Interpreter):
                 raise self.error("GC209", f"tool number {words['T'].text} must be a non-negative integer", words["T"])
             self.tool_selected = int(t)
         if 6 in mset:
-            self.tool_in_spindle = self.tool_selected
-            self.spindle_changed()
+            self.put_in_spindle(self.tool_selected)
         if "D" in words:
             self.last["D"] = words["D"].value
         self._record_block(block, mcodes, mset)

@@ -18,7 +18,7 @@ and changes what differs on a lathe (``specs/turning.md``):
   every generated move is a segment with the cycle block's span and a label naming the pass;
 * polar coordinate interpolation (G12.1/G13.1, G112/G113) on a machine with X and C: the path in the
   programmed plane, one ``SegmentKind.POLAR`` segment a block (:mod:`nczones.gcode.fanuc.polar`,
-  :mod:`nczones.polar`).
+  :mod:`nczones.geometry.polar`).
 
 Anything the manuals define but nczones does not model is ``unknown`` with the reason.
 """
@@ -30,9 +30,9 @@ from fractions import Fraction
 from typing import Any
 
 from ...exact import Interval, is_square
+from ...geometry.polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ...machine import Machine, ToolOffset
 from ...motion import Plane, PolarData, SegmentKind, TipOffset, TurretTool
-from ...polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ..blocks import Block, ShapeBlock, Word
 from ..interpreter import AXIS_LETTERS, StopProgram, dadd, fmt_number, gkey, gname, qadd
 from ..passes import PassBound

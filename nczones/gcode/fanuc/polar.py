@@ -3,7 +3,7 @@ tables (the blocks are executed by :class:`~nczones.gcode.fanuc.lathe.FanucLathe
 
 ``G12.1`` switches the mode on, ``G13.1`` off (each in a block of its own;
 plane, feed-mode and G40 codes may share it).  In the mode the program is a
-path in a Cartesian plane fixed to the workpiece (:mod:`nczones.polar`):
+path in a Cartesian plane fixed to the workpiece (:mod:`nczones.geometry.polar`):
 the linear axis X (its words read as elsewhere on this machine: diameters on
 a ``diameter_axes`` axis, ``U`` incremental) and the *hypothetical axis*
 written with the rotary axis' address C (millimetres; ``H`` incremental in G

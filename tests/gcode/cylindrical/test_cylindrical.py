@@ -13,9 +13,15 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from nczones.cylinder import Interval, degree_length, developed_arc, developed_arc_of, pi_interval
 from nczones.errors import GcodeError
 from nczones.gcode import segments_text
+from nczones.geometry.cylinder import (
+    Interval,
+    degree_length,
+    developed_arc,
+    developed_arc_of,
+    pi_interval,
+)
 from nczones.machine import parse_machine
 from nczones.motion import Developed, SegmentKind
 from nczones.prover import verify_text

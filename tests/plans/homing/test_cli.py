@@ -12,7 +12,7 @@ import pytest
 from nczones.cli import main
 from nczones.machine import load_machine
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 MILL = "specs/machines/homing_mill.toml"
 GOLDEN = ROOT / "tests" / "golden" / "homing"
 REGEN = os.environ.get("NCZONES_REGEN_GOLDEN") == "1"

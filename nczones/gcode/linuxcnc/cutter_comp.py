@@ -51,17 +51,17 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, Protocol
 
-from ..errors import Diagnostic, GcodeError
-from ..exact import to_float
-from ..motion import PLANE_AXES, Plane, SegmentKind
+from ...errors import Diagnostic, GcodeError
+from ...exact import to_float
+from ...motion import PLANE_AXES, Plane, SegmentKind
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
-    from ..errors import SourceSpan
-    from ..machine import Machine
-    from ..motion import ProgramFrame, Segment
-    from .blocks import Block, Word
+    from ...errors import SourceSpan
+    from ...machine import Machine
+    from ...motion import ProgramFrame, Segment
+    from ..blocks import Block, Word
 
 
 class CompensatedInterpreter(Protocol):
@@ -369,7 +369,7 @@ class CutterComp:
         if type(it).__name__ not in ("Interpreter", "LatheInterpreter"):
             it.unknown(name, "cutter radius compensation with cylindrical interpolation is not modelled", word)
         if it.ranged:
-            from .segments import dadd
+            from ..segments import dadd
 
             # the compensation is computed in the program frame; offsets cannot change while it is on, so
             # it follows the ranges exactly when the position it starts from is fixed in that frame
@@ -468,7 +468,7 @@ class CutterComp:
     def _dequeue(self) -> None:
         """Emit the queued moves (LinuxCNC ``dequeue_canons``; a lathe tool's moves shifted from the nose centre
         to its controlled point)."""
-        from .segments import make_segment, with_tool_deps
+        from ..segments import make_segment, with_tool_deps
 
         it = self.it
         self.endpoint_valid = False
@@ -883,7 +883,7 @@ class CutterComp:
             self._enqueue(_Move(SegmentKind.DWELL, 0.0, 0.0, [], dwell=seconds))
             return
         if it.machine_at is not None:  # after G40 the machine stands at the compensated point
-            from .segments import make_segment, with_tool_deps
+            from ..segments import make_segment, with_tool_deps
 
             deps = it.deps_tuple(it.dep_pos) if it.track else ()
             dt = it.tool_dep_names() if it.track else ()

@@ -1,7 +1,7 @@
 """Spline motion codes (LinuxCNC): G5 cubic, G5.1 quadratic, G5.2/G5.3 and G6.2 NURBS.
 
 Every curve becomes one :data:`~nczones.motion.SegmentKind.SPLINE` segment
-holding the exact NURBS (see :mod:`nczones.nurbs`) in ``Segment.extra``:
+holding the exact NURBS (see :mod:`nczones.geometry.nurbs`) in ``Segment.extra``:
 ``degree``, ``knots``, ``control`` (control points in machine coordinates,
 one full tuple per point: the axes outside the plane stay where they are),
 ``weights`` and ``source`` (the G code).  ``start`` is the first control
@@ -41,8 +41,8 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..motion import PLANE_AXES, Plane, SegmentKind, SplineCurve
-from ..nurbs import Nurbs, NurbsError, clamped_uniform_knots
+from ...geometry.nurbs import Nurbs, NurbsError, clamped_uniform_knots
+from ...motion import PLANE_AXES, Plane, SegmentKind, SplineCurve
 
 __all__ = ["SPLINE_CODES", "spline_block", "spline_pending"]
 

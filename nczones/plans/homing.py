@@ -45,9 +45,9 @@ from math import floor
 from types import MappingProxyType
 from typing import Any
 
-from .errors import Diagnostic, InvalidArgument, MachineFileError, SourceSpan, close_matches
-from .exact import format_decimal
-from .machine import Machine, as_written, read_number
+from ..errors import Diagnostic, InvalidArgument, MachineFileError, SourceSpan, close_matches
+from ..exact import format_decimal
+from ..machine import Machine, as_written, read_number
 
 __all__ = [
     "HomingConfig",

@@ -62,11 +62,11 @@ from fractions import Fraction
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Protocol, Union
 
-from .expr import EvalError
+from ..expr import EvalError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..machine import Machine
-    from ..motion import Plane
+    from ...machine import Machine
+    from ...motion import Plane
 
 __all__ = [
     "StateValue",
@@ -344,7 +344,7 @@ def linuxcnc_state_parameters() -> StateTable:
     add("_retract_old_z", "G98 active (retract to the initial level)", lambda it: 0 if it.retract_r else 1)
     add("_feed", "feed rate (program units; after a feed move in G93 LinuxCNC's is that move's length x F, "
         "not followed)", lambda it: None if getattr(it, "feed_inverse_rate", False) else it.feed)
-    # G7/G8 live in the lathe interpreter (nczones.gcode.lathe); the others have no diameter mode (G8)
+    # G7/G8 live in the lathe interpreter (nczones.gcode.linuxcnc.lathe); the others have no diameter mode (G8)
     add("_lathe_diameter_mode", "G7 active", lambda it: 1 if getattr(it, "diameter_mode", False) else 0)
     add("_lathe_radius_mode", "G8 active", lambda it: 0 if getattr(it, "diameter_mode", False) else 1)
     for name, what in (("_line", "current sequence number"), ("_vmajor", "LinuxCNC version"),

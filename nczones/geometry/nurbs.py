@@ -33,7 +33,7 @@ from fractions import Fraction
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from .motion import Segment
+    from ..motion import Segment
 
 __all__ = ["Nurbs", "clamped_uniform_knots", "NurbsError", "spline_curve"]
 
@@ -254,7 +254,7 @@ def spline_curve(seg: "Segment") -> Nurbs:
     The interpreter stores the curve in the segment's ``extra``: ``degree``,
     ``knots``, ``control`` points and ``weights``.
     """
-    from .motion import SplineCurve
+    from ..motion import SplineCurve
 
     e = seg.payload(SplineCurve)
     if e is None:

@@ -65,9 +65,9 @@ from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any, Generic, Protocol, TypeVar
 
-from .errors import Diagnostic, InvalidArgument, MachineFileError, close_matches
-from .machine import Machine, as_written, read_number
-from .motion import Segment, SegmentKind, TipOffset
+from ..errors import Diagnostic, InvalidArgument, MachineFileError, close_matches
+from ..machine import Machine, as_written, read_number
+from ..motion import Segment, SegmentKind, TipOffset
 
 __all__ = [
     "RecoveryVariant",

@@ -10,14 +10,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.controller.spline import FLATNESS, spline_chord_points, spline_positions
+from nczones.geometry.nurbs import Nurbs, clamped_uniform_knots
 from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind, SplineCurve
-from nczones.nurbs import Nurbs, clamped_uniform_knots
 from nczones.prover.core import Prover, verify_segments
 from nczones.prover.result import Verdict
 from tests.machines import machine_text
 
-ROOT = Path(__file__).resolve().parents[3]
+ROOT = Path(__file__).resolve().parents[4]
 
 coord = st.integers(-40, 40).map(lambda v: F(v, 4))
 weight = st.integers(1, 6).map(lambda v: F(v, 2))
@@ -173,7 +173,7 @@ def test_the_shared_curve_of_a_spline_segment_is_the_rational_one():
     curve that dropped its weights would give (1, 1/2).  The prover and the controller cannot catch such
     a bug by comparing each other, since both take their curve from this one function.
     """
-    from nczones.nurbs import spline_curve
+    from nczones.geometry.nurbs import spline_curve
 
     c = Nurbs(2, (F(0),) * 3 + (F(1),) * 3, ((F(0), F(0)), (F(1), F(1)), (F(2), F(0))), (F(1), F(2), F(1)))
     assert spline_curve(spline_segment(c)).point(F(1, 2)) == (F(1), F(2, 3))

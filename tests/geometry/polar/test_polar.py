@@ -16,9 +16,7 @@ from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
 from nczones.gcode import interpret_text, segments_text
-from nczones.machine import parse_machine
-from nczones.motion import SegmentKind
-from nczones.polar import (
+from nczones.geometry.polar import (
     CentreCrossing,
     angle_range,
     polar_move,
@@ -26,10 +24,12 @@ from nczones.polar import (
     radius_range,
     walk_angle,
 )
+from nczones.machine import parse_machine
+from nczones.motion import SegmentKind
 from nczones.prover import verify_text
 from tests.machines import machine_text
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 EX = ROOT / "specs" / "examples"
 
 
@@ -313,8 +313,8 @@ def _enclosures_contain(x0, y0, x1, y1, ci, cj, arc, cw, t, spiral, fs):
 @settings(max_examples=200, deadline=None, derandomize=True)
 @given(num=st.integers(-10**30, 10**30), den=st.integers(1, 10**30))
 def test_arc_tangent_enclosure_contains_the_80_digit_value(num, den):
-    """The fixed-point series of nczones.cylinder (its rounding errors counted) encloses atan within 1e-55."""
-    from nczones.cylinder import atan_point, pi_interval
+    """The fixed-point series of nczones.geometry.cylinder (its rounding errors counted) encloses atan within 1e-55."""
+    from nczones.geometry.cylinder import atan_point, pi_interval
 
     with mpmath.workdps(80):
         a = atan_point(F(num, den))

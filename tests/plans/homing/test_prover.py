@@ -11,7 +11,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nczones.controller.homing import measure_grid_shift, simulate_homing
-from nczones.homing import HomingConfig, origin_error_pulses, predict_latch, window_is_clear
+from nczones.plans.homing import HomingConfig, origin_error_pulses, predict_latch, window_is_clear
 from nczones.prover.homing import (
     ProofStatus,
     _Model,

@@ -47,7 +47,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
-from .exact import (
+from ..exact import (
     GRID_BITS,
     Interval,
     asin_interval,
@@ -55,11 +55,11 @@ from .exact import (
     round_up_scaled,
     sin_cos_interval,
 )
-from .exact import atan_interval as atan_point
-from .motion import Developed
+from ..exact import atan_interval as atan_point
+from ..motion import Developed
 
 if TYPE_CHECKING:
-    from .motion import Segment
+    from ..motion import Segment
 
 __all__ = [
     "GRID_BITS",

@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from nczones.controller.homing import AlarmKind, EventKind, measure_grid_shift, simulate_homing
 from nczones.errors import InvalidArgument, MachineFileError
-from nczones.homing import (
+from nczones.plans.homing import (
     HomingConfig,
     edge_to_grid_distance,
     exactness_margin,

@@ -6,7 +6,7 @@ from fractions import Fraction
 
 from hypothesis import strategies as st
 
-from nczones.homing import HomingConfig
+from nczones.plans.homing import HomingConfig
 
 PULSES = (Fraction(1, 1000), Fraction(1, 200), Fraction(1, 100))
 

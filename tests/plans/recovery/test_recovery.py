@@ -15,11 +15,16 @@ from nczones.errors import MachineFileError
 from nczones.gcode import interpret, interpret_text
 from nczones.machine import load_machine, parse_machine
 from nczones.motion import SegmentKind, segments_of
+from nczones.plans.recovery import (
+    RecoveryVariant,
+    motion_sequences,
+    recovery_legs,
+    tool_change_config,
+)
 from nczones.prover import verify, verify_text
 from nczones.prover.recovery import verify_recovery
-from nczones.recovery import RecoveryVariant, motion_sequences, recovery_legs, tool_change_config
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 EX = ROOT / "specs" / "examples"
 LOW = EX / "machines" / "mill_toolchange.toml"
 HIGH = EX / "machines" / "mill_toolchange_high.toml"

@@ -21,7 +21,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from .passes import PassGuard
+from ..passes import PassGuard
 
 __all__ = ["Piece", "Out", "G7xError", "g70", "g71", "g72", "TOLERANCE"]
 

@@ -15,9 +15,9 @@ that path:
   *continuous* along the path (unwound: it may pass 180 or 360 degrees).
 
 ``sqrt`` and ``atan2`` of rationals are irrational, so every machine
-quantity here is an :class:`~nczones.cylinder.Interval` of rationals that
+quantity here is an :class:`~nczones.geometry.cylinder.Interval` of rationals that
 contains the exact value (the elementary functions of
-:mod:`nczones.cylinder`: series with remainder bounds, outward rounding on a
+:mod:`nczones.geometry.cylinder`: series with remainder bounds, outward rounding on a
 ``2**-200`` grid).  No float is used.
 
 A polar move (``SegmentKind.POLAR``) is a straight line or a circular arc in
@@ -42,7 +42,7 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
-from .exact import (
+from ..exact import (
     Interval,
     asin_interval,
     atan2_interval,
@@ -51,10 +51,10 @@ from .exact import (
     round_up_scaled,
     sin_cos_interval,
 )
-from .motion import PolarData
+from ..motion import PolarData
 
 if TYPE_CHECKING:
-    from .motion import Segment
+    from ..motion import Segment
 
 __all__ = [
     "PolarMove",

@@ -57,9 +57,9 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
-from ..errors import GcodeError
-from .codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
-from .expr import (
+from ...errors import GcodeError
+from ..codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
+from ..expr import (
     MAX_PARAMETER,
     SUB_PARAMS,
     TRIG_DEGREES,
@@ -68,10 +68,10 @@ from .expr import (
     binary_op,
     unary_op,
 )
-from .lexer import magic_comment
-from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
-from .program import scan_oword
-from .shapes import LAYOUT, RUNS, shape_source, shaped
+from ..lexer import magic_comment
+from ..parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
+from ..program import scan_oword
+from ..shapes import LAYOUT, RUNS, shape_source, shaped
 
 __all__ = ["CODES", "Declined", "DoublePath", "double_pass"]
 
@@ -195,7 +195,7 @@ def double_pass(text: str, machine: Any, *, max_iterations: int, on_window: Any 
     >>> double_pass("G21 G90 G54\\nG2 X1 Y1\\n", m, max_iterations=100)
     Traceback (most recent call last):
     ...
-    nczones.gcode.doubles.Declined: G2 is not followed by the double pass
+    nczones.gcode.linuxcnc.doubles.Declined: G2 is not followed by the double pass
     """
     return _Pass(text, machine, max_iterations, on_window, WINDOW if window is None else window).run()
 
@@ -248,7 +248,7 @@ class _Pass:
         self.rapids = self.blocks = 0
         from .state import DEBUG_FLAG, DEBUG_FLAG_DEFAULT
 
-        # numbered parameters set by the program (unset read 0); #5599 starts at 1 (nczones.gcode.state)
+        # numbered parameters set by the program (unset read 0); #5599 starts at 1 (nczones.gcode.linuxcnc.state)
         self.S: dict[int, float] = {DEBUG_FLAG: float(DEBUG_FLAG_DEFAULT)}
         self.N: dict[str, float] = {}  # the main program's named parameters
         self.plans: dict[tuple, Any] = {}

@@ -5,7 +5,7 @@ halves that block's X, ``convert_lathe_diameter_mode``); I and K stay radii.  A 
 ``diameter_axes = ["X"]`` starts in G7, as a LinuxCNC lathe whose ``RS274NGC_STARTUP_CODE`` holds G7.
 
 The cycles G70, G71 (.1 .2) and G72 (.1 .2) read their profile from the subroutine named by Q (the language
-layer collects its blocks into a :class:`~nczones.gcode.blocks.ShapeBlock`); :mod:`nczones.gcode.g7x`
+layer collects its blocks into a :class:`~nczones.gcode.blocks.ShapeBlock`); :mod:`nczones.gcode.linuxcnc.g7x`
 generates the passes as LinuxCNC's ``interp_g7x.cc`` does, and every pass becomes an ordinary rapid, line
 or arc segment with the cycle block's span and a note naming the pass (``G71 roughing pass 3: cut``).
 What the model cannot follow is ``unknown`` with a reason (``specs/turning.md``, "LinuxCNC G70-G72").
@@ -17,13 +17,13 @@ from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
-from ..machine import Machine
-from ..motion import Plane, SegmentKind
+from ...machine import Machine
+from ...motion import Plane, SegmentKind
+from ..blocks import Block, ShapeBlock, Word
+from ..interpreter import INCH, Interpreter, dadd, gkey, qadd
+from ..mentions import uses_lathe
+from ..passes import PassBound
 from . import g7x
-from .blocks import Block, ShapeBlock, Word
-from .interpreter import INCH, Interpreter, dadd, gkey, qadd
-from .mentions import uses_lathe
-from .passes import PassBound
 
 __all__ = ["LatheInterpreter", "uses_lathe"]
 
@@ -237,28 +237,10 @@ class LatheInterpreter(Interpreter):
         incremental = not self.absolute
         at = start
         for b in shape:
-            ws: dict[str, Word] = {}
-            for w in b.words:
-                if w.letter not in _PROFILE_LETTERS:
-                    self.unknown(name, f"{name}: the word {w.text or w.letter} in the profile (line {w.span.line}) "
-                                  "is not modelled", gw)
-                    return None
-                if w.letter == "G":
-                    k = gkey(w.value)
-                    if k in (900, 910, 901, 911):
-                        # G90/G91/G90.1/G91.1: convert_g7x reads the profile's blocks without executing them and
-                        # takes the distance modes in force at the cycle (switch_settings): no effect
-                        continue
-                    if k not in (0, 10, 20, 30):
-                        self.unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
-                                      "G1 G2 G3 are modelled there (LinuxCNC ignores other codes of a profile block)",
-                                      gw)
-                        return None
-                    motion = k
-                    continue
-                if w.letter in ws:
-                    raise self.error("GC204", f"two {w.letter} words in one block of the profile", w)
-                ws[w.letter] = w
+            read = self._profile_words(name, b, gw, motion)
+            if read is None:
+                return None
+            ws, motion = read
             end = complex(0.0, 0.0) if incremental else at
             if "U" in ws:
                 if incremental:
@@ -301,6 +283,32 @@ class LatheInterpreter(Interpreter):
             at = end
         self.motion = motion  # convert_g7x leaves the profile's motion mode active (its moves then set theirs)
         return pieces
+
+    def _profile_words(self, name: str, b: Block, gw: Word, motion: int) -> tuple[dict[str, Word], int] | None:
+        """A profile block's words by letter and the motion mode after it; None (after an unknown) for a word
+        or code beyond the model."""
+        ws: dict[str, Word] = {}
+        for w in b.words:
+            if w.letter not in _PROFILE_LETTERS:
+                self.unknown(name, f"{name}: the word {w.text or w.letter} in the profile (line {w.span.line}) "
+                              "is not modelled", gw)
+                return None
+            if w.letter == "G":
+                k = gkey(w.value)
+                if k in (900, 910, 901, 911):
+                    # G90/G91/G90.1/G91.1: convert_g7x reads the profile's blocks without executing them and
+                    # takes the distance modes in force at the cycle (switch_settings): no effect
+                    continue
+                if k not in (0, 10, 20, 30):
+                    self.unknown(name, f"{name}: {w.text or 'G'} in the profile (line {w.span.line}): only G0 "
+                                  "G1 G2 G3 are modelled there (LinuxCNC ignores other codes of a profile block)", gw)
+                    return None
+                motion = k
+                continue
+            if w.letter in ws:
+                raise self.error("GC204", f"two {w.letter} words in one block of the profile", w)
+            ws[w.letter] = w
+        return ws, motion
 
     def _profile_centre(self, name: str, ws: dict[str, Word], at: complex, end: complex, motion: int,
                         gw: Word) -> complex | None:
