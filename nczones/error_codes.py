@@ -253,6 +253,7 @@ CATALOGUE: tuple[Code, ...] = (
     Code("ZN162", _E, _MF, "[[tools]]: number not a tool number 0..9999, or a tool described twice"),
     Code("ZN163", _E, _MF, "[[fixtures]]: kind not box / cylinder, or an empty box or cylinder"),
     Code("ZN164", _E, _MF, "tool or fixture solids on a machine without the axes X, Y and Z"),
+    Code("ZN170", _E, _MF, "[[fixtures]]: frame not a work offset (G54..G59.3, G54.1 Pn)"),
     # -- IM: import-machine
     Code("IM100", _E, _MI, "the configuration cannot be read (missing, a directory, no permission, not UTF-8, "
                            "binary)"),
@@ -308,6 +309,10 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF211", _U, _MF, "tool solids: a motion under G49 (no H register names the tool in the spindle)"),
     Code("VF212", _U, _MF, "tool solids with parameter ranges (checked at nominal values only) or "
                            "tool-break recovery (legs not checked for solids)"),
+    Code("VF218", _U, _MF, "tool solids: a part may meet a fixture somewhere in the parameter ranges, "
+                           "not at their nominal values"),
+    Code("VF219", _U, _MF, "tool solids: a fixture in a work offset at a motion whose frame does not give "
+                           "that offset (another work offset active, a rotated frame)"),
     # -- RC: recovery
     Code("RC201", _U, _RE, "a recovery (break) motion nczones does not encode"),
     Code("RC202", _U, _RE, "recovery: the solver's limit"),

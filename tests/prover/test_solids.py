@@ -15,8 +15,10 @@ from nczones.errors import MachineFileError
 from nczones.gcode import segments_text
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify, verify_text
-from nczones.solids import machine_solids
+from nczones.solids import FixturePrism, machine_solids
 from tests.oracles.solids import inside_part_and_fixture, sampled_hit
+
+F = Fraction
 
 ROOT = Path(__file__).resolve().parents[2]
 MACHINE = ROOT / "specs/machines/mill_solids.toml"
@@ -58,13 +60,43 @@ def test_example_holder_clears_vise_with_clearance():
     assert clear[("holder (Ø63 × 60 at 40..100 above the tip)", "vise")] == Fraction(17, 2)
 
 
-def test_a_forbidden_polygon_is_not_a_solid_fixture_and_the_verdict_says_so():
-    """Only boxes and [[fixtures]] are fixture solids: a forbidden polygon far from the tip's path could still
-    meet the holder, so it is named and the verdict is unknown (VF210), never safe."""
+def _with_polygon(vertices: str, plane: str = '["X", "Y"]', limits: str = 'min = { Z = "40" }\nmax = { Z = "70" }\n'):
+    return parse_machine(MACHINE.read_text(encoding="utf-8") + (
+        f'\n[[zones]]\nname = "clamp plate"\nkind = "polygon"\nforbid = true\nplane = {plane}\n'
+        f'vertices = {vertices}\n{limits}'))
+
+
+def test_a_forbidden_xy_polygon_is_a_prism_fixture():
+    """A forbidden polygon in the XY plane over a Z range is a prism the holder may not enter (issue 39).
+
+    holder_clears_vise.ngc plunges the tip to Z10 at X60 Y40, then feeds to Y20. The holder (radius 31.5,
+    40..100 above the tip) is then at Z 50..110, over the plate's Z 40..70 once the tip is below 70 - 40 = 30.
+    A plate whose apex is at (60, 70) is 30 from the holder's axis at Y40: 1.5 mm inside on line 6 (the plunge;
+    the shank, radius 5 at 25..40 above the tip, stays 25 clear). With the apex at (60, 72) the holder passes
+    32 - 31.5 = 0.5 clear; a plate far away (X500) is proved too."""
     text = (PROGRAMS / "holder_clears_vise.ngc").read_text(encoding="utf-8")
-    polygon = ('\n[[zones]]\nname = "clamp plate"\nkind = "polygon"\nforbid = true\nplane = ["X", "Y"]\n'
-               'vertices = [["500", "500"], ["520", "500"], ["520", "520"]]\n')
-    r = verify_text(text, parse_machine(MACHINE.read_text(encoding="utf-8") + polygon))
+    hit = verify_text(text, _with_polygon('[["60", "70"], ["40", "120"], ["80", "120"]]'))
+    assert hit.verdict.label == "unsafe", (hit.reasons, hit.violations)
+    v = hit.violations[0]
+    assert (v.zone, v.zones, v.line) == ("clamp plate", ("holder",), 6)
+    point = tuple(x for _, x in v.point)
+    path = tuple(x for _, x in v.path_point)
+    holder = machine_solids(_mill()).tools[1][2]
+    plate = FixturePrism("clamp plate", ((F(60), F(70)), (F(40), F(120)), (F(80), F(120))), F(40), F(70))
+    assert inside_part_and_fixture(point, path, holder, plate, F(100))
+    clear = verify_text(text, _with_polygon('[["60", "72"], ["40", "120"], ["80", "120"]]'))
+    assert clear.verdict.label == "safe", (clear.reasons, clear.violations)
+    c = {(p, f): c for p, f, c, _ in clear.extra["clearance"]}
+    assert c[("holder (Ø63 × 60 at 40..100 above the tip)", "clamp plate")] == F(1, 2)
+    far = verify_text(text, _with_polygon('[["500", "500"], ["520", "500"], ["520", "520"]]'))
+    assert far.verdict.label == "safe", far.reasons
+
+
+def test_a_forbidden_polygon_in_another_plane_is_not_a_solid_fixture_and_the_verdict_says_so():
+    """A polygon in the ZX plane (a lathe-style profile) is no prism along the tool axis: the holder is not
+    checked against it, so it is named and the verdict is unknown (VF210), never safe."""
+    text = (PROGRAMS / "holder_clears_vise.ngc").read_text(encoding="utf-8")
+    r = verify_text(text, _with_polygon('[["500", "500"], ["520", "500"], ["520", "520"]]', '["Z", "X"]', ""))
     assert r.verdict.label == "unknown"
     assert any(x.code == "VF210" and "`clamp plate`" in x.message for x in r.reasons), r.reasons
 
