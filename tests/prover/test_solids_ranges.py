@@ -1,0 +1,166 @@
+"""Tool solids with parameter ranges and fixtures in work offsets (issue 39): ranges move the solids (a work
+offset range the path, a tool-length range the spindle against the tip), fixtures placed with ``frame`` move
+with their work offset as the program sets it; range verdicts against concrete values (metamorphic), and the
+prover against the independent oracle of tests/oracles/solids.py at concrete values."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.errors import MachineFileError
+from nczones.gcode import segments_text
+from nczones.machine import load_machine, parse_machine
+from nczones.prover import verify_text
+from nczones.solids import FixtureBox, machine_solids
+from tests.oracles.concrete import machine_at
+from tests.oracles.solids import inside_part_and_fixture, sampled_hit
+
+F = Fraction
+ROOT = Path(__file__).resolve().parents[2]
+MACHINE = ROOT / "specs/machines/mill_solids.toml"
+MILL_TEXT = MACHINE.read_text(encoding="utf-8")
+CLEARS = (ROOT / "specs/examples/programs/holder_clears_vise.ngc").read_text(encoding="utf-8")
+HOLDER = "holder (Ø63 × 60 at 40..100 above the tip)"
+
+
+def _mill():
+    return load_machine(MACHINE)
+
+
+def _clearance(r, part=HOLDER, fixture="vise"):
+    return {(p, f): c for p, f, c, _ in r.extra["clearance"]}.get((part, fixture))
+
+
+# holder_clears_vise.ngc (specs/examples/programs): G54 = 0, H1 = 100; the tip plunges to Z10 at X60 Y40 and
+# feeds to Y20. The holder (radius 31.5, 40..100 above the tip) then reaches X 60 + 31.5 = 91.5 below the
+# jaw's top Z60; the jaw's face is X100: 8.5 mm clear. A G54.X deviation d moves the path by d in X.
+
+@pytest.mark.parametrize("param, verdict, clearance", [
+    ("G54.X=-5..5", "safe", F(7, 2)),     # 8.5 - 5: the holder reaches 96.5 at most
+    ("G54.X=-8.5..8.5", "safe", F(0)),    # touching the jaw at d = 8.5 is allowed (its interior is forbidden)
+    ("G54.X=0..10", "unknown", None),     # nominal 0 clears; d > 8.5 enters: not safe, no witness value
+    ("G54.X=15..25", "unsafe", None),     # the case is built at d = 20 (the range's middle): the holder enters
+])
+def test_work_offset_range_moves_the_tool_solids(param, verdict, clearance):
+    r = verify_text(CLEARS, _mill(), params=[param])
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    if verdict == "safe":
+        assert _clearance(r) == clearance
+        assert not [x for x in r.reasons if x.code == "VF212"]
+    if verdict == "unknown":
+        assert {x.code for x in r.reasons} == {"VF218"}
+    if verdict == "unsafe":
+        v = r.violations[0]
+        assert v.kind == "solid" and v.zones == ("holder",) and v.line == 6 and dict(v.params) == {"G54.X": 20}
+        # the witness at its own value: X60 + 20 = 80, holder reaching 111.5 into the jaw (X100..250)
+        at = verify_text(CLEARS, machine_at(_mill(), {"G54.X": F(20)}))
+        assert at.verdict.label == "unsafe" and at.violations[0].line == 6
+
+
+def test_tool_length_range_moves_the_spindle_not_the_tool_parts():
+    """Machine Z is the tip plus the length: a tool-length range moves the gauge line (and the spindle nose)
+    against the tip, while the tool's parts stay where the tip is. H1 = 90..110 keeps the holder 8.5 clear
+    (not 8.5 minus the range); H1 = 40..100 lets the spindle nose (radius 60 from the gauge line up) down to
+    the tip + 40 = Z50, below the jaw's top 60, reaching X 60 + 60 = 120 > 100: unknown over the range (the
+    nominal 100 clears), and unsafe at the concrete H1 = 40 (metamorphic: a concrete unsafe value => the range
+    is not safe)."""
+    r = verify_text(CLEARS, _mill(), params=["H1=90..110"])
+    assert r.verdict.label == "safe", r.reasons
+    assert _clearance(r) == F(17, 2)
+    r = verify_text(CLEARS, _mill(), params=["H1=40..100"])
+    assert r.verdict.label == "unknown" and {x.code for x in r.reasons} == {"VF218"}
+    assert any("spindle nose" in x.message for x in r.reasons)
+    at = verify_text(CLEARS, machine_at(_mill(), {"H1": F(40)}))
+    assert at.verdict.label == "unsafe" and at.violations[0].zones == ("spindle nose",)
+
+
+def _long(x: str) -> str:
+    """More than 512 motions (zig-zags far from the jaw), then one plunge at X``x``."""
+    body = "".join(f"G1 X{-50 + (i % 2) * 10} Y{i % 50}\n" for i in range(600))
+    return ("G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X-50 Y0 Z100\nG1 Z10 F500\n" + body
+            + f"G0 Z100\nG0 X{x} Y40\nG1 Z10\nG0 Z100\nM30\n")
+
+
+@pytest.mark.parametrize("param, verdict", [("G54.X=-5..5", "safe"), ("G54.X=5..15", "unsafe")])
+def test_ranges_on_a_long_program(param, verdict):
+    # X60 with d in -5..5: 3.5 clear; with 5..15 the case is built at d = 10: X70, the holder reaches 101.5
+    r = verify_text(_long("60"), _mill(), params=[param])
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    if verdict == "unsafe":
+        assert r.violations[0].line == 5 + 600 + 3 and dict(r.violations[0].params) == {"G54.X": 10}
+
+
+def test_ranges_on_a_parametric_program():
+    # with ranges the double pass is not taken: '#' programs go through the full interpreter
+    text = "#1 = 60\nG21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X#1 Y40 Z100\nG1 Z10 F300\nG0 Z100\nM30\n"
+    assert verify_text(text, _mill(), params=["G54.X=-5..5"]).verdict.label == "safe"
+    assert verify_text(text, _mill(), params=["G54.X=0..10"]).verdict.label == "unknown"
+
+
+# --------------------------------------------------------------------------- fixtures in work offsets
+
+FRAMED = MILL_TEXT.replace('G54 = { X = "0", Y = "0", Z = "0" }',
+                           'G54 = { X = "300", Y = "200", Z = "0" }\nG55 = { X = "0", Y = "0", Z = "0" }') + """
+[[fixtures]]
+name = "stop"             # a stop block on the part, in G54: X 0..20, Y 0..20, Z 0..30 of the work
+kind = "box"
+frame = "G54"
+min = { X = "0", Y = "0", Z = "0" }
+max = { X = "20", Y = "20", Z = "30" }
+"""
+CUTTER = "cutter (Ø10 × 25 at 0..25 above the tip)"
+
+
+def test_a_fixture_in_a_work_offset_moves_with_it():
+    """The stop is at machine X 300..320 with G54 = X300. The cutter (radius 5, the tip at Z10 below the stop's
+    top 30) at program X-6 Y10 is 1 mm clear of the stop's face X0, at X-4 1 mm inside. After G10 L2 P1 X280
+    the stop is at machine X 280..300: a G53 move to machine X 306 (G54 X26) is 1 mm clear of its face X300
+    (G54 X20), at machine X 304 1 mm inside."""
+    m = parse_machine(FRAMED, "framed.toml")
+    head = "G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X-30 Y10 Z100\nG1 Z10 F300\n"
+    r = verify_text(head + "G1 X-6\nG0 Z100\nM30\n", m)
+    assert r.verdict.label == "safe", (r.reasons, r.violations)
+    assert _clearance(r, CUTTER, "stop") == 1
+    r = verify_text(head + "G1 X-4\nG0 Z100\nM30\n", m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "stop" and r.violations[0].line == 6
+    stop = FixtureBox("stop", F(300), F(320), F(200), F(220), F(0), F(30))
+    cutter = machine_solids(m).tools[1][0]
+    v = r.violations[0]
+    assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), cutter, stop,
+                                   F(100))
+    moved = "G21 G90 G17 G54\nT1 M6\nG43 H1\nG10 L2 P1 X280\nG53 G0 X{x} Y210 Z200\nG53 G1 Z110 F300\nM30\n"
+    r = verify_text(moved.format(x=306), m)
+    assert r.verdict.label == "safe", (r.reasons, r.violations)
+    assert _clearance(r, CUTTER, "stop") == 1
+    r = verify_text(moved.format(x=304), m)
+    assert r.verdict.label == "unsafe" and r.violations[0].zone == "stop" and r.violations[0].line == 6
+
+
+def test_a_fixture_in_another_work_offset_is_unknown_and_ranges_of_its_offset_cancel():
+    """In G55 the solids proof does not know where G54 is now (a G10 L2 P1 may have moved it): unknown
+    (VF219). A G54 range moves the path and the stop alike: the 1 mm clearance stays exact."""
+    m = parse_machine(FRAMED, "framed.toml")
+    r = verify_text("G21 G90 G17 G55\nT1 M6\nG43 H1\nG0 X0 Y0 Z300\nM30\n", m)
+    assert r.verdict.label == "unknown" and {x.code for x in r.reasons} == {"VF219"}
+    text = "G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X-30 Y10 Z100\nG1 Z10 F300\nG1 X-6\nG0 Z100\nM30\n"
+    r = verify_text(text, m, params=["G54.X=-3..3", "G54.Y=-2..2"])
+    assert r.verdict.label == "safe", (r.reasons, r.violations)
+    assert _clearance(r, CUTTER, "stop") == 1
+
+
+@pytest.mark.parametrize("frame, ok", [('"G54"', True), ('"g54.1 p3"', True), ('"G53"', False), ("54", False)])
+def test_fixture_frame_errors(frame, ok):
+    text = FRAMED.replace('frame = "G54"', f"frame = {frame}")
+    if ok:
+        parse_machine(text, "m.toml")
+        return
+    with pytest.raises(MachineFileError) as e:
+        parse_machine(text, "m.toml")
+    d = e.value.diagnostics[0]
+    assert d.code == "ZN170" and d.span is not None
+    assert d.span.line == next(i for i, ln in enumerate(text.splitlines(), 1) if ln.startswith("frame ="))
