@@ -164,3 +164,116 @@ def test_fixture_frame_errors(frame, ok):
     d = e.value.diagnostics[0]
     assert d.code == "ZN170" and d.span is not None
     assert d.span.line == next(i for i, ln in enumerate(text.splitlines(), 1) if ln.startswith("frame ="))
+
+
+# --------------------------------------------------------------------------- ranges against concrete values
+
+# The oracle machine of tests/prover/test_solids.py (G54 = 0, H1 = 50, H2 = 80, the jaw box, the post
+# cylinder) with a prism (a forbidden triangle plate in XY over Z 0..20) and a stop box in G54 (moved to
+# X5 Y-3 Z0 here so the frame matters).
+from tests.prover.test_solids import ORACLE_MACHINE, programs  # noqa: E402
+
+RANGE_MACHINE = ORACLE_MACHINE.replace('G54 = { X = "0", Y = "0", Z = "0" }',
+                                       'G54 = { X = "5", Y = "-3", Z = "0" }') + """
+[[zones]]
+name = "plate"
+kind = "polygon"
+forbid = true
+point = "tip"
+plane = ["X", "Y"]
+vertices = [["-40", "-10"], ["-10", "-30"], ["-20", "0"]]
+min = { Z = "0" }
+max = { Z = "20" }
+[[fixtures]]
+name = "stop"
+kind = "box"
+frame = "G54"
+min = { X = "20", Y = "-40", Z = "0" }
+max = { X = "30", Y = "-25", Z = "15" }
+"""
+
+half = st.integers(-12, 12).map(lambda v: Fraction(v, 2))
+
+
+@st.composite
+def ranges(draw):
+    name = draw(st.sampled_from(["G54.X", "G54.Y", "G54.Z", "H1", "H2"]))
+    a, b = sorted((draw(half), draw(half)))
+    if name.startswith("H"):  # absolute tool lengths about the file's 50 / 80
+        base = 50 if name == "H1" else 80
+        a, b = a + base, b + base
+    return name, a, b
+
+
+def _fmt(v: Fraction) -> str:
+    return str(v.numerator) if v.denominator == 1 else f"{float(v)}"
+
+
+def _placed(machine):
+    """The machine's fixtures where they are (the oracle's placement: a fixture in G54 moved by the machine
+    file's G54; these programs never change it)."""
+    g54 = dict(zip(machine.axis_names, machine.offset("G54")))
+    out = []
+    for fx in machine_solids(machine).fixtures:
+        if getattr(fx, "frame", ""):
+            fx = FixtureBox(fx.name, fx.x0 + g54["X"], fx.x1 + g54["X"], fx.y0 + g54["Y"], fx.y1 + g54["Y"],
+                            fx.z0 + g54["Z"], fx.z1 + g54["Z"])
+        out.append(fx)
+    return out
+
+
+def _oracle(text, machine, result):
+    """The first part-in-fixture sample of ``text`` on ``machine`` (None: none); every solid violation of
+    ``result`` has its contact point inside the part and the fixture."""
+    solids = machine_solids(machine)
+    fixtures = _placed(machine)
+    segs = segments_text(text, machine, fast=False)
+    for v in result.violations:
+        if v.kind == "solid":
+            seg = next(s for s in segs if s.block == v.block)
+            part = next(p for p in solids.parts_for(seg.tool_register) if p.name in v.zones)
+            fx = next(f for f in fixtures if f.name == v.zone)
+            assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), part,
+                                           fx, seg.tool_length), v.note
+    for seg in segs:
+        parts = solids.parts_for(seg.tool_register)
+        hit = sampled_hit(seg, parts, fixtures, 32) if parts else None
+        if hit is not None:
+            return hit
+    return None
+
+
+def _range_against_values(text, rng):
+    """Over the range ``rng`` and at its ends and middle: the range's ``safe`` holds at every value (the
+    prover's and the oracle's verdict there), a concrete ``unsafe`` or oracle hit makes the range not
+    ``safe``, a concrete ``safe`` has no oracle hit, and a range witness replays at its own values."""
+    name, lo, hi = rng
+    machine = parse_machine(RANGE_MACHINE, "ranges.toml")
+    r = verify_text(text, machine, params=[f"{name}={_fmt(lo)}..{_fmt(hi)}"])
+    for value in sorted({lo, hi, (lo + hi) / 2}):
+        at = machine_at(machine, {name: value})
+        concrete = verify_text(text, at)
+        hit = _oracle(text, at, concrete)
+        if concrete.verdict.label == "safe":
+            assert hit is None, f"safe at {name}={value}, the oracle finds {hit[0].name} in {hit[1].name}"
+        if r.verdict.label == "safe":
+            assert concrete.verdict.label == "safe", f"safe over {name}={lo}..{hi}, {concrete.verdict} at {value}"
+        if concrete.verdict.label == "unsafe" or hit is not None:
+            assert r.verdict.label != "safe"
+    for v in r.violations:  # a witness replays at its own values
+        if v.kind == "solid":
+            again = verify_text(text, machine_at(machine, dict(v.params)))
+            assert again.verdict.label == "unsafe" and any(w.line == v.line for w in again.violations), v.note
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs(), ranges())
+def test_range_verdict_against_concrete_values(text, rng):
+    _range_against_values(text, rng)
+
+
+@pytest.mark.long
+@settings(max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs(), ranges())
+def test_range_verdict_against_concrete_values_long(text, rng):
+    _range_against_values(text, rng)
