@@ -339,6 +339,9 @@ class SolidsChecker:
     machine: Machine
     solids: Solids
     ranges: tuple[Any, ...] = ()
+    #: a displacement box (per axis X, Y, Z: lo..hi, containing 0) added to every motion's: the tool-break
+    #: recovery proves a family of legs as one leg displaced within it (:mod:`.solids_recovery`)
+    shift: tuple[tuple[Fraction, Fraction], ...] | None = None
     violations: list[Violation] = field(default_factory=list)
     reasons: list[Reason] = field(default_factory=list)
     #: (part label, fixture name) -> (least clearance lower bound, line)
@@ -375,6 +378,21 @@ class SolidsChecker:
                     return
         else:
             self._unknown(seg, "VF210", f"the tool solids along a {seg.kind.name.lower()} motion are not modelled")
+
+    def box_clear(self, seg: Segment, lo_c: list, hi_c: list) -> bool | None:
+        """With the controlled point anywhere in the box ``lo_c..hi_c`` (machine coordinates) and the tool,
+        tool length and frame of ``seg``: do the parts stay out of every fixture (True), may one meet one
+        (False), or is that not known (None: a reason is given, VF211/VF219)?"""
+        if not self.solids.fixtures:
+            return True
+        parts = self.solids.parts_for(seg.tool_register)
+        if parts is None:
+            self._unknown(seg, "VF211", "no tool length is active (G49): the tool assembly on the recovery legs is "
+                          "not known")
+            return None
+        if self._placed(seg, parts) is None:
+            return None
+        return self._box_hits(seg, parts, lo_c, hi_c) is None
 
     def _unknown(self, seg: Segment, code: str, message: str) -> None:
         self._blocks.add(seg.block)
@@ -444,6 +462,8 @@ class SolidsChecker:
                     if r is not None and c:
                         e_lo, e_hi = e_lo + min(c * r[0], c * r[1]), e_hi + max(c * r[0], c * r[1])
                 lo, hi = min(lo, e_lo), max(hi, e_hi)
+            if self.shift is not None:
+                lo, hi = lo + self.shift[len(out)][0], hi + self.shift[len(out)][1]
             out.append((lo, hi))
         return tuple(out)
 
@@ -731,9 +751,6 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
                            f"{', '.join(f'`{n}`' for n in solids.unmodelled)} of a kind the tool solids are not "
                            "checked against (only boxes, XY polygons and [[fixtures]] are solids): the tip is proved, the holder "
                            "is not", None, None, "VF210"),)
-    if options.recovery and solids.fixtures:
-        reasons += (Reason("tool-break recovery legs are proved for the controlled point only: the tool solids "
-                           "are not checked on them yet", None, None, "VF212"),)
     verdict = result.verdict
     if result.interrupted:
         pass

@@ -277,3 +277,65 @@ def test_range_verdict_against_concrete_values(text, rng):
 @given(programs(), ranges())
 def test_range_verdict_against_concrete_values_long(text, rng):
     _range_against_values(text, rng)
+
+
+# --------------------------------------------------------------------------- tool-break recovery
+
+RECOVERY_PROGRAM = "G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X430 Y150 Z100\nG1 Z10 F300\nG1 Y250\nG0 Z100\nM30\n"
+
+
+def _recovery_mill(clearance: str, register: str = "H1"):
+    return parse_machine(MILL_TEXT.replace('H1 = "100"', 'H1 = "100"\nH2 = "60"') + (
+        f'\n[tool_change]\nposition = {{ X = "300", Y = "200", Z = "150" }}\nclearance = "{clearance}"\n'
+        f'approach_distance = "5"\napproach_feed = "200"\nvariant = "breakpoint"\nlength_register = "{register}"\n'),
+        "recovery.toml")
+
+
+def _oracle_recovery_hit(machine, n: int = 8):
+    """The oracle over break points ``s = k / n`` of every cutting line: the recovery legs from there (the
+    shared plan, nczones.recovery.recovery_legs, as the controller moves them) sampled against the fixtures."""
+    from nczones.recovery import recovery_legs, replacement_length, tool_change_config
+
+    cfg = tool_change_config(machine, "breakpoint")
+    solids = machine_solids(machine)
+    for seg in segments_text(RECOVERY_PROGRAM, machine, fast=False):
+        if seg.kind.name != "LINE":
+            continue
+        for k in range(n + 1):
+            P = tuple(a + F(k, n) * (b - a) for a, b in zip(seg.start, seg.end))
+            legs = recovery_legs(cfg, machine, P, P, seg.tool_length, replacement_length(cfg, machine, seg.tool_length))
+            for leg in legs:
+                hit = sampled_hit(leg.segment(machine.axis_names, seg), solids.parts_for(seg.tool_register),
+                                  solids.fixtures, 24)
+                if hit is not None:
+                    return seg.line, F(k, n), leg.name, hit
+    return None
+
+
+def test_recovery_legs_are_proved_for_the_tool_solids():
+    """RECOVERY_PROGRAM cuts at X430 from Y150 to Y250 with the tip at Z10 (machine Z110), beside the clamp
+    post (X400 Y200, radius 15, up to Z50; a [[fixtures]] entry only, so the tip itself may pass through it).
+    After a break the control rapids to the tool change at machine X300 Y200 Z150 (the tip at Z50, rapids
+    linear). With clearance 110 there is no retract: from the break at Y200 (s = 1/2) the leg runs straight
+    over the post, the tip at machine Z 110 + 40 · 30/130 ≈ 119.2 (tip Z19.2) at X400: the cutter is in the
+    post. With clearance 200 the tip first rises to Z100, and on the way to the tool change at X400 + 20 it is
+    at Z 100 - 50 · 10/130 > 50 (above the post), back to the restart it climbs from Z50 at X300 to Z100,
+    above 50 from X385 - 5 on: proved (the oracle over sampled break points agrees). Before issue 39's
+    recovery for solids both were unknown (VF212)."""
+    hit = _recovery_mill("110")
+    r = verify_text(RECOVERY_PROGRAM, hit, recovery="breakpoint")
+    assert r.verdict.label == "unsafe", (r.reasons, r.violations)
+    v = r.violations[0]
+    assert (v.kind, v.leg, v.break_line, v.zone, v.zones) == ("recovery", "to tool change", 6, "clamp", ("cutter",))
+    assert v.break_parameter == F(1, 2) and dict(v.break_point) == {"X": 430, "Y": 200, "Z": 110}
+    cutter = machine_solids(hit).tools[1][0]
+    clamp = next(f for f in machine_solids(hit).fixtures if f.name == "clamp")
+    assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), cutter, clamp,
+                                   F(100))
+    assert _oracle_recovery_hit(hit) is not None
+    # also with a shorter replacement (H2 = 60): the resumed cut and the legs after the tool change run with
+    # the spindle 40 lower against the tip; its nose (from the tip + 60 up) stays above the post's top 50
+    for machine in (_recovery_mill("200"), _recovery_mill("200", "H2")):
+        r = verify_text(RECOVERY_PROGRAM, machine, recovery="breakpoint")
+        assert r.verdict.label == "safe", (r.reasons, r.violations)
+        assert _oracle_recovery_hit(machine) is None
