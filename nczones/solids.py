@@ -371,7 +371,7 @@ def _fixture_box(rd: Any, t: Mapping, name: str, header: int | None) -> FixtureB
                       f"{format_decimal(a1)} (an empty box)", rd.loc.key_in("max", header, a))
             ok = False
         vals += [a0, a1]
-    return FixtureBox(name, *vals) if ok and not rd.failed else None
+    return FixtureBox(name, vals[0], vals[1], vals[2], vals[3], vals[4], vals[5]) if ok and not rd.failed else None
 
 
 def _fixture_cylinder(rd: Any, t: Mapping, name: str, header: int | None) -> FixtureCylinder | None:

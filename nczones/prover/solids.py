@@ -440,7 +440,7 @@ class SolidsChecker:
         ranges: the coordinate's sources (``Segment.deps_start``/``deps_end``, their hull along the motion),
         less a tool part's length sources on Z (the tip is machine Z minus the length), less the fixture's
         work offset; a homing error moves the machine, and a fixture in a work offset maybe with it."""
-        out = []
+        out: list[tuple[Fraction, Fraction]] = []
         for a, i in (("X", self.ix), ("Y", self.iy), ("Z", self.iz)):
             lo = hi = F0
             for deps in (seg.deps_start, seg.deps_end):

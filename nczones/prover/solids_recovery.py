@@ -76,9 +76,9 @@ def _one_motion(seg: Segment, machine: Machine, solids: Solids, cfg: Any, L2: Fr
     """The recovery from every break point of ``seg``: a witness, or the reasons it is not proved."""
     if seg.kind is SegmentKind.ARC:
         g = arc_geom(seg)
-        box = [(min(a, b), max(a, b)) for a, b in zip(seg.start, seg.end)]
-        box[g.ia], box[g.ib] = g.plane_bbox()
-        queue: list[tuple[Fraction, Fraction, Box]] = [(F0, F1, tuple(box))]
+        arc_box = [(min(a, b), max(a, b)) for a, b in zip(seg.start, seg.end)]
+        arc_box[g.ia], arc_box[g.ib] = g.plane_bbox()
+        queue: list[tuple[Fraction, Fraction, Box]] = [(F0, F1, tuple(arc_box))]
     else:
         queue = [(F0, F1, _line_box(seg, F0, F1))]
     budget = RECOVERY_PIECES
