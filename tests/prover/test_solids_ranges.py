@@ -153,6 +153,31 @@ def test_a_fixture_in_another_work_offset_is_unknown_and_ranges_of_its_offset_ca
     assert _clearance(r, CUTTER, "stop") == 1
 
 
+FANUC_FRAMED = MILL_TEXT.replace('path_mode = "G61"', 'path_mode = "G61"\ndialect = "fanuc"').replace(
+    'G54 = { X = "0", Y = "0", Z = "0" }',
+    'EXT = { X = "7", Y = "0", Z = "0" }\nG54 = { X = "0", Y = "0", Z = "0" }\n'
+    '"G54.1P1" = { X = "300", Y = "200", Z = "0" }') + "[[fixtures]]" + FRAMED.split("[[fixtures]]")[-1].replace(
+    'frame = "G54"', 'frame = "G54.1 P1"')
+
+
+@pytest.mark.parametrize("program, verdict", [
+    # in G54.1 P1 (machine X = EXT 7 + 300 + program X): the stop's face is program X0 as in G54 above
+    ("G0 X-30 Y10 Z100\nG1 Z10 F300\nG1 X-6\nG0 Z100", "safe"),
+    ("G0 X-30 Y10 Z100\nG1 Z10 F300\nG1 X-4\nG0 Z100", "unsafe"),
+    # G10 L20 P1 X280 (Fanuc 0i "Programmable data input"): the stop at machine X 7 + 280 = 287 .. 307; the
+    # cutter at machine X313 is 1 clear of its face, at X311 1 inside
+    ("G10 L20 P1 X280\nG53 G0 X313 Y210 Z200\nG53 G0 Z110", "safe"),
+    ("G10 L20 P1 X280\nG53 G0 X311 Y210 Z200\nG53 G0 Z110", "unsafe"),
+])
+def test_fanuc_fixture_in_an_additional_work_offset(program, verdict):
+    m = parse_machine(FANUC_FRAMED, "fanuc_framed.toml")
+    r = verify_text("G21 G90 G17 G54.1 P1\nT1 M6\nG43 H1 Z200\n" + program + "\nM30\n", m)
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    if verdict == "unsafe":
+        v = r.violations[0]
+        assert (v.zone, v.zones, v.line) == ("stop", ("cutter",), 6)
+
+
 @pytest.mark.parametrize("frame, ok", [('"G54"', True), ('"g54.1 p3"', True), ('"G53"', False), ("54", False)])
 def test_fixture_frame_errors(frame, ok):
     text = FRAMED.replace('frame = "G54"', f"frame = {frame}")
