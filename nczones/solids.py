@@ -131,6 +131,8 @@ def machine_solids(machine: Machine) -> Solids | None:
             fixture = ZONE_FIXTURE(z)
             if fixture is None:
                 unmodelled.append(z.name)
+            elif isinstance(fixture, tuple):  # a stepped table: one box per region
+                fixtures.extend(fixture)
             else:
                 fixtures.append(fixture)
     return Solids(MappingProxyType(dict(tools)), tuple(spindle), tuple(fixtures), tuple(unmodelled))
@@ -140,13 +142,30 @@ def _no_fixture(zone: Any) -> Fixture | None:
     return None
 
 
-#: A forbidden zone as a fixture solid, per zone kind.  Fallback: none (the zone is not checked against the
-#: tool solids, and a run that has them is ``unknown``: :attr:`Solids.unmodelled`).
-ZONE_FIXTURE: KindTable[Callable[[Any], Fixture | None]] = KindTable("solids.zone_fixture", fallback=_no_fixture)
+#: A forbidden zone as a fixture solid (or several: a stepped table's regions), per zone kind.  Fallback:
+#: none (the zone is not checked against the tool solids, and a run that has them is ``unknown``:
+#: :attr:`Solids.unmodelled`).
+ZONE_FIXTURE: KindTable[Callable[[Any], Fixture | tuple[Fixture, ...] | None]] = KindTable(
+    "solids.zone_fixture", fallback=_no_fixture)
 
 
-# A forbidden stepped table is not a fixture solid yet: named, never skipped.
-ZONE_FIXTURE.set(SteppedZone, _no_fixture)
+@ZONE_FIXTURE.register(SteppedZone)
+def _stepped_fixture(z: SteppedZone) -> tuple[Fixture, ...] | None:
+    """A stepped table of X, Y or Z as boxes, one per region with an interior (reference values between its
+    bounds, the limited axis between its min and max, the third axis unbounded).  The part meets the open
+    interior of the union iff it meets the open interior of one of them: a part has an interior, and the
+    regions' interiors are dense in the union's (what they leave out are faces and flat regions)."""
+    if z.reference_axis not in "XYZ" or z.limited_axis not in "XYZ":
+        return None
+    out: list[Fixture] = []
+    lo = z.start
+    for region in z.regions:
+        if region.min is None or region.max is None or region.min < region.max:
+            lim = {z.reference_axis: (lo, region.upto), z.limited_axis: (region.min, region.max)}
+            x, y, zz = (lim.get(a, (None, None)) for a in "XYZ")
+            out.append(FixtureBox(z.name, x[0], x[1], y[0], y[1], zz[0], zz[1]))
+        lo = region.upto
+    return tuple(out)
 
 
 @ZONE_FIXTURE.register(PolygonZone)

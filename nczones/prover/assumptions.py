@@ -68,7 +68,7 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "file gives, enclosing the real cutter, shank, holder or spindle nose; the tool in the spindle is the"
     " [[tools]] entry numbered like the active tool length register (G43 H<n>: tool n) and its tip is at "
     "machine Z minus the active tool length; fixtures are where the machine file puts them (forbid box "
-    "zones and forbid XY polygons as prisms included), a fixture with a `frame` at that work offset as the "
+    "zones, stepped tables of X/Y/Z as a box per region, forbid XY polygons as prisms included), a fixture with a `frame` at that work offset as the "
     "program sets it.",
     "Fanuc dialect: a tool change moves no axis: M06 on a machining centre and the T code that indexes a "
     "lathe's turret (with tool_offset_motion = \"shift\") only change the tool and its offsets, unless "

@@ -749,7 +749,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     if solids.unmodelled:
         reasons += (Reason(f"forbidden zone{'s' if len(solids.unmodelled) > 1 else ''} "
                            f"{', '.join(f'`{n}`' for n in solids.unmodelled)} of a kind the tool solids are not "
-                           "checked against (only boxes, XY polygons and [[fixtures]] are solids): the tip is proved, the holder "
+                           "checked against (only boxes, stepped tables, XY polygons and [[fixtures]] are solids): the tip is proved, the holder "
                            "is not", None, None, "VF210"),)
     verdict = result.verdict
     if result.interrupted:

@@ -15,7 +15,7 @@ from nczones.errors import MachineFileError
 from nczones.gcode import segments_text
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify, verify_text
-from nczones.solids import FixturePrism, machine_solids
+from nczones.solids import FixtureBox, FixturePrism, machine_solids
 from tests.oracles.solids import inside_part_and_fixture, sampled_hit
 
 F = Fraction
@@ -99,6 +99,42 @@ def test_a_forbidden_polygon_in_another_plane_is_not_a_solid_fixture_and_the_ver
     r = verify_text(text, _with_polygon('[["500", "500"], ["520", "500"], ["520", "520"]]', '["Z", "X"]', ""))
     assert r.verdict.label == "unknown"
     assert any(x.code == "VF210" and "`clamp plate`" in x.message for x in r.reasons), r.reasons
+
+
+STEPS = """
+[[zones]]
+name = "steps"
+kind = "stepped"
+forbid = true
+point = "tip"
+reference_axis = "X"
+limited_axis = "Z"
+from = "450"
+regions = [{ upto = "480", min = "0", max = "40" }, { upto = "520", min = "0", max = "10" }]
+"""
+
+
+@pytest.mark.parametrize("z, verdict", [("10", "safe"), ("-5", "unsafe")])
+def test_a_forbidden_stepped_table_is_a_fixture_box_per_region(z, verdict):
+    """A forbidden stepped table of X and Z (here X 450..480 up to Z40, X 480..520 up to Z10, every Y) is one
+    fixture box per region. The tip plunges at X440 Y300: the cutter (radius 5) reaches X445, clear of the
+    steps; the holder (radius 31.5, from 40 above the tip) reaches X471.5, over the first step: its bottom at
+    tip Z10 is Z50, 10 above the step's top 40 (safe); at tip Z-5 it is at Z35, inside (unsafe)."""
+    m = parse_machine(MACHINE.read_text(encoding="utf-8") + STEPS)
+    r = verify_text(HEADER + f"G0 X440 Y300 Z100\nG1 Z{z} F300\nG0 Z100\nM30\n", m)
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    if verdict == "unsafe":
+        v = r.violations[0]
+        assert (v.zone, v.zones, v.line) == ("steps", ("holder",), 5)
+        holder = machine_solids(m).tools[1][2]
+        step = FixtureBox("steps", F(450), F(480), None, None, F(0), F(40))
+        assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), holder,
+                                       step, F(100))
+    else:
+        clear = {(p, f): c for p, f, c, _ in r.extra["clearance"]}
+        # the holder is over the first step (horizontally inside), its heights never overlap: no figure; the
+        # cutter (0..25 above the tip, Z10..35 overlapping the step's 0..40) is 5 from the step's face X450
+        assert clear[("cutter (Ø10 × 25 at 0..25 above the tip)", "steps")] == 5
 
 
 HEADER = "G21 G90 G17 G54\nT1 M6\nG43 H1\n"
