@@ -349,6 +349,8 @@ class SolidsChecker:
     _blocks: set[int] = field(default_factory=set)
     _arc_witness: bool = False
     _labels: dict[Part, str] = field(default_factory=dict)
+    _cache: dict[tuple, Any] = field(default_factory=dict)
+    _where: dict[tuple[Part, Fixture], tuple[_Placed, _Placed]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         axes = self.machine.axis_names
@@ -403,28 +405,43 @@ class SolidsChecker:
     def _placed(self, seg: Segment, parts: tuple[Part, ...]) -> dict | None:
         """Per (part, fixture): the fixture where the motion sees it, nominal and grown by the ranges'
         displacements (the same object when they allow none); None (a reason given) when a fixture's work
-        offset is not known at this motion or the ranges' dependencies were not tracked."""
-        self._where: dict[tuple[Part, Fixture], tuple[_Placed, _Placed]] = {}
-        if self._dev and any(not r.name.startswith("home.") for r in self.ranges) and not seg.deps_start:
-            self._unknown(seg, "VF218", "the motion does not say which parameters its coordinates depend on: "
-                          "the tool solids cannot be moved with the parameter ranges")
+        offset is not known at this motion or the ranges' dependencies were not tracked.  Cached by what the
+        placement reads (the parts, the frame if a fixture has one, the dependencies if there are ranges)."""
+        framed = any(fx.frame for fx in self.solids.fixtures)
+        frame = seg.frame
+        key = (parts, (frame.work, frame.work_offset, frame.rotation) if framed and frame is not None else framed,
+               (seg.deps_start, seg.deps_end, seg.deps_tool) if self._dev else None)
+        got = self._cache.get(key)
+        if got is None:
+            if len(self._cache) > 4096:  # memory stays bounded whatever the program
+                self._cache.clear()
+            got = self._cache[key] = self._place_all(seg, parts)
+        if isinstance(got, tuple):
+            self._unknown(seg, *got)
             return None
+        self._where = got
+        return got
+
+    def _place_all(self, seg: Segment, parts: tuple[Part, ...]) -> dict | tuple[str, str]:
+        if self._dev and any(not r.name.startswith("home.") for r in self.ranges) and not seg.deps_start:
+            return "VF218", ("the motion does not say which parameters its coordinates depend on: the tool solids "
+                             "cannot be moved with the parameter ranges")
+        where: dict[tuple[Part, Fixture], tuple[_Placed, _Placed]] = {}
         for fx in self.solids.fixtures:
             origin = self._origin(seg, fx)
             if origin is None:
                 frame = seg.frame
                 now = "no work offset" if frame is None else (
                     f"{frame.work} rotated" if frame.rotation is not None and frame.work == fx.frame else frame.work)
-                self._unknown(seg, "VF219", f"the fixture `{fx.name}` moves with {fx.frame}, but this motion runs in "
-                              f"{now}: where {fx.frame} is now is not known to the solids proof (run the motions "
-                              f"near it in {fx.frame}, unrotated)")
-                return None
+                return "VF219", (f"the fixture `{fx.name}` moves with {fx.frame}, but this motion runs in {now}: where "
+                                 f"{fx.frame} is now is not known to the solids proof (run the motions near it in "
+                                 f"{fx.frame}, unrotated)")
             nominal = _place(fx, origin)
             for part in parts:
                 d = self._displacement(seg, part, fx)
                 grown = nominal if all(lo == hi == 0 for lo, hi in d) else _grown(nominal, d)
-                self._where[part, fx] = (nominal, grown)
-        return self._where
+                where[part, fx] = (nominal, grown)
+        return where
 
     def _origin(self, seg: Segment, fx: Fixture) -> tuple[Fraction, Fraction, Fraction] | None:
         if not fx.frame:
