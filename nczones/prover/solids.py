@@ -315,15 +315,33 @@ def _prism_contact(f: _Prism, r: Fraction, p: Pt) -> Pt | None:
             continue
         q = (a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]))
         nx, ny = b[1] - a[1], a[0] - b[0]  # the edge's normals ±(nx, ny), and the way from p to q
-        for dx, dy in ((q[0] - p[0], q[1] - p[1]), (nx, ny), (-nx, -ny)):
-            if dx == 0 and dy == 0:
-                continue
-            k = r / (abs(dx) + abs(dy))
-            for _ in range(64):
-                c = (q[0] + dx * k, q[1] + dy * k)
-                if (c[0] - p[0]) ** 2 + (c[1] - p[1]) ** 2 < r2 and _locate(f.vertices, c) > 0:
-                    return c
-                k /= 2
+        c = _toward(f.vertices, p, r2, q, ((q[0] - p[0], q[1] - p[1]), (nx, ny), (-nx, -ny)))
+        if c is not None:
+            return c
+    v = f.vertices
+    for i, q in enumerate(v):  # a sharp vertex: between its two edges (a positive sum of their directions)
+        if (q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 < r2:
+            a, b = v[i - 1], v[(i + 1) % len(v)]
+            la, lb = abs(a[0] - q[0]) + abs(a[1] - q[1]), abs(b[0] - q[0]) + abs(b[1] - q[1])
+            d = ((a[0] - q[0]) / la + (b[0] - q[0]) / lb, (a[1] - q[1]) / la + (b[1] - q[1]) / lb)
+            c = _toward(v, p, r2, q, (d,))
+            if c is not None:
+                return c
+    return None
+
+
+def _toward(poly: tuple[Pt, ...], p: Pt, r2: Fraction, q: Pt, ways: tuple[Pt, ...]) -> Pt | None:
+    """A point ``q + k w`` (``w`` one of ``ways``, ``k`` halved from the part's reach) strictly inside the
+    polygon and strictly within ``sqrt(r2)`` of ``p``, or None."""
+    for dx, dy in ways:
+        if dx == 0 and dy == 0:
+            continue
+        k = 1 / (abs(dx) + abs(dy))
+        for _ in range(64):
+            c = (q[0] + dx * k, q[1] + dy * k)
+            if (c[0] - p[0]) ** 2 + (c[1] - p[1]) ** 2 < r2 and _locate(poly, c) > 0:
+                return c
+            k /= 2
     return None
 
 

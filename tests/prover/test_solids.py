@@ -92,6 +92,23 @@ def test_a_forbidden_xy_polygon_is_a_prism_fixture():
     assert far.verdict.label == "safe", far.reasons
 
 
+def test_a_sharp_prism_vertex_gets_a_witness_inside():
+    """A thin plate (apex (100, 300), base X200 Y290..310, Z 0..30; the apex angle about 11.4°). The holder's
+    axis at X90 Y317 is nearest the apex (it is in the apex's normal cone: (-10, 17) is at 120° from +X, more
+    than 90° from both edges), √389 ≈ 19.7 < 31.5 from it; with the tip at Z-15 the holder (from Z25 up) is
+    below the plate's top: unsafe, and the contact point must be strictly inside the plate, found between the
+    apex's two edges (neither the way from the axis to the apex nor an edge's normal leads inside)."""
+    m = _with_polygon('[["100", "300"], ["200", "290"], ["200", "310"]]', limits='min = { Z = "0" }\nmax = { Z = "30" }\n')
+    r = verify_text(HEADER + "G0 X90 Y317 Z100\nG1 Z-15 F300\nG0 Z100\nM30\n", m)
+    assert r.verdict.label == "unsafe", (r.reasons, r.violations)
+    v = r.violations[0]
+    assert (v.zone, v.zones, v.line) == ("clamp plate", ("holder",), 5)
+    plate = FixturePrism("clamp plate", ((F(100), F(300)), (F(200), F(290)), (F(200), F(310))), F(0), F(30))
+    holder = machine_solids(_mill()).tools[1][2]
+    assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), holder, plate,
+                                   F(100))
+
+
 def test_a_forbidden_polygon_in_another_plane_is_not_a_solid_fixture_and_the_verdict_says_so():
     """A polygon in the ZX plane (a lathe-style profile) is no prism along the tool axis: the holder is not
     checked against it, so it is named and the verdict is unknown (VF210), never safe."""
