@@ -480,12 +480,13 @@ class SolidsChecker:
             lo = hi = F0
             for deps in (seg.deps_start, seg.deps_end):
                 coef: dict[str, int] = {}
-                for dep in (deps[i] if deps else ()):
-                    name = dep if dep[:1] == "H" and dep[1:].isdigit() else f"{dep}.{a}"
+                for dep in (deps[i] if deps else ()):  # named as the prover's core names them
+                    name = dep if dep.startswith("H") else f"{dep}.{a}"
                     coef[name] = coef.get(name, 0) + 1
                 if a == "Z" and not part.spindle:
                     for dep in seg.deps_tool:
-                        coef[dep] = coef.get(dep, 0) - 1
+                        name = dep if dep.startswith("H") else f"{dep}.Z"
+                        coef[name] = coef.get(name, 0) - 1
                 if fx.frame:
                     coef[f"{fx.frame}.{a}"] = coef.get(f"{fx.frame}.{a}", 0) - 1
                 home = self._dev.get(f"home.{a}")
