@@ -358,6 +358,10 @@ def test_recovery_legs_are_proved_for_the_tool_solids():
     assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), cutter, clamp,
                                    F(100))
     assert _oracle_recovery_hit(hit) is not None
+    from nczones.report.text import render_text
+
+    text = render_text(r, deterministic=True)
+    assert "recovery rapid (tool-break recovery: to tool change): the cutter enters fixture `clamp`" in text
     # also with a shorter replacement (H2 = 60): the resumed cut and the legs after the tool change run with
     # the spindle 40 lower against the tip; its nose (from the tip + 60 up) stays above the post's top 50
     for machine in (_recovery_mill("200"), _recovery_mill("200", "H2")):
