@@ -748,10 +748,15 @@ def _inside(f: _Placed, part: Part, span: _Span, t: Fraction, px: Fraction, dx: 
     return None  # pragma: no cover - g is continuous at t and below thr there
 
 
+def _outward(b: tuple[Fraction, Fraction], den: int = 1 << 16) -> tuple[Fraction, Fraction]:
+    return Fraction(math.floor(b[0] * den), den), Fraction(math.ceil(b[1] * den), den)
+
+
 def _rect_gap2(f: _Placed, bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:
     """Least squared XY distance between the rectangle ``bx × by`` and the fixture's core."""
-    if isinstance(f, _Prism):
-        return _rect_poly_gap2(f.vertices, bx, by)
+    if isinstance(f, _Prism):  # the rectangle rounded outward to 2^-16 mm (an arc piece's box has large
+        # denominators the segment distances would carry): a lower bound, all its callers need
+        return _rect_poly_gap2(f.vertices, _outward(bx), _outward(by))
     gx = max(F0, (bx[0] - f.x1) if f.x1 is not None else F0, (f.x0 - bx[1]) if f.x0 is not None else F0)
     gy = max(F0, (by[0] - f.y1) if f.y1 is not None else F0, (f.y0 - by[1]) if f.y0 is not None else F0)
     return gx * gx + gy * gy
