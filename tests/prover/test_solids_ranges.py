@@ -291,7 +291,7 @@ def _range_against_values(text, rng):
             assert again.verdict.label == "unsafe" and any(w.line == v.line for w in again.violations), v.note
 
 
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(programs(), ranges())
 def test_range_verdict_against_concrete_values(text, rng):
     _range_against_values(text, rng)
