@@ -255,6 +255,7 @@ CATALOGUE: tuple[Code, ...] = (
     Code("ZN164", _E, _MF, "tool or fixture solids on a machine without the axes X, Y and Z"),
     Code("ZN165", _E, _MF, "a lathe tool part: x or z not a [low, high] pair with low below high"),
     Code("ZN166", _E, _MF, "a lathe fixture: kind not chuck / cylinder, or an empty ring or height range"),
+    Code("ZN170", _E, _MF, "[[fixtures]]: frame not a work offset (G54..G59.3, G54.1 Pn)"),
     # -- IM: import-machine
     Code("IM100", _E, _MI, "the configuration cannot be read (missing, a directory, no permission, not UTF-8, "
                            "binary)"),
@@ -308,8 +309,13 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF210", _U, _MF, "tool solids: an arc near a fixture its enclosure cannot decide, a motion kind "
                            "the solids proof does not model, or corners the control may round (G64)"),
     Code("VF211", _U, _MF, "tool solids: a motion under G49 (no H register names the tool in the spindle)"),
-    Code("VF212", _U, _MF, "tool solids with parameter ranges (checked at nominal values only) or "
-                           "tool-break recovery (legs not checked for solids)"),
+    Code("VF212", _U, _MF, "a lathe's tool solids with parameter ranges or tool-break recovery were not checked "
+                           "(a mill's are proved: VF218/VF220)"),
+    Code("VF218", _U, _MF, "tool solids: a part may meet a fixture somewhere in the parameter ranges, "
+                           "not at their nominal values"),
+    Code("VF219", _U, _MF, "tool solids: a fixture in a work offset at a motion whose frame does not give "
+                           "that offset (another work offset active, a rotated frame)"),
+    Code("VF220", _U, _MF, "tool solids: tool-break recovery legs near a fixture the proof cannot decide"),
     # -- RC: recovery
     Code("RC201", _U, _RE, "a recovery (break) motion nczones does not encode"),
     Code("RC202", _U, _RE, "recovery: the solver's limit"),

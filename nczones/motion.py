@@ -164,6 +164,10 @@ class ProgramFrame:
     diameter: tuple[str, ...] = ()
     inch: bool = False
     opaque: str = ""
+    #: the machine position of the active work offset's origin (LinuxCNC: G54..G59.3 as G10 L2 set it;
+    #: Fanuc: EXT plus G54..G59 / G54.1 Pn), before G92/G52 and tool offsets: where fixtures placed in that
+    #: work offset are (issue 39); None when the producer did not record it
+    work_offset: tuple[Fraction, ...] | None = None
 
     @property
     def exact(self) -> bool:

@@ -17,8 +17,9 @@ Codes ZN160-ZN164 (``specs/machine-file.md``, "Tools and fixtures as solids").
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from types import MappingProxyType
 from typing import Any
@@ -29,7 +30,7 @@ from .machine import Machine, as_written, declares_solids, read_number
 from .zones import BoxZone, PolygonZone, SteppedZone
 from .zones.kinds import KindTable
 
-__all__ = ["Part", "FixtureBox", "FixtureCylinder", "Solids", "machine_solids"]
+__all__ = ["Part", "FixtureBox", "FixtureCylinder", "FixturePrism", "Solids", "machine_solids", "work_frame_name"]
 
 F0 = Fraction(0)
 
@@ -63,6 +64,8 @@ class FixtureBox:
     y1: Fraction | None
     z0: Fraction | None
     z1: Fraction | None
+    #: the work offset the fixture moves with (``"G54"``, ``"G54.1P2"``); empty: machine coordinates
+    frame: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,9 +78,23 @@ class FixtureCylinder:
     radius: Fraction
     z0: Fraction | None
     z1: Fraction | None
+    #: the work offset the fixture moves with (``"G54"``, ``"G54.1P2"``); empty: machine coordinates
+    frame: str = ""
 
 
-Fixture = FixtureBox | FixtureCylinder
+@dataclass(frozen=True, slots=True)
+class FixturePrism:
+    """A forbidden polygon in the XY plane over the heights ``z0..z1`` (None: unbounded), in machine
+    coordinates; its interior is forbidden."""
+
+    name: str
+    vertices: tuple[tuple[Fraction, Fraction], ...]
+    z0: Fraction | None
+    z1: Fraction | None
+    frame: str = ""
+
+
+Fixture = FixtureBox | FixtureCylinder | FixturePrism
 
 
 @dataclass(frozen=True, slots=True)
@@ -117,6 +134,8 @@ def machine_solids(machine: Machine) -> Solids | None:
             fixture = ZONE_FIXTURE(z)
             if fixture is None:
                 unmodelled.append(z.name)
+            elif isinstance(fixture, tuple):  # a stepped table: one box per region
+                fixtures.extend(fixture)
             else:
                 fixtures.append(fixture)
     return Solids(MappingProxyType(dict(tools)), tuple(spindle), tuple(fixtures), tuple(unmodelled))
@@ -126,14 +145,42 @@ def _no_fixture(zone: Any) -> Fixture | None:
     return None
 
 
-#: A forbidden zone as a fixture solid, per zone kind.  Fallback: none (the zone is not checked against the
-#: tool solids, and a run that has them is ``unknown``: :attr:`Solids.unmodelled`).
-ZONE_FIXTURE: KindTable[Callable[[Any], Fixture | None]] = KindTable("solids.zone_fixture", fallback=_no_fixture)
+#: A forbidden zone as a fixture solid (or several: a stepped table's regions), per zone kind.  Fallback:
+#: none (the zone is not checked against the tool solids, and a run that has them is ``unknown``:
+#: :attr:`Solids.unmodelled`).
+ZONE_FIXTURE: KindTable[Callable[[Any], Fixture | tuple[Fixture, ...] | None]] = KindTable(
+    "solids.zone_fixture", fallback=_no_fixture)
 
 
-# A forbidden stepped table or polygon is not a fixture solid yet (issue 39: prisms): named, never skipped.
-ZONE_FIXTURE.set(SteppedZone, _no_fixture)
-ZONE_FIXTURE.set(PolygonZone, _no_fixture)
+@ZONE_FIXTURE.register(SteppedZone)
+def _stepped_fixture(z: SteppedZone) -> tuple[Fixture, ...] | None:
+    """A stepped table of X, Y or Z as boxes, one per region with an interior (reference values between its
+    bounds, the limited axis between its min and max, the third axis unbounded).  The part meets the open
+    interior of the union iff it meets the open interior of one of them: a part has an interior, and the
+    regions' interiors are dense in the union's (what they leave out are faces and flat regions)."""
+    if z.reference_axis not in "XYZ" or z.limited_axis not in "XYZ":
+        return None
+    out: list[Fixture] = []
+    lo = z.start
+    for region in z.regions:
+        if region.min is None or region.max is None or region.min < region.max:
+            lim = {z.reference_axis: (lo, region.upto), z.limited_axis: (region.min, region.max)}
+            x, y, zz = (lim.get(a, (None, None)) for a in "XYZ")
+            out.append(FixtureBox(z.name, x[0], x[1], y[0], y[1], zz[0], zz[1]))
+        lo = region.upto
+    return tuple(out)
+
+
+@ZONE_FIXTURE.register(PolygonZone)
+def _prism_fixture(z: PolygonZone) -> Fixture | None:
+    """A polygon in the XY plane, bounded (if at all) along Z only, is a prism; any other plane or bound is
+    not a fixture solid (None: named, the verdict ``unknown``)."""
+    if set(z.plane) != {"X", "Y"} or any(a != "Z" for a, _, _ in z.limits):
+        return None
+    verts = z.vertices if z.plane == ("X", "Y") else tuple((b, a) for a, b in z.vertices)
+    lim = {a: (lo, hi) for a, lo, hi in z.limits}
+    z0, z1 = lim.get("Z", (None, None))
+    return FixturePrism(z.name, tuple(verts), z0, z1)
 
 
 @ZONE_FIXTURE.register(BoxZone)
@@ -147,8 +194,22 @@ def _box_fixture(z: BoxZone) -> Fixture | None:
 
 _PART_KEYS = ("name", "diameter", "length")
 _TOOL_KEYS = ("number", "name", "parts")
-_FIXTURE_KEYS = {"box": ("name", "kind", "min", "max"),
-                 "cylinder": ("name", "kind", "centre", "radius", "min_z", "max_z")}
+_FIXTURE_KEYS = {"box": ("name", "kind", "frame", "min", "max"),
+                 "cylinder": ("name", "kind", "frame", "centre", "radius", "min_z", "max_z")}
+_WORK_FRAMES = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
+
+
+def work_frame_name(text: str) -> str | None:
+    """The interpreters' name of a work offset (``ProgramFrame.work``), or None when ``text`` names none.
+
+    >>> work_frame_name("G54"), work_frame_name("g54.1 p7"), work_frame_name("G53")
+    ('G54', 'G54.1P7', None)
+    """
+    t = "".join(text.split()).upper()
+    if t in _WORK_FRAMES:
+        return t
+    m = re.fullmatch(r"G54\.1P(\d{1,3})", t)
+    return f"G54.1P{int(m.group(1))}" if m and 1 <= int(m.group(1)) <= 300 else None
 
 
 def _parts(rd: Any, raw: Any, where: str, header: int | None, spindle: bool) -> tuple[Part, ...] | None:
@@ -294,9 +355,23 @@ def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fi
                 rd.report("ZN160", f"[[fixtures]] {name!r}: unknown key {as_written(key)} for a {kind}; allowed "
                           f"keys: {', '.join(_FIXTURE_KEYS[kind])}", rd.loc.key(key, header))
         fx = _fixture_box(rd, t, name, header) if kind == "box" else _fixture_cylinder(rd, t, name, header)
-        if fx is not None:
-            out.append(fx)
+        frame = _fixture_frame(rd, t, name, header)
+        if fx is not None and frame is not None:
+            out.append(replace(fx, frame=frame))
     return tuple(out)
+
+
+def _fixture_frame(rd: Any, t: Mapping, name: str, header: int | None) -> str | None:
+    """``frame = "G54"``: the work offset the fixture moves with ("" when left out: machine coordinates)."""
+    if "frame" not in t:
+        return ""
+    raw = t["frame"]
+    frame = work_frame_name(raw) if isinstance(raw, str) else None
+    if frame is None:
+        rd.report("ZN170", f"[[fixtures]] {name!r}: frame {as_written(raw)} is not a work offset; allowed: "
+                  f"{', '.join(_WORK_FRAMES)}, G54.1 P1..P300 (Fanuc), or no frame (machine coordinates)",
+                  rd.loc.key("frame", header))
+    return frame
 
 
 def _bound(rd: Any, table: Any, axis: str, what: str, span: Any) -> Fraction | None:
@@ -324,7 +399,7 @@ def _fixture_box(rd: Any, t: Mapping, name: str, header: int | None) -> FixtureB
                       f"{format_decimal(a1)} (an empty box)", rd.loc.key_in("max", header, a))
             ok = False
         vals += [a0, a1]
-    return FixtureBox(name, *vals) if ok and not rd.failed else None
+    return FixtureBox(name, vals[0], vals[1], vals[2], vals[3], vals[4], vals[5]) if ok and not rd.failed else None
 
 
 def _fixture_cylinder(rd: Any, t: Mapping, name: str, header: int | None) -> FixtureCylinder | None:

@@ -498,7 +498,7 @@ class Interpreter:
         diameter = ("X",) if getattr(self, "diameter_mode", False) and "X" in self.index else ()
         opaque = "cylindrical interpolation (G07.1): the program writes developed lengths" \
             if getattr(self, "cylinder", None) is not None else ""
-        return ProgramFrame(self.wcs, tuple(self.off), rot, diameter, self.inch, opaque)
+        return ProgramFrame(self.wcs, tuple(self.off), rot, diameter, self.inch, opaque, tuple(self.g5x[self.wcs]))
 
     # ------------------------------------------------------------------ XY rotation (G10 L2 R)
     machine_at: tuple[Fraction, ...] | None = None  # where the machine really is, if not at self.pos

@@ -69,7 +69,8 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     " [[tools]] entry numbered like the active tool length register (G43 H<n>: tool n; a motion after the "
     "program's own M6 or M61 put another tool in the spindle is unknown) and its tip is at "
     "machine Z minus the active tool length; fixtures are where the machine file puts them (forbid box "
-    "zones included).",
+    "zones, stepped tables of X/Y/Z as a box per region, forbid XY polygons as prisms included), a "
+    "fixture with a `frame` at that work offset as the program sets it.",
     "Lathe tool solids (a lathe's [[tools]] parts): the tool lies on centre height (its tip and its "
     "parts' section in the plane through the spindle axis, Y = 0); every part is the rectangle the "
     "machine file gives, enclosing the real insert, bar or holder in that plane (a round bar along Z by "

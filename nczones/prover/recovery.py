@@ -316,7 +316,41 @@ def verify_recovery(segments: Any, machine: Machine, *, variant: RecoveryVariant
             break
     if any(replacement_length(cfg, machine, s.tool_length) != s.tool_length for s in segs if is_cutting(s)):
         _check_resume(pr, cfg, machine, segs, violations, reasons, max_violations)
+    if not budget_spent:
+        _recovery_solids(segs, machine, cfg, seq_of, violations, reasons, max_violations)
     return RecoveryOutcome(tuple(violations), tuple(reasons), tuple(stats.items()), cfg.variant)
+
+
+def _recovery_solids(segs: list[Segment], machine: Machine, cfg: Any, seq_of: dict[int, int],
+                     violations: list[Violation], reasons: list[Reason], max_violations: int) -> None:
+    """The recovery legs and the resumed cut proved for the tool solids (:mod:`.solids_recovery`), on a
+    machine that has them; a motion whose recovery already left the allowed set is not checked again."""
+    from ..solids import machine_solids
+
+    solids = machine_solids(machine)
+    if solids is None or not solids.fixtures:
+        return
+    from ..lathe_solids import LatheSolids
+
+    if isinstance(solids, LatheSolids):  # a lathe's turret tools: the legs are proved for the tip only
+        reasons.append(Reason("tool-break recovery legs are proved for the controlled point only on a lathe: its "
+                              "tool solids are not checked on them", None, None, "VF212"))
+        return
+    from .solids_recovery import recovery_solids, resume_solids
+
+    def replacement(length: Fraction) -> Fraction:
+        return replacement_length(cfg, machine, length)
+
+    done = {v.block for v in violations}
+    starts = {i: segs[seq_of[i]].start for i, s in enumerate(segs)
+              if is_cutting(s) and s.block not in done}
+    found, why = recovery_solids(segs, machine, solids, cfg, replacement, starts, max_violations - len(violations))
+    ti = tool_axis_index(machine)
+    more, why2 = resume_solids(segs, machine, solids, replacement,
+                               lambda seg, L2: shift_segment(seg, ti, L2 - seg.tool_length, L2),
+                               max_violations - len(violations) - len(found))
+    violations += found + more
+    reasons += [r for r in why + why2 if r.message not in {x.message for x in reasons}]
 
 
 def _segments(motion: Any) -> list[Segment]:

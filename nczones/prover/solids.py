@@ -42,7 +42,7 @@ import numpy as np
 
 from ..machine import Machine
 from ..motion import MotionChunk, Segment, SegmentKind
-from ..solids import FixtureBox, FixtureCylinder, Part, Solids
+from ..solids import FixtureBox, FixtureCylinder, FixturePrism, Part, Solids
 from .geometry import (
     arc_bases,
     arc_geom,
@@ -64,7 +64,7 @@ F0 = Fraction(0)
 F1 = Fraction(1)
 _HALF = Fraction(1, 2)
 
-Fixture = FixtureBox | FixtureCylinder
+Fixture = FixtureBox | FixtureCylinder | FixturePrism
 #: Arc pieces the solids proof may split an arc into before it says ``unknown`` (VF210).
 ARC_PIECES = 64
 #: Straight motions screened together (:mod:`nczones.prover.solids_screen`).
@@ -74,14 +74,77 @@ SCREEN = True
 _STRAIGHT = (SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL)
 
 
-@dataclass(slots=True)
+@dataclass(frozen=True, slots=True)
+class _Fx:
+    """A box or cylinder fixture as one motion sees it: the XY rectangle ``x0..x1 × y0..y1`` (None:
+    unbounded) grown by ``rr`` (0 for a box; a cylinder is its centre as a point rectangle grown by its
+    radius; a parameter range widens the rectangle), over the heights ``z0..z1``."""
+
+    name: str
+    x0: Fraction | None
+    x1: Fraction | None
+    y0: Fraction | None
+    y1: Fraction | None
+    z0: Fraction | None
+    z1: Fraction | None
+    rr: Fraction
+
+
+@dataclass(frozen=True, slots=True)
+class _Prism:
+    """A polygon prism as one motion sees it; ``grow`` widens it (a parameter range's reach, 0 nominal)."""
+
+    name: str
+    vertices: tuple[tuple[Fraction, Fraction], ...]
+    z0: Fraction | None
+    z1: Fraction | None
+    grow: Fraction = F0
+
+
+_Placed = _Fx | _Prism
+
+
+def _add(v: Fraction | None, d: Fraction) -> Fraction | None:
+    return None if v is None else v + d
+
+
+def _place(fx: Fixture, o: tuple[Fraction, Fraction, Fraction]) -> _Placed:
+    """The fixture moved by ``o`` (its work offset's origin; zero in machine coordinates)."""
+    ox, oy, oz = o
+    if isinstance(fx, FixturePrism):
+        return _Prism(fx.name, tuple((x + ox, y + oy) for x, y in fx.vertices), _add(fx.z0, oz), _add(fx.z1, oz))
+    if isinstance(fx, FixtureCylinder):
+        cx, cy = fx.cx + ox, fx.cy + oy
+        return _Fx(fx.name, cx, cx, cy, cy, _add(fx.z0, oz), _add(fx.z1, oz), fx.radius)
+    return _Fx(fx.name, _add(fx.x0, ox), _add(fx.x1, ox), _add(fx.y0, oy), _add(fx.y1, oy), _add(fx.z0, oz),
+               _add(fx.z1, oz), F0)
+
+
+def _grown(f: _Placed, d: tuple[tuple[Fraction, Fraction], ...]) -> _Placed:
+    """Every place of ``f`` relative to a part displaced by some ``d`` in the box ``d`` (per axis lo..hi):
+    the part at ``p + d`` meets ``f`` iff ``p`` meets ``f - d``, and the union over ``d`` is ``f`` grown by the
+    box, exactly for a rectangle; a polygon is moved by the box's centre and grown by its half-extents' sum
+    (an enclosure: the Euclidean reach of the box is at most that)."""
+    (xl, xh), (yl, yh), (zl, zh) = d
+    z0, z1 = _add(f.z0, -zh), _add(f.z1, -zl)
+    if isinstance(f, _Prism):
+        cx, cy = (xl + xh) / 2, (yl + yh) / 2
+        return _Prism(f.name, tuple((x - cx, y - cy) for x, y in f.vertices), z0, z1,
+                      f.grow + (xh - xl) / 2 + (yh - yl) / 2)
+    return _Fx(f.name, _add(f.x0, -xh), _add(f.x1, -xl), _add(f.y0, -yh), _add(f.y1, -yl), z0, z1, f.rr)
+
+
+def _reach(f: _Placed) -> Fraction:
+    return f.grow if isinstance(f, _Prism) else f.rr
+
+
 class _Span:
     """``t`` in ``lo..hi`` with open or closed ends (None: empty)."""
 
-    lo: Fraction
-    hi: Fraction
-    lo_open: bool = False
-    hi_open: bool = False
+    __slots__ = ("lo", "hi", "lo_open", "hi_open")
+
+    def __init__(self, lo: Fraction, hi: Fraction, lo_open: bool = False, hi_open: bool = False) -> None:
+        self.lo, self.hi, self.lo_open, self.hi_open = lo, hi, lo_open, hi_open
 
     def above(self, a: Fraction, b: Fraction) -> _Span | None:
         """Intersect with ``a + b t > 0``."""
@@ -121,48 +184,48 @@ def _gap_coef(p0: Fraction, d: Fraction, lo: Fraction | None, hi: Fraction | Non
     return F0, F0
 
 
-def _g_coef(fx: Fixture, px: Fraction, dx: Fraction, py: Fraction, dy: Fraction,
+def _g_coef(fx: _Fx, px: Fraction, dx: Fraction, py: Fraction, dy: Fraction,
             mid: Fraction) -> tuple[Fraction, Fraction, Fraction]:
-    if isinstance(fx, FixtureCylinder):
-        ax, ay = px - fx.cx, py - fx.cy
-    else:
-        ax, dx = _gap_coef(px, dx, fx.x0, fx.x1, mid)
-        ay, dy = _gap_coef(py, dy, fx.y0, fx.y1, mid)
+    ax, dx = _gap_coef(px, dx, fx.x0, fx.x1, mid)
+    ay, dy = _gap_coef(py, dy, fx.y0, fx.y1, mid)
     return dx * dx + dy * dy, 2 * (ax * dx + ay * dy), ax * ax + ay * ay
 
 
-def _breaks(fx: Fixture, px: Fraction, dx: Fraction, py: Fraction, dy: Fraction) -> list[Fraction]:
-    if isinstance(fx, FixtureCylinder):
-        return []
+def _breaks(fx: _Fx, px: Fraction, dx: Fraction, py: Fraction, dy: Fraction) -> list[Fraction]:
     out = []
     for p, d, sides in ((px, dx, (fx.x0, fx.x1)), (py, dy, (fx.y0, fx.y1))):
         if d != 0:
-            out += [(s - p) / d for s in sides if s is not None]
+            out += [(s - p) / d for s in set(sides) if s is not None]
     return out
 
 
-def _thr(fx: Fixture, r: Fraction) -> Fraction:
-    return (fx.radius + r) ** 2 if isinstance(fx, FixtureCylinder) else r * r
+def _thr(fx: _Placed, r: Fraction) -> Fraction:
+    return (_reach(fx) + r) ** 2
 
 
-def _g(fx: Fixture, x: Fraction, y: Fraction) -> Fraction:
-    if isinstance(fx, FixtureCylinder):
-        return (x - fx.cx) ** 2 + (y - fx.cy) ** 2
+def _g(fx: _Placed, x: Fraction, y: Fraction) -> Fraction:
+    """The squared XY distance from ``(x, y)`` to the fixture's core (rectangle or polygon; 0 inside)."""
+    if isinstance(fx, _Prism):
+        return _poly_dist2(fx.vertices, (x, y))
     gx = max(F0, (fx.x0 - x) if fx.x0 is not None else F0, (x - fx.x1) if fx.x1 is not None else F0)
     gy = max(F0, (fx.y0 - y) if fx.y0 is not None else F0, (y - fx.y1) if fx.y1 is not None else F0)
     return gx * gx + gy * gy
 
 
-def _contact(fx: Fixture, part: Part, x: Fraction, y: Fraction, z: Fraction, lo: Fraction,
-             hi: Fraction) -> tuple[Fraction, Fraction, Fraction]:
+def _contact(fx: _Placed, part: Part, x: Fraction, y: Fraction, z: Fraction, lo: Fraction,
+             hi: Fraction) -> tuple[Fraction, Fraction, Fraction] | None:
     """A rational point inside the part at ``(x, y, z)`` and inside the fixture's open interior (the caller
-    checked that they meet)."""
+    checked that they meet; a nominal fixture), or None when none was found."""
     zl = z + lo if fx.z0 is None else max(z + lo, fx.z0)
     zh = z + hi if fx.z1 is None else min(z + hi, fx.z1)
     zc = (zl + zh) / 2
-    if isinstance(fx, FixtureCylinder):
-        lam = part.radius / (fx.radius + part.radius)  # |q - p| < r and |q - C| < R (module docstring)
-        return x + (fx.cx - x) * lam, y + (fx.cy - y) * lam, zc
+    if isinstance(fx, _Prism):
+        c = _prism_contact(fx, part.radius, (x, y))
+        return None if c is None else (c[0], c[1], zc)
+    if fx.rr > 0:  # toward the nearest core point q: |c - p| < r and |c - q| < rr (module docstring)
+        qx, qy = _clamp(x, fx.x0, fx.x1), _clamp(y, fx.y0, fx.y1)
+        lam = part.radius / (fx.rr + part.radius)
+        return x + (qx - x) * lam, y + (qy - y) * lam, zc
     d_hi = sqrt_bounds(_g(fx, x, y))[1]
     delta = (part.radius - d_hi) / 4  # > 0: clamp into the box shrunk by delta, within d + delta·√2 < r
     out = []
@@ -171,17 +234,145 @@ def _contact(fx: Fixture, part: Part, x: Fraction, y: Fraction, z: Fraction, lo:
         b2 = None if b is None else b - delta
         if a2 is not None and b2 is not None and a2 > b2:
             a2 = b2 = (a + b) / 2  # type: ignore[operator]
-        v = v if a2 is None else max(v, a2)
-        out.append(v if b2 is None else min(v, b2))
+        out.append(_clamp(v, a2, b2))
     return out[0], out[1], zc
+
+
+def _clamp(v: Fraction, a: Fraction | None, b: Fraction | None) -> Fraction:
+    v = v if a is None else max(v, a)
+    return v if b is None else min(v, b)
+
+
+# --------------------------------------------------------------------------- polygons (exact, 2-D)
+
+Pt = tuple[Fraction, Fraction]
+
+
+def _cross(o: Pt, a: Pt, b: Pt) -> Fraction:
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def _locate(poly: tuple[Pt, ...], q: Pt) -> int:
+    """+1 strictly inside, 0 on the boundary, -1 outside (crossing number, exact)."""
+    inside = False
+    n = len(poly)
+    for i in range(n):
+        a, b = poly[i], poly[(i + 1) % n]
+        if _cross(a, b, q) == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]) \
+                and min(a[1], b[1]) <= q[1] <= max(a[1], b[1]):
+            return 0
+        if (a[1] > q[1]) != (b[1] > q[1]):
+            if q[0] < a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]):
+                inside = not inside
+    return 1 if inside else -1
+
+
+def _pt_seg(q: Pt, a: Pt, b: Pt) -> tuple[Fraction, Fraction]:
+    """``(squared distance, s)`` from ``q`` to the segment ``a + s (b - a)``, ``s`` in [0, 1]."""
+    ux, uy = b[0] - a[0], b[1] - a[1]
+    n2 = ux * ux + uy * uy
+    s = F0 if n2 == 0 else min(F1, max(F0, ((q[0] - a[0]) * ux + (q[1] - a[1]) * uy) / n2))
+    dx, dy = a[0] + s * ux - q[0], a[1] + s * uy - q[1]
+    return dx * dx + dy * dy, s
+
+
+def _seg_seg(a0: Pt, a1: Pt, b0: Pt, b1: Pt) -> tuple[Fraction, Fraction]:
+    """``(squared distance, s)`` between the segments ``a0 a1`` and ``b0 b1``, ``s`` the parameter on ``a`` of
+    a closest point: 0 where they cross, else the least of the four endpoint distances (in the plane the
+    distance of two disjoint segments is attained at an endpoint of one of them)."""
+    d1, d2 = _cross(b0, b1, a0), _cross(b0, b1, a1)
+    d3, d4 = _cross(a0, a1, b0), _cross(a0, a1, b1)
+    if ((d1 > 0 > d2) or (d1 < 0 < d2)) and ((d3 > 0 > d4) or (d3 < 0 < d4)):
+        return F0, d1 / (d1 - d2)
+    cands = [(_pt_seg(a0, b0, b1)[0], F0), (_pt_seg(a1, b0, b1)[0], F1)]
+    for q in (b0, b1):
+        cands.append(_pt_seg(q, a0, a1))
+    return min(cands)
+
+
+def _edges(poly: tuple[Pt, ...]) -> Iterator[tuple[Pt, Pt]]:
+    for i in range(len(poly)):
+        yield poly[i], poly[(i + 1) % len(poly)]
+
+
+def _poly_dist2(poly: tuple[Pt, ...], q: Pt) -> Fraction:
+    if _locate(poly, q) >= 0:
+        return F0
+    return min(_pt_seg(q, a, b)[0] for a, b in _edges(poly))
+
+
+def _path_poly(poly: tuple[Pt, ...], a0: Pt, a1: Pt) -> tuple[Fraction, Fraction]:
+    """``(least squared distance, s)`` from the segment ``a0 a1`` to the closed polygon region."""
+    if _locate(poly, a0) >= 0:
+        return F0, F0
+    return min(_seg_seg(a0, a1, p, q) for p, q in _edges(poly))
+
+
+def _rect_poly_gap2(poly: tuple[Pt, ...], bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:
+    """Least squared distance between the closed rectangle ``bx × by`` and the closed polygon region."""
+    corners = ((bx[0], by[0]), (bx[1], by[0]), (bx[1], by[1]), (bx[0], by[1]))
+    if _locate(poly, corners[0]) >= 0 or any(bx[0] <= x <= bx[1] and by[0] <= y <= by[1] for x, y in poly):
+        return F0
+    return min(_seg_seg(a, b, p, q)[0] for a, b in _edges(corners) for p, q in _edges(poly))
+
+
+def _prism_contact(f: _Prism, r: Fraction, p: Pt) -> Pt | None:
+    """A point strictly inside the polygon and strictly within ``r`` of ``p`` (the caller found the polygon
+    closer than ``r``): ``p`` itself, or a point past the nearest boundary point, halved toward it."""
+    if _locate(f.vertices, p) > 0:
+        return p
+    r2 = r * r
+    for a, b in _edges(f.vertices):
+        d2, s = _pt_seg(p, a, b)
+        if d2 >= r2:
+            continue
+        q = (a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]))
+        nx, ny = b[1] - a[1], a[0] - b[0]  # the edge's normals ±(nx, ny), and the way from p to q
+        c = _toward(f.vertices, p, r2, q, ((q[0] - p[0], q[1] - p[1]), (nx, ny), (-nx, -ny)))
+        if c is not None:
+            return c
+    v = f.vertices
+    for i, q in enumerate(v):  # a sharp vertex: between its two edges (a positive sum of their directions)
+        if (q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 < r2:
+            a, b = v[i - 1], v[(i + 1) % len(v)]
+            la, lb = abs(a[0] - q[0]) + abs(a[1] - q[1]), abs(b[0] - q[0]) + abs(b[1] - q[1])
+            d = ((a[0] - q[0]) / la + (b[0] - q[0]) / lb, (a[1] - q[1]) / la + (b[1] - q[1]) / lb)
+            c = _toward(v, p, r2, q, (d,))
+            if c is not None:
+                return c
+    return None
+
+
+def _toward(poly: tuple[Pt, ...], p: Pt, r2: Fraction, q: Pt, ways: tuple[Pt, ...]) -> Pt | None:
+    """A point ``q + k w`` (``w`` one of ``ways``, ``k`` halved from the part's reach) strictly inside the
+    polygon and strictly within ``sqrt(r2)`` of ``p``, or None."""
+    for dx, dy in ways:
+        if dx == 0 and dy == 0:
+            continue
+        k = 1 / (abs(dx) + abs(dy))
+        for _ in range(64):
+            c = (q[0] + dx * k, q[1] + dy * k)
+            if (c[0] - p[0]) ** 2 + (c[1] - p[1]) ** 2 < r2 and _locate(poly, c) > 0:
+                return c
+            k /= 2
+    return None
 
 
 @dataclass
 class SolidsChecker:
-    """Fed every motion in execution order; collects violations, reasons and least clearances."""
+    """Fed every motion in execution order; collects violations, reasons and least clearances.
+
+    ``ranges``: the parameter ranges of the case (:class:`~nczones.prover.result.ParamRange`, deviations from
+    the values the motion was built at); a part is proved against each fixture grown by every displacement
+    the ranges allow (:meth:`_displacement`), and a hit of the grown fixture is a violation only where the
+    nominal motion hits too (else ``unknown``, ``VF218``)."""
 
     machine: Machine
     solids: Solids
+    ranges: tuple[Any, ...] = ()
+    #: a displacement box (per axis X, Y, Z: lo..hi, containing 0) added to every motion's: the tool-break
+    #: recovery proves a family of legs as one leg displaced within it (:mod:`.solids_recovery`)
+    shift: tuple[tuple[Fraction, Fraction], ...] | None = None
     violations: list[Violation] = field(default_factory=list)
     reasons: list[Reason] = field(default_factory=list)
     #: (part label, fixture name) -> (least clearance lower bound, line)
@@ -200,12 +391,17 @@ class SolidsChecker:
     _blocks: set[int] = field(default_factory=set)
     _arc_witness: bool = False
     _labels: dict[Part, str] = field(default_factory=dict)
+    _cache: dict[tuple, Any] = field(default_factory=dict)
+    _where: dict[tuple[Part, Fixture], tuple[_Placed, _Placed]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
-        if self.screen is None:
-            self.screen = SCREEN
         axes = self.machine.axis_names
         self.ix, self.iy, self.iz = axes.index("X"), axes.index("Y"), axes.index("Z")
+        self._dev = {r.name: (r.lo, r.hi) for r in self.ranges}
+        # the screen compares the fixtures as the machine file gives them: only where no range, work offset
+        # or prism moves or shapes them per motion (else every motion goes to the exact proof)
+        static = not self._dev and not any(fx.frame or isinstance(fx, FixturePrism) for fx in self.solids.fixtures)
+        self.screen = (SCREEN if self.screen is None else self.screen) and static
 
     def feed(self, seg: Segment) -> None:
         """Check one motion (straight motions are screened in batches first: call :meth:`flush` at the end)."""
@@ -295,6 +491,8 @@ class SolidsChecker:
                 if seg.block in before or stopped.get(seg.block, k + 1) <= k:
                     continue  # the exact proof of the violating motion itself stopped at the violation
                 self.screened_pairs += 1
+                if self._placed(seg, (pair.part,)) is None:  # the fixtures where this motion sees them
+                    continue
                 for piece in line_pieces(seg, self.machine):
                     self._line(seg, (pair.part,), piece.p0, piece.p1, piece.tau0, piece.tau1, (pair.fixture,))
 
@@ -311,6 +509,8 @@ class SolidsChecker:
         if moved:  # a rotary or extra linear axis may carry the fixtures or the tool: not modelled
             self._unknown(seg, "VF210", f"the motion moves {', '.join(moved)}: the tool solids are modelled on a "
                           "machine moving X, Y and Z only")
+        elif self._placed(seg, parts) is None:
+            return
         elif seg.kind is SegmentKind.ARC:
             self._arc(seg, parts)
         elif seg.kind in (SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL):
@@ -320,9 +520,111 @@ class SolidsChecker:
         else:
             self._unknown(seg, "VF210", f"the tool solids along a {seg.kind.name.lower()} motion are not modelled")
 
+    def box_clear(self, seg: Segment, lo_c: list, hi_c: list) -> bool | None:
+        """With the controlled point anywhere in the box ``lo_c..hi_c`` (machine coordinates) and the tool,
+        tool length and frame of ``seg``: do the parts stay out of every fixture (True), may one meet one
+        (False), or is that not known (None: a reason is given, VF211/VF219)?"""
+        if not self.solids.fixtures:
+            return True
+        parts = self.solids.parts_for(seg.tool_register)
+        if parts is None:
+            self._unknown(seg, "VF211", "no tool length is active (G49): the tool assembly on the recovery legs is "
+                          "not known")
+            return None
+        if self._placed(seg, parts) is None:
+            return None
+        return self._box_hits(seg, parts, lo_c, hi_c) is None
+
     def _unknown(self, seg: Segment, code: str, message: str) -> None:
         self._blocks.add(seg.block)
         self.reasons.append(Reason(message, seg.span, seg.block, code))
+
+    # ------------------------------------------------------------------ where the fixtures are at a motion
+
+    def _placed(self, seg: Segment, parts: tuple[Part, ...]) -> dict | None:
+        """Per (part, fixture): the fixture where the motion sees it, nominal and grown by the ranges'
+        displacements (the same object when they allow none); None (a reason given) when a fixture's work
+        offset is not known at this motion or the ranges' dependencies were not tracked.  Cached by what the
+        placement reads (the parts, the frame if a fixture has one, the dependencies if there are ranges)."""
+        framed = any(fx.frame for fx in self.solids.fixtures)
+        frame = seg.frame
+        key = (parts, (frame.work, frame.work_offset, frame.rotation) if framed and frame is not None else framed,
+               (seg.deps_start, seg.deps_end, seg.deps_tool) if self._dev else None)
+        got = self._cache.get(key)
+        if got is None:
+            if len(self._cache) > 4096:  # memory stays bounded whatever the program
+                self._cache.clear()
+            got = self._cache[key] = self._place_all(seg, parts)
+        if isinstance(got, tuple):
+            self._unknown(seg, *got)
+            return None
+        self._where = got
+        return got
+
+    def _place_all(self, seg: Segment, parts: tuple[Part, ...]) -> dict | tuple[str, str]:
+        if self._dev and any(not r.name.startswith("home.") for r in self.ranges) and not seg.deps_start:
+            return "VF218", ("the motion does not say which parameters its coordinates depend on: the tool solids "
+                             "cannot be moved with the parameter ranges")
+        where: dict[tuple[Part, Fixture], tuple[_Placed, _Placed]] = {}
+        for fx in self.solids.fixtures:
+            origin = self._origin(seg, fx)
+            if origin is None:
+                frame = seg.frame
+                now = "no work offset" if frame is None else (
+                    f"{frame.work} rotated" if frame.rotation is not None and frame.work == fx.frame else frame.work)
+                return "VF219", (f"the fixture `{fx.name}` moves with {fx.frame}, but this motion runs in {now}: where "
+                                 f"{fx.frame} is now is not known to the solids proof (run the motions near it in "
+                                 f"{fx.frame}, unrotated)")
+            nominal = _place(fx, origin)
+            for part in parts:
+                d = self._displacement(seg, part, fx)
+                grown = nominal if all(lo == hi == 0 for lo, hi in d) else _grown(nominal, d)
+                where[part, fx] = (nominal, grown)
+        return where
+
+    def _origin(self, seg: Segment, fx: Fixture) -> tuple[Fraction, Fraction, Fraction] | None:
+        if not fx.frame:
+            return F0, F0, F0
+        frame = seg.frame
+        if frame is None or frame.work != fx.frame or frame.rotation is not None or frame.work_offset is None:
+            return None
+        w = frame.work_offset
+        return w[self.ix], w[self.iy], w[self.iz]
+
+    def _displacement(self, seg: Segment, part: Part, fx: Fixture) -> tuple[tuple[Fraction, Fraction], ...]:
+        """Per axis X, Y, Z the interval (containing 0) of the part's displacement against the fixture over the
+        ranges: the coordinate's sources (``Segment.deps_start``/``deps_end``, their hull along the motion),
+        less a tool part's length sources on Z (the tip is machine Z minus the length), less the fixture's
+        work offset; a homing error moves the machine, and a fixture in a work offset maybe with it."""
+        out: list[tuple[Fraction, Fraction]] = []
+        for a, i in (("X", self.ix), ("Y", self.iy), ("Z", self.iz)):
+            lo = hi = F0
+            for deps in (seg.deps_start, seg.deps_end):
+                coef: dict[str, int] = {}
+                for dep in (deps[i] if deps else ()):  # named as the prover's core names them
+                    name = dep if dep.startswith("H") else f"{dep}.{a}"
+                    coef[name] = coef.get(name, 0) + 1
+                if a == "Z" and not part.spindle:
+                    for dep in seg.deps_tool:
+                        name = dep if dep.startswith("H") else f"{dep}.Z"
+                        coef[name] = coef.get(name, 0) - 1
+                if fx.frame:
+                    coef[f"{fx.frame}.{a}"] = coef.get(f"{fx.frame}.{a}", 0) - 1
+                home = self._dev.get(f"home.{a}")
+                e_lo, e_hi = F0, F0
+                if home is not None:  # with a work offset the fixture may move with the homing too: 0 or all
+                    e_lo, e_hi = (min(F0, home[0]), max(F0, home[1])) if fx.frame else home
+                for name, c in coef.items():
+                    r = self._dev.get(name)
+                    if r is not None and c:
+                        e_lo, e_hi = e_lo + min(c * r[0], c * r[1]), e_hi + max(c * r[0], c * r[1])
+                lo, hi = min(lo, e_lo), max(hi, e_hi)
+            if self.shift is not None:
+                lo, hi = lo + self.shift[len(out)][0], hi + self.shift[len(out)][1]
+            out.append((lo, hi))
+        return tuple(out)
+
+    # ------------------------------------------------------------------ clearances
 
     def _offsets(self, seg: Segment, part: Part) -> tuple[Fraction, Fraction]:
         shift = F0 if part.spindle else -seg.tool_length
@@ -334,8 +636,8 @@ class SolidsChecker:
             label = self._labels[part] = part.label()
         return label, fx.name
 
-    def _clear(self, part: Part, fx: Fixture, gmin: Fraction, seg: Segment) -> None:
-        thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
+    def _clear(self, part: Part, fx: Fixture, f: _Placed, gmin: Fraction, seg: Segment) -> None:
+        thr_r = _reach(f) + part.radius
         key = self._key(part, fx)
         best = self.clearance.get(key)
         if best is not None and best[0] + thr_r >= 0 and gmin >= (best[0] + thr_r) ** 2:
@@ -344,13 +646,15 @@ class SolidsChecker:
         if best is None or c < best[0]:
             self.clearance[key] = (c, seg.line)
 
-    def _far(self, part: Part, fx: Fixture, bx: tuple, by: tuple) -> bool:
+    def _far(self, part: Part, fx: Fixture, f: _Placed, bx: tuple, by: tuple) -> bool:
         """Is the box ``bx × by`` of the part's axis so far from the fixture that the part cannot meet it nor
         come closer than its least clearance so far?  (A cheap screen before the exact minimum.)"""
-        gap2 = _rect_gap2(fx, bx, by)
-        thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
         best = self.clearance.get(self._key(part, fx))
-        return best is not None and best[0] >= 0 and gap2 >= (best[0] + thr_r) ** 2
+        if best is None or best[0] < 0:
+            return False
+        return _rect_gap2(f, bx, by) >= (best[0] + _reach(f) + part.radius) ** 2
+
+    # ------------------------------------------------------------------ straight motions
 
     def _line(self, seg: Segment, parts: tuple[Part, ...], p0: tuple, p1: tuple, tau0: Fraction,
               tau1: Fraction, fixtures: tuple[Fixture, ...] | None = None) -> bool:
@@ -360,58 +664,50 @@ class SolidsChecker:
         for part in parts:
             lo, hi = self._offsets(seg, part)
             for fx in self.solids.fixtures if fixtures is None else fixtures:
-                if self._far(part, fx, bx, by):
+                nominal, grown = self._where[part, fx]
+                if self._far(part, fx, grown, bx, by):
                     continue
-                span: _Span | None = _Span(F0, F1)
-                if fx.z1 is not None:  # pz + dz t + lo < z1
-                    span = span.above(fx.z1 - pz - lo, -dz) if span else None
-                if fx.z0 is not None and span is not None:  # pz + dz t + hi > z0
-                    span = span.above(pz + hi - fx.z0, dz)
-                if span is None:
+                found = _line_min(grown, part.radius, lo, hi, (px, py, pz), (dx, dy, dz))
+                if found is None:
                     continue
-                cuts = sorted({span.lo, span.hi, *(b for b in _breaks(fx, px, dx, py, dy) if span.lo < b < span.hi)})
-                best = min((_quad_min(_g_coef(fx, px, dx, py, dy, (a + b) / 2), a, b)
-                            for a, b in zip(cuts, cuts[1:])), default=None)
-                if best is None:  # a closed single point
-                    best = (_g(fx, px + dx * span.lo, py + dy * span.lo), span.lo)
-                gmin, t = best
-                self._clear(part, fx, gmin, seg)
-                if gmin >= _thr(fx, part.radius):
+                gmin, t, span = found
+                self._clear(part, fx, grown, gmin, seg)
+                if gmin >= _thr(grown, part.radius):
                     continue
-                inside = self._inside(fx, part, span, t, px, dx, py, dy)
-                if inside is None:  # never a silent safe: the part meets the fixture, only no witness was found
-                    self._unknown(seg, "VF210", f"the {part.label()} meets `{fx.name}` but no witness point was "
-                                  "found")
+                if grown is not nominal:
+                    found = _line_min(nominal, part.radius, lo, hi, (px, py, pz), (dx, dy, dz))
+                    if found is None or found[0] >= _thr(nominal, part.radius):
+                        self._unknown(seg, "VF218", f"the {part.label()} may enter `{fx.name}` for some values of "
+                                      "the parameter ranges (not at their nominal values): the ranges move it "
+                                      "that far")
+                        return True
+                    gmin, t, span = found
+                if self._hit(seg, part, fx, nominal, span, t, (p0, p1, tau0, tau1), lo, hi):
                     return True
-                t = inside
-                self._report(seg, part, fx, (px + dx * t, py + dy * t, pz + dz * t), tau0 + t * (tau1 - tau0),
-                             p0, p1, t, lo, hi)
-                return True
         return False
 
-    def _inside(self, fx: Fixture, part: Part, span: _Span, t: Fraction, px: Fraction, dx: Fraction,
-                py: Fraction, dy: Fraction) -> Fraction | None:
-        """``t`` moved into the open span, keeping ``g < thr`` (g is continuous; bounded halving)."""
-        if not ((t == span.lo and span.lo_open) or (t == span.hi and span.hi_open)):
-            return t
-        other = span.hi if t == span.lo else span.lo
-        thr = _thr(fx, part.radius)
-        step = (other - t) / 2
-        for _ in range(400):
-            u = t + step
-            if _g(fx, px + dx * u, py + dy * u) < thr:
-                return u
-            step /= 2
-        return None  # pragma: no cover - g is continuous at t and below thr there
+    def _hit(self, seg: Segment, part: Part, fx: Fixture, f: _Placed, span: _Span, t: Fraction, path: tuple,
+             lo: Fraction, hi: Fraction) -> bool:
+        """Report the part in the nominal fixture at ``t`` (or the reason no witness was found)."""
+        p0, p1, tau0, tau1 = path
+        px, py, pz = p0[self.ix], p0[self.iy], p0[self.iz]
+        dx, dy, dz = p1[self.ix] - px, p1[self.iy] - py, p1[self.iz] - pz
+        inside = _inside(f, part, span, t, px, dx, py, dy)
+        at = None if inside is None else (px + dx * inside, py + dy * inside, pz + dz * inside)
+        contact = None if at is None else _contact(f, part, *at, lo, hi)
+        if inside is None or at is None or contact is None:  # never a silent safe: no witness point was found
+            self._unknown(seg, "VF210", f"the {part.label()} meets `{fx.name}` but no witness point was found")
+            return True
+        self._report(seg, part, f, at, contact, tau0 + inside * (tau1 - tau0), p0, p1, inside, lo, hi)
+        return True
 
-    def _report(self, seg: Segment, part: Part, fx: Fixture, p: tuple, tau: Fraction, p0: tuple, p1: tuple,
-                t: Fraction, lo: Fraction, hi: Fraction) -> None:
+    def _report(self, seg: Segment, part: Part, fx: _Placed, p: tuple, contact: tuple, tau: Fraction, p0: tuple,
+                p1: tuple, t: Fraction, lo: Fraction, hi: Fraction) -> None:
         x, y, z = p
-        cx, cy, cz = _contact(fx, part, x, y, z, lo, hi)
+        cx, cy, cz = contact
         path = tuple(a + t * (b - a) for a, b in zip(p0, p1))
         axes = self.machine.axis_names
-        thr_r = fx.radius + part.radius if isinstance(fx, FixtureCylinder) else part.radius
-        depth_xy = thr_r - sqrt_bounds(_g(fx, x, y), 64)[1]
+        depth_xy = _reach(fx) + part.radius - sqrt_bounds(_g(fx, x, y), 64)[1]
         depth_z = min(v for v in ((fx.z1 - (z + lo)) if fx.z1 is not None else None,
                                   ((z + hi) - fx.z0) if fx.z0 is not None else None, depth_xy) if v is not None)
         depth = max(F0, min(depth_xy, depth_z))
@@ -518,14 +814,15 @@ class SolidsChecker:
         for part in parts:
             lo, hi = self._offsets(seg, part)
             for fx in self.solids.fixtures:
-                if (fx.z1 is not None and bz[0] + lo >= fx.z1) or (fx.z0 is not None and bz[1] + hi <= fx.z0):
+                f = self._where[part, fx][1]
+                if (f.z1 is not None and bz[0] + lo >= f.z1) or (f.z0 is not None and bz[1] + hi <= f.z0):
                     continue
-                gmin = _rect_gap2(fx, bx, by)
-                if gmin < _thr(fx, part.radius):
+                gmin = _rect_gap2(f, bx, by)
+                if gmin < _thr(f, part.radius):
                     return part, fx
-                clear.append((part, fx, gmin))
-        for part, fx, gmin in clear:
-            self._clear(part, fx, gmin, seg)
+                clear.append((part, fx, f, gmin))
+        for part, fx, f, gmin in clear:
+            self._clear(part, fx, f, gmin, seg)
         return None
 
 
@@ -534,14 +831,61 @@ def _row_segment(chunk: MotionChunk, base: int, k: int) -> Segment:
     return next(iter(chunk.rows(base + k, base + k + 1).segments()))
 
 
-def _rect_gap2(fx: Fixture, bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:
-    """Least squared XY distance between the rectangle ``bx × by`` and the fixture's box section / centre."""
-    if isinstance(fx, FixtureCylinder):
-        gx = max(F0, bx[0] - fx.cx, fx.cx - bx[1])
-        gy = max(F0, by[0] - fx.cy, fx.cy - by[1])
-    else:
-        gx = max(F0, (bx[0] - fx.x1) if fx.x1 is not None else F0, (fx.x0 - bx[1]) if fx.x0 is not None else F0)
-        gy = max(F0, (by[0] - fx.y1) if fx.y1 is not None else F0, (fx.y0 - by[1]) if fx.y0 is not None else F0)
+def _line_min(f: _Placed, r: Fraction, lo: Fraction, hi: Fraction, p: tuple, d: tuple
+              ) -> tuple[Fraction, Fraction, _Span] | None:
+    """Along ``p + d t`` (t in 0..1, the part's heights ``lo..hi`` above the controlled point): the span of
+    ``t`` where the heights overlap the fixture's (None: never), and the least squared XY distance from the
+    part's axis to the fixture's core over it with its ``t`` (exact: a convex piecewise quadratic for a
+    rectangle, the distance of two segments for a polygon)."""
+    px, py, pz = p
+    dx, dy, dz = d
+    span: _Span | None = _Span(F0, F1)
+    if f.z1 is not None:  # pz + dz t + lo < z1
+        span = span.above(f.z1 - pz - lo, -dz) if span else None
+    if f.z0 is not None and span is not None:  # pz + dz t + hi > z0
+        span = span.above(pz + hi - f.z0, dz)
+    if span is None:
+        return None
+    if isinstance(f, _Prism):
+        a0 = (px + dx * span.lo, py + dy * span.lo)
+        a1 = (px + dx * span.hi, py + dy * span.hi)
+        g, s = _path_poly(f.vertices, a0, a1)
+        return g, span.lo + s * (span.hi - span.lo), span
+    cuts = sorted({span.lo, span.hi, *(b for b in _breaks(f, px, dx, py, dy) if span.lo < b < span.hi)})
+    best = min((_quad_min(_g_coef(f, px, dx, py, dy, (a + b) / 2), a, b) for a, b in zip(cuts, cuts[1:])),
+               default=None)
+    if best is None:  # a closed single point
+        best = (_g(f, px + dx * span.lo, py + dy * span.lo), span.lo)
+    return best[0], best[1], span
+
+
+def _inside(f: _Placed, part: Part, span: _Span, t: Fraction, px: Fraction, dx: Fraction, py: Fraction,
+            dy: Fraction) -> Fraction | None:
+    """``t`` moved into the open span, keeping ``g < thr`` (g is continuous; bounded halving)."""
+    if not ((t == span.lo and span.lo_open) or (t == span.hi and span.hi_open)):
+        return t
+    other = span.hi if t == span.lo else span.lo
+    thr = _thr(f, part.radius)
+    step = (other - t) / 2
+    for _ in range(400):
+        u = t + step
+        if _g(f, px + dx * u, py + dy * u) < thr:
+            return u
+        step /= 2
+    return None  # pragma: no cover - g is continuous at t and below thr there
+
+
+def _outward(b: tuple[Fraction, Fraction], den: int = 1 << 16) -> tuple[Fraction, Fraction]:
+    return Fraction(math.floor(b[0] * den), den), Fraction(math.ceil(b[1] * den), den)
+
+
+def _rect_gap2(f: _Placed, bx: tuple[Fraction, Fraction], by: tuple[Fraction, Fraction]) -> Fraction:
+    """Least squared XY distance between the rectangle ``bx × by`` and the fixture's core."""
+    if isinstance(f, _Prism):  # the rectangle rounded outward to 2^-16 mm (an arc piece's box has large
+        # denominators the segment distances would carry): a lower bound, all its callers need
+        return _rect_poly_gap2(f.vertices, _outward(bx), _outward(by))
+    gx = max(F0, (bx[0] - f.x1) if f.x1 is not None else F0, (f.x0 - bx[1]) if f.x0 is not None else F0)
+    gy = max(F0, (by[0] - f.y1) if f.y1 is not None else F0, (f.y0 - by[1]) if f.y0 is not None else F0)
     return gx * gx + gy * gy
 
 
@@ -559,8 +903,8 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     from .result import Verdict
 
     lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
-    checker: Any = (LatheSolidsChecker(machine, solids) if isinstance(solids, LatheSolids)
-                    else SolidsChecker(machine, solids))
+    checker: Any = (LatheSolidsChecker(machine, solids) if lathe
+                    else SolidsChecker(machine, solids, options.ranges(machine)))
     meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 
     def tee() -> Iterator[Any]:
@@ -579,17 +923,14 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     violations = result.violations + tuple(checker.violations[:max(0, options.max_violations
                                                                   - len(result.violations))])
     reasons = result.reasons + tuple(checker.reasons)
+    if lathe and options.ranges(machine) and solids.fixtures:
+        reasons += (Reason("parameter ranges do not move a lathe's tool solids yet: they were checked at the "
+                           "nominal offsets and tool lengths only", None, None, "VF212"),)
     if solids.unmodelled:
         reasons += (Reason(f"forbidden zone{'s' if len(solids.unmodelled) > 1 else ''} "
                            f"{', '.join(f'`{n}`' for n in solids.unmodelled)} of a kind the tool solids are not "
-                           "checked against (only boxes and [[fixtures]] are solids): the tip is proved, the holder "
+                           "checked against (only boxes, stepped tables, XY polygons and [[fixtures]] are solids): the tip is proved, the holder "
                            "is not", None, None, "VF210"),)
-    if options.ranges(machine) and solids.fixtures:
-        reasons += (Reason("parameter ranges do not move the tool solids yet: the solids were checked at the "
-                           "nominal offsets and tool lengths only", None, None, "VF212"),)
-    if options.recovery and solids.fixtures:
-        reasons += (Reason("tool-break recovery legs are proved for the controlled point only: the tool solids "
-                           "are not checked on them yet", None, None, "VF212"),)
     verdict = result.verdict
     if result.interrupted:
         pass

@@ -132,7 +132,9 @@ def render_text(result: Result, program: str = "", *, color: bool = False,
             what = "recovery " + what
         depth = ("at least " if not v.depth_exact else "") + numbers.depth(v.depth, v.depth_exact,
                                                                           numbers.depth_step(resolution))
-        if v.kind == "solid":  # a tool solid in a fixture (nczones.prover.solids)
+        # a tool solid in a fixture (nczones.prover.solids; on a recovery leg, nczones.prover.solids_recovery: the
+        # part in ``zones``, the fixture in ``zone``, while a recovery of the controlled point lists its zone there)
+        if v.kind == "solid" or (v.kind == "recovery" and v.zones and v.zone not in v.zones):
             out.extend(_solid_lines(v, loc, what, depth, resolution, paint))
             continue
         out.append(f"{paint('loc', loc + ':')} {paint('violation', f'violation[{v.zone}]:')} "

@@ -15,8 +15,10 @@ from nczones.errors import MachineFileError
 from nczones.gcode import segments_text
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify, verify_text
-from nczones.solids import machine_solids
+from nczones.solids import FixtureBox, FixturePrism, machine_solids
 from tests.oracles.solids import inside_part_and_fixture, sampled_hit
+
+F = Fraction
 
 ROOT = Path(__file__).resolve().parents[2]
 MACHINE = ROOT / "specs/machines/mill_solids.toml"
@@ -58,15 +60,98 @@ def test_example_holder_clears_vise_with_clearance():
     assert clear[("holder (Ø63 × 60 at 40..100 above the tip)", "vise")] == Fraction(17, 2)
 
 
-def test_a_forbidden_polygon_is_not_a_solid_fixture_and_the_verdict_says_so():
-    """Only boxes and [[fixtures]] are fixture solids: a forbidden polygon far from the tip's path could still
-    meet the holder, so it is named and the verdict is unknown (VF210), never safe."""
+def _with_polygon(vertices: str, plane: str = '["X", "Y"]', limits: str = 'min = { Z = "40" }\nmax = { Z = "70" }\n'):
+    return parse_machine(MACHINE.read_text(encoding="utf-8") + (
+        f'\n[[zones]]\nname = "clamp plate"\nkind = "polygon"\nforbid = true\nplane = {plane}\n'
+        f'vertices = {vertices}\n{limits}'))
+
+
+def test_a_forbidden_xy_polygon_is_a_prism_fixture():
+    """A forbidden polygon in the XY plane over a Z range is a prism the holder may not enter (issue 39).
+
+    holder_clears_vise.ngc plunges the tip to Z10 at X60 Y40, then feeds to Y20. The holder (radius 31.5,
+    40..100 above the tip) is then at Z 50..110, over the plate's Z 40..70 once the tip is below 70 - 40 = 30.
+    A plate whose apex is at (60, 70) is 30 from the holder's axis at Y40: 1.5 mm inside on line 6 (the plunge;
+    the shank, radius 5 at 25..40 above the tip, stays 25 clear). With the apex at (60, 72) the holder passes
+    32 - 31.5 = 0.5 clear; a plate far away (X500) is proved too."""
     text = (PROGRAMS / "holder_clears_vise.ngc").read_text(encoding="utf-8")
-    polygon = ('\n[[zones]]\nname = "clamp plate"\nkind = "polygon"\nforbid = true\nplane = ["X", "Y"]\n'
-               'vertices = [["500", "500"], ["520", "500"], ["520", "520"]]\n')
-    r = verify_text(text, parse_machine(MACHINE.read_text(encoding="utf-8") + polygon))
+    hit = verify_text(text, _with_polygon('[["60", "70"], ["40", "120"], ["80", "120"]]'))
+    assert hit.verdict.label == "unsafe", (hit.reasons, hit.violations)
+    v = hit.violations[0]
+    assert (v.zone, v.zones, v.line) == ("clamp plate", ("holder",), 6)
+    point = tuple(x for _, x in v.point)
+    path = tuple(x for _, x in v.path_point)
+    holder = machine_solids(_mill()).tools[1][2]
+    plate = FixturePrism("clamp plate", ((F(60), F(70)), (F(40), F(120)), (F(80), F(120))), F(40), F(70))
+    assert inside_part_and_fixture(point, path, holder, plate, F(100))
+    clear = verify_text(text, _with_polygon('[["60", "72"], ["40", "120"], ["80", "120"]]'))
+    assert clear.verdict.label == "safe", (clear.reasons, clear.violations)
+    c = {(p, f): c for p, f, c, _ in clear.extra["clearance"]}
+    assert c[("holder (Ø63 × 60 at 40..100 above the tip)", "clamp plate")] == F(1, 2)
+    far = verify_text(text, _with_polygon('[["500", "500"], ["520", "500"], ["520", "520"]]'))
+    assert far.verdict.label == "safe", far.reasons
+
+
+def test_a_sharp_prism_vertex_gets_a_witness_inside():
+    """A thin plate (apex (100, 300), base X200 Y290..310, Z 0..30; the apex angle about 11.4°). The holder's
+    axis at X90 Y317 is nearest the apex (it is in the apex's normal cone: (-10, 17) is at 120° from +X, more
+    than 90° from both edges), √389 ≈ 19.7 < 31.5 from it; with the tip at Z-15 the holder (from Z25 up) is
+    below the plate's top: unsafe, and the contact point must be strictly inside the plate, found between the
+    apex's two edges (neither the way from the axis to the apex nor an edge's normal leads inside)."""
+    m = _with_polygon('[["100", "300"], ["200", "290"], ["200", "310"]]', limits='min = { Z = "0" }\nmax = { Z = "30" }\n')
+    r = verify_text(HEADER + "G0 X90 Y317 Z100\nG1 Z-15 F300\nG0 Z100\nM30\n", m)
+    assert r.verdict.label == "unsafe", (r.reasons, r.violations)
+    v = r.violations[0]
+    assert (v.zone, v.zones, v.line) == ("clamp plate", ("holder",), 5)
+    plate = FixturePrism("clamp plate", ((F(100), F(300)), (F(200), F(290)), (F(200), F(310))), F(0), F(30))
+    holder = machine_solids(_mill()).tools[1][2]
+    assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), holder, plate,
+                                   F(100))
+
+
+def test_a_forbidden_polygon_in_another_plane_is_not_a_solid_fixture_and_the_verdict_says_so():
+    """A polygon in the ZX plane (a lathe-style profile) is no prism along the tool axis: the holder is not
+    checked against it, so it is named and the verdict is unknown (VF210), never safe."""
+    text = (PROGRAMS / "holder_clears_vise.ngc").read_text(encoding="utf-8")
+    r = verify_text(text, _with_polygon('[["500", "500"], ["520", "500"], ["520", "520"]]', '["Z", "X"]', ""))
     assert r.verdict.label == "unknown"
     assert any(x.code == "VF210" and "`clamp plate`" in x.message for x in r.reasons), r.reasons
+
+
+STEPS = """
+[[zones]]
+name = "steps"
+kind = "stepped"
+forbid = true
+point = "tip"
+reference_axis = "X"
+limited_axis = "Z"
+from = "450"
+regions = [{ upto = "480", min = "0", max = "40" }, { upto = "520", min = "0", max = "10" }]
+"""
+
+
+@pytest.mark.parametrize("z, verdict", [("10", "safe"), ("-5", "unsafe")])
+def test_a_forbidden_stepped_table_is_a_fixture_box_per_region(z, verdict):
+    """A forbidden stepped table of X and Z (here X 450..480 up to Z40, X 480..520 up to Z10, every Y) is one
+    fixture box per region. The tip plunges at X440 Y300: the cutter (radius 5) reaches X445, clear of the
+    steps; the holder (radius 31.5, from 40 above the tip) reaches X471.5, over the first step: its bottom at
+    tip Z10 is Z50, 10 above the step's top 40 (safe); at tip Z-5 it is at Z35, inside (unsafe)."""
+    m = parse_machine(MACHINE.read_text(encoding="utf-8") + STEPS)
+    r = verify_text(HEADER + f"G0 X440 Y300 Z100\nG1 Z{z} F300\nG0 Z100\nM30\n", m)
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    if verdict == "unsafe":
+        v = r.violations[0]
+        assert (v.zone, v.zones, v.line) == ("steps", ("holder",), 5)
+        holder = machine_solids(m).tools[1][2]
+        step = FixtureBox("steps", F(450), F(480), None, None, F(0), F(40))
+        assert inside_part_and_fixture(tuple(x for _, x in v.point), tuple(x for _, x in v.path_point), holder,
+                                       step, F(100))
+    else:
+        clear = {(p, f): c for p, f, c, _ in r.extra["clearance"]}
+        # the holder is over the first step (horizontally inside), its heights never overlap: no figure; the
+        # cutter (0..25 above the tip, Z10..35 overlapping the step's 0..40) is 5 from the step's face X450
+        assert clear[("cutter (Ø10 × 25 at 0..25 above the tip)", "steps")] == 5
 
 
 HEADER = "G21 G90 G17 G54\nT1 M6\nG43 H1\n"
@@ -161,7 +246,9 @@ def test_solids_need_xyz():
 
 # --------------------------------------------------------------------------- against the oracle
 
-ORACLE_MACHINE = MACHINE_HEAD.replace('Z = "400"', 'Z = "300"') + """[offsets]
+# exact path (G61): under G64 every verdict with solids is unknown (VF210) and the comparison is vacuous
+ORACLE_MACHINE = MACHINE_HEAD.replace('Z = "400"', 'Z = "300"').replace(
+    'axes = ["X", "Y", "Z"]\n', 'axes = ["X", "Y", "Z"]\npath_mode = "G61"\n') + """[offsets]
 G54 = { X = "0", Y = "0", Z = "0" }
 [tool_lengths]
 H1 = "50"
@@ -232,6 +319,7 @@ def test_never_a_wrong_safe_long(text):
 def _against_oracle(text):
     machine = parse_machine(ORACLE_MACHINE, "oracle.toml")
     r = verify_text(text, machine)
+    assert not any("G64" in x.message for x in r.reasons), r.reasons  # the machine runs the exact path
     solids = machine_solids(machine)
     segs = segments_text(text, machine, fast=False)
     hit = None

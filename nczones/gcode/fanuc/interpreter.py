@@ -282,7 +282,9 @@ class FanucInterpreter(Interpreter):
                 opaque = f"{what} is active: the program point is not given"
                 break
         diameter = tuple(self.axes[i] for i in sorted(getattr(self, "diameter", ())))
-        return ProgramFrame(self.wcs, tuple(self.off), rot, diameter, self.inch, opaque)
+        ext, g5 = self.g5x.get("EXT"), self.g5x[self.wcs]
+        work = tuple(g5[i] + (ext[i] if ext is not None else 0) for i in range(self.naxes))
+        return ProgramFrame(self.wcs, tuple(self.off), rot, diameter, self.inch, opaque, work)
 
     def in_cycle(self) -> bool:
         """A canned cycle is active (the language layer reads K as its repeat count)."""
