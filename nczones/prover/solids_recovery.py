@@ -2,9 +2,9 @@
 
 The break points of a piece of a cutting motion (a line cut into pieces of its parameter ``s``; an arc as a
 whole) lie in a box ``B`` (the piece's exact box), with one of them, ``P0``, exact on the path.  The recovery
-plan (:func:`nczones.recovery.plan_legs`) computed in **interval terms** over ``B`` gives, per leg and axis,
+plan (:func:`nczones.plans.recovery.plan_legs`) computed in **interval terms** over ``B`` gives, per leg and axis,
 the intervals its start and end take over the piece (the plan's ``max`` and ``+`` map intervals exactly);
-the same plan from ``P0`` (:func:`nczones.recovery.recovery_legs`) gives one exact leg ``A0 → B0``.  Every leg
+the same plan from ``P0`` (:func:`nczones.plans.recovery.recovery_legs`) gives one exact leg ``A0 → B0``.  Every leg
 of the family is that leg displaced within a box ``D``: a straight leg's point ``(1-t) A + t B`` differs
 from ``(1-t) A0 + t B0`` by a convex combination of ``A - A0`` and ``B - B0``, per axis within the hull of
 ``0`` and their intervals; a dogleg rapid moves each axis 1-Lipschitz in its ends, so within
@@ -24,7 +24,7 @@ from typing import Any
 
 from ..machine import Machine, RapidMode
 from ..motion import Segment, SegmentKind
-from ..recovery import RecoveryVariant, plan_legs, recovery_legs
+from ..plans.recovery import RecoveryVariant, plan_legs, recovery_legs
 from ..solids import Solids
 from .geometry import arc_geom
 from .result import Reason, Violation

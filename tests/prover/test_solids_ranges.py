@@ -318,8 +318,8 @@ def _recovery_mill(clearance: str, register: str = "H1"):
 
 def _oracle_recovery_hit(machine, n: int = 8):
     """The oracle over break points ``s = k / n`` of every cutting line: the recovery legs from there (the
-    shared plan, nczones.recovery.recovery_legs, as the controller moves them) sampled against the fixtures."""
-    from nczones.recovery import recovery_legs, replacement_length, tool_change_config
+    shared plan, nczones.plans.recovery.recovery_legs, as the controller moves them) sampled against the fixtures."""
+    from nczones.plans.recovery import recovery_legs, replacement_length, tool_change_config
 
     cfg = tool_change_config(machine, "breakpoint")
     solids = machine_solids(machine)
