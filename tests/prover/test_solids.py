@@ -165,7 +165,10 @@ def test_solids_need_xyz():
 
 # --------------------------------------------------------------------------- against the oracle
 
-ORACLE_MACHINE = MACHINE_HEAD.replace('Z = "400"', 'Z = "300"') + """[offsets]
+# path_mode G61: under G64 (the default) every solids verdict is unknown (VF210, the control rounds corners),
+# which would leave the oracle nothing to check a `safe` against
+ORACLE_MACHINE = MACHINE_HEAD.replace('Z = "400"', 'Z = "300"').replace(
+    '[machine]\n', '[machine]\npath_mode = "G61"\n', 1) + """[offsets]
 G54 = { X = "0", Y = "0", Z = "0" }
 [tool_lengths]
 H1 = "50"
@@ -224,6 +227,12 @@ def programs(draw):
 @given(programs())
 def test_never_a_wrong_safe(text):
     _against_oracle(text)
+
+
+def test_the_oracle_machine_gets_decided_verdicts():
+    """The property tests compare `safe` with the oracle: the machine must let the prover decide (G61)."""
+    text = "G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X-60 Y-60 Z120\nG1 X-50 Y-50 Z100 F500\nM30\n"
+    assert verify_text(text, parse_machine(ORACLE_MACHINE, "oracle.toml")).verdict.label == "safe"
 
 
 @pytest.mark.long
