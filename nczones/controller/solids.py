@@ -153,9 +153,12 @@ class ToolSolids:
             tol = 1e-9 * scale
             gx = np.maximum(0.0, np.maximum(sec[0] - x, x - sec[1]))
             gy = np.maximum(0.0, np.maximum(sec[2] - y, y - sec[3]))
-            cand = (z + lo_f < z1 + tol) & (z + hi_f > z0 - tol) & (gx * gx + gy * gy < (reach + tol) ** 2)
-            out = np.zeros(len(pos), dtype=bool)
-            for i in np.flatnonzero(cand).tolist():  # near or inside: decided exactly
+            g2, bottom, top = gx * gx + gy * gy, z + lo_f, z + hi_f
+            # certainly in (by more than the margin) / possibly in (within the margin of a face): only the
+            # latter, the positions next to a face, are decided exactly
+            out = (bottom < z1 - tol) & (top > z0 + tol) & (g2 < max(reach - tol, 0.0) ** 2)
+            cand = (bottom < z1 + tol) & (top > z0 - tol) & (g2 < (reach + tol) ** 2) & ~out
+            for i in np.flatnonzero(cand).tolist():  # next to a face: decided exactly
                 row = pos[i]
                 out[i] = self.hits_at(int(row[ix]) * ux, int(row[iy]) * uy, int(row[iz]) * uz, part, fx,
                                       tool_length)
