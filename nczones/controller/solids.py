@@ -156,7 +156,7 @@ class ToolSolids:
             g2, bottom, top = gx * gx + gy * gy, z + lo_f, z + hi_f
             # certainly in (by more than the margin) / possibly in (within the margin of a face): only the
             # latter, the positions next to a face, are decided exactly
-            out = (bottom < z1 - tol) & (top > z0 + tol) & (g2 < max(reach - tol, 0.0) ** 2)
+            out: np.ndarray = (bottom < z1 - tol) & (top > z0 + tol) & (g2 < max(reach - tol, 0.0) ** 2)
             cand = (bottom < z1 + tol) & (top > z0 - tol) & (g2 < (reach + tol) ** 2) & ~out
             for i in np.flatnonzero(cand).tolist():  # next to a face: decided exactly
                 row = pos[i]
