@@ -8,9 +8,11 @@ interior of a fixture."""
 from __future__ import annotations
 
 import ast
+import json
 from fractions import Fraction
 from pathlib import Path
 
+import jsonschema
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -55,7 +57,9 @@ def test_holder_hits_vise_alarms_at_the_first_pulse_the_holder_meets_the_jaw():
     assert a.position == (F(80), F(40), F(120))
     assert a.blocked == (("Z", -1),)
     assert not r.completed
-    j = r.to_json()["alarms"][0]
+    doc = json.loads(json.dumps(r.to_json()))
+    jsonschema.validate(doc, json.loads((ROOT / "specs/simulate.schema.json").read_text(encoding="utf-8")))
+    j = doc["alarms"][0]
     assert j["kind"] == "solid" and j["part"] == a.part and j["zone"] == "vise"
     assert any(e.kind == "alarm" and "holder (Ø63 × 60 at 40..100 above the tip) enters `vise`" in dict(e.data)["note"]
                for e in r.events)
