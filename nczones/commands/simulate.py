@@ -75,7 +75,11 @@ def render_text(result: Any, program: str) -> str:
         for a in result.alarms:
             where = f"line {a.line}, block {a.block}" if a.line is not None else "before the first block"
             during = f" during {a.derived}" if a.kind == "recovery" else ""
-            lines.append(f"  ALARM stroke limit{during}, zone \"{a.zone}\" at {where}: {pt(a.position)}")
+            if a.kind == "solid":
+                lines.append(f"  ALARM tool solid: {a.part} enters fixture \"{a.zone}\" at {where}: "
+                             f"{pt(a.position)}")
+            else:
+                lines.append(f"  ALARM stroke limit{during}, zone \"{a.zone}\" at {where}: {pt(a.position)}")
             if a.source:
                 lines.append(f"    {shorten(a.source)}")
             if a.blocked:

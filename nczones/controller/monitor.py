@@ -23,6 +23,11 @@ Two forms of one check:
 
 Tool-tip zones (``point = "tip"``) see the tool axis' coordinate minus the
 active tool length.
+
+With ``solids`` (:class:`.solids.ToolSolids`, the parts of the active tool and
+the machine's fixtures) both forms also test every part against every fixture
+at the pulse position (grown by half a pulse step, so that the step between two
+positions is covered too); a hit is named by a :class:`.solids.SolidHit`.
 """
 
 from __future__ import annotations
@@ -38,6 +43,7 @@ import numpy as np
 from ..machine import Machine
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
+from .solids import ToolSolids
 
 __all__ = ["LimitMonitor", "CompiledCheck", "MonitorStats"]
 
@@ -97,6 +103,8 @@ class LimitMonitor:
 
     machine: Machine
     stats: MonitorStats = field(default_factory=MonitorStats)
+    #: the tool solids to check as well (the parts of the active tool against the fixtures), or None
+    solids: ToolSolids | None = None
     _compiled: dict[Fraction, "CompiledCheck | None"] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
@@ -131,6 +139,8 @@ class LimitMonitor:
             q = allowed.seen_by(z, p, tool_length)
             if POINT_VIOLATES(z, self, q):
                 out.append(z.name)
+        if self.solids is not None:
+            out += self.solids.check(pos, tool_length)
         return tuple(out)
 
     # ------------------------------------------------------------------ compiled
@@ -148,6 +158,10 @@ class LimitMonitor:
                 break
             tests.append(t)
             names.append(z.name)
+        if ok and self.solids is not None:
+            for test, hit in self.solids.compiled(key):
+                tests.append(test)
+                names.append(hit)
         result = CompiledCheck(tuple(tests), tuple(names)) if ok else None
         self._compiled[key] = result
         return result

@@ -66,6 +66,7 @@ from .pulses import (
     round_pulse,
     step_deltas,
 )
+from .solids import MachineSolids, SolidHit, unchecked_solids
 from .spline import spline_walk
 
 __all__ = [
@@ -150,6 +151,8 @@ class Alarm:
     first_outside: tuple[Fraction, ...] | None = None
     overshoot_pulses: int = 0
     kind: str = "stroke"
+    #: a ``"solid"`` alarm: the part that entered the fixture ``zone`` (its label, as the prover names it)
+    part: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -244,6 +247,7 @@ class SimulationResult:
             "alarms": [
                 {
                     "kind": a.kind,
+                    **({"part": a.part} if a.part else {}),
                     "line": a.line,
                     "block": a.block,
                     "source": a.source,
@@ -505,6 +509,8 @@ class Controller:
         self.pulse = tuple(a.pulse for a in machine.axes)
         self.monitor = LimitMonitor(machine)
         self._monitors: dict[tuple, LimitMonitor] = {(): self.monitor}
+        #: the tool solids and fixtures (issue 39), checked with the zones by each segment's monitor
+        self._solids = MachineSolids.of(machine)
         start = tuple(Fraction(v) for v in (machine.start if start is None else start))
         if len(start) != len(self.axes):
             raise InvalidArgument(f"start has {len(start)} coordinates; the machine has axes {self.axes}")
@@ -527,6 +533,9 @@ class Controller:
         self.completed = False
         self.overshoot_bound = 0.0
         self.notes: list[str] = []
+        unchecked = unchecked_solids(machine)  # the solids only the prover proves (a lathe's, prisms, frames)
+        if unchecked:
+            self.notes.append(unchecked)
         self._pending_outside: tuple[tuple[int, ...], int] | None = None  # periodic: (first outside pos, step)
         self._servo_samples: list[tuple[float, tuple[int, ...]]] = []
         self._servo_on = self.mode is Mode.NORMAL and (
@@ -716,9 +725,24 @@ class Controller:
         return self.result()
 
     def run_segment(self, seg: Segment) -> None:
+        before = (self.monitor, self.tool_length)
         self.tool_length = seg.tool_length
         self.monitor = self._monitor_for(seg)
-        self.run_plan(seg, self.plan(seg, lazy=True))
+        plan = self.plan(seg, lazy=True)
+        if (self.monitor is not before[0] or self.tool_length != before[1]) and self._solids_at_start(plan):
+            return
+        self.run_plan(seg, plan)
+
+    def _solids_at_start(self, plan: _Plan) -> bool:
+        """A tool change (another assembly, another length) at rest: the new parts are checked where they are
+        put, before the motion's first pulse (the steps after it are covered by the per-pulse check)."""
+        solids = self.monitor.solids
+        if solids is None or self.mode is Mode.LOCK or self.halted:
+            return False
+        hits = solids.check(tuple(self.counter), self.tool_length)
+        if hits:
+            self.record_alarm(plan, tuple(self.counter), hits, (), note="tool change")
+        return bool(hits)
 
     def run_blend(self, arc: BlendArc) -> None:
         """Run a blend arc (``nczones.controller.blending``) as the motion of its corner's first block."""
@@ -734,16 +758,20 @@ class Controller:
 
     def _monitor_for(self, seg: Segment) -> LimitMonitor:
         """The limit monitor for a segment: a lathe tool offset on an axis besides the tool axis moves the tool
-        tip away from the machine position there, so the tip zones are checked moved by it (shared counts)."""
+        tip away from the machine position there, so the tip zones are checked moved by it (shared counts);
+        on a machine with tool solids, the monitor also checks the parts of the segment's tool register."""
         shift = tip_offset(seg.extra) if seg.extra else {}
-        key = tuple(sorted(shift.items()))
+        key: tuple = tuple(sorted(shift.items()))
+        if self._solids is not None:  # one monitor per (shift, tool register): never the base one
+            key = (key, "tool", seg.tool_register)
         mon = self._monitors.get(key)
         if mon is None:
             from dataclasses import replace as _replace
 
             base = self._monitors[()]
             mon = LimitMonitor(_replace(self.machine, allowed=tip_shifted(self.machine.allowed, shift)),
-                               stats=base.stats)
+                               stats=base.stats,
+                               solids=None if self._solids is None else self._solids.for_tool(seg.tool_register))
             self._monitors[key] = mon
         return mon
 
@@ -998,7 +1026,11 @@ class Controller:
             zone=zones[0], zones=tuple(zones), position=self.mm(pos), pulse_position=tuple(int(p) for p in pos),
             time_s=self.clock, blocked=tuple((self.axes[k], s) for k, s in direction),
             derived="" if seg is None else seg.derived, first_outside=first_pos, overshoot_pulses=overshoot,
+            kind="solid" if isinstance(zones[0], SolidHit) else "stroke",
+            part=zones[0].part.label() if isinstance(zones[0], SolidHit) else "",
         )
+        if isinstance(zones[0], SolidHit):
+            note = "; ".join(n for n in (zones[0].note(alarm.position, self.axes), note) if n)
         self.alarms.append(alarm)
         self.halted = True
         self.log("alarm", alarm.block, alarm.line, (

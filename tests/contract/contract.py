@@ -260,3 +260,115 @@ def _check_periodic(machine, segs, alarm) -> None:
     dist = max(abs(a - b) for a, b in zip(p.position, alarm.position))
     _require(dist <= travel, f"periodic alarm {dist} mm past the first outside pulse (> one period of travel + 1 pulse = {travel})")
     _count("periodic: alarm within one period of travel")
+
+
+# --------------------------------------------------------------------------- tool solids (issue 39)
+
+#: How far (mm, in pulses of the machine) the grown and shrunk provers move every fixture face: a pulse
+#: position is within 2 pulses per axis of a path point (the rounding of the pulse distribution), so within
+#: 2·√2 < 3 pulses horizontally and 2 vertically, and the controller grows each part by half a step (at most
+#: one pulse horizontally, half a pulse vertically): 4 pulses covers both.
+SOLIDS_GROW = 4
+
+
+def _solid_violations(result):
+    return [v for v in result.violations if v.kind == "solid"]
+
+
+def _first_block(items) -> int | None:
+    blocks = [x.block for x in items if x.block is not None]
+    return min(blocks) if blocks else None
+
+
+def _replay_solid_witnesses(solids, result, by_block) -> None:
+    """Every solid witness is a point inside the named part (placed at the reported path point) and inside the
+    named fixture's open interior, decided exactly by the oracle (tests/oracles/solids.py)."""
+    from oracles.solids import inside_part_and_fixture
+
+    for v in _solid_violations(result):
+        seg = by_block[v.block][0]
+        parts = solids.parts_for(seg.tool_register) or ()
+        part = next((p for p in parts if p.name in v.zones), None)
+        fx = next((f for f in solids.fixtures if f.name == v.zone), None)
+        _require(part is not None and fx is not None, f"witness names part {v.zones} / fixture {v.zone!r}, "
+                 f"not parts of tool H{seg.tool_register} and a fixture")
+        point, path = tuple(x for _, x in v.point), tuple(x for _, x in v.path_point)
+        _require(inside_part_and_fixture(point, path, part, fx, seg.tool_length),
+                 f"solid witness {point} is not inside {part.label()} at {path} and inside `{fx.name}`: {v.note}")
+        segs = by_block[v.block]
+        if len(segs) == 1 and v.parameter_exact and segs[0].kind is SegmentKind.LINE:
+            s = segs[0]
+            at = tuple(a + v.parameter * (b - a) for a, b in zip(s.start, s.end))
+            _require(at == path, f"solid witness path point {path} is not the line's point at t={v.parameter}")
+        _count("solids: unsafe witness replayed")
+
+
+def check_solids_contract(pulse: str, tools: dict, fixtures: list, text: str, *, prove=None) -> str:
+    """The contract with tool solids on one generated machine and program (specs/contract.md, "Tool solids").
+
+    Three provers: on the machine (``r0``), with every fixture grown by :data:`SOLIDS_GROW` pulses (``rg``) and
+    shrunk by as much (``rs``); the controller (pulse monitor, vector engine) on the machine.
+
+    * (S1) ``rg`` safe => no solid alarm; a solid alarm in block b => ``rg`` has a solid violation or an
+      ``unknown`` reason in a block <= b.
+    * (S2) ``rs`` has a solid violation in block b => the controller alarms (solid or stroke) in a block <= b.
+    * (S3) every solid witness of ``r0`` is replayed exactly (inside the part and the fixture).
+    * gray band: ``r0`` safe and a solid alarm: counted; the alarm position must be clear of the shrunk
+      fixtures for every part (else a path point near it would put a part into a fixture: ``r0`` was wrong).
+    """
+    from nczones.machine import parse_machine
+    from nczones.prover import VerifyOptions
+    from nczones.prover import prove as _prove
+    from nczones.solids import machine_solids
+
+    from .strategies import solids_machine_text
+    from oracles.solids import part_hits
+
+    prove = prove or _prove
+    u = Fraction(pulse)
+    machine = parse_machine(solids_machine_text(pulse, tools, fixtures), "solids.toml")
+    grown = parse_machine(solids_machine_text(pulse, tools, fixtures, grow=str(SOLIDS_GROW * u)), "grown.toml")
+    shrunk = parse_machine(solids_machine_text(pulse, tools, fixtures, grow=str(-SOLIDS_GROW * u)), "shrunk.toml")
+    segs = program_segments(text, machine)
+    by_block: dict[int, list] = {}
+    for s in segs:
+        by_block.setdefault(s.block, []).append(s)
+    opts = VerifyOptions(max_violations=1000)
+    r0, rg, rs = (prove(segs, m, opts) for m in (machine, grown, shrunk))
+    solids = machine_solids(machine)
+    _replay_solid_witnesses(solids, r0, by_block)
+    sim = simulate(segs, machine, start=machine.start, monitor="pulse")
+    alarm = sim.alarms[0] if sim.alarms else None
+    solid_alarm = alarm if alarm is not None and alarm.kind == "solid" else None
+    # (S1)
+    if rg.verdict is Verdict.SAFE:
+        _require(solid_alarm is None, f"prover: safe with the fixtures grown by {SOLIDS_GROW} pulses; controller: "
+                                      f"{solid_alarm}")
+        _count("solids: grown safe, no solid alarm")
+    if solid_alarm is not None:
+        first = _first_block(_solid_violations(rg) + list(rg.reasons))
+        _require(first is not None and first <= solid_alarm.block,
+                 f"controller: {solid_alarm.part} enters `{solid_alarm.zone}` in block {solid_alarm.block}; the "
+                 f"prover with the fixtures grown finds nothing there or before (first: {first})")
+    # (S2)
+    deep = _first_block(_solid_violations(rs))
+    if deep is not None:
+        _require(alarm is not None and alarm.block is not None and alarm.block <= deep,
+                 f"prover: a part enters a fixture shrunk by {SOLIDS_GROW} pulses in block {deep}; controller: "
+                 f"{'no alarm' if alarm is None else f'alarm only in block {alarm.block}'}")
+        _count("solids: deep (shrunk unsafe), alarm at or before" + (" (stroke)" if solid_alarm is None else ""))
+    # the gray band
+    if r0.verdict is Verdict.SAFE and solid_alarm is not None:
+        seg = by_block[solid_alarm.block][0]
+        small = machine_solids(shrunk)
+        x, y, z = solid_alarm.position
+        for part in solids.parts_for(seg.tool_register) or solids.spindle:
+            for fx in small.fixtures if small is not None else ():
+                _require(not part_hits(part, fx, x, y, z, seg.tool_length),
+                         f"prover: safe; controller alarm at {solid_alarm.position}, where {part.label()} is in "
+                         f"`{fx.name}` shrunk by {SOLIDS_GROW} pulses")
+        _count("solids: gray band (safe, solid alarm)")
+    outcome = {Verdict.SAFE: "safe", Verdict.UNSAFE: "unsafe"}.get(r0.verdict, "unknown")
+    _count(f"solids: prover {outcome}, controller {alarm.kind if alarm else 'clean'}")
+    _flush()
+    return outcome
