@@ -190,6 +190,17 @@ class MachineSolids:
         return cls(replace(solids, fixtures=checked), idx,
                    (machine.axes[idx[0]].pulse, machine.axes[idx[1]].pulse, machine.axes[idx[2]].pulse))
 
+    def for_tool(self, register: int | None) -> ToolSolids | None:
+        """The parts while tool length register ``register`` is active.  Under G49 (None) with tools described
+        the tool is not known: only the spindle parts are checked (the prover says ``unknown``, VF211)."""
+        if register not in self._by_tool:
+            parts = self.solids.parts_for(register)
+            if parts is None:
+                parts = self.solids.spindle
+            self._by_tool[register] = ToolSolids(parts, self.solids.fixtures, self.index, self.pulse) \
+                if parts else None
+        return self._by_tool[register]
+
 
 def unchecked_solids(machine: Machine) -> str | None:
     """A note naming the tool solids the controller does not check (a lathe's turret tools, fixture prisms,
@@ -204,14 +215,3 @@ def unchecked_solids(machine: Machine) -> str | None:
         return None
     return (f"the reference controller does not check the tool solids against {', '.join(f'`{n}`' for n in names)} "
             "(a fixture prism or a fixture in a work offset; the prover does)")
-
-    def for_tool(self, register: int | None) -> ToolSolids | None:
-        """The parts while tool length register ``register`` is active.  Under G49 (None) with tools described
-        the tool is not known: only the spindle parts are checked (the prover says ``unknown``, VF211)."""
-        if register not in self._by_tool:
-            parts = self.solids.parts_for(register)
-            if parts is None:
-                parts = self.solids.spindle
-            self._by_tool[register] = ToolSolids(parts, self.solids.fixtures, self.index, self.pulse) \
-                if parts else None
-        return self._by_tool[register]

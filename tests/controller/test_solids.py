@@ -225,3 +225,24 @@ def test_the_controller_has_its_own_distance_computation():
                 assert "prover" not in mod, (path.name, mod)
             elif isinstance(node, ast.Import):
                 assert all("prover" not in a.name for a in node.names), path.name
+
+
+def test_solids_the_controller_does_not_model_are_named_not_crashed_on():
+    """A lathe's turret tools (no Y axis) and fixtures the controller has no distance for (a prism from a
+    forbidden XY polygon, a fixture in a work offset) are proved by the prover only: the simulation runs, and
+    its notes say the controller is no second witness there (before: a ValueError on the lathe's missing Y,
+    a KeyError on a prism)."""
+    lathe = load_machine(ROOT / "specs" / "machines" / "lathe_solids.toml")
+    text = (ROOT / "specs" / "examples" / "programs" / "boring_bar_hits_chuck.nc").read_text()
+    res = simulate(interpret_text(text, lathe), lathe, mode="check")
+    assert MachineSolids.of(lathe) is None
+    assert any("lathe's tool solids" in n for n in res.notes), res.notes
+    mill_text = (ROOT / "specs" / "machines" / "mill_solids.toml").read_text()
+    framed = mill_text + ('\n[[fixtures]]\nname = "stop"\nkind = "box"\nframe = "G55"\n'
+                          'min = { X = "0", Y = "0", Z = "0" }\nmax = { X = "5", Y = "5", Z = "5" }\n')
+    mill = parse_machine(framed)
+    prog = "G21 G90 G54 G61 G43 H1\nG0 X0 Y0 Z200\nM30\n"
+    res = simulate(interpret_text(prog, mill), mill, mode="check")
+    assert any("`stop`" in n for n in res.notes), res.notes
+    solids = MachineSolids.of(mill)
+    assert solids is not None and "stop" not in {fx.name for fx in solids.solids.fixtures}
