@@ -424,6 +424,38 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
                         f"lies on the {what} of block {block} {how}{with_params}")
 
 
+def _fixture_origin(fx: Any, seg: Segment, index: tuple[int, int, int]) -> tuple[Fraction, Fraction, Fraction] | None:
+    """Where a fixture's coordinates start at a motion: machine zero, or its work offset's origin as the re-run
+    motion records it (None: the motion runs in another or a rotated frame)."""
+    if not fx.frame:
+        return Fraction(0), Fraction(0), Fraction(0)
+    frame = seg.frame
+    if frame is None or frame.work != fx.frame or frame.rotation is not None or frame.work_offset is None:
+        return None
+    w = frame.work_offset
+    return w[index[0]], w[index[1]], w[index[2]]
+
+
+def _in_fixture_xy(fx: Any, x: Fraction, y: Fraction) -> bool:
+    """Is ``(x, y)`` strictly inside the fixture's XY section (a circle, a box, or a polygon: an even-odd
+    crossing count, a point on an edge is not inside)?  Replay's own test, exact."""
+    from .solids import FixtureCylinder, FixturePrism
+
+    if isinstance(fx, FixtureCylinder):
+        return (x - fx.cx) ** 2 + (y - fx.cy) ** 2 < fx.radius ** 2
+    if isinstance(fx, FixturePrism):
+        vs = fx.vertices
+        inside = False
+        for (x0, y0), (x1, y1) in zip(vs, vs[1:] + vs[:1]):
+            cross = (x1 - x0) * (y - y0) - (y1 - y0) * (x - x0)
+            if cross == 0 and min(x0, x1) <= x <= max(x0, x1) and min(y0, y1) <= y <= max(y0, y1):
+                return False  # on the boundary: not in the open interior
+            if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
+                inside = not inside
+        return inside
+    return all((lo is None or lo < q) and (hi is None or q < hi) for q, lo, hi in ((x, fx.x0, fx.x1), (y, fx.y0, fx.y1)))
+
+
 def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Segment], machine: Machine,
                  how: str, where: str) -> tuple[bool, str]:
     """A tool solid in a fixture (``kind = "solid"``): the assembly placed with its controlled point at the
@@ -431,7 +463,7 @@ def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Seg
     the report names (a closed vertical cylinder) and inside the open interior of the fixture (its ``zone``),
     checked here in exact rationals, independently of the prover's distance computation."""
     from .lathe_solids import LatheSolids
-    from .solids import FixtureCylinder, machine_solids
+    from .solids import machine_solids
 
     solids = machine_solids(machine)
     if solids is None:
@@ -460,12 +492,13 @@ def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Seg
             if not ((qx - px) ** 2 + (qy - py) ** 2 <= part.radius ** 2 and base + part.z0 <= qz <= base + part.z1):
                 continue
             for fx in fixtures:
-                if isinstance(fx, FixtureCylinder):
-                    inside_xy = (qx - fx.cx) ** 2 + (qy - fx.cy) ** 2 < fx.radius ** 2
-                else:
-                    inside_xy = all((lo is None or lo < q) and (hi is None or q < hi)
-                                    for q, lo, hi in ((qx, fx.x0, fx.x1), (qy, fx.y0, fx.y1)))
-                if inside_xy and (fx.z0 is None or fx.z0 < qz) and (fx.z1 is None or qz < fx.z1):
+                origin = _fixture_origin(fx, seg, (ix, iy, iz))
+                if origin is None:
+                    return False, (f"fixture {zone!r} moves with {fx.frame}, which block {v.get('block')} does not "
+                                   "run in (unrotated): replay cannot place it")
+                fx_q = (qx - origin[0], qy - origin[1], qz - origin[2])
+                if _in_fixture_xy(fx, fx_q[0], fx_q[1]) and (fx.z0 is None or fx.z0 < fx_q[2]) \
+                        and (fx.z1 is None or fx_q[2] < fx.z1):
                     return True, (f"the point {_show(('X', 'Y', 'Z'), point)} is inside the {part.label()} placed at the path "
                                   f"point {_show(axes, path)} and inside fixture {zone!r} (exact), and the path point "
                                   f"lies on the {v.get('segment_kind', 'motion')} of block {v.get('block')} {how}")

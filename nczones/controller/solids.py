@@ -182,7 +182,7 @@ class MachineSolids:
         solids = machine_solids(machine)
         if solids is None or not solids.fixtures or not isinstance(solids, Solids):
             return None
-        checked = tuple(fx for fx in solids.fixtures if type(fx) in _GAP2 and not fx.frame)
+        checked = tuple(fx for fx in solids.fixtures if isinstance(fx, (FixtureBox, FixtureCylinder)) and not fx.frame)
         if not checked:
             return None
         axes = machine.axis_names
@@ -197,8 +197,8 @@ class MachineSolids:
             parts = self.solids.parts_for(register)
             if parts is None:
                 parts = self.solids.spindle
-            self._by_tool[register] = ToolSolids(parts, self.solids.fixtures, self.index, self.pulse) \
-                if parts else None
+            fixtures = tuple(fx for fx in self.solids.fixtures if isinstance(fx, (FixtureBox, FixtureCylinder)))
+            self._by_tool[register] = ToolSolids(parts, fixtures, self.index, self.pulse) if parts else None
         return self._by_tool[register]
 
 

@@ -34,7 +34,7 @@ from __future__ import annotations
 import functools
 import math
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -106,6 +106,21 @@ _Placed = _Fx | _Prism
 
 def _add(v: Fraction | None, d: Fraction) -> Fraction | None:
     return None if v is None else v + d
+
+
+def _in_machine(fx: Fixture, o: tuple[Fraction, Fraction, Fraction]) -> Fixture:
+    """The fixture where a motion sees it, in machine coordinates (moved by its work offset's origin ``o``), for
+    the report's drawing of the contact."""
+    if not fx.frame:
+        return fx
+    ox, oy, oz = o
+    if isinstance(fx, FixturePrism):
+        return replace(fx, vertices=tuple((x + ox, y + oy) for x, y in fx.vertices), z0=_add(fx.z0, oz),
+                       z1=_add(fx.z1, oz), frame="")
+    if isinstance(fx, FixtureCylinder):
+        return replace(fx, cx=fx.cx + ox, cy=fx.cy + oy, z0=_add(fx.z0, oz), z1=_add(fx.z1, oz), frame="")
+    return replace(fx, x0=_add(fx.x0, ox), x1=_add(fx.x1, ox), y0=_add(fx.y0, oy), y1=_add(fx.y1, oy),
+                   z0=_add(fx.z0, oz), z1=_add(fx.z1, oz), frame="")
 
 
 def _place(fx: Fixture, o: tuple[Fraction, Fraction, Fraction]) -> _Placed:
@@ -698,11 +713,11 @@ class SolidsChecker:
         if inside is None or at is None or contact is None:  # never a silent safe: no witness point was found
             self._unknown(seg, "VF210", f"the {part.label()} meets `{fx.name}` but no witness point was found")
             return True
-        self._report(seg, part, f, at, contact, tau0 + inside * (tau1 - tau0), p0, p1, inside, lo, hi)
+        self._report(seg, part, f, at, contact, tau0 + inside * (tau1 - tau0), p0, p1, inside, lo, hi, fx)
         return True
 
     def _report(self, seg: Segment, part: Part, fx: _Placed, p: tuple, contact: tuple, tau: Fraction, p0: tuple,
-                p1: tuple, t: Fraction, lo: Fraction, hi: Fraction) -> None:
+                p1: tuple, t: Fraction, lo: Fraction, hi: Fraction, orig: Fixture) -> None:
         x, y, z = p
         cx, cy, cz = contact
         path = tuple(a + t * (b - a) for a, b in zip(p0, p1))
@@ -718,7 +733,8 @@ class SolidsChecker:
         note = (f"{part.label()} enters `{fx.name}` at {where}, {pt}, {format_decimal(depth, 3)} mm deep "
                 f"(contact point X{format_decimal(cx, 4)} Y{format_decimal(cy, 4)} Z{format_decimal(cz, 4)})")
         self._blocks.add(seg.block)
-        self.contacts[seg.block] = (self.solids.parts_for(seg.tool_register) or (part,), seg.tool_length, part, fx)
+        self.contacts[seg.block] = (self.solids.parts_for(seg.tool_register) or (part,), seg.tool_length, part,
+                                    _in_machine(orig, self._origin(seg, orig) or (F0, F0, F0)))
         self.violations.append(Violation(
             block=seg.block, span=seg.span, zone=fx.name, point=(("X", cx), ("Y", cy), ("Z", cz)),
             path_point=tuple(zip(axes, path)), parameter=tau, parameter_exact=not self._arc_witness,
@@ -903,7 +919,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     from .result import Verdict
 
     lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
-    checker: Any = (LatheSolidsChecker(machine, solids) if lathe
+    checker: Any = (LatheSolidsChecker(machine, solids) if isinstance(solids, LatheSolids)
                     else SolidsChecker(machine, solids, options.ranges(machine)))
     meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 

@@ -290,7 +290,7 @@ def _project(arrs: Sequence[np.ndarray], h: int, v: int) -> list[np.ndarray]:
     return [a[..., [h, v]] for a in arrs]
 
 
-def _draw_zones(ax: Any, machine: Machine, plane: Sequence[str], path: Any, result: Any) -> None:
+def _draw_zones(ax: Any, machine: Machine, plane: tuple[str, str], path: Any, result: Any) -> None:
     """Every zone where the proof puts it: tip zones moved by the placement of the tool active at each
     violating block (each further placement adds its own tip zones), machine zones as they are; the fixture
     solids and the tool at each solid violation's contact."""

@@ -35,7 +35,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..lathe_solids import LatheFixture, LathePart
-from ..solids import FixtureCylinder, machine_solids
+from ..solids import FixtureCylinder, FixturePrism, machine_solids
 
 __all__ = ["DrawnSolid", "contact_solids", "fixture_solids", "draw_contacts", "contact_traces", "SIDES"]
 
@@ -111,6 +111,8 @@ def contact_solids(result: Any) -> list[tuple[int, Any, list[tuple[DrawnSolid, b
             out.append((i, v, *_lathe_contact(v, contacts[v.block])))
             continue
         parts, length, hit, fx = contacts[v.block]
+        if isinstance(fx, FixturePrism):  # a forbidden polygon: drawn as its zone already; no tool drawn here
+            continue
         p = dict(v.path_point)
         x, y, z = p["X"], p["Y"], p["Z"]
         drawn = []
@@ -128,7 +130,8 @@ def fixture_solids(machine: Any) -> list[DrawnSolid]:
     if solids is None:
         return []
     zones = {z.name for z in machine.allowed.zones if z.forbid}
-    return [d for f in solids.fixtures if f.name not in zones
+    # a fixture in a work offset is where the program puts it (not one place: not drawn here)
+    return [d for f in solids.fixtures if f.name not in zones and not getattr(f, "frame", "")
             for d in (_lathe_sections(f) if isinstance(f, LatheFixture) else [_fixture(f)])]
 
 
