@@ -20,11 +20,10 @@ from nczones.gcode import interpret_text, segments_text
 from nczones.machine import parse_machine
 from nczones.motion import MotionChunk
 from nczones.prover import verify_text
-from tests.prover.test_solids import ORACLE_MACHINE as G64_MACHINE
-from tests.prover.test_solids import programs
+from tests.prover.test_solids import ORACLE_MACHINE, programs
 
-#: the oracle machine of tests/prover/test_solids.py on the exact path (G61: the solids are proved, not unknown)
-ORACLE_MACHINE = G64_MACHINE.replace("[machine]\n", '[machine]\npath_mode = "G61"\n', 1)
+#: the oracle machine of tests/prover/test_solids.py runs the exact path (G61: the solids are proved, not unknown)
+assert 'path_mode = "G61"' in ORACLE_MACHINE
 
 #: the oracle machine with a third fixture whose sides are off a 4-decimal grid (the float screen)
 OFF_GRID = ORACLE_MACHINE + """[[fixtures]]
