@@ -54,6 +54,9 @@ REFINE_SHARE = 0.25
 MAX_TESTS = 200_000
 #: At most this many corner reasons per run (the rest are counted).
 MAX_REASONS = 20
+#: Fanuc cutting mode without ``path_tolerance`` on column chunks: the runs' boxes from the columns (False: one
+#: motion at a time, :meth:`CornerCheck._segment`; the agreement test compares the two).
+HULL_COLUMNS = True
 #: How much of each straight motion a LinuxCNC blend may use (``BLEND_DIST_FRACTION``, specs/path-modes.md).
 #: The column screen's boxes lie in the box of the two motions whatever this is; the exact regions use it.
 BLEND_FRACTION = Fraction(1, 2)
@@ -503,10 +506,14 @@ class CornerCheck:
         at = np.maximum(np.searchsorted(mode_blocks, chunk.block, side="right") - 1, 0)
         used = [table[k][1] for k in sorted(set(at.tolist()))]
         simple = {int(SegmentKind.LINE), int(SegmentKind.RAPID), int(SegmentKind.ARC), int(SegmentKind.DWELL)}
-        if (not set(np.unique(kinds).tolist()) <= simple or (self.dogleg and (kinds == SegmentKind.RAPID).any())
-                or any(m.blend and (m.dialect == "fanuc" and m.tolerance is None or m.bound() is None and m.naive)
-                       for m in used)
-                or max(int(np.abs(starts).max()), int(np.abs(ends).max())) >= 2**58):
+        plain = (set(np.unique(kinds).tolist()) <= simple and not (self.dogleg and (kinds == SegmentKind.RAPID).any())
+                 and max(int(np.abs(starts).max()), int(np.abs(ends).max())) < 2**58)
+        hull = [m.blend and m.dialect == "fanuc" and m.tolerance is None for m in used]
+        if plain and any(hull) and HULL_COLUMNS and all(h or not m.blend for h, m in zip(hull, used)):
+            self._hull_columns(chunk, at)  # Fanuc cutting mode without path_tolerance: the runs' boxes
+            return
+        if (not plain or any(hull)
+                or any(m.blend and m.bound() is None and m.naive for m in used)):
             for seg in chunk.segments():  # the exact path, one motion at a time
                 self._segment(seg)
             return
@@ -584,6 +591,124 @@ class CornerCheck:
                 continue
             size = -(-(b - a) // SPLIT)
             todo.extend((x, min(x + size, b)) for x in range(a, b, size))
+
+    # ------------------------------------------------------------------ Fanuc runs on column chunks
+    def _hull_columns(self, chunk: MotionChunk, at: Any) -> None:
+        """Fanuc cutting mode without a tolerance on a column chunk: what :meth:`_segment` does row by row (the
+        same stretches, corners, checks and reasons), each group's box found from the columns.
+
+        A group is the rows after a stop up to the next stop: blended motions, then the non-blended motion that
+        ends the run with an exact stop (it belongs to the run) or a dwell (it does not).  A group with a row
+        the columns cannot box goes through :meth:`_segment` row by row."""
+        import numpy as np
+
+        from .screen import arc_boxes
+
+        kinds, starts, ends = chunk.kind, chunk.start, chunk.end
+        assert kinds is not None and starts is not None and ends is not None  # a column chunk
+        dwell = kinds == SegmentKind.DWELL
+        arc = kinds == SegmentKind.ARC
+        moving = ((starts != ends).any(axis=1) | arc) & ~dwell
+        table = self.modes
+        blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at] & moving
+        lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
+        ends_lo, ends_hi = lo.copy(), hi.copy()  # the end points: every box has lo <= ends_lo, hi >= ends_hi
+        arcs = np.flatnonzero(arc)
+        boxed = np.ones(len(chunk), dtype=bool)
+        if arcs.size:
+            boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc's
+        ev = np.flatnonzero(moving | dwell)
+        if ev.size == 0:
+            return
+        cut = (np.flatnonzero(dwell[ev] | ~blend[ev]) + 1).tolist()  # a group ends after each stop
+        cols = (lo, hi, ends_lo, ends_hi, arc)
+        for g, (a, b) in enumerate(zip([0, *cut], [*cut, int(ev.size)])):
+            if a == b:
+                continue
+            rows = ev[a:b]
+            before = not g and self.prev is not None and not self.prev_stop  # a blended corner with the rows before
+            if self._hull_group(chunk, rows, dwell, blend, boxed, cols, before):
+                continue
+            if g:  # the exact path from here: the group follows a stop
+                self.prev_stop = True
+            for r in rows.tolist():
+                self._segment(_row(chunk, r))
+        last = int(ev[moving[ev]][-1]) if moving[ev].any() else None
+        if last is not None:
+            self.prev = _row(chunk, last)
+            self.prev_stop = not blend[last] or bool(dwell[last:].any())
+
+    def _hull_group(self, chunk: MotionChunk, rows: Any, dwell: Any, blend: Any, boxed: Any, cols: Any,
+                    corner_before: bool) -> bool:
+        """One group of :meth:`_hull_columns` (False: not done, prove it one motion at a time)."""
+        end = int(rows[-1])
+        body = rows[:-1] if dwell[end] else rows
+        if body.size and not boxed[body].all():
+            return False
+        if body.size == 0:
+            self._stop()
+            return True
+        self.corners += int(body.size) - 1 + corner_before  # what _queue counts: Fanuc corners wait for the hull
+        first, last = int(body[0]), int(body[-1])
+        if self.stretch is None and body.size == 1 and not blend[first]:
+            return True  # a lone exact-stop motion: no run
+        box = self._rows_box(chunk, body, cols)
+        if box is None:
+            self.corners -= int(body.size) - 1 + corner_before
+            return False
+        seg_a = _row(chunk, first)
+        seg_b = seg_a if last == first else _row(chunk, last)
+        if self.stretch is None:
+            self.stretch = [list(box[0]), list(box[1]), seg_a, seg_b]
+        else:
+            s_lo, s_hi = self.stretch[0], self.stretch[1]
+            for k in range(len(s_lo)):
+                s_lo[k] = min(s_lo[k], box[0][k])
+                s_hi[k] = max(s_hi[k], box[1][k])
+            self.stretch[3] = seg_b
+        if dwell[end]:
+            self._stop()
+        elif not blend[last]:
+            self._close_stretch()
+        return True
+
+    def _rows_box(self, chunk: MotionChunk, rows: Any, cols: Any) -> Box | None:
+        """The box :func:`_piece_box` gives the union of ``rows`` (None: an arc it cannot box).
+
+        Lines' boxes are their columns'; an arc's exact box lies between its end points and its outward-rounded
+        column box, so per axis and side only the arcs whose column box passes the best bound found so far are
+        boxed exactly (in order, stopping at the first that cannot improve it)."""
+        import numpy as np
+
+        lo, hi, ends_lo, ends_hi, arc = cols
+        assert chunk.scale is not None  # a column chunk
+        den = 10**chunk.scale
+        exact: dict[int, Box | None] = {}
+        arcs = rows[arc[rows]]
+        out_lo, out_hi = [], []
+        for k in range(len(self.axes)):
+            for side in (0, 1):
+                if side == 0:
+                    best = Fraction(int(ends_lo[rows, k].min()), den)
+                    col = lo[arcs, k]
+                    order = np.argsort(col, kind="stable")
+                else:
+                    best = Fraction(int(ends_hi[rows, k].max()), den)
+                    col = -hi[arcs, k]
+                    order = np.argsort(col, kind="stable")
+                for o in order.tolist():
+                    bound = Fraction(int(col[o]), den)
+                    if (bound >= best) if side == 0 else (-bound <= best):
+                        break
+                    r = int(arcs[o])
+                    if r not in exact:
+                        exact[r] = _piece_box(_row(chunk, r))
+                    box = exact[r]
+                    if box is None:
+                        return None
+                    best = min(best, box[0][k]) if side == 0 else max(best, box[1][k])
+                (out_lo if side == 0 else out_hi).append(best)
+        return tuple(out_lo), tuple(out_hi)
 
 
 def _row(chunk: MotionChunk, k: int) -> Segment:
