@@ -617,6 +617,10 @@ class CornerCheck:
         boxed = np.ones(len(chunk), dtype=bool)
         if arcs.size:
             boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc's
+            if chunk.radius is not None:
+                rrows = arcs[chunk.radius[arcs] != 0]
+                if rrows.size:
+                    _circle_bounds(chunk, rrows, lo, hi, boxed)
         ev = np.flatnonzero(moving | dwell)
         if ev.size == 0:
             return
@@ -709,6 +713,45 @@ class CornerCheck:
                     best = min(best, box[0][k]) if side == 0 else max(best, box[1][k])
                 (out_lo if side == 0 else out_hi).append(best)
         return tuple(out_lo), tuple(out_hi)
+
+
+def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) -> None:
+    """Widen ``lo``/``hi`` of the R-format arc ``rows`` to hold the box :func:`_piece_box` gives them.
+
+    ``ArcGeom.plane_bbox`` cannot decide an R arc's sweep (its centre is irrational): it takes the whole
+    circle's box, the centre's 64-bit bounds plus or minus ``|R|`` rounded up.  Here: the certified centre
+    enclosure (:func:`nczones.prover.rformat.centre_enclosure`) plus or minus ``|R|``, rounded outwards to the
+    column's unit and one unit more (the 64-bit bounds are within far less than a unit of the true centre and
+    radius).  ``_rows_box`` needs every column box to hold the exact one it stands for."""
+    import numpy as np
+
+    from ..motion import PLANE_AXES, Plane
+    from .rformat import centre_enclosure, fine_factor
+
+    assert chunk.plane is not None and chunk.radius is not None and chunk.clockwise is not None \
+        and chunk.start is not None and chunk.end is not None and chunk.scale is not None  # R arcs, columns
+    axes = list(chunk.axes)
+    planes = chunk.plane[rows]
+    for pv in sorted(set(planes.tolist())):
+        sel = rows[planes == pv]
+        a_name, b_name, _ = PLANE_AXES[Plane(int(pv))]
+        if a_name not in axes or b_name not in axes:
+            boxed[sel] = False
+            continue
+        ia, ib = axes.index(a_name), axes.index(b_name)
+        sa, sb, ea, eb = chunk.start[sel, ia], chunk.start[sel, ib], chunk.end[sel, ia], chunk.end[sel, ib]
+        r = chunk.radius[sel]
+        mag = int(max(np.abs(v).max(initial=0) for v in (sa, sb, ea, eb, r)))
+        m = fine_factor(chunk.scale, 2 * mag + 1)
+        ok, a_lo, a_hi, b_lo, b_hi = centre_enclosure(sa, sb, ea, eb, r, chunk.clockwise[sel], m)
+        if 2 * mag * m >= 2**59:
+            ok[:] = False
+        rm = np.abs(r) * m
+        lo[sel, ia] = np.minimum(lo[sel, ia], (a_lo - rm) // m - 1)
+        hi[sel, ia] = np.maximum(hi[sel, ia], -((-(a_hi + rm)) // m) + 1)
+        lo[sel, ib] = np.minimum(lo[sel, ib], (b_lo - rm) // m - 1)
+        hi[sel, ib] = np.maximum(hi[sel, ib], -((-(b_hi + rm)) // m) + 1)
+        boxed[sel] &= ok
 
 
 def _row(chunk: MotionChunk, k: int) -> Segment:
