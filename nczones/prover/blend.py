@@ -689,7 +689,8 @@ class CornerCheck:
         den = 10**chunk.scale
         exact: dict[int, Box | None] = {}
         arcs = rows[arc[rows]]
-        out_lo, out_hi = [], []
+        out_lo: list[Fraction] = []
+        out_hi: list[Fraction] = []
         for k in range(len(self.axes)):
             for side in (0, 1):
                 if side == 0:
