@@ -616,11 +616,11 @@ class CornerCheck:
         arcs = np.flatnonzero(arc)
         boxed = np.ones(len(chunk), dtype=bool)
         if arcs.size:
-            boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc's
-            if chunk.radius is not None:
-                rrows = arcs[chunk.radius[arcs] != 0]
-                if rrows.size:
-                    _circle_bounds(chunk, rrows, lo, hi, boxed)
+            boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
+            rformat = np.zeros(arcs.size, dtype=bool) if chunk.radius is None else chunk.radius[arcs] != 0
+            if rformat.any():
+                _circle_bounds(chunk, arcs[rformat], lo, hi, boxed)
+            _one_unit_out(chunk, arcs[~rformat], lo, hi)
         ev = np.flatnonzero(moving | dwell)
         if ev.size == 0:
             return
@@ -714,6 +714,25 @@ class CornerCheck:
                     best = min(best, box[0][k]) if side == 0 else max(best, box[1][k])
                 (out_lo if side == 0 else out_hi).append(best)
         return tuple(out_lo), tuple(out_hi)
+
+
+def _one_unit_out(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> None:
+    """Widen the I/J arc ``rows``' column boxes by one unit in their plane: ``plane_bbox`` adds the radius's
+    64-bit upper bound, which may pass the column's ``ceil(sqrt(r2))`` by far less than a unit."""
+    from ..motion import PLANE_AXES, Plane
+
+    if rows.size == 0:
+        return
+    assert chunk.plane is not None  # arcs, columns form
+    axes = list(chunk.axes)
+    planes = chunk.plane[rows]
+    for pv in sorted(set(planes.tolist())):
+        a_name, b_name, _ = PLANE_AXES[Plane(int(pv))]
+        sel = rows[planes == pv]
+        for name in (a_name, b_name):
+            if name in axes:
+                lo[sel, axes.index(name)] -= 1
+                hi[sel, axes.index(name)] += 1
 
 
 def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) -> None:
