@@ -238,5 +238,9 @@ def test_a_box_shrunk_to_the_end_points_is_caught(monkeypatch):
                 tuple(Fraction(int(v), den) for v in ends_hi[rows].max(axis=0)))
 
     monkeypatch.setattr(blend.CornerCheck, "_rows_box", shrunk)
-    with pytest.raises(AssertionError):
-        _agree(CIRCLES, _clamp_machine("-5", "-10.5", "-4", "-9.9"), monkeypatch)
+    m = _clamp_machine("-5", "-10.5", "-4", "-9.9")
+    # the mutant proves what the run's hull does not allow (the end points' box is Y0..0 on every arc)
+    assert _run(CIRCLES, m, True, monkeypatch)[0] == "safe"
+    assert _run(CIRCLES, m, False, monkeypatch)[0] == "unknown"
+    with pytest.raises(AssertionError, match="assert \\("):
+        _agree(CIRCLES, m, monkeypatch)
