@@ -128,6 +128,7 @@ class CornerCheck:
         self.refine_s = 0.0
         self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer lo, hi, bound)
         self._int_cache: dict[int, Any] = {}
+        self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
@@ -676,6 +677,18 @@ class CornerCheck:
             self._close_stretch()
         return True
 
+    def _arc_box(self, chunk: MotionChunk, r: int) -> Box | None:
+        """:func:`_piece_box` of arc row ``r``, shared by rows that repeat the same arc (the same columns: end
+        points, centre, radius, sense, turns, plane), as repeated passes do."""
+        cols = [chunk.start, chunk.end, chunk.centre, chunk.radius, chunk.clockwise, chunk.turns, chunk.plane]
+        key = (chunk.scale, tuple(chunk.axes), *(None if c is None else c[r].tobytes() for c in cols))
+        cache = self._arc_cache
+        if key not in cache:
+            if len(cache) >= 4096:
+                cache.clear()
+            cache[key] = _piece_box(_row(chunk, r))
+        return cache[key]
+
     def _rows_box(self, chunk: MotionChunk, rows: Any, cols: Any) -> Box | None:
         """The box :func:`_piece_box` gives the union of ``rows`` (None: an arc it cannot box).
 
@@ -707,7 +720,7 @@ class CornerCheck:
                         break
                     r = int(arcs[o])
                     if r not in exact:
-                        exact[r] = _piece_box(_row(chunk, r))
+                        exact[r] = self._arc_box(chunk, r)
                     box = exact[r]
                     if box is None:
                         return None
