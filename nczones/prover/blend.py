@@ -56,6 +56,9 @@ REFINE_SHARE = 0.25
 MAX_TESTS = 200_000
 #: At most this many corner reasons per run (the rest are counted).
 MAX_REASONS = 20
+#: Fanuc cutting mode without ``path_tolerance`` on column chunks: the runs' boxes from the columns (False: one
+#: motion at a time, :meth:`CornerCheck._segment`; the agreement test compares the two).
+HULL_COLUMNS = True
 #: How much of each straight motion a LinuxCNC blend may use (``BLEND_DIST_FRACTION``, specs/path-modes.md).
 #: The column screen's boxes lie in the box of the two motions whatever this is; the exact regions use it.
 BLEND_FRACTION = Fraction(1, 2)
@@ -136,6 +139,7 @@ class CornerCheck:
         self.refine_s = 0.0
         self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer lo, hi, bound)
         self._int_cache: dict[int, Any] = {}
+        self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
@@ -653,11 +657,15 @@ class CornerCheck:
         at = np.maximum(np.searchsorted(mode_blocks, chunk.block, side="right") - 1, 0)
         used = [table[k][1] for k in sorted(set(at.tolist()))]
         simple = {int(SegmentKind.LINE), int(SegmentKind.RAPID), int(SegmentKind.ARC), int(SegmentKind.DWELL)}
-        if (self._naive_tracked()  # G64 Q without P: every motion joins the merging windows, one at a time
-                or not set(np.unique(kinds).tolist()) <= simple or (self.dogleg and (kinds == SegmentKind.RAPID).any())
-                or any(m.blend and (m.dialect == "fanuc" and m.tolerance is None or m.bound() is None and m.naive)
-                       for m in used)
-                or max(int(np.abs(starts).max()), int(np.abs(ends).max())) >= 2**58):
+        plain = (set(np.unique(kinds).tolist()) <= simple and not (self.dogleg and (kinds == SegmentKind.RAPID).any())
+                 and max(int(np.abs(starts).max()), int(np.abs(ends).max())) < 2**58)
+        hull = [m.blend and m.dialect == "fanuc" and m.tolerance is None for m in used]
+        naive = self._naive_tracked()  # G64 Q without P: every motion joins the merging windows, one at a time
+        if not naive and plain and any(hull) and HULL_COLUMNS and all(h or not m.blend for h, m in zip(hull, used)):
+            self._hull_columns(chunk, at)  # Fanuc cutting mode without path_tolerance: the runs' boxes
+            return
+        if (naive or not plain or any(hull)
+                or any(m.blend and m.bound() is None and m.naive for m in used)):
             for seg in chunk.segments():  # the exact path, one motion at a time
                 self._segment(seg)
             return
@@ -735,6 +743,203 @@ class CornerCheck:
                 continue
             size = -(-(b - a) // SPLIT)
             todo.extend((x, min(x + size, b)) for x in range(a, b, size))
+
+    # ------------------------------------------------------------------ Fanuc runs on column chunks
+    def _hull_columns(self, chunk: MotionChunk, at: Any) -> None:
+        """Fanuc cutting mode without a tolerance on a column chunk: what :meth:`_segment` does row by row (the
+        same stretches, corners, checks and reasons), each group's box found from the columns.
+
+        A group is the rows after a stop up to the next stop: blended motions, then the non-blended motion that
+        ends the run with an exact stop (it belongs to the run) or a dwell (it does not).  A group with a row
+        the columns cannot box goes through :meth:`_segment` row by row."""
+        import numpy as np
+
+        from .screen import arc_boxes
+
+        kinds, starts, ends = chunk.kind, chunk.start, chunk.end
+        assert kinds is not None and starts is not None and ends is not None  # a column chunk
+        dwell = kinds == SegmentKind.DWELL
+        arc = kinds == SegmentKind.ARC
+        moving = ((starts != ends).any(axis=1) | arc) & ~dwell
+        table = self.modes
+        blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at] & moving
+        lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
+        ends_lo, ends_hi = lo.copy(), hi.copy()  # the end points: every box has lo <= ends_lo, hi >= ends_hi
+        arcs = np.flatnonzero(arc)
+        boxed = np.ones(len(chunk), dtype=bool)
+        if arcs.size:
+            boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
+            rformat = np.zeros(arcs.size, dtype=bool) if chunk.radius is None else chunk.radius[arcs] != 0
+            if rformat.any():
+                _circle_bounds(chunk, arcs[rformat], lo, hi, boxed)
+            _one_unit_out(chunk, arcs[~rformat], lo, hi)
+        ev = np.flatnonzero(moving | dwell)
+        if ev.size == 0:
+            return
+        cut = (np.flatnonzero(dwell[ev] | ~blend[ev]) + 1).tolist()  # a group ends after each stop
+        cols = (lo, hi, ends_lo, ends_hi, arc)
+        for g, (a, b) in enumerate(zip([0, *cut], [*cut, int(ev.size)])):
+            if a == b:
+                continue
+            rows = ev[a:b]
+            before = not g and self.prev is not None and not self.prev_stop  # a blended corner with the rows before
+            if self._hull_group(chunk, rows, dwell, blend, boxed, cols, before):
+                continue
+            if g:  # the exact path from here: the group follows a stop
+                self.prev_stop = True
+            for r in rows.tolist():
+                self._segment(_row(chunk, r))
+        last = int(ev[moving[ev]][-1]) if moving[ev].any() else None
+        if last is not None:
+            self.prev = _row(chunk, last)
+            self.prev_stop = not blend[last] or bool(dwell[last:].any())
+
+    def _hull_group(self, chunk: MotionChunk, rows: Any, dwell: Any, blend: Any, boxed: Any, cols: Any,
+                    corner_before: bool) -> bool:
+        """One group of :meth:`_hull_columns` (False: not done, prove it one motion at a time)."""
+        end = int(rows[-1])
+        body = rows[:-1] if dwell[end] else rows
+        if body.size and not boxed[body].all():
+            return False
+        if body.size == 0:
+            self._stop()
+            return True
+        self.corners += int(body.size) - 1 + corner_before  # what _queue counts: Fanuc corners wait for the hull
+        first, last = int(body[0]), int(body[-1])
+        if self.stretch is None and body.size == 1 and not blend[first]:
+            return True  # a lone exact-stop motion: no run
+        box = self._rows_box(chunk, body, cols)
+        if box is None:
+            self.corners -= int(body.size) - 1 + corner_before
+            return False
+        seg_a = _row(chunk, first)
+        seg_b = seg_a if last == first else _row(chunk, last)
+        # the convex-hull refinement keeps no points of column rows: the run is proved by its box alone
+        self._stretch_pts = None
+        if self.stretch is None:
+            self.stretch = [list(box[0]), list(box[1]), seg_a, seg_b]
+            self._stretch_shifts = {self._shift(seg_a), self._shift(seg_b)}
+        else:
+            self._stretch_shifts |= {self._shift(seg_a), self._shift(seg_b)}
+            s_lo, s_hi = self.stretch[0], self.stretch[1]
+            for k in range(len(s_lo)):
+                s_lo[k] = min(s_lo[k], box[0][k])
+                s_hi[k] = max(s_hi[k], box[1][k])
+            self.stretch[3] = seg_b
+        if dwell[end]:
+            self._stop()
+        elif not blend[last]:
+            self._close_stretch()
+        return True
+
+    def _arc_box(self, chunk: MotionChunk, r: int) -> Box | None:
+        """:func:`_piece_box` of arc row ``r``, shared by rows that repeat the same arc (the same columns: end
+        points, centre, radius, sense, turns, plane), as repeated passes do."""
+        cols = [chunk.start, chunk.end, chunk.centre, chunk.radius, chunk.clockwise, chunk.turns, chunk.plane]
+        key = (chunk.scale, tuple(chunk.axes), *(None if c is None else c[r].tobytes() for c in cols))
+        cache = self._arc_cache
+        if key not in cache:
+            if len(cache) >= 4096:
+                cache.clear()
+            cache[key] = _piece_box(_row(chunk, r))
+        return cache[key]
+
+    def _rows_box(self, chunk: MotionChunk, rows: Any, cols: Any) -> Box | None:
+        """The box :func:`_piece_box` gives the union of ``rows`` (None: an arc it cannot box).
+
+        Lines' boxes are their columns'; an arc's exact box lies between its end points and its outward-rounded
+        column box, so per axis and side only the arcs whose column box passes the best bound found so far are
+        boxed exactly (in order, stopping at the first that cannot improve it)."""
+        import numpy as np
+
+        lo, hi, ends_lo, ends_hi, arc = cols
+        assert chunk.scale is not None  # a column chunk
+        den = 10**chunk.scale
+        exact: dict[int, Box | None] = {}
+        arcs = rows[arc[rows]]
+        out_lo: list[Fraction] = []
+        out_hi: list[Fraction] = []
+        for k in range(len(self.axes)):
+            for side in (0, 1):
+                if side == 0:
+                    best = Fraction(int(ends_lo[rows, k].min()), den)
+                    col = lo[arcs, k]
+                    order = np.argsort(col, kind="stable")
+                else:
+                    best = Fraction(int(ends_hi[rows, k].max()), den)
+                    col = -hi[arcs, k]
+                    order = np.argsort(col, kind="stable")
+                for o in order.tolist():
+                    bound = Fraction(int(col[o]), den)
+                    if (bound >= best) if side == 0 else (-bound <= best):
+                        break
+                    r = int(arcs[o])
+                    if r not in exact:
+                        exact[r] = self._arc_box(chunk, r)
+                    box = exact[r]
+                    if box is None:
+                        return None
+                    best = min(best, box[0][k]) if side == 0 else max(best, box[1][k])
+                (out_lo if side == 0 else out_hi).append(best)
+        return tuple(out_lo), tuple(out_hi)
+
+
+def _one_unit_out(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> None:
+    """Widen the I/J arc ``rows``' column boxes by one unit in their plane: ``plane_bbox`` adds the radius's
+    64-bit upper bound, which may pass the column's ``ceil(sqrt(r2))`` by far less than a unit."""
+    from ..motion import PLANE_AXES, Plane
+
+    if rows.size == 0:
+        return
+    assert chunk.plane is not None  # arcs, columns form
+    axes = list(chunk.axes)
+    planes = chunk.plane[rows]
+    for pv in sorted(set(planes.tolist())):
+        a_name, b_name, _ = PLANE_AXES[Plane(int(pv))]
+        sel = rows[planes == pv]
+        for name in (a_name, b_name):
+            if name in axes:
+                lo[sel, axes.index(name)] -= 1
+                hi[sel, axes.index(name)] += 1
+
+
+def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) -> None:
+    """Widen ``lo``/``hi`` of the R-format arc ``rows`` to hold the box :func:`_piece_box` gives them.
+
+    ``ArcGeom.plane_bbox`` cannot decide an R arc's sweep (its centre is irrational): it takes the whole
+    circle's box, the centre's 64-bit bounds plus or minus ``|R|`` rounded up.  Here: the certified centre
+    enclosure (:func:`nczones.prover.rformat.centre_enclosure`) plus or minus ``|R|``, rounded outwards to the
+    column's unit and one unit more (the 64-bit bounds are within far less than a unit of the true centre and
+    radius).  ``_rows_box`` needs every column box to hold the exact one it stands for."""
+    import numpy as np
+
+    from ..motion import PLANE_AXES, Plane
+    from .rformat import centre_enclosure, fine_factor
+
+    assert chunk.plane is not None and chunk.radius is not None and chunk.clockwise is not None \
+        and chunk.start is not None and chunk.end is not None and chunk.scale is not None  # R arcs, columns
+    axes = list(chunk.axes)
+    planes = chunk.plane[rows]
+    for pv in sorted(set(planes.tolist())):
+        sel = rows[planes == pv]
+        a_name, b_name, _ = PLANE_AXES[Plane(int(pv))]
+        if a_name not in axes or b_name not in axes:
+            boxed[sel] = False
+            continue
+        ia, ib = axes.index(a_name), axes.index(b_name)
+        sa, sb, ea, eb = chunk.start[sel, ia], chunk.start[sel, ib], chunk.end[sel, ia], chunk.end[sel, ib]
+        r = chunk.radius[sel]
+        mag = int(max(np.abs(v).max(initial=0) for v in (sa, sb, ea, eb, r)))
+        m = fine_factor(chunk.scale, 2 * mag + 1)
+        ok, a_lo, a_hi, b_lo, b_hi = centre_enclosure(sa, sb, ea, eb, r, chunk.clockwise[sel], m)
+        if 2 * mag * m >= 2**59:
+            ok[:] = False
+        rm = np.abs(r) * m
+        lo[sel, ia] = np.minimum(lo[sel, ia], (a_lo - rm) // m - 1)
+        hi[sel, ia] = np.maximum(hi[sel, ia], -((-(a_hi + rm)) // m) + 1)
+        lo[sel, ib] = np.minimum(lo[sel, ib], (b_lo - rm) // m - 1)
+        hi[sel, ib] = np.maximum(hi[sel, ib], -((-(b_hi + rm)) // m) + 1)
+        boxed[sel] &= ok
 
 
 def _row(chunk: MotionChunk, k: int) -> Segment:
