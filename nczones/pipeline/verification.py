@@ -208,6 +208,16 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
                    machine_sha256=machine.sha256, settings=settings, file=source.name)
 
 
+def _spindle_check(machine: Machine, run: Interpretation) -> Any:
+    """The check that the tool in the spindle is the one the solids take (:class:`~nczones.prover.solids.
+    SpindleToolCheck`), on a machine with tool solids; None otherwise (nothing of the solids is imported)."""
+    if not declares_solids(machine):
+        return None
+    from ..prover.solids import SpindleToolCheck
+
+    return SpindleToolCheck(run.interpreter.spindle_tools) if SpindleToolCheck.wanted(machine) else None
+
+
 def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: str,
              ranges: tuple[ParamRange, ...]) -> bool:
     """Whether a streamed file (:class:`~nczones.gcode.source.FileText`) can be verified without its whole
@@ -565,13 +575,12 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
 
     from ..prover.blend import CornerCheck
     from ..prover.core import prove
-    from ..prover.solids import SpindleToolCheck
 
     # the corners the control may round (specs/path-modes.md), proved as the motion passes
     corners = CornerCheck(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
                           options.run_limits())
     stream = corners.watch(with_text(run))
-    spindle = SpindleToolCheck(run.interpreter.spindle_tools) if SpindleToolCheck.wanted(machine) else None
+    spindle = _spindle_check(machine, run)
     if spindle is not None:  # the tool the program put in the spindle against the assembly the solids take
         stream = spindle.watch(stream)
     result = prove(stream, machine, options, file=run.file, profile=profile)

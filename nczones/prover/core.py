@@ -433,7 +433,11 @@ class Prover:
         self.stats["segments"] += 1
         if seg.payload(Developed) is not None:  # a line in G07.1 mode is proved on the developed surface
             return _decide_developed(self, seg)
-        return DECIDERS[seg.kind](self, seg)
+        decide = DECIDERS.get(seg.kind)
+        if decide is None:  # a kind no decider is registered for: never a silent safe
+            return Outcome(reason=Reason(f"segment kind {getattr(seg.kind, 'name', seg.kind)} is not handled by the "
+                                          "prover", seg.span, seg.block), engine="unknown")
+        return decide(self, seg)
 
     def decide_point_path(self, seg: Segment) -> Outcome:
         """Lines, rapids, dwells and circular arcs: the exact tiers, then Z3 (with parameter ranges)."""

@@ -242,3 +242,15 @@ def test_the_move_to_a_spline_end_is_matched_within_the_doubles_slack():
     text = (FINDINGS / "spline-end-double.ngc").read_text()
     outcome = compare(text, machine_of(FINDING_SETUP), canon_motion(log), None)
     assert outcome.status == "match", outcome
+
+
+def test_the_same_point_printed_in_inches_then_in_mm_is_no_move():
+    """rs274 prints ``G0 Z[#<_z> + 0]`` after G21 as a traverse to where the G20 polar move ended: 0.52585 in
+    printed 0.5258, then 13.3566 mm. Each print is within its own rounding of the same point, so they may
+    differ by the sum of both (0.00127 + 0.00005 mm), not the larger; nczones drops the zero-length move, and
+    the oracle kept rs274's as a motion (a false path mismatch, seed 343058)."""
+    log = _recorded("inch-then-mm-same-point")
+    assert "STRAIGHT_FEED(0.5258, 0.1224, 0.0000," in log and "STRAIGHT_TRAVERSE(13.3566, 3.1082, 0.0000," in log
+    text = (FINDINGS / "inch-then-mm-same-point.ngc").read_text()
+    outcome = compare(text, machine_of(FINDING_SETUP), canon_motion(log), None)
+    assert outcome.status == "match", outcome

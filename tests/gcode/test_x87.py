@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from nczones.gcode import x87
+from nczones.gcode.linuxcnc import x87
 
 pytestmark = pytest.mark.skipif(not x87.AVAILABLE or np.finfo(np.longdouble).nmant != 63,
                                 reason="no x87 long double on this host")

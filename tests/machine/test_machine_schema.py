@@ -27,6 +27,8 @@ NOT_EXPRESSIBLE = {
     "polygon_limits_after_multiline_vertices": "order between two values",
     "self_intersecting_polygon": "geometry",
     "bad_solids_axes": "tool solids need the axes X, Y and Z (a relation between sections)",
+    "bad_lathe_solids": "order between two values (x = [8, -8], an inner radius above the radius) and a part's "
+                        "form against the machine's axes (a mill part on a lathe)",
     "degenerate_polygon": "geometry",
     "duplicate_zone_names": "uniqueness of one field across array elements",
     "start_outside": "membership of the start position in the allowed set",

@@ -152,7 +152,7 @@ def test_moves_are_linuxcncs_own(test, monkeypatch):
     versions' rules (``later=True``), and without them the cycle is either the same or unknown for that reason."""
     import functools
 
-    from nczones.gcode import g7x
+    from nczones.gcode.linuxcnc import g7x
 
     folder = CANON / test
     plain = interpret_text(next(folder.glob("*.ngc")).read_text(), parse_machine(_MACHINE, "m.toml"))
