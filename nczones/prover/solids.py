@@ -395,8 +395,9 @@ class SolidsChecker:
     #: block -> (the active parts, the tool length, the part, the fixture) of each solid violation, for the
     #: report's drawing of the tool at the contact (:mod:`nczones.report.solids_view`)
     contacts: dict[int, tuple[tuple[Part, ...], Fraction, Part, Fixture]] = field(default_factory=dict)
-    #: screen straight motions in batches before the exact proof (False: every motion exactly; None: SCREEN)
-    screen: bool | None = None
+    #: screen straight motions in batches before the exact proof (then :meth:`flush` must end the feeding);
+    #: False (the default: a checker fed by hand checks each motion as it comes); None: SCREEN
+    screen: bool | None = False
     screened_out: int = 0
     screened_exact: int = 0
     screened_pairs: int = 0
@@ -415,7 +416,8 @@ class SolidsChecker:
         self._dev = {r.name: (r.lo, r.hi) for r in self.ranges}
         # the screen compares the fixtures as the machine file gives them: only where no range, work offset
         # or prism moves or shapes them per motion (else every motion goes to the exact proof)
-        static = not self._dev and not any(fx.frame or isinstance(fx, FixturePrism) for fx in self.solids.fixtures)
+        static = not self._dev and self.shift is None and not any(
+            fx.frame or isinstance(fx, FixturePrism) for fx in self.solids.fixtures)
         self.screen = (SCREEN if self.screen is None else self.screen) and static
 
     def feed(self, seg: Segment) -> None:
@@ -920,7 +922,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
 
     lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
     checker: Any = (LatheSolidsChecker(machine, solids) if isinstance(solids, LatheSolids)
-                    else SolidsChecker(machine, solids, options.ranges(machine)))
+                    else SolidsChecker(machine, solids, options.ranges(machine), screen=None))
     meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 
     def tee() -> Iterator[Any]:

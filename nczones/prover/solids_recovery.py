@@ -129,7 +129,7 @@ def _piece(seg: Segment, machine: Machine, solids: Solids, cfg: Any, L2: Fractio
     for fam, leg in zip(family, nominal):
         dogleg = leg.kind is SegmentKind.RAPID and machine.rapid_mode is not RapidMode.LINEAR
         shift = tuple(_reach(fam.start[i], fam.end[i], leg.start[i], leg.end[i], dogleg) for i in ix)
-        checker = SolidsChecker(machine, solids, shift=shift)
+        checker = SolidsChecker(machine, solids, shift=shift, screen=False)
         checker.feed(replace(leg.segment(axes, seg), frame=seg.frame))
         if checker.violations and all(lo == hi == 0 for lo, hi in shift):
             return _recovery_violation(checker.violations[0], seg, cfg, leg.name, P0, s0, axes), None
@@ -137,7 +137,7 @@ def _piece(seg: Segment, machine: Machine, solids: Solids, cfg: Any, L2: Fractio
             if not checker.violations:
                 undecided = True
                 continue
-            exact = SolidsChecker(machine, solids)  # the displaced family met the fixture: is P0's leg in it?
+            exact = SolidsChecker(machine, solids, screen=False)  # the displaced family met: is P0's leg in it?
             exact.feed(replace(leg.segment(axes, seg), frame=seg.frame))
             if exact.violations:
                 return _recovery_violation(exact.violations[0], seg, cfg, leg.name, P0, s0, axes), None
@@ -173,7 +173,7 @@ def resume_solids(segs: list[Segment], machine: Machine, solids: Solids, replace
     """The resumed cut with a replacement tool of another length, for the tool solids: every motion run with
     a tool that has cut before is checked shifted along the tool axis by the length's change (``shift(seg,
     L2)``, as :func:`nczones.prover.recovery.verify_recovery` checks the controlled point)."""
-    checker = SolidsChecker(machine, solids)
+    checker = SolidsChecker(machine, solids, screen=False)  # fed one by one, never flushed: no batching
     seen: dict[tuple, Segment] = {}
     for seg in segs:
         if len(checker.violations) >= max_violations:
