@@ -18,8 +18,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from nczones.geometry.cylinder import degree_length, developed_arc_of  # noqa: E402
 from nczones.gcode import segments  # noqa: E402
+from nczones.geometry.cylinder import degree_length, developed_arc_of  # noqa: E402
 from nczones.machine import load_machine  # noqa: E402
 from nczones.prover import verify  # noqa: E402
 
