@@ -423,6 +423,20 @@ def half_tan(base: tuple[Fraction, Fraction], target: tuple[Fraction, Fraction],
     return half
 
 
+_Vec = tuple[Fraction, Fraction]
+
+
+def split_arc_piece(g: ArcGeom, a: _Vec, b: _Vec) -> tuple[tuple[_Vec, _Vec], tuple[_Vec, _Vec]] | None:
+    """The piece of ``g`` from vector ``a`` to ``b`` (from the centre) halved at a rational point of the circle
+    near its middle: ``((a, mid), (mid, b))``; None when the piece cannot be split (no usable half angle)."""
+    m = half_tan(a, b, g.ccw)
+    if m is None or m <= 0 or g.centre is None:
+        return None
+    mid = rational_point_on_arc(g, m / 2, base=a)
+    mid_v: tuple[Fraction, Fraction] = (mid[0] - g.centre[0], mid[1] - g.centre[1])
+    return (a, mid_v), (mid_v, b)
+
+
 def angle_bounds(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw: bool) -> tuple[Fraction, Fraction]:
     """Rational enclosure of the angle from u to v in the given direction, in [0, 2 pi)."""
     pi_lo, pi_hi = pi_bounds()

@@ -37,10 +37,9 @@ from ..motion import MotionChunk, Segment, SegmentKind, tip_offset
 from .geometry import (
     arc_bases,
     arc_geom,
-    half_tan,
     in_sweep,
     line_pieces,
-    rational_point_on_arc,
+    split_arc_piece,
     sqrt_bounds,
 )
 from .result import Reason, Violation
@@ -378,14 +377,11 @@ class LatheSolidsChecker:
                               "no point of it was found inside (a tangency, or the refinement budget is spent)")
                 return
             budget -= 1
-            a, b = piece
-            m = half_tan(a, b, g.ccw)
-            if m is None or m <= 0:
+            halves = split_arc_piece(g, *piece)
+            if halves is None:
                 self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}`: its piece could not be split")
                 return
-            mid = rational_point_on_arc(g, m / 2, base=a)
-            mid_v = (mid[0] - g.centre[0], mid[1] - g.centre[1])
-            queue += [(a, mid_v), (mid_v, b)]
+            queue += list(halves)
 
 
 def _meets_open(rect: Rect, bx: tuple[Fraction, Fraction], bz: tuple[Fraction, Fraction]) -> bool:

@@ -46,10 +46,9 @@ from ..solids import FixtureBox, FixtureCylinder, FixturePrism, Part, Solids
 from .geometry import (
     arc_bases,
     arc_geom,
-    half_tan,
     in_sweep,
     line_pieces,
-    rational_point_on_arc,
+    split_arc_piece,
     sqrt_bounds,
 )
 from .result import Reason, Result, Violation
@@ -793,14 +792,11 @@ class SolidsChecker:
                               "no point of it was found inside (a tangency, or the refinement budget is spent)")
                 return
             budget -= 1
-            a, b = piece
-            m = half_tan(a, b, g.ccw)
-            if m is None or m <= 0:
+            halves = split_arc_piece(g, *piece)
+            if halves is None:
                 self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}`: its piece could not be split")
                 return
-            mid = rational_point_on_arc(g, m / 2, base=a)
-            mid_v = (mid[0] - g.centre[0], mid[1] - g.centre[1])
-            queue += [(lo_c, hi_c, (a, mid_v)), (lo_c, hi_c, (mid_v, b))]
+            queue += [(lo_c, hi_c, halves[0]), (lo_c, hi_c, halves[1])]
 
     def _piece_box(self, seg: Segment, g: Any, piece: tuple) -> tuple:
         c = g.centre
