@@ -277,6 +277,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("IM203", _N, _MI, "assumed: the source leaves something to the control's default, and the import "
                            "takes that default"),
     Code("IM204", _N, _MI, "skipped: a tool-table line LinuxCNC skips too"),
+    Code("IM205", _N, _MI, "paired by offset number: a cutter solid started from a Fanuc offset listing takes D<n> "
+         "for the assembly under G43 H<n>, which the control does not tie together"),
     # -- EX: export-zones
     Code("EX101", _N, _MI, "a zone the control cannot hold"),
     Code("EX102", _N, _MI, "a value rounded to what the control can write"),
@@ -294,7 +296,7 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF109", _E, "", "--budget: not a positive number of seconds or none"),
     Code("VF110", _E, "", "--block-delete: not a valid switch setting"),
     Code("VF111", _E, _MF, "--tool-table: the file cannot be read, is neither format, lacks its units, or a "
-                           "line of a Fanuc offset listing is wrong"),
+                           "line of a Fanuc offset listing is wrong (verify; import-machine reads a listing so too)"),
     Code("VF112", _E, "", "--library: not a folder of subprogram files (VF105 until issue 34)"),
     # -- VF2xx: reasons for unknown
     Code("VF201", _U, _RM, "the solver's resource limit, or a ranged path with too many cases"),

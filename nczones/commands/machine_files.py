@@ -97,7 +97,8 @@ def register_import(sub: argparse._SubParsersAction) -> None:
                    "[RS274NGC] PARAMETER_FILE names")
     p.add_argument("--tool-table", metavar="TBL",
                    help="LinuxCNC: read tool lengths and diameters from this .tbl file instead of the one "
-                   "[EMCIO] TOOL_TABLE names")
+                   "[EMCIO] TOOL_TABLE names; Fanuc: the control's tool offset listing (G10 blocks), whose "
+                   "offsets start commented-out [[tools]] solids")
     p.add_argument("--linuxcnc-filter", metavar="SNIPPET.ini",
                    help="LinuxCNC: also write the INI lines ([FILTER] and [NCZONES] MACHINE) that make the GUI run "
                    "nczones linuxcnc-filter on every program it opens (docs/linuxcnc-filter.md); needs -o")

@@ -87,8 +87,11 @@ def import_text(
     elif kind not in KINDS:
         raise InvalidArgument(f"--kind {kind!r}: use one of {', '.join(KINDS)}")
     c = Collector()
-    if kind != "linuxcnc" and (parameter_file is not None or tool_table is not None):
-        raise InvalidArgument("--parameter-file and --tool-table belong to LinuxCNC configurations")
+    if kind != "linuxcnc" and parameter_file is not None:
+        raise InvalidArgument("--parameter-file belongs to LinuxCNC configurations")
+    if kind not in ("linuxcnc", "fanuc") and tool_table is not None:
+        raise InvalidArgument("--tool-table belongs to LinuxCNC configurations (a .tbl) and Fanuc parameter "
+                              "listings (a tool offset listing)")
     reader = _reader(kind)
     if reader is None:
         raise MachineImportError(Diagnostic(
@@ -96,6 +99,8 @@ def import_text(
             "yet (it imports LinuxCNC INI configurations)", file=path))
     if kind == "linuxcnc":
         imported = reader(path, text, c, parameter_file=parameter_file, tool_table=tool_table)
+    elif kind == "fanuc":
+        imported = reader(path, text, c, tool_table=tool_table)
     else:
         imported = reader(path, text, c)
     toml = render_toml(imported, output)
@@ -125,8 +130,9 @@ def import_machine(
     output : str, optional
         The machine file's name (used in its diagnostics).
     parameter_file, tool_table : str, optional
-        LinuxCNC only: read these instead of the INI's ``PARAMETER_FILE`` and
-        ``TOOL_TABLE``.
+        LinuxCNC: read these instead of the INI's ``PARAMETER_FILE`` and
+        ``TOOL_TABLE``.  Fanuc: ``tool_table`` is a tool offset listing (``G10``
+        blocks), whose offsets start commented-out ``[[tools]]`` solids.
 
     Returns
     -------

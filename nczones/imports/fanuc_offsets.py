@@ -30,10 +30,13 @@ _INCH = Fraction(254, 10)
 
 
 def is_fanuc_listing(text: str) -> bool:
-    """True when the first block that is not ``%``, an O number or a comment is a ``G10`` block."""
+    """True when the first block that is not ``%``, an O number, a comment or a block of ``G20``/``G21``/``G90``
+    alone (which a listing may state before its ``G10`` blocks) is a ``G10`` block."""
     for raw in text.split("\n"):
         line = re.sub(r"\([^)]*\)?", "", raw).strip().upper()
         if not line or line == "%" or re.fullmatch(r"O\d+", line):
+            continue
+        if re.fullmatch(r"(N\d+\s*)?(G\s*(20|21|90)\s*)+", line):
             continue
         return re.match(r"(N\d+\s*)?G\s*10(?!\d)", line) is not None
     return False
@@ -51,6 +54,10 @@ class FanucListing:
         self.offsets: dict[int, ToolOffset] = {}
         self.memory = ""
         self.units: str | None = None
+        #: the L numbers of the mill blocks (10..13): which memory the listing holds (import-machine says)
+        self.levels: frozenset[int] = frozenset()
+        #: the line of each offset: ``(L, n)`` on a mill, ``(geometry?, n)`` on a lathe
+        self.lines: dict[tuple, int] = {}
 
 
 def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: tuple[str, ...] = ("X", "Z"),
@@ -180,6 +187,8 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
                 tables[L][n] = value(words, "R")
         if errors:
             raise InputError(errors)
+        out.levels = frozenset(L for L, table in tables.items() if table)
+        out.lines = seen
         if tables[10] or tables[12] or tables[13]:
             out.memory = "C"
             # a register the listing gives (geometry or wear) exists, its other half 0: H = geometry + wear
@@ -241,6 +250,7 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
     if errors:
         raise InputError(errors)
     out.memory = "lathe"
+    out.lines = seen
     for n in sorted(set(geometry) | set(wear)):
         g, w = geometry.get(n, {}), wear.get(n, {})
         out.offsets[n] = ToolOffset(n, tuple((a, v) for a, v in g.items() if a != "R"),

@@ -127,6 +127,9 @@ class ImportedMachine:
     #: LinuxCNC ``[RS274NGC] SUBROUTINE_PATH``: (absolute folders in order, where it was written); written as
     #: ``[linuxcnc] subroutine_path`` relative to the machine file's folder.
     subroutine_path: tuple[tuple[str, ...], str] = ((), "")
+    #: Commented-out ``[[tools]]`` starts from a Fanuc tool offset listing (``nczones.imports.fanuc_tools``): rows
+    #: of (assignment, comment), each written as a comment line; an empty assignment is a comment alone.
+    tool_solids: tuple[tuple[str, str], ...] = ()
 
 
 class Collector:

@@ -155,6 +155,10 @@ def render_toml(im: ImportedMachine, output: str | None = None) -> str:
             for n in sorted(registers):
                 out.append(_line(f"{prefix}{n} = {_q(registers[n].value)}", _how(registers[n])))
     _tool_solids(out, im)
+    if im.tool_solids:
+        out.append("")
+        for assignment, comment in im.tool_solids:
+            out.append("# " + (_line(assignment, comment) if assignment else _clean(comment)))
     folders, how = im.subroutine_path
     if folders:
         # relative to where the machine file goes; without -o, as if beside the INI (where LinuxCNC reads them)
