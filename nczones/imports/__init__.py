@@ -99,10 +99,12 @@ def import_text(
             "yet (it imports LinuxCNC INI configurations)", file=path))
     if kind == "linuxcnc":
         imported = reader(path, text, c, parameter_file=parameter_file, tool_table=tool_table)
-    elif kind == "fanuc":
-        imported = reader(path, text, c, tool_table=tool_table)
     else:
         imported = reader(path, text, c)
+    if kind == "fanuc" and tool_table is not None:
+        from .fanuc_tools import with_offset_solids
+
+        imported = with_offset_solids(imported, tool_table, c)
     toml = render_toml(imported, output)
     try:
         machine = parse_machine(toml, output or f"{Path(path).stem}.toml")

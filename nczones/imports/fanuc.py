@@ -193,9 +193,8 @@ class _Listing:
         return f"{number}{'' if axis is None else f' A{axis}'} {keyword}{text}"
 
 
-def read_fanuc(path: str, text: str, c: Collector, tool_table: str | None = None) -> ImportedMachine:
-    """Read a Fanuc parameter listing (see the module docstring); ``tool_table``, a tool offset listing, gives
-    the commented-out start of ``[[tools]]`` solids (:mod:`.fanuc_tools`)."""
+def read_fanuc(path: str, text: str, c: Collector) -> ImportedMachine:
+    """Read a Fanuc parameter listing (see the module docstring)."""
     params = parse_listing(path, text, c)
     c.raise_if_failed()
     if not params:
@@ -387,12 +386,6 @@ def read_fanuc(path: str, text: str, c: Collector, tool_table: str | None = None
 
     homing = _homing(ls, names, n_axes, length, increment, reference, c)
     c.raise_if_failed()
-    solids: tuple[tuple[str, str], ...] = ()
-    if tool_table is not None:
-        from .fanuc_tools import offset_solids
-
-        solids = offset_solids(tool_table, axes, None if ini is None else (bool(ini[0]), f"{ini[1].file}:{ini[1].line}"),
-                               c)
     return ImportedMachine(
         kind="fanuc", source=path, name=Path(path).stem, name_how="the file name",
         axes=axes, axes_how=("1020: the program axis names" if codes is not None
@@ -407,7 +400,6 @@ def read_fanuc(path: str, text: str, c: Collector, tool_table: str | None = None
         ) if diameter else ()),
         axis_tables=tuple((name, frozen(vs)) for name, vs in references),
         tables=tuple((name, rows) for name, rows in (("fanuc", settings), ("macros", macros)) if rows),
-        tool_solids=solids,
     )
 
 

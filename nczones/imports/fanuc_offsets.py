@@ -54,10 +54,13 @@ class FanucListing:
         self.offsets: dict[int, ToolOffset] = {}
         self.memory = ""
         self.units: str | None = None
-        #: the L numbers of the mill blocks (10..13): which memory the listing holds (import-machine says)
-        self.levels: frozenset[int] = frozenset()
         #: the line of each offset: ``(L, n)`` on a mill, ``(geometry?, n)`` on a lathe
         self.lines: dict[tuple, int] = {}
+
+    @property
+    def levels(self) -> frozenset[int]:
+        """The L numbers of a mill listing's blocks (10..13): which memory it holds (import-machine says)."""
+        return frozenset() if self.memory == "lathe" else frozenset(key[0] for key in self.lines)
 
 
 def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: tuple[str, ...] = ("X", "Z"),
@@ -158,7 +161,7 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
     def value(words: dict[str, tuple[str, SourceSpan]], letter: str) -> Fraction:
         return Fraction(words[letter][0]) * factor
 
-    seen: dict[tuple, int] = {}
+    seen = out.lines
 
     def once(key: tuple, i: int, line: str, words: dict[str, tuple[str, SourceSpan]]) -> bool:
         if key in seen:
@@ -187,8 +190,6 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
                 tables[L][n] = value(words, "R")
         if errors:
             raise InputError(errors)
-        out.levels = frozenset(L for L, table in tables.items() if table)
-        out.lines = seen
         if tables[10] or tables[12] or tables[13]:
             out.memory = "C"
             # a register the listing gives (geometry or wear) exists, its other half 0: H = geometry + wear
@@ -250,7 +251,6 @@ def read_fanuc_listing(path: str | Path, units: str | None, lathe: bool, axes: t
     if errors:
         raise InputError(errors)
     out.memory = "lathe"
-    out.lines = seen
     for n in sorted(set(geometry) | set(wear)):
         g, w = geometry.get(n, {}), wear.get(n, {})
         out.offsets[n] = ToolOffset(n, tuple((a, v) for a, v in g.items() if a != "R"),

@@ -24,9 +24,9 @@ from fractions import Fraction
 
 from ..exact.decimals import format_decimal
 from .fanuc_offsets import FanucListing, read_fanuc_listing
-from .model import Collector, read_source
+from .model import Collector, ImportedMachine, read_source
 
-__all__ = ["offset_solids"]
+__all__ = ["offset_solids", "with_offset_solids"]
 
 Row = tuple[str, str]
 
@@ -35,13 +35,25 @@ def _d(v: Fraction) -> str:
     return format_decimal(v)
 
 
+def with_offset_solids(imported: ImportedMachine, path: str, c: Collector) -> ImportedMachine:
+    """``imported`` (a Fanuc parameter listing) with the solids the offset listing at ``path`` starts, and the
+    notes on it.  The listing's unit, when it states none, is the input unit: ``G20`` in ``modal`` is
+    0000 #2 INI = 1 (:func:`nczones.imports.fanuc.read_fanuc`), else mm."""
+    from dataclasses import replace
+
+    g20 = next((how for code, how in imported.modal if code == "G20"), None)
+    inch_input = (True, g20) if g20 is not None else (False, "0000 #2 INI is 0 or not given: no G20 at start-up")
+    rows = offset_solids(path, imported.axes, inch_input, c)
+    return replace(imported, tool_solids=rows, notes=tuple(c.notes))  # c holds the parameter notes too
+
+
 def offset_solids(path: str, axes: tuple[str, ...], inch_input: tuple[bool, str] | None,
                   c: Collector) -> tuple[Row, ...]:
     """The commented-out ``[[tools]]`` rows for the offset listing at ``path`` on a machine with ``axes``.
 
-    ``inch_input`` is parameter 0000 #2 INI and where it was read (None: absent); it gives the listing's unit
-    when the listing states no ``G20``/``G21`` (note ``IM203``).  A malformed listing is ``VF111``, as for
-    ``verify --tool-table``."""
+    ``inch_input`` is whether the input unit is inches and why (None: not known, mm); it gives the listing's
+    unit when the listing states no ``G20``/``G21`` (note ``IM203``).  A malformed listing is ``VF111``, as
+    for ``verify --tool-table``."""
     lathe = "X" in axes and "Z" in axes and "Y" not in axes
     mill = all(a in axes for a in "XYZ")
     if not (lathe or mill):
@@ -53,8 +65,7 @@ def offset_solids(path: str, axes: tuple[str, ...], inch_input: tuple[bool, str]
     units = stated
     if units is None:
         units = "inch" if inch_input is not None and inch_input[0] else "mm"
-        why = (f"0000 #2 INI = {int(inch_input[0])} ({inch_input[1]})" if inch_input is not None
-               else "no parameter 0000 #2 INI (the control's default, mm)")
+        why = inch_input[1] if inch_input is not None else "the control's default"
         c.note("IM203", f"the tool offset listing states no G20/G21: its values are taken in the input unit, {units} "
                f"by {why}", file=path)
     # X offsets of a lathe are not written (only R and Q are), so a diameter axis needs no ORC here

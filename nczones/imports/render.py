@@ -90,6 +90,10 @@ def _tool_solids(out: list[str], im: ImportedMachine) -> None:
     """The tools whose table gives a diameter, as ``[[tools]]`` solids written commented out: a tool table
     gives the cutter's diameter but neither its length nor the holder, and a made-up length would make a
     proof about an invented tool (specs/machine-import.md, "Tool solids")."""
+    if im.tool_solids:  # from a Fanuc offset listing (imports/fanuc_tools.py): rows already made
+        out.append("")
+        for assignment, comment in im.tool_solids:
+            out.append("# " + (_line(assignment, comment) if assignment else _clean(comment)))
     known = [(n, d) for n, d in sorted(im.tool_diameters.items()) if d.value > 0]
     if not known or not all(a in im.axes for a in "XYZ"):
         return  # a lathe's turret tools are rectangles the tool table has nothing for
@@ -155,10 +159,6 @@ def render_toml(im: ImportedMachine, output: str | None = None) -> str:
             for n in sorted(registers):
                 out.append(_line(f"{prefix}{n} = {_q(registers[n].value)}", _how(registers[n])))
     _tool_solids(out, im)
-    if im.tool_solids:
-        out.append("")
-        for assignment, comment in im.tool_solids:
-            out.append("# " + (_line(assignment, comment) if assignment else _clean(comment)))
     folders, how = im.subroutine_path
     if folders:
         # relative to where the machine file goes; without -o, as if beside the INI (where LinuxCNC reads them)
