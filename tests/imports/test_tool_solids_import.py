@@ -6,11 +6,14 @@ tool (specs/machine-import.md, "Tool solids")."""
 from __future__ import annotations
 
 import re
+from decimal import Decimal
 from fractions import Fraction
 from fractions import Fraction as F
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.cli import main
 from nczones.machine import parse_machine
@@ -205,3 +208,48 @@ def test_a_listing_that_states_its_unit_first_is_a_listing():
     assert is_fanuc_listing((FANUC / "offsets" / "mill_c.txt").read_text())
     assert is_fanuc_listing("%\nO0001\nN1 G90 G21\nG10 L10 P1 R100.\n%\n")
     assert not is_fanuc_listing("T1 P1 Z100 D6\n") and not is_fanuc_listing("G21\nT1 P1 Z100\n")
+
+
+def test_a_wrong_listing_is_refused_at_its_line(capsys, monkeypatch):
+    # a lathe listing (G10 P X Z R Q) for a mill: the reader's VF111 at file:line:column, exit 2, nothing written
+    monkeypatch.chdir(FANUC)
+    assert main(["import-machine", "mill_16i.prm", "--tool-table", "offsets/lathe.txt"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and "Traceback" not in err
+    assert err.startswith("offsets/lathe.txt:5:12: error[VF111]: 'X-160.': a mill listing takes N L P R after G10")
+    assert main(["import-machine", "mill_16i.prm", "--tool-table", "offsets/missing.txt"]) == 2
+    assert "offsets/missing.txt: error[VF111]: cannot read the tool offset listing" in capsys.readouterr().err
+    # a Grbl dump has no tool offsets to read
+    monkeypatch.chdir(FANUC.parent / "grbl")
+    assert main(["import-machine", "router_grbl11.settings", "--tool-table", "x.txt"]) == 2
+    assert "--tool-table belongs to LinuxCNC configurations" in capsys.readouterr().err
+
+
+_RADIUS = st.decimals(min_value=Decimal("-3"), max_value=Decimal("40"), places=3)
+_WEAR = st.decimals(min_value=Decimal("-0.5"), max_value=Decimal("0.5"), places=3)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.dictionaries(st.integers(1, 400), st.tuples(_RADIUS, st.one_of(st.none(), _WEAR)), min_size=1,
+                       max_size=6))
+def test_every_memory_c_radius_becomes_its_cutter(registers):
+    # property: for any memory C listing of D registers (L12 geometry, optional L13 wear), the starts written,
+    # uncommented, are exactly the registers whose geometry is above 0, each of diameter 2 x max(g, g + w)
+    import tempfile
+
+    from nczones.imports import import_machine
+
+    blocks = ["%", "G21"]
+    for n, (g, w) in registers.items():
+        blocks.append(f"G10 L12 P{n} R{g:.3f}")
+        if w is not None:
+            blocks.append(f"G10 L13 P{n} R{w:.3f}")
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "ofs.txt"
+        path.write_text("\n".join(blocks + ["%"]) + "\n")
+        text = import_machine(FANUC / "mill_16i.prm", tool_table=str(path)).text
+    expected = {n: 2 * max(Fraction(g), Fraction(g) + Fraction(w or 0)) for n, (g, w) in registers.items() if g > 0}
+    block = _uncomment(text, {'"?"': '"1"'})
+    solids = machine_solids(parse_machine(text + "\n" + block + "\n", "m.toml")) if expected else None
+    got = {} if solids is None else {n: parts[0].radius * 2 for n, parts in solids.tools.items()}
+    assert got == expected
