@@ -43,17 +43,19 @@ def with_offset_solids(imported: ImportedMachine, path: str, c: Collector) -> Im
 
     g20 = next((how for code, how in imported.modal if code == "G20"), None)
     inch_input = (True, g20) if g20 is not None else (False, "0000 #2 INI is 0 or not given: no G20 at start-up")
-    rows = offset_solids(path, imported.axes, inch_input, c)
+    lathe = any(key == "type" and value == '"lathe"' for key, value, _ in imported.extra)  # a DIA axis
+    rows = offset_solids(path, imported.axes, inch_input, c, lathe)
     return replace(imported, tool_solids=rows, notes=tuple(c.notes))  # c holds the parameter notes too
 
 
 def offset_solids(path: str, axes: tuple[str, ...], inch_input: tuple[bool, str] | None,
-                  c: Collector) -> tuple[Row, ...]:
+                  c: Collector, lathe_control: bool = False) -> tuple[Row, ...]:
     """The commented-out ``[[tools]]`` rows for the offset listing at ``path`` on a machine with ``axes``.
 
     ``inch_input`` is whether the input unit is inches and why (None: not known, mm); it gives the listing's
     unit when the listing states no ``G20``/``G21`` (note ``IM203``).  A malformed listing is ``VF111``, as
-    for ``verify --tool-table``."""
+    for ``verify --tool-table``.  The listing is in the lathe format (``G10 P X Z R Q``) on a lathe control
+    (``lathe_control``, a diameter axis) or a machine with X and Z but no Y, else in the mill format."""
     lathe = "X" in axes and "Z" in axes and "Y" not in axes
     mill = all(a in axes for a in "XYZ")
     if not (lathe or mill):
@@ -69,10 +71,15 @@ def offset_solids(path: str, axes: tuple[str, ...], inch_input: tuple[bool, str]
         c.note("IM203", f"the tool offset listing states no G20/G21: its values are taken in the input unit, {units} "
                f"by {why}", file=path)
     # X offsets of a lathe are not written (only R and Q are), so a diameter axis needs no ORC here
-    listing = read_fanuc_listing(path, units, lathe, axes, (), None)
+    listing = read_fanuc_listing(path, units, lathe or lathe_control, axes, (), None)
     lines = text.split("\n")
     if lathe:
         return _lathe(path, listing, lines, c)
+    if lathe_control:
+        c.note("IM201", f"no solid from the lathe tool offset listing {path}: this lathe has a Y axis, so its "
+               "solids take the mill form (vertical cylinders about the tool axis), which an offset's nose is not",
+               file=path)
+        return ()
     return _mill(path, listing, lines, c)
 
 

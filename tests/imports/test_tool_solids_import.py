@@ -253,3 +253,24 @@ def test_every_memory_c_radius_becomes_its_cutter(registers):
     solids = machine_solids(parse_machine(text + "\n" + block + "\n", "m.toml")) if expected else None
     got = {} if solids is None else {n: parts[0].radius * 2 for n, parts in solids.tools.items()}
     assert got == expected
+
+
+def test_a_lathe_with_a_y_axis_reads_its_lathe_listing(capsys, monkeypatch, tmp_path):
+    # a lathe control (1006 #3 DIA on X) with a Y axis keeps lathe offsets (G10 P X Z R Q, B-63524EN 14.5.2 also
+    # allows Y); its solids take the mill form (X, Y, Z), where a nose square has no place: the listing is read
+    # (a wrong line would be VF111) and nothing is written, with a note -- not refused as a mill listing
+    prm = (FANUC / "lathe_30i.prm").read_text()
+    for old, new in (("N01006Q1A1P00001000A2P00000000;", "N01006Q1A1P00001000A2P00000000A3P00000000;"),
+                     ("N01013Q1A1P00000010A2P00000010;", "N01013Q1A1P00000010A2P00000010A3P00000010;"),
+                     ("N01020Q1A1P88A2P90;", "N01020Q1A1P88A2P90A3P89;"),
+                     ("N01240Q1A1M220.0000A2M300.0000;", "N01240Q1A1M220.0000A2M300.0000A3M0.0;"),
+                     ("N01420Q1A1M15000.0A2M20000.0;", "N01420Q1A1M15000.0A2M20000.0A3M5000.0;")):
+        assert old in prm
+        prm = prm.replace(old, new)
+    (tmp_path / "lathe_y.prm").write_text(prm)
+    (tmp_path / "ofs.txt").write_text((FANUC / "offsets" / "lathe.txt").read_text())
+    monkeypatch.chdir(tmp_path)
+    assert main(["import-machine", "lathe_y.prm", "--tool-table", "ofs.txt"]) == 0
+    out, err = capsys.readouterr()
+    assert 'axes = ["X", "Z", "Y"]' in out and "[[tools]]" not in out
+    assert "ofs.txt: note[IM201]: no solid from the lathe tool offset listing ofs.txt: this lathe has a Y axis" in err
