@@ -59,7 +59,7 @@ def test_a_lathe_table_writes_no_tool_solids(capsys, monkeypatch):
 # meanings are the manuals': Series 0i-B Connection Manual B-63833EN-1 10.2.1 "Tool compensation memory C: ...
 # separate memories are prepared for cutter compensation (for D code) and for tool length compensation (for H
 # code)", geometry and wear apart; G10 L10/L11 H geometry/wear, L12/L13 D geometry/wear ("Programmable data
-# input (G10)"); memory A: one value per number, G10 L11 (16i-PA B-63124EN 15.3); a lathe's G10 P<n> X Z R Q,
+# input (G10)"); memory A: one value per number, G10 L11 (specs/machine-file.md); a lathe's G10 P<n> X Z R Q,
 # P 1-64 the wear, P 10000+n the geometry, R the nose radius, Q the imaginary tool nose (16i-TB B-63524EN
 # 14.5.2).  The listings in tests/golden/import/fanuc/offsets/ are written after these formats (no listing
 # punched by a control is in the corpus: /work/shared/corpus/fanuc/README.md lists G10 L10/L11/L12 as not
