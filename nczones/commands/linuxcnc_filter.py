@@ -31,7 +31,14 @@ import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
 from ..errors import Diagnostic, InputError
-from .conventions import EXIT_OK, EXIT_UNKNOWN, budget_seconds, program_source, with_dialect
+from .conventions import (
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    EXIT_UNKNOWN,
+    budget_seconds,
+    program_source,
+    with_dialect,
+)
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -237,7 +244,7 @@ def _run(args: argparse.Namespace) -> int:
     report, note = _write_report(result, machine, source, args.program)
     sys.stderr.write(operator_message(result, args.program, report, machine) + note)
     if result.interrupted:
-        return 130
+        return EXIT_INTERRUPTED
     code: int = result.verdict.exit_code
     return code if code != EXIT_OK else EXIT_UNKNOWN
 
