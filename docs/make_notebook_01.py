@@ -21,7 +21,7 @@ In this notebook you will
 code("""from fractions import Fraction as F
 import matplotlib.pyplot as plt
 from nczones import load_machine, format_decimal
-from nczones.cli import describe_machine
+from nczones.commands.check_machine import describe_machine
 from nczones.report.plot import plot_zones
 
 grinder = load_machine("../specs/machines/grinder.toml")

@@ -15,15 +15,10 @@ import os
 import sys
 from pathlib import Path
 
-from .. import cli
-from ..errors import Diagnostic, InputError
 from ..fleet.project import Project
+from .conventions import EXIT_FAIL, EXIT_OK, usage_error
 
-__all__ = ["register", "run_fleet_check", "run_fleet_status", "run_fleet_diff"]
-
-
-def _usage(code: str, message: str) -> InputError:
-    return InputError(Diagnostic(code, message, file="<command line>"))
+__all__ = ["configure", "run_fleet_check", "run_fleet_status", "run_fleet_diff"]
 
 
 def _store_path(project: Project, args: argparse.Namespace) -> Path:
@@ -37,9 +32,9 @@ def run_fleet_check(args: argparse.Namespace) -> int:
     from ..fleet.store import Store
 
     if args.split_lines is not None and args.split_lines < 1:
-        raise _usage("FL110", f"--split-lines {args.split_lines}: must be at least 1")
+        raise usage_error("FL110", f"--split-lines {args.split_lines}: must be at least 1")
     if args.workers is not None and args.workers < 1:
-        raise _usage("FL110", f"--workers {args.workers}: must be at least 1")
+        raise usage_error("FL110", f"--workers {args.workers}: must be at least 1")
     project = load_project(args.project)
     executor = "serial" if args.serial else (args.scheduler or ("local" if args.cluster else "auto"))
     options = CheckOptions(executor=executor, workers=args.workers,
@@ -48,7 +43,7 @@ def run_fleet_check(args: argparse.Namespace) -> int:
                            progress=True if args.progress else (False if args.no_progress else None))
     cells = project.cells(machines=args.machine or None, programs=args.program or None)
     if not cells:  # a CI job whose glob matches nothing must not pass with "0 jobs ran"
-        raise _usage("FL112", "no program selected: " + _empty_selection(project, args))
+        raise usage_error("FL112", "no program selected: " + _empty_selection(project, args))
     with Store(_store_path(project, args)) as store:
         summary = run_check(project, store, options, cells=cells, force=args.force)
         from ..fleet.status import status_text
@@ -101,21 +96,21 @@ def run_fleet_status(args: argparse.Namespace) -> int:
 
     project = load_project(args.project)
     if args.format == "html" and not args.output:
-        raise _usage("FL110", "--format html writes a page and the reports beside it: give --output FILE.html")
+        raise usage_error("FL110", "--format html writes a page and the reports beside it: give --output FILE.html")
     with Store(_store_path(project, args), create=False) as store:
         run = store.latest_run()
         if run is None:
-            raise _usage("FL300", "the store has no run yet: run 'nczones fleet check' first")
+            raise usage_error("FL300", "the store has no run yet: run 'nczones fleet check' first")
         rows = store.cells(run.run_id)
         if args.format == "html":
             written = write_status_html(run, rows, store, args.output, f"nczones fleet: {project.name}",
                                         project=project, html_reports=args.html_reports)
             print(f"{args.output}: the matrix of run {run.run_id} ({len(rows)} cells) and {len(written) - 1} "
                   "reports", file=sys.stderr)
-            return cli.EXIT_OK
+            return EXIT_OK
         text = status_json(run, rows) if args.format == "json" else status_text(run, rows)
     _write(args.output, text)
-    return cli.EXIT_OK
+    return EXIT_OK
 
 
 def run_fleet_diff(args: argparse.Namespace) -> int:
@@ -129,11 +124,11 @@ def run_fleet_diff(args: argparse.Namespace) -> int:
         new = store.latest_run()
         old = None if new is None else store.latest_run(before=new.run_id)
         if new is None or old is None:
-            raise _usage("FL300", "a diff needs two runs in the store: run 'nczones fleet check' again")
+            raise usage_error("FL300", "a diff needs two runs in the store: run 'nczones fleet check' again")
         changes = diff_runs(store.cells(old.run_id), store.cells(new.run_id))
     _write(args.output, diff_json(old, new, changes) if args.format == "json" else diff_text(old, new, changes))
     worse = any(c.kind.startswith("newly") for c in changes)
-    return cli.EXIT_FAIL if worse else cli.EXIT_OK
+    return EXIT_FAIL if worse else EXIT_OK
 
 
 def _write(path: str | None, text: str) -> None:
@@ -153,11 +148,9 @@ def _common(p: argparse.ArgumentParser) -> None:
                         ".nczones/results.sqlite beside it)")
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    fleet = cli.add_command(
-        sub, "fleet",
-        description="Verify every program of a library (nczones.toml) against every machine it runs on; only jobs "
-                    "whose program, machine file, settings or nczones changed run again. See specs/fleet.md.")
+def configure(fleet: argparse.ArgumentParser) -> None:
+    fleet.description = ("Verify every program of a library (nczones.toml) against every machine it runs on; only jobs "
+                         "whose program, machine file, settings or nczones changed run again. See specs/fleet.md.")
     fsub = fleet.add_subparsers(dest="fleet_command", required=True, metavar="SUBCOMMAND",
                                 help="check (verify what changed), status (the matrix), diff (what changed)")
     register_check(fsub)
@@ -231,5 +224,3 @@ def register_diff(fsub: argparse._SubParsersAction) -> None:
     p.add_argument("--output", metavar="FILE", help="write to FILE instead of standard output")
     p.set_defaults(handler=run_fleet_diff)
 
-
-cli.REGISTRARS["fleet"] = register

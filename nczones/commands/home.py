@@ -19,14 +19,14 @@ from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
-from .. import cli
 from ..controller.homing import HomingRun, simulate_homing
 from ..errors import InvalidArgument
 from ..exact import format_decimal, seconds
 from ..machine import Machine, load_machine
 from ..plans.homing import HomingConfig, homing_config, installation_start
+from .conventions import EXIT_FAIL, EXIT_OK
 
-__all__ = ["register", "parse_length", "replay_counterexample"]
+__all__ = ["configure", "parse_length", "replay_counterexample"]
 
 _FRACTION_RE = re.compile(r"\s*([+-]?\d+)\s*/\s*(\d+)\s*\Z")
 
@@ -141,7 +141,7 @@ def _simulate(args: argparse.Namespace, machine: Machine, configs: dict[str, Hom
                           "axes": [_run_json(r) for _, r in runs], "ok": ok}, indent=2))
     else:
         print("\n".join(_run_text(r, cfg, phase is not None) for cfg, r in runs))
-    return cli.EXIT_OK if ok else cli.EXIT_FAIL
+    return EXIT_OK if ok else EXIT_FAIL
 
 
 def _reproduce_command(args: argparse.Namespace, axis: str, cex: Any) -> str:
@@ -195,7 +195,7 @@ def _prove(args: argparse.Namespace, machine: Machine, configs: dict[str, Homing
                             "counterexample": cex_json(p, r.axis)} for p in r.proofs],
             })
         print(json.dumps(out, indent=2))
-        return cli.EXIT_OK if ok else cli.EXIT_FAIL
+        return EXIT_OK if ok else EXIT_FAIL
 
     lines = []
     for cfg, r in reports:
@@ -222,7 +222,7 @@ def _prove(args: argparse.Namespace, machine: Machine, configs: dict[str, Homing
                    else "homing is NOT proved exact at the configured phase")
         lines.append(f"  => {verdict}")
     print("\n".join(lines))
-    return cli.EXIT_OK if ok else cli.EXIT_FAIL
+    return EXIT_OK if ok else EXIT_FAIL
 
 
 def _run_home(args: argparse.Namespace) -> int:
@@ -233,10 +233,9 @@ def _run_home(args: argparse.Namespace) -> int:
     return _simulate(args, machine, configs)
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    p = cli.add_command(sub, "home",
-                       description="Simulate homing of one axis or all axes pulse by pulse, or prove with Z3 "
-                                   "when it ends exactly at machine zero (see specs/homing.md).")
+def configure(p: argparse.ArgumentParser) -> None:
+    p.description = ("Simulate homing of one axis or all axes pulse by pulse, or prove with Z3 "
+                     "when it ends exactly at machine zero (see specs/homing.md).")
     p.add_argument("--machine", required=True, metavar="M.toml",
                    help="the machine file with [homing.<axis>] sections (specs/homing.md)")
     p.add_argument("--axis", help="home only this axis (default: every axis with a [homing.<axis>] section)")
@@ -249,5 +248,3 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="text (readable) or json (times in seconds as numbers, positions as exact decimals)")
     p.set_defaults(handler=_run_home)
 
-
-cli.REGISTRARS["home"] = register

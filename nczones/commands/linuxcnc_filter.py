@@ -30,14 +30,21 @@ import os
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
-from .. import cli
 from ..errors import Diagnostic, InputError
+from .conventions import (
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    EXIT_UNKNOWN,
+    budget_seconds,
+    program_source,
+    with_dialect,
+)
 
 if TYPE_CHECKING:
     from ..machine import Machine
     from ..prover.result import Result
 
-__all__ = ["register", "find_machine", "ProgressLines", "operator_message", "ini_snippet", "REPORT_SUFFIX",
+__all__ = ["configure", "find_machine", "ProgressLines", "operator_message", "ini_snippet", "REPORT_SUFFIX",
            "MAX_LISTED", "EXTENSIONS"]
 
 #: The full report is written beside the program under its name plus this suffix and ``.html`` (or ``.txt``).
@@ -222,9 +229,8 @@ def _run(args: argparse.Namespace) -> int:
 
     progress = ProgressLines(sys.stderr)
     ini = args.ini or os.environ.get("INI_FILE_NAME") or None
-    machine = cli.with_dialect(load_machine(find_machine(args.machine, ini)), "linuxcnc")
-    source = cli.program_source(args.program)
-    from .verify import budget_seconds
+    machine = with_dialect(load_machine(find_machine(args.machine, ini)), "linuxcnc")
+    source = program_source(args.program)
 
     result = verify_source(source, machine, VerifyOptions(budget_s=budget_seconds(args.budget)), progress=progress)
     progress.emit(100)
@@ -234,25 +240,23 @@ def _run(args: argparse.Namespace) -> int:
         sys.stdout.flush()
         sys.stdout.buffer.write(data)
         sys.stdout.buffer.flush()
-        return cli.EXIT_OK
+        return EXIT_OK
     report, note = _write_report(result, machine, source, args.program)
     sys.stderr.write(operator_message(result, args.program, report, machine) + note)
     if result.interrupted:
-        return 130
+        return EXIT_INTERRUPTED
     code: int = result.verdict.exit_code
-    return code if code != cli.EXIT_OK else cli.EXIT_UNKNOWN
+    return code if code != EXIT_OK else EXIT_UNKNOWN
 
 
-def register(sub: argparse._SubParsersAction) -> None:
+def configure(p: argparse.ArgumentParser) -> None:
     from ..prover.limits import DEFAULT_BUDGET_S
 
-    p = cli.add_command(
-        sub, "linuxcnc-filter",
-        description="The program filter of LinuxCNC's INI [FILTER] section (docs/linuxcnc-filter.md): prove "
-                    "PROGRAM against the machine file, print it unchanged on standard output when it is safe "
-                    "(exit 0); otherwise print nothing, tell the operator why on standard error, write the full "
-                    "report beside the program and exit 1 (unsafe), 2 (bad input) or 3 (unknown). Progress "
-                    "goes to standard error as FILTER_PROGRESS=N lines.")
+    p.description = ("The program filter of LinuxCNC's INI [FILTER] section (docs/linuxcnc-filter.md): prove "
+                     "PROGRAM against the machine file, print it unchanged on standard output when it is safe "
+                     "(exit 0); otherwise print nothing, tell the operator why on standard error, write the full "
+                     "report beside the program and exit 1 (unsafe), 2 (bad input) or 3 (unknown). Progress "
+                     "goes to standard error as FILTER_PROGRESS=N lines.")
     p.add_argument("program", metavar="PROGRAM", help="the program file the GUI opens (LinuxCNC passes it)")
     p.add_argument("--machine", metavar="M.toml", default=None,
                    help="the machine file (default: [NCZONES] MACHINE of the INI, else the INI's name with .toml)")
@@ -263,5 +267,3 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "undecided is unknown and the program is refused")
     p.set_defaults(handler=_run)
 
-
-cli.REGISTRARS["linuxcnc-filter"] = register

@@ -14,13 +14,13 @@ import sys
 from collections.abc import Iterable
 from pathlib import Path
 
-from .. import cli
 from ..errors import Diagnostic, InputError, InvalidArgument
 from ..imports import KINDS, ImportResult, import_machine
 from ..imports.export import EXPORT_KINDS
 from ..imports.render import KIND_LABELS
+from .conventions import EXIT_FAIL, EXIT_OK
 
-__all__ = ["register_import", "register_export", "summary"]
+__all__ = ["configure_import", "configure_export", "summary"]
 
 
 def _write(path: str, text: str) -> None:
@@ -75,16 +75,13 @@ def _run_import(args: argparse.Namespace) -> int:
         _write(args.linuxcnc_filter, ini_snippet(args.output, args.source))
         print(f"{args.linuxcnc_filter}: the [FILTER] and [NCZONES] lines for {args.source} "
               "(docs/linuxcnc-filter.md)", file=sys.stdout)
-    return cli.EXIT_OK
+    return EXIT_OK
 
 
-def register_import(sub: argparse._SubParsersAction) -> None:
-    p = cli.add_command(
-        sub, "import-machine",
-        description="Read a controller configuration and write a commented machine file: every value names the "
-        "setting it came from, and what the machine file cannot hold is printed (and written at the end of the "
-        "file) with its source line. Exit 0 when the file is written, 2 on bad input.",
-    )
+def configure_import(p: argparse.ArgumentParser) -> None:
+    p.description = ("Read a controller configuration and write a commented machine file: every value names "
+                     "the setting it came from, and what the machine file cannot hold is printed (and written at "
+                     "the end of the file) with its source line. Exit 0 when the file is written, 2 on bad input.")
     p.add_argument("source", metavar="SOURCE",
                    help="a LinuxCNC INI file, a Grbl $$ settings dump or a Fanuc parameter listing")
     p.add_argument("--kind", choices=KINDS,
@@ -105,8 +102,6 @@ def register_import(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run_import)
 
 
-cli.REGISTRARS["import-machine"] = register_import
-
 
 def _run_export(args: argparse.Namespace) -> int:
     from ..imports.export import export_zones
@@ -124,18 +119,15 @@ def _run_export(args: argparse.Namespace) -> int:
                    f"({len(result.notes)} note{'s' if len(result.notes) != 1 else ''}); the proof before the run "
                    "covers the difference")
     _emit(result.text, args.output, f"{machine.source}: {what}{target}: {verdict}", result.notes)
-    return cli.EXIT_OK if result.exact else cli.EXIT_FAIL
+    return EXIT_OK if result.exact else EXIT_FAIL
 
 
-def register_export(sub: argparse._SubParsersAction) -> None:
-    p = cli.add_command(
-        sub, "export-zones",
-        description="Write the settings a control can hold for a machine file's zones: LinuxCNC's soft limits "
-        "(one box), a Fanuc control's stored stroke checks (a box and two forbidden boxes). What the control cannot "
-        "hold (stepped tables, polygons, tool-tip zones, more forbidden areas) is left out and said; the settings "
-        "then allow more than the machine file. Exit 0 when they hold the allowed set exactly, 1 when they allow "
-        "more, 2 on bad input.",
-    )
+def configure_export(p: argparse.ArgumentParser) -> None:
+    p.description = ("Write the settings a control can hold for a machine file's zones: LinuxCNC's soft limits "
+                     "(one box), a Fanuc control's stored stroke checks (a box and two forbidden boxes). What the "
+                     "control cannot hold (stepped tables, polygons, tool-tip zones, more forbidden areas) is left "
+                     "out and said; the settings then allow more than the machine file. Exit 0 when they hold the "
+                     "allowed set exactly, 1 when they allow more, 2 on bad input.")
     p.add_argument("machine_file", metavar="M.toml", help="the machine file")
     p.add_argument("--kind", choices=EXPORT_KINDS, required=True, help="the control to write settings for")
     p.add_argument("-o", "--output", metavar="FILE",
@@ -151,5 +143,3 @@ def register_export(sub: argparse._SubParsersAction) -> None:
                    "HOME; Fanuc: 1020, 1420, 1240), so the text describes the whole machine and imports back")
     p.set_defaults(handler=_run_export)
 
-
-cli.REGISTRARS["export-zones"] = register_export

@@ -13,10 +13,10 @@ import argparse
 import sys
 from typing import Any
 
-from .. import cli
 from ..errors import Diagnostic, InputError
+from .conventions import EXIT_OK, budget_seconds, program_source, with_dialect
 
-__all__ = ["register"]
+__all__ = ["configure"]
 
 
 class PlotError(InputError):
@@ -41,7 +41,7 @@ def _run(args: argparse.Namespace) -> int:
     from ..machine import load_machine
     from ..report import use_agg_backend
 
-    machine = cli.with_dialect(load_machine(args.machine), args.dialect)
+    machine = with_dialect(load_machine(args.machine), args.dialect)
     plane = _plane(args.plane, machine)
     if len(machine.axis_names) < 2:
         raise PlotError(Diagnostic("PL102", f"{args.machine}: a plot needs a machine with two axes or more",
@@ -50,7 +50,6 @@ def _run(args: argparse.Namespace) -> int:
     if suffix not in ("png", "svg", "pdf"):
         raise PlotError(Diagnostic("PL103", f"-o {args.output!r}: the file name must end in .png, .svg or .pdf",
                                    file="<command line>"))
-    from ..cli import program_source
 
     source = program_source(args.program)
     use_agg_backend()
@@ -59,7 +58,6 @@ def _run(args: argparse.Namespace) -> int:
     from ..prover.limits import interpretation_budget
     from ..report.figure import plot_program
     from ..report.progress import progress_for
-    from .verify import budget_seconds
 
     budget = budget_seconds(args.budget)
     result = None
@@ -90,11 +88,10 @@ def _run(args: argparse.Namespace) -> int:
         plt.close(fig)
     verdict = f" ({result.verdict.label}, {len(result.violations)} violating block(s))" if result else ""
     print(f"{args.output}: plot of {source.name} on {machine.name}{verdict}")
-    return cli.EXIT_OK
+    return EXIT_OK
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    p = cli.add_command(sub, "plot")
+def configure(p: argparse.ArgumentParser) -> None:
     p.add_argument("program", metavar="PROGRAM", help="the G-code program file; '-' reads standard input")
     p.add_argument("--machine", required=True, metavar="M.toml",
                    help="the machine file whose allowed set is drawn (specs/machine-file.md)")
@@ -112,5 +109,3 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="how the program text is read (default: the machine file's [machine] dialect)")
     p.set_defaults(handler=_run)
 
-
-cli.REGISTRARS["plot"] = register

@@ -6,11 +6,11 @@ from __future__ import annotations
 import argparse
 import os
 
-from .. import cli
 from ..errors import Diagnostic
 from ..replay import IRRATIONAL_TOLERANCE_MM, Check, ReplayError, replay_file
+from .conventions import EXIT_FAIL, EXIT_OK
 
-__all__ = ["register"]
+__all__ = ["configure"]
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -29,15 +29,13 @@ def _run(args: argparse.Namespace) -> int:
         print(f"replay: {len(checks) - bad} of {len(checks)} counterexample{'s' if len(checks) != 1 else ''} "
               f"confirmed" + (f" ({approx} within {IRRATIONAL_TOLERANCE_MM} mm of an irrational path point)"
                               if approx else "") + (f"; {bad} NOT reproduced" if bad else ""))
-    return cli.EXIT_FAIL if bad else cli.EXIT_OK
+    return EXIT_FAIL if bad else EXIT_OK
 
 
-def register(sub: argparse._SubParsersAction) -> None:
-    p = cli.add_command(
-        sub, "replay",
-        description="Re-check every counterexample of REPORT.json (nczones verify --format json) in exact "
-                    "arithmetic against the machine file and program it names (their SHA-256 must match). "
-                    "Exit status: 0 all confirmed, 1 one was not reproduced, 2 bad input.")
+def configure(p: argparse.ArgumentParser) -> None:
+    p.description = ("Re-check every counterexample of REPORT.json (nczones verify --format json) in exact "
+                     "arithmetic against the machine file and program it names (their SHA-256 must match). "
+                     "Exit status: 0 all confirmed, 1 one was not reproduced, 2 bad input.")
     p.add_argument("reports", nargs="+", metavar="REPORT.json", help="JSON report(s) of nczones verify")
     p.add_argument("--base", metavar="DIR",
                    help="directory the report's relative paths start from (default: the working directory)")
@@ -46,5 +44,3 @@ def register(sub: argparse._SubParsersAction) -> None:
                                                         "standard input)")
     p.set_defaults(handler=_run)
 
-
-cli.REGISTRARS["replay"] = register

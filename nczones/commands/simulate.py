@@ -16,11 +16,21 @@ from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
 
-from .. import cli
 from ..errors import Diagnostic, InputError, InvalidArgument, shorten
 from ..exact import format_decimal, parse_decimal
+from .conventions import (
+    EXIT_FAIL,
+    EXIT_INPUT,
+    EXIT_OK,
+    add_dialect_arguments,
+    arc_tolerance,
+    budget_seconds,
+    library_folder,
+    program_source,
+    with_dialect,
+)
 
-__all__ = ["register", "render_text", "EXTRA_OPTIONS", "RUNNERS"]
+__all__ = ["configure", "render_text", "EXTRA_OPTIONS", "RUNNERS"]
 
 #: Functions ``f(parser)`` that add options to ``simulate`` (e.g. ``--break-at``).
 EXTRA_OPTIONS: list[Callable[[argparse.ArgumentParser], None]] = []
@@ -120,12 +130,11 @@ def render_text(result: Any, program: str) -> str:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from ..cli import program_source
     from ..controller import Settings
     from ..machine import load_machine
 
-    machine = cli.with_dialect(load_machine(args.machine), args.dialect)
-    library = cli.library_folder(args.library)
+    machine = with_dialect(load_machine(args.machine), args.dialect)
+    library = library_folder(args.library)
     source = program_source(args.program)
     settings = Settings(
         pre_time_constant_ms=_decimal_option("--accdec-before-ms", args.accdec_before_ms),
@@ -145,11 +154,10 @@ def _run(args: argparse.Namespace) -> int:
         from ..pipeline.simulation import simulate_source
         from ..prover.options import VerifyOptions
         from ..report.progress import progress_for
-        from .verify import budget_seconds
 
         # the interpretation's settings, checked in the order the command always checked them
         budget = budget_seconds(args.budget)
-        options = VerifyOptions(arc_tolerance=cli.arc_tolerance(args.arc_tolerance),
+        options = VerifyOptions(arc_tolerance=arc_tolerance(args.arc_tolerance),
                                 max_iterations=_max_iterations(args.max_iterations), library=library,
                                 budget_s=budget)
         bar = progress_for(sys.stderr, "simulate")
@@ -173,18 +181,17 @@ def _run(args: argparse.Namespace) -> int:
         text = render_text(result, source.name)
         sys.stdout.write(text + f"  dialect: {machine.dialect}\n" + "".join(f"  note: {n}\n" for n in notes))
     if result.alarms:
-        return cli.EXIT_FAIL
+        return EXIT_FAIL
     if budget_stop or any("not supported" in n for n in notes):
-        return cli.EXIT_INPUT
-    return cli.EXIT_OK
+        return EXIT_INPUT
+    return EXIT_OK
 
 
-def register(sub: argparse._SubParsersAction) -> None:
+def configure(p: argparse.ArgumentParser) -> None:
     from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 
-    p = cli.add_command(sub, "simulate",
-                       description="Run PROGRAM through the reference controller pulse by pulse. Exit status: 0 "
-                                   "no alarm, 1 an alarm, 2 bad input or a code the controller cannot run.")
+    p.description = ("Run PROGRAM through the reference controller pulse by pulse. Exit status: 0 "
+                     "no alarm, 1 an alarm, 2 bad input or a code the controller cannot run.")
     p.add_argument("program", metavar="PROGRAM", help="the G-code program file; '-' reads standard input")
     p.add_argument("--machine", required=True, metavar="M.toml",
                    help="the machine file: axes, zones, pulse units, rates (specs/machine-file.md)")
@@ -209,7 +216,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--break-at", metavar="LINE[:FRACTION]", default=None,
                    help="break the tool in the first cutting motion of LINE after FRACTION of it (default 0) "
                         "and run the automatic recovery of the machine's [tool_change]")
-    cli.add_dialect_arguments(p)
+    add_dialect_arguments(p)
     p.add_argument("--max-iterations", type=int, default=DEFAULT_MAX_LOOP_ITERATIONS, metavar="N",
                    help="iterations a loop (while, do, repeat) may run per entry before the simulation stops "
                         f"there (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS})")
@@ -222,5 +229,3 @@ def register(sub: argparse._SubParsersAction) -> None:
         extra(p)
     p.set_defaults(handler=_run)
 
-
-cli.REGISTRARS["simulate"] = register

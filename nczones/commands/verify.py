@@ -25,10 +25,20 @@ import sys
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, TextIO
 
-from .. import cli
-from ..errors import Diagnostic, InputError
+from ..errors import InputError
 from ..prover.limits import DEFAULT_BUDGET_S
 from ..report import FORMATS
+from .conventions import (
+    EXIT_FAIL,
+    EXIT_INPUT,
+    EXIT_INTERRUPTED,
+    EXIT_OK,
+    EXIT_UNKNOWN,
+    add_dialect_arguments,
+    program_source,
+    usage_error,
+    with_dialect,
+)
 
 if TYPE_CHECKING:
     from ..gcode.source import ProgramSource
@@ -36,14 +46,10 @@ if TYPE_CHECKING:
     from ..prover.options import VerifyOptions
     from ..prover.result import Result
 
-__all__ = ["register", "verify_options", "verify_one", "write_output", "worst_exit", "budget_seconds",
-           "EXIT_INTERRUPTED"]
-
-#: Exit status of a run stopped by Ctrl-C (128 + SIGINT, as shells report it).
-EXIT_INTERRUPTED = 130
+__all__ = ["configure", "verify_options", "verify_one", "write_output", "worst_exit", "EXIT_INTERRUPTED"]
 
 #: Exit statuses from worst to best: several programs exit with the first one that occurs.
-EXIT_ORDER = (cli.EXIT_FAIL, cli.EXIT_INPUT, cli.EXIT_UNKNOWN, cli.EXIT_OK)
+EXIT_ORDER = (EXIT_FAIL, EXIT_INPUT, EXIT_UNKNOWN, EXIT_OK)
 
 #: The youngest generation's collection threshold while the command runs: interpreting a program allocates
 #: millions of small objects that reference counting frees, and collecting every 700 allocations (Python's
@@ -68,11 +74,7 @@ def worst_exit(codes: Sequence[int]) -> int:
     for code in EXIT_ORDER:
         if code in codes:
             return code
-    return cli.EXIT_OK
-
-
-def _command_line_error(code: str, message: str) -> InputError:
-    return InputError(Diagnostic(code, message, file="<command line>"))
+    return EXIT_OK
 
 
 def verify_options(args: argparse.Namespace, machine: Machine) -> VerifyOptions:
@@ -92,7 +94,7 @@ def verify_one(program: str, machine: Machine, options: VerifyOptions,
     from ..pipeline.verification import verify_source
     from ..report.progress import progress_for
 
-    source = cli.program_source(program, stream=stream)
+    source = program_source(program, stream=stream)
     bar = progress_for(sys.stderr, "verify")
     try:
         return source, verify_source(source, machine, options, progress=bar)
@@ -116,7 +118,7 @@ def check_output_path(path: str | None) -> None:
     elif not os.access(parent, os.W_OK) or (os.path.exists(path) and not os.access(path, os.W_OK)):
         problem = "permission denied"
     if problem:
-        raise _command_line_error("VF107", f"--output {path}: cannot write the report: {problem}")
+        raise usage_error("VF107", f"--output {path}: cannot write the report: {problem}")
 
 
 def write_output(path: str | None, text: str) -> None:
@@ -128,8 +130,8 @@ def write_output(path: str | None, text: str) -> None:
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(text)
     except OSError as exc:
-        raise _command_line_error("VF107", f"--output {path}: cannot write the report: "
-                                           f"{exc.strerror or exc}") from None
+        raise usage_error("VF107", f"--output {path}: cannot write the report: "
+                                   f"{exc.strerror or exc}") from None
 
 
 def _error_entry(program: str, exc: InputError) -> dict[str, Any]:
@@ -186,13 +188,13 @@ def with_tool_table(machine: Machine, path: str, units: str | None,
         with open(path, "rb") as fh:
             data = fh.read()
     except OSError as exc:
-        raise _command_line_error("VF111", f"--tool-table {path}: cannot read it: {exc.strerror or exc}") from None
+        raise usage_error("VF111", f"--tool-table {path}: cannot read it: {exc.strerror or exc}") from None
     digest = hashlib.sha256(data).hexdigest()
     text = data.decode("utf-8", errors="replace")
     if is_fanuc_listing(text):
         if machine.dialect != "fanuc":
-            raise _command_line_error("VF111", f"--tool-table {path}: a Fanuc tool offset listing (G10 blocks); "
-                                               f"this machine's dialect is {machine.dialect}")
+            raise usage_error("VF111", f"--tool-table {path}: a Fanuc tool offset listing (G10 blocks); "
+                                       f"this machine's dialect is {machine.dialect}")
         listing = read_fanuc_listing(path, units, machine.is_lathe, machine.axis_names, machine.diameter_axes,
                                      x_offsets)
         if machine.is_lathe:
@@ -210,17 +212,17 @@ def with_tool_table(machine: Machine, path: str, units: str | None,
     # a .tbl line starts with T<n> (a pre-2.4 table with its number: the .tbl reader says what LinuxCNC does)
     looks_tbl = any(re.match(r"\s*(?:[Tt][+-]?)?\d", ln) for ln in text.split("\n"))
     if not looks_tbl and any(ln.split(";")[0].strip() for ln in text.split("\n")):
-        raise _command_line_error("VF111", f"--tool-table {path}: neither a LinuxCNC tool table (.tbl: lines "
-                                           "T<n> P<pocket> Z<length> D<diameter>) nor a Fanuc tool offset listing "
-                                           "(G10 L10/L11/L12/L13 P<n> R<value>, or G10 P<n> X Z R Q for a lathe)")
+        raise usage_error("VF111", f"--tool-table {path}: neither a LinuxCNC tool table (.tbl: lines "
+                                   "T<n> P<pocket> Z<length> D<diameter>) nor a Fanuc tool offset listing "
+                                   "(G10 L10/L11/L12/L13 P<n> R<value>, or G10 P<n> X Z R Q for a lathe)")
     if units is None:
-        raise _command_line_error("VF111", f"--tool-table {path}: give --tool-table-units mm or inch (a LinuxCNC "
-                                           "tool table is in the configuration's [TRAJ] LINEAR_UNITS, which the "
-                                           "table itself does not say)")
+        raise usage_error("VF111", f"--tool-table {path}: give --tool-table-units mm or inch (a LinuxCNC "
+                                   "tool table is in the configuration's [TRAJ] LINEAR_UNITS, which the "
+                                   "table itself does not say)")
     if machine.dialect != "linuxcnc":
-        raise _command_line_error("VF111", f"--tool-table {path}: reads a LinuxCNC tool table (.tbl) or a Fanuc "
-                                           f"offset listing; this is a .tbl and the machine's dialect is "
-                                           f"{machine.dialect}")
+        raise usage_error("VF111", f"--tool-table {path}: reads a LinuxCNC tool table (.tbl) or a Fanuc "
+                                   f"offset listing; this is a .tbl and the machine's dialect is "
+                                   f"{machine.dialect}")
     lengths, diameters, table_notes = read_tool_table(path, units, machine.axis_names)
     for skipped in table_notes:
         print(skipped.render(), file=sys.stderr)
@@ -235,15 +237,15 @@ def _run(args: argparse.Namespace) -> int:
 
     programs: list[str] = args.programs
     if programs.count("-") > 1:
-        raise _command_line_error("VF106", "standard input (-) can be read only once")
+        raise usage_error("VF106", "standard input (-) can be read only once")
     if args.format == "html" and len(programs) > 1:
-        raise _command_line_error("VF106", f"--format html writes the report of one program; {len(programs)} "
-                                           "were given (use json, sarif or text for several)")
+        raise usage_error("VF106", f"--format html writes the report of one program; {len(programs)} "
+                                   "were given (use json, sarif or text for several)")
     if args.sarif_root is not None and not os.path.isdir(args.sarif_root):
-        raise _command_line_error("VF108", f"--sarif-root {args.sarif_root}: not a directory")
+        raise usage_error("VF108", f"--sarif-root {args.sarif_root}: not a directory")
     check_output_path(args.output)
     fewer_collections()
-    machine = cli.with_dialect(load_machine(args.machine), args.dialect)
+    machine = with_dialect(load_machine(args.machine), args.dialect)
     table_note = None
     if args.tool_table is not None:
         machine, table_note = with_tool_table(machine, args.tool_table, args.tool_table_units,
@@ -261,7 +263,7 @@ def _run(args: argparse.Namespace) -> int:
                 raise
             print(exc.render(), file=sys.stderr)
             errors.append((k, program, exc))
-            codes.append(cli.EXIT_INPUT)
+            codes.append(EXIT_INPUT)
             continue
         if table_note is not None:
             from dataclasses import replace
@@ -297,16 +299,14 @@ def _color(stream: TextIO) -> bool:
     return use_color(stream)
 
 
-def register(sub: argparse._SubParsersAction) -> None:
+def configure(p: argparse.ArgumentParser) -> None:
     from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 
-    p = cli.add_command(
-        sub, "verify",
-        description="Prove that every motion of each PROGRAM stays inside the machine's allowed set, or report "
-                    "exact counterexamples (with --output the report goes to the file and each program's one-line summary "
-                    "to standard output). Exit status: 0 safe, 1 unsafe, 2 bad input, 3 unknown; with several "
-                    "programs the worst (1 before 2 before 3 before 0); 130 when Ctrl-C stopped the run, 143 when SIGTERM "
-                    "did.")
+    p.description = ("Prove that every motion of each PROGRAM stays inside the machine's allowed set, or report "
+                     "exact counterexamples (with --output the report goes to the file and each program's one-line summary "
+                     "to standard output). Exit status: 0 safe, 1 unsafe, 2 bad input, 3 unknown; with several "
+                     "programs the worst (1 before 2 before 3 before 0); 130 when Ctrl-C stopped the run, 143 when SIGTERM "
+                     "did.")
     p.add_argument("programs", nargs="+", metavar="PROGRAM",
                    help="G-code program file(s); '-' reads standard input; several files (e.g. a shell glob) "
                         "give one report each")
@@ -345,7 +345,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="iterations a loop (while, do, repeat) may run per entry before the verdict becomes "
                         f"unknown (GC302; default {DEFAULT_MAX_LOOP_ITERATIONS}); a repeat count above it (M98/G65 "
                         "L, a canned cycle's K/L, its pecks) is unknown at its block")
-    cli.add_dialect_arguments(p)
+    add_dialect_arguments(p)
     p.add_argument("--max-violations", type=int, default=20, metavar="N",
                    help="stop after N violating blocks per program (default 20); the report says when the "
                         "list was cut")
@@ -369,12 +369,3 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "working directory, e.g. the repository root in CI)")
     p.set_defaults(handler=_run)
 
-
-cli.REGISTRARS["verify"] = register
-
-
-def budget_seconds(text: str | None) -> float | None:
-    """``--budget``: positive seconds, or "none" (``VF109``; :func:`nczones.prover.options.budget_seconds`)."""
-    from ..prover.options import budget_seconds as read
-
-    return read(text)

@@ -34,36 +34,8 @@ from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import blend as blend_module
 from nczones.prover import verify_text
+from tests.machines import box_zone, machine_text
 
-MACHINE = """
-[machine]
-name = "blend contract"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "{vx}"
-Y = "{vy}"
-Z = "6000"
-[machine.acceleration]
-X = "{ax}"
-Y = "{ay}"
-Z = "500"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "table"
-kind = "box"
-min = {{ X = "-400", Y = "-400", Z = "-10" }}
-max = {{ X = "400", Y = "400", Z = "10" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = {{ X = "{x0}", Y = "{y0}", Z = "-10" }}
-max = {{ X = "{x1}", Y = "{y1}", Z = "10" }}
-"""
 PULSE = Fraction(1, 1000)
 HALF = Fraction(1, 200)  # the probe box's half-width
 
@@ -71,8 +43,10 @@ HALF = Fraction(1, 200)  # the probe box's half-width
 def _machine(kin, box):
     vx, vy, ax, ay = kin
     (x0, y0), (x1, y1) = box
-    return parse_machine(MACHINE.format(vx=vx, vy=vy, ax=ax, ay=ay, x0=_dec(x0), y0=_dec(y0), x1=_dec(x1),
-                                        y1=_dec(y1)))
+    clamp = box_zone("clamp", {"X": _dec(x0), "Y": _dec(y0), "Z": "-10"}, {"X": _dec(x1), "Y": _dec(y1), "Z": "10"},
+                     forbid=True)
+    return parse_machine(machine_text("xyz_table_400_accel", extra=clamp, set={
+        "machine.rapid.X": vx, "machine.rapid.Y": vy, "machine.acceleration.X": ax, "machine.acceleration.Y": ay}))
 
 
 def _dec(q: Fraction) -> str:

@@ -19,40 +19,22 @@ from nczones.exact import format_decimal
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import box_zone, machine_text
 
-MACHINE = """
-[machine]
-name = "blend"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-{extra}
-[machine.rapid]
-X = "6000"
-Y = "6000"
-Z = "6000"
-{accel}
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "table"
-kind = "box"
-min = {{ X = "-10", Y = "-10", Z = "-10" }}
-max = {{ X = "200", Y = "200", Z = "10" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = {{ X = "{x0}", Y = "{y0}", Z = "-10" }}
-max = {{ X = "{x1}", Y = "{y1}", Z = "10" }}
-"""
 ACCEL = '[machine.acceleration]\nX = "500"\nY = "500"\nZ = "500"'
 L_CORNER = "G1 F3000 X100 Y0\nG1 X100 Y100\nG1 X0 Y100\n"
 
 
-def _machine(x0="95", y0="1", x1="99", y1="5", accel=ACCEL, extra=""):
-    return parse_machine(MACHINE.format(x0=x0, y0=y0, x1=x1, y1=y1, accel=accel, extra=extra))
+def _text(x0="95", y0="1", x1="99", y1="5", accel=ACCEL, **machine):
+    """The test machine (tests/machines/xyz_table_200_blend.toml) with a clamp, an acceleration table (``accel``,
+    "" for none) and ``[machine]`` keys (``path_mode="G61"``)."""
+    clamp = box_zone("clamp", {"X": x0, "Y": y0, "Z": "-10"}, {"X": x1, "Y": y1, "Z": "10"}, forbid=True)
+    return machine_text("xyz_table_200_blend", set={f"machine.{k}": v for k, v in machine.items()},
+                        extra=clamp + (accel + "\n" if accel else ""))
+
+
+def _machine(x0="95", y0="1", x1="99", y1="5", accel=ACCEL, **machine):
+    return parse_machine(_text(x0, y0, x1, y1, accel, **machine))
 
 
 def _alarms(text, m, **settings):
@@ -111,8 +93,8 @@ def test_g64_p_keeps_the_blend_within_p(gap, alarmed):
 def test_auto_blends_only_where_the_machine_starts_in_g64_with_accelerations():
     assert blends(_machine(), "auto")
     assert not blends(_machine(accel=""), "auto")  # no accelerations: the exact path
-    assert not blends(_machine(extra='path_mode = "G61"'), "auto")
-    assert not blends(_machine(extra='dialect = "fanuc"'), "auto")  # Fanuc: exact path, the prover unknown
+    assert not blends(_machine(path_mode="G61"), "auto")
+    assert not blends(_machine(dialect="fanuc"), "auto")  # Fanuc: exact path, the prover unknown
     assert not blends(_machine(), "exact") and blends(_machine(), "linuxcnc")
     with pytest.raises(InvalidArgument, match="acceleration"):
         blends(_machine(accel=""), "linuxcnc")
@@ -123,9 +105,9 @@ def test_auto_blends_only_where_the_machine_starts_in_g64_with_accelerations():
 def test_a_machine_path_tolerance_blends_within_it():
     # [machine] path_tolerance 0.01: the control starts in G64 P0.01; the arc's middle (100 - 0.00707, 0.00707)
     # (derivation above) lies in the clamp X 99.99..99.999 Y 0.001..0.01
-    m = _machine(x0="99.99", y0="0.001", x1="99.999", y1="0.01", extra='path_tolerance = "0.01"')
+    m = _machine(x0="99.99", y0="0.001", x1="99.999", y1="0.01", path_tolerance="0.01")
     assert _alarms(L_CORNER, m)
-    m = _machine(x0="99.99", y0="0.001", x1="99.999", y1="0.01", extra='path_tolerance = "0.0001"')
+    m = _machine(x0="99.99", y0="0.001", x1="99.999", y1="0.01", path_tolerance="0.0001")
     assert not _alarms(L_CORNER, m)  # within 0.0001 of the path: every pulse position has X = 100 or Y = 0
 
 
@@ -152,13 +134,13 @@ def test_acceleration_table_is_validated(table, code):
 
 def test_simulate_command_takes_the_blending_option(tmp_path, capsys):
     machine = tmp_path / "m.toml"
-    machine.write_text(MACHINE.format(x0="95", y0="1", x1="99", y1="5", accel=ACCEL, extra=""))
+    machine.write_text(_text())
     prog = tmp_path / "l.ngc"
     prog.write_text(L_CORNER)
     assert main(["simulate", str(prog), "--machine", str(machine)]) != 0  # auto: blends, alarms in the clamp
     assert "clamp" in capsys.readouterr().out
     assert main(["simulate", str(prog), "--machine", str(machine), "--blending", "exact"]) == 0
     capsys.readouterr()
-    machine.write_text(MACHINE.format(x0="95", y0="1", x1="99", y1="5", accel="", extra=""))
+    machine.write_text(_text(accel=""))
     assert main(["simulate", str(prog), "--machine", str(machine), "--blending", "linuxcnc"]) == 2
     assert "acceleration" in capsys.readouterr().err

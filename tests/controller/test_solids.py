@@ -23,6 +23,7 @@ from nczones.controller.solids import MachineSolids
 from nczones.exact import format_decimal as fd
 from nczones.gcode import interpret_text
 from nczones.machine import load_machine, parse_machine
+from tests.machines import machine_text
 
 ROOT = Path(__file__).resolve().parents[2]
 MACHINE = ROOT / "specs/machines/mill_solids.toml"
@@ -122,35 +123,7 @@ def test_cylinder_fixture(x_end, alarm_x):
         assert a.part.startswith("cutter")
 
 
-TWO_TOOLS = """[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.01"
-path_mode = "G61"
-[machine.rapid]
-X = "6000"
-Y = "6000"
-Z = "6000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "300"
-[offsets]
-G54 = { X = "0", Y = "0", Z = "0" }
-[tool_lengths]
-H1 = "50"
-H2 = "150"
-[[tools]]
-number = 1
-parts = [{ name = "cutter", diameter = "6", length = "50" }]
-[[tools]]
-number = 2
-parts = [{ name = "long drill", diameter = "4", length = "150" }]
-[[fixtures]]
-name = "block"
-kind = "box"
-min = { X = "-10", Y = "-10", Z = "0" }
-max = { X = "10", Y = "10", Z = "120" }
-"""
+TWO_TOOLS = machine_text("mill_two_tools_block")
 
 
 def test_a_tool_change_at_rest_is_checked_where_the_new_tool_is_put():

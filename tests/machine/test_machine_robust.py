@@ -10,11 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from nczones.cli import _load_optional_registrars
 from nczones.errors import MachineFileError
 from nczones.machine import parse_machine
-
-_load_optional_registrars()  # the stages that add sections ([homing]) to machine files
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "specs" / "machines").glob("*.toml"))

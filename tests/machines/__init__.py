@@ -8,6 +8,9 @@ A test names a machine and, for a variant, states the delta beside it::
     FINE = machine_text("mill_xyz", set={"machine.pulse": "0.0001"})  # the text, one value changed
     TOOLS = machine_text("mill_xyz", extra='[tool_lengths]\\nH1 = "10"\\n')  # a section appended
 
+A zone of the variant is appended with ``extra=box_zone("clamp", {"X": "1", "Y": "2"}, {"X": "3", "Y": "4"},
+forbid=True)``.
+
 ``set`` keys are ``section.key`` (``machine.pulse``, ``machine.rapid.X``, ``offsets.G54``): the key's line in
 that table is replaced, or added at the end of the table when the table does not have it.  A value is
 written as TOML: a ``str`` as a string, a ``bool`` as true/false, a ``dict`` as an inline table of strings,
@@ -109,3 +112,18 @@ def load_machine(name: str, *, set: dict[str, object] | None = None, extra: str 
     from nczones.machine import parse_machine
 
     return parse_machine(machine_text(name, set=set, extra=extra), str(machine_path(name)))
+
+
+def box_zone(name: str, low: dict[str, str], high: dict[str, str], *, forbid: bool = False) -> str:
+    """The ``[[zones]]`` entry of a box zone (``low``/``high``: its ``min``/``max`` by axis), for ``extra``.
+
+    >>> print(box_zone("clamp", {"X": "1"}, {"X": "2"}, forbid=True), end="")
+    [[zones]]
+    name = "clamp"
+    kind = "box"
+    forbid = true
+    min = { X = "1" }
+    max = { X = "2" }
+    """
+    lines = ["[[zones]]", f"name = {_toml_value(name)}", 'kind = "box"'] + (["forbid = true"] if forbid else [])
+    return "\n".join(lines + [f"min = {_toml_value(low)}", f"max = {_toml_value(high)}"]) + "\n"

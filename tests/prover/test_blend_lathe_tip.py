@@ -20,47 +20,21 @@ import pytest
 
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
-
-LATHE = """
-[machine]
-name = "lathe with a tip zone"
-type = "lathe"
-dialect = "fanuc"
-units = "mm"
-axes = ["X", "Z"]
-pulse = "0.001"
-rapid_mode = "linear"
-monitor_period_ms = "4"
-path_mode = "{mode}"
-{tol}
-[machine.rapid]
-X = "12000"
-Z = "15000"
-[machine.reference]
-X = "200"
-Z = "300"
-[tool_offsets]
-1 = {{ X = "{offset}", Z = "0" }}
-[[zones]]
-name = "travel"
-kind = "box"
-min = {{ X = "-500", Z = "-500" }}
-max = {{ X = "500", Z = "500" }}
-[[zones]]
-name = "post"
-kind = "box"
-forbid = true
-point = "tip"
-min = {{ X = "100.2", Z = "-1" }}
-max = {{ X = "101", Z = "-0.2" }}
-"""
+from tests.machines import machine_text
 
 CORNER = "G00 X100. Z-50.\nG01 F100 X100. Z0\nG01 X150. Z0\n"
 FILLER = "".join(f"G01 X{60 + i % 7}. Z{-100 - i % 5}.\n" for i in range(600))  # > 512 motions, far from `post`
 
 
+def _text(mode: str, tol: str, offset: str) -> str:
+    """tests/machines/fanuc_lathe_tip_post.toml in path mode ``mode``, with ``path_tolerance = tol`` (none when
+    empty) and tool 1's X offset."""
+    keys: dict[str, object] = {"machine.path_mode": mode, "tool_offsets.1": {"X": offset, "Z": "0"}}
+    return machine_text("fanuc_lathe_tip_post", set=keys | ({"machine.path_tolerance": tol} if tol else {}))
+
+
 def _machine(mode: str, tol: str, offset: str):
-    return parse_machine(LATHE.format(mode=mode, tol=f'path_tolerance = "{tol}"' if tol else "", offset=offset))
+    return parse_machine(_text(mode, tol, offset))
 
 
 @pytest.mark.parametrize("mode, tol, expected", [("G64", "0.5", "unknown"), ("G64", "", "unknown"),
@@ -92,7 +66,7 @@ TRIANGLE = "G00 X0 Z0\nG01 F100 X0 Z10.\nG01 X10. Z10.\nM30\n"
 @pytest.mark.parametrize("post, expected", [(("6", "9", "1", "3"), "safe"), (("1", "3", "6", "9"), "unknown")])
 def test_the_run_is_proved_by_its_hull_not_its_box(post, expected):
     x0, x1, z0, z1 = post
-    text = LATHE.format(mode="G64", tol="", offset="0").replace(
+    text = _text("G64", "", "0").replace(
         'min = { X = "100.2", Z = "-1" }', f'min = {{ X = "{x0}", Z = "{z0}" }}').replace(
         'max = { X = "101", Z = "-0.2" }', f'max = {{ X = "{x1}", Z = "{z1}" }}')
     r = verify_text("T0101\n" + TRIANGLE, parse_machine(text))

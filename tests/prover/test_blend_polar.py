@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
 FACE = """G21 G98 G54
 G00 X40. Z2. C0.
@@ -28,36 +29,13 @@ G00 Z10.
 """
 
 
-def _machine(zone: str, extra: str = ""):
-    return parse_machine(f"""
-[machine]
-type = "lathe"
-dialect = "fanuc"
-axes = ["X", "Z", "C"]
-diameter_axes = ["X"]
-pulse = "0.001"
-{extra}
-[machine.rapid]
-X = "6000"
-Z = "6000"
-C = "36000"
-[machine.reference]
-X = "100"
-Z = "400"
-C = "0"
-[offsets]
-G54 = {{ X = "0", Z = "200", C = "0" }}
-[[zones]]
-name = "travel"
-kind = "box"
-min = {{ X = "0", Z = "150", C = "-100000" }}
-max = {{ X = "250", Z = "700", C = "100000" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-{zone}
-""", "turning_centre.toml")
+def _machine(zone: str, path_mode: str | None = None):
+    """The turning centre of tests/machines/fanuc_xzc_turning_centre.toml with the forbidden box ``clamp`` (``zone``:
+    its min and max lines) and, if given, a path mode."""
+    clamp = '[[zones]]\nname = "clamp"\nkind = "box"\nforbid = true\n' + zone + "\n"
+    return parse_machine(machine_text("fanuc_xzc_turning_centre", extra=clamp,
+                                      set={"machine.path_mode": path_mode} if path_mode else None),
+                         "turning_centre.toml")
 
 
 # machine X is a radius: the square's corners (+-20, +-20) in the plane are at most 20 sqrt2 = 28.3 from the
@@ -70,11 +48,11 @@ IN_HULL = 'min = { X = "25", Z = "205" }\nmax = { X = "27", Z = "209" }'
 
 def test_a_polar_run_in_cutting_mode_is_proved_by_its_hull():
     assert verify_text(FACE, _machine(FAR)).verdict.label == "safe"
-    assert verify_text(FACE, _machine(FAR, 'path_mode = "G61"')).verdict.label == "safe"
+    assert verify_text(FACE, _machine(FAR, "G61")).verdict.label == "safe"
 
 
 def test_a_zone_in_the_hull_of_a_polar_run_is_unknown_in_cutting_mode_only():
     got = verify_text(FACE, _machine(IN_HULL))
     assert got.verdict.label == "unknown"
     assert any(r.code == "VF208" for r in got.reasons)
-    assert verify_text(FACE, _machine(IN_HULL, 'path_mode = "G61"')).verdict.label == "safe"
+    assert verify_text(FACE, _machine(IN_HULL, "G61")).verdict.label == "safe"

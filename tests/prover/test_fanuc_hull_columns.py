@@ -19,34 +19,14 @@ from hypothesis import strategies as st
 
 from nczones.machine import parse_machine
 from nczones.prover import blend, verify_text
+from tests.machines import box_zone, machine_text
 
-MACHINE = """
-[machine]
-name = "fanuc hull"
-dialect = "fanuc"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-tool_axis = "Z"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "table"
-kind = "box"
-min = {{ X = "-60", Y = "-60", Z = "-50" }}
-max = {{ X = "60", Y = "60", Z = "50" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = {{ X = "{x0}", Y = "{y0}" }}
-max = {{ X = "{x1}", Y = "{y1}" }}
-"""
+
+def _clamp_text(x0, y0, x1, y1) -> str:
+    """The Fanuc mill of tests/machines/fanuc_xyz_table_60.toml with the forbidden box ``clamp`` (X and Y only)."""
+    clamp = box_zone("clamp", {"X": str(x0), "Y": str(y0)}, {"X": str(x1), "Y": str(y1)}, forbid=True)
+    return machine_text("fanuc_xyz_table_60", extra=clamp)
+
 
 N_MOTIONS = 560  # more than 512 motions: the vectorized tier's column chunks
 
@@ -154,7 +134,7 @@ QUICK = settings(max_examples=4, deadline=None, phases=[Phase.explicit, Phase.re
 def test_column_hull_agrees_with_the_one_motion_path(prog, clamp, monkeypatch):
     """End to end (``verify``): one run per program, the column chunks' runs."""
     x0, y0, size = clamp
-    m = parse_machine(MACHINE.format(x0=x0, y0=y0, x1=x0 + size, y1=y0 + size))
+    m = parse_machine(_clamp_text(x0, y0, x0 + size, y0 + size))
     _agree(prog, m, monkeypatch)
 
 
@@ -164,7 +144,7 @@ def test_programs_with_stops_agree_end_to_end(prog, clamp, monkeypatch):
     """G09, G61/G64 and dwells: the Fanuc lane declines the column chunks for them today; the verdicts agree
     whichever path they take."""
     x0, y0, size = clamp
-    m = parse_machine(MACHINE.format(x0=x0, y0=y0, x1=x0 + size, y1=y0 + size))
+    m = parse_machine(_clamp_text(x0, y0, x0 + size, y0 + size))
     _agree(prog, m, monkeypatch, need_columns=False)
 
 
@@ -190,7 +170,7 @@ def test_runs_between_stops_agree_on_column_chunks(prog, clamp, stops, monkeypat
     from nczones.motion import MotionChunk, PathMode
 
     x0, y0, size = clamp
-    zones = MACHINE.format(x0=x0, y0=y0, x1=x0 + size, y1=y0 + size)
+    zones = _clamp_text(x0, y0, x0 + size, y0 + size)
     chunks = list(interpret_text(prog, parse_machine(zones.replace('dialect = "fanuc"', ""))))
     assert any(isinstance(c, MotionChunk) and c.scale is not None and len(c) > 100 for c in chunks)
     exact_stop = set()
@@ -215,7 +195,7 @@ CIRCLES = "\n".join(["%", "O1", "G00 G17 G21 G90 X-10. Y0.", "G01 F500."]
 
 
 def _clamp_machine(x0: str, y0: str, x1: str, y1: str):
-    return parse_machine(MACHINE.format(x0=x0, y0=y0, x1=x1, y1=y1))
+    return parse_machine(_clamp_text(x0, y0, x1, y1))
 
 
 def test_a_run_of_r_arcs_whose_bulge_meets_a_clamp(monkeypatch):

@@ -17,6 +17,7 @@ from nczones.gcode import segments_text
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify, verify_text
 from nczones.solids import machine_solids
+from tests.machines import machine_text
 from tests.oracles.lathe_solids import contact_inside, part_meets, sampled_hit, tip_of, tool_of
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -131,35 +132,7 @@ def test_long_program(z, expected):
         assert r.violations[0].zones == ("bar holder",) and r.violations[0].line == 3 + 2 + 600 + 2  # head, T and G00, strokes, G00, G01
 
 
-LINUXCNC = """
-[machine]
-name = "LinuxCNC lathe with a boring bar"
-type = "lathe"
-axes = ["X", "Z"]
-diameter_axes = ["X"]
-rapid_mode = "linear"
-path_mode = "G61"
-[machine.rapid]
-X = "10000"
-Z = "10000"
-[machine.reference]
-X = "300"
-Z = "700"
-[offsets]
-G54 = { X = "0", Z = "130" }
-[tool_lengths]
-H1 = "150"
-[[tools]]
-number = 1
-parts = [{ name = "bar holder", x = ["-30", "45"], z = ["35", "95"] }]
-[[fixtures]]
-name = "jaws"
-kind = "chuck"
-radius = "70"
-inner_radius = "30"
-min_z = "60"
-max_z = "90"
-"""
+LINUXCNC = machine_text("linuxcnc_lathe_boring_bar")
 
 
 @pytest.mark.parametrize("z, expected", [("-80", "unsafe"), ("-35", "safe")])
@@ -175,15 +148,7 @@ def test_linuxcnc_lathe_with_parameters(z, expected):
         assert r.violations[0].zones == ("bar holder",) and r.violations[0].line == 6
 
 
-LATHE_HEAD = """[machine]
-axes = ["X", "Z"]
-[machine.rapid]
-X = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Z = "400"
-"""
+LATHE_HEAD = machine_text("xz_rapid_1000")  # 8 lines: the tails below start at line 9
 
 
 @pytest.mark.parametrize("tail, code, line, column", [

@@ -17,37 +17,13 @@ import pytest
 from nczones.machine import parse_machine
 from nczones.prover import blend as blend_module
 from nczones.prover import verify_text
+from tests.machines import box_zone, machine_text
 from tests.oracles.blend import blend_arc, naive_cam
-
-MACHINE = """
-[machine]
-name = "naive cam"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "table"
-kind = "box"
-min = {{ X = "-10", Y = "-10", Z = "-50" }}
-max = {{ X = "200", Y = "200", Z = "50" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = {{ X = "{x0}", Y = "{y0}" }}
-max = {{ X = "{x1}", Y = "{y1}" }}
-"""
 
 
 def _machine(x0, y0, x1, y1):
-    return parse_machine(MACHINE.format(x0=x0, y0=y0, x1=x1, y1=y1))
+    clamp = box_zone("clamp", {"X": x0, "Y": y0}, {"X": x1, "Y": y1}, forbid=True)
+    return parse_machine(machine_text("xyz_table_200_naive_cam", extra=clamp))
 
 
 def _zigzag(n: int, wiggle: str = "0.004"):

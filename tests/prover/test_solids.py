@@ -20,6 +20,7 @@ from nczones.gcode import segments_text
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import verify, verify_text
 from nczones.solids import FixtureBox, FixturePrism, machine_solids
+from tests.machines import machine_text
 from tests.oracles.solids import inside_part_and_fixture, sampled_hit
 
 F = Fraction
@@ -211,17 +212,7 @@ def test_cylinder_fixture_and_spindle_nose():
     assert r.verdict.label == "safe", (r.reasons, r.violations)
 
 
-MACHINE_HEAD = """[machine]
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "400"
-"""
+MACHINE_HEAD = machine_text("xyz_rapid_1000")  # 10 lines: the tails below start at line 11
 
 
 @pytest.mark.parametrize("tail, code, line", [

@@ -15,7 +15,7 @@ from nczones.gcode import interpret_text as interpret
 from nczones.machine import load_machine, parse_machine
 from nczones.prover import parse_param
 from nczones.prover import verify_text as verify
-from tests.machines import machine_text
+from tests.machines import box_zone, machine_text
 from tests.oracles.concrete import machine_at
 
 F = Fraction
@@ -157,24 +157,6 @@ def test_a_flat_forbid_zone_forbids_nothing_with_any_margin(margin, engine):
     assert verify("G90 G0 X130 Y60\nM30\n", FLAT, margin=margin, engine=engine).verdict.label == "unsafe"
 
 
-SPIRAL_MACHINE = """
-[machine]
-axes = ["X", "Y"]
-# exact path: the rapid's corner with the spiral is proved on boxes that reach the spiral's larger radius
-# (specs/path-modes.md); this test is about the spiral itself
-path_mode = "G61"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-100", Y = "-100" }
-max = { X = "X_MAX", Y = "100" }
-"""
 
 
 def test_a_spiral_that_grazes_a_face_is_decided_without_an_internal_error():
@@ -183,7 +165,10 @@ def test_a_spiral_that_grazes_a_face_is_decided_without_an_internal_error():
     enclosures are now rounded outward to a fixed resolution, and a piece the budget cannot split is
     scanned for a certified witness."""
     def machine(x_max: str):
-        return parse_machine(SPIRAL_MACHINE.replace("X_MAX", x_max))
+        # exact path (G61): the rapid's corner with the spiral is proved on boxes that reach the spiral's larger
+        # radius (specs/path-modes.md); this test is about the spiral itself
+        travel = box_zone("travel", {"X": "-100", "Y": "-100"}, {"X": x_max, "Y": "100"})
+        return parse_machine(machine_text("xy_g61_rapid_10000", extra=travel))
 
     m = machine("10.001")
     program = "G0 X0 Y-10\nG3 X0 Y10.002 I0 J10 F100\nM30\n"

@@ -33,34 +33,12 @@ ROOT = Path(__file__).resolve().parents[3]
 EX = ROOT / "specs" / "examples"
 
 
-def machine(zones: str = "", pulse: str = "0.001", extra: str = "", offsets: str = 'G54 = { X = "0", Z = "200", C = "0" }'):
-    """A Fanuc turning centre: X diameters (machine X a radius), Z, C degrees; work zero on the face."""
-    return parse_machine(f"""
-[machine]
-type = "lathe"
-dialect = "fanuc"
-axes = ["X", "Z", "C"]
-diameter_axes = ["X"]
-pulse = "{pulse}"
-path_mode = "G61"  # exact stop mode: these tests are about polar interpolation, not corner rounding
-{extra}
-[machine.rapid]
-X = "6000"
-Z = "6000"
-C = "36000"
-[machine.reference]
-X = "100"
-Z = "400"
-C = "0"
-[offsets]
-{offsets}
-[[zones]]
-name = "travel"
-kind = "box"
-min = {{ X = "0", Z = "150", C = "-100000" }}
-max = {{ X = "250", Z = "700", C = "100000" }}
-{zones}
-""", "turning_centre.toml")
+def machine(zones: str = "", pulse: str = "0.001", extra: str = ""):
+    """A Fanuc turning centre (tests/machines/fanuc_xzc_turning_centre.toml): X diameters (machine X a radius), Z,
+    C degrees; work zero on the face; exact stop mode (G61): these tests are about polar interpolation, not
+    corner rounding.  ``zones`` and ``extra`` (tables such as ``[tool_offsets]``) are appended."""
+    return parse_machine(machine_text("fanuc_xzc_turning_centre", set={"machine.pulse": pulse, "machine.path_mode": "G61"},
+                                      extra=f"{extra}\n{zones}\n"), "turning_centre.toml")
 
 
 def clamp(xlo, xhi, clo, chi, name="clamp"):
