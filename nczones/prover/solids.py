@@ -917,7 +917,7 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     from .result import Verdict
 
     lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
-    checker: Any = (LatheSolidsChecker(machine, solids) if isinstance(solids, LatheSolids)
+    checker: Any = (LatheSolidsChecker(machine, solids, options.ranges(machine)) if isinstance(solids, LatheSolids)
                     else SolidsChecker(machine, solids, options.ranges(machine), screen=None))
     meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 
@@ -937,9 +937,6 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     violations = result.violations + tuple(checker.violations[:max(0, options.max_violations
                                                                   - len(result.violations))])
     reasons = result.reasons + tuple(checker.reasons)
-    if lathe and options.ranges(machine) and solids.fixtures:
-        reasons += (Reason("parameter ranges do not move a lathe's tool solids yet: they were checked at the "
-                           "nominal offsets and tool lengths only", None, None, "VF212"),)
     if solids.unmodelled:
         reasons += (Reason(f"forbidden zone{'s' if len(solids.unmodelled) > 1 else ''} "
                            f"{', '.join(f'`{n}`' for n in solids.unmodelled)} of a kind the tool solids are not "

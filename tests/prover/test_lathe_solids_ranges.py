@@ -1,0 +1,251 @@
+"""A lathe's tool solids with parameter ranges and with tool-break recovery (issue 39, the lathe case): ranges
+move the turret tool against the chuck (a work offset or homing range the path, a tool-length range nothing:
+the tip is the controlled point minus the length), range verdicts against concrete values (metamorphic,
+with the independent oracle of tests/oracles/lathe_solids.py), and recovery legs proved with the turret
+tool's solids.  Before this, both were ``unknown`` (VF212)."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.gcode import segments_text
+from nczones.machine import load_machine, parse_machine
+from nczones.prover import verify, verify_text
+from nczones.solids import machine_solids
+from tests.oracles.concrete import machine_at
+from tests.oracles.lathe_solids import part_meets, sampled_hit, tip_of, tool_of
+from tests.prover.test_lathe_solids import LINUXCNC, ORACLE, _long, programs
+
+F = Fraction
+ROOT = Path(__file__).resolve().parents[2]
+MACHINE = ROOT / "specs/machines/lathe_solids.toml"
+CLEARS = str(ROOT / "specs/examples/programs/boring_bar_clears_chuck.nc")
+HOLDER = "bar holder (X -30..45, Z 35..95 from the tip, 40 thick)"
+
+
+def _clearance(r, part=HOLDER, fixture="jaws"):
+    return {(p, f): c for p, f, c, _ in r.extra["clearance"]}.get((part, fixture))
+
+
+def _codes(r):
+    return {x.code for x in r.reasons}
+
+
+# boring_bar_clears_chuck.nc on specs/machines/lathe_solids.toml (G54 Z130, tool offset 1 Z150): the deepest
+# tip is at Z 130 - 35 = 95 in the tip's frame, the holder's bottom (35 above the tip) at 130, 40 above the
+# jaws' face Z 90, the holder's radial section overlapping the jaws' radii (the bundled example's
+# derivation, tests/prover/test_lathe_solids.py).  A G54.Z deviation d (or a homing error d on Z) moves the
+# path, and the holder, by d on Z: the gap is 40 + d.
+
+@pytest.mark.parametrize("param, verdict, clearance", [
+    ("G54.Z=-30..10", "safe", F(10)),     # 40 - 30
+    ("home.Z=-30..0", "safe", F(10)),     # a homing error moves the machine, not the chuck
+    ("G54.Z=-40..0", "safe", F(0)),       # touching the jaws' face at d = -40 is allowed
+    ("G54.X=-10..10", "safe", F(40)),     # X moves the holder along the face: the Z gap stays
+    ("H1=100..200", "safe", F(40)),       # no H register on a Fanuc lathe's T offsets: nothing moves
+    ("G54.Z=-45..0", "unknown", None),    # d < -40 enters; the nominal 0 clears: no witness value
+    ("home.Z=-50..0", "unknown", None),
+    ("G54.Z=-50..-40", "unsafe", None),   # the case is built at d = -45 (the middle): the holder 5 deep
+])
+def test_ranges_move_a_lathes_tool_solids(param, verdict, clearance):
+    lathe = load_machine(MACHINE)
+    if param.startswith("H1"):  # give the register a nominal value the range holds
+        lathe = parse_machine(MACHINE.read_text() + '\n[tool_lengths]\nH1 = "150"\n', "lathe.toml")
+    r = verify(CLEARS, lathe, params=[param])
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    assert "VF212" not in _codes(r)
+    if verdict == "safe":
+        assert _clearance(r) == clearance
+    if verdict == "unknown":
+        assert _codes(r) == {"VF218"} and any("bar holder" in x.message for x in r.reasons)
+    if verdict == "unsafe":
+        v = r.violations[0]
+        assert (v.kind, v.zone, v.zones, v.line) == ("solid", "jaws", ("bar holder",), 7)
+        assert dict(v.params) == {"G54.Z": -45}
+        # the witness replays at its own value: the tip down to Z 85 + 0 ... the holder's bottom at 85 < 90
+        at = verify(CLEARS, machine_at(lathe, {"G54.Z": F(-45)}))
+        assert at.verdict.label == "unsafe" and at.violations[0].line == 7
+        assert at.violations[0].zones == ("bar holder",)
+
+
+def test_a_tool_length_range_does_not_move_the_tip_on_linuxcnc():
+    """LinuxCNC: G43 H1 puts the controlled point at the tip plus H1, so an H1 range moves the controlled path
+    and the tip's offset alike: the parts stay where the program puts the tip.  The holder stops 35 above the
+    tip at Z 130 - 35 = 95 (G54 Z130): 130 against the jaws' face 90, 40 clear whatever H1 is.  Only the first
+    rapid starts from the machine's start position, which H1 does not move: there the tip moves by -d, and the
+    proof encloses the displacement along the motion by its hull, at the rapid's end (tip Z 5 + 130 = 135,
+    the holder's bottom 170) 170 - |d| - 90: 70 for H1 = 140..160 (the bore's 40 is the least), 30 for
+    H1 = 100..200 (a lower bound).  A G54.Z range moves the tip (-30..10: 10 clear), also in a program with
+    '#' (the full interpreter: with ranges the double pass is not taken)."""
+    m = parse_machine(LINUXCNC, "m.toml")
+    text = "#1 = -35\nG18 G21 G90 G54\nT1 M6\nG43 H1\nG0 X30 Z5\nG1 Z#1 F100\nG0 Z5\nM30\n"
+    for param, clearance in (("H1=140..160", 40), ("H1=100..200", 30)):
+        r = verify_text(text, m, params=[param])
+        assert r.verdict.label == "safe", (r.reasons, r.violations)
+        assert _clearance(r, "bar holder (X -30..45, Z 35..95 from the tip)") == clearance
+    r = verify_text(text, m, params=["G54.Z=-30..10"])
+    assert r.verdict.label == "safe", (r.reasons, r.violations)
+    assert _clearance(r, "bar holder (X -30..45, Z 35..95 from the tip)") == 10
+    r = verify_text(text, m, params=["G54.Z=-50..0"])
+    assert r.verdict.label == "unknown" and _codes(r) == {"VF218"}
+
+
+@pytest.mark.parametrize("param, verdict", [("G54.Z=-30..10", "safe"), ("G54.Z=-50..-40", "unsafe")])
+def test_ranges_on_a_long_lathe_program(param, verdict):
+    # more than 512 facing strokes far from the chuck, then the bore to Z-35 (40 clear nominal, as above)
+    r = verify_text(_long("-35."), load_machine(MACHINE), params=[param])
+    assert r.verdict.label == verdict, (r.reasons, r.violations[:1])
+    if verdict == "unsafe":
+        v = r.violations[0]
+        assert v.zones == ("bar holder",) and v.line == 3 + 2 + 600 + 2 and dict(v.params) == {"G54.Z": -45}
+
+
+# --------------------------------------------------------------------------- ranges against concrete values
+
+half = st.integers(-16, 16).map(lambda v: Fraction(v, 2))
+
+
+@st.composite
+def ranges(draw):
+    name = draw(st.sampled_from(["G54.X", "G54.Z"]))
+    a, b = sorted((draw(half), draw(half)))
+    return name, a, b
+
+
+def _fmt(v: Fraction) -> str:
+    return str(v.numerator) if v.denominator == 1 else f"{float(v)}"
+
+
+def _oracle_hit(text, machine):
+    """The oracle's first part-in-fixture sample of ``text`` on ``machine`` (None: none)."""
+    solids = machine_solids(machine)
+    for seg in segments_text(text, machine, fast=False):
+        tool = tool_of(seg)
+        parts = solids.tools.get(tool, ()) if tool is not None else ()
+        hit = sampled_hit(seg, parts, solids.fixtures, 32) if parts else None
+        if hit is not None:
+            return hit
+    return None
+
+
+def _range_against_values(text, rng):
+    """Over the range and at its ends and middle: ``safe`` over the range holds at every value (the prover's
+    verdict there and the oracle's samples), a concrete ``unsafe`` or oracle hit makes the range not ``safe``,
+    and a range witness replays at its own value."""
+    name, lo, hi = rng
+    machine = parse_machine(ORACLE, "oracle.toml")
+    r = verify_text(text, machine, params=[f"{name}={_fmt(lo)}..{_fmt(hi)}"])
+    assert "VF212" not in _codes(r)
+    for value in sorted({lo, hi, (lo + hi) / 2}):
+        at = machine_at(machine, {name: value})
+        concrete = verify_text(text, at)
+        hit = _oracle_hit(text, at)
+        if r.verdict.label == "safe":
+            assert concrete.verdict.label == "safe", f"safe over {name}={lo}..{hi}, {concrete.verdict} at {value}"
+            assert hit is None, f"safe over {name}={lo}..{hi}, the oracle finds {hit[0].name} in {hit[1].name}"
+        if concrete.verdict.label == "unsafe" or hit is not None:
+            assert r.verdict.label != "safe"
+    for v in r.violations:
+        if v.kind == "solid":
+            again = verify_text(text, machine_at(machine, dict(v.params)))
+            assert again.verdict.label == "unsafe" and any(w.line == v.line for w in again.violations), v.note
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs(), ranges())
+def test_range_verdict_against_concrete_values(text, rng):
+    _range_against_values(text, rng)
+
+
+@pytest.mark.long
+@settings(max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(programs(), ranges())
+def test_range_verdict_against_concrete_values_long(text, rng):
+    _range_against_values(text, rng)
+
+
+# --------------------------------------------------------------------------- tool-break recovery
+
+RECOVERY = LINUXCNC.replace('{ name = "bar holder", x = ["-30", "45"], z = ["35", "95"] }',
+                            '{ name = "bar", x = ["-8", "8"], z = ["0", "120"] }')
+BORE = "G18 G21 G90 G54\nT1 M6\nG43 H1\nG0 X40 Z5\nG1 Z-60 F100\nG0 Z5\nM30\n"
+
+
+def _tool_change(clearance: str, x: str = "200") -> str:
+    return (f'\n[tool_change]\nposition = {{ X = "{x}", Z = "400" }}\nclearance = "{clearance}"\n'
+            'approach_distance = "5"\napproach_feed = "200"\nvariant = "breakpoint"\n')
+
+
+def test_a_recovery_leg_drives_the_bar_into_the_jaws():
+    """A Ø16 bar (X -8..8, Z 0..120 from the tip) bores at radius 20 (X40 in G7) down to program Z-60: the tip
+    at Z 130 - 60 = 70, the bar at radii 12..28, inside the jaws' bore (radius 30): the cut itself is clear.
+    After a break at the bottom (machine X20 Z220: H1 = 150) the control retracts to clearance 220 (no move:
+    already there) and rapids straight to the tool change at X200 Z400, a slope of 1: at machine X31 the tip is
+    at X31 Z 231 - 150 = 81, the bar at radii 23..39 over Z 81..201, inside the jaws (radii 30..70, Z 60..90).
+    With clearance 250 the retract lifts the tip to Z 100, above the jaws' face 90, before any X move: every
+    leg keeps the bar above the jaws or inside their bore: proved."""
+    m = parse_machine(RECOVERY + _tool_change("220"), "recovery.toml")
+    assert verify_text(BORE, m).verdict.label == "safe"  # the program itself clears
+    r = verify_text(BORE, m, recovery="breakpoint")
+    assert r.verdict.label == "unsafe", (r.reasons, r.violations)
+    v = r.violations[0]
+    assert (v.kind, v.leg, v.break_line, v.zone, v.zones) == ("recovery", "to tool change", 5, "jaws", ("bar",))
+    assert "bar (X -8..8, Z 0..120 from the tip) enters `jaws`" in v.note
+    # the witness with the oracle's own test in space: the bar at the tip (path point less H1) meets the jaws
+    x, z = (dict(v.path_point)[a] for a in "XZ")
+    bx, bz = dict(v.break_point)["X"], dict(v.break_point)["Z"]
+    assert z - bz == x - bx and bx == 20 and 220 <= bz <= 225  # on the leg (slope 1) from the bore's bottom
+    bar = machine_solids(m).tools[1][0]
+    jaws = machine_solids(m).fixtures[0]
+    assert part_meets(bar, jaws, x, z - 150)
+    fixed = parse_machine(RECOVERY + _tool_change("250"), "recovery.toml")
+    r = verify_text(BORE, fixed, recovery="breakpoint")
+    assert r.verdict.label == "safe", (r.reasons, r.violations)
+    assert not _codes(r)
+
+
+def test_recovery_on_a_long_program_and_with_parameters():
+    # the '#' program (the full interpreter) and more than 512 motions before the bore take the same proof
+    m = parse_machine(RECOVERY + _tool_change("220"), "recovery.toml")
+    text = "#1 = -60\n" + BORE.replace("Z-60", "Z#1")
+    r = verify_text(text, m, recovery="breakpoint")
+    assert r.verdict.label == "unsafe" and r.violations[0].zones == ("bar",)
+    strokes = "".join(f"G1 X{120 + (i % 2) * 20} Z{5 + i % 7} F500\n" for i in range(600))
+    long = BORE.replace("G0 X40 Z5\n", "G0 X120 Z10\n" + strokes + "G0 X40 Z5\n")
+    r = verify_text(long, m, recovery="breakpoint")
+    assert r.verdict.label == "unsafe", (r.reasons, r.violations[:1])
+    assert r.violations[0].zones == ("bar",) and r.violations[0].break_line == 5 + 600 + 1
+
+
+FANUC = MACHINE.read_text().replace('1 = { X = "100", Z = "150", R = "0.4", tip = 2 }', '1 = { X = "100", Z = "150" }')
+FANUC = (FANUC.split("[[tools]]", 1)[0] + '[[tools]]\nnumber = 2\nparts = [{ name = "bar", x = ["-8", "8"], '
+         'z = ["0", "120"] }]\n\n' + "[[fixtures]]" + FANUC.split("[[fixtures]]", 1)[1])
+
+
+@pytest.mark.parametrize("clearance, verdict", [("220", "unsafe"), ("250", "safe")])
+def test_recovery_legs_carry_the_turret_tool(clearance, verdict):
+    """Fanuc: T0201 is tool 2 (the bar) with offset 1 (X100 Z150); tool 1 has no solids.  The legs after a
+    break run with tool 2's parts (the bore of the test above, moved by the X offset 100): unsafe with the low
+    clearance, safe with the high one.  Legs that took the offset number for the tool would check nothing."""
+    m = parse_machine(FANUC + _tool_change(clearance, "300"), "fanuc.toml")
+    text = "%\nO1\nG21 G18 G99 G40\nT0201\nG00 X40. Z5.\nG01 Z-60. F0.1\nG00 Z5.\nM30\n%\n"
+    assert verify_text(text, m).verdict.label == "safe"
+    r = verify_text(text, m, recovery="breakpoint")
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    if verdict == "unsafe":
+        v = r.violations[0]
+        assert (v.leg, v.zone, v.zones, v.break_line) == ("to tool change", "jaws", ("bar",), 6)
+        x, z = (dict(v.path_point)[a] for a in "XZ")
+        assert part_meets(machine_solids(m).tools[2][0], machine_solids(m).fixtures[1], x - 100, z - 150)
+
+
+def test_tip_of_is_the_oracles():
+    # the oracle's tip helper agrees with the machine's offsets used above (X100 Z150 on T0201)
+    m = parse_machine(FANUC + _tool_change("250", "300"), "fanuc.toml")
+    seg = next(s for s in segments_text("%\nO1\nG21 G18\nT0201\nG00 X40. Z5.\nM30\n%\n", m, fast=False))
+    assert tool_of(seg) == 2 and tip_of(seg, seg.end) == (F(20), F(135))
