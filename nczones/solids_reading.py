@@ -89,13 +89,14 @@ def read_fixture_entries(rd: Any, raw: list, kinds: Mapping[str, tuple[str, ...]
     return out
 
 
-def fixture_number(rd: Any, t: Mapping, key: str, name: str, header: int | None, **checks: bool
-                   ) -> Fraction | None:
+def fixture_number(rd: Any, t: Mapping, key: str, name: str, header: int | None, *, positive: bool = False,
+                   nonnegative: bool = False) -> Fraction | None:
     """A fixture's number ``key`` (``radius``, ``min_z`` ...), None when left out or not a number (reported);
-    ``checks`` as :func:`nczones.machine.read_number` takes them (``positive``, ``nonnegative``)."""
+    ``positive``, ``nonnegative`` as :func:`nczones.machine.read_number` checks them."""
     if key not in t:
         return None
-    return read_number(rd, t[key], f"[[fixtures]] {name!r} {key}", rd.loc.key(key, header), **checks)
+    return read_number(rd, t[key], f"[[fixtures]] {name!r} {key}", rd.loc.key(key, header), positive=positive,
+                       nonnegative=nonnegative)
 
 
 def empty_heights(rd: Any, code: str, name: str, header: int | None, z0: Fraction | None, z1: Fraction | None,

@@ -28,7 +28,7 @@ from typing import Any
 from ..lathe_solids import LatheSolids
 from ..machine import Machine, RapidMode
 from ..motion import Segment, SegmentKind, TurretTool
-from ..plans.recovery import RecoveryVariant, plan_legs, recovery_legs
+from ..plans.recovery import RecoveryLeg, RecoveryVariant, plan_legs, recovery_legs
 from ..solids import Solids
 from .geometry import arc_geom
 from .lathe_solids import LatheSolidsChecker
@@ -161,7 +161,7 @@ def _checker(machine: Machine, solids: Solids | LatheSolids, shift: Any) -> Any:
     return SolidsChecker(machine, solids, shift=shift, screen=False)
 
 
-def _leg_segment(leg: Any, axes: tuple[str, ...], seg: Segment) -> Segment:
+def _leg_segment(leg: RecoveryLeg[Fraction], axes: tuple[str, ...], seg: Segment) -> Segment:
     """A recovery leg from a break in ``seg`` as a motion: in the cut's frame, with its turret tool (a lathe's
     T word: the replacement is the same [[tools]] entry, :func:`nczones.plans.recovery.tip_offsets` keeps the
     tip offset)."""
