@@ -181,6 +181,29 @@ def _tool_change(clearance: str, x: str = "200") -> str:
             'approach_distance = "5"\napproach_feed = "200"\nvariant = "breakpoint"\n')
 
 
+def _oracle_recovery_hit(text, machine, n: int = 16):
+    """The oracle over break points ``s = k / n`` of every cutting line: the recovery legs from there (the shared
+    plan, nczones.plans.recovery.recovery_legs, as the controller moves them, each leg with the cut's tool and
+    tip offset) sampled against the fixtures in space.  None: no hit."""
+    from nczones.plans.recovery import recovery_legs, replacement_length, tool_change_config
+
+    cfg = tool_change_config(machine, "breakpoint")
+    solids = machine_solids(machine)
+    for seg in segments_text(text, machine, fast=False):
+        parts = solids.tools.get(tool_of(seg), ())
+        if seg.kind.name != "LINE" or not parts:
+            continue
+        for k in range(n + 1):
+            P = tuple(a + F(k, n) * (b - a) for a, b in zip(seg.start, seg.end))
+            L2 = replacement_length(cfg, machine, seg.tool_length)
+            for leg in recovery_legs(cfg, machine, P, P, seg.tool_length, L2):
+                moved = leg.segment(machine.axis_names, seg)
+                hit = sampled_hit(moved, parts, solids.fixtures, 64)
+                if hit is not None:
+                    return seg.line, F(k, n), leg.name, hit
+    return None
+
+
 def test_a_recovery_leg_drives_the_bar_into_the_jaws():
     """A Ø16 bar (X -8..8, Z 0..120 from the tip) bores at radius 20 (X40 in G7) down to program Z-60: the tip
     at Z 130 - 60 = 70, the bar at radii 12..28, inside the jaws' bore (radius 30): the cut itself is clear.
@@ -203,10 +226,13 @@ def test_a_recovery_leg_drives_the_bar_into_the_jaws():
     bar = machine_solids(m).tools[1][0]
     jaws = machine_solids(m).fixtures[0]
     assert part_meets(bar, jaws, x, z - 150)
+    hit = _oracle_recovery_hit(BORE, m)
+    assert hit is not None and (hit[0], hit[2], hit[3][0]) == (5, "to tool change", bar)  # from the bore's deep end
     fixed = parse_machine(RECOVERY + _tool_change("250"), "recovery.toml")
     r = verify_text(BORE, fixed, recovery="breakpoint")
     assert r.verdict.label == "safe", (r.reasons, r.violations)
     assert not _codes(r)
+    assert _oracle_recovery_hit(BORE, fixed) is None
 
 
 def test_recovery_on_a_long_program_and_with_parameters():
