@@ -50,6 +50,7 @@ from .geometry import (
     sqrt_bounds,
 )
 from .result import Reason, Violation
+from .solids_ranges import UNTRACKED, axis_displacement, untracked
 
 __all__ = ["LatheSolidsChecker", "ARC_PIECES", "CLEARANCE_MEANING", "segment_tool", "tip_shift"]
 
@@ -248,27 +249,11 @@ class LatheSolidsChecker:
         return got
 
     def _move(self, seg: Segment) -> Move | str:
-        if self._dev and any(not r.name.startswith("home.") for r in self.ranges) and not seg.deps_start:
-            return ("the motion does not say which parameters its coordinates depend on: the tool solids cannot "
-                    "be moved with the parameter ranges")
+        if self._dev and untracked(self.ranges, seg):
+            return UNTRACKED
         out = []
         for n, (a, i) in enumerate((("X", self.ix), ("Z", self.iz))):
-            lo = hi = F0
-            for deps in (seg.deps_start, seg.deps_end):
-                coef: dict[str, int] = {}
-                for dep in (deps[i] if deps else ()):  # named as the prover's core names them
-                    name = dep if dep.startswith("H") else f"{dep}.{a}"
-                    coef[name] = coef.get(name, 0) + 1
-                if a == self.tool_axis:
-                    for dep in seg.deps_tool:
-                        name = dep if dep.startswith("H") else f"{dep}.{a}"
-                        coef[name] = coef.get(name, 0) - 1
-                e_lo, e_hi = self._dev.get(f"home.{a}", (F0, F0))
-                for name, c in coef.items():
-                    r = self._dev.get(name)
-                    if r is not None and c:
-                        e_lo, e_hi = e_lo + min(c * r[0], c * r[1]), e_hi + max(c * r[0], c * r[1])
-                lo, hi = min(lo, e_lo), max(hi, e_hi)
+            lo, hi = axis_displacement(seg, self._dev, a, i, less_tool=a == self.tool_axis)
             if self.shift is not None:
                 lo, hi = lo + self.shift[n][0], hi + self.shift[n][1]
             out.append((lo, hi))
