@@ -897,8 +897,9 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     from .result import Verdict
 
     lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
-    checker: Any = (LatheSolidsChecker(machine, solids, options.ranges(machine)) if isinstance(solids, LatheSolids)
-                    else SolidsChecker(machine, solids, options.ranges(machine), screen=None))
+    ranges = options.ranges(machine)
+    checker: Any = (LatheSolidsChecker(machine, solids, ranges) if isinstance(solids, LatheSolids)
+                    else SolidsChecker(machine, solids, ranges, screen=None))
     meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 
     def tee() -> Iterator[Any]:

@@ -27,7 +27,7 @@ from typing import Any
 
 from ..lathe_solids import LatheSolids
 from ..machine import Machine, RapidMode
-from ..motion import Segment, SegmentKind, TurretTool
+from ..motion import Segment, SegmentKind
 from ..plans.recovery import RecoveryLeg, RecoveryVariant, plan_legs, recovery_legs
 from ..solids import Solids
 from .geometry import arc_geom
@@ -120,8 +120,9 @@ def _line_box(seg: Segment, s0: Fraction, s1: Fraction) -> Box:
     return tuple((min(x, y), max(x, y)) for x, y in zip(_at(seg, s0), _at(seg, s1)))
 
 
-def _piece(seg: Segment, machine: Machine, solids: Solids | LatheSolids, cfg: Any, L2: Fraction, start: tuple[Fraction, ...],
-           box: Box, P0: tuple[Fraction, ...], s0: Fraction) -> tuple[Violation | None, list[Reason] | None]:
+def _piece(seg: Segment, machine: Machine, solids: Solids | LatheSolids, cfg: Any, L2: Fraction,
+           start: tuple[Fraction, ...], box: Box, P0: tuple[Fraction, ...], s0: Fraction
+           ) -> tuple[Violation | None, list[Reason] | None]:
     """The legs from every break point in ``box`` (``P0`` one of them, on the path): (a witness at ``P0``,
     None) / (None, None) proved / (None, []) undecided / (None, reasons) not known."""
     axes = machine.axis_names
@@ -162,12 +163,9 @@ def _checker(machine: Machine, solids: Solids | LatheSolids, shift: Any) -> Any:
 
 
 def _leg_segment(leg: RecoveryLeg[Fraction], axes: tuple[str, ...], seg: Segment) -> Segment:
-    """A recovery leg from a break in ``seg`` as a motion: in the cut's frame, with its turret tool (a lathe's
-    T word: the replacement is the same [[tools]] entry, :func:`nczones.plans.recovery.tip_offsets` keeps the
-    tip offset)."""
-    out = leg.segment(axes, seg)
-    turret = tuple(e for e in seg.extra if type(e) is TurretTool)
-    return replace(out, frame=seg.frame, extra=out.extra + turret) if turret else replace(out, frame=seg.frame)
+    """A recovery leg from a break in ``seg`` as a motion, in the cut's frame (with its tip offset and turret
+    tool: :meth:`nczones.plans.recovery.RecoveryLeg.segment`)."""
+    return replace(leg.segment(axes, seg), frame=seg.frame)
 
 
 def _reach(a: tuple[Fraction, Fraction], b: tuple[Fraction, Fraction], a0: Fraction, b0: Fraction,

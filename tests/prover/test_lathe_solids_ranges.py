@@ -275,3 +275,31 @@ def test_tip_of_is_the_oracles():
     m = parse_machine(FANUC + _tool_change("250", "300"), "fanuc.toml")
     seg = next(s for s in segments_text("%\nO1\nG21 G18\nT0201\nG00 X40. Z5.\nM30\n%\n", m, fast=False))
     assert tool_of(seg) == 2 and tip_of(seg, seg.end) == (F(20), F(135))
+
+
+@pytest.mark.parametrize("fanuc", [False, True])
+def test_a_recovery_solid_witness_replays(tmp_path, fanuc):
+    """``nczones replay`` confirms a recovery leg's solid witness (the part on the leg from the reported break
+    point, the contact inside it and inside the fixture, by replay's own test) and refuses it once the
+    contact point is moved out of the jaws (radius 25, inside their bore).  Fanuc: the leg runs with T0201's
+    tool 2, not offset 1's number."""
+    from nczones.prover.render import to_json_dict
+    from nczones.replay import replay_report
+
+    if fanuc:
+        text = FANUC + _tool_change("220", "300")
+        program = "%\nO1\nG21 G18 G99 G40\nT0201\nG00 X40. Z5.\nG01 Z-60. F0.1\nG00 Z5.\nM30\n%\n"
+    else:
+        text, program = RECOVERY + _tool_change("220"), BORE
+    (tmp_path / "m.toml").write_text(text)
+    (tmp_path / "p.nc").write_text(program)
+    r = verify(str(tmp_path / "p.nc"), load_machine(tmp_path / "m.toml"), recovery="breakpoint")
+    doc = to_json_dict(r, deterministic=True)
+    v = doc["violations"][0]
+    assert (v["kind"], v["zone"], v["zones"]) == ("recovery", "jaws", ["bar"])
+    (check,) = replay_report(doc)
+    assert check.confirmed, check.message
+    assert "inside the bar (X -8..8, Z 0..120 from the tip)" in check.message
+    moved = dict(v, point_exact=dict(v["point_exact"], X="25"))
+    (check,) = replay_report(dict(doc, violations=[moved]))
+    assert not check.confirmed, check.message
