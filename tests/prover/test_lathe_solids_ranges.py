@@ -20,6 +20,7 @@ from nczones.solids import machine_solids
 from tests.oracles.concrete import machine_at
 from tests.oracles.lathe_solids import part_meets, sampled_hit, tip_of, tool_of
 from tests.prover.test_lathe_solids import LINUXCNC, ORACLE, _long, programs
+from tests.prover.test_solids_ranges import range_against_values
 
 F = Fraction
 ROOT = Path(__file__).resolve().parents[2]
@@ -117,11 +118,7 @@ def ranges(draw):
     return name, a, b
 
 
-def _fmt(v: Fraction) -> str:
-    return str(v.numerator) if v.denominator == 1 else f"{float(v)}"
-
-
-def _oracle_hit(text, machine):
+def _oracle_hit(text, machine, result=None):
     """The oracle's first part-in-fixture sample of ``text`` on ``machine`` (None: none)."""
     solids = machine_solids(machine)
     for seg in segments_text(text, machine, fast=False):
@@ -134,26 +131,11 @@ def _oracle_hit(text, machine):
 
 
 def _range_against_values(text, rng):
-    """Over the range and at its ends and middle: ``safe`` over the range holds at every value (the prover's
-    verdict there and the oracle's samples), a concrete ``unsafe`` or oracle hit makes the range not ``safe``,
-    and a range witness replays at its own value."""
-    name, lo, hi = rng
-    machine = parse_machine(ORACLE, "oracle.toml")
-    r = verify_text(text, machine, params=[f"{name}={_fmt(lo)}..{_fmt(hi)}"])
+    """The range verdict against its ends and middle (tests/prover/test_solids_ranges.py, with the lathe's
+    oracle): a range ``safe`` holds at every value, a concrete ``unsafe`` or oracle hit makes it not ``safe``,
+    a range witness replays at its own value."""
+    r = range_against_values(text, parse_machine(ORACLE, "oracle.toml"), rng, _oracle_hit)
     assert "VF212" not in _codes(r)
-    for value in sorted({lo, hi, (lo + hi) / 2}):
-        at = machine_at(machine, {name: value})
-        concrete = verify_text(text, at)
-        hit = _oracle_hit(text, at)
-        if r.verdict.label == "safe":
-            assert concrete.verdict.label == "safe", f"safe over {name}={lo}..{hi}, {concrete.verdict} at {value}"
-            assert hit is None, f"safe over {name}={lo}..{hi}, the oracle finds {hit[0].name} in {hit[1].name}"
-        if concrete.verdict.label == "unsafe" or hit is not None:
-            assert r.verdict.label != "safe"
-    for v in r.violations:
-        if v.kind == "solid":
-            again = verify_text(text, machine_at(machine, dict(v.params)))
-            assert again.verdict.label == "unsafe" and any(w.line == v.line for w in again.violations), v.note
 
 
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
