@@ -327,6 +327,7 @@ class LatheSolidsChecker:
         p = (p0[self.ix], p0[self.iz])
         d = (p1[self.ix] - p[0], p1[self.iz] - p[1])
         bx, bz = (min(p[0], p[0] + d[0]), max(p[0], p[0] + d[0])), (min(p[1], p[1] + d[1]), max(p[1], p[1] + d[1]))
+        maybe = None  # a pair only the ranges may bring together: unknown, unless another one is a witness
         for part, fx, rect, key, nominal in rects:
             best = self.clearance.get(key)
             if best is not None and self._apart(rect, best[0], bx, bz):
@@ -339,11 +340,14 @@ class LatheSolidsChecker:
             if rect is not nominal:
                 t = _open_span(nominal, p, d)
                 if t is None:
-                    self._unknown(seg, "VF218", f"the {part.label()} may enter `{fx.name}` for some values of the "
-                                  "parameter ranges (not at their nominal values): the ranges move it that far")
-                    return True
+                    maybe = maybe or (part, fx)
+                    continue
             path = tuple(a + t * (b - a) for a, b in zip(p0, p1))
             self._report(seg, part, fx, nominal, path, tau0 + t * (tau1 - tau0), exact=True)
+            return True
+        if maybe is not None:
+            self._unknown(seg, "VF218", f"the {maybe[0].label()} may enter `{maybe[1].name}` for some values of the "
+                          "parameter ranges (not at their nominal values): the ranges move it that far")
             return True
         return False
 

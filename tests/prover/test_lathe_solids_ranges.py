@@ -74,6 +74,20 @@ def test_ranges_move_a_lathes_tool_solids(param, verdict, clearance):
         assert at.violations[0].zones == ("bar holder",)
 
 
+def test_a_witness_at_the_nominal_values_wins_over_a_pair_the_ranges_may_bring_together():
+    """boring_bar_hits_chuck.nc with G54.X = 0..10 (the nominal 0 in it): at line 7 (G01 Z-80. at X30., tip
+    radius 15, down to tip Z 50) the insert, radii 8.5..17.5 with its thickness' growth, reaches the chuck
+    (radii 25..100, Z 0..60) only when X moves by more than 7.5: a pair the ranges may bring together, not at
+    the nominal value.  The bar holder enters the jaws at the nominal value (the example's derivation): the
+    block is unsafe with that witness, not unknown because the insert's pair came first."""
+    r = verify(str(ROOT / "specs/examples/programs/boring_bar_hits_chuck.nc"), load_machine(MACHINE),
+               params=["G54.X=0..10"])
+    assert r.verdict.label == "unsafe", (r.reasons, r.violations)
+    v = next(v for v in r.violations if v.line == 7)
+    assert (v.zone, v.zones, dict(v.params)) == ("jaws", ("bar holder",), {"G54.X": 0})
+    assert not r.reasons
+
+
 def test_a_tool_length_range_does_not_move_the_tip_on_linuxcnc():
     """LinuxCNC: G43 H1 puts the controlled point at the tip plus H1, so an H1 range moves the controlled path
     and the tip's offset alike: the parts stay where the program puts the tip.  The holder stops 35 above the
