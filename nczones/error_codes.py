@@ -311,13 +311,14 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF210", _U, _MF, "tool solids: an arc near a fixture its enclosure cannot decide, a motion kind "
                            "the solids proof does not model, or corners the control may round (G64)"),
     Code("VF211", _U, _MF, "tool solids: a motion under G49 (no H register names the tool in the spindle)"),
-    Code("VF212", _U, _MF, "a lathe's tool solids with parameter ranges or tool-break recovery were not checked "
-                           "(a mill's are proved: VF218/VF220)"),
-    Code("VF218", _U, _MF, "tool solids: a part may meet a fixture somewhere in the parameter ranges, "
-                           "not at their nominal values"),
+    Code("VF212", _U, _MF, "a lathe's tool solids with parameter ranges or tool-break recovery were not checked; "
+                           "both are proved now, as a mill's (VF218/VF220)", "retired"),
+    Code("VF218", _U, _MF, "tool solids (a mill's or a lathe's): a part may meet a fixture somewhere in the "
+                           "parameter ranges, not at their nominal values"),
     Code("VF219", _U, _MF, "tool solids: a fixture in a work offset at a motion whose frame does not give "
                            "that offset (another work offset active, a rotated frame)"),
-    Code("VF220", _U, _MF, "tool solids: tool-break recovery legs near a fixture the proof cannot decide"),
+    Code("VF220", _U, _MF, "tool solids (a mill's or a lathe's): tool-break recovery legs near a fixture the proof "
+                           "cannot decide"),
     # -- RC: recovery
     Code("RC201", _U, _RE, "a recovery (break) motion nczones does not encode"),
     Code("RC202", _U, _RE, "recovery: the solver's limit"),

@@ -40,6 +40,7 @@ from typing import Any
 from .exact import format_decimal
 from .machine import Machine, as_written, read_number
 from .motion import Payload, TurretTool
+from .solids_reading import empty_heights, fixture_number, read_fixture_entries, read_tool_entries
 from .zones import BoxZone, PolygonZone, SteppedZone
 from .zones.kinds import KindTable
 
@@ -217,84 +218,43 @@ def _lathe_part(rd: Any, p: Mapping, i: int, where: str, header: int | None) -> 
 def parse_lathe_tools(rd: Any, raw: list) -> Mapping[int, tuple[LathePart, ...]]:
     """``[[tools]]`` on a lathe: ``number`` (the turret tool, ``T0101``: 1) and ``parts``, each
     ``{ name, x = [lo, hi], z = [lo, hi], thickness }`` relative to the tool tip."""
-    out: dict[int, tuple[LathePart, ...]] = {}
-    for k, t in enumerate(raw):
-        header = rd.loc.section("tools", k)
-        if not isinstance(t, Mapping):
-            rd.report("ZN161", f"[[tools]] {k + 1}: expected a table, got {as_written(t)}", rd.loc.header(header))
-            continue
-        for key in t:
-            if key not in ("number", "name", "parts"):
-                rd.report("ZN160", f"[[tools]] {k + 1}: unknown key {as_written(key)}; allowed keys: number, name, "
-                          "parts", rd.loc.key(key, header))
-        num = t.get("number")
-        if isinstance(num, bool) or not isinstance(num, int) or not 0 <= num <= 9999:
-            rd.report("ZN162", f"[[tools]] {k + 1}: number must be a whole tool number 0..9999, got "
-                      f"{as_written(num)}", rd.loc.key("number", header) or rd.loc.header(header))
-            continue
-        if num in out:
-            rd.report("ZN162", f"[[tools]] {k + 1}: tool {num} is described twice", rd.loc.key("number", header))
-            continue
-        parts = t.get("parts")
+
+    def parts_of(parts: Any, num: int, header: int | None) -> tuple[LathePart, ...] | None:
         if not isinstance(parts, list) or not parts or not all(isinstance(p, Mapping) for p in parts):
             rd.report("ZN161", f"[[tools]] number {num} parts: expected a list of {{ name, x, z }} tables, got "
                       f"{as_written(parts)}", rd.loc.key("parts", header) or rd.loc.header(header))
-            continue
+            return None
         read = [_lathe_part(rd, p, i, f"[[tools]] number {num}", header) for i, p in enumerate(parts)]
-        if all(p is not None for p in read):
-            out[num] = tuple(p for p in read if p is not None)
-    return MappingProxyType(out)
+        return tuple(p for p in read if p is not None) if all(p is not None for p in read) else None
+
+    return read_tool_entries(rd, raw, parts_of)
+
+
+_FIXTURE_KINDS = {"chuck": _FIXTURE_KEYS, "cylinder": _FIXTURE_KEYS}
 
 
 def parse_lathe_fixtures(rd: Any, raw: list) -> tuple[LatheFixture, ...]:
     """``[[fixtures]]`` on a lathe: ``kind = "chuck"`` or ``"cylinder"``, solids of revolution about the
     spindle axis: ``radius``, optional ``inner_radius`` (a ring), ``min_z``, ``max_z``."""
-    out: list[LatheFixture] = []
-    for k, t in enumerate(raw):
-        header = rd.loc.section("fixtures", k)
-        if not isinstance(t, Mapping):
-            rd.report("ZN161", f"[[fixtures]] {k + 1}: expected a table, got {as_written(t)}", rd.loc.header(header))
-            continue
-        kind = t.get("kind")
-        if kind not in ("chuck", "cylinder"):
-            rd.report("ZN166", f"[[fixtures]] {k + 1}: kind {as_written(kind)} is not one of \"chuck\", \"cylinder\" "
-                      "(on a lathe a fixture is a solid of revolution about the spindle axis)",
-                      rd.loc.key("kind", header) or rd.loc.header(header))
-            continue
-        name = t.get("name")
-        if not isinstance(name, str) or not name:
-            rd.report("ZN161", f"[[fixtures]] {k + 1}: name must be a non-empty string, got {as_written(name)}",
-                      rd.loc.key("name", header) or rd.loc.header(header))
-            continue
-        for key in t:
-            if key not in _FIXTURE_KEYS:
-                rd.report("ZN160", f"[[fixtures]] {name!r}: unknown key {as_written(key)} for a lathe {kind}; "
-                          f"allowed keys: {', '.join(_FIXTURE_KEYS)}", rd.loc.key(key, header))
-        fx = _lathe_fixture(rd, t, name, header)
-        if fx is not None:
-            out.append(fx)
-    return tuple(out)
+    return tuple(read_fixture_entries(
+        rd, raw, _FIXTURE_KINDS, ("ZN166", " (on a lathe a fixture is a solid of revolution about the spindle axis)"),
+        "lathe ", lambda t, _kind, name, header: _lathe_fixture(rd, t, name, header)))
 
 
 def _lathe_fixture(rd: Any, t: Mapping, name: str, header: int | None) -> LatheFixture | None:
     if "radius" not in t:
         rd.report("ZN161", f"[[fixtures]] {name!r}: missing radius", rd.loc.header(header))
         return None
-    r = read_number(rd, t["radius"], f"[[fixtures]] {name!r} radius", rd.loc.key("radius", header), positive=True)
-    r_in = read_number(rd, t["inner_radius"], f"[[fixtures]] {name!r} inner_radius",
-                       rd.loc.key("inner_radius", header), nonnegative=True) if "inner_radius" in t else F0
-    z0 = read_number(rd, t["min_z"], f"[[fixtures]] {name!r} min_z", rd.loc.key("min_z", header)) \
-        if "min_z" in t else None
-    z1 = read_number(rd, t["max_z"], f"[[fixtures]] {name!r} max_z", rd.loc.key("max_z", header)) \
-        if "max_z" in t else None
+    r = fixture_number(rd, t, "radius", name, header, positive=True)
+    r_in = fixture_number(rd, t, "inner_radius", name, header, nonnegative=True) if "inner_radius" in t else F0
+    z0 = fixture_number(rd, t, "min_z", name, header)
+    z1 = fixture_number(rd, t, "max_z", name, header)
     if r is None or r_in is None:
         return None
     if r_in >= r:
         rd.report("ZN166", f"[[fixtures]] {name!r}: inner_radius {format_decimal(r_in)} is not below radius "
                   f"{format_decimal(r)} (an empty ring)", rd.loc.key("inner_radius", header))
         return None
-    if z0 is not None and z1 is not None and z0 >= z1:
-        rd.report("ZN166", f"[[fixtures]] {name!r}: min_z {format_decimal(z0)} is not below max_z "
-                  f"{format_decimal(z1)} (an empty solid)", rd.loc.key("max_z", header))
+    if empty_heights(rd, "ZN166", name, header, z0, z1, "solid"):
         return None
     return LatheFixture(name, r_in, r, z0, z1)

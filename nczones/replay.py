@@ -21,9 +21,10 @@ counterexample as exact rationals (``point_exact``, ``path_point_exact``,
    tool-break recovery leg from the reported break point), that the point
    lies within the margin of it on every axis, and that the point is outside
    the allowed set, in the zone the report names.  A tool solid in a fixture
-   (``kind = "solid"``) is checked instead by placing the named tool part at
-   the path point and testing that the witness is inside it and inside the
-   fixture (:func:`_check_solid`).
+   (``kind = "solid"``, or ``kind = "recovery"`` whose ``zones`` name a part
+   and not its zone: a recovery leg of the solids proof) is checked instead by
+   placing the named tool part at the path point and testing that the witness
+   is inside it and inside the fixture (:func:`_check_solid`).
 
 A path point that is irrational (on a helix, an R-format arc with an
 irrational centre, a developed arc; the report marks it
@@ -366,7 +367,8 @@ def _recovery_legs(v: Mapping[str, Any], seg: Segment, segs: list[Segment], mach
     sequence_start = next(segs[a].start for a, b in motion_sequences(segs) if a <= index <= b)
     restart = break_point if cfg.variant is RecoveryVariant.BREAKPOINT else sequence_start
     legs = recovery_legs(cfg, machine, break_point, restart, length, new_length)
-    return [lg.segment(machine.axis_names, seg) for lg in legs if lg.name == v.get("leg")]
+    # in the cut's frame: a fixture in a work offset is where the cut saw it (as the solids proof places it)
+    return [replace(lg.segment(machine.axis_names, seg), frame=seg.frame) for lg in legs if lg.name == v.get("leg")]
 
 
 def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs: list[Segment],
@@ -378,7 +380,10 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
     def result(ok: bool, message: str) -> Check:
         return Check(program, line, block if isinstance(block, int) else -1, zone, ok, exact, message)
 
-    solid = v.get("kind") == "solid"  # the witness is a point of X, Y, Z (inside a tool part and a fixture)
+    # the witness is a point of X, Y, Z (inside a tool part and a fixture): a solid violation, or a recovery
+    # leg's from the solids proof (its zones name the part, not its zone: a fixture)
+    zones = v.get("zones") or ()
+    solid = v.get("kind") == "solid" or (v.get("kind") == "recovery" and bool(zones) and zone not in zones)
     from .lathe_solids import is_lathe_axes
 
     space = (("X", "Z") if is_lathe_axes(axes) else ("X", "Y", "Z")) if solid else axes  # a lathe: its section

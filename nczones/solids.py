@@ -27,6 +27,7 @@ from typing import Any
 from .exact import format_decimal
 from .lathe_solids import is_lathe_axes, lathe_solids, parse_lathe_fixtures, parse_lathe_tools
 from .machine import Machine, as_written, declares_solids, read_number
+from .solids_reading import empty_heights, fixture_number, read_fixture_entries, read_tool_entries
 from .zones import BoxZone, PolygonZone, SteppedZone
 from .zones.kinds import KindTable
 
@@ -193,7 +194,6 @@ def _box_fixture(z: BoxZone) -> Fixture | None:
 # --------------------------------------------------------------------------- reading
 
 _PART_KEYS = ("name", "diameter", "length")
-_TOOL_KEYS = ("number", "name", "parts")
 _FIXTURE_KEYS = {"box": ("name", "kind", "frame", "min", "max"),
                  "cylinder": ("name", "kind", "frame", "centre", "radius", "min_z", "max_z")}
 _WORK_FRAMES = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
@@ -271,35 +271,15 @@ def parse_tools_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> Mapping[int
     >>> m.sections["tools"][1][1].label()
     'holder (Ø63 × 40 at 30..70 above the tip)'
     """
-    out: dict[int, tuple[Part, ...]] = {}
     if not isinstance(raw, list):
         rd.report("ZN161", f"[[tools]]: expected an array of tables ([[tools]]), got {as_written(raw)}",
                   rd.loc.key("tools", None))
-        return MappingProxyType(out)
+        return MappingProxyType({})
     if is_lathe_axes(axes):  # a lathe's turret tools: rectangles relative to the tip (nczones.lathe_solids)
         return parse_lathe_tools(rd, raw)  # type: ignore[return-value]
     _solids_axes(rd, axes, "tools")
-    for k, t in enumerate(raw):
-        header = rd.loc.section("tools", k)
-        if not isinstance(t, Mapping):
-            rd.report("ZN161", f"[[tools]] {k + 1}: expected a table, got {as_written(t)}", rd.loc.header(header))
-            continue
-        for key in t:
-            if key not in _TOOL_KEYS:
-                rd.report("ZN160", f"[[tools]] {k + 1}: unknown key {as_written(key)}; allowed keys: "
-                          f"{', '.join(_TOOL_KEYS)}", rd.loc.key(key, header))
-        num = t.get("number")
-        if isinstance(num, bool) or not isinstance(num, int) or not 0 <= num <= 9999:
-            rd.report("ZN162", f"[[tools]] {k + 1}: number must be a whole tool number 0..9999, got "
-                      f"{as_written(num)}", rd.loc.key("number", header) or rd.loc.header(header))
-            continue
-        if num in out:
-            rd.report("ZN162", f"[[tools]] {k + 1}: tool {num} is described twice", rd.loc.key("number", header))
-            continue
-        parts = _parts(rd, t.get("parts"), f"[[tools]] number {num}", header, False)
-        if parts is not None:
-            out[num] = parts
-    return MappingProxyType(out)
+    return read_tool_entries(rd, raw, lambda parts, num, header: _parts(rd, parts, f"[[tools]] number {num}",
+                                                                       header, False))
 
 
 def parse_spindle_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Part, ...]:
@@ -327,7 +307,6 @@ def _solids_axes(rd: Any, axes: tuple[str, ...], section: str) -> None:
 
 def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fixture, ...]:
     """``[[fixtures]]``: boxes and vertical cylinders in machine coordinates."""
-    out: list[Fixture] = []
     if not isinstance(raw, list):
         rd.report("ZN161", f"[[fixtures]]: expected an array of tables, got {as_written(raw)}",
                   rd.loc.key("fixtures", None))
@@ -335,30 +314,15 @@ def parse_fixtures_section(rd: Any, raw: Any, axes: tuple[str, ...]) -> tuple[Fi
     if is_lathe_axes(axes):  # a lathe: solids of revolution about the spindle axis (nczones.lathe_solids)
         return parse_lathe_fixtures(rd, raw)  # type: ignore[return-value]
     _solids_axes(rd, axes, "fixtures")
-    for k, t in enumerate(raw):
-        header = rd.loc.section("fixtures", k)
-        if not isinstance(t, Mapping):
-            rd.report("ZN161", f"[[fixtures]] {k + 1}: expected a table, got {as_written(t)}", rd.loc.header(header))
-            continue
-        kind = t.get("kind")
-        if not isinstance(kind, str) or kind not in _FIXTURE_KEYS:
-            rd.report("ZN163", f"[[fixtures]] {k + 1}: kind {as_written(kind)} is not one of \"box\", \"cylinder\"",
-                      rd.loc.key("kind", header) or rd.loc.header(header))
-            continue
-        name = t.get("name")
-        if not isinstance(name, str) or not name:
-            rd.report("ZN161", f"[[fixtures]] {k + 1}: name must be a non-empty string, got {as_written(name)}",
-                      rd.loc.key("name", header) or rd.loc.header(header))
-            continue
-        for key in t:
-            if key not in _FIXTURE_KEYS[kind]:
-                rd.report("ZN160", f"[[fixtures]] {name!r}: unknown key {as_written(key)} for a {kind}; allowed "
-                          f"keys: {', '.join(_FIXTURE_KEYS[kind])}", rd.loc.key(key, header))
-        fx = _fixture_box(rd, t, name, header) if kind == "box" else _fixture_cylinder(rd, t, name, header)
-        frame = _fixture_frame(rd, t, name, header)
-        if fx is not None and frame is not None:
-            out.append(replace(fx, frame=frame))
-    return tuple(out)
+    return tuple(read_fixture_entries(rd, raw, _FIXTURE_KEYS, ("ZN163", ""), "",
+                                      lambda t, kind, name, header: _fixture(rd, t, kind, name, header)))
+
+
+def _fixture(rd: Any, t: Mapping, kind: str, name: str, header: int | None) -> Fixture | None:
+    """A box or a cylinder, in the work offset its ``frame`` names."""
+    fx = _fixture_box(rd, t, name, header) if kind == "box" else _fixture_cylinder(rd, t, name, header)
+    frame = _fixture_frame(rd, t, name, header)
+    return replace(fx, frame=frame) if fx is not None and frame is not None else None
 
 
 def _fixture_frame(rd: Any, t: Mapping, name: str, header: int | None) -> str | None:
@@ -413,14 +377,10 @@ def _fixture_cylinder(rd: Any, t: Mapping, name: str, header: int | None) -> Fix
     if "radius" not in t:
         rd.report("ZN161", f"[[fixtures]] {name!r}: missing radius", rd.loc.header(header))
         return None
-    r = read_number(rd, t["radius"], f"[[fixtures]] {name!r} radius", rd.loc.key("radius", header), positive=True)
-    z0 = read_number(rd, t["min_z"], f"[[fixtures]] {name!r} min_z", rd.loc.key("min_z", header)) \
-        if "min_z" in t else None
-    z1 = read_number(rd, t["max_z"], f"[[fixtures]] {name!r} max_z", rd.loc.key("max_z", header)) \
-        if "max_z" in t else None
-    if z0 is not None and z1 is not None and z0 >= z1:
-        rd.report("ZN163", f"[[fixtures]] {name!r}: min_z {format_decimal(z0)} is not below max_z "
-                  f"{format_decimal(z1)} (an empty cylinder)", rd.loc.key("max_z", header))
+    r = fixture_number(rd, t, "radius", name, header, positive=True)
+    z0 = fixture_number(rd, t, "min_z", name, header)
+    z1 = fixture_number(rd, t, "max_z", name, header)
+    if empty_heights(rd, "ZN163", name, header, z0, z1, "cylinder"):
         return None
     if cx is None or cy is None or r is None:
         return None

@@ -67,7 +67,7 @@ from typing import Any, Generic, Protocol, TypeVar
 
 from ..errors import Diagnostic, InvalidArgument, MachineFileError, close_matches
 from ..machine import Machine, as_written, read_number
-from ..motion import Segment, SegmentKind, TipOffset
+from ..motion import Segment, SegmentKind, TipOffset, TurretTool
 
 __all__ = [
     "RecoveryVariant",
@@ -369,13 +369,16 @@ class RecoveryLeg(Generic[T]):
         """As a :class:`Segment` (block and source of ``like``, ``derived`` names the leg).
 
         The leg keeps the broken motion's tip offset (:func:`tip_offsets`): a lathe tool offset off the
-        tool axis moves the tip during the recovery as during the cut.
+        tool axis moves the tip during the recovery as during the cut; and its turret tool (a lathe's T word's
+        :class:`~nczones.motion.TurretTool`, whose solids move with the turret: the replacement is the same
+        tool).
         """
+        turret = tuple(e for e in like.extra if type(e) is TurretTool) if like else ()
         return Segment(self.kind, self.start, self.end, axes, block=like.block if like else 0,
                        span=like.span if like else None, tool_length=self.tool_length,
                        feed_mm_min=self.feed_mm_min, derived=f"tool-break recovery: {self.name}",
                        tool_register=like.tool_register if like else None,
-                       extra=tip_offsets(like) if like else ())
+                       extra=tip_offsets(like) + turret if like else ())
 
 
 def tip_offsets(seg: Segment) -> tuple[TipOffset, ...]:

@@ -78,7 +78,8 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "of the T word's tool number (Fanuc) or of the tool length register (LinuxCNC) and its tip is the "
     "controlled point minus the tool offsets; the other stations of the turret carry nothing that reaches "
     "a fixture; the fixtures are solids of revolution about the spindle axis (a forbid box zone "
-    "revolved).",
+    "revolved); on tool-break recovery legs the replacement tool has the broken tool's [[tools]] parts and "
+    "tip offset.",
     "Fanuc dialect: a tool change moves no axis: M06 on a machining centre and the T code that indexes a "
     "lathe's turret (with tool_offset_motion = \"shift\") only change the tool and its offsets, unless "
     "[macros] calls a program for them, whose moves are proved; the machine builder's tool change motion and "

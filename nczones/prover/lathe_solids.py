@@ -22,6 +22,13 @@ ends (exact points of the circle) and halved, at most :data:`ARC_PIECES` times; 
 ``unknown`` (VF210).  A motion with no known turret tool is ``unknown`` (VF211); a motion of an axis other
 than X, Z and C (the spindle angle: the fixtures are solids of revolution, C turns them into themselves)
 is ``unknown`` (VF210).
+
+Parameter ranges (``--param``) and the tool-break recovery's families of legs move the tool against the
+fixtures by a displacement box ``D`` (X, Z; :meth:`LatheSolidsChecker._displacement`, as a mill's tool part in
+:mod:`nczones.prover.solids`): the part at ``p + d`` is in a fixture iff ``p`` is in ``Q - d``, so over ``D``
+the open rectangle ``Q`` is grown by ``D`` into another open rectangle, and the proof above decides it as
+exactly.  A motion only the grown rectangle meets is ``unknown`` (VF218); one the nominal rectangle meets has
+its witness at the nominal values.
 """
 
 from __future__ import annotations
@@ -43,6 +50,7 @@ from .geometry import (
     sqrt_bounds,
 )
 from .result import Reason, Violation
+from .solids_ranges import UNTRACKED, axis_displacement, untracked
 
 __all__ = ["LatheSolidsChecker", "ARC_PIECES", "CLEARANCE_MEANING", "segment_tool", "tip_shift"]
 
@@ -56,10 +64,20 @@ CLEARANCE_MEANING = ("distance in the section through the spindle axis, a certif
 Bound = Fraction | None
 #: An open rectangle of controlled positions (X low, X high, Z low, Z high; None: unbounded).
 Rect = tuple[Bound, Bound, Bound, Bound]
+#: A displacement box of the tool against the fixtures ((X lo, X hi), (Z lo, Z hi)); None: none.
+Move = tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]] | None
 
 
 def _add(v: Bound, d: Fraction) -> Bound:
     return None if v is None else v + d
+
+
+def _grow(rect: Rect, move: tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]) -> Rect:
+    """The controlled positions from which some displacement ``d`` of the box ``move`` brings the part into
+    the fixture: ``p + d`` in the open rectangle ``Q`` for some ``d`` iff ``p`` is in ``Q`` less the box, an open
+    rectangle again (exact)."""
+    (xl, xh), (zl, zh) = move
+    return _add(rect[0], -xh), _add(rect[1], -xl), _add(rect[2], -zh), _add(rect[3], -zl)
 
 
 def _open_span(rect: Rect, p: tuple[Fraction, Fraction], d: tuple[Fraction, Fraction]) -> Fraction | None:
@@ -159,6 +177,12 @@ class LatheSolidsChecker:
 
     machine: Machine
     solids: LatheSolids
+    #: the parameter ranges of the case (:class:`~nczones.prover.result.ParamRange`, deviations from the values
+    #: the motion was built at): every rectangle is grown by the displacement they allow (:meth:`_displacement`)
+    ranges: tuple[Any, ...] = ()
+    #: a displacement box (X lo..hi, Z lo..hi, containing 0) added to every motion's: the tool-break recovery
+    #: proves a family of legs as one leg displaced within it (:mod:`.solids_recovery`)
+    shift: tuple[tuple[Fraction, Fraction], ...] | None = None
     violations: list[Violation] = field(default_factory=list)
     reasons: list[Reason] = field(default_factory=list)
     #: (part label, fixture name) -> (least clearance lower bound, line)
@@ -176,19 +200,25 @@ class LatheSolidsChecker:
         axes = self.machine.axis_names
         self.ix, self.iz = axes.index("X"), axes.index("Z")
         self.tool_axis = self.machine.tool_axis
+        self._dev = {r.name: (r.lo, r.hi) for r in self.ranges}
+        self._moves: dict[tuple, Any] = {}
 
     # ------------------------------------------------------------------ which rectangles
     def _tip_shift(self, seg: Segment) -> tuple[Fraction, Fraction]:
         """The controlled point minus the tool tip, on X and Z."""
         return tip_shift(seg, self.tool_axis)
 
-    def _rects(self, parts: tuple[LathePart, ...], shift: tuple[Fraction, Fraction]) -> list:
-        """``(part, fixture, rect, key)`` for every part, fixture and section rectangle: the open rectangle of
-        controlled positions where the part enters the fixture (module docstring); ``key`` names the pair in
-        :attr:`clearance`."""
-        key = (parts, shift)
+    def _rects(self, parts: tuple[LathePart, ...], shift: tuple[Fraction, Fraction], move: Move = None) -> list:
+        """``(part, fixture, rect, key, nominal)`` for every part, fixture and section rectangle: ``nominal`` the
+        open rectangle of controlled positions where the part enters the fixture (module docstring), ``rect``
+        that rectangle grown by the displacement box ``move`` (the same object without one); ``key`` names the
+        pair in :attr:`clearance`.  Kept (bounded) while the checker lives: :meth:`_apart` keys on them."""
+        key = (parts, shift, move)
         out = self._pairs.get(key)
         if out is None:
+            if len(self._pairs) > 4096:  # memory stays bounded whatever the program
+                self._pairs.clear()
+                self._grown.clear()
             out = []
             sx, sz = shift
             for part in parts:
@@ -196,10 +226,38 @@ class LatheSolidsChecker:
                 label = part.label()
                 for fx in self.solids.fixtures:
                     for f0, f1 in fx.sections():
-                        out.append((part, fx, (_add(f0, sx - b), _add(f1, sx - a), _add(fx.z0, sz - d),
-                                               _add(fx.z1, sz - c)), (label, fx.name)))
+                        rect = (_add(f0, sx - b), _add(f1, sx - a), _add(fx.z0, sz - d), _add(fx.z1, sz - c))
+                        out.append((part, fx, rect if move is None else _grow(rect, move), (label, fx.name), rect))
             self._pairs[key] = out
         return out
+
+    def _displacement(self, seg: Segment) -> Move | str:
+        """The box (X lo..hi, Z lo..hi) the ranges (and :attr:`shift`) move the tool's parts by against the
+        fixtures at ``seg``, None when it is the point 0, or the reason it is not known.  The coordinate's
+        sources (``Segment.deps_start``/``deps_end``, their hull along the motion) less the tool length's on
+        the tool axis (the tip is the controlled point minus the length), plus a homing error (the fixtures are
+        on the machine: they do not move with it), as :meth:`nczones.prover.solids.SolidsChecker._displacement`
+        for a mill's tool part."""
+        if not self._dev and self.shift is None:
+            return None
+        key = (seg.deps_start, seg.deps_end, seg.deps_tool)
+        got = self._moves.get(key)
+        if got is None:
+            if len(self._moves) > 4096:
+                self._moves.clear()
+            got = self._moves[key] = self._move(seg)
+        return got
+
+    def _move(self, seg: Segment) -> Move | str:
+        if self._dev and untracked(self.ranges, seg):
+            return UNTRACKED
+        out = []
+        for n, (a, i) in enumerate((("X", self.ix), ("Z", self.iz))):
+            lo, hi = axis_displacement(seg, self._dev, a, i, less_tool=a == self.tool_axis)
+            if self.shift is not None:
+                lo, hi = lo + self.shift[n][0], hi + self.shift[n][1]
+            out.append((lo, hi))
+        return None if all(lo == hi == 0 for lo, hi in out) else (out[0], out[1])
 
     # ------------------------------------------------------------------ feeding
     def feed_chunk(self, chunk: MotionChunk) -> None:
@@ -227,7 +285,11 @@ class LatheSolidsChecker:
             self._unknown(seg, "VF210", f"the motion moves {', '.join(moved)}: a lathe's tool solids are modelled "
                           "on a machine moving X and Z (and C) only")
             return
-        rects = self._rects(parts, self._tip_shift(seg))
+        move = self._displacement(seg)
+        if isinstance(move, str):
+            self._unknown(seg, "VF218", move)
+            return
+        rects = self._rects(parts, self._tip_shift(seg), move)
         if seg.kind is SegmentKind.ARC:
             self._arc(seg, rects)
         elif seg.kind in (SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL):
@@ -265,17 +327,27 @@ class LatheSolidsChecker:
         p = (p0[self.ix], p0[self.iz])
         d = (p1[self.ix] - p[0], p1[self.iz] - p[1])
         bx, bz = (min(p[0], p[0] + d[0]), max(p[0], p[0] + d[0])), (min(p[1], p[1] + d[1]), max(p[1], p[1] + d[1]))
-        for part, fx, rect, key in rects:
+        maybe = None  # a pair only the ranges may bring together: unknown, unless another one is a witness
+        for part, fx, rect, key, nominal in rects:
             best = self.clearance.get(key)
             if best is not None and self._apart(rect, best[0], bx, bz):
                 continue  # cannot enter the fixture nor come closer than the least clearance so far
             t = _open_span(rect, p, d)
-            if t is None:
+            if t is None:  # over the ranges: a lower bound of the clearance at every value
                 self._clear(key, _dist2_min(rect, p, d), seg)
                 continue
             self.clearance[key] = (F0, seg.line)
+            if rect is not nominal:
+                t = _open_span(nominal, p, d)
+                if t is None:
+                    maybe = maybe or (part, fx)
+                    continue
             path = tuple(a + t * (b - a) for a, b in zip(p0, p1))
-            self._report(seg, part, fx, rect, path, tau0 + t * (tau1 - tau0), exact=True)
+            self._report(seg, part, fx, nominal, path, tau0 + t * (tau1 - tau0), exact=True)
+            return True
+        if maybe is not None:
+            self._unknown(seg, "VF218", f"the {maybe[0].label()} may enter `{maybe[1].name}` for some values of the "
+                          "parameter ranges (not at their nominal values): the ranges move it that far")
             return True
         return False
 
@@ -368,8 +440,10 @@ class LatheSolidsChecker:
                 for v in piece:  # an exact witness at a piece's end (a rational point of the circle)
                     pt = list(seg.start)
                     pt[g.ia], pt[g.ib] = g.centre[0] + v[0], g.centre[1] + v[1]
+                    found = len(self.violations)
                     if self._line(seg, [hit], tuple(pt), tuple(pt), F0, F0):
-                        self.violations[-1] = _inexact(self.violations[-1])
+                        if len(self.violations) > found:
+                            self.violations[-1] = _inexact(self.violations[-1])
                         return
             if piece is None or budget <= 0:
                 self._unknown(seg, "VF210", f"the arc passes close to `{fx.name}` with the {part.label()}: "

@@ -330,12 +330,6 @@ def _recovery_solids(segs: list[Segment], machine: Machine, cfg: Any, seq_of: di
     solids = machine_solids(machine)
     if solids is None or not solids.fixtures:
         return
-    from ..lathe_solids import LatheSolids
-
-    if isinstance(solids, LatheSolids):  # a lathe's turret tools: the legs are proved for the tip only
-        reasons.append(Reason("tool-break recovery legs are proved for the controlled point only on a lathe: its "
-                              "tool solids are not checked on them", None, None, "VF212"))
-        return
     from .solids_recovery import recovery_solids, resume_solids
 
     def replacement(length: Fraction) -> Fraction:

@@ -52,6 +52,7 @@ from .geometry import (
     sqrt_bounds,
 )
 from .result import Reason, Result, Violation
+from .solids_ranges import UNTRACKED, axis_displacement, untracked
 from .solids_screen import Screened, group_by_tool, needs_exact, needs_exact_columns
 
 if TYPE_CHECKING:
@@ -578,9 +579,8 @@ class SolidsChecker:
         return got
 
     def _place_all(self, seg: Segment, parts: tuple[Part, ...]) -> dict | tuple[str, str]:
-        if self._dev and any(not r.name.startswith("home.") for r in self.ranges) and not seg.deps_start:
-            return "VF218", ("the motion does not say which parameters its coordinates depend on: the tool solids "
-                             "cannot be moved with the parameter ranges")
+        if self._dev and untracked(self.ranges, seg):
+            return "VF218", UNTRACKED
         where: dict[tuple[Part, Fixture], tuple[_Placed, _Placed]] = {}
         for fx in self.solids.fixtures:
             origin = self._origin(seg, fx)
@@ -614,27 +614,7 @@ class SolidsChecker:
         work offset; a homing error moves the machine, and a fixture in a work offset maybe with it."""
         out: list[tuple[Fraction, Fraction]] = []
         for a, i in (("X", self.ix), ("Y", self.iy), ("Z", self.iz)):
-            lo = hi = F0
-            for deps in (seg.deps_start, seg.deps_end):
-                coef: dict[str, int] = {}
-                for dep in (deps[i] if deps else ()):  # named as the prover's core names them
-                    name = dep if dep.startswith("H") else f"{dep}.{a}"
-                    coef[name] = coef.get(name, 0) + 1
-                if a == "Z" and not part.spindle:
-                    for dep in seg.deps_tool:
-                        name = dep if dep.startswith("H") else f"{dep}.Z"
-                        coef[name] = coef.get(name, 0) - 1
-                if fx.frame:
-                    coef[f"{fx.frame}.{a}"] = coef.get(f"{fx.frame}.{a}", 0) - 1
-                home = self._dev.get(f"home.{a}")
-                e_lo, e_hi = F0, F0
-                if home is not None:  # with a work offset the fixture may move with the homing too: 0 or all
-                    e_lo, e_hi = (min(F0, home[0]), max(F0, home[1])) if fx.frame else home
-                for name, c in coef.items():
-                    r = self._dev.get(name)
-                    if r is not None and c:
-                        e_lo, e_hi = e_lo + min(c * r[0], c * r[1]), e_hi + max(c * r[0], c * r[1])
-                lo, hi = min(lo, e_lo), max(hi, e_hi)
+            lo, hi = axis_displacement(seg, self._dev, a, i, less_tool=a == "Z" and not part.spindle, frame=fx.frame)
             if self.shift is not None:
                 lo, hi = lo + self.shift[len(out)][0], hi + self.shift[len(out)][1]
             out.append((lo, hi))
@@ -917,8 +897,9 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     from .result import Verdict
 
     lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
-    checker: Any = (LatheSolidsChecker(machine, solids) if isinstance(solids, LatheSolids)
-                    else SolidsChecker(machine, solids, options.ranges(machine), screen=None))
+    ranges = options.ranges(machine)
+    checker: Any = (LatheSolidsChecker(machine, solids, ranges) if isinstance(solids, LatheSolids)
+                    else SolidsChecker(machine, solids, ranges, screen=None))
     meaning = CLEARANCE_MEANING if lathe else "horizontal distance while their heights overlap, a certified lower bound"
 
     def tee() -> Iterator[Any]:
@@ -937,9 +918,6 @@ def prove_with_solids(motion: Iterable[Any], machine: Machine, solids: Solids, o
     violations = result.violations + tuple(checker.violations[:max(0, options.max_violations
                                                                   - len(result.violations))])
     reasons = result.reasons + tuple(checker.reasons)
-    if lathe and options.ranges(machine) and solids.fixtures:
-        reasons += (Reason("parameter ranges do not move a lathe's tool solids yet: they were checked at the "
-                           "nominal offsets and tool lengths only", None, None, "VF212"),)
     if solids.unmodelled:
         reasons += (Reason(f"forbidden zone{'s' if len(solids.unmodelled) > 1 else ''} "
                            f"{', '.join(f'`{n}`' for n in solids.unmodelled)} of a kind the tool solids are not "

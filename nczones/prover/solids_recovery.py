@@ -9,11 +9,14 @@ of the family is that leg displaced within a box ``D``: a straight leg's point `
 from ``(1-t) A0 + t B0`` by a convex combination of ``A - A0`` and ``B - B0``, per axis within the hull of
 ``0`` and their intervals; a dogleg rapid moves each axis 1-Lipschitz in its ends, so within
 ``±(|A - A0| + |B - B0|)``.  The exact proof of the solids (:class:`nczones.prover.solids.SolidsChecker`, its
-fixtures grown by ``D``, exact for boxes and cylinders) decides the family: clear; a part in a fixture at
+fixtures grown by ``D``, exact for boxes and cylinders; on a lathe
+:class:`nczones.prover.lathe_solids.LatheSolidsChecker`, its Minkowski rectangles grown by ``D`` on X and Z,
+exact) decides the family: clear; a part in a fixture at
 ``P0`` itself (a witness: ``unsafe``, kind ``recovery``); or undecided, then the line's piece is halved (at
 most :data:`RECOVERY_PIECES` pieces per motion) and what remains is ``unknown`` (``VF220``).  The tool on
 each leg is the plan's (the broken tool's length up to the tool change, the replacement's after it: the
-same ``[[tools]]`` entry), in the cut's work offset.
+same ``[[tools]]`` entry; a lathe's legs carry the cut's turret tool and tip offset), in the cut's work
+offset.
 """
 
 from __future__ import annotations
@@ -22,11 +25,13 @@ from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
+from ..lathe_solids import LatheSolids
 from ..machine import Machine, RapidMode
 from ..motion import Segment, SegmentKind
-from ..plans.recovery import RecoveryVariant, plan_legs, recovery_legs
+from ..plans.recovery import RecoveryLeg, RecoveryVariant, plan_legs, recovery_legs
 from ..solids import Solids
 from .geometry import arc_geom
+from .lathe_solids import LatheSolidsChecker
 from .result import Reason, Violation
 from .solids import SolidsChecker
 
@@ -52,7 +57,7 @@ class _IntervalTerms:
         return max(a[0], b[0]), max(a[1], b[1])
 
 
-def recovery_solids(segs: list[Segment], machine: Machine, solids: Solids, cfg: Any, replacement: Any,
+def recovery_solids(segs: list[Segment], machine: Machine, solids: Solids | LatheSolids, cfg: Any, replacement: Any,
                     starts: dict[int, tuple[Fraction, ...]], max_violations: int
                     ) -> tuple[list[Violation], list[Reason]]:
     """The recovery legs from every break point of every cutting motion ``segs[i]`` in ``starts`` (its motion
@@ -71,7 +76,7 @@ def recovery_solids(segs: list[Segment], machine: Machine, solids: Solids, cfg: 
     return violations, reasons
 
 
-def _one_motion(seg: Segment, machine: Machine, solids: Solids, cfg: Any, L2: Fraction,
+def _one_motion(seg: Segment, machine: Machine, solids: Solids | LatheSolids, cfg: Any, L2: Fraction,
                 start: tuple[Fraction, ...]) -> tuple[Violation | None, list[Reason]]:
     """The recovery from every break point of ``seg``: a witness, or the reasons it is not proved."""
     if seg.kind is SegmentKind.ARC:
@@ -115,8 +120,9 @@ def _line_box(seg: Segment, s0: Fraction, s1: Fraction) -> Box:
     return tuple((min(x, y), max(x, y)) for x, y in zip(_at(seg, s0), _at(seg, s1)))
 
 
-def _piece(seg: Segment, machine: Machine, solids: Solids, cfg: Any, L2: Fraction, start: tuple[Fraction, ...],
-           box: Box, P0: tuple[Fraction, ...], s0: Fraction) -> tuple[Violation | None, list[Reason] | None]:
+def _piece(seg: Segment, machine: Machine, solids: Solids | LatheSolids, cfg: Any, L2: Fraction,
+           start: tuple[Fraction, ...], box: Box, P0: tuple[Fraction, ...], s0: Fraction
+           ) -> tuple[Violation | None, list[Reason] | None]:
     """The legs from every break point in ``box`` (``P0`` one of them, on the path): (a witness at ``P0``,
     None) / (None, None) proved / (None, []) undecided / (None, reasons) not known."""
     axes = machine.axis_names
@@ -124,21 +130,21 @@ def _piece(seg: Segment, machine: Machine, solids: Solids, cfg: Any, L2: Fractio
     family = plan_legs(cfg, machine, box, restart_box, seg.tool_length, L2, _IntervalTerms())
     R0 = P0 if cfg.variant is RecoveryVariant.BREAKPOINT else start
     nominal = recovery_legs(cfg, machine, P0, R0, seg.tool_length, L2)
-    ix = [axes.index(a) for a in "XYZ"]
+    ix = [axes.index(a) for a in ("XZ" if isinstance(solids, LatheSolids) else "XYZ")]
     undecided = False
     for fam, leg in zip(family, nominal):
         dogleg = leg.kind is SegmentKind.RAPID and machine.rapid_mode is not RapidMode.LINEAR
         shift = tuple(_reach(fam.start[i], fam.end[i], leg.start[i], leg.end[i], dogleg) for i in ix)
-        checker = SolidsChecker(machine, solids, shift=shift, screen=False)
-        checker.feed(replace(leg.segment(axes, seg), frame=seg.frame))
+        checker = _checker(machine, solids, shift)
+        checker.feed(_leg_segment(leg, axes, seg))
         if checker.violations and all(lo == hi == 0 for lo, hi in shift):
             return _recovery_violation(checker.violations[0], seg, cfg, leg.name, P0, s0, axes), None
         if checker.violations or any(r.code == "VF218" for r in checker.reasons):
             if not checker.violations:
                 undecided = True
                 continue
-            exact = SolidsChecker(machine, solids, screen=False)  # the displaced family met: is P0's leg in it?
-            exact.feed(replace(leg.segment(axes, seg), frame=seg.frame))
+            exact = _checker(machine, solids, None)  # the displaced family met: is P0's leg in it?
+            exact.feed(_leg_segment(leg, axes, seg))
             if exact.violations:
                 return _recovery_violation(exact.violations[0], seg, cfg, leg.name, P0, s0, axes), None
             undecided = True
@@ -146,6 +152,20 @@ def _piece(seg: Segment, machine: Machine, solids: Solids, cfg: Any, L2: Fractio
             return None, [replace(r, message="tool-break recovery, leg " + repr(leg.name) + ": " + r.message)
                           for r in checker.reasons]
     return None, ([] if undecided else None)
+
+
+def _checker(machine: Machine, solids: Solids | LatheSolids, shift: Any) -> Any:
+    """The solids proof of one leg displaced within ``shift`` (per axis X, Y, Z on a mill, X, Z on a lathe; None:
+    not displaced), fed by hand (no batching)."""
+    if isinstance(solids, LatheSolids):  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
+        return LatheSolidsChecker(machine, solids, shift=shift)
+    return SolidsChecker(machine, solids, shift=shift, screen=False)
+
+
+def _leg_segment(leg: RecoveryLeg[Fraction], axes: tuple[str, ...], seg: Segment) -> Segment:
+    """A recovery leg from a break in ``seg`` as a motion, in the cut's frame (with its tip offset and turret
+    tool: :meth:`nczones.plans.recovery.RecoveryLeg.segment`)."""
+    return replace(leg.segment(axes, seg), frame=seg.frame)
 
 
 def _reach(a: tuple[Fraction, Fraction], b: tuple[Fraction, Fraction], a0: Fraction, b0: Fraction,
@@ -168,12 +188,12 @@ def _recovery_violation(v: Violation, seg: Segment, cfg: Any, leg: str, P0: tupl
                    break_point=tuple(zip(axes, P0)), leg=leg, note=note)
 
 
-def resume_solids(segs: list[Segment], machine: Machine, solids: Solids, replacement: Any, shift: Any,
+def resume_solids(segs: list[Segment], machine: Machine, solids: Solids | LatheSolids, replacement: Any, shift: Any,
                   max_violations: int) -> tuple[list[Violation], list[Reason]]:
     """The resumed cut with a replacement tool of another length, for the tool solids: every motion run with
     a tool that has cut before is checked shifted along the tool axis by the length's change (``shift(seg,
     L2)``, as :func:`nczones.prover.recovery.verify_recovery` checks the controlled point)."""
-    checker = SolidsChecker(machine, solids, screen=False)  # fed one by one, never flushed: no batching
+    checker = _checker(machine, solids, None)  # fed one by one, never flushed: no batching
     seen: dict[tuple, Segment] = {}
     for seg in segs:
         if len(checker.violations) >= max_violations:

@@ -269,16 +269,21 @@ def _oracle(text, machine, result):
 
 
 def _range_against_values(text, rng):
+    range_against_values(text, parse_machine(RANGE_MACHINE, "ranges.toml"), rng, _oracle)
+
+
+def range_against_values(text, machine, rng, oracle):
     """Over the range ``rng`` and at its ends and middle: the range's ``safe`` holds at every value (the
     prover's and the oracle's verdict there), a concrete ``unsafe`` or oracle hit makes the range not
-    ``safe``, a concrete ``safe`` has no oracle hit, and a range witness replays at its own values."""
+    ``safe``, a concrete ``safe`` has no oracle hit, and a range witness replays at its own values.
+    ``oracle(text, machine, result)``: the oracle's first part-in-fixture sample (None: none).  The range's
+    result."""
     name, lo, hi = rng
-    machine = parse_machine(RANGE_MACHINE, "ranges.toml")
     r = verify_text(text, machine, params=[f"{name}={_fmt(lo)}..{_fmt(hi)}"])
     for value in sorted({lo, hi, (lo + hi) / 2}):
         at = machine_at(machine, {name: value})
         concrete = verify_text(text, at)
-        hit = _oracle(text, at, concrete)
+        hit = oracle(text, at, concrete)
         if concrete.verdict.label == "safe":
             assert hit is None, f"safe at {name}={value}, the oracle finds {hit[0].name} in {hit[1].name}"
         if r.verdict.label == "safe":
@@ -289,6 +294,7 @@ def _range_against_values(text, rng):
         if v.kind == "solid":
             again = verify_text(text, machine_at(machine, dict(v.params)))
             assert again.verdict.label == "unsafe" and any(w.line == v.line for w in again.violations), v.note
+    return r
 
 
 @settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.too_slow])
