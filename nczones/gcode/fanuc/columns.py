@@ -12,11 +12,11 @@ runs take), the proof screens it as one chunk, and whatever needs a segment (a f
 reason) gets the interpreter's own.
 
 A segment stays in an object chunk (the path it took before) when it is not a line or rapid, carries a
-payload or a dependency (parameter ranges, tool tips, polar, developed arcs), comes from another file than the
-run's, or has a number that is not such a decimal; on a two-axis machine (a lathe) nothing is converted (the
-corner check's convex-hull refinement keeps the points of object rows only).  Runs shorter than
-:data:`MIN_RUN` rows stay objects (the proof batches those anyway).  ``tests/gcode/fanuc/test_column_runs.py``
-holds the lanes to the exact path.
+payload or a dependency (parameter ranges, tool tips, polar, developed arcs), comes from another file than
+the run's, or has a number that is not such a decimal; so do the first :data:`START` motions, and on a
+two-axis machine (a lathe) every motion (the corner check's convex-hull refinement keeps the points of
+object rows only).  Runs shorter than :data:`MIN_RUN` rows stay objects (the proof batches those anyway).
+``tests/gcode/fanuc/test_column_runs.py`` holds the lanes to the exact path.
 """
 
 from __future__ import annotations
@@ -33,6 +33,10 @@ _UNIT = 10**SCALE
 #: Rows of one column chunk at most, and the least run worth columns.
 MAX_ROWS = 8192
 MIN_RUN = 64
+#: Motions before the first column chunk: the proof screens its batches by columns only from
+#: ``prover.core.SCREEN_MIN_SEGMENTS`` (512) motions on, and a column chunk ends the batch before it (a
+#: short program's motion stays in objects, proved one by one as before)
+START = 512
 #: Coordinates at the scale stay below this (the corner check's column lanes take less than ``2**58``).
 _LIMIT = 2**57
 
@@ -164,10 +168,12 @@ def column_runs(chunks: Iterable[Any], axes: tuple[str, ...], file: str) -> Iter
         if run.segs:
             run = _Run()
 
+    met = 0  # motions so far
     for chunk in chunks:
-        if not isinstance(chunk, MotionChunk) or chunk.scale is not None or chunk.axes != axes:
+        if not isinstance(chunk, MotionChunk) or chunk.scale is not None or chunk.axes != axes or met < START:
             yield from flush()
             yield chunk
+            met += len(chunk) if isinstance(chunk, MotionChunk) else 1
             continue
         for seg in chunk.objects or ():
             if run.add(seg, file):
