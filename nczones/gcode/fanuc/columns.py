@@ -107,19 +107,21 @@ class _Run:
             self.prev_tl, self.tl_row = tl, got[0]
         start, end = seg.start, seg.end
         prev = self.prev_end
+        s_row: list[int] | None
+        e_row: list[int] | None
         if start is prev:  # the common case: the motion starts at the tuple the one before ended at
             s_row = self.prev_row
-            e_row: list[int] | None = []
+            e_row = []
             for i, x in enumerate(end):
                 if x is prev[i]:  # an axis the motion does not move keeps its number
-                    e_row.append(s_row[i])  # type: ignore[union-attr]
+                    e_row.append(s_row[i])
                     continue
                 got = _scaled((x,))
                 if got is None:
                     return False
-                e_row.append(got[0])  # type: ignore[union-attr]
+                e_row.append(got[0])
         else:
-            s_row = _scaled(start)  # type: ignore[assignment]
+            s_row = _scaled(start)
             if s_row is None:
                 return False
             e_row = s_row if end is start else _scaled(end)

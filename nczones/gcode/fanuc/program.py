@@ -243,7 +243,7 @@ class FanucRunner:
         self.rounded: list = []  # (line, text) of literals rounded to the least input increment
         self.rounded_count = 0
         self.library_sources: dict[int, _Source] = {}
-        self._located: dict[tuple[int, int], tuple] = {}  # locate() per (calling file, program)
+        self._located: dict[tuple[int, int], tuple[Any, Any]] = {}  # locate() per (calling file, program)
         self.ctx = Context(self.settings.atan_signed, self._increment_program_units)
         macros = self.settings.macros
         self.custom_g = {int(k[1:]): v for k, v in macros.items() if k[0] == "G"}
@@ -1152,7 +1152,8 @@ class FanucRunner:
         key = (id(caller), program)
         got = self._located.get(key)
         if got is not None and got[0] is caller:  # found before from this file (files do not change)
-            return got[1]
+            found: tuple[_Source, tuple[int, int]] = got[1]
+            return found
         out = self._locate(program, lineno, line, what)
         if len(self._located) < 4096:
             self._located[key] = (caller, out)
