@@ -485,6 +485,10 @@ class MotionChunk:
       (one for the whole chunk, None under G49) is meaningful when ``tools_known``: the vectorized fast path
       records it (its runs have no H or T word), other producers leave ``tools_known`` False.
     * **objects** (``scale`` is None): ``objects`` holds the segments.
+    * **both** (``scale`` is an int and ``objects`` is not None): columns that are the exact image of the
+      segments in ``objects``, row for row (``nczones.gcode.fanuc.columns``: runs of the Fanuc full
+      interpreter's straight moves); consumers may read the columns, and ``segments()`` and ``rows()`` give
+      the segments themselves (their spans, feeds and frames), not views of the columns.
 
     ``segments()`` gives per-segment views in both forms, so consumers may
     always fall back to it.
@@ -527,12 +531,12 @@ class MotionChunk:
             return dataclasses.replace(self, objects=(self.objects or ())[a:b])
         return dataclasses.replace(self, **{
             f.name: getattr(self, f.name)[a:b] for f in dataclasses.fields(self)
-            if f.name not in ("axes", "scale", "file", "objects", "frame", "tool_register", "tools_known")
+            if f.name not in ("axes", "scale", "file", "frame", "tool_register", "tools_known")
             and getattr(self, f.name) is not None})
 
     def segments(self, lines: dict[int, str] | None = None) -> Iterator[Segment]:
         """Per-segment views (exact Fractions); ``lines`` maps line numbers to source text."""
-        if self.scale is None:
+        if self.scale is None or self.objects is not None:
             yield from self.objects or ()
             return
         den = 10**self.scale

@@ -579,7 +579,14 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
     # the corners the control may round (specs/path-modes.md), proved as the motion passes
     corners = CornerCheck(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
                           options.run_limits())
-    stream = corners.watch(with_text(run))
+    motion: Iterable[Any] = run
+    if run.dialect == "fanuc" and not options.ranges(machine):
+        # the full interpreter's runs of straight moves to the column lanes, exactly (not with parameter ranges:
+        # their motion goes one by one, as the corner check widens its boxes by them)
+        from ..gcode.fanuc.columns import column_runs
+
+        motion = column_runs(run, run.interpreter.axes, run.interpreter.file)
+    stream = corners.watch(with_text(motion))
     spindle = _spindle_check(machine, run)
     if spindle is not None:  # the tool the program put in the spindle against the assembly the solids take
         stream = spindle.watch(stream)

@@ -1425,6 +1425,11 @@ def _chunk_rows(chunk: MotionChunk, rows: Iterable[int]) -> Iterator[Segment]:
         and chunk.start is not None and chunk.end is not None and chunk.block is not None \
         and chunk.tool_length is not None, "the columns form"
     den = 10**chunk.scale
+    if chunk.objects is not None:  # columns with their segments (MotionChunk): the segments themselves
+        objects = chunk.objects
+        for i in rows:
+            yield objects[i]
+        return
     for i in rows:
         kind = SegmentKind(int(chunk.kind[i]))
         line_no = int(chunk.line[i])

@@ -47,7 +47,7 @@ from fractions import Fraction
 from typing import Any, TypeAlias
 
 from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_sub
-from ..lexer import fraction_raw, to_double, to_fraction
+from ..lexer import fraction_raw, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "EvalError",
@@ -183,11 +183,14 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
     (Fraction(6173, 500), Fraction(-3, 1))
     """
-    q: Fraction = value[1] if value[1] is not None else to_double(value[0])
-    qn, qd = q.numerator, q.denominator
+    q: Fraction | None = value[1]
+    if q is None:  # the double's exact value (its ratio is in lowest terms), without building a Fraction first
+        qn, qd = value[0].as_integer_ratio()
+    else:
+        qn, qd = q.numerator, q.denominator
     sn, sd = step.numerator, step.denominator
     if sn == 1 and sd % qd == 0:  # already a multiple of the step (a decimal literal, an exact sum)
-        return q
+        return q if q is not None else to_fraction(qn, qd)
     # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)
     num, den = abs(qn) * sd, qd * sn
     n = (2 * num + den) // (2 * den)

@@ -308,7 +308,7 @@ class FanucInterpreter(Interpreter):
             return False
         if m is not None and m not in (3, 4, 5, 7, 8, 9):
             return False
-        if not super()._lean(g, m, f, extra):  # S: no LinuxCNC spindle checks
+        if not Interpreter._lean(self, g, m, f, extra):  # S: no LinuxCNC spindle checks (no class between)
             return False
         if m is not None:
             self.last["M"] = Fraction(m)

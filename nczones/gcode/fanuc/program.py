@@ -243,6 +243,7 @@ class FanucRunner:
         self.rounded: list = []  # (line, text) of literals rounded to the least input increment
         self.rounded_count = 0
         self.library_sources: dict[int, _Source] = {}
+        self._located: dict[tuple[int, int], tuple[Any, Any]] = {}  # locate() per (calling file, program)
         self.ctx = Context(self.settings.atan_signed, self._increment_program_units)
         macros = self.settings.macros
         self.custom_g = {int(k[1:]): v for k, v in macros.items() if k[0] == "G"}
@@ -1083,24 +1084,33 @@ class FanucRunner:
             count, program = divmod(program, 10000)  # M98 P30002: the digits before the last four repeat
         if count == 0:
             return here
-        self.repeat_count(f"M98 {pword[4]}{' ' + lword[4] if lword is not None else ''} (subprogram O{program})",
-                          count, lineno, line, word[2], word[3])
+        if count > self.max_loops:  # the message is built only when it is needed
+            self.repeat_count(f"M98 {pword[4]}{' ' + lword[4] if lword is not None else ''} (subprogram "
+                              f"O{program})", count, lineno, line, word[2], word[3])
         return self.call_sub(program, count, here, lineno, line, "M98")
 
     def call_words(self, words: list, what: str, lineno: int, line: str,
                    gword: tuple) -> tuple[int, int, dict[int, tuple]]:
-        pword = next((v for v in words if v[0] == "P"), None)
+        pword = lword = None
+        rest = []  # the argument words: all but the first P and the first L
+        for v in words:
+            letter = v[0]
+            if letter == "P" and pword is None:
+                pword = v
+            elif letter == "L" and lword is None:
+                lword = v
+            else:
+                rest.append(v)
         if pword is None or pword[1].denominator != 1 or pword[1] < 0:
             raise self.error("GC317", f"{what} needs a P word with the macro's program number ({what} P9010 A1 B2)",
                              lineno, line, gword[2], gword[3])
-        lword = next((v for v in words if v[0] == "L"), None)
         repeats = 1
         if lword is not None:
             if lword[1].denominator != 1 or lword[1] < 0:
                 raise self.error("GC317", f"{what} {lword[4]}: the repeat count must be a non-negative integer",
                                  lineno, line, lword[2], lword[3])
             repeats = int(lword[1])
-        args = self.arguments([v for v in words if v is not pword and v is not lword], lineno, line)
+        args = self.arguments(rest, lineno, line)
         return int(pword[1]), repeats, args
 
     def arguments(self, words: list, lineno: int, line: str) -> dict[int, tuple]:
@@ -1138,6 +1148,18 @@ class FanucRunner:
 
     def locate(self, program: int, lineno: int, line: str, what: str) -> tuple[_Source, tuple[int, int]]:
         """Where program ``O<program>`` begins: in the calling file, the main file, else the library folder."""
+        caller = self.frames[-1].source
+        key = (id(caller), program)
+        got = self._located.get(key)
+        if got is not None and got[0] is caller:  # found before from this file (files do not change)
+            found: tuple[_Source, tuple[int, int]] = got[1]
+            return found
+        out = self._locate(program, lineno, line, what)
+        if len(self._located) < 4096:
+            self._located[key] = (caller, out)
+        return out
+
+    def _locate(self, program: int, lineno: int, line: str, what: str) -> tuple[_Source, tuple[int, int]]:
         for here in dict.fromkeys((self.frames[-1].source, self.main)):
             body = here.program(program)
             if body is not None:
@@ -1165,7 +1187,8 @@ class FanucRunner:
                    what: str, custom: bool = False) -> tuple[int, int]:
         if repeats == 0:
             return ret
-        self.repeat_count(f"{what} P{program} L{repeats}", repeats, lineno, line)
+        if repeats > self.max_loops:  # the message is built only when it is needed
+            self.repeat_count(f"{what} P{program} L{repeats}", repeats, lineno, line)
         source, body = self.locate(program, lineno, line, what)
         frame = _Frame("macro", source, program, ret, body, repeats, self.vars.local, args, custom=custom)
         self.push(frame, lineno, line)
