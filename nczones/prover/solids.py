@@ -551,6 +551,15 @@ class SolidsChecker:
             return None
         return self._box_hits(seg, parts, lo_c, hi_c) is None
 
+    def box_meets(self, seg: Segment, lo_c: list, hi_c: list) -> tuple[Part, Fixture] | bool | None:
+        """:meth:`box_clear` naming what may meet: the first part and fixture (in the machine file's terms), False
+        when every part stays out of every fixture, None when that is not known (a reason is given)."""
+        clear = self.box_clear(seg, lo_c, hi_c)
+        if clear is not False:
+            return None if clear is None else False
+        parts = self.solids.parts_for(seg.tool_register) or ()
+        return self._box_hits(seg, parts, lo_c, hi_c) or False
+
     def _unknown(self, seg: Segment, code: str, message: str) -> None:
         self._blocks.add(seg.block)
         self.reasons.append(Reason(message, seg.span, seg.block, code))
