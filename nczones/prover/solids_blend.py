@@ -204,55 +204,57 @@ class SolidsCornerCheck:
         n = len(chunk)
         if n == 0:
             return
-        assert chunk.block is not None
+        assert chunk.block is not None and chunk.start is not None and chunk.end is not None
         first, last = int(chunk.block[0]), int(chunk.block[-1])
-        if n < 2 or bisect_right(self.modes, first, key=lambda e: e[0]) != bisect_right(self.modes, last,
-                                                                                          key=lambda e: e[0]):
+        moving = np.flatnonzero(~(np.asarray(chunk.start) == np.asarray(chunk.end)).all(axis=1))
+        if len(moving) < 2 or bisect_right(self.modes, first, key=lambda e: e[0]) != bisect_right(
+                self.modes, last, key=lambda e: e[0]):
             for seg in chunk.segments():  # the mode changes inside the chunk: one motion at a time
                 self._segment(seg)
             return
+        j0 = int(moving[0])
+        for k in range(j0 + 1):  # the corner with the motion before the chunk, and the first motion's bound
+            self._segment(_row(chunk, k))
         mode = self.mode_of(first)
-        self._segment(_row(chunk, 0))  # its corner with the motion before the chunk, and its own bound
         if not mode.blend:
             return  # no corner inside the chunk is rounded (_segment left prev_stop set)
         bound = mode.bound()
         if bound is not None:  # > 0: a blending mode with a tolerance
             self.codes.setdefault(bound, set()).add(mode.code)
-            self._checker(bound).feed_chunk(chunk.rows(1, n))
+            self._checker(bound).feed_chunk(chunk.rows(j0 + 1, n))
         elif mode.dialect == "fanuc" or mode.naive > 0:
-            self._corner(_row(chunk, 0), _row(chunk, 1), mode)  # named once, the chunk's other corners counted
-            self.more += n - 2
-        elif not self._screen_corners(chunk):
-            for k in range(1, n):
+            self._corner(_row(chunk, j0), _row(chunk, int(moving[1])), mode)  # named once, the others counted
+            self.more += len(moving) - 2
+        elif not self._screen_corners(chunk, moving, mode):
+            for k in range(j0 + 1, n):
                 self._segment(_row(chunk, k))
             return
-        self.prev, self.prev_stop = _row(chunk, n - 1), False
+        self.prev, self.prev_stop = _row(chunk, int(moving[-1])), False
 
-    def _screen_corners(self, chunk: MotionChunk) -> bool:
-        """The corners between rows ``k - 1`` and ``k`` of a chunk in LinuxCNC G64 without tolerance, screened
-        with numpy by the box of each corner's three points; those the screen leaves are proved exactly.  False
-        when the chunk is not screened (the caller proves its corners one by one)."""
+    def _screen_corners(self, chunk: MotionChunk, moving: np.ndarray, mode: PathMode) -> bool:
+        """The corners between consecutive ``moving`` rows (those of non-zero length: the canonical layer drops
+        the others) of a chunk in LinuxCNC G64 without tolerance, screened with numpy by the box of each
+        corner's three points; those the screen leaves are proved exactly.  False when the chunk is not
+        screened (the caller proves its corners one by one)."""
         parts = self.solids.parts_for(chunk.tool_register)
         if not self.static or not chunk.tools_known or parts is None or chunk.tool_length is None:
             return False
         assert chunk.kind is not None and chunk.start is not None and chunk.end is not None
-        n = len(chunk)
-        kinds = np.asarray(chunk.kind)
+        kinds = np.asarray(chunk.kind)[moving]
         allowed = [SegmentKind.LINE.value] + ([] if self.dogleg else [SegmentKind.RAPID.value])
-        start, end = np.asarray(chunk.start), np.asarray(chunk.end)
-        length = np.asarray(chunk.tool_length)
-        if (not np.isin(kinds, allowed).all() or (start == end).all(axis=1).any()
-                or not (start[1:] == end[:-1]).all() or not (length == length[0]).all()):
-            return False  # arcs, dwells, dogleg rapids, moves of length 0, a gap or a tool length change
+        start, end = np.asarray(chunk.start)[moving], np.asarray(chunk.end)[moving]
+        length = np.asarray(chunk.tool_length)[moving]
+        if not np.isin(kinds, allowed).all() or not (start[1:] == end[:-1]).all() or not (length == length[0]).all():
+            return False  # arcs, dwells, dogleg rapids, a gap or a tool length change
         lo = np.minimum(np.minimum(start[:-1], end[:-1]), end[1:])
         hi = np.maximum(np.maximum(start[:-1], end[:-1]), end[1:])
-        boxes = replace(chunk, start=lo, end=hi, kind=np.full(n - 1, SegmentKind.LINE.value, dtype=kinds.dtype),
-                        tool_length=length[1:], line=None if chunk.line is None else np.asarray(chunk.line)[1:],
-                        block=np.asarray(chunk.block)[1:])
-        hit = needs_exact_columns(boxes, 0, n - 1, self.xyz, parts, self.solids.fixtures, lambda _p, _f: None).hit
-        mode = self.mode_of(int(np.asarray(chunk.block)[0]))
+        m = len(moving) - 1
+        boxes = replace(chunk, start=lo, end=hi, kind=np.full(m, SegmentKind.LINE.value, dtype=kinds.dtype),
+                        tool_length=length[1:], line=None if chunk.line is None else np.asarray(chunk.line)[moving[1:]],
+                        block=np.asarray(chunk.block)[moving[1:]])
+        hit = needs_exact_columns(boxes, 0, m, self.xyz, parts, self.solids.fixtures, lambda _p, _f: None).hit
         for k in np.flatnonzero(hit).tolist():
-            self._corner(_row(chunk, k), _row(chunk, k + 1), mode)
+            self._corner(_row(chunk, int(moving[k])), _row(chunk, int(moving[k + 1])), mode)
         return True
 
     # ------------------------------------------------------------------ corners without tolerance
