@@ -519,40 +519,18 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
 
 
 def _solids_corner_check(machine: Machine, run: Interpretation, options: VerifyOptions) -> Any:
-    """The proof of a mill's tool solids over the corners the control may round
-    (:class:`~nczones.prover.solids_blend.SolidsCornerCheck`); None without mill solids and fixtures."""
+    """The proof of the tool solids over the corners the control may round
+    (:class:`~nczones.prover.solids_blend.SolidsCornerCheck`); None without solids and fixtures."""
     if not declares_solids(machine):
         return None
-    from ..lathe_solids import LatheSolids
     from ..solids import machine_solids
 
     solids = machine_solids(machine)
-    if solids is None or not solids.fixtures or isinstance(solids, LatheSolids):
+    if solids is None or not solids.fixtures:
         return None
     from ..prover.solids_blend import SolidsCornerCheck
 
     return SolidsCornerCheck(machine, solids, options.ranges(machine), run.interpreter.path_modes)
-
-
-def _solids_blend_reasons(machine: Machine, run: Interpretation) -> tuple[Reason, ...]:
-    """A lathe's tool solids are proved on the programmed path (:mod:`nczones.prover.lathe_solids`); where the
-    control may round a corner (G64, Fanuc cutting mode) the tool sweeps the rounded path, which that proof does
-    not model: a reason the verdict cannot be ``safe`` (specs/path-modes.md).  A mill's solids are proved over
-    the rounded corners (:func:`_solids_corner_check`)."""
-    if not declares_solids(machine):
-        return ()
-    from ..lathe_solids import LatheSolids
-    from ..solids import machine_solids
-
-    solids = machine_solids(machine)
-    if solids is None or not solids.fixtures or not isinstance(solids, LatheSolids):
-        return ()
-    blending = sorted({m.code for _block, m in run.interpreter.path_modes if m.blend})
-    if not blending:
-        return ()
-    return (Reason(f"tool solids are proved on the programmed path; the program runs in {', '.join(blending)}, "
-                   "where the control may round corners and the tool sweeps the rounded path: set [machine] "
-                   "path_mode = \"G61\" (exact path) if the machine runs so", None, None, "VF210"),)
 
 
 def _with_solid_corners(result: Result, check: Any, upto: int | None) -> Result:
@@ -618,7 +596,6 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
         upto = max(v.block for v in result.violations) if result.truncated and result.violations else None
         result = replace(result, reasons=result.reasons + tuple(corners.finish((v.block for v in result.violations),
                                                                               upto)))
-        result = replace(result, reasons=result.reasons + _solids_blend_reasons(machine, run))
         if solid_corners is not None:
             result = _with_solid_corners(result, solid_corners, upto)
         if spindle is not None:

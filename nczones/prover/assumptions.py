@@ -70,7 +70,10 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "program's own M6 or M61 put another tool in the spindle is unknown) and its tip is at "
     "machine Z minus the active tool length; fixtures are where the machine file puts them (forbid box "
     "zones, stepped tables of X/Y/Z as a box per region, forbid XY polygons as prisms included), a "
-    "fixture with a `frame` at that work offset as the program sets it.",
+    "fixture with a `frame` at that work offset as the program sets it. The tool is rigid and moves with the "
+    "controlled point without turning, so where the control rounds a corner every part moves by the same "
+    "vector as the controlled point, within the corner enclosures above (a mill's solids are proved over "
+    "them; a lathe's corners are unknown).",
     "Lathe tool solids (a lathe's [[tools]] parts): the tool lies on centre height (its tip and its "
     "parts' section in the plane through the spindle axis, Y = 0); every part is the rectangle the "
     "machine file gives, enclosing the real insert, bar or holder in that plane (a round bar along Z by "

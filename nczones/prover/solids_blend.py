@@ -45,6 +45,7 @@ from typing import Any
 import numpy as np
 
 from ..exact import format_decimal
+from ..lathe_solids import LathePart, LatheSolids
 from ..machine import Machine, RapidMode
 from ..motion import MotionChunk, PathMode, Segment, SegmentKind
 from ..solids import FixturePrism, Part, Solids
@@ -53,7 +54,7 @@ from .result import Reason
 from .solids import SolidsChecker
 from .solids_screen import needs_exact_columns
 
-__all__ = ["SolidsCornerCheck", "grown_solids", "TOLERANCE_CODE", "REGION_CODE", "MODE_CODE"]
+__all__ = ["SolidsCornerCheck", "grown_solids", "grown_lathe_solids", "TOLERANCE_CODE", "REGION_CODE", "MODE_CODE"]
 
 #: a part may meet a fixture within a G64 P / path_tolerance bound of the programmed path
 TOLERANCE_CODE = "VF233"
@@ -87,6 +88,20 @@ def grown_solids(solids: Solids, d: Fraction) -> Solids:
                    spindle=tuple(map(grow, solids.spindle)))
 
 
+def grown_lathe_solids(solids: LatheSolids, d: Fraction) -> LatheSolids:
+    """A lathe's turret tools with every part's rectangle grown by ``d`` on each side, in X and in Z (it holds
+    the part displaced by any vector of length at most ``d`` in the section).
+
+    >>> s = LatheSolids({1: (LathePart("bar", Fraction(-8), Fraction(8), Fraction(6), Fraction(180)),)}, ())
+    >>> grown_lathe_solids(s, Fraction(1, 2)).tools[1][0].rect()
+    (Fraction(-17, 2), Fraction(17, 2), Fraction(11, 2), Fraction(361, 2))
+    """
+    def grow(p: LathePart) -> LathePart:
+        return replace(p, x0=p.x0 - d, x1=p.x1 + d, z0=p.z0 - d, z1=p.z1 + d)
+
+    return replace(solids, tools={n: tuple(map(grow, ps)) for n, ps in solids.tools.items()})
+
+
 def _where(seg: Segment) -> str:
     return f"line {seg.line}" if seg.line is not None else f"block {seg.block}"
 
@@ -102,16 +117,19 @@ class SolidsCornerCheck:
     ``modes``: the interpreter's table of path modes, ``(first block index, PathMode)`` in order, as
     :class:`nczones.prover.blend.CornerCheck` reads it."""
 
-    def __init__(self, machine: Machine, solids: Solids, ranges: Sequence[Any],
+    def __init__(self, machine: Machine, solids: Solids | LatheSolids, ranges: Sequence[Any],
                  modes: list[tuple[int, PathMode]]) -> None:
         self.machine = machine
         self.solids = solids
+        self.lathe = isinstance(solids, LatheSolids)  # a lathe's turret tools (nczones.lathe_solids), not a zone kind
         self.ranges = tuple(ranges)
         self.modes = modes
         self.dogleg = machine.rapid_mode is RapidMode.DOGLEG
         axes = machine.axis_names
-        self.xyz = (axes.index("X"), axes.index("Y"), axes.index("Z"))
-        self.nominal = SolidsChecker(machine, solids, self.ranges, screen=False)  # box tests of corner regions
+        self.xyz = (axes.index("X"), axes.index("Y") if "Y" in axes else 0, axes.index("Z"))
+        # box tests of corner regions (a mill's; a lathe's corner regions are not proved: VF235)
+        self.nominal = None if isinstance(solids, LatheSolids) else SolidsChecker(machine, solids, self.ranges,
+                                                                                  screen=False)
         self.grown: dict[Fraction, SolidsChecker] = {}
         self.codes: dict[Fraction, set[str]] = {}  # the modes each bound came from, for the reasons
         self.prev: Segment | None = None
@@ -120,7 +138,8 @@ class SolidsCornerCheck:
         self.more = 0
         self.corners = 0  # corners without tolerance proved (for tests and measurements)
         # the column screen compares fixtures as the machine file gives them (SolidsChecker's own condition)
-        self.static = not self.ranges and not any(fx.frame or isinstance(fx, FixturePrism) for fx in solids.fixtures)
+        self.static = not self.lathe and not self.ranges and not any(
+            getattr(fx, "frame", "") or isinstance(fx, FixturePrism) for fx in solids.fixtures)
 
     # ------------------------------------------------------------------ the stream
     def watch(self, items: Iterable[Any]) -> Iterator[Any]:
@@ -193,10 +212,16 @@ class SolidsCornerCheck:
             self._checker(d).feed(seg)
         self.prev, self.prev_stop = seg, not mode.blend
 
-    def _checker(self, d: Fraction) -> SolidsChecker:
+    def _checker(self, d: Fraction) -> Any:
         got = self.grown.get(d)
         if got is None:
-            got = self.grown[d] = SolidsChecker(self.machine, grown_solids(self.solids, d), self.ranges, screen=None)
+            if isinstance(self.solids, LatheSolids):
+                from .lathe_solids import LatheSolidsChecker
+
+                got = LatheSolidsChecker(self.machine, grown_lathe_solids(self.solids, d))
+            else:
+                got = SolidsChecker(self.machine, grown_solids(self.solids, d), self.ranges, screen=None)
+            self.grown[d] = got
         return got
 
     # ------------------------------------------------------------------ column chunks
@@ -260,6 +285,12 @@ class SolidsCornerCheck:
     # ------------------------------------------------------------------ corners without tolerance
     def _corner(self, a: Segment, b: Segment, mode: PathMode) -> None:
         """The corner between ``a`` and ``b``, rounded without tolerance in ``mode`` (``a``'s)."""
+        if self.nominal is None:
+            self._add(Reason(f"the tool solids may meet a fixture in {_corner_name(a, b)}: {mode.code} may round it "
+                             "with no tolerance, and a lathe's tool solids are proved over rounded corners only "
+                             "within a tolerance (give G64 P, path_tolerance, or G61)", a.span, a.block, MODE_CODE),
+                      a.block, b.block)
+            return
         if mode.dialect == "fanuc" or mode.naive > 0:
             why = ("a Fanuc control in cutting mode without [machine] path_tolerance (acc/dec after interpolation "
                    "rounds corners by an amount the machine file does not bound)" if mode.dialect == "fanuc" else
@@ -312,6 +343,7 @@ class SolidsCornerCheck:
         """None when the tool of ``a`` and of ``b`` clears every fixture anywhere in the box ``lo..hi``; else what
         it may meet (``the holder (…) and `vise```)."""
         same = (a.tool_register, a.tool_length, a.frame) == (b.tool_register, b.tool_length, b.frame)
+        assert self.nominal is not None  # a mill (_corner)
         for seg in (a,) if same else (a, b):
             got = self.nominal.box_meets(seg, lo, hi)
             if got is None:

@@ -210,3 +210,29 @@ def test_holder_corner_unknown_names_the_lines():
     msg = next(x.message for x in r.reasons if x.code == "VF234")
     # lines: 1-3 header, 4 the mode, 5 G0, 6 G1 Z10, 7 the first motion, 8 the second
     assert "between line 7 and line 8" in msg and "holder" in msg
+
+
+# ---------------------------------------------------------------------------------------- a lathe
+
+def test_lathe_solids_with_a_path_tolerance():
+    """A lathe's turret tool (specs/machines/lathe_solids.toml, Fanuc): the boring example moved out to X40
+    brings the insert 9.013 mm from the jaws (the least clearance the G61 proof prints, a lower bound).  In
+    cutting mode with path_tolerance 3 the parts grown by 3 on every side still clear them (safe); with 10
+    (more than the clearance) the verdict is not safe (VF233).  Without path_tolerance the corners are unknown
+    (VF235), as before (VF210)."""
+    text = (ROOT / "specs/examples/programs/boring_bar_clears_chuck.nc").read_text(encoding="utf-8")
+    text = text.replace("X30. Z1.", "X40. Z1.")
+    lathe = (ROOT / "specs/machines/lathe_solids.toml").read_text(encoding="utf-8")
+    exact = verify_text(text, parse_machine(lathe))
+    assert exact.verdict.label == "safe"
+    assert any("insert" in n and "9.013 mm from `jaws`" in n for n in exact.notes), exact.notes
+
+    def run(extra: str):
+        return verify_text(text, parse_machine(lathe.replace('path_mode = "G61"', 'path_mode = "G64"' + extra)))
+
+    assert run('\npath_tolerance = "3"').verdict.label == "safe"
+    r = run('\npath_tolerance = "10"')
+    assert r.verdict.label == "unknown" and _codes(r) == {"VF233"}, r.reasons
+    assert any("insert" in x.message and "`jaws`" in x.message for x in r.reasons)
+    r = run("")
+    assert r.verdict.label == "unknown" and _codes(r) == {"VF235"}, r.reasons
