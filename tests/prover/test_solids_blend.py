@@ -190,12 +190,15 @@ def test_oracle_blends_reach_the_vise_and_the_prover_is_not_safe(monkeypatch):
 
 
 @settings(max_examples=12, deadline=None)
-@given(st.sampled_from([("G64", 0.0), ("G64 P2", 2.0), ("G64 P10", 10.0), ("G64 P20 Q0", 20.0)]),
-       st.integers(0, 40).map(lambda k: Decimal(k) / 4), st.integers(20, 160),
-       st.floats(100, 3000), st.floats(20, 200))
+@given(st.sampled_from([("G64", 0.0), ("G64 P2", 2.0), ("G64 P10", 10.0), ("G64 P20 Q0", 20.0), ("G64 P20", 20.0)]),
+       st.integers(0, 12).map(lambda k: Decimal(k) / 4), st.integers(20, 160),
+       st.floats(100, 1000), st.floats(40, 200))
 def test_oracle_never_a_wrong_safe(mode, c, legs, a, v):
     """Generated corners around the vise: where the planner's model moves a part into a fixture, the prover
-    is not ``safe`` (the programmed path clears by c >= 0, so the verdict is safe or unknown)."""
+    is not ``safe`` (the programmed path clears by c >= 0, so the verdict is safe or unknown).  The ranges
+    are biased to corners the planner rounds deeply (clearance up to 3, slow acceleration, fast feeds): a
+    sample of 30 such corners (clearance 0..2, legs 60..160, 100..600 mm/s², 60..200 mm/s) had 18 where the
+    model's blend puts the holder into the vise; with clearance up to 10 and 100..3000 mm/s², none of 30."""
     code, tol = mode
     r = verify_text(_program(code, c, legs, feed=int(v * 60)), _machine())
     assert r.verdict.label != "unsafe" or c == 0, r.violations
