@@ -130,7 +130,7 @@ class SolidsCornerCheck:
         # box tests of corner regions (a mill's; a lathe's corner regions are not proved: VF235)
         self.nominal = None if isinstance(solids, LatheSolids) else SolidsChecker(machine, solids, self.ranges,
                                                                                   screen=False)
-        self.grown: dict[Fraction, SolidsChecker] = {}
+        self.grown: dict[Fraction, Any] = {}  # SolidsChecker, or a lathe's LatheSolidsChecker
         self.codes: dict[Fraction, set[str]] = {}  # the modes each bound came from, for the reasons
         self.prev: Segment | None = None
         self.prev_stop = True
@@ -213,7 +213,7 @@ class SolidsCornerCheck:
         self.prev, self.prev_stop = seg, not mode.blend
 
     def _checker(self, d: Fraction) -> Any:
-        got = self.grown.get(d)
+        got: Any = self.grown.get(d)
         if got is None:
             if isinstance(self.solids, LatheSolids):
                 from .lathe_solids import LatheSolidsChecker
@@ -261,8 +261,10 @@ class SolidsCornerCheck:
         the others) of a chunk in LinuxCNC G64 without tolerance, screened with numpy by the box of each
         corner's three points; those the screen leaves are proved exactly.  False when the chunk is not
         screened (the caller proves its corners one by one)."""
+        if isinstance(self.solids, LatheSolids) or not self.static or not chunk.tools_known:
+            return False
         parts = self.solids.parts_for(chunk.tool_register)
-        if not self.static or not chunk.tools_known or parts is None or chunk.tool_length is None:
+        if parts is None or chunk.tool_length is None:
             return False
         assert chunk.kind is not None and chunk.start is not None and chunk.end is not None
         kinds = np.asarray(chunk.kind)[moving]
@@ -349,7 +351,7 @@ class SolidsCornerCheck:
             if got is None:
                 self.nominal.reasons.clear()
                 return "the tool solids (the tool or the fixtures' place is not known there)"
-            if got:
+            if isinstance(got, tuple):
                 part, fx = got
                 return f"`{fx.name}` by the {part.label()}"
         return None
