@@ -239,3 +239,23 @@ def test_lathe_solids_with_a_path_tolerance():
     assert any("insert" in x.message and "`jaws`" in x.message for x in r.reasons)
     r = run("")
     assert r.verdict.label == "unknown" and _codes(r) == {"VF235"}, r.reasons
+
+
+def test_reference_controller_blending_agrees():
+    """The reference controller rounds the corner with LinuxCNC's blend arcs (`simulate`, blending where the
+    machine starts in G64 and gives its accelerations: 200 mm/s² here, F6000) and checks the solids pulse by
+    pulse, independently of the prover: in G64 and G64 P20 its holder alarms on the blend arc (line 7, Y below
+    the programmed 112.5) and the prover is not safe; in G64 P0.4 neither alarms nor doubts (safe)."""
+    from nczones.controller import simulate
+    from nczones.gcode import interpret_text
+
+    m = parse_machine(TEXT.replace('path_mode = "G61"', 'path_mode = "G64"')
+                      + '\n[machine.acceleration]\nX = "200"\nY = "200"\nZ = "200"\n')
+    for mode, alarm in (("G64", True), ("G64 P20", True), ("G64 P0.4", False)):
+        text = _program(mode, Decimal(1))
+        sim = simulate(interpret_text(text, m, fast=False), m)
+        assert bool(sim.alarms) is alarm, (mode, sim.alarms)
+        if alarm:
+            a = sim.alarms[0]
+            assert a.line == 7 and a.zone == "vise" and a.position[1] < Fraction(225, 2), a
+        assert verify_text(text, m).verdict.label == ("unknown" if alarm else "safe"), mode
