@@ -259,3 +259,20 @@ def test_reference_controller_blending_agrees():
             a = sim.alarms[0]
             assert a.line == 7 and a.zone == "vise" and a.position[1] < Fraction(225, 2), a
         assert verify_text(text, m).verdict.label == ("unknown" if alarm else "safe"), mode
+
+
+def test_tolerance_long_program_grown_parts_on_the_columns(monkeypatch):
+    """In G64 P the > 512-motion program's motions reach the grown parts' checker as column chunks (its numpy
+    screen on the columns), not one segment at a time."""
+    rows = []
+    checker = solids_blend.SolidsCornerCheck._checker
+
+    def spy(self, d):
+        got = checker(self, d)
+        rows.append(got)
+        return got
+
+    monkeypatch.setattr(solids_blend.SolidsCornerCheck, "_checker", spy)
+    r = verify_text(_program("G64 P0.6", Decimal(1), before=_long_prefix()), _machine())
+    assert r.verdict.label == "unknown" and _codes(r) == {"VF233"}
+    assert rows and max(c.column_rows for c in rows) > 512
