@@ -534,8 +534,10 @@ def _solids_corner_check(machine: Machine, run: Interpretation, options: VerifyO
 
 
 def _with_solid_corners(result: Result, check: Any, upto: int | None) -> Result:
-    """``result`` with the reasons of the solids' corner proof; a reason turns a ``safe`` verdict ``unknown``."""
+    """``result`` with the reasons and notes (least clearances on the rounded path) of the solids' corner proof;
+    a reason turns a ``safe`` verdict ``unknown``."""
     extra = tuple(check.finish((v.block for v in result.violations), upto))
+    result = replace(result, notes=tuple(result.notes) + tuple(check.notes()))
     if not extra:
         return result
     verdict = Verdict.UNKNOWN if result.verdict is Verdict.SAFE else result.verdict

@@ -172,6 +172,21 @@ class SolidsCornerCheck:
                               "the fixtures", None, None, REGION_CODE))
         return out
 
+    def notes(self) -> list[str]:
+        """The least clearances over the motions next to corners rounded within a tolerance ``d``: a part grown
+        by ``d`` that clears a fixture by ``c`` holds the real part, displaced by at most ``d``, at least ``c``
+        from it (call after :meth:`finish`)."""
+        out = []
+        for d in sorted(self.grown):
+            modes = ", ".join(sorted(self.codes.get(d, ())))
+            for (label, fx), (c, line) in sorted(self.grown[d].clearance.items()):
+                if c >= 0:
+                    out.append(f"least clearance on the path the control may move ({modes}: within "
+                               f"{format_decimal(d)} mm of the programmed one, next to its rounded corners): "
+                               f"{label.split(' (')[0]} is at least {format_decimal(Fraction(int(c * 1000), 1000))} mm "
+                               f"from `{fx}` at line {line}")
+        return out
+
     def mode_of(self, block: int) -> PathMode:
         k = bisect_right(self.modes, block, key=lambda e: e[0]) - 1
         return self.modes[max(k, 0)][1]

@@ -173,6 +173,9 @@ def test_solids_under_g64_are_proved_on_the_rounded_corners():
     for machine, program in ((blending, text), (_mill(), "G64\n" + text), (_mill(), "G64 P4\n" + text)):
         r = verify_text(program, machine)
         assert r.verdict.label == "safe", r.reasons
+    # the least clearance on the rounded path: the holder grown by 8 mm is 8.5 - 8 = 0.5 mm from the jaw
+    assert any(n.startswith("least clearance on the path the control may move (G64 P4: within 8 mm")
+               and "holder is at least 0.5 mm from `vise`" in n for n in r.notes), r.notes
     r = verify_text("G64 P5\n" + text, _mill())
     assert r.verdict.label == "unknown" and {x.code for x in r.reasons} == {"VF233"}, r.reasons
     assert any("holder" in x.message and "10 mm" in x.message for x in r.reasons)
