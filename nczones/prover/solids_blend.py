@@ -135,7 +135,7 @@ class SolidsCornerCheck:
         self.prev: Segment | None = None
         self.prev_stop = True
         self.found: list[tuple[Reason, int, int]] = []  # (reason, first block, last block)
-        self.more = 0
+        self.more: dict[str, int] = {}  # corners past the reasons kept, per code
         self.corners = 0  # corners without tolerance proved (for tests and measurements)
         # the column screen compares fixtures as the machine file gives them (SolidsChecker's own condition)
         self.static = not self.lathe and not self.ranges and not any(
@@ -165,11 +165,13 @@ class SolidsCornerCheck:
         bad = set(violating)
         out = [r for r, lo, hi in self.found
                if bad.isdisjoint((lo, hi)) and (upto is None or hi <= upto)]
-        more = self.more + max(0, len(out) - MAX_REASONS)
+        more = dict(self.more)
+        for r in out[MAX_REASONS:]:
+            more[r.code or REGION_CODE] = more.get(r.code or REGION_CODE, 0) + 1
         out = out[:MAX_REASONS]
-        if more and upto is None:
-            out.append(Reason(f"{more} more blended corner(s) where the tool solids could not be proved to clear "
-                              "the fixtures", None, None, REGION_CODE))
+        if upto is None:
+            out += [Reason(f"{n} more blended corner(s) where the tool solids could not be proved to clear the "
+                           "fixtures", None, None, code) for code, n in sorted(more.items()) if n]
         return out
 
     def notes(self) -> list[str]:
@@ -193,7 +195,8 @@ class SolidsCornerCheck:
 
     def _add(self, reason: Reason, lo: int, hi: int) -> None:
         if len(self.found) >= 4 * MAX_REASONS:
-            self.more += 1
+            code = reason.code or REGION_CODE
+            self.more[code] = self.more.get(code, 0) + 1
             return
         self.found.append((reason, lo, hi))
 
@@ -264,7 +267,7 @@ class SolidsCornerCheck:
             self._checker(bound).feed_chunk(chunk.rows(j0 + 1, n))
         elif mode.dialect == "fanuc" or mode.naive > 0:
             self._corner(_row(chunk, j0), _row(chunk, int(moving[1])), mode)  # named once, the others counted
-            self.more += len(moving) - 2
+            self.more[MODE_CODE] = self.more.get(MODE_CODE, 0) + len(moving) - 2
         elif not self._screen_corners(chunk, moving, mode):
             for k in range(j0 + 1, n):
                 self._segment(_row(chunk, k))

@@ -276,3 +276,12 @@ def test_tolerance_long_program_grown_parts_on_the_columns(monkeypatch):
     r = verify_text(_program("G64 P0.6", Decimal(1), before=_long_prefix()), _machine())
     assert r.verdict.label == "unknown" and _codes(r) == {"VF233"}
     assert rows and max(c.column_rows for c in rows) > 512
+
+
+def test_fanuc_without_tolerance_long_program_counts_its_corners():
+    """A Fanuc control in cutting mode without path_tolerance, > 512 motions: the corners are unknown (VF235),
+    the first ones named and the rest counted under the same code."""
+    text = _program("G64", Decimal(1), before=_long_prefix()).replace(HEADER, "G21 G90 G17 G54\nT1 M6\nG0 G43 H1 Z100\n")
+    r = verify_text(text, _machine(fanuc=True))
+    assert r.verdict.label == "unknown" and "VF235" in _codes(r) <= {"VF208", "VF235"}, r.reasons
+    assert any(x.code == "VF235" and "more blended corner" in x.message for x in r.reasons), r.reasons
