@@ -285,3 +285,17 @@ def test_fanuc_without_tolerance_long_program_counts_its_corners():
     r = verify_text(text, _machine(fanuc=True))
     assert r.verdict.label == "unknown" and "VF235" in _codes(r) <= {"VF208", "VF235"}, r.reasons
     assert any(x.code == "VF235" and "more blended corner" in x.message for x in r.reasons), r.reasons
+
+
+@pytest.mark.parametrize("long", [False, True])
+def test_through_verify_on_a_file(tmp_path, long):
+    """The same corner through `nczones.prover.verify` on a program file (verify_text shares its pipeline)."""
+    from nczones.prover import verify
+
+    before = _long_prefix() if long else ""
+    for mode, expected in (("G64 P0.4", "safe"), ("G64 P0.6", "unknown"), ("G64", "unknown")):
+        path = tmp_path / "corner.ngc"
+        path.write_text(_program(mode, Decimal(1), before=before), encoding="utf-8")
+        r = verify(str(path), _machine())
+        assert r.verdict.label == expected, (mode, r.reasons)
+        assert expected == "safe" or {"VF233", "VF234"} & _codes(r)
