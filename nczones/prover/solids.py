@@ -998,11 +998,25 @@ class SpindleToolCheck:
         from ..motion import segments_of
 
         for item in items:
-            if self.reason is None and self.table:
+            if self.reason is None and self.table and not self._chunk_clear(item):
                 for seg in segments_of(item):
                     if self._check(seg):
                         break
             yield item
+
+    def _chunk_clear(self, item: Any) -> bool:
+        """A column chunk whose recorded register is the tool in the spindle (or no tool) over all its blocks:
+        :meth:`_check` is False for each of its rows, so they need not be made into segments."""
+        from bisect import bisect_right
+
+        if not isinstance(item, MotionChunk) or item.scale is None or not item.tools_known or not len(item):
+            return False
+        reg, blocks = item.tool_register, item.block
+        if reg is None or blocks is None:
+            return False
+        lo = bisect_right(self.table, int(blocks[0]), key=lambda e: e[0]) - 1
+        hi = bisect_right(self.table, int(blocks[-1]), key=lambda e: e[0])
+        return all(tool in (0, reg) for _first, tool in self.table[max(lo, 0):hi])  # before the table: no tool
 
     def _check(self, seg: Segment) -> bool:
         from bisect import bisect_right
