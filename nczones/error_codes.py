@@ -309,7 +309,7 @@ CATALOGUE: tuple[Code, ...] = (
     Code("VF208", _U, "specs/path-modes.md", "a corner the control may round (G64, Fanuc cutting mode) may leave "
                                                "the allowed set"),
     Code("VF210", _U, _MF, "tool solids: an arc near a fixture its enclosure cannot decide, a motion kind "
-                           "the solids proof does not model, or corners the control may round (G64)"),
+                           "the solids proof does not model"),
     Code("VF211", _U, _MF, "tool solids: a motion under G49 (no H register names the tool in the spindle)"),
     Code("VF212", _U, _MF, "a lathe's tool solids with parameter ranges or tool-break recovery were not checked; "
                            "both are proved now, as a mill's (VF218/VF220)", "retired"),
@@ -319,6 +319,12 @@ CATALOGUE: tuple[Code, ...] = (
                            "that offset (another work offset active, a rotated frame)"),
     Code("VF220", _U, _MF, "tool solids (a mill's or a lathe's): tool-break recovery legs near a fixture the proof "
                            "cannot decide"),
+    Code("VF233", _U, _MF, "tool solids: a part may meet a fixture within the G64 P (or path_tolerance) bound of "
+                           "the programmed path, which itself clears it"),
+    Code("VF234", _U, _MF, "tool solids: a part may meet a fixture in a corner region the control may round "
+                           "without tolerance (G64), while the programmed path clears it"),
+    Code("VF235", _U, _MF, "tool solids: a path mode whose rounded corners the solids proof does not model "
+                           "(G64 Q without P, Fanuc cutting mode without path_tolerance, a lathe without a tolerance)"),
     # -- RC: recovery
     Code("RC201", _U, _RE, "a recovery (break) motion nczones does not encode"),
     Code("RC202", _U, _RE, "recovery: the solver's limit"),

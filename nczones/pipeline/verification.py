@@ -518,23 +518,30 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     return result, first_run, seen
 
 
-def _solids_blend_reasons(machine: Machine, run: Interpretation) -> tuple[Reason, ...]:
-    """The tool solids are proved on the programmed path (:mod:`nczones.prover.solids`); where the control may
-    round a corner (G64, Fanuc cutting mode) the holder sweeps the rounded path, which that proof does not
-    model: a reason the verdict cannot be ``safe`` (specs/path-modes.md)."""
+def _solids_corner_check(machine: Machine, run: Interpretation, options: VerifyOptions) -> Any:
+    """The proof of the tool solids over the corners the control may round
+    (:class:`~nczones.prover.solids_blend.SolidsCornerCheck`); None without solids and fixtures."""
     if not declares_solids(machine):
-        return ()
+        return None
     from ..solids import machine_solids
 
     solids = machine_solids(machine)
     if solids is None or not solids.fixtures:
-        return ()
-    blending = sorted({m.code for _block, m in run.interpreter.path_modes if m.blend})
-    if not blending:
-        return ()
-    return (Reason(f"tool solids are proved on the programmed path; the program runs in {', '.join(blending)}, "
-                   "where the control may round corners and the tool sweeps the rounded path: set [machine] "
-                   "path_mode = \"G61\" (exact path) if the machine runs so", None, None, "VF210"),)
+        return None
+    from ..prover.solids_blend import SolidsCornerCheck
+
+    return SolidsCornerCheck(machine, solids, options.ranges(machine), run.interpreter.path_modes)
+
+
+def _with_solid_corners(result: Result, check: Any, upto: int | None) -> Result:
+    """``result`` with the reasons and notes (least clearances on the rounded path) of the solids' corner proof;
+    a reason turns a ``safe`` verdict ``unknown``."""
+    extra = tuple(check.finish((v.block for v in result.violations), upto))
+    result = replace(result, notes=tuple(result.notes) + tuple(check.notes()))
+    if not extra:
+        return result
+    verdict = Verdict.UNKNOWN if result.verdict is Verdict.SAFE else result.verdict
+    return replace(result, verdict=verdict, reasons=result.reasons + extra)
 
 
 def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, progress: Any,
@@ -587,6 +594,9 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
 
         motion = column_runs(run, run.interpreter.axes, run.interpreter.file)
     stream = corners.watch(with_text(motion))
+    solid_corners = _solids_corner_check(machine, run, options)
+    if solid_corners is not None:  # the tool solids over the same corners
+        stream = solid_corners.watch(stream)
     spindle = _spindle_check(machine, run)
     if spindle is not None:  # the tool the program put in the spindle against the assembly the solids take
         stream = spindle.watch(stream)
@@ -595,7 +605,8 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
         upto = max(v.block for v in result.violations) if result.truncated and result.violations else None
         result = replace(result, reasons=result.reasons + tuple(corners.finish((v.block for v in result.violations),
                                                                               upto)))
-        result = replace(result, reasons=result.reasons + _solids_blend_reasons(machine, run))
+        if solid_corners is not None:
+            result = _with_solid_corners(result, solid_corners, upto)
         if spindle is not None:
             result = replace(result, reasons=result.reasons + spindle.reasons())
     if last_reported and counts:  # the motions decided after the last one read (segments are screened in batches)

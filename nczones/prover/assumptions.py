@@ -71,7 +71,10 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "machine Z minus the active tool length; fixtures are where the machine file puts them (forbid box "
     "zones, stepped tables of X/Y/Z as a box per region, forbid XY polygons as prisms included), a "
     "fixture with a `frame` at that work offset as the program sets it; on tool-break recovery legs the "
-    "replacement tool has the broken tool's [[tools]] parts, at the replacement's tool length.",
+    "replacement tool has the broken tool's [[tools]] parts, at the replacement's tool length. The tool is "
+    "rigid and moves with the controlled point without turning, so where the control rounds a corner every "
+    "part moves by the same vector as the controlled point, within the corner enclosures above (a mill's "
+    "solids are proved over them; a lathe's within a tolerance only, its corners without one are unknown).",
     "Lathe tool solids (a lathe's [[tools]] parts): the tool lies on centre height (its tip and its "
     "parts' section in the plane through the spindle axis, Y = 0); every part is the rectangle the "
     "machine file gives, enclosing the real insert, bar or holder in that plane (a round bar along Z by "

@@ -552,6 +552,15 @@ class SolidsChecker:
             return None
         return self._box_hits(seg, parts, lo_c, hi_c) is None
 
+    def box_meets(self, seg: Segment, lo_c: list, hi_c: list) -> tuple[Part, Fixture] | bool | None:
+        """:meth:`box_clear` naming what may meet: the first part and fixture (in the machine file's terms), False
+        when every part stays out of every fixture, None when that is not known (a reason is given)."""
+        clear = self.box_clear(seg, lo_c, hi_c)
+        if clear is not False:
+            return None if clear is None else False
+        parts = self.solids.parts_for(seg.tool_register) or ()
+        return self._box_hits(seg, parts, lo_c, hi_c) or False
+
     def _unknown(self, seg: Segment, code: str, message: str) -> None:
         self._blocks.add(seg.block)
         self.reasons.append(Reason(message, seg.span, seg.block, code))
@@ -967,11 +976,25 @@ class SpindleToolCheck:
         from ..motion import segments_of
 
         for item in items:
-            if self.reason is None and self.table:
+            if self.reason is None and self.table and not self._chunk_clear(item):
                 for seg in segments_of(item):
                     if self._check(seg):
                         break
             yield item
+
+    def _chunk_clear(self, item: Any) -> bool:
+        """A column chunk whose recorded register is the tool in the spindle (or no tool) over all its blocks:
+        :meth:`_check` is False for each of its rows, so they need not be made into segments."""
+        from bisect import bisect_right
+
+        if not isinstance(item, MotionChunk) or item.scale is None or not item.tools_known or not len(item):
+            return False
+        reg, blocks = item.tool_register, item.block
+        if reg is None or blocks is None:
+            return False
+        lo = bisect_right(self.table, int(blocks[0]), key=lambda e: e[0]) - 1
+        hi = bisect_right(self.table, int(blocks[-1]), key=lambda e: e[0])
+        return all(tool in (0, reg) for _first, tool in self.table[max(lo, 0):hi])  # before the table: no tool
 
     def _check(self, seg: Segment) -> bool:
         from bisect import bisect_right

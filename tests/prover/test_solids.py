@@ -162,18 +162,24 @@ def test_a_forbidden_stepped_table_is_a_fixture_box_per_region(z, verdict):
 HEADER = "G21 G90 G17 G54\nT1 M6\nG43 H1\n"
 
 
-def test_solids_under_g64_are_not_proved_on_the_rounded_corners():
-    """The holder sweeps the path the control moves; in G64 it rounds corners, which the solids proof does not
-    model: the clear example is safe on the exact-path machine and unknown (VF210) once it may blend, from the
-    machine's start-up mode or a G64 in the program."""
+def test_solids_under_g64_are_proved_on_the_rounded_corners():
+    """The holder sweeps the path the control moves (nczones/prover/solids_blend.py).  The clear example's
+    holder passes 8.5 mm from the jaw on the programmed path, its corners all at X60 (a plunge, a move in Y, a
+    retract), so the corner regions of G64 keep the holder 8.5 mm away too: safe, from the machine's start-up
+    mode or a G64 in the program.  With G64 P p (Q defaults to P) the path may leave the programmed one by 2p:
+    P4 (8 mm) is safe, P5 (10 mm) unknown (VF233).  Before, every G64 program with solids was unknown VF210."""
     text = (PROGRAMS / "holder_clears_vise.ngc").read_text(encoding="utf-8")
     assert verify_text(text, _mill()).verdict.label == "safe"
     blending = parse_machine(MACHINE.read_text(encoding="utf-8").replace('path_mode = "G61"', 'path_mode = "G64"'))
-    for machine, program in ((blending, text), (_mill(), "G64\n" + text)):
+    for machine, program in ((blending, text), (_mill(), "G64\n" + text), (_mill(), "G64 P4\n" + text)):
         r = verify_text(program, machine)
-        assert r.verdict.label == "unknown" and "VF210" in {x.code for x in r.reasons}, r.reasons
-        assert any("G64" in x.message and "rounded path" in x.message for x in r.reasons)
-
+        assert r.verdict.label == "safe", r.reasons
+    # the least clearance on the rounded path: the holder grown by 8 mm is 8.5 - 8 = 0.5 mm from the jaw
+    assert any(n.startswith("least clearance on the path the control may move (G64 P4: within 8 mm")
+               and "holder is at least 0.5 mm from `vise`" in n for n in r.notes), r.notes
+    r = verify_text("G64 P5\n" + text, _mill())
+    assert r.verdict.label == "unknown" and {x.code for x in r.reasons} == {"VF233"}, r.reasons
+    assert any("holder" in x.message and "10 mm" in x.message for x in r.reasons)
 
 
 def _long(x_hit: str, n: int = 300) -> str:
