@@ -8,7 +8,8 @@ file's windows and the pass's pieces are made tiny, so that short programs cross
 
 * the pass over the streamed file is the pass over the ``str`` of the file: the same rows, counts, bounds,
   or the same reason to decline (Hypothesis over generated parametric programs, piece sizes of 1-40
-  characters, windows of 1-40 bytes, CRLF and LF, a UTF-8 comment, a last line without a newline);
+  characters, windows of 1-40 bytes, CRLF and LF, a UTF-8 comment, a last line without a newline, and
+  0-6 lines of loop and sub bodies kept compiled, ``MAX_STEPS``: the rest compiled again from the file);
 * ``verify`` of the streamed file has the verdict, violations (lines, spans with the source text,
   witnesses), reasons and notes of ``verify`` of the file read whole: a violation whose line straddles a
   piece edge, CRLF, a UTF-8 character across a window edge, ``%`` lines, no newline at the end;
@@ -35,7 +36,7 @@ from nczones.machine import load_machine
 from nczones.pipeline.verification import verify_source
 from nczones.prover.options import VerifyOptions
 from nczones.prover.result import Verdict
-from tests.gcode.test_double_pass import parametric_programs
+from tests.gcode.test_double_pass import ACCEPTED, parametric_programs
 from tests.prover.test_double_pass_proof import machine_of
 
 MILL = load_machine("specs/machines/mill.toml")
@@ -65,9 +66,9 @@ def _pass(text, machine) -> tuple:
 
 @SETTINGS
 @given(parametric_programs(), st.integers(1, 40), st.integers(1, 40),
-       st.sampled_from(["", "(caf\u00e9 \u00d8 12)\n", "; \u00b0C\n"]), st.booleans())
+       st.sampled_from(["", "(caf\u00e9 \u00d8 12)\n", "; \u00b0C\n"]), st.booleans(), st.integers(0, 6))
 def test_the_pass_over_a_streamed_file_is_the_pass_over_its_text(tmp_path_factory, text, piece, window,
-                                                                 comment, cut_end):
+                                                                 comment, cut_end, kept):
     # a UTF-8 comment (2-byte characters) somewhere in the program, and maybe no newline at the end
     if comment:
         lines = text.split("\n")
@@ -85,7 +86,25 @@ def test_the_pass_over_a_streamed_file_is_the_pass_over_its_text(tmp_path_factor
         src = _streamed(path, window, mp)
         assert src.text.ascii == text.isascii()
         mp.setattr(doubles, "PIECE", piece)
+        # the loop and sub bodies kept compiled: at most `kept` lines, the others compiled again from the file
+        mp.setattr(doubles, "MAX_STEPS", kept)
         assert _pass(src.text, machine) == whole
+
+
+@pytest.mark.parametrize("name", sorted(ACCEPTED))
+def test_loops_and_calls_from_a_streamed_file(tmp_path, monkeypatch, name):
+    # the pass's accepted programs (loops, branches, calls): bodies jumped back to across pieces of 3-30
+    # characters, kept compiled or compiled again from the file each time
+    path = tmp_path / "p.ngc"
+    path.write_text(ACCEPTED[name])
+    machine = machine_of("box", 100, 0)
+    whole = _pass(ACCEPTED[name], machine)
+    assert whole[0] != "declined"
+    src = _streamed(path, 5, monkeypatch)
+    for piece, kept in ((3, 0), (7, 2), (30, 1 << 16)):
+        monkeypatch.setattr(doubles, "PIECE", piece)
+        monkeypatch.setattr(doubles, "MAX_STEPS", kept)
+        assert _pass(src.text, machine) == whole, (piece, kept)
 
 
 def _outcome(result) -> tuple:

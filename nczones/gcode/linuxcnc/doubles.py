@@ -85,6 +85,10 @@ MAX_MOTIONS = 2_000_000
 WINDOW = 1 << 16
 #: Characters of the text the pass splits into lines at a time (a list of lines costs ~10x the text).
 PIECE = 1 << 20
+#: Lines of loop and subroutine bodies the pass keeps compiled (a body runs again: its lines are compiled once,
+#: ~300 bytes each); the lines of a longer body are compiled again from their piece at each run, so memory
+#: stays flat however long a body is.
+MAX_STEPS = 1 << 16
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
@@ -296,7 +300,7 @@ class _Pass:
         lo = hi = 0  # the lines lo..hi-1 are src's current piece: lines and layouts (None: not ASCII)
         lines: list[str] = []
         layouts: list[bytes] | None = None
-        steps: dict[int, Any] = {}  # the compiled lines of loop bodies, by index
+        steps: dict[int, Any] = {}  # the compiled lines of loop and sub bodies, by index (MAX_STEPS at most)
         by_layout = self.by_layout
         counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
         looping = 0  # open while loops
@@ -340,7 +344,9 @@ class _Pass:
             if looping:
                 step = steps.get(i)
                 if step is None:
-                    step = steps[i] = self._step(i)
+                    step = self._step(i)
+                    if len(steps) < MAX_STEPS:
+                        steps[i] = step
                 fn, parts = step
             else:
                 if not lo <= i < hi:
