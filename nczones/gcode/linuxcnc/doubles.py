@@ -408,7 +408,6 @@ class _Pass:
         ``if``'s the ``(keyword, index, condition)`` of its ``elseif``/``else``/``endif`` lines; an
         ``elseif``'s or ``else``'s the index after the ``endif``."""
         found = []
-        value = False  # the text names #<_value> (blanks aside)
         src = self.src
         for k in range(len(src.starts) if src.has_o else 0):  # a piece of the text at a time, in order
             part = src.part(k)
@@ -422,8 +421,6 @@ class _Pass:
                     continue
                 kw, label = seen
                 found.append((index, kw, label, self._control_line(line, kw, label), src.starts[k] + start))
-            # pieces are cut after a newline and a blank is not one: a name is never cut
-            value = value or "_value" in _BLANKS.sub("", part.lower())
         out: dict[int, tuple] = {}
         stack: list[list] = []
         opened: set = set()
@@ -460,10 +457,16 @@ class _Pass:
                     out[at2] = (k2, at + 1, None)
         if stack:
             raise Declined("an O-word construct left open")
-        if any(kw == "sub" for _a, kw, *_r in found) and value:
+        if any(kw == "sub" for _a, kw, *_r in found) and self._names_value():
             # an endsub sets #<_value> and #<_value_returned> (the pass does not follow them)
             raise Declined("a program with subroutines that names #<_value>")
         return out
+
+    def _names_value(self) -> bool:
+        """Whether the text names ``#<_value>`` (blanks aside), read a piece at a time: pieces are cut after
+        a newline and a blank is not one, so a name is never cut."""
+        src = self.src
+        return any("_value" in _BLANKS.sub("", src.part(k).lower()) for k in range(len(src.starts)))
 
     def _control_line(self, line: str, kw: str, label: Any) -> Any:
         """The compiled condition of an O-word line (a call's: its arguments'), after its parse agrees."""
