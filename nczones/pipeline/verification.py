@@ -107,17 +107,14 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     profile = RunProfile()
     used = used_switches(source.text, dialect)
     deleted = bool(used)
-    if isinstance(source.text, FileText) and not _streams(source.text, machine, options, dialect, ranges, deleted):
-        source = source.materialized()
+    source = _kept_streamed(source, machine, options, dialect, ranges, deleted)
     if (options.engine == "auto" and not ranges and options.recovery is None and not deleted
             and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and "#" in source.text):
         quick = _double_pass_first(source, machine, options, tolerance, margin, t0, progress,
                                    (nose_note, nose_reasons), settings)
         if quick is not None:
             return quick
-    if isinstance(source.text, FileText) and not _streams(source.text, machine, options, dialect, ranges, deleted,
-                                                          passed=True):
-        source = source.materialized()  # the double pass declined: the full path reads the text whole
+    source = _kept_streamed(source, machine, options, dialect, ranges, deleted, passed=True)
 
     def cases(skip: frozenset[int]) -> tuple[Result, Interpretation, set[int]]:
         return _verify_cases(source, machine, options, skip, progress, profile)
@@ -221,6 +218,16 @@ def _spindle_check(machine: Machine, run: Interpretation) -> Any:
     from ..prover.solids import SpindleToolCheck
 
     return SpindleToolCheck(run.interpreter.spindle_tools) if SpindleToolCheck.wanted(machine) else None
+
+
+def _kept_streamed(source: ProgramSource, machine: Machine, options: VerifyOptions, dialect: str,
+                   ranges: tuple[ParamRange, ...], deleted: bool, passed: bool = False) -> ProgramSource:
+    """``source``, its text read whole (:meth:`~nczones.gcode.source.ProgramSource.materialized`) when it is a
+    streamed file that :func:`_streams` cannot verify streamed (``passed``: the double pass declined)."""
+    if isinstance(source.text, FileText) and not _streams(source.text, machine, options, dialect, ranges, deleted,
+                                                          passed):
+        return source.materialized()
+    return source
 
 
 def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: str,

@@ -110,7 +110,7 @@ def test_loops_and_calls_from_a_streamed_file(tmp_path, monkeypatch, name):
 def _outcome(result) -> tuple:
     return (result.verdict, [(v.block, v.span, v.zone, v.point, v.path_point, v.first_exit, v.kind, v.note)
                              for v in result.violations],
-            [(r.text, r.span, r.code) for r in result.reasons], result.notes, result.program_sha256)
+            [(r.message, r.span, r.code) for r in result.reasons], result.notes, result.program_sha256)
 
 
 def _both(path, machine, window: int = 7, piece: int = 5) -> tuple[tuple, tuple]:

@@ -74,7 +74,7 @@ def test_a_file_text_answers_as_the_str_of_the_file(tmp_path_factory, text, wind
 def _outcome(result) -> tuple:
     return (result.verdict, [(v.block, v.span, v.zone, v.point, v.path_point, v.first_exit, v.kind, v.note)
                              for v in result.violations],
-            [(r.text, r.span, r.code) for r in result.reasons], result.notes, result.program_sha256)
+            [(r.message, r.span, r.code) for r in result.reasons], result.notes, result.program_sha256)
 
 
 def _both(tmp_path, text: str, machine, options: VerifyOptions | None = None) -> tuple[tuple, tuple]:

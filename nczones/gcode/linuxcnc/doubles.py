@@ -344,9 +344,7 @@ class _Pass:
             if looping:
                 step = steps.get(i)
                 if step is None:
-                    step = self._step(i)
-                    if len(steps) < MAX_STEPS:
-                        steps[i] = step
+                    step = self._body_step(i, steps)
                 fn, parts = step
             else:
                 if not lo <= i < hi:
@@ -383,6 +381,13 @@ class _Pass:
         for col in self.columns:
             del col[:keep]
         self.row0 += keep
+
+    def _body_step(self, i: int, steps: dict[int, Any]) -> tuple[Any, tuple]:
+        """:meth:`_step` of line ``i`` of a loop or sub body, kept in ``steps`` (at most :data:`MAX_STEPS`)."""
+        step = self._step(i)
+        if len(steps) < MAX_STEPS:
+            steps[i] = step
+        return step
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
