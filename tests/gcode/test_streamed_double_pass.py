@@ -212,7 +212,7 @@ def test_what_the_stream_takes(tmp_path, monkeypatch):
 
 
 _CHILD = """
-import resource, sys
+import sys
 sys.path.insert(0, "bench")
 import bench_gcode
 open(sys.argv[1], "w").write(bench_gcode.expr_program(int(sys.argv[2])))
@@ -225,7 +225,9 @@ def test_the_memory_of_a_streamed_expression_program_is_flat(tmp_path):
     # a child process whose own peak RSS (wait4) is read: 1M and 5M lines (19 and 100 MB of text) cost the
     # same memory, at most 150 MB (issue 36; specs/performance.md has the 10M-line row).
     machine = tmp_path / "box.toml"
-    machine.write_text('[machine]\nname = "box"\naxes = ["X", "Y", "Z"]\n[[zones]]\nname = "travel"\n'
+    machine.write_text('[machine]\nname = "box"\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\n'
+                       '[machine.rapid]\nX = "10000"\nY = "10000"\nZ = "10000"\n'
+                       '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[[zones]]\nname = "travel"\n'
                        'kind = "box"\nmin = { X = "-900000", Y = "-900000", Z = "-900000" }\n'
                        'max = { X = "900000", Y = "900000", Z = "900000" }\n')
     rss = []
