@@ -86,8 +86,8 @@ WINDOW = 1 << 16
 #: Characters of the text the pass splits into lines at a time (a list of lines costs ~10x the text).
 PIECE = 1 << 20
 #: Lines of loop and subroutine bodies the pass keeps compiled (a body runs again: its lines are compiled once,
-#: ~300 bytes each); the lines of a longer body are compiled again from their piece at each run, so memory
-#: stays flat however long a body is.
+#: a few hundred bytes each); the lines of a longer body are compiled again from their piece at each run, so
+#: memory stays flat however long a body is.
 MAX_STEPS = 1 << 16
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
