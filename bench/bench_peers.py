@@ -285,7 +285,7 @@ def scaling(sizes: list[int], repeat: int, env: dict, only: str = "") -> None:
                                 f"import {module}; open({str(path)!r}, 'w').write({module}.{call.format(n=n)})"],
                                check=True)
                 cmd = [sys.executable, "-m", "nczones", "verify", str(path), "--machine", str(machine),
-                       "--format", "json", "--max-iterations", iterations]
+                       "--format", "json", "--max-iterations", iterations, "--budget", "3600"]
                 runs = [cpu_rss_of(cmd, env) for _ in range(repeat)]
                 cpu = min(r[0] for r in runs)
                 rss = max(r[1] for r in runs)

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection, Mapping
+from typing import Any
 
 #: The switches: Fanuc BDT1 .. BDT9 (LinuxCNC's one switch is number 1).
 SWITCHES = tuple(range(1, 10))
@@ -84,18 +85,23 @@ def skipped_switches(block_delete: bool | Collection[int]) -> frozenset[int]:
     return frozenset(block_delete)
 
 
-def used_switches(text: str, dialect: str) -> dict[int, list[int]]:
+def used_switches(text: Any, dialect: str) -> dict[int, list[int]]:
     """The switches a program's lines start with and their line numbers (1-based): ``/`` is switch 1;
-    LinuxCNC has only switch 1 (``/2`` there is a line its one switch skips)."""
+    LinuxCNC has only switch 1 (``/2`` there is a line its one switch skips).  ``text`` is a ``str`` or a
+    streamed file (:class:`~nczones.gcode.source.FileText`), read a piece at a time, each cut after a newline
+    (so every piece starts a line, as ``^`` needs)."""
     used: dict[int, list[int]] = {}
     if "/" not in text:
         return used
-    line, at = 1, 0
-    for m in _LINE.finditer(text):
-        n = int(m.group(1)) if m.group(1) and dialect == "fanuc" else 1
-        line += text.count("\n", at, m.start())
-        at = m.start()
-        lines = used.setdefault(n, [])
-        if not lines or lines[-1] != line:
-            lines.append(line)
+    line = 1
+    for piece in (text,) if isinstance(text, str) else text.pieces(1 << 20):
+        at = 0
+        for m in _LINE.finditer(piece):
+            n = int(m.group(1)) if m.group(1) and dialect == "fanuc" else 1
+            line += piece.count("\n", at, m.start())
+            at = m.start()
+            lines = used.setdefault(n, [])
+            if not lines or lines[-1] != line:
+                lines.append(line)
+        line += piece.count("\n", at)
     return used

@@ -34,6 +34,7 @@ nczones.errors.GcodeError: <program>: error[GC109]: empty program: the text hold
 
 from __future__ import annotations
 
+import codecs
 import hashlib
 import os
 import sys
@@ -242,7 +243,7 @@ def load_program(path: str | os.PathLike, name: str | None = None, *, stream: bo
     """Read the program file at ``path`` (``GC100`` when it cannot be read, ``GC108``, ``GC110``).
 
     ``name`` is what diagnostics and reports call it (default: the path as given).  With ``stream``, a file of
-    at least :data:`STREAM_MIN_BYTES` bytes of plain ASCII text is not read into memory: its ``text`` is a
+    at least :data:`STREAM_MIN_BYTES` bytes of UTF-8 text (no byte order mark) is not read into memory: its ``text`` is a
     :class:`FileText` that reads the file a window at a time (the verify pipeline streams it; whoever needs
     the whole text calls :meth:`ProgramSource.materialized`).  Any other file is read whole, as without it.
 
@@ -323,8 +324,9 @@ WINDOW_BYTES = 1 << 20
 
 def _streamed(path: str, name: str) -> ProgramSource | None:
     """A :class:`ProgramSource` whose text stays in the file, or None (read it whole): the file is smaller than
-    :data:`STREAM_MIN_BYTES`, cannot be opened (the whole read reports it), or is not plain ASCII text with
-    lines of at most :data:`MAX_LINE_CHARS` characters (the whole read decodes it or reports it)."""
+    :data:`STREAM_MIN_BYTES`, cannot be opened (the whole read reports it), or is not text with lines of at
+    most :data:`MAX_LINE_CHARS` bytes, UTF-8 without a byte order mark (the whole read decodes it
+    or reports it; a UTF-8 character may span two windows)."""
     try:
         fd = os.open(path, os.O_RDONLY)
     except (OSError, ValueError):
@@ -339,14 +341,22 @@ def _streamed(path: str, name: str) -> ProgramSource | None:
         line = 0  # characters of the line not yet ended
         offset = 0
         present: set[str] = set()
+        utf8 = None  # the UTF-8 decoder, from the first byte that is not ASCII (a character may span windows)
         while True:
             data = os.pread(fd, WINDOW_BYTES, offset)
             if not data:
                 break
             digest.update(data)
-            if not data.isascii() or b"\0" in data:
-                os.close(fd)
+            if b"\0" in data or (offset == 0 and data.startswith(b"\xef\xbb\xbf")):
+                os.close(fd)  # binary, or a byte order mark: the whole read reports or drops it
                 return None
+            if utf8 is not None or not data.isascii():
+                utf8 = utf8 or codecs.getincrementaldecoder("utf-8")()
+                try:
+                    utf8.decode(data)
+                except UnicodeDecodeError:  # not UTF-8: the whole read decodes comments as CP1252 or reports it
+                    os.close(fd)
+                    return None
             if blank and data.strip():
                 blank = False
             present.update(c for c in _NOTED if c.encode() in data)
@@ -355,15 +365,24 @@ def _streamed(path: str, name: str) -> ProgramSource | None:
                 os.close(fd)
                 return None
             offset += len(data)
-        if offset != st.st_size:
+        if offset != st.st_size or (utf8 is not None and not _final(utf8)):
             os.close(fd)
             return None
         text = FileText(fd, offset, blank, (st.st_size, st.st_mtime_ns, st.st_ino), name,
-                        frozenset(_NOTED) - present)
+                        frozenset(_NOTED) - present, utf8 is None)
     except OSError:
         os.close(fd)
         return None
     return ProgramSource(text, name, digest.hexdigest(), path)  # type: ignore[arg-type]
+
+
+def _final(decoder: codecs.IncrementalDecoder) -> bool:
+    """Whether the UTF-8 text ends with a whole character (no sequence left open at the end of the file)."""
+    try:
+        decoder.decode(b"", final=True)
+    except UnicodeDecodeError:
+        return False
+    return True
 
 
 #: The characters whose absence from a streamed file the first read notes, so that asking for them (the
@@ -390,22 +409,31 @@ def _line_after(data: bytes, line: int) -> int:
 
 
 class FileText:
-    """The text of a plain ASCII program file, read from the file a window at a time instead of held whole.
+    """The text of a program file, read from the file a window at a time instead of held whole.
 
-    It answers the few ``str`` questions the streamed verification asks (``len``, ``in``, ``find``, ``count``
-    of one character, ``endswith``, slices, ``isascii``) exactly as the ``str`` of the file would, and gives
-    the file in blocks cut after a newline (:meth:`blocks`); anything else is not an attribute (a loud error,
-    never a silent empty text).  Character offsets are byte offsets (ASCII).  The file stays open; a file
-    changed while it is read is an error (:meth:`check_unchanged`).
+    A plain ASCII file: it answers the few ``str`` questions the streamed verification asks (``len``, ``in``,
+    ``find``, ``count`` of one character, ``endswith``, slices, ``isascii``) exactly as the ``str`` of the file
+    would, and gives the file in blocks cut after a newline (:meth:`blocks`); anything else is not an attribute
+    (a loud error, never a silent empty text).  Character offsets are byte offsets.
+
+    A UTF-8 file with characters that are not ASCII (``ascii`` False, a comment's ``é``): the same questions
+    are answered about its bytes read as Latin-1 (one character per byte, so offsets stay byte offsets, and
+    an ASCII search or a newline count is exact: no byte of a UTF-8 multi-byte character is ASCII); only the
+    double pass reads it so (:mod:`nczones.gcode.linuxcnc.doubles`, its lines through :meth:`decoded` of
+    pieces cut after a newline), every other lane takes its whole text (:meth:`read_all`, UTF-8).
+
+    The file stays open; a file changed while it is read is an error (:meth:`check_unchanged`).
     """
 
-    __slots__ = ("fd", "n", "blank", "stamp", "name", "absent", "_w0", "_window", "__weakref__")
+    __slots__ = ("fd", "n", "blank", "stamp", "name", "absent", "ascii", "_w0", "_window", "__weakref__")
 
     def __init__(self, fd: int, n: int, blank: bool, stamp: tuple[int, int, int], name: str,
-                 absent: frozenset[str] = frozenset()):
+                 absent: frozenset[str] = frozenset(), ascii: bool = True):
         self.fd, self.n, self.blank, self.stamp, self.name = fd, n, blank, stamp, name
         #: characters known not to occur in the file
         self.absent = absent
+        #: every byte is ASCII (else UTF-8 with other characters: see the class's docstring)
+        self.ascii = ascii
         self._w0 = 0
         self._window = ""
 
@@ -426,7 +454,11 @@ class FileText:
 
     def _read(self, start: int, stop: int) -> str:
         data = os.pread(self.fd, max(0, stop - start), start)
-        return data.decode("ascii")
+        return data.decode("ascii" if self.ascii else "latin-1")
+
+    def decoded(self, start: int, stop: int) -> str:
+        """The text of bytes ``start``..``stop`` (whole UTF-8 characters: cut after a newline or at an end)."""
+        return os.pread(self.fd, max(0, stop - start), start).decode("utf-8")
 
     def _at(self, pos: int) -> tuple[int, str]:
         """The window that holds ``pos`` (read when ``pos`` is outside the current one)."""
@@ -502,7 +534,7 @@ class FileText:
         return self[max(0, self.n - len(suffix)):] == suffix
 
     def isascii(self) -> bool:
-        return True
+        return self.ascii
 
     def blocks(self, size: int) -> Iterator[bytes]:
         """The file in blocks of about ``size`` bytes, each cut after a newline (or at the end), as
@@ -527,12 +559,12 @@ class FileText:
     def pieces(self, size: int) -> Iterator[str]:
         """The text in pieces of about ``size`` characters, each cut after a newline (or at the end)."""
         for blk in self.blocks(size):
-            yield blk.decode("ascii")
+            yield blk.decode("utf-8")
 
     def read_all(self) -> str:
         """The whole text (for the paths that need it in memory)."""
         self.check_unchanged()
-        return self._read(0, self.n)
+        return self.decoded(0, self.n)
 
     def check_unchanged(self) -> None:
         """GC100 when the file changed since it was first read (its text would not be the text hashed)."""

@@ -105,16 +105,16 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     # one budget for the whole program: every case and switch position draws on it
     # one profile too: the progress bar counts the motions of every case, and --stats sums them
     profile = RunProfile()
-    if isinstance(source.text, FileText) and not _streams(source.text, machine, options, dialect, ranges):
-        source = source.materialized()
     used = used_switches(source.text, dialect)
     deleted = bool(used)
+    source = _kept_streamed(source, machine, options, dialect, ranges, deleted)
     if (options.engine == "auto" and not ranges and options.recovery is None and not deleted
             and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and "#" in source.text):
         quick = _double_pass_first(source, machine, options, tolerance, margin, t0, progress,
                                    (nose_note, nose_reasons), settings)
         if quick is not None:
             return quick
+    source = _kept_streamed(source, machine, options, dialect, ranges, deleted, passed=True)
 
     def cases(skip: frozenset[int]) -> tuple[Result, Interpretation, set[int]]:
         return _verify_cases(source, machine, options, skip, progress, profile)
@@ -190,6 +190,8 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
             None, None, "VF204"),), interrupted=True, margin=margin, engine=options.engine)
     if quick is None:
         return None
+    if isinstance(source.text, FileText):
+        source.text.check_unchanged()  # the text proved is the text hashed
     if progress is not None and not quick.interrupted:  # done at once: the bar's last step
         total = _line_count(source.text) or None
         bar: Any = progress
@@ -218,15 +220,31 @@ def _spindle_check(machine: Machine, run: Interpretation) -> Any:
     return SpindleToolCheck(run.interpreter.spindle_tools) if SpindleToolCheck.wanted(machine) else None
 
 
+def _kept_streamed(source: ProgramSource, machine: Machine, options: VerifyOptions, dialect: str,
+                   ranges: tuple[ParamRange, ...], deleted: bool, passed: bool = False) -> ProgramSource:
+    """``source``, its text read whole (:meth:`~nczones.gcode.source.ProgramSource.materialized`) when it is a
+    streamed file that :func:`_streams` cannot verify streamed (``passed``: the double pass declined)."""
+    if isinstance(source.text, FileText) and not _streams(source.text, machine, options, dialect, ranges, deleted,
+                                                          passed):
+        return source.materialized()
+    return source
+
+
 def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: str,
-             ranges: tuple[ParamRange, ...]) -> bool:
+             ranges: tuple[ParamRange, ...], deleted: bool, passed: bool = False) -> bool:
     """Whether a streamed file (:class:`~nczones.gcode.source.FileText`) can be verified without its whole
-    text in memory: a LinuxCNC program without parameters (``#``: the double pass reads the text) or block
-    delete (``/``), without ranges, recovery or tool solids.  Its lanes then read it block by block (the fast
-    path; a program that needs the language layer is read whole there) and the lines of violations are read
-    back from the file."""
-    return (dialect == "linuxcnc" and machine.dialect == "linuxcnc" and not ranges and options.recovery is None
-            and not declares_solids(machine) and "#" not in text and "/" not in text)
+    text in memory: a LinuxCNC program without block delete (``deleted``: a line starts with ``/``), ranges,
+    recovery or tool solids, and
+    either ASCII without parameters (``#``: its lanes read it block by block, the fast path; a program that
+    needs the language layer is read whole there; the lines of violations are read back from the file), or
+    with parameters and the double pass to try (it reads the file a piece at a time; ``passed``: it was
+    tried and declined, so the full path reads the text whole)."""
+    if not (dialect == "linuxcnc" and machine.dialect == "linuxcnc" and not ranges and options.recovery is None
+            and not declares_solids(machine) and not deleted):
+        return False
+    if "#" not in text:
+        return text.ascii
+    return options.engine == "auto" and not passed
 
 
 def _verify_recovery(source: ProgramSource, machine: Machine, options: VerifyOptions,

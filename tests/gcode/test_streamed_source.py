@@ -11,8 +11,8 @@ and the window so that small programs take the streamed path, and check that
   vectorized tier, with ``#``: the double pass on the whole text, with o-words, M98 and ``%``: the language
   layer on the whole text);
 * a plain CAM program is verified without ever reading the whole text;
-* a file changed while it is verified is an error (``GC100``), and files the stream cannot take (not ASCII,
-  too small) are read whole as before.
+* a file changed while it is verified is an error (``GC100``), and files the stream cannot take (not UTF-8,
+  too small) are read whole as before (programs with ``#``: tests/gcode/test_streamed_double_pass.py).
 """
 
 from __future__ import annotations
@@ -74,7 +74,7 @@ def test_a_file_text_answers_as_the_str_of_the_file(tmp_path_factory, text, wind
 def _outcome(result) -> tuple:
     return (result.verdict, [(v.block, v.span, v.zone, v.point, v.path_point, v.first_exit, v.kind, v.note)
                              for v in result.violations],
-            [(r.text, r.span, r.code) for r in result.reasons], result.notes, result.program_sha256)
+            [(r.message, r.span, r.code) for r in result.reasons], result.notes, result.program_sha256)
 
 
 def _both(tmp_path, text: str, machine, options: VerifyOptions | None = None) -> tuple[tuple, tuple]:
@@ -113,7 +113,7 @@ def test_streamed_cam_programs_verify_as_read_whole(tmp_path, small_stream, n, s
 
 
 @pytest.mark.parametrize("extra", [
-    "#1 = 5\nG1 X#1 Y[#1 * 2]\n",               # parameters: the double pass, on the whole text
+    "#1 = 5\nG1 X#1 Y[#1 * 2]\n",               # parameters: the double pass streamed, then the whole text
     "o100 sub\nG1 X1 Y1\no100 endsub\no100 call\n",  # o-words: the language layer, on the whole text
     "/G1 X500\n",                                # block delete: both switch positions, on the whole text
     "G7\nG1 X10\nG8\n",                          # lathe codes: the lathe interpreter, on the whole text
@@ -189,8 +189,10 @@ def test_files_the_stream_cannot_take_are_read_whole(tmp_path, monkeypatch):
     assert isinstance(S.load_program(path, stream=True).text, str)  # below STREAM_MIN_BYTES
     monkeypatch.setattr(S, "STREAM_MIN_BYTES", 0)
     assert isinstance(S.load_program(path, stream=True).text, S.FileText)
-    path.write_bytes(b"G1 X1 (caf\xc3\xa9)\n" * 10)  # not ASCII: decoded whole, as before
+    path.write_bytes(b"G1 X1 (caf\xe9)\n" * 10)  # not UTF-8 (CP1252 in a comment): decoded whole, as before
     assert isinstance(S.load_program(path, stream=True).text, str)
+    path.write_bytes(b"G1 X1 (caf\xc3\xa9)\n" * 10)  # UTF-8: streamed, read whole by all lanes but the pass
+    assert not S.load_program(path, stream=True).text.ascii
     path.write_bytes(b"G1 X1 " + b"0" * (S.MAX_LINE_CHARS + 1) + b"\n")  # an over-long line: GC110, as before
     with pytest.raises(GcodeError) as exc:
         S.load_program(path, stream=True)

@@ -55,7 +55,7 @@ from array import array
 from bisect import bisect_right
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ...errors import GcodeError
 from ..codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
@@ -73,6 +73,9 @@ from ..parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from ..program import scan_oword
 from ..shapes import LAYOUT, RUNS, shape_source, shaped
 
+if TYPE_CHECKING:
+    from ..source import FileText
+
 __all__ = ["CODES", "Declined", "DoublePath", "double_pass"]
 
 #: Motions the pass keeps (8 bytes per axis each) when it is run without ``on_window``: it keeps them all.
@@ -82,6 +85,10 @@ MAX_MOTIONS = 2_000_000
 WINDOW = 1 << 16
 #: Characters of the text the pass splits into lines at a time (a list of lines costs ~10x the text).
 PIECE = 1 << 20
+#: Lines of loop and subroutine bodies the pass keeps compiled (a body runs again: its lines are compiled once,
+#: a few hundred bytes each); the lines of a longer body are compiled again from their piece at each run, so
+#: memory stays flat however long a body is.
+MAX_STEPS = 1 << 16
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
@@ -172,10 +179,11 @@ _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnorm
 _GRID = 2**60
 
 
-def double_pass(text: str, machine: Any, *, max_iterations: int, on_window: Any = None,
+def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_window: Any = None,
                 window: int | None = None) -> DoublePath:
     """Run ``text`` on ``machine`` in doubles (see the module's docstring); raise :class:`Declined` when the
-    program leaves the subset.
+    program leaves the subset.  ``text`` may be a streamed file (:class:`~nczones.gcode.source.FileText`):
+    the pass reads it a piece at a time and never holds it whole.
 
     Without ``on_window`` the path holds every row (and the pass declines past :data:`MAX_MOTIONS`
     motions).  With it, each time ``window`` (default :data:`WINDOW`) motions past the window's first row
@@ -205,7 +213,8 @@ _Code = tuple[list[str], list[str], list[str], str, dict]
 
 
 class _Pass:
-    def __init__(self, text: str, machine: Any, max_iterations: int, on_window: Any = None, window: int = WINDOW):
+    def __init__(self, text: str | FileText, machine: Any, max_iterations: int, on_window: Any = None,
+                 window: int = WINDOW):
         if window < 1:
             raise ValueError(f"a window of at least one motion, got {window}")
         self.on_window = on_window
@@ -220,13 +229,12 @@ class _Pass:
         if modal & {"G20", "G91", "G93", "G95"}:
             raise Declined("the machine starts in G20, G91, G93 or G95")
         # the lines as the full path reads them: a byte-order mark at the start and one "\r" before each
-        # newline and at the end dropped
-        text = text.removeprefix("\ufeff")
-        if "\r" in text:
-            text = text.replace("\r\n", "\n").removesuffix("\r")
-        self.text = text
-        #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it)
-        self.src = _Lines(text)
+        # newline and at the end dropped (by _Lines, a piece at a time; a streamed file has no byte-order mark)
+        if isinstance(text, str):
+            text = text.removeprefix("\ufeff")
+        #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it;
+        #: a streamed file, FileText, is read from the file a piece at a time, in order but for jumps)
+        self.src = _Lines(text, crlf="\r" in text)
         self.by_layout: dict[bytes, Any] = {}  # layout -> the step of its lines (the line itself its argument)
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
@@ -289,11 +297,10 @@ class _Pass:
         src = self.src
         controls = self._controls()
         count = src.count
-        ascii_text = src.ascii
-        lo = hi = 0  # the lines lo..hi-1 are src's current piece: lines and layouts
+        lo = hi = 0  # the lines lo..hi-1 are src's current piece: lines and layouts (None: not ASCII)
         lines: list[str] = []
-        layouts: list[bytes] = []
-        steps: dict[int, Any] = {}  # the compiled lines of loop bodies, by index
+        layouts: list[bytes] | None = None
+        steps: dict[int, Any] = {}  # the compiled lines of loop and sub bodies, by index (MAX_STEPS at most)
         by_layout = self.by_layout
         counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
         looping = 0  # open while loops
@@ -337,12 +344,12 @@ class _Pass:
             if looping:
                 step = steps.get(i)
                 if step is None:
-                    step = steps[i] = self._step(i)
+                    step = self._body_step(i, steps)
                 fn, parts = step
             else:
                 if not lo <= i < hi:
                     lo, hi, lines, layouts = src.piece(i)
-                fn = by_layout.get(layouts[i - lo]) if ascii_text else None
+                fn = by_layout.get(layouts[i - lo]) if layouts is not None else None
                 if fn is not None:
                     parts = lines[i - lo]
                 else:
@@ -375,6 +382,13 @@ class _Pass:
             del col[:keep]
         self.row0 += keep
 
+    def _body_step(self, i: int, steps: dict[int, Any]) -> tuple[Any, tuple]:
+        """:meth:`_step` of line ``i`` of a loop or sub body, kept in ``steps`` (at most :data:`MAX_STEPS`)."""
+        step = self._step(i)
+        if len(steps) < MAX_STEPS:
+            steps[i] = step
+        return step
+
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
         line, own_layout = self.src.line(i)
@@ -398,18 +412,20 @@ class _Pass:
         ``{line index: (keyword, target, condition)}``: a ``while``'s target is the index after its ``endwhile`` and an ``endwhile``'s its ``while``; an
         ``if``'s the ``(keyword, index, condition)`` of its ``elseif``/``else``/``endif`` lines; an
         ``elseif``'s or ``else``'s the index after the ``endif``."""
-        text = self.text
         found = []
-        index, counted = 0, 0
-        for start, line_end in _lines_with_o(text):
-            index += text.count("\n", counted, start)
-            counted = start
-            line = text[start:line_end]
-            seen = scan_oword(line)
-            if seen is None:
-                continue
-            kw, label = seen
-            found.append((index, kw, label, self._control_line(line, kw, label), start))
+        src = self.src
+        for k in range(len(src.starts) if src.has_o else 0):  # a piece of the text at a time, in order
+            part = src.part(k)
+            index, counted = src.first[k], 0
+            for start, line_end in _lines_with_o(part):
+                index += part.count("\n", counted, start)
+                counted = start
+                line = part[start:line_end]
+                seen = scan_oword(line)
+                if seen is None:
+                    continue
+                kw, label = seen
+                found.append((index, kw, label, self._control_line(line, kw, label), src.starts[k] + start))
         out: dict[int, tuple] = {}
         stack: list[list] = []
         opened: set = set()
@@ -446,10 +462,16 @@ class _Pass:
                     out[at2] = (k2, at + 1, None)
         if stack:
             raise Declined("an O-word construct left open")
-        if any(kw == "sub" for _a, kw, *_r in found) and "_value" in _BLANKS.sub("", text.lower()):
+        if any(kw == "sub" for _a, kw, *_r in found) and self._names_value():
             # an endsub sets #<_value> and #<_value_returned> (the pass does not follow them)
             raise Declined("a program with subroutines that names #<_value>")
         return out
+
+    def _names_value(self) -> bool:
+        """Whether the text names ``#<_value>`` (blanks aside), read a piece at a time: pieces are cut after
+        a newline and a blank is not one, so a name is never cut."""
+        src = self.src
+        return any("_value" in _BLANKS.sub("", src.part(k).lower()) for k in range(len(src.starts)))
 
     def _control_line(self, line: str, kw: str, label: Any) -> Any:
         """The compiled condition of an O-word line (a call's: its arguments'), after its parse agrees."""
@@ -704,47 +726,75 @@ class _Pass:
 
 
 class _Lines:
-    """The lines of a text as ``text.split("\n")`` has them, with their layouts
-    (:data:`~nczones.gcode.shapes.LAYOUT`) when the text is ASCII, split a piece of about ``size``
-    characters at a time: the pass reads them in order but for jumps, and holds one piece."""
+    """The lines of a text as ``text.split("\n")`` has them (with ``crlf``, one ``"\r"`` before each newline
+    and at the end dropped first, as the full path reads them), with their layouts
+    (:data:`~nczones.gcode.shapes.LAYOUT`) in pieces that are ASCII, split a piece of about ``size``
+    characters at a time: the pass reads them in order but for jumps, and holds one piece.
 
-    def __init__(self, text: str, size: int | None = None):
+    ``text`` is a ``str`` or a streamed file (:class:`~nczones.gcode.source.FileText`, ASCII or UTF-8): its
+    pieces are read from the file, cut after a newline (so a UTF-8 character or a ``"\r\n"`` is never cut),
+    and decoded one at a time; the table of where pieces start is one entry per piece.
+    """
+
+    def __init__(self, text: Any, size: int | None = None, crlf: bool = False):
         size = PIECE if size is None else max(1, size)
         self.text = text
-        self.ascii = text.isascii()
-        self.count = text.count("\n") + 1
+        self.crlf = crlf
+        #: the text holds an ``o`` or an ``O`` (a streamed file knows it from its first read)
+        self.has_o = "o" in text or "O" in text
         # pieces end just after a newline (the last at the end of the text): their first character and line
         self.starts = [0]
         self.first = [0]
         at, line = 0, 0
-        while True:
-            cut = text.find("\n", at + size)
-            if cut < 0:
-                break
-            line += text.count("\n", at, cut + 1)
-            at = cut + 1
-            self.starts.append(at)
-            self.first.append(line)
-        self.cached: tuple = (0, 0, [], [])
+        if isinstance(text, str):
+            self.end = len(text)
+            while True:
+                cut = text.find("\n", at + size)
+                if cut < 0:
+                    break
+                line += text.count("\n", at, cut + 1)
+                at = cut + 1
+                self.starts.append(at)
+                self.first.append(line)
+            line = text.count("\n")
+        else:  # a streamed file: the blocks it is cut in (offsets are bytes), one read of the file
+            self.end = len(text)
+            for block in text.blocks(size):
+                line += block.count(b"\n")
+                at += len(block)
+                if block.endswith(b"\n"):
+                    self.starts.append(at)
+                    self.first.append(line)
+        self.count = line + 1
+        self.cached: tuple = (0, 0, [], None)
 
-    def piece(self, i: int) -> tuple[int, int, list[str], list[bytes]]:
-        """``(first line, end line, lines, layouts)`` of the piece that holds line ``i``."""
+    def part(self, k: int) -> str:
+        """The text of piece ``k``, without the newline that ends it, ``"\r"`` dropped as the full path does."""
+        begin = self.starts[k]
+        end = self.end if k + 1 == len(self.starts) else self.starts[k + 1] - 1
+        text = self.text
+        part = text[begin:end] if isinstance(text, str) else text.decoded(begin, end)
+        if self.crlf:  # the "\r" before the newline cut off (or at the end of the text) goes too
+            part = part.replace("\r\n", "\n").removesuffix("\r")
+        return part
+
+    def piece(self, i: int) -> tuple[int, int, list[str], list[bytes] | None]:
+        """``(first line, end line, lines, layouts)`` of the piece that holds line ``i`` (layouts None: the
+        piece is not ASCII)."""
         lo, hi, _lines, _layouts = self.cached
         if lo <= i < hi:
             return self.cached
         k = bisect_right(self.first, i) - 1
-        begin = self.starts[k]
-        last = k + 1 == len(self.starts)
-        part = self.text[begin:] if last else self.text[begin:self.starts[k + 1] - 1]
+        part = self.part(k)
         lines = part.split("\n")
-        layouts = part.encode().translate(LAYOUT).split(b"\n") if self.ascii else []
+        layouts = part.encode().translate(LAYOUT).split(b"\n") if part.isascii() else None
         self.cached = (self.first[k], self.first[k] + len(lines), lines, layouts)
         return self.cached
 
     def line(self, i: int) -> tuple[str, bytes | None]:
-        """Line ``i`` and its layout (None: the text is not ASCII)."""
+        """Line ``i`` and its layout (None: its piece is not ASCII)."""
         lo, _hi, lines, layouts = self.piece(i)
-        return lines[i - lo], (layouts[i - lo] if self.ascii else None)
+        return lines[i - lo], (layouts[i - lo] if layouts is not None else None)
 
 
 def _letters(words: Any) -> str:
