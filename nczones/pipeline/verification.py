@@ -604,14 +604,7 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
     # the corners the control may round (specs/path-modes.md), proved as the motion passes
     corners = CornerCheck(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
                           options.run_limits())
-    motion: Iterable[Any] = run
-    if run.dialect == "fanuc" and not options.ranges(machine):
-        # the full interpreter's runs of straight moves to the column lanes, exactly (not with parameter ranges:
-        # their motion goes one by one, as the corner check widens its boxes by them)
-        from ..gcode.fanuc.columns import column_runs
-
-        motion = column_runs(run, run.interpreter.axes, run.interpreter.file)
-    stream = corners.watch(with_text(motion))
+    stream = corners.watch(with_text(_run_motion(run, machine, options)))
     solid_corners = _solids_corner_check(machine, run, options)
     if solid_corners is not None:  # the tool solids over the same corners
         stream = solid_corners.watch(stream)
@@ -649,6 +642,18 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
                   "curves into biarcs) may deviate from it, see specs/gcode-support.md",)
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
     return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes)
+
+
+def _run_motion(run: Interpretation, machine: Machine, options: VerifyOptions) -> Iterable[Any]:
+    """The interpretation's motion as the proof takes it: a Fanuc run's straight moves as column chunks, exactly.
+
+    Not with parameter ranges: their motion goes one by one, as the corner check widens its boxes by them.
+    """
+    if run.dialect != "fanuc" or options.ranges(machine):
+        return run
+    from ..gcode.fanuc.columns import column_runs
+
+    return column_runs(run, run.interpreter.axes, run.interpreter.file)
 
 
 def _fix_span(span: Any, source_text: dict[int, str]) -> Any:
