@@ -92,7 +92,9 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "allowed set.",
     "Cutter radius compensation is modelled only with cutter_compensation = \"linuxcnc\" (otherwise "
     "unknown); tool-break recovery only with --recovery and without --param ranges (with ranges it is "
-    "proved at one point of them and the verdict is at best unknown).",
+    "proved at one point of them and the verdict is at best unknown); its legs are the controller's own "
+    "positioning moves, each to an exact stop (no corner between two legs is rounded, whatever the program's "
+    "path mode).",
     "Loops run at most --max-iterations times per entry (more is unknown); probing, M66 inputs and reads "
     "of spindle, coolant, override or HAL state are unknown.",
     "Numbers are exact: decimals as written, no float enters a proof; irrational quantities are enclosed "
