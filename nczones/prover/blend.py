@@ -164,20 +164,24 @@ class CornerCheck:
         """The chunks unchanged; each one's corners proved as it passes."""
         for chunk in chunks:
             yield chunk
-            if isinstance(chunk, MotionChunk) and chunk.scale is not None:
-                self._flush()
-                self._columns(chunk)
-                self._flush()
-            elif isinstance(chunk, MotionChunk):
-                for seg in chunk.objects or ():
-                    self._segment(seg)
-            elif isinstance(chunk, Segment):
-                self._segment(chunk)
-            else:
-                for seg in chunk.segments():
-                    self._segment(seg)
-            if len(self.pending) >= 4096:
-                self._flush()
+            self.take(chunk)
+
+    def take(self, chunk: Any) -> None:
+        """Follow one chunk (a column chunk, a chunk of segments, a segment): its corners proved or queued."""
+        if isinstance(chunk, MotionChunk) and chunk.scale is not None:
+            self._flush()
+            self._columns(chunk)
+            self._flush()
+        elif isinstance(chunk, MotionChunk):
+            for seg in chunk.objects or ():
+                self._segment(seg)
+        elif isinstance(chunk, Segment):
+            self._segment(chunk)
+        else:
+            for seg in chunk.segments():
+                self._segment(seg)
+        if len(self.pending) >= 4096:
+            self._flush()
 
     def finish(self, violating: Iterable[int] = (), upto: int | None = None) -> list[Reason]:
         """The reasons (VF208) after the last chunk; a corner next to a ``violating`` block (index) is left
