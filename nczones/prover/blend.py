@@ -72,6 +72,8 @@ Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
 
 #: the most points of a Fanuc run on a two-axis machine kept for its convex hull (beyond: its box decides)
 HULL_POINTS = 100_000
+#: the motion kinds the column screen takes (others: the exact path, one motion at a time)
+_SIMPLE = frozenset((SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC, SegmentKind.DWELL))
 #: the tip offsets of motions without any (CornerCheck._shifts)
 _NO_SHIFT: frozenset[tuple[tuple[str, Fraction], ...]] = frozenset({()})
 
@@ -649,20 +651,17 @@ class CornerCheck:
         """A column chunk: corner boxes in integers (scale ``2 * 10**scale``), screened many at a time."""
         import numpy as np
 
-        from .screen import arc_boxes
-
         n = len(chunk)
         kinds, starts, ends = chunk.kind, chunk.start, chunk.end
         if n == 0 or kinds is None or starts is None or ends is None or chunk.block is None \
                 or chunk.tool_length is None:
             return
         table = self.modes
-        mode_blocks = np.array([b for b, _m in table], dtype=np.int64)
-        at = np.maximum(np.searchsorted(mode_blocks, chunk.block, side="right") - 1, 0)
-        used = [table[k][1] for k in sorted(set(at.tolist()))]
-        simple = {int(SegmentKind.LINE), int(SegmentKind.RAPID), int(SegmentKind.ARC), int(SegmentKind.DWELL)}
-        plain = (set(np.unique(kinds).tolist()) <= simple and not (self.dogleg and (kinds == SegmentKind.RAPID).any())
-                 and max(int(np.abs(starts).max()), int(np.abs(ends).max())) < 2**58)
+        at, used = _mode_rows(table, chunk.block)
+        count = np.bincount(kinds, minlength=len(SegmentKind))  # rows of each kind (kinds are small and >= 0)
+        plain = (not count[[k for k in range(len(count)) if k not in _SIMPLE]].any()
+                 and not (self.dogleg and count[SegmentKind.RAPID])
+                 and max(int(starts.max()), -int(starts.min()), int(ends.max()), -int(ends.min())) < 2**58)
         hull = [m.blend and m.dialect == "fanuc" and m.tolerance is None for m in used]
         naive = self._naive_tracked()  # G64 Q without P: every motion joins the merging windows, one at a time
         if not naive and plain and any(hull) and HULL_COLUMNS and all(h or not m.blend for h, m in zip(hull, used)):
@@ -674,56 +673,112 @@ class CornerCheck:
                 self._segment(seg)
             return
         dwell = kinds == SegmentKind.DWELL
-        moving = (starts != ends).any(axis=1) | (kinds == SegmentKind.ARC)
-        rows = np.flatnonzero(moving & ~dwell)
+        arc = kinds == SegmentKind.ARC
+        moving = _rows_differ(starts, ends) | arc
+        rows = np.flatnonzero(moving & ~dwell) if count[SegmentKind.DWELL] else np.flatnonzero(moving)
         if rows.size == 0:
-            if dwell.any():
+            if count[SegmentKind.DWELL]:
                 self._stop()
             return
         first, last = int(rows[0]), int(rows[-1])
         if dwell[:first].any():
             self._stop()
         self._segment(_row(chunk, first))  # the corner with the chunk before
-        blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at]
-        dwells = np.cumsum(dwell)
         i, j = rows[:-1], rows[1:]
-        keep = blend[i] & (dwells[j] == dwells[i])
-        i, j = i[keep], j[keep]
+        if len(used) > 1:
+            blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at]
+            keep = blend[i]
+        else:
+            keep = np.full(i.size, used[0].blend, dtype=bool)
+        if count[SegmentKind.DWELL]:
+            dwells = np.cumsum(dwell)
+            keep &= dwells[j] == dwells[i]
+        if not keep.all():
+            i, j = i[keep], j[keep]
         if i.size:
-            lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
-            arcs = np.flatnonzero(kinds == SegmentKind.ARC)
-            boxed = np.ones(n, dtype=bool)
-            if arcs.size:
-                boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)
-            linear = kinds != SegmentKind.ARC
-            mid = starts + ends
-            lin = linear[:, None]
-            t_lo = np.where(lin, np.minimum(mid, 2 * ends), 2 * lo)
-            t_hi = np.where(lin, np.maximum(mid, 2 * ends), 2 * hi)
-            h_lo = np.where(lin, np.minimum(mid, 2 * starts), 2 * lo)
-            h_hi = np.where(lin, np.maximum(mid, 2 * starts), 2 * hi)
-            c_lo = t_lo[i] + h_lo[j] - 2 * ends[i]
-            c_hi = t_hi[i] + h_hi[j] - 2 * ends[i]
-            assert chunk.scale is not None  # a column chunk
-            scale2 = 2 * 10**chunk.scale
-            bounds = [m.bound() for m in (table[k][1] for k in range(len(table)))]
-            widen = np.array([0 if b is None else -((-b * scale2).numerator // (b * scale2).denominator)
-                              for b in bounds], dtype=np.int64)[at[i]]
-            tol = widen > 0
-            if tol.any():  # within the bound of both motions' boxes
-                n_lo = 2 * np.minimum(lo[i], lo[j]) - widen[:, None]
-                n_hi = 2 * np.maximum(hi[i], hi[j]) + widen[:, None]
-                c_lo = np.where(tol[:, None], n_lo, c_lo)
-                c_hi = np.where(tol[:, None], n_hi, c_hi)
-            tls = chunk.tool_length
-            joined = (starts[j] == ends[i]).all(axis=1)  # else the exact path (the corner is not one point)
-            self._screen(chunk, c_lo, c_hi, i, j, boxed[i] & boxed[j] & joined, tls[i], tls[j], scale2, at)
+            self._corner_columns(chunk, i, j, at, used, bool(count[SegmentKind.ARC]))
         seg = _row(chunk, last)
         if last != first:
             self.prev = seg
             self.prev_stop = not self.mode_of(seg.block).blend
         if dwell[last:].any():
             self._stop()
+
+    def _corner_columns(self, chunk: MotionChunk, i: Any, j: Any, at: Any, used: Sequence[PathMode], arcs: bool) -> None:
+        """Prove the corners ``i[k]``/``j[k]`` of a column chunk: all at once in one box when it fits, else each one's
+        box in integers (over ``2 * 10**scale``), screened many at a time (:meth:`_screen`).
+
+        The one box: the union of every row's box (its end points; an arc's outward-rounded box) grown by the
+        largest bound of the chunk's modes, and of the boxes of the corners next to an arc.  It holds every
+        corner's box the screen computes (two straight motions' corner region lies in the box of the two, with a
+        bound in both boxes grown by it; a corner next to an arc is the Minkowski sum of the half boxes, computed
+        as the screen does), so it is the union test :meth:`_screen` starts with on a larger box: when it fits,
+        that one fits too.  It is taken when every corner's two rows have the tool length of the first and the
+        rows are joined (each starts where the one before ends), as the screen's union test needs."""
+        import numpy as np
+
+        from .screen import arc_boxes
+
+        kinds, starts, ends, tls = chunk.kind, chunk.start, chunk.end, chunk.tool_length
+        assert kinds is not None and starts is not None and ends is not None and tls is not None  # columns
+        assert chunk.scale is not None
+        lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
+        boxed = np.ones(len(chunk), dtype=bool)
+        arc_rows = np.flatnonzero(kinds == SegmentKind.ARC) if arcs else None
+        if arc_rows is not None:
+            boxed[arc_rows] = arc_boxes(chunk, arc_rows, lo, hi)
+        scale2 = 2 * 10**chunk.scale
+        whole = (len(chunk.axes) == len(self.axes) and int(tls.min()) == int(tls.max()) and bool(boxed.all())
+                 and not _rows_differ(starts[1:], ends[:-1]).any())
+        if whole:
+            g = max((b for b in (m.bound() for m in used if m.blend) if b is not None), default=F0)
+            box_lo = [Fraction(2 * int(lo[:, k].min()), scale2) - g for k in range(len(self.axes))]
+            box_hi = [Fraction(2 * int(hi[:, k].max()), scale2) + g for k in range(len(self.axes))]
+            if arc_rows is not None:
+                near = (kinds[i] == SegmentKind.ARC) | (kinds[j] == SegmentKind.ARC)
+                if near.any():
+                    c_lo, c_hi = self._corner_ints(chunk, lo, hi, i[near], j[near], at, scale2)
+                    for k in range(len(self.axes)):
+                        box_lo[k] = min(box_lo[k], Fraction(int(c_lo[:, k].min()), scale2))
+                        box_hi[k] = max(box_hi[k], Fraction(int(c_hi[:, k].max()), scale2))
+            self._shifts = _NO_SHIFT  # column rows carry no tool offsets
+            if self._fits((tuple(box_lo), tuple(box_hi)), (Fraction(int(tls[0]), 10**chunk.scale),), F0):
+                self.corners += int(i.size)
+                return
+        c_lo, c_hi = self._corner_ints(chunk, lo, hi, i, j, at, scale2)
+        joined = ~_rows_differ(starts[j], ends[i])  # else the exact path (the corner is not one point)
+        self._screen(chunk, c_lo, c_hi, i, j, boxed[i] & boxed[j] & joined, tls[i], tls[j], scale2, at)
+
+    def _corner_ints(self, chunk: MotionChunk, lo: Any, hi: Any, i: Any, j: Any, at: Any, scale2: int) -> Any:
+        """The boxes of the corners ``i[k]``/``j[k]`` in integers over ``scale2`` (``lo``/``hi``: the rows' boxes):
+        a line's half at the corner and an arc's whole box, summed less the corner; with a bound, both motions'
+        boxes grown by it."""
+        import numpy as np
+
+        kinds, starts, ends = chunk.kind, chunk.start, chunk.end
+        assert kinds is not None and starts is not None and ends is not None  # columns
+        table = self.modes
+        ei, si, sj, ej = ends[i], starts[i], starts[j], ends[j]
+        lo_i, hi_i, lo_j, hi_j = lo[i], hi[i], lo[j], hi[j]
+        lin_i = (kinds[i] != SegmentKind.ARC)[:, None]
+        lin_j = (kinds[j] != SegmentKind.ARC)[:, None]
+        mid_i, mid_j = si + ei, sj + ej
+        t_lo = np.where(lin_i, np.minimum(mid_i, 2 * ei), 2 * lo_i)
+        t_hi = np.where(lin_i, np.maximum(mid_i, 2 * ei), 2 * hi_i)
+        h_lo = np.where(lin_j, np.minimum(mid_j, 2 * sj), 2 * lo_j)
+        h_hi = np.where(lin_j, np.maximum(mid_j, 2 * sj), 2 * hi_j)
+        c_lo = t_lo + h_lo - 2 * ei
+        c_hi = t_hi + h_hi - 2 * ei
+        bounds = [m.bound() for m in (table[k][1] for k in range(len(table)))]
+        widen = np.array([0 if b is None else -((-b * scale2).numerator // (b * scale2).denominator)
+                          for b in bounds], dtype=np.int64)[at[i]]
+        tol = widen > 0
+        if tol.any():  # within the bound of both motions' boxes
+            n_lo = 2 * np.minimum(lo_i, lo_j) - widen[:, None]
+            n_hi = 2 * np.maximum(hi_i, hi_j) + widen[:, None]
+            c_lo = np.where(tol[:, None], n_lo, c_lo)
+            c_hi = np.where(tol[:, None], n_hi, c_hi)
+        return c_lo, c_hi
 
     def _screen(self, chunk: MotionChunk, c_lo: Any, c_hi: Any, i: Any, j: Any, boxed: Any, tl_a: Any, tl_b: Any,
                 scale2: int, at: Any) -> None:
@@ -732,12 +787,14 @@ class CornerCheck:
         assert chunk.scale is not None  # a column chunk
         den = 10**chunk.scale
         todo = [(0, int(i.size))]
+        axes = range(c_lo.shape[1])
         while todo:
             a, b = todo.pop()
             same = bool((tl_a[a:b] == tl_a[a]).all() and (tl_b[a:b] == tl_a[a]).all())
             if same and boxed[a:b].all():
-                box = (tuple(Fraction(int(x), scale2) for x in c_lo[a:b].min(axis=0)),
-                       tuple(Fraction(int(x), scale2) for x in c_hi[a:b].max(axis=0)))
+                box = (tuple(Fraction(int(c_lo[a:b, k].min()), scale2) for k in axes),
+                       tuple(Fraction(int(c_hi[a:b, k].max()), scale2) for k in axes))
+                self._shifts = _NO_SHIFT  # column rows carry no tool offsets
                 if self._fits(box, (Fraction(int(tl_a[a]), den),), F0):
                     self.corners += b - a
                     continue
@@ -944,6 +1001,26 @@ def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) 
         lo[sel, ib] = np.minimum(lo[sel, ib], (b_lo - rm) // m - 1)
         hi[sel, ib] = np.maximum(hi[sel, ib], -((-(b_hi + rm)) // m) + 1)
         boxed[sel] &= ok
+
+
+def _mode_rows(table: Sequence[tuple[int, PathMode]], blocks: Any) -> tuple[Any, list[PathMode]]:
+    """The index in the mode table of each row's mode (a chunk's ``block`` column), and the modes used."""
+    import numpy as np
+
+    mode_blocks = np.array([b for b, _m in table], dtype=np.int64)
+    at = np.maximum(np.searchsorted(mode_blocks, blocks, side="right") - 1, 0)
+    k0, k1 = int(at.min()), int(at.max())
+    return at, [table[k][1] for k in ((k0,) if k0 == k1 else np.unique(at).tolist())]
+
+
+def _rows_differ(a: Any, b: Any) -> Any:
+    """Per row, do the integer rows of ``a`` and ``b`` differ (a boolean column; column by column, which numpy
+    does many times faster than a reduction along the rows of an (n, 3) array)?"""
+    ne = a != b
+    out = ne[:, 0].copy()
+    for k in range(1, ne.shape[1]):
+        out |= ne[:, k]
+    return out
 
 
 def _row(chunk: MotionChunk, k: int) -> Segment:
