@@ -78,6 +78,38 @@ _SIMPLE = frozenset((SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC, Segme
 _NO_SHIFT: frozenset[tuple[tuple[str, Fraction], ...]] = frozenset({()})
 
 
+# The per-motion proof compares coordinates a dozen times a motion; Fraction's own comparison first checks its
+# operand against ``numbers.Rational`` (an ABC check), most of the time it takes.  These compare the normalised
+# numerators and denominators directly (denominators are positive), as nczones.gcode.lexer builds them; an
+# operand that is not a Fraction (an int) takes the generic comparison.
+def _lt(a: Any, b: Any) -> bool:
+    """``a < b`` for exact coordinates."""
+    try:
+        return bool(a._numerator * b._denominator < b._numerator * a._denominator)
+    except AttributeError:
+        return bool(a < b)
+
+
+def _lo(a: Any, b: Any) -> Any:
+    """``min(a, b)`` for exact coordinates."""
+    return b if _lt(b, a) else a
+
+
+def _hi(a: Any, b: Any) -> Any:
+    """``max(a, b)`` for exact coordinates."""
+    return b if _lt(a, b) else a
+
+
+def _same(p: Sequence[Any], q: Sequence[Any]) -> bool:
+    """``p == q`` for points of exact coordinates (normalised Fractions are equal when their parts are)."""
+    if p is q:
+        return True
+    try:
+        return all(x._numerator == y._numerator and x._denominator == y._denominator for x, y in zip(p, q, strict=True))
+    except AttributeError:
+        return tuple(p) == tuple(q)
+
+
 def _range_widening(ranges: Sequence[ParamRange], axes: Sequence[str], tool_axis: str | None) -> dict[str, Fraction]:
     """How far the parameter ranges move a position, per axis (a sound bound: the sum of the ranges' sizes
     that act on the axis).
@@ -141,6 +173,7 @@ class CornerCheck:
         self.refine_s = 0.0
         self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer lo, hi, bound)
         self._int_cache: dict[int, Any] = {}
+        self._per_den: dict[int, int] = {}  # _ints: SCALE // d by denominator d
         self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
@@ -160,6 +193,7 @@ class CornerCheck:
         self._stretch_pts: list[tuple[Fraction, ...]] | None = [] if len(self.axes) == 2 else None
         self._last_extra: tuple[Any, tuple[tuple[str, Fraction], ...]] = ((), ())
         self._naive_modes = 0  # the length of the mode table when it was last searched for G64 Q without P
+        self._mode_hit: tuple[int, int, PathMode, int, Any] | None = None  # mode_of's last answer
 
     # ------------------------------------------------------------------ the stream
     def watch(self, chunks: Iterable[Any]) -> Iterator[Any]:
@@ -205,9 +239,18 @@ class CornerCheck:
         return self.reasons
 
     def mode_of(self, block: int) -> PathMode:
+        """The mode block ``block`` runs in; the last answer's range of blocks is kept while the table is as it
+        was (same length, same last entry: the interpreter appends entries or replaces the last one)."""
         table = self.modes
-        k = bisect_right(table, block, key=lambda e: e[0]) - 1
-        return table[max(k, 0)][1]
+        hit = self._mode_hit
+        if hit is not None and hit[0] <= block < hit[1] and hit[3] == len(table) and hit[4] is table[-1]:
+            mode: PathMode = hit[2]
+            return mode
+        k = max(bisect_right(table, block, key=lambda e: e[0]) - 1, 0)
+        lo = table[k][0] if k else -1 << 62
+        hi = table[k + 1][0] if k + 1 < len(table) else 1 << 62
+        self._mode_hit = (lo, hi, table[k][1], len(table), table[-1])
+        return table[k][1]
 
     # ------------------------------------------------------------------ one motion at a time (exact)
     def _segment(self, seg: Segment) -> None:
@@ -215,7 +258,7 @@ class CornerCheck:
         if kind is SegmentKind.DWELL:
             self._stop()
             return
-        if seg.start == seg.end and kind is not SegmentKind.ARC:
+        if kind is not SegmentKind.ARC and _same(seg.start, seg.end):
             return  # a move of length 0: LinuxCNC's canon drops it, no corner
         if kind is SegmentKind.RAPID and self.dogleg:
             # a dogleg rapid is positioning with an in-position check at both ends (specs/path-modes.md)
@@ -231,34 +274,40 @@ class CornerCheck:
         mode = self.mode_of(seg.block)
         self.prev, self.prev_stop = seg, not mode.blend
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
-            box = _hull_box(seg)
-            if box is None:
-                self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
-            elif self.stretch is None:
-                self.stretch = [list(box[0]), list(box[1]), seg, seg]
-                self._stretch_shifts = {self._shift(seg)}
-                self._hull_add(seg, box, True)
-            else:
-                lo, hi = self.stretch[0], self.stretch[1]
-                for i in range(len(lo)):
-                    lo[i] = min(lo[i], box[0][i])
-                    hi[i] = max(hi[i], box[1][i])
-                self.stretch[3] = seg
-                self._stretch_shifts.add(self._shift(seg))
-                self._hull_add(seg, box, False)
+            self._run_motion(seg, mode)
         elif self.stretch is not None:
             self.stretch[3] = seg  # the motion that ends the run with an exact stop still belongs to it
             self._stretch_shifts.add(self._shift(seg))
-            lo, hi = self.stretch[0], self.stretch[1]
             box = _hull_box(seg)
             if box is not None:
-                for i in range(len(lo)):
-                    lo[i] = min(lo[i], box[0][i])
-                    hi[i] = max(hi[i], box[1][i])
+                _grow(self.stretch, box)
                 self._hull_add(seg, box, False)
             else:
                 self._stretch_pts = None  # a motion without a box: the run's box decides
             self._close_stretch()
+
+    def _run_motion(self, seg: Segment, mode: PathMode) -> None:
+        """A motion in a Fanuc run (cutting mode without a tolerance): the run's box grows to hold it."""
+        st = self.stretch
+        if st is not None and seg.start is st[3].end and seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
+            # a straight motion from where the run's last motion ended (in the box already): its end alone
+            _grow_point(st, seg.end)
+            st[3] = seg
+            self._stretch_shifts.add(self._shift(seg))
+            self._hull_add(seg, None, False)
+            return
+        box = _hull_box(seg)
+        if box is None:
+            self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
+        elif st is None:
+            self.stretch = [list(box[0]), list(box[1]), seg, seg]
+            self._stretch_shifts = {self._shift(seg)}
+            self._hull_add(seg, box, True)
+        else:
+            _grow(st, box)
+            st[3] = seg
+            self._stretch_shifts.add(self._shift(seg))
+            self._hull_add(seg, box, False)
 
     def _queue(self, a: Segment, b: Segment, mode: PathMode) -> None:
         """A corner to prove: screened with others first (:meth:`_flush`).
@@ -268,7 +317,10 @@ class CornerCheck:
         if _naive_only(mode):
             self.naive.pending.append((a, b, mode, self.naive.count - 2))
             return
-        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg) and mode.dialect == "linuxcnc":
+        if mode.dialect == "fanuc" and mode.tolerance is None:  # the run's hull proves it (_close_stretch)
+            self.corners += 1
+            return
+        if mode.dialect == "linuxcnc" and _linear(a, self.dogleg) and _linear(b, self.dogleg) and _same(b.start, a.end):
             bound = mode.bound()
             if bound is not None or not mode.naive:
                 p0, p1, p2 = self._ints(a.start), self._ints(a.end), self._ints(b.end)
@@ -289,12 +341,19 @@ class CornerCheck:
             cached: list[int] = got[1]
             return cached
         out = []
+        per = self._per_den  # SCALE // d by denominator d (0: d does not divide SCALE)
         for i in self.rel:
             x = p[i]
-            d = x.denominator
-            if SCALE % d:
+            try:
+                num, d = x._numerator, x._denominator
+            except AttributeError:  # an int
+                num, d = x.numerator, x.denominator
+            m = per.get(d)
+            if m is None:
+                m = per[d] = 0 if SCALE % d else SCALE // d
+            if not m:
                 return None
-            out.append(x.numerator * (SCALE // d))
+            out.append(num * m)
         self._int_cache[id(p)] = (p, out)
         return out
 
@@ -303,25 +362,27 @@ class CornerCheck:
 
         No tolerance: two straight motions' region lies in the box of the two (it uses at most half of each:
         each coordinate of ``C + (M1 - C) + (M2 - C)`` is between the two motions' far ends); other motions'
-        region is the Minkowski sum of their half boxes less ``C``.  With a bound: both motions' boxes grown
-        by it."""
+        region is the Minkowski sum of their half boxes less ``C``, which the sum with an arc's whole box holds
+        (an arc's half box takes square roots to 96 bits: :meth:`_region` computes it when the screen fails).
+        With a bound: both motions' boxes grown by it."""
         if mode.dialect == "fanuc" and mode.tolerance is None:
             return None
         bound = mode.bound()
         if bound is None and mode.naive:
             return None
-        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg):
+        if _linear(a, self.dogleg) and _linear(b, self.dogleg) and _same(b.start, a.end):
             # the common case, on the zones' axes only
             lo, hi = [F0] * len(self.axes), [F0] * len(self.axes)
             for i in self.rel:
                 x, y, z = a.start[i], a.end[i], b.end[i]
-                lo[i], hi[i] = min(x, y, z), max(x, y, z)
+                lo[i], hi[i] = _lo(_lo(x, y), z), _hi(_hi(x, y), z)
                 if bound:
                     lo[i] -= bound
                     hi[i] += bound
             return tuple(lo), tuple(hi)
         if bound is None:
-            ba, bb = _half_box(a, self.dogleg, end=True), _half_box(b, self.dogleg, end=False)
+            ba = _half_box(a, self.dogleg, end=True) if _linear(a, self.dogleg) else _piece_box(a)
+            bb = _half_box(b, self.dogleg, end=False) if _linear(b, self.dogleg) else _piece_box(b)
             if ba is None or bb is None:
                 return None
             c = a.end
@@ -358,7 +419,8 @@ class CornerCheck:
                         cand_lo.append(min(box[0][i] for box in boxes))
                         cand_hi.append(max(box[1][i] for box in boxes))
                     lo[i], hi[i] = min(cand_lo), max(cand_hi)
-                self._shifts = frozenset(self._shift(x) for a, b, *_r in group for x in (a, b))
+                self._shifts = (frozenset(self._shift(x) for a, b, *_r in group for x in (a, b))
+                                if self.has_tip_zones else _NO_SHIFT)
                 if self._fits((tuple(lo), tuple(hi)), (t0,), F0):
                     self.corners += len(group)
                     continue
@@ -436,7 +498,7 @@ class CornerCheck:
             if len(self.reasons) > n:  # the run's every block: a violation inside it makes the reason redundant
                 self._blocks[-1] = range(st[2].block, st[3].block + 1)
 
-    def _hull_add(self, seg: Segment, box: Box, first: bool) -> None:
+    def _hull_add(self, seg: Segment, box: Box | None, first: bool) -> None:
         """Keep the ends of a straight motion (the segment's own tuples: nothing is computed unless the run's box
         does not fit), or the corners of another's box, for the run's convex hull (two-axis machines); a run of
         more than HULL_POINTS points keeps its box only."""
@@ -449,6 +511,7 @@ class CornerCheck:
             pts.append(seg.start)
             pts.append(seg.end)
         else:
+            assert box is not None  # a straight motion's box is not needed
             (x0, y0), (x1, y1) = box
             pts.extend(((x0, y0), (x0, y1), (x1, y0), (x1, y1)))
         if len(pts) > HULL_POINTS:
@@ -1035,17 +1098,20 @@ def _linear(seg: Segment, dogleg: bool) -> bool:
 def _piece_box(seg: Segment) -> Box | None:
     """A box holding every point of ``seg`` (lines, rapids straight or dogleg, arcs); None for other kinds."""
     if seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
-        return tuple(map(min, seg.start, seg.end)), tuple(map(max, seg.start, seg.end))
+        return tuple(map(_lo, seg.start, seg.end)), tuple(map(_hi, seg.start, seg.end))
     if seg.kind is SegmentKind.ARC:
-        from .geometry import arc_geom
+        plane = _arc_plane_box(seg)
+        if plane is None:
+            from .geometry import arc_geom
 
-        try:
-            g = arc_geom(seg)
-        except InvalidArgument:  # an arc the per-motion proof refuses: no box
-            return None
-        (xl, xh), (yl, yh) = g.plane_bbox()
-        lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
-        lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = xl, xh, yl, yh
+            try:
+                g = arc_geom(seg)
+            except InvalidArgument:  # an arc the per-motion proof refuses: no box
+                return None
+            plane = (*g.plane_bbox(), g.ia, g.ib)
+        (xl, xh), (yl, yh), ia, ib = plane
+        lo, hi = list(map(_lo, seg.start, seg.end)), list(map(_hi, seg.start, seg.end))
+        lo[ia], hi[ia], lo[ib], hi[ib] = xl, xh, yl, yh
         return tuple(lo), tuple(hi)
     if seg.kind is SegmentKind.SPLINE:
         # a NURBS curve with positive weights lies in the convex hull of its control points
@@ -1072,6 +1138,61 @@ def _piece_box(seg: Segment) -> Box | None:
             lo[ic], hi[ic] = min(lo[ic], c.lo), max(hi[ic], c.hi)
         return tuple(lo), tuple(hi)
     return None
+
+
+def _arc_plane_box(seg: Segment) -> Any:
+    """``ArcGeom.plane_bbox()`` of a circular arc with a rational centre (start and end equally far from it), with
+    its plane's axis indices: ``((lo, hi), (lo, hi), ia, ib)``; None for other arcs (``arc_geom`` decides them).
+
+    The same box as ``plane_bbox`` (the same end points, the same ``sqrt_bounds`` of the squared radius, the same
+    sweep tests), computed on the vectors from the centre times their common denominator: integers, whose signs
+    of cross and dot products are those of the rational vectors, without Fraction arithmetic (most of the time of
+    an arc's box)."""
+    from math import lcm
+
+    from .geometry import sqrt_bounds
+
+    centre = seg.centre
+    if centre is None or seg.plane is None:
+        return None
+    ia, ib, _ = seg.plane_indices()
+    vals = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
+    try:
+        dens = [v._denominator for v in vals]
+        nums = [v._numerator for v in vals]
+    except AttributeError:  # not Fractions
+        return None
+    d = lcm(*dens)
+    s0, s1, e0, e1, c0, c1 = (n * (d // q) for n, q in zip(nums, dens))
+    u, w = (s0 - c0, s1 - c1), (e0 - c0, e1 - c1)
+    r2 = u[0] * u[0] + u[1] * u[1]
+    if r2 == 0 or r2 != w[0] * w[0] + w[1] * w[1]:
+        return None  # no radius, or a spiral
+    full = (s0 == e0 and s1 == e1) or seg.turns > 0
+    r_hi = sqrt_bounds(Fraction(r2, d * d), 64)[1]
+    xs, ys = [vals[0], vals[2]], [vals[1], vals[3]]
+    ccw = not seg.clockwise
+    p, q = (u, w) if ccw else (w, u)  # clockwise from u to w is counter-clockwise from w to u
+    for v, out, c, sgn in (((1, 0), xs, centre[0], 1), ((-1, 0), xs, centre[0], -1), ((0, 1), ys, centre[1], 1),
+                           ((0, -1), ys, centre[1], -1)):
+        if full or _ccw_between(p, v, q):
+            out.append(c + sgn * r_hi)
+    return (min(xs), max(xs)), (min(ys), max(ys)), ia, ib
+
+
+def _ccw_between(u: tuple[int, int], v: tuple[int, int], w: tuple[int, int]) -> bool:
+    """``nczones.prover.geometry._angle_le`` on integer vectors: the counter-clockwise angle from ``u`` to ``v`` is at
+    most the one from ``u`` to ``w`` (angles in ``[0, 2 pi)``)."""
+    hv, hw = _int_half(u, v), _int_half(u, w)
+    if hv != hw:
+        return hv < hw
+    return v[0] * w[1] - v[1] * w[0] >= 0
+
+
+def _int_half(u: tuple[int, int], v: tuple[int, int]) -> int:
+    """0 when the counter-clockwise angle from ``u`` to ``v`` is in ``[0, pi)``, else 1."""
+    c = u[0] * v[1] - u[1] * v[0]
+    return 0 if c > 0 or (c == 0 and u[0] * v[0] + u[1] * v[1] > 0) else 1
 
 
 def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
@@ -1209,7 +1330,27 @@ class _NaiveWindows:
 def _union(a: Box | None, b: Box | None) -> Box | None:
     if a is None or b is None:
         return None
-    return tuple(map(min, a[0], b[0])), tuple(map(max, a[1], b[1]))
+    return tuple(map(_lo, a[0], b[0])), tuple(map(_hi, a[1], b[1]))
+
+
+def _grow_point(stretch: list[Any], p: Sequence[Any]) -> None:
+    """Grow a Fanuc run's box (``stretch[0]``, ``stretch[1]``: lists) to hold the point ``p``."""
+    lo, hi = stretch[0], stretch[1]
+    for i, x in enumerate(p):
+        if _lt(x, lo[i]):
+            lo[i] = x
+        elif _lt(hi[i], x):
+            hi[i] = x
+
+
+def _grow(stretch: list[Any], box: Box) -> None:
+    """Grow a Fanuc run's box (``stretch[0]``, ``stretch[1]``: lists) to hold ``box``."""
+    lo, hi = stretch[0], stretch[1]
+    for i, (x, y) in enumerate(zip(box[0], box[1])):
+        if _lt(x, lo[i]):
+            lo[i] = x
+        if _lt(hi[i], y):
+            hi[i] = y
 
 
 def _hull_box(seg: Segment) -> Box | None:
