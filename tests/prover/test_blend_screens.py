@@ -373,3 +373,15 @@ def test_a_three_line_verify_does_not_import_the_corner_check():
             "print(r.verdict.label, 'nczones.prover.blend' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split("\n")
     assert out[0] == "safe False False" and out[1] == "unknown True"
+
+
+@pytest.mark.parametrize("mode, tol", [("G64", "0.5"), ("G64", "")])
+def test_a_lathe_with_tip_offsets_agrees(mode, tol, monkeypatch):
+    """The tip zone moved by a T-word offset (``test_blend_lathe_tip``): 600 motions then the corner by the zone;
+    the chunks as given and one motion at a time give the same reasons (the offsets the tests are moved by)."""
+    from tests.prover import test_blend_lathe_tip as lathe
+
+    program = "T0101\nG00 X60. Z-100.\nG01 F100\n" + lathe.FILLER + lathe.CORNER + "M30\n"
+    m = parse_machine(lathe.LATHE.format(mode=mode, tol=f'path_tolerance = "{tol}"' if tol else "", offset="50"))
+    result, (reasons, _n) = _agree(program, m, monkeypatch, rows=None)
+    assert result.verdict.label == "unknown" and reasons and all("`post`" in r[1] for r in reasons)
