@@ -343,7 +343,7 @@ class CornerCheck:
         out = []
         per = self._per_den  # SCALE // d by denominator d (0: d does not divide SCALE)
         for i in self.rel:
-            x = p[i]
+            x: Any = p[i]
             try:
                 num, d = x._numerator, x._denominator
             except AttributeError:  # an int
@@ -1156,7 +1156,7 @@ def _arc_plane_box(seg: Segment) -> Any:
     if centre is None or seg.plane is None:
         return None
     ia, ib, _ = seg.plane_indices()
-    vals = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
+    vals: tuple[Any, ...] = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
     try:
         dens = [v._denominator for v in vals]
         nums = [v._numerator for v in vals]
