@@ -598,12 +598,13 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
                         report(s.span.line)
                         last_reported[:] = [s.span.line]
 
-    from ..prover.blend import CornerCheck
     from ..prover.core import prove
+    from ..prover.corners import Corners
 
-    # the corners the control may round (specs/path-modes.md), proved as the motion passes
-    corners = CornerCheck(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
-                          options.run_limits())
+    # the corners the control may round (specs/path-modes.md), proved as the motion passes (nczones.prover.blend,
+    # loaded at the first corner)
+    corners = Corners(machine, options.margin, options.ranges(machine), run.interpreter.path_modes,
+                      options.run_limits())
     stream = corners.watch(with_text(_run_motion(run, machine, options)))
     solid_corners = _solids_corner_check(machine, run, options)
     if solid_corners is not None:  # the tool solids over the same corners

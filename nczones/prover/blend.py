@@ -72,8 +72,42 @@ Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
 
 #: the most points of a Fanuc run on a two-axis machine kept for its convex hull (beyond: its box decides)
 HULL_POINTS = 100_000
+#: the motion kinds the column screen takes (others: the exact path, one motion at a time)
+_SIMPLE = frozenset((SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC, SegmentKind.DWELL))
 #: the tip offsets of motions without any (CornerCheck._shifts)
 _NO_SHIFT: frozenset[tuple[tuple[str, Fraction], ...]] = frozenset({()})
+
+
+# The per-motion proof compares coordinates a dozen times a motion; Fraction's own comparison first checks its
+# operand against ``numbers.Rational`` (an ABC check), most of the time it takes.  These compare the normalised
+# numerators and denominators directly (denominators are positive), as nczones.gcode.lexer builds them; an
+# operand that is not a Fraction (an int) takes the generic comparison.
+def _lt(a: Any, b: Any) -> bool:
+    """``a < b`` for exact coordinates."""
+    try:
+        return bool(a._numerator * b._denominator < b._numerator * a._denominator)
+    except AttributeError:
+        return bool(a < b)
+
+
+def _lo(a: Any, b: Any) -> Any:
+    """``min(a, b)`` for exact coordinates."""
+    return b if _lt(b, a) else a
+
+
+def _hi(a: Any, b: Any) -> Any:
+    """``max(a, b)`` for exact coordinates."""
+    return b if _lt(a, b) else a
+
+
+def _same(p: Sequence[Any], q: Sequence[Any]) -> bool:
+    """``p == q`` for points of exact coordinates (normalised Fractions are equal when their parts are)."""
+    if p is q:
+        return True
+    try:
+        return all(x._numerator == y._numerator and x._denominator == y._denominator for x, y in zip(p, q, strict=True))
+    except AttributeError:
+        return tuple(p) == tuple(q)
 
 
 def _range_widening(ranges: Sequence[ParamRange], axes: Sequence[str], tool_axis: str | None) -> dict[str, Fraction]:
@@ -139,6 +173,7 @@ class CornerCheck:
         self.refine_s = 0.0
         self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer lo, hi, bound)
         self._int_cache: dict[int, Any] = {}
+        self._per_den: dict[int, int] = {}  # _ints: SCALE // d by denominator d
         self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
@@ -158,26 +193,31 @@ class CornerCheck:
         self._stretch_pts: list[tuple[Fraction, ...]] | None = [] if len(self.axes) == 2 else None
         self._last_extra: tuple[Any, tuple[tuple[str, Fraction], ...]] = ((), ())
         self._naive_modes = 0  # the length of the mode table when it was last searched for G64 Q without P
+        self._mode_hit: tuple[int, int, PathMode, int, Any] | None = None  # mode_of's last answer
 
     # ------------------------------------------------------------------ the stream
     def watch(self, chunks: Iterable[Any]) -> Iterator[Any]:
         """The chunks unchanged; each one's corners proved as it passes."""
         for chunk in chunks:
             yield chunk
-            if isinstance(chunk, MotionChunk) and chunk.scale is not None:
-                self._flush()
-                self._columns(chunk)
-                self._flush()
-            elif isinstance(chunk, MotionChunk):
-                for seg in chunk.objects or ():
-                    self._segment(seg)
-            elif isinstance(chunk, Segment):
-                self._segment(chunk)
-            else:
-                for seg in chunk.segments():
-                    self._segment(seg)
-            if len(self.pending) >= 4096:
-                self._flush()
+            self.take(chunk)
+
+    def take(self, chunk: Any) -> None:
+        """Follow one chunk (a column chunk, a chunk of segments, a segment): its corners proved or queued."""
+        if isinstance(chunk, MotionChunk) and chunk.scale is not None:
+            self._flush()
+            self._columns(chunk)
+            self._flush()
+        elif isinstance(chunk, MotionChunk):
+            for seg in chunk.objects or ():
+                self._segment(seg)
+        elif isinstance(chunk, Segment):
+            self._segment(chunk)
+        else:
+            for seg in chunk.segments():
+                self._segment(seg)
+        if len(self.pending) >= 4096:
+            self._flush()
 
     def finish(self, violating: Iterable[int] = (), upto: int | None = None) -> list[Reason]:
         """The reasons (VF208) after the last chunk; a corner next to a ``violating`` block (index) is left
@@ -199,9 +239,18 @@ class CornerCheck:
         return self.reasons
 
     def mode_of(self, block: int) -> PathMode:
+        """The mode block ``block`` runs in; the last answer's range of blocks is kept while the table is as it
+        was (same length, same last entry: the interpreter appends entries or replaces the last one)."""
         table = self.modes
-        k = bisect_right(table, block, key=lambda e: e[0]) - 1
-        return table[max(k, 0)][1]
+        hit = self._mode_hit
+        if hit is not None and hit[0] <= block < hit[1] and hit[3] == len(table) and hit[4] is table[-1]:
+            mode: PathMode = hit[2]
+            return mode
+        k = max(bisect_right(table, block, key=lambda e: e[0]) - 1, 0)
+        lo = table[k][0] if k else -1 << 62
+        hi = table[k + 1][0] if k + 1 < len(table) else 1 << 62
+        self._mode_hit = (lo, hi, table[k][1], len(table), table[-1])
+        return table[k][1]
 
     # ------------------------------------------------------------------ one motion at a time (exact)
     def _segment(self, seg: Segment) -> None:
@@ -209,7 +258,7 @@ class CornerCheck:
         if kind is SegmentKind.DWELL:
             self._stop()
             return
-        if seg.start == seg.end and kind is not SegmentKind.ARC:
+        if kind is not SegmentKind.ARC and _same(seg.start, seg.end):
             return  # a move of length 0: LinuxCNC's canon drops it, no corner
         if kind is SegmentKind.RAPID and self.dogleg:
             # a dogleg rapid is positioning with an in-position check at both ends (specs/path-modes.md)
@@ -225,34 +274,40 @@ class CornerCheck:
         mode = self.mode_of(seg.block)
         self.prev, self.prev_stop = seg, not mode.blend
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
-            box = _hull_box(seg)
-            if box is None:
-                self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
-            elif self.stretch is None:
-                self.stretch = [list(box[0]), list(box[1]), seg, seg]
-                self._stretch_shifts = {self._shift(seg)}
-                self._hull_add(seg, box, True)
-            else:
-                lo, hi = self.stretch[0], self.stretch[1]
-                for i in range(len(lo)):
-                    lo[i] = min(lo[i], box[0][i])
-                    hi[i] = max(hi[i], box[1][i])
-                self.stretch[3] = seg
-                self._stretch_shifts.add(self._shift(seg))
-                self._hull_add(seg, box, False)
+            self._run_motion(seg, mode)
         elif self.stretch is not None:
             self.stretch[3] = seg  # the motion that ends the run with an exact stop still belongs to it
             self._stretch_shifts.add(self._shift(seg))
-            lo, hi = self.stretch[0], self.stretch[1]
             box = _hull_box(seg)
             if box is not None:
-                for i in range(len(lo)):
-                    lo[i] = min(lo[i], box[0][i])
-                    hi[i] = max(hi[i], box[1][i])
+                _grow(self.stretch, box)
                 self._hull_add(seg, box, False)
             else:
                 self._stretch_pts = None  # a motion without a box: the run's box decides
             self._close_stretch()
+
+    def _run_motion(self, seg: Segment, mode: PathMode) -> None:
+        """A motion in a Fanuc run (cutting mode without a tolerance): the run's box grows to hold it."""
+        st = self.stretch
+        if st is not None and seg.start is st[3].end and seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
+            # a straight motion from where the run's last motion ended (in the box already): its end alone
+            _grow_point(st, seg.end)
+            st[3] = seg
+            self._stretch_shifts.add(self._shift(seg))
+            self._hull_add(seg, None, False)
+            return
+        box = _hull_box(seg)
+        if box is None:
+            self._reason(seg, seg, mode, None, "a motion of this kind next to a blended corner is not modelled")
+        elif st is None:
+            self.stretch = [list(box[0]), list(box[1]), seg, seg]
+            self._stretch_shifts = {self._shift(seg)}
+            self._hull_add(seg, box, True)
+        else:
+            _grow(st, box)
+            st[3] = seg
+            self._stretch_shifts.add(self._shift(seg))
+            self._hull_add(seg, box, False)
 
     def _queue(self, a: Segment, b: Segment, mode: PathMode) -> None:
         """A corner to prove: screened with others first (:meth:`_flush`).
@@ -262,7 +317,10 @@ class CornerCheck:
         if _naive_only(mode):
             self.naive.pending.append((a, b, mode, self.naive.count - 2))
             return
-        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg) and mode.dialect == "linuxcnc":
+        if mode.dialect == "fanuc" and mode.tolerance is None:  # the run's hull proves it (_close_stretch)
+            self.corners += 1
+            return
+        if mode.dialect == "linuxcnc" and _linear(a, self.dogleg) and _linear(b, self.dogleg) and _same(b.start, a.end):
             bound = mode.bound()
             if bound is not None or not mode.naive:
                 p0, p1, p2 = self._ints(a.start), self._ints(a.end), self._ints(b.end)
@@ -283,12 +341,19 @@ class CornerCheck:
             cached: list[int] = got[1]
             return cached
         out = []
+        per = self._per_den  # SCALE // d by denominator d (0: d does not divide SCALE)
         for i in self.rel:
-            x = p[i]
-            d = x.denominator
-            if SCALE % d:
+            x: Any = p[i]
+            try:
+                num, d = x._numerator, x._denominator
+            except AttributeError:  # an int
+                num, d = x.numerator, x.denominator
+            m = per.get(d)
+            if m is None:
+                m = per[d] = 0 if SCALE % d else SCALE // d
+            if not m:
                 return None
-            out.append(x.numerator * (SCALE // d))
+            out.append(num * m)
         self._int_cache[id(p)] = (p, out)
         return out
 
@@ -297,25 +362,27 @@ class CornerCheck:
 
         No tolerance: two straight motions' region lies in the box of the two (it uses at most half of each:
         each coordinate of ``C + (M1 - C) + (M2 - C)`` is between the two motions' far ends); other motions'
-        region is the Minkowski sum of their half boxes less ``C``.  With a bound: both motions' boxes grown
-        by it."""
+        region is the Minkowski sum of their half boxes less ``C``, which the sum with an arc's whole box holds
+        (an arc's half box takes square roots to 96 bits: :meth:`_region` computes it when the screen fails).
+        With a bound: both motions' boxes grown by it."""
         if mode.dialect == "fanuc" and mode.tolerance is None:
             return None
         bound = mode.bound()
         if bound is None and mode.naive:
             return None
-        if b.start == a.end and _linear(a, self.dogleg) and _linear(b, self.dogleg):
+        if _linear(a, self.dogleg) and _linear(b, self.dogleg) and _same(b.start, a.end):
             # the common case, on the zones' axes only
             lo, hi = [F0] * len(self.axes), [F0] * len(self.axes)
             for i in self.rel:
                 x, y, z = a.start[i], a.end[i], b.end[i]
-                lo[i], hi[i] = min(x, y, z), max(x, y, z)
+                lo[i], hi[i] = _lo(_lo(x, y), z), _hi(_hi(x, y), z)
                 if bound:
                     lo[i] -= bound
                     hi[i] += bound
             return tuple(lo), tuple(hi)
         if bound is None:
-            ba, bb = _half_box(a, self.dogleg, end=True), _half_box(b, self.dogleg, end=False)
+            ba = _half_box(a, self.dogleg, end=True) if _linear(a, self.dogleg) else _piece_box(a)
+            bb = _half_box(b, self.dogleg, end=False) if _linear(b, self.dogleg) else _piece_box(b)
             if ba is None or bb is None:
                 return None
             c = a.end
@@ -352,7 +419,8 @@ class CornerCheck:
                         cand_lo.append(min(box[0][i] for box in boxes))
                         cand_hi.append(max(box[1][i] for box in boxes))
                     lo[i], hi[i] = min(cand_lo), max(cand_hi)
-                self._shifts = frozenset(self._shift(x) for a, b, *_r in group for x in (a, b))
+                self._shifts = (frozenset(self._shift(x) for a, b, *_r in group for x in (a, b))
+                                if self.has_tip_zones else _NO_SHIFT)
                 if self._fits((tuple(lo), tuple(hi)), (t0,), F0):
                     self.corners += len(group)
                     continue
@@ -430,7 +498,7 @@ class CornerCheck:
             if len(self.reasons) > n:  # the run's every block: a violation inside it makes the reason redundant
                 self._blocks[-1] = range(st[2].block, st[3].block + 1)
 
-    def _hull_add(self, seg: Segment, box: Box, first: bool) -> None:
+    def _hull_add(self, seg: Segment, box: Box | None, first: bool) -> None:
         """Keep the ends of a straight motion (the segment's own tuples: nothing is computed unless the run's box
         does not fit), or the corners of another's box, for the run's convex hull (two-axis machines); a run of
         more than HULL_POINTS points keeps its box only."""
@@ -443,6 +511,7 @@ class CornerCheck:
             pts.append(seg.start)
             pts.append(seg.end)
         else:
+            assert box is not None  # a straight motion's box is not needed
             (x0, y0), (x1, y1) = box
             pts.extend(((x0, y0), (x0, y1), (x1, y0), (x1, y1)))
         if len(pts) > HULL_POINTS:
@@ -645,20 +714,17 @@ class CornerCheck:
         """A column chunk: corner boxes in integers (scale ``2 * 10**scale``), screened many at a time."""
         import numpy as np
 
-        from .screen import arc_boxes
-
         n = len(chunk)
         kinds, starts, ends = chunk.kind, chunk.start, chunk.end
         if n == 0 or kinds is None or starts is None or ends is None or chunk.block is None \
                 or chunk.tool_length is None:
             return
         table = self.modes
-        mode_blocks = np.array([b for b, _m in table], dtype=np.int64)
-        at = np.maximum(np.searchsorted(mode_blocks, chunk.block, side="right") - 1, 0)
-        used = [table[k][1] for k in sorted(set(at.tolist()))]
-        simple = {int(SegmentKind.LINE), int(SegmentKind.RAPID), int(SegmentKind.ARC), int(SegmentKind.DWELL)}
-        plain = (set(np.unique(kinds).tolist()) <= simple and not (self.dogleg and (kinds == SegmentKind.RAPID).any())
-                 and max(int(np.abs(starts).max()), int(np.abs(ends).max())) < 2**58)
+        at, used = _mode_rows(table, chunk.block)
+        count = np.bincount(kinds, minlength=len(SegmentKind))  # rows of each kind (kinds are small and >= 0)
+        plain = (not count[[k for k in range(len(count)) if k not in _SIMPLE]].any()
+                 and not (self.dogleg and count[SegmentKind.RAPID])
+                 and max(int(starts.max()), -int(starts.min()), int(ends.max()), -int(ends.min())) < 2**58)
         hull = [m.blend and m.dialect == "fanuc" and m.tolerance is None for m in used]
         naive = self._naive_tracked()  # G64 Q without P: every motion joins the merging windows, one at a time
         if not naive and plain and any(hull) and HULL_COLUMNS and all(h or not m.blend for h, m in zip(hull, used)):
@@ -670,56 +736,112 @@ class CornerCheck:
                 self._segment(seg)
             return
         dwell = kinds == SegmentKind.DWELL
-        moving = (starts != ends).any(axis=1) | (kinds == SegmentKind.ARC)
-        rows = np.flatnonzero(moving & ~dwell)
+        arc = kinds == SegmentKind.ARC
+        moving = _rows_differ(starts, ends) | arc
+        rows = np.flatnonzero(moving & ~dwell) if count[SegmentKind.DWELL] else np.flatnonzero(moving)
         if rows.size == 0:
-            if dwell.any():
+            if count[SegmentKind.DWELL]:
                 self._stop()
             return
         first, last = int(rows[0]), int(rows[-1])
         if dwell[:first].any():
             self._stop()
         self._segment(_row(chunk, first))  # the corner with the chunk before
-        blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at]
-        dwells = np.cumsum(dwell)
         i, j = rows[:-1], rows[1:]
-        keep = blend[i] & (dwells[j] == dwells[i])
-        i, j = i[keep], j[keep]
+        if len(used) > 1:
+            blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at]
+            keep = blend[i]
+        else:
+            keep = np.full(i.size, used[0].blend, dtype=bool)
+        if count[SegmentKind.DWELL]:
+            dwells = np.cumsum(dwell)
+            keep &= dwells[j] == dwells[i]
+        if not keep.all():
+            i, j = i[keep], j[keep]
         if i.size:
-            lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
-            arcs = np.flatnonzero(kinds == SegmentKind.ARC)
-            boxed = np.ones(n, dtype=bool)
-            if arcs.size:
-                boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)
-            linear = kinds != SegmentKind.ARC
-            mid = starts + ends
-            lin = linear[:, None]
-            t_lo = np.where(lin, np.minimum(mid, 2 * ends), 2 * lo)
-            t_hi = np.where(lin, np.maximum(mid, 2 * ends), 2 * hi)
-            h_lo = np.where(lin, np.minimum(mid, 2 * starts), 2 * lo)
-            h_hi = np.where(lin, np.maximum(mid, 2 * starts), 2 * hi)
-            c_lo = t_lo[i] + h_lo[j] - 2 * ends[i]
-            c_hi = t_hi[i] + h_hi[j] - 2 * ends[i]
-            assert chunk.scale is not None  # a column chunk
-            scale2 = 2 * 10**chunk.scale
-            bounds = [m.bound() for m in (table[k][1] for k in range(len(table)))]
-            widen = np.array([0 if b is None else -((-b * scale2).numerator // (b * scale2).denominator)
-                              for b in bounds], dtype=np.int64)[at[i]]
-            tol = widen > 0
-            if tol.any():  # within the bound of both motions' boxes
-                n_lo = 2 * np.minimum(lo[i], lo[j]) - widen[:, None]
-                n_hi = 2 * np.maximum(hi[i], hi[j]) + widen[:, None]
-                c_lo = np.where(tol[:, None], n_lo, c_lo)
-                c_hi = np.where(tol[:, None], n_hi, c_hi)
-            tls = chunk.tool_length
-            joined = (starts[j] == ends[i]).all(axis=1)  # else the exact path (the corner is not one point)
-            self._screen(chunk, c_lo, c_hi, i, j, boxed[i] & boxed[j] & joined, tls[i], tls[j], scale2, at)
+            self._corner_columns(chunk, i, j, at, used, bool(count[SegmentKind.ARC]))
         seg = _row(chunk, last)
         if last != first:
             self.prev = seg
             self.prev_stop = not self.mode_of(seg.block).blend
         if dwell[last:].any():
             self._stop()
+
+    def _corner_columns(self, chunk: MotionChunk, i: Any, j: Any, at: Any, used: Sequence[PathMode], arcs: bool) -> None:
+        """Prove the corners ``i[k]``/``j[k]`` of a column chunk: all at once in one box when it fits, else each one's
+        box in integers (over ``2 * 10**scale``), screened many at a time (:meth:`_screen`).
+
+        The one box: the union of every row's box (its end points; an arc's outward-rounded box) grown by the
+        largest bound of the chunk's modes, and of the boxes of the corners next to an arc.  It holds every
+        corner's box the screen computes (two straight motions' corner region lies in the box of the two, with a
+        bound in both boxes grown by it; a corner next to an arc is the Minkowski sum of the half boxes, computed
+        as the screen does), so it is the union test :meth:`_screen` starts with on a larger box: when it fits,
+        that one fits too.  It is taken when every corner's two rows have the tool length of the first and the
+        rows are joined (each starts where the one before ends), as the screen's union test needs."""
+        import numpy as np
+
+        from .screen import arc_boxes
+
+        kinds, starts, ends, tls = chunk.kind, chunk.start, chunk.end, chunk.tool_length
+        assert kinds is not None and starts is not None and ends is not None and tls is not None  # columns
+        assert chunk.scale is not None
+        lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
+        boxed = np.ones(len(chunk), dtype=bool)
+        arc_rows = np.flatnonzero(kinds == SegmentKind.ARC) if arcs else None
+        if arc_rows is not None:
+            boxed[arc_rows] = arc_boxes(chunk, arc_rows, lo, hi)
+        scale2 = 2 * 10**chunk.scale
+        whole = (len(chunk.axes) == len(self.axes) and int(tls.min()) == int(tls.max()) and bool(boxed.all())
+                 and not _rows_differ(starts[1:], ends[:-1]).any())
+        if whole:
+            g = max((b for b in (m.bound() for m in used if m.blend) if b is not None), default=F0)
+            box_lo = [Fraction(2 * int(lo[:, k].min()), scale2) - g for k in range(len(self.axes))]
+            box_hi = [Fraction(2 * int(hi[:, k].max()), scale2) + g for k in range(len(self.axes))]
+            if arc_rows is not None:
+                near = (kinds[i] == SegmentKind.ARC) | (kinds[j] == SegmentKind.ARC)
+                if near.any():
+                    c_lo, c_hi = self._corner_ints(chunk, lo, hi, i[near], j[near], at, scale2)
+                    for k in range(len(self.axes)):
+                        box_lo[k] = min(box_lo[k], Fraction(int(c_lo[:, k].min()), scale2))
+                        box_hi[k] = max(box_hi[k], Fraction(int(c_hi[:, k].max()), scale2))
+            self._shifts = _NO_SHIFT  # column rows carry no tool offsets
+            if self._fits((tuple(box_lo), tuple(box_hi)), (Fraction(int(tls[0]), 10**chunk.scale),), F0):
+                self.corners += int(i.size)
+                return
+        c_lo, c_hi = self._corner_ints(chunk, lo, hi, i, j, at, scale2)
+        joined = ~_rows_differ(starts[j], ends[i])  # else the exact path (the corner is not one point)
+        self._screen(chunk, c_lo, c_hi, i, j, boxed[i] & boxed[j] & joined, tls[i], tls[j], scale2, at)
+
+    def _corner_ints(self, chunk: MotionChunk, lo: Any, hi: Any, i: Any, j: Any, at: Any, scale2: int) -> Any:
+        """The boxes of the corners ``i[k]``/``j[k]`` in integers over ``scale2`` (``lo``/``hi``: the rows' boxes):
+        a line's half at the corner and an arc's whole box, summed less the corner; with a bound, both motions'
+        boxes grown by it."""
+        import numpy as np
+
+        kinds, starts, ends = chunk.kind, chunk.start, chunk.end
+        assert kinds is not None and starts is not None and ends is not None  # columns
+        table = self.modes
+        ei, si, sj, ej = ends[i], starts[i], starts[j], ends[j]
+        lo_i, hi_i, lo_j, hi_j = lo[i], hi[i], lo[j], hi[j]
+        lin_i = (kinds[i] != SegmentKind.ARC)[:, None]
+        lin_j = (kinds[j] != SegmentKind.ARC)[:, None]
+        mid_i, mid_j = si + ei, sj + ej
+        t_lo = np.where(lin_i, np.minimum(mid_i, 2 * ei), 2 * lo_i)
+        t_hi = np.where(lin_i, np.maximum(mid_i, 2 * ei), 2 * hi_i)
+        h_lo = np.where(lin_j, np.minimum(mid_j, 2 * sj), 2 * lo_j)
+        h_hi = np.where(lin_j, np.maximum(mid_j, 2 * sj), 2 * hi_j)
+        c_lo = t_lo + h_lo - 2 * ei
+        c_hi = t_hi + h_hi - 2 * ei
+        bounds = [m.bound() for m in (table[k][1] for k in range(len(table)))]
+        widen = np.array([0 if b is None else -((-b * scale2).numerator // (b * scale2).denominator)
+                          for b in bounds], dtype=np.int64)[at[i]]
+        tol = widen > 0
+        if tol.any():  # within the bound of both motions' boxes
+            n_lo = 2 * np.minimum(lo_i, lo_j) - widen[:, None]
+            n_hi = 2 * np.maximum(hi_i, hi_j) + widen[:, None]
+            c_lo = np.where(tol[:, None], n_lo, c_lo)
+            c_hi = np.where(tol[:, None], n_hi, c_hi)
+        return c_lo, c_hi
 
     def _screen(self, chunk: MotionChunk, c_lo: Any, c_hi: Any, i: Any, j: Any, boxed: Any, tl_a: Any, tl_b: Any,
                 scale2: int, at: Any) -> None:
@@ -728,12 +850,14 @@ class CornerCheck:
         assert chunk.scale is not None  # a column chunk
         den = 10**chunk.scale
         todo = [(0, int(i.size))]
+        axes = range(c_lo.shape[1])
         while todo:
             a, b = todo.pop()
             same = bool((tl_a[a:b] == tl_a[a]).all() and (tl_b[a:b] == tl_a[a]).all())
             if same and boxed[a:b].all():
-                box = (tuple(Fraction(int(x), scale2) for x in c_lo[a:b].min(axis=0)),
-                       tuple(Fraction(int(x), scale2) for x in c_hi[a:b].max(axis=0)))
+                box = (tuple(Fraction(int(c_lo[a:b, k].min()), scale2) for k in axes),
+                       tuple(Fraction(int(c_hi[a:b, k].max()), scale2) for k in axes))
+                self._shifts = _NO_SHIFT  # column rows carry no tool offsets
                 if self._fits(box, (Fraction(int(tl_a[a]), den),), F0):
                     self.corners += b - a
                     continue
@@ -942,6 +1066,26 @@ def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) 
         boxed[sel] &= ok
 
 
+def _mode_rows(table: Sequence[tuple[int, PathMode]], blocks: Any) -> tuple[Any, list[PathMode]]:
+    """The index in the mode table of each row's mode (a chunk's ``block`` column), and the modes used."""
+    import numpy as np
+
+    mode_blocks = np.array([b for b, _m in table], dtype=np.int64)
+    at = np.maximum(np.searchsorted(mode_blocks, blocks, side="right") - 1, 0)
+    k0, k1 = int(at.min()), int(at.max())
+    return at, [table[k][1] for k in ((k0,) if k0 == k1 else np.unique(at).tolist())]
+
+
+def _rows_differ(a: Any, b: Any) -> Any:
+    """Per row, do the integer rows of ``a`` and ``b`` differ (a boolean column; column by column, which numpy
+    does many times faster than a reduction along the rows of an (n, 3) array)?"""
+    ne = a != b
+    out = ne[:, 0].copy()
+    for k in range(1, ne.shape[1]):
+        out |= ne[:, k]
+    return out
+
+
 def _row(chunk: MotionChunk, k: int) -> Segment:
     """Row ``k`` of a column chunk as a segment (``MotionChunk.segments`` for one row)."""
     return next(chunk.rows(k, k + 1).segments())
@@ -954,17 +1098,20 @@ def _linear(seg: Segment, dogleg: bool) -> bool:
 def _piece_box(seg: Segment) -> Box | None:
     """A box holding every point of ``seg`` (lines, rapids straight or dogleg, arcs); None for other kinds."""
     if seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
-        return tuple(map(min, seg.start, seg.end)), tuple(map(max, seg.start, seg.end))
+        return tuple(map(_lo, seg.start, seg.end)), tuple(map(_hi, seg.start, seg.end))
     if seg.kind is SegmentKind.ARC:
-        from .geometry import arc_geom
+        plane = _arc_plane_box(seg)
+        if plane is None:
+            from .geometry import arc_geom
 
-        try:
-            g = arc_geom(seg)
-        except InvalidArgument:  # an arc the per-motion proof refuses: no box
-            return None
-        (xl, xh), (yl, yh) = g.plane_bbox()
-        lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
-        lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = xl, xh, yl, yh
+            try:
+                g = arc_geom(seg)
+            except InvalidArgument:  # an arc the per-motion proof refuses: no box
+                return None
+            plane = (*g.plane_bbox(), g.ia, g.ib)
+        (xl, xh), (yl, yh), ia, ib = plane
+        lo, hi = list(map(_lo, seg.start, seg.end)), list(map(_hi, seg.start, seg.end))
+        lo[ia], hi[ia], lo[ib], hi[ib] = xl, xh, yl, yh
         return tuple(lo), tuple(hi)
     if seg.kind is SegmentKind.SPLINE:
         # a NURBS curve with positive weights lies in the convex hull of its control points
@@ -991,6 +1138,61 @@ def _piece_box(seg: Segment) -> Box | None:
             lo[ic], hi[ic] = min(lo[ic], c.lo), max(hi[ic], c.hi)
         return tuple(lo), tuple(hi)
     return None
+
+
+def _arc_plane_box(seg: Segment) -> Any:
+    """``ArcGeom.plane_bbox()`` of a circular arc with a rational centre (start and end equally far from it), with
+    its plane's axis indices: ``((lo, hi), (lo, hi), ia, ib)``; None for other arcs (``arc_geom`` decides them).
+
+    The same box as ``plane_bbox`` (the same end points, the same ``sqrt_bounds`` of the squared radius, the same
+    sweep tests), computed on the vectors from the centre times their common denominator: integers, whose signs
+    of cross and dot products are those of the rational vectors, without Fraction arithmetic (most of the time of
+    an arc's box)."""
+    from math import lcm
+
+    from .geometry import sqrt_bounds
+
+    centre = seg.centre
+    if centre is None or seg.plane is None:
+        return None
+    ia, ib, _ = seg.plane_indices()
+    vals: tuple[Any, ...] = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
+    try:
+        dens = [v._denominator for v in vals]
+        nums = [v._numerator for v in vals]
+    except AttributeError:  # not Fractions
+        return None
+    d = lcm(*dens)
+    s0, s1, e0, e1, c0, c1 = (n * (d // q) for n, q in zip(nums, dens))
+    u, w = (s0 - c0, s1 - c1), (e0 - c0, e1 - c1)
+    r2 = u[0] * u[0] + u[1] * u[1]
+    if r2 == 0 or r2 != w[0] * w[0] + w[1] * w[1]:
+        return None  # no radius, or a spiral
+    full = (s0 == e0 and s1 == e1) or seg.turns > 0
+    r_hi = sqrt_bounds(Fraction(r2, d * d), 64)[1]
+    xs, ys = [vals[0], vals[2]], [vals[1], vals[3]]
+    ccw = not seg.clockwise
+    p, q = (u, w) if ccw else (w, u)  # clockwise from u to w is counter-clockwise from w to u
+    for v, out, c, sgn in (((1, 0), xs, centre[0], 1), ((-1, 0), xs, centre[0], -1), ((0, 1), ys, centre[1], 1),
+                           ((0, -1), ys, centre[1], -1)):
+        if full or _ccw_between(p, v, q):
+            out.append(c + sgn * r_hi)
+    return (min(xs), max(xs)), (min(ys), max(ys)), ia, ib
+
+
+def _ccw_between(u: tuple[int, int], v: tuple[int, int], w: tuple[int, int]) -> bool:
+    """``nczones.prover.geometry._angle_le`` on integer vectors: the counter-clockwise angle from ``u`` to ``v`` is at
+    most the one from ``u`` to ``w`` (angles in ``[0, 2 pi)``)."""
+    hv, hw = _int_half(u, v), _int_half(u, w)
+    if hv != hw:
+        return hv < hw
+    return v[0] * w[1] - v[1] * w[0] >= 0
+
+
+def _int_half(u: tuple[int, int], v: tuple[int, int]) -> int:
+    """0 when the counter-clockwise angle from ``u`` to ``v`` is in ``[0, pi)``, else 1."""
+    c = u[0] * v[1] - u[1] * v[0]
+    return 0 if c > 0 or (c == 0 and u[0] * v[0] + u[1] * v[1] > 0) else 1
 
 
 def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
@@ -1128,7 +1330,27 @@ class _NaiveWindows:
 def _union(a: Box | None, b: Box | None) -> Box | None:
     if a is None or b is None:
         return None
-    return tuple(map(min, a[0], b[0])), tuple(map(max, a[1], b[1]))
+    return tuple(map(_lo, a[0], b[0])), tuple(map(_hi, a[1], b[1]))
+
+
+def _grow_point(stretch: list[Any], p: Sequence[Any]) -> None:
+    """Grow a Fanuc run's box (``stretch[0]``, ``stretch[1]``: lists) to hold the point ``p``."""
+    lo, hi = stretch[0], stretch[1]
+    for i, x in enumerate(p):
+        if _lt(x, lo[i]):
+            lo[i] = x
+        elif _lt(hi[i], x):
+            hi[i] = x
+
+
+def _grow(stretch: list[Any], box: Box) -> None:
+    """Grow a Fanuc run's box (``stretch[0]``, ``stretch[1]``: lists) to hold ``box``."""
+    lo, hi = stretch[0], stretch[1]
+    for i, (x, y) in enumerate(zip(box[0], box[1])):
+        if _lt(x, lo[i]):
+            lo[i] = x
+        if _lt(hi[i], y):
+            hi[i] = y
 
 
 def _hull_box(seg: Segment) -> Box | None:

@@ -51,7 +51,8 @@ def test_a_light_start_loads_no_heavy_module(code):
 NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.metadata", "nczones.controller",
                           "nczones.fleet", "nczones.imports", "nczones.gcode.fastpath", "nczones.prover.screen",
                           "nczones.prover.polygon", "nczones.plans.homing", "nczones.plans.recovery", "nczones.solids",
-                          "nczones.gcode.linuxcnc.lathe", "nczones.gcode.cylindrical", "nczones.gcode.linuxcnc.g7x")
+                          "nczones.gcode.linuxcnc.lathe", "nczones.geometry.cylinder", "nczones.gcode.linuxcnc.g7x",
+                          "nczones.prover.blend", "nczones.prover.hull2d", "socket", "nczones.geometry.nurbs")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:

@@ -41,7 +41,6 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ...geometry.nurbs import Nurbs, NurbsError, clamped_uniform_knots
 from ...motion import PLANE_AXES, Plane, SegmentKind, SplineCurve
 
 __all__ = ["SPLINE_CODES", "spline_block", "spline_pending"]
@@ -87,6 +86,9 @@ def _plane_words(it, words, axis_words, code):
 
 
 def _emit_curve(it: Any, code: Any, degree: Any, knots: Any, control: Any, weights: Any) -> None:
+    # imported by the first spline, not by every verify's start
+    from ...geometry.nurbs import Nurbs, NurbsError
+
     try:
         Nurbs(degree, tuple(knots), tuple(control), tuple(weights))
     except NurbsError as exc:
@@ -105,6 +107,8 @@ def _emit_curve(it: Any, code: Any, degree: Any, knots: Any, control: Any, weigh
 
 def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> None:
     """Execute one block whose active motion is a spline code (called by the interpreter)."""
+    from ...geometry.nurbs import clamped_uniform_knots
+
     code = motion
     name = _NAME[code]
     if it.comp_on:
