@@ -105,10 +105,15 @@ def _emit_curve(it: Any, code: Any, degree: Any, knots: Any, control: Any, weigh
         it.emitted[-1] = replace(it.emitted[-1], extra=extra)
 
 
+def _knots(count: int, order: int) -> Any:
+    """:func:`nczones.geometry.nurbs.clamped_uniform_knots`, imported by the first spline, not by every verify."""
+    from ...geometry.nurbs import clamped_uniform_knots as knots
+
+    return knots(count, order)
+
+
 def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> None:
     """Execute one block whose active motion is a spline code (called by the interpreter)."""
-    from ...geometry.nurbs import clamped_uniform_knots
-
     code = motion
     name = _NAME[code]
     if it.comp_on:
@@ -148,7 +153,7 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
             if iw is None or jw is None:
                 raise it.error("GC208", "G5.1 needs both I and J", g1[1] if g1 else None)
             ctrl = [cur, off(cur, it.length_mm(iw.value), it.length_mm(jw.value)), end]
-            _emit_curve(it, code, 2, clamped_uniform_knots(3, 3), ctrl, [Fraction(1)] * 3)
+            _emit_curve(it, code, 2, _knots(3, 3), ctrl, [Fraction(1)] * 3)
             return
         pw_, qw = words.get("P"), words.get("Q")
         if pw_ is None or qw is None:
@@ -169,7 +174,7 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
         dp, dq = it.length_mm(pw_.value), it.length_mm(qw.value)
         ctrl = [cur, off(cur, di, dj), off(end, dp, dq), end]
         it._g5_next_ij = (-dp, -dq)
-        _emit_curve(it, code, 3, clamped_uniform_knots(4, 4), ctrl, [Fraction(1)] * 4)
+        _emit_curve(it, code, 3, _knots(4, 4), ctrl, [Fraction(1)] * 4)
         return
     if code == 53:
         if pend is None or pend.code != 52:
@@ -179,7 +184,7 @@ def spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> 
         if len(pend.points) < pend.order:
             raise it.error("GC209", f"a G5.2 curve of order L={pend.order} needs at least {pend.order} control "
                             f"points; it has {len(pend.points)}")
-        knots = clamped_uniform_knots(len(pend.points), pend.order)
+        knots = _knots(len(pend.points), pend.order)
         _emit_curve(it, 52, pend.order - 1, knots, pend.points, pend.weights)
         return
     pw = _plane_words(it, words, axis_words, code)
