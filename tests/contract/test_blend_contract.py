@@ -233,3 +233,201 @@ def test_shrinking_the_tolerance_band_breaks_the_contract(monkeypatch):
 
     monkeypatch.setattr(blend_module.CornerCheck, "_near", shrunk)
     assert any(_consistent(m, t)[1] == "safe" for m, t in probes), "p / 4 must not hold a blend within p"
+
+
+# ---------------------------------------------------------------------------------------------- arc corners
+# Chains of G1/G2/G3 motions in G64 modes: the controller blends line-arc, arc-line and arc-arc corners as the
+# planner does (``nczones.controller.blend_arcs``, from tp.c tpCreateLineArcBlend / ArcLine / ArcArc).  Arcs
+# have integer centres and end points: the radius vectors come from Pythagorean triples, so every end lies
+# exactly on its circle.
+#
+# The enclosure the spec states for a corner with an arc (path-modes.md §2): no tolerance, the Minkowski sum of
+# the boxes of the half of each motion at the corner, less C; with a tolerance, within p + q (per axis) of the
+# half of each motion at the corner (q > 0, naive CAM: of the whole motions).  The half of an arc is half its
+# sweep; its box is found here from the end points and the axis extremes in the sweep (floats, 1e-9 slack).
+RADII = {5: [(5, 0), (3, 4), (4, 3)], 10: [(10, 0), (6, 8), (8, 6)], 13: [(13, 0), (5, 12), (12, 5)],
+         25: [(25, 0), (7, 24), (24, 7), (15, 20), (20, 15)]}
+
+
+def _vectors(r):
+    out = set()
+    for a, b in RADII[r]:
+        for sa in (1, -1):
+            for sb in (1, -1):
+                out |= {(sa * a, sb * b), (sb * b, sa * a)}
+    return sorted(out)
+
+
+@st.composite
+def _chains(draw):
+    """(start point, motions): a motion is ("L", end) or ("A", clockwise, centre, end)."""
+    p = (draw(st.integers(-60, 60)), draw(st.integers(-60, 60)))
+    start, out = p, []
+    for _ in range(draw(st.integers(2, 3))):
+        if draw(st.booleans()):
+            end = (p[0] + draw(st.integers(-60, 60)), p[1] + draw(st.integers(-60, 60)))
+            if end == p:
+                end = (p[0] + 7, p[1])
+            out.append(("L", end))
+        else:
+            r = draw(st.sampled_from(sorted(RADII)))
+            vs = _vectors(r)
+            v1, v2 = draw(st.sampled_from(vs)), draw(st.sampled_from(vs))
+            centre = (p[0] - v1[0], p[1] - v1[1])
+            end = (centre[0] + v2[0], centre[1] + v2[1])
+            out.append(("A", draw(st.booleans()), centre, end))
+        p = out[-1][-1]
+    return start, out
+
+
+def _chain_program(start, motions, feed, mode):
+    lines = ["G61", f"G0 X{start[0]} Y{start[1]}", mode]
+    p = start
+    for k, mo in enumerate(motions):
+        f = f" F{feed}" if k == 0 else ""
+        if mo[0] == "L":
+            lines.append(f"G1{f} X{mo[1][0]} Y{mo[1][1]}")
+        else:
+            _a, cw, c, e = mo
+            lines.append(f"G{2 if cw else 3}{f} X{e[0]} Y{e[1]} I{c[0] - p[0]} J{c[1] - p[1]}")
+        p = mo[-1]
+    return "\n".join(lines + ["G61", "G4 P0", ""])
+
+
+def _half_box(p0, mo, at_end):
+    """Box (lo, hi) in mm of the half of motion ``mo`` (from ``p0``) at its end (``at_end``) or start."""
+    import math
+
+    if mo[0] == "L":
+        m = [(a + b) / 2 for a, b in zip(p0, mo[1])]
+        q = mo[1] if at_end else p0
+        return [min(a, b) for a, b in zip(m, q)], [max(a, b) for a, b in zip(m, q)]
+    _a, cw, c, e = mo
+    r = math.hypot(p0[0] - c[0], p0[1] - c[1])
+    a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
+    a1 = math.atan2(e[1] - c[1], e[0] - c[0])
+    sweep = (a1 - a0) % (2 * math.pi) if not cw else -((a0 - a1) % (2 * math.pi))
+    if sweep == 0:
+        sweep = -2 * math.pi if cw else 2 * math.pi
+    lo_a, hi_a = (a0 + sweep / 2, a0 + sweep) if at_end else (a0, a0 + sweep / 2)
+    lo_a, hi_a = min(lo_a, hi_a), max(lo_a, hi_a)
+    angles = [lo_a, hi_a] + [k * math.pi / 2 for k in range(math.floor(lo_a / (math.pi / 2)) - 1,
+                                                            math.ceil(hi_a / (math.pi / 2)) + 2)
+                             if lo_a <= k * math.pi / 2 <= hi_a]
+    xs = [c[0] + r * math.cos(t) for t in angles]
+    ys = [c[1] + r * math.sin(t) for t in angles]
+    return [min(xs) - 1e-9, min(ys) - 1e-9], [max(xs) + 1e-9, max(ys) + 1e-9]
+
+
+def _whole_box(p0, mo):
+    a, b = _half_box(p0, mo, False), _half_box(p0, mo, True)
+    return [min(x, y) for x, y in zip(a[0], b[0])], [max(x, y) for x, y in zip(a[1], b[1])]
+
+
+def _in_region(row, lo, hi, slack):
+    """``row`` (pulses) within ``slack`` mm per axis of the box (lo, hi) in mm; Z within one pulse of 0."""
+    x, y = row[0] * float(PULSE), row[1] * float(PULSE)
+    return (lo[0] - slack <= x <= hi[0] + slack and lo[1] - slack <= y <= hi[1] + slack
+            and abs(row[2]) <= 1)
+
+
+def _chain_arcs(text, machine):
+    """(block line of the corner's first motion, pulse positions) of every blend arc of the program."""
+    return [(arc.seg.line, pos) for arc, pos in _arcs(text, machine)
+            if arc.label == "G64 blend arc"]
+
+
+def _chain_in_enclosure(start, motions, mode, arcs) -> str | None:
+    """None when every blend pulse position lies in the enclosure of its corner, else a description."""
+    pts = [start] + [mo[-1] for mo in motions]
+    band = None
+    naive = Fraction(0)
+    if mode != "G64":
+        band = Fraction(mode.split()[1][1:])
+        naive = Fraction(0) if "Q0" in mode else band
+    for line, pos in arcs:
+        k = line - 4  # the corner between motions k and k + 1 (motion i is on line 4 + i)
+        a, b, c = motions[k], motions[k + 1], pts[k + 1]
+        if band is None:
+            if a[0] == "L" and b[0] == "L":
+                ok = _in_parallelogram(pts[k], c, b[1], pos)
+            else:
+                ba, bb = _half_box(pts[k], a, True), _half_box(c, b, False)
+                lo = [x + y - z for x, y, z in zip(ba[0], bb[0], c)]
+                hi = [x + y - z for x, y, z in zip(ba[1], bb[1], c)]
+                ok = all(_in_region(r, lo, hi, float(PULSE)) for r in pos.tolist())
+        else:
+            slack = float(band + naive + PULSE) + 1e-9
+            boxes = ([_whole_box(pts[k], a), _whole_box(c, b)] if naive > 0
+                     else [_half_box(pts[k], a, True), _half_box(c, b, False)])
+            ok = all(any(_in_region(r, lo, hi, slack) for lo, hi in boxes) for r in pos.tolist())
+        if not ok:
+            return f"corner after line {line}"
+    return None
+
+
+ARC_MODES = st.sampled_from(["G64", "G64", "G64", "G64 P0.05", "G64 P0.5 Q0", "G64 P2"])
+SLOW = st.tuples(st.sampled_from(["3000", "6000"]), st.sampled_from(["3000", "6000"]),
+                 st.sampled_from(["20", "100", "500"]), st.sampled_from(["20", "100", "500"]))
+
+
+@settings(max_examples=30, deadline=None)
+@given(_chains(), st.sampled_from([300, 1200, 6000]), ARC_MODES, SLOW)
+def test_every_blend_position_next_to_an_arc_lies_in_the_enclosure(chain, feed, mode, kin):
+    start, motions = chain
+    text = _chain_program(start, motions, feed, mode)
+    m = _machine(kin, ((Fraction(900), Fraction(900)), (Fraction(901), Fraction(901))))
+    bad = _chain_in_enclosure(start, motions, mode, _chain_arcs(text, m))
+    assert bad is None, f"{bad}:\n{text}"
+
+
+def _chain_probe(text, kin, pick):
+    """(machine with a clamp around a blend pulse position next to an arc, the position), or None."""
+    arcs = _chain_arcs(text, _machine(kin, ((Fraction(900), Fraction(900)), (Fraction(901), Fraction(901)))))
+    pts = [row for _line, pos in arcs for row in pos.tolist()]
+    if not pts:
+        return None
+    q = tuple(Fraction(v) * PULSE for v in pts[int(pick * (len(pts) - 1))])
+    return _machine(kin, ((q[0] - HALF, q[1] - HALF), (q[0] + HALF, q[1] + HALF))), q
+
+
+@settings(max_examples=10, deadline=None)
+@given(_chains(), st.sampled_from([300, 1200, 6000]), ARC_MODES, SLOW, st.floats(0, 1))
+def test_a_controller_alarm_next_to_an_arc_is_never_proved_safe(chain, feed, mode, kin, pick):
+    text = _chain_program(*chain, feed, mode)
+    case = _chain_probe(text, kin, pick)
+    if case is None:
+        return
+    m, _q = case
+    alarmed, verdict = _consistent(m, text)
+    assert alarmed, "the clamp contains a position the controller moves through"
+    assert verdict != "safe", text
+
+
+# Deep corners next to arcs (line-arc, arc-line, arc-arc; fast feed, slow axes: the blends use what the planner
+# allows).  The probe boxes sit in the middle of the blend arcs, off the programmed path.
+DEEP_ARCS = [((0, 0), [("L", (20, 0)), ("A", False, (32, 5), (44, 10))]),
+             ((-25, 0), [("A", True, (0, 0), (0, 25)), ("L", (20, 5))]),
+             ((0, 0), [("A", False, (0, 10), (10, 10)), ("A", True, (15, 22), (2, 22))])]
+
+
+def test_shrinking_the_arc_corner_enclosure_breaks_the_contract(monkeypatch):
+    kin = ("6000", "6000", "20", "20")
+    probes = []
+    for start, motions in DEEP_ARCS:
+        text = _chain_program(start, motions, 6000, "G64")
+        for pick in (0.5, 0.25):
+            case = _chain_probe(text, kin, pick)
+            assert case is not None, motions
+            probes.append((case[0], text))
+    assert all(_consistent(m, t) == (True, "unknown") for m, t in probes)
+    half = blend_module._half_box
+
+    def at_the_corner(seg, dogleg, end):  # an arc's part of the enclosure shrunk to the corner point
+        if seg.kind.name == "ARC":
+            p = seg.end if end else seg.start
+            return p, p
+        return half(seg, dogleg, end)
+
+    monkeypatch.setattr(blend_module, "_half_box", at_the_corner)
+    assert any(_consistent(m, t)[1] == "safe" for m, t in probes), "the corner point must not hold an arc blend"
