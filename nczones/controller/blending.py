@@ -43,7 +43,7 @@ import numpy as np
 
 from ..errors import InvalidArgument
 from ..machine import Machine, RapidMode
-from ..motion import Segment, SegmentKind, arc_path_float
+from ..motion import Plane, Segment, SegmentKind, arc_path_float
 from .blend_arcs import (
     BLEND_DIST_FRACTION,
     TP_ANGLE_EPSILON,
@@ -71,6 +71,8 @@ BLENDING = ("auto", "exact", "linuxcnc")
 LINEAR = ("X", "Y", "Z")
 #: ``tpSetupTangent``'s ``SHARP_CORNER_DEG``: two motions whose directions reverse within 2 degrees stop exactly.
 SHARP_CORNER_EPSILON = (math.pi * 2.0 / 180.0) ** 2
+#: ``linkable`` (emccanon.cc): a naive-CAM chain holds at most 101 points (it refuses one when it has more than 100).
+NAIVE_CHAIN = 101
 
 
 @dataclass(frozen=True, slots=True)
@@ -207,16 +209,30 @@ class _Blender:
         self.vel = [float(machine.axis(a).rapid_mm_min) / 60 if a in names else 0.0 for a in LINEAR]
         self.acc = [float(machine.axis(a).accel_mm_s2 or 0) if a in names else 0.0 for a in LINEAR]
         self.dogleg = machine.rapid_mode is RapidMode.DOGLEG
+        self._keys: list[int] | None = None
 
     def mode(self, block: int) -> tuple[bool, float]:
         """(blends, p) for the motion of ``block`` (the mode it was queued in)."""
         if self.table is None:
             return self.blend0, self.tol0
-        i = bisect_right([b for b, _m in self.table], block) - 1
-        m = self.table[max(i, 0)][1]
+        m = self._entry(block)
         if m.dialect != "linuxcnc" or not m.blend:
             return False, 0.0
         return True, float(m.tolerance or 0)
+
+    def naive(self, block: int) -> float:
+        """The naive-CAM tolerance q of ``block``'s mode (0: no merging; LinuxCNC's ``G64 P p`` sets q = p)."""
+        if self.table is None:
+            return self.tol0 if self.blend0 else 0.0
+        m = self._entry(block)
+        return float(m.naive or 0) if m.dialect == "linuxcnc" and m.blend else 0.0
+
+    def _entry(self, block: int) -> Any:
+        assert self.table is not None
+        if self._keys is None:
+            self._keys = [b for b, _m in self.table]
+        i = bisect_right(self._keys, block) - 1
+        return self.table[max(i, 0)][1]
 
     def straight(self, seg: Segment) -> bool:
         if seg.kind is SegmentKind.LINE or (seg.kind is SegmentKind.RAPID and not self.dogleg):
@@ -369,6 +385,91 @@ def _length(seg: Segment) -> float:
     return math.sqrt(sum(float(e - s) ** 2 for s, e in zip(seg.start, seg.end)))
 
 
+class _NaiveCam:
+    """LinuxCNC's naive-CAM merging (``emccanon.cc`` ``see_segment``, ``linkable``, ``flush_segments``), before the
+    planner: in ``G64`` with a naive-CAM tolerance q > 0 (``G64 P p Q q``, Q defaulting to P), consecutive straight
+    feeds are chained while every chained point lies within q of the line from the chain's start (the last point
+    sent, ``canon.endPoint``) to the new point, at most ``NAIVE_CHAIN`` points; the chain is sent as one line to
+    its last point.  An XY arc whose chord deviation (``chord_deviation``) is below q joins the chain as its
+    middle point and its end point.  A rapid, any other motion, a dwell, a change of mode, feed, tool length or
+    of a rotary/UVW axis ends the chain (``flush_segments`` in ``STRAIGHT_TRAVERSE``, ``ARC_FEED``, ``DWELL``,
+    ``SET_MOTION_CONTROL_MODE``, ``SET_FEED_RATE``, ``USE_TOOL_LENGTH_OFFSET``; ``see_segment``)."""
+
+    def __init__(self, bl: _Blender):
+        self.bl = bl
+        self.chain: list[Segment] = []
+        self.q = 0.0
+
+    def run(self, segments: Iterable[Segment]) -> Iterator[Segment]:
+        for seg in segments:
+            q = self.bl.naive(seg.block) if seg.kind in (SegmentKind.LINE, SegmentKind.ARC) else 0.0
+            pieces = self._pieces(seg, q) if q > 0 else None
+            if pieces is None:
+                yield from self.flush()
+                yield seg
+                continue
+            if self.chain and (q != self.q or not self._same(self.chain[-1], pieces[0])):
+                yield from self.flush()
+            self.q = q
+            for p in pieces:
+                if self.chain and not self._linkable(p):
+                    yield from self.flush()
+                self.chain.append(p)
+        yield from self.flush()
+
+    def flush(self) -> Iterator[Segment]:
+        if len(self.chain) == 1:
+            yield self.chain[0]
+        elif self.chain:
+            yield dataclasses.replace(self.chain[-1], start=self.chain[0].start)
+        self.chain = []
+
+    def _same(self, a: Segment, b: Segment) -> bool:
+        return (a.block == b.block or self.bl.mode(a.block) == self.bl.mode(b.block)) and a.end == b.start \
+            and a.feed_mm_min == b.feed_mm_min and a.tool_length == b.tool_length and a.extra == b.extra
+
+    def _pieces(self, seg: Segment, q: float) -> list[Segment] | None:
+        """The chain points of a motion (as line segments), None when it ends the chain."""
+        if any(seg.start[k] != seg.end[k] for k in self.bl.others):
+            return None
+        if seg.kind is SegmentKind.LINE:
+            return [seg]
+        if seg.kind is not SegmentKind.ARC or seg.plane is not Plane.XY:
+            return None
+        i, j, _n = seg.plane_indices()
+        sx, sy, ex, ey = (float(seg.start[i]), float(seg.start[j]), float(seg.end[i]), float(seg.end[j]))
+        cx, cy = _float_centre(seg)
+        th1, th2, r = math.atan2(sy - cy, sx - cx), math.atan2(ey - cy, ex - cx), math.hypot(sy - cy, sx - cx)
+        for _ in range(2):  # chord_deviation: the end angle past the start in the arc's sense (turns ignored)
+            if seg.clockwise and th2 - th1 >= -1e-5:
+                th2 -= 2 * math.pi
+            elif not seg.clockwise and th2 - th1 <= 1e-5:
+                th2 += 2 * math.pi
+        if r * (1 - math.cos(abs(th2 - th1) / 2)) >= q:
+            return None
+        mid = [(a + b) / 2 for a, b in zip(seg.start, seg.end)]
+        mid[i], mid[j] = Fraction(cx + r * math.cos((th1 + th2) / 2)), Fraction(cy + r * math.sin((th1 + th2) / 2))
+        half = dataclasses.replace(seg, kind=SegmentKind.LINE, end=tuple(mid), plane=None, centre=None, radius=None,
+                                   clockwise=False, turns=0)
+        return [half, dataclasses.replace(half, start=tuple(mid), end=seg.end)]
+
+    def _linkable(self, p: Segment) -> bool:
+        """``linkable``: the chain's points within q of the line from its start to ``p``'s end."""
+        if len(self.chain) > NAIVE_CHAIN - 1:
+            return False
+        b, x = self.bl.vec(self.chain[0].start), self.bl.vec(p.end)
+        m = x - b
+        mm = float(np.dot(m, m))
+        if mm == 0:
+            return False
+        for seg in self.chain:
+            pt = self.bl.vec(seg.end)
+            t0 = min(max(float(np.dot(m, pt - b)) / mm, 0.0), 1.0)
+            if float(np.linalg.norm(pt - (b + t0 * m))) > self.q:
+                return False
+        return True
+
+
 def blend_motion(segments: Iterable[Segment], machine: Machine, motion: Any = None) -> Iterator[Segment | BlendArc]:
     """The motions the planner runs: motions trimmed at blended corners, and the blend arcs.
 
@@ -377,7 +478,7 @@ def blend_motion(segments: Iterable[Segment], machine: Machine, motion: Any = No
     """
     bl = _Blender(machine, _mode_table(machine, motion))
     pending: _Pending | None = None
-    for seg in segments:
+    for seg in _NaiveCam(bl).run(segments):
         if pending is not None:
             joined = bl.corner(pending, seg) if seg.kind is not SegmentKind.DWELL else None
             if joined is not None:
