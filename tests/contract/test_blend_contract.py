@@ -25,6 +25,7 @@ from decimal import Decimal
 from fractions import Fraction
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -32,6 +33,7 @@ from nczones.controller import simulate
 from nczones.controller.blending import BlendArc, arc_pulse_positions, blend_motion
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
+from nczones.motion import SegmentKind
 from nczones.prover import blend as blend_module
 from nczones.prover import verify_text
 
@@ -90,12 +92,12 @@ def _arcs(text, machine):
     prog = [round(v / PULSE) for v in segs[0].start]
     out = []
     for item in blend_motion(segs, machine, run):
-        if isinstance(item, BlendArc):
+        if isinstance(item, BlendArc) and item.label == "G64 blend arc":
             pos = arc_pulse_positions(item, [a.pulse for a in machine.axes], prog)
             out.append((item, pos))
             prog = [int(v) for v in pos[-1]] if len(pos) else prog
-        else:
-            prog = [round(v / PULSE) for v in item.end]
+        else:  # a motion, or an arc trimmed by blends (on the programmed path): the walk ends at its end
+            prog = [round(Fraction(v) / PULSE) for v in item.end]
     return out
 
 
@@ -333,8 +335,7 @@ def _in_region(row, lo, hi, slack):
 
 def _chain_arcs(text, machine):
     """(block line of the corner's first motion, pulse positions) of every blend arc of the program."""
-    return [(arc.seg.line, pos) for arc, pos in _arcs(text, machine)
-            if arc.label == "G64 blend arc"]
+    return [(arc.seg.line, pos) for arc, pos in _arcs(text, machine)]
 
 
 def _chain_in_enclosure(start, motions, mode, arcs) -> str | None:
@@ -371,7 +372,7 @@ SLOW = st.tuples(st.sampled_from(["3000", "6000"]), st.sampled_from(["3000", "60
                  st.sampled_from(["20", "100", "500"]), st.sampled_from(["20", "100", "500"]))
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=60, deadline=None)
 @given(_chains(), st.sampled_from([300, 1200, 6000]), ARC_MODES, SLOW)
 def test_every_blend_position_next_to_an_arc_lies_in_the_enclosure(chain, feed, mode, kin):
     start, motions = chain
@@ -431,3 +432,166 @@ def test_shrinking_the_arc_corner_enclosure_breaks_the_contract(monkeypatch):
 
     monkeypatch.setattr(blend_module, "_half_box", at_the_corner)
     assert any(_consistent(m, t)[1] == "safe" for m, t in probes), "the corner point must not hold an arc blend"
+
+
+# ---------------------------------------------------------------------------------------------- naive CAM (G64 Q)
+# Runs of short lines that zig-zag within a few tenths of a straight line, then a corner, in ``G64 P p Q q`` (or
+# ``G64 Q q`` without P).  The controller merges them as emccanon's naive-CAM detector does and blends the merged
+# lines.  The enclosure the spec states (path-modes.md §2): with P, every point within p + q of the programmed
+# path (the prover: of the motions of each corner, per axis); without P, the merged lines within q of the path
+# and every blend at a programmed corner C in ``C + (x - C) + (y - C)``, x in the box of the motions (up to 101)
+# before C, y in the box of those after it.
+NAIVE_MODES = st.sampled_from(["G64 P0.01 Q0.2", "G64 P0.1 Q0.5", "G64 P0.05", "G64 Q0.3"])
+
+
+@st.composite
+def _runs(draw):
+    """(start, end points of the lines): a zig-zag run along a direction, then a corner."""
+    start = (draw(st.integers(-50, 50)), draw(st.integers(-50, 50)))
+    d = draw(st.sampled_from([(1, 0), (0, 1), (3, 4), (-4, 3), (1, 1)]))
+    norm = (d[0] ** 2 + d[1] ** 2) ** 0.5
+    pts, s = [], 0
+    for _ in range(draw(st.integers(3, 7))):
+        s += draw(st.integers(2, 12))
+        off = Fraction(draw(st.integers(-4, 4)), 10)  # up to 0.4 mm off the run's line
+        pts.append((start[0] + Fraction(round(s * d[0] / norm * 1000), 1000) - off * Fraction(round(d[1] / norm * 1000), 1000),
+                    start[1] + Fraction(round(s * d[1] / norm * 1000), 1000) + off * Fraction(round(d[0] / norm * 1000), 1000)))
+    last = pts[-1]
+    turn = draw(st.sampled_from([(20, 30), (-25, 10), (5, -30)]))
+    pts.append((last[0] + turn[0], last[1] + turn[1]))
+    return start, pts
+
+
+def _run_program(start, pts, feed, mode):
+    lines = ["G61", f"G0 X{start[0]} Y{start[1]}", mode]
+    for k, p in enumerate(pts):
+        lines.append(f"G1{' F%d' % feed if k == 0 else ''} X{_dec(Fraction(p[0]))} Y{_dec(Fraction(p[1]))}")
+    return "\n".join(lines + ["G61", "G4 P0", ""])
+
+
+def _dist_to_path(xy, path):
+    """Euclidean distances from the points ``xy`` (shape (n, 2)) to the polyline ``path`` (floats)."""
+    best = np.full(len(xy), np.inf)
+    for a, b in zip(path, path[1:]):
+        a, d = np.array(a), np.array(b) - np.array(a)
+        t = np.clip((xy - a) @ d / float(d @ d), 0.0, 1.0)
+        best = np.minimum(best, np.linalg.norm(xy - (a + t[:, None] * d), axis=1))
+    return best
+
+
+def _moved(text, machine):
+    """Floats (x, y, kind) along every motion the controller moves in the G64 part: merged lines every 0.05 mm,
+    blend arcs at their pulse positions."""
+    run = interpret_text(text, machine, fast=False)
+    segs = list(run.segments())
+    out = []
+    for item in blend_motion(segs, machine, run):
+        if isinstance(item, BlendArc):
+            for x, y, *_ in item.samples(max(2, int(item.radius * item.sweep / 0.01))).tolist():
+                out.append((x, y, "blend", item.corner))
+        elif item.kind is SegmentKind.LINE:
+            s, e = [float(v) for v in item.start], [float(v) for v in item.end]
+            n = max(2, int(max(abs(e[0] - s[0]), abs(e[1] - s[1])) / 0.05))
+            for t in np.linspace(0, 1, n):
+                out.append((s[0] + t * (e[0] - s[0]), s[1] + t * (e[1] - s[1]), "line", None))
+    return out
+
+
+def _naive_in_enclosure(start, pts, mode, moved) -> str | None:
+    path = [tuple(map(float, start))] + [tuple(map(float, p)) for p in pts]
+    words = dict((w[0], Fraction(w[1:])) for w in mode.split()[1:])
+    p, q = words.get("P", Fraction(0)), words.get("Q", words.get("P", Fraction(0)))
+    slack = float(PULSE) + 1e-9
+    xy = np.array([(x, y) for x, y, _k, _c in moved])
+    near = _dist_to_path(xy, path) <= float(p + q) + slack
+    for (x, y, kind, corner), ok in zip(moved, near.tolist()):
+        if p > 0 or kind == "line":
+            if not ok:
+                return f"{kind} point ({x:.4f}, {y:.4f}) beyond p + q"
+        else:
+            c = (float(corner[0]), float(corner[1]))
+            k = path.index(c)
+            before, after = path[max(0, k - 101):k + 1], path[k:k + 102]
+            for i in (0, 1):
+                lo = min(v[i] for v in before) + min(v[i] for v in after) - c[i]
+                hi = max(v[i] for v in before) + max(v[i] for v in after) - c[i]
+                if not lo - slack <= (x, y)[i] <= hi + slack:
+                    return f"blend point ({x:.4f}, {y:.4f}) outside the windows' box sum at {c}"
+    return None
+
+
+@settings(max_examples=20, deadline=None)
+@given(_runs(), st.sampled_from([600, 3000]), NAIVE_MODES, SLOW)
+def test_every_naive_cam_position_lies_in_the_enclosure(run, feed, mode, kin):
+    start, pts = run
+    text = _run_program(start, pts, feed, mode)
+    m = _machine(kin, ((Fraction(900), Fraction(900)), (Fraction(901), Fraction(901))))
+    bad = _naive_in_enclosure(start, pts, mode, _moved(text, m))
+    assert bad is None, f"{bad}:\n{text}"
+
+
+@settings(max_examples=8, deadline=None)
+@given(_runs(), st.sampled_from([600, 3000]), NAIVE_MODES, SLOW, st.floats(0, 1))
+def test_a_controller_alarm_on_a_merged_run_is_never_proved_safe(run, feed, mode, kin, pick):
+    text = _run_program(*run, feed, mode)
+    moved = _moved(text, _machine(kin, ((Fraction(900), Fraction(900)), (Fraction(901), Fraction(901)))))
+    x, y, _kind, _c = moved[int(pick * (len(moved) - 1))]
+    q = (Fraction(round(x * 1000), 1000), Fraction(round(y * 1000), 1000))
+    if abs(q[0]) <= 2 * HALF and abs(q[1]) <= 2 * HALF:
+        return  # a clamp around the machine's reference position is not a valid machine
+    m = _machine(kin, ((q[0] - HALF, q[1] - HALF), (q[0] + HALF, q[1] + HALF)))
+    alarmed, verdict = _consistent(m, text)
+    assert alarmed, "the clamp contains a position the controller moves through"
+    assert verdict != "safe", text
+
+
+# A merged zig-zag: (0,0) (10,0.4) (20,0) (30,0.4) (40,0) lie within q = 0.5 of the chord (0,0)-(40,0), so the
+# controller moves the chord (emccanon linkable), 0.4 mm from the programmed vertex (10, 0.4) and the
+# polyline near it, far beyond p = 0.01.  A clamp around (10, 0) on the chord: the controller alarms.
+ZIGZAG = "G61\nG0 X0 Y0\nG64 P0.01 Q0.5\nG1 F3000 X10 Y0.4\nG1 X20 Y0\nG1 X30 Y0.4\nG1 X40 Y0\nG1 X40 Y30\nG61\nG4 P0\n"
+
+
+def test_dropping_the_naive_cam_q_breaks_the_contract(monkeypatch):
+    kin = ("6000", "6000", "500", "500")
+    m = _machine(kin, ((Fraction(10) - HALF, -HALF), (Fraction(10) + HALF, HALF)))
+    assert _consistent(m, ZIGZAG) == (True, "unknown")
+    near = blend_module.CornerCheck._near
+
+    def no_q(self, seg, tls, mode, end):  # the band p + q cut to p: naive CAM dropped
+        return near(self, seg, tls, dataclasses.replace(mode, naive=Fraction(0)), end)
+
+    monkeypatch.setattr(blend_module.CornerCheck, "_near", no_q)
+    assert _consistent(m, ZIGZAG)[1] == "safe", "p alone must not hold a merged chord"
+
+
+# ---------------------------------------------------------------------------------------------- long profile
+# Opt-in (``pytest -m long``), numbers in specs/path-modes.md §7.
+LONG = 2000
+
+
+@pytest.mark.long
+@settings(max_examples=LONG, deadline=None, derandomize=False)
+@given(_chains(), st.sampled_from([300, 1200, 6000]), ARC_MODES, SLOW)
+def test_long_arc_corners_in_the_enclosure(chain, feed, mode, kin):
+    test_every_blend_position_next_to_an_arc_lies_in_the_enclosure.hypothesis.inner_test(chain, feed, mode, kin)
+
+
+@pytest.mark.long
+@settings(max_examples=LONG, deadline=None, derandomize=False)
+@given(_runs(), st.sampled_from([600, 3000]), NAIVE_MODES, SLOW)
+def test_long_naive_cam_in_the_enclosure(run, feed, mode, kin):
+    test_every_naive_cam_position_lies_in_the_enclosure.hypothesis.inner_test(run, feed, mode, kin)
+
+
+@pytest.mark.long
+@settings(max_examples=LONG // 4, deadline=None, derandomize=False)
+@given(_chains(), st.sampled_from([300, 1200, 6000]), ARC_MODES, SLOW, st.floats(0, 1))
+def test_long_arc_probes_never_safe(chain, feed, mode, kin, pick):
+    test_a_controller_alarm_next_to_an_arc_is_never_proved_safe.hypothesis.inner_test(chain, feed, mode, kin, pick)
+
+
+@pytest.mark.long
+@settings(max_examples=LONG // 4, deadline=None, derandomize=False)
+@given(_runs(), st.sampled_from([600, 3000]), NAIVE_MODES, SLOW, st.floats(0, 1))
+def test_long_naive_probes_never_safe(run, feed, mode, kin, pick):
+    test_a_controller_alarm_on_a_merged_run_is_never_proved_safe.hypothesis.inner_test(run, feed, mode, kin, pick)
