@@ -229,7 +229,7 @@ class _Blender:
 
     def _entry(self, block: int) -> Any:
         assert self.table is not None
-        if self._keys is None:
+        if self._keys is None or len(self._keys) != len(self.table):  # the interpreter fills it as it runs
             self._keys = [b for b, _m in self.table]
         i = bisect_right(self._keys, block) - 1
         return self.table[max(i, 0)][1]

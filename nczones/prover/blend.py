@@ -994,8 +994,10 @@ def _piece_box(seg: Segment) -> Box | None:
 
 
 def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
-    """A box holding the half of ``seg`` at its end (``end``) or start: a line's and a circular arc's (of less
-    than a whole turn) half, the whole box of other motions."""
+    """A box holding the part of ``seg`` a blend may use at its end (``end``) or start: a line's half; a circular
+    arc's (of less than a whole turn) half at its start and, at its end, the part from before a quarter of its
+    sweep (the planner trims up to two thirds of an arc before a corner, ``blendInit3FromArcLine`` /
+    ``ArcArc``: ``phi1_max = angle * 2/3``); the whole box of other motions."""
     m = tuple((s + e) / 2 for s, e in zip(seg.start, seg.end))
     p = seg.end if end else seg.start
     if _linear(seg, dogleg):
@@ -1013,7 +1015,8 @@ def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
 
 def _half_arc_box(seg: Segment, end: bool) -> Any:
     """``((lo, hi) first axis, (lo, hi) second axis, ia, ib)`` holding the half of the sweep of a circular arc with
-    a rational centre at its end (``end``) or start; None for a whole turn, a spiral or an R-format arc.
+    a rational centre at its start, or its last three quarters (``end``, see :func:`_half_box`); None for a whole
+    turn, a spiral or an R-format arc.
 
     The angular middle of the sweep points along ``u + w`` (``u``, ``w``: start and end from the centre, of
     equal length; the opposite when the sweep is more than half a turn, ``u`` turned a quarter for half a
@@ -1037,6 +1040,13 @@ def _half_arc_box(seg: Segment, end: bool) -> Any:
         d = (u[0] + w[0], u[1] + w[1])
         if (cross < 0) == g.ccw:  # more than half a turn
             d = (-d[0], -d[1])
+    if end:
+        # from direction u k + d, k >= |d| / r: on the sweep between u and the quarter point (the bisector of
+        # u and d), so the part up to the end holds the last three quarters, more than the two thirds a blend
+        # may trim (tp.c tpCreateArcLineBlend / ArcArcBlend: trim1 <= phi1_max <= angle * 2/3)
+        r_lo = sqrt_bounds(g.r2_lo)[0]
+        k = sqrt_bounds(d[0] * d[0] + d[1] * d[1])[1] / r_lo
+        d = (u[0] * k + d[0], u[1] * k + d[1])
     k_lo, k_hi = sqrt_bounds(g.r2_hi / (d[0] * d[0] + d[1] * d[1]))
     mid = [sorted((c[i] + d[i] * k_lo, c[i] + d[i] * k_hi)) for i in (0, 1)]
     a, b = (d, w) if end else (u, d)
