@@ -1,4 +1,4 @@
-"""Corner blending as LinuxCNC's trajectory planner does it: blend arcs between two straight motions.
+"""Corner blending as LinuxCNC's trajectory planner does it: blend arcs at corners, after naive-CAM merging.
 
 The reference controller moves the programmed path in exact path modes.  In a blending mode (LinuxCNC
 ``G64``, ``G64 P p``) the planner rounds the corner between two straight motions with a **blend arc**
@@ -23,10 +23,12 @@ used):
   ``v_plan``, ``R_plan``, ``d_plan``; no arc when ``R_plan`` or the arc length is too small;
 * ``blendFindPoints3``: the centre on the bisector ``u2 - u1`` at ``R_plan / sin(theta)`` from the corner.
 
-Only motions of the linear axes X, Y, Z are blended (rotary or UVW motion makes the planner fall back to a
-parabolic blend, which this controller does not reproduce: it moves that corner exactly, a path inside the
-same enclosure).  Naive-CAM merging (``G64 Q``) is not reproduced either.  Floats decide the geometry; the
-controller rounds every arc point to whole pulses.
+Corners with a circular arc (line-arc, arc-line, arc-arc) get the planner's blend arcs too
+(``nczones.controller.blend_arcs``), and before the planner the canonical layer's naive-CAM merging (``G64 Q``,
+``emccanon.cc`` ``see_segment``) joins short lines (:class:`_NaiveCam`).  Only motions of the linear axes X, Y,
+Z are blended (rotary or UVW motion, a helix or a refused fit make the planner fall back to a parabolic blend,
+which this controller does not reproduce: it moves that corner exactly, a path inside the same enclosure).
+Floats decide the geometry; the controller rounds every arc point to whole pulses (specs/path-modes.md §7).
 """
 
 from __future__ import annotations

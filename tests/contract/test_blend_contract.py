@@ -14,8 +14,9 @@ written from ``src/emc/tp``, independent of the prover).  For generated corners 
    position of a blend arc (the controller certainly passes it, so it alarms) is never proved ``safe``.
 
 Mutations that shrink the enclosure (the blend start bound ``BLEND_FRACTION`` halved, the tolerance band cut
-to a quarter of P with no naive-CAM Q) make clause 2 fail on fixed deep corners.  Dropping only Q is not
-caught: the controller does not merge collinear motions (naive CAM), so its path stays within P.
+to a quarter of P with no naive-CAM Q) make clause 2 fail on fixed deep corners.  The same clauses run on
+chains with arcs and on naive-CAM runs below, each with its mutation (an arc's part shrunk to the corner, the
+naive-CAM q dropped).
 """
 
 from __future__ import annotations
