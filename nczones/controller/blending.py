@@ -100,7 +100,8 @@ class BlendArc:
     def point(self, f: float) -> np.ndarray:
         """The arc point at fraction ``f`` of its sweep."""
         if self.circle is not None:
-            return self._full(self.circle.points(np.array([f * self.circle.angle])))[0]
+            first: np.ndarray = self._full(self.circle.points(np.array([f * self.circle.angle])))[0]
+            return first
         c = np.array(self.centre)
         v0, v1 = np.array(self.start) - c, np.array(self.end) - c
         s = math.sin(self.sweep)
