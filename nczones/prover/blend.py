@@ -6,10 +6,11 @@ module proves, beside that proof, that every rounded corner stays in the allowed
 whose enclosure may leave it (an ``unknown`` reason, VF208, never ``safe``).  The enclosures, derived from
 LinuxCNC's trajectory planner in ``specs/path-modes.md``:
 
-* LinuxCNC, ``G64`` without tolerance: a blend uses at most half of each of the two motions, so every point
+* LinuxCNC, ``G64`` without tolerance: a blend uses at most half of each of two lines, so every point
   of it is ``C + a (M1 - C) + b (M2 - C)`` with ``a, b`` in ``[0, 1]``, ``C`` the corner and ``M1``, ``M2``
-  the midpoints of the two lines (a parallelogram; for an arc the box of the whole arc stands for its
-  half, and the region is the Minkowski sum of the two boxes less ``C``).
+  the midpoints of the two lines (a parallelogram); with an arc, the box of the part a blend may use (half a
+  line, the first half of an arc after the corner, the last three quarters of one before it: the planner
+  trims up to two thirds there) stands for it, and the region is the Minkowski sum of the two boxes less ``C``.
 * LinuxCNC, ``G64 P p Q q`` (Q defaults to P): every point within ``p + q`` of the programmed path (naive-CAM
   merging within ``q``, then blends within ``p``): the two motions' boxes with the margin enlarged by
   ``p + q``; with ``q = 0`` the region above proves a corner too.
