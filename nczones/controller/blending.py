@@ -428,8 +428,12 @@ class _NaiveCam:
         self.chain = []
 
     def _same(self, a: Segment, b: Segment) -> bool:
-        return (a.block == b.block or self.bl.mode(a.block) == self.bl.mode(b.block)) and a.end == b.start \
-            and a.feed_mm_min == b.feed_mm_min and a.tool_length == b.tool_length and a.extra == b.extra
+        """No flush between ``a`` and ``b``: one mode entry (a G64/G61 word between them records another, and
+        ``SET_MOTION_CONTROL_MODE`` flushes), the same feed, tool length and payloads, and contiguous."""
+        same_mode = a.block == b.block or (self.bl._entry(a.block) is self.bl._entry(b.block) if self.bl.table
+                                           is not None else True)
+        return same_mode and a.end == b.start and a.feed_mm_min == b.feed_mm_min and \
+            a.tool_length == b.tool_length and a.extra == b.extra
 
     def _pieces(self, seg: Segment, q: float) -> list[Segment] | None:
         """The chain points of a motion (as line segments), None when it ends the chain."""
