@@ -748,7 +748,7 @@ class Controller:
         """Run a blend arc (``nczones.controller.blending``) as the motion of its corner's first block."""
         seg = replace(arc.seg, kind=SegmentKind.LINE, start=tuple(Fraction(v) for v in arc.start),
                       end=tuple(Fraction(v) for v in arc.end), feed_mm_min=Fraction(arc.speed_mm_s * 60),
-                      derived="G64 blend arc")
+                      derived=arc.label)
         self.tool_length = seg.tool_length
         self.monitor = self._monitor_for(seg)
         p0 = tuple(self.prog)

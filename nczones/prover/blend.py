@@ -6,10 +6,11 @@ module proves, beside that proof, that every rounded corner stays in the allowed
 whose enclosure may leave it (an ``unknown`` reason, VF208, never ``safe``).  The enclosures, derived from
 LinuxCNC's trajectory planner in ``specs/path-modes.md``:
 
-* LinuxCNC, ``G64`` without tolerance: a blend uses at most half of each of the two motions, so every point
+* LinuxCNC, ``G64`` without tolerance: a blend uses at most half of each of two lines, so every point
   of it is ``C + a (M1 - C) + b (M2 - C)`` with ``a, b`` in ``[0, 1]``, ``C`` the corner and ``M1``, ``M2``
-  the midpoints of the two lines (a parallelogram; for an arc the box of the whole arc stands for its
-  half, and the region is the Minkowski sum of the two boxes less ``C``).
+  the midpoints of the two lines (a parallelogram); with an arc, the box of the part a blend may use (half a
+  line, the first half of an arc after the corner, the last three quarters of one before it: the planner
+  trims up to two thirds there) stands for it, and the region is the Minkowski sum of the two boxes less ``C``.
 * LinuxCNC, ``G64 P p Q q`` (Q defaults to P): every point within ``p + q`` of the programmed path (naive-CAM
   merging within ``q``, then blends within ``p``): the two motions' boxes with the margin enlarged by
   ``p + q``; with ``q = 0`` the region above proves a corner too.
@@ -1196,8 +1197,10 @@ def _int_half(u: tuple[int, int], v: tuple[int, int]) -> int:
 
 
 def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
-    """A box holding the half of ``seg`` at its end (``end``) or start: a line's and a circular arc's (of less
-    than a whole turn) half, the whole box of other motions."""
+    """A box holding the part of ``seg`` a blend may use at its end (``end``) or start: a line's half; a circular
+    arc's (of less than a whole turn) half at its start and, at its end, the part from before a quarter of its
+    sweep (the planner trims up to two thirds of an arc before a corner, ``blendInit3FromArcLine`` /
+    ``ArcArc``: ``phi1_max = angle * 2/3``); the whole box of other motions."""
     m = tuple((s + e) / 2 for s, e in zip(seg.start, seg.end))
     p = seg.end if end else seg.start
     if _linear(seg, dogleg):
@@ -1215,7 +1218,8 @@ def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
 
 def _half_arc_box(seg: Segment, end: bool) -> Any:
     """``((lo, hi) first axis, (lo, hi) second axis, ia, ib)`` holding the half of the sweep of a circular arc with
-    a rational centre at its end (``end``) or start; None for a whole turn, a spiral or an R-format arc.
+    a rational centre at its start, or its last three quarters (``end``, see :func:`_half_box`); None for a whole
+    turn, a spiral or an R-format arc.
 
     The angular middle of the sweep points along ``u + w`` (``u``, ``w``: start and end from the centre, of
     equal length; the opposite when the sweep is more than half a turn, ``u`` turned a quarter for half a
@@ -1239,6 +1243,13 @@ def _half_arc_box(seg: Segment, end: bool) -> Any:
         d = (u[0] + w[0], u[1] + w[1])
         if (cross < 0) == g.ccw:  # more than half a turn
             d = (-d[0], -d[1])
+    if end:
+        # from direction u k + d, k >= |d| / r: on the sweep between u and the quarter point (the bisector of
+        # u and d), so the part up to the end holds the last three quarters, more than the two thirds a blend
+        # may trim (tp.c tpCreateArcLineBlend / ArcArcBlend: trim1 <= phi1_max <= angle * 2/3)
+        r_lo = sqrt_bounds(g.r2_lo)[0]
+        k = sqrt_bounds(d[0] * d[0] + d[1] * d[1])[1] / r_lo
+        d = (u[0] * k + d[0], u[1] * k + d[1])
     k_lo, k_hi = sqrt_bounds(g.r2_hi / (d[0] * d[0] + d[1] * d[1]))
     mid = [sorted((c[i] + d[i] * k_lo, c[i] + d[i] * k_hi)) for i in (0, 1)]
     a, b = (d, w) if end else (u, d)

@@ -144,3 +144,65 @@ def test_simulate_command_takes_the_blending_option(tmp_path, capsys):
     machine.write_text(_text(accel=""))
     assert main(["simulate", str(prog), "--machine", str(machine), "--blending", "linuxcnc"]) == 2
     assert "acceleration" in capsys.readouterr().err
+
+
+def test_line_arc_blend_follows_the_planner():
+    # G1 to (100, 0) heading +X, then G3 X50 Y50 I-50 J0: a quarter circle of radius 50 around (50, 0), leaving
+    # (100, 0) heading +Y: a 90 degree corner, theta_tan = 45deg.  blendInit3FromLineArc (tp.c
+    # tpCreateLineArcBlend): arcConvexTest((50,0), P, u1 = +X, reverse) = (P - C2).u1 = 50 >= 0: convex, so
+    # phi2_max = min(sweep / 3, theta_tan) = pi/6; the secant to the point pi/12 along the arc cuts theta to
+    # theta_tan - phi2_max / 4 = 5pi/24; L1 = min(100, 100/2) = 50, L2 = sin(phi2_max / 4) * 50 = 50 sin(pi/24)
+    # = 6.526.  tcFindBlendTolerance: T = min(100/4, 78.54/4) = 19.63, d_tol = cos(theta) T / (1 - sin(theta))
+    # = 39.8, so d_geom = L2 and R_geom = tan(5pi/24) * L2 = 5.008.  a_max = 500, a_n = 500 sqrt(0.75);
+    # v_plan = min(sqrt(a_n R_geom), 50) = 46.57 (F3000 = 50 mm/s), so R_plan = v_plan^2 / a_n = R_geom.
+    # blendLineArcPostProcess: the blend circle (radius R) is inside the arc's circle, tangent to it, its
+    # centre at distance d2 = 50 - R from (50, 0) and R above the line: centre (100 - dL, R) with
+    # (50 - dL)^2 + R^2 = (50 - R)^2, dL = 50 - sqrt(2500 - 100 R) = 5.288 (the smaller root); the arc is
+    # trimmed by the angle of the centre seen from (50, 0): atan2(R, 50 - dL) = 0.1116 rad < pi/6.
+    m = _machine()
+    text = "G1 F3000 X100 Y0\nG3 X50 Y50 I-50 J0\nG61\nG4 P0\n"
+    run = interpret_text(text, m, fast=False)
+    items = list(blend_motion(list(run.segments()), m, run))
+    blend = [a for a in items if isinstance(a, BlendArc) and a.label == "G64 blend arc"]
+    assert len(blend) == 1
+    theta, l2 = 5 * math.pi / 24, 50 * math.sin(math.pi / 24)
+    r = math.tan(theta) * l2
+    d_l = 50 - math.sqrt(2500 - 100 * r)
+    t2 = math.atan2(r, 50 - d_l)
+    arc = blend[0]
+    assert arc.radius == pytest.approx(r, rel=1e-9)
+    assert arc.centre[:2] == pytest.approx((100 - d_l, r))
+    assert arc.start[:2] == pytest.approx((100 - d_l, 0.0))
+    assert arc.end[:2] == pytest.approx((50 + 50 * math.cos(t2), 50 * math.sin(t2)))
+    assert arc.speed_mm_s == pytest.approx(math.sqrt(500 * math.sqrt(0.75) * r))
+    # the arc then runs from the blend's end on its circle (a piece of the programmed arc)
+    trimmed = items[items.index(arc) + 1]
+    assert isinstance(trimmed, BlendArc) and trimmed.circle is not None
+    assert trimmed.circle.angle == pytest.approx(math.pi / 2 - t2)
+    assert trimmed.point(1.0)[:2] == pytest.approx((50.0, 50.0))
+
+
+NAIVE_ZIGZAG = "G64 P0.01 Q{q}\nG1 F3000 X10 Y0.4\nG1 X20 Y0\nG1 X30 Y0.4\nG1 X40 Y0\nG61\nG4 P0\n"
+
+
+@pytest.mark.parametrize("q, lines", [("0.5", 1), ("0.3", 4)])
+def test_naive_cam_merges_lines_within_q(q, lines):
+    # emccanon linkable: the points (10,0.4) (20,0) (30,0.4) lie 0.4 from the chord (0,0)-(40,0): within
+    # Q0.5 the four lines are sent as that one chord; with Q0.3 not even (10,0.4) (0.4 from (0,0)-(20,0)) links
+    m = _machine()
+    run = interpret_text(NAIVE_ZIGZAG.format(q=q), m, fast=False)
+    moved = [s for s in blend_motion(list(run.segments()), m, run) if not isinstance(s, BlendArc)
+             and s.kind.name == "LINE"]
+    assert len(moved) == lines
+    if lines == 1:
+        assert (moved[0].start[:2], moved[0].end[:2]) == ((0, 0), (40, 0))
+
+
+def test_naive_cam_chains_at_most_101_points():
+    # linkable refuses a point when the chain holds more than 100: 150 collinear lines are sent as two,
+    # the first to the 101st point (X101), the second to the last
+    m = _machine()
+    text = "G64 P0.01\nG1 F3000 " + "\n".join(f"X{k}" for k in range(1, 151)) + "\nG61\nG4 P0\n"
+    run = interpret_text(text, m, fast=False)
+    moved = [s for s in blend_motion(list(run.segments()), m, run) if s.kind.name == "LINE"]
+    assert [(float(s.start[0]), float(s.end[0])) for s in moved] == [(0.0, 101.0), (101.0, 150.0)]
