@@ -25,7 +25,7 @@ Tool-tip zones (``point = "tip"``) see the tool axis' coordinate minus the
 active tool length.
 
 With ``solids`` (:class:`.solids.ToolSolids`, the parts of the active tool and
-the machine's fixtures) both forms also test every part against every fixture
+the machine's fixtures; a lathe's :class:`.solids.LatheToolSolids`) both forms also test every part against every fixture
 at the pulse position (grown by half a pulse step, so that the step between two
 positions is covered too); a hit is named by a :class:`.solids.SolidHit`.
 """
@@ -43,7 +43,7 @@ import numpy as np
 from ..machine import Machine
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
-from .solids import ToolSolids
+from .solids import LatheToolSolids, ToolSolids
 
 __all__ = ["LimitMonitor", "CompiledCheck", "MonitorStats"]
 
@@ -104,7 +104,7 @@ class LimitMonitor:
     machine: Machine
     stats: MonitorStats = field(default_factory=MonitorStats)
     #: the tool solids to check as well (the parts of the active tool against the fixtures), or None
-    solids: ToolSolids | None = None
+    solids: ToolSolids | LatheToolSolids | None = None
     _compiled: dict[Fraction, "CompiledCheck | None"] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
