@@ -131,8 +131,9 @@ def _rect_gap2_np(sec: tuple[float, float, float, float]) -> Callable[[np.ndarra
     return gap2
 
 
-def _prism_gap2_np(vertices: Sequence[tuple[Fraction, Fraction]]) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
-    """The float form of :func:`_prism_gap2` (the screen: near an edge the exact form decides)."""
+def polygon_gap2_np(vertices: Sequence[tuple[Fraction, Fraction]]) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
+    """The float form of :func:`_prism_gap2` (a screen: near an edge the exact form decides; the monitor's
+    polygon zones use it too)."""
     edges = [((float(a[0]), float(a[1])), (float(b[0]), float(b[1]))) for a, b in _edges(vertices)]
 
     def gap2(x: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -153,7 +154,7 @@ def _prism_gap2_np(vertices: Sequence[tuple[Fraction, Fraction]]) -> Callable[[n
 def _section_np(fx: Fixture) -> tuple[Callable[[np.ndarray, np.ndarray], np.ndarray], list[float]]:
     """The float squared distance to the fixture's section, and the magnitudes it is computed from."""
     if isinstance(fx, FixturePrism):
-        return _prism_gap2_np(fx.vertices), [abs(float(c)) for v in fx.vertices for c in v]
+        return polygon_gap2_np(fx.vertices), [abs(float(c)) for v in fx.vertices for c in v]
     if isinstance(fx, FixtureCylinder):
         sec = (float(fx.cx), float(fx.cx), float(fx.cy), float(fx.cy))
     else:

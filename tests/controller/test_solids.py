@@ -381,3 +381,52 @@ vertices = [["50", "0"], ["60", "0"], ["50", "10"]]
 """)
     r = _run("G21 G90 G17 G54\nT1 M6\nG43 H1\nG0 X0 Y0 Z200\nM30\n", machine)
     assert any("`rib`" in n for n in r.notes), r.notes
+
+
+POLYGONS = """[machine]
+axes = ["X", "Y", "Z"]
+pulse = "0.01"
+[machine.rapid]
+X = "1000"
+Y = "1000"
+Z = "1000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[[zones]]
+name = "room"
+kind = "polygon"
+plane = ["X", "Y"]
+vertices = [["-10", "-10"], ["10", "-10"], ["10", "0"], ["0", "0"], ["0", "10"], ["-10", "10"]]
+min = { Z = "-1" }
+[[zones]]
+name = "wedge"
+kind = "polygon"
+forbid = true
+point = "tip"
+plane = ["X", "Y"]
+vertices = [["-4", "-4"], ["4", "-4"], ["-4", "2"]]
+min = { Z = "0" }
+max = { Z = "1" }
+"""
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.tuples(st.integers(-1100, 1100), st.integers(-1100, 1100), st.integers(-150, 250)), min_size=1,
+                max_size=40), st.sampled_from([Fraction(0), Fraction(1, 2)]))
+def test_compiled_polygon_zones_decide_as_the_reference(rows, tool_length):
+    """The monitor's vectorized polygon test (a float screen, exact next to an edge; the tool solids' prisms
+    and the contract's tip polygons run on it) gives the reference monitor's answer at every pulse position:
+    an L-shaped allowed polygon with a Z floor and a forbidden tip triangle with a Z range, positions on a
+    0.01 grid through their edges and vertices."""
+    from nczones.controller.monitor import LimitMonitor
+
+    mon = LimitMonitor(parse_machine(POLYGONS))
+    edges = [(0, 0, 0), (1000, -1000, 0), (0, 500, -100), (1000, -1, 0), (-400, -400, 50), (0, -400, 50),
+             (400, -400, 100), (0, -100, 50), (-400, 200, 20), (-399, 199, 20), (0, -101, 0), (-399, 100, 150)]
+    pos = np.array(edges + rows, dtype=np.int64)
+    compiled = mon.compile(tool_length)
+    assert compiled is not None
+    got = compiled.bad(pos).tolist()
+    assert got == [bool(mon.check(tuple(int(v) for v in row), tool_length)) for row in pos]
