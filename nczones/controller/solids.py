@@ -1,14 +1,25 @@
 """The reference controller's check of the tool solids against the fixtures, pulse by pulse (issue 39).
 
-The machine-file meaning is shared (:mod:`nczones.solids`: the parts of each tool, the spindle parts, the
-fixtures); the distance computation is the controller's own (it never imports :mod:`nczones.prover`).
+The machine-file meaning is shared (:mod:`nczones.solids`, :mod:`nczones.lathe_solids`: the parts of each
+tool, the spindle parts, the fixtures); the distance computation is the controller's own (it never imports
+:mod:`nczones.prover`).  Every fixture the machine file describes is checked: boxes, cylinders, prisms (a
+forbidden XY polygon), fixtures in a work offset, and a lathe's turret tool against its fixtures of
+revolution (:class:`LatheToolSolids`).
 
 At a pulse position ``p`` (exact: pulse counts times the pulse sizes) a part of radius ``r`` over
 ``z0..z1`` above its reference is the closed vertical cylinder about ``(p_x, p_y)`` over heights
 ``p_z - L + z0 .. p_z - L + z1`` (``L`` the active tool length, as the prover reads it; a spindle part has
 no ``L``).  It meets a fixture's open interior exactly when the heights overlap (strictly) and the closed
 disk meets the open section: the squared distance from ``(p_x, p_y)`` to the box's closed rectangle is
-below ``r²`` (to a cylinder's centre: below ``(R + r)²``).
+below ``r²`` (to a cylinder's centre: below ``(R + r)²``; to a prism's closed polygon, 0 inside it, else
+the least squared distance to an edge, the projection on it clamped to its ends: below ``r²``; a closed disk
+meets the open polygon iff its centre is inside or an edge comes nearer than ``r``).
+
+**Fixtures in a work offset** (``frame = "G55"``) are placed where the motion says that offset's origin is
+(``ProgramFrame.work_offset``: the machine file's ``[offsets]`` as ``G10 L2``/``L20`` changed them).  A motion
+run in another work offset or in a rotated frame does not say: the fixture is left out there and the result
+notes it (the prover says ``unknown``, VF219, there).  A change of the placement (``G10 L2`` of the active
+offset) is checked at rest like a tool change, before the next motion's first pulse.
 
 **Between pulse positions.**  The axes move from one pulse position to the next by at most one pulse per
 axis (the pulse distribution of lines, arcs, helices and dogleg rapids, :mod:`.pulses`; tested).  A point
