@@ -138,7 +138,8 @@ def _rect_gap2_np(sec: tuple[float, float, float, float]) -> Callable[[np.ndarra
     def gap2(x: np.ndarray, y: np.ndarray) -> np.ndarray:
         gx = np.maximum(0.0, np.maximum(sec[0] - x, x - sec[1]))
         gy = np.maximum(0.0, np.maximum(sec[2] - y, y - sec[3]))
-        return gx * gx + gy * gy
+        out: np.ndarray = gx * gx + gy * gy
+        return out
     return gap2
 
 
@@ -158,7 +159,8 @@ def polygon_gap2_np(vertices: Sequence[tuple[Fraction, Fraction]]) -> Callable[[
             t = np.clip(((x - ax) * ex + (y - ay) * ey) / e2, 0.0, 1.0) if e2 else np.zeros(x.shape)
             dx, dy = x - ax - t * ex, y - ay - t * ey
             best = np.minimum(best, dx * dx + dy * dy)
-        return np.where(odd, 0.0, best)
+        out: np.ndarray = np.where(odd, 0.0, best)
+        return out
     return gap2
 
 
@@ -255,12 +257,13 @@ def _moved(fx: Fixture, o: tuple[Fraction, Fraction, Fraction]) -> Fixture:
 
     def add(v: Fraction | None, d: Fraction) -> Fraction | None:
         return None if v is None else v + d
-    zs = {"z0": add(fx.z0, oz), "z1": add(fx.z1, oz), "frame": ""}
+    z0, z1 = add(fx.z0, oz), add(fx.z1, oz)
     if isinstance(fx, FixturePrism):
-        return replace(fx, vertices=tuple((x + ox, y + oy) for x, y in fx.vertices), **zs)
+        return replace(fx, vertices=tuple((x + ox, y + oy) for x, y in fx.vertices), z0=z0, z1=z1, frame="")
     if isinstance(fx, FixtureCylinder):
-        return replace(fx, cx=fx.cx + ox, cy=fx.cy + oy, **zs)
-    return replace(fx, x0=add(fx.x0, ox), x1=add(fx.x1, ox), y0=add(fx.y0, oy), y1=add(fx.y1, oy), **zs)
+        return replace(fx, cx=fx.cx + ox, cy=fx.cy + oy, z0=z0, z1=z1, frame="")
+    return replace(fx, x0=add(fx.x0, ox), x1=add(fx.x1, ox), y0=add(fx.y0, oy), y1=add(fx.y1, oy), z0=z0, z1=z1,
+                   frame="")
 
 
 def frame_origin(seg: Segment, frame: str, index: tuple[int, ...]) -> tuple[Fraction, ...] | None:

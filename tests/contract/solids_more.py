@@ -62,7 +62,8 @@ def mill_machine_text(pulse: str, tools: dict, fixtures: list, *, grow: F = F(0)
     ``[[fixtures]]`` (``frame = "G55"`` when drawn so), prisms as forbidden tip polygon zones."""
     lines = ['[machine]', 'axes = ["X", "Y", "Z"]', f'pulse = "{pulse}"', 'rapid_mode = "linear"',
              'path_mode = "G61"', '[machine.rapid]', 'X = "6000"', 'Y = "6000"', 'Z = "6000"',
-             '[machine.reference]', 'X = "0"', 'Y = "0"', 'Z = "300"', '[offsets]',
+             # the reference (the start) away from the fixtures: a tip prism must not hold it
+             '[machine.reference]', 'X = "-300"', 'Y = "-300"', 'Z = "300"', '[offsets]',
              'G54 = { X = "0", Y = "0", Z = "0" }',
              f'G55 = {{ X = "{fd(g55[0])}", Y = "{fd(g55[1])}", Z = "{fd(g55[2])}" }}', '[tool_lengths]',
              *(f'H{n} = "{h}"' for n, (_, h) in tools.items()),
