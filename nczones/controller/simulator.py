@@ -759,7 +759,9 @@ class Controller:
     def _monitor_for(self, seg: Segment) -> LimitMonitor:
         """The limit monitor for a segment: a lathe tool offset on an axis besides the tool axis moves the tool
         tip away from the machine position there, so the tip zones are checked moved by it (shared counts);
-        on a machine with tool solids, the monitor also checks the parts of the segment's tool register."""
+        on a machine with tool solids, the monitor also checks the parts of the segment's tool (its register; a
+        lathe's T word tool) against the fixtures where the segment sees them (one in a work offset moved by
+        the offset the segment carries)."""
         shift = tip_offset(seg.extra) if seg.extra else {}
         key: tuple = tuple(sorted(shift.items()))
         if self._solids is not None:  # one monitor per (shift, tool, fixture placement): never the base one
