@@ -200,16 +200,21 @@ def mill_cases(draw, *, max_moves=4):
     lines = [f"G21 G90 G17 {work}", f"T{h} M6", f"G43 H{h}", "G0 X-70 Y-70 Z150"]
     px, py, pz = F(-70), F(-70), F(150)
     for _ in range(draw(st.integers(1, max_moves))):
-        what = draw(st.sampled_from(["line", "line", "rapid", "arc", "tool"] + (["g10"] if framed else [])))
+        what = draw(st.sampled_from(["line", "line", "rapid", "arc", "tool"] + (["g10", "g10"] if framed else [])))
         if what == "tool":
             h = 3 - h
             lines += [f"T{h} M6", f"G43 H{h}"]
             continue
-        if what == "g10":  # the fixtures move with G55, the tool stays: checked at rest, then along the next move
-            dx = draw(st.sampled_from(GAPS + [F(10)]))
+        if what == "g10":  # the fixtures move with G55, the tool stays: checked at rest, then along a move to
+            # a point next to a G55 fixture where it is now (a controller that kept the old origin would differ)
+            dx = draw(st.sampled_from([F(-10), F(-2), F("-0.5"), F("0.5"), F(2), F(10)]))
             g55 = (g55[0] + dx, g55[1], g55[2])
             lines.append(f"G10 L2 P2 X{fd(g55[0])} Y{fd(g55[1])} Z{fd(g55[2])}")
             px -= dx
+            framed_fx = [f for f in fixtures if f.get("frame")]
+            x, y, z = _near_fixture(draw, draw(st.sampled_from(framed_fx)), tools, h) if framed_fx else (px, py, pz)
+            lines.append(f"G1 X{fd(x)} Y{fd(y)} Z{fd(z)} F2000")
+            px, py, pz = x, y, z
             continue
         x, y, z = _near_mill(draw, fixtures, tools, h, g55)
         if what in ("line", "rapid") or (x, y) == (px, py):
