@@ -25,7 +25,7 @@ Tool-tip zones (``point = "tip"``) see the tool axis' coordinate minus the
 active tool length.
 
 With ``solids`` (:class:`.solids.ToolSolids`, the parts of the active tool and
-the machine's fixtures) both forms also test every part against every fixture
+the machine's fixtures; a lathe's :class:`.solids.LatheToolSolids`) both forms also test every part against every fixture
 at the pulse position (grown by half a pulse step, so that the step between two
 positions is covered too); a hit is named by a :class:`.solids.SolidHit`.
 """
@@ -43,7 +43,7 @@ import numpy as np
 from ..machine import Machine
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
-from .solids import ToolSolids
+from .solids import LatheToolSolids, ToolSolids, polygon_gap2_np
 
 __all__ = ["LimitMonitor", "CompiledCheck", "MonitorStats"]
 
@@ -104,7 +104,7 @@ class LimitMonitor:
     machine: Machine
     stats: MonitorStats = field(default_factory=MonitorStats)
     #: the tool solids to check as well (the parts of the active tool against the fixtures), or None
-    solids: ToolSolids | None = None
+    solids: ToolSolids | LatheToolSolids | None = None
     _compiled: dict[Fraction, "CompiledCheck | None"] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
@@ -201,7 +201,46 @@ def _not_compiled(z: Zone, monitor: LimitMonitor, tl: Fraction) -> None:
 #: the zone has none (then the monitor checks point by point).  Fallback: none.
 COMPILED: KindTable[Callable[[Any, LimitMonitor, Fraction], Callable[[np.ndarray], np.ndarray] | None]] = KindTable(
     "controller.monitor.compiled", fallback=_not_compiled)
-COMPILED.set(PolygonZone, _not_compiled)
+
+
+@COMPILED.register(PolygonZone)
+def _polygon_compiled(z: PolygonZone, monitor: LimitMonitor, tl: Fraction) -> Callable[[np.ndarray], np.ndarray]:
+    """A polygon zone on many positions: its other axes' limits as integer thresholds (exact, as for a box);
+    in its plane a float screen (the squared distance to the closed polygon, 0 inside) decides the positions
+    farther than a margin far above the float error from every edge, and the others, next to an edge, are
+    decided exactly by the reference test (:data:`POINT_VIOLATES`)."""
+    (a, b), pulse = z.plane, monitor.pulse
+    ka, kb = monitor.index[a], monitor.index[b]
+    sa, sb = monitor._shift(z, a, tl), monitor._shift(z, b, tl)
+    gap2 = polygon_gap2_np(tuple((va + sa, vb + sb) for va, vb in z.vertices))
+    mags = [abs(float(c)) for v in z.vertices for c in v] + [abs(float(sa)), abs(float(sb))]
+    ua, ub = float(pulse[ka]), float(pulse[kb])
+    cols, los, his = [], [], []
+    for axis, lo, hi in z.limits:  # open (forbidden: the interior) or closed (allowed) bounds in pulses
+        k = monitor.index[axis]
+        u, s = pulse[k], monitor._shift(z, axis, tl)
+        if z.forbid:
+            los.append(-_BIG if lo is None else math.floor((lo + s) / u) + 1)
+            his.append(_BIG if hi is None else math.ceil((hi + s) / u) - 1)
+        else:
+            los.append(-_BIG if lo is None else math.ceil((lo + s) / u))
+            his.append(_BIG if hi is None else math.floor((hi + s) / u))
+        cols.append(k)
+    cols_a, lo_a, hi_a = np.array(cols, dtype=np.intp), np.array(los, dtype=np.int64), np.array(his, dtype=np.int64)
+
+    def test(pos: np.ndarray) -> np.ndarray:
+        x, y = pos[:, ka] * ua, pos[:, kb] * ub
+        scale = 1.0 + max(mags, default=0.0) + (float(np.abs(pos).max()) * max(ua, ub) if len(pos) else 0.0)
+        tol = 1e-9 * scale
+        d2 = gap2(x, y)
+        in_plane = d2 == 0.0  # inside the closed polygon (far from an edge: inside its interior too)
+        within = np.all((pos[:, cols_a] >= lo_a) & (pos[:, cols_a] <= hi_a), axis=1) if len(cols) else True
+        out: np.ndarray = (in_plane & within) if z.forbid else ~(in_plane & within)
+        for i in np.flatnonzero(d2 <= tol * tol).tolist():  # next to an edge (or on it): decided exactly
+            p = monitor.point_mm(tuple(int(v) for v in pos[i]))
+            out[i] = POINT_VIOLATES(z, monitor, monitor.machine.allowed.seen_by(z, p, tl))
+        return out
+    return test
 
 
 @COMPILED.register(BoxZone)

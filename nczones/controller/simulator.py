@@ -66,7 +66,7 @@ from .pulses import (
     round_pulse,
     step_deltas,
 )
-from .solids import MachineSolids, SolidHit, unchecked_solids
+from .solids import SolidHit, controller_solids, unchecked_solids
 from .spline import spline_walk
 
 __all__ = [
@@ -510,7 +510,7 @@ class Controller:
         self.monitor = LimitMonitor(machine)
         self._monitors: dict[tuple, LimitMonitor] = {(): self.monitor}
         #: the tool solids and fixtures (issue 39), checked with the zones by each segment's monitor
-        self._solids = MachineSolids.of(machine)
+        self._solids = controller_solids(machine)
         start = tuple(Fraction(v) for v in (machine.start if start is None else start))
         if len(start) != len(self.axes):
             raise InvalidArgument(f"start has {len(start)} coordinates; the machine has axes {self.axes}")
@@ -533,7 +533,7 @@ class Controller:
         self.completed = False
         self.overshoot_bound = 0.0
         self.notes: list[str] = []
-        unchecked = unchecked_solids(machine)  # the solids only the prover proves (a lathe's, prisms, frames)
+        unchecked = unchecked_solids(machine)  # forbidden zones that are no fixture solid (neither checks them)
         if unchecked:
             self.notes.append(unchecked)
         self._pending_outside: tuple[tuple[int, ...], int] | None = None  # periodic: (first outside pos, step)
@@ -759,11 +759,13 @@ class Controller:
     def _monitor_for(self, seg: Segment) -> LimitMonitor:
         """The limit monitor for a segment: a lathe tool offset on an axis besides the tool axis moves the tool
         tip away from the machine position there, so the tip zones are checked moved by it (shared counts);
-        on a machine with tool solids, the monitor also checks the parts of the segment's tool register."""
+        on a machine with tool solids, the monitor also checks the parts of the segment's tool (its register; a
+        lathe's T word tool) against the fixtures where the segment sees them (one in a work offset moved by
+        the offset the segment carries)."""
         shift = tip_offset(seg.extra) if seg.extra else {}
         key: tuple = tuple(sorted(shift.items()))
-        if self._solids is not None:  # one monitor per (shift, tool register): never the base one
-            key = (key, "tool", seg.tool_register)
+        if self._solids is not None:  # one monitor per (shift, tool, fixture placement): never the base one
+            key = (key, "tool", self._solids.key(seg))
         mon = self._monitors.get(key)
         if mon is None:
             from dataclasses import replace as _replace
@@ -771,7 +773,7 @@ class Controller:
             base = self._monitors[()]
             mon = LimitMonitor(_replace(self.machine, allowed=tip_shifted(self.machine.allowed, shift)),
                                stats=base.stats,
-                               solids=None if self._solids is None else self._solids.for_tool(seg.tool_register))
+                               solids=None if self._solids is None else self._solids.for_segment(seg))
             self._monitors[key] = mon
         return mon
 
@@ -1164,7 +1166,8 @@ class Controller:
             monitor_checks=stats.checks, max_lookup_comparisons=stats.max_lookup_comparisons,
             max_regions=stats.max_regions,
             overshoot_bound_mm=self.overshoot_bound if self.monitor_mode is MonitorMode.PERIODIC else 0.0,
-            blind_spot=blind, servo=self._servo_log(), notes=tuple(self.notes),
+            blind_spot=blind, servo=self._servo_log(),
+            notes=tuple(self.notes) + tuple(self._solids.notes() if self._solids is not None else ()),
         )
 
 
