@@ -230,31 +230,7 @@ def test_lathe_boring_bar_alarms_where_the_holder_meets_the_jaws():
     assert simulate(interpret_text(clears, lathe), lathe, mode="check").alarms == ()
 
 
-LINUXCNC_LATHE = """[machine]
-axes = ["X", "Z"]
-pulse = "0.01"
-path_mode = "G61"
-rapid_mode = "linear"
-[machine.rapid]
-X = "6000"
-Z = "6000"
-[machine.reference]
-X = "100"
-Z = "300"
-[offsets]
-G54 = { X = "0", Z = "0" }
-[tool_lengths]
-H1 = "20"
-[[tools]]
-number = 1
-parts = [{ name = "insert", x = ["0", "4"], z = ["0", "6"] }]
-[[fixtures]]
-name = "centre"
-kind = "cylinder"
-radius = "10"
-min_z = "0"
-max_z = "50"
-"""
+LINUXCNC_LATHE = machine_text("lathe_xz_insert_centre")  # tests/machines/lathe_xz_insert_centre.toml
 
 
 @pytest.mark.parametrize("x, hit_x", [
@@ -356,33 +332,7 @@ vertices = [["50", "0"], ["60", "0"], ["50", "10"]]
     assert any("`rib`" in n for n in r.notes), r.notes
 
 
-POLYGONS = """[machine]
-axes = ["X", "Y", "Z"]
-pulse = "0.01"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-Z = "1000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "room"
-kind = "polygon"
-plane = ["X", "Y"]
-vertices = [["-10", "-10"], ["10", "-10"], ["10", "0"], ["0", "0"], ["0", "10"], ["-10", "10"]]
-min = { Z = "-1" }
-[[zones]]
-name = "wedge"
-kind = "polygon"
-forbid = true
-point = "tip"
-plane = ["X", "Y"]
-vertices = [["-4", "-4"], ["4", "-4"], ["-4", "2"]]
-min = { Z = "0" }
-max = { Z = "1" }
-"""
+POLYGONS = machine_text("xyz_polygon_room_wedge")  # tests/machines/xyz_polygon_room_wedge.toml
 
 
 @settings(max_examples=25, deadline=None)

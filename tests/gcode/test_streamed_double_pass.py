@@ -37,6 +37,7 @@ from nczones.pipeline.verification import verify_source
 from nczones.prover.options import VerifyOptions
 from nczones.prover.result import Verdict
 from tests.gcode.test_double_pass import ACCEPTED, parametric_programs
+from tests.machines import machine_text
 from tests.prover.test_double_pass_proof import machine_of
 
 MILL = load_machine("specs/machines/mill.toml")
@@ -225,11 +226,7 @@ def test_the_memory_of_a_streamed_expression_program_is_flat(tmp_path):
     # a child process whose own peak RSS (wait4) is read: 1M and 5M lines (19 and 100 MB of text) cost the
     # same memory, at most 150 MB (issue 36; specs/performance.md has the 10M-line row).
     machine = tmp_path / "box.toml"
-    machine.write_text('[machine]\nname = "box"\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\n'
-                       '[machine.rapid]\nX = "10000"\nY = "10000"\nZ = "10000"\n'
-                       '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n[[zones]]\nname = "travel"\n'
-                       'kind = "box"\nmin = { X = "-900000", Y = "-900000", Z = "-900000" }\n'
-                       'max = { X = "900000", Y = "900000", Z = "900000" }\n')
+    machine.write_text(machine_text("xyz_box_900000"))  # tests/machines/xyz_box_900000.toml
     rss = []
     for n in (1_000_000, 5_000_000):
         path = tmp_path / "p.ngc"

@@ -25,36 +25,9 @@ from nczones.controller import simulate
 from nczones.gcode import interpret_text
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import machine_text
 
-MACHINE = """
-[machine]
-name = "slow arc corner"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-[machine.rapid]
-X = "6000"
-Y = "6000"
-Z = "6000"
-[machine.acceleration]
-X = "1"
-Y = "1"
-Z = "500"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "table"
-kind = "box"
-min = { X = "-400", Y = "-400", Z = "-10" }
-max = { X = "400", Y = "400", Z = "10" }
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = { X = "99.030", Y = "14.186", Z = "-10" }
-max = { X = "99.040", Y = "14.196", Z = "10" }
-"""
+MACHINE = machine_text("xyz_slow_arc_corner")  # tests/machines/xyz_slow_arc_corner.toml
 CORNER = "G2 F3000 X100 Y0 I-96 J-28\nG1 X300 Y{y}\nG61\nG4 P0\n"
 
 

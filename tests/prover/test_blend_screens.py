@@ -35,33 +35,24 @@ from nczones.motion import MotionChunk, PathMode, Plane, Segment, SegmentKind
 from nczones.prover import blend, verify_text
 from nczones.prover.corners import Corners
 from nczones.prover.geometry import arc_geom
+from tests.machines import box_zone, machine_text
 
-MACHINE = """
-[machine]
-name = "corner screens"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-tool_axis = "Z"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "table"
-kind = "box"
-min = {{ X = "-60", Y = "-60", Z = "-50" }}
-max = {{ X = "60", Y = "60", Z = "50" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = {{ X = "{x0}", Y = "{y0}" }}
-max = {{ X = "{x1}", Y = "{y1}" }}
-"""
+
+class _Machine:
+    """tests/machines/xyz_corner_screens.toml with a table of half-width ``half`` (Z -50..50) and a forbidden
+    clamp from (x0, y0) to (x1, y1), as ``MACHINE.format(x0=.., y0=.., x1=.., y1=..)``."""
+
+    def __init__(self, half: str) -> None:
+        self.half = half
+
+    def format(self, *, x0: str, y0: str, x1: str, y1: str) -> str:
+        h = self.half
+        table = box_zone("table", {"X": f"-{h}", "Y": f"-{h}", "Z": "-50"}, {"X": h, "Y": h, "Z": "50"})
+        clamp = box_zone("clamp", {"X": x0, "Y": y0}, {"X": x1, "Y": y1}, forbid=True)
+        return machine_text("xyz_corner_screens", extra=table + clamp)
+
+
+MACHINE = _Machine("60")
 
 N_MOTIONS = 560  # more than 512 motions: the fast path's column chunks
 
@@ -205,7 +196,7 @@ def test_a_far_clamp_is_proved_by_the_one_box(monkeypatch):
 ARC_CORNER = ("G17 G21 G90 G54\nG0 X-30 Y-30\nG1 F800\n"
               + "".join(f"G1 X{-30 + k % 7} Y{-30 + k % 5}\n" for k in range(600))
               + "G0 X50 Y0\nG1 X100\nG3 X120 Y0 I10 J0\nM2\n")
-ARC_MACHINE = MACHINE.replace('"-60"', '"-130"').replace('"60"', '"130"')
+ARC_MACHINE = _Machine("130")
 
 
 def test_an_arc_corner_in_a_column_chunk(monkeypatch):
