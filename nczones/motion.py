@@ -45,7 +45,7 @@ if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to t
     import numpy as np
 
 __all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "PathMode", "arc_plane_axes",
-           "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation", "Payload", "Developed",
+           "DROPPED_BELOW", "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation", "Payload", "Developed",
            "TipOffset", "SplineCurve", "PolarData", "TurretTool", "tip_offset"]
 
 
@@ -57,6 +57,13 @@ class SegmentKind(enum.IntEnum):
     DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.geometry.cylinder
     SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (a SplineCurve in Segment.extra), see nczones.geometry.nurbs
     POLAR = 6  # G01/G02/G03 in polar coordinate interpolation (G12.1): a plane path in machine X/C, see nczones.geometry.polar
+
+
+#: A straight motion shorter than this (mm) on every axis may be dropped by LinuxCNC's planner (``tpAddLine``:
+#: ``tc.target < TP_POS_EPSILON``, 1e-12 in the machine's units, 2.54e-11 mm on an inch machine, plus the
+#: rounding of the doubles it is computed in): a blended corner is then between the motions around it
+#: (specs/path-modes.md §1).
+DROPPED_BELOW = Fraction(1, 10**10)
 
 
 @dataclass(frozen=True, slots=True)

@@ -27,13 +27,22 @@ from __future__ import annotations
 import time
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
 from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
-from ..motion import MotionChunk, PathMode, Segment, SegmentKind, SplineCurve, tip_offset
+from ..motion import (
+    DROPPED_BELOW,
+    MotionChunk,
+    PathMode,
+    Segment,
+    SegmentKind,
+    SplineCurve,
+    tip_offset,
+)
 from ..zones import ZonePoint, tip_shifted
 from .exact import box_fits
 from .hull2d import convex_hull, hull_fits
@@ -142,6 +151,7 @@ class CornerCheck:
         self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
+        self._dropped: Segment | None = None  # the motion before a run of ones LinuxCNC may drop (_dropped_corner)
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
         self._seen: set[str] = set()
         self._blocks: list[tuple[int, int] | range] = []  # the blocks of each reason's two motions (a Fanuc run: all)
@@ -223,6 +233,7 @@ class CornerCheck:
         if prev is not None and joined:
             self._queue(prev, seg, self.mode_of(prev.block))
         mode = self.mode_of(seg.block)
+        self._dropped_corner(prev, seg, joined, mode)
         self.prev, self.prev_stop = seg, not mode.blend
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
             box = _hull_box(seg)
@@ -363,8 +374,35 @@ class CornerCheck:
             size = -(-len(group) // SPLIT)
             todo.extend((x, min(x + size, hi_i)) for x in range(lo_i, hi_i, size))
 
+    def _dropped_corner(self, prev: Segment | None, seg: Segment, joined: bool, mode: PathMode) -> None:
+        """LinuxCNC's planner drops a line shorter than ``TP_POS_EPSILON`` (``tpAddLine``: 1e-12 in the machine's
+        units): the corner is then between the motions around it, from the end of the one before (the planner's
+        goal stays there) to the end of the one after.  A straight motion shorter than :data:`DROPPED_BELOW` on
+        every axis may be dropped: that corner is proved too, with the motion after it as the planner runs it
+        (from the corner), whose box must fit as well (the per-motion proof proved it from the short motion's
+        end).  Column chunks never hold such a motion (their scale is at most 1e-9 mm)."""
+        if mode.dialect != "linuxcnc":
+            return
+        if _linear(seg, self.dogleg) and all(abs(e - s) < DROPPED_BELOW for s, e in zip(seg.start, seg.end)):
+            if self._dropped is None and joined and prev is not None:
+                self._dropped = prev
+            return
+        before, self._dropped = self._dropped, None
+        if before is None or not joined:
+            return
+        moved = replace(seg, start=before.end)  # the motion after the dropped ones, as the planner runs it
+        tls = (moved.tool_length,)
+        self._shifts = frozenset((self._shift(moved),))
+        if not self._fits(_piece_box(moved) or (moved.start, moved.end), tls, F0):
+            self._reason(before, seg, self.mode_of(before.block), _piece_box(moved),
+                         "a motion shorter than 1e-10 mm before it may be dropped by LinuxCNC's planner, which "
+                         "then runs this one from the corner")
+            return
+        self._queue(before, moved, self.mode_of(before.block))
+
     def _stop(self) -> None:
         self.prev_stop = True
+        self._dropped = None
         self._close_stretch()
         self._naive_close()
 

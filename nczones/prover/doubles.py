@@ -18,6 +18,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..machine import Machine
+from ..motion import DROPPED_BELOW
 from .exact import box_fits
 from .result import Result, Verdict
 
@@ -78,8 +79,8 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
 
     A motion of length 0 is dropped by LinuxCNC's canonical layer: the corner is then between the motions
     around it (specs/path-modes.md §1), whose midpoints rows ``k - 1``..``k + 1`` do not hold.  When motion
-    ``k`` or ``k + 1`` may have length 0 (its two rows' boxes meet), the corner of the motions of non-zero
-    length around it lies in the box of those motions (a line-line blend region lies in the box of its two
+    ``k`` or ``k + 1`` may be dropped (:func:`may_be_zero`: length 0 or below 1e-10 mm), the corner of the
+    motions around it lies in the box of those motions (a line-line blend region lies in the box of its two
     motions), which must then fit; a window that does not hold them gives False (the pass declines)."""
     if may_be_zero(path, k) or may_be_zero(path, k + 1):
         first, last = k, k + 1
@@ -127,10 +128,10 @@ class WindowProof:
 
 
 def may_be_zero(path: Any, k: int) -> bool:
-    """May motion ``k`` (rows ``k - 1`` and ``k``) of the double pass's ``path`` have length 0 on the full path:
-    do its two rows' boxes meet on every axis?"""
+    """May motion ``k`` (rows ``k - 1`` and ``k``) of the double pass's ``path`` be dropped by LinuxCNC's planner
+    (length 0, or below :data:`~nczones.motion.DROPPED_BELOW`): are its two rows' boxes that close on every axis?"""
     (l0, h0), (l1, h1) = (path.enclosure(r + 1, r) for r in (k - 1, k))
-    return all(l0[a] <= h1[a] and l1[a] <= h0[a] for a in l0)
+    return all(l0[a] - h1[a] < DROPPED_BELOW and l1[a] - h0[a] < DROPPED_BELOW for a in l0)
 
 
 def _max_boxes(path: Any) -> int:

@@ -51,18 +51,20 @@ def probe_machine(x0: str, y0: str, x1: str, y1: str, *, path_mode: str = "G64")
 PROBE = ("-3.2", "2.7", "-2.7", "3.2")
 
 
-def _corner_program(before: int, after: int, *, zero: bool = True, hashed: bool = True, mode: str = "") -> str:
+def _corner_program(before: int, after: int, *, zero: str | None = "0", hashed: bool = True, mode: str = "") -> str:
     """``before`` motions along Y = 0, the last from (-20, 0) into C = (0, 0) (the ones before it run back and
-    forth between X-400 and X-20), a motion of length 0 (``zero``), then ``after`` motions along X = 0, the
-    first from C to (0, 20) (the others back and forth between Y300 and Y20).  ``hashed``: a ``#`` line sends
-    it through the double pass (which declines a G61 or G64 in the text: the machine starts in G64).  ``mode``
-    (G61): no blending, the control that the probe is off the path."""
+    forth between X-400 and X-20), a motion to X``zero`` (None: none; "0": of length 0; a short one, which
+    LinuxCNC's planner drops below 1e-12 mm), then ``after`` motions along X = ``zero``, the first 20 mm up to
+    Y20 (the others back and forth between Y300 and Y20).  ``hashed``: a ``#`` line sends it through the double
+    pass (which declines a G61 or G64 in the text: the machine starts in G64).  ``mode`` (G61): no blending,
+    the control that the probe is off the path."""
     lines = [f"G21 G90 G54 {mode} F10000".replace("  ", " ")] + (["#1 = 0"] if hashed else [])
     lines += [f"G1 X{-20 if (before - 1 - k) % 2 == 0 else -400} Y0" for k in range(1, before)]
     lines.append("G1 X0 Y0")
-    if zero:
-        lines.append("G1 X0 Y0")
-    lines += [f"G1 X0 Y{20 if (k - 1) % 2 == 0 else 300}" for k in range(1, after + 1)]
+    if zero is not None:
+        lines.append(f"G1 X{zero} Y0")
+    x = zero or "0"
+    lines += [f"G1 X{x} Y{20 if (k - 1) % 2 == 0 else 300}" for k in range(1, after + 1)]
     return "\n".join(lines) + "\nM2\n"
 
 
@@ -79,7 +81,7 @@ def test_zero_motion_at_a_box_boundary_of_the_double_pass(before):
     got = verify_text(_corner_program(before, after), m)
     assert got.verdict.label != "safe", "the double pass proved the blend into the probe safe"
     # and with a real motion in place of the zero one the corner is caught by the pass too
-    assert verify_text(_corner_program(before, after - 1, zero=False), m).verdict.label != "safe"
+    assert verify_text(_corner_program(before, after - 1, zero=None), m).verdict.label != "safe"
 
 
 def test_zero_motion_at_the_end_of_a_window(monkeypatch):
@@ -89,3 +91,28 @@ def test_zero_motion_at_the_end_of_a_window(monkeypatch):
     assert verify_text(_corner_program(7, 4, mode="G61"), m).verdict.label == "safe"
     assert verify_text(_corner_program(7, 4, hashed=False), m).verdict.label == "unknown"
     assert verify_text(_corner_program(7, 4), m).verdict.label != "safe"
+
+
+# Finding 2: a motion shorter than LinuxCNC's TP_POS_EPSILON (1e-12) is dropped by the planner (tpAddLine:
+# ``if (tc.target < TP_POS_EPSILON) return TP_ERR_ZERO_LENGTH``), so the corner joins the motions around it,
+# as for a motion of length 0; the prover took 1e-14 mm as a motion and proved the two corners with it (each
+# region a segment along one motion), never the blend of the two lines: `safe` with the probe on the blend.
+TINY = "0.00000000000001"
+
+
+@pytest.mark.parametrize(("before", "hashed"), [(2, False), (600, False), (2, True), (40, True)])
+def test_motion_shorter_than_the_planner_epsilon(before, hashed):
+    """The full interpreter (a short program, and past the vectorized tier's 512 motions) and the double pass
+    (``#``; 16 * ``before`` motions, a box boundary after the motion into C)."""
+    m = probe_machine(*PROBE)
+    after = 16 * before - before - 1 if hashed else 10
+    assert verify_text(_corner_program(before, after, zero=TINY, hashed=hashed, mode="G61"), m).verdict.label == "safe"
+    got = verify_text(_corner_program(before, after, zero=TINY, hashed=hashed), m)
+    assert got.verdict.label != "safe", "a blend across a dropped motion was proved safe"
+
+
+def test_motion_above_the_planner_epsilon_keeps_its_corners():
+    """1e-7 mm is a motion the planner keeps: its two blends use at most half of it each and stay near C, so
+    the probe 2.7 mm off both lines is not reached and the program stays provable."""
+    m = probe_machine(*PROBE)
+    assert verify_text(_corner_program(2, 10, zero="0.0000001", hashed=False), m).verdict.label == "safe"
