@@ -13,7 +13,12 @@ path), and in ``G64`` the verdict must not be ``safe``.
 
 from __future__ import annotations
 
+from decimal import Decimal
+from unittest import mock
+
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 import nczones.gcode.linuxcnc.doubles as pass_module
 from nczones.machine import parse_machine
@@ -116,3 +121,129 @@ def test_motion_above_the_planner_epsilon_keeps_its_corners():
     the probe 2.7 mm off both lines is not reached and the program stays provable."""
     m = probe_machine(*PROBE)
     assert verify_text(_corner_program(2, 10, zero="0.0000001", hashed=False), m).verdict.label == "safe"
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Hunt 1 (generated): a G64 corner whose two motions A and B fall on the two sides of a lane's seam.
+#
+# Oracle: the planner's own blend arc (tests/oracles/blend.py ``blend_arc``, written from blendmath.c) at a
+# feed and acceleration where it is as large as the geometry allows (F10000, a_max 200 mm/s^2: v_plan =
+# sqrt(a_n R_geom) up to R_geom = 160 mm); a small forbidden probe around its middle, off the programmed
+# path.  Whatever sits between A and B, if LinuxCNC blends across it the verdict must not be `safe`.  Between
+# A and B (each one a command the task does not wait for motion on, emctaskmain.cc
+# emcTaskCheckPreconditions: it is queued WAITING_FOR_IO or DONE, so the planner still holds A when B comes):
+# nothing, an F word, G61 (A was queued in G64: the blend is A's term_cond), M70 / G61 / M72 (restored),
+# T2 (EMC_TOOL_PREPARE), a comment, a parameter assignment, G17 G90, B in a subroutine, B behind a block
+# delete slash (the switch off runs it), a motion of length 0 or of 1e-14 mm (the planner drops both).  Seams: motions before A so that A is the last of a fast-path chunk
+# or the first past one, the 512-motion tier, the double pass's windows (shrunk) and box splits.
+BETWEEN = ("", "F3000", "G61", "M70\nG61\nM72", "T2", "(between)", "#2 = [#2 + 1]", "G17 G90", "sub", "slash",
+           "zero", "tiny")
+PADS = (0, 1, 2, 3, 4, 5, 125, 126, 127, 128, 129, 130, 253, 254, 255, 256, 257, 509, 510, 511, 512, 513, 514)
+HUNT_EXAMPLES = {"ci": 14, "long": 5_000}
+#: (G61 control verdict, G64 verdict) counts of the hunts run in this session (printed by the long profile)
+OUTCOMES: dict[tuple[str, str], int] = {}
+
+
+def _seg_dist(p, a, b):
+    import math
+
+    ab = (b[0] - a[0], b[1] - a[1])
+    t = max(0.0, min(1.0, ((p[0] - a[0]) * ab[0] + (p[1] - a[1]) * ab[1]) / (ab[0] ** 2 + ab[1] ** 2)))
+    return math.hypot(p[0] - a[0] - t * ab[0], p[1] - a[1] - t * ab[1])
+
+
+def _blend_middle(p0, c, p2):
+    from oracles.blend import blend_arc
+
+    arc = blend_arc(p0, c, p2, a_max=200.0, v_goal=10000 / 60)
+    return arc[len(arc) // 2] if arc else None
+
+
+def _seam_program(p0, c, p2, pad: int, between: str, hashed: bool) -> str:
+    """``pad`` motions along Y-450, then to P0 (down X = P0.x), A to C, ``between``, B to P2, and out."""
+    lines = ["G21 G90 G54 F10000"]
+    sub = between == "sub"
+    if sub:
+        lines += ["o100 sub", f"G1 X{p2[0]} Y{p2[1]}", "o100 endsub"]
+    if hashed or between.startswith("#"):
+        lines.append("#2 = 0")
+    lines += [f"G1 X{400 if k % 2 else -400} Y-450" for k in range(pad)]
+    lines += [f"G1 X{p0[0]} Y-450", f"G1 X{p0[0]} Y{p0[1]}", f"G1 X{c[0]} Y{c[1]}"]
+    if between == "zero":
+        lines.append(f"G1 X{c[0]} Y{c[1]}")
+    elif between == "tiny":
+        lines.append(f"G1 X{Decimal(c[0]) + Decimal('1E-14'):f} Y{c[1]}")
+    elif between not in ("", "sub", "slash"):
+        lines += between.split("\n")
+    if sub:
+        lines.append("o100 call")
+    else:
+        lines.append(("/" if between == "slash" else "") + f"G1 X{p2[0]} Y{p2[1]}")
+    lines += [f"G1 X{p2[0]} Y450", "G1 X-400 Y450", "M2"]
+    return "\n".join(lines) + "\n"
+
+
+def _probe_of(p0, c, p2):
+    """The probe box (X lo, Y lo, X hi, Y hi as decimal text) around the blend arc's middle, or None when the
+    corner has no arc or the probe would touch the programmed path (or the lead-in and lead-out lines)."""
+    q = _blend_middle(p0, c, p2)
+    if q is None:
+        return None
+    h = 0.05
+    path = [((p0[0], -450.0), p0), (p0, c), (c, p2), (p2, (p2[0], 450.0))]
+    if min(_seg_dist(q, a, b) for a, b in path) < 4 * h or not all(abs(v) < 440 for v in q):
+        return None
+    return (f"{q[0] - h:.3f}", f"{q[1] - h:.3f}", f"{q[0] + h:.3f}", f"{q[1] + h:.3f}")
+
+
+def _hunt_examples() -> int:
+    return HUNT_EXAMPLES["long" if settings.default.max_examples > 100 else "ci"]
+
+
+_POINT = st.tuples(st.integers(-150, 150), st.integers(-150, 150))
+
+
+def _corner_probe(draw_corner):
+    p0, c, p2 = draw_corner
+    if min(abs(p0[0] - c[0]) + abs(p0[1] - c[1]), abs(p2[0] - c[0]) + abs(p2[1] - c[1])) < 4:
+        return None
+    return _probe_of(tuple(map(float, p0)), tuple(map(float, c)), tuple(map(float, p2)))
+
+
+def _check_seam(p0, c, p2, probe, pad, between, hashed, window):
+    m = probe_machine(*probe)
+    text = _seam_program(p0, c, p2, pad, between, hashed)
+    with mock.patch.object(pass_module, "WINDOW", window or pass_module.WINDOW):
+        got = verify_text(text, m)
+        exact = verify_text(_seam_program(p0, c, p2, pad, "", hashed).replace("F10000", "G61 F10000"), m)
+    OUTCOMES[(exact.verdict.label, got.verdict.label)] = OUTCOMES.get((exact.verdict.label, got.verdict.label), 0) + 1
+    assert got.verdict.label != "safe", f"a blend across {between!r} into the probe proved safe:\n{text}"
+
+
+@pytest.mark.parametrize("hashed", [False, True])
+def test_hunt_corner_at_a_lane_seam(hashed):
+    """The full interpreter and its tiers (``hashed`` False) and the double pass with windows of 3..9 motions
+    (True); CI size in :data:`HUNT_EXAMPLES`."""
+
+    @settings(max_examples=_hunt_examples(), deadline=None)
+    @given(st.tuples(_POINT, _POINT, _POINT), st.sampled_from(PADS), st.sampled_from(BETWEEN),
+           st.integers(3, 9))
+    def run(corner, pad, between, window):
+        probe = _corner_probe(corner)
+        assume(probe is not None)
+        if hashed:
+            pad = pad % 12
+        p0, c, p2 = corner
+        _check_seam(p0, c, p2, probe, pad, between, hashed, window if hashed else None)
+
+    run()
+
+
+@pytest.mark.long
+@pytest.mark.parametrize("hashed", [False, True])
+def test_hunt_corner_at_a_lane_seam_long(hashed):
+    """The long profile of the hunt (``HUNT_EXAMPLES["long"]`` each; numbers in specs/contract.md)."""
+    OUTCOMES.clear()
+    with mock.patch.dict(HUNT_EXAMPLES, {"ci": HUNT_EXAMPLES["long"]}):
+        test_hunt_corner_at_a_lane_seam(hashed)
+    print(f"seam hunt (hashed={hashed}): (G61, G64) verdicts {sorted(OUTCOMES.items())}")
