@@ -59,11 +59,13 @@ class SegmentKind(enum.IntEnum):
     POLAR = 6  # G01/G02/G03 in polar coordinate interpolation (G12.1): a plane path in machine X/C, see nczones.geometry.polar
 
 
-#: A straight motion shorter than this (mm) on every axis may be dropped by LinuxCNC's planner (``tpAddLine``:
-#: ``tc.target < TP_POS_EPSILON``, 1e-12 in the machine's units, 2.54e-11 mm on an inch machine, plus the
-#: rounding of the doubles it is computed in): a blended corner is then between the motions around it
-#: (specs/path-modes.md §1).
-DROPPED_BELOW = Fraction(1, 10**10)
+#: A straight motion shorter than this (mm, or degrees) on every axis may be dropped by LinuxCNC: its canonical
+#: layer sends no move whose every axis change is below ``CART_FUZZ`` (``emccanon.cc`` ``applyMinDisplacement``
+#: zeroes each change under 1e-8 of the machine's units, then ``flush_segments`` appends the move only ``if
+#: ((vel && acc) || synched)``), 2.54e-7 mm on an inch machine, and the planner drops a line shorter than
+#: ``TP_POS_EPSILON`` (``tpAddLine``, 1e-12): a blended corner is then between the motions around it
+#: (specs/path-modes.md §1).  3e-7 covers both units with room for the doubles' rounding.
+DROPPED_BELOW = Fraction(3, 10**7)
 
 
 @dataclass(frozen=True, slots=True)

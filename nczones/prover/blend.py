@@ -375,12 +375,12 @@ class CornerCheck:
             todo.extend((x, min(x + size, hi_i)) for x in range(lo_i, hi_i, size))
 
     def _dropped_corner(self, prev: Segment | None, seg: Segment, joined: bool, mode: PathMode) -> None:
-        """LinuxCNC's planner drops a line shorter than ``TP_POS_EPSILON`` (``tpAddLine``: 1e-12 in the machine's
-        units): the corner is then between the motions around it, from the end of the one before (the planner's
-        goal stays there) to the end of the one after.  A straight motion shorter than :data:`DROPPED_BELOW` on
-        every axis may be dropped: that corner is proved too, with the motion after it as the planner runs it
-        (from the corner), whose box must fit as well (the per-motion proof proved it from the short motion's
-        end).  Column chunks never hold such a motion (their scale is at most 1e-9 mm)."""
+        """LinuxCNC drops a move whose every axis change is below 1e-8 of the machine's units (the canonical
+        layer's ``CART_FUZZ``; the planner's ``TP_POS_EPSILON`` is smaller): the corner is then between the
+        motions around it, from the end of the one before (the planner's goal stays there) to the end of the one
+        after.  A straight motion shorter than :data:`~nczones.motion.DROPPED_BELOW` on every axis may be
+        dropped: that corner is proved too, with the motion after it as the planner runs it (from the corner),
+        whose box must fit as well (the per-motion proof proved it from the short motion's end)."""
         if mode.dialect != "linuxcnc":
             return
         if _linear(seg, self.dogleg) and all(abs(e - s) < DROPPED_BELOW for s, e in zip(seg.start, seg.end)):
@@ -395,8 +395,8 @@ class CornerCheck:
         self._shifts = frozenset((self._shift(moved),))
         if not self._fits(_piece_box(moved) or (moved.start, moved.end), tls, F0):
             self._reason(before, seg, self.mode_of(before.block), _piece_box(moved),
-                         "a motion shorter than 1e-10 mm before it may be dropped by LinuxCNC's planner, which "
-                         "then runs this one from the corner")
+                         "a motion shorter than 3e-7 mm before it may be dropped by LinuxCNC, which then runs "
+                         "this one from the corner")
             return
         self._queue(before, moved, self.mode_of(before.block))
 
@@ -702,7 +702,7 @@ class CornerCheck:
         if not naive and plain and any(hull) and HULL_COLUMNS and all(h or not m.blend for h, m in zip(hull, used)):
             self._hull_columns(chunk, at)  # Fanuc cutting mode without path_tolerance: the runs' boxes
             return
-        if (naive or not plain or any(hull)
+        if (naive or not plain or any(hull) or _droppable_rows(chunk)
                 or any(m.blend and m.bound() is None and m.naive for m in used)):
             for seg in chunk.segments():  # the exact path, one motion at a time
                 self._segment(seg)
@@ -983,6 +983,20 @@ def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) 
 def _row(chunk: MotionChunk, k: int) -> Segment:
     """Row ``k`` of a column chunk as a segment (``MotionChunk.segments`` for one row)."""
     return next(chunk.rows(k, k + 1).segments())
+
+
+def _droppable_rows(chunk: MotionChunk) -> bool:
+    """Does the column chunk hold a straight motion LinuxCNC may drop (shorter than ``DROPPED_BELOW`` on every
+    axis, not 0): then its corners take the one-motion path (:meth:`CornerCheck._dropped_corner`)."""
+    import numpy as np
+
+    assert chunk.scale is not None and chunk.start is not None and chunk.end is not None and chunk.kind is not None
+    lim = -(-DROPPED_BELOW.numerator * 10**chunk.scale // DROPPED_BELOW.denominator)  # ceil: d < lim iff d < D
+    if lim <= 1:
+        return False  # every non-zero change is at least one unit of the scale, not below DROPPED_BELOW
+    d = np.abs(chunk.end - chunk.start)
+    straight = (chunk.kind == SegmentKind.LINE) | (chunk.kind == SegmentKind.RAPID)
+    return bool((straight & (d != 0).any(axis=1) & (d < lim).all(axis=1)).any())
 
 
 def _linear(seg: Segment, dogleg: bool) -> bool:

@@ -79,7 +79,7 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
 
     A motion of length 0 is dropped by LinuxCNC's canonical layer: the corner is then between the motions
     around it (specs/path-modes.md §1), whose midpoints rows ``k - 1``..``k + 1`` do not hold.  When motion
-    ``k`` or ``k + 1`` may be dropped (:func:`may_be_zero`: length 0 or below 1e-10 mm), the corner of the
+    ``k`` or ``k + 1`` may be dropped (:func:`may_be_zero`: length 0 or below 3e-7 mm), the corner of the
     motions around it lies in the box of those motions (a line-line blend region lies in the box of its two
     motions), which must then fit; a window that does not hold them gives False (the pass declines)."""
     if may_be_zero(path, k) or may_be_zero(path, k + 1):

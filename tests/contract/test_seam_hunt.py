@@ -98,11 +98,13 @@ def test_zero_motion_at_the_end_of_a_window(monkeypatch):
     assert verify_text(_corner_program(7, 4), m).verdict.label != "safe"
 
 
-# Finding 2: a motion shorter than LinuxCNC's TP_POS_EPSILON (1e-12) is dropped by the planner (tpAddLine:
-# ``if (tc.target < TP_POS_EPSILON) return TP_ERR_ZERO_LENGTH``), so the corner joins the motions around it,
-# as for a motion of length 0; the prover took 1e-14 mm as a motion and proved the two corners with it (each
-# region a segment along one motion), never the blend of the two lines: `safe` with the probe on the blend.
-TINY = "0.00000000000001"
+# Finding 2: LinuxCNC sends no move whose every axis change is below CART_FUZZ (1e-8 of the machine's
+# units: emccanon.cc applyMinDisplacement zeroes each smaller change, and flush_segments appends the move only
+# ``if ((vel && acc) || synched)``), and the planner drops a line under TP_POS_EPSILON (1e-12, tpAddLine); the
+# corner then joins the motions around it, as for a motion of length 0.  The prover took 1e-14 mm as a
+# motion and proved the two corners with it (each region a segment along one motion), never the blend of
+# the two lines: `safe` with the probe on that blend (1e-14 mm; 1e-9 mm too on the vectorized tier).
+TINY = "0.000000001"  # 1e-9 mm: under CART_FUZZ on this mm machine (and on the fast path's scale)
 
 
 @pytest.mark.parametrize(("before", "hashed"), [(2, False), (600, False), (2, True), (40, True)])
@@ -116,11 +118,11 @@ def test_motion_shorter_than_the_planner_epsilon(before, hashed):
     assert got.verdict.label != "safe", "a blend across a dropped motion was proved safe"
 
 
-def test_motion_above_the_planner_epsilon_keeps_its_corners():
-    """1e-7 mm is a motion the planner keeps: its two blends use at most half of it each and stay near C, so
-    the probe 2.7 mm off both lines is not reached and the program stays provable."""
+def test_motion_above_the_canonical_fuzz_keeps_its_corners():
+    """1e-6 mm (above 1e-8 inch) is a motion LinuxCNC keeps: its two blends use at most half of it each and
+    stay near C, so the probe 2.7 mm off both lines is not reached and the program stays provable."""
     m = probe_machine(*PROBE)
-    assert verify_text(_corner_program(2, 10, zero="0.0000001", hashed=False), m).verdict.label == "safe"
+    assert verify_text(_corner_program(2, 10, zero="0.000001", hashed=False), m).verdict.label == "safe"
 
 
 # ---------------------------------------------------------------------------------------------------------
@@ -134,7 +136,7 @@ def test_motion_above_the_planner_epsilon_keeps_its_corners():
 # emcTaskCheckPreconditions: it is queued WAITING_FOR_IO or DONE, so the planner still holds A when B comes):
 # nothing, an F word, G61 (A was queued in G64: the blend is A's term_cond), M70 / G61 / M72 (restored),
 # T2 (EMC_TOOL_PREPARE), a comment, a parameter assignment, G17 G90, B in a subroutine, B behind a block
-# delete slash (the switch off runs it), a motion of length 0 or of 1e-14 mm (the planner drops both).  Seams: motions before A so that A is the last of a fast-path chunk
+# delete slash (the switch off runs it), a motion of length 0 or of 1e-9 mm (LinuxCNC drops both).  Seams: motions before A so that A is the last of a fast-path chunk
 # or the first past one, the 512-motion tier, the double pass's windows (shrunk) and box splits.
 BETWEEN = ("", "F3000", "G61", "M70\nG61\nM72", "T2", "(between)", "#2 = [#2 + 1]", "G17 G90", "sub", "slash",
            "zero", "tiny")
@@ -172,7 +174,7 @@ def _seam_program(p0, c, p2, pad: int, between: str, hashed: bool) -> str:
     if between == "zero":
         lines.append(f"G1 X{c[0]} Y{c[1]}")
     elif between == "tiny":
-        lines.append(f"G1 X{Decimal(c[0]) + Decimal('1E-14'):f} Y{c[1]}")
+        lines.append(f"G1 X{Decimal(c[0]) + Decimal('1E-9'):f} Y{c[1]}")
     elif between not in ("", "sub", "slash"):
         lines += between.split("\n")
     if sub:
