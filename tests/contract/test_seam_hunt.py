@@ -130,8 +130,9 @@ def test_motion_above_the_canonical_fuzz_keeps_its_corners():
 #
 # Oracle: the planner's own blend arc (tests/oracles/blend.py ``blend_arc``, written from blendmath.c) at a
 # feed and acceleration where it is as large as the geometry allows (F10000, a_max 200 mm/s^2: v_plan =
-# sqrt(a_n R_geom) up to R_geom = 160 mm); a small forbidden probe around its middle, off the programmed
-# path.  Whatever sits between A and B, if LinuxCNC blends across it the verdict must not be `safe`.  Between
+# sqrt(a_n R_geom) up to R_geom = 160 mm, on axes that fast: the prover's enclosure does not depend on speeds,
+# so the probe machine's own rapid rates do not matter); a small forbidden probe around its middle, off the
+# programmed path.  Whatever sits between A and B, if LinuxCNC blends across it the verdict must not be `safe`.  Between
 # A and B (each one a command the task does not wait for motion on, emctaskmain.cc
 # emcTaskCheckPreconditions: it is queued WAITING_FOR_IO or DONE, so the planner still holds A when B comes):
 # nothing, an F word, G61 (A was queued in G64: the blend is A's term_cond), M70 / G61 / M72 (restored),
