@@ -137,3 +137,22 @@ def test_fanuc_hunts_long():
         test_fanuc_hull_hunt()
         test_fanuc_tolerance_hunt()
     print(f"fanuc hunts: {sorted(OUTCOMES.items())}")
+
+
+@pytest.mark.parametrize(("pad", "loop"), [(128, True)])
+def test_polar_run_after_a_seam(pad, loop):
+    """tests/prover/test_blend_polar.py's G12.1 face (a run in cutting mode proved by its box in X, Z and C)
+    after ``pad`` motions (plain blocks past the 512-motion tier, or a WHILE loop across a chunk edge) and a
+    dwell: the probe inside the run's box, off the path, stays ``unknown`` and the far one ``safe``, as without
+    the padding (checked by hand there).  The hunt ran pads 0, 126-128, 511-513, plain and looped, with and
+    without the dwell: 56 programs, all so."""
+    from tests.prover import test_blend_polar as polar
+
+    head, rest = polar.FACE.split("G00 X40. Z2. C0.\n")
+    if loop:
+        padding = f"#1=0\nWHILE[#1LT{pad}]DO1\nG01 X[80.+#1*0] Z300. F500.\n#1=#1+1\nEND1\n"
+    else:
+        padding = "".join(f"G01 X{80 + k % 2}. Z300. F500.\n" for k in range(pad))
+    text = head + padding + "G04 X0\nG00 X40. Z2. C0.\n" + rest
+    assert verify_text(text, polar._machine(polar.IN_HULL)).verdict.label == "unknown"
+    assert verify_text(text, polar._machine(polar.FAR)).verdict.label == "safe"
