@@ -391,6 +391,11 @@ class CornerCheck:
         if before is None or not joined:
             return
         moved = replace(seg, start=before.end)  # the motion after the dropped ones, as the planner runs it
+        if _naive_only(self.mode_of(before.block)):  # the merging windows count the dropped motion as a point
+            self._reason(before, seg, self.mode_of(before.block), None,
+                         "a motion shorter than 3e-7 mm before it may be dropped by LinuxCNC in G64 Q without P "
+                         "(naive CAM): not modelled; give P")
+            return
         tls = (moved.tool_length,)
         self._shifts = frozenset((self._shift(moved),))
         if not self._fits(_piece_box(moved) or (moved.start, moved.end), tls, F0):
