@@ -388,7 +388,7 @@ class CornerCheck:
                 self._dropped = prev
             return
         before, self._dropped = self._dropped, None
-        if before is None or not joined:
+        if before is None:  # (a stop between clears it; the dropped motions' own modes do not matter)
             return
         moved = replace(seg, start=before.end)  # the motion after the dropped ones, as the planner runs it
         if _naive_only(self.mode_of(before.block)):  # the merging windows count the dropped motion as a point

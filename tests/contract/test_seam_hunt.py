@@ -250,3 +250,18 @@ def test_hunt_corner_at_a_lane_seam_long(hashed):
     with mock.patch.dict(HUNT_EXAMPLES, {"ci": HUNT_EXAMPLES["long"]}):
         test_hunt_corner_at_a_lane_seam(hashed)
     print(f"seam hunt (hashed={hashed}): (G61, G64) verdicts {sorted(OUTCOMES.items())}")
+
+
+@pytest.mark.parametrize("before", [2, 600])
+def test_dropped_motion_in_g61_after_a_g64_motion(before):
+    """A (into C) queued in G64, then G61 and a 1e-9 mm move, then B: LinuxCNC drops the short move, and the
+    blend of A and B is A's (tp.c reads ``prev_tc->term_cond``, set when A was queued), so it is rounded.  The
+    short move's own mode (G61) does not stop it: the fix of finding 2 first required the corner after the
+    short move to be joined, and proved this program `safe`.  A dwell instead stops it: `safe`."""
+    m = probe_machine(*PROBE)
+    text = _corner_program(before, 10, zero=None, hashed=False)
+    tiny = text.replace("G1 X0 Y0\nG1 X0 Y20", f"G1 X0 Y0\nG61\nG1 X{TINY} Y0\nG1 X0 Y20", 1)
+    assert tiny != text
+    assert verify_text(tiny, m).verdict.label != "safe"
+    dwell = text.replace("G1 X0 Y0\nG1 X0 Y20", f"G1 X0 Y0\nG4 P0\nG61\nG1 X{TINY} Y0\nG1 X0 Y20", 1)
+    assert verify_text(dwell, m).verdict.label == "safe"
