@@ -249,6 +249,8 @@ def test_hunt_corner_at_a_lane_seam_long(hashed):
     OUTCOMES.clear()
     with mock.patch.dict(HUNT_EXAMPLES, {"ci": HUNT_EXAMPLES["long"]}):
         test_hunt_corner_at_a_lane_seam(hashed)
+        if not hashed:
+            test_hunt_g91_rewrite()
     print(f"seam hunt (hashed={hashed}): (G61, G64) verdicts {sorted(OUTCOMES.items())}")
 
 
@@ -265,3 +267,38 @@ def test_dropped_motion_in_g61_after_a_g64_motion(before):
     assert verify_text(tiny, m).verdict.label != "safe"
     dwell = text.replace("G1 X0 Y0\nG1 X0 Y20", f"G1 X0 Y0\nG4 P0\nG61\nG1 X{TINY} Y0\nG1 X0 Y20", 1)
     assert verify_text(dwell, m).verdict.label == "safe"
+
+
+# Hunt 2 (generated): the G91 rewrite of a seam program (every G1 X Y as its increment from the position before;
+# xy_fast starts at its reference X0 Y0) moves the machine alike, so the verdict must be the same, and never
+# `safe` with the probe on the blend.  Not with a sub or a block-delete slash (the rewrite would change them).
+def _to_g91(text: str) -> str:
+    import re
+
+    out, pos = [], (Decimal(0), Decimal(0))
+    for line in text.split("\n"):
+        mo = re.fullmatch(r"G1 X(-?[0-9.]+) Y(-?[0-9.]+)", line)
+        if mo:
+            x, y = Decimal(mo.group(1)), Decimal(mo.group(2))
+            out.append(f"G91 G1 X{x - pos[0]} Y{y - pos[1]}")
+            pos = (x, y)
+        else:
+            out.append(line)
+    return "\n".join(out)
+
+
+def test_hunt_g91_rewrite():
+    @settings(max_examples=max(2, _hunt_examples() // 3), deadline=None)
+    @given(st.tuples(_POINT, _POINT, _POINT), st.sampled_from(PADS),
+           st.sampled_from([b for b in BETWEEN if b not in ("sub", "slash")]))
+    def run(corner, pad, between):
+        probe = _corner_probe(corner)
+        assume(probe is not None)
+        p0, c, p2 = corner
+        m = probe_machine(*probe)
+        text = _seam_program(p0, c, p2, pad, between, False)
+        g90, g91 = verify_text(text, m).verdict.label, verify_text(_to_g91(text), m).verdict.label
+        OUTCOMES[("g90/g91", f"{g90}/{g91}")] = OUTCOMES.get(("g90/g91", f"{g90}/{g91}"), 0) + 1
+        assert g90 == g91 and g91 != "safe", f"G90 {g90}, G91 {g91}:\n{_to_g91(text)}"
+
+    run()
