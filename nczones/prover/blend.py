@@ -390,6 +390,11 @@ class CornerCheck:
         before, self._dropped = self._dropped, None
         if before is None:  # (a stop between clears it; the dropped motions' own modes do not matter)
             return
+        if not _linear(seg, self.dogleg):  # an arc (or a curve) run from another start is another curve
+            self._reason(before, seg, self.mode_of(before.block), None,
+                         "a motion shorter than 3e-7 mm before it may be dropped by LinuxCNC, which then runs this "
+                         "curve from the corner: not modelled")
+            return
         moved = replace(seg, start=before.end)  # the motion after the dropped ones, as the planner runs it
         if _naive_only(self.mode_of(before.block)):  # the merging windows count the dropped motion as a point
             self._reason(before, seg, self.mode_of(before.block), None,

@@ -302,3 +302,17 @@ def test_hunt_g91_rewrite():
         assert g90 == g91 and g91 != "safe", f"G90 {g90}, G91 {g91}:\n{_to_g91(text)}"
 
     run()
+
+
+def test_dropped_motion_before_an_arc_is_not_proved_safe():
+    """A 1e-9 mm move between a line into C = (0, 0) and a whole circle G2 I10 (centre X10, from C + 1e-9 back to
+    it): LinuxCNC drops the move and runs the arc from C (tpAddCircle starts at the planner's goal), a curve
+    whose start and end differ by 1e-9 mm (a whole turn or almost none), and the blend of the line and that
+    curve (a 90 degree corner: the line along +X, the circle leaving C along +Y) rounds into X < 0 Y > 0, where
+    the probe is.  The arc from another start is another curve: the prover gives a reason (VF208).
+    Before, the corner of the line and the rewritten arc (of no sweep) was proved: `safe`."""
+    m = probe_machine(*PROBE)
+    text = ("G21 G90 G54 F10000\nG1 X-20 Y0\nG1 X0 Y0\nG1 X0.000000001 Y0\nG2 X0.000000001 Y0 I10 J0\n"
+            "G1 X50 Y50\nM2\n")
+    got = verify_text(text, m)
+    assert got.verdict.label == "unknown" and {r.code for r in got.reasons} == {"VF208"}
