@@ -26,7 +26,7 @@ from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from tests.machines import machine_text
 
-FANUC_EXAMPLES = {"ci": 5, "long": 5_000}
+FANUC_EXAMPLES = {"ci": 4, "long": 5_000}
 OUTCOMES: dict[tuple[str, str], int] = {}
 BETWEEN = ("", "F0.2", "#5 = 3.", "(between)", "M08", "sub", "loop")
 PADS = (0, 1, 2, 125, 126, 127, 128, 129, 509, 510, 511, 512, 513)

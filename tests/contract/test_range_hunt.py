@@ -28,7 +28,7 @@ from nczones.errors import NczonesError
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 
-RANGE_EXAMPLES = {"ci": 6, "long": 5_000}
+RANGE_EXAMPLES = {"ci": 4, "long": 5_000}
 #: (relation, outcome) counts of this session's runs (printed by the long profile)
 OUTCOMES: dict[tuple[str, str], int] = {}
 
