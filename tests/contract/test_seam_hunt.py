@@ -280,7 +280,7 @@ def _to_g91(text: str) -> str:
         mo = re.fullmatch(r"G1 X(-?[0-9.]+) Y(-?[0-9.]+)", line)
         if mo:
             x, y = Decimal(mo.group(1)), Decimal(mo.group(2))
-            out.append(f"G91 G1 X{x - pos[0]} Y{y - pos[1]}")
+            out.append(f"G91 G1 X{x - pos[0]:f} Y{y - pos[1]:f}")
             pos = (x, y)
         else:
             out.append(line)
