@@ -45,7 +45,7 @@ if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to t
     import numpy as np
 
 __all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "PathMode", "arc_plane_axes",
-           "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation", "Payload", "Developed",
+           "DROPPED_BELOW", "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation", "Payload", "Developed",
            "TipOffset", "SplineCurve", "PolarData", "TurretTool", "tip_offset"]
 
 
@@ -57,6 +57,15 @@ class SegmentKind(enum.IntEnum):
     DEVELOPED_ARC = 4  # G2/G3 in cylindrical interpolation (G07.1): a circle on the developed surface, see nczones.geometry.cylinder
     SPLINE = 5  # G5/G5.1/G5.2/G6.2: an exact clamped NURBS curve (a SplineCurve in Segment.extra), see nczones.geometry.nurbs
     POLAR = 6  # G01/G02/G03 in polar coordinate interpolation (G12.1): a plane path in machine X/C, see nczones.geometry.polar
+
+
+#: A straight motion shorter than this (mm, or degrees) on every axis may be dropped by LinuxCNC: its canonical
+#: layer sends no move whose every axis change is below ``CART_FUZZ`` (``emccanon.cc`` ``applyMinDisplacement``
+#: zeroes each change under 1e-8 of the machine's units, then ``flush_segments`` appends the move only ``if
+#: ((vel && acc) || synched)``), 2.54e-7 mm on an inch machine, and the planner drops a line shorter than
+#: ``TP_POS_EPSILON`` (``tpAddLine``, 1e-12): a blended corner is then between the motions around it
+#: (specs/path-modes.md §1).  3e-7 covers both units with room for the doubles' rounding.
+DROPPED_BELOW = Fraction(3, 10**7)
 
 
 @dataclass(frozen=True, slots=True)

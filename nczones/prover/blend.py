@@ -28,13 +28,22 @@ from __future__ import annotations
 import time
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
 from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..machine import Machine, RapidMode
-from ..motion import MotionChunk, PathMode, Segment, SegmentKind, SplineCurve, tip_offset
+from ..motion import (
+    DROPPED_BELOW,
+    MotionChunk,
+    PathMode,
+    Segment,
+    SegmentKind,
+    SplineCurve,
+    tip_offset,
+)
 from ..zones import ZonePoint, tip_shifted
 from .exact import box_fits
 from .hull2d import convex_hull, hull_fits
@@ -178,6 +187,7 @@ class CornerCheck:
         self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
         self.prev: Segment | None = None
         self.prev_stop = True  # no corner before the first motion
+        self._dropped: Segment | None = None  # the motion before a run of ones LinuxCNC may drop (_dropped_corner)
         self.stretch: list[Any] | None = None  # Fanuc cutting mode without a tolerance: [lo, hi, first, last]
         self._seen: set[str] = set()
         self._blocks: list[tuple[int, int] | range] = []  # the blocks of each reason's two motions (a Fanuc run: all)
@@ -273,6 +283,7 @@ class CornerCheck:
         if prev is not None and joined:
             self._queue(prev, seg, self.mode_of(prev.block))
         mode = self.mode_of(seg.block)
+        self._dropped_corner(prev, seg, joined, mode)
         self.prev, self.prev_stop = seg, not mode.blend
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
             self._run_motion(seg, mode)
@@ -432,8 +443,45 @@ class CornerCheck:
             size = -(-len(group) // SPLIT)
             todo.extend((x, min(x + size, hi_i)) for x in range(lo_i, hi_i, size))
 
+    def _dropped_corner(self, prev: Segment | None, seg: Segment, joined: bool, mode: PathMode) -> None:
+        """LinuxCNC drops a move whose every axis change is below 1e-8 of the machine's units (the canonical
+        layer's ``CART_FUZZ``; the planner's ``TP_POS_EPSILON`` is smaller): the corner is then between the
+        motions around it, from the end of the one before (the planner's goal stays there) to the end of the one
+        after.  A straight motion shorter than :data:`~nczones.motion.DROPPED_BELOW` on every axis may be
+        dropped: that corner is proved too, with the motion after it as the planner runs it (from the corner),
+        whose box must fit as well (the per-motion proof proved it from the short motion's end)."""
+        if mode.dialect != "linuxcnc":
+            return
+        if _linear(seg, self.dogleg) and all(abs(e - s) < DROPPED_BELOW for s, e in zip(seg.start, seg.end)):
+            if self._dropped is None and joined and prev is not None:
+                self._dropped = prev
+            return
+        before, self._dropped = self._dropped, None
+        if before is None:  # (a stop between clears it; the dropped motions' own modes do not matter)
+            return
+        if not _linear(seg, self.dogleg):  # an arc (or a curve) run from another start is another curve
+            self._reason(before, seg, self.mode_of(before.block), None,
+                         "a motion shorter than 3e-7 mm before it may be dropped by LinuxCNC, which then runs this "
+                         "curve from the corner: not modelled")
+            return
+        moved = replace(seg, start=before.end)  # the motion after the dropped ones, as the planner runs it
+        if _naive_only(self.mode_of(before.block)):  # the merging windows count the dropped motion as a point
+            self._reason(before, seg, self.mode_of(before.block), None,
+                         "a motion shorter than 3e-7 mm before it may be dropped by LinuxCNC in G64 Q without P "
+                         "(naive CAM): not modelled; give P")
+            return
+        tls = (moved.tool_length,)
+        self._shifts = frozenset((self._shift(moved),))
+        if not self._fits(_piece_box(moved) or (moved.start, moved.end), tls, F0):
+            self._reason(before, seg, self.mode_of(before.block), _piece_box(moved),
+                         "a motion shorter than 3e-7 mm before it may be dropped by LinuxCNC, which then runs "
+                         "this one from the corner")
+            return
+        self._queue(before, moved, self.mode_of(before.block))
+
     def _stop(self) -> None:
         self.prev_stop = True
+        self._dropped = None
         self._close_stretch()
         self._naive_close()
 
@@ -731,7 +779,7 @@ class CornerCheck:
         if not naive and plain and any(hull) and HULL_COLUMNS and all(h or not m.blend for h, m in zip(hull, used)):
             self._hull_columns(chunk, at)  # Fanuc cutting mode without path_tolerance: the runs' boxes
             return
-        if (naive or not plain or any(hull)
+        if (naive or not plain or any(hull) or _droppable_rows(chunk)
                 or any(m.blend and m.bound() is None and m.naive for m in used)):
             for seg in chunk.segments():  # the exact path, one motion at a time
                 self._segment(seg)
@@ -1090,6 +1138,20 @@ def _rows_differ(a: Any, b: Any) -> Any:
 def _row(chunk: MotionChunk, k: int) -> Segment:
     """Row ``k`` of a column chunk as a segment (``MotionChunk.segments`` for one row)."""
     return next(chunk.rows(k, k + 1).segments())
+
+
+def _droppable_rows(chunk: MotionChunk) -> bool:
+    """Does the column chunk hold a straight motion LinuxCNC may drop (shorter than ``DROPPED_BELOW`` on every
+    axis, not 0): then its corners take the one-motion path (:meth:`CornerCheck._dropped_corner`)."""
+    import numpy as np
+
+    assert chunk.scale is not None and chunk.start is not None and chunk.end is not None and chunk.kind is not None
+    lim = -(-DROPPED_BELOW.numerator * 10**chunk.scale // DROPPED_BELOW.denominator)  # ceil: d < lim iff d < D
+    if lim <= 1:
+        return False  # every non-zero change is at least one unit of the scale, not below DROPPED_BELOW
+    d = np.abs(chunk.end - chunk.start)
+    straight = (chunk.kind == SegmentKind.LINE) | (chunk.kind == SegmentKind.RAPID)
+    return bool((straight & (d != 0).any(axis=1) & (d < lim).all(axis=1)).any())
 
 
 def _linear(seg: Segment, dogleg: bool) -> bool:

@@ -18,10 +18,11 @@ from fractions import Fraction
 from typing import Any
 
 from ..machine import Machine
+from ..motion import DROPPED_BELOW
 from .exact import box_fits
 from .result import Result, Verdict
 
-__all__ = ["prove_enclosures", "prove_double_path", "WindowProof"]
+__all__ = ["prove_enclosures", "prove_double_path", "WindowProof", "may_be_zero"]
 
 #: A box that does not fit is split into this many.
 SPLIT = 16
@@ -74,7 +75,25 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
     """Does the blend region of the corner between motions ``k`` and ``k + 1`` fit?  Every point of it is
     ``P1 + a (M1 - P1) + b (M2 - P1)`` (``a, b`` in [0, 1], ``M1``, ``M2`` the midpoints of the motions,
     ``P0``, ``P1``, ``P2`` rows ``k - 1``, ``k``, ``k + 1``): in the box of ``P1``, ``M1``, ``M2`` and
-    ``(P0 + P2) / 2``, each bounded with the rows' boxes (``path.enclosure(r + 1, r)`` is row r's alone)."""
+    ``(P0 + P2) / 2``, each bounded with the rows' boxes (``path.enclosure(r + 1, r)`` is row r's alone).
+
+    A motion of length 0 is dropped by LinuxCNC's canonical layer: the corner is then between the motions
+    around it (specs/path-modes.md §1), whose midpoints rows ``k - 1``..``k + 1`` do not hold.  When motion
+    ``k`` or ``k + 1`` may be dropped (:func:`may_be_zero`: length 0 or below 3e-7 mm), the corner of the
+    motions around it lies in the box of those motions (a line-line blend region lies in the box of its two
+    motions), which must then fit; a window that does not hold them gives False (the pass declines)."""
+    if may_be_zero(path, k) or may_be_zero(path, k + 1):
+        first, last = k, k + 1
+        while may_be_zero(path, first):
+            first -= 1
+            if first <= getattr(path, "row0", 0):
+                return False  # the motion before the corner is not in this window
+        while may_be_zero(path, last):
+            last += 1
+            if last > path.motions:
+                return False  # the motion after it is not read yet
+        lo, hi = path.enclosure(first, last)
+        return box_fits(allowed, lo, hi, margin, Fraction(0))
     (l0, h0), (l1, h1), (l2, h2) = (path.enclosure(r + 1, r) for r in (k - 1, k, k + 1))
     lo = {a: min(l1[a], (l0[a] + l1[a]) / 2, (l1[a] + l2[a]) / 2, (l0[a] + l2[a]) / 2) for a in l1}
     hi = {a: max(h1[a], (h0[a] + h1[a]) / 2, (h1[a] + h2[a]) / 2, (h0[a] + h2[a]) / 2) for a in h1}
@@ -96,12 +115,23 @@ class WindowProof:
 
         if machine_solids(self.machine) is not None:
             return False  # the boxes are about the controlled point; tool solids need the full path
+        if self.machine.path_mode == "G64" and not self.machine.path_tolerance and may_be_zero(path, path.motions):
+            # the window ends on a motion that may have length 0: its corner joins the motion before it,
+            # which the next window does not hold (the windows overlap by one motion)
+            return False
         boxes = prove_enclosures(path, self.machine, self.margin, max_boxes=_max_boxes(path))
         if boxes is None:
             return False
         self.boxes += boxes
         self.windows += 1
         return True
+
+
+def may_be_zero(path: Any, k: int) -> bool:
+    """May motion ``k`` (rows ``k - 1`` and ``k``) of the double pass's ``path`` be dropped by LinuxCNC's planner
+    (length 0, or below :data:`~nczones.motion.DROPPED_BELOW`): are its two rows' boxes that close on every axis?"""
+    (l0, h0), (l1, h1) = (path.enclosure(r + 1, r) for r in (k - 1, k))
+    return all(l0[a] - h1[a] < DROPPED_BELOW and l1[a] - h0[a] < DROPPED_BELOW for a in l0)
 
 
 def _max_boxes(path: Any) -> int:
