@@ -447,7 +447,7 @@ def _run_block(interp: Any, blk: bytes, line0: int, block_counter: Any, prep: An
         if k < len(fast_runs) and fast_runs[k][0] <= i:
             a, b = fast_runs[k]
             if it.motion in (810, 820):
-                done = _fast_cycle_run(interp, code, i, b, block_counter, line0, parsed.get((i, b)))
+                done = _fast_cycle_run(interp, code, i, b, block_counter, line0, _words_from(parsed, a, b, i))
                 if done is not None:
                     chunk, i = done
                     if len(chunk):
@@ -455,7 +455,7 @@ def _run_block(interp: Any, blk: bytes, line0: int, block_counter: Any, prep: An
                     failures = 0
                     continue
             elif _state_ok(it):
-                chunk = _fast_run(interp, code, i, b, block_counter, line0, parsed.get((i, b)))
+                chunk = _fast_run(interp, code, i, b, block_counter, line0, _words_from(parsed, a, b, i))
                 if chunk is not None:
                     end = b
                     if type(chunk) is tuple:  # the run was cut before a line it cannot take
@@ -473,6 +473,20 @@ def _run_block(interp: Any, blk: bytes, line0: int, block_counter: Any, prep: An
             j = fast_runs[k][0] if k < len(fast_runs) else nlines
         yield from _full_piece(interp, blk, starts, ends_, i, j, block_counter, line0, params)
         i = j
+
+
+def _words_from(parsed: dict, a: int, b: int, i: int) -> Any:
+    """The parsed words of lines ``i..b-1`` of the run ``a..b``, cut from the run's (None: parse them).
+
+    A word ends where the next begins, so cutting the run's words at a line gives exactly the words that
+    parsing only the lines from there gives: a run the fast path declines at its first lines (modes set by
+    its header) is tried again from a later line without parsing all of it again.
+    """
+    words = parsed.get((a, b))
+    if words is None or i == a:
+        return words
+    k = int(np.searchsorted(words[0], i))
+    return tuple(w[k:] for w in words)
 
 
 def _percent_cut(text: str) -> str | None:

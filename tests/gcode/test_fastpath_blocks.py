@@ -229,6 +229,42 @@ def test_a_run_cut_by_another_m_code_is_read_once(stop, monkeypatch):
     assert not any(a[0] == b[0] and a[1] < b[1] for a in calls for b in calls)  # no run's first lines again
 
 
+@settings(max_examples=60, deadline=None, derandomize=True)
+@given(st.lists(st.lists(st.tuples(st.sampled_from("XYZF"), st.integers(-10**6, 10**6), st.integers(0, 4)),
+                         min_size=0, max_size=4), min_size=1, max_size=12), st.data())
+def test_the_words_of_a_run_cut_at_a_line_are_the_words_of_its_lines(lines, data):
+    """``_words_from``: the run's parsed words cut at line ``i`` are what parsing lines ``i..`` alone gives
+    (a retry of a run from a later line reuses them)."""
+    text, line_of = [], []
+    for n, words in enumerate(lines):
+        for letter, v, dec in words:
+            w = f"{letter}{'-' if v < 0 else ''}{str(abs(v)).rjust(dec + 1, '0')}"
+            w = w if not dec else w[:len(w) - dec] + "." + w[len(w) - dec:]
+            text.append(w)
+            line_of += [n] * len(w)
+    code = np.frombuffer("".join(text).encode() or b"", dtype=np.uint8)
+    cl = np.array(line_of, dtype=np.int32)
+    whole = fastpath._parse_words(code, cl, 0, len(lines))
+    i = data.draw(st.integers(0, len(lines)))
+    cut = fastpath._words_from({(0, len(lines)): whole}, 0, len(lines), i)
+    alone = fastpath._parse_words(code, cl, i, len(lines))
+    assert whole is not None and alone is not None
+    assert [a.tolist() for a in cut] == [a.tolist() for a in alone]
+
+
+def test_a_run_declined_at_its_header_is_parsed_once(monkeypatch):
+    # a run whose first lines set modes the fast path does not take (G20, G17 G40, G64, G18: an R arc makes
+    # them one run with the body) is tried again from later lines with the words parsed once
+    body = "\n".join(f"X{k % 97}.{k % 10}5 Y-{k % 31}.25" for k in range(3 * fastpath.MIN_RUN))
+    text = f"G21\nG17 G40\nG80 G90 G94\nG64\nF999.0\nG1 X1 Y1\n{body}\nM2\n"
+    calls = []
+    parse = fastpath._parse_words
+    monkeypatch.setattr(fastpath, "_parse_words", lambda *a: calls.append(a[2:]) or parse(*a))
+    got = _fast(text, 1 << 20)
+    assert got[:2] == _full(text)
+    assert len([c for c in calls if c[1] - c[0] > fastpath.MIN_RUN]) == 1, calls
+
+
 @pytest.mark.parametrize("line", ["X1 X2", "X1 Y2 X3", "X1 Y2 Z3 X4", "G1 X1 G1 Y2", "F10 X1 Y1 Z1 F20", "N5 X1 Y2 Y3"])
 def test_a_letter_twice_in_a_line_of_a_run_is_left_to_the_full_interpreter(line):
     body = [f"X{k % 97}.{k % 10}5 Y-{k % 31}.25 Z{k % 3}" for k in range(2 * fastpath.MIN_RUN)]
