@@ -27,40 +27,20 @@ from hypothesis import strategies as st
 from nczones.errors import NczonesError
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
+from tests.machines import box_zone, machine_text
 
 RANGE_EXAMPLES = {"ci": 4, "long": 5_000}
 #: (relation, outcome) counts of this session's runs (printed by the long profile)
 OUTCOMES: dict[tuple[str, str], int] = {}
 
-MACHINE = """
-[machine]
-axes = ["X", "Y"]
-pulse = "0.001"
-path_mode = "{mode}"
-[machine.rapid]
-X = "1000"
-Y = "1000"
-[machine.reference]
-X = "{rx}"
-Y = "{ry}"
-[machine.start]
-X = "{sx}"
-Y = "{sy}"
-[offsets]
-G54 = {{ X = "{g54x}", Y = "{g54y}" }}
-G55 = {{ X = "{g55x}", Y = "{g55y}" }}
-[[zones]]
-name = "table"
-kind = "box"
-min = {{ X = "{tx0}", Y = "{ty0}" }}
-max = {{ X = "{tx1}", Y = "{ty1}" }}
-[[zones]]
-name = "clamp"
-kind = "box"
-forbid = true
-min = {{ X = "{cx0}", Y = "{cy0}" }}
-max = {{ X = "{cx1}", Y = "{cy1}" }}
-"""
+def _machine_text(mode: str, v: dict[str, str]) -> str:
+    """tests/machines/xy_range_hunt.toml with the values ``v`` and its table and clamp."""
+    keys = {"machine.path_mode": mode, "machine.reference.X": v["rx"], "machine.reference.Y": v["ry"],
+            "machine.start.X": v["sx"], "machine.start.Y": v["sy"],
+            "offsets.G54": {"X": v["g54x"], "Y": v["g54y"]}, "offsets.G55": {"X": v["g55x"], "Y": v["g55y"]}}
+    zones = (box_zone("table", {"X": v["tx0"], "Y": v["ty0"]}, {"X": v["tx1"], "Y": v["ty1"]})
+             + box_zone("clamp", {"X": v["cx0"], "Y": v["cy0"]}, {"X": v["cx1"], "Y": v["cy1"]}, forbid=True))
+    return machine_text("xy_range_hunt", set=keys, extra=zones)
 
 
 def machine(mode: str, shift=(0, 0), **values) -> object:
@@ -72,7 +52,7 @@ def machine(mode: str, shift=(0, 0), **values) -> object:
     for k, v in base.items():
         d = dx if k in ("rx", "sx", "g54x", "g55x", "tx0", "tx1", "cx0", "cx1") else dy
         out[k] = str(Decimal(str(v)) + d)
-    return parse_machine(MACHINE.format(mode=mode, **out))
+    return parse_machine(_machine_text(mode, out))
 
 
 _C = st.integers(-50, 50)
