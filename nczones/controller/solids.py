@@ -43,6 +43,7 @@ import math
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
+from typing import Any
 
 import numpy as np
 
@@ -175,6 +176,18 @@ def _section_np(fx: Fixture) -> tuple[Callable[[np.ndarray, np.ndarray], np.ndar
     return _rect_gap2_np(sec), [abs(v) for v in sec if np.isfinite(v)]
 
 
+def _compiled_pairs(solids: Any,
+                    tool_length: Fraction) -> tuple[tuple[Callable[[np.ndarray], np.ndarray], SolidHit], ...]:
+    """``solids``' vectorized test of every part against every fixture at ``tool_length``, built once per length
+    (its ``_pair_test``, kept in its ``_compiled``): the mill's and the lathe's tool solids alike."""
+    key = Fraction(tool_length)
+    got: tuple[tuple[Callable[[np.ndarray], np.ndarray], SolidHit], ...] | None = solids._compiled.get(key)
+    if got is None:
+        got = solids._compiled[key] = tuple((solids._pair_test(part, fx, key), SolidHit(part, fx))
+                                            for part in solids.parts for fx in solids.fixtures)
+    return got
+
+
 @dataclass(frozen=True)
 class ToolSolids:
     """The parts in the spindle (one tool, plus the spindle's own) against a machine's fixtures."""
@@ -216,12 +229,7 @@ class ToolSolids:
 
     def compiled(self, tool_length: Fraction) -> tuple[tuple[Callable[[np.ndarray], np.ndarray], SolidHit], ...]:
         """One vectorized test per part and fixture: ``(n, axes)`` int64 pulse positions -> hit (exact)."""
-        key = Fraction(tool_length)
-        got = self._compiled.get(key)
-        if got is None:
-            got = self._compiled[key] = tuple((self._pair_test(part, fx, key), SolidHit(part, fx))
-                                              for part in self.parts for fx in self.fixtures)
-        return got
+        return _compiled_pairs(self, tool_length)
 
     def _pair_test(self, part: Part, fx: Fixture, tool_length: Fraction) -> Callable[[np.ndarray], np.ndarray]:
         (ix, iy, iz), (ux, uy, uz) = self.index, self.pulse
@@ -420,12 +428,7 @@ class LatheToolSolids:
         """One vectorized test per part and fixture, exact: the open bounds on the controlled X and Z become
         integer pulse thresholds (``p u > v`` iff ``p >= floor(v / u) + 1``, ``p u < v`` iff
         ``p <= ceil(v / u) - 1``), compared on the int64 pulse counts."""
-        key = Fraction(tool_length)
-        got = self._compiled.get(key)
-        if got is None:
-            got = self._compiled[key] = tuple((self._pair_test(part, fx, key), SolidHit(part, fx))
-                                              for part in self.parts for fx in self.fixtures)
-        return got
+        return _compiled_pairs(self, tool_length)
 
     def _bounds(self, part: LathePart, fx: LatheFixture, tool_length: Fraction) -> list[tuple[_Open, _Open]]:
         """Per section rectangle of the fixture, the open bounds of the controlled X and Z where the grown part
