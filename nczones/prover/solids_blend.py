@@ -47,7 +47,7 @@ import numpy as np
 from ..exact import format_decimal
 from ..lathe_solids import LathePart, LatheSolids
 from ..machine import Machine, RapidMode
-from ..motion import MotionChunk, PathMode, Segment, SegmentKind
+from ..motion import DROPPED_BELOW, MotionChunk, PathMode, Segment, SegmentKind
 from ..solids import FixturePrism, Part, Solids
 from .geometry import arc_geom
 from .result import Reason
@@ -134,6 +134,7 @@ class SolidsCornerCheck:
         self.codes: dict[Fraction, set[str]] = {}  # the modes each bound came from, for the reasons
         self.prev: Segment | None = None
         self.prev_stop = True
+        self.dropped: Segment | None = None  # the motion before moves LinuxCNC may drop (_dropped)
         self.found: list[tuple[Reason, int, int]] = []  # (reason, first block, last block)
         self.more: dict[str, int] = {}  # corners past the reasons kept, per code
         self.corners = 0  # corners without tolerance proved (for tests and measurements)
@@ -204,14 +205,15 @@ class SolidsCornerCheck:
     def _segment(self, seg: Segment) -> None:
         kind = seg.kind
         if kind is SegmentKind.DWELL:
-            self.prev, self.prev_stop = None, True
+            self.prev, self.prev_stop, self.dropped = None, True, None
             return
         if seg.start == seg.end and kind is not SegmentKind.ARC:
             return  # a move of length 0: LinuxCNC's canon drops it, the corner is between its neighbours
         if kind is SegmentKind.RAPID and self.dogleg:  # positioning with an in-position check at both ends
-            self.prev, self.prev_stop = None, True
+            self.prev, self.prev_stop, self.dropped = None, True, None
             return
         prev = self.prev
+        self._dropped(prev, seg)
         d = F0
         if prev is not None and not self.prev_stop:
             before = self.mode_of(prev.block)  # the corner is rounded in the mode the first motion runs in
@@ -229,6 +231,45 @@ class SolidsCornerCheck:
         if d > 0:
             self._checker(d).feed(seg)
         self.prev, self.prev_stop = seg, not mode.blend
+
+    def _dropped(self, prev: Segment | None, seg: Segment) -> None:
+        """LinuxCNC drops a straight move shorter than 1e-8 of its units on every axis (``CART_FUZZ``; the point's
+        corner proof, ``CornerCheck._dropped_corner``, says where): the corner is then between the motions around
+        it, and the motion after runs from the end of the one before.  A move shorter than
+        :data:`~nczones.motion.DROPPED_BELOW` may be dropped, so that corner and that motion are proved too: in a
+        mode with a tolerance the motion as the planner runs it goes to the grown parts' checker (the blend stays
+        within the bound of it and of the motion before); without one, its box and the corner's region are
+        tested; an arc after it (another curve from another start) is ``unknown``."""
+        if _linear_tiny(seg):
+            if self.dropped is None and prev is not None and not self.prev_stop:
+                self.dropped = prev
+            return
+        before, self.dropped = self.dropped, None
+        if before is None or self.mode_of(before.block).dialect != "linuxcnc":
+            return
+        mode = self.mode_of(before.block)
+        if seg.kind not in _LINEAR or self.nominal is None:
+            self._add(Reason(f"the tool solids may meet a fixture in {_corner_name(before, seg)}: a motion shorter "
+                             "than 3e-7 mm between them may be dropped by LinuxCNC, which then runs the motion after "
+                             "from the corner: not modelled for the tool solids", before.span, before.block,
+                             REGION_CODE), before.block, seg.block)
+            return
+        moved = replace(seg, start=before.end)  # the motion after the dropped ones, as the planner runs it
+        bound = mode.bound()
+        if bound is not None and bound > 0:
+            self.codes.setdefault(bound, set()).add(mode.code)
+            self._checker(bound).feed(moved)
+            return
+        lo = [min(s, e) for s, e in zip(moved.start, moved.end)]
+        hi = [max(s, e) for s, e in zip(moved.start, moved.end)]
+        met = self._meets(before, seg, lo, hi)
+        if met is not None:
+            self._add(Reason(f"{met} may be met by the motion after {_corner_name(before, seg)} as LinuxCNC runs it "
+                             "when it drops the motion shorter than 3e-7 mm between them", before.span, before.block,
+                             REGION_CODE), before.block, seg.block)
+            return
+        if mode.blend:
+            self._corner(before, moved, mode)
 
     def _checker(self, d: Fraction) -> Any:
         got: Any = self.grown.get(d)
@@ -250,7 +291,7 @@ class SolidsCornerCheck:
         assert chunk.block is not None and chunk.start is not None and chunk.end is not None
         first, last = int(chunk.block[0]), int(chunk.block[-1])
         moving = np.flatnonzero(~(np.asarray(chunk.start) == np.asarray(chunk.end)).all(axis=1))
-        if len(moving) < 2 or bisect_right(self.modes, first, key=lambda e: e[0]) != bisect_right(
+        if len(moving) < 2 or _tiny_rows(chunk) or bisect_right(self.modes, first, key=lambda e: e[0]) != bisect_right(
                 self.modes, last, key=lambda e: e[0]):
             for seg in chunk.segments():  # the mode changes inside the chunk: one motion at a time
                 self._segment(seg)
@@ -396,6 +437,22 @@ class SolidsCornerCheck:
 
 def _where_v(v: Any) -> str:
     return f"line {v.span.line}" if v.span is not None else f"block {v.block}"
+
+
+def _linear_tiny(seg: Segment) -> bool:
+    """A straight motion of non-zero length shorter than :data:`~nczones.motion.DROPPED_BELOW` on every axis."""
+    return seg.kind in _LINEAR and seg.start != seg.end and all(
+        abs(e - s) < DROPPED_BELOW for s, e in zip(seg.start, seg.end))
+
+
+def _tiny_rows(chunk: MotionChunk) -> bool:
+    """Does the column chunk hold a moving row shorter than ``DROPPED_BELOW`` on every axis?  Every non-zero change
+    is at least one unit of the chunk's scale, so none below 1e-6 mm scale's rows can be."""
+    if chunk.scale is None or Fraction(1, 10**chunk.scale) >= DROPPED_BELOW:
+        return False
+    lim = -(-DROPPED_BELOW.numerator * 10**chunk.scale // DROPPED_BELOW.denominator)
+    step = np.abs(np.asarray(chunk.end) - np.asarray(chunk.start))
+    return bool(((step < lim).all(axis=1) & (step > 0).any(axis=1)).any())
 
 
 def _row(chunk: MotionChunk, k: int) -> Segment:

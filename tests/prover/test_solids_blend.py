@@ -299,3 +299,21 @@ def test_through_verify_on_a_file(tmp_path, long):
         r = verify(str(path), _machine())
         assert r.verdict.label == expected, (mode, r.reasons)
         assert expected == "safe" or {"VF233", "VF234"} & _codes(r)
+
+
+@pytest.mark.parametrize("prefix", ["", "long"])
+def test_a_move_linuxcnc_drops_at_the_corner_does_not_hide_the_corner(prefix):
+    """A straight move shorter than 3e-7 mm (``nczones.motion.DROPPED_BELOW``) at the corner: LinuxCNC's canonical
+    layer drops it (CART_FUZZ) and blends the two long motions around it, whose corner region reaches the vise
+    (the ``G64`` long-legs case above: VF234).  Taken as a real move, the corners on either side of it are
+    slivers along each motion, which clear the vise by c = 1: the solids' reason was lost (found at review,
+    where the point's corner proof already handled dropped moves and the solids' did not)."""
+    (x0, y0), (cx, cy), (x1, y1) = _corner(Decimal(1))
+    text = (HEADER + "G64\n" + (_long_prefix() if prefix else "") + f"G0 X{x0} Y{y0} Z100\nG1 Z10 F6000\n"
+            f"G1 X{cx} Y{cy}\nG1 X{cx + Decimal('0.0000002')}\nG1 X{x1} Y{y1}\nG0 Z100\nM30\n")
+    r = verify_text(text, _machine())
+    assert r.verdict.label == "unknown" and "VF234" in _codes(r), r.reasons
+    # a move LinuxCNC keeps (1e-3 mm) splits the corner in two, each blend using at most half of that move:
+    # both regions are slivers along the legs, and the tool clears the vise there
+    kept = text.replace(f"X{cx + Decimal('0.0000002')}", f"X{cx + Decimal('0.001')}")
+    assert verify_text(kept, _machine()).verdict.label == "safe"
