@@ -111,15 +111,22 @@ class _Run:
         e_row: list[int] | None
         if start is prev:  # the common case: the motion starts at the tuple the one before ended at
             s_row = self.prev_row
-            e_row = []
-            for i, x in enumerate(end):
-                if x is prev[i]:  # an axis the motion does not move keeps its number
-                    e_row.append(s_row[i])
-                    continue
-                got = _scaled((x,))
-                if got is None:
-                    return False
-                e_row.append(got[0])
+            e_row = s_row[:]
+            mult = _MULT
+            i = 0
+            for x in end:
+                if x is not prev[i]:  # an axis the motion moves (one it does not move keeps its number)
+                    d = x._denominator
+                    m = mult.get(d, 0)
+                    if m == 0:
+                        m = _mult(d)
+                    if m is None:
+                        return False
+                    v = x._numerator * m
+                    if not -_LIMIT < v < _LIMIT:
+                        return False
+                    e_row[i] = v
+                i += 1
         else:
             s_row = _scaled(start)
             if s_row is None:

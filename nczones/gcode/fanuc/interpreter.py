@@ -52,6 +52,7 @@ from ..interpreter import (
     qadd,
     sqrt_diff_exceeds,
 )
+from ..segments import make_segment
 from .expr import FanucVariables
 from .transforms import (
     Mirror,
@@ -65,6 +66,8 @@ from .transforms import (
     rotate,
     scale,
 )
+
+_LINE, _RAPID = SegmentKind.LINE, SegmentKind.RAPID
 
 #: A block's axis words (axis index, word) and its other words by letter.
 AxisWords: TypeAlias = "list[tuple[int, Word]]"
@@ -191,6 +194,10 @@ class FanucInterpreter(Interpreter):
     def __init__(self, machine: Machine, **kwargs: Any):
         super().__init__(machine, **kwargs)
         self.settings = machine.fanuc
+        cls = type(self)
+        #: :meth:`lane`'s one-call form is this class's meaning (no subclass changes a step of it)
+        self.fused_lane = cls._plain is Interpreter._plain and cls._lean is FanucInterpreter._lean \
+            and cls._lean_move is Interpreter._lean_move and cls.program_frame is Interpreter.program_frame
         n = self.naxes
         for name in FANUC_OFFSETS:
             self.g5x[name] = list(machine.offset(name))
@@ -302,6 +309,72 @@ class FanucInterpreter(Interpreter):
                 22: self.mirroring is not None}
 
     # ------------------------------------------------------------------ the plain-move lane
+    def lane(self, letters: str, values: tuple, span: Any, index: int) -> int:
+        """:meth:`Interpreter.lane` in one call for the common Fanuc straight move: a block of axis words and at
+        most G0/G1 and F (no M, S), absolute metric input, G94, a plan already made for its letters and nothing
+        pending; anything else goes to :meth:`Interpreter.lane` untouched, which decides as before.
+
+        What it does is what ``lane`` -> ``_plain`` -> ``_lean`` (this class's, then the base's) ->
+        ``_lean_move`` do for such a block, step for step (``tests/gcode/fanuc/test_column_runs.py`` and
+        ``tests/gcode/test_plain_lane.py`` hold it to the general path)."""
+        plan = self._plans.get(letters)
+        if plan is None or plan[2] >= 0 or plan[4] >= 0 or self.ended or self.m73_saved or self.track \
+                or self.machine_at is not None or self.unsupported or self.prerotation_xy is not None \
+                or self.spline_state is not None or self.comp_on or self.comp_just_off or self.cycle is not None \
+                or self._tlo_shift is not None or self.after_home or self.prog is not None or self._tlo_untaken \
+                or self.inch or not self.absolute or self.feed_mode != 94 or not self.fused_lane \
+                or (self.unset and not self._noted_straight):
+            return Interpreter.lane(self, letters, values, span, index)
+        axis_at, gk, _mk, fk, _sk = plan
+        motion = self.motion
+        if gk >= 0:
+            v: Any = values[gk]  # a Fraction, read through its slots
+            if v._denominator != 1:
+                return Interpreter.lane(self, letters, values, span, index)
+            motion = v._numerator * 10
+        if motion != 10 and motion != 0:
+            return Interpreter.lane(self, letters, values, span, index)
+        if fk >= 0:
+            fv: Any = values[fk]
+            if fv._numerator < 0:
+                return Interpreter.lane(self, letters, values, span, index)
+            self.feed = fv
+        self.block_index = index
+        self.span = span
+        self.blocks += 1
+        if gk >= 0:
+            self.cycle_il = None
+            self.last_cycle = None
+            self.motion = motion
+        pos = self.pos
+        end: Any = list(pos)
+        off = self.off
+        for k, i in axis_at:
+            o: Any = off[i]
+            end[i] = qadd(values[k], o) if o._numerator else values[k]
+        fmm = None
+        if motion == 10:
+            kind = _LINE
+            feed: Any = self.feed
+            if feed._numerator == 0:
+                self.check_feed()
+            fmm = self.feed
+        else:
+            kind = _RAPID
+        end = tuple(end)
+        fr = self._frame
+        if fr is None or self._frame_off is not off:
+            fr = self.program_frame()
+        emitted = self.emitted
+        emitted.append(make_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, index, span,
+                                    self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register, (), (),
+                                    (), fr))
+        self.segment_count += 1
+        self.kind_counts[kind] += 1
+        self.pos = end
+        self.prerotation_xy_next = None
+        return 2 if len(emitted) >= self.chunk_size else 1
+
     def _lean(self, g: int | None, m: int | None, f: Any, extra: int, s: Any = None) -> bool:
         if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None \
                 or self._tlo_untaken:
