@@ -945,8 +945,8 @@ class Interpreter:
         for block in blocks:
             if self.ended:
                 break
-            if block is LANE_FULL:
-                if len(self.emitted) >= size:
+            if block is LANE_FULL:  # the lane says a chunk is full (a Fanuc lane's run of rows may be one item)
+                if self.emitted:
                     yield MotionChunk(self.axes, None, objects=tuple(self.emitted), file=self.file)
                     self.emitted = []
                 continue

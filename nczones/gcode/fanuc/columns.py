@@ -21,11 +21,12 @@ object rows only).  Runs shorter than :data:`MIN_RUN` rows stay objects (the pro
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
 from typing import Any
 
 from ...motion import MotionChunk, Segment, SegmentKind
+from ..segments import make_segment
 
 #: Decimal places of the columns (the proof's line columns use the same, ``prover.screen.LINE_SCALE``).
 SCALE = 9
@@ -156,12 +157,186 @@ class _Run:
             tool_length=np.array(self.tls, dtype=np.int64), file=file, objects=tuple(self.segs))
 
 
+class _Built(Sequence):
+    """The segments of a :class:`Rows` run, each built when first read (then the same object on every read)."""
+
+    __slots__ = ("rows", "segs")
+
+    def __init__(self, rows: Rows) -> None:
+        self.rows = rows
+        self.segs: list[Segment | None] = [None] * len(rows.args)
+
+    def __len__(self) -> int:
+        return len(self.segs)
+
+    def __getitem__(self, i: Any) -> Any:
+        segs = self.segs
+        if isinstance(i, slice):
+            a, b, step = i.indices(len(segs))
+            if step != 1 or any(segs[k] is None for k in range(a, b)):
+                for k in range(a, b, step) if step == 1 else range(len(segs)):
+                    if segs[k] is None:
+                        segs[k] = self.rows.segment(k)
+            return tuple(segs[i])
+        seg = segs[i]
+        if seg is None:
+            seg = segs[i] = self.rows.segment(i)
+        return seg
+
+    def __iter__(self) -> Iterator[Segment]:
+        segs = self.segs
+        if any(s is None for s in segs):
+            built = self.rows.segments()
+            for k, s in enumerate(segs):
+                if s is None:
+                    segs[k] = built[k]
+        return iter(segs)  # type: ignore[arg-type]  # every item built
+
+
+class Rows:
+    """A run of straight moves the Fanuc interpreter's plain lane wrote as column rows, without a Segment each
+    (``FanucInterpreter.lane`` with a :class:`RowSink`): the columns at :data:`SCALE` places, and per row what
+    the segment is built from when a consumer reads it (:meth:`segments`: the interpreter's own arguments,
+    so the segment is the one the lane would have made).  Every row starts where the row before ended."""
+
+    __slots__ = ("file", "axes", "first", "first_row", "prev_end", "prev_row", "ends", "args", "tl", "tl_row", "tls",
+                 "full", "max_rows")
+
+    def __init__(self, start: tuple, start_row: list[int], axes: tuple[str, ...], file: str, max_rows: int) -> None:
+        self.file, self.axes, self.max_rows = file, axes, max_rows
+        self.first, self.first_row = start, start_row
+        self.prev_end, self.prev_row = start, start_row
+        self.ends: list[int] = []
+        self.args: list[tuple] = []
+        self.tl: Any = None
+        self.tl_row = 0
+        self.tls: dict[int, int] = {}  # the scaled tool lengths of the rows, by the id of their Fraction
+        self.full = False
+
+    def add(self, kind: SegmentKind, end: tuple, axis_at: tuple, index: int, span: Any, tlo: Any, fmm: Any,
+            register: Any, frame: Any) -> bool:
+        """Append the move from ``prev_end`` to ``end`` (its moved axes: ``axis_at``'s axis indices) as a row
+        (True), or leave the run unchanged (False: a number that is not a decimal of at most :data:`SCALE`
+        places, too large, or another file: the move then needs its segment)."""
+        if span.file != self.file:
+            return False
+        if tlo is not self.tl:
+            got = _scaled((tlo,))
+            if got is None:
+                return False
+            self.tl, self.tl_row = tlo, got[0]
+            self.tls[id(tlo)] = got[0]  # the Fraction stays alive in the row's arguments
+        e_row = self.prev_row[:]
+        mult = _MULT
+        for _k, i in axis_at:
+            x: Any = end[i]  # a Fraction, read through its slots
+            d = x._denominator
+            m = mult.get(d, 0)
+            if m == 0:
+                m = _mult(d)
+            if m is None:
+                return False
+            v = x._numerator * m
+            if not -_LIMIT < v < _LIMIT:
+                return False
+            e_row[i] = v
+        self.prev_end, self.prev_row = end, e_row
+        self.ends.extend(e_row)
+        args = self.args
+        args.append((kind, end, index, span, tlo, fmm, register, frame))
+        if len(args) >= self.max_rows:
+            self.full = True
+        return True
+
+    def __len__(self) -> int:
+        return len(self.args)
+
+    def segment(self, k: int) -> Segment:
+        """The segment of row ``k`` (as :meth:`segments` builds it)."""
+        kind, end, index, span, tlo, fmm, register, frame = self.args[k]
+        start = self.args[k - 1][1] if k else self.first
+        return make_segment(kind, start, end, self.axes, index, span, tlo, fmm, None, False, None, None, 0, None, "",
+                            register, (), (), (), frame)
+
+    def segments(self) -> list[Segment]:
+        """The segments of the rows, as the lane builds them (``Interpreter._lean_move``)."""
+        out = []
+        start = self.first
+        axes = self.axes
+        for kind, end, index, span, tlo, fmm, register, frame in self.args:
+            out.append(make_segment(kind, start, end, axes, index, span, tlo, fmm, None, False, None, None, 0, None,
+                                    "", register, (), (), (), frame))
+            start = end
+        return out
+
+    def chunk(self) -> MotionChunk:
+        """The rows as a column chunk whose ``objects`` are their segments, built when read."""
+        import numpy as np
+
+        n, width = len(self.args), len(self.axes)
+        end = np.array(self.ends, dtype=np.int64).reshape(n, width)
+        start = np.empty_like(end)
+        start[0] = self.first_row
+        start[1:] = end[:-1]
+        objects: Any = _Built(self)
+        args, tls = self.args, self.tls
+        return MotionChunk(
+            self.axes, SCALE, kind=np.array([a[0] for a in args], dtype=np.int8), start=start, end=end,
+            line=np.array([a[3].line for a in args], dtype=np.int64),
+            block=np.array([a[2] for a in args], dtype=np.int64),
+            tool_length=np.array([tls[id(a[4])] for a in args], dtype=np.int64), file=self.file, objects=objects)
+
+
+class RowSink:
+    """What :func:`column_runs` gives the Fanuc interpreter (``FanucInterpreter.row_sink``) for its plain lane
+    to write rows instead of segments: from motion ``start`` on, runs of at most ``max_rows`` rows of ``file``."""
+
+    __slots__ = ("axes", "file", "start", "max_rows")
+
+    def __init__(self, axes: tuple[str, ...], file: str, start: int, max_rows: int) -> None:
+        self.axes, self.file, self.start, self.max_rows = axes, file, start, max_rows
+
+    def open(self, start: Any) -> Rows | None:
+        """A new run of rows from the point ``start`` (None when it is not a decimal at the scale)."""
+        start = start if type(start) is tuple else tuple(start)
+        row = _scaled(start)
+        return None if row is None else Rows(start, row, self.axes, self.file, self.max_rows)
+
+
+def _expanded(chunk: MotionChunk) -> MotionChunk:
+    """``chunk`` with the segments of its :class:`Rows` items in their place."""
+    objects = chunk.objects or ()
+    if not any(type(x) is Rows for x in objects):
+        return chunk
+    segs: list[Segment] = []
+    for x in objects:
+        if type(x) is Rows:
+            segs.extend(x.segments())
+        else:
+            segs.append(x)
+    return MotionChunk(chunk.axes, None, objects=tuple(segs), file=chunk.file)
+
+
+#: Whether :func:`column_runs` asks the interpreter to write its plain runs as rows (tests turn it off to
+#: compare with the segments' path).
+DIRECT = True
+
+
+def _ask_rows(chunks: Any, axes: tuple[str, ...], file: str) -> None:
+    """Give the interpretation's Fanuc interpreter a :class:`RowSink` when its lane can write rows."""
+    interp = getattr(chunks, "interpreter", None)
+    if DIRECT and getattr(interp, "fused_lane", False) and interp.axes == axes and interp.file == file:
+        interp.row_sink = RowSink(axes, file, START, MAX_ROWS)
+
+
 def column_runs(chunks: Iterable[Any], axes: tuple[str, ...], file: str) -> Iterator[Any]:
     """The chunks of an interpretation with its runs of plain straight moves as column chunks that keep their
-    segments (module docstring); the motion and its order unchanged."""
+    segments (module docstring); the motion and its order unchanged.  An interpretation's Fanuc interpreter
+    writes its plain runs as :class:`Rows` (no segment per motion): each becomes a column chunk as it is."""
     if len(axes) == 2:
         yield from chunks
         return
+    _ask_rows(chunks, axes, file)
     run = _Run()
     loose: list[Segment] = []  # the segments since the last run, in order (the run is empty while there are any)
 
@@ -181,19 +356,31 @@ def column_runs(chunks: Iterable[Any], axes: tuple[str, ...], file: str) -> Iter
     for chunk in chunks:
         if not isinstance(chunk, MotionChunk) or chunk.scale is not None or chunk.axes != axes or met < START:
             yield from flush()
+            if isinstance(chunk, MotionChunk) and chunk.scale is None:
+                chunk = _expanded(chunk)
             yield chunk
             met += len(chunk) if isinstance(chunk, MotionChunk) else 1
             continue
-        for seg in chunk.objects or ():
-            if run.add(seg, file):
-                if loose:  # the run starts with this segment: what came before it goes first
-                    yield MotionChunk(axes, None, objects=tuple(loose), file=file)
-                    loose = []
-                if len(run.segs) >= MAX_ROWS:
+        for item in chunk.objects or ():
+            if type(item) is Rows:
+                if len(item) >= MIN_RUN:
                     yield from flush()
-                continue
-            if run.segs:
-                yield from flush()
-            run.prev_end = None
-            loose.append(seg)
+                    run.prev_end = None
+                    yield item.chunk()
+                    continue
+                segs: Iterable[Segment] = item.segments()
+            else:
+                segs = (item,)
+            for seg in segs:
+                if run.add(seg, file):
+                    if loose:  # the run starts with this segment: what came before it goes first
+                        yield MotionChunk(axes, None, objects=tuple(loose), file=file)
+                        loose = []
+                    if len(run.segs) >= MAX_ROWS:
+                        yield from flush()
+                    continue
+                if run.segs:
+                    yield from flush()
+                run.prev_end = None
+                loose.append(seg)
     yield from flush()

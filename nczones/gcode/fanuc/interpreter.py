@@ -53,6 +53,7 @@ from ..interpreter import (
     sqrt_diff_exceeds,
 )
 from ..segments import make_segment
+from .columns import Rows
 from .expr import FanucVariables
 from .transforms import (
     Mirror,
@@ -309,6 +310,10 @@ class FanucInterpreter(Interpreter):
                 22: self.mirroring is not None}
 
     # ------------------------------------------------------------------ the plain-move lane
+    #: Set by ``nczones.gcode.fanuc.columns.column_runs``: the lane then writes its straight moves from motion
+    #: ``row_sink.start`` on as column rows (``columns.Rows`` in ``emitted``), not as segments
+    row_sink: Any = None
+
     def lane(self, letters: str, values: tuple, span: Any, index: int) -> int:
         """:meth:`Interpreter.lane` in one call for the common Fanuc straight move: a block of axis words and at
         most G0/G1 and F (no M, S), absolute metric input, G94, a plan already made for its letters and nothing
@@ -366,6 +371,25 @@ class FanucInterpreter(Interpreter):
         if fr is None or self._frame_off is not off:
             fr = self.program_frame()
         emitted = self.emitted
+        sink = self.row_sink
+        if sink is not None and self.segment_count >= sink.start:
+            # a column row instead of a segment (nczones.gcode.fanuc.columns.Rows: the segment is built if read)
+            rows = emitted[-1] if emitted else None
+            if type(rows) is not Rows or rows.prev_end is not pos or rows.full:
+                rows = sink.open(pos)
+                if rows is not None and rows.add(kind, end, axis_at, index, span, self.tlo, fmm, self.tool_register,
+                                                 fr):
+                    emitted.append(rows)
+                else:
+                    rows = None
+            elif not rows.add(kind, end, axis_at, index, span, self.tlo, fmm, self.tool_register, fr):
+                rows = None
+            if rows is not None:
+                self.segment_count += 1
+                self.kind_counts[kind] += 1
+                self.pos = end
+                self.prerotation_xy_next = None
+                return 2 if rows.full or len(emitted) >= self.chunk_size else 1
         emitted.append(make_segment(kind, pos if type(pos) is tuple else tuple(pos), end, self.axes, index, span,
                                     self.tlo, fmm, None, False, None, None, 0, None, "", self.tool_register, (), (),
                                     (), fr))

@@ -186,3 +186,99 @@ def test_parameter_ranges_keep_the_one_by_one_path(monkeypatch):
     assert not taken
     assert ranged.verdict.label == "unsafe"
     assert verify_text(text, m).verdict.label == "safe" and taken  # without the range: the column runs
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# The lane writes rows (issue 36, fourth step): with ``column_runs`` the Fanuc interpreter's plain lane writes its
+# straight moves as column rows (``columns.Rows``), building a segment only when one is read.  Held to the path
+# where every motion is a segment (``columns.DIRECT`` off), one by one (MIN_RUN above any run).
+
+
+def _rows_and_segments(text: str, machine, start: int | None = None, min_run: int | None = None) -> tuple:
+    """verify with the lane's rows (``START``/``MIN_RUN`` as given, else the defaults) and with every motion a
+    segment proved one by one (``DIRECT`` off, ``MIN_RUN`` above any run)."""
+    with pytest.MonkeyPatch.context() as mp:
+        if start is not None:
+            mp.setattr(columns, "START", start)
+        if min_run is not None:
+            mp.setattr(columns, "MIN_RUN", min_run)
+        rows = verify_text(text, machine)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(columns, "DIRECT", False)
+        mp.setattr(columns, "MIN_RUN", 10**9)
+        segments = verify_text(text, machine)
+    return rows, segments
+
+
+def _full(result) -> tuple:
+    """Verdict, violations (block, zone, point, first exit, span), reasons, truncation and the motion counted."""
+    return _summary(result) + (dict(result.stats)["segments"],)
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.sampled_from(_MOVES), min_size=1, max_size=6), st.lists(st.sampled_from(_OUT), max_size=1),
+       st.integers(1, 6), st.sampled_from(["while", "m98", "g65"]), st.sampled_from(["", "0.05"]),
+       st.sampled_from([(0, 1), (0, 4), (None, None)]), st.randoms(use_true_random=False))
+def test_rows_decide_as_segments_one_by_one(body, out, reps, form, tolerance, lane, rnd):
+    """Short loops (WHILE, M98 and G65 bodies with G20/G21, G61/G64/G09, dwells, a face touched or crossed by
+    0.001 on X, Y or Z): the rows written by the lane (as columns from the first motion, in runs of 1 or 4 rows
+    or more, or with the defaults, where they stay objects) decide as the segments one by one."""
+    body = body + out
+    rnd.shuffle(body)
+    a, b = _rows_and_segments(_program(body, reps, form), _MACHINES[tolerance], *lane)
+    assert _full(a) == _full(b)
+
+
+# The face a move touches (program coordinates on the test mill, from the machine faces above: X50. is machine
+# X 150, Y40. is machine Y 90; on Z the work offset is G54's -200 plus EXT's 1, so Z-2. is machine Z -201) and
+# the sign that takes it outside.
+_FACES = {"X": ("50.", 1), "Y": ("40.", 1), "Z": ("-2.", -1)}
+
+
+@pytest.mark.parametrize("form", ["while", "m98", "g65"])
+@pytest.mark.parametrize("axis", ["X", "Y", "Z"])
+@pytest.mark.parametrize("delta", ["0", "0.001"])
+def test_long_rows_touch_and_cross_a_face(form, axis, delta):
+    """300 iterations of two moves (600 motions: past the proof's 512 and the lane's START, so rows with the
+    default settings): iteration 290 moves to the face (``delta`` 0: it touches it, the zone is closed: safe)
+    or 0.001 past it (unsafe: that move ends outside and the next one starts there, the violations on those two
+    lines); the rows decide as the segments one by one."""
+    face, sign = _FACES[axis]
+    body = ["#7 = 0", f"IF [#1 EQ 290] THEN #7 = {delta}", f"G01 {axis}[{face} + {sign} * #7]",
+            "G01 X[#1 * 0.1] Y[#1 * 0.05] Z0."]
+    text = _program(body, 300, form)  # #1: the counter (a G65 body's A argument)
+    m = _MACHINES[""]
+    a, b = _rows_and_segments(text, m)
+    assert dict(a.stats)["segments"] > 512
+    assert _full(a) == _full(b)
+    if delta == "0":
+        assert a.verdict.label == "safe"
+    else:
+        assert a.verdict.label == "unsafe"
+        line = next(i for i, t in enumerate(text.splitlines(), 1) if t.startswith(f"G01 {axis}["))
+        assert {v.span.line for v in a.violations} == {line, line + 1}
+
+
+def test_rows_are_written_by_the_lane():
+    """The lane is taken: after START motions a loop's moves reach column_runs as ``Rows`` (no segment built
+    for them unless read), and the column chunks made of them are their exact image."""
+    machine = _machine()
+    text = _program(["G01 X[#1 * 0.01] Y[#1 * 0.02]", "G00 Z0."], 500, "m98")
+    plain = list(interpret_text(text, machine).segments())
+    run = interpret_text(text, machine)
+    out = list(columns.column_runs(run, run.interpreter.axes, run.interpreter.file))
+    built = [c for c in out if isinstance(c, MotionChunk) and c.scale is not None]
+    assert built and all(type(c.objects).__name__ == "_Built" for c in built)
+    assert sum(len(c) for c in built) == 1000 - columns.START
+    assert all(s is None for c in built for s in c.objects.segs)  # nothing read yet: nothing built
+    den = 10**columns.SCALE
+    k = 0
+    for c in out:
+        for i, seg in enumerate(c.segments()):
+            assert seg == plain[k]
+            if c.scale is not None:
+                assert [Fraction(int(v), den) for v in c.start[i]] == list(seg.start)
+                assert [Fraction(int(v), den) for v in c.end[i]] == list(seg.end)
+                assert next(c.rows(i, i + 1).segments()) is seg
+            k += 1
+    assert k == len(plain)
