@@ -17,6 +17,17 @@ the run's, or has a number that is not such a decimal; so do the first :data:`ST
 two-axis machine (a lathe) every motion (the corner check's convex-hull refinement keeps the points of
 object rows only).  Runs shorter than :data:`MIN_RUN` rows stay objects (the proof batches those anyway).
 ``tests/gcode/fanuc/test_column_runs.py`` holds the lanes to the exact path.
+
+**Rows written by the lane** (issue 36, fourth step).  :func:`column_runs` gives the interpretation's Fanuc
+interpreter a :class:`RowSink`; from motion :data:`START` on, its plain lane (``FanucInterpreter.lane``: a block
+of axis words with at most G0/G1 and F, absolute metric G94 input, nothing pending) then writes each straight
+move as a row of a :class:`Rows` run (one item of the interpreter's ``emitted`` list) instead of a segment: the
+end coordinates scaled at :data:`SCALE` places (checked as above; a move that fails the check gets its segment
+and ends the run) and the arguments its segment is made from.  A run of at least :data:`MIN_RUN` rows becomes a
+column chunk as it is, whose ``objects`` build a segment only when one is read (a row the proof flags, a corner
+at a chunk's edge, a violation) and give the same object on every read; a shorter run, or one before
+:data:`START` motions have passed, becomes its segments and takes the path above.  The segments are those the
+lane would have made (``Interpreter._lean_move``'s arguments); ``DIRECT`` off turns the rows off.
 """
 
 from __future__ import annotations

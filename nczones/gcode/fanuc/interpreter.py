@@ -195,10 +195,9 @@ class FanucInterpreter(Interpreter):
     def __init__(self, machine: Machine, **kwargs: Any):
         super().__init__(machine, **kwargs)
         self.settings = machine.fanuc
-        cls = type(self)
-        #: :meth:`lane`'s one-call form is this class's meaning (no subclass changes a step of it)
-        self.fused_lane = cls._plain is Interpreter._plain and cls._lean is FanucInterpreter._lean \
-            and cls._lean_move is Interpreter._lean_move and cls.program_frame is Interpreter.program_frame
+        #: :meth:`lane`'s one-call form is this class's meaning: the mill's (a subclass, such as the lathe's, may
+        #: change a step of it and takes the general lane)
+        self.fused_lane = type(self) is FanucInterpreter
         n = self.naxes
         for name in FANUC_OFFSETS:
             self.g5x[name] = list(machine.offset(name))
