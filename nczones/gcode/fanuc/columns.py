@@ -191,7 +191,8 @@ class _Built(Sequence):
             return tuple(segs[i])
         seg = segs[i]
         if seg is None:
-            seg = segs[i] = self.rows.segment(i)
+            k = i + len(segs) if i < 0 else i
+            seg = segs[k] = self.rows.segment(k)
         return seg
 
     def __iter__(self) -> Iterator[Segment]:

@@ -271,6 +271,8 @@ def test_rows_are_written_by_the_lane():
     assert built and all(type(c.objects).__name__ == "_Built" for c in built)
     assert sum(len(c) for c in built) == 1000 - columns.START
     assert all(s is None for c in built for s in c.objects.segs)  # nothing read yet: nothing built
+    last = built[0].objects[-1]  # one row read: that segment alone is built, the same object from then on
+    assert sum(s is not None for s in built[0].objects.segs) == 1 and built[0].objects[len(built[0]) - 1] is last
     den = 10**columns.SCALE
     k = 0
     for c in out:
