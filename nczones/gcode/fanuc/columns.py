@@ -119,6 +119,7 @@ class _Run:
             self.prev_tl, self.tl_row = tl, got[0]
         start, end = seg.start, seg.end
         prev = self.prev_end
+        x: Any  # a Fraction, read through its slots
         s_row: list[int] | None
         e_row: list[int] | None
         if start is prev:  # the common case: the motion starts at the tuple the one before ended at
@@ -267,8 +268,9 @@ class Rows:
         """The segment of row ``k`` (as :meth:`segments` builds it)."""
         kind, end, index, span, tlo, fmm, register, frame = self.args[k]
         start = self.args[k - 1][1] if k else self.first
-        return make_segment(kind, start, end, self.axes, index, span, tlo, fmm, None, False, None, None, 0, None, "",
-                            register, (), (), (), frame)
+        seg: Segment = make_segment(kind, start, end, self.axes, index, span, tlo, fmm, None, False, None, None, 0,
+                                    None, "", register, (), (), (), frame)
+        return seg
 
     def segments(self) -> list[Segment]:
         """The segments of the rows, as the lane builds them (``Interpreter._lean_move``)."""
@@ -317,7 +319,7 @@ class RowSink:
 
 def _expanded(chunk: MotionChunk) -> MotionChunk:
     """``chunk`` with the segments of its :class:`Rows` items in their place."""
-    objects = chunk.objects or ()
+    objects: Sequence[Any] = chunk.objects or ()  # segments and runs of rows
     if not any(type(x) is Rows for x in objects):
         return chunk
     segs: list[Segment] = []
@@ -336,7 +338,7 @@ DIRECT = True
 
 def _ask_rows(chunks: Any, axes: tuple[str, ...], file: str) -> None:
     """Give the interpretation's Fanuc interpreter a :class:`RowSink` when its lane can write rows."""
-    interp = getattr(chunks, "interpreter", None)
+    interp: Any = getattr(chunks, "interpreter", None)
     if DIRECT and getattr(interp, "fused_lane", False) and interp.axes == axes and interp.file == file:
         interp.row_sink = RowSink(axes, file, START, MAX_ROWS)
 
@@ -373,7 +375,8 @@ def column_runs(chunks: Iterable[Any], axes: tuple[str, ...], file: str) -> Iter
             yield chunk
             met += len(chunk) if isinstance(chunk, MotionChunk) else 1
             continue
-        for item in chunk.objects or ():
+        items: Sequence[Any] = chunk.objects or ()  # segments and runs of rows
+        for item in items:
             if type(item) is Rows:
                 if len(item) >= MIN_RUN:
                     yield from flush()

@@ -373,7 +373,7 @@ class FanucInterpreter(Interpreter):
         sink = self.row_sink
         if sink is not None and self.segment_count >= sink.start:
             # a column row instead of a segment (nczones.gcode.fanuc.columns.Rows: the segment is built if read)
-            rows = emitted[-1] if emitted else None
+            rows: Any = emitted[-1] if emitted else None
             if type(rows) is not Rows or rows.prev_end is not pos or rows.full:
                 rows = sink.open(pos)
                 if rows is not None and rows.add(kind, end, axis_at, index, span, self.tlo, fmm, self.tool_register,
