@@ -17,6 +17,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.gcode.fanuc import columns
 from nczones.machine import parse_machine
@@ -284,3 +285,29 @@ def test_rows_are_written_by_the_lane():
                 assert next(c.rows(i, i + 1).segments()) is seg
             k += 1
     assert k == len(plain)
+
+
+_FEEDS = ["G01 X[#1 * 0.2] F[300 + #1]", "Y2. F250.", "G00 X1. F0."]  # F in the lane's blocks
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.sampled_from(_MOVES + _OUT + _FEEDS), min_size=1, max_size=6), st.integers(1, 30),
+       st.sampled_from(["while", "m98", "g65"]))
+def test_one_call_lane_gives_the_general_lanes_segments(body, reps, form):
+    """``FanucInterpreter.lane`` in one call (``fused_lane``) and ``Interpreter.lane``'s steps give the same
+    segments, frames, spans and feeds included (a frame is not part of a segment's equality)."""
+    machine = _machine()
+    text = _program(body, reps, form)
+
+    def motion(fused: bool) -> list:
+        run = interpret_text(text, machine)
+        run.interpreter.fused_lane = fused
+        out: list = []
+        try:
+            for s in run.segments():
+                out.append((s, s.frame, s.span, s.feed_mm_min, s.tool_register))
+        except GcodeError as e:  # G1 after F0.: the same error, after the same motion
+            out.append(str(e))
+        return out
+
+    assert motion(True) == motion(False)
