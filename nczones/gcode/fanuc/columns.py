@@ -51,6 +51,7 @@ MIN_RUN = 64
 START = 512
 #: Coordinates at the scale stay below this (the corner check's column lanes take less than ``2**58``).
 _LIMIT = 2**57
+_LOW = -_LIMIT
 
 _MULT: dict[int, int | None] = {}
 _LINE, _RAPID = SegmentKind.LINE, SegmentKind.RAPID
@@ -77,7 +78,7 @@ def _scaled(p: tuple[Fraction, ...]) -> list[int] | None:
         if m is None:
             return None
         v = x._numerator * m  # type: ignore[attr-defined]
-        if not -_LIMIT < v < _LIMIT:
+        if not _LOW < v < _LIMIT:
             return None
         out.append(v)
     return out
@@ -136,7 +137,7 @@ class _Run:
                     if m is None:
                         return False
                     v = x._numerator * m
-                    if not -_LIMIT < v < _LIMIT:
+                    if not _LOW < v < _LIMIT:
                         return False
                     e_row[i] = v
                 i += 1
@@ -250,7 +251,7 @@ class Rows:
             if m is None:
                 return False
             v = x._numerator * m
-            if not -_LIMIT < v < _LIMIT:
+            if not _LOW < v < _LIMIT:
                 return False
             e_row[i] = v
         self.prev_end, self.prev_row = end, e_row

@@ -319,8 +319,8 @@ class FanucInterpreter(Interpreter):
         pending; anything else goes to :meth:`Interpreter.lane` untouched, which decides as before.
 
         What it does is what ``lane`` -> ``_plain`` -> ``_lean`` (this class's, then the base's) ->
-        ``_lean_move`` do for such a block, step for step (``tests/gcode/fanuc/test_column_runs.py`` and
-        ``tests/gcode/test_plain_lane.py`` hold it to the general path)."""
+        ``_lean_move`` do for such a block, step for step (``tests/gcode/fanuc/test_column_runs.py``,
+        ``test_one_call_lane_gives_the_general_lanes_segments``, holds it to them)."""
         plan = self._plans.get(letters)
         if plan is None or plan[2] >= 0 or plan[4] >= 0 or self.ended or self.m73_saved or self.track \
                 or self.machine_at is not None or self.unsupported or self.prerotation_xy is not None \
