@@ -1140,7 +1140,8 @@ class Interpreter:
                 raise self.error("GC209", f"negative spindle speed {words['S'].text}; S must be 0 or more", words["S"])
             self.spindle_speed = sv
         # 5-6: tool select and change
-        if 13 in groups:
+        restores = mgroups.get(10) is not None and mgroups[10][0] == 72
+        if 13 in groups and restores:  # M72 G64 ...: rs274 2.9.0~pre1 ends the block in the restored mode
             self._control_mode(groups[13][0], words)
         if "T" in words:
             t = words["T"].value
@@ -1207,6 +1208,10 @@ class Interpreter:
             self.wcs = _WCS_BY_KEY[groups[12][0]]
             self.unset.discard("offset")
             self.recompute_offsets()
+        # 16: path control mode, after the units (LinuxCNC convert_g: a block's G20 G64 P0.01 is 0.01 inch) and
+        # after M70/M73 (convert_m runs first: ``M70 G64 P0.2`` saves the mode before the block's G64)
+        if 13 in groups and not restores:
+            self._control_mode(groups[13][0], words)
         # 17: distance modes
         if 3 in groups:
             self.absolute = groups[3][0] == 900

@@ -116,3 +116,47 @@ def test_the_restore_holds_in_every_lane(name, lane):
     # the same program kept in G61 (no M72 / M73 restore) is safe: the restore, not the filler, decides
     assert verify_text(program.replace("M72\n", "").replace("M73\n", "").replace("G64 P2\n", ""),
                        machine()).verdict.label == "safe"
+
+
+# G20/G21 and M70/M72 in the block of the G64 itself (found by hunt36).  LinuxCNC's convert_g sets the length
+# units before the path control mode, and convert_m (M70-M73) runs before convert_g: rs274 2.9.0~pre1 prints
+# ``USE_LENGTH_UNITS(CANON_UNITS_INCHES)`` before ``SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, 0.040000)`` for
+# ``G20 G64 P0.04``, so P is 0.04 inch = 1.016 mm (Q = P: the corner may pass 2.032 mm from the path, the clamp is
+# 1 mm from it: `unknown`).  nczones read P in the units before the block (0.04 mm: bound 0.08 mm), and proved the
+# L corner `safe`.  ``M70 G64 P2`` saves the mode before the block's G64 (rs274: ``M72`` then prints
+# ``CANON_EXACT_PATH``); ``M72 G64 P2`` ends in the restored mode (rs274 prints only ``CANON_EXACT_PATH``).
+IN_BLOCK_UNSAFE = {
+    "g20-g64-one-block": "G20 G64 P0.04\nG21\n" + L_CORNER,
+    "g64-g20-one-block": "G64 G20 P0.04 Q0.04\nG21\n" + L_CORNER,
+}
+IN_BLOCK_KEPT = {
+    "m70-g64-one-block": "G61\nM70 G64 P2\nM72\n" + L_CORNER,
+    "m72-g64-one-block": "G61\nM70\nG64 P0.001\nM72 G64 P2\n" + L_CORNER,
+}
+
+
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC's rs274 is not installed")
+@pytest.mark.parametrize("name", sorted({**IN_BLOCK_UNSAFE, **IN_BLOCK_KEPT}))
+def test_the_path_mode_of_a_block_with_units_or_m70_is_rs274s(name, tmp_path):
+    program = {**IN_BLOCK_UNSAFE, **IN_BLOCK_KEPT}[name]
+    assert _nczones_modes(program) == _rs274_modes(program, tmp_path)
+
+
+@pytest.mark.parametrize("name", sorted(IN_BLOCK_UNSAFE))
+@pytest.mark.parametrize("lane", ["short", "vectorized", "double pass"])
+def test_g64_p_read_in_the_blocks_units(name, lane):
+    program = IN_BLOCK_UNSAFE[name]
+    if lane != "short":
+        head, _, _tail = program.partition(L_CORNER)
+        program = head + "F100\n" + FILLER + "G1 X0 Y0\n" + (
+            "#1 = 100\nG1 X#1 Y0\nG1 X#1 Y100\n" if lane == "double pass" else "G1 X100 Y0\nG1 X100 Y100\n")
+    r = verify_text(program, machine())
+    assert r.verdict.label == "unknown" and not r.violations
+    assert [x for x in r.reasons if x.code == BLEND_CODE]
+    # in mm (P0.04 mm, bound 0.08 mm) the corner clears the clamp by 1 mm: the units decide
+    assert verify_text(program.replace("G20", "G21"), machine()).verdict.label == "safe"
+
+
+@pytest.mark.parametrize("name", sorted(IN_BLOCK_KEPT))
+def test_m70_or_m72_beside_g64_ends_in_g61(name):
+    assert verify_text(IN_BLOCK_KEPT[name], machine()).verdict.label == "safe"
