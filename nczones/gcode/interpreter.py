@@ -111,6 +111,9 @@ _ONE = Fraction(1)
 #: LinuxCNC G73/G83 rapid back-off (0.010 in; 0.254 mm in mm programs).
 G83_RAPID_DELTA_MM = Fraction(254, 1000)
 _TINY = Fraction(1, 10**12)
+#: The M codes LinuxCNC runs before M72 in a block (convert_m: M6, M61, M72 itself); anything else beside M72 is
+#: dropped when its restore runs (``_execute_general``)
+_BEFORE_M72 = frozenset({6, 61, 72})
 
 AXIS_LETTERS = "XYZABCUVW"
 ROTARY = frozenset("ABC")
@@ -1140,9 +1143,6 @@ class Interpreter:
                 raise self.error("GC209", f"negative spindle speed {words['S'].text}; S must be 0 or more", words["S"])
             self.spindle_speed = sv
         # 5-6: tool select and change
-        restores = mgroups.get(10) is not None and mgroups[10][0] == 72
-        if 13 in groups and restores:  # M72 G64 ...: rs274 2.9.0~pre1 ends the block in the restored mode
-            self._control_mode(groups[13][0], words)
         if "T" in words:
             t = words["T"].value
             if t.denominator != 1 or t < 0:
@@ -1168,6 +1168,11 @@ class Interpreter:
             self.spindle_slot_stale = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
         if mgroups.get(10) is not None:
             # LinuxCNC convert_m: M70-M73 after F, S, T and M6 of the block, before its G codes and motion
+            if mgroups[10][0] == 72 and (gcodes or axis_words or any(k not in _BEFORE_M72 for k, _w in mcodes)):
+                self.unknown("M72", "M72 with G codes, axis words or later M codes in its block: LinuxCNC 2.9's "
+                             "restore runs the restored codes as blocks of their own, which take the place of "
+                             "the rest of this block (rs274 2.9.0~pre1 drops its motion and its G64); write M72 "
+                             "alone", mgroups[10][1])
             self._modal_context(mgroups[10][0], mgroups[10][1])
         # 10: dwell
         if g0 and g0[0] == 40:
@@ -1210,7 +1215,7 @@ class Interpreter:
             self.recompute_offsets()
         # 16: path control mode, after the units (LinuxCNC convert_g: a block's G20 G64 P0.01 is 0.01 inch) and
         # after M70/M73 (convert_m runs first: ``M70 G64 P0.2`` saves the mode before the block's G64)
-        if 13 in groups and not restores:
+        if 13 in groups:
             self._control_mode(groups[13][0], words)
         # 17: distance modes
         if 3 in groups:
