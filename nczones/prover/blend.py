@@ -1006,7 +1006,7 @@ class CornerCheck:
         # the convex-hull refinement keeps no points of column rows: the run is proved by its box alone
         self._stretch_pts = None
         tls = chunk.tool_length
-        assert tls is not None  # a column chunk
+        assert tls is not None and chunk.scale is not None  # a column chunk
         if self.stretch is None:
             self.stretch = [list(box[0]), list(box[1]), seg_a, seg_b]
             self._stretch_shifts = {self._shift(seg_a), self._shift(seg_b)}
