@@ -1140,8 +1140,6 @@ class Interpreter:
                 raise self.error("GC209", f"negative spindle speed {words['S'].text}; S must be 0 or more", words["S"])
             self.spindle_speed = sv
         # 5-6: tool select and change
-        if 13 in groups:
-            self._control_mode(groups[13][0], words)
         if "T" in words:
             t = words["T"].value
             if t.denominator != 1 or t < 0:
@@ -1167,7 +1165,7 @@ class Interpreter:
             self.spindle_slot_stale = True  # M61 sets the number only: the interpreter's spindle entry stays what it was
         if mgroups.get(10) is not None:
             # LinuxCNC convert_m: M70-M73 after F, S, T and M6 of the block, before its G codes and motion
-            self._modal_context(mgroups[10][0], mgroups[10][1])
+            self._modal_context(mgroups[10][0], mgroups[10][1], bool(gcodes or axis_words or len(mcodes) > 1))
         # 10: dwell
         if g0 and g0[0] == 40:
             p = words.get("P")
@@ -1202,11 +1200,13 @@ class Interpreter:
         # 14: tool length
         if 8 in groups:
             self._tool_length(groups[8], words)
-        # 15: coordinate system
+        # 15-16: coordinate system; path mode after the units and M70 (``G20 G64 P0.01``: 0.01 inch, as convert_g)
         if 12 in groups:
             self.wcs = _WCS_BY_KEY[groups[12][0]]
             self.unset.discard("offset")
             self.recompute_offsets()
+        if 13 in groups:
+            self._control_mode(groups[13][0], words)
         # 17: distance modes
         if 3 in groups:
             self.absolute = groups[3][0] == 900
@@ -1550,9 +1550,16 @@ class Interpreter:
             ctxs.append(found)
         return found
 
-    def _modal_context(self, k: int, w: Word) -> None:
+    def _modal_context(self, k: int, w: Word, others: bool = False) -> None:
         """M70 (save), M71 (invalidate), M72 (restore), M73 (save, restore when this call returns): LinuxCNC's
-        ``convert_m``, ``save_settings`` and ``restore_settings`` on the current call frame."""
+        ``convert_m``, ``save_settings`` and ``restore_settings`` on the current call frame.  ``others``: the block
+        has G codes, axis words or other M codes.  M72 beside them is unknown: LinuxCNC 2.9's restore runs the
+        restored codes through ``Interp::execute``, which reads them into the current block, so when it runs
+        anything the rest of the block is lost (rs274 2.9.0~pre1 drops ``M72 G1 X100 Y0``'s motion)."""
+        if k == 72 and others:
+            self.unknown("M72", "M72 with G codes, axis words or other M codes in its block: LinuxCNC 2.9's restore "
+                         "runs the restored codes as blocks of their own, which take the place of the rest of this "
+                         "block (rs274 2.9.0~pre1 drops its motion and its G64); write M72 alone", w)
         if k in (70, 73):
             ctx = self._frame_context(True)
             assert ctx is not None

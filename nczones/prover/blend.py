@@ -199,6 +199,9 @@ class CornerCheck:
         self._unshifted = [self.allowed]
         self._shifted: dict[tuple[tuple[str, Fraction], ...], Any] = {(): self.allowed}
         self._stretch_shifts: set[tuple[tuple[str, Fraction], ...]] = set()
+        # the tool lengths of the run's motions besides its first and last one's (a G43/G49 inside the run): the
+        # hull is tested at each, as a corner is at both motions' lengths
+        self._stretch_tls: set[Fraction] = set()
         # a two-axis machine (a lathe): the corners of the run's motion boxes, whose convex hull is proved
         # where the run's box does not fit (nczones.prover.hull2d)
         self._stretch_pts: list[tuple[Fraction, ...]] | None = [] if len(self.axes) == 2 else None
@@ -288,6 +291,7 @@ class CornerCheck:
         if mode.blend and mode.dialect == "fanuc" and mode.tolerance is None:
             self._run_motion(seg, mode)
         elif self.stretch is not None:
+            self._stretch_tl(self.stretch[3], seg)
             self.stretch[3] = seg  # the motion that ends the run with an exact stop still belongs to it
             self._stretch_shifts.add(self._shift(seg))
             box = _hull_box(seg)
@@ -304,6 +308,7 @@ class CornerCheck:
         if st is not None and seg.start is st[3].end and seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
             # a straight motion from where the run's last motion ended (in the box already): its end alone
             _grow_point(st, seg.end)
+            self._stretch_tl(st[3], seg)
             st[3] = seg
             self._stretch_shifts.add(self._shift(seg))
             self._hull_add(seg, None, False)
@@ -314,12 +319,21 @@ class CornerCheck:
         elif st is None:
             self.stretch = [list(box[0]), list(box[1]), seg, seg]
             self._stretch_shifts = {self._shift(seg)}
+            self._stretch_tls = set()
             self._hull_add(seg, box, True)
         else:
             _grow(st, box)
+            self._stretch_tl(st[3], seg)
             st[3] = seg
             self._stretch_shifts.add(self._shift(seg))
             self._hull_add(seg, box, False)
+
+    def _stretch_tl(self, last: Segment, seg: Segment) -> None:
+        """``seg`` joins the run after ``last``: keep ``last``'s tool length when ``seg`` has another one (the run's
+        first and last motions' lengths are tested anyway)."""
+        tl = last.tool_length
+        if seg.tool_length is not tl and seg.tool_length != tl:
+            self._stretch_tls.add(tl)
 
     def _queue(self, a: Segment, b: Segment, mode: PathMode) -> None:
         """A corner to prove: screened with others first (:meth:`_flush`).
@@ -537,13 +551,14 @@ class CornerCheck:
         self.corners += 1
         lo, hi = tuple(st[0]), tuple(st[1])
         self._shifts = frozenset(self._stretch_shifts or {()})
-        tls = (st[2].tool_length, st[3].tool_length)
+        tls = (st[2].tool_length, st[3].tool_length, *self._stretch_tls)
+        self._stretch_tls = set()
         if not self._fits((lo, hi), tls, F0) and not self._hull_fits(tls):
             n = len(self.reasons)
             self._reason(st[2], st[3], self.mode_of(st[2].block), (lo, hi),
                          "a Fanuc control in cutting mode rounds corners by acc/dec after interpolation, which keeps "
                          "the path inside the convex hull of the motions between exact stops; give [machine] "
-                         "path_tolerance (the control's bound) or program G61/G09")
+                         "path_tolerance (the control's bound) or program G61/G09", tls)
             if len(self.reasons) > n:  # the run's every block: a violation inside it makes the reason redundant
                 self._blocks[-1] = range(st[2].block, st[3].block + 1)
 
@@ -566,7 +581,7 @@ class CornerCheck:
         if len(pts) > HULL_POINTS:
             self._stretch_pts = None
 
-    def _hull_fits(self, tls: tuple[Fraction, Fraction]) -> bool:
+    def _hull_fits(self, tls: tuple[Fraction, ...]) -> bool:
         """The run's convex hull (not its box) fits, on a two-axis machine (specs/path-modes.md §3)."""
         kept = self._stretch_pts
         self._stretch_pts = [] if len(self.axes) == 2 else None
@@ -734,7 +749,8 @@ class CornerCheck:
         return out
 
     # ------------------------------------------------------------------ reasons
-    def _reason(self, a: Segment, b: Segment, mode: PathMode, box: Box | None, why: str) -> None:
+    def _reason(self, a: Segment, b: Segment, mode: PathMode, box: Box | None, why: str,
+                tls: tuple[Fraction, ...] = ()) -> None:
         la, lb = a.line, b.line
         where = f"lines {la} and {lb}" if la != lb else f"line {la}"
         key = f"{la}:{lb}"
@@ -750,7 +766,7 @@ class CornerCheck:
             text = " may pass " + " ".join(
                 f"{n}{format_decimal(lo, 4)}" if lo == hi else f"{n}{format_decimal(lo, 4)}..{format_decimal(hi, 4)}"
                 for n, lo, hi in zip(self.axes, box[0], box[1]))
-            tls = (a.tool_length, b.tool_length)
+            tls = tls or (a.tool_length, b.tool_length)
             hit = [z for k, z in enumerate(self.zones) if not self._fits(box, tls, F0, zone=k)][:3]
             if hit:
                 zone = ", " + ", ".join(f"{'inside' if z.forbid else 'outside'} `{z.name}`" for z in hit)
@@ -989,16 +1005,23 @@ class CornerCheck:
         seg_b = seg_a if last == first else _row(chunk, last)
         # the convex-hull refinement keeps no points of column rows: the run is proved by its box alone
         self._stretch_pts = None
+        tls = chunk.tool_length
+        assert tls is not None and chunk.scale is not None  # a column chunk
         if self.stretch is None:
             self.stretch = [list(box[0]), list(box[1]), seg_a, seg_b]
             self._stretch_shifts = {self._shift(seg_a), self._shift(seg_b)}
+            self._stretch_tls = set()
         else:
             self._stretch_shifts |= {self._shift(seg_a), self._shift(seg_b)}
+            self._stretch_tl(self.stretch[3], seg_a)
             s_lo, s_hi = self.stretch[0], self.stretch[1]
             for k in range(len(s_lo)):
                 s_lo[k] = min(s_lo[k], box[0][k])
                 s_hi[k] = max(s_hi[k], box[1][k])
             self.stretch[3] = seg_b
+        if int(tls[body].min()) != int(tls[body].max()):  # a G43/G49 inside the group: its every length
+            den = 10**chunk.scale
+            self._stretch_tls |= {Fraction(int(v), den) for v in set(tls[body].tolist())}
         if dwell[end]:
             self._stop()
         elif not blend[last]:
