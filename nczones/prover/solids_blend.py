@@ -220,9 +220,12 @@ class SolidsCornerCheck:
             bound = before.bound()
             if bound is None:
                 self._corner(prev, seg, before)
-            elif bound > d:
-                d = bound
-                self.codes.setdefault(bound, set()).add(before.code)
+            else:
+                if bound > 0:
+                    self._tool_change_at(prev, seg, before)
+                if bound > d:
+                    d = bound
+                    self.codes.setdefault(bound, set()).add(before.code)
         mode = self.mode_of(seg.block)
         bound = mode.bound() if mode.blend else F0
         if bound is not None and bound > d:
@@ -231,6 +234,19 @@ class SolidsCornerCheck:
         if d > 0:
             self._checker(d).feed(seg)
         self.prev, self.prev_stop = seg, not mode.blend
+
+    def _tool_change_at(self, a: Segment, b: Segment, mode: PathMode) -> None:
+        """A corner rounded within a tolerance whose two motions carry different tools, tool lengths or frames
+        (a Fanuc ``G43 H`` inside a run in cutting mode; LinuxCNC stops there): the grown parts' checker proves
+        each motion with its own tool and length, while a position of the blend may be near either motion with
+        either's: not modelled, ``unknown`` (VF233)."""
+        if (a.tool_register, a.tool_length, a.frame) == (b.tool_register, b.tool_length, b.frame):
+            return
+        self._add(Reason(f"the tool solids may meet a fixture in {_corner_name(a, b)}: the control may round this "
+                         f"corner ({mode.code}) while the tool length or frame changes between its motions, which "
+                         "the proof of the tool solids on the rounded path does not model (G61, or G09 on the "
+                         "motion before the change, proves it)", a.span, a.block, TOLERANCE_CODE),
+                  a.block, b.block)
 
     def _dropped(self, prev: Segment | None, seg: Segment) -> None:
         """LinuxCNC drops a straight move shorter than 1e-8 of its units on every axis (``CART_FUZZ``; the point's
@@ -303,6 +319,11 @@ class SolidsCornerCheck:
         if not mode.blend:
             return  # no corner inside the chunk is rounded (_segment left prev_stop set)
         bound = mode.bound()
+        if bound is not None and chunk.tool_length is not None and \
+                not (np.asarray(chunk.tool_length)[moving] == np.asarray(chunk.tool_length)[moving[0]]).all():
+            for k in range(j0 + 1, n):  # the tool length changes inside the chunk: one motion at a time
+                self._segment(_row(chunk, k))
+            return
         if bound is not None:  # > 0: a blending mode with a tolerance
             self.codes.setdefault(bound, set()).add(mode.code)
             self._checker(bound).feed_chunk(chunk.rows(j0 + 1, n))

@@ -317,3 +317,25 @@ def test_a_move_linuxcnc_drops_at_the_corner_does_not_hide_the_corner(prefix):
     # both regions are slivers along the legs, and the tool clears the vise there
     kept = text.replace(f"X{cx + Decimal('0.0000002')}", f"X{cx + Decimal('0.001')}")
     assert verify_text(kept, _machine()).verdict.label == "safe"
+
+
+def test_a_tool_change_at_a_rounded_corner_is_not_proved():
+    """A turret index inside a run in cutting mode with path_tolerance (a second tool, the same assembly, Z
+    offset 140 against 150): the grown parts' checker proves each motion with its own tool, while the blend
+    near the corner may carry either tool near either motion.  Before, ``safe``; now ``unknown`` (VF233)
+    naming the corner; the same program without the index stays ``safe``."""
+    text = (ROOT / "specs/examples/programs/boring_bar_clears_chuck.nc").read_text(encoding="utf-8")
+    text = text.replace("X30. Z1.", "X40. Z1.")
+    lathe = (ROOT / "specs/machines/lathe_solids.toml").read_text(encoding="utf-8")
+    lathe = lathe.replace('1 = { X = "100", Z = "150", R = "0.4", tip = 2 }',
+                          '1 = { X = "100", Z = "150", R = "0.4", tip = 2 }\n'
+                          '2 = { X = "100", Z = "140", R = "0.4", tip = 2 }')
+    start = lathe.index("[[tools]]")
+    tool = lathe[start:lathe.index("[[fixtures]]")].replace("number = 1", "number = 2", 1)
+    lathe = lathe.replace("[[fixtures]]", tool + "[[fixtures]]", 1)
+    lathe = lathe.replace('path_mode = "G61"', 'path_mode = "G64"\npath_tolerance = "3"')
+    assert verify_text(text, parse_machine(lathe)).verdict.label == "safe"
+    r = verify_text(text.replace("Z-35.", "T0202 Z-35."), parse_machine(lathe))
+    assert r.verdict.label == "unknown" and _codes(r) == {"VF233"}, r.reasons
+    assert any("between line 6 and line 7" in x.message and "tool length or frame changes" in x.message
+               for x in r.reasons), r.reasons
