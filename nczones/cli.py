@@ -53,6 +53,33 @@ def sigterm_as_interrupt() -> Iterator[None]:
     finally:
         signal.signal(signal.SIGTERM, previous)
 
+class _Formatter(argparse.HelpFormatter):
+    """argparse's help formatter, as wide as ``shutil.get_terminal_size`` says (``$COLUMNS``, else the
+    terminal of standard output, else 80) less 2, without importing :mod:`shutil`: argparse makes a formatter
+    for every argument added, and its own default imports ``shutil`` and with it ``bz2``, ``lzma`` and ``zlib``
+    (about 1.5 ms of every start-up)."""
+
+    def __init__(self, prog: str, indent_increment: int = 2, max_help_position: int = 24,
+                 width: int | None = None) -> None:
+        super().__init__(prog, indent_increment, max_help_position, _columns() - 2 if width is None else width)
+
+
+def _columns() -> int:
+    """The terminal's width as ``shutil.get_terminal_size().columns`` gives it."""
+    import os
+
+    try:
+        columns = int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        columns = 0
+    if columns > 0:
+        return columns
+    try:
+        return os.get_terminal_size(sys.__stdout__.fileno()).columns or 80  # type: ignore[union-attr]
+    except (AttributeError, ValueError, OSError):
+        return 80
+
+
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     """The command line's parser: every subcommand in full, or only ``command`` in full.
 
@@ -67,11 +94,12 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="nczones",
         description="Prove that a CNC program keeps the machine inside its allowed area.",
+        formatter_class=_Formatter,
     )
     parser.add_argument("--version", action="version", version=f"nczones {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, spec in COMMANDS.items():
-        command_parser = sub.add_parser(name, help=spec.summary)
+        command_parser = sub.add_parser(name, help=spec.summary, formatter_class=_Formatter)
         if command is None or name == command:
             configurer(name)(command_parser)
     return parser

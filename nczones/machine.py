@@ -16,7 +16,6 @@ from __future__ import annotations
 import decimal
 import enum
 import functools
-import hashlib
 import json
 import os
 import re
@@ -30,6 +29,7 @@ from types import MappingProxyType
 from typing import Any
 
 from .blockskip import format_block_delete, parse_block_delete
+from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
@@ -725,20 +725,21 @@ def section_parser(name: str) -> Callable[[Any, Any, tuple[str, ...]], Any]:
 
 
 #: What a controller configuration looks like when it is given where a machine file belongs.  The same
-#: signs ``nczones.imports.detect_kind`` reads (that layer sits above this one, so they are repeated here).
+#: signs ``nczones.imports.detect_kind`` reads (that layer sits above this one, so they are repeated here);
+#: compiled at the first file that is not valid TOML (re.search), not at every start-up.
 _FOREIGN = (
-    (re.compile(r"^\s*\[(?:EMC|EMCMOT|EMCIO|TRAJ|KINS|RS274NGC|TASK|HAL|DISPLAY|FILTER|AXIS_[A-Z]|JOINT_\d+)\]\s*$",
-                re.M), "a LinuxCNC INI file"),
-    (re.compile(r"^\s*\$\d+\s*=", re.M), "a Grbl $$ settings dump"),
-    (re.compile(r"^\s*N\s*\d{1,5}\s*(?:Q\s*1\s*)?(?:[AS]\s*\d+\s*)?[PMI]\s*[-+.\d]", re.M | re.I),
+    (r"^\s*\[(?:EMC|EMCMOT|EMCIO|TRAJ|KINS|RS274NGC|TASK|HAL|DISPLAY|FILTER|AXIS_[A-Z]|JOINT_\d+)\]\s*$", re.M,
+     "a LinuxCNC INI file"),
+    (r"^\s*\$\d+\s*=", re.M, "a Grbl $$ settings dump"),
+    (r"^\s*N\s*\d{1,5}\s*(?:Q\s*1\s*)?(?:[AS]\s*\d+\s*)?[PMI]\s*[-+.\d]", re.M | re.I,
      "a Fanuc parameter listing"),
 )
 
 
 def _controller_configuration(text: str) -> str | None:
     """What controller configuration ``text`` (not valid TOML) looks like, or None."""
-    for pattern, label in _FOREIGN:
-        if pattern.search(text):
+    for pattern, flags, label in _FOREIGN:
+        if re.search(pattern, text, flags):
             return label
     return None
 
@@ -821,7 +822,7 @@ def load_machine(path: str | os.PathLike[str]) -> Machine:
             Diagnostic("ZN099", f"the machine file is not UTF-8 text ({exc.reason} at byte {exc.start})", file=str(path))
         ) from None
     text = text.replace("\r\n", "\n").replace("\r", "\n")  # universal newlines, as text files are read
-    return replace(parse_machine(text, str(path)), sha256=hashlib.sha256(data).hexdigest())
+    return replace(parse_machine(text, str(path)), sha256=sha256(data).hexdigest())
 
 
 def _linuxcnc_settings(rd: _Reader, data: Mapping[str, Any], dialect: Any) -> tuple[str, ...]:
