@@ -80,13 +80,15 @@ def _columns() -> int:
         return 80
 
 
-def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+def build_parser(command: str | None = None, *, alone: bool = False) -> argparse.ArgumentParser:
     """The command line's parser: every subcommand in full, or only ``command`` in full.
 
     Each row of :data:`~nczones.commands.COMMANDS` gets its parser, named and with its summary; the function
     the row names adds the arguments and the handler.  With ``command`` (the one about to run) only that
     command's module is imported; the others are listed by name and summary, which is all that
-    ``nczones --help`` and an unknown command's error message show.
+    ``nczones --help`` and an unknown command's error message show.  With ``alone`` the others get no parser
+    at all (for an argument list that starts with ``command``: then nothing of the top-level parser but the
+    command's own parser is shown; argparse's parsers cost about 0.3 ms each to make, issue 36).
 
     >>> sorted(build_parser("check-machine")._subparsers._group_actions[0].choices)[:3]
     ['check-machine', 'export-zones', 'fleet']
@@ -99,6 +101,8 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"nczones {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, spec in COMMANDS.items():
+        if alone and name != command:
+            continue
         command_parser = sub.add_parser(name, help=spec.summary, formatter_class=_Formatter)
         if command is None or name == command:
             configurer(name)(command_parser)
@@ -120,7 +124,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
     arguments = sys.argv[1:] if argv is None else list(argv)
     _one_blas_thread()
-    parser = build_parser(chosen_command(arguments))
+    command = chosen_command(arguments)
+    # `nczones COMMAND ...`: only that command's parser is made (what an error or --help shows is its own)
+    parser = build_parser(command, alone=bool(arguments) and arguments[0] == command and command in COMMANDS)
     args = parser.parse_args(arguments)
     with sigterm_as_interrupt():
         code = _run_handler(args)

@@ -7,6 +7,8 @@ interpreter, since this test process has imported everything already.
 
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 import subprocess
 import sys
@@ -151,6 +153,18 @@ def test_the_chosen_command_is_the_first_word_that_is_no_option(argv, command):
 def test_a_command_built_alone_parses_as_in_the_full_parser():
     argv = ["verify", "p.ngc", "--machine", "m.toml", "--margin", "0.5", "--engine", "z3"]
     assert vars(cli.build_parser("verify").parse_args(argv)) == vars(cli.build_parser().parse_args(argv))
+    # without the other commands' parsers (main's `nczones verify ...`): the same arguments, help and errors
+    alone = cli.build_parser("verify", alone=True)
+    assert vars(alone.parse_args(argv)) == vars(cli.build_parser().parse_args(argv))
+
+    def shown(parser, args):
+        out, err = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), pytest.raises(SystemExit) as stop:
+            parser.parse_args(args)
+        return stop.value.code, out.getvalue(), err.getvalue()
+
+    for args in (["verify", "--help"], ["verify"], ["verify", "p.ngc", "--margin"]):
+        assert shown(alone, args) == shown(cli.build_parser(), args), args
 
 
 def test_the_program_exits_with_the_status_main_returns(tmp_path):
