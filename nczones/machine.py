@@ -22,7 +22,7 @@ import re
 import shlex
 import tomllib
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from fractions import Fraction
 from pathlib import Path
 from types import MappingProxyType
@@ -32,6 +32,7 @@ from .blockskip import format_block_delete, parse_block_delete
 from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
+from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
 
 __all__ = [

@@ -91,12 +91,13 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Collection, Generator, Iterator
 from contextvars import ContextVar
-from dataclasses import dataclass, field
+from dataclasses import field
 from fractions import Fraction
 from pathlib import Path
 from typing import Any, BinaryIO
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .blocks import LANE_FULL, Block, ShapeBlock
 from .expr import (
     EvalError,

@@ -23,7 +23,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -32,6 +32,7 @@ from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import exact, format_exact, parse_decimal, parse_rational
 from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 from ..machine import Machine
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .result import ParamRange
 
