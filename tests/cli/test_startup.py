@@ -82,6 +82,30 @@ def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_pat
     assert loaded == {"ctypes"}
 
 
+def _run_program(tmp_path, lines: list[str]) -> dict:
+    """``nczones.cli.run`` (the console script) on a program: whether ctypes and numpy were loaded, the hook left."""
+    program = tmp_path / "run.ngc"
+    program.write_text("\n".join(lines) + "\n")
+    code = (f"import sys, json, atexit\nsys.argv = ['nczones', 'verify', {str(program)!r}, '--machine', {MILL!r}]\n"
+            "from nczones import cli\n"
+            "called = []\nkeep = cli._keep_freed_memory\ncli._keep_freed_memory = lambda: (called.append(1), keep())\n"
+            "atexit.register(lambda: print(json.dumps({'ctypes': 'ctypes' in sys.modules, 'numpy': 'numpy' in "
+            "sys.modules, 'called': len(called), 'hook': any(type(m).__name__ == '_BeforeNumpy' for m in "
+            "sys.meta_path)})))\ncli.run()")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout.splitlines()[-1])
+
+
+def test_the_allocator_is_tuned_when_numpy_loads_and_only_then(tmp_path):
+    # glibc is asked to keep freed memory (ctypes, mallopt) once numpy is imported: a small program never pays
+    assert _run_program(tmp_path, ["G90 G21", "G1 X10 Y10 F100", "M2"]) == {
+        "ctypes": False, "numpy": False, "called": 0, "hook": True}
+    lines = [f"G1 X{10 + k % 50}.{k % 10} Y{20 + k % 30}.5 F100" for k in range(600)]
+    assert _run_program(tmp_path, ["G90 G21", *lines, "M2"]) == {"ctypes": True, "numpy": True, "called": 1,
+                                                                 "hook": False}
+
+
 def test_a_large_program_takes_the_vectorized_path(tmp_path):
     from nczones.prover import FAST_PATH_MIN_LINES
 
