@@ -79,7 +79,9 @@ def _create_fn(name: str, args: list[str], body: list[str], *, globals: dict[str
 
             print(json.dumps(txt), file=sys.stderr)
         ns: dict[str, Any] = {}
-        exec(txt, globals, ns)  # noqa: S102  # what dataclasses does: the text of the class's own fields
+        # what dataclasses does (the text of the class's own fields), without this module's __future__ flags:
+        # its exec compiles under those of dataclasses.py, none (annotations stay evaluated)
+        exec(compile(txt, "<string>", "exec", dont_inherit=True), globals, ns)  # noqa: S102
         return ns["__create_fn__"](**locals)
     create = types.FunctionType(made.__code__, globals if globals is not None else {}, "__create_fn__")
     return create(**locals)

@@ -111,6 +111,17 @@ def test_a_class_made_through_the_table_behaves_as_the_standard_librarys(monkeyp
     assert ours.__init__.__qualname__ == f"{ours.__qualname__}.__init__"
 
 
+@pytest.mark.parametrize("options", [{}, {"frozen": True, "slots": True}, {"order": True}])
+def test_a_class_whose_text_is_not_in_the_table_is_the_standard_librarys(options):
+    # the fallback (a class added since the module was written): compiled as dataclasses compiles it, with
+    # the annotations evaluated although nczones.precompiled itself uses `from __future__ import annotations`
+    ours, theirs = _sample(precompiled.dataclass, **options), _sample(dataclasses.dataclass, **options)
+    assert ours.__init__.__code__.co_filename == "<string>"
+    assert ours.__init__.__annotations__ == theirs.__init__.__annotations__
+    assert _codes(ours.__init__.__code__) == _codes(theirs.__init__.__code__)
+    assert repr(ours(1)).replace("Sample", "S") == repr(theirs(1)).replace("Sample", "S")
+
+
 def test_the_classes_of_nczones_take_their_functions_from_the_generated_module():
     generated = functions.__file__
     checked = 0
