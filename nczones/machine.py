@@ -20,7 +20,6 @@ import json
 import os
 import re
 import shlex
-import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import field, replace
 from fractions import Fraction
@@ -32,6 +31,7 @@ from .blockskip import format_block_delete, parse_block_delete
 from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
+from .plain_toml import loads as loads_plain_toml
 from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
 
@@ -765,8 +765,23 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
     (('X', 'Y'), (Fraction(100, 1), Fraction(1, 10)))
     """
     rd = _Reader(path, text)
+    # the plain TOML machine files are written in, read without importing tomllib (nczones.plain_toml: the
+    # same value); anything else, and every error, is tomllib's
+    data = loads_plain_toml(text)
+    if data is None:
+        data = _tomllib_loads(rd, text, path)
+    machine = _build(rd, data)
+    if rd.failed or machine is None:
+        raise MachineFileError(rd.diagnostics)
+    return machine
+
+
+def _tomllib_loads(rd: _Reader, text: str, path: str) -> dict[str, Any]:
+    """``tomllib.loads(text, parse_float=decimal.Decimal)``, a ``ZN100`` error (raised) for a text it refuses."""
+    import tomllib
+
     try:
-        data = tomllib.loads(text, parse_float=decimal.Decimal)
+        return tomllib.loads(text, parse_float=decimal.Decimal)
     except tomllib.TOMLDecodeError as exc:
         m = re.search(r"line (\d+), column (\d+)", str(exc))
         span = None
@@ -786,10 +801,6 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
                        f"{shlex.quote(target)} to --machine")
         rd.report("ZN100", f"not valid TOML: {reason}", span)
         raise MachineFileError(rd.diagnostics) from None
-    machine = _build(rd, data)
-    if rd.failed or machine is None:
-        raise MachineFileError(rd.diagnostics)
-    return machine
 
 
 def load_machine(path: str | os.PathLike[str]) -> Machine:

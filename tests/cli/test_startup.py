@@ -57,7 +57,9 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "nczones.prover.blend", "nczones.prover.hull2d", "socket", "nczones.geometry.nurbs",
                           # issue 36: OpenSSL (hashlib: the digests are CPython's own, nczones.digest), ctypes (the
                           # x87 functions load at the first SIN/COS/TAN), shutil (argparse's terminal width)
-                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids")
+                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids",
+                          # the machine file in the plain TOML nczones.plain_toml reads
+                          "tomllib")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
