@@ -84,6 +84,20 @@ def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_pat
     assert loaded == {"ctypes"}
 
 
+def test_a_small_verify_loads_no_pathlib_nor_tomllib(tmp_path):
+    # pathlib (with urllib.parse and ipaddress, ~3 ms) and tomllib (~7 ms): a development environment's site
+    # imports pathlib for its editable-install hook, so the interpreter starts without site here, as an
+    # installed wheel's would not need it
+    program = tmp_path / "small.ngc"
+    program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
+    code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
+            f"assert main(['verify', {str(program)!r}, '--machine', {MILL!r}]) == 0\n"
+            "print(sorted(m for m in ('pathlib', 'urllib.parse', 'ipaddress', 'tomllib') if m in sys.modules))")
+    r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[]"
+
+
 def _run_program(tmp_path, lines: list[str]) -> dict:
     """``nczones.cli.run`` (the console script) on a program: whether ctypes and numpy were loaded, the hook left."""
     program = tmp_path / "run.ngc"
