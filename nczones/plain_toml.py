@@ -66,7 +66,8 @@ def loads(text: str) -> dict[str, Any] | None:
                 _pair(stripped, table)
     except _Outside:
         return None
-    return _plain(root)
+    plain: dict[str, Any] = _plain(root)
+    return plain
 
 
 def _plain(value: Any) -> Any:
@@ -117,7 +118,7 @@ def _pair(line: str, table: dict[str, Any]) -> None:
     table[key] = value
 
 
-class _Inline(dict):  # type: ignore[type-arg]
+class _Inline(dict):
     """An inline table while it is read (a header may not reach into one)."""
 
 
