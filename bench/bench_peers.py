@@ -28,6 +28,11 @@ load on a shared machine only ever adds time):
 The package's bytecode is compiled once before any timing (an installed package has it; without it,
 every process compiles the modules again where ``PYTHONDONTWRITEBYTECODE`` is set).
 
+``--as-installed`` runs the nczones children as from an installed wheel (``bench_startup.installed_like``: a
+throw-away virtual environment whose ``.pth`` names this checkout and the project's libraries as plain
+paths), without the editable install's import hook and ``.pth`` files that a development environment's
+``site`` loads at every start (about 14 ms of CPU per process on the machine of specs/performance.md).
+
 Ratios are taken within the same run: ``verify / rs274`` where rs274 ran,
 and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
 ``--small``), an expression on every line (``--small``), R-format arcs (``--small`` lines of
@@ -190,6 +195,8 @@ def main() -> None:
     ap.add_argument("--only", help="only the rows whose name holds this text (e.g. 'R-format')")
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs of every command per row; the least CPU time is printed (the machine is shared)")
+    ap.add_argument("--as-installed", action="store_true",
+                    help="run nczones as from an installed wheel (no editable install's import hook)")
     a = ap.parse_args()
     REPEAT[0] = max(1, a.repeat)
     print(f"machine: {machine_description()}")
@@ -202,7 +209,15 @@ def main() -> None:
     subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "nczones")], check=True,
                    stdout=subprocess.DEVNULL)
     print("bytecode of nczones compiled before timing (as an installed package has it)")
-    nczones = [sys.executable, "-m", "nczones"]
+    python = sys.executable
+    scratch = tempfile.TemporaryDirectory()
+    if a.as_installed:
+        from bench_startup import installed_like
+
+        python = installed_like(Path(scratch.name))
+        env.pop("PYTHONPATH", None)
+        print("nczones runs as from an installed wheel (a virtual environment without the editable install's hook)")
+    nczones = [python, "-m", "nczones"]
     print(f"CPU seconds per process, the least of {REPEAT[0]} run(s); ratio = nczones verify / peer, measured in "
           "this run")
     print(f"{'program':58} {'regex':>7} {'rs274':>7} {'interp':>7} {'verify':>7}  exit  rs274 exit  verify/rs274"
@@ -218,7 +233,7 @@ def main() -> None:
             peer, peer_code = None, None
             if rs274 is not None and dialect == "linuxcnc":
                 peer, peer_code = cpu_of([rs274, "-g", str(path), os.devnull], a.timeout)
-            interp, _ = cpu_of([sys.executable, "-c", INTERPRET, str(path), str(machine), tol], a.timeout, env)
+            interp, _ = cpu_of([python, "-c", INTERPRET, str(path), str(machine), tol], a.timeout, env)
             # --max-iterations: a loop row of more than 100,000 iterations is interpreted to its end (the default
             # bound would stop it early as unknown)
             cmd = [*nczones, "verify", str(path), "--machine", str(machine), "--format", "json",

@@ -53,13 +53,42 @@ def sigterm_as_interrupt() -> Iterator[None]:
     finally:
         signal.signal(signal.SIGTERM, previous)
 
-def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+class _Formatter(argparse.HelpFormatter):
+    """argparse's help formatter, as wide as ``shutil.get_terminal_size`` says (``$COLUMNS``, else the
+    terminal of standard output, else 80) less 2, without importing :mod:`shutil`: argparse makes a formatter
+    for every argument added, and its own default imports ``shutil`` and with it ``bz2``, ``lzma`` and ``zlib``
+    (about 1.5 ms of every start-up)."""
+
+    def __init__(self, prog: str, indent_increment: int = 2, max_help_position: int = 24,
+                 width: int | None = None) -> None:
+        super().__init__(prog, indent_increment, max_help_position, _columns() - 2 if width is None else width)
+
+
+def _columns() -> int:
+    """The terminal's width as ``shutil.get_terminal_size().columns`` gives it."""
+    import os
+
+    try:
+        columns = int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        columns = 0
+    if columns > 0:
+        return columns
+    try:
+        return os.get_terminal_size(sys.__stdout__.fileno()).columns or 80  # type: ignore[union-attr]
+    except (AttributeError, ValueError, OSError):
+        return 80
+
+
+def build_parser(command: str | None = None, *, alone: bool = False) -> argparse.ArgumentParser:
     """The command line's parser: every subcommand in full, or only ``command`` in full.
 
     Each row of :data:`~nczones.commands.COMMANDS` gets its parser, named and with its summary; the function
     the row names adds the arguments and the handler.  With ``command`` (the one about to run) only that
     command's module is imported; the others are listed by name and summary, which is all that
-    ``nczones --help`` and an unknown command's error message show.
+    ``nczones --help`` and an unknown command's error message show.  With ``alone`` the others get no parser
+    at all (for an argument list that starts with ``command``: then nothing of the top-level parser but the
+    command's own parser is shown; argparse's parsers cost about 0.3 ms each to make, issue 36).
 
     >>> sorted(build_parser("check-machine")._subparsers._group_actions[0].choices)[:3]
     ['check-machine', 'export-zones', 'fleet']
@@ -67,11 +96,14 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="nczones",
         description="Prove that a CNC program keeps the machine inside its allowed area.",
+        formatter_class=_Formatter,
     )
     parser.add_argument("--version", action="version", version=f"nczones {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, spec in COMMANDS.items():
-        command_parser = sub.add_parser(name, help=spec.summary)
+        if alone and name != command:
+            continue
+        command_parser = sub.add_parser(name, help=spec.summary, formatter_class=_Formatter)
         if command is None or name == command:
             configurer(name)(command_parser)
     return parser
@@ -92,7 +124,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit status."""
     arguments = sys.argv[1:] if argv is None else list(argv)
     _one_blas_thread()
-    parser = build_parser(chosen_command(arguments))
+    command = chosen_command(arguments)
+    # `nczones COMMAND ...`: only that command's parser is made (what an error or --help shows is its own)
+    parser = build_parser(command, alone=bool(arguments) and arguments[0] == command and command in COMMANDS)
     args = parser.parse_args(arguments)
     with sigterm_as_interrupt():
         code = _run_handler(args)
@@ -120,12 +154,26 @@ def run() -> NoReturn:
     Python's finalization would traverse every object of numpy and of the run (about 15 ms of CPU after a
     100,000-line verify).  Exit handlers and the flushing of the streams run as usual.
     """
-    _keep_freed_memory()
+    sys.meta_path.insert(0, _BeforeNumpy())  # glibc keeps freed memory once numpy loads (_keep_freed_memory)
     code = main()
     import gc
 
     gc.freeze()
     sys.exit(code)
+
+
+class _BeforeNumpy:
+    """An import hook that calls :func:`_keep_freed_memory` when numpy is about to be imported, then leaves.
+
+    Only the vectorized lanes (numpy) allocate and free the arrays of megabytes it is for; a run without numpy
+    does not import :mod:`ctypes` to ask (about 2 ms of its start-up, issue 36).  It finds no module itself.
+    """
+
+    def find_spec(self, name: str, path: Any = None, target: Any = None) -> None:
+        if name == "numpy":
+            if self in sys.meta_path:
+                sys.meta_path.remove(self)
+            _keep_freed_memory()
 
 
 def _keep_freed_memory() -> None:

@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import enum
 from collections.abc import Iterable
-from dataclasses import dataclass
+
+from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = [
     "close_matches",

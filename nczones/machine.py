@@ -16,22 +16,22 @@ from __future__ import annotations
 import decimal
 import enum
 import functools
-import hashlib
 import json
 import os
 import re
 import shlex
-import tomllib
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from fractions import Fraction
-from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
 from .blockskip import format_block_delete, parse_block_delete
+from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
+from .plain_toml import loads as loads_plain_toml
+from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
 
 __all__ = [
@@ -725,20 +725,21 @@ def section_parser(name: str) -> Callable[[Any, Any, tuple[str, ...]], Any]:
 
 
 #: What a controller configuration looks like when it is given where a machine file belongs.  The same
-#: signs ``nczones.imports.detect_kind`` reads (that layer sits above this one, so they are repeated here).
+#: signs ``nczones.imports.detect_kind`` reads (that layer sits above this one, so they are repeated here);
+#: compiled at the first file that is not valid TOML (re.search), not at every start-up.
 _FOREIGN = (
-    (re.compile(r"^\s*\[(?:EMC|EMCMOT|EMCIO|TRAJ|KINS|RS274NGC|TASK|HAL|DISPLAY|FILTER|AXIS_[A-Z]|JOINT_\d+)\]\s*$",
-                re.M), "a LinuxCNC INI file"),
-    (re.compile(r"^\s*\$\d+\s*=", re.M), "a Grbl $$ settings dump"),
-    (re.compile(r"^\s*N\s*\d{1,5}\s*(?:Q\s*1\s*)?(?:[AS]\s*\d+\s*)?[PMI]\s*[-+.\d]", re.M | re.I),
+    (r"^\s*\[(?:EMC|EMCMOT|EMCIO|TRAJ|KINS|RS274NGC|TASK|HAL|DISPLAY|FILTER|AXIS_[A-Z]|JOINT_\d+)\]\s*$", re.M,
+     "a LinuxCNC INI file"),
+    (r"^\s*\$\d+\s*=", re.M, "a Grbl $$ settings dump"),
+    (r"^\s*N\s*\d{1,5}\s*(?:Q\s*1\s*)?(?:[AS]\s*\d+\s*)?[PMI]\s*[-+.\d]", re.M | re.I,
      "a Fanuc parameter listing"),
 )
 
 
 def _controller_configuration(text: str) -> str | None:
     """What controller configuration ``text`` (not valid TOML) looks like, or None."""
-    for pattern, label in _FOREIGN:
-        if pattern.search(text):
+    for pattern, flags, label in _FOREIGN:
+        if re.search(pattern, text, flags):
             return label
     return None
 
@@ -763,8 +764,23 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
     (('X', 'Y'), (Fraction(100, 1), Fraction(1, 10)))
     """
     rd = _Reader(path, text)
+    # the plain TOML machine files are written in, read without importing tomllib (nczones.plain_toml: the
+    # same value); anything else, and every error, is tomllib's
+    data = loads_plain_toml(text)
+    if data is None:
+        data = _tomllib_loads(rd, text, path)
+    machine = _build(rd, data)
+    if rd.failed or machine is None:
+        raise MachineFileError(rd.diagnostics)
+    return machine
+
+
+def _tomllib_loads(rd: _Reader, text: str, path: str) -> dict[str, Any]:
+    """``tomllib.loads(text, parse_float=decimal.Decimal)``, a ``ZN100`` error (raised) for a text it refuses."""
+    import tomllib
+
     try:
-        data = tomllib.loads(text, parse_float=decimal.Decimal)
+        return tomllib.loads(text, parse_float=decimal.Decimal)
     except tomllib.TOMLDecodeError as exc:
         m = re.search(r"line (\d+), column (\d+)", str(exc))
         span = None
@@ -784,10 +800,6 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
                        f"{shlex.quote(target)} to --machine")
         rd.report("ZN100", f"not valid TOML: {reason}", span)
         raise MachineFileError(rd.diagnostics) from None
-    machine = _build(rd, data)
-    if rd.failed or machine is None:
-        raise MachineFileError(rd.diagnostics)
-    return machine
 
 
 def load_machine(path: str | os.PathLike[str]) -> Machine:
@@ -807,9 +819,9 @@ def load_machine(path: str | os.PathLike[str]) -> Machine:
     MachineFileError
         With every problem found (codes ``ZN1xx``, see ``specs/machine-file.md``).
     """
-    p = Path(path)
     try:
-        data = p.read_bytes()
+        with open(path, "rb") as fh:  # not pathlib: ~3 ms of start-up with urllib.parse and ipaddress
+            data = fh.read()
     except OSError as exc:
         raise MachineFileError(
             Diagnostic("ZN099", f"cannot read the machine file: {exc.strerror or exc}", file=str(path))
@@ -821,7 +833,7 @@ def load_machine(path: str | os.PathLike[str]) -> Machine:
             Diagnostic("ZN099", f"the machine file is not UTF-8 text ({exc.reason} at byte {exc.start})", file=str(path))
         ) from None
     text = text.replace("\r\n", "\n").replace("\r", "\n")  # universal newlines, as text files are read
-    return replace(parse_machine(text, str(path)), sha256=hashlib.sha256(data).hexdigest())
+    return replace(parse_machine(text, str(path)), sha256=sha256(data).hexdigest())
 
 
 def _linuxcnc_settings(rd: _Reader, data: Mapping[str, Any], dialect: Any) -> tuple[str, ...]:

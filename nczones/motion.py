@@ -35,11 +35,12 @@ import dataclasses
 import enum
 import math
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import field
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from .errors import InvalidArgument, SourceSpan
+from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to the code that builds them
     import numpy as np

@@ -20,9 +20,10 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from types import MappingProxyType
 from typing import TYPE_CHECKING
+
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 if TYPE_CHECKING:
     import argparse

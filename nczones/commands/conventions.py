@@ -19,7 +19,6 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-import traceback
 from collections.abc import Mapping
 from fractions import Fraction
 from types import MappingProxyType
@@ -166,6 +165,8 @@ def report_failure(exc: BaseException, command: str = "") -> int:
             " standard output" if isinstance(exc, BrokenPipeError) else "")
         print(f"nczones: error: cannot read or write{where}: {exc.strerror or exc}", file=sys.stderr)
         return EXIT_INPUT
+    import traceback  # a bug's report only: not imported at every start
+
     traceback.print_exception(exc)
     print("nczones: internal error (the traceback above is a bug in nczones; please report it)", file=sys.stderr)
     return EXIT_INTERNAL

@@ -32,10 +32,10 @@ limits (None: unbounded).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import InvalidArgument
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = [
     "GRID_BITS",

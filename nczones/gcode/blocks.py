@@ -10,10 +10,10 @@ value already evaluated to an exact rational.  The interpreter
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import SourceSpan
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = ["Word", "Block", "ShapeBlock", "LANE_FULL"]
 

@@ -20,8 +20,9 @@ G codes are keyed as in the interpreter: ``10 * number`` (G59.1 -> 591); M codes
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from fractions import Fraction
+
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = ["CLAIMS", "LANES", "Code", "LINUXCNC_G", "LINUXCNC_M", "FANUC_G", "gname", "g_key",
            "claimed", "decline_reason", "modal_groups", "LANE_INTERPRETER", "LANE_PLAIN", "LANE_FASTPATH",

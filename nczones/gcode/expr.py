@@ -64,10 +64,8 @@ TOLERANCE_EQUAL = 0.0001
 
 #: SIN, COS and TAN of degrees as LinuxCNC computes them: ``sin((x * M_PIl) / 180.0)`` in x87 long double, the
 #: result rounded to double (:mod:`nczones.gcode.linuxcnc.x87`); the double formula where the host has no 80-bit ``sinl``.
-TRIG_DEGREES: dict[str, Callable[[float], float]] = (
-    {"sin": x87.sin_degrees, "cos": x87.cos_degrees, "tan": x87.tan_degrees} if x87.AVAILABLE else
-    {"sin": lambda d: math.sin((d * math.pi) / 180.0), "cos": lambda d: math.cos((d * math.pi) / 180.0),
-     "tan": lambda d: math.tan((d * math.pi) / 180.0)})
+TRIG_DEGREES: dict[str, Callable[[float], float]] = {
+    "sin": x87.sin_degrees, "cos": x87.cos_degrees, "tan": x87.tan_degrees}
 
 
 def trig_degrees(name: str, d: float) -> float:
@@ -81,7 +79,7 @@ def trig_degrees(name: str, d: float) -> float:
 
 def to_degrees(r: float) -> float:
     """``(r * 180.0) / M_PIl`` rounded to double: LinuxCNC's radians to degrees after ASIN, ACOS and ATAN."""
-    if not x87.AVAILABLE:
+    if not x87.available():
         return (r * 180.0) / math.pi
     return x87.degrees_from_radians(r)
 

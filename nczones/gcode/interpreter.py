@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -51,6 +51,7 @@ from ..motion import (
     Segment,
     SegmentKind,
 )
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from . import (  # defined in the package, which loads this module lazily
     DEFAULT_ARC_TOLERANCE,
     DEFAULT_CHUNK_SIZE,

@@ -32,11 +32,11 @@ True
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, NoReturn
 
 from ..errors import Diagnostic, GcodeError, SourceSpan
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .lexer import decimal_value
 
 __all__ = [

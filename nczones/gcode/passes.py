@@ -11,7 +11,8 @@ it into ``unknown`` with its code (the cycle's name for the count, ``VF203`` for
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = ["PassBound", "PassGuard"]
 

@@ -91,12 +91,12 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Collection, Generator, Iterator
 from contextvars import ContextVar
-from dataclasses import dataclass, field
+from dataclasses import field
 from fractions import Fraction
-from pathlib import Path
-from typing import Any, BinaryIO
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .blocks import LANE_FULL, Block, ShapeBlock
 from .expr import (
     EvalError,
@@ -123,6 +123,9 @@ from .lexer import (
 )
 from .parser import OWord, ParsedLine, parse_line
 from .shapes import LAYOUT, RUNS, CompiledLine, compiled_line, line_shaped, parse_line_shaped
+
+if TYPE_CHECKING:  # pathlib (and urllib.parse, ipaddress) is imported where a library is searched
+    from pathlib import Path
 
 __all__ = [
     "iter_blocks",
@@ -345,7 +348,12 @@ class Runner:
                  files: dict[str, dict] | None = None):
         #: folders searched for ``name.ngc`` when ``o<name> call`` names a subroutine the file does not define
         #: (LinuxCNC's [RS274NGC] SUBROUTINE_PATH, in order)
-        self.library = tuple(Path(d) for d in library)
+        if library:
+            from pathlib import Path
+
+            self.library = tuple(Path(d) for d in library)
+        else:
+            self.library = ()
         #: path of a subroutine file -> its reading state (``_PER_FILE``), kept between calls (``files``: the
         #: caller's dict, which then shows the files read)
         self.files: dict[str, dict] = {} if files is None else files
@@ -1399,6 +1407,8 @@ def read_program(
     [Fraction(1, 1), Fraction(100, 1)]
     >>> os.unlink(f.name)
     """
+    from pathlib import Path
+
     path = Path(path)
 
     def gen() -> Iterator[Block]:

@@ -35,13 +35,13 @@ nczones.errors.GcodeError: <program>: error[GC109]: empty program: the text hold
 from __future__ import annotations
 
 import codecs
-import hashlib
 import os
 import sys
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import BinaryIO
 
+from .. import digest as hashlib  # hashlib.sha256 without loading OpenSSL (start-up)
 from ..errors import EXCERPT_CHARS, Diagnostic, GcodeError, InvalidArgument, SourceSpan
 
 __all__ = [

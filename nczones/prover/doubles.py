@@ -17,7 +17,7 @@ import time
 from fractions import Fraction
 from typing import Any
 
-from ..machine import Machine
+from ..machine import Machine, declares_solids
 from ..motion import DROPPED_BELOW
 from .exact import box_fits
 from .result import Result, Verdict
@@ -111,9 +111,8 @@ class WindowProof:
         self.windows = 0
 
     def __call__(self, path: Any) -> bool:
-        from ..solids import machine_solids
-
-        if machine_solids(self.machine) is not None:
+        # declares_solids is machine_solids(...) is not None without importing nczones.solids (start-up)
+        if declares_solids(self.machine):
             return False  # the boxes are about the controlled point; tool solids need the full path
         if self.machine.path_mode == "G64" and not self.machine.path_tolerance and may_be_zero(path, path.motions):
             # the window ends on a motion that may have length 0: its corner joins the motion before it,
@@ -145,10 +144,9 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
     its boxes do not prove the program (the caller then runs the full path).  ``started`` is when the pass
     began (:func:`time.perf_counter`), for the timings; ``windows`` the proof of the windows the pass handed
     over before ``path``, its last."""
-    from ..solids import machine_solids
     from .smt import z3_version
 
-    if machine_solids(machine) is not None:
+    if declares_solids(machine):
         return None  # the boxes are about the controlled point; tool solids need the full path
     if started is None:
         started = time.perf_counter()

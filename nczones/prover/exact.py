@@ -25,11 +25,11 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 from ..exact import max_bound, min_bound
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from ..zones import AllowedSet, BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
 

@@ -23,7 +23,6 @@ enclosures as ``(lo, hi)`` pairs) in rational intervals that contain them.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from fractions import Fraction
 
 from ..errors import InvalidArgument
@@ -32,6 +31,7 @@ from ..exact import round_down as exact_round_down
 from ..exact import round_up as exact_round_up
 from ..machine import Machine, RapidMode
 from ..motion import PLANE_AXES, Segment, SegmentKind
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = [
     "LinePiece",

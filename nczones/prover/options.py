@@ -23,15 +23,15 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from fractions import Fraction
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import exact, format_exact, parse_decimal, parse_rational
 from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 from ..machine import Machine
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .result import ParamRange
 
@@ -222,6 +222,8 @@ class VerifyOptions:
         if s.get("dialect") in ("linuxcnc", "fanuc"):
             kw["dialect"] = s["dialect"]
         if isinstance(s.get("library"), str):
+            from pathlib import Path  # here, not at start-up
+
             kw["library"] = s["library"] if root is None else str(Path(root) / s["library"])
         for name in ("budget_s", "budget"):
             if name in s and (s[name] is None or isinstance(s[name], (int, float))) and not isinstance(s[name], bool):

@@ -40,11 +40,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
 from .exact import reachable

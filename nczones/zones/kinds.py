@@ -22,10 +22,10 @@ lists the tables where a kind rides the fallback (the test keeps that list expli
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any, Generic, TypeVar
 
 from ..errors import InternalError
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .model import ZONE_KINDS
 
 __all__ = ["ZONE_KINDS", "KindTable", "TABLES", "Coverage", "coverage"]

@@ -19,11 +19,11 @@ from __future__ import annotations
 import bisect
 import enum
 from collections.abc import Mapping
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import ClassVar, Union
 
 from ..exact import max_bound, min_bound
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = [
     "ZonePoint",

@@ -7,6 +7,8 @@ interpreter, since this test process has imported everything already.
 
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 import subprocess
 import sys
@@ -52,7 +54,12 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "nczones.fleet", "nczones.imports", "nczones.gcode.fastpath", "nczones.prover.screen",
                           "nczones.prover.polygon", "nczones.plans.homing", "nczones.plans.recovery", "nczones.solids",
                           "nczones.gcode.linuxcnc.lathe", "nczones.geometry.cylinder", "nczones.gcode.linuxcnc.g7x",
-                          "nczones.prover.blend", "nczones.prover.hull2d", "socket", "nczones.geometry.nurbs")
+                          "nczones.prover.blend", "nczones.prover.hull2d", "socket", "nczones.geometry.nurbs",
+                          # issue 36: OpenSSL (hashlib: the digests are CPython's own, nczones.digest), ctypes (the
+                          # x87 functions load at the first SIN/COS/TAN), shutil (argparse's terminal width)
+                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids",
+                          # the machine file in the plain TOML nczones.plain_toml reads
+                          "tomllib")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -67,6 +74,52 @@ def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
 
 def test_a_small_verify_loads_neither_numpy_nor_the_solver(tmp_path):
     assert loaded_by_verify(tmp_path, ["G90 G21", "G1 X10 Y10 F100", "M2"]) == set()
+
+
+def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_path):
+    # the double pass (a LinuxCNC program with '#') asks whether the machine declares solids without
+    # importing nczones.solids; ctypes waits for the first SIN, COS or TAN
+    assert loaded_by_verify(tmp_path, ["G90 G21 F100", "#1 = 2.5", "G1 X[#1 * 2] Y[#1 + 1]", "M2"]) == set()
+    loaded = loaded_by_verify(tmp_path, ["G90 G21 F100", "#1 = 30", "G1 X[10 * SIN[#1]] Y[10 * COS[#1]]", "M2"])
+    assert loaded == {"ctypes"}
+
+
+def test_a_small_verify_loads_no_pathlib_nor_tomllib(tmp_path):
+    # pathlib (with urllib.parse and ipaddress, ~3 ms) and tomllib (~7 ms): a development environment's site
+    # imports pathlib for its editable-install hook, so the interpreter starts without site here, as an
+    # installed wheel's would not need it
+    program = tmp_path / "small.ngc"
+    program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
+    code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
+            f"assert main(['verify', {str(program)!r}, '--machine', {MILL!r}]) == 0\n"
+            "print(sorted(m for m in ('pathlib', 'urllib.parse', 'ipaddress', 'tomllib') if m in sys.modules))")
+    r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[]"
+
+
+def _run_program(tmp_path, lines: list[str]) -> dict:
+    """``nczones.cli.run`` (the console script) on a program: whether ctypes and numpy were loaded, the hook left."""
+    program = tmp_path / "run.ngc"
+    program.write_text("\n".join(lines) + "\n")
+    code = (f"import sys, json, atexit\nsys.argv = ['nczones', 'verify', {str(program)!r}, '--machine', {MILL!r}]\n"
+            "from nczones import cli\n"
+            "called = []\nkeep = cli._keep_freed_memory\ncli._keep_freed_memory = lambda: (called.append(1), keep())\n"
+            "atexit.register(lambda: print(json.dumps({'ctypes': 'ctypes' in sys.modules, 'numpy': 'numpy' in "
+            "sys.modules, 'called': len(called), 'hook': any(type(m).__name__ == '_BeforeNumpy' for m in "
+            "sys.meta_path)})))\ncli.run()")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout.splitlines()[-1])
+
+
+def test_the_allocator_is_tuned_when_numpy_loads_and_only_then(tmp_path):
+    # glibc is asked to keep freed memory (ctypes, mallopt) once numpy is imported: a small program never pays
+    assert _run_program(tmp_path, ["G90 G21", "G1 X10 Y10 F100", "M2"]) == {
+        "ctypes": False, "numpy": False, "called": 0, "hook": True}
+    lines = [f"G1 X{10 + k % 50}.{k % 10} Y{20 + k % 30}.5 F100" for k in range(600)]
+    assert _run_program(tmp_path, ["G90 G21", *lines, "M2"]) == {"ctypes": True, "numpy": True, "called": 1,
+                                                                 "hook": False}
 
 
 def test_a_large_program_takes_the_vectorized_path(tmp_path):
@@ -140,6 +193,18 @@ def test_the_chosen_command_is_the_first_word_that_is_no_option(argv, command):
 def test_a_command_built_alone_parses_as_in_the_full_parser():
     argv = ["verify", "p.ngc", "--machine", "m.toml", "--margin", "0.5", "--engine", "z3"]
     assert vars(cli.build_parser("verify").parse_args(argv)) == vars(cli.build_parser().parse_args(argv))
+    # without the other commands' parsers (main's `nczones verify ...`): the same arguments, help and errors
+    alone = cli.build_parser("verify", alone=True)
+    assert vars(alone.parse_args(argv)) == vars(cli.build_parser().parse_args(argv))
+
+    def shown(parser, args):
+        out, err = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), pytest.raises(SystemExit) as stop:
+            parser.parse_args(args)
+        return stop.value.code, out.getvalue(), err.getvalue()
+
+    for args in (["verify", "--help"], ["verify"], ["verify", "p.ngc", "--margin"]):
+        assert shown(alone, args) == shown(cli.build_parser(), args), args
 
 
 def test_the_program_exits_with_the_status_main_returns(tmp_path):

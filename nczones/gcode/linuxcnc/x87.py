@@ -10,22 +10,21 @@ program with trigonometry loads none.
 
 Invariant (``tests/gcode/test_x87.py``): on x86-64 every function returns the double numpy's 80-bit
 ``longdouble`` gives for the same formula, and the values ``rs274`` computes.  Where the host has no 80-bit
-``sinl`` (another architecture), :data:`AVAILABLE` is False and the callers fall back to the double formulas.
+``sinl`` (another architecture), :func:`available` is False and SIN, COS and TAN are the double formulas.
 
->>> sin_degrees(30.0) if AVAILABLE else 0.5  # the double formula gives 0.49999999999999994
+>>> sin_degrees(30.0) if available() else 0.5  # the double formula gives 0.49999999999999994
 0.5
 """
 
 from __future__ import annotations
 
-import ctypes
 import math
 import os
 import struct
 from fractions import Fraction
 from typing import Any
 
-__all__ = ["AVAILABLE", "sin_degrees", "cos_degrees", "tan_degrees", "degrees_from_radians"]
+__all__ = ["available", "sin_degrees", "cos_degrees", "tan_degrees", "degrees_from_radians"]
 
 #: ``M_PIl``: pi rounded to a 64-bit significand, ``PI64 * 2**-62``.
 PI64 = 0xC90FDAA22168C235
@@ -35,6 +34,8 @@ _UNPACK = struct.Struct("<QH")
 
 
 def _libm() -> tuple | None:
+    import ctypes
+
     machine = os.uname().machine.lower() if hasattr(os, "uname") else ""
     if machine not in ("x86_64", "amd64") or ctypes.sizeof(ctypes.c_longdouble) != 16:
         return None
@@ -65,10 +66,31 @@ def _libm() -> tuple | None:
     return LongDouble, *out
 
 
-_LIB = _libm()
-#: True where the C library's 80-bit ``sinl``/``cosl``/``tanl`` can be called (x86-64).
-AVAILABLE = _LIB is not None
-_LONG_DOUBLE, _SINL, _COSL, _TANL = _LIB if _LIB is not None else (None, None, None, None)
+#: ``[LongDouble, sinl, cosl, tanl]``, loaded at the first call that needs them (importing :mod:`ctypes`
+#: costs about 2 ms of every start-up, and most programs compute no SIN, COS or TAN); ``[None]`` where the host
+#: has no 80-bit ``sinl`` (then SIN, COS and TAN are the double formulas).
+_LIB: list[Any] = []
+
+
+def _library() -> list[Any]:
+    if not _LIB:
+        _LIB.extend(_libm() or (None,))
+    return _LIB
+
+
+def available() -> bool:
+    """Can the C library's 80-bit ``sinl``/``cosl``/``tanl`` be called here (x86-64)?  Loads them."""
+    return _library()[0] is not None
+
+
+def __getattr__(name: str) -> Any:
+    if name == "AVAILABLE":  # True where the C library's 80-bit sinl/cosl/tanl can be called (x86-64)
+        return available()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+#: SIN, COS and TAN as double formulas, where the host has no 80-bit ``sinl`` (not LinuxCNC's rounding).
+_DOUBLE_FORMULAS = (math.sin, math.cos, math.tan)
 
 
 def _round64(n: int, shift: int, sticky: bool) -> tuple[int, int]:
@@ -134,17 +156,22 @@ def _to_double(significand: int, exponent: int) -> float:
 _last: list = [None, None]
 
 
-def _call(fn: Any, x: float) -> float:
-    """``fn`` (``sinl``, ``cosl``, ``tanl``) of ``(x * M_PIl) / 180.0``, rounded to double; ``x`` finite, not 0."""
+def _call(which: int, x: float) -> float:
+    """``sinl``, ``cosl`` or ``tanl`` (``which`` 1, 2, 3) of ``(x * M_PIl) / 180.0``, rounded to double; ``x``
+    finite, not 0.  Where the host has no 80-bit functions: the double formula ``sin((x * pi) / 180.0)``."""
+    lib = _LIB or _library()
+    long_double = lib[0]
+    if long_double is None:
+        return float(_DOUBLE_FORMULAS[which - 1]((x * math.pi) / 180.0))
     last = _last
     if x == last[0]:
         arg = last[1]
     else:
         sig, exp = _argument(x)
-        arg = _LONG_DOUBLE()
+        arg = long_double()
         _PACK.pack_into(arg, 0, sig, (exp + 16446) | (0x8000 if x < 0.0 else 0))
         last[0], last[1] = x, arg
-    sig, se = _UNPACK.unpack_from(fn(arg))
+    sig, se = _UNPACK.unpack_from(lib[which](arg))
     biased = se & 0x7FFF
     if biased == 0x7FFF:
         return math.nan
@@ -158,28 +185,28 @@ def _call(fn: Any, x: float) -> float:
 def sin_degrees(x: float) -> float:
     """``sin((x * M_PIl) / 180.0)`` as a double (x finite).
 
-    >>> sin_degrees(30.0) == 0.5 or not AVAILABLE
+    >>> sin_degrees(30.0) == 0.5 or not available()
     True
     """
-    return x if x == 0.0 else _call(_SINL, x)  # sinl(-0) is -0
+    return x if x == 0.0 else _call(1, x)  # sinl(-0) is -0
 
 
 def cos_degrees(x: float) -> float:
     """``cos((x * M_PIl) / 180.0)`` as a double (x finite).
 
-    >>> cos_degrees(60.0) == 0.5 or not AVAILABLE
+    >>> cos_degrees(60.0) == 0.5 or not available()
     True
     """
-    return 1.0 if x == 0.0 else _call(_COSL, x)
+    return 1.0 if x == 0.0 else _call(2, x)
 
 
 def tan_degrees(x: float) -> float:
     """``tan((x * M_PIl) / 180.0)`` as a double (x finite; TAN[90] is -3.98679762981171e19 on LinuxCNC).
 
-    >>> tan_degrees(90.0) < -1e19 or not AVAILABLE
+    >>> tan_degrees(90.0) < -1e19 or not available()
     True
     """
-    return x if x == 0.0 else _call(_TANL, x)
+    return x if x == 0.0 else _call(3, x)
 
 
 def degrees_from_radians(r: float) -> float:
