@@ -30,7 +30,6 @@ from .blockskip import format_block_delete, parse_block_delete
 from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
-from .plain_toml import loads as loads_plain_toml
 from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
 
@@ -764,11 +763,7 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
     (('X', 'Y'), (Fraction(100, 1), Fraction(1, 10)))
     """
     rd = _Reader(path, text)
-    # the plain TOML machine files are written in, read without importing tomllib (nczones.plain_toml: the
-    # same value); anything else, and every error, is tomllib's
-    data = loads_plain_toml(text)
-    if data is None:
-        data = _tomllib_loads(rd, text, path)
+    data = _tomllib_loads(rd, text, path)
     machine = _build(rd, data)
     if rd.failed or machine is None:
         raise MachineFileError(rd.diagnostics)

@@ -57,9 +57,7 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "nczones.prover.blend", "nczones.prover.hull2d", "socket", "nczones.geometry.nurbs",
                           # issue 36: OpenSSL (hashlib: the digests are CPython's own, nczones.digest), ctypes (the
                           # x87 functions load at the first SIN/COS/TAN), shutil (argparse's terminal width)
-                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids",
-                          # the machine file in the plain TOML nczones.plain_toml reads
-                          "tomllib")
+                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -84,15 +82,15 @@ def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_pat
     assert loaded == {"ctypes"}
 
 
-def test_a_small_verify_loads_no_pathlib_nor_tomllib(tmp_path):
-    # pathlib (with urllib.parse and ipaddress, ~3 ms) and tomllib (~7 ms): a development environment's site
+def test_a_small_verify_loads_no_pathlib(tmp_path):
+    # pathlib (with urllib.parse and ipaddress, ~3 ms): a development environment's site
     # imports pathlib for its editable-install hook, so the interpreter starts without site here, as an
     # installed wheel's would not need it
     program = tmp_path / "small.ngc"
     program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
     code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
             f"assert main(['verify', {str(program)!r}, '--machine', {MILL!r}]) == 0\n"
-            "print(sorted(m for m in ('pathlib', 'urllib.parse', 'ipaddress', 'tomllib') if m in sys.modules))")
+            "print(sorted(m for m in ('pathlib', 'urllib.parse', 'ipaddress') if m in sys.modules))")
     r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr
     assert r.stdout.splitlines()[-1] == "[]"

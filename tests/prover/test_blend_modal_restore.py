@@ -23,6 +23,7 @@ import pytest
 from nczones.gcode import interpret_text
 from nczones.prover import verify_text
 from nczones.prover.blend import BLEND_CODE
+from tests.machines import load_machine
 from tests.prover.test_blending import machine
 
 INCH = Fraction(254, 10)
@@ -169,30 +170,6 @@ def test_m70_beside_g64_ends_in_g61(name):
 # moved along X first and proved the L `safe`.  Whether the restore runs depends on state nczones does not all
 # follow (coolant, overrides), so M72 with anything after it in its block is `unknown`.
 M72_BLOCK = "G1 X0 Y0\nM70\nG61.1\nM72 G1 X100 Y0\nG1 X100 Y100\n"
-_POST = """
-[machine]
-name = "m72 post"
-axes = ["X", "Y", "Z"]
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-200", Y = "-200", Z = "-100" }
-max = { X = "200", Y = "200", Z = "100" }
-[[zones]]
-name = "post"
-kind = "box"
-forbid = true
-min = { X = "45", Y = "45", Z = "-1" }
-max = { X = "55", Y = "55", Z = "1" }
-"""
 
 
 def _rs274_feeds(program: str, tmp_path) -> list[tuple[Fraction, Fraction]]:
@@ -214,16 +191,14 @@ def test_rs274_drops_the_rest_of_an_m72_block(tmp_path):
 
 @pytest.mark.parametrize("lane", ["short", "vectorized", "double pass"])
 def test_m72_beside_a_motion_is_not_safe(lane):
-    from nczones.machine import parse_machine
-
     pad = "".join(f"G1 X{-10 - k % 7} Y{-20 - k % 5}\n" for k in range(600)) if lane != "short" else ""
     program = "G61 F100\n" + ("#1 = 100\n" if lane == "double pass" else "") + pad + M72_BLOCK + "M2\n"
-    r = verify_text(program, parse_machine(_POST))
+    r = verify_text(program, load_machine("m72_post"))
     assert r.verdict.label == "unknown", r.verdict
     assert any(x.message.startswith("M72:") for x in r.reasons)
     # M72 alone, the motion in the next block: the L, which clears the post
     alone = program.replace("M72 G1 X100 Y0\n", "M72\nG1 X100 Y0\n")
-    assert verify_text(alone, parse_machine(_POST)).verdict.label == "safe"
+    assert verify_text(alone, load_machine("m72_post")).verdict.label == "safe"
 
 
 @pytest.mark.parametrize("block", ["M72 G64 P2", "M72 G20", "M72 M8", "M72 X5"])
