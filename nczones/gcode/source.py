@@ -506,6 +506,28 @@ class FileText:
             pos = stop - len(sub) + 1  # every match starting before this was looked for (> pos: see above)
         return -1
 
+    def rfind(self, sub: str, start: int | None = None, end: int | None = None) -> int:
+        """The last match starting in ``start``..``end`` (read a window at a time from the end backwards)."""
+        start, end = self._span(start, end)
+        if not sub:
+            return end if start <= end else -1
+        if sub in self.absent:
+            return -1
+        hi = end  # every match starting at or after hi was looked for
+        while hi > start:
+            lo = max(start, hi - WINDOW_BYTES)
+            k = self._read(lo, min(end, hi + len(sub) - 1)).rfind(sub)
+            if k >= 0:
+                return lo + k
+            hi = lo
+        return -1
+
+    def head(self, n: int) -> FileText:
+        """The file's first ``n`` characters as a streamed text of their own (the file opened again: each
+        FileText closes its own descriptor)."""
+        return FileText(os.dup(self.fd), max(0, min(n, self.n)), self.blank, self.stamp, self.name, self.absent,
+                        self.ascii)
+
     def index(self, sub: str, start: int | None = None, end: int | None = None) -> int:
         k = self.find(sub, start, end)
         if k < 0:

@@ -239,12 +239,12 @@ def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: 
     needs the language layer is read whole there; the lines of violations are read back from the file), or
     with parameters and the double pass to try (it reads the file a piece at a time; ``passed``: it was
     tried and declined, so the full path reads the text whole)."""
-    if not (dialect == "linuxcnc" and machine.dialect == "linuxcnc" and not ranges and options.recovery is None
-            and not declares_solids(machine) and not deleted):
+    if not (dialect in ("linuxcnc", "fanuc") and machine.dialect == dialect and not ranges
+            and options.recovery is None and not declares_solids(machine) and not deleted):
         return False
     if "#" not in text:
         return text.ascii
-    return options.engine == "auto" and not passed
+    return dialect == "linuxcnc" and options.engine == "auto" and not passed
 
 
 def _verify_recovery(source: ProgramSource, machine: Machine, options: VerifyOptions,

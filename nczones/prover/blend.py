@@ -66,6 +66,9 @@ REFINE_SHARE = 0.25
 MAX_TESTS = 200_000
 #: At most this many corner reasons per run (the rest are counted).
 MAX_REASONS = 20
+#: Exact boxes of arcs kept for arcs that repeat (:meth:`CornerCheck._arc_box`); past it the cache starts over
+#: (memory flat whatever the program's length).
+ARC_CACHE = 4096
 #: Fanuc cutting mode without ``path_tolerance`` on column chunks: the runs' boxes from the columns (False: one
 #: motion at a time, :meth:`CornerCheck._segment`; the agreement test compares the two).
 HULL_COLUMNS = True
@@ -1012,7 +1015,7 @@ class CornerCheck:
         key = (chunk.scale, tuple(chunk.axes), *(None if c is None else c[r].tobytes() for c in cols))
         cache = self._arc_cache
         if key not in cache:
-            if len(cache) >= 4096:
+            if len(cache) >= ARC_CACHE:
                 cache.clear()
             cache[key] = _piece_box(_row(chunk, r))
         return cache[key]
