@@ -106,7 +106,9 @@ def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[M
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
     text = _percent_cut(interp.text)  # a streamed file (FileText) is cut to a streamed head
     if not text or (_fanuc_needs_language_layer(text) if fanuc else _needs_language_layer(text, it, size)):
-        if isinstance(interp.text, FileText):  # the language layer reads the text in memory
+        if isinstance(interp.text, FileText) and (fanuc or not interp.text.isascii()):
+            # the Fanuc language layer reads the text in memory; LinuxCNC's reads a streamed ASCII file a
+            # line at a time (a StringSource over the FileText: its finds and slices are read a window at a time)
             interp.text = materialized(interp.text)
             text = _percent_cut(interp.text)
         if text is None:

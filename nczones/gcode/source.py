@@ -473,6 +473,10 @@ class FileText:
         return start, end
 
     def __getitem__(self, key: slice) -> str:
+        if type(key) is slice and key.step is None and type(key.start) is int and type(key.stop) is int:
+            a, b = key.start - self._w0, key.stop - self._w0  # the common case: inside the current window
+            if 0 <= a <= b <= len(self._window):
+                return self._window[a:b]
         if not isinstance(key, slice) or key.step not in (None, 1):
             raise TypeError("FileText takes slices without a step")
         start, end = self._span(key.start, key.stop)
@@ -484,6 +488,10 @@ class FileText:
         return self._read(start, end)
 
     def find(self, sub: str | bytes, start: int | None = None, end: int | None = None) -> int:
+        if end is None and type(start) is int and type(sub) is str and start >= self._w0:
+            k = self._window.find(sub, start - self._w0)  # the common case: a match in the current window
+            if k >= 0:
+                return self._w0 + k
         if isinstance(sub, bytes):
             sub = sub.decode("ascii")
         start, end = self._span(start, end)

@@ -6,11 +6,13 @@ dialects, Fanuc CAM output, ...).  These tests check, per class, that
 * the peak of Python's allocations (``tracemalloc``) while a streamed file is verified does not grow with the
   program: 3x the lines (3x the text) cost less than half the added text more (a text read whole costs
   1x-5x the text: the decoded text, its ``%`` cut, its lower-cased copies).  The windows are shrunk (file
-  windows of 4 KiB, blocks of 16 KiB, an arc cache of 64, column runs of 512 rows) so that the fixed windows
+  windows of 4 KiB, blocks and double-pass pieces of 16 KiB, an arc cache of 64, corner batches of 64, column runs of 512 rows) so that the fixed windows
   are (nearly) full at both sizes;
 * verifying a streamed Fanuc program gives the verdict, violations (blocks, spans with their text,
-  witnesses), reasons and notes of verifying the same file read whole, short and past 512 motions (the
-  vectorized tier), with R-format arcs, I/J arcs and straight moves, and without reading the whole text.
+  witnesses), reasons, notes and statistics of verifying the same file read whole, short and past 512
+  motions (the vectorized tier), with R-format arcs, I/J arcs and straight moves, and without reading the
+  whole text; so does a LinuxCNC program with o-word subroutines and no ``#`` (the language layer) and one
+  with ``#`` that the double pass declines (the full path).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from nczones.gcode import fastpath
 from nczones.gcode import source as S
 from nczones.gcode.fanuc import columns
 from nczones.gcode.fanuc.paths import path_headers
+from nczones.gcode.linuxcnc import doubles
 from nczones.machine import load_machine
 from nczones.pipeline.verification import verify_source
 from nczones.prover import blend
@@ -33,6 +36,7 @@ from nczones.prover.result import Verdict
 from tests.machines import load_machine as load_test_machine
 
 FANUC = load_machine("specs/machines/fanuc_mill.toml")
+MILL = load_machine("specs/machines/mill.toml")
 
 
 def _box(dialect: str) -> object:
@@ -47,6 +51,8 @@ def small_windows(monkeypatch):
     monkeypatch.setattr(S, "WINDOW_BYTES", 4096)
     monkeypatch.setattr(fastpath, "BLOCK_BYTES", 16384)
     monkeypatch.setattr(blend, "ARC_CACHE", 64)
+    monkeypatch.setattr(blend, "CORNER_BATCH", 64)
+    monkeypatch.setattr(doubles, "PIECE", 16384)
     monkeypatch.setattr(columns, "MAX_ROWS", 512)
 
 
@@ -83,7 +89,39 @@ def walk(n: int, seed: int, kind: str, dialect: str, spread: float = 5.0, start:
     return "\n".join(out) + "\n"
 
 
-#: The classes: (name, program of about n lines, dialect).
+_PAD = "a step of the walk " * 12
+
+
+def osub(n: int, seed: int, spread: float = 5.0) -> str:
+    """About ``n`` lines of a LinuxCNC program with o-word subroutines and no ``#`` (the language layer): a
+    plunge and a 20-line contour, called every 50 lines of a walk of straight moves."""
+    rnd = random.Random(seed)
+    contour = [f"G1 X{rnd.uniform(-spread, spread):.3f} Y{rnd.uniform(-spread, spread):.3f}" for _ in range(20)]
+    out = ["o100 sub", "G0 Z5", "G1 Z-1 F200", "o100 endsub", "o200 sub", *contour, "o200 endsub",
+           "G21 G90 G17 G54", "G1 F800"]
+    while len(out) < n:
+        out += ["o100 call", "o200 call", "G1 F800"]
+        # a long comment on each line: the text outweighs the fixed windows (so the test sees a text held whole)
+        out += [f"X{rnd.uniform(-spread, spread) * 10:.3f} Y{rnd.uniform(-spread, spread) * 10:.3f} ({_PAD})"
+                for _ in range(50)]
+    return "\n".join(out + ["M30"]) + "\n"
+
+
+def declined(n: int, seed: int, spread: float = 5.0) -> str:
+    """About ``n`` lines with an expression on each and the spindle started (``S1000 M3``: an M code the double
+    pass does not follow, so the full path reads the program), a parameter changed every tenth line."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54 F800", "S1000 M3", "#1 = 0", "#2 = 0"]
+    while len(out) < n:
+        if len(out) % 10 == 0:
+            out.append(f"#1 = [#1 + {rnd.uniform(-spread, spread):.3f}]")
+        else:
+            out.append(f"G1 X[#1 + {rnd.uniform(-spread, spread) * 10:.3f}] Y[#2 + {rnd.uniform(-spread, spread) * 10:.3f}]")
+    return "\n".join(out + ["M30"]) + "\n"
+
+
+#: The classes: (name, program of about n lines, dialect).  The sizes compared are 2,500 and 7,500 lines, or
+#: those of SIZES (the language layer's windows of motion fill later).
 CLASSES = {
     "CAM G1": (lambda n: walk(n, 1, "line", "linuxcnc"), "linuxcnc"),
     "R-format arcs": (lambda n: walk(n, 2, "r", "linuxcnc"), "linuxcnc"),
@@ -91,7 +129,10 @@ CLASSES = {
     "Fanuc CAM G1": (lambda n: walk(n, 4, "line", "fanuc"), "fanuc"),
     "R-format arcs, Fanuc": (lambda n: walk(n, 5, "r", "fanuc"), "fanuc"),
     "I/J arcs, Fanuc": (lambda n: walk(n, 6, "ij", "fanuc"), "fanuc"),
+    "o-word subs, no #": (lambda n: osub(n, 7), "linuxcnc"),
+    "# declined by the pass": (lambda n: declined(n, 8), "linuxcnc"),
 }
+SIZES = {"o-word subs, no #": (7500, 22500), "# declined by the pass": (5000, 15000)}
 
 
 def _peak(path, machine) -> int:
@@ -108,7 +149,8 @@ def _peak(path, machine) -> int:
     return peak
 
 
-@pytest.mark.parametrize("name", list(CLASSES))
+@pytest.mark.parametrize("name", [pytest.param(c, marks=pytest.mark.long) if c == "o-word subs, no #" else c
+                                  for c in CLASSES])  # the o-word class: about 20 s under tracemalloc
 def test_the_memory_of_a_streamed_program_does_not_grow_with_its_length(tmp_path, small_windows, name):
     make, dialect = CLASSES[name]
     machine = _box(dialect)
@@ -116,7 +158,7 @@ def test_the_memory_of_a_streamed_program_does_not_grow_with_its_length(tmp_path
     warm.write_text(make(600))
     _peak(warm, machine)  # the modules each lane imports on first use, not counted below
     sizes, peaks = [], []
-    for n in (2500, 7500):
+    for n in SIZES.get(name, (2500, 7500)):
         path = tmp_path / f"p{n}.ngc"
         path.write_text(make(n))
         sizes.append(path.stat().st_size)
@@ -131,8 +173,7 @@ def _outcome(result) -> tuple:
             result.stats)
 
 
-@pytest.mark.parametrize("kind", ["r", "ij", "line"])
-@pytest.mark.parametrize("n", [40, 600])
+@pytest.mark.parametrize("kind, n", [("r", 40), ("r", 600), ("ij", 600), ("line", 600)])
 def test_a_streamed_fanuc_program_verifies_as_read_whole(tmp_path, monkeypatch, kind, n):
     # fanuc_mill.toml: the travel is program X -360..400, Y -180..250 (G54 X-400 Y-250); the clamp is at
     # program X 85..115, Y -20..60 for a tip below Z 15: steps of up to 60 mm from the origin at Z-1 leave the
@@ -152,6 +193,28 @@ def test_a_streamed_fanuc_program_verifies_as_read_whole(tmp_path, monkeypatch, 
     src = S.load_program(path, stream=True)
     assert isinstance(src.text, S.FileText)
     assert _outcome(verify_source(src, FANUC, VerifyOptions())) == whole
+    assert n < 600 or whole[1]
+
+
+@pytest.mark.parametrize("make, n", [(osub, 40), (osub, 600), (declined, 600)])
+def test_a_streamed_linuxcnc_program_the_pass_does_not_take_verifies_as_read_whole(tmp_path, monkeypatch, make,
+                                                                                    n):
+    # mill.toml: steps of up to 600 mm leave the travel now and then (the long programs have violations)
+    text = make(n, 9 + n, spread=60.0)
+    path = tmp_path / "p.ngc"
+    path.write_text(text)
+    whole = _outcome(verify_source(S.load_program(path), MILL, VerifyOptions()))
+    monkeypatch.setattr(S, "STREAM_MIN_BYTES", 0)
+    monkeypatch.setattr(S, "WINDOW_BYTES", 64)
+
+    def refuse(self):
+        raise AssertionError("the whole text was read")
+
+    if n >= 512:  # a shorter program is read by the full interpreter alone, on its whole text
+        monkeypatch.setattr(S.FileText, "read_all", refuse)
+    src = S.load_program(path, stream=True)
+    assert isinstance(src.text, S.FileText)
+    assert _outcome(verify_source(src, MILL, VerifyOptions())) == whole
     assert n < 600 or whole[1]
 
 
