@@ -537,7 +537,7 @@ def _percent_cut(text: str) -> str | None:
             return None
         p = text.find("%", text.find("\n", p) + 1 or last_end, last_end)
     if isinstance(text, FileText):  # a streamed file: its head, still read from the file
-        return text.head(last_end)  # type: ignore[return-value]
+        return text.head(last_end)
     return text[:last_end]
 
 

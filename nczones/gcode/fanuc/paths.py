@@ -76,7 +76,7 @@ def select_path(text: str | FileText, path: int | None, file: str) -> str:
     """
     headers = path_headers(text)
     if not headers:
-        return text
+        return text  # type: ignore[return-value]  # a streamed file (FileText) stays streamed, as a str would
     lines = materialized(text).split("\n")
     paths = sorted({n for _, n in headers if n != 0})
     if path is None or path not in paths:
