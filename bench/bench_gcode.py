@@ -158,6 +158,64 @@ def rarc_program(n: int, seed: int = 11, dialect: str = "linuxcnc") -> str:
     return "\n".join(out) + "\n"
 
 
+def ijarc_program(n: int, seed: int = 13, dialect: str = "linuxcnc") -> str:
+    """About ``n`` lines of I/J arcs (``G2``/``G3 X Y I J``, the centre given exactly, mostly modal) with a
+    ``G1`` line every 20th line.  Fanuc: every length with a decimal point, ``O``/``%`` framing."""
+    rnd = random.Random(seed)
+    if dialect == "fanuc":
+        out = ["%", "O1000 (IJ ARCS)", "G00 G17 G40 G49 G80 G90 G21", "G54 G00 X0. Y0.", "G01 F800."]
+    else:
+        out = ["G21 G90 G17 G54", "G0 X0 Y0", "G1 F800"]
+    x = y = 0.0
+    g = 0
+    while len(out) < n - (3 if dialect == "fanuc" else 1):
+        if len(out) % 20 == 0:
+            x = round(min(max(x + rnd.uniform(-5, 5), -200), 200), 3)
+            y = round(min(max(y + rnd.uniform(-5, 5), -200), 200), 3)
+            out.append(f"G1 X{x:.3f} Y{y:.3f}")
+            g = 0
+            continue
+        # a centre (x + i, y + j) and an end on the same circle: the end is the start turned about the centre
+        i, j = round(rnd.uniform(-3, 3), 3), round(rnd.uniform(-3, 3), 3)
+        turn = rnd.uniform(0.2, 2.5)
+        cx, cy = x + i, y + j
+        c, s_ = math.cos(turn), math.sin(turn)
+        x1 = round(cx + (x - cx) * c - (y - cy) * s_, 3)
+        y1 = round(cy + (x - cx) * s_ + (y - cy) * c, 3)
+        if abs(x1) > 250 or abs(y1) > 250 or math.hypot(i, j) < 0.05:
+            continue
+        word = "" if g in (2, 3) and rnd.random() < 0.7 else f"G{rnd.choice((2, 3))} "
+        if word:
+            g = int(word[1])
+        out.append(f"{word}X{x1:.3f} Y{y1:.3f} I{i:.3f} J{j:.3f}")
+        x, y = x1, y1
+    out += ["M30", "%"] if dialect == "fanuc" else ["M30"]
+    return "\n".join(out) + "\n"
+
+
+def osub_program(n: int, seed: int = 17) -> str:
+    """About ``n`` lines of a LinuxCNC program with o-word subroutines and no parameters (``#``): two subs
+    (a plunge and a 50-line contour) called from a CAM main program every 200 lines, as hand-edited
+    programs with o-word subroutines are written."""
+    rnd = random.Random(seed)
+    contour = [f"G1 X{rnd.uniform(0, 50):.3f} Y{rnd.uniform(0, 50):.3f}" for _ in range(50)]
+    out = ["o100 sub", "G0 Z5", "G1 Z-1 F200", "o100 endsub", "o200 sub", *contour, "o200 endsub",
+           "G21 G90 G17 G54", "G1 F800"]
+    while len(out) < n - 1:
+        out += ["o100 call", "o200 call", "G1 F800"]
+        out += [f"X{rnd.uniform(0, 200):.3f} Y{rnd.uniform(0, 100):.3f}" for _ in range(200)]
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def declined_program(n: int, seed: int = 19) -> str:
+    """The expression-every-line program (:func:`expr_program`) with the spindle started (``S1000 M3``), an M
+    code the double pass does not follow: it declines, and the full path reads the program."""
+    text = expr_program(n, seed)
+    head, rest = text.split("\n", 1)
+    return f"{head}\nS1000 M3\n{rest}"
+
+
 def drill_program(n: int, seed: int = 3) -> str:
     """About ``n`` lines: G81 and G82 cycles (G98/G99) of 1000 holes each, as CAM posts them."""
     rnd = random.Random(seed)

@@ -119,8 +119,9 @@ class Interpretation:
                  library: Any = None, param_ranges: tuple = ()):
         self.source = source
         text = self.text = source.text
-        if not (fast and dialect == "linuxcnc"):
-            # a streamed file (FileText) is read block by block only by the LinuxCNC fast path
+        if not fast:
+            # a streamed file (FileText) is read block by block only by the fast path (the language layer
+            # takes the whole text, see run_with_fastpath)
             text = self.text = materialized(text)
         if dialect == "fanuc":
             from .fanuc.paths import select_path

@@ -104,11 +104,11 @@ def run_with_fastpath(interp: Any, block_bytes: int | None = None) -> Iterator[M
     it = interp.interpreter
     fanuc = getattr(interp, "dialect", "linuxcnc") == "fanuc"
     size = BLOCK_BYTES if block_bytes is None else max(1, int(block_bytes))
-    if isinstance(interp.text, FileText) and "%" in interp.text:  # % lines: cut from the text in memory
-        interp.text = materialized(interp.text)
-    text = _percent_cut(interp.text)
+    text = _percent_cut(interp.text)  # a streamed file (FileText) is cut to a streamed head
     if not text or (_fanuc_needs_language_layer(text) if fanuc else _needs_language_layer(text, it, size)):
-        if isinstance(interp.text, FileText):  # the language layer reads the text in memory
+        if isinstance(interp.text, FileText) and (fanuc or not interp.text.isascii()):
+            # the Fanuc language layer reads the text in memory; LinuxCNC's reads a streamed ASCII file a
+            # line at a time (a StringSource over the FileText: its finds and slices are read a window at a time)
             interp.text = materialized(interp.text)
             text = _percent_cut(interp.text)
         if text is None:
@@ -536,6 +536,8 @@ def _percent_cut(text: str) -> str | None:
         if not text[ls:p].strip(" \t\r"):
             return None
         p = text.find("%", text.find("\n", p) + 1 or last_end, last_end)
+    if isinstance(text, FileText):  # a streamed file: its head, still read from the file
+        return text.head(last_end)
     return text[:last_end]
 
 
@@ -557,7 +559,7 @@ _FANUC_EOB = re.compile(r";[ \t]*[^ \t\r\n(]")
 _PROGRAM_NUMBER = re.compile(r"\n[ \t]*[o:][ \t]*\d")
 
 
-def _fanuc_needs_language_layer(text: str) -> bool:
+def _fanuc_needs_language_layer(text: str | FileText) -> bool:
     """Whether a Fanuc program must be read by the language layer as a whole: macro statements, variables,
     calls, block delete, more than one program number, or an EOB ``;`` with code after it.  Otherwise runs
     of simple lines go to the fast path and the rest to the language layer piece by piece.
@@ -565,13 +567,24 @@ def _fanuc_needs_language_layer(text: str) -> bool:
     >>> _fanuc_needs_language_layer("O1\\nG1 X1. F100.\\nM30\\n"), _fanuc_needs_language_layer("O1\\nM98 P2\\n")
     (False, True)
     """
-    if "#" in text or "[" in text or "/" in text or (";" in text and _FANUC_EOB.search(text)):
+    if "#" in text or "[" in text or "/" in text:
         return True
-    lower = text.lower()
-    if any(p.search(lower) for p in _FANUC_CALLS):
-        return True
-    first = _PROGRAM_NUMBER.search("\n" + lower)
-    return first is not None and _PROGRAM_NUMBER.search("\n" + lower, first.end()) is not None
+    eob = ";" in text
+    numbers = 0  # program numbers found so far
+    # a piece at a time, each cut after a newline (every pattern lies within one line), lower-cased
+    for piece in (text,) if isinstance(text, str) else text.pieces(BLOCK_BYTES):
+        if eob and _FANUC_EOB.search(piece):
+            return True
+        lower = piece.lower()
+        if any(p.search(lower) for p in _FANUC_CALLS):
+            return True
+        lower = "\n" + lower  # each piece starts a line
+        first = _PROGRAM_NUMBER.search(lower)
+        if first is not None:
+            numbers += 1 if _PROGRAM_NUMBER.search(lower, first.end()) is None else 2
+            if numbers > 1:
+                return True
+    return False
 
 
 def _full_piece(interp, data, starts, ends_, i, j, block_counter, line0=0, params=None):

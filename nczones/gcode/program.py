@@ -1379,7 +1379,9 @@ def iter_blocks(
     >>> str(blocks[1].words[1].span)
     'p.ngc:3:5'
     """
-    if not isinstance(text, str):
+    from .source import FileText
+
+    if not isinstance(text, (str, FileText)):  # a streamed ASCII file is read a line at a time, as a str
         raise TypeError(f"iter_blocks expects the program text as str, got {type(text).__name__}")
     runner = Runner(StringSource(text), file, params if params is not None else Parameters(), block_delete,
                      max_loop_iterations, max_call_depth, first_line, first_index, lane=lane, library=library,

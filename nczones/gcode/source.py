@@ -473,6 +473,10 @@ class FileText:
         return start, end
 
     def __getitem__(self, key: slice) -> str:
+        if type(key) is slice and key.step is None and type(key.start) is int and type(key.stop) is int:
+            a, b = key.start - self._w0, key.stop - self._w0  # the common case: inside the current window
+            if 0 <= a <= b <= len(self._window):
+                return self._window[a:b]
         if not isinstance(key, slice) or key.step not in (None, 1):
             raise TypeError("FileText takes slices without a step")
         start, end = self._span(key.start, key.stop)
@@ -484,6 +488,10 @@ class FileText:
         return self._read(start, end)
 
     def find(self, sub: str | bytes, start: int | None = None, end: int | None = None) -> int:
+        if end is None and type(start) is int and type(sub) is str and start >= self._w0:
+            k = self._window.find(sub, start - self._w0)  # the common case: a match in the current window
+            if k >= 0:
+                return self._w0 + k
         if isinstance(sub, bytes):
             sub = sub.decode("ascii")
         start, end = self._span(start, end)
@@ -505,6 +513,28 @@ class FileText:
                 return -1
             pos = stop - len(sub) + 1  # every match starting before this was looked for (> pos: see above)
         return -1
+
+    def rfind(self, sub: str, start: int | None = None, end: int | None = None) -> int:
+        """The last match starting in ``start``..``end`` (read a window at a time from the end backwards)."""
+        start, end = self._span(start, end)
+        if not sub:
+            return end if start <= end else -1
+        if sub in self.absent:
+            return -1
+        hi = end  # every match starting at or after hi was looked for
+        while hi > start:
+            lo = max(start, hi - WINDOW_BYTES)
+            k = self._read(lo, min(end, hi + len(sub) - 1)).rfind(sub)
+            if k >= 0:
+                return lo + k
+            hi = lo
+        return -1
+
+    def head(self, n: int) -> FileText:
+        """The file's first ``n`` characters as a streamed text of their own (the file opened again: each
+        FileText closes its own descriptor)."""
+        return FileText(os.dup(self.fd), max(0, min(n, self.n)), self.blank, self.stamp, self.name, self.absent,
+                        self.ascii)
 
     def index(self, sub: str, start: int | None = None, end: int | None = None) -> int:
         k = self.find(sub, start, end)

@@ -233,18 +233,18 @@ def _kept_streamed(source: ProgramSource, machine: Machine, options: VerifyOptio
 def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: str,
              ranges: tuple[ParamRange, ...], deleted: bool, passed: bool = False) -> bool:
     """Whether a streamed file (:class:`~nczones.gcode.source.FileText`) can be verified without its whole
-    text in memory: a LinuxCNC program without block delete (``deleted``: a line starts with ``/``), ranges,
-    recovery or tool solids, and
-    either ASCII without parameters (``#``: its lanes read it block by block, the fast path; a program that
-    needs the language layer is read whole there; the lines of violations are read back from the file), or
-    with parameters and the double pass to try (it reads the file a piece at a time; ``passed``: it was
-    tried and declined, so the full path reads the text whole)."""
-    if not (dialect == "linuxcnc" and machine.dialect == "linuxcnc" and not ranges and options.recovery is None
-            and not declares_solids(machine) and not deleted):
+    text in memory: a LinuxCNC or Fanuc program without block delete (``deleted``: a line starts with ``/``),
+    ranges, recovery or tool solids, and either a LinuxCNC program with parameters (``#``) and the double pass
+    to try (it reads the file a piece at a time, UTF-8 too; ``passed``: it was tried and declined), or
+    ASCII: the fast path reads it block by block, LinuxCNC's language layer a line at a time (the Fanuc
+    language layer reads a program that needs it whole); the lines of violations are read back from the
+    file."""
+    if not (dialect in ("linuxcnc", "fanuc") and machine.dialect == dialect and not ranges
+            and options.recovery is None and not declares_solids(machine) and not deleted):
         return False
-    if "#" not in text:
-        return text.ascii
-    return options.engine == "auto" and not passed
+    if "#" in text and dialect == "linuxcnc" and options.engine == "auto" and not passed:
+        return True
+    return text.ascii
 
 
 def _verify_recovery(source: ProgramSource, machine: Machine, options: VerifyOptions,

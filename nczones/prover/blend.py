@@ -66,6 +66,11 @@ REFINE_SHARE = 0.25
 MAX_TESTS = 200_000
 #: At most this many corner reasons per run (the rest are counted).
 MAX_REASONS = 20
+#: Exact boxes of arcs kept for arcs that repeat (:meth:`CornerCheck._arc_box`); past it the cache starts over
+#: (memory flat whatever the program's length).
+ARC_CACHE = 4096
+#: Corners screened together (:meth:`CornerCheck._flush`): the corner check's window of motion.
+CORNER_BATCH = 4096
 #: Fanuc cutting mode without ``path_tolerance`` on column chunks: the runs' boxes from the columns (False: one
 #: motion at a time, :meth:`CornerCheck._segment`; the agreement test compares the two).
 HULL_COLUMNS = True
@@ -230,7 +235,7 @@ class CornerCheck:
         else:
             for seg in chunk.segments():
                 self._segment(seg)
-        if len(self.pending) >= 4096:
+        if len(self.pending) >= CORNER_BATCH:
             self._flush()
 
     def finish(self, violating: Iterable[int] = (), upto: int | None = None) -> list[Reason]:
@@ -1035,7 +1040,7 @@ class CornerCheck:
         key = (chunk.scale, tuple(chunk.axes), *(None if c is None else c[r].tobytes() for c in cols))
         cache = self._arc_cache
         if key not in cache:
-            if len(cache) >= 4096:
+            if len(cache) >= ARC_CACHE:
                 cache.clear()
             cache[key] = _piece_box(_row(chunk, r))
         return cache[key]

@@ -8,8 +8,8 @@ and the window so that small programs take the streamed path, and check that
   (find, count, slices, ``in``, ``endswith``, the fast path's blocks), for any window size;
 * verifying the streamed file gives the verdict, violations (blocks, spans with their text, witnesses),
   reasons and notes of verifying the same file read whole — on generated programs (short, > 512 motions: the
-  vectorized tier, with ``#``: the double pass on the whole text, with o-words, M98 and ``%``: the language
-  layer on the whole text);
+  vectorized tier, with ``#``: the double pass, with o-words, M98 and ``%``: the language layer, each
+  streamed since issue 36's mem36 branch, tests/gcode/test_streamed_classes.py);
 * a plain CAM program is verified without ever reading the whole text;
 * a file changed while it is verified is an error (``GC100``), and files the stream cannot take (not UTF-8,
   too small) are read whole as before (programs with ``#``: tests/gcode/test_streamed_double_pass.py).
@@ -113,8 +113,8 @@ def test_streamed_cam_programs_verify_as_read_whole(tmp_path, small_stream, n, s
 
 
 @pytest.mark.parametrize("extra", [
-    "#1 = 5\nG1 X#1 Y[#1 * 2]\n",               # parameters: the double pass streamed, then the whole text
-    "o100 sub\nG1 X1 Y1\no100 endsub\no100 call\n",  # o-words: the language layer, on the whole text
+    "#1 = 5\nG1 X#1 Y[#1 * 2]\n",               # parameters: the double pass, then the full path, streamed
+    "o100 sub\nG1 X1 Y1\no100 endsub\no100 call\n",  # o-words: the language layer, streamed (a line at a time)
     "/G1 X500\n",                                # block delete: both switch positions, on the whole text
     "G7\nG1 X10\nG8\n",                          # lathe codes: the lathe interpreter, on the whole text
 ])

@@ -14,9 +14,14 @@ nczones proves one path at a time: the machine file describes the slides of one 
 from __future__ import annotations
 
 import re
+from typing import TYPE_CHECKING
 
 from ...errors import Diagnostic, GcodeError
 from ..lexer import make_span
+from ..source import materialized
+
+if TYPE_CHECKING:
+    from ..source import FileText
 
 __all__ = ["path_headers", "select_path"]
 
@@ -26,7 +31,7 @@ _HEADER = re.compile(r"[ \t]*\$[ \t]*(\d+)[ \t]*(?:\([^)]*\)[ \t]*)?$")
 _LEAD = re.compile(r"[ \t]*%?[ \t]*$")
 
 
-def path_headers(text: str) -> list[tuple[int, int]]:
+def path_headers(text: str | FileText) -> list[tuple[int, int]]:
     """``[(line number, path number)]`` of the path headers, empty unless ``text`` is a multi-path program.
 
     A text is a multi-path program when its first line other than blank lines and ``%`` is a header.
@@ -36,12 +41,20 @@ def path_headers(text: str) -> list[tuple[int, int]]:
     >>> path_headers("G0 X1.\\n$2\\n")
     []
     """
-    lines = text.split("\n")
-    first = next((i for i, line in enumerate(lines) if not _LEAD.match(line.rstrip("\r"))), None)
-    if first is None:
+    # the first line other than blank lines and % (read line by line: a text that is no multi-path program,
+    # a streamed file among them, is not split)
+    pos, n, first = 0, len(text), 0
+    while True:
+        nl = text.find("\n", pos)
+        end = n if nl < 0 else nl
+        if not _LEAD.match(text[pos:end].rstrip("\r")):
+            break
+        if nl < 0:
+            return []
+        pos, first = end + 1, first + 1
+    if not _HEADER.match(text[pos:end].rstrip("\r")):
         return []
-    if not _HEADER.match(lines[first].rstrip("\r")):
-        return []
+    lines = materialized(text).split("\n")
     out = []
     for i in range(first, len(lines)):
         m = _HEADER.match(lines[i].rstrip("\r"))
@@ -50,7 +63,7 @@ def path_headers(text: str) -> list[tuple[int, int]]:
     return out
 
 
-def select_path(text: str, path: int | None, file: str) -> str:
+def select_path(text: str | FileText, path: int | None, file: str) -> str:
     """The program of path ``path`` of a multi-path text, every other line blank; other texts unchanged.
 
     A multi-path text needs ``path`` (``[fanuc] path``) and a ``$path`` section: else ``GcodeError`` GC101
@@ -63,8 +76,8 @@ def select_path(text: str, path: int | None, file: str) -> str:
     """
     headers = path_headers(text)
     if not headers:
-        return text
-    lines = text.split("\n")
+        return text  # type: ignore[return-value]  # a streamed file (FileText) stays streamed, as a str would
+    lines = materialized(text).split("\n")
     paths = sorted({n for _, n in headers if n != 0})
     if path is None or path not in paths:
         line0 = headers[0][0]
