@@ -44,6 +44,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
+from operator import attrgetter
 from typing import Any, TypeAlias
 
 from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_sub
@@ -165,14 +166,20 @@ def variable_index(value: tuple) -> int:
     return -n if d < 0 else n
 
 
+#: ``(numerator, denominator)`` of a Fraction, read through its slots where Fractions have them (CPython)
+_ratio = attrgetter("_numerator", "_denominator") if to_fraction is fraction_raw else attrgetter(
+    "numerator", "denominator")
+
+
 def double_of(q: Fraction) -> float:
     """The double nearest ``q``, infinite beyond the double range (``float(q)`` raises there).
 
     >>> double_of(Fraction(1, 10)), double_of(Fraction(-10**400))
     (0.1, -inf)
     """
+    n, d = _ratio(q)
     try:
-        return q.numerator / q.denominator
+        return n / d
     except OverflowError:
         return math.inf if q > 0 else -math.inf
 
@@ -184,11 +191,9 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     (Fraction(6173, 500), Fraction(-3, 1))
     """
     q: Fraction | None = value[1]
-    if q is None:  # the double's exact value (its ratio is in lowest terms), without building a Fraction first
-        qn, qd = value[0].as_integer_ratio()
-    else:
-        qn, qd = q.numerator, q.denominator
-    sn, sd = step.numerator, step.denominator
+    # the double's exact value (its ratio is in lowest terms), without building a Fraction first
+    qn, qd = value[0].as_integer_ratio() if q is None else _ratio(q)
+    sn, sd = _ratio(step)
     if sn == 1 and sd % qd == 0:  # already a multiple of the step (a decimal literal, an exact sum)
         return q if q is not None else to_fraction(qn, qd)
     # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)
@@ -374,11 +379,19 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
 
         def neg():
             d, q = inner()
-            return (-d, -q if q is not None else None)
+            if q is None:
+                return (-d, None)
+            n, den = _ratio(q)
+            return (-d, to_fraction(-n, den))
         return neg
     if tag == BIN:
         op = node[1]
         left = compile_tree(node[2], variables, ctx, in_address)
+        if node[3][0] == NUM and _SLOTS:  # a number on the right (#1 + 1, #1 LT 10): no call for it
+            const = (node[3][1], node[3][2])
+            fast = _with_constant(op, left, const)
+            if fast is not None:
+                return fast
         right = compile_tree(node[3], variables, ctx, in_address)
         if op in ("+", "-", "*", "/"):
             if _SLOTS:
@@ -460,6 +473,78 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
     return mul
 
 
+def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable[[], Value] | None:
+    """``left op const`` for + - * / (a divisor not 0) and the order comparisons: :func:`_arithmetic` and
+    :data:`_COMPARE` with the right operand read once (the same operations in the same order), else None."""
+    b, qb = const
+    if op in _COMPARE:
+        return _COMPARE_CONSTANT[op](left, b)
+    if op not in ("+", "-", "*", "/") or (op == "/" and b == 0.0) or qb is None:
+        return None
+    if op == "/":
+        exact = bool(qb._numerator)
+
+        def div() -> Value:
+            a, qa = left()
+            d = a / b
+            if d - d:
+                check_double(d)
+            if qa is None or not exact:
+                return (d, None)
+            q: Any = q_div(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return div
+    if op == "+":
+        def add() -> Value:
+            a, qa = left()
+            d = a + b
+            if d - d:
+                check_double(d)
+            if qa is None:
+                return (d, None)
+            q: Any = q_add(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return add
+    if op == "-":
+        def sub() -> Value:
+            a, qa = left()
+            d = a - b
+            if d - d:
+                check_double(d)
+            if qa is None:
+                return (d, None)
+            q: Any = q_sub(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return sub
+
+    def mul() -> Value:
+        a, qa = left()
+        d = a * b
+        if d - d:
+            check_double(d)
+        if qa is None:
+            return (d, None)
+        q: Any = q_mul(qa, qb)
+        return (d, q) if q._numerator / q._denominator == d else (d, None)
+    return mul
+
+
+def _gt_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] > b else _FALSE
+
+
+def _ge_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] >= b else _FALSE
+
+
+def _lt_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] < b else _FALSE
+
+
+def _le_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] <= b else _FALSE
+
+
 def _gt(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
     return lambda: _TRUE if left()[0] > right()[0] else _FALSE
 
@@ -478,6 +563,7 @@ def _le(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], V
 
 #: The order comparisons as closures (:func:`_binop`'s gt/ge/lt/le: the doubles compared, vacant as 0).
 _COMPARE = {"gt": _gt, "ge": _ge, "lt": _lt, "le": _le}
+_COMPARE_CONSTANT = {"gt": _gt_constant, "ge": _ge_constant, "lt": _lt_constant, "le": _le_constant}
 
 
 def evaluate_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None) -> Value:
