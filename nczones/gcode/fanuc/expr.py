@@ -184,6 +184,9 @@ def double_of(q: Fraction) -> float:
         return math.inf if q > 0 else -math.inf
 
 
+_NEAR_HALF_LOW, _NEAR_HALF_HIGH = 0.5 - 2.0**-20, 0.5 + 2.0**-20
+
+
 def round_to(value: tuple, step: Fraction) -> Fraction:
     """The exact value rounded to a multiple of ``step``, halves away from zero.
 
@@ -191,9 +194,23 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     (Fraction(6173, 500), Fraction(-3, 1))
     """
     q: Fraction | None = value[1]
-    # the double's exact value (its ratio is in lowest terms), without building a Fraction first
-    qn, qd = value[0].as_integer_ratio() if q is None else _ratio(q)
     sn, sd = _ratio(step)
+    if q is None:
+        d = value[0]
+        if sn == 1:
+            # |d| / step in doubles: below 2**30 its error is under 2**-24, so away from a half (by 2**-20) the
+            # nearest integer is that of the exact quotient; at a half, or beyond, the exact path below decides
+            x = abs(d) * sd
+            if x < 1073741824.0:
+                m = math.floor(x)
+                frac = x - m  # exact (x and m are doubles below 2**30)
+                if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH:
+                    n = m + 1 if frac > 0.5 else m
+                    return to_fraction(-n if d < 0 else n, sd)
+        # the double's exact value (its ratio is in lowest terms), without building a Fraction first
+        qn, qd = d.as_integer_ratio()
+    else:
+        qn, qd = _ratio(q)
     if sn == 1 and sd % qd == 0:  # already a multiple of the step (a decimal literal, an exact sum)
         return q if q is not None else to_fraction(qn, qd)
     # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)

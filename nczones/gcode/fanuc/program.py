@@ -738,7 +738,8 @@ class FanucRunner:
                     values[n] = (double_of(q), q)
             except _EVAL_ERRORS:
                 return None
-            if len(frames) >= MAX_CALL_DEPTH or sum(1 for f in frames if f.saved is not None) >= MAX_MACRO_LEVELS:
+            if len(frames) > MAX_MACRO_LEVELS and (len(frames) >= MAX_CALL_DEPTH or sum(
+                    1 for f in frames if f.saved is not None) >= MAX_MACRO_LEVELS):  # (main is no macro)
                 return None
             runner.current_pos = pos
             runner.started = runner.ran = True

@@ -21,6 +21,7 @@ face and cross it by 0.001 mm.
 from __future__ import annotations
 
 from contextlib import contextmanager
+from fractions import Fraction
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -28,7 +29,7 @@ from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
-from nczones.gcode.fanuc.expr import FanucVariables
+from nczones.gcode.fanuc.expr import FanucVariables, round_to
 from nczones.gcode.fanuc.program import FanucRunner, iter_blocks
 from nczones.gcode.program import UnsupportedGcode
 from nczones.machine import parse_machine
@@ -299,3 +300,22 @@ def test_verify_of_a_long_loop_is_that_of_the_lines_written_out(kind, over):
     else:  # X50.001 is 0.001 mm outside
         assert got[0] == "unsafe" and got[1]
         assert all(dict(v[2])["X"] > 150 for v in got[1])
+
+
+def _rounded_exactly(d: float, step: Fraction) -> Fraction:
+    """``d`` (its exact value) rounded to a multiple of ``step``, halves away from zero, in rationals."""
+    k = Fraction(d) / step
+    n = (abs(k) + Fraction(1, 2)).__floor__()
+    return (-n if k < 0 else n) * step
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.floats(allow_nan=False, allow_infinity=False, min_value=-1e7, max_value=1e7)
+       | st.integers(-10**7, 10**7).map(lambda k: k / 2000) | st.integers(-10**6, 10**6).map(lambda k: k * 0.0005),
+       st.sampled_from([Fraction(1, 1000), Fraction(1, 10000), Fraction(1), Fraction(1, 10), Fraction(1, 100000),
+                        Fraction(3, 1000)]))
+def test_round_to_a_double_is_the_exact_rounding(d, step):
+    """round_to of a double without its exact shadow (the doubles' quotient decides away from a half, the
+    exact ratio at a half): the exact value of the double rounded in rationals, halves away from zero (the
+    control's rounding of a macro value in an address)."""
+    assert round_to((d, None), step) == _rounded_exactly(d, step)
