@@ -379,8 +379,9 @@ class FanucRunner:
     # -- lines run again, as closures ---------------------------------------------------------
     # A line that runs a second time (in a loop, a subprogram, a macro) is kept as one closure of no
     # arguments (``source.ops``) doing what the general path does with it: it returns the next
-    # ``(pos, lineno)``; ``[here]`` when the plain-move lane took its motion and the chunk is full (run()
-    # yields LANE_FULL); ``[here, block]`` when the lane declined it (run() yields the block); or None,
+    # ``(pos, lineno)`` in the same frame; ``[pos_lineno, None]`` after a call or a return (another frame);
+    # ``[here]`` when the plain-move lane took its motion and the chunk is full (run() yields LANE_FULL);
+    # ``[here, block]`` when the lane declined it (run() yields the block); or None,
     # having changed nothing, when the general path must run the line this time (the first entry of a
     # loop, an error to report with its span, a vacant word that shifts an argument, a bound reached, a
     # state the closure does not cover: G66, a unit system whose literals need rounding, ...).
@@ -646,7 +647,7 @@ class FanucRunner:
             frames.pop()
             if frame.saved is not None:
                 variables.pop_level(frame.saved)
-            return frame.ret
+            return [frame.ret, None]
         return m99
 
     def m98_op(self, pos: int, lineno: int, line: str, p: Fraction,
@@ -662,6 +663,7 @@ class FanucRunner:
         except GcodeError:
             return None
         runner, frames = self, self.frames
+        jump = [body, None]  # (a list: run() takes the new frame's lines)
 
         def m98() -> Any:
             if len(frames) >= MAX_CALL_DEPTH:
@@ -669,7 +671,7 @@ class FanucRunner:
             runner.current_pos = pos
             runner.started = runner.ran = True
             frames.append(_Frame("m98", target, program, here, body, count))
-            return body
+            return jump
         return m98
 
     def g65_op(self, pos: int, lineno: int, line: str, words: tuple,
@@ -716,6 +718,7 @@ class FanucRunner:
             return None
         runner, frames, variables, state = self, self.frames, self.vars, self.state
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
+        jump = [body, None]  # (a list: run() takes the new frame's lines)
 
         def g65() -> Any:
             values: dict[int, tuple] = {}
@@ -745,7 +748,7 @@ class FanucRunner:
             runner.started = runner.ran = True
             frames.append(_Frame("macro", target, program, here, body, count, variables.local, values))
             variables.push_level(values)
-            return body
+            return jump
         return g65
 
     # -- the run -------------------------------------------------------------------------
@@ -759,20 +762,23 @@ class FanucRunner:
         while True:
             frame = frames[-1]
             source = frame.source
-            op = source.ops.get(pos)
-            if op is not None:  # a line run before, as one closure (make_op)
+            ops = source.ops
+            op = ops.get(pos)
+            r = None
+            while op is not None:  # lines run before, as closures (make_op), in this frame
                 r = op()
-                if r is not None:
-                    if r.__class__ is tuple:
-                        pos, lineno = r
-                        continue
-                    pos, lineno = r[0]
-                    if len(r) == 1:  # the lane took the motion and its chunk is full
-                        yield LANE_FULL
-                    else:  # the lane declined the motion: its block
-                        yield r[1]
-                        self.index += 1
-                    continue
+                if r.__class__ is not tuple:
+                    break
+                pos, lineno = r
+                op = ops.get(pos)
+            if op is not None and r is not None:  # a list: a call or a return, or something to yield
+                pos, lineno = r[0]
+                if len(r) == 1:  # the lane took the motion and its chunk is full
+                    yield LANE_FULL
+                elif r[1] is not None:  # the lane declined the motion: its block
+                    yield r[1]
+                    self.index += 1
+                continue
             compiled = source.cache.get(pos)
             if compiled is not None and pos not in source.ops and not (fast and pos in fast):
                 self.add_op(source, pos, lineno, compiled)  # run again: kept as one closure from now on
