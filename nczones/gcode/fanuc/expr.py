@@ -133,6 +133,13 @@ class FanucVariables:
         self.depth += 1
         return saved
 
+    def enter_level(self, local: list) -> list:
+        """:meth:`push_level` with the new level given whole (``LOCALS + 1`` values, vacant where no argument)."""
+        saved = self.local
+        self.local = local
+        self.depth += 1
+        return saved
+
     def pop_level(self, saved: list) -> None:
         self.local = saved
         self.depth -= 1

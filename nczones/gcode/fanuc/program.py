@@ -721,7 +721,7 @@ class FanucRunner:
         jump = [body, None]  # (a list: run() takes the new frame's lines)
 
         def g65() -> Any:
-            values: dict[int, tuple] = {}
+            values = [VACANT] * (LOCALS + 1)  # the macro's local level: its arguments, the others vacant
             inc = inc_inch if getattr(state, "inch", False) else inc_mm
             try:
                 for n, const, fn, var, step, shifts in args:
@@ -746,8 +746,10 @@ class FanucRunner:
                 return None
             runner.current_pos = pos
             runner.started = runner.ran = True
-            frames.append(_Frame("macro", target, program, here, body, count, variables.local, values))
-            variables.push_level(values)
+            # the arguments (call_macro's dict) are read again only to repeat the macro (L2 and up)
+            passed = {k: v for k, v in enumerate(values) if v is not VACANT} if count > 1 else None
+            frames.append(_Frame("macro", target, program, here, body, count, variables.local, passed))
+            variables.enter_level(values)
             return jump
         return g65
 
