@@ -697,20 +697,9 @@ class FanucRunner:
         specs = self.word_specs(tuple(rest))
         if specs is None:
             return None
-        seen = {"I": 0, "J": 0, "K": 0}
-        args = []  # (variable, value or None, fn, var, step, shifts): shifts when the word is vacant (I J K)
-        for w, (q, fn, var, step) in zip(rest, specs):
-            letter = w[0]
-            if letter in seen:
-                if seen[letter] >= 10:
-                    return None
-                n = 4 + 3 * seen[letter] + "IJK".index(letter)
-                seen[letter] += 1
-            elif letter in ARGUMENTS_I:
-                n = ARGUMENTS_I[letter]
-            else:
-                return None
-            args.append((n, (double_of(q), q) if fn is None else None, fn, var, step, letter in seen))
+        args = _argument_specs(rest, specs)
+        if args is None:
+            return None
         program, count = int(p), int(repeats)
         try:
             target, body = self.locate(program, lineno, line, "G65")
@@ -758,7 +747,6 @@ class FanucRunner:
         pos, lineno = 0, self.first_line
         main_src = self.main.src
         fast = self.fast_runs
-        lane = self.lane
         declined = -1
         frames = self.frames
         while True:
@@ -766,97 +754,120 @@ class FanucRunner:
             source = frame.source
             ops = source.ops
             op = ops.get(pos)
-            r = None
+            r: Any = None
             while op is not None:  # lines run before, as closures (make_op), in this frame
                 r = op()
                 if r.__class__ is not tuple:
                     break
                 pos, lineno = r
                 op = ops.get(pos)
-            if op is not None and r is not None:  # a list: a call or a return, or something to yield
-                pos, lineno = r[0]
-                if len(r) == 1:  # the lane took the motion and its chunk is full
-                    yield LANE_FULL
-                elif r[1] is not None:  # the lane declined the motion: its block
-                    yield r[1]
-                    self.index += 1
-                continue
-            compiled = source.cache.get(pos)
-            if compiled is not None and pos not in source.ops and not (fast and pos in fast):
-                self.add_op(source, pos, lineno, compiled)  # run again: kept as one closure from now on
-            if compiled is None or (fast and pos in fast):  # a line not run before, or a fast run's start
-                src = source.src
-                if fast and src is main_src and pos in fast and pos != declined:
-                    req = FastRunRequest(pos, lineno, self.index)
-                    yield req
-                    if req.resume is not None:
-                        pos, lineno, self.index = req.resume
-                        self.started = self.ran = True
-                        declined = -1
-                        continue
-                    declined = pos
-                hit = source.plain.get(pos)
-                if hit is not None:  # a plain line run before (in a loop or a subprogram)
-                    if pos not in source.ops and not (fast and pos in fast):
-                        self.add_op(source, pos, lineno, hit)
-                    line, nxt, parsed = hit[0], hit[1], hit[2]
-                    ok = self.modal_call is None and (hit[4] if self._inch() else hit[3]) and self.plain_words_ok(
-                        parsed[2], parsed[3])
-                else:
-                    line, nxt = src.line_at(pos)
-                    if line is None:
+            if op is None or r is None:  # the general path for the line at pos
+                r = None
+                compiled = source.cache.get(pos)
+                if compiled is not None and pos not in ops and not (fast and pos in fast):
+                    self.add_op(source, pos, lineno, compiled)  # run again: kept as one closure from now on
+                if compiled is None or (fast and pos in fast):  # a line not run before, or a fast run's start
+                    if fast and source.src is main_src and pos in fast and pos != declined:
+                        req = FastRunRequest(pos, lineno, self.index)
+                        yield req
+                        if req.resume is not None:
+                            pos, lineno, self.index = req.resume
+                            self.started = self.ran = True
+                            declined = -1
+                            continue
+                        declined = pos
+                    got = self.read_plain(frame, pos, lineno, not (fast and pos in fast))
+                    if got is None:
                         self.end_of_text(lineno)
                         return
-                    parsed = None
-                    if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
-                        parsed = scan_plain(line)
-                    ok = parsed is not None and self.plain_ok(parsed[2], parsed[3], line)
-                    if parsed is not None and (frame.loops or len(self.frames) > 1) and self.cached < 200_000:
-                        # the line runs again: keep its scan and which unit systems its literals pass in
-                        source.plain[pos] = (line, nxt, parsed, self.lengths_ok(line, False),
-                                             self.lengths_ok(line, True))
-                        self.cached += 1
-                if ok:
-                    assert parsed is not None
-                    delete, number, letters, values = parsed
-                    pos, lineno0, lineno = nxt, lineno, lineno + 1
-                    if delete and self.skips(1):
+                    line, nxt, parsed, ok = got
+                    if ok:
+                        r = self.plain_first(source, line, nxt, parsed, lineno)
+                    else:
+                        compiled = self.compiled(source, pos, line, lineno, nxt)
+                if r is None:
+                    if compiled[9] and self.modal_call is None and not self.shape_codes:
+                        r = self.nc_first(source, compiled, pos, lineno)
+                    else:
+                        if compiled[1] or compiled[0].percent or compiled[0].program is not None:
+                            target = yield from self.execute(compiled, pos, lineno)
+                        else:
+                            target = self.macro_line(compiled, pos, lineno)  # no generator for a macro-only line
+                        if target is None:
+                            return
+                        pos, lineno = target
                         continue
-                    if letters:
-                        self.started = self.ran = True
-                        span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
-                        taken = lane(letters, values, span, self.index) if lane is not None else 0
-                        if not taken:
-                            yield plain_block(letters, values, span, self.index, number, None)
-                        self.index += 1
-                        if taken == 2:
-                            yield LANE_FULL
+                if r.__class__ is tuple:
+                    pos, lineno = r
                     continue
-                compiled = self.compiled(source, pos, line, lineno, nxt)
-            if compiled[9] and self.modal_call is None and not self.shape_codes:
-                # an NC line with expressions (X#3 Y[#1 * 2]): what execute() -> nc() -> block() do with it,
-                # its values handed to the plain-move lane without a block (yielded when the lane declines)
-                line, nxt = compiled[4], compiled[5]
-                values = self.plain_values(compiled[1], lineno, line)
-                self.current_pos = pos
-                self.started = self.ran = True
-                span = make_span(source.file, lineno, 1, len(line) + 1, line)
-                taken = lane("".join([v[0] for v in values]), tuple([v[1] for v in values]), span,
-                             self.index) if lane is not None and values else 0
-                if not taken:
-                    yield plain_block_of(values, span, self.index, compiled[0].number)
+            # a list (a closure's or plain_first's / nc_first's): a call or a return, or something to yield
+            pos, lineno = r[0]
+            if len(r) == 1:  # the lane took the motion and its chunk is full
+                yield LANE_FULL
+            elif r[1] is not None:  # the lane declined the motion: its block
+                yield r[1]
                 self.index += 1
-                if taken == 2:
-                    yield LANE_FULL
-                pos, lineno = nxt, lineno + 1
-                continue
-            if compiled[1] or compiled[0].percent or compiled[0].program is not None:
-                target = yield from self.execute(compiled, pos, lineno)
-            else:
-                target = self.macro_line(compiled, pos, lineno)  # no generator for a macro-only line
-            if target is None:
-                return
-            pos, lineno = target
+
+    def plain_first(self, source: _Source, line: str, nxt: int, parsed: tuple, lineno: int) -> Any:
+        """A plain line the plain lane takes (read_plain), not kept as a closure: as a closure's result
+        (``here``, ``[here]`` after a full chunk, ``[here, block]`` when the lane declines)."""
+        delete, number, letters, values = parsed
+        here = (nxt, lineno + 1)
+        if (delete and self.skips(1)) or not letters:
+            return here
+        self.started = self.ran = True
+        span = make_span(source.file, lineno, 1, len(line) + 1, line)
+        index = self.index
+        taken = self.lane(letters, values, span, index) if self.lane is not None else 0
+        if not taken:
+            return [here, plain_block(letters, values, span, index, number, None)]
+        self.index = index + 1
+        return here if taken == 1 else [here]
+
+    def nc_first(self, source: _Source, compiled: tuple, pos: int, lineno: int) -> Any:
+        """An NC line with expressions (X#3 Y[#1 * 2]) not kept as a closure: what execute() -> nc() -> block()
+        do with it, its values handed to the plain-move lane without a block (the block when the lane
+        declines); the result as plain_first's."""
+        line, nxt = compiled[4], compiled[5]
+        values = self.plain_values(compiled[1], lineno, line)
+        self.current_pos = pos
+        self.started = self.ran = True
+        span = make_span(source.file, lineno, 1, len(line) + 1, line)
+        index = self.index
+        lane = self.lane
+        taken = lane("".join([v[0] for v in values]), tuple([v[1] for v in values]), span,
+                     index) if lane is not None and values else 0
+        here = (nxt, lineno + 1)
+        if not taken:
+            return [here, plain_block_of(values, span, index, compiled[0].number)]
+        self.index = index + 1
+        return here if taken == 1 else [here]
+
+    def read_plain(self, frame: _Frame, pos: int, lineno: int, may_keep: bool) -> tuple | None:
+        """The line at ``pos`` (not run before as a compiled line) for run(): ``(line, next offset, its
+        scan_plain or None, whether the plain lane takes it)``, or None at the end of the text.  A plain line
+        that runs again is kept scanned (``source.plain``) and, run a second time, as a closure (``may_keep``:
+        not the start of a fast run)."""
+        source = frame.source
+        hit = source.plain.get(pos)
+        if hit is not None:  # a plain line run before (in a loop or a subprogram)
+            if may_keep and pos not in source.ops:
+                self.add_op(source, pos, lineno, hit)
+            parsed = hit[2]
+            return hit[0], hit[1], parsed, self.modal_call is None and (
+                hit[4] if self._inch() else hit[3]) and self.plain_words_ok(parsed[2], parsed[3])
+        line, nxt = source.src.line_at(pos)
+        if line is None:
+            return None
+        parsed = None
+        if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
+            parsed = scan_plain(line)
+        ok = parsed is not None and self.plain_ok(parsed[2], parsed[3], line)
+        if parsed is not None and (frame.loops or len(self.frames) > 1) and self.cached < 200_000:
+            # the line runs again: keep its scan and which unit systems its literals pass in
+            source.plain[pos] = (line, nxt, parsed, self.lengths_ok(line, False), self.lengths_ok(line, True))
+            self.cached += 1
+        return line, nxt, parsed, ok
 
     def plain_ok(self, letters: str, values: tuple, line: str) -> bool:
         """Whether a plain line's values are its words' values and the line does nothing the general path
@@ -1643,6 +1654,27 @@ _DROPPED = object()  # a word dropped for a vacant variable
 _ONE = Fraction(1)
 _TENTH = Fraction(1, 10)
 _EVAL_ERRORS = (EvalError, SystemVariableUnknown, RecursionError)
+
+
+def _argument_specs(words: list, specs: list) -> list | None:
+    """The G65 arguments of a closure (``arguments``, resolved once): ``(variable, value or None, fn, var, step,
+    shifts)`` per word (:meth:`FanucRunner.word_specs`), ``shifts`` for I, J, K (a vacant one moves the later
+    sets up); None where ``arguments`` raises."""
+    seen = {"I": 0, "J": 0, "K": 0}
+    args = []
+    for w, (q, fn, var, step) in zip(words, specs):
+        letter = w[0]
+        if letter in seen:
+            if seen[letter] >= 10:
+                return None
+            n = 4 + 3 * seen[letter] + "IJK".index(letter)
+            seen[letter] += 1
+        elif letter in ARGUMENTS_I:
+            n = ARGUMENTS_I[letter]
+        else:
+            return None
+        args.append((n, (double_of(q), q) if fn is None else None, fn, var, step, letter in seen))
+    return args
 
 
 def _static_index(tree: tuple) -> int | None:
