@@ -184,6 +184,8 @@ def double_of(q: Fraction) -> float:
     >>> double_of(Fraction(1, 10)), double_of(Fraction(-10**400))
     (0.1, -inf)
     """
+    n: int
+    d: int
     n, d = _ratio(q)
     try:
         return n / d

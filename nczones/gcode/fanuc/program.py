@@ -786,6 +786,7 @@ class FanucRunner:
                     else:
                         compiled = self.compiled(source, pos, line, lineno, nxt)
                 if r is None:
+                    assert compiled is not None
                     if compiled[9] and self.modal_call is None and not self.shape_codes:
                         r = self.nc_first(source, compiled, pos, lineno)
                     else:
