@@ -494,8 +494,9 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
             check_double(d)
         if qa is None or qb is None:
             return (d, None)
-        q: Any = qop(qa, qb)
-        return (d, q) if q._numerator / q._denominator == d else (d, None)
+        # q_mul, the Fraction built only when it rounds to the double (int / int rounds correctly)
+        n, den = qa._numerator * qb._numerator, qa._denominator * qb._denominator
+        return (d, to_fraction(n, den)) if n / den == d else (d, None)
     return mul
 
 
@@ -509,6 +510,8 @@ def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable
         return None
     if op == "/":
         exact = bool(qb._numerator)
+        # qa / qb = (qa's numerator * bn) / (qa's denominator * bd) with bd > 0 (q_div's sign rule)
+        bn, bd = (qb._denominator, qb._numerator) if qb._numerator > 0 else (-qb._denominator, -qb._numerator)
 
         def div() -> Value:
             a, qa = left()
@@ -517,8 +520,8 @@ def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable
                 check_double(d)
             if qa is None or not exact:
                 return (d, None)
-            q: Any = q_div(qa, qb)
-            return (d, q) if q._numerator / q._denominator == d else (d, None)
+            n, den = qa._numerator * bn, qa._denominator * bd
+            return (d, to_fraction(n, den)) if n / den == d else (d, None)
         return div
     if op == "+":
         def add() -> Value:
@@ -542,6 +545,7 @@ def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable
             q: Any = q_sub(qa, qb)
             return (d, q) if q._numerator / q._denominator == d else (d, None)
         return sub
+    bn, bd = qb._numerator, qb._denominator
 
     def mul() -> Value:
         a, qa = left()
@@ -550,8 +554,8 @@ def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable
             check_double(d)
         if qa is None:
             return (d, None)
-        q: Any = q_mul(qa, qb)
-        return (d, q) if q._numerator / q._denominator == d else (d, None)
+        n, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
+        return (d, to_fraction(n, den)) if n / den == d else (d, None)
     return mul
 
 
