@@ -95,6 +95,8 @@ MAX_MACRO_LEVELS = 5
 MAX_CALL_DEPTH = 15
 MAX_LOOP_NESTING = 3
 MAX_REPORTED_ERRORS = 10
+#: Lines kept as closures (FanucRunner.make_op) per run, about 1 KB each: the others run the general path.
+MAX_KEPT_LINES = 50_000
 #: A line the plain lane must not take: variables, expressions, comments, EOB, program numbers, macro
 #: statements, G65-G67.
 _PLAIN_BREAKERS = re.compile(r"[#\[(;:%]|[Oo]\d|[Gg][ \t]*0*6[5-7](?![\d.])|(?i:goto|while|end\d|do\d|if)")
@@ -234,6 +236,7 @@ class FanucRunner:
         self.lane = lane
         self.frames: list[_Frame] = [_Frame("main", self.main)]
         self.cached = 0  # lines kept compiled (in the sources' caches), bounded
+        self.kept_ops = 0  # lines kept as closures (about 1 KB each), bounded by MAX_KEPT_LINES
         self.started = False  # a % line or a block was met: the next % line ends the program
         # a block other than % and O lines ran: the next O line ends the main program (in a piece of a
         # program, the program's own number line is before it)
@@ -387,10 +390,11 @@ class FanucRunner:
     # state the closure does not cover: G66, a unit system whose literals need rounding, ...).
     def add_op(self, source: _Source, pos: int, lineno: int, entry: tuple) -> None:
         """Keep the line at ``pos`` (its compiled entry, or its ``source.plain`` entry) as a closure."""
-        if self.cached >= 200_000:
+        if self.cached >= 200_000 or self.kept_ops >= MAX_KEPT_LINES:
             source.ops[pos] = None
             return
         self.cached += 1
+        self.kept_ops += 1
         source.ops[pos] = self.plain_op(source, lineno, entry) if len(entry) == 5 else self.make_op(
             source, pos, lineno, entry)
 

@@ -319,3 +319,20 @@ def test_round_to_a_double_is_the_exact_rounding(d, step):
     exact ratio at a half): the exact value of the double rounded in rationals, halves away from zero (the
     control's rounding of a macro value in an address)."""
     assert round_to((d, None), step) == _rounded_exactly(d, step)
+
+
+def test_past_the_bound_of_kept_lines_the_rest_run_the_general_path(monkeypatch):
+    """Only MAX_KEPT_LINES lines become closures (memory: about 1 KB each); the others stay on the general path
+    with the same result."""
+    from nczones.gcode.fanuc import program
+
+    text = _program(["#2 = #1 * 0.5", "G01 X[#1 * 0.5] Y#2", "M98 P9020", "G65 P9010 X1. Y[#1]"], ["G01 Z-2."],
+                    ["G00 X#24 Y#25"], 5)
+    with _general_path_only():
+        general = _language_layer(text, 100)
+    monkeypatch.setattr(program, "MAX_KEPT_LINES", 4)
+    out: list = []
+    for _ in iter_blocks(text, "t.nc", runner_out=out):
+        pass
+    assert sum(op is not None for op in out[0].main.ops.values()) == 4
+    assert _language_layer(text, 100) == general
