@@ -20,6 +20,7 @@ face and cross it by 0.001 mm.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from contextlib import contextmanager
 from fractions import Fraction
 
@@ -82,7 +83,7 @@ def _language_layer(text: str, max_loops: int, custom: bool = False) -> tuple:
                              settings=mill(tables=_CUSTOM if custom else "").fanuc):
             got.append((b.letters, b.values, str(b.span), b.span.text, b.index, b.number,
                         [(w.letter, w.value, str(w.span), w.text) for w in b.words]))
-        error = None
+        error: list | None = None
     except GcodeError as e:
         error = [(d.code, d.message, str(d.span)) for d in e.diagnostics]
     except UnsupportedGcode as e:
@@ -94,7 +95,7 @@ def _language_layer(text: str, max_loops: int, custom: bool = False) -> tuple:
     return got, error, counters, list(variables.local), list(variables.common)
 
 
-def _both(fn, text: str, max_loops: int, custom: bool = False):
+def _both(fn: Callable[[str, int, bool], tuple], text: str, max_loops: int, custom: bool = False) -> tuple:
     with _general_path_only():
         before = fn(text, max_loops, custom)
     return before, fn(text, max_loops, custom)
@@ -276,7 +277,7 @@ def _touching(over: str, kind: str, reps: int = 300) -> tuple[str, str]:
     return "\n".join(loop) + "\n", "\n".join(unrolled) + "\n"
 
 
-def _summary(text: str):
+def _summary(text: str) -> tuple:
     machine = parse_machine(MILL.replace("{fanuc_extra}", "").replace("{tables}", _ZONE), "mill.toml")
     r = verify_text(text, machine, file="t.nc")
     return (r.verdict.label, [(v.block, v.zone, v.point, v.first_exit, str(v.span)) for v in r.violations],
