@@ -51,7 +51,7 @@ from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_su
 from ..lexer import fraction_raw, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
-__all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "EvalError",
+__all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
            "SystemVariableUnknown", "variable_index"]
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
@@ -176,6 +176,8 @@ def variable_index(value: tuple) -> int:
 #: ``(numerator, denominator)`` of a Fraction, read through its slots where Fractions have them (CPython)
 _ratio = attrgetter("_numerator", "_denominator") if to_fraction is fraction_raw else attrgetter(
     "numerator", "denominator")
+#: The denominator of a Fraction, the same way.
+denominator_of = attrgetter("_denominator") if to_fraction is fraction_raw else attrgetter("denominator")
 
 
 def double_of(q: Fraction) -> float:

@@ -64,6 +64,7 @@ from .expr import (
     FanucVariables,
     SystemVariableUnknown,
     compile_tree,
+    denominator_of,
     double_of,
     round_to,
     variable_index,
@@ -551,21 +552,22 @@ class FanucRunner:
         if specs is None:
             return None
         base = [s[0] for s in specs]
-        exprs = tuple((i, s[1], s[2], s[3]) for i, s in enumerate(specs) if s[1] is not None)
+        exprs = tuple((i, s[1], s[2], s[3], _step_denominator(s[3])) for i, s in enumerate(specs) if s[1] is not None)
         letters_all = "".join([w[0] for w in words])
         meta = [(w[0], w[3], w[4], w[5]) for w in words]
         span = make_span(source.file, lineno, 1, len(line) + 1, line)
         runner, lane, state = self, self.lane, self.state
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
+        usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
 
         def nc_line() -> Any:
             if runner.modal_call is not None:
                 return None
             vals = base[:]
             dropped = False
-            inc = inc_inch if getattr(state, "inch", False) else inc_mm
+            inc, usd = (inc_inch, usd_inch) if getattr(state, "inch", False) else (inc_mm, usd_mm)
             try:
-                for i, fn, var, step in exprs:
+                for i, fn, var, step, sd in exprs:
                     v = fn()
                     if v is VACANT or (var is not None and var() is VACANT):
                         vals[i] = _DROPPED  # a vacant variable drops its word
@@ -574,7 +576,11 @@ class FanucRunner:
                         q = v[1]
                         vals[i] = q if q is not None else Fraction(v[0])
                     else:
-                        vals[i] = round_to(v, inc if step is _UNITS else step)
+                        if step is _UNITS:
+                            step, sd = inc, usd
+                        q = v[1]
+                        # round_to's first case (a multiple of the step, kept as it is) without the call
+                        vals[i] = q if q is not None and sd and not sd % denominator_of(q) else round_to(v, step)
             except _EVAL_ERRORS:
                 return None
             if dropped:
@@ -711,13 +717,14 @@ class FanucRunner:
             return None
         runner, frames, variables, state = self, self.frames, self.vars, self.state
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
+        usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
         jump = [body, None]  # (a list: run() takes the new frame's lines)
 
         def g65() -> Any:
             values = [VACANT] * (LOCALS + 1)  # the macro's local level: its arguments, the others vacant
-            inc = inc_inch if getattr(state, "inch", False) else inc_mm
+            inc, usd = (inc_inch, usd_inch) if getattr(state, "inch", False) else (inc_mm, usd_mm)
             try:
-                for n, const, fn, var, step, shifts in args:
+                for n, const, fn, var, step, shifts, sd in args:
                     if fn is None:
                         values[n] = const
                         continue
@@ -730,7 +737,11 @@ class FanucRunner:
                         q = v[1]
                         q = q if q is not None else Fraction(v[0])
                     else:
-                        q = round_to(v, inc if step is _UNITS else step)
+                        if step is _UNITS:
+                            step, sd = inc, usd
+                        q = v[1]
+                        if q is None or not sd or sd % denominator_of(q):  # else kept as round_to keeps it
+                            q = round_to(v, step)
                     values[n] = (double_of(q), q)
             except _EVAL_ERRORS:
                 return None
@@ -1663,7 +1674,7 @@ _EVAL_ERRORS = (EvalError, SystemVariableUnknown, RecursionError)
 
 def _argument_specs(words: list, specs: list) -> list | None:
     """The G65 arguments of a closure (``arguments``, resolved once): ``(variable, value or None, fn, var, step,
-    shifts)`` per word (:meth:`FanucRunner.word_specs`), ``shifts`` for I, J, K (a vacant one moves the later
+    shifts, step denominator)`` per word (:meth:`FanucRunner.word_specs`), ``shifts`` for I, J, K (a vacant one moves the later
     sets up); None where ``arguments`` raises."""
     seen = {"I": 0, "J": 0, "K": 0}
     args = []
@@ -1678,8 +1689,15 @@ def _argument_specs(words: list, specs: list) -> list | None:
             n = ARGUMENTS_I[letter]
         else:
             return None
-        args.append((n, (double_of(q), q) if fn is None else None, fn, var, step, letter in seen))
+        args.append((n, (double_of(q), q) if fn is None else None, fn, var, step, letter in seen,
+                     _step_denominator(step)))
     return args
+
+
+def _step_denominator(step: Any) -> int:
+    """The denominator of a step 1/n (round_to keeps a value whose denominator divides it), else 0 (the
+    linear axes' step, chosen per execution, and steps m/n: round_to decides)."""
+    return step.denominator if isinstance(step, Fraction) and step.numerator == 1 else 0
 
 
 def _static_index(tree: tuple) -> int | None:

@@ -205,6 +205,10 @@ _CASES = {
     # X = #1 * 0.00005 is rounded to 0.0001 inch in G20 and to 0.001 mm in G21 (the same line in both)
     "G20 and G21 in the body": _loop("G20", "M98 P9020", "G21", "M98 P9020", sub=("G01 X[#1 * 0.00005] Y1.",)),
     "G20 and G21 around the loop": _loop("IF [#1 EQ 2] GOTO 40", "G01 X[#1 * 0.00005] Y1.", "N40 G20"),
+    # X = #1 / 2000 (exact) is rounded to 0.001 mm, halves away from zero, as an argument and as a word
+    "arguments and words rounded to the increment": _loop("G65 P9010 X[#1 * 0.0005] Y[#1 / 3]",
+                                                          "G01 X[#1 * 0.0005] Y[#1 / 3]",
+                                                          macro=("G01 X[#24 * 1000] Y#25",)),
     "decimal point input words and rounded literals": _loop("G01 X100 Y1.2345", "G00 X[#1] Y0"),
     "a nested loop leaving each outer iteration": _loop("#2 = 0", "WHILE [#2 LT #1] DO2", "G01 X[#2] Y[#1]",
                                                         "#2 = #2 + 1", "END2"),
