@@ -109,6 +109,26 @@ def linuxcnc_macro_program(lines: int) -> str:
         "o100 endwhile", "M30"]) + "\n"
 
 
+def linuxcnc_call_program(lines: int) -> str:
+    """The LinuxCNC equivalent of :func:`call_program` (rs274's peer of the G65 row): a sub with ``G0 X#1 Y#2``
+    / ``G1 Z-#3`` called with three arguments per iteration."""
+    reps = max(1, lines // 7)
+    return "\n".join([
+        "o9010 sub", "G0 X#1 Y#2", "G1 Z-#3", "o9010 endsub",
+        "G90 G17 G21 G54 F300", "#1 = 0", f"o100 while [#1 LT {reps}]",
+        "o9010 call [#1 * 0.1] [#1 * 0.05] [2]", "#1 = [#1 + 1]", "o100 endwhile", "M30"]) + "\n"
+
+
+def linuxcnc_subprogram_program(lines: int) -> str:
+    """The LinuxCNC equivalent of :func:`subprogram_program` (rs274's peer of the M98 row): a sub with
+    ``G0 X[#31 * 0.1] Y[#31 * 0.05]`` / ``G1 Z-2.`` called without arguments, #31 the global counter."""
+    reps = max(1, lines // 6)
+    return "\n".join([
+        "o9020 sub", "G0 X[#31 * 0.1] Y[#31 * 0.05]", "G1 Z-2.", "o9020 endsub",
+        "G90 G17 G21 G54 F300", "#31 = 0", f"o100 while [#31 LT {reps}]",
+        "o9020 call", "#31 = [#31 + 1]", "o100 endwhile", "M30"]) + "\n"
+
+
 def program(name: str, lines: int) -> tuple[str, int]:
     """The program of a case and the lines it executes."""
     if name in ("cam", "cam-naive"):

@@ -39,7 +39,9 @@ and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
 ``G2``/``G3 X.. Y.. R..``, ``bench_gcode.rarc_program``; LinuxCNC, and Fanuc without an rs274 column), stellabee1.ngc with
 ``--arc-tolerance linuxcnc``, the corpus's ``--corpus`` largest LinuxCNC
 programs, and generated Fanuc Custom Macro B loops (a WHILE loop, a G65 call per iteration, an M98 call
-per iteration) and LinuxCNC o-word loops of about ``--macro`` executed lines.  Interpretation and verify
+per iteration; rs274's column, marked ``*``, is rs274 on the LinuxCNC equivalent: the o-word loop, a sub called
+with three arguments, a sub called without) and LinuxCNC o-word loops of about ``--macro`` executed lines.
+Interpretation and verify
 run with a loop bound above any row's iterations (``--max-iterations``), so a row of a million lines is
 interpreted to its end rather than stopped as ``unknown`` at the default bound of 100,000 iterations.
 """
@@ -98,6 +100,9 @@ print(n)
 """
 
 
+#: The LinuxCNC equivalent rs274 runs for a Fanuc row (its file -> the equivalent's file), set by :func:`programs`.
+PEER_OF: dict[Path, Path] = {}
+
 #: Runs of each command per row; the least CPU time is printed (``--repeat``).
 REPEAT = [1]
 
@@ -144,23 +149,29 @@ print(n)
 
 
 def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
-    """(name, file, dialect, arc tolerance) of every row."""
+    """(name, file, dialect, arc tolerance) of every row; :data:`PEER_OF` gets the LinuxCNC equivalent rs274
+    runs for a Fanuc row that has one."""
     import bench_fanuc
     import bench_gcode
 
     out = []
 
-    def gen(name: str, text: str, dialect: str = "linuxcnc", tol: str = "") -> None:
+    def gen(name: str, text: str, dialect: str = "linuxcnc", tol: str = "", peer: str = "") -> None:
         p = d / f"program{len(out)}.ngc"  # one file per row (names alone would collide)
         p.write_text(text)
         out.append((name, p, dialect, tol))
+        if peer:
+            q = d / f"peer{len(out)}.ngc"
+            q.write_text(peer)
+            PEER_OF[p] = q
 
     if not a.skip_large:
         gen(f"G1, {a.lines:,} lines", bench_gcode.cam_program(a.lines))
     gen(f"G1, {a.small:,} lines", bench_gcode.cam_program(a.small))
     gen(f"an expression on every line, {a.small:,}", bench_gcode.expr_program(a.small))
     gen(f"R-format arcs, {a.small:,} lines", bench_gcode.rarc_program(a.small))
-    gen(f"R-format arcs, Fanuc, {a.small:,} lines", bench_gcode.rarc_program(a.small, dialect="fanuc"), "fanuc")
+    gen(f"R-format arcs, Fanuc, {a.small:,} lines", bench_gcode.rarc_program(a.small, dialect="fanuc"), "fanuc",
+        peer=bench_gcode.rarc_program(a.small))  # the same arcs in LinuxCNC's words
     if STELLABEE.is_file():
         out.append(("stellabee1.ngc --arc-tolerance linuxcnc", STELLABEE, "linuxcnc", "linuxcnc"))
     manifest = CORPUS / "MANIFEST.tsv"
@@ -173,9 +184,14 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
             if STELLABEE.is_file() and (CORPUS / r["path"]).resolve() == STELLABEE.resolve():
                 continue
             out.append((f"corpus {Path(r['path']).name}", CORPUS / r["path"], "linuxcnc", ""))
-    gen(f"Fanuc Macro B loop, {a.macro:,} executed lines", bench_fanuc.macro_program(a.macro), "fanuc")
-    gen(f"Fanuc G65 call per iteration, {a.macro:,} lines", bench_fanuc.call_program(a.macro), "fanuc")
-    gen(f"Fanuc M98 call per iteration, {a.macro:,} lines", bench_fanuc.subprogram_program(a.macro), "fanuc")
+    # rs274 runs the LinuxCNC equivalent of each Fanuc loop row (the o-word loop, a sub called with or without
+    # arguments): its column is marked with '*'
+    gen(f"Fanuc Macro B loop, {a.macro:,} executed lines", bench_fanuc.macro_program(a.macro), "fanuc",
+        peer=bench_fanuc.linuxcnc_macro_program(a.macro))
+    gen(f"Fanuc G65 call per iteration, {a.macro:,} lines", bench_fanuc.call_program(a.macro), "fanuc",
+        peer=bench_fanuc.linuxcnc_call_program(a.macro))
+    gen(f"Fanuc M98 call per iteration, {a.macro:,} lines", bench_fanuc.subprogram_program(a.macro), "fanuc",
+        peer=bench_fanuc.linuxcnc_subprogram_program(a.macro))
     gen(f"LinuxCNC o-word loop, {a.macro:,} executed lines", bench_fanuc.linuxcnc_macro_program(a.macro))
     return out
 
@@ -231,8 +247,9 @@ def main() -> None:
             machine.write_text(BOX.format(dialect=dialect))
             regex, _ = cpu_of([sys.executable, "-c", REGEX_PASS, str(path)], a.timeout)
             peer, peer_code = None, None
-            if rs274 is not None and dialect == "linuxcnc":
-                peer, peer_code = cpu_of([rs274, "-g", str(path), os.devnull], a.timeout)
+            peer_path = path if dialect == "linuxcnc" else PEER_OF.get(path)
+            if rs274 is not None and peer_path is not None:
+                peer, peer_code = cpu_of([rs274, "-g", str(peer_path), os.devnull], a.timeout)
             interp, _ = cpu_of([python, "-c", INTERPRET, str(path), str(machine), tol], a.timeout, env)
             # --max-iterations: a loop row of more than 100,000 iterations is interpreted to its end (the default
             # bound would stop it early as unknown)
@@ -244,7 +261,8 @@ def main() -> None:
             rss = LAST_RSS[0]
             r_peer = "" if peer is None or verify is None else f"{verify / peer:.2f}"
             r_regex = "" if regex is None or verify is None else f"{verify / regex:.2f}"
-            print(f"{name[:58]:58} {fmt(regex):>7} {fmt(peer) if rs274 and dialect == 'linuxcnc' else 'n/a':>7} {fmt(interp):>7} "
+            shown = 'n/a' if not rs274 or peer_path is None else fmt(peer) + ('*' if peer_path != path else '')
+            print(f"{name[:58]:58} {fmt(regex):>7} {shown:>7} {fmt(interp):>7} "
                   f"{fmt(verify):>7}  {code if code is not None else '-':>4}  "
                   f"{peer_code if peer_code is not None else '-':>10}  {r_peer:>12}  {r_regex:>12}  "
                   f"{'' if rss is None else f'{rss:.0f}':>10}  {os.getloadavg()[0]:4.1f}", flush=True)

@@ -44,13 +44,14 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
+from operator import attrgetter
 from typing import Any, TypeAlias
 
 from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_sub
 from ..lexer import fraction_raw, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
-__all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "EvalError",
+__all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
            "SystemVariableUnknown", "variable_index"]
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
@@ -132,6 +133,13 @@ class FanucVariables:
         self.depth += 1
         return saved
 
+    def enter_level(self, local: list) -> list:
+        """:meth:`push_level` with the new level given whole (``LOCALS + 1`` values, vacant where no argument)."""
+        saved = self.local
+        self.local = local
+        self.depth += 1
+        return saved
+
     def pop_level(self, saved: list) -> None:
         self.local = saved
         self.depth -= 1
@@ -165,16 +173,29 @@ def variable_index(value: tuple) -> int:
     return -n if d < 0 else n
 
 
+#: ``(numerator, denominator)`` of a Fraction, read through its slots where Fractions have them (CPython)
+_ratio = attrgetter("_numerator", "_denominator") if to_fraction is fraction_raw else attrgetter(
+    "numerator", "denominator")
+#: The denominator of a Fraction, the same way.
+denominator_of = attrgetter("_denominator") if to_fraction is fraction_raw else attrgetter("denominator")
+
+
 def double_of(q: Fraction) -> float:
     """The double nearest ``q``, infinite beyond the double range (``float(q)`` raises there).
 
     >>> double_of(Fraction(1, 10)), double_of(Fraction(-10**400))
     (0.1, -inf)
     """
+    n: int
+    d: int
+    n, d = _ratio(q)
     try:
-        return q.numerator / q.denominator
+        return n / d
     except OverflowError:
         return math.inf if q > 0 else -math.inf
+
+
+_NEAR_HALF_LOW, _NEAR_HALF_HIGH = 0.5 - 2.0**-20, 0.5 + 2.0**-20
 
 
 def round_to(value: tuple, step: Fraction) -> Fraction:
@@ -184,11 +205,23 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     (Fraction(6173, 500), Fraction(-3, 1))
     """
     q: Fraction | None = value[1]
-    if q is None:  # the double's exact value (its ratio is in lowest terms), without building a Fraction first
-        qn, qd = value[0].as_integer_ratio()
+    sn, sd = _ratio(step)
+    if q is None:
+        d = value[0]
+        if sn == 1:
+            # |d| / step in doubles: below 2**30 its error is under 2**-24, so away from a half (by 2**-20) the
+            # nearest integer is that of the exact quotient; at a half, or beyond, the exact path below decides
+            x = abs(d) * sd
+            if x < 1073741824.0:
+                m = math.floor(x)
+                frac = x - m  # exact (x and m are doubles below 2**30)
+                if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH:
+                    n = m + 1 if frac > 0.5 else m
+                    return to_fraction(-n if d < 0 else n, sd)
+        # the double's exact value (its ratio is in lowest terms), without building a Fraction first
+        qn, qd = d.as_integer_ratio()
     else:
-        qn, qd = q.numerator, q.denominator
-    sn, sd = step.numerator, step.denominator
+        qn, qd = _ratio(q)
     if sn == 1 and sd % qd == 0:  # already a multiple of the step (a decimal literal, an exact sum)
         return q if q is not None else to_fraction(qn, qd)
     # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)
@@ -374,11 +407,19 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
 
         def neg():
             d, q = inner()
-            return (-d, -q if q is not None else None)
+            if q is None:
+                return (-d, None)
+            n, den = _ratio(q)
+            return (-d, to_fraction(-n, den))
         return neg
     if tag == BIN:
         op = node[1]
         left = compile_tree(node[2], variables, ctx, in_address)
+        if node[3][0] == NUM and _SLOTS:  # a number on the right (#1 + 1, #1 LT 10): no call for it
+            const = (node[3][1], node[3][2])
+            fast = _with_constant(op, left, const)
+            if fast is not None:
+                return fast
         right = compile_tree(node[3], variables, ctx, in_address)
         if op in ("+", "-", "*", "/"):
             if _SLOTS:
@@ -455,9 +496,85 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
             check_double(d)
         if qa is None or qb is None:
             return (d, None)
-        q: Any = qop(qa, qb)
-        return (d, q) if q._numerator / q._denominator == d else (d, None)
+        # q_mul, the Fraction built only when it rounds to the double (int / int rounds correctly)
+        n, den = qa._numerator * qb._numerator, qa._denominator * qb._denominator
+        return (d, to_fraction(n, den)) if n / den == d else (d, None)
     return mul
+
+
+def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable[[], Value] | None:
+    """``left op const`` for + - * / (a divisor not 0) and the order comparisons: :func:`_arithmetic` and
+    :data:`_COMPARE` with the right operand read once (the same operations in the same order), else None."""
+    b, qb = const
+    if op in _COMPARE:
+        return _COMPARE_CONSTANT[op](left, b)
+    if op not in ("+", "-", "*", "/") or (op == "/" and b == 0.0) or qb is None:
+        return None
+    if op == "/":
+        exact = bool(qb._numerator)
+        # qa / qb = (qa's numerator * bn) / (qa's denominator * bd) with bd > 0 (q_div's sign rule)
+        bn, bd = (qb._denominator, qb._numerator) if qb._numerator > 0 else (-qb._denominator, -qb._numerator)
+
+        def div() -> Value:
+            a, qa = left()
+            d = a / b
+            if d - d:
+                check_double(d)
+            if qa is None or not exact:
+                return (d, None)
+            n, den = qa._numerator * bn, qa._denominator * bd
+            return (d, to_fraction(n, den)) if n / den == d else (d, None)
+        return div
+    if op == "+":
+        def add() -> Value:
+            a, qa = left()
+            d = a + b
+            if d - d:
+                check_double(d)
+            if qa is None:
+                return (d, None)
+            q: Any = q_add(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return add
+    if op == "-":
+        def sub() -> Value:
+            a, qa = left()
+            d = a - b
+            if d - d:
+                check_double(d)
+            if qa is None:
+                return (d, None)
+            q: Any = q_sub(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return sub
+    bn, bd = qb._numerator, qb._denominator
+
+    def mul() -> Value:
+        a, qa = left()
+        d = a * b
+        if d - d:
+            check_double(d)
+        if qa is None:
+            return (d, None)
+        n, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
+        return (d, to_fraction(n, den)) if n / den == d else (d, None)
+    return mul
+
+
+def _gt_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] > b else _FALSE
+
+
+def _ge_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] >= b else _FALSE
+
+
+def _lt_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] < b else _FALSE
+
+
+def _le_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
+    return lambda: _TRUE if left()[0] <= b else _FALSE
 
 
 def _gt(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
@@ -478,6 +595,7 @@ def _le(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], V
 
 #: The order comparisons as closures (:func:`_binop`'s gt/ge/lt/le: the doubles compared, vacant as 0).
 _COMPARE = {"gt": _gt, "ge": _ge, "lt": _lt, "le": _le}
+_COMPARE_CONSTANT = {"gt": _gt_constant, "ge": _ge_constant, "lt": _lt_constant, "le": _le_constant}
 
 
 def evaluate_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None) -> Value:

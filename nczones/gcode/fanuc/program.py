@@ -56,12 +56,15 @@ from ..program import (
     interpretation_spent,
 )
 from .expr import (
+    COMMON_FIRST,
+    COMMON_LAST,
     LOCALS,
     VACANT,
     Context,
     FanucVariables,
     SystemVariableUnknown,
     compile_tree,
+    denominator_of,
     double_of,
     round_to,
     variable_index,
@@ -93,6 +96,8 @@ MAX_MACRO_LEVELS = 5
 MAX_CALL_DEPTH = 15
 MAX_LOOP_NESTING = 3
 MAX_REPORTED_ERRORS = 10
+#: Lines kept as closures (FanucRunner.make_op) per run, about 1 KB each: the others run the general path.
+MAX_KEPT_LINES = 50_000
 #: A line the plain lane must not take: variables, expressions, comments, EOB, program numbers, macro
 #: statements, G65-G67.
 _PLAIN_BREAKERS = re.compile(r"[#\[(;:%]|[Oo]\d|[Gg][ \t]*0*6[5-7](?![\d.])|(?i:goto|while|end\d|do\d|if)")
@@ -120,7 +125,7 @@ class _Loop:
 class _Source:
     """A program text and its index of program numbers and sequence-number labels."""
 
-    __slots__ = ("src", "file", "programs", "extents", "labels", "cache", "plain")
+    __slots__ = ("src", "file", "programs", "extents", "labels", "cache", "plain", "ops")
 
     def __init__(self, src: _LineSource, file: str):
         self.src = src
@@ -132,6 +137,8 @@ class _Source:
         #: offset -> (line, next offset, scan_plain of it, lengths_ok metric, lengths_ok inch) of a plain line
         #: that runs again (in a loop or a subprogram; FanucRunner.run)
         self.plain: dict[int, tuple] = {}
+        #: offset -> the line run again as one closure (FanucRunner.make_op), or None when it has none
+        self.ops: dict[int, Callable[[], Any] | None] = {}
 
     def index(self) -> None:
         """Find every program number line and every block with a sequence number (once)."""
@@ -230,6 +237,7 @@ class FanucRunner:
         self.lane = lane
         self.frames: list[_Frame] = [_Frame("main", self.main)]
         self.cached = 0  # lines kept compiled (in the sources' caches), bounded
+        self.kept_ops = 0  # lines kept as closures (about 1 KB each), bounded by MAX_KEPT_LINES
         self.started = False  # a % line or a block was met: the next % line ends the program
         # a block other than % and O lines ran: the next O line ends the main program (in a piece of a
         # program, the program's own number line is before it)
@@ -372,88 +380,510 @@ class FanucRunner:
             self.cached += 1
         return out
 
+    # -- lines run again, as closures ---------------------------------------------------------
+    # A line that runs a second time (in a loop, a subprogram, a macro) is kept as one closure of no
+    # arguments (``source.ops``) doing what the general path does with it: it returns the next
+    # ``(pos, lineno)`` in the same frame; ``[pos_lineno, None]`` after a call or a return (another frame);
+    # ``[here]`` when the plain-move lane took its motion and the chunk is full (run() yields LANE_FULL);
+    # ``[here, block]`` when the lane declined it (run() yields the block); or None,
+    # having changed nothing, when the general path must run the line this time (the first entry of a
+    # loop, an error to report with its span, a vacant word that shifts an argument, a bound reached, a
+    # state the closure does not cover: G66, a unit system whose literals need rounding, ...).
+    def add_op(self, source: _Source, pos: int, lineno: int, entry: tuple) -> None:
+        """Keep the line at ``pos`` (its compiled entry, or its ``source.plain`` entry) as a closure."""
+        if self.cached >= 200_000 or self.kept_ops >= MAX_KEPT_LINES:
+            source.ops[pos] = None
+            return
+        self.cached += 1
+        self.kept_ops += 1
+        source.ops[pos] = self.plain_op(source, lineno, entry) if len(entry) == 5 else self.make_op(
+            source, pos, lineno, entry)
+
+    def make_op(self, source: _Source, pos: int, lineno: int, compiled: tuple) -> Callable[[], Any] | None:
+        fl, words, assigns, stmt, line, nxt, _gcodes, calls, plain, simple = compiled
+        if fl.delete or fl.percent or fl.program is not None or fl.unmodelled is not None:
+            return None
+        here = (nxt, lineno + 1)
+        if words:
+            if assigns or stmt is not None:
+                return None
+            if simple:
+                return None if self.shape_codes else self.nc_op(source, pos, lineno, compiled, here)
+            if calls and plain:
+                return self.call_op(source, pos, lineno, compiled, here)
+            return None
+        if stmt is None:
+            return self.assign_op(fl.assigns, assigns, here, None)
+        if assigns:
+            return None
+        kind = stmt[0]
+        if kind == "while":
+            return self.while_op(source, pos, lineno, stmt, here, line)
+        if kind == "end":
+            return self.end_op(stmt[1])
+        if kind == "if" and stmt[2][0] == "assign":
+            return self.assign_op(fl.stmt[2][1], stmt[2][1], here, stmt[1])
+        return None
+
+    def assign_op(self, raw: tuple, assigns: tuple, here: tuple[int, int],
+                  cond: Callable[[], tuple] | None) -> Callable[[], Any] | None:
+        """``#n = value`` (n a local or common variable written as a number), or ``IF [cond] THEN #n =
+        value``, or a line with nothing to execute (a comment, a sequence number alone)."""
+        runner, variables = self, self.vars
+        if not assigns:
+            def nothing() -> Any:
+                runner.started = runner.ran = True
+                return here
+            return nothing
+        if len(assigns) != 1:
+            return None
+        n = _static_index(raw[0][0])
+        if n is None or not (0 < n <= LOCALS or COMMON_FIRST <= n <= COMMON_LAST):
+            return None
+        value = assigns[0][1]
+        common = variables.common
+        local = n <= LOCALS
+
+        def assign() -> Any:
+            try:
+                if cond is not None and cond()[0] == 0.0:
+                    runner.started = runner.ran = True
+                    return here
+                v = value()
+            except _EVAL_ERRORS:
+                return None
+            if variables.on_write is not None:
+                return None
+            if local:
+                variables.local[n] = v
+            else:
+                common[n] = v
+            runner.started = runner.ran = True
+            return here
+        return assign
+
+    def while_op(self, source: _Source, pos: int, lineno: int, stmt: tuple, here: tuple[int, int],
+                 line: str) -> Callable[[], Any] | None:
+        """``WHILE [cond] DOm`` met again at the head of its loop (``statement``'s loop bookkeeping, the END
+        found once)."""
+        m = stmt[2]
+        if m not in (1, 2, 3):
+            return None
+        try:
+            end_pos, end_line = self.find_end(source, m, here[0], lineno + 1, lineno, line)
+        except GcodeError:
+            return None
+        after = (source.src.line_at(end_pos)[1], end_line + 1)
+        head = (pos, lineno)
+        cond = stmt[1]
+        runner, frames, bound = self, self.frames, self.max_loops
+
+        def loop_head() -> Any:
+            loops = frames[-1].loops
+            if not loops:
+                return None
+            loop = loops[-1]
+            if loop.head != head:
+                return None
+            try:
+                c = cond()
+            except _EVAL_ERRORS:
+                return None
+            if c[0] != 0.0:
+                if loop.count >= bound or interpretation_spent() is not None:
+                    return None  # the general path counts it and stops there
+                loop.count += 1
+                runner.started = runner.ran = True
+                return here
+            loops.pop()
+            runner.started = runner.ran = True
+            return after
+        return loop_head
+
+    def end_op(self, m: int) -> Callable[[], Any] | None:
+        """``ENDm`` of the innermost open loop: back to its head."""
+        if m not in (1, 2, 3):
+            return None
+        runner, frames = self, self.frames
+
+        def loop_end() -> Any:
+            loops = frames[-1].loops
+            if not loops or loops[-1].m != m:
+                return None
+            runner.started = runner.ran = True
+            return loops[-1].head
+        return loop_end
+
+    def word_specs(self, words: tuple) -> list | None:
+        """Per word of a plain NC line: ``(value, None, None)`` for a literal whose value does not depend on
+        the unit system and is not noted (else None for the whole line), ``(None, fn, var, step)`` for an
+        expression: ``step`` the increment it is rounded to, :data:`_UNITS` for the linear axes' (inch or
+        metric), None for an address that takes the value as it is (``plain_values``)."""
+        specs: list = []
+        for letter, kind, payload, _col, _end, _text, var in words:
+            if kind == EXPR:
+                if letter in LENGTH_LETTERS:
+                    step: Any = self._inc_mm if letter in "ABC" else _UNITS
+                elif letter in INTEGER_LETTERS:
+                    step = _ONE
+                elif letter == "G":
+                    step = _TENTH
+                else:
+                    step = None
+                specs.append((None, payload, var, step))
+                continue
+            q, point = payload
+            if letter in LENGTH_LETTERS:
+                if not point:
+                    if q:
+                        return None  # counted (and scaled) per execution by literal()
+                else:
+                    for inc in ((self._inc_mm,) if letter in "ABC" else (self._inc_mm, self._inc_inch)):
+                        if (q.numerator * inc.denominator) % (q.denominator * inc.numerator):
+                            return None  # rounded (and counted) per execution by literal()
+            specs.append((q, None, None, None))
+        return specs
+
+    def nc_op(self, source: _Source, pos: int, lineno: int, compiled: tuple,
+              here: tuple[int, int]) -> Callable[[], Any] | None:
+        """An NC line with expressions for the plain-move lane (run()'s ``compiled[9]`` branch)."""
+        words, line, number = compiled[1], compiled[4], compiled[0].number
+        specs = self.word_specs(words)
+        if specs is None:
+            return None
+        base = [s[0] for s in specs]
+        exprs = tuple((i, s[1], s[2], s[3], _step_denominator(s[3])) for i, s in enumerate(specs) if s[1] is not None)
+        letters_all = "".join([w[0] for w in words])
+        meta = [(w[0], w[3], w[4], w[5]) for w in words]
+        span = make_span(source.file, lineno, 1, len(line) + 1, line)
+        runner, lane, state = self, self.lane, self.state
+        inc_mm, inc_inch = self._inc_mm, self._inc_inch
+        usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
+
+        def nc_line() -> Any:
+            if runner.modal_call is not None:
+                return None
+            vals = base[:]
+            dropped = False
+            inc, usd = (inc_inch, usd_inch) if getattr(state, "inch", False) else (inc_mm, usd_mm)
+            try:
+                for i, fn, var, step, sd in exprs:
+                    v = fn()
+                    if v is VACANT or (var is not None and var() is VACANT):
+                        vals[i] = _DROPPED  # a vacant variable drops its word
+                        dropped = True
+                    elif step is None:
+                        q = v[1]
+                        vals[i] = q if q is not None else Fraction(v[0])
+                    else:
+                        if step is _UNITS:
+                            step, sd = inc, usd
+                        q = v[1]
+                        # round_to's first case (a multiple of the step, kept as it is) without the call
+                        vals[i] = q if q is not None and sd and not sd % denominator_of(q) else round_to(v, step)
+            except _EVAL_ERRORS:
+                return None
+            if dropped:
+                keep = [i for i, q in enumerate(vals) if q is not _DROPPED]
+                letters = "".join([letters_all[i] for i in keep])
+                values = tuple([vals[i] for i in keep])
+            else:
+                keep, letters, values = None, letters_all, tuple(vals)
+            runner.current_pos = pos
+            runner.started = runner.ran = True
+            index = runner.index
+            taken = lane(letters, values, span, index) if lane is not None and values else 0
+            if taken:
+                runner.index = index + 1
+                return here if taken == 1 else [here]
+            rows = [(meta[i][0], vals[i]) + meta[i][1:] for i in (keep if keep is not None else range(len(vals)))]
+            return [here, plain_block_of(rows, span, index, number)]
+        return nc_line
+
+    def plain_op(self, source: _Source, lineno: int, hit: tuple) -> Callable[[], Any] | None:
+        """A plain line (``source.plain``) for the plain-move lane: what run() does with it."""
+        line, nxt, parsed, ok_mm, ok_inch = hit
+        delete, number, letters, values = parsed
+        if delete or not letters or not (ok_mm or ok_inch):
+            return None
+        # plain_words_ok depends on the run's state only through in_custom() (custom G and T codes)
+        moving = bool(self.custom_g) or self.custom_t is not None
+        if not moving and not self.plain_words_ok(letters, values):
+            return None
+        here = (nxt, lineno + 1)
+        span = make_span(source.file, lineno, 1, len(line) + 1, line)
+        runner, lane, state = self, self.lane, self.state
+
+        def plain_line() -> Any:
+            if runner.modal_call is not None or not (ok_inch if getattr(state, "inch", False) else ok_mm):
+                return None
+            if moving and not runner.plain_words_ok(letters, values):
+                return None
+            runner.started = runner.ran = True
+            index = runner.index
+            taken = lane(letters, values, span, index) if lane is not None else 0
+            if taken:
+                runner.index = index + 1
+                return here if taken == 1 else [here]
+            return [here, plain_block(letters, values, span, index, number, None)]
+        return plain_line
+
+    def call_op(self, source: _Source, pos: int, lineno: int, compiled: tuple,
+                here: tuple[int, int]) -> Callable[[], Any] | None:
+        """A bare ``M99``, an ``M98 P<n>`` alone, a ``G65 P<n> [L<n>] arguments`` (``execute``'s call lines)."""
+        words, line = compiled[1], compiled[4]
+        w = words[0]
+        if w[1] != LITERAL:
+            return None
+        if w[0] == "M" and len(words) == 1 and w[2][0] == 99:
+            return self.m99_op(pos)
+        if w[0] == "M" and len(words) == 2 and w[2][0] == 98 and words[1][0] == "P" and words[1][1] == LITERAL:
+            return self.m98_op(pos, lineno, line, words[1][2][0], here)
+        if w[0] == "G" and w[2][0] == 65:
+            return self.g65_op(pos, lineno, line, words, here)
+        return None
+
+    def m99_op(self, pos: int) -> Callable[[], Any] | None:
+        """A bare ``M99`` ending the last (or only) repetition of a subprogram or macro call."""
+        runner, frames, variables = self, self.frames, self.vars
+
+        def m99() -> Any:
+            frame = frames[-1]
+            if frame.repeats != 1 or frame.kind == "main":
+                return None
+            runner.current_pos = pos
+            runner.started = runner.ran = True
+            frame.repeats = 0
+            frames.pop()
+            if frame.saved is not None:
+                variables.pop_level(frame.saved)
+            return [frame.ret, None]
+        return m99
+
+    def m98_op(self, pos: int, lineno: int, line: str, p: Fraction,
+               here: tuple[int, int]) -> Callable[[], Any] | None:
+        """``M98 P<n>`` (``m98`` and ``call_sub``: the program found once)."""
+        if p.denominator != 1 or p < 0:
+            return None
+        count, program = divmod(int(p), 10000) if p > 9999 else (1, int(p))
+        if count == 0 or count > self.max_loops:
+            return None
+        try:
+            target, body = self.locate(program, lineno, line, "M98")
+        except GcodeError:
+            return None
+        runner, frames = self, self.frames
+        jump = [body, None]  # (a list: run() takes the new frame's lines)
+
+        def m98() -> Any:
+            if len(frames) >= MAX_CALL_DEPTH:
+                return None
+            runner.current_pos = pos
+            runner.started = runner.ran = True
+            frames.append(_Frame("m98", target, program, here, body, count))
+            return jump
+        return m98
+
+    def g65_op(self, pos: int, lineno: int, line: str, words: tuple,
+               here: tuple[int, int]) -> Callable[[], Any] | None:
+        """``G65 P<n> [L<n>]`` and its arguments (``calls``, ``call_words``, ``arguments``, ``call_macro``:
+        the argument letters mapped to variables and the program found once)."""
+        pword = lword = None
+        rest = []
+        for w in words[1:]:
+            if w[0] == "P" and pword is None:
+                pword = w
+            elif w[0] == "L" and lword is None:
+                lword = w
+            elif w[0] == "G":
+                return None
+            else:
+                rest.append(w)
+        if pword is None or pword[1] != LITERAL or (lword is not None and lword[1] != LITERAL):
+            return None
+        p, repeats = pword[2][0], lword[2][0] if lword is not None else _ONE
+        if p.denominator != 1 or p < 0 or repeats.denominator != 1 or not 0 < repeats <= self.max_loops:
+            return None
+        specs = self.word_specs(tuple(rest))
+        if specs is None:
+            return None
+        args = _argument_specs(rest, specs)
+        if args is None:
+            return None
+        program, count = int(p), int(repeats)
+        try:
+            target, body = self.locate(program, lineno, line, "G65")
+        except GcodeError:
+            return None
+        runner, frames, variables, state = self, self.frames, self.vars, self.state
+        inc_mm, inc_inch = self._inc_mm, self._inc_inch
+        usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
+        jump = [body, None]  # (a list: run() takes the new frame's lines)
+
+        def g65() -> Any:
+            values = [VACANT] * (LOCALS + 1)  # the macro's local level: its arguments, the others vacant
+            inc, usd = (inc_inch, usd_inch) if getattr(state, "inch", False) else (inc_mm, usd_mm)
+            try:
+                for n, const, fn, var, step, shifts, sd in args:
+                    if fn is None:
+                        values[n] = const
+                        continue
+                    v = fn()
+                    if v is VACANT or (var is not None and var() is VACANT):
+                        if shifts:
+                            return None  # the later I, J, K words move up a set: the general path
+                        continue  # a vacant variable drops its word
+                    if step is None:
+                        q = v[1]
+                        q = q if q is not None else Fraction(v[0])
+                    else:
+                        if step is _UNITS:
+                            step, sd = inc, usd
+                        q = v[1]
+                        if q is None or not sd or sd % denominator_of(q):  # else kept as round_to keeps it
+                            q = round_to(v, step)
+                    values[n] = (double_of(q), q)
+            except _EVAL_ERRORS:
+                return None
+            if len(frames) > MAX_MACRO_LEVELS and (len(frames) >= MAX_CALL_DEPTH or sum(
+                    1 for f in frames if f.saved is not None) >= MAX_MACRO_LEVELS):  # (main is no macro)
+                return None
+            runner.current_pos = pos
+            runner.started = runner.ran = True
+            # the arguments (call_macro's dict) are read again only to repeat the macro (L2 and up)
+            passed = {k: v for k, v in enumerate(values) if v is not VACANT} if count > 1 else None
+            frames.append(_Frame("macro", target, program, here, body, count, variables.local, passed))
+            variables.enter_level(values)
+            return jump
+        return g65
+
     # -- the run -------------------------------------------------------------------------
     def run(self) -> Iterator:
         pos, lineno = 0, self.first_line
         main_src = self.main.src
         fast = self.fast_runs
-        lane = self.lane
         declined = -1
+        frames = self.frames
         while True:
-            frame = self.frames[-1]
+            frame = frames[-1]
             source = frame.source
-            compiled = source.cache.get(pos)
-            if compiled is None or (fast and pos in fast):  # a line not run before, or a fast run's start
-                src = source.src
-                if fast and src is main_src and pos in fast and pos != declined:
-                    req = FastRunRequest(pos, lineno, self.index)
-                    yield req
-                    if req.resume is not None:
-                        pos, lineno, self.index = req.resume
-                        self.started = self.ran = True
-                        declined = -1
-                        continue
-                    declined = pos
-                hit = source.plain.get(pos)
-                if hit is not None:  # a plain line run before (in a loop or a subprogram)
-                    line, nxt, parsed = hit[0], hit[1], hit[2]
-                    ok = self.modal_call is None and (hit[4] if self._inch() else hit[3]) and self.plain_words_ok(
-                        parsed[2], parsed[3])
-                else:
-                    line, nxt = src.line_at(pos)
-                    if line is None:
+            ops = source.ops
+            op = ops.get(pos)
+            r: Any = None
+            while op is not None:  # lines run before, as closures (make_op), in this frame
+                r = op()
+                if r.__class__ is not tuple:
+                    break
+                pos, lineno = r
+                op = ops.get(pos)
+            if op is None or r is None:  # the general path for the line at pos
+                r = None
+                compiled = source.cache.get(pos)
+                if compiled is not None and pos not in ops and not (fast and pos in fast):
+                    self.add_op(source, pos, lineno, compiled)  # run again: kept as one closure from now on
+                if compiled is None or (fast and pos in fast):  # a line not run before, or a fast run's start
+                    if fast and source.src is main_src and pos in fast and pos != declined:
+                        req = FastRunRequest(pos, lineno, self.index)
+                        yield req
+                        if req.resume is not None:
+                            pos, lineno, self.index = req.resume
+                            self.started = self.ran = True
+                            declined = -1
+                            continue
+                        declined = pos
+                    got = self.read_plain(frame, pos, lineno, not (fast and pos in fast))
+                    if got is None:
                         self.end_of_text(lineno)
                         return
-                    parsed = None
-                    if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
-                        parsed = scan_plain(line)
-                    ok = parsed is not None and self.plain_ok(parsed[2], parsed[3], line)
-                    if parsed is not None and (frame.loops or len(self.frames) > 1) and self.cached < 200_000:
-                        # the line runs again: keep its scan and which unit systems its literals pass in
-                        source.plain[pos] = (line, nxt, parsed, self.lengths_ok(line, False),
-                                             self.lengths_ok(line, True))
-                        self.cached += 1
-                if ok:
-                    assert parsed is not None
-                    delete, number, letters, values = parsed
-                    pos, lineno0, lineno = nxt, lineno, lineno + 1
-                    if delete and self.skips(1):
+                    line, nxt, parsed, ok = got
+                    if ok:
+                        r = self.plain_first(source, line, nxt, parsed, lineno)
+                    else:
+                        compiled = self.compiled(source, pos, line, lineno, nxt)
+                if r is None:
+                    assert compiled is not None
+                    if compiled[9] and self.modal_call is None and not self.shape_codes:
+                        r = self.nc_first(source, compiled, pos, lineno)
+                    else:
+                        if compiled[1] or compiled[0].percent or compiled[0].program is not None:
+                            target = yield from self.execute(compiled, pos, lineno)
+                        else:
+                            target = self.macro_line(compiled, pos, lineno)  # no generator for a macro-only line
+                        if target is None:
+                            return
+                        pos, lineno = target
                         continue
-                    if letters:
-                        self.started = self.ran = True
-                        span = make_span(frame.source.file, lineno0, 1, len(line) + 1, line)
-                        taken = lane(letters, values, span, self.index) if lane is not None else 0
-                        if not taken:
-                            yield plain_block(letters, values, span, self.index, number, None)
-                        self.index += 1
-                        if taken == 2:
-                            yield LANE_FULL
+                if r.__class__ is tuple:
+                    pos, lineno = r
                     continue
-                compiled = self.compiled(source, pos, line, lineno, nxt)
-            if compiled[9] and self.modal_call is None and not self.shape_codes:
-                # an NC line with expressions (X#3 Y[#1 * 2]): what execute() -> nc() -> block() do with it,
-                # its values handed to the plain-move lane without a block (yielded when the lane declines)
-                line, nxt = compiled[4], compiled[5]
-                values = self.plain_values(compiled[1], lineno, line)
-                self.current_pos = pos
-                self.started = self.ran = True
-                span = make_span(source.file, lineno, 1, len(line) + 1, line)
-                taken = lane("".join([v[0] for v in values]), tuple([v[1] for v in values]), span,
-                             self.index) if lane is not None and values else 0
-                if not taken:
-                    yield plain_block_of(values, span, self.index, compiled[0].number)
+            # a list (a closure's or plain_first's / nc_first's): a call or a return, or something to yield
+            pos, lineno = r[0]
+            if len(r) == 1:  # the lane took the motion and its chunk is full
+                yield LANE_FULL
+            elif r[1] is not None:  # the lane declined the motion: its block
+                yield r[1]
                 self.index += 1
-                if taken == 2:
-                    yield LANE_FULL
-                pos, lineno = nxt, lineno + 1
-                continue
-            if compiled[1] or compiled[0].percent or compiled[0].program is not None:
-                target = yield from self.execute(compiled, pos, lineno)
-            else:
-                target = self.macro_line(compiled, pos, lineno)  # no generator for a macro-only line
-            if target is None:
-                return
-            pos, lineno = target
+
+    def plain_first(self, source: _Source, line: str, nxt: int, parsed: tuple, lineno: int) -> Any:
+        """A plain line the plain lane takes (read_plain), not kept as a closure: as a closure's result
+        (``here``, ``[here]`` after a full chunk, ``[here, block]`` when the lane declines)."""
+        delete, number, letters, values = parsed
+        here = (nxt, lineno + 1)
+        if (delete and self.skips(1)) or not letters:
+            return here
+        self.started = self.ran = True
+        span = make_span(source.file, lineno, 1, len(line) + 1, line)
+        index = self.index
+        taken = self.lane(letters, values, span, index) if self.lane is not None else 0
+        if not taken:
+            return [here, plain_block(letters, values, span, index, number, None)]
+        self.index = index + 1
+        return here if taken == 1 else [here]
+
+    def nc_first(self, source: _Source, compiled: tuple, pos: int, lineno: int) -> Any:
+        """An NC line with expressions (X#3 Y[#1 * 2]) not kept as a closure: what execute() -> nc() -> block()
+        do with it, its values handed to the plain-move lane without a block (the block when the lane
+        declines); the result as plain_first's."""
+        line, nxt = compiled[4], compiled[5]
+        values = self.plain_values(compiled[1], lineno, line)
+        self.current_pos = pos
+        self.started = self.ran = True
+        span = make_span(source.file, lineno, 1, len(line) + 1, line)
+        index = self.index
+        lane = self.lane
+        taken = lane("".join([v[0] for v in values]), tuple([v[1] for v in values]), span,
+                     index) if lane is not None and values else 0
+        here = (nxt, lineno + 1)
+        if not taken:
+            return [here, plain_block_of(values, span, index, compiled[0].number)]
+        self.index = index + 1
+        return here if taken == 1 else [here]
+
+    def read_plain(self, frame: _Frame, pos: int, lineno: int, may_keep: bool) -> tuple | None:
+        """The line at ``pos`` (not run before as a compiled line) for run(): ``(line, next offset, its
+        scan_plain or None, whether the plain lane takes it)``, or None at the end of the text.  A plain line
+        that runs again is kept scanned (``source.plain``) and, run a second time, as a closure (``may_keep``:
+        not the start of a fast run)."""
+        source = frame.source
+        hit = source.plain.get(pos)
+        if hit is not None:  # a plain line run before (in a loop or a subprogram)
+            if may_keep and pos not in source.ops:
+                self.add_op(source, pos, lineno, hit)
+            parsed = hit[2]
+            return hit[0], hit[1], parsed, self.modal_call is None and (
+                hit[4] if self._inch() else hit[3]) and self.plain_words_ok(parsed[2], parsed[3])
+        line, nxt = source.src.line_at(pos)
+        if line is None:
+            return None
+        parsed = None
+        if self.modal_call is None and not _PLAIN_BREAKERS.search(line):
+            parsed = scan_plain(line)
+        ok = parsed is not None and self.plain_ok(parsed[2], parsed[3], line)
+        if parsed is not None and (frame.loops or len(self.frames) > 1) and self.cached < 200_000:
+            # the line runs again: keep its scan and which unit systems its literals pass in
+            source.plain[pos] = (line, nxt, parsed, self.lengths_ok(line, False), self.lengths_ok(line, True))
+            self.cached += 1
+        return line, nxt, parsed, ok
 
     def plain_ok(self, letters: str, values: tuple, line: str) -> bool:
         """Whether a plain line's values are its words' values and the line does nothing the general path
@@ -1232,6 +1662,50 @@ class FanucRunner:
             self.budget_left(f"M99 {pword[4]} had jumped back {self.jumps_back} times", lineno, line, col, end)
         caller.loops.clear()
         return target
+
+
+#: The sentinels and constants of the closures of lines run again (FanucRunner.make_op).
+_UNITS = object()  # rounded to the linear axes' increment of the unit system in effect
+_DROPPED = object()  # a word dropped for a vacant variable
+_ONE = Fraction(1)
+_TENTH = Fraction(1, 10)
+_EVAL_ERRORS = (EvalError, SystemVariableUnknown, RecursionError)
+
+
+def _argument_specs(words: list, specs: list) -> list | None:
+    """The G65 arguments of a closure (``arguments``, resolved once): ``(variable, value or None, fn, var, step,
+    shifts, step denominator)`` per word (:meth:`FanucRunner.word_specs`), ``shifts`` for I, J, K (a vacant one moves the later
+    sets up); None where ``arguments`` raises."""
+    seen = {"I": 0, "J": 0, "K": 0}
+    args = []
+    for w, (q, fn, var, step) in zip(words, specs):
+        letter = w[0]
+        if letter in seen:
+            if seen[letter] >= 10:
+                return None
+            n = 4 + 3 * seen[letter] + "IJK".index(letter)
+            seen[letter] += 1
+        elif letter in ARGUMENTS_I:
+            n = ARGUMENTS_I[letter]
+        else:
+            return None
+        args.append((n, (double_of(q), q) if fn is None else None, fn, var, step, letter in seen,
+                     _step_denominator(step)))
+    return args
+
+
+def _step_denominator(step: Any) -> int:
+    """The denominator of a step 1/n (round_to keeps a value whose denominator divides it), else 0 (the
+    linear axes' step, chosen per execution, and steps m/n: round_to decides)."""
+    return step.denominator if isinstance(step, Fraction) and step.numerator == 1 else 0
+
+
+def _static_index(tree: tuple) -> int | None:
+    """The variable number of an assignment's target written as a number (``#12``), else None."""
+    index = tree[1]
+    if index[0] != NUM:
+        return None
+    return variable_index((index[1], index[2]))
 
 
 def _negated_variable(tree):
