@@ -446,7 +446,7 @@ class Solver:
         if self._ctx is None:
             import z3
 
-            self._ctx = z3.Context()
+            self._ctx = _context(z3)
             # ctrl_c false: Z3 must not install its own SIGINT handler while it solves (it would swallow
             # Ctrl-C); the run's watchdog interrupts it instead (see limits.py)
             # arith.nl.grobner false: the Groebner-basis lemmas of the nonlinear core are not bounded by the
@@ -524,3 +524,18 @@ class Solver:
 
 def tip_shift(zone: Zone, tool_axis: str | None) -> str | None:
     return tool_axis if zone.point is ZonePoint.TIP else None
+
+
+def _context(z3: Any) -> Any:
+    """A new ``z3.Context`` whose finaliser is quiet when its constructor did not finish: Ctrl-C or SIGTERM
+    between Z3's ``Z3_mk_context_rc`` and ``self.owner = True`` left an object whose ``__del__`` raised
+    ``AttributeError`` at exit ("Exception ignored in ... Context.__del__", a traceback on an interrupted
+    run).  ``owner`` is False on the class, so such an object is not freed twice and says nothing (the
+    process is ending; its context is the operating system's to free)."""
+    cls = _CONTEXT.get("cls")
+    if cls is None:
+        cls = _CONTEXT["cls"] = type("QuietContext", (z3.Context,), {"owner": False})
+    return cls()
+
+
+_CONTEXT: dict[str, Any] = {}
