@@ -26,10 +26,10 @@ from nczones.prover import verify_text
 
 from .helpers import MILL
 
-# the test mill (G54 = (100, 50, -200), no tool length): program X50. is machine X 150, Y40. is machine Y 90,
-# Y-60. is machine Y -10, Z-1. is machine Z -201.  The box's faces are at machine X -10 and 150, Y -10 and 90,
-# Z -201 and 0 (the reference position 0, 0, 0 inside): a move to X50., Y40., Y-60. or Z-1. touches a face
-# (safe: the zone is closed), X50.001, Y40.001, Y-60.001 or Z-1.001 crosses one (unsafe).
+# the test mill (G54 = (100, 50, -200) plus EXT Z 1, no tool length): program X50. is machine X 150, Y40. is
+# machine Y 90, Y-60. is machine Y -10, Z-2. is machine Z -201.  The box's faces are at machine X -10 and 150,
+# Y -10 and 90, Z -201 and 0 (the reference position 0, 0, 0 inside): a move to X50., Y40., Y-60. or Z-2.
+# touches a face (safe: the zone is closed), X50.001, Y40.001, Y-60.001 or Z-2.001 crosses one (unsafe).
 _ZONE = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
          'max = { X = "150", Y = "90", Z = "0" }\n')
 
@@ -45,6 +45,7 @@ _MOVES = [
     "G01 X[#1 * 0.5] Y[#1 * 0.25]",
     "G00 X#24 Y#25",  # the G65 arguments (vacant in the loop and M98 bodies: the word is dropped)
     "G01 Z-1.",
+    "G01 Z-2.",
     "Z-0.5",
     "G01 X50. Y40.",
     "X0. Y0.",
@@ -61,7 +62,7 @@ _MOVES = [
     "G01 Y-60.",
     "G01 X[#1 + 0.0005] Y[#1 / 3]",  # rounded to the increment; binary doubles
 ]
-_OUT = ["G01 X50.001", "G01 Y40.001", "G01 Y-60.001", "G01 Z-1.001", "G00 X[60 - #1 * 0.001]"]
+_OUT = ["G01 X50.001", "G01 Y40.001", "G01 Y-60.001", "G01 Z-2.001", "G00 X[60 - #1 * 0.001]"]
 
 
 def _program(body: list[str], reps: int, form: str) -> str:
@@ -115,10 +116,10 @@ def test_columns_decide_as_one_by_one(body, out, reps, form, tolerance, rnd):
 def test_long_loops_decide_as_one_by_one(form, crossing):
     """More than 512 motions (the proof's vectorized tier) with the default MIN_RUN: a circle that touches
     the box's X face (machine X = 100 + 25 + 25 COS[#1 * 10] reaches 150 exactly when the angle is a multiple
-    of 360 degrees: the doubles' cosine is 1.0 there), its Z face (Z-1.) and, with ``crossing``, a spiral that
+    of 360 degrees: the doubles' cosine is 1.0 there), its Z face (Z-2.) and, with ``crossing``, a spiral that
     passes the X face (radius 25 + #1 * 0.001: X 150.036 at #1 = 36)."""
     radius = "[25 + #1 * 0.001]" if crossing else "25"
-    body = [f"G01 X[25 + {radius} * COS[#1 * 10]] Y[20 + 20 * SIN[#1 * 10]]", "G01 Z-1.", "Z0."]
+    body = [f"G01 X[25 + {radius} * COS[#1 * 10]] Y[20 + 20 * SIN[#1 * 10]]", "G01 Z-2.", "Z0."]
     text = _program(body, 400, form)
     m = _MACHINES[""]
     a, b = _both(text, m)
