@@ -109,7 +109,7 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     deleted = bool(used)
     source = _kept_streamed(source, machine, options, dialect, ranges, deleted)
     if (options.engine == "auto" and not ranges and options.recovery is None and not deleted
-            and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and "#" in source.text):
+            and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and _double_pass_reads(source.text)):
         quick = _double_pass_first(source, machine, options, tolerance, margin, t0, progress,
                                    (nose_note, nose_reasons), settings)
         if quick is not None:
@@ -165,6 +165,40 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
                    timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
+
+
+#: the words every o-word line holds (``o100 sub``, ``call``, ``while``, ``if``, ``do``, ``repeat``, ``return``,
+#: ``break``, ``continue``, ``end...``, ``else...``), in the cases programs write them
+_OWORD_KEYWORDS = tuple(w for k in ("sub", "call", "while", "if", "do", "repeat", "return", "break", "continue")
+                        for w in (k, k.upper(), k.capitalize()))
+#: a line whose first code word is an o-word (after blanks, a block delete and a line number): ``o100 call``
+_OWORD_LINE: Any = None
+
+
+def _double_pass_reads(text: str | FileText) -> bool:
+    r"""Whether the double pass is tried first: a program with parameters (``#``), or one with o-words (the
+    fast path hands those to the language layer, which the pass runs some 4x faster: issue 36's "o-word subs,
+    no #" class).  Soundness does not rest on this test: the pass proves or declines (then the full path
+    decides) whatever it is given; a program it misses goes the full path as before.
+
+    >>> _double_pass_reads("G1 X1 (#1 in a comment counts: the pass declines or agrees)")
+    True
+    >>> _double_pass_reads("o100 sub\nG1 X1\no100 endsub\no100 call\nM2")
+    True
+    >>> _double_pass_reads("(do the contour)\nG1 X1 Y1\nM2")
+    False
+    """
+    if "#" in text:
+        return True
+    if not any(k in text for k in _OWORD_KEYWORDS):
+        return False
+    import re
+
+    global _OWORD_LINE
+    if _OWORD_LINE is None:
+        _OWORD_LINE = re.compile(r"(?:^|\n)[ \t]*(?:/[ \t]*\d?[ \t]*)?(?:[nN][ \t]*\d[\d. \t]*)?[oO][ \t]*[\d<]")
+    pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
+    return any(_OWORD_LINE.search(p) is not None for p in pieces)
 
 
 def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,
@@ -242,7 +276,7 @@ def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: 
     if not (dialect in ("linuxcnc", "fanuc") and machine.dialect == dialect and not ranges
             and options.recovery is None and not declares_solids(machine) and not deleted):
         return False
-    if "#" in text and dialect == "linuxcnc" and options.engine == "auto" and not passed:
+    if dialect == "linuxcnc" and options.engine == "auto" and not passed and _double_pass_reads(text):
         return True
     return text.ascii
 
