@@ -34,7 +34,8 @@ call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
 ``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
-X Y Z words of the machine's axes, N, and M2/M30 alone to end; plain comments.  Everything else declines:
+X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5 M7 M8 M9 a block, and M2/M30 alone
+to end; plain comments.  Everything else declines:
 other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
