@@ -119,8 +119,9 @@ _LINUXCNC_M_GROUPS: dict[int, tuple[int, ...]] = {
 }
 #: Spindle and coolant: no effect on motion; the plain lane and the fast path take a block with one.
 _LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
-#: Program end: the double pass stops there.
-_DOUBLES_M = frozenset((2, 30))
+#: Program end (the double pass stops there), and spindle and coolant (one to a block; issue 36: a parametric
+#: program that starts its spindle is no longer the full path's).
+_DOUBLES_M = frozenset((2, 30)) | _LEAN_M
 
 
 def _linuxcnc_m() -> dict[int, Code]:

@@ -126,7 +126,8 @@ def statements(draw, depth: int, labels: list[int]) -> list[str]:
     if kind == 6:
         return [draw(st.sampled_from(["G54", "G55", "G56", "G57", "G58", "G59", "G21 G90", "G17", "G94 G40 G49",
                                       "G80", "F200", "N10 G1 X1 F100", "(a plain comment)", "", "; comment",
-                                      "G1 X[#1] (with a comment)"]))]
+                                      "G1 X[#1] (with a comment)", "M3 S1000", "S[ABS[#1] * 10] M4", "M5",
+                                      "G1 X[#1] M8 F100", "M9", "M7 S0", "S[#1]"]))]
     if kind == 7 and depth > 0:
         label = 100 + len(labels)
         labels.append(label)
@@ -219,8 +220,11 @@ DECLINED = {
     "an arc": ("G21 G90 G54 F100\n#1 = 1\nG2 X1 Y1\n", "G2"),
     "incremental": ("G21 G91 G54 F100\n#1 = 1\nG1 X1\n", "G91"),
     "inches": ("G20 G90 G54 F100\n#1 = 1\nG1 X1\n", "G20"),
-    "a spindle": ("G21 G90 G54 F100\n#1 = 1\nM3\nG1 X1\n", "M code"),
-    "a spindle speed": ("G21 G90 G54 F100\n#1 = 1\nS1000\nG1 X1\n", "word S"),
+    # spindle and coolant M codes, one to a block, and S are followed (issue 36); two in a block are not
+    "two spindle and coolant codes": ("G21 G90 G54 F100\n#1 = 1\nM3 M8\nG1 X1\n", "M code"),
+    # the full path's GC209
+    "a negative spindle speed": ("G21 G90 G54 F100\n#1 = 1\nS[#1 - 2] M3\nG1 X1\n", "negative spindle speed"),
+    "a tool change": ("G21 G90 G54 F100\n#1 = 1\nT1 M6\nG1 X1\n", "word T"),
     "state read": ("G21 G90 G54 F100\n#1 = #5221\nG1 X#1\n", "parameter"),
     "a global name": ("G21 G90 G54 F100\n#<_a> = 1\nG1 X#<_a>\n", "global"),
     "no feed": ("G21 G90 G54\n#1 = 1\nG1 X#1\n", "feed"),

@@ -34,7 +34,8 @@ call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
 ``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
-X Y Z words of the machine's axes, N, and M2/M30 alone to end; plain comments.  Everything else declines:
+X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5 M7 M8 M9 a block, and M2/M30 alone
+to end; plain comments.  Everything else declines:
 other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
@@ -106,8 +107,14 @@ _BLANKS = re.compile(r"[ \t]+")
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
-_LETTERS = frozenset("GMFXYZ")
+_LETTERS = frozenset("GMFSXYZ")
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
+
+
+#: M codes the pass follows beside M2/M30 (the code table's claims), one to a block: the spindle (M3, M4, M5)
+#: and coolant (M7, M8, M9), which move nothing and set no state the path depends on (LinuxCNC's checks of the
+#: spindle direction are for G33, G76, G84 and G86, which the pass does not follow)
+_AUX_M = frozenset(k for k in LINUXCNC_M if CODES.claims_m(k)) - {2, 30}
 
 
 class Declined(Exception):
@@ -671,10 +678,10 @@ class _Pass:
         gs = [c for c, letter in zip(codes, gm) if letter == "G"]
         ms = [c for c, letter in zip(codes, gm) if letter == "M"]
         others = [x for x in letters if x not in "GM"]
-        if ms:
-            if ms not in ([2], [30]) or gs or others:
-                raise Declined("an M code the double pass does not follow")
+        if ms in ([2], [30]) and not gs and not others:
             return self._end
+        if ms and (len(ms) != 1 or ms[0] not in _AUX_M):
+            raise Declined("an M code the double pass does not follow")
         groups: dict[str, int] = {}
         for g in gs:
             group = _GROUPS.get(g)
@@ -686,9 +693,9 @@ class _Pass:
         if len(set(others)) != len(others):
             raise Declined("a word twice")
         for x in others:
-            if x != "F" and x not in self.index:
+            if x not in "FS" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x != "F"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FS"]
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -697,6 +704,8 @@ class _Pass:
         if "F" in others:
             body += [f"f = v[{others.index('F')}]", "if not f > 0.0: raise D('a feed that is not positive')",
                      "st.feed = f"]
+        if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
+            body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
         sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
         if sets:
             body.append(f"unset.difference_update({tuple(sets)!r})")
