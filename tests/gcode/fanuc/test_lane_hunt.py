@@ -7,7 +7,7 @@ moves, macro expressions, calls and unit switches.  Here the loop bodies, subpro
 what changes the frame a plain move is read in: G91, G68 rotation, G51 scaling, G51.1/G50.1 mirror, work
 offsets changed inside the loop (G10 L2 / L20, G54-G59, G54.1, G52, G92, G92.1, the offset variables
 #5201-#5243), tool lengths (G43/G49, G10 L10, #2001 / #11001), G20 in a subprogram, system variables read in
-the loop (#5001-#5043, #4001-#4014), M99 P and GOTO out of the loop, nested G65 with locals, DPRNT, G28/G30/G53.
+the loop (#5001-#5043, #4001-#4014), M99 P and GOTO out of the loop, loops made by a backward GOTO, nested G65 with locals, DPRNT, G28/G30/G53.
 
 Relations (each side computed by nczones, no answer copied from the code under test):
 
@@ -20,7 +20,8 @@ Relations (each side computed by nczones, no answer copied from the code under t
    closures on and off: the same verdict, violations, reasons and motion count (a run stopped at the
    violation cap counts the motion read before it stopped, which depends on the lane's chunking: not
    compared then);
-4. a WHILE loop (without GOTO or M99 P) and the same lines written out once per iteration: the same segments
+4. a WHILE loop or a backward GOTO loop (``N10 ... IF [#1 LT n] GOTO 10``; the body without a jump out of it,
+   GOTO or M99 P) and the same lines written out once per iteration: the same segments
    (kind, ends, feed, tool length) and the same verdict and violations (zone, point).
 
 The zone: the test mill's box (machine X -10..150, Y -10..90, Z -201..0) that program X50. / Y40. touch
@@ -109,16 +110,23 @@ def _parts(body: list[str], sub: list[str], macro: list[str], inner: list[str]) 
     return head, tail
 
 
-def _program(body: list[str], sub: list[str], macro: list[str], inner: list[str], reps: int) -> str:
+def _program(body: list[str], sub: list[str], macro: list[str], inner: list[str], reps: int,
+             form: str = "while") -> str:
+    """The loop as a WHILE, or as a backward GOTO (the lines met again are the same closures)."""
     head, tail = _parts(body, sub, macro, inner)
-    return "\n".join([*head, f"WHILE [#1 LT {reps}] DO1", *body, "#1 = #1 + 1", "END1", *tail]) + "\n"
+    if form == "goto":
+        loop = ["N10 #28 = #1", *body, "#1 = #1 + 1", f"IF [#1 LT {reps}] GOTO 10"]
+    else:
+        loop = [f"WHILE [#1 LT {reps}] DO1", *body, "#1 = #1 + 1", "END1"]
+    return "\n".join([*head, *loop, *tail]) + "\n"
 
 
-def _written_out(body: list[str], sub: list[str], macro: list[str], inner: list[str], reps: int) -> str:
+def _written_out(body: list[str], sub: list[str], macro: list[str], inner: list[str], reps: int,
+                 form: str = "while") -> str:
     head, tail = _parts(body, sub, macro, inner)
     lines = list(head)
     for _ in range(reps):
-        lines += [*body, "#1 = #1 + 1"]
+        lines += ([] if form == "while" else ["#28 = #1"]) + [*body, "#1 = #1 + 1"]
     return "\n".join([*lines, *tail]) + "\n"
 
 
@@ -130,7 +138,8 @@ def _pieces(jumps: bool):
     return (st.lists(line, min_size=1, max_size=8),
             st.lists(st.sampled_from(keep(_SUB) + _PLAIN + _FRAMES), max_size=4),
             st.lists(st.sampled_from(keep(_MACRO) + _PLAIN + _FRAMES), max_size=4),
-            st.lists(st.sampled_from(_INNER), max_size=3), st.sampled_from([2, 3, 5, 8, 40, 200]))
+            st.lists(st.sampled_from(_INNER), max_size=3), st.sampled_from([2, 3, 5, 8, 40, 200]),
+            st.sampled_from(["while", "goto"]))
 
 
 def _interpretation(text: str, fused: bool = True) -> tuple:
@@ -199,14 +208,14 @@ _SETTINGS = dict(deadline=None, database=None, suppress_health_check=[HealthChec
 
 @settings(max_examples=12, **_SETTINGS)  # type: ignore[arg-type]
 @given(*_pieces(jumps=True))
-def test_closures_and_rows_agree_with_the_general_path(body, sub, macro, inner, reps):
-    _lanes_agree(_program(body, sub, macro, inner, reps))
+def test_closures_and_rows_agree_with_the_general_path(body, sub, macro, inner, reps, form):
+    _lanes_agree(_program(body, sub, macro, inner, reps, form))
 
 
 @settings(max_examples=6, **_SETTINGS)  # type: ignore[arg-type]
 @given(*_pieces(jumps=False))
-def test_a_loop_decides_as_its_lines_written_out(body, sub, macro, inner, reps):
-    _as_written_out((body, sub, macro, inner, reps))
+def test_a_loop_decides_as_its_lines_written_out(body, sub, macro, inner, reps, form):
+    _as_written_out((body, sub, macro, inner, reps, form))
 
 
 #: what the long runs met (printed by -s): verdicts per relation
@@ -216,16 +225,16 @@ OUTCOMES: dict[tuple[str, str], int] = {}
 @pytest.mark.long
 @settings(max_examples=1500, **_SETTINGS)  # type: ignore[arg-type]
 @given(*_pieces(jumps=True))
-def test_closures_and_rows_agree_with_the_general_path_long(body, sub, macro, inner, reps):
-    key = ("lanes", _lanes_agree(_program(body, sub, macro, inner, reps)))
+def test_closures_and_rows_agree_with_the_general_path_long(body, sub, macro, inner, reps, form):
+    key = ("lanes", _lanes_agree(_program(body, sub, macro, inner, reps, form)))
     OUTCOMES[key] = OUTCOMES.get(key, 0) + 1
 
 
 @pytest.mark.long
 @settings(max_examples=800, **_SETTINGS)  # type: ignore[arg-type]
 @given(*_pieces(jumps=False))
-def test_a_loop_decides_as_its_lines_written_out_long(body, sub, macro, inner, reps):
-    key = ("written out", _as_written_out((body, sub, macro, inner, reps)))
+def test_a_loop_decides_as_its_lines_written_out_long(body, sub, macro, inner, reps, form):
+    key = ("written out", _as_written_out((body, sub, macro, inner, reps, form)))
     OUTCOMES[key] = OUTCOMES.get(key, 0) + 1
 
 
