@@ -12,7 +12,8 @@ the loop (#5001-#5043, #4001-#4014), M99 P and GOTO out of the loop, loops made 
 Relations (each side computed by nczones, no answer copied from the code under test):
 
 1. the closures on and off (``FanucRunner.add_op`` keeping nothing: every line through the general path)
-   give the same interpretation: every segment (kind, ends, feed, block, span, tool length and register),
+   give the same interpretation: every segment (kind, ends, feed, block, span, tool length and register, and
+   its program frame, which a segment's equality leaves out and the solids proof reads),
    the status and the reasons of an ``unknown``, or the same error;
 2. the one-call lane on and off (``fused_lane``) give the same segments;
 3. ``verify`` with the lane's rows as columns from the first motion (``START`` 0, ``MIN_RUN`` 1), with the
@@ -22,7 +23,7 @@ Relations (each side computed by nczones, no answer copied from the code under t
    compared then);
 4. a WHILE loop or a backward GOTO loop (``N10 ... IF [#1 LT n] GOTO 10``; the body without a jump out of it,
    GOTO or M99 P) and the same lines written out once per iteration: the same segments
-   (kind, ends, feed, tool length) and the same verdict and violations (zone, point).
+   (kind, ends, feed, tool length, frame) and the same verdict and violations (zone, point).
 
 The zone: the test mill's box (machine X -10..150, Y -10..90, Z -201..0) that program X50. / Y40. touch
 and X50.001 / Y-60.001 cross.  CI: a few examples; ``-m long``: the counts in specs/contract.md "Where
@@ -146,8 +147,9 @@ def _interpretation(text: str, fused: bool = True) -> tuple:
     try:
         run = interpret_text(text, _MACHINE, file="t.nc", max_loop_iterations=1000, chunk_size=7)
         run.interpreter.fused_lane = fused
-        segs = [(s.kind, s.start, s.end, s.feed_mm_min, s.block, str(s.span), s.tool_length, s.tool_register)
-                for s in run.segments()]
+        # the frame too: the solids proof places a fixture that moves with a work offset by it
+        segs = [(s.kind, s.start, s.end, s.feed_mm_min, s.block, str(s.span), s.tool_length, s.tool_register,
+                 s.frame) for s in run.segments()]
         return segs, run.status, [str(u) for u in run.unsupported]
     except GcodeError as e:
         return "error", [(d.code, d.message, str(d.span)) for d in e.diagnostics]
@@ -185,7 +187,8 @@ def _as_written_out(parts: tuple) -> str:
     def motion(text: str) -> tuple:
         try:
             run = interpret_text(text, _MACHINE, file="t.nc", max_loop_iterations=100000)
-            return [(s.kind, s.start, s.end, s.feed_mm_min, s.tool_length) for s in run.segments()], run.status
+            return [(s.kind, s.start, s.end, s.feed_mm_min, s.tool_length, s.frame)
+                    for s in run.segments()], run.status
         except GcodeError as e:
             return "error", [d.code for d in e.diagnostics]
 
