@@ -551,9 +551,10 @@ class CornerCheck:
 
     def _close_stretch(self) -> None:
         st, self.stretch = self.stretch, None
-        if st is None or st[2] is st[3]:
-            return
-        self.corners += 1
+        if st is None or (st[2] is st[3] and _linear(st[2], self.dogleg)):
+            return  # a lone straight motion is its own hull; a lone arc's filtered path may cut inside it
+        if st[2] is not st[3]:
+            self.corners += 1
         lo, hi = tuple(st[0]), tuple(st[1])
         self._shifts = frozenset(self._stretch_shifts or {()})
         tls = (st[2].tool_length, st[3].tool_length, *self._stretch_tls)
