@@ -5,6 +5,7 @@
 
 from __future__ import annotations
 
+import functools
 import time
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import replace
@@ -171,8 +172,12 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
 #: ``break``, ``continue``, ``end...``, ``else...``), in the cases programs write them
 _OWORD_KEYWORDS = tuple(w for k in ("sub", "call", "while", "if", "do", "repeat", "return", "break", "continue")
                         for w in (k, k.upper(), k.capitalize()))
-#: a line whose first code word is an o-word (after blanks, a block delete and a line number): ``o100 call``
-_OWORD_LINE: Any = None
+@functools.cache
+def _oword_line() -> Any:
+    """A line whose first code word is an o-word (after blanks, a block delete and a line number): ``o100 call``."""
+    import re
+
+    return re.compile(r"(?:^|\n)[ \t]*(?:/[ \t]*\d?[ \t]*)?(?:[nN][ \t]*\d[\d. \t]*)?[oO][ \t]*[\d<]")
 
 
 def _double_pass_reads(text: str | FileText) -> bool:
@@ -192,13 +197,8 @@ def _double_pass_reads(text: str | FileText) -> bool:
         return True
     if not any(k in text for k in _OWORD_KEYWORDS):
         return False
-    import re
-
-    global _OWORD_LINE
-    if _OWORD_LINE is None:
-        _OWORD_LINE = re.compile(r"(?:^|\n)[ \t]*(?:/[ \t]*\d?[ \t]*)?(?:[nN][ \t]*\d[\d. \t]*)?[oO][ \t]*[\d<]")
     pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
-    return any(_OWORD_LINE.search(p) is not None for p in pieces)
+    return any(_oword_line().search(p) is not None for p in pieces)
 
 
 def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,

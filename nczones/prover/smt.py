@@ -38,6 +38,7 @@ encoded.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterable, Sequence
 from fractions import Fraction
@@ -532,10 +533,9 @@ def _context(z3: Any) -> Any:
     ``AttributeError`` at exit ("Exception ignored in ... Context.__del__", a traceback on an interrupted
     run).  ``owner`` is False on the class, so such an object is not freed twice and says nothing (the
     process is ending; its context is the operating system's to free)."""
-    cls = _CONTEXT.get("cls")
-    if cls is None:
-        cls = _CONTEXT["cls"] = type("QuietContext", (z3.Context,), {"owner": False})
-    return cls()
+    return _quiet_context_class(z3)()
 
 
-_CONTEXT: dict[str, Any] = {}
+@functools.cache
+def _quiet_context_class(z3: Any) -> Any:
+    return type("QuietContext", (z3.Context,), {"owner": False})
