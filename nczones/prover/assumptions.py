@@ -36,7 +36,8 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "end is off the circle within the tolerance; a Grbl control, arc_tolerance = \"grbl\", moves such an "
     "arc on its start radius and then straight to the end point, at most 0.005 mm from that spiral), "
     "exact NURBS, rapids straight or dogleg as the machine file says, except where its path mode rounds "
-    "corners; no following error or overshoot.",
+    "corners and, on a Fanuc control, inside an arc or a polar move (acc/dec after interpolation: anywhere "
+    "in its convex hull, in every path mode); no following error or overshoot.",
     "Corner blending (specs/path-modes.md): the corner after a motion in G64 (LinuxCNC, the default) or "
     "cutting mode (Fanuc G64/G62/G63, the default) may be rounded, in G61, G61.1 and after a Fanuc G09 "
     "block not. LinuxCNC G64 uses at most half of a straight motion (BLEND_DIST_FRACTION; next to an arc the "

@@ -306,6 +306,22 @@ class CornerCheck:
             else:
                 self._stretch_pts = None  # a motion without a box: the run's box decides
             self._close_stretch()
+        elif mode.dialect == "fanuc" and seg.kind in _FILTERED_CURVES:
+            self._lone_curve(seg, mode)
+
+    def _lone_curve(self, seg: Segment, mode: PathMode) -> None:
+        """A Fanuc arc (or polar move) outside a cutting-mode run (G61, G09, or with ``path_tolerance``): acc/dec
+        after interpolation averages commanded positions along it in every path mode, so it is proved as a run of
+        one motion, by its box (its convex hull on a two-axis machine)."""
+        box = _hull_box(seg)
+        if box is None:
+            self._reason(seg, seg, mode, None, "a motion of this kind on a Fanuc control is not modelled")
+            return
+        self.stretch = [list(box[0]), list(box[1]), seg, seg]
+        self._stretch_shifts = {self._shift(seg)}
+        self._stretch_tls = set()
+        self._hull_add(seg, box, True)
+        self._close_stretch()
 
     def _run_motion(self, seg: Segment, mode: PathMode) -> None:
         """A motion in a Fanuc run (cutting mode without a tolerance): the run's box grows to hold it."""
@@ -562,9 +578,7 @@ class CornerCheck:
         if not self._fits((lo, hi), tls, F0) and not self._hull_fits(tls):
             n = len(self.reasons)
             self._reason(st[2], st[3], self.mode_of(st[2].block), (lo, hi),
-                         "a Fanuc control in cutting mode rounds corners by acc/dec after interpolation, which keeps "
-                         "the path inside the convex hull of the motions between exact stops; give [machine] "
-                         "path_tolerance (the control's bound) or program G61/G09", tls)
+                         _LONE_CURVE if st[2] is st[3] else _RUN, tls)
             if len(self.reasons) > n:  # the run's every block: a violation inside it makes the reason redundant
                 self._blocks[-1] = range(st[2].block, st[3].block + 1)
 
@@ -776,7 +790,8 @@ class CornerCheck:
             hit = [z for k, z in enumerate(self.zones) if not self._fits(box, tls, F0, zone=k)][:3]
             if hit:
                 zone = ", " + ", ".join(f"{'inside' if z.forbid else 'outside'} `{z.name}`" for z in hit)
-        msg = f"{BLEND_CODE}: the blend between {where} ({mode.code}){text}{zone}: {why}"
+        what = f"the motion of {where}" if a is b else f"the blend between {where}"
+        msg = f"{BLEND_CODE}: {what} ({mode.code}){text}{zone}: {why}"
         self.reasons.append(Reason(msg, b.span, b.block, BLEND_CODE))
         self._blocks.append((a.block, b.block))
 
@@ -802,8 +817,9 @@ class CornerCheck:
             self._hull_columns(chunk, at)  # Fanuc cutting mode without path_tolerance: the runs' boxes
             return
         if (naive or not plain or any(hull) or _droppable_rows(chunk)
-                or any(m.blend and m.bound() is None and m.naive for m in used)):
-            for seg in chunk.segments():  # the exact path, one motion at a time
+                or any(m.blend and m.bound() is None and m.naive for m in used)
+                or (count[SegmentKind.ARC] and any(m.dialect == "fanuc" for m in used))):
+            for seg in chunk.segments():  # the exact path, one motion at a time (a Fanuc arc: its hull)
                 self._segment(seg)
             return
         dwell = kinds == SegmentKind.DWELL
@@ -1001,8 +1017,8 @@ class CornerCheck:
             return True
         self.corners += int(body.size) - 1 + corner_before  # what _queue counts: Fanuc corners wait for the hull
         first, last = int(body[0]), int(body[-1])
-        if self.stretch is None and body.size == 1 and not blend[first]:
-            return True  # a lone exact-stop motion: no run
+        if self.stretch is None and body.size == 1 and not blend[first] and not cols[4][first]:
+            return True  # a lone exact-stop straight motion: no run (an arc is held to its hull)
         box = self._rows_box(chunk, body, cols)
         if box is None:
             self.corners -= int(body.size) - 1 + corner_before
@@ -1181,6 +1197,17 @@ def _droppable_rows(chunk: MotionChunk) -> bool:
     d = np.abs(chunk.end - chunk.start)
     straight = (chunk.kind == SegmentKind.LINE) | (chunk.kind == SegmentKind.RAPID)
     return bool((straight & (d != 0).any(axis=1) & (d < lim).all(axis=1)).any())
+
+
+#: Motions a Fanuc control's acc/dec after interpolation may pull inside in any path mode (their hull is proved).
+_FILTERED_CURVES = frozenset({SegmentKind.ARC, SegmentKind.POLAR})
+_RUN = ("a Fanuc control in cutting mode rounds corners by acc/dec after interpolation, which keeps the path inside "
+        "the convex hull of the motions between exact stops; give [machine] path_tolerance (the control's bound) or "
+        "program G61/G09")
+_LONE_CURVE = ("a Fanuc control's acc/dec after interpolation averages the commanded axis positions along an arc or a "
+               "polar move in every path mode (G61 and G09 stop only at its end), so the moved path may cut inside "
+               "it, anywhere in its convex hull (an arc: between the arc and its chord); nothing in the machine file "
+               "bounds that")
 
 
 def _linear(seg: Segment, dogleg: bool) -> bool:

@@ -60,3 +60,36 @@ def test_a_lone_straight_motion_and_an_arc_far_away_stay_safe(pad):
         r = verify_text(_program(arc, pad), MACHINE)
         assert r.verdict.label == "safe", (arc, r.reasons, r.violations)
 
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# In every path mode (the lead's follow-up of hunt36b's open question): the filters act on the interpolated data
+# of every cutting block, so G61 and G09 (which decelerate and check in-position only at the END of a block) do
+# not stop them pulling an arc inside; `path_tolerance` bounds corner rounding only (specs/path-modes.md §3).
+# Before, `G09 G02 I9.` in cutting mode and `G02 I9.` under G61 were `safe` with the probe inside the circle.
+TOLERANT = parse_machine(MILL.replace("[machine]\n", '[machine]\npath_tolerance = "0.01"\n', 1)
+                         .replace("{fanuc_extra}", "").replace("{tables}", PROBE), "mill.toml")
+
+
+@pytest.mark.parametrize("pad", [False, True])
+@pytest.mark.parametrize("mode, arc, machine", [
+    ("G61", "G02 I9. J0.", MACHINE), ("G61", "G03 I9. J0.", MACHINE), ("G61", "G02 X0. Y18. I9. J0.", MACHINE),
+    ("G61", "G02 X0. Y18. R9.", MACHINE), ("G64", "G09 G02 I9. J0.", MACHINE), ("G64", "G02 I9. J0.", TOLERANT),
+    ("G61", "G02 I9. J0.", TOLERANT)])
+def test_an_arc_is_held_to_its_hull_in_every_path_mode(mode, arc, machine, pad):
+    r = verify_text(_program(arc, pad).replace("G64", mode), machine)
+    if pad:
+        assert dict(r.stats)["segments"] > 512
+    assert r.verdict.label == "unknown", (r.verdict, r.violations)
+    why = [x.message for x in r.reasons if x.code == "VF208" and "probe" in x.message]
+    assert why and "the motion of line" in why[0] and "between the arc and its chord" in why[0]
+
+
+@pytest.mark.parametrize("pad", [False, True])
+@pytest.mark.parametrize("mode, machine", [("G61", MACHINE), ("G64", TOLERANT)])
+def test_arcs_away_from_the_probe_stay_safe_in_every_path_mode(mode, machine, pad):
+    """The circle about machine (80, 59) of radius 9 (see above) reaches X 89 at most; a straight motion is its own
+    hull in every mode."""
+    for arc in ("G01 X-9. Y-9.", "G00 X-29. Y9.\nG04 X0\nG02 I9. J0.", "G00 X-29. Y9.\nG09 G02 I9. J0."):
+        r = verify_text(_program(arc, pad).replace("G64", mode), machine)
+        assert r.verdict.label == "safe", (arc, r.reasons, r.violations)
