@@ -27,8 +27,9 @@ its slot descriptor instead.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import fields as dataclass_fields
 from typing import Any
+
+from .precompiled import field_names  # dataclasses.fields' names, no dataclasses import (start-up)
 
 __all__ = ["builder"]
 
@@ -54,7 +55,7 @@ def builder(cls: type, params: tuple[str, ...] | None = None, *, name: str | Non
     callable
         ``make(*values)``; ``make(*values) == cls(**fields)`` for every input.
     """
-    names = tuple(f.name for f in dataclass_fields(cls))
+    names = field_names(cls)
     if params is None:
         params = tuple(n for n in names if n not in constants)
     if sorted((*params, *constants)) != sorted(names):

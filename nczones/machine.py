@@ -21,7 +21,6 @@ import os
 import re
 import shlex
 from collections.abc import Callable, Mapping
-from dataclasses import field, replace
 from fractions import Fraction
 from types import MappingProxyType
 from typing import Any
@@ -30,7 +29,7 @@ from .blockskip import format_block_delete, parse_block_delete
 from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
-from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from .precompiled import dataclass, field, field_names, replace  # start-up: no dataclasses
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
 
 __all__ = [
@@ -1073,7 +1072,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                 Severity.WARNING,
             )
     return Machine(
-        **{f: getattr(machine, f) for f in Machine.__dataclass_fields__ if f != "warnings"},
+        **{f: getattr(machine, f) for f in field_names(Machine) if f != "warnings"},
         warnings=tuple(d for d in rd.diagnostics if d.severity is Severity.WARNING),
     )
 

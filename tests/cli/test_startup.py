@@ -57,7 +57,10 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "nczones.prover.blend", "nczones.prover.hull2d", "socket", "nczones.geometry.nurbs",
                           # issue 36: OpenSSL (hashlib: the digests are CPython's own, nczones.digest), ctypes (the
                           # x87 functions load at the first SIN/COS/TAN), shutil (argparse's terminal width)
-                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids")
+                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids",
+                          # issue 36 (startup36c): dataclasses imports inspect, ast, dis, tokenize (some 10 ms); the
+                          # classes, field(), replace() and field names come from nczones.precompiled
+                          "dataclasses", "inspect", "ast", "dis", "tokenize")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
