@@ -42,14 +42,68 @@ import sys
 import types
 from typing import TYPE_CHECKING, Any
 
-__all__ = ["dataclass", "field", "replace", "field_names", "ENABLED", "RECORD_ENV"]
+__all__ = ["dataclass", "field", "replace", "field_names", "ENABLED", "RECORD_ENV", "RECORD_PATTERNS_ENV",
+           "seed_patterns"]
 
 #: Set in the environment, the texts :func:`dataclass` compiles are printed to standard error, one JSON string a
 #: line (how ``--write`` collects them).
 RECORD_ENV = "NCZONES_RECORD_DATACLASS_FUNCTIONS"
 
+#: Set in the environment, the regular expressions compiled are printed to standard error, one JSON list
+#: ``["pattern", [type, text, flags]]`` a line (how ``--write`` collects them for :mod:`.regexes`).
+RECORD_PATTERNS_ENV = "NCZONES_RECORD_PATTERNS"
+
 #: Whether the precompiled functions are used: CPython 3.11, the ``dataclasses`` this module repeats.
 ENABLED = sys.version_info[:2] == (3, 11) and sys.implementation.name == "cpython"
+
+
+def seed_patterns() -> int:
+    """Put the regular expressions of :mod:`nczones.precompiled.regexes` in ``re``'s cache (how many).
+
+    ``re.compile`` parses a pattern and generates its code in Python (``re._parser``, ``re._compiler``): some
+    5 ms for the ~70 patterns a small verify compiles (tomllib's, argparse's, json's, fractions' and nczones'
+    own).  The generated module holds what ``re._compiler.compile`` hands to ``_sre.compile`` for each of
+    them, written by ``python -m nczones.precompiled --write`` on this very interpreter (its version and
+    ``_sre.MAGIC`` are checked: on any other nothing is seeded), so ``re.compile`` of such a pattern finds it
+    in its cache; ``tests/precompiled`` checks each equals a fresh compile (``Pattern.__eq__`` compares the
+    code).  Patterns not there compile as always."""
+    if not ENABLED:
+        return 0
+    import re
+
+    if os.environ.get(RECORD_PATTERNS_ENV):
+        _record_patterns(re)
+        return 0
+    import _sre
+
+    from . import regexes
+
+    if regexes.HEXVERSION != sys.hexversion or regexes.MAGIC != _sre.MAGIC:
+        return 0
+    cache = vars(re)["_cache"]  # the standard library's own (re._compile looks there first)
+    room = re._MAXCACHE - len(cache)  # type: ignore[attr-defined]
+    n = 0
+    for pattern, flags, code_flags, code, groups, groupindex, indexgroup in regexes.PATTERNS[:max(room, 0)]:
+        key = (type(pattern), pattern, flags)
+        if key not in cache:
+            cache[key] = _sre.compile(pattern, code_flags, list(code), groups, groupindex, indexgroup)
+            n += 1
+    return n
+
+
+def _record_patterns(re: Any) -> None:
+    """Print each pattern compiled from now on (``--write``)."""
+    import json
+
+    compile_ = re._compiler.compile
+
+    def recording(p: Any, flags: int = 0) -> Any:
+        if isinstance(p, (str, bytes)):
+            text = p if isinstance(p, str) else p.decode("latin-1")
+            print(json.dumps(["pattern", [type(p).__name__, text, flags]]), file=sys.stderr)
+        return compile_(p, flags)
+
+    re._compiler.compile = recording
 
 _TABLE: list[dict[str, Any]] = []
 

@@ -254,3 +254,42 @@ def test_field_and_replace_without_dataclasses_are_the_standard_librarys(options
                 replace(obj, e=1)
     with pytest.raises(ValueError, match="both default and default_factory"):
         precompiled.field(default=1, default_factory=list)
+
+
+def test_every_precompiled_pattern_is_what_re_compiles():
+    # nczones.precompiled.regexes holds _sre.compile's arguments for the patterns of a start-up; each must make
+    # the pattern re.compile makes (Pattern.__eq__ compares pattern, flags and code), with the same groups
+    import _sre
+    from re import _compiler
+
+    from nczones.precompiled import regexes
+
+    if regexes.HEXVERSION != sys.hexversion:
+        pytest.skip("regexes written on another CPython 3.11 release: not used here")
+    assert len(regexes.PATTERNS) >= 50
+    for pattern, flags, code_flags, code, groups, groupindex, indexgroup in regexes.PATTERNS:
+        ours, fresh = _sre.compile(pattern, code_flags, list(code), groups, groupindex, indexgroup), \
+            _compiler.compile(pattern, flags)
+        assert ours == fresh and ours.flags == fresh.flags and ours.groups == fresh.groups, pattern
+        assert ours.groupindex == fresh.groupindex, pattern
+
+
+def test_a_small_verify_compiles_no_regular_expression(tmp_path):
+    # issue 36: re.compile parses in Python (~5 ms for a start-up's patterns); after `import nczones` they are
+    # in re's cache, so a small verify of either dialect (and its help) compiles none
+    (tmp_path / "p.ngc").write_text("G21 G90\nG0 X1 Y1\nG1 X2 Y2 F100\nM2\n")
+    (tmp_path / "p.nc").write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n")
+    machines = ROOT / "specs" / "machines"
+    runs = [["verify", str(tmp_path / "p.ngc"), "--machine", str(machines / "mill.toml"), "--format", "json"],
+            ["verify", str(tmp_path / "p.nc"), "--machine", str(machines / "fanuc_mill.toml")]]
+    code = ("import contextlib, io, json, sys\nimport nczones\nfrom re import _compiler\ncompiled = []\n"
+            "original = _compiler.compile\n"
+            "_compiler.compile = lambda p, flags=0: compiled.append(p) or original(p, flags)\n"
+            "from nczones.cli import main\n"
+            f"for argv in {runs!r}:\n"
+            "    with contextlib.redirect_stdout(io.StringIO()):\n"
+            "        assert main(argv) == 0\n"
+            "print(json.dumps(compiled))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout.splitlines()[-1]) == []
