@@ -42,7 +42,7 @@ import sys
 import types
 from typing import TYPE_CHECKING, Any
 
-__all__ = ["dataclass", "field", "replace", "field_names", "ENABLED", "RECORD_ENV", "RECORD_PATTERNS_ENV",
+__all__ = ["dataclass", "field", "replace", "field_names", "make_function", "ENABLED", "RECORD_ENV", "RECORD_PATTERNS_ENV",
            "seed_patterns"]
 
 #: Set in the environment, the texts :func:`dataclass` compiles are printed to standard error, one JSON string a
@@ -86,7 +86,7 @@ def seed_patterns() -> int:
     for pattern, flags, code_flags, code, groups, groupindex, indexgroup in regexes.PATTERNS[:max(room, 0)]:
         key = (type(pattern), pattern, flags)
         if key not in cache:
-            cache[key] = _sre.compile(pattern, code_flags, list(code), groups, groupindex, indexgroup)
+            cache[key] = _sre.compile(pattern, code_flags, list(code), groups, dict(groupindex), indexgroup)
             n += 1
     return n
 
@@ -151,6 +151,13 @@ def _create_fn(name: str, args: list[str], body: list[str], *, globals: dict[str
     fn = create(**locals)
     fn.__qualname__ = f"__create_fn__.<locals>.{name}"  # the generated module's is f<n>.<locals>.<name>
     return fn
+
+
+def make_function(name: str, args: list[str], body: list[str], globals: dict[str, Any]) -> Any:  # noqa: A002
+    """``def name(*args): body`` (each line of ``body`` one statement, indented by the function) with the globals
+    ``globals``: compiled as :func:`dataclass` compiles its methods, its code taken from
+    :mod:`nczones.precompiled.functions` when the text is there (``nczones.frozen`` builds its constructors so)."""
+    return _create_fn(name, args, body, globals=globals)
 
 
 def _std_create_fn(name: str, args: list[str], body: list[str], *, globals: dict[str, Any] | None = None,  # noqa: A002

@@ -113,12 +113,13 @@ def regex_source(found: list[tuple[str, str, int]]) -> str:
         for k, i in groupindex.items():
             indexgroup[i] = k
         rows.append(f"    ({pattern!r}, {flags}, {flags | p.state.flags}, {tuple(int(c) for c in code)!r}, {p.state.groups - 1}, "
-                    f"{dict(groupindex)!r}, {tuple(indexgroup)!r}),")
+                    f"{tuple(groupindex.items())!r}, {tuple(indexgroup)!r}),")
     head = ['"""The regular expressions of nczones\' start-ups, compiled (written by ``python -m nczones.precompiled',
             '--write``; do not edit: see :func:`nczones.precompiled.seed_patterns`)."""',
             "# ruff: noqa", "# mypy: ignore-errors", "# fmt: off", "",
             f"HEXVERSION = {sys.hexversion:#x}", f"MAGIC = {_sre.MAGIC}", "",
-            "#: (pattern, flags, code flags, code, groups - 1, groupindex, indexgroup): _sre.compile's arguments",
+            "#: (pattern, flags, code flags, code, groups - 1, groupindex items, indexgroup): _sre.compile's arguments",
+            "#: (one constant of the module's bytecode: no dict to build at import)",
             "PATTERNS = ("]
     return "\n".join([*head, *rows, ")", ""])
 

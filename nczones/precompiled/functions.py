@@ -980,12 +980,78 @@ def f171():
   return self.__class__.__qualname__ + f"(zones={self.zones!r}, tool_axis={self.tool_axis!r})"
  return __repr__
 
-def f172(_type_axes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f172():
+ def make(delete,number,words,assigns):
+  o = _new(_draft)
+  o.delete = delete
+  o.number = number
+  o.words = words
+  o.assigns = assigns
+  o.oword = _c_oword
+  o.comments = _c_comments
+  o.percent = _c_percent
+  o.unsupported = _c_unsupported
+  o.__class__ = _cls
+  return o
+ return make
+
+def f173():
+ def make(file,line,column,end_column,text):
+  o = _new(_draft)
+  o.file = file
+  o.line = line
+  o.column = column
+  o.end_column = end_column
+  o.text = text
+  o.__class__ = _cls
+  return o
+ return make
+
+def f174():
+ def make(kind,start,end,axes,block,span,tool_length,feed_mm_min,plane,clockwise,centre,radius,turns,dwell_s,derived,tool_register,deps_start,deps_end,extra,frame):
+  o = _new(_draft)
+  o.kind = kind
+  o.start = start
+  o.end = end
+  o.axes = axes
+  o.block = block
+  o.span = span
+  o.tool_length = tool_length
+  o.feed_mm_min = feed_mm_min
+  o.plane = plane
+  o.clockwise = clockwise
+  o.centre = centre
+  o.radius = radius
+  o.turns = turns
+  o.dwell_s = dwell_s
+  o.derived = derived
+  o.tool_register = tool_register
+  o.deps_start = deps_start
+  o.deps_end = deps_end
+  o.extra = extra
+  o.frame = frame
+  o.deps_tool = _c_deps_tool
+  o.__class__ = _cls
+  return o
+ return make
+
+def f175():
+ def make(letter,value,span,text):
+  o = _new(_draft)
+  o.letter = letter
+  o.value = value
+  o.span = span
+  o.text = text
+  o.__class__ = _cls
+  return o
+ return make
+
+def f176(_type_axes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,axes:_type_axes)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'axes',axes)
  return __init__
 
-def f173(_type_axes, _type_columns, _type_offset_bound, _type_motions, _type_lines, _type_rapids, _type_blocks, _type_start, _type_first_row, _type_row0, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_row0, _return_type):
+def f177(_type_axes, _type_columns, _type_offset_bound, _type_motions, _type_lines, _type_rapids, _type_blocks, _type_start, _type_first_row, _type_row0, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_row0, _return_type):
  def __init__(self,axes:_type_axes,columns:_type_columns,offset_bound:_type_offset_bound,motions:_type_motions,lines:_type_lines,rapids:_type_rapids,blocks:_type_blocks,start:_type_start,first_row:_type_first_row,row0:_type_row0=_dflt_row0)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'axes',axes)
   __dataclass_builtins_object__.__setattr__(self,'columns',columns)
@@ -999,7 +1065,7 @@ def f173(_type_axes, _type_columns, _type_offset_bound, _type_motions, _type_lin
   __dataclass_builtins_object__.__setattr__(self,'row0',row0)
  return __init__
 
-def f174(_type_axes, _type_degrees, _type_cos, _type_sin, _type_before, _type_after, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f178(_type_axes, _type_degrees, _type_cos, _type_sin, _type_before, _type_after, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,axes:_type_axes,degrees:_type_degrees,cos:_type_cos,sin:_type_sin,before:_type_before,after:_type_after)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'axes',axes)
   __dataclass_builtins_object__.__setattr__(self,'degrees',degrees)
@@ -1009,7 +1075,7 @@ def f174(_type_axes, _type_degrees, _type_cos, _type_sin, _type_before, _type_af
   __dataclass_builtins_object__.__setattr__(self,'after',after)
  return __init__
 
-def f175(_type_axes, _type_scale, _type_kind, _type_start, _type_end, _type_line, _type_block, _type_tool_length, _type_centre, _type_plane, _type_clockwise, _type_turns, _type_feed, _type_file, _type_objects, _type_dwell, _type_derived, _type_frame, _type_radius, _type_tool_register, _type_tools_known, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_kind, _dflt_start, _dflt_end, _dflt_line, _dflt_block, _dflt_tool_length, _dflt_centre, _dflt_plane, _dflt_clockwise, _dflt_turns, _dflt_feed, _dflt_file, _dflt_objects, _dflt_dwell, _dflt_derived, _dflt_frame, _dflt_radius, _dflt_tool_register, _dflt_tools_known, _return_type):
+def f179(_type_axes, _type_scale, _type_kind, _type_start, _type_end, _type_line, _type_block, _type_tool_length, _type_centre, _type_plane, _type_clockwise, _type_turns, _type_feed, _type_file, _type_objects, _type_dwell, _type_derived, _type_frame, _type_radius, _type_tool_register, _type_tools_known, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_kind, _dflt_start, _dflt_end, _dflt_line, _dflt_block, _dflt_tool_length, _dflt_centre, _dflt_plane, _dflt_clockwise, _dflt_turns, _dflt_feed, _dflt_file, _dflt_objects, _dflt_dwell, _dflt_derived, _dflt_frame, _dflt_radius, _dflt_tool_register, _dflt_tools_known, _return_type):
  def __init__(self,axes:_type_axes,scale:_type_scale,kind:_type_kind=_dflt_kind,start:_type_start=_dflt_start,end:_type_end=_dflt_end,line:_type_line=_dflt_line,block:_type_block=_dflt_block,tool_length:_type_tool_length=_dflt_tool_length,centre:_type_centre=_dflt_centre,plane:_type_plane=_dflt_plane,clockwise:_type_clockwise=_dflt_clockwise,turns:_type_turns=_dflt_turns,feed:_type_feed=_dflt_feed,file:_type_file=_dflt_file,objects:_type_objects=_dflt_objects,dwell:_type_dwell=_dflt_dwell,derived:_type_derived=_dflt_derived,frame:_type_frame=_dflt_frame,radius:_type_radius=_dflt_radius,tool_register:_type_tool_register=_dflt_tool_register,tools_known:_type_tools_known=_dflt_tools_known)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'axes',axes)
   __dataclass_builtins_object__.__setattr__(self,'scale',scale)
@@ -1034,7 +1100,7 @@ def f175(_type_axes, _type_scale, _type_kind, _type_start, _type_end, _type_line
   __dataclass_builtins_object__.__setattr__(self,'tools_known',tools_known)
  return __init__
 
-def f176(_type_blend, _type_tolerance, _type_naive, _type_dialect, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tolerance, _dflt_naive, _dflt_dialect, _dflt_code, _return_type):
+def f180(_type_blend, _type_tolerance, _type_naive, _type_dialect, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tolerance, _dflt_naive, _dflt_dialect, _dflt_code, _return_type):
  def __init__(self,blend:_type_blend,tolerance:_type_tolerance=_dflt_tolerance,naive:_type_naive=_dflt_naive,dialect:_type_dialect=_dflt_dialect,code:_type_code=_dflt_code)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'blend',blend)
   __dataclass_builtins_object__.__setattr__(self,'tolerance',tolerance)
@@ -1043,7 +1109,7 @@ def f176(_type_blend, _type_tolerance, _type_naive, _type_dialect, _type_code, M
   __dataclass_builtins_object__.__setattr__(self,'code',code)
  return __init__
 
-def f177(_type_block, _type_span, _type_zone, _type_point, _type_path_point, _type_parameter, _type_parameter_exact, _type_first_exit, _type_first_exit_parameter, _type_first_exit_exact, _type_depth, _type_depth_exact, _type_engine, _type_segment_kind, _type_derived, _type_kind, _type_params, _type_zones, _type_note, _type_on_path, _type_break_line, _type_break_parameter, _type_break_point, _type_leg, _type_switches, _type_exit_located, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_derived, _dflt_kind, _dflt_params, _dflt_zones, _dflt_note, _dflt_on_path, _dflt_break_line, _dflt_break_parameter, _dflt_break_point, _dflt_leg, _dflt_switches, _dflt_exit_located, _dflt_frame, _return_type):
+def f181(_type_block, _type_span, _type_zone, _type_point, _type_path_point, _type_parameter, _type_parameter_exact, _type_first_exit, _type_first_exit_parameter, _type_first_exit_exact, _type_depth, _type_depth_exact, _type_engine, _type_segment_kind, _type_derived, _type_kind, _type_params, _type_zones, _type_note, _type_on_path, _type_break_line, _type_break_parameter, _type_break_point, _type_leg, _type_switches, _type_exit_located, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_derived, _dflt_kind, _dflt_params, _dflt_zones, _dflt_note, _dflt_on_path, _dflt_break_line, _dflt_break_parameter, _dflt_break_point, _dflt_leg, _dflt_switches, _dflt_exit_located, _dflt_frame, _return_type):
  def __init__(self,block:_type_block,span:_type_span,zone:_type_zone,point:_type_point,path_point:_type_path_point,parameter:_type_parameter,parameter_exact:_type_parameter_exact,first_exit:_type_first_exit,first_exit_parameter:_type_first_exit_parameter,first_exit_exact:_type_first_exit_exact,depth:_type_depth,depth_exact:_type_depth_exact,engine:_type_engine,segment_kind:_type_segment_kind,derived:_type_derived=_dflt_derived,kind:_type_kind=_dflt_kind,params:_type_params=_dflt_params,zones:_type_zones=_dflt_zones,note:_type_note=_dflt_note,on_path:_type_on_path=_dflt_on_path,break_line:_type_break_line=_dflt_break_line,break_parameter:_type_break_parameter=_dflt_break_parameter,break_point:_type_break_point=_dflt_break_point,leg:_type_leg=_dflt_leg,switches:_type_switches=_dflt_switches,exit_located:_type_exit_located=_dflt_exit_located,frame:_type_frame=_dflt_frame)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'block',block)
   __dataclass_builtins_object__.__setattr__(self,'span',span)
@@ -1074,13 +1140,13 @@ def f177(_type_block, _type_span, _type_zone, _type_point, _type_path_point, _ty
   __dataclass_builtins_object__.__setattr__(self,'frame',frame)
  return __init__
 
-def f178(_type_centre, _type_factors, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f182(_type_centre, _type_factors, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,centre:_type_centre,factors:_type_factors)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'centre',centre)
   __dataclass_builtins_object__.__setattr__(self,'factors',factors)
  return __init__
 
-def f179(_type_centre, _type_u, _type_rho, _type_ratio, _type_sweep, _type_clockwise, _type_rho_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f183(_type_centre, _type_u, _type_rho, _type_ratio, _type_sweep, _type_clockwise, _type_rho_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,centre:_type_centre,u:_type_u,rho:_type_rho,ratio:_type_ratio,sweep:_type_sweep,clockwise:_type_clockwise,rho_max:_type_rho_max)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'centre',centre)
   __dataclass_builtins_object__.__setattr__(self,'u',u)
@@ -1091,7 +1157,7 @@ def f179(_type_centre, _type_u, _type_rho, _type_ratio, _type_sweep, _type_clock
   __dataclass_builtins_object__.__setattr__(self,'rho_max',rho_max)
  return __init__
 
-def f180(_type_code, _type_message, _type_span, _type_severity, _type_file, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_severity, _dflt_file, _return_type):
+def f184(_type_code, _type_message, _type_span, _type_severity, _type_file, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_severity, _dflt_file, _return_type):
  def __init__(self,code:_type_code,message:_type_message,span:_type_span=_dflt_span,severity:_type_severity=_dflt_severity,file:_type_file=_dflt_file)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'code',code)
   __dataclass_builtins_object__.__setattr__(self,'message',message)
@@ -1100,14 +1166,14 @@ def f180(_type_code, _type_message, _type_span, _type_severity, _type_file, MISS
   __dataclass_builtins_object__.__setattr__(self,'file',file)
  return __init__
 
-def f181(_type_code, _type_reason, _type_span, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f185(_type_code, _type_reason, _type_span, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,code:_type_code,reason:_type_reason,span:_type_span)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'code',code)
   __dataclass_builtins_object__.__setattr__(self,'reason',reason)
   __dataclass_builtins_object__.__setattr__(self,'span',span)
  return __init__
 
-def f182(_type_decimal_point_input, _type_increment_system, _type_g73_retract, _type_g83_clearance, _type_boring_shift, _type_scaling_unit, _type_rotation_incremental, _type_atan_signed, _type_tool_length_motion, _type_harmless_m, _type_references, _type_variables, _type_macros, _type_gcode_system, _type_g71_depth, _type_g71_retract, _type_roughing_final_pass, _type_g73_relief_x, _type_g73_relief_z, _type_g73_divisions, _type_g74_retract, _type_thread_chamfer, _type_thread_chamfer_angle, _type_g76_finish_passes, _type_g76_tool_angle, _type_g76_min_depth, _type_g76_finish_allowance, _type_tool_offset_motion, _type_tool_offset_cancel, _type_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_decimal_point_input, _dflt_increment_system, _dflt_g73_retract, _dflt_g83_clearance, _dflt_boring_shift, _dflt_scaling_unit, _dflt_rotation_incremental, _dflt_atan_signed, _dflt_tool_length_motion, _dflt_harmless_m, _dflt_references, _dflt_variables, _dflt_macros, _dflt_gcode_system, _dflt_g71_depth, _dflt_g71_retract, _dflt_roughing_final_pass, _dflt_g73_relief_x, _dflt_g73_relief_z, _dflt_g73_divisions, _dflt_g74_retract, _dflt_thread_chamfer, _dflt_thread_chamfer_angle, _dflt_g76_finish_passes, _dflt_g76_tool_angle, _dflt_g76_min_depth, _dflt_g76_finish_allowance, _dflt_tool_offset_motion, _dflt_tool_offset_cancel, _dflt_path, _return_type):
+def f186(_type_decimal_point_input, _type_increment_system, _type_g73_retract, _type_g83_clearance, _type_boring_shift, _type_scaling_unit, _type_rotation_incremental, _type_atan_signed, _type_tool_length_motion, _type_harmless_m, _type_references, _type_variables, _type_macros, _type_gcode_system, _type_g71_depth, _type_g71_retract, _type_roughing_final_pass, _type_g73_relief_x, _type_g73_relief_z, _type_g73_divisions, _type_g74_retract, _type_thread_chamfer, _type_thread_chamfer_angle, _type_g76_finish_passes, _type_g76_tool_angle, _type_g76_min_depth, _type_g76_finish_allowance, _type_tool_offset_motion, _type_tool_offset_cancel, _type_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_decimal_point_input, _dflt_increment_system, _dflt_g73_retract, _dflt_g83_clearance, _dflt_boring_shift, _dflt_scaling_unit, _dflt_rotation_incremental, _dflt_atan_signed, _dflt_tool_length_motion, _dflt_harmless_m, _dflt_references, _dflt_variables, _dflt_macros, _dflt_gcode_system, _dflt_g71_depth, _dflt_g71_retract, _dflt_roughing_final_pass, _dflt_g73_relief_x, _dflt_g73_relief_z, _dflt_g73_divisions, _dflt_g74_retract, _dflt_thread_chamfer, _dflt_thread_chamfer_angle, _dflt_g76_finish_passes, _dflt_g76_tool_angle, _dflt_g76_min_depth, _dflt_g76_finish_allowance, _dflt_tool_offset_motion, _dflt_tool_offset_cancel, _dflt_path, _return_type):
  def __init__(self,decimal_point_input:_type_decimal_point_input=_dflt_decimal_point_input,increment_system:_type_increment_system=_dflt_increment_system,g73_retract:_type_g73_retract=_dflt_g73_retract,g83_clearance:_type_g83_clearance=_dflt_g83_clearance,boring_shift:_type_boring_shift=_dflt_boring_shift,scaling_unit:_type_scaling_unit=_dflt_scaling_unit,rotation_incremental:_type_rotation_incremental=_dflt_rotation_incremental,atan_signed:_type_atan_signed=_dflt_atan_signed,tool_length_motion:_type_tool_length_motion=_dflt_tool_length_motion,harmless_m:_type_harmless_m=_dflt_harmless_m,references:_type_references=_HAS_DEFAULT_FACTORY,variables:_type_variables=_HAS_DEFAULT_FACTORY,macros:_type_macros=_HAS_DEFAULT_FACTORY,gcode_system:_type_gcode_system=_dflt_gcode_system,g71_depth:_type_g71_depth=_dflt_g71_depth,g71_retract:_type_g71_retract=_dflt_g71_retract,roughing_final_pass:_type_roughing_final_pass=_dflt_roughing_final_pass,g73_relief_x:_type_g73_relief_x=_dflt_g73_relief_x,g73_relief_z:_type_g73_relief_z=_dflt_g73_relief_z,g73_divisions:_type_g73_divisions=_dflt_g73_divisions,g74_retract:_type_g74_retract=_dflt_g74_retract,thread_chamfer:_type_thread_chamfer=_dflt_thread_chamfer,thread_chamfer_angle:_type_thread_chamfer_angle=_dflt_thread_chamfer_angle,g76_finish_passes:_type_g76_finish_passes=_dflt_g76_finish_passes,g76_tool_angle:_type_g76_tool_angle=_dflt_g76_tool_angle,g76_min_depth:_type_g76_min_depth=_dflt_g76_min_depth,g76_finish_allowance:_type_g76_finish_allowance=_dflt_g76_finish_allowance,tool_offset_motion:_type_tool_offset_motion=_dflt_tool_offset_motion,tool_offset_cancel:_type_tool_offset_cancel=_dflt_tool_offset_cancel,path:_type_path=_dflt_path)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'decimal_point_input',decimal_point_input)
   __dataclass_builtins_object__.__setattr__(self,'increment_system',increment_system)
@@ -1141,7 +1207,7 @@ def f182(_type_decimal_point_input, _type_increment_system, _type_g73_retract, _
   __dataclass_builtins_object__.__setattr__(self,'path',path)
  return __init__
 
-def f183(_type_degree, _type_knots, _type_control, _type_weights, _type_source, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_source, _return_type):
+def f187(_type_degree, _type_knots, _type_control, _type_weights, _type_source, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_source, _return_type):
  def __init__(self,degree:_type_degree,knots:_type_knots,control:_type_control,weights:_type_weights,source:_type_source=_dflt_source)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'degree',degree)
   __dataclass_builtins_object__.__setattr__(self,'knots',knots)
@@ -1150,7 +1216,7 @@ def f183(_type_degree, _type_knots, _type_control, _type_weights, _type_source, 
   __dataclass_builtins_object__.__setattr__(self,'source',source)
  return __init__
 
-def f184(_type_delete, _type_number, _type_oword, _type_words, _type_assigns, _type_comments, _type_percent, _type_unsupported, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_oword, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_percent, _dflt_unsupported, _return_type):
+def f188(_type_delete, _type_number, _type_oword, _type_words, _type_assigns, _type_comments, _type_percent, _type_unsupported, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_oword, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_percent, _dflt_unsupported, _return_type):
  def __init__(self,delete:_type_delete=_dflt_delete,number:_type_number=_dflt_number,oword:_type_oword=_dflt_oword,words:_type_words=_dflt_words,assigns:_type_assigns=_dflt_assigns,comments:_type_comments=_dflt_comments,percent:_type_percent=_dflt_percent,unsupported:_type_unsupported=_dflt_unsupported)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'delete',delete)
   __dataclass_builtins_object__.__setattr__(self,'number',number)
@@ -1162,7 +1228,7 @@ def f184(_type_delete, _type_number, _type_oword, _type_words, _type_assigns, _t
   __dataclass_builtins_object__.__setattr__(self,'unsupported',unsupported)
  return __init__
 
-def f185(_type_delete, _type_number, _type_program, _type_words, _type_assigns, _type_comments, _type_stmt, _type_stmt_at, _type_percent, _type_unmodelled, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_program, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_stmt, _dflt_stmt_at, _dflt_percent, _dflt_unmodelled, _return_type):
+def f189(_type_delete, _type_number, _type_program, _type_words, _type_assigns, _type_comments, _type_stmt, _type_stmt_at, _type_percent, _type_unmodelled, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_program, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_stmt, _dflt_stmt_at, _dflt_percent, _dflt_unmodelled, _return_type):
  def __init__(self,delete:_type_delete=_dflt_delete,number:_type_number=_dflt_number,program:_type_program=_dflt_program,words:_type_words=_dflt_words,assigns:_type_assigns=_dflt_assigns,comments:_type_comments=_dflt_comments,stmt:_type_stmt=_dflt_stmt,stmt_at:_type_stmt_at=_dflt_stmt_at,percent:_type_percent=_dflt_percent,unmodelled:_type_unmodelled=_dflt_unmodelled)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'delete',delete)
   __dataclass_builtins_object__.__setattr__(self,'number',number)
@@ -1176,7 +1242,7 @@ def f185(_type_delete, _type_number, _type_program, _type_words, _type_assigns, 
   __dataclass_builtins_object__.__setattr__(self,'unmodelled',unmodelled)
  return __init__
 
-def f186(_type_file, _type_line, _type_column, _type_end_column, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_column, _dflt_end_column, _dflt_text, _return_type):
+def f190(_type_file, _type_line, _type_column, _type_end_column, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_column, _dflt_end_column, _dflt_text, _return_type):
  def __init__(self,file:_type_file,line:_type_line,column:_type_column=_dflt_column,end_column:_type_end_column=_dflt_end_column,text:_type_text=_dflt_text)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'file',file)
   __dataclass_builtins_object__.__setattr__(self,'line',line)
@@ -1185,7 +1251,7 @@ def f186(_type_file, _type_line, _type_column, _type_end_column, _type_text, MIS
   __dataclass_builtins_object__.__setattr__(self,'text',text)
  return __init__
 
-def f187(_type_ia, _type_ib, _type_ca, _type_cb, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f191(_type_ia, _type_ib, _type_ca, _type_cb, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,ia:_type_ia,ib:_type_ib,ca:_type_ca,cb:_type_cb,angle:_type_angle)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'ia',ia)
   __dataclass_builtins_object__.__setattr__(self,'ib',ib)
@@ -1194,7 +1260,7 @@ def f187(_type_ia, _type_ib, _type_ca, _type_cb, _type_angle, MISSING, _HAS_DEFA
   __dataclass_builtins_object__.__setattr__(self,'angle',angle)
  return __init__
 
-def f188(_type_ia, _type_ib, _type_radius, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_radius, _dflt_angle, _return_type):
+def f192(_type_ia, _type_ib, _type_radius, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_radius, _dflt_angle, _return_type):
  def __init__(self,ia:_type_ia,ib:_type_ib,radius:_type_radius=_dflt_radius,angle:_type_angle=_dflt_angle)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'ia',ia)
   __dataclass_builtins_object__.__setattr__(self,'ib',ib)
@@ -1202,7 +1268,7 @@ def f188(_type_ia, _type_ib, _type_radius, _type_angle, MISSING, _HAS_DEFAULT_FA
   __dataclass_builtins_object__.__setattr__(self,'angle',angle)
  return __init__
 
-def f189(_type_ia, _type_ib, _type_s, _type_e, _type_ccw, _type_full, _type_centre, _type_r_signed, _type_r2_lo, _type_r2_hi, _type_start, _type_end, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f193(_type_ia, _type_ib, _type_s, _type_e, _type_ccw, _type_full, _type_centre, _type_r_signed, _type_r2_lo, _type_r2_hi, _type_start, _type_end, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,ia:_type_ia,ib:_type_ib,s:_type_s,e:_type_e,ccw:_type_ccw,full:_type_full,centre:_type_centre,r_signed:_type_r_signed,r2_lo:_type_r2_lo,r2_hi:_type_r2_hi,start:_type_start,end:_type_end)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'ia',ia)
   __dataclass_builtins_object__.__setattr__(self,'ib',ib)
@@ -1218,21 +1284,21 @@ def f189(_type_ia, _type_ib, _type_s, _type_e, _type_ccw, _type_full, _type_cent
   __dataclass_builtins_object__.__setattr__(self,'end',end)
  return __init__
 
-def f190(_type_key, _type_group, _type_lanes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f194(_type_key, _type_group, _type_lanes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,key:_type_key,group:_type_group,lanes:_type_lanes)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'key',key)
   __dataclass_builtins_object__.__setattr__(self,'group',group)
   __dataclass_builtins_object__.__setattr__(self,'lanes',lanes)
  return __init__
 
-def f191(_type_key, _type_meaning, _type_read, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f195(_type_key, _type_meaning, _type_read, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,key:_type_key,meaning:_type_meaning,read:_type_read)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'key',key)
   __dataclass_builtins_object__.__setattr__(self,'meaning',meaning)
   __dataclass_builtins_object__.__setattr__(self,'read',read)
  return __init__
 
-def f192(_type_kind, _type_end, _type_label, _type_centre, _type_clockwise, _type_dwell_s, _type_feed, _type_synced, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_dwell_s, _dflt_feed, _dflt_synced, _return_type):
+def f196(_type_kind, _type_end, _type_label, _type_centre, _type_clockwise, _type_dwell_s, _type_feed, _type_synced, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_dwell_s, _dflt_feed, _dflt_synced, _return_type):
  def __init__(self,kind:_type_kind,end:_type_end,label:_type_label,centre:_type_centre=_dflt_centre,clockwise:_type_clockwise=_dflt_clockwise,dwell_s:_type_dwell_s=_dflt_dwell_s,feed:_type_feed=_dflt_feed,synced:_type_synced=_dflt_synced)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'kind',kind)
   __dataclass_builtins_object__.__setattr__(self,'end',end)
@@ -1244,7 +1310,7 @@ def f192(_type_kind, _type_end, _type_label, _type_centre, _type_clockwise, _typ
   __dataclass_builtins_object__.__setattr__(self,'synced',synced)
  return __init__
 
-def f193(_type_kind, _type_label, _type_head, _type_remaining, _type_count, _type_ifs, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_remaining, _dflt_count, _dflt_ifs, _return_type):
+def f197(_type_kind, _type_label, _type_head, _type_remaining, _type_count, _type_ifs, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_remaining, _dflt_count, _dflt_ifs, _return_type):
  def __init__(self,kind:_type_kind,label:_type_label,head:_type_head,remaining:_type_remaining=_dflt_remaining,count:_type_count=_dflt_count,ifs:_type_ifs=_dflt_ifs)->_return_type:
   self.kind=kind
   self.label=label
@@ -1254,7 +1320,7 @@ def f193(_type_kind, _type_label, _type_head, _type_remaining, _type_count, _typ
   self.ifs=ifs
  return __init__
 
-def f194(_type_kind, _type_label, _type_ret, _type_saved, _type_body, _type_repeats, _type_loops, _type_ifs, _type_caller, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_label, _dflt_ret, _dflt_saved, _dflt_body, _dflt_repeats, _dflt_loops, _dflt_ifs, _dflt_caller, _return_type):
+def f198(_type_kind, _type_label, _type_ret, _type_saved, _type_body, _type_repeats, _type_loops, _type_ifs, _type_caller, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_label, _dflt_ret, _dflt_saved, _dflt_body, _dflt_repeats, _dflt_loops, _dflt_ifs, _dflt_caller, _return_type):
  def __init__(self,kind:_type_kind,label:_type_label=_dflt_label,ret:_type_ret=_dflt_ret,saved:_type_saved=_dflt_saved,body:_type_body=_dflt_body,repeats:_type_repeats=_dflt_repeats,loops:_type_loops=_HAS_DEFAULT_FACTORY,ifs:_type_ifs=_HAS_DEFAULT_FACTORY,caller:_type_caller=_dflt_caller)->_return_type:
   self.kind=kind
   self.label=label
@@ -1267,7 +1333,7 @@ def f194(_type_kind, _type_label, _type_ret, _type_saved, _type_body, _type_repe
   self.caller=caller
  return __init__
 
-def f195(_type_kind, _type_source, _type_program, _type_ret, _type_body, _type_repeats, _type_saved, _type_args, _type_loops, _type_custom, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_program, _dflt_ret, _dflt_body, _dflt_repeats, _dflt_saved, _dflt_args, _dflt_loops, _dflt_custom, _return_type):
+def f199(_type_kind, _type_source, _type_program, _type_ret, _type_body, _type_repeats, _type_saved, _type_args, _type_loops, _type_custom, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_program, _dflt_ret, _dflt_body, _dflt_repeats, _dflt_saved, _dflt_args, _dflt_loops, _dflt_custom, _return_type):
  def __init__(self,kind:_type_kind,source:_type_source,program:_type_program=_dflt_program,ret:_type_ret=_dflt_ret,body:_type_body=_dflt_body,repeats:_type_repeats=_dflt_repeats,saved:_type_saved=_dflt_saved,args:_type_args=_dflt_args,loops:_type_loops=_HAS_DEFAULT_FACTORY,custom:_type_custom=_dflt_custom)->_return_type:
   self.kind=kind
   self.source=source
@@ -1281,7 +1347,7 @@ def f195(_type_kind, _type_source, _type_program, _type_ret, _type_body, _type_r
   self.custom=custom
  return __init__
 
-def f196(_type_kind, _type_start, _type_end, _type_axes, _type_block, _type_span, _type_tool_length, _type_feed_mm_min, _type_plane, _type_clockwise, _type_centre, _type_radius, _type_turns, _type_dwell_s, _type_derived, _type_tool_register, _type_deps_start, _type_deps_end, _type_deps_tool, _type_extra, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_block, _dflt_span, _dflt_tool_length, _dflt_feed_mm_min, _dflt_plane, _dflt_clockwise, _dflt_centre, _dflt_radius, _dflt_turns, _dflt_dwell_s, _dflt_derived, _dflt_tool_register, _dflt_deps_start, _dflt_deps_end, _dflt_deps_tool, _dflt_extra, _dflt_frame, _return_type):
+def f200(_type_kind, _type_start, _type_end, _type_axes, _type_block, _type_span, _type_tool_length, _type_feed_mm_min, _type_plane, _type_clockwise, _type_centre, _type_radius, _type_turns, _type_dwell_s, _type_derived, _type_tool_register, _type_deps_start, _type_deps_end, _type_deps_tool, _type_extra, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_block, _dflt_span, _dflt_tool_length, _dflt_feed_mm_min, _dflt_plane, _dflt_clockwise, _dflt_centre, _dflt_radius, _dflt_turns, _dflt_dwell_s, _dflt_derived, _dflt_tool_register, _dflt_deps_start, _dflt_deps_end, _dflt_deps_tool, _dflt_extra, _dflt_frame, _return_type):
  def __init__(self,kind:_type_kind,start:_type_start,end:_type_end,axes:_type_axes,block:_type_block=_dflt_block,span:_type_span=_dflt_span,tool_length:_type_tool_length=_dflt_tool_length,feed_mm_min:_type_feed_mm_min=_dflt_feed_mm_min,plane:_type_plane=_dflt_plane,clockwise:_type_clockwise=_dflt_clockwise,centre:_type_centre=_dflt_centre,radius:_type_radius=_dflt_radius,turns:_type_turns=_dflt_turns,dwell_s:_type_dwell_s=_dflt_dwell_s,derived:_type_derived=_dflt_derived,tool_register:_type_tool_register=_dflt_tool_register,deps_start:_type_deps_start=_dflt_deps_start,deps_end:_type_deps_end=_dflt_deps_end,deps_tool:_type_deps_tool=_dflt_deps_tool,extra:_type_extra=_dflt_extra,frame:_type_frame=_dflt_frame)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'kind',kind)
   __dataclass_builtins_object__.__setattr__(self,'start',start)
@@ -1306,7 +1372,7 @@ def f196(_type_kind, _type_start, _type_end, _type_axes, _type_block, _type_span
   __dataclass_builtins_object__.__setattr__(self,'frame',frame)
  return __init__
 
-def f197(_type_kind, _type_start, _type_end, _type_centre, _type_clockwise, _type_line, _type_feed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_line, _dflt_feed, _return_type):
+def f201(_type_kind, _type_start, _type_end, _type_centre, _type_clockwise, _type_line, _type_feed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_line, _dflt_feed, _return_type):
  def __init__(self,kind:_type_kind,start:_type_start,end:_type_end,centre:_type_centre=_dflt_centre,clockwise:_type_clockwise=_dflt_clockwise,line:_type_line=_dflt_line,feed:_type_feed=_dflt_feed)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'kind',kind)
   __dataclass_builtins_object__.__setattr__(self,'start',start)
@@ -1317,7 +1383,7 @@ def f197(_type_kind, _type_start, _type_end, _type_centre, _type_clockwise, _typ
   __dataclass_builtins_object__.__setattr__(self,'feed',feed)
  return __init__
 
-def f198(_type_label, _type_keyword, _type_args, _type_column, _type_end_column, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f202(_type_label, _type_keyword, _type_args, _type_column, _type_end_column, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,label:_type_label,keyword:_type_keyword,args:_type_args,column:_type_column,end_column:_type_end_column)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'label',label)
   __dataclass_builtins_object__.__setattr__(self,'keyword',keyword)
@@ -1326,14 +1392,14 @@ def f198(_type_label, _type_keyword, _type_args, _type_column, _type_end_column,
   __dataclass_builtins_object__.__setattr__(self,'end_column',end_column)
  return __init__
 
-def f199(_type_lane, _type_g, _type_m, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f203(_type_lane, _type_g, _type_m, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,lane:_type_lane,g:_type_g,m:_type_m)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'lane',lane)
   __dataclass_builtins_object__.__setattr__(self,'g',g)
   __dataclass_builtins_object__.__setattr__(self,'m',m)
  return __init__
 
-def f200(_type_letter, _type_value, _type_span, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_text, _return_type):
+def f204(_type_letter, _type_value, _type_span, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_text, _return_type):
  def __init__(self,letter:_type_letter,value:_type_value,span:_type_span,text:_type_text=_dflt_text)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'letter',letter)
   __dataclass_builtins_object__.__setattr__(self,'value',value)
@@ -1341,20 +1407,20 @@ def f200(_type_letter, _type_value, _type_span, _type_text, MISSING, _HAS_DEFAUL
   __dataclass_builtins_object__.__setattr__(self,'text',text)
  return __init__
 
-def f201(_type_linear_axis, _type_rotary_axis, _type_cylinder_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f205(_type_linear_axis, _type_rotary_axis, _type_cylinder_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,linear_axis:_type_linear_axis,rotary_axis:_type_rotary_axis,cylinder_radius:_type_cylinder_radius)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'linear_axis',linear_axis)
   __dataclass_builtins_object__.__setattr__(self,'rotary_axis',rotary_axis)
   __dataclass_builtins_object__.__setattr__(self,'cylinder_radius',cylinder_radius)
  return __init__
 
-def f202(_type_lo, _type_hi, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f206(_type_lo, _type_hi, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,lo:_type_lo,hi:_type_hi)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'lo',lo)
   __dataclass_builtins_object__.__setattr__(self,'hi',hi)
  return __init__
 
-def f203(_type_lo, _type_hi, _type_lo_closed, _type_hi_closed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f207(_type_lo, _type_hi, _type_lo_closed, _type_hi_closed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,lo:_type_lo,hi:_type_hi,lo_closed:_type_lo_closed,hi_closed:_type_hi_closed)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'lo',lo)
   __dataclass_builtins_object__.__setattr__(self,'hi',hi)
@@ -1362,14 +1428,14 @@ def f203(_type_lo, _type_hi, _type_lo_closed, _type_hi_closed, MISSING, _HAS_DEF
   __dataclass_builtins_object__.__setattr__(self,'hi_closed',hi_closed)
  return __init__
 
-def f204(_type_m, _type_head, _type_count, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_count, _return_type):
+def f208(_type_m, _type_head, _type_count, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_count, _return_type):
  def __init__(self,m:_type_m,head:_type_head,count:_type_count=_dflt_count)->_return_type:
   self.m=m
   self.head=head
   self.count=count
  return __init__
 
-def f205(_type_margin, _type_params, _type_engine, _type_max_violations, _type_arc_tolerance, _type_recovery, _type_max_iterations, _type_dialect, _type_library, _type_block_delete, _type_budget_s, _type_limits, _type_tool_table, _type_tool_table_units, _type_tool_table_x_offset, _type_written, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_margin, _dflt_params, _dflt_engine, _dflt_max_violations, _dflt_arc_tolerance, _dflt_recovery, _dflt_max_iterations, _dflt_dialect, _dflt_library, _dflt_block_delete, _dflt_budget_s, _dflt_limits, _dflt_tool_table, _dflt_tool_table_units, _dflt_tool_table_x_offset, _dflt_written, _return_type):
+def f209(_type_margin, _type_params, _type_engine, _type_max_violations, _type_arc_tolerance, _type_recovery, _type_max_iterations, _type_dialect, _type_library, _type_block_delete, _type_budget_s, _type_limits, _type_tool_table, _type_tool_table_units, _type_tool_table_x_offset, _type_written, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_margin, _dflt_params, _dflt_engine, _dflt_max_violations, _dflt_arc_tolerance, _dflt_recovery, _dflt_max_iterations, _dflt_dialect, _dflt_library, _dflt_block_delete, _dflt_budget_s, _dflt_limits, _dflt_tool_table, _dflt_tool_table_units, _dflt_tool_table_x_offset, _dflt_written, _return_type):
  def __init__(self,margin:_type_margin=_dflt_margin,params:_type_params=_dflt_params,engine:_type_engine=_dflt_engine,max_violations:_type_max_violations=_dflt_max_violations,arc_tolerance:_type_arc_tolerance=_dflt_arc_tolerance,recovery:_type_recovery=_dflt_recovery,max_iterations:_type_max_iterations=_dflt_max_iterations,dialect:_type_dialect=_dflt_dialect,library:_type_library=_dflt_library,block_delete:_type_block_delete=_dflt_block_delete,budget_s:_type_budget_s=_dflt_budget_s,limits:_type_limits=_dflt_limits,tool_table:_type_tool_table=_dflt_tool_table,tool_table_units:_type_tool_table_units=_dflt_tool_table_units,tool_table_x_offset:_type_tool_table_x_offset=_dflt_tool_table_x_offset,written:_type_written=_dflt_written)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'margin',margin)
   __dataclass_builtins_object__.__setattr__(self,'params',params)
@@ -1389,7 +1455,7 @@ def f205(_type_margin, _type_params, _type_engine, _type_max_violations, _type_a
   __dataclass_builtins_object__.__setattr__(self,'written',written)
  return __init__
 
-def f206(_type_message, _type_span, _type_block, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_block, _dflt_code, _return_type):
+def f210(_type_message, _type_span, _type_block, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_block, _dflt_code, _return_type):
  def __init__(self,message:_type_message,span:_type_span=_dflt_span,block:_type_block=_dflt_block,code:_type_code=_dflt_code)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'message',message)
   __dataclass_builtins_object__.__setattr__(self,'span',span)
@@ -1397,13 +1463,13 @@ def f206(_type_message, _type_span, _type_block, _type_code, MISSING, _HAS_DEFAU
   __dataclass_builtins_object__.__setattr__(self,'code',code)
  return __init__
 
-def f207(_type_missing, _type_on_fallback, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f211(_type_missing, _type_on_fallback, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,missing:_type_missing,on_fallback:_type_on_fallback)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'missing',missing)
   __dataclass_builtins_object__.__setattr__(self,'on_fallback',on_fallback)
  return __init__
 
-def f208(_type_name, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):
+def f212(_type_name, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):
  def __init__(self,name:_type_name,limits:_type_limits,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'name',name)
   __dataclass_builtins_object__.__setattr__(self,'limits',limits)
@@ -1411,7 +1477,7 @@ def f208(_type_name, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFA
   __dataclass_builtins_object__.__setattr__(self,'point',point)
  return __init__
 
-def f209(_type_name, _type_lo, _type_hi, _type_written, _type_absolute, _type_lo_open, _type_hi_open, _type_centre, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_absolute, _dflt_lo_open, _dflt_hi_open, _dflt_centre, _return_type):
+def f213(_type_name, _type_lo, _type_hi, _type_written, _type_absolute, _type_lo_open, _type_hi_open, _type_centre, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_absolute, _dflt_lo_open, _dflt_hi_open, _dflt_centre, _return_type):
  def __init__(self,name:_type_name,lo:_type_lo,hi:_type_hi,written:_type_written,absolute:_type_absolute=_dflt_absolute,lo_open:_type_lo_open=_dflt_lo_open,hi_open:_type_hi_open=_dflt_hi_open,centre:_type_centre=_dflt_centre)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'name',name)
   __dataclass_builtins_object__.__setattr__(self,'lo',lo)
@@ -1423,14 +1489,14 @@ def f209(_type_name, _type_lo, _type_hi, _type_written, _type_absolute, _type_lo
   __dataclass_builtins_object__.__setattr__(self,'centre',centre)
  return __init__
 
-def f210(_type_name, _type_max_passes, _type_spent, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_spent, _return_type):
+def f214(_type_name, _type_max_passes, _type_spent, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_spent, _return_type):
  def __init__(self,name:_type_name,max_passes:_type_max_passes,spent:_type_spent=_dflt_spent)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'name',name)
   __dataclass_builtins_object__.__setattr__(self,'max_passes',max_passes)
   __dataclass_builtins_object__.__setattr__(self,'spent',spent)
  return __init__
 
-def f211(_type_name, _type_plane, _type_vertices, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_limits, _dflt_forbid, _dflt_point, _return_type):
+def f215(_type_name, _type_plane, _type_vertices, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_limits, _dflt_forbid, _dflt_point, _return_type):
  def __init__(self,name:_type_name,plane:_type_plane,vertices:_type_vertices,limits:_type_limits=_dflt_limits,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'name',name)
   __dataclass_builtins_object__.__setattr__(self,'plane',plane)
@@ -1440,7 +1506,7 @@ def f211(_type_name, _type_plane, _type_vertices, _type_limits, _type_forbid, _t
   __dataclass_builtins_object__.__setattr__(self,'point',point)
  return __init__
 
-def f212(_type_name, _type_pulse, _type_rapid_mm_min, _type_max_feed_mm_min, _type_rotary, _type_accel_mm_s2, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotary, _dflt_accel_mm_s2, _return_type):
+def f216(_type_name, _type_pulse, _type_rapid_mm_min, _type_max_feed_mm_min, _type_rotary, _type_accel_mm_s2, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotary, _dflt_accel_mm_s2, _return_type):
  def __init__(self,name:_type_name,pulse:_type_pulse,rapid_mm_min:_type_rapid_mm_min,max_feed_mm_min:_type_max_feed_mm_min,rotary:_type_rotary=_dflt_rotary,accel_mm_s2:_type_accel_mm_s2=_dflt_accel_mm_s2)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'name',name)
   __dataclass_builtins_object__.__setattr__(self,'pulse',pulse)
@@ -1450,7 +1516,7 @@ def f212(_type_name, _type_pulse, _type_rapid_mm_min, _type_max_feed_mm_min, _ty
   __dataclass_builtins_object__.__setattr__(self,'accel_mm_s2',accel_mm_s2)
  return __init__
 
-def f213(_type_name, _type_reference_axis, _type_limited_axis, _type_start, _type_regions, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):
+def f217(_type_name, _type_reference_axis, _type_limited_axis, _type_start, _type_regions, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):
  def __init__(self,name:_type_name,reference_axis:_type_reference_axis,limited_axis:_type_limited_axis,start:_type_start,regions:_type_regions,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'name',name)
   __dataclass_builtins_object__.__setattr__(self,'reference_axis',reference_axis)
@@ -1461,7 +1527,7 @@ def f213(_type_name, _type_reference_axis, _type_limited_axis, _type_start, _typ
   __dataclass_builtins_object__.__setattr__(self,'point',point)
  return __init__
 
-def f214(_type_name, _type_units, _type_axes, _type_rapid_mode, _type_monitor_period_ms, _type_reference, _type_start, _type_offsets, _type_tool_lengths, _type_allowed, _type_modal, _type_tool_axis, _type_source, _type_warnings, _type_sections, _type_cutter_compensation, _type_tool_diameters, _type_sha256, _type_dialect, _type_fanuc, _type_block_delete, _type_arc_tolerance, _type_path_mode, _type_path_tolerance, _type_machine_type, _type_diameter_axes, _type_tool_offsets, _type_tool_length_wear, _type_tool_radius_wear, _type_control_units, _type_tool_change_quill_up, _type_tool_change_at_g30, _type_tool_change_position, _type_subroutine_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_modal, _dflt_tool_axis, _dflt_source, _dflt_warnings, _dflt_sections, _dflt_cutter_compensation, _dflt_tool_diameters, _dflt_sha256, _dflt_dialect, _dflt_fanuc, _dflt_block_delete, _dflt_arc_tolerance, _dflt_path_mode, _dflt_path_tolerance, _dflt_machine_type, _dflt_diameter_axes, _dflt_tool_offsets, _dflt_tool_length_wear, _dflt_tool_radius_wear, _dflt_control_units, _dflt_tool_change_quill_up, _dflt_tool_change_at_g30, _dflt_tool_change_position, _dflt_subroutine_path, _return_type):
+def f218(_type_name, _type_units, _type_axes, _type_rapid_mode, _type_monitor_period_ms, _type_reference, _type_start, _type_offsets, _type_tool_lengths, _type_allowed, _type_modal, _type_tool_axis, _type_source, _type_warnings, _type_sections, _type_cutter_compensation, _type_tool_diameters, _type_sha256, _type_dialect, _type_fanuc, _type_block_delete, _type_arc_tolerance, _type_path_mode, _type_path_tolerance, _type_machine_type, _type_diameter_axes, _type_tool_offsets, _type_tool_length_wear, _type_tool_radius_wear, _type_control_units, _type_tool_change_quill_up, _type_tool_change_at_g30, _type_tool_change_position, _type_subroutine_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_modal, _dflt_tool_axis, _dflt_source, _dflt_warnings, _dflt_sections, _dflt_cutter_compensation, _dflt_tool_diameters, _dflt_sha256, _dflt_dialect, _dflt_fanuc, _dflt_block_delete, _dflt_arc_tolerance, _dflt_path_mode, _dflt_path_tolerance, _dflt_machine_type, _dflt_diameter_axes, _dflt_tool_offsets, _dflt_tool_length_wear, _dflt_tool_radius_wear, _dflt_control_units, _dflt_tool_change_quill_up, _dflt_tool_change_at_g30, _dflt_tool_change_position, _dflt_subroutine_path, _return_type):
  def __init__(self,name:_type_name,units:_type_units,axes:_type_axes,rapid_mode:_type_rapid_mode,monitor_period_ms:_type_monitor_period_ms,reference:_type_reference,start:_type_start,offsets:_type_offsets,tool_lengths:_type_tool_lengths,allowed:_type_allowed,modal:_type_modal=_dflt_modal,tool_axis:_type_tool_axis=_dflt_tool_axis,source:_type_source=_dflt_source,warnings:_type_warnings=_dflt_warnings,sections:_type_sections=_HAS_DEFAULT_FACTORY,cutter_compensation:_type_cutter_compensation=_dflt_cutter_compensation,tool_diameters:_type_tool_diameters=_HAS_DEFAULT_FACTORY,sha256:_type_sha256=_dflt_sha256,dialect:_type_dialect=_dflt_dialect,fanuc:_type_fanuc=_HAS_DEFAULT_FACTORY,block_delete:_type_block_delete=_dflt_block_delete,arc_tolerance:_type_arc_tolerance=_dflt_arc_tolerance,path_mode:_type_path_mode=_dflt_path_mode,path_tolerance:_type_path_tolerance=_dflt_path_tolerance,machine_type:_type_machine_type=_dflt_machine_type,diameter_axes:_type_diameter_axes=_dflt_diameter_axes,tool_offsets:_type_tool_offsets=_HAS_DEFAULT_FACTORY,tool_length_wear:_type_tool_length_wear=_HAS_DEFAULT_FACTORY,tool_radius_wear:_type_tool_radius_wear=_HAS_DEFAULT_FACTORY,control_units:_type_control_units=_dflt_control_units,tool_change_quill_up:_type_tool_change_quill_up=_dflt_tool_change_quill_up,tool_change_at_g30:_type_tool_change_at_g30=_dflt_tool_change_at_g30,tool_change_position:_type_tool_change_position=_HAS_DEFAULT_FACTORY,subroutine_path:_type_subroutine_path=_dflt_subroutine_path)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'name',name)
   __dataclass_builtins_object__.__setattr__(self,'units',units)
@@ -1499,12 +1565,12 @@ def f214(_type_name, _type_units, _type_axes, _type_rapid_mode, _type_monitor_pe
   __dataclass_builtins_object__.__setattr__(self,'subroutine_path',subroutine_path)
  return __init__
 
-def f215(_type_number, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f219(_type_number, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,number:_type_number)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'number',number)
  return __init__
 
-def f216(_type_number, _type_geometry, _type_wear, _type_nose_radius, _type_wear_radius, _type_tip, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_geometry, _dflt_wear, _dflt_nose_radius, _dflt_wear_radius, _dflt_tip, _return_type):
+def f220(_type_number, _type_geometry, _type_wear, _type_nose_radius, _type_wear_radius, _type_tip, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_geometry, _dflt_wear, _dflt_nose_radius, _dflt_wear_radius, _dflt_tip, _return_type):
  def __init__(self,number:_type_number,geometry:_type_geometry=_dflt_geometry,wear:_type_wear=_dflt_wear,nose_radius:_type_nose_radius=_dflt_nose_radius,wear_radius:_type_wear_radius=_dflt_wear_radius,tip:_type_tip=_dflt_tip)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'number',number)
   __dataclass_builtins_object__.__setattr__(self,'geometry',geometry)
@@ -1514,12 +1580,12 @@ def f216(_type_number, _type_geometry, _type_wear, _type_nose_radius, _type_wear
   __dataclass_builtins_object__.__setattr__(self,'tip',tip)
  return __init__
 
-def f217(_type_offsets, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f221(_type_offsets, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,offsets:_type_offsets)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'offsets',offsets)
  return __init__
 
-def f218(_type_p0, _type_p1, _type_tau0, _type_tau1, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tau0, _dflt_tau1, _return_type):
+def f222(_type_p0, _type_p1, _type_tau0, _type_tau1, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tau0, _dflt_tau1, _return_type):
  def __init__(self,p0:_type_p0,p1:_type_p1,tau0:_type_tau0=_dflt_tau0,tau1:_type_tau1=_dflt_tau1)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'p0',p0)
   __dataclass_builtins_object__.__setattr__(self,'p1',p1)
@@ -1527,7 +1593,7 @@ def f218(_type_p0, _type_p1, _type_tau0, _type_tau1, MISSING, _HAS_DEFAULT_FACTO
   __dataclass_builtins_object__.__setattr__(self,'tau1',tau1)
  return __init__
 
-def f219(_type_p0, _type_p1, _type_turns, _type_x_off, _type_c_entry, _type_arc, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_arc, _return_type):
+def f223(_type_p0, _type_p1, _type_turns, _type_x_off, _type_c_entry, _type_arc, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_arc, _return_type):
  def __init__(self,p0:_type_p0,p1:_type_p1,turns:_type_turns,x_off:_type_x_off,c_entry:_type_c_entry,arc:_type_arc=_dflt_arc)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'p0',p0)
   __dataclass_builtins_object__.__setattr__(self,'p1',p1)
@@ -1537,7 +1603,7 @@ def f219(_type_p0, _type_p1, _type_turns, _type_x_off, _type_c_entry, _type_arc,
   __dataclass_builtins_object__.__setattr__(self,'arc',arc)
  return __init__
 
-def f220(_type_start, _type_end, _type_turns, _type_x_off, _type_c_entry, _type_linear_axis, _type_rotary_axis, _type_grid, _type_arc, _type_centre, _type_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_radius, _return_type):
+def f224(_type_start, _type_end, _type_turns, _type_x_off, _type_c_entry, _type_linear_axis, _type_rotary_axis, _type_grid, _type_arc, _type_centre, _type_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_radius, _return_type):
  def __init__(self,start:_type_start,end:_type_end,turns:_type_turns,x_off:_type_x_off,c_entry:_type_c_entry,linear_axis:_type_linear_axis,rotary_axis:_type_rotary_axis,grid:_type_grid,arc:_type_arc,centre:_type_centre=_dflt_centre,radius:_type_radius=_dflt_radius)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'start',start)
   __dataclass_builtins_object__.__setattr__(self,'end',end)
@@ -1552,7 +1618,7 @@ def f220(_type_start, _type_end, _type_turns, _type_x_off, _type_c_entry, _type_
   __dataclass_builtins_object__.__setattr__(self,'radius',radius)
  return __init__
 
-def f221(_type_status, _type_values, _type_approximate, _type_stopped, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_approximate, _dflt_stopped, _return_type):
+def f225(_type_status, _type_values, _type_approximate, _type_stopped, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_approximate, _dflt_stopped, _return_type):
  def __init__(self,status:_type_status,values:_type_values,approximate:_type_approximate=_dflt_approximate,stopped:_type_stopped=_dflt_stopped)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'status',status)
   __dataclass_builtins_object__.__setattr__(self,'values',values)
@@ -1560,20 +1626,20 @@ def f221(_type_status, _type_values, _type_approximate, _type_stopped, MISSING, 
   __dataclass_builtins_object__.__setattr__(self,'stopped',stopped)
  return __init__
 
-def f222(_type_summary, _type_configure, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f226(_type_summary, _type_configure, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,summary:_type_summary,configure:_type_configure)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'summary',summary)
   __dataclass_builtins_object__.__setattr__(self,'configure',configure)
  return __init__
 
-def f223(_type_swap, _type_sc, _type_sh, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
+def f227(_type_swap, _type_sc, _type_sh, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):
  def __init__(self,swap:_type_swap,sc:_type_sc,sh:_type_sh)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'swap',swap)
   __dataclass_builtins_object__.__setattr__(self,'sc',sc)
   __dataclass_builtins_object__.__setattr__(self,'sh',sh)
  return __init__
 
-def f224(_type_text, _type_name, _type_sha256, _type_path, _type_notes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_path, _dflt_notes, _return_type):
+def f228(_type_text, _type_name, _type_sha256, _type_path, _type_notes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_path, _dflt_notes, _return_type):
  def __init__(self,text:_type_text,name:_type_name,sha256:_type_sha256,path:_type_path=_dflt_path,notes:_type_notes=_dflt_notes)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'text',text)
   __dataclass_builtins_object__.__setattr__(self,'name',name)
@@ -1582,20 +1648,20 @@ def f224(_type_text, _type_name, _type_sha256, _type_path, _type_notes, MISSING,
   __dataclass_builtins_object__.__setattr__(self,'notes',notes)
  return __init__
 
-def f225(_type_upto, _type_min, _type_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_min, _dflt_max, _return_type):
+def f229(_type_upto, _type_min, _type_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_min, _dflt_max, _return_type):
  def __init__(self,upto:_type_upto,min:_type_min=_dflt_min,max:_type_max=_dflt_max)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'upto',upto)
   __dataclass_builtins_object__.__setattr__(self,'min',min)
   __dataclass_builtins_object__.__setattr__(self,'max',max)
  return __init__
 
-def f226(_type_value, _type_deps, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_deps, _return_type):
+def f230(_type_value, _type_deps, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_deps, _return_type):
  def __init__(self,value:_type_value,deps:_type_deps=_HAS_DEFAULT_FACTORY)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'value',value)
   __dataclass_builtins_object__.__setattr__(self,'deps',_dflt_deps() if deps is _HAS_DEFAULT_FACTORY else deps)
  return __init__
 
-def f227(_type_verdict, _type_violations, _type_reasons, _type_engines, _type_solver, _type_solver_version, _type_timings, _type_notes, _type_stats, _type_margin, _type_params, _type_engine, _type_truncated, _type_file, _type_extra, _type_program_sha256, _type_machine_name, _type_machine_file, _type_machine_sha256, _type_settings, _type_interrupted, _type_budget_s, _type_profile, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violations, _dflt_reasons, _dflt_engines, _dflt_solver, _dflt_solver_version, _dflt_timings, _dflt_notes, _dflt_stats, _dflt_margin, _dflt_params, _dflt_engine, _dflt_truncated, _dflt_file, _dflt_extra, _dflt_program_sha256, _dflt_machine_name, _dflt_machine_file, _dflt_machine_sha256, _dflt_settings, _dflt_interrupted, _dflt_budget_s, _dflt_profile, _return_type):
+def f231(_type_verdict, _type_violations, _type_reasons, _type_engines, _type_solver, _type_solver_version, _type_timings, _type_notes, _type_stats, _type_margin, _type_params, _type_engine, _type_truncated, _type_file, _type_extra, _type_program_sha256, _type_machine_name, _type_machine_file, _type_machine_sha256, _type_settings, _type_interrupted, _type_budget_s, _type_profile, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violations, _dflt_reasons, _dflt_engines, _dflt_solver, _dflt_solver_version, _dflt_timings, _dflt_notes, _dflt_stats, _dflt_margin, _dflt_params, _dflt_engine, _dflt_truncated, _dflt_file, _dflt_extra, _dflt_program_sha256, _dflt_machine_name, _dflt_machine_file, _dflt_machine_sha256, _dflt_settings, _dflt_interrupted, _dflt_budget_s, _dflt_profile, _return_type):
  def __init__(self,verdict:_type_verdict,violations:_type_violations=_dflt_violations,reasons:_type_reasons=_dflt_reasons,engines:_type_engines=_dflt_engines,solver:_type_solver=_dflt_solver,solver_version:_type_solver_version=_dflt_solver_version,timings:_type_timings=_dflt_timings,notes:_type_notes=_dflt_notes,stats:_type_stats=_dflt_stats,margin:_type_margin=_dflt_margin,params:_type_params=_dflt_params,engine:_type_engine=_dflt_engine,truncated:_type_truncated=_dflt_truncated,file:_type_file=_dflt_file,extra:_type_extra=_HAS_DEFAULT_FACTORY,program_sha256:_type_program_sha256=_dflt_program_sha256,machine_name:_type_machine_name=_dflt_machine_name,machine_file:_type_machine_file=_dflt_machine_file,machine_sha256:_type_machine_sha256=_dflt_machine_sha256,settings:_type_settings=_dflt_settings,interrupted:_type_interrupted=_dflt_interrupted,budget_s:_type_budget_s=_dflt_budget_s,profile:_type_profile=_HAS_DEFAULT_FACTORY)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'verdict',verdict)
   __dataclass_builtins_object__.__setattr__(self,'violations',violations)
@@ -1622,14 +1688,14 @@ def f227(_type_verdict, _type_violations, _type_reasons, _type_engines, _type_so
   __dataclass_builtins_object__.__setattr__(self,'profile',_dflt_profile() if profile is _HAS_DEFAULT_FACTORY else profile)
  return __init__
 
-def f228(_type_violation, _type_reason, _type_engine, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violation, _dflt_reason, _dflt_engine, _return_type):
+def f232(_type_violation, _type_reason, _type_engine, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violation, _dflt_reason, _dflt_engine, _return_type):
  def __init__(self,violation:_type_violation=_dflt_violation,reason:_type_reason=_dflt_reason,engine:_type_engine=_dflt_engine)->_return_type:
   self.violation=violation
   self.reason=reason
   self.engine=engine
  return __init__
 
-def f229(_type_words, _type_span, _type_index, _type_number, _type_messages, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _return_type):
+def f233(_type_words, _type_span, _type_index, _type_number, _type_messages, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _return_type):
  def __init__(self,words:_type_words,span:_type_span,index:_type_index,number:_type_number=_dflt_number,messages:_type_messages=_dflt_messages)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'words',words)
   __dataclass_builtins_object__.__setattr__(self,'span',span)
@@ -1638,7 +1704,7 @@ def f229(_type_words, _type_span, _type_index, _type_number, _type_messages, MIS
   __dataclass_builtins_object__.__setattr__(self,'messages',messages)
  return __init__
 
-def f230(_type_words, _type_span, _type_index, _type_number, _type_messages, _type_shape, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _dflt_shape, _return_type):
+def f234(_type_words, _type_span, _type_index, _type_number, _type_messages, _type_shape, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _dflt_shape, _return_type):
  def __init__(self,words:_type_words,span:_type_span,index:_type_index,number:_type_number=_dflt_number,messages:_type_messages=_dflt_messages,shape:_type_shape=_dflt_shape)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'words',words)
   __dataclass_builtins_object__.__setattr__(self,'span',span)
@@ -1648,7 +1714,7 @@ def f230(_type_words, _type_span, _type_index, _type_number, _type_messages, _ty
   __dataclass_builtins_object__.__setattr__(self,'shape',shape)
  return __init__
 
-def f231(_type_work, _type_offset, _type_rotation, _type_diameter, _type_inch, _type_opaque, _type_work_offset, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotation, _dflt_diameter, _dflt_inch, _dflt_opaque, _dflt_work_offset, _return_type):
+def f235(_type_work, _type_offset, _type_rotation, _type_diameter, _type_inch, _type_opaque, _type_work_offset, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotation, _dflt_diameter, _dflt_inch, _dflt_opaque, _dflt_work_offset, _return_type):
  def __init__(self,work:_type_work,offset:_type_offset,rotation:_type_rotation=_dflt_rotation,diameter:_type_diameter=_dflt_diameter,inch:_type_inch=_dflt_inch,opaque:_type_opaque=_dflt_opaque,work_offset:_type_work_offset=_dflt_work_offset)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'work',work)
   __dataclass_builtins_object__.__setattr__(self,'offset',offset)
@@ -1659,790 +1725,790 @@ def f231(_type_work, _type_offset, _type_rotation, _type_diameter, _type_inch, _
   __dataclass_builtins_object__.__setattr__(self,'work_offset',work_offset)
  return __init__
 
-def f232(_type_zones, _type_tool_axis, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tool_axis, _return_type):
+def f236(_type_zones, _type_tool_axis, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tool_axis, _return_type):
  def __init__(self,zones:_type_zones,tool_axis:_type_tool_axis=_dflt_tool_axis)->_return_type:
   __dataclass_builtins_object__.__setattr__(self,'zones',zones)
   __dataclass_builtins_object__.__setattr__(self,'tool_axis',tool_axis)
  return __init__
 
-def f233(cls, FrozenInstanceError):
- def __delattr__(self,name):
-  if type(self) is cls or name in ('axes','columns','offset_bound','motions','lines','rapids','blocks','start','first_row','row0',):
-   raise FrozenInstanceError(f"cannot delete field {name!r}")
-  super(cls, self).__delattr__(name)
- return __delattr__
-
-def f234(cls, FrozenInstanceError):
- def __delattr__(self,name):
-  if type(self) is cls or name in ('axes','degrees','cos','sin','before','after',):
-   raise FrozenInstanceError(f"cannot delete field {name!r}")
-  super(cls, self).__delattr__(name)
- return __delattr__
-
-def f235(cls, FrozenInstanceError):
- def __delattr__(self,name):
-  if type(self) is cls or name in ('axes','scale','kind','start','end','line','block','tool_length','centre','plane','clockwise','turns','feed','file','objects','dwell','derived','frame','radius','tool_register','tools_known',):
-   raise FrozenInstanceError(f"cannot delete field {name!r}")
-  super(cls, self).__delattr__(name)
- return __delattr__
-
-def f236(cls, FrozenInstanceError):
- def __delattr__(self,name):
-  if type(self) is cls or name in ('axes',):
-   raise FrozenInstanceError(f"cannot delete field {name!r}")
-  super(cls, self).__delattr__(name)
- return __delattr__
-
 def f237(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('blend','tolerance','naive','dialect','code',):
+  if type(self) is cls or name in ('axes','columns','offset_bound','motions','lines','rapids','blocks','start','first_row','row0',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f238(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('block','span','zone','point','path_point','parameter','parameter_exact','first_exit','first_exit_parameter','first_exit_exact','depth','depth_exact','engine','segment_kind','derived','kind','params','zones','note','on_path','break_line','break_parameter','break_point','leg','switches','exit_located','frame',):
+  if type(self) is cls or name in ('axes','degrees','cos','sin','before','after',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f239(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('centre','factors',):
+  if type(self) is cls or name in ('axes','scale','kind','start','end','line','block','tool_length','centre','plane','clockwise','turns','feed','file','objects','dwell','derived','frame','radius','tool_register','tools_known',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f240(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('centre','u','rho','ratio','sweep','clockwise','rho_max',):
+  if type(self) is cls or name in ('axes',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f241(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('code','message','span','severity','file',):
+  if type(self) is cls or name in ('blend','tolerance','naive','dialect','code',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f242(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('code','reason','span',):
+  if type(self) is cls or name in ('block','span','zone','point','path_point','parameter','parameter_exact','first_exit','first_exit_parameter','first_exit_exact','depth','depth_exact','engine','segment_kind','derived','kind','params','zones','note','on_path','break_line','break_parameter','break_point','leg','switches','exit_located','frame',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f243(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('decimal_point_input','increment_system','g73_retract','g83_clearance','boring_shift','scaling_unit','rotation_incremental','atan_signed','tool_length_motion','harmless_m','references','variables','macros','gcode_system','g71_depth','g71_retract','roughing_final_pass','g73_relief_x','g73_relief_z','g73_divisions','g74_retract','thread_chamfer','thread_chamfer_angle','g76_finish_passes','g76_tool_angle','g76_min_depth','g76_finish_allowance','tool_offset_motion','tool_offset_cancel','path',):
+  if type(self) is cls or name in ('centre','factors',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f244(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('degree','knots','control','weights','source',):
+  if type(self) is cls or name in ('centre','u','rho','ratio','sweep','clockwise','rho_max',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f245(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('delete','number','oword','words','assigns','comments','percent','unsupported',):
+  if type(self) is cls or name in ('code','message','span','severity','file',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f246(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('delete','number','program','words','assigns','comments','stmt','stmt_at','percent','unmodelled',):
+  if type(self) is cls or name in ('code','reason','span',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f247(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('file','line','column','end_column','text',):
+  if type(self) is cls or name in ('decimal_point_input','increment_system','g73_retract','g83_clearance','boring_shift','scaling_unit','rotation_incremental','atan_signed','tool_length_motion','harmless_m','references','variables','macros','gcode_system','g71_depth','g71_retract','roughing_final_pass','g73_relief_x','g73_relief_z','g73_divisions','g74_retract','thread_chamfer','thread_chamfer_angle','g76_finish_passes','g76_tool_angle','g76_min_depth','g76_finish_allowance','tool_offset_motion','tool_offset_cancel','path',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f248(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('ia','ib','ca','cb','angle',):
+  if type(self) is cls or name in ('degree','knots','control','weights','source',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f249(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('ia','ib','radius','angle',):
+  if type(self) is cls or name in ('delete','number','oword','words','assigns','comments','percent','unsupported',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f250(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('ia','ib','s','e','ccw','full','centre','r_signed','r2_lo','r2_hi','start','end',):
+  if type(self) is cls or name in ('delete','number','program','words','assigns','comments','stmt','stmt_at','percent','unmodelled',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f251(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('key','group','lanes',):
+  if type(self) is cls or name in ('file','line','column','end_column','text',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f252(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('key','meaning','read',):
+  if type(self) is cls or name in ('ia','ib','ca','cb','angle',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f253(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('kind','end','label','centre','clockwise','dwell_s','feed','synced',):
+  if type(self) is cls or name in ('ia','ib','radius','angle',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f254(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('kind','start','end','axes','block','span','tool_length','feed_mm_min','plane','clockwise','centre','radius','turns','dwell_s','derived','tool_register','deps_start','deps_end','deps_tool','extra','frame',):
+  if type(self) is cls or name in ('ia','ib','s','e','ccw','full','centre','r_signed','r2_lo','r2_hi','start','end',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f255(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('kind','start','end','centre','clockwise','line','feed',):
+  if type(self) is cls or name in ('key','group','lanes',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f256(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('label','keyword','args','column','end_column',):
+  if type(self) is cls or name in ('key','meaning','read',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f257(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('lane','g','m',):
+  if type(self) is cls or name in ('kind','end','label','centre','clockwise','dwell_s','feed','synced',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f258(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('letter','value','span','text',):
+  if type(self) is cls or name in ('kind','start','end','axes','block','span','tool_length','feed_mm_min','plane','clockwise','centre','radius','turns','dwell_s','derived','tool_register','deps_start','deps_end','deps_tool','extra','frame',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f259(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('linear_axis','rotary_axis','cylinder_radius',):
+  if type(self) is cls or name in ('kind','start','end','centre','clockwise','line','feed',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f260(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('lo','hi','lo_closed','hi_closed',):
+  if type(self) is cls or name in ('label','keyword','args','column','end_column',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f261(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('lo','hi',):
+  if type(self) is cls or name in ('lane','g','m',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f262(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('margin','params','engine','max_violations','arc_tolerance','recovery','max_iterations','dialect','library','block_delete','budget_s','limits','tool_table','tool_table_units','tool_table_x_offset','written',):
+  if type(self) is cls or name in ('letter','value','span','text',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f263(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('message','span','block','code',):
+  if type(self) is cls or name in ('linear_axis','rotary_axis','cylinder_radius',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f264(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('missing','on_fallback',):
+  if type(self) is cls or name in ('lo','hi','lo_closed','hi_closed',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f265(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('name','limits','forbid','point',):
+  if type(self) is cls or name in ('lo','hi',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f266(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('name','lo','hi','written','absolute','lo_open','hi_open','centre',):
+  if type(self) is cls or name in ('margin','params','engine','max_violations','arc_tolerance','recovery','max_iterations','dialect','library','block_delete','budget_s','limits','tool_table','tool_table_units','tool_table_x_offset','written',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f267(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('name','max_passes','spent',):
+  if type(self) is cls or name in ('message','span','block','code',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f268(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('name','plane','vertices','limits','forbid','point',):
+  if type(self) is cls or name in ('missing','on_fallback',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f269(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('name','pulse','rapid_mm_min','max_feed_mm_min','rotary','accel_mm_s2',):
+  if type(self) is cls or name in ('name','limits','forbid','point',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f270(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('name','reference_axis','limited_axis','start','regions','forbid','point',):
+  if type(self) is cls or name in ('name','lo','hi','written','absolute','lo_open','hi_open','centre',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f271(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('name','units','axes','rapid_mode','monitor_period_ms','reference','start','offsets','tool_lengths','allowed','modal','tool_axis','source','warnings','sections','cutter_compensation','tool_diameters','sha256','dialect','fanuc','block_delete','arc_tolerance','path_mode','path_tolerance','machine_type','diameter_axes','tool_offsets','tool_length_wear','tool_radius_wear','control_units','tool_change_quill_up','tool_change_at_g30','tool_change_position','subroutine_path',):
+  if type(self) is cls or name in ('name','max_passes','spent',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f272(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('number','geometry','wear','nose_radius','wear_radius','tip',):
+  if type(self) is cls or name in ('name','plane','vertices','limits','forbid','point',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f273(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('number',):
+  if type(self) is cls or name in ('name','pulse','rapid_mm_min','max_feed_mm_min','rotary','accel_mm_s2',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f274(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('offsets',):
+  if type(self) is cls or name in ('name','reference_axis','limited_axis','start','regions','forbid','point',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f275(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('p0','p1','tau0','tau1',):
+  if type(self) is cls or name in ('name','units','axes','rapid_mode','monitor_period_ms','reference','start','offsets','tool_lengths','allowed','modal','tool_axis','source','warnings','sections','cutter_compensation','tool_diameters','sha256','dialect','fanuc','block_delete','arc_tolerance','path_mode','path_tolerance','machine_type','diameter_axes','tool_offsets','tool_length_wear','tool_radius_wear','control_units','tool_change_quill_up','tool_change_at_g30','tool_change_position','subroutine_path',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f276(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('p0','p1','turns','x_off','c_entry','arc',):
+  if type(self) is cls or name in ('number','geometry','wear','nose_radius','wear_radius','tip',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f277(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('start','end','turns','x_off','c_entry','linear_axis','rotary_axis','grid','arc','centre','radius',):
+  if type(self) is cls or name in ('number',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f278(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('status','values','approximate','stopped',):
+  if type(self) is cls or name in ('offsets',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f279(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('summary','configure',):
+  if type(self) is cls or name in ('p0','p1','tau0','tau1',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f280(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('swap','sc','sh',):
+  if type(self) is cls or name in ('p0','p1','turns','x_off','c_entry','arc',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f281(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('text','name','sha256','path','notes',):
+  if type(self) is cls or name in ('start','end','turns','x_off','c_entry','linear_axis','rotary_axis','grid','arc','centre','radius',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f282(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('upto','min','max',):
+  if type(self) is cls or name in ('status','values','approximate','stopped',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f283(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('value','deps',):
+  if type(self) is cls or name in ('summary','configure',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f284(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('verdict','violations','reasons','engines','solver','solver_version','timings','notes','stats','margin','params','engine','truncated','file','extra','program_sha256','machine_name','machine_file','machine_sha256','settings','interrupted','budget_s','profile',):
+  if type(self) is cls or name in ('swap','sc','sh',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f285(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('words','span','index','number','messages','shape',):
+  if type(self) is cls or name in ('text','name','sha256','path','notes',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f286(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('words','span','index','number','messages',):
+  if type(self) is cls or name in ('upto','min','max',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f287(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('work','offset','rotation','diameter','inch','opaque','work_offset',):
+  if type(self) is cls or name in ('value','deps',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f288(cls, FrozenInstanceError):
  def __delattr__(self,name):
-  if type(self) is cls or name in ('zones','tool_axis',):
+  if type(self) is cls or name in ('verdict','violations','reasons','engines','solver','solver_version','timings','notes','stats','margin','params','engine','truncated','file','extra','program_sha256','machine_name','machine_file','machine_sha256','settings','interrupted','budget_s','profile',):
    raise FrozenInstanceError(f"cannot delete field {name!r}")
   super(cls, self).__delattr__(name)
  return __delattr__
 
 def f289(cls, FrozenInstanceError):
+ def __delattr__(self,name):
+  if type(self) is cls or name in ('words','span','index','number','messages','shape',):
+   raise FrozenInstanceError(f"cannot delete field {name!r}")
+  super(cls, self).__delattr__(name)
+ return __delattr__
+
+def f290(cls, FrozenInstanceError):
+ def __delattr__(self,name):
+  if type(self) is cls or name in ('words','span','index','number','messages',):
+   raise FrozenInstanceError(f"cannot delete field {name!r}")
+  super(cls, self).__delattr__(name)
+ return __delattr__
+
+def f291(cls, FrozenInstanceError):
+ def __delattr__(self,name):
+  if type(self) is cls or name in ('work','offset','rotation','diameter','inch','opaque','work_offset',):
+   raise FrozenInstanceError(f"cannot delete field {name!r}")
+  super(cls, self).__delattr__(name)
+ return __delattr__
+
+def f292(cls, FrozenInstanceError):
+ def __delattr__(self,name):
+  if type(self) is cls or name in ('zones','tool_axis',):
+   raise FrozenInstanceError(f"cannot delete field {name!r}")
+  super(cls, self).__delattr__(name)
+ return __delattr__
+
+def f293(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('axes','columns','offset_bound','motions','lines','rapids','blocks','start','first_row','row0',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f290(cls, FrozenInstanceError):
+def f294(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('axes','degrees','cos','sin','before','after',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f291(cls, FrozenInstanceError):
+def f295(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('axes','scale','kind','start','end','line','block','tool_length','centre','plane','clockwise','turns','feed','file','objects','dwell','derived','frame','radius','tool_register','tools_known',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f292(cls, FrozenInstanceError):
+def f296(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('axes',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f293(cls, FrozenInstanceError):
+def f297(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('blend','tolerance','naive','dialect','code',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f294(cls, FrozenInstanceError):
+def f298(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('block','span','zone','point','path_point','parameter','parameter_exact','first_exit','first_exit_parameter','first_exit_exact','depth','depth_exact','engine','segment_kind','derived','kind','params','zones','note','on_path','break_line','break_parameter','break_point','leg','switches','exit_located','frame',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f295(cls, FrozenInstanceError):
+def f299(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('centre','factors',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f296(cls, FrozenInstanceError):
+def f300(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('centre','u','rho','ratio','sweep','clockwise','rho_max',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f297(cls, FrozenInstanceError):
+def f301(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('code','message','span','severity','file',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f298(cls, FrozenInstanceError):
+def f302(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('code','reason','span',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f299(cls, FrozenInstanceError):
+def f303(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('decimal_point_input','increment_system','g73_retract','g83_clearance','boring_shift','scaling_unit','rotation_incremental','atan_signed','tool_length_motion','harmless_m','references','variables','macros','gcode_system','g71_depth','g71_retract','roughing_final_pass','g73_relief_x','g73_relief_z','g73_divisions','g74_retract','thread_chamfer','thread_chamfer_angle','g76_finish_passes','g76_tool_angle','g76_min_depth','g76_finish_allowance','tool_offset_motion','tool_offset_cancel','path',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f300(cls, FrozenInstanceError):
+def f304(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('degree','knots','control','weights','source',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f301(cls, FrozenInstanceError):
+def f305(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('delete','number','oword','words','assigns','comments','percent','unsupported',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f302(cls, FrozenInstanceError):
+def f306(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('delete','number','program','words','assigns','comments','stmt','stmt_at','percent','unmodelled',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f303(cls, FrozenInstanceError):
+def f307(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('file','line','column','end_column','text',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f304(cls, FrozenInstanceError):
+def f308(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('ia','ib','ca','cb','angle',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f305(cls, FrozenInstanceError):
+def f309(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('ia','ib','radius','angle',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f306(cls, FrozenInstanceError):
+def f310(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('ia','ib','s','e','ccw','full','centre','r_signed','r2_lo','r2_hi','start','end',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f307(cls, FrozenInstanceError):
+def f311(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('key','group','lanes',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f308(cls, FrozenInstanceError):
+def f312(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('key','meaning','read',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f309(cls, FrozenInstanceError):
+def f313(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('kind','end','label','centre','clockwise','dwell_s','feed','synced',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f310(cls, FrozenInstanceError):
+def f314(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('kind','start','end','axes','block','span','tool_length','feed_mm_min','plane','clockwise','centre','radius','turns','dwell_s','derived','tool_register','deps_start','deps_end','deps_tool','extra','frame',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f311(cls, FrozenInstanceError):
+def f315(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('kind','start','end','centre','clockwise','line','feed',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f312(cls, FrozenInstanceError):
+def f316(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('label','keyword','args','column','end_column',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f313(cls, FrozenInstanceError):
+def f317(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('lane','g','m',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f314(cls, FrozenInstanceError):
+def f318(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('letter','value','span','text',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f315(cls, FrozenInstanceError):
+def f319(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('linear_axis','rotary_axis','cylinder_radius',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f316(cls, FrozenInstanceError):
+def f320(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('lo','hi','lo_closed','hi_closed',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f317(cls, FrozenInstanceError):
+def f321(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('lo','hi',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f318(cls, FrozenInstanceError):
+def f322(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('margin','params','engine','max_violations','arc_tolerance','recovery','max_iterations','dialect','library','block_delete','budget_s','limits','tool_table','tool_table_units','tool_table_x_offset','written',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f319(cls, FrozenInstanceError):
+def f323(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('message','span','block','code',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f320(cls, FrozenInstanceError):
+def f324(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('missing','on_fallback',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f321(cls, FrozenInstanceError):
+def f325(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('name','limits','forbid','point',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f322(cls, FrozenInstanceError):
+def f326(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('name','lo','hi','written','absolute','lo_open','hi_open','centre',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f323(cls, FrozenInstanceError):
+def f327(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('name','max_passes','spent',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f324(cls, FrozenInstanceError):
+def f328(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('name','plane','vertices','limits','forbid','point',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f325(cls, FrozenInstanceError):
+def f329(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('name','pulse','rapid_mm_min','max_feed_mm_min','rotary','accel_mm_s2',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f326(cls, FrozenInstanceError):
+def f330(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('name','reference_axis','limited_axis','start','regions','forbid','point',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f327(cls, FrozenInstanceError):
+def f331(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('name','units','axes','rapid_mode','monitor_period_ms','reference','start','offsets','tool_lengths','allowed','modal','tool_axis','source','warnings','sections','cutter_compensation','tool_diameters','sha256','dialect','fanuc','block_delete','arc_tolerance','path_mode','path_tolerance','machine_type','diameter_axes','tool_offsets','tool_length_wear','tool_radius_wear','control_units','tool_change_quill_up','tool_change_at_g30','tool_change_position','subroutine_path',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f328(cls, FrozenInstanceError):
+def f332(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('number','geometry','wear','nose_radius','wear_radius','tip',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f329(cls, FrozenInstanceError):
+def f333(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('number',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f330(cls, FrozenInstanceError):
+def f334(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('offsets',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f331(cls, FrozenInstanceError):
+def f335(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('p0','p1','tau0','tau1',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f332(cls, FrozenInstanceError):
+def f336(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('p0','p1','turns','x_off','c_entry','arc',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f333(cls, FrozenInstanceError):
+def f337(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('start','end','turns','x_off','c_entry','linear_axis','rotary_axis','grid','arc','centre','radius',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f334(cls, FrozenInstanceError):
+def f338(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('status','values','approximate','stopped',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f335(cls, FrozenInstanceError):
+def f339(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('summary','configure',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f336(cls, FrozenInstanceError):
+def f340(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('swap','sc','sh',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f337(cls, FrozenInstanceError):
+def f341(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('text','name','sha256','path','notes',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f338(cls, FrozenInstanceError):
+def f342(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('upto','min','max',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f339(cls, FrozenInstanceError):
+def f343(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('value','deps',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f340(cls, FrozenInstanceError):
+def f344(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('verdict','violations','reasons','engines','solver','solver_version','timings','notes','stats','margin','params','engine','truncated','file','extra','program_sha256','machine_name','machine_file','machine_sha256','settings','interrupted','budget_s','profile',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f341(cls, FrozenInstanceError):
+def f345(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('words','span','index','number','messages','shape',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f342(cls, FrozenInstanceError):
+def f346(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('words','span','index','number','messages',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f343(cls, FrozenInstanceError):
+def f347(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('work','offset','rotation','diameter','inch','opaque','work_offset',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
   super(cls, self).__setattr__(name, value)
  return __setattr__
 
-def f344(cls, FrozenInstanceError):
+def f348(cls, FrozenInstanceError):
  def __setattr__(self,name,value):
   if type(self) is cls or name in ('zones','tool_axis',):
    raise FrozenInstanceError(f"cannot assign to field {name!r}")
@@ -2622,177 +2688,181 @@ FUNCTIONS = {
     'def __create_fn__():\n def __repr__(self):\n  return self.__class__.__qualname__ + f"(words={self.words!r}, span={self.span!r}, index={self.index!r}, number={self.number!r}, messages={self.messages!r}, shape={self.shape!r})"\n return __repr__': f169,
     'def __create_fn__():\n def __repr__(self):\n  return self.__class__.__qualname__ + f"(work={self.work!r}, offset={self.offset!r}, rotation={self.rotation!r}, diameter={self.diameter!r}, inch={self.inch!r}, opaque={self.opaque!r}, work_offset={self.work_offset!r})"\n return __repr__': f170,
     'def __create_fn__():\n def __repr__(self):\n  return self.__class__.__qualname__ + f"(zones={self.zones!r}, tool_axis={self.tool_axis!r})"\n return __repr__': f171,
-    "def __create_fn__(_type_axes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,axes:_type_axes)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n return __init__": f172,
-    "def __create_fn__(_type_axes, _type_columns, _type_offset_bound, _type_motions, _type_lines, _type_rapids, _type_blocks, _type_start, _type_first_row, _type_row0, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_row0, _return_type):\n def __init__(self,axes:_type_axes,columns:_type_columns,offset_bound:_type_offset_bound,motions:_type_motions,lines:_type_lines,rapids:_type_rapids,blocks:_type_blocks,start:_type_start,first_row:_type_first_row,row0:_type_row0=_dflt_row0)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'columns',columns)\n  __dataclass_builtins_object__.__setattr__(self,'offset_bound',offset_bound)\n  __dataclass_builtins_object__.__setattr__(self,'motions',motions)\n  __dataclass_builtins_object__.__setattr__(self,'lines',lines)\n  __dataclass_builtins_object__.__setattr__(self,'rapids',rapids)\n  __dataclass_builtins_object__.__setattr__(self,'blocks',blocks)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'first_row',first_row)\n  __dataclass_builtins_object__.__setattr__(self,'row0',row0)\n return __init__": f173,
-    "def __create_fn__(_type_axes, _type_degrees, _type_cos, _type_sin, _type_before, _type_after, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,axes:_type_axes,degrees:_type_degrees,cos:_type_cos,sin:_type_sin,before:_type_before,after:_type_after)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'degrees',degrees)\n  __dataclass_builtins_object__.__setattr__(self,'cos',cos)\n  __dataclass_builtins_object__.__setattr__(self,'sin',sin)\n  __dataclass_builtins_object__.__setattr__(self,'before',before)\n  __dataclass_builtins_object__.__setattr__(self,'after',after)\n return __init__": f174,
-    "def __create_fn__(_type_axes, _type_scale, _type_kind, _type_start, _type_end, _type_line, _type_block, _type_tool_length, _type_centre, _type_plane, _type_clockwise, _type_turns, _type_feed, _type_file, _type_objects, _type_dwell, _type_derived, _type_frame, _type_radius, _type_tool_register, _type_tools_known, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_kind, _dflt_start, _dflt_end, _dflt_line, _dflt_block, _dflt_tool_length, _dflt_centre, _dflt_plane, _dflt_clockwise, _dflt_turns, _dflt_feed, _dflt_file, _dflt_objects, _dflt_dwell, _dflt_derived, _dflt_frame, _dflt_radius, _dflt_tool_register, _dflt_tools_known, _return_type):\n def __init__(self,axes:_type_axes,scale:_type_scale,kind:_type_kind=_dflt_kind,start:_type_start=_dflt_start,end:_type_end=_dflt_end,line:_type_line=_dflt_line,block:_type_block=_dflt_block,tool_length:_type_tool_length=_dflt_tool_length,centre:_type_centre=_dflt_centre,plane:_type_plane=_dflt_plane,clockwise:_type_clockwise=_dflt_clockwise,turns:_type_turns=_dflt_turns,feed:_type_feed=_dflt_feed,file:_type_file=_dflt_file,objects:_type_objects=_dflt_objects,dwell:_type_dwell=_dflt_dwell,derived:_type_derived=_dflt_derived,frame:_type_frame=_dflt_frame,radius:_type_radius=_dflt_radius,tool_register:_type_tool_register=_dflt_tool_register,tools_known:_type_tools_known=_dflt_tools_known)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'scale',scale)\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'line',line)\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length',tool_length)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'plane',plane)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'feed',feed)\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n  __dataclass_builtins_object__.__setattr__(self,'objects',objects)\n  __dataclass_builtins_object__.__setattr__(self,'dwell',dwell)\n  __dataclass_builtins_object__.__setattr__(self,'derived',derived)\n  __dataclass_builtins_object__.__setattr__(self,'frame',frame)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n  __dataclass_builtins_object__.__setattr__(self,'tool_register',tool_register)\n  __dataclass_builtins_object__.__setattr__(self,'tools_known',tools_known)\n return __init__": f175,
-    "def __create_fn__(_type_blend, _type_tolerance, _type_naive, _type_dialect, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tolerance, _dflt_naive, _dflt_dialect, _dflt_code, _return_type):\n def __init__(self,blend:_type_blend,tolerance:_type_tolerance=_dflt_tolerance,naive:_type_naive=_dflt_naive,dialect:_type_dialect=_dflt_dialect,code:_type_code=_dflt_code)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'blend',blend)\n  __dataclass_builtins_object__.__setattr__(self,'tolerance',tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'naive',naive)\n  __dataclass_builtins_object__.__setattr__(self,'dialect',dialect)\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n return __init__": f176,
-    "def __create_fn__(_type_block, _type_span, _type_zone, _type_point, _type_path_point, _type_parameter, _type_parameter_exact, _type_first_exit, _type_first_exit_parameter, _type_first_exit_exact, _type_depth, _type_depth_exact, _type_engine, _type_segment_kind, _type_derived, _type_kind, _type_params, _type_zones, _type_note, _type_on_path, _type_break_line, _type_break_parameter, _type_break_point, _type_leg, _type_switches, _type_exit_located, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_derived, _dflt_kind, _dflt_params, _dflt_zones, _dflt_note, _dflt_on_path, _dflt_break_line, _dflt_break_parameter, _dflt_break_point, _dflt_leg, _dflt_switches, _dflt_exit_located, _dflt_frame, _return_type):\n def __init__(self,block:_type_block,span:_type_span,zone:_type_zone,point:_type_point,path_point:_type_path_point,parameter:_type_parameter,parameter_exact:_type_parameter_exact,first_exit:_type_first_exit,first_exit_parameter:_type_first_exit_parameter,first_exit_exact:_type_first_exit_exact,depth:_type_depth,depth_exact:_type_depth_exact,engine:_type_engine,segment_kind:_type_segment_kind,derived:_type_derived=_dflt_derived,kind:_type_kind=_dflt_kind,params:_type_params=_dflt_params,zones:_type_zones=_dflt_zones,note:_type_note=_dflt_note,on_path:_type_on_path=_dflt_on_path,break_line:_type_break_line=_dflt_break_line,break_parameter:_type_break_parameter=_dflt_break_parameter,break_point:_type_break_point=_dflt_break_point,leg:_type_leg=_dflt_leg,switches:_type_switches=_dflt_switches,exit_located:_type_exit_located=_dflt_exit_located,frame:_type_frame=_dflt_frame)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'zone',zone)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n  __dataclass_builtins_object__.__setattr__(self,'path_point',path_point)\n  __dataclass_builtins_object__.__setattr__(self,'parameter',parameter)\n  __dataclass_builtins_object__.__setattr__(self,'parameter_exact',parameter_exact)\n  __dataclass_builtins_object__.__setattr__(self,'first_exit',first_exit)\n  __dataclass_builtins_object__.__setattr__(self,'first_exit_parameter',first_exit_parameter)\n  __dataclass_builtins_object__.__setattr__(self,'first_exit_exact',first_exit_exact)\n  __dataclass_builtins_object__.__setattr__(self,'depth',depth)\n  __dataclass_builtins_object__.__setattr__(self,'depth_exact',depth_exact)\n  __dataclass_builtins_object__.__setattr__(self,'engine',engine)\n  __dataclass_builtins_object__.__setattr__(self,'segment_kind',segment_kind)\n  __dataclass_builtins_object__.__setattr__(self,'derived',derived)\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'params',params)\n  __dataclass_builtins_object__.__setattr__(self,'zones',zones)\n  __dataclass_builtins_object__.__setattr__(self,'note',note)\n  __dataclass_builtins_object__.__setattr__(self,'on_path',on_path)\n  __dataclass_builtins_object__.__setattr__(self,'break_line',break_line)\n  __dataclass_builtins_object__.__setattr__(self,'break_parameter',break_parameter)\n  __dataclass_builtins_object__.__setattr__(self,'break_point',break_point)\n  __dataclass_builtins_object__.__setattr__(self,'leg',leg)\n  __dataclass_builtins_object__.__setattr__(self,'switches',switches)\n  __dataclass_builtins_object__.__setattr__(self,'exit_located',exit_located)\n  __dataclass_builtins_object__.__setattr__(self,'frame',frame)\n return __init__": f177,
-    "def __create_fn__(_type_centre, _type_factors, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,centre:_type_centre,factors:_type_factors)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'factors',factors)\n return __init__": f178,
-    "def __create_fn__(_type_centre, _type_u, _type_rho, _type_ratio, _type_sweep, _type_clockwise, _type_rho_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,centre:_type_centre,u:_type_u,rho:_type_rho,ratio:_type_ratio,sweep:_type_sweep,clockwise:_type_clockwise,rho_max:_type_rho_max)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'u',u)\n  __dataclass_builtins_object__.__setattr__(self,'rho',rho)\n  __dataclass_builtins_object__.__setattr__(self,'ratio',ratio)\n  __dataclass_builtins_object__.__setattr__(self,'sweep',sweep)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'rho_max',rho_max)\n return __init__": f179,
-    "def __create_fn__(_type_code, _type_message, _type_span, _type_severity, _type_file, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_severity, _dflt_file, _return_type):\n def __init__(self,code:_type_code,message:_type_message,span:_type_span=_dflt_span,severity:_type_severity=_dflt_severity,file:_type_file=_dflt_file)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n  __dataclass_builtins_object__.__setattr__(self,'message',message)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'severity',severity)\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n return __init__": f180,
-    "def __create_fn__(_type_code, _type_reason, _type_span, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,code:_type_code,reason:_type_reason,span:_type_span)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n  __dataclass_builtins_object__.__setattr__(self,'reason',reason)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n return __init__": f181,
-    "def __create_fn__(_type_decimal_point_input, _type_increment_system, _type_g73_retract, _type_g83_clearance, _type_boring_shift, _type_scaling_unit, _type_rotation_incremental, _type_atan_signed, _type_tool_length_motion, _type_harmless_m, _type_references, _type_variables, _type_macros, _type_gcode_system, _type_g71_depth, _type_g71_retract, _type_roughing_final_pass, _type_g73_relief_x, _type_g73_relief_z, _type_g73_divisions, _type_g74_retract, _type_thread_chamfer, _type_thread_chamfer_angle, _type_g76_finish_passes, _type_g76_tool_angle, _type_g76_min_depth, _type_g76_finish_allowance, _type_tool_offset_motion, _type_tool_offset_cancel, _type_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_decimal_point_input, _dflt_increment_system, _dflt_g73_retract, _dflt_g83_clearance, _dflt_boring_shift, _dflt_scaling_unit, _dflt_rotation_incremental, _dflt_atan_signed, _dflt_tool_length_motion, _dflt_harmless_m, _dflt_references, _dflt_variables, _dflt_macros, _dflt_gcode_system, _dflt_g71_depth, _dflt_g71_retract, _dflt_roughing_final_pass, _dflt_g73_relief_x, _dflt_g73_relief_z, _dflt_g73_divisions, _dflt_g74_retract, _dflt_thread_chamfer, _dflt_thread_chamfer_angle, _dflt_g76_finish_passes, _dflt_g76_tool_angle, _dflt_g76_min_depth, _dflt_g76_finish_allowance, _dflt_tool_offset_motion, _dflt_tool_offset_cancel, _dflt_path, _return_type):\n def __init__(self,decimal_point_input:_type_decimal_point_input=_dflt_decimal_point_input,increment_system:_type_increment_system=_dflt_increment_system,g73_retract:_type_g73_retract=_dflt_g73_retract,g83_clearance:_type_g83_clearance=_dflt_g83_clearance,boring_shift:_type_boring_shift=_dflt_boring_shift,scaling_unit:_type_scaling_unit=_dflt_scaling_unit,rotation_incremental:_type_rotation_incremental=_dflt_rotation_incremental,atan_signed:_type_atan_signed=_dflt_atan_signed,tool_length_motion:_type_tool_length_motion=_dflt_tool_length_motion,harmless_m:_type_harmless_m=_dflt_harmless_m,references:_type_references=_HAS_DEFAULT_FACTORY,variables:_type_variables=_HAS_DEFAULT_FACTORY,macros:_type_macros=_HAS_DEFAULT_FACTORY,gcode_system:_type_gcode_system=_dflt_gcode_system,g71_depth:_type_g71_depth=_dflt_g71_depth,g71_retract:_type_g71_retract=_dflt_g71_retract,roughing_final_pass:_type_roughing_final_pass=_dflt_roughing_final_pass,g73_relief_x:_type_g73_relief_x=_dflt_g73_relief_x,g73_relief_z:_type_g73_relief_z=_dflt_g73_relief_z,g73_divisions:_type_g73_divisions=_dflt_g73_divisions,g74_retract:_type_g74_retract=_dflt_g74_retract,thread_chamfer:_type_thread_chamfer=_dflt_thread_chamfer,thread_chamfer_angle:_type_thread_chamfer_angle=_dflt_thread_chamfer_angle,g76_finish_passes:_type_g76_finish_passes=_dflt_g76_finish_passes,g76_tool_angle:_type_g76_tool_angle=_dflt_g76_tool_angle,g76_min_depth:_type_g76_min_depth=_dflt_g76_min_depth,g76_finish_allowance:_type_g76_finish_allowance=_dflt_g76_finish_allowance,tool_offset_motion:_type_tool_offset_motion=_dflt_tool_offset_motion,tool_offset_cancel:_type_tool_offset_cancel=_dflt_tool_offset_cancel,path:_type_path=_dflt_path)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'decimal_point_input',decimal_point_input)\n  __dataclass_builtins_object__.__setattr__(self,'increment_system',increment_system)\n  __dataclass_builtins_object__.__setattr__(self,'g73_retract',g73_retract)\n  __dataclass_builtins_object__.__setattr__(self,'g83_clearance',g83_clearance)\n  __dataclass_builtins_object__.__setattr__(self,'boring_shift',boring_shift)\n  __dataclass_builtins_object__.__setattr__(self,'scaling_unit',scaling_unit)\n  __dataclass_builtins_object__.__setattr__(self,'rotation_incremental',rotation_incremental)\n  __dataclass_builtins_object__.__setattr__(self,'atan_signed',atan_signed)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length_motion',tool_length_motion)\n  __dataclass_builtins_object__.__setattr__(self,'harmless_m',harmless_m)\n  __dataclass_builtins_object__.__setattr__(self,'references',_dflt_references() if references is _HAS_DEFAULT_FACTORY else references)\n  __dataclass_builtins_object__.__setattr__(self,'variables',_dflt_variables() if variables is _HAS_DEFAULT_FACTORY else variables)\n  __dataclass_builtins_object__.__setattr__(self,'macros',_dflt_macros() if macros is _HAS_DEFAULT_FACTORY else macros)\n  __dataclass_builtins_object__.__setattr__(self,'gcode_system',gcode_system)\n  __dataclass_builtins_object__.__setattr__(self,'g71_depth',g71_depth)\n  __dataclass_builtins_object__.__setattr__(self,'g71_retract',g71_retract)\n  __dataclass_builtins_object__.__setattr__(self,'roughing_final_pass',roughing_final_pass)\n  __dataclass_builtins_object__.__setattr__(self,'g73_relief_x',g73_relief_x)\n  __dataclass_builtins_object__.__setattr__(self,'g73_relief_z',g73_relief_z)\n  __dataclass_builtins_object__.__setattr__(self,'g73_divisions',g73_divisions)\n  __dataclass_builtins_object__.__setattr__(self,'g74_retract',g74_retract)\n  __dataclass_builtins_object__.__setattr__(self,'thread_chamfer',thread_chamfer)\n  __dataclass_builtins_object__.__setattr__(self,'thread_chamfer_angle',thread_chamfer_angle)\n  __dataclass_builtins_object__.__setattr__(self,'g76_finish_passes',g76_finish_passes)\n  __dataclass_builtins_object__.__setattr__(self,'g76_tool_angle',g76_tool_angle)\n  __dataclass_builtins_object__.__setattr__(self,'g76_min_depth',g76_min_depth)\n  __dataclass_builtins_object__.__setattr__(self,'g76_finish_allowance',g76_finish_allowance)\n  __dataclass_builtins_object__.__setattr__(self,'tool_offset_motion',tool_offset_motion)\n  __dataclass_builtins_object__.__setattr__(self,'tool_offset_cancel',tool_offset_cancel)\n  __dataclass_builtins_object__.__setattr__(self,'path',path)\n return __init__": f182,
-    "def __create_fn__(_type_degree, _type_knots, _type_control, _type_weights, _type_source, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_source, _return_type):\n def __init__(self,degree:_type_degree,knots:_type_knots,control:_type_control,weights:_type_weights,source:_type_source=_dflt_source)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'degree',degree)\n  __dataclass_builtins_object__.__setattr__(self,'knots',knots)\n  __dataclass_builtins_object__.__setattr__(self,'control',control)\n  __dataclass_builtins_object__.__setattr__(self,'weights',weights)\n  __dataclass_builtins_object__.__setattr__(self,'source',source)\n return __init__": f183,
-    "def __create_fn__(_type_delete, _type_number, _type_oword, _type_words, _type_assigns, _type_comments, _type_percent, _type_unsupported, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_oword, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_percent, _dflt_unsupported, _return_type):\n def __init__(self,delete:_type_delete=_dflt_delete,number:_type_number=_dflt_number,oword:_type_oword=_dflt_oword,words:_type_words=_dflt_words,assigns:_type_assigns=_dflt_assigns,comments:_type_comments=_dflt_comments,percent:_type_percent=_dflt_percent,unsupported:_type_unsupported=_dflt_unsupported)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'delete',delete)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'oword',oword)\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'assigns',assigns)\n  __dataclass_builtins_object__.__setattr__(self,'comments',comments)\n  __dataclass_builtins_object__.__setattr__(self,'percent',percent)\n  __dataclass_builtins_object__.__setattr__(self,'unsupported',unsupported)\n return __init__": f184,
-    "def __create_fn__(_type_delete, _type_number, _type_program, _type_words, _type_assigns, _type_comments, _type_stmt, _type_stmt_at, _type_percent, _type_unmodelled, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_program, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_stmt, _dflt_stmt_at, _dflt_percent, _dflt_unmodelled, _return_type):\n def __init__(self,delete:_type_delete=_dflt_delete,number:_type_number=_dflt_number,program:_type_program=_dflt_program,words:_type_words=_dflt_words,assigns:_type_assigns=_dflt_assigns,comments:_type_comments=_dflt_comments,stmt:_type_stmt=_dflt_stmt,stmt_at:_type_stmt_at=_dflt_stmt_at,percent:_type_percent=_dflt_percent,unmodelled:_type_unmodelled=_dflt_unmodelled)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'delete',delete)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'program',program)\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'assigns',assigns)\n  __dataclass_builtins_object__.__setattr__(self,'comments',comments)\n  __dataclass_builtins_object__.__setattr__(self,'stmt',stmt)\n  __dataclass_builtins_object__.__setattr__(self,'stmt_at',stmt_at)\n  __dataclass_builtins_object__.__setattr__(self,'percent',percent)\n  __dataclass_builtins_object__.__setattr__(self,'unmodelled',unmodelled)\n return __init__": f185,
-    "def __create_fn__(_type_file, _type_line, _type_column, _type_end_column, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_column, _dflt_end_column, _dflt_text, _return_type):\n def __init__(self,file:_type_file,line:_type_line,column:_type_column=_dflt_column,end_column:_type_end_column=_dflt_end_column,text:_type_text=_dflt_text)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n  __dataclass_builtins_object__.__setattr__(self,'line',line)\n  __dataclass_builtins_object__.__setattr__(self,'column',column)\n  __dataclass_builtins_object__.__setattr__(self,'end_column',end_column)\n  __dataclass_builtins_object__.__setattr__(self,'text',text)\n return __init__": f186,
-    "def __create_fn__(_type_ia, _type_ib, _type_ca, _type_cb, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,ia:_type_ia,ib:_type_ib,ca:_type_ca,cb:_type_cb,angle:_type_angle)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'ia',ia)\n  __dataclass_builtins_object__.__setattr__(self,'ib',ib)\n  __dataclass_builtins_object__.__setattr__(self,'ca',ca)\n  __dataclass_builtins_object__.__setattr__(self,'cb',cb)\n  __dataclass_builtins_object__.__setattr__(self,'angle',angle)\n return __init__": f187,
-    "def __create_fn__(_type_ia, _type_ib, _type_radius, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_radius, _dflt_angle, _return_type):\n def __init__(self,ia:_type_ia,ib:_type_ib,radius:_type_radius=_dflt_radius,angle:_type_angle=_dflt_angle)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'ia',ia)\n  __dataclass_builtins_object__.__setattr__(self,'ib',ib)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n  __dataclass_builtins_object__.__setattr__(self,'angle',angle)\n return __init__": f188,
-    "def __create_fn__(_type_ia, _type_ib, _type_s, _type_e, _type_ccw, _type_full, _type_centre, _type_r_signed, _type_r2_lo, _type_r2_hi, _type_start, _type_end, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,ia:_type_ia,ib:_type_ib,s:_type_s,e:_type_e,ccw:_type_ccw,full:_type_full,centre:_type_centre,r_signed:_type_r_signed,r2_lo:_type_r2_lo,r2_hi:_type_r2_hi,start:_type_start,end:_type_end)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'ia',ia)\n  __dataclass_builtins_object__.__setattr__(self,'ib',ib)\n  __dataclass_builtins_object__.__setattr__(self,'s',s)\n  __dataclass_builtins_object__.__setattr__(self,'e',e)\n  __dataclass_builtins_object__.__setattr__(self,'ccw',ccw)\n  __dataclass_builtins_object__.__setattr__(self,'full',full)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'r_signed',r_signed)\n  __dataclass_builtins_object__.__setattr__(self,'r2_lo',r2_lo)\n  __dataclass_builtins_object__.__setattr__(self,'r2_hi',r2_hi)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n return __init__": f189,
-    "def __create_fn__(_type_key, _type_group, _type_lanes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,key:_type_key,group:_type_group,lanes:_type_lanes)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'key',key)\n  __dataclass_builtins_object__.__setattr__(self,'group',group)\n  __dataclass_builtins_object__.__setattr__(self,'lanes',lanes)\n return __init__": f190,
-    "def __create_fn__(_type_key, _type_meaning, _type_read, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,key:_type_key,meaning:_type_meaning,read:_type_read)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'key',key)\n  __dataclass_builtins_object__.__setattr__(self,'meaning',meaning)\n  __dataclass_builtins_object__.__setattr__(self,'read',read)\n return __init__": f191,
-    "def __create_fn__(_type_kind, _type_end, _type_label, _type_centre, _type_clockwise, _type_dwell_s, _type_feed, _type_synced, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_dwell_s, _dflt_feed, _dflt_synced, _return_type):\n def __init__(self,kind:_type_kind,end:_type_end,label:_type_label,centre:_type_centre=_dflt_centre,clockwise:_type_clockwise=_dflt_clockwise,dwell_s:_type_dwell_s=_dflt_dwell_s,feed:_type_feed=_dflt_feed,synced:_type_synced=_dflt_synced)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'label',label)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'dwell_s',dwell_s)\n  __dataclass_builtins_object__.__setattr__(self,'feed',feed)\n  __dataclass_builtins_object__.__setattr__(self,'synced',synced)\n return __init__": f192,
-    'def __create_fn__(_type_kind, _type_label, _type_head, _type_remaining, _type_count, _type_ifs, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_remaining, _dflt_count, _dflt_ifs, _return_type):\n def __init__(self,kind:_type_kind,label:_type_label,head:_type_head,remaining:_type_remaining=_dflt_remaining,count:_type_count=_dflt_count,ifs:_type_ifs=_dflt_ifs)->_return_type:\n  self.kind=kind\n  self.label=label\n  self.head=head\n  self.remaining=remaining\n  self.count=count\n  self.ifs=ifs\n return __init__': f193,
-    'def __create_fn__(_type_kind, _type_label, _type_ret, _type_saved, _type_body, _type_repeats, _type_loops, _type_ifs, _type_caller, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_label, _dflt_ret, _dflt_saved, _dflt_body, _dflt_repeats, _dflt_loops, _dflt_ifs, _dflt_caller, _return_type):\n def __init__(self,kind:_type_kind,label:_type_label=_dflt_label,ret:_type_ret=_dflt_ret,saved:_type_saved=_dflt_saved,body:_type_body=_dflt_body,repeats:_type_repeats=_dflt_repeats,loops:_type_loops=_HAS_DEFAULT_FACTORY,ifs:_type_ifs=_HAS_DEFAULT_FACTORY,caller:_type_caller=_dflt_caller)->_return_type:\n  self.kind=kind\n  self.label=label\n  self.ret=ret\n  self.saved=saved\n  self.body=body\n  self.repeats=repeats\n  self.loops=_dflt_loops() if loops is _HAS_DEFAULT_FACTORY else loops\n  self.ifs=_dflt_ifs() if ifs is _HAS_DEFAULT_FACTORY else ifs\n  self.caller=caller\n return __init__': f194,
-    'def __create_fn__(_type_kind, _type_source, _type_program, _type_ret, _type_body, _type_repeats, _type_saved, _type_args, _type_loops, _type_custom, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_program, _dflt_ret, _dflt_body, _dflt_repeats, _dflt_saved, _dflt_args, _dflt_loops, _dflt_custom, _return_type):\n def __init__(self,kind:_type_kind,source:_type_source,program:_type_program=_dflt_program,ret:_type_ret=_dflt_ret,body:_type_body=_dflt_body,repeats:_type_repeats=_dflt_repeats,saved:_type_saved=_dflt_saved,args:_type_args=_dflt_args,loops:_type_loops=_HAS_DEFAULT_FACTORY,custom:_type_custom=_dflt_custom)->_return_type:\n  self.kind=kind\n  self.source=source\n  self.program=program\n  self.ret=ret\n  self.body=body\n  self.repeats=repeats\n  self.saved=saved\n  self.args=args\n  self.loops=_dflt_loops() if loops is _HAS_DEFAULT_FACTORY else loops\n  self.custom=custom\n return __init__': f195,
-    "def __create_fn__(_type_kind, _type_start, _type_end, _type_axes, _type_block, _type_span, _type_tool_length, _type_feed_mm_min, _type_plane, _type_clockwise, _type_centre, _type_radius, _type_turns, _type_dwell_s, _type_derived, _type_tool_register, _type_deps_start, _type_deps_end, _type_deps_tool, _type_extra, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_block, _dflt_span, _dflt_tool_length, _dflt_feed_mm_min, _dflt_plane, _dflt_clockwise, _dflt_centre, _dflt_radius, _dflt_turns, _dflt_dwell_s, _dflt_derived, _dflt_tool_register, _dflt_deps_start, _dflt_deps_end, _dflt_deps_tool, _dflt_extra, _dflt_frame, _return_type):\n def __init__(self,kind:_type_kind,start:_type_start,end:_type_end,axes:_type_axes,block:_type_block=_dflt_block,span:_type_span=_dflt_span,tool_length:_type_tool_length=_dflt_tool_length,feed_mm_min:_type_feed_mm_min=_dflt_feed_mm_min,plane:_type_plane=_dflt_plane,clockwise:_type_clockwise=_dflt_clockwise,centre:_type_centre=_dflt_centre,radius:_type_radius=_dflt_radius,turns:_type_turns=_dflt_turns,dwell_s:_type_dwell_s=_dflt_dwell_s,derived:_type_derived=_dflt_derived,tool_register:_type_tool_register=_dflt_tool_register,deps_start:_type_deps_start=_dflt_deps_start,deps_end:_type_deps_end=_dflt_deps_end,deps_tool:_type_deps_tool=_dflt_deps_tool,extra:_type_extra=_dflt_extra,frame:_type_frame=_dflt_frame)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length',tool_length)\n  __dataclass_builtins_object__.__setattr__(self,'feed_mm_min',feed_mm_min)\n  __dataclass_builtins_object__.__setattr__(self,'plane',plane)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'dwell_s',dwell_s)\n  __dataclass_builtins_object__.__setattr__(self,'derived',derived)\n  __dataclass_builtins_object__.__setattr__(self,'tool_register',tool_register)\n  __dataclass_builtins_object__.__setattr__(self,'deps_start',deps_start)\n  __dataclass_builtins_object__.__setattr__(self,'deps_end',deps_end)\n  __dataclass_builtins_object__.__setattr__(self,'deps_tool',deps_tool)\n  __dataclass_builtins_object__.__setattr__(self,'extra',extra)\n  __dataclass_builtins_object__.__setattr__(self,'frame',frame)\n return __init__": f196,
-    "def __create_fn__(_type_kind, _type_start, _type_end, _type_centre, _type_clockwise, _type_line, _type_feed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_line, _dflt_feed, _return_type):\n def __init__(self,kind:_type_kind,start:_type_start,end:_type_end,centre:_type_centre=_dflt_centre,clockwise:_type_clockwise=_dflt_clockwise,line:_type_line=_dflt_line,feed:_type_feed=_dflt_feed)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'line',line)\n  __dataclass_builtins_object__.__setattr__(self,'feed',feed)\n return __init__": f197,
-    "def __create_fn__(_type_label, _type_keyword, _type_args, _type_column, _type_end_column, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,label:_type_label,keyword:_type_keyword,args:_type_args,column:_type_column,end_column:_type_end_column)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'label',label)\n  __dataclass_builtins_object__.__setattr__(self,'keyword',keyword)\n  __dataclass_builtins_object__.__setattr__(self,'args',args)\n  __dataclass_builtins_object__.__setattr__(self,'column',column)\n  __dataclass_builtins_object__.__setattr__(self,'end_column',end_column)\n return __init__": f198,
-    "def __create_fn__(_type_lane, _type_g, _type_m, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,lane:_type_lane,g:_type_g,m:_type_m)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'lane',lane)\n  __dataclass_builtins_object__.__setattr__(self,'g',g)\n  __dataclass_builtins_object__.__setattr__(self,'m',m)\n return __init__": f199,
-    "def __create_fn__(_type_letter, _type_value, _type_span, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_text, _return_type):\n def __init__(self,letter:_type_letter,value:_type_value,span:_type_span,text:_type_text=_dflt_text)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'letter',letter)\n  __dataclass_builtins_object__.__setattr__(self,'value',value)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'text',text)\n return __init__": f200,
-    "def __create_fn__(_type_linear_axis, _type_rotary_axis, _type_cylinder_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,linear_axis:_type_linear_axis,rotary_axis:_type_rotary_axis,cylinder_radius:_type_cylinder_radius)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'linear_axis',linear_axis)\n  __dataclass_builtins_object__.__setattr__(self,'rotary_axis',rotary_axis)\n  __dataclass_builtins_object__.__setattr__(self,'cylinder_radius',cylinder_radius)\n return __init__": f201,
-    "def __create_fn__(_type_lo, _type_hi, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,lo:_type_lo,hi:_type_hi)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'lo',lo)\n  __dataclass_builtins_object__.__setattr__(self,'hi',hi)\n return __init__": f202,
-    "def __create_fn__(_type_lo, _type_hi, _type_lo_closed, _type_hi_closed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,lo:_type_lo,hi:_type_hi,lo_closed:_type_lo_closed,hi_closed:_type_hi_closed)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'lo',lo)\n  __dataclass_builtins_object__.__setattr__(self,'hi',hi)\n  __dataclass_builtins_object__.__setattr__(self,'lo_closed',lo_closed)\n  __dataclass_builtins_object__.__setattr__(self,'hi_closed',hi_closed)\n return __init__": f203,
-    'def __create_fn__(_type_m, _type_head, _type_count, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_count, _return_type):\n def __init__(self,m:_type_m,head:_type_head,count:_type_count=_dflt_count)->_return_type:\n  self.m=m\n  self.head=head\n  self.count=count\n return __init__': f204,
-    "def __create_fn__(_type_margin, _type_params, _type_engine, _type_max_violations, _type_arc_tolerance, _type_recovery, _type_max_iterations, _type_dialect, _type_library, _type_block_delete, _type_budget_s, _type_limits, _type_tool_table, _type_tool_table_units, _type_tool_table_x_offset, _type_written, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_margin, _dflt_params, _dflt_engine, _dflt_max_violations, _dflt_arc_tolerance, _dflt_recovery, _dflt_max_iterations, _dflt_dialect, _dflt_library, _dflt_block_delete, _dflt_budget_s, _dflt_limits, _dflt_tool_table, _dflt_tool_table_units, _dflt_tool_table_x_offset, _dflt_written, _return_type):\n def __init__(self,margin:_type_margin=_dflt_margin,params:_type_params=_dflt_params,engine:_type_engine=_dflt_engine,max_violations:_type_max_violations=_dflt_max_violations,arc_tolerance:_type_arc_tolerance=_dflt_arc_tolerance,recovery:_type_recovery=_dflt_recovery,max_iterations:_type_max_iterations=_dflt_max_iterations,dialect:_type_dialect=_dflt_dialect,library:_type_library=_dflt_library,block_delete:_type_block_delete=_dflt_block_delete,budget_s:_type_budget_s=_dflt_budget_s,limits:_type_limits=_dflt_limits,tool_table:_type_tool_table=_dflt_tool_table,tool_table_units:_type_tool_table_units=_dflt_tool_table_units,tool_table_x_offset:_type_tool_table_x_offset=_dflt_tool_table_x_offset,written:_type_written=_dflt_written)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'margin',margin)\n  __dataclass_builtins_object__.__setattr__(self,'params',params)\n  __dataclass_builtins_object__.__setattr__(self,'engine',engine)\n  __dataclass_builtins_object__.__setattr__(self,'max_violations',max_violations)\n  __dataclass_builtins_object__.__setattr__(self,'arc_tolerance',arc_tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'recovery',recovery)\n  __dataclass_builtins_object__.__setattr__(self,'max_iterations',max_iterations)\n  __dataclass_builtins_object__.__setattr__(self,'dialect',dialect)\n  __dataclass_builtins_object__.__setattr__(self,'library',library)\n  __dataclass_builtins_object__.__setattr__(self,'block_delete',block_delete)\n  __dataclass_builtins_object__.__setattr__(self,'budget_s',budget_s)\n  __dataclass_builtins_object__.__setattr__(self,'limits',limits)\n  __dataclass_builtins_object__.__setattr__(self,'tool_table',tool_table)\n  __dataclass_builtins_object__.__setattr__(self,'tool_table_units',tool_table_units)\n  __dataclass_builtins_object__.__setattr__(self,'tool_table_x_offset',tool_table_x_offset)\n  __dataclass_builtins_object__.__setattr__(self,'written',written)\n return __init__": f205,
-    "def __create_fn__(_type_message, _type_span, _type_block, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_block, _dflt_code, _return_type):\n def __init__(self,message:_type_message,span:_type_span=_dflt_span,block:_type_block=_dflt_block,code:_type_code=_dflt_code)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'message',message)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n return __init__": f206,
-    "def __create_fn__(_type_missing, _type_on_fallback, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,missing:_type_missing,on_fallback:_type_on_fallback)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'missing',missing)\n  __dataclass_builtins_object__.__setattr__(self,'on_fallback',on_fallback)\n return __init__": f207,
-    "def __create_fn__(_type_name, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):\n def __init__(self,name:_type_name,limits:_type_limits,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'limits',limits)\n  __dataclass_builtins_object__.__setattr__(self,'forbid',forbid)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n return __init__": f208,
-    "def __create_fn__(_type_name, _type_lo, _type_hi, _type_written, _type_absolute, _type_lo_open, _type_hi_open, _type_centre, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_absolute, _dflt_lo_open, _dflt_hi_open, _dflt_centre, _return_type):\n def __init__(self,name:_type_name,lo:_type_lo,hi:_type_hi,written:_type_written,absolute:_type_absolute=_dflt_absolute,lo_open:_type_lo_open=_dflt_lo_open,hi_open:_type_hi_open=_dflt_hi_open,centre:_type_centre=_dflt_centre)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'lo',lo)\n  __dataclass_builtins_object__.__setattr__(self,'hi',hi)\n  __dataclass_builtins_object__.__setattr__(self,'written',written)\n  __dataclass_builtins_object__.__setattr__(self,'absolute',absolute)\n  __dataclass_builtins_object__.__setattr__(self,'lo_open',lo_open)\n  __dataclass_builtins_object__.__setattr__(self,'hi_open',hi_open)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n return __init__": f209,
-    "def __create_fn__(_type_name, _type_max_passes, _type_spent, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_spent, _return_type):\n def __init__(self,name:_type_name,max_passes:_type_max_passes,spent:_type_spent=_dflt_spent)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'max_passes',max_passes)\n  __dataclass_builtins_object__.__setattr__(self,'spent',spent)\n return __init__": f210,
-    "def __create_fn__(_type_name, _type_plane, _type_vertices, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_limits, _dflt_forbid, _dflt_point, _return_type):\n def __init__(self,name:_type_name,plane:_type_plane,vertices:_type_vertices,limits:_type_limits=_dflt_limits,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'plane',plane)\n  __dataclass_builtins_object__.__setattr__(self,'vertices',vertices)\n  __dataclass_builtins_object__.__setattr__(self,'limits',limits)\n  __dataclass_builtins_object__.__setattr__(self,'forbid',forbid)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n return __init__": f211,
-    "def __create_fn__(_type_name, _type_pulse, _type_rapid_mm_min, _type_max_feed_mm_min, _type_rotary, _type_accel_mm_s2, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotary, _dflt_accel_mm_s2, _return_type):\n def __init__(self,name:_type_name,pulse:_type_pulse,rapid_mm_min:_type_rapid_mm_min,max_feed_mm_min:_type_max_feed_mm_min,rotary:_type_rotary=_dflt_rotary,accel_mm_s2:_type_accel_mm_s2=_dflt_accel_mm_s2)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'pulse',pulse)\n  __dataclass_builtins_object__.__setattr__(self,'rapid_mm_min',rapid_mm_min)\n  __dataclass_builtins_object__.__setattr__(self,'max_feed_mm_min',max_feed_mm_min)\n  __dataclass_builtins_object__.__setattr__(self,'rotary',rotary)\n  __dataclass_builtins_object__.__setattr__(self,'accel_mm_s2',accel_mm_s2)\n return __init__": f212,
-    "def __create_fn__(_type_name, _type_reference_axis, _type_limited_axis, _type_start, _type_regions, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):\n def __init__(self,name:_type_name,reference_axis:_type_reference_axis,limited_axis:_type_limited_axis,start:_type_start,regions:_type_regions,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'reference_axis',reference_axis)\n  __dataclass_builtins_object__.__setattr__(self,'limited_axis',limited_axis)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'regions',regions)\n  __dataclass_builtins_object__.__setattr__(self,'forbid',forbid)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n return __init__": f213,
-    "def __create_fn__(_type_name, _type_units, _type_axes, _type_rapid_mode, _type_monitor_period_ms, _type_reference, _type_start, _type_offsets, _type_tool_lengths, _type_allowed, _type_modal, _type_tool_axis, _type_source, _type_warnings, _type_sections, _type_cutter_compensation, _type_tool_diameters, _type_sha256, _type_dialect, _type_fanuc, _type_block_delete, _type_arc_tolerance, _type_path_mode, _type_path_tolerance, _type_machine_type, _type_diameter_axes, _type_tool_offsets, _type_tool_length_wear, _type_tool_radius_wear, _type_control_units, _type_tool_change_quill_up, _type_tool_change_at_g30, _type_tool_change_position, _type_subroutine_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_modal, _dflt_tool_axis, _dflt_source, _dflt_warnings, _dflt_sections, _dflt_cutter_compensation, _dflt_tool_diameters, _dflt_sha256, _dflt_dialect, _dflt_fanuc, _dflt_block_delete, _dflt_arc_tolerance, _dflt_path_mode, _dflt_path_tolerance, _dflt_machine_type, _dflt_diameter_axes, _dflt_tool_offsets, _dflt_tool_length_wear, _dflt_tool_radius_wear, _dflt_control_units, _dflt_tool_change_quill_up, _dflt_tool_change_at_g30, _dflt_tool_change_position, _dflt_subroutine_path, _return_type):\n def __init__(self,name:_type_name,units:_type_units,axes:_type_axes,rapid_mode:_type_rapid_mode,monitor_period_ms:_type_monitor_period_ms,reference:_type_reference,start:_type_start,offsets:_type_offsets,tool_lengths:_type_tool_lengths,allowed:_type_allowed,modal:_type_modal=_dflt_modal,tool_axis:_type_tool_axis=_dflt_tool_axis,source:_type_source=_dflt_source,warnings:_type_warnings=_dflt_warnings,sections:_type_sections=_HAS_DEFAULT_FACTORY,cutter_compensation:_type_cutter_compensation=_dflt_cutter_compensation,tool_diameters:_type_tool_diameters=_HAS_DEFAULT_FACTORY,sha256:_type_sha256=_dflt_sha256,dialect:_type_dialect=_dflt_dialect,fanuc:_type_fanuc=_HAS_DEFAULT_FACTORY,block_delete:_type_block_delete=_dflt_block_delete,arc_tolerance:_type_arc_tolerance=_dflt_arc_tolerance,path_mode:_type_path_mode=_dflt_path_mode,path_tolerance:_type_path_tolerance=_dflt_path_tolerance,machine_type:_type_machine_type=_dflt_machine_type,diameter_axes:_type_diameter_axes=_dflt_diameter_axes,tool_offsets:_type_tool_offsets=_HAS_DEFAULT_FACTORY,tool_length_wear:_type_tool_length_wear=_HAS_DEFAULT_FACTORY,tool_radius_wear:_type_tool_radius_wear=_HAS_DEFAULT_FACTORY,control_units:_type_control_units=_dflt_control_units,tool_change_quill_up:_type_tool_change_quill_up=_dflt_tool_change_quill_up,tool_change_at_g30:_type_tool_change_at_g30=_dflt_tool_change_at_g30,tool_change_position:_type_tool_change_position=_HAS_DEFAULT_FACTORY,subroutine_path:_type_subroutine_path=_dflt_subroutine_path)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'units',units)\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'rapid_mode',rapid_mode)\n  __dataclass_builtins_object__.__setattr__(self,'monitor_period_ms',monitor_period_ms)\n  __dataclass_builtins_object__.__setattr__(self,'reference',reference)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'offsets',offsets)\n  __dataclass_builtins_object__.__setattr__(self,'tool_lengths',tool_lengths)\n  __dataclass_builtins_object__.__setattr__(self,'allowed',allowed)\n  __dataclass_builtins_object__.__setattr__(self,'modal',modal)\n  __dataclass_builtins_object__.__setattr__(self,'tool_axis',tool_axis)\n  __dataclass_builtins_object__.__setattr__(self,'source',source)\n  __dataclass_builtins_object__.__setattr__(self,'warnings',warnings)\n  __dataclass_builtins_object__.__setattr__(self,'sections',_dflt_sections() if sections is _HAS_DEFAULT_FACTORY else sections)\n  __dataclass_builtins_object__.__setattr__(self,'cutter_compensation',cutter_compensation)\n  __dataclass_builtins_object__.__setattr__(self,'tool_diameters',_dflt_tool_diameters() if tool_diameters is _HAS_DEFAULT_FACTORY else tool_diameters)\n  __dataclass_builtins_object__.__setattr__(self,'sha256',sha256)\n  __dataclass_builtins_object__.__setattr__(self,'dialect',dialect)\n  __dataclass_builtins_object__.__setattr__(self,'fanuc',_dflt_fanuc() if fanuc is _HAS_DEFAULT_FACTORY else fanuc)\n  __dataclass_builtins_object__.__setattr__(self,'block_delete',block_delete)\n  __dataclass_builtins_object__.__setattr__(self,'arc_tolerance',arc_tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'path_mode',path_mode)\n  __dataclass_builtins_object__.__setattr__(self,'path_tolerance',path_tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'machine_type',machine_type)\n  __dataclass_builtins_object__.__setattr__(self,'diameter_axes',diameter_axes)\n  __dataclass_builtins_object__.__setattr__(self,'tool_offsets',_dflt_tool_offsets() if tool_offsets is _HAS_DEFAULT_FACTORY else tool_offsets)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length_wear',_dflt_tool_length_wear() if tool_length_wear is _HAS_DEFAULT_FACTORY else tool_length_wear)\n  __dataclass_builtins_object__.__setattr__(self,'tool_radius_wear',_dflt_tool_radius_wear() if tool_radius_wear is _HAS_DEFAULT_FACTORY else tool_radius_wear)\n  __dataclass_builtins_object__.__setattr__(self,'control_units',control_units)\n  __dataclass_builtins_object__.__setattr__(self,'tool_change_quill_up',tool_change_quill_up)\n  __dataclass_builtins_object__.__setattr__(self,'tool_change_at_g30',tool_change_at_g30)\n  __dataclass_builtins_object__.__setattr__(self,'tool_change_position',_dflt_tool_change_position() if tool_change_position is _HAS_DEFAULT_FACTORY else tool_change_position)\n  __dataclass_builtins_object__.__setattr__(self,'subroutine_path',subroutine_path)\n return __init__": f214,
-    "def __create_fn__(_type_number, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,number:_type_number)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n return __init__": f215,
-    "def __create_fn__(_type_number, _type_geometry, _type_wear, _type_nose_radius, _type_wear_radius, _type_tip, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_geometry, _dflt_wear, _dflt_nose_radius, _dflt_wear_radius, _dflt_tip, _return_type):\n def __init__(self,number:_type_number,geometry:_type_geometry=_dflt_geometry,wear:_type_wear=_dflt_wear,nose_radius:_type_nose_radius=_dflt_nose_radius,wear_radius:_type_wear_radius=_dflt_wear_radius,tip:_type_tip=_dflt_tip)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'geometry',geometry)\n  __dataclass_builtins_object__.__setattr__(self,'wear',wear)\n  __dataclass_builtins_object__.__setattr__(self,'nose_radius',nose_radius)\n  __dataclass_builtins_object__.__setattr__(self,'wear_radius',wear_radius)\n  __dataclass_builtins_object__.__setattr__(self,'tip',tip)\n return __init__": f216,
-    "def __create_fn__(_type_offsets, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,offsets:_type_offsets)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'offsets',offsets)\n return __init__": f217,
-    "def __create_fn__(_type_p0, _type_p1, _type_tau0, _type_tau1, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tau0, _dflt_tau1, _return_type):\n def __init__(self,p0:_type_p0,p1:_type_p1,tau0:_type_tau0=_dflt_tau0,tau1:_type_tau1=_dflt_tau1)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'p0',p0)\n  __dataclass_builtins_object__.__setattr__(self,'p1',p1)\n  __dataclass_builtins_object__.__setattr__(self,'tau0',tau0)\n  __dataclass_builtins_object__.__setattr__(self,'tau1',tau1)\n return __init__": f218,
-    "def __create_fn__(_type_p0, _type_p1, _type_turns, _type_x_off, _type_c_entry, _type_arc, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_arc, _return_type):\n def __init__(self,p0:_type_p0,p1:_type_p1,turns:_type_turns,x_off:_type_x_off,c_entry:_type_c_entry,arc:_type_arc=_dflt_arc)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'p0',p0)\n  __dataclass_builtins_object__.__setattr__(self,'p1',p1)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'x_off',x_off)\n  __dataclass_builtins_object__.__setattr__(self,'c_entry',c_entry)\n  __dataclass_builtins_object__.__setattr__(self,'arc',arc)\n return __init__": f219,
-    "def __create_fn__(_type_start, _type_end, _type_turns, _type_x_off, _type_c_entry, _type_linear_axis, _type_rotary_axis, _type_grid, _type_arc, _type_centre, _type_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_radius, _return_type):\n def __init__(self,start:_type_start,end:_type_end,turns:_type_turns,x_off:_type_x_off,c_entry:_type_c_entry,linear_axis:_type_linear_axis,rotary_axis:_type_rotary_axis,grid:_type_grid,arc:_type_arc,centre:_type_centre=_dflt_centre,radius:_type_radius=_dflt_radius)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'x_off',x_off)\n  __dataclass_builtins_object__.__setattr__(self,'c_entry',c_entry)\n  __dataclass_builtins_object__.__setattr__(self,'linear_axis',linear_axis)\n  __dataclass_builtins_object__.__setattr__(self,'rotary_axis',rotary_axis)\n  __dataclass_builtins_object__.__setattr__(self,'grid',grid)\n  __dataclass_builtins_object__.__setattr__(self,'arc',arc)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n return __init__": f220,
-    "def __create_fn__(_type_status, _type_values, _type_approximate, _type_stopped, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_approximate, _dflt_stopped, _return_type):\n def __init__(self,status:_type_status,values:_type_values,approximate:_type_approximate=_dflt_approximate,stopped:_type_stopped=_dflt_stopped)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'status',status)\n  __dataclass_builtins_object__.__setattr__(self,'values',values)\n  __dataclass_builtins_object__.__setattr__(self,'approximate',approximate)\n  __dataclass_builtins_object__.__setattr__(self,'stopped',stopped)\n return __init__": f221,
-    "def __create_fn__(_type_summary, _type_configure, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,summary:_type_summary,configure:_type_configure)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'summary',summary)\n  __dataclass_builtins_object__.__setattr__(self,'configure',configure)\n return __init__": f222,
-    "def __create_fn__(_type_swap, _type_sc, _type_sh, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,swap:_type_swap,sc:_type_sc,sh:_type_sh)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'swap',swap)\n  __dataclass_builtins_object__.__setattr__(self,'sc',sc)\n  __dataclass_builtins_object__.__setattr__(self,'sh',sh)\n return __init__": f223,
-    "def __create_fn__(_type_text, _type_name, _type_sha256, _type_path, _type_notes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_path, _dflt_notes, _return_type):\n def __init__(self,text:_type_text,name:_type_name,sha256:_type_sha256,path:_type_path=_dflt_path,notes:_type_notes=_dflt_notes)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'text',text)\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'sha256',sha256)\n  __dataclass_builtins_object__.__setattr__(self,'path',path)\n  __dataclass_builtins_object__.__setattr__(self,'notes',notes)\n return __init__": f224,
-    "def __create_fn__(_type_upto, _type_min, _type_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_min, _dflt_max, _return_type):\n def __init__(self,upto:_type_upto,min:_type_min=_dflt_min,max:_type_max=_dflt_max)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'upto',upto)\n  __dataclass_builtins_object__.__setattr__(self,'min',min)\n  __dataclass_builtins_object__.__setattr__(self,'max',max)\n return __init__": f225,
-    "def __create_fn__(_type_value, _type_deps, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_deps, _return_type):\n def __init__(self,value:_type_value,deps:_type_deps=_HAS_DEFAULT_FACTORY)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'value',value)\n  __dataclass_builtins_object__.__setattr__(self,'deps',_dflt_deps() if deps is _HAS_DEFAULT_FACTORY else deps)\n return __init__": f226,
-    "def __create_fn__(_type_verdict, _type_violations, _type_reasons, _type_engines, _type_solver, _type_solver_version, _type_timings, _type_notes, _type_stats, _type_margin, _type_params, _type_engine, _type_truncated, _type_file, _type_extra, _type_program_sha256, _type_machine_name, _type_machine_file, _type_machine_sha256, _type_settings, _type_interrupted, _type_budget_s, _type_profile, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violations, _dflt_reasons, _dflt_engines, _dflt_solver, _dflt_solver_version, _dflt_timings, _dflt_notes, _dflt_stats, _dflt_margin, _dflt_params, _dflt_engine, _dflt_truncated, _dflt_file, _dflt_extra, _dflt_program_sha256, _dflt_machine_name, _dflt_machine_file, _dflt_machine_sha256, _dflt_settings, _dflt_interrupted, _dflt_budget_s, _dflt_profile, _return_type):\n def __init__(self,verdict:_type_verdict,violations:_type_violations=_dflt_violations,reasons:_type_reasons=_dflt_reasons,engines:_type_engines=_dflt_engines,solver:_type_solver=_dflt_solver,solver_version:_type_solver_version=_dflt_solver_version,timings:_type_timings=_dflt_timings,notes:_type_notes=_dflt_notes,stats:_type_stats=_dflt_stats,margin:_type_margin=_dflt_margin,params:_type_params=_dflt_params,engine:_type_engine=_dflt_engine,truncated:_type_truncated=_dflt_truncated,file:_type_file=_dflt_file,extra:_type_extra=_HAS_DEFAULT_FACTORY,program_sha256:_type_program_sha256=_dflt_program_sha256,machine_name:_type_machine_name=_dflt_machine_name,machine_file:_type_machine_file=_dflt_machine_file,machine_sha256:_type_machine_sha256=_dflt_machine_sha256,settings:_type_settings=_dflt_settings,interrupted:_type_interrupted=_dflt_interrupted,budget_s:_type_budget_s=_dflt_budget_s,profile:_type_profile=_HAS_DEFAULT_FACTORY)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'verdict',verdict)\n  __dataclass_builtins_object__.__setattr__(self,'violations',violations)\n  __dataclass_builtins_object__.__setattr__(self,'reasons',reasons)\n  __dataclass_builtins_object__.__setattr__(self,'engines',engines)\n  __dataclass_builtins_object__.__setattr__(self,'solver',solver)\n  __dataclass_builtins_object__.__setattr__(self,'solver_version',solver_version)\n  __dataclass_builtins_object__.__setattr__(self,'timings',timings)\n  __dataclass_builtins_object__.__setattr__(self,'notes',notes)\n  __dataclass_builtins_object__.__setattr__(self,'stats',stats)\n  __dataclass_builtins_object__.__setattr__(self,'margin',margin)\n  __dataclass_builtins_object__.__setattr__(self,'params',params)\n  __dataclass_builtins_object__.__setattr__(self,'engine',engine)\n  __dataclass_builtins_object__.__setattr__(self,'truncated',truncated)\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n  __dataclass_builtins_object__.__setattr__(self,'extra',_dflt_extra() if extra is _HAS_DEFAULT_FACTORY else extra)\n  __dataclass_builtins_object__.__setattr__(self,'program_sha256',program_sha256)\n  __dataclass_builtins_object__.__setattr__(self,'machine_name',machine_name)\n  __dataclass_builtins_object__.__setattr__(self,'machine_file',machine_file)\n  __dataclass_builtins_object__.__setattr__(self,'machine_sha256',machine_sha256)\n  __dataclass_builtins_object__.__setattr__(self,'settings',settings)\n  __dataclass_builtins_object__.__setattr__(self,'interrupted',interrupted)\n  __dataclass_builtins_object__.__setattr__(self,'budget_s',budget_s)\n  __dataclass_builtins_object__.__setattr__(self,'profile',_dflt_profile() if profile is _HAS_DEFAULT_FACTORY else profile)\n return __init__": f227,
-    'def __create_fn__(_type_violation, _type_reason, _type_engine, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violation, _dflt_reason, _dflt_engine, _return_type):\n def __init__(self,violation:_type_violation=_dflt_violation,reason:_type_reason=_dflt_reason,engine:_type_engine=_dflt_engine)->_return_type:\n  self.violation=violation\n  self.reason=reason\n  self.engine=engine\n return __init__': f228,
-    "def __create_fn__(_type_words, _type_span, _type_index, _type_number, _type_messages, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _return_type):\n def __init__(self,words:_type_words,span:_type_span,index:_type_index,number:_type_number=_dflt_number,messages:_type_messages=_dflt_messages)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'index',index)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'messages',messages)\n return __init__": f229,
-    "def __create_fn__(_type_words, _type_span, _type_index, _type_number, _type_messages, _type_shape, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _dflt_shape, _return_type):\n def __init__(self,words:_type_words,span:_type_span,index:_type_index,number:_type_number=_dflt_number,messages:_type_messages=_dflt_messages,shape:_type_shape=_dflt_shape)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'index',index)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'messages',messages)\n  __dataclass_builtins_object__.__setattr__(self,'shape',shape)\n return __init__": f230,
-    "def __create_fn__(_type_work, _type_offset, _type_rotation, _type_diameter, _type_inch, _type_opaque, _type_work_offset, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotation, _dflt_diameter, _dflt_inch, _dflt_opaque, _dflt_work_offset, _return_type):\n def __init__(self,work:_type_work,offset:_type_offset,rotation:_type_rotation=_dflt_rotation,diameter:_type_diameter=_dflt_diameter,inch:_type_inch=_dflt_inch,opaque:_type_opaque=_dflt_opaque,work_offset:_type_work_offset=_dflt_work_offset)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'work',work)\n  __dataclass_builtins_object__.__setattr__(self,'offset',offset)\n  __dataclass_builtins_object__.__setattr__(self,'rotation',rotation)\n  __dataclass_builtins_object__.__setattr__(self,'diameter',diameter)\n  __dataclass_builtins_object__.__setattr__(self,'inch',inch)\n  __dataclass_builtins_object__.__setattr__(self,'opaque',opaque)\n  __dataclass_builtins_object__.__setattr__(self,'work_offset',work_offset)\n return __init__": f231,
-    "def __create_fn__(_type_zones, _type_tool_axis, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tool_axis, _return_type):\n def __init__(self,zones:_type_zones,tool_axis:_type_tool_axis=_dflt_tool_axis)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'zones',zones)\n  __dataclass_builtins_object__.__setattr__(self,'tool_axis',tool_axis)\n return __init__": f232,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',\'columns\',\'offset_bound\',\'motions\',\'lines\',\'rapids\',\'blocks\',\'start\',\'first_row\',\'row0\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f233,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',\'degrees\',\'cos\',\'sin\',\'before\',\'after\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f234,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',\'scale\',\'kind\',\'start\',\'end\',\'line\',\'block\',\'tool_length\',\'centre\',\'plane\',\'clockwise\',\'turns\',\'feed\',\'file\',\'objects\',\'dwell\',\'derived\',\'frame\',\'radius\',\'tool_register\',\'tools_known\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f235,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f236,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'blend\',\'tolerance\',\'naive\',\'dialect\',\'code\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f237,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'block\',\'span\',\'zone\',\'point\',\'path_point\',\'parameter\',\'parameter_exact\',\'first_exit\',\'first_exit_parameter\',\'first_exit_exact\',\'depth\',\'depth_exact\',\'engine\',\'segment_kind\',\'derived\',\'kind\',\'params\',\'zones\',\'note\',\'on_path\',\'break_line\',\'break_parameter\',\'break_point\',\'leg\',\'switches\',\'exit_located\',\'frame\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f238,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'centre\',\'factors\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f239,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'centre\',\'u\',\'rho\',\'ratio\',\'sweep\',\'clockwise\',\'rho_max\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f240,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'code\',\'message\',\'span\',\'severity\',\'file\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f241,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'code\',\'reason\',\'span\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f242,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'decimal_point_input\',\'increment_system\',\'g73_retract\',\'g83_clearance\',\'boring_shift\',\'scaling_unit\',\'rotation_incremental\',\'atan_signed\',\'tool_length_motion\',\'harmless_m\',\'references\',\'variables\',\'macros\',\'gcode_system\',\'g71_depth\',\'g71_retract\',\'roughing_final_pass\',\'g73_relief_x\',\'g73_relief_z\',\'g73_divisions\',\'g74_retract\',\'thread_chamfer\',\'thread_chamfer_angle\',\'g76_finish_passes\',\'g76_tool_angle\',\'g76_min_depth\',\'g76_finish_allowance\',\'tool_offset_motion\',\'tool_offset_cancel\',\'path\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f243,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'degree\',\'knots\',\'control\',\'weights\',\'source\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f244,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'delete\',\'number\',\'oword\',\'words\',\'assigns\',\'comments\',\'percent\',\'unsupported\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f245,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'delete\',\'number\',\'program\',\'words\',\'assigns\',\'comments\',\'stmt\',\'stmt_at\',\'percent\',\'unmodelled\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f246,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'file\',\'line\',\'column\',\'end_column\',\'text\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f247,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'ca\',\'cb\',\'angle\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f248,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'radius\',\'angle\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f249,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'s\',\'e\',\'ccw\',\'full\',\'centre\',\'r_signed\',\'r2_lo\',\'r2_hi\',\'start\',\'end\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f250,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'key\',\'group\',\'lanes\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f251,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'key\',\'meaning\',\'read\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f252,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'kind\',\'end\',\'label\',\'centre\',\'clockwise\',\'dwell_s\',\'feed\',\'synced\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f253,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'axes\',\'block\',\'span\',\'tool_length\',\'feed_mm_min\',\'plane\',\'clockwise\',\'centre\',\'radius\',\'turns\',\'dwell_s\',\'derived\',\'tool_register\',\'deps_start\',\'deps_end\',\'deps_tool\',\'extra\',\'frame\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f254,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'centre\',\'clockwise\',\'line\',\'feed\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f255,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'label\',\'keyword\',\'args\',\'column\',\'end_column\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f256,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'lane\',\'g\',\'m\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f257,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'letter\',\'value\',\'span\',\'text\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f258,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'linear_axis\',\'rotary_axis\',\'cylinder_radius\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f259,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'lo\',\'hi\',\'lo_closed\',\'hi_closed\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f260,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'lo\',\'hi\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f261,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'margin\',\'params\',\'engine\',\'max_violations\',\'arc_tolerance\',\'recovery\',\'max_iterations\',\'dialect\',\'library\',\'block_delete\',\'budget_s\',\'limits\',\'tool_table\',\'tool_table_units\',\'tool_table_x_offset\',\'written\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f262,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'message\',\'span\',\'block\',\'code\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f263,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'missing\',\'on_fallback\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f264,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f265,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'lo\',\'hi\',\'written\',\'absolute\',\'lo_open\',\'hi_open\',\'centre\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f266,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'max_passes\',\'spent\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f267,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'plane\',\'vertices\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f268,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'pulse\',\'rapid_mm_min\',\'max_feed_mm_min\',\'rotary\',\'accel_mm_s2\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f269,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'reference_axis\',\'limited_axis\',\'start\',\'regions\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f270,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'units\',\'axes\',\'rapid_mode\',\'monitor_period_ms\',\'reference\',\'start\',\'offsets\',\'tool_lengths\',\'allowed\',\'modal\',\'tool_axis\',\'source\',\'warnings\',\'sections\',\'cutter_compensation\',\'tool_diameters\',\'sha256\',\'dialect\',\'fanuc\',\'block_delete\',\'arc_tolerance\',\'path_mode\',\'path_tolerance\',\'machine_type\',\'diameter_axes\',\'tool_offsets\',\'tool_length_wear\',\'tool_radius_wear\',\'control_units\',\'tool_change_quill_up\',\'tool_change_at_g30\',\'tool_change_position\',\'subroutine_path\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f271,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'number\',\'geometry\',\'wear\',\'nose_radius\',\'wear_radius\',\'tip\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f272,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'number\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f273,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'offsets\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f274,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'tau0\',\'tau1\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f275,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'turns\',\'x_off\',\'c_entry\',\'arc\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f276,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'start\',\'end\',\'turns\',\'x_off\',\'c_entry\',\'linear_axis\',\'rotary_axis\',\'grid\',\'arc\',\'centre\',\'radius\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f277,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'status\',\'values\',\'approximate\',\'stopped\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f278,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'summary\',\'configure\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f279,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'swap\',\'sc\',\'sh\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f280,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'text\',\'name\',\'sha256\',\'path\',\'notes\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f281,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'upto\',\'min\',\'max\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f282,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'value\',\'deps\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f283,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'verdict\',\'violations\',\'reasons\',\'engines\',\'solver\',\'solver_version\',\'timings\',\'notes\',\'stats\',\'margin\',\'params\',\'engine\',\'truncated\',\'file\',\'extra\',\'program_sha256\',\'machine_name\',\'machine_file\',\'machine_sha256\',\'settings\',\'interrupted\',\'budget_s\',\'profile\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f284,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',\'shape\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f285,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f286,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'work\',\'offset\',\'rotation\',\'diameter\',\'inch\',\'opaque\',\'work_offset\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f287,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'zones\',\'tool_axis\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f288,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',\'columns\',\'offset_bound\',\'motions\',\'lines\',\'rapids\',\'blocks\',\'start\',\'first_row\',\'row0\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f289,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',\'degrees\',\'cos\',\'sin\',\'before\',\'after\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f290,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',\'scale\',\'kind\',\'start\',\'end\',\'line\',\'block\',\'tool_length\',\'centre\',\'plane\',\'clockwise\',\'turns\',\'feed\',\'file\',\'objects\',\'dwell\',\'derived\',\'frame\',\'radius\',\'tool_register\',\'tools_known\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f291,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f292,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'blend\',\'tolerance\',\'naive\',\'dialect\',\'code\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f293,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'block\',\'span\',\'zone\',\'point\',\'path_point\',\'parameter\',\'parameter_exact\',\'first_exit\',\'first_exit_parameter\',\'first_exit_exact\',\'depth\',\'depth_exact\',\'engine\',\'segment_kind\',\'derived\',\'kind\',\'params\',\'zones\',\'note\',\'on_path\',\'break_line\',\'break_parameter\',\'break_point\',\'leg\',\'switches\',\'exit_located\',\'frame\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f294,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'centre\',\'factors\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f295,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'centre\',\'u\',\'rho\',\'ratio\',\'sweep\',\'clockwise\',\'rho_max\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f296,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'code\',\'message\',\'span\',\'severity\',\'file\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f297,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'code\',\'reason\',\'span\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f298,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'decimal_point_input\',\'increment_system\',\'g73_retract\',\'g83_clearance\',\'boring_shift\',\'scaling_unit\',\'rotation_incremental\',\'atan_signed\',\'tool_length_motion\',\'harmless_m\',\'references\',\'variables\',\'macros\',\'gcode_system\',\'g71_depth\',\'g71_retract\',\'roughing_final_pass\',\'g73_relief_x\',\'g73_relief_z\',\'g73_divisions\',\'g74_retract\',\'thread_chamfer\',\'thread_chamfer_angle\',\'g76_finish_passes\',\'g76_tool_angle\',\'g76_min_depth\',\'g76_finish_allowance\',\'tool_offset_motion\',\'tool_offset_cancel\',\'path\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f299,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'degree\',\'knots\',\'control\',\'weights\',\'source\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f300,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'delete\',\'number\',\'oword\',\'words\',\'assigns\',\'comments\',\'percent\',\'unsupported\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f301,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'delete\',\'number\',\'program\',\'words\',\'assigns\',\'comments\',\'stmt\',\'stmt_at\',\'percent\',\'unmodelled\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f302,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'file\',\'line\',\'column\',\'end_column\',\'text\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f303,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'ca\',\'cb\',\'angle\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f304,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'radius\',\'angle\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f305,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'s\',\'e\',\'ccw\',\'full\',\'centre\',\'r_signed\',\'r2_lo\',\'r2_hi\',\'start\',\'end\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f306,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'key\',\'group\',\'lanes\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f307,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'key\',\'meaning\',\'read\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f308,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'kind\',\'end\',\'label\',\'centre\',\'clockwise\',\'dwell_s\',\'feed\',\'synced\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f309,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'axes\',\'block\',\'span\',\'tool_length\',\'feed_mm_min\',\'plane\',\'clockwise\',\'centre\',\'radius\',\'turns\',\'dwell_s\',\'derived\',\'tool_register\',\'deps_start\',\'deps_end\',\'deps_tool\',\'extra\',\'frame\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f310,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'centre\',\'clockwise\',\'line\',\'feed\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f311,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'label\',\'keyword\',\'args\',\'column\',\'end_column\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f312,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'lane\',\'g\',\'m\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f313,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'letter\',\'value\',\'span\',\'text\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f314,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'linear_axis\',\'rotary_axis\',\'cylinder_radius\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f315,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'lo\',\'hi\',\'lo_closed\',\'hi_closed\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f316,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'lo\',\'hi\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f317,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'margin\',\'params\',\'engine\',\'max_violations\',\'arc_tolerance\',\'recovery\',\'max_iterations\',\'dialect\',\'library\',\'block_delete\',\'budget_s\',\'limits\',\'tool_table\',\'tool_table_units\',\'tool_table_x_offset\',\'written\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f318,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'message\',\'span\',\'block\',\'code\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f319,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'missing\',\'on_fallback\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f320,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f321,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'lo\',\'hi\',\'written\',\'absolute\',\'lo_open\',\'hi_open\',\'centre\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f322,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'max_passes\',\'spent\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f323,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'plane\',\'vertices\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f324,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'pulse\',\'rapid_mm_min\',\'max_feed_mm_min\',\'rotary\',\'accel_mm_s2\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f325,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'reference_axis\',\'limited_axis\',\'start\',\'regions\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f326,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'units\',\'axes\',\'rapid_mode\',\'monitor_period_ms\',\'reference\',\'start\',\'offsets\',\'tool_lengths\',\'allowed\',\'modal\',\'tool_axis\',\'source\',\'warnings\',\'sections\',\'cutter_compensation\',\'tool_diameters\',\'sha256\',\'dialect\',\'fanuc\',\'block_delete\',\'arc_tolerance\',\'path_mode\',\'path_tolerance\',\'machine_type\',\'diameter_axes\',\'tool_offsets\',\'tool_length_wear\',\'tool_radius_wear\',\'control_units\',\'tool_change_quill_up\',\'tool_change_at_g30\',\'tool_change_position\',\'subroutine_path\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f327,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'number\',\'geometry\',\'wear\',\'nose_radius\',\'wear_radius\',\'tip\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f328,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'number\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f329,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'offsets\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f330,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'tau0\',\'tau1\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f331,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'turns\',\'x_off\',\'c_entry\',\'arc\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f332,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'start\',\'end\',\'turns\',\'x_off\',\'c_entry\',\'linear_axis\',\'rotary_axis\',\'grid\',\'arc\',\'centre\',\'radius\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f333,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'status\',\'values\',\'approximate\',\'stopped\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f334,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'summary\',\'configure\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f335,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'swap\',\'sc\',\'sh\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f336,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'text\',\'name\',\'sha256\',\'path\',\'notes\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f337,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'upto\',\'min\',\'max\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f338,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'value\',\'deps\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f339,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'verdict\',\'violations\',\'reasons\',\'engines\',\'solver\',\'solver_version\',\'timings\',\'notes\',\'stats\',\'margin\',\'params\',\'engine\',\'truncated\',\'file\',\'extra\',\'program_sha256\',\'machine_name\',\'machine_file\',\'machine_sha256\',\'settings\',\'interrupted\',\'budget_s\',\'profile\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f340,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',\'shape\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f341,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f342,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'work\',\'offset\',\'rotation\',\'diameter\',\'inch\',\'opaque\',\'work_offset\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f343,
-    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'zones\',\'tool_axis\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f344,
+    'def __create_fn__():\n def make(delete,number,words,assigns):\n  o = _new(_draft)\n  o.delete = delete\n  o.number = number\n  o.words = words\n  o.assigns = assigns\n  o.oword = _c_oword\n  o.comments = _c_comments\n  o.percent = _c_percent\n  o.unsupported = _c_unsupported\n  o.__class__ = _cls\n  return o\n return make': f172,
+    'def __create_fn__():\n def make(file,line,column,end_column,text):\n  o = _new(_draft)\n  o.file = file\n  o.line = line\n  o.column = column\n  o.end_column = end_column\n  o.text = text\n  o.__class__ = _cls\n  return o\n return make': f173,
+    'def __create_fn__():\n def make(kind,start,end,axes,block,span,tool_length,feed_mm_min,plane,clockwise,centre,radius,turns,dwell_s,derived,tool_register,deps_start,deps_end,extra,frame):\n  o = _new(_draft)\n  o.kind = kind\n  o.start = start\n  o.end = end\n  o.axes = axes\n  o.block = block\n  o.span = span\n  o.tool_length = tool_length\n  o.feed_mm_min = feed_mm_min\n  o.plane = plane\n  o.clockwise = clockwise\n  o.centre = centre\n  o.radius = radius\n  o.turns = turns\n  o.dwell_s = dwell_s\n  o.derived = derived\n  o.tool_register = tool_register\n  o.deps_start = deps_start\n  o.deps_end = deps_end\n  o.extra = extra\n  o.frame = frame\n  o.deps_tool = _c_deps_tool\n  o.__class__ = _cls\n  return o\n return make': f174,
+    'def __create_fn__():\n def make(letter,value,span,text):\n  o = _new(_draft)\n  o.letter = letter\n  o.value = value\n  o.span = span\n  o.text = text\n  o.__class__ = _cls\n  return o\n return make': f175,
+    "def __create_fn__(_type_axes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,axes:_type_axes)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n return __init__": f176,
+    "def __create_fn__(_type_axes, _type_columns, _type_offset_bound, _type_motions, _type_lines, _type_rapids, _type_blocks, _type_start, _type_first_row, _type_row0, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_row0, _return_type):\n def __init__(self,axes:_type_axes,columns:_type_columns,offset_bound:_type_offset_bound,motions:_type_motions,lines:_type_lines,rapids:_type_rapids,blocks:_type_blocks,start:_type_start,first_row:_type_first_row,row0:_type_row0=_dflt_row0)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'columns',columns)\n  __dataclass_builtins_object__.__setattr__(self,'offset_bound',offset_bound)\n  __dataclass_builtins_object__.__setattr__(self,'motions',motions)\n  __dataclass_builtins_object__.__setattr__(self,'lines',lines)\n  __dataclass_builtins_object__.__setattr__(self,'rapids',rapids)\n  __dataclass_builtins_object__.__setattr__(self,'blocks',blocks)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'first_row',first_row)\n  __dataclass_builtins_object__.__setattr__(self,'row0',row0)\n return __init__": f177,
+    "def __create_fn__(_type_axes, _type_degrees, _type_cos, _type_sin, _type_before, _type_after, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,axes:_type_axes,degrees:_type_degrees,cos:_type_cos,sin:_type_sin,before:_type_before,after:_type_after)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'degrees',degrees)\n  __dataclass_builtins_object__.__setattr__(self,'cos',cos)\n  __dataclass_builtins_object__.__setattr__(self,'sin',sin)\n  __dataclass_builtins_object__.__setattr__(self,'before',before)\n  __dataclass_builtins_object__.__setattr__(self,'after',after)\n return __init__": f178,
+    "def __create_fn__(_type_axes, _type_scale, _type_kind, _type_start, _type_end, _type_line, _type_block, _type_tool_length, _type_centre, _type_plane, _type_clockwise, _type_turns, _type_feed, _type_file, _type_objects, _type_dwell, _type_derived, _type_frame, _type_radius, _type_tool_register, _type_tools_known, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_kind, _dflt_start, _dflt_end, _dflt_line, _dflt_block, _dflt_tool_length, _dflt_centre, _dflt_plane, _dflt_clockwise, _dflt_turns, _dflt_feed, _dflt_file, _dflt_objects, _dflt_dwell, _dflt_derived, _dflt_frame, _dflt_radius, _dflt_tool_register, _dflt_tools_known, _return_type):\n def __init__(self,axes:_type_axes,scale:_type_scale,kind:_type_kind=_dflt_kind,start:_type_start=_dflt_start,end:_type_end=_dflt_end,line:_type_line=_dflt_line,block:_type_block=_dflt_block,tool_length:_type_tool_length=_dflt_tool_length,centre:_type_centre=_dflt_centre,plane:_type_plane=_dflt_plane,clockwise:_type_clockwise=_dflt_clockwise,turns:_type_turns=_dflt_turns,feed:_type_feed=_dflt_feed,file:_type_file=_dflt_file,objects:_type_objects=_dflt_objects,dwell:_type_dwell=_dflt_dwell,derived:_type_derived=_dflt_derived,frame:_type_frame=_dflt_frame,radius:_type_radius=_dflt_radius,tool_register:_type_tool_register=_dflt_tool_register,tools_known:_type_tools_known=_dflt_tools_known)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'scale',scale)\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'line',line)\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length',tool_length)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'plane',plane)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'feed',feed)\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n  __dataclass_builtins_object__.__setattr__(self,'objects',objects)\n  __dataclass_builtins_object__.__setattr__(self,'dwell',dwell)\n  __dataclass_builtins_object__.__setattr__(self,'derived',derived)\n  __dataclass_builtins_object__.__setattr__(self,'frame',frame)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n  __dataclass_builtins_object__.__setattr__(self,'tool_register',tool_register)\n  __dataclass_builtins_object__.__setattr__(self,'tools_known',tools_known)\n return __init__": f179,
+    "def __create_fn__(_type_blend, _type_tolerance, _type_naive, _type_dialect, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tolerance, _dflt_naive, _dflt_dialect, _dflt_code, _return_type):\n def __init__(self,blend:_type_blend,tolerance:_type_tolerance=_dflt_tolerance,naive:_type_naive=_dflt_naive,dialect:_type_dialect=_dflt_dialect,code:_type_code=_dflt_code)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'blend',blend)\n  __dataclass_builtins_object__.__setattr__(self,'tolerance',tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'naive',naive)\n  __dataclass_builtins_object__.__setattr__(self,'dialect',dialect)\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n return __init__": f180,
+    "def __create_fn__(_type_block, _type_span, _type_zone, _type_point, _type_path_point, _type_parameter, _type_parameter_exact, _type_first_exit, _type_first_exit_parameter, _type_first_exit_exact, _type_depth, _type_depth_exact, _type_engine, _type_segment_kind, _type_derived, _type_kind, _type_params, _type_zones, _type_note, _type_on_path, _type_break_line, _type_break_parameter, _type_break_point, _type_leg, _type_switches, _type_exit_located, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_derived, _dflt_kind, _dflt_params, _dflt_zones, _dflt_note, _dflt_on_path, _dflt_break_line, _dflt_break_parameter, _dflt_break_point, _dflt_leg, _dflt_switches, _dflt_exit_located, _dflt_frame, _return_type):\n def __init__(self,block:_type_block,span:_type_span,zone:_type_zone,point:_type_point,path_point:_type_path_point,parameter:_type_parameter,parameter_exact:_type_parameter_exact,first_exit:_type_first_exit,first_exit_parameter:_type_first_exit_parameter,first_exit_exact:_type_first_exit_exact,depth:_type_depth,depth_exact:_type_depth_exact,engine:_type_engine,segment_kind:_type_segment_kind,derived:_type_derived=_dflt_derived,kind:_type_kind=_dflt_kind,params:_type_params=_dflt_params,zones:_type_zones=_dflt_zones,note:_type_note=_dflt_note,on_path:_type_on_path=_dflt_on_path,break_line:_type_break_line=_dflt_break_line,break_parameter:_type_break_parameter=_dflt_break_parameter,break_point:_type_break_point=_dflt_break_point,leg:_type_leg=_dflt_leg,switches:_type_switches=_dflt_switches,exit_located:_type_exit_located=_dflt_exit_located,frame:_type_frame=_dflt_frame)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'zone',zone)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n  __dataclass_builtins_object__.__setattr__(self,'path_point',path_point)\n  __dataclass_builtins_object__.__setattr__(self,'parameter',parameter)\n  __dataclass_builtins_object__.__setattr__(self,'parameter_exact',parameter_exact)\n  __dataclass_builtins_object__.__setattr__(self,'first_exit',first_exit)\n  __dataclass_builtins_object__.__setattr__(self,'first_exit_parameter',first_exit_parameter)\n  __dataclass_builtins_object__.__setattr__(self,'first_exit_exact',first_exit_exact)\n  __dataclass_builtins_object__.__setattr__(self,'depth',depth)\n  __dataclass_builtins_object__.__setattr__(self,'depth_exact',depth_exact)\n  __dataclass_builtins_object__.__setattr__(self,'engine',engine)\n  __dataclass_builtins_object__.__setattr__(self,'segment_kind',segment_kind)\n  __dataclass_builtins_object__.__setattr__(self,'derived',derived)\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'params',params)\n  __dataclass_builtins_object__.__setattr__(self,'zones',zones)\n  __dataclass_builtins_object__.__setattr__(self,'note',note)\n  __dataclass_builtins_object__.__setattr__(self,'on_path',on_path)\n  __dataclass_builtins_object__.__setattr__(self,'break_line',break_line)\n  __dataclass_builtins_object__.__setattr__(self,'break_parameter',break_parameter)\n  __dataclass_builtins_object__.__setattr__(self,'break_point',break_point)\n  __dataclass_builtins_object__.__setattr__(self,'leg',leg)\n  __dataclass_builtins_object__.__setattr__(self,'switches',switches)\n  __dataclass_builtins_object__.__setattr__(self,'exit_located',exit_located)\n  __dataclass_builtins_object__.__setattr__(self,'frame',frame)\n return __init__": f181,
+    "def __create_fn__(_type_centre, _type_factors, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,centre:_type_centre,factors:_type_factors)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'factors',factors)\n return __init__": f182,
+    "def __create_fn__(_type_centre, _type_u, _type_rho, _type_ratio, _type_sweep, _type_clockwise, _type_rho_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,centre:_type_centre,u:_type_u,rho:_type_rho,ratio:_type_ratio,sweep:_type_sweep,clockwise:_type_clockwise,rho_max:_type_rho_max)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'u',u)\n  __dataclass_builtins_object__.__setattr__(self,'rho',rho)\n  __dataclass_builtins_object__.__setattr__(self,'ratio',ratio)\n  __dataclass_builtins_object__.__setattr__(self,'sweep',sweep)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'rho_max',rho_max)\n return __init__": f183,
+    "def __create_fn__(_type_code, _type_message, _type_span, _type_severity, _type_file, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_severity, _dflt_file, _return_type):\n def __init__(self,code:_type_code,message:_type_message,span:_type_span=_dflt_span,severity:_type_severity=_dflt_severity,file:_type_file=_dflt_file)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n  __dataclass_builtins_object__.__setattr__(self,'message',message)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'severity',severity)\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n return __init__": f184,
+    "def __create_fn__(_type_code, _type_reason, _type_span, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,code:_type_code,reason:_type_reason,span:_type_span)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n  __dataclass_builtins_object__.__setattr__(self,'reason',reason)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n return __init__": f185,
+    "def __create_fn__(_type_decimal_point_input, _type_increment_system, _type_g73_retract, _type_g83_clearance, _type_boring_shift, _type_scaling_unit, _type_rotation_incremental, _type_atan_signed, _type_tool_length_motion, _type_harmless_m, _type_references, _type_variables, _type_macros, _type_gcode_system, _type_g71_depth, _type_g71_retract, _type_roughing_final_pass, _type_g73_relief_x, _type_g73_relief_z, _type_g73_divisions, _type_g74_retract, _type_thread_chamfer, _type_thread_chamfer_angle, _type_g76_finish_passes, _type_g76_tool_angle, _type_g76_min_depth, _type_g76_finish_allowance, _type_tool_offset_motion, _type_tool_offset_cancel, _type_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_decimal_point_input, _dflt_increment_system, _dflt_g73_retract, _dflt_g83_clearance, _dflt_boring_shift, _dflt_scaling_unit, _dflt_rotation_incremental, _dflt_atan_signed, _dflt_tool_length_motion, _dflt_harmless_m, _dflt_references, _dflt_variables, _dflt_macros, _dflt_gcode_system, _dflt_g71_depth, _dflt_g71_retract, _dflt_roughing_final_pass, _dflt_g73_relief_x, _dflt_g73_relief_z, _dflt_g73_divisions, _dflt_g74_retract, _dflt_thread_chamfer, _dflt_thread_chamfer_angle, _dflt_g76_finish_passes, _dflt_g76_tool_angle, _dflt_g76_min_depth, _dflt_g76_finish_allowance, _dflt_tool_offset_motion, _dflt_tool_offset_cancel, _dflt_path, _return_type):\n def __init__(self,decimal_point_input:_type_decimal_point_input=_dflt_decimal_point_input,increment_system:_type_increment_system=_dflt_increment_system,g73_retract:_type_g73_retract=_dflt_g73_retract,g83_clearance:_type_g83_clearance=_dflt_g83_clearance,boring_shift:_type_boring_shift=_dflt_boring_shift,scaling_unit:_type_scaling_unit=_dflt_scaling_unit,rotation_incremental:_type_rotation_incremental=_dflt_rotation_incremental,atan_signed:_type_atan_signed=_dflt_atan_signed,tool_length_motion:_type_tool_length_motion=_dflt_tool_length_motion,harmless_m:_type_harmless_m=_dflt_harmless_m,references:_type_references=_HAS_DEFAULT_FACTORY,variables:_type_variables=_HAS_DEFAULT_FACTORY,macros:_type_macros=_HAS_DEFAULT_FACTORY,gcode_system:_type_gcode_system=_dflt_gcode_system,g71_depth:_type_g71_depth=_dflt_g71_depth,g71_retract:_type_g71_retract=_dflt_g71_retract,roughing_final_pass:_type_roughing_final_pass=_dflt_roughing_final_pass,g73_relief_x:_type_g73_relief_x=_dflt_g73_relief_x,g73_relief_z:_type_g73_relief_z=_dflt_g73_relief_z,g73_divisions:_type_g73_divisions=_dflt_g73_divisions,g74_retract:_type_g74_retract=_dflt_g74_retract,thread_chamfer:_type_thread_chamfer=_dflt_thread_chamfer,thread_chamfer_angle:_type_thread_chamfer_angle=_dflt_thread_chamfer_angle,g76_finish_passes:_type_g76_finish_passes=_dflt_g76_finish_passes,g76_tool_angle:_type_g76_tool_angle=_dflt_g76_tool_angle,g76_min_depth:_type_g76_min_depth=_dflt_g76_min_depth,g76_finish_allowance:_type_g76_finish_allowance=_dflt_g76_finish_allowance,tool_offset_motion:_type_tool_offset_motion=_dflt_tool_offset_motion,tool_offset_cancel:_type_tool_offset_cancel=_dflt_tool_offset_cancel,path:_type_path=_dflt_path)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'decimal_point_input',decimal_point_input)\n  __dataclass_builtins_object__.__setattr__(self,'increment_system',increment_system)\n  __dataclass_builtins_object__.__setattr__(self,'g73_retract',g73_retract)\n  __dataclass_builtins_object__.__setattr__(self,'g83_clearance',g83_clearance)\n  __dataclass_builtins_object__.__setattr__(self,'boring_shift',boring_shift)\n  __dataclass_builtins_object__.__setattr__(self,'scaling_unit',scaling_unit)\n  __dataclass_builtins_object__.__setattr__(self,'rotation_incremental',rotation_incremental)\n  __dataclass_builtins_object__.__setattr__(self,'atan_signed',atan_signed)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length_motion',tool_length_motion)\n  __dataclass_builtins_object__.__setattr__(self,'harmless_m',harmless_m)\n  __dataclass_builtins_object__.__setattr__(self,'references',_dflt_references() if references is _HAS_DEFAULT_FACTORY else references)\n  __dataclass_builtins_object__.__setattr__(self,'variables',_dflt_variables() if variables is _HAS_DEFAULT_FACTORY else variables)\n  __dataclass_builtins_object__.__setattr__(self,'macros',_dflt_macros() if macros is _HAS_DEFAULT_FACTORY else macros)\n  __dataclass_builtins_object__.__setattr__(self,'gcode_system',gcode_system)\n  __dataclass_builtins_object__.__setattr__(self,'g71_depth',g71_depth)\n  __dataclass_builtins_object__.__setattr__(self,'g71_retract',g71_retract)\n  __dataclass_builtins_object__.__setattr__(self,'roughing_final_pass',roughing_final_pass)\n  __dataclass_builtins_object__.__setattr__(self,'g73_relief_x',g73_relief_x)\n  __dataclass_builtins_object__.__setattr__(self,'g73_relief_z',g73_relief_z)\n  __dataclass_builtins_object__.__setattr__(self,'g73_divisions',g73_divisions)\n  __dataclass_builtins_object__.__setattr__(self,'g74_retract',g74_retract)\n  __dataclass_builtins_object__.__setattr__(self,'thread_chamfer',thread_chamfer)\n  __dataclass_builtins_object__.__setattr__(self,'thread_chamfer_angle',thread_chamfer_angle)\n  __dataclass_builtins_object__.__setattr__(self,'g76_finish_passes',g76_finish_passes)\n  __dataclass_builtins_object__.__setattr__(self,'g76_tool_angle',g76_tool_angle)\n  __dataclass_builtins_object__.__setattr__(self,'g76_min_depth',g76_min_depth)\n  __dataclass_builtins_object__.__setattr__(self,'g76_finish_allowance',g76_finish_allowance)\n  __dataclass_builtins_object__.__setattr__(self,'tool_offset_motion',tool_offset_motion)\n  __dataclass_builtins_object__.__setattr__(self,'tool_offset_cancel',tool_offset_cancel)\n  __dataclass_builtins_object__.__setattr__(self,'path',path)\n return __init__": f186,
+    "def __create_fn__(_type_degree, _type_knots, _type_control, _type_weights, _type_source, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_source, _return_type):\n def __init__(self,degree:_type_degree,knots:_type_knots,control:_type_control,weights:_type_weights,source:_type_source=_dflt_source)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'degree',degree)\n  __dataclass_builtins_object__.__setattr__(self,'knots',knots)\n  __dataclass_builtins_object__.__setattr__(self,'control',control)\n  __dataclass_builtins_object__.__setattr__(self,'weights',weights)\n  __dataclass_builtins_object__.__setattr__(self,'source',source)\n return __init__": f187,
+    "def __create_fn__(_type_delete, _type_number, _type_oword, _type_words, _type_assigns, _type_comments, _type_percent, _type_unsupported, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_oword, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_percent, _dflt_unsupported, _return_type):\n def __init__(self,delete:_type_delete=_dflt_delete,number:_type_number=_dflt_number,oword:_type_oword=_dflt_oword,words:_type_words=_dflt_words,assigns:_type_assigns=_dflt_assigns,comments:_type_comments=_dflt_comments,percent:_type_percent=_dflt_percent,unsupported:_type_unsupported=_dflt_unsupported)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'delete',delete)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'oword',oword)\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'assigns',assigns)\n  __dataclass_builtins_object__.__setattr__(self,'comments',comments)\n  __dataclass_builtins_object__.__setattr__(self,'percent',percent)\n  __dataclass_builtins_object__.__setattr__(self,'unsupported',unsupported)\n return __init__": f188,
+    "def __create_fn__(_type_delete, _type_number, _type_program, _type_words, _type_assigns, _type_comments, _type_stmt, _type_stmt_at, _type_percent, _type_unmodelled, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_delete, _dflt_number, _dflt_program, _dflt_words, _dflt_assigns, _dflt_comments, _dflt_stmt, _dflt_stmt_at, _dflt_percent, _dflt_unmodelled, _return_type):\n def __init__(self,delete:_type_delete=_dflt_delete,number:_type_number=_dflt_number,program:_type_program=_dflt_program,words:_type_words=_dflt_words,assigns:_type_assigns=_dflt_assigns,comments:_type_comments=_dflt_comments,stmt:_type_stmt=_dflt_stmt,stmt_at:_type_stmt_at=_dflt_stmt_at,percent:_type_percent=_dflt_percent,unmodelled:_type_unmodelled=_dflt_unmodelled)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'delete',delete)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'program',program)\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'assigns',assigns)\n  __dataclass_builtins_object__.__setattr__(self,'comments',comments)\n  __dataclass_builtins_object__.__setattr__(self,'stmt',stmt)\n  __dataclass_builtins_object__.__setattr__(self,'stmt_at',stmt_at)\n  __dataclass_builtins_object__.__setattr__(self,'percent',percent)\n  __dataclass_builtins_object__.__setattr__(self,'unmodelled',unmodelled)\n return __init__": f189,
+    "def __create_fn__(_type_file, _type_line, _type_column, _type_end_column, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_column, _dflt_end_column, _dflt_text, _return_type):\n def __init__(self,file:_type_file,line:_type_line,column:_type_column=_dflt_column,end_column:_type_end_column=_dflt_end_column,text:_type_text=_dflt_text)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n  __dataclass_builtins_object__.__setattr__(self,'line',line)\n  __dataclass_builtins_object__.__setattr__(self,'column',column)\n  __dataclass_builtins_object__.__setattr__(self,'end_column',end_column)\n  __dataclass_builtins_object__.__setattr__(self,'text',text)\n return __init__": f190,
+    "def __create_fn__(_type_ia, _type_ib, _type_ca, _type_cb, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,ia:_type_ia,ib:_type_ib,ca:_type_ca,cb:_type_cb,angle:_type_angle)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'ia',ia)\n  __dataclass_builtins_object__.__setattr__(self,'ib',ib)\n  __dataclass_builtins_object__.__setattr__(self,'ca',ca)\n  __dataclass_builtins_object__.__setattr__(self,'cb',cb)\n  __dataclass_builtins_object__.__setattr__(self,'angle',angle)\n return __init__": f191,
+    "def __create_fn__(_type_ia, _type_ib, _type_radius, _type_angle, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_radius, _dflt_angle, _return_type):\n def __init__(self,ia:_type_ia,ib:_type_ib,radius:_type_radius=_dflt_radius,angle:_type_angle=_dflt_angle)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'ia',ia)\n  __dataclass_builtins_object__.__setattr__(self,'ib',ib)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n  __dataclass_builtins_object__.__setattr__(self,'angle',angle)\n return __init__": f192,
+    "def __create_fn__(_type_ia, _type_ib, _type_s, _type_e, _type_ccw, _type_full, _type_centre, _type_r_signed, _type_r2_lo, _type_r2_hi, _type_start, _type_end, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,ia:_type_ia,ib:_type_ib,s:_type_s,e:_type_e,ccw:_type_ccw,full:_type_full,centre:_type_centre,r_signed:_type_r_signed,r2_lo:_type_r2_lo,r2_hi:_type_r2_hi,start:_type_start,end:_type_end)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'ia',ia)\n  __dataclass_builtins_object__.__setattr__(self,'ib',ib)\n  __dataclass_builtins_object__.__setattr__(self,'s',s)\n  __dataclass_builtins_object__.__setattr__(self,'e',e)\n  __dataclass_builtins_object__.__setattr__(self,'ccw',ccw)\n  __dataclass_builtins_object__.__setattr__(self,'full',full)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'r_signed',r_signed)\n  __dataclass_builtins_object__.__setattr__(self,'r2_lo',r2_lo)\n  __dataclass_builtins_object__.__setattr__(self,'r2_hi',r2_hi)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n return __init__": f193,
+    "def __create_fn__(_type_key, _type_group, _type_lanes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,key:_type_key,group:_type_group,lanes:_type_lanes)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'key',key)\n  __dataclass_builtins_object__.__setattr__(self,'group',group)\n  __dataclass_builtins_object__.__setattr__(self,'lanes',lanes)\n return __init__": f194,
+    "def __create_fn__(_type_key, _type_meaning, _type_read, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,key:_type_key,meaning:_type_meaning,read:_type_read)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'key',key)\n  __dataclass_builtins_object__.__setattr__(self,'meaning',meaning)\n  __dataclass_builtins_object__.__setattr__(self,'read',read)\n return __init__": f195,
+    "def __create_fn__(_type_kind, _type_end, _type_label, _type_centre, _type_clockwise, _type_dwell_s, _type_feed, _type_synced, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_dwell_s, _dflt_feed, _dflt_synced, _return_type):\n def __init__(self,kind:_type_kind,end:_type_end,label:_type_label,centre:_type_centre=_dflt_centre,clockwise:_type_clockwise=_dflt_clockwise,dwell_s:_type_dwell_s=_dflt_dwell_s,feed:_type_feed=_dflt_feed,synced:_type_synced=_dflt_synced)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'label',label)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'dwell_s',dwell_s)\n  __dataclass_builtins_object__.__setattr__(self,'feed',feed)\n  __dataclass_builtins_object__.__setattr__(self,'synced',synced)\n return __init__": f196,
+    'def __create_fn__(_type_kind, _type_label, _type_head, _type_remaining, _type_count, _type_ifs, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_remaining, _dflt_count, _dflt_ifs, _return_type):\n def __init__(self,kind:_type_kind,label:_type_label,head:_type_head,remaining:_type_remaining=_dflt_remaining,count:_type_count=_dflt_count,ifs:_type_ifs=_dflt_ifs)->_return_type:\n  self.kind=kind\n  self.label=label\n  self.head=head\n  self.remaining=remaining\n  self.count=count\n  self.ifs=ifs\n return __init__': f197,
+    'def __create_fn__(_type_kind, _type_label, _type_ret, _type_saved, _type_body, _type_repeats, _type_loops, _type_ifs, _type_caller, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_label, _dflt_ret, _dflt_saved, _dflt_body, _dflt_repeats, _dflt_loops, _dflt_ifs, _dflt_caller, _return_type):\n def __init__(self,kind:_type_kind,label:_type_label=_dflt_label,ret:_type_ret=_dflt_ret,saved:_type_saved=_dflt_saved,body:_type_body=_dflt_body,repeats:_type_repeats=_dflt_repeats,loops:_type_loops=_HAS_DEFAULT_FACTORY,ifs:_type_ifs=_HAS_DEFAULT_FACTORY,caller:_type_caller=_dflt_caller)->_return_type:\n  self.kind=kind\n  self.label=label\n  self.ret=ret\n  self.saved=saved\n  self.body=body\n  self.repeats=repeats\n  self.loops=_dflt_loops() if loops is _HAS_DEFAULT_FACTORY else loops\n  self.ifs=_dflt_ifs() if ifs is _HAS_DEFAULT_FACTORY else ifs\n  self.caller=caller\n return __init__': f198,
+    'def __create_fn__(_type_kind, _type_source, _type_program, _type_ret, _type_body, _type_repeats, _type_saved, _type_args, _type_loops, _type_custom, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_program, _dflt_ret, _dflt_body, _dflt_repeats, _dflt_saved, _dflt_args, _dflt_loops, _dflt_custom, _return_type):\n def __init__(self,kind:_type_kind,source:_type_source,program:_type_program=_dflt_program,ret:_type_ret=_dflt_ret,body:_type_body=_dflt_body,repeats:_type_repeats=_dflt_repeats,saved:_type_saved=_dflt_saved,args:_type_args=_dflt_args,loops:_type_loops=_HAS_DEFAULT_FACTORY,custom:_type_custom=_dflt_custom)->_return_type:\n  self.kind=kind\n  self.source=source\n  self.program=program\n  self.ret=ret\n  self.body=body\n  self.repeats=repeats\n  self.saved=saved\n  self.args=args\n  self.loops=_dflt_loops() if loops is _HAS_DEFAULT_FACTORY else loops\n  self.custom=custom\n return __init__': f199,
+    "def __create_fn__(_type_kind, _type_start, _type_end, _type_axes, _type_block, _type_span, _type_tool_length, _type_feed_mm_min, _type_plane, _type_clockwise, _type_centre, _type_radius, _type_turns, _type_dwell_s, _type_derived, _type_tool_register, _type_deps_start, _type_deps_end, _type_deps_tool, _type_extra, _type_frame, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_block, _dflt_span, _dflt_tool_length, _dflt_feed_mm_min, _dflt_plane, _dflt_clockwise, _dflt_centre, _dflt_radius, _dflt_turns, _dflt_dwell_s, _dflt_derived, _dflt_tool_register, _dflt_deps_start, _dflt_deps_end, _dflt_deps_tool, _dflt_extra, _dflt_frame, _return_type):\n def __init__(self,kind:_type_kind,start:_type_start,end:_type_end,axes:_type_axes,block:_type_block=_dflt_block,span:_type_span=_dflt_span,tool_length:_type_tool_length=_dflt_tool_length,feed_mm_min:_type_feed_mm_min=_dflt_feed_mm_min,plane:_type_plane=_dflt_plane,clockwise:_type_clockwise=_dflt_clockwise,centre:_type_centre=_dflt_centre,radius:_type_radius=_dflt_radius,turns:_type_turns=_dflt_turns,dwell_s:_type_dwell_s=_dflt_dwell_s,derived:_type_derived=_dflt_derived,tool_register:_type_tool_register=_dflt_tool_register,deps_start:_type_deps_start=_dflt_deps_start,deps_end:_type_deps_end=_dflt_deps_end,deps_tool:_type_deps_tool=_dflt_deps_tool,extra:_type_extra=_dflt_extra,frame:_type_frame=_dflt_frame)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length',tool_length)\n  __dataclass_builtins_object__.__setattr__(self,'feed_mm_min',feed_mm_min)\n  __dataclass_builtins_object__.__setattr__(self,'plane',plane)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'dwell_s',dwell_s)\n  __dataclass_builtins_object__.__setattr__(self,'derived',derived)\n  __dataclass_builtins_object__.__setattr__(self,'tool_register',tool_register)\n  __dataclass_builtins_object__.__setattr__(self,'deps_start',deps_start)\n  __dataclass_builtins_object__.__setattr__(self,'deps_end',deps_end)\n  __dataclass_builtins_object__.__setattr__(self,'deps_tool',deps_tool)\n  __dataclass_builtins_object__.__setattr__(self,'extra',extra)\n  __dataclass_builtins_object__.__setattr__(self,'frame',frame)\n return __init__": f200,
+    "def __create_fn__(_type_kind, _type_start, _type_end, _type_centre, _type_clockwise, _type_line, _type_feed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_clockwise, _dflt_line, _dflt_feed, _return_type):\n def __init__(self,kind:_type_kind,start:_type_start,end:_type_end,centre:_type_centre=_dflt_centre,clockwise:_type_clockwise=_dflt_clockwise,line:_type_line=_dflt_line,feed:_type_feed=_dflt_feed)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'kind',kind)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'clockwise',clockwise)\n  __dataclass_builtins_object__.__setattr__(self,'line',line)\n  __dataclass_builtins_object__.__setattr__(self,'feed',feed)\n return __init__": f201,
+    "def __create_fn__(_type_label, _type_keyword, _type_args, _type_column, _type_end_column, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,label:_type_label,keyword:_type_keyword,args:_type_args,column:_type_column,end_column:_type_end_column)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'label',label)\n  __dataclass_builtins_object__.__setattr__(self,'keyword',keyword)\n  __dataclass_builtins_object__.__setattr__(self,'args',args)\n  __dataclass_builtins_object__.__setattr__(self,'column',column)\n  __dataclass_builtins_object__.__setattr__(self,'end_column',end_column)\n return __init__": f202,
+    "def __create_fn__(_type_lane, _type_g, _type_m, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,lane:_type_lane,g:_type_g,m:_type_m)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'lane',lane)\n  __dataclass_builtins_object__.__setattr__(self,'g',g)\n  __dataclass_builtins_object__.__setattr__(self,'m',m)\n return __init__": f203,
+    "def __create_fn__(_type_letter, _type_value, _type_span, _type_text, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_text, _return_type):\n def __init__(self,letter:_type_letter,value:_type_value,span:_type_span,text:_type_text=_dflt_text)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'letter',letter)\n  __dataclass_builtins_object__.__setattr__(self,'value',value)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'text',text)\n return __init__": f204,
+    "def __create_fn__(_type_linear_axis, _type_rotary_axis, _type_cylinder_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,linear_axis:_type_linear_axis,rotary_axis:_type_rotary_axis,cylinder_radius:_type_cylinder_radius)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'linear_axis',linear_axis)\n  __dataclass_builtins_object__.__setattr__(self,'rotary_axis',rotary_axis)\n  __dataclass_builtins_object__.__setattr__(self,'cylinder_radius',cylinder_radius)\n return __init__": f205,
+    "def __create_fn__(_type_lo, _type_hi, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,lo:_type_lo,hi:_type_hi)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'lo',lo)\n  __dataclass_builtins_object__.__setattr__(self,'hi',hi)\n return __init__": f206,
+    "def __create_fn__(_type_lo, _type_hi, _type_lo_closed, _type_hi_closed, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,lo:_type_lo,hi:_type_hi,lo_closed:_type_lo_closed,hi_closed:_type_hi_closed)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'lo',lo)\n  __dataclass_builtins_object__.__setattr__(self,'hi',hi)\n  __dataclass_builtins_object__.__setattr__(self,'lo_closed',lo_closed)\n  __dataclass_builtins_object__.__setattr__(self,'hi_closed',hi_closed)\n return __init__": f207,
+    'def __create_fn__(_type_m, _type_head, _type_count, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_count, _return_type):\n def __init__(self,m:_type_m,head:_type_head,count:_type_count=_dflt_count)->_return_type:\n  self.m=m\n  self.head=head\n  self.count=count\n return __init__': f208,
+    "def __create_fn__(_type_margin, _type_params, _type_engine, _type_max_violations, _type_arc_tolerance, _type_recovery, _type_max_iterations, _type_dialect, _type_library, _type_block_delete, _type_budget_s, _type_limits, _type_tool_table, _type_tool_table_units, _type_tool_table_x_offset, _type_written, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_margin, _dflt_params, _dflt_engine, _dflt_max_violations, _dflt_arc_tolerance, _dflt_recovery, _dflt_max_iterations, _dflt_dialect, _dflt_library, _dflt_block_delete, _dflt_budget_s, _dflt_limits, _dflt_tool_table, _dflt_tool_table_units, _dflt_tool_table_x_offset, _dflt_written, _return_type):\n def __init__(self,margin:_type_margin=_dflt_margin,params:_type_params=_dflt_params,engine:_type_engine=_dflt_engine,max_violations:_type_max_violations=_dflt_max_violations,arc_tolerance:_type_arc_tolerance=_dflt_arc_tolerance,recovery:_type_recovery=_dflt_recovery,max_iterations:_type_max_iterations=_dflt_max_iterations,dialect:_type_dialect=_dflt_dialect,library:_type_library=_dflt_library,block_delete:_type_block_delete=_dflt_block_delete,budget_s:_type_budget_s=_dflt_budget_s,limits:_type_limits=_dflt_limits,tool_table:_type_tool_table=_dflt_tool_table,tool_table_units:_type_tool_table_units=_dflt_tool_table_units,tool_table_x_offset:_type_tool_table_x_offset=_dflt_tool_table_x_offset,written:_type_written=_dflt_written)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'margin',margin)\n  __dataclass_builtins_object__.__setattr__(self,'params',params)\n  __dataclass_builtins_object__.__setattr__(self,'engine',engine)\n  __dataclass_builtins_object__.__setattr__(self,'max_violations',max_violations)\n  __dataclass_builtins_object__.__setattr__(self,'arc_tolerance',arc_tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'recovery',recovery)\n  __dataclass_builtins_object__.__setattr__(self,'max_iterations',max_iterations)\n  __dataclass_builtins_object__.__setattr__(self,'dialect',dialect)\n  __dataclass_builtins_object__.__setattr__(self,'library',library)\n  __dataclass_builtins_object__.__setattr__(self,'block_delete',block_delete)\n  __dataclass_builtins_object__.__setattr__(self,'budget_s',budget_s)\n  __dataclass_builtins_object__.__setattr__(self,'limits',limits)\n  __dataclass_builtins_object__.__setattr__(self,'tool_table',tool_table)\n  __dataclass_builtins_object__.__setattr__(self,'tool_table_units',tool_table_units)\n  __dataclass_builtins_object__.__setattr__(self,'tool_table_x_offset',tool_table_x_offset)\n  __dataclass_builtins_object__.__setattr__(self,'written',written)\n return __init__": f209,
+    "def __create_fn__(_type_message, _type_span, _type_block, _type_code, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_span, _dflt_block, _dflt_code, _return_type):\n def __init__(self,message:_type_message,span:_type_span=_dflt_span,block:_type_block=_dflt_block,code:_type_code=_dflt_code)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'message',message)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'block',block)\n  __dataclass_builtins_object__.__setattr__(self,'code',code)\n return __init__": f210,
+    "def __create_fn__(_type_missing, _type_on_fallback, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,missing:_type_missing,on_fallback:_type_on_fallback)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'missing',missing)\n  __dataclass_builtins_object__.__setattr__(self,'on_fallback',on_fallback)\n return __init__": f211,
+    "def __create_fn__(_type_name, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):\n def __init__(self,name:_type_name,limits:_type_limits,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'limits',limits)\n  __dataclass_builtins_object__.__setattr__(self,'forbid',forbid)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n return __init__": f212,
+    "def __create_fn__(_type_name, _type_lo, _type_hi, _type_written, _type_absolute, _type_lo_open, _type_hi_open, _type_centre, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_absolute, _dflt_lo_open, _dflt_hi_open, _dflt_centre, _return_type):\n def __init__(self,name:_type_name,lo:_type_lo,hi:_type_hi,written:_type_written,absolute:_type_absolute=_dflt_absolute,lo_open:_type_lo_open=_dflt_lo_open,hi_open:_type_hi_open=_dflt_hi_open,centre:_type_centre=_dflt_centre)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'lo',lo)\n  __dataclass_builtins_object__.__setattr__(self,'hi',hi)\n  __dataclass_builtins_object__.__setattr__(self,'written',written)\n  __dataclass_builtins_object__.__setattr__(self,'absolute',absolute)\n  __dataclass_builtins_object__.__setattr__(self,'lo_open',lo_open)\n  __dataclass_builtins_object__.__setattr__(self,'hi_open',hi_open)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n return __init__": f213,
+    "def __create_fn__(_type_name, _type_max_passes, _type_spent, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_spent, _return_type):\n def __init__(self,name:_type_name,max_passes:_type_max_passes,spent:_type_spent=_dflt_spent)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'max_passes',max_passes)\n  __dataclass_builtins_object__.__setattr__(self,'spent',spent)\n return __init__": f214,
+    "def __create_fn__(_type_name, _type_plane, _type_vertices, _type_limits, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_limits, _dflt_forbid, _dflt_point, _return_type):\n def __init__(self,name:_type_name,plane:_type_plane,vertices:_type_vertices,limits:_type_limits=_dflt_limits,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'plane',plane)\n  __dataclass_builtins_object__.__setattr__(self,'vertices',vertices)\n  __dataclass_builtins_object__.__setattr__(self,'limits',limits)\n  __dataclass_builtins_object__.__setattr__(self,'forbid',forbid)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n return __init__": f215,
+    "def __create_fn__(_type_name, _type_pulse, _type_rapid_mm_min, _type_max_feed_mm_min, _type_rotary, _type_accel_mm_s2, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotary, _dflt_accel_mm_s2, _return_type):\n def __init__(self,name:_type_name,pulse:_type_pulse,rapid_mm_min:_type_rapid_mm_min,max_feed_mm_min:_type_max_feed_mm_min,rotary:_type_rotary=_dflt_rotary,accel_mm_s2:_type_accel_mm_s2=_dflt_accel_mm_s2)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'pulse',pulse)\n  __dataclass_builtins_object__.__setattr__(self,'rapid_mm_min',rapid_mm_min)\n  __dataclass_builtins_object__.__setattr__(self,'max_feed_mm_min',max_feed_mm_min)\n  __dataclass_builtins_object__.__setattr__(self,'rotary',rotary)\n  __dataclass_builtins_object__.__setattr__(self,'accel_mm_s2',accel_mm_s2)\n return __init__": f216,
+    "def __create_fn__(_type_name, _type_reference_axis, _type_limited_axis, _type_start, _type_regions, _type_forbid, _type_point, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_forbid, _dflt_point, _return_type):\n def __init__(self,name:_type_name,reference_axis:_type_reference_axis,limited_axis:_type_limited_axis,start:_type_start,regions:_type_regions,forbid:_type_forbid=_dflt_forbid,point:_type_point=_dflt_point)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'reference_axis',reference_axis)\n  __dataclass_builtins_object__.__setattr__(self,'limited_axis',limited_axis)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'regions',regions)\n  __dataclass_builtins_object__.__setattr__(self,'forbid',forbid)\n  __dataclass_builtins_object__.__setattr__(self,'point',point)\n return __init__": f217,
+    "def __create_fn__(_type_name, _type_units, _type_axes, _type_rapid_mode, _type_monitor_period_ms, _type_reference, _type_start, _type_offsets, _type_tool_lengths, _type_allowed, _type_modal, _type_tool_axis, _type_source, _type_warnings, _type_sections, _type_cutter_compensation, _type_tool_diameters, _type_sha256, _type_dialect, _type_fanuc, _type_block_delete, _type_arc_tolerance, _type_path_mode, _type_path_tolerance, _type_machine_type, _type_diameter_axes, _type_tool_offsets, _type_tool_length_wear, _type_tool_radius_wear, _type_control_units, _type_tool_change_quill_up, _type_tool_change_at_g30, _type_tool_change_position, _type_subroutine_path, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_modal, _dflt_tool_axis, _dflt_source, _dflt_warnings, _dflt_sections, _dflt_cutter_compensation, _dflt_tool_diameters, _dflt_sha256, _dflt_dialect, _dflt_fanuc, _dflt_block_delete, _dflt_arc_tolerance, _dflt_path_mode, _dflt_path_tolerance, _dflt_machine_type, _dflt_diameter_axes, _dflt_tool_offsets, _dflt_tool_length_wear, _dflt_tool_radius_wear, _dflt_control_units, _dflt_tool_change_quill_up, _dflt_tool_change_at_g30, _dflt_tool_change_position, _dflt_subroutine_path, _return_type):\n def __init__(self,name:_type_name,units:_type_units,axes:_type_axes,rapid_mode:_type_rapid_mode,monitor_period_ms:_type_monitor_period_ms,reference:_type_reference,start:_type_start,offsets:_type_offsets,tool_lengths:_type_tool_lengths,allowed:_type_allowed,modal:_type_modal=_dflt_modal,tool_axis:_type_tool_axis=_dflt_tool_axis,source:_type_source=_dflt_source,warnings:_type_warnings=_dflt_warnings,sections:_type_sections=_HAS_DEFAULT_FACTORY,cutter_compensation:_type_cutter_compensation=_dflt_cutter_compensation,tool_diameters:_type_tool_diameters=_HAS_DEFAULT_FACTORY,sha256:_type_sha256=_dflt_sha256,dialect:_type_dialect=_dflt_dialect,fanuc:_type_fanuc=_HAS_DEFAULT_FACTORY,block_delete:_type_block_delete=_dflt_block_delete,arc_tolerance:_type_arc_tolerance=_dflt_arc_tolerance,path_mode:_type_path_mode=_dflt_path_mode,path_tolerance:_type_path_tolerance=_dflt_path_tolerance,machine_type:_type_machine_type=_dflt_machine_type,diameter_axes:_type_diameter_axes=_dflt_diameter_axes,tool_offsets:_type_tool_offsets=_HAS_DEFAULT_FACTORY,tool_length_wear:_type_tool_length_wear=_HAS_DEFAULT_FACTORY,tool_radius_wear:_type_tool_radius_wear=_HAS_DEFAULT_FACTORY,control_units:_type_control_units=_dflt_control_units,tool_change_quill_up:_type_tool_change_quill_up=_dflt_tool_change_quill_up,tool_change_at_g30:_type_tool_change_at_g30=_dflt_tool_change_at_g30,tool_change_position:_type_tool_change_position=_HAS_DEFAULT_FACTORY,subroutine_path:_type_subroutine_path=_dflt_subroutine_path)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'units',units)\n  __dataclass_builtins_object__.__setattr__(self,'axes',axes)\n  __dataclass_builtins_object__.__setattr__(self,'rapid_mode',rapid_mode)\n  __dataclass_builtins_object__.__setattr__(self,'monitor_period_ms',monitor_period_ms)\n  __dataclass_builtins_object__.__setattr__(self,'reference',reference)\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'offsets',offsets)\n  __dataclass_builtins_object__.__setattr__(self,'tool_lengths',tool_lengths)\n  __dataclass_builtins_object__.__setattr__(self,'allowed',allowed)\n  __dataclass_builtins_object__.__setattr__(self,'modal',modal)\n  __dataclass_builtins_object__.__setattr__(self,'tool_axis',tool_axis)\n  __dataclass_builtins_object__.__setattr__(self,'source',source)\n  __dataclass_builtins_object__.__setattr__(self,'warnings',warnings)\n  __dataclass_builtins_object__.__setattr__(self,'sections',_dflt_sections() if sections is _HAS_DEFAULT_FACTORY else sections)\n  __dataclass_builtins_object__.__setattr__(self,'cutter_compensation',cutter_compensation)\n  __dataclass_builtins_object__.__setattr__(self,'tool_diameters',_dflt_tool_diameters() if tool_diameters is _HAS_DEFAULT_FACTORY else tool_diameters)\n  __dataclass_builtins_object__.__setattr__(self,'sha256',sha256)\n  __dataclass_builtins_object__.__setattr__(self,'dialect',dialect)\n  __dataclass_builtins_object__.__setattr__(self,'fanuc',_dflt_fanuc() if fanuc is _HAS_DEFAULT_FACTORY else fanuc)\n  __dataclass_builtins_object__.__setattr__(self,'block_delete',block_delete)\n  __dataclass_builtins_object__.__setattr__(self,'arc_tolerance',arc_tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'path_mode',path_mode)\n  __dataclass_builtins_object__.__setattr__(self,'path_tolerance',path_tolerance)\n  __dataclass_builtins_object__.__setattr__(self,'machine_type',machine_type)\n  __dataclass_builtins_object__.__setattr__(self,'diameter_axes',diameter_axes)\n  __dataclass_builtins_object__.__setattr__(self,'tool_offsets',_dflt_tool_offsets() if tool_offsets is _HAS_DEFAULT_FACTORY else tool_offsets)\n  __dataclass_builtins_object__.__setattr__(self,'tool_length_wear',_dflt_tool_length_wear() if tool_length_wear is _HAS_DEFAULT_FACTORY else tool_length_wear)\n  __dataclass_builtins_object__.__setattr__(self,'tool_radius_wear',_dflt_tool_radius_wear() if tool_radius_wear is _HAS_DEFAULT_FACTORY else tool_radius_wear)\n  __dataclass_builtins_object__.__setattr__(self,'control_units',control_units)\n  __dataclass_builtins_object__.__setattr__(self,'tool_change_quill_up',tool_change_quill_up)\n  __dataclass_builtins_object__.__setattr__(self,'tool_change_at_g30',tool_change_at_g30)\n  __dataclass_builtins_object__.__setattr__(self,'tool_change_position',_dflt_tool_change_position() if tool_change_position is _HAS_DEFAULT_FACTORY else tool_change_position)\n  __dataclass_builtins_object__.__setattr__(self,'subroutine_path',subroutine_path)\n return __init__": f218,
+    "def __create_fn__(_type_number, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,number:_type_number)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n return __init__": f219,
+    "def __create_fn__(_type_number, _type_geometry, _type_wear, _type_nose_radius, _type_wear_radius, _type_tip, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_geometry, _dflt_wear, _dflt_nose_radius, _dflt_wear_radius, _dflt_tip, _return_type):\n def __init__(self,number:_type_number,geometry:_type_geometry=_dflt_geometry,wear:_type_wear=_dflt_wear,nose_radius:_type_nose_radius=_dflt_nose_radius,wear_radius:_type_wear_radius=_dflt_wear_radius,tip:_type_tip=_dflt_tip)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'geometry',geometry)\n  __dataclass_builtins_object__.__setattr__(self,'wear',wear)\n  __dataclass_builtins_object__.__setattr__(self,'nose_radius',nose_radius)\n  __dataclass_builtins_object__.__setattr__(self,'wear_radius',wear_radius)\n  __dataclass_builtins_object__.__setattr__(self,'tip',tip)\n return __init__": f220,
+    "def __create_fn__(_type_offsets, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,offsets:_type_offsets)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'offsets',offsets)\n return __init__": f221,
+    "def __create_fn__(_type_p0, _type_p1, _type_tau0, _type_tau1, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tau0, _dflt_tau1, _return_type):\n def __init__(self,p0:_type_p0,p1:_type_p1,tau0:_type_tau0=_dflt_tau0,tau1:_type_tau1=_dflt_tau1)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'p0',p0)\n  __dataclass_builtins_object__.__setattr__(self,'p1',p1)\n  __dataclass_builtins_object__.__setattr__(self,'tau0',tau0)\n  __dataclass_builtins_object__.__setattr__(self,'tau1',tau1)\n return __init__": f222,
+    "def __create_fn__(_type_p0, _type_p1, _type_turns, _type_x_off, _type_c_entry, _type_arc, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_arc, _return_type):\n def __init__(self,p0:_type_p0,p1:_type_p1,turns:_type_turns,x_off:_type_x_off,c_entry:_type_c_entry,arc:_type_arc=_dflt_arc)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'p0',p0)\n  __dataclass_builtins_object__.__setattr__(self,'p1',p1)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'x_off',x_off)\n  __dataclass_builtins_object__.__setattr__(self,'c_entry',c_entry)\n  __dataclass_builtins_object__.__setattr__(self,'arc',arc)\n return __init__": f223,
+    "def __create_fn__(_type_start, _type_end, _type_turns, _type_x_off, _type_c_entry, _type_linear_axis, _type_rotary_axis, _type_grid, _type_arc, _type_centre, _type_radius, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_centre, _dflt_radius, _return_type):\n def __init__(self,start:_type_start,end:_type_end,turns:_type_turns,x_off:_type_x_off,c_entry:_type_c_entry,linear_axis:_type_linear_axis,rotary_axis:_type_rotary_axis,grid:_type_grid,arc:_type_arc,centre:_type_centre=_dflt_centre,radius:_type_radius=_dflt_radius)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'start',start)\n  __dataclass_builtins_object__.__setattr__(self,'end',end)\n  __dataclass_builtins_object__.__setattr__(self,'turns',turns)\n  __dataclass_builtins_object__.__setattr__(self,'x_off',x_off)\n  __dataclass_builtins_object__.__setattr__(self,'c_entry',c_entry)\n  __dataclass_builtins_object__.__setattr__(self,'linear_axis',linear_axis)\n  __dataclass_builtins_object__.__setattr__(self,'rotary_axis',rotary_axis)\n  __dataclass_builtins_object__.__setattr__(self,'grid',grid)\n  __dataclass_builtins_object__.__setattr__(self,'arc',arc)\n  __dataclass_builtins_object__.__setattr__(self,'centre',centre)\n  __dataclass_builtins_object__.__setattr__(self,'radius',radius)\n return __init__": f224,
+    "def __create_fn__(_type_status, _type_values, _type_approximate, _type_stopped, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_approximate, _dflt_stopped, _return_type):\n def __init__(self,status:_type_status,values:_type_values,approximate:_type_approximate=_dflt_approximate,stopped:_type_stopped=_dflt_stopped)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'status',status)\n  __dataclass_builtins_object__.__setattr__(self,'values',values)\n  __dataclass_builtins_object__.__setattr__(self,'approximate',approximate)\n  __dataclass_builtins_object__.__setattr__(self,'stopped',stopped)\n return __init__": f225,
+    "def __create_fn__(_type_summary, _type_configure, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,summary:_type_summary,configure:_type_configure)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'summary',summary)\n  __dataclass_builtins_object__.__setattr__(self,'configure',configure)\n return __init__": f226,
+    "def __create_fn__(_type_swap, _type_sc, _type_sh, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _return_type):\n def __init__(self,swap:_type_swap,sc:_type_sc,sh:_type_sh)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'swap',swap)\n  __dataclass_builtins_object__.__setattr__(self,'sc',sc)\n  __dataclass_builtins_object__.__setattr__(self,'sh',sh)\n return __init__": f227,
+    "def __create_fn__(_type_text, _type_name, _type_sha256, _type_path, _type_notes, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_path, _dflt_notes, _return_type):\n def __init__(self,text:_type_text,name:_type_name,sha256:_type_sha256,path:_type_path=_dflt_path,notes:_type_notes=_dflt_notes)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'text',text)\n  __dataclass_builtins_object__.__setattr__(self,'name',name)\n  __dataclass_builtins_object__.__setattr__(self,'sha256',sha256)\n  __dataclass_builtins_object__.__setattr__(self,'path',path)\n  __dataclass_builtins_object__.__setattr__(self,'notes',notes)\n return __init__": f228,
+    "def __create_fn__(_type_upto, _type_min, _type_max, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_min, _dflt_max, _return_type):\n def __init__(self,upto:_type_upto,min:_type_min=_dflt_min,max:_type_max=_dflt_max)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'upto',upto)\n  __dataclass_builtins_object__.__setattr__(self,'min',min)\n  __dataclass_builtins_object__.__setattr__(self,'max',max)\n return __init__": f229,
+    "def __create_fn__(_type_value, _type_deps, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_deps, _return_type):\n def __init__(self,value:_type_value,deps:_type_deps=_HAS_DEFAULT_FACTORY)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'value',value)\n  __dataclass_builtins_object__.__setattr__(self,'deps',_dflt_deps() if deps is _HAS_DEFAULT_FACTORY else deps)\n return __init__": f230,
+    "def __create_fn__(_type_verdict, _type_violations, _type_reasons, _type_engines, _type_solver, _type_solver_version, _type_timings, _type_notes, _type_stats, _type_margin, _type_params, _type_engine, _type_truncated, _type_file, _type_extra, _type_program_sha256, _type_machine_name, _type_machine_file, _type_machine_sha256, _type_settings, _type_interrupted, _type_budget_s, _type_profile, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violations, _dflt_reasons, _dflt_engines, _dflt_solver, _dflt_solver_version, _dflt_timings, _dflt_notes, _dflt_stats, _dflt_margin, _dflt_params, _dflt_engine, _dflt_truncated, _dflt_file, _dflt_extra, _dflt_program_sha256, _dflt_machine_name, _dflt_machine_file, _dflt_machine_sha256, _dflt_settings, _dflt_interrupted, _dflt_budget_s, _dflt_profile, _return_type):\n def __init__(self,verdict:_type_verdict,violations:_type_violations=_dflt_violations,reasons:_type_reasons=_dflt_reasons,engines:_type_engines=_dflt_engines,solver:_type_solver=_dflt_solver,solver_version:_type_solver_version=_dflt_solver_version,timings:_type_timings=_dflt_timings,notes:_type_notes=_dflt_notes,stats:_type_stats=_dflt_stats,margin:_type_margin=_dflt_margin,params:_type_params=_dflt_params,engine:_type_engine=_dflt_engine,truncated:_type_truncated=_dflt_truncated,file:_type_file=_dflt_file,extra:_type_extra=_HAS_DEFAULT_FACTORY,program_sha256:_type_program_sha256=_dflt_program_sha256,machine_name:_type_machine_name=_dflt_machine_name,machine_file:_type_machine_file=_dflt_machine_file,machine_sha256:_type_machine_sha256=_dflt_machine_sha256,settings:_type_settings=_dflt_settings,interrupted:_type_interrupted=_dflt_interrupted,budget_s:_type_budget_s=_dflt_budget_s,profile:_type_profile=_HAS_DEFAULT_FACTORY)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'verdict',verdict)\n  __dataclass_builtins_object__.__setattr__(self,'violations',violations)\n  __dataclass_builtins_object__.__setattr__(self,'reasons',reasons)\n  __dataclass_builtins_object__.__setattr__(self,'engines',engines)\n  __dataclass_builtins_object__.__setattr__(self,'solver',solver)\n  __dataclass_builtins_object__.__setattr__(self,'solver_version',solver_version)\n  __dataclass_builtins_object__.__setattr__(self,'timings',timings)\n  __dataclass_builtins_object__.__setattr__(self,'notes',notes)\n  __dataclass_builtins_object__.__setattr__(self,'stats',stats)\n  __dataclass_builtins_object__.__setattr__(self,'margin',margin)\n  __dataclass_builtins_object__.__setattr__(self,'params',params)\n  __dataclass_builtins_object__.__setattr__(self,'engine',engine)\n  __dataclass_builtins_object__.__setattr__(self,'truncated',truncated)\n  __dataclass_builtins_object__.__setattr__(self,'file',file)\n  __dataclass_builtins_object__.__setattr__(self,'extra',_dflt_extra() if extra is _HAS_DEFAULT_FACTORY else extra)\n  __dataclass_builtins_object__.__setattr__(self,'program_sha256',program_sha256)\n  __dataclass_builtins_object__.__setattr__(self,'machine_name',machine_name)\n  __dataclass_builtins_object__.__setattr__(self,'machine_file',machine_file)\n  __dataclass_builtins_object__.__setattr__(self,'machine_sha256',machine_sha256)\n  __dataclass_builtins_object__.__setattr__(self,'settings',settings)\n  __dataclass_builtins_object__.__setattr__(self,'interrupted',interrupted)\n  __dataclass_builtins_object__.__setattr__(self,'budget_s',budget_s)\n  __dataclass_builtins_object__.__setattr__(self,'profile',_dflt_profile() if profile is _HAS_DEFAULT_FACTORY else profile)\n return __init__": f231,
+    'def __create_fn__(_type_violation, _type_reason, _type_engine, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_violation, _dflt_reason, _dflt_engine, _return_type):\n def __init__(self,violation:_type_violation=_dflt_violation,reason:_type_reason=_dflt_reason,engine:_type_engine=_dflt_engine)->_return_type:\n  self.violation=violation\n  self.reason=reason\n  self.engine=engine\n return __init__': f232,
+    "def __create_fn__(_type_words, _type_span, _type_index, _type_number, _type_messages, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _return_type):\n def __init__(self,words:_type_words,span:_type_span,index:_type_index,number:_type_number=_dflt_number,messages:_type_messages=_dflt_messages)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'index',index)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'messages',messages)\n return __init__": f233,
+    "def __create_fn__(_type_words, _type_span, _type_index, _type_number, _type_messages, _type_shape, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_number, _dflt_messages, _dflt_shape, _return_type):\n def __init__(self,words:_type_words,span:_type_span,index:_type_index,number:_type_number=_dflt_number,messages:_type_messages=_dflt_messages,shape:_type_shape=_dflt_shape)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'words',words)\n  __dataclass_builtins_object__.__setattr__(self,'span',span)\n  __dataclass_builtins_object__.__setattr__(self,'index',index)\n  __dataclass_builtins_object__.__setattr__(self,'number',number)\n  __dataclass_builtins_object__.__setattr__(self,'messages',messages)\n  __dataclass_builtins_object__.__setattr__(self,'shape',shape)\n return __init__": f234,
+    "def __create_fn__(_type_work, _type_offset, _type_rotation, _type_diameter, _type_inch, _type_opaque, _type_work_offset, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_rotation, _dflt_diameter, _dflt_inch, _dflt_opaque, _dflt_work_offset, _return_type):\n def __init__(self,work:_type_work,offset:_type_offset,rotation:_type_rotation=_dflt_rotation,diameter:_type_diameter=_dflt_diameter,inch:_type_inch=_dflt_inch,opaque:_type_opaque=_dflt_opaque,work_offset:_type_work_offset=_dflt_work_offset)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'work',work)\n  __dataclass_builtins_object__.__setattr__(self,'offset',offset)\n  __dataclass_builtins_object__.__setattr__(self,'rotation',rotation)\n  __dataclass_builtins_object__.__setattr__(self,'diameter',diameter)\n  __dataclass_builtins_object__.__setattr__(self,'inch',inch)\n  __dataclass_builtins_object__.__setattr__(self,'opaque',opaque)\n  __dataclass_builtins_object__.__setattr__(self,'work_offset',work_offset)\n return __init__": f235,
+    "def __create_fn__(_type_zones, _type_tool_axis, MISSING, _HAS_DEFAULT_FACTORY, __dataclass_builtins_object__, _dflt_tool_axis, _return_type):\n def __init__(self,zones:_type_zones,tool_axis:_type_tool_axis=_dflt_tool_axis)->_return_type:\n  __dataclass_builtins_object__.__setattr__(self,'zones',zones)\n  __dataclass_builtins_object__.__setattr__(self,'tool_axis',tool_axis)\n return __init__": f236,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',\'columns\',\'offset_bound\',\'motions\',\'lines\',\'rapids\',\'blocks\',\'start\',\'first_row\',\'row0\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f237,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',\'degrees\',\'cos\',\'sin\',\'before\',\'after\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f238,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',\'scale\',\'kind\',\'start\',\'end\',\'line\',\'block\',\'tool_length\',\'centre\',\'plane\',\'clockwise\',\'turns\',\'feed\',\'file\',\'objects\',\'dwell\',\'derived\',\'frame\',\'radius\',\'tool_register\',\'tools_known\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f239,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'axes\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f240,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'blend\',\'tolerance\',\'naive\',\'dialect\',\'code\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f241,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'block\',\'span\',\'zone\',\'point\',\'path_point\',\'parameter\',\'parameter_exact\',\'first_exit\',\'first_exit_parameter\',\'first_exit_exact\',\'depth\',\'depth_exact\',\'engine\',\'segment_kind\',\'derived\',\'kind\',\'params\',\'zones\',\'note\',\'on_path\',\'break_line\',\'break_parameter\',\'break_point\',\'leg\',\'switches\',\'exit_located\',\'frame\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f242,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'centre\',\'factors\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f243,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'centre\',\'u\',\'rho\',\'ratio\',\'sweep\',\'clockwise\',\'rho_max\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f244,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'code\',\'message\',\'span\',\'severity\',\'file\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f245,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'code\',\'reason\',\'span\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f246,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'decimal_point_input\',\'increment_system\',\'g73_retract\',\'g83_clearance\',\'boring_shift\',\'scaling_unit\',\'rotation_incremental\',\'atan_signed\',\'tool_length_motion\',\'harmless_m\',\'references\',\'variables\',\'macros\',\'gcode_system\',\'g71_depth\',\'g71_retract\',\'roughing_final_pass\',\'g73_relief_x\',\'g73_relief_z\',\'g73_divisions\',\'g74_retract\',\'thread_chamfer\',\'thread_chamfer_angle\',\'g76_finish_passes\',\'g76_tool_angle\',\'g76_min_depth\',\'g76_finish_allowance\',\'tool_offset_motion\',\'tool_offset_cancel\',\'path\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f247,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'degree\',\'knots\',\'control\',\'weights\',\'source\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f248,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'delete\',\'number\',\'oword\',\'words\',\'assigns\',\'comments\',\'percent\',\'unsupported\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f249,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'delete\',\'number\',\'program\',\'words\',\'assigns\',\'comments\',\'stmt\',\'stmt_at\',\'percent\',\'unmodelled\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f250,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'file\',\'line\',\'column\',\'end_column\',\'text\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f251,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'ca\',\'cb\',\'angle\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f252,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'radius\',\'angle\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f253,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'s\',\'e\',\'ccw\',\'full\',\'centre\',\'r_signed\',\'r2_lo\',\'r2_hi\',\'start\',\'end\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f254,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'key\',\'group\',\'lanes\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f255,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'key\',\'meaning\',\'read\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f256,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'kind\',\'end\',\'label\',\'centre\',\'clockwise\',\'dwell_s\',\'feed\',\'synced\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f257,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'axes\',\'block\',\'span\',\'tool_length\',\'feed_mm_min\',\'plane\',\'clockwise\',\'centre\',\'radius\',\'turns\',\'dwell_s\',\'derived\',\'tool_register\',\'deps_start\',\'deps_end\',\'deps_tool\',\'extra\',\'frame\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f258,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'centre\',\'clockwise\',\'line\',\'feed\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f259,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'label\',\'keyword\',\'args\',\'column\',\'end_column\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f260,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'lane\',\'g\',\'m\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f261,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'letter\',\'value\',\'span\',\'text\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f262,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'linear_axis\',\'rotary_axis\',\'cylinder_radius\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f263,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'lo\',\'hi\',\'lo_closed\',\'hi_closed\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f264,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'lo\',\'hi\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f265,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'margin\',\'params\',\'engine\',\'max_violations\',\'arc_tolerance\',\'recovery\',\'max_iterations\',\'dialect\',\'library\',\'block_delete\',\'budget_s\',\'limits\',\'tool_table\',\'tool_table_units\',\'tool_table_x_offset\',\'written\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f266,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'message\',\'span\',\'block\',\'code\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f267,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'missing\',\'on_fallback\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f268,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f269,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'lo\',\'hi\',\'written\',\'absolute\',\'lo_open\',\'hi_open\',\'centre\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f270,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'max_passes\',\'spent\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f271,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'plane\',\'vertices\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f272,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'pulse\',\'rapid_mm_min\',\'max_feed_mm_min\',\'rotary\',\'accel_mm_s2\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f273,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'reference_axis\',\'limited_axis\',\'start\',\'regions\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f274,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'name\',\'units\',\'axes\',\'rapid_mode\',\'monitor_period_ms\',\'reference\',\'start\',\'offsets\',\'tool_lengths\',\'allowed\',\'modal\',\'tool_axis\',\'source\',\'warnings\',\'sections\',\'cutter_compensation\',\'tool_diameters\',\'sha256\',\'dialect\',\'fanuc\',\'block_delete\',\'arc_tolerance\',\'path_mode\',\'path_tolerance\',\'machine_type\',\'diameter_axes\',\'tool_offsets\',\'tool_length_wear\',\'tool_radius_wear\',\'control_units\',\'tool_change_quill_up\',\'tool_change_at_g30\',\'tool_change_position\',\'subroutine_path\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f275,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'number\',\'geometry\',\'wear\',\'nose_radius\',\'wear_radius\',\'tip\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f276,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'number\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f277,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'offsets\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f278,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'tau0\',\'tau1\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f279,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'turns\',\'x_off\',\'c_entry\',\'arc\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f280,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'start\',\'end\',\'turns\',\'x_off\',\'c_entry\',\'linear_axis\',\'rotary_axis\',\'grid\',\'arc\',\'centre\',\'radius\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f281,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'status\',\'values\',\'approximate\',\'stopped\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f282,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'summary\',\'configure\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f283,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'swap\',\'sc\',\'sh\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f284,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'text\',\'name\',\'sha256\',\'path\',\'notes\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f285,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'upto\',\'min\',\'max\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f286,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'value\',\'deps\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f287,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'verdict\',\'violations\',\'reasons\',\'engines\',\'solver\',\'solver_version\',\'timings\',\'notes\',\'stats\',\'margin\',\'params\',\'engine\',\'truncated\',\'file\',\'extra\',\'program_sha256\',\'machine_name\',\'machine_file\',\'machine_sha256\',\'settings\',\'interrupted\',\'budget_s\',\'profile\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f288,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',\'shape\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f289,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f290,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'work\',\'offset\',\'rotation\',\'diameter\',\'inch\',\'opaque\',\'work_offset\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f291,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __delattr__(self,name):\n  if type(self) is cls or name in (\'zones\',\'tool_axis\',):\n   raise FrozenInstanceError(f"cannot delete field {name!r}")\n  super(cls, self).__delattr__(name)\n return __delattr__': f292,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',\'columns\',\'offset_bound\',\'motions\',\'lines\',\'rapids\',\'blocks\',\'start\',\'first_row\',\'row0\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f293,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',\'degrees\',\'cos\',\'sin\',\'before\',\'after\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f294,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',\'scale\',\'kind\',\'start\',\'end\',\'line\',\'block\',\'tool_length\',\'centre\',\'plane\',\'clockwise\',\'turns\',\'feed\',\'file\',\'objects\',\'dwell\',\'derived\',\'frame\',\'radius\',\'tool_register\',\'tools_known\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f295,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'axes\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f296,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'blend\',\'tolerance\',\'naive\',\'dialect\',\'code\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f297,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'block\',\'span\',\'zone\',\'point\',\'path_point\',\'parameter\',\'parameter_exact\',\'first_exit\',\'first_exit_parameter\',\'first_exit_exact\',\'depth\',\'depth_exact\',\'engine\',\'segment_kind\',\'derived\',\'kind\',\'params\',\'zones\',\'note\',\'on_path\',\'break_line\',\'break_parameter\',\'break_point\',\'leg\',\'switches\',\'exit_located\',\'frame\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f298,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'centre\',\'factors\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f299,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'centre\',\'u\',\'rho\',\'ratio\',\'sweep\',\'clockwise\',\'rho_max\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f300,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'code\',\'message\',\'span\',\'severity\',\'file\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f301,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'code\',\'reason\',\'span\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f302,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'decimal_point_input\',\'increment_system\',\'g73_retract\',\'g83_clearance\',\'boring_shift\',\'scaling_unit\',\'rotation_incremental\',\'atan_signed\',\'tool_length_motion\',\'harmless_m\',\'references\',\'variables\',\'macros\',\'gcode_system\',\'g71_depth\',\'g71_retract\',\'roughing_final_pass\',\'g73_relief_x\',\'g73_relief_z\',\'g73_divisions\',\'g74_retract\',\'thread_chamfer\',\'thread_chamfer_angle\',\'g76_finish_passes\',\'g76_tool_angle\',\'g76_min_depth\',\'g76_finish_allowance\',\'tool_offset_motion\',\'tool_offset_cancel\',\'path\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f303,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'degree\',\'knots\',\'control\',\'weights\',\'source\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f304,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'delete\',\'number\',\'oword\',\'words\',\'assigns\',\'comments\',\'percent\',\'unsupported\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f305,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'delete\',\'number\',\'program\',\'words\',\'assigns\',\'comments\',\'stmt\',\'stmt_at\',\'percent\',\'unmodelled\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f306,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'file\',\'line\',\'column\',\'end_column\',\'text\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f307,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'ca\',\'cb\',\'angle\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f308,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'radius\',\'angle\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f309,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'ia\',\'ib\',\'s\',\'e\',\'ccw\',\'full\',\'centre\',\'r_signed\',\'r2_lo\',\'r2_hi\',\'start\',\'end\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f310,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'key\',\'group\',\'lanes\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f311,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'key\',\'meaning\',\'read\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f312,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'kind\',\'end\',\'label\',\'centre\',\'clockwise\',\'dwell_s\',\'feed\',\'synced\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f313,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'axes\',\'block\',\'span\',\'tool_length\',\'feed_mm_min\',\'plane\',\'clockwise\',\'centre\',\'radius\',\'turns\',\'dwell_s\',\'derived\',\'tool_register\',\'deps_start\',\'deps_end\',\'deps_tool\',\'extra\',\'frame\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f314,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'kind\',\'start\',\'end\',\'centre\',\'clockwise\',\'line\',\'feed\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f315,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'label\',\'keyword\',\'args\',\'column\',\'end_column\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f316,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'lane\',\'g\',\'m\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f317,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'letter\',\'value\',\'span\',\'text\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f318,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'linear_axis\',\'rotary_axis\',\'cylinder_radius\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f319,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'lo\',\'hi\',\'lo_closed\',\'hi_closed\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f320,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'lo\',\'hi\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f321,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'margin\',\'params\',\'engine\',\'max_violations\',\'arc_tolerance\',\'recovery\',\'max_iterations\',\'dialect\',\'library\',\'block_delete\',\'budget_s\',\'limits\',\'tool_table\',\'tool_table_units\',\'tool_table_x_offset\',\'written\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f322,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'message\',\'span\',\'block\',\'code\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f323,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'missing\',\'on_fallback\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f324,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f325,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'lo\',\'hi\',\'written\',\'absolute\',\'lo_open\',\'hi_open\',\'centre\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f326,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'max_passes\',\'spent\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f327,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'plane\',\'vertices\',\'limits\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f328,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'pulse\',\'rapid_mm_min\',\'max_feed_mm_min\',\'rotary\',\'accel_mm_s2\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f329,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'reference_axis\',\'limited_axis\',\'start\',\'regions\',\'forbid\',\'point\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f330,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'name\',\'units\',\'axes\',\'rapid_mode\',\'monitor_period_ms\',\'reference\',\'start\',\'offsets\',\'tool_lengths\',\'allowed\',\'modal\',\'tool_axis\',\'source\',\'warnings\',\'sections\',\'cutter_compensation\',\'tool_diameters\',\'sha256\',\'dialect\',\'fanuc\',\'block_delete\',\'arc_tolerance\',\'path_mode\',\'path_tolerance\',\'machine_type\',\'diameter_axes\',\'tool_offsets\',\'tool_length_wear\',\'tool_radius_wear\',\'control_units\',\'tool_change_quill_up\',\'tool_change_at_g30\',\'tool_change_position\',\'subroutine_path\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f331,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'number\',\'geometry\',\'wear\',\'nose_radius\',\'wear_radius\',\'tip\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f332,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'number\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f333,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'offsets\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f334,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'tau0\',\'tau1\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f335,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'p0\',\'p1\',\'turns\',\'x_off\',\'c_entry\',\'arc\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f336,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'start\',\'end\',\'turns\',\'x_off\',\'c_entry\',\'linear_axis\',\'rotary_axis\',\'grid\',\'arc\',\'centre\',\'radius\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f337,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'status\',\'values\',\'approximate\',\'stopped\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f338,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'summary\',\'configure\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f339,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'swap\',\'sc\',\'sh\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f340,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'text\',\'name\',\'sha256\',\'path\',\'notes\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f341,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'upto\',\'min\',\'max\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f342,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'value\',\'deps\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f343,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'verdict\',\'violations\',\'reasons\',\'engines\',\'solver\',\'solver_version\',\'timings\',\'notes\',\'stats\',\'margin\',\'params\',\'engine\',\'truncated\',\'file\',\'extra\',\'program_sha256\',\'machine_name\',\'machine_file\',\'machine_sha256\',\'settings\',\'interrupted\',\'budget_s\',\'profile\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f344,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',\'shape\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f345,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'words\',\'span\',\'index\',\'number\',\'messages\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f346,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'work\',\'offset\',\'rotation\',\'diameter\',\'inch\',\'opaque\',\'work_offset\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f347,
+    'def __create_fn__(cls, FrozenInstanceError):\n def __setattr__(self,name,value):\n  if type(self) is cls or name in (\'zones\',\'tool_axis\',):\n   raise FrozenInstanceError(f"cannot assign to field {name!r}")\n  super(cls, self).__setattr__(name, value)\n return __setattr__': f348,
 }

@@ -268,7 +268,7 @@ def test_every_precompiled_pattern_is_what_re_compiles():
         pytest.skip("regexes written on another CPython 3.11 release: not used here")
     assert len(regexes.PATTERNS) >= 50
     for pattern, flags, code_flags, code, groups, groupindex, indexgroup in regexes.PATTERNS:
-        ours, fresh = _sre.compile(pattern, code_flags, list(code), groups, groupindex, indexgroup), \
+        ours, fresh = _sre.compile(pattern, code_flags, list(code), groups, dict(groupindex), indexgroup), \
             _compiler.compile(pattern, flags)
         assert ours == fresh and ours.flags == fresh.flags and ours.groups == fresh.groups, pattern
         assert ours.groupindex == fresh.groupindex, pattern
@@ -293,3 +293,12 @@ def test_a_small_verify_compiles_no_regular_expression(tmp_path):
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120)
     assert r.returncode == 0, r.stderr
     assert json.loads(r.stdout.splitlines()[-1]) == []
+
+
+def test_the_constructors_of_nczones_frozen_take_their_code_from_the_generated_module():
+    # nczones.frozen.builder makes its constructors through nczones.precompiled.make_function: no compile at
+    # start-up (issue 36); they still build what the class's own constructor builds (tests/test_frozen.py)
+    lexer, segments, shapes = (importlib.import_module(f"nczones.gcode.{m}") for m in ("lexer", "segments", "shapes"))
+    made = [segments.make_segment, lexer.make_span, lexer.make_word, vars(shapes)["_parsed_line"]]
+    assert [f.__code__.co_filename for f in made] == [functions.__file__] * 4
+    assert lexer.make_span.__name__ == "make_span" and lexer.make_word.__name__ == "make_word"
