@@ -19,7 +19,6 @@ import functools
 import json
 import os
 import re
-import shlex
 from collections.abc import Callable, Mapping
 from fractions import Fraction
 from types import MappingProxyType
@@ -785,6 +784,8 @@ def _tomllib_loads(rd: _Reader, text: str, path: str) -> dict[str, Any]:
         reason = re.sub(r"\s*\(at (?:line \d+, column \d+|end of document)\)", "", str(exc))
         foreign = _controller_configuration(text)
         if foreign is not None:  # issue 38: an INI, a $$ dump or a parameter listing given as --machine
+            import shlex  # only here (start-up)
+
             shown = path if not path.startswith("<") else "CONFIG"
             target = (os.path.splitext(os.path.basename(shown))[0] or "machine") + ".toml"
             quoted = shlex.quote(shown)
