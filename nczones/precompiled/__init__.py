@@ -74,7 +74,7 @@ def seed_patterns() -> int:
     if os.environ.get(RECORD_PATTERNS_ENV):
         _record_patterns(re)
         return 0
-    import _sre
+    import _sre  # type: ignore[import-not-found]
 
     from . import regexes
 
@@ -203,12 +203,16 @@ class _Field:
                  hash: bool | None, compare: bool, metadata: Any, kw_only: Any) -> None:  # noqa: A002
         self.default, self.default_factory, self.init, self.repr = default, default_factory, init, repr
         self.hash, self.compare, self.metadata, self.kw_only = hash, compare, metadata, kw_only
-        self.name = self.type = self.source = None
+        self.name: Any = None
+        self.type: Any = None
+        self.source: Any = None
         self.kind = _FIELD
 
     def real(self) -> Any:
         """The :class:`dataclasses.Field` ``dataclasses`` would have made for this field."""
-        import dataclasses as dc
+        import dataclasses
+
+        dc: Any = dataclasses
 
         def std(value: Any) -> Any:
             return dc.MISSING if value is MISSING else value
@@ -282,7 +286,8 @@ def _fields_of(cls: type) -> dict[str, Any]:
 def _params_of(cls: type) -> Any:
     import dataclasses
 
-    return dataclasses._DataclassParams(*_MADE[cls].params)
+    dc: Any = dataclasses
+    return dc._DataclassParams(*_MADE[cls].params)
 
 
 def _doc_of(cls: type) -> str:
@@ -306,13 +311,15 @@ def _frozen_error(message: str) -> Exception:
 def _getstate(self: Any) -> Any:
     import dataclasses
 
-    return dataclasses._dataclass_getstate(self)
+    dc: Any = dataclasses
+    return dc._dataclass_getstate(self)
 
 
 def _setstate(self: Any, state: Any) -> None:
     import dataclasses
 
-    dataclasses._dataclass_setstate(self, state)
+    dc: Any = dataclasses
+    dc._dataclass_setstate(self, state)
 
 
 def _recursive_repr(user_function: Any) -> Any:
@@ -363,7 +370,7 @@ def _pseudo(annotation: Any, cls: type) -> str | None:
     typing = sys.modules.get("typing")
     if typing:
         found = _named(annotation, cls, typing)
-        if found is typing.ClassVar or (type(found) is typing._GenericAlias  # type: ignore[attr-defined]
+        if found is typing.ClassVar or (type(found) is typing._GenericAlias
                                         and found.__origin__ is typing.ClassVar):
             return "classvar"
     dc = sys.modules.get("dataclasses")
@@ -460,7 +467,7 @@ def _init_param(f: _Field) -> str:
 def _init_fn(fields: list[_Field], std: list[_Field], kw: list[_Field], frozen: bool, has_post_init: bool,
              self_name: str, globals: dict[str, Any], slots: bool) -> Any:  # noqa: A002
     """``dataclasses._init_fn`` (the order of defaults checked beforehand by :func:`_checked`)."""
-    locals = {f"_type_{f.name}": f.type for f in fields}  # noqa: A001
+    locals: dict[str, Any] = {f"_type_{f.name}": f.type for f in fields}  # noqa: A001
     locals.update({"MISSING": MISSING, "_HAS_DEFAULT_FACTORY": _HAS_DEFAULT_FACTORY,
                    "__dataclass_builtins_object__": object})
     body_lines = [line for f in fields if (line := _field_init(f, frozen, locals, self_name, slots))]
@@ -600,10 +607,11 @@ def _add_slots(cls: type, is_frozen: bool, weakref_slot: bool, field_names: tupl
     if qualname is not None:
         cls.__qualname__ = qualname
     if is_frozen:
+        made: Any = cls
         if "__getstate__" not in cls_dict:
-            cls.__getstate__ = _getstate  # type: ignore[attr-defined]
+            made.__getstate__ = _getstate
         if "__setstate__" not in cls_dict:
-            cls.__setstate__ = _setstate  # type: ignore[attr-defined]
+            made.__setstate__ = _setstate
     return cls
 
 
@@ -647,20 +655,21 @@ def _standard(cls: type, options: dict[str, Any]) -> type:
     """``dataclasses.dataclass(cls, **options)``, our :func:`field` stand-ins made real first."""
     import dataclasses
 
+    dc: Any = dataclasses
     for name, value in list(cls.__dict__.items()):
         if isinstance(value, _Field):
-            setattr(cls, name, value.source or dataclasses.field(
-                **{k: (dataclasses.MISSING if getattr(value, k) is MISSING else getattr(value, k))
-                   for k in ("default", "default_factory", "init", "repr", "hash", "compare", "metadata",
-                             "kw_only")}))
+            given: dict[str, Any] = {k: (dc.MISSING if getattr(value, k) is MISSING else getattr(value, k))
+                                     for k in ("default", "default_factory", "init", "repr", "hash", "compare",
+                                               "metadata", "kw_only")}
+            setattr(cls, name, value.source or dc.field(**given))
     if not ENABLED:
-        return dataclasses.dataclass(cls, **options)  # type: ignore[no-any-return]
-    original = dataclasses._create_fn
-    dataclasses._create_fn = _std_create_fn
+        return dc.dataclass(cls, **options)  # type: ignore[no-any-return]
+    original = dc._create_fn
+    dc._create_fn = _std_create_fn
     try:
-        return dataclasses.dataclass(cls, **options)  # type: ignore[no-any-return]
+        return dc.dataclass(cls, **options)  # type: ignore[no-any-return]
     finally:
-        dataclasses._create_fn = original
+        dc._create_fn = original
 
 
 if TYPE_CHECKING:

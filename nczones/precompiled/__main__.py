@@ -100,7 +100,7 @@ def patterns() -> list[tuple[str, str, int]]:
 def regex_source(found: list[tuple[str, str, int]]) -> str:
     """The text of :mod:`nczones.precompiled.regexes`: for each pattern, what ``re._compiler.compile`` gives
     ``_sre.compile`` (on this interpreter)."""
-    import _sre
+    import _sre  # type: ignore[import-not-found]
     from re import _compiler, _parser  # type: ignore[attr-defined]
 
     rows = []
