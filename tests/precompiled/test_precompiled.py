@@ -9,6 +9,7 @@ and every class of the modules that use the decorator took its functions from it
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import importlib
 import json
@@ -302,3 +303,50 @@ def test_the_constructors_of_nczones_frozen_take_their_code_from_the_generated_m
     made = [segments.make_segment, lexer.make_span, lexer.make_word, vars(shapes)["_parsed_line"]]
     assert [f.__code__.co_filename for f in made] == [functions.__file__] * 4
     assert lexer.make_span.__name__ == "make_span" and lexer.make_word.__name__ == "make_word"
+
+
+def _shape(cls: type) -> dict:
+    """What a dataclass is, for comparing two made from one body: attributes, generated code, fields, params."""
+    own = dict(vars(cls))
+    # (__getstate__/__setstate__ of a frozen slotted class: ours call dataclasses' when a pickle needs them)
+    code = {k: _codes(getattr(v, "__wrapped__", v).__code__) for k, v in own.items()
+            if isinstance(v, types.FunctionType) and k not in ("__getstate__", "__setstate__")}
+    return {"keys": sorted(own), "code": code, "hash": own.get("__hash__", "absent") is None,
+            "match": own.get("__match_args__"), "slots": own.get("__slots__"), "doc": cls.__doc__,
+            "params": repr(cls.__dataclass_params__),
+            "fields": [(f.name, f.type, f.default, f.default_factory, f.init, f.repr, f.hash, f.compare, f.kw_only)
+                       for f in dataclasses.fields(cls)]}
+
+
+@pytest.mark.parametrize("options", [
+    dict(zip(("init", "repr", "eq", "order", "unsafe_hash", "frozen", "match_args", "kw_only", "slots"), flags))
+    for flags in [(True, True, True, False, False, False, True, False, False),
+                  (False, False, True, False, True, False, False, False, False),
+                  (True, True, False, False, True, True, True, False, True),
+                  (True, False, True, True, False, True, True, True, True),
+                  (True, True, True, False, True, False, True, True, False),
+                  (True, True, False, False, False, False, True, False, True)]])
+def test_each_combination_of_options_makes_the_standard_librarys_class(options):
+    # the decorator does dataclasses._process_class's work itself: per option, the class it makes has the same
+    # attributes, the same generated code (bytecode), fields, hash, __match_args__, slots and doc
+    def sample(decorate, field):
+        @decorate(**options)
+        class Sample:
+            a: int
+            b: str = "b"
+            c: list = field(default_factory=list, hash=False)
+            d: float = field(default=0.5, compare=False, repr=False, init=False)
+
+        return Sample
+
+    ours = sample(precompiled.dataclass, precompiled.field)
+    theirs = sample(dataclasses.dataclass, dataclasses.field)
+    assert ours in vars(precompiled)["_MADE"]  # made here, not handed to dataclasses
+    assert _shape(ours) == _shape(theirs)
+    if options["init"] and options["frozen"] and options["slots"]:  # what pickle and copy call
+        x, y = ours(a=1, b="q", c=[2]), theirs(a=1, b="q", c=[2])
+        assert x.__getstate__() == y.__getstate__() == [1, "q", [2], 0.5]
+        z = object.__new__(ours)
+        z.__setstate__([3, "r", [4], 1.5])
+        assert (z.a, z.b, z.c, z.d) == (3, "r", [4], 1.5)
+        assert copy.copy(x).c is x.c and copy.deepcopy(x).c == [2]
