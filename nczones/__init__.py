@@ -8,6 +8,10 @@ motion), :mod:`nczones.zones` and :mod:`nczones.machine`, :mod:`nczones.prover`
 
 __version__ = "0.1.0"
 
+from .precompiled import seed_patterns  # noqa: E402
+
+seed_patterns()  # re.compile finds the patterns of a start-up compiled (issue 36: see nczones.precompiled)
+
 from .errors import GcodeError, InputError, InvalidArgument, MachineFileError, NczonesError  # noqa: E402
 from .exact import exact, format_decimal, parse_decimal  # noqa: E402
 from .machine import Machine, load_machine, parse_machine  # noqa: E402

@@ -27,8 +27,9 @@ its slot descriptor instead.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import fields as dataclass_fields
 from typing import Any
+
+from .precompiled import field_names, make_function  # no dataclasses import, no compile (start-up)
 
 __all__ = ["builder"]
 
@@ -54,7 +55,7 @@ def builder(cls: type, params: tuple[str, ...] | None = None, *, name: str | Non
     callable
         ``make(*values)``; ``make(*values) == cls(**fields)`` for every input.
     """
-    names = tuple(f.name for f in dataclass_fields(cls))
+    names = field_names(cls)
     if params is None:
         params = tuple(n for n in names if n not in constants)
     if sorted((*params, *constants)) != sorted(names):
@@ -63,13 +64,10 @@ def builder(cls: type, params: tuple[str, ...] | None = None, *, name: str | Non
     scope = {"_new": object.__new__, "_cls": cls}
     scope.update({f"_c_{k}": v for k, v in constants.items()})
     stores = [(n, n) for n in params] + [(n, f"_c_{n}") for n in constants]
-    args = ", ".join(params)
     if cls.__bases__ == (object,) and tuple(getattr(cls, "__slots__", ())) == names:
         scope["_draft"] = type(f"_{cls.__name__}Draft", (object,), {"__slots__": names})
-        body = [f"    o.{n} = {v}" for n, v in stores]
-        src = "\n".join([f"def make({args}):", "    o = _new(_draft)", *body, "    o.__class__ = _cls",
-                         "    return o"])
-        make = _compiled(src, scope, cls, name)
+        body = [f"o.{n} = {v}" for n, v in stores]
+        make = _compiled(params, ["o = _new(_draft)", *body, "o.__class__ = _cls", "return o"], scope, cls, name)
         try:
             sample = make(*([None] * len(params)))
             if type(sample) is cls and all(getattr(sample, n) is None for n in params):
@@ -77,14 +75,15 @@ def builder(cls: type, params: tuple[str, ...] | None = None, *, name: str | Non
         except TypeError:  # pragma: no cover - a Python that refuses the __class__ assignment
             pass
     scope.update({f"_s_{n}": getattr(cls, n).__set__ for n in names})
-    body = [f"    _s_{n}(o, {v})" for n, v in stores]
-    return _compiled("\n".join([f"def make({args}):", "    o = _new(_cls)", *body, "    return o"]), scope, cls,
-                     name)
+    body = [f"_s_{n}(o, {v})" for n, v in stores]
+    return _compiled(params, ["o = _new(_cls)", *body, "return o"], scope, cls, name)
 
 
-def _compiled(src: str, scope: dict[str, Any], cls: type, name: str | None) -> Callable[..., Any]:
-    exec(compile(src + "\n", f"<{cls.__name__} builder>", "exec"), scope)  # noqa: S102  # field names only
-    make: Callable[..., Any] = scope["make"]
+def _compiled(params: tuple[str, ...], body: list[str], scope: dict[str, Any], cls: type,
+              name: str | None) -> Callable[..., Any]:
+    """``def make(*params): body`` with globals ``scope`` (field names only), its code precompiled when the text
+    is one of :mod:`nczones.precompiled`'s (start-up, issue 36)."""
+    make: Callable[..., Any] = make_function("make", list(params), body, scope)
     make.__name__ = make.__qualname__ = name or "make"
     make.__doc__ = f"``{cls.__name__}(...)`` from {', '.join(make.__code__.co_varnames[:make.__code__.co_argcount])}."
     return make

@@ -19,9 +19,7 @@ import functools
 import json
 import os
 import re
-import shlex
 from collections.abc import Callable, Mapping
-from dataclasses import field, replace
 from fractions import Fraction
 from types import MappingProxyType
 from typing import Any
@@ -30,7 +28,7 @@ from .blockskip import format_block_delete, parse_block_delete
 from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
-from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from .precompiled import dataclass, field, field_names, replace  # start-up: no dataclasses
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
 
 __all__ = [
@@ -786,6 +784,8 @@ def _tomllib_loads(rd: _Reader, text: str, path: str) -> dict[str, Any]:
         reason = re.sub(r"\s*\(at (?:line \d+, column \d+|end of document)\)", "", str(exc))
         foreign = _controller_configuration(text)
         if foreign is not None:  # issue 38: an INI, a $$ dump or a parameter listing given as --machine
+            import shlex  # only here (start-up)
+
             shown = path if not path.startswith("<") else "CONFIG"
             target = (os.path.splitext(os.path.basename(shown))[0] or "machine") + ".toml"
             quoted = shlex.quote(shown)
@@ -1073,7 +1073,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                 Severity.WARNING,
             )
     return Machine(
-        **{f: getattr(machine, f) for f in Machine.__dataclass_fields__ if f != "warnings"},
+        **{f: getattr(machine, f) for f in field_names(Machine) if f != "warnings"},
         warnings=tuple(d for d in rd.diagnostics if d.severity is Severity.WARNING),
     )
 

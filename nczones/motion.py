@@ -31,16 +31,14 @@ the controller uses a rational enclosure far inside one pulse.
 
 from __future__ import annotations
 
-import dataclasses
 import enum
 import math
 from collections.abc import Callable, Iterator
-from dataclasses import field
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from .errors import InvalidArgument, SourceSpan
-from .precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from .precompiled import dataclass, field, field_names, replace  # start-up: no dataclasses
 
 if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to the code that builds them
     import numpy as np
@@ -538,11 +536,11 @@ class MotionChunk:
         """Rows ``a`` to ``b`` (exclusive) as a chunk of their own: every column sliced, whatever columns the
         class has (a new column cannot be forgotten by a caller), the frame and file kept."""
         if self.scale is None:
-            return dataclasses.replace(self, objects=(self.objects or ())[a:b])
-        return dataclasses.replace(self, **{
-            f.name: getattr(self, f.name)[a:b] for f in dataclasses.fields(self)
-            if f.name not in ("axes", "scale", "file", "frame", "tool_register", "tools_known")
-            and getattr(self, f.name) is not None})
+            return replace(self, objects=(self.objects or ())[a:b])
+        return replace(self, **{
+            name: getattr(self, name)[a:b] for name in field_names(type(self))
+            if name not in ("axes", "scale", "file", "frame", "tool_register", "tools_known")
+            and getattr(self, name) is not None})
 
     def segments(self, lines: dict[int, str] | None = None) -> Iterator[Segment]:
         """Per-segment views (exact Fractions); ``lines`` maps line numbers to source text."""

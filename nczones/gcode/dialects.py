@@ -16,11 +16,11 @@ G0 and G1 are in the same modal group; valid in the fanuc dialect: set dialect =
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from ..errors import GcodeError
 from ..exact import format_decimal
+from ..precompiled import replace  # dataclasses.replace without importing dataclasses (start-up)
 
 if TYPE_CHECKING:
     from . import Interpretation

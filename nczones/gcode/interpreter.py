@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -51,7 +50,7 @@ from ..motion import (
     Segment,
     SegmentKind,
 )
-from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from ..precompiled import dataclass, replace  # dataclasses' without importing it (start-up)
 from . import (  # defined in the package, which loads this module lazily
     DEFAULT_ARC_TOLERANCE,
     DEFAULT_CHUNK_SIZE,

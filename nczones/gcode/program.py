@@ -91,12 +91,11 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Collection, Generator, Iterator
 from contextvars import ContextVar
-from dataclasses import field
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, BinaryIO
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
-from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from ..precompiled import dataclass, field  # dataclasses' without importing it (start-up)
 from .blocks import LANE_FULL, Block, ShapeBlock
 from .expr import (
     EvalError,

@@ -7,16 +7,15 @@ dictionaries, added with :func:`dadd`.
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 from ..frozen import builder
 from ..motion import Segment
+from ..precompiled import field_names, replace  # dataclasses' without importing it (start-up)
 
 __all__ = ["make_segment", "dadd", "with_tool_deps"]
 
 #: ``Segment(...)`` with all fields but ``deps_tool`` positional, in order (``frame`` last), built 3x faster
 #: (see nczones.frozen).
-make_segment = builder(Segment, tuple(f for f in Segment.__dataclass_fields__ if f != "deps_tool"), deps_tool=())
+make_segment = builder(Segment, tuple(f for f in field_names(Segment) if f != "deps_tool"), deps_tool=())
 
 
 def dadd(a: dict, b: dict, sign: int = 1) -> dict:

@@ -38,11 +38,11 @@ import codecs
 import os
 import sys
 from collections.abc import Iterator
-from dataclasses import dataclass
 from typing import BinaryIO
 
 from .. import digest as hashlib  # hashlib.sha256 without loading OpenSSL (start-up)
 from ..errors import EXCERPT_CHARS, Diagnostic, GcodeError, InvalidArgument, SourceSpan
+from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
 __all__ = [
     "MAX_LINE_CHARS",

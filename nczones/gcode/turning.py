@@ -26,10 +26,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from ..motion import SegmentKind
+from ..precompiled import dataclass, replace  # start-up: no dataclasses import
 from .passes import PassGuard
 
 __all__ = ["Element", "Move", "CycleUnknown", "round_to_grid", "round_surd", "rough_cycle", "pattern_cycle",

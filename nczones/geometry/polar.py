@@ -37,7 +37,6 @@ every point of a box that does not contain the centre.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from fractions import Fraction
 from functools import lru_cache
 from typing import TYPE_CHECKING
@@ -52,6 +51,7 @@ from ..exact import (
     sin_cos_interval,
 )
 from ..motion import PolarData
+from ..precompiled import dataclass  # start-up: no dataclasses import
 
 if TYPE_CHECKING:
     from ..motion import Segment

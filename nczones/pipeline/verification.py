@@ -8,7 +8,6 @@ from __future__ import annotations
 import functools
 import time
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -16,6 +15,7 @@ from ..errors import InvalidArgument
 from ..exact import format_decimal
 from ..gcode.source import FileText, ProgramSource
 from ..machine import Machine, declares_solids
+from ..precompiled import replace  # dataclasses.replace without importing dataclasses (start-up)
 from ..prover.limits import RunLimits
 from ..prover.options import VerifyOptions
 from ..prover.profile import RunProfile

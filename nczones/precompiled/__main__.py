@@ -1,6 +1,7 @@
 """``python -m nczones.precompiled --write``: write :mod:`nczones.precompiled.functions`, the functions
-``dataclasses`` generates for the classes made with :func:`nczones.precompiled.dataclass`; ``--check``: exit 1
-when the module on disk is not what would be written (the test runs this)."""
+``dataclasses`` generates for the classes made with :func:`nczones.precompiled.dataclass`, and
+:mod:`nczones.precompiled.regexes`, the regular expressions the start-ups of :data:`SCENARIOS` compile;
+``--check``: exit 1 when a module on disk is not what would be written (the test runs this)."""
 
 from __future__ import annotations
 
@@ -11,10 +12,11 @@ import subprocess
 import sys
 from pathlib import Path
 
-from . import RECORD_ENV
+from . import RECORD_ENV, RECORD_PATTERNS_ENV
 
 PACKAGE = Path(__file__).resolve().parents[1]
 TARGET = Path(__file__).resolve().parent / "functions.py"
+REGEXES = Path(__file__).resolve().parent / "regexes.py"
 USES = re.compile(r"^from (?:\.+|nczones\.)precompiled import dataclass\b", re.M)
 
 
@@ -50,17 +52,91 @@ def source(found: list[str]) -> str:
     return "\n".join([*head, *body, "FUNCTIONS = {", *table, "}", ""])
 
 
+#: The start-ups whose regular expressions are precompiled: small verifies of each dialect and format (the
+#: double pass too), the help, a machine check (``{d}``: a scratch directory, ``{m}``: specs/machines).
+SCENARIOS = (
+    ["verify", "{d}/tiny.ngc", "--machine", "{m}/mill.toml", "--format", "json"],
+    ["verify", "{d}/tiny.ngc", "--machine", "{m}/mill.toml"],
+    ["verify", "{d}/param.ngc", "--machine", "{m}/mill.toml"],
+    ["verify", "{d}/tiny.nc", "--machine", "{m}/fanuc_mill.toml", "--format", "json"],
+    ["verify", "{d}/tiny.nc", "--machine", "{m}/fanuc_mill.toml"],
+    ["check-machine", "{m}/mill.toml"],
+    ["--help"],
+    ["verify", "--help"],
+)
+
+_RUN = """import contextlib, io, sys, json
+from nczones.cli import main
+for argv in json.loads(sys.argv[1]):
+    with contextlib.redirect_stdout(io.StringIO()):
+        try:
+            main(argv)
+        except SystemExit:
+            pass
+"""
+
+
+def patterns() -> list[tuple[str, str, int]]:
+    """(type, text, flags) of every pattern the :data:`SCENARIOS` compile, from fresh interpreters."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as d:
+        Path(d, "tiny.ngc").write_text("G21 G90\nG0 X1 Y1\nG1 X2 Y2 F100\nM2\n", encoding="utf-8")
+        Path(d, "param.ngc").write_text("G21 G90 F100\n#1 = 2.5\nG1 X[#1 * 2] Y[#1 + 1]\nM2\n", encoding="utf-8")
+        Path(d, "tiny.nc").write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n", encoding="utf-8")
+        found = set()
+        for argv in SCENARIOS:
+            args = [a.format(d=d, m=PACKAGE.parent / "specs" / "machines") for a in argv]
+            env = dict(os.environ, **{RECORD_PATTERNS_ENV: "1"})
+            r = subprocess.run([sys.executable, "-c", _RUN, json.dumps([args])], capture_output=True, text=True,
+                               env=env, cwd=d, check=True)
+            for line in r.stderr.splitlines():
+                if line.startswith('["pattern"'):
+                    kind, text, flags = json.loads(line)[1]
+                    found.add((kind, text, flags))
+    return sorted(found)
+
+
+def regex_source(found: list[tuple[str, str, int]]) -> str:
+    """The text of :mod:`nczones.precompiled.regexes`: for each pattern, what ``re._compiler.compile`` gives
+    ``_sre.compile`` (on this interpreter)."""
+    import _sre  # type: ignore[import-not-found]
+    from re import _compiler, _parser  # type: ignore[attr-defined]
+
+    rows = []
+    for kind, text, flags in found:
+        pattern: str | bytes = text if kind == "str" else text.encode("latin-1")
+        p = _parser.parse(pattern, flags)
+        code = vars(_compiler)["_code"](p, flags)  # re._compiler.compile's own steps
+        groupindex = p.state.groupdict
+        indexgroup = [None] * p.state.groups
+        for k, i in groupindex.items():
+            indexgroup[i] = k
+        rows.append(f"    ({pattern!r}, {flags}, {flags | p.state.flags}, {tuple(int(c) for c in code)!r}, {p.state.groups - 1}, "
+                    f"{tuple(groupindex.items())!r}, {tuple(indexgroup)!r}),")
+    head = ['"""The regular expressions of nczones\' start-ups, compiled (written by ``python -m nczones.precompiled',
+            '--write``; do not edit: see :func:`nczones.precompiled.seed_patterns`)."""',
+            "# ruff: noqa", "# mypy: ignore-errors", "# fmt: off", "",
+            f"HEXVERSION = {sys.hexversion:#x}", f"MAGIC = {_sre.MAGIC}", "",
+            "#: (pattern, flags, code flags, code, groups - 1, groupindex items, indexgroup): _sre.compile's arguments",
+            "#: (one constant of the module's bytecode: no dict to build at import)",
+            "PATTERNS = ("]
+    return "\n".join([*head, *rows, ")", ""])
+
+
 def main() -> int:
-    wanted = source(texts())
-    if "--write" in sys.argv:
-        TARGET.write_text(wanted, encoding="utf-8")
-        print(f"wrote {TARGET}")
-        return 0
-    current = TARGET.read_text(encoding="utf-8") if TARGET.exists() else ""
-    if current != wanted:
-        print(f"{TARGET} is not current: run python -m nczones.precompiled --write", file=sys.stderr)
-        return 1
-    return 0
+    wanted = {TARGET: source(texts()), REGEXES: regex_source(patterns())}
+    stale = 0
+    for target, text in wanted.items():
+        if "--write" in sys.argv:
+            target.write_text(text, encoding="utf-8")
+            print(f"wrote {target}")
+            continue
+        current = target.read_text(encoding="utf-8") if target.exists() else ""
+        if current != text:
+            print(f"{target} is not current: run python -m nczones.precompiled --write", file=sys.stderr)
+            stale += 1
+    return 1 if stale else 0
 
 
 if __name__ == "__main__":

@@ -28,7 +28,6 @@ from __future__ import annotations
 import time
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
@@ -44,6 +43,7 @@ from ..motion import (
     SplineCurve,
     tip_offset,
 )
+from ..precompiled import replace  # dataclasses.replace without importing dataclasses (start-up)
 from ..zones import ZonePoint, tip_shifted
 from .exact import box_fits
 from .hull2d import convex_hull, hull_fits

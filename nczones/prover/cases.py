@@ -16,12 +16,12 @@ the block-delete switch positions) into one :class:`Result`.
 
 from __future__ import annotations
 
-from dataclasses import replace
 from fractions import Fraction
 from types import MappingProxyType
 
 from ..errors import SourceSpan
 from ..machine import Machine
+from ..precompiled import replace  # dataclasses.replace without importing dataclasses (start-up)
 from .result import ParamRange, Reason, Result, Verdict, Violation
 
 __all__ = ["centred", "split_box", "merge", "MAX_CASES"]

@@ -26,12 +26,12 @@ enlarged here: the verdict is then ``unknown`` (:func:`nose_zones` returns the r
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
 from ..exact import format_decimal
 from ..machine import Machine
+from ..precompiled import replace  # dataclasses.replace without importing dataclasses (start-up)
 from ..zones import AllowedSet, BoxZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
 from ..zones.model import PolygonZone

@@ -23,7 +23,6 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterable, Mapping
-from dataclasses import field, replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -31,7 +30,7 @@ from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import exact, format_exact, parse_decimal, parse_rational
 from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 from ..machine import Machine
-from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from ..precompiled import dataclass, field, replace  # dataclasses' without importing it (start-up)
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .result import ParamRange
 

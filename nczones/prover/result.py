@@ -3,12 +3,11 @@
 from __future__ import annotations
 
 import enum
-from dataclasses import field
 from fractions import Fraction
 
 from ..errors import SourceSpan
 from ..motion import ProgramFrame
-from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from ..precompiled import dataclass, field  # dataclasses' without importing it (start-up)
 
 __all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange", "Outcome", "reason_code", "NOT_MODELLED",
            "point_program_missing"]

@@ -57,7 +57,10 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "nczones.prover.blend", "nczones.prover.hull2d", "socket", "nczones.geometry.nurbs",
                           # issue 36: OpenSSL (hashlib: the digests are CPython's own, nczones.digest), ctypes (the
                           # x87 functions load at the first SIN/COS/TAN), shutil (argparse's terminal width)
-                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids")
+                          "_hashlib", "ctypes", "shutil", "nczones.lathe_solids",
+                          # issue 36 (startup36c): dataclasses imports inspect, ast, dis, tokenize (some 10 ms); the
+                          # classes, field(), replace() and field names come from nczones.precompiled
+                          "dataclasses", "inspect", "ast", "dis", "tokenize")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -217,3 +220,18 @@ def test_the_program_exits_with_the_status_main_returns(tmp_path):
     from nczones import __version__
 
     assert r.returncode == 0 and __version__ in r.stdout
+
+
+def test_a_small_fanuc_verify_loads_neither_dataclasses_nor_pathlib(tmp_path):
+    # issue 36 (startup36c): the Fanuc modules make their classes through nczones.precompiled too, and pathlib
+    # (urllib.parse, ipaddress) is imported only for a library folder; site is left out as in the test above
+    program = tmp_path / "small.nc"
+    program.write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n")
+    machine = ROOT / "specs" / "machines" / "fanuc_mill.toml"
+    names = ("dataclasses", "inspect", "ast", "pathlib", "urllib.parse", "ipaddress", "numpy", "z3")
+    code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
+            f"assert main(['verify', {str(program)!r}, '--machine', {str(machine)!r}]) == 0\n"
+            f"print(sorted(m for m in {names!r} if m in sys.modules))")
+    r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[]"

@@ -9,8 +9,10 @@ and every class of the modules that use the decorator took its functions from it
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import importlib
+import json
 import subprocess
 import sys
 import types
@@ -140,3 +142,211 @@ def test_the_generated_module_is_current():
     r = subprocess.run([sys.executable, "-m", "nczones.precompiled", "--check"], capture_output=True, text=True,
                        cwd=ROOT, timeout=120)
     assert r.returncode == 0, r.stderr
+
+
+#: A description of every dataclass of nczones, printed as JSON by a fresh interpreter: the class's attributes,
+#: each generated function's bytecode, defaults, closure, qualified name and annotations, its fields as
+#: ``dataclasses.fields`` gives them, its parameters, doc, ``__match_args__``, slots and hash.
+DESCRIBE = r'''
+import dataclasses, importlib, json, re, sys, types
+import nczones.precompiled as p
+if sys.argv[1] == "standard":
+    p.ENABLED = False  # every class from dataclasses.dataclass itself
+from nczones.precompiled.__main__ import modules
+from tests.precompiled.test_precompiled import _codes
+
+def r(value):  # repr without addresses (the two processes' differ)
+    return re.sub(r" at 0x[0-9a-f]+", "", repr(value))
+
+def cell(name, value):
+    if name == "MISSING":  # not read by the code (dataclasses puts its own sentinel there)
+        return "MISSING"
+    if name == "FrozenInstanceError":  # what calling it gives
+        return type(value("x")).__qualname__
+    if isinstance(value, type):
+        return value.__qualname__
+    return r(value)
+
+def function(fn):
+    fn = getattr(fn, "__wrapped__", fn)
+    code = fn.__code__
+    return [r(_codes(code)), fn.__qualname__, r(fn.__defaults__), r(fn.__kwdefaults__),
+            r(fn.__annotations__),
+            [cell(n, c.cell_contents) for n, c in zip(code.co_freevars, fn.__closure__ or ())]]
+
+def field(f):
+    return [f.name, f.type, r(f.default), r(f.default_factory), f.init, f.repr, f.hash, f.compare,
+            r(f.metadata), r(f.kw_only), r(f._field_type)]
+
+out = {}
+for name in modules():
+    module = importlib.import_module(name)
+    for value in vars(module).values():
+        if isinstance(value, type) and dataclasses.is_dataclass(value) and value.__module__ == name:
+            own = dict(vars(value))
+            out[f"{name}.{value.__qualname__}"] = {
+                "keys": sorted(own),
+                "wrapped": sorted(k for k, v in own.items() if hasattr(v, "__wrapped__")),
+                "functions": {k: function(v) for k, v in own.items() if isinstance(v, types.FunctionType)
+                              and v.__module__ in (name, "dataclasses", "nczones.precompiled")
+                              and k in ("__init__", "__repr__", "__eq__", "__lt__", "__le__", "__gt__", "__ge__",
+                                        "__hash__", "__setattr__", "__delattr__")},
+                "state": [getattr(value, k, None) is not None  # ours: nczones.precompiled._getstate, the same
+                          for k in ("__getstate__", "__setstate__")],
+                "fields": [field(f) for f in value.__dataclass_fields__.values()],
+                "public": [f.name for f in dataclasses.fields(value)],
+                "params": r(value.__dataclass_params__),
+                "doc": value.__doc__, "match": r(getattr(value, "__match_args__", None)),
+                "slots": r(value.__dict__.get("__slots__")), "hash": r(value.__hash__ is None),
+                "mro": [c.__qualname__ for c in value.__mro__],
+                "defaults": {k: r(v) for k, v in own.items() if k in value.__dataclass_fields__},
+            }
+print(json.dumps(out))
+'''
+
+
+def _described(mode: str) -> dict:
+    r = subprocess.run([sys.executable, "-c", DESCRIBE, mode], capture_output=True, text=True, cwd=ROOT,
+                       timeout=120)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout)
+
+
+def test_every_class_of_nczones_is_the_class_the_standard_library_makes():
+    # nczones.precompiled makes the classes itself without importing dataclasses (start-up, issue 36); the class
+    # dataclasses.dataclass makes of the same body is the reference, attribute by attribute
+    ours, theirs = _described("precompiled"), _described("standard")
+    assert len(ours) >= 40 and ours.keys() == theirs.keys()
+    for name in ours:
+        assert ours[name] == theirs[name], name
+
+
+
+@pytest.mark.parametrize("options", [{}, {"frozen": True, "slots": True}, {"order": True, "kw_only": True}])
+def test_field_and_replace_without_dataclasses_are_the_standard_librarys(options):
+    # nczones.precompiled.field and .replace stand for dataclasses' (which a verify no longer imports): a class
+    # declared with each module's field() behaves the same, and replace() copies, changes and refuses alike
+    def sample(dataclass, field):
+        @dataclass(**options)
+        class Sample:
+            a: int
+            b: list = field(default_factory=list, compare=False)
+            c: int = field(default=3, repr=False, metadata={"unit": "mm"})
+            d: int = field(default=0, init=False)
+
+        return Sample
+
+    ours = sample(precompiled.dataclass, precompiled.field)
+    theirs = sample(dataclasses.dataclass, dataclasses.field)
+    describe = [(f.name, f.default, f.default_factory, f.init, f.repr, f.compare, dict(f.metadata), f.kw_only)
+                for f in dataclasses.fields(ours)]
+    assert describe == [(f.name, f.default, f.default_factory, f.init, f.repr, f.compare, dict(f.metadata),
+                         f.kw_only) for f in dataclasses.fields(theirs)]
+    assert precompiled.field_names(ours) == precompiled.field_names(theirs) == ("a", "b", "c", "d")
+    x, y = ours(a=1, b=[2]), theirs(a=1, b=[2])
+    assert repr(x).replace("Sample", "S") == repr(y).replace("Sample", "S")
+    for replace in (precompiled.replace, dataclasses.replace):
+        for obj in (x, y):
+            z = replace(obj, c=5)
+            assert (z.a, z.b, z.c, z.d) == (1, [2], 5, 0) and z is not obj and type(z) is type(obj)
+            with pytest.raises(ValueError, match="init=False"):
+                replace(obj, d=1)
+            with pytest.raises(TypeError):
+                replace(obj, e=1)
+    with pytest.raises(ValueError, match="both default and default_factory"):
+        precompiled.field(default=1, default_factory=list)
+
+
+def test_every_precompiled_pattern_is_what_re_compiles():
+    # nczones.precompiled.regexes holds _sre.compile's arguments for the patterns of a start-up; each must make
+    # the pattern re.compile makes (Pattern.__eq__ compares pattern, flags and code), with the same groups
+    import _sre
+    from re import _compiler
+
+    from nczones.precompiled import regexes
+
+    if regexes.HEXVERSION != sys.hexversion:
+        pytest.skip("regexes written on another CPython 3.11 release: not used here")
+    assert len(regexes.PATTERNS) >= 50
+    for pattern, flags, code_flags, code, groups, groupindex, indexgroup in regexes.PATTERNS:
+        ours, fresh = _sre.compile(pattern, code_flags, list(code), groups, dict(groupindex), indexgroup), \
+            _compiler.compile(pattern, flags)
+        assert ours == fresh and ours.flags == fresh.flags and ours.groups == fresh.groups, pattern
+        assert ours.groupindex == fresh.groupindex, pattern
+
+
+def test_a_small_verify_compiles_no_regular_expression(tmp_path):
+    # issue 36: re.compile parses in Python (~5 ms for a start-up's patterns); after `import nczones` they are
+    # in re's cache, so a small verify of either dialect (and its help) compiles none
+    (tmp_path / "p.ngc").write_text("G21 G90\nG0 X1 Y1\nG1 X2 Y2 F100\nM2\n")
+    (tmp_path / "p.nc").write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n")
+    machines = ROOT / "specs" / "machines"
+    runs = [["verify", str(tmp_path / "p.ngc"), "--machine", str(machines / "mill.toml"), "--format", "json"],
+            ["verify", str(tmp_path / "p.nc"), "--machine", str(machines / "fanuc_mill.toml")]]
+    code = ("import contextlib, io, json, sys\nimport nczones\nfrom re import _compiler\ncompiled = []\n"
+            "original = _compiler.compile\n"
+            "_compiler.compile = lambda p, flags=0: compiled.append(p) or original(p, flags)\n"
+            "from nczones.cli import main\n"
+            f"for argv in {runs!r}:\n"
+            "    with contextlib.redirect_stdout(io.StringIO()):\n"
+            "        assert main(argv) == 0\n"
+            "print(json.dumps(compiled))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout.splitlines()[-1]) == []
+
+
+def test_the_constructors_of_nczones_frozen_take_their_code_from_the_generated_module():
+    # nczones.frozen.builder makes its constructors through nczones.precompiled.make_function: no compile at
+    # start-up (issue 36); they still build what the class's own constructor builds (tests/test_frozen.py)
+    lexer, segments, shapes = (importlib.import_module(f"nczones.gcode.{m}") for m in ("lexer", "segments", "shapes"))
+    made = [segments.make_segment, lexer.make_span, lexer.make_word, vars(shapes)["_parsed_line"]]
+    assert [f.__code__.co_filename for f in made] == [functions.__file__] * 4
+    assert lexer.make_span.__name__ == "make_span" and lexer.make_word.__name__ == "make_word"
+
+
+def _shape(cls: type) -> dict:
+    """What a dataclass is, for comparing two made from one body: attributes, generated code, fields, params."""
+    own = dict(vars(cls))
+    # (__getstate__/__setstate__ of a frozen slotted class: ours call dataclasses' when a pickle needs them)
+    code = {k: _codes(getattr(v, "__wrapped__", v).__code__) for k, v in own.items()
+            if isinstance(v, types.FunctionType) and k not in ("__getstate__", "__setstate__")}
+    return {"keys": sorted(own), "code": code, "hash": own.get("__hash__", "absent") is None,
+            "match": own.get("__match_args__"), "slots": own.get("__slots__"), "doc": cls.__doc__,
+            "params": repr(cls.__dataclass_params__),
+            "fields": [(f.name, f.type, f.default, f.default_factory, f.init, f.repr, f.hash, f.compare, f.kw_only)
+                       for f in dataclasses.fields(cls)]}
+
+
+@pytest.mark.parametrize("options", [
+    dict(zip(("init", "repr", "eq", "order", "unsafe_hash", "frozen", "match_args", "kw_only", "slots"), flags))
+    for flags in [(True, True, True, False, False, False, True, False, False),
+                  (False, False, True, False, True, False, False, False, False),
+                  (True, True, False, False, True, True, True, False, True),
+                  (True, False, True, True, False, True, True, True, True),
+                  (True, True, True, False, True, False, True, True, False),
+                  (True, True, False, False, False, False, True, False, True)]])
+def test_each_combination_of_options_makes_the_standard_librarys_class(options):
+    # the decorator does dataclasses._process_class's work itself: per option, the class it makes has the same
+    # attributes, the same generated code (bytecode), fields, hash, __match_args__, slots and doc
+    def sample(decorate, field):
+        @decorate(**options)
+        class Sample:
+            a: int
+            b: str = "b"
+            c: list = field(default_factory=list, hash=False)
+            d: float = field(default=0.5, compare=False, repr=False, init=False)
+
+        return Sample
+
+    ours = sample(precompiled.dataclass, precompiled.field)
+    theirs = sample(dataclasses.dataclass, dataclasses.field)
+    assert ours in vars(precompiled)["_MADE"]  # made here, not handed to dataclasses
+    assert _shape(ours) == _shape(theirs)
+    if options["init"] and options["frozen"] and options["slots"]:  # what pickle and copy call
+        x, y = ours(a=1, b="q", c=[2]), theirs(a=1, b="q", c=[2])
+        assert x.__getstate__() == y.__getstate__() == [1, "q", [2], 0.5]
+        z = object.__new__(ours)
+        z.__setstate__([3, "r", [4], 1.5])
+        assert (z.a, z.b, z.c, z.d) == (3, "r", [4], 1.5)
+        assert copy.copy(x).c is x.c and copy.deepcopy(x).c == [2]

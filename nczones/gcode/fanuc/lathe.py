@@ -25,7 +25,6 @@ Anything the manuals define but nczones does not model is ``unknown`` with the r
 
 from __future__ import annotations
 
-from dataclasses import replace
 from fractions import Fraction
 from typing import Any
 
@@ -33,6 +32,7 @@ from ...exact import Interval, is_square
 from ...geometry.polar import CentreCrossing, atan2_deg, polar_move, walk_angle
 from ...machine import Machine, ToolOffset
 from ...motion import Plane, PolarData, SegmentKind, TipOffset, TurretTool
+from ...precompiled import replace  # start-up: no dataclasses import
 from ..blocks import Block, ShapeBlock, Word
 from ..interpreter import AXIS_LETTERS, StopProgram, dadd, fmt_number, gkey, gname, qadd
 from ..passes import PassBound

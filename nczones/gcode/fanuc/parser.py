@@ -36,10 +36,10 @@ Trees are tuples: ``(NUM, double, Fraction)``, ``(VAR, index_tree)``,
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from fractions import Fraction
 
 from ...errors import Diagnostic, GcodeError, SourceSpan
+from ...precompiled import dataclass  # start-up: no dataclasses import
 from ..lexer import decimal_value
 
 __all__ = ["NUM", "VAR", "NEG", "BIN", "FN", "FN2", "FanucLine", "parse_line", "FUNCTIONS", "LITERAL", "EXPR"]

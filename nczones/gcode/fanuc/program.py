@@ -35,14 +35,13 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Collection, Generator, Iterator
-from dataclasses import dataclass, field
 from fractions import Fraction
-from pathlib import Path
-from typing import Any, Protocol, TypeVar
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 from ...blockskip import skipped_switches
 from ...errors import Diagnostic, GcodeError, SourceSpan
 from ...machine import FanucSettings
+from ...precompiled import dataclass, field  # start-up: no dataclasses import
 from ..blocks import LANE_FULL
 from ..codes import FANUC_CANCEL_CYCLE_G, FANUC_CYCLE_G
 from ..expr import EvalError
@@ -70,6 +69,9 @@ from .expr import (
     variable_index,
 )
 from .parser import EXPR, LITERAL, NEG, NUM, VAR, FanucLine, parse_line
+
+if TYPE_CHECKING:
+    from pathlib import Path
 
 __all__ = ["iter_blocks", "FanucRunner", "LENGTH_LETTERS", "needs_language_layer", "MAX_MACRO_LEVELS",
            "MAX_CALL_DEPTH"]
@@ -226,6 +228,8 @@ class FanucRunner:
         #: the switches the main text shows, and a switch only a library program uses must be added to them
         self.seen_switches: set[int] = set()
         #: the library folders, in order (one, or several joined by os.pathsep as --library gives them)
+        if library:
+            from pathlib import Path  # only for a library (start-up: no pathlib, urllib, ipaddress)
         self.libraries: tuple[Path, ...] = tuple(Path(f) for f in os.fspath(library).split(os.pathsep) if f) \
             if isinstance(library, (str, os.PathLike)) else tuple(Path(f) for f in library or ())
         self.library = self.libraries[0] if len(self.libraries) == 1 else None

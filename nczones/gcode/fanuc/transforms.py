@@ -23,10 +23,10 @@ a combination is ``unknown``.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from fractions import Fraction
 
 from ...exact import Bounds, sin_cos_degrees
+from ...precompiled import dataclass  # start-up: no dataclasses import
 from .expr import round_to
 
 __all__ = ["Rotation", "Scaling", "Mirror", "Polar", "PointNotCertain", "TIE_GUARD", "cos_sin_enclosure",

@@ -54,11 +54,11 @@ import math
 import re
 from array import array
 from bisect import bisect_right
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from ...errors import GcodeError
+from ...precompiled import dataclass  # start-up: no dataclasses import
 from ..codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from ..expr import (
     MAX_PARAMETER,

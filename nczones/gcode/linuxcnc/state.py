@@ -57,12 +57,11 @@ Fraction(301, 1)
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import field
 from fractions import Fraction
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Protocol, Union
 
-from ...precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from ...precompiled import dataclass, field  # dataclasses' without importing it (start-up)
 from ..expr import EvalError
 
 if TYPE_CHECKING:  # pragma: no cover
