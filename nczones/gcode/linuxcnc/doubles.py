@@ -197,8 +197,9 @@ def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_w
     have been computed, ``on_window(path)`` is called with a :class:`DoublePath` of rows ``row0``..``motions`` (its counts so far)
     and those rows are dropped but the last two: windows overlap by one motion (the last motion of a
     window is the first of the next), so a check that needs a motion and the one before it finds both in
-    one window.  ``on_window`` returns False to stop the pass (it then declines).  The path returned is the
-    last window, with the whole program's counts.
+    one window.  ``on_window`` returns False to stop the pass (it then declines), or None to be handed the
+    window again one motion later (it grows: a window that cannot end at this motion, up to twice its size,
+    then the pass declines).  The path returned is the last window, with the whole program's counts.
 
     >>> from nczones.machine import parse_machine
     >>> m = parse_machine('[machine]\\naxes=["X","Y"]\\n[machine.rapid]\\nX="1000"\\nY="1000"\\n'
@@ -382,7 +383,10 @@ class _Pass:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
         if self.on_window is None:
             raise Declined(f"more than {MAX_MOTIONS} motions")
-        if not self.on_window(self._path()):
+        proved = self.on_window(self._path())
+        if proved is None and len(self.columns[0]) < 2 * self.rows:
+            return  # not at this motion: handed over again after the next (the plans call full() while full)
+        if not proved:
             raise Declined("a window of the double pass that its boxes do not prove")
         keep = len(self.columns[0]) - 2
         for col in self.columns:
