@@ -42,6 +42,11 @@ loops, a motion while the units, distance mode or work offset are still the mach
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error.
 
+The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
+layout; in a loop or sub body: the block's steps compiled once and kept, :data:`MAX_STEPS` lines at most).  A
+sub whose body has no ``#`` (no parameter read or written in it, nor in the arguments of the calls it makes)
+cannot see its call frame: it is called without one (``tests/gcode/test_double_pass_frames.py``).
+
 Invariant (``tests/gcode/test_double_pass.py``): whenever the pass returns, the full interpreter's run of
 the same program on the same machine completes with no unknown code, no error and no notes, with the same
 number of motions, and the end point of its k-th motion lies in the box of the pass's k-th row widened by
