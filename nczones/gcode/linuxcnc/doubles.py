@@ -421,7 +421,9 @@ class _Pass:
 
     def _path(self) -> DoublePath:
         """The rows held now as a path (every row, or the current window)."""
-        if not all(math.isfinite(min(col)) and math.isfinite(max(col)) for col in self.columns):
+        # a sum is finite only when every row is (an inf or nan stays one; a finite overflow declines too): one
+        # scan of a window's column, not two (min and max)
+        if not all(math.isfinite(sum(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
