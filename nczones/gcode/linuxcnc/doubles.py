@@ -568,7 +568,7 @@ class _Pass:
         out[at] = ("endsub", None, None)
 
     # -- subs and calls (as the full path's ``Runner.oword``) ----------------------------------------------
-    def _sub(self, i: int, target: tuple) -> int:
+    def _sub(self, i: int, target: tuple[int, Any]) -> int:
         """A sub definition reached: noted (its body's first line and its endsub's), on past its endsub."""
         after, label = target
         if label in self.subs:  # reached again (the full path reports it)
@@ -611,7 +611,7 @@ class _Pass:
             raise Declined("an endsub outside a call")
         ret, saved, label, named = self.calls.pop()
         self.open.discard(label)
-        if saved is not None:
+        if saved is not None and named is not None:
             S, N = self.S, self.N
             for k in S.keys() & _SUB_KEYS:
                 del S[k]
