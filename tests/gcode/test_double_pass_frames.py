@@ -13,6 +13,10 @@ Whenever the pass returns, the full interpreter's run agrees with it (``check_ag
 from __future__ import annotations
 
 import os
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -22,6 +26,7 @@ from nczones.gcode.linuxcnc.doubles import MAX_CALLS, Declined, double_pass
 from nczones.machine import parse_machine
 from nczones.pipeline import verification
 from nczones.prover import Verdict, verify_text
+from tests.oracles.rs274 import canon_motion
 
 from .test_double_pass import MACHINE, check_against_full, machine_text
 
@@ -173,3 +178,46 @@ def test_verify_of_plain_and_parametric_subs_in_a_loop(monkeypatch, reps, into):
     assert dict(routed.stats)["segments"] == dict(full.stats)["segments"] or into
     if not into:
         assert (routed.profile or {}).get("double_pass", {}).get("motions") == 3 * reps
+
+
+def _as_rs274(text: str, examples: list[int]) -> None:
+    """The pass's rows against ``rs274 -g``'s log (its own HOME: the tool table file), 4 printed decimals."""
+    path = double_pass(text, MACHINE, max_iterations=1000)
+    with tempfile.TemporaryDirectory() as tmp:
+        Path(tmp, "prog.ngc").write_text(text)
+        run = subprocess.run(["rs274", "-g", "prog.ngc"], cwd=tmp, env={**os.environ, "HOME": tmp},
+                             capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=30, check=False)
+    moves = [m.end[:3] for m in canon_motion(run.stdout) if m.kind in ("RAPID", "LINE")]
+    rows = list(zip(*(list(c) for c in path.columns)))[1:]
+    assert len(moves) == len(rows), (run.stderr, text)
+    for k, (move, row) in enumerate(zip(moves, rows)):
+        # the machine is G54 at 0 and mm: rs274's program coordinates are the rows, to its printed 0.0001
+        assert all(abs(float(a) - b) <= 0.0001 for a, b in zip(move, row)), (k, move, row, text)
+    examples.append(1)
+
+
+RS274 = pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC's rs274 is not installed")
+
+
+@RS274
+@settings(max_examples=15, deadline=None, derandomize=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(frame_programs())
+def test_frames_in_the_pass_as_rs274_runs_them(text):
+    _as_rs274(text, [])
+
+
+@RS274
+@pytest.mark.long
+def test_frames_in_the_pass_as_rs274_runs_them_long():
+    """1,000 generated programs (specs/contract.md, "Call frames in the double pass against rs274")."""
+    done: list[int] = []
+
+    @settings(max_examples=1000, deadline=None, database=None,
+              suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+    @given(frame_programs())
+    def each(text):
+        _as_rs274(text, done)
+
+    each()
+    assert len(done) == 1000
