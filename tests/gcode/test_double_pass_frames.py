@@ -22,6 +22,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+import nczones.gcode.linuxcnc.doubles as doubles
 from nczones.gcode.linuxcnc.doubles import MAX_CALLS, Declined, double_pass
 from nczones.machine import parse_machine
 from nczones.pipeline import verification
@@ -104,6 +105,20 @@ def frame_programs(draw) -> str:
 @given(frame_programs())
 def test_frames_in_the_pass_agree_with_the_full_interpreter(text):
     check_against_full(text, MACHINE)
+
+
+@settings(max_examples=20, deadline=None, derandomize=True,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
+                                 HealthCheck.function_scoped_fixture])
+@given(frame_programs(), st.integers(0, 3))
+def test_bodies_kept_in_part_give_the_same_rows(monkeypatch, text, kept):
+    # at most MAX_STEPS lines of bodies are kept compiled; past them a block's lines are compiled at each run
+    whole = double_pass(text, MACHINE, max_iterations=1000)
+    with monkeypatch.context() as m:
+        m.setattr(doubles, "MAX_STEPS", kept)
+        part = double_pass(text, MACHINE, max_iterations=1000)
+    assert [list(c) for c in part.columns] == [list(c) for c in whole.columns]
+    assert (part.motions, part.blocks, part.rapids) == (whole.motions, whole.blocks, whole.rapids)
 
 
 @settings(max_examples=20, deadline=None, derandomize=True,

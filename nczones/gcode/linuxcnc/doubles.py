@@ -398,24 +398,24 @@ class _Pass:
 
     def _block(self, i: int, end: int, blocks: dict[int, tuple]) -> int:
         """Run lines ``i``..``end - 1`` of a loop or sub body (they run again): their steps compiled once and kept
-        in ``blocks`` while they hold at most :data:`MAX_STEPS` lines (past that, compiled again at each run, so
-        memory stays flat however long a body is); the next line, or -1 when the program ended."""
-        block = blocks.get(i)
-        if block is None:
+        in ``blocks`` while the pass keeps at most :data:`MAX_STEPS` lines (the lines past that are compiled again
+        at each run, so memory stays flat however long a body is); the next line, or -1 when the program ended."""
+        got = blocks.get(i)
+        if got is None:
+            cut = min(end, i + max(0, MAX_STEPS - self.kept))
             try:
-                steps = [self._step(j) for j in range(i, end)] if end - i <= MAX_STEPS - self.kept else None
+                steps = [self._step(j) for j in range(i, cut)]
             except Declined:  # a line the pass does not follow: declined when it is reached (an M2 may end first)
-                steps = None
-            if steps is None:
-                for j in range(i, end):
-                    fn, parts = self._step(j)
-                    if fn is not None and fn(parts):
-                        return -1
-                return end
-            block = blocks[i] = tuple(step for step in steps if step[0] is not None)
-            self.kept += end - i
+                steps, cut = [], i
+            got = blocks[i] = (tuple(step for step in steps if step[0] is not None), cut)
+            self.kept += cut - i
+        block, cut = got
         for fn, parts in block:
             if fn(parts):
+                return -1
+        for j in range(cut, end):  # past what is kept
+            fn, parts = self._step(j)
+            if fn is not None and fn(parts):
                 return -1
         return end
 
