@@ -102,7 +102,8 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
 
 class WindowProof:
     """``on_window`` for :func:`nczones.gcode.linuxcnc.doubles.double_pass`: proves each window of a long program as
-    the pass hands it over (then the pass drops its rows), counting the boxes; False stops the pass."""
+    the pass hands it over (then the pass drops its rows), counting the boxes; False stops the pass, None asks
+    for the window again a motion later (it ends on a motion that may have length 0)."""
 
     def __init__(self, machine: Machine, margin: Fraction):
         self.machine = machine
@@ -110,14 +111,14 @@ class WindowProof:
         self.boxes = 0
         self.windows = 0
 
-    def __call__(self, path: Any) -> bool:
+    def __call__(self, path: Any) -> bool | None:
         # declares_solids is machine_solids(...) is not None without importing nczones.solids (start-up)
         if declares_solids(self.machine):
             return False  # the boxes are about the controlled point; tool solids need the full path
         if self.machine.path_mode == "G64" and not self.machine.path_tolerance and may_be_zero(path, path.motions):
             # the window ends on a motion that may have length 0: its corner joins the motion before it,
-            # which the next window does not hold (the windows overlap by one motion)
-            return False
+            # which the next window does not hold (the windows overlap by one motion): the window ends later
+            return None
         boxes = prove_enclosures(path, self.machine, self.margin, max_boxes=_max_boxes(path))
         if boxes is None:
             return False

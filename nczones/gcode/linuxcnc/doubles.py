@@ -42,6 +42,11 @@ loops, a motion while the units, distance mode or work offset are still the mach
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error.
 
+The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
+layout; in a loop or sub body: the block's steps compiled once and kept, :data:`MAX_STEPS` lines at most).  A
+sub whose body has no ``#`` (no parameter read or written in it, nor in the arguments of the calls it makes)
+cannot see its call frame: it is called without one (``tests/gcode/test_double_pass_frames.py``).
+
 Invariant (``tests/gcode/test_double_pass.py``): whenever the pass returns, the full interpreter's run of
 the same program on the same machine completes with no unknown code, no error and no notes, with the same
 number of motions, and the end point of its k-th motion lies in the box of the pass's k-th row widened by
@@ -53,7 +58,7 @@ from __future__ import annotations
 import math
 import re
 from array import array
-from bisect import bisect_right
+from bisect import bisect_left, bisect_right
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
@@ -197,8 +202,9 @@ def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_w
     have been computed, ``on_window(path)`` is called with a :class:`DoublePath` of rows ``row0``..``motions`` (its counts so far)
     and those rows are dropped but the last two: windows overlap by one motion (the last motion of a
     window is the first of the next), so a check that needs a motion and the one before it finds both in
-    one window.  ``on_window`` returns False to stop the pass (it then declines).  The path returned is the
-    last window, with the whole program's counts.
+    one window.  ``on_window`` returns False to stop the pass (it then declines), or None to be handed the
+    window again one motion later (it grows: a window that cannot end at this motion, up to twice its size,
+    then the pass declines).  The path returned is the last window, with the whole program's counts.
 
     >>> from nczones.machine import parse_machine
     >>> m = parse_machine('[machine]\\naxes=["X","Y"]\\n[machine.rapid]\\nX="1000"\\nY="1000"\\n'
@@ -267,9 +273,15 @@ class _Pass:
         self.S: dict[int, float] = {DEBUG_FLAG: float(DEBUG_FLAG_DEFAULT)}
         self.N: dict[str, float] = {}  # the main program's named parameters
         self.plans: dict[tuple, Any] = {}
-        self.subs: dict[Any, int] = {}  # the subs defined so far: the index of their body's first line
-        #: open calls: (return index, caller's #1..#30, label, caller's local named parameters)
-        self.calls: list[tuple[int, dict, Any, dict]] = []
+        #: the subs defined so far: the index of their body's first line and of their endsub
+        self.subs: dict[Any, tuple[int, int]] = {}
+        #: open calls: (return index, caller's #1..#30, label, caller's local named parameters; both None: a sub
+        #: whose body has no ``#``, called without a frame)
+        self.calls: list[tuple[int, dict | None, Any, dict | None]] = []
+        self.open: set[Any] = set()  # the labels of the open calls
+        self.plain: dict[Any, bool] = {}  # per sub: its body has no "#" (its frame is not seen)
+        self.kept = 0  # lines of loop and sub bodies kept compiled (MAX_STEPS at most)
+        self.control_lines: dict[str, Any] = {}  # an O-word line's text -> its compiled condition or arguments
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
         self.shape_code: dict[Any, _Code] = {}
@@ -301,16 +313,12 @@ class _Pass:
 
     # -- the run ------------------------------------------------------------------------------------------
     def run(self) -> DoublePath:
-        src = self.src
         controls = self._controls()
-        count = src.count
-        lo = hi = 0  # the lines lo..hi-1 are src's current piece: lines and layouts (None: not ASCII)
-        lines: list[str] = []
-        layouts: list[bytes] | None = None
-        steps: dict[int, Any] = {}  # the compiled lines of loop and sub bodies, by index (MAX_STEPS at most)
-        by_layout = self.by_layout
+        marks = sorted(controls)  # the O-word lines: the straight lines between two are run as one block
+        count = self.src.count
+        blocks: dict[int, tuple] = {}  # the compiled lines of loop and sub bodies, by block (MAX_STEPS lines at most)
         counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
-        looping = 0  # open while loops
+        looping = 0  # open while loops and calls
         back = -1  # the index of the while an endwhile just jumped to
         # iterations of all loops together: nested loops, each within its bound, may still run for hours; past
         # this the pass declines and the full path runs them under the run's budget (nczones.prover.limits)
@@ -318,61 +326,104 @@ class _Pass:
         i = 0
         while i < count:
             ctrl = controls.get(i)
-            if ctrl is not None:
-                kw, target, cond = ctrl
-                if kw == "while":
-                    if back != i:
-                        counts[i] = 0
-                        looping += 1
-                    back = -1
-                    if _cond(cond) != 0.0:
-                        counts[i] += 1
-                        total += 1
-                        if counts[i] >= self.max_iterations or total > most:
-                            raise Declined("a loop at its iteration bound")
-                        i += 1
-                    else:
-                        looping -= 1
-                        i = target
-                elif kw == "endwhile":
-                    i = back = target
-                elif kw == "if":
-                    i += 1
-                    if _cond(cond) == 0.0:
-                        for kw2, at, cond2 in target:
-                            if kw2 == "endif" or kw2 == "else" or _cond(cond2) != 0.0:
-                                i = at + 1
-                                break
-                elif kw == "sub" or kw == "call" or kw == "endsub":
-                    i, looping = self._sub_flow(kw, i, target, cond, looping)
-                else:  # elseif, else: the branch before ran, on past the endif (endif: on to the next line)
-                    i = target
-                continue
-            if looping:
-                step = steps.get(i)
-                if step is None:
-                    step = self._body_step(i, steps)
-                fn, parts = step
-            else:
-                if not lo <= i < hi:
-                    lo, hi, lines, layouts = src.piece(i)
-                fn = by_layout.get(layouts[i - lo]) if layouts is not None else None
-                if fn is not None:
-                    parts = lines[i - lo]
-                else:
-                    fn, parts = self._step(i)
-            i += 1
-            if fn is not None:
+            if ctrl is None:  # the straight lines up to the next O-word line (-1: the program ended)
+                k = bisect_left(marks, i)
+                end = marks[k] if k < len(marks) else count
                 try:
-                    if fn(parts):
-                        break
+                    i = self._block(i, end, blocks) if looping else self._straight(i, end)
                 except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
                     raise Declined(f"an evaluation error: {exc!r}") from None
+                if i < 0:
+                    break
+                continue
+            kw, target, cond = ctrl
+            if kw == "while":
+                if back != i:
+                    counts[i] = 0
+                    looping += 1
+                back = -1
+                if _cond(cond) != 0.0:
+                    counts[i] += 1
+                    total += 1
+                    if counts[i] >= self.max_iterations or total > most:
+                        raise Declined("a loop at its iteration bound")
+                    i += 1
+                else:
+                    looping -= 1
+                    i = target
+            elif kw == "endwhile":
+                i = back = target
+            elif kw == "if":
+                i += 1
+                if _cond(cond) == 0.0:
+                    for kw2, at, cond2 in target:
+                        if kw2 == "endif" or kw2 == "else" or _cond(cond2) != 0.0:
+                            i = at + 1
+                            break
+            elif kw == "call":
+                i = self._call(i, target, cond)
+                looping += 1  # the body runs again: its lines compiled once (as a loop body's)
+            elif kw == "endsub":
+                i = self._endsub()
+                looping -= 1
+            elif kw == "sub":
+                i = self._sub(i, target)
+            else:  # elseif, else: the branch before ran, on past the endif (endif: on to the next line)
+                i = target
         return self._path()
+
+    def _straight(self, i: int, end: int) -> int:
+        """Run lines ``i``..``end - 1``, read once (not in a loop or call): the next line, or -1 when the
+        program ended.  A line whose layout has a step (``by_layout``) runs it on the line itself."""
+        src, by_layout = self.src, self.by_layout
+        while i < end:
+            lo, hi, lines, layouts = src.piece(i)
+            if layouts is not None:
+                k = i - lo
+                for layout in layouts[k:min(end, hi) - lo]:
+                    fn = by_layout.get(layout)
+                    if fn is None:
+                        break
+                    if fn(lines[k]):
+                        return -1
+                    k += 1
+                i = k + lo
+                if i >= end or i >= hi:
+                    continue
+            fn, parts = self._step(i)
+            i += 1
+            if fn is not None and fn(parts):
+                return -1
+        return end
+
+    def _block(self, i: int, end: int, blocks: dict[int, tuple]) -> int:
+        """Run lines ``i``..``end - 1`` of a loop or sub body (they run again): their steps compiled once and kept
+        in ``blocks`` while the pass keeps at most :data:`MAX_STEPS` lines (the lines past that are compiled again
+        at each run, so memory stays flat however long a body is); the next line, or -1 when the program ended."""
+        got = blocks.get(i)
+        if got is None:
+            cut = min(end, i + max(0, MAX_STEPS - self.kept))
+            try:
+                steps = [self._step(j) for j in range(i, cut)]
+            except Declined:  # a line the pass does not follow: declined when it is reached (an M2 may end first)
+                steps, cut = [], i
+            got = blocks[i] = (tuple(step for step in steps if step[0] is not None), cut)
+            self.kept += cut - i
+        block, cut = got
+        for fn, parts in block:
+            if fn(parts):
+                return -1
+        for j in range(cut, end):  # past what is kept
+            fn, parts = self._step(j)
+            if fn is not None and fn(parts):
+                return -1
+        return end
 
     def _path(self) -> DoublePath:
         """The rows held now as a path (every row, or the current window)."""
-        if not all(math.isfinite(min(col)) and math.isfinite(max(col)) for col in self.columns):
+        # a sum is finite only when every row is (an inf or nan stays one; a finite overflow declines too): one
+        # scan of a window's column, not two (min and max)
+        if not all(math.isfinite(sum(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
@@ -382,19 +433,15 @@ class _Pass:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
         if self.on_window is None:
             raise Declined(f"more than {MAX_MOTIONS} motions")
-        if not self.on_window(self._path()):
+        proved = self.on_window(self._path())
+        if proved is None and len(self.columns[0]) < 2 * self.rows:
+            return  # not at this motion: handed over again after the next (the plans call full() while full)
+        if not proved:
             raise Declined("a window of the double pass that its boxes do not prove")
         keep = len(self.columns[0]) - 2
         for col in self.columns:
             del col[:keep]
         self.row0 += keep
-
-    def _body_step(self, i: int, steps: dict[int, Any]) -> tuple[Any, tuple]:
-        """:meth:`_step` of line ``i`` of a loop or sub body, kept in ``steps`` (at most :data:`MAX_STEPS`)."""
-        step = self._step(i)
-        if len(steps) < MAX_STEPS:
-            steps[i] = step
-        return step
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -432,7 +479,12 @@ class _Pass:
                 if seen is None:
                     continue
                 kw, label = seen
-                found.append((index, kw, label, self._control_line(line, kw, label), src.starts[k] + start))
+                cond = self.control_lines.get(line)
+                if cond is None:  # a line's condition or arguments compiled once (a call repeated: one step)
+                    cond = self._control_line(line, kw, label)
+                    if len(self.control_lines) < MAX_STEPS:
+                        self.control_lines[line] = cond
+                found.append((index, kw, label, cond, src.starts[k] + start))
         out: dict[int, tuple] = {}
         stack: list[list] = []
         opened: set = set()
@@ -478,7 +530,8 @@ class _Pass:
         """Whether the text names ``#<_value>`` (blanks aside), read a piece at a time: pieces are cut after
         a newline and a blank is not one, so a name is never cut."""
         src = self.src
-        return any("_value" in _BLANKS.sub("", src.part(k).lower()) for k in range(len(src.starts)))
+        parts = (src.part(k) for k in range(len(src.starts)))
+        return any("_" in p and "_value" in _BLANKS.sub("", p.lower()) for p in parts)  # most have no "_"
 
     def _control_line(self, line: str, kw: str, label: Any) -> Any:
         """The compiled condition of an O-word line (a call's: its arguments'), after its parse agrees."""
@@ -495,7 +548,7 @@ class _Pass:
         if kw == "call":
             if len(ow.args) > SUB_PARAMS:
                 raise Declined("a call with more than 30 arguments")
-            return tuple(self._compiled_cond(a) for a in ow.args)
+            return self._compiled_args(ow.args)
         if kw == "endsub" and ow.args:
             raise Declined("an endsub returning a value")
         return self._compiled_cond(ow.args[0]) if kw in ("if", "elseif", "while") else None
@@ -514,40 +567,58 @@ class _Pass:
         out[top[2]] = ("sub", (at + 1, label), None)
         out[at] = ("endsub", None, None)
 
-    def _sub_flow(self, kw: str, i: int, target: Any, args: Any, looping: int) -> tuple[int, int]:
-        """A sub definition reached, a call or an endsub (as the full path's ``Runner.oword``): the next line and
-        the open loops and calls.  A call saves the caller's #1..#30, sets them from its arguments (the rest
-        unset) and runs the body with no local named parameters; its endsub restores them (as
-        ``Parameters.push_scope`` / ``pop_scope``).  Declined: a call of a sub not defined before it in
-        the flow, a recursive call, calls nested more than :data:`MAX_CALLS` deep."""
-        S, N, calls = self.S, self.N, self.calls
-        if kw == "sub":
-            after, label = target
-            if label in self.subs:  # reached again (the full path reports it)
-                raise Declined("a sub defined twice")
-            self.subs[label] = i + 1
-            return after, looping
-        if kw == "call":
-            body = self.subs.get(target)
-            if body is None or len(calls) >= MAX_CALLS or any(c[2] == target for c in calls):
-                raise Declined("a call of a sub not defined before it, recursive or nested deeply")
-            values = [_cond(a) for a in args]
-            saved = {k: S[k] for k in S.keys() & _SUB_KEYS}
-            for k in saved:
-                del S[k]
-            S.update(zip(range(1, SUB_PARAMS + 1), values))
-            calls.append((i + 1, saved, target, dict(N)))
-            N.clear()  # a call's local named parameters start empty (the caller's are not visible)
-            return body, looping + 1  # the body runs again: its lines compiled once (as a loop body's)
-        if not calls:
-            raise Declined("an endsub outside a call")
-        ret, saved, _label, named = calls.pop()
-        for k in S.keys() & _SUB_KEYS:
+    # -- subs and calls (as the full path's ``Runner.oword``) ----------------------------------------------
+    def _sub(self, i: int, target: tuple[int, Any]) -> int:
+        """A sub definition reached: noted (its body's first line and its endsub's), on past its endsub."""
+        after, label = target
+        if label in self.subs:  # reached again (the full path reports it)
+            raise Declined("a sub defined twice")
+        self.subs[label] = (i + 1, after - 1)
+        return after
+
+    def _call(self, i: int, label: Any, args: Any) -> int:
+        """A call: the first line of the sub's body.  It saves the caller's #1..#30, sets them from its
+        arguments (the rest unset) and runs the body with no local named parameters; its endsub restores them
+        (:meth:`_endsub`; as ``Parameters.push_scope`` / ``pop_scope``).  A sub whose body has no ``#`` (no
+        parameter, numbered or named, read or written in it, nor in its calls' arguments) cannot see its frame:
+        its calls evaluate their arguments and keep the caller's (a call it makes saves and restores them
+        itself).  Declined: a call of a sub not defined before it in the flow, a recursive call, calls nested
+        more than :data:`MAX_CALLS` deep."""
+        sub, calls = self.subs.get(label), self.calls
+        if sub is None or len(calls) >= MAX_CALLS or label in self.open:
+            raise Declined("a call of a sub not defined before it, recursive or nested deeply")
+        values = _args(args)
+        self.open.add(label)
+        body, end = sub
+        plain = self.plain.get(label)
+        if plain is None:
+            plain = self.plain[label] = not any("#" in self.src.line(j)[0] for j in range(body, end))
+        if plain:
+            calls.append((i + 1, None, label, None))
+            return body
+        S, N = self.S, self.N
+        saved = {k: S[k] for k in S.keys() & _SUB_KEYS}
+        for k in saved:
             del S[k]
-        S.update(saved)
-        N.clear()
-        N.update(named)
-        return ret, looping - 1
+        S.update(zip(range(1, SUB_PARAMS + 1), values))
+        calls.append((i + 1, saved, label, dict(N)))
+        N.clear()  # a call's local named parameters start empty (the caller's are not visible)
+        return body
+
+    def _endsub(self) -> int:
+        """An endsub: the caller's #1..#30 and local named parameters back (:meth:`_call`), its next line."""
+        if not self.calls:
+            raise Declined("an endsub outside a call")
+        ret, saved, label, named = self.calls.pop()
+        self.open.discard(label)
+        if saved is not None and named is not None:
+            S, N = self.S, self.N
+            for k in S.keys() & _SUB_KEYS:
+                del S[k]
+            S.update(saved)
+            N.clear()
+            N.update(named)
+        return ret
 
     # -- ordinary lines -----------------------------------------------------------------------------------
     def _parsed(self, line: str) -> Any:
@@ -623,6 +694,16 @@ class _Pass:
 
         key = "None" if not codes else codes[0] if len(codes) == 1 else "(" + ", ".join(codes) + ",)"
         return body, writes, vals, key, {"PLANS": made, "PLAN_OF": plan_of}
+
+    def _compiled_args(self, trees: Any) -> Any:
+        """A call's arguments' step: ``step(())`` is the tuple of their doubles, computed in order."""
+        em = _Emit(_const, self._pconst)
+        body: list[str] = []
+        ds = [em.value(tree, body) for tree in trees]
+        lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    return ({''.join(d + ', ' for d in ds)})"]
+        scope = dict(self.env)
+        exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
+        return scope["step"]
 
     def _compiled_cond(self, tree: Any) -> Any:
         """A condition's step: ``step(())`` is its double."""
@@ -834,6 +915,15 @@ def _cond(cond: Any) -> float:
     except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
         raise Declined(f"an evaluation error: {exc!r}") from None
     return value
+
+
+def _args(args: Any) -> tuple[float, ...]:
+    """A call's arguments' doubles (:meth:`_Pass._compiled_args`)."""
+    try:
+        values: tuple[float, ...] = args(())
+    except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
+        raise Declined(f"an evaluation error: {exc!r}") from None
+    return values
 
 
 def _atan(y: float, x: float) -> float:
