@@ -116,6 +116,11 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
         if quick is not None:
             return quick
     source = _kept_streamed(source, machine, options, dialect, ranges, deleted, passed=True)
+    if (options.engine == "auto" and not ranges and options.recovery is None and not deleted and dialect == "fanuc"
+            and not nose_note and not nose_reasons):
+        quick = _fanuc_boxes_first(source, machine, options, margin, t0, progress, settings)
+        if quick is not None:
+            return quick
 
     def cases(skip: frozenset[int]) -> tuple[Result, Interpretation, set[int]]:
         return _verify_cases(source, machine, options, skip, progress, profile)
@@ -238,6 +243,42 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
                         reasons=quick.reasons + nose_reasons,
                         verdict=(Verdict.UNKNOWN if nose_reasons and quick.verdict is Verdict.SAFE
                                  else quick.verdict))
+    return replace(quick, budget_s=limits.budget_s,
+                   timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
+                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   machine_sha256=machine.sha256, settings=settings, file=source.name)
+
+
+def _fanuc_boxes_first(source: ProgramSource, machine: Machine, options: VerifyOptions, margin: Fraction,
+                       t0: float, progress: Callable[..., object] | None, settings: Any) -> Result | None:
+    """A short Fanuc program's ``safe`` by the box of its motion without numpy (:mod:`nczones.prover.fanucboxes`),
+    or None when that route declines or does not apply (the full path then decides, as if it had not run)."""
+    from ..prover.fanucboxes import boxes_apply, prove_boxes
+
+    if not boxes_apply(machine) or _line_count(source.text) >= FAST_PATH_MIN_LINES or margin < 0:
+        return None
+    limits = options.limits
+    assert limits is not None  # set by _verify_source
+    try:
+        run = interpretation(source, machine, options, fast=False)
+        quick = prove_boxes(run, machine, margin, t0, rows=True)
+    except KeyboardInterrupt:
+        quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
+            f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
+            None, None, "VF204"),), interrupted=True, margin=margin, engine=options.engine)
+    except Exception:  # noqa: BLE001 - any error: the full path reads the program again and reports it as it does
+        return None
+    if quick is None:
+        return None
+    if isinstance(source.text, FileText):
+        source.text.check_unchanged()  # the text proved is the text hashed
+    if progress is not None and not quick.interrupted:  # done at once: the bar's last step
+        total = _line_count(source.text) or None
+        bar: Any = progress
+        if getattr(bar, "counts", False):
+            bar(total or 0, total, motions=dict(quick.stats)["segments"], blocks=quick.extra["counts"]["blocks"])
+        else:
+            bar(total or 0, total)
     return replace(quick, budget_s=limits.budget_s,
                    timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
                    program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
