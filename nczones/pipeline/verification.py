@@ -270,6 +270,8 @@ def _fanuc_boxes_first(source: ProgramSource, machine: Machine, options: VerifyO
         return None
     if quick is None:
         return None
+    if not quick.interrupted:  # the M0/M1 notes the full path adds (_switch_notes with no switch used)
+        quick = replace(quick, notes=quick.notes + _switch_notes({}, {}, [], True, run.interpreter.stops))
     if isinstance(source.text, FileText):
         source.text.check_unchanged()  # the text proved is the text hashed
     if progress is not None and not quick.interrupted:  # done at once: the bar's last step

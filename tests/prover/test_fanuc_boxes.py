@@ -1,0 +1,195 @@
+"""The numpy-free box route of short Fanuc programs (nczones/prover/fanucboxes.py, issue 36) against today's path.
+
+Relation (both sides computed by nczones): ``verify`` with the route (``fanucboxes.ROUTE``) and without it give the
+same verdict, violations, reasons, notes and motion count; when the route answers (its ``fanuc_boxes`` count is
+in the stats) the answer is ``safe`` and today's path says ``safe`` too.  The route may decline where today's path
+proves ``safe`` (its boxes are coarser), never the other way round.
+
+The test mill (tests/gcode/fanuc/helpers.py): G54 = (100, 50, -200), H1 = 100, H2 = 150.5; Fanuc G43 adds H to the
+programmed Z.  Its zone here: machine X -10..150, Y -10..90, Z -201..0, so program X50. (machine 150), Y40.
+(machine 90) and Z-1. (machine -201) lie on its faces; optional: a forbidden clamp (controlled point) and a
+forbidden tip probe (the tip is the machine point less the tool length on Z).
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.errors import GcodeError
+from nczones.prover import fanucboxes, verify_text
+from tests.gcode.fanuc.helpers import mill
+
+_TRAVEL = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
+           'max = { X = "150", Y = "90", Z = "0" }\n')
+# program X 20..22, Y 10..12: machine X 120..122, Y 60..62 (controlled point, every Z)
+_CLAMP = ('\n[[zones]]\nname = "clamp"\nkind = "box"\nforbid = true\n'
+          'min = { X = "120", Y = "60", Z = "-1000" }\nmax = { X = "122", Y = "62", Z = "1000" }\n')
+# the tip in machine X 100..150, Z -300..-290: reached only with H1/H2 in force (tip = machine Z - length) near
+# the Z floor: at H1 machine Z -201..-190 (program Z -1. .. 10.) puts the tip at -301..-290
+_PROBE = ('\n[[zones]]\nname = "probe"\nkind = "box"\nforbid = true\npoint = "tip"\n'
+          'min = { X = "130", Y = "-1000", Z = "-300" }\nmax = { X = "150", Y = "1000", Z = "-290" }\n')
+_MACHINES = {name: mill(tables=_TRAVEL + extra) for name, extra in
+             (("box", ""), ("clamp", _CLAMP), ("probe", _PROBE))}
+
+#: motions inside the zone (#1 is the loop counter, 0 .. reps - 1)
+_MOVES = [
+    "G01 X[#1 * 0.5] Y[#1 * 0.25]",
+    "G00 X5. Y5.",
+    "G01 Z-1.",
+    "Z-0.5",
+    "G01 X50. Y40.",  # the corner of the X and Y faces
+    "G01 X40. Y0.",
+    "G02 X40. Y20. R10.",  # a half circle from (40, 0) or (40, 20): a rational centre, touching X50. (or not)
+    "G03 X30. Y10. R7.5",  # an R arc with an irrational centre
+    "G02 X0. Y10. I-5. J5.",  # an I/J arc whose radius may not match (an error, on both sides)
+    "G09 G01 X10.",
+    "G61",
+    "G64",
+    "G04 X0.1",
+    "G43 H1 Z5.",
+    "G43 H2 Z0.",
+    "G49 Z0.",
+    "G01 X35. Y15.",
+    "G01 X21. Y11.",  # inside the clamp
+]
+#: motions that leave the zone or graze it from outside
+_OUT = ["G01 X50.001", "G01 Y40.001", "G01 Z-1.001", "G02 X40. Y20. R-10.001", "G00 X[60 - #1 * 0.001]"]
+
+
+def _program(body: list[str], reps: int, form: str) -> str:
+    head = ["O1000", "G90 G17 G21 G54 F500.", "G00 X0. Y0. Z0.", "#1 = 0"]
+    if form == "while":
+        lines = head + [f"WHILE [#1 LT {reps}] DO1", *body, "#1 = #1 + 1", "END1", "M30"]
+    elif form == "m98":
+        lines = head + [f"WHILE [#1 LT {reps}] DO1", "M98 P9020", "#1 = #1 + 1", "END1", "M30", "O9020", *body,
+                        "M99"]
+    else:
+        lines = head + [f"WHILE [#1 LT {reps}] DO1", "G65 P9020 A#1", "#1 = #1 + 1", "END1", "M30", "O9020",
+                        "#1 = #1", *body, "M99"]
+    return "\n".join(lines) + "\n"
+
+
+def _verified(text: str, machine, route: bool) -> tuple:
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(fanucboxes, "ROUTE", route)
+        try:
+            r = verify_text(text, machine, file="t.nc")
+        except GcodeError as e:
+            return ("error", tuple((d.code, d.message, str(d.span)) for d in e.diagnostics)), False
+    stats = dict(r.stats)
+    return ((r.verdict.label, tuple(r.violations), tuple(r.reasons), r.truncated, tuple(r.notes),
+             stats["segments"]), "fanuc_boxes" in stats)
+
+
+def _agree(text: str, machine) -> tuple[str, bool]:
+    """The route and today's path agree; (verdict, whether the route answered)."""
+    today, taken_today = _verified(text, machine, False)
+    routed, taken = _verified(text, machine, True)
+    assert not taken_today
+    assert routed == today
+    if taken:
+        assert today[0] == "safe"
+    return str(today[0]), taken
+
+
+@settings(max_examples=25, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.sampled_from(_MOVES), min_size=1, max_size=7), st.lists(st.sampled_from(_OUT), max_size=1),
+       st.integers(1, 6), st.sampled_from(["while", "m98", "g65"]), st.sampled_from(sorted(_MACHINES)),
+       st.randoms(use_true_random=False))
+def test_the_route_decides_as_today(body, out, reps, form, machine, rnd):
+    body = body + out
+    rnd.shuffle(body)
+    _agree(_program(body, reps, form), _MACHINES[machine])
+
+
+def test_the_route_answers_a_loop_of_more_than_512_motions():
+    """A WHILE loop of 600 straight moves and 600 R arcs (1,200 motions: the proof's vectorized tier on today's
+    path) in the zone: the route answers ``safe``, as today's path does, and says so in the stats."""
+    text = _program(["G01 X[#1 * 0.05] Y5.", "G03 X[#1 * 0.05 + 2] Y7. R3."], 600, "while")
+    verdict, taken = _agree(text, _MACHINES["box"])
+    assert (verdict, taken) == ("safe", True)
+    # and a short one, the same way
+    assert _agree(_program(["G01 X10. Y10.", "G02 X20. Y10. R5."], 2, "m98"), _MACHINES["clamp"]) == ("safe", True)
+
+
+@pytest.mark.parametrize("code, radius, expected, taken", [
+    # from (40, 0) to (40, 20), chord along +Y.  G03 with R > 0 (and G02 with R < 0) has its centre left of the
+    # chord (-X), G02 with R > 0 (G03 with R < 0) right of it (+X) (prover/rformat.py); the arc bulges away from
+    # the centre's side when it is the minor arc (|R| > 10: the centre is 10 +- sqrt(R^2 - 100) from X 40).
+    # G03 R10.: the half circle around (40, 10) (a rational centre: the chord is 2R) through (50, 10): X50. is the
+    # face (machine 150): safe, its exact box touches the face, the route answers
+    ("G03", "10.", "safe", True),
+    # G03 R-10.001: the major arc around (40 + 0.4472.., 10), reaching X 40.4472 + 10.001 = 50.448: unsafe; the
+    # route's box leaves the zone, it declines and today's path gives the witness
+    ("G03", "-10.001", "unsafe", False),
+    # G03 R10.001: the minor arc around (39.5528.., 10) (irrational), reaching X 49.554: safe; the route's box of the
+    # whole circle (X <= 49.554 + its outward rounding) fits: the route answers
+    ("G03", "10.001", "safe", True),
+    # G02 R10.001: the minor arc around (40.4472.., 10), bulging to X 30.446: safe; the route's box of the whole
+    # circle reaches X 50.448 past the face: the route declines (its enclosure crosses the face where the arc
+    # does not), today's path proves it
+    ("G02", "10.001", "safe", False),
+])
+def test_an_r_arc_whose_enclosure_touches_a_face(code, radius, expected, taken):
+    """In G61 (exact stops: in cutting mode today's hull test encloses a lone R arc by its circle too, and the
+    last case is ``unknown`` on both sides)."""
+    text = _program(["G61", "G01 X40. Y0.", f"{code} X40. Y20. R{radius}", "G00 X0. Y0."], 1, "while")
+    assert _agree(text, _MACHINES["box"]) == (expected, taken)
+
+
+_TL_ZONES = ('\n[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "-1000", Y = "-1000", Z = "-1000" }\n'
+             'max = { X = "1000", Y = "1000", Z = "1000" }\n'
+             '[[zones]]\nname = "probe"\nkind = "box"\nforbid = true\npoint = "tip"\n'
+             'min = { X = "140", Y = "-1000", Z = "-260" }\nmax = { X = "160", Y = "1000", Z = "-240" }\n')
+
+
+@pytest.mark.parametrize("pad", [0, 300])
+def test_a_tool_length_inside_a_run_is_tested(pad):
+    """Cutting mode, ``G43 H1`` in the middle of a run: the geometry of tests/prover/test_fanuc_run_tool_lengths.py
+    (hunt36's wrong ``safe``).  The run (machine X, Z) (100, -200) -> (200, -200) at length 0, -> (200, 100) at
+    H1 = 100, -> (100, 0) at length 0; the tip probe X 140..160, Z -260..-240.  No motion's tip meets the probe,
+    the run's hull at H1 does (tip Z -300..0 over X 100..200): not ``safe``, and the route must not answer.  With
+    G61 before the run (exact stops, no hull) today's path proves it ``safe``; the route's one box still meets the
+    probe at H1, so it declines and today's path answers.  ``pad``: a WHILE loop of that many motions before (past
+    512 motions in all with 300)."""
+    m = mill(tables=_TL_ZONES)
+    loop = f"#1 = 0\nWHILE [#1 LT {pad}] DO1\nG01 X[#1 MOD 7] Y5.\n#1 = #1 + 1\nEND1\n" if pad else ""
+    run = "G01 X100.\nG43 H1 Z200.\nG49 X0.\n"
+    text = "O1\nG90 G17 G21 G54 G49 F500.\n" + loop + "G00 X0. Y0. Z0.\nG04 X0\n{mode}" + run + "G04 X0\nG64\nM30\n"
+    verdict, taken = _agree(text.format(mode=""), m)
+    assert not taken and verdict != "safe"
+    assert _agree(text.format(mode="G61\n"), m) == ("safe", False)
+    # the run without the G43 (every motion at length 0: the tip is the machine point, Z >= -200): the box fits
+    assert _agree(text.format(mode="").replace("G43 H1 ", ""), m) == ("safe", True)
+
+
+def test_exact_stops_and_dwells_are_answered():
+    """G09, G61/G64 and dwells inside a loop in the zone: the route answers safe, as today's path."""
+    text = _program(["G09 G01 X10. Y5.", "G61", "G01 X20.", "G04 X0.1", "G64", "G02 X30. Y5. R5."], 3, "g65")
+    assert _agree(text, _MACHINES["box"]) == ("safe", True)
+
+
+def test_a_long_text_goes_today_s_path():
+    """A plain program of more than FAST_PATH_MIN_LINES lines is read by the vectorized path: not the route."""
+    text = "O1\nG90 G21 G54 G01 F500.\n" + "".join(f"X{k % 40}. Y{k % 30}.\n" for k in range(600)) + "M30\n"
+    assert _agree(text, _MACHINES["box"]) == ("safe", False)
+
+
+def test_no_numpy_on_the_route():
+    """The route imports no numpy: a verify of a WHILE loop in a fresh interpreter leaves it unloaded."""
+    code = ("import sys\nfrom nczones.prover import verify_text\nfrom tests.gcode.fanuc.helpers import mill\n"
+            f"m = mill(tables={_TRAVEL!r})\n"
+            f"r = verify_text({_program(['G01 X[#1 * 0.01] Y5.'], 700, 'while')!r}, m)\n"
+            "print(r.verdict.label, 'numpy' in sys.modules, dict(r.stats).get('fanuc_boxes'))\n")
+    root = Path(__file__).resolve().parents[2]
+    env = dict(os.environ, PYTHONPATH=str(root))
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root, env=env,
+                         check=True).stdout.split()
+    assert out == ["safe", "False", "1"]
