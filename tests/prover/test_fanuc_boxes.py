@@ -193,3 +193,15 @@ def test_no_numpy_on_the_route():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=root, env=env,
                          check=True).stdout.split()
     assert out == ["safe", "False", "1"]
+
+
+@pytest.mark.parametrize("body, reps", [
+    # a dwell after each move: every iteration's move is a run of rows of its own; X reaches 50.1 (machine 150.1,
+    # past the face) at #1 = 501, in the 502nd run
+    (["G01 X[#1 * 0.1] Y5.", "G04 X0"], 600),
+    # one run of 10,050 rows: more than a run holds (columns.MAX_ROWS, 8,192); X reaches 50.025 at #1 = 10,005
+    (["G01 X[#1 * 0.005] Y5."], 10050),
+])
+def test_a_late_run_that_leaves_the_zone(body, reps):
+    """The exit comes in a later run of rows than the first: unsafe on both sides, the route does not answer."""
+    assert _agree(_program(body, reps, "while"), _MACHINES["box"]) == ("unsafe", False)
