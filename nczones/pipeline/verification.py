@@ -116,11 +116,6 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
         if quick is not None:
             return quick
     source = _kept_streamed(source, machine, options, dialect, ranges, deleted, passed=True)
-    if (options.engine == "auto" and not ranges and options.recovery is None and not deleted and dialect == "fanuc"
-            and not nose_note and not nose_reasons):
-        quick = _fanuc_boxes_first(source, machine, options, margin, t0, progress, settings)
-        if quick is not None:
-            return quick
 
     def cases(skip: frozenset[int]) -> tuple[Result, Interpretation, set[int]]:
         return _verify_cases(source, machine, options, skip, progress, profile)
@@ -249,42 +244,38 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
                    machine_sha256=machine.sha256, settings=settings, file=source.name)
 
 
-def _fanuc_boxes_first(source: ProgramSource, machine: Machine, options: VerifyOptions, margin: Fraction,
-                       t0: float, progress: Callable[..., object] | None, settings: Any) -> Result | None:
-    """A short Fanuc program's ``safe`` by the box of its motion without numpy (:mod:`nczones.prover.fanucboxes`),
-    or None when that route declines or does not apply (the full path then decides, as if it had not run)."""
+def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],
+                 progress: Callable[..., object] | None, profile: RunProfile) -> tuple[Any, Result | None]:
+    """One case of a short Fanuc program proved by the box of its motion without numpy
+    (:mod:`nczones.prover.fanucboxes`): (its interpretation, its result), or (None, None) when that route does not
+    apply or declines (the case is then interpreted again and proved by the full path, as if it had not run)."""
     from ..prover.fanucboxes import boxes_apply, prove_boxes
 
-    if not boxes_apply(machine) or _line_count(source.text) >= FAST_PATH_MIN_LINES or margin < 0:
-        return None
-    limits = options.limits
-    assert limits is not None  # set by _verify_source
+    if (options.engine != "auto" or options.params or not boxes_apply(machine)
+            or _line_count(source.text) >= FAST_PATH_MIN_LINES or options.effective_dialect(machine) != "fanuc"):
+        return None, None
+    started = time.perf_counter()
+    run = interpretation(source, machine, options, skip=skip, fast=False)  # lazy (the full path's call): nothing read
     try:
-        run = interpretation(source, machine, options, fast=False)
-        quick = prove_boxes(run, machine, margin, t0, rows=True)
+        result = prove_boxes(run, machine, options.margin, started)
     except KeyboardInterrupt:
-        quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
-            f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
-            None, None, "VF204"),), interrupted=True, margin=margin, engine=options.engine)
-    except Exception:  # noqa: BLE001 - any error: the full path reads the program again and reports it as it does
-        return None
-    if quick is None:
-        return None
-    if not quick.interrupted:  # the M0/M1 notes the full path adds (_switch_notes with no switch used)
-        quick = replace(quick, notes=quick.notes + _switch_notes({}, {}, [], True, run.interpreter.stops))
-    if isinstance(source.text, FileText):
-        source.text.check_unchanged()  # the text proved is the text hashed
-    if progress is not None and not quick.interrupted:  # done at once: the bar's last step
+        return run, Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
+            f"interrupted (Ctrl-C) after {time.perf_counter() - started:.1f} s: the program was not checked", None,
+            None, "VF204"),), interrupted=True, margin=options.margin, engine=options.engine)
+    except Exception:  # noqa: BLE001 - any error: the full path reads the case again and reports it as it does
+        return None, None
+    if result is None:
+        return None, None
+    profile.motions += run.counts["segments"]
+    profile.blocks = max(profile.blocks, run.counts["blocks"])
+    if progress is not None:  # done at once: the bar's last step
         total = _line_count(source.text) or None
         bar: Any = progress
         if getattr(bar, "counts", False):
-            bar(total or 0, total, motions=dict(quick.stats)["segments"], blocks=quick.extra["counts"]["blocks"])
+            bar(total or 0, total, motions=profile.motions, blocks=profile.blocks)
         else:
             bar(total or 0, total)
-    return replace(quick, budget_s=limits.budget_s,
-                   timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
-                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
-                   machine_sha256=machine.sha256, settings=settings, file=source.name)
+    return run, result
 
 
 def _spindle_check(machine: Machine, run: Interpretation) -> Any:
@@ -577,9 +568,11 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     while cases:
         box = cases.pop(0)
         case_machine, case_ranges = centred(machine, box) if box else (machine, box)
-        run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
+        run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile) if not fast else (None, None)
+        if run is None or result is None:  # the short Fanuc route declined (or does not apply): the full path
+            run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
+            result = _verify_run(run, case_machine, replace(options, params=case_ranges), progress, profile)
         interpretations += 1
-        result = _verify_run(run, case_machine, replace(options, params=case_ranges), progress, profile)
         for runner in run.runners:  # the Fanuc language layer: the block-skip switches its lines use
             seen |= getattr(runner, "seen_switches", set())
         if case_ranges and result.violations:

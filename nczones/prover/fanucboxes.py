@@ -184,7 +184,7 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
 
     if started is None:
         started = time.perf_counter()
-    if not boxes_apply(machine) or run.dialect != "fanuc":
+    if not boxes_apply(machine) or run.dialect != "fanuc" or margin < 0:  # a negative margin: the full path's error
         return None
     axes = tuple(machine.axis_names)
     interp = run.interpreter
