@@ -205,3 +205,45 @@ def test_no_numpy_on_the_route():
 def test_a_late_run_that_leaves_the_zone(body, reps):
     """The exit comes in a later run of rows than the first: unsafe on both sides, the route does not answer."""
     assert _agree(_program(body, reps, "while"), _MACHINES["box"]) == ("unsafe", False)
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Wrong-safe hunt: hunt36b's generator of loops (tests/gcode/fanuc/test_lane_hunt.py: frames, G91, G68, G51, work
+# offsets and tool lengths changed in the loop, calls, GOTO, system variables) on the three machines above (the
+# travel box whose faces the programs touch and cross, a clamp, a tip probe under H1/H2).  The relation is
+# _agree's.  CI: a few examples; ``-m long``: the counts in specs/contract.md "Where features meet: fanucsmall36".
+
+#: what the hunt met: (machine, verdict, the route answered) -> programs
+HUNT: dict[tuple[str, str, bool], int] = {}
+
+
+def _hunt(pieces: tuple, machine: str) -> None:
+    from tests.gcode.fanuc.test_lane_hunt import _program as lane_program
+
+    verdict, taken = _agree(lane_program(*pieces), _MACHINES[machine])
+    HUNT[(machine, verdict, taken)] = HUNT.get((machine, verdict, taken), 0) + 1
+
+
+def _hunt_pieces():
+    from tests.gcode.fanuc.test_lane_hunt import _pieces
+
+    return st.tuples(*_pieces(jumps=True))
+
+
+@settings(max_examples=6, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_hunt_pieces(), st.sampled_from(sorted(_MACHINES)))
+def test_hunt_few(pieces, machine):
+    _hunt(pieces, machine)
+
+
+@pytest.mark.long
+@settings(max_examples=400, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_hunt_pieces(), st.sampled_from(sorted(_MACHINES)))
+def test_hunt_long(pieces, machine):
+    _hunt(pieces, machine)
+
+
+@pytest.mark.long
+def test_hunt_long_counts():
+    """Prints what test_hunt_long met (run after it: ``-m long -s``)."""
+    print({f"{m} {v} {'route' if t else 'today'}": n for (m, v, t), n in sorted(HUNT.items())})
