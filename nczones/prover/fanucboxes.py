@@ -87,7 +87,8 @@ class BoxWalk:
         """Follow one chunk of the interpretation (raises :class:`_Declined` on what is not modelled)."""
         if not isinstance(chunk, MotionChunk) or chunk.scale is not None:
             raise _Declined  # column chunks come from the vectorized path, which this walk does not take
-        for item in chunk.objects or ():
+        items: Any = chunk.objects or ()  # segments and runs of rows (nczones.gcode.fanuc.columns.Rows)
+        for item in items:
             if type(item) is Rows:
                 self._rows(item)
             else:
