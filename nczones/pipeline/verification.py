@@ -266,6 +266,10 @@ def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions
         return None, None
     if result is None:
         return None, None
+    if run.unsupported:  # codes not modelled (a loop past its bound): unknown, as the full path says it
+        wanted = [u.span.line for u in run.unsupported if u.span is not None and not u.span.text and u.span.line >= 1]
+        reasons = tuple(_unsupported_reasons(run, source_lines(run.text, wanted)))
+        result = replace(result, verdict=Verdict.UNKNOWN, reasons=reasons)
     profile.motions += run.counts["segments"]
     profile.blocks = max(profile.blocks, run.counts["blocks"])
     if progress is not None:  # done at once: the bar's last step
@@ -700,12 +704,7 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
     source_text = source_lines(run.text, wanted)
     violations = tuple(replace(v, span=_fix_span(v.span, source_text)) for v in result.violations)
     reasons = list(replace(r, span=_fix_span(r.span, source_text)) for r in result.reasons)
-    from ..gcode.dialects import unknown_hint
-
-    for u in run.unsupported:
-        span = _fix_span(u.span, source_text)
-        hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
-        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, reason_code(u.code)))
+    reasons += _unsupported_reasons(run, source_text)
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes()) + tuple(result.notes)  # + solids' clearances
     if run.counts.get("spline"):
         notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "
@@ -713,6 +712,19 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
                   "curves into biarcs) may deviate from it, see specs/gcode-support.md",)
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
     return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes)
+
+
+def _unsupported_reasons(run: Interpretation, source_text: dict[int, str]) -> list[Reason]:
+    """A reason for each code the run could not model (``run.unsupported``), with its line's text and hint;
+    ``source_text``: the text of the lines wanted (:func:`source_lines`)."""
+    from ..gcode.dialects import unknown_hint
+
+    reasons = []
+    for u in run.unsupported:
+        span = _fix_span(u.span, source_text)
+        hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
+        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, reason_code(u.code)))
+    return reasons
 
 
 def _run_motion(run: Interpretation, machine: Machine, options: VerifyOptions) -> Iterable[Any]:

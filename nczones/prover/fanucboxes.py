@@ -27,10 +27,13 @@ Why a fitting box proves the program ``safe`` (the same model as the full path, 
 Anything else declines (None: the caller runs today's path, which decides as if this had not been tried): a box
 that does not fit (no split: a run's hull needs one box that holds the whole run), a motion kind other than a
 line, rapid, arc or dwell, a segment with a payload (lathe tip offsets, turret tools, polar, splines) or
-dependencies, a two-axis machine (a lathe), tool solids, a code the interpreter could not model, an error while
-reading, a block-skip switch the run met.  The pipeline tries this only where it applies
-(``pipeline.verification._fanuc_boxes_first``) and reports the facts the full path reports (the run's notes, the
-assumed modes, counts).  ``tests/prover/test_fanuc_boxes.py`` holds its verdicts to the full path's.
+dependencies, a two-axis machine (a lathe), tool solids, an error while reading, a block-skip switch the run
+met.  A code the interpreter could not model (``run.unsupported``: a loop past its bound, say) ends the motion
+there as it ends it for the full path: the box proves every motion read, and the pipeline makes the verdict
+``unknown`` with the full path's reasons for those codes (``pipeline.verification._fanuc_boxes``, one case of
+``_verify_cases``), so a long loop that ends ``unknown`` is not read twice.  The pipeline reports the facts the
+full path reports (the run's notes, the assumed modes, counts, its own notes).  ``tests/prover/
+test_fanuc_boxes.py`` holds its verdicts, reasons and notes to the full path's.
 """
 
 from __future__ import annotations
@@ -174,9 +177,9 @@ def _on_start_ray(seg: Segment) -> bool:
 
 def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | None = None, *,
                 rows: bool = True) -> Result | None:
-    """A ``safe`` result for the interpretation ``run`` (read by the full interpreter, not the vectorized path) on
-    ``machine`` with ``margin``, or None when the route declines (module docstring); the notes and counts are
-    the run's, as the full path reports them.  ``rows``: the interpreter's plain lane writes its straight moves
+    """A ``safe`` result for the motion of the interpretation ``run`` (read by the full interpreter, not the
+    vectorized path) on ``machine`` with ``margin``, or None when the route declines (module docstring); the notes
+    and counts are the run's, as the full path reports them (the caller adds the reasons of ``run.unsupported``).  ``rows``: the interpreter's plain lane writes its straight moves
     as rows (no segment each).  The box is tested after every chunk (it only grows): the first chunk that makes
     it leave the allowed set stops the walk, so a program this route cannot prove costs little of a second
     reading."""
@@ -209,7 +212,7 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
             proved = (lo, hi, tls)
     except _Declined:
         return None
-    if run.unsupported or any(getattr(r, "seen_switches", None) for r in run.runners):
+    if any(getattr(r, "seen_switches", None) for r in run.runners):
         return None
     n = walk.motions
     seconds = time.perf_counter() - started
