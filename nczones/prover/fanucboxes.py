@@ -1,13 +1,14 @@
 """``safe`` for a Fanuc program without numpy: the box of every motion, proved exactly (issue 36).
 
 A Fanuc program that needs the language layer (Macro B loops, G65/M98 calls) and is short as text is read by
-the full interpreter alone (``pipeline.verification.FAST_PATH_MIN_LINES``); its plain lane writes runs of straight
-moves as rows (:class:`nczones.gcode.fanuc.columns.Rows`: Python lists of exact integers, coordinates times
-``10**SCALE``).  Today's path turns those rows into numpy column chunks and screens them; loading numpy alone
-costs more than rs274 takes for a 10,000-line run.  :func:`prove_boxes` instead follows the interpretation's
-motion with no numpy: it keeps the exact box of every position the program commands, and tests that box with
-the exact box test of the per-motion proof (:func:`nczones.prover.exact.box_fits`, every zone kind, the margin)
-at every tool length the program used.
+the full interpreter alone (``pipeline.verification.FAST_PATH_MIN_LINES``); for today's path its plain lane writes
+runs of straight moves as rows (:class:`nczones.gcode.fanuc.columns.Rows`: Python lists of exact integers,
+coordinates times ``10**SCALE``), which become numpy column chunks; loading numpy alone costs more than rs274
+takes for a 10,000-line run.  :func:`prove_boxes` instead follows the interpretation's motion with no numpy: the
+lane writes each run's exact box only (:class:`~nczones.gcode.fanuc.columns.BoxRows`, the same scaled integers),
+the other motions come as segments, and the exact box of every position the program commands is tested with the
+exact box test of the per-motion proof (:func:`nczones.prover.exact.box_fits`, every zone kind, the margin) at
+every tool length the program used.
 
 Why a fitting box proves the program ``safe`` (the same model as the full path, never more):
 
@@ -43,7 +44,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import InvalidArgument
-from ..gcode.fanuc.columns import SCALE, Rows
+from ..gcode.fanuc.columns import SCALE, BoxRows, Rows
 from ..machine import Machine, declares_solids
 from ..motion import MotionChunk, Segment, SegmentKind
 from .exact import box_fits
@@ -54,6 +55,9 @@ __all__ = ["prove_boxes", "BoxWalk", "boxes_apply"]
 _UNIT = 10**SCALE
 #: Whether the pipeline tries this route (tests of today's lanes turn it off: tests/gcode/fanuc/conftest.py).
 ROUTE = True
+#: The lane's runs as :class:`~nczones.gcode.fanuc.columns.Rows` (lists of every row) instead of their boxes
+#: (:class:`~nczones.gcode.fanuc.columns.BoxRows`); tests compare the two.
+ROWS_AS_LISTS = False
 _LINE, _RAPID, _ARC, _DWELL = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC, SegmentKind.DWELL
 
 
@@ -92,7 +96,9 @@ class BoxWalk:
             raise _Declined  # column chunks come from the vectorized path, which this walk does not take
         items: Any = chunk.objects or ()  # segments and runs of rows (nczones.gcode.fanuc.columns.Rows)
         for item in items:
-            if type(item) is Rows:
+            if type(item) is BoxRows:
+                self._box_rows(item)
+            elif type(item) is Rows:
                 self._rows(item)
             else:
                 self._segment(item)
@@ -114,6 +120,18 @@ class BoxWalk:
         self.tl_rows.update(rows.tls.values())
         self.motions += len(rows)
         self.rows += len(rows)
+
+    def _box_rows(self, rows: BoxRows) -> None:
+        lo, hi = self.lo_rows, self.hi_rows
+        for i in range(self.width):
+            a, b = rows.lo[i], rows.hi[i]
+            if lo[i] is None or a < lo[i]:
+                lo[i] = a
+            if hi[i] is None or b > hi[i]:
+                hi[i] = b
+        self.tl_rows.update(rows.tls)
+        self.motions += rows.count
+        self.rows += rows.count
 
     def _segment(self, seg: Segment) -> None:
         kind = seg.kind
@@ -183,7 +201,7 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
     as rows (no segment each).  The box is tested after every chunk (it only grows): the first chunk that makes
     it leave the allowed set stops the walk, so a program this route cannot prove costs little of a second
     reading."""
-    from ..gcode.fanuc.columns import MAX_ROWS, RowSink
+    from ..gcode.fanuc.columns import MAX_ROWS, BoxSink, RowSink
     from .smt import z3_version
 
     if started is None:
@@ -193,7 +211,8 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
     axes = tuple(machine.axis_names)
     interp = run.interpreter
     if rows and getattr(interp, "fused_lane", False) and tuple(interp.axes) == axes:
-        interp.row_sink = RowSink(axes, interp.file, 0, MAX_ROWS)
+        # the lane writes each run's box (BoxRows); ROWS_AS_LISTS: its rows as lists (Rows), the same box
+        interp.row_sink = (RowSink if ROWS_AS_LISTS else BoxSink)(axes, interp.file, 0, MAX_ROWS)
     walk = BoxWalk(axes)
     allowed = machine.allowed
     proved: tuple[Any, ...] = ()

@@ -1,7 +1,7 @@
 """The numpy-free box route of short Fanuc programs (nczones/prover/fanucboxes.py, issue 36) against today's path.
 
-Relation (both sides computed by nczones): ``verify`` with the route (``fanucboxes.ROUTE``) and without it give the
-same verdict, violations, reasons, notes and motion count; when the route answers (its ``fanuc_boxes`` count is
+Relation (both sides computed by nczones): ``verify`` with the route (``fanucboxes.ROUTE``; the lane's runs as
+their boxes, ``BoxRows``, or as rows, ``ROWS_AS_LISTS``) and without it give the same verdict, violations, reasons, notes and motion count; when the route answers (its ``fanuc_boxes`` count is
 in the stats) the answer is ``safe``, or ``unknown`` for a code not modelled that ended the motion (a loop past
 its bound: every motion read was proved), as today's path says.  The route may decline where today's path
 proves ``safe`` (its boxes are coarser), never the other way round.
@@ -77,9 +77,10 @@ def _program(body: list[str], reps: int, form: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _verified(text: str, machine, route: bool) -> tuple:
+def _verified(text: str, machine, route: bool, lists: bool = False) -> tuple:
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(fanucboxes, "ROUTE", route)
+        mp.setattr(fanucboxes, "ROWS_AS_LISTS", lists)
         try:
             r = verify_text(text, machine, file="t.nc")
         except GcodeError as e:
@@ -95,6 +96,7 @@ def _agree(text: str, machine) -> tuple[str, bool]:
     routed, taken = _verified(text, machine, True)
     assert not taken_today
     assert routed == today
+    assert _verified(text, machine, True, lists=True) == (routed, taken)  # the lane's runs as rows: the same
     if taken:  # the route proves every motion read: safe, or unknown for a code not modelled (a loop bound)
         assert today[0] == "safe" or (today[0] == "unknown" and today[2])
     return str(today[0]), taken
@@ -271,3 +273,17 @@ def test_a_loop_past_its_bound_is_unknown_once():
     assert (routed.verdict.label, routed.reasons, routed.notes) == (today.verdict.label, today.reasons, today.notes)
     assert routed.verdict.label == "unknown" and [r.code for r in routed.reasons] == ["GC390"]
     assert dict(routed.stats)["segments"] == dict(today.stats)["segments"] == 1001  # the G00 and 1,000 moves
+
+
+def test_a_tool_length_only_rows_carry():
+    """``G43 H1`` alone (no motion: only the lane's rows after it carry H1 = 100).  Program Z-95. is machine
+    Z -95 - 200 + 100 = -195 (inside the travel box's -201), its tip -195 - 100 = -295, in the probe's -300..-290,
+    at machine X 100 + 40 = 140 in the probe's 130..150: unsafe on both sides, and the route, whose box must be
+    tested at H1, does not answer.  (The lane sends the first move after a G43 through the general path, so a
+    segment carries H1 too: a BoxRows that forgot its rows' lengths is not caught here; it records them.)"""
+    text = ("O1\nG90 G17 G21 G54 F500.\nG00 X0. Y0. Z0.\nG43 H1\n#1 = 0\nWHILE [#1 LT 3] DO1\nG01 X[#1 * 10 + 20] Y5.\n"
+            "G01 Z-95.\nG01 Z0.\n#1 = #1 + 1\nEND1\nM30\n")
+    assert _agree(text, _MACHINES["probe"]) == ("unsafe", False)
+    # the same machine positions without the G43 (Z5. is machine -195): the tip is the machine point, Z >= -195,
+    # above the probe: safe, and the route answers
+    assert _agree(text.replace("G43 H1\n", "").replace("Z-95.", "Z5."), _MACHINES["probe"]) == ("safe", True)
