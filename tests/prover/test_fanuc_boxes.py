@@ -8,8 +8,8 @@ proves ``safe`` (its boxes are coarser), never the other way round.
 
 The test mill (tests/gcode/fanuc/helpers.py): G54 = (100, 50, -200), H1 = 100, H2 = 150.5; Fanuc G43 adds H to the
 programmed Z.  Its zone here: machine X -10..150, Y -10..90, Z -201..0, so program X50. (machine 150), Y40.
-(machine 90) and Z-1. (machine -201) lie on its faces; optional: a forbidden clamp (controlled point) and a
-forbidden tip probe (the tip is the machine point less the tool length on Z).
+(machine 90) and Z-1. (machine -201) lie on its faces; optional: a forbidden clamp (controlled point), a
+forbidden tip probe (the tip is the machine point less the tool length on Z) or a forbidden triangle (a polygon).
 """
 
 from __future__ import annotations
@@ -36,8 +36,11 @@ _CLAMP = ('\n[[zones]]\nname = "clamp"\nkind = "box"\nforbid = true\n'
 # the Z floor: at H1 machine Z -201..-190 (program Z -1. .. 10.) puts the tip at -301..-290
 _PROBE = ('\n[[zones]]\nname = "probe"\nkind = "box"\nforbid = true\npoint = "tip"\n'
           'min = { X = "130", Y = "-1000", Z = "-300" }\nmax = { X = "150", Y = "1000", Z = "-290" }\n')
+# a forbidden triangle in X/Y (program X 20..30, Y 10..20), polygon zones being proved by their own box test
+_TRIANGLE = ('\n[[zones]]\nname = "triangle"\nkind = "polygon"\nforbid = true\nplane = ["X", "Y"]\n'
+             'vertices = [["120", "60"], ["130", "60"], ["125", "70"]]\n')
 _MACHINES = {name: mill(tables=_TRAVEL + extra) for name, extra in
-             (("box", ""), ("clamp", _CLAMP), ("probe", _PROBE))}
+             (("box", ""), ("clamp", _CLAMP), ("probe", _PROBE), ("triangle", _TRIANGLE))}
 
 #: motions inside the zone (#1 is the loop counter, 0 .. reps - 1)
 _MOVES = [
