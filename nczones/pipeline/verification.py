@@ -249,15 +249,22 @@ def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions
     """One case of a short Fanuc program proved by the box of its motion without numpy
     (:mod:`nczones.prover.fanucboxes`): (its interpretation, its result), or (None, None) when that route does not
     apply or declines (the case is then interpreted again and proved by the full path, as if it had not run)."""
-    from ..prover.fanucboxes import boxes_apply, prove_boxes
+    from ..prover import fanucboxes
 
-    if (options.engine != "auto" or options.params or not boxes_apply(machine)
+    if (options.engine != "auto" or options.params or not fanucboxes.boxes_apply(machine)
             or _line_count(source.text) >= FAST_PATH_MIN_LINES or options.effective_dialect(machine) != "fanuc"):
         return None, None
+    from ..gcode.fanuc.columns import MAX_ROWS, BoxSink, RowSink
+
     started = time.perf_counter()
     run = interpretation(source, machine, options, skip=skip, fast=False)  # lazy (the full path's call): nothing read
+    interp: Any = run.interpreter
+    if getattr(interp, "fused_lane", False) and tuple(interp.axes) == tuple(machine.axis_names):
+        # the plain lane writes each run's box (BoxRows; ROWS_AS_LISTS: its rows, Rows), no segment a move
+        sink = RowSink if fanucboxes.ROWS_AS_LISTS else BoxSink
+        interp.row_sink = sink(tuple(interp.axes), interp.file, 0, MAX_ROWS)
     try:
-        result = prove_boxes(run, machine, options.margin, started)
+        result = fanucboxes.prove_boxes(run, machine, options.margin, started)
     except KeyboardInterrupt:
         return run, Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
             f"interrupted (Ctrl-C) after {time.perf_counter() - started:.1f} s: the program was not checked", None,

@@ -5,8 +5,9 @@ the full interpreter alone (``pipeline.verification.FAST_PATH_MIN_LINES``); for 
 runs of straight moves as rows (:class:`nczones.gcode.fanuc.columns.Rows`: Python lists of exact integers,
 coordinates times ``10**SCALE``), which become numpy column chunks; loading numpy alone costs more than rs274
 takes for a 10,000-line run.  :func:`prove_boxes` instead follows the interpretation's motion with no numpy: the
-lane writes each run's exact box only (:class:`~nczones.gcode.fanuc.columns.BoxRows`, the same scaled integers),
-the other motions come as segments, and the exact box of every position the program commands is tested with the
+lane writes each run's exact box only (``nczones.gcode.fanuc.columns.BoxRows``, the same scaled integers; the
+pipeline gives the interpreter that sink, and this module reads a run through its ``bounds()``, importing no
+program reader: the import contract of the prover), the other motions come as segments, and the exact box of every position the program commands is tested with the
 exact box test of the per-motion proof (:func:`nczones.prover.exact.box_fits`, every zone kind, the margin) at
 every tool length the program used.
 
@@ -44,7 +45,6 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import InvalidArgument
-from ..gcode.fanuc.columns import SCALE, BoxRows, Rows
 from ..machine import Machine, declares_solids
 from ..motion import MotionChunk, Segment, SegmentKind
 from .exact import box_fits
@@ -52,11 +52,10 @@ from .result import Result, Verdict
 
 __all__ = ["prove_boxes", "BoxWalk", "boxes_apply"]
 
-_UNIT = 10**SCALE
 #: Whether the pipeline tries this route (tests of today's lanes turn it off: tests/gcode/fanuc/conftest.py).
 ROUTE = True
-#: The lane's runs as :class:`~nczones.gcode.fanuc.columns.Rows` (lists of every row) instead of their boxes
-#: (:class:`~nczones.gcode.fanuc.columns.BoxRows`); tests compare the two.
+#: The lane's runs as ``nczones.gcode.fanuc.columns.Rows`` (lists of every row) instead of their boxes
+#: (``columns.BoxRows``), as the pipeline sets the interpreter's sink; tests compare the two.
 ROWS_AS_LISTS = False
 _LINE, _RAPID, _ARC, _DWELL = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC, SegmentKind.DWELL
 
@@ -73,20 +72,14 @@ class _Declined(Exception):
 
 
 class BoxWalk:
-    """The exact box of every position of an interpretation's motion, and its tool lengths.
-
-    The rows' coordinates are kept as integers at ``10**SCALE`` (``lo_rows``/``hi_rows``), the segments' as
-    Fractions (``lo``/``hi``); :meth:`box` joins them."""
+    """The exact box of every position of an interpretation's motion, and its tool lengths (Fractions)."""
 
     def __init__(self, axes: tuple[str, ...]) -> None:
         self.axes = axes
         self.width = len(axes)
         self.lo: list[Any] = [None] * self.width
         self.hi: list[Any] = [None] * self.width
-        self.lo_rows: list[Any] = [None] * self.width
-        self.hi_rows: list[Any] = [None] * self.width
         self.tls: set[Fraction] = set()
-        self.tl_rows: set[int] = set()
         self.motions = 0
         self.rows = 0
 
@@ -94,44 +87,30 @@ class BoxWalk:
         """Follow one chunk of the interpretation (raises :class:`_Declined` on what is not modelled)."""
         if not isinstance(chunk, MotionChunk) or chunk.scale is not None:
             raise _Declined  # column chunks come from the vectorized path, which this walk does not take
-        items: Any = chunk.objects or ()  # segments and runs of rows (nczones.gcode.fanuc.columns.Rows)
+        items: Any = chunk.objects or ()  # segments and runs of the plain lane (columns.BoxRows or Rows)
         for item in items:
-            if type(item) is BoxRows:
-                self._box_rows(item)
-            elif type(item) is Rows:
-                self._rows(item)
-            else:
+            if isinstance(item, Segment):
                 self._segment(item)
+            else:
+                self._run(item)
 
-    def _rows(self, rows: Rows) -> None:
-        w = self.width
-        ends = rows.ends
-        lo, hi = self.lo_rows, self.hi_rows
-        first = rows.first_row
-        for i in range(w):
-            col = ends[i::w]
-            a, b = min(col), max(col)
-            f = first[i]
-            a, b = min(a, f), max(b, f)
-            if lo[i] is None or a < lo[i]:
-                lo[i] = a
-            if hi[i] is None or b > hi[i]:
-                hi[i] = b
-        self.tl_rows.update(rows.tls.values())
-        self.motions += len(rows)
-        self.rows += len(rows)
-
-    def _box_rows(self, rows: BoxRows) -> None:
-        lo, hi = self.lo_rows, self.hi_rows
+    def _run(self, run: Any) -> None:
+        """A run of the plain lane: its ``bounds()`` (scaled box, tool lengths, rows, scale) joins the box."""
+        bounds = getattr(run, "bounds", None)
+        if bounds is None:
+            raise _Declined
+        r_lo, r_hi, tls, count, scale = bounds()
+        unit = 10**scale
+        lo, hi = self.lo, self.hi
         for i in range(self.width):
-            a, b = rows.lo[i], rows.hi[i]
+            a, b = Fraction(r_lo[i], unit), Fraction(r_hi[i], unit)
             if lo[i] is None or a < lo[i]:
                 lo[i] = a
             if hi[i] is None or b > hi[i]:
                 hi[i] = b
-        self.tl_rows.update(rows.tls)
-        self.motions += rows.count
-        self.rows += rows.count
+        self.tls.update(Fraction(v, unit) for v in tls)
+        self.motions += count
+        self.rows += count
 
     def _segment(self, seg: Segment) -> None:
         kind = seg.kind
@@ -167,19 +146,11 @@ class BoxWalk:
         """The box of every position (by axis), None when there was no motion."""
         if not self.motions:
             return None
-        lo: dict[str, Fraction] = {}
-        hi: dict[str, Fraction] = {}
-        for i, a in enumerate(self.axes):
-            los = [x for x in (self.lo[i], None if self.lo_rows[i] is None else Fraction(self.lo_rows[i], _UNIT))
-                   if x is not None]
-            his = [x for x in (self.hi[i], None if self.hi_rows[i] is None else Fraction(self.hi_rows[i], _UNIT))
-                   if x is not None]
-            lo[a], hi[a] = min(los), max(his)
-        return lo, hi
+        return dict(zip(self.axes, self.lo)), dict(zip(self.axes, self.hi))
 
     def tool_lengths(self) -> set[Fraction]:
         """Every tool length a motion carried."""
-        return self.tls | {Fraction(v, _UNIT) for v in self.tl_rows}
+        return self.tls
 
 
 def _on_start_ray(seg: Segment) -> bool:
@@ -193,27 +164,21 @@ def _on_start_ray(seg: Segment) -> bool:
     return u != w and u[0] * w[1] - u[1] * w[0] == 0 and u[0] * w[0] + u[1] * w[1] > 0
 
 
-def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | None = None, *,
-                rows: bool = True) -> Result | None:
+def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | None = None) -> Result | None:
     """A ``safe`` result for the motion of the interpretation ``run`` (read by the full interpreter, not the
     vectorized path) on ``machine`` with ``margin``, or None when the route declines (module docstring); the notes
-    and counts are the run's, as the full path reports them (the caller adds the reasons of ``run.unsupported``).  ``rows``: the interpreter's plain lane writes its straight moves
-    as rows (no segment each).  The box is tested after every chunk (it only grows): the first chunk that makes
-    it leave the allowed set stops the walk, so a program this route cannot prove costs little of a second
-    reading."""
-    from ..gcode.fanuc.columns import MAX_ROWS, BoxSink, RowSink
+    and counts are the run's, as the full path reports them (the caller adds the reasons of ``run.unsupported``).
+    The caller gives the interpreter's plain lane a sink whose runs have ``bounds()``
+    (``nczones.gcode.fanuc.columns.BoxSink``: no segment per straight move).  The box is tested after every chunk
+    (it only grows): the first chunk that makes it leave the allowed set stops the walk, so a program this route
+    cannot prove costs little of a second reading."""
     from .smt import z3_version
 
     if started is None:
         started = time.perf_counter()
     if not boxes_apply(machine) or run.dialect != "fanuc" or margin < 0:  # a negative margin: the full path's error
         return None
-    axes = tuple(machine.axis_names)
-    interp = run.interpreter
-    if rows and getattr(interp, "fused_lane", False) and tuple(interp.axes) == axes:
-        # the lane writes each run's box (BoxRows); ROWS_AS_LISTS: its rows as lists (Rows), the same box
-        interp.row_sink = (RowSink if ROWS_AS_LISTS else BoxSink)(axes, interp.file, 0, MAX_ROWS)
-    walk = BoxWalk(axes)
+    walk = BoxWalk(tuple(machine.axis_names))
     allowed = machine.allowed
     proved: tuple[Any, ...] = ()
     try:

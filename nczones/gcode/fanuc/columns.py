@@ -284,6 +284,14 @@ class Rows:
             start = end
         return out
 
+    def bounds(self) -> tuple[list[int], list[int], set[int], int, int]:
+        """The run's box as :meth:`BoxRows.bounds` gives it (the start and every row's end)."""
+        w = len(self.axes)
+        ends, first = self.ends, self.first_row
+        lo = [min(min(ends[i::w]), first[i]) for i in range(w)]
+        hi = [max(max(ends[i::w]), first[i]) for i in range(w)]
+        return lo, hi, set(self.tls.values()), len(self.args), SCALE
+
     def chunk(self) -> MotionChunk:
         """The rows as a column chunk whose ``objects`` are their segments, built when read."""
         import numpy as np
@@ -375,6 +383,10 @@ class BoxRows:
 
     def __len__(self) -> int:
         return self.count
+
+    def bounds(self) -> tuple[list[int], list[int], set[int], int, int]:
+        """(least and greatest coordinate per axis, the tool lengths, all at ``10**-scale``; the rows; the scale)."""
+        return self.lo, self.hi, self.tls, self.count, SCALE
 
 
 class BoxSink(RowSink):
