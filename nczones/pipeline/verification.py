@@ -249,9 +249,10 @@ def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions
     """One case of a short Fanuc program proved by the box of its motion without numpy
     (:mod:`nczones.prover.fanucboxes`): (its interpretation, its result), or (None, None) when that route does not
     apply or declines (the case is then interpreted again and proved by the full path, as if it had not run)."""
-    from ..prover import fanucboxes
+    # read at each call (tests switch them): the module's flags and its proof
+    from ..prover.fanucboxes import ROWS_AS_LISTS, boxes_apply, prove_boxes
 
-    if (options.engine != "auto" or options.params or not fanucboxes.boxes_apply(machine)
+    if (options.engine != "auto" or options.params or not boxes_apply(machine)
             or _line_count(source.text) >= FAST_PATH_MIN_LINES or options.effective_dialect(machine) != "fanuc"):
         return None, None
     from ..gcode.fanuc.columns import MAX_ROWS, BoxSink, RowSink
@@ -261,10 +262,10 @@ def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions
     interp: Any = run.interpreter
     if getattr(interp, "fused_lane", False) and tuple(interp.axes) == tuple(machine.axis_names):
         # the plain lane writes each run's box (BoxRows; ROWS_AS_LISTS: its rows, Rows), no segment a move
-        sink = RowSink if fanucboxes.ROWS_AS_LISTS else BoxSink
+        sink = RowSink if ROWS_AS_LISTS else BoxSink
         interp.row_sink = sink(tuple(interp.axes), interp.file, 0, MAX_ROWS)
     try:
-        result = fanucboxes.prove_boxes(run, machine, options.margin, started)
+        result = prove_boxes(run, machine, options.margin, started)
     except KeyboardInterrupt:
         return run, Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
             f"interrupted (Ctrl-C) after {time.perf_counter() - started:.1f} s: the program was not checked", None,
