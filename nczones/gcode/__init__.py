@@ -144,11 +144,15 @@ class Interpretation:
         cls: type[Interpreter]
         lathe = False
         if dialect == "fanuc":
-            from .fanuc.interpreter import FanucInterpreter
-            from .fanuc.lathe import FanucLatheInterpreter
-
             cylindrical = False
-            cls = FanucLatheInterpreter if machine.is_lathe else FanucInterpreter
+            if machine.is_lathe:  # the lathe module (polar, turning) only for a lathe: a mill's start-up skips it
+                from .fanuc.lathe import FanucLatheInterpreter
+
+                cls = FanucLatheInterpreter
+            else:
+                from .fanuc.interpreter import FanucInterpreter
+
+                cls = FanucInterpreter
         else:
             from .mentions import uses_cylindrical, uses_lathe
 

@@ -244,6 +244,52 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
                    machine_sha256=machine.sha256, settings=settings, file=source.name)
 
 
+def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],
+                 progress: Callable[..., object] | None, profile: RunProfile) -> tuple[Any, Result | None]:
+    """One case of a short Fanuc program proved by the box of its motion without numpy
+    (:mod:`nczones.prover.fanucboxes`): (its interpretation, its result), or (None, None) when that route does not
+    apply or declines (the case is then interpreted again and proved by the full path, as if it had not run)."""
+    # read at each call (tests switch them): the module's flags and its proof
+    from ..prover.fanucboxes import ROWS_AS_LISTS, boxes_apply, prove_boxes
+
+    if (options.engine != "auto" or options.params or not boxes_apply(machine)
+            or _line_count(source.text) >= FAST_PATH_MIN_LINES or options.effective_dialect(machine) != "fanuc"):
+        return None, None
+    from ..gcode.fanuc.columns import MAX_ROWS, BoxSink, RowSink
+
+    started = time.perf_counter()
+    run = interpretation(source, machine, options, skip=skip, fast=False)  # lazy (the full path's call): nothing read
+    interp: Any = run.interpreter
+    if getattr(interp, "fused_lane", False) and tuple(interp.axes) == tuple(machine.axis_names):
+        # the plain lane writes each run's box (BoxRows; ROWS_AS_LISTS: its rows, Rows), no segment a move
+        sink = RowSink if ROWS_AS_LISTS else BoxSink
+        interp.row_sink = sink(tuple(interp.axes), interp.file, 0, MAX_ROWS)
+    try:
+        result = prove_boxes(run, machine, options.margin, started)
+    except KeyboardInterrupt:
+        return run, Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
+            f"interrupted (Ctrl-C) after {time.perf_counter() - started:.1f} s: the program was not checked", None,
+            None, "VF204"),), interrupted=True, margin=options.margin, engine=options.engine)
+    except Exception:  # noqa: BLE001 - any error: the full path reads the case again and reports it as it does
+        return None, None
+    if result is None:
+        return None, None
+    if run.unsupported:  # codes not modelled (a loop past its bound): unknown, as the full path says it
+        wanted = [u.span.line for u in run.unsupported if u.span is not None and not u.span.text and u.span.line >= 1]
+        reasons = tuple(_unsupported_reasons(run, source_lines(run.text, wanted)))
+        result = replace(result, verdict=Verdict.UNKNOWN, reasons=reasons)
+    profile.motions += run.counts["segments"]
+    profile.blocks = max(profile.blocks, run.counts["blocks"])
+    if progress is not None:  # done at once: the bar's last step
+        total = _line_count(source.text) or None
+        bar: Any = progress
+        if getattr(bar, "counts", False):
+            bar(total or 0, total, motions=profile.motions, blocks=profile.blocks)
+        else:
+            bar(total or 0, total)
+    return run, result
+
+
 def _spindle_check(machine: Machine, run: Interpretation) -> Any:
     """The check that the tool in the spindle is the one the solids take (:class:`~nczones.prover.solids.
     SpindleToolCheck`), on a machine with tool solids; None otherwise (nothing of the solids is imported)."""
@@ -534,9 +580,11 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     while cases:
         box = cases.pop(0)
         case_machine, case_ranges = centred(machine, box) if box else (machine, box)
-        run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
+        run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile) if not fast else (None, None)
+        if run is None or result is None:  # the short Fanuc route declined (or does not apply): the full path
+            run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
+            result = _verify_run(run, case_machine, replace(options, params=case_ranges), progress, profile)
         interpretations += 1
-        result = _verify_run(run, case_machine, replace(options, params=case_ranges), progress, profile)
         for runner in run.runners:  # the Fanuc language layer: the block-skip switches its lines use
             seen |= getattr(runner, "seen_switches", set())
         if case_ranges and result.violations:
@@ -664,12 +712,7 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
     source_text = source_lines(run.text, wanted)
     violations = tuple(replace(v, span=_fix_span(v.span, source_text)) for v in result.violations)
     reasons = list(replace(r, span=_fix_span(r.span, source_text)) for r in result.reasons)
-    from ..gcode.dialects import unknown_hint
-
-    for u in run.unsupported:
-        span = _fix_span(u.span, source_text)
-        hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
-        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, reason_code(u.code)))
+    reasons += _unsupported_reasons(run, source_text)
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes()) + tuple(result.notes)  # + solids' clearances
     if run.counts.get("spline"):
         notes += (f"{run.counts['spline']} spline/NURBS motion(s) (G5, G5.1, G5.2, G6.2) were proved on the exact "
@@ -677,6 +720,19 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
                   "curves into biarcs) may deviate from it, see specs/gcode-support.md",)
     verdict = Verdict.UNSAFE if violations else (Verdict.UNKNOWN if reasons else Verdict.SAFE)
     return replace(result, verdict=verdict, violations=violations, reasons=tuple(reasons), notes=notes)
+
+
+def _unsupported_reasons(run: Interpretation, source_text: dict[int, str]) -> list[Reason]:
+    """A reason for each code the run could not model (``run.unsupported``), with its line's text and hint;
+    ``source_text``: the text of the lines wanted (:func:`source_lines`)."""
+    from ..gcode.dialects import unknown_hint
+
+    reasons = []
+    for u in run.unsupported:
+        span = _fix_span(u.span, source_text)
+        hint = unknown_hint(u.code, span.text, run.dialect) if span is not None and span.text else ""
+        reasons.append(Reason(f"{u.code}: {u.reason}{hint}", span, None, reason_code(u.code)))
+    return reasons
 
 
 def _run_motion(run: Interpretation, machine: Machine, options: VerifyOptions) -> Iterable[Any]:

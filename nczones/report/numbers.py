@@ -114,6 +114,7 @@ _WORDS = (
     ("recovery_proved_legs", "{n} recovery leg{s} proved"),
     ("recovery_queries", "{n} recovery solver quer{ies}"),
     ("double_pass_boxes", "{n} box{es} of the double pass"),
+    ("fanuc_boxes", "{n} box{es} of the Fanuc box route (no numpy)"),
     ("fast_lines", "{n} line{s} by the vectorized path"),
 )
 

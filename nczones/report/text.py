@@ -210,6 +210,8 @@ def summary_line(result: Result, name: str, *, color: bool = False, deterministi
     if not deterministic and "double_pass_boxes" in stats:
         boxes = stats["double_pass_boxes"]
         parts[-1] += f" (by the double pass in {boxes} box{'es' if boxes != 1 else ''}, 0 solver queries)"
+    elif not deterministic and stats.get("fanuc_boxes"):
+        parts[-1] += " (in the box of the whole motion, no numpy, 0 solver queries)"
     elif not deterministic:
         parts[-1] += (f" ({stats.get('screened', 0)} by screening, "
                       f"{stats.get('z3_queries', 0)} solver quer{'y' if stats.get('z3_queries', 0) == 1 else 'ies'})")

@@ -284,6 +284,14 @@ class Rows:
             start = end
         return out
 
+    def bounds(self) -> tuple[list[int], list[int], set[int], int, int]:
+        """The run's box as :meth:`BoxRows.bounds` gives it (the start and every row's end)."""
+        w = len(self.axes)
+        ends, first = self.ends, self.first_row
+        lo = [min(min(ends[i::w]), first[i]) for i in range(w)]
+        hi = [max(max(ends[i::w]), first[i]) for i in range(w)]
+        return lo, hi, set(self.tls.values()), len(self.args), SCALE
+
     def chunk(self) -> MotionChunk:
         """The rows as a column chunk whose ``objects`` are their segments, built when read."""
         import numpy as np
@@ -307,6 +315,8 @@ class RowSink:
     to write rows instead of segments: from motion ``start`` on, runs of at most ``max_rows`` rows of ``file``."""
 
     __slots__ = ("axes", "file", "start", "max_rows")
+    #: the class of the runs :meth:`open` makes (the lane continues a run of this class)
+    rows: type = Rows
 
     def __init__(self, axes: tuple[str, ...], file: str, start: int, max_rows: int) -> None:
         self.axes, self.file, self.start, self.max_rows = axes, file, start, max_rows
@@ -316,6 +326,80 @@ class RowSink:
         start = start if type(start) is tuple else tuple(start)
         row = _scaled(start)
         return None if row is None else Rows(start, row, self.axes, self.file, self.max_rows)
+
+
+class BoxRows:
+    """A run of straight moves the plain lane hands over as its box only (``BoxSink``, the numpy-free route of
+    :mod:`nczones.prover.fanucboxes`): per axis the least and greatest coordinate of the run's start and every
+    row's end, at :data:`SCALE` places (checked as :class:`Rows` checks them), the scaled tool lengths the rows
+    carried and their count.  No segment can be built from it: a consumer that needs segments uses :class:`Rows`.
+    A move that fails the check (False) may have widened the box by its own end's coordinates, positions the
+    program commands (its segment follows, with the same end)."""
+
+    __slots__ = ("file", "prev_end", "lo", "hi", "tl", "tls", "count", "full", "max_rows")
+
+    def __init__(self, start: tuple, start_row: list[int], file: str, max_rows: int) -> None:
+        self.file, self.max_rows = file, max_rows
+        self.prev_end = start
+        self.lo, self.hi = start_row[:], start_row[:]
+        self.tl: Any = None
+        self.tls: set[int] = set()
+        self.count = 0
+        self.full = False
+
+    def add(self, kind: SegmentKind, end: tuple, axis_at: tuple, index: int, span: Any, tlo: Any, fmm: Any,
+            register: Any, frame: Any) -> bool:
+        """The move from ``prev_end`` to ``end`` into the box (True), or False as :meth:`Rows.add` says it."""
+        if span.file != self.file:
+            return False
+        if tlo is not self.tl:
+            got = _scaled((tlo,))
+            if got is None:
+                return False
+            self.tl = tlo
+            self.tls.add(got[0])
+        lo, hi = self.lo, self.hi
+        mult = _MULT
+        for _k, i in axis_at:
+            x: Any = end[i]  # a Fraction, read through its slots
+            d = x._denominator
+            m = mult.get(d, 0)
+            if m == 0:
+                m = _mult(d)
+            if m is None:
+                return False
+            v = x._numerator * m
+            if not _LOW < v < _LIMIT:
+                return False
+            if v < lo[i]:
+                lo[i] = v
+            elif v > hi[i]:
+                hi[i] = v
+        self.prev_end = end
+        self.count += 1
+        if self.count >= self.max_rows:
+            self.full = True
+        return True
+
+    def __len__(self) -> int:
+        return self.count
+
+    def bounds(self) -> tuple[list[int], list[int], set[int], int, int]:
+        """(least and greatest coordinate per axis, the tool lengths, all at ``10**-scale``; the rows; the scale)."""
+        return self.lo, self.hi, self.tls, self.count, SCALE
+
+
+class BoxSink(RowSink):
+    """A :class:`RowSink` whose runs are :class:`BoxRows`: the lane writes a run's box, not its rows."""
+
+    __slots__ = ()
+    rows = BoxRows
+
+    def open(self, start: Any) -> Any:
+        """A new run from the point ``start`` (None when it is not a decimal at the scale)."""
+        start = start if type(start) is tuple else tuple(start)
+        row = _scaled(start)
+        return None if row is None else BoxRows(start, row, self.file, self.max_rows)
 
 
 def _expanded(chunk: MotionChunk) -> MotionChunk:

@@ -53,7 +53,6 @@ from ..interpreter import (
     sqrt_diff_exceeds,
 )
 from ..segments import make_segment
-from .columns import Rows
 from .expr import FanucVariables
 from .transforms import (
     Mirror,
@@ -372,9 +371,10 @@ class FanucInterpreter(Interpreter):
         emitted = self.emitted
         sink = self.row_sink
         if sink is not None and self.segment_count >= sink.start:
-            # a column row instead of a segment (nczones.gcode.fanuc.columns.Rows: the segment is built if read)
+            # a column row instead of a segment (nczones.gcode.fanuc.columns.Rows: the segment is built if read;
+            # BoxRows for the numpy-free route: the run's box only)
             rows: Any = emitted[-1] if emitted else None
-            if type(rows) is not Rows or rows.prev_end is not pos or rows.full:
+            if type(rows) is not sink.rows or rows.prev_end is not pos or rows.full:
                 rows = sink.open(pos)
                 if rows is not None and rows.add(kind, end, axis_at, index, span, self.tlo, fmm, self.tool_register,
                                                  fr):
