@@ -16,8 +16,9 @@ Why a fitting box proves the program ``safe`` (the same model as the full path, 
 * every motion lies in the box of its positions: a straight move (G1, a straight or dogleg G0: each axis moves
   monotonically from start to end) in the box of its two ends, a circular arc or a helix in
   ``ArcGeom.plane_bbox`` (the exact extremes of an arc with a rational centre; for an R-format arc, whose centre
-  may be irrational, the box of its whole circle with outward rational bounds of the centre and radius) and
-  the box of its ends on the other axes;
+  may be irrational, its ends and the extremes of the circle (outward rational bounds of the centre and radius)
+  in every axis direction its sweep may reach for a centre in the enclosure) and the box of its ends on the
+  other axes;
 * the control may leave the programmed path in cutting mode (acc/dec after interpolation rounds corners): the
   path then stays in the convex hull of the run of motions between exact stops (``specs/path-modes.md`` §3).
   A box is convex: when it holds every motion it holds the hull of every run, whatever the exact stops

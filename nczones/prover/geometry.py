@@ -218,6 +218,43 @@ def in_sweep(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], v: tupl
     return _angle_le(u, v, w)
 
 
+#: The four axis directions of a plane: (direction, axis, sign).
+_DIRECTIONS = (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1))
+
+
+def _sweep_may_hold(s: tuple[Fraction, Fraction], e: tuple[Fraction, Fraction],
+                    ends: list[tuple[Fraction, Fraction]], v: tuple[Fraction, Fraction], ccw: bool) -> bool:
+    """May direction ``v`` lie in the sweep of the arc from ``s`` to ``e`` (not a whole turn) about a centre
+    somewhere on the segment between the two points ``ends``?  False only when it cannot.
+
+    :func:`in_sweep` reads only the signs of ``cross(u, v)``, ``cross(u, w)`` and ``cross(v, w)`` (``u = s - c``,
+    ``w = e - c``; a dot product only where a cross product is 0), and each is affine in the centre ``c``
+    (``cross(s - c, e - c) = cross(s, e) - cross(s, c) - cross(c, e)``).  When all three have the same strict
+    signs at both ends of the segment, they have them at every point of it, so ``in_sweep`` answers the same for
+    every centre there, the exact one included; otherwise the answer is "may" (the sound side).
+
+    >>> F = Fraction
+    >>> s, e = (F(2), F(1)), (F(-1), F(2))  # from 26.6 to 116.6 degrees about a centre near the origin
+    >>> near = [(F(-1, 1000), F(-1, 1000)), (F(1, 1000), F(1, 1000))]
+    >>> [_sweep_may_hold(s, e, near, v, True) for v, _a, _s in _DIRECTIONS]  # +X, -X, +Y, -Y
+    [False, False, True, False]
+    >>> [_sweep_may_hold(s, e, near, v, False) for v, _a, _s in _DIRECTIONS]  # clockwise: the other way round
+    [True, True, False, True]
+    """
+    if ends[0] == ends[-1]:  # a rational centre after all: the exact test
+        c = ends[0]
+        return in_sweep((s[0] - c[0], s[1] - c[1]), (e[0] - c[0], e[1] - c[1]), v, ccw, False)
+    seen = set()
+    for c in ends:
+        u = (s[0] - c[0], s[1] - c[1])
+        w = (e[0] - c[0], e[1] - c[1])
+        signs = (_cross(u, v), _cross(u, w), _cross(v, w))
+        if F0 in signs:
+            return True
+        seen.add((tuple(x > 0 for x in signs), in_sweep(u, w, v, ccw, False)))
+    return len(seen) != 1 or next(iter(seen))[1]
+
+
 def _half(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> int:
     """0 when the ccw angle from u to v is in [0, pi), else 1."""
     c = _cross(u, v)
@@ -303,9 +340,14 @@ class ArcGeom:
         xs = [self.s[0], self.e[0]]
         ys = [self.s[1], self.e[1]]
         if self.centre is None:
-            # direction tests need the centre: use the whole circle's box (sound)
-            xs += [cxl - r_hi, cxh + r_hi]
-            ys += [cyl - r_hi, cyh + r_hi]
+            # the exact centre lies on the segment between two rational points (the R-format centre M + k n, k
+            # between sqrt_bounds of q): a direction's extreme is left out only where that settles the sweep
+            mx, my, nx, ny, q, sign = self.r_format_parts()
+            ends = [(mx + sign * k * nx, my + sign * k * ny) for k in sqrt_bounds(q, bits)]
+            for v, axis, sgn in _DIRECTIONS:
+                if _sweep_may_hold(self.s, self.e, ends, v, self.ccw):
+                    c = (cxl, cxh) if axis == 0 else (cyl, cyh)
+                    (xs if axis == 0 else ys).append(c[1] + r_hi if sgn > 0 else c[0] - r_hi)
         else:
             c = self.centre
             u = (self.s[0] - c[0], self.s[1] - c[1])

@@ -138,10 +138,11 @@ def test_the_route_answers_a_loop_of_more_than_512_motions():
     # G03 R10.001: the minor arc around (39.5528.., 10) (irrational), reaching X 49.554: safe; the route's box of the
     # whole circle (X <= 49.554 + its outward rounding) fits: the route answers
     ("G03", "10.001", "safe", True),
-    # G02 R10.001: the minor arc around (40.4472.., 10), bulging to X 30.446: safe; the route's box of the whole
-    # circle reaches X 50.448 past the face: the route declines (its enclosure crosses the face where the arc
-    # does not), today's path proves it
-    ("G02", "10.001", "safe", False),
+    # G02 R10.001: the minor arc around (40.4472.., 10), bulging to X 30.446: safe; its clockwise sweep about the
+    # centre, from 267.4 to 92.6 degrees, passes 180 (-X) and never 0 (+X), so the box (ArcGeom.plane_bbox) stops
+    # at the chord's X 40
+    # (before the lead's tighter R box its whole circle reached X 50.448 past the face and the route declined)
+    ("G02", "10.001", "safe", True),
 ])
 def test_an_r_arc_whose_enclosure_touches_a_face(code, radius, expected, taken):
     """In G61 (exact stops: in cutting mode today's hull test encloses a lone R arc by its circle too, and the
