@@ -278,6 +278,10 @@ def test_every_precompiled_pattern_is_what_re_compiles():
 def test_a_small_verify_compiles_no_regular_expression(tmp_path):
     # issue 36: re.compile parses in Python (~5 ms for a start-up's patterns); after `import nczones` they are
     # in re's cache, so a small verify of either dialect (and its help) compiles none
+    from nczones.precompiled import regexes
+
+    if regexes.HEXVERSION != sys.hexversion:
+        pytest.skip("regexes written on another CPython 3.11 release: nothing is seeded here")
     (tmp_path / "p.ngc").write_text("G21 G90\nG0 X1 Y1\nG1 X2 Y2 F100\nM2\n")
     (tmp_path / "p.nc").write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n")
     machines = ROOT / "specs" / "machines"
