@@ -52,10 +52,13 @@ def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptio
     return interpret(source, machine, fast=fast, **extra)
 
 
-def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_iterations: int) -> Result | None:
+def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_iterations: int,
+                       arc_tolerance: Fraction | str | None = None) -> Result | None:
     """A ``safe`` result for ``text`` from the double pass (:mod:`nczones.gcode.linuxcnc.doubles`, proved by
     :func:`nczones.prover.doubles.prove_double_path`), or None when the pass declines or its boxes do not
-    prove the program (the caller then runs the full path)."""
+    prove the program (the caller then runs the full path).  ``arc_tolerance``: the full path's (None: the
+    interpreter's default)."""
+    from ..gcode import DEFAULT_ARC_TOLERANCE
     from ..gcode.linuxcnc.doubles import Declined, double_pass
     from ..prover.doubles import WindowProof, prove_double_path
 
@@ -63,7 +66,8 @@ def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_ite
     # the motion in windows proved as they come: memory flat, no program too long for the pass
     windows = WindowProof(machine, margin)
     try:
-        path = double_pass(text, machine, max_iterations=max_iterations, on_window=windows)
+        path = double_pass(text, machine, max_iterations=max_iterations, on_window=windows,
+                           arc_tolerance=DEFAULT_ARC_TOLERANCE if arc_tolerance is None else arc_tolerance)
     except Declined:
         return None
     return prove_double_path(path, machine, margin, started, windows)
@@ -217,7 +221,8 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
         raise InvalidArgument(f"margin must not be negative, got {margin}")
     # a parametric program: the double pass first, the full path if it declines
     try:
-        quick = double_pass_result(source.text, machine, margin=margin, max_iterations=options.max_iterations)
+        quick = double_pass_result(source.text, machine, margin=margin, max_iterations=options.max_iterations,
+                                   arc_tolerance=tolerance)
     except KeyboardInterrupt:
         quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
             f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",
