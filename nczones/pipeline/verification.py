@@ -31,6 +31,14 @@ F0 = Fraction(0)
 #: Programs of fewer lines are read by the full interpreter alone: the vectorized fast path (numpy) costs
 #: more to load than it saves there, and the segments are the same either way.
 FAST_PATH_MIN_LINES = 512
+#: Plain LinuxCNC programs (no ``#``, no o-word) the double pass is tried first for: from
+#: :data:`FAST_PATH_MIN_LINES` lines (below, the full path imports no numpy either and is as quick) up to this
+#: size, where a line counts 1 and an arc (an ``R`` or ``J`` in the text) :data:`PLAIN_PASS_ARC` more.  It is
+#: the crossover of the pass (no numpy: about 2 us a line, 6 us an arc) and the fast path (numpy's import and
+#: set-up, then about 1 us a line), measured per class (specs/performance.md, "Plain programs in the double
+#: pass"): CAM G1 with a few arcs up to some 57,000 lines, arcs up to some 15,000.
+PLAIN_PASS_SIZE = 60_000
+PLAIN_PASS_ARC = 3
 
 
 def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptions, *,
@@ -196,13 +204,28 @@ def _double_pass_reads(text: str | FileText) -> bool:
     True
     >>> _double_pass_reads("(do the contour)\nG1 X1 Y1\nM2")
     False
+    >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G1 X1 Y1\n" * 600)  # plain, small: the pass first
+    True
     """
     if "#" in text:
         return True
-    if not any(k in text for k in _OWORD_KEYWORDS):
+    if any(k in text for k in _OWORD_KEYWORDS):
+        pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
+        if any(_oword_line().search(p) is not None for p in pieces):
+            return True
+    return _small_plain(text)
+
+
+def _small_plain(text: str | FileText) -> bool:
+    """Is a plain program (no ``#``, no o-word) of the size the double pass proves faster than the fast path
+    (:data:`PLAIN_PASS_SIZE`)?"""
+    if len(text) > PLAIN_PASS_SIZE * 64:  # characters (bytes of a streamed file): far more lines than that
         return False
-    pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
-    return any(_oword_line().search(p) is not None for p in pieces)
+    lines = _line_count(text)  # type: ignore[arg-type]  # FileText counts too
+    if lines < FAST_PATH_MIN_LINES or lines > PLAIN_PASS_SIZE:
+        return False
+    arcs = sum(text.count(letter) for letter in "RrJj")
+    return lines + PLAIN_PASS_ARC * arcs <= PLAIN_PASS_SIZE
 
 
 def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,

@@ -162,6 +162,12 @@ def may_be_zero(path: Any, k: int) -> bool:
     return all(l0[a] - h1[a] < DROPPED_BELOW and l1[a] - h0[a] < DROPPED_BELOW for a in l0)
 
 
+def _kinds(path: Any) -> dict[str, dict[str, Any]]:
+    """The profile's motions by kind, as the other lanes report them (none decided one by one)."""
+    counts = (("arc", getattr(path, "arcs", 0)), ("line", path.lines), ("rapid", path.rapids))
+    return {kind: {"motions": n, "seconds_one_by_one": 0.0} for kind, n in counts if n}
+
+
 def _max_boxes(path: Any) -> int:
     motions: int = path.motions - getattr(path, "row0", 0)
     return max(64, motions // 16)
@@ -192,7 +198,7 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
                "motions_screened_vectorized": 0, "double_pass": {"motions": n, "boxes": boxes},
                "tiers": {"screen_vectorized_s": 0.0, "exact_per_motion_s": 0.0, "solver_s": 0.0,
                          "interpretation_and_rest_s": round(seconds, 6)},
-               "kinds": {}, "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
+               "kinds": _kinds(path), "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
     counts = {"blocks": path.blocks, "segments": n, "fast_lines": 0, "line": path.lines,
               "arc": getattr(path, "arcs", 0), "rapid": path.rapids, "dwell": 0, "developed_arc": 0, "spline": 0,
               "polar": 0}

@@ -92,6 +92,9 @@ PIECE = 1 << 20
 #: a few hundred bytes each); the lines of a longer body are compiled again from their piece at each run, so
 #: memory stays flat however long a body is.
 MAX_STEPS = 1 << 16
+#: Lines of a layout the pass runs through the shape's step and the layout's cutter before it compiles the two
+#: into one step for the layout (:meth:`_Pass._layout_step`).
+COMPILE_AFTER = 64
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
@@ -450,9 +453,26 @@ class _Pass:
                 return None, ()
             return self._fresh(line)
         cut = hit[1]
+        step = self._shape_step(hit[2])
         if own_layout is not None and layout == own_layout:
-            self.by_layout[layout] = self._shape_step(hit[2], cut)
-        return self._shape_step(hit[2]), cut(line)
+            self.by_layout[layout] = self._layout_step(layout, step, hit[2], cut)
+        return step, cut(line)
+
+    def _layout_step(self, layout: bytes, step: Any, shape: Any, cut: Any) -> Any:
+        """The step of the lines of ``layout`` (the line itself its argument): ``step`` of the literals
+        ``cut`` takes out of the line at first, and after :data:`COMPILE_AFTER` lines the step compiled with
+        the cutter in it (a compilation costs as much as some thousand calls: a layout of a few lines is not
+        worth one; CAM output with arcs has hundreds of layouts)."""
+        left = COMPILE_AFTER
+
+        def first_lines(line: str) -> Any:
+            nonlocal left
+            left -= 1
+            if not left:
+                self.by_layout[layout] = self._shape_step(shape, cut)
+            return step(cut(line))
+
+        return first_lines
 
     # -- control lines ------------------------------------------------------------------------------------
     def _controls(self) -> dict[int, tuple]:
@@ -742,9 +762,8 @@ class _Pass:
         self.off = self._offset(wcs, self.reg)
 
     def _arcs_state(self, machine: Any, arc_tolerance: Fraction | str) -> None:
-        modal = set(machine.modal)
-        self.plane = 18 if "G18" in modal else 19 if "G19" in modal else 17
-        self.plane_set = False  # a program that has not set the plane: the full path notes it at an arc
+        #: the program has set the plane to G17 (before it sets one the full path notes the plane at an arc)
+        self.g17 = False
         self.rule = radius_rule(arc_tolerance)
         ix, iy = self.index.get("X"), self.index.get("Y")
         self.arc_axes: tuple[int, ...] = (ix, iy) if ix is not None and iy is not None else ()
@@ -754,23 +773,6 @@ class _Pass:
         self.arc_rows = array("q")
         self.arc_lo = (array("d"), array("d"))
         self.arc_hi = (array("d"), array("d"))
-
-    def arc(self, mode: int, sa: float, sb: float, i: float, j: float, r: float | None) -> None:
-        """The arc (G2 ``mode`` 2, G3 3) just added from ``(sa, sb)``: its box (:mod:`.double_arcs`), or declined."""
-        if self.plane != 17 or not self.plane_set:
-            raise Declined("an arc outside G17, or before the program sets the plane")
-        ia, ib = self.arc_axes
-        ea, eb = self.pos[ia], self.pos[ib]
-        box = (ij_arc(sa, sb, ea, eb, i, j, mode == 2, self.offb, self.rule) if r is None
-               else r_arc(sa, sb, ea, eb, r, mode == 2, self.offb))
-        if isinstance(box, str):
-            raise Declined(box)
-        self.arc_rows.append(self.row0 + len(self.columns[0]) - 1)
-        self.arc_lo[0].append(box[0])
-        self.arc_hi[0].append(box[1])
-        self.arc_lo[1].append(box[2])
-        self.arc_hi[1].append(box[3])
-        self.arcs += 1
 
     def _end(self, values: tuple) -> bool:
         """M2 or M30: the program ends."""
@@ -815,7 +817,7 @@ class _Pass:
         if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
             body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
         if "plane" in groups:
-            body += [f"st.plane = {groups['plane']}", "st.plane_set = True"]
+            body.append(f"st.g17 = {groups['plane'] == 17}")
         sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
         if sets:
             body.append(f"unset.difference_update({tuple(sets)!r})")
@@ -834,7 +836,9 @@ class _Pass:
             raise Declined("I, J or R without a motion")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row}
+                                 "FR": self.first_row, "R_ARC": r_arc, "IJ_ARC": ij_arc,
+                                 "AR": self.arc_rows.append, "XL": self.arc_lo[0].append, "XH": self.arc_hi[0].append,
+                                 "YL": self.arc_lo[1].append, "YH": self.arc_hi[1].append}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -853,6 +857,19 @@ class _Pass:
         if len(hs) != 1 or hs[0] not in self.lengths:
             raise Declined("G43 without an H register of the machine's [tool_lengths] (or with a tip zone)")
         return [f"st.tool({hs[0]})"]
+
+    def _arc_body(self, others: list[str]) -> list[str]:
+        """The code that adds the box of the arc just moved (:mod:`.double_arcs`) from ``sa, sb``, or declines."""
+        def val(x: str) -> str:
+            return f"v[{others.index(x)}]" if x in others else "0.0"
+
+        ia, ib = self.arc_axes
+        ends = f"sa, sb, pos[{ia}], pos[{ib}]"
+        call = (f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})" if "R" in others
+                else f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r})")
+        return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
+                f"box = {call}", "if box.__class__ is str: raise D(box)",
+                "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", "st.arcs += 1"]
 
     def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
@@ -880,10 +897,7 @@ class _Pass:
         body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
         body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
         if arc:
-            def val(x: str) -> str:
-                return f"v[{others.index(x)}]" if x in others else "0.0"
-            r = val("R") if "R" in arc else "None"
-            body.append(f"st.arc(mode, sa, sb, {val('I')}, {val('J')}, {r})")
+            body += self._arc_body(others)
         body.append(f"if len(C0) >= {self.rows}: st.full()")
         if not arc:
             body.append("if not mode: st.rapids += 1")
