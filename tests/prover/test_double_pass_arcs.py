@@ -10,6 +10,10 @@ vectorized tier when the pass is off) and with ``#`` in the text.
 
 from __future__ import annotations
 
+import math
+import os
+from fractions import Fraction
+
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -112,3 +116,98 @@ def test_g43_adds_the_machines_tool_length_on_z(monkeypatch, variant):
     with_pass, without = both_ways(_variants(["G43 H1 G0 Z60", "G1 X1"])[variant], parse_machine(tip), monkeypatch)
     same_outcome(with_pass, without)  # a tip zone: the pass declines G43, the full path decides
     assert "double_pass_boxes" not in dict(with_pass.stats)
+
+
+HUNT = int(os.environ.get("NCZONES_ARC_HUNT", "300"))
+
+
+@pytest.mark.long
+@settings(max_examples=HUNT, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
+                                 HealthCheck.function_scoped_fixture])
+@given(arc_programs(), st.sampled_from(sorted(ZONES)), st.integers(2, 120), st.integers(-50, 120),
+       st.sampled_from(["0", "0", "0.5"]), st.sampled_from([None, 2, 5]), st.sampled_from(["G64", "G61"]),
+       st.integers(1, 3))
+def test_arc_hunt_no_wrong_safe(monkeypatch, text, kind, a, b, margin, window, mode, repeat):
+    """The wrong-safe hunt (specs/contract.md, "Arcs and G43 in the double pass"): random seeds, arc programs
+    repeated up to 3 times, the pass's windows tiny or not, corners rounded (G64) or not; the verdict,
+    violations, reasons and notes must be the full path's."""
+    import nczones.gcode.linuxcnc.doubles as doubles
+
+    head, _, rest = text.partition("\n")
+    body, _, _ = rest.rpartition("M30\n")
+    text = head + "\n" + body * repeat + "M30\n"
+    zone = ZONES[kind].format(a=a, b=max(a + 1, b) if kind == "forbid" else b)
+    machine = parse_machine(machine_text("mill_g55_zones_head", set={"machine.path_mode": mode}) + TOOLS + zone)
+    if window is not None:
+        monkeypatch.setattr(doubles, "WINDOW", window)
+    try:
+        with_pass, without = both_ways(text, machine, monkeypatch, margin=margin)
+    except Exception:  # noqa: BLE001  # a G-code error: test_arc_programs_get_the_full_paths_verdict checks those
+        return
+    same_outcome(with_pass, without)
+
+
+RS274_ARCS = [
+    "G1 X1 Y0\nG3 X0 Y1 I-1 J0\nG2 X-2.5 Y1 I-1.25 J-0.75\nG3 X-2.5 Y1 I1 J0.5",  # whole circle by I/J
+    "G1 X-3 Y-4\nG3 X-3 Y4 R-5\nG2 X1.234 Y5.678 R7.25\nG2 X1.2 Y5.6 R-0.1\nG3 X0 Y0 R30",
+    "G43 H1 G0 Z2\nG1 X10 Y10\nG2 X12 Y10 R1.0000001\nG3 X11 Y11 I-1 J0 Z-1",  # near a half circle; a helix
+]
+
+
+@pytest.mark.parametrize("body", RS274_ARCS)
+def test_the_arcs_of_the_pass_against_rs274(tmp_path, body):
+    """LinuxCNC's own interpreter (``rs274 -g``, its centres and ends printed to 4 decimals, machine mm by
+    tests/oracles/rs274.py) runs the program the pass follows: each arc's centre is the full path's exact
+    centre (I/J: the start plus I, J; R: ``(S + E) / 2 + s h n``, derived here at 200 bits), its end is the
+    pass's row, and the circle rs274 moves on, in every axis direction its sweep holds, stays in the pass's
+    box of the motion, all within the log's rounding."""
+    import mpmath
+
+    from nczones.gcode.linuxcnc.doubles import double_pass
+    from tests.tools import rs274_diff
+
+    if not os.path.exists(rs274_diff.RS274):
+        pytest.skip("rs274 not installed")
+    text = "G21 G90 G17 G54 F300\n#1 = 0\n" + body + "\nM2\n"
+    moves, error, _log = rs274_diff.run_rs274(text, rs274_diff.FINDING_SETUP, tmp_path)
+    assert error is None
+    machine = rs274_diff.machine_of(rs274_diff.FINDING_SETUP)
+    path = double_pass(text, machine, max_iterations=10, arc_tolerance="linuxcnc")
+    assert len(moves) == path.motions and path.arcs == sum(mv.kind == "ARC" for mv in moves)
+    slack = 3 * Fraction(5, 100000)  # three printed numbers (value, offset, length) to 4 decimals
+    x, y = 0.0, 0.0
+    for k, mv in enumerate(moves, start=1):
+        lo, hi = path.enclosure(k, k)
+        for i, a in enumerate("XYZ"):
+            assert abs(Fraction(path.columns[i][k]) - mv.end[i]) <= slack, (k, a)
+        if mv.kind == "ARC":
+            assert mv.centre is not None
+            line = body.split("\n")[k - 1]
+            words = dict((w[0], float(w[1:])) for w in line.split() if w[0] in "XYIJR")
+            ex, ey = float(mv.end[0]), float(mv.end[1])
+            if "R" in words:
+                r = words["R"]
+                d = math.hypot(ex - x, ey - y)
+                h = math.sqrt(r * r - d * d / 4)
+                s = -1 if (r > 0) == line.lstrip().startswith("G2") else 1
+                centre = ((x + ex) / 2 - s * h * (ey - y) / d, (y + ey) / 2 + s * h * (ex - x) / d)
+            else:
+                centre = (x + words.get("I", 0.0), y + words.get("J", 0.0))
+            assert abs(centre[0] - float(mv.centre[0])) < 2e-4 and abs(centre[1] - float(mv.centre[1])) < 2e-4
+            cx, cy = (mpmath.mpf(float(c)) for c in mv.centre)
+            radius = math.hypot(ex - float(cx), ey - float(cy))
+            for axis, sign, point in ((0, 1, (cx + radius, cy)), (0, -1, (cx - radius, cy)),
+                                      (1, 1, (cx, cy + radius)), (1, -1, (cx, cy - radius))):
+                a = "XY"[axis]
+                # the direction is in the sweep of rs274's arc when the box must reach it; check by the box:
+                # a point the pass's box leaves out must not be on rs274's arc (its sweep, ccw for direction > 0)
+                inside = lo[a] - slack <= Fraction(float(point[axis])) <= hi[a] + slack
+                if not inside:
+                    start = math.atan2(y - float(cy), x - float(cx))
+                    end = math.atan2(ey - float(cy), ex - float(cx))
+                    phi = math.atan2(float(point[1] - cy), float(point[0] - cx))
+                    a0, a1 = (start, end) if mv.direction > 0 else (end, start)
+                    sweep = (a1 - a0) % (2 * math.pi) or 2 * math.pi
+                    assert (phi - a0) % (2 * math.pi) > sweep + 1e-6, (k, a, sign)
+        x, y = float(mv.end[0]), float(mv.end[1])
