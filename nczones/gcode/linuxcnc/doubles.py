@@ -23,7 +23,12 @@ is the double sum ``d + float(offset)``.  So the exact coordinate ``m`` and the 
 subnormal), and :meth:`DoublePath.enclosure` widens by more than that.  A straight move (G1, and G0 in
 either rapid mode: each axis moves monotonically from its start to its end) stays inside the box of its
 end points, so the box of a run of motions' end points, with the point before the first, holds every
-position of those motions.
+position of those motions.  An arc (G2/G3 in G17) is not: each arc row also has its own box
+(:mod:`nczones.gcode.linuxcnc.double_arcs`, whose docstring says why it holds the full path's exact arc, an
+R arc's irrational centre included), which :meth:`DoublePath.enclosure` joins to the rows' box; a helix's
+third axis moves monotonically, so the rows hold it.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
+entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
+bound's offset term covers the largest work offset plus the largest length.
 
 The subset
 ----------
@@ -33,19 +38,24 @@ labels not reused; ``o.. sub``/``endsub`` at the top level, and ``o.. call`` of 
 call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1..#30 and local named
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
-``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
+``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G17 G18 G19 G21 G40 G43 G49 G54-G59 G80 G90 G94 with literal codes, F,
 X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5 M7 M8 M9 a block, and M2/M30 alone
-to end; plain comments.  Everything else declines:
+to end; plain comments.  Arcs: in G17 once the program has set it, on a machine with X and Y, I/J (G91.1,
+LinuxCNC's default) or R format with X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
+``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  Everything else declines:
 other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
-parameter read of controller state, any evaluation error.
+parameter read of controller state, any evaluation error; an arc in G18/G19, with P or K, without axis
+words or a centre, of a radius about 0, with ends near or past the arc tolerance, an R arc of a chord about
+0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those); I, J or R without G2/G3,
+H without G43, G43 without H or with H0.
 
 Invariant (``tests/gcode/test_double_pass.py``): whenever the pass returns, the full interpreter's run of
 the same program on the same machine completes with no unknown code, no error and no notes, with the same
 number of motions, and the end point of its k-th motion lies in the box of the pass's k-th row widened by
-the bound.
+the bound (an arc: its every point, at both radii of a spiral, in :meth:`DoublePath.enclosure` of its row).
 """
 
 from __future__ import annotations
@@ -877,8 +887,8 @@ class _Pass:
         arc = [x for x in others if x in "IJR"]
         moved = tuple(i for _k, i in axes)
         if not arc:
-            check = ["if mode and (mode > 1 or not st.feed > 0.0): "
-                     "raise D('G1 without a positive feed, or an arc without I, J or R')"]
+            check = ["if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
+                     "elif mode: raise D('an arc without I, J or R')"]
         else:
             if "R" in arc and len(arc) > 1:
                 raise Declined("R and I or J in one arc")
