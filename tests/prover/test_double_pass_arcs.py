@@ -216,3 +216,24 @@ def test_the_arcs_of_the_pass_against_rs274(tmp_path, body):
                     sweep = (a1 - a0) % (2 * math.pi) or 2 * math.pi
                     assert (phi - a0) % (2 * math.pi) > sweep + 1e-6, (k, a, sign)
         x, y = float(mv.end[0]), float(mv.end[1])
+
+
+@pytest.mark.parametrize("variant", ["short", "long", "hash"])
+def test_an_end_on_the_starts_ray_is_the_full_paths(monkeypatch, variant):
+    """Found by the hunt (G2 X0.0001 Y0 I-0.01 J0 from the origin: the end on the ray from the centre through the
+    start, 0.0001 farther out, within the arc tolerance): LinuxCNC moves a whole spiral turn there, which the
+    full path answers ``unknown`` for; the pass proved its whole-turn box ``safe``.  It declines such an arc now,
+    and still proves a whole turn whose block names no axis of the plane (a helix: the end is the start).
+    (Past 512 motions the fast path's column screen proves the spiral's whole-turn box: ``safe`` both ways.)"""
+    machine = machine_of("box", 2, 0)
+    spiral = _variants(["G1 X0 Y0", "G2 X0.0001 Y0 I-0.01 J0"])[variant]
+    with_pass, without = both_ways(spiral, machine, monkeypatch)
+    same_outcome(with_pass, without)
+    assert with_pass.verdict is (Verdict.SAFE if variant == "long" else Verdict.UNKNOWN)
+    assert "double_pass_boxes" not in dict(with_pass.stats)
+    turn = _variants(["G1 X0 Y0 Z0", "G2 Z-0.5 I-0.01 J0"])[variant]
+    with_pass, without = both_ways(turn, machine, monkeypatch)
+    same_outcome(with_pass, without)
+    assert with_pass.verdict is Verdict.SAFE
+    if variant != "short":
+        assert "double_pass_boxes" in dict(with_pass.stats)

@@ -84,10 +84,16 @@ def _linuxcnc_accepts(diff: float, big: float) -> bool:
 
 
 def ij_arc(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,
-           tol: float) -> Any:
+           tol: float, turn: bool = False) -> Any:
     """The box ``(xlo, xhi, ylo, yhi)`` (doubles, outer bounds) holding the full path's I/J arc from ``(sx, sy)``
     to ``(ex, ey)`` (machine doubles) with centre offsets ``i``, ``j``, or a ``str``: why the pass declines.
-    ``offb`` bounds the work offsets' magnitude (rounded up), ``tol`` is :func:`radius_rule`'s.
+    ``offb`` bounds the work offsets' magnitude (rounded up), ``tol`` is :func:`radius_rule`'s; ``turn``: the
+    block names no axis of the plane, so the end is the start exactly (a whole turn).
+
+    An end that may lie on the ray from the centre through the start (their cross product within its error
+    of 0; the dot product is then about ``r0 r1``, clearly positive or negative) is declined unless ``turn``:
+    LinuxCNC moves a whole turn there, which the full path proves for an end equal to the start and answers
+    ``unknown`` for otherwise (a spiral lap, ``prover/core.py``); the doubles cannot tell the two apart.
 
     The radii's doubles are within ``err / 2`` of the exact radii; an arc is taken when it is inside the full
     path's rule (exact for a fixed tolerance, LinuxCNC's in doubles) by ``2 err`` and ``1e-9`` of the radius
@@ -107,6 +113,11 @@ def ij_arc(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: b
     err = (64.0 * m + 0.0625) * _U  # every error above is below err / 4
     if not (r0 > 4 * err and r1 > 4 * err):
         return "an arc of a radius about 0"
+    if not turn:
+        a, b = j * wx - i * wy, i * wx + j * wy  # the cross product of u = (-i, -j) and w, and -(u . w)
+        if abs(a) <= err * (abs(i) + abs(j) + abs(wx) + abs(wy)) * 1.01 + 2 * err * err + \
+                (abs(j * wx) + abs(i * wy)) * 2.0**-51 and b < 0:
+            return "an arc whose end may lie on the ray from the centre through its start"
     diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
     margin = diff + big * 1e-9 + 1e-9 + 2 * err
     if not (margin < tol if tol >= 0 else _linuxcnc_accepts(margin, big - margin)):

@@ -874,9 +874,10 @@ class _Pass:
             return f"v[{others.index(x)}]" if x in others else "0.0"
 
         ia, ib = self.arc_axes
+        turn = self.axes[ia] not in others and self.axes[ib] not in others  # the end is the start: a whole turn
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
         call = (f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})" if "R" in others
-                else f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r})")
+                else f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})")
         return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
                 "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", "st.arcs += 1"]
