@@ -237,3 +237,17 @@ def test_an_end_on_the_starts_ray_is_the_full_paths(monkeypatch, variant):
     assert with_pass.verdict is Verdict.SAFE
     if variant != "short":
         assert "double_pass_boxes" in dict(with_pass.stats)
+
+
+@pytest.mark.parametrize("variant", ["short", "long", "hash"])
+def test_an_arc_after_a_motion_linuxcnc_may_drop_is_the_full_paths(monkeypatch, variant):
+    """A straight motion shorter than 3e-7 mm on every axis before an arc, in a blended corner: LinuxCNC may drop
+    it and run the arc from the corner, which the full path answers ``unknown`` for (prover/blend.py); the pass
+    declines it (its boxes would hold the arc as programmed only)."""
+    machine = machine_of("box", 20, 0)
+    text = _variants(["G1 X1 Y0", "G1 X1.0000001 Y0", "G3 X-1 Y0 R1.0000001"])[variant]
+    with_pass, without = both_ways(text, machine, monkeypatch)
+    same_outcome(with_pass, without)
+    assert "double_pass_boxes" not in dict(with_pass.stats)
+    if variant != "long":  # (past 512 motions: the fast path's verdict, whatever it is, both ways)
+        assert with_pass.verdict is Verdict.UNKNOWN

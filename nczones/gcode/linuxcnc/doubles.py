@@ -69,6 +69,7 @@ from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from ...errors import GcodeError
+from ...motion import DROPPED_BELOW
 from .. import DEFAULT_ARC_TOLERANCE
 from ..codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from ..expr import (
@@ -228,6 +229,7 @@ class DoublePath:
 
 
 _ULP = Fraction(1, 2**52)
+_DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
 
@@ -774,6 +776,11 @@ class _Pass:
     def _arcs_state(self, machine: Any, arc_tolerance: Fraction | str) -> None:
         #: the program has set the plane to G17 (before it sets one the full path notes the plane at an arc)
         self.g17 = False
+        #: the machine blends corners (the pass declines G61/G64 in the text): an arc after a motion LinuxCNC
+        #: may drop (shorter than DROPPED_BELOW on every axis) is run from the corner, which the full path
+        #: answers unknown for (prover/blend.py)
+        self.blend = getattr(machine, "path_mode", "G64") == "G64"
+        self.tiny_pad = float(max(self.offset_bound, default=Fraction(0))) * 1e-14  # the rows' offset term
         self.rule = radius_rule(arc_tolerance)
         ix, iy = self.index.get("X"), self.index.get("Y")
         self.arc_axes: tuple[int, ...] = (ix, iy) if ix is not None and iy is not None else ()
@@ -783,6 +790,13 @@ class _Pass:
         self.arc_rows = array("q")
         self.arc_lo = (array("d"), array("d"))
         self.arc_hi = (array("d"), array("d"))
+
+    def tiny(self, row: int) -> bool:
+        """May the motion that ends at ``row`` (of the columns held) be dropped by LinuxCNC: is it shorter than
+        :data:`~nczones.motion.DROPPED_BELOW` on every axis, within far more than the rows' error?"""
+        pad = self.tiny_pad
+        return all(abs(col[row] - col[row - 1]) < _DROPPED + (abs(col[row]) + abs(col[row - 1])) * 4e-15 + pad
+                   for col in self.columns)
 
     def _end(self, values: tuple) -> bool:
         """M2 or M30: the program ends."""
@@ -846,7 +860,7 @@ class _Pass:
             raise Declined("I, J or R without a motion")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_arc, "IJ_ARC": ij_arc,
+                                 "FR": self.first_row, "R_ARC": r_arc, "IJ_ARC": ij_arc, "BLEND": self.blend,
                                  "AR": self.arc_rows.append, "XL": self.arc_lo[0].append, "XH": self.arc_hi[0].append,
                                  "YL": self.arc_lo[1].append, "YH": self.arc_hi[1].append}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
@@ -879,6 +893,8 @@ class _Pass:
         call = (f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})" if "R" in others
                 else f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})")
         return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
+                "if BLEND and len(C0) > 2 and st.tiny(len(C0) - 2): "
+                "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
                 "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", "st.arcs += 1"]
 
