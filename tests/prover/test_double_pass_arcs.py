@@ -154,7 +154,7 @@ def test_arc_hunt_no_wrong_safe(monkeypatch, text, kind, a, b, margin, window, m
 
 
 RS274_ARCS = [
-    "G1 X1 Y0\nG3 X0 Y1 I-1 J0\nG2 X-2.5 Y1 I-1.25 J-0.75\nG3 X-2.5 Y1 I1 J0.5",  # whole circle by I/J
+    "G1 X1 Y0\nG3 X0 Y1 I-1 J0\nG2 X-2.5 Y1 I-1.25 J-0.75\nG3 Z0.5 I1 J0.5",  # a whole turn by I/J (a helix)
     "G1 X-3 Y-4\nG3 X-3 Y4 R-5\nG2 X1.234 Y5.678 R7.25\nG2 X1.2 Y5.6 R-0.1\nG3 X0 Y0 R30",
     "G43 H1 G0 Z2\nG1 X10 Y10\nG2 X12 Y10 R1.0000001\nG3 X11 Y11 I-1 J0 Z-1",  # near a half circle; a helix
 ]
@@ -231,8 +231,8 @@ def test_an_end_on_the_starts_ray_is_the_full_paths(monkeypatch, variant):
     same_outcome(with_pass, without)
     assert with_pass.verdict is (Verdict.SAFE if variant == "long" else Verdict.UNKNOWN)
     assert "double_pass_boxes" not in dict(with_pass.stats)
-    turn = _variants(["G1 X0 Y0 Z0", "G2 Z-0.5 I-0.01 J0"])[variant]
-    with_pass, without = both_ways(turn, machine, monkeypatch)
+    turn = _variants(["G1 X0 Y0 Z1", "G2 Z-0.5 I-0.01 J0"])[variant]
+    with_pass, without = both_ways(turn, machine_of("box", 20, 0), monkeypatch)  # (room for corners next to arcs)
     same_outcome(with_pass, without)
     assert with_pass.verdict is Verdict.SAFE
     if variant != "short":
