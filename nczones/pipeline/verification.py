@@ -33,12 +33,15 @@ F0 = Fraction(0)
 FAST_PATH_MIN_LINES = 512
 #: Plain LinuxCNC programs (no ``#``, no o-word) the double pass is tried first for: from
 #: :data:`FAST_PATH_MIN_LINES` lines (below, the full path imports no numpy either and is as quick) up to this
-#: size, where a line counts 1 and an arc (an ``R`` or ``J`` in the text) :data:`PLAIN_PASS_ARC` more.  It is
-#: the crossover of the pass (no numpy: about 2 us a line, 6 us an arc) and the fast path (numpy's import and
-#: set-up, then about 1 us a line), measured per class (specs/performance.md, "Plain programs in the double
-#: pass"): CAM G1 with a few arcs up to some 57,000 lines, arcs up to some 15,000.
+#: size, where a line counts 1 and an arc (an ``R`` or ``J`` in the text) :data:`PLAIN_PASS_ARC` more, and with
+#: arcs on at most one line in :data:`PLAIN_PASS_ARC_SHARE`.  It is the crossover of the pass (no numpy: about
+#: 2 us a line, 6 us an arc, and a compiled step per line shape: arc lines have hundreds) and the fast path
+#: (numpy's import and set-up, then about 1 us a line), measured per class (specs/performance.md, "Plain
+#: programs in the double pass"): CAM G1 with a few arcs up to some 57,000 lines; programs of R or I/J arcs
+#: are as quick or quicker on the fast path at every size measured (1,000-100,000 lines, a quiet machine).
 PLAIN_PASS_SIZE = 60_000
 PLAIN_PASS_ARC = 3
+PLAIN_PASS_ARC_SHARE = 10
 
 
 def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptions, *,
@@ -206,6 +209,8 @@ def _double_pass_reads(text: str | FileText) -> bool:
     False
     >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G1 X1 Y1\n" * 600)  # plain, small: the pass first
     True
+    >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G2 X1 Y1 R5\n" * 600)  # arcs: the fast path is quicker
+    False
     """
     if "#" in text:
         return True
@@ -225,7 +230,7 @@ def _small_plain(text: str | FileText) -> bool:
     if lines < FAST_PATH_MIN_LINES or lines > PLAIN_PASS_SIZE:
         return False
     arcs = sum(text.count(letter) for letter in "RrJj")
-    return lines + PLAIN_PASS_ARC * arcs <= PLAIN_PASS_SIZE
+    return lines + PLAIN_PASS_ARC * arcs <= PLAIN_PASS_SIZE and arcs * PLAIN_PASS_ARC_SHARE <= lines
 
 
 def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,
