@@ -31,6 +31,17 @@ F0 = Fraction(0)
 #: Programs of fewer lines are read by the full interpreter alone: the vectorized fast path (numpy) costs
 #: more to load than it saves there, and the segments are the same either way.
 FAST_PATH_MIN_LINES = 512
+#: Plain LinuxCNC programs (no ``#``, no o-word) the double pass is tried first for: from
+#: :data:`FAST_PATH_MIN_LINES` lines (below, the full path imports no numpy either and is as quick) up to this
+#: size, where a line counts 1 and an arc (an ``R`` or ``J`` in the text) :data:`PLAIN_PASS_ARC` more, and with
+#: arcs on at most one line in :data:`PLAIN_PASS_ARC_SHARE`.  It is the crossover of the pass (no numpy: about
+#: 2 us a line, 6 us an arc, and a compiled step per line shape: arc lines have hundreds) and the fast path
+#: (numpy's import and set-up, then about 1 us a line), measured per class (specs/performance.md, "Plain
+#: programs in the double pass"): CAM G1 with a few arcs up to some 57,000 lines; programs of R or I/J arcs
+#: are as quick or quicker on the fast path at every size measured (1,000-100,000 lines, a quiet machine).
+PLAIN_PASS_SIZE = 60_000
+PLAIN_PASS_ARC = 3
+PLAIN_PASS_ARC_SHARE = 10
 
 
 def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptions, *,
@@ -52,10 +63,13 @@ def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptio
     return interpret(source, machine, fast=fast, **extra)
 
 
-def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_iterations: int) -> Result | None:
+def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_iterations: int,
+                       arc_tolerance: Fraction | str | None = None) -> Result | None:
     """A ``safe`` result for ``text`` from the double pass (:mod:`nczones.gcode.linuxcnc.doubles`, proved by
     :func:`nczones.prover.doubles.prove_double_path`), or None when the pass declines or its boxes do not
-    prove the program (the caller then runs the full path)."""
+    prove the program (the caller then runs the full path).  ``arc_tolerance``: the full path's (None: the
+    interpreter's default)."""
+    from ..gcode import DEFAULT_ARC_TOLERANCE
     from ..gcode.linuxcnc.doubles import Declined, double_pass
     from ..prover.doubles import WindowProof, prove_double_path
 
@@ -63,7 +77,8 @@ def double_pass_result(text: str, machine: Machine, *, margin: Fraction, max_ite
     # the motion in windows proved as they come: memory flat, no program too long for the pass
     windows = WindowProof(machine, margin)
     try:
-        path = double_pass(text, machine, max_iterations=max_iterations, on_window=windows)
+        path = double_pass(text, machine, max_iterations=max_iterations, on_window=windows,
+                           arc_tolerance=DEFAULT_ARC_TOLERANCE if arc_tolerance is None else arc_tolerance)
     except Declined:
         return None
     return prove_double_path(path, machine, margin, started, windows)
@@ -192,13 +207,30 @@ def _double_pass_reads(text: str | FileText) -> bool:
     True
     >>> _double_pass_reads("(do the contour)\nG1 X1 Y1\nM2")
     False
+    >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G1 X1 Y1\n" * 600)  # plain, small: the pass first
+    True
+    >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G2 X1 Y1 R5\n" * 600)  # arcs: the fast path is quicker
+    False
     """
     if "#" in text:
         return True
-    if not any(k in text for k in _OWORD_KEYWORDS):
+    if any(k in text for k in _OWORD_KEYWORDS):
+        pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
+        if any(_oword_line().search(p) is not None for p in pieces):
+            return True
+    return _small_plain(text)
+
+
+def _small_plain(text: str | FileText) -> bool:
+    """Is a plain program (no ``#``, no o-word) of the size the double pass proves faster than the fast path
+    (:data:`PLAIN_PASS_SIZE`)?"""
+    if len(text) > PLAIN_PASS_SIZE * 64:  # characters (bytes of a streamed file): far more lines than that
         return False
-    pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
-    return any(_oword_line().search(p) is not None for p in pieces)
+    lines = _line_count(text)  # type: ignore[arg-type]  # FileText counts too
+    if lines < FAST_PATH_MIN_LINES or lines > PLAIN_PASS_SIZE:
+        return False
+    arcs = sum(text.count(letter) for letter in "RrJj")
+    return lines + PLAIN_PASS_ARC * arcs <= PLAIN_PASS_SIZE and arcs * PLAIN_PASS_ARC_SHARE <= lines
 
 
 def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,
@@ -217,7 +249,8 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
         raise InvalidArgument(f"margin must not be negative, got {margin}")
     # a parametric program: the double pass first, the full path if it declines
     try:
-        quick = double_pass_result(source.text, machine, margin=margin, max_iterations=options.max_iterations)
+        quick = double_pass_result(source.text, machine, margin=margin, max_iterations=options.max_iterations,
+                                   arc_tolerance=tolerance)
     except KeyboardInterrupt:
         quick = Result(verdict=Verdict.UNKNOWN, reasons=(Reason(
             f"interrupted (Ctrl-C) after {time.perf_counter() - t0:.1f} s: the program was not checked",

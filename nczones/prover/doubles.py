@@ -42,10 +42,19 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
     motions uses at most half of each, so it lies in the box of the two: a corner inside a box is proved with
     it, and every corner between two boxes is proved on its own (:func:`_corner_fits`).  With
     ``path_tolerance`` (``G64 P p``, whose Q is p) the path stays within ``2 p`` of the programmed one: the
-    margin grows by that much instead.
+    margin grows by that much instead (a path with arcs is left to the full path there).
+
+    Arcs (``specs/path-modes.md``, "The enclosure without tolerance"): a rounded corner next to an arc lies in
+    the Minkowski sum of the two motions' boxes less the corner ``C``, which a box holding both need not
+    hold.  A box of two or more motions with an arc is proved grown by its own size on every side
+    (``[2 lo - hi, 2 hi - lo]`` holds ``a + b - C`` for ``a``, ``b``, ``C`` in ``[lo, hi]``), which holds
+    every corner inside it; the corner at a box's end is proved on its own.
     """
+    arcs = bool(getattr(path, "arcs", 0))
     corners = machine.path_mode == "G64"
     if corners and machine.path_tolerance:
+        if arcs:
+            return None  # blends of arcs with a tolerance: the full path's (prover/blend.py)
         margin += 2 * machine.path_tolerance
         corners = False
     allowed = machine.allowed
@@ -59,6 +68,8 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         if boxes > max_boxes:
             return None
         lo, hi = path.enclosure(first, last)
+        if corners and arcs and last > first and path.has_arcs(first, last):
+            lo, hi = _grown(lo, hi)
         if box_fits(allowed, lo, hi, margin, zero):
             if corners and last < path.motions and not _corner_fits(path, allowed, margin, last):
                 return None
@@ -81,7 +92,18 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
     around it (specs/path-modes.md §1), whose midpoints rows ``k - 1``..``k + 1`` do not hold.  When motion
     ``k`` or ``k + 1`` may be dropped (:func:`may_be_zero`: length 0 or below 3e-7 mm), the corner of the
     motions around it lies in the box of those motions (a line-line blend region lies in the box of its two
-    motions), which must then fit; a window that does not hold them gives False (the pass declines)."""
+    motions), which must then fit; a window that does not hold them gives False (the pass declines).
+
+    An arc on either side: the Minkowski sum of the two motions' whole boxes less the corner's box (a sound
+    superset of the region of specs/path-modes.md); next to a motion that may be dropped, False."""
+    arcs = getattr(path, "arcs", 0) and path.has_arcs(k, k + 1)
+    if arcs:
+        if may_be_zero(path, k) or may_be_zero(path, k + 1):
+            return False
+        (l1, h1), (l2, h2), (lc, hc) = path.enclosure(k, k), path.enclosure(k + 1, k + 1), path.enclosure(k + 1, k)
+        lo = {a: l1[a] + l2[a] - hc[a] for a in l1}
+        hi = {a: h1[a] + h2[a] - lc[a] for a in h1}
+        return box_fits(allowed, lo, hi, margin, Fraction(0))
     if may_be_zero(path, k) or may_be_zero(path, k + 1):
         first, last = k, k + 1
         while may_be_zero(path, first):
@@ -92,6 +114,8 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
             last += 1
             if last > path.motions:
                 return False  # the motion after it is not read yet
+        if getattr(path, "arcs", 0) and path.has_arcs(first, last):
+            return False  # an arc beside a dropped motion: the full path's
         lo, hi = path.enclosure(first, last)
         return box_fits(allowed, lo, hi, margin, Fraction(0))
     (l0, h0), (l1, h1), (l2, h2) = (path.enclosure(r + 1, r) for r in (k - 1, k, k + 1))
@@ -127,11 +151,22 @@ class WindowProof:
         return True
 
 
+def _grown(lo: dict[str, Fraction], hi: dict[str, Fraction]) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
+    """The box grown by its own size on every side: ``[2 lo - hi, 2 hi - lo]``."""
+    return {a: 2 * lo[a] - hi[a] for a in lo}, {a: 2 * hi[a] - lo[a] for a in hi}
+
+
 def may_be_zero(path: Any, k: int) -> bool:
     """May motion ``k`` (rows ``k - 1`` and ``k``) of the double pass's ``path`` be dropped by LinuxCNC's planner
     (length 0, or below :data:`~nczones.motion.DROPPED_BELOW`): are its two rows' boxes that close on every axis?"""
     (l0, h0), (l1, h1) = (path.enclosure(r + 1, r) for r in (k - 1, k))
     return all(l0[a] - h1[a] < DROPPED_BELOW and l1[a] - h0[a] < DROPPED_BELOW for a in l0)
+
+
+def _kinds(path: Any) -> dict[str, dict[str, Any]]:
+    """The profile's motions by kind, as the other lanes report them (none decided one by one)."""
+    counts = (("arc", getattr(path, "arcs", 0)), ("line", path.lines), ("rapid", path.rapids))
+    return {kind: {"motions": n, "seconds_one_by_one": 0.0} for kind, n in counts if n}
 
 
 def _max_boxes(path: Any) -> int:
@@ -164,8 +199,10 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
                "motions_screened_vectorized": 0, "double_pass": {"motions": n, "boxes": boxes},
                "tiers": {"screen_vectorized_s": 0.0, "exact_per_motion_s": 0.0, "solver_s": 0.0,
                          "interpretation_and_rest_s": round(seconds, 6)},
-               "kinds": {}, "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
-    counts = {"blocks": path.blocks, "segments": n, "fast_lines": 0, "line": path.lines, "rapid": path.rapids}
+               "kinds": _kinds(path), "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
+    counts = {"blocks": path.blocks, "segments": n, "fast_lines": 0, "line": path.lines,
+              "arc": getattr(path, "arcs", 0), "rapid": path.rapids, "dwell": 0, "developed_arc": 0, "spline": 0,
+              "polar": 0}
     return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(),
                   timings=(("prove_s", seconds),), stats=stats, margin=margin, engine="auto",
                   extra={"counts": counts, "splits": ()}, profile=profile)

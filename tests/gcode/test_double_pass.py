@@ -12,6 +12,7 @@ from __future__ import annotations
 import os
 from fractions import Fraction
 
+import mpmath
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -19,6 +20,7 @@ from hypothesis import strategies as st
 from nczones.gcode import interpret_text
 from nczones.gcode.linuxcnc.doubles import Declined, DoublePath, double_pass
 from nczones.machine import parse_machine
+from nczones.motion import SegmentKind
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "120"))
 
@@ -57,6 +59,7 @@ def check_against_full(text: str, machine, max_iterations: int = 1000) -> Double
     assert len(segments) == path.motions
     assert run.counts["blocks"] == path.blocks
     axes = machine.axis_names
+    assert path.arcs == sum(seg.kind is SegmentKind.ARC for seg in segments)
     for k, seg in enumerate(segments, start=1):
         lo, hi = path.enclosure(k, k)
         for i, a in enumerate(axes):
@@ -64,7 +67,51 @@ def check_against_full(text: str, machine, max_iterations: int = 1000) -> Double
                 assert lo[a] == hi[a] == machine.start[i]
             for v in (seg.start[i], seg.end[i]):
                 assert lo[a] <= v <= hi[a], (k, a, v, lo[a], hi[a])
+        if seg.kind is SegmentKind.ARC:
+            check_arc_in_box(seg, lo, hi)
     return path
+
+
+def arc_points(seg) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
+    """Points of the full path's arc ``seg`` (G17) at 200 bits, computed from the segment alone: its ends and,
+    at both radii (a spiral lies between), 64 points of its sweep and the points in every axis direction the
+    sweep holds.  The centre of an R arc is ``(S + E) / 2 + s h n`` (``h = sqrt(R**2 - |E - S|**2 / 4)``, n the
+    left normal of the chord, s = -1 for G2 with R > 0 and G3 with R < 0: LinuxCNC's arc_data_r)."""
+    mp = mpmath.mp
+    sx, sy, ex, ey = (mpmath.mpf(Fraction(v).numerator) / Fraction(v).denominator
+                      for v in (seg.start[0], seg.start[1], seg.end[0], seg.end[1]))
+    if seg.centre is not None:
+        cx, cy = (mpmath.mpf(c.numerator) / c.denominator for c in seg.centre)
+    else:
+        r = mpmath.mpf(seg.radius.numerator) / seg.radius.denominator
+        dx, dy = ex - sx, ey - sy
+        d = mpmath.sqrt(dx * dx + dy * dy)
+        h = mpmath.sqrt(r * r - d * d / 4)
+        s = -1 if (r > 0) == seg.clockwise else 1
+        cx, cy = (sx + ex) / 2 - s * h * dy / d, (sy + ey) / 2 + s * h * dx / d
+    r0 = mpmath.sqrt((sx - cx) ** 2 + (sy - cy) ** 2)
+    r1 = mpmath.sqrt((ex - cx) ** 2 + (ey - cy) ** 2)
+    a, b = mpmath.atan2(sy - cy, sx - cx), mpmath.atan2(ey - cy, ex - cx)
+    start, end = (b, a) if seg.clockwise else (a, b)
+    sweep = (end - start) % (2 * mp.pi)
+    if sweep < mpmath.mpf(10) ** -40:
+        sweep = 2 * mp.pi  # back on the start's ray: a whole turn
+    angles = [start + sweep * n / 64 for n in range(65)]
+    angles += [phi for phi in (0, mp.pi / 2, mp.pi, -mp.pi / 2) if (phi - start) % (2 * mp.pi) <= sweep]
+    pts = [(sx, sy), (ex, ey)]
+    pts += [(cx + rad * mpmath.cos(t), cy + rad * mpmath.sin(t)) for t in angles for rad in (r0, r1)]
+    return pts
+
+
+def check_arc_in_box(seg, lo, hi) -> None:
+    """Every point of :func:`arc_points` lies in the enclosure (its bounds are exact binary fractions)."""
+    with mpmath.workprec(200):
+        box = [(mpmath.mpf(lo[a].numerator) / lo[a].denominator, mpmath.mpf(hi[a].numerator) / hi[a].denominator)
+               for a in ("X", "Y")]
+        for p in arc_points(seg):
+            for v, (b_lo, b_hi) in zip(p, box):
+                # 1e-45: the points' own rounding at 200 bits, far below any double's
+                assert b_lo - mpmath.mpf(10) ** -45 <= v <= b_hi + mpmath.mpf(10) ** -45, (seg, p, box)
 
 
 # -- generated programs -------------------------------------------------------------------------------------
@@ -109,8 +156,53 @@ def motions(draw) -> str:
     return f"{code}{words}{feed}"
 
 
+def _dec(x: float, places: int) -> str:
+    return f"{x:.{places}f}"
+
+
+@st.composite
+def arcs(draw) -> list[str]:
+    """A move to a start point, then a G2/G3 from it: I/J (quarters, near half circles, whole circles by I/J,
+    ends on an axis direction from the centre, ends a little off the circle, helices) or R (small and large
+    radii, both signs, near half circles), sometimes with G17 or a feed on the line, then back to G1 or not."""
+    import math
+
+    sx, sy = (draw(st.integers(-4000, 4000)) / 40 for _ in range(2))
+    code = draw(st.sampled_from(["G2", "G3", "G02", "G03"]))
+    places = draw(st.sampled_from([1, 3, 4, 4, 6, 6]))
+    radius = draw(st.sampled_from([0.01, 0.5, 1.0, 7.25, 120.0, 3000.0]))
+    kind = draw(st.integers(0, 5))
+    head = [f"G1 X{_dec(sx, 3)} Y{_dec(sy, 3)}"]
+    if kind <= 2:  # I/J
+        a0 = draw(st.sampled_from([0.0, math.pi / 2, math.pi, 1.0, -2.5, math.pi / 4]))
+        sweep = draw(st.sampled_from([0.0, math.pi / 2, math.pi, math.pi - 1e-6, 2.0, -math.pi / 2, 3 * math.pi / 2,
+                                      1e-5, -1e-7]))
+        i, j = -radius * math.cos(a0), -radius * math.sin(a0)
+        cx, cy = sx + float(_dec(i, places)), sy + float(_dec(j, places))
+        off = draw(st.sampled_from([0.0, 0.0, 0.0, 1e-4, -0.0015, 0.05]))
+        ex, ey = cx + (radius + off) * math.cos(a0 + sweep), cy + (radius + off) * math.sin(a0 + sweep)
+        words = f"X{_dec(ex, places)} Y{_dec(ey, places)} I{_dec(i, places)} J{_dec(j, places)}"
+        if kind == 2:
+            words = draw(st.sampled_from([words, f"X{_dec(sx, 3)} I{_dec(i, places)}",
+                                          f"Y{_dec(sy, 3)} J{_dec(j, places)} Z-1", f"X{_dec(sx, 3)} Y{_dec(sy, 3)} "
+                                          f"I{_dec(i, places)} J{_dec(j, places)} Z[#1 * 2]", words + " P2"]))
+    else:  # R
+        half = draw(st.sampled_from([0.2, 0.5, 0.7, 0.99, 0.9999999, 0.2, 0.5, 0.7, 0.99, 0.9999999, 1.0,
+                                     1.000000000001, 1.01]))
+        t = draw(st.sampled_from([0.0, 0.7, math.pi / 2, -2.0, math.pi]))
+        ex, ey = sx + 2 * radius * half * math.cos(t), sy + 2 * radius * half * math.sin(t)
+        sign = draw(st.sampled_from(["", "-"]))
+        rr = "[#<a> * 0 + 1]" if draw(st.integers(0, 9)) == 0 else f"{sign}{radius}"
+        words = f"X{_dec(ex, places)} Y{_dec(ey, places)} R{rr}"
+        if kind == 5:
+            words += draw(st.sampled_from([" Z2", " I1", " F50", ""]))
+    lead = draw(st.sampled_from(["", "", "", "", "", "", "", "", "G17 ", "G43 H1 ", "G49 ", "G55 ", "G18 "]))
+    tail = draw(st.sampled_from([[], [], [], ["G1"], ["G1"], ["G0 X0 Y0"], ["X1 Y1"]]))
+    return head + [f"{lead}{code} {words}"] + tail
+
+
 #: Lines outside the subset (each must make the pass decline, or the full path agree with it).
-OUTSIDE = ["G2 X1 Y1 R5", "G91", "G20", "M3 S1000", "#4 = #5221", "G43 H1", "T1 M6", "G10 L2 P1 X3",
+OUTSIDE = ["G2 X1 Y1 R5", "G43 H2", "G43", "H1", "G43 H0", "G49", "G19", "G91", "G20", "M3 S1000", "#4 = #5221", "G43 H1", "T1 M6", "G10 L2 P1 X3",
            "G92 X0", "(MSG, hello)", "(DEBUG, #1)", "G59.1", "G53 G0 X1", "G64 P0.01", "#4 = #<_x>", "G4 P1",
            "/G1 X1", "%", "G1 X1 X2", "G0 G1 X1", "G80 X1", "G28", "M0", "S100", "#4 = EXISTS[#<a>]"]
 
@@ -122,7 +214,7 @@ def statements(draw, depth: int, labels: list[int]) -> list[str]:
         target = draw(st.sampled_from(["#1", "#2", "#3", "#31", "#100", "#<a>", "#<b>"]))
         return [f"{target} = {draw(expressions(2))}"]
     if kind <= 5:
-        return [draw(motions())]
+        return draw(arcs()) if draw(st.integers(0, 3)) == 0 else [draw(motions())]
     if kind == 6:
         return [draw(st.sampled_from(["G54", "G55", "G56", "G57", "G58", "G59", "G21 G90", "G17", "G94 G40 G49",
                                       "G80", "F200", "N10 G1 X1 F100", "(a plain comment)", "", "; comment",
@@ -154,7 +246,8 @@ def statements(draw, depth: int, labels: list[int]) -> list[str]:
 @st.composite
 def parametric_programs(draw) -> str:
     head = draw(st.sampled_from(["G21 G90 G54 F300 G1", "G21 G90 G17 G54 G94 F800 G0", "G90 G54 F300", "G21 G90 G55 F50 G1",
-                                 "G21 G90 G54 G0", "G21 G90 G54 F100 G1"]))
+                                 "G21 G90 G54 G0", "G21 G90 G54 F100 G1", "G21 G90 G17 G54 F300 G1",
+                                 "G21 G90 G17 G54 G43 H1 F300 G1"]))
     if draw(st.integers(0, 4)):
         head += "\n#<a> = 1.5\n#<b> = [#<a> * 2]"
     labels: list[int] = []
@@ -165,13 +258,14 @@ def parametric_programs(draw) -> str:
 
 
 @st.composite
-def machines(draw):
+def machines(draw, tools: bool = False):
     def triple():
         return tuple(draw(st.sampled_from(["0", "10", "-2.5", "0.1", "1000.0001"])) for _ in range(3))
 
     offsets = {name: triple() for name in ("G54", "G55", "G57") if draw(st.booleans())}
     modal = draw(st.sampled_from([None] * 12 + ['["G21", "G90", "G17", "G55"]', '["G20"]', '["G91"]']))
-    return parse_machine(machine_text(offsets, triple(), modal))
+    lengths = draw(st.sampled_from(["", '[tool_lengths]\nH1 = "100"\n', '[tool_lengths]\nH1 = "-12.3456789"\n'][tools:]))
+    return parse_machine(machine_text(offsets, triple(), modal, extra=lengths))
 
 
 @settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
@@ -179,6 +273,25 @@ def machines(draw):
 @given(parametric_programs(), machines(), st.sampled_from([1000, 3, 4]))
 def test_the_pass_is_enclosed_by_the_full_interpreter(text, machine, max_iterations):
     check_against_full(text, machine, max_iterations)
+
+
+@st.composite
+def arc_programs(draw) -> str:
+    """Programs of arcs (:func:`arcs`) and G43 after a head that sets the plane, most of them in the subset."""
+    head = draw(st.sampled_from(["G21 G90 G17 G54 F300", "G21 G90 G17 G54 G43 H1 F800 G1", "G17 G21 G90 G55 F50",
+                                 "G21 G90 G17 G54 F300", "G21 G90 G17 G54 F300", "G21 G90 G17 G54 F300",
+                                 "G21 G90 G54 F300"]))
+    body = [line for _ in range(draw(st.integers(1, 4))) for line in draw(arcs())]
+    return "\n".join([head, "#1 = 0.5", *body, "M30"]) + "\n"
+
+
+@settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(arc_programs(), machines(tools=True))
+def test_arcs_are_enclosed_by_the_full_interpreter(text, machine):
+    """The invariant on programs of arcs: each arc of the full path (its ends, its points at both radii and
+    its extremes, :func:`check_arc_in_box`) lies in the pass's box of its motion."""
+    check_against_full(text, machine)
 
 
 # -- fixed programs ----------------------------------------------------------------------------------------
@@ -217,7 +330,7 @@ def test_the_rows_are_the_controllers_doubles():
 
 
 DECLINED = {
-    "an arc": ("G21 G90 G54 F100\n#1 = 1\nG2 X1 Y1\n", "G2"),
+    "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J or R"),
     "incremental": ("G21 G91 G54 F100\n#1 = 1\nG1 X1\n", "G91"),
     "inches": ("G20 G90 G54 F100\n#1 = 1\nG1 X1\n", "G20"),
     # spindle and coolant M codes, one to a block, and S are followed (issue 36); two in a block are not
@@ -248,7 +361,16 @@ DECLINED = {
     "a computed code": ("G21 G90 G54 F100\n#1 = 1\nG[#1] X2\n", "computed"),
     "G1.5": ("G21 G90 G54 F100\n#1 = 1\nG1.5 X2\n", "code"),
     "two motions": ("G21 G90 G54 F100\n#1 = 1\nG0 G1 X2\n", "modal group"),
-    "a tool length": ("G21 G90 G54 F100\n#1 = 1\nG43 H1\nG1 X#1\n", "word H"),
+    "a tool length not in the machine": ("G21 G90 G54 F100\n#1 = 1\nG43 H1\nG1 X#1\n", "H register"),
+    "an H word alone": ("G21 G90 G54 F100\n#1 = 1\nH1\nG1 X#1\n", "H word without G43"),
+    "an arc before G17": ("G21 G90 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "sets the plane"),
+    "an arc in G18": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 R5\n", "outside G17"),
+    "turns": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5 P2\n", "word P"),
+    "R and I": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5 I1\n", "R and I"),
+    "a half circle by R": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X2 R1\n", "about 2|R|"),
+    "R too short": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X2 R0.9\n", "about 2|R|"),
+    "an arc off its circle": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X2 I1.1\n", "arc tolerance"),
+    "I with G1": ("G21 G90 G17 G54 F100\n#1 = 1\nG1 X2 I1\n", "without G2"),
     "G59.1": ("G21 G90 G59.1 F100\n#1 = 1\nG1 X#1\n", "code"),
     "EXISTS": ("G21 G90 G54 F100\n#1 = EXISTS[#<a>]\nG1 X#1\n", "EXISTS"),
     "a line that does not parse": ("G21 G90 G54 F100\n#1 = [1 +\nG1 X#1\n", "parse"),

@@ -53,6 +53,7 @@ def small_windows(monkeypatch):
     monkeypatch.setattr(blend, "ARC_CACHE", 64)
     monkeypatch.setattr(blend, "CORNER_BATCH", 64)
     monkeypatch.setattr(doubles, "PIECE", 16384)
+    monkeypatch.setattr(doubles, "WINDOW", 512)  # plain LinuxCNC files of these sizes go to the pass (issue 36)
     monkeypatch.setattr(columns, "MAX_ROWS", 512)
 
 

@@ -368,6 +368,10 @@ def test_verify_r_arc_program_over_512_motions(hashes, fanuc, monkeypatch):
     # every safe R arc was proved by the column screen (before issue 36: each one by one on the exact path)
     assert r.profile["motions_screened_vectorized"] == 600 - len(expected) + 1  # (and the G0)
     safe = verify_text(text.replace("R-10", "R10"), m)  # every arc the short way: 0.01 below the face
+    assert safe.verdict is Verdict.SAFE  # (LinuxCNC: by the double pass, which follows R arcs since issue 36)
+    with monkeypatch.context() as without_pass:  # the column screen proves them too
+        without_pass.setattr("nczones.pipeline.verification.double_pass_result", lambda *args, **kwargs: None)
+        safe = verify_text(text.replace("R-10", "R10"), m)
     assert safe.verdict is Verdict.SAFE and safe.profile["motions_screened_vectorized"] == 601
     if hashes or fanuc:
         return  # (the exact path's verdict is held to the same derivation once, below)

@@ -345,8 +345,10 @@ def test_line_rows_are_floor_and_ceiling_of_the_exact_box(specs):
             assert got[i] == (*want, seg.block, int(seg.kind))
 
 
-def test_full_interpreter_segments_are_screened_by_columns():
+def test_full_interpreter_segments_are_screened_by_columns(monkeypatch):
     # doubles from SIN on every line: before the batches every segment was a box test in Fractions
+    # (a plain program of this size goes to the double pass first since issue 36: not here, the columns are tested)
+    monkeypatch.setattr("nczones.pipeline.verification.double_pass_result", lambda *args, **kwargs: None)
     m = parse_machine(MACHINE.format(dialect="linuxcnc", xmax="80", ymax="80", cx0="70", cy0="70", cx1="75",
                                      cy1="75", step="60", ystep="80", g55x="0", g55y="0", h1="20", floor="-50"))
     lines = [f"G1 X[SIN[{k}] * 10 + 20] Y[COS[{k}] * 10 + 20]" for k in range(3000)]

@@ -130,7 +130,7 @@ def test_the_numpy_free_path_agrees_with_the_vectorized_path_and_z3(machine, pro
         assert (small.verdict, blocks(small)) == (z3.verdict, blocks(z3)), (program, ranges)
 
 
-def test_the_thresholds_choose_the_path():
+def test_the_thresholds_choose_the_path(monkeypatch):
     machine = parse_machine(MACHINE.format(dialect="linuxcnc", rapid="linear", xmax="80", ymax="80", cx0="70", cy0="70", cx1="75",
                                            cy1="75", step="60", ystep="80", g55x="0", g55y="0", h1="20",
                                            floor="-50"))
@@ -144,5 +144,12 @@ def test_the_thresholds_choose_the_path():
     large = run(prover_api.FAST_PATH_MIN_LINES + 10)
     assert small.verdict.label == large.verdict.label == "safe"
     assert small.extra["counts"]["fast_lines"] == 0 and small.profile["motions_screened_vectorized"] == 0
+    assert "double_pass" not in small.profile
+    # a plain LinuxCNC program of FAST_PATH_MIN_LINES lines up to PLAIN_PASS_SIZE: the double pass first (issue 36)
+    assert large.profile["double_pass"]["motions"] == large.profile["motions"] == prover_api.FAST_PATH_MIN_LINES + 10
+    from nczones.pipeline import verification
+
+    monkeypatch.setattr(verification, "PLAIN_PASS_SIZE", prover_api.FAST_PATH_MIN_LINES)  # larger: the fast path
+    large = run(prover_api.FAST_PATH_MIN_LINES + 10)
     assert large.extra["counts"]["fast_lines"] > 0 and large.profile["motions_screened_vectorized"] > 0
     assert core.SCREEN_MIN_SEGMENTS <= prover_api.FAST_PATH_MIN_LINES  # a program read fast is screened too

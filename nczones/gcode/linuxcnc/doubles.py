@@ -23,7 +23,12 @@ is the double sum ``d + float(offset)``.  So the exact coordinate ``m`` and the 
 subnormal), and :meth:`DoublePath.enclosure` widens by more than that.  A straight move (G1, and G0 in
 either rapid mode: each axis moves monotonically from its start to its end) stays inside the box of its
 end points, so the box of a run of motions' end points, with the point before the first, holds every
-position of those motions.
+position of those motions.  An arc (G2/G3 in G17) is not: each arc row also has its own box
+(:mod:`nczones.gcode.linuxcnc.double_arcs`, whose docstring says why it holds the full path's exact arc, an
+R arc's irrational centre included), which :meth:`DoublePath.enclosure` joins to the rows' box; a helix's
+third axis moves monotonically, so the rows hold it.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
+entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
+bound's offset term covers the largest work offset plus the largest length.
 
 The subset
 ----------
@@ -33,14 +38,19 @@ labels not reused; ``o.. sub``/``endsub`` at the top level, and ``o.. call`` of 
 call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1..#30 and local named
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
-``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G17 G18 G19 G21 G40 G49 G54-G59 G80 G90 G94 with literal codes, F,
+``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G17 G18 G19 G21 G40 G43 G49 G54-G59 G80 G90 G94 with literal codes, F,
 X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5 M7 M8 M9 a block, and M2/M30 alone
-to end; plain comments.  Everything else declines:
+to end; plain comments.  Arcs: in G17 once the program has set it, on a machine with X and Y, I/J (G91.1,
+LinuxCNC's default) or R format with X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
+``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  Everything else declines:
 other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
-parameter read of controller state, any evaluation error.
+parameter read of controller state, any evaluation error; an arc in G18/G19, with P or K, without axis
+words or a centre, of a radius about 0, with ends near or past the arc tolerance, an R arc of a chord about
+0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those); I, J or R without G2/G3,
+H without G43, G43 without H or with H0.
 
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
 layout; in a loop or sub body: the block's steps compiled once and kept, :data:`MAX_STEPS` lines at most).  A
@@ -50,7 +60,7 @@ cannot see its call frame: it is called without one (``tests/gcode/test_double_p
 Invariant (``tests/gcode/test_double_pass.py``): whenever the pass returns, the full interpreter's run of
 the same program on the same machine completes with no unknown code, no error and no notes, with the same
 number of motions, and the end point of its k-th motion lies in the box of the pass's k-th row widened by
-the bound.
+the bound (an arc: its every point, at both radii of a spiral, in :meth:`DoublePath.enclosure` of its row).
 """
 
 from __future__ import annotations
@@ -63,7 +73,9 @@ from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from ...errors import GcodeError
+from ...motion import DROPPED_BELOW
 from ...precompiled import dataclass  # start-up: no dataclasses import
+from .. import DEFAULT_ARC_TOLERANCE
 from ..codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from ..expr import (
     MAX_PARAMETER,
@@ -78,6 +90,7 @@ from ..lexer import magic_comment
 from ..parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from ..program import scan_oword
 from ..shapes import LAYOUT, RUNS, shape_source, shaped
+from .double_arcs import ij_arc, r_arc, radius_rule
 
 if TYPE_CHECKING:
     from ..source import FileText
@@ -95,6 +108,9 @@ PIECE = 1 << 20
 #: a few hundred bytes each); the lines of a longer body are compiled again from their piece at each run, so
 #: memory stays flat however long a body is.
 MAX_STEPS = 1 << 16
+#: Lines of a layout the pass runs through the shape's step and the layout's cutter before it compiles the two
+#: into one step for the layout (:meth:`_Pass._layout_step`).
+COMPILE_AFTER = 64
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
@@ -112,7 +128,9 @@ _BLANKS = re.compile(r"[ \t]+")
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
-_LETTERS = frozenset("GMFSXYZ")
+_LETTERS = frozenset("GMFSXYZIJRH")
+#: Letters whose word is a literal code (H: the tool length register, read like a G or M code).
+_CODE_LETTERS = "GMH"
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
 
 
@@ -153,6 +171,13 @@ class DoublePath:
     first_row: tuple[int, ...]
     #: the row ``columns[a][0]`` is (a window of a long program: rows ``row0``..``motions``; 0: every row)
     row0: int = 0
+    #: arcs (G2/G3): how many in the whole program, and those of these rows: their rows (motions, ascending)
+    #: and per plane axis (``arc_axes``) the outer bounds (doubles) of each arc's box (``double_arcs``)
+    arcs: int = 0
+    arc_rows: array | None = None
+    arc_axes: tuple[int, ...] = ()
+    arc_lo: tuple[array, ...] = ()
+    arc_hi: tuple[array, ...] = ()
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -183,16 +208,39 @@ class DoublePath:
                 bounds.append(Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID))
                 bounds.append(Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID))
             lo[self.axes[a]], hi[self.axes[a]] = min(bounds), max(bounds)
+        if self.arc_rows:
+            self._arc_bounds(first, last, lo, hi)
         return lo, hi
+
+    def _arc_bounds(self, first: int, last: int, lo: dict[str, Fraction], hi: dict[str, Fraction]) -> None:
+        """Grow ``lo``/``hi`` by the boxes of the arcs among motions ``first``..``last``."""
+        rows = self.arc_rows
+        assert rows is not None
+        begin, end = bisect_left(rows, first), bisect_right(rows, last)
+        if begin >= end:
+            return
+        for k, a in enumerate(self.arc_axes):
+            name = self.axes[a]
+            lo[name] = min(lo[name], Fraction(min(self.arc_lo[k][begin:end])))
+            hi[name] = max(hi[name], Fraction(max(self.arc_hi[k][begin:end])))
+
+    def has_arcs(self, first: int, last: int) -> bool:
+        """Is one of motions ``first``..``last`` (of these rows) an arc?"""
+        rows = self.arc_rows
+        if not rows:
+            return False
+        at = bisect_left(rows, first)
+        return at < len(rows) and rows[at] <= last
 
 
 _ULP = Fraction(1, 2**52)
+_DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
 
 
 def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_window: Any = None,
-                window: int | None = None) -> DoublePath:
+                window: int | None = None, arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE) -> DoublePath:
     """Run ``text`` on ``machine`` in doubles (see the module's docstring); raise :class:`Declined` when the
     program leaves the subset.  ``text`` may be a streamed file (:class:`~nczones.gcode.source.FileText`):
     the pass reads it a piece at a time and never holds it whole.
@@ -205,6 +253,8 @@ def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_w
     one window.  ``on_window`` returns False to stop the pass (it then declines), or None to be handed the
     window again one motion later (it grows: a window that cannot end at this motion, up to twice its size,
     then the pass declines).  The path returned is the last window, with the whole program's counts.
+    ``arc_tolerance`` is the full path's (its ``Interpreter``'s ``arc_tolerance``): the pass declines an I/J
+    arc near or past its rule.
 
     >>> from nczones.machine import parse_machine
     >>> m = parse_machine('[machine]\\naxes=["X","Y"]\\n[machine.rapid]\\nX="1000"\\nY="1000"\\n'
@@ -213,12 +263,13 @@ def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_w
     ...                 "#1 = [#1 + 1]\\no1 endwhile\\nM30\\n", m, max_iterations=100)
     >>> p.motions, list(p.columns[0])
     (3, [0.0, 0.0, 0.1, 0.2])
-    >>> double_pass("G21 G90 G54\\nG2 X1 Y1\\n", m, max_iterations=100)
+    >>> double_pass("G21 G90 G54\\nG33 X1 Y1\\n", m, max_iterations=100)
     Traceback (most recent call last):
     ...
-    nczones.gcode.linuxcnc.doubles.Declined: G2 is not followed by the double pass
+    nczones.gcode.linuxcnc.doubles.Declined: G33 is not followed by the double pass
     """
-    return _Pass(text, machine, max_iterations, on_window, WINDOW if window is None else window).run()
+    return _Pass(text, machine, max_iterations, on_window, WINDOW if window is None else window,
+                 arc_tolerance).run()
 
 
 #: The code of a step: its body, its parameter writes, its values, the source of its plan's key, its names.
@@ -227,7 +278,7 @@ _Code = tuple[list[str], list[str], list[str], str, dict]
 
 class _Pass:
     def __init__(self, text: str | FileText, machine: Any, max_iterations: int, on_window: Any = None,
-                 window: int = WINDOW):
+                 window: int = WINDOW, arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE):
         if window < 1:
             raise ValueError(f"a window of at least one motion, got {window}")
         self.on_window = on_window
@@ -257,8 +308,10 @@ class _Pass:
             raise Declined(f"the machine starts in {wcs}")
         exact_offsets = {name: tuple(machine.offset(name)) for name in WORK_OFFSETS}
         self.offsets = {int(name[1:]): tuple(float(v) for v in vec) for name, vec in exact_offsets.items()}
-        self.offset_bound = tuple(max(abs(vec[i]) for vec in exact_offsets.values()) for i in range(len(self.axes)))
-        self.off = self.offsets[int(wcs[1:])]
+        self._tools(machine, exact_offsets)
+        self.wcs = int(wcs[1:])
+        self.off = self.offsets[self.wcs]
+        self._arcs_state(machine, arc_tolerance)
         self.unset = set(_NOTED)
         self.motion: int | None = None
         self.feed = 0.0
@@ -426,8 +479,9 @@ class _Pass:
         if not all(math.isfinite(sum(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
-        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids, self.rapids,
-                          self.blocks, self.start, tuple(self.first_row), self.row0)
+        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - self.arcs,
+                          self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, self.arcs,
+                          self.arc_rows, self.arc_axes, self.arc_lo, self.arc_hi)
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -442,6 +496,10 @@ class _Pass:
         for col in self.columns:
             del col[:keep]
         self.row0 += keep
+        gone = bisect_right(self.arc_rows, self.row0)  # the arcs of the rows dropped (motions up to row0)
+        if gone:
+            for col in (self.arc_rows, *self.arc_lo, *self.arc_hi):
+                del col[:gone]
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -455,9 +513,26 @@ class _Pass:
                 return None, ()
             return self._fresh(line)
         cut = hit[1]
+        step = self._shape_step(hit[2])
         if own_layout is not None and layout == own_layout:
-            self.by_layout[layout] = self._shape_step(hit[2], cut)
-        return self._shape_step(hit[2]), cut(line)
+            self.by_layout[layout] = self._layout_step(layout, step, hit[2], cut)
+        return step, cut(line)
+
+    def _layout_step(self, layout: bytes, step: Any, shape: Any, cut: Any) -> Any:
+        """The step of the lines of ``layout`` (the line itself its argument): ``step`` of the literals
+        ``cut`` takes out of the line at first, and after :data:`COMPILE_AFTER` lines the step compiled with
+        the cutter in it (a compilation costs as much as some thousand calls: a layout of a few lines is not
+        worth one; CAM output with arcs has hundreds of layouts)."""
+        left = COMPILE_AFTER
+
+        def first_lines(line: str) -> Any:
+            nonlocal left
+            left -= 1
+            if not left:
+                self.by_layout[layout] = self._shape_step(shape, cut)
+            return step(cut(line))
+
+        return first_lines
 
     # -- control lines ------------------------------------------------------------------------------------
     def _controls(self) -> dict[int, tuple]:
@@ -739,6 +814,72 @@ class _Pass:
             if not self.first_row[i]:
                 self.first_row[i] = row
 
+    # -- tool lengths and arcs ---------------------------------------------------------------------------
+    def _tools(self, machine: Any, exact_offsets: dict[str, tuple[Fraction, ...]]) -> None:
+        """The tool lengths ``G43 H<n>`` may apply (the machine's ``[tool_lengths]``, on its tool axis; none on a
+        machine with a tool tip zone, whose test needs the length: the full path's) and the bound of every
+        offset a row may be computed with (a work offset plus a tool length)."""
+        tool_axis = getattr(machine, "tool_axis", None)
+        self.tool_axis = self.index.get(tool_axis) if tool_axis else None
+        tips = any(getattr(getattr(z, "point", None), "value", None) == "tip" for z in machine.allowed.zones)
+        lengths = dict(getattr(machine, "tool_lengths", {}) or {})
+        self.lengths: dict[int, Fraction] = lengths if self.tool_axis is not None and not tips else {}
+        bound = [max(abs(vec[i]) for vec in exact_offsets.values()) for i in range(len(self.axes))]
+        if self.tool_axis is not None:
+            bound[self.tool_axis] += max((abs(v) for v in self.lengths.values()), default=Fraction(0))
+        self.offset_bound = tuple(bound)
+        self.exact_offsets = {int(name[1:]): vec for name, vec in exact_offsets.items()}
+        self.reg: int | None = None  # the length register applied (G43 H<reg>); None: G49
+        self.tool_offsets: dict[tuple[int, int], tuple[float, ...]] = {}
+
+    def _offset(self, wcs: int, reg: int | None) -> tuple[float, ...]:
+        """The doubles of work offset ``wcs`` plus the length of register ``reg`` on the tool axis (each exact
+        sum rounded once, as a work offset alone is)."""
+        if reg is None:
+            return self.offsets[wcs]
+        off = self.tool_offsets.get((wcs, reg))
+        if off is None:
+            vec = list(self.exact_offsets[wcs])
+            assert self.tool_axis is not None  # self.lengths is empty without one
+            vec[self.tool_axis] += self.lengths[reg]
+            off = self.tool_offsets[(wcs, reg)] = tuple(float(v) for v in vec)
+        return off
+
+    def tool(self, reg: int | None) -> None:
+        """G43 H<reg> (None: G49): the tool length the next motions add."""
+        self.reg = reg
+        self.off = self._offset(self.wcs, reg)
+
+    def work(self, wcs: int) -> None:
+        """G54..G59: the work offset the next motions add."""
+        self.wcs = wcs
+        self.off = self._offset(wcs, self.reg)
+
+    def _arcs_state(self, machine: Any, arc_tolerance: Fraction | str) -> None:
+        #: the program has set the plane to G17 (before it sets one the full path notes the plane at an arc)
+        self.g17 = False
+        #: the machine blends corners (the pass declines G61/G64 in the text): an arc after a motion LinuxCNC
+        #: may drop (shorter than DROPPED_BELOW on every axis) is run from the corner, which the full path
+        #: answers unknown for (prover/blend.py)
+        self.blend = getattr(machine, "path_mode", "G64") == "G64"
+        self.tiny_pad = float(max(self.offset_bound, default=Fraction(0))) * 1e-14  # the rows' offset term
+        self.rule = radius_rule(arc_tolerance)
+        ix, iy = self.index.get("X"), self.index.get("Y")
+        self.arc_axes: tuple[int, ...] = (ix, iy) if ix is not None and iy is not None else ()
+        top = max((self.offset_bound[i] for i in self.arc_axes), default=Fraction(0))
+        self.offb = math.nextafter(float(top), math.inf)  # at or above the plane axes' offsets
+        self.arcs = 0
+        self.arc_rows = array("q")
+        self.arc_lo = (array("d"), array("d"))
+        self.arc_hi = (array("d"), array("d"))
+
+    def tiny(self, row: int) -> bool:
+        """May the motion that ends at ``row`` (of the columns held) be dropped by LinuxCNC: is it shorter than
+        :data:`~nczones.motion.DROPPED_BELOW` on every axis, within far more than the rows' error?"""
+        pad = self.tiny_pad
+        return all(abs(col[row] - col[row - 1]) < _DROPPED + (abs(col[row]) + abs(col[row - 1])) * 4e-15 + pad
+                   for col in self.columns)
+
     def _end(self, values: tuple) -> bool:
         """M2 or M30: the program ends."""
         self.blocks += 1
@@ -755,28 +896,22 @@ class _Pass:
         return plan
 
     def _make_plan(self, letters: str, codes: tuple[int, ...]) -> Any:
-        gm = [x for x in letters if x in "GM"]
+        gm = [x for x in letters if x in _CODE_LETTERS]
         gs = [c for c, letter in zip(codes, gm) if letter == "G"]
         ms = [c for c, letter in zip(codes, gm) if letter == "M"]
-        others = [x for x in letters if x not in "GM"]
-        if ms in ([2], [30]) and not gs and not others:
+        hs = [c for c, letter in zip(codes, gm) if letter == "H"]
+        others = [x for x in letters if x not in _CODE_LETTERS]
+        if ms in ([2], [30]) and not gs and not others and not hs:
             return self._end
         if ms and (len(ms) != 1 or ms[0] not in _AUX_M):
             raise Declined("an M code the double pass does not follow")
-        groups: dict[str, int] = {}
-        for g in gs:
-            group = _GROUPS.get(g)
-            if group is None:
-                raise Declined(f"G{g} is not followed by the double pass")
-            if group in groups:
-                raise Declined("two G codes of one modal group")
-            groups[group] = g
-        if len(set(others)) != len(others):
+        groups = _groups(gs)
+        if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FS" and x not in self.index:
+            if x not in "FSIJR" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FS"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJR"]
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -787,32 +922,108 @@ class _Pass:
                      "st.feed = f"]
         if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
             body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
+        if "plane" in groups:
+            body.append(f"st.g17 = {groups['plane'] == 17}")
         sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
         if sets:
             body.append(f"unset.difference_update({tuple(sets)!r})")
         if "offset" in groups:
-            body.append(f"st.off = OFFSETS[{groups['offset']}]")
+            body.append(f"st.work({groups['offset']})")
+        body += self._tool_body(groups.get("tool"), hs)
         if "motion" in groups:
             body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
-        if groups.get("motion") == 1 and not axes:  # G1 without axis words: LinuxCNC checks the feed too
+        if groups.get("motion") in (1, 2, 3) and not axes:  # G1 without axis words: LinuxCNC checks the feed too
+            if groups["motion"] != 1 or any(x in "IJR" for x in others):
+                raise Declined("an arc without axis words")
             body.append("if not st.feed > 0.0: raise D('G1 without a positive feed')")
         if axes:
-            body += ["mode = st.motion",
-                     "if mode is None: raise D('axis words without a motion mode')",
-                     "if mode == 1 and not st.feed > 0.0: raise D('G1 without a positive feed')",
-                     "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
-                     "off = st.off"]
-            body.append(f"if {' or '.join(f'not FR[{i}]' for _k, i in axes)}: st.moved({tuple(i for _k, i in axes)!r})")
-            body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
-            body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
-            body.append(f"if len(C0) >= {self.rows}: st.full()")
-            body.append("if not mode: st.rapids += 1")
+            body += self._motion_body(others, axes)
+        elif any(x in "IJR" for x in others):
+            raise Declined("I, J or R without a motion")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "OFFSETS": self.offsets, "FR": self.first_row}
+                                 "FR": self.first_row, "R_ARC": r_arc, "IJ_ARC": ij_arc, "BLEND": self.blend,
+                                 "AR": self.arc_rows.append, "XL": self.arc_lo[0].append, "XH": self.arc_hi[0].append,
+                                 "YL": self.arc_lo[1].append, "YH": self.arc_hi[1].append}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
+
+    def _tool_body(self, code: int | None, hs: list[int]) -> list[str]:
+        """A block's G43 H<n> or G49 (an H word without G43 is LinuxCNC's error; G43 without H, or with H0,
+        applies the tool in the spindle, which the pass does not follow)."""
+        if code is None:
+            if hs:
+                raise Declined("an H word without G43")
+            return []
+        if code == 49:
+            if hs:
+                raise Declined("an H word without G43")
+            return ["st.tool(None)"]
+        if len(hs) != 1 or hs[0] not in self.lengths:
+            raise Declined("G43 without an H register of the machine's [tool_lengths] (or with a tip zone)")
+        return [f"st.tool({hs[0]})"]
+
+    def _arc_body(self, others: list[str]) -> list[str]:
+        """The code that adds the box of the arc just moved (:mod:`.double_arcs`) from ``sa, sb``, or declines."""
+        def val(x: str) -> str:
+            return f"v[{others.index(x)}]" if x in others else "0.0"
+
+        ia, ib = self.arc_axes
+        turn = self.axes[ia] not in others and self.axes[ib] not in others  # the end is the start: a whole turn
+        ends = f"sa, sb, pos[{ia}], pos[{ib}]"
+        call = (f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})" if "R" in others
+                else f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})")
+        return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
+                "if BLEND and len(C0) > 2 and st.tiny(len(C0) - 2): "
+                "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
+                f"box = {call}", "if box.__class__ is str: raise D(box)",
+                "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", "st.arcs += 1"]
+
+    def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
+        """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
+        :meth:`arc` adds."""
+        arc = [x for x in others if x in "IJR"]
+        moved = tuple(i for _k, i in axes)
+        if not arc:
+            check = ["if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
+                     "elif mode: raise D('an arc without I, J or R')"]
+        else:
+            if "R" in arc and len(arc) > 1:
+                raise Declined("R and I or J in one arc")
+            if not self.arc_axes or any(self.axes[i] not in "XYZ" for i in moved):
+                raise Declined("an arc on axes other than X, Y and Z")
+            check = ["if mode is None or mode < 2 or not st.feed > 0.0: "
+                     "raise D('I, J or R without G2 or G3, or without a positive feed')"]
+            moved = tuple(sorted(set(moved) | set(self.arc_axes)))
+        body = ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')", *check,
+                "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
+                "off = st.off"]
+        if arc:
+            ia, ib = self.arc_axes
+            body.append(f"sa = pos[{ia}]; sb = pos[{ib}]")
+        body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
+        body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
+        body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+        if arc:
+            body += self._arc_body(others)
+        body.append(f"if len(C0) >= {self.rows}: st.full()")
+        if not arc:
+            body.append("if not mode: st.rapids += 1")
+        return body
+
+
+def _groups(gs: list[int]) -> dict[str, int]:
+    """The modal groups of a block's G codes (declined: a code the pass does not follow, two of a group)."""
+    groups: dict[str, int] = {}
+    for g in gs:
+        group = _GROUPS.get(g)
+        if group is None:
+            raise Declined(f"G{g} is not followed by the double pass")
+        if group in groups:
+            raise Declined("two G codes of one modal group")
+        groups[group] = g
+    return groups
 
 
 class _Lines:
@@ -960,15 +1171,15 @@ def _const_code(node: Any) -> str:
 
 
 def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[str], list[str]]:
-    """Emit a line's words: the sources of their values (G and M excluded) and of their G and M codes."""
+    """Emit a line's words: the sources of their values (G, M and H excluded) and of their G, M and H codes."""
     codes = []
     vals = []
     for letter, tree, *_rest in words:
         if letter not in _LETTERS:
             raise Declined(f"a word {letter}")
-        if letter in "GM":
+        if letter in _CODE_LETTERS:
             if tree[0] != NUM:
-                raise Declined("a computed G or M code")
+                raise Declined("a computed G, M or H code")
             codes.append(code_src(tree))
         else:
             vals.append(em.value(tree, body))

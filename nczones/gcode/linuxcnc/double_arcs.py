@@ -1,0 +1,223 @@
+"""Arcs of the double pass (:mod:`nczones.gcode.linuxcnc.doubles`): from the pass's doubles, a box that holds
+the full path's exact arc, or the reason the pass declines the arc.
+
+The full path (``Interpreter.arc``) models a G17 arc exactly: an I/J arc from the exact start ``S`` about
+the exact centre ``C = S + (I, J)`` to the exact end ``E`` (a spiral when ``|E - C| != |S - C|``), an R arc
+on the circle of radius ``|R|`` through ``S`` and ``E`` whose centre ``C = (S + E) / 2 + s h n``
+(``h = sqrt(R**2 - |E - S|**2 / 4)``, ``n`` the unit normal left of the chord, ``s = -1`` for G2 with
+``R > 0`` and G3 with ``R < 0``, else ``+1``) is irrational in general.  The pass has doubles ``S'``,
+``E'`` within the row bound ``rho`` of :class:`~nczones.gcode.linuxcnc.doubles.DoublePath` and the words'
+doubles (each within half an ulp of its exact value, plus the smallest subnormal).
+
+Why the bound holds
+-------------------
+Every ``+ - * /`` and ``sqrt`` below is correctly rounded (IEEE-754, to nearest), so each result is within
+``2**-53`` relative of the exact operation on its (already inexact) operands; ``math.hypot`` is within
+one ulp.  With ``m`` the largest magnitude of the doubles involved (ends, centre, words, radii) plus the
+work offsets' bound, each error is a small multiple of ``m 2**-52`` (the sums are in the functions'
+comments); the box is widened by ``64 m 2**-52 + 2**-56`` (``_err``), above every such sum, then rounded
+outwards with :func:`math.nextafter`.  For an R arc the centre's distance ``h`` is a square root, which is
+ill-conditioned near a half circle: ``|sqrt a - sqrt b| = |a - b| / (sqrt a + sqrt b) <= |a - b| / sqrt b``
+bounds it, and an arc whose ``X' = R'**2 - D'/4`` is not above ``10**-9 R'**2`` and eight times its own
+error is declined (the full path takes a chord within ``10**-12`` of ``2|R|`` as a half circle and a
+longer one as GC302: those arcs are the full path's to decide).
+
+The arc's box: the annulus sector between radii ``r_min`` and ``r_max`` (the exact start and end radii)
+over the exact sweep holds the arc.  Its box is the box of its corners (within ``|r1 - r0|`` of the end
+points) and, for every axis direction ``+X, +Y, -X, -Y`` the sweep contains, ``C +- r_max`` on that axis
+(over an angle interval without such a direction a coordinate is monotone or has its one extreme at an
+end).  The sweep's ends are the angles of ``S - C`` and ``E - C``; a vector ``v`` moved by at most ``d``
+(Euclidean) turns by at most ``asin(d / |v'|) <= pi/2 d / |v'|``, so each end angle is known within
+``eta = 2.5 err / |v'|`` (``d <= sqrt 2 err``) plus ``10**-12`` for ``atan2`` and the float ``2 pi``.  A
+direction is taken when it is within the computed sweep grown by those angles; when the computed sweep
+is within them of 0 or of a whole turn (the exact one may be either: LinuxCNC makes an end on the start's
+ray a whole turn), all four are taken.  Taking a direction the exact sweep does not contain only grows
+the box, which stays sound.
+
+What declines (the full path errors or decides otherwise there): a radius about 0 (GC304 exactly at 0), an
+I/J arc whose radii differ near or past the arc tolerance's rule (GC301), an R arc whose chord is about 0
+(GC303) or about ``2|R|`` or longer (a half circle or GC302).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from typing import Any
+
+from ...exact import to_float
+
+__all__ = ["ij_arc", "r_arc", "radius_rule"]
+
+_U = 2.0**-52
+_TAU = 2.0 * math.pi
+#: Angle slack (radians) for atan2, the float 2 pi and the sums of angles: far above their rounding.
+_SLACK = 1e-12
+#: An R arc is declined unless ``X' > _HALF * R'**2`` (its chord is clearly shorter than 2|R|).
+_HALF = 1e-9
+_DOWN, _UP = -math.inf, math.inf
+#: LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE in mm (2 * 0.01 * sqrt 2).
+_A = 2 * 0.01 * math.sqrt(2)
+#: The directions +X, +Y, -X, -Y as angles.
+_ANGLES = (0.0, math.pi / 2, math.pi, -math.pi / 2)
+
+
+def radius_rule(tolerance: Fraction | str) -> float:
+    """The I/J rule of the full path for ``tolerance`` (the interpreter's ``arc_tolerance``), as :func:`ij_arc`
+    takes it: -1 for LinuxCNC's rule, else the tolerance in mm as a double rounded down (Grbl's rule is the
+    fixed 0.005 mm)."""
+    if tolerance == "linuxcnc":
+        return -1.0
+    if tolerance == "grbl":
+        tolerance = Fraction(5, 1000)
+    t = to_float(Fraction(tolerance))
+    if Fraction(t) > Fraction(tolerance):
+        t = math.nextafter(t, _DOWN)
+    return t
+
+
+def _linuxcnc_accepts(diff: float, big: float) -> bool:
+    """``interpreter.linuxcnc_rejects_arc`` is False, by a margin (``diff`` already holds one), in mm (the pass
+    runs G21 only): refused when ``|r1 - r0| > 100 A``, or ``> A`` and ``> 0.001`` of the larger radius,
+    ``A = 2 * 0.01 * sqrt 2``."""
+    return diff < _A or (diff < 100 * _A and diff < 0.001 * big)
+
+
+def ij_arc(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,
+           tol: float, turn: bool = False) -> Any:
+    """The box ``(xlo, xhi, ylo, yhi)`` (doubles, outer bounds) holding the full path's I/J arc from ``(sx, sy)``
+    to ``(ex, ey)`` (machine doubles) with centre offsets ``i``, ``j``, or a ``str``: why the pass declines.
+    ``offb`` bounds the work offsets' magnitude (rounded up), ``tol`` is :func:`radius_rule`'s; ``turn``: the
+    block names no axis of the plane, so the end is the start exactly (a whole turn).
+
+    An end that may lie on the ray from the centre through the start (their cross product within its error
+    of 0; the dot product is then about ``r0 r1``, clearly positive or negative) is declined unless ``turn``:
+    LinuxCNC moves a whole turn there, which the full path proves for an end equal to the start and answers
+    ``unknown`` for otherwise (a spiral lap, ``prover/core.py``); the doubles cannot tell the two apart.
+
+    The radii's doubles are within ``err / 2`` of the exact radii; an arc is taken when it is inside the full
+    path's rule (exact for a fixed tolerance, LinuxCNC's in doubles) by ``2 err`` and ``1e-9`` of the radius
+    and ``1e-9`` mm more, far above those errors and the rule's own rounding.
+
+    >>> box = ij_arc(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, False, 0.0, 0.002)  # a ccw quarter
+    >>> [round(v, 9) + 0.0 for v in box]
+    [0.0, 1.0, 0.0, 1.0]
+    >>> [round(v, 9) + 0.0 for v in ij_arc(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, True, 0.0, 0.002)]
+    [-1.0, 1.0, -1.0, 1.0]
+    """
+    cx, cy = sx + i, sy + j  # |C - C'| <= rho + m 2**-52
+    wx, wy = ex - cx, ey - cy  # within 2 rho + 2 m 2**-52 of E - C (and -i, -j within m 2**-53 of S - C)
+    r0, r1 = math.hypot(i, j), math.hypot(wx, wy)  # within 3 rho + 6 m 2**-52 of the exact radii
+    # m: above every magnitude here (|C| <= |S| + r0, |E| <= |C| + r1), so rho <= (4 m + 2**-8) 2**-52
+    m = (abs(sx) if abs(sx) > abs(sy) else abs(sy)) + r0 + r1 + offb
+    err = (64.0 * m + 0.0625) * _U  # every error above is below err / 4
+    if not (r0 > 4 * err and r1 > 4 * err):
+        return "an arc of a radius about 0"
+    if not turn:
+        a, b = j * wx - i * wy, i * wx + j * wy  # the cross product of u = (-i, -j) and w, and -(u . w)
+        if abs(a) <= err * (abs(i) + abs(j) + abs(wx) + abs(wy)) * 1.01 + 2 * err * err + \
+                (abs(j * wx) + abs(i * wy)) * 2.0**-51 and b < 0:
+            return "an arc whose end may lie on the ray from the centre through its start"
+    diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
+    margin = diff + big * 1e-9 + 1e-9 + 2 * err
+    if not (margin < tol if tol >= 0 else _linuxcnc_accepts(margin, big - margin)):
+        return "an arc whose end is near or past the arc tolerance"
+    return _box(sx, sy, ex, ey, cx, cy, -i, -j, wx, wy, big, diff + err, err, cw)
+
+
+def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float) -> Any:
+    """The box ``(xlo, xhi, ylo, yhi)`` holding the full path's R arc, or a ``str``: why the pass declines.
+
+    >>> [round(v, 9) + 0.0 for v in r_arc(1.0, 0.0, 0.0, 1.0, 1.0, False, 0.0)]  # ccw, R > 0: the short way
+    [0.0, 1.0, 0.0, 1.0]
+    >>> [round(v, 9) + 0.0 for v in r_arc(1.0, 0.0, 0.0, 1.0, -1.0, False, 0.0)]  # R < 0: three quarters about (1, 1)
+    [0.0, 2.0, 0.0, 2.0]
+    >>> r_arc(0.0, 0.0, 2.0, 0.0, 1.0, True, 0.0)  # a half circle: the full path's
+    'an R arc of a chord about 0 or about 2|R| or longer'
+    """
+    dx, dy = ex - sx, ey - sy
+    ar = abs(r)
+    # m: above every magnitude here (|S|, |E|, the offsets, |R|, and |C| <= |S| + |R|)
+    m = (abs(sx) if abs(sx) > abs(sy) else abs(sy)) + (abs(ex) if abs(ex) > abs(ey) else abs(ey)) + 2 * ar + offb
+    rho = (4.0 * m + 2.0**-8) * _U  # above the rows' bound
+    length = math.hypot(dx, dy)
+    ed = 2 * rho + length * _U  # |d - d'| per component
+    dd = dx * dx + dy * dy
+    rr = r * r
+    # X = R**2 - D/4: |D - D'| <= 2 (|dx'| + |dy'|) ed + 2 ed**2 + 3 D' 2**-53, |R**2 - R'**2| <= R'**2 2**-51,
+    # and the rounding of X' itself
+    e_x = rr * 2.0**-51 + ((abs(dx) + abs(dy)) * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U
+    x = rr - dd / 4
+    if not (length > 4 * ed and x > _HALF * rr and x > 8 * e_x):
+        return "an R arc of a chord about 0 or about 2|R| or longer"
+    h = math.sqrt(x)
+    # |h - h'| <= e_x / sqrt X' (plus sqrt's rounding); the unit normal is within 3 ed / |d'| + 4 2**-53 per
+    # component; the centre C' within rho + |h - h'| + h |n - n'| + 4 m 2**-52 of C
+    e_c = rho + e_x / h + h * (3 * ed / length + 6 * _U) + 4 * m * _U
+    err = (64.0 * m + 0.0625) * _U + 2 * e_c  # above |C - C'| + rho + the rounding of the box's sums
+    k = (h if (r > 0) != cw else -h) / length  # centre to the left of the chord: G3 with R > 0, G2 with R < 0
+    cx, cy = (sx + ex) / 2 - k * dy, (sy + ey) / 2 + k * dx
+    return _box(sx, sy, ex, ey, cx, cy, sx - cx, sy - cy, ex - cx, ey - cy, ar, err, err, cw)
+
+
+#: Quadrants by the signs of a vector's components (``2 (x < 0) + (y < 0)``): 0 is x > 0, y > 0, then
+#: counter-clockwise; direction d (0 +X, 1 +Y, 2 -X, 3 -Y) is where quadrant d - 1 meets quadrant d.
+_QUADRANT = (0, 3, 1, 2)
+#: ``_CROSSED[q][n]``: the directions (+X, +Y, -X, -Y) a counter-clockwise sweep from quadrant q crosses on
+#: its way through n quadrant boundaries (n = 4: all of them).
+_CROSSED = tuple(tuple(tuple(any((q + t) % 4 == d for t in range(1, n + 1)) for d in range(4)) for n in range(5))
+                 for q in range(4))
+_ALL = (True, True, True, True)
+
+
+def _box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, ux: float, uy: float, wx: float,
+         wy: float, rmax: float, widen: float, err: float, cw: bool) -> tuple[float, float, float, float]:
+    """The box of the arc: its ends, ``C +- rmax`` in the directions its sweep may contain, widened by
+    ``widen`` and rounded outwards (``err`` bounds the error of ``u = S - C`` and ``w = E - C`` per
+    component).
+
+    The directions: when no component of ``u``, ``w`` is within ``err`` of 0 the exact vectors lie in the
+    quadrants of the doubles, and a counter-clockwise sweep crosses the boundaries from the start's quadrant
+    to the end's; from a quadrant to itself it crosses none when the end is ahead of the start (their cross
+    product clearly positive: less than a quarter turn) and all four otherwise (behind it, or too close to
+    tell: a whole turn is then taken, sound).  The cross product's error is at most
+    ``err (|ux| + |uy| + |wx| + |wy|) + 2 err**2`` plus its own rounding.  Otherwise the angles decide
+    (:func:`_by_angles`)."""
+    if cw:  # clockwise from u to w is counter-clockwise from w to u
+        ux, uy, wx, wy = wx, wy, ux, uy
+    if abs(ux) > err and abs(uy) > err and abs(wx) > err and abs(wy) > err:
+        q = _QUADRANT[2 * (ux < 0) + (uy < 0)]
+        n = (_QUADRANT[2 * (wx < 0) + (wy < 0)] - q) % 4
+        if n == 0:
+            a, b = ux * wy, uy * wx
+            tol = err * (abs(ux) + abs(uy) + abs(wx) + abs(wy)) * 1.01 + 2 * err * err + (abs(a) + abs(b)) * 2.0**-51
+            n = 0 if a - b > tol else 4
+        px, py, nx, ny = _CROSSED[q][n]
+    else:
+        px, py, nx, ny = _by_angles(ux, uy, wx, wy, err)
+    xlo, xhi = (sx, ex) if sx < ex else (ex, sx)
+    ylo, yhi = (sy, ey) if sy < ey else (ey, sy)
+    if px and cx + rmax > xhi:
+        xhi = cx + rmax
+    if nx and cx - rmax < xlo:
+        xlo = cx - rmax
+    if py and cy + rmax > yhi:
+        yhi = cy + rmax
+    if ny and cy - rmax < ylo:
+        ylo = cy - rmax
+    return (math.nextafter(xlo - widen, _DOWN), math.nextafter(xhi + widen, _UP),
+            math.nextafter(ylo - widen, _DOWN), math.nextafter(yhi + widen, _UP))
+
+
+def _by_angles(ux: float, uy: float, wx: float, wy: float, err: float) -> tuple[bool, ...]:
+    """The directions (+X, +Y, -X, -Y) a counter-clockwise sweep from ``u`` to ``w`` may hold, by their angles
+    (module docstring)."""
+    ru, rw = math.hypot(ux, uy), math.hypot(wx, wy)
+    if not (ru > 2 * err and rw > 2 * err):
+        return _ALL
+    start = math.atan2(uy, ux)
+    eta = 2.5 * err / ru + 2.5 * err / rw + _SLACK
+    sweep = (math.atan2(wy, wx) - start) % _TAU
+    if sweep < 4 * eta or sweep > _TAU - 4 * eta:
+        return _ALL
+    return tuple((angle - start + eta) % _TAU <= sweep + 4 * eta for angle in _ANGLES)
