@@ -1124,8 +1124,8 @@ def _one_unit_out(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> None:
 def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) -> None:
     """Widen ``lo``/``hi`` of the R-format arc ``rows`` to hold the box :func:`_piece_box` gives them.
 
-    ``ArcGeom.plane_bbox`` cannot decide an R arc's sweep (its centre is irrational): it takes the whole
-    circle's box, the centre's 64-bit bounds plus or minus ``|R|`` rounded up.  Here: the certified centre
+    ``ArcGeom.plane_bbox`` holds at most the whole circle's box of an R arc (its centre is irrational), the
+    centre's 64-bit bounds plus or minus ``|R|`` rounded up.  Here: that whole box from the certified centre
     enclosure (:func:`nczones.prover.rformat.centre_enclosure`) plus or minus ``|R|``, rounded outwards to the
     column's unit and one unit more (the 64-bit bounds are within far less than a unit of the true centre and
     radius).  ``_rows_box`` needs every column box to hold the exact one it stands for."""
@@ -1227,7 +1227,7 @@ def _piece_box(seg: Segment) -> Box | None:
                 g = arc_geom(seg)
             except InvalidArgument:  # an arc the per-motion proof refuses: no box
                 return None
-            plane = (*g.plane_bbox(), g.ia, g.ib)
+            plane = (*g.plane_bbox(sweep=True), g.ia, g.ib)
         (xl, xh), (yl, yh), ia, ib = plane
         lo, hi = list(map(_lo, seg.start, seg.end)), list(map(_hi, seg.start, seg.end))
         lo[ia], hi[ia], lo[ib], hi[ib] = xl, xh, yl, yh

@@ -126,7 +126,7 @@ class BoxWalk:
                 raise _Declined  # the per-motion proof gives this arc a reason (a whole spiral turn): its path
             try:
                 g = arc_geom(seg)
-                (xl, xh), (yl, yh) = g.plane_bbox()
+                (xl, xh), (yl, yh) = g.plane_bbox(sweep=True)
             except (InvalidArgument, ValueError, ZeroDivisionError):
                 raise _Declined from None  # an arc the per-motion proof refuses (or decides otherwise)
             lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))

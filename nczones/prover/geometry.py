@@ -329,8 +329,13 @@ class ArcGeom:
         sign = -1 if right else 1
         return (sx + ex) / 2, (sy + ey) / 2, -cy, cx, q, sign
 
-    def plane_bbox(self, bits: int = 64) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
-        """A rational box containing the arc's plane path (exact extremes when rational)."""
+    def plane_bbox(self, bits: int = 64, sweep: bool = False) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+        """A rational box containing the arc's plane path (exact extremes when rational).
+
+        An R-format arc whose centre is irrational: its whole circle's box, or with ``sweep`` only the circle's
+        extremes its sweep may reach (:func:`_sweep_may_hold`; the Fanuc hull and box route use it).  The
+        per-motion solver query keeps the whole circle (a tighter enclosure changes which queries are hard:
+        tests/prover/test_limits.py's stand-in for "a query that cannot finish" needs it)."""
         (cxl, cxh), (cyl, cyh) = self.centre_bounds(bits)
         if self.centre is None:
             assert self.r_signed is not None
@@ -339,7 +344,11 @@ class ArcGeom:
             r_hi = sqrt_bounds(self.r2_hi, bits)[1]
         xs = [self.s[0], self.e[0]]
         ys = [self.s[1], self.e[1]]
-        if self.centre is None:
+        if self.centre is None and not sweep:
+            # direction tests need the centre: use the whole circle's box (sound)
+            xs += [cxl - r_hi, cxh + r_hi]
+            ys += [cyl - r_hi, cyh + r_hi]
+        elif self.centre is None:
             # the exact centre lies on the segment between two rational points (the R-format centre M + k n, k
             # between sqrt_bounds of q): a direction's extreme is left out only where that settles the sweep
             mx, my, nx, ny, q, sign = self.r_format_parts()

@@ -1,5 +1,5 @@
-"""The box of an R-format arc whose centre is irrational (``ArcGeom.plane_bbox``) holds the arc and no more
-than the arc's own box (lead, session of 2026-12-06).
+"""The box of an R-format arc whose centre is irrational (``ArcGeom.plane_bbox(sweep=True)``) holds the arc and
+no more than the arc's own box (lead, session of 2026-12-06).
 
 Before, such an arc was boxed by its whole circle: sound, but after the Fanuc G61/G09 hull (an arc outside a
 cutting-mode run is proved by its box) a minor R arc bulging away from a zone face was ``unknown`` because the
@@ -53,7 +53,7 @@ def test_the_box_of_an_r_arc_holds_it_and_no_more(sx, sy, ex, ey, extra, clockwi
     seg = Segment(SegmentKind.ARC, (sx, sy, F(0)), (ex, ey, F(0)), AXES, plane=Plane.XY, clockwise=clockwise,
                   radius=-r if major else r)
     g = arc_geom(seg)
-    (xl, xh), (yl, yh) = g.plane_bbox()
+    (xl, xh), (yl, yh) = g.plane_bbox(sweep=True)
     pts, rf = _float_arc(g, not clockwise)
     tol = 1e-9 * (1 + rf)
     for x, y in pts:
