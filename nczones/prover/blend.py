@@ -965,10 +965,10 @@ class CornerCheck:
         the columns cannot box goes through :meth:`_segment` row by row."""
         import numpy as np
 
-        from .screen import arc_boxes
+        from .screen import arc_boxes, shared_arc_boxes
 
         kinds, starts, ends = chunk.kind, chunk.start, chunk.end
-        assert kinds is not None and starts is not None and ends is not None  # a column chunk
+        assert kinds is not None and starts is not None and ends is not None and chunk.scale is not None  # columns
         dwell = kinds == SegmentKind.DWELL
         arc = kinds == SegmentKind.ARC
         moving = ((starts != ends).any(axis=1) | arc) & ~dwell
@@ -979,7 +979,14 @@ class CornerCheck:
         arcs = np.flatnonzero(arc)
         boxed = np.ones(len(chunk), dtype=bool)
         if arcs.size:
-            boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
+            shared = shared_arc_boxes(chunk)  # the screen's boxes of this chunk, when it formed them just now
+            if shared is not None and shared[0] >= chunk.scale:  # at its scale, rounded outwards to the chunk's
+                f = 10 ** (shared[0] - chunk.scale)
+                boxed[arcs] = shared[1][arcs]
+                lo[arcs] = shared[2][arcs] // f
+                hi[arcs] = -((-shared[3][arcs]) // f)
+            else:
+                boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
             _one_unit_out(chunk, arcs, lo, hi)  # and :func:`_piece_box`'s box of each (see there)
         ev = np.flatnonzero(moving | dwell)
         if ev.size == 0:
@@ -1102,8 +1109,10 @@ class CornerCheck:
 
 
 def _one_unit_out(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> None:
-    """Widen the arc ``rows``' column boxes (:func:`nczones.prover.screen.arc_boxes`) by one unit in their plane,
-    so that each holds the box :func:`_piece_box` gives the arc, as ``_rows_box`` needs.
+    """Widen the arc ``rows``' column boxes (:func:`nczones.prover.screen.arc_boxes`, at the chunk's scale or at
+    the screen's finer one rounded outwards to it) by one unit in their plane, so that each holds the box
+    :func:`_piece_box` gives the arc, as ``_rows_box`` needs.  (Below, "unit" is the unit the box was formed
+    in; rounding outwards to a coarser one keeps every bound, and one coarse unit is at least one fine unit.)
 
     * An I/J arc: ``plane_bbox`` adds the radius's 64-bit upper bound, which may pass the column's
       ``ceil(sqrt(r2))`` by far less than a unit; the sweep tests are the same exact ones.

@@ -22,9 +22,12 @@ from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from nczones.machine import parse_machine
-from nczones.prover import blend, verify_text
+from nczones.prover import blend, screen, verify_text
 from tests.machines import box_zone, machine_text
 
+#: The functions the tests wrap (Hypothesis runs many examples under one function-scoped monkeypatch).
+REAL_HULL = blend.CornerCheck._hull_columns
+REAL_SHARED = screen.shared_arc_boxes
 LONG = 560  # more than 512 motions: column chunks
 SHORT = 40  # the one-chunk lanes
 
@@ -116,10 +119,11 @@ def _run(program: str, m, columns: bool, monkeypatch) -> tuple:
     return r.verdict.label, [(x.code, x.message, x.span, x.block) for x in r.reasons]
 
 
-def _case(seed: int, motions: int, direction: int, offset: int, monkeypatch) -> tuple:
+def _case(seed: int, motions: int, direction: int, offset: int, monkeypatch, shared: bool = True) -> tuple:
     """Verify the walk of ``seed`` with the block's face ``offset`` thousandths outside the run's extreme in
     ``direction`` (rounded to thousandths), in both lanes; assert they agree; the verdict, reasons, and whether
-    the face is outside the extreme (floats; None within 1e-7 mm)."""
+    the face is outside the extreme (floats; None within 1e-7 mm).  ``shared``: the hull takes the screen's
+    arc boxes (``screen.shared_arc_boxes``, checked to be used), else it boxes the arcs itself."""
     program, arcs = _walk(seed, motions)
     ext = [_extremes(a) for a in arcs] + [(0.0, 0.0, 0.0, 0.0)]  # the G00 to X0 Y0 ends where the run starts
     pick = min if direction % 2 == 0 else max
@@ -130,15 +134,23 @@ def _case(seed: int, motions: int, direction: int, offset: int, monkeypatch) -> 
     inside = gap < 0
     m = _machine(direction, face, _free_band(arcs, direction, float(face)) if inside else (-59, 59))
     calls = []
-    real = blend.CornerCheck._hull_columns
 
     def spy(self, chunk, at):
         calls.append(len(chunk))
-        return real(self, chunk, at)
+        return REAL_HULL(self, chunk, at)
 
     monkeypatch.setattr(blend.CornerCheck, "_hull_columns", spy)
+    taken = []
+
+    def boxes(chunk):
+        got = REAL_SHARED(chunk) if shared else None
+        taken.append(got is not None)
+        return got
+
+    monkeypatch.setattr(screen, "shared_arc_boxes", boxes)
     new = _run(program, m, True, monkeypatch)
     assert bool(calls) == (motions > 512)
+    assert all(taken) == shared and (bool(taken) or motions <= 512)
     assert new == _run(program, m, False, monkeypatch)
     return (*new, None if abs(gap) < 1e-7 else not inside)
 
@@ -148,9 +160,10 @@ QUICK = settings(max_examples=4, deadline=None, phases=[Phase.explicit, Phase.re
 
 
 @QUICK
-@given(seed=st.integers(0, 2**32 - 1), direction=st.integers(0, 3), offset=st.sampled_from([-10, -1, 0, 1, 10]))
-def test_a_face_at_the_runs_extreme_agrees_with_the_one_motion_path(seed, direction, offset, monkeypatch):
-    verdict, _reasons, outside = _case(seed, LONG, direction, offset, monkeypatch)
+@given(seed=st.integers(0, 2**32 - 1), direction=st.integers(0, 3), offset=st.sampled_from([-10, -1, 0, 1, 10]),
+       shared=st.booleans())
+def test_a_face_at_the_runs_extreme_agrees_with_the_one_motion_path(seed, direction, offset, shared, monkeypatch):
+    verdict, _reasons, outside = _case(seed, LONG, direction, offset, monkeypatch, shared)
     assert outside is None or (verdict == "safe") == outside
 
 
