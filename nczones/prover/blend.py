@@ -867,8 +867,6 @@ class CornerCheck:
         rows are joined (each starts where the one before ends), as the screen's union test needs."""
         import numpy as np
 
-        from .screen import arc_boxes
-
         kinds, starts, ends, tls = chunk.kind, chunk.start, chunk.end, chunk.tool_length
         assert kinds is not None and starts is not None and ends is not None and tls is not None  # columns
         assert chunk.scale is not None
@@ -876,7 +874,7 @@ class CornerCheck:
         boxed = np.ones(len(chunk), dtype=bool)
         arc_rows = np.flatnonzero(kinds == SegmentKind.ARC) if arcs else None
         if arc_rows is not None:
-            boxed[arc_rows] = arc_boxes(chunk, arc_rows, lo, hi)
+            boxed[arc_rows] = _arc_columns(chunk, arc_rows, lo, hi)
         scale2 = 2 * 10**chunk.scale
         whole = (len(chunk.axes) == len(self.axes) and int(tls.min()) == int(tls.max()) and bool(boxed.all())
                  and not _rows_differ(starts[1:], ends[:-1]).any())
@@ -965,10 +963,8 @@ class CornerCheck:
         the columns cannot box goes through :meth:`_segment` row by row."""
         import numpy as np
 
-        from .screen import arc_boxes, shared_arc_boxes
-
         kinds, starts, ends = chunk.kind, chunk.start, chunk.end
-        assert kinds is not None and starts is not None and ends is not None and chunk.scale is not None  # columns
+        assert kinds is not None and starts is not None and ends is not None  # a column chunk
         dwell = kinds == SegmentKind.DWELL
         arc = kinds == SegmentKind.ARC
         moving = ((starts != ends).any(axis=1) | arc) & ~dwell
@@ -979,14 +975,7 @@ class CornerCheck:
         arcs = np.flatnonzero(arc)
         boxed = np.ones(len(chunk), dtype=bool)
         if arcs.size:
-            shared = shared_arc_boxes(chunk)  # the screen's boxes of this chunk, when it formed them just now
-            if shared is not None and shared[0] >= chunk.scale:  # at its scale, rounded outwards to the chunk's
-                f = 10 ** (shared[0] - chunk.scale)
-                boxed[arcs] = shared[1][arcs]
-                lo[arcs] = shared[2][arcs] // f
-                hi[arcs] = -((-shared[3][arcs]) // f)
-            else:
-                boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
+            boxed[arcs] = _arc_columns(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
             _one_unit_out(chunk, arcs, lo, hi)  # and :func:`_piece_box`'s box of each (see there)
         ev = np.flatnonzero(moving | dwell)
         if ev.size == 0:
@@ -1106,6 +1095,23 @@ class CornerCheck:
                     best = min(best, box[0][k]) if side == 0 else max(best, box[1][k])
                 (out_lo if side == 0 else out_hi).append(best)
         return tuple(out_lo), tuple(out_hi)
+
+
+def _arc_columns(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> Any:
+    """:func:`nczones.prover.screen.arc_boxes` of the arc ``rows`` (widen ``lo``/``hi`` at the chunk's scale; True
+    where boxed): the screen's boxes of this chunk rounded outwards to its scale when the screen formed them just
+    before (:func:`nczones.prover.screen.shared_arc_boxes`: each chunk is screened, then its corners proved),
+    else formed here."""
+    from .screen import arc_boxes, shared_arc_boxes
+
+    assert chunk.scale is not None  # a column chunk
+    shared = shared_arc_boxes(chunk)
+    if shared is None or shared[0] < chunk.scale:
+        return arc_boxes(chunk, rows, lo, hi)
+    f = 10 ** (shared[0] - chunk.scale)
+    lo[rows] = shared[2][rows] // f
+    hi[rows] = -((-shared[3][rows]) // f)
+    return shared[1][rows]
 
 
 def _one_unit_out(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> None:

@@ -191,3 +191,38 @@ def test_column_boxes_shrunk_to_the_end_points_are_caught(monkeypatch):
         except AssertionError:
             found += 1
     assert found >= 2
+
+
+def _linuxcnc(program: str, tolerance: str) -> str:
+    """The walk in LinuxCNC's words (the same R arcs: LinuxCNC puts the centre on the same side), blended with
+    ``G64 P``."""
+    body = [ln for ln in program.splitlines() if ln.startswith(("G02", "G03"))]
+    return "\n".join(["G17 G21 G90 G54", "G0 X0 Y0", f"G64 P{tolerance}", "G1 F800", *body, "M2"]) + "\n"
+
+
+@settings(QUICK, max_examples=6)
+@given(seed=st.integers(0, 2**32 - 1), tolerance=st.sampled_from(["0.01", "0.5"]),
+       clamp=st.tuples(st.integers(-50, 45), st.integers(-50, 45), st.integers(1, 6)))
+def test_linuxcnc_corners_take_the_screens_boxes_with_the_same_result(seed, tolerance, clamp, monkeypatch):
+    """LinuxCNC's blended corners on column chunks (``CornerCheck._corner_columns``) box the arcs next to a
+    corner with the screen's boxes of the chunk (rounded outwards to its scale) or their own: the same verdict
+    and reasons either way, end to end, and the shared boxes are taken."""
+    program = _linuxcnc(_walk(seed, LONG)[0], tolerance)
+    x0, y0, size = clamp
+    block = box_zone("clamp", {"X": str(x0), "Y": str(y0)}, {"X": str(x0 + size), "Y": str(y0 + size)},
+                     forbid=True)
+    m = parse_machine(machine_text("fanuc_xyz_table_60", extra=block).replace('dialect = "fanuc"', ""))
+    results = []
+    for shared in (True, False):
+        taken = []
+
+        def boxes(chunk, shared=shared, taken=taken):
+            got = REAL_SHARED(chunk) if shared else None
+            taken.append(got is not None)
+            return got
+
+        monkeypatch.setattr(screen, "shared_arc_boxes", boxes)
+        r = verify_text(program, m)
+        results.append((r.verdict.label, [(x.code, x.message, x.span, x.block) for x in r.reasons]))
+        assert taken and all(taken) == shared
+    assert results[0] == results[1]
