@@ -1056,17 +1056,20 @@ class CornerCheck:
         return cache[key]
 
     def _rows_box(self, chunk: MotionChunk, rows: Any, cols: Any) -> Box | None:
-        """The box :func:`_piece_box` gives the union of ``rows`` (None: an arc it cannot box).
+        """The box :func:`_piece_box` gives the union of ``rows`` (None: an arc it cannot box), or its union with
+        the run's box so far when a run is open (``self.stretch``: the caller takes that union anyway).
 
         Lines' boxes are their columns'; an arc's exact box lies between its end points and its outward-rounded
-        column box, so per axis and side only the arcs whose column box passes the best bound found so far are
-        boxed exactly (in order, stopping at the first that cannot improve it)."""
+        column box, so per axis and side only the arcs whose column box passes the best bound found so far (the
+        end points', or the run's when it passes them) are boxed exactly (in order, stopping at the first that
+        cannot improve it)."""
         import numpy as np
 
         lo, hi, ends_lo, ends_hi, arc = cols
         assert chunk.scale is not None  # a column chunk
         den = 10**chunk.scale
         exact: dict[int, Box | None] = {}
+        run = self.stretch
         arcs = rows[arc[rows]]
         out_lo: list[Fraction] = []
         out_hi: list[Fraction] = []
@@ -1079,6 +1082,8 @@ class CornerCheck:
                     end = -int(ends_hi[rows, k].max())
                     col = -hi[arcs, k]
                 best = Fraction(end if side == 0 else -end, den)
+                if run is not None:
+                    best = min(best, run[0][k]) if side == 0 else max(best, run[1][k])
                 # only arcs whose column box passes the end points can widen the box (columns in the same unit)
                 near = np.flatnonzero(col < end)
                 near = near[np.argsort(col[near], kind="stable")]

@@ -149,7 +149,7 @@ def _case(seed: int, motions: int, direction: int, offset: int, monkeypatch, sha
 
     monkeypatch.setattr(screen, "shared_arc_boxes", boxes)
     new = _run(program, m, True, monkeypatch)
-    assert bool(calls) == (motions > 512)
+    assert bool(calls) == (motions > 512)  # the block is off the path or just inside it: no run of violations
     assert all(taken) == shared and (bool(taken) or motions <= 512)
     assert new == _run(program, m, False, monkeypatch)
     return (*new, None if abs(gap) < 1e-7 else not inside)
@@ -224,5 +224,6 @@ def test_linuxcnc_corners_take_the_screens_boxes_with_the_same_result(seed, tole
         monkeypatch.setattr(screen, "shared_arc_boxes", boxes)
         r = verify_text(program, m)
         results.append((r.verdict.label, [(x.code, x.message, x.span, x.block) for x in r.reasons]))
-        assert taken and all(taken) == shared
+        # the corners of a chunk are proved after the screen's zone test, unless its violations end the run
+        assert (taken or r.truncated) and all(taken) == (shared or not taken)
     assert results[0] == results[1]
