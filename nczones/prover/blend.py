@@ -867,8 +867,6 @@ class CornerCheck:
         rows are joined (each starts where the one before ends), as the screen's union test needs."""
         import numpy as np
 
-        from .screen import arc_boxes
-
         kinds, starts, ends, tls = chunk.kind, chunk.start, chunk.end, chunk.tool_length
         assert kinds is not None and starts is not None and ends is not None and tls is not None  # columns
         assert chunk.scale is not None
@@ -876,7 +874,7 @@ class CornerCheck:
         boxed = np.ones(len(chunk), dtype=bool)
         arc_rows = np.flatnonzero(kinds == SegmentKind.ARC) if arcs else None
         if arc_rows is not None:
-            boxed[arc_rows] = arc_boxes(chunk, arc_rows, lo, hi)
+            boxed[arc_rows] = _arc_columns(chunk, arc_rows, lo, hi)
         scale2 = 2 * 10**chunk.scale
         whole = (len(chunk.axes) == len(self.axes) and int(tls.min()) == int(tls.max()) and bool(boxed.all())
                  and not _rows_differ(starts[1:], ends[:-1]).any())
@@ -965,8 +963,6 @@ class CornerCheck:
         the columns cannot box goes through :meth:`_segment` row by row."""
         import numpy as np
 
-        from .screen import arc_boxes
-
         kinds, starts, ends = chunk.kind, chunk.start, chunk.end
         assert kinds is not None and starts is not None and ends is not None  # a column chunk
         dwell = kinds == SegmentKind.DWELL
@@ -979,11 +975,8 @@ class CornerCheck:
         arcs = np.flatnonzero(arc)
         boxed = np.ones(len(chunk), dtype=bool)
         if arcs.size:
-            boxed[arcs] = arc_boxes(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
-            rformat = np.zeros(arcs.size, dtype=bool) if chunk.radius is None else chunk.radius[arcs] != 0
-            if rformat.any():
-                _circle_bounds(chunk, arcs[rformat], lo, hi, boxed)
-            _one_unit_out(chunk, arcs[~rformat], lo, hi)
+            boxed[arcs] = _arc_columns(chunk, arcs, lo, hi)  # outward-rounded boxes holding each arc
+            _one_unit_out(chunk, arcs, lo, hi)  # and :func:`_piece_box`'s box of each (see there)
         ev = np.flatnonzero(moving | dwell)
         if ev.size == 0:
             return
@@ -1063,31 +1056,38 @@ class CornerCheck:
         return cache[key]
 
     def _rows_box(self, chunk: MotionChunk, rows: Any, cols: Any) -> Box | None:
-        """The box :func:`_piece_box` gives the union of ``rows`` (None: an arc it cannot box).
+        """The box :func:`_piece_box` gives the union of ``rows`` (None: an arc it cannot box), or its union with
+        the run's box so far when a run is open (``self.stretch``: the caller takes that union anyway).
 
         Lines' boxes are their columns'; an arc's exact box lies between its end points and its outward-rounded
-        column box, so per axis and side only the arcs whose column box passes the best bound found so far are
-        boxed exactly (in order, stopping at the first that cannot improve it)."""
+        column box, so per axis and side only the arcs whose column box passes the best bound found so far (the
+        end points', or the run's when it passes them) are boxed exactly (in order, stopping at the first that
+        cannot improve it)."""
         import numpy as np
 
         lo, hi, ends_lo, ends_hi, arc = cols
         assert chunk.scale is not None  # a column chunk
         den = 10**chunk.scale
         exact: dict[int, Box | None] = {}
+        run = self.stretch
         arcs = rows[arc[rows]]
         out_lo: list[Fraction] = []
         out_hi: list[Fraction] = []
         for k in range(len(self.axes)):
             for side in (0, 1):
                 if side == 0:
-                    best = Fraction(int(ends_lo[rows, k].min()), den)
+                    end = int(ends_lo[rows, k].min())
                     col = lo[arcs, k]
-                    order = np.argsort(col, kind="stable")
                 else:
-                    best = Fraction(int(ends_hi[rows, k].max()), den)
+                    end = -int(ends_hi[rows, k].max())
                     col = -hi[arcs, k]
-                    order = np.argsort(col, kind="stable")
-                for o in order.tolist():
+                best = Fraction(end if side == 0 else -end, den)
+                if run is not None:
+                    best = min(best, run[0][k]) if side == 0 else max(best, run[1][k])
+                # only arcs whose column box passes the end points can widen the box (columns in the same unit)
+                near = np.flatnonzero(col < end)
+                near = near[np.argsort(col[near], kind="stable")]
+                for o in near.tolist():
                     bound = Fraction(int(col[o]), den)
                     if (bound >= best) if side == 0 else (-bound <= best):
                         break
@@ -1102,9 +1102,44 @@ class CornerCheck:
         return tuple(out_lo), tuple(out_hi)
 
 
+def _arc_columns(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> Any:
+    """:func:`nczones.prover.screen.arc_boxes` of the arc ``rows`` (widen ``lo``/``hi`` at the chunk's scale; True
+    where boxed): the screen's boxes of this chunk rounded outwards to its scale when the screen formed them just
+    before (:func:`nczones.prover.screen.shared_arc_boxes`: each chunk is screened, then its corners proved),
+    else formed here."""
+    from .screen import arc_boxes, shared_arc_boxes
+
+    assert chunk.scale is not None  # a column chunk
+    shared = shared_arc_boxes(chunk)
+    if shared is None or shared[0] < chunk.scale:
+        return arc_boxes(chunk, rows, lo, hi)
+    f = 10 ** (shared[0] - chunk.scale)
+    lo[rows] = shared[2][rows] // f
+    hi[rows] = -((-shared[3][rows]) // f)
+    return shared[1][rows]
+
+
 def _one_unit_out(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> None:
-    """Widen the I/J arc ``rows``' column boxes by one unit in their plane: ``plane_bbox`` adds the radius's
-    64-bit upper bound, which may pass the column's ``ceil(sqrt(r2))`` by far less than a unit."""
+    """Widen the arc ``rows``' column boxes (:func:`nczones.prover.screen.arc_boxes`, at the chunk's scale or at
+    the screen's finer one rounded outwards to it) by one unit in their plane, so that each holds the box
+    :func:`_piece_box` gives the arc, as ``_rows_box`` needs.  (Below, "unit" is the unit the box was formed
+    in; rounding outwards to a coarser one keeps every bound, and one coarse unit is at least one fine unit.)
+
+    * An I/J arc: ``plane_bbox`` adds the radius's 64-bit upper bound, which may pass the column's
+      ``ceil(sqrt(r2))`` by far less than a unit; the sweep tests are the same exact ones.
+    * An R arc (:func:`nczones.prover.rformat.rformat_boxes`, where it boxed the row): a centre enclosure
+      ``[lo, hi]`` in units ``1/m`` of the column unit (``2 mag m < 2**59``, ``mag`` the largest coordinate or
+      radius in column units) holds the exact centre ``c``.  Where the four signs of the components of
+      ``s - c`` and ``e - c`` are certain (the end point is outside the enclosure), it is at least ``1/m`` from
+      ``c``; ``plane_bbox`` moves the centre by at most ``2**-64 |e - s| <= 2**-64 * 2 sqrt 2 mag < 1/m`` (the
+      two ends of its 64-bit centre segment), and ``k_lo > 0`` there (``rformat`` encloses no chord of about
+      ``2|R|``), so every sign ``_sweep_may_hold`` reads is the exact centre's at both ends: it keeps exactly
+      the directions the sweep holds, which ``rformat_boxes`` keeps too (it is sound).  Where a sign is not
+      certain, or the arc turns, ``rformat_boxes`` keeps all four directions.  Each kept extreme there is the
+      enclosure's bound plus ``|R|`` rounded up; ``plane_bbox``'s (``|R|`` exact, the centre's end at most
+      ``2**-64 |e - s| < 1/m`` beyond the exact one) may pass it by less than a unit.  An R arc whose centre
+      is rational (``q`` a square, or a half circle): its exact directions, a subset of the kept ones, and its
+      exact extremes.  The end points and the other axes are the same in both."""
     from ..motion import PLANE_AXES, Plane
 
     if rows.size == 0:
@@ -1119,45 +1154,6 @@ def _one_unit_out(chunk: MotionChunk, rows: Any, lo: Any, hi: Any) -> None:
             if name in axes:
                 lo[sel, axes.index(name)] -= 1
                 hi[sel, axes.index(name)] += 1
-
-
-def _circle_bounds(chunk: MotionChunk, rows: Any, lo: Any, hi: Any, boxed: Any) -> None:
-    """Widen ``lo``/``hi`` of the R-format arc ``rows`` to hold the box :func:`_piece_box` gives them.
-
-    ``ArcGeom.plane_bbox`` holds at most the whole circle's box of an R arc (its centre is irrational), the
-    centre's 64-bit bounds plus or minus ``|R|`` rounded up.  Here: that whole box from the certified centre
-    enclosure (:func:`nczones.prover.rformat.centre_enclosure`) plus or minus ``|R|``, rounded outwards to the
-    column's unit and one unit more (the 64-bit bounds are within far less than a unit of the true centre and
-    radius).  ``_rows_box`` needs every column box to hold the exact one it stands for."""
-    import numpy as np
-
-    from ..motion import PLANE_AXES, Plane
-    from .rformat import centre_enclosure, fine_factor
-
-    assert chunk.plane is not None and chunk.radius is not None and chunk.clockwise is not None \
-        and chunk.start is not None and chunk.end is not None and chunk.scale is not None  # R arcs, columns
-    axes = list(chunk.axes)
-    planes = chunk.plane[rows]
-    for pv in sorted(set(planes.tolist())):
-        sel = rows[planes == pv]
-        a_name, b_name, _ = PLANE_AXES[Plane(int(pv))]
-        if a_name not in axes or b_name not in axes:
-            boxed[sel] = False
-            continue
-        ia, ib = axes.index(a_name), axes.index(b_name)
-        sa, sb, ea, eb = chunk.start[sel, ia], chunk.start[sel, ib], chunk.end[sel, ia], chunk.end[sel, ib]
-        r = chunk.radius[sel]
-        mag = int(max(np.abs(v).max(initial=0) for v in (sa, sb, ea, eb, r)))
-        m = fine_factor(chunk.scale, 2 * mag + 1)
-        ok, a_lo, a_hi, b_lo, b_hi = centre_enclosure(sa, sb, ea, eb, r, chunk.clockwise[sel], m)
-        if 2 * mag * m >= 2**59:
-            ok[:] = False
-        rm = np.abs(r) * m
-        lo[sel, ia] = np.minimum(lo[sel, ia], (a_lo - rm) // m - 1)
-        hi[sel, ia] = np.maximum(hi[sel, ia], -((-(a_hi + rm)) // m) + 1)
-        lo[sel, ib] = np.minimum(lo[sel, ib], (b_lo - rm) // m - 1)
-        hi[sel, ib] = np.maximum(hi[sel, ib], -((-(b_hi + rm)) // m) + 1)
-        boxed[sel] &= ok
 
 
 def _mode_rows(table: Sequence[tuple[int, PathMode]], blocks: Any) -> tuple[Any, list[PathMode]]:

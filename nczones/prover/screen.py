@@ -19,6 +19,7 @@ flagged, i.e. handled by exact Python integers downstream).
 from __future__ import annotations
 
 import math
+import weakref
 from collections.abc import Callable, Sequence
 from fractions import Fraction
 from itertools import chain
@@ -57,7 +58,7 @@ class ScreenedProver(Protocol):
     def has_tip_zones(self) -> bool: ...
     def param_relevant(self, seg: Segment) -> bool: ...
 
-__all__ = ["screen_chunk", "segment_columns"]
+__all__ = ["screen_chunk", "segment_columns", "shared_arc_boxes"]
 
 _LIMIT = 2**61
 _NEG = np.iinfo(np.int64).min // 4
@@ -298,27 +299,10 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
     d_up = _scaled(prover.margin, s, True, 0)
     if abs(d_up) > _LIMIT:
         return list(range(n))
-    is_arc = kinds == SegmentKind.ARC
     ok = np.ones(n, dtype=bool)
-    if is_arc.any():
-        arows = np.flatnonzero(is_arc)
-        if chunk.centre is None or chunk.plane is None:
-            ok[arows] = False
-        elif chunk is not coarse and chunk.radius is not None:
-            # refined for the R-format rows: the I/J rows are boxed at their own scale (their squares stay
-            # in int64 there), then scaled up exactly
-            assert coarse.start is not None and coarse.end is not None and coarse.scale is not None
-            rf = chunk.radius[arows] != 0
-            ij = arows[~rf]
-            if ij.size:
-                lo0, hi0 = np.minimum(coarse.start, coarse.end), np.maximum(coarse.start, coarse.end)
-                ok[ij] = arc_boxes(coarse, ij, lo0, hi0)
-                f = 10 ** (s - coarse.scale)
-                lo[ij], hi[ij] = lo0[ij] * f, hi0[ij] * f
-            if rf.any():
-                ok[arows[rf]] = arc_boxes(chunk, arows[rf], lo, hi)
-        else:
-            ok[arows] = arc_boxes(chunk, arows, lo, hi)
+    arows = np.flatnonzero(kinds == SegmentKind.ARC)
+    if arows.size:
+        _box_arcs(coarse, chunk, arows, lo, hi, ok)
     axes = list(chunk.axes)
     for z in prover.zones:
         if not ok.any():
@@ -334,6 +318,51 @@ def screen_chunk(chunk: MotionChunk, prover: ScreenedProver) -> list[int]:
 
         ZONE_ROWS(z, prover, rng, ok, s, axes)
     return np.flatnonzero(~ok).tolist()
+
+
+def _box_arcs(coarse: MotionChunk, chunk: MotionChunk, arows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
+              ok: np.ndarray) -> None:
+    """Widen ``lo``/``hi`` (at ``chunk``'s scale: ``coarse`` as given, or refined for its R-format rows) of the
+    arc rows ``arows`` to their boxes (:func:`arc_boxes`), ``ok`` False where that failed; kept for
+    :func:`shared_arc_boxes`."""
+    if chunk.centre is None or chunk.plane is None:
+        ok[arows] = False
+    elif chunk is not coarse and chunk.radius is not None:
+        # refined for the R-format rows: the I/J rows are boxed at their own scale (their squares stay
+        # in int64 there), then scaled up exactly
+        assert coarse.start is not None and coarse.end is not None and coarse.scale is not None \
+            and chunk.scale is not None
+        rf = chunk.radius[arows] != 0
+        ij = arows[~rf]
+        if ij.size:
+            lo0, hi0 = np.minimum(coarse.start, coarse.end), np.maximum(coarse.start, coarse.end)
+            ok[ij] = arc_boxes(coarse, ij, lo0, hi0)
+            f = 10 ** (chunk.scale - coarse.scale)
+            lo[ij], hi[ij] = lo0[ij] * f, hi0[ij] * f
+        if rf.any():
+            ok[arows[rf]] = arc_boxes(chunk, arows[rf], lo, hi)
+    else:
+        ok[arows] = arc_boxes(chunk, arows, lo, hi)
+    assert chunk.scale is not None
+    # lo/hi are not changed after this (the zones read new arrays from them); ok is: a copy
+    _LAST_BOXES[0] = (weakref.ref(coarse), chunk.scale, ok.copy(), lo, hi)
+
+
+#: The boxes :func:`screen_chunk` formed for the last column chunk it was given with arcs (held by a weak
+#: reference to that chunk object, so that no other chunk matches): ``(chunk, scale, ok, lo, hi)``.
+_LAST_BOXES: list[Any] = [None]
+
+
+def shared_arc_boxes(chunk: MotionChunk) -> tuple[int, np.ndarray, np.ndarray, np.ndarray] | None:
+    """``(scale, ok, lo, hi)``: the rows' boxes of ``chunk`` (this very object) as the screen formed them, when it
+    boxed this chunk's arcs last (else None): at ``scale`` (the chunk's, or finer for its R-format rows), each
+    arc row's :func:`arc_boxes` box (sound where ``ok``), the other rows' the box of their end points.  The
+    Fanuc run hull (``nczones.prover.blend``) sees each chunk just after the screen and rounds these outwards
+    to the chunk's scale instead of boxing the arcs again.  Read only."""
+    got = _LAST_BOXES[0]
+    if got is None or got[0]() is not chunk:
+        return None
+    return got[1], got[2], got[3], got[4]
 
 
 RowRange = Callable[[str], tuple[np.ndarray, np.ndarray]]
