@@ -14,7 +14,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
-from hypothesis import HealthCheck, Phase, given, settings
+from hypothesis import HealthCheck, Phase, assume, given, settings
 from hypothesis import strategies as st
 
 from nczones.machine import parse_machine
@@ -118,7 +118,8 @@ def _agree(program: str, m, monkeypatch, need_columns: bool = True) -> tuple:
 
     monkeypatch.setattr(blend.CornerCheck, "_hull_columns", spy)
     new = _run(program, m, True, monkeypatch)
-    assert calls or not need_columns, "the program did not reach the column hull"
+    stopped = new[0] == "unsafe" and not calls  # the violation limit ended the stream before the column hull
+    assert calls or not need_columns or stopped, "the program did not reach the column hull"
     old = _run(program, m, False, monkeypatch)
     assert new == old
     return new
@@ -134,6 +135,7 @@ QUICK = settings(max_examples=4, deadline=None, phases=[Phase.explicit, Phase.re
 def test_column_hull_agrees_with_the_one_motion_path(prog, clamp, monkeypatch):
     """End to end (``verify``): one run per program, the column chunks' runs."""
     x0, y0, size = clamp
+    assume(not (x0 < 0 < x0 + size and y0 < 0 < y0 + size))  # a clamp over the start X0 Y0: ZN130, no machine
     m = parse_machine(_clamp_text(x0, y0, x0 + size, y0 + size))
     _agree(prog, m, monkeypatch)
 
@@ -144,6 +146,7 @@ def test_programs_with_stops_agree_end_to_end(prog, clamp, monkeypatch):
     """G09, G61/G64 and dwells: the Fanuc lane declines the column chunks for them today; the verdicts agree
     whichever path they take."""
     x0, y0, size = clamp
+    assume(not (x0 < 0 < x0 + size and y0 < 0 < y0 + size))  # a clamp over the start X0 Y0: ZN130, no machine
     m = parse_machine(_clamp_text(x0, y0, x0 + size, y0 + size))
     _agree(prog, m, monkeypatch, need_columns=False)
 
