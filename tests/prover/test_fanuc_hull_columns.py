@@ -173,6 +173,7 @@ def test_runs_between_stops_agree_on_column_chunks(prog, clamp, stops, monkeypat
     from nczones.motion import MotionChunk, PathMode
 
     x0, y0, size = clamp
+    assume(not (x0 < 0 < x0 + size and y0 < 0 < y0 + size))  # a clamp over the start X0 Y0: ZN130, no machine
     zones = _clamp_text(x0, y0, x0 + size, y0 + size)
     chunks = list(interpret_text(prog, parse_machine(zones.replace('dialect = "fanuc"', ""))))
     assert any(isinstance(c, MotionChunk) and c.scale is not None and len(c) > 100 for c in chunks)
