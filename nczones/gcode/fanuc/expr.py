@@ -42,6 +42,7 @@ compare exactly.
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable
 from fractions import Fraction
 from operator import attrgetter
@@ -379,11 +380,16 @@ def _binop(op: str, a: tuple, b: tuple) -> tuple:
 
 
 def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None,
-                 in_address: bool = False) -> Callable[[], Value]:
+                 in_address: bool = False, exact: bool = True) -> Callable[[], Value]:
     """A function of no arguments that evaluates the tree with these variables (read when called).
 
     ``in_address``: the tree is the value of an NC address (``ROUND`` then rounds to the address's
-    increment).
+    increment).  ``exact=False``: the caller reads only the double of the value (a condition of ``IF`` or
+    ``WHILE``): the arithmetic then computes no exact shadow, which no operation reads from an operand of a
+    comparison, of ``EQ``/``NE``/``MOD``/``AND``/``OR``/``XOR``, of a function other than ``ABS``/``ROUND``/``ADP``
+    or of ``ATAN``/``POW`` of two arguments either: those operands are compiled so (the same doubles, checked
+    for NaN and infinity in the same order, so the same values and errors; a variable is read as it is, so a
+    vacant one stays :data:`VACANT` for ``EQ``/``NE``).
     """
     ctx = ctx or Context()
     tag = node[0]
@@ -403,46 +409,225 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         inner = compile_tree(index, variables, ctx)
         return lambda: variables.read(variable_index(inner()))
     if tag == NEG:
-        inner = compile_tree(node[1], variables, ctx, in_address)
+        inner = compile_tree(node[1], variables, ctx, in_address, exact)
+        if not exact:
+            return lambda: (-inner()[0], None)
 
         def neg():
             d, q = inner()
             if q is None:
                 return (-d, None)
             n, den = _ratio(q)
-            return (-d, to_fraction(-n, den))
+            return (-d, _negated(n, den))
         return neg
     if tag == BIN:
-        op = node[1]
-        left = compile_tree(node[2], variables, ctx, in_address)
-        if node[3][0] == NUM and _SLOTS:  # a number on the right (#1 + 1, #1 LT 10): no call for it
-            const = (node[3][1], node[3][2])
-            fast = _with_constant(op, left, const)
-            if fast is not None:
-                return fast
-        right = compile_tree(node[3], variables, ctx, in_address)
-        if op in ("+", "-", "*", "/"):
-            if _SLOTS:
-                return _arithmetic(op, left, right)
-            return lambda: binary_op(op, left(), right())
-        if op in _COMPARE:
-            return _COMPARE[op](left, right)
-        return lambda: _binop(op, left(), right())
+        return _compile_binary(node, variables, ctx, in_address, exact)
     if tag == FN:
         name = node[1]
-        arg = compile_tree(node[2], variables, ctx, in_address)
+        # ABS keeps its operand's shadow, ROUND rounds it (in an address), ADP multiplies it: the others read the
+        # double only
+        arg = compile_tree(node[2], variables, ctx, in_address, (exact or name != "abs") and name in _SHADOW_FUNCTIONS)
+        trig = _TRIGONOMETRY.get(name)
+        if trig is not None:
+            return _trigonometric(name, trig, arg)
         return lambda: _function(name, arg(), ctx, in_address)
     if tag == FN2:
         name = node[1]
-        a = compile_tree(node[2], variables, ctx, in_address)
-        b = compile_tree(node[3], variables, ctx, in_address)
+        a = compile_tree(node[2], variables, ctx, in_address, False)
+        b = compile_tree(node[3], variables, ctx, in_address, False)
         return lambda: _two(name, a(), b(), ctx)
     raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
+
+
+#: The functions whose result reads the operand's exact shadow (:func:`_function`).
+_SHADOW_FUNCTIONS = frozenset(("abs", "round", "adp"))
+#: SIN and COS: :func:`_function`'s cases without its dispatch (:func:`_trigonometric`).
+_TRIGONOMETRY = {"sin": math.sin, "cos": math.cos}
+
+
+def _trigonometric(name: str, fn: Callable[[float], float], arg: Callable[[], Value]) -> Callable[[], Value]:
+    """``SIN[arg]`` or ``COS[arg]`` as :func:`_function` computes them (degrees; a NaN or infinite argument
+    is the same error)."""
+    upper = name.upper()
+
+    def trig() -> Value:
+        d = arg()[0]
+        if d - d:
+            raise EvalError("GC312", f"argument to {upper} is {d!r}")
+        return (fn(d * math.pi / 180.0), None)
+    return trig
+
+
+def _compile_binary(node: tuple, variables: FanucVariables, ctx: Context, in_address: bool,
+                    exact: bool) -> Callable[[], Value]:
+    """:func:`compile_tree` of a ``BIN`` node."""
+    op = node[1]
+    arithmetic = op in ("+", "-", "*", "/")
+    # only + - * / read their operands' shadows (and only for a caller that reads the result's)
+    inner_exact = exact and arithmetic
+    if node[3][0] == NUM and _SLOTS:
+        n = _local_index(node[2])
+        if n is not None:  # a local variable and a number (#1 + 1, #1 LT 10): no call for either
+            local = _local_constant(op, variables, n, (node[3][1], node[3][2]), exact)
+            if local is not None:
+                return local
+    left = compile_tree(node[2], variables, ctx, in_address, inner_exact)
+    if node[3][0] == NUM and _SLOTS:  # a number on the right (#1 + 1, #1 LT 10): no call for it
+        const = (node[3][1], node[3][2])
+        fast = _with_constant(op, left, const) if exact or not arithmetic else _double_constant(op, left, const[0])
+        if fast is not None:
+            return fast
+    right = compile_tree(node[3], variables, ctx, in_address, inner_exact)
+    if arithmetic:
+        if not exact:
+            return _double_arithmetic(op, left, right)
+        if _SLOTS:
+            return _arithmetic(op, left, right)
+        return lambda: binary_op(op, left(), right())
+    if op in _COMPARE:
+        return _COMPARE[op](left, right)
+    return lambda: _binop(op, left(), right())
+
+
+def _local_index(node: tuple) -> int | None:
+    """``n`` of a ``#n`` node that reads local variable n (a number 1..33 written as a constant), else None."""
+    if node[0] != VAR or node[1][0] != NUM:
+        return None
+    n = variable_index((node[1][1], node[1][2]))
+    return n if 0 < n <= LOCALS else None
+
+
+def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
+                    exact: bool) -> Callable[[], Value] | None:
+    """``#n op const`` with ``#n`` a local variable, read in the closure (``variables.local``: the call level's
+    at each call) instead of through a closure of its own: the order comparisons, ``+`` and ``*`` (as
+    :func:`_with_constant`, and as :func:`_double_constant` when only the double is read); None for the others."""
+    b, qb = const
+    test = _ORDER.get(op)
+    if test is not None:
+        return lambda: _TRUE if test(variables.local[n][0], b) else _FALSE
+    if qb is None or op not in ("+", "*"):
+        return None
+    if not exact:
+        if op != "*":
+            return None
+
+        def mul_double() -> Value:
+            d = variables.local[n][0] * b
+            if d - d:
+                check_double(d)
+            return (d, None)
+        return mul_double
+    if op == "+":
+        def add() -> Value:
+            a, qa = variables.local[n]
+            d = a + b
+            if d - d:
+                check_double(d)
+            if qa is None:
+                return (d, None)
+            q: Any = q_add(qa, qb)
+            return (d, q) if q._numerator / q._denominator == d else (d, None)
+        return add
+    bn, bd = qb._numerator, qb._denominator
+
+    def mul() -> Value:
+        a, qa = variables.local[n]
+        d = a * b
+        if d - d:
+            check_double(d)
+        if qa is None:
+            return (d, None)
+        m, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
+        return (d, to_fraction(m, den)) if m / den == d else (d, None)
+    return mul
+
+
+def _double_arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    """``left op right`` for + - * / when only the double is read: :func:`_arithmetic` without the shadow (the same
+    IEEE operation, operands read in the same order, the same checks)."""
+    if op == "/":
+        def div() -> Value:
+            a = left()[0]
+            b = right()[0]
+            if b == 0.0:
+                raise EvalError("GC311", "attempt to divide by zero")
+            d = a / b
+            if d - d:  # NaN or infinity (d - d is NaN for both, 0.0 otherwise)
+                check_double(d)
+            return (d, None)
+        return div
+    if op == "+":
+        def add() -> Value:
+            d = left()[0] + right()[0]
+            if d - d:
+                check_double(d)
+            return (d, None)
+        return add
+    if op == "-":
+        def sub() -> Value:
+            d = left()[0] - right()[0]
+            if d - d:
+                check_double(d)
+            return (d, None)
+        return sub
+
+    def mul() -> Value:
+        d = left()[0] * right()[0]
+        if d - d:
+            check_double(d)
+        return (d, None)
+    return mul
+
+
+def _double_constant(op: str, left: Callable[[], Value], b: float) -> Callable[[], Value] | None:
+    """``left op b`` for + - * / (a divisor not 0) when only the double is read, else None."""
+    if op == "/":
+        if b == 0.0:
+            return None
+
+        def div() -> Value:
+            d = left()[0] / b
+            if d - d:
+                check_double(d)
+            return (d, None)
+        return div
+    if op == "+":
+        def add() -> Value:
+            d = left()[0] + b
+            if d - d:
+                check_double(d)
+            return (d, None)
+        return add
+    if op == "-":
+        def sub() -> Value:
+            d = left()[0] - b
+            if d - d:
+                check_double(d)
+            return (d, None)
+        return sub
+
+    def mul() -> Value:
+        d = left()[0] * b
+        if d - d:
+            check_double(d)
+        return (d, None)
+    return mul
 
 
 #: Whether Fractions are read through their slots (CPython): the arithmetic closures then inline
 #: :func:`nczones.gcode.expr.binary_op` (the same operations in the same order, one call less per node).
 _SLOTS = to_fraction is fraction_raw
+_new = object.__new__
+
+
+def _negated(n: int, den: int) -> Fraction:
+    """``-Fraction(n, den)`` of a Fraction's own ``(n, den)`` (in lowest terms already: no gcd to take)."""
+    if not _SLOTS:
+        return to_fraction(-n, den)
+    q: Any = _new(Fraction)
+    q._numerator, q._denominator = -n, den
+    return q
 
 
 def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
@@ -595,6 +780,8 @@ def _le(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], V
 
 #: The order comparisons as closures (:func:`_binop`'s gt/ge/lt/le: the doubles compared, vacant as 0).
 _COMPARE = {"gt": _gt, "ge": _ge, "lt": _lt, "le": _le}
+#: The order comparisons as functions of two doubles (:func:`_local_constant`).
+_ORDER = {"gt": operator.gt, "ge": operator.ge, "lt": operator.lt, "le": operator.le}
 _COMPARE_CONSTANT = {"gt": _gt_constant, "ge": _ge_constant, "lt": _lt_constant, "le": _le_constant}
 
 

@@ -360,9 +360,9 @@ class FanucRunner:
                 else:
                     then = ("assign", tuple((_target(a[0], v, ctx), compile_tree(a[1], v, ctx), a[2], a[3])
                                             for a in then[1]))
-                stmt = ("if", compile_tree(stmt[1], v, ctx), then)
+                stmt = ("if", compile_tree(stmt[1], v, ctx, exact=False), then)  # (its double only is read)
             elif kind == "while":
-                stmt = ("while", compile_tree(stmt[1], v, ctx), stmt[2])
+                stmt = ("while", compile_tree(stmt[1], v, ctx, exact=False), stmt[2])
         gcodes = {w[2][0] for w in fl.words if w[0] == "G" and w[1] == LITERAL}
         # which checks a block of this line needs: the G65-G67/M97-M99/custom code calls (a computed G, M or
         # T word, or a literal one of them), the canned cycle (K), the special readings of G04/G51/G68
