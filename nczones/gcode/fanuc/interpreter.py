@@ -36,7 +36,7 @@ with a hint when the LinuxCNC dialect knows it.
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import Any, TypeAlias
+from typing import TYPE_CHECKING, Any, TypeAlias
 
 from ...machine import FANUC_OFFSETS, Machine
 from ...motion import PLANE_AXES, FrameRotation, PathMode, Plane, ProgramFrame, SegmentKind
@@ -54,18 +54,9 @@ from ..interpreter import (
 )
 from ..segments import make_segment
 from .expr import FanucVariables
-from .transforms import (
-    Mirror,
-    PointNotCertain,
-    Polar,
-    Rotation,
-    Scaling,
-    cos_sin_enclosure,
-    mirror,
-    polar_point,
-    rotate,
-    scale,
-)
+
+if TYPE_CHECKING:  # (the programmable transforms are imported where a program uses one: start-up)
+    from .transforms import Mirror, Polar, Rotation, Scaling
 
 _LINE, _RAPID = SegmentKind.LINE, SegmentKind.RAPID
 
@@ -198,8 +189,10 @@ class FanucInterpreter(Interpreter):
         #: change a step of it and takes the general lane)
         self.fused_lane = type(self) is FanucInterpreter
         n = self.naxes
+        offsets, zeros = machine.offsets, [_ZERO] * len(machine.axes)  # (machine.offset's zeros, built once)
         for name in FANUC_OFFSETS:
-            self.g5x[name] = list(machine.offset(name))
+            given = offsets.get(name)
+            self.g5x[name] = list(given) if given is not None else zeros[:]
             self.dep_g5x[name] = [{name: 1} for _ in range(n)]
             self.rot[name] = _ZERO
         self.g52 = [_ZERO] * n
@@ -275,6 +268,8 @@ class FanucInterpreter(Interpreter):
         rot = None
         r = self.rotation
         if r is not None:
+            from .transforms import cos_sin_enclosure
+
             (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(r.angle)
             off = self.off
             rot = FrameRotation((self.axes[r.ia], self.axes[r.ib]), r.angle, (c_lo + c_hi) / 2, (s_lo + s_hi) / 2,
@@ -908,6 +903,7 @@ class FanucInterpreter(Interpreter):
     # ------------------------------------------------------------------ programmable transforms
     def _transform_codes(self, groups: dict, words: Words, axis_words: AxisWords) -> None:
         """G16/G15, G51/G50, G51.1/G50.1, G68/G69 (in that order within a block)."""
+        from .transforms import Mirror, Polar
         for g in (17, 11, 22, 16):
             if g not in groups:
                 continue
@@ -983,6 +979,8 @@ class FanucInterpreter(Interpreter):
         return any(c and (k if k.startswith("H") else f"{k}.{self.axes[i]}") in self.ranged for k, c in deps.items())
 
     def _g68(self, words: Words, axis_words: AxisWords, w: Word) -> Rotation | None:
+        from .transforms import Rotation
+
         a, b, _n = PLANE_AXES[self.plane]
         ia, ib = self.index.get(a), self.index.get(b)
         if ia is None or ib is None:
@@ -1001,6 +999,8 @@ class FanucInterpreter(Interpreter):
         return Rotation(ia, ib, self._centre(axis_words, ia, w), self._centre(axis_words, ib, w), angle)
 
     def _g51(self, words: Words, axis_words: AxisWords, w: Word) -> Scaling | None:
+        from .transforms import Scaling
+
         if not self.absolute and axis_words:
             self.unknown("G51", "a G51 centre in incremental mode (G91) is not modelled", w)
             return self.scaling
@@ -1050,6 +1050,8 @@ class FanucInterpreter(Interpreter):
             else:
                 p[i] = p[i] + v
         if polar is not None and (radius is not None or angle is not None):
+            from .transforms import PointNotCertain, Polar, polar_point
+
             radius = radius if radius is not None else polar.radius
             angle = angle if angle is not None else polar.angle
             if radius is None or angle is None:
@@ -1073,6 +1075,8 @@ class FanucInterpreter(Interpreter):
 
     def _transform_target(self, p: list[Fraction], pd: list[dict]) -> tuple[list[Fraction], list[dict] | None]:
         """The machine point of a program point: polar (already in ``p``), scaling, mirror, rotation, offsets."""
+        from .transforms import PointNotCertain, mirror, rotate, scale
+
         step = self._grid_step()
         q = p
         mixed: set[int] = set()
