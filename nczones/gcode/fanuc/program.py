@@ -640,15 +640,16 @@ class FanucRunner:
         if w[1] != LITERAL:
             return None
         if w[0] == "M" and len(words) == 1 and w[2][0] == 99:
-            return self.m99_op(pos)
+            return self.m99_op(pos, source)
         if w[0] == "M" and len(words) == 2 and w[2][0] == 98 and words[1][0] == "P" and words[1][1] == LITERAL:
-            return self.m98_op(pos, lineno, line, words[1][2][0], here)
+            return self.m98_op(source, pos, lineno, line, words[1][2][0], here)
         if w[0] == "G" and w[2][0] == 65:
-            return self.g65_op(pos, lineno, line, words, here)
+            return self.g65_op(source, pos, lineno, line, words, here)
         return None
 
-    def m99_op(self, pos: int) -> Callable[[], Any] | None:
-        """A bare ``M99`` ending the last (or only) repetition of a subprogram or macro call."""
+    def m99_op(self, pos: int, source: _Source) -> Callable[[], Any] | None:
+        """A bare ``M99`` ending the last (or only) repetition of a subprogram or macro call (to a caller in the
+        same text: its ``(pos, lineno)``, run() goes on with that frame's closures, which are this text's)."""
         runner, frames, variables = self, self.frames, self.vars
 
         def m99() -> Any:
@@ -661,12 +662,13 @@ class FanucRunner:
             frames.pop()
             if frame.saved is not None:
                 variables.pop_level(frame.saved)
-            return [frame.ret, None]
+            return frame.ret if frames[-1].source is source else [frame.ret, None]
         return m99
 
-    def m98_op(self, pos: int, lineno: int, line: str, p: Fraction,
+    def m98_op(self, source: _Source, pos: int, lineno: int, line: str, p: Fraction,
                here: tuple[int, int]) -> Callable[[], Any] | None:
-        """``M98 P<n>`` (``m98`` and ``call_sub``: the program found once)."""
+        """``M98 P<n>`` (``m98`` and ``call_sub``: the program found once; in the same text, the body's
+        ``(pos, lineno)``: run() goes on with the same closures)."""
         if p.denominator != 1 or p < 0:
             return None
         count, program = divmod(int(p), 10000) if p > 9999 else (1, int(p))
@@ -677,7 +679,7 @@ class FanucRunner:
         except GcodeError:
             return None
         runner, frames = self, self.frames
-        jump = [body, None]  # (a list: run() takes the new frame's lines)
+        jump = body if target is source else [body, None]  # (a list: run() takes the new frame's lines)
 
         def m98() -> Any:
             if len(frames) >= MAX_CALL_DEPTH:
@@ -688,7 +690,7 @@ class FanucRunner:
             return jump
         return m98
 
-    def g65_op(self, pos: int, lineno: int, line: str, words: tuple,
+    def g65_op(self, source: _Source, pos: int, lineno: int, line: str, words: tuple,
                here: tuple[int, int]) -> Callable[[], Any] | None:
         """``G65 P<n> [L<n>]`` and its arguments (``calls``, ``call_words``, ``arguments``, ``call_macro``:
         the argument letters mapped to variables and the program found once)."""
@@ -722,7 +724,7 @@ class FanucRunner:
         runner, frames, variables, state = self, self.frames, self.vars, self.state
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
         usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
-        jump = [body, None]  # (a list: run() takes the new frame's lines)
+        jump = body if target is source else [body, None]  # (as m98_op's)
 
         def g65() -> Any:
             values = [VACANT] * (LOCALS + 1)  # the macro's local level: its arguments, the others vacant
@@ -782,6 +784,8 @@ class FanucRunner:
                 op = ops.get(pos)
             if op is None or r is None:  # the general path for the line at pos
                 r = None
+                frame = frames[-1]  # (a call or a return within one text stays in the loop above)
+                source = frame.source
                 compiled = source.cache.get(pos)
                 if compiled is not None and pos not in ops and not (fast and pos in fast):
                     self.add_op(source, pos, lineno, compiled)  # run again: kept as one closure from now on

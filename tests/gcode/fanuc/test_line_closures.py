@@ -341,3 +341,40 @@ def test_past_the_bound_of_kept_lines_the_rest_run_the_general_path(monkeypatch)
         pass
     assert sum(op is not None for op in out[0].main.ops.values()) == 4
     assert _language_layer(text, 100) == general
+
+
+def test_calls_between_texts_hand_over_as_the_general_path(tmp_path):
+    """M98/G65 and M99 within one text go on with that text's closures; a call into a library file, a library
+    program calling one of its own file and one of the main file, and the returns across them, switch texts
+    (issue 36, fanucloops36).  Blocks, counters and variables equal the general path's, and the interpretation's
+    segments too."""
+    (tmp_path / "O7000.nc").write_text("%\nO7000 (LIB)\nG01 X[#1 * 0.1] Y#24\nM98 P7001\nM98 P9020\nM99\n"
+                                       "O7001\nG01 Z-[#1 * 0.01]\nG65 P7002 X[#1]\nM99\nO7002\nG00 X#24 Y2.\nM99\n%\n")
+    text = _loop("M98 P7000", "G65 P7000 X[#1 + 1]", "M98 P9020", "G65 P9010 X[#1] Y1.", reps=6,
+                 sub=("G01 Z-2.", "G65 P9010 X[#1 * 2]"))
+    for fn in (_language_layer_in(tmp_path), _interpretation_in(tmp_path)):
+        with _general_path_only():
+            before = fn(text)
+        assert fn(text) == before
+    out: list = []
+    for _ in iter_blocks(text, "t.nc", runner_out=out, library=tmp_path):
+        pass
+    assert sum(op is not None for op in out[0].library_sources[7000].ops.values()) >= 6  # the library's closures
+
+
+def _language_layer_in(folder) -> Callable[[str], tuple]:
+    def run(text: str) -> tuple:
+        variables = FanucVariables()
+        out: list = []
+        got = [(b.letters, b.values, str(b.span), b.index) for b in iter_blocks(
+            text, "t.nc", variables=variables, runner_out=out, library=folder)]
+        r = out[0]
+        return got, (r.index, r.started, r.ran, len(r.frames)), list(variables.local), list(variables.common)
+    return run
+
+
+def _interpretation_in(folder) -> Callable[[str], tuple]:
+    def run(text: str) -> tuple:
+        chunks = list(interpret_text(text, mill(), file="t.nc", library=folder, chunk_size=7))
+        return [(s.kind, s.start, s.end, s.block, str(s.span)) for c in chunks for s in c.segments()]
+    return run
