@@ -196,6 +196,7 @@ def double_of(q: Fraction) -> float:
         return math.inf if q > 0 else -math.inf
 
 
+_floor = math.floor
 _NEAR_HALF_LOW, _NEAR_HALF_HIGH = 0.5 - 2.0**-20, 0.5 + 2.0**-20
 
 
@@ -206,7 +207,7 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     (Fraction(6173, 500), Fraction(-3, 1))
     """
     q: Fraction | None = value[1]
-    sn, sd = _ratio(step)
+    sn, sd = (step._numerator, step._denominator) if _SLOTS else _ratio(step)  # type: ignore[attr-defined]
     if q is None:
         d = value[0]
         if sn == 1:
@@ -214,7 +215,7 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
             # nearest integer is that of the exact quotient; at a half, or beyond, the exact path below decides
             x = abs(d) * sd
             if x < 1073741824.0:
-                m = math.floor(x)
+                m = _floor(x)
                 frac = x - m  # exact (x and m are doubles below 2**30)
                 if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH:
                     n = m + 1 if frac > 0.5 else m
