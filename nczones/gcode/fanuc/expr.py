@@ -626,8 +626,8 @@ def _negated(n: int, den: int) -> Fraction:
     """``-Fraction(n, den)`` of a Fraction's own ``(n, den)`` (in lowest terms already: no gcd to take)."""
     if not _SLOTS:
         return to_fraction(-n, den)
-    q: Any = _new(Fraction)
-    q._numerator, q._denominator = -n, den
+    q: Fraction = _new(Fraction)
+    q._numerator, q._denominator = -n, den  # type: ignore[attr-defined]
     return q
 
 
