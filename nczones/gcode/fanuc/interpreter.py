@@ -904,6 +904,7 @@ class FanucInterpreter(Interpreter):
     def _transform_codes(self, groups: dict, words: Words, axis_words: AxisWords) -> None:
         """G16/G15, G51/G50, G51.1/G50.1, G68/G69 (in that order within a block)."""
         from .transforms import Mirror, Polar
+
         for g in (17, 11, 22, 16):
             if g not in groups:
                 continue

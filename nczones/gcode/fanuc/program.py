@@ -387,7 +387,9 @@ class FanucRunner:
     # -- lines run again, as closures ---------------------------------------------------------
     # A line that runs a second time (in a loop, a subprogram, a macro) is kept as one closure of no
     # arguments (``source.ops``) doing what the general path does with it: it returns the next
-    # ``(pos, lineno)`` in the same frame; ``[pos_lineno, None]`` after a call or a return (another frame);
+    # ``(pos, lineno)`` in the same text (the same frame, or a call or a return whose frame reads this text:
+    # ``source.ops`` stays the closures of the top frame's text); ``[pos_lineno, None]`` after a call or a return
+    # into another text (a library file);
     # ``[here]`` when the plain-move lane took its motion and the chunk is full (run() yields LANE_FULL);
     # ``[here, block]`` when the lane declined it (run() yields the block); or None,
     # having changed nothing, when the general path must run the line this time (the first entry of a
@@ -786,6 +788,7 @@ class FanucRunner:
                 r = None
                 frame = frames[-1]  # (a call or a return within one text stays in the loop above)
                 source = frame.source
+                ops = source.ops
                 compiled = source.cache.get(pos)
                 if compiled is not None and pos not in ops and not (fast and pos in fast):
                     self.add_op(source, pos, lineno, compiled)  # run again: kept as one closure from now on
