@@ -266,6 +266,31 @@ def _angle(d: float, ctx: Context, full: bool) -> tuple:
     return (check_double(d), None) if d != int(d) else (d, Fraction(int(d)))
 
 
+def _radians(d: float, name: str) -> float:
+    """``d`` degrees in radians, in the control's doubles; an angle whose radians overflow is GC312.
+
+    >>> _radians(1.7e308, "sin")
+    Traceback (most recent call last):
+    ...
+    nczones.gcode.expr.EvalError: argument to SIN is 1.7e+308: its radians overflow a double
+    """
+    r = d * math.pi / 180.0
+    if r - r:
+        raise EvalError("GC312", f"argument to {name.upper()} is {d!r}" + (": its radians overflow a double"
+                                                                            if not d - d else ""))
+    return r
+
+
+def _circular(name: str, d: float) -> tuple:
+    """SIN, COS or TAN of ``d`` degrees."""
+    r = _radians(d, name)
+    if name == "sin":
+        return (math.sin(r), None)
+    if name == "cos":
+        return (math.cos(r), None)
+    return (check_double(math.tan(r)), None)
+
+
 def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
     d, q = value
     if d - d:
@@ -283,12 +308,8 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
             r = round_to(value, step)
             return (float(r), r)
         return _num(_away(d))
-    if name == "sin":
-        return (math.sin(d * math.pi / 180.0), None)
-    if name == "cos":
-        return (math.cos(d * math.pi / 180.0), None)
-    if name == "tan":
-        return (check_double(math.tan(d * math.pi / 180.0)), None)
+    if name in ("sin", "cos", "tan"):
+        return _circular(name, d)
     if name in ("asin", "acos"):
         if d < -1.0 or d > 1.0:
             raise EvalError("GC312", f"argument to {name.upper()} out of range: {d!r} (allowed -1 to 1)")
@@ -453,9 +474,10 @@ def _trigonometric(name: str, fn: Callable[[float], float], arg: Callable[[], Va
 
     def trig() -> Value:
         d = arg()[0]
-        if d - d:
-            raise EvalError("GC312", f"argument to {upper} is {d!r}")
-        return (fn(d * math.pi / 180.0), None)
+        r = d * math.pi / 180.0
+        if r - r:  # NaN or infinite, or radians that overflow
+            _radians(d, upper)
+        return (fn(r), None)
     return trig
 
 

@@ -64,9 +64,11 @@ def reference(node: tuple, v: FanucVariables) -> tuple:
     if tag == FN:
         name, a = node[1], reference(node[2], v)
         if name in ("sin", "cos"):
-            if a[0] - a[0]:
-                raise EvalError("GC312", f"argument to {name.upper()} is {a[0]!r}")
-            return ((math.sin if name == "sin" else math.cos)(a[0] * math.pi / 180.0), None)
+            r = a[0] * math.pi / 180.0  # degrees to radians in doubles; inf or NaN (radians overflow): GC312
+            if r - r:
+                raise EvalError("GC312", f"argument to {name.upper()} is {a[0]!r}"
+                                + ("" if a[0] - a[0] else ": its radians overflow a double"))
+            return ((math.sin if name == "sin" else math.cos)(r), None)
         return evaluate_tree((FN, name, _num(a)), v)
     assert tag == FN2
     return evaluate_tree((FN2, node[1], _num(reference(node[2], v)), _num(reference(node[3], v))), v)
@@ -103,8 +105,6 @@ def _outcome(fn, *args):
         return "error", (e.code, e.message)
     except OverflowError:  # an exact shadow beyond the double range (binary_op's own limit)
         return "overflow", None
-    except ValueError as e:  # SIN/COS of a finite argument whose radians overflow (both raise it alike)
-        return "ValueError", str(e)
 
 
 def _bits(d: float) -> tuple:
