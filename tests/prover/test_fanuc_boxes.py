@@ -184,8 +184,19 @@ def test_exact_stops_and_dwells_are_answered():
 
 
 def test_a_long_text_goes_today_s_path():
-    """A plain program of more than FAST_PATH_MIN_LINES lines is read by the vectorized path: not the route."""
-    text = "O1\nG90 G21 G54 G01 F500.\n" + "".join(f"X{k % 40}. Y{k % 30}.\n" for k in range(600)) + "M30\n"
+    """A program of more than FAST_PATH_MIN_LINES lines is read by the vectorized path, not the route, unless it is
+    plain (no ``#``, no call) and of at most FANUC_BOX_LINES lines (pipeline.verification._fanuc_boxes_first)."""
+    from nczones.pipeline.verification import FANUC_BOX_LINES, _fanuc_boxes_first
+
+    def moves(n: int) -> str:
+        return "".join(f"X{k % 40}. Y{k % 30}.\n" for k in range(n))
+
+    text = "O1\nG90 G21 G54 G01 F500.\n" + moves(600) + "M30\n"
+    assert _agree(text, _MACHINES["box"]) == ("safe", True)
+    assert _agree(text.replace("O1\n", "O1\n#1 = 0\n"), _MACHINES["box"]) == ("safe", False)
+    assert not _fanuc_boxes_first(text.replace("O1\n", "O1\nM98 P2\n"))  # a call may run far more lines
+    assert not _fanuc_boxes_first(text.replace("O1\n", "O1\nG65 P2\n"))
+    text = "O1\nG90 G21 G54 G01 F500.\n" + moves(FANUC_BOX_LINES) + "M30\n"
     assert _agree(text, _MACHINES["box"]) == ("safe", False)
 
 

@@ -34,6 +34,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
+from math import isqrt
 from typing import Any
 
 from ...motion import MotionChunk, Segment, SegmentKind
@@ -317,6 +318,8 @@ class RowSink:
     __slots__ = ("axes", "file", "start", "max_rows")
     #: the class of the runs :meth:`open` makes (the lane continues a run of this class)
     rows: type = Rows
+    #: whether the lane writes arcs into the runs too (``FanucInterpreter._arc_lane``: :meth:`BoxRows.add_arc`)
+    arcs = False
 
     def __init__(self, axes: tuple[str, ...], file: str, start: int, max_rows: int) -> None:
         self.axes, self.file, self.start, self.max_rows = axes, file, start, max_rows
@@ -381,6 +384,82 @@ class BoxRows:
             self.full = True
         return True
 
+    def add_arc(self, cw: bool, end: tuple, axis_at: tuple, ia: int, ib: int, r: Any, ij: Any, span: Any,
+                tlo: Any) -> bool:
+        """The arc from ``prev_end`` to ``end`` in the plane of axes ``ia``, ``ib`` (clockwise ``cw``), given by
+        its signed radius ``r`` or (``r`` None) its centre's offsets from the start ``ij``, into the box (True):
+        the box of its ends on every axis and, on the plane axes, its sound box (:func:`r_arc_box`,
+        :func:`centre_arc_box`).  False, the run unchanged, when a number is not a decimal at the scale or too
+        large, or the arc is not one those boxes take (then the block takes the interpreter's general path)."""
+        if span.file != self.file:
+            return False
+        start = self.prev_end
+        got = []
+        mult = _MULT
+        x: Any  # a Fraction, read through its slots
+        for x in (start[ia], start[ib], r) if r is not None else (start[ia], start[ib], ij[0], ij[1]):
+            d = x._denominator
+            m = mult.get(d, 0)
+            if m == 0:
+                m = _mult(d)
+            if m is None:
+                return False
+            v = x._numerator * m
+            if not _LOW < v < _LIMIT:
+                return False
+            got.append(v)
+        sa, sb = got[0], got[1]
+        e_vals: list[tuple[int, int]] = []
+        ea, eb = sa, sb
+        for _k, i in axis_at:
+            x = end[i]
+            d = x._denominator
+            m = mult.get(d, 0)
+            if m == 0:
+                m = _mult(d)
+            if m is None:
+                return False
+            v = x._numerator * m
+            if not _LOW < v < _LIMIT:
+                return False
+            e_vals.append((i, v))
+            if i == ia:
+                ea = v
+            elif i == ib:
+                eb = v
+        if r is not None:
+            box = r_arc_box(sa, sb, ea, eb, got[2], cw)
+        else:
+            box = centre_arc_box(sa, sb, ea, eb, sa + got[2], sb + got[3], cw)
+        if box is None:
+            return False
+        if tlo is not self.tl:
+            t = _scaled((tlo,))
+            if t is None:
+                return False
+            self.tl = tlo
+            self.tls.add(t[0])
+        lo, hi = self.lo, self.hi
+        for i, v in e_vals:
+            if v < lo[i]:
+                lo[i] = v
+            elif v > hi[i]:
+                hi[i] = v
+        la, ha, lb, hb = box
+        if la < lo[ia]:
+            lo[ia] = la
+        if ha > hi[ia]:
+            hi[ia] = ha
+        if lb < lo[ib]:
+            lo[ib] = lb
+        if hb > hi[ib]:
+            hi[ib] = hb
+        self.prev_end = end
+        self.count += 1
+        if self.count >= self.max_rows:
+            self.full = True
+        return True
+
     def __len__(self) -> int:
         return self.count
 
@@ -389,11 +468,132 @@ class BoxRows:
         return self.lo, self.hi, self.tls, self.count, SCALE
 
 
+#: An R arc whose half chord ``h`` has ``h * (1 - 1/_TINY_DEN)**-2 >= |R|`` is made a half circle about the chord's
+#: midpoint by the interpreter (``Interpreter.arc``, its ``_TINY``); :func:`r_arc_box` leaves those to it.
+_TINY_DEN = 10**12
+
+
+def _ceil_div(a: int, b: int) -> int:
+    return -((-a) // b)
+
+
+def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int, int, int, int] | None:
+    """A box ``(lo_a, hi_a, lo_b, hi_b)`` holding the R-format arc from ``(sa, sb)`` to ``(ea, eb)`` with signed
+    radius ``r`` (all integers at one scale), clockwise ``cw``, as ``nczones.prover.geometry.arc_geom`` models
+    it; None when the interpreter would not give such an arc (equal ends, ``r`` 0, a chord of ``2|r|`` or more
+    within its tolerance: the general path decides those).
+
+    The model: the centre is ``c = M + sign * k * n`` (``M`` the chord's midpoint, ``n = (-dy, dx)`` the chord
+    turned left, ``k = sqrt(r**2 / l**2 - 1/4)``, ``sign`` -1 when clockwise differs from ``r < 0``), and the arc
+    runs about it from the start to the end in its direction: the minor arc (at most half the circle) when
+    ``r > 0``, the major one when ``r < 0``.  The chord's line cuts the circle into these two arcs: the minor
+    one lies on the side away from the centre, the major one on the centre's side.  So the circle's extreme
+    point ``c + |r| v`` in an axis direction ``v`` is on the arc exactly when ``(c + |r| v - M) . b >= 0`` for
+    ``b = sigma * n`` the normal towards the arc's side (``sigma = -sign`` minor, ``sign`` major).  With
+    ``Q = l**2 (4 r**2 - l**2)`` (an integer; ``k l**2 = sqrt(Q) / 2``) and ``A = 2 sigma |r| (v . n)`` this is
+    ``A >= sqrt(Q)`` for the minor arc and ``A >= -sqrt(Q)`` for the major one: decided exactly on integers
+    (``A >= 0 and A*A >= Q``, ``A >= 0 or A*A <= Q``), no square root.  The box is the ends' and those extremes,
+    the centre enclosed by integer square roots rounded outward (``2 c_a = sa + ea - sign dy sqrt(Q) / l**2``):
+    every bound is outward, by at most one unit of the scale.
+
+    >>> r_arc_box(-10, 0, 10, 0, 10, True)  # a half circle would be c=(0,0): left to the interpreter
+    >>> r_arc_box(0, 0, 20, 0, 20, True)  # G2 from (0,0) to (20,0), R20: bulges up (+b) to 20 - sqrt(300)
+    (0, 20, 0, 3)
+    >>> r_arc_box(0, 0, 20, 0, -20, True)  # R-20: the major arc, round the centre (10, sqrt(300)) above
+    (-10, 30, 0, 38)
+    """
+    dx, dy = ea - sa, eb - sb
+    l2 = dx * dx + dy * dy
+    rr = -r if r < 0 else r
+    r2 = rr * rr
+    if l2 == 0 or rr == 0 or l2 * _TINY_DEN * _TINY_DEN >= 4 * r2 * (_TINY_DEN - 1) ** 2:
+        return None
+    q = l2 * (4 * r2 - l2)
+    s_lo = isqrt(q)
+    s_hi = s_lo if s_lo * s_lo == q else s_lo + 1
+    sign = -1 if cw != (r < 0) else 1
+    minor = r > 0
+    sigma = -sign if minor else sign
+    # twice the centre, enclosed: 2 c = (s + e) + sign * n * sqrt(Q) / l2
+    ka, kb = -sign * dy, sign * dx
+    ca_lo = sa + ea + ((ka * (s_lo if ka >= 0 else s_hi)) // l2)
+    ca_hi = sa + ea + _ceil_div(ka * (s_hi if ka >= 0 else s_lo), l2)
+    cb_lo = sb + eb + ((kb * (s_lo if kb >= 0 else s_hi)) // l2)
+    cb_hi = sb + eb + _ceil_div(kb * (s_hi if kb >= 0 else s_lo), l2)
+    lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
+    lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
+    two = 2 * sigma * rr
+    # v = +a, -a, +b, -b: v . n = -dy, dy, dx, -dx
+    a = -two * dy
+    if (a >= 0 and a * a >= q) if minor else (a >= 0 or a * a <= q):
+        hi_a = max(hi_a, _ceil_div(ca_hi, 2) + rr)
+    if (-a >= 0 and a * a >= q) if minor else (-a >= 0 or a * a <= q):
+        lo_a = min(lo_a, ca_lo // 2 - rr)
+    a = two * dx
+    if (a >= 0 and a * a >= q) if minor else (a >= 0 or a * a <= q):
+        hi_b = max(hi_b, _ceil_div(cb_hi, 2) + rr)
+    if (-a >= 0 and a * a >= q) if minor else (-a >= 0 or a * a <= q):
+        lo_b = min(lo_b, cb_lo // 2 - rr)
+    return lo_a, hi_a, lo_b, hi_b
+
+
+def _ccw_half(ux: int, uy: int, vx: int, vy: int) -> int:
+    """0 when the counter-clockwise angle from u to v is in [0, pi), else 1 (``geometry._half``)."""
+    c = ux * vy - uy * vx
+    return 0 if c > 0 or (c == 0 and ux * vx + uy * vy > 0) else 1
+
+
+def _in_sweep(u: tuple[int, int], w: tuple[int, int], v: tuple[int, int], ccw: bool) -> bool:
+    """``nczones.prover.geometry.in_sweep`` (not a whole turn) on integer vectors."""
+    if not ccw:
+        u, w = w, u
+    hv, hw = _ccw_half(u[0], u[1], v[0], v[1]), _ccw_half(u[0], u[1], w[0], w[1])
+    if hv != hw:
+        return hv < hw
+    return v[0] * w[1] - v[1] * w[0] >= 0
+
+
+def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: bool
+                   ) -> tuple[int, int, int, int] | None:
+    """A box ``(lo_a, hi_a, lo_b, hi_b)`` holding the arc from ``(sa, sb)`` to ``(ea, eb)`` about the centre
+    ``(ca, cb)`` (integers at one scale), clockwise ``cw``: a whole turn when the ends are equal.  None unless
+    both ends are at the same distance from the centre, not 0 (a spiral, or an error: the general path's).
+    The box is the ends' and the circle's extremes ``c +- sqrt(r**2)`` (the root rounded up) in the axis
+    directions the sweep holds, decided exactly (``nczones.prover.geometry.in_sweep``, ``ArcGeom.plane_bbox``).
+
+    >>> centre_arc_box(10, 0, 0, 10, 0, 0, False)  # G3 a quarter from +a to +b
+    (0, 10, 0, 10)
+    >>> centre_arc_box(10, 0, 0, 10, 0, 0, True)  # G2: three quarters
+    (-10, 10, -10, 10)
+    """
+    u = (sa - ca, sb - cb)
+    w = (ea - ca, eb - cb)
+    r0 = u[0] * u[0] + u[1] * u[1]
+    if r0 == 0 or r0 != w[0] * w[0] + w[1] * w[1]:
+        return None
+    s = isqrt(r0)
+    rr = s if s * s == r0 else s + 1
+    full = u == w
+    lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
+    lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
+    ccw = not cw
+    if full or _in_sweep(u, w, (1, 0), ccw):
+        hi_a = max(hi_a, ca + rr)
+    if full or _in_sweep(u, w, (-1, 0), ccw):
+        lo_a = min(lo_a, ca - rr)
+    if full or _in_sweep(u, w, (0, 1), ccw):
+        hi_b = max(hi_b, cb + rr)
+    if full or _in_sweep(u, w, (0, -1), ccw):
+        lo_b = min(lo_b, cb - rr)
+    return lo_a, hi_a, lo_b, hi_b
+
+
 class BoxSink(RowSink):
     """A :class:`RowSink` whose runs are :class:`BoxRows`: the lane writes a run's box, not its rows."""
 
     __slots__ = ()
     rows = BoxRows
+    arcs = True
 
     def open(self, start: Any) -> Any:
         """A new run from the point ``start`` (None when it is not a decimal at the scale)."""
