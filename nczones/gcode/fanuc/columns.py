@@ -397,7 +397,8 @@ class BoxRows:
         got = []
         mult = _MULT
         x: Any  # a Fraction, read through its slots
-        for x in (start[ia], start[ib], r) if r is not None else (start[ia], start[ib], ij[0], ij[1]):
+        for x in (start[ia], start[ib], end[ia], end[ib], r) if r is not None else \
+                (start[ia], start[ib], end[ia], end[ib], ij[0], ij[1]):
             d = x._denominator
             m = mult.get(d, 0)
             if m == 0:
@@ -408,29 +409,25 @@ class BoxRows:
             if not _LOW < v < _LIMIT:
                 return False
             got.append(v)
-        sa, sb = got[0], got[1]
-        e_vals: list[tuple[int, int]] = []
-        ea, eb = sa, sb
+        others: list[tuple[int, int]] = []  # the other axes the arc moves (a helix): their ends
         for _k, i in axis_at:
-            x = end[i]
-            d = x._denominator
-            m = mult.get(d, 0)
-            if m == 0:
-                m = _mult(d)
-            if m is None:
-                return False
-            v = x._numerator * m
-            if not _LOW < v < _LIMIT:
-                return False
-            e_vals.append((i, v))
-            if i == ia:
-                ea = v
-            elif i == ib:
-                eb = v
+            if i != ia and i != ib:
+                x = end[i]
+                d = x._denominator
+                m = mult.get(d, 0)
+                if m == 0:
+                    m = _mult(d)
+                if m is None:
+                    return False
+                v = x._numerator * m
+                if not _LOW < v < _LIMIT:
+                    return False
+                others.append((i, v))
+        sa, sb = got[0], got[1]
         if r is not None:
-            box = r_arc_box(sa, sb, ea, eb, got[2], cw)
+            box = r_arc_box(sa, sb, got[2], got[3], got[4], cw)
         else:
-            box = centre_arc_box(sa, sb, ea, eb, sa + got[2], sb + got[3], cw)
+            box = centre_arc_box(sa, sb, got[2], got[3], sa + got[4], sb + got[5], cw)
         if box is None:
             return False
         if tlo is not self.tl:
@@ -440,12 +437,12 @@ class BoxRows:
             self.tl = tlo
             self.tls.add(t[0])
         lo, hi = self.lo, self.hi
-        for i, v in e_vals:
+        for i, v in others:
             if v < lo[i]:
                 lo[i] = v
             elif v > hi[i]:
                 hi[i] = v
-        la, ha, lb, hb = box
+        la, ha, lb, hb = box  # the ends' box and the arc's extremes
         if la < lo[ia]:
             lo[ia] = la
         if ha > hi[ia]:
@@ -471,10 +468,6 @@ class BoxRows:
 #: An R arc whose half chord ``h`` has ``h * (1 - 1/_TINY_DEN)**-2 >= |R|`` is made a half circle about the chord's
 #: midpoint by the interpreter (``Interpreter.arc``, its ``_TINY``); :func:`r_arc_box` leaves those to it.
 _TINY_DEN = 10**12
-
-
-def _ceil_div(a: int, b: int) -> int:
-    return -((-a) // b)
 
 
 def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int, int, int, int] | None:
@@ -514,26 +507,29 @@ def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int
     sign = -1 if cw != (r < 0) else 1
     minor = r > 0
     sigma = -sign if minor else sign
-    # twice the centre, enclosed: 2 c = (s + e) + sign * n * sqrt(Q) / l2
-    ka, kb = -sign * dy, sign * dx
-    ca_lo = sa + ea + ((ka * (s_lo if ka >= 0 else s_hi)) // l2)
-    ca_hi = sa + ea + _ceil_div(ka * (s_hi if ka >= 0 else s_lo), l2)
-    cb_lo = sb + eb + ((kb * (s_lo if kb >= 0 else s_hi)) // l2)
-    cb_hi = sb + eb + _ceil_div(kb * (s_hi if kb >= 0 else s_lo), l2)
     lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
     lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
     two = 2 * sigma * rr
-    # v = +a, -a, +b, -b: v . n = -dy, dy, dx, -dx
+    # twice the centre, enclosed where an extreme is on the arc: 2 c = (s + e) + sign * n * sqrt(Q) / l2, with
+    # n = (-dy, dx); and v . n = -dy, dy, dx, -dx for v = +a, -a, +b, -b
     a = -two * dy
-    if (a >= 0 and a * a >= q) if minor else (a >= 0 or a * a <= q):
-        hi_a = max(hi_a, _ceil_div(ca_hi, 2) + rr)
-    if (-a >= 0 and a * a >= q) if minor else (-a >= 0 or a * a <= q):
-        lo_a = min(lo_a, ca_lo // 2 - rr)
+    up, down = ((a >= 0 and a * a >= q), (a <= 0 and a * a >= q)) if minor else \
+        ((a >= 0 or a * a <= q), (a <= 0 or a * a <= q))
+    if up or down:
+        k = -sign * dy
+        if up:  # c_a + |r|, c_a rounded up: ceil((sa + ea + k sqrt(Q) / l2) / 2)
+            hi_a = max(hi_a, -((-(sa + ea) - (-((-k * (s_hi if k >= 0 else s_lo)) // l2))) // 2) + rr)
+        if down:  # c_a - |r|, c_a rounded down
+            lo_a = min(lo_a, (sa + ea + (k * (s_lo if k >= 0 else s_hi)) // l2) // 2 - rr)
     a = two * dx
-    if (a >= 0 and a * a >= q) if minor else (a >= 0 or a * a <= q):
-        hi_b = max(hi_b, _ceil_div(cb_hi, 2) + rr)
-    if (-a >= 0 and a * a >= q) if minor else (-a >= 0 or a * a <= q):
-        lo_b = min(lo_b, cb_lo // 2 - rr)
+    up, down = ((a >= 0 and a * a >= q), (a <= 0 and a * a >= q)) if minor else \
+        ((a >= 0 or a * a <= q), (a <= 0 or a * a <= q))
+    if up or down:
+        k = sign * dx
+        if up:
+            hi_b = max(hi_b, -((-(sb + eb) - (-((-k * (s_hi if k >= 0 else s_lo)) // l2))) // 2) + rr)
+        if down:
+            lo_b = min(lo_b, (sb + eb + (k * (s_lo if k >= 0 else s_hi)) // l2) // 2 - rr)
     return lo_a, hi_a, lo_b, hi_b
 
 
