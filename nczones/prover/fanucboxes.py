@@ -212,4 +212,4 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
     return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(),
                   timings=(("prove_s", seconds),), stats=stats, margin=margin, engine="auto",
-                  extra={"counts": counts, "splits": ()}, profile=profile, notes=notes)
+                  extra={"counts": counts, "splits": ()}, profile=profile, notes=notes, file=run.file)

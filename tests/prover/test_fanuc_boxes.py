@@ -1,7 +1,8 @@
 """The numpy-free box route of short Fanuc programs (nczones/prover/fanucboxes.py, issue 36) against today's path.
 
 Relation (both sides computed by nczones): ``verify`` with the route (``fanucboxes.ROUTE``; the lane's runs as
-their boxes, ``BoxRows``, or as rows, ``ROWS_AS_LISTS``) and without it give the same verdict, violations, reasons, notes and motion count; when the route answers (its ``fanuc_boxes`` count is
+their boxes, ``BoxRows``, or as rows, ``ROWS_AS_LISTS``) and without it give the same verdict, violations, reasons, notes, motion count and
+program name (``Result.file``: the route's reports had none, fanucarcs36); when the route answers (its ``fanuc_boxes`` count is
 in the stats) the answer is ``safe``, or ``unknown`` for a code not modelled that ended the motion (a loop past
 its bound: every motion read was proved), as today's path says.  The route may decline where today's path
 proves ``safe`` (its boxes are coarser), never the other way round.
@@ -90,7 +91,7 @@ def _verified(text: str, machine, route: bool, lists: bool = False) -> tuple:
             return ("error", tuple((d.code, d.message, str(d.span)) for d in e.diagnostics)), False
     stats = dict(r.stats)
     return ((r.verdict.label, tuple(r.violations), tuple(r.reasons), r.truncated, tuple(r.notes),
-             stats["segments"]), "fanuc_boxes" in stats)
+             stats["segments"], r.file), "fanuc_boxes" in stats)
 
 
 def _agree(text: str, machine) -> tuple[str, bool]:
