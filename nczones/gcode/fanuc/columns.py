@@ -332,10 +332,10 @@ class RowSink:
 
 
 class BoxRows:
-    """A run of straight moves the plain lane hands over as its box only (``BoxSink``, the numpy-free route of
-    :mod:`nczones.prover.fanucboxes`): per axis the least and greatest coordinate of the run's start and every
-    row's end, at :data:`SCALE` places (checked as :class:`Rows` checks them), the scaled tool lengths the rows
-    carried and their count.  No segment can be built from it: a consumer that needs segments uses :class:`Rows`.
+    """A run of straight moves (and arcs: :meth:`add_arc`) the plain lane hands over as its box only (``BoxSink``,
+    the numpy-free route of :mod:`nczones.prover.fanucboxes`): per axis the least and greatest coordinate of the
+    run's start and every row's end (an arc's row: its sound box), at :data:`SCALE` places (checked as
+    :class:`Rows` checks them), the scaled tool lengths the rows carried and their count.  No segment can be built from it: a consumer that needs segments uses :class:`Rows`.
     A move that fails the check (False) may have widened the box by its own end's coordinates, positions the
     program commands (its segment follows, with the same end)."""
 
