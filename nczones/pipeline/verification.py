@@ -645,10 +645,11 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     seen: set[int] = set()
     interpretations = 0
     fast = _line_count(source.text) >= FAST_PATH_MIN_LINES
+    boxes = not fast or (options.effective_dialect(machine) == "fanuc" and _fanuc_boxes_first(source.text))
     while cases:
         box = cases.pop(0)
         case_machine, case_ranges = centred(machine, box) if box else (machine, box)
-        run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile)
+        run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile) if boxes else (None, None)
         if run is None or result is None:  # the short Fanuc route declined (or does not apply): the full path
             run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
             result = _verify_run(run, case_machine, replace(options, params=case_ranges), progress, profile)

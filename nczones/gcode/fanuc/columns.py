@@ -394,35 +394,12 @@ class BoxRows:
         if span.file != self.file:
             return False
         start = self.prev_end
-        got = []
-        mult = _MULT
-        x: Any  # a Fraction, read through its slots
-        for x in (start[ia], start[ib], end[ia], end[ib], r) if r is not None else \
-                (start[ia], start[ib], end[ia], end[ib], ij[0], ij[1]):
-            d = x._denominator
-            m = mult.get(d, 0)
-            if m == 0:
-                m = _mult(d)
-            if m is None:
-                return False
-            v = x._numerator * m
-            if not _LOW < v < _LIMIT:
-                return False
-            got.append(v)
-        others: list[tuple[int, int]] = []  # the other axes the arc moves (a helix): their ends
-        for _k, i in axis_at:
-            if i != ia and i != ib:
-                x = end[i]
-                d = x._denominator
-                m = mult.get(d, 0)
-                if m == 0:
-                    m = _mult(d)
-                if m is None:
-                    return False
-                v = x._numerator * m
-                if not _LOW < v < _LIMIT:
-                    return False
-                others.append((i, v))
+        got = _scaled((start[ia], start[ib], end[ia], end[ib], r) if r is not None else
+                      (start[ia], start[ib], end[ia], end[ib], ij[0], ij[1]))
+        helix = [i for _k, i in axis_at if i != ia and i != ib]  # the other axes the arc moves: their ends
+        ends = _scaled(tuple(end[i] for i in helix)) if helix else []
+        if got is None or ends is None:
+            return False
         sa, sb = got[0], got[1]
         if r is not None:
             box = r_arc_box(sa, sb, got[2], got[3], got[4], cw)
@@ -437,7 +414,7 @@ class BoxRows:
             self.tl = tlo
             self.tls.add(t[0])
         lo, hi = self.lo, self.hi
-        for i, v in others:
+        for i, v in zip(helix, ends):
             if v < lo[i]:
                 lo[i] = v
             elif v > hi[i]:

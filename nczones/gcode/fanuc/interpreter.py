@@ -326,10 +326,9 @@ class FanucInterpreter(Interpreter):
         ``_lean_move`` do for such a block, step for step (``tests/gcode/fanuc/test_column_runs.py``,
         ``test_one_call_lane_gives_the_general_lanes_segments``, holds it to them)."""
         plan = self._plans.get(letters)
-        if plan is None and self.row_sink is not None and self.row_sink.arcs:
-            taken = self._arc_lane(letters, values, span, index)
-            if taken:
-                return taken
+        if plan is None and self.row_sink is not None and self.row_sink.arcs and \
+                (taken := self._arc_lane(letters, values, span, index)):
+            return taken
         if plan is None or plan[2] >= 0 or plan[4] >= 0 or self.ended or self.m73_saved or self.track \
                 or self.machine_at is not None or self.unsupported or self.prerotation_xy is not None \
                 or self.spline_state is not None or self.comp_on or self.comp_just_off or self.cycle is not None \
