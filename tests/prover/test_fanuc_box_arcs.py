@@ -20,6 +20,7 @@ so program X50. (machine 150), Y40. (machine 90) and Z-1. (machine -201) lie on 
 from __future__ import annotations
 
 import math
+import os
 import random
 from fractions import Fraction as F
 
@@ -173,8 +174,12 @@ def test_plain_arc_programs_decide_as_today(seed, plane, reach, gap, machine):
     _agree(_program(random.Random(seed), plane, 520, reach, gap), _MACHINES[machine])
 
 
+#: examples of the long agreement test (``-m long``); NCZONES_FANUC_BOX_ARC_EXAMPLES changes it
+LONG_EXAMPLES = int(os.environ.get("NCZONES_FANUC_BOX_ARC_EXAMPLES", "200"))
+
+
 @pytest.mark.long
-@settings(max_examples=200, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=LONG_EXAMPLES, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.integers(0, 2**32), st.sampled_from(sorted(_PLANES)), st.sampled_from([100, 1000, 5000]),
        st.sampled_from([0, 300, 1000, 3000]), st.sampled_from(sorted(_MACHINES)), st.sampled_from([520, 3000]))
 def test_plain_arc_programs_decide_as_today_long(seed, plane, reach, gap, machine, lines):

@@ -201,7 +201,7 @@ class FanucInterpreter(Interpreter):
         #: :meth:`lane`'s one-call form is this class's meaning: the mill's (a subclass, such as the lathe's, may
         #: change a step of it and takes the general lane)
         self.fused_lane = type(self) is FanucInterpreter
-        self._arc_plans: dict = {}  # letters of a block -> how the arc lane reads it (_arc_plan)
+        self._arc_plans: dict = {}  # letters of a block -> (plane, how the arc lane reads it there: _arc_plan)
         n = self.naxes
         for name in FANUC_OFFSETS:
             self.g5x[name] = list(machine.offset(name))
@@ -423,7 +423,7 @@ class FanucInterpreter(Interpreter):
                 plan = (axis_at, letters.find("G"), letters.find("F"), letters.find("R"), letters.find(la),
                         letters.find(lb), ia, ib)
         if len(self._arc_plans) < 4096:
-            self._arc_plans[(letters, plane)] = plan
+            self._arc_plans[letters] = (plane, plan)
         return plan
 
     def _arc_lane(self, letters: str, values: tuple, span: Any, index: int) -> int:
@@ -436,9 +436,8 @@ class FanucInterpreter(Interpreter):
         ``Interpreter.arc`` -> ``emit`` do, but that the arc's box replaces its segment
         (``tests/prover/test_fanuc_boxes.py`` holds the route's verdicts and reports to the full path's)."""
         plane = self.plane
-        plan = self._arc_plans.get((letters, plane), False)
-        if plan is False:
-            plan = self._arc_plan(letters, plane)
+        got = self._arc_plans.get(letters)  # (the plane it was made for, the plan)
+        plan = got[1] if got is not None and got[0] is plane else self._arc_plan(letters, plane)
         if plan is None or self.ended or self.m73_saved or self.track or self.machine_at is not None \
                 or self.unsupported or self.prerotation_xy is not None or self.spline_state is not None \
                 or self.comp_on or self.comp_just_off or self.cycle is not None or self._tlo_shift is not None \
