@@ -175,7 +175,7 @@ def test_plain_arc_programs_decide_as_today(seed, plane, reach, gap, machine):
 
 
 #: examples of the long agreement test (``-m long``); NCZONES_FANUC_BOX_ARC_EXAMPLES changes it
-LONG_EXAMPLES = int(os.environ.get("NCZONES_FANUC_BOX_ARC_EXAMPLES", "200"))
+LONG_EXAMPLES = int(os.environ.get("NCZONES_FANUC_BOX_ARC_EXAMPLES", "50"))
 
 
 @pytest.mark.long
