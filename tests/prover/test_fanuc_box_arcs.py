@@ -43,16 +43,16 @@ def _samples(seg: Segment) -> list[list[float]]:
     return [at(k / 2000) for k in range(2001)]
 
 
-def _check(box: tuple[int, int, int, int], seg: Segment) -> None:
+def _check(box: tuple[int, int, int, int], seg: Segment, units: int = 2) -> None:
     lo_a, hi_a, lo_b, hi_b = (v / UNIT for v in box)
     pts = _samples(seg)
     size = 1 + max(abs(v) for p in pts for v in p[:2])
     tol = 1e-9 * size
     for x, y in (p[:2] for p in pts):
         assert lo_a - tol <= x <= hi_a + tol and lo_b - tol <= y <= hi_b + tol
-    # no looser than today's box (ArcGeom.plane_bbox(sweep=True)) by more than 2 units of the scale
+    # no looser than today's box (ArcGeom.plane_bbox(sweep=True)) by more than ``units`` units of the scale
     (xl, xh), (yl, yh) = arc_geom(seg).plane_bbox(sweep=True)
-    two = F(2, UNIT)
+    two = F(units, UNIT)
     assert F(box[0], UNIT) >= xl - two and F(box[1], UNIT) <= xh + two
     assert F(box[2], UNIT) >= yl - two and F(box[3], UNIT) <= yh + two
     # and no tighter than the sampled arc's box (the extremes are on the arc: sampled finely, 2000 steps)
@@ -79,22 +79,27 @@ def test_the_r_arc_box_holds_the_arc(sa, sb, ea, eb, extra, cw, major):
 
 
 @settings(max_examples=150, deadline=None, database=None)
-@given(ints, ints, st.integers(-20000, 20000), st.integers(-20000, 20000), st.integers(0, 3), st.booleans())
-def test_the_centre_arc_box_holds_the_arc(sa, sb, i, j, quarters, cw):
+@given(ints, ints, st.integers(-20000, 20000), st.integers(-20000, 20000), st.integers(0, 3), st.booleans(),
+       st.sampled_from([(0, 0)] * 3 + [(1, 0), (0, -1), (2, 1), (-3, 2)]))
+def test_the_centre_arc_box_holds_the_arc(sa, sb, i, j, quarters, cw, off):
     """An I/J arc whose end is its start turned about the centre by ``quarters`` quarter turns (exactly on the
-    circle; 0: a whole circle)."""
+    circle; 0: a whole circle), or moved ``off`` units off it (a spiral: the tolerance 5 units accepts it)."""
     if i == 0 and j == 0:
         return
     ca, cb = sa + i, sb + j
     u = (-i, -j)
     for _ in range(quarters):
         u = (-u[1], u[0])
-    ea, eb = ca + u[0], cb + u[1]
-    box = centre_arc_box(sa, sb, ea, eb, ca, cb, cw)
+    ea, eb = ca + u[0] + off[0], cb + u[1] + off[1]
+    box = centre_arc_box(sa, sb, ea, eb, ca, cb, cw, 5)
+    r0, r1 = i * i + j * j, (ea - ca) ** 2 + (eb - cb) ** 2
+    cross, dot = i * (cb - eb) - j * (ca - ea), i * (ea - ca) + j * (eb - cb)
+    if r1 == 0 or (r0 != r1 and ((cross == 0 and dot < 0) or abs(math.sqrt(r0) - math.sqrt(r1)) > 5.000001)):
+        return  # on its start's ray (u = -(i, j), w = e - c) or off by more than the tolerance: left out
     assert box is not None
     seg = Segment(SegmentKind.ARC, (F(sa, UNIT), F(sb, UNIT), F(0)), (F(ea, UNIT), F(eb, UNIT), F(0)), AXES,
                   plane=Plane.XY, clockwise=cw, centre=(F(ca, UNIT), F(cb, UNIT)))
-    _check(box, seg)
+    _check(box, seg, 2 if r0 == r1 else 6)
 
 
 def test_the_boxes_leave_the_interpreter_s_cases_to_it():
@@ -106,7 +111,10 @@ def test_the_boxes_leave_the_interpreter_s_cases_to_it():
     big = 10**12
     assert r_arc_box(0, 0, 2 * big, 0, big + 1, True) is None  # h (1 - 1e-12)**-2 >= r
     assert r_arc_box(0, 0, 2 * big, 0, big + 10, True) is not None
-    assert centre_arc_box(0, 0, 10, 1, 5, 0, True) is None
+    assert centre_arc_box(0, 0, 10, 1, 5, 0, True) is None  # no tolerance given: a spiral is left out
+    assert centre_arc_box(0, 0, 10, 1, 5, 0, True, 1) is not None  # |sqrt 25 - sqrt 26| = 0.099 <= 1
+    assert centre_arc_box(0, 0, 12, 0, 5, 0, True, 1) is None  # |5 - 7| > 1: GC301 on the general path
+    assert centre_arc_box(10, 0, 11, 0, 5, 0, True, 10) is None  # the end on the start's ray: a spiral turn
 
 
 # --------------------------------------------------------------------------------------------------------------
@@ -146,6 +154,8 @@ def _program(rnd: random.Random, plane: str, lines: int, reach: int, gap: int) -
             for _q in range(rnd.randint(0, 3)):  # 0: a whole circle
                 u = (-u[1], u[0])
             ea, eb = pa + i + u[0], pb + j + u[1]
+            if rnd.random() < 0.4:  # off the circle by a unit (CAM rounding: a spiral within the tolerance)
+                ea += rnd.choice((-1, 1))
             words = f"{a}{_num(ea)} {b}{_num(eb)} {la}{_num(i)} {lb}{_num(j)}"
         else:
             ea = min(ahi, max(alo, pa + rnd.randint(-reach, reach)))

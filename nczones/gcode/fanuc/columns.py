@@ -385,9 +385,10 @@ class BoxRows:
         return True
 
     def add_arc(self, cw: bool, end: tuple, axis_at: tuple, ia: int, ib: int, r: Any, ij: Any, span: Any,
-                tlo: Any) -> bool:
+                tlo: Any, tol: Any = None) -> bool:
         """The arc from ``prev_end`` to ``end`` in the plane of axes ``ia``, ``ib`` (clockwise ``cw``), given by
-        its signed radius ``r`` or (``r`` None) its centre's offsets from the start ``ij``, into the box (True):
+        its signed radius ``r`` or (``r`` None) its centre's offsets from the start ``ij`` (``tol``: the radius
+        tolerance of :func:`centre_arc_box`, None for none), into the box (True):
         the box of its ends on every axis and, on the plane axes, its sound box (:func:`r_arc_box`,
         :func:`centre_arc_box`).  False, the run unchanged, when a number is not a decimal at the scale or too
         large, or the arc is not one those boxes take (then the block takes the interpreter's general path)."""
@@ -395,7 +396,7 @@ class BoxRows:
             return False
         start = self.prev_end
         got = _scaled((start[ia], start[ib], end[ia], end[ib], r) if r is not None else
-                      (start[ia], start[ib], end[ia], end[ib], ij[0], ij[1]))
+                      (start[ia], start[ib], end[ia], end[ib], ij[0], ij[1]) + ((tol,) if tol is not None else ()))
         helix = [i for _k, i in axis_at if i != ia and i != ib]  # the other axes the arc moves: their ends
         ends = _scaled(tuple(end[i] for i in helix)) if helix else []
         if got is None or ends is None:
@@ -404,7 +405,8 @@ class BoxRows:
         if r is not None:
             box = r_arc_box(sa, sb, got[2], got[3], got[4], cw)
         else:
-            box = centre_arc_box(sa, sb, got[2], got[3], sa + got[4], sb + got[5], cw)
+            box = centre_arc_box(sa, sb, got[2], got[3], sa + got[4], sb + got[5], cw,
+                                 got[6] if tol is not None else None)
         if box is None:
             return False
         if tlo is not self.tl:
@@ -526,13 +528,17 @@ def _in_sweep(u: tuple[int, int], w: tuple[int, int], v: tuple[int, int], ccw: b
     return v[0] * w[1] - v[1] * w[0] >= 0
 
 
-def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: bool
+def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: bool, tol: int | None = None
                    ) -> tuple[int, int, int, int] | None:
     """A box ``(lo_a, hi_a, lo_b, hi_b)`` holding the arc from ``(sa, sb)`` to ``(ea, eb)`` about the centre
-    ``(ca, cb)`` (integers at one scale), clockwise ``cw``: a whole turn when the ends are equal.  None unless
-    both ends are at the same distance from the centre, not 0 (a spiral, or an error: the general path's).
-    The box is the ends' and the circle's extremes ``c +- sqrt(r**2)`` (the root rounded up) in the axis
-    directions the sweep holds, decided exactly (``nczones.prover.geometry.in_sweep``, ``ArcGeom.plane_bbox``).
+    ``(ca, cb)`` (integers at one scale), clockwise ``cw``: a whole turn when the ends are equal.  The box is the
+    ends' and the circle's extremes ``c +- sqrt(r**2)`` (the root rounded up) in the axis directions the sweep
+    holds, decided exactly (``nczones.prover.geometry.in_sweep``, ``ArcGeom.plane_bbox``).  Ends at different
+    distances from the centre (the spiral the control moves) are taken when ``tol`` (the interpreter's radius
+    tolerance at the scale) accepts them as ``Interpreter.arc`` does (``sqrt_diff_exceeds``): then the larger
+    radius, and every side widened by twice the difference of the roots (rounded outward), as ``plane_bbox``.
+    None for a radius 0, a spiral without ``tol`` or past it (GC301), or one whose end lies on its start's ray (a
+    whole spiral turn: the per-motion proof's reason): the general path decides those.
 
     >>> centre_arc_box(10, 0, 0, 10, 0, 0, False)  # G3 a quarter from +a to +b
     (0, 10, 0, 10)
@@ -542,10 +548,18 @@ def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: boo
     u = (sa - ca, sb - cb)
     w = (ea - ca, eb - cb)
     r0 = u[0] * u[0] + u[1] * u[1]
-    if r0 == 0 or r0 != w[0] * w[0] + w[1] * w[1]:
+    r1 = w[0] * w[0] + w[1] * w[1]
+    if r0 == 0 or r1 == 0:
         return None
-    s = isqrt(r0)
-    rr = s if s * s == r0 else s + 1
+    if r0 != r1:
+        if tol is None:
+            return None
+        lhs = r0 + r1 - tol * tol  # sqrt_diff_exceeds: |sqrt r0 - sqrt r1| > tol
+        if (lhs > 0 and lhs * lhs > 4 * r0 * r1) or (u[0] * w[1] - u[1] * w[0] == 0 and u[0] * w[0] + u[1] * w[1] > 0):
+            return None
+    big = r0 if r0 >= r1 else r1
+    s = isqrt(big)
+    rr = s if s * s == big else s + 1
     full = u == w
     lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
     lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
@@ -558,6 +572,9 @@ def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: boo
         hi_b = max(hi_b, cb + rr)
     if full or _in_sweep(u, w, (0, -1), ccw):
         lo_b = min(lo_b, cb - rr)
+    if r0 != r1:  # a spiral: within (r_hi - r_lo) of the circular arc of the start radius (ArcGeom.plane_bbox)
+        g = 2 * (rr - isqrt(r0 if r0 < r1 else r1))
+        return lo_a - g, hi_a + g, lo_b - g, hi_b + g
     return lo_a, hi_a, lo_b, hi_b
 
 

@@ -431,8 +431,8 @@ class FanucInterpreter(Interpreter):
         written into the run's box (``row_sink`` a ``columns.BoxSink``: the numpy-free route of
         ``nczones.prover.fanucboxes``): 1 or 2 as :meth:`lane` returns, or 0 with nothing changed (the block then
         takes the general path, which decides every case left out here: errors, a 0 degree arc, a half circle
-        within the R tolerance, an I/J arc whose ends are not at one distance from the centre, a first arc that
-        notes an assumed mode).  What it does for the block is what ``_execute_general`` -> ``_fanuc_motion`` ->
+        within the R tolerance, an I/J arc off its circle by more than the tolerance or ending on its start's ray,
+        a first arc that notes an assumed mode).  What it does for the block is what ``_execute_general`` -> ``_fanuc_motion`` ->
         ``Interpreter.arc`` -> ``emit`` do, but that the arc's box replaces its segment
         (``tests/prover/test_fanuc_boxes.py`` holds the route's verdicts and reports to the full path's)."""
         plane = self.plane
@@ -442,7 +442,7 @@ class FanucInterpreter(Interpreter):
                 or self.unsupported or self.prerotation_xy is not None or self.spline_state is not None \
                 or self.comp_on or self.comp_just_off or self.cycle is not None or self._tlo_shift is not None \
                 or self.after_home or self.prog is not None or self._tlo_untaken or self.inch or not self.absolute \
-                or self.feed_mode != 94 or not self.fused_lane or self._first_after_transform \
+                or self.feed_mode != 94 or not self.fused_lane or self._first_after_transform or self.arc_absolute \
                 or (self.unset and not self.unset.isdisjoint(_ARC_ASSUMED)):
             return 0
         axis_at, gk, fk, rk, ka, kb, ia, ib = plan
@@ -477,7 +477,8 @@ class FanucInterpreter(Interpreter):
             if rows is None:
                 return 0
         ij = (values[ka] if ka >= 0 else _ZERO, values[kb] if kb >= 0 else _ZERO) if rk < 0 else None
-        if not rows.add_arc(motion == 20, end, axis_at, ia, ib, values[rk] if rk >= 0 else None, ij, span, self.tlo):
+        if not rows.add_arc(motion == 20, end, axis_at, ia, ib, values[rk] if rk >= 0 else None, ij, span, self.tlo,
+                            self.arc_tolerance if self.arc_rule == "fixed" else None):
             return 0
         if fresh:
             emitted.append(rows)
