@@ -512,20 +512,25 @@ def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int
     return lo_a, hi_a, lo_b, hi_b
 
 
-def _ccw_half(ux: int, uy: int, vx: int, vy: int) -> int:
-    """0 when the counter-clockwise angle from u to v is in [0, pi), else 1 (``geometry._half``)."""
-    c = ux * vy - uy * vx
-    return 0 if c > 0 or (c == 0 and ux * vx + uy * vy > 0) else 1
-
-
-def _in_sweep(u: tuple[int, int], w: tuple[int, int], v: tuple[int, int], ccw: bool) -> bool:
-    """``nczones.prover.geometry.in_sweep`` (not a whole turn) on integer vectors."""
+def _axis_sweeps(u: tuple[int, int], w: tuple[int, int], ccw: bool) -> tuple[bool, bool, bool, bool]:
+    """Whether the directions +a, -a, +b, -b lie in the sweep from ``u`` to ``w`` (not a whole turn):
+    ``nczones.prover.geometry.in_sweep`` on integer vectors, its cross and dot products with the axis directions
+    written out (``_half(u, v)``: 0 when the counter-clockwise angle from u to v is in [0, pi))."""
     if not ccw:
         u, w = w, u
-    hv, hw = _ccw_half(u[0], u[1], v[0], v[1]), _ccw_half(u[0], u[1], w[0], w[1])
-    if hv != hw:
-        return hv < hw
-    return v[0] * w[1] - v[1] * w[0] >= 0
+    ux, uy = u
+    wx, wy = w
+    c = ux * wy - uy * wx
+    hw = 0 if c > 0 or (c == 0 and ux * wx + uy * wy > 0) else 1
+    h = 0 if uy < 0 or (uy == 0 and ux > 0) else 1  # v = +a: cross(u, v) = -uy, dot = ux; cross(v, w) = wy
+    pa = h < hw if h != hw else wy >= 0
+    h = 0 if uy > 0 or (uy == 0 and ux < 0) else 1  # v = -a: uy, -ux; -wy
+    na = h < hw if h != hw else wy <= 0
+    h = 0 if ux > 0 or (ux == 0 and uy > 0) else 1  # v = +b: ux, uy; -wx
+    pb = h < hw if h != hw else wx <= 0
+    h = 0 if ux < 0 or (ux == 0 and uy < 0) else 1  # v = -b: -ux, -uy; wx
+    nb = h < hw if h != hw else wx >= 0
+    return pa, na, pb, nb
 
 
 def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: bool, tol: int | None = None
@@ -560,17 +565,16 @@ def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: boo
     big = r0 if r0 >= r1 else r1
     s = isqrt(big)
     rr = s if s * s == big else s + 1
-    full = u == w
     lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
     lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
-    ccw = not cw
-    if full or _in_sweep(u, w, (1, 0), ccw):
+    pa, na, pb, nb = (True, True, True, True) if u == w else _axis_sweeps(u, w, not cw)  # equal ends: a whole turn
+    if pa:
         hi_a = max(hi_a, ca + rr)
-    if full or _in_sweep(u, w, (-1, 0), ccw):
+    if na:
         lo_a = min(lo_a, ca - rr)
-    if full or _in_sweep(u, w, (0, 1), ccw):
+    if pb:
         hi_b = max(hi_b, cb + rr)
-    if full or _in_sweep(u, w, (0, -1), ccw):
+    if nb:
         lo_b = min(lo_b, cb - rr)
     if r0 != r1:  # a spiral: within (r_hi - r_lo) of the circular arc of the start radius (ArcGeom.plane_bbox)
         g = 2 * (rr - isqrt(r0 if r0 < r1 else r1))
