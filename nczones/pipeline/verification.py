@@ -277,16 +277,51 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
                    machine_sha256=machine.sha256, settings=settings, file=source.name)
 
 
+#: Plain Fanuc programs (no ``#``, no M98/G65/G66 call in the text) of :data:`FAST_PATH_MIN_LINES` lines up to this
+#: many try the numpy-free box route (:mod:`nczones.prover.fanucboxes`; its lane writes straight moves and arcs into
+#: a run's box) before the vectorized fast path: the crossover of the route (no numpy to load; about 10 us a
+#: straight line, 14 an R arc) and the fast path (numpy's import and set-up, then about 1-7 us a line), measured on
+#: R-arc and G1 programs (specs/performance.md, "Fanuc plain programs on the box route").
+FANUC_BOX_LINES = 4000
+
+
+@functools.cache
+def _fanuc_call() -> Any:
+    """A Fanuc subprogram or macro call (M98, G65, G66): its loops may run far more lines than the text holds."""
+    import re
+
+    return re.compile(r"[mM][ \t]*0*98(?![\d.])|[gG][ \t]*0*6[56](?![\d])")
+
+
+def _fanuc_boxes_first(text: str | FileText) -> bool:
+    r"""Whether a Fanuc program tries the box route first: fewer than :data:`FAST_PATH_MIN_LINES` lines (any
+    program), or a plain one of up to :data:`FANUC_BOX_LINES`.  Soundness does not rest on this test: the route
+    proves or declines (then today's path decides as if it had not run).
+
+    >>> _fanuc_boxes_first("G1 X1. F100.\n" * 600), _fanuc_boxes_first("M98 P10\n" + "G1 X1. F100.\n" * 600)
+    (True, False)
+    >>> _fanuc_boxes_first("G1 X1. F100.\n" * (FANUC_BOX_LINES + 1))
+    False
+    """
+    lines = _line_count(text)  # type: ignore[arg-type]  # FileText counts too
+    if lines < FAST_PATH_MIN_LINES:
+        return True
+    if lines > FANUC_BOX_LINES or len(text) > FANUC_BOX_LINES * 128 or "#" in text:
+        return False
+    pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
+    return not any(_fanuc_call().search(p) is not None for p in pieces)
+
+
 def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],
                  progress: Callable[..., object] | None, profile: RunProfile) -> tuple[Any, Result | None]:
-    """One case of a short Fanuc program proved by the box of its motion without numpy
+    """One case of a short Fanuc program (:func:`_fanuc_boxes_first`) proved by the box of its motion without numpy
     (:mod:`nczones.prover.fanucboxes`): (its interpretation, its result), or (None, None) when that route does not
     apply or declines (the case is then interpreted again and proved by the full path, as if it had not run)."""
     # read at each call (tests switch them): the module's flags and its proof
     from ..prover.fanucboxes import ROWS_AS_LISTS, boxes_apply, prove_boxes
 
     if (options.engine != "auto" or options.params or not boxes_apply(machine)
-            or _line_count(source.text) >= FAST_PATH_MIN_LINES or options.effective_dialect(machine) != "fanuc"):
+            or not _fanuc_boxes_first(source.text) or options.effective_dialect(machine) != "fanuc"):
         return None, None
     from ..gcode.fanuc.columns import MAX_ROWS, BoxSink, RowSink
 
@@ -610,10 +645,11 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     seen: set[int] = set()
     interpretations = 0
     fast = _line_count(source.text) >= FAST_PATH_MIN_LINES
+    boxes = not fast or (options.effective_dialect(machine) == "fanuc" and _fanuc_boxes_first(source.text))
     while cases:
         box = cases.pop(0)
         case_machine, case_ranges = centred(machine, box) if box else (machine, box)
-        run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile) if not fast else (None, None)
+        run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile) if boxes else (None, None)
         if run is None or result is None:  # the short Fanuc route declined (or does not apply): the full path
             run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
             result = _verify_run(run, case_machine, replace(options, params=case_ranges), progress, profile)

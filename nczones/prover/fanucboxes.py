@@ -1,7 +1,8 @@
 """``safe`` for a Fanuc program without numpy: the box of every motion, proved exactly (issue 36).
 
 A Fanuc program that needs the language layer (Macro B loops, G65/M98 calls) and is short as text is read by
-the full interpreter alone (``pipeline.verification.FAST_PATH_MIN_LINES``); for today's path its plain lane writes
+the full interpreter alone (``pipeline.verification.FAST_PATH_MIN_LINES``), and so, on this route, is a plain one
+(no ``#``, no call) of up to ``pipeline.verification.FANUC_BOX_LINES`` lines; for today's path its plain lane writes
 runs of straight moves as rows (:class:`nczones.gcode.fanuc.columns.Rows`: Python lists of exact integers,
 coordinates times ``10**SCALE``), which become numpy column chunks; loading numpy alone costs more than rs274
 takes for a 10,000-line run.  :func:`prove_boxes` instead follows the interpretation's motion with no numpy: the
@@ -19,6 +20,17 @@ Why a fitting box proves the program ``safe`` (the same model as the full path, 
   may be irrational, its ends and the extremes of the circle (outward rational bounds of the centre and radius)
   in every axis direction its sweep may reach for a centre in the enclosure) and the box of its ends on the
   other axes;
+* an arc the lane writes into a run's box (``FanucInterpreter._arc_lane``, ``BoxRows.add_arc``: a G2/G3 block
+  with R, or I/J/K whose ends are at one distance from the centre, in the state the straight lane takes; issue
+  36, for plain programs of 512 lines and more) is boxed the same way in scaled integers:
+  ``columns.r_arc_box`` decides exactly, with no square root, which of the circle's four axis extremes lie on
+  the arc (the chord's line cuts the circle into the minor and the major arc, the centre being on the major
+  one's side: an extreme is on the arc when it lies on the arc's side of that line, a sign of
+  ``A - sqrt(Q)`` or ``A + sqrt(Q)`` with integers ``A``, ``Q``) and encloses the irrational centre outward by
+  integer square roots; ``columns.centre_arc_box`` takes the exact centre and the radius's root rounded up.
+  Every bound is outward (at most 2 units of ``10**-9`` mm beyond ``ArcGeom.plane_bbox``'s), and every arc
+  left out (equal ends, a chord of ``2|R|`` within the interpreter's tolerance, a spiral, an error, a mode noted
+  as assumed) takes the general path and comes here as a segment;
 * the control may leave the programmed path in cutting mode (acc/dec after interpolation rounds corners): the
   path then stays in the convex hull of the run of motions between exact stops (``specs/path-modes.md`` §3).
   A box is convex: when it holds every motion it holds the hull of every run, whatever the exact stops
@@ -212,4 +224,4 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
     return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(),
                   timings=(("prove_s", seconds),), stats=stats, margin=margin, engine="auto",
-                  extra={"counts": counts, "splits": ()}, profile=profile, notes=notes)
+                  extra={"counts": counts, "splits": ()}, profile=profile, notes=notes, file=run.file)

@@ -1,7 +1,8 @@
 """The numpy-free box route of short Fanuc programs (nczones/prover/fanucboxes.py, issue 36) against today's path.
 
 Relation (both sides computed by nczones): ``verify`` with the route (``fanucboxes.ROUTE``; the lane's runs as
-their boxes, ``BoxRows``, or as rows, ``ROWS_AS_LISTS``) and without it give the same verdict, violations, reasons, notes and motion count; when the route answers (its ``fanuc_boxes`` count is
+their boxes, ``BoxRows``, or as rows, ``ROWS_AS_LISTS``) and without it give the same verdict, violations, reasons, notes, motion count and
+program name (``Result.file``: the route's reports had none, fanucarcs36); when the route answers (its ``fanuc_boxes`` count is
 in the stats) the answer is ``safe``, or ``unknown`` for a code not modelled that ended the motion (a loop past
 its bound: every motion read was proved), as today's path says.  The route may decline where today's path
 proves ``safe`` (its boxes are coarser), never the other way round.
@@ -90,7 +91,7 @@ def _verified(text: str, machine, route: bool, lists: bool = False) -> tuple:
             return ("error", tuple((d.code, d.message, str(d.span)) for d in e.diagnostics)), False
     stats = dict(r.stats)
     return ((r.verdict.label, tuple(r.violations), tuple(r.reasons), r.truncated, tuple(r.notes),
-             stats["segments"]), "fanuc_boxes" in stats)
+             stats["segments"], r.file), "fanuc_boxes" in stats)
 
 
 def _agree(text: str, machine) -> tuple[str, bool]:
@@ -184,8 +185,19 @@ def test_exact_stops_and_dwells_are_answered():
 
 
 def test_a_long_text_goes_today_s_path():
-    """A plain program of more than FAST_PATH_MIN_LINES lines is read by the vectorized path: not the route."""
-    text = "O1\nG90 G21 G54 G01 F500.\n" + "".join(f"X{k % 40}. Y{k % 30}.\n" for k in range(600)) + "M30\n"
+    """A program of more than FAST_PATH_MIN_LINES lines is read by the vectorized path, not the route, unless it is
+    plain (no ``#``, no call) and of at most FANUC_BOX_LINES lines (pipeline.verification._fanuc_boxes_first)."""
+    from nczones.pipeline.verification import FANUC_BOX_LINES, _fanuc_boxes_first
+
+    def moves(n: int) -> str:
+        return "".join(f"X{k % 40}. Y{k % 30}.\n" for k in range(n))
+
+    text = "O1\nG90 G21 G54 G01 F500.\n" + moves(600) + "M30\n"
+    assert _agree(text, _MACHINES["box"]) == ("safe", True)
+    assert _agree(text.replace("O1\n", "O1\n#1 = 0\n"), _MACHINES["box"]) == ("safe", False)
+    assert not _fanuc_boxes_first(text.replace("O1\n", "O1\nM98 P2\n"))  # a call may run far more lines
+    assert not _fanuc_boxes_first(text.replace("O1\n", "O1\nG65 P2\n"))
+    text = "O1\nG90 G21 G54 G01 F500.\n" + moves(FANUC_BOX_LINES) + "M30\n"
     assert _agree(text, _MACHINES["box"]) == ("safe", False)
 
 

@@ -18,7 +18,7 @@ from hypothesis import HealthCheck, Phase, assume, given, settings
 from hypothesis import strategies as st
 
 from nczones.machine import parse_machine
-from nczones.prover import blend, verify_text
+from nczones.prover import blend, fanucboxes, verify_text
 from tests.machines import box_zone, machine_text
 
 
@@ -104,6 +104,9 @@ def programs(draw, stops: bool = False, dialect: str = "fanuc") -> str:
 
 def _run(program: str, m, columns: bool, monkeypatch) -> tuple:
     monkeypatch.setattr(blend, "HULL_COLUMNS", columns)
+    # the subject is today's column hull: a plain program of up to FANUC_BOX_LINES lines would otherwise be
+    # answered by the numpy-free box route first (tests/prover/test_fanuc_box_arcs.py holds that route to this path)
+    monkeypatch.setattr(fanucboxes, "ROUTE", False)
     r = verify_text(program, m)
     return r.verdict.label, [(x.code, x.message, x.span, x.block) for x in r.reasons]
 

@@ -371,6 +371,7 @@ def test_verify_r_arc_program_over_512_motions(hashes, fanuc, monkeypatch):
     assert safe.verdict is Verdict.SAFE  # (LinuxCNC: by the double pass, which follows R arcs since issue 36)
     with monkeypatch.context() as without_pass:  # the column screen proves them too
         without_pass.setattr("nczones.pipeline.verification.double_pass_result", lambda *args, **kwargs: None)
+        without_pass.setattr("nczones.prover.fanucboxes.ROUTE", False)  # (Fanuc: the numpy-free box route first)
         safe = verify_text(text.replace("R-10", "R10"), m)
     assert safe.verdict is Verdict.SAFE and safe.profile["motions_screened_vectorized"] == 601
     if hashes or fanuc:

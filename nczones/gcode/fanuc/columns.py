@@ -34,6 +34,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
+from math import isqrt
 from typing import Any
 
 from ...motion import MotionChunk, Segment, SegmentKind
@@ -317,6 +318,8 @@ class RowSink:
     __slots__ = ("axes", "file", "start", "max_rows")
     #: the class of the runs :meth:`open` makes (the lane continues a run of this class)
     rows: type = Rows
+    #: whether the lane writes arcs into the runs too (``FanucInterpreter._arc_lane``: :meth:`BoxRows.add_arc`)
+    arcs = False
 
     def __init__(self, axes: tuple[str, ...], file: str, start: int, max_rows: int) -> None:
         self.axes, self.file, self.start, self.max_rows = axes, file, start, max_rows
@@ -329,10 +332,10 @@ class RowSink:
 
 
 class BoxRows:
-    """A run of straight moves the plain lane hands over as its box only (``BoxSink``, the numpy-free route of
-    :mod:`nczones.prover.fanucboxes`): per axis the least and greatest coordinate of the run's start and every
-    row's end, at :data:`SCALE` places (checked as :class:`Rows` checks them), the scaled tool lengths the rows
-    carried and their count.  No segment can be built from it: a consumer that needs segments uses :class:`Rows`.
+    """A run of straight moves (and arcs: :meth:`add_arc`) the plain lane hands over as its box only (``BoxSink``,
+    the numpy-free route of :mod:`nczones.prover.fanucboxes`): per axis the least and greatest coordinate of the
+    run's start and every row's end (an arc's row: its sound box), at :data:`SCALE` places (checked as
+    :class:`Rows` checks them), the scaled tool lengths the rows carried and their count.  No segment can be built from it: a consumer that needs segments uses :class:`Rows`.
     A move that fails the check (False) may have widened the box by its own end's coordinates, positions the
     program commands (its segment follows, with the same end)."""
 
@@ -381,6 +384,58 @@ class BoxRows:
             self.full = True
         return True
 
+    def add_arc(self, cw: bool, end: tuple, axis_at: tuple, ia: int, ib: int, r: Any, ij: Any, span: Any,
+                tlo: Any, tol: Any = None) -> bool:
+        """The arc from ``prev_end`` to ``end`` in the plane of axes ``ia``, ``ib`` (clockwise ``cw``), given by
+        its signed radius ``r`` or (``r`` None) its centre's offsets from the start ``ij`` (``tol``: the radius
+        tolerance of :func:`centre_arc_box`, None for none), into the box (True):
+        the box of its ends on every axis and, on the plane axes, its sound box (:func:`r_arc_box`,
+        :func:`centre_arc_box`).  False, the run unchanged, when a number is not a decimal at the scale or too
+        large, or the arc is not one those boxes take (then the block takes the interpreter's general path)."""
+        if span.file != self.file:
+            return False
+        start = self.prev_end
+        got = _scaled((start[ia], start[ib], end[ia], end[ib], r) if r is not None else
+                      (start[ia], start[ib], end[ia], end[ib], ij[0], ij[1]) + ((tol,) if tol is not None else ()))
+        helix = [i for _k, i in axis_at if i != ia and i != ib]  # the other axes the arc moves: their ends
+        ends = _scaled(tuple(end[i] for i in helix)) if helix else []
+        if got is None or ends is None:
+            return False
+        sa, sb = got[0], got[1]
+        if r is not None:
+            box = r_arc_box(sa, sb, got[2], got[3], got[4], cw)
+        else:
+            box = centre_arc_box(sa, sb, got[2], got[3], sa + got[4], sb + got[5], cw,
+                                 got[6] if tol is not None else None)
+        if box is None:
+            return False
+        if tlo is not self.tl:
+            t = _scaled((tlo,))
+            if t is None:
+                return False
+            self.tl = tlo
+            self.tls.add(t[0])
+        lo, hi = self.lo, self.hi
+        for i, v in zip(helix, ends):
+            if v < lo[i]:
+                lo[i] = v
+            elif v > hi[i]:
+                hi[i] = v
+        la, ha, lb, hb = box  # the ends' box and the arc's extremes
+        if la < lo[ia]:
+            lo[ia] = la
+        if ha > hi[ia]:
+            hi[ia] = ha
+        if lb < lo[ib]:
+            lo[ib] = lb
+        if hb > hi[ib]:
+            hi[ib] = hb
+        self.prev_end = end
+        self.count += 1
+        if self.count >= self.max_rows:
+            self.full = True
+        return True
+
     def __len__(self) -> int:
         return self.count
 
@@ -389,11 +444,150 @@ class BoxRows:
         return self.lo, self.hi, self.tls, self.count, SCALE
 
 
+#: An R arc whose half chord ``h`` has ``h * (1 - 1/_TINY_DEN)**-2 >= |R|`` is made a half circle about the chord's
+#: midpoint by the interpreter (``Interpreter.arc``, its ``_TINY``); :func:`r_arc_box` leaves those to it.
+_TINY_DEN = 10**12
+
+
+def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int, int, int, int] | None:
+    """A box ``(lo_a, hi_a, lo_b, hi_b)`` holding the R-format arc from ``(sa, sb)`` to ``(ea, eb)`` with signed
+    radius ``r`` (all integers at one scale), clockwise ``cw``, as ``nczones.prover.geometry.arc_geom`` models
+    it; None when the interpreter would not give such an arc (equal ends, ``r`` 0, a chord of ``2|r|`` or more
+    within its tolerance: the general path decides those).
+
+    The model: the centre is ``c = M + sign * k * n`` (``M`` the chord's midpoint, ``n = (-dy, dx)`` the chord
+    turned left, ``k = sqrt(r**2 / l**2 - 1/4)``, ``sign`` -1 when clockwise differs from ``r < 0``), and the arc
+    runs about it from the start to the end in its direction: the minor arc (at most half the circle) when
+    ``r > 0``, the major one when ``r < 0``.  The chord's line cuts the circle into these two arcs: the minor
+    one lies on the side away from the centre, the major one on the centre's side.  So the circle's extreme
+    point ``c + |r| v`` in an axis direction ``v`` is on the arc exactly when ``(c + |r| v - M) . b >= 0`` for
+    ``b = sigma * n`` the normal towards the arc's side (``sigma = -sign`` minor, ``sign`` major).  With
+    ``Q = l**2 (4 r**2 - l**2)`` (an integer; ``k l**2 = sqrt(Q) / 2``) and ``A = 2 sigma |r| (v . n)`` this is
+    ``A >= sqrt(Q)`` for the minor arc and ``A >= -sqrt(Q)`` for the major one: decided exactly on integers
+    (``A >= 0 and A*A >= Q``, ``A >= 0 or A*A <= Q``), no square root.  The box is the ends' and those extremes,
+    the centre enclosed by integer square roots rounded outward (``2 c_a = sa + ea - sign dy sqrt(Q) / l**2``):
+    every bound is outward, by at most one unit of the scale.
+
+    >>> r_arc_box(-10, 0, 10, 0, 10, True)  # a half circle would be c=(0,0): left to the interpreter
+    >>> r_arc_box(0, 0, 20, 0, 20, True)  # G2 from (0,0) to (20,0), R20: bulges up (+b) to 20 - sqrt(300)
+    (0, 20, 0, 3)
+    >>> r_arc_box(0, 0, 20, 0, -20, True)  # R-20: the major arc, round the centre (10, sqrt(300)) above
+    (-10, 30, 0, 38)
+    """
+    dx, dy = ea - sa, eb - sb
+    l2 = dx * dx + dy * dy
+    rr = -r if r < 0 else r
+    r2 = rr * rr
+    if l2 == 0 or rr == 0 or l2 * _TINY_DEN * _TINY_DEN >= 4 * r2 * (_TINY_DEN - 1) ** 2:
+        return None
+    q = l2 * (4 * r2 - l2)
+    s_lo = isqrt(q)
+    s_hi = s_lo if s_lo * s_lo == q else s_lo + 1
+    sign = -1 if cw != (r < 0) else 1
+    minor = r > 0
+    sigma = -sign if minor else sign
+    lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
+    lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
+    two = 2 * sigma * rr
+    # twice the centre, enclosed where an extreme is on the arc: 2 c = (s + e) + sign * n * sqrt(Q) / l2, with
+    # n = (-dy, dx); and v . n = -dy, dy, dx, -dx for v = +a, -a, +b, -b
+    a = -two * dy
+    up, down = ((a >= 0 and a * a >= q), (a <= 0 and a * a >= q)) if minor else \
+        ((a >= 0 or a * a <= q), (a <= 0 or a * a <= q))
+    if up or down:
+        k = -sign * dy
+        if up:  # c_a + |r|, c_a rounded up: ceil((sa + ea + k sqrt(Q) / l2) / 2)
+            hi_a = max(hi_a, -((-(sa + ea) - (-((-k * (s_hi if k >= 0 else s_lo)) // l2))) // 2) + rr)
+        if down:  # c_a - |r|, c_a rounded down
+            lo_a = min(lo_a, (sa + ea + (k * (s_lo if k >= 0 else s_hi)) // l2) // 2 - rr)
+    a = two * dx
+    up, down = ((a >= 0 and a * a >= q), (a <= 0 and a * a >= q)) if minor else \
+        ((a >= 0 or a * a <= q), (a <= 0 or a * a <= q))
+    if up or down:
+        k = sign * dx
+        if up:
+            hi_b = max(hi_b, -((-(sb + eb) - (-((-k * (s_hi if k >= 0 else s_lo)) // l2))) // 2) + rr)
+        if down:
+            lo_b = min(lo_b, (sb + eb + (k * (s_lo if k >= 0 else s_hi)) // l2) // 2 - rr)
+    return lo_a, hi_a, lo_b, hi_b
+
+
+def _axis_sweeps(u: tuple[int, int], w: tuple[int, int], ccw: bool) -> tuple[bool, bool, bool, bool]:
+    """Whether the directions +a, -a, +b, -b lie in the sweep from ``u`` to ``w`` (not a whole turn):
+    ``nczones.prover.geometry.in_sweep`` on integer vectors, its cross and dot products with the axis directions
+    written out (``_half(u, v)``: 0 when the counter-clockwise angle from u to v is in [0, pi))."""
+    if not ccw:
+        u, w = w, u
+    ux, uy = u
+    wx, wy = w
+    c = ux * wy - uy * wx
+    hw = 0 if c > 0 or (c == 0 and ux * wx + uy * wy > 0) else 1
+    h = 0 if uy < 0 or (uy == 0 and ux > 0) else 1  # v = +a: cross(u, v) = -uy, dot = ux; cross(v, w) = wy
+    pa = h < hw if h != hw else wy >= 0
+    h = 0 if uy > 0 or (uy == 0 and ux < 0) else 1  # v = -a: uy, -ux; -wy
+    na = h < hw if h != hw else wy <= 0
+    h = 0 if ux > 0 or (ux == 0 and uy > 0) else 1  # v = +b: ux, uy; -wx
+    pb = h < hw if h != hw else wx <= 0
+    h = 0 if ux < 0 or (ux == 0 and uy < 0) else 1  # v = -b: -ux, -uy; wx
+    nb = h < hw if h != hw else wx >= 0
+    return pa, na, pb, nb
+
+
+def centre_arc_box(sa: int, sb: int, ea: int, eb: int, ca: int, cb: int, cw: bool, tol: int | None = None
+                   ) -> tuple[int, int, int, int] | None:
+    """A box ``(lo_a, hi_a, lo_b, hi_b)`` holding the arc from ``(sa, sb)`` to ``(ea, eb)`` about the centre
+    ``(ca, cb)`` (integers at one scale), clockwise ``cw``: a whole turn when the ends are equal.  The box is the
+    ends' and the circle's extremes ``c +- sqrt(r**2)`` (the root rounded up) in the axis directions the sweep
+    holds, decided exactly (``nczones.prover.geometry.in_sweep``, ``ArcGeom.plane_bbox``).  Ends at different
+    distances from the centre (the spiral the control moves) are taken when ``tol`` (the interpreter's radius
+    tolerance at the scale) accepts them as ``Interpreter.arc`` does (``sqrt_diff_exceeds``): then the larger
+    radius, and every side widened by twice the difference of the roots (rounded outward), as ``plane_bbox``.
+    None for a radius 0, a spiral without ``tol`` or past it (GC301), or one whose end lies on its start's ray (a
+    whole spiral turn: the per-motion proof's reason): the general path decides those.
+
+    >>> centre_arc_box(10, 0, 0, 10, 0, 0, False)  # G3 a quarter from +a to +b
+    (0, 10, 0, 10)
+    >>> centre_arc_box(10, 0, 0, 10, 0, 0, True)  # G2: three quarters
+    (-10, 10, -10, 10)
+    """
+    u = (sa - ca, sb - cb)
+    w = (ea - ca, eb - cb)
+    r0 = u[0] * u[0] + u[1] * u[1]
+    r1 = w[0] * w[0] + w[1] * w[1]
+    if r0 == 0 or r1 == 0:
+        return None
+    if r0 != r1:
+        if tol is None:
+            return None
+        lhs = r0 + r1 - tol * tol  # sqrt_diff_exceeds: |sqrt r0 - sqrt r1| > tol
+        if (lhs > 0 and lhs * lhs > 4 * r0 * r1) or (u[0] * w[1] - u[1] * w[0] == 0 and u[0] * w[0] + u[1] * w[1] > 0):
+            return None
+    big = r0 if r0 >= r1 else r1
+    s = isqrt(big)
+    rr = s if s * s == big else s + 1
+    lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
+    lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
+    pa, na, pb, nb = (True, True, True, True) if u == w else _axis_sweeps(u, w, not cw)  # equal ends: a whole turn
+    if pa:
+        hi_a = max(hi_a, ca + rr)
+    if na:
+        lo_a = min(lo_a, ca - rr)
+    if pb:
+        hi_b = max(hi_b, cb + rr)
+    if nb:
+        lo_b = min(lo_b, cb - rr)
+    if r0 != r1:  # a spiral: within (r_hi - r_lo) of the circular arc of the start radius (ArcGeom.plane_bbox)
+        g = 2 * (rr - isqrt(r0 if r0 < r1 else r1))
+        return lo_a - g, hi_a + g, lo_b - g, hi_b + g
+    return lo_a, hi_a, lo_b, hi_b
+
+
 class BoxSink(RowSink):
     """A :class:`RowSink` whose runs are :class:`BoxRows`: the lane writes a run's box, not its rows."""
 
     __slots__ = ()
     rows = BoxRows
+    arcs = True
 
     def open(self, start: Any) -> Any:
         """A new run from the point ``start`` (None when it is not a decimal at the scale)."""

@@ -58,7 +58,11 @@ from .expr import FanucVariables
 if TYPE_CHECKING:  # (the programmable transforms are imported where a program uses one: start-up)
     from .transforms import Mirror, Polar, Rotation, Scaling
 
-_LINE, _RAPID = SegmentKind.LINE, SegmentKind.RAPID
+_LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC
+#: The modes an arc notes as assumed when no block set them (``Interpreter.arc``): the arc lane leaves those to it.
+_ARC_ASSUMED = frozenset(("units", "distance", "offset", "plane"))
+#: The centre offset letter of each plane axis (``Interpreter.arc``).
+_CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 
 #: A block's axis words (axis index, word) and its other words by letter.
 AxisWords: TypeAlias = "list[tuple[int, Word]]"
@@ -188,6 +192,7 @@ class FanucInterpreter(Interpreter):
         #: :meth:`lane`'s one-call form is this class's meaning: the mill's (a subclass, such as the lathe's, may
         #: change a step of it and takes the general lane)
         self.fused_lane = type(self) is FanucInterpreter
+        self._arc_plans: dict = {}  # letters of a block -> (plane, how the arc lane reads it there: _arc_plan)
         n = self.naxes
         offsets, zeros = machine.offsets, [_ZERO] * len(machine.axes)  # (machine.offset's zeros, built once)
         for name in FANUC_OFFSETS:
@@ -316,6 +321,9 @@ class FanucInterpreter(Interpreter):
         ``_lean_move`` do for such a block, step for step (``tests/gcode/fanuc/test_column_runs.py``,
         ``test_one_call_lane_gives_the_general_lanes_segments``, holds it to them)."""
         plan = self._plans.get(letters)
+        if plan is None and self.row_sink is not None and self.row_sink.arcs and \
+                (taken := self._arc_lane(letters, values, span, index)):
+            return taken
         if plan is None or plan[2] >= 0 or plan[4] >= 0 or self.ended or self.m73_saved or self.track \
                 or self.machine_at is not None or self.unsupported or self.prerotation_xy is not None \
                 or self.spline_state is not None or self.comp_on or self.comp_just_off or self.cycle is not None \
@@ -392,6 +400,96 @@ class FanucInterpreter(Interpreter):
         self.pos = end
         self.prerotation_xy_next = None
         return 2 if len(emitted) >= self.chunk_size else 1
+
+    def _arc_plan(self, letters: str, plane: Plane) -> tuple | None:
+        """How :meth:`_arc_lane` reads a block with these letters in this plane: ``((value index, axis index),
+        ...)``, the value indices of G, F, R and the plane's two centre offsets (-1: absent) and the plane's axis
+        indices; None unless every letter is an axis or one of G, F, R and those offsets, once, with R or an offset
+        (not both) and a word of a plane axis (else the general path: errors, a 0 degree arc, a whole circle)."""
+        plan = None
+        a_name, b_name, _n = PLANE_AXES[plane]
+        ia, ib = self.index.get(a_name), self.index.get(b_name)
+        la, lb = _CENTRE_LETTER[a_name], _CENTRE_LETTER[b_name]
+        if ia is not None and ib is not None and len(set(letters)) == len(letters) \
+                and all(c in self.index or c in "GFR" or c == la or c == lb for c in letters) \
+                and ("R" in letters) != (la in letters or lb in letters):
+            axis_at = tuple((k, self.index[c]) for k, c in enumerate(letters) if c in self.index)
+            if any(i == ia or i == ib for _k, i in axis_at):
+                plan = (axis_at, letters.find("G"), letters.find("F"), letters.find("R"), letters.find(la),
+                        letters.find(lb), ia, ib)
+        if len(self._arc_plans) < 4096:
+            self._arc_plans[letters] = (plane, plan)
+        return plan
+
+    def _arc_lane(self, letters: str, values: tuple, span: Any, index: int) -> int:
+        """A G2/G3 block (axis words, R or the plane's I/J/K, at most G2/G3 and F) in the state :meth:`lane` takes,
+        written into the run's box (``row_sink`` a ``columns.BoxSink``: the numpy-free route of
+        ``nczones.prover.fanucboxes``): 1 or 2 as :meth:`lane` returns, or 0 with nothing changed (the block then
+        takes the general path, which decides every case left out here: errors, a 0 degree arc, a half circle
+        within the R tolerance, an I/J arc off its circle by more than the tolerance or ending on its start's ray,
+        a first arc that notes an assumed mode).  What it does for the block is what ``_execute_general`` -> ``_fanuc_motion`` ->
+        ``Interpreter.arc`` -> ``emit`` do, but that the arc's box replaces its segment
+        (``tests/prover/test_fanuc_boxes.py`` holds the route's verdicts and reports to the full path's)."""
+        plane = self.plane
+        got = self._arc_plans.get(letters)  # (the plane it was made for, the plan)
+        plan = got[1] if got is not None and got[0] is plane else self._arc_plan(letters, plane)
+        if plan is None or self.ended or self.m73_saved or self.track or self.machine_at is not None \
+                or self.unsupported or self.prerotation_xy is not None or self.spline_state is not None \
+                or self.comp_on or self.comp_just_off or self.cycle is not None or self._tlo_shift is not None \
+                or self.after_home or self.prog is not None or self._tlo_untaken or self.inch or not self.absolute \
+                or self.feed_mode != 94 or not self.fused_lane or self._first_after_transform or self.arc_absolute \
+                or (self.unset and not self.unset.isdisjoint(_ARC_ASSUMED)):
+            return 0
+        axis_at, gk, fk, rk, ka, kb, ia, ib = plan
+        motion = self.motion
+        if gk >= 0:
+            v: Any = values[gk]  # a Fraction, read through its slots
+            if v._denominator != 1:
+                return 0
+            motion = v._numerator * 10
+        if motion != 20 and motion != 30:
+            return 0
+        feed: Any = self.feed
+        if fk >= 0:
+            feed = values[fk]
+            if feed._numerator < 0:
+                return 0
+        if feed._numerator == 0:
+            return 0  # GC305 (check_feed)
+        pos = self.pos
+        end: Any = list(pos)
+        off = self.off
+        for k, i in axis_at:
+            o: Any = off[i]
+            end[i] = qadd(values[k], o) if o._numerator else values[k]
+        end = tuple(end)
+        emitted = self.emitted
+        sink = self.row_sink
+        rows: Any = emitted[-1] if emitted else None
+        fresh = type(rows) is not sink.rows or rows.prev_end is not pos or rows.full
+        if fresh:
+            rows = sink.open(pos)
+            if rows is None:
+                return 0
+        ij = (values[ka] if ka >= 0 else _ZERO, values[kb] if kb >= 0 else _ZERO) if rk < 0 else None
+        if not rows.add_arc(motion == 20, end, axis_at, ia, ib, values[rk] if rk >= 0 else None, ij, span, self.tlo,
+                            self.arc_tolerance if self.arc_rule == "fixed" else None):
+            return 0
+        if fresh:
+            emitted.append(rows)
+        self.block_index = index
+        self.span = span
+        self.blocks += 1
+        if gk >= 0:
+            self.cycle_il = None
+            self.last_cycle = None
+            self.motion = motion
+        self.feed = feed
+        self.segment_count += 1
+        self.kind_counts[_ARC] += 1
+        self.pos = end
+        self.prerotation_xy_next = None
+        return 2 if rows.full or len(emitted) >= self.chunk_size else 1
 
     def _lean(self, g: int | None, m: int | None, f: Any, extra: int, s: Any = None) -> bool:
         if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None \
