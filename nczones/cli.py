@@ -15,10 +15,9 @@ This module only builds the parser and dispatches: what the commands share is in
 
 from __future__ import annotations
 
+import _signal  # signal's functions without the module's enums (about 1 ms of start-up, issue 36)
 import argparse
-import signal
 import sys
-import threading
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any, NoReturn
@@ -41,17 +40,24 @@ def _on_sigterm(signum: int, frame: Any) -> None:
 @contextmanager
 def sigterm_as_interrupt() -> Iterator[None]:
     """While a command runs, SIGTERM stops it the way Ctrl-C does (only in the main thread, and only when
-    SIGTERM has its default disposition: an embedding program's own handler is left alone)."""
+    SIGTERM has its default disposition: an embedding program's own handler is left alone).
+
+    ``_signal`` is :mod:`signal` without its enums (``getsignal`` gives the integer ``SIG_DFL``); its
+    ``signal`` refuses (ValueError) outside the main thread, which is how that is told without :mod:`threading`."""
     _terminated[0] = False
-    if threading.current_thread() is not threading.main_thread() \
-            or signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
+    current = _signal.getsignal(_signal.SIGTERM)
+    if not (isinstance(current, int) and current == _signal.SIG_DFL):
         yield
         return
-    previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    try:
+        previous = _signal.signal(_signal.SIGTERM, _on_sigterm)
+    except ValueError:  # not the main thread (of the main interpreter)
+        yield
+        return
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        _signal.signal(_signal.SIGTERM, previous)
 
 class _Formatter(argparse.HelpFormatter):
     """argparse's help formatter, as wide as ``shutil.get_terminal_size`` says (``$COLUMNS``, else the

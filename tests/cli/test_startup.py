@@ -60,7 +60,10 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "_hashlib", "ctypes", "shutil", "nczones.lathe_solids",
                           # issue 36 (startup36c): dataclasses imports inspect, ast, dis, tokenize (some 10 ms); the
                           # classes, field(), replace() and field names come from nczones.precompiled
-                          "dataclasses", "inspect", "ast", "dis", "tokenize")
+                          "dataclasses", "inspect", "ast", "dis", "tokenize",
+                          # issue 36 (startup36d): the signal module (its enums), threading and select: SIGTERM's
+                          # handler goes through _signal, the limits' watchdog starts with the first solver query
+                          "signal", "threading", "select")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -228,7 +231,7 @@ def test_a_small_fanuc_verify_loads_neither_dataclasses_nor_pathlib(tmp_path):
     program = tmp_path / "small.nc"
     program.write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n")
     machine = ROOT / "specs" / "machines" / "fanuc_mill.toml"
-    names = ("dataclasses", "inspect", "ast", "pathlib", "urllib.parse", "ipaddress", "numpy", "z3")
+    names = ("dataclasses", "inspect", "ast", "pathlib", "urllib.parse", "ipaddress", "numpy", "z3", "signal", "threading")
     code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
             f"assert main(['verify', {str(program)!r}, '--machine', {str(machine)!r}]) == 0\n"
             f"print(sorted(m for m in {names!r} if m in sys.modules))")
