@@ -158,14 +158,24 @@ def run() -> NoReturn:
     Before Python shuts down, every object is moved to the collector's permanent generation
     (:func:`gc.freeze`): the process is ending, so nothing needs collecting, while the collections of
     Python's finalization would traverse every object of numpy and of the run (about 15 ms of CPU after a
-    100,000-line verify).  Exit handlers and the flushing of the streams run as usual.
+    100,000-line verify).  Exit handlers and the flushing of the streams run as usual.  While it runs, the
+    collector's first threshold is :data:`YOUNG_OBJECTS`.
     """
-    sys.meta_path.insert(0, _BeforeNumpy())  # glibc keeps freed memory once numpy loads (_keep_freed_memory)
-    code = main()
     import gc
 
+    sys.meta_path.insert(0, _BeforeNumpy())  # glibc keeps freed memory once numpy loads (_keep_freed_memory)
+    gc.set_threshold(YOUNG_OBJECTS, *gc.get_threshold()[1:])
+    code = main()
     gc.freeze()
     sys.exit(code)
+
+
+#: The collector's first threshold for the ``nczones`` program (Python's default: 700).  A start imports
+#: modules that make some 20,000 objects, all of which live; at 700 each of the ~20 collections they set off
+#: traverses the young ones for nothing (2-3 ms of a small verify's CPU, issue 36).  At this threshold a small
+#: verify sets off none, and a long one collects every so many allocations of containers: the garbage a
+#: collection waits for stays bounded (a few MB).
+YOUNG_OBJECTS = 50_000
 
 
 class _BeforeNumpy:

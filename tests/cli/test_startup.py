@@ -238,3 +238,30 @@ def test_a_small_fanuc_verify_loads_neither_dataclasses_nor_pathlib(tmp_path):
     r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr
     assert r.stdout.splitlines()[-1] == "[]"
+
+
+def test_the_package_imports_its_public_names_at_their_first_use():
+    # issue 36 (startup36d): `import nczones` loads none of the modules behind its public names, so that
+    # `python -m nczones` sets the collector's threshold before they make their objects
+    behind = ("nczones.errors", "nczones.exact", "nczones.machine", "nczones.motion", "nczones.zones")
+    probe = (f"import sys, nczones\nbefore = sorted(m for m in {behind!r} if m in sys.modules)\n"
+             "from nczones import Machine, load_machine\nfrom nczones.machine import Machine as M, load_machine as L\n"
+             "assert (Machine, load_machine) == (M, L) and nczones.SegmentKind.LINE is not None\n"
+             "try:\n    nczones.no_such_name\nexcept AttributeError as e:\n    assert 'no_such_name' in str(e)\n"
+             "print(before)")
+    r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[]"
+
+
+def test_the_program_runs_with_the_collectors_threshold_raised(tmp_path):
+    # python -m nczones and the console script (cli.run): the first threshold is cli.YOUNG_OBJECTS while the
+    # command runs (a small verify then sets off no collection after its start), the others Python's
+    program = tmp_path / "small.ngc"
+    program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
+    seen = ("import atexit, gc, sys\natexit.register(lambda: print(gc.get_threshold(), file=sys.stderr))\n")
+    for start in ("import runpy\nrunpy.run_module('nczones', run_name='__main__')", "from nczones import cli\ncli.run()"):
+        code = f"{seen}sys.argv = ['nczones', 'verify', {str(program)!r}, '--machine', {MILL!r}]\n{start}"
+        r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+        assert r.returncode == 0, r.stderr
+        assert r.stderr.splitlines()[-1] == str((cli.YOUNG_OBJECTS, 10, 10))
