@@ -105,7 +105,9 @@ def build_parser(command: str | None = None, *, alone: bool = False) -> argparse
         formatter_class=_Formatter,
     )
     parser.add_argument("--version", action="version", version=f"nczones {__version__}")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    # prog: what argparse would format from the parser's usage, which has no positional yet: its name alone (given,
+    # argparse does not make a help formatter to find it, issue 36)
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND", prog=parser.prog)
     for name, spec in COMMANDS.items():
         if alone and name != command:
             continue

@@ -63,7 +63,10 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "dataclasses", "inspect", "ast", "dis", "tokenize",
                           # issue 36 (startup36d): the signal module (its enums), threading and select: SIGTERM's
                           # handler goes through _signal, the limits' watchdog starts with the first solver query
-                          "signal", "threading", "select")
+                          "signal", "threading", "select",
+                          # struct (the x87 functions' packing: with ctypes), heapq (a run profile's slowest
+                          # motions: once its list is full); each a C extension to load
+                          "struct", "heapq")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -82,10 +85,10 @@ def test_a_small_verify_loads_neither_numpy_nor_the_solver(tmp_path):
 
 def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_path):
     # the double pass (a LinuxCNC program with '#') asks whether the machine declares solids without
-    # importing nczones.solids; ctypes waits for the first SIN, COS or TAN
+    # importing nczones.solids; ctypes (and struct) wait for the first SIN, COS or TAN
     assert loaded_by_verify(tmp_path, ["G90 G21 F100", "#1 = 2.5", "G1 X[#1 * 2] Y[#1 + 1]", "M2"]) == set()
     loaded = loaded_by_verify(tmp_path, ["G90 G21 F100", "#1 = 30", "G1 X[10 * SIN[#1]] Y[10 * COS[#1]]", "M2"])
-    assert loaded == {"ctypes"}
+    assert loaded == {"ctypes", "struct"}
 
 
 def test_a_small_verify_loads_no_pathlib(tmp_path):
