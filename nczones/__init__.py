@@ -6,13 +6,12 @@ motion), :mod:`nczones.zones` and :mod:`nczones.machine`, :mod:`nczones.prover`
 :mod:`nczones.report`, and :mod:`nczones.cli`.
 
 The public names below are imported from their modules when first asked for (PEP 562, issue 36): ``import
-nczones`` alone loads none of them, so the ``nczones`` program can tune the process (the collector's
-threshold, :mod:`nczones.__main__`) before the modules that make most of a start's objects are imported.
+nczones`` alone loads none of them (nor :mod:`typing`), so the ``nczones`` program can tune the process (the
+collector's threshold, :mod:`nczones.__main__`) before the modules that make most of a start's objects are
+imported.  Only ``re``'s cache is seeded here (:func:`nczones.precompiled.seed_patterns`).
 """
 
 from __future__ import annotations
-
-from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
@@ -20,12 +19,17 @@ from .precompiled import seed_patterns  # noqa: E402
 
 seed_patterns()  # re.compile finds the patterns of a start-up compiled (issue 36: see nczones.precompiled)
 
+# not typing's (importing typing is 2 ms): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from .errors import GcodeError, InputError, InvalidArgument, MachineFileError, NczonesError
     from .exact import exact, format_decimal, parse_decimal
     from .machine import Machine, load_machine, parse_machine
     from .motion import Plane, Segment, SegmentKind
     from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, ZonePoint
+del TYPE_CHECKING
 
 #: Each public name → the module (under ``nczones``) that defines it.
 _MODULE_OF = {
@@ -66,9 +70,10 @@ def __getattr__(name: str) -> Any:
     module = _MODULE_OF.get(name)
     if module is None:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    import importlib
+    import sys
 
-    value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    __import__(f"{__name__}.{module}")
+    value = getattr(sys.modules[f"{__name__}.{module}"], name)
     globals()[name] = value
     return value
 

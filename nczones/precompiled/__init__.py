@@ -40,7 +40,12 @@ import itertools
 import os
 import sys
 import types
-from typing import TYPE_CHECKING, Any
+
+# not typing's: nczones/__init__ imports this module before the program sets the collector's threshold, and
+# typing is 2 ms of objects to import (issue 36); a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["dataclass", "field", "replace", "field_names", "make_function", "ENABLED", "RECORD_ENV", "RECORD_PATTERNS_ENV",
            "seed_patterns"]
