@@ -268,3 +268,16 @@ def test_the_program_runs_with_the_collectors_threshold_raised(tmp_path):
         r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
         assert r.returncode == 0, r.stderr
         assert r.stderr.splitlines()[-1] == str((cli.YOUNG_OBJECTS, 10, 10))
+
+
+def test_a_small_verify_with_a_text_report_loads_no_json(tmp_path):
+    # issue 36 (startup36d): json (with its decoder, scanner and C accelerator) only for a JSON report; the machine
+    # file's zone labels are quoted without it (tests/machine: the quoting is json's)
+    program = tmp_path / "small.ngc"
+    program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
+    for fmt, loaded in (("text", False), ("json", True)):
+        code = (f"import sys\nfrom nczones.cli import main\nassert main(['verify', {str(program)!r}, '--machine', "
+                f"{MILL!r}, '--format', {fmt!r}]) == 0\nprint('json' in sys.modules)")
+        r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+        assert r.returncode == 0, r.stderr
+        assert r.stdout.splitlines()[-1] == str(loaded), fmt
