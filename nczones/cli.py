@@ -166,7 +166,9 @@ def run() -> NoReturn:
     import gc
 
     sys.meta_path.insert(0, _BeforeNumpy())  # glibc keeps freed memory once numpy loads (_keep_freed_memory)
-    gc.set_threshold(YOUNG_OBJECTS, *gc.get_threshold()[1:])
+    first, second, third = gc.get_threshold()
+    if 0 < first < YOUNG_OBJECTS:  # raised, never lowered; 0 (collection off) stays 0
+        gc.set_threshold(YOUNG_OBJECTS, second, third)
     code = main()
     gc.freeze()
     sys.exit(code)
@@ -176,7 +178,8 @@ def run() -> NoReturn:
 #: modules that make some 20,000 objects, all of which live; at 700 each of the ~20 collections they set off
 #: traverses the young ones for nothing (2-3 ms of a small verify's CPU, issue 36).  At this threshold a small
 #: verify sets off none, and a long one collects every so many allocations of containers: the garbage a
-#: collection waits for stays bounded (a few MB).
+#: collection waits for stays bounded (a few MB).  Above ``verify``'s own (``commands.verify.GC_THRESHOLD``, which
+#: only raises it); :mod:`nczones.__main__` sets the same number before the command line's modules load.
 YOUNG_OBJECTS = 50_000
 
 
