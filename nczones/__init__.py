@@ -5,10 +5,11 @@ motion), :mod:`nczones.zones` and :mod:`nczones.machine`, :mod:`nczones.prover`
 (Z3), :mod:`nczones.controller` (the reference controller),
 :mod:`nczones.report`, and :mod:`nczones.cli`.
 
-The public names below are imported from their modules when first asked for (PEP 562, issue 36): ``import
-nczones`` alone loads none of them (nor :mod:`typing`), so the ``nczones`` program can tune the process (the
-collector's threshold, :mod:`nczones.__main__`) before the modules that make most of a start's objects are
-imported.  Only ``re``'s cache is seeded here (:func:`nczones.precompiled.seed_patterns`).
+The public names below, but :func:`exact` and its two neighbours, are imported from their modules when first
+asked for (PEP 562, issue 36): ``import nczones`` alone loads neither them nor :mod:`typing`, so the
+``nczones`` program can tune the process (the collector's threshold, :mod:`nczones.__main__`) before the
+modules that make most of a start's objects are imported.  ``re``'s cache is seeded here
+(:func:`nczones.precompiled.seed_patterns`).
 """
 
 from __future__ import annotations
@@ -19,13 +20,16 @@ from .precompiled import seed_patterns  # noqa: E402
 
 seed_patterns()  # re.compile finds the patterns of a start-up compiled (issue 36: see nczones.precompiled)
 
+# exact() is imported here, not at first use: it has the name of its subpackage, which an import of the subpackage
+# binds here (to the module) before any lookup of the name would reach __getattr__
+from .exact import exact, format_decimal, parse_decimal  # noqa: E402
+
 # not typing's (importing typing is 2 ms): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
     from .errors import GcodeError, InputError, InvalidArgument, MachineFileError, NczonesError
-    from .exact import exact, format_decimal, parse_decimal
     from .machine import Machine, load_machine, parse_machine
     from .motion import Plane, Segment, SegmentKind
     from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, ZonePoint
@@ -34,7 +38,6 @@ del TYPE_CHECKING
 #: Each public name → the module (under ``nczones``) that defines it.
 _MODULE_OF = {
     **dict.fromkeys(("GcodeError", "InputError", "InvalidArgument", "MachineFileError", "NczonesError"), "errors"),
-    **dict.fromkeys(("exact", "format_decimal", "parse_decimal"), "exact"),
     **dict.fromkeys(("Machine", "load_machine", "parse_machine"), "machine"),
     **dict.fromkeys(("Plane", "Segment", "SegmentKind"), "motion"),
     **dict.fromkeys(("AllowedSet", "BoxZone", "PolygonZone", "Region", "SteppedZone", "ZonePoint"), "zones"),

@@ -15,7 +15,7 @@ This module only builds the parser and dispatches: what the commands share is in
 
 from __future__ import annotations
 
-import _signal  # signal's functions without the module's enums (about 1 ms of start-up, issue 36)
+import _signal  # type: ignore[import-not-found]  # signal's functions, not the module's enums (issue 36)
 import argparse
 import sys
 from collections.abc import Iterator, Sequence

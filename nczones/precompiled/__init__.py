@@ -362,7 +362,7 @@ def _head(annotation: str) -> tuple[str | None, str] | None:
 
         _HEAD.append(re.compile(r"^(?:\s*(\w+)\s*\.)?\s*(\w+)"))
     match = _HEAD[0].match(annotation)
-    head = _HEADS[annotation] = match.groups() if match else None  # type: ignore[assignment]
+    head = _HEADS[annotation] = match.groups() if match else None
     return head
 
 
