@@ -253,6 +253,8 @@ def test_the_package_imports_its_public_names_at_their_first_use():
              # exact() has its subpackage's name: still the function once the subpackage is imported
              "import nczones.exact.decimals\nfrom nczones import exact\nfrom nczones.exact import exact as E\n"
              "assert exact is E and nczones.exact is E and callable(exact)\n"
+             # every name of __all__ is reachable (a new public name needs its row in nczones._MODULE_OF)
+             "assert all(getattr(nczones, n) is not None for n in nczones.__all__)\n"
              "try:\n    nczones.no_such_name\nexcept AttributeError as e:\n    assert 'no_such_name' in str(e)\n"
              "print(before)")
     r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=ROOT)
