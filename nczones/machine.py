@@ -16,7 +16,6 @@ from __future__ import annotations
 import decimal
 import enum
 import functools
-import json
 import os
 import re
 from collections.abc import Callable, Mapping
@@ -458,6 +457,17 @@ class _Reader:
         return any(d.severity is Severity.ERROR for d in self.diagnostics)
 
 
+#: ``json.dumps``'s escapes of a string (``json.encoder.ESCAPE_DCT``) as a ``str.translate`` table.
+_JSON_ESCAPES = {**{i: f"\\u{i:04x}" for i in range(0x20)}, ord("\\"): "\\\\", ord('"'): '\\"', ord("\b"): "\\b",
+                 ord("\f"): "\\f", ord("\n"): "\\n", ord("\r"): "\\r", ord("\t"): "\\t"}
+
+
+def _quoted(text: str) -> str:
+    """``json.dumps(text, ensure_ascii=False)`` without importing :mod:`json` (a zone's label, at every start;
+    a text report needs no json, issue 36)."""
+    return '"' + text.translate(_JSON_ESCAPES) + '"'
+
+
 def as_written(value: Any) -> str:
     """The value as the user wrote it, in TOML syntax (approximately: TOML loses formatting).
 
@@ -465,7 +475,7 @@ def as_written(value: Any) -> str:
     '["0", 1.50, 3, true, { X = "1" }]'
     """
     if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False)
+        return _quoted(value)
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, decimal.Decimal):
@@ -1409,7 +1419,7 @@ def _zones(rd: _Reader, raw: Any, axes: tuple[str, ...], tool_axis: str | None) 
             rd.report("ZN103", f"zone {index + 1}: expected a table, got {as_written(zt)}", None)
             continue
         name = zt.get("name")
-        label = f"zone {json.dumps(name, ensure_ascii=False)}" if isinstance(name, str) else f"zone {index + 1}"
+        label = f"zone {_quoted(name)}" if isinstance(name, str) else f"zone {index + 1}"
         if not isinstance(name, str) or not name.strip():
             rd.report("ZN102", f"{label}: missing name (every zone needs a name the reports can use)", rd.loc.header(header))
             name = f"zone {index + 1}"

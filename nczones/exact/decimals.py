@@ -18,9 +18,14 @@ from __future__ import annotations
 import decimal
 import re
 from fractions import Fraction
-from typing import Any
 
 from ..errors import InvalidArgument
+
+# not typing's: `import nczones` imports this module (its public exact()) before the program raises the
+# collector's threshold, and typing is 2 ms of objects (issue 36); a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = [
     "Fraction",

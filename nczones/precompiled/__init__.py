@@ -40,7 +40,12 @@ import itertools
 import os
 import sys
 import types
-from typing import TYPE_CHECKING, Any
+
+# not typing's: nczones/__init__ imports this module before the program sets the collector's threshold, and
+# typing is 2 ms of objects to import (issue 36); a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["dataclass", "field", "replace", "field_names", "make_function", "ENABLED", "RECORD_ENV", "RECORD_PATTERNS_ENV",
            "seed_patterns"]
@@ -341,44 +346,67 @@ def _recursive_repr(user_function: Any) -> Any:
 
 
 _HEAD: list[Any] = []
+#: An annotation's text → its head (``module``, ``name``) by ``dataclasses._MODULE_IDENTIFIER_RE``, None when it
+#: has none: each text is matched once however many classes repeat it (start-up, issue 36).
+_HEADS: dict[str, tuple[str | None, str] | None] = {}
 
 
-def _named(annotation: str, cls: type, a_module: Any) -> Any:
-    """What the string ``annotation`` names in ``a_module`` by ``dataclasses._is_type``'s rule (its head
-    ``name`` or ``module.name``, looked up in the class's module), else None."""
+def _head(annotation: str) -> tuple[str | None, str] | None:
+    """``annotation``'s head by ``dataclasses._is_type``'s pattern: ``(module or None, name)``, or None."""
+    try:
+        return _HEADS[annotation]
+    except KeyError:
+        pass
     if not _HEAD:
         import re
 
         _HEAD.append(re.compile(r"^(?:\s*(\w+)\s*\.)?\s*(\w+)"))
     match = _HEAD[0].match(annotation)
-    if not match:
+    head = _HEADS[annotation] = match.groups() if match else None
+    return head
+
+
+def _named(annotation: str, cls: type, a_module: Any, namespace: dict[str, Any] | None = None) -> Any:
+    """What the string ``annotation`` names in ``a_module`` by ``dataclasses._is_type``'s rule (its head
+    ``name`` or ``module.name``, looked up in the class's module, whose namespace may be given), else None."""
+    head = _head(annotation)
+    if head is None:
         return None
-    module_name, name = match.groups()
-    module = sys.modules.get(cls.__module__)
+    module_name, name = head
+    if namespace is None:
+        module = sys.modules.get(cls.__module__)
+        namespace = module.__dict__ if module is not None else None
     if not module_name:
-        return module.__dict__.get(name) if module is not None else None
-    if module is not None and module.__dict__.get(module_name) is a_module:
+        return namespace.get(name) if namespace is not None else None
+    if namespace is not None and namespace.get(module_name) is a_module:
         return a_module.__dict__.get(name)
     return None
 
 
-def _pseudo(annotation: Any, cls: type) -> str | None:
+def _pseudo(annotation: Any, cls: type, namespace: dict[str, Any] | None = None) -> str | None:
     """"classvar" for a ClassVar, "other" for what only ``dataclasses`` handles (not a string, InitVar,
-    KW_ONLY), else None (a field): ``dataclasses._get_field``'s tests of a string annotation."""
+    KW_ONLY), else None (a field): ``dataclasses._get_field``'s tests of a string annotation (``namespace``:
+    the class's module's, when the caller has it)."""
     if not isinstance(annotation, str):
         return "other"
     typing = sys.modules.get("typing")
     if typing:
-        found = _named(annotation, cls, typing)
-        if found is typing.ClassVar or (type(found) is typing._GenericAlias
-                                        and found.__origin__ is typing.ClassVar):
+        found = _named(annotation, cls, typing, namespace)
+        if found is not None and (found is typing.ClassVar or (type(found) is typing._GenericAlias
+                                                               and found.__origin__ is typing.ClassVar)):
             return "classvar"
     dc = sys.modules.get("dataclasses")
     if dc:
-        found = _named(annotation, cls, dc)
+        found = _named(annotation, cls, dc, namespace)
         if found is dc.InitVar or type(found) is dc.InitVar or found is dc.KW_ONLY:
             return "other"
     return None
+
+
+def _field_types() -> tuple[type, ...]:
+    """What :func:`_as_field` takes for a field: ours, and the standard library's once it is imported."""
+    dc = sys.modules.get("dataclasses")
+    return (_Field,) if dc is None else (_Field, dc.Field)
 
 
 def _own_field(cls: type, name: str, annotation: str, kind: str | None, kw_only: bool) -> _Field | None:
@@ -417,13 +445,16 @@ def _collect(cls: type, frozen: bool, kw_only: bool) -> dict[str, _Field] | None
         any_frozen_base = any_frozen_base or _MADE[owner].params[5]
     annotations = cls.__dict__.get("__annotations__", {})
     own = []
+    module = sys.modules.get(cls.__module__)
+    namespace = module.__dict__ if module is not None else None
     for name, annotation in annotations.items():
-        kind = _pseudo(annotation, cls)
+        kind = _pseudo(annotation, cls, namespace)
         f = None if kind == "other" else _own_field(cls, name, annotation, kind, kw_only)
         if f is None:
             return None
         own.append(f)
-    if any(_as_field(v) is not None and k not in annotations for k, v in cls.__dict__.items()):
+    kinds = _field_types()
+    if any(isinstance(v, kinds) and k not in annotations for k, v in cls.__dict__.items()):
         return None
     if has_dataclass_bases and any_frozen_base != frozen:
         return None
@@ -624,9 +655,10 @@ def _process_class(cls: type, options: dict[str, Any]) -> type | None:
     globals = module.__dict__ if module is not None else {}  # noqa: A001
     params = tuple(options[k] for k in ("init", "repr", "eq", "order", "unsafe_hash", "frozen"))
     cls.__dataclass_params__ = _Lazy("__dataclass_params__", _params_of)  # type: ignore[attr-defined]
+    annotations, kinds = cls.__dict__.get("__annotations__", {}), _field_types()
     for name, f in fields.items():
         value = getattr(cls, name, None)
-        if name in cls.__dict__.get("__annotations__", {}) and (isinstance(value, _Field) or _is_std_field(value)):
+        if name in annotations and isinstance(value, kinds):
             if f.default is MISSING:
                 delattr(cls, name)
             else:

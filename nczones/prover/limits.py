@@ -36,7 +36,11 @@ No run is unbounded (README, "Standards"):
   it interrupts the running Z3 query at once (Z3's interrupt: a Python
   signal handler cannot run while Z3 holds the main thread), and Python's
   own ``KeyboardInterrupt`` then stops the run; the prover turns it into a
-  partial result marked ``interrupted``.
+  partial result marked ``interrupted``.  The watchdog thread (and the
+  wake-up fd) start with the first solver query of the watched block: until
+  then no query runs for it to stop, and Python's own handler stops the
+  run (a small verify needs no query: no thread, no ``threading``, no
+  ``signal`` module at its start, issue 36).
 
 Invariant: a limit, a spent budget or an interrupt never yields ``safe`` for
 the motion it stopped; it yields ``unknown`` with the reason (or, for an
@@ -45,10 +49,8 @@ interrupt, a partial result that says so).
 
 from __future__ import annotations
 
+import _thread
 import os
-import select
-import signal
-import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -110,11 +112,13 @@ class RunLimits:
         self.started = clock()
         self.spent_at: float | None = None
         self.interrupted = False
-        self._lock = threading.Lock()
+        self._lock = _thread.allocate_lock()  # threading.Lock, without importing threading (issue 36)
         self._active: _Active | None = None  # (sequence number, z3 context, deadline, why) of the running query
         self._seq = 0
         self._stopped: dict[int, str] = {}
-        self._thread: threading.Thread | None = None
+        self._thread: Any = None  # the watchdog (threading.Thread), started by the first query of a watch
+        self._watching = False
+        self._old_fd: int | None = None
         self._wake: _Wake | None = None
         self._closing = False
 
@@ -148,6 +152,8 @@ class RunLimits:
         ``""`` (it was not stopped by us).
         """
         self.checkpoint()
+        if self._watching and self._thread is None:
+            self._start_watchdog()
         now = self.clock()
         deadline, why = None, "time"
         if self.query_time_s is not None:
@@ -189,45 +195,64 @@ class RunLimits:
 
         Ctrl-C is watched only when called from the main thread (where
         Python delivers signals); the previous wakeup fd is restored after
-        and still receives the signal bytes.
+        and still receives the signal bytes.  The watchdog starts with the
+        block's first solver query (:meth:`query`).
         """
-        if self._thread is not None:  # nested: the outer watch does the work
+        if self._watching:  # nested: the outer watch does the work
             yield self
             return
         token = WATCHED_LIMITS.set(self)
-        old_fd = None
-        if threading.current_thread() is threading.main_thread():
-            try:
-                self._wake = _Wake()
-                old_fd = signal.set_wakeup_fd(self._wake.w, warn_on_full_buffer=False)
-            except (ValueError, OSError):
-                if self._wake is not None:
-                    self._wake.close()
-                self._wake = None
-        self._closing = False
-        self._thread = threading.Thread(target=self._watchdog, args=(old_fd,), name="nczones-limits", daemon=True)
-        self._thread.start()
+        self._watching = True
         try:
             yield self
         finally:
-            self._closing = True
-            if self._wake is not None:
-                try:
-                    signal.set_wakeup_fd(old_fd if old_fd is not None else -1)
-                except (ValueError, OSError):
-                    pass
-                try:
-                    self._wake.write(b"\0")
-                except OSError:
-                    pass
-            self._thread.join(1.0)
-            self._thread = None
+            self._watching = False
+            if self._thread is not None:
+                self._stop_watchdog()
             WATCHED_LIMITS.reset(token)
+
+    def _start_watchdog(self) -> None:
+        """Start the watchdog thread, with the wake-up fd where this is the main thread (the first query)."""
+        import signal
+        import threading
+
+        self._old_fd = None
+        try:  # set_wakeup_fd works only in the main thread (ValueError elsewhere)
+            self._wake = _Wake()
+            self._old_fd = signal.set_wakeup_fd(self._wake.w, warn_on_full_buffer=False)
+        except (ValueError, OSError):
             if self._wake is not None:
                 self._wake.close()
-                self._wake = None
+            self._wake = None
+        self._closing = False
+        self._thread = threading.Thread(target=self._watchdog, args=(self._old_fd,), name="nczones-limits",
+                                        daemon=True)
+        self._thread.start()
+
+    def _stop_watchdog(self) -> None:
+        """Stop the watchdog, the previous wake-up fd restored."""
+        import signal
+
+        self._closing = True
+        if self._wake is not None:
+            try:
+                signal.set_wakeup_fd(self._old_fd if self._old_fd is not None else -1)
+            except (ValueError, OSError):
+                pass
+            try:
+                self._wake.write(b"\0")
+            except OSError:
+                pass
+        self._thread.join(1.0)
+        self._thread = None
+        if self._wake is not None:
+            self._wake.close()
+            self._wake = None
 
     def _watchdog(self, old_fd: int | None) -> None:
+        import select
+        import signal
+
         wake = self._wake
         while not self._closing:
             with self._lock:

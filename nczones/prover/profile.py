@@ -9,7 +9,6 @@ run's verdict never depends on it.
 
 from __future__ import annotations
 
-import heapq
 import time
 from collections.abc import Callable
 from typing import Any
@@ -55,7 +54,8 @@ class RunProfile:
         self.decide_s = 0.0
         self._solvers: list[tuple[int, float, dict[str, int]]] = []  # (calls, seconds, stopped) of finished runs
         self._slowest_n = slowest
-        self._slowest: list[tuple[float, int, int, int | None, str]] = []  # min-heap
+        self._slowest: list[tuple[float, int, int, int | None, str]] = []  # a min-heap once full
+        self._heapreplace: Any = None  # heapq.heapreplace, once the heap is full
         self._n = 0
 
     def screened(self, chunk: MotionChunk, flagged: int, seconds: float) -> None:
@@ -87,10 +87,15 @@ class RunProfile:
         self.blocks = max(self.blocks, seg.block + 1)
         self._n += 1
         item = (seconds, self._n, seg.block, seg.line, label)
-        if len(self._slowest) < self._slowest_n:
-            heapq.heappush(self._slowest, item)
+        if len(self._slowest) < self._slowest_n:  # a list until it is full, then a heap (heapq: issue 36)
+            self._slowest.append(item)
+            if len(self._slowest) == self._slowest_n:
+                import heapq
+
+                self._heapreplace = heapq.heapreplace
+                heapq.heapify(self._slowest)
         elif seconds > self._slowest[0][0]:
-            heapq.heapreplace(self._slowest, item)
+            self._heapreplace(self._slowest, item)
 
     def slowest(self) -> list[dict]:
         """The slowest motions decided one by one, slowest first."""

@@ -9,7 +9,6 @@ expansion is rounded to 12 places and marked with ``…``).
 
 from __future__ import annotations
 
-import json
 import math
 from collections.abc import Iterable
 from fractions import Fraction
@@ -201,4 +200,6 @@ def program_point_json(v: Violation) -> dict:
 
 def render_json(result: Result, *, deterministic: bool = False) -> str:
     """:func:`to_json_dict` as indented JSON text."""
+    import json  # here: a text report needs no json (issue 36)
+
     return json.dumps(to_json_dict(result, deterministic=deterministic), indent=2, ensure_ascii=False) + "\n"

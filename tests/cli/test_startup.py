@@ -60,7 +60,13 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "_hashlib", "ctypes", "shutil", "nczones.lathe_solids",
                           # issue 36 (startup36c): dataclasses imports inspect, ast, dis, tokenize (some 10 ms); the
                           # classes, field(), replace() and field names come from nczones.precompiled
-                          "dataclasses", "inspect", "ast", "dis", "tokenize")
+                          "dataclasses", "inspect", "ast", "dis", "tokenize",
+                          # issue 36 (startup36d): the signal module (its enums), threading and select: SIGTERM's
+                          # handler goes through _signal, the limits' watchdog starts with the first solver query
+                          "signal", "threading", "select",
+                          # struct (the x87 functions' packing: with ctypes), heapq (a run profile's slowest
+                          # motions: once its list is full); each a C extension to load
+                          "struct", "heapq")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -79,10 +85,10 @@ def test_a_small_verify_loads_neither_numpy_nor_the_solver(tmp_path):
 
 def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_path):
     # the double pass (a LinuxCNC program with '#') asks whether the machine declares solids without
-    # importing nczones.solids; ctypes waits for the first SIN, COS or TAN
+    # importing nczones.solids; ctypes (and struct) wait for the first SIN, COS or TAN
     assert loaded_by_verify(tmp_path, ["G90 G21 F100", "#1 = 2.5", "G1 X[#1 * 2] Y[#1 + 1]", "M2"]) == set()
     loaded = loaded_by_verify(tmp_path, ["G90 G21 F100", "#1 = 30", "G1 X[10 * SIN[#1]] Y[10 * COS[#1]]", "M2"])
-    assert loaded == {"ctypes"}
+    assert loaded == {"ctypes", "struct"}
 
 
 def test_a_small_verify_loads_no_pathlib(tmp_path):
@@ -228,10 +234,55 @@ def test_a_small_fanuc_verify_loads_neither_dataclasses_nor_pathlib(tmp_path):
     program = tmp_path / "small.nc"
     program.write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n")
     machine = ROOT / "specs" / "machines" / "fanuc_mill.toml"
-    names = ("dataclasses", "inspect", "ast", "pathlib", "urllib.parse", "ipaddress", "numpy", "z3")
+    names = ("dataclasses", "inspect", "ast", "pathlib", "urllib.parse", "ipaddress", "numpy", "z3", "signal", "threading")
     code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
             f"assert main(['verify', {str(program)!r}, '--machine', {str(machine)!r}]) == 0\n"
             f"print(sorted(m for m in {names!r} if m in sys.modules))")
     r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr
     assert r.stdout.splitlines()[-1] == "[]"
+
+
+def test_the_package_imports_its_public_names_at_their_first_use():
+    # issue 36 (startup36d): `import nczones` loads none of the modules behind its public names, nor typing, so
+    # that `python -m nczones` sets the collector's threshold before they make their objects
+    behind = ("nczones.machine", "nczones.motion", "nczones.zones", "typing")
+    probe = (f"import sys, nczones\nbefore = sorted(m for m in {behind!r} if m in sys.modules)\n"
+             "from nczones import Machine, load_machine\nfrom nczones.machine import Machine as M, load_machine as L\n"
+             "assert (Machine, load_machine) == (M, L) and nczones.SegmentKind.LINE is not None\n"
+             # exact() has its subpackage's name: still the function once the subpackage is imported
+             "import nczones.exact.decimals\nfrom nczones import exact\nfrom nczones.exact import exact as E\n"
+             "assert exact is E and nczones.exact is E and callable(exact)\n"
+             # every name of __all__ is reachable (a new public name needs its row in nczones._MODULE_OF)
+             "assert all(getattr(nczones, n) is not None for n in nczones.__all__)\n"
+             "try:\n    nczones.no_such_name\nexcept AttributeError as e:\n    assert 'no_such_name' in str(e)\n"
+             "print(before)")
+    r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[]"
+
+
+def test_the_program_runs_with_the_collectors_threshold_raised(tmp_path):
+    # python -m nczones and the console script (cli.run): the first threshold is cli.YOUNG_OBJECTS while the
+    # command runs (a small verify then sets off no collection after its start), the others Python's
+    program = tmp_path / "small.ngc"
+    program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
+    seen = ("import atexit, gc, sys\natexit.register(lambda: print(gc.get_threshold(), file=sys.stderr))\n")
+    for start in ("import runpy\nrunpy.run_module('nczones', run_name='__main__')", "from nczones import cli\ncli.run()"):
+        code = f"{seen}sys.argv = ['nczones', 'verify', {str(program)!r}, '--machine', {MILL!r}]\n{start}"
+        r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+        assert r.returncode == 0, r.stderr
+        assert r.stderr.splitlines()[-1] == str((cli.YOUNG_OBJECTS, 10, 10))
+
+
+def test_a_small_verify_with_a_text_report_loads_no_json(tmp_path):
+    # issue 36 (startup36d): json (with its decoder, scanner and C accelerator) only for a JSON report; the machine
+    # file's zone labels are quoted without it (tests/machine: the quoting is json's)
+    program = tmp_path / "small.ngc"
+    program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
+    for fmt, loaded in (("text", False), ("json", True)):
+        code = (f"import sys\nfrom nczones.cli import main\nassert main(['verify', {str(program)!r}, '--machine', "
+                f"{MILL!r}, '--format', {fmt!r}]) == 0\nprint('json' in sys.modules)")
+        r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+        assert r.returncode == 0, r.stderr
+        assert r.stdout.splitlines()[-1] == str(loaded), fmt

@@ -9,6 +9,8 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.errors import MachineFileError
 from nczones.machine import parse_machine
@@ -68,3 +70,13 @@ def test_mutations_never_crash(path):
                     assert d.code.startswith("ZN") and d.message
                     assert d.location().startswith("m.toml")
     assert tried > 100
+
+
+@given(st.text())
+@settings(max_examples=200, deadline=None)
+def test_a_string_as_written_is_its_json_text(text):
+    # issue 36 (startup36d): machine.py quotes strings (zone labels, values in messages) without importing json;
+    # the quoting must stay json.dumps(text, ensure_ascii=False), which it was before
+    from nczones.machine import as_written
+
+    assert as_written(text) == json.dumps(text, ensure_ascii=False)

@@ -57,3 +57,21 @@ def test_budget_option_is_checked(tmp_path, capsys):
     assert main(["verify", str(prog), "--machine", machine, "--budget", "2.5", "--format", "json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["budget_s"] == 2.5 and doc["settings"]["budget_s"] == 2.5
+
+
+def test_the_slowest_motions_are_the_slowest_however_many_are_decided():
+    # the list of the slowest is a plain list until it holds `slowest` entries, then a heap (issue 36: heapq is
+    # imported only then); either way it is the `slowest` largest times, slowest first
+    from fractions import Fraction as F
+
+    from nczones.motion import Segment, SegmentKind
+    from nczones.prover.profile import RunProfile
+
+    times = [0.3, 0.1, 0.7, 0.2, 0.9, 0.05, 0.6, 0.8, 0.4, 0.5]
+    for n in (0, 3, 9):
+        prof = RunProfile(slowest=3)
+        for k, s in enumerate(times[:n]):
+            prof.decided(Segment(SegmentKind.LINE, (F(0),), (F(1),), ("X",), block=k), s)
+        expected = sorted(times[:n], reverse=True)[:3]
+        assert [x["seconds"] for x in prof.slowest()] == expected
+        assert [x["block"] for x in prof.slowest()] == [times.index(s) for s in expected]

@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import math
 import os
-import struct
 from fractions import Fraction
 from typing import Any
 
@@ -29,12 +28,11 @@ __all__ = ["available", "sin_degrees", "cos_degrees", "tan_degrees", "degrees_fr
 #: ``M_PIl``: pi rounded to a 64-bit significand, ``PI64 * 2**-62``.
 PI64 = 0xC90FDAA22168C235
 _TOP = 1 << 64
-_PACK = struct.Struct("<QH6x")  # an x87 long double in memory: significand, sign and exponent, padding
-_UNPACK = struct.Struct("<QH")
 
 
 def _libm() -> tuple | None:
     import ctypes
+    import struct
 
     machine = os.uname().machine.lower() if hasattr(os, "uname") else ""
     if machine not in ("x86_64", "amd64") or ctypes.sizeof(ctypes.c_longdouble) != 16:
@@ -63,10 +61,11 @@ def _libm() -> tuple | None:
         fn.argtypes = [LongDouble]
         fn.restype = LongDouble
         out.append(fn)
-    return LongDouble, *out
+    # an x87 long double in memory: significand, sign and exponent, padding (struct: loaded here, issue 36)
+    return LongDouble, *out, struct.Struct("<QH6x").pack_into, struct.Struct("<QH").unpack_from
 
 
-#: ``[LongDouble, sinl, cosl, tanl]``, loaded at the first call that needs them (importing :mod:`ctypes`
+#: ``[LongDouble, sinl, cosl, tanl, pack_into, unpack_from]``, loaded at the first call that needs them (importing :mod:`ctypes`
 #: costs about 2 ms of every start-up, and most programs compute no SIN, COS or TAN); ``[None]`` where the host
 #: has no 80-bit ``sinl`` (then SIN, COS and TAN are the double formulas).
 _LIB: list[Any] = []
@@ -169,9 +168,9 @@ def _call(which: int, x: float) -> float:
     else:
         sig, exp = _argument(x)
         arg = long_double()
-        _PACK.pack_into(arg, 0, sig, (exp + 16446) | (0x8000 if x < 0.0 else 0))
+        lib[4](arg, 0, sig, (exp + 16446) | (0x8000 if x < 0.0 else 0))
         last[0], last[1] = x, arg
-    sig, se = _UNPACK.unpack_from(lib[which](arg))
+    sig, se = lib[5](lib[which](arg))
     biased = se & 0x7FFF
     if biased == 0x7FFF:
         return math.nan
