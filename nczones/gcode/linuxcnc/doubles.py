@@ -90,7 +90,7 @@ from ..lexer import magic_comment
 from ..parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from ..program import scan_oword
 from ..shapes import LAYOUT, RUNS, shape_source, shaped
-from .double_arcs import ij_arc, r_arc, radius_rule
+from .double_arcs import CW, EXACT, IJ_SCREEN, R_SCREEN, TURN, ij_screen, r_screen, radius_rule, refined
 
 if TYPE_CHECKING:
     from ..source import FileText
@@ -178,6 +178,10 @@ class DoublePath:
     arc_axes: tuple[int, ...] = ()
     arc_lo: tuple[array, ...] = ()
     arc_hi: tuple[array, ...] = ()
+    #: what :meth:`refine` needs: per arc of these rows its kind (``double_arcs.EXACT``: its box is the sweep's
+    #: already; else a quick screen's, ``double_arcs.refined``'s flags), its words (R and 0, or I and J), and the
+    #: offsets' bound and the radius rule: ``(flags, words, offb, rule)``
+    arc_more: Any = None
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -223,6 +227,33 @@ class DoublePath:
             name = self.axes[a]
             lo[name] = min(lo[name], Fraction(min(self.arc_lo[k][begin:end])))
             hi[name] = max(hi[name], Fraction(max(self.arc_hi[k][begin:end])))
+
+    def refine(self, first: int, last: int) -> bool:
+        """Narrow the boxes of the arcs among motions ``first``..``last`` that hold a quick screen's
+        (:func:`~nczones.gcode.linuxcnc.double_arcs.r_screen`, ``ij_screen``) to the sweep's boxes
+        (``r_arc``, ``ij_arc``: the box kept is the two's intersection, which holds the arc as each does);
+        whether one was narrowed.  A proof calls it when a box with arcs does not fit."""
+        more, rows = self.arc_more, self.arc_rows
+        if more is None or not rows:
+            return False
+        flags, words, offb, rule = more
+        begin, end = bisect_left(rows, first), bisect_right(rows, last)
+        ia, ib = self.arc_axes
+        ca, cb = self.columns[ia], self.columns[ib]
+        (xl, yl), (xh, yh) = self.arc_lo, self.arc_hi
+        done = False
+        for k in range(begin, end):
+            flag = flags[k]
+            if flag == EXACT:
+                continue
+            flags[k] = EXACT
+            r = rows[k] - self.row0  # the arc's end row; the row before is its start (held: r >= 1)
+            box = refined(flag, ca[r - 1], cb[r - 1], ca[r], cb[r], words[2 * k], words[2 * k + 1], offb, rule)
+            if box.__class__ is str:  # (r_screen and ij_screen accept only arcs these accept)
+                continue
+            done = True
+            xl[k], xh[k], yl[k], yh[k] = max(xl[k], box[0]), min(xh[k], box[1]), max(yl[k], box[2]), min(yh[k], box[3])
+        return done
 
     def has_arcs(self, first: int, last: int) -> bool:
         """Is one of motions ``first``..``last`` (of these rows) an arc?"""
@@ -481,7 +512,8 @@ class _Pass:
         motions = self.row0 + len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - self.arcs,
                           self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, self.arcs,
-                          self.arc_rows, self.arc_axes, self.arc_lo, self.arc_hi)
+                          self.arc_rows, self.arc_axes, self.arc_lo, self.arc_hi,
+                          (self.arc_flags, self.arc_words, self.offb, self.rule))
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -498,8 +530,9 @@ class _Pass:
         self.row0 += keep
         gone = bisect_right(self.arc_rows, self.row0)  # the arcs of the rows dropped (motions up to row0)
         if gone:
-            for col in (self.arc_rows, *self.arc_lo, *self.arc_hi):
+            for col in (self.arc_rows, *self.arc_lo, *self.arc_hi, self.arc_flags):
                 del col[:gone]
+            del self.arc_words[:2 * gone]
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -872,6 +905,8 @@ class _Pass:
         self.arc_rows = array("q")
         self.arc_lo = (array("d"), array("d"))
         self.arc_hi = (array("d"), array("d"))
+        self.arc_flags = array("b")  # per arc: its box's kind (DoublePath.arc_more)
+        self.arc_words = array("d")  # per arc: R and 0, or I and J
 
     def tiny(self, row: int) -> bool:
         """May the motion that ends at ``row`` (of the columns held) be dropped by LinuxCNC: is it shorter than
@@ -879,6 +914,18 @@ class _Pass:
         pad = self.tiny_pad
         return all(abs(col[row] - col[row - 1]) < _DROPPED + (abs(col[row]) + abs(col[row - 1])) * 4e-15 + pad
                    for col in self.columns)
+
+    def lone(self, row: int) -> bool:
+        """Is the motion that ends at ``row`` the program's first, with the same doubles as the start on every
+        axis?  The full path (``CornerCheck._segment``, ``prover/blend.py``) skips a motion of length 0 (LinuxCNC's
+        canon drops it) and notes a short one as dropped only with a motion before it (``_dropped_corner``: the
+        corner is then between that motion and the next); before the first motion there is none, so an arc
+        after it is proved from its own start, as the pass's box holds it.  Equal doubles: the motion's exact
+        length is within the rows' bound (about ``1e-15`` of the coordinates), a motion of length 0 or one the
+        full path would drop, never one it runs."""
+        if self.row0 + row != 1:
+            return False
+        return all(col[1] == col[0] for col in self.columns)
 
     def _end(self, values: tuple) -> bool:
         """M2 or M30: the program ends."""
@@ -942,9 +989,11 @@ class _Pass:
             raise Declined("I, J or R without a motion")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_arc, "IJ_ARC": ij_arc, "BLEND": self.blend,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "BLEND": self.blend,
                                  "AR": self.arc_rows.append, "XL": self.arc_lo[0].append, "XH": self.arc_hi[0].append,
-                                 "YL": self.arc_lo[1].append, "YH": self.arc_hi[1].append}
+                                 "YL": self.arc_lo[1].append, "YH": self.arc_hi[1].append,
+                                 "AF": self.arc_flags.append, "AW": self.arc_words.append,
+                                 "DR": _DROPPED, "PAD": self.tiny_pad}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -972,13 +1021,20 @@ class _Pass:
         ia, ib = self.arc_axes
         turn = self.axes[ia] not in others and self.axes[ib] not in others  # the end is the start: a whole turn
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
-        call = (f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})" if "R" in others
-                else f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})")
+        if "R" in others:
+            call = f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})"
+            kind = f"AF({R_SCREEN | CW} if mode == 2 else {R_SCREEN}); AW({val('R')}); AW(0.0)"
+        else:
+            call = f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
+            flag = IJ_SCREEN | (TURN if turn else 0)
+            kind = f"AF({flag | CW} if mode == 2 else {flag}); AW({val('I')}); AW({val('J')})"
         return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
-                "if BLEND and len(C0) > 2 and st.tiny(len(C0) - 2): "
+                # (the first axis's test of tiny() inline first: most arcs follow a motion that is not short)
+                "if BLEND and len(C0) > 2 and abs(C0[-2] - C0[-3]) < DR + (abs(C0[-2]) + abs(C0[-3])) * 4e-15 + PAD "
+                "and st.tiny(len(C0) - 2) and not st.lone(len(C0) - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", "st.arcs += 1"]
+                "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", kind, "st.arcs += 1"]
 
     def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
