@@ -90,7 +90,17 @@ from ..lexer import magic_comment
 from ..parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from ..program import scan_oword
 from ..shapes import LAYOUT, RUNS, shape_source, shaped
-from .double_arcs import CW, EXACT, IJ_SCREEN, R_SCREEN, TURN, ij_screen, r_screen, radius_rule, refined
+from .double_arcs import (
+    CW,
+    EXACT,
+    IJ_SCREEN,
+    R_SCREEN,
+    TURN,
+    ij_screen,
+    r_screen,
+    radius_rule,
+    refined,
+)
 
 if TYPE_CHECKING:
     from ..source import FileText
@@ -108,9 +118,6 @@ PIECE = 1 << 20
 #: a few hundred bytes each); the lines of a longer body are compiled again from their piece at each run, so
 #: memory stays flat however long a body is.
 MAX_STEPS = 1 << 16
-#: Lines of a layout the pass runs through the shape's step and the layout's cutter before it compiles the two
-#: into one step for the layout (:meth:`_Pass._layout_step`).
-COMPILE_AFTER = 64
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
@@ -330,7 +337,9 @@ class _Pass:
         #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it;
         #: a streamed file, FileText, is read from the file a piece at a time, in order but for jumps)
         self.src = _Lines(text, crlf="\r" in text)
-        self.by_layout: dict[bytes, Any] = {}  # layout -> the step of its lines (the line itself its argument)
+        #: layout -> (its shape's step, the layout's cutter): ``step(cut(line))`` runs a line of it (nothing is
+        #: compiled per layout: CAM output with arcs has hundreds of layouts of a few dozen shapes)
+        self.by_layout: dict[bytes, tuple[Any, Any]] = {}
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
         self.index = {a: i for i, a in enumerate(self.axes)}
@@ -368,7 +377,6 @@ class _Pass:
         self.control_lines: dict[str, Any] = {}  # an O-word line's text -> its compiled condition or arguments
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
-        self.shape_code: dict[Any, _Code] = {}
         self.pindex: dict[str, int] = {}
         from .state import linuxcnc_state_parameters
 
@@ -458,17 +466,18 @@ class _Pass:
 
     def _straight(self, i: int, end: int) -> int:
         """Run lines ``i``..``end - 1``, read once (not in a loop or call): the next line, or -1 when the
-        program ended.  A line whose layout has a step (``by_layout``) runs it on the line itself."""
+        program ended.  A line whose layout has a step (``by_layout``) runs it on the literals its layout's
+        cutter takes out of it."""
         src, by_layout = self.src, self.by_layout
         while i < end:
             lo, hi, lines, layouts = src.piece(i)
             if layouts is not None:
                 k = i - lo
                 for layout in layouts[k:min(end, hi) - lo]:
-                    fn = by_layout.get(layout)
-                    if fn is None:
+                    got = by_layout.get(layout)
+                    if got is None:
                         break
-                    if fn(lines[k]):
+                    if got[0](got[1](lines[k])):
                         return -1
                     k += 1
                 i = k + lo
@@ -548,24 +557,8 @@ class _Pass:
         cut = hit[1]
         step = self._shape_step(hit[2])
         if own_layout is not None and layout == own_layout:
-            self.by_layout[layout] = self._layout_step(layout, step, hit[2], cut)
+            self.by_layout[layout] = (step, cut)
         return step, cut(line)
-
-    def _layout_step(self, layout: bytes, step: Any, shape: Any, cut: Any) -> Any:
-        """The step of the lines of ``layout`` (the line itself its argument): ``step`` of the literals
-        ``cut`` takes out of the line at first, and after :data:`COMPILE_AFTER` lines the step compiled with
-        the cutter in it (a compilation costs as much as some thousand calls: a layout of a few lines is not
-        worth one; CAM output with arcs has hundreds of layouts)."""
-        left = COMPILE_AFTER
-
-        def first_lines(line: str) -> Any:
-            nonlocal left
-            left -= 1
-            if not left:
-                self.by_layout[layout] = self._shape_step(shape, cut)
-            return step(cut(line))
-
-        return first_lines
 
     # -- control lines ------------------------------------------------------------------------------------
     def _controls(self) -> dict[int, tuple]:
@@ -761,16 +754,11 @@ class _Pass:
             return self._shape_step(shape), literals
         return self._parsed(line), ()
 
-    def _shape_step(self, shape: Any, cut: Any = None) -> Any:
-        """The step of the lines of a shape, made once per pass: of its literals (``P``), or, given the layout's
-        cutter, of the line itself (the literals cut out of it first)."""
-        fn = self.shape_steps.get(shape if cut is None else cut)
-        if fn is not None:
-            return fn
-        code = self.shape_code.get(shape)
-        if code is None:
-            code = self.shape_code[shape] = self._shape_code(shape)
-        fn = self.shape_steps[shape if cut is None else cut] = self._exec(*code, cut=cut)
+    def _shape_step(self, shape: Any) -> Any:
+        """The step of the lines of a shape, of their literals (``P``), made once per pass."""
+        fn = self.shape_steps.get(shape)
+        if fn is None:
+            fn = self.shape_steps[shape] = self._exec(*self._shape_code(shape))
         return fn
 
     def _shape_code(self, shape: Any) -> _Code:
@@ -823,12 +811,9 @@ class _Pass:
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
-    def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict,
-              cut: Any = None) -> Any:
-        """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends);
-        ``step(line)`` with ``P = cut(line)`` first when a cutter is given."""
-        head = ["def step(P):"] if cut is None else ["def step(L):", "    P = CUT(L)"]
-        lines = head + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
+    def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict) -> Any:
+        """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends)."""
+        lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
         if key is None:
             lines.append("    plan = PLAN")
         else:
@@ -836,7 +821,6 @@ class _Pass:
         lines.append(f"    return plan(({''.join(v + ', ' for v in values)}))")
         scope = dict(self.env)
         scope.update(extra)
-        scope["CUT"] = cut
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
