@@ -70,6 +70,7 @@ import re
 from array import array
 from bisect import bisect_left, bisect_right
 from fractions import Fraction
+from operator import itemgetter
 from typing import TYPE_CHECKING, Any
 
 from ...errors import GcodeError
@@ -139,6 +140,9 @@ _LETTERS = frozenset("GMFSXYZIJRH")
 #: Letters whose word is a literal code (H: the tool length register, read like a G or M code).
 _CODE_LETTERS = "GMH"
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
+#: A line of words of a letter and a number only (:meth:`_Pass._plain`; the parser's ``_NUMBER``), and a word.
+_PLAIN = re.compile(r"[ \t]*(?:[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)[ \t]*)+")
+_PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
 
 
 #: M codes the pass follows beside M2/M30 (the code table's claims), one to a block: the spindle (M3, M4, M5)
@@ -179,15 +183,15 @@ class DoublePath:
     #: the row ``columns[a][0]`` is (a window of a long program: rows ``row0``..``motions``; 0: every row)
     row0: int = 0
     #: arcs (G2/G3): how many in the whole program, and those of these rows: their rows (motions, ascending)
-    #: and per plane axis (``arc_axes``) the outer bounds (doubles) of each arc's box (``double_arcs``)
+    #: and, four doubles an arc, the outer bounds ``xlo, xhi, ylo, yhi`` of its box on the plane axes
+    #: (``arc_axes``; :mod:`.double_arcs`)
     arcs: int = 0
     arc_rows: array | None = None
     arc_axes: tuple[int, ...] = ()
-    arc_lo: tuple[array, ...] = ()
-    arc_hi: tuple[array, ...] = ()
-    #: what :meth:`refine` needs: per arc of these rows its kind (``double_arcs.EXACT``: its box is the sweep's
-    #: already; else a quick screen's, ``double_arcs.refined``'s flags), its words (R and 0, or I and J), and the
-    #: offsets' bound and the radius rule: ``(flags, words, offb, rule)``
+    arc_boxes: array | None = None
+    #: what :meth:`refine` needs: three doubles an arc: its kind (``double_arcs.EXACT``: its box is the sweep's
+    #: already; else a quick screen's, ``double_arcs.refined``'s flags) and its words (R and 0, or I and J); the
+    #: offsets' bound and the radius rule: ``(words, offb, rule)``
     arc_more: Any = None
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
@@ -230,10 +234,12 @@ class DoublePath:
         begin, end = bisect_left(rows, first), bisect_right(rows, last)
         if begin >= end:
             return
+        boxes = self.arc_boxes
+        assert boxes is not None
         for k, a in enumerate(self.arc_axes):
             name = self.axes[a]
-            lo[name] = min(lo[name], Fraction(min(self.arc_lo[k][begin:end])))
-            hi[name] = max(hi[name], Fraction(max(self.arc_hi[k][begin:end])))
+            lo[name] = min(lo[name], Fraction(min(boxes[4 * begin + 2 * k:4 * end:4])))
+            hi[name] = max(hi[name], Fraction(max(boxes[4 * begin + 2 * k + 1:4 * end:4])))
 
     def refine(self, first: int, last: int) -> bool:
         """Narrow the boxes of the arcs among motions ``first``..``last`` that hold a quick screen's
@@ -243,23 +249,26 @@ class DoublePath:
         more, rows = self.arc_more, self.arc_rows
         if more is None or not rows:
             return False
-        flags, words, offb, rule = more
+        words, offb, rule = more
+        boxes = self.arc_boxes
+        assert boxes is not None
         begin, end = bisect_left(rows, first), bisect_right(rows, last)
         ia, ib = self.arc_axes
         ca, cb = self.columns[ia], self.columns[ib]
-        (xl, yl), (xh, yh) = self.arc_lo, self.arc_hi
         done = False
         for k in range(begin, end):
-            flag = flags[k]
+            flag = int(words[3 * k])
             if flag == EXACT:
                 continue
-            flags[k] = EXACT
+            words[3 * k] = EXACT
             r = rows[k] - self.row0  # the arc's end row; the row before is its start (held: r >= 1)
-            box = refined(flag, ca[r - 1], cb[r - 1], ca[r], cb[r], words[2 * k], words[2 * k + 1], offb, rule)
+            box = refined(flag, ca[r - 1], cb[r - 1], ca[r], cb[r], words[3 * k + 1], words[3 * k + 2], offb, rule)
             if box.__class__ is str:  # (r_screen and ij_screen accept only arcs these accept)
                 continue
             done = True
-            xl[k], xh[k], yl[k], yh[k] = max(xl[k], box[0]), min(xh[k], box[1]), max(yl[k], box[2]), min(yh[k], box[3])
+            b = 4 * k
+            boxes[b:b + 4] = array("d", (max(boxes[b], box[0]), min(boxes[b + 1], box[1]),
+                                         max(boxes[b + 2], box[2]), min(boxes[b + 3], box[3])))
         return done
 
     def has_arcs(self, first: int, last: int) -> bool:
@@ -377,6 +386,7 @@ class _Pass:
         self.control_lines: dict[str, Any] = {}  # an O-word line's text -> its compiled condition or arguments
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
+        self.plain_steps: dict[str, Any] = {}  # a plain line's letters -> its step (_plain)
         self.pindex: dict[str, int] = {}
         from .state import linuxcnc_state_parameters
 
@@ -521,8 +531,7 @@ class _Pass:
         motions = self.row0 + len(self.columns[0]) - 1
         return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - self.arcs,
                           self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, self.arcs,
-                          self.arc_rows, self.arc_axes, self.arc_lo, self.arc_hi,
-                          (self.arc_flags, self.arc_words, self.offb, self.rule))
+                          self.arc_rows, self.arc_axes, self.arc_boxes, (self.arc_words, self.offb, self.rule))
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -539,9 +548,9 @@ class _Pass:
         self.row0 += keep
         gone = bisect_right(self.arc_rows, self.row0)  # the arcs of the rows dropped (motions up to row0)
         if gone:
-            for col in (self.arc_rows, *self.arc_lo, *self.arc_hi, self.arc_flags):
-                del col[:gone]
-            del self.arc_words[:2 * gone]
+            del self.arc_rows[:gone]
+            del self.arc_boxes[:4 * gone]
+            del self.arc_words[:3 * gone]
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -553,7 +562,13 @@ class _Pass:
         if hit is None:
             if not line.strip():
                 return None, ()
-            return self._fresh(line)
+            plain = self._plain(line)
+            if plain is None:
+                return self._fresh(line)
+            step, cut = plain
+            if own_layout is not None and layout == own_layout:
+                self.by_layout[layout] = plain
+            return step, cut(line)
         cut = hit[1]
         step = self._shape_step(hit[2])
         if own_layout is not None and layout == own_layout:
@@ -744,6 +759,40 @@ class _Pass:
         plan = self._plan(_letters(pl.words), tuple(int(c) for c in codes))
         return self._exec(body, writes, vals, None, {"PLAN": plan})
 
+    def _plain(self, line: str) -> tuple[Any, Any] | None:
+        """``(step, cutter)`` of the lines of the layout of ``line`` when it is words of a letter and a number
+        only (``G2 X-1.5 Y.25 R3``, the most common CAM line), else None.  No shape is made
+        (:func:`~nczones.gcode.shapes.shaped` compiles one for the full path's runner, about 1 ms; CAM output
+        with arcs has dozens, and hundreds of layouts): the line is parsed (:func:`parse_line`) and its words
+        must be the numbers the pattern finds, each its own ``NUM`` (``float`` of its text, sign included); the
+        cutter slices those texts (the lines of a layout have their numbers at the same columns, and parse
+        alike: only digits differ), and the step is compiled once per sequence of letters."""
+        found = _PLAIN.fullmatch(line)
+        if found is None:
+            return None
+        spans = [m.span(2) for m in _PLAIN_WORD.finditer(line)]
+        try:
+            pl = parse_line(line, 1, "<double pass>")
+        except GcodeError:  # the full path reports it
+            raise Declined("a line that does not parse") from None
+        if pl.oword is not None or pl.delete or pl.percent or pl.unsupported is not None or pl.comments \
+                or pl.assigns or len(pl.words) != len(spans):
+            return None
+        letters = ""
+        leaf_of: dict[int, str] = {}
+        for k, (word, (a, b)) in enumerate(zip(pl.words, spans)):
+            letter, tree = word[0], word[1]
+            if tree[0] != NUM or not tree[1] == float(line[a:b]) or line[a - 1].upper() != letter:
+                return None
+            leaf_of[id(tree)] = f"P[{k}]"
+            letters += letter
+        step = self.plain_steps.get(letters)
+        if step is None:
+            step = self.plain_steps[letters] = self._exec(*self._source_code(pl, leaf_of))
+        cuts = [slice(a, b) for a, b in spans]
+        cut = itemgetter(*cuts) if len(cuts) > 1 else (lambda text, c=cuts[0]: (text[c],))
+        return step, cut
+
     def _fresh(self, line: str) -> tuple:
         """The step of an ASCII line without comments whose layout has no compiled shape yet."""
         try:
@@ -762,7 +811,11 @@ class _Pass:
         return fn
 
     def _shape_code(self, shape: Any) -> _Code:
-        pl, leaf_of = shape_source(shape)
+        return self._source_code(*shape_source(shape))
+
+    def _source_code(self, pl: Any, leaf_of: dict[int, str]) -> _Code:
+        """The code of the step of the lines parsed as ``pl`` whose literals' sources (``P[k]``) are ``leaf_of``
+        (by ``id`` of their ``NUM`` nodes)."""
         if pl.oword is not None or pl.delete or pl.percent or pl.unsupported is not None or pl.comments:
             raise Declined("a line the double pass does not follow")
 
@@ -887,10 +940,8 @@ class _Pass:
         self.offb = math.nextafter(float(top), math.inf)  # at or above the plane axes' offsets
         self.arcs = 0
         self.arc_rows = array("q")
-        self.arc_lo = (array("d"), array("d"))
-        self.arc_hi = (array("d"), array("d"))
-        self.arc_flags = array("b")  # per arc: its box's kind (DoublePath.arc_more)
-        self.arc_words = array("d")  # per arc: R and 0, or I and J
+        self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
+        self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
 
     def tiny(self, row: int) -> bool:
         """May the motion that ends at ``row`` (of the columns held) be dropped by LinuxCNC: is it shorter than
@@ -974,9 +1025,7 @@ class _Pass:
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "BLEND": self.blend,
-                                 "AR": self.arc_rows.append, "XL": self.arc_lo[0].append, "XH": self.arc_hi[0].append,
-                                 "YL": self.arc_lo[1].append, "YH": self.arc_hi[1].append,
-                                 "AF": self.arc_flags.append, "AW": self.arc_words.append,
+                                 "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "DR": _DROPPED, "PAD": self.tiny_pad}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
@@ -1007,18 +1056,18 @@ class _Pass:
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
         if "R" in others:
             call = f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})"
-            kind = f"AF({R_SCREEN | CW} if mode == 2 else {R_SCREEN}); AW({val('R')}); AW(0.0)"
+            kind = f"AW(({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}, {val('R')}, 0.0))"
         else:
             call = f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
             flag = IJ_SCREEN | (TURN if turn else 0)
-            kind = f"AF({flag | CW} if mode == 2 else {flag}); AW({val('I')}); AW({val('J')})"
+            kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val('I')}, {val('J')}))"
         return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
                 # (the first axis's test of tiny() inline first: most arcs follow a motion that is not short)
                 "if BLEND and len(C0) > 2 and abs(C0[-2] - C0[-3]) < DR + (abs(C0[-2]) + abs(C0[-3])) * 4e-15 + PAD "
                 "and st.tiny(len(C0) - 2) and not st.lone(len(C0) - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", kind, "st.arcs += 1"]
+                "AR(st.row0 + len(C0) - 1); AB(box)", kind, "st.arcs += 1"]
 
     def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
