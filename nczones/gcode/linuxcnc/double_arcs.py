@@ -189,7 +189,7 @@ def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: 
     return _box(sx, sy, ex, ey, cx, cy, sx - cx, sy - cy, ex - cx, ey - cy, ar, err, err, cw)
 
 
-def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float) -> Any:
+def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float) -> Any:
     """A box holding the full path's R arc, with no square root (quicker than :func:`r_arc`'s), or a ``str``:
     why the pass declines; it accepts only arcs :func:`r_arc` accepts.  :func:`refined` narrows it to
     :func:`r_arc`'s box when a proof needs it.
@@ -199,48 +199,54 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, off
     an angle of at least 90 degrees (the inscribed angle over the long arc, ``pi - theta / 2`` for a sweep
     ``theta <= pi``): it lies in the disc on the chord, of centre ``M = (S + E) / 2`` and radius
     ``|E - S| / 2 <= (|dx| + |dy|) / 2``.  With the doubles: ``|S - S'|``, ``|E - E'| <= rho`` per component
-    (``rho`` of :func:`r_arc`, below ``5 m 2**-52``), ``|R| <= |R'| (1 + 2**-53)``, so the boxes
-    ``S' +- 2|R'|``, ``E' +- 2|R'|`` (and, ``R > 0``, ``M' +- (|dx'| + |dy'|) / 2``, within ``3 rho + 3 m 2**-52``
-    of the exact centre and half-sum) widened by ``err = (64 m + 2**-4) 2**-52`` hold it; ``err`` is above those
-    terms plus the rounding of the sums (each below ``m 2**-52``).
+    (``rho`` of :func:`r_arc`, below ``5 m 2**-52``), ``|R| <= |R'| (1 + 2**-53)``, so the box of ``S' +- 2|R'|``
+    and ``E' +- 2|R'|`` (``R < 0``) or ``M' +- (|dx'| + |dy'|) / 2`` (``R > 0``: ``M'`` and the half-sum within
+    ``3 rho + 3 m 2**-52`` of the exact ones) widened by ``err = (64 m + 2**-4) 2**-52`` holds it; ``err`` is
+    above those terms plus the rounding of the sums (each below ``m 2**-52``).  ``m`` here,
+    ``2 (|sx| + |sy| + |R|) + |dx| + |dy|`` plus the offsets' bound, is at least :func:`r_arc`'s
+    (``|ex| <= |sx| + |dx|``).
 
-    The decline: ``ed`` here bounds :func:`r_arc`'s (``|E' - S'| <= |dx'| + |dy'|``) and ``e_x`` grows with it;
-    ``dd > 17 ed**2`` gives ``|E' - S'| > 4 ed`` (``dd`` and the hypot within a few ulps), so every arc taken
-    here passes :func:`r_arc`'s test (whose argument says the full path takes it, neither GC302 nor GC303).
+    The decline: ``ed`` here is above :func:`r_arc`'s (``9 m`` for its ``8 m``, far above the rounding of
+    either ``m``; ``|E' - S'| <= |dx'| + |dy'|``) and ``e_x`` grows with it; ``dd > 17 ed**2`` gives
+    ``|E' - S'| > 4 ed`` (``dd`` and the hypot within a few ulps), so every arc taken here passes
+    :func:`r_arc`'s test (whose argument says the full path takes it, neither GC302 nor GC303).
 
-    >>> [round(v, 9) + 0.0 for v in r_screen(1.0, 0.0, 0.0, 1.0, 1.0, False, 0.0)]  # in the disc on the chord
+    >>> [round(v, 9) + 0.0 for v in r_screen(1.0, 0.0, 0.0, 1.0, 1.0, 0.0)]  # in the disc on the chord
     [-0.5, 1.5, -0.5, 1.5]
-    >>> [round(v, 9) + 0.0 for v in r_screen(1.0, 0.0, 0.0, 1.0, -1.0, False, 0.0)]  # within 2|R| of both ends
+    >>> [round(v, 9) + 0.0 for v in r_screen(1.0, 0.0, 0.0, 1.0, -1.0, 0.0)]  # within 2|R| of both ends
     [-1.0, 2.0, -1.0, 2.0]
+    >>> r_screen(0.0, 0.0, 2.0, 0.0, 1.0, 0.0)  # a half circle: the full path's
+    'an R arc of a chord about 0 or about 2|R| or longer'
     """
-    dx, dy = ex - sx, ey - sy
-    ar = abs(r)
-    ax, ay = abs(dx), abs(dy)
-    m = (abs(sx) if abs(sx) > abs(sy) else abs(sy)) + (abs(ex) if abs(ex) > abs(ey) else abs(ey)) + 2 * ar + offb
-    ed = (8.0 * m + 2.0**-7) * _U + (ax + ay) * _U  # 2 rho + (|dx'| + |dy'|) 2**-52 >= r_arc's ed
+    dx = ex - sx
+    dy = ey - sy
+    ax = dx if dx >= 0.0 else -dx  # (conditionals: quicker than abs() calls, on a path run per arc)
+    ay = dy if dy >= 0.0 else -dy
+    ar = r if r >= 0.0 else -r
+    l1 = ax + ay
+    m = 2.0 * ((sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + ar) + l1 + offb
+    ed = (9.0 * m + 2.0**-7 + l1) * _U  # above r_arc's 2 rho + |E' - S'| 2**-52
     dd = dx * dx + dy * dy
     rr = r * r
-    e_x = rr * 2.0**-51 + ((ax + ay) * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U
     x = rr - dd / 4
-    if not (dd > 17 * ed * ed and x > _HALF * rr and x > 8 * e_x):
+    # r_arc's e_x, with this ed
+    if not (dd > 17 * ed * ed and x > _HALF * rr
+            and x > 8 * (rr * 2.0**-51 + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U)):
         return "an R arc of a chord about 0 or about 2|R| or longer"
     err = (64.0 * m + 0.0625) * _U
+    if r > 0.0:
+        w = l1 / 2 + err
+        mx = (sx + ex) / 2
+        my = (sy + ey) / 2
+        return (mx - w, mx + w, my - w, my + w)
     w = 2 * ar + err
-    xlo, xhi = (sx, ex) if sx > ex else (ex, sx)  # the larger, the smaller
-    ylo, yhi = (sy, ey) if sy > ey else (ey, sy)
-    xlo, xhi, ylo, yhi = xlo - w, xhi + w, ylo - w, yhi + w
-    if r > 0:
-        w = (ax + ay) / 2 + err
-        mx, my = (sx + ex) / 2, (sy + ey) / 2
-        if mx - w > xlo:
-            xlo = mx - w
-        if mx + w < xhi:
-            xhi = mx + w
-        if my - w > ylo:
-            ylo = my - w
-        if my + w < yhi:
-            yhi = my + w
-    return (xlo, xhi, ylo, yhi)
+    if sx > ex:
+        xlo, xhi = sx - w, ex + w
+    else:
+        xlo, xhi = ex - w, sx + w
+    if sy > ey:
+        return (xlo, xhi, sy - w, ey + w)
+    return (xlo, xhi, ey - w, sy + w)
 
 
 #: Arc kinds :func:`refined` reads (``DoublePath.arc_more``'s flags): the box is already :func:`r_arc`'s or

@@ -1055,7 +1055,7 @@ class _Pass:
         turn = self.axes[ia] not in others and self.axes[ib] not in others  # the end is the start: a whole turn
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
         if "R" in others:
-            call = f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})"
+            call = f"R_ARC({ends}, {val('R')}, {self.offb!r})"
             kind = f"AW(({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}, {val('R')}, 0.0))"
         else:
             call = f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
