@@ -111,10 +111,13 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
     motions), which must then fit; a window that does not hold them gives False (the pass declines).
 
     An arc on either side: the Minkowski sum of the two motions' whole boxes less the corner's box (a sound
-    superset of the region of specs/path-modes.md); next to a motion that may be dropped, False."""
+    superset of the region of specs/path-modes.md); next to a motion that may be dropped, False, but for the
+    program's first motion (``k == 1``: nothing before it to join the arc to, whether it is dropped or not)."""
     arcs = getattr(path, "arcs", 0) and path.has_arcs(k, k + 1)
     if arcs:
-        if may_be_zero(path, k) or may_be_zero(path, k + 1):
+        # the program's first motion has no motion before it: dropped, the arc runs from where it began (no
+        # corner); else its corner with the arc is the one bounded below (the full path: CornerCheck)
+        if (k > 1 and may_be_zero(path, k)) or may_be_zero(path, k + 1):
             return False
         (l1, h1), (l2, h2), (lc, hc) = path.enclosure(k, k), path.enclosure(k + 1, k + 1), path.enclosure(k + 1, k)
         lo = {a: l1[a] + l2[a] - hc[a] for a in l1}
