@@ -138,14 +138,15 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
     wx, wy = ex - cx, ey - cy  # within 2 rho + 2 m 2**-52 of E - C (and -i, -j within m 2**-53 of S - C)
     r0, r1 = math.hypot(i, j), math.hypot(wx, wy)  # within 3 rho + 6 m 2**-52 of the exact radii
     # m: above every magnitude here (|C| <= |S| + r0, |E| <= |C| + r1), so rho <= (4 m + 2**-8) 2**-52
-    m = (abs(sx) if abs(sx) > abs(sy) else abs(sy)) + r0 + r1 + offb
+    # (conditionals for abs(): this runs per arc)
+    m = (sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + r0 + r1 + offb  # (>= max(|sx|, |sy|) + ...)
     err = (64.0 * m + 0.0625) * _U  # every error above is below err / 4
     if not (r0 > 4 * err and r1 > 4 * err):
         return "an arc of a radius about 0"
-    if not turn:
-        a, b = j * wx - i * wy, i * wx + j * wy  # the cross product of u = (-i, -j) and w, and -(u . w)
+    if not turn and i * wx + j * wy < 0:  # -(u . w), u = (-i, -j): the end ahead of the start's normal
+        a = j * wx - i * wy  # the cross product of u and w
         if abs(a) <= err * (abs(i) + abs(j) + abs(wx) + abs(wy)) * 1.01 + 2 * err * err + \
-                (abs(j * wx) + abs(i * wy)) * 2.0**-51 and b < 0:
+                (abs(j * wx) + abs(i * wy)) * 2.0**-51:
             return "an arc whose end may lie on the ray from the centre through its start"
     diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
     margin = diff + big * 1e-9 + 1e-9 + 2 * err

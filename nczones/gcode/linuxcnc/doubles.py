@@ -529,8 +529,9 @@ class _Pass:
         if not all(math.isfinite(sum(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
-        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - self.arcs,
-                          self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, self.arcs,
+        arcs = self.arcs + len(self.arc_rows)
+        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - arcs,
+                          self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, arcs,
                           self.arc_rows, self.arc_axes, self.arc_boxes, (self.arc_words, self.offb, self.rule))
 
     def full(self) -> None:
@@ -549,6 +550,7 @@ class _Pass:
         gone = bisect_right(self.arc_rows, self.row0)  # the arcs of the rows dropped (motions up to row0)
         if gone:
             del self.arc_rows[:gone]
+            self.arcs += gone
             del self.arc_boxes[:4 * gone]
             del self.arc_words[:3 * gone]
 
@@ -938,7 +940,7 @@ class _Pass:
         self.arc_axes: tuple[int, ...] = (ix, iy) if ix is not None and iy is not None else ()
         top = max((self.offset_bound[i] for i in self.arc_axes), default=Fraction(0))
         self.offb = math.nextafter(float(top), math.inf)  # at or above the plane axes' offsets
-        self.arcs = 0
+        self.arcs = 0  # the arcs of the rows dropped (full()); those held are arc_rows
         self.arc_rows = array("q")
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
         self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
@@ -1067,7 +1069,7 @@ class _Pass:
                 "and st.tiny(len(C0) - 2) and not st.lone(len(C0) - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + len(C0) - 1); AB(box)", kind, "st.arcs += 1"]
+                "AR(st.row0 + len(C0) - 1); AB(box)", kind]
 
     def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
