@@ -143,6 +143,7 @@ _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
 #: A line of words of a letter and a number only (:meth:`_Pass._plain`; the parser's ``_NUMBER``), and a word.
 _PLAIN = re.compile(r"[ \t]*(?:[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)[ \t]*)+")
 _PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
+_DIGIT_RUNS = re.compile(rb"0+")  # (in a layout: every digit is 0)
 
 
 #: M codes the pass follows beside M2/M30 (the code table's claims), one to a block: the spindle (M3, M4, M5)
@@ -387,6 +388,7 @@ class _Pass:
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
         self.plain_steps: dict[str, Any] = {}  # a plain line's letters -> its step (_plain)
+        self.plain_kinds: dict[bytes, Any] = {}  # a plain layout, its digit runs made one -> its step (_plain)
         self.pindex: dict[str, int] = {}
         from .state import linuxcnc_state_parameters
 
@@ -564,7 +566,7 @@ class _Pass:
         if hit is None:
             if not line.strip():
                 return None, ()
-            plain = self._plain(line)
+            plain = self._plain(line, layout)
             if plain is None:
                 return self._fresh(line)
             step, cut = plain
@@ -761,18 +763,26 @@ class _Pass:
         plan = self._plan(_letters(pl.words), tuple(int(c) for c in codes))
         return self._exec(body, writes, vals, None, {"PLAN": plan})
 
-    def _plain(self, line: str) -> tuple[Any, Any] | None:
+    def _plain(self, line: str, layout: bytes) -> tuple[Any, Any] | None:
         """``(step, cutter)`` of the lines of the layout of ``line`` when it is words of a letter and a number
         only (``G2 X-1.5 Y.25 R3``, the most common CAM line), else None.  No shape is made
         (:func:`~nczones.gcode.shapes.shaped` compiles one for the full path's runner, about 1 ms; CAM output
         with arcs has dozens, and hundreds of layouts): the line is parsed (:func:`parse_line`) and its words
         must be the numbers the pattern finds, each its own ``NUM`` (``float`` of its text, sign included); the
         cutter slices those texts (the lines of a layout have their numbers at the same columns, and parse
-        alike: only digits differ), and the step is compiled once per sequence of letters."""
+        alike: only digits differ), and the step is compiled once per sequence of letters.  One line is parsed per
+        layout with its runs of digits made one (``G2 X0.0 Y0.0`` for ``G2 X-1.25 Y3.5`` and ``G3 X12.5 Y0.75``):
+        the pattern, like the parser's numbers (``_NUMBER``), reads a run of digits of any length alike."""
         found = _PLAIN.fullmatch(line)
         if found is None:
             return None
         spans = [m.span(2) for m in _PLAIN_WORD.finditer(line)]
+        cuts = [slice(a, b) for a, b in spans]
+        cut = itemgetter(*cuts) if len(cuts) > 1 else (lambda text, c=cuts[0]: (text[c],))
+        kind = _DIGIT_RUNS.sub(b"0", layout)
+        step = self.plain_kinds.get(kind)
+        if step is not None:
+            return step, cut
         try:
             pl = parse_line(line, 1, "<double pass>")
         except GcodeError:  # the full path reports it
@@ -791,8 +801,8 @@ class _Pass:
         step = self.plain_steps.get(letters)
         if step is None:
             step = self.plain_steps[letters] = self._exec(*self._source_code(pl, leaf_of))
-        cuts = [slice(a, b) for a, b in spans]
-        cut = itemgetter(*cuts) if len(cuts) > 1 else (lambda text, c=cuts[0]: (text[c],))
+        if len(self.plain_kinds) < MAX_STEPS:
+            self.plain_kinds[kind] = step
         return step, cut
 
     def _fresh(self, line: str) -> tuple:
@@ -835,6 +845,8 @@ class _Pass:
         vals, codes = _words(em, pl.words, body, src)
         writes = _assigns(em, pl.assigns, body, index)
         letters = _letters(pl.words)
+        if not codes:  # one plan for every line (made when the first is run: a plan may decline)
+            return body, writes, vals, None, {"PLAN": self._plan(letters, ())}
         made: dict[Any, Any] = {}
 
         def plan_of(texts: Any) -> Any:
@@ -843,7 +855,7 @@ class _Pass:
             plan = made[texts] = self._plan(letters, tuple(_code(t) for t in every))
             return plan
 
-        key = "None" if not codes else codes[0] if len(codes) == 1 else "(" + ", ".join(codes) + ",)"
+        key = codes[0] if len(codes) == 1 else "(" + ", ".join(codes) + ",)"
         return body, writes, vals, key, {"PLANS": made, "PLAN_OF": plan_of}
 
     def _compiled_args(self, trees: Any) -> Any:
@@ -1064,8 +1076,9 @@ class _Pass:
             flag = IJ_SCREEN | (TURN if turn else 0)
             kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val('I')}, {val('J')}))"
         return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
-                # (the first axis's test of tiny() inline first: most arcs follow a motion that is not short)
-                "if BLEND and len(C0) > 2 and abs(C0[-2] - C0[-3]) < DR + (abs(C0[-2]) + abs(C0[-3])) * 4e-15 + PAD "
+                # (tiny()'s test of the plane's first axis inline first, on the motion's end sa (row -2) and
+                # start: most arcs follow a motion that is not short)
+                f"if BLEND and len(C0) > 2 and abs(sa - C{ia}[-3]) < DR + (abs(sa) + abs(C{ia}[-3])) * 4e-15 + PAD "
                 "and st.tiny(len(C0) - 2) and not st.lone(len(C0) - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
