@@ -34,6 +34,11 @@ is within them of 0 or of a whole turn (the exact one may be either: LinuxCNC ma
 ray a whole turn), all four are taken.  Taking a direction the exact sweep does not contain only grows
 the box, which stays sound.
 
+Quick boxes: :func:`r_screen` (the discs of radius ``2|R|`` about the ends, or for ``R > 0`` the disc on the
+chord, no square root) and :func:`ij_screen` (the centre +- the larger radius) hold the arc by the same error
+terms (their docstrings) and decline exactly what :func:`r_arc` / :func:`ij_arc` decline or more; the pass
+keeps them and :func:`refined` gives the sweep's box when a proof needs a tighter one.
+
 What declines (the full path errors or decides otherwise there): a radius about 0 (GC304 exactly at 0), an
 I/J arc whose radii differ near or past the arc tolerance's rule (GC301), an R arc whose chord is about 0
 (GC303) or about ``2|R|`` or longer (a half circle or GC302).

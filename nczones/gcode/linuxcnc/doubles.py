@@ -26,7 +26,9 @@ end points, so the box of a run of motions' end points, with the point before th
 position of those motions.  An arc (G2/G3 in G17) is not: each arc row also has its own box
 (:mod:`nczones.gcode.linuxcnc.double_arcs`, whose docstring says why it holds the full path's exact arc, an
 R arc's irrational centre included), which :meth:`DoublePath.enclosure` joins to the rows' box; a helix's
-third axis moves monotonically, so the rows hold it.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
+third axis moves monotonically, so the rows hold it.  The pass keeps a quick box of each arc (``r_screen``,
+``ij_screen``: no sweep, no square root for R) and :meth:`DoublePath.refine` narrows it to the sweep's box
+(``r_arc``, ``ij_arc``) when a proof needs it; each holds the arc, so their intersection does.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
 entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
 bound's offset term covers the largest work offset plus the largest length.
 
@@ -49,11 +51,15 @@ loops, a motion while the units, distance mode or work offset are still the mach
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error; an arc in G18/G19, with P or K, without axis
 words or a centre, of a radius about 0, with ends near or past the arc tolerance, an R arc of a chord about
-0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those); I, J or R without G2/G3,
-H without G43, G43 without H or with H0.
+0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those), an arc after a motion
+LinuxCNC may drop in a blended corner (:meth:`_Pass.tiny`) unless that motion is the program's first with the
+start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only after another); I, J or R
+without G2/G3, H without G43, G43 without H or with H0.
 
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
-layout; in a loop or sub body: the block's steps compiled once and kept, :data:`MAX_STEPS` lines at most).  A
+layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
+words only by :meth:`_Pass._plain`, any other by its shape; in a loop or sub body: the block's steps compiled
+once and kept, :data:`MAX_STEPS` lines at most).  A
 sub whose body has no ``#`` (no parameter read or written in it, nor in the arguments of the calls it makes)
 cannot see its call frame: it is called without one (``tests/gcode/test_double_pass_frames.py``).
 
