@@ -1046,7 +1046,7 @@ class _Pass:
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "BLEND": self.blend,
                                  "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
-                                 "DR": _DROPPED, "PAD": self.tiny_pad}
+                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -1082,9 +1082,10 @@ class _Pass:
             flag = IJ_SCREEN | (TURN if turn else 0)
             kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val('I')}, {val('J')}))"
         return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
-                # (tiny()'s test of the plane's first axis inline first, on the motion's end sa (row -2) and
-                # start: most arcs follow a motion that is not short)
-                f"if BLEND and len(C0) > 2 and abs(sa - C{ia}[-3]) < DR + (abs(sa) + abs(C{ia}[-3])) * 4e-15 + PAD "
+                # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
+                # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
+                # |t| < |t|: most arcs follow a motion that is not short)
+                f"if BLEND and len(C0) > 2 and (-LIM < sa - C{ia}[-3] < LIM or not -1e10 < sa < 1e10) "
                 "and st.tiny(len(C0) - 2) and not st.lone(len(C0) - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
