@@ -327,7 +327,7 @@ def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_w
 
 
 #: The code of a step: its body, its parameter writes, its values, the source of its plan's key, its names.
-_Code = tuple[list[str], list[str], list[str], str, dict]
+_Code = tuple[list[str], list[str], list[str], str | None, dict]
 
 
 class _Pass:
