@@ -1085,11 +1085,11 @@ class _Pass:
                 # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
                 # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
                 # |t| < |t|: most arcs follow a motion that is not short)
-                f"if BLEND and len(C0) > 2 and (-LIM < sa - C{ia}[-3] < LIM or not -1e10 < sa < 1e10) "
-                "and st.tiny(len(C0) - 2) and not st.lone(len(C0) - 2): "
+                f"if BLEND and n > 2 and (-LIM < sa - C{ia}[-3] < LIM or not -1e10 < sa < 1e10) "
+                "and st.tiny(n - 2) and not st.lone(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + len(C0) - 1); AB(box)", kind]
+                "AR(st.row0 + n - 1); AB(box)", kind]
 
     def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
@@ -1114,11 +1114,13 @@ class _Pass:
             ia, ib = self.arc_axes
             body.append(f"sa = pos[{ia}]; sb = pos[{ib}]")
         body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
-        body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
-        body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+        body += [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        set_axes = {i for _k, i in axes}
+        body += [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+        body.append("n = len(C0)")
         if arc:
             body += self._arc_body(others)
-        body.append(f"if len(C0) >= {self.rows}: st.full()")
+        body.append(f"if n >= {self.rows}: st.full()")
         if not arc:
             body.append("if not mode: st.rapids += 1")
         return body
