@@ -48,7 +48,7 @@ def _box(b: tuple[float, float, float, float]) -> tuple[dict[str, Fraction], dic
     return {"X": Fraction(b[0]), "Y": Fraction(b[2])}, {"X": Fraction(b[1]), "Y": Fraction(b[3])}
 
 
-@settings(max_examples=4 * EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200)
+@settings(max_examples=2 * EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200)
 @given(coord, coord, coord, coord, st.sampled_from([0.5000001, 0.500001, 0.51, 0.7, 1.0, 3.0, 250.0]),
        st.booleans(), st.booleans())
 def test_the_r_screen_holds_the_exact_arc(sx, sy, ex, ey, factor, clockwise, major):
@@ -67,7 +67,7 @@ def test_the_r_screen_holds_the_exact_arc(sx, sy, ex, ey, factor, clockwise, maj
     check_arc_in_box(seg, *_box(screen))
 
 
-@settings(max_examples=4 * EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200)
+@settings(max_examples=2 * EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200)
 @given(coord, coord, st.integers(-30000, 30000), st.integers(-30000, 30000), st.floats(-7, 7),
        st.sampled_from([0, 0, 1, -1, 5, -20]), st.booleans())
 def test_the_ij_screen_holds_the_exact_arc(sx, sy, i, j, turn, off, clockwise):
@@ -197,7 +197,7 @@ def test_the_zero_motion_then_arc_is_taken_by_the_pass():
 
 # -- plain arc programs past 512 lines: the pass against fast=False ------------------------------------------
 
-@settings(max_examples=max(3, EXAMPLES // 10), deadline=None, derandomize=EXAMPLES <= 200,
+@settings(max_examples=max(3, EXAMPLES // 15), deadline=None, derandomize=EXAMPLES <= 200,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
                                  HealthCheck.function_scoped_fixture])
 @given(arc_programs(), st.sampled_from(["1000", "30", "8", "2.5"]))
