@@ -33,15 +33,14 @@ F0 = Fraction(0)
 FAST_PATH_MIN_LINES = 512
 #: Plain LinuxCNC programs (no ``#``, no o-word) the double pass is tried first for: from
 #: :data:`FAST_PATH_MIN_LINES` lines (below, the full path imports no numpy either and is as quick) up to this
-#: size, where a line counts 1 and an arc (an ``R`` or ``J`` in the text) :data:`PLAIN_PASS_ARC` more, and with
-#: arcs on at most one line in :data:`PLAIN_PASS_ARC_SHARE`.  It is the crossover of the pass (no numpy: about
-#: 2 us a line, 6 us an arc, and a compiled step per line shape: arc lines have hundreds) and the fast path
-#: (numpy's import and set-up, then about 1 us a line), measured per class (specs/performance.md, "Plain
-#: programs in the double pass"): CAM G1 with a few arcs up to some 57,000 lines; programs of R or I/J arcs
-#: are as quick or quicker on the fast path at every size measured (1,000-100,000 lines, a quiet machine).
+#: size, where a line counts 1, an R arc (an ``R`` in the text) :data:`PLAIN_PASS_R_ARC` more and an I/J arc (a
+#: ``J``) :data:`PLAIN_PASS_ARC` more.  It is the crossover of the pass (no numpy: about 2 us a line, 1-2 us more
+#: an R arc, 3 us more an I/J arc) and the fast path (numpy's import and set-up, about 0.06 s, then about
+#: 1-2.5 us a line), measured per class (specs/performance.md, "Plain programs in the double pass"): CAM G1
+#: with a few arcs up to some 57,000 lines, R arcs on every line up to some 30,000, I/J arcs up to some 20,000.
 PLAIN_PASS_SIZE = 60_000
-PLAIN_PASS_ARC = 3
-PLAIN_PASS_ARC_SHARE = 10
+PLAIN_PASS_ARC = 2
+PLAIN_PASS_R_ARC = 1
 
 
 def interpretation(source: ProgramSource, machine: Machine, options: VerifyOptions, *,
@@ -209,12 +208,15 @@ def _double_pass_reads(text: str | FileText) -> bool:
     False
     >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G1 X1 Y1\n" * 600)  # plain, small: the pass first
     True
-    >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G2 X1 Y1 R5\n" * 600)  # arcs: the fast path is quicker
+    >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G2 X1 Y1 R5\n" * 600)  # R arcs, small: the pass too
+    True
+    >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G2 X1 Y1 I5 J0\n" * 25_000)  # I/J arcs: the fast path
     False
     """
     if "#" in text:
         return True
-    if any(k in text for k in _OWORD_KEYWORDS):
+    # an o-word line has an "o" (one quick scan; the keywords' 27 scans cost some 9 ms in 10k lines of arcs)
+    if ("o" in text or "O" in text) and any(k in text for k in _OWORD_KEYWORDS):
         pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
         if any(_oword_line().search(p) is not None for p in pieces):
             return True
@@ -229,8 +231,9 @@ def _small_plain(text: str | FileText) -> bool:
     lines = _line_count(text)  # type: ignore[arg-type]  # FileText counts too
     if lines < FAST_PATH_MIN_LINES or lines > PLAIN_PASS_SIZE:
         return False
-    arcs = sum(text.count(letter) for letter in "RrJj")
-    return lines + PLAIN_PASS_ARC * arcs <= PLAIN_PASS_SIZE and arcs * PLAIN_PASS_ARC_SHARE <= lines
+    r_arcs = text.count("R") + text.count("r")
+    ij_arcs = text.count("J") + text.count("j")
+    return lines + PLAIN_PASS_R_ARC * r_arcs + PLAIN_PASS_ARC * ij_arcs <= PLAIN_PASS_SIZE
 
 
 def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,

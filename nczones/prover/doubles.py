@@ -44,6 +44,10 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
     ``path_tolerance`` (``G64 P p``, whose Q is p) the path stays within ``2 p`` of the programmed one: the
     margin grows by that much instead (a path with arcs is left to the full path there).
 
+    Arcs: the pass keeps a quick box of each arc (a screen, :mod:`~nczones.gcode.linuxcnc.double_arcs`); a box
+    with arcs that does not fit (and a corner next to one) is tried again with its arcs' sweep boxes
+    (:meth:`~nczones.gcode.linuxcnc.doubles.DoublePath.refine`, once per arc) before it splits.
+
     Arcs (``specs/path-modes.md``, "The enclosure without tolerance"): a rounded corner next to an arc lies in
     the Minkowski sum of the two motions' boxes less the corner ``C``, which a box holding both need not
     hold.  A box of two or more motions with an arc is proved grown by its own size on every side
@@ -72,7 +76,12 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
             lo, hi = _grown(lo, hi)
         if box_fits(allowed, lo, hi, margin, zero):
             if corners and last < path.motions and not _corner_fits(path, allowed, margin, last):
-                return None
+                if not (arcs and _refine(path, last, last + 1) and _corner_fits(path, allowed, margin, last)):
+                    return None
+            continue
+        if arcs and _refine(path, first, last):
+            todo.append((first, last))  # the same motions again, with their arcs' sweep boxes
+            boxes -= 1
             continue
         if first == last:
             return None
@@ -80,6 +89,13 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         size = FIRST_BOX if n > FIRST_BOX * SPLIT and first == start and last == path.motions else -(-n // SPLIT)
         todo.extend((a, min(a + size - 1, last)) for a in range(first, last + 1, size))
     return boxes
+
+
+def _refine(path: Any, first: int, last: int) -> bool:
+    """Narrow the quick boxes of the arcs among motions ``first``..``last`` to their sweep boxes
+    (:meth:`~nczones.gcode.linuxcnc.doubles.DoublePath.refine`); whether one was narrowed."""
+    refine = getattr(path, "refine", None)
+    return bool(refine is not None and refine(first, last))
 
 
 def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
@@ -95,10 +111,13 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
     motions), which must then fit; a window that does not hold them gives False (the pass declines).
 
     An arc on either side: the Minkowski sum of the two motions' whole boxes less the corner's box (a sound
-    superset of the region of specs/path-modes.md); next to a motion that may be dropped, False."""
+    superset of the region of specs/path-modes.md); next to a motion that may be dropped, False, but for the
+    program's first motion (``k == 1``: nothing before it to join the arc to, whether it is dropped or not)."""
     arcs = getattr(path, "arcs", 0) and path.has_arcs(k, k + 1)
     if arcs:
-        if may_be_zero(path, k) or may_be_zero(path, k + 1):
+        # the program's first motion has no motion before it: dropped, the arc runs from where it began (no
+        # corner); else its corner with the arc is the one bounded below (the full path: CornerCheck)
+        if (k > 1 and may_be_zero(path, k)) or may_be_zero(path, k + 1):
             return False
         (l1, h1), (l2, h2), (lc, hc) = path.enclosure(k, k), path.enclosure(k + 1, k + 1), path.enclosure(k + 1, k)
         lo = {a: l1[a] + l2[a] - hc[a] for a in l1}

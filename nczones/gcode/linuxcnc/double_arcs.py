@@ -34,6 +34,11 @@ is within them of 0 or of a whole turn (the exact one may be either: LinuxCNC ma
 ray a whole turn), all four are taken.  Taking a direction the exact sweep does not contain only grows
 the box, which stays sound.
 
+Quick boxes: :func:`r_screen` (the discs of radius ``2|R|`` about the ends, or for ``R > 0`` the disc on the
+chord, no square root) and :func:`ij_screen` (the centre +- the larger radius) hold the arc by the same error
+terms (their docstrings) and decline exactly what :func:`r_arc` / :func:`ij_arc` decline or more; the pass
+keeps them and :func:`refined` gives the sweep's box when a proof needs a tighter one.
+
 What declines (the full path errors or decides otherwise there): a radius about 0 (GC304 exactly at 0), an
 I/J arc whose radii differ near or past the arc tolerance's rule (GC301), an R arc whose chord is about 0
 (GC303) or about ``2|R|`` or longer (a half circle or GC302).
@@ -47,7 +52,7 @@ from typing import Any
 
 from ...exact import to_float
 
-__all__ = ["ij_arc", "r_arc", "radius_rule"]
+__all__ = ["ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined"]
 
 _U = 2.0**-52
 _TAU = 2.0 * math.pi
@@ -85,7 +90,36 @@ def _linuxcnc_accepts(diff: float, big: float) -> bool:
 
 def ij_arc(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,
            tol: float, turn: bool = False) -> Any:
-    """The box ``(xlo, xhi, ylo, yhi)`` (doubles, outer bounds) holding the full path's I/J arc from ``(sx, sy)``
+    """The box of :func:`ij_check`'s arc (:func:`_box`), or its ``str``."""
+    got = ij_check(sx, sy, ex, ey, i, j, cw, offb, tol, turn)
+    if got.__class__ is str:
+        return got
+    return _box(*got)
+
+
+def ij_screen(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,
+              tol: float, turn: bool = False) -> Any:
+    """A box holding the full path's I/J arc, quicker than :func:`ij_arc`'s (no sweep), or :func:`ij_check`'s
+    ``str``: the disc about the centre ``C'`` of radius the larger radius ``big`` (the arc lies in the annulus
+    about the exact centre ``C`` of radii ``r_min``..``r_max``; ``|C - C'|`` and ``|r_max - big|`` are below
+    ``err / 4`` each, :func:`ij_check`), widened by ``2 err``, far above those and the rounding of the four
+    sums (each below ``m 2**-52``).  :func:`refined` narrows it to :func:`ij_arc`'s box when a proof needs it.
+
+    >>> [round(v, 9) + 0.0 for v in ij_screen(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, False, 0.0, 0.002)]
+    [-1.0, 1.0, -1.0, 1.0]
+    """
+    got = ij_check(sx, sy, ex, ey, i, j, cw, offb, tol, turn)
+    if got.__class__ is str:
+        return got
+    cx, cy, big, err = got[4], got[5], got[10], got[12]
+    w = big + 2 * err
+    return (cx - w, cx + w, cy - w, cy + w)
+
+
+def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,
+             tol: float, turn: bool = False) -> Any:
+    """:func:`_box`'s arguments for the box ``(xlo, xhi, ylo, yhi)`` (doubles, outer bounds) holding the full
+    path's I/J arc from ``(sx, sy)``
     to ``(ex, ey)`` (machine doubles) with centre offsets ``i``, ``j``, or a ``str``: why the pass declines.
     ``offb`` bounds the work offsets' magnitude (rounded up), ``tol`` is :func:`radius_rule`'s; ``turn``: the
     block names no axis of the plane, so the end is the start exactly (a whole turn).
@@ -109,20 +143,21 @@ def ij_arc(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: b
     wx, wy = ex - cx, ey - cy  # within 2 rho + 2 m 2**-52 of E - C (and -i, -j within m 2**-53 of S - C)
     r0, r1 = math.hypot(i, j), math.hypot(wx, wy)  # within 3 rho + 6 m 2**-52 of the exact radii
     # m: above every magnitude here (|C| <= |S| + r0, |E| <= |C| + r1), so rho <= (4 m + 2**-8) 2**-52
-    m = (abs(sx) if abs(sx) > abs(sy) else abs(sy)) + r0 + r1 + offb
+    # (conditionals for abs(): this runs per arc)
+    m = (sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + r0 + r1 + offb  # (>= max(|sx|, |sy|) + ...)
     err = (64.0 * m + 0.0625) * _U  # every error above is below err / 4
     if not (r0 > 4 * err and r1 > 4 * err):
         return "an arc of a radius about 0"
-    if not turn:
-        a, b = j * wx - i * wy, i * wx + j * wy  # the cross product of u = (-i, -j) and w, and -(u . w)
+    if not turn and i * wx + j * wy < 0:  # -(u . w), u = (-i, -j): the end ahead of the start's normal
+        a = j * wx - i * wy  # the cross product of u and w
         if abs(a) <= err * (abs(i) + abs(j) + abs(wx) + abs(wy)) * 1.01 + 2 * err * err + \
-                (abs(j * wx) + abs(i * wy)) * 2.0**-51 and b < 0:
+                (abs(j * wx) + abs(i * wy)) * 2.0**-51:
             return "an arc whose end may lie on the ray from the centre through its start"
     diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
     margin = diff + big * 1e-9 + 1e-9 + 2 * err
     if not (margin < tol if tol >= 0 else _linuxcnc_accepts(margin, big - margin)):
         return "an arc whose end is near or past the arc tolerance"
-    return _box(sx, sy, ex, ey, cx, cy, -i, -j, wx, wy, big, diff + err, err, cw)
+    return (sx, sy, ex, ey, cx, cy, -i, -j, wx, wy, big, diff + err, err, cw)
 
 
 def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float) -> Any:
@@ -158,6 +193,81 @@ def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: 
     k = (h if (r > 0) != cw else -h) / length  # centre to the left of the chord: G3 with R > 0, G2 with R < 0
     cx, cy = (sx + ex) / 2 - k * dy, (sy + ey) / 2 + k * dx
     return _box(sx, sy, ex, ey, cx, cy, sx - cx, sy - cy, ex - cx, ey - cy, ar, err, err, cw)
+
+
+def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float) -> Any:
+    """A box holding the full path's R arc, with no square root (quicker than :func:`r_arc`'s), or a ``str``:
+    why the pass declines; it accepts only arcs :func:`r_arc` accepts.  :func:`refined` narrows it to
+    :func:`r_arc`'s box when a proof needs it.
+
+    The exact arc lies on a circle of radius ``|R|`` through ``S`` and ``E``: within ``2|R|`` of each.  An arc
+    with ``R > 0`` is at most a half circle (the short way), so from each of its points the chord is seen under
+    an angle of at least 90 degrees (the inscribed angle over the long arc, ``pi - theta / 2`` for a sweep
+    ``theta <= pi``): it lies in the disc on the chord, of centre ``M = (S + E) / 2`` and radius
+    ``|E - S| / 2 <= (|dx| + |dy|) / 2``.  With the doubles: ``|S - S'|``, ``|E - E'| <= rho`` per component
+    (``rho`` of :func:`r_arc`, below ``5 m 2**-52``), ``|R| <= |R'| (1 + 2**-53)``, so the box of ``S' +- 2|R'|``
+    and ``E' +- 2|R'|`` (``R < 0``) or ``M' +- (|dx'| + |dy'|) / 2`` (``R > 0``: ``M'`` and the half-sum within
+    ``3 rho + 3 m 2**-52`` of the exact ones) widened by ``err = (64 m + 2**-4) 2**-52`` holds it; ``err`` is
+    above those terms plus the rounding of the sums (each below ``m 2**-52``).  ``m`` here,
+    ``2 (|sx| + |sy| + |R|) + |dx| + |dy|`` plus the offsets' bound, is at least :func:`r_arc`'s
+    (``|ex| <= |sx| + |dx|``).
+
+    The decline: ``ed`` here is above :func:`r_arc`'s (``9 m`` for its ``8 m``, far above the rounding of
+    either ``m``; ``|E' - S'| <= |dx'| + |dy'|``) and ``e_x`` grows with it; ``dd > 17 ed**2`` gives
+    ``|E' - S'| > 4 ed`` (``dd`` and the hypot within a few ulps), so every arc taken here passes
+    :func:`r_arc`'s test (whose argument says the full path takes it, neither GC302 nor GC303).
+
+    >>> [round(v, 9) + 0.0 for v in r_screen(1.0, 0.0, 0.0, 1.0, 1.0, 0.0)]  # in the disc on the chord
+    [-0.5, 1.5, -0.5, 1.5]
+    >>> [round(v, 9) + 0.0 for v in r_screen(1.0, 0.0, 0.0, 1.0, -1.0, 0.0)]  # within 2|R| of both ends
+    [-1.0, 2.0, -1.0, 2.0]
+    >>> r_screen(0.0, 0.0, 2.0, 0.0, 1.0, 0.0)  # a half circle: the full path's
+    'an R arc of a chord about 0 or about 2|R| or longer'
+    """
+    dx = ex - sx
+    dy = ey - sy
+    ax = dx if dx >= 0.0 else -dx  # (conditionals: quicker than abs() calls, on a path run per arc)
+    ay = dy if dy >= 0.0 else -dy
+    ar = r if r >= 0.0 else -r
+    l1 = ax + ay
+    m = 2.0 * ((sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + ar) + l1 + offb
+    ed = (9.0 * m + 2.0**-7 + l1) * _U  # above r_arc's 2 rho + |E' - S'| 2**-52
+    dd = dx * dx + dy * dy
+    rr = r * r
+    x = rr - dd / 4
+    # r_arc's e_x, with this ed
+    if not (dd > 17 * ed * ed and x > _HALF * rr
+            and x > 8 * (rr * 2.0**-51 + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U)):
+        return "an R arc of a chord about 0 or about 2|R| or longer"
+    err = (64.0 * m + 0.0625) * _U
+    if r > 0.0:
+        w = l1 / 2 + err
+        mx = (sx + ex) / 2
+        my = (sy + ey) / 2
+        return (mx - w, mx + w, my - w, my + w)
+    w = 2 * ar + err
+    if sx > ex:
+        xlo, xhi = sx - w, ex + w
+    else:
+        xlo, xhi = ex - w, sx + w
+    if sy > ey:
+        return (xlo, xhi, sy - w, ey + w)
+    return (xlo, xhi, ey - w, sy + w)
+
+
+#: Arc kinds :func:`refined` reads (``DoublePath.arc_more``'s flags): the box is already :func:`r_arc`'s or
+#: :func:`ij_arc`'s, an R arc's screen, an I/J arc's; plus these bits: clockwise, a whole turn.
+EXACT, R_SCREEN, IJ_SCREEN, CW, TURN = 0, 1, 2, 4, 8
+
+
+def refined(flag: int, sx: float, sy: float, ex: float, ey: float, p: float, q: float, offb: float,
+            tol: float) -> Any:
+    """The box of :func:`r_arc` (``flag & 3 == R_SCREEN``, radius ``p``) or :func:`ij_arc` (``I = p``,
+    ``J = q``) for an arc whose screen was kept, or its ``str``."""
+    cw = bool(flag & CW)
+    if flag & 3 == R_SCREEN:
+        return r_arc(sx, sy, ex, ey, p, cw, offb)
+    return ij_arc(sx, sy, ex, ey, p, q, cw, offb, tol, bool(flag & TURN))
 
 
 #: Quadrants by the signs of a vector's components (``2 (x < 0) + (y < 0)``): 0 is x > 0, y > 0, then

@@ -26,7 +26,9 @@ end points, so the box of a run of motions' end points, with the point before th
 position of those motions.  An arc (G2/G3 in G17) is not: each arc row also has its own box
 (:mod:`nczones.gcode.linuxcnc.double_arcs`, whose docstring says why it holds the full path's exact arc, an
 R arc's irrational centre included), which :meth:`DoublePath.enclosure` joins to the rows' box; a helix's
-third axis moves monotonically, so the rows hold it.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
+third axis moves monotonically, so the rows hold it.  The pass keeps a quick box of each arc (``r_screen``,
+``ij_screen``: no sweep, no square root for R) and :meth:`DoublePath.refine` narrows it to the sweep's box
+(``r_arc``, ``ij_arc``) when a proof needs it; each holds the arc, so their intersection does.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
 entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
 bound's offset term covers the largest work offset plus the largest length.
 
@@ -49,11 +51,15 @@ loops, a motion while the units, distance mode or work offset are still the mach
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error; an arc in G18/G19, with P or K, without axis
 words or a centre, of a radius about 0, with ends near or past the arc tolerance, an R arc of a chord about
-0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those); I, J or R without G2/G3,
-H without G43, G43 without H or with H0.
+0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those), an arc after a motion
+LinuxCNC may drop in a blended corner (:meth:`_Pass.tiny`) unless that motion is the program's first with the
+start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only after another); I, J or R
+without G2/G3, H without G43, G43 without H or with H0.
 
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
-layout; in a loop or sub body: the block's steps compiled once and kept, :data:`MAX_STEPS` lines at most).  A
+layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
+words only by :meth:`_Pass._plain`, any other by its shape; in a loop or sub body: the block's steps compiled
+once and kept, :data:`MAX_STEPS` lines at most).  A
 sub whose body has no ``#`` (no parameter read or written in it, nor in the arguments of the calls it makes)
 cannot see its call frame: it is called without one (``tests/gcode/test_double_pass_frames.py``).
 
@@ -70,6 +76,7 @@ import re
 from array import array
 from bisect import bisect_left, bisect_right
 from fractions import Fraction
+from operator import itemgetter
 from typing import TYPE_CHECKING, Any
 
 from ...errors import GcodeError
@@ -90,7 +97,17 @@ from ..lexer import magic_comment
 from ..parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, parse_line
 from ..program import scan_oword
 from ..shapes import LAYOUT, RUNS, shape_source, shaped
-from .double_arcs import ij_arc, r_arc, radius_rule
+from .double_arcs import (
+    CW,
+    EXACT,
+    IJ_SCREEN,
+    R_SCREEN,
+    TURN,
+    ij_screen,
+    r_screen,
+    radius_rule,
+    refined,
+)
 
 if TYPE_CHECKING:
     from ..source import FileText
@@ -108,9 +125,6 @@ PIECE = 1 << 20
 #: a few hundred bytes each); the lines of a longer body are compiled again from their piece at each run, so
 #: memory stays flat however long a body is.
 MAX_STEPS = 1 << 16
-#: Lines of a layout the pass runs through the shape's step and the layout's cutter before it compiles the two
-#: into one step for the layout (:meth:`_Pass._layout_step`).
-COMPILE_AFTER = 64
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
 _GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
@@ -132,6 +146,10 @@ _LETTERS = frozenset("GMFSXYZIJRH")
 #: Letters whose word is a literal code (H: the tool length register, read like a G or M code).
 _CODE_LETTERS = "GMH"
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
+#: A line of words of a letter and a number only (:meth:`_Pass._plain`; the parser's ``_NUMBER``), and a word.
+_PLAIN = re.compile(r"[ \t]*(?:[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)[ \t]*)+")
+_PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
+_DIGIT_RUNS = re.compile(rb"0+")  # (in a layout: every digit is 0)
 
 
 #: M codes the pass follows beside M2/M30 (the code table's claims), one to a block: the spindle (M3, M4, M5)
@@ -172,12 +190,16 @@ class DoublePath:
     #: the row ``columns[a][0]`` is (a window of a long program: rows ``row0``..``motions``; 0: every row)
     row0: int = 0
     #: arcs (G2/G3): how many in the whole program, and those of these rows: their rows (motions, ascending)
-    #: and per plane axis (``arc_axes``) the outer bounds (doubles) of each arc's box (``double_arcs``)
+    #: and, four doubles an arc, the outer bounds ``xlo, xhi, ylo, yhi`` of its box on the plane axes
+    #: (``arc_axes``; :mod:`.double_arcs`)
     arcs: int = 0
     arc_rows: array | None = None
     arc_axes: tuple[int, ...] = ()
-    arc_lo: tuple[array, ...] = ()
-    arc_hi: tuple[array, ...] = ()
+    arc_boxes: array | None = None
+    #: what :meth:`refine` needs: three doubles an arc: its kind (``double_arcs.EXACT``: its box is the sweep's
+    #: already; else a quick screen's, ``double_arcs.refined``'s flags) and its words (R and 0, or I and J); the
+    #: offsets' bound and the radius rule: ``(words, offb, rule)``
+    arc_more: Any = None
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -219,10 +241,42 @@ class DoublePath:
         begin, end = bisect_left(rows, first), bisect_right(rows, last)
         if begin >= end:
             return
+        boxes = self.arc_boxes
+        assert boxes is not None
         for k, a in enumerate(self.arc_axes):
             name = self.axes[a]
-            lo[name] = min(lo[name], Fraction(min(self.arc_lo[k][begin:end])))
-            hi[name] = max(hi[name], Fraction(max(self.arc_hi[k][begin:end])))
+            lo[name] = min(lo[name], Fraction(min(boxes[4 * begin + 2 * k:4 * end:4])))
+            hi[name] = max(hi[name], Fraction(max(boxes[4 * begin + 2 * k + 1:4 * end:4])))
+
+    def refine(self, first: int, last: int) -> bool:
+        """Narrow the boxes of the arcs among motions ``first``..``last`` that hold a quick screen's
+        (:func:`~nczones.gcode.linuxcnc.double_arcs.r_screen`, ``ij_screen``) to the sweep's boxes
+        (``r_arc``, ``ij_arc``: the box kept is the two's intersection, which holds the arc as each does);
+        whether one was narrowed.  A proof calls it when a box with arcs does not fit."""
+        more, rows = self.arc_more, self.arc_rows
+        if more is None or not rows:
+            return False
+        words, offb, rule = more
+        boxes = self.arc_boxes
+        assert boxes is not None
+        begin, end = bisect_left(rows, first), bisect_right(rows, last)
+        ia, ib = self.arc_axes
+        ca, cb = self.columns[ia], self.columns[ib]
+        done = False
+        for k in range(begin, end):
+            flag = int(words[3 * k])
+            if flag == EXACT:
+                continue
+            words[3 * k] = EXACT
+            r = rows[k] - self.row0  # the arc's end row; the row before is its start (held: r >= 1)
+            box = refined(flag, ca[r - 1], cb[r - 1], ca[r], cb[r], words[3 * k + 1], words[3 * k + 2], offb, rule)
+            if box.__class__ is str:  # (r_screen and ij_screen accept only arcs these accept)
+                continue
+            done = True
+            b = 4 * k
+            boxes[b:b + 4] = array("d", (max(boxes[b], box[0]), min(boxes[b + 1], box[1]),
+                                         max(boxes[b + 2], box[2]), min(boxes[b + 3], box[3])))
+        return done
 
     def has_arcs(self, first: int, last: int) -> bool:
         """Is one of motions ``first``..``last`` (of these rows) an arc?"""
@@ -273,7 +327,7 @@ def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_w
 
 
 #: The code of a step: its body, its parameter writes, its values, the source of its plan's key, its names.
-_Code = tuple[list[str], list[str], list[str], str, dict]
+_Code = tuple[list[str], list[str], list[str], str | None, dict]
 
 
 class _Pass:
@@ -299,7 +353,9 @@ class _Pass:
         #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it;
         #: a streamed file, FileText, is read from the file a piece at a time, in order but for jumps)
         self.src = _Lines(text, crlf="\r" in text)
-        self.by_layout: dict[bytes, Any] = {}  # layout -> the step of its lines (the line itself its argument)
+        #: layout -> (its shape's step, the layout's cutter): ``step(cut(line))`` runs a line of it (nothing is
+        #: compiled per layout: CAM output with arcs has hundreds of layouts of a few dozen shapes)
+        self.by_layout: dict[bytes, tuple[Any, Any]] = {}
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
         self.index = {a: i for i, a in enumerate(self.axes)}
@@ -337,7 +393,8 @@ class _Pass:
         self.control_lines: dict[str, Any] = {}  # an O-word line's text -> its compiled condition or arguments
         #: each shape's compiled step in this pass (the shape itself is the key: it stays alive, its id unused)
         self.shape_steps: dict[Any, Any] = {}
-        self.shape_code: dict[Any, _Code] = {}
+        self.plain_steps: dict[str, Any] = {}  # a plain line's letters -> its step (_plain)
+        self.plain_kinds: dict[bytes, Any] = {}  # a plain layout, its digit runs made one -> its step (_plain)
         self.pindex: dict[str, int] = {}
         from .state import linuxcnc_state_parameters
 
@@ -427,17 +484,18 @@ class _Pass:
 
     def _straight(self, i: int, end: int) -> int:
         """Run lines ``i``..``end - 1``, read once (not in a loop or call): the next line, or -1 when the
-        program ended.  A line whose layout has a step (``by_layout``) runs it on the line itself."""
+        program ended.  A line whose layout has a step (``by_layout``) runs it on the literals its layout's
+        cutter takes out of it."""
         src, by_layout = self.src, self.by_layout
         while i < end:
             lo, hi, lines, layouts = src.piece(i)
             if layouts is not None:
                 k = i - lo
                 for layout in layouts[k:min(end, hi) - lo]:
-                    fn = by_layout.get(layout)
-                    if fn is None:
+                    got = by_layout.get(layout)
+                    if got is None:
                         break
-                    if fn(lines[k]):
+                    if got[0](got[1](lines[k])):
                         return -1
                     k += 1
                 i = k + lo
@@ -479,9 +537,10 @@ class _Pass:
         if not all(math.isfinite(sum(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
-        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - self.arcs,
-                          self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, self.arcs,
-                          self.arc_rows, self.arc_axes, self.arc_lo, self.arc_hi)
+        arcs = self.arcs + len(self.arc_rows)
+        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - arcs,
+                          self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, arcs,
+                          self.arc_rows, self.arc_axes, self.arc_boxes, (self.arc_words, self.offb, self.rule))
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -498,8 +557,10 @@ class _Pass:
         self.row0 += keep
         gone = bisect_right(self.arc_rows, self.row0)  # the arcs of the rows dropped (motions up to row0)
         if gone:
-            for col in (self.arc_rows, *self.arc_lo, *self.arc_hi):
-                del col[:gone]
+            del self.arc_rows[:gone]
+            self.arcs += gone
+            del self.arc_boxes[:4 * gone]
+            del self.arc_words[:3 * gone]
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -511,28 +572,18 @@ class _Pass:
         if hit is None:
             if not line.strip():
                 return None, ()
-            return self._fresh(line)
+            plain = self._plain(line, layout)
+            if plain is None:
+                return self._fresh(line)
+            step, cut = plain
+            if own_layout is not None and layout == own_layout:
+                self.by_layout[layout] = plain
+            return step, cut(line)
         cut = hit[1]
         step = self._shape_step(hit[2])
         if own_layout is not None and layout == own_layout:
-            self.by_layout[layout] = self._layout_step(layout, step, hit[2], cut)
+            self.by_layout[layout] = (step, cut)
         return step, cut(line)
-
-    def _layout_step(self, layout: bytes, step: Any, shape: Any, cut: Any) -> Any:
-        """The step of the lines of ``layout`` (the line itself its argument): ``step`` of the literals
-        ``cut`` takes out of the line at first, and after :data:`COMPILE_AFTER` lines the step compiled with
-        the cutter in it (a compilation costs as much as some thousand calls: a layout of a few lines is not
-        worth one; CAM output with arcs has hundreds of layouts)."""
-        left = COMPILE_AFTER
-
-        def first_lines(line: str) -> Any:
-            nonlocal left
-            left -= 1
-            if not left:
-                self.by_layout[layout] = self._shape_step(shape, cut)
-            return step(cut(line))
-
-        return first_lines
 
     # -- control lines ------------------------------------------------------------------------------------
     def _controls(self) -> dict[int, tuple]:
@@ -718,6 +769,48 @@ class _Pass:
         plan = self._plan(_letters(pl.words), tuple(int(c) for c in codes))
         return self._exec(body, writes, vals, None, {"PLAN": plan})
 
+    def _plain(self, line: str, layout: bytes) -> tuple[Any, Any] | None:
+        """``(step, cutter)`` of the lines of the layout of ``line`` when it is words of a letter and a number
+        only (``G2 X-1.5 Y.25 R3``, the most common CAM line), else None.  No shape is made
+        (:func:`~nczones.gcode.shapes.shaped` compiles one for the full path's runner, about 1 ms; CAM output
+        with arcs has dozens, and hundreds of layouts): the line is parsed (:func:`parse_line`) and its words
+        must be the numbers the pattern finds, each its own ``NUM`` (``float`` of its text, sign included); the
+        cutter slices those texts (the lines of a layout have their numbers at the same columns, and parse
+        alike: only digits differ), and the step is compiled once per sequence of letters.  One line is parsed per
+        layout with its runs of digits made one (``G2 X0.0 Y0.0`` for ``G2 X-1.25 Y3.5`` and ``G3 X12.5 Y0.75``):
+        the pattern, like the parser's numbers (``_NUMBER``), reads a run of digits of any length alike."""
+        found = _PLAIN.fullmatch(line)
+        if found is None:
+            return None
+        spans = [m.span(2) for m in _PLAIN_WORD.finditer(line)]
+        cuts = [slice(a, b) for a, b in spans]
+        cut = itemgetter(*cuts) if len(cuts) > 1 else (lambda text, c=cuts[0]: (text[c],))
+        kind = _DIGIT_RUNS.sub(b"0", layout)
+        step = self.plain_kinds.get(kind)
+        if step is not None:
+            return step, cut
+        try:
+            pl = parse_line(line, 1, "<double pass>")
+        except GcodeError:  # the full path reports it
+            raise Declined("a line that does not parse") from None
+        if pl.oword is not None or pl.delete or pl.percent or pl.unsupported is not None or pl.comments \
+                or pl.assigns or len(pl.words) != len(spans):
+            return None
+        letters = ""
+        leaf_of: dict[int, str] = {}
+        for k, (word, (a, b)) in enumerate(zip(pl.words, spans)):
+            letter, tree = word[0], word[1]
+            if tree[0] != NUM or not tree[1] == float(line[a:b]) or line[a - 1].upper() != letter:
+                return None
+            leaf_of[id(tree)] = f"P[{k}]"
+            letters += letter
+        step = self.plain_steps.get(letters)
+        if step is None:
+            step = self.plain_steps[letters] = self._exec(*self._source_code(pl, leaf_of))
+        if len(self.plain_kinds) < MAX_STEPS:
+            self.plain_kinds[kind] = step
+        return step, cut
+
     def _fresh(self, line: str) -> tuple:
         """The step of an ASCII line without comments whose layout has no compiled shape yet."""
         try:
@@ -728,20 +821,19 @@ class _Pass:
             return self._shape_step(shape), literals
         return self._parsed(line), ()
 
-    def _shape_step(self, shape: Any, cut: Any = None) -> Any:
-        """The step of the lines of a shape, made once per pass: of its literals (``P``), or, given the layout's
-        cutter, of the line itself (the literals cut out of it first)."""
-        fn = self.shape_steps.get(shape if cut is None else cut)
-        if fn is not None:
-            return fn
-        code = self.shape_code.get(shape)
-        if code is None:
-            code = self.shape_code[shape] = self._shape_code(shape)
-        fn = self.shape_steps[shape if cut is None else cut] = self._exec(*code, cut=cut)
+    def _shape_step(self, shape: Any) -> Any:
+        """The step of the lines of a shape, of their literals (``P``), made once per pass."""
+        fn = self.shape_steps.get(shape)
+        if fn is None:
+            fn = self.shape_steps[shape] = self._exec(*self._shape_code(shape))
         return fn
 
     def _shape_code(self, shape: Any) -> _Code:
-        pl, leaf_of = shape_source(shape)
+        return self._source_code(*shape_source(shape))
+
+    def _source_code(self, pl: Any, leaf_of: dict[int, str]) -> _Code:
+        """The code of the step of the lines parsed as ``pl`` whose literals' sources (``P[k]``) are ``leaf_of``
+        (by ``id`` of their ``NUM`` nodes)."""
         if pl.oword is not None or pl.delete or pl.percent or pl.unsupported is not None or pl.comments:
             raise Declined("a line the double pass does not follow")
 
@@ -759,6 +851,8 @@ class _Pass:
         vals, codes = _words(em, pl.words, body, src)
         writes = _assigns(em, pl.assigns, body, index)
         letters = _letters(pl.words)
+        if not codes:  # one plan for every line (made when the first is run: a plan may decline)
+            return body, writes, vals, None, {"PLAN": self._plan(letters, ())}
         made: dict[Any, Any] = {}
 
         def plan_of(texts: Any) -> Any:
@@ -767,7 +861,7 @@ class _Pass:
             plan = made[texts] = self._plan(letters, tuple(_code(t) for t in every))
             return plan
 
-        key = "None" if not codes else codes[0] if len(codes) == 1 else "(" + ", ".join(codes) + ",)"
+        key = codes[0] if len(codes) == 1 else "(" + ", ".join(codes) + ",)"
         return body, writes, vals, key, {"PLANS": made, "PLAN_OF": plan_of}
 
     def _compiled_args(self, trees: Any) -> Any:
@@ -790,12 +884,9 @@ class _Pass:
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
-    def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict,
-              cut: Any = None) -> Any:
-        """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends);
-        ``step(line)`` with ``P = cut(line)`` first when a cutter is given."""
-        head = ["def step(P):"] if cut is None else ["def step(L):", "    P = CUT(L)"]
-        lines = head + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
+    def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict) -> Any:
+        """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends)."""
+        lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
         if key is None:
             lines.append("    plan = PLAN")
         else:
@@ -803,7 +894,6 @@ class _Pass:
         lines.append(f"    return plan(({''.join(v + ', ' for v in values)}))")
         scope = dict(self.env)
         scope.update(extra)
-        scope["CUT"] = cut
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
@@ -868,10 +958,10 @@ class _Pass:
         self.arc_axes: tuple[int, ...] = (ix, iy) if ix is not None and iy is not None else ()
         top = max((self.offset_bound[i] for i in self.arc_axes), default=Fraction(0))
         self.offb = math.nextafter(float(top), math.inf)  # at or above the plane axes' offsets
-        self.arcs = 0
+        self.arcs = 0  # the arcs of the rows dropped (full()); those held are arc_rows
         self.arc_rows = array("q")
-        self.arc_lo = (array("d"), array("d"))
-        self.arc_hi = (array("d"), array("d"))
+        self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
+        self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
 
     def tiny(self, row: int) -> bool:
         """May the motion that ends at ``row`` (of the columns held) be dropped by LinuxCNC: is it shorter than
@@ -879,6 +969,18 @@ class _Pass:
         pad = self.tiny_pad
         return all(abs(col[row] - col[row - 1]) < _DROPPED + (abs(col[row]) + abs(col[row - 1])) * 4e-15 + pad
                    for col in self.columns)
+
+    def lone(self, row: int) -> bool:
+        """Is the motion that ends at ``row`` the program's first, with the same doubles as the start on every
+        axis?  The full path (``CornerCheck._segment``, ``prover/blend.py``) skips a motion of length 0 (LinuxCNC's
+        canon drops it) and notes a short one as dropped only with a motion before it (``_dropped_corner``: the
+        corner is then between that motion and the next); before the first motion there is none, so an arc
+        after it is proved from its own start, as the pass's box holds it.  Equal doubles: the motion's exact
+        length is within the rows' bound (about ``1e-15`` of the coordinates), a motion of length 0 or one the
+        full path would drop, never one it runs."""
+        if self.row0 + row != 1:
+            return False
+        return all(col[1] == col[0] for col in self.columns)
 
     def _end(self, values: tuple) -> bool:
         """M2 or M30: the program ends."""
@@ -942,9 +1044,9 @@ class _Pass:
             raise Declined("I, J or R without a motion")
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_arc, "IJ_ARC": ij_arc, "BLEND": self.blend,
-                                 "AR": self.arc_rows.append, "XL": self.arc_lo[0].append, "XH": self.arc_hi[0].append,
-                                 "YL": self.arc_lo[1].append, "YH": self.arc_hi[1].append}
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "BLEND": self.blend,
+                                 "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
+                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -972,13 +1074,22 @@ class _Pass:
         ia, ib = self.arc_axes
         turn = self.axes[ia] not in others and self.axes[ib] not in others  # the end is the start: a whole turn
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
-        call = (f"R_ARC({ends}, {val('R')}, mode == 2, {self.offb!r})" if "R" in others
-                else f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})")
+        if "R" in others:
+            call = f"R_ARC({ends}, {val('R')}, {self.offb!r})"
+            kind = f"AW(({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}, {val('R')}, 0.0))"
+        else:
+            call = f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
+            flag = IJ_SCREEN | (TURN if turn else 0)
+            kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val('I')}, {val('J')}))"
         return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
-                "if BLEND and len(C0) > 2 and st.tiny(len(C0) - 2): "
+                # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
+                # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
+                # |t| < |t|: most arcs follow a motion that is not short)
+                f"if BLEND and n > 2 and (-LIM < sa - C{ia}[-3] < LIM or not -1e10 < sa < 1e10) "
+                "and st.tiny(n - 2) and not st.lone(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + len(C0) - 1); XL(box[0]); XH(box[1]); YL(box[2]); YH(box[3])", "st.arcs += 1"]
+                "AR(st.row0 + n - 1); AB(box)", kind]
 
     def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
@@ -1003,11 +1114,13 @@ class _Pass:
             ia, ib = self.arc_axes
             body.append(f"sa = pos[{ia}]; sb = pos[{ib}]")
         body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
-        body += [f"pos[{i}] = v[{k}] + off[{i}]" for k, i in axes]
-        body += [f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+        body += [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        set_axes = {i for _k, i in axes}
+        body += [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+        body.append("n = len(C0)")
         if arc:
             body += self._arc_body(others)
-        body.append(f"if len(C0) >= {self.rows}: st.full()")
+        body.append(f"if n >= {self.rows}: st.full()")
         if not arc:
             body.append("if not mode: st.rapids += 1")
         return body
