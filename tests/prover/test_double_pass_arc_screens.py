@@ -37,6 +37,7 @@ from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover.result import Verdict
 from tests.gcode.test_double_pass import arc_programs, check_arc_in_box
+from tests.machines import machine_text
 from tests.prover.test_double_pass_proof import both_ways, same_outcome
 
 AXES = ("X", "Y", "Z")
@@ -112,12 +113,9 @@ def test_the_refined_boxes_hold_the_full_paths_arcs(text):
 
 # -- a first motion of length 0 before an arc ----------------------------------------------------------------
 
-#: A mill starting at (0, 0, 0) in G64, with no work offsets; its zone's Y face at ``ymax``.
-_MACHINE = ('[machine]\nname = "arcs"\naxes = ["X", "Y", "Z"]\npulse = "0.0001"\ndialect = "linuxcnc"\n'
-            '[machine.rapid]\nX = "5000"\nY = "5000"\nZ = "5000"\n'
-            '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n'
-            '[[zones]]\nname = "travel"\nkind = "box"\nmin = {{ X = "-1000", Y = "-1000", Z = "-1000" }}\n'
-            'max = {{ X = "1000", Y = "{ymax}", Z = "1000" }}\n')
+#: A mill starting at (0, 0, 0) in G64, with no work offsets (box_5000, pulse 0.0001); its zone's Y face at
+#: ``ymax`` (:func:`_machine`).
+_TRAVEL_MAX = 'max = { X = "5000", Y = "5000", Z = "5000" }'
 #: From the start (0, 0, 0): G0 to it (length 0), then G2 from (0, 0) to (8, 0) with R5.
 ZERO_THEN_ARC = ["G0 X0 Y0", "G2 X8 Y0 R5", "G1 X0 Y0"]
 
@@ -130,7 +128,9 @@ def _decimal(v: Fraction) -> str:
 
 
 def _machine(ymax: str):
-    return parse_machine(_MACHINE.format(ymax=ymax))
+    text = machine_text("box_5000", set={"machine.pulse": "0.0001", "machine.dialect": "linuxcnc"})
+    assert _TRAVEL_MAX in text
+    return parse_machine(text.replace(_TRAVEL_MAX, f'max = {{ X = "5000", Y = "{ymax}", Z = "5000" }}'))
 
 
 def _variant(lines: list[str], variant: str) -> str:
