@@ -270,6 +270,9 @@ class FanucRunner:
         self.shape_codes: frozenset = frozenset(getattr(state, "shape_codes", ()) or ())
         self.current_pos = 0  # the offset of the line being executed
         digits = {"IS-A": 2, "IS-B": 3, "IS-C": 4}[self.settings.increment_system]
+        #: the box route's run reader (boxrun.read_box_run): the decimals a length may have, the layouts read
+        self.box_digits = digits
+        self.box_layouts: dict[str, Any] = {}
         self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
         self._long_inch = re.compile(rf"[XYZUVWIJKRQxyzuvwijkrq][ \t]*[+-]?\d*\.\d{{{digits + 2}}}|"
                                      rf"[ABCabc][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
@@ -772,6 +775,8 @@ class FanucRunner:
         fast = self.fast_runs
         declined = -1
         frames = self.frames
+        box_run = self.box_reader()
+        box_declined = -1
         while True:
             frame = frames[-1]
             source = frame.source
@@ -802,6 +807,15 @@ class FanucRunner:
                             declined = -1
                             continue
                         declined = pos
+                    if box_run is not None and pos != box_declined and len(frames) == 1 and not frame.loops \
+                            and source.src is main_src:
+                        ran = box_run(self, main_src.text, pos, lineno)
+                        if ran is not None:
+                            pos, lineno, full = ran
+                            if full:
+                                yield LANE_FULL
+                            continue
+                        box_declined = pos
                     got = self.read_plain(frame, pos, lineno, not (fast and pos in fast))
                     if got is None:
                         self.end_of_text(lineno)
@@ -834,6 +848,17 @@ class FanucRunner:
             elif r[1] is not None:  # the lane declined the motion: its block
                 yield r[1]
                 self.index += 1
+
+    def box_reader(self) -> Callable[..., Any] | None:
+        """The box route's run reader (:func:`nczones.gcode.fanuc.boxrun.read_box_run`) when the interpreter's
+        plain lane writes boxes (``columns.BoxSink``) of a main text held as a string, else None."""
+        sink = getattr(self.state, "row_sink", None)
+        if sink is None or not getattr(sink, "arcs", False) or self.fast_runs or type(self.main.src) is not StringSource \
+                or self.main.file != getattr(self.state, "file", None):
+            return None
+        from . import boxrun
+
+        return boxrun.read_box_run if boxrun.BOX_RUNS else None
 
     def plain_first(self, source: _Source, line: str, nxt: int, parsed: tuple, lineno: int) -> Any:
         """A plain line the plain lane takes (read_plain), not kept as a closure: as a closure's result

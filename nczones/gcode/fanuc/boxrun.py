@@ -1,0 +1,317 @@
+"""Runs of plain Fanuc lines read straight into the box of the numpy-free route (issue 36).
+
+On the box route (:mod:`nczones.prover.fanucboxes`) the interpreter's plain lane writes each straight move and
+arc of a run into a :class:`~nczones.gcode.fanuc.columns.BoxRows` box; reading a line through the language
+layer (``FanucRunner.read_plain`` -> ``scan_plain`` -> ``plain_first`` -> ``FanucInterpreter.lane`` /
+``_arc_lane``) costs 15-20 us, most of it making Fractions the box never keeps.  :func:`read_box_run` reads a
+run of such lines from the text itself: each line is keyed on its layout (its digits zeroed, as the LinuxCNC
+double pass keys its lines, ``gcode/shapes.py``), the layout read once into where its numbers are and what they
+are, and the line then updates the interpreter's state kept as scaled integers (``10**SCALE``, as the box's):
+the position (program value plus the offset, ``FanucInterpreter.lane``), the motion mode and the feed.  Each
+motion widens the box as the lane's would: a straight move by its end, an arc by
+:func:`~nczones.gcode.fanuc.columns.r_arc_box` / :func:`~nczones.gcode.fanuc.columns.centre_arc_box` and the ends
+of its other axes (``BoxRows.add_arc``), on the same integers.
+
+The subset, taken only in the state both lanes take (``FanucInterpreter.lane`` and ``_arc_lane``'s tests: no
+cycle, compensation, transform, tool length shift, inch input, incremental input, G93/G95, tracked ranges,
+assumed modes still to be noted ...): a line of upper-case words with blanks between them, at most a leading
+integer N, one integer G of 0-3, axis words of the machine's axes, F, and for G2/G3 the plane's R or centre
+offsets (not both), each letter once; every length a decimal with a point and at most the increment system's
+decimals (as ``FanucRunner.plain_ok`` lets the plain lane take it: a length without a point is read by the
+decimal point rule on the general path), F positive.  Anything else ends the run: that line and the ones after
+it go the way they went before, the state handed back as the lanes leave it (position, motion, feed, the counts
+of blocks and motions, the block index and span, the run's box and tool length).  An arc the box functions leave
+to the interpreter (equal ends of an R arc, a half circle within the tolerance, a spiral past it) ends the run
+the same way.  ``tests/gcode/fanuc/test_box_run.py`` holds the reader to the lanes and to the fast path.
+"""
+
+from __future__ import annotations
+
+import re
+from fractions import Fraction
+from typing import Any
+
+from ...motion import PLANE_AXES, SegmentKind
+from .columns import SCALE, BoxRows, BoxSink, centre_arc_box, r_arc_box
+
+__all__ = ["read_box_run", "BOX_RUNS"]
+
+#: Whether the runner reads plain runs on the box route with :func:`read_box_run` (tests turn it off).
+BOX_RUNS = True
+
+_UNIT = 10**SCALE
+_ZERO_DIGITS = str.maketrans("123456789", "000000000")
+_WORD = re.compile(r"([A-Z])[ \t]*(-?0*)(\.?)(0*)[ \t]*")
+#: integer digits of a length at most (coordinates stay far below the lanes' ``2**57`` at the scale)
+_MAX_DIGITS = 7
+_LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC
+_CENTRE = {"X": "I", "Y": "J", "Z": "K"}
+_ARC_ASSUMED = frozenset(("units", "distance", "offset", "plane"))
+_MAX_LAYOUTS = 4096
+
+
+def _layout(key: str, index: dict[str, int], digits: int) -> tuple | None:
+    """What a line of layout ``key`` holds: ``(g, axes, r, i, j, k, f)`` with ``g`` the slice of the G number
+    (None: no G), ``axes`` ``((start, end, multiplier, axis index), ...)``, ``r``/``i``/``j``/``k``/``f``
+    ``(start, end, multiplier)`` or None; None for a line out of the subset (module docstring)."""
+    pos, n = 0, len(key)
+    while pos < n and key[pos] in " \t":
+        pos += 1
+    seen: set[str] = set()
+    g = None
+    axes = []
+    other: dict[str, tuple[int, int, int]] = {}
+    first = True
+    while pos < n:
+        m = _WORD.match(key, pos)
+        if m is None:
+            return None
+        letter, whole, point, frac = m.group(1), m.group(2), m.group(3), m.group(4)
+        if letter in seen:
+            return None
+        seen.add(letter)
+        a, b = m.start(2), m.end(4)
+        ndig = len(whole.lstrip("-")) + len(frac)
+        if ndig == 0:
+            return None
+        if letter == "N":
+            if not first or point or frac or whole.startswith("-"):
+                return None
+        elif letter == "G":
+            if point or frac or whole.startswith("-") or len(whole) > 2:
+                return None
+            g = (a, b)
+        elif letter == "F":
+            if whole.startswith("-") or len(frac) > SCALE or len(whole) > 9:
+                return None
+            other["F"] = (a, b, 10 ** (SCALE - len(frac)))
+        else:
+            if not point or len(frac) > digits or len(whole.lstrip("-")) > _MAX_DIGITS:
+                return None
+            mult = 10 ** (SCALE - len(frac))
+            i = index.get(letter)
+            if i is not None:
+                axes.append((a, b, mult, i))
+            elif letter in "RIJK":
+                other[letter] = (a, b, mult)
+            else:
+                return None
+        first = False
+        pos = m.end()
+    if not axes:
+        return None
+    return (g, tuple(axes), other.get("R"), other.get("I"), other.get("J"), other.get("K"), other.get("F"))
+
+
+def _value(line: str, a: int, b: int) -> int:
+    return int(line[a:b].replace(".", ""))
+
+
+def _takes(interp: Any, runner: Any) -> bool:
+    """Whether the interpreter's state is one both plain lanes take (``FanucInterpreter.lane``, ``_arc_lane``)."""
+    sink = interp.row_sink
+    unset = interp.unset
+    return (type(sink) is BoxSink and interp.fused_lane and runner.modal_call is None and runner.lane is not None
+            and not runner.shape_codes and not (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3)))
+            and interp.segment_count >= sink.start and not interp.ended and not interp.m73_saved
+            and not interp.track and interp.machine_at is None and not interp.unsupported
+            and interp.prerotation_xy is None and interp.spline_state is None and not interp.comp_on
+            and not interp.comp_just_off and interp.cycle is None and interp._tlo_shift is None
+            and not interp.after_home and interp.prog is None and not interp._tlo_untaken and not interp.inch
+            and interp.absolute and interp.feed_mode == 94 and not interp._first_after_transform
+            and not interp.arc_absolute
+            and (not unset or (interp._noted_straight and unset.isdisjoint(_ARC_ASSUMED))))
+
+
+def _scaled(x: Any) -> int | None:
+    x = Fraction(x)
+    q, rem = divmod(x.numerator * _UNIT, x.denominator)
+    return None if rem else q
+
+
+class _State:
+    """The interpreter's state the reader keeps as integers, and what it counts."""
+
+    __slots__ = ("pos", "off", "motion", "feed", "feed_text", "lo", "hi", "lines", "rapids", "arcs", "blocks",
+                 "g_seen", "last_line", "last_lineno", "lineno")
+
+
+def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
+    """Read the plain lines of ``text`` from offset ``pos`` (line ``lineno``) into the box of the interpreter's
+    run, as the plain lanes would (module docstring): ``(next offset, next line number, whether the chunk is
+    full)``, or None when the first line is not taken (nothing changed)."""
+    interp = runner.state
+    if not _takes(interp, runner):
+        return None
+    axes = interp.axes
+    index = {name: i for i, name in enumerate(axes) if name in "XYZ"}
+    a_name, b_name, _n = PLANE_AXES[interp.plane]
+    ia, ib = interp.index.get(a_name), interp.index.get(b_name)
+    if ia is None or ib is None or a_name not in index or b_name not in index:
+        return None
+    ka, kb = _CENTRE[a_name], _CENTRE[b_name]
+    p = [_scaled(v) for v in interp.pos]
+    off = [_scaled(v) for v in interp.off]
+    tl = _scaled(interp.tlo)
+    feed = _scaled(interp.feed) if interp.feed is not None else None
+    tol = None
+    if interp.arc_rule == "fixed":
+        tol = _scaled(interp.arc_tolerance)
+        if tol is None:
+            return None
+    if None in p or None in off or tl is None or feed is None or any(abs(o) >= 2**56 for o in off):
+        return None
+    sink = interp.row_sink
+    emitted = interp.emitted
+    rows: Any = emitted[-1] if emitted else None
+    fresh = type(rows) is not BoxRows or rows.prev_end is not interp.pos or rows.full
+    if fresh:
+        lo, hi, room = p[:], p[:], sink.max_rows
+    else:
+        lo, hi, room = rows.lo[:], rows.hi[:], rows.max_rows - rows.count
+    digits = runner.box_digits
+    layouts = runner.box_layouts
+    motion = interp.motion
+    n = len(text)
+    taken = lines = rapids = arcs = 0
+    g_seen = False
+    fmm = None  # the last F's text, None: unchanged
+    last = None
+    while taken < room and pos < n:
+        end = text.find("\n", pos)
+        if end < 0:
+            end = n
+        line = text[pos:end]
+        if line.endswith("\r"):
+            line = line[:-1]
+        key = line.translate(_ZERO_DIGITS)
+        got = layouts.get(key, 0)
+        if got == 0:
+            got = None if key.startswith("\ufeff") else _layout(key, index, digits)
+            if len(layouts) < _MAX_LAYOUTS:
+                layouts[key] = got
+        if got is None:
+            if key.strip(" \t"):
+                break
+            pos, lineno = end + 1, lineno + 1  # a blank line: no block (plain_first)
+            continue
+        g, words, r, ci, cj, ck, f = got
+        mo = motion
+        if g is not None:
+            gv = int(line[g[0]:g[1]])
+            if gv > 3:
+                break
+            mo = gv * 10
+        if f is not None:
+            fv = _value(line, f[0], f[1]) * f[2]
+            if fv <= 0:
+                break
+        else:
+            fv = feed
+        if mo < 20:
+            if r is not None or ci is not None or cj is not None or ck is not None:
+                break
+            if mo == 10 and fv == 0:
+                break  # check_feed: the general path
+            for a, b, m, i in words:
+                v = _value(line, a, b) * m + off[i]
+                p[i] = v
+                if v < lo[i]:
+                    lo[i] = v
+                elif v > hi[i]:
+                    hi[i] = v
+            if mo == 10:
+                lines += 1
+            else:
+                rapids += 1
+        else:
+            cen = {"I": ci, "J": cj, "K": ck}
+            ra, rb = cen.pop(ka), cen.pop(kb)
+            if any(c is not None for c in cen.values()) or (r is None) == (ra is None and rb is None) or fv == 0 \
+                    or not any(i == ia or i == ib for _a, _b, _m, i in words):
+                break
+            sa, sb = p[ia], p[ib]
+            ends = {i: _value(line, a, b) * m + off[i] for a, b, m, i in words}
+            ea, eb = ends.get(ia, sa), ends.get(ib, sb)
+            if r is not None:
+                box = r_arc_box(sa, sb, ea, eb, _value(line, r[0], r[1]) * r[2], mo == 20)
+            else:
+                box = centre_arc_box(sa, sb, ea, eb, sa + (_value(line, ra[0], ra[1]) * ra[2] if ra else 0),
+                                     sb + (_value(line, rb[0], rb[1]) * rb[2] if rb else 0), mo == 20, tol)
+            if box is None:
+                break
+            for i, v in ends.items():
+                p[i] = v
+                if i != ia and i != ib:
+                    if v < lo[i]:
+                        lo[i] = v
+                    elif v > hi[i]:
+                        hi[i] = v
+            la, ha, lb, hb = box
+            if la < lo[ia]:
+                lo[ia] = la
+            if ha > hi[ia]:
+                hi[ia] = ha
+            if lb < lo[ib]:
+                lo[ib] = lb
+            if hb > hi[ib]:
+                hi[ib] = hb
+            arcs += 1
+        motion = mo
+        if g is not None:
+            g_seen = True
+        if f is not None:
+            feed, fmm = fv, (line, f)
+        last = (line, lineno)
+        taken += 1
+        pos, lineno = end + 1, lineno + 1
+    if not taken:
+        return None
+    return _hand_back(runner, interp, rows, fresh, p, lo, hi, tl, motion, g_seen, fmm, last, taken,
+                      (lines, rapids, arcs), pos, lineno)
+
+
+def _hand_back(runner: Any, interp: Any, rows: Any, fresh: bool, p: list[int], lo: list[int], hi: list[int],
+               tl: int, motion: int, g_seen: bool, fmm: Any, last: Any, taken: int, kinds: tuple[int, int, int],
+               pos: int, lineno: int) -> tuple[int, int, bool]:
+    """The state after the run, as the lanes leave it (module docstring)."""
+    from ..lexer import make_span, plain_decimal_value
+
+    end = tuple(Fraction(v, _UNIT) for v in p)
+    if fresh:
+        rows = BoxRows(interp.pos, lo, interp.file, interp.row_sink.max_rows)
+        interp.emitted.append(rows)
+    rows.lo, rows.hi = lo, hi
+    if interp.tlo is not rows.tl:
+        rows.tl = interp.tlo
+        rows.tls.add(tl)
+    rows.count += taken
+    if rows.count >= rows.max_rows:
+        rows.full = True
+    rows.prev_end = end
+    line, last_no = last
+    index = runner.index + taken - 1
+    runner.index = index + 1
+    runner.started = runner.ran = True
+    interp.block_index = index
+    interp.span = make_span(interp.file, last_no, 1, len(line) + 1, line)
+    interp.blocks += taken
+    if g_seen:
+        interp.cycle_il = None
+        interp.last_cycle = None
+    interp.motion = motion
+    if fmm is not None:
+        text, (a, b, _m) = fmm
+        interp.feed = plain_decimal_value(text[a:b])
+    counts = interp.kind_counts
+    lines, rapids, arcs = kinds
+    if lines:
+        counts[_LINE] += lines
+    if rapids:
+        counts[_RAPID] += rapids
+    if arcs:
+        counts[_ARC] += arcs
+    interp.segment_count += taken
+    interp.pos = end
+    interp.prerotation_xy_next = None
+    return pos, lineno, rows.full or len(interp.emitted) >= interp.chunk_size
