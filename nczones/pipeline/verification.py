@@ -285,7 +285,7 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
 #: a run's box) before the vectorized fast path: the crossover of the route (no numpy to load; about 10 us a
 #: straight line, 14 an R arc) and the fast path (numpy's import and set-up, then about 1-7 us a line), measured on
 #: R-arc and G1 programs (specs/performance.md, "Fanuc plain programs on the box route").
-FANUC_BOX_LINES = 4000
+FANUC_BOX_LINES = 200_000
 
 
 @functools.cache

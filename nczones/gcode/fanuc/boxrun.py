@@ -48,13 +48,20 @@ _LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC
 _CENTRE = {"X": "I", "Y": "J", "Z": "K"}
 _ARC_ASSUMED = frozenset(("units", "distance", "offset", "plane"))
 _MAX_LAYOUTS = 4096
+#: the motion of a G word's text the reader takes (G0-G3 with at most one leading zero)
+_G = {"0": 0, "00": 0, "1": 10, "01": 10, "2": 20, "02": 20, "3": 30, "03": 30}
 
 
-def _layout(key: str, index: dict[str, int], digits: int) -> tuple | None:
-    """What a line of layout ``key`` holds: ``(g, axes, r, i, j, k, f)`` with ``g`` the slice of the G number
-    (None: no G), ``axes`` ``((start, end, multiplier, axis index), ...)``, ``r``/``i``/``j``/``k``/``f``
-    ``(start, end, multiplier)`` or None; None for a line out of the subset (module docstring)."""
+def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int, str, str]) -> tuple | None:
+    """What a line of layout ``key`` holds in the plane ``(ia, ib, centre letter a, centre letter b)``:
+    ``(g, f, straight, arc)`` with ``g`` the slice of the G number (None: no G), ``f`` ``(start, end, multiplier)``
+    of F or None, ``straight`` the axis words ``((start, end, multiplier, axis index), ...)`` (None when the
+    line has R, I, J or K: not a straight move) and ``arc`` ``(r, centre a, centre b, word a, word b, helix)``
+    (slices as F's, None when absent; ``helix`` the other axes' words; ``arc`` None when the line is no arc the
+    lane takes in the plane); None for a line out of the subset (module docstring)."""
     pos, n = 0, len(key)
+    if key[-1:] == "\r":  # a CR LF line end
+        n -= 1
     while pos < n and key[pos] in " \t":
         pos += 1
     seen: set[str] = set()
@@ -71,8 +78,7 @@ def _layout(key: str, index: dict[str, int], digits: int) -> tuple | None:
             return None
         seen.add(letter)
         a, b = m.start(2), m.end(4)
-        ndig = len(whole.lstrip("-")) + len(frac)
-        if ndig == 0:
+        if len(whole.lstrip("-")) + len(frac) == 0:
             return None
         if letter == "N":
             if not first or point or frac or whole.startswith("-"):
@@ -100,7 +106,17 @@ def _layout(key: str, index: dict[str, int], digits: int) -> tuple | None:
         pos = m.end()
     if not axes:
         return None
-    return (g, tuple(axes), other.get("R"), other.get("I"), other.get("J"), other.get("K"), other.get("F"))
+    ia, ib, la, lb = plane
+    words = tuple(axes)
+    rijk = [c for c in "RIJK" if c in other]
+    arc = None
+    if rijk and all(c in ("R", la, lb) for c in rijk) and ("R" in other) != (la in other or lb in other) \
+            and any(i == ia or i == ib for _a, _b, _m, i in words):
+        wa = next(((a, b, m) for a, b, m, i in words if i == ia), None)
+        wb = next(((a, b, m) for a, b, m, i in words if i == ib), None)
+        arc = (other.get("R"), other.get(la), other.get(lb), wa, wb,
+               tuple(w for w in words if w[3] != ia and w[3] != ib))
+    return (g, other.get("F"), None if rijk else words, arc)
 
 
 def _value(line: str, a: int, b: int) -> int:
@@ -119,8 +135,7 @@ def _takes(interp: Any, runner: Any) -> bool:
             and not interp.comp_just_off and interp.cycle is None and interp._tlo_shift is None
             and not interp.after_home and interp.prog is None and not interp._tlo_untaken and not interp.inch
             and interp.absolute and interp.feed_mode == 94 and not interp._first_after_transform
-            and not interp.arc_absolute
-            and (not unset or (interp._noted_straight and unset.isdisjoint(_ARC_ASSUMED))))
+            and not interp.arc_absolute)
 
 
 def _scaled(x: Any) -> int | None:
@@ -143,13 +158,16 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
     interp = runner.state
     if not _takes(interp, runner):
         return None
+    unset = interp.unset
+    straight_ok = not unset or interp._noted_straight  # else the general lane notes the assumed modes
+    arc_ok = not unset or unset.isdisjoint(_ARC_ASSUMED)
     axes = interp.axes
     index = {name: i for i, name in enumerate(axes) if name in "XYZ"}
     a_name, b_name, _n = PLANE_AXES[interp.plane]
-    ia, ib = interp.index.get(a_name), interp.index.get(b_name)
-    if ia is None or ib is None or a_name not in index or b_name not in index:
+    ia, ib = index.get(a_name), index.get(b_name)
+    if ia is None or ib is None:
         return None
-    ka, kb = _CENTRE[a_name], _CENTRE[b_name]
+    plane = (ia, ib, _CENTRE[a_name], _CENTRE[b_name])
     p = [_scaled(v) for v in interp.pos]
     off = [_scaled(v) for v in interp.off]
     tl = _scaled(interp.tlo)
@@ -170,51 +188,53 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
     else:
         lo, hi, room = rows.lo[:], rows.hi[:], rows.max_rows - rows.count
     digits = runner.box_digits
-    layouts = runner.box_layouts
+    layouts = runner.box_layouts.get(plane)
+    if layouts is None:
+        layouts = runner.box_layouts[plane] = {}
+    oa, ob = off[ia], off[ib]
     motion = interp.motion
     n = len(text)
     taken = lines = rapids = arcs = 0
     g_seen = False
-    fmm = None  # the last F's text, None: unchanged
+    fmm = None  # (line, F's slice) of the last F, None: unchanged
     last = None
+    keys = runner.box_keys
+    if keys is None or len(keys) != n:
+        keys = runner.box_keys = text.translate(_ZERO_DIGITS)  # the layouts of every line (digits zeroed)
+    gvalues = _G
     while taken < room and pos < n:
         end = text.find("\n", pos)
         if end < 0:
             end = n
         line = text[pos:end]
-        if line.endswith("\r"):
-            line = line[:-1]
-        key = line.translate(_ZERO_DIGITS)
+        key = keys[pos:end]
         got = layouts.get(key, 0)
         if got == 0:
-            got = None if key.startswith("\ufeff") else _layout(key, index, digits)
+            got = None if key.startswith("\ufeff") else _layout(key, index, digits, plane)
             if len(layouts) < _MAX_LAYOUTS:
                 layouts[key] = got
         if got is None:
-            if key.strip(" \t"):
+            if key.strip(" \t\r"):
                 break
             pos, lineno = end + 1, lineno + 1  # a blank line: no block (plain_first)
             continue
-        g, words, r, ci, cj, ck, f = got
+        g, f, words, arc = got
         mo = motion
         if g is not None:
-            gv = int(line[g[0]:g[1]])
-            if gv > 3:
+            mo = gvalues.get(line[g[0]:g[1]], -1)
+            if mo < 0:
                 break
-            mo = gv * 10
         if f is not None:
-            fv = _value(line, f[0], f[1]) * f[2]
+            fv = int(line[f[0]:f[1]].replace(".", "")) * f[2]
             if fv <= 0:
                 break
         else:
             fv = feed
         if mo < 20:
-            if r is not None or ci is not None or cj is not None or ck is not None:
-                break
-            if mo == 10 and fv == 0:
-                break  # check_feed: the general path
+            if words is None or (mo == 10 and fv == 0) or not straight_ok:
+                break  # R, I, J, K in G0/G1; G1 without a feed (check_feed): the general path
             for a, b, m, i in words:
-                v = _value(line, a, b) * m + off[i]
+                v = int(line[a:b].replace(".", "")) * m + off[i]
                 p[i] = v
                 if v < lo[i]:
                     lo[i] = v
@@ -225,28 +245,28 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
             else:
                 rapids += 1
         else:
-            cen = {"I": ci, "J": cj, "K": ck}
-            ra, rb = cen.pop(ka), cen.pop(kb)
-            if any(c is not None for c in cen.values()) or (r is None) == (ra is None and rb is None) or fv == 0 \
-                    or not any(i == ia or i == ib for _a, _b, _m, i in words):
+            if arc is None or fv == 0 or not arc_ok:
                 break
+            r, ca, cb, wa, wb, helix = arc
             sa, sb = p[ia], p[ib]
-            ends = {i: _value(line, a, b) * m + off[i] for a, b, m, i in words}
-            ea, eb = ends.get(ia, sa), ends.get(ib, sb)
+            ea = int(line[wa[0]:wa[1]].replace(".", "")) * wa[2] + oa if wa is not None else sa
+            eb = int(line[wb[0]:wb[1]].replace(".", "")) * wb[2] + ob if wb is not None else sb
             if r is not None:
-                box = r_arc_box(sa, sb, ea, eb, _value(line, r[0], r[1]) * r[2], mo == 20)
+                box = r_arc_box(sa, sb, ea, eb, int(line[r[0]:r[1]].replace(".", "")) * r[2], mo == 20)
             else:
-                box = centre_arc_box(sa, sb, ea, eb, sa + (_value(line, ra[0], ra[1]) * ra[2] if ra else 0),
-                                     sb + (_value(line, rb[0], rb[1]) * rb[2] if rb else 0), mo == 20, tol)
+                box = centre_arc_box(
+                    sa, sb, ea, eb, sa + int(line[ca[0]:ca[1]].replace(".", "")) * ca[2] if ca is not None else sa,
+                    sb + int(line[cb[0]:cb[1]].replace(".", "")) * cb[2] if cb is not None else sb, mo == 20, tol)
             if box is None:
                 break
-            for i, v in ends.items():
+            p[ia], p[ib] = ea, eb
+            for a, b, m, i in helix:
+                v = int(line[a:b].replace(".", "")) * m + off[i]
                 p[i] = v
-                if i != ia and i != ib:
-                    if v < lo[i]:
-                        lo[i] = v
-                    elif v > hi[i]:
-                        hi[i] = v
+                if v < lo[i]:
+                    lo[i] = v
+                elif v > hi[i]:
+                    hi[i] = v
             la, ha, lb, hb = box
             if la < lo[ia]:
                 lo[ia] = la

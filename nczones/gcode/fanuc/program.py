@@ -273,6 +273,7 @@ class FanucRunner:
         #: the box route's run reader (boxrun.read_box_run): the decimals a length may have, the layouts read
         self.box_digits = digits
         self.box_layouts: dict[str, Any] = {}
+        self.box_keys: str | None = None  # the main text with its digits zeroed (read_box_run)
         self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
         self._long_inch = re.compile(rf"[XYZUVWIJKRQxyzuvwijkrq][ \t]*[+-]?\d*\.\d{{{digits + 2}}}|"
                                      rf"[ABCabc][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
