@@ -124,9 +124,9 @@ def _value(line: str, a: int, b: int) -> int:
 
 
 def _takes(interp: Any, runner: Any) -> bool:
-    """Whether the interpreter's state is one both plain lanes take (``FanucInterpreter.lane``, ``_arc_lane``)."""
+    """Whether the interpreter's state is one both plain lanes take (``FanucInterpreter.lane``, ``_arc_lane``; the
+    assumed modes each notes are tested per line kind by the caller)."""
     sink = interp.row_sink
-    unset = interp.unset
     return (type(sink) is BoxSink and interp.fused_lane and runner.modal_call is None and runner.lane is not None
             and not runner.shape_codes and not (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3)))
             and interp.segment_count >= sink.start and not interp.ended and not interp.m73_saved

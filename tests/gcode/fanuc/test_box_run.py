@@ -1,0 +1,223 @@
+"""The box route's run reader (nczones/gcode/fanuc/boxrun.py, issue 36) against the lanes it bypasses.
+
+Relations (every side computed by nczones; the reader is an optimisation, so the reference is the program as
+today's lanes read it):
+
+* ``verify`` with the reader (``boxrun.BOX_RUNS``) and without it (the language layer and the plain lanes,
+  ``FanucInterpreter.lane`` / ``_arc_lane``, writing the same ``BoxRows``) give the same verdict, violations,
+  reasons, notes, counts (blocks, motions by kind) and stats;
+* the box the route tests (every ``box_fits`` call: the box and the tool length) is the same, call for call;
+* without the route (``fanucboxes.ROUTE`` off: the full path, or the vectorized fast path past 512 lines) the
+  verdict, violations, reasons, notes and motion count are the same;
+* the reader does take the plain lines (counted), so the comparisons are not vacuous.
+
+The generated programs mix what the reader takes (G0/G1/G2/G3 with decimal numbers, R and centre arcs in the
+three planes, helices, N numbers, F, CR LF ends, blank lines) with what it hands back to the language layer
+(lengths without a decimal point, more decimals than IS-B's three, inch input, G91 incremental moves, M and S
+words, comments, dwell, lower case) in the middle of a run.  The test mill (tests/gcode/fanuc/helpers.py):
+G54 = (100, 50, -200); its zone here machine X -10..150, Y -10..90, Z -201..0 (program X -110..50, Y -60..40,
+Z -1..200); the generated programs run in a wide one (machine -2000..2000 on every axis), mostly ``safe``.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.errors import GcodeError
+from nczones.gcode.fanuc import boxrun
+from nczones.prover import fanucboxes, verify_text
+from tests.gcode.fanuc.helpers import mill
+
+_TRAVEL = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
+           'max = { X = "150", Y = "90", Z = "0" }\n')
+_MACHINE = mill(tables=_TRAVEL)
+#: a zone the generated programs mostly stay in (a program that leaves it costs a witness search on each side)
+_WIDE = mill(tables=_TRAVEL.replace('"-10"', '"-2000"').replace('"-201"', '"-2000"').replace('"150"', '"2000"')
+             .replace('"90"', '"2000"').replace('Z = "0"', 'Z = "2000"'))
+#: vectors of length 5 (exact: an I/J arc's start and end on one circle)
+_FIVE = [(3, 4), (4, 3), (5, 0), (0, 5), (-3, 4), (-4, -3), (0, -5), (-5, 0), (3, -4), (4, -3)]
+_PLANES = {17: ("X", "Y", "I", "J"), 18: ("Z", "X", "K", "I"), 19: ("Y", "Z", "J", "K")}
+#: lines the reader hands back (the language layer reads them; the reader takes the next line again)
+_LEAVE = ["M08", "(A COMMENT)", "G04 X0.5", "S1200 M03", "G1 X10. Y5. M9", "G1 X1.0005", "g1 x5. y5.", "G1 X12",
+          "G94", "G1 X+3.", "", "T1", "G1 G17 X3."]
+
+
+def _num(v: Fraction) -> str:
+    """``v`` as a decimal with a point (at most 3 decimals: the generator keeps its values on that grid)."""
+    s = f"{float(v):.3f}".rstrip("0")
+    return "0." if s in ("0.", "-0.") else s
+
+
+@st.composite
+def _programs(draw, size: int = 30) -> tuple[str, int]:
+    """A plain Fanuc program and how many of its lines the reader may take (the motions in the subset)."""
+    inch = draw(st.booleans()) and draw(st.booleans())
+    pos = {"X": Fraction(0), "Y": Fraction(0), "Z": Fraction(0)}
+    plane = 17
+    arc = False  # the modal motion is G2/G3
+    lines = ["O1000", f"G90 G17 {'G20' if inch else 'G21'} G54 G00 X0. Y0. Z0.", "G01 F500."]
+    takes = 0
+    for _ in range(draw(st.integers(1, size))):
+        kind = draw(st.sampled_from(["line", "rapid", "r", "ij", "ij", "r", "helix", "plane", "leave", "inc",
+                                     "int"]))
+        n = f"N{draw(st.integers(1, 9999))} " if draw(st.integers(0, 5)) == 0 else ""
+        a, b, la, lb = _PLANES[plane]
+        if kind in ("line", "rapid"):
+            words = []
+            for ax in draw(st.lists(st.sampled_from("XYZ"), min_size=1, max_size=3, unique=True)):
+                pos[ax] = Fraction(draw(st.integers(-30000, 40000)), 1000)
+                words.append(f"{ax}{_num(pos[ax])}")
+            g = draw(st.sampled_from(["G1 ", "G01 ", "", "G0 ", "G00 "])) if kind == "line" else "G0 "
+            g = "G1 " if g == "" and arc else g  # (a word without G in G2/G3 is an arc)
+            arc = False
+            lines.append(n + g + " ".join(words) + draw(st.sampled_from(["", "", " F800.", " F1200"])))
+        elif kind in ("r", "ij", "helix"):
+            cw = draw(st.booleans())
+            g = "G2 " if cw else "G3 "
+            if kind != "ij":
+                da, db = draw(st.integers(-4000, 4000)), draw(st.integers(-4000, 4000))
+                if da == db == 0:
+                    da = 1000
+                r = Fraction(draw(st.sampled_from([5000, 7500, 12000, 6000])), 1000)
+                r = -r if draw(st.booleans()) else r
+                pos[a] += Fraction(da, 1000)
+                pos[b] += Fraction(db, 1000)
+                centre = f"R{_num(r)}"
+            else:
+                (ua, ub), (wa, wb) = draw(st.sampled_from(_FIVE)), draw(st.sampled_from(_FIVE))
+                ca, cb = pos[a] - ua, pos[b] - ub
+                pos[a], pos[b] = ca + wa, cb + wb
+                centre = " ".join(f"{c}{_num(Fraction(v))}" for c, v in ((la, -ua), (lb, -ub)) if v or
+                                  draw(st.booleans()))
+                centre = centre or f"{la}0."
+            extra = ""
+            if kind == "helix":
+                other = ({"X", "Y", "Z"} - {a, b}).pop()
+                pos[other] = Fraction(draw(st.integers(0, 5000)), 1000)
+                extra = f" {other}{_num(pos[other])}"
+            lines.append(n + g + f"{a}{_num(pos[a])} {b}{_num(pos[b])}{extra} {centre}")
+            arc = True
+        elif kind == "plane":
+            plane = draw(st.sampled_from([17, 18, 19]))
+            lines.append(f"G{plane}")
+            continue
+        elif kind == "inc":
+            d = Fraction(draw(st.integers(-2000, 2000)), 1000)
+            pos["X"] += d
+            lines += [f"G91 G1 X{_num(d)}", "G90"]
+            continue
+        elif kind == "int":  # a length without a point (the decimal point rule), then a resync
+            lines.append(f"G1 X{draw(st.integers(-20, 20))} Y{draw(st.integers(-20, 20))}")
+            lines.append("G1 " + " ".join(f"{ax}{_num(v)}" for ax, v in pos.items()))
+            continue
+        else:
+            lines.append(draw(st.sampled_from(_LEAVE)))
+            if lines[-1] in ("G1 X12", "g1 x5. y5.", "G1 X1.0005", "G1 X+3.", "G1 G17 X3.", "G1 X10. Y5. M9"):
+                lines.append("G1 " + " ".join(f"{ax}{_num(v)}" for ax, v in pos.items()))
+            continue
+        takes += 1
+    lines.append("M30")
+    end = "\r\n" if draw(st.integers(0, 4)) == 0 else "\n"
+    return end.join(lines) + end, 0 if inch else takes
+
+
+def _run(text: str, runs: bool, route: bool = True, machine=None) -> tuple[tuple, list, int]:
+    """(the report, the boxes the route tested, the lines the reader took) of ``verify`` on ``text``."""
+    tested: list = []
+    taken = [0]
+    real_fits, real_read = fanucboxes.box_fits, boxrun.read_box_run
+
+    def fits(allowed, lo, hi, margin, tl):
+        tested.append((tuple(sorted(lo.items())), tuple(sorted(hi.items())), tl))
+        return real_fits(allowed, lo, hi, margin, tl)
+
+    def read(runner, text, pos, lineno):
+        got = real_read(runner, text, pos, lineno)
+        if got is not None:
+            taken[0] += got[1] - lineno
+        return got
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(boxrun, "BOX_RUNS", runs)
+        mp.setattr(boxrun, "read_box_run", read)
+        mp.setattr(fanucboxes, "ROUTE", route)
+        mp.setattr(fanucboxes, "box_fits", fits)
+        try:
+            r = verify_text(text, machine or _MACHINE, file="t.nc")
+        except GcodeError as e:
+            return ("error", tuple((d.code, d.message, str(d.span)) for d in e.diagnostics)), tested, taken[0]
+    stats = dict(r.stats)
+    return ((r.verdict.label, tuple(r.violations), tuple(r.reasons), r.truncated, tuple(r.notes), stats["segments"],
+             r.file, stats.get("fanuc_boxes"), (r.extra or {}).get("counts"), (r.profile or {}).get("blocks")),
+            tested, taken[0])
+
+
+def _agree(text: str, machine=None) -> tuple[str, int]:
+    """The reader, the lanes and the path without the route agree; (verdict, lines the reader took)."""
+    read, boxes, taken = _run(text, True, machine=machine)
+    lanes, lane_boxes, none = _run(text, False, machine=machine)
+    assert none == 0
+    assert read == lanes
+    assert boxes == lane_boxes
+    today, _, _ = _run(text, True, route=False, machine=machine)
+    assert today[:7] == read[:7]
+    return str(read[0]), taken
+
+
+@settings(max_examples=40, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_programs())
+def test_the_reader_reads_as_the_lanes(program):
+    text, _takes = program
+    _agree(text, _WIDE)
+
+
+def test_the_reader_takes_the_plain_lines():
+    """A program of plain lines is read by the reader but for the lines it hands back: 6 of its 8 motions (the
+    first straight move notes the assumed modes on the general lane; a length without a point is the decimal
+    point rule's), and the report is the lanes' (safe: every position inside the zone)."""
+    text = ("O1\nG90 G17 G21 G54 G00 X0. Y0. Z0.\nG01 F500.\nG1 X10. Y5.\nG2 X14. Y5. R2.5\nG3 X10. Y5. I-2.\n"
+            "N10 G1X5.Y5.\nG1 X12\nG1 X12. Y5.\nG18\nG2 Z2. X14. R3.\nG19 G2 Y7. Z2. J1.\nM30\n")
+    # lines 4-7 (the straight move of line 4 is the general lane's first, noting the modes: not line 4), 9, 11
+    verdict, taken = _agree(text)
+    assert verdict in ("safe", "unsafe")
+    assert taken == 5
+
+
+def test_a_long_program_agrees_with_the_fast_path():
+    """600 R arcs and straight moves (more than 512 motions: without the route the vectorized fast path reads the
+    program): the reader takes them all, and the route answers ``safe`` as the fast path does."""
+    moves = []
+    for k in range(300):
+        x = Fraction(k % 40)
+        moves += [f"G1 X{_num(x)} Y5.", f"G3 X{_num(x + 2)} Y7. R3."]
+    text = "O1\nG90 G17 G21 G54 G00 X0. Y0. Z0.\nG01 F500.\nG1 X0. Y5.\n" + "\n".join(moves) + "\nM30\n"
+    verdict, taken = _agree(text)
+    assert verdict == "safe"
+    assert taken == 600
+
+
+@pytest.mark.parametrize("k", [0, 2200, 4400])
+def test_a_long_program_with_one_bulging_arc_is_not_safe(k):
+    """More than 4,000 lines in the zone and one R arc whose ends lie inside but whose middle leaves it: from
+    program (40, 0) to (40, 20) with G03 R-10.001 (the major arc: its centre (40 +- ~0.14, 10) from the chord,
+    it reaches X 40 + 0.14 + 10.001 > 50, the X face at program 50).  Not ``safe``: ``unsafe`` with the arc's
+    line as the witness, on the reader's route as without the route."""
+    moves = [f"G1 X{_num(Fraction(j % 40))} Y{_num(Fraction(j % 30))}" for j in range(4500)]
+    moves[k:k] = ["G1 X40. Y0.", "G03 X40. Y20. R-10.001"]
+    text = "O1\nG90 G17 G21 G54 G00 X0. Y0. Z0.\nG01 F500.\nG1 X0. Y5.\n" + "\n".join(moves) + "\nM30\n"
+    read, _, taken = _run(text, True)
+    assert read[0] == "unsafe"
+    assert {v.span.line for v in read[1] if v.span is not None} == {k + 6}
+    today, _, _ = _run(text, True, route=False)
+    assert today[:7] == read[:7]
+
+
+@pytest.mark.long
+@settings(max_examples=300, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_programs(120))
+def test_the_reader_reads_as_the_lanes_long(program):
+    _agree(program[0], _WIDE)
