@@ -57,7 +57,7 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
     ``(g, f, straight, arc)`` with ``g`` the slice of the G number (None: no G), ``f`` ``(start, end, multiplier)``
     of F or None, ``straight`` the axis words ``((start, end, multiplier, axis index), ...)`` (None when the
     line has R, I, J or K: not a straight move) and ``arc`` ``(r, centre a, centre b, word a, word b, helix)``
-    (slices as F's, None when absent; ``helix`` the other axes' words; ``arc`` None when the line is no arc the
+    (slices as F's, None when absent; every slice of the line with its points removed; ``helix`` the other axes' words; ``arc`` None when the line is no arc the
     lane takes in the plane); None for a line out of the subset (module docstring)."""
     pos, n = 0, len(key)
     if key[-1:] == "\r":  # a CR LF line end
@@ -78,6 +78,7 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
             return None
         seen.add(letter)
         a, b = m.start(2), m.end(4)
+        a, b = a - key.count(".", 0, a), b - key.count(".", 0, b)  # in the line without its points
         if len(whole.lstrip("-")) + len(frac) == 0:
             return None
         if letter == "N":
@@ -117,10 +118,6 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
         arc = (other.get("R"), other.get(la), other.get(lb), wa, wb,
                tuple(w for w in words if w[3] != ia and w[3] != ib))
     return (g, other.get("F"), None if rijk else words, arc)
-
-
-def _value(line: str, a: int, b: int) -> int:
-    return int(line[a:b].replace(".", ""))
 
 
 def _takes(interp: Any, runner: Any) -> bool:
@@ -196,7 +193,7 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
     n = len(text)
     taken = lines = rapids = arcs = 0
     g_seen = False
-    fmm = None  # (line, F's slice) of the last F, None: unchanged
+    fmm = None  # the last F (scaled), None: unchanged
     last = None
     keys = runner.box_keys
     if keys is None or len(keys) != n:
@@ -206,7 +203,6 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         end = text.find("\n", pos)
         if end < 0:
             end = n
-        line = text[pos:end]
         key = keys[pos:end]
         got = layouts.get(key, 0)
         if got == 0:
@@ -219,13 +215,14 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
             pos, lineno = end + 1, lineno + 1  # a blank line: no block (plain_first)
             continue
         g, f, words, arc = got
+        line = text[pos:end].replace(".", "")
         mo = motion
         if g is not None:
             mo = gvalues.get(line[g[0]:g[1]], -1)
             if mo < 0:
                 break
         if f is not None:
-            fv = int(line[f[0]:f[1]].replace(".", "")) * f[2]
+            fv = int(line[f[0]:f[1]]) * f[2]
             if fv <= 0:
                 break
         else:
@@ -234,7 +231,7 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
             if words is None or (mo == 10 and fv == 0) or not straight_ok:
                 break  # R, I, J, K in G0/G1; G1 without a feed (check_feed): the general path
             for a, b, m, i in words:
-                v = int(line[a:b].replace(".", "")) * m + off[i]
+                v = int(line[a:b]) * m + off[i]
                 p[i] = v
                 if v < lo[i]:
                     lo[i] = v
@@ -249,19 +246,19 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
                 break
             r, ca, cb, wa, wb, helix = arc
             sa, sb = p[ia], p[ib]
-            ea = int(line[wa[0]:wa[1]].replace(".", "")) * wa[2] + oa if wa is not None else sa
-            eb = int(line[wb[0]:wb[1]].replace(".", "")) * wb[2] + ob if wb is not None else sb
+            ea = int(line[wa[0]:wa[1]]) * wa[2] + oa if wa is not None else sa
+            eb = int(line[wb[0]:wb[1]]) * wb[2] + ob if wb is not None else sb
             if r is not None:
-                box = r_arc_box(sa, sb, ea, eb, int(line[r[0]:r[1]].replace(".", "")) * r[2], mo == 20)
+                box = r_arc_box(sa, sb, ea, eb, int(line[r[0]:r[1]]) * r[2], mo == 20)
             else:
                 box = centre_arc_box(
-                    sa, sb, ea, eb, sa + int(line[ca[0]:ca[1]].replace(".", "")) * ca[2] if ca is not None else sa,
-                    sb + int(line[cb[0]:cb[1]].replace(".", "")) * cb[2] if cb is not None else sb, mo == 20, tol)
+                    sa, sb, ea, eb, sa + int(line[ca[0]:ca[1]]) * ca[2] if ca is not None else sa,
+                    sb + int(line[cb[0]:cb[1]]) * cb[2] if cb is not None else sb, mo == 20, tol)
             if box is None:
                 break
             p[ia], p[ib] = ea, eb
             for a, b, m, i in helix:
-                v = int(line[a:b].replace(".", "")) * m + off[i]
+                v = int(line[a:b]) * m + off[i]
                 p[i] = v
                 if v < lo[i]:
                     lo[i] = v
@@ -281,8 +278,8 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         if g is not None:
             g_seen = True
         if f is not None:
-            feed, fmm = fv, (line, f)
-        last = (line, lineno)
+            feed = fmm = fv
+        last = (pos, lineno)
         taken += 1
         pos, lineno = end + 1, lineno + 1
     if not taken:
@@ -295,7 +292,7 @@ def _hand_back(runner: Any, interp: Any, rows: Any, fresh: bool, p: list[int], l
                tl: int, motion: int, g_seen: bool, fmm: Any, last: Any, taken: int, kinds: tuple[int, int, int],
                pos: int, lineno: int) -> tuple[int, int, bool]:
     """The state after the run, as the lanes leave it (module docstring)."""
-    from ..lexer import make_span, plain_decimal_value
+    from ..lexer import make_span
 
     end = tuple(Fraction(v, _UNIT) for v in p)
     if fresh:
@@ -309,7 +306,9 @@ def _hand_back(runner: Any, interp: Any, rows: Any, fresh: bool, p: list[int], l
     if rows.count >= rows.max_rows:
         rows.full = True
     rows.prev_end = end
-    line, last_no = last
+    last_pos, last_no = last
+    text = runner.main.src.text
+    line = text[last_pos:text.find("\n", last_pos) % (len(text) + 1)].removesuffix("\r")
     index = runner.index + taken - 1
     runner.index = index + 1
     runner.started = runner.ran = True
@@ -321,8 +320,7 @@ def _hand_back(runner: Any, interp: Any, rows: Any, fresh: bool, p: list[int], l
         interp.last_cycle = None
     interp.motion = motion
     if fmm is not None:
-        text, (a, b, _m) = fmm
-        interp.feed = plain_decimal_value(text[a:b])
+        interp.feed = Fraction(fmm, _UNIT)
     counts = interp.kind_counts
     lines, rapids, arcs = kinds
     if lines:
