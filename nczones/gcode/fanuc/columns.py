@@ -478,27 +478,37 @@ def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int
     """
     dx, dy = ea - sa, eb - sb
     l2 = dx * dx + dy * dy
-    rr = -r if r < 0 else r
-    r2 = rr * rr
-    if l2 == 0 or rr == 0 or l2 * _TINY_SQ >= r2 * _TINY_BOUND:
+    if r > 0:
+        rr, minor = r, True
+    elif r < 0:
+        rr, minor = -r, False
+    else:
         return None
-    q = l2 * (4 * r2 - l2)
-    s_lo = s_hi = -1  # isqrt(q) rounded down and up, taken when an extreme is on the arc
-    sign = -1 if cw != (r < 0) else 1
-    minor = r > 0
-    sigma = -sign if minor else sign
+    r2 = rr * rr
+    # (a chord of at most sqrt(3) |r| is far from the tolerance: the products of the test are not needed)
+    if l2 == 0 or (l2 > 3 * r2 and l2 * _TINY_SQ >= r2 * _TINY_BOUND):
+        return None
+    f = 4 * r2
+    q = l2 * (f - l2)
     lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
     lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
+    aa = f * dy * dy  # A * A for v = +a or -a (A = 2 sigma |r| (v . n), v . n = -dy or dy), below for +b, -b
+    bb = f * dx * dx
+    if minor and aa < q and bb < q:  # no extreme on the minor arc: the ends' box
+        return lo_a, hi_a, lo_b, hi_b
+    s_lo = s_hi = -1  # isqrt(q) rounded down and up, taken when an extreme is on the arc
+    sign = -1 if cw != (r < 0) else 1
+    sigma = -sign if minor else sign
     two = 2 * sigma * rr
     # twice the centre, enclosed where an extreme is on the arc: 2 c = (s + e) + sign * n * sqrt(Q) / l2, with
     # n = (-dy, dx); and v . n = -dy, dy, dx, -dx for v = +a, -a, +b, -b
     a = -two * dy
     if minor:  # (a >= 0 and a * a >= q), (a <= 0 and a * a >= q)
-        up = down = a * a >= q
+        up = down = aa >= q
         if up:
             up, down = a >= 0, a <= 0
     else:  # (a >= 0 or a * a <= q), (a <= 0 or a * a <= q)
-        up = down = a * a <= q
+        up = down = aa <= q
         if not up:
             up, down = a >= 0, a <= 0
     if up or down:
@@ -511,11 +521,11 @@ def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int
             lo_a = min(lo_a, (sa + ea + (k * (s_lo if k >= 0 else s_hi)) // l2) // 2 - rr)
     a = two * dx
     if minor:
-        up = down = a * a >= q
+        up = down = bb >= q
         if up:
             up, down = a >= 0, a <= 0
     else:
-        up = down = a * a <= q
+        up = down = bb <= q
         if not up:
             up, down = a >= 0, a <= 0
     if up or down:
