@@ -293,7 +293,9 @@ def _fanuc_call() -> Any:
     """A Fanuc subprogram or macro call (M98, G65, G66): its loops may run far more lines than the text holds."""
     import re
 
-    return re.compile(r"[mM][ \t]*0*98(?![\d.])|[gG][ \t]*0*6[56](?![\d])")
+    # two patterns that start with a letter, searched in the upper-cased text: a literal first character is found
+    # by a fast scan (one pattern with "[mM]...|[gG]..." tests every character: 8x slower, issue 36)
+    return re.compile(r"M[ \t]*0*98(?![\d.])"), re.compile(r"G[ \t]*0*6[56](?![\d])")
 
 
 def _fanuc_boxes_first(text: str | FileText) -> bool:
@@ -311,8 +313,22 @@ def _fanuc_boxes_first(text: str | FileText) -> bool:
         return True
     if lines > FANUC_BOX_LINES or len(text) > FANUC_BOX_LINES * 128 or "#" in text:
         return False
+    if _BOXES_FIRST[0] is text:  # the same text asked again (the cases' loop, then the route)
+        return _BOXES_FIRST[1]
     pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
-    return not any(_fanuc_call().search(p) is not None for p in pieces)
+    m98, g65 = _fanuc_call()
+    got = True
+    for p in pieces:
+        up = p.upper()
+        if m98.search(up) is not None or g65.search(up) is not None:
+            got = False
+            break
+    _BOXES_FIRST[:] = [text, got]
+    return got
+
+
+#: the last text :func:`_fanuc_boxes_first` scanned for calls, and its answer
+_BOXES_FIRST: list[Any] = [None, False]
 
 
 def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],
