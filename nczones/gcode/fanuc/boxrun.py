@@ -53,12 +53,13 @@ _G = {"0": 0, "00": 0, "1": 10, "01": 10, "2": 20, "02": 20, "3": 30, "03": 30}
 
 
 def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int, str, str]) -> tuple | None:
-    """What a line of layout ``key`` holds in the plane ``(ia, ib, centre letter a, centre letter b)``:
-    ``(g, f, straight, arc)`` with ``g`` the slice of the G number (None: no G), ``f`` ``(start, end, multiplier)``
-    of F or None, ``straight`` the axis words ``((start, end, multiplier, axis index), ...)`` (None when the
-    line has R, I, J or K: not a straight move) and ``arc`` ``(r, centre a, centre b, word a, word b, helix)``
-    (slices as F's, None when absent; every slice of the line with its points removed; ``helix`` the other axes' words; ``arc`` None when the line is no arc the
-    lane takes in the plane); None for a line out of the subset (module docstring)."""
+    """What a line of layout ``key`` holds in the plane ``(ia, ib, centre letter a, centre letter b)``, its
+    numbers as slices of the line with its points removed: ``(g, f, straight, arc)`` with ``g`` the slice of the
+    G number (None: no G), ``f`` ``(slice, multiplier)`` of F or None, ``straight`` the axis words ``((slice,
+    multiplier, axis index), ...)`` (None when the line has R, I, J or K: not a straight move) and ``arc``
+    ``(R's slice, its multiplier, centre a, centre b, word a's slice, its multiplier, word b's, its multiplier,
+    the other axes' words)`` (a centre offset as F, None when absent; ``arc`` None when the line is no arc the lane
+    takes in the plane); None for a line out of the subset (module docstring)."""
     pos, n = 0, len(key)
     if key[-1:] == "\r":  # a CR LF line end
         n -= 1
@@ -87,20 +88,20 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
         elif letter == "G":
             if point or frac or whole.startswith("-") or len(whole) > 2:
                 return None
-            g = (a, b)
+            g = slice(a, b)
         elif letter == "F":
             if whole.startswith("-") or len(frac) > SCALE or len(whole) > 9:
                 return None
-            other["F"] = (a, b, 10 ** (SCALE - len(frac)))
+            other["F"] = (slice(a, b), 10 ** (SCALE - len(frac)))
         else:
             if not point or len(frac) > digits or len(whole.lstrip("-")) > _MAX_DIGITS:
                 return None
             mult = 10 ** (SCALE - len(frac))
             i = index.get(letter)
             if i is not None:
-                axes.append((a, b, mult, i))
+                axes.append((slice(a, b), mult, i))
             elif letter in "RIJK":
-                other[letter] = (a, b, mult)
+                other[letter] = (slice(a, b), mult)
             else:
                 return None
         first = False
@@ -112,11 +113,12 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
     rijk = [c for c in "RIJK" if c in other]
     arc = None
     if rijk and all(c in ("R", la, lb) for c in rijk) and ("R" in other) != (la in other or lb in other) \
-            and any(i == ia or i == ib for _a, _b, _m, i in words):
-        wa = next(((a, b, m) for a, b, m, i in words if i == ia), None)
-        wb = next(((a, b, m) for a, b, m, i in words if i == ib), None)
-        arc = (other.get("R"), other.get(la), other.get(lb), wa, wb,
-               tuple(w for w in words if w[3] != ia and w[3] != ib))
+            and any(i == ia or i == ib for _s, _m, i in words):
+        wa = next(((sl, m) for sl, m, i in words if i == ia), (None, 0))
+        wb = next(((sl, m) for sl, m, i in words if i == ib), (None, 0))
+        r = other.get("R", (None, 0))
+        arc = (r[0], r[1], other.get(la), other.get(lb), wa[0], wa[1], wb[0], wb[1],
+               tuple(w for w in words if w[2] != ia and w[2] != ib))
     return (g, other.get("F"), None if rijk else words, arc)
 
 
@@ -139,13 +141,6 @@ def _scaled(x: Any) -> int | None:
     x = Fraction(x)
     q, rem = divmod(x.numerator * _UNIT, x.denominator)
     return None if rem else q
-
-
-class _State:
-    """The interpreter's state the reader keeps as integers, and what it counts."""
-
-    __slots__ = ("pos", "off", "motion", "feed", "feed_text", "lo", "hi", "lines", "rapids", "arcs", "blocks",
-                 "g_seen", "last_line", "last_lineno", "lineno")
 
 
 def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
@@ -194,7 +189,7 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
     taken = lines = rapids = arcs = 0
     g_seen = False
     fmm = None  # the last F (scaled), None: unchanged
-    last = None
+    last_pos = last_no = 0
     keys = runner.box_keys
     if keys is None or len(keys) != n:
         keys = runner.box_keys = text.translate(_ZERO_DIGITS)  # the layouts of every line (digits zeroed)
@@ -218,11 +213,11 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         line = text[pos:end].replace(".", "")
         mo = motion
         if g is not None:
-            mo = gvalues.get(line[g[0]:g[1]], -1)
+            mo = gvalues.get(line[g], -1)
             if mo < 0:
                 break
         if f is not None:
-            fv = int(line[f[0]:f[1]]) * f[2]
+            fv = int(line[f[0]]) * f[1]
             if fv <= 0:
                 break
         else:
@@ -230,8 +225,8 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         if mo < 20:
             if words is None or (mo == 10 and fv == 0) or not straight_ok:
                 break  # R, I, J, K in G0/G1; G1 without a feed (check_feed): the general path
-            for a, b, m, i in words:
-                v = int(line[a:b]) * m + off[i]
+            for sl, m, i in words:
+                v = int(line[sl]) * m + off[i]
                 p[i] = v
                 if v < lo[i]:
                     lo[i] = v
@@ -244,21 +239,21 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         else:
             if arc is None or fv == 0 or not arc_ok:
                 break
-            r, ca, cb, wa, wb, helix = arc
-            sa, sb = p[ia], p[ib]
-            ea = int(line[wa[0]:wa[1]]) * wa[2] + oa if wa is not None else sa
-            eb = int(line[wb[0]:wb[1]]) * wb[2] + ob if wb is not None else sb
+            r, rm, ca, cb, wa, am, wb, bm, helix = arc
+            sa = p[ia]
+            sb = p[ib]
+            ea = int(line[wa]) * am + oa if wa is not None else sa
+            eb = int(line[wb]) * bm + ob if wb is not None else sb
             if r is not None:
-                box = r_arc_box(sa, sb, ea, eb, int(line[r[0]:r[1]]) * r[2], mo == 20)
+                box = r_arc_box(sa, sb, ea, eb, int(line[r]) * rm, mo == 20)
             else:
-                box = centre_arc_box(
-                    sa, sb, ea, eb, sa + int(line[ca[0]:ca[1]]) * ca[2] if ca is not None else sa,
-                    sb + int(line[cb[0]:cb[1]]) * cb[2] if cb is not None else sb, mo == 20, tol)
+                box = centre_arc_box(sa, sb, ea, eb, sa + int(line[ca[0]]) * ca[1] if ca is not None else sa,
+                                     sb + int(line[cb[0]]) * cb[1] if cb is not None else sb, mo == 20, tol)
             if box is None:
                 break
             p[ia], p[ib] = ea, eb
-            for a, b, m, i in helix:
-                v = int(line[a:b]) * m + off[i]
+            for sl, m, i in helix:
+                v = int(line[sl]) * m + off[i]
                 p[i] = v
                 if v < lo[i]:
                     lo[i] = v
@@ -279,12 +274,13 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
             g_seen = True
         if f is not None:
             feed = fmm = fv
-        last = (pos, lineno)
+        last_pos = pos
+        last_no = lineno
         taken += 1
         pos, lineno = end + 1, lineno + 1
     if not taken:
         return None
-    return _hand_back(runner, interp, rows, fresh, p, lo, hi, tl, motion, g_seen, fmm, last, taken,
+    return _hand_back(runner, interp, rows, fresh, p, lo, hi, tl, motion, g_seen, fmm, (last_pos, last_no), taken,
                       (lines, rapids, arcs), pos, lineno)
 
 
