@@ -48,6 +48,9 @@ _LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC
 _CENTRE = {"X": "I", "Y": "J", "Z": "K"}
 _ARC_ASSUMED = frozenset(("units", "distance", "offset", "plane"))
 _MAX_LAYOUTS = 4096
+#: an arc inside the run's box (read_box_run: its box is not made) and the units its bounds may be rounded outward
+_INSIDE = (0, 0, 0, 0)
+_SLACK = 4
 #: the motion of a G word's text the reader takes (G0-G3 with at most one leading zero)
 _G = {"0": 0, "00": 0, "1": 10, "01": 10, "2": 20, "02": 20, "3": 30, "03": 30}
 
@@ -245,7 +248,21 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
             ea = int(line[wa]) * am + oa if wa is not None else sa
             eb = int(line[wb]) * bm + ob if wb is not None else sb
             if r is not None:
-                box = r_arc_box(sa, sb, ea, eb, int(line[r]) * rm, mo == 20)
+                rv = int(line[r]) * rm
+                dx = ea - sa
+                dy = eb - sb
+                l2 = dx * dx + dy * dy
+                if 0 < l2 and l2 <= 3 * rv * rv:  # an arc r_arc_box takes (far from a half circle)
+                    # every point of it (and its box, rounded outward) lies within 2|R| of both ends: inside the
+                    # run's box, it leaves the box as it is
+                    w = 2 * (rv if rv > 0 else -rv) + _SLACK
+                    if (sa if sa > ea else ea) - w >= lo[ia] and (sa if sa < ea else ea) + w <= hi[ia] \
+                            and (sb if sb > eb else eb) - w >= lo[ib] and (sb if sb < eb else eb) + w <= hi[ib]:
+                        box = _INSIDE
+                    else:
+                        box = r_arc_box(sa, sb, ea, eb, rv, mo == 20)
+                else:
+                    box = r_arc_box(sa, sb, ea, eb, rv, mo == 20)
             else:
                 box = centre_arc_box(sa, sb, ea, eb, sa + int(line[ca[0]]) * ca[1] if ca is not None else sa,
                                      sb + int(line[cb[0]]) * cb[1] if cb is not None else sb, mo == 20, tol)
@@ -259,15 +276,16 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
                     lo[i] = v
                 elif v > hi[i]:
                     hi[i] = v
-            la, ha, lb, hb = box
-            if la < lo[ia]:
-                lo[ia] = la
-            if ha > hi[ia]:
-                hi[ia] = ha
-            if lb < lo[ib]:
-                lo[ib] = lb
-            if hb > hi[ib]:
-                hi[ib] = hb
+            if box is not _INSIDE:
+                la, ha, lb, hb = box
+                if la < lo[ia]:
+                    lo[ia] = la
+                if ha > hi[ia]:
+                    hi[ia] = ha
+                if lb < lo[ib]:
+                    lo[ib] = lb
+                if hb > hi[ib]:
+                    hi[ib] = hb
             arcs += 1
         motion = mo
         if g is not None:

@@ -221,3 +221,26 @@ def test_a_long_program_with_one_bulging_arc_is_not_safe(k):
 @given(_programs(120))
 def test_the_reader_reads_as_the_lanes_long(program):
     _agree(program[0], _WIDE)
+
+
+@pytest.mark.parametrize("arc, past", [
+    ("G3 X5. Y8.5 R3.", False),  # the minor arc between (5, 8) and (5, 8.5): within 0.5 of the ends
+    ("G3 X5. Y8.5 R-3.", True),  # the major one: its circle (centre ~(5 -+ 2.99, 8.25)) reaches Y 11.25 > 11
+    ("G2 X5. Y8.5 R-3.", True),
+    ("G2 X4. Y5. R-2.", False),  # the major arc of radius 2 about (4.5, 5 -+ 1.94): Y 1.06 .. 8.94, inside
+])
+def test_an_arc_inside_the_run_s_box(arc, past):
+    """The reader leaves the box as it is for an R arc that lies within 2|R| of both ends inside the run's box
+    (every point of an arc is within a diameter of its ends), and makes its box otherwise: the boxes tested are
+    the lanes' (which make every arc's box) in both cases.  The run's box: program X -1..11, Y -1..11 (straight
+    moves to its corners).  An arc whose ends are inside and whose bulge leaves the box by less than 2|R| (Y
+    11.25: the major arc of radius 3 through (5, 8) and (5, 8.5), its centre 2.99 from the chord's midpoint Y
+    8.25) must widen it."""
+    text = ("O1\nG90 G17 G21 G54 G00 X0. Y0. Z0.\nG01 F500.\nG1 X-1. Y-1.\nX11. Y11.\nX-1. Y11.\nX11. Y-1.\n"
+            f"X5. Y8.\n{arc}\nM30\n")
+    read, boxes, taken = _run(text, True, machine=_WIDE)
+    lanes, lane_boxes, _ = _run(text, False, machine=_WIDE)
+    assert (read, boxes) == (lanes, lane_boxes)
+    assert taken == 5
+    hi_y = dict(boxes[-1][1])["Y"] - 50  # program Y (G54 Y = 50)
+    assert (hi_y > 11) == past
