@@ -264,8 +264,20 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
                 else:
                     box = r_arc_box(sa, sb, ea, eb, rv, mo == 20)
             else:
-                box = centre_arc_box(sa, sb, ea, eb, sa + int(line[ca[0]]) * ca[1] if ca is not None else sa,
-                                     sb + int(line[cb[0]]) * cb[1] if cb is not None else sb, mo == 20, tol)
+                xa = sa + int(line[ca[0]]) * ca[1] if ca is not None else sa
+                xb = sb + int(line[cb[0]]) * cb[1] if cb is not None else sb
+                dx = sa - xa
+                dy = sb - xb
+                l2 = dx * dx + dy * dy  # the radius squared, at the start
+                dx = ea - xa
+                dy = eb - xb
+                # ends at one distance from the centre: the arc lies in the circle's box, the one centre_arc_box
+                # takes its extremes from (the root rounded up: one unit); inside the run's box, nothing to add
+                w = min(xa - lo[ia], hi[ia] - xa, xb - lo[ib], hi[ib] - xb) - 1
+                if 0 < l2 and l2 == dx * dx + dy * dy and w >= 0 and w * w >= l2:
+                    box = _INSIDE
+                else:
+                    box = centre_arc_box(sa, sb, ea, eb, xa, xb, mo == 20, tol)
             if box is None:
                 break
             p[ia], p[ib] = ea, eb
