@@ -146,193 +146,214 @@ def _scaled(x: Any) -> int | None:
     return None if rem else q
 
 
-def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
-    """Read the plain lines of ``text`` from offset ``pos`` (line ``lineno``) into the box of the interpreter's
-    run, as the plain lanes would (module docstring): ``(next offset, next line number, whether the chunk is
-    full)``, or None when the first line is not taken (nothing changed)."""
+class _Run:
+    """The interpreter's state the reader keeps as integers at the scale (:func:`_start`), and its counts."""
+
+    __slots__ = ("rows", "fresh", "p", "lo", "hi", "off", "tl", "feed", "feed0", "tol", "motion", "room", "plane",
+                 "index", "layouts", "digits", "straight_ok", "arc_ok", "kinds", "g_seen", "taken", "last")
+
+    kinds: list[int]
+
+
+def _start(runner: Any) -> _Run | None:
+    """The state at the start of a run, None when the reader does not take it (module docstring)."""
     interp = runner.state
     if not _takes(interp, runner):
         return None
+    st = _Run()
     unset = interp.unset
-    straight_ok = not unset or interp._noted_straight  # else the general lane notes the assumed modes
-    arc_ok = not unset or unset.isdisjoint(_ARC_ASSUMED)
-    axes = interp.axes
-    index = {name: i for i, name in enumerate(axes) if name in "XYZ"}
+    st.straight_ok = not unset or interp._noted_straight  # else the general lane notes the assumed modes
+    st.arc_ok = not unset or unset.isdisjoint(_ARC_ASSUMED)
+    st.index = index = {name: i for i, name in enumerate(interp.axes) if name in "XYZ"}
     a_name, b_name, _n = PLANE_AXES[interp.plane]
     ia, ib = index.get(a_name), index.get(b_name)
     if ia is None or ib is None:
         return None
-    plane = (ia, ib, _CENTRE[a_name], _CENTRE[b_name])
-    p = [_scaled(v) for v in interp.pos]
-    off = [_scaled(v) for v in interp.off]
-    tl = _scaled(interp.tlo)
-    feed = _scaled(interp.feed) if interp.feed is not None else None
-    tol = None
-    if interp.arc_rule == "fixed":
-        tol = _scaled(interp.arc_tolerance)
-        if tol is None:
-            return None
-    if None in p or None in off or tl is None or feed is None or any(abs(o) >= 2**56 for o in off):
+    st.plane = plane = (ia, ib, _CENTRE[a_name], _CENTRE[b_name])
+    st.p = p = [_scaled(v) for v in interp.pos]
+    st.off = off = [_scaled(v) for v in interp.off]
+    st.tl = _scaled(interp.tlo)
+    st.feed = st.feed0 = _scaled(interp.feed) if interp.feed is not None else None
+    st.tol = _scaled(interp.arc_tolerance) if interp.arc_rule == "fixed" else 0
+    if None in p or None in off or st.tl is None or st.feed is None or st.tol is None \
+            or any(abs(o) >= 2**56 for o in off):
         return None
-    sink = interp.row_sink
+    if interp.arc_rule != "fixed":
+        st.tol = None
     emitted = interp.emitted
-    rows: Any = emitted[-1] if emitted else None
-    fresh = type(rows) is not BoxRows or rows.prev_end is not interp.pos or rows.full
-    if fresh:
-        lo, hi, room = p[:], p[:], sink.max_rows
+    st.rows = rows = emitted[-1] if emitted else None
+    st.fresh = type(rows) is not BoxRows or rows.prev_end is not interp.pos or rows.full
+    if st.fresh:
+        st.lo, st.hi, st.room = p[:], p[:], interp.row_sink.max_rows
     else:
-        lo, hi, room = rows.lo[:], rows.hi[:], rows.max_rows - rows.count
-    digits = runner.box_digits
-    layouts = runner.box_layouts.get(plane)
-    if layouts is None:
-        layouts = runner.box_layouts[plane] = {}
-    oa, ob = off[ia], off[ib]
-    motion = interp.motion
-    n = len(text)
-    taken = lines = rapids = arcs = 0
-    g_seen = False
-    fmm = None  # the last F (scaled), None: unchanged
-    last_pos = last_no = 0
+        st.lo, st.hi, st.room = rows.lo[:], rows.hi[:], rows.max_rows - rows.count
+    st.digits = runner.box_digits
+    st.layouts = runner.box_layouts.setdefault(plane, {})
+    st.motion = interp.motion
+    st.kinds = [0, 0, 0, 0]  # motions by motion // 10 (G0, G1, G2, G3)
+    st.g_seen = st.taken = 0
+    st.last = (0, 0)
+    return st
+
+
+def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
+    """Read the plain lines of ``text`` from offset ``pos`` (line ``lineno``) into the box of the interpreter's
+    run, as the plain lanes would (module docstring): ``(next offset, next line number, whether the chunk is
+    full)``, or None when the first line is not taken (nothing changed)."""
+    st = _start(runner)
+    if st is None:
+        return None
     keys = runner.box_keys
-    if keys is None or len(keys) != n:
+    if keys is None or len(keys) != len(text):
         keys = runner.box_keys = text.translate(_ZERO_DIGITS)  # the layouts of every line (digits zeroed)
-    gvalues = _G
+    pos, lineno = _lines(st, text, keys, pos, lineno)
+    if not st.taken:
+        return None
+    return _hand_back(runner, runner.state, st, pos, lineno)
+
+
+def _miss(st: _Run, key: str) -> tuple | None:
+    """The layout of ``key`` not met before in this plane (kept)."""
+    got = None if key.startswith("\ufeff") else _layout(key, st.index, st.digits, st.plane)
+    if len(st.layouts) < _MAX_LAYOUTS:
+        st.layouts[key] = got
+    return got
+
+
+def _lines(st: _Run, text: str, keys: str, pos: int, lineno: int) -> tuple[int, int]:
+    """Read lines from ``pos`` while they are in the subset (module docstring): the next offset and line number;
+    the state, box and counts in ``st``."""
+    p, lo, hi, off, layouts, gvalues = st.p, st.lo, st.hi, st.off, st.layouts, _G
+    motion, feed, room, kinds, straight_ok, arc_ok = st.motion, st.feed, st.room, st.kinds, st.straight_ok, st.arc_ok
+    taken = g_seen = 0
+    n = len(text)
     while taken < room and pos < n:
         end = text.find("\n", pos)
         if end < 0:
             end = n
         key = keys[pos:end]
         got = layouts.get(key, 0)
-        if got == 0:
-            got = None if key.startswith("\ufeff") else _layout(key, index, digits, plane)
-            if len(layouts) < _MAX_LAYOUTS:
-                layouts[key] = got
-        if got is None:
+        if got is None or (got == 0 and (got := _miss(st, key)) is None):
             if key.strip(" \t\r"):
                 break
             pos, lineno = end + 1, lineno + 1  # a blank line: no block (plain_first)
             continue
         g, f, words, arc = got
         line = text[pos:end].replace(".", "")
-        mo = motion
-        if g is not None:
-            mo = gvalues.get(line[g], -1)
-            if mo < 0:
-                break
-        if f is not None:
-            fv = int(line[f[0]]) * f[1]
-            if fv <= 0:
-                break
-        else:
-            fv = feed
+        mo = motion if g is None else gvalues.get(line[g], -1)
+        fv = feed if f is None else int(line[f[0]]) * f[1]
+        if mo < 0 or fv < 0 or (fv == 0 and f is not None):
+            break  # another G; F 0 or negative (the lanes' decline)
         if mo < 20:
-            if words is None or (mo == 10 and fv == 0) or not straight_ok:
+            if words is None or not straight_ok or (mo == 10 and fv == 0):
                 break  # R, I, J, K in G0/G1; G1 without a feed (check_feed): the general path
-            for sl, m, i in words:
-                v = int(line[sl]) * m + off[i]
-                p[i] = v
-                if v < lo[i]:
-                    lo[i] = v
-                elif v > hi[i]:
-                    hi[i] = v
-            if mo == 10:
-                lines += 1
-            else:
-                rapids += 1
-        else:
-            if arc is None or fv == 0 or not arc_ok:
-                break
-            r, rm, ca, cb, wa, am, wb, bm, helix = arc
-            sa = p[ia]
-            sb = p[ib]
-            ea = int(line[wa]) * am + oa if wa is not None else sa
-            eb = int(line[wb]) * bm + ob if wb is not None else sb
-            if r is not None:
-                rv = int(line[r]) * rm
-                dx = ea - sa
-                dy = eb - sb
-                l2 = dx * dx + dy * dy
-                if 0 < l2 and l2 <= 3 * rv * rv:  # an arc r_arc_box takes (far from a half circle)
-                    # every point of it (and its box, rounded outward) lies within 2|R| of both ends: inside the
-                    # run's box, it leaves the box as it is
-                    w = 2 * (rv if rv > 0 else -rv) + _SLACK
-                    if (sa if sa > ea else ea) - w >= lo[ia] and (sa if sa < ea else ea) + w <= hi[ia] \
-                            and (sb if sb > eb else eb) - w >= lo[ib] and (sb if sb < eb else eb) + w <= hi[ib]:
-                        box = _INSIDE
-                    else:
-                        box = r_arc_box(sa, sb, ea, eb, rv, mo == 20)
-                else:
-                    box = r_arc_box(sa, sb, ea, eb, rv, mo == 20)
-            else:
-                xa = sa + int(line[ca[0]]) * ca[1] if ca is not None else sa
-                xb = sb + int(line[cb[0]]) * cb[1] if cb is not None else sb
-                dx = sa - xa
-                dy = sb - xb
-                l2 = dx * dx + dy * dy  # the radius squared, at the start
-                dx = ea - xa
-                dy = eb - xb
-                # ends at one distance from the centre: the arc lies in the circle's box, the one centre_arc_box
-                # takes its extremes from (the root rounded up: one unit); inside the run's box, nothing to add
-                w = min(xa - lo[ia], hi[ia] - xa, xb - lo[ib], hi[ib] - xb) - 1
-                if 0 < l2 and l2 == dx * dx + dy * dy and w >= 0 and w * w >= l2:
-                    box = _INSIDE
-                else:
-                    box = centre_arc_box(sa, sb, ea, eb, xa, xb, mo == 20, tol)
-            if box is None:
-                break
-            p[ia], p[ib] = ea, eb
-            for sl, m, i in helix:
-                v = int(line[sl]) * m + off[i]
-                p[i] = v
-                if v < lo[i]:
-                    lo[i] = v
-                elif v > hi[i]:
-                    hi[i] = v
-            if box is not _INSIDE:
-                la, ha, lb, hb = box
-                if la < lo[ia]:
-                    lo[ia] = la
-                if ha > hi[ia]:
-                    hi[ia] = ha
-                if lb < lo[ib]:
-                    lo[ib] = lb
-                if hb > hi[ib]:
-                    hi[ib] = hb
-            arcs += 1
-        motion = mo
-        if g is not None:
-            g_seen = True
-        if f is not None:
-            feed = fmm = fv
-        last_pos = pos
-        last_no = lineno
+            _straight(line, words, p, lo, hi, off)
+        elif arc is None or fv == 0 or not arc_ok or not _arc(st, line, arc, mo == 20):
+            break
+        kinds[mo // 10] += 1
+        motion, feed = mo, fv
+        g_seen += g is not None
+        st.last = (pos, lineno)
         taken += 1
         pos, lineno = end + 1, lineno + 1
-    if not taken:
-        return None
-    return _hand_back(runner, interp, rows, fresh, p, lo, hi, tl, motion, g_seen, fmm, (last_pos, last_no), taken,
-                      (lines, rapids, arcs), pos, lineno)
+    st.motion, st.feed, st.taken, st.g_seen = motion, feed, taken, g_seen
+    return pos, lineno
 
 
-def _hand_back(runner: Any, interp: Any, rows: Any, fresh: bool, p: list[int], lo: list[int], hi: list[int],
-               tl: int, motion: int, g_seen: bool, fmm: Any, last: Any, taken: int, kinds: tuple[int, int, int],
-               pos: int, lineno: int) -> tuple[int, int, bool]:
+def _straight(line: str, words: tuple, p: list[int], lo: list[int], hi: list[int], off: list[int]) -> None:
+    """A straight move's end into the position and the box (``BoxRows.add``)."""
+    for sl, m, i in words:
+        v = int(line[sl]) * m + off[i]
+        p[i] = v
+        if v < lo[i]:
+            lo[i] = v
+        elif v > hi[i]:
+            hi[i] = v
+
+
+def _arc(st: _Run, line: str, arc: tuple, cw: bool) -> bool:
+    """An arc into the position and the box as ``BoxRows.add_arc`` (True), or False (nothing changed) when the
+    box functions leave it to the interpreter."""
+    r, rm, ca, cb, wa, am, wb, bm, helix = arc
+    p, lo, hi, off = st.p, st.lo, st.hi, st.off
+    ia, ib = st.plane[0], st.plane[1]
+    sa = p[ia]
+    sb = p[ib]
+    ea = int(line[wa]) * am + off[ia] if wa is not None else sa
+    eb = int(line[wb]) * bm + off[ib] if wb is not None else sb
+    box: Any
+    if r is not None:
+        rv = int(line[r]) * rm
+        dx = ea - sa
+        dy = eb - sb
+        l2 = dx * dx + dy * dy
+        # an arc r_arc_box takes (far from a half circle): every point of it (and its box, rounded outward) lies
+        # within 2|R| of both ends; inside the run's box, it leaves the box as it is
+        w = 2 * (rv if rv > 0 else -rv) + _SLACK
+        if 0 < l2 and l2 <= 3 * rv * rv and (sa if sa > ea else ea) - w >= lo[ia] \
+                and (sa if sa < ea else ea) + w <= hi[ia] and (sb if sb > eb else eb) - w >= lo[ib] \
+                and (sb if sb < eb else eb) + w <= hi[ib]:
+            box = _INSIDE
+        else:
+            box = r_arc_box(sa, sb, ea, eb, rv, cw)
+    else:
+        box = _centre_box(st, line, ca, cb, sa, sb, ea, eb, cw)
+    if box is None:
+        return False
+    p[ia], p[ib] = ea, eb
+    if helix:
+        _straight(line, helix, p, lo, hi, off)
+    if box is not _INSIDE:
+        la, ha, lb, hb = box
+        if la < lo[ia]:
+            lo[ia] = la
+        if ha > hi[ia]:
+            hi[ia] = ha
+        if lb < lo[ib]:
+            lo[ib] = lb
+        if hb > hi[ib]:
+            hi[ib] = hb
+    return True
+
+
+def _centre_box(st: _Run, line: str, ca: Any, cb: Any, sa: int, sb: int, ea: int, eb: int, cw: bool) -> Any:
+    """The box of an I/J/K arc (``centre_arc_box``), :data:`_INSIDE` when the circle's box is inside the run's."""
+    lo, hi = st.lo, st.hi
+    ia, ib = st.plane[0], st.plane[1]
+    xa = sa + int(line[ca[0]]) * ca[1] if ca is not None else sa
+    xb = sb + int(line[cb[0]]) * cb[1] if cb is not None else sb
+    dx = sa - xa
+    dy = sb - xb
+    l2 = dx * dx + dy * dy  # the radius squared, at the start
+    dx = ea - xa
+    dy = eb - xb
+    # ends at one distance from the centre: the arc lies in the circle's box, the one centre_arc_box takes its
+    # extremes from (the root rounded up: one unit); inside the run's box, nothing to add
+    w = min(xa - lo[ia], hi[ia] - xa, xb - lo[ib], hi[ib] - xb) - 1
+    if 0 < l2 and l2 == dx * dx + dy * dy and w >= 0 and w * w >= l2:
+        return _INSIDE
+    return centre_arc_box(sa, sb, ea, eb, xa, xb, cw, st.tol)
+
+
+def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int) -> tuple[int, int, bool]:
     """The state after the run, as the lanes leave it (module docstring)."""
     from ..lexer import make_span
 
-    end = tuple(Fraction(v, _UNIT) for v in p)
-    if fresh:
-        rows = BoxRows(interp.pos, lo, interp.file, interp.row_sink.max_rows)
+    end = tuple(Fraction(v, _UNIT) for v in st.p)
+    rows = st.rows
+    if st.fresh:
+        rows = BoxRows(interp.pos, st.lo, interp.file, interp.row_sink.max_rows)
         interp.emitted.append(rows)
-    rows.lo, rows.hi = lo, hi
+    rows.lo, rows.hi = st.lo, st.hi
     if interp.tlo is not rows.tl:
         rows.tl = interp.tlo
-        rows.tls.add(tl)
+        rows.tls.add(st.tl)
+    taken = st.taken
     rows.count += taken
     if rows.count >= rows.max_rows:
         rows.full = True
     rows.prev_end = end
-    last_pos, last_no = last
+    last_pos, last_no = st.last
     text = runner.main.src.text
     line = text[last_pos:text.find("\n", last_pos) % (len(text) + 1)].removesuffix("\r")
     index = runner.index + taken - 1
@@ -341,20 +362,17 @@ def _hand_back(runner: Any, interp: Any, rows: Any, fresh: bool, p: list[int], l
     interp.block_index = index
     interp.span = make_span(interp.file, last_no, 1, len(line) + 1, line)
     interp.blocks += taken
-    if g_seen:
+    if st.g_seen:
         interp.cycle_il = None
         interp.last_cycle = None
-    interp.motion = motion
-    if fmm is not None:
-        interp.feed = Fraction(fmm, _UNIT)
+    interp.motion = st.motion
+    if st.feed != st.feed0:
+        interp.feed = Fraction(st.feed, _UNIT)
     counts = interp.kind_counts
-    lines, rapids, arcs = kinds
-    if lines:
-        counts[_LINE] += lines
-    if rapids:
-        counts[_RAPID] += rapids
-    if arcs:
-        counts[_ARC] += arcs
+    g0, g1, g2, g3 = st.kinds
+    for kind, k in ((_RAPID, g0), (_LINE, g1), (_ARC, g2 + g3)):
+        if k:
+            counts[kind] += k
     interp.segment_count += taken
     interp.pos = end
     interp.prerotation_xy_next = None
