@@ -313,8 +313,10 @@ def _fanuc_boxes_first(text: str | FileText) -> bool:
         return True
     if lines > FANUC_BOX_LINES or len(text) > FANUC_BOX_LINES * 128 or "#" in text:
         return False
-    if _BOXES_FIRST[0] is text:  # the same text asked again (the cases' loop, then the route)
-        return _BOXES_FIRST[1]
+    global _BOXES_FIRST
+    last = _BOXES_FIRST
+    if last[0] is text:  # the same text asked again (the cases' loop, then the route)
+        return bool(last[1])
     pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
     m98, g65 = _fanuc_call()
     got = True
@@ -323,12 +325,12 @@ def _fanuc_boxes_first(text: str | FileText) -> bool:
         if m98.search(up) is not None or g65.search(up) is not None:
             got = False
             break
-    _BOXES_FIRST[:] = [text, got]
+    _BOXES_FIRST = (text, got)  # one tuple: a thread reads a text and its own answer
     return got
 
 
 #: the last text :func:`_fanuc_boxes_first` scanned for calls, and its answer
-_BOXES_FIRST: list[Any] = [None, False]
+_BOXES_FIRST: tuple[Any, bool] = (None, False)
 
 
 def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],

@@ -46,7 +46,6 @@ _WORD = re.compile(r"([A-Z])[ \t]*(-?0*)(\.?)(0*)[ \t]*")
 _MAX_DIGITS = 7
 _LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC
 _CENTRE = {"X": "I", "Y": "J", "Z": "K"}
-_ARC_ASSUMED = frozenset(("units", "distance", "offset", "plane"))
 _MAX_LAYOUTS = 4096
 #: an arc inside the run's box (read_box_run: its box is not made) and the units its bounds may be rounded outward
 _INSIDE = (0, 0, 0, 0)
@@ -125,19 +124,15 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
     return (g, other.get("F"), None if rijk else words, arc)
 
 
-def _takes(interp: Any, runner: Any) -> bool:
-    """Whether the interpreter's state is one both plain lanes take (``FanucInterpreter.lane``, ``_arc_lane``; the
-    assumed modes each notes are tested per line kind by the caller)."""
+def _takes(interp: Any, runner: Any) -> tuple[bool, bool] | None:
+    """Whether the runner and the interpreter are in a state both plain lanes take lines in
+    (``FanucInterpreter.box_lane_modes``): (straight moves, arcs) or None."""
     sink = interp.row_sink
-    return (type(sink) is BoxSink and interp.fused_lane and runner.modal_call is None and runner.lane is not None
-            and not runner.shape_codes and not (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3)))
-            and interp.segment_count >= sink.start and not interp.ended and not interp.m73_saved
-            and not interp.track and interp.machine_at is None and not interp.unsupported
-            and interp.prerotation_xy is None and interp.spline_state is None and not interp.comp_on
-            and not interp.comp_just_off and interp.cycle is None and interp._tlo_shift is None
-            and not interp.after_home and interp.prog is None and not interp._tlo_untaken and not interp.inch
-            and interp.absolute and interp.feed_mode == 94 and not interp._first_after_transform
-            and not interp.arc_absolute)
+    if type(sink) is not BoxSink or runner.modal_call is not None or runner.lane is None or runner.shape_codes \
+            or (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3))) or interp.segment_count < sink.start:
+        return None
+    modes: tuple[bool, bool] | None = interp.box_lane_modes()
+    return modes
 
 
 def _scaled(x: Any) -> int | None:
@@ -158,12 +153,11 @@ class _Run:
 def _start(runner: Any) -> _Run | None:
     """The state at the start of a run, None when the reader does not take it (module docstring)."""
     interp = runner.state
-    if not _takes(interp, runner):
+    modes = _takes(interp, runner)
+    if modes is None:
         return None
     st = _Run()
-    unset = interp.unset
-    st.straight_ok = not unset or interp._noted_straight  # else the general lane notes the assumed modes
-    st.arc_ok = not unset or unset.isdisjoint(_ARC_ASSUMED)
+    st.straight_ok, st.arc_ok = modes
     st.index = index = {name: i for i, name in enumerate(interp.axes) if name in "XYZ"}
     a_name, b_name, _n = PLANE_AXES[interp.plane]
     ia, ib = index.get(a_name), index.get(b_name)

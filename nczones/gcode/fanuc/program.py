@@ -275,6 +275,7 @@ class FanucRunner:
         self.box_layouts: dict[str, Any] = {}
         self.box_keys: str | None = None  # the main text with its digits zeroed (read_box_run)
         self.box_declined = -1  # the offset where read_box_run last took no line
+        self.box_misses = self.box_wait = 0  # attempts in a row that took none; lines to pass before the next
         self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
         self._long_inch = re.compile(rf"[XYZUVWIJKRQxyzuvwijkrq][ \t]*[+-]?\d*\.\d{{{digits + 2}}}|"
                                      rf"[ABCabc][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
@@ -857,15 +858,22 @@ class FanucRunner:
     def box_run(self, frame: _Frame, pos: int, lineno: int) -> Any:
         """A run of plain lines of the main text from ``pos`` read by :func:`nczones.gcode.fanuc.boxrun.read_box_run`
         (outside loops and calls): as a closure's result (``(pos, lineno)`` after it, ``[(pos, lineno)]`` when the
-        chunk is full), or None when it takes no line (it is not asked again at that line)."""
+        chunk is full), or None when it takes no line (it is not asked again at that line; after 8k attempts in a row
+        that took none, the next k lines are not tried: a program it declines line by line, G91 say, costs little)."""
         if pos == self.box_declined or len(self.frames) != 1 or frame.loops or frame.source is not self.main:
+            return None
+        if self.box_wait:  # lines since the last attempt that took none (a run of lines it declines costs little)
+            self.box_wait -= 1
             return None
         from .boxrun import read_box_run
 
         got = read_box_run(self, self.main.src.text, pos, lineno)  # type: ignore[attr-defined]  # a StringSource
         if got is None:
             self.box_declined = pos
+            self.box_misses += 1
+            self.box_wait = self.box_misses // 8
             return None
+        self.box_misses = 0
         return [got[:2]] if got[2] else got[:2]
 
     def plain_first(self, source: _Source, line: str, nxt: int, parsed: tuple, lineno: int) -> Any:

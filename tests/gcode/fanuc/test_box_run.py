@@ -249,3 +249,22 @@ def test_an_arc_inside_the_run_s_box(arc, past):
     assert taken == 5
     hi_y = dict(boxes[-1][1])["Y"] - 50  # program Y (G54 Y = 50)
     assert (hi_y > 11) == (past and "X6.6" not in arc)
+
+
+def test_a_program_the_reader_declines_line_by_line_is_tried_seldom(monkeypatch):
+    """Incremental input (G91) on every line: the reader takes none of its 600 lines (the lanes do not take G91) and
+    after 8k attempts in a row that took none passes the next k lines (FanucRunner.box_run): about
+    sqrt(16 * 600) = 98 attempts, not 600; the report is the lanes'."""
+    calls = [0]
+    real = boxrun.read_box_run
+
+    def counted(*a):
+        calls[0] += 1
+        return real(*a)
+
+    text = "O1\nG91 G17 G21 G54 G01 F500.\n" + "X0.01 Y0.01\nX-0.01 Y0.005\n" * 300 + "M30\n"
+    monkeypatch.setattr(boxrun, "read_box_run", counted)
+    read, boxes, taken = _run(text, True)
+    assert taken == 0
+    assert 60 < calls[0] < 140
+    assert (read, boxes) == _run(text, False)[:2]
