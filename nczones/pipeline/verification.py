@@ -281,11 +281,12 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
 
 
 #: Plain Fanuc programs (no ``#``, no M98/G65/G66 call in the text) of :data:`FAST_PATH_MIN_LINES` lines up to this
-#: many try the numpy-free box route (:mod:`nczones.prover.fanucboxes`; its lane writes straight moves and arcs into
-#: a run's box) before the vectorized fast path: the crossover of the route (no numpy to load; about 10 us a
-#: straight line, 14 an R arc) and the fast path (numpy's import and set-up, then about 1-7 us a line), measured on
-#: R-arc and G1 programs (specs/performance.md, "Fanuc plain programs on the box route").
-FANUC_BOX_LINES = 200_000
+#: many try the numpy-free box route (:mod:`nczones.prover.fanucboxes`; its runs of plain lines read from the text
+#: into a run's box, ``gcode/fanuc/boxrun.py``, about 1.5 us a straight line, 2.5-3.5 an arc) before the vectorized
+#: fast path: below the crossover of the route (no numpy to load) and the fast path (numpy's import and set-up,
+#: then about 1.5-2 us a line), measured on R-arc, I/J-arc and G1 programs of 4,000-60,000 lines (the I/J ones
+#: cross first, at about 50,000; specs/performance.md, "Fanuc plain runs read from the text").
+FANUC_BOX_LINES = 40_000
 
 
 @functools.cache
