@@ -70,7 +70,7 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
     seen: set[str] = set()
     g = None
     axes = []
-    other: dict[str, tuple[int, int, int]] = {}
+    other: dict[str, tuple[slice, int]] = {}
     first = True
     while pos < n:
         m = _WORD.match(key, pos)
@@ -147,7 +147,28 @@ class _Run:
     __slots__ = ("rows", "fresh", "p", "lo", "hi", "off", "tl", "feed", "feed0", "tol", "motion", "room", "plane",
                  "index", "layouts", "digits", "straight_ok", "arc_ok", "kinds", "g_seen", "taken", "last")
 
+    rows: Any
+    fresh: bool
+    p: list[int]
+    lo: list[int]
+    hi: list[int]
+    off: list[int]
+    tl: int
+    feed: int
+    feed0: int
+    tol: int | None
+    motion: int
+    room: int
+    plane: tuple[int, int, str, str]
+    index: dict[str, int]
+    layouts: dict[str, Any]
+    digits: int
+    straight_ok: bool
+    arc_ok: bool
     kinds: list[int]
+    g_seen: int
+    taken: int
+    last: tuple[int, int]
 
 
 def _start(runner: Any) -> _Run | None:
@@ -164,18 +185,17 @@ def _start(runner: Any) -> _Run | None:
     if ia is None or ib is None:
         return None
     st.plane = plane = (ia, ib, _CENTRE[a_name], _CENTRE[b_name])
-    st.p = p = [_scaled(v) for v in interp.pos]
-    st.off = off = [_scaled(v) for v in interp.off]
-    st.tl = _scaled(interp.tlo)
-    st.feed = st.feed0 = _scaled(interp.feed) if interp.feed is not None else None
-    st.tol = _scaled(interp.arc_tolerance) if interp.arc_rule == "fixed" else 0
-    if None in p or None in off or st.tl is None or st.feed is None or st.tol is None \
-            or any(abs(o) >= 2**56 for o in off):
+    p: Any = [_scaled(v) for v in interp.pos]
+    off: Any = [_scaled(v) for v in interp.off]
+    tl, feed = _scaled(interp.tlo), _scaled(interp.feed) if interp.feed is not None else None
+    tol = _scaled(interp.arc_tolerance) if interp.arc_rule == "fixed" else 0
+    if None in p or None in off or tl is None or feed is None or tol is None or any(abs(o) >= 2**56 for o in off):
         return None
-    if interp.arc_rule != "fixed":
-        st.tol = None
+    st.p, st.off, st.tl, st.feed, st.feed0 = p, off, tl, feed, feed
+    st.tol = tol if interp.arc_rule == "fixed" else None
     emitted = interp.emitted
-    st.rows = rows = emitted[-1] if emitted else None
+    rows: Any = emitted[-1] if emitted else None
+    st.rows = rows
     st.fresh = type(rows) is not BoxRows or rows.prev_end is not interp.pos or rows.full
     if st.fresh:
         st.lo, st.hi, st.room = p[:], p[:], interp.row_sink.max_rows

@@ -849,7 +849,7 @@ class FanucRunner:
         route) of a main text held as a string, else None."""
         sink = getattr(self.state, "row_sink", None)
         if sink is None or not getattr(sink, "arcs", False) or self.fast_runs or type(self.main.src) is not StringSource \
-                or self.main.file != getattr(self.state, "file", None) or "#" in self.main.src.text:  # type: ignore[attr-defined]
+                or self.main.file != getattr(self.state, "file", None) or "#" in self.main.src.text:
             return None  # (a macro program's plain lines run in its loops and calls, which the reader leaves)
         from . import boxrun
 
