@@ -175,6 +175,16 @@ def test_the_reader_reads_as_the_lanes(program):
     _agree(text, _WIDE)
 
 
+@settings(max_examples=10, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_programs())
+def test_the_reader_reads_as_the_fast_path(program):
+    """A generated program after 520 straight moves (more than 512 lines: without the route the vectorized fast
+    path reads it) agrees on every side as above."""
+    text, _takes = program
+    head, _, rest = text.partition("G01 F500.")
+    _agree(head + "G01 F500." + "".join(f"\nG1 X{k % 7}. Y{k % 5}." for k in range(520)) + rest, _WIDE)
+
+
 def test_the_reader_takes_the_plain_lines():
     """A program of plain lines is read by the reader but for the lines it hands back: 6 of its 8 motions (the
     first straight move notes the assumed modes on the general lane; a length without a point is the decimal
