@@ -72,16 +72,18 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
     axes = []
     other: dict[str, tuple[slice, int]] = {}
     first = True
+    dots = 0  # points before pos
     while pos < n:
         m = _WORD.match(key, pos)
         if m is None:
             return None
-        letter, whole, point, frac = m.group(1), m.group(2), m.group(3), m.group(4)
+        letter, whole, point, frac = m.groups()
         if letter in seen:
             return None
         seen.add(letter)
-        a, b = m.start(2), m.end(4)
-        a, b = a - key.count(".", 0, a), b - key.count(".", 0, b)  # in the line without its points
+        a = m.start(2) - dots  # in the line without its points
+        dots += len(point)
+        b = m.end(4) - dots
         if len(whole.lstrip("-")) + len(frac) == 0:
             return None
         if letter == "N":
@@ -145,7 +147,7 @@ class _Run:
     """The interpreter's state the reader keeps as integers at the scale (:func:`_start`), and its counts."""
 
     __slots__ = ("rows", "fresh", "p", "lo", "hi", "off", "tl", "feed", "feed0", "tol", "motion", "room", "plane",
-                 "index", "layouts", "digits", "straight_ok", "arc_ok", "kinds", "g_seen", "taken", "last")
+                 "index", "layouts", "digits", "straight_ok", "arc_ok", "kinds", "g_seen", "taken", "last", "ctx")
 
     rows: Any
     fresh: bool
@@ -169,6 +171,7 @@ class _Run:
     g_seen: int
     taken: int
     last: tuple[int, int]
+    ctx: tuple[list[int], list[int], list[int], list[int], int, int]  # p, lo, hi, off, ia, ib (for _arc)
 
 
 def _start(runner: Any) -> _Run | None:
@@ -201,6 +204,7 @@ def _start(runner: Any) -> _Run | None:
         st.lo, st.hi, st.room = p[:], p[:], interp.row_sink.max_rows
     else:
         st.lo, st.hi, st.room = rows.lo[:], rows.hi[:], rows.max_rows - rows.count
+    st.ctx = (p, st.lo, st.hi, off, plane[0], plane[1])
     st.digits = runner.box_digits
     st.layouts = runner.box_layouts.setdefault(plane, {})
     st.motion = interp.motion
@@ -239,7 +243,8 @@ def _lines(st: _Run, text: str, keys: str, pos: int, lineno: int) -> tuple[int, 
     the state, box and counts in ``st``."""
     p, lo, hi, off, layouts, gvalues = st.p, st.lo, st.hi, st.off, st.layouts, _G
     motion, feed, room, kinds, straight_ok, arc_ok = st.motion, st.feed, st.room, st.kinds, st.straight_ok, st.arc_ok
-    taken = g_seen = 0
+    taken = g_seen = last_pos = 0
+    pos0, lineno0 = pos, lineno
     n = len(text)
     while taken < room and pos < n:
         end = text.find("\n", pos)
@@ -267,10 +272,12 @@ def _lines(st: _Run, text: str, keys: str, pos: int, lineno: int) -> tuple[int, 
         kinds[mo // 10] += 1
         motion, feed = mo, fv
         g_seen += g is not None
-        st.last = (pos, lineno)
+        last_pos = pos
         taken += 1
         pos, lineno = end + 1, lineno + 1
     st.motion, st.feed, st.taken, st.g_seen = motion, feed, taken, g_seen
+    if taken:
+        st.last = (last_pos, lineno0 + keys.count("\n", pos0, last_pos))  # the last line taken, its number
     return pos, lineno
 
 
@@ -289,8 +296,7 @@ def _arc(st: _Run, line: str, arc: tuple, cw: bool) -> bool:
     """An arc into the position and the box as ``BoxRows.add_arc`` (True), or False (nothing changed) when the
     box functions leave it to the interpreter."""
     r, rm, ca, cb, wa, am, wb, bm, helix = arc
-    p, lo, hi, off = st.p, st.lo, st.hi, st.off
-    ia, ib = st.plane[0], st.plane[1]
+    p, lo, hi, off, ia, ib = st.ctx
     sa = p[ia]
     sb = p[ib]
     ea = int(line[wa]) * am + off[ia] if wa is not None else sa
@@ -332,8 +338,7 @@ def _arc(st: _Run, line: str, arc: tuple, cw: bool) -> bool:
 
 def _centre_box(st: _Run, line: str, ca: Any, cb: Any, sa: int, sb: int, ea: int, eb: int, cw: bool) -> Any:
     """The box of an I/J/K arc (``centre_arc_box``), :data:`_INSIDE` when the circle's box is inside the run's."""
-    lo, hi = st.lo, st.hi
-    ia, ib = st.plane[0], st.plane[1]
+    _p, lo, hi, _off, ia, ib = st.ctx
     xa = sa + int(line[ca[0]]) * ca[1] if ca is not None else sa
     xb = sb + int(line[cb[0]]) * cb[1] if cb is not None else sb
     dx = sa - xa

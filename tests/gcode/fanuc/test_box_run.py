@@ -278,3 +278,34 @@ def test_a_program_the_reader_declines_line_by_line_is_tried_seldom(monkeypatch)
     assert taken == 0
     assert 60 < calls[0] < 140
     assert (read, boxes) == _run(text, False)[:2]
+
+
+def _final_state(text: str, runs: bool) -> tuple:
+    """The interpreter's and the runner's state after the route read ``text`` (the reader on or off)."""
+    got: list = []
+    real = fanucboxes.prove_boxes
+
+    def prove(run, *a, **k):
+        result = real(run, *a, **k)
+        it = run.interpreter
+        runner = next(iter(run.runners), None)
+        got.append((tuple(it.pos), it.motion, it.feed, it.blocks, it.segment_count, sorted(it.kind_counts.items()),
+                    it.block_index, it.span, it.cycle_il, it.prerotation_xy_next,
+                    getattr(runner, "index", None)))
+        return result
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(boxrun, "BOX_RUNS", runs)
+        mp.setattr(fanucboxes, "prove_boxes", prove)
+        verify_text(text, _WIDE, file="t.nc")
+    return got[0] if got else ()
+
+
+@settings(max_examples=15, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_programs())
+def test_the_reader_hands_the_state_back_as_the_lanes_leave_it(program):
+    """A program that ends on the reader's lines (no M30: the text ends): the position, motion, feed, counts,
+    block index and span, the cycle's initial level and the runner's block index are the lanes' after it."""
+    text = program[0]
+    text = text[:text.rindex("M30")]
+    assert _final_state(text, True) == _final_state(text, False)
