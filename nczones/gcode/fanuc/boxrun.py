@@ -10,19 +10,25 @@ are, and the line then updates the interpreter's state kept as scaled integers (
 the position (program value plus the offset, ``FanucInterpreter.lane``), the motion mode and the feed.  Each
 motion widens the box as the lane's would: a straight move by its end, an arc by
 :func:`~nczones.gcode.fanuc.columns.r_arc_box` / :func:`~nczones.gcode.fanuc.columns.centre_arc_box` and the ends
-of its other axes (``BoxRows.add_arc``), on the same integers.
+of its other axes (``BoxRows.add_arc``), on the same integers.  An arc that cannot widen the run's box is not
+boxed: every point of an R arc lies within ``2|R|`` of both its ends (a diameter; ``r_arc_box`` rounds a unit
+outward at most, :data:`_SLACK` covers it), every point of an I/J arc whose ends lie on one circle in that circle's
+box (``centre_arc_box`` rounds its root up by a unit); when that box is inside the run's, the run's box is the same
+either way (only for arcs the box functions take: a chord of at most ``sqrt(3)|R|``, equal radii).
 
 The subset, taken only in the state both lanes take (``FanucInterpreter.lane`` and ``_arc_lane``'s tests: no
 cycle, compensation, transform, tool length shift, inch input, incremental input, G93/G95, tracked ranges,
 assumed modes still to be noted ...): a line of upper-case words with blanks between them, at most a leading
-integer N, one integer G of 0-3, axis words of the machine's axes, F, and for G2/G3 the plane's R or centre
+integer N, one G of 0-3 (G0 .. G03), axis words of the machine's X, Y and Z, F, and for G2/G3 the plane's R or centre
 offsets (not both), each letter once; every length a decimal with a point and at most the increment system's
 decimals (as ``FanucRunner.plain_ok`` lets the plain lane take it: a length without a point is read by the
 decimal point rule on the general path), F positive.  Anything else ends the run: that line and the ones after
 it go the way they went before, the state handed back as the lanes leave it (position, motion, feed, the counts
 of blocks and motions, the block index and span, the run's box and tool length).  An arc the box functions leave
 to the interpreter (equal ends of an R arc, a half circle within the tolerance, a spiral past it) ends the run
-the same way.  ``tests/gcode/fanuc/test_box_run.py`` holds the reader to the lanes and to the fast path.
+the same way.  The runner asks for a run only on the box route, in the main text outside loops and calls, when the
+text holds no ``#`` (``FanucRunner.box_reader`` / ``box_run``).  ``tests/gcode/fanuc/test_box_run.py`` holds the
+reader to the lanes and to the fast path.
 """
 
 from __future__ import annotations
