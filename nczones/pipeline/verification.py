@@ -281,11 +281,12 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
 
 
 #: Plain Fanuc programs (no ``#``, no M98/G65/G66 call in the text) of :data:`FAST_PATH_MIN_LINES` lines up to this
-#: many try the numpy-free box route (:mod:`nczones.prover.fanucboxes`; its lane writes straight moves and arcs into
-#: a run's box) before the vectorized fast path: the crossover of the route (no numpy to load; about 10 us a
-#: straight line, 14 an R arc) and the fast path (numpy's import and set-up, then about 1-7 us a line), measured on
-#: R-arc and G1 programs (specs/performance.md, "Fanuc plain programs on the box route").
-FANUC_BOX_LINES = 4000
+#: many try the numpy-free box route (:mod:`nczones.prover.fanucboxes`; its runs of plain lines read from the text
+#: into a run's box, ``gcode/fanuc/boxrun.py``, about 1.5 us a straight line, 2.5-3.5 an arc) before the vectorized
+#: fast path: below the crossover of the route (no numpy to load) and the fast path (numpy's import and set-up,
+#: then about 1.5-2 us a line), measured on R-arc, I/J-arc and G1 programs of 4,000-60,000 lines (the I/J ones
+#: cross first, at about 50,000; specs/performance.md, "Fanuc plain runs read from the text").
+FANUC_BOX_LINES = 40_000
 
 
 @functools.cache
@@ -293,7 +294,9 @@ def _fanuc_call() -> Any:
     """A Fanuc subprogram or macro call (M98, G65, G66): its loops may run far more lines than the text holds."""
     import re
 
-    return re.compile(r"[mM][ \t]*0*98(?![\d.])|[gG][ \t]*0*6[56](?![\d])")
+    # two patterns that start with a letter, searched in the upper-cased text: a literal first character is found
+    # by a fast scan (one pattern with "[mM]...|[gG]..." tests every character: 8x slower, issue 36)
+    return re.compile(r"M[ \t]*0*98(?![\d.])"), re.compile(r"G[ \t]*0*6[56](?![\d])")
 
 
 def _fanuc_boxes_first(text: str | FileText) -> bool:
@@ -311,8 +314,24 @@ def _fanuc_boxes_first(text: str | FileText) -> bool:
         return True
     if lines > FANUC_BOX_LINES or len(text) > FANUC_BOX_LINES * 128 or "#" in text:
         return False
+    global _BOXES_FIRST
+    last = _BOXES_FIRST
+    if last[0] is text:  # the same text asked again (the cases' loop, then the route)
+        return bool(last[1])
     pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
-    return not any(_fanuc_call().search(p) is not None for p in pieces)
+    m98, g65 = _fanuc_call()
+    got = True
+    for p in pieces:
+        up = p.upper()
+        if m98.search(up) is not None or g65.search(up) is not None:
+            got = False
+            break
+    _BOXES_FIRST = (text, got)  # one tuple: a thread reads a text and its own answer
+    return got
+
+
+#: the last text :func:`_fanuc_boxes_first` scanned for calls, and its answer
+_BOXES_FIRST: tuple[Any, bool] = (None, False)
 
 
 def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],

@@ -184,10 +184,15 @@ def test_exact_stops_and_dwells_are_answered():
     assert _agree(text, _MACHINES["box"]) == ("safe", True)
 
 
-def test_a_long_text_goes_today_s_path():
+def test_a_long_text_goes_today_s_path(monkeypatch):
     """A program of more than FAST_PATH_MIN_LINES lines is read by the vectorized path, not the route, unless it is
-    plain (no ``#``, no call) and of at most FANUC_BOX_LINES lines (pipeline.verification._fanuc_boxes_first)."""
-    from nczones.pipeline.verification import FANUC_BOX_LINES, _fanuc_boxes_first
+    plain (no ``#``, no call) and of at most FANUC_BOX_LINES lines (pipeline.verification._fanuc_boxes_first; set
+    to 700 here: the test's texts stay short)."""
+    from nczones.pipeline import verification
+    from nczones.pipeline.verification import _fanuc_boxes_first
+
+    monkeypatch.setattr(verification, "FANUC_BOX_LINES", 700)
+    FANUC_BOX_LINES = verification.FANUC_BOX_LINES  # noqa: N806 - the constant's value in this test
 
     def moves(n: int) -> str:
         return "".join(f"X{k % 40}. Y{k % 30}.\n" for k in range(n))

@@ -447,6 +447,8 @@ class BoxRows:
 #: An R arc whose half chord ``h`` has ``h * (1 - 1/_TINY_DEN)**-2 >= |R|`` is made a half circle about the chord's
 #: midpoint by the interpreter (``Interpreter.arc``, its ``_TINY``); :func:`r_arc_box` leaves those to it.
 _TINY_DEN = 10**12
+_TINY_SQ = _TINY_DEN * _TINY_DEN
+_TINY_BOUND = 4 * (_TINY_DEN - 1) ** 2
 
 
 def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int, int, int, int] | None:
@@ -476,34 +478,60 @@ def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int
     """
     dx, dy = ea - sa, eb - sb
     l2 = dx * dx + dy * dy
-    rr = -r if r < 0 else r
-    r2 = rr * rr
-    if l2 == 0 or rr == 0 or l2 * _TINY_DEN * _TINY_DEN >= 4 * r2 * (_TINY_DEN - 1) ** 2:
+    if r > 0:
+        rr, minor = r, True
+    elif r < 0:
+        rr, minor = -r, False
+    else:
         return None
-    q = l2 * (4 * r2 - l2)
-    s_lo = isqrt(q)
-    s_hi = s_lo if s_lo * s_lo == q else s_lo + 1
-    sign = -1 if cw != (r < 0) else 1
-    minor = r > 0
-    sigma = -sign if minor else sign
+    r2 = rr * rr
+    # (a chord of at most sqrt(3) |r| is far from the tolerance: the products of the test are not needed)
+    if l2 == 0 or (l2 > 3 * r2 and l2 * _TINY_SQ >= r2 * _TINY_BOUND):
+        return None
+    f = 4 * r2
+    q = l2 * (f - l2)
     lo_a, hi_a = (sa, ea) if sa <= ea else (ea, sa)
     lo_b, hi_b = (sb, eb) if sb <= eb else (eb, sb)
+    aa = f * dy * dy  # A * A for v = +a or -a (A = 2 sigma |r| (v . n), v . n = -dy or dy), below for +b, -b
+    bb = f * dx * dx
+    if minor and aa < q and bb < q:  # no extreme on the minor arc: the ends' box
+        return lo_a, hi_a, lo_b, hi_b
+    s_lo = s_hi = -1  # isqrt(q) rounded down and up, taken when an extreme is on the arc
+    sign = -1 if cw != (r < 0) else 1
+    sigma = -sign if minor else sign
     two = 2 * sigma * rr
     # twice the centre, enclosed where an extreme is on the arc: 2 c = (s + e) + sign * n * sqrt(Q) / l2, with
     # n = (-dy, dx); and v . n = -dy, dy, dx, -dx for v = +a, -a, +b, -b
     a = -two * dy
-    up, down = ((a >= 0 and a * a >= q), (a <= 0 and a * a >= q)) if minor else \
-        ((a >= 0 or a * a <= q), (a <= 0 or a * a <= q))
+    if minor:  # (a >= 0 and a * a >= q), (a <= 0 and a * a >= q)
+        up = down = aa >= q
+        if up:
+            up, down = a >= 0, a <= 0
+    else:  # (a >= 0 or a * a <= q), (a <= 0 or a * a <= q)
+        up = down = aa <= q
+        if not up:
+            up, down = a >= 0, a <= 0
     if up or down:
+        s_lo = isqrt(q)
+        s_hi = s_lo if s_lo * s_lo == q else s_lo + 1
         k = -sign * dy
         if up:  # c_a + |r|, c_a rounded up: ceil((sa + ea + k sqrt(Q) / l2) / 2)
             hi_a = max(hi_a, -((-(sa + ea) - (-((-k * (s_hi if k >= 0 else s_lo)) // l2))) // 2) + rr)
         if down:  # c_a - |r|, c_a rounded down
             lo_a = min(lo_a, (sa + ea + (k * (s_lo if k >= 0 else s_hi)) // l2) // 2 - rr)
     a = two * dx
-    up, down = ((a >= 0 and a * a >= q), (a <= 0 and a * a >= q)) if minor else \
-        ((a >= 0 or a * a <= q), (a <= 0 or a * a <= q))
+    if minor:
+        up = down = bb >= q
+        if up:
+            up, down = a >= 0, a <= 0
+    else:
+        up = down = bb <= q
+        if not up:
+            up, down = a >= 0, a <= 0
     if up or down:
+        if s_lo < 0:
+            s_lo = isqrt(q)
+            s_hi = s_lo if s_lo * s_lo == q else s_lo + 1
         k = sign * dx
         if up:
             hi_b = max(hi_b, -((-(sb + eb) - (-((-k * (s_hi if k >= 0 else s_lo)) // l2))) // 2) + rr)

@@ -491,6 +491,19 @@ class FanucInterpreter(Interpreter):
         self.prerotation_xy_next = None
         return 2 if rows.full or len(emitted) >= self.chunk_size else 1
 
+    def box_lane_modes(self) -> tuple[bool, bool] | None:
+        """Whether the state is one :meth:`lane` and :meth:`_arc_lane` both take a plain block in (their tests but
+        for the block's own words; ``nczones.gcode.fanuc.boxrun`` reads runs of lines in it): (a straight move
+        would take the one-call lane: no mode left to note as assumed; an arc would take the arc lane), or None."""
+        if self.ended or self.m73_saved or self.track or self.machine_at is not None or self.unsupported \
+                or self.prerotation_xy is not None or self.spline_state is not None or self.comp_on \
+                or self.comp_just_off or self.cycle is not None or self._tlo_shift is not None or self.after_home \
+                or self.prog is not None or self._tlo_untaken or self.inch or not self.absolute \
+                or self.feed_mode != 94 or not self.fused_lane or self._first_after_transform or self.arc_absolute:
+            return None
+        unset = self.unset
+        return not unset or self._noted_straight, not unset or unset.isdisjoint(_ARC_ASSUMED)
+
     def _lean(self, g: int | None, m: int | None, f: Any, extra: int, s: Any = None) -> bool:
         if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None \
                 or self._tlo_untaken:

@@ -270,6 +270,12 @@ class FanucRunner:
         self.shape_codes: frozenset = frozenset(getattr(state, "shape_codes", ()) or ())
         self.current_pos = 0  # the offset of the line being executed
         digits = {"IS-A": 2, "IS-B": 3, "IS-C": 4}[self.settings.increment_system]
+        #: the box route's run reader (boxrun.read_box_run): the decimals a length may have, the layouts read
+        self.box_digits = digits
+        self.box_layouts: dict[str, Any] = {}
+        self.box_keys: str | None = None  # the main text with its digits zeroed (read_box_run)
+        self.box_declined = -1  # the offset where read_box_run last took no line
+        self.box_misses = self.box_wait = 0  # attempts in a row that took none; lines to pass before the next
         self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
         self._long_inch = re.compile(rf"[XYZUVWIJKRQxyzuvwijkrq][ \t]*[+-]?\d*\.\d{{{digits + 2}}}|"
                                      rf"[ABCabc][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")
@@ -772,6 +778,7 @@ class FanucRunner:
         fast = self.fast_runs
         declined = -1
         frames = self.frames
+        box_run = self.box_reader()
         while True:
             frame = frames[-1]
             source = frame.source
@@ -802,15 +809,17 @@ class FanucRunner:
                             declined = -1
                             continue
                         declined = pos
-                    got = self.read_plain(frame, pos, lineno, not (fast and pos in fast))
-                    if got is None:
-                        self.end_of_text(lineno)
-                        return
-                    line, nxt, parsed, ok = got
-                    if ok:
-                        r = self.plain_first(source, line, nxt, parsed, lineno)
-                    else:
-                        compiled = self.compiled(source, pos, line, lineno, nxt)
+                    r = box_run(frame, pos, lineno) if box_run is not None else None
+                    if r is None:
+                        got = self.read_plain(frame, pos, lineno, not (fast and pos in fast))
+                        if got is None:
+                            self.end_of_text(lineno)
+                            return
+                        line, nxt, parsed, ok = got
+                        if ok:
+                            r = self.plain_first(source, line, nxt, parsed, lineno)
+                        else:
+                            compiled = self.compiled(source, pos, line, lineno, nxt)
                 if r is None:
                     assert compiled is not None
                     if compiled[9] and self.modal_call is None and not self.shape_codes:
@@ -834,6 +843,38 @@ class FanucRunner:
             elif r[1] is not None:  # the lane declined the motion: its block
                 yield r[1]
                 self.index += 1
+
+    def box_reader(self) -> Callable[..., Any] | None:
+        """:meth:`box_run` when the interpreter's plain lane writes boxes (``columns.BoxSink``: the numpy-free box
+        route) of a main text held as a string, else None."""
+        sink = getattr(self.state, "row_sink", None)
+        if sink is None or not getattr(sink, "arcs", False) or self.fast_runs or type(self.main.src) is not StringSource \
+                or self.main.file != getattr(self.state, "file", None) or "#" in self.main.src.text:
+            return None  # (a macro program's plain lines run in its loops and calls, which the reader leaves)
+        from . import boxrun
+
+        return self.box_run if boxrun.BOX_RUNS else None
+
+    def box_run(self, frame: _Frame, pos: int, lineno: int) -> Any:
+        """A run of plain lines of the main text from ``pos`` read by :func:`nczones.gcode.fanuc.boxrun.read_box_run`
+        (outside loops and calls): as a closure's result (``(pos, lineno)`` after it, ``[(pos, lineno)]`` when the
+        chunk is full), or None when it takes no line (it is not asked again at that line; after 8k attempts in a row
+        that took none, the next k lines are not tried: a program it declines line by line, G91 say, costs little)."""
+        if pos == self.box_declined or len(self.frames) != 1 or frame.loops or frame.source is not self.main:
+            return None
+        if self.box_wait:  # lines since the last attempt that took none (a run of lines it declines costs little)
+            self.box_wait -= 1
+            return None
+        from .boxrun import read_box_run
+
+        got = read_box_run(self, self.main.src.text, pos, lineno)  # type: ignore[attr-defined]  # a StringSource
+        if got is None:
+            self.box_declined = pos
+            self.box_misses += 1
+            self.box_wait = self.box_misses // 8
+            return None
+        self.box_misses = 0
+        return [got[:2]] if got[2] else got[:2]
 
     def plain_first(self, source: _Source, line: str, nxt: int, parsed: tuple, lineno: int) -> Any:
         """A plain line the plain lane takes (read_plain), not kept as a closure: as a closure's result

@@ -1,0 +1,404 @@
+"""Runs of plain Fanuc lines read straight into the box of the numpy-free route (issue 36).
+
+On the box route (:mod:`nczones.prover.fanucboxes`) the interpreter's plain lane writes each straight move and
+arc of a run into a :class:`~nczones.gcode.fanuc.columns.BoxRows` box; reading a line through the language
+layer (``FanucRunner.read_plain`` -> ``scan_plain`` -> ``plain_first`` -> ``FanucInterpreter.lane`` /
+``_arc_lane``) costs 15-20 us, most of it making Fractions the box never keeps.  :func:`read_box_run` reads a
+run of such lines from the text itself: each line is keyed on its layout (its digits zeroed, as the LinuxCNC
+double pass keys its lines, ``gcode/shapes.py``), the layout read once into where its numbers are and what they
+are, and the line then updates the interpreter's state kept as scaled integers (``10**SCALE``, as the box's):
+the position (program value plus the offset, ``FanucInterpreter.lane``), the motion mode and the feed.  Each
+motion widens the box as the lane's would: a straight move by its end, an arc by
+:func:`~nczones.gcode.fanuc.columns.r_arc_box` / :func:`~nczones.gcode.fanuc.columns.centre_arc_box` and the ends
+of its other axes (``BoxRows.add_arc``), on the same integers.  An arc that cannot widen the run's box is not
+boxed: every point of an R arc lies within ``2|R|`` of both its ends (a diameter; ``r_arc_box`` rounds a unit
+outward at most, :data:`_SLACK` covers it), every point of an I/J arc whose ends lie on one circle in that circle's
+box (``centre_arc_box`` rounds its root up by a unit); when that box is inside the run's, the run's box is the same
+either way (only for arcs the box functions take: a chord of at most ``sqrt(3)|R|``, equal radii).
+
+The subset, taken only in the state both lanes take (``FanucInterpreter.lane`` and ``_arc_lane``'s tests: no
+cycle, compensation, transform, tool length shift, inch input, incremental input, G93/G95, tracked ranges,
+assumed modes still to be noted ...): a line of upper-case words with blanks between them, at most a leading
+integer N, one G of 0-3 (G0 .. G03), axis words of the machine's X, Y and Z, F, and for G2/G3 the plane's R or centre
+offsets (not both), each letter once; every length a decimal with a point and at most the increment system's
+decimals (as ``FanucRunner.plain_ok`` lets the plain lane take it: a length without a point is read by the
+decimal point rule on the general path), F positive.  Anything else ends the run: that line and the ones after
+it go the way they went before, the state handed back as the lanes leave it (position, motion, feed, the counts
+of blocks and motions, the block index and span, the run's box and tool length).  An arc the box functions leave
+to the interpreter (equal ends of an R arc, a half circle within the tolerance, a spiral past it) ends the run
+the same way.  The runner asks for a run only on the box route, in the main text outside loops and calls, when the
+text holds no ``#`` (``FanucRunner.box_reader`` / ``box_run``).  ``tests/gcode/fanuc/test_box_run.py`` holds the
+reader to the lanes and to the fast path.
+"""
+
+from __future__ import annotations
+
+import re
+from fractions import Fraction
+from typing import Any
+
+from ...motion import PLANE_AXES, SegmentKind
+from .columns import SCALE, BoxRows, BoxSink, centre_arc_box, r_arc_box
+
+__all__ = ["read_box_run", "BOX_RUNS"]
+
+#: Whether the runner reads plain runs on the box route with :func:`read_box_run` (tests turn it off).
+BOX_RUNS = True
+
+_UNIT = 10**SCALE
+_ZERO_DIGITS = str.maketrans("123456789", "000000000")
+_WORD = re.compile(r"([A-Z])[ \t]*(-?0*)(\.?)(0*)[ \t]*")
+#: integer digits of a length at most (coordinates stay far below the lanes' ``2**57`` at the scale)
+_MAX_DIGITS = 7
+_LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC
+_CENTRE = {"X": "I", "Y": "J", "Z": "K"}
+_MAX_LAYOUTS = 4096
+#: an arc inside the run's box (read_box_run: its box is not made) and the units its bounds may be rounded outward
+_INSIDE = (0, 0, 0, 0)
+_SLACK = 4
+#: the motion of a G word's text the reader takes (G0-G3 with at most one leading zero)
+_G = {"0": 0, "00": 0, "1": 10, "01": 10, "2": 20, "02": 20, "3": 30, "03": 30}
+
+
+def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int, str, str]) -> tuple | None:
+    """What a line of layout ``key`` holds in the plane ``(ia, ib, centre letter a, centre letter b)``, its
+    numbers as slices of the line with its points removed: ``(g, f, straight, arc)`` with ``g`` the slice of the
+    G number (None: no G), ``f`` ``(slice, multiplier)`` of F or None, ``straight`` the axis words ``((slice,
+    multiplier, axis index), ...)`` (None when the line has R, I, J or K: not a straight move) and ``arc``
+    ``(R's slice, its multiplier, centre a, centre b, word a's slice, its multiplier, word b's, its multiplier,
+    the other axes' words)`` (a centre offset as F, None when absent; ``arc`` None when the line is no arc the lane
+    takes in the plane); None for a line out of the subset (module docstring)."""
+    pos, n = 0, len(key)
+    if key[-1:] == "\r":  # a CR LF line end
+        n -= 1
+    while pos < n and key[pos] in " \t":
+        pos += 1
+    seen: set[str] = set()
+    g = None
+    axes = []
+    other: dict[str, tuple[slice, int]] = {}
+    first = True
+    dots = 0  # points before pos
+    while pos < n:
+        m = _WORD.match(key, pos)
+        if m is None:
+            return None
+        letter, whole, point, frac = m.groups()
+        if letter in seen:
+            return None
+        seen.add(letter)
+        a = m.start(2) - dots  # in the line without its points
+        dots += len(point)
+        b = m.end(4) - dots
+        if len(whole.lstrip("-")) + len(frac) == 0:
+            return None
+        if letter == "N":
+            if not first or point or frac or whole.startswith("-"):
+                return None
+        elif letter == "G":
+            if point or frac or whole.startswith("-") or len(whole) > 2:
+                return None
+            g = slice(a, b)
+        elif letter == "F":
+            if whole.startswith("-") or len(frac) > SCALE or len(whole) > 9:
+                return None
+            other["F"] = (slice(a, b), 10 ** (SCALE - len(frac)))
+        else:
+            if not point or len(frac) > digits or len(whole.lstrip("-")) > _MAX_DIGITS:
+                return None
+            mult = 10 ** (SCALE - len(frac))
+            i = index.get(letter)
+            if i is not None:
+                axes.append((slice(a, b), mult, i))
+            elif letter in "RIJK":
+                other[letter] = (slice(a, b), mult)
+            else:
+                return None
+        first = False
+        pos = m.end()
+    if not axes:
+        return None
+    ia, ib, la, lb = plane
+    words = tuple(axes)
+    rijk = [c for c in "RIJK" if c in other]
+    arc = None
+    if rijk and all(c in ("R", la, lb) for c in rijk) and ("R" in other) != (la in other or lb in other) \
+            and any(i == ia or i == ib for _s, _m, i in words):
+        wa = next(((sl, m) for sl, m, i in words if i == ia), (None, 0))
+        wb = next(((sl, m) for sl, m, i in words if i == ib), (None, 0))
+        r = other.get("R", (None, 0))
+        arc = (r[0], r[1], other.get(la), other.get(lb), wa[0], wa[1], wb[0], wb[1],
+               tuple(w for w in words if w[2] != ia and w[2] != ib))
+    return (g, other.get("F"), None if rijk else words, arc)
+
+
+def _takes(interp: Any, runner: Any) -> tuple[bool, bool] | None:
+    """Whether the runner and the interpreter are in a state both plain lanes take lines in
+    (``FanucInterpreter.box_lane_modes``): (straight moves, arcs) or None."""
+    sink = interp.row_sink
+    if type(sink) is not BoxSink or runner.modal_call is not None or runner.lane is None or runner.shape_codes \
+            or (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3))) or interp.segment_count < sink.start:
+        return None
+    modes: tuple[bool, bool] | None = interp.box_lane_modes()
+    return modes
+
+
+def _scaled(x: Any) -> int | None:
+    x = Fraction(x)
+    q, rem = divmod(x.numerator * _UNIT, x.denominator)
+    return None if rem else q
+
+
+class _Run:
+    """The interpreter's state the reader keeps as integers at the scale (:func:`_start`), and its counts."""
+
+    __slots__ = ("rows", "fresh", "p", "lo", "hi", "off", "tl", "feed", "feed0", "tol", "motion", "room", "plane",
+                 "index", "layouts", "digits", "straight_ok", "arc_ok", "kinds", "g_seen", "taken", "last", "ctx")
+
+    rows: Any
+    fresh: bool
+    p: list[int]
+    lo: list[int]
+    hi: list[int]
+    off: list[int]
+    tl: int
+    feed: int
+    feed0: int
+    tol: int | None
+    motion: int
+    room: int
+    plane: tuple[int, int, str, str]
+    index: dict[str, int]
+    layouts: dict[str, Any]
+    digits: int
+    straight_ok: bool
+    arc_ok: bool
+    kinds: list[int]
+    g_seen: int
+    taken: int
+    last: tuple[int, int]
+    ctx: tuple[list[int], list[int], list[int], list[int], int, int]  # p, lo, hi, off, ia, ib (for _arc)
+
+
+def _start(runner: Any) -> _Run | None:
+    """The state at the start of a run, None when the reader does not take it (module docstring)."""
+    interp = runner.state
+    modes = _takes(interp, runner)
+    if modes is None:
+        return None
+    st = _Run()
+    st.straight_ok, st.arc_ok = modes
+    st.index = index = {name: i for i, name in enumerate(interp.axes) if name in "XYZ"}
+    a_name, b_name, _n = PLANE_AXES[interp.plane]
+    ia, ib = index.get(a_name), index.get(b_name)
+    if ia is None or ib is None:
+        return None
+    st.plane = plane = (ia, ib, _CENTRE[a_name], _CENTRE[b_name])
+    p: Any = [_scaled(v) for v in interp.pos]
+    off: Any = [_scaled(v) for v in interp.off]
+    tl, feed = _scaled(interp.tlo), _scaled(interp.feed) if interp.feed is not None else None
+    tol = _scaled(interp.arc_tolerance) if interp.arc_rule == "fixed" else 0
+    if None in p or None in off or tl is None or feed is None or tol is None or any(abs(o) >= 2**56 for o in off):
+        return None
+    st.p, st.off, st.tl, st.feed, st.feed0 = p, off, tl, feed, feed
+    st.tol = tol if interp.arc_rule == "fixed" else None
+    emitted = interp.emitted
+    rows: Any = emitted[-1] if emitted else None
+    st.rows = rows
+    st.fresh = type(rows) is not BoxRows or rows.prev_end is not interp.pos or rows.full
+    if st.fresh:
+        st.lo, st.hi, st.room = p[:], p[:], interp.row_sink.max_rows
+    else:
+        st.lo, st.hi, st.room = rows.lo[:], rows.hi[:], rows.max_rows - rows.count
+    st.ctx = (p, st.lo, st.hi, off, plane[0], plane[1])
+    st.digits = runner.box_digits
+    st.layouts = runner.box_layouts.setdefault(plane, {})
+    st.motion = interp.motion
+    st.kinds = [0, 0, 0, 0]  # motions by motion // 10 (G0, G1, G2, G3)
+    st.g_seen = st.taken = 0
+    st.last = (0, 0)
+    return st
+
+
+def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
+    """Read the plain lines of ``text`` from offset ``pos`` (line ``lineno``) into the box of the interpreter's
+    run, as the plain lanes would (module docstring): ``(next offset, next line number, whether the chunk is
+    full)``, or None when the first line is not taken (nothing changed)."""
+    st = _start(runner)
+    if st is None:
+        return None
+    keys = runner.box_keys
+    if keys is None or len(keys) != len(text):
+        keys = runner.box_keys = text.translate(_ZERO_DIGITS)  # the layouts of every line (digits zeroed)
+    pos, lineno = _lines(st, text, keys, pos, lineno)
+    if not st.taken:
+        return None
+    return _hand_back(runner, runner.state, st, pos, lineno)
+
+
+def _miss(st: _Run, key: str) -> tuple | None:
+    """The layout of ``key`` not met before in this plane (kept)."""
+    got = None if key.startswith("\ufeff") else _layout(key, st.index, st.digits, st.plane)
+    if len(st.layouts) < _MAX_LAYOUTS:
+        st.layouts[key] = got
+    return got
+
+
+def _lines(st: _Run, text: str, keys: str, pos: int, lineno: int) -> tuple[int, int]:
+    """Read lines from ``pos`` while they are in the subset (module docstring): the next offset and line number;
+    the state, box and counts in ``st``."""
+    p, lo, hi, off, layouts, gvalues = st.p, st.lo, st.hi, st.off, st.layouts, _G
+    motion, feed, room, kinds, straight_ok, arc_ok = st.motion, st.feed, st.room, st.kinds, st.straight_ok, st.arc_ok
+    taken = g_seen = last_pos = 0
+    pos0, lineno0 = pos, lineno
+    n = len(text)
+    while taken < room and pos < n:
+        end = text.find("\n", pos)
+        if end < 0:
+            end = n
+        key = keys[pos:end]
+        got = layouts.get(key, 0)
+        if got is None or (got == 0 and (got := _miss(st, key)) is None):
+            if key.strip(" \t\r"):
+                break
+            pos, lineno = end + 1, lineno + 1  # a blank line: no block (plain_first)
+            continue
+        g, f, words, arc = got
+        line = text[pos:end].replace(".", "")
+        mo = motion if g is None else gvalues.get(line[g], -1)
+        fv = feed if f is None else int(line[f[0]]) * f[1]
+        if mo < 0 or fv < 0 or (fv == 0 and f is not None):
+            break  # another G; F 0 or negative (the lanes' decline)
+        if mo < 20:
+            if words is None or not straight_ok or (mo == 10 and fv == 0):
+                break  # R, I, J, K in G0/G1; G1 without a feed (check_feed): the general path
+            _straight(line, words, p, lo, hi, off)
+        elif arc is None or fv == 0 or not arc_ok or not _arc(st, line, arc, mo == 20):
+            break
+        kinds[mo // 10] += 1
+        motion, feed = mo, fv
+        g_seen += g is not None
+        last_pos = pos
+        taken += 1
+        pos, lineno = end + 1, lineno + 1
+    st.motion, st.feed, st.taken, st.g_seen = motion, feed, taken, g_seen
+    if taken:
+        st.last = (last_pos, lineno0 + keys.count("\n", pos0, last_pos))  # the last line taken, its number
+    return pos, lineno
+
+
+def _straight(line: str, words: tuple, p: list[int], lo: list[int], hi: list[int], off: list[int]) -> None:
+    """A straight move's end into the position and the box (``BoxRows.add``)."""
+    for sl, m, i in words:
+        v = int(line[sl]) * m + off[i]
+        p[i] = v
+        if v < lo[i]:
+            lo[i] = v
+        elif v > hi[i]:
+            hi[i] = v
+
+
+def _arc(st: _Run, line: str, arc: tuple, cw: bool) -> bool:
+    """An arc into the position and the box as ``BoxRows.add_arc`` (True), or False (nothing changed) when the
+    box functions leave it to the interpreter."""
+    r, rm, ca, cb, wa, am, wb, bm, helix = arc
+    p, lo, hi, off, ia, ib = st.ctx
+    sa = p[ia]
+    sb = p[ib]
+    ea = int(line[wa]) * am + off[ia] if wa is not None else sa
+    eb = int(line[wb]) * bm + off[ib] if wb is not None else sb
+    box: Any
+    if r is not None:
+        rv = int(line[r]) * rm
+        dx = ea - sa
+        dy = eb - sb
+        l2 = dx * dx + dy * dy
+        # an arc r_arc_box takes (far from a half circle): every point of it (and its box, rounded outward) lies
+        # within 2|R| of both ends; inside the run's box, it leaves the box as it is
+        w = 2 * (rv if rv > 0 else -rv) + _SLACK
+        if 0 < l2 and l2 <= 3 * rv * rv and (sa if sa > ea else ea) - w >= lo[ia] \
+                and (sa if sa < ea else ea) + w <= hi[ia] and (sb if sb > eb else eb) - w >= lo[ib] \
+                and (sb if sb < eb else eb) + w <= hi[ib]:
+            box = _INSIDE
+        else:
+            box = r_arc_box(sa, sb, ea, eb, rv, cw)
+    else:
+        box = _centre_box(st, line, ca, cb, sa, sb, ea, eb, cw)
+    if box is None:
+        return False
+    p[ia], p[ib] = ea, eb
+    if helix:
+        _straight(line, helix, p, lo, hi, off)
+    if box is not _INSIDE:
+        la, ha, lb, hb = box
+        if la < lo[ia]:
+            lo[ia] = la
+        if ha > hi[ia]:
+            hi[ia] = ha
+        if lb < lo[ib]:
+            lo[ib] = lb
+        if hb > hi[ib]:
+            hi[ib] = hb
+    return True
+
+
+def _centre_box(st: _Run, line: str, ca: Any, cb: Any, sa: int, sb: int, ea: int, eb: int, cw: bool) -> Any:
+    """The box of an I/J/K arc (``centre_arc_box``), :data:`_INSIDE` when the circle's box is inside the run's."""
+    _p, lo, hi, _off, ia, ib = st.ctx
+    xa = sa + int(line[ca[0]]) * ca[1] if ca is not None else sa
+    xb = sb + int(line[cb[0]]) * cb[1] if cb is not None else sb
+    dx = sa - xa
+    dy = sb - xb
+    l2 = dx * dx + dy * dy  # the radius squared, at the start
+    dx = ea - xa
+    dy = eb - xb
+    # ends at one distance from the centre: the arc lies in the circle's box, the one centre_arc_box takes its
+    # extremes from (the root rounded up: one unit); inside the run's box, nothing to add
+    w = min(xa - lo[ia], hi[ia] - xa, xb - lo[ib], hi[ib] - xb) - 1
+    if 0 < l2 and l2 == dx * dx + dy * dy and w >= 0 and w * w >= l2:
+        return _INSIDE
+    return centre_arc_box(sa, sb, ea, eb, xa, xb, cw, st.tol)
+
+
+def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int) -> tuple[int, int, bool]:
+    """The state after the run, as the lanes leave it (module docstring)."""
+    from ..lexer import make_span
+
+    end = tuple(Fraction(v, _UNIT) for v in st.p)
+    rows = st.rows
+    if st.fresh:
+        rows = BoxRows(interp.pos, st.lo, interp.file, interp.row_sink.max_rows)
+        interp.emitted.append(rows)
+    rows.lo, rows.hi = st.lo, st.hi
+    if interp.tlo is not rows.tl:
+        rows.tl = interp.tlo
+        rows.tls.add(st.tl)
+    taken = st.taken
+    rows.count += taken
+    if rows.count >= rows.max_rows:
+        rows.full = True
+    rows.prev_end = end
+    last_pos, last_no = st.last
+    text = runner.main.src.text
+    line = text[last_pos:text.find("\n", last_pos) % (len(text) + 1)].removesuffix("\r")
+    index = runner.index + taken - 1
+    runner.index = index + 1
+    runner.started = runner.ran = True
+    interp.block_index = index
+    interp.span = make_span(interp.file, last_no, 1, len(line) + 1, line)
+    interp.blocks += taken
+    if st.g_seen:
+        interp.cycle_il = None
+        interp.last_cycle = None
+    interp.motion = st.motion
+    if st.feed != st.feed0:
+        interp.feed = Fraction(st.feed, _UNIT)
+    counts = interp.kind_counts
+    g0, g1, g2, g3 = st.kinds
+    for kind, k in ((_RAPID, g0), (_LINE, g1), (_ARC, g2 + g3)):
+        if k:
+            counts[kind] += k
+    interp.segment_count += taken
+    interp.pos = end
+    interp.prerotation_xy_next = None
+    return pos, lineno, rows.full or len(interp.emitted) >= interp.chunk_size
