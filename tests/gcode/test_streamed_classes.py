@@ -29,6 +29,7 @@ from nczones.gcode.fanuc import columns
 from nczones.gcode.fanuc.paths import path_headers
 from nczones.gcode.linuxcnc import doubles
 from nczones.machine import load_machine
+from nczones.pipeline import verification
 from nczones.pipeline.verification import verify_source
 from nczones.prover import blend
 from nczones.prover.options import VerifyOptions
@@ -55,6 +56,9 @@ def small_windows(monkeypatch):
     monkeypatch.setattr(doubles, "PIECE", 16384)
     monkeypatch.setattr(doubles, "WINDOW", 512)  # plain LinuxCNC files of these sizes go to the pass (issue 36)
     monkeypatch.setattr(columns, "MAX_ROWS", 512)
+    # the box route reads a plain Fanuc text of up to FANUC_BOX_LINES lines whole (40,000: its window, as the
+    # pass's WINDOW is the double pass's); past it the streamed lanes read it
+    monkeypatch.setattr(verification, "FANUC_BOX_LINES", 1000)
 
 
 def walk(n: int, seed: int, kind: str, dialect: str, spread: float = 5.0, start: str = "") -> str:
