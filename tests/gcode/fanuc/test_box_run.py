@@ -308,7 +308,14 @@ def test_the_reader_hands_the_state_back_as_the_lanes_leave_it(program):
     block index and span, the cycle's initial level and the runner's block index are the lanes' after it."""
     text = program[0]
     text = text[:text.rindex("M30")]
-    assert _final_state(text, True) == _final_state(text, False)
+    try:
+        lanes = _final_state(text, False)
+    except GcodeError as exc:  # a drawn program the interpreter refuses (K in G17 after a plane change): so does the reader
+        with pytest.raises(GcodeError) as read:
+            _final_state(text, True)
+        assert (read.value.code, str(read.value)) == (exc.code, str(exc))
+        return
+    assert _final_state(text, True) == lanes
 
 
 @pytest.mark.long
