@@ -10,8 +10,10 @@ some) at each size: CPU, the child's peak RSS and the marginal µs/line between 
 marginal µs/line of every size step per class (issue 36: no size cliff).
 
 Columns, every one the CPU seconds of its own process (user + system of the
-child, so start-up counts the same way for every tool), the least of ``--repeat`` runs (default 3: other
-load on a shared machine only ever adds time):
+child, so start-up counts the same way for every tool), the least of ``--repeat`` rounds (default 3: other
+load on a shared machine only ever adds time).  Each round runs a row's commands once each, in turn (regex
+pass, rs274, interpret, verify), so that a change of load between minutes falls on every column of the row
+alike; a row's ratios compare runs made within the same seconds:
 
 * **regex pass** — Python reads the file and splits every line into words
   with one regular expression: the floor of "reading G-code";
@@ -111,30 +113,58 @@ REPEAT = [1]
 LAST_RSS: list[float | None] = [None]
 
 
-def cpu_of(cmd: list[str], timeout: float, env: dict | None = None) -> tuple[float | None, int | None]:
-    """CPU seconds (user + system) of a child process and its exit status, the least of :data:`REPEAT` runs
-    (a run that times out is not repeated); None on timeout.  A run that exits with another status than most
-    runs is not a measurement of the same work (an rs274 that stopped early once took 0.017 s for a
-    100,000-line file): only the runs with the most common status count.  The peak resident memory of that
-    child alone (``wait4``'s ``ru_maxrss``, not the largest of all children) is left in :data:`LAST_RSS`."""
-    runs: list[tuple[float, int, float]] = []
-    LAST_RSS[0] = None
-    for _ in range(REPEAT[0]):
-        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
-        timer = threading.Timer(timeout, proc.kill)
-        timer.start()
-        try:
-            _pid, status, usage = os.wait4(proc.pid, 0)
-        finally:
-            timer.cancel()
-        proc.returncode = os.waitstatus_to_exitcode(status)
-        if proc.returncode == -signal.SIGKILL:
-            return None, None
-        runs.append((usage.ru_utime + usage.ru_stime, proc.returncode, usage.ru_maxrss / 1024))
+def _run_once(cmd: list[str], timeout: float, env: dict | None) -> tuple[float, int, float] | None:
+    """(CPU seconds, exit status, peak RSS MiB) of one child process running ``cmd``, measured for that child alone
+    (:func:`os.wait4`); None when it ran past ``timeout`` seconds and was killed."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    timer = threading.Timer(timeout, proc.kill)
+    timer.start()
+    try:
+        _pid, status, usage = os.wait4(proc.pid, 0)
+    finally:
+        timer.cancel()
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    if proc.returncode == -signal.SIGKILL:
+        return None
+    return usage.ru_utime + usage.ru_stime, proc.returncode, usage.ru_maxrss / 1024
+
+
+def _least(runs: list[tuple[float, int, float]]) -> tuple[float, int, float]:
+    """The least-CPU run among the runs with the most common exit status.  A run that exits with another status
+    than most runs is not a measurement of the same work (an rs274 that stopped early once took 0.017 s for a
+    100,000-line file)."""
     statuses = [c for _cpu, c, _rss in runs]
     common = max(statuses, key=statuses.count)
-    best, code, LAST_RSS[0] = min(r for r in runs if r[1] == common)
-    return best, code
+    return min(r for r in runs if r[1] == common)
+
+
+def cpu_rounds(cmds: dict[str, tuple[list[str], dict | None]], timeout: float
+               ) -> dict[str, tuple[float | None, int | None, float | None]]:
+    """(CPU seconds, exit status, peak RSS MiB) of each named command, the least of :data:`REPEAT` rounds; every
+    round runs each command once, in turn, so that a change of the machine's load between minutes falls on all
+    of them alike and the ratios taken within a row compare runs made in the same seconds.  A command that ran
+    past ``timeout`` is not run again and gives ``(None, None, None)``."""
+    runs: dict[str, list[tuple[float, int, float]]] = {name: [] for name in cmds}
+    stopped: set[str] = set()
+    for _ in range(REPEAT[0]):
+        for name, (cmd, env) in cmds.items():
+            if name in stopped:
+                continue
+            run = _run_once(cmd, timeout, env)
+            if run is None:
+                stopped.add(name)
+            else:
+                runs[name].append(run)
+    return {name: (None, None, None) if name in stopped else _least(runs[name]) for name in cmds}
+
+
+def cpu_of(cmd: list[str], timeout: float, env: dict | None = None) -> tuple[float | None, int | None]:
+    """CPU seconds (user + system) of a child process and its exit status, the least of :data:`REPEAT` runs
+    (a run that times out is not repeated); None on timeout.  Only the runs with the most common exit status
+    count (:func:`_least`).  The peak resident memory of that child alone (``wait4``'s ``ru_maxrss``, not the
+    largest of all children) is left in :data:`LAST_RSS`."""
+    cpu, code, LAST_RSS[0] = cpu_rounds({"cmd": (cmd, env)}, timeout)["cmd"]
+    return cpu, code
 
 
 INTERPRET = r"""
@@ -237,8 +267,8 @@ def main() -> None:
         env.pop("PYTHONPATH", None)
         print("nczones runs as from an installed wheel (a virtual environment without the editable install's hook)")
     nczones = [python, "-m", "nczones"]
-    print(f"CPU seconds per process, the least of {REPEAT[0]} run(s); ratio = nczones verify / peer, measured in "
-          "this run")
+    print(f"CPU seconds per process, the least of {REPEAT[0]} round(s), a row's commands interleaved in each round; "
+          "ratio = nczones verify / peer, measured in this run")
     print(f"{'program':58} {'regex':>7} {'rs274':>7} {'interp':>7} {'verify':>7}  exit  rs274 exit  verify/rs274"
           "  verify/regex  verify MiB  load")
     with tempfile.TemporaryDirectory() as tmp:
@@ -248,20 +278,23 @@ def main() -> None:
                 continue
             machine = d / f"box-{dialect}.toml"
             machine.write_text(BOX.format(dialect=dialect))
-            regex, _ = cpu_of([sys.executable, "-c", REGEX_PASS, str(path)], a.timeout)
-            peer, peer_code = None, None
             peer_path = path if dialect == "linuxcnc" else PEER_OF.get(path)
-            if rs274 is not None and peer_path is not None:
-                peer, peer_code = cpu_of([rs274, "-g", str(peer_path), os.devnull], a.timeout)
-            interp, _ = cpu_of([python, "-c", INTERPRET, str(path), str(machine), tol], a.timeout, env)
             # --max-iterations: a loop row of more than 100,000 iterations is interpreted to its end (the default
             # bound would stop it early as unknown)
             cmd = [*nczones, "verify", str(path), "--machine", str(machine), "--format", "json",
                    "--max-iterations", "1000000000"]
             if tol:
                 cmd += ["--arc-tolerance", tol]
-            verify, code = cpu_of(cmd, a.timeout, env)
-            rss = LAST_RSS[0]
+            cmds = {"regex": ([sys.executable, "-c", REGEX_PASS, str(path)], None)}
+            if rs274 is not None and peer_path is not None:
+                cmds["rs274"] = ([rs274, "-g", str(peer_path), os.devnull], None)
+            cmds["interp"] = ([python, "-c", INTERPRET, str(path), str(machine), tol], env)
+            cmds["verify"] = (cmd, env)
+            got = cpu_rounds(cmds, a.timeout)
+            regex = got["regex"][0]
+            peer, peer_code, _ = got.get("rs274", (None, None, None))
+            interp = got["interp"][0]
+            verify, code, rss = got["verify"]
             r_peer = "" if peer is None or verify is None else f"{verify / peer:.2f}"
             r_regex = "" if regex is None or verify is None else f"{verify / regex:.2f}"
             shown = 'n/a' if not rs274 or peer_path is None else fmt(peer) + ('*' if peer_path != path else '')

@@ -1,0 +1,51 @@
+"""bench/bench_peers.py's timing rounds: a row's commands interleaved, the least run of the common exit status."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+
+import bench_peers  # noqa: E402
+
+
+def _logger(log: Path, name: str, code: int = 0) -> list[str]:
+    return [sys.executable, "-c", f"open({str(log)!r}, 'a').write({name!r}); raise SystemExit({code})"]
+
+
+def test_each_round_runs_every_command_once_in_turn(tmp_path, monkeypatch):
+    monkeypatch.setattr(bench_peers, "REPEAT", [3])
+    log = tmp_path / "order"
+    got = bench_peers.cpu_rounds({"a": (_logger(log, "a"), None), "b": (_logger(log, "b"), None)}, 60)
+    assert log.read_text() == "ababab"
+    assert got["a"][1] == 0 and got["b"][1] == 0 and got["a"][0] > 0 and got["b"][2] > 0
+
+
+def test_only_runs_with_the_most_common_exit_status_count(tmp_path, monkeypatch):
+    monkeypatch.setattr(bench_peers, "REPEAT", [3])
+    log = tmp_path / "n"
+    # exits 7 on its first run, 0 on the two after: the 0 runs are the measurement
+    script = (f"import os; p = {str(log)!r}; n = os.path.getsize(p) if os.path.exists(p) else 0; "
+              "open(p, 'a').write('x'); raise SystemExit(7 if n == 0 else 0)")
+    got = bench_peers.cpu_rounds({"c": ([sys.executable, "-c", script], None)}, 60)
+    assert log.read_text() == "xxx" and got["c"][1] == 0
+
+
+def test_a_command_past_its_timeout_is_not_run_again(tmp_path, monkeypatch):
+    monkeypatch.setattr(bench_peers, "REPEAT", [3])
+    log = tmp_path / "slow"
+    slow = [sys.executable, "-c", f"import time; open({str(log)!r}, 'a').write('s'); time.sleep(30)"]
+    got = bench_peers.cpu_rounds({"slow": (slow, None)}, 0.5)
+    assert got["slow"] == (None, None, None) and log.read_text() == "s"
+
+
+@pytest.mark.parametrize("repeat", [1, 2])
+def test_cpu_of_is_one_command_in_rounds(tmp_path, monkeypatch, repeat):
+    monkeypatch.setattr(bench_peers, "REPEAT", [repeat])
+    log = tmp_path / "one"
+    cpu, code = bench_peers.cpu_of(_logger(log, "o", 3), 60)
+    assert code == 3 and cpu is not None and log.read_text() == "o" * repeat
+    assert bench_peers.LAST_RSS[0] is not None and bench_peers.LAST_RSS[0] > 0
