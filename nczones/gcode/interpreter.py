@@ -104,6 +104,11 @@ GRBL_ARC_TOLERANCE = Fraction(5, 1000)
 
 #: LinuxCNC's RADIUS_TOLERANCE_MM (0.00005 in): how far an R arc may fall short (arc_tolerance="linuxcnc").
 LINUXCNC_RADIUS_TOLERANCE = Fraction(5, 100000) * Fraction(254, 10)
+#: The squared I/J/K radius (mm**2) below which LinuxCNC refuses an arc ("Zero-radius arc": ``arc_data_ijk``
+#: compares either radius with RADIUS_TOLERANCE, 0.00005 inch, in its doubles; rs274 runs 0.00127 mm and
+#: refuses 0.00126), with 1e-9 of the radius more: a radius that close to the limit is refused here, never run
+#: where LinuxCNC refuses it.
+LINUXCNC_ZERO_RADIUS_SQ = (LINUXCNC_RADIUS_TOLERANCE * (1 + Fraction(1, 10**9))) ** 2
 
 INCH = Fraction(254, 10)
 _ZERO = Fraction(0)
@@ -2044,6 +2049,9 @@ class Interpreter:
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
         if r0 == 0 or r1 == 0:
             raise self.error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
+        if self.dialect == "linuxcnc" and min(r0, r1) < LINUXCNC_ZERO_RADIUS_SQ:
+            raise self.error("GC304", f"zero-radius arc: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm; "
+                             "LinuxCNC refuses a radius below 0.00005 inch (0.00127 mm)", iw or jw)
         rejected = (linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
                     else r0 != r1 and sqrt_diff_exceeds(r0, r1, tol))
         if rejected:
