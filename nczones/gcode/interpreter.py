@@ -285,7 +285,8 @@ class Interpreter:
     arc_tolerance : Fraction
         Largest allowed difference (mm) between the radius at the start and
         the radius at the end of an I/J/K arc (and by which an R arc may be
-        too short); beyond it the arc is an error GC301/GC302.
+        too short; in the LinuxCNC dialect at most LinuxCNC's own 0.00005 inch); beyond it the arc is an error
+        GC301/GC302.
     track_dependencies : bool
         Fill ``deps_start``/``deps_end`` of every segment.
     param_ranges : iterable
@@ -2005,6 +2006,10 @@ class Interpreter:
         if rw is not None:
             if self.arc_rule == "grbl":
                 tol = _ZERO  # Grbl refuses an R arc whose chord is longer than 2R at all (h_x2_div_d < 0)
+            elif self.dialect == "linuxcnc" and tol > LINUXCNC_RADIUS_TOLERANCE:
+                # LinuxCNC refuses an R short by more than its own 0.00005 inch whatever the tolerance set here
+                # ("Arc radius too small to reach end point": R4.99873 from X0 to X10 runs, R4.99872 does not)
+                tol = LINUXCNC_RADIUS_TOLERANCE
             r = self.length_mm(rw.value)
             if sa == ea and sb == eb:
                 raise self.error("GC303", "R-format arc whose end point equals its start point: the centre is undefined (use I/J/K for a full circle)", rw)

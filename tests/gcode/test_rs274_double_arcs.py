@@ -18,7 +18,8 @@ Each program is run by ``rs274 -g`` (:func:`tests.tools.rs274_diff.run_rs274`) a
   points of its sweep at the radius between its start's and its end's, and its axis extremes) inside the
   pass's quick box (``r_screen``/``ij_screen``) and inside the refined box (``DoublePath.refine``), within
   the log's rounding; one turn only (the pass declines P);
-- a program rs274 refuses is refused or ``unknown`` on our side, never ``safe``, and the pass declines it;
+- a program rs274 refuses is refused or ``unknown`` on our side, never ``safe`` (under LinuxCNC's arc rule
+  and under nczones's default tolerance), and the pass declines it;
 - the routed verdict is the full path's without the pass and the vectorized tier (``fast=False``).
 
 The face tests draw programs of rational arcs only (Pythagorean centres and radii, exact extremes,
@@ -73,16 +74,19 @@ _TRAVEL_MIN = 'min = { X = "-5000", Y = "-5000", Z = "-5000" }'
 AXES = ("X", "Y", "Z")
 
 
-def _machine(face: tuple[int, int, Fraction] | None = None, base: str = "box_5000") -> Machine:
+def _machine(face: tuple[int, int, Fraction] | None = None, base: str = "box_5000",
+             tolerance: str | None = "linuxcnc") -> Machine:
     """``base`` (box_5000, or xyz_box_900000 that every drawn program stays in) with rs274's setup: pulse 0.0001, LinuxCNC's arc rule, the parameter file's work offsets and the
     tool table's lengths (inches there, mm here); ``face``: (axis, sign, value), the travel's face on that
     axis moved to that value, and exact stop (G61) at every corner, so that only the arcs meet the face (a
-    rounded corner's enclosure reaches past the motions around it: unknown, VF208, on both paths)."""
+    rounded corner's enclosure reaches past the motions around it: unknown, VF208, on both paths);
+    ``tolerance``: the machine's ``arc_tolerance`` (None: nczones's default, 0.002 mm)."""
     offsets = "".join(f'{name} = {{ {", ".join(f"{a} = {dec(v * INCH)!r}" for a, v in vals.items())} }}\n'
                       for name, vals in OFFSETS_INCH.items()).replace("'", '"')
     tools = "".join(f'H{n} = "{dec(z * INCH)}"\n' for n, z in TOOLS_INCH.items())
     mode = {"machine.path_mode": "G61"} if face is not None else {}
-    text = machine_text(base, set={"machine.pulse": "0.0001", "machine.arc_tolerance": "linuxcnc", **mode},
+    rule = {"machine.arc_tolerance": tolerance} if tolerance is not None else {}
+    text = machine_text(base, set={"machine.pulse": "0.0001", **rule, **mode},
                         extra=f"[offsets]\n{offsets}[tool_lengths]\n{tools}")
     if face is not None:
         axis, sign, value = face
@@ -235,8 +239,10 @@ def differential(seed: int, tmp_path, monkeypatch) -> str:
     if path is not None:
         check_pass_arcs(path, moves)
     routed, _full = _verdicts(text, machine, monkeypatch)
-    if error is not None:
-        assert isinstance(routed, GcodeError) or routed.verdict is not Verdict.SAFE, (seed, error)
+    if error is not None:  # never safe where LinuxCNC refuses, under LinuxCNC's arc rule or nczones's default
+        default, _ = _verdicts(text, _machine(base="xyz_box_900000", tolerance=None), monkeypatch)
+        for got in (routed, default):
+            assert isinstance(got, GcodeError) or got.verdict is not Verdict.SAFE, (seed, error)
     return "refused" if error is not None else "pass" if path is not None else "declined"
 
 
@@ -350,4 +356,34 @@ def test_an_ij_radius_below_linuxcncs_zero_radius_limit_is_refused(units, radius
     else:
         assert error is not None and "Zero-radius arc" in error[0]
         with pytest.raises(GcodeError, match="GC304"):
+            verify_text(text, machine)
+
+
+#: rs274 (recorded 2026-12-06): from X0 to X10, ``G2 X10 Y0 R4.99873`` runs (a half circle), ``R4.99872`` is
+#: "Arc radius too small to reach end point" (LinuxCNC's 0.00005 inch).  Under nczones's default tolerance
+#: (0.002 mm) nczones took R4.99801 as a half circle and proved the program ``safe``.
+R_SHORT = [("4.99873", True), ("4.99872", False), ("4.99801", False)]
+
+
+@pytest.mark.parametrize("radius, runs", R_SHORT)
+@pytest.mark.parametrize("size", ["short", "routed", "vectorized"])
+@pytest.mark.parametrize("tolerance", [None, "linuxcnc"])
+def test_an_r_arc_short_by_more_than_linuxcncs_limit_is_refused(radius, runs, size, tolerance, tmp_path):
+    """Under any arc tolerance of the machine, short and past 512 lines (routed: the pass declines a half circle,
+    the full path decides; with G64, the vectorized tier, which hands it to the full path)."""
+    from nczones.prover import verify_text
+
+    pad = "G1 X1 Y1\nG1 X0 Y0\n" * (0 if size == "short" else 300)
+    head = "G21 G90 G17 G54 F100\n" + ("G64\n" if size == "vectorized" else "")
+    text = f"{head}G0 X0 Y0\n{pad}G2 X10 Y0 R{radius}\nM2\n"
+    if size == "routed":
+        _routed(text)
+    _moves, error, _log = run_rs274(text, SETUP, tmp_path)
+    assert (error is None) == runs, error
+    machine = _machine(tolerance=tolerance)
+    if runs:
+        assert verify_text(text, machine).verdict is Verdict.SAFE
+    else:
+        assert error is not None and "Arc radius too small" in error[0]
+        with pytest.raises(GcodeError, match="GC302"):
             verify_text(text, machine)
