@@ -20,7 +20,8 @@ Each program is run by ``rs274 -g`` (:func:`tests.tools.rs274_diff.run_rs274`) a
   the log's rounding; one turn only (the pass declines P);
 - a program rs274 refuses is refused or ``unknown`` on our side, never ``safe`` (under LinuxCNC's arc rule
   and under nczones's default tolerance), and the pass declines it;
-- the routed verdict is the full path's without the pass and the vectorized tier (``fast=False``).
+- the routed verdict is the full path's without the pass and the vectorized tier (``fast=False``), but for
+  the lanes' known difference on a whole spiral turn (:func:`_spiral_turn_lanes`).
 
 The face tests draw programs of rational arcs only (Pythagorean centres and radii, exact extremes,
 :meth:`ArcWriter.extreme`) and put a zone face on their true extreme exactly, 1e-12 mm inside it and 1e-12 mm
@@ -124,9 +125,30 @@ def _verdicts(text: str, machine: Machine, monkeypatch):
         full = run()
     if isinstance(routed, GcodeError) or isinstance(full, GcodeError):
         assert type(routed) is type(full) and str(routed) == str(full), (routed, full)
-    else:
+    elif not _spiral_turn_lanes(routed, full):
         same_outcome(routed, full)
     return routed, full
+
+
+#: The full path's reason for an I/J arc whose end lies on its start's ray at another radius (prover/core.py).
+SPIRAL_TURN = "LinuxCNC moves a whole spiral turn, which is not modelled"
+#: Programs where :func:`_spiral_turn_lanes` took the difference (the long runs print their count).
+SPIRAL_TURNS_SEEN: list[str] = []
+
+
+def _spiral_turn_lanes(routed, full) -> bool:
+    """The known difference of the lanes (specs/contract.md, "Arcs and G43 in the double pass"): past 512
+    motions the vectorized tier's column screen proves a whole spiral turn by its box (which holds the turn)
+    where the one-by-one proof (``fast=False``) answers ``unknown``; the pass declines such an arc (its end on
+    the start's ray), so the routed verdict is the vectorized tier's.  Taken only when that is the whole
+    difference: routed ``safe`` not by the pass, every reason of the full path the spiral turn's."""
+    if not (routed.verdict is Verdict.SAFE and full.verdict is Verdict.UNKNOWN and full.reasons):
+        return False
+    if "double_pass_boxes" in dict(routed.stats) or not all(SPIRAL_TURN in r.message for r in full.reasons):
+        return False
+    SPIRAL_TURNS_SEEN.append(full.reasons[0].message)
+    return True
+
 
 
 # -- rs274's arcs ----------------------------------------------------------------------------------------------
@@ -257,7 +279,7 @@ def test_arc_programs_past_512_lines_against_rs274_long(tmp_path, monkeypatch):
     for seed in range(1000, 1000 + LONG):
         got = differential(seed, tmp_path, monkeypatch)
         counts[got] = counts.get(got, 0) + 1
-    print(counts)
+    print(counts, f"{len(SPIRAL_TURNS_SEEN)} whole spiral turns safe routed, unknown one by one")
     assert counts.get("pass", 0) > LONG // 4
 
 
