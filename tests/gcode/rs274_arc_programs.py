@@ -316,7 +316,7 @@ class ArcWriter:
         self.fresh()
         specials: dict[int, str] = {}
         if not self.rational:
-            specials.update({r.randrange(10, lines): r.choice(DECLINED) for _ in range(r.choice([0, 0, 1, 2]))})
+            specials.update({r.randrange(10, lines): r.choice(DECLINED) for _ in range(r.choice([0, 0, 0, 1, 2]))})
             if r.random() < 0.3:
                 specials[r.randrange(lines - 30, lines - 5)] = r.choice(RISKY)
         if self.outside:

@@ -17,7 +17,8 @@ Each program is run by ``rs274 -g`` (:func:`tests.tools.rs274_diff.run_rs274`) a
   within the log's rounding; rs274's whole arc (its printed start, centre, end, direction and turn count:
   points of its sweep at the radius between its start's and its end's, and its axis extremes) inside the
   pass's quick box (``r_screen``/``ij_screen``) and inside the refined box (``DoublePath.refine``), within
-  the log's rounding; one turn only (the pass declines P);
+  the log's rounding; one turn only (the pass declines P); run in windows of 97 motions, the same rows and
+  boxes;
 - a program rs274 refuses is refused or ``unknown`` on our side, never ``safe`` (under LinuxCNC's arc rule
   and under nczones's default tolerance), and the pass declines it;
 - the routed verdict is the full path's without the pass and the vectorized tier (``fast=False``), but for
@@ -30,7 +31,8 @@ proves it): the routed verdict is the full path's, ``unsafe`` beyond the face an
 inside it; rs274's extreme (from its printed centres) is the exact one
 within the log's rounding, and a ``safe`` face is not crossed by rs274's motion.
 
-CI size: a few programs (``NCZONES_RS274_DOUBLE_ARCS``, ``NCZONES_RS274_DOUBLE_ARC_FACES``); the long run is
+CI size: six programs (``CI_SEEDS``; ``NCZONES_RS274_DOUBLE_ARCS`` takes fewer) and two face programs
+(``NCZONES_RS274_DOUBLE_ARC_FACES``); the long run is
 ``pytest -m long`` with ``NCZONES_RS274_DOUBLE_ARCS_LONG`` programs (default 200).
 """
 
@@ -218,6 +220,26 @@ def check_pass_arcs(path: DoublePath, moves: list[CanonMove]) -> int:
     return len(arcs)
 
 
+def check_windows(text: str, machine: Machine, path: DoublePath) -> None:
+    """The pass run in windows of 97 motions (``on_window``, as ``verify`` runs it with 65,536) gives every arc
+    the row and quick box of the whole run: the arcs across a window's edge included (windows overlap by one
+    motion)."""
+    assert path.arc_boxes is not None and path.row0 == 0
+    whole = {row: tuple(path.arc_boxes[4 * k:4 * k + 4]) for k, row in enumerate(path.arc_rows)}
+    seen: dict[int, tuple[float, ...]] = {}
+
+    def take(window: DoublePath) -> bool:
+        assert window.arc_boxes is not None
+        for k, row in enumerate(window.arc_rows):
+            box = tuple(window.arc_boxes[4 * k:4 * k + 4])
+            assert seen.setdefault(row, box) == box, row
+            assert window.columns[0][row - window.row0] == path.columns[0][row], row
+        return True
+
+    take(double_pass(text, machine, max_iterations=1000, arc_tolerance="linuxcnc", on_window=take, window=97))
+    assert seen == whole
+
+
 def check_r_centres(text: str, machine: Machine, moves: list[CanonMove]) -> None:
     """The full path's R arcs' centres (``(S + E) / 2 + s h n``, as LinuxCNC's arc_data_r) are rs274's, within
     the log's rounding; ``compare`` checks the I/J arcs' (their centre is held) but not these."""
@@ -259,6 +281,7 @@ def differential(seed: int, tmp_path, monkeypatch) -> str:
     if writer.outside or error is not None:
         assert path is None, "the pass takes a construct outside its subset, or a program rs274 refuses"
     if path is not None:
+        check_windows(text, machine, path)
         check_pass_arcs(path, moves)
     routed, _full = _verdicts(text, machine, monkeypatch)
     if error is not None:  # never safe where LinuxCNC refuses, under LinuxCNC's arc rule or nczones's default
@@ -268,9 +291,15 @@ def differential(seed: int, tmp_path, monkeypatch) -> str:
     return "refused" if error is not None else "pass" if path is not None else "declined"
 
 
-@pytest.mark.parametrize("seed", range(PROGRAMS))
+#: The CI's draws and what each meets (a change of the generator that moves them fails here: pick seeds again
+#: so that the three branches stay covered): taken by the pass, declined (seed 3: G90.1), refused by
+#: rs274 (seed 7: an I/J radius below the zero-radius limit, after a P word).
+CI_SEEDS = {0: "pass", 1: "pass", 2: "pass", 3: "declined", 5: "pass", 7: "refused"}
+
+
+@pytest.mark.parametrize("seed", sorted(CI_SEEDS)[:PROGRAMS])
 def test_arc_programs_past_512_lines_against_rs274(seed, tmp_path, monkeypatch):
-    differential(seed, tmp_path, monkeypatch)
+    assert differential(seed, tmp_path, monkeypatch) == CI_SEEDS[seed]
 
 
 @pytest.mark.long
@@ -353,7 +382,7 @@ def test_a_face_on_the_arcs_exact_extreme_long(tmp_path, monkeypatch):
 
 #: rs274 (recorded 2026-12-06): ``G2 X0 Y0 I0.00126 J0`` is "Zero-radius arc", ``I0.00127`` runs; 0.00004 inch
 #: is refused under G20, 0.00005 runs.  nczones ran both and proved such a program ``safe``.
-ZERO_RADIUS = [("G21", "0.0012", False), ("G21", "0.00126", False), ("G21", "0.0013", True),
+ZERO_RADIUS = [("G21", "0.00126", False), ("G21", "0.0013", True),
                ("G20", "0.00004", False), ("G20", "0.00006", True)]
 
 
