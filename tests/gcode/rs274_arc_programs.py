@@ -45,7 +45,7 @@ SETUP = (("X", "Y", "Z"), TOOLS_INCH, OFFSETS_INCH)
 def dec(v: Fraction) -> str:
     """``v`` as exact decimal text (its denominator divides a power of ten)."""
     sign, v = ("-" if v < 0 else ""), abs(v)
-    for places in range(0, 13):
+    for places in range(0, 25):
         scaled = v * 10**places
         if scaled.denominator == 1:
             n = scaled.numerator
@@ -95,6 +95,8 @@ class ArcWriter:
     rng: random.Random
     outside: bool = False
     rational: bool = False
+    #: the arc kinds drawn, when given (no declined or refused kind then); else TAKEN (its first three if rational)
+    menu: tuple[str, ...] = ()
     lines: list[str] = field(default_factory=list)
     #: the program position (program units, X Y Z), the units (mm per unit), the work offset, the tool length
     pos: list[Fraction] = field(default_factory=lambda: [F0, F0, F0])
@@ -148,7 +150,7 @@ class ArcWriter:
     def arc(self, kind: str | None = None) -> None:
         """An arc the double pass takes (its kinds in :data:`TAKEN`), or one of ``kind``."""
         if kind is None:
-            kind = self.rng.choice(TAKEN[:3] if self.rational else TAKEN)
+            kind = self.rng.choice(self.menu or (TAKEN[:3] if self.rational else TAKEN))
         self.kinds.add(kind)
         getattr(self, "_" + kind)()
 
@@ -315,7 +317,7 @@ class ArcWriter:
         self.lines = ["G21 G90 G17 G54 G94 F300"]
         self.fresh()
         specials: dict[int, str] = {}
-        if not self.rational:
+        if not self.rational and not self.menu:
             specials.update({r.randrange(10, lines): r.choice(DECLINED) for _ in range(r.choice([0, 0, 0, 1, 2]))})
             if r.random() < 0.3:
                 specials[r.randrange(lines - 30, lines - 5)] = r.choice(RISKY)

@@ -31,6 +31,11 @@ proves it): the routed verdict is the full path's, ``unsafe`` beyond the face an
 inside it; rs274's extreme (from its printed centres) is the exact one
 within the log's rounding, and a ``safe`` face is not crossed by rs274's motion.
 
+The near-half test draws R arcs 1e-8 to 1e-5 mm above half their chord (irrational, ill-conditioned centres)
+and tiny R: every arc's quick and refined box holds the full path's exact extreme (60 digits) in all four
+directions, and faces 1e-9 mm either side of the exact extreme of the R arc that reaches it are decided as the
+full path decides them.
+
 CI size: six programs (``CI_SEEDS``; ``NCZONES_RS274_DOUBLE_ARCS`` takes fewer) and two face programs
 (``NCZONES_RS274_DOUBLE_ARC_FACES``); the long run is
 ``pytest -m long`` with ``NCZONES_RS274_DOUBLE_ARCS_LONG`` programs (default 200).
@@ -438,3 +443,112 @@ def test_an_r_arc_short_by_more_than_linuxcncs_limit_is_refused(radius, runs, si
         assert error is not None and "Arc radius too small" in error[0]
         with pytest.raises(GcodeError, match="GC302"):
             verify_text(text, machine)
+
+
+# -- zone faces on irrational extremes: near-half R arcs -------------------------------------------------------
+
+#: Arcs whose extreme is irrational (an R arc's centre ``(S + E) / 2 + s h n``): near-half circles, R 1e-8 to
+#: 1e-5 mm above half the chord, where ``h`` is ill-conditioned, and tiny R (the straight moves reach 40 mm, the
+#: near-half arcs' bulge 5 mm more: one of them holds an extreme).
+NEAR_HALF = ("r_near_half", "r_near_half", "r_near_half", "r_tiny")
+
+
+def exact_extremes(segs: list, axis: int, sign: int) -> list[tuple[object, bool]]:
+    """Per motion of the full path (its exact segments ``segs``), its largest ``sign * coordinate`` on ``axis``
+    at 60 digits, and whether an R arc's sweep (not an end) reaches it; circles only (the draw has no spiral)."""
+    import mpmath
+
+    out = []
+    with mpmath.workdps(60):
+        def mp(v: Fraction):
+            return mpmath.mpf(v.numerator) / v.denominator
+
+        for seg in segs:
+            ends = max(sign * mp(seg.start[axis]), sign * mp(seg.end[axis]))
+            if seg.kind is not SegmentKind.ARC:
+                out.append((ends, False))
+                continue
+            sx, sy, ex, ey = (mp(v) for v in (seg.start[0], seg.start[1], seg.end[0], seg.end[1]))
+            if seg.centre is not None:
+                cx, cy = mp(seg.centre[0]), mp(seg.centre[1])
+            else:  # LinuxCNC's arc_data_r, exactly (the full path's R arc)
+                d2 = (seg.end[0] - seg.start[0]) ** 2 + (seg.end[1] - seg.start[1]) ** 2
+                h = mpmath.sqrt(mp(seg.radius**2 - d2 / 4)) / mpmath.sqrt(mp(d2))
+                s = -1 if (seg.radius > 0) == seg.clockwise else 1
+                cx, cy = (sx + ex) / 2 - s * h * (ey - sy), (sy + ey) / 2 + s * h * (ex - sx)
+            a, b = mpmath.atan2(sy - cy, sx - cx), mpmath.atan2(ey - cy, ex - cx)
+            if seg.clockwise:
+                a, b = b, a
+            sweep = (b - a) % (2 * mpmath.pi) or 2 * mpmath.pi
+            t = (0 if sign > 0 else mpmath.pi) if axis == 0 else sign * mpmath.pi / 2
+            if (t - a) % (2 * mpmath.pi) <= sweep:
+                top = sign * (cx, cy)[axis] + mpmath.sqrt((sx - cx) ** 2 + (sy - cy) ** 2)
+                out.append((max(top, ends), top > ends and seg.radius is not None))
+            else:
+                out.append((ends, False))
+    return out
+
+
+def _decimal_of(v, up: bool) -> Fraction:
+    """``v`` (an mpf) rounded outwards to 1e-15."""
+    import mpmath
+
+    with mpmath.workdps(60):  # (at the default 53 bits the product would drop the digits past 1e-15)
+        scaled = v * 10**15
+        return Fraction(int(mpmath.ceil(scaled) if up else mpmath.floor(scaled)), 10**15)
+
+
+def check_boxes_hold_extremes(text: str, machine: Machine, segs: list) -> None:
+    """Every arc's quick and refined box in the pass holds the full path's exact arc's extreme in all four
+    directions, at 60 digits (an R arc's irrational centre included: the near-half circles' ill-conditioned
+    ``h``); the rows' doubles are within the boxes' widening of the exact ends."""
+    import mpmath
+
+    path = double_pass(text, machine, max_iterations=1000, arc_tolerance="linuxcnc")
+    assert path.arc_boxes is not None and len(segs) == path.motions
+    screens = list(path.arc_boxes)
+    path.refine(1, path.motions)
+    with mpmath.workdps(60):
+        for axis, sign in ((0, 1), (0, -1), (1, 1), (1, -1)):
+            extremes = exact_extremes(segs, axis, sign)
+            for k, row in enumerate(path.arc_rows):
+                for boxes in (screens, path.arc_boxes):
+                    bound = boxes[4 * k + 2 * axis + (sign > 0)]
+                    assert sign * mpmath.mpf(bound) >= extremes[row - 1][0], (row, axis, sign, bound)
+
+
+def near_half_run(seed: int, tmp_path, monkeypatch) -> None:
+    writer = ArcWriter(random.Random(seed), menu=NEAR_HALF)
+    text = writer.program()
+    _routed(text)
+    machine = _machine()
+    segs, error, unsupported = nczones_motion(text, machine)
+    assert error is None and not unsupported
+    check_boxes_hold_extremes(text, machine, segs)
+    for axis, sign in random.Random(seed).sample([(0, 1), (0, -1), (1, 1), (1, -1)], 4):
+        top, swept = max(exact_extremes(segs, axis, sign), key=lambda e: e[0])
+        if swept:
+            break
+    assert swept, "no R arc's sweep holds the extreme"
+    moves, error, _log = run_rs274(text, SETUP, tmp_path)
+    assert error is None, error
+    assert abs(rs274_extreme(moves, axis, sign) - float(top)) <= 1e-3
+    gap = Fraction(1, 10**9)
+    for face, inside in ((_decimal_of(top, False) - gap, False), (_decimal_of(top, True) + gap, True)):
+        routed, _full = _verdicts(text, _machine((axis, sign, sign * face)), monkeypatch)
+        assert not isinstance(routed, GcodeError), routed
+        if inside:
+            assert routed.verdict is not Verdict.UNSAFE, routed.violations
+        else:
+            assert routed.verdict is Verdict.UNSAFE, (routed.verdict, routed.reasons)
+
+
+@pytest.mark.parametrize("seed", range(min(FACES, 1)))
+def test_a_face_by_near_half_r_arcs(seed, tmp_path, monkeypatch):
+    near_half_run(seed, tmp_path, monkeypatch)
+
+
+@pytest.mark.long
+def test_a_face_by_near_half_r_arcs_long(tmp_path, monkeypatch):
+    for seed in range(1000, 1000 + LONG // 4):
+        near_half_run(seed, tmp_path, monkeypatch)
