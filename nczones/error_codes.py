@@ -165,7 +165,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("GC301", _E, _GS, "an arc's end point off its circle by more than the arc tolerance"),
     Code("GC302", _E, _MF, "an R arc's radius too small to reach its end point"),
     Code("GC303", _E, "", "an R arc whose end point equals its start point: the centre is undefined"),
-    Code("GC304", _E, "", "a zero-radius arc (R0, or the centre at the start or end point)"),
+    Code("GC304", _E, "", "a zero-radius arc (R0, or the centre at the start or end point; LinuxCNC: an I/J/K "
+                          "radius below its 0.00005 inch, \"Zero-radius arc\")"),
     Code("GC305", _E, _GS, "a block the control refuses in its run-time state: feed 0, the spindle not turning "
                            "for G33/G84/G95, an (ABORT, ...), polar words at the origin, G93 without F"),
     Code("GC306", _E, "", "a canned cycle's retract plane R below its bottom"),

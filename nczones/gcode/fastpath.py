@@ -1296,9 +1296,15 @@ def _arcs_ok(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca:
     return True
 
 
+#: Above LinuxCNC's smallest I/J/K radius (0.00127 mm, ``interpreter.LINUXCNC_ZERO_RADIUS_SQ``) by far more than the
+#: rounding of the float radii: a smaller radius is the interpreter's to decide.
+_ZERO_RADIUS = 0.00127 * (1 + 1e-6)
+
+
 def _arcs_ok_linuxcnc(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.ndarray, ca: np.ndarray,
                       cb: np.ndarray, inch: bool, S: int) -> bool:
-    """Every arc: both radii non-zero and accepted by LinuxCNC's rule (``interpreter.linuxcnc_rejects_arc``).
+    """Every arc: both radii above LinuxCNC's zero-radius limit and accepted by its rule
+    (``interpreter.linuxcnc_rejects_arc``).
 
     Arcs clearly inside the rule by a float test with a wide margin are accepted; every other arc is decided
     by the interpreter's own function on its exact squared radii, so the answer is the interpreter's.
@@ -1308,6 +1314,8 @@ def _arcs_ok_linuxcnc(sa: np.ndarray, sb: np.ndarray, ea: np.ndarray, eb: np.nda
     unit = 10.0**S * (25.4 if inch else 1.0)  # scaled integers per program unit
     r0 = np.sqrt((sa - ca).astype(np.float64) ** 2 + (sb - cb).astype(np.float64) ** 2) / unit
     r1 = np.sqrt((ea - ca).astype(np.float64) ** 2 + (eb - cb).astype(np.float64) ** 2) / unit
+    if np.any(np.minimum(r0, r1) * (25.4 if inch else 1.0) < _ZERO_RADIUS):
+        return False  # LinuxCNC's "Zero-radius arc" (interpreter.LINUXCNC_ZERO_RADIUS_SQ): the interpreter's
     tol = 2 * (0.001 if inch else 0.01) * math.sqrt(2)
     err = np.abs(r1 - r0)
     big = np.maximum(r0, r1)

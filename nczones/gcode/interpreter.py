@@ -104,6 +104,11 @@ GRBL_ARC_TOLERANCE = Fraction(5, 1000)
 
 #: LinuxCNC's RADIUS_TOLERANCE_MM (0.00005 in): how far an R arc may fall short (arc_tolerance="linuxcnc").
 LINUXCNC_RADIUS_TOLERANCE = Fraction(5, 100000) * Fraction(254, 10)
+#: The squared I/J/K radius (mm**2) below which LinuxCNC refuses an arc ("Zero-radius arc": ``arc_data_ijk``
+#: compares either radius with RADIUS_TOLERANCE, 0.00005 inch, in its doubles; rs274 runs 0.00127 mm and
+#: refuses 0.00126), with 1e-9 of the radius more: a radius that close to the limit is refused here, never run
+#: where LinuxCNC refuses it.
+LINUXCNC_ZERO_RADIUS_SQ = (LINUXCNC_RADIUS_TOLERANCE * (1 + Fraction(1, 10**9))) ** 2
 
 INCH = Fraction(254, 10)
 _ZERO = Fraction(0)
@@ -280,7 +285,8 @@ class Interpreter:
     arc_tolerance : Fraction
         Largest allowed difference (mm) between the radius at the start and
         the radius at the end of an I/J/K arc (and by which an R arc may be
-        too short); beyond it the arc is an error GC301/GC302.
+        too short; in the LinuxCNC dialect at most LinuxCNC's own 0.00005 inch); beyond it the arc is an error
+        GC301/GC302.
     track_dependencies : bool
         Fill ``deps_start``/``deps_end`` of every segment.
     param_ranges : iterable
@@ -2000,6 +2006,10 @@ class Interpreter:
         if rw is not None:
             if self.arc_rule == "grbl":
                 tol = _ZERO  # Grbl refuses an R arc whose chord is longer than 2R at all (h_x2_div_d < 0)
+            elif self.dialect == "linuxcnc" and tol > LINUXCNC_RADIUS_TOLERANCE:
+                # LinuxCNC refuses an R short by more than its own 0.00005 inch whatever the tolerance set here
+                # ("Arc radius too small to reach end point": R4.99873 from X0 to X10 runs, R4.99872 does not)
+                tol = LINUXCNC_RADIUS_TOLERANCE
             r = self.length_mm(rw.value)
             if sa == ea and sb == eb:
                 raise self.error("GC303", "R-format arc whose end point equals its start point: the centre is undefined (use I/J/K for a full circle)", rw)
@@ -2044,6 +2054,9 @@ class Interpreter:
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
         if r0 == 0 or r1 == 0:
             raise self.error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
+        if self.dialect == "linuxcnc" and min(r0, r1) < LINUXCNC_ZERO_RADIUS_SQ:
+            raise self.error("GC304", f"zero-radius arc: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm; "
+                             "LinuxCNC refuses a radius below 0.00005 inch (0.00127 mm)", iw or jw)
         rejected = (linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
                     else r0 != r1 and sqrt_diff_exceeds(r0, r1, tol))
         if rejected:

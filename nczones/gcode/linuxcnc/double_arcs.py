@@ -40,6 +40,7 @@ terms (their docstrings) and decline exactly what :func:`r_arc` / :func:`ij_arc`
 keeps them and :func:`refined` gives the sweep's box when a proof needs a tighter one.
 
 What declines (the full path errors or decides otherwise there): a radius about 0 (GC304 exactly at 0), an
+I/J radius near or below LinuxCNC's zero-radius limit of 0.00005 inch (GC304 on the full path), an
 I/J arc whose radii differ near or past the arc tolerance's rule (GC301), an R arc whose chord is about 0
 (GC303) or about ``2|R|`` or longer (a half circle or GC302).
 """
@@ -63,6 +64,9 @@ _HALF = 1e-9
 _DOWN, _UP = -math.inf, math.inf
 #: LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE in mm (2 * 0.01 * sqrt 2).
 _A = 2 * 0.01 * math.sqrt(2)
+#: LinuxCNC refuses an I/J radius below 0.00005 inch ("Zero-radius arc", ``interpreter.LINUXCNC_ZERO_RADIUS_SQ``):
+#: the pass takes radii clearly above it (the radii's doubles are within ``err / 2`` of the exact ones).
+_ZERO_RADIUS = 0.00127 * (1 + 1e-6)
 #: The directions +X, +Y, -X, -Y as angles.
 _ANGLES = (0.0, math.pi / 2, math.pi, -math.pi / 2)
 
@@ -146,8 +150,8 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
     # (conditionals for abs(): this runs per arc)
     m = (sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + r0 + r1 + offb  # (>= max(|sx|, |sy|) + ...)
     err = (64.0 * m + 0.0625) * _U  # every error above is below err / 4
-    if not (r0 > 4 * err and r1 > 4 * err):
-        return "an arc of a radius about 0"
+    if not (r0 > _ZERO_RADIUS + err and r1 > _ZERO_RADIUS + err):  # (4 err < _ZERO_RADIUS + err)
+        return "an arc of a radius about 0 or near LinuxCNC's zero-radius limit"
     if not turn and i * wx + j * wy < 0:  # -(u . w), u = (-i, -j): the end ahead of the start's normal
         a = j * wx - i * wy  # the cross product of u and w
         if abs(a) <= err * (abs(i) + abs(j) + abs(wx) + abs(wy)) * 1.01 + 2 * err * err + \
