@@ -19,7 +19,9 @@ Why a fitting box proves the program ``safe`` (the same model as the full path, 
   ``ArcGeom.plane_bbox`` (the exact extremes of an arc with a rational centre; for an R-format arc, whose centre
   may be irrational, its ends and the extremes of the circle (outward rational bounds of the centre and radius)
   in every axis direction its sweep may reach for a centre in the enclosure) and the box of its ends on the
-  other axes;
+  other axes; an I/J arc whose end lies on the ray from the centre through its start (a whole spiral turn on
+  LinuxCNC) in ``geometry.whole_turn_box`` (the centre +- the larger radius), the box the per-motion proof
+  proves it by (``Prover._decide_whole_turn``);
 * an arc the lane writes into a run's box (``FanucInterpreter._arc_lane``, ``BoxRows.add_arc``: a G2/G3 block
   with R, or I/J/K whose ends are at one distance from the centre, in the state the straight lane takes; issue
   36, for plain programs of 512 lines and more) is boxed the same way in scaled integers:
@@ -132,18 +134,12 @@ class BoxWalk:
         if kind is _LINE or kind is _RAPID or kind is _DWELL:
             lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
         elif kind is _ARC:
-            from .geometry import arc_geom
+            from .geometry import on_start_ray, whole_turn_box
 
-            if seg.centre is not None and not seg.turns and _on_start_ray(seg):
-                raise _Declined  # the per-motion proof gives this arc a reason (a whole spiral turn): its path
-            try:
-                g = arc_geom(seg)
-                (xl, xh), (yl, yh) = g.plane_bbox(sweep=True)
-            except (InvalidArgument, ValueError, ZeroDivisionError):
-                raise _Declined from None  # an arc the per-motion proof refuses (or decides otherwise)
-            lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
-            lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = min(xl, lo[g.ia]), max(xh, hi[g.ia]), min(yl, lo[g.ib]), \
-                max(yh, hi[g.ib])
+            if on_start_ray(seg):  # a whole spiral turn: the per-motion proof's box of it (Prover._decide_whole_turn)
+                lo, hi = map(list, whole_turn_box(seg))
+            else:
+                lo, hi = _arc_box(seg)
         else:
             raise _Declined
         blo, bhi = self.lo, self.hi
@@ -166,15 +162,20 @@ class BoxWalk:
         return self.tls
 
 
-def _on_start_ray(seg: Segment) -> bool:
-    """Does the arc's end lie on the ray from its centre through its start (another point of it)?  The per-motion
-    proof leaves such an arc ``unknown`` (LinuxCNC sweeps a whole spiral turn there): so does this route."""
-    ia, ib, _ = seg.plane_indices()
-    c = seg.centre
-    assert c is not None
-    u = (seg.start[ia] - c[0], seg.start[ib] - c[1])
-    w = (seg.end[ia] - c[0], seg.end[ib] - c[1])
-    return u != w and u[0] * w[1] - u[1] * w[0] == 0 and u[0] * w[0] + u[1] * w[1] > 0
+def _arc_box(seg: Segment) -> tuple[list[Fraction], list[Fraction]]:
+    """The corners (by axis index) of the box of an arc's path (its plane's extremes in its sweep), or
+    :class:`_Declined` for an arc the per-motion proof refuses or decides otherwise."""
+    from .geometry import arc_geom
+
+    try:
+        g = arc_geom(seg)
+        (xl, xh), (yl, yh) = g.plane_bbox(sweep=True)
+    except (InvalidArgument, ValueError, ZeroDivisionError):
+        raise _Declined from None
+    lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+    lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = min(xl, lo[g.ia]), max(xh, hi[g.ia]), min(yl, lo[g.ib]), \
+        max(yh, hi[g.ib])
+    return lo, hi
 
 
 def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | None = None) -> Result | None:
