@@ -178,6 +178,18 @@ def _arc_box(seg: Segment) -> tuple[list[Fraction], list[Fraction]]:
     return lo, hi
 
 
+#: the profile's labels of the interpretation's motion counts (``Interpretation.counts``: by ``SegmentKind``)
+_KIND_LABELS = frozenset(k.name.lower() for k in SegmentKind)
+
+
+def _kinds(counts: dict[str, int]) -> dict[str, dict[str, Any]]:
+    """The profile's motions by kind (``RunProfile.as_dict``), none decided one by one: the interpretation's counts
+    by motion kind, a helix counted among the arcs (as the vectorized screen counts its rows; the per-motion proof
+    labels a helix it decides ``helix``).  ``slowest`` stays empty: no motion is decided on its own here."""
+    return {k: {"motions": n, "seconds_one_by_one": 0.0} for k, n in sorted(counts.items())
+            if k in _KIND_LABELS and n}
+
+
 def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | None = None) -> Result | None:
     """A ``safe`` result for the motion of the interpretation ``run`` (read by the full interpreter, not the
     vectorized path) on ``machine`` with ``margin``, or None when the route declines (module docstring); the notes
@@ -221,7 +233,7 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
                "motions_screened_vectorized": 0, "fanuc_boxes": {"motions": n, "rows": walk.rows},
                "tiers": {"screen_vectorized_s": 0.0, "exact_per_motion_s": 0.0, "solver_s": 0.0,
                          "interpretation_and_rest_s": round(seconds, 6)},
-               "kinds": {}, "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
+               "kinds": _kinds(counts), "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
     return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(),
                   timings=(("prove_s", seconds),), stats=stats, margin=margin, engine="auto",
