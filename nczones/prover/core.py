@@ -669,6 +669,8 @@ class Prover:
 
     def check_concrete(self, seg: Segment, params: Params) -> Outcome:
         if seg.kind is SegmentKind.ARC:
+            if on_start_ray(seg):  # (a segment instantiated at a parameter combination, too)
+                return self._decide_whole_turn(seg)
             return self._check_arc(seg, params)
         pieces = line_pieces(seg, self.machine)
         self.stats["pieces"] += len(pieces)

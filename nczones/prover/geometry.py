@@ -278,7 +278,9 @@ class ArcGeom:
     ``centre`` is rational or None (R-format with an irrational centre; then
     ``r_signed`` is the programmed R and the centre is on the side fixed by
     DESIGN/motion.py).  ``full`` is a whole turn (``start == end`` in the plane
-    or ``turns > 0``).  ``r2_lo``/``r2_hi`` are the squared radii at start and
+    or ``turns > 0``, or an I/J arc whose end lies on the ray from the centre
+    through its start: LinuxCNC's whole spiral turn, :func:`on_start_ray`; every
+    box made of it then holds the whole turn).  ``r2_lo``/``r2_hi`` are the squared radii at start and
     end (ordered); they differ for a slightly inconsistent I/J arc, whose path
     is then enclosed in the annulus sector (a spiral, as LinuxCNC moves it).
     """
@@ -387,7 +389,7 @@ def arc_geom(seg: Segment) -> ArcGeom:
     ia, ib, _ = seg.plane_indices()
     s = (seg.start[ia], seg.start[ib])
     e = (seg.end[ia], seg.end[ib])
-    full = s == e or seg.turns > 0
+    full = s == e or seg.turns > 0 or on_start_ray(seg)
     centre = seg.centre
     r_signed = None
     if centre is None:

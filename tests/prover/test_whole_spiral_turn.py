@@ -28,7 +28,7 @@ from nczones.machine import parse_machine
 from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover import verify_text
 from nczones.prover.core import verify_segments
-from nczones.prover.geometry import on_start_ray, whole_turn_box
+from nczones.prover.geometry import arc_geom, on_start_ray, whole_turn_box
 from nczones.prover.result import Verdict
 from tests.gcode.test_double_pass import arc_points, check_arc_in_box
 from tests.machines import box_zone, machine_text
@@ -85,12 +85,13 @@ def test_the_whole_turn_box_holds_the_spiral(ca, cb, ua, ub, delta, clockwise, p
     assert on_start_ray(seg)
     lo, hi = whole_turn_box(seg)
     assert (lo[ic], hi[ic]) == (min(F(0), end[ic]), max(F(0), end[ic]))
-    if plane is Plane.XY:  # arc_points reads the X/Y plane
-        check_arc_in_box(seg, dict(zip(AXES, lo)), dict(zip(AXES, hi)))
-    else:
-        flat = Segment(SegmentKind.ARC, (start[ia], start[ib], F(0)), (end[ia], end[ib], F(0)), AXES,
-                       plane=Plane.XY, clockwise=clockwise, centre=c)
-        check_arc_in_box(flat, {"X": lo[ia], "Y": lo[ib]}, {"X": hi[ia], "Y": hi[ib]})
+    g = arc_geom(seg)
+    assert g.full  # every box made of its geometry (blends, hulls, tool solids) holds the whole turn
+    (bx, by) = g.plane_bbox(sweep=True)
+    flat = Segment(SegmentKind.ARC, (start[ia], start[ib], F(0)), (end[ia], end[ib], F(0)), AXES,
+                   plane=Plane.XY, clockwise=clockwise, centre=c)  # arc_points reads the X/Y plane
+    check_arc_in_box(flat, {"X": lo[ia], "Y": lo[ib]}, {"X": hi[ia], "Y": hi[ib]})
+    check_arc_in_box(flat, {"X": bx[0], "Y": by[0]}, {"X": bx[1], "Y": by[1]})
 
 
 def test_safe_when_the_whole_turn_s_box_fits():
@@ -123,18 +124,27 @@ def test_unknown_with_parameter_ranges_and_with_z3_alone():
 
 @pytest.mark.parametrize("machine, start, verdict", [(WALL, "60", Verdict.SAFE), (CORNER, "60", Verdict.UNKNOWN),
                                                      (WALL, "63", Verdict.UNKNOWN)])
-def test_the_fast_path_and_the_column_screen_agree(machine, start, verdict):
+def test_the_fast_path_and_the_column_screen_agree(machine, start, verdict, monkeypatch):
     """Past 512 motions (the vectorized path's column screen boxes the turn by a larger box, then the rows it
-    flags come one by one) the verdict is the short program's."""
+    flags come one by one) the verdict is the short program's, and the outcome (reasons too) is the one-by-one
+    path's (``fast=False``): the hunt ``test_plain_arc_programs_past_512_lines_hunt`` found the reasons differing
+    when the one-by-one path left every such arc ``unknown``."""
+    import nczones.pipeline.verification as verification
     from tests.contract.polygon_metamorphic import column_screen_forced
+    from tests.prover.test_double_pass_arc_screens import _slow
+    from tests.prover.test_double_pass_proof import same_outcome
 
     end = OUT[start]
     short = _program(start, _spiral(end=end))
     long = _program(start, _spiral(end=end), repeat=300)
     assert verify_text(short, machine).verdict is verdict
-    assert verify_text(long, machine).verdict is verdict
+    fast = verify_text(long, machine)
+    assert fast.verdict is verdict
     with column_screen_forced():
         assert verify_text(short, machine).verdict is verdict
+    monkeypatch.setattr(verification, "double_pass_result", lambda *args, **kwargs: None)
+    monkeypatch.setattr(verification, "interpretation", _slow(verification.interpretation))
+    same_outcome(fast, verify_text(long, machine))
 
 
 @pytest.mark.parametrize("start, verdict", [("60", Verdict.SAFE), ("63", Verdict.UNKNOWN)])
@@ -154,6 +164,33 @@ def test_the_fanuc_box_route_agrees(start, verdict):
         assert verify_text(text, machine).verdict is verdict
     finally:
         fanucboxes.ROUTE = saved
+
+
+#: the wall and a clamp on the inner side of the corner before the turn about (62, 20) (the turn's box is clear)
+NW = machine_text("xyz_spiral_wall", extra=box_zone("nw", {"X": "50", "Y": "20.05"}, {"X": "59.95", "Y": "21"},
+                                                    forbid=True))
+
+
+@pytest.mark.parametrize("dialect", ["linuxcnc", "fanuc"])
+def test_a_rounded_corner_before_the_turn_is_the_circle_s(dialect):
+    """Found while making the arc provable: the corner checks boxed the arc by its (empty) sweep, so with the
+    arc proved, a blended corner from a line into the turn (G64; Fanuc cutting mode: the run's hull) was
+    ``safe`` where the same corner into the exact circle (end = start) is ``unknown`` (VF208: the blend may
+    reach the clamp on the corner's inner side).  ``arc_geom`` makes such an arc a whole turn now: the same
+    verdict as the circle's, and ``safe`` with exact stops (G61)."""
+    machine = parse_machine(NW if dialect == "linuxcnc" else NW.replace("[machine]\n", '[machine]\ndialect = "fanuc"\n'))
+    dot = "." if dialect == "fanuc" else ""
+    for mode, verdict in (("G64", Verdict.UNKNOWN), ("G61", Verdict.SAFE)):
+        for end in ("60.001", f"60{dot}"):
+            text = (f"O1\nG21 G90 G17 G54 {mode} F600{dot}\nG1 Z10{dot}\nG1 Y5{dot}\nG1 X30{dot} Y10{dot}\n"
+                    f"G1 X60{dot} Y20{dot}\nG2 X{end} Y20{dot} I2{dot} J0{dot}\nG1 X60{dot} Y10{dot}\nM30\n")
+            if dialect == "linuxcnc":
+                text = text.replace("O1\n", "")
+            r = verify_text(text, machine)
+            assert r.verdict is verdict, (text, r.reasons)
+            assert not r.violations
+            if verdict is Verdict.UNKNOWN:
+                assert [x.code for x in r.reasons] == ["VF208"], r.reasons
 
 
 @settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200)
