@@ -167,8 +167,7 @@ def test_the_fanuc_box_route_agrees(start, verdict):
 
 
 #: the wall and a clamp on the inner side of the corner before the turn about (62, 20) (the turn's box is clear)
-NW = machine_text("xyz_spiral_wall", extra=box_zone("nw", {"X": "50", "Y": "20.05"}, {"X": "59.95", "Y": "21"},
-                                                    forbid=True))
+_NW = box_zone("nw", {"X": "50", "Y": "20.05"}, {"X": "59.95", "Y": "21"}, forbid=True)
 
 
 @pytest.mark.parametrize("dialect, repeat", [("linuxcnc", 1), ("fanuc", 1), ("linuxcnc", 150)])
@@ -179,7 +178,7 @@ def test_a_rounded_corner_before_the_turn_is_the_circle_s(dialect, repeat):
     reach the clamp on the corner's inner side).  Past 512 motions (``repeat`` 150: the column screen proved
     the turn's box before this change) LinuxCNC's was ``safe`` already.  ``arc_geom`` makes such an arc a whole
     turn now: the same verdict as the circle's, and ``safe`` with exact stops (G61)."""
-    machine = parse_machine(NW if dialect == "linuxcnc" else NW.replace("[machine]\n", '[machine]\ndialect = "fanuc"\n'))
+    machine = parse_machine(machine_text("xyz_spiral_wall", set={"machine.dialect": dialect}, extra=_NW))
     dot = "." if dialect == "fanuc" else ""
     for mode, verdict in (("G64", Verdict.UNKNOWN), ("G61", Verdict.SAFE)):
         for end in ("60.001", f"60{dot}"):
