@@ -6,7 +6,12 @@ A *lane* is a way a program's blocks become motion (docs/design.md §9, §10 "Ho
 - ``plain``: its plain-move lane (``Interpreter._lean``/``_plain``): G0/G1 with axis words, F, S and one
   spindle or coolant M code;
 - ``fastpath``: the vectorized fast path (:mod:`nczones.gcode.fastpath`), runs of simple lines;
-- ``doubles``: the double pass (:mod:`nczones.gcode.linuxcnc.doubles`), LinuxCNC programs with ``#``.
+- ``doubles``: the double pass (:mod:`nczones.gcode.linuxcnc.doubles`), LinuxCNC programs with ``#``;
+- Fanuc only, on the numpy-free box route (:mod:`nczones.prover.fanucboxes`): ``boxes``, the plain lane when
+  its sink is a ``columns.BoxSink`` (``FanucInterpreter.lane`` and ``_arc_lane``: it writes arcs into the
+  run's box too, which with segments or column rows it hands on), and ``boxrun``, the box route's run reader
+  (:mod:`nczones.gcode.fanuc.boxrun`, plain lines read from the text).  The Fanuc ``plain`` column is the
+  plain lane with any other sink (segments, ``columns.Rows``).
 
 Each code's row says, per lane, :data:`CLAIMS` (the lane computes it, and must agree with the full
 interpreter) or a decline reason (the lane hands the block or the program to the full path, or the full
@@ -26,11 +31,14 @@ from ..precompiled import dataclass  # dataclasses.dataclass, its methods precom
 
 __all__ = ["CLAIMS", "LANES", "Code", "LINUXCNC_G", "LINUXCNC_M", "FANUC_G", "gname", "g_key",
            "claimed", "decline_reason", "modal_groups", "LANE_INTERPRETER", "LANE_PLAIN", "LANE_FASTPATH",
-           "LANE_DOUBLES", "LATHE_REASON", "FANUC_CYCLE_G", "FANUC_CANCEL_CYCLE_G", "LaneCodes"]
+           "LANE_DOUBLES", "LANE_BOXES", "LANE_BOXRUN", "LATHE_REASON", "FANUC_CYCLE_G",
+           "FANUC_CANCEL_CYCLE_G", "LaneCodes"]
 
 #: The lanes' names.
 LANE_INTERPRETER, LANE_PLAIN, LANE_FASTPATH, LANE_DOUBLES = "full", "plain", "fastpath", "doubles"
-LANES = (LANE_INTERPRETER, LANE_PLAIN, LANE_FASTPATH, LANE_DOUBLES)
+#: The Fanuc box route's lanes: the plain lane into a ``columns.BoxSink``, the run reader (``boxrun``).
+LANE_BOXES, LANE_BOXRUN = "boxes", "boxrun"
+LANES = (LANE_INTERPRETER, LANE_PLAIN, LANE_FASTPATH, LANE_DOUBLES, LANE_BOXES, LANE_BOXRUN)
 #: A lane's entry for a code it computes.
 CLAIMS = ""
 
@@ -141,13 +149,36 @@ LINUXCNC_M: dict[int, Code] = _linuxcnc_m()
 # Fanuc (milling, system A-C share these): the canned cycles and the codes that cancel one.
 FANUC_CYCLE_G: frozenset[int | Fraction] = frozenset((73, 74, 76, 81, 82, 83, 84, 85, 86, 87, 88, 89, Fraction("84.2"), Fraction("84.3")))
 FANUC_CANCEL_CYCLE_G: frozenset[int | Fraction] = frozenset((0, 1, 2, 3, 80))
-#: Fanuc G codes (by 10 * number) this table names: the cycles (group 9) and motion group 1.
+#: The Fanuc codes the plain lane claims (``FanucInterpreter.lane``, ``Interpreter._lean``: G0, G1), the plain lane
+#: into a box (``FanucInterpreter._arc_lane`` too) and the box run reader (``boxrun._G``): G0-G3; the fast path.
+_FANUC_PLAIN_G = frozenset((0, 10))
+_FANUC_BOX_G = frozenset((0, 10, 20, 30))
+_FANUC_FAST_G = frozenset((0, 10, 20, 30))
+_FANUC_ARC_PLAIN = ("an arc: the plain lane writes it only into the box route's run box (the boxes column); with "
+                    "segments or column rows it hands the block to the full path")
+_BOXES_NO = "not a plain G0-G3 move: the plain lane hands the block to the full path"
+_BOXRUN_NO = "not G0-G3: the box run reader ends its run there, the language layer reads the line"
+_FANUC_DBL = "the double pass runs LinuxCNC only"
+#: The Fanuc codes of this table the full path answers ``unknown`` for (its messages: ``fanuc.interpreter.UNKNOWN_G``).
+_FANUC_UNKNOWN_G = frozenset((870, 880))
+
+
+def _fanuc_row(key: int, group: int) -> Code:
+    """The row of a Fanuc G code: what each lane does with it (every lane of :data:`LANES`)."""
+    return Code(key, group, {
+        LANE_INTERPRETER: _UNSUPPORTED + "see fanuc.interpreter.UNKNOWN_G" if key in _FANUC_UNKNOWN_G else CLAIMS,
+        LANE_PLAIN: CLAIMS if key in _FANUC_PLAIN_G else _FANUC_ARC_PLAIN if key in _FANUC_BOX_G else _PLAIN_NO,
+        LANE_FASTPATH: CLAIMS if key in _FANUC_FAST_G else _FAST_NO,
+        LANE_DOUBLES: _FANUC_DBL,
+        LANE_BOXES: CLAIMS if key in _FANUC_BOX_G else _BOXES_NO,
+        LANE_BOXRUN: CLAIMS if key in _FANUC_BOX_G else _BOXRUN_NO,
+    })
+
+
+#: Fanuc G codes (by 10 * number) this table names: the cycles (group 9) and motion group 1 (G80: group 9).
 FANUC_G: dict[int, Code] = {
-    **{int(g * 10): _row(int(g * 10), 9, fast=_FAST_NO, doubles="the double pass runs LinuxCNC only")
-       for g in FANUC_CYCLE_G},
-    **{int(g * 10): _row(int(g * 10), 1 if g != 80 else 9, plain="the Fanuc interpreter has no plain lane",
-                         fast=CLAIMS if g != 80 else _FAST_NO, doubles="the double pass runs LinuxCNC only")
-       for g in FANUC_CANCEL_CYCLE_G},
+    **{int(g * 10): _fanuc_row(int(g * 10), 9) for g in FANUC_CYCLE_G},
+    **{int(g * 10): _fanuc_row(int(g * 10), 1 if g != 80 else 9) for g in FANUC_CANCEL_CYCLE_G},
 }
 
 

@@ -370,6 +370,8 @@ def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions
         result = replace(result, verdict=Verdict.UNKNOWN, reasons=reasons)
     profile.motions += run.counts["segments"]
     profile.blocks = max(profile.blocks, run.counts["blocks"])
+    for label, kind in (result.profile or {}).get("kinds", {}).items():  # by motion kind, as the full path counts
+        profile.kinds.setdefault(label, [0, 0.0])[0] += kind["motions"]
     if progress is not None:  # done at once: the bar's last step
         total = _line_count(source.text) or None
         bar: Any = progress
@@ -786,6 +788,9 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
     if spindle is not None:  # the tool the program put in the spindle against the assembly the solids take
         stream = spindle.watch(stream)
     result = prove(stream, machine, options, file=run.file, profile=profile)
+    # the blocks executed (the proof counts those up to the last motion's), as the box route and the double pass
+    # count them
+    profile.blocks = max(profile.blocks, run.counts["blocks"])
     if not result.interrupted:
         upto = max(v.block for v in result.violations) if result.truncated and result.violations else None
         result = replace(result, reasons=result.reasons + tuple(corners.finish((v.block for v in result.violations),

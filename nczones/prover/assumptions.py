@@ -34,7 +34,9 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "between two increments makes the verdict unknown).",
     "The machine moves along the programmed path: straight lines, exact circles (spirals for arcs whose "
     "end is off the circle within the tolerance; a Grbl control, arc_tolerance = \"grbl\", moves such an "
-    "arc on its start radius and then straight to the end point, at most 0.005 mm from that spiral), "
+    "arc on its start radius and then straight to the end point, at most 0.005 mm from that spiral; an I/J "
+    "arc whose end lies on the ray from the centre through its start, where LinuxCNC moves a whole spiral "
+    "turn, stays within the larger of its two radii from the centre in its plane), "
     "exact NURBS, rapids straight or dogleg as the machine file says, except where its path mode rounds "
     "corners and, on a Fanuc control, inside an arc or a polar move (acc/dec after interpolation: anywhere "
     "in its convex hull, in every path mode); no following error or overshoot.",

@@ -55,10 +55,12 @@ from .geometry import (
     half_tan,
     in_sweep,
     line_pieces,
+    on_start_ray,
     pi_bounds,
     rational_point_on_arc,
     simple_in,
     sqrt_bounds,
+    whole_turn_box,
 )
 from .result import Outcome, ParamRange, Reason, Result, Verdict, Violation, reason_code
 from .smt import REFERENCE_AXIS, Solver, add, mul, or_all, q, sub, zone_violation
@@ -441,20 +443,42 @@ class Prover:
 
     def decide_point_path(self, seg: Segment) -> Outcome:
         """Lines, rapids, dwells and circular arcs: the exact tiers, then Z3 (with parameter ranges)."""
-        if seg.kind is SegmentKind.ARC and seg.centre is not None and not seg.turns:
-            ia, ib, _ = seg.plane_indices()
-            u = (seg.start[ia] - seg.centre[0], seg.start[ib] - seg.centre[1])
-            w = (seg.end[ia] - seg.centre[0], seg.end[ib] - seg.centre[1])
-            if u != w and u[0] * w[1] - u[1] * w[0] == 0 and u[0] * w[0] + u[1] * w[1] > 0:
-                # LinuxCNC (posemath pmCircleInit) sweeps a whole turn when the end lies on the start's ray
-                # from the centre: a spiral lap that the sweep from start to end (none) does not hold
-                return Outcome(reason=Reason("arc whose end lies on the ray from the centre through its start "
-                                              "(a different radius within the arc tolerance): LinuxCNC moves a "
-                                              "whole spiral turn, which is not modelled", seg.span, seg.block),
-                               engine="unknown")
+        if seg.kind is SegmentKind.ARC and on_start_ray(seg):
+            return self._decide_whole_turn(seg)
         if self.param_relevant(seg):
             return self.check_with_params(seg)
         return self.check_concrete(seg, ())
+
+    def _decide_whole_turn(self, seg: Segment) -> Outcome:
+        """An I/J arc whose end lies on the ray from the centre through its start: proved by its whole turn's box.
+
+        LinuxCNC (posemath ``pmCircleInit``) sweeps a whole turn there, a spiral from the start radius to the end
+        radius (they differ within the arc tolerance), which no tier models point by point.  Soundness: every
+        point of that turn is within the larger radius of the centre and the other axes move linearly from start
+        to end, so :func:`~nczones.prover.geometry.whole_turn_box` holds the path (and the path of every other
+        reading of such an arc, its docstring says why); when that box fits every zone (margin and tool length
+        as :func:`~nczones.prover.exact.box_fits` applies them, tip zones already shifted by :meth:`_check`) the
+        motion is proved.  Otherwise, with parameter ranges (the ends move, and with them the ray's condition),
+        or with ``engine="z3"`` (no solver encoding of the turn) the arc stays ``unknown``: no witness is
+        reported, since the spiral's points are not modelled exactly.  The column screen
+        (:func:`nczones.prover.screen.screen_chunk`) boxes such an arc by a larger box (the whole circle grown
+        by twice the radii's difference), so it never proves one this path would not.
+        """
+        if self.engine != "auto":
+            why = "the solver has no encoding of it (engine z3)"
+        elif self.param_relevant(seg):
+            why = "its ends move with the parameter ranges"
+        else:
+            lo, hi = whole_turn_box(seg)
+            if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin,
+                        seg.tool_length):
+                self.stats["screened"] += 1
+                return Outcome(engine="exact")
+            why = "its box (the centre +- the larger radius) does not fit"
+        return Outcome(reason=Reason("arc whose end lies on the ray from the centre through its start (a "
+                                      "different radius within the arc tolerance): LinuxCNC moves a whole spiral "
+                                      f"turn, which is not modelled beyond its box, and {why}", seg.span,
+                                      seg.block), engine="unknown")
 
     def check_with_params(self, seg: Segment) -> Outcome:
         self.stats["z3_segments"] += 1
@@ -645,6 +669,8 @@ class Prover:
 
     def check_concrete(self, seg: Segment, params: Params) -> Outcome:
         if seg.kind is SegmentKind.ARC:
+            if on_start_ray(seg):  # (a segment instantiated at a parameter combination, too)
+                return self._decide_whole_turn(seg)
             return self._check_arc(seg, params)
         pieces = line_pieces(seg, self.machine)
         self.stats["pieces"] += len(pieces)

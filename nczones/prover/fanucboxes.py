@@ -19,7 +19,9 @@ Why a fitting box proves the program ``safe`` (the same model as the full path, 
   ``ArcGeom.plane_bbox`` (the exact extremes of an arc with a rational centre; for an R-format arc, whose centre
   may be irrational, its ends and the extremes of the circle (outward rational bounds of the centre and radius)
   in every axis direction its sweep may reach for a centre in the enclosure) and the box of its ends on the
-  other axes;
+  other axes; an I/J arc whose end lies on the ray from the centre through its start (a whole spiral turn on
+  LinuxCNC) in ``geometry.whole_turn_box`` (the centre +- the larger radius), the box the per-motion proof
+  proves it by (``Prover._decide_whole_turn``);
 * an arc the lane writes into a run's box (``FanucInterpreter._arc_lane``, ``BoxRows.add_arc``: a G2/G3 block
   with R, or I/J/K whose ends are at one distance from the centre, in the state the straight lane takes; issue
   36, for plain programs of 512 lines and more) is boxed the same way in scaled integers:
@@ -132,18 +134,12 @@ class BoxWalk:
         if kind is _LINE or kind is _RAPID or kind is _DWELL:
             lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
         elif kind is _ARC:
-            from .geometry import arc_geom
+            from .geometry import on_start_ray, whole_turn_box
 
-            if seg.centre is not None and not seg.turns and _on_start_ray(seg):
-                raise _Declined  # the per-motion proof gives this arc a reason (a whole spiral turn): its path
-            try:
-                g = arc_geom(seg)
-                (xl, xh), (yl, yh) = g.plane_bbox(sweep=True)
-            except (InvalidArgument, ValueError, ZeroDivisionError):
-                raise _Declined from None  # an arc the per-motion proof refuses (or decides otherwise)
-            lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
-            lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = min(xl, lo[g.ia]), max(xh, hi[g.ia]), min(yl, lo[g.ib]), \
-                max(yh, hi[g.ib])
+            if on_start_ray(seg):  # a whole spiral turn: the per-motion proof's box of it (Prover._decide_whole_turn)
+                lo, hi = map(list, whole_turn_box(seg))
+            else:
+                lo, hi = _arc_box(seg)
         else:
             raise _Declined
         blo, bhi = self.lo, self.hi
@@ -166,15 +162,32 @@ class BoxWalk:
         return self.tls
 
 
-def _on_start_ray(seg: Segment) -> bool:
-    """Does the arc's end lie on the ray from its centre through its start (another point of it)?  The per-motion
-    proof leaves such an arc ``unknown`` (LinuxCNC sweeps a whole spiral turn there): so does this route."""
-    ia, ib, _ = seg.plane_indices()
-    c = seg.centre
-    assert c is not None
-    u = (seg.start[ia] - c[0], seg.start[ib] - c[1])
-    w = (seg.end[ia] - c[0], seg.end[ib] - c[1])
-    return u != w and u[0] * w[1] - u[1] * w[0] == 0 and u[0] * w[0] + u[1] * w[1] > 0
+def _arc_box(seg: Segment) -> tuple[list[Fraction], list[Fraction]]:
+    """The corners (by axis index) of the box of an arc's path (its plane's extremes in its sweep), or
+    :class:`_Declined` for an arc the per-motion proof refuses or decides otherwise."""
+    from .geometry import arc_geom
+
+    try:
+        g = arc_geom(seg)
+        (xl, xh), (yl, yh) = g.plane_bbox(sweep=True)
+    except (InvalidArgument, ValueError, ZeroDivisionError):
+        raise _Declined from None
+    lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+    lo[g.ia], hi[g.ia], lo[g.ib], hi[g.ib] = min(xl, lo[g.ia]), max(xh, hi[g.ia]), min(yl, lo[g.ib]), \
+        max(yh, hi[g.ib])
+    return lo, hi
+
+
+#: the profile's labels of the interpretation's motion counts (``Interpretation.counts``: by ``SegmentKind``)
+_KIND_LABELS = frozenset(k.name.lower() for k in SegmentKind)
+
+
+def _kinds(counts: dict[str, int]) -> dict[str, dict[str, Any]]:
+    """The profile's motions by kind (``RunProfile.as_dict``), none decided one by one: the interpretation's counts
+    by motion kind, a helix counted among the arcs (as the vectorized screen counts its rows; the per-motion proof
+    labels a helix it decides ``helix``).  ``slowest`` stays empty: no motion is decided on its own here."""
+    return {k: {"motions": n, "seconds_one_by_one": 0.0} for k, n in sorted(counts.items())
+            if k in _KIND_LABELS and n}
 
 
 def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | None = None) -> Result | None:
@@ -220,7 +233,7 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
                "motions_screened_vectorized": 0, "fanuc_boxes": {"motions": n, "rows": walk.rows},
                "tiers": {"screen_vectorized_s": 0.0, "exact_per_motion_s": 0.0, "solver_s": 0.0,
                          "interpretation_and_rest_s": round(seconds, 6)},
-               "kinds": {}, "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
+               "kinds": _kinds(counts), "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
     notes = tuple(run.assumed_modal_text()) + tuple(run.notes())
     return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(),
                   timings=(("prove_s", seconds),), stats=stats, margin=margin, engine="auto",

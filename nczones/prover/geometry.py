@@ -51,6 +51,8 @@ __all__ = [
     "arc_bases",
     "half_tan",
     "angle_bounds",
+    "on_start_ray",
+    "whole_turn_box",
 ]
 
 F0 = Fraction(0)
@@ -276,7 +278,9 @@ class ArcGeom:
     ``centre`` is rational or None (R-format with an irrational centre; then
     ``r_signed`` is the programmed R and the centre is on the side fixed by
     DESIGN/motion.py).  ``full`` is a whole turn (``start == end`` in the plane
-    or ``turns > 0``).  ``r2_lo``/``r2_hi`` are the squared radii at start and
+    or ``turns > 0``, or an I/J arc whose end lies on the ray from the centre
+    through its start: LinuxCNC's whole spiral turn, :func:`on_start_ray`; every
+    box made of it then holds the whole turn).  ``r2_lo``/``r2_hi`` are the squared radii at start and
     end (ordered); they differ for a slightly inconsistent I/J arc, whose path
     is then enclosed in the annulus sector (a spiral, as LinuxCNC moves it).
     """
@@ -385,7 +389,7 @@ def arc_geom(seg: Segment) -> ArcGeom:
     ia, ib, _ = seg.plane_indices()
     s = (seg.start[ia], seg.start[ib])
     e = (seg.end[ia], seg.end[ib])
-    full = s == e or seg.turns > 0
+    full = s == e or seg.turns > 0 or on_start_ray(seg)
     centre = seg.centre
     r_signed = None
     if centre is None:
@@ -413,6 +417,56 @@ def arc_geom(seg: Segment) -> ArcGeom:
         raise InvalidArgument("arc with zero radius")
     return ArcGeom(ia, ib, s, e, not seg.clockwise, full, centre, r_signed, min(u2, w2), max(u2, w2),
                    seg.start, seg.end)
+
+
+def on_start_ray(seg: Segment) -> bool:
+    """Does an arc with a rational centre end on the ray from the centre through its start (another point of it)?
+
+    LinuxCNC (posemath ``pmCircleInit``) then moves a whole turn, a spiral when the radii differ (within the arc
+    tolerance), where the exact sweep from start to end holds nothing: :func:`whole_turn_box` encloses that path.
+    An arc with laps (``turns``) or without a centre (R format) is not such an arc.
+
+    >>> from nczones.motion import Plane
+    >>> F = Fraction
+    >>> arc = Segment(SegmentKind.ARC, (F(1), F(0)), (F(2), F(0)), ("X", "Y"), plane=Plane.XY, centre=(F(0), F(0)))
+    >>> on_start_ray(arc), on_start_ray(Segment(SegmentKind.ARC, (F(1), F(0)), (F(-2), F(0)), ("X", "Y"),
+    ...                                         plane=Plane.XY, centre=(F(0), F(0))))
+    (True, False)
+    """
+    c = seg.centre
+    if c is None or seg.turns:
+        return False
+    ia, ib, _ = seg.plane_indices()
+    u = (seg.start[ia] - c[0], seg.start[ib] - c[1])
+    w = (seg.end[ia] - c[0], seg.end[ib] - c[1])
+    return u != w and _cross(u, w) == 0 and _dot(u, w) > 0
+
+
+def whole_turn_box(seg: Segment, bits: int = 64) -> tuple[tuple[Fraction, ...], tuple[Fraction, ...]]:
+    """Corners ``(lo, hi)`` (by axis index) of a box holding the whole spiral turn of an arc :func:`on_start_ray`.
+
+    In the plane: the centre +- an upper bound of the larger radius; on every other axis: its range from start to
+    end.  Sound for every way a control may move such an arc: LinuxCNC's spiral turn keeps its radius between the
+    start's and the end's (it moves linearly with the angle), a Grbl control moves on the start circle and then
+    straight to the end (a chord of the disc of the larger radius, which the box holds), a sweep of nothing would
+    be the straight move between two points of that disc; the other axes move linearly in every case.
+
+    >>> from nczones.motion import Plane
+    >>> F = Fraction
+    >>> arc = Segment(SegmentKind.ARC, (F(1), F(0), F(0)), (F(2), F(0), F(5)), ("X", "Y", "Z"), plane=Plane.XY,
+    ...               centre=(F(0), F(0)))
+    >>> whole_turn_box(arc)
+    ((Fraction(-2, 1), Fraction(-2, 1), Fraction(0, 1)), (Fraction(2, 1), Fraction(2, 1), Fraction(5, 1)))
+    """
+    c = seg.centre
+    assert c is not None  # an arc on its start's ray has a rational centre
+    ia, ib, _ = seg.plane_indices()
+    r2 = max((seg.start[ia] - c[0]) ** 2 + (seg.start[ib] - c[1]) ** 2,
+             (seg.end[ia] - c[0]) ** 2 + (seg.end[ib] - c[1]) ** 2)
+    r = sqrt_bounds(r2, bits)[1]
+    lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+    lo[ia], hi[ia], lo[ib], hi[ib] = c[0] - r, c[0] + r, c[1] - r, c[1] + r
+    return tuple(lo), tuple(hi)
 
 
 def rational_point_on_arc(g: ArcGeom, m: Fraction, base: tuple[Fraction, Fraction] | None = None) -> tuple[Fraction, Fraction]:

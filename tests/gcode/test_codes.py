@@ -1,4 +1,4 @@
-"""Every code of the LinuxCNC code table (nczones/gcode/codes.py) crossed with every lane.
+"""Every code of the LinuxCNC and the Fanuc code tables (nczones/gcode/codes.py) crossed with every lane.
 
 For each G and M code a tiny program uses it; each lane then either declines it as the table says or gives
 the full interpreter's motion:
@@ -11,6 +11,13 @@ the full interpreter's motion:
   it either declines for another reason or its end points equal the full interpreter's.
 
 A code the interpreter knows that is missing from the table, or a table code without a program here, fails.
+
+The Fanuc rows (``FANUC_G``) are crossed the same way with the Fanuc lanes: the plain lane
+(``FanucInterpreter.lane``, which hands what it does not take to ``Interpreter.lane``) with segments, the same
+lane on the box route (``boxes``: its sink a ``columns.BoxSink``, where it takes arcs too, ``_arc_lane``), the
+box route's run reader (``boxrun``: ``read_box_run``) and the fast path.  A claimed code's block is taken by the
+lane (the lane moved by it); a declined one is handed on (the lane did not take its block); and the result is
+the same with the lane on and off.
 """
 
 from __future__ import annotations
@@ -19,7 +26,19 @@ import pytest
 
 from nczones.errors import GcodeError
 from nczones.gcode import fastpath, interpret_text
-from nczones.gcode.codes import FANUC_G, LATHE_REASON, LINUXCNC_G, LINUXCNC_M, gname
+from nczones.gcode.codes import (
+    FANUC_G,
+    LANE_BOXES,
+    LANE_BOXRUN,
+    LANE_INTERPRETER,
+    LANE_PLAIN,
+    LATHE_REASON,
+    LINUXCNC_G,
+    LINUXCNC_M,
+    claimed,
+    decline_reason,
+    gname,
+)
 from nczones.gcode.fastpath import CODES as FAST_CODES
 from nczones.gcode.interpreter import GROUP_OF, PLAIN_CODES, Interpreter
 from nczones.gcode.linuxcnc.doubles import CODES as DOUBLES_CODES
@@ -166,7 +185,8 @@ def test_double_pass_claims_or_declines_each_code(case):
     assert len(rows) == len(ends) and rows == pytest.approx(ends, abs=1e-9)
 
 
-FANUC_BLOCKS = {730: "G73 X1. Y1. Z-1. R1. Q0.5", 740: "M4 S100\nG74 X1. Y1. Z-1. R1.",
+FANUC_BLOCKS = {730: "G73 X1. Y1. Z-1. R1. Q0.5", 830: "G83 X1. Y1. Z-1. R1. Q0.5",
+                740: "M4 S100\nG74 X1. Y1. Z-1. R1.",
                 760: "M3 S100\nG76 X1. Y1. Z-1. R1. Q0.1", 842: "M3 S100\nG84.2 X1. Y1. Z-1. R1. F1.",
                 843: "M4 S100\nG84.3 X1. Y1. Z-1. R1. F1.", 840: "M3 S100\nG84 X1. Y1. Z-1. R1.",
                 860: "M3 S100\nG86 X1. Y1. Z-1. R1.", 870: "G87 X1. Y1. Z-1. R1.",
@@ -200,3 +220,132 @@ def test_fanuc_fast_path_claims_or_declines_each_code(key):
         it = interpret_text(text, machine)
         list(it)
         assert it.fast_lines >= n - 1
+
+
+# -- Fanuc: the plain lane, on the box route too, and the box route's run reader ---------------------------
+
+#: the line of the code's block in :func:`_fanuc_text` (its last line when it has two)
+_FANUC_HEAD = "%\nO1000\nG17 G40 G49 G80 G90 G21 G54 G94 F100.\nG0 X0. Y0. Z0.\nG1 X0.5 Y0.5\n"
+
+
+def _fanuc_text(key: int) -> tuple[str, int]:
+    """A program with the code's block between straight moves, and the line of that block."""
+    block = FANUC_BLOCKS.get(key, f"{gname(key)} X1. Y1. Z-1. R1.")
+    text = _FANUC_HEAD + block + "\nG1 X2. Y2.\nM30\n%\n"
+    return text, _FANUC_HEAD.count("\n") + block.count("\n") + 1
+
+
+def _lane_spy(monkeypatch) -> list[tuple[int, int]]:
+    """``(line, motion mode after it)`` of every block ``FanucInterpreter.lane`` takes from now on."""
+    from nczones.gcode.fanuc.interpreter import FanucInterpreter
+
+    taken: list[tuple[int, int]] = []
+    real = FanucInterpreter.lane
+
+    def spy(self, letters, values, span, index):
+        got = real(self, letters, values, span, index)
+        if got:
+            taken.append((span.line, self.motion))
+        return got
+
+    monkeypatch.setattr(FanucInterpreter, "lane", spy)
+    return taken
+
+
+def _lane_off(monkeypatch) -> None:
+    from nczones.gcode.fanuc.interpreter import FanucInterpreter
+
+    monkeypatch.setattr(FanucInterpreter, "lane", lambda self, *args: 0)
+
+
+def _taken_as_claimed(table_lane: str, key: int, line: int, taken: list[tuple[int, int]]) -> None:
+    """The code's block was taken by the lane, by the code's motion, exactly when ``table_lane`` claims it."""
+    if decline_reason(FANUC_G, table_lane, key) is None:
+        assert (line, key) in taken, (gname(key), taken)
+    else:
+        assert line not in [t[0] for t in taken], decline_reason(FANUC_G, table_lane, key)
+
+
+@pytest.mark.parametrize("key", sorted(FANUC_G), ids=gname)
+def test_fanuc_plain_lane_claims_or_declines_each_code(key, monkeypatch):
+    """With segments (no box route): G0/G1 are the lane's, an arc and every other code are handed on."""
+    from tests.gcode.fanuc.helpers import mill
+
+    machine = mill()
+    text, line = _fanuc_text(key)
+
+    def run():
+        it = interpret_text(text, machine, fast=False)
+        try:
+            return [(s.kind, s.start, s.end, s.line) for s in it.segments()], [str(u) for u in it.unsupported]
+        except GcodeError as exc:
+            return ("error", exc.diagnostics[0].code), []
+
+    taken = _lane_spy(monkeypatch)
+    on = run()
+    assert taken, "the lane took no block at all: the crossing would be vacuous"
+    _taken_as_claimed(LANE_PLAIN, key, line, taken)
+    _lane_off(monkeypatch)
+    assert run() == on
+
+
+def _route_report(text: str, machine) -> tuple:
+    from nczones.prover import verify_text
+
+    try:
+        r = verify_text(text, machine, file="t.nc")
+    except GcodeError as exc:
+        return ("error", exc.diagnostics[0].code)
+    return (r.verdict.label, tuple(r.violations), tuple(r.reasons), tuple(r.notes), (r.extra or {}).get("counts"),
+            "fanuc_boxes" in dict(r.stats))
+
+
+@pytest.mark.parametrize("key", sorted(FANUC_G), ids=gname)
+def test_fanuc_box_route_lanes_claim_or_decline_each_code(key, monkeypatch):
+    """On the box route: the plain lane into a ``BoxSink`` (the reader off) takes G0-G3 and hands on the rest;
+    the run reader takes the lines of G0-G3 and ends its run at any other; the report is the same with each of
+    them on and off (and the route proves the program: the lanes were on the route)."""
+    from nczones.gcode.fanuc import boxrun
+    from tests.gcode.fanuc.helpers import mill
+
+    machine = mill()
+    text, line = _fanuc_text(key)
+    monkeypatch.setattr(boxrun, "BOX_RUNS", False)
+    taken = _lane_spy(monkeypatch)
+    lanes = _route_report(text, machine)
+    assert lanes[-1] is True, lanes
+    assert (lanes[0] == "unknown") is (decline_reason(FANUC_G, LANE_INTERPRETER, key) is not None), lanes
+    _taken_as_claimed(LANE_BOXES, key, line, taken)
+    with monkeypatch.context() as m:
+        _lane_off(m)
+        assert _route_report(text, machine) == lanes
+    read: list[int] = []
+    real = boxrun.read_box_run
+
+    def reader(runner, src, pos, lineno):
+        got = real(runner, src, pos, lineno)
+        if got is not None:
+            read.extend(range(lineno, got[1]))
+        return got
+
+    monkeypatch.setattr(boxrun, "BOX_RUNS", True)
+    monkeypatch.setattr(boxrun, "read_box_run", reader)
+    assert _route_report(text, machine) == lanes
+    assert read, "the reader took no line at all: the crossing would be vacuous"
+    assert (line in read) is (decline_reason(FANUC_G, LANE_BOXRUN, key) is None), (gname(key), read)
+
+
+def test_the_fanuc_full_column_is_the_interpreter_s():
+    """The codes the full column declines are the Fanuc interpreter's unknown codes (of this table's rows)."""
+    from nczones.gcode.fanuc.interpreter import UNKNOWN_G
+
+    assert set(FANUC_G) - claimed(FANUC_G, LANE_INTERPRETER) == set(FANUC_G) & set(UNKNOWN_G)
+
+
+def test_the_box_run_reader_s_codes_are_the_table_s():
+    """The reader's G table (its fixed words G0 .. G03) names the codes the boxrun column claims, and the box
+    lane's (``_arc_lane`` G2/G3 and ``lane`` G0/G1) are the same codes."""
+    from nczones.gcode.fanuc import boxrun
+
+    assert frozenset(boxrun._G.values()) == claimed(FANUC_G, LANE_BOXRUN) == claimed(FANUC_G, LANE_BOXES)
+    assert claimed(FANUC_G, LANE_PLAIN) < claimed(FANUC_G, LANE_BOXES)

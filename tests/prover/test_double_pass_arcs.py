@@ -225,14 +225,15 @@ def test_the_arcs_of_the_pass_against_rs274(tmp_path, body):
 def test_an_end_on_the_starts_ray_is_the_full_paths(monkeypatch, variant):
     """Found by the hunt (G2 X0.0001 Y0 I-0.01 J0 from the origin: the end on the ray from the centre through the
     start, 0.0001 farther out, within the arc tolerance): LinuxCNC moves a whole spiral turn there, which the
-    full path answers ``unknown`` for; the pass proved its whole-turn box ``safe``.  It declines such an arc now,
+    full path answered ``unknown`` for; the pass proved its whole-turn box ``safe``.  It declines such an arc now,
     and still proves a whole turn whose block names no axis of the plane (a helix: the end is the start).
-    (Past 512 motions the fast path's column screen proves the spiral's whole-turn box: ``safe`` both ways.)"""
+    The full path proves the spiral's whole-turn box too now (codes36: ``Prover._decide_whole_turn``, as the fast
+    path's column screen did past 512 motions): ``safe`` both ways, in every variant."""
     machine = machine_of("box", 2, 0)
     spiral = _variants(["G1 X0 Y0", "G2 X0.0001 Y0 I-0.01 J0"])[variant]
     with_pass, without = both_ways(spiral, machine, monkeypatch)
     same_outcome(with_pass, without)
-    assert with_pass.verdict is (Verdict.SAFE if variant == "long" else Verdict.UNKNOWN)
+    assert with_pass.verdict is Verdict.SAFE
     assert "double_pass_boxes" not in dict(with_pass.stats)
     turn = _variants(["G1 X0 Y0 Z1", "G2 Z-0.5 I-0.01 J0"])[variant]
     with_pass, without = both_ways(turn, machine_of("box", 20, 0), monkeypatch)  # (room for corners next to arcs)

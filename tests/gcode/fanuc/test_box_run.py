@@ -17,10 +17,15 @@ three planes, helices, N numbers, F, CR LF ends, blank lines) with what it hands
 words, comments, dwell, lower case) in the middle of a run.  The test mill (tests/gcode/fanuc/helpers.py):
 G54 = (100, 50, -200); its zone here machine X -10..150, Y -10..90, Z -201..0 (program X -110..50, Y -60..40,
 Z -1..200); the generated programs run in a wide one (machine -2000..2000 on every axis), mostly ``safe``.
+
+The default run draws fixed examples (``derandomize``: the same programs every run, as the other differential
+tests here), :data:`EXAMPLES` for the lanes (``NCZONES_BOX_RUN_EXAMPLES``; above 200 the examples are drawn
+anew); the hunts under ``-m long`` draw new ones each run (``NCZONES_BOX_RUN_HUNT`` examples, default 300).
 """
 
 from __future__ import annotations
 
+import os
 from fractions import Fraction
 
 import pytest
@@ -35,6 +40,10 @@ from tests.gcode.fanuc.helpers import mill
 _TRAVEL = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
            'max = { X = "150", Y = "90", Z = "0" }\n')
 _MACHINE = mill(tables=_TRAVEL)
+#: examples of the default run (fixed when at most 200: the CI size) and of the long hunts (drawn anew)
+EXAMPLES = int(os.environ.get("NCZONES_BOX_RUN_EXAMPLES", "40"))
+HUNT = int(os.environ.get("NCZONES_BOX_RUN_HUNT", "300"))
+_FIXED = EXAMPLES <= 200
 #: a zone the generated programs mostly stay in (a program that leaves it costs a witness search on each side)
 _WIDE = mill(tables=_TRAVEL.replace('"-10"', '"-2000"').replace('"-201"', '"-2000"').replace('"150"', '"2000"')
              .replace('"90"', '"2000"').replace('Z = "0"', 'Z = "2000"'))
@@ -168,14 +177,16 @@ def _agree(text: str, machine=None) -> tuple[str, int]:
     return str(read[0]), taken
 
 
-@settings(max_examples=40, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=EXAMPLES, deadline=None, database=None, derandomize=_FIXED,
+          suppress_health_check=[HealthCheck.too_slow])
 @given(_programs())
 def test_the_reader_reads_as_the_lanes(program):
     text, _takes = program
     _agree(text, _WIDE)
 
 
-@settings(max_examples=10, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=max(3, EXAMPLES // 4), deadline=None, database=None, derandomize=_FIXED,
+          suppress_health_check=[HealthCheck.too_slow])
 @given(_programs())
 def test_the_reader_reads_as_the_fast_path(program):
     """A generated program after 520 straight moves (more than 512 lines: without the route the vectorized fast
@@ -227,7 +238,7 @@ def test_a_long_program_with_one_bulging_arc_is_not_safe(k):
 
 
 @pytest.mark.long
-@settings(max_examples=300, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=HUNT, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
 @given(_programs(120))
 def test_the_reader_reads_as_the_lanes_long(program):
     _agree(program[0], _WIDE)
@@ -301,12 +312,24 @@ def _final_state(text: str, runs: bool) -> tuple:
     return got[0] if got else ()
 
 
-@settings(max_examples=15, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=max(3, EXAMPLES * 3 // 8), deadline=None, database=None, derandomize=_FIXED,
+          suppress_health_check=[HealthCheck.too_slow])
 @given(_programs())
 def test_the_reader_hands_the_state_back_as_the_lanes_leave_it(program):
     """A program that ends on the reader's lines (no M30: the text ends): the position, motion, feed, counts,
     block index and span, the cycle's initial level and the runner's block index are the lanes' after it."""
-    text = program[0]
+    _state_handed_back(program[0])
+
+
+@pytest.mark.long
+@settings(max_examples=HUNT // 2, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_programs(60))
+def test_the_reader_hands_the_state_back_long(program):
+    """The hunt of the relation above: programs drawn anew, up to 60 motions."""
+    _state_handed_back(program[0])
+
+
+def _state_handed_back(text: str) -> None:
     text = text[:text.rindex("M30")]
     try:
         lanes = _final_state(text, False)
