@@ -18,13 +18,16 @@ from __future__ import annotations
 import _signal  # type: ignore[import-not-found]  # signal's functions, not the module's enums (issue 36)
 import argparse
 import sys
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
-from typing import Any, NoReturn
+from collections.abc import Sequence
 
 from . import __version__
 from .commands import COMMANDS, configurer
 from .commands.conventions import EXIT_INTERRUPTED, EXIT_TERMINATED, report_failure
+
+# typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, NoReturn
 
 __all__ = ["main", "run", "build_parser", "chosen_command", "sigterm_as_interrupt"]
 
@@ -37,27 +40,34 @@ def _on_sigterm(signum: int, frame: Any) -> None:
     raise KeyboardInterrupt
 
 
-@contextmanager
-def sigterm_as_interrupt() -> Iterator[None]:
-    """While a command runs, SIGTERM stops it the way Ctrl-C does (only in the main thread, and only when
-    SIGTERM has its default disposition: an embedding program's own handler is left alone).
+class sigterm_as_interrupt:  # a function's name: it was a contextlib.contextmanager
+    """While a command runs (``with sigterm_as_interrupt():``), SIGTERM stops it the way Ctrl-C does (only in the
+    main thread, and only when SIGTERM has its default disposition: an embedding program's own handler is left
+    alone).
 
     ``_signal`` is :mod:`signal` without its enums (``getsignal`` gives the integer ``SIG_DFL``); its
-    ``signal`` refuses (ValueError) outside the main thread, which is how that is told without :mod:`threading`."""
-    _terminated[0] = False
-    current = _signal.getsignal(_signal.SIGTERM)
-    if not (isinstance(current, int) and current == _signal.SIG_DFL):
-        yield
-        return
-    try:
-        previous = _signal.signal(_signal.SIGTERM, _on_sigterm)
-    except ValueError:  # not the main thread (of the main interpreter)
-        yield
-        return
-    try:
-        yield
-    finally:
-        _signal.signal(_signal.SIGTERM, previous)
+    ``signal`` refuses (ValueError) outside the main thread, which is how that is told without :mod:`threading`.
+    A class rather than a :func:`contextlib.contextmanager`: ``nczones --help`` imports neither :mod:`contextlib`
+    nor :mod:`typing` (issue 36; a command that reads a machine file has both from :mod:`tomllib`)."""
+
+    __slots__ = ("_previous", "_installed")
+
+    def __enter__(self) -> None:
+        _terminated[0] = False
+        self._installed = False
+        current = _signal.getsignal(_signal.SIGTERM)
+        if not (isinstance(current, int) and current == _signal.SIG_DFL):
+            return
+        try:
+            self._previous = _signal.signal(_signal.SIGTERM, _on_sigterm)
+        except ValueError:  # not the main thread (of the main interpreter)
+            return
+        self._installed = True
+
+    def __exit__(self, *exc: object) -> None:
+        if self._installed:
+            _signal.signal(_signal.SIGTERM, self._previous)
+
 
 class _Formatter(argparse.HelpFormatter):
     """argparse's help formatter, as wide as ``shutil.get_terminal_size`` says (``$COLUMNS``, else the

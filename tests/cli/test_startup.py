@@ -105,6 +105,18 @@ def test_a_small_verify_loads_no_pathlib(tmp_path):
     assert r.stdout.splitlines()[-1] == "[]"
 
 
+def test_help_loads_neither_typing_nor_contextlib():
+    # issue 36 (startup36e): the command line's own modules take TYPE_CHECKING as a local False and SIGTERM's
+    # block is a class; started without site (a development environment's editable-install hook imports
+    # contextlib), as in the test above
+    code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
+            "try:\n    main(['--help'])\nexcept SystemExit as e:\n    assert e.code == 0\n"
+            "print(sorted(m for m in ('typing', 'contextlib') if m in sys.modules))")
+    r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[]"
+
+
 def _run_program(tmp_path, lines: list[str]) -> dict:
     """``nczones.cli.run`` (the console script) on a program: whether ctypes and numpy were loaded, the hook left."""
     program = tmp_path / "run.ngc"
@@ -286,3 +298,4 @@ def test_a_small_verify_with_a_text_report_loads_no_json(tmp_path):
         r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
         assert r.returncode == 0, r.stderr
         assert r.stdout.splitlines()[-1] == str(loaded), fmt
+
