@@ -94,12 +94,13 @@ def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_pat
 def test_a_small_verify_loads_no_pathlib(tmp_path):
     # pathlib (with urllib.parse and ipaddress, ~3 ms): a development environment's site
     # imports pathlib for its editable-install hook, so the interpreter starts without site here, as an
-    # installed wheel's would not need it
+    # installed wheel's would not need it; the hook imports importlib.util too, which a small verify does not
+    # (issue 36, startup36e: the solver's wheel is found through sys.meta_path)
     program = tmp_path / "small.ngc"
     program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
     code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
             f"assert main(['verify', {str(program)!r}, '--machine', {MILL!r}]) == 0\n"
-            "print(sorted(m for m in ('pathlib', 'urllib.parse', 'ipaddress') if m in sys.modules))")
+            "print(sorted(m for m in ('pathlib', 'urllib.parse', 'ipaddress', 'importlib.util') if m in sys.modules))")
     r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr
     assert r.stdout.splitlines()[-1] == "[]"
