@@ -18,7 +18,7 @@ from __future__ import annotations
 import _signal  # type: ignore[import-not-found]  # signal's functions, not the module's enums (issue 36)
 import argparse
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from . import __version__
 from .commands import COMMANDS, configurer
@@ -144,14 +144,59 @@ def main(argv: Sequence[str] | None = None) -> int:
     _one_blas_thread()
     command = chosen_command(arguments)
     # `nczones COMMAND ...`: only that command's parser is made (what an error or --help shows is its own)
-    parser = build_parser(command, alone=bool(arguments) and arguments[0] == command and command in COMMANDS)
-    args = parser.parse_args(arguments)
+    restore = _untranslated_argparse()
+    try:
+        parser = build_parser(command, alone=bool(arguments) and arguments[0] == command and command in COMMANDS)
+        args = parser.parse_args(arguments)
+    finally:
+        restore()
     with sigterm_as_interrupt():
         code = _run_handler(args)
     if _terminated[0] and code == EXIT_INTERRUPTED:
         print("nczones: stopped by SIGTERM (as by Ctrl-C: the report above is partial)", file=sys.stderr)
         return EXIT_TERMINATED
     return code
+
+
+def _untranslated_argparse() -> Callable[[], None]:
+    """While the command line is parsed, argparse's messages are given as gettext would give them where it can
+    find no catalogue, without asking gettext: the function that gives gettext's functions back to argparse.
+
+    argparse passes each of its messages (a parser's group titles, its help, its errors) through
+    :func:`gettext.gettext` (or :func:`gettext.ngettext`), which looks for a catalogue of the current domain,
+    ``<localedir>/<language>/LC_MESSAGES/<domain>.mo``, at every call, and imports :mod:`locale` to list the
+    languages (together some 2 ms of a small verify, issue 36).  Where ``localedir`` (the domain's bound folder,
+    else gettext's default, ``sys.base_prefix/share/locale``) is no folder, no catalogue exists and gettext
+    gives the message itself (``ngettext``: the singular when ``n == 1``, else the plural): so do the stand-ins.
+    Anywhere else (a folder of catalogues, a bound domain, argparse's functions not gettext's) nothing changes.
+    """
+    import gettext
+    import os
+
+    ns, g = vars(argparse), vars(gettext)
+    folder = g["_localedirs"].get(g["_current_domain"]) or g["_default_localedir"]
+    if ns.get("_") is not gettext.gettext or ns.get("ngettext") is not gettext.ngettext or os.path.isdir(folder):
+        return _nothing
+    ns["_"], ns["ngettext"] = _same_message, _same_plural
+
+    def restore() -> None:
+        ns["_"], ns["ngettext"] = gettext.gettext, gettext.ngettext
+
+    return restore
+
+
+def _nothing() -> None:
+    return None
+
+
+def _same_message(message: str) -> str:
+    """:func:`gettext.gettext` where no catalogue exists."""
+    return message
+
+
+def _same_plural(singular: str, plural: str, n: int) -> str:
+    """:func:`gettext.ngettext` where no catalogue exists."""
+    return singular if n == 1 else plural
 
 
 def _run_handler(args: argparse.Namespace) -> int:
