@@ -542,12 +542,18 @@ def _cmp_fn(name: str, op: str, fields: list[_Field], globals: dict[str, Any]) -
                                                  "return NotImplemented"], globals=globals)
 
 
-def _set_new_attribute(cls: type, name: str, value: Any) -> None:
-    if name in cls.__dict__:
+def _set_new_attribute(cls: type, name: str, value: Any, into: dict[str, Any] | None = None) -> None:
+    """``dataclasses._set_new_attribute``; ``into``: the namespace of the class :func:`_add_slots` makes of
+    ``cls`` (then set there: ``cls`` itself is left as it was)."""
+    own = cls.__dict__ if into is None else into
+    if name in own:
         return
     if isinstance(value, types.FunctionType):
         value.__qualname__ = f"{cls.__qualname__}.{value.__name__}"
-    setattr(cls, name, value)
+    if into is None:
+        setattr(cls, name, value)
+    else:
+        into[name] = value
 
 
 #: ``dataclasses._hash_action`` by (unsafe_hash, eq, frozen, explicit __hash__): "add", "none" or None (nothing);
@@ -583,8 +589,10 @@ def _checked(cls: type, options: dict[str, Any], fields: dict[str, _Field]) -> b
     return True
 
 
-def _methods(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any]) -> None:  # noqa: A002
-    """Set the methods ``dataclasses._process_class`` sets, in its order."""
+def _methods(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any],  # noqa: A002
+             into: dict[str, Any] | None = None) -> None:
+    """Set the methods ``dataclasses._process_class`` sets, in its order (``into``: see
+    :func:`_set_new_attribute`)."""
     o = options
     field_list = [f for f in fields.values() if f.kind is _FIELD]
     if o["init"]:
@@ -592,18 +600,18 @@ def _methods(cls: type, options: dict[str, Any], fields: dict[str, _Field], glob
         kw = [f for f in field_list if f.init and f.kw_only]
         _set_new_attribute(cls, "__init__", _init_fn(
             field_list, std, kw, o["frozen"], hasattr(cls, "__post_init__"),
-            "__dataclass_self__" if "self" in fields else "self", globals, o["slots"]))
+            "__dataclass_self__" if "self" in fields else "self", globals, o["slots"]), into)
     if o["repr"]:
         shown = ", ".join([f"{f.name}={{self.{f.name}!r}}" for f in field_list if f.repr])
         fn = _create_fn("__repr__", ["self"], ['return self.__class__.__qualname__ + f"(' + shown + ')"'],
                         globals=globals)
-        _set_new_attribute(cls, "__repr__", _recursive_repr(fn))
+        _set_new_attribute(cls, "__repr__", _recursive_repr(fn), into)
     compared = [f for f in field_list if f.compare]
     if o["eq"]:
-        _set_new_attribute(cls, "__eq__", _cmp_fn("__eq__", "==", compared, globals))
+        _set_new_attribute(cls, "__eq__", _cmp_fn("__eq__", "==", compared, globals), into)
     if o["order"]:
         for name, op in (("__lt__", "<"), ("__le__", "<="), ("__gt__", ">"), ("__ge__", ">=")):
-            _set_new_attribute(cls, name, _cmp_fn(name, op, compared, globals))
+            _set_new_attribute(cls, name, _cmp_fn(name, op, compared, globals), into)
     if o["frozen"]:
         names = "(" + ",".join([repr(f.name) for f in field_list]) + ",)" if field_list else "()"
         locals = {"cls": cls, "FrozenInstanceError": _frozen_error}  # noqa: A001
@@ -612,21 +620,31 @@ def _methods(cls: type, options: dict[str, Any], fields: dict[str, _Field], glob
             _set_new_attribute(cls, name, _create_fn(name, args, [
                 f"if type(self) is cls or name in {names}:",
                 f' raise FrozenInstanceError(f"cannot {verb} field {{name!r}}")',
-                f"super(cls, self).{name}({tail})"], locals=dict(locals), globals=globals))
+                f"super(cls, self).{name}({tail})"], locals=dict(locals), globals=globals), into)
 
 
-def _hash(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any]) -> None:  # noqa: A002
-    own = cls.__dict__
+def _hash(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any],  # noqa: A002
+          into: dict[str, Any] | None = None) -> None:
+    """``dataclasses``' hash action (``into``: see :func:`_set_new_attribute`)."""
+    own = cls.__dict__ if into is None else into
     class_hash = own.get("__hash__", MISSING)
     explicit = not (class_hash is MISSING or (class_hash is None and "__eq__" in own))
     action = _HASH_ACTION.get((bool(options["unsafe_hash"]), bool(options["eq"]), bool(options["frozen"]), explicit))
     if action == "none":
-        cls.__hash__ = None  # type: ignore[assignment]
+        _set(cls, "__hash__", None, into)
     elif action == "add":
         hashed = [f for f in fields.values() if f.kind is _FIELD and (f.compare if f.hash is None else f.hash)]
         fn = _create_fn("__hash__", ["self"], [f"return hash({_tuple_str('self', hashed)})"], globals=globals)
         fn.__qualname__ = f"{cls.__qualname__}.{fn.__name__}"
-        cls.__hash__ = fn  # type: ignore[method-assign]
+        _set(cls, "__hash__", fn, into)
+
+
+def _set(cls: type, name: str, value: Any, into: dict[str, Any] | None) -> None:
+    """``setattr(cls, name, value)``, or into the namespace ``into`` (see :func:`_set_new_attribute`)."""
+    if into is None:
+        setattr(cls, name, value)
+    else:
+        into[name] = value
 
 
 def _get_slots(cls: type) -> Any:
@@ -640,9 +658,11 @@ def _get_slots(cls: type) -> Any:
     raise TypeError(f"Slots of '{cls.__name__}' cannot be determined")
 
 
-def _add_slots(cls: type, is_frozen: bool, weakref_slot: bool, field_names: tuple[str, ...]) -> type:
-    """``dataclasses._add_slots``: the class made again with ``__slots__``."""
-    cls_dict = dict(cls.__dict__)
+def _add_slots(cls: type, is_frozen: bool, weakref_slot: bool, field_names: tuple[str, ...],
+               cls_dict: dict[str, Any]) -> type:
+    """``dataclasses._add_slots``: the class made again with ``__slots__``, from ``cls_dict``: ``cls``'s
+    namespace as ``dataclasses`` leaves it (the methods set in it rather than on ``cls``: setting a dunder on a
+    class updates its type slots, some 3,000 instructions each, for a class about to be discarded)."""
     inherited_slots = set(itertools.chain.from_iterable(map(_get_slots, cls.__mro__[1:-1])))
     cls_dict["__slots__"] = tuple(itertools.filterfalse(
         inherited_slots.__contains__, itertools.chain(field_names, ("__weakref__",) if weakref_slot else ())))
@@ -680,17 +700,20 @@ def _process_class(cls: type, options: dict[str, Any]) -> type | None:
                 delattr(cls, name)
             else:
                 setattr(cls, name, f.default)
-    cls.__dataclass_fields__ = _Lazy("__dataclass_fields__", _fields_of)  # type: ignore[attr-defined]
+    # a slotted class is made again from its namespace (_add_slots): what follows is set there, not on cls
+    into = dict(cls.__dict__) if options["slots"] else None
+    _set(cls, "__dataclass_fields__", _Lazy("__dataclass_fields__", _fields_of), into)
     spec = _Spec(fields, params)
-    _methods(cls, options, fields, globals)
-    _hash(cls, options, fields, globals)
+    _methods(cls, options, fields, globals, into)
+    _hash(cls, options, fields, globals, into)
     if not cls.__doc__:
-        cls.__doc__ = _Lazy("__doc__", _doc_of)  # type: ignore[assignment]
+        _set(cls, "__doc__", _Lazy("__doc__", _doc_of), into)
     if options["match_args"]:
         _set_new_attribute(cls, "__match_args__",
-                           tuple([f.name for f in fields.values() if f.kind is _FIELD and f.init and not f.kw_only]))
-    if options["slots"]:
-        cls = _add_slots(cls, options["frozen"], options["weakref_slot"], spec.names)
+                           tuple([f.name for f in fields.values() if f.kind is _FIELD and f.init and not f.kw_only]),
+                           into)
+    if into is not None:
+        cls = _add_slots(cls, options["frozen"], options["weakref_slot"], spec.names, into)
     abc.update_abstractmethods(cls)
     _MADE[cls] = spec
     return cls
