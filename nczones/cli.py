@@ -174,8 +174,12 @@ def _untranslated_argparse() -> Callable[[], None]:
     import os
 
     ns, g = vars(argparse), vars(gettext)
-    folder = g["_localedirs"].get(g["_current_domain"]) or g["_default_localedir"]
-    if ns.get("_") is not gettext.gettext or ns.get("ngettext") is not gettext.ngettext or os.path.isdir(folder):
+    try:  # gettext's own names (CPython's gettext.py); another gettext: nothing changes
+        folder = g["_localedirs"].get(g["_current_domain"]) or g["_default_localedir"]
+    except (KeyError, AttributeError, TypeError):
+        return _nothing
+    replaced = ns.get("_") is not gettext.gettext or ns.get("ngettext") is not gettext.ngettext
+    if replaced or not isinstance(folder, str) or os.path.isdir(folder):
         return _nothing
     ns["_"], ns["ngettext"] = _same_message, _same_plural
 
