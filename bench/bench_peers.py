@@ -33,7 +33,9 @@ every process compiles the modules again where ``PYTHONDONTWRITEBYTECODE`` is se
 ``--as-installed`` runs the nczones children as from an installed wheel (``bench_startup.installed_like``: a
 throw-away virtual environment whose ``.pth`` names this checkout and the project's libraries as plain
 paths), without the editable install's import hook and ``.pth`` files that a development environment's
-``site`` loads at every start (about 14 ms of CPU per process on the machine of specs/performance.md).
+``site`` loads at every start (about 14 ms of CPU per process on the machine of specs/performance.md); the
+verify column then runs the ``nczones`` console script pip writes (``bench_startup.CONSOLE_SCRIPT``, what a
+user types), not ``python -m nczones`` (whose :mod:`runpy` a user does not run).
 
 Ratios are taken within the same run: ``verify / rs274`` where rs274 ran,
 and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
@@ -261,12 +263,15 @@ def main() -> None:
     python = sys.executable
     scratch = tempfile.TemporaryDirectory()
     if a.as_installed:
-        from bench_startup import installed_like
+        from bench_startup import console_script, installed_like
 
         python = installed_like(Path(scratch.name))
+        nczones = [console_script(python)]
         env.pop("PYTHONPATH", None)
-        print("nczones runs as from an installed wheel (a virtual environment without the editable install's hook)")
-    nczones = [python, "-m", "nczones"]
+        print("nczones runs as from an installed wheel (a virtual environment without the editable install's hook, "
+              "its console script)")
+    else:
+        nczones = [python, "-m", "nczones"]
     print(f"CPU seconds per process, the least of {REPEAT[0]} round(s), a row's commands interleaved in each round; "
           "ratio = nczones verify / peer, measured in this run")
     print(f"{'program':58} {'regex':>7} {'rs274':>7} {'interp':>7} {'verify':>7}  exit  rs274 exit  verify/rs274"

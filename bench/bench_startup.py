@@ -71,9 +71,21 @@ def measure(argv: list[str], env: dict[str, str], runs: int) -> tuple[float, flo
     return min(times), statistics.median(times)
 
 
+#: The console script pip writes for ``[project.scripts] nczones = "nczones.cli:run"`` (what a user runs as
+#: ``nczones``): no :mod:`runpy`, unlike ``python -m nczones``.
+CONSOLE_SCRIPT = """#!{python}
+import sys
+from nczones.cli import run
+if __name__ == '__main__':
+    sys.argv[0] = sys.argv[0].removesuffix('.exe')
+    sys.exit(run())
+"""
+
+
 def installed_like(tmp: Path) -> str:
     """A python that sees this checkout and the project's libraries as an installed wheel would: a fresh
-    virtual environment (no pip) whose ``.pth`` file lists them as plain paths."""
+    virtual environment (no pip) whose ``.pth`` file lists them as plain paths, with the ``nczones`` console
+    script pip would write beside it (:func:`console_script`)."""
     import site
     import sysconfig
 
@@ -84,7 +96,15 @@ def installed_like(tmp: Path) -> str:
                              capture_output=True, text=True, check=True).stdout.strip()
     libs = [p for p in site.getsitepackages() if Path(p).is_dir()] or [sysconfig.get_paths()["purelib"]]
     (Path(purelib) / "nczones_bench.pth").write_text("\n".join([str(ROOT), *libs]) + "\n")
+    script = Path(console_script(str(py)))
+    script.write_text(CONSOLE_SCRIPT.format(python=py))
+    script.chmod(0o755)
     return str(py)
+
+
+def console_script(python: str) -> str:
+    """The ``nczones`` console script of the environment of ``python`` (made by :func:`installed_like`)."""
+    return str(Path(python).parent / "nczones")
 
 
 def main() -> None:

@@ -18,13 +18,16 @@ from __future__ import annotations
 import _signal  # type: ignore[import-not-found]  # signal's functions, not the module's enums (issue 36)
 import argparse
 import sys
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
-from typing import Any, NoReturn
+from collections.abc import Callable, Sequence
 
 from . import __version__
 from .commands import COMMANDS, configurer
 from .commands.conventions import EXIT_INTERRUPTED, EXIT_TERMINATED, report_failure
+
+# typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, NoReturn
 
 __all__ = ["main", "run", "build_parser", "chosen_command", "sigterm_as_interrupt"]
 
@@ -37,27 +40,34 @@ def _on_sigterm(signum: int, frame: Any) -> None:
     raise KeyboardInterrupt
 
 
-@contextmanager
-def sigterm_as_interrupt() -> Iterator[None]:
-    """While a command runs, SIGTERM stops it the way Ctrl-C does (only in the main thread, and only when
-    SIGTERM has its default disposition: an embedding program's own handler is left alone).
+class sigterm_as_interrupt:  # a function's name: it was a contextlib.contextmanager
+    """While a command runs (``with sigterm_as_interrupt():``), SIGTERM stops it the way Ctrl-C does (only in the
+    main thread, and only when SIGTERM has its default disposition: an embedding program's own handler is left
+    alone).
 
     ``_signal`` is :mod:`signal` without its enums (``getsignal`` gives the integer ``SIG_DFL``); its
-    ``signal`` refuses (ValueError) outside the main thread, which is how that is told without :mod:`threading`."""
-    _terminated[0] = False
-    current = _signal.getsignal(_signal.SIGTERM)
-    if not (isinstance(current, int) and current == _signal.SIG_DFL):
-        yield
-        return
-    try:
-        previous = _signal.signal(_signal.SIGTERM, _on_sigterm)
-    except ValueError:  # not the main thread (of the main interpreter)
-        yield
-        return
-    try:
-        yield
-    finally:
-        _signal.signal(_signal.SIGTERM, previous)
+    ``signal`` refuses (ValueError) outside the main thread, which is how that is told without :mod:`threading`.
+    A class rather than a :func:`contextlib.contextmanager`: ``nczones --help`` imports neither :mod:`contextlib`
+    nor :mod:`typing` (issue 36; a command that reads a machine file has both from :mod:`tomllib`)."""
+
+    __slots__ = ("_previous", "_installed")
+
+    def __enter__(self) -> None:
+        _terminated[0] = False
+        self._installed = False
+        current = _signal.getsignal(_signal.SIGTERM)
+        if not (isinstance(current, int) and current == _signal.SIG_DFL):
+            return
+        try:
+            self._previous = _signal.signal(_signal.SIGTERM, _on_sigterm)
+        except ValueError:  # not the main thread (of the main interpreter)
+            return
+        self._installed = True
+
+    def __exit__(self, *exc: object) -> None:
+        if self._installed:
+            _signal.signal(_signal.SIGTERM, self._previous)
+
 
 class _Formatter(argparse.HelpFormatter):
     """argparse's help formatter, as wide as ``shutil.get_terminal_size`` says (``$COLUMNS``, else the
@@ -134,14 +144,63 @@ def main(argv: Sequence[str] | None = None) -> int:
     _one_blas_thread()
     command = chosen_command(arguments)
     # `nczones COMMAND ...`: only that command's parser is made (what an error or --help shows is its own)
-    parser = build_parser(command, alone=bool(arguments) and arguments[0] == command and command in COMMANDS)
-    args = parser.parse_args(arguments)
+    restore = _untranslated_argparse()
+    try:
+        parser = build_parser(command, alone=bool(arguments) and arguments[0] == command and command in COMMANDS)
+        args = parser.parse_args(arguments)
+    finally:
+        restore()
     with sigterm_as_interrupt():
         code = _run_handler(args)
     if _terminated[0] and code == EXIT_INTERRUPTED:
         print("nczones: stopped by SIGTERM (as by Ctrl-C: the report above is partial)", file=sys.stderr)
         return EXIT_TERMINATED
     return code
+
+
+def _untranslated_argparse() -> Callable[[], None]:
+    """While the command line is parsed, argparse's messages are given as gettext would give them where it can
+    find no catalogue, without asking gettext: the function that gives gettext's functions back to argparse.
+
+    argparse passes each of its messages (a parser's group titles, its help, its errors) through
+    :func:`gettext.gettext` (or :func:`gettext.ngettext`), which looks for a catalogue of the current domain,
+    ``<localedir>/<language>/LC_MESSAGES/<domain>.mo``, at every call, and imports :mod:`locale` to list the
+    languages (together some 2 ms of a small verify, issue 36).  Where ``localedir`` (the domain's bound folder,
+    else gettext's default, ``sys.base_prefix/share/locale``) is no folder, no catalogue exists and gettext
+    gives the message itself (``ngettext``: the singular when ``n == 1``, else the plural): so do the stand-ins.
+    Anywhere else (a folder of catalogues, a bound domain, argparse's functions not gettext's) nothing changes.
+    """
+    import gettext
+    import os
+
+    ns, g = vars(argparse), vars(gettext)
+    try:  # gettext's own names (CPython's gettext.py); another gettext: nothing changes
+        folder = g["_localedirs"].get(g["_current_domain"]) or g["_default_localedir"]
+    except (KeyError, AttributeError, TypeError):
+        return _nothing
+    replaced = ns.get("_") is not gettext.gettext or ns.get("ngettext") is not gettext.ngettext
+    if replaced or not isinstance(folder, str) or os.path.isdir(folder):
+        return _nothing
+    ns["_"], ns["ngettext"] = _same_message, _same_plural
+
+    def restore() -> None:
+        ns["_"], ns["ngettext"] = gettext.gettext, gettext.ngettext
+
+    return restore
+
+
+def _nothing() -> None:
+    return None
+
+
+def _same_message(message: str) -> str:
+    """:func:`gettext.gettext` where no catalogue exists."""
+    return message
+
+
+def _same_plural(singular: str, plural: str, n: int) -> str:
+    """:func:`gettext.ngettext` where no catalogue exists."""
+    return singular if n == 1 else plural
 
 
 def _run_handler(args: argparse.Namespace) -> int:

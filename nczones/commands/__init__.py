@@ -21,10 +21,11 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
-from typing import TYPE_CHECKING
 
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
+# typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     import argparse
 

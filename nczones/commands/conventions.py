@@ -22,10 +22,11 @@ import sys
 from collections.abc import Mapping
 from fractions import Fraction
 from types import MappingProxyType
-from typing import TYPE_CHECKING
 
 from ..errors import Diagnostic, InputError, InvalidArgument, NczonesError
 
+# typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from ..gcode.source import ProgramSource
     from ..machine import Machine

@@ -137,7 +137,7 @@ def _create_fn(name: str, args: list[str], body: list[str], *, globals: dict[str
         locals["_return_type"] = return_type
         return_annotation = "->_return_type"
     joined = ",".join(args)
-    lines = "\n".join(f"  {b}" for b in body)
+    lines = "  " + "\n  ".join(body) if body else ""  # each line indented by two
     txt = f" def {name}({joined}){return_annotation}:\n{lines}"
     local_vars = ", ".join(locals.keys())
     txt = f"def __create_fn__({local_vars}):\n{txt}\n return {name}"
@@ -261,8 +261,8 @@ class _Spec:
     def __init__(self, fields: dict[str, _Field], params: tuple[bool, ...]) -> None:
         self.fields, self.params = fields, params
         real = [f for f in fields.values() if f.kind is _FIELD]
-        self.names = tuple(f.name for f in real)
-        self.replace = tuple((f.name, f.init) for f in real)
+        self.names = tuple([f.name for f in real])
+        self.replace = tuple([(f.name, f.init) for f in real])
 
 
 #: The classes :func:`dataclass` made itself → what it made of them.
@@ -386,18 +386,34 @@ def _named(annotation: str, cls: type, a_module: Any, namespace: dict[str, Any] 
 def _pseudo(annotation: Any, cls: type, namespace: dict[str, Any] | None = None) -> str | None:
     """"classvar" for a ClassVar, "other" for what only ``dataclasses`` handles (not a string, InitVar,
     KW_ONLY), else None (a field): ``dataclasses._get_field``'s tests of a string annotation (``namespace``:
-    the class's module's, when the caller has it)."""
+    the class's module's, when the caller has it).
+
+    What :func:`_named` finds, found once for both modules: a bare head (no ``module.``) names the same object
+    of the class's module whichever module is asked about (issue 36: one lookup per field at start-up)."""
     if not isinstance(annotation, str):
         return "other"
-    typing = sys.modules.get("typing")
+    modules = sys.modules
+    typing, dc = modules.get("typing"), modules.get("dataclasses")
+    if not (typing or dc):
+        return None
+    head = _HEADS[annotation] if annotation in _HEADS else _head(annotation)
+    if head is None:
+        return None
+    if namespace is None:
+        module = modules.get(cls.__module__)
+        namespace = module.__dict__ if module is not None else None
+        if namespace is None:
+            return None
+    module_name, name = head
+    bare = None if module_name else namespace.get(name)
     if typing:
-        found = _named(annotation, cls, typing, namespace)
+        found = bare if not module_name else (typing.__dict__.get(name) if namespace.get(module_name) is typing
+                                              else None)
         if found is not None and (found is typing.ClassVar or (type(found) is typing._GenericAlias
                                                                and found.__origin__ is typing.ClassVar)):
             return "classvar"
-    dc = sys.modules.get("dataclasses")
     if dc:
-        found = _named(annotation, cls, dc, namespace)
+        found = bare if not module_name else (dc.__dict__.get(name) if namespace.get(module_name) is dc else None)
         if found is dc.InitVar or type(found) is dc.InitVar or found is dc.KW_ONLY:
             return "other"
     return None
@@ -412,7 +428,7 @@ def _field_types() -> tuple[type, ...]:
 def _own_field(cls: type, name: str, annotation: str, kind: str | None, kw_only: bool) -> _Field | None:
     """``dataclasses._get_field``, or None where it would raise (the standard library then says why)."""
     default = getattr(cls, name, MISSING)
-    f = _as_field(default)
+    f = default if isinstance(default, _Field) else _as_field(default) if "dataclasses" in sys.modules else None
     if f is None:
         if isinstance(default, types.MemberDescriptorType):
             default = MISSING
@@ -454,8 +470,9 @@ def _collect(cls: type, frozen: bool, kw_only: bool) -> dict[str, _Field] | None
             return None
         own.append(f)
     kinds = _field_types()
-    if any(isinstance(v, kinds) and k not in annotations for k, v in cls.__dict__.items()):
-        return None
+    for k, v in cls.__dict__.items():  # a field() without an annotation: dataclasses says why
+        if isinstance(v, kinds) and k not in annotations:
+            return None
     if has_dataclass_bases and any_frozen_base != frozen:
         return None
     for f in own:
@@ -525,12 +542,18 @@ def _cmp_fn(name: str, op: str, fields: list[_Field], globals: dict[str, Any]) -
                                                  "return NotImplemented"], globals=globals)
 
 
-def _set_new_attribute(cls: type, name: str, value: Any) -> None:
-    if name in cls.__dict__:
+def _set_new_attribute(cls: type, name: str, value: Any, into: dict[str, Any] | None = None) -> None:
+    """``dataclasses._set_new_attribute``; ``into``: the namespace of the class :func:`_add_slots` makes of
+    ``cls`` (then set there: ``cls`` itself is left as it was)."""
+    own = cls.__dict__ if into is None else into
+    if name in own:
         return
     if isinstance(value, types.FunctionType):
         value.__qualname__ = f"{cls.__qualname__}.{value.__name__}"
-    setattr(cls, name, value)
+    if into is None:
+        setattr(cls, name, value)
+    else:
+        into[name] = value
 
 
 #: ``dataclasses._hash_action`` by (unsafe_hash, eq, frozen, explicit __hash__): "add", "none" or None (nothing);
@@ -548,9 +571,9 @@ def _checked(cls: type, options: dict[str, Any], fields: dict[str, _Field]) -> b
     if o["slots"] and "__slots__" in cls.__dict__:
         return False
     own = cls.__dict__
-    if o["order"] and any(n in own for n in ("__lt__", "__le__", "__gt__", "__ge__")):
+    if o["order"] and ("__lt__" in own or "__le__" in own or "__gt__" in own or "__ge__" in own):
         return False
-    if o["frozen"] and any(n in own for n in ("__setattr__", "__delattr__")):
+    if o["frozen"] and ("__setattr__" in own or "__delattr__" in own):
         return False
     class_hash = own.get("__hash__", MISSING)
     explicit = not (class_hash is MISSING or (class_hash is None and "__eq__" in own))
@@ -566,8 +589,10 @@ def _checked(cls: type, options: dict[str, Any], fields: dict[str, _Field]) -> b
     return True
 
 
-def _methods(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any]) -> None:  # noqa: A002
-    """Set the methods ``dataclasses._process_class`` sets, in its order."""
+def _methods(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any],  # noqa: A002
+             into: dict[str, Any] | None = None) -> None:
+    """Set the methods ``dataclasses._process_class`` sets, in its order (``into``: see
+    :func:`_set_new_attribute`)."""
     o = options
     field_list = [f for f in fields.values() if f.kind is _FIELD]
     if o["init"]:
@@ -575,41 +600,51 @@ def _methods(cls: type, options: dict[str, Any], fields: dict[str, _Field], glob
         kw = [f for f in field_list if f.init and f.kw_only]
         _set_new_attribute(cls, "__init__", _init_fn(
             field_list, std, kw, o["frozen"], hasattr(cls, "__post_init__"),
-            "__dataclass_self__" if "self" in fields else "self", globals, o["slots"]))
+            "__dataclass_self__" if "self" in fields else "self", globals, o["slots"]), into)
     if o["repr"]:
         shown = ", ".join([f"{f.name}={{self.{f.name}!r}}" for f in field_list if f.repr])
         fn = _create_fn("__repr__", ["self"], ['return self.__class__.__qualname__ + f"(' + shown + ')"'],
                         globals=globals)
-        _set_new_attribute(cls, "__repr__", _recursive_repr(fn))
+        _set_new_attribute(cls, "__repr__", _recursive_repr(fn), into)
     compared = [f for f in field_list if f.compare]
     if o["eq"]:
-        _set_new_attribute(cls, "__eq__", _cmp_fn("__eq__", "==", compared, globals))
+        _set_new_attribute(cls, "__eq__", _cmp_fn("__eq__", "==", compared, globals), into)
     if o["order"]:
         for name, op in (("__lt__", "<"), ("__le__", "<="), ("__gt__", ">"), ("__ge__", ">=")):
-            _set_new_attribute(cls, name, _cmp_fn(name, op, compared, globals))
+            _set_new_attribute(cls, name, _cmp_fn(name, op, compared, globals), into)
     if o["frozen"]:
-        names = "(" + ",".join(repr(f.name) for f in field_list) + ",)" if field_list else "()"
+        names = "(" + ",".join([repr(f.name) for f in field_list]) + ",)" if field_list else "()"
         locals = {"cls": cls, "FrozenInstanceError": _frozen_error}  # noqa: A001
         for name, args, verb, tail in (("__setattr__", ["self", "name", "value"], "assign to", "name, value"),
                                        ("__delattr__", ["self", "name"], "delete", "name")):
             _set_new_attribute(cls, name, _create_fn(name, args, [
                 f"if type(self) is cls or name in {names}:",
                 f' raise FrozenInstanceError(f"cannot {verb} field {{name!r}}")',
-                f"super(cls, self).{name}({tail})"], locals=dict(locals), globals=globals))
+                f"super(cls, self).{name}({tail})"], locals=dict(locals), globals=globals), into)
 
 
-def _hash(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any]) -> None:  # noqa: A002
-    own = cls.__dict__
+def _hash(cls: type, options: dict[str, Any], fields: dict[str, _Field], globals: dict[str, Any],  # noqa: A002
+          into: dict[str, Any] | None = None) -> None:
+    """``dataclasses``' hash action (``into``: see :func:`_set_new_attribute`)."""
+    own = cls.__dict__ if into is None else into
     class_hash = own.get("__hash__", MISSING)
     explicit = not (class_hash is MISSING or (class_hash is None and "__eq__" in own))
     action = _HASH_ACTION.get((bool(options["unsafe_hash"]), bool(options["eq"]), bool(options["frozen"]), explicit))
     if action == "none":
-        cls.__hash__ = None  # type: ignore[assignment]
+        _set(cls, "__hash__", None, into)
     elif action == "add":
         hashed = [f for f in fields.values() if f.kind is _FIELD and (f.compare if f.hash is None else f.hash)]
         fn = _create_fn("__hash__", ["self"], [f"return hash({_tuple_str('self', hashed)})"], globals=globals)
         fn.__qualname__ = f"{cls.__qualname__}.{fn.__name__}"
-        cls.__hash__ = fn  # type: ignore[method-assign]
+        _set(cls, "__hash__", fn, into)
+
+
+def _set(cls: type, name: str, value: Any, into: dict[str, Any] | None) -> None:
+    """``setattr(cls, name, value)``, or into the namespace ``into`` (see :func:`_set_new_attribute`)."""
+    if into is None:
+        setattr(cls, name, value)
+    else:
+        into[name] = value
 
 
 def _get_slots(cls: type) -> Any:
@@ -623,9 +658,11 @@ def _get_slots(cls: type) -> Any:
     raise TypeError(f"Slots of '{cls.__name__}' cannot be determined")
 
 
-def _add_slots(cls: type, is_frozen: bool, weakref_slot: bool, field_names: tuple[str, ...]) -> type:
-    """``dataclasses._add_slots``: the class made again with ``__slots__``."""
-    cls_dict = dict(cls.__dict__)
+def _add_slots(cls: type, is_frozen: bool, weakref_slot: bool, field_names: tuple[str, ...],
+               cls_dict: dict[str, Any]) -> type:
+    """``dataclasses._add_slots``: the class made again with ``__slots__``, from ``cls_dict``: ``cls``'s
+    namespace as ``dataclasses`` leaves it (the methods set in it rather than on ``cls``: setting a dunder on a
+    class updates its type slots, some 3,000 instructions each, for a class about to be discarded)."""
     inherited_slots = set(itertools.chain.from_iterable(map(_get_slots, cls.__mro__[1:-1])))
     cls_dict["__slots__"] = tuple(itertools.filterfalse(
         inherited_slots.__contains__, itertools.chain(field_names, ("__weakref__",) if weakref_slot else ())))
@@ -653,27 +690,30 @@ def _process_class(cls: type, options: dict[str, Any]) -> type | None:
         return None
     module = sys.modules.get(cls.__module__)
     globals = module.__dict__ if module is not None else {}  # noqa: A001
-    params = tuple(options[k] for k in ("init", "repr", "eq", "order", "unsafe_hash", "frozen"))
+    params = (options["init"], options["repr"], options["eq"], options["order"], options["unsafe_hash"],
+              options["frozen"])
     cls.__dataclass_params__ = _Lazy("__dataclass_params__", _params_of)  # type: ignore[attr-defined]
     annotations, kinds = cls.__dict__.get("__annotations__", {}), _field_types()
     for name, f in fields.items():
-        value = getattr(cls, name, None)
-        if name in annotations and isinstance(value, kinds):
+        if name in annotations and isinstance(getattr(cls, name, None), kinds):  # own fields only, as dataclasses
             if f.default is MISSING:
                 delattr(cls, name)
             else:
                 setattr(cls, name, f.default)
-    cls.__dataclass_fields__ = _Lazy("__dataclass_fields__", _fields_of)  # type: ignore[attr-defined]
+    # a slotted class is made again from its namespace (_add_slots): what follows is set there, not on cls
+    into = dict(cls.__dict__) if options["slots"] else None
+    _set(cls, "__dataclass_fields__", _Lazy("__dataclass_fields__", _fields_of), into)
     spec = _Spec(fields, params)
-    _methods(cls, options, fields, globals)
-    _hash(cls, options, fields, globals)
+    _methods(cls, options, fields, globals, into)
+    _hash(cls, options, fields, globals, into)
     if not cls.__doc__:
-        cls.__doc__ = _Lazy("__doc__", _doc_of)  # type: ignore[assignment]
+        _set(cls, "__doc__", _Lazy("__doc__", _doc_of), into)
     if options["match_args"]:
         _set_new_attribute(cls, "__match_args__",
-                           tuple(f.name for f in fields.values() if f.kind is _FIELD and f.init and not f.kw_only))
-    if options["slots"]:
-        cls = _add_slots(cls, options["frozen"], options["weakref_slot"], spec.names)
+                           tuple([f.name for f in fields.values() if f.kind is _FIELD and f.init and not f.kw_only]),
+                           into)
+    if into is not None:
+        cls = _add_slots(cls, options["frozen"], options["weakref_slot"], spec.names, into)
     abc.update_abstractmethods(cls)
     _MADE[cls] = spec
     return cls

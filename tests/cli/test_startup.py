@@ -94,12 +94,31 @@ def test_a_small_program_with_parameters_loads_neither_solids_nor_ctypes(tmp_pat
 def test_a_small_verify_loads_no_pathlib(tmp_path):
     # pathlib (with urllib.parse and ipaddress, ~3 ms): a development environment's site
     # imports pathlib for its editable-install hook, so the interpreter starts without site here, as an
-    # installed wheel's would not need it
+    # installed wheel's would not need it; the hook imports importlib.util too, which a small verify does not
+    # (issue 36, startup36e: the solver's wheel is found through sys.meta_path), nor locale where gettext has
+    # no folder of catalogues (argparse's messages are then not passed through gettext)
+    import gettext
+    import os
+
+    names = ("pathlib", "urllib.parse", "ipaddress", "importlib.util",
+             *(() if os.path.isdir(gettext._default_localedir) else ("locale",)))
     program = tmp_path / "small.ngc"
     program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
     code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
             f"assert main(['verify', {str(program)!r}, '--machine', {MILL!r}]) == 0\n"
-            "print(sorted(m for m in ('pathlib', 'urllib.parse', 'ipaddress') if m in sys.modules))")
+            f"print(sorted(m for m in {names!r} if m in sys.modules))")
+    r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[]"
+
+
+def test_help_loads_neither_typing_nor_contextlib():
+    # issue 36 (startup36e): the command line's own modules take TYPE_CHECKING as a local False and SIGTERM's
+    # block is a class; started without site (a development environment's editable-install hook imports
+    # contextlib), as in the test above
+    code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
+            "try:\n    main(['--help'])\nexcept SystemExit as e:\n    assert e.code == 0\n"
+            "print(sorted(m for m in ('typing', 'contextlib') if m in sys.modules))")
     r = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr
     assert r.stdout.splitlines()[-1] == "[]"
@@ -286,3 +305,45 @@ def test_a_small_verify_with_a_text_report_loads_no_json(tmp_path):
         r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
         assert r.returncode == 0, r.stderr
         assert r.stdout.splitlines()[-1] == str(loaded), fmt
+
+
+def _parse_messages(argv: list[str]) -> tuple[object, str, str]:
+    """What ``main`` prints and exits with when argparse stops at ``argv`` (help or an error)."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), pytest.raises(SystemExit) as stop:
+        cli.main(argv)
+    return stop.value.code, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("argv", [["verify"], ["verify", "--help"], ["--help"], ["no-such-command"],
+                                  ["verify", "p.ngc", "--machine", "m.toml", "--margin"], ["verify", "a", "b", "--x"]])
+def test_argparse_says_without_gettext_what_it_says_with_it(argv, monkeypatch, tmp_path):
+    # issue 36 (startup36e): where gettext's folder of catalogues does not exist, argparse's messages skip gettext
+    # (and its import of locale) while the command line is parsed; with a folder (no catalogue in it) gettext is
+    # asked as always: the same words, and argparse gets gettext's functions back either way
+    import argparse
+    import gettext
+
+    def asked(folder: Path) -> tuple[tuple[object, str, str], bool]:
+        monkeypatch.setattr(gettext, "_default_localedir", str(folder))
+        calls = []
+        real = gettext.dgettext
+        monkeypatch.setattr(gettext, "dgettext", lambda *a: (calls.append(a), real(*a))[1])
+        said = _parse_messages(argv)
+        monkeypatch.setattr(gettext, "dgettext", real)
+        assert vars(argparse)["_"] is gettext.gettext and vars(argparse)["ngettext"] is gettext.ngettext
+        return said, bool(calls)
+
+    with_gettext, asked_it = asked(tmp_path)
+    without, asked_none = asked(tmp_path / "absent")
+    assert asked_it and not asked_none
+    assert with_gettext == without and with_gettext[0] in (0, 2) and (with_gettext[1] or with_gettext[2])
+
+
+@pytest.mark.parametrize("n", [0, 1, 2, 7])
+def test_the_plural_stand_in_is_gettexts_without_a_catalogue(n):
+    import gettext
+
+    assert cli._same_plural("an argument", "arguments", n) == gettext.NullTranslations().ngettext(
+        "an argument", "arguments", n)
+    assert cli._same_message("usage: ") == gettext.NullTranslations().gettext("usage: ")

@@ -45,3 +45,15 @@ def test_a_program_the_exact_tiers_prove_does_not_load_z3():
 def test_a_query_loads_it():
     label, loaded, queries = _run(UNSAFE_RUN)[0].split()
     assert label == "unsafe" and int(queries) > 0 and loaded == "True"
+
+
+def test_the_wheel_is_looked_for_where_an_import_would_find_z3():
+    # issue 36: smt._find_spec stands for importlib.util.find_spec (not imported by a small verify)
+    import importlib.util
+
+    from nczones.prover.smt import _find_spec
+
+    for name in ("z3", "fractions", "nczones", "no_such_module_for_nczones"):
+        ours, theirs = _find_spec(name), importlib.util.find_spec(name)
+        assert (ours is None) == (theirs is None), name
+        assert ours is None or (ours.name, ours.origin) == (theirs.name, theirs.origin), name
