@@ -399,6 +399,7 @@ class Reader:
         self.polar = [F(0), F(0)]  # G16: the last radius and angle
         self.intermediate: dict = {}  # G28/G30 intermediate point per axis (machine), for G29
         self.ret_label: int | None = None  # M99 P n
+        self.arcs: dict[int, tuple | None] = {}  # index of an arc in motions -> its circle (circle())
 
     # -------------------------------------------------------------------------- units and offsets
 
@@ -896,7 +897,35 @@ class Reader:
             kind = {0: "rapid", 1: "line", 2: "arc", 3: "arc", 33: "line"}[self.motion]
             if kind == "arc" and not axes:
                 kind = "line"
+        if kind == "arc":
+            self.arcs[len(self.motions)] = self.circle(other)
         self.emit(kind, end)
+
+    #: the plane's axes in the order G02 turns clockwise in, viewed from the positive third axis ([0i]
+    #: "Circular interpolation (G02, G03)": "the clockwise and counterclockwise directions ... viewed in the
+    #: positive-to-negative direction of the Zp (Yp, Xp) axis" in the XpYp (ZpXp, YpZp) plane)
+    PLANE_PAIRS = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
+
+    def circle(self, other: dict) -> tuple | None:
+        """The circle of the G02/G03 block now moving from ``self.pos``: ``(ia, ib, clockwise, centre, r)``
+        with ``(ia, ib)`` the plane's axes (:data:`PLANE_PAIRS`), and either ``centre`` the centre's machine
+        coordinates on them (``r`` None) or ``r`` the signed radius (``centre`` None); None for an arc
+        this reader gives no circle (under a transform, neither R nor a centre offset).  [0i] "Circular
+        interpolation": "I_, J_, K_: distance from the start point to the center of an arc with sign"
+        (incremental whatever G90/G91), "R_: arc radius (an arc of more than 180 degrees: a negative
+        value)"; R takes precedence over I, J, K written with it."""
+        if self.xf is not None:
+            return None
+        ia, ib = self.PLANE_PAIRS[self.plane]
+        cw = self.motion == 2
+        if "R" in other:
+            return (ia, ib, cw, None, other["R"] * self.unit())
+        la, lb = "IJK"[ia], "IJK"[ib]
+        if la not in other and lb not in other:
+            return None
+        u = self.unit()
+        centre = (self.pos[ia] + other.get(la, F(0)) * u, self.pos[ib] + other.get(lb, F(0)) * u)
+        return (ia, ib, cw, centre, None)
 
     # -------------------------------------------------------------------------- coordinate transforms
 
@@ -1212,6 +1241,13 @@ class Reader:
 def reference_motion(text: str, machine: RefMachine, *, block_delete: bool = False) -> list:
     """The motion of ``text``: ``[(kind, (x, y, z)), ...]`` in machine coordinates (mm)."""
     return Reader(machine, block_delete=block_delete).run(text)
+
+
+def reference_motion_with_circles(text: str, machine: RefMachine, *, block_delete: bool = False) -> tuple:
+    """``(motion, circles)``: :func:`reference_motion`'s list and, by the index of each arc in it, its circle
+    (``Reader.circle``: plane axes, direction, centre or signed radius; None where the reader gives none)."""
+    reader = Reader(machine, block_delete=block_delete)
+    return reader.run(text), dict(reader.arcs)
 
 
 # ---------------------------------------------------------------------------------------------- lathe
