@@ -400,6 +400,7 @@ class Reader:
         self.intermediate: dict = {}  # G28/G30 intermediate point per axis (machine), for G29
         self.ret_label: int | None = None  # M99 P n
         self.arcs: dict[int, tuple | None] = {}  # index of an arc in motions -> its circle (circle())
+        self.lengths: list[Fraction] = []  # the tool length offset on Z in force at the end of each motion
 
     # -------------------------------------------------------------------------- units and offsets
 
@@ -559,6 +560,7 @@ class Reader:
     def emit(self, kind: str, end) -> None:
         self.pos = list(end)
         self.motions.append((kind, tuple(end)))
+        self.lengths.append(self.tl)
 
     def to_machine(self, prog) -> list:
         o, t = self.offset(), self.tool()
@@ -1244,10 +1246,11 @@ def reference_motion(text: str, machine: RefMachine, *, block_delete: bool = Fal
 
 
 def reference_motion_with_circles(text: str, machine: RefMachine, *, block_delete: bool = False) -> tuple:
-    """``(motion, circles)``: :func:`reference_motion`'s list and, by the index of each arc in it, its circle
-    (``Reader.circle``: plane axes, direction, centre or signed radius; None where the reader gives none)."""
+    """``(motion, circles, lengths)``: :func:`reference_motion`'s list, by the index of each arc in it its circle
+    (``Reader.circle``: plane axes, direction, centre or signed radius; None where the reader gives none), and the
+    tool length offset on Z in force at the end of each motion."""
     reader = Reader(machine, block_delete=block_delete)
-    return reader.run(text), dict(reader.arcs)
+    return reader.run(text), dict(reader.arcs), list(reader.lengths)
 
 
 # ---------------------------------------------------------------------------------------------- lathe

@@ -8,6 +8,7 @@ box (tests/gcode/fanuc/ref_boxes.py: arc extremes as exact surds, decided by ang
 
 * **inside** the box the route tests (``box_fits``, on a zone that holds everything) when the route decides:
   soundness — a route box that misses a point the reference reaches could prove a wrong ``safe``;
+* tested at every tool length the reference's motions carry (a tip zone sees the position less it);
 * and close to it (within ``1e-6`` mm per face: the route's box is the motion's box, rounded outward by a few
   ``1e-9`` only), so the comparison is not vacuous;
 * the box of the whole motion is the same with the reader on and off (``boxrun.BOX_RUNS``);
@@ -108,7 +109,7 @@ def check_program(seed: int, dpi: str, counts: dict, *, zones: bool, size: int =
     """One program (module docstring); ``counts`` collects the outcomes."""
     text = plain_program(seed, dpi, size)
     try:
-        motion, circles = reference_motion_with_circles(text, ref_machine(dpi))
+        motion, circles, lengths = reference_motion_with_circles(text, ref_machine(dpi))
     except (RefUnknown, RefError) as exc:
         counts["ref_skip"] += 1
         counts.setdefault("ref_reasons", []).append(str(exc)[:80])
@@ -123,6 +124,8 @@ def check_program(seed: int, dpi: str, counts: dict, *, zones: bool, size: int =
     counts["decided"] += 1
     assert result.verdict.label == "safe"
     lo, hi, _tl = boxes[-1]
+    # every tool length a motion carried is one the box was tested at (a tip zone sees the position less it)
+    assert set(lengths) <= {tl for _lo, _hi, tl in boxes}, f"seed {seed} {dpi}: a tool length never tested"
     outside = ref.contained_in(list(lo), list(hi))
     assert not outside, f"the route's box misses the reference's motion (seed {seed}, {dpi}): {outside[:3]}"
     flo, fhi = ref.float_bounds()
