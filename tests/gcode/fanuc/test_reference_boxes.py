@@ -28,7 +28,7 @@ import os
 from fractions import Fraction
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from nczones.gcode.fanuc import boxrun
@@ -177,14 +177,19 @@ def _new_counts() -> dict:
     return Counter()
 
 
-def _differential(n: int, *, zones: bool, seed: int | None = None, size: int = 540):
+def _differential(n: int, *, zones: bool, seed: int | None = None, size: int = 540, shrink: bool = True):
     counts = _new_counts()
+    phases = tuple(Phase) if shrink else (Phase.generate,)
 
-    @settings(max_examples=n, deadline=None, database=None, derandomize=seed is None,
+    @settings(max_examples=n, deadline=None, database=None, derandomize=seed is None, phases=phases,
               suppress_health_check=list(HealthCheck))
     @given(st.integers(0, 2**32 - 1), st.sampled_from(["calculator", "increment"]))
     def check(program_seed, dpi):
-        check_program(program_seed, dpi, counts, zones=zones, size=size)
+        try:
+            check_program(program_seed, dpi, counts, zones=zones, size=size)
+        except AssertionError as exc:
+            counts.setdefault("failures", []).append(str(exc)[:300])
+            raise
 
     if seed is not None:
         from hypothesis import seed as hseed
@@ -235,3 +240,48 @@ def test_a_tool_length_taken_inside_the_box_is_tested(dwells):
     for r in (routed, full):
         assert r.verdict.label == "unsafe"
         assert {v.span.line for v in r.violations if v.span is not None} == lines
+
+
+# ------------------------------------------------------------------------------------------- mutations
+
+def _mutate_r_arc_side(monkeypatch):
+    """``columns.r_arc_box`` boxes the other arc of the circle through the ends (the minor and the major arc's side
+    swapped: R negated with the direction, the same centre), in the lane (``BoxRows.add_arc``) and the reader."""
+    from nczones.gcode.fanuc import columns
+
+    real = columns.r_arc_box
+
+    def broken(sa, sb, ea, eb, r, cw):
+        return real(sa, sb, ea, eb, -r, not cw)
+
+    monkeypatch.setattr(columns, "r_arc_box", broken)
+    monkeypatch.setattr(boxrun, "r_arc_box", broken)
+
+
+def _mutate_reader_offset(monkeypatch):
+    """The box run reader widens the box by a straight move's end without the work offset (the program value; the
+    position it keeps is right)."""
+
+    def broken(line, words, p, lo, hi, off):
+        for sl, m, i in words:
+            v = int(line[sl]) * m
+            p[i] = v + off[i]
+            if v < lo[i]:
+                lo[i] = v
+            elif v > hi[i]:
+                hi[i] = v
+
+    monkeypatch.setattr(boxrun, "_straight", broken)
+
+
+@pytest.mark.long
+@pytest.mark.parametrize("mutation", [_mutate_r_arc_side, _mutate_reader_offset],
+                         ids=["r-arc-box-side", "box-run-offset"])
+def test_box_mutations_are_caught(monkeypatch, mutation):
+    """Each mutation makes the CI-size differential (the same derandomized examples, no zones, no shrinking) fail."""
+    mutation(monkeypatch)
+    check, counts = _differential(EXAMPLES, zones=False, shrink=False)
+    with pytest.raises(AssertionError):
+        check()
+        _not_vacuous(counts, EXAMPLES)
+    print(f"{mutation.__name__}: {counts.get('failures', ['(the route no longer decides)'])[0]} {dict(counts)}")
