@@ -133,7 +133,7 @@ def _strip(text: str) -> str:
 
 class _Expr:
     """A recursive-descent reader of Macro B expressions ([0i] "Arithmetic and logic operation"):
-    functions; ``* / AND MOD``; ``+ - OR XOR``; relations ``EQ NE GT GE LT LE``."""
+    functions (``ATAN[a]/[b]`` of two arguments); ``* / AND MOD``; ``+ - OR XOR``; relations ``EQ NE GT GE LT LE``."""
 
     FUNCS = ("ROUND", "FIX", "FUP", "ABS", "SQRT", "SIN", "COS", "TAN")
 
@@ -219,6 +219,23 @@ class _Expr:
                 raise RefError(f"bad variable in {self.s!r}")
             self.i = m.end()
             return ("var", ("num", float(m.group())))
+        if self.peek("ATAN["):
+            # [0i] "Arithmetic and logic operation": ``#i = ATAN[#j]/[#k]`` (also written ``ATAN[#j,#k]``), the
+            # angle of the point (#k, #j) in degrees, 0 to 360 (parameter 6004#0 NAT = 0): ATAN[-1]/[-1] is 225
+            self.i += 5
+            a = self.additive()
+            if self.peek(","):
+                self.i += 1
+                b = self.additive()
+                self.eat("]")
+            else:
+                self.eat("]")
+                if not self.peek("/["):
+                    raise RefUnknown("ATAN of one argument")
+                self.i += 2
+                b = self.additive()
+                self.eat("]")
+            return ("atan", a, b)
         for f in self.FUNCS:
             if self.peek(f + "["):
                 self.i += len(f) + 1
@@ -491,6 +508,9 @@ class Reader:
                 return math.cos(math.radians(x))
             if f == "TAN":
                 return math.tan(math.radians(x))
+        if k == "atan":
+            d = math.degrees(math.atan2(self.num(self.ev(e[1])), self.num(self.ev(e[2]))))
+            return d + 360.0 if d < 0 else d
         if k == "bin":
             op, a, b = e[1], self.num(self.ev(e[2])), self.num(self.ev(e[3]))
             if op == "+":
