@@ -16,6 +16,10 @@ box (tests/gcode/fanuc/ref_boxes.py: arc extremes as exact surds, decided by ang
   extreme: it does not), the verdict is the full path's (``fanucboxes.ROUTE`` off: the vectorized fast path), and
   never ``safe`` when the reference's motion leaves the zone.
 
+Programs under 512 lines of the reference differential's grammar (tests/gcode/fanuc/ref_grammar.py: Macro B,
+calls, cycles; the route takes any Fanuc program that short) are held to the first two relations when the route
+proves them ``safe`` (``FANUC_REF_BOX_SHORT``, default 60; long ``FANUC_REF_BOX_SHORT_LONG``, default 3,000).
+
 CI size: ``FANUC_REF_BOX_EXAMPLES`` (default 6, both decimal point settings); the long profile (``-m long``):
 ``FANUC_REF_BOX_LONG`` (default 300), seed ``FANUC_REF_SEED``.  ``test_box_mutations_are_caught`` (long): a
 deliberate break of ``columns.r_arc_box`` (the minor and the major arc's side swapped) and of the box run reader's
@@ -31,6 +35,7 @@ import pytest
 from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
+from nczones.errors import GcodeError
 from nczones.gcode.fanuc import boxrun
 from nczones.prover import fanucboxes, verify_text
 from tests.machines import box_zone
@@ -39,11 +44,14 @@ from tests.oracles.fanuc_ref import RefError, RefUnknown, reference_motion_with_
 from .helpers import mill
 from .ref_boxes import reference_box
 from .ref_differential import ref_machine
+from .ref_grammar import fanuc_programs
 from .ref_plain import plain_program
 
 F = Fraction
 EXAMPLES = int(os.environ.get("FANUC_REF_BOX_EXAMPLES", "6"))
 LONG = int(os.environ.get("FANUC_REF_BOX_LONG", "300"))
+SHORT = int(os.environ.get("FANUC_REF_BOX_SHORT", "60"))
+SHORT_LONG = int(os.environ.get("FANUC_REF_BOX_SHORT_LONG", "3000"))
 #: how far the route's box may lie outside the reference's (mm): its outward rounding is a few 1e-9
 CLOSE = 1e-6
 _AXES = ("X", "Y", "Z")
@@ -285,3 +293,63 @@ def test_box_mutations_are_caught(monkeypatch, mutation):
         check()
         _not_vacuous(counts, EXAMPLES)
     print(f"{mutation.__name__}: {counts.get('failures', ['(the route no longer decides)'])[0]} {dict(counts)}")
+
+
+# ------------------------------------------------------------------------------------------- short programs
+
+def check_short(text: str, dpi: str, counts: dict) -> None:
+    """A program of the reference differential's grammar (Macro B, calls, cycles: under 512 lines the route takes
+    any Fanuc program): when the route proves it ``safe``, the reference's exact box lies inside the route's and
+    every tool length it carries was tested.  Programs with a transform (the reference gives their arcs no
+    circle) or that nczones does not read to the end are passed over (counted)."""
+    try:
+        motion, circles, lengths = reference_motion_with_circles(text, ref_machine(dpi))
+    except (RefUnknown, RefError):
+        counts["ref_skip"] += 1
+        return
+    ref = reference_box(motion, circles, ref_machine(dpi).start)
+    if ref is None:
+        counts["no_circle"] += 1
+        return
+    try:
+        result, boxes, _ = route_run(text, _mill(dpi))
+    except GcodeError:
+        counts["rejected"] += 1
+        return
+    if not _decided(result) or result.verdict.label != "safe":
+        counts["not_decided"] += 1
+        return
+    counts["decided"] += 1
+    lo, hi, _tl = boxes[-1]
+    outside = ref.contained_in(list(lo), list(hi))
+    assert not outside, f"the route's box misses the reference's motion ({dpi}): {outside[:3]}\n{text}"
+    assert set(lengths) <= {tl for _lo, _hi, tl in boxes}, f"a tool length never tested ({dpi})\n{text}"
+
+
+def _short(n: int, seed: int | None = None):
+    counts = _new_counts()
+
+    @settings(max_examples=n, deadline=None, database=None, derandomize=seed is None,
+              suppress_health_check=list(HealthCheck))
+    @given(fanuc_programs(), st.sampled_from(["calculator", "increment"]))
+    def check(text, dpi):
+        check_short(text, dpi, counts)
+
+    if seed is not None:
+        from hypothesis import seed as hseed
+        check = hseed(seed)(check)
+    return check, counts
+
+
+def test_the_box_route_holds_the_reference_motion_of_short_programs():
+    check, counts = _short(SHORT)
+    check()
+    assert counts["decided"] >= 0.6 * SHORT, dict(counts)
+
+
+@pytest.mark.long
+def test_the_box_route_holds_the_reference_motion_of_short_programs_long():
+    check, counts = _short(SHORT_LONG, seed=int(os.environ.get("FANUC_REF_SEED", "36")))
+    check()
+    print(f"fanuc box route, short programs: {dict(counts)}")
+    assert counts["decided"] >= 0.6 * SHORT_LONG, dict(counts)
