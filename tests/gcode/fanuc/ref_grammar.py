@@ -662,6 +662,24 @@ def fanuc_programs(draw, max_statements: int = 8):
     return "\n".join(st_.lines) + "\n"
 
 
+@st.composite
+def closure_programs(draw, max_statements: int = 3):
+    """A main program of :func:`p_closures` statements (and straight moves between them): the compiled closures'
+    share of :func:`fanuc_programs`, drawn alone."""
+    st_ = GenState(inch=draw(st.integers(0, 4)) == 0)
+    st_.lines += ["%", "O0001", "G20" if st_.inch else "G21", "G90 G17 G40 G49 G80 G94 G54 F500.", "G00 X0 Y0 Z0"]
+    for _ in range(draw(st.integers(1, max_statements))):
+        p_closures(draw, st_)
+        if draw(st.booleans()):
+            p_move(draw, st_)
+    st_.lines.append("M30")
+    for num, body in st_.subs:
+        st_.lines.append(f"O{num:04d}")
+        st_.lines.extend(body)
+    st_.lines.append("%")
+    return "\n".join(st_.lines) + "\n"
+
+
 # ------------------------------------------------------------------------------------------------ lathe
 
 LATHE_PRODUCTIONS: dict[str, set[str]] = {
