@@ -53,6 +53,7 @@ class _Writer:
         self.plane = 17
         self.modal = 0  # 0, 1: G00/G01; 2: an arc
         self.work = "G54"
+        self.one_run = False  # only lines the box run reader takes (no exact half circle: it ends a run)
         self.lines: list[str] = []
 
     # ------------------------------------------------------------------------------------------ numbers
@@ -106,7 +107,7 @@ class _Writer:
     def r_arc(self, helix: bool) -> None:
         a, b, _la, _lb = _PLANES[self.plane]
         rnd = self.rnd
-        if rnd.random() < 0.1:  # an exact half circle: a chord of 2|R| along one axis
+        if rnd.random() < 0.1 and not self.one_run:  # an exact half circle: a chord of 2|R| along one axis
             half = self.draw(1, 10)
             da, db = (2 * half, F(0)) if rnd.random() < 0.5 else (F(0), 2 * half)
             r = half
@@ -215,15 +216,22 @@ _KINDS = (("straight", 34), ("r_arc", 16), ("centre_arc", 14), ("helix_r", 3), (
           ("distance", 3), ("plane_change", 3), ("offsets", 2), ("still", 6), ("no_point", 3), ("layout", 4))
 
 
-def plain_program(seed: int, dpi: str, lines: int = 540) -> str:
-    """A plain Fanuc mill program of more than ``lines`` text lines (module docstring)."""
+#: the kinds a box run reader takes in the first plane, metric, G90 (one run past ``columns.MAX_ROWS`` lines)
+_RUN_KINDS = (("straight", 50), ("r_arc", 25), ("centre_arc", 20), ("helix_r", 3), ("helix_centre", 2))
+
+
+def plain_program(seed: int, dpi: str, lines: int = 540, *, one_run: bool = False) -> str:
+    """A plain Fanuc mill program of more than ``lines`` text lines (module docstring); ``one_run``: only lines
+    the box run reader takes (metric, G17, G90: straight moves, arcs, helices), one run as long as the program."""
     rnd = random.Random(seed)
-    inch = rnd.random() < 0.15
+    inch = rnd.random() < 0.15 and not one_run
     w = _Writer(rnd, dpi, inch)
+    w.one_run = one_run
     w.lines += ["%", "O0001", "G20" if inch else "G21", "G90 G17 G40 G49 G80 G94 G54 F500."]
     w.resync()
-    names = [k for k, _ in _KINDS]
-    weights = [n for _, n in _KINDS]
+    kinds = _RUN_KINDS if one_run else _KINDS
+    names = [k for k, _ in kinds]
+    weights = [n for _, n in kinds]
     while len(w.lines) < lines:
         kind = rnd.choices(names, weights)[0]
         if kind == "helix_r":
@@ -235,5 +243,5 @@ def plain_program(seed: int, dpi: str, lines: int = 540) -> str:
         else:
             getattr(w, kind)()
     w.lines += ["M30", "%"]
-    end = "\r\n" if rnd.random() < 0.1 else "\n"
+    end = "\r\n" if rnd.random() < 0.1 and not one_run else "\n"
     return end.join(w.lines) + end

@@ -113,9 +113,9 @@ def _dec(q: Fraction) -> str:
     return f"{sign}{n // 1_000_000}.{n % 1_000_000:06d}"
 
 
-def check_program(seed: int, dpi: str, counts: dict, *, zones: bool, size: int = 540) -> None:
+def check_program(seed: int, dpi: str, counts: dict, *, zones: bool, size: int = 540, one_run: bool = False) -> None:
     """One program (module docstring); ``counts`` collects the outcomes."""
-    text = plain_program(seed, dpi, size)
+    text = plain_program(seed, dpi, size, one_run=one_run)
     try:
         motion, circles, lengths = reference_motion_with_circles(text, ref_machine(dpi))
     except (RefUnknown, RefError) as exc:
@@ -222,6 +222,27 @@ def test_the_box_route_holds_the_reference_motion_long():
     check()
     print(f"fanuc box route reference differential: {dict(counts)}")
     _not_vacuous(counts, LONG)
+
+
+@pytest.mark.long
+@pytest.mark.parametrize("seed", [1, 2])
+def test_one_run_past_the_row_limit_holds_the_reference_motion(seed, monkeypatch):
+    """A program of one run longer than ``columns.MAX_ROWS`` (8,192) lines the reader takes: the run's box is full
+    and a new one opens in the middle (``BoxRows.full``), on the reader's side and the lanes'."""
+    from nczones.gcode.fanuc.columns import MAX_ROWS
+
+    full = []
+    real = fanucboxes.BoxWalk._run
+
+    def run(self, rows):
+        full.append(rows.full)
+        return real(self, rows)
+
+    monkeypatch.setattr(fanucboxes.BoxWalk, "_run", run)
+    counts = _new_counts()
+    check_program(seed, "calculator", counts, zones=True, size=MAX_ROWS + 900, one_run=True)
+    assert counts["decided"] == 1 and counts["taken"] > MAX_ROWS, dict(counts)
+    assert any(full), "no run reached the row limit"
 
 
 # ------------------------------------------------------------------------------------------- findings
