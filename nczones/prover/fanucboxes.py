@@ -219,7 +219,9 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
                 continue
             if not all(box_fits(allowed, lo, hi, margin, tl) for tl in sorted(tls)):
                 return None
-            proved = (lo, hi, tls)
+            # a copy of the tool lengths: the walk's set grows in place, and a chunk that adds a length but not
+            # a position must be tested again (the set itself would compare equal to itself: a wrong safe)
+            proved = (lo, hi, frozenset(tls))
     except _Declined:
         return None
     if any(getattr(r, "seen_switches", None) for r in run.runners):

@@ -133,7 +133,7 @@ def _strip(text: str) -> str:
 
 class _Expr:
     """A recursive-descent reader of Macro B expressions ([0i] "Arithmetic and logic operation"):
-    functions; ``* / AND MOD``; ``+ - OR XOR``; relations ``EQ NE GT GE LT LE``."""
+    functions (``ATAN[a]/[b]`` of two arguments); ``* / AND MOD``; ``+ - OR XOR``; relations ``EQ NE GT GE LT LE``."""
 
     FUNCS = ("ROUND", "FIX", "FUP", "ABS", "SQRT", "SIN", "COS", "TAN")
 
@@ -219,6 +219,23 @@ class _Expr:
                 raise RefError(f"bad variable in {self.s!r}")
             self.i = m.end()
             return ("var", ("num", float(m.group())))
+        if self.peek("ATAN["):
+            # [0i] "Arithmetic and logic operation": ``#i = ATAN[#j]/[#k]`` (also written ``ATAN[#j,#k]``), the
+            # angle of the point (#k, #j) in degrees, 0 to 360 (parameter 6004#0 NAT = 0): ATAN[-1]/[-1] is 225
+            self.i += 5
+            a = self.additive()
+            if self.peek(","):
+                self.i += 1
+                b = self.additive()
+                self.eat("]")
+            else:
+                self.eat("]")
+                if not self.peek("/["):
+                    raise RefUnknown("ATAN of one argument")
+                self.i += 2
+                b = self.additive()
+                self.eat("]")
+            return ("atan", a, b)
         for f in self.FUNCS:
             if self.peek(f + "["):
                 self.i += len(f) + 1
@@ -399,6 +416,8 @@ class Reader:
         self.polar = [F(0), F(0)]  # G16: the last radius and angle
         self.intermediate: dict = {}  # G28/G30 intermediate point per axis (machine), for G29
         self.ret_label: int | None = None  # M99 P n
+        self.arcs: dict[int, tuple | None] = {}  # index of an arc in motions -> its circle (circle())
+        self.lengths: list[Fraction] = []  # the tool length offset on Z in force at the end of each motion
 
     # -------------------------------------------------------------------------- units and offsets
 
@@ -489,6 +508,9 @@ class Reader:
                 return math.cos(math.radians(x))
             if f == "TAN":
                 return math.tan(math.radians(x))
+        if k == "atan":
+            d = math.degrees(math.atan2(self.num(self.ev(e[1])), self.num(self.ev(e[2]))))
+            return d + 360.0 if d < 0 else d
         if k == "bin":
             op, a, b = e[1], self.num(self.ev(e[2])), self.num(self.ev(e[3]))
             if op == "+":
@@ -558,6 +580,7 @@ class Reader:
     def emit(self, kind: str, end) -> None:
         self.pos = list(end)
         self.motions.append((kind, tuple(end)))
+        self.lengths.append(self.tl)
 
     def to_machine(self, prog) -> list:
         o, t = self.offset(), self.tool()
@@ -896,7 +919,35 @@ class Reader:
             kind = {0: "rapid", 1: "line", 2: "arc", 3: "arc", 33: "line"}[self.motion]
             if kind == "arc" and not axes:
                 kind = "line"
+        if kind == "arc":
+            self.arcs[len(self.motions)] = self.circle(other)
         self.emit(kind, end)
+
+    #: the plane's axes in the order G02 turns clockwise in, viewed from the positive third axis ([0i]
+    #: "Circular interpolation (G02, G03)": "the clockwise and counterclockwise directions ... viewed in the
+    #: positive-to-negative direction of the Zp (Yp, Xp) axis" in the XpYp (ZpXp, YpZp) plane)
+    PLANE_PAIRS = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
+
+    def circle(self, other: dict) -> tuple | None:
+        """The circle of the G02/G03 block now moving from ``self.pos``: ``(ia, ib, clockwise, centre, r)``
+        with ``(ia, ib)`` the plane's axes (:data:`PLANE_PAIRS`), and either ``centre`` the centre's machine
+        coordinates on them (``r`` None) or ``r`` the signed radius (``centre`` None); None for an arc
+        this reader gives no circle (under a transform, neither R nor a centre offset).  [0i] "Circular
+        interpolation": "I_, J_, K_: distance from the start point to the center of an arc with sign"
+        (incremental whatever G90/G91), "R_: arc radius (an arc of more than 180 degrees: a negative
+        value)"; R takes precedence over I, J, K written with it."""
+        if self.xf is not None:
+            return None
+        ia, ib = self.PLANE_PAIRS[self.plane]
+        cw = self.motion == 2
+        if "R" in other:
+            return (ia, ib, cw, None, other["R"] * self.unit())
+        la, lb = "IJK"[ia], "IJK"[ib]
+        if la not in other and lb not in other:
+            return None
+        u = self.unit()
+        centre = (self.pos[ia] + other.get(la, F(0)) * u, self.pos[ib] + other.get(lb, F(0)) * u)
+        return (ia, ib, cw, centre, None)
 
     # -------------------------------------------------------------------------- coordinate transforms
 
@@ -1212,6 +1263,14 @@ class Reader:
 def reference_motion(text: str, machine: RefMachine, *, block_delete: bool = False) -> list:
     """The motion of ``text``: ``[(kind, (x, y, z)), ...]`` in machine coordinates (mm)."""
     return Reader(machine, block_delete=block_delete).run(text)
+
+
+def reference_motion_with_circles(text: str, machine: RefMachine, *, block_delete: bool = False) -> tuple:
+    """``(motion, circles, lengths)``: :func:`reference_motion`'s list, by the index of each arc in it its circle
+    (``Reader.circle``: plane axes, direction, centre or signed radius; None where the reader gives none), and the
+    tool length offset on Z in force at the end of each motion."""
+    reader = Reader(machine, block_delete=block_delete)
+    return reader.run(text), dict(reader.arcs), list(reader.lengths)
 
 
 # ---------------------------------------------------------------------------------------------- lathe

@@ -9,7 +9,10 @@ The generator keeps to programs whose meaning the manual fixes.  The classes of 
 written: G43/G44/G49 with a Z word in G91 (class 1), a bare H in G43/G44 mode (2), G92 in G91 (3), lathe
 G50 while a tool offset is active (4, ``lathe_programs``), ``/1``..``/9`` (5: the differential draws which
 switches are on), M00/M01 (6), G92.1 with axis words, G84.2/G84.3 with K, G51 P without a decimal point,
-transforms in G20 (the reference findings N1-N4).  Repeat counts stay small (L, K at most 3: class 7's
+transforms in G20 (the reference findings N1-N4).  ``p_closures`` writes lines that run again for the compiled
+closures of nczones/gcode/fanuc/expr.py (a G65 macro looping over its locals with SIN/COS/TAN/ATAN/SQRT/ABS/
+FUP/FIX/ROUND/MOD, comparisons, a nested WHILE and IF, called with L, or from a WHILE loop with computed arguments
+beside an M98), keeping away from the divergences listed there (finding N5).  Repeat counts stay small (L, K at most 3: class 7's
 bounds are tested in tests/gcode/fanuc/test_stops_and_bounds.py; the reference reader is slow).
 """
 
@@ -58,6 +61,7 @@ PRODUCTIONS: dict[str, set[str]] = {
     "vacant": {"#"},
     "computed_g": {"G"},
     "plain_run": {"G01"},
+    "closures": {"G65", "M98", "M99", "WHILE", "DO", "END", "IF", "#"},
 }
 
 CYCLES = ("73", "74", "76", "81", "82", "83", "84", "84.2", "84.3", "85", "86", "89")
@@ -558,13 +562,78 @@ def p_plain_run(draw, st_: GenState, *, force: bool = False):
                                   if a in axes))
 
 
+#: x and y of the closure macro's points (locals: #1 passes, #2 a length, #3 an angle step, #10 the pass)
+#: (no value that can be a half increment in exact arithmetic and lie just under it as a double, as 1.5 * 1.017,
+#: 1.017 * 0.5 + 1 or #2 * SIN[30]: nczones rounds the double, the reference its 15 digits; a length #2 of at most 3
+#: decimals times an integer, a sum of such, and values with no exact half increment only;
+#: test_reference_findings.py, N5)
+_CLOSURE_X = ("#2 * COS[#10 * #3]", "[#2 + #10] * TAN[#3 / 2]", "SQRT[#2 * #2 + #10]", "ABS[#10 - 1.5] * 2 * #2",
+              "FUP[#2 * #10 / 3]", "ATAN[#10 + 1]/[#2] / 10", "FIX[#2 * 1.7] - #10", "[#10 MOD 2] + #2",
+              "ROUND[#2 / 3 * #10]", "#2 * 2 * #10", "-#2 + #10 * 0.5")
+_CLOSURE_Y = ("#2 * SIN[#10 * #3] + 1", "#2 * COS[#3] - #10", "ATAN[#2, #10 + 1] / 20", "SQRT[ABS[#2 - #10]]",
+              "#10 * #2 / 7", "[#2 - FUP[#10 / 2]] * 2", "#10 + 0.25")
+#: the loop's condition on the pass #10 and the count #1
+#: (no relations joined by AND/OR: nczones joins ``#1 GT 0 AND #2 LT 5`` as specs/fanuc.md writes it and refuses a
+#: relation inside brackets, the reference reads AND/OR by the operators' precedence and joins bracketed ones)
+_CLOSURE_WHILE = ("#10 LT #1", "#10 LE [#1 - 1]", "#1 GT #10", "#10 NE #1", "#10 - #1 LT 0", "#1 - #10 GE 1",
+                  "[#10 + 1] * #2 LE #1 * #2")
+
+
+def _closure_macro(draw, st_: GenState) -> int:
+    """A G65 macro that loops over its local variables with functions (the compiled closures of
+    nczones/gcode/fanuc/expr.py: locals with a number, SIN/COS, doubles only in conditions), a nested loop and an
+    IF; its number."""
+    num = 9000 + st_.next_sub
+    st_.next_sub += 1
+    fx, fy = draw(st.sampled_from(_CLOSURE_X)), draw(st.sampled_from(_CLOSURE_Y))
+    # the length and the step come as B and C or, from the loop below, as Z and X (#26, #24)
+    body = ["IF [#2 EQ #0] THEN #2 = #26", "IF [#3 EQ #0] THEN #3 = #24", "#10 = 0", f"WHILE [{draw(st.sampled_from(_CLOSURE_WHILE))}] DO2", f"#12 = {fx}", f"#14 = {fy}",
+            f"IF [#10 EQ {draw(st.integers(0, 2))}] THEN #14 = #14 + {draw(st.sampled_from(['0.5', '1', '-2.25']))}",
+            "G90 G01 X#12 Y#14 F100."]
+    if draw(st.booleans()):
+        body += ["#15 = 0", "WHILE [#15 LT 2] DO3", "G91 G01 Z[#15 * 0.5 - 0.25]", "#15 = #15 + 1", "END3"]
+    body += ["#10 = #10 + 1", "END2", "M99"]
+    st_.subs.append((num, body))
+    return num
+
+
+def p_closures(draw, st_: GenState):
+    """Lines that run again: a G65 macro of :func:`_closure_macro` called once, L2 times or from a WHILE loop of
+    the main program (with expressions as its arguments, an M98 subprogram beside it).  An argument computed by an
+    expression is an integer (A) or a length on the increment's grid (X, Z): the reference rounds a computed
+    argument of another letter to an integer, nczones to the increment (the manuals say neither)."""
+    if st_.depth:
+        return
+    num = _closure_macro(draw, st_)
+    # no step whose multiples (the loop's #10 * #3, #3 up to 3 steps) reach 30, 120 or 150 degrees: SIN[30] is the
+    # double 0.49999999999999994, and a length times it can lie just under a half increment, which nczones rounds
+    # down and the reference (15 digits) up (test_reference_findings.py, N5; and TAN[90] is 1.6e16)
+    step = draw(st.sampled_from(["45.", "22.5", "36.", "72.5", "17.5", "54."]))
+    r = _lit(draw, 1, 20, inch=st_.inch, decimals=draw(st.integers(1, 3)))
+    if draw(st.booleans()):
+        # A with a decimal point: in the increment setting an argument without one is a count of increments in
+        # nczones (specs/fanuc.md, ADP), which the reference does not model
+        st_.lines.append(f"G65 P{num}{draw(st.sampled_from(['', ' L2']))} A{draw(st.integers(1, 3))}. B{r} C{step}")
+    else:
+        sub = st_.next_sub
+        st_.next_sub += 1
+        st_.subs.append((sub, [f"G91 G01 X{_lit(draw, -3, 3, inch=st_.inch, decimals=1)} F100.", "M99"]))
+        st_.lines += ["#150 = 0", f"WHILE [#150 LT {draw(st.integers(1, 3))}] DO1",
+                      f"G65 P{num} A[#150 + 1] Z[{r} - #150 * 2] X[{step} * [#150 + 1]]", f"M98 P{sub}",
+                      "#150 = #150 + 1", "END1"]
+    st_.absolute = False  # the macro's last motion block is in G90 or G91: say it again
+    st_.lines.append(draw(st.sampled_from(["G90", "G91"])))
+    st_.absolute = st_.lines[-1] == "G90"
+
+
 GENERATORS = {"move": p_move, "arc": p_arc, "tool_length": p_tool_length, "work": p_work, "g10": p_g10,
               "g52": p_g52, "g92": p_g92, "g53": p_g53, "reference": p_reference, "dwell": p_dwell,
               "cycle": p_cycle, "macro": p_macro, "m98": p_m98, "g65": p_g65, "g66": p_g66,
               "skip": p_skip, "mcodes": p_mcodes, "planes": p_planes, "g27_g29": p_g27_g29, "g33": p_g33,
               "g93": p_g93, "scaling": p_scaling, "mirror": p_mirror, "rotation": p_rotation, "polar": p_polar,
               "m97": p_m97, "m99p": p_m99p, "state_read": p_state_read, "g91_work": p_g91_work,
-              "cycle_tl": p_cycle_tl, "vacant": p_vacant, "computed_g": p_computed_g, "plain_run": p_plain_run}
+              "cycle_tl": p_cycle_tl, "vacant": p_vacant, "computed_g": p_computed_g, "plain_run": p_plain_run,
+              "closures": p_closures}
 SAFE = ("move", "arc", "dwell", "mcodes")
 
 
@@ -586,6 +655,24 @@ def fanuc_programs(draw, max_statements: int = 8):
     _body(draw, st_, draw(st.integers(1, max_statements)))
     st_.lines.append(draw(st.sampled_from(["M30", "M30", "M02"])))
     st_.lines.extend(st_.local_subs)
+    for num, body in st_.subs:
+        st_.lines.append(f"O{num:04d}")
+        st_.lines.extend(body)
+    st_.lines.append("%")
+    return "\n".join(st_.lines) + "\n"
+
+
+@st.composite
+def closure_programs(draw, max_statements: int = 3):
+    """A main program of :func:`p_closures` statements (and straight moves between them): the compiled closures'
+    share of :func:`fanuc_programs`, drawn alone."""
+    st_ = GenState(inch=draw(st.integers(0, 4)) == 0)
+    st_.lines += ["%", "O0001", "G20" if st_.inch else "G21", "G90 G17 G40 G49 G80 G94 G54 F500.", "G00 X0 Y0 Z0"]
+    for _ in range(draw(st.integers(1, max_statements))):
+        p_closures(draw, st_)
+        if draw(st.booleans()):
+            p_move(draw, st_)
+    st_.lines.append("M30")
     for num, body in st_.subs:
         st_.lines.append(f"O{num:04d}")
         st_.lines.extend(body)

@@ -5,10 +5,12 @@
   motion (kind and exact machine end point of every motion), in both decimal point input settings and, per
   example, a drawn combination of the optional block skip switches /1, /2, /3, /9 that are on.  CI size: ``FANUC_REF_EXAMPLES`` (default 300); the long profile
   (``-m long``): ``FANUC_REF_LONG`` (default 20,000).
+* ``test_closures_move_as_the_reference`` — the same on the compiled closures' programs alone
+  (``closure_programs``; ``FANUC_REF_CLOSURE_EXAMPLES``, default 40).
 * ``test_grammar_covers_every_modelled_code`` — every code specs/fanuc.md marks modelled has a production in
   the grammar, or a line in ``NOT_GENERATED`` saying why not.
-* ``test_mutations_are_caught`` (long) — three deliberate breaks of the interpreter (an offset rule, a modal
-  restore, a count rounding) each make the CI-size differential fail.
+* ``test_mutations_are_caught`` (long) — four deliberate breaks of the interpreter (an offset rule, a modal
+  restore, a count rounding, SIN in a compiled closure) each make the CI-size differential fail.
 """
 
 from __future__ import annotations
@@ -22,11 +24,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from .ref_differential import compare, compare_lathe, first_difference
-from .ref_grammar import PRODUCTIONS, fanuc_programs, lathe_programs
+from .ref_grammar import PRODUCTIONS, closure_programs, fanuc_programs, lathe_programs
 
 SPEC = Path(__file__).resolve().parents[3] / "specs" / "fanuc.md"
 EXAMPLES = int(os.environ.get("FANUC_REF_EXAMPLES", "300"))
 LONG = int(os.environ.get("FANUC_REF_LONG", "20000"))
+CLOSURE_EXAMPLES = int(os.environ.get("FANUC_REF_CLOSURE_EXAMPLES", "40"))
 LATHE_EXAMPLES = int(os.environ.get("FANUC_REF_LATHE_EXAMPLES", "100"))
 LATHE_LONG = int(os.environ.get("FANUC_REF_LATHE_LONG", "5000"))
 
@@ -37,14 +40,14 @@ NOT_GENERATED: dict[str, str] = {
 }
 
 
-def _differential(n: int, seed: int | None = None):
+def _differential(n: int, seed: int | None = None, programs=None):
     failures: list = []
     counts = {"same": 0, "skip": 0, "differ": 0, "reject": 0}
 
     @settings(max_examples=n, deadline=None, database=None, derandomize=seed is None,
               suppress_health_check=list(HealthCheck))
     # which optional block skip switches are on (BDT1..BDT9): each example one combination, drawn
-    @given(fanuc_programs(), st.sampled_from(["calculator", "increment"]),
+    @given(fanuc_programs() if programs is None else programs, st.sampled_from(["calculator", "increment"]),
            st.frozensets(st.sampled_from([1, 2, 3, 9])))
     def check(text, dpi, block_delete):
         o = compare(text, dpi, block_delete)
@@ -63,6 +66,14 @@ def test_nczones_moves_as_the_reference():
     check, counts, _ = _differential(EXAMPLES)
     check()
     # the comparison must not be vacuous: most programs are compared, not skipped
+    assert counts["same"] >= 0.9 * sum(counts.values()), counts
+
+
+def test_closures_move_as_the_reference():
+    """The compiled closures' programs alone (ref_grammar.closure_programs: G65 macros looping over their locals
+    with functions, called with L or from a WHILE loop), ``FANUC_REF_CLOSURE_EXAMPLES`` (default 40)."""
+    check, counts, _ = _differential(CLOSURE_EXAMPLES, programs=closure_programs())
+    check()
     assert counts["same"] >= 0.9 * sum(counts.values()), counts
 
 
@@ -210,13 +221,28 @@ def _mutate_counts_truncate(monkeypatch):
     monkeypatch.setattr(FanucRunner, "address_value", broken)
 
 
+def _mutate_closure_sine(monkeypatch):
+    """A compiled closure (nczones/gcode/fanuc/expr.py ``_trigonometric``, a line run again) takes SIN's
+    argument in radians: the first run of a line is right, the loop's later runs are not."""
+    import math
+
+    from nczones.gcode.fanuc import expr
+
+    monkeypatch.setitem(expr._TRIGONOMETRY, "sin", lambda r: math.sin(r * 180.0 / math.pi))
+
+
 @pytest.mark.long
-@pytest.mark.parametrize("mutation", [_mutate_g44_adds, _mutate_g66_one_shot, _mutate_counts_truncate],
-                         ids=["offset-rule-G44", "modal-restore-G66", "count-rounding-L-K"])
+@pytest.mark.parametrize("mutation", [_mutate_g44_adds, _mutate_g66_one_shot, _mutate_counts_truncate,
+                                      _mutate_closure_sine],
+                         ids=["offset-rule-G44", "modal-restore-G66", "count-rounding-L-K", "closure-SIN"])
 def test_mutations_are_caught(monkeypatch, mutation):
-    """Each mutation makes the CI-size differential (the same derandomized examples) fail."""
+    """Each mutation makes the CI-size differential (the same derandomized examples) fail (the closure mutation:
+    ``test_closures_move_as_the_reference``'s)."""
     mutation(monkeypatch)
-    check, counts, failures = _differential(EXAMPLES)
+    if mutation is _mutate_closure_sine:  # the closures' programs (a few of the 300 only)
+        check, counts, failures = _differential(CLOSURE_EXAMPLES, programs=closure_programs())
+    else:
+        check, counts, failures = _differential(EXAMPLES)
     with pytest.raises(AssertionError):
         check()
     assert failures, counts
