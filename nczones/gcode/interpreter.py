@@ -2004,12 +2004,7 @@ class Interpreter:
             off_a, off_b = self.off[ia], self.off[ib]
         tol = self.arc_tolerance
         if rw is not None:
-            if self.arc_rule == "grbl":
-                tol = _ZERO  # Grbl refuses an R arc whose chord is longer than 2R at all (h_x2_div_d < 0)
-            elif self.dialect == "linuxcnc" and tol > LINUXCNC_RADIUS_TOLERANCE:
-                # LinuxCNC refuses an R short by more than its own 0.00005 inch whatever the tolerance set here
-                # ("Arc radius too small to reach end point": R4.99873 from X0 to X10 runs, R4.99872 does not)
-                tol = LINUXCNC_RADIUS_TOLERANCE
+            tol = self._r_arc_tolerance()
             r = self.length_mm(rw.value)
             if sa == ea and sb == eb:
                 raise self.error("GC303", "R-format arc whose end point equals its start point: the centre is undefined (use I/J/K for a full circle)", rw)
@@ -2052,11 +2047,7 @@ class Interpreter:
             ca, cb = sa + iv, sb + jv
         r0 = (sa - ca) ** 2 + (sb - cb) ** 2
         r1 = (ea - ca) ** 2 + (eb - cb) ** 2
-        if r0 == 0 or r1 == 0:
-            raise self.error("GC304", "zero-radius arc: the centre coincides with the start or end point", iw or jw)
-        if self.dialect == "linuxcnc" and min(r0, r1) < LINUXCNC_ZERO_RADIUS_SQ:
-            raise self.error("GC304", f"zero-radius arc: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm; "
-                             "LinuxCNC refuses a radius below 0.00005 inch (0.00127 mm)", iw or jw)
+        self._refuse_zero_radius(r0, r1, iw or jw)
         rejected = (linuxcnc_rejects_arc(r0, r1, self.inch) if self.arc_rule == "linuxcnc"
                     else r0 != r1 and sqrt_diff_exceeds(r0, r1, tol))
         if rejected:
@@ -2072,6 +2063,25 @@ class Interpreter:
         centre = self._rot_fwd(ca, cb) if rotated else (ca, cb)
         self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
                    turns=turns, end_deps=deps)
+
+    def _r_arc_tolerance(self) -> Fraction:
+        """How far (mm) an R arc's radius may fall short of half its chord before the arc is refused (GC302)."""
+        if self.arc_rule == "grbl":
+            return _ZERO  # Grbl refuses an R arc whose chord is longer than 2R at all (h_x2_div_d < 0)
+        if self.dialect == "linuxcnc" and self.arc_tolerance > LINUXCNC_RADIUS_TOLERANCE:
+            # LinuxCNC refuses an R short by more than its own 0.00005 inch whatever the tolerance set here
+            # ("Arc radius too small to reach end point": R4.99873 from X0 to X10 runs, R4.99872 does not)
+            return LINUXCNC_RADIUS_TOLERANCE
+        return self.arc_tolerance
+
+    def _refuse_zero_radius(self, r0: Fraction, r1: Fraction, word: Word | None) -> None:
+        """GC304 for an I/J/K arc whose squared start or end radius ``r0``/``r1`` is zero, or (LinuxCNC) below its
+        0.00005 inch."""
+        if r0 == 0 or r1 == 0:
+            raise self.error("GC304", "zero-radius arc: the centre coincides with the start or end point", word)
+        if self.dialect == "linuxcnc" and min(r0, r1) < LINUXCNC_ZERO_RADIUS_SQ:
+            raise self.error("GC304", f"zero-radius arc: radius at start {_fmt_sqrt(r0)} mm, at end {_fmt_sqrt(r1)} mm; "
+                             "LinuxCNC refuses a radius below 0.00005 inch (0.00127 mm)", word)
 
     # ------------------------------------------------------------------ G28/G30, G10, G92, G52
     def _tool_change_moves(self) -> None:

@@ -18,6 +18,7 @@ EXCEPTIONS = {
     "packaging": "the package as a whole",
     "notebooks": "the notebooks of notebooks/",
     "machines": "the shared test machines",
+    "bench": "the benchmark scripts of bench/ (outside the package)",
 }
 
 
