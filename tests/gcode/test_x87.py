@@ -63,3 +63,24 @@ def test_the_angles_a_loop_computes():
         x = k * 0.9
         for name, fn in (("sin", x87.sin_degrees), ("cos", x87.cos_degrees), ("tan", x87.tan_degrees)):
             assert fn(x) == oracle(name, x), (name, x)
+
+
+def _argument_by_round64(x: float) -> tuple[int, int]:
+    """``(x * M_PIl) / 180.0`` by the generic rounding :func:`x87._round64`, twice (the unrolled one's reference)."""
+    m, e = math.frexp(abs(x))
+    sig, exp = x87._round64(int(m * 2.0**53) * x87.PI64, e - 53 - 62, False)
+    quotient, remainder = divmod(sig << 72, 180)
+    return x87._round64(quotient, exp - 72, remainder != 0)
+
+
+@settings(max_examples=400, deadline=None, derandomize=True)
+@given(degrees.filter(lambda x: x != 0.0))
+def test_the_unrolled_argument_rounds_as_round64(x):
+    assert x87._argument(x) == _argument_by_round64(x)
+
+
+def test_the_argument_at_ties():
+    # whole degrees and tenths include products and quotients exactly half way (rounded to even or by the sticky bit)
+    for k in range(1, 20001):
+        for x in (k * 1.0, k * 0.1, -k * 0.25):
+            assert x87._argument(x) == _argument_by_round64(x), x
