@@ -118,6 +118,13 @@ def _argument(x: float) -> tuple[int, int]:
     (above half: up; below: down; at half: up exactly when bit ``k`` is odd).  The division's remainder is a
     sticky bit or-ed into the lowest bit of the 128-bit quotient, 64 bits below the rounding position: it
     turns an exact half into just above it and changes no other case.
+
+    Neither rounding meets an exact half, so the even bit and the sticky bit never decide (they are kept: the
+    rule, one operation each).  The product: ``PI64`` is odd, so its dropped ``k`` bits are a half exactly when
+    the significand ``M`` has ``k - 1`` trailing zeros: ``M = 2**52`` has 52 and is rounded by 52 (exact), ``M = 3 *
+    2**51`` has 51 and is rounded by 53 (its product has 117 bits).  The quotient: with ``q = 45a + b``
+    its low 70 bits are those of ``floor(b * 2**70 / 45)``, a fraction ``b / 45`` whose binary digits repeat
+    (period 12) and are never a one followed by zeros (``test_x87.test_no_quotient_is_half_way``).
     """
     m, e = math.frexp(abs(x))
     p = int(m * 9007199254740992.0) * PI64
