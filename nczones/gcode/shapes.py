@@ -31,6 +31,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from operator import itemgetter
+from types import FunctionType
 from typing import Any
 
 from ..frozen import builder
@@ -424,8 +425,41 @@ def _executor(spans: list[tuple[int, int]], pl: ParsedLine, leaf_of: dict[int, s
              "_STOP_M": M_CONTROL, "G_MACRO_CALLS": G_MACRO_CALLS, "EvalError": EvalError, "UNSET": UNSET, "pair": pair, "binary_op": binary_op, "unary_op": unary_op,
              "q_add": q_add, "q_sub": q_sub, "q_mul": q_mul, "q_div": q_div, "_atan": atan_degrees,
              "_IDX": _IDX, "_index": _index}
-    exec(compile("\n".join(lines) + "\n", "<line shape run>", "exec"), scope)  # noqa: S102  # reprs only
-    return scope["run"], scope["columns"]
+    return _compiled_when_called("\n".join(lines) + "\n", scope)
+
+
+#: ``run`` and ``columns`` of a shape before their first call: they compile the shape's source (``_COMPILE_NOW``,
+#: a name in each shape's own scope), then run what it defines.
+_STUB_SOURCE = ("def run(P, params):\n    return _COMPILE_NOW()[0](P, params)\n"
+                "def columns(P, line):\n    return _COMPILE_NOW()[1](P, line)\n")
+_STUB_CODE: list[Any] = []  # the code objects of the two stubs, compiled at the first shape
+
+
+def _compiled_when_called(source: str, scope: dict[str, Any]) -> tuple[Callable[..., Any], Callable[..., Any]]:
+    """``(run, columns)`` as ``source`` defines them in ``scope``, compiled at the first call of either (issue 36:
+    the double pass reads a shape's source, never runs it; compiling ``run`` was most of its start).
+
+    Each is a function in ``scope`` whose code, at that first call, becomes the compiled function's own: the same
+    code with the same globals, so that every later call, from wherever the function object was stored (RUNS,
+    a shape), is the compiled function's, without a wrapper.  The source is straight-line code (each statement
+    one operation on names: :class:`_Emit`'s nesting is in the order of its lines), which ``compile`` takes at
+    any length; what could not be emitted raised :class:`_Unshaped` before, as when it was compiled at once.
+    """
+    if not _STUB_CODE:
+        stubs: dict[str, Any] = {}
+        exec(compile(_STUB_SOURCE, "<line shape stub>", "exec"), stubs)  # noqa: S102  # a constant source
+        _STUB_CODE.extend((stubs["run"].__code__, stubs["columns"].__code__))
+    run = FunctionType(_STUB_CODE[0], scope, "run")
+    columns = FunctionType(_STUB_CODE[1], scope, "columns")
+
+    def compile_now() -> tuple[Callable[..., Any], Callable[..., Any]]:
+        exec(compile(source, "<line shape run>", "exec"), scope)  # noqa: S102  # reprs only
+        run.__code__, columns.__code__ = scope["run"].__code__, scope["columns"].__code__
+        scope["run"], scope["columns"] = run, columns
+        return run, columns
+
+    scope["_COMPILE_NOW"] = compile_now
+    return run, columns
 
 
 #: Parameter numbers of literals (``#12``): the text's index, or -1 when it is not within 0.0001 of an

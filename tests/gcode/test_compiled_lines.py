@@ -255,3 +255,28 @@ def test_corpus_programs_run_the_same_with_compiled_lines(monkeypatch):
     differ = [rel for rel, text in programs
               if _run_blocks(text, True, monkeypatch) != _run_blocks(text, False, monkeypatch)]
     assert differ == []
+
+
+def _stage(run) -> str:
+    """Where a shape's run stands: its code's file name (the stub before the first call, then the run's own)."""
+    return run.__code__.co_filename
+
+
+def test_a_shape_run_is_compiled_at_its_first_call():
+    """Issue 36: a shape's run is compiled when first called (the double pass never calls it), and is then
+    the compiled function itself (the same object, as RUNS holds it)."""
+    from nczones.gcode.linuxcnc.doubles import double_pass
+
+    shapes.clear()
+    text = "G21 G90 G54 F100\n#1 = 0\no1 while [#1 LT 3]\nG1 X[#1 * 0.5] Y[#1 + 1]\n#1 = [#1 + 1]\no1 endwhile\nM30\n"
+    double_pass(text, MACHINE, max_iterations=100)
+    runs = [hit[0] for hit in shapes.RUNS.values()]
+    assert runs and {_stage(run) for run in runs} == {"<line shape stub>"}
+    blocks = list(iter_blocks(text, "t.ngc"))
+    assert [b.values for b in blocks if b.letters == "GXY"] == [
+        (Fraction(1), Fraction(0), Fraction(1)), (Fraction(1), Fraction(1, 2), Fraction(2)),
+        (Fraction(1), Fraction(1), Fraction(3))]
+    ran = [run for run in runs if _stage(run) == "<line shape run>"]
+    assert ran and all(shapes.RUNS[k][0] in ran or _stage(shapes.RUNS[k][0]) == "<line shape stub>"
+                       for k in shapes.RUNS)
+    shapes.clear()

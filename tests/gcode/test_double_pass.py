@@ -9,6 +9,7 @@ accept, and on programs that it must decline (the reason each one is outside the
 
 from __future__ import annotations
 
+import math
 import os
 from fractions import Fraction
 
@@ -18,6 +19,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from nczones.gcode import interpret_text
+from nczones.gcode.expr import binary_op
+from nczones.gcode.linuxcnc import doubles
 from nczones.gcode.linuxcnc.doubles import Declined, DoublePath, double_pass
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
@@ -416,3 +419,24 @@ def test_a_position_beyond_the_double_range_is_declined():
     huge = "9" * 400  # its double is infinite; the line has the shape of the one before, whose step reads it
     with pytest.raises(Declined, match="a position beyond the double range"):
         double_pass(f"G21 G90 G54 F100\n#1 = 1\nG1 X1 Y1\nG1 X{huge} Y2\n", MACHINE, max_iterations=5)
+
+
+_OPERANDS = st.one_of(st.floats(), st.sampled_from([0.0, -0.0, 1e-4, -1e-4, 5e-5, 1.0, 2.0, math.inf, -math.inf]))
+
+
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(st.sampled_from(sorted(doubles._COMPARE)), _OPERANDS, _OPERANDS)
+def test_doubles_compare(op, a, b):
+    # the comparisons the double pass emits inline give binary_op's value (NaN and infinities included)
+    got = eval("1.0 if " + doubles._COMPARE[op].format(a="a", b="b") + " else 0.0", {}, {"a": a, "b": b})  # noqa: S307
+    assert got == binary_op(op, (a, None), (b, None))[0]
+    assert set(doubles._COMPARE) == {"gt", "ge", "lt", "le", "eq", "ne", "and", "or", "xor"}
+
+
+def test_an_assignment_line_calls_no_plan():
+    # a line that only sets parameters runs no plan; the program's motions are the full path's
+    text = ("G21 G90 G54 F100\n#1 = 0\n#2 = 0\no1 while [#1 LT 5]\n#2 = [#2 + [#1 GT 2] + [#1 EQ 1]]\n"
+            "#1 = [#1 + 1]\nG1 X#2 Y[#1 XOR 0]\no1 endwhile\nM30\n")
+    p = double_pass(text, MACHINE, max_iterations=100)
+    assert list(p.columns[0]) == [0.0, 0.0, 1.0, 1.0, 2.0, 3.0]
+    assert list(p.columns[1]) == [0.0, 1.0, 1.0, 1.0, 1.0, 1.0]

@@ -63,3 +63,35 @@ def test_the_angles_a_loop_computes():
         x = k * 0.9
         for name, fn in (("sin", x87.sin_degrees), ("cos", x87.cos_degrees), ("tan", x87.tan_degrees)):
             assert fn(x) == oracle(name, x), (name, x)
+
+
+def _argument_by_round64(x: float) -> tuple[int, int]:
+    """``(x * M_PIl) / 180.0`` by the generic rounding :func:`x87._round64`, twice (the unrolled one's reference)."""
+    m, e = math.frexp(abs(x))
+    sig, exp = x87._round64(int(m * 2.0**53) * x87.PI64, e - 53 - 62, False)
+    quotient, remainder = divmod(sig << 72, 180)
+    return x87._round64(quotient, exp - 72, remainder != 0)
+
+
+@settings(max_examples=400, deadline=None, derandomize=True)
+@given(degrees.filter(lambda x: x != 0.0))
+def test_the_unrolled_argument_rounds_as_round64(x):
+    assert x87._argument(x) == _argument_by_round64(x)
+
+
+def test_no_quotient_is_half_way():
+    # the quotient's low 64 (or 65) bits depend on q mod 45 only, and none is exactly one half (x87._argument)
+    for b in range(45):
+        low = (b << 70) // 45
+        for extra in (64, 65):
+            assert low & ((1 << extra) - 1) != 1 << (extra - 1), b
+    for m in (1 << 52, 3 << 51):  # the significands with 51 or 52 trailing zeros: the product is not half way
+        p = m * x87.PI64
+        extra = 53 if p >> 116 else 52
+        assert p & ((1 << extra) - 1) != 1 << (extra - 1)
+
+
+def test_the_argument_of_whole_degrees_and_tenths():
+    for k in range(1, 20001):
+        for x in (k * 1.0, k * 0.1, -k * 0.25):
+            assert x87._argument(x) == _argument_by_round64(x), x

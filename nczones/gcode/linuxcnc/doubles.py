@@ -87,6 +87,7 @@ from ..codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from ..expr import (
     MAX_PARAMETER,
     SUB_PARAMS,
+    TOLERANCE_EQUAL,
     TRIG_DEGREES,
     EvalError,
     atan_degrees,
@@ -766,6 +767,8 @@ class _Pass:
         body: list[str] = []
         vals, codes = _words(em, pl.words, body, _const_code)
         writes = _assigns(em, pl.assigns, body, self._pconst)
+        if not pl.words:  # parameters set, no word: the plan does nothing (its ``return False``), not called
+            return self._exec(body, writes, vals, None, {})
         plan = self._plan(_letters(pl.words), tuple(int(c) for c in codes))
         return self._exec(body, writes, vals, None, {"PLAN": plan})
 
@@ -852,6 +855,8 @@ class _Pass:
         writes = _assigns(em, pl.assigns, body, index)
         letters = _letters(pl.words)
         if not codes:  # one plan for every line (made when the first is run: a plan may decline)
+            if not letters:  # parameters set, no word: the plan does nothing (its ``return False``), not called
+                return body, writes, vals, None, {}
             return body, writes, vals, None, {"PLAN": self._plan(letters, ())}
         made: dict[Any, Any] = {}
 
@@ -887,11 +892,18 @@ class _Pass:
     def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict) -> Any:
         """``step(P)``: the body, the writes, then the line's plan on its values (True: the program ends)."""
         lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    {w}" for w in writes]
+        if not extra:  # no plan: a line that only sets parameters
+            lines.append("    return False")
+            return self._compiled(lines, extra)
         if key is None:
             lines.append("    plan = PLAN")
         else:
             lines += [f"    plan = PLANS.get({key})", "    if plan is None:", f"        plan = PLAN_OF({key})"]
         lines.append(f"    return plan(({''.join(v + ', ' for v in values)}))")
+        return self._compiled(lines, extra)
+
+    def _compiled(self, lines: list[str], extra: dict) -> Any:
+        """The function ``step`` of source ``lines``, in the pass's environment and ``extra``."""
         scope = dict(self.env)
         scope.update(extra)
         exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
@@ -1316,6 +1328,16 @@ def _assigns(em: _Emit, assigns: Any, body: list[str], index_src: Any) -> list[s
     return writes
 
 
+#: The comparisons and logic operators as :func:`~nczones.gcode.expr.binary_op` tests them (its value 1.0 when
+#: the test holds, else 0.0; NaN compares as there): emitted inline, ``test_doubles_compare`` holds them equal.
+_COMPARE = {
+    "gt": "{a} > {b}", "ge": "{a} >= {b}", "lt": "{a} < {b}", "le": "{a} <= {b}",
+    "eq": f"abs({{a}} - {{b}}) < {TOLERANCE_EQUAL!r}", "ne": f"abs({{a}} - {{b}}) >= {TOLERANCE_EQUAL!r}",
+    "and": "not ({a} == 0.0 or {b} == 0.0)", "or": "({a} != 0.0 or {b} != 0.0)",
+    "xor": "(({a} == 0.0) != ({b} == 0.0))",
+}
+
+
 class _Emit:
     """Straight-line code computing a tree's double as :func:`~nczones.gcode.expr.evaluate` does."""
 
@@ -1349,6 +1371,8 @@ class _Emit:
                 if op == "/":
                     out.append(f"if {b} == 0.0: raise D('a division by zero')")
                 out += [f"{d} = {a} {op} {b}", f"if {d} - {d}: raise D('not a finite number')"]
+            elif op in _COMPARE:  # binary_op's own test, without its dispatch (its 1.0 or 0.0)
+                out.append(f"{d} = 1.0 if {_COMPARE[op].format(a=a, b=b)} else 0.0")
             else:
                 out.append(f"{d} = binary_op({op!r}, ({a}, None), ({b}, None))[0]")
         elif tag == NEG:

@@ -3,9 +3,10 @@
 ``interp_execute.cc`` computes ``SIN[x]`` as ``sin((x * M_PIl) / 180.0)``: ``M_PIl`` is a long double, so the
 product, the quotient and ``sinl`` run in the x87's 80-bit format (64-bit significand, rounded to nearest
 even) and only the result becomes a double; ``ASIN``, ``ACOS`` and ``ATAN`` compute ``(r * 180.0) / M_PIl``
-with ``r`` a double.  The two roundings to 64 bits and the final one to 53 are made here exactly, on
-integers; ``sinl``, ``cosl`` and ``tanl`` are the C library's (the functions LinuxCNC calls), through
-:mod:`ctypes`, with the 80-bit arguments and results passed as bytes.  No numpy: the double pass of a
+with ``r`` a double.  The two roundings to 64 bits are made here exactly, on integers (the argument is
+passed as the bytes of an 80-bit ``c_longdouble``); ``sinl``, ``cosl`` and ``tanl`` are the C library's (the
+functions LinuxCNC calls), through :mod:`ctypes`, whose ``c_longdouble`` result becomes a Python float by C's
+conversion of the long double to double, the one rounding to 53 bits LinuxCNC's assignment makes.  No numpy: the double pass of a
 program with trigonometry loads none.
 
 Invariant (``tests/gcode/test_x87.py``): on x86-64 every function returns the double numpy's 80-bit
@@ -38,7 +39,7 @@ def _libm() -> tuple | None:
     if machine not in ("x86_64", "amd64") or ctypes.sizeof(ctypes.c_longdouble) != 16:
         return None
     try:
-        lib = ctypes.CDLL("libm.so.6")
+        lib = ctypes.PyDLL("libm.so.6")  # the GIL kept: sinl calls back into nothing
     except OSError:
         from ctypes.util import find_library
 
@@ -46,26 +47,25 @@ def _libm() -> tuple | None:
         if name is None:
             return None
         try:
-            lib = ctypes.CDLL(name)
+            lib = ctypes.PyDLL(name)
         except OSError:
             return None
-
-    class LongDouble(ctypes.c_longdouble):  # a subclass: ctypes hands it back as is, not as a Python float
-        pass
 
     out = []
     for fname in ("sinl", "cosl", "tanl"):
         fn = getattr(lib, fname, None)
         if fn is None:
             return None
-        fn.argtypes = [LongDouble]
-        fn.restype = LongDouble
+        # the argument an 80-bit c_longdouble built by pack_into; the result a Python float: ctypes converts
+        # the long double to double in C (an x87 store to 64 bits, rounded once to nearest even), the cast
+        # LinuxCNC's assignment to a double makes.  No argtypes: the instance is passed as is, without from_param.
+        fn.restype = ctypes.c_longdouble
         out.append(fn)
     # an x87 long double in memory: significand, sign and exponent, padding (struct: loaded here, issue 36)
-    return LongDouble, *out, struct.Struct("<QH6x").pack_into, struct.Struct("<QH").unpack_from
+    return ctypes.c_longdouble, *out, struct.Struct("<QH6x").pack_into
 
 
-#: ``[LongDouble, sinl, cosl, tanl, pack_into, unpack_from]``, loaded at the first call that needs them (importing :mod:`ctypes`
+#: ``[c_longdouble, sinl, cosl, tanl, pack_into]``, loaded at the first call that needs them (importing :mod:`ctypes`
 #: costs about 2 ms of every start-up, and most programs compute no SIN, COS or TAN); ``[None]`` where the host
 #: has no 80-bit ``sinl`` (then SIN, COS and TAN are the double formulas).
 _LIB: list[Any] = []
@@ -114,29 +114,42 @@ def _argument(x: float) -> tuple[int, int]:
 
     :func:`_round64` twice, unrolled for the sizes that occur: the 53-bit significand of ``x`` times ``M_PIl``
     has 116 or 117 bits, that product rounded to 64 bits and shifted by 72, divided by 180, 128 or 129.
+    Each rounding to nearest even is one sum: ``(n + 2**(k-1) - 1 + bit k of n) >> k`` rounds ``n * 2**-k``
+    (above half: up; below: down; at half: up exactly when bit ``k`` is odd).  The division's remainder is a
+    sticky bit or-ed into the lowest bit of the 128-bit quotient, 64 bits below the rounding position: it
+    turns an exact half into just above it and changes no other case.
+
+    Neither rounding meets an exact half, so the even bit and the sticky bit never decide (they are kept: the
+    rule, one operation each).  The product: ``PI64`` is odd, so its dropped ``k`` bits are a half exactly when
+    the significand ``M`` has ``k - 1`` trailing zeros: ``M = 2**52`` has 52 and is rounded by 52 (exact), ``M = 3 *
+    2**51`` has 51 and is rounded by 53 (its product has 117 bits).  The quotient: with ``q = 45a + b``
+    its low 70 bits are those of ``floor(b * 2**70 / 45)``, a fraction ``b / 45`` whose binary digits repeat
+    (period 12) and are never a one followed by zeros (``test_x87.test_no_quotient_is_half_way``).
     """
     m, e = math.frexp(abs(x))
     p = int(m * 9007199254740992.0) * PI64
-    extra = 53 if p >> 116 else 52
-    q = p >> extra
-    rest = p - (q << extra)
-    half = 1 << (extra - 1)
-    if rest > half or (rest == half and q & 1):
-        q += 1
-        if q == _TOP:
-            q >>= 1
-            extra += 1
+    if p >> 116:
+        q, extra = (p + _H52 + ((p >> 53) & 1)) >> 53, 53
+    else:
+        q, extra = (p + _H51 + ((p >> 52) & 1)) >> 52, 52
+    if q >> 64:  # rounded up to 2**64
+        q >>= 1
+        extra += 1
     quotient, remainder = divmod(q << 72, 180)
-    extra2 = 65 if quotient >> 128 else 64
-    q2 = quotient >> extra2
-    rest = quotient - (q2 << extra2)
-    half = 1 << (extra2 - 1)
-    if rest > half or (rest == half and (remainder or q2 & 1)):
-        q2 += 1
-        if q2 == _TOP:
-            q2 >>= 1
-            extra2 += 1
+    if remainder:
+        quotient |= 1
+    if quotient >> 128:
+        q2, extra2 = (quotient + _H64 + ((quotient >> 65) & 1)) >> 65, 65
+    else:
+        q2, extra2 = (quotient + _H63 + ((quotient >> 64) & 1)) >> 64, 64
+    if q2 >> 64:
+        q2 >>= 1
+        extra2 += 1
     return q2, e - 115 + extra - 72 + extra2
+
+
+#: ``_Hn`` is ``2**n - 1``: the ``2**(k-1) - 1`` of a rounding of :func:`_argument` by ``k = n + 1`` bits
+_H51, _H52, _H63, _H64 = (1 << 51) - 1, (1 << 52) - 1, (1 << 63) - 1, (1 << 64) - 1
 
 
 def _to_double(significand: int, exponent: int) -> float:
@@ -164,21 +177,12 @@ def _call(which: int, x: float) -> float:
         return float(_DOUBLE_FORMULAS[which - 1]((x * math.pi) / 180.0))
     last = _last
     if x == last[0]:
-        arg = last[1]
-    else:
-        sig, exp = _argument(x)
-        arg = long_double()
-        lib[4](arg, 0, sig, (exp + 16446) | (0x8000 if x < 0.0 else 0))
-        last[0], last[1] = x, arg
-    sig, se = lib[5](lib[which](arg))
-    biased = se & 0x7FFF
-    if biased == 0x7FFF:
-        return math.nan
-    if sig and sig.bit_length() + biased - 16446 >= -1021:
-        value = math.ldexp(float(sig), biased - 16446)  # a normal double (|value| <= 2**16384 does not occur)
-    else:
-        value = _to_double(sig, (biased or 1) - 16446)
-    return -value if se & 0x8000 else value
+        return lib[which](last[1])  # type: ignore[no-any-return]
+    sig, exp = _argument(x)
+    arg = long_double()
+    lib[4](arg, 0, sig, (exp + 16446) | (0x8000 if x < 0.0 else 0))
+    last[0], last[1] = x, arg
+    return lib[which](arg)  # type: ignore[no-any-return]
 
 
 def sin_degrees(x: float) -> float:
