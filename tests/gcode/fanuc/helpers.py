@@ -79,3 +79,43 @@ def ends(text: str, machine=None, **kw) -> list[tuple]:
 
 def F(x) -> Fraction:
     return Fraction(str(x))
+
+
+def probe_route(text: str, machine, file: str, *, runs: bool = True, route: bool = True) -> tuple:
+    """``verify`` on ``text`` with the box route watched.
+
+    Returns ``(result, tested, taken)``: the result, or the GcodeError verify raised; the boxes the route
+    tested, each ``(lo, hi, tool length)`` with ``lo``/``hi`` the ``(axis, value)`` pairs sorted by axis name;
+    the lines the box run reader took.  ``runs``: the reader on (``boxrun.BOX_RUNS``); ``route``: the route
+    on (``fanucboxes.ROUTE``).
+    """
+    import pytest
+
+    from nczones.errors import GcodeError
+    from nczones.gcode.fanuc import boxrun
+    from nczones.prover import fanucboxes, verify_text
+
+    tested: list = []
+    taken = [0]
+    real_fits, real_read = fanucboxes.box_fits, boxrun.read_box_run
+
+    def fits(allowed, lo, hi, margin, tl):
+        tested.append((tuple(sorted(lo.items())), tuple(sorted(hi.items())), tl))
+        return real_fits(allowed, lo, hi, margin, tl)
+
+    def read(runner, text, pos, lineno):
+        got = real_read(runner, text, pos, lineno)
+        if got is not None:
+            taken[0] += got[1] - lineno
+        return got
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(boxrun, "BOX_RUNS", runs)
+        mp.setattr(boxrun, "read_box_run", read)
+        mp.setattr(fanucboxes, "ROUTE", route)
+        mp.setattr(fanucboxes, "box_fits", fits)
+        try:
+            result = verify_text(text, machine, file=file)
+        except GcodeError as e:
+            result = e
+    return result, tested, taken[0]

@@ -35,7 +35,7 @@ from hypothesis import strategies as st
 from nczones.errors import GcodeError
 from nczones.gcode.fanuc import boxrun
 from nczones.prover import fanucboxes, verify_text
-from tests.gcode.fanuc.helpers import mill
+from tests.gcode.fanuc.helpers import mill, probe_route
 
 _TRAVEL = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
            'max = { X = "150", Y = "90", Z = "0" }\n')
@@ -136,33 +136,13 @@ def _programs(draw, size: int = 30) -> tuple[str, int]:
 
 def _run(text: str, runs: bool, route: bool = True, machine=None) -> tuple[tuple, list, int]:
     """(the report, the boxes the route tested, the lines the reader took) of ``verify`` on ``text``."""
-    tested: list = []
-    taken = [0]
-    real_fits, real_read = fanucboxes.box_fits, boxrun.read_box_run
-
-    def fits(allowed, lo, hi, margin, tl):
-        tested.append((tuple(sorted(lo.items())), tuple(sorted(hi.items())), tl))
-        return real_fits(allowed, lo, hi, margin, tl)
-
-    def read(runner, text, pos, lineno):
-        got = real_read(runner, text, pos, lineno)
-        if got is not None:
-            taken[0] += got[1] - lineno
-        return got
-
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(boxrun, "BOX_RUNS", runs)
-        mp.setattr(boxrun, "read_box_run", read)
-        mp.setattr(fanucboxes, "ROUTE", route)
-        mp.setattr(fanucboxes, "box_fits", fits)
-        try:
-            r = verify_text(text, machine or _MACHINE, file="t.nc")
-        except GcodeError as e:
-            return ("error", tuple((d.code, d.message, str(d.span)) for d in e.diagnostics)), tested, taken[0]
+    r, tested, taken = probe_route(text, machine or _MACHINE, "t.nc", runs=runs, route=route)
+    if isinstance(r, GcodeError):
+        return ("error", tuple((d.code, d.message, str(d.span)) for d in r.diagnostics)), tested, taken
     stats = dict(r.stats)
     return ((r.verdict.label, tuple(r.violations), tuple(r.reasons), r.truncated, tuple(r.notes), stats["segments"],
              r.file, stats.get("fanuc_boxes"), (r.extra or {}).get("counts"), (r.profile or {}).get("blocks")),
-            tested, taken[0])
+            tested, taken)
 
 
 def _agree(text: str, machine=None) -> tuple[str, int]:

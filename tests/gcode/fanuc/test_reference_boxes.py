@@ -37,11 +37,11 @@ from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
 from nczones.gcode.fanuc import boxrun
-from nczones.prover import fanucboxes, verify_text
+from nczones.prover import fanucboxes
 from tests.machines import box_zone
 from tests.oracles.fanuc_ref import RefError, RefUnknown, reference_motion_with_circles
 
-from .helpers import mill
+from .helpers import mill, probe_route
 from .ref_boxes import reference_box
 from .ref_differential import ref_machine
 from .ref_grammar import fanuc_programs
@@ -69,28 +69,12 @@ def _mill(dpi: str, zone: str = _WIDE):
 
 
 def route_run(text: str, machine, *, runs: bool = True, route: bool = True) -> tuple:
-    """``(result, boxes tested, lines the reader took)`` of ``verify`` on ``text``."""
-    tested: list = []
-    taken = [0]
-    real_fits, real_read = fanucboxes.box_fits, boxrun.read_box_run
-
-    def fits(allowed, lo, hi, margin, tl):
-        tested.append((tuple(lo[a] for a in _AXES), tuple(hi[a] for a in _AXES), tl))
-        return real_fits(allowed, lo, hi, margin, tl)
-
-    def read(runner, text, pos, lineno):
-        got = real_read(runner, text, pos, lineno)
-        if got is not None:
-            taken[0] += got[1] - lineno
-        return got
-
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(boxrun, "BOX_RUNS", runs)
-        mp.setattr(boxrun, "read_box_run", read)
-        mp.setattr(fanucboxes, "ROUTE", route)
-        mp.setattr(fanucboxes, "box_fits", fits)
-        result = verify_text(text, machine, file="plain.nc")
-    return result, tested, taken[0]
+    """``(result, boxes tested, lines the reader took)`` of ``verify`` on ``text`` (a G-code error raised); a box's
+    ``lo`` and ``hi`` are the values of X, Y and Z."""
+    result, tested, taken = probe_route(text, machine, "plain.nc", runs=runs, route=route)
+    if isinstance(result, GcodeError):
+        raise result
+    return result, [(tuple(v for _a, v in lo), tuple(v for _a, v in hi), tl) for lo, hi, tl in tested], taken
 
 
 def _decided(result) -> bool:
