@@ -130,8 +130,9 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
 
     An end that may lie on the ray from the centre through the start (their cross product within its error
     of 0; the dot product is then about ``r0 r1``, clearly positive or negative) is declined unless ``turn``:
-    LinuxCNC moves a whole turn there, which the full path proves for an end equal to the start and answers
-    ``unknown`` for otherwise (a spiral lap, ``prover/core.py``); the doubles cannot tell the two apart.
+    LinuxCNC moves a whole turn there, which the full path proves by the circle for an end equal to the start
+    and otherwise (a spiral lap) by the box of the centre +- the larger radius (``Prover._decide_whole_turn``);
+    the doubles cannot tell the two apart, so the pass leaves both to the full path.
 
     The radii's doubles are within ``err / 2`` of the exact radii; an arc is taken when it is inside the full
     path's rule (exact for a fixed tolerance, LinuxCNC's in doubles) by ``2 err`` and ``1e-9`` of the radius

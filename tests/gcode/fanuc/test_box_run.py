@@ -6,7 +6,10 @@ today's lanes read it):
 * ``verify`` with the reader (``boxrun.BOX_RUNS``) and without it (the language layer and the plain lanes,
   ``FanucInterpreter.lane`` / ``_arc_lane``, writing the same ``BoxRows``) give the same verdict, violations,
   reasons, notes, counts (blocks, motions by kind) and stats;
-* the box the route tests (every ``box_fits`` call: the box and the tool length) is the same, call for call;
+* the box the route tests (every ``box_fits`` call: the box and the tool length) is the same, call for call, on
+  this file's programs (not in general: a straight move whose letters the lane meets first is the general
+  lane's segment and ends a chunk, which the reader puts in its run instead; there only the whole motion's
+  box is the same, as test_reference_boxes.py compares it);
 * without the route (``fanucboxes.ROUTE`` off: the full path, or the vectorized fast path past 512 lines) the
   verdict, violations, reasons, notes and motion count are the same;
 * the reader does take the plain lines (counted), so the comparisons are not vacuous.
