@@ -458,16 +458,19 @@ class Prover:
         to end, so :func:`~nczones.prover.geometry.whole_turn_box` holds the path (and the path of every other
         reading of such an arc, its docstring says why); when that box fits every zone (margin and tool length
         as :func:`~nczones.prover.exact.box_fits` applies them, tip zones already shifted by :meth:`_check`) the
-        motion is proved.  Otherwise, with parameter ranges (the ends move, and with them the ray's condition),
-        or with ``engine="z3"`` (no solver encoding of the turn) the arc stays ``unknown``: no witness is
-        reported, since the spiral's points are not modelled exactly.  The column screen
+        motion is proved.  With parameter ranges (the ends move, and with them the ray's condition) it is
+        decided as an arc whose shape changes with them (:meth:`_check_arc_varying`): witnesses only at concrete
+        values, the proof only by an enclosure that holds the arc at every value of the ranges, a whole turn
+        included (the centre's range +- the largest radius).  With ``engine="z3"`` (no solver encoding of the
+        turn) the arc stays ``unknown``.  No witness is reported for the turn itself, since the spiral's points
+        are not modelled exactly.  The column screen
         (:func:`nczones.prover.screen.screen_chunk`) boxes such an arc by a larger box (the whole circle grown
         by twice the radii's difference), so it never proves one this path would not.
         """
         if self.engine != "auto":
             why = "the solver has no encoding of it (engine z3)"
         elif self.param_relevant(seg):
-            why = "its ends move with the parameter ranges"
+            return self._check_arc_varying(seg)
         else:
             lo, hi = whole_turn_box(seg)
             if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin,

@@ -2,14 +2,15 @@
 
 LinuxCNC (posemath ``pmCircleInit``) moves a whole spiral turn there (the radii differ within the arc
 tolerance).  The one-by-one path proves such an arc by its whole turn's box (``geometry.whole_turn_box``: the
-centre +- the larger radius, the other axes from start to end) when that box fits, and otherwise, with
-parameter ranges or with ``engine="z3"`` answers ``unknown`` (never a witness: the spiral's points are not
-modelled exactly).  Checked here:
+centre +- the larger radius, the other axes from start to end) when that box fits, with parameter ranges by
+the enclosure over the ranges (``Prover._check_arc_varying``), and otherwise, or with ``engine="z3"``, answers
+``unknown`` (never a witness: the spiral's points are not modelled exactly).  Checked here:
 
 - the box holds the path LinuxCNC moves: 200-bit points of the whole turn at both radii
   (``tests.gcode.test_double_pass.arc_points``, which computes them from the segment alone);
-- ``safe`` when the box fits; ``unknown`` when a zone cuts the box but not the start..end sweep, with a parameter
-  range, with ``engine="z3"``; and one by one, through the column screen, past 512 motions (the fast path) and
+- ``safe`` when the box fits; ``unknown`` when a zone cuts the box but not the start..end sweep, or with
+  ``engine="z3"``; with a parameter range, decided by the enclosure over the range (never by one value's box,
+  also where the arc is on the ray at one end of the range only); and one by one, through the column screen, past 512 motions (the fast path) and
   on the Fanuc box route alike;
 - a drawn on-ray arc is ``safe`` only if every point of its turn fits the drawn travel box (an independent check
   of the verdict: mpmath points at both radii against the box's faces).
@@ -114,12 +115,50 @@ def test_unknown_when_a_zone_cuts_the_box_only():
         assert any("whole spiral turn" in x.message and "does not fit" in x.message for x in r.reasons), r.reasons
 
 
-def test_unknown_with_parameter_ranges_and_with_z3_alone():
-    text = _program("60", _spiral())
+@pytest.mark.parametrize("start, verdict", [("60", Verdict.SAFE), ("63", Verdict.UNKNOWN)])
+def test_with_parameter_ranges_the_enclosure_over_the_ranges_decides(start, verdict):
+    """With a range the turn is decided as an arc whose shape moves (``Prover._check_arc_varying``): proved by
+    the centre's range +- the largest radius, else ``unknown``; a range proved ``safe`` is ``safe`` at each of
+    its values, each value proved on its own (the range's ends and the middle)."""
+    text = _program(start, _spiral(start=start, end=OUT[start]))
     r = verify_text(text, WALL, params=["G54.X=-0.001..0.001"])
-    assert r.verdict is Verdict.UNKNOWN and any("parameter ranges" in x.message for x in r.reasons), r.reasons
+    assert r.verdict is verdict, r.reasons
+    if verdict is Verdict.SAFE:
+        for value in ("-0.001", "0", "0.001"):
+            shifted = verify_text(text, WALL, params=[f"G54.X={value}..{value}"])
+            assert shifted.verdict is Verdict.SAFE, (value, shifted.reasons)
+    else:
+        assert any("enclosure over the whole ranges" in x.message for x in r.reasons), r.reasons
+
+
+def test_unknown_with_z3_alone():
+    text = _program("60", _spiral())
     r = verify_text(text, WALL, engine="z3")
     assert r.verdict is Verdict.UNKNOWN and any("engine z3" in x.message for x in r.reasons), r.reasons
+
+
+#: an arc about (65, 25) of radius 2 from (63, 25): at the range's zero end its end (63.001, 25) is on the start's
+#: ray (LinuxCNC moves a whole turn, out to X67, through the wall at X66); elsewhere in the range it is a tiny
+#: sweep or a turn of a spiral that is not on the ray.  The start moves with ``start.Y`` (it is the reference
+#: point), the end with ``G54.Y`` (the start is fixed by a G53 move).
+_RAY_AT_AN_END = {"start": "G21 G90 G17 G61 F600\nG2 X{x} Y25 I2 J0\nM30\n",
+                  "G54": "G21 G90 G17 G61 F600\nG53 G1 X{s} Y25 Z100\nG2 X{x} Y25 I2 J0\nM30\n"}
+
+
+@pytest.mark.parametrize("which", ["start", "G54"])
+@pytest.mark.parametrize("span", ["-0.01..0", "0..0.01", "-0.01..0.01"])
+def test_a_range_whose_arc_lands_on_the_start_s_ray_at_one_value_is_never_safe(which, span):
+    """A segment instantiated at one parameter combination reaches ``_decide_whole_turn`` as a concrete arc;
+    one combination's box proof must never stand for the range.  At the value where the end lies on the ray the
+    machine crosses the wall (the turn reaches X67), so the verdict is ``unknown`` or ``unsafe`` — and with the
+    wall out of reach (the same arcs 35 mm further from it) the range is proved, so the test can tell them."""
+    param = f"{which}.Y={span}"
+    text = _RAY_AT_AN_END[which].format(x="63.001", s="63")
+    assert verify_text(text, WALL, params=[param]).verdict is not Verdict.SAFE
+    away = parse_machine(machine_text("xyz_spiral_wall", set={"machine.reference.X": "28"}))
+    far = _RAY_AT_AN_END[which].format(x="28.001", s="28")
+    r = verify_text(far, away, params=[param])
+    assert r.verdict is Verdict.SAFE, r.reasons
 
 
 @pytest.mark.parametrize("machine, start, verdict", [(WALL, "60", Verdict.SAFE), (CORNER, "60", Verdict.UNKNOWN),
