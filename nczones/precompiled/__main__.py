@@ -128,11 +128,12 @@ def main() -> int:
     wanted = {TARGET: source(texts()), REGEXES: regex_source(patterns())}
     stale = 0
     for target, text in wanted.items():
-        if "--write" in sys.argv:
-            target.write_text(text, encoding="utf-8")
-            print(f"wrote {target}")
-            continue
         current = target.read_text(encoding="utf-8") if target.exists() else ""
+        if "--write" in sys.argv:
+            if current != text:  # an unchanged file keeps its mtime (and its cached bytecode)
+                target.write_text(text, encoding="utf-8")
+            print(f"{'wrote' if current != text else 'unchanged:'} {target}")
+            continue
         if current != text:
             print(f"{target} is not current: run python -m nczones.precompiled --write", file=sys.stderr)
             stale += 1

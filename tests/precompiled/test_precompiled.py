@@ -13,6 +13,7 @@ import copy
 import dataclasses
 import importlib
 import json
+import os
 import subprocess
 import sys
 import types
@@ -142,6 +143,26 @@ def test_the_generated_module_is_current():
     r = subprocess.run([sys.executable, "-m", "nczones.precompiled", "--check"], capture_output=True, text=True,
                        cwd=ROOT, timeout=120)
     assert r.returncode == 0, r.stderr
+
+
+def test_write_leaves_a_current_module_untouched_and_rewrites_a_stale_one(tmp_path, monkeypatch, capsys):
+    """``--write`` rewrites only what changed: an unchanged module keeps its mtime (and its cached bytecode)."""
+    import shutil
+
+    import nczones.precompiled.__main__ as generator
+
+    current, stale = tmp_path / "functions.py", tmp_path / "regexes.py"
+    shutil.copyfile(generator.TARGET, current)
+    stale.write_text("# stale\n", encoding="utf-8")
+    os.utime(current, ns=(10**18, 10**18))
+    monkeypatch.setattr(generator, "TARGET", current)
+    monkeypatch.setattr(generator, "REGEXES", stale)
+    monkeypatch.setattr(sys, "argv", ["nczones.precompiled", "--write"])
+    assert generator.main() == 0
+    assert current.stat().st_mtime_ns == 10**18
+    assert stale.read_text(encoding="utf-8") == Path(generator.__file__).with_name("regexes.py").read_text(
+        encoding="utf-8")
+    assert f"unchanged: {current}" in capsys.readouterr().out
 
 
 #: A description of every dataclass of nczones, printed as JSON by a fresh interpreter: the class's attributes,
