@@ -238,7 +238,8 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     does: the double quotient ``|d| * (1 / step)`` (within ``2**-29`` of the exact one) decides that, else the
     exact remainder (:func:`_near_tie`, also for a shadow), and only nearer than ``2**-20``, or beyond ``2**24``
     increments, are the readings computed and compared.  A shadow on the grid below
-    :data:`SHADOW_ON_GRID_BOUND` is kept: its readings are within ``1e-6`` increments of it.
+    :data:`SHADOW_ON_GRID_BOUND` is kept: its readings are within 0.05 increments of it (``5e-15 * 1e8``
+    program units, a step at least 1e-5: IS-C inch).
 
     >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
     (Fraction(6173, 500), Fraction(-3, 1))
