@@ -234,9 +234,9 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     Soundness: every reading differs from the double's exact value ``d`` by less than ``5.1e-15 |d|`` (the
     shadow rounds to ``d``: half an ulp; a 15-digit decimal: half a unit in the 15th digit, ``5e-15 |d|``; a
     product or quotient in doubles: an ulp of the result); below ``2**24`` increments that is under ``2**-23``
-    increments, so where ``d``'s quotient is farther than ``2**-20`` from a half every reading rounds as ``d``
-    does: the double quotient ``|d| * (1 / step)`` (within ``2**-29`` of the exact one) decides that, else the
-    exact remainder (:func:`_near_tie`, also for a shadow), and only nearer than ``2**-20``, or beyond ``2**24``
+    increments, so where ``d``'s quotient is farther than ``2**-20`` from a half every reading (the shadow too)
+    rounds as ``d`` does: the double quotient ``|d| * (1 / step)`` (within ``2**-29`` of the exact one) decides
+    that, else the exact remainder (:func:`_near_tie`), and only nearer than ``2**-20``, or beyond ``2**24``
     increments, are the readings computed and compared.  A shadow on the grid below
     :data:`SHADOW_ON_GRID_BOUND` is kept: its readings are within 0.05 increments of it (``5e-15 * 1e8``
     program units, a step at least 1e-5: IS-C inch).
@@ -253,11 +253,16 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     q: Fraction | None = value[1]
     sn, sd = (step._numerator, step._denominator) if _SLOTS else _ratio(step)  # type: ignore[attr-defined]
     d = value[0]
-    if q is None:
+    if q is not None:
+        qn, qd = _ratio(q)
+        # already a multiple of the step (a decimal literal, an exact sum): every reading stands on it
+        if sn == 1 and sd % qd == 0 and (d is None or -1e8 < d < 1e8):  # (SHADOW_ON_GRID_BOUND, as constants)
+            return q
+    if d is not None:
         if sn == 1:
             # |d| / step in doubles: below 2**24 its error is under 2**-29, so away from a half (by 2**-20) the
-            # nearest integer is that of the exact quotient and of every reading; at a half, or beyond, the
-            # exact path below decides
+            # nearest integer is that of the exact quotient, of the shadow's and of every reading; at a half, or
+            # beyond, the exact path below decides
             x = abs(d) * sd
             if x < _FAST_INCREMENTS:
                 m = _floor(x)
@@ -265,13 +270,9 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
                 if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH:
                     n = m + 1 if frac > 0.5 else m
                     return to_fraction(-n if d < 0 else n, sd)
-        # the double's exact value (its ratio is in lowest terms), without building a Fraction first
-        qn, qd = d.as_integer_ratio()
-    else:
-        qn, qd = _ratio(q)
-        # already a multiple of the step (a decimal literal, an exact sum): every reading stands on it
-        if sn == 1 and sd % qd == 0 and (d is None or -SHADOW_ON_GRID_BOUND < d < SHADOW_ON_GRID_BOUND):
-            return q
+        if q is None:
+            # the double's exact value (its ratio is in lowest terms), without building a Fraction first
+            qn, qd = d.as_integer_ratio()
     # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)
     num, den = abs(qn) * sd, qd * sn
     n = (2 * num + den) // (2 * den)

@@ -573,6 +573,7 @@ class FanucRunner:
         runner, lane, state = self, self.lane, self.state
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
         usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
+        bound = SHADOW_ON_GRID_BOUND
 
         def nc_line() -> Any:
             if runner.modal_call is not None:
@@ -595,7 +596,7 @@ class FanucRunner:
                         q = v[1]
                         # round_to's first case (a multiple of the step, kept as it is) without the call
                         vals[i] = q if q is not None and sd and not sd % denominator_of(q) and \
-                            -SHADOW_ON_GRID_BOUND < v[0] < SHADOW_ON_GRID_BOUND else round_to(v, step)
+                            -bound < v[0] < bound else round_to(v, step)
             except _EVAL_ERRORS:
                 return None
             if dropped:
@@ -736,6 +737,7 @@ class FanucRunner:
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
         usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
         jump = body if target is source else [body, None]  # (as m98_op's)
+        bound = SHADOW_ON_GRID_BOUND
 
         def g65() -> Any:
             values = [VACANT] * (LOCALS + 1)  # the macro's local level: its arguments, the others vacant
@@ -757,9 +759,8 @@ class FanucRunner:
                         if step is _UNITS:
                             step, sd = inc, usd
                         q = v[1]
-                        if q is None or not sd or sd % denominator_of(q) or not \
-                                -SHADOW_ON_GRID_BOUND < v[0] < SHADOW_ON_GRID_BOUND:  # else kept as round_to keeps it
-                            q = round_to(v, step)
+                        if q is None or not sd or sd % denominator_of(q) or not -bound < v[0] < bound:
+                            q = round_to(v, step)  # else kept as round_to keeps it
                     values[n] = (double_of(q), q)
             except _EVAL_ERRORS:
                 return None
