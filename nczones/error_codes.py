@@ -207,6 +207,8 @@ CATALOGUE: tuple[Code, ...] = (
     Code("GC394", _U, _GS, "M99 in the main program, which restarts it forever (GC304 until issue 34)"),
     Code("GC395", _U, _GS, "controller state nczones does not know: a state parameter, HAL pin or INI value "
                            "read, or a state parameter assigned (GC305 until issue 34)"),
+    Code("GC399", _U, _FA, "a Fanuc macro value at half an increment whose readings (its 15-digit decimal, the "
+                           "double scaled in doubles, the exact value) round to different increments"),
     # -- ZN: machine file
     Code("ZN099", _E, _MF, "the machine file cannot be read (missing, a directory, no permission, not UTF-8)"),
     Code("ZN100", _E, _MF, "not valid TOML (or a controller configuration given as the machine file)"),

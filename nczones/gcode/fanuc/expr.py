@@ -53,7 +53,7 @@ from ..lexer import fraction_raw, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
-           "SystemVariableUnknown", "variable_index"]
+           "SystemVariableUnknown", "RoundingNotCertain", "readings", "SHADOW_ON_GRID_BOUND", "variable_index"]
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
 VACANT = (0.0, Fraction(0))
@@ -198,38 +198,153 @@ def double_of(q: Fraction) -> float:
 
 _floor = math.floor
 _NEAR_HALF_LOW, _NEAR_HALF_HIGH = 0.5 - 2.0**-20, 0.5 + 2.0**-20
+#: Below this many increments (``|value| / step``) round_to's double test decides: see :func:`round_to`.
+_FAST_INCREMENTS = 16777216.0  # 2**24
+#: A value already on the step's grid (its shadow a multiple of it) below this magnitude, in program units, stands
+#: on that multiple in every reading (:func:`round_to`); the plain-move lane's inline test uses it too.
+SHADOW_ON_GRID_BOUND = 1e8
+
+
+class RoundingNotCertain(SystemVariableUnknown):
+    """A macro value whose defensible readings round to different multiples of an address's step (GC399).
+
+    The verdict is ``unknown`` at the word (it travels as :class:`SystemVariableUnknown` does); ``reason``
+    names every reading and the multiple it rounds to.
+    """
+
+    def __init__(self, reason: str):
+        super().__init__("GC399", reason)
 
 
 def round_to(value: tuple, step: Fraction) -> Fraction:
-    """The exact value rounded to a multiple of ``step``, halves away from zero.
+    """The value rounded to a multiple of ``step``, halves away from zero; :class:`RoundingNotCertain` when
+    the readings a control could make of a macro double round to different multiples.
+
+    ``value`` is ``(double, shadow)``: a macro value (the double the control holds and the exact rational it
+    stands for, or None), or ``(None, q)`` for an exact rational (a transformed point, a literal: rounded as
+    it is, never in doubt).  How a control turns a macro double into increments no manual says; the
+    :func:`readings` are the ways that fit what the manuals do say: the 15-significant-digit decimal ([15i]
+    "Custom macro variables are decimal numbers with a precision of 15 digits"), the double scaled to
+    increments in double arithmetic, and the exact decimal the value stands for (a control computing in
+    decimals; nczones's shadow).  The double's exact binary value is not one of them: the 0i manual's ROUND
+    example (``#1 = 1.2345``, ``X-#1`` moves 1.235) contradicts it (the double is 1.23449999999999993...).
+    When the readings round to one multiple that is the result; when not (N5 of
+    ``tests/gcode/fanuc/test_reference_findings.py``: ``1.5 * 1.017``, 1.525 or 1.526), the position is not known.
+
+    Soundness: every reading differs from the double's exact value ``d`` by less than ``5.1e-15 |d|`` (the
+    shadow rounds to ``d``: half an ulp; a 15-digit decimal: half a unit in the 15th digit, ``5e-15 |d|``; a
+    product or quotient in doubles: an ulp of the result); below ``2**24`` increments that is under ``2**-23``
+    increments, so where ``d``'s quotient is farther than ``2**-20`` from a half every reading (the shadow too)
+    rounds as ``d`` does: the double quotient ``|d| * (1 / step)`` (within ``2**-29`` of the exact one) decides
+    that, else the exact remainder (:func:`_near_tie`), and only nearer than ``2**-20``, or beyond ``2**24``
+    increments, are the readings computed and compared.  A shadow on the grid below
+    :data:`SHADOW_ON_GRID_BOUND` is kept: its readings are within 0.05 increments of it (``5e-15 * 1e8``
+    program units, a step at least 1e-5: IS-C inch).
 
     >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
     (Fraction(6173, 500), Fraction(-3, 1))
+    >>> round_to((1.2345, None), Fraction(1, 1000))  # 15 digits: 1.2345, in doubles 1234.5 increments
+    Fraction(247, 200)
+    >>> round_to((1.5 * 1.017, None), Fraction(1, 1000))
+    Traceback (most recent call last):
+    ...
+    nczones.gcode.fanuc.expr.RoundingNotCertain: a macro value at half an increment (0.001): ...
     """
     q: Fraction | None = value[1]
     sn, sd = (step._numerator, step._denominator) if _SLOTS else _ratio(step)  # type: ignore[attr-defined]
-    if q is None:
-        d = value[0]
+    d = value[0]
+    if q is not None:
+        qn, qd = _ratio(q)
+        # already a multiple of the step (a decimal literal, an exact sum): every reading stands on it
+        if sn == 1 and sd % qd == 0 and (d is None or -1e8 < d < 1e8):  # (SHADOW_ON_GRID_BOUND, as constants)
+            return q
+    if d is not None:
         if sn == 1:
-            # |d| / step in doubles: below 2**30 its error is under 2**-24, so away from a half (by 2**-20) the
-            # nearest integer is that of the exact quotient; at a half, or beyond, the exact path below decides
+            # |d| / step in doubles: below 2**24 its error is under 2**-29, so away from a half (by 2**-20) the
+            # nearest integer is that of the exact quotient, of the shadow's and of every reading; at a half, or
+            # beyond, the exact path below decides
             x = abs(d) * sd
-            if x < 1073741824.0:
+            if x < _FAST_INCREMENTS:
                 m = _floor(x)
-                frac = x - m  # exact (x and m are doubles below 2**30)
+                frac = x - m  # exact (x and m are doubles below 2**24)
                 if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH:
                     n = m + 1 if frac > 0.5 else m
                     return to_fraction(-n if d < 0 else n, sd)
-        # the double's exact value (its ratio is in lowest terms), without building a Fraction first
-        qn, qd = d.as_integer_ratio()
-    else:
-        qn, qd = _ratio(q)
-    if sn == 1 and sd % qd == 0:  # already a multiple of the step (a decimal literal, an exact sum)
-        return q if q is not None else to_fraction(qn, qd)
+        if q is None:
+            # the double's exact value (its ratio is in lowest terms), without building a Fraction first
+            qn, qd = d.as_integer_ratio()
     # k = q / step = (qn * sd) / (qd * sn); n = floor(|k| + 1/2)
     num, den = abs(qn) * sd, qd * sn
     n = (2 * num + den) // (2 * den)
+    if d is not None and _near_tie(num, den, n):
+        return _agreed(value, step)
     return to_fraction(-n * sn if qn < 0 else n * sn, sd)
+
+
+def _near_tie(num: int, den: int, n: int) -> bool:
+    """Whether ``k = num / den`` (increments, ``n`` its rounding) is within ``2**-20`` of a half, or at least
+    ``2**24``: where a reading of the double might round elsewhere (:func:`round_to`)."""
+    below = 2 * num - (2 * n - 1) * den  # 2 den (k - (n - 1/2)) >= 0
+    above = (2 * n + 1) * den - 2 * num  # 2 den ((n + 1/2) - k) > 0
+    return (min(below, above) << 19) <= den or num >= den << 24
+
+
+def readings(value: tuple, step: Fraction) -> list[tuple[str, Fraction]]:
+    """The values in program units a control could read a macro value ``(double, shadow)`` as, for an address
+    of increment ``step``, each with its name (:func:`round_to`): the exact value it stands for (the shadow, when
+    kept), the double's 15-significant-digit decimal ([15i] 17 "Limitation"; the reading of
+    ``tests/oracles/fanuc_ref.py``) and the double scaled to increments in doubles (times ``1 / step`` and
+    divided by ``step``).
+
+    >>> for name, r in readings((1.5 * 1.017, None), Fraction(1, 1000)):
+    ...     print(f"{name}: {float(r)!r} -> {float(_half_away(r, Fraction(1, 1000)))}")
+    its 15-digit decimal, 1.5255,: 1.5255 -> 1.526
+    the double times 1000 in doubles, 1525.4999999999998 increments,: 1.5254999999999999 -> 1.525
+    the double divided by 0.001 in doubles, 1525.4999999999998 increments,: 1.5254999999999999 -> 1.525
+    """
+    d, q = value
+    out = [] if q is None else [(f"the exact value it stands for, {_decimal(q)},", q)]
+    fifteen = Fraction(format(d, ".15g")) if d else Fraction(0)
+    out.append((f"its 15-digit decimal, {_decimal(fifteen)},", fifteen))
+    for name, x in ((f"times {_decimal(1 / step)}", d * float(1 / step)), (f"divided by {_decimal(step)}",
+                                                                           d / float(step))):
+        out.append((f"the double {name} in doubles, {x!r} increments,", Fraction(x) * step))
+    return out
+
+
+def _half_away(r: Fraction, step: Fraction) -> Fraction:
+    k = abs(r) / step
+    n = _floor(k + Fraction(1, 2))
+    return (-n if r < 0 else n) * step
+
+
+def _agreed(value: tuple, step: Fraction) -> Fraction:
+    """The multiple of ``step`` every one of the :func:`readings` of ``value`` rounds to; else
+    :class:`RoundingNotCertain` naming each reading and where it rounds."""
+    got = [(name, r, _half_away(r, step)) for name, r in readings(value, step)]
+    if len({g[2] for g in got}) == 1:
+        return got[0][2]
+    shown = "; ".join(f"{name} rounds to {_decimal(m)}" for name, _r, m in got)
+    raise RoundingNotCertain(
+        f"a macro value at half an increment ({_decimal(step)}): the double {value[0]!r} (exactly "
+        f"{_decimal(Fraction(value[0]))}): {shown}; which reading the control rounds is not known "
+        "(specs/fanuc.md, \"A value at half an increment\")")
+
+
+def _decimal(r: Fraction) -> str:
+    """``r`` as a decimal: exactly when 28 significant digits hold it, else those and an ellipsis.
+
+    >>> _decimal(Fraction(3051, 2000)), _decimal(Fraction(1, 3))
+    ('1.5255', '0.3333333333333333333333333333...')
+    """
+    from decimal import Decimal, localcontext
+
+    with localcontext() as c:
+        c.prec = 28
+        shown = Decimal(r.numerator) / Decimal(r.denominator)
+    if Fraction(shown) == r:
+        return f"{shown.normalize():f}"
+    return f"{shown:f}..."
 
 
 def _num(d: float) -> tuple:

@@ -58,9 +58,11 @@ from .expr import (
     COMMON_FIRST,
     COMMON_LAST,
     LOCALS,
+    SHADOW_ON_GRID_BOUND,
     VACANT,
     Context,
     FanucVariables,
+    RoundingNotCertain,
     SystemVariableUnknown,
     compile_tree,
     denominator_of,
@@ -571,6 +573,7 @@ class FanucRunner:
         runner, lane, state = self, self.lane, self.state
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
         usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
+        bound = SHADOW_ON_GRID_BOUND
 
         def nc_line() -> Any:
             if runner.modal_call is not None:
@@ -592,7 +595,8 @@ class FanucRunner:
                             step, sd = inc, usd
                         q = v[1]
                         # round_to's first case (a multiple of the step, kept as it is) without the call
-                        vals[i] = q if q is not None and sd and not sd % denominator_of(q) else round_to(v, step)
+                        vals[i] = q if q is not None and sd and not sd % denominator_of(q) and \
+                            -bound < v[0] < bound else round_to(v, step)
             except _EVAL_ERRORS:
                 return None
             if dropped:
@@ -733,6 +737,7 @@ class FanucRunner:
         inc_mm, inc_inch = self._inc_mm, self._inc_inch
         usd_mm, usd_inch = _step_denominator(inc_mm), _step_denominator(inc_inch)
         jump = body if target is source else [body, None]  # (as m98_op's)
+        bound = SHADOW_ON_GRID_BOUND
 
         def g65() -> Any:
             values = [VACANT] * (LOCALS + 1)  # the macro's local level: its arguments, the others vacant
@@ -754,8 +759,8 @@ class FanucRunner:
                         if step is _UNITS:
                             step, sd = inc, usd
                         q = v[1]
-                        if q is None or not sd or sd % denominator_of(q):  # else kept as round_to keeps it
-                            q = round_to(v, step)
+                        if q is None or not sd or sd % denominator_of(q) or not -bound < v[0] < bound:
+                            q = round_to(v, step)  # else kept as round_to keeps it
                     values[n] = (double_of(q), q)
             except _EVAL_ERRORS:
                 return None
@@ -897,7 +902,10 @@ class FanucRunner:
         do with it, its values handed to the plain-move lane without a block (the block when the lane
         declines); the result as plain_first's."""
         line, nxt = compiled[4], compiled[5]
-        values = self.plain_values(compiled[1], lineno, line)
+        try:
+            values = self.plain_values(compiled[1], lineno, line)
+        except RoundingNotCertain as e:
+            raise self.unsupported(e.code, e.reason, lineno, line) from None
         self.current_pos = pos
         self.started = self.ran = True
         span = make_span(source.file, lineno, 1, len(line) + 1, line)
@@ -1050,7 +1058,10 @@ class FanucRunner:
                 p = words[1]
                 return self.m98(("P", p[2][0], p[3], p[4], p[5]), None, ("M", w[2][0], w[3], w[4], w[5]), lineno,
                                 line, here)
-        values = self.plain_values(words, lineno, line) if plain else self.word_values(words, gcodes, lineno, line)
+        try:
+            values = self.plain_values(words, lineno, line) if plain else self.word_values(words, gcodes, lineno, line)
+        except RoundingNotCertain as e:
+            raise self.unsupported(e.code, e.reason, lineno, line) from None
         if maybe_calls:
             calls = [v for v in values if v[0] == "G" and v[1] in (65, 66, 67)]
             if calls or self.has_call_code(values):
@@ -1166,7 +1177,7 @@ class FanucRunner:
             self.rounded_count += 1
             if len(self.rounded) < 20:
                 self.rounded.append((lineno, text))
-            return round_to((double_of(q), q), inc)
+            return round_to((None, q), inc)  # the decimal as written: no double to read
         return q
 
     def address_value(self, letter: str, value: tuple, cycle: bool) -> Fraction:
@@ -1194,7 +1205,10 @@ class FanucRunner:
             return False
         if n in (3000, 3006):
             message = fl.comments[0][0].strip() if fl.comments else ""
-            number = int(round_to(v, Fraction(1))) if v is not VACANT else 0
+            try:
+                number = int(round_to(v, Fraction(1))) if v is not VACANT else 0
+            except RoundingNotCertain as e:
+                raise self.unsupported(e.code, e.reason, lineno, line, col, end) from None
             if n == 3000:
                 self.alarm = (number, message, self.span(lineno, line, col, end))
                 return True
@@ -1323,7 +1337,10 @@ class FanucRunner:
     def goto(self, fn: Callable[[], tuple], pos: int, lineno: int, line: str, col: int,
              end: int) -> tuple[int, int]:
         value = self.evaluate(fn, lineno, line, col, end)
-        n = int(round_to(value, Fraction(1))) if value is not VACANT else -1
+        try:
+            n = int(round_to(value, Fraction(1))) if value is not VACANT else -1
+        except RoundingNotCertain as e:
+            raise self.unsupported(e.code, e.reason, lineno, line, col, end) from None
         if not 1 <= n <= 99999999:
             raise self.error("GC314", f"GOTO {n if n >= 0 else '<vacant>'}: a sequence number is 1 to 99999999 "
                              "(Fanuc alarm PS0128)", lineno, line, col, end)
@@ -1446,7 +1463,10 @@ class FanucRunner:
                                            "a macro statement inside a lathe cycle's finishing shape: the manuals "
                                            "allow only NC blocks between P and Q; not modelled", ln, text)
                 if swords:
-                    svalues = self.word_values(swords, gcodes, ln, text)
+                    try:
+                        svalues = self.word_values(swords, gcodes, ln, text)
+                    except RoundingNotCertain as e:
+                        raise self.unsupported(e.code, e.reason, ln, text) from None
                     if any(v[0] == "M" and v[1] in (97, 98, 99) for v in svalues) or any(
                             v[0] == "G" and v[1] in (65, 66, 67) for v in svalues) or self.has_call_code(svalues):
                         raise self.error("GC314", "a subprogram or macro call inside a lathe cycle's finishing "

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from fractions import Fraction
 
 import pytest
@@ -219,13 +220,39 @@ def test_literals_beyond_the_increment_are_rounded():
 @settings(max_examples=60, deadline=None)
 @given(st.integers(-10**7, 10**7), st.integers(0, 4))
 def test_literal_and_computed_words_agree(n, places):
-    # a literal with at most three decimals and the same value computed are the same word
+    # a literal and the same value computed are the same word; but a value at half an increment (four decimals
+    # ending in 5) whose double lies just under it and scaled in doubles rounds down (#1 = 0.0215: 21.499999999999996
+    # increments) is unknown, GC399 (its 15-digit reading rounds up, as the literal does)
     text = f"{n / 10**places:.{places}f}"
     if places == 0:
         text += "."
+    half = places == 4 and abs(n) % 10 == 5
+    d = float(text)
+    doubles_down = abs(d) * 1000 % 1 < 0.5 or abs(d) / 0.001 % 1 < 0.5
+    if half and doubles_down:
+        with pytest.raises(UnsupportedGcode) as e:
+            blocks(f"#1 = {text}\nG0 X{text} Y#1 Z[#1]\n")
+        assert e.value.diagnostic.code == "GC399"
+        return
     got, _, _ = blocks(f"#1 = {text}\nG0 X{text} Y#1 Z[#1]\n")
     x, y, z = (w[1] for w in got[0][1:])
     assert x == y == z
+
+
+@pytest.mark.parametrize("value, expected", [("1.2345", "1.235"), ("0.0045", "0.005"), ("-0.0185", "-0.019"),
+                                             ("0.0215", ("0.021", "0.022")), ("-1.0005", ("-1", "-1.001"))])
+def test_a_variable_at_half_an_increment_rounds_as_all_readings_or_is_unknown(value, expected):
+    # the 0i manual's ROUND example (#1 = 1.2345: X1.235) and others whose double, scaled to increments in doubles,
+    # is the half itself (4.5, 18.5); 0.0215 / 0.001 is 21.499999999999996 in doubles, -1.0005 / 0.001
+    # -1000.4999999999999: unknown, the reason names both multiples
+    if isinstance(expected, tuple):
+        with pytest.raises(UnsupportedGcode) as e:
+            blocks(f"#1 = {value}\nG0 X#1\n")
+        assert e.value.diagnostic.code == "GC399"
+        assert set(re.findall(r"rounds to (-?[\d.]+);", e.value.diagnostic.message)) == set(expected)
+        return
+    got, _, _ = blocks(f"#1 = {value}\nG0 X#1\n")
+    assert got[0][1] == ("X", Fraction(expected))
 
 
 # ---------------------------------------------------------------- numbers beyond the double range

@@ -2,7 +2,8 @@
 
 Each program is minimal; the expected motion is derived by hand below it from the manual, and the reference
 reader (tests/oracles/fanuc_ref.py) gives the same.  N1, N3 and N4 are fixed in nczones/gcode/fanuc/ (each
-test failed before its fix); a class still open stays ``xfail(strict=True)`` until it is fixed.
+test failed before its fix); a class still open stays ``xfail(strict=True)`` until it is fixed; N5, where no manual settles the
+reading, is ``unknown``.
 
 The test mill (tests/gcode/fanuc/helpers.py): G54 = (100, 50, -200), EXT = (0, 0, 1), H1 = 100, H2 = 150.5,
 start at machine (0, 0, 0).  machine = program + EXT + G54 (+ G92) (+ tool length on Z).
@@ -10,10 +11,14 @@ start at machine (0, 0, 0).  machine = program + EXT + G54 (+ G92) (+ tool lengt
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction as Q
 
 import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
 
+from tests.machines import machine_text
 from tests.oracles.fanuc_ref import reference_motion
 
 from .ref_differential import nczones_motion, normalise, ref_machine
@@ -245,7 +250,7 @@ def test_n2b_an_axis_at_its_scaling_centre_is_not_rounded():
     assert normalise(segs) == N2B_EXPECTED
 
 
-# ------------------------------------ N5 (refdiff36, open): a half increment that the double lies just under
+# ------------------------------- N5 (refdiff36, now unknown): a half increment that the double lies just under
 
 N5 = "G21\nG90 G54 G00 X0 Y0 Z0\n#101 = 1.017\nG90 G01 X[1.5 * #101] F100.\n#102 = 2.001\nY[#102 * SIN[30.]]\nM30\n"
 # G00 X0 Y0 Z0: machine (100, 50, -199).
@@ -253,9 +258,10 @@ N5 = "G21\nG90 G54 G00 X0 Y0 Z0\n#101 = 1.017\nG90 G01 X[1.5 * #101] F100.\n#102
 # The reference reads a macro value at 15 significant digits ([15i] "Limitation": "Custom macro variables are
 # decimal numbers with a precision of 15 digits"): 1.52550000000000, rounded half away from zero: X1.526, machine
 # 101.526.  SIN[30.] is the double 0.49999999999999994; 2.001 times it is 1.0004999999999997..., at 15 digits
-# 1.00050000000000: Y1.001, machine 51.001.  nczones rounds the double's exact value (its exact shadow is dropped:
-# the product of the doubles is not the double nearest 1.5255): X1.525 and Y1.000.  Which the control does no
-# manual sentence found says; the generated programs keep away from such values (ref_grammar.py, _CLOSURE_X).
+# 1.00050000000000: Y1.001, machine 51.001.  nczones rounded the double's exact value (its exact shadow is dropped:
+# the product of the doubles is not the double nearest 1.5255): X1.525 and Y1.000; a control that scales the
+# double to increments in doubles gets the same (1525.4999999999998).  Which the control does no manual sentence
+# found says: nczones now says `unknown` (GC399) naming both readings (nczones/gcode/fanuc/expr.py, round_to).
 N5_EXPECTED = [("rapid", (Q(100), Q(50), Q(-199))), ("line", (Q("101.526"), Q(50), Q(-199))),
                ("line", (Q("101.526"), Q("51.001"), Q(-199)))]
 
@@ -264,7 +270,92 @@ def test_n5_reference_reads_a_macro_value_at_15_digits():
     assert _both(N5) == N5_EXPECTED
 
 
-@pytest.mark.xfail(strict=True, reason="N5 open: nczones rounds the double's exact value, the reference its 15 digits")
-def test_n5_a_half_increment_under_the_double_rounds_as_the_reference():
-    _, segs = nczones_motion(N5, "calculator", False)
-    assert normalise(segs) == N5_EXPECTED
+def _rounded_to(reason: str) -> set[str]:
+    """The multiples the reason of a GC399 names (``... rounds to 1.525; ...``)."""
+    return set(re.findall(r"rounds to (-?[\d.]+);", reason))
+
+
+def test_n5_a_half_increment_the_readings_split_is_unknown_naming_both():
+    run, segs = nczones_motion(N5, "calculator", False)
+    assert run.status == "unknown"
+    (u,) = run.unsupported
+    assert u.code == "GC399" and u.span.line == 4
+    # the reference's reading (15 digits: X1.526) and nczones's former one (the double: X1.525) are both named
+    assert _rounded_to(u.reason) == {"1.525", "1.526"}
+    assert "its 15-digit decimal, 1.5255, rounds to 1.526" in u.reason and "1.5254999999999999" in u.reason
+    assert normalise(segs) == N5_EXPECTED[:1]  # the motion before it stands
+
+
+def test_n5_the_sine_line_alone_is_unknown_naming_both():
+    run, segs = nczones_motion("G21\nG90 G54 G00 X0 Y0 Z0\n#102 = 2.001\nG01 Y[#102 * SIN[30.]] F100.\nM30\n",
+                               "calculator", False)
+    (u,) = run.unsupported
+    assert u.code == "GC399" and _rounded_to(u.reason) == {"1", "1.001"}
+
+
+_FACE = machine_text("fanuc_finding_mill", set={"offsets.G54": {"X": "98.4745", "Y": "0", "Z": "0"}})
+
+
+@pytest.mark.parametrize("value, verdict", [("1.017", "unknown"), ("1.016", "safe"), ("1.018", "unsafe")])
+def test_n5_a_zone_face_between_the_two_readings_is_never_safe(value, verdict):
+    """The travel's face X 100 lies between the readings' machine points: 98.4745 + 1.525 = 99.9995 (inside) and
+    + 1.526 = 100.0005 (outside).  1.5 * 1.016 = 1.524 and 1.5 * 1.018 = 1.527 (no half: every reading agrees)
+    show the face decides: safe and unsafe."""
+    from nczones.machine import parse_machine
+    from nczones.prover import verify_text
+
+    text = f"G21 G90 G54 G00 X0 Y50. Z100.\n#101 = {value}\nG01 X[1.5 * #101] F100.\nM30\n"
+    r = verify_text(text, parse_machine(_FACE, "face.toml"))
+    assert r.verdict.label == verdict, (r.reasons, r.violations)
+    if verdict == "unknown":
+        assert r.reasons[0].code == "GC399"
+
+
+_HALVES = st.integers(1, 3000).map(lambda k: f"{(2 * k + 1) / 2000:.4f}")  # 0.0015 .. 3.0005: a half increment
+_DECIMALS = st.integers(-30000, 30000).map(lambda k: f"{k / 1000:.3f}")
+
+
+def _readings_round(d: float, shadow: Q | None) -> set[Q]:
+    """Where the readings of the double ``d`` (the test's own: its 15-digit decimal, it times 1000 and over 0.001
+    in doubles, the exact value when the double is the one nearest it) round, halves away from zero, to 0.001."""
+    def away(r: Q, step: Q = Q(1, 1000)) -> Q:
+        n = (abs(r) / step + Q(1, 2)).__floor__()
+        return (n if r >= 0 else -n) * step
+    got = {away(Q(f"{d:.15g}")), away(Q(d * 1000), Q(1)) / 1000, away(Q(d / 0.001), Q(1)) / 1000}
+    if shadow is not None and float(shadow) == d:
+        got.add(away(shadow))
+    return got
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)
+@given(st.one_of(_HALVES, _DECIMALS), st.one_of(_HALVES, _DECIMALS, st.sampled_from(["1.5", "0.5", "2.5", "-1.5"])),
+       st.sampled_from(["*", "+", "-", "/"]))
+@example("1.017", "1.5", "*")  # N5: split
+@example("0.0215", "0.000", "+")  # 0.0215 / 0.001 is 21.499999999999996 in doubles: split
+@example("1.2345", "0.000", "+")  # a half whose readings all round up (the 0i manual's ROUND example)
+def test_a_computed_macro_value_is_the_reference_rounding_or_unknown(a, b, op):
+    """``X[#101 op #102]``: where every reading rounds alike, nczones's motion is the reference's (which reads 15
+    digits) and nczones's of today; where they split, unknown (GC399), never a motion nor a pick."""
+    if op == "/" and float(b) == 0:
+        return
+    text = f"G21\nG90 G54 G00 X0 Y0 Z0\n#101 = {a}\n#102 = {b}\nG90 G01 X[#101 {op} #102] F100.\nM30\n"
+    x, y = float(a), float(b)
+    d = x * y if op == "*" else x + y if op == "+" else x - y if op == "-" else x / y
+    qa, qb = Q(a), Q(b)
+    shadow = qa * qb if op == "*" else qa + qb if op == "+" else qa - qb if op == "-" else qa / qb
+    run, segs = nczones_motion(text, "calculator", False)
+    rounded = _readings_round(d, shadow)
+    if len(rounded) == 1:
+        assert run.status == "complete", run.unsupported
+        (xr,) = rounded
+        assert normalise(segs) == normalise([("rapid", (Q(100), Q(50), Q(-199))), ("line", (100 + xr, Q(50), Q(-199)))])
+        assert normalise(segs) == _both(text)
+    else:
+        assert run.status == "unknown" and run.unsupported[0].code == "GC399"
+        assert _rounded_to(run.unsupported[0].reason) == {_plain(r) for r in rounded}
+
+
+def _plain(r: Q) -> str:
+    from decimal import Decimal
+
+    return format((Decimal(r.numerator) / Decimal(r.denominator)).normalize(), "f")
