@@ -21,7 +21,6 @@ import re
 from collections.abc import Callable, Mapping
 from fractions import Fraction
 from types import MappingProxyType
-from typing import Any
 
 from .blockskip import format_block_delete, parse_block_delete
 from .digest import sha256
@@ -30,6 +29,11 @@ from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
 from .machine_cache import cached_table
 from .precompiled import dataclass, field, field_names, replace  # start-up: no dataclasses
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = [
     "Axis",

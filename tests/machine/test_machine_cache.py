@@ -274,11 +274,11 @@ try:
     cli.main(["verify", sys.argv[1], "--machine", sys.argv[2]])
 except SystemExit:
     pass
-print("MODULES", *sorted(m for m in ("tomllib", "datetime") if m in sys.modules))
+print("MODULES", *sorted(m for m in ("tomllib", "datetime", "typing") if m in sys.modules))
 """
 
 
-def test_a_verify_that_hits_the_cache_imports_no_toml_parser(cache, tmp_path, machine_file):
+def test_a_verify_that_hits_the_cache_imports_no_toml_parser_nor_typing(cache, tmp_path, machine_file):
     program = tmp_path / "p.ngc"
     program.write_text("G0 X1 Y1\nG1 X2 F100\nM30\n")
     machine = machine_file("box_5000")
@@ -288,7 +288,7 @@ def test_a_verify_that_hits_the_cache_imports_no_toml_parser(cache, tmp_path, ma
         r = subprocess.run([sys.executable, "-c", _PROBE, str(program), str(machine)], capture_output=True, text=True,
                            env=env, cwd=tmp_path, timeout=120)
         seen.append((r.stdout.split("MODULES")[-1].split(), "safe" in r.stdout + r.stderr))
-    assert seen == [(["datetime", "tomllib"], True), ([], True)], seen
+    assert seen == [(["datetime", "tomllib", "typing"], True), ([], True)], seen
 
 
 def test_verdicts_equal_with_and_without_the_cache(cache, monkeypatch):
