@@ -278,16 +278,17 @@ print("MODULES", *sorted(m for m in ("tomllib", "datetime", "typing") if m in sy
 """
 
 
-def test_a_verify_that_hits_the_cache_imports_no_toml_parser_nor_typing(cache, tmp_path, machine_file):
-    program = tmp_path / "p.ngc"
-    program.write_text("G0 X1 Y1\nG1 X2 F100\nM30\n")
-    machine = machine_file("box_5000")
+@pytest.mark.parametrize("dialect", ["linuxcnc", "fanuc"])
+def test_a_verify_that_hits_the_cache_imports_no_toml_parser_nor_typing(cache, tmp_path, machine_file, dialect):
+    program = tmp_path / "p.nc"
+    program.write_text("G0 X1. Y1.\nG1 X2. F100.\nM30\n")
+    machine = machine_file("box_5000", set={"machine.dialect": dialect})
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     seen = []
     for _ in range(2):
         r = subprocess.run([sys.executable, "-c", _PROBE, str(program), str(machine)], capture_output=True, text=True,
                            env=env, cwd=tmp_path, timeout=120)
-        seen.append((r.stdout.split("MODULES")[-1].split(), "safe" in r.stdout + r.stderr))
+        seen.append((r.stdout.split("MODULES")[-1].split(), ": safe:" in r.stdout + r.stderr))
     assert seen == [(["datetime", "tomllib", "typing"], True), ([], True)], seen
 
 
