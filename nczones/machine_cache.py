@@ -32,6 +32,7 @@ are not cached.
 
 from __future__ import annotations
 
+import _thread
 import decimal
 import marshal
 import os
@@ -173,7 +174,7 @@ def _write(entry: str, source: bytes, table: Any) -> None:
     except (ValueError, RecursionError, _NotStored):
         return
     folder = os.path.dirname(entry)
-    temp = f"{entry}.{os.getpid()}.tmp"
+    temp = f"{entry}.{os.getpid()}.{_thread.get_ident()}.tmp"  # one writer per name: no torn entry
     try:
         os.makedirs(folder, mode=0o700, exist_ok=True)
         if not _private(os.stat(folder), stat.S_ISDIR):
