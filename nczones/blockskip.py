@@ -27,7 +27,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection, Mapping
-from typing import Any
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 #: The switches: Fanuc BDT1 .. BDT9 (LinuxCNC's one switch is number 1).
 SWITCHES = tuple(range(1, 10))

@@ -15,7 +15,10 @@ above it (and for a digest fed by ``update``, as for a streamed file) OpenSSL's.
 
 from __future__ import annotations
 
-from typing import Any
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["sha256", "OWN_BELOW"]
 

@@ -27,9 +27,13 @@ its slot descriptor instead.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
 
 from .precompiled import field_names, make_function  # no dataclasses import, no compile (start-up)
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["builder"]
 

@@ -21,14 +21,19 @@ import re
 from collections.abc import Callable, Mapping
 from fractions import Fraction
 from types import MappingProxyType
-from typing import Any
 
 from .blockskip import format_block_delete, parse_block_delete
 from .digest import sha256
 from .errors import Diagnostic, MachineFileError, Severity, SourceSpan, close_matches
 from .exact import DECIMAL_RE, MAX_ABS_LENGTH, format_decimal
+from .machine_cache import cached_table
 from .precompiled import dataclass, field, field_names, replace  # start-up: no dataclasses
 from .zones import AllowedSet, BoxZone, PolygonZone, Region, SteppedZone, Zone, ZonePoint
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = [
     "Axis",
@@ -771,7 +776,11 @@ def parse_machine(text: str, path: str = "<machine>") -> Machine:
     (('X', 'Y'), (Fraction(100, 1), Fraction(1, 10)))
     """
     rd = _Reader(path, text)
-    data = _tomllib_loads(rd, text, path)
+    return _machine(rd, _tomllib_loads(rd, text, path))
+
+
+def _machine(rd: _Reader, data: dict[str, Any]) -> Machine:
+    """The machine of the TOML table ``data`` (read by ``rd``), or the :class:`MachineFileError` of its faults."""
     machine = _build(rd, data)
     if rd.failed or machine is None:
         raise MachineFileError(rd.diagnostics)
@@ -838,7 +847,10 @@ def load_machine(path: str | os.PathLike[str]) -> Machine:
             Diagnostic("ZN099", f"the machine file is not UTF-8 text ({exc.reason} at byte {exc.start})", file=str(path))
         ) from None
     text = text.replace("\r\n", "\n").replace("\r", "\n")  # universal newlines, as text files are read
-    return replace(parse_machine(text, str(path)), sha256=sha256(data).hexdigest())
+    name = str(path)
+    rd = _Reader(name, text)
+    table = cached_table(os.fspath(path), data, lambda: _tomllib_loads(rd, text, name))  # equal to tomllib's
+    return replace(_machine(rd, table), sha256=sha256(data).hexdigest())
 
 
 def _linuxcnc_settings(rd: _Reader, data: Mapping[str, Any], dialect: Any) -> tuple[str, ...]:

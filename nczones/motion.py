@@ -35,13 +35,16 @@ import enum
 import math
 from collections.abc import Callable, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, TypeVar
 
 from .errors import InvalidArgument, SourceSpan
 from .precompiled import dataclass, field, field_names, replace  # start-up: no dataclasses
 
-if TYPE_CHECKING:  # the column arrays are numpy's; importing numpy is left to the code that builds them
-    import numpy as np
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
+    import numpy as np  # the column arrays are numpy's; importing numpy is left to the code that builds them
 
 __all__ = ["SegmentKind", "Plane", "PLANE_AXES", "Segment", "MotionChunk", "PathMode", "arc_plane_axes",
            "DROPPED_BELOW", "arc_path_float", "segments_of", "ProgramFrame", "FrameRotation", "Payload", "Developed",
@@ -293,7 +296,8 @@ class TurretTool:
 
 #: What a segment may carry besides its geometry (``Segment.extra``), one value of each type at most.
 Payload = Developed | TipOffset | SplineCurve | PolarData | TurretTool
-_P = TypeVar("_P", Developed, TipOffset, SplineCurve, PolarData, TurretTool)
+if TYPE_CHECKING:
+    _P = TypeVar("_P", Developed, TipOffset, SplineCurve, PolarData, TurretTool)
 
 
 @dataclass(frozen=True, slots=True)

@@ -3,6 +3,10 @@ each, see tests/machines/__init__.py); a test that needs one as a file on disk a
 
 from __future__ import annotations
 
+import atexit
+import os
+import shutil
+import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
@@ -15,6 +19,14 @@ from tests.machines import machine_text
 # suite.  (It had a conftest.py of its own, whose module name "conftest" clashed with this file's: the folders
 # without __init__.py share one module namespace.)
 collect_ignore = ["cli/linuxcnc/frontend.py"]
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    """The machine-file parse cache (nczones/machine_cache.py) of this test process and the programs it starts:
+    a fresh folder, removed at exit, never the user's ~/.cache (each xdist worker makes its own)."""
+    folder = tempfile.mkdtemp(prefix="nczones-cache-")
+    os.environ["NCZONES_CACHE_DIR"] = folder
+    atexit.register(shutil.rmtree, folder, True)
 
 
 @pytest.fixture

@@ -23,7 +23,6 @@ import os
 import re
 import sys
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any, TextIO
 
 from ..errors import InputError
 from ..prover.limits import DEFAULT_BUDGET_S
@@ -40,7 +39,11 @@ from .conventions import (
     with_dialect,
 )
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any, TextIO
+
     from ..gcode.source import ProgramSource
     from ..machine import Machine
     from ..prover.options import VerifyOptions

@@ -45,7 +45,6 @@ from __future__ import annotations
 import os
 from collections.abc import Collection, Iterable, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
 
 from ..errors import GcodeError, InvalidArgument, program_lines
 from ..machine import Machine
@@ -54,7 +53,11 @@ from . import segments as _segments_module  # noqa: F401  # loaded first: the fu
 from .program import DEFAULT_MAX_LOOP_ITERATIONS
 from .source import ProgramLike, ProgramSource, as_source, load_program, materialized, program_text
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from .interpreter import MODAL_GROUP_NAMES, Interpreter, Unsupported  # noqa: F401
 
 #: An arc whose end point lies farther than this (mm) from the circle through

@@ -16,12 +16,12 @@ G0 and G1 are in the same modal group; valid in the fanuc dialect: set dialect =
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from ..errors import GcodeError
 from ..exact import format_decimal
 from ..precompiled import replace  # dataclasses.replace without importing dataclasses (start-up)
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from . import Interpretation
 

@@ -35,12 +35,16 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from fractions import Fraction
-from typing import Any
 
 from ..errors import InvalidArgument
 from .lexer import fraction_raw, to_fraction
 from .linuxcnc import x87
 from .parser import ATAN, BIN, EXISTS, FN, NEG, NPAR, NUM, PAR
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = [
     "Parameters",

@@ -35,7 +35,6 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
 
 from ..errors import Diagnostic, GcodeError, InternalError, SourceSpan
 from ..exact import to_float
@@ -80,7 +79,11 @@ from .passes import PassGuard
 from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
 from .segments import dadd, make_segment, with_tool_deps
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from .linuxcnc.cutter_comp import CutterComp
 
 _NAME_PENDING = "NURBS"

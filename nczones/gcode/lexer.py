@@ -26,11 +26,15 @@ import re
 from fractions import Fraction
 from functools import lru_cache
 from math import gcd as _gcd
-from typing import Any
 
 from ..errors import SourceSpan
 from ..frozen import builder
 from .blocks import Block, Word
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = [
     "NUMBER",

@@ -7,8 +7,9 @@ so that a program which needs neither does not import them (start-up, issue 36).
 from __future__ import annotations
 
 import re
-from typing import TYPE_CHECKING
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from .source import FileText
 

@@ -33,11 +33,15 @@ from __future__ import annotations
 
 import re
 from fractions import Fraction
-from typing import Any, NoReturn
 
 from ..errors import Diagnostic, GcodeError, SourceSpan
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .lexer import decimal_value
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, NoReturn
 
 __all__ = [
     "NUM", "PAR", "NPAR", "NEG", "BIN", "FN", "ATAN", "EXISTS",

@@ -92,7 +92,6 @@ import re
 from collections.abc import Callable, Collection, Generator, Iterator
 from contextvars import ContextVar
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, BinaryIO
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
 from ..precompiled import dataclass, field  # dataclasses' without importing it (start-up)
@@ -123,8 +122,11 @@ from .lexer import (
 from .parser import OWord, ParsedLine, parse_line
 from .shapes import LAYOUT, RUNS, CompiledLine, compiled_line, line_shaped, parse_line_shaped
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:  # pathlib (and urllib.parse, ipaddress) is imported where a library is searched
     from pathlib import Path
+    from typing import Any, BinaryIO
 
 __all__ = [
     "iter_blocks",

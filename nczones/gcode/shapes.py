@@ -32,7 +32,6 @@ import re
 from collections.abc import Callable
 from operator import itemgetter
 from types import FunctionType
-from typing import Any
 
 from ..frozen import builder
 from .expr import (
@@ -50,6 +49,11 @@ from .expr import (
 )
 from .lexer import G_MACRO_CALLS, M_CONTROL, plain_decimal_value, to_double
 from .parser import ATAN, BIN, FN, NEG, NPAR, NUM, PAR, ParsedLine, Parser, parse_line
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["parse_line_shaped", "line_shaped", "CompiledLine", "MAX_SHAPES", "RUNS", "LAYOUT", "compiled_line", "shaped",
            "shape_source"]

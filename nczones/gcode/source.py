@@ -38,11 +38,15 @@ import codecs
 import os
 import sys
 from collections.abc import Iterator
-from typing import BinaryIO
 
 from .. import digest as hashlib  # hashlib.sha256 without loading OpenSSL (start-up)
 from ..errors import EXCERPT_CHARS, Diagnostic, GcodeError, InvalidArgument, SourceSpan
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import BinaryIO
 
 __all__ = [
     "MAX_LINE_CHARS",

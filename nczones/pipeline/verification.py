@@ -9,7 +9,6 @@ import functools
 import time
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
 
 from ..errors import InvalidArgument
 from ..exact import format_decimal
@@ -21,7 +20,11 @@ from ..prover.options import VerifyOptions
 from ..prover.profile import RunProfile
 from ..prover.result import ParamRange, Reason, Result, Verdict, Violation, reason_code
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from ..gcode import Interpretation
 
 __all__ = ["verify_source", "interpretation", "double_pass_result", "switch_combinations",
@@ -339,11 +342,12 @@ def _fanuc_boxes(source: ProgramSource, machine: Machine, options: VerifyOptions
     """One case of a short Fanuc program (:func:`_fanuc_boxes_first`) proved by the box of its motion without numpy
     (:mod:`nczones.prover.fanucboxes`): (its interpretation, its result), or (None, None) when that route does not
     apply or declines (the case is then interpreted again and proved by the full path, as if it had not run)."""
+    if options.engine != "auto" or options.params or options.effective_dialect(machine) != "fanuc":
+        return None, None  # before the import: a LinuxCNC program does not load the route (start-up)
     # read at each call (tests switch them): the module's flags and its proof
     from ..prover.fanucboxes import ROWS_AS_LISTS, boxes_apply, prove_boxes
 
-    if (options.engine != "auto" or options.params or not boxes_apply(machine)
-            or not _fanuc_boxes_first(source.text) or options.effective_dialect(machine) != "fanuc"):
+    if not boxes_apply(machine) or not _fanuc_boxes_first(source.text):
         return None, None
     from ..gcode.fanuc.columns import MAX_ROWS, BoxSink, RowSink
 

@@ -38,7 +38,6 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 from fractions import Fraction
-from typing import Any
 
 from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
 from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
@@ -46,6 +45,11 @@ from ..machine import Machine
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .options import ParamError, VerifyOptions, parse_param
 from .result import ParamRange, Reason, Result, Verdict, Violation
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = [
     "verify",

@@ -29,7 +29,6 @@ import time
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
-from typing import Any
 
 from ..errors import InvalidArgument
 from ..exact import format_decimal
@@ -48,6 +47,11 @@ from ..zones import ZonePoint, tip_shifted
 from .exact import box_fits
 from .hull2d import convex_hull, hull_fits
 from .result import ParamRange, Reason
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["BLEND_CODE", "CornerCheck"]
 

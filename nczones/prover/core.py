@@ -37,7 +37,6 @@ import time
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from fractions import Fraction
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError, InvalidArgument
 from ..machine import Machine, RapidMode
@@ -65,7 +64,11 @@ from .geometry import (
 from .result import Outcome, ParamRange, Reason, Result, Verdict, Violation, reason_code
 from .smt import REFERENCE_AXIS, Solver, add, mul, or_all, q, sub, zone_violation
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from .limits import RunLimits
     from .options import VerifyOptions
     from .profile import RunProfile

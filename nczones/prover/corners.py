@@ -10,9 +10,13 @@ check sees exactly the motions it would have seen from the start, so its reasons
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from typing import Any
 
 from ..motion import MotionChunk, Segment, SegmentKind
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["Corners"]
 

@@ -15,12 +15,16 @@ from __future__ import annotations
 
 import time
 from fractions import Fraction
-from typing import Any
 
 from ..machine import Machine, declares_solids
 from ..motion import DROPPED_BELOW
 from .exact import box_fits
 from .result import Result, Verdict
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["prove_enclosures", "prove_double_path", "WindowProof", "may_be_zero"]
 

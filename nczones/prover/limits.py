@@ -54,9 +54,13 @@ import os
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Any
 
 from ..gcode.program import WATCHED_LIMITS
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["RunLimits", "BudgetSpent", "interpretation_budget", "DEFAULT_BUDGET_S", "DEFAULT_QUERY_TIME_S", "LINEAR_RLIMIT",
            "NONLINEAR_RLIMIT"]
@@ -71,7 +75,8 @@ LINEAR_RLIMIT = 5_000_000
 NONLINEAR_RLIMIT = 5_000_000
 
 
-_Active = tuple[int, Any, "float | None", str]
+if TYPE_CHECKING:
+    _Active = tuple[int, Any, "float | None", str]
 
 class BudgetSpent(Exception):
     """Raised inside the prover when the program's budget is spent (control flow, never shown)."""

@@ -27,7 +27,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from fractions import Fraction
-from typing import Any
 
 from ..exact import format_decimal
 from ..machine import Machine
@@ -35,6 +34,11 @@ from ..precompiled import replace  # dataclasses.replace without importing datac
 from ..zones import AllowedSet, BoxZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
 from ..zones.model import PolygonZone
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["nose_reach", "nose_zones"]
 

@@ -24,7 +24,6 @@ import os
 import re
 from collections.abc import Iterable, Mapping
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
 
 from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import exact, format_exact, parse_decimal, parse_rational
@@ -34,8 +33,11 @@ from ..precompiled import dataclass, field, replace  # dataclasses' without impo
 from .limits import DEFAULT_BUDGET_S, RunLimits
 from .result import ParamRange
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     import argparse
+    from typing import Any
 
 __all__ = ["VerifyOptions", "parse_param", "ParamError", "COMMAND_LINE", "budget_seconds", "library_folders",
            "arc_tolerance_option", "block_delete_option"]

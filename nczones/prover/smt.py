@@ -42,13 +42,17 @@ import functools
 import re
 from collections.abc import Callable, Iterable, Sequence
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
 
 from ..errors import InternalError
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
 from .exact import reachable
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["q", "Solver", "SolverAnswer", "zone_violation", "triangulate", "z3_version"]
 

@@ -23,7 +23,11 @@ matplotlib.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["render_report", "plot_program", "relevant_planes", "FORMATS", "RENDERERS"]
 

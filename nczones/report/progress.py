@@ -20,7 +20,11 @@ import os
 import sys
 import time
 from collections.abc import Callable
-from typing import Any, TextIO
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, TextIO
 
 __all__ = ["ProgressBar", "progress_for", "is_terminal", "item_last_line", "count_lines"]
 

@@ -23,12 +23,16 @@ from __future__ import annotations
 import os
 from collections.abc import Mapping
 from fractions import Fraction
-from typing import Any
 
 from ..errors import caret_excerpt
 from ..exact import format_decimal
 from ..prover.result import Result, Verdict
 from . import numbers
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["render_text", "use_color"]
 

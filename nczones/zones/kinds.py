@@ -22,16 +22,31 @@ lists the tables where a kind rides the fallback (the test keeps that list expli
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any, Generic, TypeVar
 
 from ..errors import InternalError
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 from .model import ZONE_KINDS
 
-__all__ = ["ZONE_KINDS", "KindTable", "TABLES", "Coverage", "coverage"]
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, Generic, TypeVar
 
-V = TypeVar("V")
-R = TypeVar("R")
+    V = TypeVar("V")
+    R = TypeVar("R")
+else:
+    V = R = None
+
+    class Generic:
+        """``typing.Generic`` for the runtime: ``KindTable[X]`` is ``KindTable`` (generic to type checkers only)."""
+
+        __slots__ = ()
+
+        def __class_getitem__(cls, item):
+            return cls
+
+
+__all__ = ["ZONE_KINDS", "KindTable", "TABLES", "Coverage", "coverage"]
 
 _NO_FALLBACK: Any = object()
 

@@ -20,7 +20,6 @@ import bisect
 import enum
 from collections.abc import Mapping
 from fractions import Fraction
-from typing import ClassVar, Union
 
 from ..exact import max_bound, min_bound
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
@@ -104,7 +103,7 @@ class SteppedZone:
     regions: tuple[Region, ...]
     forbid: bool = False
     point: ZonePoint = ZonePoint.MACHINE
-    kind: ClassVar[str] = "stepped"
+    kind = "stepped"  # a class attribute, not a field (unannotated: no typing.ClassVar to import at start-up)
 
     @property
     def axes(self) -> tuple[str, ...]:
@@ -227,7 +226,7 @@ class BoxZone:
     limits: Limits
     forbid: bool = False
     point: ZonePoint = ZonePoint.MACHINE
-    kind: ClassVar[str] = "box"
+    kind = "box"  # a class attribute, not a field (unannotated: no typing.ClassVar to import at start-up)
 
     @property
     def axes(self) -> tuple[str, ...]:
@@ -311,7 +310,7 @@ class PolygonZone:
     limits: Limits = ()
     forbid: bool = False
     point: ZonePoint = ZonePoint.MACHINE
-    kind: ClassVar[str] = "polygon"
+    kind = "polygon"  # a class attribute, not a field (unannotated: no typing.ClassVar to import at start-up)
 
     @property
     def axes(self) -> tuple[str, ...]:
@@ -380,7 +379,7 @@ class PolygonZone:
         return out
 
 
-Zone = Union[SteppedZone, BoxZone, PolygonZone]
+Zone = SteppedZone | BoxZone | PolygonZone
 
 #: Every zone kind (the per-kind tables of nczones/zones/kinds.py are checked against this list).
 ZONE_KINDS: tuple[type, ...] = (SteppedZone, BoxZone, PolygonZone)

@@ -35,10 +35,14 @@ from __future__ import annotations
 
 import re
 from fractions import Fraction
-from typing import Any
 
 from ...motion import PLANE_AXES, SegmentKind
 from .columns import SCALE, BoxRows, BoxSink, centre_arc_box, r_arc_box
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["read_box_run", "BOX_RUNS"]
 

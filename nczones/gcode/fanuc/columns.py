@@ -35,10 +35,14 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
 from math import isqrt
-from typing import Any
 
 from ...motion import MotionChunk, Segment, SegmentKind
 from ..segments import make_segment
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 #: Decimal places of the columns (the proof's line columns use the same, ``prover.screen.LINE_SCALE``).
 SCALE = 9

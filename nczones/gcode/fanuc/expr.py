@@ -46,11 +46,15 @@ import operator
 from collections.abc import Callable
 from fractions import Fraction
 from operator import attrgetter
-from typing import Any, TypeAlias
 
 from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_sub
 from ..lexer import fraction_raw, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any, TypeAlias
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
            "SystemVariableUnknown", "RoundingNotCertain", "readings", "SHADOW_ON_GRID_BOUND", "variable_index"]

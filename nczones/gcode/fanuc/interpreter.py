@@ -36,7 +36,6 @@ with a hint when the LinuxCNC dialect knows it.
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, TypeAlias
 
 from ...machine import FANUC_OFFSETS, Machine
 from ...motion import PLANE_AXES, FrameRotation, PathMode, Plane, ProgramFrame, SegmentKind
@@ -55,7 +54,11 @@ from ..interpreter import (
 from ..segments import make_segment
 from .expr import FanucVariables
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:  # (the programmable transforms are imported where a program uses one: start-up)
+    from typing import Any, TypeAlias
+
     from .transforms import Mirror, Polar, Rotation, Scaling
 
 _LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC

@@ -14,12 +14,13 @@ nczones proves one path at a time: the machine file describes the slides of one 
 from __future__ import annotations
 
 import re
-from typing import TYPE_CHECKING
 
 from ...errors import Diagnostic, GcodeError
 from ..lexer import make_span
 from ..source import materialized
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from ..source import FileText
 

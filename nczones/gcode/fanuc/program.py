@@ -36,7 +36,6 @@ import os
 import re
 from collections.abc import Callable, Collection, Generator, Iterator
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 from ...blockskip import skipped_switches
 from ...errors import Diagnostic, GcodeError, SourceSpan
@@ -72,19 +71,22 @@ from .expr import (
 )
 from .parser import EXPR, LITERAL, NEG, NUM, VAR, FanucLine, parse_line
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from pathlib import Path
+    from typing import Any, Protocol, TypeVar
 
 __all__ = ["iter_blocks", "FanucRunner", "LENGTH_LETTERS", "needs_language_layer", "MAX_MACRO_LEVELS",
            "MAX_CALL_DEPTH"]
 
-_T = TypeVar("_T")
-#: What executing a line yields (blocks) and returns: the next ``(pos, lineno)``, or None at the end.
-_Flow = Generator[Any, None, "tuple[int, int] | None"]
+if TYPE_CHECKING:  # names of annotations only
+    _T = TypeVar("_T")
+    #: What executing a line yields (blocks) and returns: the next ``(pos, lineno)``, or None at the end.
+    _Flow = Generator[Any, None, "tuple[int, int] | None"]
 
-
-class _LineSource(Protocol):
-    def line_at(self, pos: int) -> tuple[str | None, int]: ...
+    class _LineSource(Protocol):
+        def line_at(self, pos: int) -> tuple[str | None, int]: ...
 
 
 #: Addresses whose values are lengths or angles: the decimal point input rule and the least input

@@ -49,9 +49,13 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import Any
 
 from ...exact import to_float
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined"]
 

@@ -77,7 +77,6 @@ from array import array
 from bisect import bisect_left, bisect_right
 from fractions import Fraction
 from operator import itemgetter
-from typing import TYPE_CHECKING, Any
 
 from ...errors import GcodeError
 from ...motion import DROPPED_BELOW
@@ -110,7 +109,11 @@ from .double_arcs import (
     refined,
 )
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from ..source import FileText
 
 __all__ = ["CODES", "Declined", "DoublePath", "double_pass"]

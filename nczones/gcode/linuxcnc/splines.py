@@ -39,9 +39,13 @@ like G64 blending, that approximation is not modelled (specs/gcode-support.md).
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import Any
 
 from ...motion import PLANE_AXES, Plane, SegmentKind, SplineCurve
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["SPLINE_CODES", "spline_block", "spline_pending"]
 

@@ -59,14 +59,20 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from fractions import Fraction
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Protocol, Union
 
 from ...precompiled import dataclass, field  # dataclasses' without importing it (start-up)
 from ..expr import EvalError
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:  # pragma: no cover
+    from typing import Protocol
+
     from ...machine import Machine
     from ...motion import Plane
+else:
+    Protocol = object  # StateSource is a protocol to type checkers only
+
 
 __all__ = [
     "StateValue",
@@ -98,7 +104,7 @@ class StateValue:
     deps: Mapping[str, int | Fraction] = field(default_factory=dict)
 
 
-Reading = Union[StateValue, Fraction, int, None]
+Reading = StateValue | Fraction | int | None
 
 
 @dataclass(frozen=True, slots=True)
@@ -115,7 +121,7 @@ class StateParameter:
     read: Callable[["StateSource"], Reading]
 
 
-StateTable = Mapping[Union[int, str], StateParameter]
+StateTable = Mapping[int | str, StateParameter]
 
 
 class StateSource(Protocol):

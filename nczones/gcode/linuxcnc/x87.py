@@ -22,7 +22,11 @@ from __future__ import annotations
 import math
 import os
 from fractions import Fraction
-from typing import Any
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["available", "sin_degrees", "cos_degrees", "tan_degrees", "degrees_from_radians"]
 
