@@ -27,8 +27,9 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "its doubles), or with dialect = \"fanuc\" what specs/fanuc.md says a Fanuc control makes of it; a "
     "code nczones cannot model makes the verdict unknown, never safe.",
     "Fanuc dialect: macro values are IEEE doubles, as the manuals state, and a position computed from "
-    "them, and a point moved by scaling (G51), is rounded to the least input increment, halves away from "
-    "zero; a macro double is read as its 15-digit decimal, as scaled to increments in doubles or as the "
+    "them, an offset they write (#5201-#5340, #7001-, the tool offset tables; stored in whole increments, as "
+    "G10 stores it) and a point moved by scaling (G51) are rounded to the least input increment, halves away "
+    "from zero; a macro double is read as its 15-digit decimal, as scaled to increments in doubles or as the "
     "exact decimal it stands for, and where these round to different increments the verdict is unknown "
     "(GC399); a control that reads or rounds otherwise can stand one increment away from the proved path. A point "
     "moved by rotation (G68) or polar input (G16) is the exact point rounded to the nearest increment: "

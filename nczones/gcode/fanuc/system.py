@@ -34,7 +34,9 @@ H M N T P)          #4307-#4330 the same                                   r
 ==================  =====================================================  =======
 
 Values are in program units (mm, or inches under G20; degrees for rotary axes).
-Writing an offset changes the motion that follows (the active tool length only
+An offset written is stored in whole least input increments of its axis, rounded
+as an address word is (``#5221 = 1.23456`` stores 1.235 on IS-B, as
+``G10 L2 P1 X1.23456`` does).  Writing an offset changes the motion that follows (the active tool length only
 at the next G43/G44, as on the control).  Anything else, and reading the
 control's state while parameter ranges are proved (the value would depend on a
 range), is ``unknown`` with the variable as its code.  (Haas numbers its tool
@@ -49,11 +51,12 @@ from typing import TYPE_CHECKING, Protocol
 
 from ...machine import WORK_OFFSETS
 from ..interpreter import INCH
-from .expr import VACANT, SystemVariableUnknown
+from .expr import VACANT, SystemVariableUnknown, round_to
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
+    from ...machine import FanucSettings
     from ...motion import Plane
 
 
@@ -127,6 +130,8 @@ class MacroState(Protocol):
     def d_wear(self) -> dict[int, Fraction]: ...
     @property
     def clock(self) -> dict[int, tuple[float, Fraction]]: ...
+    @property
+    def settings(self) -> FanucSettings: ...
 
     def recompute_offsets(self) -> None: ...
 
@@ -138,11 +143,6 @@ _STRIDE = 20
 
 def _value(q: Fraction) -> tuple:
     return (q.numerator / q.denominator, q)
-
-
-def _exact(value: tuple) -> Fraction:
-    q = value[1]
-    return q if q is not None else Fraction(value[0])
 
 
 def _unknown(n: int, why: str) -> SystemVariableUnknown:
@@ -166,6 +166,23 @@ def _mm(it: MacroState, q: Fraction, i: int | None) -> Fraction:
     if it.inch and (i is None or not it.rotary[i]):
         return q * INCH
     return q
+
+
+def _stored(it: MacroState, value: tuple, i: int | None) -> Fraction:
+    """An offset value written by macro as the control stores it, in mm (degrees for a rotary axis).
+
+    A Fanuc control keeps offsets as whole numbers of the least input increment (IS-B: 0.001 mm,
+    0.0001 inch, 0.001 deg), so the value, in program units, is rounded to the increment of that axis
+    in the input unit in effect (``i`` None: a tool offset, a length) by :func:`~.expr.round_to`, the rule
+    the program's address words follow (``G10 L2 P1 X#1`` stores what ``#5221 = #1`` stores), and only then
+    converted to mm.  Soundness: the stored value is the one the control holds, not the macro's exact
+    value, which may lie on the other side of a zone face; where the readings of the double round to
+    different multiples :class:`~.expr.RoundingNotCertain` (GC399) makes the verdict ``unknown``.
+    """
+    inc = it.settings.increment_mm
+    linear = i is None or not it.rotary[i]
+    step = inc / 10 if it.inch and linear else inc
+    return _mm(it, round_to(value, step), i)
 
 
 def _offset_table(n: int) -> tuple[str, int] | None:
@@ -296,14 +313,14 @@ def write(it: MacroState, n: int, value: tuple) -> None:
             raise _unknown(n, f"writing #{n} (a work offset) while a coordinate transform is active is not modelled")
         if value is VACANT:
             raise _unknown(n, f"#{n} = <vacant>: what a control stores for a vacant offset is not modelled")
-        it.g5x[name][i] = _mm(it, _exact(value), i)
+        it.g5x[name][i] = _stored(it, value, i)
         it.dep_g5x[name][i] = {}
         it.recompute_offsets()
         return
     tool = _tool_table(it, n)
     if tool is not None:
         table, reg, radius = tool
-        table[reg] = _mm(it, _exact(value) if value is not VACANT else _ZERO, None)
+        table[reg] = _stored(it, value, None) if value is not VACANT else _ZERO
         if table is it.h_geometry:
             it.h_set.add(reg)
         return
