@@ -37,7 +37,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from nczones.errors import NczonesError
+from nczones.errors import InputError, NczonesError
 from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from tests.machines import box_zone, machine_text
@@ -249,14 +249,17 @@ def _first_arc(draw) -> str:
 
 
 def _frame(draw, dialect: str) -> str:
-    """A frame change: G92 (LinuxCNC; its offset follows the position, tool length and offsets in force), G10 L2
-    and L20 (LinuxCNC), G52 (Fanuc), a G53 move in machine coordinates."""
+    """A frame change: G92, G10 L20 and G10 L2 with a rotation (LinuxCNC; the offset follows the position, tool
+    length and offsets in force), G10 L2, G52 and G68 (Fanuc), a G53 move, G28 through a point or not."""
     x, y, z = dec(draw(_XY)), dec(draw(_XY)), dec(draw(_Z))
     if dialect == "fanuc":
         return draw(st.sampled_from([f"G52 X{x} Y{y}", "G52 X0. Y0.", f"G90 G53 G00 X{x} Y{y} Z{dec(draw(_Z) + 100)}",
-                                     f"G10 L2 P2 X{x} Z{z}"]))
+                                     f"G10 L2 P2 X{x} Z{z}", f"G90 G28 Z{z}", "G91 G28 Z0.",
+                                     f"G68 X{x} Y{y} R{draw(st.sampled_from(['30.', '90.', '-45.']))}\n"
+                                     f"G90 G01 X{dec(draw(_XY))} Y{dec(draw(_XY))}", "G69"]))
     return draw(st.sampled_from([f"G92 X{x} Y{y}", f"G92 Z{z}", "G92.1", f"G10 L20 P1 X{x} Z{z}",
-                                 f"G10 L2 P2 X{x} Y{y} Z{z}", f"G90 G53 G0 X{x} Y{y} Z{dec(draw(_Z) + 100)}"]))
+                                 f"G10 L2 P2 X{x} Y{y} Z{z}", f"G90 G53 G0 X{x} Y{y} Z{dec(draw(_Z) + 100)}",
+                                 f"G28 Z{z}", "G91 G28 Z0.", f"G10 L2 P1 R{draw(st.sampled_from(['30.', '-90.']))}"]))
 
 
 def _abs_centre_arc(draw) -> str:
@@ -366,6 +369,18 @@ def _label(got) -> str:
     return got if isinstance(got, str) else got.verdict.label
 
 
+def _same(a, b) -> bool:
+    """Two outcomes agree, or one is ``unknown`` because the solver met its time backstop (under load; the
+    backstop is wall time, so the two runs of one proof may end differently: counted, not compared)."""
+    if _label(a) == _label(b):
+        return True
+    stopped = [r for r in (a, b) if not isinstance(r, str) and r.verdict.label == "unknown"
+               and any("time backstop" in x.message for x in r.reasons)]
+    if stopped:
+        _count("lanes", "solver time backstop (not compared)")
+    return bool(stopped)
+
+
 def _value_verdict(text: str, setup: Setup, values: dict[str, Fraction], margin: str, lanes: bool):
     """The verdict at ``values`` (no ranges); with ``lanes`` also held to the verdict with every lane off.
     ``start outside`` when the machine file is refused because its start is outside the allowed set there."""
@@ -379,10 +394,20 @@ def _value_verdict(text: str, setup: Setup, values: dict[str, Fraction], margin:
         with lanes_off():
             full = _verify(text, m, margin=margin)
         _count("lanes at a value", f"{_label(got)}/{_label(full)}")
-        assert _label(got) == _label(full), f"at {values}: routed {_label(got)}, lanes off {_label(full)}:\n{text}"
-        if not isinstance(got, str):
+        assert _same(got, full), f"at {values}: routed {_label(got)}, lanes off {_label(full)}:\n{text}"
+        if _label(got) == _label(full) and not isinstance(got, str):
             assert [v.line for v in got.violations] == [v.line for v in full.violations], text
     return got
+
+
+def _error_line(text: str, machine, margin: str) -> int | None:
+    """The line of the first diagnostic of a program the interpreter refuses."""
+    try:
+        verify_text(text, machine, margin=margin)
+    except InputError as e:
+        span = e.diagnostics[0].span
+        return None if span is None else span.line
+    return None
 
 
 def _replay(text: str, setup: Setup, v, margin: str, base, lanes: bool) -> None:
@@ -395,7 +420,18 @@ def _replay(text: str, setup: Setup, v, margin: str, base, lanes: bool) -> None:
         _count("witness", "start outside")
         return
     m = machine_for(setup, values)
-    assert _label(got) == "unsafe", f"witness {values} replays {_label(got)}:\n{text}"
+    if _label(got).startswith("error:"):
+        # Known (hunt37, specs/contract.md): the path is built at the case's nominal values, and a witness of a
+        # later motion may stand at values where the control refuses an earlier block (an I/J arc whose end is
+        # off its circle there).  Counted; a witness refused at or after its own line is a failure.
+        line = _error_line(text, m, margin)
+        assert line is not None and line < v.line, f"witness {values} of line {v.line} refused at {line}:\n{text}"
+        _count("witness", f"refused before its line ({_label(got)})")
+        return
+    if not _same(got, "unsafe"):
+        raise AssertionError(f"witness {values} replays {_label(got)}:\n{text}")
+    if _label(got) != "unsafe":
+        return
     lines = {w.line for w in got.violations}
     assert v.line in lines or got.truncated, f"witness {values} of line {v.line}: violations on {sorted(lines)}"
     # the point lies in the zone it names, with the tool length of that block at those values
@@ -486,8 +522,8 @@ def check(text: str, setup: Setup, rngs, margin: str, rnd: random.Random, lanes:
         return label
     if lanes:
         with lanes_off():
-            full = _label(_verify(text, base, params=params, margin=margin))
-        assert full == label, f"ranges {params}: routed {label}, lanes off {full}:\n{text}"
+            full = _verify(text, base, params=params, margin=margin)
+        assert _same(got, full), f"ranges {params}: routed {label}, lanes off {_label(full)}:\n{text}"
     if label == "safe":
         for values in _values(rngs, rnd):
             at = _label(_value_verdict(text, setup, values, margin, lanes))
