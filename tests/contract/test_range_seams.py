@@ -563,3 +563,33 @@ def test_range_seams_long(dialect):
     OUTCOMES.clear()
     _run(dialect, EXAMPLES["long"], False)
     print(f"range seams ({dialect}): {sorted(OUTCOMES.items())}")
+
+
+# -- teeth: the relations catch a prover that proves too much ---------------------------------------------------
+
+_TEETH = Setup("linuxcnc", "G61", "linear", (
+    ("travel", (Fraction(-80),) * 2 + (Fraction(-30),), (Fraction(80),) * 2 + (Fraction(260),), False, False),
+    ("clamp", (Fraction(11), Fraction(-5), Fraction(0)), (Fraction(20), Fraction(5), Fraction(200)), True, False)))
+#: X10 in G54: the clamp's face at X11 is reached when G54.X is 1 or more
+_TEETH_TEXT = "G21 G90 G17 G54 F600.\nG1 X10. Y0. Z100.\nM30\n"
+
+
+@pytest.mark.parametrize("mutation", ["ranges proved", "witness moved"])
+def test_the_relations_have_teeth(mutation):
+    """Relation 1 fails when the ranged motions are proved without looking (``check_with_params`` proves every
+    segment); relation 2 fails when a witness names values other than those it was found at."""
+    from nczones.prover.core import Prover
+    from nczones.prover.result import Outcome
+
+    rngs = [("G54.X", Fraction(0), Fraction(2))]
+    assert check(_TEETH_TEXT, _TEETH, rngs, "0", random.Random(1), lanes=True, probe=False) == "unsafe"
+    if mutation == "ranges proved":
+        patch = mock.patch.object(Prover, "check_with_params", lambda self, seg: Outcome(engine="z3"))
+        message = "WRONG SAFE"
+    else:
+        written = Prover.written_params
+        patch = mock.patch.object(Prover, "written_params", lambda self, values: tuple(
+            (n, v - 1) for n, v in written(self, values)))
+        message = "witness .* replays safe"
+    with patch, pytest.raises(AssertionError, match=message):
+        check(_TEETH_TEXT, _TEETH, rngs, "0", random.Random(1), lanes=False, probe=False)
