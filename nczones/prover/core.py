@@ -447,12 +447,12 @@ class Prover:
     def decide_point_path(self, seg: Segment) -> Outcome:
         """Lines, rapids, dwells and circular arcs: the exact tiers, then Z3 (with parameter ranges)."""
         if seg.kind is SegmentKind.ARC and on_start_ray(seg):
-            return self._decide_whole_turn(seg)
+            return self._decide_whole_turn(seg, self.param_relevant(seg))
         if self.param_relevant(seg):
             return self.check_with_params(seg)
         return self.check_concrete(seg, ())
 
-    def _decide_whole_turn(self, seg: Segment) -> Outcome:
+    def _decide_whole_turn(self, seg: Segment, ranged: bool) -> Outcome:
         """An I/J arc whose end lies on the ray from the centre through its start: proved by its whole turn's box.
 
         LinuxCNC (posemath ``pmCircleInit``) sweeps a whole turn there, a spiral from the start radius to the end
@@ -461,10 +461,11 @@ class Prover:
         to end, so :func:`~nczones.prover.geometry.whole_turn_box` holds the path (and the path of every other
         reading of such an arc, its docstring says why); when that box fits every zone (margin and tool length
         as :func:`~nczones.prover.exact.box_fits` applies them, tip zones already shifted by :meth:`_check`) the
-        motion is proved.  With parameter ranges (the ends move, and with them the ray's condition) it is
-        decided as an arc whose shape changes with them (:meth:`_check_arc_varying`): witnesses only at concrete
-        values, the proof only by an enclosure that holds the arc at every value of the ranges, a whole turn
-        included (the centre's range +- the largest radius).  With ``engine="z3"`` (no solver encoding of the
+        motion is proved.  With parameter ranges (``ranged``: the ends move, and with them the ray's condition)
+        it is decided as an arc whose shape changes with them (:meth:`_check_arc_varying`): witnesses only at
+        concrete values, the proof only by an enclosure that holds the arc at every value of the ranges, a whole
+        turn included (the centre's range +- the largest radius); ``ranged`` is False for an arc instantiated
+        at values (a ``home.*`` range names every segment, the instantiated ones too).  With ``engine="z3"`` (no solver encoding of the
         turn) the arc stays ``unknown``.  No witness is reported for the turn itself, since the spiral's points
         are not modelled exactly.  The column screen
         (:func:`nczones.prover.screen.screen_chunk`) boxes such an arc by a larger box (the whole circle grown
@@ -472,7 +473,7 @@ class Prover:
         """
         if self.engine != "auto":
             why = "the solver has no encoding of it (engine z3)"
-        elif self.param_relevant(seg):
+        elif ranged:
             return self._check_arc_varying(seg)
         else:
             lo, hi = whole_turn_box(seg)
@@ -676,7 +677,7 @@ class Prover:
     def check_concrete(self, seg: Segment, params: Params) -> Outcome:
         if seg.kind is SegmentKind.ARC:
             if on_start_ray(seg):  # (a segment instantiated at a parameter combination, too)
-                return self._decide_whole_turn(seg)
+                return self._decide_whole_turn(seg, False)
             return self._check_arc(seg, params)
         pieces = line_pieces(seg, self.machine)
         self.stats["pieces"] += len(pieces)

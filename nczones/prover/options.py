@@ -65,6 +65,10 @@ def parse_param(text: str, machine: Machine) -> ParamRange:
     (Fraction(-5, 1), Fraction(5, 1))
     >>> parse_param("G54.X=-2..2", m).hi
     Fraction(2, 1)
+    >>> parse_param("G54.X=0...5", m)  # 0. to 5, or 0 to .5?
+    Traceback (most recent call last):
+    ...
+    nczones.prover.options.ParamError: <command line>: error[VF101]: --param 'G54.X=0...5': '...' is ambiguous: write a digit on both sides of a bound's point (0..5, 0..0.5)
     """
     def fail(msg: str) -> ParamError:
         return ParamError(Diagnostic("VF101", f"--param {text!r}: {msg}", file=COMMAND_LINE))
@@ -72,6 +76,8 @@ def parse_param(text: str, machine: Machine) -> ParamRange:
     m = re.match(r"^\s*([A-Za-z0-9_.]+)\s*=\s*(.+?)\s*$", text)
     if not m or ".." not in m.group(2):
         raise fail("expected NAME=LO..HI, e.g. G54.X=-2..2, H1=195..205, start.Z=-10..0 or home.X=-0.5..0.5")
+    if "..." in m.group(2):  # 0...5: 0. to 5, or 0 to .5? (read as the second, a range ten times narrower)
+        raise fail("'...' is ambiguous: write a digit on both sides of a bound's point (0..5, 0..0.5)")
     name = m.group(1)
     lo_s, hi_s = m.group(2).split("..", 1)
     try:

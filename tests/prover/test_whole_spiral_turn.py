@@ -257,3 +257,19 @@ def test_a_safe_turn_keeps_off_the_wall_at_every_point(ca, cb, ua, ub, delta, cl
         with mpmath.workprec(200):
             for px, py in arc_points(seg):
                 assert d <= px <= 66 - d and d <= py <= 100 - d, (px, py)
+
+
+@pytest.mark.parametrize("dialect", ["linuxcnc", "fanuc"])
+@pytest.mark.parametrize("param, verdict", [("home.X=-0.5..0.5", Verdict.SAFE), ("home.Z=-5..5", Verdict.SAFE),
+                                            ("home.X=0..3", Verdict.UNKNOWN)])
+def test_a_homing_range_decides_an_arc_on_the_start_s_ray(dialect, param, verdict):
+    """hunt37: a homing error moves every coordinate, so with a ``home.*`` range every segment names it, the
+    arc instantiated at one value of the range too: ``_decide_whole_turn`` took that concrete arc for a ranged
+    one and went back to ``_check_arc_varying`` until a RecursionError (an internal error in both dialects, since
+    9ec9f3b).  The turn about (62, 20) of radius 2 reaches X64.001; the wall is at X66: proved over a homing
+    error of 0.5 mm (the enclosure takes the start's and the end's deviations apart: the centre's range +- the
+    radius and twice the error), not over one of 3 mm (no witness of the spiral itself: ``unknown``)."""
+    machine = parse_machine(machine_text("xyz_spiral_wall", set={"machine.dialect": dialect}))
+    text = "G21 G90 G17 G61 F600.\nG1 X60. Y20. Z10.\nG2 X60.001 Y20. I2. J0.\nM30\n"
+    r = verify_text(text, machine, params=[param])
+    assert r.verdict is verdict, r.reasons
