@@ -7,8 +7,14 @@ from hypothesis import given, settings
 from .contract import check_contract, check_solids_contract
 from .strategies import contract_cases, solids_contract_cases
 
+#: 30 programs in the default run (the ci profile's 60 took about two minutes of it); the long profile
+#: (HYPOTHESIS_PROFILE=long) keeps its 20,000; NCZONES_CONTRACT_EXAMPLES sets another count
+CONTRACT_EXAMPLES = int(os.environ.get("NCZONES_CONTRACT_EXAMPLES",
+                                       settings.default.max_examples
+                                       if os.environ.get("HYPOTHESIS_PROFILE") == "long" else 30))
 
-@settings()
+
+@settings(max_examples=CONTRACT_EXAMPLES)
 @given(contract_cases())
 def test_prover_and_controller_keep_the_contract(case):
     machine, text = case

@@ -20,7 +20,7 @@ from .metamorphic import (
 )
 
 #: Examples per property in the default (ci) profile, and in a long one (any profile of more than 100).
-CI_EXAMPLES = {"ranges": 30, "margins": 12, "reads": 12}
+CI_EXAMPLES = {"ranges": 15, "margins": 12, "reads": 12}
 LONG_EXAMPLES = {"ranges": 10_000, "margins": 5_000, "reads": 5_000}
 
 

@@ -23,7 +23,7 @@ from .polygon_metamorphic import (
     polygon_range_cases,
 )
 
-CI_EXAMPLES = {"ranges": 8, "margins": 5, "oracles": 6, "engines": 4}
+CI_EXAMPLES = {"ranges": 5, "margins": 5, "oracles": 6, "engines": 4}
 LONG_EXAMPLES = {"ranges": 1_000, "margins": 1_000, "oracles": 1_000, "engines": 1_000}
 
 

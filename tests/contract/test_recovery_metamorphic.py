@@ -23,7 +23,7 @@ from .recovery_metamorphic import (
 )
 
 #: Examples per relation in the default (ci) profile, and in a long one (any profile of more than 100).
-CI_EXAMPLES = {"base": 6, "ranges": 6, "margins": 6, "reads": 4, "controller": 8}
+CI_EXAMPLES = {"base": 6, "ranges": 4, "margins": 6, "reads": 4, "controller": 8}
 LONG_EXAMPLES = {"base": 1_000, "ranges": 2_000, "margins": 1_000, "reads": 500, "controller": 1_000}
 
 

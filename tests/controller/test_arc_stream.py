@@ -18,6 +18,7 @@ from nczones.controller import arcs as arcs_mod
 from nczones.controller.pulses import arc_centre
 from nczones.exact import format_decimal
 from nczones.motion import PLANE_AXES, Plane
+from tests.sizes import examples
 
 from .helpers import FAST, F, arc, decimals, machine, rationals
 
@@ -79,7 +80,7 @@ def _octant_and_helix_changes(pos, p0, ia, ib, centre, pulse):
 PULSES = [None, 'pulse = { X = "0.001", Y = "0.002", Z = "0.0005" }', 'pulse = { X = "0.0005", Y = "0.001", Z = "0.003" }']
 
 
-@settings(FAST, max_examples=45)
+@settings(FAST, max_examples=examples(22, 45))
 @given(arc_cases, st.sampled_from(PULSES), st.data())
 def test_any_chunking_of_the_stream_gives_the_reference_plan(case, pulses, data):
     seg, ia, ib = _segment(case)

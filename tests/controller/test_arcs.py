@@ -15,6 +15,7 @@ from nczones.controller.arcs import arc_path
 from nczones.controller.pulses import arc_centre, arc_walk, helix_chunk, helix_steps
 from nczones.exact import format_decimal
 from nczones.motion import PLANE_AXES, Plane
+from tests.sizes import examples
 
 from .helpers import FAST, F, arc, decimals, machine, rationals
 
@@ -45,7 +46,7 @@ walk_cases = st.tuples(
 )
 
 
-@settings(FAST, max_examples=30)
+@settings(FAST, max_examples=examples(15, 30))
 @given(walk_cases, st.sampled_from(["centre", "R", "spiral"]))
 def test_vectorized_walk_is_identical_to_the_reference(case, form):
     cx, cy, r, ts, te, cw, turns, full, pulse, candidates, ox, oy = case
@@ -89,7 +90,7 @@ def _steep_helix(cw, plane, dz, turns=0, r="0.5"):
     return arc(start, end, (0, 0), plane=plane, clockwise=cw, turns=turns), ia, ib, AXES.index(n)
 
 
-@settings(FAST, max_examples=20)
+@settings(FAST, max_examples=examples(10, 20))
 @given(st.booleans(), st.sampled_from([Plane.XY, Plane.XZ, Plane.YZ]), decimals(-20, 20).filter(lambda v: abs(v) > 3),
        st.integers(0, 1), st.sampled_from(["0.05", "0.2", "0.4321"]))
 def test_steep_helix_one_pulse_per_axis_per_step_and_within_one_pulse(cw, plane, dz, turns, r):
@@ -182,7 +183,7 @@ def _old_helix_column(pts, pulse2, centre, sgn, a0, sweep, a, b):
     return col
 
 
-@settings(FAST, max_examples=25)
+@settings(FAST, max_examples=examples(12, 25))
 @given(st.integers(3, 400), st.integers(0, 3), st.booleans(), st.integers(-900, 900), st.sampled_from([1, 7, 64, 1 << 16]))
 def test_chunked_helix_columns_and_path_fractions_equal_the_whole_array_forms(r, turns, cw, dz, chunk):
     from nczones.controller import simulator as sim

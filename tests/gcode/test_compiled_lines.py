@@ -28,6 +28,7 @@ from nczones.gcode.expr import Parameters
 from nczones.gcode.program import iter_blocks
 from tests.corpus import CORPUS, corpus_programs
 from tests.gcode.test_fastpath_blocks import MACHINE
+from tests.sizes import examples
 
 
 def _run_blocks(text: str, compiled: bool, monkeypatch) -> tuple:
@@ -123,14 +124,14 @@ def programs(draw):
     return "\n".join(out) + "\n"
 
 
-@settings(max_examples=300, deadline=None, derandomize=True, database=None,
+@settings(max_examples=examples(150, 300), deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(programs())
 def test_compiled_lines_give_the_general_paths_blocks_errors_and_parameters(monkeypatch, text):
     assert _run_blocks(text, True, monkeypatch) == _run_blocks(text, False, monkeypatch), text
 
 
-@settings(max_examples=100, deadline=None, derandomize=True, database=None,
+@settings(max_examples=examples(50, 100), deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(programs())
 def test_compiled_lines_give_the_general_paths_segments(monkeypatch, text):

@@ -20,6 +20,7 @@ from nczones.gcode import fastpath, interpret_text
 from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 from tests.machines import machine_text
+from tests.sizes import examples
 
 MACHINE = parse_machine(machine_text("mill_offsets_h1_h2"))
 
@@ -189,7 +190,7 @@ def assert_same_proof_with_and_without_fast_path(text: str, machine) -> None:
         (v.span.line, v.zone, v.point) for v in full.violations]
 
 
-@settings(max_examples=12, deadline=None, derandomize=True, database=None,
+@settings(max_examples=examples(6, 12), deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow])
 @given(st.sampled_from(["G81", "G82 P0.5"]), st.sampled_from(["G98", "G99"]), st.sampled_from([5, 20, 31, 40]),
        st.sampled_from([1, 10, 25]), st.sampled_from([100, 32, 60]), st.integers(0, 3), st.randoms(use_true_random=False))

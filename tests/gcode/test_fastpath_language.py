@@ -24,6 +24,7 @@ from tests.gcode.test_fastpath_cycles import (
     CLAMP_MACHINE,
     assert_same_proof_with_and_without_fast_path,
 )
+from tests.sizes import examples
 
 
 def _moves(n: int, seed: int, z: bool = False) -> list[str]:
@@ -189,7 +190,7 @@ def test_language_programs_stream_in_bounded_chunks_and_memory():
     assert peaks[1] < 1.5 * peaks[0], peaks
 
 
-@settings(max_examples=10, deadline=None, derandomize=True, database=None,
+@settings(max_examples=examples(5, 10), deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow])
 @given(st.integers(0, 999), st.sampled_from([10, 35, 60]), st.booleans())
 def test_prover_verdicts_and_violations_agree_on_runs_handed_over_by_the_language_layer(seed, depth, in_sub):

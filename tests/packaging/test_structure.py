@@ -11,9 +11,17 @@ module declares what it needs as a Protocol instead).
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[2] / "nczones"
+
+
+@functools.lru_cache(maxsize=None)
+def _parse(text: str) -> ast.Module:
+    """The tree of a file's text, parsed once per process for all the scans (each parse of the package takes
+    about 3 s; the scans only read the trees)."""
+    return ast.parse(text)
 
 
 def _modules(package: Path) -> dict[str, Path]:
@@ -45,7 +53,7 @@ def private_names_across_files(package: Path = PACKAGE) -> list[str]:
     modules = _modules(package)
     found = []
     for module, path in modules.items():
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        tree = _parse(path.read_text(encoding="utf-8"))
         aliases: dict[str, str] = {}
         for node in ast.walk(tree):
             if isinstance(node, ast.ImportFrom):
@@ -112,7 +120,7 @@ def private_members_across_files(package: Path = PACKAGE) -> list[str]:
     package does not define (``Fraction._numerator``) are not the package's names and are not reported.
     """
     modules = _modules(package)
-    trees = {m: ast.parse(path.read_text(encoding="utf-8")) for m, path in modules.items()}
+    trees = {m: _parse(path.read_text(encoding="utf-8")) for m, path in modules.items()}
     defined = {m: _private_names_defined(tree) for m, tree in trees.items()}
     found = []
     for module, tree in trees.items():
@@ -137,7 +145,7 @@ def import_loops(package: Path = PACKAGE) -> list[list[str]]:
     modules = _modules(package)
     edges: dict[str, set[str]] = {m: set() for m in modules}
     for module, path in modules.items():
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        tree = _parse(path.read_text(encoding="utf-8"))
         for node in ast.walk(tree):
             if isinstance(node, ast.ImportFrom):
                 source = _target(module, path, node)
@@ -252,7 +260,7 @@ def test_the_witnesses_do_not_import_each_other():
     file the prover."""
     for side, other in (("prover", "controller"), ("controller", "prover")):
         for path in sorted((PACKAGE / side).rglob("*.py")):
-            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            for node in ast.walk(_parse(path.read_text(encoding="utf-8"))):
                 if isinstance(node, ast.ImportFrom):
                     source = _target(".".join(path.relative_to(PACKAGE.parent).with_suffix("").parts), path, node)
                     assert not source.startswith(f"nczones.{other}"), f"{path}:{node.lineno} imports {source}"

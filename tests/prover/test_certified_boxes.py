@@ -21,6 +21,7 @@ from nczones.prover import verify_text
 from nczones.prover.exact import box_certainly_violates
 from nczones.testing import machines
 from tests.machines import machine_text
+from tests.sizes import examples
 
 F = Fraction
 ROOT = Path(__file__).resolve().parents[2]
@@ -48,7 +49,7 @@ def boxes_near_zones(draw):
     return machine, margin, tool_length, lo, hi
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(50, 100), deadline=None)
 @given(boxes_near_zones(), st.data())
 def test_a_certified_box_violates_at_every_point(case, data):
     machine, margin, tool_length, lo, hi = case

@@ -15,6 +15,7 @@ from nczones.prover import Verdict, verify_segments
 from nczones.prover.exact import zone_constants
 from nczones.prover.geometry import arc_geom, in_sweep, line_pieces, rational_point_on_arc
 from tests.oracles.machines import machine_text
+from tests.sizes import examples
 
 AXES = ("X", "Y")
 
@@ -98,7 +99,7 @@ def brute_force_violation(seg, machine, margin, n=64):
     return any(allowed.violated_zones(dict(zip(AXES, p)), F(0), margin) for p in pts)
 
 
-@settings(max_examples=120, deadline=None, derandomize=True)
+@settings(max_examples=examples(60, 120), deadline=None, derandomize=True)
 @given(tables(), st.lists(segments(), min_size=1, max_size=3), st.sampled_from([F(0), F(1, 2)]),
        st.sampled_from(["linear", "dogleg"]))
 def test_never_safe_when_brute_force_finds_an_outside_point(table, segs, margin, rapid_mode):
@@ -116,7 +117,7 @@ def test_never_safe_when_brute_force_finds_an_outside_point(table, segs, margin,
         assert m.allowed.violated_zones(dict(v.point), F(0))
 
 
-@settings(max_examples=80, deadline=None, derandomize=True)
+@settings(max_examples=examples(40, 80), deadline=None, derandomize=True)
 @given(tables(), st.lists(segments(), min_size=1, max_size=3), st.sampled_from([F(0), F(1, 4)]),
        st.sampled_from(["linear", "dogleg"]))
 def test_tier1_and_z3_engines_agree(table, segs, margin, rapid_mode):

@@ -24,6 +24,7 @@ from hypothesis import strategies as st
 from nczones.machine import parse_machine
 from nczones.prover import blend, fanucboxes, screen, verify_text
 from tests.machines import box_zone, machine_text
+from tests.sizes import examples
 
 #: The functions the tests wrap (Hypothesis runs many examples under one function-scoped monkeypatch).
 REAL_HULL = blend.CornerCheck._hull_columns
@@ -203,7 +204,7 @@ def _linuxcnc(program: str, tolerance: str) -> str:
     return "\n".join(["G17 G21 G90 G54", "G0 X0 Y0", f"G64 P{tolerance}", "G1 F800", *body, "M2"]) + "\n"
 
 
-@settings(QUICK, max_examples=6)
+@settings(QUICK, max_examples=examples(3, 6))
 @given(seed=st.integers(0, 2**32 - 1), tolerance=st.sampled_from(["0.01", "0.5"]),
        clamp=st.tuples(st.integers(-50, 45), st.integers(-50, 45), st.integers(1, 6)))
 def test_linuxcnc_corners_take_the_screens_boxes_with_the_same_result(seed, tolerance, clamp, monkeypatch):

@@ -34,6 +34,7 @@ from nczones.prover import verify_segments
 from nczones.zones import AllowedSet, BoxZone, PolygonZone, ZonePoint
 from tests.prover.test_screen_chunks import AXES2, chunk_of, chunk_segments
 from tests.prover.test_segment_batches import by_columns, one_by_one
+from tests.sizes import examples
 
 
 @st.composite
@@ -155,7 +156,7 @@ Y = "0"
 straight_segments = chunk_segments().map(lambda segs: [s for s in segs if s.kind is not SegmentKind.ARC]).filter(bool)
 
 
-@settings(max_examples=30, deadline=None, derandomize=True)
+@settings(max_examples=examples(15, 30), deadline=None, derandomize=True)
 @given(star_polygons(max_vertices=7).map(lambda z: replace(z, limits=(), point=ZonePoint.MACHINE)),
        straight_segments, st.sampled_from(["linear", "dogleg"]), st.sampled_from([F(0), F(0), F(1, 2)]))
 def test_polygon_verdicts_agree_with_z3_per_segment(zone, segs, rapid_mode, margin):
@@ -189,7 +190,7 @@ def arcs_near_the_polygons(draw):
     return out
 
 
-@settings(max_examples=12, deadline=None, derandomize=True)
+@settings(max_examples=examples(6, 12), deadline=None, derandomize=True)
 @given(star_polygons(max_vertices=6).map(lambda z: replace(z, limits=(), point=ZonePoint.MACHINE)),
        arcs_near_the_polygons(), st.sampled_from([F(0), F(0), F(1, 2)]))
 def test_arcs_against_polygons_agree_with_z3_per_segment(zone, segs, margin):

@@ -24,6 +24,7 @@ from nczones.prover import Prover, Verdict, verify_segments
 from nczones.prover.geometry import arc_geom, in_sweep, rational_point_on_arc
 from nczones.prover.screen import _isqrt_ceil, arc_boxes, screen_chunk
 from tests.oracles.machines import machine_text
+from tests.sizes import examples
 
 AXES3 = ("X", "Y", "Z")
 
@@ -83,7 +84,7 @@ def arcs3(draw, spiral=False):
                    clockwise=draw(st.booleans()), centre=c, turns=int(full and draw(st.booleans())))
 
 
-@settings(max_examples=300, deadline=None, derandomize=True)
+@settings(max_examples=examples(150, 300), deadline=None, derandomize=True)
 @given(st.lists(st.one_of(arcs3(), arcs3(spiral=True)), min_size=1, max_size=6))
 def test_integer_arc_boxes_contain_the_exact_box_and_are_tight(segs):
     scale = 2
@@ -148,7 +149,7 @@ def chunk_segments(draw):
     return out
 
 
-@settings(max_examples=60, deadline=None, derandomize=True)
+@settings(max_examples=examples(30, 60), deadline=None, derandomize=True)
 @given(st.lists(st.tuples(st.integers(-3, 30), st.one_of(st.none(), st.integers(-8, 2)),
                           st.one_of(st.none(), st.integers(3, 10))), min_size=1, max_size=4, unique_by=lambda r: r[0]),
        chunk_segments(), st.sampled_from(["linear", "dogleg"]), st.booleans())

@@ -12,6 +12,7 @@ and, where Z3 decides, with Z3 sent every motion.
 
 from __future__ import annotations
 
+import os
 from fractions import Fraction as F
 
 from hypothesis import HealthCheck, given, settings
@@ -106,7 +107,13 @@ def blocks(r):
     return [v.block for v in r.violations]
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+#: 12 fixed draws in the default run (25 random ones took about 40 s of it); a hunt:
+#: NCZONES_SMALL_PROGRAM_EXAMPLES=500 (randomized above 25)
+SMALL_EXAMPLES = int(os.environ.get("NCZONES_SMALL_PROGRAM_EXAMPLES", "12"))
+
+
+@settings(max_examples=SMALL_EXAMPLES, deadline=None, derandomize=SMALL_EXAMPLES <= 25,
+          suppress_health_check=[HealthCheck.too_slow])
 @given(machines(), programs(), st.sampled_from([F(0), F(0), F(1, 2), F(13, 10)]), params)
 def test_the_numpy_free_path_agrees_with_the_vectorized_path_and_z3(machine, program, margin, param):
     if param:

@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.gcode.fastpath import MIN_RUN
+from tests.sizes import examples
 
 from .helpers import mill
 
@@ -45,7 +46,7 @@ def fanuc_cam(draw):
     return "\n".join(lines) + "\n"
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(20, 40), deadline=None)
 @given(fanuc_cam(), st.sampled_from(["calculator", "increment"]))
 def test_fast_path_agrees_with_the_full_interpreter(text, dpi):
     m = mill()

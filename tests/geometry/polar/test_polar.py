@@ -28,6 +28,7 @@ from nczones.machine import parse_machine
 from nczones.motion import SegmentKind
 from nczones.prover import verify_text
 from tests.machines import machine_text
+from tests.sizes import examples
 
 ROOT = Path(__file__).resolve().parents[3]
 EX = ROOT / "specs" / "examples"
@@ -419,7 +420,7 @@ def test_controller_pulses_follow_the_path():
 # --------------------------------------------------------------------------- agreement (DESIGN §7)
 
 
-@settings(max_examples=25, deadline=None, derandomize=True, suppress_health_check=list(HealthCheck))
+@settings(max_examples=examples(12, 25), deadline=None, derandomize=True, suppress_health_check=list(HealthCheck))
 @given(
     moves=st.lists(st.tuples(st.sampled_from(["G01", "G02", "G03"]), st.integers(-30, 30), st.integers(-30, 30),
                              st.integers(0, 30)), min_size=1, max_size=3),
