@@ -296,6 +296,13 @@ def _concrete_machine(machine: Machine, params: dict[str, Fraction]) -> tuple[Ma
                     start=tuple(start)), tuple(shift))
 
 
+def machine_at_values(machine: Machine, params: dict[str, Fraction]) -> Machine:
+    """The machine as the control holds it at a counterexample's parameter values (``--param`` names; an
+    offset or start deviation added, a tool length set): the values become nominal, with no ranges.  A
+    homing error is left out: it moves the machine, not the coordinates the control interprets in."""
+    return _concrete_machine(machine, params)[0]
+
+
 # --------------------------------------------------------------------------- checking one counterexample
 
 
