@@ -23,6 +23,8 @@ only for ranged results with violations.
 
 from __future__ import annotations
 
+from fractions import Fraction
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from ..errors import InputError
@@ -30,29 +32,29 @@ from ..precompiled import replace
 from ..prover.result import Reason, Result, Verdict, Violation
 
 if TYPE_CHECKING:
-    from fractions import Fraction
+    from collections.abc import Callable
 
-    from ..gcode.source import ProgramSource
+    from ..gcode import Interpretation
     from ..machine import Machine
-    from ..prover.options import VerifyOptions
 
-__all__ = ["replayed_witnesses"]
+__all__ = ["concrete_machine", "replayed_witnesses"]
 
 #: the error code of a ranged result whose every witness lies where the control stops before its line
 REFUSED_CODE = "VF232"
 
 
-def replayed_witnesses(result: Result, source: ProgramSource, machine: Machine, options: VerifyOptions,
-                       skip: frozenset[int]) -> Result:
+def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Machine], Interpretation]) -> Result:
     """``result`` without the violations whose parameter values do not run the program to their line.
 
     Parameters
     ----------
     result : Result
         A result over parameter ranges (``options.params``); its violations name their values (``params``).
-    source, machine, options, skip
-        What the result was proved from: the program, the machine (before any case's centring), the
-        options and the block-skip switches on.
+    machine : Machine
+        The machine the ranges are deviations from (before any case's centring).
+    interpret : callable
+        The program's interpretation on a given machine with the result's options and block-skip switches
+        and no parameter ranges (``interpretation(source, m, replace(options, params=()), skip=skip)``).
 
     Returns
     -------
@@ -61,14 +63,14 @@ def replayed_witnesses(result: Result, source: ProgramSource, machine: Machine, 
         violations, a note per dropped witness, and — none kept — the verdict ``unknown`` with a VF232
         reason per refusal.
     """
-    groups: dict[tuple[tuple[str, Fraction], ...], list[Violation]] = {}
+    groups: dict[tuple[tuple[str, Fraction], ...], dict[tuple[str, int], list[Violation]]] = {}
     for v in () if result.interrupted else result.violations:
         if v.params and v.kind == "motion" and v.span is not None:
-            groups.setdefault(tuple(v.params), []).append(v)
+            groups.setdefault(tuple(v.params), {}).setdefault((v.span.file, v.span.line), []).append(v)
     dropped: dict[int, str] = {}
-    for params, group in groups.items():
-        why = _unreached(source, machine, options, skip, params, {(v.span.file, v.span.line) for v in group})
-        dropped.update({id(v): why[(v.span.file, v.span.line)] for v in group if (v.span.file, v.span.line) in why})
+    for params, at_line in groups.items():
+        for where, why in _unreached(interpret, concrete_machine(machine, dict(params))[0], params, set(at_line)).items():
+            dropped.update({id(v): why for v in at_line[where]})
     if not dropped:
         return result
     kept = tuple(v for v in result.violations if id(v) not in dropped)
@@ -82,15 +84,13 @@ def replayed_witnesses(result: Result, source: ProgramSource, machine: Machine, 
                    truncated=False)
 
 
-def _unreached(source: ProgramSource, machine: Machine, options: VerifyOptions, skip: frozenset[int],
+def _unreached(interpret: Callable[[Machine], Interpretation], at_values: Machine,
                params: tuple[tuple[str, Fraction], ...], lines: set[tuple[str, int]]) -> dict[tuple[str, int], str]:
-    """The ``(file, line)`` of ``lines`` that the program at ``params`` (nominal values) does not move on
-    before it stops, each with why: a refused block, or the program's end (or an unsupported code)."""
-    from ..replay import machine_at_values
-    from .verification import interpretation
-
+    """The ``(file, line)`` of ``lines`` that the program on ``at_values`` (the machine at ``params``, nominal
+    values) does not move on before it stops, each with why: a refused block, or the program's end (or an
+    unsupported code)."""
     at = ", ".join(f"{n} = {_written(x)}" for n, x in params)
-    run = interpretation(source, machine_at_values(machine, dict(params)), replace(options, params=()), skip=skip)
+    run = interpret(at_values)
     todo = set(lines)
     try:
         for seg in run.segments():
@@ -107,6 +107,35 @@ def _unreached(source: ProgramSource, machine: Machine, options: VerifyOptions, 
     stop = f"; {run.unsupported[0].reason}" if run.unsupported else ""
     why = f"a witness at values where the program stops before its line ({at}{stop})"
     return {k: why for k in todo}
+
+
+def concrete_machine(machine: Machine, params: dict[str, Fraction]) -> tuple[Machine, tuple[Fraction, ...]]:
+    """The machine at a counterexample's parameter values, and the homing shift per axis.
+
+    The values (``--param`` names: an offset or start deviation added, a tool length set) become nominal
+    values, with no ranges; a homing error is returned apart, as a shift: it moves the machine, not the
+    coordinates the control interprets in (``nczones replay`` adds it to the motion)."""
+    axes = machine.axis_names
+    offsets = dict(machine.offsets)
+    tools = dict(machine.tool_lengths)
+    start = list(machine.start)
+    shift = [Fraction(0)] * len(axes)
+    for name, value in params.items():
+        if name.startswith("H") and name[1:].isdigit():
+            tools[int(name[1:])] = value
+            continue
+        head, _, axis = name.rpartition(".")
+        k = axes.index(axis)
+        if head == "start":
+            start[k] += value
+        elif head == "home":
+            shift[k] += value
+        else:
+            base = list(offsets.get(head, tuple(Fraction(0) for _ in axes)))
+            base[k] += value
+            offsets[head] = tuple(base)
+    return (replace(machine, offsets=MappingProxyType(offsets), tool_lengths=MappingProxyType(tools),
+                    start=tuple(start)), tuple(shift))
 
 
 def _written(x: Fraction) -> str:
