@@ -64,11 +64,11 @@ def dec(x: Fraction | int) -> str:
     x = abs(x)
     whole, rest = divmod(x.numerator, x.denominator)
     digits = ""
-    while rest and len(digits) < 12:
+    while rest and len(digits) < 40:
         rest *= 10
         digits += str(rest // x.denominator)
         rest %= x.denominator
-    assert not rest, f"{x} is not a decimal of 12 digits"
+    assert not rest, f"{x} is not a decimal of 40 digits"
     return f"{sign}{whole}.{digits}"
 
 
