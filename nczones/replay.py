@@ -42,13 +42,13 @@ import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from fractions import Fraction
-from types import MappingProxyType
 from typing import Any
 
 from .errors import Diagnostic, InputError, InvalidArgument
 from .exact import format_decimal, parse_rational, to_float
 from .machine import Machine, RapidMode, load_machine
 from .motion import Segment, SegmentKind, arc_path_float, tip_offset
+from .pipeline.witnesses import concrete_machine
 from .zones import tip_shifted
 
 __all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "ReplayError",
@@ -269,31 +269,6 @@ def _check_hash(kind: str, path: str, actual: str, expected: Any, where: str) ->
     if expected and actual != expected:
         raise _fail("RP102", f"the {kind} {path} is not the one the report was made from: its SHA-256 is "
                              f"{actual[:16]}…, the report names {str(expected)[:16]}…", where)
-
-
-def _concrete_machine(machine: Machine, params: dict[str, Fraction]) -> tuple[Machine, Point]:
-    """The machine with the counterexample's parameter values, and the homing shift per axis."""
-    axes = machine.axis_names
-    offsets = dict(machine.offsets)
-    tools = dict(machine.tool_lengths)
-    start = list(machine.start)
-    shift = [F0] * len(axes)
-    for name, value in params.items():
-        if name.startswith("H") and name[1:].isdigit():
-            tools[int(name[1:])] = value
-            continue
-        head, _, axis = name.rpartition(".")
-        k = axes.index(axis)
-        if head == "start":
-            start[k] += value
-        elif head == "home":
-            shift[k] += value
-        else:
-            base = list(offsets.get(head, tuple(F0 for _ in axes)))
-            base[k] += value
-            offsets[head] = tuple(base)
-    return (replace(machine, offsets=MappingProxyType(offsets), tool_lengths=MappingProxyType(tools),
-                    start=tuple(start)), tuple(shift))
 
 
 # --------------------------------------------------------------------------- checking one counterexample
@@ -645,7 +620,7 @@ def replay_report(doc: Mapping[str, Any], *, base: str | None = None, machine_fi
         skip = _skips_deleted_blocks(v, settings)
         key = (tuple(sorted(params.items())), skip)
         if key not in cache:
-            concrete, shift = _concrete_machine(machine, params)
+            concrete, shift = concrete_machine(machine, params)
             cache[key] = (_segments(source, concrete, settings, skip), shift, concrete)
         segs, shift, concrete = cache[key]
         checks.append(_check_violation(v, source.name, concrete, segs, shift, margin, settings, where))

@@ -666,6 +666,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     (parameter, value as ``--param`` writes it).
     """
     from ..prover.cases import MAX_CASES, budget_reason, centred, merge, split_box
+    from .witnesses import replayed_witnesses
 
     ranges = options.ranges(machine)
     cases = [ranges]
@@ -705,6 +706,9 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
         if result.interrupted:  # Ctrl-C: the remaining cases are not verified
             break
     result = merge(results, max_violations=options.max_violations, params=ranges)
+    # a witness must replay: one at values where the control stops before its line is dropped
+    result = replayed_witnesses(result, machine, lambda m: interpretation(source, m, replace(options, params=()),
+                                                                            skip=skip))
     if splits:
         where = ", ".join(f"{n} = {format_decimal(v)}" for n, v in splits)
         result = replace(result, notes=result.notes + (f"the path branches inside the parameter ranges (a canned "
