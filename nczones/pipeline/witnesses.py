@@ -25,12 +25,13 @@ from __future__ import annotations
 
 from fractions import Fraction
 from types import MappingProxyType
-from typing import TYPE_CHECKING
 
 from ..errors import InputError
 from ..precompiled import replace
 from ..prover.result import Reason, Result, Verdict, Violation
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Callable
 
