@@ -240,6 +240,8 @@ def run_check(project: Project, store: Store, options: CheckOptions = CheckOptio
             except Exception:  # noqa: BLE001 - closing a cluster must not hide the run's outcome
                 pass
         store.commit()
+        if interrupted:  # Ctrl-C may fall between a result's commit and its count: the store says what ran
+            summary.ran = store.ran_jobs(run_id)
         summary.interrupted = interrupted
         summary.wall_s = time.perf_counter() - t0
         store.end_run(run_id, ran=summary.ran, reused=summary.reused, interrupted=interrupted,
@@ -463,6 +465,7 @@ def _execute(project: Project, plan: JobPlan, todo: list[Job], store: Store, exe
             summary.ran += 1
             bar.update(rec["verdict"])
     except KeyboardInterrupt:
+        store.rollback()  # a result put but its cells not yet marked: neither is kept
         executor.cancel()
         raise
     finally:

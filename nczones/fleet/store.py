@@ -297,6 +297,16 @@ class Store:
     def commit(self) -> None:
         self.db.commit()
 
+    def rollback(self) -> None:
+        """Drop what was written since the last commit (a result whose cells were not yet marked)."""
+        self.db.rollback()
+
+    def ran_jobs(self, run_id: int) -> int:
+        """How many jobs of ``run_id`` ran: their cells are marked ``ran`` (committed with their results)."""
+        row = self.db.execute("SELECT count(DISTINCT job_key) FROM cells WHERE run_id = ? AND status = 'ran'",
+                              (run_id,)).fetchone()
+        return int(row[0])
+
     def runs(self) -> list[Run]:
         rows = self.db.execute("SELECT run_id, started_at, finished_at, project, executor, cells, jobs, ran, "
                                "reused, interrupted, partial FROM runs ORDER BY run_id").fetchall()

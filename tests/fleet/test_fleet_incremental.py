@@ -150,3 +150,47 @@ def test_a_ctrl_c_whose_exception_is_lost_still_stops_the_run(tmp_path):
         (run,) = store.runs()
         assert run.interrupted and run.ran == 1  # the first job; the second's answer came after Ctrl-C
         assert sum(c.status == "pending" for c in store.cells(run.run_id)) == 5
+
+
+@pytest.mark.parametrize("where", ["after_commit", "before_commit"])
+def test_a_ctrl_c_between_a_result_and_its_count_keeps_the_store_consistent(tmp_path, monkeypatch, where):
+    """A Ctrl-C right after a result's commit (before the run counted it) or between the result and its cells'
+    mark (before the commit): the run's ``ran`` is the number of results kept, and every cell without one is
+    pending (found by the whole-suite runs: ``ran`` 3 with 4 results stored)."""
+    from nczones.fleet import store as store_module
+
+    calls = {"puts": 0, "raised": False}
+    real_put, real_commit, real_finish = (store_module.Store.put, store_module.Store.commit,
+                                          store_module.Store.finish_cells)
+
+    def put(self, *args, **kw):
+        real_put(self, *args, **kw)
+        calls["puts"] += 1
+
+    def ctrl_c_at_the_second_result():
+        if calls["puts"] == 2 and not calls["raised"]:
+            calls["raised"] = True
+            raise KeyboardInterrupt
+
+    def commit(self):
+        real_commit(self)
+        if where == "after_commit":
+            ctrl_c_at_the_second_result()
+
+    def finish_cells(self, run_id, key, verdict):
+        if where == "before_commit":
+            ctrl_c_at_the_second_result()
+        real_finish(self, run_id, key, verdict)
+
+    monkeypatch.setattr(store_module.Store, "put", put)
+    monkeypatch.setattr(store_module.Store, "commit", commit)
+    monkeypatch.setattr(store_module.Store, "finish_cells", finish_cells)
+    project = small_library(tmp_path / "lib", programs=3, machines=2)
+    with pytest.raises(KeyboardInterrupt):
+        check(project, tmp_path / "s.sqlite")
+    monkeypatch.undo()
+    with Store(tmp_path / "s.sqlite") as store:
+        (run,) = store.runs()
+        stored = len(list(store.results()))
+        assert run.interrupted and run.ran == stored == (2 if where == "after_commit" else 1)
+        assert sum(c.status == "pending" for c in store.cells(run.run_id)) == 6 - stored
