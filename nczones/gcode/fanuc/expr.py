@@ -202,8 +202,12 @@ def double_of(q: Fraction) -> float:
 
 _floor = math.floor
 _NEAR_HALF_LOW, _NEAR_HALF_HIGH = 0.5 - 2.0**-20, 0.5 + 2.0**-20
-#: Below this many increments (``|value| / step``) round_to's double test decides: see :func:`round_to`.
-_FAST_INCREMENTS = 16777216.0  # 2**24
+#: Below this many increments (``|value| / step``) round_to's double test decides (``x - floor(x)`` is exact there):
+#: see :func:`round_to`.
+_FAST_INCREMENTS = 4503599627370496.0  # 2**52
+#: Above this many increments the window about a half grows with the value: ``x * 2**-40`` (:func:`round_to`).
+_WIDE_INCREMENTS = 1048576.0  # 2**20
+_WINDOW = 2.0**-40
 #: A value already on the step's grid (its shadow a multiple of it) below this magnitude, in program units, stands
 #: on that multiple in every reading (:func:`round_to`); the plain-move lane's inline test uses it too.
 SHADOW_ON_GRID_BOUND = 1e8
@@ -237,11 +241,13 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
 
     Soundness: every reading differs from the double's exact value ``d`` by less than ``5.1e-15 |d|`` (the
     shadow rounds to ``d``: half an ulp; a 15-digit decimal: half a unit in the 15th digit, ``5e-15 |d|``; a
-    product or quotient in doubles: an ulp of the result); below ``2**24`` increments that is under ``2**-23``
-    increments, so where ``d``'s quotient is farther than ``2**-20`` from a half every reading (the shadow too)
-    rounds as ``d`` does: the double quotient ``|d| * (1 / step)`` (within ``2**-29`` of the exact one) decides
-    that, else the exact remainder (:func:`_near_tie`), and only nearer than ``2**-20``, or beyond ``2**24``
-    increments, are the readings computed and compared.  A shadow on the grid below
+    product or quotient in doubles: an ulp of the result), ``k 2**-47`` increments for ``k`` increments, so
+    where ``d``'s quotient is farther than ``w = max(2**-20, k 2**-40)`` from a half every reading (the shadow
+    too) rounds as ``d`` does: the double quotient ``x = |d| * (1 / step)`` (within ``k 2**-52`` of the exact
+    one; below ``2**52`` its fraction ``x - floor(x)`` is exact) decides that, else the exact remainder
+    (:func:`_near_tie`), and only nearer than ``w`` are the readings computed and compared.  (The window grows
+    with the value, so a long program's large coordinates are not all compared reading by reading: a bound of
+    ``2**24`` increments did that, a size cliff at 16.8 m in IS-B.)  A shadow on the grid below
     :data:`SHADOW_ON_GRID_BOUND` is kept: its readings are within 0.05 increments of it (``5e-15 * 1e8``
     program units, a step at least 1e-5: IS-C inch).
 
@@ -264,14 +270,15 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
             return q
     if d is not None:
         if sn == 1:
-            # |d| / step in doubles: below 2**24 its error is under 2**-29, so away from a half (by 2**-20) the
-            # nearest integer is that of the exact quotient, of the shadow's and of every reading; at a half, or
-            # beyond, the exact path below decides
+            # |d| / step in doubles (relative error 2**-53): away from a half by max(2**-20, x 2**-40) the
+            # nearest integer is that of the exact quotient, of the shadow's and of every reading; nearer, or
+            # beyond 2**52, the exact path below decides
             x = abs(d) * sd
             if x < _FAST_INCREMENTS:
                 m = _floor(x)
-                frac = x - m  # exact (x and m are doubles below 2**24)
-                if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH:
+                frac = x - m  # exact (x and m are doubles below 2**52)
+                if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH and (
+                        x < _WIDE_INCREMENTS or abs(frac - 0.5) > x * _WINDOW):
                     n = m + 1 if frac > 0.5 else m
                     return to_fraction(-n if d < 0 else n, sd)
         if q is None:
@@ -286,11 +293,18 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
 
 
 def _near_tie(num: int, den: int, n: int) -> bool:
-    """Whether ``k = num / den`` (increments, ``n`` its rounding) is within ``2**-20`` of a half, or at least
-    ``2**24``: where a reading of the double might round elsewhere (:func:`round_to`)."""
+    """Whether ``k = num / den`` (increments, ``n`` its rounding) is within ``max(2**-20, k 2**-40)`` of a
+    half: where a reading of the double might round elsewhere (:func:`round_to`).
+
+    >>> _near_tie(3 * 2**40 + 1, 2, 3 * 2**39 + 1)  # k = 3 2**39 + 1/2: a half exactly
+    True
+    >>> _near_tie(3 * 2**26 + 1, 4, 3 * 2**24)  # k = 3 2**24 + 1/4: far from a half (beyond 2**24 too)
+    False
+    """
     below = 2 * num - (2 * n - 1) * den  # 2 den (k - (n - 1/2)) >= 0
     above = (2 * n + 1) * den - 2 * num  # 2 den ((n + 1/2) - k) > 0
-    return (min(below, above) << 19) <= den or num >= den << 24
+    gap = min(below, above)  # 2 den |k - the nearest half|
+    return (gap << 19) <= den or (gap << 39) <= num
 
 
 def readings(value: tuple, step: Fraction) -> list[tuple[str, Fraction]]:

@@ -364,9 +364,24 @@ def test_round_to_a_value_with_its_shadow_is_the_shadow_rounded(n, places, step)
     try:
         got = round_to((float(q), q), step)
     except RoundingNotCertain:
-        assert abs(k - k.__floor__() - Fraction(1, 2)) < Fraction(1, 10**6) or k >= 2**24
+        assert abs(k - k.__floor__() - Fraction(1, 2)) <= max(Fraction(1, 2**20), k / 2**40)
         return
     assert got == _rounded_exactly(q, step)
+
+
+@pytest.mark.parametrize("d, step", [(71428.5, Fraction(1, 1000)), (-123456.789, Fraction(1, 1000)),
+                                     (9876.54321, Fraction(1, 100000)), (2.0**30 + 0.25, Fraction(1))])
+def test_a_large_value_far_from_a_half_is_rounded_without_its_readings(d, step, monkeypatch):
+    """Beyond 2**24 increments (16.8 m in IS-B) the window about a half grows with the value (``x 2**-40``);
+    a value far from a half is decided by its double quotient, not by comparing every reading (which made the
+    G65 loop of 5M lines 3x slower per line than at 1M: a size cliff)."""
+    from nczones.gcode.fanuc import expr
+
+    assert abs(Fraction(d) / step) > 2**24
+    want = _rounded_exactly(Fraction(d), step)
+    monkeypatch.setattr(expr, "_agreed", lambda value, step: pytest.fail(f"readings compared for {value}"))
+    assert round_to((d, None), step) == want
+    assert round_to((d, Fraction(d)), step) == want
 
 
 def test_past_the_bound_of_kept_lines_the_rest_run_the_general_path(monkeypatch):
