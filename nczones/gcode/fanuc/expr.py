@@ -30,7 +30,21 @@ on the integer parts bit by bit; ``ATAN[a]/[b]`` (and ``ATAN[a,b]``) in
 between BCD and binary; ``ADP`` multiplies by the inverse of the least input
 increment (a G65 argument written without a decimal point comes in as a
 count of increments); ``POW[a,b]`` is a to the b.  Relational operators
-compare exactly.
+compare the doubles.
+
+Readings
+--------
+How a control reads its double no manual says; the readings that fit what
+the manuals do say are the double as it is, its 15-significant-digit decimal
+and the exact decimal it stands for (the shadow), and for an address the
+double scaled to increments in doubles (:func:`round_to`, GC399).  FIX, FUP,
+ROUND outside an address, BIN, BCD, MOD, AND/OR/XOR, a computed variable
+number and the relational operators take the result every reading gives
+(:func:`integer_of`, :func:`_related`, :func:`_agreed_binary`), decided in
+doubles where the value is farther from where the readings part than they
+reach; where the readings give different results :class:`ReadingsSplit`
+(GC398) makes the line ``unknown``: ``FIX[0.3 / 0.1]`` is 2 for the double
+2.9999999999999996 and 3 for its 15 digits.
 
 >>> v = FanucVariables()
 >>> v.read(1) is VACANT, v.read(0) is VACANT
@@ -761,7 +775,9 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
     comparison, of ``EQ``/``NE``/``MOD``/``AND``/``OR``/``XOR``, of a function other than ``ABS``/``ROUND``/``ADP``
     or of ``ATAN``/``POW`` of two arguments either: those operands are compiled so (the same doubles, checked
     for NaN and infinity in the same order, so the same values and errors; a variable is read as it is, so a
-    vacant one stays :data:`VACANT` for ``EQ``/``NE``).
+    vacant one stays :data:`VACANT` for ``EQ``/``NE``).  Where FIX/FUP/BIN/BCD, a relation or MOD/AND/OR/XOR
+    must compare the readings of such an operand (near a split only) it is evaluated again with its shadow
+    (:func:`_again`).
     """
     ctx = ctx or Context()
     tag = node[0]
