@@ -207,6 +207,9 @@ CATALOGUE: tuple[Code, ...] = (
     Code("GC394", _U, _GS, "M99 in the main program, which restarts it forever (GC304 until issue 34)"),
     Code("GC395", _U, _GS, "controller state nczones does not know: a state parameter, HAL pin or INI value "
                            "read, or a state parameter assigned (GC305 until issue 34)"),
+    Code("GC398", _U, _FA, "a Fanuc macro value whose readings (the double as it is, its 15-digit decimal, the "
+                           "exact value) give different results for FIX/FUP/ROUND/MOD/AND/OR/XOR/BIN/BCD, a "
+                           "comparison or a variable number"),
     Code("GC399", _U, _FA, "a Fanuc macro value at half an increment whose readings (its 15-digit decimal, the "
                            "double scaled in doubles, the exact value) round to different increments"),
     # -- ZN: machine file

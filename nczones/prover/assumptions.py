@@ -31,7 +31,10 @@ SAFE_ASSUMPTIONS: tuple[str, ...] = (
     "G10 stores it) and a point moved by scaling (G51) are rounded to the least input increment, halves away "
     "from zero; a macro double is read as its 15-digit decimal, as scaled to increments in doubles or as the "
     "exact decimal it stands for, and where these round to different increments the verdict is unknown "
-    "(GC399); a control that reads or rounds otherwise can stand one increment away from the proved path. A point "
+    "(GC399); a control that reads or rounds otherwise can stand one increment away from the proved path. FIX, "
+    "FUP, ROUND, MOD, AND/OR/XOR, BIN/BCD, a computed variable number and the relational operators take the "
+    "result the double as it is, its 15-digit decimal and its exact decimal all give, and where they differ the "
+    "verdict is unknown (GC398); a control that reads otherwise can count a loop or take a branch differently. A point "
     "moved by rotation (G68) or polar input (G16) is the exact point rounded to the nearest increment: "
     "the control computes it to within a millionth of an increment (a point nearer than that to halfway "
     "between two increments makes the verdict unknown).",

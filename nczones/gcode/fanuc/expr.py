@@ -30,7 +30,21 @@ on the integer parts bit by bit; ``ATAN[a]/[b]`` (and ``ATAN[a,b]``) in
 between BCD and binary; ``ADP`` multiplies by the inverse of the least input
 increment (a G65 argument written without a decimal point comes in as a
 count of increments); ``POW[a,b]`` is a to the b.  Relational operators
-compare exactly.
+compare the doubles.
+
+Readings
+--------
+How a control reads its double no manual says; the readings that fit what
+the manuals do say are the double as it is, its 15-significant-digit decimal
+and the exact decimal it stands for (the shadow), and for an address the
+double scaled to increments in doubles (:func:`round_to`, GC399).  FIX, FUP,
+ROUND outside an address, BIN, BCD, MOD, AND/OR/XOR, a computed variable
+number and the relational operators take the result every reading gives
+(:func:`integer_of`, :func:`_related`, :func:`_agreed_binary`), decided in
+doubles where the value is farther from where the readings part than they
+reach; where the readings give different results :class:`ReadingsSplit`
+(GC398) makes the line ``unknown``: ``FIX[0.3 / 0.1]`` is 2 for the double
+2.9999999999999996 and 3 for its 15 digits.
 
 >>> v = FanucVariables()
 >>> v.read(1) is VACANT, v.read(0) is VACANT
@@ -57,7 +71,8 @@ if TYPE_CHECKING:
     from typing import Any, TypeAlias
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
-           "SystemVariableUnknown", "RoundingNotCertain", "readings", "SHADOW_ON_GRID_BOUND", "variable_index"]
+           "SystemVariableUnknown", "RoundingNotCertain", "ReadingsSplit", "readings", "SHADOW_ON_GRID_BOUND", "variable_index",
+           "variable_number", "integer_of"]
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
 VACANT = (0.0, Fraction(0))
@@ -365,13 +380,283 @@ def _decimal(r: Fraction) -> str:
     return f"{shown:f}..."
 
 
+class ReadingsSplit(RoundingNotCertain):
+    """A macro value whose readings give different results for FIX, FUP, ROUND (outside an address), MOD,
+    AND/OR/XOR, BIN/BCD, a comparison or a variable number (GC398).
+
+    It travels as :class:`RoundingNotCertain` does: the verdict is ``unknown`` at the line; ``reason`` names
+    every reading and its result.
+    """
+
+    def __init__(self, reason: str):
+        SystemVariableUnknown.__init__(self, "GC398", reason)
+
+
+#: Twice the readings' reach, relative: every reading of a double ``d`` (its 15-digit decimal: within
+#: ``5e-15 |d|``; a shadow that rounds to it: half an ulp, ``2**-53 |d|``) lies within ``2**-47 |d|`` of it,
+#: plus :data:`_TINY` (a subnormal's half ulp is ``2**-1075``).
+_WINDOW_READINGS = 2.0**-46
+_TINY = 2.0**-1000
+_LARGE = 4503599627370496.0  # 2**52: above it every double is an integer (the exact path decides)
+
+
+def _fifteen(d: float) -> Fraction:
+    """The double's 15-significant-digit decimal ([15i] 17 "Limitation").
+
+    >>> _fifteen(0.3 / 0.1), _fifteen(7.0)
+    (Fraction(3, 1), Fraction(7, 1))
+    """
+    if -1e15 < d < 1e15 and d == _floor(d):
+        return Fraction(int(d))
+    return Fraction(format(d, ".15g"))
+
+
+def _trunc(r: Fraction) -> int:
+    return int(r)  # towards zero
+
+
+def _up(r: Fraction) -> int:
+    n = -(-abs(r) // 1)
+    return n if r >= 0 else -n
+
+
+def _nearest(r: Fraction) -> int:
+    n = (abs(r) * 2 + 1) // 2
+    return n if r >= 0 else -n
+
+
+#: The integer an operation takes of a value, per kind: FIX and AND/OR/XOR its integer part, FUP away from
+#: zero, ROUND/MOD/BIN/BCD/a variable number the nearest integer, halves away from zero.
+_INTEGER_OF: dict[str, Callable[[Fraction], int]] = {"fix": _trunc, "fup": _up, "round": _nearest}
+
+
+def _integer_fast(value: Value, kind: str) -> int | None:
+    """The integer every reading of ``value`` gives (:data:`_INTEGER_OF` ``kind``), decided in doubles; None
+    where the double is too near where the readings could part (then :func:`_agreed_integer` decides).
+
+    Soundness: every reading lies within ``w/2`` of the double's exact value (``w = |d| 2**-46 + 2**-1000``,
+    :data:`_WINDOW_READINGS`); below ``2**52`` the fraction ``f = |d| - floor(|d|)`` is exact, so a fraction
+    farther than ``w`` from where the kind's integer changes (0 and 1 for FIX/FUP, a half for ROUND) keeps every
+    reading on the double's side.  At an integer ``d`` (``f = 0``) FIX and FUP give ``d`` for the double and its
+    15 digits (below ``1e15``) and for an integer shadow (it rounds to ``d``: it is ``d``); a shadow that may
+    be anything else is the exact path's; FIX of ``0 <= |d| < 1`` is 0 in every reading (a reading keeps the
+    value's sign).
+
+    >>> _integer_fast((2.9999999999999996, None), "fix") is None, _integer_fast((2.5, None), "fix")
+    (True, 2)
+    >>> _integer_fast((-2.5, None), "round") is None, _integer_fast((-2.4, None), "round")
+    (True, -2)
+    """
+    d = value[0]
+    a = d if d >= 0.0 else -d
+    if a >= _LARGE:
+        return None
+    m = _floor(a)
+    frac = a - m
+    w = a * _WINDOW_READINGS + _TINY
+    if kind == "round":
+        if abs(frac - 0.5) <= w:
+            return None
+        n = m + 1 if frac > 0.5 else m
+    elif frac >= 1.0 - w:
+        return None
+    elif frac > w:
+        n = m if kind == "fix" else m + 1
+    elif kind == "fix" and m == 0:
+        n = 0
+    elif frac == 0.0 and value[1] is not None and a < 1e15 and denominator_of(value[1]) == 1:
+        n = m
+    else:
+        return None
+    return -n if d < 0 else n
+
+
+def _integer_readings(value: Value, kind: str) -> list[tuple[str, int]]:
+    """Each reading of ``value`` and the integer it gives (:data:`_INTEGER_OF`): the double as it is, its
+    15-digit decimal, the exact value it stands for (the shadow, when kept)."""
+    d, q = value
+    of = _INTEGER_OF[kind]
+    exact, fifteen = Fraction(d), _fifteen(d)
+    out = [(f"the double as it is, {_decimal(exact)},", of(exact)),
+           (f"its 15-digit decimal, {_decimal(fifteen)},", of(fifteen))]
+    if q is not None:
+        out.append((f"the exact value it stands for, {_decimal(q)},", of(q)))
+    return out
+
+
+def _agreed_integer(value: Value, kind: str, what: str) -> int:
+    """The integer every reading of ``value`` gives; else :class:`ReadingsSplit` naming them."""
+    got = _integer_readings(value, kind)
+    if len({n for _name, n in got}) == 1:
+        return got[0][1]
+    raise _split(what, value, [(name, str(n)) for name, n in got])
+
+
+def _split(what: str, value: Value, results: list[tuple[str, str]]) -> ReadingsSplit:
+    shown = "; ".join(f"{name} gives {r}" for name, r in results)
+    return ReadingsSplit(f"{what}: the readings of the macro value {value[0]!r} give different results: {shown}; "
+                         "which reading the control takes is not known (specs/fanuc.md, \"A value at half an "
+                         "increment\")")
+
+
+def integer_of(value: Value, kind: str, what: str, again: Callable[[], Value] | None = None) -> int:
+    """The integer FIX (``kind`` ``"fix"``), FUP (``"fup"``) or ROUND (``"round"``) takes of a macro value
+    ``(double, shadow)``, the same in every reading (:func:`round_to`'s readings that fit an integer: the
+    double as it is, its 15-digit decimal, the exact value it stands for); :class:`ReadingsSplit` (GC398,
+    ``what`` names the operation) when they differ.  ``again``: the value evaluated again with its shadow,
+    when the one given was computed without it (only asked near a split).
+
+    >>> integer_of((0.3 / 0.1, None), "fup", "FUP"), integer_of((0.1 * 3 * 10, None), "round", "ROUND")
+    (3, 3)
+    >>> integer_of((0.3 / 0.1, None), "fix", "FIX")
+    Traceback (most recent call last):
+    ...
+    nczones.gcode.fanuc.expr.ReadingsSplit: FIX: the readings of the macro value 2.9999999999999996 give ...
+    """
+    n = _integer_fast(value, kind)
+    if n is not None:
+        return n
+    return _agreed_integer(again() if again is not None else value, kind, what)
+
+
+def variable_number(value: Value) -> int:
+    """The variable number a computed ``#[...]`` names: rounded to the nearest integer, halves away from zero
+    ([Sinha] "Real versus integer values": a real number where an integer is expected is rounded), the same
+    in every reading (:func:`integer_of`; GC398 when not).
+
+    >>> variable_number((100.49, Fraction(10049, 100))), variable_number((2.0 * 0.75, None))
+    (100, 2)
+    """
+    d = value[0]
+    if d - d:
+        raise EvalError("GC204", f"variable number {d!r} is not a number")
+    return integer_of(value, "round", "the variable number #[...]")
+
+
+def _reading_pairs(x: Value, y: Value) -> list[tuple[str, Fraction, Fraction]]:
+    """The readings of two macro values a control could compare or combine, one reading for both: the
+    doubles as they are, their 15-digit decimals, and (when both keep one) the exact values they stand for (a
+    control computing in decimals; what such a control would hold for a value without a shadow, a sine or a
+    rounded product, nczones does not know, and reading it as its double or its 15 digits there would split
+    readings that only the stand-in parts: ``1/3`` against a sine's ``0.333...``)."""
+    a, qa = x
+    b, qb = y
+    fa, fb = _fifteen(a), _fifteen(b)
+    pairs = [(f"the doubles as they are ({_decimal(Fraction(a))} and {_decimal(Fraction(b))})", Fraction(a),
+              Fraction(b)), (f"their 15-digit decimals ({_decimal(fa)} and {_decimal(fb)})", fa, fb)]
+    if qa is not None and qb is not None:
+        pairs.append((f"the exact values they stand for ({_decimal(qa)} and {_decimal(qb)})", qa, qb))
+    return pairs
+
+
+def _related(op: str, x: Value, y: Value) -> Value:
+    """``x op y`` (EQ NE GT GE LT LE) the same under every reading pair (:func:`_reading_pairs`), else
+    :class:`ReadingsSplit`.  No manual gives the relational operators a tolerance: the [15i] and [30i]
+    "Limitation" sections say ``IF [#1 EQ #2]`` "cannot always determine" equality because of the error and
+    tell the programmer to write ``IF [ABS[#1-#2] LT 0.1]``."""
+    test = _RELATIONS[op][2]
+    a, qa = x
+    b, qb = y
+    if a == b and (qa is None or qb is None or qa == qb):
+        return _TRUE if test(0, 0) else _FALSE  # one double, one 15-digit decimal, one exact value
+    pairs = _reading_pairs(x, y)
+    truths = [test(p, q) for _name, p, q in pairs]
+    if len(set(truths)) == 1:
+        return _TRUE if truths[0] else _FALSE
+    shown = "; ".join(f"{name}: {'true' if t else 'false'}" for (name, _p, _q), t in zip(pairs, truths))
+    raise ReadingsSplit(f"{op.upper()}: the readings of the macro values {a!r} and {b!r} compare differently: "
+                        f"{shown}; which reading the control compares is not known (specs/fanuc.md, \"A value at "
+                        "half an increment\")")
+
+
+def _certain_bounds(b: Value) -> tuple[float, float]:
+    """``(lo, hi)`` for a constant ``b``: a double ``a < lo`` has every reading below every reading of ``b``,
+    ``a > hi`` every reading above (between them :func:`_related` decides).
+
+    Soundness: every reading of a double ``x`` lies within ``e(x) = |x| 2**-47 + 2**-1074`` of it (the shadow
+    too: it rounds to ``x``; a shadow of ``b`` that does not is taken as its own nearest double ``c``, within
+    ``2**-53 |c|`` of it).  ``lo = b' - (|b'| 2**-44 + 2**-999)`` in doubles, ``b'`` the least of ``b`` and
+    ``c``: the subtraction rounds by at most ``2**-53 (|b'| + s)``, so ``lo + e(lo)`` stays below ``b' - e(b')``
+    with ``|b'| 2**-46`` to spare, and ``a < lo`` (``a + e(a)`` grows with ``a``) puts every reading of ``a``
+    below every reading of ``b``; ``hi`` the same way from above.  Doubles only: a comparison compiles in
+    about a microsecond.
+
+    >>> lo, hi = _certain_bounds((10.0, Fraction(10))); 9.999999999999 < lo < 10.0 < hi < 10.000000000001
+    True
+    """
+    low = high = b[0]
+    if b[1] is not None:
+        c = double_of(b[1])
+        if c != low:
+            low, high = min(low, c), max(low, c)
+    return low - (abs(low) * _BOUND_SLACK + _BOUND_TINY), high + (abs(high) * _BOUND_SLACK + _BOUND_TINY)
+
+
+_BOUND_SLACK, _BOUND_TINY = 2.0**-44, 2.0**-999
+
+
+def _mod(i: int, j: int) -> Value:
+    if j == 0:
+        raise EvalError("GC311", "attempt to take MOD by zero")
+    r = abs(i) % abs(j)
+    return _num(float(-r if i < 0 else r))
+
+
+#: MOD (both operands rounded to integers, the remainder with the dividend's sign) and AND/OR/XOR (bit by bit
+#: on the integer parts): the integer each operand is taken as (:data:`_INTEGER_OF`) and the operation.
+_INTEGER_BINARY: dict[str, tuple[str, Callable[[int, int], Value]]] = {
+    "mod": ("round", _mod), "and": ("fix", lambda i, j: _num(float(i & j))),
+    "or": ("fix", lambda i, j: _num(float(i | j))), "xor": ("fix", lambda i, j: _num(float(i ^ j)))}
+
+
+def _agreed_binary(op: str, x: Value, y: Value) -> Value:
+    """MOD/AND/OR/XOR of ``x`` and ``y`` under every reading pair (:func:`_reading_pairs`): the result (or the
+    error) they all give, else :class:`ReadingsSplit`."""
+    kind, fn = _INTEGER_BINARY[op]
+    of = _INTEGER_OF[kind]
+    outcomes: list[tuple[str, Any, str]] = []
+    first: tuple[int, int] | None = None
+    for name, p, q in _reading_pairs(x, y):
+        i, j = of(p), of(q)
+        first = first or (i, j)
+        try:
+            v = fn(i, j)
+            outcomes.append((name, ("value", v[0]), f"{i} {op.upper()} {j} = {_decimal(Fraction(v[0]))}"))
+        except EvalError as e:
+            outcomes.append((name, ("error", e.code, e.message), f"{i} {op.upper()} {j}: {e.message}"))
+    if len({o[1] for o in outcomes}) == 1 and first is not None:
+        return fn(*first)  # the value, or the error, every reading gives
+    shown = "; ".join(f"{name}: {text}" for name, _key, text in outcomes)
+    raise ReadingsSplit(f"{op.upper()}: the readings of the macro values {x[0]!r} and {y[0]!r} give different "
+                        f"results: {shown}; which reading the control takes is not known (specs/fanuc.md, \"A "
+                        "value at half an increment\")")
+
+
 def _num(d: float) -> tuple:
     """A double as a value, with the exact shadow when it is an integer."""
     return (d, Fraction(int(d))) if d == int(d) and abs(d) < 2.0**63 else (d, None)
 
 
-def _away(d: float) -> float:
-    return float(math.floor(abs(d) + 0.5)) * (1.0 if d >= 0 else -1.0)
+def _bcd(k: int, d: float) -> Value:
+    if k < 0:
+        raise EvalError("GC312", f"BCD of a negative number {d!r}")
+    return _num(float(int(str(k), 16)))
+
+
+def _bin(k: int, d: float) -> Value:
+    digits = f"{k:x}" if k >= 0 else "-"
+    if not digits.isdigit():
+        raise EvalError("GC312", f"BIN of {d!r}: not a BCD number (a nibble above 9)")
+    return _num(float(int(digits)))
+
+
+#: FIX, FUP, ROUND outside an address, BCD, BIN: the integer each takes of its operand (:data:`_INTEGER_OF`)
+#: and the value made of it (``d`` the operand's double: ROUND keeps the sign of a zero, as the double
+#: arithmetic ``floor(|d| + 0.5) * sign`` did).
+_INTEGER_FUNCTIONS: dict[str, tuple[str, Callable[[int, float], Value]]] = {
+    "fix": ("fix", lambda n, d: _num(float(n))), "fup": ("fup", lambda n, d: _num(float(n))),
+    "round": ("round", lambda n, d: _num(float(n) if d >= 0 else -float(-n))), "bcd": ("round", _bcd),
+    "bin": ("round", _bin)}
 
 
 def _int_of(d: float, what: str) -> int:
@@ -430,17 +715,10 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
         raise EvalError("GC312", f"argument to {name.upper()} is {d!r}")
     if name == "abs":
         return (abs(d), abs(q) if q is not None else None)
-    if name == "fix":
-        return _num(float(math.trunc(d)))
-    if name == "fup":
-        r = math.ceil(abs(d))
-        return _num(float(r if d >= 0 else -r))
-    if name == "round":
-        if in_address:
-            step = ctx.increment()
-            r = round_to(value, step)
-            return (float(r), r)
-        return _num(_away(d))
+    if name == "round":  # in an address (outside one: _integer_function)
+        step = ctx.increment()
+        r = round_to(value, step)
+        return (float(r), r)
     if name in ("sin", "cos", "tan"):
         return _circular(name, d)
     if name in ("asin", "acos"):
@@ -465,17 +743,6 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
             return (check_double(math.exp(d)), None)
         except OverflowError:
             raise EvalError("GC312", "calculation resulted in 'infinity'") from None
-    if name == "bcd":
-        k = int(_away(d))
-        if k < 0:
-            raise EvalError("GC312", f"BCD of a negative number {d!r}")
-        return _num(float(int(str(k), 16)))
-    if name == "bin":
-        k = int(_away(d))
-        digits = f"{k:x}" if k >= 0 else "-"
-        if not digits.isdigit():
-            raise EvalError("GC312", f"BIN of {d!r}: not a BCD number (a nibble above 9)")
-        return _num(float(int(digits)))
     if name == "adp":
         inc = ctx.increment()
         return binary_op("*", value, (float(1 / inc), 1 / inc))
@@ -498,42 +765,6 @@ def _two(name: str, a: tuple, b: tuple, ctx: Context) -> tuple:
     return _num(check_double(r))
 
 
-def _binop(op: str, a: tuple, b: tuple) -> tuple:
-    if op in ("+", "-", "*", "/"):
-        return binary_op(op, a, b)
-    x, y = a[0], b[0]
-    if op == "eq":
-        if a is VACANT or b is VACANT:
-            return _TRUE if (a is VACANT and b is VACANT) else _FALSE
-        return _TRUE if x == y else _FALSE
-    if op == "ne":
-        if a is VACANT or b is VACANT:
-            return _FALSE if (a is VACANT and b is VACANT) else _TRUE
-        return _TRUE if x != y else _FALSE
-    if op == "gt":
-        return _TRUE if x > y else _FALSE
-    if op == "ge":
-        return _TRUE if x >= y else _FALSE
-    if op == "lt":
-        return _TRUE if x < y else _FALSE
-    if op == "le":
-        return _TRUE if x <= y else _FALSE
-    if op == "mod":
-        i, j = int(_away(x)) if not x - x else _int_of(x, "MOD"), int(_away(y)) if not y - y else _int_of(y, "MOD")
-        if j == 0:
-            raise EvalError("GC311", "attempt to take MOD by zero")
-        r = abs(i) % abs(j)
-        return _num(float(-r if i < 0 else r))
-    i, j = _int_of(x, op.upper()), _int_of(y, op.upper())
-    if op == "and":
-        return _num(float(i & j))
-    if op == "or":
-        return _num(float(i | j))
-    if op == "xor":
-        return _num(float(i ^ j))
-    raise AssertionError(op)  # pragma: no cover
-
-
 def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None,
                  in_address: bool = False, exact: bool = True) -> Callable[[], Value]:
     """A function of no arguments that evaluates the tree with these variables (read when called).
@@ -544,7 +775,9 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
     comparison, of ``EQ``/``NE``/``MOD``/``AND``/``OR``/``XOR``, of a function other than ``ABS``/``ROUND``/``ADP``
     or of ``ATAN``/``POW`` of two arguments either: those operands are compiled so (the same doubles, checked
     for NaN and infinity in the same order, so the same values and errors; a variable is read as it is, so a
-    vacant one stays :data:`VACANT` for ``EQ``/``NE``).
+    vacant one stays :data:`VACANT` for ``EQ``/``NE``).  Where FIX/FUP/BIN/BCD, a relation or MOD/AND/OR/XOR
+    must compare the readings of such an operand (near a split only) it is evaluated again with its shadow
+    (:func:`_again`).
     """
     ctx = ctx or Context()
     tag = node[0]
@@ -562,7 +795,7 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
                 return lambda: common[n]
             return lambda: variables.read(n)
         inner = compile_tree(index, variables, ctx)
-        return lambda: variables.read(variable_index(inner()))
+        return lambda: variables.read(variable_number(inner()))
     if tag == NEG:
         inner = compile_tree(node[1], variables, ctx, in_address, exact)
         if not exact:
@@ -585,6 +818,10 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         trig = _TRIGONOMETRY.get(name)
         if trig is not None:
             return _trigonometric(name, trig, arg)
+        if name in _INTEGER_FUNCTIONS and not (name == "round" and in_address):
+            # ROUND's operand carries its shadow already; the others' is computed again only near a split
+            again = None if name == "round" else _again(node[2], variables, ctx, in_address)
+            return _integer_function(name, arg, again)
         return lambda: _function(name, arg(), ctx, in_address)
     if tag == FN2:
         name = node[1]
@@ -598,6 +835,39 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
 _SHADOW_FUNCTIONS = frozenset(("abs", "round", "adp"))
 #: SIN and COS: :func:`_function`'s cases without its dispatch (:func:`_trigonometric`).
 _TRIGONOMETRY = {"sin": math.sin, "cos": math.cos}
+
+
+def _again(node: tuple, variables: FanucVariables, ctx: Context, in_address: bool) -> Callable[[], Value] | None:
+    """A function that evaluates ``node`` again with its exact shadow (compiled at its first call), for an
+    operand compiled without it (``exact=False``) whose readings must be compared; None for a number or a
+    variable (their value carries its shadow as it is)."""
+    if node[0] in (NUM, VAR):
+        return None
+    compiled: list[Callable[[], Value]] = []
+
+    def again() -> Value:
+        if not compiled:
+            compiled.append(compile_tree(node, variables, ctx, in_address, True))
+        return compiled[0]()
+    return again
+
+
+def _integer_function(name: str, arg: Callable[[], Value], again: Callable[[], Value] | None) -> Callable[[], Value]:
+    """FIX, FUP, ROUND (outside an address), BCD or BIN of ``arg``: the integer every reading of the operand
+    gives (:func:`integer_of`: decided in doubles away from where readings part), GC398 where they differ."""
+    kind, make = _INTEGER_FUNCTIONS[name]
+    upper = name.upper()
+
+    def integer_function() -> Value:
+        value = arg()
+        d = value[0]
+        if d - d:
+            raise EvalError("GC312", f"argument to {upper} is {d!r}")
+        n = _integer_fast(value, kind)
+        if n is None:
+            n = _agreed_integer(again() if again is not None else value, kind, f"{upper}[...]")
+        return make(n, d)
+    return integer_function
 
 
 def _trigonometric(name: str, fn: Callable[[float], float], arg: Callable[[], Value]) -> Callable[[], Value]:
@@ -618,31 +888,120 @@ def _compile_binary(node: tuple, variables: FanucVariables, ctx: Context, in_add
                     exact: bool) -> Callable[[], Value]:
     """:func:`compile_tree` of a ``BIN`` node."""
     op = node[1]
-    arithmetic = op in ("+", "-", "*", "/")
-    # only + - * / read their operands' shadows (and only for a caller that reads the result's)
-    inner_exact = exact and arithmetic
+    if op in _RELATIONS:
+        return _compile_relation(op, node, variables, ctx, in_address)
+    if op in _INTEGER_BINARY:
+        return _compile_integer_binary(op, node, variables, ctx, in_address)
+    # + - * / read their operands' shadows (only for a caller that reads the result's)
+    inner_exact = exact
     if node[3][0] == NUM and _SLOTS:
         n = _local_index(node[2])
-        if n is not None:  # a local variable and a number (#1 + 1, #1 LT 10): no call for either
+        if n is not None:  # a local variable and a number (#1 + 1, #1 * 0.01): no call for either
             local = _local_constant(op, variables, n, (node[3][1], node[3][2]), exact)
             if local is not None:
                 return local
     left = compile_tree(node[2], variables, ctx, in_address, inner_exact)
-    if node[3][0] == NUM and _SLOTS:  # a number on the right (#1 + 1, #1 LT 10): no call for it
+    if node[3][0] == NUM and _SLOTS:  # a number on the right (#1 + 1, #2 / 2): no call for it
         const = (node[3][1], node[3][2])
-        fast = _with_constant(op, left, const) if exact or not arithmetic else _double_constant(op, left, const[0])
+        fast = _with_constant(op, left, const) if exact else _double_constant(op, left, const[0])
         if fast is not None:
             return fast
     right = compile_tree(node[3], variables, ctx, in_address, inner_exact)
-    if arithmetic:
-        if not exact:
-            return _double_arithmetic(op, left, right)
-        if _SLOTS:
-            return _arithmetic(op, left, right)
-        return lambda: binary_op(op, left(), right())
-    if op in _COMPARE:
-        return _COMPARE[op](left, right)
-    return lambda: _binop(op, left(), right())
+    if not exact:
+        return _double_arithmetic(op, left, right)
+    if _SLOTS:
+        return _arithmetic(op, left, right)
+    return lambda: binary_op(op, left(), right())
+
+
+#: Per relation: its value when every reading has the left operand below the right, when every reading has
+#: it above, and the test on exact readings (:func:`_related`).
+_RELATIONS: dict[str, tuple[Value, Value, Callable[[Any, Any], bool]]] = {
+    "lt": (_TRUE, _FALSE, operator.lt), "le": (_TRUE, _FALSE, operator.le), "gt": (_FALSE, _TRUE, operator.gt),
+    "ge": (_FALSE, _TRUE, operator.ge), "eq": (_FALSE, _FALSE, operator.eq), "ne": (_TRUE, _TRUE, operator.ne)}
+
+
+def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Context,
+                      in_address: bool) -> Callable[[], Value]:
+    """EQ NE GT GE LT LE: the doubles compared (vacant is 0, and differs from 0 in EQ/NE), the result the same
+    in every reading of the operands (:func:`_related`; GC398 where not).  Decided in doubles where the
+    operands are farther apart than the readings reach (:func:`_certain_bounds` for a number on the right:
+    one more comparison than the plain test), so a WHILE condition costs about what it did."""
+    below, above, _test = _RELATIONS[op]
+    vacancy = op in ("eq", "ne")
+    again_a = _again(node[2], variables, ctx, in_address)
+    if node[3][0] == NUM:
+        const = (node[3][1], node[3][2])
+        lo, hi = _certain_bounds(const)
+        n = None if vacancy else _local_index(node[2])
+        if n is not None:  # a local variable and a number (#1 LT 10): read in the closure
+            def local_relation() -> Value:
+                a = variables.local[n][0]
+                if a < lo:
+                    return below
+                if a > hi:
+                    return above
+                return _related(op, variables.local[n], const)
+            return local_relation
+        left = compile_tree(node[2], variables, ctx, in_address, False)
+
+        def relation_constant() -> Value:
+            x = left()
+            if x is VACANT and vacancy:
+                return above  # a vacant value differs from a number (EQ false, NE true)
+            a = x[0]
+            if a < lo:
+                return below
+            if a > hi:
+                return above
+            return _related(op, again_a() if again_a is not None else x, const)
+        return relation_constant
+    left = compile_tree(node[2], variables, ctx, in_address, False)
+    right = compile_tree(node[3], variables, ctx, in_address, False)
+    again_b = _again(node[3], variables, ctx, in_address)
+    equal = op == "eq"
+
+    def relation() -> Value:
+        x = left()
+        y = right()
+        if vacancy and (x is VACANT or y is VACANT):
+            return _TRUE if (x is VACANT and y is VACANT) == equal else _FALSE
+        a, b = x[0], y[0]
+        diff = a - b
+        m = (abs(a) + abs(b)) * _WINDOW_READINGS + _TINY
+        if diff > m:
+            return above
+        if diff < -m:
+            return below
+        return _related(op, again_a() if again_a is not None else x, again_b() if again_b is not None else y)
+    return relation
+
+
+def _compile_integer_binary(op: str, node: tuple, variables: FanucVariables, ctx: Context,
+                            in_address: bool) -> Callable[[], Value]:
+    """MOD, AND, OR, XOR (:data:`_INTEGER_BINARY`): the integers the operands are taken as decided in doubles
+    (:func:`_integer_fast`), else under every reading pair (:func:`_agreed_binary`; GC398 where they differ)."""
+    kind, fn = _INTEGER_BINARY[op]
+    upper = op.upper()
+    left = compile_tree(node[2], variables, ctx, in_address, False)
+    right = compile_tree(node[3], variables, ctx, in_address, False)
+    again_a = _again(node[2], variables, ctx, in_address)
+    again_b = _again(node[3], variables, ctx, in_address)
+
+    def integer_binary() -> Value:
+        x = left()
+        y = right()
+        if x[0] - x[0]:
+            _int_of(x[0], upper)
+        if y[0] - y[0]:
+            _int_of(y[0], upper)
+        i = _integer_fast(x, kind)
+        j = _integer_fast(y, kind)
+        if i is None or j is None:
+            return _agreed_binary(op, again_a() if again_a is not None else x,
+                                  again_b() if again_b is not None else y)
+        return fn(i, j)
+    return integer_binary
 
 
 def _local_index(node: tuple) -> int | None:
@@ -656,12 +1015,9 @@ def _local_index(node: tuple) -> int | None:
 def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
                     exact: bool) -> Callable[[], Value] | None:
     """``#n op const`` with ``#n`` a local variable, read in the closure (``variables.local``: the call level's
-    at each call) instead of through a closure of its own: the order comparisons, ``+`` and ``*`` (as
+    at each call) instead of through a closure of its own: ``+`` and ``*`` (as
     :func:`_with_constant`, and as :func:`_double_constant` when only the double is read); None for the others."""
     b, qb = const
-    test = _ORDER.get(op)
-    if test is not None:
-        return lambda: _TRUE if test(variables.local[n][0], b) else _FALSE
     if qb is None or op not in ("+", "*"):
         return None
     if not exact:
@@ -844,12 +1200,10 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
 
 
 def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable[[], Value] | None:
-    """``left op const`` for + - * / (a divisor not 0) and the order comparisons: :func:`_arithmetic` and
-    :data:`_COMPARE` with the right operand read once (the same operations in the same order), else None."""
+    """``left op const`` for + - * / (a divisor not 0): :func:`_arithmetic` with the right operand read once
+    (the same operations in the same order), else None."""
     b, qb = const
-    if op in _COMPARE:
-        return _COMPARE_CONSTANT[op](left, b)
-    if op not in ("+", "-", "*", "/") or (op == "/" and b == 0.0) or qb is None:
+    if (op == "/" and b == 0.0) or qb is None:
         return None
     if op == "/":
         exact = bool(qb._numerator)
@@ -900,45 +1254,6 @@ def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable
         n, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
         return (d, to_fraction(n, den)) if n / den == d else (d, None)
     return mul
-
-
-def _gt_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] > b else _FALSE
-
-
-def _ge_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] >= b else _FALSE
-
-
-def _lt_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] < b else _FALSE
-
-
-def _le_constant(left: Callable[[], Value], b: float) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] <= b else _FALSE
-
-
-def _gt(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] > right()[0] else _FALSE
-
-
-def _ge(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] >= right()[0] else _FALSE
-
-
-def _lt(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] < right()[0] else _FALSE
-
-
-def _le(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
-    return lambda: _TRUE if left()[0] <= right()[0] else _FALSE
-
-
-#: The order comparisons as closures (:func:`_binop`'s gt/ge/lt/le: the doubles compared, vacant as 0).
-_COMPARE = {"gt": _gt, "ge": _ge, "lt": _lt, "le": _le}
-#: The order comparisons as functions of two doubles (:func:`_local_constant`).
-_ORDER = {"gt": operator.gt, "ge": operator.ge, "lt": operator.lt, "le": operator.le}
-_COMPARE_CONSTANT = {"gt": _gt_constant, "ge": _ge_constant, "lt": _lt_constant, "le": _le_constant}
 
 
 def evaluate_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None) -> Value:

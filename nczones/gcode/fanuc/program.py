@@ -68,6 +68,7 @@ from .expr import (
     double_of,
     round_to,
     variable_index,
+    variable_number,
 )
 from .parser import EXPR, LITERAL, NEG, NUM, VAR, FanucLine, parse_line
 
@@ -1796,7 +1797,7 @@ def _target(tree: tuple, variables: FanucVariables, ctx: Context) -> Callable[[]
         n = variable_index((index[1], index[2]))
         return lambda: n
     fn = compile_tree(index, variables, ctx)
-    return lambda: variable_index(fn())
+    return lambda: variable_number(fn())
 
 
 def _library_file(folder: Path, program: int) -> Path | None:

@@ -8,8 +8,10 @@ change a value or an error.  The reference here evaluates a tree node by node wi
 
 * ``+ - * /``: :func:`nczones.gcode.expr.binary_op` (the IEEE double, checked for NaN/infinity, the exact shadow
   kept only where it rounds to the double);
-* GT/GE/LT/LE compare the doubles (vacant reads 0), EQ/NE tell vacant from 0 (0i-MF "Arithmetic and logic
-  operation"; the module docstring of :mod:`nczones.gcode.fanuc.expr`), true is ``(1.0, 1)``, false ``(0.0, 0)``;
+* EQ/NE tell vacant from 0 (0i-MF "Arithmetic and logic operation"; the module docstring of
+  :mod:`nczones.gcode.fanuc.expr`); otherwise GT/GE/LT/LE/EQ/NE, like MOD/AND/OR/XOR, on the values given as number
+  nodes (the generic path: the truth every reading of the doubles gives, else GC398; test_macro_readings.py holds
+  that to readings computed independently); true is ``(1.0, 1)``, false ``(0.0, 0)``;
 * SIN/COS in degrees on the double, no shadow (``math.sin(d * pi / 180)``, the controller's double);
 * the other functions and MOD/AND/OR/XOR on a value given as a number node (the generic path, which holds no
   specialization), negation ``(-d, -q)``.
@@ -27,11 +29,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.gcode.expr import EvalError, binary_op
-from nczones.gcode.fanuc.expr import VACANT, FanucVariables, compile_tree, evaluate_tree
+from nczones.gcode.fanuc.expr import (
+    VACANT,
+    FanucVariables,
+    SystemVariableUnknown,
+    compile_tree,
+    evaluate_tree,
+)
 from nczones.gcode.fanuc.parser import BIN, FN, FN2, NEG, NUM, VAR
 
 _TRUE, _FALSE = (1.0, Fraction(1)), (0.0, Fraction(0))
-_ORDER = {"gt": lambda x, y: x > y, "ge": lambda x, y: x >= y, "lt": lambda x, y: x < y, "le": lambda x, y: x <= y}
 
 
 def _num(value: tuple) -> tuple:
@@ -52,15 +59,10 @@ def reference(node: tuple, v: FanucVariables) -> tuple:
         op, a, b = node[1], reference(node[2], v), reference(node[3], v)
         if op in ("+", "-", "*", "/"):
             return binary_op(op, a, b)
-        if op in _ORDER:
-            return _TRUE if _ORDER[op](a[0], b[0]) else _FALSE
-        if op in ("eq", "ne"):
-            if a is VACANT or b is VACANT:
-                same = a is VACANT and b is VACANT
-            else:
-                same = a[0] == b[0]
+        if op in ("eq", "ne") and (a is VACANT or b is VACANT):
+            same = a is VACANT and b is VACANT
             return _TRUE if same == (op == "eq") else _FALSE
-        return evaluate_tree((BIN, op, _num(a), _num(b)), v)  # MOD AND OR XOR (no specialization for them)
+        return evaluate_tree((BIN, op, _num(a), _num(b)), v)  # relations, MOD AND OR XOR on number nodes
     if tag == FN:
         name, a = node[1], reference(node[2], v)
         if name in ("sin", "cos"):
@@ -78,7 +80,10 @@ _numbers = st.one_of(
     st.builds(lambda n, k: Fraction(n, 10**k), st.integers(-10**6, 10**6), st.integers(0, 4)).map(
         lambda q: (q.numerator / q.denominator, q)),
     st.sampled_from([(0.0, Fraction(0)), (1.0, Fraction(1)), (-2.5, Fraction(-5, 2)), (1e308, Fraction(10**308)),
-                     (0.1, None), (3.6, Fraction(18, 5)), (1000.0, Fraction(1000))]))
+                     (0.1, None), (3.6, Fraction(18, 5)), (1000.0, Fraction(1000)),
+                     # where readings split (GC398): FIX[0.3 / 0.1], [0.1 * 3] EQ 0.3, ROUND of 1.5 * 1.017 * 1000
+                     (2.9999999999999996, None), (0.30000000000000004, None), (0.3, Fraction(3, 10)),
+                     (1525.4999999999998, None)]))
 _variable = st.sampled_from([1, 2, 3, 4, 33, 100, 101]).map(lambda n: (VAR, (NUM, float(n), Fraction(n))))
 _leaf = _numbers.map(_num) | _variable
 _BINARY = ["+", "-", "*", "/", "gt", "ge", "lt", "le", "eq", "ne", "mod", "and", "or", "xor"]
@@ -103,6 +108,8 @@ def _outcome(fn, *args):
         return "value", fn(*args)
     except EvalError as e:
         return "error", (e.code, e.message)
+    except SystemVariableUnknown as e:  # GC398: readings that split (the same reason)
+        return "unknown", (e.code, e.reason)
     except OverflowError:  # an exact shadow beyond the double range (binary_op's own limit)
         return "overflow", None
 
