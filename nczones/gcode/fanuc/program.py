@@ -45,7 +45,7 @@ from ..blocks import LANE_FULL
 from ..codes import FANUC_CANCEL_CYCLE_G, FANUC_CYCLE_G
 from ..expr import EvalError
 from ..lexer import make_span, plain_block, plain_block_of, scan_plain
-from ..program import (
+from ..runner_common import (
     DEFAULT_MAX_LOOP_ITERATIONS,
     FastRunRequest,
     IterationBoundExceeded,
