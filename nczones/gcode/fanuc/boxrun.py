@@ -274,7 +274,10 @@ class _Lines:
 
 
 def _miss(st: _Run, key: str) -> tuple:
-    """The layout of ``key`` not met before in this plane (kept): ``()`` for a line out of the subset."""
+    """The layout of ``key`` not met before in this plane (kept), or kept as ``()``: a line out of the subset."""
+    got = st.layouts.get(key)
+    if got is not None:
+        return got  # type: ignore[no-any-return]
     got = None if key.startswith("\ufeff") else _layout(key, st.index, st.digits, st.plane)
     got = got or ()
     if len(st.layouts) < _MAX_LAYOUTS:
@@ -306,15 +309,12 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], text: str, pos: int, l
             break
         key = keys[i]
         end = pos + len(key)
-        got = layouts.get(key)
-        if not got:  # not met yet (None), or out of the subset (())
-            if got is None:
-                got = _miss(st, key)
-            if not got:
-                if key.strip(" \t\r"):
-                    break
-                pos, lineno, i = end + 1, lineno + 1, i + 1  # a blank line: no block (plain_first)
-                continue
+        got = layouts.get(key) or _miss(st, key)
+        if not got:  # out of the subset
+            if key.strip(" \t\r"):
+                break
+            pos, lineno, i = end + 1, lineno + 1, i + 1  # a blank line: no block (plain_first)
+            continue
         g, f, words, arc, r_arc = got
         line = dotless[i]
         mo = motion if g is None else gvalues.get(line[g], -1)
@@ -339,13 +339,13 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], text: str, pos: int, l
             rv = int(line[r]) * rm
             dx = ea - sa
             dy = eb - sb
+            a0, a1, adx = (sa, ea, dx) if dx >= 0 else (ea, sa, -dx)  # the ends' least and greatest, |dx|
+            b0, b1, ady = (sb, eb, dy) if dy >= 0 else (eb, sb, -dy)
             ar = rv if rv > 0 else -rv
             w = 2 * ar + _SLACK
             # a chord of at most sqrt(3)|R| (_arc's test; |dx|, |dy| <= |R| and not both 0 gives 0 < l2 <= 2 R**2)
-            if ((-ar <= dx <= ar and -ar <= dy <= ar and (dx or dy)) or 0 < dx * dx + dy * dy <= 3 * ar * ar) \
-                    and (sa if sa > ea else ea) - w >= lo[ia] \
-                    and (sa if sa < ea else ea) + w <= hi[ia] and (sb if sb > eb else eb) - w >= lo[ib] \
-                    and (sb if sb < eb else eb) + w <= hi[ib]:
+            if ((adx <= ar and ady <= ar and (adx or ady)) or 0 < dx * dx + dy * dy <= 3 * ar * ar) \
+                    and a1 - w >= lo[ia] and a0 + w <= hi[ia] and b1 - w >= lo[ib] and b0 + w <= hi[ib]:
                 pass  # inside the run's box (_arc): the box stays as it is
             elif not _widen(lo, hi, ia, ib, r_arc_box(sa, sb, ea, eb, rv, mo == 20)):
                 break
