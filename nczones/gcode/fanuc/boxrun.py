@@ -339,8 +339,14 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], text: str, pos: int, l
             rv = int(line[r]) * rm
             dx = ea - sa
             dy = eb - sb
-            a0, a1, adx = (sa, ea, dx) if dx >= 0 else (ea, sa, -dx)  # the ends' least and greatest, |dx|
-            b0, b1, ady = (sb, eb, dy) if dy >= 0 else (eb, sb, -dy)
+            if dx >= 0:  # the ends' least and greatest, |dx| (statements: no tuple is made)
+                a0, a1, adx = sa, ea, dx
+            else:
+                a0, a1, adx = ea, sa, -dx
+            if dy >= 0:
+                b0, b1, ady = sb, eb, dy
+            else:
+                b0, b1, ady = eb, sb, -dy
             ar = rv if rv > 0 else -rv
             w = 2 * ar + _SLACK
             # a chord of at most sqrt(3)|R| (_arc's test; |dx|, |dy| <= |R| and not both 0 gives 0 < l2 <= 2 R**2)
