@@ -126,7 +126,7 @@ class Interpretation:
             # a streamed file (FileText) is read block by block only by the fast path (the language layer
             # takes the whole text, see run_with_fastpath)
             text = self.text = materialized(text)
-        if dialect == "fanuc":
+        if dialect == "fanuc" and (not isinstance(text, str) or "$" in text):  # (a path header is "$n")
             from .fanuc.paths import select_path
 
             text = self.text = select_path(text, machine.fanuc.path, source.name)
