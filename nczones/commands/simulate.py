@@ -188,7 +188,7 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def configure(p: argparse.ArgumentParser) -> None:
-    from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
+    from ..gcode.runner_common import DEFAULT_MAX_LOOP_ITERATIONS
 
     p.description = ("Run PROGRAM through the reference controller pulse by pulse. Exit status: 0 "
                      "no alarm, 1 an alarm, 2 bad input or a code the controller cannot run.")

@@ -303,7 +303,7 @@ def _color(stream: TextIO) -> bool:
 
 
 def configure(p: argparse.ArgumentParser) -> None:
-    from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
+    from ..gcode.runner_common import DEFAULT_MAX_LOOP_ITERATIONS
 
     p.description = ("Prove that every motion of each PROGRAM stays inside the machine's allowed set, or report "
                      "exact counterexamples (with --output the report goes to the file and each program's one-line summary "

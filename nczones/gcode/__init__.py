@@ -50,7 +50,7 @@ from ..errors import GcodeError, InvalidArgument, program_lines
 from ..machine import Machine
 from ..motion import MotionChunk, Segment
 from . import segments as _segments_module  # noqa: F401  # loaded first: the function segments() below keeps the name
-from .program import DEFAULT_MAX_LOOP_ITERATIONS
+from .runner_common import DEFAULT_MAX_LOOP_ITERATIONS
 from .source import ProgramLike, ProgramSource, as_source, load_program, materialized, program_text
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
@@ -126,7 +126,7 @@ class Interpretation:
             # a streamed file (FileText) is read block by block only by the fast path (the language layer
             # takes the whole text, see run_with_fastpath)
             text = self.text = materialized(text)
-        if dialect == "fanuc":
+        if dialect == "fanuc" and (not isinstance(text, str) or "$" in text):  # (a path header is "$n")
             from .fanuc.paths import select_path
 
             text = self.text = select_path(text, machine.fanuc.path, source.name)
@@ -219,7 +219,7 @@ class Interpretation:
                                       library=self.subroutine_path, files=self.subroutine_files)
             return
         from .fanuc.program import FanucRunner
-        from .program import StringSource
+        from .runner_common import StringSource
 
         runner = FanucRunner(StringSource(text), self.file, self.fanuc_variables(), settings=self.machine.fanuc,
                              block_delete=self.block_delete, library=self.library, state=it,
@@ -335,7 +335,7 @@ def program_blocks(text: str, file: str, block_delete: bool | Collection[int], i
 
 def unknown_at_unsupported(interpreter: Interpreter, blocks: Iterable[Any]) -> Iterator[Any]:
     """``blocks``; an UnsupportedGcode ends them, recorded as the interpreter's ``unknown`` reason."""
-    from .program import UnsupportedGcode
+    from .runner_common import UnsupportedGcode
 
     try:
         yield from blocks

@@ -76,7 +76,7 @@ from .linuxcnc.state import (
     linuxcnc_state_parameters,
 )
 from .passes import PassGuard
-from .program import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
+from .runner_common import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
 from .segments import dadd, make_segment, with_tool_deps
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true

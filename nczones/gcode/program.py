@@ -90,7 +90,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Collection, Generator, Iterator
-from contextvars import ContextVar
 from fractions import Fraction
 
 from ..errors import Diagnostic, GcodeError, NczonesError, SourceSpan
@@ -120,6 +119,16 @@ from .lexer import (
     scan_simple,
 )
 from .parser import OWord, ParsedLine, parse_line
+from .runner_common import (  # what the Fanuc runner shares with this one (its own module: start-up)
+    DEFAULT_MAX_LOOP_ITERATIONS,
+    WATCHED_LIMITS,  # noqa: F401  # (kept here: nczones.gcode.program.WATCHED_LIMITS)
+    FastRunRequest,
+    IterationBoundExceeded,
+    LineSource,
+    StringSource,
+    UnsupportedGcode,
+    interpretation_spent,
+)
 from .shapes import LAYOUT, RUNS, CompiledLine, compiled_line, line_shaped, parse_line_shaped
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
@@ -137,91 +146,12 @@ __all__ = [
     "DEFAULT_MAX_LOOP_ITERATIONS",
 ]
 
-DEFAULT_MAX_LOOP_ITERATIONS = 100_000
 MAX_REPORTED_ERRORS = 10
-
-#: The run limits (:class:`nczones.prover.limits.RunLimits`) whose ``watch()`` block is executing: interpretation
-#: is lazy, it runs inside that block, and its repetitions ask :func:`interpretation_spent`.
-WATCHED_LIMITS: ContextVar[Any] = ContextVar("nczones_watched_limits", default=None)
-
-
-def interpretation_spent() -> str | None:
-    """Why interpretation must stop now: the watched run's budget (``--budget``) is spent; None when no run
-    is watched, it has no budget or budget is left.  Asked at every repetition (a loop iteration, a jump
-    back, a repeat of a call or of a canned cycle): a program that repeats for hours ends within the budget,
-    as ``unknown`` (VF203) at the repetition that found it spent."""
-    lim = WATCHED_LIMITS.get()
-    if lim is None or lim.budget_s is None or not lim.budget_spent():
-        return None
-    return (f"budget of {lim.budget_s:g} s spent after {lim.spent_at or lim.elapsed():.1f} s while interpreting "
-            "the program (raise --budget)")
-
-
-class UnsupportedGcode(NczonesError):
-    """The program uses language the layer cannot model: the verdict is ``unknown``.
-
-    Attributes
-    ----------
-    diagnostic : Diagnostic
-        Code (GC3xx), reason and span (file, line, column, source text).
-    """
-
-    def __init__(self, diagnostic: Diagnostic):
-        self.diagnostic = diagnostic
-        super().__init__(diagnostic.render())
-
-    @property
-    def code(self) -> str:
-        return self.diagnostic.code
-
-    @property
-    def reason(self) -> str:
-        return self.diagnostic.message
-
-    @property
-    def span(self) -> SourceSpan | None:
-        return self.diagnostic.span
-
-
-class IterationBoundExceeded(UnsupportedGcode):
-    """A loop ran more often than ``max_loop_iterations`` (GC302)."""
-
 
 # --------------------------------------------------------------------------- sources
 
 
-class _Source:
-    """Random access to the lines of a program by offset (string or file)."""
-
-    def line_at(self, pos: int) -> tuple[str | None, int]:
-        """The line starting at ``pos`` (without newline) and the next offset; None at EOF."""
-        raise NotImplementedError
-
-
-class StringSource(_Source):
-    __slots__ = ("text", "n")
-    text: str
-    n: int
-
-    def __init__(self, text: str):
-        self.text = text
-        self.n = len(text)
-
-    def line_at(self, pos: int) -> tuple[str | None, int]:
-        if pos >= self.n:
-            return None, pos
-        end = self.text.find("\n", pos)
-        if end < 0:
-            end = self.n
-        line = self.text[pos:end]
-        if pos == 0 and line.startswith("\ufeff"):
-            line = line[1:]
-        if line.endswith("\r"):
-            line = line[:-1]
-        return line, end + 1
-
-
-class _FileSource(_Source):
+class _FileSource(LineSource):
     __slots__ = ("f", "where")
 
     def __init__(self, f: BinaryIO):
@@ -317,23 +247,6 @@ _REUSE_CONTROL = True
 _DEBUG_PARAM = re.compile(r"#(?:<([^>]*)>|(\d+))")
 
 
-class FastRunRequest:
-    """What the runner yields, instead of a block, on reaching a line registered in ``fast_runs``.
-
-    The caller may interpret lines from there on by itself (they must be
-    lines of plain words the runner would yield as blocks, one block per
-    line with words); it sets ``resume`` to ``(pos, lineno, index)``, the
-    offset and number of the first line it did not take and the index of
-    the next block, or leaves it None to let the runner read the line.
-    """
-
-    __slots__ = ("pos", "lineno", "index", "resume")
-    resume: tuple[int, int, int] | None
-
-    def __init__(self, pos: int, lineno: int, index: int):
-        self.pos, self.lineno, self.index, self.resume = pos, lineno, index, None
-
-
 def _skipped_unread(line: str) -> bool:
     """Whether a line starts with '/' and LinuxCNC, its block-delete switch on, skips it unread: only its
     comments are checked (an unclosed or nested comment is an error even there, ``rs274 -b``), so a line
@@ -343,7 +256,7 @@ def _skipped_unread(line: str) -> bool:
 
 
 class Runner:
-    def __init__(self, source: _Source, file: str, params: Parameters, block_delete: bool | Collection[int],
+    def __init__(self, source: LineSource, file: str, params: Parameters, block_delete: bool | Collection[int],
                  max_loop_iterations: int, max_call_depth: int, first_line: int = 1, first_index: int = 0,
                  fast_runs: dict | None = None, lane: Any = None, library: Collection[str | Path] = (),
                  files: dict[str, dict] | None = None):

@@ -39,7 +39,7 @@ import os
 from collections.abc import Callable
 from fractions import Fraction
 
-from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
+from ..gcode.runner_common import DEFAULT_MAX_LOOP_ITERATIONS
 from ..gcode.source import ProgramLike, ProgramSource, as_source, program_text
 from ..machine import Machine
 from .limits import DEFAULT_BUDGET_S, RunLimits

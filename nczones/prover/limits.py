@@ -55,7 +55,7 @@ import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 
-from ..gcode.program import WATCHED_LIMITS
+from ..gcode.runner_common import WATCHED_LIMITS
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False

@@ -27,7 +27,7 @@ from fractions import Fraction
 
 from ..errors import Diagnostic, InputError, InvalidArgument
 from ..exact import exact, format_exact, parse_decimal, parse_rational
-from ..gcode.program import DEFAULT_MAX_LOOP_ITERATIONS
+from ..gcode.runner_common import DEFAULT_MAX_LOOP_ITERATIONS
 from ..machine import Machine
 from ..precompiled import dataclass, field, replace  # dataclasses' without importing it (start-up)
 from .limits import DEFAULT_BUDGET_S, RunLimits

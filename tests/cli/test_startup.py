@@ -249,11 +249,15 @@ def test_the_program_exits_with_the_status_main_returns(tmp_path):
 
 def test_a_small_fanuc_verify_loads_neither_dataclasses_nor_pathlib(tmp_path):
     # issue 36 (startup36c): the Fanuc modules make their classes through nczones.precompiled too, and pathlib
-    # (urllib.parse, ipaddress) is imported only for a library folder; site is left out as in the test above
+    # (urllib.parse, ipaddress) is imported only for a library folder; site is left out as in the test above.
+    # fanucfix38: nor the LinuxCNC language layer (its runner and line shapes: what the two runners share is in
+    # nczones.gcode.runner_common), nor the multi-path reader (a text without "$" has no path header)
     program = tmp_path / "small.nc"
     program.write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n")
     machine = ROOT / "specs" / "machines" / "fanuc_mill.toml"
-    names = ("dataclasses", "inspect", "ast", "pathlib", "urllib.parse", "ipaddress", "numpy", "z3", "signal", "threading")
+    names = ("dataclasses", "inspect", "ast", "pathlib", "urllib.parse", "ipaddress", "numpy", "z3", "signal", "threading",
+             "nczones.gcode.program", "nczones.gcode.shapes", "nczones.gcode.linuxcnc.doubles", "nczones.gcode.mentions",
+             "nczones.gcode.fanuc.paths")
     code = (f"import sys\nsys.path[:0] = {[p for p in sys.path if p]!r}\nfrom nczones.cli import main\n"
             f"assert main(['verify', {str(program)!r}, '--machine', {str(machine)!r}]) == 0\n"
             f"print(sorted(m for m in {names!r} if m in sys.modules))")

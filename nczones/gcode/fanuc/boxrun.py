@@ -6,7 +6,8 @@ layer (``FanucRunner.read_plain`` -> ``scan_plain`` -> ``plain_first`` -> ``Fanu
 ``_arc_lane``) costs 15-20 us, most of it making Fractions the box never keeps.  :func:`read_box_run` reads a
 run of such lines from the text itself: each line is keyed on its layout (its digits zeroed, as the LinuxCNC
 double pass keys its lines, ``gcode/shapes.py``), the layout read once into where its numbers are and what they
-are, and the line then updates the interpreter's state kept as scaled integers (``10**SCALE``, as the box's):
+are (the text is cut into lines once, by :class:`_Lines`, when its first line is in the subset), and the line
+then updates the interpreter's state kept as scaled integers (``10**SCALE``, as the box's):
 the position (program value plus the offset, ``FanucInterpreter.lane``), the motion mode and the feed.  Each
 motion widens the box as the lane's would: a straight move by its end, an arc by
 :func:`~nczones.gcode.fanuc.columns.r_arc_box` / :func:`~nczones.gcode.fanuc.columns.centre_arc_box` and the ends
@@ -66,12 +67,14 @@ _G = {"0": 0, "00": 0, "1": 10, "01": 10, "2": 20, "02": 20, "3": 30, "03": 30}
 
 def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int, str, str]) -> tuple | None:
     """What a line of layout ``key`` holds in the plane ``(ia, ib, centre letter a, centre letter b)``, its
-    numbers as slices of the line with its points removed: ``(g, f, straight, arc)`` with ``g`` the slice of the
+    numbers as slices of the line with its points removed: ``(g, f, straight, arc, r_arc)`` with ``g`` the slice of the
     G number (None: no G), ``f`` ``(slice, multiplier)`` of F or None, ``straight`` the axis words ``((slice,
-    multiplier, axis index), ...)`` (None when the line has R, I, J or K: not a straight move) and ``arc``
+    multiplier, axis index), ...)`` (None when the line has R, I, J or K: not a straight move), ``arc``
     ``(R's slice, its multiplier, centre a, centre b, word a's slice, its multiplier, word b's, its multiplier,
     the other axes' words)`` (a centre offset as F, None when absent; ``arc`` None when the line is no arc the lane
-    takes in the plane); None for a line out of the subset (module docstring)."""
+    takes in the plane) and ``r_arc``, the same arc's ``(R's slice, its multiplier, word a's slice, its
+    multiplier, word b's, its multiplier)`` when it is an R arc with both words of the plane and no other axis
+    (the form :func:`_lines` reads itself), else None; None for a line out of the subset (module docstring)."""
     pos, n = 0, len(key)
     if key[-1:] == "\r":  # a CR LF line end
         n -= 1
@@ -125,15 +128,17 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
     ia, ib, la, lb = plane
     words = tuple(axes)
     rijk = [c for c in "RIJK" if c in other]
-    arc = None
+    arc = r_arc = None
     if rijk and all(c in ("R", la, lb) for c in rijk) and ("R" in other) != (la in other or lb in other) \
             and any(i == ia or i == ib for _s, _m, i in words):
         wa = next(((sl, m) for sl, m, i in words if i == ia), (None, 0))
         wb = next(((sl, m) for sl, m, i in words if i == ib), (None, 0))
         r = other.get("R", (None, 0))
-        arc = (r[0], r[1], other.get(la), other.get(lb), wa[0], wa[1], wb[0], wb[1],
-               tuple(w for w in words if w[2] != ia and w[2] != ib))
-    return (g, other.get("F"), None if rijk else words, arc)
+        helix = tuple(w for w in words if w[2] != ia and w[2] != ib)
+        arc = (r[0], r[1], other.get(la), other.get(lb), wa[0], wa[1], wb[0], wb[1], helix)
+        if r[0] is not None and wa[0] is not None and wb[0] is not None and not helix:
+            r_arc = (r[0], r[1], wa[0], wa[1], wb[0], wb[1])
+    return (g, other.get("F"), None if rijk else words, arc, r_arc)
 
 
 def _takes(interp: Any, runner: Any) -> tuple[bool, bool] | None:
@@ -228,67 +233,160 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
     """Read the plain lines of ``text`` from offset ``pos`` (line ``lineno``) into the box of the interpreter's
     run, as the plain lanes would (module docstring): ``(next offset, next line number, whether the chunk is
     full)``, or None when the first line is not taken (nothing changed)."""
+    if pos and text[pos - 1] != "\n":
+        return None  # (not a line's start: never asked so)
     st = _start(runner)
     if st is None:
         return None
-    keys = runner.box_keys
-    if keys is None or len(keys) != len(text):
-        keys = runner.box_keys = text.translate(_ZERO_DIGITS)  # the layouts of every line (digits zeroed)
-    pos, lineno = _lines(st, text, keys, pos, lineno)
+    lines = runner.box_keys
+    if lines is None or lines.text is not text:
+        end = text.find("\n", pos)
+        key = text[pos:end if end >= 0 else len(text)].translate(_ZERO_DIGITS)
+        if not (st.layouts.get(key) or _miss(st, key)) and key.strip(" \t\r"):
+            return None  # the first line is out of the subset: the text is not cut (a program it declines)
+        lines = runner.box_keys = _Lines(text)
+    index = lines.index(pos)
+    pos, lineno, index = _lines(st, lines.keys, lines.dotless, text, pos, lineno, index)
+    lines.pos, lines.at = pos, index
     if not st.taken:
         return None
     return _hand_back(runner, runner.state, st, pos, lineno)
 
 
-def _miss(st: _Run, key: str) -> tuple | None:
-    """The layout of ``key`` not met before in this plane (kept)."""
+class _Lines:
+    """The main text cut into its lines once (``str.split``, not a slice a line): each line's layout (its digits
+    zeroed, :func:`_layout`'s key) and the line with its points removed (where the layout's slices read), and
+    the index of the line at offset :attr:`pos` (where the last run ended: the next usually starts there)."""
+
+    __slots__ = ("text", "keys", "dotless", "pos", "at")
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.keys = text.translate(_ZERO_DIGITS).split("\n")
+        self.dotless = text.replace(".", "").split("\n")
+        self.pos = self.at = 0
+
+    def index(self, pos: int) -> int:
+        """The index of the line starting at offset ``pos``: counted from the last run's end (runs read forward)."""
+        if pos >= self.pos:
+            return self.at + self.text.count("\n", self.pos, pos)
+        return self.at - self.text.count("\n", pos, self.pos)
+
+
+def _miss(st: _Run, key: str) -> tuple:
+    """The layout of ``key`` not met before in this plane (kept), or kept as ``()``: a line out of the subset."""
+    got = st.layouts.get(key)
+    if got is not None:
+        return got  # type: ignore[no-any-return]
     got = None if key.startswith("\ufeff") else _layout(key, st.index, st.digits, st.plane)
+    got = got or ()
     if len(st.layouts) < _MAX_LAYOUTS:
         st.layouts[key] = got
     return got
 
 
-def _lines(st: _Run, text: str, keys: str, pos: int, lineno: int) -> tuple[int, int]:
-    """Read lines from ``pos`` while they are in the subset (module docstring): the next offset and line number;
-    the state, box and counts in ``st``."""
+def _lines(st: _Run, keys: list[str], dotless: list[str], text: str, pos: int, lineno: int,
+           i: int) -> tuple[int, int, int]:
+    """Read lines from ``pos`` (the line of index ``i`` in ``keys``, the lines' layouts, and ``dotless``, the
+    lines without their points: :class:`_Lines`) while they are in the subset (module docstring): the next offset,
+    line number and index; the state, box and counts in ``st``.
+
+    An R arc with both words of the plane and no other axis (its layout's ``r_arc``) is read here, not by
+    :func:`_arc`: the same steps written out (the per-line cost of the R-arc programs, issue 36)."""
     p, lo, hi, off, layouts, gvalues = st.p, st.lo, st.hi, st.off, st.layouts, _G
     motion, feed, room, kinds, straight_ok, arc_ok = st.motion, st.feed, st.room, st.kinds, st.straight_ok, st.arc_ok
-    taken = g_seen = last_pos = 0
-    pos0, lineno0 = pos, lineno
+    ia, ib = st.plane[0], st.plane[1]
+    oa, ob = off[ia], off[ib]
+    taken = g_seen = last_pos = last_no = 0
+    if feed < 0:
+        return pos, lineno, i  # (the lanes' decline of a negative feed; an F word read here is never negative)
     n = len(text)
-    while taken < room and pos < n:
-        end = text.find("\n", pos)
-        if end < 0:
-            end = n
-        key = keys[pos:end]
-        got = layouts.get(key, 0)
-        if got is None or (got == 0 and (got := _miss(st, key)) is None):
+    # ``while True``: the loop's back edge is a JUMP_BACKWARD, which counts towards CPython 3.11's warm-up of the
+    # code (``while cond:`` ends in POP_JUMP_BACKWARD_IF_TRUE, which does not): the loop is specialized after 8
+    # lines, not after 8 calls (a 10,000-line run is 10 calls)
+    while True:
+        if taken >= room or pos >= n:
+            break
+        key = keys[i]
+        end = pos + len(key)
+        got = layouts.get(key) or _miss(st, key)
+        if not got:  # out of the subset
             if key.strip(" \t\r"):
                 break
-            pos, lineno = end + 1, lineno + 1  # a blank line: no block (plain_first)
+            pos, lineno, i = end + 1, lineno + 1, i + 1  # a blank line: no block (plain_first)
             continue
-        g, f, words, arc = got
-        line = text[pos:end].replace(".", "")
+        g, f, words, arc, r_arc = got
+        line = dotless[i]
         mo = motion if g is None else gvalues.get(line[g], -1)
-        fv = feed if f is None else int(line[f[0]]) * f[1]
-        if mo < 0 or fv < 0 or (fv == 0 and f is not None):
-            break  # another G; F 0 or negative (the lanes' decline)
+        if f is None:
+            fv = feed
+        else:
+            fv = int(line[f[0]]) * f[1]  # (never negative: the layout has no sign in F)
+            if not fv:
+                break  # F 0 (the lanes' decline)
+        if mo < 0:
+            break  # another G
         if mo < 20:
             if words is None or not straight_ok or (mo == 10 and fv == 0):
                 break  # R, I, J, K in G0/G1; G1 without a feed (check_feed): the general path
             _straight(line, words, p, lo, hi, off)
+        elif r_arc is not None and fv and arc_ok:  # _arc's steps for an R arc in the plane, written out
+            r, rm, wa, am, wb, bm = r_arc
+            sa = p[ia]
+            sb = p[ib]
+            ea = int(line[wa]) * am + oa
+            eb = int(line[wb]) * bm + ob
+            rv = int(line[r]) * rm
+            dx = ea - sa
+            dy = eb - sb
+            if dx >= 0:  # the ends' least and greatest, |dx| (statements: no tuple is made)
+                a0, a1, adx = sa, ea, dx
+            else:
+                a0, a1, adx = ea, sa, -dx
+            if dy >= 0:
+                b0, b1, ady = sb, eb, dy
+            else:
+                b0, b1, ady = eb, sb, -dy
+            ar = rv if rv > 0 else -rv
+            w = 2 * ar + _SLACK
+            # a chord of at most sqrt(3)|R| (_arc's test; |dx|, |dy| <= |R| and not both 0 gives 0 < l2 <= 2 R**2)
+            if ((adx <= ar and ady <= ar and (adx or ady)) or 0 < dx * dx + dy * dy <= 3 * ar * ar) \
+                    and a1 - w >= lo[ia] and a0 + w <= hi[ia] and b1 - w >= lo[ib] and b0 + w <= hi[ib]:
+                pass  # inside the run's box (_arc): the box stays as it is
+            elif not _widen(lo, hi, ia, ib, r_arc_box(sa, sb, ea, eb, rv, mo == 20)):
+                break
+            p[ia] = ea
+            p[ib] = eb
         elif arc is None or fv == 0 or not arc_ok or not _arc(st, line, arc, mo == 20):
             break
         kinds[mo // 10] += 1
         motion, feed = mo, fv
-        g_seen += g is not None
-        last_pos = pos
+        if g is not None:
+            g_seen += 1
+        last_pos, last_no = pos, lineno
         taken += 1
-        pos, lineno = end + 1, lineno + 1
+        pos, lineno, i = end + 1, lineno + 1, i + 1
     st.motion, st.feed, st.taken, st.g_seen = motion, feed, taken, g_seen
     if taken:
-        st.last = (last_pos, lineno0 + keys.count("\n", pos0, last_pos))  # the last line taken, its number
-    return pos, lineno
+        st.last = (last_pos, last_no)  # the last line taken, its number
+    return pos, lineno, i
+
+
+def _widen(lo: list[int], hi: list[int], ia: int, ib: int, box: tuple[int, int, int, int] | None) -> bool:
+    """The run's box widened in the plane's axes ``ia``, ``ib`` by an arc's ``box`` (``r_arc_box``'s), False when
+    there is none (the interpreter decides the arc)."""
+    if box is None:
+        return False
+    la, ha, lb, hb = box
+    if la < lo[ia]:
+        lo[ia] = la
+    if ha > hi[ia]:
+        hi[ia] = ha
+    if lb < lo[ib]:
+        lo[ib] = lb
+    if hb > hi[ib]:
+        hi[ib] = hb
+    return True
 
 
 def _straight(line: str, words: tuple, p: list[int], lo: list[int], hi: list[int], off: list[int]) -> None:

@@ -45,7 +45,7 @@ from ..blocks import LANE_FULL
 from ..codes import FANUC_CANCEL_CYCLE_G, FANUC_CYCLE_G
 from ..expr import EvalError
 from ..lexer import make_span, plain_block, plain_block_of, scan_plain
-from ..program import (
+from ..runner_common import (
     DEFAULT_MAX_LOOP_ITERATIONS,
     FastRunRequest,
     IterationBoundExceeded,
@@ -278,7 +278,7 @@ class FanucRunner:
         #: the box route's run reader (boxrun.read_box_run): the decimals a length may have, the layouts read
         self.box_digits = digits
         self.box_layouts: dict[str, Any] = {}
-        self.box_keys: str | None = None  # the main text with its digits zeroed (read_box_run)
+        self.box_keys: Any = None  # the main text cut into lines, their digits zeroed (read_box_run: boxrun._Lines)
         self.box_declined = -1  # the offset where read_box_run last took no line
         self.box_misses = self.box_wait = 0  # attempts in a row that took none; lines to pass before the next
         self._long_mm = re.compile(rf"[XYZUVWABCIJKRQxyzuvwabcijkrq][ \t]*[+-]?\d*\.\d{{{digits + 1}}}")

@@ -255,6 +255,25 @@ def test_an_arc_inside_the_run_s_box(arc, past):
     assert (hi_y > 11) == (past and "X6.6" not in arc)
 
 
+@settings(max_examples=60, deadline=None, database=None, derandomize=True)
+@given(st.lists(st.sampled_from(["G1 X1.", "", "G2 X3. Y1. R2.5", "(C)", "\r"]), min_size=1, max_size=30),
+       st.lists(st.integers(0, 10**6), min_size=1, max_size=12))
+def test_the_line_index_is_the_line_of_the_offset(lines, picks):
+    """The text cut into lines (boxrun._Lines) gives the index of the line starting at any offset, asked in any
+    order (runs read forward; a jump back, a GOTO or a return, asks an earlier line): the count of line ends
+    before it, and its layout and its text without points are that line's."""
+    text = "\n".join(lines) + "\n"
+    starts = [0] + [k + 1 for k, c in enumerate(text) if c == "\n"][:-1]
+    cut = boxrun._Lines(text)
+    for pick in picks:
+        pos = starts[pick % len(starts)]
+        i = cut.index(pos)
+        cut.pos, cut.at = pos, i  # as read_box_run keeps it
+        assert i == text.count("\n", 0, pos)
+        line = text[pos:text.index("\n", pos)]
+        assert cut.keys[i] == line.translate(boxrun._ZERO_DIGITS) and cut.dotless[i] == line.replace(".", "")
+
+
 def test_a_program_the_reader_declines_line_by_line_is_tried_seldom(monkeypatch):
     """Incremental input (G91) on every line: the reader takes none of its 600 lines (the lanes do not take G91) and
     after 8k attempts in a row that took none passes the next k lines (FanucRunner.box_run): about
