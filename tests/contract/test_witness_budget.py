@@ -119,6 +119,23 @@ def test_the_budget_spent_between_replays_leaves_the_rest_unreported(dialect, cu
     assert not got.interrupted
 
 
+def test_a_real_budget_bounds_the_proof_and_the_replays_together():
+    """On the wall clock: a budget shorter than the proof and its 16 replays (a 20,000-pass loop each) ends the
+    run about when it is spent, never ``safe``; every witness reported replays, every other is a VF203 reason
+    (wherever the budget fell: in the proof's loop, the replays' or between them)."""
+    machine = machine_for(_setup("linuxcnc"))
+    text = program("linuxcnc", loop=20000)
+    started, wall = time.process_time(), time.monotonic()
+    got = verify_text(text, machine, params=PARAMS, budget_s=0.8)
+    spent, wall = time.process_time() - started, time.monotonic() - wall
+    assert got.verdict.label in ("unsafe", "unknown") and any(r.code == "VF203" for r in got.reasons)
+    # the budget is wall time: the CPU after it is at most a loop pass, a solver query's stop and the report
+    assert spent < 0.8 + 1.5 and wall < 30, (spent, wall)
+    for v in got.violations:
+        at = verify_text(text, machine_for(_setup("linuxcnc"), dict(v.params)))
+        assert v.line in [w.line for w in at.violations], v
+
+
 def _spent_first(clock: Clock):
     """``witnesses._replay_groups`` with the budget spent as it starts."""
     orig = witnesses._replay_groups
