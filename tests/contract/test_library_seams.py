@@ -66,6 +66,11 @@ def _called_lines(result, name: str) -> set:
     return {(name if v.span.file.endswith(name) else None, v.line) for v in result.violations}
 
 
+def _backstop(*results) -> bool:
+    """A result with a motion the solver's wall-time backstop left undecided (under load, one run of two)."""
+    return any(r.code == "VF202" for res in results for r in res.reasons)
+
+
 def check(text: str, setup, rngs, at: int, rnd: random.Random) -> None:
     dialect = setup.dialect
     setup = _probe(text, setup, rnd)
@@ -83,7 +88,9 @@ def check(text: str, setup, rngs, at: int, rnd: random.Random) -> None:
         assert a == b, f"inline {a}, called {b}, ranges {params}:\n{text}\n---\n{main}---\n{library}"
         return
     assert _same(inline, called), f"inline {a}, called {b}, ranges {params}:\n{text}\n---\n{main}---\n{library}"
-    if a == b == "unsafe":
+    if a == b == "unsafe" and _backstop(inline, called):
+        OUTCOMES[("violating lines", "solver time backstop (not compared)")] += 1
+    elif a == b == "unsafe":
         want, got = _inline_lines(inline, shift, name), _called_lines(called, name)
         assert want == got, f"violating lines inline {want}, called {got}, ranges {params}:\n{text}"
 
