@@ -27,8 +27,9 @@ re-interpretation reaches is kept unchanged.  A witness is dropped when
 * Ctrl-C or SIGTERM stops the run (during the proof or the replays): the
   same, with a ``VF204`` reason, and the result is marked ``interrupted``
   (a partial report);
-* another witness of its line replayed already and its values have no other
-  line to check: a note (one replay fewer; the line keeps its witness).
+* another witness of its line and zone replayed already and its values have
+  no other line or zone to check: a note (one replay fewer; the line keeps
+  its witness of that zone).
 
 The cost is one interpretation (up to the furthest witness line) per
 distinct set of witness values that still has a line to show, and only for
@@ -124,15 +125,15 @@ def _replay_groups(groups: dict[_Values, dict[_Where, list[Violation]]], machine
                    ) -> tuple[dict[int, tuple[str, str]], bool]:
     """Replay each set of values in turn: ``({id(violation): (how, why)}`` of the dropped ones, interrupted)."""
     dropped: dict[int, tuple[str, str]] = {}
-    shown: dict[_Where, _Values] = {}  # a line that replayed, and the values it replayed at
+    shown: dict[tuple[str, int, str], _Values] = {}  # a (file, line, zone) that replayed, and at which values
     todo = list(groups.items())
     try:
         while todo:
             params, at_line = todo[0]
-            wanted = {k for k in at_line if k not in shown}
-            if not wanted:  # every line already replayed at other values: no run for these
-                dropped.update({id(v): (_SAME_LINE, _same_line_why(shown[k])) for k, vs in at_line.items()
-                                for v in vs})
+            if all((*k, v.zone) in shown for k, vs in at_line.items() for v in vs):
+                # every line already replayed at other values, with a witness of the same zone: no run
+                dropped.update({id(v): (_SAME_LINE, _same_line_why(shown[(*k, v.zone)]))
+                                for k, vs in at_line.items() for v in vs})
             elif limits is not None and limits.budget_spent():
                 break
             else:
@@ -141,7 +142,8 @@ def _replay_groups(groups: dict[_Values, dict[_Where, list[Violation]]], machine
                                            set(at_line))
                 for k, (how, why) in unreached.items():
                     dropped.update({id(v): (how, why) for v in at_line[k]})
-                shown.update({k: params for k in at_line if k not in unreached and k not in shown})
+                for k in set(at_line) - set(unreached):
+                    shown.update({(*k, v.zone): params for v in at_line[k] if (*k, v.zone) not in shown})
             todo.pop(0)
     except KeyboardInterrupt:
         dropped.update(_unchecked(dict(todo), _INTERRUPT, _interrupt_why(limits)))
@@ -170,7 +172,7 @@ def _interrupt_why(limits: RunLimits | None) -> str:
 
 
 def _same_line_why(params: _Values) -> str:
-    return f"not replayed: a witness of the same line replays ({_at(params)})"
+    return f"not replayed: a witness of the same line and zone replays ({_at(params)})"
 
 
 def _without(result: Result, dropped: dict[int, tuple[str, str]], interrupted: bool) -> Result:
