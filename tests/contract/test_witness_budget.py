@@ -264,8 +264,10 @@ def test_ctrl_c_during_the_replays_stops_within_a_second_with_a_partial_report(t
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT,
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     assert proc.stderr is not None
-    cue = proc.stderr.readline()
-    assert cue.strip() == "replaying", (cue, proc.communicate())
+    before = []  # anything the child writes to standard error ahead of the cue (a warning)
+    while (cue := proc.stderr.readline()) and cue.strip() != "replaying":
+        before.append(cue)
+    assert cue.strip() == "replaying", (before, proc.communicate())
     time.sleep(0.05)
     cpu0 = cpu_seconds(proc.pid)
     stopped = interrupt(proc)
