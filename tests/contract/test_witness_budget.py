@@ -254,9 +254,10 @@ sys.exit(main(sys.argv[1:]))
 """
 
 
-def test_ctrl_c_during_the_replays_stops_within_a_second_with_a_partial_report(tmp_path):
-    """SIGINT as the first replay starts (each replays a 30,000-pass loop): exit 130, a partial report whose
-    unchecked witnesses are VF204 reasons, within a second of CPU."""
+@pytest.mark.parametrize(("sig", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_ctrl_c_during_the_replays_stops_within_a_second_with_a_partial_report(tmp_path, sig, status):
+    """SIGINT (SIGTERM) as the first replay starts (each replays a 30,000-pass loop): exit 130 (143), a partial
+    report whose unchecked witnesses are VF204 reasons, within a second of CPU."""
     prog = tmp_path / "ranged.ngc"
     prog.write_text(program("linuxcnc", loop=30000))
     proc = subprocess.Popen([sys.executable, "-c", _CUED, "verify", str(prog), "--machine",
@@ -270,8 +271,8 @@ def test_ctrl_c_during_the_replays_stops_within_a_second_with_a_partial_report(t
     assert cue.strip() == "replaying", (before, proc.communicate())
     time.sleep(0.05)
     cpu0 = cpu_seconds(proc.pid)
-    stopped = interrupt(proc)
-    assert proc.returncode == 130, (stopped.out, stopped.err)
+    stopped = interrupt(proc, sig=sig)
+    assert proc.returncode == status, (stopped.out, stopped.err)
     assert stopped.cpu_after_signal_s < 1.0 and stopped.wall_after_signal_s < 20, (stopped, cpu0)
     assert "VF204" in stopped.out and "before this witness was replayed" in stopped.out, stopped.out
     assert "(interrupted: a partial report)" in stopped.out.splitlines()[-1]
