@@ -707,8 +707,9 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
             break
     result = merge(results, max_violations=options.max_violations, params=ranges)
     # a witness must replay: one at values where the control stops before its line is dropped
+    # (on the run's budget: an unchecked witness is not reported, VF203/VF204)
     result = replayed_witnesses(result, machine, lambda m: interpretation(source, m, replace(options, params=()),
-                                                                            skip=skip))
+                                                                            skip=skip), options.run_limits())
     if splits:
         where = ", ".join(f"{n} = {format_decimal(v)}" for n, v in splits)
         result = replace(result, notes=result.notes + (f"the path branches inside the parameter ranges (a canned "

@@ -14,15 +14,38 @@ replay`` builds the machine of a counterexample), up to the witness's line,
 and drops the witnesses it does not reach.
 
 Soundness: this step only removes violations, and a result left with none
-is ``unknown`` (VF232), never ``safe``: the range proof failed at those
-values, and nothing here proves the rest of the range.  A witness that the
-re-interpretation reaches is kept unchanged.  The cost is one interpretation
-(up to the furthest witness line) per distinct set of witness values, and
-only for ranged results with violations.
+is ``unknown``, never ``safe``: the range proof failed at those values, and
+nothing here proves the rest of the range.  A witness that the
+re-interpretation reaches is kept unchanged.  A witness is dropped when
+
+* the control stops before its line at its values: a note, or with none
+  kept a ``VF232`` reason;
+* the run's budget (``--budget``, the same :class:`~nczones.prover.limits.RunLimits`
+  as the proof's) is spent before its replay ends: it was not shown to
+  replay, so it is not reported as a witness, and a ``VF203`` reason names
+  it (raise ``--budget``);
+* Ctrl-C or SIGTERM stops the run (during the proof or the replays): the
+  same, with a ``VF204`` reason, and the result is marked ``interrupted``
+  (a partial report);
+* another witness of its line and zone replayed already and its values have
+  no other line or zone to check: a note (one replay fewer; the line keeps
+  its witness of that zone).
+
+The cost is one interpretation (up to the furthest witness line) per
+distinct set of witness values that still has a line to show, and only for
+ranged results with violations; every one draws on the run's budget (its
+loops ask :func:`nczones.gcode.program.interpretation_spent` while it is
+watched) and stops at once on Ctrl-C (no solver query runs in it: Python's
+own handler raises ``KeyboardInterrupt``).
+
+A witness is matched to the replay by its ``(file, line)``, not its block:
+a line the replay reaches counts as reached even when the witness is a later
+pass through it (a loop's later iteration).
 """
 
 from __future__ import annotations
 
+from contextlib import nullcontext
 from fractions import Fraction
 from types import MappingProxyType
 
@@ -37,15 +60,24 @@ if TYPE_CHECKING:
 
     from ..gcode import Interpretation
     from ..machine import Machine
+    from ..prover.limits import RunLimits
+
+    _Values = tuple[tuple[str, Fraction], ...]
+    _Where = tuple[str, int]
 
 __all__ = ["concrete_machine", "replayed_witnesses"]
 
 #: the error code of a ranged result whose every witness lies where the control stops before its line
 REFUSED_CODE = "VF232"
+#: the codes of a witness left unchecked: the budget spent, the run interrupted
+BUDGET_CODE, INTERRUPT_CODE = "VF203", "VF204"
+#: how a dropped witness is reported: as a note (another witness is kept) or a reason of this code
+_REFUSED, _BUDGET, _INTERRUPT, _SAME_LINE = "refused", "budget", "interrupt", "same line"
 
 
-def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Machine], Interpretation]) -> Result:
-    """``result`` without the violations whose parameter values do not run the program to their line.
+def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Machine], Interpretation],
+                       limits: RunLimits | None = None) -> Result:
+    """``result`` with only the violations whose parameter values run the program to their line.
 
     Parameters
     ----------
@@ -56,41 +88,114 @@ def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Ma
     interpret : callable
         The program's interpretation on a given machine with the result's options and block-skip switches
         and no parameter ranges (``interpretation(source, m, replace(options, params=()), skip=skip)``).
+    limits : RunLimits, optional
+        The run's budget (the proof's): the replays draw on it and stop once it is spent.
 
     Returns
     -------
     Result
         ``result`` itself when every witness replays (or there is none with values); else the kept
-        violations, a note per dropped witness, and — none kept — the verdict ``unknown`` with a VF232
-        reason per refusal.
+        violations, a note per witness dropped where the control stops (a ``VF232`` reason each when none is
+        kept), a ``VF203``/``VF204`` reason per witness the budget or an interrupt left unchecked, and the
+        verdict ``unknown`` when none is kept.
     """
-    groups: dict[tuple[tuple[str, Fraction], ...], dict[tuple[str, int], list[Violation]]] = {}
-    for v in () if result.interrupted else result.violations:
-        if v.params and v.kind == "motion" and v.span is not None:
-            groups.setdefault(tuple(v.params), {}).setdefault((v.span.file, v.span.line), []).append(v)
-    dropped: dict[int, str] = {}
-    for params, at_line in groups.items():
-        for where, why in _unreached(interpret, concrete_machine(machine, dict(params))[0], params, set(at_line)).items():
-            dropped.update({id(v): why for v in at_line[where]})
+    groups = _groups(result)
+    if not groups:
+        return result
+    if result.interrupted:  # Ctrl-C during the proof: stop now, nothing replayed
+        dropped, interrupted = _unchecked(groups, _INTERRUPT, _interrupt_why(limits)), True
+    else:
+        dropped, interrupted = _replay_groups(groups, machine, interpret, limits)
     if not dropped:
         return result
+    return _without(result, dropped, interrupted)
+
+
+def _groups(result: Result) -> dict[_Values, dict[_Where, list[Violation]]]:
+    """The ranged motion witnesses of ``result`` by their values, then by ``(file, line)``, in report order."""
+    groups: dict[_Values, dict[_Where, list[Violation]]] = {}
+    for v in result.violations:
+        if v.params and v.kind == "motion" and v.span is not None:
+            groups.setdefault(tuple(v.params), {}).setdefault((v.span.file, v.span.line), []).append(v)
+    return groups
+
+
+def _replay_groups(groups: dict[_Values, dict[_Where, list[Violation]]], machine: Machine,
+                   interpret: Callable[[Machine], Interpretation], limits: RunLimits | None
+                   ) -> tuple[dict[int, tuple[str, str]], bool]:
+    """Replay each set of values in turn: ``({id(violation): (how, why)}`` of the dropped ones, interrupted)."""
+    dropped: dict[int, tuple[str, str]] = {}
+    shown: dict[tuple[str, int, str], _Values] = {}  # a (file, line, zone) that replayed, and at which values
+    todo = list(groups.items())
+    try:
+        while todo:
+            params, at_line = todo[0]
+            if all((*k, v.zone) in shown for k, vs in at_line.items() for v in vs):
+                # every line already replayed at other values, with a witness of the same zone: no run
+                dropped.update({id(v): (_SAME_LINE, _same_line_why(shown[(*k, v.zone)]))
+                                for k, vs in at_line.items() for v in vs})
+            elif limits is not None and limits.budget_spent():
+                break
+            else:
+                with limits.watch() if limits is not None else nullcontext():  # its loops ask the budget
+                    unreached = _unreached(interpret, concrete_machine(machine, dict(params))[0], params,
+                                           set(at_line))
+                for k, (how, why) in unreached.items():
+                    dropped.update({id(v): (how, why) for v in at_line[k]})
+                for k in set(at_line) - set(unreached):
+                    shown.update({(*k, v.zone): params for v in at_line[k] if (*k, v.zone) not in shown})
+            todo.pop(0)
+    except KeyboardInterrupt:
+        dropped.update(_unchecked(dict(todo), _INTERRUPT, _interrupt_why(limits)))
+        return dropped, True
+    dropped.update(_unchecked(dict(todo), _BUDGET, _budget_why(limits)))
+    return dropped, False
+
+
+def _unchecked(groups: dict[_Values, dict[_Where, list[Violation]]], how: str, why: str
+               ) -> dict[int, tuple[str, str]]:
+    """Every witness of ``groups`` as not replayed, ``how`` and ``why``."""
+    return {id(v): (how, f"{why} ({_at(params)})") for params, at_line in groups.items()
+            for vs in at_line.values() for v in vs}
+
+
+def _budget_why(limits: RunLimits | None) -> str:
+    if limits is None or limits.budget_s is None:
+        return ""
+    return (f"budget of {limits.budget_s:g} s spent after {limits.spent_at or limits.elapsed():.1f} s before "
+            "this witness was replayed at its values, so it is not reported (raise --budget)")
+
+
+def _interrupt_why(limits: RunLimits | None) -> str:
+    after = f" after {limits.elapsed():.1f} s" if limits is not None else ""
+    return f"interrupted (Ctrl-C){after} before this witness was replayed at its values, so it is not reported"
+
+
+def _same_line_why(params: _Values) -> str:
+    return f"not replayed: a witness of the same line and zone replays ({_at(params)})"
+
+
+def _without(result: Result, dropped: dict[int, tuple[str, str]], interrupted: bool) -> Result:
+    """``result`` without the ``dropped`` violations: notes and reasons for them, the verdict from what is kept."""
     kept = tuple(v for v in result.violations if id(v) not in dropped)
-    notes = tuple(f"a witness of line {v.line} was dropped: {dropped[id(v)]}" for v in result.violations
-                  if id(v) in dropped)
+    gone = [(v, *dropped[id(v)]) for v in result.violations if id(v) in dropped]
+    codes = {_BUDGET: BUDGET_CODE, _INTERRUPT: INTERRUPT_CODE} | ({} if kept else {_REFUSED: REFUSED_CODE})
+    notes = tuple(f"a witness of line {v.line} was dropped: {why}" for v, how, why in gone if how not in codes)
+    reasons = tuple(Reason(f"{codes[how]}: {why}", v.span, v.block, codes[how]) for v, how, why in gone
+                    if how in codes)
+    out = replace(result, violations=kept, notes=tuple(result.notes) + notes,
+                  reasons=tuple(result.reasons) + reasons, interrupted=result.interrupted or interrupted)
     if kept:
-        return replace(result, violations=kept, notes=tuple(result.notes) + notes)
-    reasons = tuple(Reason(f"{REFUSED_CODE}: {why}", v.span, v.block, REFUSED_CODE)
-                    for v in result.violations for why in (dropped[id(v)],))
-    return replace(result, verdict=Verdict.UNKNOWN, violations=(), reasons=tuple(result.reasons) + reasons,
-                   truncated=False)
+        return out
+    return replace(out, verdict=Verdict.UNKNOWN, truncated=False)
 
 
-def _unreached(interpret: Callable[[Machine], Interpretation], at_values: Machine,
-               params: tuple[tuple[str, Fraction], ...], lines: set[tuple[str, int]]) -> dict[tuple[str, int], str]:
+def _unreached(interpret: Callable[[Machine], Interpretation], at_values: Machine, params: _Values,
+               lines: set[_Where]) -> dict[_Where, tuple[str, str]]:
     """The ``(file, line)`` of ``lines`` that the program on ``at_values`` (the machine at ``params``, nominal
-    values) does not move on before it stops, each with why: a refused block, or the program's end (or an
-    unsupported code)."""
-    at = ", ".join(f"{n} = {_written(x)}" for n, x in params)
+    values) does not move on before it stops, each with how and why: a refused block, the program's end (or
+    an unsupported code), or the run's budget spent on the way (unchecked)."""
+    at = _at(params)
     run = interpret(at_values)
     todo = set(lines)
     try:
@@ -104,10 +209,18 @@ def _unreached(interpret: Callable[[Machine], Interpretation], at_values: Machin
         where = f"line {d.span.line}" if d.span is not None else d.location()
         why = (f"a witness at values where the control refuses an earlier block, {where}: {d.message} "
                f"[{d.code}] ({at})")
-        return {k: why for k in todo}
+        return {k: (_REFUSED, why) for k in todo}
+    spent = next((u for u in run.unsupported if u.code == BUDGET_CODE), None)
+    if spent is not None:  # the budget ended the replay: the witness is not shown either way
+        why = f"{spent.reason}, before this witness was replayed at its values, so it is not reported ({at})"
+        return {k: (_BUDGET, why) for k in todo}
     stop = f"; {run.unsupported[0].reason}" if run.unsupported else ""
     why = f"a witness at values where the program stops before its line ({at}{stop})"
-    return {k: why for k in todo}
+    return {k: (_REFUSED, why) for k in todo}
+
+
+def _at(params: _Values) -> str:
+    return ", ".join(f"{n} = {_written(x)}" for n, x in params)
 
 
 def concrete_machine(machine: Machine, params: dict[str, Fraction]) -> tuple[Machine, tuple[Fraction, ...]]:
