@@ -228,7 +228,8 @@ def arcs(draw) -> list[str]:
 #: Tool changes, dwells and path modes (issue 36), most of them in the subset.
 TOOLS_AND_MODES = ["T1 M6", "T2", "M6", "T03 M06 G43 H1", "M61 Q3", "M6 M3 T1", "T1 M6 G1 X[#1] F100", "G4 P0.5",
                    "G4 P[ABS[#1] + 0.1]", "G4 P[#1]", "G04 P1 M9", "G61", "G61.1", "G64", "G64 G1 X[#1 / 3]",
-                   "G61 G0 Z[#2]", "G61.1 X[#1 + 0.0000001]", "G1 X[#1 + 0.0000001]"]
+                   "G61 G0 Z[#2]", "G61.1 X[#1 + 0.0000001]", "G1 X[#1 + 0.0000001]", "G91", "G90", "G91 G1 X[#1]",
+                   "G91 G0 Z[-#1] Y0.1", "G90 G1 X[#1] Y[#2] Z0"]
 #: Lines outside the subset (each must make the pass decline, or the full path agree with it).
 OUTSIDE = ["G2 X1 Y1 R5", "G43 H2", "G43", "H1", "G43 H0", "G49", "G19", "G91", "G20", "M3 S1000", "#4 = #5221", "G43 H1", "T1 M6", "G10 L2 P1 X3",
            "G92 X0", "(MSG, hello)", "(DEBUG, #1)", "G59.1", "G53 G0 X1", "G64 P0.01", "#4 = #<_x>", "G4 P1",
@@ -337,6 +338,7 @@ ACCEPTED = {
     "offsets and rows": "G21 G90 G54 F100\nG0 X0.1 Y0.2 Z0.3\nG56 X[0.1 + 0.2]\nG1 Y[1/3] F[10 * 3]\nM30\n",
     "a subroutine": "o<s> sub\nG1 X1\no<s> endsub\nG21 G90 G54 F100\n#1 = 1\no<s> call\n",
     "F after G94": "G21 G90 G54 F100\n#1 = 1\nG94 F10 G1 X#1\nG94\nF5\nG1 Y#1\nM30\n",
+    "incremental": "G21 G91 G54 F100\n#1 = 1\nG1 X1\nG0 Y[#1 / 3] Z-0.1\nG55 X0.1\nG90 X1\nG91 Y1\nM30\n",
     # issue 36: real programs carry a tool change, a dwell, an exact-stop mode
     "tools, dwells, path modes": "G21 G90 G17 G54 F800\nT1 M6\n#1 = 0\nG1 X[#1 + 1] Y2\nG4 P0.5\n"
                                  "G61\nG1 X[#1 + 3]\nG61.1 Y[#1]\nT2\nM6 M3 S1000\nG64\nG1 X0 Y0\nM61 Q3\n"
@@ -365,7 +367,8 @@ def test_the_rows_are_the_controllers_doubles():
 
 DECLINED = {
     "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J or R"),
-    "incremental": ("G21 G91 G54 F100\n#1 = 1\nG1 X1\n", "G91"),
+    "an arc in G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "arc in G91"),
+    "an arc after G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG1 X1\nG90 Y2\nG2 X1 Y1 R5\n", "arc in G91"),
     "inches": ("G20 G90 G54 F100\n#1 = 1\nG1 X1\n", "G20"),
     # spindle and coolant M codes, one to a block, and S are followed (issue 36); two in a block are not
     "two spindle and coolant codes": ("G21 G90 G54 F100\n#1 = 1\nM3 M8\nG1 X1\n", "M code"),

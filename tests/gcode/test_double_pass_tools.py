@@ -12,6 +12,7 @@ T alone does not.
 from __future__ import annotations
 
 import os
+from fractions import Fraction
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -27,7 +28,8 @@ EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "80"))
 #: The lines of issue 36's codes; each in the subset (on a machine without tool change moves).
 CODES = ["T1 M6", "T2", "M6", "T03 M06", "M61 Q3", "M6 M3 T1", "M61 Q0 M8", "T1 M6 G1 X[#1] F100", "G4 P0.5",
          "G4 P[ABS[#1] + 0.1]", "G04 P1 M9", "G4 P0.25 F200", "G61", "G61.1", "G64", "G64 G1 X[#1 / 3]",
-         "G61 G0 Z[#2]", "G61.1 X[#1 + 0.0000001]", "G64 M5", "T5 G61"]
+         "G61 G0 Z[#2]", "G61.1 X[#1 + 0.0000001]", "G64 M5", "T5 G61", "G91", "G90", "G91 G1 X[#1] Y-0.1",
+         "G91 G0 Z[-#2 / 3]", "G90 G1 X[#1] Y[#2] Z1"]
 
 
 @st.composite
@@ -145,3 +147,29 @@ def test_the_windows_blend_the_corners_the_whole_path_blends(text, machine, wind
     keep(last)
     assert seen == {k: whole.blended(k) for k in range(1, whole.motions)}
     assert (last.dwells, last.lines, last.modes[-1]) == (whole.dwells, whole.lines, whole.modes[-1])
+
+
+def test_a_long_g91_chain_is_enclosed():
+    """1000 G91 steps of 0.1 mm: the controller's doubles drift from the exact 100 mm by about 1.4e-12 mm, far
+    past a G90 row's bound (about 1e-13 here); the chain's own bound (``DoublePath.inc_bound``) holds it, in
+    windows too (a window's first row keeps its error), and a G90 move ends the chain."""
+    text = ("G21 G90 G54 F100\n#1 = 0\nG91\no1 while [#1 LT 1000]\nG1 X0.1 Y[0.1 + #1 * 0]\n#1 = [#1 + 1]\n"
+            "o1 endwhile\nG90 G1 X50 Y50\nM30\n")  # the G90 move starts where the chain ended: at X = Y = 100
+    machine = load_machine("box_5000")
+    path = check_against_full(text, machine, max_iterations=2000)
+    assert path is not None and path.motions == 1001
+    assert path.columns[0][1000] != 100.0  # the drift the bound is for
+    assert 1e-12 < path.inc_bound[0] < 1e-9 and not path.inc_bound[2]
+    for window in (1, 7, 100):
+        seen = set()
+
+        def check(p):
+            for k in range(p.row0 + 1, p.motions + 1):
+                lo, hi = p.enclosure(k, k)
+                x = Fraction(min(k, 1000), 10)  # the motion's end, or the last one's start
+                assert lo["X"] <= x <= hi["X"] and lo["Y"] <= x <= hi["Y"], (window, k)
+                seen.add(k)
+            return True
+
+        check(double_pass(text, machine, max_iterations=2000, window=window, on_window=check))
+        assert seen == set(range(1, 1002))

@@ -84,3 +84,21 @@ def test_the_tool_change_program_is_proved_by_the_pass(monkeypatch):
     with_pass, without = both_ways(TOOLED.format(t="1", x="0"), quill, monkeypatch)
     same_outcome(with_pass, without)
     assert not _proved_by_the_pass(with_pass)
+
+
+#: 1000 G91 steps of 0.1 mm in X: the exact end is X = 100, the controller's doubles end 1.4e-12 mm short of it.
+CHAIN = ("G21 G90 G17 G54 F800\n#1 = 0\nG91\no1 while [#1 LT 1000]\nG1 X0.1\n#1 = [#1 + 1]\no1 endwhile\n"
+         "G90 G1 X50\nM30\n")
+
+
+@pytest.mark.parametrize(("face", "verdict", "by_pass"), [
+    ("100", Verdict.SAFE, False),  # on the face: the pass's box crosses it, the full path proves it
+    ("100.000000001", Verdict.SAFE, True),  # 1e-9 past the drift and the bound: the pass proves it
+    ("99.9999999999999", Verdict.UNSAFE, False),  # the exact end is past the face, the doubles' end is not
+])
+def test_a_g91_chain_at_a_face_is_decided_alike(monkeypatch, face, verdict, by_pass):
+    machine = parse_machine(machine_text("box_5000").replace('max = { X = "5000"', f'max = {{ X = "{face}"'))
+    with_pass, without = both_ways(CHAIN, machine, monkeypatch, max_iterations=2000)
+    same_outcome(with_pass, without)
+    assert with_pass.verdict is verdict
+    assert _proved_by_the_pass(with_pass) is by_pass

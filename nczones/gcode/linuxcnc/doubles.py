@@ -30,7 +30,10 @@ third axis moves monotonically, so the rows hold it.  The pass keeps a quick box
 ``ij_screen``: no sweep, no square root for R) and :meth:`DoublePath.refine` narrows it to the sweep's box
 (``r_arc``, ``ij_arc``) when a proof needs it; each holds the arc, so their intersection does.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
 entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
-bound's offset term covers the largest work offset plus the largest length.
+bound's offset term covers the largest work offset plus the largest length.  A G91 move adds the word's double to
+the row before (the full path adds the word's exact value to the machine position: the offsets cancel): its
+error grows with each step of the chain, and :meth:`_Pass.chain` bounds it (``DoublePath.inc_bound``, the
+largest of a window's rows, added to the widening); a G90 move of the axis ends the chain.
 
 The subset
 ----------
@@ -41,7 +44,7 @@ call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
 ``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G4 G17
-G18 G19 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G94 with literal codes, F, X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5
+G18 G19 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G94 with literal codes, F, X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5
 M7 M8 M9 a block, and M2/M30 alone to end; plain comments.  A tool: ``T<n>``, ``M6`` and ``M61 Q<n>`` with
 literal numbers (:meth:`_Pass._tool_change`: nothing the pass computes reads the tool in the spindle; M6 on a
 machine whose tool change moves, ``[machine] tool_change_*``, declines).  A dwell: ``G4 P<seconds>`` (P
@@ -50,10 +53,12 @@ mode: G61, G61.1 and G64 without P or Q (:attr:`DoublePath.modes`, from the next
 included), which with the dwells say which corners LinuxCNC blends (:meth:`DoublePath.blended`); the motions
 and their rows are the same in every mode (the full path emits every motion; which ones LinuxCNC drops in a
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
-program has been in).  Arcs: in G17 once the program has set it, on a machine with X and Y, I/J (G91.1,
+program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
+chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  Arcs: in
+G17 once the program has set it, on a machine with X and Y, I/J (G91.1,
 LinuxCNC's default) or R format with X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
 ``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  Everything else declines:
-other codes and words, G64 P or Q, G20 and G91 (and a machine that starts in them), block delete, magic comments,
+other codes and words, G64 P or Q, G20 (and a machine that starts in it or in G91), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
@@ -226,6 +231,9 @@ class DoublePath:
     #: the path mode: ``(first row, bare)`` where it changes (the first: in force at ``row0``), ``bare``: the
     #: motions blend without a tolerance (G64 without P); ``()``: the machine's start mode throughout
     modes: tuple[tuple[int, bool], ...] = ()
+    #: per axis, a bound (mm) of the G91 chains' error of these rows (:meth:`_Pass.chain`), added to the
+    #: module's bound; ``()``: none
+    inc_bound: tuple[float, ...] = ()
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -252,6 +260,8 @@ class DoublePath:
                 a_lo, a_hi = min(part), max(part)
                 top = max(abs(a_lo), abs(a_hi))
                 widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
+                if self.inc_bound and self.inc_bound[a]:
+                    widen += Fraction(self.inc_bound[a])
                 # outwards to multiples of 2**-60 mm (small denominators for the exact test)
                 bounds.append(Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID))
                 bounds.append(Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID))
@@ -328,6 +338,7 @@ class DoublePath:
 
 
 _ULP = Fraction(1, 2**52)
+_EPS2 = 2.0**-52  # twice the unit roundoff (_Pass.chain)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
@@ -582,7 +593,8 @@ class _Pass:
         return DoublePath(self.axes, self.columns, self.offset_bound, motions,
                           motions - self.rapids - arcs - self.dwells, self.rapids, self.blocks, self.start,
                           tuple(self.first_row), self.row0, arcs, self.arc_rows, self.arc_axes, self.arc_boxes,
-                          (self.arc_words, self.offb, self.rule), self.dwells, self.dwell_rows, tuple(self.modes))
+                          (self.arc_words, self.offb, self.rule), self.dwells, self.dwell_rows, tuple(self.modes),
+                          tuple(self.xerr))
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -608,6 +620,10 @@ class _Pass:
         if k > 0:
             del self.modes[:k]
         del self.dwell_rows[:bisect_left(self.dwell_rows, self.row0)]
+        if self.chained or any(self.xerr):  # the G91 errors of the two rows kept
+            for i, e in enumerate(self.err):
+                row, before = self.touched[i]
+                self.xerr[i] = max(e or 0.0, (before or 0.0) if row > self.row0 else 0.0)
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -1030,9 +1046,58 @@ class _Pass:
         self.modes: list[tuple[int, bool]] = [(1, self.bare)]
         self.dwells = 0  # dwells (G4) in the whole program; those of the rows held are dwell_rows
         self.dwell_rows = array("q")
+        self._g91_state()
         self.tool_moves = bool(getattr(machine, "tool_change_quill_up", False)
                                or getattr(machine, "tool_change_at_g30", False)
                                or getattr(machine, "tool_change_position", None))
+
+    def _g91_state(self) -> None:
+        """G91: the distance mode, and per axis the bound of the error its G91 chain has built (:meth:`chain`)."""
+        n = len(self.axes)
+        self.inc = False  # G91 (a machine that starts in it declines)
+        #: per axis: None (its row is a G90 one or the start: the module's bound holds) or a bound (a float,
+        #: rounded up) of the distance of its double from the full path's exact coordinate
+        self.err: list[float | None] = [None] * n
+        self.chained = False  # some axis has a G91 chain's error
+        #: per axis: the largest error of the rows held (the window's, DoublePath.inc_bound), and where the last
+        #: change of err was (its row, the error before it): a window's first row keeps its error (full())
+        self.xerr = [0.0] * n
+        self.touched: list[tuple[int, float | None]] = [(-1, None)] * n
+        self.offb2 = [math.nextafter(float(2 * b), math.inf) for b in self.offset_bound]
+
+    def chain(self, moves: tuple[tuple[int, float, float], ...]) -> None:
+        """A G91 move: ``(axis, word, end)`` each, the end the double ``pos + word`` (before ``pos`` is set).
+
+        The full path's exact end is ``M + w`` (``Interpreter.program_target``: the machine position plus the
+        word's exact value ``w``; the offsets cancel), the double here ``x = fl(p + d)``.  With ``|p - M| <= e``
+        (a G90 row's bound, ``(2 |p| + 2 |offset|) 2**-53``, when the chain starts), ``|d - w| <= |d| 2**-53``
+        (half an ulp) and ``|x - (p + d)| <= |x| 2**-53`` (or half the least subnormal):
+        ``|x - (M + w)| <= e + (|d| + |x|) 2**-53 + 2**-1075``.  The bound is computed with ``2**-52`` (a
+        float sum ``|d| + |x|`` may round down by half an ulp) and each float result moved up by
+        ``nextafter``, which adds at least half the least subnormal: every float here is above the real sum it
+        stands for, so ``e`` bounds the error however long the chain (it grows with it; a G90 move of the axis
+        ends the chain, :meth:`unchain`)."""
+        err, pos, xerr = self.err, self.pos, self.xerr
+        row = self.row0 + len(self.columns[0])
+        for i, d, x in moves:
+            e = err[i]
+            self.touched[i] = (row, e)
+            if e is None:
+                e = math.nextafter((2 * abs(pos[i]) + self.offb2[i]) * _EPS2, math.inf)
+            e = math.nextafter(e + math.nextafter((abs(d) + abs(x)) * _EPS2, math.inf), math.inf)
+            err[i] = e
+            if e > xerr[i]:
+                xerr[i] = e
+        self.chained = True
+
+    def unchain(self, axes: tuple[int, ...]) -> None:
+        """A G90 move sets ``axes``: their rows have the module's bound again."""
+        row = self.row0 + len(self.columns[0])
+        for i in axes:
+            if self.err[i] is not None:
+                self.touched[i] = (row, self.err[i])
+                self.err[i] = None
+        self.chained = any(e is not None for e in self.err)
 
     def mode(self, bare: bool) -> None:
         """G64 without P (``bare``), or G61 or G61.1: the path mode of the next motions (its block's included)."""
@@ -1157,6 +1222,8 @@ class _Pass:
         body += self._tool_body(groups.get("tool"), hs)
         if "path" in groups:
             body.append(f"st.mode({groups['path'] == 64})")
+        if "distance" in groups:
+            body.append(f"st.inc = {groups['distance'] == 91}")
         if "motion" in groups:
             body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
         return body
@@ -1212,6 +1279,18 @@ class _Pass:
             raise Declined("G43 without an H register of the machine's [tool_lengths] (or with a tip zone)")
         return [f"st.tool({hs[0]})"]
 
+    def _straight_ends(self, axes: list[tuple[int, int]]) -> list[str]:
+        """The code of a straight move's ends: G90 ``v + off`` (an axis set so ends a G91 chain,
+        :meth:`unchain`), G91 ``pos + v`` (:meth:`chain` bounds its error)."""
+        named = tuple(i for _k, i in axes)
+        return ["if st.inc:",
+                *(f"    x{i} = pos[{i}] + v[{k}]" for k, i in axes),
+                f"    st.chain(({''.join(f'({i}, v[{k}], x{i}), ' for k, i in axes)}))",
+                *(f"    pos[{i}] = x{i}" for _k, i in axes),
+                "else:",
+                *(f"    pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes),
+                f"    if st.chained: st.unchain({named!r})"]
+
     def _arc_body(self, others: list[str]) -> list[str]:
         """The code that adds the box of the arc just moved (:mod:`.double_arcs`) from ``sa, sb``, or declines."""
         def val(x: str) -> str:
@@ -1251,7 +1330,8 @@ class _Pass:
             if not self.arc_axes or any(self.axes[i] not in "XYZ" for i in moved):
                 raise Declined("an arc on axes other than X, Y and Z")
             check = ["if mode is None or mode < 2 or not st.feed > 0.0: "
-                     "raise D('I, J or R without G2 or G3, or without a positive feed')"]
+                     "raise D('I, J or R without G2 or G3, or without a positive feed')",
+                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
             moved = tuple(sorted(set(moved) | set(self.arc_axes)))
         body = ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')", *check,
                 "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
@@ -1260,7 +1340,10 @@ class _Pass:
             ia, ib = self.arc_axes
             body.append(f"sa = pos[{ia}]; sb = pos[{ib}]")
         body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
-        body += [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        if arc:
+            body += [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        else:
+            body += self._straight_ends(axes)
         set_axes = {i for _k, i in axes}
         body += [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
         body.append("n = len(C0)")
