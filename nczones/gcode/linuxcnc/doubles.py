@@ -404,6 +404,8 @@ class _Pass:
         #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it;
         #: a streamed file, FileText, is read from the file a piece at a time, in order but for jumps)
         self.src = _Lines(text, crlf="\r" in text)
+        #: the text may write G91 (a "91" in it): only then do straight moves test for G91 (_straight_ends)
+        self.g91_text = "91" in text
         #: layout -> (its shape's step, the layout's cutter): ``step(cut(line))`` runs a line of it (nothing is
         #: compiled per layout: CAM output with arcs has hundreds of layouts of a few dozen shapes)
         self.by_layout: dict[bytes, tuple[Any, Any]] = {}
@@ -1223,6 +1225,8 @@ class _Pass:
         if "path" in groups:
             body.append(f"st.mode({groups['path'] == 64})")
         if "distance" in groups:
+            if groups["distance"] == 91 and not self.g91_text:  # (a G91 the text's "91" misses: "G9 1")
+                raise Declined("G91 written apart")
             body.append(f"st.inc = {groups['distance'] == 91}")
         if "motion" in groups:
             body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
@@ -1283,6 +1287,8 @@ class _Pass:
         """The code of a straight move's ends: G90 ``v + off`` (an axis set so ends a G91 chain,
         :meth:`unchain`), G91 ``pos + v`` (:meth:`chain` bounds its error)."""
         named = tuple(i for _k, i in axes)
+        if not self.g91_text:  # no G91 in the text (_modal_body): no chain
+            return [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
         return ["if st.inc:",
                 *(f"    x{i} = pos[{i}] + v[{k}]" for k, i in axes),
                 f"    st.chain(({''.join(f'({i}, v[{k}], x{i}), ' for k, i in axes)}))",
