@@ -32,7 +32,7 @@ third axis moves monotonically, so the rows hold it.  The pass keeps a quick box
 entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
 bound's offset term covers the largest work offset plus the largest length.  A G91 move adds the word's double to
 the row before (the full path adds the word's exact value to the machine position: the offsets cancel): its
-error grows with each step of the chain, and :meth:`_Pass.chain` bounds it (``DoublePath.inc_bound``, the
+error grows with each step of the chain, and :meth:`_Pass._straight_ends` bounds it (``DoublePath.inc_bound``, the
 largest of a window's rows, added to the widening); a G90 move of the axis ends the chain.
 
 The subset
@@ -231,7 +231,7 @@ class DoublePath:
     #: the path mode: ``(first row, bare)`` where it changes (the first: in force at ``row0``), ``bare``: the
     #: motions blend without a tolerance (G64 without P); ``()``: the machine's start mode throughout
     modes: tuple[tuple[int, bool], ...] = ()
-    #: per axis, a bound (mm) of the G91 chains' error of these rows (:meth:`_Pass.chain`), added to the
+    #: per axis, a bound (mm) of the G91 chains' error of these rows (:meth:`_Pass._straight_ends`), added to the
     #: module's bound; ``()``: none
     inc_bound: tuple[float, ...] = ()
 
@@ -338,7 +338,7 @@ class DoublePath:
 
 
 _ULP = Fraction(1, 2**52)
-_EPS2 = 2.0**-52  # twice the unit roundoff (_Pass.chain)
+_EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
@@ -1054,46 +1054,22 @@ class _Pass:
                                or getattr(machine, "tool_change_position", None))
 
     def _g91_state(self) -> None:
-        """G91: the distance mode, and per axis the bound of the error its G91 chain has built (:meth:`chain`)."""
+        """G91: the distance mode, and per axis the bound of the error its G91 chain has built (:meth:`_straight_ends`)."""
         n = len(self.axes)
         self.inc = False  # G91 (a machine that starts in it declines)
         #: per axis: None (its row is a G90 one or the start: the module's bound holds) or a bound (a float,
-        #: rounded up) of the distance of its double from the full path's exact coordinate
+        #: rounded up) of the distance of its double from the full path's exact coordinate (_straight_ends)
         self.err: list[float | None] = [None] * n
         self.chained = False  # some axis has a G91 chain's error
-        #: per axis: the largest error of the rows held (the window's, DoublePath.inc_bound), and where the last
-        #: change of err was (its row, the error before it): a window's first row keeps its error (full())
+        #: per axis: the largest error of the rows held (the window's, DoublePath.inc_bound), and the last chain
+        #: ended (its G90 row, the chain's error): a window's first row keeps its error (full())
         self.xerr = [0.0] * n
         self.touched: list[tuple[int, float | None]] = [(-1, None)] * n
         self.offb2 = [math.nextafter(float(2 * b), math.inf) for b in self.offset_bound]
 
-    def chain(self, moves: tuple[tuple[int, float, float], ...]) -> None:
-        """A G91 move: ``(axis, word, end)`` each, the end the double ``pos + word`` (before ``pos`` is set).
-
-        The full path's exact end is ``M + w`` (``Interpreter.program_target``: the machine position plus the
-        word's exact value ``w``; the offsets cancel), the double here ``x = fl(p + d)``.  With ``|p - M| <= e``
-        (a G90 row's bound, ``(2 |p| + 2 |offset|) 2**-53``, when the chain starts), ``|d - w| <= |d| 2**-53``
-        (half an ulp) and ``|x - (p + d)| <= |x| 2**-53`` (or half the least subnormal):
-        ``|x - (M + w)| <= e + (|d| + |x|) 2**-53 + 2**-1075``.  The bound is computed with ``2**-52`` (a
-        float sum ``|d| + |x|`` may round down by half an ulp) and each float result moved up by
-        ``nextafter``, which adds at least half the least subnormal: every float here is above the real sum it
-        stands for, so ``e`` bounds the error however long the chain (it grows with it; a G90 move of the axis
-        ends the chain, :meth:`unchain`)."""
-        err, pos, xerr = self.err, self.pos, self.xerr
-        row = self.row0 + len(self.columns[0])
-        for i, d, x in moves:
-            e = err[i]
-            self.touched[i] = (row, e)
-            if e is None:
-                e = math.nextafter((2 * abs(pos[i]) + self.offb2[i]) * _EPS2, math.inf)
-            e = math.nextafter(e + math.nextafter((abs(d) + abs(x)) * _EPS2, math.inf), math.inf)
-            err[i] = e
-            if e > xerr[i]:
-                xerr[i] = e
-        self.chained = True
-
     def unchain(self, axes: tuple[int, ...]) -> None:
-        """A G90 move sets ``axes``: their rows have the module's bound again."""
+        """A G90 move sets ``axes``: their rows have the module's bound again (the chain's error is kept for
+        the row before, :meth:`full`)."""
         row = self.row0 + len(self.columns[0])
         for i in axes:
             if self.err[i] is not None:
@@ -1205,7 +1181,8 @@ class _Pass:
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
                                  "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
-                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4}
+                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
+                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -1285,17 +1262,29 @@ class _Pass:
 
     def _straight_ends(self, axes: list[tuple[int, int]]) -> list[str]:
         """The code of a straight move's ends: G90 ``v + off`` (an axis set so ends a G91 chain,
-        :meth:`unchain`), G91 ``pos + v`` (:meth:`chain` bounds its error)."""
+        :meth:`unchain`), G91 ``x = pos + v`` with the bound ``ERR`` of its error (``_Pass.err``).
+
+        The full path's exact G91 end is ``M + w`` (``Interpreter.program_target``: the machine position plus
+        the word's exact value ``w``; the offsets cancel), the double here ``x = fl(p + d)``.  With
+        ``|p - M| <= e`` (a G90 row's bound, ``(2 |p| + 2 |offset|) 2**-53``, when the chain starts),
+        ``|d - w| <= |d| 2**-53`` (half an ulp) and ``|x - (p + d)| <= |x| 2**-53`` (or half the least
+        subnormal): ``|x - (M + w)| <= e + (|d| + |x|) 2**-53 + 2**-1075``.  The bound is computed with
+        ``2**-52`` (a float sum ``|d| + |x|`` may round down by half an ulp) and each float result moved up by
+        ``nextafter``, which adds at least half the least subnormal: every float here is above the real sum it
+        stands for, so ``e`` bounds the error however long the chain (it grows along it: the row before a
+        chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain)."""
         named = tuple(i for _k, i in axes)
+        g90 = [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
         if not self.g91_text:  # no G91 in the text (_modal_body): no chain
-            return [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
-        return ["if st.inc:",
-                *(f"    x{i} = pos[{i}] + v[{k}]" for k, i in axes),
-                f"    st.chain(({''.join(f'({i}, v[{k}], x{i}), ' for k, i in axes)}))",
-                *(f"    pos[{i}] = x{i}" for _k, i in axes),
-                "else:",
-                *(f"    pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes),
-                f"    if st.chained: st.unchain({named!r})"]
+            return g90
+        inc = []
+        for k, i in axes:
+            inc += [f"x{i} = pos[{i}] + v[{k}]", f"e = ERR[{i}]",
+                    f"if e is None: e = NA((2.0 * abs(pos[{i}]) + {self.offb2[i]!r}) * EPS2, INF)",
+                    f"e = ERR[{i}] = NA(e + NA((abs(v[{k}]) + abs(x{i})) * EPS2, INF), INF)",
+                    f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
+        return ["if st.inc:", *(f"    {b}" for b in inc), "    st.chained = True", "else:",
+                *(f"    {b}" for b in g90), f"    if st.chained: st.unchain({named!r})"]
 
     def _arc_body(self, others: list[str]) -> list[str]:
         """The code that adds the box of the arc just moved (:mod:`.double_arcs`) from ``sa, sb``, or declines."""
