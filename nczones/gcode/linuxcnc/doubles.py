@@ -1057,6 +1057,7 @@ class _Pass:
         """G91: the distance mode, and per axis the bound of the error its G91 chain has built (:meth:`_straight_ends`)."""
         n = len(self.axes)
         self.inc = False  # G91 (a machine that starts in it declines)
+        self.slow = False  # G91, or a G91 chain open: straight moves take the G91 code (_straight_ends)
         #: per axis: None (its row is a G90 one or the start: the module's bound holds) or a bound (a float,
         #: rounded up) of the distance of its double from the full path's exact coordinate (_straight_ends)
         self.err: list[float | None] = [None] * n
@@ -1076,6 +1077,12 @@ class _Pass:
                 self.touched[i] = (row, self.err[i])
                 self.err[i] = None
         self.chained = any(e is not None for e in self.err)
+        self.slow = self.inc or self.chained
+
+    def distance(self, inc: bool) -> None:
+        """G90 (``inc`` false) or G91."""
+        self.inc = inc
+        self.slow = inc or self.chained
 
     def mode(self, bare: bool) -> None:
         """G64 without P (``bare``), or G61 or G61.1: the path mode of the next motions (its block's included)."""
@@ -1204,7 +1211,7 @@ class _Pass:
         if "distance" in groups:
             if groups["distance"] == 91 and not self.g91_text:  # (a G91 the text's "91" misses: "G9 1")
                 raise Declined("G91 written apart")
-            body.append(f"st.inc = {groups['distance'] == 91}")
+            body.append(f"st.distance({groups['distance'] == 91})")
         if "motion" in groups:
             body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
         return body
@@ -1283,8 +1290,10 @@ class _Pass:
                     f"if e is None: e = NA((2.0 * abs(pos[{i}]) + {self.offb2[i]!r}) * EPS2, INF)",
                     f"e = ERR[{i}] = NA(e + NA((abs(v[{k}]) + abs(x{i})) * EPS2, INF), INF)",
                     f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
-        return ["if st.inc:", *(f"    {b}" for b in inc), "    st.chained = True", "else:",
-                *(f"    {b}" for b in g90), f"    if st.chained: st.unchain({named!r})"]
+        # one test on the common way (G90, no chain open: ``slow`` false)
+        return ["if st.slow:", "    if st.inc:", *(f"        {b}" for b in inc), "        st.chained = True",
+                "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
+                "else:", *(f"    {b}" for b in g90)]
 
     def _arc_body(self, others: list[str]) -> list[str]:
         """The code that adds the box of the arc just moved (:mod:`.double_arcs`) from ``sa, sb``, or declines."""
