@@ -21,7 +21,8 @@ from hypothesis import strategies as st
 from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.machine import parse_machine
 from tests.gcode.test_double_pass import arcs, check_against_full, expressions, machine_text
-from tests.machines import load_machine, machine_text as fixture_text
+from tests.machines import load_machine
+from tests.machines import machine_text as fixture_text
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "80"))
 
@@ -57,7 +58,7 @@ def statement(draw, depth: int, labels: list[int]) -> list[str]:
         label = 100 + len(labels)
         labels.append(label)
         body = [line for _ in range(draw(st.integers(1, 3))) for line in draw(statement(depth - 1, labels))]
-        return [f"#9 = 0", f"o{label} while [#9 LT {draw(st.integers(1, 3))}]", *body, "#9 = [#9 + 1]",
+        return ["#9 = 0", f"o{label} while [#9 LT {draw(st.integers(1, 3))}]", *body, "#9 = [#9 + 1]",
                 f"o{label} endwhile"]
     return draw(moves())
 
@@ -161,15 +162,21 @@ def test_a_long_g91_chain_is_enclosed():
     assert path.columns[0][1000] != 100.0  # the drift the bound is for
     assert 1e-12 < path.inc_bound[0] < 1e-9 and not path.inc_bound[2]
     for window in (1, 7, 100):
-        seen = set()
-
-        def check(p):
-            for k in range(p.row0 + 1, p.motions + 1):
-                lo, hi = p.enclosure(k, k)
-                x = Fraction(min(k, 1000), 10)  # the motion's end, or the last one's start
-                assert lo["X"] <= x <= hi["X"] and lo["Y"] <= x <= hi["Y"], (window, k)
-                seen.add(k)
-            return True
-
+        seen: set[int] = set()
+        check = _holds_the_chain(window, seen)
         check(double_pass(text, machine, max_iterations=2000, window=window, on_window=check))
         assert seen == set(range(1, 1002))
+
+
+def _holds_the_chain(window: int, seen: set[int]):
+    """``on_window`` of :func:`test_a_long_g91_chain_is_enclosed`: each motion's enclosure holds its exact end
+    (X = Y = k / 10, the last motion's start X = Y = 100); the motions seen go into ``seen``."""
+    def check(p):
+        for k in range(p.row0 + 1, p.motions + 1):
+            lo, hi = p.enclosure(k, k)
+            x = Fraction(min(k, 1000), 10)  # the motion's end, or the last one's start
+            assert lo["X"] <= x <= hi["X"] and lo["Y"] <= x <= hi["Y"], (window, k)
+            seen.add(k)
+        return True
+
+    return check
