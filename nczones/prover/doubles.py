@@ -82,7 +82,7 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         if corners and arcs and last > first and path.has_arcs(first, last):
             lo, hi = _grown(lo, hi)
         if box_fits(allowed, lo, hi, margin, zero):
-            if corners and last < path.motions and (blended is None or blended(last)) \
+            if corners and last < path.motions and _corner_wanted(path, blended, last) \
                     and not _corner_fits(path, allowed, margin, last):
                 if not (arcs and _refine(path, last, last + 1) and _corner_fits(path, allowed, margin, last)):
                     return None
@@ -97,6 +97,18 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         size = FIRST_BOX if n > FIRST_BOX * SPLIT and first == start and last == path.motions else -(-n // SPLIT)
         todo.extend((a, min(a + size - 1, last)) for a in range(first, last + 1, size))
     return boxes
+
+
+def _corner_wanted(path: Any, blended: Any, k: int) -> bool:
+    """Must the corner after motion ``k`` (between two boxes) be proved: may the full path round a corner
+    there?  Yes where motion ``k`` blends (``blended``: its mode, no dwell beside it; None: every corner), and
+    where motion ``k`` may be dropped (:func:`may_be_zero`) with no dwell beside it: LinuxCNC then joins the
+    motion before the dropped ones to the one after them in the earlier motion's mode, whatever the dropped
+    motion's own (``CornerCheck._dropped_corner``; ``tests/contract/test_seam_hunt.py``, G61 on the short
+    move after a G64 motion), and :func:`_corner_fits` proves that join."""
+    if blended is None or blended(k):
+        return True
+    return not path.dwell_beside(k) and may_be_zero(path, k)
 
 
 def _bare(path: Any, machine: Machine) -> bool:

@@ -40,6 +40,11 @@ def _proved_by_the_pass(result) -> bool:
     ("", "G4 P0.5\n", Verdict.SAFE, True),  # a dwell stops the machine at the corner
     ("", "G4 P[#1 / 20]\nG61\n", Verdict.SAFE, True),
     ("", "G61\n", Verdict.UNKNOWN, False),  # G61 after the corner's first motion: that motion blends
+    # 14 motions first: the boxes split in pairs, the corner's first motion and a 1e-9 mm move after it in G61
+    # share one (the boundary falls after the short move); LinuxCNC drops that move and joins the two motions
+    # around it in the first one's mode, G64 (tests/contract/test_seam_hunt.py found the pass proving it safe)
+    ("G1 X-20 Y0\nG1 X-10 Y0\n" * 7, "G61\nG1 X[#1 + 0.000000001] Y0\n", Verdict.UNKNOWN, False),
+    ("G1 X-20 Y0\nG1 X-10 Y0\n" * 7, "G61\nG1 X[#1 + 0.000000001] Y0\nG4 P0.1\n", Verdict.SAFE, True),
 ])
 def test_a_corner_is_blended_where_the_full_path_blends_it(monkeypatch, mode, pause, verdict, by_pass):
     text = CORNER.format(mode=mode, pause=pause)

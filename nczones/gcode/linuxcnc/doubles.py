@@ -317,16 +317,22 @@ class DoublePath:
     def blended(self, k: int) -> bool:
         """May LinuxCNC blend the corner between motions ``k`` and ``k + 1`` without a tolerance: motion ``k``
         runs in G64 without P (the full path's corner takes the mode of the motion before it:
-        ``CornerCheck._segment``) and neither is a dwell (a dwell stops the machine: no corner on either side)?
-        Without ``modes``: every corner may."""
+        ``CornerCheck._segment``) and neither is a dwell (:meth:`dwell_beside`)?  Without ``modes``: every
+        corner may.  (A motion LinuxCNC may drop joins the motions around it in the mode of the one before
+        them, whatever its own: the proof checks the corner after such a motion too, ``prover/doubles.py``.)"""
         modes = self.modes
         if modes and not modes[max(bisect_right(modes, (k, True)) - 1, 0)][1]:
             return False
+        return not self.dwell_beside(k)
+
+    def dwell_beside(self, k: int) -> bool:
+        """Is motion ``k`` or ``k + 1`` a dwell (which stops the machine: no corner joins across it, and no
+        motion before it is dropped into one after it, ``CornerCheck._stop``)?"""
         rows = self.dwell_rows
-        if rows:
-            at = bisect_left(rows, k)
-            return not (at < len(rows) and rows[at] <= k + 1)
-        return True
+        if not rows:
+            return False
+        at = bisect_left(rows, k)
+        return at < len(rows) and rows[at] <= k + 1
 
     def has_arcs(self, first: int, last: int) -> bool:
         """Is one of motions ``first``..``last`` (of these rows) an arc?"""
