@@ -96,10 +96,12 @@ _LINUXCNC_GROUPS: dict[int, tuple[int, ...]] = {
     14: (960, 970),
     15: (70, 80),
 }
-#: The codes the plain lane claims (G0, G1), the fast path (G0-G3; G81/G82 hole lines), the double pass.
+#: The codes the plain lane claims (G0, G1), the fast path (G0-G3; G81/G82 hole lines), the double pass (G4: a
+#: dwell; G61, G61.1 and bare G64: the path mode; G91: straight moves, issue 36).
 _PLAIN_G = frozenset((0, 10))
 _FAST_G = frozenset((0, 10, 20, 30, 810, 820))
-_DOUBLES_G = frozenset((0, 10, 20, 30, 430, 800, 170, 180, 190, 210, 400, 490, 900, 940, 540, 550, 560, 570, 580, 590))
+_DOUBLES_G = frozenset((0, 10, 20, 30, 40, 430, 800, 170, 180, 190, 210, 400, 490, 900, 910, 940, 540, 550, 560, 570,
+                        580, 590, 610, 611, 640))
 #: The full path's unknown reasons live in ``interpreter.UNSUPPORTED_G`` (its messages); these are the
 #: LinuxCNC codes it answers ``unknown`` for.
 _LINUXCNC_UNKNOWN_G = frozenset((410, 420, 411, 421, 760, 382, 383, 384, 385, 870, 880, 432, 70, 171, 181, 191))
@@ -127,9 +129,9 @@ _LINUXCNC_M_GROUPS: dict[int, tuple[int, ...]] = {
 }
 #: Spindle and coolant: no effect on motion; the plain lane and the fast path take a block with one.
 _LEAN_M = frozenset((3, 4, 5, 7, 8, 9))
-#: Program end (the double pass stops there), and spindle and coolant (one to a block; issue 36: a parametric
-#: program that starts its spindle is no longer the full path's).
-_DOUBLES_M = frozenset((2, 30)) | _LEAN_M
+#: Program end (the double pass stops there), spindle and coolant (one to a block; issue 36: a parametric
+#: program that starts its spindle is no longer the full path's), and the tool change M6 and M61 (issue 36).
+_DOUBLES_M = frozenset((2, 30, 6, 61)) | _LEAN_M
 
 
 def _linuxcnc_m() -> dict[int, Code]:

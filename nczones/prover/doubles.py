@@ -41,12 +41,15 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
     The whole program's box first; a box that does not fit is split in :data:`SPLIT` (the first time, in
     boxes of :data:`FIRST_BOX` motions).
 
-    Corner blending (``specs/path-modes.md``): the pass's programs run in the machine's start-up path mode
-    (a G61 or G64 in the text declines).  In G64 without tolerance a rounded corner between two straight
-    motions uses at most half of each, so it lies in the box of the two: a corner inside a box is proved with
-    it, and every corner between two boxes is proved on its own (:func:`_corner_fits`).  With
-    ``path_tolerance`` (``G64 P p``, whose Q is p) the path stays within ``2 p`` of the programmed one: the
-    margin grows by that much instead (a path with arcs is left to the full path there).
+    Corner blending (``specs/path-modes.md``): the pass's programs start in the machine's start-up path mode
+    and may write G61, G61.1 and G64 without P (``path.modes``; G64 P declines).  In G64 without tolerance a
+    rounded corner between two straight motions uses at most half of each, so it lies in the box of the two:
+    a corner inside a box is proved with it, and every corner between two boxes is proved on its own
+    (:func:`_corner_fits`) unless the full path has no corner there (:meth:`~nczones.gcode.linuxcnc.doubles.
+    DoublePath.blended`: the motion before it in exact stop, a dwell on either side; the exact-stop path is the
+    programmed one, which the boxes hold).  With the machine's ``path_tolerance`` (``G64 P p``, whose Q is p)
+    the path stays within ``2 p`` of the programmed one: the margin grows by that much for every motion, a
+    superset for those the program runs in another mode (a path with arcs is left to the full path there).
 
     Arcs: the pass keeps a quick box of each arc (a screen, :mod:`~nczones.gcode.linuxcnc.double_arcs`); a box
     with arcs that does not fit (and a corner next to one) is tried again with its arcs' sweep boxes
@@ -59,12 +62,12 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
     every corner inside it; the corner at a box's end is proved on its own.
     """
     arcs = bool(getattr(path, "arcs", 0))
-    corners = machine.path_mode == "G64"
-    if corners and machine.path_tolerance:
+    corners = _bare(path, machine)
+    if machine.path_mode == "G64" and machine.path_tolerance:
         if arcs:
             return None  # blends of arcs with a tolerance: the full path's (prover/blend.py)
         margin += 2 * machine.path_tolerance
-        corners = False
+    blended = getattr(path, "blended", None) if getattr(path, "modes", ()) else None
     allowed = machine.allowed
     zero = Fraction(0)
     start = getattr(path, "row0", 0) + 1  # a window of a long program holds rows row0..motions
@@ -79,7 +82,8 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         if corners and arcs and last > first and path.has_arcs(first, last):
             lo, hi = _grown(lo, hi)
         if box_fits(allowed, lo, hi, margin, zero):
-            if corners and last < path.motions and not _corner_fits(path, allowed, margin, last):
+            if corners and last < path.motions and _corner_wanted(path, blended, last) \
+                    and not _corner_fits(path, allowed, margin, last):
                 if not (arcs and _refine(path, last, last + 1) and _corner_fits(path, allowed, margin, last)):
                     return None
             continue
@@ -93,6 +97,27 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         size = FIRST_BOX if n > FIRST_BOX * SPLIT and first == start and last == path.motions else -(-n // SPLIT)
         todo.extend((a, min(a + size - 1, last)) for a in range(first, last + 1, size))
     return boxes
+
+
+def _corner_wanted(path: Any, blended: Any, k: int) -> bool:
+    """Must the corner after motion ``k`` (between two boxes) be proved: may the full path round a corner
+    there?  Yes where motion ``k`` blends (``blended``: its mode, no dwell beside it; None: every corner), and
+    where motion ``k`` may be dropped (:func:`may_be_zero`) with no dwell beside it: LinuxCNC then joins the
+    motion before the dropped ones to the one after them in the earlier motion's mode, whatever the dropped
+    motion's own (``CornerCheck._dropped_corner``; ``tests/contract/test_seam_hunt.py``, G61 on the short
+    move after a G64 motion), and :func:`_corner_fits` proves that join."""
+    if blended is None or blended(k):
+        return True
+    return not path.dwell_beside(k) and may_be_zero(path, k)
+
+
+def _bare(path: Any, machine: Machine) -> bool:
+    """May a corner of ``path`` blend without a tolerance: a motion in G64 without P (the program's, ``path.modes``,
+    or the machine's start mode without ``path_tolerance``)?"""
+    modes = getattr(path, "modes", ())
+    if modes:
+        return any(bare for _row, bare in modes)
+    return machine.path_mode == "G64" and not machine.path_tolerance
 
 
 def _refine(path: Any, first: int, last: int) -> bool:
@@ -162,7 +187,7 @@ class WindowProof:
         # declares_solids is machine_solids(...) is not None without importing nczones.solids (start-up)
         if declares_solids(self.machine):
             return False  # the boxes are about the controlled point; tool solids need the full path
-        if self.machine.path_mode == "G64" and not self.machine.path_tolerance and may_be_zero(path, path.motions):
+        if _bare(path, self.machine) and may_be_zero(path, path.motions):
             # the window ends on a motion that may have length 0: its corner joins the motion before it,
             # which the next window does not hold (the windows overlap by one motion): the window ends later
             return None
@@ -188,7 +213,8 @@ def may_be_zero(path: Any, k: int) -> bool:
 
 def _kinds(path: Any) -> dict[str, dict[str, Any]]:
     """The profile's motions by kind, as the other lanes report them (none decided one by one)."""
-    counts = (("arc", getattr(path, "arcs", 0)), ("line", path.lines), ("rapid", path.rapids))
+    counts = (("arc", getattr(path, "arcs", 0)), ("line", path.lines), ("rapid", path.rapids),
+              ("dwell", getattr(path, "dwells", 0)))
     return {kind: {"motions": n, "seconds_one_by_one": 0.0} for kind, n in counts if n}
 
 
@@ -224,7 +250,7 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
                          "interpretation_and_rest_s": round(seconds, 6)},
                "kinds": _kinds(path), "solver": {"calls": 0, "seconds": 0.0, "stopped": {}}, "slowest": []}
     counts = {"blocks": path.blocks, "segments": n, "fast_lines": 0, "line": path.lines,
-              "arc": getattr(path, "arcs", 0), "rapid": path.rapids, "dwell": 0, "developed_arc": 0, "spline": 0,
+              "arc": getattr(path, "arcs", 0), "rapid": path.rapids, "dwell": getattr(path, "dwells", 0), "developed_arc": 0, "spline": 0,
               "polar": 0}
     return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(),
                   timings=(("prove_s", seconds),), stats=stats, margin=margin, engine="auto",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import os
+from bisect import bisect_right
 from fractions import Fraction
 
 import mpmath
@@ -23,16 +24,18 @@ from nczones.gcode.expr import binary_op
 from nczones.gcode.linuxcnc import doubles
 from nczones.gcode.linuxcnc.doubles import Declined, DoublePath, double_pass
 from nczones.machine import parse_machine
-from nczones.motion import SegmentKind
+from nczones.motion import PathMode, SegmentKind
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "120"))
 
 
 def machine_text(offsets: dict[str, tuple[str, str, str]] | None = None, start: tuple[str, str, str] = ("0", "0", "0"),
-                 modal: str | None = None, extra: str = "") -> str:
+                 modal: str | None = None, extra: str = "", keys: str = "") -> str:
     lines = ['[machine]', 'name = "double pass"', 'axes = ["X", "Y", "Z"]', 'pulse = "0.001"']
     if modal is not None:
         lines.append(f"modal = {modal}")
+    if keys:  # more [machine] keys (the start-up path mode)
+        lines.append(keys)
     lines += ['[machine.rapid]', 'X = "5000"', 'Y = "5000"', 'Z = "5000"', '[machine.reference]',
               'X = "0"', 'Y = "0"', 'Z = "0"', '[machine.start]',
               f'X = "{start[0]}"', f'Y = "{start[1]}"', f'Z = "{start[2]}"']
@@ -63,6 +66,9 @@ def check_against_full(text: str, machine, max_iterations: int = 1000) -> Double
     assert run.counts["blocks"] == path.blocks
     axes = machine.axis_names
     assert path.arcs == sum(seg.kind is SegmentKind.ARC for seg in segments)
+    assert path.dwells == sum(seg.kind is SegmentKind.DWELL for seg in segments)
+    assert path.rapids == sum(seg.kind is SegmentKind.RAPID for seg in segments)
+    check_corners(path, segments, run.interpreter.path_modes)
     for k, seg in enumerate(segments, start=1):
         lo, hi = path.enclosure(k, k)
         for i, a in enumerate(axes):
@@ -73,6 +79,19 @@ def check_against_full(text: str, machine, max_iterations: int = 1000) -> Double
         if seg.kind is SegmentKind.ARC:
             check_arc_in_box(seg, lo, hi)
     return path
+
+
+def check_corners(path: DoublePath, segments: list, modes: list[tuple[int, PathMode]]) -> None:
+    """The pass blends the corners the full path does: a corner takes the mode of the motion before it
+    (``CornerCheck._segment``), G64 without P (a tolerance's corners are the margin's) and no dwell on either
+    side; the full path's mode of a motion is the last entry of ``path_modes`` at or before its block."""
+    blocks = [first for first, _mode in modes]
+    for k in range(1, len(segments)):
+        before, after = segments[k - 1], segments[k]
+        mode = modes[bisect_right(blocks, before.block) - 1][1]
+        bare = mode.blend and mode.tolerance is None and not mode.naive
+        dwell = SegmentKind.DWELL in (before.kind, after.kind)
+        assert path.blended(k) == (bare and not dwell), (k, mode, before.kind, after.kind)
 
 
 def arc_points(seg) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
@@ -201,13 +220,21 @@ def arcs(draw) -> list[str]:
             words += draw(st.sampled_from([" Z2", " I1", " F50", ""]))
     lead = draw(st.sampled_from(["", "", "", "", "", "", "", "", "G17 ", "G43 H1 ", "G49 ", "G55 ", "G18 "]))
     tail = draw(st.sampled_from([[], [], [], ["G1"], ["G1"], ["G0 X0 Y0"], ["X1 Y1"]]))
-    return head + [f"{lead}{code} {words}"] + tail
+    # a dwell or a path mode before the arc (a dwell stops: no blend, no motion LinuxCNC drops before the arc)
+    pause = draw(st.sampled_from([[]] * 6 + [["G4 P0.1"], ["G61"], ["G64"], ["G1 X[#1 * 0.0000001]", "G4 P1"]]))
+    return head + pause + [f"{lead}{code} {words}"] + tail
 
 
+#: Tool changes, dwells and path modes (issue 36), most of them in the subset.
+TOOLS_AND_MODES = ["T1 M6", "T2", "M6", "T03 M06 G43 H1", "M61 Q3", "M6 M3 T1", "T1 M6 G1 X[#1] F100", "G4 P0.5",
+                   "G4 P[ABS[#1] + 0.1]", "G4 P[#1]", "G04 P1 M9", "G61", "G61.1", "G64", "G64 G1 X[#1 / 3]",
+                   "G61 G0 Z[#2]", "G61.1 X[#1 + 0.0000001]", "G1 X[#1 + 0.0000001]", "G91", "G90", "G91 G1 X[#1]",
+                   "G91 G0 Z[-#1] Y0.1", "G90 G1 X[#1] Y[#2] Z0"]
 #: Lines outside the subset (each must make the pass decline, or the full path agree with it).
 OUTSIDE = ["G2 X1 Y1 R5", "G43 H2", "G43", "H1", "G43 H0", "G49", "G19", "G91", "G20", "M3 S1000", "#4 = #5221", "G43 H1", "T1 M6", "G10 L2 P1 X3",
            "G92 X0", "(MSG, hello)", "(DEBUG, #1)", "G59.1", "G53 G0 X1", "G64 P0.01", "#4 = #<_x>", "G4 P1",
-           "/G1 X1", "%", "G1 X1 X2", "G0 G1 X1", "G80 X1", "G28", "M0", "S100", "#4 = EXISTS[#<a>]"]
+           "/G1 X1", "%", "G1 X1 X2", "G0 G1 X1", "G80 X1", "G28", "M0", "S100", "#4 = EXISTS[#<a>]",
+           "T[#1] M6", "G4 P1 X1", "G4", "M61", "Q1", "G64 Q0.1", "G4 P-1", "T1.5", "M6 M61 Q1"]
 
 
 @st.composite
@@ -222,7 +249,7 @@ def statements(draw, depth: int, labels: list[int]) -> list[str]:
         return [draw(st.sampled_from(["G54", "G55", "G56", "G57", "G58", "G59", "G21 G90", "G17", "G94 G40 G49",
                                       "G80", "F200", "N10 G1 X1 F100", "(a plain comment)", "", "; comment",
                                       "G1 X[#1] (with a comment)", "M3 S1000", "S[ABS[#1] * 10] M4", "M5",
-                                      "G1 X[#1] M8 F100", "M9", "M7 S0", "S[#1]"]))]
+                                      "G1 X[#1] M8 F100", "M9", "M7 S0", "S[#1]", *TOOLS_AND_MODES]))]
     if kind == 7 and depth > 0:
         label = 100 + len(labels)
         labels.append(label)
@@ -268,7 +295,8 @@ def machines(draw, tools: bool = False):
     offsets = {name: triple() for name in ("G54", "G55", "G57") if draw(st.booleans())}
     modal = draw(st.sampled_from([None] * 12 + ['["G21", "G90", "G17", "G55"]', '["G20"]', '["G91"]']))
     lengths = draw(st.sampled_from(["", '[tool_lengths]\nH1 = "100"\n', '[tool_lengths]\nH1 = "-12.3456789"\n'][tools:]))
-    return parse_machine(machine_text(offsets, triple(), modal, extra=lengths))
+    keys = draw(st.sampled_from([""] * 6 + ['path_mode = "G61"', 'path_mode = "G61.1"', 'path_tolerance = "0.01"']))
+    return parse_machine(machine_text(offsets, triple(), modal, extra=lengths, keys=keys))
 
 
 @settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
@@ -310,6 +338,11 @@ ACCEPTED = {
     "offsets and rows": "G21 G90 G54 F100\nG0 X0.1 Y0.2 Z0.3\nG56 X[0.1 + 0.2]\nG1 Y[1/3] F[10 * 3]\nM30\n",
     "a subroutine": "o<s> sub\nG1 X1\no<s> endsub\nG21 G90 G54 F100\n#1 = 1\no<s> call\n",
     "F after G94": "G21 G90 G54 F100\n#1 = 1\nG94 F10 G1 X#1\nG94\nF5\nG1 Y#1\nM30\n",
+    "incremental": "G21 G91 G54 F100\n#1 = 1\nG1 X1\nG0 Y[#1 / 3] Z-0.1\nG55 X0.1\nG90 X1\nG91 Y1\nM30\n",
+    # issue 36: real programs carry a tool change, a dwell, an exact-stop mode
+    "tools, dwells, path modes": "G21 G90 G17 G54 F800\nT1 M6\n#1 = 0\nG1 X[#1 + 1] Y2\nG4 P0.5\n"
+                                 "G61\nG1 X[#1 + 3]\nG61.1 Y[#1]\nT2\nM6 M3 S1000\nG64\nG1 X0 Y0\nM61 Q3\n"
+                                 "G04 P[#1 + 1]\nM30\n",
 }
 
 
@@ -334,13 +367,22 @@ def test_the_rows_are_the_controllers_doubles():
 
 DECLINED = {
     "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J or R"),
-    "incremental": ("G21 G91 G54 F100\n#1 = 1\nG1 X1\n", "G91"),
+    "an arc in G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "arc in G91"),
+    "an arc after G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG1 X1\nG90 Y2\nG2 X1 Y1 R5\n", "arc in G91"),
     "inches": ("G20 G90 G54 F100\n#1 = 1\nG1 X1\n", "G20"),
     # spindle and coolant M codes, one to a block, and S are followed (issue 36); two in a block are not
     "two spindle and coolant codes": ("G21 G90 G54 F100\n#1 = 1\nM3 M8\nG1 X1\n", "M code"),
     # the full path's GC209
     "a negative spindle speed": ("G21 G90 G54 F100\n#1 = 1\nS[#1 - 2] M3\nG1 X1\n", "negative spindle speed"),
-    "a tool change": ("G21 G90 G54 F100\n#1 = 1\nT1 M6\nG1 X1\n", "word T"),
+    "a computed tool number": ("G21 G90 G54 F100\n#1 = 1\nT[#1] M6\nG1 X1\n", "computed"),
+    "a tool number not whole": ("G21 G90 G54 F100\n#1 = 1\nT1.5 M6\nG1 X1\n", "code 1.5"),
+    "M61 without Q": ("G21 G90 G54 F100\n#1 = 1\nM61\nG1 X1\n", "M61 without Q"),
+    "Q without M61": ("G21 G90 G54 F100\n#1 = 1\nQ1\nG1 X1\n", "without M61"),
+    "G4 without P": ("G21 G90 G54 F100\n#1 = 1\nG4\nG1 X1\n", "G4 without P"),
+    "G4 with an axis word": ("G21 G90 G54 F100\n#1 = 1\nG4 P1 X1\n", "G4 with axis words"),
+    "a dwell of no time": ("G21 G90 G54 F100\n#1 = 0\nG4 P#1\nG1 X1\n", "not positive"),
+    "G64 P": ("G21 G90 G54 F100\n#1 = 1\nG64 P0.01\nG1 X1\n", "word P"),
+    "G61.2": ("G21 G90 G54 F100\n#1 = 1\nG61.2\nG1 X1\n", "code"),
     "state read": ("G21 G90 G54 F100\n#1 = #5221\nG1 X#1\n", "parameter"),
     "a global name": ("G21 G90 G54 F100\n#<_a> = 1\nG1 X#<_a>\n", "global"),
     "no feed": ("G21 G90 G54\n#1 = 1\nG1 X#1\n", "feed"),

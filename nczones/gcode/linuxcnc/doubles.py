@@ -30,7 +30,10 @@ third axis moves monotonically, so the rows hold it.  The pass keeps a quick box
 ``ij_screen``: no sweep, no square root for R) and :meth:`DoublePath.refine` narrows it to the sweep's box
 (``r_arc``, ``ij_arc``) when a proof needs it; each holds the arc, so their intersection does.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
 entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
-bound's offset term covers the largest work offset plus the largest length.
+bound's offset term covers the largest work offset plus the largest length.  A G91 move adds the word's double to
+the row before (the full path adds the word's exact value to the machine position: the offsets cancel): its
+error grows with each step of the chain, and :meth:`_Pass._straight_ends` bounds it (``DoublePath.inc_bound``, the
+largest of a window's rows, added to the widening); a G90 move of the axis ends the chain.
 
 The subset
 ----------
@@ -40,12 +43,22 @@ labels not reused; ``o.. sub``/``endsub`` at the top level, and ``o.. call`` of 
 call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1..#30 and local named
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
-``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G17 G18 G19 G21 G40 G43 G49 G54-G59 G80 G90 G94 with literal codes, F,
-X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5 M7 M8 M9 a block, and M2/M30 alone
-to end; plain comments.  Arcs: in G17 once the program has set it, on a machine with X and Y, I/J (G91.1,
+``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G4 G17
+G18 G19 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G94 with literal codes, F, X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5
+M7 M8 M9 a block, and M2/M30 alone to end; plain comments.  A tool: ``T<n>``, ``M6`` and ``M61 Q<n>`` with
+literal numbers (:meth:`_Pass._tool_change`: nothing the pass computes reads the tool in the spindle; M6 on a
+machine whose tool change moves, ``[machine] tool_change_*``, declines).  A dwell: ``G4 P<seconds>`` (P
+above 0, no axis word) is a row where the machine stands, as the full path's ``DWELL`` segment.  The path
+mode: G61, G61.1 and G64 without P or Q (:attr:`DoublePath.modes`, from the next motion on, its block's
+included), which with the dwells say which corners LinuxCNC blends (:meth:`DoublePath.blended`); the motions
+and their rows are the same in every mode (the full path emits every motion; which ones LinuxCNC drops in a
+blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
+program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
+chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  Arcs: in
+G17 once the program has set it, on a machine with X and Y, I/J (G91.1,
 LinuxCNC's default) or R format with X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
 ``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  Everything else declines:
-other codes and words, G20 and G91 (and a machine that starts in them), block delete, magic comments,
+other codes and words, G64 P or Q, G20 (and a machine that starts in it or in G91), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
@@ -53,7 +66,8 @@ parameter read of controller state, any evaluation error; an arc in G18/G19, wit
 words or a centre, of a radius about 0, with ends near or past the arc tolerance, an R arc of a chord about
 0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those), an arc after a motion
 LinuxCNC may drop in a blended corner (:meth:`_Pass.tiny`) unless that motion is the program's first with the
-start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only after another); I, J or R
+start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only after another) or a dwell
+(which stops the machine: nothing is dropped across it, :meth:`_Pass.dwell_at`); I, J or R
 without G2/G3, H without G43, G43 without H or with H0.
 
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
@@ -65,8 +79,11 @@ cannot see its call frame: it is called without one (``tests/gcode/test_double_p
 
 Invariant (``tests/gcode/test_double_pass.py``): whenever the pass returns, the full interpreter's run of
 the same program on the same machine completes with no unknown code, no error and no notes, with the same
-number of motions, and the end point of its k-th motion lies in the box of the pass's k-th row widened by
-the bound (an arc: its every point, at both radii of a spiral, in :meth:`DoublePath.enclosure` of its row).
+number of motions (as many rapids, arcs and dwells), and the end point of its k-th motion lies in the box of
+the pass's k-th row widened by the bound (an arc: its every point, at both radii of a spiral, in
+:meth:`DoublePath.enclosure` of its row); its corner check blends the corner between motions k and k + 1
+without a tolerance exactly where :meth:`DoublePath.blended` says (``check_corners``; with
+``tests/gcode/test_double_pass_tools.py`` for the tool change, dwells and path modes).
 """
 
 from __future__ import annotations
@@ -130,10 +147,12 @@ PIECE = 1 << 20
 #: memory stays flat however long a body is.
 MAX_STEPS = 1 << 16
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
-#: Integer G codes the pass follows (the code table's ``doubles`` claims), by modal group.
-_GROUP_NAMES = {1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance", 5: "feedmode",
-                12: "offset"}
-_GROUPS = {k // 10: _GROUP_NAMES[LINUXCNC_G[k].group or 0] for k in sorted(claimed(LINUXCNC_G, LANE_DOUBLES))}
+#: The G codes the pass follows (the code table's ``doubles`` claims), by modal group: a whole number ``n`` as
+#: ``n``, ``n.1`` (G61.1) as ``-(10 n + 1)`` (:func:`_code`).
+_GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance",
+                5: "feedmode", 12: "offset", 13: "path"}
+_GROUPS = {k // 10 if k % 10 == 0 else -k: _GROUP_NAMES[LINUXCNC_G[k].group or 0]
+           for k in sorted(claimed(LINUXCNC_G, LANE_DOUBLES))}
 
 #: Calls open at once the pass follows (LinuxCNC has 10 call levels with the main program).
 MAX_CALLS = 5
@@ -146,10 +165,12 @@ _BLANKS = re.compile(r"[ \t]+")
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
-_LETTERS = frozenset("GMFSXYZIJRH")
-#: Letters whose word is a literal code (H: the tool length register, read like a G or M code).
-_CODE_LETTERS = "GMH"
+_LETTERS = frozenset("GMFSXYZIJRHTPQ")
+#: Letters whose word is a literal code (H: the tool length register, T: a tool number, Q: M61's tool number,
+#: read like a G or M code).
+_CODE_LETTERS = "GMHTQ"
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
+_CODE_TENTH = re.compile(r"0*(61)\.10*")  # G61.1, the only code n.1 the pass follows
 #: A line of words of a letter and a number only (:meth:`_Pass._plain`; the parser's ``_NUMBER``), and a word.
 _PLAIN = re.compile(r"[ \t]*(?:[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)[ \t]*)+")
 _PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
@@ -159,7 +180,7 @@ _DIGIT_RUNS = re.compile(rb"0+")  # (in a layout: every digit is 0)
 #: M codes the pass follows beside M2/M30 (the code table's claims), one to a block: the spindle (M3, M4, M5)
 #: and coolant (M7, M8, M9), which move nothing and set no state the path depends on (LinuxCNC's checks of the
 #: spindle direction are for G33, G76, G84 and G86, which the pass does not follow)
-_AUX_M = frozenset(k for k in LINUXCNC_M if CODES.claims_m(k)) - {2, 30}
+_AUX_M = frozenset(k for k in LINUXCNC_M if CODES.claims_m(k)) - {2, 30, 6, 61}
 
 
 class Declined(Exception):
@@ -204,6 +225,15 @@ class DoublePath:
     #: already; else a quick screen's, ``double_arcs.refined``'s flags) and its words (R and 0, or I and J); the
     #: offsets' bound and the radius rule: ``(words, offb, rule)``
     arc_more: Any = None
+    #: dwells (G4: a row where the machine stands) in the whole program, and the rows of those of these rows
+    dwells: int = 0
+    dwell_rows: array | None = None
+    #: the path mode: ``(first row, bare)`` where it changes (the first: in force at ``row0``), ``bare``: the
+    #: motions blend without a tolerance (G64 without P); ``()``: the machine's start mode throughout
+    modes: tuple[tuple[int, bool], ...] = ()
+    #: per axis, a bound (mm) of the G91 chains' error of these rows (:meth:`_Pass._straight_ends`), added to the
+    #: module's bound; ``()``: none
+    inc_bound: tuple[float, ...] = ()
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -230,6 +260,8 @@ class DoublePath:
                 a_lo, a_hi = min(part), max(part)
                 top = max(abs(a_lo), abs(a_hi))
                 widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
+                if self.inc_bound and self.inc_bound[a]:
+                    widen += Fraction(self.inc_bound[a])
                 # outwards to multiples of 2**-60 mm (small denominators for the exact test)
                 bounds.append(Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID))
                 bounds.append(Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID))
@@ -282,6 +314,26 @@ class DoublePath:
                                          max(boxes[b + 2], box[2]), min(boxes[b + 3], box[3])))
         return done
 
+    def blended(self, k: int) -> bool:
+        """May LinuxCNC blend the corner between motions ``k`` and ``k + 1`` without a tolerance: motion ``k``
+        runs in G64 without P (the full path's corner takes the mode of the motion before it:
+        ``CornerCheck._segment``) and neither is a dwell (:meth:`dwell_beside`)?  Without ``modes``: every
+        corner may.  (A motion LinuxCNC may drop joins the motions around it in the mode of the one before
+        them, whatever its own: the proof checks the corner after such a motion too, ``prover/doubles.py``.)"""
+        modes = self.modes
+        if modes and not modes[max(bisect_right(modes, (k, True)) - 1, 0)][1]:
+            return False
+        return not self.dwell_beside(k)
+
+    def dwell_beside(self, k: int) -> bool:
+        """Is motion ``k`` or ``k + 1`` a dwell (which stops the machine: no corner joins across it, and no
+        motion before it is dropped into one after it, ``CornerCheck._stop``)?"""
+        rows = self.dwell_rows
+        if not rows:
+            return False
+        at = bisect_left(rows, k)
+        return at < len(rows) and rows[at] <= k + 1
+
     def has_arcs(self, first: int, last: int) -> bool:
         """Is one of motions ``first``..``last`` (of these rows) an arc?"""
         rows = self.arc_rows
@@ -292,6 +344,7 @@ class DoublePath:
 
 
 _ULP = Fraction(1, 2**52)
+_EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
@@ -357,6 +410,8 @@ class _Pass:
         #: the lines, read a piece of the text at a time (the whole text as a list of lines would be ~10x it;
         #: a streamed file, FileText, is read from the file a piece at a time, in order but for jumps)
         self.src = _Lines(text, crlf="\r" in text)
+        #: the text may write G91 (a "91" in it): only then do straight moves test for G91 (_straight_ends)
+        self.g91_text = "91" in text
         #: layout -> (its shape's step, the layout's cutter): ``step(cut(line))`` runs a line of it (nothing is
         #: compiled per layout: CAM output with arcs has hundreds of layouts of a few dozen shapes)
         self.by_layout: dict[bytes, tuple[Any, Any]] = {}
@@ -372,6 +427,7 @@ class _Pass:
         self.wcs = int(wcs[1:])
         self.off = self.offsets[self.wcs]
         self._arcs_state(machine, arc_tolerance)
+        self._modes_state(machine)
         self.unset = set(_NOTED)
         self.motion: int | None = None
         self.feed = 0.0
@@ -542,9 +598,11 @@ class _Pass:
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
         arcs = self.arcs + len(self.arc_rows)
-        return DoublePath(self.axes, self.columns, self.offset_bound, motions, motions - self.rapids - arcs,
-                          self.rapids, self.blocks, self.start, tuple(self.first_row), self.row0, arcs,
-                          self.arc_rows, self.arc_axes, self.arc_boxes, (self.arc_words, self.offb, self.rule))
+        return DoublePath(self.axes, self.columns, self.offset_bound, motions,
+                          motions - self.rapids - arcs - self.dwells, self.rapids, self.blocks, self.start,
+                          tuple(self.first_row), self.row0, arcs, self.arc_rows, self.arc_axes, self.arc_boxes,
+                          (self.arc_words, self.offb, self.rule), self.dwells, self.dwell_rows, tuple(self.modes),
+                          tuple(self.xerr))
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -565,6 +623,15 @@ class _Pass:
             self.arcs += gone
             del self.arc_boxes[:4 * gone]
             del self.arc_words[:3 * gone]
+        # the path mode in force at row0 and its changes after; the dwells from row0 on
+        k = bisect_right(self.modes, (self.row0, True)) - 1
+        if k > 0:
+            del self.modes[:k]
+        del self.dwell_rows[:bisect_left(self.dwell_rows, self.row0)]
+        if self.chained or any(self.xerr):  # the G91 errors of the two rows kept
+            for i, e in enumerate(self.err):
+                row, before = self.touched[i]
+                self.xerr[i] = max(e or 0.0, (before or 0.0) if row > self.row0 else 0.0)
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
@@ -963,10 +1030,6 @@ class _Pass:
     def _arcs_state(self, machine: Any, arc_tolerance: Fraction | str) -> None:
         #: the program has set the plane to G17 (before it sets one the full path notes the plane at an arc)
         self.g17 = False
-        #: the machine blends corners (the pass declines G61/G64 in the text): an arc after a motion LinuxCNC
-        #: may drop (shorter than DROPPED_BELOW on every axis) is run from the corner, which the full path
-        #: answers unknown for (prover/blend.py)
-        self.blend = getattr(machine, "path_mode", "G64") == "G64"
         self.tiny_pad = float(max(self.offset_bound, default=Fraction(0))) * 1e-14  # the rows' offset term
         self.rule = radius_rule(arc_tolerance)
         ix, iy = self.index.get("X"), self.index.get("Y")
@@ -977,6 +1040,78 @@ class _Pass:
         self.arc_rows = array("q")
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
         self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
+
+    def _modes_state(self, machine: Any) -> None:
+        """The path mode and the dwells (:meth:`mode`, :meth:`dwelt`), and whether M6 moves on ``machine``."""
+        start = getattr(machine, "path_mode", "G64")
+        #: a motion so far may blend (the machine starts in G64, with or without a tolerance, or the program set
+        #: G64): an arc after a motion LinuxCNC may drop (shorter than DROPPED_BELOW on every axis) is run from
+        #: the corner, which the full path answers unknown for (prover/blend.py)
+        self.blend = start == "G64"
+        #: the motions now blend without a tolerance (G64 without P: their corners are proved one by one)
+        self.bare = start == "G64" and not getattr(machine, "path_tolerance", None)
+        #: (first row, bare) where the path mode changes, rows counted from the program's start (DoublePath.modes)
+        self.modes: list[tuple[int, bool]] = [(1, self.bare)]
+        self.dwells = 0  # dwells (G4) in the whole program; those of the rows held are dwell_rows
+        self.dwell_rows = array("q")
+        self._g91_state()
+        self.tool_moves = bool(getattr(machine, "tool_change_quill_up", False)
+                               or getattr(machine, "tool_change_at_g30", False)
+                               or getattr(machine, "tool_change_position", None))
+
+    def _g91_state(self) -> None:
+        """G91: the distance mode, and per axis the bound of the error its G91 chain has built (:meth:`_straight_ends`)."""
+        n = len(self.axes)
+        self.inc = False  # G91 (a machine that starts in it declines)
+        self.slow = False  # G91, or a G91 chain open: straight moves take the G91 code (_straight_ends)
+        #: per axis: None (its row is a G90 one or the start: the module's bound holds) or a bound (a float,
+        #: rounded up) of the distance of its double from the full path's exact coordinate (_straight_ends)
+        self.err: list[float | None] = [None] * n
+        self.chained = False  # some axis has a G91 chain's error
+        #: per axis: the largest error of the rows held (the window's, DoublePath.inc_bound), and the last chain
+        #: ended (its G90 row, the chain's error): a window's first row keeps its error (full())
+        self.xerr = [0.0] * n
+        self.touched: list[tuple[int, float | None]] = [(-1, None)] * n
+        self.offb2 = [math.nextafter(float(2 * b), math.inf) for b in self.offset_bound]
+
+    def unchain(self, axes: tuple[int, ...]) -> None:
+        """A G90 move sets ``axes``: their rows have the module's bound again (the chain's error is kept for
+        the row before, :meth:`full`)."""
+        row = self.row0 + len(self.columns[0])
+        for i in axes:
+            if self.err[i] is not None:
+                self.touched[i] = (row, self.err[i])
+                self.err[i] = None
+        self.chained = any(e is not None for e in self.err)
+        self.slow = self.inc or self.chained
+
+    def distance(self, inc: bool) -> None:
+        """G90 (``inc`` false) or G91."""
+        self.inc = inc
+        self.slow = inc or self.chained
+
+    def mode(self, bare: bool) -> None:
+        """G64 without P (``bare``), or G61 or G61.1: the path mode of the next motions (its block's included)."""
+        self.blend = self.blend or bare
+        if bare == self.bare:
+            return
+        self.bare = bare
+        row = self.row0 + len(self.columns[0])  # the next motion's
+        if self.modes[-1][0] == row:
+            self.modes.pop()
+        if not self.modes or self.modes[-1][1] != bare:
+            self.modes.append((row, bare))
+
+    def dwelt(self, row: int) -> None:
+        """G4: the row just added (of the columns held) is a dwell where the machine stands."""
+        self.dwells += 1
+        self.dwell_rows.append(self.row0 + row)
+
+    def dwell_at(self, row: int) -> bool:
+        """Is the motion that ends at ``row`` (of the columns held) a dwell?"""
+        rows, r = self.dwell_rows, self.row0 + row
+        k = bisect_left(rows, r)
+        return k < len(rows) and rows[k] == r
 
     def tiny(self, row: int) -> bool:
         """May the motion that ends at ``row`` (of the columns held) be dropped by LinuxCNC: is it shorter than
@@ -1013,22 +1148,24 @@ class _Pass:
         return plan
 
     def _make_plan(self, letters: str, codes: tuple[int, ...]) -> Any:
-        gm = [x for x in letters if x in _CODE_LETTERS]
-        gs = [c for c, letter in zip(codes, gm) if letter == "G"]
-        ms = [c for c, letter in zip(codes, gm) if letter == "M"]
-        hs = [c for c, letter in zip(codes, gm) if letter == "H"]
+        by: dict[str, list[int]] = {x: [] for x in _CODE_LETTERS}
+        for c, letter in zip(codes, [x for x in letters if x in _CODE_LETTERS]):
+            by[letter].append(c)
+        gs, ms, hs, ts, qs = (by[x] for x in _CODE_LETTERS)
         others = [x for x in letters if x not in _CODE_LETTERS]
-        if ms in ([2], [30]) and not gs and not others and not hs:
+        if ms in ([2], [30]) and not gs and not others and not hs and not ts and not qs:
             return self._end
-        if ms and (len(ms) != 1 or ms[0] not in _AUX_M):
+        self._tool_change(ms, ts, qs)
+        aux = [m for m in ms if m != 6 and m != 61]
+        if aux and (len(aux) != 1 or aux[0] not in _AUX_M):
             raise Declined("an M code the double pass does not follow")
         groups = _groups(gs)
         if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FSIJR" and x not in self.index:
+            if x not in "FSIJRP" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJR"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJRP"]
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -1039,16 +1176,8 @@ class _Pass:
                      "st.feed = f"]
         if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
             body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
-        if "plane" in groups:
-            body.append(f"st.g17 = {groups['plane'] == 17}")
-        sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
-        if sets:
-            body.append(f"unset.difference_update({tuple(sets)!r})")
-        if "offset" in groups:
-            body.append(f"st.work({groups['offset']})")
-        body += self._tool_body(groups.get("tool"), hs)
-        if "motion" in groups:
-            body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
+        body += self._dwell_body(groups, others, bool(axes))
+        body += self._modal_body(groups, hs)
         if groups.get("motion") in (1, 2, 3) and not axes:  # G1 without axis words: LinuxCNC checks the feed too
             if groups["motion"] != 1 or any(x in "IJR" for x in others):
                 raise Declined("an arc without axis words")
@@ -1057,14 +1186,77 @@ class _Pass:
             body += self._motion_body(others, axes)
         elif any(x in "IJR" for x in others):
             raise Declined("I, J or R without a motion")
+        return self._compiled_plan(body)
+
+    def _compiled_plan(self, body: list[str]) -> Any:
+        """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "BLEND": self.blend,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
                                  "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
-                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4}
+                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
+                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
+
+    def _modal_body(self, groups: dict[str, int], hs: list[int]) -> list[str]:
+        """The code of a block's plane, units, distance mode, work offset, tool length, path mode and motion
+        mode (in LinuxCNC's order, before its motion)."""
+        body = []
+        if "plane" in groups:
+            body.append(f"st.g17 = {groups['plane'] == 17}")
+        sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
+        if sets:
+            body.append(f"unset.difference_update({tuple(sets)!r})")
+        if "offset" in groups:
+            body.append(f"st.work({groups['offset']})")
+        body += self._tool_body(groups.get("tool"), hs)
+        if "path" in groups:
+            body.append(f"st.mode({groups['path'] == 64})")
+        if "distance" in groups:
+            if groups["distance"] == 91 and not self.g91_text:  # (a G91 the text's "91" misses: "G9 1")
+                raise Declined("G91 written apart")
+            body.append(f"st.distance({groups['distance'] == 91})")
+        if "motion" in groups:
+            body.append(f"st.motion = {None if groups['motion'] == 80 else groups['motion']}")
+        return body
+
+    def _tool_change(self, ms: list[int], ts: list[int], qs: list[int]) -> None:
+        """Decline the T, M6 and M61 Q words of a block the pass does not follow.
+
+        ``T<n>`` selects a tool and ``M6`` (``M61 Q<n>``) puts it (tool n) in the spindle: on the full path
+        (``Interpreter.put_in_spindle``) that sets ``tool_in_spindle`` and ``spindle_tools`` and stops the
+        spindle; none moves anything nor changes the tool length applied (LinuxCNC keeps ``G43``'s length at
+        ``M6``), and what reads them the pass declines: ``G43`` without ``H`` (the tool in the spindle's
+        length), cutter compensation (its diameter), the state parameters (``#5400``, ``#<_current_tool>``)
+        and the tool solids' check (``prover/doubles.py`` declines a machine with tool solids).  M6 moves
+        only on a machine with ``[machine] tool_change_*`` (``Interpreter._tool_change_moves``): declined
+        there.  The numbers are literals (a computed T might not be a whole number: the full path's GC209)."""
+        change = [m for m in ms if m == 6 or m == 61]
+        if len(ts) > 1 or len(qs) > 1 or len(change) > 1 or any(t < 0 for t in ts + qs):
+            raise Declined("a T or Q word twice or not a whole number, or M6 and M61 in a block")
+        if (61 in change) != bool(qs):
+            raise Declined("M61 without Q, or a Q word without M61")
+        if 6 in change and self.tool_moves:
+            raise Declined("M6 on a machine with tool change moves ([machine] tool_change_*)")
+
+    def _dwell_body(self, groups: dict[str, int], others: list[str], axes: bool) -> list[str]:
+        """The code of a block's ``G4 P<seconds>``: a row where the machine is (the full path's ``DWELL``
+        segment), noted as a stop (:meth:`dwelt`).  Declined: P without G4, G4 without P, with axis words,
+        I, J, R or a motion code (LinuxCNC's G4 X is not Fanuc's), a time that is not positive (its exact
+        value may be below 0: the full path's GC209; a double above 0 is an exact value above 0)."""
+        if groups.get("nonmodal") is None:
+            if "P" in others:
+                raise Declined("a word P outside G4")
+            return []
+        if "P" not in others:
+            raise Declined("G4 without P")
+        if axes or "motion" in groups or any(x in "IJR" for x in others):
+            raise Declined("G4 with axis words, I, J, R or a motion code")
+        return [f"if not v[{others.index('P')}] > 0.0: raise D('a dwell time that is not positive')",
+                *(f"C{i}.append(pos[{i}])" for i in range(len(self.axes))),
+                "n = len(C0)", "st.dwelt(n - 1)", f"if n >= {self.rows}: st.full()"]
 
     def _tool_body(self, code: int | None, hs: list[int]) -> list[str]:
         """A block's G43 H<n> or G49 (an H word without G43 is LinuxCNC's error; G43 without H, or with H0,
@@ -1080,6 +1272,34 @@ class _Pass:
         if len(hs) != 1 or hs[0] not in self.lengths:
             raise Declined("G43 without an H register of the machine's [tool_lengths] (or with a tip zone)")
         return [f"st.tool({hs[0]})"]
+
+    def _straight_ends(self, axes: list[tuple[int, int]]) -> list[str]:
+        """The code of a straight move's ends: G90 ``v + off`` (an axis set so ends a G91 chain,
+        :meth:`unchain`), G91 ``x = pos + v`` with the bound ``ERR`` of its error (``_Pass.err``).
+
+        The full path's exact G91 end is ``M + w`` (``Interpreter.program_target``: the machine position plus
+        the word's exact value ``w``; the offsets cancel), the double here ``x = fl(p + d)``.  With
+        ``|p - M| <= e`` (a G90 row's bound, ``(2 |p| + 2 |offset|) 2**-53``, when the chain starts),
+        ``|d - w| <= |d| 2**-53`` (half an ulp) and ``|x - (p + d)| <= |x| 2**-53`` (or half the least
+        subnormal): ``|x - (M + w)| <= e + (|d| + |x|) 2**-53 + 2**-1075``.  The bound is computed with
+        ``2**-52`` (a float sum ``|d| + |x|`` may round down by half an ulp) and each float result moved up by
+        ``nextafter``, which adds at least half the least subnormal: every float here is above the real sum it
+        stands for, so ``e`` bounds the error however long the chain (it grows along it: the row before a
+        chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain)."""
+        named = tuple(i for _k, i in axes)
+        g90 = [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        if not self.g91_text:  # no G91 in the text (_modal_body): no chain
+            return g90
+        inc = []
+        for k, i in axes:
+            inc += [f"x{i} = pos[{i}] + v[{k}]", f"e = ERR[{i}]",
+                    f"if e is None: e = NA((2.0 * abs(pos[{i}]) + {self.offb2[i]!r}) * EPS2, INF)",
+                    f"e = ERR[{i}] = NA(e + NA((abs(v[{k}]) + abs(x{i})) * EPS2, INF), INF)",
+                    f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
+        # one test on the common way (G90, no chain open: ``slow`` false)
+        return ["if st.slow:", "    if st.inc:", *(f"        {b}" for b in inc), "        st.chained = True",
+                "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
+                "else:", *(f"    {b}" for b in g90)]
 
     def _arc_body(self, others: list[str]) -> list[str]:
         """The code that adds the box of the arc just moved (:mod:`.double_arcs`) from ``sa, sb``, or declines."""
@@ -1100,8 +1320,8 @@ class _Pass:
                 # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
                 # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
                 # |t| < |t|: most arcs follow a motion that is not short)
-                f"if BLEND and n > 2 and (-LIM < sa - C{ia}[-3] < LIM or not -1e10 < sa < 1e10) "
-                "and st.tiny(n - 2) and not st.lone(n - 2): "
+                f"if st.blend and n > 2 and (-LIM < sa - C{ia}[-3] < LIM or not -1e10 < sa < 1e10) "
+                "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
                 "AR(st.row0 + n - 1); AB(box)", kind]
@@ -1120,7 +1340,8 @@ class _Pass:
             if not self.arc_axes or any(self.axes[i] not in "XYZ" for i in moved):
                 raise Declined("an arc on axes other than X, Y and Z")
             check = ["if mode is None or mode < 2 or not st.feed > 0.0: "
-                     "raise D('I, J or R without G2 or G3, or without a positive feed')"]
+                     "raise D('I, J or R without G2 or G3, or without a positive feed')",
+                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
             moved = tuple(sorted(set(moved) | set(self.arc_axes)))
         body = ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')", *check,
                 "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
@@ -1129,7 +1350,10 @@ class _Pass:
             ia, ib = self.arc_axes
             body.append(f"sa = pos[{ia}]; sb = pos[{ib}]")
         body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
-        body += [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        if arc:
+            body += [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        else:
+            body += self._straight_ends(axes)
         set_axes = {i for _k, i in axes}
         body += [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
         body.append("n = len(C0)")
@@ -1270,16 +1494,23 @@ def _atan(y: float, x: float) -> float:
 
 
 _CODES: dict[str, int] = {}
+_G61_1 = Fraction(611, 10)
 
 
 def _code(text: str) -> int:
-    """The integer a G or M literal names (``01``, ``1.``, ``1.000``); declines any other."""
+    """The integer a G or M literal names (``01``, ``1.``, ``1.000``; ``61.1`` as -611, :data:`_GROUPS`: G61.1
+    is the only code with a decimal the pass follows); declines any other."""
     c = _CODES.get(text)
     if c is None:
         m = _CODE_TEXT.fullmatch(text)
-        if m is None:
-            raise Declined(f"a code {text}")
-        c = _CODES[text] = int(m.group(1))
+        if m is not None:
+            c = int(m.group(1))
+        else:
+            m = _CODE_TENTH.fullmatch(text)
+            if m is None:
+                raise Declined(f"a code {text}")
+            c = -(10 * int(m.group(1)) + 1)
+        _CODES[text] = c
     return c
 
 
@@ -1293,9 +1524,9 @@ def _const(node: Any) -> str:
 def _const_code(node: Any) -> str:
     """The source of the G or M code of a parsed literal: a whole number, else declined."""
     q = node[2]
-    if q is None or q.denominator != 1 or q < 0:
+    if q is None or q < 0 or (q.denominator != 1 and q != _G61_1):
         raise Declined("a G or M code that is not a whole number")
-    return str(q.numerator)
+    return str(q.numerator) if q.denominator == 1 else str(-q.numerator)  # n.1: -(10 n + 1), as _code
 
 
 def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[str], list[str]]:
