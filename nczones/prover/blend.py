@@ -226,6 +226,8 @@ class CornerCheck:
         # the last corner's last two points and their _ints (a chain of motions shares them with the next corner)
         self._chain: tuple[tuple[Any, Any], tuple[Any, Any]] = ((None, None), (None, None))
         self._facts_mode: PathMode | None = None  # _facts: the last mode asked and its answer
+        self._box_of: Segment | None = None  # _piece_box: the last motion asked and its box
+        self._box_last: Box | None = None
         self._facts_last: tuple[bool, bool, Fraction | None | bool] = (False, False, False)
         self._per_den: dict[int, int] = {}  # _ints: SCALE // d by denominator d
         self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
@@ -477,18 +479,27 @@ class CornerCheck:
                     hi[i] += bound
             return tuple(lo), tuple(hi)
         if bound is None:
-            ba = _half_box(a, self.dogleg, end=True) if _linear(a, self.dogleg) else _piece_box(a)
-            bb = _half_box(b, self.dogleg, end=False) if _linear(b, self.dogleg) else _piece_box(b)
+            ba = _half_box(a, self.dogleg, end=True) if _linear(a, self.dogleg) else self._piece_box(a)
+            bb = _half_box(b, self.dogleg, end=False) if _linear(b, self.dogleg) else self._piece_box(b)
             if ba is None or bb is None:
                 return None
             c = a.end
             return (tuple(x + y - z for x, y, z in zip(ba[0], bb[0], c)),
                     tuple(x + y - z for x, y, z in zip(ba[1], bb[1], c)))
-        pa, pb = _piece_box(a), _piece_box(b)
+        pa, pb = self._piece_box(a), self._piece_box(b)
         if pa is None or pb is None:
             return None
         g = bound or F0
         return tuple(min(x, y) - g for x, y in zip(pa[0], pb[0])), tuple(max(x, y) + g for x, y in zip(pa[1], pb[1]))
+
+    def _piece_box(self, seg: Segment) -> Box | None:
+        """:func:`_piece_box`, kept for the last motion asked (a corner's second motion is the next one's first; an
+        arc's box takes square-root bounds and sweep tests; a Segment is frozen)."""
+        if seg is self._box_of:
+            return self._box_last
+        box = _piece_box(seg)
+        self._box_of, self._box_last = seg, box
+        return box
 
     def _flush(self) -> None:
         """Prove the queued corners: the box of many at once, halves of what does not fit, one by one at last."""
