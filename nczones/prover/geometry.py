@@ -386,9 +386,10 @@ class ArcGeom:
                     (xs if axis == 0 else ys).append(c[1] + r_hi if sgn > 0 else c[0] - r_hi)
         else:
             c = self.centre
-            u = (self.s[0] - c[0], self.s[1] - c[1])
-            w = (self.e[0] - c[0], self.e[1] - c[1])
-            for v, axis, sgn in (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1)):
+            si, ei, ci = _common_scale((self.s, self.e, c))  # the same signs in integers (_common_scale)
+            u = (si[0] - ci[0], si[1] - ci[1])
+            w = (ei[0] - ci[0], ei[1] - ci[1])
+            for v, axis, sgn in _INT_DIRECTIONS:
                 if in_sweep(u, w, v, self.ccw, self.full):
                     (xs if axis == 0 else ys).append(c[axis] + sgn * r_hi)
             if self.r2_lo != self.r2_hi:

@@ -20,8 +20,10 @@ from fractions import Fraction as F
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from nczones.errors import InvalidArgument
 from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover.geometry import arc_geom
+from tests.prover.test_blend_screens import arcs
 
 AXES = ("X", "Y", "Z")
 coord = st.integers(-2000, 2000).map(lambda n: F(n, 100))
@@ -102,3 +104,34 @@ def test_the_integer_sweep_tests_are_the_fraction_ones(sx, sy, ex, ey, extra, cl
     if g.centre is not None:  # R exactly half the chord: a rational centre, the exact tests
         return
     assert g.plane_bbox(sweep=True) == _fraction_sweep_box(g)
+
+
+def _fraction_centre_box(g, bits=64):
+    """``plane_bbox()`` of an arc with a rational centre as computed before full38: the sweep tests on the
+    Fraction vectors from the centre."""
+    from nczones.prover.geometry import in_sweep, sqrt_bounds
+
+    c = g.centre
+    r_hi = sqrt_bounds(g.r2_hi, bits)[1]
+    xs, ys = [g.s[0], g.e[0]], [g.s[1], g.e[1]]
+    u, w = (g.s[0] - c[0], g.s[1] - c[1]), (g.e[0] - c[0], g.e[1] - c[1])
+    for v, axis, sgn in (((F(1), F(0)), 0, 1), ((F(-1), F(0)), 0, -1), ((F(0), F(1)), 1, 1), ((F(0), F(-1)), 1, -1)):
+        if in_sweep(u, w, v, g.ccw, g.full):
+            (xs if axis == 0 else ys).append(c[axis] + sgn * r_hi)
+    if g.r2_lo != g.r2_hi:
+        gap = 2 * (r_hi - sqrt_bounds(g.r2_lo, bits)[0])
+        return (min(xs) - gap, max(xs) + gap), (min(ys) - gap, max(ys) + gap)
+    return (min(xs), max(xs)), (min(ys), max(ys))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.data())
+def test_the_integer_sweep_tests_of_a_rational_centre(data):
+    """Arcs about a rational centre (circles, spirals, whole turns) from tests/prover/test_blend_screens.py."""
+    seg = data.draw(arcs())
+    try:
+        g = arc_geom(seg)
+    except InvalidArgument:  # a zero radius
+        return
+    assert g.plane_bbox() == _fraction_centre_box(g)
+    assert g.plane_bbox(sweep=True) == _fraction_centre_box(g)
