@@ -2432,7 +2432,7 @@ class Interpreter:
             self.cycle_il = self.cycle_il - self.off[self._cycle_il_axis] + self.off[ic]
             self._cycle_il_axis = ic
         old_cc, old_d = self.cycle_il, self._cycle_il_deps if track else nodeps
-        il_prog_mm = old_cc - self.off[ic]  # LinuxCNC's old_cc (program coordinates) for G91's R
+        il_cc = old_cc  # LinuxCNC's old_cc (minus the offset: program coordinates) for G91's R, read by pecks
         wd = {self.axes[i]: aw for i, aw in axis_words}
         if self.absolute:
             inc_a = inc_b = _ZERO
@@ -2490,7 +2490,7 @@ class Interpreter:
             if motion in (730, 830):
                 assert delta is not None  # Q read above for G73/G83
                 depth = r - delta
-                pecks = None if track else self._linuxcnc_pecks(rprog, cprog, il_prog_mm)
+                pecks = None if track else self._linuxcnc_pecks(rprog, cprog, il_cc - self.off[ic])
                 if pecks is not None and self.too_many(name, f"{name} Q{fmt_number(self.cycle_q or _ZERO)} (one "
                                                        "peck per Q)", pecks):
                     return
