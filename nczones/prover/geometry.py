@@ -34,6 +34,12 @@ from ..machine import Machine, RapidMode
 from ..motion import PLANE_AXES, Segment, SegmentKind
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
+# not typing's (start-up): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    #: a vector of the sweep tests: Fractions, or integers (the points times a common denominator, _common_scale)
+    _SweepVec = tuple[Fraction | int, Fraction | int]
+
 __all__ = [
     "LinePiece",
     "ArcGeom",
@@ -194,15 +200,15 @@ def atan_bounds(x: Fraction, bits: int = ENCLOSURE_BITS) -> tuple[Fraction, Frac
 # --------------------------------------------------------------------------- arcs
 
 
-def _cross(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> Fraction:
+def _cross(u: _SweepVec, v: _SweepVec) -> Fraction | int:
     return u[0] * v[1] - u[1] * v[0]
 
 
-def _dot(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> Fraction:
+def _dot(u: _SweepVec, v: _SweepVec) -> Fraction | int:
     return u[0] * v[0] + u[1] * v[1]
 
 
-def in_sweep(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw: bool, full: bool) -> bool:
+def in_sweep(u: _SweepVec, w: _SweepVec, v: _SweepVec, ccw: bool, full: bool) -> bool:
     """Does direction ``v`` lie in the sweep from ``u`` to ``w`` (closed)?
 
     Directions are vectors from the centre; ``u`` and ``w`` need not have the
@@ -225,8 +231,7 @@ def in_sweep(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], v: tupl
 _DIRECTIONS = (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1))
 
 
-def _sweep_may_hold(s: tuple[Fraction, Fraction], e: tuple[Fraction, Fraction],
-                    ends: list[tuple[Fraction, Fraction]], v: tuple[Fraction, Fraction], ccw: bool) -> bool:
+def _sweep_may_hold(s: _SweepVec, e: _SweepVec, ends: Sequence[_SweepVec], v: _SweepVec, ccw: bool) -> bool:
     """May direction ``v`` lie in the sweep of the arc from ``s`` to ``e`` (not a whole turn) about a centre
     somewhere on the segment between the two points ``ends``?  False only when it cannot.
 
@@ -278,13 +283,13 @@ def _common_scale(points: Sequence[tuple[Fraction, Fraction]]) -> list[tuple[int
     return [(x.numerator * (d // x.denominator), y.numerator * (d // y.denominator)) for x, y in points]
 
 
-def _half(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> int:
+def _half(u: _SweepVec, v: _SweepVec) -> int:
     """0 when the ccw angle from u to v is in [0, pi), else 1."""
     c = _cross(u, v)
     return 0 if c > 0 or (c == 0 and _dot(u, v) > 0) else 1
 
 
-def _angle_le(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction]) -> bool:
+def _angle_le(u: _SweepVec, v: _SweepVec, w: _SweepVec) -> bool:
     """ccw angle(u -> v) <= ccw angle(u -> w), angles in [0, 2 pi)."""
     hv, hw = _half(u, v), _half(u, w)
     if hv != hw:
