@@ -362,10 +362,10 @@ class ArcGeom:
         extremes its sweep may reach (:func:`_sweep_may_hold`; the Fanuc hull and box route use it).  The
         per-motion solver query keeps the whole circle (a tighter enclosure changes which queries are hard:
         tests/prover/test_limits.py's stand-in for "a query that cannot finish" needs it)."""
-        if self.centre is None:  # centre_bounds, with the R-format parts kept for the sweep below
-            parts = self.r_format_parts()
-            k_bounds = sqrt_bounds(parts[4], bits)
-            (cxl, cxh), (cyl, cyh) = _r_centre_bounds(parts, k_bounds)
+        if self.centre is None:  # centre_bounds: the centre's two bounding points, kept for the sweep below
+            mx, my, nx, ny, q, sign = self.r_format_parts()
+            ends = [(mx + sign * k * nx, my + sign * k * ny) for k in sqrt_bounds(q, bits)]
+            (cxl, cxh), (cyl, cyh) = (tuple(sorted(p[axis] for p in ends)) for axis in (0, 1))
         else:
             (cxl, cxh), (cyl, cyh) = self.centre_bounds(bits)
         if self.centre is None:
@@ -382,8 +382,6 @@ class ArcGeom:
         elif self.centre is None:
             # the exact centre lies on the segment between two rational points (the R-format centre M + k n, k
             # between sqrt_bounds of q): a direction's extreme is left out only where that settles the sweep
-            mx, my, nx, ny, _q, sign = parts
-            ends = [(mx + sign * k * nx, my + sign * k * ny) for k in k_bounds]
             (s, e, *ends), axes = _common_scale((self.s, self.e, *ends)), _INT_DIRECTIONS
             for v, axis, sgn in axes:
                 if _sweep_may_hold(s, e, ends, v, self.ccw):
