@@ -30,6 +30,10 @@ modules are imported; their import time is printed on its own), for
 * a generated drilling program (``--drill-lines`` hole lines ``X.. Y..``
   under G81/G82 cycles, each cycle opened by its full block and closed by
   G80), fast path and full interpreter.
+
+The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_program`, :func:`comp_program` and
+:func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
+``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost").
 """
 
 from __future__ import annotations
@@ -216,6 +220,77 @@ def declined_program(n: int, seed: int = 19) -> str:
     text = expr_program(n, seed)
     head, rest = text.split("\n", 1)
     return f"{head}\nS1000 M3\nG91.1\n{rest}"
+
+
+def g91_program(n: int, seed: int = 23) -> str:
+    """About ``n`` lines of relative moves (G91) whose words are expressions (``G1 X[#1 + 0.05] Y[#2 * -0.3]``),
+    ``#1`` negated every tenth line: a parametric program the double pass declines (G91), read by the full path."""
+    rnd = random.Random(seed)
+    out = ["G21 G91 G17 G54 F800", "#1 = 0.5", "#2 = 0.25"]
+    while len(out) < n - 1:
+        if len(out) % 10 == 0:
+            out.append("#1 = [0 - #1]")
+        else:
+            out.append(f"G1 X[#1 + {rnd.uniform(-0.1, 0.1):.3f}] Y[#2 * {rnd.uniform(-1, 1):.3f}]")
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def g20_program(n: int, seed: int = 41) -> str:
+    """:func:`expr_program` in inches (G20, which the double pass declines), its moves within 4 inches."""
+    rnd = random.Random(seed)
+    out = ["G20 G90 G17 G54 F30", "#1 = 0", "#2 = 0"]
+    while len(out) < n - 1:
+        if len(out) % 10 == 0:
+            out.append(f"#1 = [#1 + {rnd.uniform(0, 0.01):.4f}]")
+        else:
+            out.append(f"G1 X[#1 + {rnd.uniform(0, 4):.4f}] Y[#2 + {rnd.uniform(0, 4):.4f}]")
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def drill_expr_program(n: int, seed: int = 31) -> str:
+    """About ``n`` lines of G81 holes whose X is an expression (``X[#1 + 123.456] Y78.9``), 1000 a cycle (a
+    canned cycle: the double pass declines; three motions a hole)."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54", "G43 H1 G0 Z20", "G0 X0 Y0", "F300", "#1 = 10"]
+    while len(out) < n - 1:
+        out.append("G99 G81 X1.000 Y1.000 Z-3 R2")
+        for _ in range(min(1000, n - 2 - len(out))):
+            out.append(f"X[#1 + {rnd.uniform(0, 400):.3f}] Y{rnd.uniform(0, 300):.3f}")
+        out.append("G80")
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def comp_program(n: int, seed: int = 29) -> str:
+    """About ``n`` lines of a G41 contour (cutter compensation, tool T1: a machine with ``cutter_compensation =
+    "linuxcnc"`` and ``[tool_diameters]``), X up by 10 a line, Y an expression: LinuxCNC's corner arcs at every
+    convex corner (spirals about a rational centre: their ends rounded)."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54 F800", "T1 M6", "#1 = 0", "G0 X0 Y0", "G41 G1 X5 Y0"]
+    x = 5.0
+    while len(out) < n - 2:
+        x += 10
+        out.append(f"X{x:.3f} Y[#1 + {rnd.uniform(0, 3):.3f}]")
+    out += ["G40 G0 X0 Y0", "M30"]
+    return "\n".join(out) + "\n"
+
+
+def g18_program(n: int, seed: int = 37) -> str:
+    """About ``n`` lines in G18: a G1 with an expression, then an R-format G2 (an irrational centre), in turn."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G18 G54 F800", "#1 = 0", "G0 X0 Z0"]
+    x = 0.0
+    while len(out) < n - 1:
+        if len(out) % 2:
+            x += 1
+            out.append(f"G1 X{x:.3f} Z[#1 + {rnd.uniform(0, 1):.3f}]")
+        else:
+            out.append(f"G2 X{x + 1:.3f} Z0 R2")
+            x += 1
+    out.append("M30")
+    return "\n".join(out) + "\n"
 
 
 def drill_program(n: int, seed: int = 3) -> str:

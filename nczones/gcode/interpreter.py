@@ -88,6 +88,12 @@ if TYPE_CHECKING:
 
 _NAME_PENDING = "NURBS"
 
+# The members of SegmentKind and Plane as plain names: reading a member off an Enum class costs about 0.25 us in
+# Python 3.11 (the metaclass's ``__getattr__`` turns off the interpreter's quick attribute path), and a canned
+# cycle's block reads a dozen of them
+_LINE, _ARC, _RAPID, _DWELL = SegmentKind.LINE, SegmentKind.ARC, SegmentKind.RAPID, SegmentKind.DWELL
+_XY, _XZ, _YZ = Plane.XY, Plane.XZ, Plane.YZ
+
 __all__ = [
     "Interpreter",
     "Unsupported",
@@ -371,7 +377,7 @@ class Interpreter:
         self.inch = "G20" in modal
         self.absolute = "G91" not in modal
         self.arc_absolute = False  # G91.1 (LinuxCNC default)
-        self.plane = Plane.XZ if "G18" in modal else Plane.YZ if "G19" in modal else Plane.XY
+        self.plane = _XZ if "G18" in modal else _YZ if "G19" in modal else _XY
         self.wcs = next((c for c in machine.modal if c in WORK_OFFSETS), "G54")
         self.feed_mode = 93 if "G93" in modal else 95 if "G95" in modal else 94
         self.motion: int | None = None
@@ -1187,12 +1193,12 @@ class Interpreter:
             if self._comp is not None:
                 self._comp.dwell(p.value)
             else:
-                self.emit(SegmentKind.DWELL, list(self.pos), dwell=p.value)
+                self.emit(_DWELL, list(self.pos), dwell=p.value)
         # 11: plane
         if 2 in groups:
             k = groups[2][0]
             if k in (170, 180, 190):
-                self.plane = {170: Plane.XY, 180: Plane.XZ, 190: Plane.YZ}[k]
+                self.plane = {170: _XY, 180: _XZ, 190: _YZ}[k]
             self.unset.discard("plane")
         # 12: units
         if 6 in groups:
@@ -1501,14 +1507,14 @@ class Interpreter:
                 end[i] = qadd(end[i], values[k])
         fmm = None
         if self.motion == 10:
-            kind = SegmentKind.LINE
+            kind = _LINE
             if self.feed_mode == 94:
                 feed: Any = self.feed  # a Fraction, read through its slots
                 if feed._numerator == 0:
                     self.check_feed()
                 fmm = _qinch(self.feed) if inch else self.feed
         else:
-            kind = SegmentKind.RAPID
+            kind = _RAPID
         end = tuple(end)
         fr = self._frame
         if fr is None or self._frame_off is not self.off:
@@ -1759,7 +1765,7 @@ class Interpreter:
         ix, iy = self._ix, self._iy
         if "X" in words or "Y" in words:
             raise self.error("GC205", "polar coordinates (@, ^) cannot be given with an X or Y word", w)
-        if self.plane is not Plane.XY:
+        if self.plane is not _XY:
             raise self.error("GC205", "polar coordinates (@, ^) are allowed in the G17 plane only", w)
         if g53:
             raise self.error("GC207", "polar coordinates (@, ^) cannot be used with G53", w)
@@ -1869,15 +1875,15 @@ class Interpreter:
             end, deps = self.program_target(axis_words, g53)
             if motion == 0:
                 if self._comp is not None and self._comp.active:
-                    self._comp.straight(SegmentKind.RAPID, end, deps)
+                    self._comp.straight(_RAPID, end, deps)
                 else:
-                    self.emit(SegmentKind.RAPID, end, end_deps=deps)
+                    self.emit(_RAPID, end, end_deps=deps)
             else:
                 self.check_feed()
                 if self._comp is not None and self._comp.active:
-                    self._comp.straight(SegmentKind.LINE, end, deps)
+                    self._comp.straight(_LINE, end, deps)
                 else:
-                    self.emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
+                    self.emit(_LINE, end, feed=True, end_deps=deps)
         elif motion in (20, 30) and self._comp is not None and self._comp.active:
             self._comp.arc(block, axis_words, words, motion == 20)
         elif motion in (20, 30):
@@ -1944,12 +1950,12 @@ class Interpreter:
         u0 = list(self.prerotation_xy) if self.prerotation_xy is not None else None
         end, deps = self.program_target(axis_words, False)
         if motion == 330:
-            self.emit(SegmentKind.LINE, end, derived="G33 thread", end_deps=deps)
+            self.emit(_LINE, end, derived="G33 thread", end_deps=deps)
             return
         sdeps = [dict(d) for d in self.dep_pos] if self.track else None
-        self.emit(SegmentKind.LINE, end, derived="G33.1 tap", end_deps=deps)
+        self.emit(_LINE, end, derived="G33.1 tap", end_deps=deps)
         self.prerotation_xy_next = u0
-        self.emit(SegmentKind.LINE, list(actual) if actual is not None else start, derived="G33.1 retract",
+        self.emit(_LINE, list(actual) if actual is not None else start, derived="G33.1 retract",
                   end_deps=sdeps)
         if actual is not None:
             self.pos = start
@@ -1993,7 +1999,7 @@ class Interpreter:
         end, deps = self.program_target(axis_words, False)
         rotated = self.prerotation_xy is not None
         if rotated:
-            if plane is not Plane.XY:
+            if plane is not _XY:
                 self.unknown(f"G{int(plane)} arc", f"an arc in plane G{int(plane)} of a rotated coordinate system "
                               "(G10 L2 R) lies in a plane that is no machine plane; not modelled")
                 return
@@ -2034,10 +2040,10 @@ class Interpreter:
                 centre = ((sa + ea) / 2, (sb + eb) / 2)
                 if rotated:
                     centre = self._rot_fwd(*centre)
-                self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
+                self.emit(_ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
                            turns=turns, end_deps=deps)
             else:
-                self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, radius=r,
+                self.emit(_ARC, end, feed=True, plane=plane, clockwise=cw, radius=r,
                            turns=turns, end_deps=deps)
             return
         iw, jw = words.get(la), words.get(lb)
@@ -2064,7 +2070,7 @@ class Interpreter:
                 iw or jw,
             )
         centre = self._rot_fwd(ca, cb) if rotated else (ca, cb)
-        self.emit(SegmentKind.ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
+        self.emit(_ARC, end, feed=True, plane=plane, clockwise=cw, centre=centre,
                    turns=turns, end_deps=deps)
 
     def _r_arc_tolerance(self) -> Fraction:
@@ -2107,13 +2113,13 @@ class Interpreter:
             deps = [dict(d) for d in self.dep_pos] if self.track else None
             if deps is not None:
                 deps[iz] = {}
-            self.emit(SegmentKind.RAPID, end, derived="M6 quill up (TOOL_CHANGE_QUILL_UP)", end_deps=deps)
+            self.emit(_RAPID, end, derived="M6 quill up (TOOL_CHANGE_QUILL_UP)", end_deps=deps)
         if getattr(m, "tool_change_at_g30", False):
             home = self.home[300]
             end = list(home)
             deps = [dict(d) for d in self.dep_home[300]] if self.track else None
             self._machine_xy(end)
-            self.emit(SegmentKind.RAPID, end, derived="M6 to the G30 position (TOOL_CHANGE_AT_G30)", end_deps=deps)
+            self.emit(_RAPID, end, derived="M6 to the G30 position (TOOL_CHANGE_AT_G30)", end_deps=deps)
         position = getattr(m, "tool_change_position", None)
         if position:
             end = list(self.pos)
@@ -2123,7 +2129,7 @@ class Interpreter:
                 end[i] = v
                 if deps is not None:
                     deps[i] = {}
-            self.emit(SegmentKind.RAPID, end, derived="M6 to the tool change position (TOOL_CHANGE_POSITION)",
+            self.emit(_RAPID, end, derived="M6 to the tool change position (TOOL_CHANGE_POSITION)",
                       end_deps=deps)
 
     def tool_length_units_stale(self, what: str, w: Word | None) -> bool:
@@ -2143,7 +2149,7 @@ class Interpreter:
     def _home(self, k: int, axis_words: list[tuple[int, Word]], w: Word) -> None:
         self.note_assumed(("units", "distance", "offset"))
         inter, deps = self.program_target(axis_words, False)
-        self.emit(SegmentKind.RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
+        self.emit(_RAPID, inter, derived=f"{gname(k)} intermediate", end_deps=deps)
         if (not axis_words or any(i == self.tool_axis for i, _ in axis_words)) \
                 and self.tool_length_units_stale(f"{gname(k)} (its home move of the tool axis)", w):
             return
@@ -2163,7 +2169,7 @@ class Interpreter:
             if hdeps is not None:
                 hdeps[i] = dict(self.dep_home[k][i])
         self._machine_xy(end)
-        self.emit(SegmentKind.RAPID, end, derived=f"{gname(k)} home", end_deps=hdeps)
+        self.emit(_RAPID, end, derived=f"{gname(k)} home", end_deps=hdeps)
 
     def _g10(self, words: dict[str, Word], axis_words: list[tuple[int, Word]], w: Word) -> None:
         lw, pw = words.get("L"), words.get("P")
@@ -2359,7 +2365,7 @@ class Interpreter:
         if motion in (840, 860):
             self._spindle_turning(gname(motion), 1 if motion == 840 else None)
         self.note_assumed(("retract",))
-        swapped = motion == 840 and plane is not Plane.XY
+        swapped = motion == 840 and plane is not _XY
         if swapped and self.track:
             self.unknown("G84", "parameter ranges are not supported with G84 outside G17")
         first = self.last_cycle != motion
@@ -2426,7 +2432,7 @@ class Interpreter:
             self.cycle_il = self.cycle_il - self.off[self._cycle_il_axis] + self.off[ic]
             self._cycle_il_axis = ic
         old_cc, old_d = self.cycle_il, self._cycle_il_deps if track else nodeps
-        il_prog_mm = old_cc - self.off[ic]  # LinuxCNC's old_cc (program coordinates) for G91's R
+        il_cc = old_cc  # LinuxCNC's old_cc (minus the offset: program coordinates) for G91's R, read by pecks
         wd = {self.axes[i]: aw for i, aw in axis_words}
         if self.absolute:
             inc_a = inc_b = _ZERO
@@ -2460,11 +2466,11 @@ class Interpreter:
                 if not here:
                     deps[ia], deps[ib] = dict(a_d), dict(b_d)
                 deps[ic] = dict(c[1])
-            self.emit(kind, end, feed=kind is SegmentKind.LINE, derived=derived, end_deps=deps)
+            self.emit(kind, end, feed=kind is _LINE, derived=derived, end_deps=deps)
 
         name = gname(motion)
         if lt((old_cc, old_d), (r, r_d), ic, "the initial level is below R"):
-            go(SegmentKind.RAPID, self.pos[ia], self.pos[ib], (r, r_d), f"{name} up to R", here=True)
+            go(_RAPID, self.pos[ia], self.pos[ib], (r, r_d), f"{name} up to R", here=True)
             old_cc, old_d = r, r_d
             current_cc, current_d = r, r_d
         clear = (r, r_d) if self.retract_r else (old_cc, old_d)
@@ -2475,16 +2481,16 @@ class Interpreter:
                 aa = qadd(aa, inc_a)
                 bb = qadd(bb, inc_b)
             if rep == 0 and lt((r, r_d), (current_cc, current_d), ic, "R is below the current level"):
-                go(SegmentKind.RAPID, aa, bb, (current_cc, current_d), f"{name} position")
-                go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} to R")
+                go(_RAPID, aa, bb, (current_cc, current_d), f"{name} position")
+                go(_RAPID, aa, bb, (r, r_d), f"{name} to R")
             else:
-                go(SegmentKind.RAPID, aa, bb, clear, f"{name} position")
+                go(_RAPID, aa, bb, clear, f"{name} position")
                 if lt((r, r_d), clear, ic, "R is below the clear level"):
-                    go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} to R")
+                    go(_RAPID, aa, bb, (r, r_d), f"{name} to R")
             if motion in (730, 830):
                 assert delta is not None  # Q read above for G73/G83
                 depth = r - delta
-                pecks = None if track else self._linuxcnc_pecks(rprog, cprog, il_prog_mm)
+                pecks = None if track else self._linuxcnc_pecks(rprog, cprog, il_cc - self.off[ic])
                 if pecks is not None and self.too_many(name, f"{name} Q{fmt_number(self.cycle_q or _ZERO)} (one "
                                                        "peck per Q)", pecks):
                     return
@@ -2497,25 +2503,25 @@ class Interpreter:
                         return
                     if pecks is not None:
                         pecks -= 1
-                    go(SegmentKind.LINE, aa, bb, (depth, r_d), f"{name} peck")
+                    go(_LINE, aa, bb, (depth, r_d), f"{name} peck")
                     if motion == 830:  # back out to R, not to the clear level (LinuxCNC convert_cycle_g83)
-                        go(SegmentKind.RAPID, aa, bb, (r, r_d), f"{name} clear")
-                    go(SegmentKind.RAPID, aa, bb, (depth + G83_RAPID_DELTA_MM, r_d), f"{name} back off")
+                        go(_RAPID, aa, bb, (r, r_d), f"{name} clear")
+                    go(_RAPID, aa, bb, (depth + G83_RAPID_DELTA_MM, r_d), f"{name} back off")
                     depth -= delta
             if swapped:
                 self._g84_swapped(plane, ia, ib, ic, aa, bb, cc, clear[0], dwell)
                 continue
-            go(SegmentKind.LINE, aa, bb, (cc, cc_d), f"{name} feed")
+            go(_LINE, aa, bb, (cc, cc_d), f"{name} feed")
             if dwell is not None:
-                self.emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
+                self.emit(_DWELL, list(self.pos), dwell=dwell, derived=f"{name} dwell")
             if motion == 850:  # feed out to R only, then rapid to the clear level (LinuxCNC convert_cycle_g85)
-                go(SegmentKind.LINE, aa, bb, (r, r_d), f"{name} retract")
+                go(_LINE, aa, bb, (r, r_d), f"{name} retract")
                 if clear[0] != r:
-                    go(SegmentKind.RAPID, aa, bb, clear, f"{name} clear")
+                    go(_RAPID, aa, bb, clear, f"{name} clear")
             elif motion in (840, 890):
-                go(SegmentKind.LINE, aa, bb, clear, f"{name} retract")
+                go(_LINE, aa, bb, clear, f"{name} retract")
             else:
-                go(SegmentKind.RAPID, aa, bb, clear, f"{name} retract")
+                go(_RAPID, aa, bb, clear, f"{name} retract")
         self.cycle_cc = cprog
         self.cycle_r = rprog
         self.last_cycle = motion
@@ -2604,15 +2610,15 @@ class Interpreter:
 
         def point(c_mm):
             a, b, c = prog[ia], prog[ib], c_mm - self.off[ic]
-            x, y, z = (c, a, b) if plane is Plane.XZ else (b, c, a)
+            x, y, z = (c, a, b) if plane is _XZ else (b, c, a)
             end = list(self.pos)
             end[ix], end[iy], end[iz] = x + self.off[ix], y + self.off[iy], z + self.off[iz]
             return end
 
-        self.emit(SegmentKind.LINE, point(cc), feed=True, derived="G84 feed (LinuxCNC axis order outside G17)")
+        self.emit(_LINE, point(cc), feed=True, derived="G84 feed (LinuxCNC axis order outside G17)")
         if dwell is not None:
-            self.emit(SegmentKind.DWELL, list(self.pos), dwell=dwell, derived="G84 dwell")
-        self.emit(SegmentKind.LINE, point(clear), feed=True, derived="G84 retract (LinuxCNC axis order outside G17)")
+            self.emit(_DWELL, list(self.pos), dwell=dwell, derived="G84 dwell")
+        self.emit(_LINE, point(clear), feed=True, derived="G84 retract (LinuxCNC axis order outside G17)")
         actual = tuple(self.pos)
         believed = list(self.pos)
         believed[ia], believed[ib], believed[ic] = aa, bb, clear

@@ -29,6 +29,7 @@ import time
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
 from fractions import Fraction
+from operator import itemgetter
 
 from ..errors import InvalidArgument
 from ..exact import format_decimal
@@ -54,6 +55,10 @@ if TYPE_CHECKING:
     from typing import Any
 
 __all__ = ["BLEND_CODE", "CornerCheck"]
+
+# SegmentKind's members as plain names: reading a member off an Enum class costs about 0.25 us in Python 3.11 (the
+# metaclass's ``__getattr__`` turns off the interpreter's quick attribute path), and this module reads several a motion
+_LINE, _ARC, _RAPID, _DWELL = SegmentKind.LINE, SegmentKind.ARC, SegmentKind.RAPID, SegmentKind.DWELL
 
 #: The code of every reason this module gives.
 BLEND_CODE = "VF208"
@@ -92,7 +97,7 @@ Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
 #: the most points of a Fanuc run on a two-axis machine kept for its convex hull (beyond: its box decides)
 HULL_POINTS = 100_000
 #: the motion kinds the column screen takes (others: the exact path, one motion at a time)
-_SIMPLE = frozenset((SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC, SegmentKind.DWELL))
+_SIMPLE = frozenset((_LINE, _RAPID, _ARC, _DWELL))
 #: the tip offsets of motions without any (CornerCheck._shifts)
 _NO_SHIFT: frozenset[tuple[tuple[str, Fraction], ...]] = frozenset({()})
 
@@ -124,9 +129,36 @@ def _same(p: Sequence[Any], q: Sequence[Any]) -> bool:
     if p is q:
         return True
     try:
-        return all(x._numerator == y._numerator and x._denominator == y._denominator for x, y in zip(p, q, strict=True))
+        for x, y in zip(p, q, strict=True):
+            if x is not y and (x._numerator != y._numerator or x._denominator != y._denominator):
+                return False
+        return True
     except AttributeError:
         return tuple(p) == tuple(q)
+
+
+_SHORT_NUM, _SHORT_DEN = DROPPED_BELOW.numerator, DROPPED_BELOW.denominator
+
+
+def _short(p: Sequence[Any], q: Sequence[Any]) -> bool:
+    """Is ``|q_i - p_i| < DROPPED_BELOW`` on every axis?  Exactly that test, in integers: with ``x = a/b`` and
+    ``y = c/d`` (``b, d > 0``), ``|y - x| < n/m`` is ``|c b - a d| m < n b d``; an operand that is not a
+    Fraction (an int) takes Fraction arithmetic."""
+    for x, y in zip(p, q):
+        if x is y:
+            continue
+        try:
+            a, b, c, d = x._numerator, x._denominator, y._numerator, y._denominator
+        except AttributeError:
+            if not abs(y - x) < DROPPED_BELOW:
+                return False
+            continue
+        if b == d:
+            if abs(c - a) * _SHORT_DEN >= _SHORT_NUM * b:
+                return False
+        elif abs(c * b - a * d) * _SHORT_DEN >= _SHORT_NUM * b * d:
+            return False
+    return True
 
 
 def _range_widening(ranges: Sequence[ParamRange], axes: Sequence[str], tool_axis: str | None) -> dict[str, Fraction]:
@@ -190,8 +222,13 @@ class CornerCheck:
         budget = getattr(limits, "budget_s", None)
         self.refine_cap = REFINE_SHARE * budget if budget else 60.0  # seconds of corner proofs at most
         self.refine_s = 0.0
-        self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, integer lo, hi, bound)
-        self._int_cache: dict[int, Any] = {}
+        self.pending: list[Any] = []  # corners screened together: (a, b, mode, box, its 3 points' _ints, None, bound)
+        # the last corner's last two points and their _ints (a chain of motions shares them with the next corner)
+        self._chain: tuple[tuple[Any, Any], tuple[Any, Any]] = ((None, None), (None, None))
+        self._facts_mode: PathMode | None = None  # _facts: the last mode asked and its answer
+        self._box_of: Segment | None = None  # _piece_box: the last motion asked and its box
+        self._box_last: Box | None = None
+        self._facts_last: tuple[bool, bool, Fraction | None | bool] = (False, False, False)
         self._per_den: dict[int, int] = {}  # _ints: SCALE // d by denominator d
         self._arc_cache: dict[Any, Box | None] = {}  # exact boxes of repeated arcs (_arc_box)
         self.prev: Segment | None = None
@@ -278,12 +315,12 @@ class CornerCheck:
     # ------------------------------------------------------------------ one motion at a time (exact)
     def _segment(self, seg: Segment) -> None:
         kind = seg.kind
-        if kind is SegmentKind.DWELL:
+        if kind is _DWELL:
             self._stop()
             return
-        if kind is not SegmentKind.ARC and _same(seg.start, seg.end):
+        if kind is not _ARC and _same(seg.start, seg.end):
             return  # a move of length 0: LinuxCNC's canon drops it, no corner
-        if kind is SegmentKind.RAPID and self.dogleg:
+        if kind is _RAPID and self.dogleg:
             # a dogleg rapid is positioning with an in-position check at both ends (specs/path-modes.md)
             self._stop()
             self.prev = seg
@@ -330,7 +367,7 @@ class CornerCheck:
     def _run_motion(self, seg: Segment, mode: PathMode) -> None:
         """A motion in a Fanuc run (cutting mode without a tolerance): the run's box grows to hold it."""
         st = self.stretch
-        if st is not None and seg.start is st[3].end and seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
+        if st is not None and seg.start is st[3].end and seg.kind in (_LINE, _RAPID):
             # a straight motion from where the run's last motion ended (in the box already): its end alone
             _grow_point(st, seg.end)
             self._stretch_tl(st[3], seg)
@@ -365,32 +402,43 @@ class CornerCheck:
 
         The common corner (two straight motions, LinuxCNC) is kept as integers (``SCALE``) on the zones'
         axes: the box of its three points, grown by the mode's bound when it has one."""
-        if _naive_only(mode):
+        naive, fanuc_run, int_bound = self._facts(mode)
+        if naive:
             self.naive.pending.append((a, b, mode, self.naive.count - 2))
             return
-        if mode.dialect == "fanuc" and mode.tolerance is None:  # the run's hull proves it (_close_stretch)
+        if fanuc_run:  # the run's hull proves it (_close_stretch)
             self.corners += 1
             return
-        if mode.dialect == "linuxcnc" and _linear(a, self.dogleg) and _linear(b, self.dogleg) and _same(b.start, a.end):
-            bound = mode.bound()
-            if bound is not None or not mode.naive:
-                p0, p1, p2 = self._ints(a.start), self._ints(a.end), self._ints(b.end)
-                if p0 is not None and p1 is not None and p2 is not None:
-                    self.pending.append((a, b, mode, None, list(map(min, p0, p1, p2)), list(map(max, p0, p1, p2)),
-                                         bound or None))
-                    return
+        if int_bound is not False and _linear(a, self.dogleg) and _linear(b, self.dogleg) and _same(b.start, a.end):
+            # the points of the corner before (a chain of motions: its two ends are this one's first two points)
+            (q0, i0), (q1, i1) = self._chain
+            p0 = i0 if q0 is a.start else self._ints(a.start)
+            p1 = i1 if q1 is a.end else self._ints(a.end)
+            p2 = self._ints(b.end)
+            self._chain = ((a.end, p1), (b.end, p2))
+            if p0 is not None and p1 is not None and p2 is not None:
+                self.pending.append((a, b, mode, None, (p0, p1, p2), None, int_bound))
+                return
         box = self._screen_box(a, b, mode)
         if box is None:
             self._corner(a, b, mode)
         else:
             self.pending.append((a, b, mode, box, None, None, None))
 
+    def _facts(self, mode: PathMode) -> tuple[bool, bool, Fraction | None | bool]:
+        """What :meth:`_queue` asks of ``mode`` (kept for the last mode asked: a frozen value): G64 Q without P (the
+        merging windows prove the corner), a Fanuc run's corner (its hull does), and the bound the integer screen
+        grows a LinuxCNC corner of two straight motions by (None: none; False: that screen is not for this mode)."""
+        if mode is self._facts_mode:
+            return self._facts_last
+        bound = mode.bound()
+        facts = (_naive_only(mode), mode.dialect == "fanuc" and mode.tolerance is None,
+                 (bound or None) if mode.dialect == "linuxcnc" and (bound is not None or not mode.naive) else False)
+        self._facts_mode, self._facts_last = mode, facts
+        return facts
+
     def _ints(self, p: tuple[Fraction, ...]) -> list[int] | None:
         """``p`` on the zones' axes times ``SCALE`` (None when a coordinate is not a multiple of 1/SCALE)."""
-        got = self._int_cache.get(id(p))
-        if got is not None and got[0] is p:
-            cached: list[int] = got[1]
-            return cached
         out = []
         per = self._per_den  # SCALE // d by denominator d (0: d does not divide SCALE)
         for i in self.rel:
@@ -405,7 +453,6 @@ class CornerCheck:
             if not m:
                 return None
             out.append(num * m)
-        self._int_cache[id(p)] = (p, out)
         return out
 
     def _screen_box(self, a: Segment, b: Segment, mode: PathMode) -> Box | None:
@@ -432,23 +479,31 @@ class CornerCheck:
                     hi[i] += bound
             return tuple(lo), tuple(hi)
         if bound is None:
-            ba = _half_box(a, self.dogleg, end=True) if _linear(a, self.dogleg) else _piece_box(a)
-            bb = _half_box(b, self.dogleg, end=False) if _linear(b, self.dogleg) else _piece_box(b)
+            ba = _half_box(a, self.dogleg, end=True) if _linear(a, self.dogleg) else self._piece_box(a)
+            bb = _half_box(b, self.dogleg, end=False) if _linear(b, self.dogleg) else self._piece_box(b)
             if ba is None or bb is None:
                 return None
             c = a.end
             return (tuple(x + y - z for x, y, z in zip(ba[0], bb[0], c)),
                     tuple(x + y - z for x, y, z in zip(ba[1], bb[1], c)))
-        pa, pb = _piece_box(a), _piece_box(b)
+        pa, pb = self._piece_box(a), self._piece_box(b)
         if pa is None or pb is None:
             return None
         g = bound or F0
         return tuple(min(x, y) - g for x, y in zip(pa[0], pb[0])), tuple(max(x, y) + g for x, y in zip(pa[1], pb[1]))
 
+    def _piece_box(self, seg: Segment) -> Box | None:
+        """:func:`_piece_box`, kept for the last motion asked (a corner's second motion is the next one's first; an
+        arc's box takes square-root bounds and sweep tests; a Segment is frozen)."""
+        if seg is self._box_of:
+            return self._box_last
+        box = _piece_box(seg)
+        self._box_of, self._box_last = seg, box
+        return box
+
     def _flush(self) -> None:
         """Prove the queued corners: the box of many at once, halves of what does not fit, one by one at last."""
         items, self.pending = self.pending, []
-        self._int_cache = {}
         todo = [(0, len(items))] if items else []
         n = len(self.axes)
         while todo:
@@ -459,13 +514,15 @@ class CornerCheck:
                    for a, b, *_r in group):
                 lo, hi = [F0] * n, [F0] * n
                 ints = [e for e in group if e[4] is not None]
+                points = [p for e in ints for p in e[4]]  # every point of the integer corners
                 boxes = [e[3] for e in group if e[4] is None]
                 g = max((e[6] for e in ints if e[6] is not None), default=F0)
                 for k, i in enumerate(self.rel):
                     cand_lo, cand_hi = [], []
                     if ints:
-                        cand_lo.append(Fraction(min(e[4][k] for e in ints), SCALE) - g)
-                        cand_hi.append(Fraction(max(e[5][k] for e in ints), SCALE) + g)
+                        at = itemgetter(k)
+                        cand_lo.append(Fraction(min(map(at, points)), SCALE) - g)
+                        cand_hi.append(Fraction(max(map(at, points)), SCALE) + g)
                     if boxes:
                         cand_lo.append(min(box[0][i] for box in boxes))
                         cand_hi.append(max(box[1][i] for box in boxes))
@@ -491,7 +548,7 @@ class CornerCheck:
         whose box must fit as well (the per-motion proof proved it from the short motion's end)."""
         if mode.dialect != "linuxcnc":
             return
-        if _linear(seg, self.dogleg) and all(abs(e - s) < DROPPED_BELOW for s, e in zip(seg.start, seg.end)):
+        if _linear(seg, self.dogleg) and _short(seg.start, seg.end):
             if self._dropped is None and joined and prev is not None:
                 self._dropped = prev
             return
@@ -709,7 +766,7 @@ class CornerCheck:
         (``end``: the corner is its end); naive-CAM merging (q > 0, feeds only: ``STRAIGHT_TRAVERSE`` flushes
         the chain) may replace the whole motion by a chord within q of it, blended within p."""
         tol = mode.tolerance or F0
-        whole = mode.naive > 0 and seg.kind is not SegmentKind.RAPID
+        whole = mode.naive > 0 and seg.kind is not _RAPID
         bound = tol + mode.naive if whole else tol
         if _linear(seg, self.dogleg):
             d = tuple(e - s for s, e in zip(seg.start, seg.end))
@@ -813,7 +870,7 @@ class CornerCheck:
         at, used = _mode_rows(table, chunk.block)
         count = np.bincount(kinds, minlength=len(SegmentKind))  # rows of each kind (kinds are small and >= 0)
         plain = (not count[[k for k in range(len(count)) if k not in _SIMPLE]].any()
-                 and not (self.dogleg and count[SegmentKind.RAPID])
+                 and not (self.dogleg and count[_RAPID])
                  and max(int(starts.max()), -int(starts.min()), int(ends.max()), -int(ends.min())) < 2**58)
         hull = [m.blend and m.dialect == "fanuc" and m.tolerance is None for m in used]
         naive = self._naive_tracked()  # G64 Q without P: every motion joins the merging windows, one at a time
@@ -822,16 +879,16 @@ class CornerCheck:
             return
         if (naive or not plain or any(hull) or _droppable_rows(chunk)
                 or any(m.blend and m.bound() is None and m.naive for m in used)
-                or (count[SegmentKind.ARC] and any(m.dialect == "fanuc" for m in used))):
+                or (count[_ARC] and any(m.dialect == "fanuc" for m in used))):
             for seg in chunk.segments():  # the exact path, one motion at a time (a Fanuc arc: its hull)
                 self._segment(seg)
             return
-        dwell = kinds == SegmentKind.DWELL
-        arc = kinds == SegmentKind.ARC
+        dwell = kinds == _DWELL
+        arc = kinds == _ARC
         moving = _rows_differ(starts, ends) | arc
-        rows = np.flatnonzero(moving & ~dwell) if count[SegmentKind.DWELL] else np.flatnonzero(moving)
+        rows = np.flatnonzero(moving & ~dwell) if count[_DWELL] else np.flatnonzero(moving)
         if rows.size == 0:
-            if count[SegmentKind.DWELL]:
+            if count[_DWELL]:
                 self._stop()
             return
         first, last = int(rows[0]), int(rows[-1])
@@ -844,13 +901,13 @@ class CornerCheck:
             keep = blend[i]
         else:
             keep = np.full(i.size, used[0].blend, dtype=bool)
-        if count[SegmentKind.DWELL]:
+        if count[_DWELL]:
             dwells = np.cumsum(dwell)
             keep &= dwells[j] == dwells[i]
         if not keep.all():
             i, j = i[keep], j[keep]
         if i.size:
-            self._corner_columns(chunk, i, j, at, used, bool(count[SegmentKind.ARC]))
+            self._corner_columns(chunk, i, j, at, used, bool(count[_ARC]))
         seg = _row(chunk, last)
         if last != first:
             self.prev = seg
@@ -876,7 +933,7 @@ class CornerCheck:
         assert chunk.scale is not None
         lo, hi = np.minimum(starts, ends), np.maximum(starts, ends)
         boxed = np.ones(len(chunk), dtype=bool)
-        arc_rows = np.flatnonzero(kinds == SegmentKind.ARC) if arcs else None
+        arc_rows = np.flatnonzero(kinds == _ARC) if arcs else None
         if arc_rows is not None:
             boxed[arc_rows] = _arc_columns(chunk, arc_rows, lo, hi)
         scale2 = 2 * 10**chunk.scale
@@ -887,7 +944,7 @@ class CornerCheck:
             box_lo = [Fraction(2 * int(lo[:, k].min()), scale2) - g for k in range(len(self.axes))]
             box_hi = [Fraction(2 * int(hi[:, k].max()), scale2) + g for k in range(len(self.axes))]
             if arc_rows is not None:
-                near = (kinds[i] == SegmentKind.ARC) | (kinds[j] == SegmentKind.ARC)
+                near = (kinds[i] == _ARC) | (kinds[j] == _ARC)
                 if near.any():
                     c_lo, c_hi = self._corner_ints(chunk, lo, hi, i[near], j[near], at, scale2)
                     for k in range(len(self.axes)):
@@ -912,8 +969,8 @@ class CornerCheck:
         table = self.modes
         ei, si, sj, ej = ends[i], starts[i], starts[j], ends[j]
         lo_i, hi_i, lo_j, hi_j = lo[i], hi[i], lo[j], hi[j]
-        lin_i = (kinds[i] != SegmentKind.ARC)[:, None]
-        lin_j = (kinds[j] != SegmentKind.ARC)[:, None]
+        lin_i = (kinds[i] != _ARC)[:, None]
+        lin_j = (kinds[j] != _ARC)[:, None]
         mid_i, mid_j = si + ei, sj + ej
         t_lo = np.where(lin_i, np.minimum(mid_i, 2 * ei), 2 * lo_i)
         t_hi = np.where(lin_i, np.maximum(mid_i, 2 * ei), 2 * hi_i)
@@ -969,8 +1026,8 @@ class CornerCheck:
 
         kinds, starts, ends = chunk.kind, chunk.start, chunk.end
         assert kinds is not None and starts is not None and ends is not None  # a column chunk
-        dwell = kinds == SegmentKind.DWELL
-        arc = kinds == SegmentKind.ARC
+        dwell = kinds == _DWELL
+        arc = kinds == _ARC
         moving = ((starts != ends).any(axis=1) | arc) & ~dwell
         table = self.modes
         blend = np.array([table[k][1].blend for k in range(len(table))], dtype=bool)[at] & moving
@@ -1195,12 +1252,12 @@ def _droppable_rows(chunk: MotionChunk) -> bool:
     if lim <= 1:
         return False  # every non-zero change is at least one unit of the scale, not below DROPPED_BELOW
     d = np.abs(chunk.end - chunk.start)
-    straight = (chunk.kind == SegmentKind.LINE) | (chunk.kind == SegmentKind.RAPID)
+    straight = (chunk.kind == _LINE) | (chunk.kind == _RAPID)
     return bool((straight & (d != 0).any(axis=1) & (d < lim).all(axis=1)).any())
 
 
 #: Motions a Fanuc control's acc/dec after interpolation may pull inside in any path mode (their hull is proved).
-_FILTERED_CURVES = frozenset({SegmentKind.ARC, SegmentKind.POLAR})
+_FILTERED_CURVES = frozenset({_ARC, SegmentKind.POLAR})
 _RUN = ("a Fanuc control in cutting mode rounds corners by acc/dec after interpolation, which keeps the path inside "
         "the convex hull of the motions between exact stops; give [machine] path_tolerance (the control's bound) or "
         "program G61/G09")
@@ -1211,14 +1268,14 @@ _LONE_CURVE = ("a Fanuc control's acc/dec after interpolation averages the comma
 
 
 def _linear(seg: Segment, dogleg: bool) -> bool:
-    return seg.kind is SegmentKind.LINE or (seg.kind is SegmentKind.RAPID and not dogleg)
+    return seg.kind is _LINE or (seg.kind is _RAPID and not dogleg)
 
 
 def _piece_box(seg: Segment) -> Box | None:
     """A box holding every point of ``seg`` (lines, rapids straight or dogleg, arcs); None for other kinds."""
-    if seg.kind in (SegmentKind.LINE, SegmentKind.RAPID):
+    if seg.kind in (_LINE, _RAPID):
         return tuple(map(_lo, seg.start, seg.end)), tuple(map(_hi, seg.start, seg.end))
-    if seg.kind is SegmentKind.ARC:
+    if seg.kind is _ARC:
         plane = _arc_plane_box(seg)
         if plane is None:
             from .geometry import arc_geom
@@ -1323,7 +1380,7 @@ def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
     p = seg.end if end else seg.start
     if _linear(seg, dogleg):
         return tuple(map(min, m, p)), tuple(map(max, m, p))
-    if seg.kind is SegmentKind.ARC:
+    if seg.kind is _ARC:
         half = _half_arc_box(seg, end)
         if half is not None:
             # the other axes (a helix's) move with the angle: the half of their travel at that end

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
+from math import lcm
 
 from ..errors import InvalidArgument
 from ..exact import atan_interval, is_square, pi_interval, sqrt_interval
@@ -32,6 +33,12 @@ from ..exact import round_up as exact_round_up
 from ..machine import Machine, RapidMode
 from ..motion import PLANE_AXES, Segment, SegmentKind
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+
+# not typing's (start-up): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    #: a vector of the sweep tests: Fractions, or integers (the points times a common denominator, _common_scale)
+    _SweepVec = tuple[Fraction | int, Fraction | int]
 
 __all__ = [
     "LinePiece",
@@ -193,15 +200,15 @@ def atan_bounds(x: Fraction, bits: int = ENCLOSURE_BITS) -> tuple[Fraction, Frac
 # --------------------------------------------------------------------------- arcs
 
 
-def _cross(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> Fraction:
+def _cross(u: _SweepVec, v: _SweepVec) -> Fraction | int:
     return u[0] * v[1] - u[1] * v[0]
 
 
-def _dot(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> Fraction:
+def _dot(u: _SweepVec, v: _SweepVec) -> Fraction | int:
     return u[0] * v[0] + u[1] * v[1]
 
 
-def in_sweep(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw: bool, full: bool) -> bool:
+def in_sweep(u: _SweepVec, w: _SweepVec, v: _SweepVec, ccw: bool, full: bool) -> bool:
     """Does direction ``v`` lie in the sweep from ``u`` to ``w`` (closed)?
 
     Directions are vectors from the centre; ``u`` and ``w`` need not have the
@@ -224,8 +231,7 @@ def in_sweep(u: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction], v: tupl
 _DIRECTIONS = (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1))
 
 
-def _sweep_may_hold(s: tuple[Fraction, Fraction], e: tuple[Fraction, Fraction],
-                    ends: list[tuple[Fraction, Fraction]], v: tuple[Fraction, Fraction], ccw: bool) -> bool:
+def _sweep_may_hold(s: _SweepVec, e: _SweepVec, ends: Sequence[_SweepVec], v: _SweepVec, ccw: bool) -> bool:
     """May direction ``v`` lie in the sweep of the arc from ``s`` to ``e`` (not a whole turn) about a centre
     somewhere on the segment between the two points ``ends``?  False only when it cannot.
 
@@ -257,13 +263,33 @@ def _sweep_may_hold(s: tuple[Fraction, Fraction], e: tuple[Fraction, Fraction],
     return len(seen) != 1 or next(iter(seen))[1]
 
 
-def _half(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> int:
+#: :data:`_DIRECTIONS` in integers (for :func:`_common_scale`'s points).
+_INT_DIRECTIONS = (((1, 0), 0, 1), ((-1, 0), 0, -1), ((0, 1), 1, 1), ((0, -1), 1, -1))
+
+
+def _common_scale(points: Sequence[tuple[Fraction, Fraction]]) -> list[tuple[int, int]]:
+    """``points`` times the least common denominator of their coordinates: integers.
+
+    For the sweep tests of :func:`_sweep_may_hold` (and :func:`in_sweep`, :func:`_angle_le`, :func:`_half`), which
+    read only the signs of cross and dot products of differences of these points and of axis directions: scaling
+    every point by the same ``D > 0`` scales each difference by ``D``, a product of one difference and a direction
+    by ``D`` and a product of two differences by ``D**2``, so every sign, and every answer, is the same, without
+    Fraction arithmetic (an R-format arc's centre bounds have denominators of 64-bit square-root bounds).
+
+    >>> _common_scale([(Fraction(1, 2), Fraction(1, 3)), (Fraction(-1), Fraction(0))])
+    [(3, 2), (-6, 0)]
+    """
+    d = lcm(*(x.denominator for p in points for x in p))
+    return [(x.numerator * (d // x.denominator), y.numerator * (d // y.denominator)) for x, y in points]
+
+
+def _half(u: _SweepVec, v: _SweepVec) -> int:
     """0 when the ccw angle from u to v is in [0, pi), else 1."""
     c = _cross(u, v)
     return 0 if c > 0 or (c == 0 and _dot(u, v) > 0) else 1
 
 
-def _angle_le(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction]) -> bool:
+def _angle_le(u: _SweepVec, v: _SweepVec, w: _SweepVec) -> bool:
     """ccw angle(u -> v) <= ccw angle(u -> w), angles in [0, 2 pi)."""
     hv, hw = _half(u, v), _half(u, w)
     if hv != hw:
@@ -313,12 +339,8 @@ class ArcGeom:
         """Per plane axis ``(lo, hi)`` enclosing the centre."""
         if self.centre is not None:
             return ((self.centre[0], self.centre[0]), (self.centre[1], self.centre[1]))
-        mx, my, nx, ny, q, sign = self.r_format_parts()
-        k_lo, k_hi = sqrt_bounds(q, bits)
-        ks = (sign * k_lo, sign * k_hi)
-        xs = sorted((mx + k * nx for k in ks))
-        ys = sorted((my + k * ny for k in ks))
-        return ((xs[0], xs[1]), (ys[0], ys[1]))
+        parts = self.r_format_parts()
+        return _r_centre_bounds(parts, sqrt_bounds(parts[4], bits))
 
     def r_format_parts(self):
         """R-format centre = M + k n with k = sign * sqrt(q): returns (Mx, My, nx, ny, q, sign)."""
@@ -340,7 +362,12 @@ class ArcGeom:
         extremes its sweep may reach (:func:`_sweep_may_hold`; the Fanuc hull and box route use it).  The
         per-motion solver query keeps the whole circle (a tighter enclosure changes which queries are hard:
         tests/prover/test_limits.py's stand-in for "a query that cannot finish" needs it)."""
-        (cxl, cxh), (cyl, cyh) = self.centre_bounds(bits)
+        if self.centre is None:  # centre_bounds: the centre's two bounding points, kept for the sweep below
+            mx, my, nx, ny, q, sign = self.r_format_parts()
+            ends = [(mx + sign * k * nx, my + sign * k * ny) for k in sqrt_bounds(q, bits)]
+            (cxl, cxh), (cyl, cyh) = (tuple(sorted(p[axis] for p in ends)) for axis in (0, 1))
+        else:
+            (cxl, cxh), (cyl, cyh) = self.centre_bounds(bits)
         if self.centre is None:
             assert self.r_signed is not None
             r_hi = sqrt_bounds(self.r_signed * self.r_signed, bits)[1]
@@ -355,17 +382,17 @@ class ArcGeom:
         elif self.centre is None:
             # the exact centre lies on the segment between two rational points (the R-format centre M + k n, k
             # between sqrt_bounds of q): a direction's extreme is left out only where that settles the sweep
-            mx, my, nx, ny, q, sign = self.r_format_parts()
-            ends = [(mx + sign * k * nx, my + sign * k * ny) for k in sqrt_bounds(q, bits)]
-            for v, axis, sgn in _DIRECTIONS:
-                if _sweep_may_hold(self.s, self.e, ends, v, self.ccw):
+            (s, e, *ends), axes = _common_scale((self.s, self.e, *ends)), _INT_DIRECTIONS
+            for v, axis, sgn in axes:
+                if _sweep_may_hold(s, e, ends, v, self.ccw):
                     c = (cxl, cxh) if axis == 0 else (cyl, cyh)
                     (xs if axis == 0 else ys).append(c[1] + r_hi if sgn > 0 else c[0] - r_hi)
         else:
             c = self.centre
-            u = (self.s[0] - c[0], self.s[1] - c[1])
-            w = (self.e[0] - c[0], self.e[1] - c[1])
-            for v, axis, sgn in (((F1, F0), 0, 1), ((-F1, F0), 0, -1), ((F0, F1), 1, 1), ((F0, -F1), 1, -1)):
+            si, ei, ci = _common_scale((self.s, self.e, c))  # the same signs in integers (_common_scale)
+            u = (si[0] - ci[0], si[1] - ci[1])
+            w = (ei[0] - ci[0], ei[1] - ci[1])
+            for v, axis, sgn in _INT_DIRECTIONS:
                 if in_sweep(u, w, v, self.ccw, self.full):
                     (xs if axis == 0 else ys).append(c[axis] + sgn * r_hi)
             if self.r2_lo != self.r2_hi:
@@ -374,6 +401,17 @@ class ArcGeom:
                 g = 2 * (r_hi - sqrt_bounds(self.r2_lo, bits)[0])
                 return ((min(xs) - g, max(xs) + g), (min(ys) - g, max(ys) + g))
         return ((min(xs), max(xs)), (min(ys), max(ys)))
+
+
+def _r_centre_bounds(parts: tuple, k_bounds: tuple[Fraction, Fraction]
+                     ) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+    """:meth:`ArcGeom.centre_bounds` of an R-format arc from its :meth:`~ArcGeom.r_format_parts` and the bounds
+    of ``sqrt(q)``: the centre ``M + sign k n`` for ``k`` between them."""
+    mx, my, nx, ny, _q, sign = parts
+    ks = (sign * k_bounds[0], sign * k_bounds[1])
+    xs = sorted((mx + k * nx for k in ks))
+    ys = sorted((my + k * ny for k in ks))
+    return ((xs[0], xs[1]), (ys[0], ys[1]))
 
 
 def arc_geom(seg: Segment) -> ArcGeom:
