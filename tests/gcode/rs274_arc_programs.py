@@ -124,8 +124,8 @@ class ArcWriter:
     #: the kinds of arcs written (tests check the draw reaches them)
     kinds: set[str] = field(default_factory=set)
     #: the plane of the program (17, 18, 19): drawn in G17 and written in the plane (:func:`in_plane`: the
-    #: circles' and points' (x, y) are then the plane's (first, second) axes); outside G17 the program keeps
-    #: G54 and no tool length (whose axis Z is a plane axis there: the circles would be off by it)
+    #: circles' and points' (x, y) are then the plane's (first, second) axes); outside G17 a ``rational``
+    #: program keeps G54 and no tool length (whose axis Z is a plane axis there: the circles would be off by it)
     plane: int = 17
 
     # -- positions ---------------------------------------------------------------------------------------
@@ -151,7 +151,7 @@ class ArcWriter:
     # -- blocks ------------------------------------------------------------------------------------------
     def modal(self) -> None:
         r = self.rng
-        roll = r.randrange(3) if self.plane == 17 else -1
+        roll = r.randrange(3) if self.plane == 17 or not self.rational else -1
         if roll == 0:
             self.wcs = r.choice(["G54", "G55", "G56", "G59"])
             self.lines.append(self.wcs)
