@@ -33,7 +33,8 @@ modules are imported; their import time is printed on its own), for
 
 The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_program`, :func:`comp_program` and
 :func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
-``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost").
+``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost"); the pass
+takes :func:`g18_program`'s arcs since plane38 on a mill (a lathe, ``machine_type``, it still declines).
 """
 
 from __future__ import annotations

@@ -37,7 +37,7 @@ FAST_PATH_MIN_LINES = 512
 #: Plain LinuxCNC programs (no ``#``, no o-word) the double pass is tried first for: from
 #: :data:`FAST_PATH_MIN_LINES` lines (below, the full path imports no numpy either and is as quick) up to this
 #: size, where a line counts 1, an R arc (an ``R`` in the text) :data:`PLAIN_PASS_R_ARC` more and an I/J arc (a
-#: ``J``) :data:`PLAIN_PASS_ARC` more.  It is the crossover of the pass (no numpy: about 2 us a line, 1-2 us more
+#: ``J``; G18's I/K arcs a ``K``) :data:`PLAIN_PASS_ARC` more.  It is the crossover of the pass (no numpy: about 2 us a line, 1-2 us more
 #: an R arc, 3 us more an I/J arc) and the fast path (numpy's import and set-up, about 0.06 s, then about
 #: 1-2.5 us a line), measured per class (specs/performance.md, "Plain programs in the double pass"): CAM G1
 #: with a few arcs up to some 57,000 lines, R arcs on every line up to some 30,000, I/J arcs up to some 20,000.
@@ -215,6 +215,8 @@ def _double_pass_reads(text: str | FileText) -> bool:
     True
     >>> _double_pass_reads("G21 G90 G17 G54 F100\n" + "G2 X1 Y1 I5 J0\n" * 25_000)  # I/J arcs: the fast path
     False
+    >>> _double_pass_reads("G21 G90 G18 G54 F100\n" + "G2 X1 Z1 I5 K0\n" * 25_000)  # so are G18's I/K arcs
+    False
     """
     if "#" in text:
         return True
@@ -235,7 +237,8 @@ def _small_plain(text: str | FileText) -> bool:
     if lines < FAST_PATH_MIN_LINES or lines > PLAIN_PASS_SIZE:
         return False
     r_arcs = text.count("R") + text.count("r")
-    ij_arcs = text.count("J") + text.count("j")
+    # (G18's centre words are K and I, G19's J and K: the larger count, each arc once)
+    ij_arcs = max(text.count("J") + text.count("j"), text.count("K") + text.count("k"))
     return lines + PLAIN_PASS_R_ARC * r_arcs + PLAIN_PASS_ARC * ij_arcs <= PLAIN_PASS_SIZE
 
 

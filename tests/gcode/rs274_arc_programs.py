@@ -55,6 +55,22 @@ def dec(v: Fraction) -> str:
     raise ValueError(f"{v} is not a short decimal")
 
 
+#: Per plane: the program's letters of G17 (first, second, normal axis; the two centre words) to the plane's.
+_IN_PLANE = {18: str.maketrans("XYZIJ", "ZXYKI"), 19: str.maketrans("XYZIJ", "YZXJK")}
+
+
+def in_plane(line: str, plane: int) -> str:
+    """A line of :func:`arcs` moved to ``plane``: its axis and centre words to the plane's (G18: the first axis
+    Z, the second X, the centre words K and I; G19: Y, Z, J, K), a G17 to the plane's code and a G18 (a plane
+    other than the program's) to another one."""
+    other = {18: "G19", 19: "G17"}[plane]
+    line = line.replace("G18", "G_OTHER").replace("G17", f"G{plane}")
+    head, _, rest = line.partition(" ") if line.startswith("G") else ("", "", line)
+    # (lower-case names #<a> and codes are untouched; a leading G code keeps its digits)
+    words = " ".join(w if w.startswith(("G", "#")) else w.translate(_IN_PLANE[plane]) for w in rest.split(" "))
+    return f"{head} {words}".strip().replace("G_OTHER", other)
+
+
 @dataclass(frozen=True, slots=True)
 class Circle:
     """An arc of a rational circle in machine mm: centre, radius, the unit vectors from the centre to its
@@ -107,6 +123,10 @@ class ArcWriter:
     points: list[tuple[Fraction, Fraction]] = field(default_factory=list)
     #: the kinds of arcs written (tests check the draw reaches them)
     kinds: set[str] = field(default_factory=set)
+    #: the plane of the program (17, 18, 19): drawn in G17 and written in the plane (:func:`in_plane`: the
+    #: circles' and points' (x, y) are then the plane's (first, second) axes); outside G17 a ``rational``
+    #: program keeps G54 and no tool length (whose axis Z is a plane axis there: the circles would be off by it)
+    plane: int = 17
 
     # -- positions ---------------------------------------------------------------------------------------
     def machine(self, x: Fraction, y: Fraction) -> tuple[Fraction, Fraction]:
@@ -131,7 +151,7 @@ class ArcWriter:
     # -- blocks ------------------------------------------------------------------------------------------
     def modal(self) -> None:
         r = self.rng
-        roll = r.randrange(3)
+        roll = r.randrange(3) if self.plane == 17 or not self.rational else -1
         if roll == 0:
             self.wcs = r.choice(["G54", "G55", "G56", "G59"])
             self.lines.append(self.wcs)
@@ -139,7 +159,7 @@ class ArcWriter:
             n = r.choice(sorted(TOOLS_INCH))
             self.tool = TOOLS_INCH[n] * INCH
             self.lines.append(f"G43 H{n}")
-        else:
+        elif roll == 2:
             self.tool = F0
             self.lines.append("G49")
         self.fresh()
@@ -329,7 +349,8 @@ class ArcWriter:
                 kind = specials.pop(min(due))
                 self.foreign() if kind == "foreign" else self.arc(kind)
             self.block()
-        return "\n".join(self.lines + ["M30"]) + "\n"
+        lines = self.lines if self.plane == 17 else [in_plane(line, self.plane) for line in self.lines]
+        return "\n".join(lines + ["M30"]) + "\n"
 
     def block(self) -> None:
         roll = self.rng.random()

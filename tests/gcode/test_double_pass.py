@@ -24,7 +24,8 @@ from nczones.gcode.expr import binary_op
 from nczones.gcode.linuxcnc import doubles
 from nczones.gcode.linuxcnc.doubles import Declined, DoublePath, double_pass
 from nczones.machine import parse_machine
-from nczones.motion import PathMode, SegmentKind
+from nczones.motion import PLANE_AXES, PathMode, SegmentKind
+from tests.gcode.rs274_arc_programs import in_plane
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "120"))
 
@@ -94,14 +95,22 @@ def check_corners(path: DoublePath, segments: list, modes: list[tuple[int, PathM
         assert path.blended(k) == (bare and not dwell), (k, mode, before.kind, after.kind)
 
 
+def _plane(seg) -> tuple[int, int]:
+    """The indices (first, second) of the plane axes of the full path's arc ``seg`` (an X, Y, Z machine)."""
+    a, b, _n = PLANE_AXES[seg.plane]
+    return "XYZ".index(a), "XYZ".index(b)
+
+
 def arc_points(seg) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
-    """Points of the full path's arc ``seg`` (G17) at 200 bits, computed from the segment alone: its ends and,
+    """Points of the full path's arc ``seg`` at 200 bits, in its plane's axes (first, second: G18's are Z and
+    X), computed from the segment alone: its ends and,
     at both radii (a spiral lies between), 64 points of its sweep and the points in every axis direction the
     sweep holds.  The centre of an R arc is ``(S + E) / 2 + s h n`` (``h = sqrt(R**2 - |E - S|**2 / 4)``, n the
     left normal of the chord, s = -1 for G2 with R > 0 and G3 with R < 0: LinuxCNC's arc_data_r)."""
     mp = mpmath.mp
+    ia, ib = _plane(seg)
     sx, sy, ex, ey = (mpmath.mpf(Fraction(v).numerator) / Fraction(v).denominator
-                      for v in (seg.start[0], seg.start[1], seg.end[0], seg.end[1]))
+                      for v in (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib]))
     if seg.centre is not None:
         cx, cy = (mpmath.mpf(c.numerator) / c.denominator for c in seg.centre)
     else:
@@ -129,7 +138,7 @@ def check_arc_in_box(seg, lo, hi) -> None:
     """Every point of :func:`arc_points` lies in the enclosure (its bounds are exact binary fractions)."""
     with mpmath.workprec(200):
         box = [(mpmath.mpf(lo[a].numerator) / lo[a].denominator, mpmath.mpf(hi[a].numerator) / hi[a].denominator)
-               for a in ("X", "Y")]
+               for a in PLANE_AXES[seg.plane][:2]]
         for p in arc_points(seg):
             for v, (b_lo, b_hi) in zip(p, box):
                 # 1e-45: the points' own rounding at 200 bits, far below any double's
@@ -313,6 +322,10 @@ def arc_programs(draw) -> str:
                                  "G21 G90 G17 G54 F300", "G21 G90 G17 G54 F300", "G21 G90 G17 G54 F300",
                                  "G21 G90 G54 F300"]))
     body = [line for _ in range(draw(st.integers(1, 4))) for line in draw(arcs())]
+    plane = draw(st.sampled_from([17, 17, 18, 19]))
+    if plane != 17:  # the same program in G18 or G19: (X, Y, Z, I, J) to the plane's (first, second, normal)
+        head = head.replace("G17", f"G{plane}")
+        body = [in_plane(line, plane) for line in body]
     return "\n".join([head, "#1 = 0.5", *body, "M30"]) + "\n"
 
 
@@ -366,7 +379,7 @@ def test_the_rows_are_the_controllers_doubles():
 
 
 DECLINED = {
-    "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J or R"),
+    "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J, K or R"),
     "an arc in G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "arc in G91"),
     "an arc after G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG1 X1\nG90 Y2\nG2 X1 Y1 R5\n", "arc in G91"),
     "inches": ("G20 G90 G54 F100\n#1 = 1\nG1 X1\n", "G20"),
@@ -409,7 +422,9 @@ DECLINED = {
     "a tool length not in the machine": ("G21 G90 G54 F100\n#1 = 1\nG43 H1\nG1 X#1\n", "H register"),
     "an H word alone": ("G21 G90 G54 F100\n#1 = 1\nH1\nG1 X#1\n", "H word without G43"),
     "an arc before G17": ("G21 G90 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "sets the plane"),
-    "an arc in G18": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 R5\n", "outside G17"),
+    "a J word in G18": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 I1 J1\n", "centre word other than K and I"),
+    "an I word in G19": ("G21 G90 G19 G54 F100\n#1 = 1\nG2 Y1 Z1 I1\n", "centre word other than J and K"),
+    "arcs in two planes": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 R5\nG17 G2 X1 Y1 R5\n", "two planes"),
     "turns": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5 P2\n", "word P"),
     "R and I": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5 I1\n", "R and I"),
     "a half circle by R": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X2 R1\n", "about 2|R|"),

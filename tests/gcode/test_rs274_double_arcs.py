@@ -170,13 +170,21 @@ def _arcs(moves: list[CanonMove]) -> list[tuple[tuple[Fraction, ...], CanonMove]
     return out
 
 
+#: rs274's planes: the machine axes (first, second) of their arcs (LinuxCNC's ARC_FEED order: XZ is Z, X).
+PLANES = {"XY": (0, 1), "XZ": (2, 0), "YZ": (1, 2)}
+#: The ArcWriter plane codes, and rs274's names of them.
+PLANE_NAMES = {17: "XY", 18: "XZ", 19: "YZ"}
+
+
 def _sweep(start: tuple[Fraction, ...], mv: CanonMove) -> tuple[float, float, float, float, float, float]:
-    """(cx, cy, r0, r1, a0, sweep) of rs274's XY arc: the signed sweep from the start's angle ``a0``, a whole
-    turn more per turn beyond the first, an end on the start's ray a whole turn (LinuxCNC)."""
-    assert mv.centre is not None and mv.plane == "XY"
+    """(cx, cy, r0, r1, a0, sweep) of rs274's arc in its plane's (first, second) axes: the signed sweep from the
+    start's angle ``a0``, a whole turn more per turn beyond the first, an end on the start's ray a whole turn
+    (LinuxCNC)."""
+    assert mv.centre is not None
+    ia, ib = PLANES[mv.plane]
     cx, cy = (float(c) for c in mv.centre)
-    ux, uy = float(start[0]) - cx, float(start[1]) - cy
-    wx, wy = float(mv.end[0]) - cx, float(mv.end[1]) - cy
+    ux, uy = float(start[ia]) - cx, float(start[ib]) - cy
+    wx, wy = float(mv.end[ia]) - cx, float(mv.end[ib]) - cy
     a0, a1 = math.atan2(uy, ux), math.atan2(wy, wx)
     sweep = (a1 - a0) % math.tau if mv.direction > 0 else (a0 - a1) % math.tau
     if sweep < 1e-12:
@@ -213,6 +221,7 @@ def check_pass_arcs(path: DoublePath, moves: list[CanonMove]) -> int:
     path.refine(1, path.motions)
     refined = list(path.arc_boxes)
     for k, (start, mv) in enumerate(arcs):
+        assert path.arc_axes == PLANES[mv.plane], (k, mv.plane)  # the boxes' axes: the plane's (first, second)
         row = path.arc_rows[k]
         assert abs(mv.direction) == 1, "the pass takes no P word"
         for a in range(3):
@@ -254,7 +263,8 @@ def check_r_centres(text: str, machine: Machine, moves: list[CanonMove]) -> None
     for seg, mv in zip(ours, theirs):
         if seg.radius is None:
             continue
-        (sx, sy), (ex, ey) = seg.start[:2], seg.end[:2]
+        ia, ib = PLANES[mv.plane]
+        (sx, sy), (ex, ey) = (seg.start[ia], seg.start[ib]), (seg.end[ia], seg.end[ib])
         d2 = (ex - sx) ** 2 + (ey - sy) ** 2
         h = math.sqrt(float(seg.radius**2 - d2 / 4)) / math.sqrt(float(d2))
         s = -1 if (seg.radius > 0) == seg.clockwise else 1
@@ -266,9 +276,10 @@ def check_r_centres(text: str, machine: Machine, moves: list[CanonMove]) -> None
 
 # -- the differential -----------------------------------------------------------------------------------------
 
-def differential(seed: int, tmp_path, monkeypatch) -> str:
-    """One drawn program through rs274, the full path, the pass and ``verify``; what happened, for the counts."""
-    writer = ArcWriter(random.Random(seed), outside=seed % 4 == 3)
+def differential(seed: int, tmp_path, monkeypatch, plane: int = 17) -> str:
+    """One drawn program (in ``plane``) through rs274, the full path, the pass and ``verify``; what happened,
+    for the counts."""
+    writer = ArcWriter(random.Random(seed), outside=seed % 4 == 3, plane=plane)
     text = writer.program()
     _routed(text)
     machine = _machine(base="xyz_box_900000")  # every drawn arc inside: the routed verdict is the pass's proof
@@ -307,11 +318,21 @@ def test_arc_programs_past_512_lines_against_rs274(seed, tmp_path, monkeypatch):
     assert differential(seed, tmp_path, monkeypatch) == CI_SEEDS[seed]
 
 
+#: The CI's draws in G18 and G19 (plane38): taken by the pass, declined (seed 3: a foreign construct).
+CI_PLANE_SEEDS = {(18, 0): "pass", (18, 3): "declined", (19, 1): "pass", (19, 2): "pass"}
+
+
+@pytest.mark.parametrize("plane, seed", sorted(CI_PLANE_SEEDS)[:PROGRAMS])
+def test_arc_programs_in_g18_and_g19_against_rs274(plane, seed, tmp_path, monkeypatch):
+    """The differential with the program written in G18 (Z, X: K and I) or G19 (Y, Z: J and K)."""
+    assert differential(seed, tmp_path, monkeypatch, plane) == CI_PLANE_SEEDS[plane, seed]
+
+
 @pytest.mark.long
 def test_arc_programs_past_512_lines_against_rs274_long(tmp_path, monkeypatch):
     counts: dict[str, int] = {}
     for seed in range(1000, 1000 + LONG):
-        got = differential(seed, tmp_path, monkeypatch)
+        got = differential(seed, tmp_path, monkeypatch, (17, 17, 18, 19)[seed // 4 % 4])
         counts[got] = counts.get(got, 0) + 1
     print(counts, f"{len(SPIRAL_TURNS_SEEN)} whole spiral turns safe routed, unknown one by one")
     assert counts.get("pass", 0) > LONG // 4
@@ -331,17 +352,21 @@ def test_the_draw_reaches_every_kind():
 
 # -- zone faces on the arcs' exact extremes ----------------------------------------------------------------
 
-def rs274_extreme(moves: list[CanonMove], axis: int, sign: int) -> float:
-    """The largest ``sign * coordinate`` of rs274's motion on ``axis`` (X or Y), from its printed numbers."""
+def rs274_extreme(moves: list[CanonMove], axis: int, sign: int, plane: int = 17) -> float:
+    """The largest ``sign * coordinate`` of rs274's motion on ``axis`` (the first or second axis of ``plane``:
+    X or Y in G17), from its printed numbers."""
     best = 0.0
     for start, mv in _arcs(moves):
+        assert mv.plane == PLANE_NAMES[plane]
         best = max(best, max(sign * p[axis] for p in rs274_points(start, mv)))
-    return max([best] + [sign * float(mv.end[axis]) for mv in moves])
+    on = PLANES[PLANE_NAMES[plane]][axis]
+    return max([best] + [sign * float(mv.end[on]) for mv in moves])
 
 
-def _face_program(seed: int) -> tuple[ArcWriter, str, int, int, Fraction]:
-    """A program of rational arcs and the direction (axis, sign) in which an arc's sweep holds the extreme."""
-    writer = ArcWriter(random.Random(seed), rational=True)
+def _face_program(seed: int, plane: int = 17) -> tuple[ArcWriter, str, int, int, Fraction]:
+    """A program of rational arcs (in ``plane``) and the direction (axis, sign: the plane's first or second
+    axis) in which an arc's sweep holds the extreme."""
+    writer = ArcWriter(random.Random(seed), rational=True, plane=plane)
     text = writer.program()
     for axis, sign in random.Random(seed).sample([(0, 1), (0, -1), (1, 1), (1, -1)], 4):
         top = writer.extreme(axis, sign)
@@ -351,12 +376,13 @@ def _face_program(seed: int) -> tuple[ArcWriter, str, int, int, Fraction]:
     raise AssertionError("no arc holds the extreme")
 
 
-def face_run(seed: int, tmp_path, monkeypatch) -> None:
-    writer, text, axis, sign, top = _face_program(seed)
+def face_run(seed: int, tmp_path, monkeypatch, plane: int = 17) -> None:
+    writer, text, plane_axis, sign, top = _face_program(seed, plane)
+    axis = PLANES[PLANE_NAMES[plane]][plane_axis]  # the machine axis
     _routed(text)
     moves, error, _log = run_rs274(text, SETUP, tmp_path)
     assert error is None, error
-    seen = rs274_extreme(moves, axis, sign)
+    seen = rs274_extreme(moves, plane_axis, sign, plane)
     assert abs(seen - float(top)) <= 1e-3, (seen, top)  # rs274 moves where the exact arcs do
     for eps in (Fraction(0), Fraction(-1, 10**12), Fraction(1, 10**12), Fraction(1, 10**9)):
         face = top + eps
@@ -377,10 +403,18 @@ def test_a_face_on_the_arcs_exact_extreme(seed, tmp_path, monkeypatch):
     face_run(seed, tmp_path, monkeypatch)
 
 
+@pytest.mark.parametrize("plane", [18, 19])
+def test_a_face_on_the_arcs_exact_extreme_in_g18_and_g19(plane, tmp_path, monkeypatch):
+    """The face test with the program in G18 (its arcs' first axis Z, second X) and G19 (Y, Z): a mistaken
+    direction of the plane (G2 taken counter-clockwise) leaves an extreme out of the pass's box (a wrong
+    ``safe`` 1e-12 mm inside the face)."""
+    face_run(plane, tmp_path, monkeypatch, plane)
+
+
 @pytest.mark.long
 def test_a_face_on_the_arcs_exact_extreme_long(tmp_path, monkeypatch):
     for seed in range(1000, 1000 + LONG // 4):
-        face_run(seed, tmp_path, monkeypatch)
+        face_run(seed, tmp_path, monkeypatch, (17, 17, 18, 19)[seed % 4])
 
 
 # -- LinuxCNC's zero-radius limit (found by this differential, seed 4) -----------------------------------------

@@ -1,7 +1,9 @@
 """Arcs of the double pass (:mod:`nczones.gcode.linuxcnc.doubles`): from the pass's doubles, a box that holds
 the full path's exact arc, or the reason the pass declines the arc.
 
-The full path (``Interpreter.arc``) models a G17 arc exactly: an I/J arc from the exact start ``S`` about
+The full path (``Interpreter.arc``) models an arc exactly in its plane's first and second axes (G17: X, Y;
+G18: Z, X; G19: Y, Z, ``motion.PLANE_AXES``; here ``x`` and ``y`` stand for them, I and J for the plane's
+centre words, and G2 is clockwise in that order): an I/J arc from the exact start ``S`` about
 the exact centre ``C = S + (I, J)`` to the exact end ``E`` (a spiral when ``|E - C| != |S - C|``), an R arc
 on the circle of radius ``|R|`` through ``S`` and ``E`` whose centre ``C = (S + E) / 2 + s h n``
 (``h = sqrt(R**2 - |E - S|**2 / 4)``, ``n`` the unit normal left of the chord, ``s = -1`` for G2 with

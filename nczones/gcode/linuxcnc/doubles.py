@@ -23,10 +23,11 @@ is the double sum ``d + float(offset)``.  So the exact coordinate ``m`` and the 
 subnormal), and :meth:`DoublePath.enclosure` widens by more than that.  A straight move (G1, and G0 in
 either rapid mode: each axis moves monotonically from its start to its end) stays inside the box of its
 end points, so the box of a run of motions' end points, with the point before the first, holds every
-position of those motions.  An arc (G2/G3 in G17) is not: each arc row also has its own box
+position of those motions.  An arc (G2/G3 in G17, G18 or G19) is not: each arc row also has its own box
 (:mod:`nczones.gcode.linuxcnc.double_arcs`, whose docstring says why it holds the full path's exact arc, an
-R arc's irrational centre included), which :meth:`DoublePath.enclosure` joins to the rows' box; a helix's
-third axis moves monotonically, so the rows hold it.  The pass keeps a quick box of each arc (``r_screen``,
+R arc's irrational centre included; on the plane's first and second axes, :data:`_ARC_PLANES`), which
+:meth:`DoublePath.enclosure` joins to the rows' box; a helix's third axis moves monotonically, so the rows
+hold it.  The pass keeps a quick box of each arc (``r_screen``,
 ``ij_screen``: no sweep, no square root for R) and :meth:`DoublePath.refine` narrows it to the sweep's box
 (``r_arc``, ``ij_arc``) when a proof needs it; each holds the arc, so their intersection does.  ``G43 H<n>`` adds the machine's ``[tool_lengths]``
 entry to the tool axis's work offset, exactly, before the one rounding of ``d + float(offset)``, and the
@@ -55,15 +56,17 @@ and their rows are the same in every mode (the full path emits every motion; whi
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
 program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
 chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  Arcs: in
-G17 once the program has set it, on a machine with X and Y, I/J (G91.1,
-LinuxCNC's default) or R format with X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
+the plane the program has set (G17, G18 or G19; the arcs of one plane a program, ``DoublePath.arc_axes``), on a
+machine with the plane's axes, with the plane's centre words (G17 I/J, G18 K/I, G19 J/K: G91.1, LinuxCNC's
+default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
 ``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  Everything else declines:
 other codes and words, G64 P or Q, G20 (and a machine that starts in it or in G91), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
-parameter read of controller state, any evaluation error; an arc in G18/G19, with P or K, without axis
-words or a centre, of a radius about 0, with ends near or past the arc tolerance, an R arc of a chord about
+parameter read of controller state, any evaluation error; an arc in a second plane, with P or the centre
+word of the plane's normal, without axis words or a centre, of a radius about 0, with ends near or past
+the arc tolerance, an R arc of a chord about
 0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those), an arc after a motion
 LinuxCNC may drop in a blended corner (:meth:`_Pass.tiny`) unless that motion is the program's first with the
 start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only after another) or a dwell
@@ -96,7 +99,7 @@ from fractions import Fraction
 from operator import itemgetter
 
 from ...errors import GcodeError
-from ...motion import DROPPED_BELOW
+from ...motion import DROPPED_BELOW, PLANE_AXES
 from ...precompiled import dataclass  # start-up: no dataclasses import
 from .. import DEFAULT_ARC_TOLERANCE
 from ..codes import LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
@@ -151,6 +154,12 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: ``n``, ``n.1`` (G61.1) as ``-(10 n + 1)`` (:func:`_code`).
 _GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance",
                 5: "feedmode", 12: "offset", 13: "path"}
+#: Per plane code: the arc's (first, second) axes and their centre words, the full path's ``PLANE_AXES``
+#: (``Interpreter.arc``; LinuxCNC's ARC_FEED order: G18's first axis is Z, its second X, its centre words K
+#: and I).  The full path's arc is clockwise (G2) or not in the plane of those two axes in that order, and
+#: :mod:`.double_arcs` takes the two as its x and y: the same orientation, in every plane.
+_CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
+_ARC_PLANES = {int(p): (a, b, _CENTRE_WORDS[a] + _CENTRE_WORDS[b]) for p, (a, b, _n) in PLANE_AXES.items()}
 _GROUPS = {k // 10 if k % 10 == 0 else -k: _GROUP_NAMES[LINUXCNC_G[k].group or 0]
            for k in sorted(claimed(LINUXCNC_G, LANE_DOUBLES))}
 
@@ -165,7 +174,7 @@ _BLANKS = re.compile(r"[ \t]+")
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
-_LETTERS = frozenset("GMFSXYZIJRHTPQ")
+_LETTERS = frozenset("GMFSXYZIJKRHTPQ")
 #: Letters whose word is a literal code (H: the tool length register, T: a tool number, Q: M61's tool number,
 #: read like a G or M code).
 _CODE_LETTERS = "GMHTQ"
@@ -1028,18 +1037,29 @@ class _Pass:
         self.off = self._offset(wcs, self.reg)
 
     def _arcs_state(self, machine: Any, arc_tolerance: Fraction | str) -> None:
-        #: the program has set the plane to G17 (before it sets one the full path notes the plane at an arc)
-        self.g17 = False
+        #: the plane the program has set (17, 18, 19; 0 before it sets one: the full path notes the plane at an
+        #: arc then)
+        self.plane = 0
         self.tiny_pad = float(max(self.offset_bound, default=Fraction(0))) * 1e-14  # the rows' offset term
         self.rule = radius_rule(arc_tolerance)
-        ix, iy = self.index.get("X"), self.index.get("Y")
-        self.arc_axes: tuple[int, ...] = (ix, iy) if ix is not None and iy is not None else ()
-        top = max((self.offset_bound[i] for i in self.arc_axes), default=Fraction(0))
-        self.offb = math.nextafter(float(top), math.inf)  # at or above the plane axes' offsets
+        #: the plane of the arcs so far (0: none yet) and its two axes (first, second: ``_ARC_PLANES``); the
+        #: pass takes the arcs of one plane a program (DoublePath.arc_axes is one pair)
+        self.arc_plane = 0
+        self.arc_axes: tuple[int, ...] = ()
+        top = max((self.offset_bound[self.index[a]] for a in "XYZ" if a in self.index), default=Fraction(0))
+        self.offb = math.nextafter(float(top), math.inf)  # at or above every plane axis's offsets
         self.arcs = 0  # the arcs of the rows dropped (full()); those held are arc_rows
         self.arc_rows = array("q")
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
         self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
+
+    def arc_in(self, plane: int) -> None:
+        """The first arc, in ``plane``: its axes are the arcs' (:attr:`DoublePath.arc_axes`); an arc in another
+        plane after arcs in one declines."""
+        if self.arc_plane:
+            raise Declined("arcs in two planes")
+        a, b, _words = _ARC_PLANES[plane]
+        self.arc_plane, self.arc_axes = plane, (self.index[a], self.index[b])
 
     def _modes_state(self, machine: Any) -> None:
         """The path mode and the dwells (:meth:`mode`, :meth:`dwelt`), and whether M6 moves on ``machine``."""
@@ -1163,9 +1183,9 @@ class _Pass:
         if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FSIJRP" and x not in self.index:
+            if x not in "FSIJKRP" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJRP"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRP"]
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -1179,13 +1199,13 @@ class _Pass:
         body += self._dwell_body(groups, others, bool(axes))
         body += self._modal_body(groups, hs)
         if groups.get("motion") in (1, 2, 3) and not axes:  # G1 without axis words: LinuxCNC checks the feed too
-            if groups["motion"] != 1 or any(x in "IJR" for x in others):
+            if groups["motion"] != 1 or any(x in "IJKR" for x in others):
                 raise Declined("an arc without axis words")
             body.append("if not st.feed > 0.0: raise D('G1 without a positive feed')")
         if axes:
             body += self._motion_body(others, axes)
-        elif any(x in "IJR" for x in others):
-            raise Declined("I, J or R without a motion")
+        elif any(x in "IJKR" for x in others):
+            raise Declined("I, J, K or R without a motion")
         return self._compiled_plan(body)
 
     def _compiled_plan(self, body: list[str]) -> Any:
@@ -1205,7 +1225,7 @@ class _Pass:
         mode (in LinuxCNC's order, before its motion)."""
         body = []
         if "plane" in groups:
-            body.append(f"st.g17 = {groups['plane'] == 17}")
+            body.append(f"st.plane = {groups['plane']}")
         sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
         if sets:
             body.append(f"unset.difference_update({tuple(sets)!r})")
@@ -1252,7 +1272,7 @@ class _Pass:
             return []
         if "P" not in others:
             raise Declined("G4 without P")
-        if axes or "motion" in groups or any(x in "IJR" for x in others):
+        if axes or "motion" in groups or any(x in "IJKR" for x in others):
             raise Declined("G4 with axis words, I, J, R or a motion code")
         return [f"if not v[{others.index('P')}] > 0.0: raise D('a dwell time that is not positive')",
                 *(f"C{i}.append(pos[{i}])" for i in range(len(self.axes))),
@@ -1301,22 +1321,25 @@ class _Pass:
                 "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
                 "else:", *(f"    {b}" for b in g90)]
 
-    def _arc_body(self, others: list[str]) -> list[str]:
-        """The code that adds the box of the arc just moved (:mod:`.double_arcs`) from ``sa, sb``, or declines."""
+    def _arc_body(self, others: list[str], plane: int) -> list[str]:
+        """The code that adds the box of the arc just moved in ``plane`` (:mod:`.double_arcs`, on the plane's
+        first and second axes as the full path's ``Interpreter.arc``: G18's are Z and X, with K and I) from
+        ``sa, sb``, or declines."""
         def val(x: str) -> str:
             return f"v[{others.index(x)}]" if x in others else "0.0"
 
-        ia, ib = self.arc_axes
-        turn = self.axes[ia] not in others and self.axes[ib] not in others  # the end is the start: a whole turn
+        a, b, (wa, wb) = _ARC_PLANES[plane]
+        ia, ib = self.index[a], self.index[b]
+        turn = a not in others and b not in others  # the end is the start: a whole turn
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
         if "R" in others:
             call = f"R_ARC({ends}, {val('R')}, {self.offb!r})"
             kind = f"AW(({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}, {val('R')}, 0.0))"
         else:
-            call = f"IJ_ARC({ends}, {val('I')}, {val('J')}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
+            call = f"IJ_ARC({ends}, {val(wa)}, {val(wb)}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
             flag = IJ_SCREEN | (TURN if turn else 0)
-            kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val('I')}, {val('J')}))"
-        return ["if not st.g17: raise D('an arc outside G17, or before the program sets the plane')",
+            kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val(wa)}, {val(wb)}))"
+        return [f"if st.arc_plane != {plane}: st.arc_in({plane})",
                 # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
                 # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
                 # |t| < |t|: most arcs follow a motion that is not short)
@@ -1326,39 +1349,56 @@ class _Pass:
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
                 "AR(st.row0 + n - 1); AB(box)", kind]
 
+    def _arc_plane_body(self, others: list[str], axes: list[tuple[int, int]], plane: int) -> list[str]:
+        """The code of an arc in ``plane`` after its checks: its rows and its box, or a decline (the machine
+        lacks a plane axis, the block has the centre word of the plane's normal: the full path's GC308,
+        GC204)."""
+        a, b, words = _ARC_PLANES[plane]
+        if a not in self.index or b not in self.index:
+            return [f"raise D('an arc in G{plane} on a machine without {a} and {b}')"]
+        if any(x in "IJK" and x not in words for x in others):
+            return [f"raise D('an arc in G{plane} with a centre word other than {words[0]} and {words[1]}')"]
+        ia, ib = self.index[a], self.index[b]
+        moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
+        return [f"sa = pos[{ia}]; sb = pos[{ib}]",
+                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
+                *(f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes),
+                *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
+
+    def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
+        """The code that appends a motion's end (``x<i>`` for the axes set, else ``pos``) to the columns."""
+        set_axes = {i for _k, i in axes}
+        return [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
+
     def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
-        """The code of a block's motion: a straight move, or (with I, J or R) an arc whose box
-        :meth:`arc` adds."""
-        arc = [x for x in others if x in "IJR"]
-        moved = tuple(i for _k, i in axes)
+        """The code of a block's motion: a straight move, or (with I, J, K or R) an arc whose box
+        :meth:`_arc_body` adds, in the plane the program has set (a branch per plane)."""
+        arc = [x for x in others if x in "IJKR"]
+        body = ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')"]
         if not arc:
-            check = ["if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
-                     "elif mode: raise D('an arc without I, J or R')"]
+            body += ["if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
+                     "elif mode: raise D('an arc without I, J, K or R')"]
         else:
             if "R" in arc and len(arc) > 1:
-                raise Declined("R and I or J in one arc")
-            if not self.arc_axes or any(self.axes[i] not in "XYZ" for i in moved):
+                raise Declined("R and I, J or K in one arc")
+            if any(self.axes[i] not in "XYZ" for _k, i in axes):
                 raise Declined("an arc on axes other than X, Y and Z")
-            check = ["if mode is None or mode < 2 or not st.feed > 0.0: "
-                     "raise D('I, J or R without G2 or G3, or without a positive feed')",
+            body += ["if mode < 2 or not st.feed > 0.0: "
+                     "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
                      "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
-            moved = tuple(sorted(set(moved) | set(self.arc_axes)))
-        body = ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')", *check,
-                "if unset: raise D('a motion before the program sets units, distance mode and work offset')",
-                "off = st.off"]
+        body += ["if unset: raise D('a motion before the program sets units, distance mode and work offset')",
+                 "off = st.off"]
         if arc:
-            ia, ib = self.arc_axes
-            body.append(f"sa = pos[{ia}]; sb = pos[{ib}]")
-        body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
-        if arc:
-            body += [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+            body.append("pl = st.plane")
+            for n, plane in enumerate(sorted(_ARC_PLANES)):
+                body.append(f"{'el' if n else ''}if pl == {plane}:")
+                body += [f"    {b}" for b in self._arc_plane_body(others, axes, plane)]
+            body += ["else:", "    raise D('an arc before the program sets the plane')"]
         else:
+            moved = tuple(i for _k, i in axes)
+            body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
             body += self._straight_ends(axes)
-        set_axes = {i for _k, i in axes}
-        body += [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
-        body.append("n = len(C0)")
-        if arc:
-            body += self._arc_body(others)
+            body += [*self._appends(axes), "n = len(C0)"]
         body.append(f"if n >= {self.rows}: st.full()")
         if not arc:
             body.append("if not mode: st.rapids += 1")
