@@ -1317,58 +1317,12 @@ def _piece_box(seg: Segment) -> Box | None:
 
 
 def _arc_plane_box(seg: Segment) -> Any:
-    """``ArcGeom.plane_bbox()`` of a circular arc with a rational centre (start and end equally far from it), with
-    its plane's axis indices: ``((lo, hi), (lo, hi), ia, ib)``; None for other arcs (``arc_geom`` decides them).
+    """``ArcGeom.plane_bbox()`` of an arc with a rational centre (a circle, a spiral, a whole turn), with its
+    plane's axis indices: :func:`nczones.prover.geometry.rational_arc_plane_box` (integer sweep tests, the same
+    box); None for other arcs (``arc_geom`` decides them)."""
+    from .geometry import rational_arc_plane_box
 
-    The same box as ``plane_bbox`` (the same end points, the same ``sqrt_bounds`` of the squared radius, the same
-    sweep tests), computed on the vectors from the centre times their common denominator: integers, whose signs
-    of cross and dot products are those of the rational vectors, without Fraction arithmetic (most of the time of
-    an arc's box)."""
-    from math import lcm
-
-    from .geometry import sqrt_bounds
-
-    centre = seg.centre
-    if centre is None or seg.plane is None:
-        return None
-    ia, ib, _ = seg.plane_indices()
-    vals: tuple[Any, ...] = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
-    try:
-        dens = [v._denominator for v in vals]
-        nums = [v._numerator for v in vals]
-    except AttributeError:  # not Fractions
-        return None
-    d = lcm(*dens)
-    s0, s1, e0, e1, c0, c1 = (n * (d // q) for n, q in zip(nums, dens))
-    u, w = (s0 - c0, s1 - c1), (e0 - c0, e1 - c1)
-    r2 = u[0] * u[0] + u[1] * u[1]
-    if r2 == 0 or r2 != w[0] * w[0] + w[1] * w[1]:
-        return None  # no radius, or a spiral
-    full = (s0 == e0 and s1 == e1) or seg.turns > 0
-    r_hi = sqrt_bounds(Fraction(r2, d * d), 64)[1]
-    xs, ys = [vals[0], vals[2]], [vals[1], vals[3]]
-    ccw = not seg.clockwise
-    p, q = (u, w) if ccw else (w, u)  # clockwise from u to w is counter-clockwise from w to u
-    for v, out, c, sgn in (((1, 0), xs, centre[0], 1), ((-1, 0), xs, centre[0], -1), ((0, 1), ys, centre[1], 1),
-                           ((0, -1), ys, centre[1], -1)):
-        if full or _ccw_between(p, v, q):
-            out.append(c + sgn * r_hi)
-    return (min(xs), max(xs)), (min(ys), max(ys)), ia, ib
-
-
-def _ccw_between(u: tuple[int, int], v: tuple[int, int], w: tuple[int, int]) -> bool:
-    """``nczones.prover.geometry._angle_le`` on integer vectors: the counter-clockwise angle from ``u`` to ``v`` is at
-    most the one from ``u`` to ``w`` (angles in ``[0, 2 pi)``)."""
-    hv, hw = _int_half(u, v), _int_half(u, w)
-    if hv != hw:
-        return hv < hw
-    return v[0] * w[1] - v[1] * w[0] >= 0
-
-
-def _int_half(u: tuple[int, int], v: tuple[int, int]) -> int:
-    """0 when the counter-clockwise angle from ``u`` to ``v`` is in ``[0, pi)``, else 1."""
-    c = u[0] * v[1] - u[1] * v[0]
-    return 0 if c > 0 or (c == 0 and u[0] * v[0] + u[1] * v[1] > 0) else 1
+    return rational_arc_plane_box(seg)
 
 
 def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:

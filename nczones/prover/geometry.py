@@ -362,7 +362,9 @@ class ArcGeom:
         extremes its sweep may reach (:func:`_sweep_may_hold`; the Fanuc hull and box route use it).  The
         per-motion solver query keeps the whole circle (a tighter enclosure changes which queries are hard:
         tests/prover/test_limits.py's stand-in for "a query that cannot finish" needs it)."""
-        if self.centre is None:  # centre_bounds: the centre's two bounding points, kept for the sweep below
+        if self.centre is None and sweep:
+            return self._r_sweep_box(bits)
+        if self.centre is None:  # centre_bounds: the centre's two bounding points
             mx, my, nx, ny, q, sign = self.r_format_parts()
             ends = [(mx + sign * k * nx, my + sign * k * ny) for k in sqrt_bounds(q, bits)]
             (cxl, cxh), (cyl, cyh) = (tuple(sorted(p[axis] for p in ends)) for axis in (0, 1))
@@ -375,18 +377,10 @@ class ArcGeom:
             r_hi = sqrt_bounds(self.r2_hi, bits)[1]
         xs = [self.s[0], self.e[0]]
         ys = [self.s[1], self.e[1]]
-        if self.centre is None and not sweep:
+        if self.centre is None:
             # direction tests need the centre: use the whole circle's box (sound)
             xs += [cxl - r_hi, cxh + r_hi]
             ys += [cyl - r_hi, cyh + r_hi]
-        elif self.centre is None:
-            # the exact centre lies on the segment between two rational points (the R-format centre M + k n, k
-            # between sqrt_bounds of q): a direction's extreme is left out only where that settles the sweep
-            (s, e, *ends), axes = _common_scale((self.s, self.e, *ends)), _INT_DIRECTIONS
-            for v, axis, sgn in axes:
-                if _sweep_may_hold(s, e, ends, v, self.ccw):
-                    c = (cxl, cxh) if axis == 0 else (cyl, cyh)
-                    (xs if axis == 0 else ys).append(c[1] + r_hi if sgn > 0 else c[0] - r_hi)
         else:
             c = self.centre
             si, ei, ci = _common_scale((self.s, self.e, c))  # the same signs in integers (_common_scale)
@@ -401,6 +395,41 @@ class ArcGeom:
                 g = 2 * (r_hi - sqrt_bounds(self.r2_lo, bits)[0])
                 return ((min(xs) - g, max(xs) + g), (min(ys) - g, max(ys) + g))
         return ((min(xs), max(xs)), (min(ys), max(ys)))
+
+
+    def _r_sweep_box(self, bits: int) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+        """:meth:`plane_bbox` with ``sweep`` of an R-format arc whose centre is irrational.
+
+        The exact centre lies on the segment between two rational points, ``M + sign k n`` for ``k`` the two
+        :func:`sqrt_bounds` of ``q`` (:meth:`r_format_parts`): a direction's extreme (that end of the segment
+        plus ``r_hi``, the bound of ``|R|``) is left out only where :func:`_sweep_may_hold` settles the sweep.
+        Computed on integers: the start and end times their common denominator ``d`` (``S``, ``E``), ``n`` times
+        ``d`` (``N``), ``q = (4 R**2 d**2 - |N|**2) / (4 |N|**2)`` (the same value as :meth:`r_format_parts`'s,
+        so the same bounds), and every point times ``2 d K`` (``K`` the bounds' common denominator): the centre
+        points ``(S + E) K + 2 sign k_j K N``.  One positive scale for every point keeps every sign of the sweep
+        tests (:func:`_common_scale`), and each bound is the same value as the Fraction formula's."""
+        (sx, sy), (ex, ey), r = self.s, self.e, self.r_signed
+        assert r is not None  # an R-format arc (no rational centre) has its signed R
+        d = lcm(sx.denominator, sy.denominator, ex.denominator, ey.denominator)
+        s0, s1, e0, e1 = (v.numerator * (d // v.denominator) for v in (sx, sy, ex, ey))
+        nx, ny = s1 - e1, e0 - s0
+        nn = nx * nx + ny * ny
+        q = Fraction(4 * r.numerator ** 2 * d * d - r.denominator ** 2 * nn, 4 * r.denominator ** 2 * nn)
+        sign = -1 if (not self.ccw) != (r < 0) else 1
+        k_lo, k_hi = sqrt_bounds(q, bits)
+        big_k = lcm(k_lo.denominator, k_hi.denominator)
+        ks = (sign * k_lo.numerator * (big_k // k_lo.denominator), sign * k_hi.numerator * (big_k // k_hi.denominator))
+        mx, my = (s0 + e0) * big_k, (s1 + e1) * big_k
+        ends = [(mx + 2 * k * nx, my + 2 * k * ny) for k in ks]
+        scale = 2 * d * big_k
+        s, e = (2 * big_k * s0, 2 * big_k * s1), (2 * big_k * e0, 2 * big_k * e1)
+        r_hi = sqrt_bounds(r * r, bits)[1]
+        xs, ys = [sx, ex], [sy, ey]
+        for v, axis, sgn in _INT_DIRECTIONS:
+            if _sweep_may_hold(s, e, ends, v, self.ccw):
+                pick = max if sgn > 0 else min
+                (xs if axis == 0 else ys).append(Fraction(pick(p[axis] for p in ends), scale) + sgn * r_hi)
+        return (min(xs), max(xs)), (min(ys), max(ys))
 
 
 def _r_centre_bounds(parts: tuple, k_bounds: tuple[Fraction, Fraction]
@@ -594,3 +623,45 @@ def angle_bounds(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw
             a_lo, a_hi = atan_bounds(m_lo)[0], atan_bounds(m_hi)[1]
             return k * pi_lo / 2 + 2 * a_lo, k * pi_hi / 2 + 2 * a_hi
     return F0, 2 * pi_hi
+
+
+def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
+    """``arc_geom(seg).plane_bbox(bits)`` of an arc with a rational centre, with its plane's axis indices:
+    ``((lo, hi), (lo, hi), ia, ib)``; None for other arcs (R format, no plane, a zero radius: ``arc_geom``
+    decides them, raising where it refuses the arc).
+
+    The same box (an equal value, bound for bound) without Fraction arithmetic: the start, end and centre times
+    their common denominator ``d`` are integers (:func:`_common_scale`'s argument: the vectors ``u``, ``w`` from
+    the centre are ``d`` times the rational ones, so every sign of a cross or dot product, hence every answer of
+    :func:`in_sweep` and of the whole-turn test of :func:`on_start_ray`, is the same), and the squared radii are
+    ``|u|**2 / d**2``: the same values, so :func:`sqrt_bounds` gives the same bounds.  A spiral (start and end at
+    different distances) is grown by ``2 (r_hi - r_lo)`` as in :meth:`ArcGeom.plane_bbox`."""
+    centre = seg.centre
+    if centre is None or seg.plane is None:
+        return None
+    ia, ib, _ = seg.plane_indices()
+    vals: tuple = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
+    try:
+        dens = [v._denominator for v in vals]
+        nums = [v._numerator for v in vals]
+    except AttributeError:  # not Fractions
+        return None
+    d = lcm(*dens)
+    s0, s1, e0, e1, c0, c1 = (n * (d // q) for n, q in zip(nums, dens))
+    u, w = (s0 - c0, s1 - c1), (e0 - c0, e1 - c1)
+    u2, w2 = u[0] * u[0] + u[1] * u[1], w[0] * w[0] + w[1] * w[1]
+    if u2 == 0:
+        return None  # arc_geom refuses it
+    # arc_geom's whole turn: start == end, laps, or the end on the ray through the start (on_start_ray)
+    full = seg.turns > 0 or (_cross(u, w) == 0 and _dot(u, w) > 0)
+    dd = d * d
+    r_hi = sqrt_bounds(Fraction(max(u2, w2), dd), bits)[1]
+    xs, ys = [vals[0], vals[2]], [vals[1], vals[3]]
+    ccw = not seg.clockwise
+    for v, axis, sgn in _INT_DIRECTIONS:
+        if in_sweep(u, w, v, ccw, full):
+            (xs if axis == 0 else ys).append(centre[axis] + sgn * r_hi)
+    if u2 != w2:
+        g = 2 * (r_hi - sqrt_bounds(Fraction(min(u2, w2), dd), bits)[0])
+        return (min(xs) - g, max(xs) + g), (min(ys) - g, max(ys) + g), ia, ib
+    return (min(xs), max(xs)), (min(ys), max(ys)), ia, ib
