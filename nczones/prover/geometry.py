@@ -343,17 +343,27 @@ class ArcGeom:
         return _r_centre_bounds(parts, sqrt_bounds(parts[4], bits))
 
     def r_format_parts(self):
-        """R-format centre = M + k n with k = sign * sqrt(q): returns (Mx, My, nx, ny, q, sign)."""
-        sx, sy = self.s
-        ex, ey = self.e
-        cx, cy = ex - sx, ey - sy
-        l2 = cx * cx + cy * cy
-        r = self.r_signed
+        """R-format centre = M + k n with k = sign * sqrt(q): returns (Mx, My, nx, ny, q, sign).
+
+        ``M = (s + e) / 2``, ``n = (-(ey - sy), ex - sx)`` and ``q = R**2 / |n|**2 - 1/4``, each built from
+        :meth:`_r_scaled`'s integers (the same values as the Fraction formulas)."""
+        d, (s0, s1, e0, e1), (nx, ny), q, sign = self._r_scaled()
+        return Fraction(s0 + e0, 2 * d), Fraction(s1 + e1, 2 * d), Fraction(nx, d), Fraction(ny, d), q, sign
+
+    def _r_scaled(self) -> tuple[int, tuple[int, int, int, int], tuple[int, int], Fraction, int]:
+        """An R-format arc's parts on integers: the common denominator ``d`` of the start and end, the start and
+        end times ``d`` (``s0, s1, e0, e1``), ``n`` times ``d`` (``(s1 - e1, e0 - s0)``), ``q`` (a Fraction:
+        ``R**2 / (|N|**2 / d**2) - 1/4 = (4 R**2 d**2 - |N|**2) / (4 |N|**2)``) and the side's sign."""
+        (sx, sy), (ex, ey), r = self.s, self.e, self.r_signed
         assert r is not None  # an R-format arc (no rational centre) has its signed R
-        q = r * r / l2 - Fraction(1, 4)
-        right = (not self.ccw) != (r < 0)
-        sign = -1 if right else 1
-        return (sx + ex) / 2, (sy + ey) / 2, -cy, cx, q, sign
+        d = lcm(sx.denominator, sy.denominator, ex.denominator, ey.denominator)
+        s0, s1, e0, e1 = (v.numerator * (d // v.denominator) for v in (sx, sy, ex, ey))
+        nx, ny = s1 - e1, e0 - s0
+        nn = nx * nx + ny * ny
+        rn, rd = r.numerator, r.denominator
+        q = Fraction(4 * rn * rn * d * d - rd * rd * nn, 4 * rd * rd * nn)
+        sign = -1 if (not self.ccw) != (r < 0) else 1
+        return d, (s0, s1, e0, e1), (nx, ny), q, sign
 
     def plane_bbox(self, bits: int = 64, sweep: bool = False) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
         """A rational box containing the arc's plane path (exact extremes when rational).
@@ -408,14 +418,9 @@ class ArcGeom:
         so the same bounds), and every point times ``2 d K`` (``K`` the bounds' common denominator): the centre
         points ``(S + E) K + 2 sign k_j K N``.  One positive scale for every point keeps every sign of the sweep
         tests (:func:`_common_scale`), and each bound is the same value as the Fraction formula's."""
-        (sx, sy), (ex, ey), r = self.s, self.e, self.r_signed
+        d, (s0, s1, e0, e1), (nx, ny), q, sign = self._r_scaled()
+        r = self.r_signed
         assert r is not None  # an R-format arc (no rational centre) has its signed R
-        d = lcm(sx.denominator, sy.denominator, ex.denominator, ey.denominator)
-        s0, s1, e0, e1 = (v.numerator * (d // v.denominator) for v in (sx, sy, ex, ey))
-        nx, ny = s1 - e1, e0 - s0
-        nn = nx * nx + ny * ny
-        q = Fraction(4 * r.numerator ** 2 * d * d - r.denominator ** 2 * nn, 4 * r.denominator ** 2 * nn)
-        sign = -1 if (not self.ccw) != (r < 0) else 1
         k_lo, k_hi = sqrt_bounds(q, bits)
         big_k = lcm(k_lo.denominator, k_hi.denominator)
         ks = (sign * k_lo.numerator * (big_k // k_lo.denominator), sign * k_hi.numerator * (big_k // k_hi.denominator))
@@ -424,7 +429,7 @@ class ArcGeom:
         scale = 2 * d * big_k
         s, e = (2 * big_k * s0, 2 * big_k * s1), (2 * big_k * e0, 2 * big_k * e1)
         r_hi = sqrt_bounds(r * r, bits)[1]
-        xs, ys = [sx, ex], [sy, ey]
+        xs, ys = [self.s[0], self.e[0]], [self.s[1], self.e[1]]
         for v, axis, sgn in _INT_DIRECTIONS:
             if _sweep_may_hold(s, e, ends, v, self.ccw):
                 pick = max if sgn > 0 else min

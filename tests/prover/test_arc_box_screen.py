@@ -7,6 +7,7 @@ clamp whose face touches the box, or lies just inside or outside it, on a drawn 
 
 - the integer box is ``plane_bbox``'s, bound for bound, and a box the former Fraction formulas compute
   (``_fraction_centre_box``, tests/prover/test_rformat_box.py);
+- an R-format arc's parts (``ArcGeom.r_format_parts``, now from integers) are the Fraction formulas';
 - ``verify_segments`` answers the same verdict, reasons and counts with the integer screen as without it (the
   screen turned off: every arc through ``arc_geom`` as before).
 """
@@ -15,7 +16,8 @@ from __future__ import annotations
 
 from decimal import Decimal
 from fractions import Fraction
-from math import ceil, floor
+from fractions import Fraction as F
+from math import ceil, floor, isqrt
 
 import pytest
 from hypothesis import assume, given, settings
@@ -23,6 +25,7 @@ from hypothesis import strategies as st
 
 from nczones.errors import InvalidArgument
 from nczones.machine import parse_machine
+from nczones.motion import Plane, Segment, SegmentKind
 from nczones.prover import core
 from nczones.prover.geometry import arc_geom, rational_arc_plane_box
 from tests.machines import box_zone, machine_text
@@ -79,3 +82,33 @@ def test_the_screen_answers_as_arc_geom(seg, side, where):
     assert with_screen.reasons == without.reasons
     assert with_screen.violations == without.violations
     assert with_screen.stats == without.stats
+
+
+def _fraction_r_parts(g):
+    """``ArcGeom.r_format_parts`` as computed before arcs38: Fraction arithmetic on the points."""
+    (sx, sy), (ex, ey) = g.s, g.e
+    cx, cy = ex - sx, ey - sy
+    q = g.r_signed * g.r_signed / (cx * cx + cy * cy) - F(1, 4)
+    sign = -1 if (not g.ccw) != (g.r_signed < 0) else 1
+    return (sx + ex) / 2, (sy + ey) / 2, -cy, cx, q, sign
+
+
+_COORD = st.integers(-10**6, 10**6)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_COORD, _COORD, _COORD, _COORD, st.sampled_from([1, 3, 1000, 2**52]), st.integers(0, 10**6),
+       st.booleans(), st.booleans())
+def test_the_r_format_parts_are_the_fraction_ones(sx, sy, ex, ey, den, extra, clockwise, major):
+    """The R-format parts from integers equal the Fraction formulas' (R from just half the chord up)."""
+    sx, sy, ex, ey = (F(v, den) for v in (sx, sy, ex, ey))
+    if (sx, sy) == (ex, ey):
+        return
+    half = F(isqrt(int(((ex - sx) ** 2 + (ey - sy) ** 2) * 10**12)) + 1, 2 * 10**6)
+    r = half + F(extra, 10**4)
+    seg = Segment(SegmentKind.ARC, (sx, sy, F(0)), (ex, ey, F(0)), ("X", "Y", "Z"), plane=Plane.XY,
+                  clockwise=clockwise, radius=-r if major else r)
+    g = arc_geom(seg)
+    if g.centre is not None:  # q a square: a rational centre, no R-format parts after arc_geom
+        return
+    assert g.r_format_parts() == _fraction_r_parts(g)
