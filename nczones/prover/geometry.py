@@ -640,7 +640,9 @@ def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
     the centre are ``d`` times the rational ones, so every sign of a cross or dot product, hence every answer of
     :func:`in_sweep` and of the whole-turn test of :func:`on_start_ray`, is the same), and the squared radii are
     ``|u|**2 / d**2``: the same values, so :func:`sqrt_bounds` gives the same bounds.  A spiral (start and end at
-    different distances) is grown by ``2 (r_hi - r_lo)`` as in :meth:`ArcGeom.plane_bbox`."""
+    different distances) is grown by ``2 (r_hi - r_lo)`` as in :meth:`ArcGeom.plane_bbox`.  Every bound is
+    computed as an integer over one denominator (of the points and the two root bounds): a positive scale keeps
+    the order, so the least and greatest are the scaled ones, and each bound is one Fraction of the same value."""
     centre = seg.centre
     if centre is None or seg.plane is None:
         return None
@@ -661,12 +663,18 @@ def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
     full = seg.turns > 0 or (_cross(u, w) == 0 and _dot(u, w) > 0)
     dd = d * d
     r_hi = sqrt_bounds(Fraction(max(u2, w2), dd), bits)[1]
-    xs, ys = [vals[0], vals[2]], [vals[1], vals[3]]
+    r_lo = sqrt_bounds(Fraction(min(u2, w2), dd), bits)[0] if u2 != w2 else r_hi
+    # every bound on one denominator: the points', r_hi's and r_lo's (integers; one Fraction a bound at the end)
+    big = lcm(d, r_hi.denominator, r_lo.denominator)
+    m = big // d
+    hi = r_hi.numerator * (big // r_hi.denominator)
+    xs, ys = [s0 * m, e0 * m], [s1 * m, e1 * m]
     ccw = not seg.clockwise
     for v, axis, sgn in _INT_DIRECTIONS:
         if in_sweep(u, w, v, ccw, full):
-            (xs if axis == 0 else ys).append(centre[axis] + sgn * r_hi)
-    if u2 != w2:
-        g = 2 * (r_hi - sqrt_bounds(Fraction(min(u2, w2), dd), bits)[0])
-        return (min(xs) - g, max(xs) + g), (min(ys) - g, max(ys) + g), ia, ib
-    return (min(xs), max(xs)), (min(ys), max(ys)), ia, ib
+            (xs if axis == 0 else ys).append((c1 if axis else c0) * m + sgn * hi)
+    # a spiral: every path point is within (r_hi - r_lo) of the circular arc of the start radius, whose box is
+    # within (r_hi - r_lo) of this one (ArcGeom.plane_bbox); 0 for a circle
+    g = 2 * (hi - r_lo.numerator * (big // r_lo.denominator)) if u2 != w2 else 0
+    return ((Fraction(min(xs) - g, big), Fraction(max(xs) + g, big)),
+            (Fraction(min(ys) - g, big), Fraction(max(ys) + g, big)), ia, ib)
