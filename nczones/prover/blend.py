@@ -124,6 +124,25 @@ def _hi(a: Any, b: Any) -> Any:
     return b if _lt(a, b) else a
 
 
+def _mid(a: Any, b: Any) -> Any:
+    """``(a + b) / 2`` for exact coordinates: one Fraction from the parts (the same value, without the two
+    operations' normalisations)."""
+    try:
+        an, ad, bn, bd = a._numerator, a._denominator, b._numerator, b._denominator
+    except AttributeError:
+        return (a + b) / 2
+    return Fraction(an * bd + bn * ad, 2 * ad * bd)
+
+
+def _plus_less(x: Any, y: Any, z: Any) -> Any:
+    """``x + y - z`` for exact coordinates: one Fraction from the parts (the same value)."""
+    try:
+        xn, xd, yn, yd, zn, zd = x._numerator, x._denominator, y._numerator, y._denominator, z._numerator, z._denominator
+    except AttributeError:
+        return x + y - z
+    return Fraction((xn * yd + yn * xd) * zd - zn * xd * yd, xd * yd * zd)
+
+
 def _same(p: Sequence[Any], q: Sequence[Any]) -> bool:
     """``p == q`` for points of exact coordinates (normalised Fractions are equal when their parts are)."""
     if p is q:
@@ -484,8 +503,7 @@ class CornerCheck:
             if ba is None or bb is None:
                 return None
             c = a.end
-            return (tuple(x + y - z for x, y, z in zip(ba[0], bb[0], c)),
-                    tuple(x + y - z for x, y, z in zip(ba[1], bb[1], c)))
+            return tuple(map(_plus_less, ba[0], bb[0], c)), tuple(map(_plus_less, ba[1], bb[1], c))
         pa, pb = self._piece_box(a), self._piece_box(b)
         if pa is None or pb is None:
             return None
@@ -1330,7 +1348,7 @@ def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
     arc's (of less than a whole turn) half at its start and, at its end, the part from before a quarter of its
     sweep (the planner trims up to two thirds of an arc before a corner, ``blendInit3FromArcLine`` /
     ``ArcArc``: ``phi1_max = angle * 2/3``); the whole box of other motions."""
-    m = tuple((s + e) / 2 for s, e in zip(seg.start, seg.end))
+    m = tuple(map(_mid, seg.start, seg.end))
     p = seg.end if end else seg.start
     if _linear(seg, dogleg):
         return tuple(map(min, m, p)), tuple(map(max, m, p))

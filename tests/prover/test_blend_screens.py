@@ -315,6 +315,14 @@ def test_the_fast_comparisons_are_fractions_own(a, b):
     assert blend._same((a, b), (b, a)) == (a == b)
 
 
+@settings(max_examples=300, deadline=None)
+@given(a=_NUMBERS, b=_NUMBERS, c=_NUMBERS)
+def test_the_one_fraction_sums_are_fractions_own(a, b, c):
+    """The half boxes' midpoints and the screen's Minkowski sums, each one Fraction from the parts (arcs38)."""
+    assert blend._mid(a, b) == (a + b) / 2 and type(blend._mid(a, b)) is type((a + b) / 2)
+    assert blend._plus_less(a, b, c) == a + b - c
+
+
 # ---------------------------------------------------------------------------------------------- the lazy check
 
 _LINUXCNC = [(-1, PathMode(True, None, Fraction(0), "linuxcnc", "G64"))]
