@@ -263,6 +263,31 @@ def _sweep_may_hold(s: _SweepVec, e: _SweepVec, ends: Sequence[_SweepVec], v: _S
     return len(seen) != 1 or next(iter(seen))[1]
 
 
+def _axis_sweeps_may_hold(s: _SweepVec, e: _SweepVec, ends: Sequence[_SweepVec], ccw: bool) -> list[bool]:
+    """``_sweep_may_hold(s, e, ends, v, ccw)`` for each direction ``v`` of :data:`_INT_DIRECTIONS`, in order.
+
+    The same tests, with each end's ``u = s - c``, ``w = e - c`` and ``cross(u, w)`` computed once for the four
+    directions (they do not depend on the direction): a zero sign at either end answers "may", otherwise the
+    answer is "may" unless both ends give the same signs and :func:`in_sweep` says no there."""
+    if ends[0] == ends[-1]:
+        return [_sweep_may_hold(s, e, ends, v, ccw) for v, _a, _s in _INT_DIRECTIONS]
+    vecs = []
+    for c in ends:
+        u, w = (s[0] - c[0], s[1] - c[1]), (e[0] - c[0], e[1] - c[1])
+        vecs.append((u, w, _cross(u, w)))
+    out = []
+    for v, _a, _s in _INT_DIRECTIONS:
+        seen: set | None = set()
+        for u, w, uw in vecs:
+            uv, vw = _cross(u, v), _cross(v, w)
+            if uv == 0 or uw == 0 or vw == 0:
+                seen = None
+                break
+            seen.add((uv > 0, uw > 0, vw > 0, in_sweep(u, w, v, ccw, False)))
+        out.append(seen is None or len(seen) != 1 or next(iter(seen))[3])
+    return out
+
+
 #: :data:`_DIRECTIONS` in integers (for :func:`_common_scale`'s points).
 _INT_DIRECTIONS = (((1, 0), 0, 1), ((-1, 0), 0, -1), ((0, 1), 1, 1), ((0, -1), 1, -1))
 
@@ -430,8 +455,8 @@ class ArcGeom:
         s, e = (2 * big_k * s0, 2 * big_k * s1), (2 * big_k * e0, 2 * big_k * e1)
         r_hi = sqrt_bounds(r * r, bits)[1]
         xs, ys = [self.s[0], self.e[0]], [self.s[1], self.e[1]]
-        for v, axis, sgn in _INT_DIRECTIONS:
-            if _sweep_may_hold(s, e, ends, v, self.ccw):
+        for (_v, axis, sgn), may in zip(_INT_DIRECTIONS, _axis_sweeps_may_hold(s, e, ends, self.ccw)):
+            if may:
                 pick = max if sgn > 0 else min
                 (xs if axis == 0 else ys).append(Fraction(pick(p[axis] for p in ends), scale) + sgn * r_hi)
         return (min(xs), max(xs)), (min(ys), max(ys))

@@ -112,3 +112,19 @@ def test_the_r_format_parts_are_the_fraction_ones(sx, sy, ex, ey, den, extra, cl
     if g.centre is not None:  # q a square: a rational centre, no R-format parts after arc_geom
         return
     assert g.r_format_parts() == _fraction_r_parts(g)
+
+
+_SMALL = st.integers(-6, 6)
+_POINT = st.tuples(_SMALL, _SMALL)
+
+
+@settings(max_examples=400, deadline=None)
+@given(s=_POINT, e=_POINT, ends=st.one_of(st.tuples(_POINT, _POINT), _POINT.map(lambda p: (p, p))),
+       ccw=st.booleans())
+def test_the_four_sweep_tests_are_sweep_may_hold(s, e, ends, ccw):
+    """``_axis_sweeps_may_hold`` (each end's vectors once for the four directions) answers as
+    ``_sweep_may_hold`` direction by direction; small integers put many signs at 0 (collinear points)."""
+    from nczones.prover import geometry
+
+    want = [geometry._sweep_may_hold(s, e, list(ends), v, ccw) for v, _a, _s in geometry._INT_DIRECTIONS]
+    assert geometry._axis_sweeps_may_hold(s, e, list(ends), ccw) == want
