@@ -124,6 +124,25 @@ def _hi(a: Any, b: Any) -> Any:
     return b if _lt(a, b) else a
 
 
+def _mid(a: Any, b: Any) -> Any:
+    """``(a + b) / 2`` for exact coordinates: one Fraction from the parts (the same value, without the two
+    operations' normalisations)."""
+    try:
+        an, ad, bn, bd = a._numerator, a._denominator, b._numerator, b._denominator
+    except AttributeError:
+        return (a + b) / 2
+    return Fraction(an * bd + bn * ad, 2 * ad * bd)
+
+
+def _plus_less(x: Any, y: Any, z: Any) -> Any:
+    """``x + y - z`` for exact coordinates: one Fraction from the parts (the same value)."""
+    try:
+        xn, xd, yn, yd, zn, zd = x._numerator, x._denominator, y._numerator, y._denominator, z._numerator, z._denominator
+    except AttributeError:
+        return x + y - z
+    return Fraction((xn * yd + yn * xd) * zd - zn * xd * yd, xd * yd * zd)
+
+
 def _same(p: Sequence[Any], q: Sequence[Any]) -> bool:
     """``p == q`` for points of exact coordinates (normalised Fractions are equal when their parts are)."""
     if p is q:
@@ -484,8 +503,7 @@ class CornerCheck:
             if ba is None or bb is None:
                 return None
             c = a.end
-            return (tuple(x + y - z for x, y, z in zip(ba[0], bb[0], c)),
-                    tuple(x + y - z for x, y, z in zip(ba[1], bb[1], c)))
+            return tuple(map(_plus_less, ba[0], bb[0], c)), tuple(map(_plus_less, ba[1], bb[1], c))
         pa, pb = self._piece_box(a), self._piece_box(b)
         if pa is None or pb is None:
             return None
@@ -1317,58 +1335,12 @@ def _piece_box(seg: Segment) -> Box | None:
 
 
 def _arc_plane_box(seg: Segment) -> Any:
-    """``ArcGeom.plane_bbox()`` of a circular arc with a rational centre (start and end equally far from it), with
-    its plane's axis indices: ``((lo, hi), (lo, hi), ia, ib)``; None for other arcs (``arc_geom`` decides them).
+    """``ArcGeom.plane_bbox()`` of an arc with a rational centre (a circle, a spiral, a whole turn), with its
+    plane's axis indices: :func:`nczones.prover.geometry.rational_arc_plane_box` (integer sweep tests, the same
+    box); None for other arcs (``arc_geom`` decides them)."""
+    from .geometry import rational_arc_plane_box
 
-    The same box as ``plane_bbox`` (the same end points, the same ``sqrt_bounds`` of the squared radius, the same
-    sweep tests), computed on the vectors from the centre times their common denominator: integers, whose signs
-    of cross and dot products are those of the rational vectors, without Fraction arithmetic (most of the time of
-    an arc's box)."""
-    from math import lcm
-
-    from .geometry import sqrt_bounds
-
-    centre = seg.centre
-    if centre is None or seg.plane is None:
-        return None
-    ia, ib, _ = seg.plane_indices()
-    vals: tuple[Any, ...] = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
-    try:
-        dens = [v._denominator for v in vals]
-        nums = [v._numerator for v in vals]
-    except AttributeError:  # not Fractions
-        return None
-    d = lcm(*dens)
-    s0, s1, e0, e1, c0, c1 = (n * (d // q) for n, q in zip(nums, dens))
-    u, w = (s0 - c0, s1 - c1), (e0 - c0, e1 - c1)
-    r2 = u[0] * u[0] + u[1] * u[1]
-    if r2 == 0 or r2 != w[0] * w[0] + w[1] * w[1]:
-        return None  # no radius, or a spiral
-    full = (s0 == e0 and s1 == e1) or seg.turns > 0
-    r_hi = sqrt_bounds(Fraction(r2, d * d), 64)[1]
-    xs, ys = [vals[0], vals[2]], [vals[1], vals[3]]
-    ccw = not seg.clockwise
-    p, q = (u, w) if ccw else (w, u)  # clockwise from u to w is counter-clockwise from w to u
-    for v, out, c, sgn in (((1, 0), xs, centre[0], 1), ((-1, 0), xs, centre[0], -1), ((0, 1), ys, centre[1], 1),
-                           ((0, -1), ys, centre[1], -1)):
-        if full or _ccw_between(p, v, q):
-            out.append(c + sgn * r_hi)
-    return (min(xs), max(xs)), (min(ys), max(ys)), ia, ib
-
-
-def _ccw_between(u: tuple[int, int], v: tuple[int, int], w: tuple[int, int]) -> bool:
-    """``nczones.prover.geometry._angle_le`` on integer vectors: the counter-clockwise angle from ``u`` to ``v`` is at
-    most the one from ``u`` to ``w`` (angles in ``[0, 2 pi)``)."""
-    hv, hw = _int_half(u, v), _int_half(u, w)
-    if hv != hw:
-        return hv < hw
-    return v[0] * w[1] - v[1] * w[0] >= 0
-
-
-def _int_half(u: tuple[int, int], v: tuple[int, int]) -> int:
-    """0 when the counter-clockwise angle from ``u`` to ``v`` is in ``[0, pi)``, else 1."""
-    c = u[0] * v[1] - u[1] * v[0]
-    return 0 if c > 0 or (c == 0 and u[0] * v[0] + u[1] * v[1] > 0) else 1
+    return rational_arc_plane_box(seg)
 
 
 def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
@@ -1376,7 +1348,7 @@ def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
     arc's (of less than a whole turn) half at its start and, at its end, the part from before a quarter of its
     sweep (the planner trims up to two thirds of an arc before a corner, ``blendInit3FromArcLine`` /
     ``ArcArc``: ``phi1_max = angle * 2/3``); the whole box of other motions."""
-    m = tuple((s + e) / 2 for s, e in zip(seg.start, seg.end))
+    m = tuple(map(_mid, seg.start, seg.end))
     p = seg.end if end else seg.start
     if _linear(seg, dogleg):
         return tuple(map(min, m, p)), tuple(map(max, m, p))

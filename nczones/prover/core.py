@@ -56,6 +56,7 @@ from .geometry import (
     line_pieces,
     on_start_ray,
     pi_bounds,
+    rational_arc_plane_box,
     rational_point_on_arc,
     simple_in,
     sqrt_bounds,
@@ -827,20 +828,15 @@ class Prover:
 
     def _check_arc(self, seg: Segment, params: Params) -> Outcome:
         self.stats["pieces"] += 1
+        plane = rational_arc_plane_box(seg) if self.engine == "auto" else None
+        if plane is not None and self._arc_box_fits(seg, plane):
+            return Outcome(engine="exact")  # arc_geom accepts such an arc (a radius): the same answer
         try:
             g = arc_geom(seg)
         except InvalidArgument as exc:
             return Outcome(reason=Reason(f"arc cannot be modelled: {exc}", seg.span, seg.block), engine="unknown")
         if self.engine == "auto":
-            (bx, by) = g.plane_bbox()
-            lo = list(seg.start)
-            hi = list(seg.start)
-            for k in range(len(self.axes)):
-                lo[k], hi[k] = min(seg.start[k], seg.end[k]), max(seg.start[k], seg.end[k])
-            lo[g.ia], hi[g.ia] = bx
-            lo[g.ib], hi[g.ib] = by
-            if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin, seg.tool_length):
-                self.stats["screened"] += 1
+            if plane is None and self._arc_box_fits(seg, (*g.plane_bbox(), g.ia, g.ib)):
                 return Outcome(engine="exact")
             if self.boxable:
                 # exact enclosures of pieces of the sweep (prover/arcs.py): most arcs end here
@@ -873,6 +869,21 @@ class Prover:
                                           "confirmed on the exact path (over-approximation)", seg.span, seg.block),
                             engine="unknown")
         return Outcome(v, engine="z3")
+
+    def _arc_box_fits(self, seg: Segment, plane: tuple) -> bool:
+        """Does the box of ``seg`` (``plane``: ``((lo, hi), (lo, hi), ia, ib)`` of its plane path, the other axes
+        from its ends) fit the allowed set?  Counted as screened when it does.  ``plane`` is
+        ``arc_geom(seg).plane_bbox()`` or :func:`~nczones.prover.geometry.rational_arc_plane_box`, the same box
+        computed in integers."""
+        (bx, by, ia, ib) = plane
+        lo = list(map(min, seg.start, seg.end))
+        hi = list(map(max, seg.start, seg.end))
+        lo[ia], hi[ia] = bx
+        lo[ib], hi[ib] = by
+        if box_fits(self.allowed, dict(zip(self.axes, lo)), dict(zip(self.axes, hi)), self.margin, seg.tool_length):
+            self.stats["screened"] += 1
+            return True
+        return False
 
     def _arc_witness(self, seg: Segment, g: ArcGeom, values: dict[str, Fraction], params: Params) -> Violation | None:
         if not g.exact or g.helix:

@@ -263,6 +263,31 @@ def _sweep_may_hold(s: _SweepVec, e: _SweepVec, ends: Sequence[_SweepVec], v: _S
     return len(seen) != 1 or next(iter(seen))[1]
 
 
+def _axis_sweeps_may_hold(s: _SweepVec, e: _SweepVec, ends: Sequence[_SweepVec], ccw: bool) -> list[bool]:
+    """``_sweep_may_hold(s, e, ends, v, ccw)`` for each direction ``v`` of :data:`_INT_DIRECTIONS`, in order.
+
+    The same tests, with each end's ``u = s - c``, ``w = e - c`` and ``cross(u, w)`` computed once for the four
+    directions (they do not depend on the direction): a zero sign at either end answers "may", otherwise the
+    answer is "may" unless both ends give the same signs and :func:`in_sweep` says no there."""
+    if ends[0] == ends[-1]:
+        return [_sweep_may_hold(s, e, ends, v, ccw) for v, _a, _s in _INT_DIRECTIONS]
+    vecs = []
+    for c in ends:
+        u, w = (s[0] - c[0], s[1] - c[1]), (e[0] - c[0], e[1] - c[1])
+        vecs.append((u, w, _cross(u, w)))
+    out = []
+    for v, _a, _s in _INT_DIRECTIONS:
+        seen: set | None = set()
+        for u, w, uw in vecs:
+            uv, vw = _cross(u, v), _cross(v, w)
+            if uv == 0 or uw == 0 or vw == 0:
+                seen = None
+                break
+            seen.add((uv > 0, uw > 0, vw > 0, in_sweep(u, w, v, ccw, False)))
+        out.append(seen is None or len(seen) != 1 or next(iter(seen))[3])
+    return out
+
+
 #: :data:`_DIRECTIONS` in integers (for :func:`_common_scale`'s points).
 _INT_DIRECTIONS = (((1, 0), 0, 1), ((-1, 0), 0, -1), ((0, 1), 1, 1), ((0, -1), 1, -1))
 
@@ -343,17 +368,27 @@ class ArcGeom:
         return _r_centre_bounds(parts, sqrt_bounds(parts[4], bits))
 
     def r_format_parts(self):
-        """R-format centre = M + k n with k = sign * sqrt(q): returns (Mx, My, nx, ny, q, sign)."""
-        sx, sy = self.s
-        ex, ey = self.e
-        cx, cy = ex - sx, ey - sy
-        l2 = cx * cx + cy * cy
-        r = self.r_signed
+        """R-format centre = M + k n with k = sign * sqrt(q): returns (Mx, My, nx, ny, q, sign).
+
+        ``M = (s + e) / 2``, ``n = (-(ey - sy), ex - sx)`` and ``q = R**2 / |n|**2 - 1/4``, each built from
+        :meth:`_r_scaled`'s integers (the same values as the Fraction formulas)."""
+        d, (s0, s1, e0, e1), (nx, ny), q, sign = self._r_scaled()
+        return Fraction(s0 + e0, 2 * d), Fraction(s1 + e1, 2 * d), Fraction(nx, d), Fraction(ny, d), q, sign
+
+    def _r_scaled(self) -> tuple[int, tuple[int, int, int, int], tuple[int, int], Fraction, int]:
+        """An R-format arc's parts on integers: the common denominator ``d`` of the start and end, the start and
+        end times ``d`` (``s0, s1, e0, e1``), ``n`` times ``d`` (``(s1 - e1, e0 - s0)``), ``q`` (a Fraction:
+        ``R**2 / (|N|**2 / d**2) - 1/4 = (4 R**2 d**2 - |N|**2) / (4 |N|**2)``) and the side's sign."""
+        (sx, sy), (ex, ey), r = self.s, self.e, self.r_signed
         assert r is not None  # an R-format arc (no rational centre) has its signed R
-        q = r * r / l2 - Fraction(1, 4)
-        right = (not self.ccw) != (r < 0)
-        sign = -1 if right else 1
-        return (sx + ex) / 2, (sy + ey) / 2, -cy, cx, q, sign
+        d = lcm(sx.denominator, sy.denominator, ex.denominator, ey.denominator)
+        s0, s1, e0, e1 = (v.numerator * (d // v.denominator) for v in (sx, sy, ex, ey))
+        nx, ny = s1 - e1, e0 - s0
+        nn = nx * nx + ny * ny
+        rn, rd = r.numerator, r.denominator
+        q = Fraction(4 * rn * rn * d * d - rd * rd * nn, 4 * rd * rd * nn)
+        sign = -1 if (not self.ccw) != (r < 0) else 1
+        return d, (s0, s1, e0, e1), (nx, ny), q, sign
 
     def plane_bbox(self, bits: int = 64, sweep: bool = False) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
         """A rational box containing the arc's plane path (exact extremes when rational).
@@ -362,7 +397,9 @@ class ArcGeom:
         extremes its sweep may reach (:func:`_sweep_may_hold`; the Fanuc hull and box route use it).  The
         per-motion solver query keeps the whole circle (a tighter enclosure changes which queries are hard:
         tests/prover/test_limits.py's stand-in for "a query that cannot finish" needs it)."""
-        if self.centre is None:  # centre_bounds: the centre's two bounding points, kept for the sweep below
+        if self.centre is None and sweep:
+            return self._r_sweep_box(bits)
+        if self.centre is None:  # centre_bounds: the centre's two bounding points
             mx, my, nx, ny, q, sign = self.r_format_parts()
             ends = [(mx + sign * k * nx, my + sign * k * ny) for k in sqrt_bounds(q, bits)]
             (cxl, cxh), (cyl, cyh) = (tuple(sorted(p[axis] for p in ends)) for axis in (0, 1))
@@ -375,18 +412,10 @@ class ArcGeom:
             r_hi = sqrt_bounds(self.r2_hi, bits)[1]
         xs = [self.s[0], self.e[0]]
         ys = [self.s[1], self.e[1]]
-        if self.centre is None and not sweep:
+        if self.centre is None:
             # direction tests need the centre: use the whole circle's box (sound)
             xs += [cxl - r_hi, cxh + r_hi]
             ys += [cyl - r_hi, cyh + r_hi]
-        elif self.centre is None:
-            # the exact centre lies on the segment between two rational points (the R-format centre M + k n, k
-            # between sqrt_bounds of q): a direction's extreme is left out only where that settles the sweep
-            (s, e, *ends), axes = _common_scale((self.s, self.e, *ends)), _INT_DIRECTIONS
-            for v, axis, sgn in axes:
-                if _sweep_may_hold(s, e, ends, v, self.ccw):
-                    c = (cxl, cxh) if axis == 0 else (cyl, cyh)
-                    (xs if axis == 0 else ys).append(c[1] + r_hi if sgn > 0 else c[0] - r_hi)
         else:
             c = self.centre
             si, ei, ci = _common_scale((self.s, self.e, c))  # the same signs in integers (_common_scale)
@@ -401,6 +430,36 @@ class ArcGeom:
                 g = 2 * (r_hi - sqrt_bounds(self.r2_lo, bits)[0])
                 return ((min(xs) - g, max(xs) + g), (min(ys) - g, max(ys) + g))
         return ((min(xs), max(xs)), (min(ys), max(ys)))
+
+
+    def _r_sweep_box(self, bits: int) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+        """:meth:`plane_bbox` with ``sweep`` of an R-format arc whose centre is irrational.
+
+        The exact centre lies on the segment between two rational points, ``M + sign k n`` for ``k`` the two
+        :func:`sqrt_bounds` of ``q`` (:meth:`r_format_parts`): a direction's extreme (that end of the segment
+        plus ``r_hi``, the bound of ``|R|``) is left out only where :func:`_sweep_may_hold` settles the sweep.
+        Computed on integers: the start and end times their common denominator ``d`` (``S``, ``E``), ``n`` times
+        ``d`` (``N``), ``q = (4 R**2 d**2 - |N|**2) / (4 |N|**2)`` (the same value as :meth:`r_format_parts`'s,
+        so the same bounds), and every point times ``2 d K`` (``K`` the bounds' common denominator): the centre
+        points ``(S + E) K + 2 sign k_j K N``.  One positive scale for every point keeps every sign of the sweep
+        tests (:func:`_common_scale`), and each bound is the same value as the Fraction formula's."""
+        d, (s0, s1, e0, e1), (nx, ny), q, sign = self._r_scaled()
+        r = self.r_signed
+        assert r is not None  # an R-format arc (no rational centre) has its signed R
+        k_lo, k_hi = sqrt_bounds(q, bits)
+        big_k = lcm(k_lo.denominator, k_hi.denominator)
+        ks = (sign * k_lo.numerator * (big_k // k_lo.denominator), sign * k_hi.numerator * (big_k // k_hi.denominator))
+        mx, my = (s0 + e0) * big_k, (s1 + e1) * big_k
+        ends = [(mx + 2 * k * nx, my + 2 * k * ny) for k in ks]
+        scale = 2 * d * big_k
+        s, e = (2 * big_k * s0, 2 * big_k * s1), (2 * big_k * e0, 2 * big_k * e1)
+        r_hi = sqrt_bounds(r * r, bits)[1]
+        xs, ys = [self.s[0], self.e[0]], [self.s[1], self.e[1]]
+        for (_v, axis, sgn), may in zip(_INT_DIRECTIONS, _axis_sweeps_may_hold(s, e, ends, self.ccw)):
+            if may:
+                pick = max if sgn > 0 else min
+                (xs if axis == 0 else ys).append(Fraction(pick(p[axis] for p in ends), scale) + sgn * r_hi)
+        return (min(xs), max(xs)), (min(ys), max(ys))
 
 
 def _r_centre_bounds(parts: tuple, k_bounds: tuple[Fraction, Fraction]
@@ -594,3 +653,53 @@ def angle_bounds(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], ccw
             a_lo, a_hi = atan_bounds(m_lo)[0], atan_bounds(m_hi)[1]
             return k * pi_lo / 2 + 2 * a_lo, k * pi_hi / 2 + 2 * a_hi
     return F0, 2 * pi_hi
+
+
+def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
+    """``arc_geom(seg).plane_bbox(bits)`` of an arc with a rational centre, with its plane's axis indices:
+    ``((lo, hi), (lo, hi), ia, ib)``; None for other arcs (R format, no plane, a zero radius: ``arc_geom``
+    decides them, raising where it refuses the arc).
+
+    The same box (an equal value, bound for bound) without Fraction arithmetic: the start, end and centre times
+    their common denominator ``d`` are integers (:func:`_common_scale`'s argument: the vectors ``u``, ``w`` from
+    the centre are ``d`` times the rational ones, so every sign of a cross or dot product, hence every answer of
+    :func:`in_sweep` and of the whole-turn test of :func:`on_start_ray`, is the same), and the squared radii are
+    ``|u|**2 / d**2``: the same values, so :func:`sqrt_bounds` gives the same bounds.  A spiral (start and end at
+    different distances) is grown by ``2 (r_hi - r_lo)`` as in :meth:`ArcGeom.plane_bbox`.  Every bound is
+    computed as an integer over one denominator (of the points and the two root bounds): a positive scale keeps
+    the order, so the least and greatest are the scaled ones, and each bound is one Fraction of the same value."""
+    centre = seg.centre
+    if centre is None or seg.plane is None:
+        return None
+    ia, ib, _ = seg.plane_indices()
+    vals: tuple = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
+    try:
+        dens = [v._denominator for v in vals]
+        nums = [v._numerator for v in vals]
+    except AttributeError:  # not Fractions
+        return None
+    d = lcm(*dens)
+    s0, s1, e0, e1, c0, c1 = (n * (d // q) for n, q in zip(nums, dens))
+    u, w = (s0 - c0, s1 - c1), (e0 - c0, e1 - c1)
+    u2, w2 = u[0] * u[0] + u[1] * u[1], w[0] * w[0] + w[1] * w[1]
+    if u2 == 0:
+        return None  # arc_geom refuses it
+    # arc_geom's whole turn: start == end, laps, or the end on the ray through the start (on_start_ray)
+    full = seg.turns > 0 or (_cross(u, w) == 0 and _dot(u, w) > 0)
+    dd = d * d
+    r_hi = sqrt_bounds(Fraction(max(u2, w2), dd), bits)[1]
+    r_lo = sqrt_bounds(Fraction(min(u2, w2), dd), bits)[0] if u2 != w2 else r_hi
+    # every bound on one denominator: the points', r_hi's and r_lo's (integers; one Fraction a bound at the end)
+    big = lcm(d, r_hi.denominator, r_lo.denominator)
+    m = big // d
+    hi = r_hi.numerator * (big // r_hi.denominator)
+    xs, ys = [s0 * m, e0 * m], [s1 * m, e1 * m]
+    ccw = not seg.clockwise
+    for v, axis, sgn in _INT_DIRECTIONS:
+        if in_sweep(u, w, v, ccw, full):
+            (xs if axis == 0 else ys).append((c1 if axis else c0) * m + sgn * hi)
+    # a spiral: every path point is within (r_hi - r_lo) of the circular arc of the start radius, whose box is
+    # within (r_hi - r_lo) of this one (ArcGeom.plane_bbox); 0 for a circle
+    g = 2 * (hi - r_lo.numerator * (big // r_lo.denominator)) if u2 != w2 else 0
+    return ((Fraction(min(xs) - g, big), Fraction(max(xs) + g, big)),
+            (Fraction(min(ys) - g, big), Fraction(max(ys) + g, big)), ia, ib)

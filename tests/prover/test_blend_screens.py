@@ -259,11 +259,11 @@ def _q(n: int, d: int) -> Fraction:
 def arcs(draw) -> Segment:
     """An arc in XY, XZ or YZ (a helix now and then): a rational centre, the start at a rational vector from it,
     the end at the same distance (a symmetry of the vector, or a rational rotation by the 3-4-5 triangle), or a
-    little farther (a spiral), or at the start (a whole turn)."""
+    little farther (a spiral; on the start's ray: a whole spiral turn), or at the start (a whole turn)."""
     d = draw(_DENS)
     c = (_q(draw(st.integers(-10**6, 10**6)), d), _q(draw(st.integers(-10**6, 10**6)), d))
     u = (_q(draw(st.integers(-10**5, 10**5)), d), _q(draw(st.integers(-10**5, 10**5)), d))
-    how = draw(st.sampled_from(["flip", "swap", "rotate", "spiral", "full"]))
+    how = draw(st.sampled_from(["flip", "swap", "rotate", "spiral", "full", "ray"]))
     sx, sy = draw(st.sampled_from([1, -1])), draw(st.sampled_from([1, -1]))
     if how == "flip":
         w = (sx * u[0], sy * u[1])
@@ -273,6 +273,8 @@ def arcs(draw) -> Segment:
         w = ((3 * u[0] - sx * 4 * u[1]) / 5, (sx * 4 * u[0] + 3 * u[1]) / 5)
     elif how == "spiral":
         w = (u[0] * Fraction(1001, 1000), u[1])
+    elif how == "ray":  # LinuxCNC's whole spiral turn (on_start_ray)
+        w = (u[0] * Fraction(1001, 1000), u[1] * Fraction(1001, 1000))
     else:
         w = u
     plane = draw(st.sampled_from([Plane.XY, Plane.XZ, Plane.YZ]))
@@ -295,10 +297,9 @@ def test_the_integer_arc_box_is_plane_bbox(seg):
         assert blend._arc_plane_box(seg) is None
         return
     got = blend._arc_plane_box(seg)
-    if g.r2_lo != g.r2_hi:  # a spiral: plane_bbox's annulus, through arc_geom
-        assert got is None
-        return
+    # circles, spirals (plane_bbox's annulus) and whole turns alike: the same bounds, exactly
     assert got == (*g.plane_bbox(), g.ia, g.ib)
+    assert got == (*g.plane_bbox(sweep=True), g.ia, g.ib)
     lo, hi = blend._piece_box(seg)
     assert (lo[g.ia], hi[g.ia]) == g.plane_bbox()[0] and (lo[g.ib], hi[g.ib]) == g.plane_bbox()[1]
 
@@ -316,6 +317,14 @@ def test_the_fast_comparisons_are_fractions_own(a, b):
     assert blend._lo(a, b) == min(a, b) and blend._hi(a, b) == max(a, b)
     assert blend._same((a, b), (a, b)) and blend._same((a, b), (Fraction(a), Fraction(b)))
     assert blend._same((a, b), (b, a)) == (a == b)
+
+
+@settings(max_examples=300, deadline=None)
+@given(a=_NUMBERS, b=_NUMBERS, c=_NUMBERS)
+def test_the_one_fraction_sums_are_fractions_own(a, b, c):
+    """The half boxes' midpoints and the screen's Minkowski sums, each one Fraction from the parts (arcs38)."""
+    assert blend._mid(a, b) == (a + b) / 2 and type(blend._mid(a, b)) is type((a + b) / 2)
+    assert blend._plus_less(a, b, c) == a + b - c
 
 
 # ---------------------------------------------------------------------------------------------- the lazy check
