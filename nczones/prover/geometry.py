@@ -277,14 +277,15 @@ def _axis_sweeps_may_hold(s: _SweepVec, e: _SweepVec, ends: Sequence[_SweepVec],
         vecs.append((u, w, _cross(u, w)))
     out = []
     for v, _a, _s in _INT_DIRECTIONS:
-        seen: set | None = set()
+        seen: set = set()
+        zero = False
         for u, w, uw in vecs:
             uv, vw = _cross(u, v), _cross(v, w)
             if uv == 0 or uw == 0 or vw == 0:
-                seen = None
+                zero = True
                 break
             seen.add((uv > 0, uw > 0, vw > 0, in_sweep(u, w, v, ccw, False)))
-        out.append(seen is None or len(seen) != 1 or next(iter(seen))[3])
+        out.append(zero or len(seen) != 1 or next(iter(seen))[3])
     return out
 
 

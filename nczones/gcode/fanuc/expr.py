@@ -451,7 +451,7 @@ def _integer_fast(value: Value, kind: str) -> int | None:
     a = d if d >= 0.0 else -d
     if a >= _LARGE:
         return None
-    m = _floor(a)
+    m: int = _floor(a)
     frac = a - m
     w = a * _WINDOW_READINGS + _TINY
     if kind == "round":
@@ -732,8 +732,8 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
     if name == "sqrt":
         if d < 0.0:
             raise EvalError("GC312", f"negative argument to SQRT: {d!r}")
-        r = math.sqrt(d)
-        return (r, Fraction(int(r)) if r == int(r) else None)
+        root = math.sqrt(d)
+        return (root, Fraction(int(root)) if root == int(root) else None)
     if name == "ln":
         if d <= 0.0:
             raise EvalError("GC312", f"zero or negative argument to LN: {d!r}")

@@ -159,7 +159,7 @@ _GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 6: "units", 7: "comp", 8
 #: and I).  The full path's arc is clockwise (G2) or not in the plane of those two axes in that order, and
 #: :mod:`.double_arcs` takes the two as its x and y: the same orientation, in every plane.
 _CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
-_ARC_PLANES = {int(p): (a, b, _CENTRE_WORDS[a] + _CENTRE_WORDS[b]) for p, (a, b, _n) in PLANE_AXES.items()}
+_ARC_PLANES = {int(p): (a, b, (_CENTRE_WORDS[a], _CENTRE_WORDS[b])) for p, (a, b, _n) in PLANE_AXES.items()}
 _GROUPS = {k // 10 if k % 10 == 0 else -k: _GROUP_NAMES[LINUXCNC_G[k].group or 0]
            for k in sorted(claimed(LINUXCNC_G, LANE_DOUBLES))}
 
