@@ -113,10 +113,10 @@ def osub(n: int, seed: int, spread: float = 5.0) -> str:
 
 
 def declined(n: int, seed: int, spread: float = 5.0) -> str:
-    """About ``n`` lines with an expression on each, the spindle started and G91.1 (a code the double pass
-    does not follow, so the full path reads the program), a parameter changed every tenth line."""
+    """About ``n`` lines with an expression on each, the spindle started and G64 P0.01 (a path tolerance the
+    double pass does not follow, so the full path reads the program), a parameter changed every tenth line."""
     rnd = random.Random(seed)
-    out = ["G21 G90 G17 G54 F800", "S1000 M3", "G91.1", "#1 = 0", "#2 = 0"]
+    out = ["G21 G90 G17 G54 F800", "S1000 M3", "G64 P0.01", "#1 = 0", "#2 = 0"]
     while len(out) < n:
         if len(out) % 10 == 0:
             out.append(f"#1 = [#1 + {rnd.uniform(-spread, spread):.3f}]")

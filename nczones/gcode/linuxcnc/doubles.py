@@ -45,7 +45,8 @@ call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
 ``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G4 G17
-G18 G19 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G94 with literal codes, F, X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5
+G18 G19 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G91.1 (written out: the
+full path's and LinuxCNC's start-up arc-centre mode, which the pass assumes) G94 with literal codes, F, X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5
 M7 M8 M9 a block, and M2/M30 alone to end; plain comments.  A tool: ``T<n>``, ``M6`` and ``M61 Q<n>`` with
 literal numbers (:meth:`_Pass._tool_change`: nothing the pass computes reads the tool in the spindle; M6 on a
 machine whose tool change moves, ``[machine] tool_change_*``, declines).  A dwell: ``G4 P<seconds>`` (P
@@ -151,8 +152,8 @@ PIECE = 1 << 20
 MAX_STEPS = 1 << 16
 WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: The G codes the pass follows (the code table's ``doubles`` claims), by modal group: a whole number ``n`` as
-#: ``n``, ``n.1`` (G61.1) as ``-(10 n + 1)`` (:func:`_code`).
-_GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 6: "units", 7: "comp", 8: "tool", 3: "distance",
+#: ``n``, ``n.1`` (G61.1, G91.1) as ``-(10 n + 1)`` (:func:`_code`).
+_GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 4: "arc distance", 6: "units", 7: "comp", 8: "tool", 3: "distance",
                 5: "feedmode", 12: "offset", 13: "path"}
 #: Per plane code: the arc's (first, second) axes and their centre words, the full path's ``PLANE_AXES``
 #: (``Interpreter.arc``; LinuxCNC's ARC_FEED order: G18's first axis is Z, its second X, its centre words K
@@ -179,7 +180,7 @@ _LETTERS = frozenset("GMFSXYZIJKRHTPQ")
 #: read like a G or M code).
 _CODE_LETTERS = "GMHTQ"
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
-_CODE_TENTH = re.compile(r"0*(61)\.10*")  # G61.1, the only code n.1 the pass follows
+_CODE_TENTH = re.compile(r"0*(61|91)\.10*")  # G61.1 and G91.1, the codes n.1 the pass follows
 #: A line of words of a letter and a number only (:meth:`_Pass._plain`; the parser's ``_NUMBER``), and a word.
 _PLAIN = re.compile(r"[ \t]*(?:[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)[ \t]*)+")
 _PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
@@ -1538,8 +1539,8 @@ _G61_1 = Fraction(611, 10)
 
 
 def _code(text: str) -> int:
-    """The integer a G or M literal names (``01``, ``1.``, ``1.000``; ``61.1`` as -611, :data:`_GROUPS`: G61.1
-    is the only code with a decimal the pass follows); declines any other."""
+    """The integer a G or M literal names (``01``, ``1.``, ``1.000``; ``61.1`` as -611 and ``91.1`` as -911,
+    :data:`_GROUPS`: G61.1 and G91.1 are the codes with a decimal the pass follows); declines any other."""
     c = _CODES.get(text)
     if c is None:
         m = _CODE_TEXT.fullmatch(text)
