@@ -266,14 +266,9 @@ class Interpretation:
 
     def assumed_modal_text(self) -> list[str]:
         """Human-readable lines for the report."""
-        named = set(self.interpreter.machine.modal)
-        from .interpreter import MODAL_GROUP_NAMES
+        from .runner_common import assumed_modal_notes
 
-        return [f"{MODAL_GROUP_NAMES[g]}: assumed {c} "
-                + ("from the machine file" if g != "retract" or named & {"G98", "G99"} else
-                   f"(the {self.interpreter.dialect} control's start-up mode; name G98 or G99 in [machine] modal "
-                   "if the control starts otherwise)")
-                for g, c in self.assumed_modal.items()]
+        return assumed_modal_notes(self.assumed_modal.items(), self.interpreter.machine.modal, self.interpreter.dialect)
 
     @property
     def counts(self) -> dict[str, int]:

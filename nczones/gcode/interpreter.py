@@ -76,7 +76,7 @@ from .linuxcnc.state import (
     linuxcnc_state_parameters,
 )
 from .passes import PassGuard
-from .runner_common import DEFAULT_MAX_LOOP_ITERATIONS, interpretation_spent
+from .runner_common import DEFAULT_MAX_LOOP_ITERATIONS, MODAL_GROUP_NAMES, interpretation_spent
 from .segments import dadd, make_segment, with_tool_deps
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
@@ -135,11 +135,6 @@ _WCS_BY_KEY = {540: "G54", 550: "G55", 560: "G56", 570: "G57", 580: "G58", 590: 
 # G codes keyed by 10 * number (G59.1 -> 591); their modal groups from the dialect's code table.
 GROUP_OF: dict[int, int] = modal_groups(LINUXCNC_G)
 
-#: Names of the modal groups the report mentions when the program never set them.
-MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90/G91)",
-                     "offset": "work offset (G54..G59.3)", "plane": "plane (G17/G18/G19)",
-                     "feed": "feed mode (G93/G94/G95)", "tool": "tool length (G43/G49)",
-                     "retract": "retract mode (G98/G99)"}
 
 # Codes that cannot be modelled exactly: key -> reason.
 UNSUPPORTED_G = {

@@ -19,9 +19,35 @@ if TYPE_CHECKING:
     from typing import Any
 
 __all__ = ["DEFAULT_MAX_LOOP_ITERATIONS", "WATCHED_LIMITS", "interpretation_spent", "UnsupportedGcode",
-           "IterationBoundExceeded", "LineSource", "StringSource", "FastRunRequest"]
+           "IterationBoundExceeded", "LineSource", "StringSource", "FastRunRequest", "MODAL_GROUP_NAMES",
+           "assumed_modal_notes"]
 
 DEFAULT_MAX_LOOP_ITERATIONS = 100_000
+
+#: Names of the modal groups the report mentions when the program never set them.
+MODAL_GROUP_NAMES = {"units": "units (G20/G21)", "distance": "distance mode (G90/G91)",
+                     "offset": "work offset (G54..G59.3)", "plane": "plane (G17/G18/G19)",
+                     "feed": "feed mode (G93/G94/G95)", "tool": "tool length (G43/G49)",
+                     "retract": "retract mode (G98/G99)"}
+
+
+def assumed_modal_notes(assumed: Any, modal: Any, dialect: str) -> list[str]:
+    """The report's lines for the modal groups a run assumed: ``assumed`` ``(group, code)`` pairs in the order
+    they were noted, ``modal`` the machine file's start-up codes, ``dialect`` the control's.  The interpreter's
+    (:meth:`nczones.gcode.Interpretation.assumed_modal_text`) and the LinuxCNC double pass's
+    (:attr:`nczones.gcode.linuxcnc.doubles.DoublePath.assumed`) lines are these.
+
+    >>> assumed_modal_notes([("offset", "G54")], ["G21"], "linuxcnc")
+    ['work offset (G54..G59.3): assumed G54 from the machine file']
+    >>> assumed_modal_notes([("retract", "G98")], [], "fanuc")[0].split(": ")[1][:38]
+    "assumed G98 (the fanuc control's start"
+    """
+    named = set(modal)
+    return [f"{MODAL_GROUP_NAMES[g]}: assumed {c} "
+            + ("from the machine file" if g != "retract" or named & {"G98", "G99"} else
+               f"(the {dialect} control's start-up mode; name G98 or G99 in [machine] modal "
+               "if the control starts otherwise)")
+            for g, c in assumed]
 
 #: The run limits (:class:`nczones.prover.limits.RunLimits`) whose ``watch()`` block is executing: interpretation
 #: is lazy, it runs inside that block, and its repetitions ask :func:`interpretation_spent`.

@@ -229,6 +229,7 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
     its boxes do not prove the program (the caller then runs the full path).  ``started`` is when the pass
     began (:func:`time.perf_counter`), for the timings; ``windows`` the proof of the windows the pass handed
     over before ``path``, its last."""
+    from ..gcode.runner_common import assumed_modal_notes
     from .smt import z3_version
 
     if declares_solids(machine):
@@ -252,6 +253,8 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
     counts = {"blocks": path.blocks, "segments": n, "fast_lines": 0, "line": path.lines,
               "arc": getattr(path, "arcs", 0), "rapid": path.rapids, "dwell": getattr(path, "dwells", 0), "developed_arc": 0, "spline": 0,
               "polar": 0}
-    return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(),
+    # the full path's notes of the program (the pass's invariant: no others): the modal groups it assumed
+    notes = tuple(assumed_modal_notes(getattr(path, "assumed", ()), machine.modal, "linuxcnc"))
+    return Result(verdict=Verdict.SAFE, solver="z3", solver_version=z3_version(), notes=notes,
                   timings=(("prove_s", seconds),), stats=stats, margin=margin, engine="auto",
                   extra={"counts": counts, "splits": ()}, profile=profile)

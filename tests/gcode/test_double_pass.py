@@ -23,6 +23,7 @@ from nczones.gcode import interpret_text
 from nczones.gcode.expr import binary_op
 from nczones.gcode.linuxcnc import doubles
 from nczones.gcode.linuxcnc.doubles import Declined, DoublePath, double_pass
+from nczones.gcode.runner_common import assumed_modal_notes
 from nczones.machine import parse_machine
 from nczones.motion import PLANE_AXES, PathMode, SegmentKind
 from tests.gcode.rs274_arc_programs import in_plane
@@ -62,7 +63,9 @@ def check_against_full(text: str, machine, max_iterations: int = 1000) -> Double
     run = interpret_text(text, machine, max_loop_iterations=max_iterations)
     segments = list(run.segments())
     assert run.status == "complete", run.unsupported
-    assert run.assumed_modal_text() == [] and run.notes() == []
+    # the only notes: the modal groups the program left to the machine file, the same as the pass's
+    assert run.assumed_modal_text() == assumed_modal_notes(path.assumed, machine.modal, "linuxcnc")
+    assert run.notes() == []
     assert len(segments) == path.motions
     assert run.counts["blocks"] == path.blocks
     axes = machine.axis_names
@@ -286,7 +289,7 @@ def statements(draw, depth: int, labels: list[int]) -> list[str]:
 def parametric_programs(draw) -> str:
     head = draw(st.sampled_from(["G21 G90 G54 F300 G1", "G21 G90 G17 G54 G94 F800 G0", "G90 G54 F300", "G21 G90 G55 F50 G1",
                                  "G21 G90 G54 G0", "G21 G90 G54 F100 G1", "G21 G90 G17 G54 F300 G1",
-                                 "G21 G90 G17 G54 G43 H1 F300 G1"]))
+                                 "G21 G90 G17 G54 G43 H1 F300 G1", "F300 G1", "G90 F300", "G21 G54 F300 G1"]))
     if draw(st.integers(0, 4)):
         head += "\n#<a> = 1.5\n#<b> = [#<a> * 2]"
     labels: list[int] = []
@@ -302,7 +305,8 @@ def machines(draw, tools: bool = False):
         return tuple(draw(st.sampled_from(["0", "10", "-2.5", "0.1", "1000.0001"])) for _ in range(3))
 
     offsets = {name: triple() for name in ("G54", "G55", "G57") if draw(st.booleans())}
-    modal = draw(st.sampled_from([None] * 12 + ['["G21", "G90", "G17", "G55"]', '["G20"]', '["G91"]']))
+    modal = draw(st.sampled_from([None] * 12 + ['["G21", "G90", "G17", "G55"]', '["G20"]', '["G91"]',
+                                                '["G21", "G90", "G18", "G56"]']))
     lengths = draw(st.sampled_from(["", '[tool_lengths]\nH1 = "100"\n', '[tool_lengths]\nH1 = "-12.3456789"\n'][tools:]))
     keys = draw(st.sampled_from([""] * 6 + ['path_mode = "G61"', 'path_mode = "G61.1"', 'path_tolerance = "0.01"']))
     return parse_machine(machine_text(offsets, triple(), modal, extra=lengths, keys=keys))
@@ -320,7 +324,7 @@ def arc_programs(draw) -> str:
     """Programs of arcs (:func:`arcs`) and G43 after a head that sets the plane, most of them in the subset."""
     head = draw(st.sampled_from(["G21 G90 G17 G54 F300", "G21 G90 G17 G54 G43 H1 F800 G1", "G17 G21 G90 G55 F50",
                                  "G21 G90 G17 G54 F300", "G21 G90 G17 G54 F300", "G21 G90 G17 G54 F300",
-                                 "G21 G90 G54 F300"]))
+                                 "G21 G90 G54 F300", "F300", "G90 G54 F300"]))
     body = [line for _ in range(draw(st.integers(1, 4))) for line in draw(arcs())]
     plane = draw(st.sampled_from([17, 17, 18, 19]))
     if plane != 17:  # the same program in G18 or G19: (X, Y, Z, I, J) to the plane's (first, second, normal)
@@ -368,6 +372,31 @@ def test_programs_the_pass_follows(name):
     assert path.motions > 0
 
 
+ASSUMED = {  # a program that leaves modal groups to the machine file: the groups the full path notes, in order
+    "no header": ("F100\n#1 = 1\nG1 X#1 Y2\nG2 X3 Y2 R2\nM30\n", None,
+                  (("units", "G21"), ("distance", "G90"), ("offset", "G54"), ("plane", "G17"))),
+    "an arc before G17": ("G21 G90 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", None, (("plane", "G17"),)),
+    "a G55 machine": ("G21 F100\n#1 = 1\nG0 X#1\nG54 G90 G1 Y1\n", '["G55"]',
+                      (("distance", "G90"), ("offset", "G55"))),
+    "a G18 machine": ("G90 G21 G54 F100\n#1 = 1\nG1 X#1\nG2 X3 Z0 R2\nG3 X4 Z1 R2\n", '["G18"]',
+                      (("plane", "G18"),)),
+    "a plane set before the first arc": ("F100\n#1 = 1\nG1 X#1\nG18\nG2 X3 Z0 R2\n", None,
+                                         (("units", "G21"), ("distance", "G90"), ("offset", "G54"))),
+    "a dwell first": ("F100\n#1 = 1\nG4 P1\nG21 G90\nG1 X#1\n", None, (("offset", "G54"),)),
+    "no units": ("G90 G54 F100\n#1 = 1\nG1 X#1\n", None, (("units", "G21"),)),
+}
+
+
+@pytest.mark.parametrize("name", sorted(ASSUMED))
+def test_the_pass_notes_the_groups_it_assumed(name):
+    """Each group the program left to the machine file, at the first motion that needs it (an arc: the plane
+    too), with the machine file's code; the full path's notes are the same (:func:`check_against_full`)."""
+    text, modal, assumed = ASSUMED[name]
+    path = check_against_full(text, parse_machine(machine_text(modal=modal)))
+    assert path is not None, "declined"
+    assert path.assumed == assumed
+
+
 def test_the_rows_are_the_controllers_doubles():
     path = check_against_full("G21 G90 G54 F100\nG1 X[0.1 + 0.2] Y[1 / 3]\n#1 = 0.1\nG1 X[#1 * 3]\n", MACHINE)
     assert path is not None
@@ -400,7 +429,6 @@ DECLINED = {
     "a global name": ("G21 G90 G54 F100\n#<_a> = 1\nG1 X#<_a>\n", "global"),
     "no feed": ("G21 G90 G54\n#1 = 1\nG1 X#1\n", "feed"),
     "feed zero": ("G21 G90 G54 F0\n#1 = 1\nG0 X#1\n", "feed"),
-    "no units": ("G90 G54 F100\n#1 = 1\nG1 X#1\n", "units"),
     "a message": ("G21 G90 G54 F100\n#1 = 1\n(MSG, hello)\nG1 X#1\n", "magic"),
     "division by zero": ("G21 G90 G54 F100\n#1 = [1 / 0]\nG1 X#1\n", "division"),
     # the pass follows a sub defined before its call (issue 36: tests/gcode/test_double_pass_calls.py), not
@@ -421,7 +449,6 @@ DECLINED = {
     "two motions": ("G21 G90 G54 F100\n#1 = 1\nG0 G1 X2\n", "modal group"),
     "a tool length not in the machine": ("G21 G90 G54 F100\n#1 = 1\nG43 H1\nG1 X#1\n", "H register"),
     "an H word alone": ("G21 G90 G54 F100\n#1 = 1\nH1\nG1 X#1\n", "H word without G43"),
-    "an arc before G17": ("G21 G90 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "sets the plane"),
     "a J word in G18": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 I1 J1\n", "centre word other than K and I"),
     "an I word in G19": ("G21 G90 G19 G54 F100\n#1 = 1\nG2 Y1 Z1 I1\n", "centre word other than J and K"),
     "arcs in two planes": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 R5\nG17 G2 X1 Y1 R5\n", "two planes"),

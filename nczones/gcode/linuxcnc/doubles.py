@@ -57,14 +57,17 @@ and their rows are the same in every mode (the full path emits every motion; whi
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
 program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
 chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  Arcs: in
-the plane the program has set (G17, G18 or G19; the arcs of one plane a program, ``DoublePath.arc_axes``), on a
+the plane the program has set, or the machine file's (G17, G18 or G19; the arcs of one plane a program,
+``DoublePath.arc_axes``), on a
 machine with the plane's axes, with the plane's centre words (G17 I/J, G18 K/I, G19 J/K: G91.1, LinuxCNC's
 default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
-``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  Everything else declines:
+``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  A motion while the units, distance mode or work offset (an arc: also the
+plane) are still the machine file's runs in the machine file's codes, as the full path's does, which notes each
+such group at the first motion that needs it: the pass records the same notes (:attr:`DoublePath.assumed`).
+Everything else declines:
 other codes and words, G64 P or Q, G20 (and a machine that starts in it or in G91), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
-loops, a motion while the units, distance mode or work offset are still the machine
-file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
+loops, a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error; an arc in a second plane, with P or the centre
 word of the plane's normal, without axis words or a centre, of a radius about 0, with ends near or past
 the arc tolerance, an R arc of a chord about
@@ -82,7 +85,8 @@ sub whose body has no ``#`` (no parameter read or written in it, nor in the argu
 cannot see its call frame: it is called without one (``tests/gcode/test_double_pass_frames.py``).
 
 Invariant (``tests/gcode/test_double_pass.py``): whenever the pass returns, the full interpreter's run of
-the same program on the same machine completes with no unknown code, no error and no notes, with the same
+the same program on the same machine completes with no unknown code, no error and no notes but those of the
+modal groups it assumed (the same as :attr:`DoublePath.assumed`), with the same
 number of motions (as many rapids, arcs and dwells), and the end point of its k-th motion lies in the box of
 the pass's k-th row widened by the bound (an arc: its every point, at both radii of a spiral, in
 :meth:`DoublePath.enclosure` of its row); its corner check blends the corner between motions k and k + 1
@@ -244,6 +248,10 @@ class DoublePath:
     #: per axis, a bound (mm) of the G91 chains' error of these rows (:meth:`_Pass._straight_ends`), added to the
     #: module's bound; ``()``: none
     inc_bound: tuple[float, ...] = ()
+    #: ``(group, code)`` of the modal groups the program had not set at a motion that needs them, in the order the
+    #: full path notes them (``Interpreter.note_assumed``; ``units``, ``distance``, ``offset``, ``plane``): the
+    #: machine file's codes, which the run assumed (:meth:`_Pass.assume`)
+    assumed: tuple[tuple[str, str], ...] = ()
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -439,6 +447,9 @@ class _Pass:
         self._arcs_state(machine, arc_tolerance)
         self._modes_state(machine)
         self.unset = set(_NOTED)
+        #: the groups assumed at a motion and their codes (DoublePath.assumed); what each starts as on the full path
+        self.assumed: dict[str, str] = {}
+        self.start_codes = {"units": "G21", "distance": "G90", "offset": wcs}
         self.motion: int | None = None
         self.feed = 0.0
         self.start = tuple(machine.start)
@@ -612,7 +623,7 @@ class _Pass:
                           motions - self.rapids - arcs - self.dwells, self.rapids, self.blocks, self.start,
                           tuple(self.first_row), self.row0, arcs, self.arc_rows, self.arc_axes, self.arc_boxes,
                           (self.arc_words, self.offb, self.rule), self.dwells, self.dwell_rows, tuple(self.modes),
-                          tuple(self.xerr))
+                          tuple(self.xerr), tuple(self.assumed.items()))
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -1041,6 +1052,8 @@ class _Pass:
         #: the plane the program has set (17, 18, 19; 0 before it sets one: the full path notes the plane at an
         #: arc then)
         self.plane = 0
+        modal = machine.modal
+        self.start_plane = 18 if "G18" in modal else 19 if "G19" in modal else 17  # the full path's start
         self.tiny_pad = float(max(self.offset_bound, default=Fraction(0))) * 1e-14  # the rows' offset term
         self.rule = radius_rule(arc_tolerance)
         #: the plane of the arcs so far (0: none yet) and its two axes (first, second: ``_ARC_PLANES``); the
@@ -1053,6 +1066,22 @@ class _Pass:
         self.arc_rows = array("q")
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
         self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
+
+    def assume(self) -> None:
+        """A motion while the units, distance mode or work offset are still the machine file's: the full path
+        notes each such group at its first motion (``Interpreter.note_assumed``, in this order) and runs on with
+        the machine file's code, as the pass does; the notes are the path's (:attr:`DoublePath.assumed`)."""
+        for group in ("units", "distance", "offset"):
+            if group in self.unset:
+                self.assumed[group] = self.start_codes[group]
+        self.unset.clear()
+
+    def assume_plane(self) -> int:
+        """An arc before the program sets the plane: the machine file's plane, noted as the full path notes it
+        (after the groups of :meth:`assume`), and in force from here on."""
+        self.assumed["plane"] = f"G{self.start_plane}"
+        self.plane = self.start_plane
+        return self.plane
 
     def arc_in(self, plane: int) -> None:
         """The first arc, in ``plane``: its axes are the arcs' (:attr:`DoublePath.arc_axes`); an arc in another
@@ -1387,10 +1416,9 @@ class _Pass:
             body += ["if mode < 2 or not st.feed > 0.0: "
                      "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
                      "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
-        body += ["if unset: raise D('a motion before the program sets units, distance mode and work offset')",
-                 "off = st.off"]
+        body += ["if unset: st.assume()", "off = st.off"]
         if arc:
-            body.append("pl = st.plane")
+            body.append("pl = st.plane or st.assume_plane()")
             for n, plane in enumerate(sorted(_ARC_PLANES)):
                 body.append(f"{'el' if n else ''}if pl == {plane}:")
                 body += [f"    {b}" for b in self._arc_plane_body(others, axes, plane)]
