@@ -42,14 +42,16 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
     boxes of :data:`FIRST_BOX` motions).
 
     Corner blending (``specs/path-modes.md``): the pass's programs start in the machine's start-up path mode
-    and may write G61, G61.1 and G64 without P (``path.modes``; G64 P declines).  In G64 without tolerance a
+    and may write G61, G61.1 and G64 without P (``path.modes``) or with P alone.  In G64 without tolerance a
     rounded corner between two straight motions uses at most half of each, so it lies in the box of the two:
     a corner inside a box is proved with it, and every corner between two boxes is proved on its own
     (:func:`_corner_fits`) unless the full path has no corner there (:meth:`~nczones.gcode.linuxcnc.doubles.
     DoublePath.blended`: the motion before it in exact stop, a dwell on either side; the exact-stop path is the
     programmed one, which the boxes hold).  With the machine's ``path_tolerance`` (``G64 P p``, whose Q is p)
     the path stays within ``2 p`` of the programmed one: the margin grows by that much for every motion, a
-    superset for those the program runs in another mode (a path with arcs is left to the full path there).
+    superset for those the program runs in another mode (a path with arcs is left to the full path there).  The
+    program's own ``G64 P p`` likewise (``path.tolerance``, at or above ``2 p``, from the window that holds its
+    first motion in that mode on: an earlier window's motions ran in the modes before it).
 
     Arcs: the pass keeps a quick box of each arc (a screen, :mod:`~nczones.gcode.linuxcnc.double_arcs`); a box
     with arcs that does not fit (and a corner next to one) is tried again with its arcs' sweep boxes
@@ -67,6 +69,11 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
         if arcs:
             return None  # blends of arcs with a tolerance: the full path's (prover/blend.py)
         margin += 2 * machine.path_tolerance
+    tolerance = getattr(path, "tolerance", 0.0)  # the program's G64 P: every motion within it of its path
+    if tolerance:
+        if arcs:
+            return None  # as above
+        margin += Fraction(tolerance)
     blended = getattr(path, "blended", None) if getattr(path, "modes", ()) else None
     allowed = machine.allowed
     zero = Fraction(0)

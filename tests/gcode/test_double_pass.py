@@ -241,7 +241,8 @@ def arcs(draw) -> list[str]:
 TOOLS_AND_MODES = ["T1 M6", "T2", "M6", "T03 M06 G43 H1", "M61 Q3", "M6 M3 T1", "T1 M6 G1 X[#1] F100", "G4 P0.5",
                    "G4 P[ABS[#1] + 0.1]", "G4 P[#1]", "G04 P1 M9", "G61", "G61.1", "G64", "G64 G1 X[#1 / 3]",
                    "G61 G0 Z[#2]", "G61.1 X[#1 + 0.0000001]", "G1 X[#1 + 0.0000001]", "G91", "G90", "G91 G1 X[#1]",
-                   "G91 G0 Z[-#1] Y0.1", "G90 G1 X[#1] Y[#2] Z0"]
+                   "G91 G0 Z[-#1] Y0.1", "G90 G1 X[#1] Y[#2] Z0", "G64 P0.01", "G64 P[ABS[#1] + 0.5]",
+                   "G64 P0.01 G1 X[#1]", "G64 P0", "G64 P0.1 Q0.1", "G4 P1 G64 P1", "G64 P[#1]"]
 #: Lines outside the subset (each must make the pass decline, or the full path agree with it).
 OUTSIDE = ["G2 X1 Y1 R5", "G43 H2", "G43", "H1", "G43 H0", "G49", "G19", "G91", "G20", "M3 S1000", "#4 = #5221", "G43 H1", "T1 M6", "G10 L2 P1 X3",
            "G92 X0", "(MSG, hello)", "(DEBUG, #1)", "G59.1", "G53 G0 X1", "G64 P0.01", "#4 = #<_x>", "G4 P1",
@@ -423,7 +424,7 @@ DECLINED = {
     "G4 without P": ("G21 G90 G54 F100\n#1 = 1\nG4\nG1 X1\n", "G4 without P"),
     "G4 with an axis word": ("G21 G90 G54 F100\n#1 = 1\nG4 P1 X1\n", "G4 with axis words"),
     "a dwell of no time": ("G21 G90 G54 F100\n#1 = 0\nG4 P#1\nG1 X1\n", "not positive"),
-    "G64 P": ("G21 G90 G54 F100\n#1 = 1\nG64 P0.01\nG1 X1\n", "word P"),
+    "G64 P and Q": ("G21 G90 G54 F100\n#1 = 1\nG64 P0.01 Q0.01\nG1 X1\n", "code 0.01"),
     "G61.2": ("G21 G90 G54 F100\n#1 = 1\nG61.2\nG1 X1\n", "code"),
     "state read": ("G21 G90 G54 F100\n#1 = #5221\nG1 X#1\n", "parameter"),
     "a global name": ("G21 G90 G54 F100\n#<_a> = 1\nG1 X#<_a>\n", "global"),

@@ -52,7 +52,8 @@ literal numbers (:meth:`_Pass._tool_change`: nothing the pass computes reads the
 machine whose tool change moves, ``[machine] tool_change_*``, declines).  A dwell: ``G4 P<seconds>`` (P
 above 0, no axis word) is a row where the machine stands, as the full path's ``DWELL`` segment.  The path
 mode: G61, G61.1 and G64 without P or Q (:attr:`DoublePath.modes`, from the next motion on, its block's
-included), which with the dwells say which corners LinuxCNC blends (:meth:`DoublePath.blended`); the motions
+included), and ``G64 P<p>`` without Q (p above 0: its motions blend within ``2p`` of the programmed path,
+:attr:`DoublePath.tolerance`, which the proof adds to the margin of every motion), which with the dwells say which corners LinuxCNC blends (:meth:`DoublePath.blended`); the motions
 and their rows are the same in every mode (the full path emits every motion; which ones LinuxCNC drops in a
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
 program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
@@ -65,7 +66,7 @@ default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the ma
 plane) are still the machine file's runs in the machine file's codes, as the full path's does, which notes each
 such group at the first motion that needs it: the pass records the same notes (:attr:`DoublePath.assumed`).
 Everything else declines:
-other codes and words, G64 P or Q, G20 (and a machine that starts in it or in G91), block delete, magic comments,
+other codes and words, G64 with Q or with P not above 0, G20 (and a machine that starts in it or in G91), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error; an arc in a second plane, with P or the centre
@@ -252,6 +253,9 @@ class DoublePath:
     #: full path notes them (``Interpreter.note_assumed``; ``units``, ``distance``, ``offset``, ``plane``): the
     #: machine file's codes, which the run assumed (:meth:`_Pass.assume`)
     assumed: tuple[tuple[str, str], ...] = ()
+    #: a bound (mm, at or above ``p + q``) of how far the program's ``G64 P p`` (its Q is p) lets any motion
+    #: blend off the programmed path (:meth:`_Pass.tolerance`); 0.0: the program wrote none
+    tolerance: float = 0.0
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -623,7 +627,7 @@ class _Pass:
                           motions - self.rapids - arcs - self.dwells, self.rapids, self.blocks, self.start,
                           tuple(self.first_row), self.row0, arcs, self.arc_rows, self.arc_axes, self.arc_boxes,
                           (self.arc_words, self.offb, self.rule), self.dwells, self.dwell_rows, tuple(self.modes),
-                          tuple(self.xerr), tuple(self.assumed.items()))
+                          tuple(self.xerr), tuple(self.assumed.items()), self.tol)
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -1102,6 +1106,7 @@ class _Pass:
         self.bare = start == "G64" and not getattr(machine, "path_tolerance", None)
         #: (first row, bare) where the path mode changes, rows counted from the program's start (DoublePath.modes)
         self.modes: list[tuple[int, bool]] = [(1, self.bare)]
+        self.tol = 0.0  # DoublePath.tolerance
         self.dwells = 0  # dwells (G4) in the whole program; those of the rows held are dwell_rows
         self.dwell_rows = array("q")
         self._g91_state()
@@ -1151,6 +1156,18 @@ class _Pass:
             self.modes.pop()
         if not self.modes or self.modes[-1][1] != bare:
             self.modes.append((row, bare))
+
+    def tolerance(self, p: float) -> None:
+        """``G64 P<p>`` without Q: the next motions blend within ``p`` of the programmed path after LinuxCNC's
+        naive-CAM merging within ``q = p`` (``convert_control_mode``: Q absent is P), so within ``p + q`` of it
+        (the full path's ``CornerCheck._near``); :attr:`DoublePath.tolerance` bounds that for every motion.  The
+        word's exact value is within half an ulp of its double ``p``, so at most ``nextafter(p)``; twice that
+        is exact in doubles.  ``p`` not above 0 (no tolerance, or an exact value that may be 0) declines."""
+        if not 0.0 < p < math.inf:
+            raise Declined("G64 P not above 0")
+        self.mode(False)
+        self.blend = True  # the motions blend (within the tolerance), so an arc after a tiny motion declines
+        self.tol = max(self.tol, 2 * math.nextafter(p, math.inf))
 
     def dwelt(self, row: int) -> None:
         """G4: the row just added (of the columns held) is a dwell where the machine stands."""
@@ -1227,7 +1244,7 @@ class _Pass:
         if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
             body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
         body += self._dwell_body(groups, others, bool(axes))
-        body += self._modal_body(groups, hs)
+        body += self._modal_body(groups, hs, others)
         if groups.get("motion") in (1, 2, 3) and not axes:  # G1 without axis words: LinuxCNC checks the feed too
             if groups["motion"] != 1 or any(x in "IJKR" for x in others):
                 raise Declined("an arc without axis words")
@@ -1250,7 +1267,7 @@ class _Pass:
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
 
-    def _modal_body(self, groups: dict[str, int], hs: list[int]) -> list[str]:
+    def _modal_body(self, groups: dict[str, int], hs: list[int], others: list[str]) -> list[str]:
         """The code of a block's plane, units, distance mode, work offset, tool length, path mode and motion
         mode (in LinuxCNC's order, before its motion)."""
         body = []
@@ -1263,7 +1280,10 @@ class _Pass:
             body.append(f"st.work({groups['offset']})")
         body += self._tool_body(groups.get("tool"), hs)
         if "path" in groups:
-            body.append(f"st.mode({groups['path'] == 64})")
+            if "P" in others:  # G64 P (_dwell_body: P only with G4 or G64)
+                body.append(f"st.tolerance(v[{others.index('P')}])")
+            else:
+                body.append(f"st.mode({groups['path'] == 64})")
         if "distance" in groups:
             if groups["distance"] == 91 and not self.g91_text:  # (a G91 the text's "91" misses: "G9 1")
                 raise Declined("G91 written apart")
@@ -1297,11 +1317,13 @@ class _Pass:
         I, J, R or a motion code (LinuxCNC's G4 X is not Fanuc's), a time that is not positive (its exact
         value may be below 0: the full path's GC209; a double above 0 is an exact value above 0)."""
         if groups.get("nonmodal") is None:
-            if "P" in others:
-                raise Declined("a word P outside G4")
+            if "P" in others and groups.get("path") != 64:
+                raise Declined("a word P outside G4 and G64")
             return []
         if "P" not in others:
             raise Declined("G4 without P")
+        if "path" in groups:
+            raise Declined("G4 and G64 P in one block")
         if axes or "motion" in groups or any(x in "IJKR" for x in others):
             raise Declined("G4 with axis words, I, J, R or a motion code")
         return [f"if not v[{others.index('P')}] > 0.0: raise D('a dwell time that is not positive')",
