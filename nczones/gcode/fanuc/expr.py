@@ -29,8 +29,9 @@ on the integer parts bit by bit; ``ATAN[a]/[b]`` (and ``ATAN[a,b]``) in
 -180..180 / -90..90 (NAT = 1); ``ACOS`` in 0..180; ``BIN``/``BCD`` convert
 between BCD and binary; ``ADP`` multiplies by the inverse of the least input
 increment (a G65 argument written without a decimal point comes in as a
-count of increments); ``POW[a,b]`` is a to the b.  Relational operators
-compare the doubles.
+count of increments); ``POW[a,b]`` is a to the b (a negative base needs an
+integer exponent, 0 a positive one).  Relational operators compare the
+doubles.
 
 Readings
 --------
@@ -38,9 +39,11 @@ How a control reads its double no manual says; the readings that fit what
 the manuals do say are the double as it is, its 15-significant-digit decimal
 and the exact decimal it stands for (the shadow), and for an address the
 double scaled to increments in doubles (:func:`round_to`, GC399).  FIX, FUP,
-ROUND outside an address, BIN, BCD, MOD, AND/OR/XOR, a computed variable
-number and the relational operators take the result every reading gives
-(:func:`integer_of`, :func:`_related`, :func:`_agreed_binary`), decided in
+ROUND outside an address, BIN, BCD, MOD, AND/OR/XOR, a variable number
+(computed or a literal, :func:`literal_number`), the relational operators,
+POW's integer exponent (:func:`_pow_domain`) and ASIN/ACOS's -1..1
+(:func:`_arc_domain`) take the result every reading gives (:func:`integer_of`,
+:func:`_related`, :func:`_agreed_binary`), decided in
 doubles where the value is farther from where the readings part than they
 reach; where the readings give different results :class:`ReadingsSplit`
 (GC398) makes the line ``unknown``: ``FIX[0.3 / 0.1]`` is 2 for the double
@@ -382,7 +385,7 @@ def _decimal(r: Fraction) -> str:
 
 class ReadingsSplit(RoundingNotCertain):
     """A macro value whose readings give different results for FIX, FUP, ROUND (outside an address), MOD,
-    AND/OR/XOR, BIN/BCD, a comparison or a variable number (GC398).
+    AND/OR/XOR, BIN/BCD, a comparison, a variable number, POW's integer exponent or ASIN/ACOS's -1..1 (GC398).
 
     It travels as :class:`RoundingNotCertain` does: the verdict is ``unknown`` at the line; ``reason`` names
     every reading and its result.
@@ -700,7 +703,28 @@ class Context:
 
 def _angle(d: float, ctx: Context, full: bool) -> tuple:
     """An angle in degrees in Fanuc's range: ``full`` (ATAN of two arguments) 0..360 or -180..180; else
-    (ASIN, one-argument ATAN) 270..90 (i.e. a negative result + 360) or -90..90."""
+    (ASIN, one-argument ATAN) 270..90 (i.e. a negative result + 360) or -90..90.
+
+    What the angle functions read (readings39).  SIN COS TAN ATAN ASIN ACOS take their argument's double as
+    it is: the control computes them in its doubles ([15i] "Limitation": IEEE double precision, errors as the
+    standard has them), as it does ``+ - * /``, and the readings are taken where a value becomes an integer, a
+    truth or an address (:func:`integer_of`, :func:`_related`, :func:`round_to`), so of the angle's result,
+    not of its argument: ``SIN[0.1 * 3 * 100]`` is the sine of 30.000000000000004, 0.5, and ``2.001 *`` it is
+    then at half an increment (GC399).  The argument's 15 digits or exact decimal would be the input of a
+    control computing in decimals, whose sine nczones does not know (a value without a shadow,
+    :func:`_reading_pairs`).  The one place an angle function decides on its argument, ASIN/ACOS's -1..1,
+    takes every reading (:func:`_arc_domain`).  A range shift (a negative result + 360) keeps the sign of the
+    argument, the same in every reading.
+
+    The result keeps a shadow only where its double is an integer, and that shadow is the double (ATAN[1] is
+    45).  Soundness, whatever the argument's readings: the shadow is one of the double's readings already
+    (an integer angle, at most 360, is its own 15 digits), so FIX/FUP/ROUND/MOD/a variable number and
+    :func:`round_to` give what the double alone gives; in a comparison with a value that keeps a shadow it
+    adds the pair of exact values (:func:`_reading_pairs`), one reading more, and a result is given only where
+    every reading agrees, so it can part a result (GC398), never give another; arithmetic keeps it only where
+    the exact result rounds to the double it computes, as for every shadow
+    (``tests/gcode/fanuc/test_macro_readings_functions.py`` holds both to readings computed independently).
+    """
     if not ctx.signed_angles and d < 0.0:
         d = d + 360.0
     return (check_double(d), None) if d != int(d) else (d, Fraction(int(d)))
