@@ -552,8 +552,11 @@ def literal_number(index: tuple) -> int | None:
     """
     if index[0] != NUM:
         return None
+    d, q = index[1], index[2]
+    if q is not None and denominator_of(q) == 1 and -1e15 < d < 1e15:
+        return int(d)  # #n: an integer below 1e15 is its double, its 15 digits and its shadow (it rounds to it)
     try:
-        return variable_number((index[1], index[2]))
+        return variable_number((d, q))
     except ReadingsSplit:
         return None
 
