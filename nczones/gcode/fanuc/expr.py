@@ -945,9 +945,9 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
     comparison, of ``EQ``/``NE``/``MOD``/``AND``/``OR``/``XOR``, of a function other than ``ABS``/``ROUND``/``ADP``
     or of ``ATAN``/``POW`` of two arguments either: those operands are compiled so (the same doubles, checked
     for NaN and infinity in the same order, so the same values and errors; a variable is read as it is, so a
-    vacant one stays :data:`VACANT` for ``EQ``/``NE``).  Where FIX/FUP/BIN/BCD, a relation or MOD/AND/OR/XOR
-    must compare the readings of such an operand (near a split only) it is evaluated again with its shadow
-    (:func:`_again`).
+    vacant one stays :data:`VACANT` for ``EQ``/``NE``).  Where FIX/FUP/BIN/BCD, a relation, MOD/AND/OR/XOR,
+    POW (its exponent, a zero base) or ASIN/ACOS must compare the readings of such an operand (near a split
+    only) it is evaluated again with its shadow (:func:`_again`).
     """
     ctx = ctx or Context()
     tag = node[0]
