@@ -29,8 +29,9 @@ on the integer parts bit by bit; ``ATAN[a]/[b]`` (and ``ATAN[a,b]``) in
 -180..180 / -90..90 (NAT = 1); ``ACOS`` in 0..180; ``BIN``/``BCD`` convert
 between BCD and binary; ``ADP`` multiplies by the inverse of the least input
 increment (a G65 argument written without a decimal point comes in as a
-count of increments); ``POW[a,b]`` is a to the b.  Relational operators
-compare the doubles.
+count of increments); ``POW[a,b]`` is a to the b (a negative base needs an
+integer exponent, 0 a positive one).  Relational operators compare the
+doubles.
 
 Readings
 --------
@@ -38,9 +39,11 @@ How a control reads its double no manual says; the readings that fit what
 the manuals do say are the double as it is, its 15-significant-digit decimal
 and the exact decimal it stands for (the shadow), and for an address the
 double scaled to increments in doubles (:func:`round_to`, GC399).  FIX, FUP,
-ROUND outside an address, BIN, BCD, MOD, AND/OR/XOR, a computed variable
-number and the relational operators take the result every reading gives
-(:func:`integer_of`, :func:`_related`, :func:`_agreed_binary`), decided in
+ROUND outside an address, BIN, BCD, MOD, AND/OR/XOR, a variable number
+(computed or a literal, :func:`literal_number`), the relational operators,
+POW's integer exponent (:func:`_pow_domain`) and ASIN/ACOS's -1..1
+(:func:`_arc_domain`) take the result every reading gives (:func:`integer_of`,
+:func:`_related`, :func:`_agreed_binary`), decided in
 doubles where the value is farther from where the readings part than they
 reach; where the readings give different results :class:`ReadingsSplit`
 (GC398) makes the line ``unknown``: ``FIX[0.3 / 0.1]`` is 2 for the double
@@ -72,7 +75,7 @@ if TYPE_CHECKING:
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
            "SystemVariableUnknown", "RoundingNotCertain", "ReadingsSplit", "readings", "SHADOW_ON_GRID_BOUND", "variable_index",
-           "variable_number", "integer_of"]
+           "variable_number", "literal_number", "integer_of"]
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
 VACANT = (0.0, Fraction(0))
@@ -382,7 +385,7 @@ def _decimal(r: Fraction) -> str:
 
 class ReadingsSplit(RoundingNotCertain):
     """A macro value whose readings give different results for FIX, FUP, ROUND (outside an address), MOD,
-    AND/OR/XOR, BIN/BCD, a comparison or a variable number (GC398).
+    AND/OR/XOR, BIN/BCD, a comparison, a variable number, POW's integer exponent or ASIN/ACOS's -1..1 (GC398).
 
     It travels as :class:`RoundingNotCertain` does: the verdict is ``unknown`` at the line; ``reason`` names
     every reading and its result.
@@ -471,17 +474,21 @@ def _integer_fast(value: Value, kind: str) -> int | None:
     return -n if d < 0 else n
 
 
-def _integer_readings(value: Value, kind: str) -> list[tuple[str, int]]:
-    """Each reading of ``value`` and the integer it gives (:data:`_INTEGER_OF`): the double as it is, its
-    15-digit decimal, the exact value it stands for (the shadow, when kept)."""
+def _value_readings(value: Value) -> list[tuple[str, Fraction]]:
+    """Each reading of one macro value, named: the double as it is, its 15-digit decimal, the exact value it
+    stands for (the shadow, when kept)."""
     d, q = value
-    of = _INTEGER_OF[kind]
     exact, fifteen = Fraction(d), _fifteen(d)
-    out = [(f"the double as it is, {_decimal(exact)},", of(exact)),
-           (f"its 15-digit decimal, {_decimal(fifteen)},", of(fifteen))]
+    out = [(f"the double as it is, {_decimal(exact)},", exact), (f"its 15-digit decimal, {_decimal(fifteen)},", fifteen)]
     if q is not None:
-        out.append((f"the exact value it stands for, {_decimal(q)},", of(q)))
+        out.append((f"the exact value it stands for, {_decimal(q)},", q))
     return out
+
+
+def _integer_readings(value: Value, kind: str) -> list[tuple[str, int]]:
+    """Each reading of ``value`` (:func:`_value_readings`) and the integer it gives (:data:`_INTEGER_OF`)."""
+    of = _INTEGER_OF[kind]
+    return [(name, of(r)) for name, r in _value_readings(value)]
 
 
 def _agreed_integer(value: Value, kind: str, what: str) -> int:
@@ -531,6 +538,27 @@ def variable_number(value: Value) -> int:
     if d - d:
         raise EvalError("GC204", f"variable number {d!r} is not a number")
     return integer_of(value, "round", "the variable number #[...]")
+
+
+def literal_number(index: tuple) -> int | None:
+    """The variable number ``#n`` or ``#[literal]`` names, a number node's, when every reading of the literal
+    gives it (:func:`variable_number`: the literal's double, its 15 digits and its exact decimal; ``#[125.4999999
+    9999999999]`` is the double 125.5, #126, and the decimal it was written as, #125); None where they part,
+    or for a node that is not a number: the caller compiles it as a computed ``#[...]`` then, which is
+    :class:`ReadingsSplit` (GC398) where the line runs, not where it is compiled.
+
+    >>> literal_number((NUM, 7.0, Fraction(7))), literal_number((NUM, 125.5, Fraction("125.49999999999999999")))
+    (7, None)
+    """
+    if index[0] != NUM:
+        return None
+    d, q = index[1], index[2]
+    if q is not None and denominator_of(q) == 1 and -1e15 < d < 1e15:
+        return int(d)  # #n: an integer below 1e15 is its double, its 15 digits and its shadow (it rounds to it)
+    try:
+        return variable_number((d, q))
+    except ReadingsSplit:
+        return None
 
 
 def _reading_pairs(x: Value, y: Value) -> list[tuple[str, Fraction, Fraction]]:
@@ -678,10 +706,75 @@ class Context:
 
 def _angle(d: float, ctx: Context, full: bool) -> tuple:
     """An angle in degrees in Fanuc's range: ``full`` (ATAN of two arguments) 0..360 or -180..180; else
-    (ASIN, one-argument ATAN) 270..90 (i.e. a negative result + 360) or -90..90."""
+    (ASIN, one-argument ATAN) 270..90 (i.e. a negative result + 360) or -90..90.
+
+    What the angle functions read (readings39).  SIN COS TAN ATAN ASIN ACOS take their argument's double as
+    it is: the control computes them in its doubles ([15i] "Limitation": IEEE double precision, errors as the
+    standard has them), as it does ``+ - * /``, and the readings are taken where a value becomes an integer, a
+    truth or an address (:func:`integer_of`, :func:`_related`, :func:`round_to`), so of the angle's result,
+    not of its argument: ``SIN[0.1 * 3 * 100]`` is the sine of 30.000000000000004, 0.5, and ``2.001 *`` it is
+    then at half an increment (GC399).  The argument's 15 digits or exact decimal would be the input of a
+    control computing in decimals, whose sine nczones does not know (a value without a shadow,
+    :func:`_reading_pairs`).  The one place an angle function decides on its argument, ASIN/ACOS's -1..1,
+    takes every reading (:func:`_arc_domain`).  A range shift (a negative result + 360) keeps the sign of the
+    argument, the same in every reading.
+
+    The result keeps a shadow only where its double is an integer, and that shadow is the double (ATAN[1] is
+    45).  Soundness, whatever the argument's readings: the shadow is one of the double's readings already
+    (an integer angle, at most 360, is its own 15 digits), so FIX/FUP/ROUND/MOD/a variable number and
+    :func:`round_to` give what the double alone gives; in a comparison with a value that keeps a shadow it
+    adds the pair of exact values (:func:`_reading_pairs`), one reading more, and a result is given only where
+    every reading agrees, so it can part a result (GC398), never give another; arithmetic keeps it only where
+    the exact result rounds to the double it computes, as for every shadow
+    (``tests/gcode/fanuc/test_macro_readings_functions.py`` holds both to readings computed independently).
+    """
     if not ctx.signed_angles and d < 0.0:
         d = d + 360.0
     return (check_double(d), None) if d != int(d) else (d, Fraction(int(d)))
+
+
+def _arc_function(name: str, arg: Callable[[], Value], again: Callable[[], Value] | None,
+                  ctx: Context) -> Callable[[], Value]:
+    """``ASIN[arg]`` or ``ACOS[arg]`` in degrees (:func:`_angle`), of the argument's double; an argument outside
+    -1..1 is the alarm GC312, and that bound is a comparison with 1: it takes every reading's answer
+    (:func:`_arc_domain`; GC398 where they part, as EQ/LE do)."""
+    upper = name.upper()
+    fn = math.asin if name == "asin" else math.acos
+
+    def arc() -> Value:
+        value = arg()
+        d = value[0]
+        if d - d:
+            raise EvalError("GC312", f"argument to {upper} is {d!r}")
+        if not -_ARC_INSIDE < d < _ARC_INSIDE:
+            _arc_domain(upper, value, again)
+        return _angle(fn(d) * 180.0 / math.pi, ctx, False)
+    return arc
+
+
+#: An ASIN/ACOS argument ``|d| < _ARC_INSIDE`` is inside -1..1 in every reading, ``|d| > _ARC_OUTSIDE`` outside
+#: in every reading: every reading lies within ``|d| 2**-47 + 2**-1001`` of the double (:data:`_WINDOW_READINGS`),
+#: less than ``2**-45`` from a double near 1.
+_ARC_INSIDE, _ARC_OUTSIDE = 1.0 - 2.0**-45, 1.0 + 2.0**-45
+
+
+def _arc_domain(upper: str, value: Value, again: Callable[[], Value] | None) -> None:
+    """The alarm for an ASIN/ACOS argument ``value`` outside -1..1 in every reading, nothing where every
+    reading is inside, else :class:`ReadingsSplit`: ``ACOS[#1 / 3]`` with ``#1 = 0.1 * 3 * 10`` is the double
+    1.0000000000000002 (the alarm) and its 15 digits 1 (0 degrees); ``again`` gives the argument with its
+    shadow (``ACOS[1.0000000000000000001]`` is the double 1.0 and a literal beyond 1)."""
+    d = value[0]
+    if -_ARC_OUTSIDE <= d <= _ARC_OUTSIDE:
+        got = [(name, -1 <= r <= 1) for name, r in _value_readings(again() if again is not None else value)]
+        inside = {ok for _name, ok in got}
+        if inside == {True}:
+            return
+        if len(inside) > 1:
+            shown = "; ".join(f"{name} is {'inside' if ok else 'outside'} -1..1" for name, ok in got)
+            raise ReadingsSplit(f"{upper}: the readings of the macro value {d!r} give different results: {shown} "
+                                "(an alarm there); which reading the control takes is not known (specs/fanuc.md, "
+                                "\"A value at half an increment\")")
+    raise EvalError("GC312", f"argument to {upper} out of range: {d!r} (allowed -1 to 1)")
 
 
 def _radians(d: float, name: str) -> float:
@@ -721,12 +814,6 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
         return (float(r), r)
     if name in ("sin", "cos", "tan"):
         return _circular(name, d)
-    if name in ("asin", "acos"):
-        if d < -1.0 or d > 1.0:
-            raise EvalError("GC312", f"argument to {name.upper()} out of range: {d!r} (allowed -1 to 1)")
-        if name == "acos":
-            return _angle(math.acos(d) * 180.0 / math.pi, ctx, False)
-        return _angle(math.asin(d) * 180.0 / math.pi, ctx, False)
     if name == "atan":
         return _angle(math.atan(d) * 180.0 / math.pi, ctx, False)
     if name == "sqrt":
@@ -749,20 +836,103 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
     raise AssertionError(name)  # pragma: no cover
 
 
-def _two(name: str, a: tuple, b: tuple, ctx: Context) -> tuple:
-    if name == "atan":
-        return _angle(math.atan2(a[0], b[0]) * 180.0 / math.pi, ctx, True)
-    # pow
+def _pow(a: Value, b: Value, again_a: Callable[[], Value] | None, again_b: Callable[[], Value] | None) -> Value:
+    """``POW[a,b]``, a to the b in doubles; a base not above 0 is :func:`_pow_domain`'s first (an alarm, or
+    GC398 where the readings part on it)."""
     x, y = a[0], b[0]
-    if x < 0.0 and y != math.floor(y):
-        raise EvalError("GC312", f"POW of negative {x!r} to the non-integer power {y!r}")
-    if x == 0.0 and y < 0.0:
-        raise EvalError("GC312", f"POW of 0 to the negative power {y!r}")
+    if not x > 0.0:
+        _pow_domain(a, b, again_a, again_b)
     try:
         r = math.pow(x, y)
     except (OverflowError, ValueError):
         raise EvalError("GC312", f"POW[{x!r},{y!r}] cannot be computed") from None
     return _num(check_double(r))
+
+
+def _pow_alarm(x: float, y: float, case: str) -> EvalError:
+    if case == _POW_NEGATIVE_FRACTION:
+        return EvalError("GC312", f"POW of negative {x!r} to the non-integer power {y!r}")
+    return EvalError("GC312", f"POW of 0 to the negative power {y!r}")
+
+
+#: What POW does with a base not above 0, per reading (:func:`_pow_case`).
+_POW_NEGATIVE_FRACTION = "an alarm (a negative base to a non-integer power)"
+_POW_ZERO_NEGATIVE = "an alarm (0 to a negative power)"
+_POW_ALARMS = frozenset((_POW_NEGATIVE_FRACTION, _POW_ZERO_NEGATIVE))
+
+
+def _pow_case(base_sign: int, r: Fraction) -> str:
+    """What POW does with a base of this sign and the exponent reading ``r``: an alarm, or a power of which
+    sign (a negative base to an integer power: the parity of the exponent)."""
+    if base_sign < 0:
+        if denominator_of(r) != 1:
+            return _POW_NEGATIVE_FRACTION
+        return "a negative power" if r % 2 else "a power not negative"
+    if base_sign == 0 and r < 0:
+        return _POW_ZERO_NEGATIVE
+    return "a power not negative"
+
+
+def _pow_exponent_fast(y: Value, shadow_known: bool) -> str | None:
+    """:func:`_pow_case` of a negative base, the same for every reading of the exponent ``y``, decided in
+    doubles; None where the exponent is too near an integer (or one whose shadow is not known).
+
+    Soundness: as :func:`_integer_fast`: every reading lies within ``w/2`` of the double (``w = |y| 2**-46 +
+    2**-1000``), so a fraction ``f`` of ``|y|`` (exact below ``2**52``) with ``w < f < 1 - w`` leaves every
+    reading strictly between the same two integers (not an integer: the alarm); at an integer double below
+    ``1e15`` its 15 digits are that integer and a shadow that rounds to it and is an integer is that integer
+    (one parity).
+    """
+    d = y[0]
+    t = d if d >= 0.0 else -d
+    if t >= _LARGE:
+        return None
+    m: int = _floor(t)
+    frac = t - m
+    w = t * _WINDOW_READINGS + _TINY
+    if w < frac < 1.0 - w:
+        return _POW_NEGATIVE_FRACTION
+    if frac == 0.0 and t < 1e15 and shadow_known and (y[1] is None or denominator_of(y[1]) == 1):
+        return _pow_case(-1, Fraction(m))
+    return None
+
+
+def _pow_domain(a: Value, b: Value, again_a: Callable[[], Value] | None, again_b: Callable[[], Value] | None) -> None:
+    """POW with a base ``a`` not above 0: the alarm every reading gives (GC312), nothing where every reading
+    computes a power of one sign, else :class:`ReadingsSplit` (GC398) naming each reading and what it does.
+
+    Whether the exponent is an integer (and its parity) is an integer the control takes of a value, as FIX
+    takes one: the readings rule of :func:`integer_of` (the double as it is, its 15 digits, the exact value it
+    stands for), each operand read on its own, since the case depends on the base's sign alone and on the
+    exponent alone.  A negative double's readings are all negative (a 15-digit decimal keeps the sign, a shadow
+    rounds to the double), so only a zero base reads its shadow (``again_a``: one that underflowed to 0 keeps
+    its sign).  ``POW[-2, 0.3 / 0.1]``: the double 2.9999999999999996 is the alarm, its 15 digits -8.  The
+    power itself is the doubles' (``math.pow``), as the other arithmetic is.
+    """
+    x, y = a[0], b[0]
+    if x < 0.0:
+        case = _pow_exponent_fast(b, again_b is None)
+        if case is not None:
+            if case in _POW_ALARMS:
+                raise _pow_alarm(x, y, case)
+            return
+        signs = [-1]
+    else:
+        signs = sorted({(r > 0) - (r < 0) for _name, r in _value_readings(again_a() if again_a is not None else a)})
+    got = [(f"{name} with a {_SIGN_NAMES[s]} base", _pow_case(s, r)) for s in signs
+           for name, r in _value_readings(again_b() if again_b is not None else b)]
+    cases = {case for _name, case in got}
+    if len(cases) > 1:
+        shown = "; ".join(f"{name} gives {case}" for name, case in got)
+        raise ReadingsSplit(f"POW: the readings of the exponent {y!r} of the base {x!r} give different results: "
+                            f"{shown}; which reading the control takes is not known (specs/fanuc.md, \"A value at "
+                            "half an increment\")")
+    case = cases.pop()
+    if case in _POW_ALARMS:
+        raise _pow_alarm(x, y, case)
+
+
+_SIGN_NAMES = {-1: "negative", 0: "zero", 1: "positive"}
 
 
 def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None,
@@ -775,9 +945,9 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
     comparison, of ``EQ``/``NE``/``MOD``/``AND``/``OR``/``XOR``, of a function other than ``ABS``/``ROUND``/``ADP``
     or of ``ATAN``/``POW`` of two arguments either: those operands are compiled so (the same doubles, checked
     for NaN and infinity in the same order, so the same values and errors; a variable is read as it is, so a
-    vacant one stays :data:`VACANT` for ``EQ``/``NE``).  Where FIX/FUP/BIN/BCD, a relation or MOD/AND/OR/XOR
-    must compare the readings of such an operand (near a split only) it is evaluated again with its shadow
-    (:func:`_again`).
+    vacant one stays :data:`VACANT` for ``EQ``/``NE``).  Where FIX/FUP/BIN/BCD, a relation, MOD/AND/OR/XOR,
+    POW (its exponent, a zero base) or ASIN/ACOS must compare the readings of such an operand (near a split
+    only) it is evaluated again with its shadow (:func:`_again`).
     """
     ctx = ctx or Context()
     tag = node[0]
@@ -786,8 +956,8 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         return lambda: value
     if tag == VAR:
         index = node[1]
-        if index[0] == NUM:
-            n = variable_index((index[1], index[2]))
+        n = literal_number(index)
+        if n is not None:
             if 0 < n <= LOCALS:
                 return lambda: variables.local[n]
             if COMMON_FIRST <= n <= COMMON_LAST:
@@ -818,16 +988,21 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         trig = _TRIGONOMETRY.get(name)
         if trig is not None:
             return _trigonometric(name, trig, arg)
+        if name in ("asin", "acos"):
+            return _arc_function(name, arg, _again(node[2], variables, ctx, in_address), ctx)
         if name in _INTEGER_FUNCTIONS and not (name == "round" and in_address):
             # ROUND's operand carries its shadow already; the others' is computed again only near a split
             again = None if name == "round" else _again(node[2], variables, ctx, in_address)
             return _integer_function(name, arg, again)
         return lambda: _function(name, arg(), ctx, in_address)
     if tag == FN2:
-        name = node[1]
         a = compile_tree(node[2], variables, ctx, in_address, False)
         b = compile_tree(node[3], variables, ctx, in_address, False)
-        return lambda: _two(name, a(), b(), ctx)
+        if node[1] == "atan":
+            return lambda: _angle(math.atan2(a()[0], b()[0]) * 180.0 / math.pi, ctx, True)
+        again_a = _again(node[2], variables, ctx, in_address)
+        again_b = _again(node[3], variables, ctx, in_address)
+        return lambda: _pow(a(), b(), again_a, again_b)
     raise AssertionError(f"unknown expression node {node!r}")  # pragma: no cover
 
 
@@ -1006,10 +1181,10 @@ def _compile_integer_binary(op: str, node: tuple, variables: FanucVariables, ctx
 
 def _local_index(node: tuple) -> int | None:
     """``n`` of a ``#n`` node that reads local variable n (a number 1..33 written as a constant), else None."""
-    if node[0] != VAR or node[1][0] != NUM:
+    if node[0] != VAR:
         return None
-    n = variable_index((node[1][1], node[1][2]))
-    return n if 0 < n <= LOCALS else None
+    n = literal_number(node[1])
+    return n if n is not None and 0 < n <= LOCALS else None
 
 
 def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,

@@ -66,11 +66,11 @@ from .expr import (
     compile_tree,
     denominator_of,
     double_of,
+    literal_number,
     round_to,
-    variable_index,
     variable_number,
 )
-from .parser import EXPR, LITERAL, NEG, NUM, VAR, FanucLine, parse_line
+from .parser import EXPR, LITERAL, NEG, VAR, FanucLine, parse_line
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -1776,11 +1776,9 @@ def _step_denominator(step: Any) -> int:
 
 
 def _static_index(tree: tuple) -> int | None:
-    """The variable number of an assignment's target written as a number (``#12``), else None."""
-    index = tree[1]
-    if index[0] != NUM:
-        return None
-    return variable_index((index[1], index[2]))
+    """The variable number of an assignment's target written as a number (``#12``), else None (also a literal
+    whose readings part, :func:`~nczones.gcode.fanuc.expr.literal_number`: the general path raises GC398)."""
+    return literal_number(tree[1])
 
 
 def _negated_variable(tree):
@@ -1793,8 +1791,8 @@ def _negated_variable(tree):
 def _target(tree: tuple, variables: FanucVariables, ctx: Context) -> Callable[[], int]:
     """The variable number an assignment writes (a function of no arguments)."""
     index = tree[1]
-    if index[0] == NUM:
-        n = variable_index((index[1], index[2]))
+    n = literal_number(index)
+    if n is not None:
         return lambda: n
     fn = compile_tree(index, variables, ctx)
     return lambda: variable_number(fn())
