@@ -18,6 +18,7 @@ written here, not the pipeline's) with its point in that zone.
 from __future__ import annotations
 
 import os
+from collections import Counter
 from fractions import Fraction
 from unittest import mock
 
@@ -321,6 +322,8 @@ _LATE = {d: _wrapped(d, _loop(d, 0, 66, 65, "[10 + 20 * FIX[# / 66]]", _ARC[d]))
 
 
 EXAMPLES = {"ci": 4, "long": int(os.environ.get("NCZONES_WITNESS_BLOCKS", "150"))}
+#: verdicts, reason codes and replayed witnesses of this session's relation runs (printed by the long tests)
+OUTCOMES: Counter = Counter()
 
 
 def _relation(dialect: str, n: int, derandomize: bool) -> None:
@@ -333,9 +336,13 @@ def _relation(dialect: str, n: int, derandomize: bool) -> None:
         try:
             got = verify_text(text, machine_for(setup), params=params, max_violations=4)
         except InputError:
-            return  # refused at the nominal values
+            OUTCOMES["refused at the nominal values"] += 1
+            return
+        OUTCOMES[got.verdict.label] += 1
+        OUTCOMES.update(r.code for r in got.reasons if r.code in ("VF231", "VF232"))
         for v in got.violations:
             _assert_replays(text, setup, v)
+            OUTCOMES["witness replayed"] += 1
 
     run()
 
@@ -348,4 +355,6 @@ def test_every_reported_witness_replays_at_its_values(dialect):
 @pytest.mark.long
 @pytest.mark.parametrize("dialect", ["linuxcnc", "fanuc"])
 def test_every_reported_witness_replays_at_its_values_long(dialect):
+    OUTCOMES.clear()
     _relation(dialect, EXAMPLES["long"], False)
+    print(f"witness blocks ({dialect}): {sorted(OUTCOMES.items())}")
