@@ -104,7 +104,7 @@ _REFUSED, _MISSED, _BUDGET, _INTERRUPT, _SAME_LINE = "refused", "missed", "budge
 
 def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Machine], Interpretation],
                        limits: RunLimits | None = None) -> Result:
-    """``result`` with only the violations whose parameter values run the program to their line.
+    """``result`` with only the violations that replay at their parameter values: their block's motion there.
 
     Parameters
     ----------
@@ -240,7 +240,8 @@ def _unreached(interpret: Callable[[Machine], Interpretation], at_values: Machin
     for v in wanted:
         if v.block not in made:
             stop = f"; {run.unsupported[0].reason}" if run.unsupported else ""
-            out[id(v)] = (_REFUSED, f"a witness at values where the program stops before its line ({at}{stop})")
+            out[id(v)] = (_REFUSED, f"a witness at values where the program stops before its line (this pass of "
+                                    f"it; {at}{stop})")
             continue
         ok, found = _replays(v, made[v.block], at_values, shift, margin)
         if not ok:
@@ -283,13 +284,18 @@ def _replays(v: Violation, mine: list[Segment], at_values: Machine, shift: tuple
     from ..witness_geometry import motion_witness_replays
 
     parameter = v.parameter if v.segment_kind == "spline" and v.parameter_exact else None
-    return motion_witness_replays(mine, at_values, shift, margin, block=v.block, zone=v.zone, point=_coords(v.point),
-                                  path=_coords(v.path_point), exact=v.on_path, parameter=parameter,
-                                  what=v.segment_kind or "motion")
+    axes = at_values.axis_names
+    if not set(axes) <= set(dict(v.point)) & set(dict(v.path_point)):
+        return False, f"its point does not name every axis of the machine ({', '.join(axes)})"
+    return motion_witness_replays(mine, at_values, shift, margin, block=v.block, zone=v.zone,
+                                  point=_coords(v.point, axes), path=_coords(v.path_point, axes), exact=v.on_path,
+                                  parameter=parameter, what=v.segment_kind or "motion")
 
 
-def _coords(named: tuple[tuple[str, Fraction], ...]) -> tuple[Fraction, ...]:
-    return tuple(x for _, x in named)
+def _coords(named: tuple[tuple[str, Fraction], ...], axes: tuple[str, ...]) -> tuple[Fraction, ...]:
+    """A witness's point (axis, value) pairs as a point in the machine's axis order."""
+    values = dict(named)
+    return tuple(values[a] for a in axes)
 
 
 def _at(params: _Values) -> str:
