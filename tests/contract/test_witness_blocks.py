@@ -1,7 +1,7 @@
 """A ranged witness replays as its block's motion, not as its ``(file, line)`` (:mod:`nczones.pipeline.witnesses`).
 
-The programs run a loop (LinuxCNC ``o100 while``, an ``o200 sub`` called in a loop, Fanuc ``WHILE``, Fanuc
-``M98 P.. L..``) of 140 passes, two rapids a pass (more motions than a chunk holds, so the replay hands out
+The programs run a loop (LinuxCNC ``o100 while``, an ``o200 sub`` called in a loop, Fanuc ``WHILE``, a Fanuc
+``G65`` macro called in a loop, Fanuc ``M98 P.. L..``) of 140 passes, two rapids a pass (more motions than a chunk holds, so the replay hands out
 the first passes before it meets anything): the last pass's rapids reach the clamp when ``G54.Y`` is 0.5 or
 more, and the pass before it runs an arc from machine zero that the control refuses once ``|G54.Y|`` is
 past its tolerance (LinuxCNC GC301, Fanuc GC302).  At every value where the clamp is reached the control
@@ -91,6 +91,22 @@ G0 X5. Y0
 END1
 M30
 """),
+    "fanuc g65": ("fanuc", f"""O1000
+G21 G90 G17 G54 F600.
+#1=1
+WHILE[#1LT{N}]DO1
+G65 P1002 X10.
+#1=#1+1
+END1
+{{arc}}
+G0 X5. Y0
+G65 P1002 X30.
+M30
+O1002
+G0 X#24 Y0
+G0 X5. Y0
+M99
+"""),
     "fanuc m98": ("fanuc", f"""O1000
 G21 G90 G17 G54 F600.
 #100=0
@@ -121,7 +137,8 @@ def _program(form: str, arc: dict[str, str] = _ARC) -> tuple[str, str]:
 
 def _rapid_lines(text: str) -> set[int]:
     """The lines of the two rapids the last pass (or call) violates on."""
-    return {n for n, line in enumerate(text.splitlines(), start=1) if line.endswith(("X#2 Y0", "X#1 Y0", "X5. Y0"))}
+    return {n for n, line in enumerate(text.splitlines(), start=1)
+            if line.endswith(("X#2 Y0", "X#1 Y0", "X#24 Y0", "X5. Y0"))}
 
 
 @pytest.mark.parametrize("form", sorted(PROGRAMS))
