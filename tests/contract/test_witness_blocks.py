@@ -179,6 +179,29 @@ def test_a_later_pass_the_control_makes_stays_a_witness(form):
         _assert_replays(text, _setup(dialect), v)
 
 
+@pytest.mark.parametrize("form", ["linuxcnc while", "fanuc m98"])
+def test_nczones_replay_confirms_every_later_pass_witness(tmp_path, form, capsys):
+    """End to end: ``nczones verify --param`` of the loop whose last pass always runs reports its witnesses on
+    their blocks (the last pass's), and ``nczones replay`` of that JSON report confirms every one."""
+    import json
+
+    from nczones.cli import main
+    from nczones.replay import replay_file
+    from tests.contract.test_witness_budget import _machine_file
+
+    dialect, text = _program(form, _RUNS)
+    prog = tmp_path / ("p.ngc" if dialect == "linuxcnc" else "p.nc")
+    prog.write_text(text)
+    report = tmp_path / "report.json"
+    main(["verify", str(prog), "--machine", str(_machine_file(tmp_path, dialect)), *(f"--param={p}" for p in RANGE),
+          "--format", "json", "--output", str(report)])
+    capsys.readouterr()
+    doc = json.loads(report.read_text())
+    assert doc["verdict"] == "unsafe" and all(v["block"] > N for v in doc["violations"])
+    checks = replay_file(str(report))
+    assert checks and all(c.confirmed and c.exact for c in checks), [c.render() for c in checks]
+
+
 def _by_line(interpret, at_values, params, at_line, shift, margin):
     """The (file, line) rule of witness37 behind the new interface: a witness whose line the replay moves on
     before it stops is kept (the mutation :func:`test_the_block_rule_has_teeth` puts back)."""
