@@ -325,8 +325,11 @@ CATALOGUE: tuple[Code, ...] = (
                            "that offset (another work offset active, a rotated frame)"),
     Code("VF220", _U, _MF, "tool solids (a mill's or a lathe's): tool-break recovery legs near a fixture the proof "
                            "cannot decide"),
-    Code("VF232", _U, "", "a witness over parameter ranges at values where the control refuses an earlier block "
-                          "(or the program stops before its line): it does not replay, and no other is left"),
+    Code("VF231", _U, "", "a witness over parameter ranges whose block runs at its values without its point in "
+                          "its zone (its motion there misses the point): it does not replay, and no other is left"),
+    Code("VF232", _U, "", "a witness over parameter ranges at values where the control refuses a block (before "
+                          "its block, or after it) or the program stops before its block: it does not replay, and "
+                          "no other is left"),
     Code("VF233", _U, _MF, "tool solids: a part may meet a fixture within the G64 P (or path_tolerance) bound of "
                            "the programmed path, which itself clears it"),
     Code("VF234", _U, _MF, "tool solids: a part may meet a fixture in a corner region the control may round "

@@ -37,28 +37,32 @@ input (an unreadable report, a missing or changed file).
 from __future__ import annotations
 
 import json
-import math
 import os
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import Any
 
 from .errors import Diagnostic, InputError, InvalidArgument
-from .exact import format_decimal, parse_rational, to_float
-from .machine import Machine, RapidMode, load_machine
-from .motion import Segment, SegmentKind, arc_path_float, tip_offset
+from .exact import parse_rational
+from .machine import Machine, load_machine
+from .motion import Segment, SegmentKind
 from .pipeline.witnesses import concrete_machine
-from .zones import tip_shifted
+from .witness_geometry import (
+    IRRATIONAL_TOLERANCE_MM,
+    REPLAYED_KINDS,
+    Point,
+    in_zone,
+    off_motion,
+    on_arc,
+    on_dogleg,
+    on_line,
+    on_motion,
+    show_point,
+)
 
 __all__ = ["Check", "replay_report", "replay_file", "on_line", "on_dogleg", "on_arc", "ReplayError",
-           "IRRATIONAL_TOLERANCE_MM"]
-
-#: How close an irrational path point must be to the motion (mm; degrees on a rotary axis).
-IRRATIONAL_TOLERANCE_MM = 1e-6
-
-F0, F1 = Fraction(0), Fraction(1)
-Point = tuple[Fraction, ...]
+           "IRRATIONAL_TOLERANCE_MM", "REPLAYED_KINDS"]
 
 
 class ReplayError(InputError):
@@ -80,168 +84,6 @@ class Check:
     def render(self) -> str:
         where = f"{self.program}:{self.line}" if self.line is not None else self.program
         return f"{where}: {'confirmed' if self.confirmed else 'NOT REPRODUCED'}: {self.message}"
-
-
-# --------------------------------------------------------------------------- exact geometry
-
-
-def on_line(p: Point, a: Point, b: Point) -> Fraction | None:
-    """The ``t`` in [0, 1] with ``p = a + t (b - a)``, or None (exact).
-
-    >>> F = Fraction
-    >>> on_line((F(1), F(2)), (F(0), F(0)), (F(3), F(6)))
-    Fraction(1, 3)
-    >>> on_line((F(1), F(2)), (F(0), F(0)), (F(3), F(5))) is None
-    True
-    """
-    k = next((k for k in range(len(a)) if a[k] != b[k]), None)
-    if k is None:
-        return F0 if tuple(p) == tuple(a) else None
-    t = (p[k] - a[k]) / (b[k] - a[k])
-    if not F0 <= t <= F1:
-        return None
-    return t if all(p[i] == a[i] + t * (b[i] - a[i]) for i in range(len(a))) else None
-
-
-def on_dogleg(p: Point, a: Point, b: Point, rates: Sequence[Fraction]) -> Fraction | None:
-    """The time (min) at which a dogleg rapid from ``a`` to ``b`` passes ``p``, or None (exact).
-
-    Every axis starts at once and moves at its own rate (``rates``, per
-    minute) until it arrives, so at time ``tau`` axis ``i`` stands at
-    ``a_i + sign(d_i) min(rate_i tau, |d_i|)``.
-
-    >>> F = Fraction
-    >>> on_dogleg((F(10), F(10)), (F(0), F(0)), (F(20), F(10)), (F(100), F(100)))
-    Fraction(1, 10)
-    >>> on_dogleg((F(10), F(5)), (F(0), F(0)), (F(20), F(10)), (F(100), F(100))) is None
-    True
-    """
-    lo, hi = F0, None  # tau in [lo, hi]
-    for pi, ai, bi, rate in zip(p, a, b, rates):
-        d = bi - ai
-        if d == 0:
-            if pi != ai:
-                return None
-            continue
-        s = (pi - ai) / d
-        if not F0 <= s <= F1 or rate <= 0:
-            return None
-        need = abs(pi - ai) / rate
-        if s == 1:
-            lo = max(lo, need)  # arrived: any later time
-        else:
-            lo = max(lo, need)
-            hi = need if hi is None else min(hi, need)
-    if hi is not None and lo > hi:
-        return None
-    return lo
-
-
-def _half(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction]) -> int:
-    """0 when ``v`` is in the half-turn counter-clockwise from ``u`` (``u`` itself included), else 1."""
-    cross = u[0] * v[1] - u[1] * v[0]
-    dot = u[0] * v[0] + u[1] * v[1]
-    return 0 if cross > 0 or (cross == 0 and dot > 0) else 1
-
-
-def _ccw_not_after(u: tuple[Fraction, Fraction], v: tuple[Fraction, Fraction], w: tuple[Fraction, Fraction]) -> bool:
-    """Counter-clockwise from ``u``: is the direction ``v`` reached no later than ``w`` (exact)?"""
-    hv, hw = _half(u, v), _half(u, w)
-    if hv != hw:
-        return hv < hw
-    return v[0] * w[1] - v[1] * w[0] >= 0
-
-
-def on_arc(p: Point, seg: Segment) -> bool:
-    """Is ``p`` exactly on the circular arc ``seg`` (rational centre, start and end on one circle, no helix)?
-
-    Returns False for motions that are not such arcs (a helix, a spiral, an
-    R-format arc without a centre): their points are checked approximately.
-    """
-    if seg.kind is not SegmentKind.ARC or seg.centre is None:
-        return False
-    i, j, _ = seg.plane_indices()
-    if any(seg.start[k] != seg.end[k] or p[k] != seg.start[k] for k in range(len(p)) if k not in (i, j)):
-        return False
-    c = seg.centre
-    u = (seg.start[i] - c[0], seg.start[j] - c[1])
-    w = (seg.end[i] - c[0], seg.end[j] - c[1])
-    v = (p[i] - c[0], p[j] - c[1])
-    r2 = u[0] ** 2 + u[1] ** 2
-    if w[0] ** 2 + w[1] ** 2 != r2 or v[0] ** 2 + v[1] ** 2 != r2:
-        return False
-    if seg.start == seg.end or seg.turns:
-        return True  # a full circle (or more)
-    if seg.clockwise:  # mirror: a clockwise sweep is a counter-clockwise one of the mirrored vectors
-        u, v, w = (u[0], -u[1]), (v[0], -v[1]), (w[0], -w[1])
-    return _ccw_not_after(u, v, w)
-
-
-# --------------------------------------------------------------------------- approximate geometry
-
-
-def _float_arc_distance(p: Point, seg: Segment) -> float:
-    """Distance (max over axes) from ``p`` to an arc, helix or spiral, in floats."""
-    at, _ = arc_path_float(seg)
-    return _min_distance([to_float(x) for x in p], at)
-
-
-def _min_distance(p: list[float], at: Callable[[float], list[float]], samples: int = 4096) -> float:
-    """Smallest max-norm distance from ``p`` to the curve ``at(f)``, f in [0, 1] (samples, then refined)."""
-    def dist(f: float) -> float:
-        return max(abs(a - b) for a, b in zip(at(f), p))
-
-    best = min(range(samples + 1), key=lambda k: dist(k / samples))
-    lo, hi = max(0.0, (best - 1) / samples), min(1.0, (best + 1) / samples)
-    for _ in range(100):  # golden-section search around the best sample
-        m1, m2 = lo + (hi - lo) * 0.381966, hi - (hi - lo) * 0.381966
-        if dist(m1) <= dist(m2):
-            hi = m2
-        else:
-            lo = m1
-    return min(dist(lo), dist(hi), dist(best / samples))
-
-
-def _float_developed_distance(p: Point, seg: Segment) -> float:
-    from .geometry.cylinder import cylinder_of, developed_arc_of
-
-    info = cylinder_of(seg)
-    if info is None:
-        return math.inf
-    linear, rotary, _ = info
-    iz, ic = seg.axes.index(linear), seg.axes.index(rotary)
-    arc = developed_arc_of(seg)
-    s = [to_float(x) for x in seg.start]
-    e = [to_float(x) for x in seg.end]
-
-    def at(f: float) -> list[float]:
-        z, _, c = arc.point(Fraction(f).limit_denominator(10**12))
-        q = [sv + (ev - sv) * f for sv, ev in zip(s, e)]
-        q[iz], q[ic] = to_float(z.mid()), to_float(c.mid())
-        return q
-
-    return _min_distance([to_float(x) for x in p], at, samples=512)
-
-
-def _float_polar_distance(p: Point, seg: Segment) -> float:
-    """Distance (max over axes) from ``p`` to a polar move's machine path, in floats (samples, then near the best)."""
-    from .geometry.polar import polar_of
-    from .report.samples import polar_float_points
-
-    q = [to_float(x) for x in p]
-    e = polar_of(seg)
-    if e is None:
-        return math.inf
-    ic = seg.axes.index(e.rotary_axis)
-    n, lo, hi = 512, Fraction(0), Fraction(1)
-    pts = polar_float_points(seg, n)
-    for _ in range(4):  # the best sample, then 256 samples between its neighbours, three times
-        best = min(range(len(pts)), key=lambda k: max(abs(a - b) for a, b in zip(pts[k], q)))
-        k0, k1 = max(best - 1, 0), min(best + 1, len(pts) - 1)
-        lo, hi = lo + (hi - lo) * Fraction(k0, n), lo + (hi - lo) * Fraction(k1, n)
-        n = 256
-        pts = polar_float_points(seg, n, lo, hi, pts[k0][ic] - float(e.c_entry))
-    return min(max(abs(a - b) for a, b in zip(pt, q)) for pt in pts)
 
 
 # --------------------------------------------------------------------------- reading the report
@@ -273,51 +115,6 @@ def _check_hash(kind: str, path: str, actual: str, expected: Any, where: str) ->
 
 # --------------------------------------------------------------------------- checking one counterexample
 
-
-def _on_motion(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
-    if tuple(p) in (tuple(seg.start), tuple(seg.end)):
-        return True
-    return _ON_MOTION[seg.kind](p, seg, machine, exact, parameter)
-
-
-def _on_straight(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
-    if seg.kind is SegmentKind.LINE or machine.rapid_mode is RapidMode.LINEAR:
-        return on_line(p, seg.start, seg.end) is not None
-    rates = tuple(machine.axis(a).rapid_mm_min for a in machine.axis_names)
-    return on_dogleg(p, seg.start, seg.end, rates) is not None
-
-
-def _on_spline(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
-    if parameter is None:
-        return False
-    from .geometry.nurbs import spline_curve
-
-    curve = spline_curve(seg)
-    lo, hi = curve.domain
-    return tuple(curve.point(lo + parameter * (hi - lo))) == tuple(p)
-
-
-def _on_arc(p: Point, seg: Segment, machine: Machine, exact: bool, parameter: Fraction | None) -> bool:
-    return on_arc(p, seg) if exact else _float_arc_distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
-
-
-def _on_float_curve(distance: Callable[[Point, Segment], float]) -> Callable[..., bool]:
-    """A curve whose points are irrational in general: on it within the tolerance, never exactly."""
-    return lambda p, seg, machine, exact, parameter: not exact and distance(p, seg) <= IRRATIONAL_TOLERANCE_MM
-
-
-#: Whether a counterexample's point lies on a motion, per motion kind (docs/design.md §10 "How to add a
-#: motion kind"); the segment's start and end are on every kind.
-_ON_MOTION: dict[SegmentKind, Callable[[Point, Segment, Machine, bool, Fraction | None], bool]] = {
-    SegmentKind.LINE: _on_straight,
-    SegmentKind.RAPID: _on_straight,
-    SegmentKind.DWELL: lambda p, seg, machine, exact, parameter: False,
-    SegmentKind.ARC: _on_arc,
-    SegmentKind.SPLINE: _on_spline,
-    SegmentKind.DEVELOPED_ARC: _on_float_curve(_float_developed_distance),
-    SegmentKind.POLAR: _on_float_curve(_float_polar_distance),
-}
-REPLAYED_KINDS = frozenset(_ON_MOTION)
 
 
 def _recovery_legs(v: Mapping[str, Any], seg: Segment, segs: list[Segment], machine: Machine,
@@ -377,31 +174,23 @@ def _check_violation(v: Mapping[str, Any], program: str, machine: Machine, segs:
         cutting = [s for s in mine if s.kind in (SegmentKind.LINE, SegmentKind.ARC)
                    and (s.kind is SegmentKind.LINE and on_line(brk, s.start, s.end) is not None or on_arc(brk, s))]
         if v.get("leg") != "resume" and not cutting:
-            return result(False, f"the break point {_show(axes, brk)} is not on a cutting motion of block {block}")
+            return result(False, f"the break point {show_point(axes, brk)} is not on a cutting motion of block {block}")
         base = cutting or [s for s in mine if s.kind in (SegmentKind.LINE, SegmentKind.ARC)]
         mine = [leg for s in base for leg in _recovery_legs(v, s, segs, machine, settings, brk)]
-        what = f"recovery leg {v.get('leg')!r} after a tool break at {_show(axes, brk)}"
-    hits = [s for s in mine if _on_motion(nominal, s, machine, exact, parameter)]
+        what = f"recovery leg {v.get('leg')!r} after a tool break at {show_point(axes, brk)}"
+    hits = [s for s in mine if on_motion(nominal, s, machine, exact, parameter)]
     if not hits:
-        return result(False, f"the path point {_show(axes, path)} is not on the {what} of block {block}"
-                             + ("" if exact else f" (not within {IRRATIONAL_TOLERANCE_MM} mm)"))
+        return result(False, off_motion(axes, path, what, block, exact))
     if solid:
         how = "exactly" if exact else f"within {IRRATIONAL_TOLERANCE_MM} mm (an irrational path point)"
         return result(*_check_solid(v, point, nominal, hits, machine, how, where))
-    gap = max(abs(a - b) for a, b in zip(point, path))
-    if gap > margin:
-        return result(False, f"the point {_show(axes, point)} is {format_decimal(gap)} mm from the path point, "
-                             f"more than the margin {format_decimal(margin)} mm")
-    bad = [z.name for s in hits for z in tip_shifted(machine.allowed, tip_offset(s.extra)).violated_zones(
-        dict(zip(axes, point)), s.tool_length)]
-    if zone not in bad:
-        inside = "inside the allowed set" if not bad else f"outside {', '.join(sorted(set(bad)))} only"
-        return result(False, f"the point {_show(axes, point)} is {inside}, not outside zone {zone!r}")
+    ok, message = in_zone(point, path, zone, hits, machine, margin)
+    if not ok:
+        return result(False, message)
     how = "exactly" if exact else f"within {IRRATIONAL_TOLERANCE_MM} mm (an irrational path point)"
     params = v.get("params_exact") or {}
     with_params = f" with {', '.join(f'{n}={x}' for n, x in params.items())}" if params else ""
-    return result(True, f"the point {_show(axes, point)} is outside zone {zone!r} (exact) and the path point "
-                        f"lies on the {what} of block {block} {how}{with_params}")
+    return result(True, f"{message} and the path point lies on the {what} of block {block} {how}{with_params}")
 
 
 def _fixture_origin(fx: Any, seg: Segment, index: tuple[int, int, int]) -> tuple[Fraction, Fraction, Fraction] | None:
@@ -479,15 +268,15 @@ def _check_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Seg
                 fx_q = (qx - origin[0], qy - origin[1], qz - origin[2])
                 if _in_fixture_xy(fx, fx_q[0], fx_q[1]) and (fx.z0 is None or fx.z0 < fx_q[2]) \
                         and (fx.z1 is None or fx_q[2] < fx.z1):
-                    return True, (f"the point {_show(('X', 'Y', 'Z'), point)} is inside the {part.label()} placed at the path "
-                                  f"point {_show(axes, path)} and inside fixture {zone!r} (exact), and the path point "
+                    return True, (f"the point {show_point(('X', 'Y', 'Z'), point)} is inside the {part.label()} placed at the path "
+                                  f"point {show_point(axes, path)} and inside fixture {zone!r} (exact), and the path point "
                                   f"lies on the {v.get('segment_kind', 'motion')} of block {v.get('block')} {how}")
-            return False, (f"the point {_show(('X', 'Y', 'Z'), point)} is inside the {part.label()} at the path point, "
+            return False, (f"the point {show_point(('X', 'Y', 'Z'), point)} is inside the {part.label()} at the path point, "
                            f"but not inside fixture {zone!r}")
     if not placed:
         return False, f"the tool assembly active at block {v.get('block')} has no part {part_name!r}"
-    return False, (f"the point {_show(('X', 'Y', 'Z'), point)} is not inside the part {part_name!r} placed at the path point "
-                   f"{_show(axes, path)}")
+    return False, (f"the point {show_point(('X', 'Y', 'Z'), point)} is not inside the part {part_name!r} placed at the path point "
+                   f"{show_point(axes, path)}")
 
 
 def _check_lathe_solid(v: Mapping[str, Any], point: Point, path: Point, hits: list[Segment], machine: Machine,
@@ -506,7 +295,7 @@ def _check_lathe_solid(v: Mapping[str, Any], point: Point, path: Point, hits: li
     axes = machine.axis_names
     qx, qz = point
     px, pz = path[axes.index("X")], path[axes.index("Z")]
-    shown = _show(("X", "Z"), point)
+    shown = show_point(("X", "Z"), point)
     placed = False
     for seg in hits:
         tool = segment_tool(seg)
@@ -522,7 +311,7 @@ def _check_lathe_solid(v: Mapping[str, Any], point: Point, path: Point, hits: li
                 in_r = fx.r_in < abs(qx) and (fx.r_out is None or abs(qx) < fx.r_out)
                 if in_r and (fx.z0 is None or fx.z0 < qz) and (fx.z1 is None or qz < fx.z1):
                     return True, (f"the point {shown} is inside the {part.label()} of tool {tool} placed at the "
-                                  f"path point {_show(axes, path)} and inside fixture {zone!r} (exact, in the "
+                                  f"path point {show_point(axes, path)} and inside fixture {zone!r} (exact, in the "
                                   f"section through the spindle axis), and the path point lies on the "
                                   f"{v.get('segment_kind', 'motion')} of block {v.get('block')} {how}")
             return False, (f"the point {shown} is inside the {part.label()} at the path point, but not inside "
@@ -530,11 +319,7 @@ def _check_lathe_solid(v: Mapping[str, Any], point: Point, path: Point, hits: li
     if not placed:
         return False, f"the turret tool active at block {v.get('block')} has no part {part_name!r}"
     return False, (f"the point {shown} is not inside the part {part_name!r} placed at the path point "
-                   f"{_show(axes, path)}")
-
-
-def _show(axes: tuple[str, ...], p: Point) -> str:
-    return " ".join(f"{a}{format_decimal(x, 6)}" for a, x in zip(axes, p))
+                   f"{show_point(axes, path)}")
 
 
 def _segments(source: Any, machine: Machine, settings: Mapping[str, Any], skip: frozenset[int]) -> list[Segment]:

@@ -2,24 +2,51 @@
 
 Over parameter ranges the prover finds a violating motion and a parameter
 value at which it violates; it does not ask whether the control runs the
-program up to that motion at that value.  Elsewhere in the range an earlier
-block may be refused (LinuxCNC's "arc end point is off its circle", a Fanuc R
-arc too short), a branch may end the program: the witness then names a
-motion the machine never makes, and an ``unsafe`` verdict must carry an
-exact, replayable witness (docs/design.md).
+program at that value.  Elsewhere in the range a block may be refused
+(LinuxCNC's "arc end point is off its circle", a Fanuc R arc too short), a
+branch may end the program: the witness then names a motion the machine never
+makes, and an ``unsafe`` verdict must carry an exact, replayable witness
+(docs/design.md).
 
-:func:`replayed_witnesses` re-interprets the program at every reported
-witness's values, as nominal values with no ranges (the way ``nczones
-replay`` builds the machine of a counterexample), up to the witness's line,
-and drops the witnesses it does not reach.
+:func:`replayed_witnesses` re-interprets the whole program at every reported
+witness's values, as nominal values with no ranges (the way ``nczones replay``
+builds the machine of a counterexample), and keeps a witness only when
+``nczones replay`` would confirm it there: the motion of its **block** — its
+occurrence in execution order (``Violation.block``, ``Segment.block``: a
+loop's passes and a subprogram's calls are blocks of their own), not its
+``(file, line)`` — is made at those values, the witness's path point lies on
+that motion (exactly; an irrational path point, marked ``on_path = False``,
+within :data:`nczones.witness_geometry.IRRATIONAL_TOLERANCE_MM`), and its point lies
+within the margin of the path point, outside the allowed set, in the zone it
+names (exact: :func:`nczones.witness_geometry.motion_witness_replays`).  A loop's later
+pass through a line is therefore not confirmed by its first pass, nor a
+witness by a motion of its line that does not carry its point.
+
+Why matching by block is exact: the prover's path is built at the case's
+nominal values, and a block's index counts the blocks executed before it.
+Within a case no branch and no loop count depends on a ranged parameter (a
+read of a ranged value is ``unknown``, a canned cycle's branch that switches
+splits the case), so the replay at values inside the case executes the same
+blocks in the same order up to the first block it refuses; the index of the
+witness's block is its index there.  The replay does not lean on this: a
+witness whose block the replay does not make, or makes without its point, is
+dropped, never kept on trust.
 
 Soundness: this step only removes violations, and a result left with none
 is ``unknown``, never ``safe``: the range proof failed at those values, and
-nothing here proves the rest of the range.  A witness that the
-re-interpretation reaches is kept unchanged.  A witness is dropped when
+nothing here proves the rest of the range.  A witness that replays is kept
+unchanged.  A witness is dropped when
 
-* the control stops before its line at its values: a note, or with none
-  kept a ``VF232`` reason;
+* the control refuses a block at its values: an earlier block, so it never
+  gets there; or a later one, since the control stops the program at the
+  error and need not make the motions it has read ahead (LinuxCNC discards
+  what its interpreter queued past the machine; Fanuc stops on the alarm),
+  and ``nczones verify`` and ``nczones replay`` give that error there, not
+  the witness; the program's end (or an unsupported code) before its block:
+  a note, or with none kept a ``VF232`` reason;
+* its block runs at its values but its motion does not carry its point, or
+  the point is not in its zone there: a note, or with none kept a ``VF231``
+  reason (it does not replay);
 * the run's budget (``--budget``, the same :class:`~nczones.prover.limits.RunLimits`
   as the proof's) is spent before its replay ends: it was not shown to
   replay, so it is not reported as a witness, and a ``VF203`` reason names
@@ -31,16 +58,13 @@ re-interpretation reaches is kept unchanged.  A witness is dropped when
   no other line or zone to check: a note (one replay fewer; the line keeps
   its witness of that zone).
 
-The cost is one interpretation (up to the furthest witness line) per
-distinct set of witness values that still has a line to show, and only for
-ranged results with violations; every one draws on the run's budget (its
-loops ask :func:`nczones.gcode.program.interpretation_spent` while it is
+The cost is one interpretation of the whole program per distinct set of
+witness values that still has a line to show (a refusal after the witness
+must be seen too), holding only the motions of the witnesses' blocks, and
+only for ranged results with violations; every one draws on the run's budget
+(its loops ask :func:`nczones.gcode.program.interpretation_spent` while it is
 watched) and stops at once on Ctrl-C (no solver query runs in it: Python's
 own handler raises ``KeyboardInterrupt``).
-
-A witness is matched to the replay by its ``(file, line)``, not its block:
-a line the replay reaches counts as reached even when the witness is a later
-pass through it (a loop's later iteration).
 """
 
 from __future__ import annotations
@@ -60,6 +84,7 @@ if TYPE_CHECKING:
 
     from ..gcode import Interpretation
     from ..machine import Machine
+    from ..motion import Segment
     from ..prover.limits import RunLimits
 
     _Values = tuple[tuple[str, Fraction], ...]
@@ -67,17 +92,19 @@ if TYPE_CHECKING:
 
 __all__ = ["concrete_machine", "replayed_witnesses"]
 
-#: the error code of a ranged result whose every witness lies where the control stops before its line
+#: the error code of a ranged result whose every witness lies where the control refuses a block or stops before it
 REFUSED_CODE = "VF232"
+#: the error code of a ranged result whose every witness's block runs at its values without its point in its zone
+MISSED_CODE = "VF231"
 #: the codes of a witness left unchecked: the budget spent, the run interrupted
 BUDGET_CODE, INTERRUPT_CODE = "VF203", "VF204"
 #: how a dropped witness is reported: as a note (another witness is kept) or a reason of this code
-_REFUSED, _BUDGET, _INTERRUPT, _SAME_LINE = "refused", "budget", "interrupt", "same line"
+_REFUSED, _MISSED, _BUDGET, _INTERRUPT, _SAME_LINE = "refused", "missed", "budget", "interrupt", "same line"
 
 
 def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Machine], Interpretation],
                        limits: RunLimits | None = None) -> Result:
-    """``result`` with only the violations whose parameter values run the program to their line.
+    """``result`` with only the violations that replay at their parameter values: their block's motion there.
 
     Parameters
     ----------
@@ -95,9 +122,10 @@ def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Ma
     -------
     Result
         ``result`` itself when every witness replays (or there is none with values); else the kept
-        violations, a note per witness dropped where the control stops (a ``VF232`` reason each when none is
-        kept), a ``VF203``/``VF204`` reason per witness the budget or an interrupt left unchecked, and the
-        verdict ``unknown`` when none is kept.
+        violations, a note per witness dropped where the control refuses a block or stops before its block
+        (a ``VF232`` reason each when none is kept) or whose block runs without its point in its zone
+        (``VF231``), a ``VF203``/``VF204`` reason per witness the budget or an interrupt left unchecked, and
+        the verdict ``unknown`` when none is kept.
     """
     groups = _groups(result)
     if not groups:
@@ -105,7 +133,7 @@ def replayed_witnesses(result: Result, machine: Machine, interpret: Callable[[Ma
     if result.interrupted:  # Ctrl-C during the proof: stop now, nothing replayed
         dropped, interrupted = _unchecked(groups, _INTERRUPT, _interrupt_why(limits)), True
     else:
-        dropped, interrupted = _replay_groups(groups, machine, interpret, limits)
+        dropped, interrupted = _replay_groups(groups, machine, interpret, limits, result.margin)
     if not dropped:
         return result
     return _without(result, dropped, interrupted)
@@ -121,7 +149,7 @@ def _groups(result: Result) -> dict[_Values, dict[_Where, list[Violation]]]:
 
 
 def _replay_groups(groups: dict[_Values, dict[_Where, list[Violation]]], machine: Machine,
-                   interpret: Callable[[Machine], Interpretation], limits: RunLimits | None
+                   interpret: Callable[[Machine], Interpretation], limits: RunLimits | None, margin: Fraction
                    ) -> tuple[dict[int, tuple[str, str]], bool]:
     """Replay each set of values in turn: ``({id(violation): (how, why)}`` of the dropped ones, interrupted)."""
     dropped: dict[int, tuple[str, str]] = {}
@@ -137,13 +165,13 @@ def _replay_groups(groups: dict[_Values, dict[_Where, list[Violation]]], machine
             elif limits is not None and limits.budget_spent():
                 break
             else:
+                at_values, shift = concrete_machine(machine, dict(params))
                 with limits.watch() if limits is not None else nullcontext():  # its loops ask the budget
-                    unreached = _unreached(interpret, concrete_machine(machine, dict(params))[0], params,
-                                           set(at_line))
-                for k, (how, why) in unreached.items():
-                    dropped.update({id(v): (how, why) for v in at_line[k]})
-                for k in set(at_line) - set(unreached):
-                    shown.update({(*k, v.zone): params for v in at_line[k] if (*k, v.zone) not in shown})
+                    unreached = _unreached(interpret, at_values, params, at_line, shift, margin)
+                dropped.update(unreached)
+                for k, vs in at_line.items():
+                    shown.update({(*k, v.zone): params for v in vs
+                                  if id(v) not in unreached and (*k, v.zone) not in shown})
             todo.pop(0)
     except KeyboardInterrupt:
         dropped.update(_unchecked(dict(todo), _INTERRUPT, _interrupt_why(limits)))
@@ -179,7 +207,8 @@ def _without(result: Result, dropped: dict[int, tuple[str, str]], interrupted: b
     """``result`` without the ``dropped`` violations: notes and reasons for them, the verdict from what is kept."""
     kept = tuple(v for v in result.violations if id(v) not in dropped)
     gone = [(v, *dropped[id(v)]) for v in result.violations if id(v) in dropped]
-    codes = {_BUDGET: BUDGET_CODE, _INTERRUPT: INTERRUPT_CODE} | ({} if kept else {_REFUSED: REFUSED_CODE})
+    codes = {_BUDGET: BUDGET_CODE, _INTERRUPT: INTERRUPT_CODE} | (
+        {} if kept else {_REFUSED: REFUSED_CODE, _MISSED: MISSED_CODE})
     notes = tuple(f"a witness of line {v.line} was dropped: {why}" for v, how, why in gone if how not in codes)
     reasons = tuple(Reason(f"{codes[how]}: {why}", v.span, v.block, codes[how]) for v, how, why in gone
                     if how in codes)
@@ -191,32 +220,82 @@ def _without(result: Result, dropped: dict[int, tuple[str, str]], interrupted: b
 
 
 def _unreached(interpret: Callable[[Machine], Interpretation], at_values: Machine, params: _Values,
-               lines: set[_Where]) -> dict[_Where, tuple[str, str]]:
-    """The ``(file, line)`` of ``lines`` that the program on ``at_values`` (the machine at ``params``, nominal
-    values) does not move on before it stops, each with how and why: a refused block, the program's end (or
-    an unsupported code), or the run's budget spent on the way (unchecked)."""
-    at = _at(params)
+               at_line: dict[_Where, list[Violation]], shift: tuple[Fraction, ...], margin: Fraction
+               ) -> dict[int, tuple[str, str]]:
+    """The witnesses of ``at_line`` (all at ``params``) that do not replay on ``at_values`` (the machine at
+    ``params``, nominal values; ``shift`` the homing errors apart), ``{id(witness): (how, why)}``: the program
+    refused (before or after the witness), stopped before its block (its end, an unsupported code), the run's
+    budget spent on the way (unchecked), or its block's motion there without its point in its zone."""
+    wanted = [v for vs in at_line.values() for v in vs]
     run = interpret(at_values)
-    todo = set(lines)
+    made, refused = _motions(run, {v.block for v in wanted})
+    at = _at(params)
+    if refused is not None:
+        return {id(v): (_REFUSED, _refused_why(refused, v.block in made, at)) for v in wanted}
+    spent = next((u for u in run.unsupported if u.code == BUDGET_CODE), None)
+    if spent is not None:  # the budget ended the replay: no witness is shown either way
+        why = f"{spent.reason}, before this witness was replayed at its values, so it is not reported ({at})"
+        return {id(v): (_BUDGET, why) for v in wanted}
+    out: dict[int, tuple[str, str]] = {}
+    for v in wanted:
+        if v.block not in made:
+            stop = f"; {run.unsupported[0].reason}" if run.unsupported else ""
+            out[id(v)] = (_REFUSED, f"a witness at values where the program stops before its line (this pass of "
+                                    f"it; {at}{stop})")
+            continue
+        ok, found = _replays(v, made[v.block], at_values, shift, margin)
+        if not ok:
+            out[id(v)] = (_MISSED, f"at its values ({at}) the program runs its block, but {found}: the witness does "
+                                   "not replay, so it is not reported")
+    return out
+
+
+def _motions(run: Interpretation, blocks: set[int]) -> tuple[dict[int, list[Segment]], InputError | None]:
+    """The motions of ``run`` in ``blocks`` by block (the whole program read), and the error that refused a
+    block, if one did: then also the motions the interpreter made before it and had not handed out yet."""
+    made: dict[int, list[Segment]] = {}
     try:
         for seg in run.segments():
-            if seg.span is not None:
-                todo.discard((seg.span.file, seg.span.line))
-                if not todo:
-                    return {}
+            if seg.block in blocks:
+                made.setdefault(seg.block, []).append(seg)
     except InputError as exc:
-        d = exc.diagnostics[0]
-        where = f"line {d.span.line}" if d.span is not None else d.location()
-        why = (f"a witness at values where the control refuses an earlier block, {where}: {d.message} "
-               f"[{d.code}] ({at})")
-        return {k: (_REFUSED, why) for k in todo}
-    spent = next((u for u in run.unsupported if u.code == BUDGET_CODE), None)
-    if spent is not None:  # the budget ended the replay: the witness is not shown either way
-        why = f"{spent.reason}, before this witness was replayed at its values, so it is not reported ({at})"
-        return {k: (_BUDGET, why) for k in todo}
-    stop = f"; {run.unsupported[0].reason}" if run.unsupported else ""
-    why = f"a witness at values where the program stops before its line ({at}{stop})"
-    return {k: (_REFUSED, why) for k in todo}
+        for seg in getattr(run.interpreter, "emitted", None) or ():  # made, not yet handed out in a chunk
+            if getattr(seg, "block", None) in blocks:
+                made.setdefault(seg.block, []).append(seg)
+        return made, exc
+    return made, None
+
+
+def _refused_why(exc: InputError, before: bool, at: str) -> str:
+    """Why a witness at values where the control refuses a block is dropped: ``before`` when its motion was made
+    ahead of the refused block (the block is a later one)."""
+    d = exc.diagnostics[0]
+    where = f"line {d.span.line}" if d.span is not None else d.location()
+    if not before:
+        return f"a witness at values where the control refuses an earlier block, {where}: {d.message} [{d.code}] ({at})"
+    return (f"a witness at values where the control refuses a later block, {where}: {d.message} [{d.code}] ({at}); "
+            "the control stops the program at the error and need not make the motions it has read ahead, this "
+            "one among them")
+
+
+def _replays(v: Violation, mine: list[Segment], at_values: Machine, shift: tuple[Fraction, ...], margin: Fraction
+             ) -> tuple[bool, str]:
+    """Whether witness ``v`` replays on ``mine``, its block's motions at its values (``nczones replay``'s check)."""
+    from ..witness_geometry import motion_witness_replays
+
+    parameter = v.parameter if v.segment_kind == "spline" and v.parameter_exact else None
+    axes = at_values.axis_names
+    if not set(axes) <= set(dict(v.point)) & set(dict(v.path_point)):
+        return False, f"its point does not name every axis of the machine ({', '.join(axes)})"
+    return motion_witness_replays(mine, at_values, shift, margin, block=v.block, zone=v.zone,
+                                  point=_coords(v.point, axes), path=_coords(v.path_point, axes), exact=v.on_path,
+                                  parameter=parameter, what=v.segment_kind or "motion")
+
+
+def _coords(named: tuple[tuple[str, Fraction], ...], axes: tuple[str, ...]) -> tuple[Fraction, ...]:
+    """A witness's point (axis, value) pairs as a point in the machine's axis order."""
+    values = dict(named)
+    return tuple(values[a] for a in axes)
 
 
 def _at(params: _Values) -> str:

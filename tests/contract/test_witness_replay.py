@@ -14,7 +14,6 @@ import pytest
 from nczones.gcode.source import program_text
 from nczones.pipeline import witnesses
 from nczones.pipeline.verification import interpretation
-from nczones.precompiled import replace
 from nczones.prover import verify_text
 from nczones.prover.options import VerifyOptions
 from tests.contract.test_range_seams import Setup, machine_for
@@ -54,20 +53,26 @@ def test_a_witness_that_replays_stays_unsafe(dialect):
     assert not any("dropped" in n for n in got.notes)
 
 
+#: a post the rapid to X45 meets while ``|G54.Y|`` is under 0.1, where the control runs the arc
+_POST = ("post", (Fraction(42), Fraction(-1, 10), Fraction(-30)), (Fraction(44), Fraction(1, 10), Fraction(260)), True,
+         False)
+
+
 def test_a_witness_kept_beside_one_dropped():
-    """Two witnesses of line 3: at ``G54.Y = 0`` the control runs the arc (kept), at the prover's value it
-    refuses it (dropped, with a note); the verdict stays ``unsafe``.  The witness at 0 is written by hand: the
-    replay asks only whether the program reaches the line there."""
-    setup = _setup("linuxcnc")
+    """Line 3's rapid meets the post near ``G54.Y = 0``, where the control runs the arc (kept); line 4's meets
+    the clamp only from 0.5, where it refuses the arc (dropped, with a note): the verdict stays ``unsafe``."""
+    setup = Setup("linuxcnc", "G61", "linear", (("travel", *_Z, False, False), _CLAMP, _POST))
+    text = "G21 G90 G17 G54 F600.\nG2 X-10. Y0. I-5. J0.\nG0 X45. Y0.\nG0 X30. Y0.\nM30\n"
     machine = machine_for(setup)
     with mock.patch.object(witnesses, "replayed_witnesses", lambda result, *args: result):
-        ranged = verify_text(_IJ_ARC, machine, params=["G54.Y=-1..1"])
-    (v,) = ranged.violations
-    assert dict(v.params)["G54.Y"] >= Fraction(1, 2)
-    at_zero = replace(v, params=(("G54.Y", Fraction(0)),))
-    source, options = program_text(_IJ_ARC, "<program>"), VerifyOptions.from_keywords()
-    out = witnesses.replayed_witnesses(replace(ranged, violations=(v, at_zero)), machine,
-                                       lambda m: interpretation(source, m, options))
-    assert out.violations == (at_zero,)
+        ranged = verify_text(text, machine, params=["G54.Y=-1..1"])
+    post, clamp = ranged.violations
+    assert (post.line, post.zone, clamp.line, clamp.zone) == (3, "post", 4, "clamp")
+    assert abs(dict(post.params)["G54.Y"]) < Fraction(1, 10) <= Fraction(1, 2) <= dict(clamp.params)["G54.Y"]
+    source, options = program_text(text, "<program>"), VerifyOptions.from_keywords()
+    out = witnesses.replayed_witnesses(ranged, machine, lambda m: interpretation(source, m, options))
+    assert out.violations == (post,)
     assert out.verdict.label == "unsafe"
-    assert any("witness of line 3 was dropped" in n and "GC301" in n for n in out.notes), out.notes
+    assert any("witness of line 4 was dropped" in n and "earlier block, line 2" in n and "GC301" in n
+               for n in out.notes), out.notes
+    assert verify_text(text, machine, params=["G54.Y=-1..1"]).violations == (post,)
