@@ -129,6 +129,7 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
+from .double_lathe import DIAMETER, diameter_body, diameter_start, lathe_reason
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -154,7 +155,7 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: The G codes the pass follows (the code table's ``doubles`` claims), by modal group: a whole number ``n`` as
 #: ``n``, ``n.1`` (G61.1, G91.1) as ``-(10 n + 1)`` (:func:`_code`).
 _GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 4: "arc distance", 6: "units", 7: "comp", 8: "tool", 3: "distance",
-                5: "feedmode", 12: "offset", 13: "path"}
+                5: "feedmode", 12: "offset", 13: "path", 15: DIAMETER}
 #: Per plane code: the arc's (first, second) axes and their centre words, the full path's ``PLANE_AXES``
 #: (``Interpreter.arc``; LinuxCNC's ARC_FEED order: G18's first axis is Z, its second X, its centre words K
 #: and I).  The full path's arc is clockwise (G2) or not in the plane of those two axes in that order, and
@@ -406,8 +407,9 @@ class _Pass:
         #: rows of a full window (the one before its first motion included); past it the window is handed over
         self.rows = window + 1 if on_window is not None else MAX_MOTIONS + 2
         self.row0 = 0  # the row columns[a][0] is
-        if getattr(machine, "machine_type", "mill") != "mill" or getattr(machine, "diameter_axes", ()):
-            raise Declined("a lathe")
+        lathe = lathe_reason(machine)  # a lathe: .double_lathe
+        if lathe is not None:
+            raise Declined(lathe)
         if getattr(machine, "dialect", "linuxcnc") != "linuxcnc":
             raise Declined("a machine of another dialect than LinuxCNC")
         modal = set(machine.modal)
@@ -428,6 +430,9 @@ class _Pass:
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
         self.index = {a: i for i, a in enumerate(self.axes)}
+        #: G7/G8: an X word's factor now, X words compiled with it, one compiled without it (.double_lathe)
+        self.half, self.diameter = diameter_start(machine)
+        self.x_axis, self.x_compiled = self.index.get("X"), False
         wcs = next((c for c in machine.modal if c.startswith(("G54", "G55", "G56", "G57", "G58", "G59"))), "G54")
         if wcs not in WORK_OFFSETS:
             raise Declined(f"the machine starts in {wcs}")
@@ -1233,6 +1238,7 @@ class _Pass:
         if "offset" in groups:
             body.append(f"st.work({groups['offset']})")
         body += self._tool_body(groups.get("tool"), hs)
+        body += diameter_body(self, groups)
         if "path" in groups:
             body.append(f"st.mode({groups['path'] == 64})")
         if "distance" in groups:
@@ -1308,19 +1314,30 @@ class _Pass:
         stands for, so ``e`` bounds the error however long the chain (it grows along it: the row before a
         chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain)."""
         named = tuple(i for _k, i in axes)
-        g90 = [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        g90 = [f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes]
         if not self.g91_text:  # no G91 in the text (_modal_body): no chain
             return g90
         inc = []
         for k, i in axes:
-            inc += [f"x{i} = pos[{i}] + v[{k}]", f"e = ERR[{i}]",
+            w = self._word(k, i)
+            inc += [f"x{i} = pos[{i}] + {w}", f"e = ERR[{i}]",
                     f"if e is None: e = NA((2.0 * abs(pos[{i}]) + {self.offb2[i]!r}) * EPS2, INF)",
-                    f"e = ERR[{i}] = NA(e + NA((abs(v[{k}]) + abs(x{i})) * EPS2, INF), INF)",
+                    f"e = ERR[{i}] = NA(e + NA((abs({w}) + abs(x{i})) * EPS2, INF), INF)",
                     f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
         # one test on the common way (G90, no chain open: ``slow`` false)
         return ["if st.slow:", "    if st.inc:", *(f"        {b}" for b in inc), "        st.chained = True",
                 "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
                 "else:", *(f"    {b}" for b in g90)]
+
+    def _word(self, k: int, i: int) -> str:
+        """The source of the double of axis word ``v[k]`` (axis ``i``): an X word times ``st.half`` (G7 halves it,
+        :mod:`.double_lathe`) where X may be a diameter, else the word."""
+        if i != self.x_axis:
+            return f"v[{k}]"
+        if not self.diameter:
+            self.x_compiled = True
+            return f"v[{k}]"
+        return f"(v[{k}] * st.half)"
 
     def _arc_body(self, others: list[str], plane: int) -> list[str]:
         """The code that adds the box of the arc just moved in ``plane`` (:mod:`.double_arcs`, on the plane's
@@ -1363,7 +1380,7 @@ class _Pass:
         moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
         return [f"sa = pos[{ia}]; sb = pos[{ib}]",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *(f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes),
+                *(f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes),
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
