@@ -113,6 +113,21 @@ def test_a_lathe_program_is_proved_by_the_pass(monkeypatch):
     assert "double_pass_boxes" not in dict(without.stats)
 
 
+def test_a_plain_lathe_program_past_the_mills_crossover_is_proved_by_the_pass():
+    """No fast path reads a lathe program: a plain one goes to the pass at any size from 512 lines (on a mill,
+    40,000 lines of lines and K/I arcs go to the fast path: ``verification._small_plain``)."""
+    from nczones.pipeline import verification
+    from nczones.prover import verify_text
+
+    arcs = "G1 X20 Z0\nG3 X30 Z-5 K-5 I0\n"  # a quarter from radius 10 to radius 15
+    text = "G18 G21 G90 G54 F100\n" + arcs * 20_000 + "M30\n"
+    mill = parse_machine(machine_text("xz_rapid_1000"))
+    assert not verification._double_pass_reads(text, mill) and verification._double_pass_reads(text, LATHE)
+    assert not verification._double_pass_reads(arcs * 200, LATHE)  # below 512 lines: the full path is as quick
+    result = verify_text(text, LATHE)
+    assert result.verdict is Verdict.SAFE and "double_pass_boxes" in dict(result.stats)
+
+
 # -- verdicts at a face -------------------------------------------------------------------------------------------
 
 #: (program after HEAD, axis, side, the exact extreme in machine coordinates): a straight move to X diameter
