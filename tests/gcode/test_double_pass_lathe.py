@@ -3,8 +3,9 @@
 - the module's invariant (``tests/gcode/test_double_pass.py``, ``check_against_full``) on generated lathe
   programs (G7/G8 switched in the program, G18 arcs by K/I and R written in either mode, G91 X in G7, loops)
   on the lathes of ``tests/machines`` (``report_lathe``: G7 at the start; the same with no diameter axes: G8);
-- routing: a lathe program is proved by the pass; G70-G72, G76, G33, G95, G96/G97, a lathe with tool solids,
-  diameter axes other than X, a G7 after an X line on a machine that is not a lathe are declined;
+- routing: a lathe program is proved by the pass, G96/G97 taken; G70-G72, G76, G33, G95, G96 without S, a D word
+  without G96, a lathe with tool solids, diameter axes other than X, a G7 after an X line on a machine that is
+  not a lathe are declined;
 - verdicts: faces at a motion's exact extreme in X (a diameter word: the face is at half of it) and Z, by
   straight moves, K/I and R arcs, decided as the full path decides them (and ``unsafe`` 1e-12 mm inside);
 - the rows are LinuxCNC's: an X word's double halved in G7 (its increment too in G91), I/K/R never.
@@ -68,6 +69,13 @@ def test_a_mill_takes_g7_before_its_first_x_line():
         double_pass("G18 G21 G90 G54 F100\n#1 = 10\nG1 X#1 Z0\nG7 X#1\nM30\n", mill, max_iterations=10)
 
 
+def test_the_spindle_speed_mode_is_taken():
+    """G96 (with S, and D its speed limit) and G97 move nothing: the rows are the full path's."""
+    text = HEAD + "G96 D2500 S200 M3\nG1 X#1 Z0\nG97 S1000\nG1 X[#1 * 4] Z-5\nG96 S[#1 * 10] D[#1]\nX1\nM30\n"
+    path = check_against_full(text, LATHE)
+    assert path is not None and list(path.columns[0]) == [100.0, 15.0, 30.0, 10.5]
+
+
 # -- routing ----------------------------------------------------------------------------------------------------
 
 HEAD = "G18 G21 G90 G54 F100\n#1 = 10\n"
@@ -78,8 +86,9 @@ DECLINED = {
     "G76": ("S100 M3\nG76 P1 Z-10 I-1 J0.5 K1\n", "G76"),
     "G33": ("S100 M3\nG33 Z-10 K1\n", "G33"),
     "G95": ("G95 G1 X20 F0.1\n", "G95"),
-    "G96": ("G96 S100 M3\nG1 X20\n", "G96"),
-    "G97": ("G97 S100 M3\nG1 X20\n", "G97"),
+    # G96/G97 move nothing (taken: test_the_spindle_speed_mode_is_taken); LinuxCNC refuses G96 without S
+    "G96 without S": ("G96 M3\nG1 X20\n", "G96 without an S word"),
+    "D without G96": ("G97 D2000 S100 M3\nG1 X20\n", "D word without G96"),
     "M70": ("M70\nG1 X20\n", "M code"),
     "an arc before the plane": ("G17\nG2 X20 Z0 R30\n", "G17 on a machine without X and Y"),
 }
@@ -205,7 +214,7 @@ def lathe_arcs(draw) -> list[str]:
 
 
 #: Lines a lathe program may hold that the pass declines (each must make it decline, or agree).
-OUTSIDE = ["G96 S100", "G97", "G95", "G33 Z-1 K0.1", "G70 Q1", "M70", "G7 X1 M72", "G17", "G2 X1 Z1 J1", "G20",
+OUTSIDE = ["G96", "G96 S100 D-1", "G97 D5", "D1", "G95", "G33 Z-1 K0.1", "G70 Q1", "M70", "G7 X1 M72", "G17", "G2 X1 Z1 J1", "G20",
            "G7.1", "G18 G2 X1 Z1"]
 
 
@@ -227,7 +236,8 @@ def lathe_statements(draw, depth: int, labels: list[int]) -> list[str]:
         return [f"#<i{label}> = 0", f"o{label} while [#<i{label}> LT {n}]", *body,
                 f"#<i{label}> = [#<i{label}> + 1]", f"o{label} endwhile"]
     if kind == 8:
-        return [draw(st.sampled_from(["G7", "G8", "G91", "G90", "G55", "G54", "G18", "G4 P0.1", "M3 S500", "T1 M6"]))]
+        return [draw(st.sampled_from(["G7", "G8", "G91", "G90", "G55", "G54", "G18", "G4 P0.1", "M3 S500", "T1 M6",
+                                      "G96 D2500 S200 M3", "G97 S[#<a> * 100]"]))]
     return [draw(st.sampled_from(OUTSIDE))]
 
 

@@ -11,8 +11,11 @@ is the mill's interpreter with three changes:
   end; not I, J, K (radii: only G76 halves them), nor R.  A machine with ``diameter_axes = ["X"]`` starts in
   G7 (LinuxCNC's ``RS274NGC_STARTUP_CODE``), any other in G8.
 * **G70-G72** (the profile cycles, :mod:`.g7x`): declined here, with G76, G33 and G33.1 (spindle-synchronised
-  motion), G95 (feed per revolution) and G96/G97 (the spindle speed mode): none is in the pass's code table
-  (:data:`nczones.gcode.codes.LINUXCNC_G`).
+  motion) and G95 (feed per revolution): none is in the pass's code table (:data:`nczones.gcode.codes.LINUXCNC_G`).
+  G96 (constant surface speed, ``D`` its speed limit) and G97 move nothing (LinuxCNC's
+  ``convert_spindle_mode`` only sets the spindle's mode, and the pass reads no feed rate but its sign): the pass
+  takes them, but G96 without S (LinuxCNC's error "S word missing with G96", which the full path does not
+  raise) and a D word in a block without G96 (the full path's GC204) decline (:func:`spindle_mode`).
 * **Nothing else**: the plane (a lathe's machine file starts in G18, but the pass takes arcs only after the
   program sets the plane, as on a mill), the work offsets, ``G43 H<n>`` on the tool axis (Z on an X-Z lathe) and
   the zones are the mill's; the machine coordinates and zones are radii (``Machine.diameter_axes``), so the rows
@@ -43,10 +46,12 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["DIAMETER", "diameter_start", "diameter_body", "lathe_reason"]
+__all__ = ["DIAMETER", "SPINDLE_MODE", "diameter_start", "diameter_body", "lathe_reason", "spindle_mode"]
 
-#: The modal group of G7/G8 (LinuxCNC's group 15) as the pass names it (``doubles._GROUP_NAMES``).
+#: The modal groups of G7/G8 (LinuxCNC's group 15) and of G96/G97 (14) as the pass names them
+#: (``doubles._GROUP_NAMES``).
 DIAMETER = "diameter"
+SPINDLE_MODE = "spindle mode"
 #: ``st.half``: the factor of an X word in diameter mode (G7) and in radius mode (G8).
 _HALF = {7: 0.5, 8: 1.0}
 
@@ -88,3 +93,19 @@ def diameter_body(st: Any, groups: dict[str, int]) -> list[str]:
             raise Declined("G7 after a line with an X word (on a machine that is not a lathe)")
         st.diameter = True
     return [f"st.half = {_HALF[code]!r}"]
+
+
+def spindle_mode(groups: dict[str, int], others: list[str]) -> None:
+    """Decline a block's G96 without an S word (LinuxCNC refuses it: ``interp_check.cc``, "S word missing with
+    G96"; the full path takes it) and a D word without G96 in its block (LinuxCNC's and the full path's error,
+    GC204: the pass follows no cutter compensation nor cycle that reads D).  G96 and G97 themselves move
+    nothing."""
+    mode = groups.get(SPINDLE_MODE)
+    if mode == 96 and "S" not in others:
+        from .doubles import Declined
+
+        raise Declined("G96 without an S word (LinuxCNC's error)")
+    if "D" in others and mode != 96:
+        from .doubles import Declined
+
+        raise Declined("a D word without G96")

@@ -133,7 +133,14 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
-from .double_lathe import DIAMETER, diameter_body, diameter_start, lathe_reason
+from .double_lathe import (
+    DIAMETER,
+    SPINDLE_MODE,
+    diameter_body,
+    diameter_start,
+    lathe_reason,
+    spindle_mode,
+)
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -159,7 +166,7 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: The G codes the pass follows (the code table's ``doubles`` claims), by modal group: a whole number ``n`` as
 #: ``n``, ``n.1`` (G61.1, G91.1) as ``-(10 n + 1)`` (:func:`_code`).
 _GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 4: "arc distance", 6: "units", 7: "comp", 8: "tool", 3: "distance",
-                5: "feedmode", 12: "offset", 13: "path", 15: DIAMETER}
+                5: "feedmode", 12: "offset", 13: "path", 14: SPINDLE_MODE, 15: DIAMETER}
 #: Per plane code: the arc's (first, second) axes and their centre words, the full path's ``PLANE_AXES``
 #: (``Interpreter.arc``; LinuxCNC's ARC_FEED order: G18's first axis is Z, its second X, its centre words K
 #: and I).  The full path's arc is clockwise (G2) or not in the plane of those two axes in that order, and
@@ -180,7 +187,7 @@ _BLANKS = re.compile(r"[ \t]+")
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
-_LETTERS = frozenset("GMFSXYZIJKRHTPQ")
+_LETTERS = frozenset("GMFSXYZIJKRHTPQD")  # D: G96's speed limit (.double_lathe)
 #: Letters whose word is a literal code (H: the tool length register, T: a tool number, Q: M61's tool number,
 #: read like a G or M code).
 _CODE_LETTERS = "GMHTQ"
@@ -1193,9 +1200,10 @@ class _Pass:
         if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FSIJKRP" and x not in self.index:
+            if x not in "FSIJKRPD" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRP"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPD"]
+        spindle_mode(groups, others)  # G96/G97 and D (.double_lathe)
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
