@@ -63,8 +63,9 @@ default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the ma
 ``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  A lathe (``type = "lathe"`` or
 ``diameter_axes = ["X"]``; :mod:`.double_lathe` says what a lathe changes and why the bound holds): G7 and G8,
 an X word's double halved in G7 (``st.half``; a G91 increment and an arc's X end too; I, K and R never), a
-machine with X diameters starting in G7; a lathe with tool solids or other diameter axes, G70-G72, G76, G33,
-G95, G96/G97 and, on a machine that is not a lathe, a G7 after a line with an X word decline.  Everything else declines:
+machine with X diameters starting in G7; G96 with S (D its speed limit) and G97, which move nothing; a lathe
+with tool solids or other diameter axes, G70-G72, G76, G33, G95, G96 without S, D without G96 and, on a machine
+that is not a lathe, a G7 after a line with an X word decline.  Everything else declines:
 other codes and words, G64 P or Q, G20 (and a machine that starts in it or in G91), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
