@@ -78,34 +78,30 @@ def diameter_start(machine: Any) -> tuple[float, bool]:
     return (0.5 if dia else 1.0), (dia or lathe)
 
 
-def diameter_body(st: Any, groups: dict[str, int]) -> list[str]:
+def diameter_body(st: Any, groups: dict[str, int]) -> list[str] | str:
     """The code of a block's G7 or G8 (``st.half``, before the block's motion: the block's X takes the mode it
-    sets, as LinuxCNC's ``convert_lathe_diameter_mode``).  On a machine whose X words were compiled without the
-    factor (``st.diameter`` false: not a lathe), a G7 turns the factor on for the lines compiled after it, and
+    sets, as LinuxCNC's ``convert_lathe_diameter_mode``), or why the pass declines it (a ``str``, as
+    :mod:`.double_arcs` says why).  On a machine whose X words were compiled without the factor
+    (``st.diameter`` false: not a lathe), a G7 turns the factor on for the lines compiled after it, and
     declines when a line with an X word was compiled before it (its step would not halve)."""
     code = groups.get(DIAMETER)
     if code is None:
         return []
     if code == 7 and not st.diameter:
         if st.x_compiled:
-            from .doubles import Declined
-
-            raise Declined("G7 after a line with an X word (on a machine that is not a lathe)")
+            return "G7 after a line with an X word (on a machine that is not a lathe)"
         st.diameter = True
     return [f"st.half = {_HALF[code]!r}"]
 
 
-def spindle_mode(groups: dict[str, int], others: list[str]) -> None:
-    """Decline a block's G96 without an S word (LinuxCNC refuses it: ``interp_check.cc``, "S word missing with
-    G96"; the full path takes it) and a D word without G96 in its block (LinuxCNC's and the full path's error,
-    GC204: the pass follows no cutter compensation nor cycle that reads D).  G96 and G97 themselves move
-    nothing."""
+def spindle_mode(groups: dict[str, int], others: list[str]) -> str | None:
+    """Why the pass declines a block's G96 or D word (None: it does not): G96 without an S word (LinuxCNC
+    refuses it: ``interp_check.cc``, "S word missing with G96"; the full path takes it), a D word without G96 in
+    its block (LinuxCNC's and the full path's error, GC204: the pass follows no cutter compensation nor cycle
+    that reads D).  G96 and G97 themselves move nothing."""
     mode = groups.get(SPINDLE_MODE)
     if mode == 96 and "S" not in others:
-        from .doubles import Declined
-
-        raise Declined("G96 without an S word (LinuxCNC's error)")
+        return "G96 without an S word (LinuxCNC's error)"
     if "D" in others and mode != 96:
-        from .doubles import Declined
-
-        raise Declined("a D word without G96")
+        return "a D word without G96"
+    return None

@@ -1204,7 +1204,9 @@ class _Pass:
             if x not in "FSIJKRPD" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
         axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPD"]
-        spindle_mode(groups, others)  # G96/G97 and D (.double_lathe)
+        why = spindle_mode(groups, others)  # G96/G97 and D (.double_lathe)
+        if why is not None:
+            raise Declined(why)
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -1251,7 +1253,10 @@ class _Pass:
         if "offset" in groups:
             body.append(f"st.work({groups['offset']})")
         body += self._tool_body(groups.get("tool"), hs)
-        body += diameter_body(self, groups)
+        diameter = diameter_body(self, groups)  # G7/G8 (.double_lathe)
+        if diameter.__class__ is str:
+            raise Declined(str(diameter))
+        body += diameter
         if "path" in groups:
             body.append(f"st.mode({groups['path'] == 64})")
         if "distance" in groups:
