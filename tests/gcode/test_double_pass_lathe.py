@@ -175,6 +175,20 @@ def test_a_face_at_the_extreme_is_decided_as_the_full_path_does(name, monkeypatc
             assert "double_pass_boxes" in dict(with_pass.stats)
 
 
+@pytest.mark.parametrize("jaw, verdict", [(("30", "40"), Verdict.UNSAFE), (("55", "65"), Verdict.SAFE)])
+def test_a_diameter_in_a_forbidden_box_is_decided_as_the_full_path_does(jaw, verdict, monkeypatch):
+    """``X50`` in G7 is radius 25 (machine 35, G54's X 10): in jaws at machine X 30..40, clear of jaws at 55..65,
+    where a pass that took the diameter for a radius (machine 60) would see it (the mutation check)."""
+    jaws = ('[[zones]]\nname = "jaws"\nkind = "box"\nforbid = true\n'
+            f'min = {{ X = "{jaw[0]}", Z = "150" }}\nmax = {{ X = "{jaw[1]}", Z = "210" }}\n')
+    machine = parse_machine(machine_text("report_lathe", set={"machine.path_mode": "G61"},
+                                         extra='[machine.start]\nX = "20"\nZ = "300"\n' + jaws))
+    text = HEAD + "G0 Z50\nG0 X[#1 * 5]\nG1 Z0\nG0 Z50\nM30\n"  # X moves at Z 250, clear of the jaws
+    with_pass, without = both_ways(text, machine, monkeypatch)
+    same_outcome(with_pass, without)
+    assert with_pass.verdict is verdict
+
+
 # -- the invariant on generated lathe programs ---------------------------------------------------------------------
 
 def _word(draw) -> str:
@@ -289,3 +303,43 @@ def test_the_generated_lathe_programs_are_often_taken():
 
     count()
     assert seen["taken"] >= 15 and min(seen[k] for k in ("arcs", "G7 and G8", "G91")) >= 3, seen
+
+
+@st.composite
+def zoned_lathes(draw):
+    """report_lathe (G7 at the start, or G8) with its travel's X and Z faces drawn near the generated programs'
+    moves, and a forbidden box (a chuck's jaws) or not."""
+    hi_x, lo_z = draw(st.integers(5, 600)), draw(st.integers(-400, 215))
+    extra = ""
+    if draw(st.booleans()):
+        a = draw(st.integers(0, 60))
+        extra = ('[[zones]]\nname = "jaws"\nkind = "box"\nforbid = true\n'
+                 f'min = {{ X = "{a}", Z = "150" }}\nmax = {{ X = "{a + 5}", Z = "{draw(st.integers(160, 205))}" }}\n')
+    set_: dict = {"machine.path_mode": draw(st.sampled_from(["G64", "G61"]))}
+    if draw(st.booleans()):
+        set_["machine.diameter_axes"] = []
+    text = machine_text("report_lathe", set=set_, extra='[machine.start]\nX = "1"\nZ = "300"\n' + extra)
+    text = text.replace(_TRAVEL_MAX, f'max = {{ X = "{hi_x}", Z = "400" }}')
+    return parse_machine(text.replace(_TRAVEL_MIN, f'min = {{ X = "-{hi_x}", Z = "{lo_z}" }}'))
+
+
+@settings(max_examples=int(os.environ.get("NCZONES_DOUBLE_PASS_LATHE_VERDICTS", "16")), deadline=None,
+          derandomize=True, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
+                                                   HealthCheck.function_scoped_fixture])
+@given(lathe_programs(), zoned_lathes())
+def test_the_verdict_on_a_lathe_is_the_full_paths(monkeypatch, text, machine):
+    """Every verdict, violation, reason and note with the pass tried first is the full path's, on generated lathe
+    programs against travel faces and a forbidden box near their moves (a long run:
+    ``NCZONES_DOUBLE_PASS_LATHE_VERDICTS``)."""
+    try:
+        with_pass, without = both_ways(text, machine, monkeypatch, max_iterations=1000)
+    except Exception as exc:  # noqa: BLE001  # a G-code error: the same error both ways
+        from nczones.prover import verify_text
+        from tests.prover.test_double_pass_proof import prover_doubles
+
+        with monkeypatch.context() as m:
+            m.setattr(prover_doubles, "double_pass_result", lambda *args, **kwargs: None)
+            with pytest.raises(type(exc)):
+                verify_text(text, machine, max_iterations=1000)
+        return
+    same_outcome(with_pass, without)
