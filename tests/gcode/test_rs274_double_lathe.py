@@ -2,7 +2,7 @@
 
 Drawn programs (a seeded generator, :func:`lathe_text`) switch between diameter (G7) and radius (G8) mode, move
 X and Z by literals and expressions, absolutely and incrementally (G91 X in G7: LinuxCNC halves the increment,
-``Interp::read_x``), and cut G18 arcs by K/I (radii) and R from ends written in the mode in force.  Each runs
+``Interp::read_x``), and cut G18 arcs by K/I (radii) and R from ends written in the mode in force, after G96 (D S), G97 or M3.  Each runs
 through ``rs274 -g`` (no INI: the programs write G7 themselves; LinuxCNC starts in G8, as a lathe whose machine
 file has no ``diameter_axes``); when the pass takes it, it has rs274's motion count and every row of the pass
 is rs274's end point within the log's rounding (4 decimals), and the full interpreter's run agrees with the
@@ -40,7 +40,8 @@ SEEDS = range(int(os.environ.get("NCZONES_RS274_DOUBLE_LATHE", "6")))
 def lathe_text(seed: int) -> str:
     """A lathe program of some 40 blocks (module docstring)."""
     rnd = random.Random(seed)
-    out = ["G18 G21 G90 G54 G7 F200", "#1 = 0.5", "G0 X40 Z5"]
+    spindle = rnd.choice(["G96 D2500 S200 M3", "G97 S800 M4", "M3 S500"])  # G96/G97 move nothing
+    out = ["G18 G21 G90 G54 G7 F200", spindle, "#1 = 0.5", "G0 X40 Z5"]
     dia, x, z = True, 20.0, 5.0  # the mode, where the tool is (radius), in program units
     for _ in range(40):
         kind = rnd.randrange(6)
