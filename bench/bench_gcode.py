@@ -34,7 +34,8 @@ modules are imported; their import time is printed on its own), for
 The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_program`, :func:`comp_program` and
 :func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
 ``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost"); the pass
-takes :func:`g18_program`'s arcs since plane38 on a mill (a lathe, ``machine_type``, it still declines).
+takes :func:`g18_program`'s arcs since plane38, and lathes since lathe39 (:func:`lathe_program`: G7 diameters, G18
+arcs by K/I and R).
 """
 
 from __future__ import annotations
@@ -291,6 +292,26 @@ def g18_program(n: int, seed: int = 37) -> str:
         else:
             out.append(f"G2 X{x + 1:.3f} Z0 R2")
             x += 1
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def lathe_program(n: int, seed: int = 43) -> str:
+    """About ``n`` lines of a LinuxCNC lathe program in G7 (X words are diameters) and G18: a ``G1`` whose X is an
+    expression (``X[#1 + 41.250] Z-12.5``), a quarter ``G3`` by K and I (radii) and a ``G2`` by R from its end,
+    in turn, with ``#1`` stepped every 30th line (the arcs' X words follow it, so every arc ends on its circle).
+    The pass takes it on a lathe since lathe39; before, every lathe program ran the full path."""
+    rnd = random.Random(seed)
+    out = ["G18 G7 G21 G90 G54 F300", "#1 = 0", "G0 X100 Z5"]
+    while len(out) < n - 1:
+        if len(out) % 30 == 0:
+            out.append(f"#1 = [#1 + {rnd.uniform(0, 0.01):.4f}]")
+            continue
+        d, z, r = (round(rnd.uniform(lo, hi), 3) for lo, hi in ((20, 100), (-100, 0), (0.5, 3)))
+        out.append(f"G1 X[#1 + {d:.3f}] Z{z:.3f}")
+        # a quarter counter-clockwise in (Z, X) about (z - r, x): to (z - r, x + r), diameter + 2 r
+        out.append(f"G3 X[#1 + {d + 2 * r:.3f}] Z{z - r:.3f} K{-r:.3f} I0")
+        out.append(f"G2 X[#1 + {d + 4 * r:.3f}] Z{z - 2 * r:.3f} R{1.5 * r:.3f}")
     out.append("M30")
     return "\n".join(out) + "\n"
 

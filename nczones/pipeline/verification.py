@@ -127,7 +127,7 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     deleted = bool(used)
     source = _kept_streamed(source, machine, options, dialect, ranges, deleted)
     if (options.engine == "auto" and not ranges and options.recovery is None and not deleted
-            and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and _double_pass_reads(source.text)):
+            and dialect == "linuxcnc" and machine.dialect == "linuxcnc" and _double_pass_reads(source.text, machine)):
         quick = _double_pass_first(source, machine, options, tolerance, margin, t0, progress,
                                    (nose_note, nose_reasons), settings)
         if quick is not None:
@@ -197,11 +197,13 @@ def _oword_line() -> Any:
     return re.compile(r"(?:^|\n)[ \t]*(?:/[ \t]*\d?[ \t]*)?(?:[nN][ \t]*\d[\d. \t]*)?[oO][ \t]*[\d<]")
 
 
-def _double_pass_reads(text: str | FileText) -> bool:
+def _double_pass_reads(text: str | FileText, machine: Machine | None = None) -> bool:
     r"""Whether the double pass is tried first: a program with parameters (``#``), or one with o-words (the
     fast path hands those to the language layer, which the pass runs some 4x faster: issue 36's "o-word subs,
-    no #" class).  Soundness does not rest on this test: the pass proves or declines (then the full path
-    decides) whatever it is given; a program it misses goes the full path as before.
+    no #" class), a plain program of the pass's size, and any program of :data:`FAST_PATH_MIN_LINES` lines or
+    more on a lathe (``machine``: ``type = "lathe"`` or diameter axes), which no fast path reads (lathe39).
+    Soundness does not rest on this test: the pass proves or declines (then the full path decides) whatever it
+    is given; a program it misses goes the full path as before.
 
     >>> _double_pass_reads("G1 X1 (#1 in a comment counts: the pass declines or agrees)")
     True
@@ -217,6 +219,11 @@ def _double_pass_reads(text: str | FileText) -> bool:
     False
     >>> _double_pass_reads("G21 G90 G18 G54 F100\n" + "G2 X1 Z1 I5 K0\n" * 25_000)  # so are G18's I/K arcs
     False
+    >>> from nczones.machine import parse_machine
+    >>> lathe = parse_machine('[machine]\ntype = "lathe"\naxes = ["X", "Z"]\n[machine.rapid]\nX = "1000"\n'
+    ...                       'Z = "1000"\n[machine.reference]\nX = "0"\nZ = "0"\n')
+    >>> _double_pass_reads("G21 G90 G18 G54 F100\n" + "G2 X1 Z1 I5 K0\n" * 25_000, lathe)  # a lathe: the pass
+    True
     """
     if "#" in text:
         return True
@@ -225,6 +232,8 @@ def _double_pass_reads(text: str | FileText) -> bool:
         pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
         if any(_oword_line().search(p) is not None for p in pieces):
             return True
+    if machine is not None and (machine.is_lathe or machine.diameter_axes):  # no fast path for a lathe
+        return _line_count(text) >= FAST_PATH_MIN_LINES  # type: ignore[arg-type]  # FileText counts too
     return _small_plain(text)
 
 
@@ -421,7 +430,7 @@ def _streams(text: FileText, machine: Machine, options: VerifyOptions, dialect: 
     if not (dialect in ("linuxcnc", "fanuc") and machine.dialect == dialect and not ranges
             and options.recovery is None and not declares_solids(machine) and not deleted):
         return False
-    if dialect == "linuxcnc" and options.engine == "auto" and not passed and _double_pass_reads(text):
+    if dialect == "linuxcnc" and options.engine == "auto" and not passed and _double_pass_reads(text, machine):
         return True
     return text.ascii
 

@@ -81,7 +81,7 @@ def check_against_full(text: str, machine, max_iterations: int = 1000) -> Double
             for v in (seg.start[i], seg.end[i]):
                 assert lo[a] <= v <= hi[a], (k, a, v, lo[a], hi[a])
         if seg.kind is SegmentKind.ARC:
-            check_arc_in_box(seg, lo, hi)
+            check_arc_in_box(seg, lo, hi, axes)
     return path
 
 
@@ -98,20 +98,20 @@ def check_corners(path: DoublePath, segments: list, modes: list[tuple[int, PathM
         assert path.blended(k) == (bare and not dwell), (k, mode, before.kind, after.kind)
 
 
-def _plane(seg) -> tuple[int, int]:
-    """The indices (first, second) of the plane axes of the full path's arc ``seg`` (an X, Y, Z machine)."""
+def _plane(seg, axes: tuple[str, ...] = ("X", "Y", "Z")) -> tuple[int, int]:
+    """The indices (first, second) of the plane axes of the full path's arc ``seg`` on a machine of ``axes``."""
     a, b, _n = PLANE_AXES[seg.plane]
-    return "XYZ".index(a), "XYZ".index(b)
+    return axes.index(a), axes.index(b)
 
 
-def arc_points(seg) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
+def arc_points(seg, axes: tuple[str, ...] = ("X", "Y", "Z")) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
     """Points of the full path's arc ``seg`` at 200 bits, in its plane's axes (first, second: G18's are Z and
     X), computed from the segment alone: its ends and,
     at both radii (a spiral lies between), 64 points of its sweep and the points in every axis direction the
     sweep holds.  The centre of an R arc is ``(S + E) / 2 + s h n`` (``h = sqrt(R**2 - |E - S|**2 / 4)``, n the
     left normal of the chord, s = -1 for G2 with R > 0 and G3 with R < 0: LinuxCNC's arc_data_r)."""
     mp = mpmath.mp
-    ia, ib = _plane(seg)
+    ia, ib = _plane(seg, axes)
     sx, sy, ex, ey = (mpmath.mpf(Fraction(v).numerator) / Fraction(v).denominator
                       for v in (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib]))
     if seg.centre is not None:
@@ -137,12 +137,12 @@ def arc_points(seg) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
     return pts
 
 
-def check_arc_in_box(seg, lo, hi) -> None:
+def check_arc_in_box(seg, lo, hi, axes: tuple[str, ...] = ("X", "Y", "Z")) -> None:
     """Every point of :func:`arc_points` lies in the enclosure (its bounds are exact binary fractions)."""
     with mpmath.workprec(200):
         box = [(mpmath.mpf(lo[a].numerator) / lo[a].denominator, mpmath.mpf(hi[a].numerator) / hi[a].denominator)
                for a in PLANE_AXES[seg.plane][:2]]
-        for p in arc_points(seg):
+        for p in arc_points(seg, axes):
             for v, (b_lo, b_hi) in zip(p, box):
                 # 1e-45: the points' own rounding at 200 bits, far below any double's
                 assert b_lo - mpmath.mpf(10) ** -45 <= v <= b_hi + mpmath.mpf(10) ** -45, (seg, p, box)
@@ -482,12 +482,6 @@ def test_a_machine_that_starts_outside_the_subset_is_declined(modal):
     machine = parse_machine(machine_text(modal=modal))
     with pytest.raises(Declined):
         double_pass("G21 G90 G54 F100\n#1 = 1\nG1 X#1\n", machine, max_iterations=5)
-
-
-def test_a_lathe_is_declined():
-    lathe = parse_machine(machine_text().replace('pulse = "0.001"', 'pulse = "0.001"\ntype = "lathe"'))
-    with pytest.raises(Declined, match="lathe"):
-        double_pass("G21 G90 G54 F100\n#1 = 1\nG1 X#1\n", lathe, max_iterations=5)
 
 
 def test_a_machine_of_another_dialect_is_declined():

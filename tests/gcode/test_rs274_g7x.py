@@ -2,8 +2,8 @@
 
 * regression tests of the classes the focused generator (``tests/tools/rs274_g7x.py``) found, each through
   ``nczones.prover.verify_text`` on a short program, one with more than 512 motions and one with parameters
-  (lathe programs never take the fast path or the double pass: ``nczones/gcode/__init__.py``, ``doubles.py``
-  declines "a lathe"; the full interpreter is the only lane);
+  (lathe programs never take the fast path, ``nczones/gcode/__init__.py``, and the double pass declines
+  G70-G72: the full interpreter is the only lane for them);
 * the CI-size differential (120 programs, about 6 s) and the long profile (``-m long``,
   ``NCZONES_RS274_G7X_PROGRAMS``, default 5,000).  In CI (``CI=true``) a missing ``rs274`` fails; locally it
   skips.  Numbers in specs/contract.md ("G70-G72").

@@ -65,7 +65,12 @@ default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the ma
 ``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  A motion while the units, distance mode or work offset (an arc: also the
 plane) are still the machine file's runs in the machine file's codes, as the full path's does, which notes each
 such group at the first motion that needs it: the pass records the same notes (:attr:`DoublePath.assumed`).
-Everything else declines:
+A lathe (``type = "lathe"`` or
+``diameter_axes = ["X"]``; :mod:`.double_lathe` says what a lathe changes and why the bound holds): G7 and G8,
+an X word's double halved in G7 (``st.half``; a G91 increment and an arc's X end too; I, K and R never), a
+machine with X diameters starting in G7; G96 with S (D its speed limit) and G97, which move nothing; a lathe
+with tool solids or other diameter axes, G70-G72, G76, G33, G95, G96 without S, D without G96 and, on a machine
+that is not a lathe, a G7 after a line with an X word decline.  Everything else declines:
 other codes and words, G64 with Q or with P not above 0, G20 (and a machine that starts in it or in G91), block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a G1 without a positive feed, a loop at its iteration bound, a
@@ -134,6 +139,14 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
+from .double_lathe import (
+    DIAMETER,
+    SPINDLE_MODE,
+    diameter_body,
+    diameter_start,
+    lathe_reason,
+    spindle_mode,
+)
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -159,7 +172,7 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: The G codes the pass follows (the code table's ``doubles`` claims), by modal group: a whole number ``n`` as
 #: ``n``, ``n.1`` (G61.1, G91.1) as ``-(10 n + 1)`` (:func:`_code`).
 _GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 4: "arc distance", 6: "units", 7: "comp", 8: "tool", 3: "distance",
-                5: "feedmode", 12: "offset", 13: "path"}
+                5: "feedmode", 12: "offset", 13: "path", 14: SPINDLE_MODE, 15: DIAMETER}
 #: Per plane code: the arc's (first, second) axes and their centre words, the full path's ``PLANE_AXES``
 #: (``Interpreter.arc``; LinuxCNC's ARC_FEED order: G18's first axis is Z, its second X, its centre words K
 #: and I).  The full path's arc is clockwise (G2) or not in the plane of those two axes in that order, and
@@ -180,7 +193,7 @@ _BLANKS = re.compile(r"[ \t]+")
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
-_LETTERS = frozenset("GMFSXYZIJKRHTPQ")
+_LETTERS = frozenset("GMFSXYZIJKRHTPQD")  # D: G96's speed limit (.double_lathe)
 #: Letters whose word is a literal code (H: the tool length register, T: a tool number, Q: M61's tool number,
 #: read like a G or M code).
 _CODE_LETTERS = "GMHTQ"
@@ -418,8 +431,9 @@ class _Pass:
         #: rows of a full window (the one before its first motion included); past it the window is handed over
         self.rows = window + 1 if on_window is not None else MAX_MOTIONS + 2
         self.row0 = 0  # the row columns[a][0] is
-        if getattr(machine, "machine_type", "mill") != "mill" or getattr(machine, "diameter_axes", ()):
-            raise Declined("a lathe")
+        lathe = lathe_reason(machine)  # a lathe: .double_lathe
+        if lathe is not None:
+            raise Declined(lathe)
         if getattr(machine, "dialect", "linuxcnc") != "linuxcnc":
             raise Declined("a machine of another dialect than LinuxCNC")
         modal = set(machine.modal)
@@ -440,6 +454,9 @@ class _Pass:
         self.max_iterations = max_iterations
         self.axes = tuple(machine.axis_names)
         self.index = {a: i for i, a in enumerate(self.axes)}
+        #: G7/G8: an X word's factor now, X words compiled with it, one compiled without it (.double_lathe)
+        self.half, self.diameter = diameter_start(machine)
+        self.x_axis, self.x_compiled = self.index.get("X"), False
         wcs = next((c for c in machine.modal if c.startswith(("G54", "G55", "G56", "G57", "G58", "G59"))), "G54")
         if wcs not in WORK_OFFSETS:
             raise Declined(f"the machine starts in {wcs}")
@@ -1230,9 +1247,12 @@ class _Pass:
         if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FSIJKRP" and x not in self.index:
+            if x not in "FSIJKRPD" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRP"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPD"]
+        why = spindle_mode(groups, others)  # G96/G97 and D (.double_lathe)
+        if why is not None:
+            raise Declined(why)
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -1279,6 +1299,10 @@ class _Pass:
         if "offset" in groups:
             body.append(f"st.work({groups['offset']})")
         body += self._tool_body(groups.get("tool"), hs)
+        diameter = diameter_body(self, groups)  # G7/G8 (.double_lathe)
+        if diameter.__class__ is str:
+            raise Declined(str(diameter))
+        body += diameter
         if "path" in groups:
             if "P" in others:  # G64 P (_dwell_body: P only with G4 or G64)
                 body.append(f"st.tolerance(v[{others.index('P')}])")
@@ -1359,19 +1383,30 @@ class _Pass:
         stands for, so ``e`` bounds the error however long the chain (it grows along it: the row before a
         chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain)."""
         named = tuple(i for _k, i in axes)
-        g90 = [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        g90 = [f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes]
         if not self.g91_text:  # no G91 in the text (_modal_body): no chain
             return g90
         inc = []
         for k, i in axes:
-            inc += [f"x{i} = pos[{i}] + v[{k}]", f"e = ERR[{i}]",
+            w = self._word(k, i)
+            inc += [f"x{i} = pos[{i}] + {w}", f"e = ERR[{i}]",
                     f"if e is None: e = NA((2.0 * abs(pos[{i}]) + {self.offb2[i]!r}) * EPS2, INF)",
-                    f"e = ERR[{i}] = NA(e + NA((abs(v[{k}]) + abs(x{i})) * EPS2, INF), INF)",
+                    f"e = ERR[{i}] = NA(e + NA((abs({w}) + abs(x{i})) * EPS2, INF), INF)",
                     f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
         # one test on the common way (G90, no chain open: ``slow`` false)
         return ["if st.slow:", "    if st.inc:", *(f"        {b}" for b in inc), "        st.chained = True",
                 "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
                 "else:", *(f"    {b}" for b in g90)]
+
+    def _word(self, k: int, i: int) -> str:
+        """The source of the double of axis word ``v[k]`` (axis ``i``): an X word times ``st.half`` (G7 halves it,
+        :mod:`.double_lathe`) where X may be a diameter, else the word."""
+        if i != self.x_axis:
+            return f"v[{k}]"
+        if not self.diameter:
+            self.x_compiled = True
+            return f"v[{k}]"
+        return f"(v[{k}] * st.half)"
 
     def _arc_body(self, others: list[str], plane: int) -> list[str]:
         """The code that adds the box of the arc just moved in ``plane`` (:mod:`.double_arcs`, on the plane's
@@ -1414,7 +1449,7 @@ class _Pass:
         moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
         return [f"sa = pos[{ia}]; sb = pos[{ib}]",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *(f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes),
+                *(f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes),
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
