@@ -24,7 +24,7 @@ POST = '[[zones]]\nname = "post"\nkind = "box"\nforbid = true\nmin = { X = "40",
 def _result(text: str, machine, monkeypatch, *, routed: bool):
     with monkeypatch.context() as m:
         if not routed:
-            m.setattr(verification, "_double_pass_reads", lambda t: False)
+            m.setattr(verification, "_double_pass_reads", lambda t, machine=None: False)
         return verify_text(text, machine)
 
 
