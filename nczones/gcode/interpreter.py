@@ -1112,6 +1112,10 @@ class Interpreter:
             self._check_word_users(gcodes, mcodes, groups, words, axis_words)
         if g1 and g1[0] in (382, 383, 384, 385) and not axis_words:
             raise self.error("GC208", f"{gname(g1[0])} without axis words: a probing move needs a target", g1[1])
+        if 14 in groups and groups[14][0] == 960 and "S" not in words and self.dialect == "linuxcnc":
+            # interp_check.cc check_other_codes: NCE_S_WORD_MISSING_WITH_G96 (rs274 2.9 stops there)
+            raise self.error("GC208", "G96 without an S word (the surface speed): LinuxCNC refuses the block "
+                                      "(\"S word missing with G96\"); write G96 S<speed>", groups[14][1])
         # unsupported codes: stop emitting, keep checking blocks
         for k, w in gcodes:
             if k in UNSUPPORTED_G:

@@ -215,7 +215,7 @@ class Generator:
             return [f"#1 = {self.num(-5, 5)}", f"{name} = [#1 * {r.choice(['2', '0.5', '-1'])}]"][: r.randint(1, 2)]
         if roll == 9:
             return [r.choice(["G98", "G99"])]
-        return [r.choice(["G80", "G40", "G49", "G97", "G96 S100 D2000"])]
+        return [r.choice(["G80", "G40", "G49", "G97", "G96 S100 D2000", "G96 D2000"])]  # (no S: refused)
 
     def straight(self) -> list[str]:
         r = self.r
