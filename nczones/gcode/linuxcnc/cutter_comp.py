@@ -173,6 +173,46 @@ class _Move:
     dwell: Fraction | None = None
 
 
+#: the program unit in millimetres as (numerator, denominator): G21, G20
+_MM_PARTS, _INCH_PARTS = (1, 1), (_INCH.numerator, _INCH.denominator)
+
+
+def machine_exact(value: float, off: Fraction, unit: tuple[int, int]) -> Fraction:
+    """``Fraction(value) * unit + off``: the exact machine coordinate of the program-frame double ``value``
+    (``unit``: the program unit in mm as ``(numerator, denominator)``, ``off``: the axis's exact offset).
+
+    The same value as that formula (one Fraction instead of three operations, each normalising): ``value`` is
+    ``n / d`` exactly (``float.as_integer_ratio``), so the sum is the integer quotient
+    ``(n un q + p d ud) / (d ud q)`` with ``off = p / q``, ``unit = un / ud``; ``Fraction`` normalises it, so
+    numerator and denominator are the formula's too.
+
+    >>> machine_exact(0.1, Fraction(100), (1, 1)) == Fraction(0.1) + 100
+    True
+    >>> machine_exact(-2.5, Fraction(1, 3), (127, 5))
+    Fraction(-379, 6)
+    """
+    n, d = value.as_integer_ratio()
+    p, q = off.as_integer_ratio()
+    un, ud = unit
+    return Fraction(n * un * q + p * d * ud, d * ud * q)
+
+
+def program_double(value: Fraction, off: Fraction, unit: tuple[int, int]) -> float:
+    """``to_float((value - off) / unit)``: the program-frame double of an exact machine coordinate.
+
+    The same double: the quotient is ``(vn q - p vd) ud / (vd q un)`` with ``value = vn / vd``, ``off = p / q``,
+    ``unit = un / ud`` (positive denominators), and Python's division of two integers is correctly rounded,
+    as :func:`~nczones.exact.to_float`'s division of the normalised parts is: one rational, one rounding.
+
+    >>> program_double(Fraction(1001, 10), Fraction(100), (1, 1)) == to_float(Fraction(1, 10))
+    True
+    """
+    vn, vd = value.as_integer_ratio()
+    p, q = off.as_integer_ratio()
+    un, ud = unit
+    return ((vn * q - p * vd) * ud) / (vd * q * un)
+
+
 def _find_turn(x1: float, y1: float, cx: float, cy: float, turn: int, x2: float, y2: float) -> float:
     """Signed sweep (radians) of an arc from (x1, y1) to (x2, y2) around (cx, cy) (LinuxCNC ``find_turn``)."""
     if turn == 0:
@@ -273,12 +313,12 @@ class CutterComp:
         return _INCH if self.it.inch else Fraction(1)
 
     def _fprog(self, i: int, machine_value: Fraction) -> float:
-        """Program-frame double of an exact machine coordinate (what LinuxCNC holds)."""
-        return to_float((machine_value - self.it.off[i]) / self._unit())
+        """Program-frame double of an exact machine coordinate (what LinuxCNC holds): :func:`program_double`."""
+        return program_double(machine_value, self.it.off[i], _INCH_PARTS if self.it.inch else _MM_PARTS)
 
     def _fmachine(self, i: int, value: float) -> Fraction:
-        """Exact machine coordinate of a program-frame double."""
-        return Fraction(value) * self._unit() + self.it.off[i]
+        """Exact machine coordinate of a program-frame double: :func:`machine_exact`."""
+        return machine_exact(value, self.it.off[i], _INCH_PARTS if self.it.inch else _MM_PARTS)
 
     def current_point(self, i: int) -> tuple[bool, Fraction | None]:
         """Axis ``i`` of the compensated current point (LinuxCNC's ``settings->current_x`` ..), machine
@@ -481,8 +521,11 @@ class CutterComp:
                 end = tuple(start)
             else:
                 e = list(q.end)
-                e[ia] = self._fmachine(ia, q.a) + sa
-                e[ib] = self._fmachine(ib, q.b) + sb
+                e[ia] = self._fmachine(ia, q.a)
+                e[ib] = self._fmachine(ib, q.b)
+                if self.orientation:
+                    e[ia] += sa
+                    e[ib] += sb
                 end = tuple(e)
             ds: tuple = ()
             de: tuple = ()
