@@ -1351,12 +1351,12 @@ def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
     m = tuple(map(_mid, seg.start, seg.end))
     p = seg.end if end else seg.start
     if _linear(seg, dogleg):
-        return tuple(map(min, m, p)), tuple(map(max, m, p))
+        return tuple(map(_lo, m, p)), tuple(map(_hi, m, p))
     if seg.kind is _ARC:
         half = _half_arc_box(seg, end)
         if half is not None:
             # the other axes (a helix's) move with the angle: the half of their travel at that end
-            lo, hi = list(map(min, m, p)), list(map(max, m, p))
+            lo, hi = list(map(_lo, m, p)), list(map(_hi, m, p))
             (xl, xh), (yl, yh), ia, ib = half
             lo[ia], hi[ia], lo[ib], hi[ib] = xl, xh, yl, yh
             return tuple(lo), tuple(hi)
