@@ -533,7 +533,8 @@ def on_start_ray(seg: Segment) -> bool:
     """
     last = _RAY_LAST
     if last[0] is seg:
-        return last[1]
+        kept: bool = last[1]
+        return kept
     answer = _on_start_ray(seg)
     _RAY_LAST[:] = [seg, answer]
     return answer
@@ -566,6 +567,38 @@ def _scaled_arc(seg: Segment) -> tuple | None:
     denominator of its start, end and centre in its plane, those six coordinates times ``d`` (integers) and
     the vectors ``u``, ``w`` from the centre to start and end, times ``d``; None when a coordinate is not a
     Fraction (an int)."""
+    key = id(seg)
+    hit = _SCALED.get(key)
+    if hit is not None and hit[0] is seg:
+        kept: tuple | None = hit[1]
+        return kept
+    scaled = _scale_arc(seg)
+    _keep(_SCALED, key, (seg, scaled))
+    return scaled
+
+
+def _keep(cache: dict[int, tuple], key: int, entry: tuple) -> None:
+    """``cache[key] = entry``, the oldest entry out first when :data:`_KEPT` are kept (another thread's change
+    between the look-up and the removal only skips the removal)."""
+    if len(cache) >= _KEPT:
+        try:
+            cache.pop(next(iter(cache)), None)
+        except (RuntimeError, StopIteration):
+            pass
+    cache[key] = entry
+
+
+#: how many answers :func:`_scaled_arc` and :func:`rational_arc_plane_box` keep
+_KEPT = 4096
+
+
+#: :func:`_scaled_arc`'s answers by ``id(seg)`` with the segment (the whole-turn test and the box of the same arc,
+#: in the per-motion proof and the corner check), kept as :data:`_PLANE_BOXES` keeps boxes (each entry holds its segment)
+_SCALED: dict[int, tuple] = {}
+
+
+def _scale_arc(seg: Segment) -> tuple | None:
+    """:func:`_scaled_arc`, computed."""
     centre = seg.centre
     assert centre is not None  # the callers ask arcs with a centre
     ia, ib, _ = seg.plane_indices()
@@ -716,11 +749,10 @@ def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
     key = id(seg)
     hit = _PLANE_BOXES.get(key)
     if hit is not None and hit[0] is seg and hit[1] == bits:
-        return hit[2]
+        kept: tuple | None = hit[2]
+        return kept
     box = _rational_arc_plane_box(seg, bits)
-    if len(_PLANE_BOXES) >= _PLANE_BOXES_KEPT:
-        del _PLANE_BOXES[next(iter(_PLANE_BOXES))]  # the oldest
-    _PLANE_BOXES[key] = (seg, bits, box)
+    _keep(_PLANE_BOXES, key, (seg, bits, box))
     return box
 
 
@@ -728,7 +760,6 @@ def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
 #: the per-motion proof box the same arc, a batch of motions apart).  A Segment is frozen and each entry keeps
 #: its own alive, so no other object has its id while the entry is kept; the oldest entry goes first.
 _PLANE_BOXES: dict[int, tuple] = {}
-_PLANE_BOXES_KEPT = 4096
 
 
 def _scaled_root(n2: int, d: int, bits: int, upper: bool) -> tuple[int, int]:

@@ -169,9 +169,9 @@ def test_a_box_pushed_out_is_computed_again():
     first = arc(0)
     want = ref_rational_arc_plane_box(first)
     assert geometry.rational_arc_plane_box(first) == want
-    for k in range(1, geometry._PLANE_BOXES_KEPT + 10):
+    for k in range(1, geometry._KEPT + 10):
         geometry.rational_arc_plane_box(arc(k))
-    assert len(geometry._PLANE_BOXES) <= geometry._PLANE_BOXES_KEPT
+    assert len(geometry._PLANE_BOXES) <= geometry._KEPT
     assert geometry.rational_arc_plane_box(first) == want
 
 
