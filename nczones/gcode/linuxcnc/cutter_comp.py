@@ -306,12 +306,20 @@ class CutterComp:
     machine_now: tuple | None = None  # where the last emitted segment ended (machine, exact)
     orientation: int = 0  # lathe tool orientation (G41.1/G42.1 L): the controlled point is not the nose centre
     deps_now: list | None = None
+    #: the last plane :meth:`_axes` was asked for, and its answer (the plane cannot change while compensation is on)
+    axes_of: tuple[Plane | None, tuple[int, int, int | None]] = (None, (0, 0, None))
 
     # ------------------------------------------------------------------ frame
     def _axes(self) -> tuple[int, int, int | None]:
         it = self.it
-        a, b, n = PLANE_AXES[it.plane]
-        return it.index[a], it.index[b], it.index.get(n)
+        plane = it.plane
+        last = self.axes_of
+        if last[0] is plane:
+            return last[1]
+        a, b, n = PLANE_AXES[plane]
+        axes = it.index[a], it.index[b], it.index.get(n)
+        self.axes_of = (plane, axes)
+        return axes
 
     def _unit(self) -> Fraction:
         return _INCH if self.it.inch else Fraction(1)
