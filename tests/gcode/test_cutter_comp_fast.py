@@ -21,6 +21,7 @@ from nczones.gcode import interpret_text
 from nczones.gcode.linuxcnc import cutter_comp as cc
 from nczones.machine import parse_machine
 from tests.machines import machine_text
+from tests.sizes import examples
 
 _INCH = F(254, 10)
 
@@ -192,7 +193,7 @@ def _outcome(text: str, machine, track: bool) -> object:
         return exc.diagnostics[0].code
 
 
-@settings(max_examples=60, deadline=None, derandomize=True)
+@settings(max_examples=examples(60, 1000), deadline=None, derandomize=True)
 @given(comp_programs(), st.booleans())
 def test_compensated_program_is_the_references_segment_for_segment(case, track):
     text, off = case

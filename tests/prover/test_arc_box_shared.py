@@ -32,6 +32,7 @@ from tests.gcode.test_cutter_comp_fast import _MACHINES, comp_programs
 from tests.machines import machine_text
 from tests.prover.test_arc_box_screen import _clamp
 from tests.prover.test_blend_screens import arcs
+from tests.sizes import examples
 
 
 # ---------------------------------------------------------------------------------------------- references
@@ -179,7 +180,7 @@ _G64 = PathMode(True, None, F(0), "linuxcnc", "G64")
 _PT = st.tuples(*[st.integers(-10**4, 10**4).map(lambda k: F(k, 8))] * 3)
 
 
-@settings(max_examples=200, deadline=None, derandomize=True)
+@settings(max_examples=examples(150, 2000), deadline=None, derandomize=True)
 @given(seg=arcs(), far=_PT, other=_PT, line_first=st.booleans(), joined=st.booleans())
 def test_a_line_arc_corner_screen_box_is_the_former(seg, far, other, line_first, joined):
     """The straight motion before the arc (from ``far``), or after it (to ``far``, from the arc's end or, not
@@ -202,7 +203,7 @@ def _former(mp: pytest.MonkeyPatch) -> None:
     mp.setattr(blend.CornerCheck, "_screen_box", ref_screen_box)
 
 
-@settings(max_examples=20, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.filter_too_much])
+@settings(max_examples=examples(20, 300), deadline=None, derandomize=True, suppress_health_check=[HealthCheck.filter_too_much])
 @given(case=comp_programs(), pick=st.integers(0, 100), side=st.integers(0, 3),
        where=st.sampled_from(["touch", "cut", "clear"]))
 def test_a_clamp_at_a_corner_arc_answers_as_the_former_code(case, pick, side, where):
