@@ -16,21 +16,22 @@ from __future__ import annotations
 
 from fractions import Fraction
 from fractions import Fraction as F
-from math import lcm
+from math import ceil, floor, lcm
 
 import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from nczones.errors import GcodeError, InvalidArgument
-from nczones.gcode import interpret_text
+from nczones.gcode import interpret_text, program_text
 from nczones.machine import parse_machine
 from nczones.motion import PathMode, Segment, SegmentKind
+from nczones.pipeline.verification import VerifyOptions, verify_source
 from nczones.prover import blend, core, geometry
 from nczones.prover.geometry import _cross, _dot, arc_geom, sqrt_bounds
 from tests.gcode.test_cutter_comp_fast import _MACHINES, comp_programs
 from tests.machines import machine_text
-from tests.prover.test_arc_box_screen import _clamp
+from tests.prover.test_arc_box_screen import _clamp, _decimal
 from tests.prover.test_blend_screens import arcs
 from tests.sizes import examples
 
@@ -203,10 +204,31 @@ def _former(mp: pytest.MonkeyPatch) -> None:
     mp.setattr(blend.CornerCheck, "_screen_box", ref_screen_box)
 
 
-@settings(max_examples=examples(20, 300), deadline=None, derandomize=True, suppress_health_check=[HealthCheck.filter_too_much])
+def _local_clamp(seg, side: int, where: str) -> str:
+    """A forbidden clamp 1 deep beyond one face of the arc's box, as ``_clamp`` places it (``touch``, ``cut``,
+    ``clear``), but only as wide as the box on the plane's other axis (rounded to 0.001 inward): the lines on
+    either side of the corner arc pass it, the arc's extreme decides."""
+    text = _clamp(seg, side, where)
+    (bx, by, ia, ib) = geometry.rational_arc_plane_box(seg)
+    other, (olo, ohi) = (seg.axes[ib], by) if side < 2 else (seg.axes[ia], bx)
+    lo, hi = Fraction(ceil(olo * 1000), 1000), Fraction(floor(ohi * 1000), 1000)
+    assume(lo < hi)
+    text = text.replace("min = { ", f"min = {{ {other} = \"{_decimal(lo)}\", ", 1)
+    return text.replace("max = { ", f"max = {{ {other} = \"{_decimal(hi)}\", ", 1)
+
+
+def _verdict(text: str, machine) -> tuple:
+    result = verify_source(program_text(text, "<comp>"), machine, VerifyOptions())
+    return result.verdict, result.reasons, result.violations, result.stats
+
+
+@settings(max_examples=examples(20, 300), deadline=None, derandomize=True,
+          suppress_health_check=[HealthCheck.filter_too_much])
 @given(case=comp_programs(), pick=st.integers(0, 100), side=st.integers(0, 3),
        where=st.sampled_from(["touch", "cut", "clear"]))
 def test_a_clamp_at_a_corner_arc_answers_as_the_former_code(case, pick, side, where):
+    """The whole verification (corner check included) of a G41/G42 program with a forbidden clamp whose face
+    touches, cuts or clears a corner arc's box, with the code as it is and with the former functions."""
     text, off = case
     try:
         segs = list(interpret_text(text, _MACHINES[off]).segments())
@@ -215,10 +237,10 @@ def test_a_clamp_at_a_corner_arc_answers_as_the_former_code(case, pick, side, wh
     corners = [s for s in segs if s.derived == "cutter comp corner" and ref_rational_arc_plane_box(s) is not None]
     assume(corners)
     seg = corners[pick % len(corners)]
-    machine = parse_machine(machine_text("box_5000", extra=_clamp(seg, side, where)))
-    now = core.verify_segments(segs, machine)
+    machine = parse_machine(machine_text("mill_cutter_comp_g54", set={"offsets.G54": {"X": off[0], "Y": off[1]}},
+                                         extra=_local_clamp(seg, side, where)))
+    now = _verdict(text, machine)
     with pytest.MonkeyPatch.context() as mp:
         _former(mp)
-        before = core.verify_segments(segs, machine)
-    assert (now.verdict, now.reasons, now.violations, now.stats) == (
-        before.verdict, before.reasons, before.violations, before.stats)
+        before = _verdict(text, machine)
+    assert now == before
