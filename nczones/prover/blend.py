@@ -143,6 +143,25 @@ def _plus_less(x: Any, y: Any, z: Any) -> Any:
     return Fraction((xn * yd + yn * xd) * zd - zn * xd * yd, xd * yd * zd)
 
 
+def _plus_half(y: Any, f: Any, c: Any) -> Any:
+    """``y + (f - c) / 2`` for exact coordinates: one Fraction from the parts (the same value)."""
+    try:
+        yn, yd, fn, fd, cn, cd = y._numerator, y._denominator, f._numerator, f._denominator, c._numerator, c._denominator
+    except AttributeError:
+        return y + (f - c) / 2
+    return Fraction(2 * yn * fd * cd + yd * (fn * cd - cn * fd), 2 * yd * fd * cd)
+
+
+def _lo_half(y: Any, f: Any, c: Any) -> Any:
+    """``y + min(0, (f - c) / 2)``: ``y`` itself when ``f >= c``."""
+    return _plus_half(y, f, c) if _lt(f, c) else y
+
+
+def _hi_half(y: Any, f: Any, c: Any) -> Any:
+    """``y + max(0, (f - c) / 2)``: ``y`` itself when ``f <= c``."""
+    return _plus_half(y, f, c) if _lt(c, f) else y
+
+
 def _same(p: Sequence[Any], q: Sequence[Any]) -> bool:
     """``p == q`` for points of exact coordinates (normalised Fractions are equal when their parts are)."""
     if p is q:
@@ -498,6 +517,9 @@ class CornerCheck:
                     hi[i] += bound
             return tuple(lo), tuple(hi)
         if bound is None:
+            la, lb = _linear(a, self.dogleg), _linear(b, self.dogleg)
+            if la != lb and (la or _same(b.start, a.end)):
+                return self._line_and_piece(a, b, la)
             ba = _half_box(a, self.dogleg, end=True) if _linear(a, self.dogleg) else self._piece_box(a)
             bb = _half_box(b, self.dogleg, end=False) if _linear(b, self.dogleg) else self._piece_box(b)
             if ba is None or bb is None:
@@ -509,6 +531,22 @@ class CornerCheck:
             return None
         g = bound or F0
         return tuple(min(x, y) - g for x, y in zip(pa[0], pb[0])), tuple(max(x, y) + g for x, y in zip(pa[1], pb[1]))
+
+    def _line_and_piece(self, a: Segment, b: Segment, line_first: bool) -> Box | None:
+        """:meth:`_screen_box` of a corner between a straight motion and another (an arc) without a bound: the
+        same box, without the straight motion's half box.
+
+        With ``C = a.end`` the straight motion's half box less ``C`` is the box of 0 and half its vector from
+        ``C`` to its far end ``F`` (``a.start``, or ``b.end`` when ``b`` is the straight one and starts at ``C``):
+        its half at its end is the box of ``(F + C) / 2`` and ``C``, at its start that of ``C`` and ``(C + F) / 2``.
+        So each bound of ``half box + other box - C`` is the other box's bound plus ``min(0, (F - C) / 2)``
+        (low) or ``max(0, (F - C) / 2)`` (high): the same value as :func:`_plus_less` gives, the other box's own
+        bound where the added term is 0."""
+        c = a.end
+        other, far = (self._piece_box(b), a.start) if line_first else (self._piece_box(a), b.end)
+        if other is None:
+            return None
+        return (tuple(map(_lo_half, other[0], far, c)), tuple(map(_hi_half, other[1], far, c)))
 
     def _piece_box(self, seg: Segment) -> Box | None:
         """:func:`_piece_box`, kept for the last motion asked (a corner's second motion is the next one's first; an
@@ -1351,12 +1389,12 @@ def _half_box(seg: Segment, dogleg: bool, end: bool) -> Box | None:
     m = tuple(map(_mid, seg.start, seg.end))
     p = seg.end if end else seg.start
     if _linear(seg, dogleg):
-        return tuple(map(min, m, p)), tuple(map(max, m, p))
+        return tuple(map(_lo, m, p)), tuple(map(_hi, m, p))
     if seg.kind is _ARC:
         half = _half_arc_box(seg, end)
         if half is not None:
             # the other axes (a helix's) move with the angle: the half of their travel at that end
-            lo, hi = list(map(min, m, p)), list(map(max, m, p))
+            lo, hi = list(map(_lo, m, p)), list(map(_hi, m, p))
             (xl, xh), (yl, yh), ia, ib = half
             lo[ia], hi[ia], lo[ib], hi[ib] = xl, xh, yl, yh
             return tuple(lo), tuple(hi)

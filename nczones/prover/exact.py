@@ -739,7 +739,9 @@ def box_fits(allowed: AllowedSet, lo: dict, hi: dict, margin: Fraction, tool_len
 
         def rng(a):
             s = shift if a == allowed.tool_axis else F0  # noqa: B023 - called within this iteration
-            return lo[a] - s - d, hi[a] - s + d
+            if s or d:
+                return lo[a] - s - d, hi[a] - s + d
+            return lo[a], hi[a]  # no shift, no margin: the same values without four Fraction operations
 
         if not BOX_FITS(z, rng, lo):
             return False

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from fractions import Fraction
-from math import lcm
+from math import isqrt, lcm
 
 from ..errors import InvalidArgument
 from ..exact import atan_interval, is_square, pi_interval, sqrt_interval
@@ -531,13 +531,88 @@ def on_start_ray(seg: Segment) -> bool:
     ...                                         plane=Plane.XY, centre=(F(0), F(0))))
     (True, False)
     """
-    c = seg.centre
-    if c is None or seg.turns:
+    last = _RAY_LAST
+    if last[0] is seg:
+        kept: bool = last[1]
+        return kept
+    answer = _on_start_ray(seg)
+    _RAY_LAST[:] = [seg, answer]
+    return answer
+
+
+#: :func:`on_start_ray`'s last segment and answer (the prover asks twice an arc: ``decide_point_path``, then
+#: ``check_concrete``); a Segment is frozen, and the entry keeps it alive, so ``is`` names the same arc
+_RAY_LAST: list = [None, False]
+
+
+def _on_start_ray(seg: Segment) -> bool:
+    """:func:`on_start_ray`, computed: the vectors from the centre times the common denominator ``d`` of the
+    start, end and centre (integers, :func:`_scaled_arc`): ``d u`` and ``d w`` are equal, collinear or of a
+    positive dot product exactly when ``u`` and ``w`` are (``d > 0``)."""
+    if seg.centre is None or seg.turns:
         return False
-    ia, ib, _ = seg.plane_indices()
-    u = (seg.start[ia] - c[0], seg.start[ib] - c[1])
-    w = (seg.end[ia] - c[0], seg.end[ib] - c[1])
+    scaled = _scaled_arc(seg)
+    if scaled is None:  # not Fractions: the formula
+        c = seg.centre
+        ia, ib, _ = seg.plane_indices()
+        u = (seg.start[ia] - c[0], seg.start[ib] - c[1])
+        w = (seg.end[ia] - c[0], seg.end[ib] - c[1])
+    else:
+        u, w = scaled[1], scaled[2]
     return u != w and _cross(u, w) == 0 and _dot(u, w) > 0
+
+
+def _scaled_arc(seg: Segment) -> tuple | None:
+    """``(d, u, w, (s0, s1, e0, e1, c0, c1), ia, ib)`` of an arc with a rational centre: ``d`` the least common
+    denominator of its start, end and centre in its plane, those six coordinates times ``d`` (integers) and
+    the vectors ``u``, ``w`` from the centre to start and end, times ``d``; None when a coordinate is not a
+    Fraction (an int)."""
+    key = id(seg)
+    hit = _SCALED.get(key)
+    if hit is not None and hit[0] is seg:
+        kept: tuple | None = hit[1]
+        return kept
+    scaled = _scale_arc(seg)
+    _keep(_SCALED, key, (seg, scaled))
+    return scaled
+
+
+def _keep(cache: dict[int, tuple], key: int, entry: tuple) -> None:
+    """``cache[key] = entry``, the oldest entry out first when :data:`_KEPT` are kept (another thread's change
+    between the look-up and the removal only skips the removal)."""
+    if len(cache) >= _KEPT:
+        try:
+            cache.pop(next(iter(cache)), None)
+        except (RuntimeError, StopIteration):
+            pass
+    cache[key] = entry
+
+
+#: how many answers :func:`_scaled_arc` and :func:`rational_arc_plane_box` keep
+_KEPT = 4096
+
+
+#: :func:`_scaled_arc`'s answers by ``id(seg)`` with the segment (the whole-turn test and the box of the same arc,
+#: in the per-motion proof and the corner check), kept as :data:`_PLANE_BOXES` keeps boxes (each entry holds its segment)
+_SCALED: dict[int, tuple] = {}
+
+
+def _scale_arc(seg: Segment) -> tuple | None:
+    """:func:`_scaled_arc`, computed."""
+    centre = seg.centre
+    assert centre is not None  # the callers ask arcs with a centre
+    ia, ib, _ = seg.plane_indices()
+    vals: tuple = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
+    try:
+        dens = [v._denominator for v in vals]
+        nums = [v._numerator for v in vals]
+    except AttributeError:  # not Fractions
+        return None
+    d = lcm(*dens)
+    pts = s0, s1, e0, e1, c0, c1 = tuple(n * (d // q) for n, q in zip(nums, dens))
+    return d, (s0 - c0, s1 - c1), (e0 - c0, e1 - c1), pts, ia, ib
+
+
 
 
 def whole_turn_box(seg: Segment, bits: int = 64) -> tuple[tuple[Fraction, ...], tuple[Fraction, ...]]:
@@ -669,31 +744,61 @@ def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
     different distances) is grown by ``2 (r_hi - r_lo)`` as in :meth:`ArcGeom.plane_bbox`.  Every bound is
     computed as an integer over one denominator (of the points and the two root bounds): a positive scale keeps
     the order, so the least and greatest are the scaled ones, and each bound is one Fraction of the same value."""
-    centre = seg.centre
-    if centre is None or seg.plane is None:
+    if seg.centre is None or seg.plane is None:
         return None
-    ia, ib, _ = seg.plane_indices()
-    vals: tuple = (seg.start[ia], seg.start[ib], seg.end[ia], seg.end[ib], centre[0], centre[1])
-    try:
-        dens = [v._denominator for v in vals]
-        nums = [v._numerator for v in vals]
-    except AttributeError:  # not Fractions
+    key = id(seg)
+    hit = _PLANE_BOXES.get(key)
+    if hit is not None and hit[0] is seg and hit[1] == bits:
+        kept: tuple | None = hit[2]
+        return kept
+    box = _rational_arc_plane_box(seg, bits)
+    _keep(_PLANE_BOXES, key, (seg, bits, box))
+    return box
+
+
+#: :func:`rational_arc_plane_box`'s answers by ``id(seg)``, with the segment and ``bits`` (the corner check and
+#: the per-motion proof box the same arc, a batch of motions apart).  A Segment is frozen and each entry keeps
+#: its own alive, so no other object has its id while the entry is kept; the oldest entry goes first.
+_PLANE_BOXES: dict[int, tuple] = {}
+
+
+def _scaled_root(n2: int, d: int, bits: int, upper: bool) -> tuple[int, int]:
+    """``sqrt_bounds(Fraction(n2, d * d), bits)[upper]`` as ``(numerator, denominator)``, not reduced: the same
+    value without the Fractions.
+
+    :func:`~nczones.exact.sqrt_interval` gives the root itself when ``n2 / d**2`` is the square of a rational,
+    which it is exactly when the integer ``n2`` is a square (a rational whose square is the integer ``n2`` is an
+    integer): then ``isqrt(n2) / d``.  Else its bounds are ``n / 2**bits`` and ``(n + 1) / 2**bits`` with ``n``
+    the integer root of ``floor(q 4**bits)``, which depends on the value ``q`` only.
+
+    >>> _scaled_root(9, 2, 64, True), _scaled_root(2, 1, 4, False), _scaled_root(2, 1, 4, True)
+    ((3, 2), (22, 16), (23, 16))
+    """
+    k = isqrt(n2)
+    if k * k == n2:
+        return k, d
+    scale = 1 << bits
+    n = isqrt(n2 * scale * scale // (d * d))
+    return (n + 1 if upper else n), scale
+
+
+def _rational_arc_plane_box(seg: Segment, bits: int) -> tuple | None:
+    """:func:`rational_arc_plane_box`, computed (an arc with a centre and a plane)."""
+    scaled = _scaled_arc(seg)
+    if scaled is None:
         return None
-    d = lcm(*dens)
-    s0, s1, e0, e1, c0, c1 = (n * (d // q) for n, q in zip(nums, dens))
-    u, w = (s0 - c0, s1 - c1), (e0 - c0, e1 - c1)
+    d, u, w, (s0, s1, e0, e1, c0, c1), ia, ib = scaled
     u2, w2 = u[0] * u[0] + u[1] * u[1], w[0] * w[0] + w[1] * w[1]
     if u2 == 0:
         return None  # arc_geom refuses it
     # arc_geom's whole turn: start == end, laps, or the end on the ray through the start (on_start_ray)
     full = seg.turns > 0 or (_cross(u, w) == 0 and _dot(u, w) > 0)
-    dd = d * d
-    r_hi = sqrt_bounds(Fraction(max(u2, w2), dd), bits)[1]
-    r_lo = sqrt_bounds(Fraction(min(u2, w2), dd), bits)[0] if u2 != w2 else r_hi
+    hi_n, hi_d = _scaled_root(max(u2, w2), d, bits, True)
+    lo_n, lo_d = _scaled_root(min(u2, w2), d, bits, False) if u2 != w2 else (hi_n, hi_d)
     # every bound on one denominator: the points', r_hi's and r_lo's (integers; one Fraction a bound at the end)
-    big = lcm(d, r_hi.denominator, r_lo.denominator)
+    big = lcm(d, hi_d, lo_d)
     m = big // d
-    hi = r_hi.numerator * (big // r_hi.denominator)
+    hi = hi_n * (big // hi_d)
     xs, ys = [s0 * m, e0 * m], [s1 * m, e1 * m]
     ccw = not seg.clockwise
     for v, axis, sgn in _INT_DIRECTIONS:
@@ -701,6 +806,6 @@ def rational_arc_plane_box(seg: Segment, bits: int = 64) -> tuple | None:
             (xs if axis == 0 else ys).append((c1 if axis else c0) * m + sgn * hi)
     # a spiral: every path point is within (r_hi - r_lo) of the circular arc of the start radius, whose box is
     # within (r_hi - r_lo) of this one (ArcGeom.plane_bbox); 0 for a circle
-    g = 2 * (hi - r_lo.numerator * (big // r_lo.denominator)) if u2 != w2 else 0
+    g = 2 * (hi - lo_n * (big // lo_d)) if u2 != w2 else 0
     return ((Fraction(min(xs) - g, big), Fraction(max(xs) + g, big)),
             (Fraction(min(ys) - g, big), Fraction(max(ys) + g, big)), ia, ib)

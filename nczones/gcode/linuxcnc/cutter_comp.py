@@ -54,6 +54,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 from ...errors import Diagnostic, GcodeError
 from ...exact import to_float
 from ...motion import PLANE_AXES, Plane, SegmentKind
+from ..segments import make_segment, with_tool_deps
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -140,6 +141,9 @@ _INCH = Fraction(254, 10)
 _PI = math.pi
 _HALF_PI = math.pi / 2
 
+#: segment kinds by plain names (Python 3.11 reads an Enum member through ``EnumType.__getattr__``, slowly)
+_ARC, _LINE, _RAPID, _DWELL = SegmentKind.ARC, SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL
+
 #: GC codes of cutter compensation errors.
 GC_STATE = "GC320"      # comp turned on in a wrong state (plane, already on, D word)
 GC_TOOL = "GC321"       # tool diameter missing
@@ -171,6 +175,46 @@ class _Move:
     derived: str = ""
     deps: list | None = None
     dwell: Fraction | None = None
+
+
+#: the program unit in millimetres as (numerator, denominator): G21, G20
+_MM_PARTS, _INCH_PARTS = (1, 1), (_INCH.numerator, _INCH.denominator)
+
+
+def machine_exact(value: float, off: Fraction, unit: tuple[int, int]) -> Fraction:
+    """``Fraction(value) * unit + off``: the exact machine coordinate of the program-frame double ``value``
+    (``unit``: the program unit in mm as ``(numerator, denominator)``, ``off``: the axis's exact offset).
+
+    The same value as that formula (one Fraction instead of three operations, each normalising): ``value`` is
+    ``n / d`` exactly (``float.as_integer_ratio``), so the sum is the integer quotient
+    ``(n un q + p d ud) / (d ud q)`` with ``off = p / q``, ``unit = un / ud``; ``Fraction`` normalises it, so
+    numerator and denominator are the formula's too.
+
+    >>> machine_exact(0.1, Fraction(100), (1, 1)) == Fraction(0.1) + 100
+    True
+    >>> machine_exact(-2.5, Fraction(1, 3), (127, 5))
+    Fraction(-379, 6)
+    """
+    n, d = value.as_integer_ratio()
+    p, q = off.as_integer_ratio()
+    un, ud = unit
+    return Fraction(n * un * q + p * d * ud, d * ud * q)
+
+
+def program_double(value: Fraction, off: Fraction, unit: tuple[int, int]) -> float:
+    """``to_float((value - off) / unit)``: the program-frame double of an exact machine coordinate.
+
+    The same double: the quotient is ``(vn q - p vd) ud / (vd q un)`` with ``value = vn / vd``, ``off = p / q``,
+    ``unit = un / ud`` (positive denominators), and Python's division of two integers is correctly rounded,
+    as :func:`~nczones.exact.to_float`'s division of the normalised parts is: one rational, one rounding.
+
+    >>> program_double(Fraction(1001, 10), Fraction(100), (1, 1)) == to_float(Fraction(1, 10))
+    True
+    """
+    vn, vd = value.as_integer_ratio()
+    p, q = off.as_integer_ratio()
+    un, ud = unit
+    return ((vn * q - p * vd) * ud) / (vd * q * un)
 
 
 def _find_turn(x1: float, y1: float, cx: float, cy: float, turn: int, x2: float, y2: float) -> float:
@@ -262,23 +306,31 @@ class CutterComp:
     machine_now: tuple | None = None  # where the last emitted segment ended (machine, exact)
     orientation: int = 0  # lathe tool orientation (G41.1/G42.1 L): the controlled point is not the nose centre
     deps_now: list | None = None
+    #: the last plane :meth:`_axes` was asked for, and its answer (the plane cannot change while compensation is on)
+    axes_of: tuple[Plane | None, tuple[int, int, int | None]] = (None, (0, 0, None))
 
     # ------------------------------------------------------------------ frame
     def _axes(self) -> tuple[int, int, int | None]:
         it = self.it
-        a, b, n = PLANE_AXES[it.plane]
-        return it.index[a], it.index[b], it.index.get(n)
+        plane = it.plane
+        last = self.axes_of
+        if last[0] is plane:
+            return last[1]
+        a, b, n = PLANE_AXES[plane]
+        axes = it.index[a], it.index[b], it.index.get(n)
+        self.axes_of = (plane, axes)
+        return axes
 
     def _unit(self) -> Fraction:
         return _INCH if self.it.inch else Fraction(1)
 
     def _fprog(self, i: int, machine_value: Fraction) -> float:
-        """Program-frame double of an exact machine coordinate (what LinuxCNC holds)."""
-        return to_float((machine_value - self.it.off[i]) / self._unit())
+        """Program-frame double of an exact machine coordinate (what LinuxCNC holds): :func:`program_double`."""
+        return program_double(machine_value, self.it.off[i], _INCH_PARTS if self.it.inch else _MM_PARTS)
 
     def _fmachine(self, i: int, value: float) -> Fraction:
-        """Exact machine coordinate of a program-frame double."""
-        return Fraction(value) * self._unit() + self.it.off[i]
+        """Exact machine coordinate of a program-frame double: :func:`machine_exact`."""
+        return machine_exact(value, self.it.off[i], _INCH_PARTS if self.it.inch else _MM_PARTS)
 
     def current_point(self, i: int) -> tuple[bool, Fraction | None]:
         """Axis ``i`` of the compensated current point (LinuxCNC's ``settings->current_x`` ..), machine
@@ -450,7 +502,7 @@ class CutterComp:
         it = self.it
         move.block = it.block_index
         move.span = it.span
-        if move.kind is not SegmentKind.RAPID and move.dwell is None and it.feed_mode == 94:
+        if move.kind is not _RAPID and move.dwell is None and it.feed_mode == 94:
             move.feed = it.length_mm(it.feed)
         self.queue.append(move)
 
@@ -468,47 +520,54 @@ class CutterComp:
     def _dequeue(self) -> None:
         """Emit the queued moves (LinuxCNC ``dequeue_canons``; a lathe tool's moves shifted from the nose centre
         to its controlled point)."""
-        from ..segments import make_segment, with_tool_deps
-
         it = self.it
         self.endpoint_valid = False
         ia, ib, _ = self._axes()
-        sa, sb = self._lathe_origin() if self.orientation else (Fraction(0), Fraction(0))
+        shift = self._lathe_origin() if self.orientation else None
+        unit = _INCH_PARTS if it.inch else _MM_PARTS
+        oa, ob = it.off[ia], it.off[ib]
         for q in self.queue:
             start = self.machine_now
             assert start is not None  # set when compensation started (_start)
             if q.dwell is not None:
-                end = tuple(start)
+                end = start
             else:
                 e = list(q.end)
-                e[ia] = self._fmachine(ia, q.a) + sa
-                e[ib] = self._fmachine(ib, q.b) + sb
+                e[ia] = machine_exact(q.a, oa, unit)
+                e[ib] = machine_exact(q.b, ob, unit)
+                if shift is not None:
+                    e[ia] += shift[0]
+                    e[ib] += shift[1]
                 end = tuple(e)
-            ds: tuple = ()
-            de: tuple = ()
-            dt: tuple = ()
-            if it.track:
-                ds = it.deps_tuple(self.deps_now if self.deps_now is not None else it.dep_pos)
-                de = it.deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
-                dt = it.tool_dep_names()
-            arc = q.kind is SegmentKind.ARC
-            centre = q.centre if arc else None
-            if centre is not None and (sa or sb):
-                centre = (centre[0] + sa, centre[1] + sb)
             if not it.unsupported:
-                seg = make_segment(q.kind, tuple(start), end, it.axes, q.block, q.span, it.tlo, q.feed,
-                               it.plane if arc else None, arc and q.turn < 0, centre, None,
-                               abs(q.turn) - 1 if arc else 0, q.dwell, q.derived, it.tool_register, ds, de, (),
-                               it.program_frame())
-                if dt:
-                    seg = with_tool_deps(seg, dt)
-                it.emitted.append(seg)
-                it.segment_count += 1
-                it.kind_counts[q.kind] += 1
+                self._emit(q, start, end, shift)
             self.machine_now = end
             if q.deps is not None:
                 self.deps_now = q.deps
         self.queue = []
+
+    def _emit(self, q: _Move, start: tuple, end: tuple, shift: tuple[Fraction, Fraction] | None) -> None:
+        """The segment of queued move ``q`` from ``start`` to ``end`` (machine, exact), appended to the
+        interpreter's emitted segments."""
+        it = self.it
+        ds: tuple = ()
+        de: tuple = ()
+        dt: tuple = ()
+        if it.track:
+            ds = it.deps_tuple(self.deps_now if self.deps_now is not None else it.dep_pos)
+            de = it.deps_tuple(q.deps if q.deps is not None else (self.deps_now or it.dep_pos))
+            dt = it.tool_dep_names()
+        kind = q.kind
+        arc = kind is _ARC
+        centre = q.centre if arc else None
+        if centre is not None and shift is not None and (shift[0] or shift[1]):
+            centre = (centre[0] + shift[0], centre[1] + shift[1])
+        seg = make_segment(kind, start, end, it.axes, q.block, q.span, it.tlo, q.feed, it.plane if arc else None,
+                           arc and q.turn < 0, centre, None, abs(q.turn) - 1 if arc else 0, q.dwell, q.derived,
+                           it.tool_register, ds, de, (), it.program_frame())
+        it.emitted.append(with_tool_deps(seg, dt) if dt else seg)
+        it.segment_count += 1
+        it.kind_counts[kind] += 1
 
     def _move_endpoint_and_flush(self, x: float, y: float) -> None:
         """Move the end of every queued move to (x, y), refusing reversals; then emit them (``interp_queue.cc``)."""
@@ -518,7 +577,7 @@ class CutterComp:
         for q in self.queue:
             if q.dwell is not None:
                 continue
-            if q.kind is SegmentKind.ARC:
+            if q.kind is _ARC:
                 r1 = math.hypot(q.a - q.ca, q.b - q.cb)
                 l1 = q.sweep
                 r2 = math.hypot(x - q.ca, y - q.cb)
@@ -533,7 +592,7 @@ class CutterComp:
             else:
                 dot = q.da * (x - ex) + q.db * (y - ey)
                 if self.endpoint_valid and dot < 0:
-                    what = "Straight traverse" if q.kind is SegmentKind.RAPID else "Straight feed"
+                    what = "Straight traverse" if q.kind is _RAPID else "Straight feed"
                     raise self.error(GC_GOUGE, f"{what} in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation: the move shrinks past its start)")
             q.a, q.b = x, y
@@ -545,7 +604,7 @@ class CutterComp:
             self.it.unknown("cutter comp", f"{what} right after the compensation queue was flushed (M0/M1/M60): "
                              "LinuxCNC reads an empty move queue there; not modelled")
             return False
-        return self.queue[0].kind is SegmentKind.ARC
+        return self.queue[0].kind is _ARC
 
     def _start(self) -> None:
         """Before a compensated move: fix where the machine is and the compensated start of a first move."""
@@ -629,7 +688,7 @@ class CutterComp:
         mid_y = opy + radius * math.sin(alpha + gamma)
         if beta < -small or beta > _PI + small:
             concave = True
-        elif (beta > _PI - small and self.queue and self.queue[0].kind is SegmentKind.ARC
+        elif (beta > _PI - small and self.queue and self.queue[0].kind is _ARC
               and ((side == _RIGHT and self.queue[0].turn > 0) or (side == LEFT and self.queue[0].turn < 0))):
             concave = True  # the "h" shape: stay above and to the side rather than loop around
         else:
@@ -639,12 +698,12 @@ class CutterComp:
             self._move_endpoint_and_flush(cx, cy)
             corner = self._corner_end(end)
             corner_deps = [dict(d) for d in it.dep_pos] if it.track else None
-            if kind is SegmentKind.LINE:
+            if kind is _LINE:
                 centre = (it.pos[ia], it.pos[ib])  # the programmed corner, exact
-                self._enqueue(_Move(SegmentKind.ARC, mid_x, mid_y, corner, ca=opx, cb=opy, centre=centre,
+                self._enqueue(_Move(_ARC, mid_x, mid_y, corner, ca=opx, cb=opy, centre=centre,
                                     turn=-1 if side == LEFT else 1, derived="cutter comp corner", deps=corner_deps))
             else:
-                self._enqueue(_Move(SegmentKind.RAPID, mid_x, mid_y, corner, derived="cutter comp corner",
+                self._enqueue(_Move(_RAPID, mid_x, mid_y, corner, derived="cutter comp corner",
                                     deps=corner_deps))
             self._dequeue()
             self._set_endpoint(mid_x, mid_y)
@@ -779,8 +838,8 @@ class CutterComp:
         if self.orientation not in (0, 9):
             # LinuxCNC: "need this move for lathes to move the tool origin first.  otherwise, the arc isn't
             # an arc" -- a feed to where the nose centre is, which moves the controlled point by the shift
-            self._enqueue(_Move(SegmentKind.LINE, cx, cy, self._corner_end(end)))
-        self._enqueue(_Move(SegmentKind.ARC, end_x, end_y, list(end), ca=center_x, cb=center_y, centre=centre,
+            self._enqueue(_Move(_LINE, cx, cy, self._corner_end(end)))
+        self._enqueue(_Move(_ARC, end_x, end_y, list(end), ca=center_x, cb=center_y, centre=centre,
                             turn=turn, sweep=_find_turn(cx, cy, center_x, center_y, turn, end_x, end_y), deps=deps))
         self.cur = (end_x, end_y)
 
@@ -814,7 +873,7 @@ class CutterComp:
         ia, ib, _ = self._axes()
         centre = exact_centre if exact_centre is not None else (self._fmachine(ia, centerx),
                                                                 self._fmachine(ib, centery))
-        main = _Move(SegmentKind.ARC, new_end_x, new_end_y, list(end), ca=centerx, cb=centery, centre=centre,
+        main = _Move(_ARC, new_end_x, new_end_y, list(end), ca=centerx, cb=centery, centre=centre,
                      turn=turn, sweep=_find_turn(opx, opy, centerx, centery, turn, end_x, end_y), deps=deps)
         if beta < -small or beta > _PI + small or (abs(beta - _PI) < small and not _inside(side, turn)):
             if not self._front_is_arc("a concave corner before an arc"):
@@ -862,7 +921,7 @@ class CutterComp:
             self._dequeue()
             corner = self._corner_end(end)
             corner_deps = [dict(d) for d in it.dep_pos] if it.track else None
-            self._enqueue(_Move(SegmentKind.ARC, midx, midy, corner, ca=opx, cb=opy,
+            self._enqueue(_Move(_ARC, midx, midy, corner, ca=opx, cb=opy,
                                 centre=(it.pos[ia], it.pos[ib]), turn=-1 if side == LEFT else 1,
                                 derived="cutter comp corner", deps=corner_deps))
             self._dequeue()
@@ -880,23 +939,21 @@ class CutterComp:
         """G4: queued behind a held move (LinuxCNC ``enqueue_DWELL``), else a dwell where the machine is."""
         it = self.it
         if self.queue:
-            self._enqueue(_Move(SegmentKind.DWELL, 0.0, 0.0, [], dwell=seconds))
+            self._enqueue(_Move(_DWELL, 0.0, 0.0, [], dwell=seconds))
             return
         if it.machine_at is not None:  # after G40 the machine stands at the compensated point
-            from ..segments import make_segment, with_tool_deps
-
             deps = it.deps_tuple(it.dep_pos) if it.track else ()
             dt = it.tool_dep_names() if it.track else ()
             if not it.unsupported:
                 at = tuple(it.machine_at)
-                seg = make_segment(SegmentKind.DWELL, at, at, it.axes, it.block_index, it.span, it.tlo,
+                seg = make_segment(_DWELL, at, at, it.axes, it.block_index, it.span, it.tlo,
                                None, None, False, None, None, 0, seconds, "", it.tool_register, deps, deps, (),
                                it.program_frame())
                 it.emitted.append(with_tool_deps(seg, dt) if dt else seg)
                 it.segment_count += 1
-                it.kind_counts[SegmentKind.DWELL] += 1
+                it.kind_counts[_DWELL] += 1
             return
-        it.emit(SegmentKind.DWELL, list(it.pos), dwell=seconds)
+        it.emit(_DWELL, list(it.pos), dwell=seconds)
 
     def stop(self) -> None:
         """M0/M1/M60: the queue is flushed at the compensated position (comp stays on)."""
