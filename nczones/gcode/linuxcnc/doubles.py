@@ -129,6 +129,7 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
+from .double_cycles import CYCLE_CODES, Cycles, cycle_call, cycle_modal, r_token, takes_p
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -154,7 +155,7 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: The G codes the pass follows (the code table's ``doubles`` claims), by modal group: a whole number ``n`` as
 #: ``n``, ``n.1`` (G61.1, G91.1) as ``-(10 n + 1)`` (:func:`_code`).
 _GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 4: "arc distance", 6: "units", 7: "comp", 8: "tool", 3: "distance",
-                5: "feedmode", 12: "offset", 13: "path"}
+                5: "feedmode", 10: "retract", 12: "offset", 13: "path"}
 #: Per plane code: the arc's (first, second) axes and their centre words, the full path's ``PLANE_AXES``
 #: (``Interpreter.arc``; LinuxCNC's ARC_FEED order: G18's first axis is Z, its second X, its centre words K
 #: and I).  The full path's arc is clockwise (G2) or not in the plane of those two axes in that order, and
@@ -438,6 +439,7 @@ class _Pass:
         self.off = self.offsets[self.wcs]
         self._arcs_state(machine, arc_tolerance)
         self._modes_state(machine)
+        self.cyc = Cycles(self, Declined)  # canned cycles (.double_cycles)
         self.unset = set(_NOTED)
         self.motion: int | None = None
         self.feed = 0.0
@@ -1198,14 +1200,16 @@ class _Pass:
         if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
             body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
         body += self._dwell_body(groups, others, bool(axes))
-        body += self._modal_body(groups, hs)
+        body += self._modal_body(groups, hs) + cycle_modal(groups)
         if groups.get("motion") in (1, 2, 3) and not axes:  # G1 without axis words: LinuxCNC checks the feed too
             if groups["motion"] != 1 or any(x in "IJKR" for x in others):
                 raise Declined("an arc without axis words")
             body.append("if not st.feed > 0.0: raise D('G1 without a positive feed')")
+        if axes or groups.get("motion") in CYCLE_CODES:  # a cycle block runs without axis words too
+            body += cycle_call(others, axes)
         if axes:
             body += self._motion_body(others, axes)
-        elif any(x in "IJKR" for x in others):
+        elif any(x in "IJKR" for x in others) and groups.get("motion") not in CYCLE_CODES:
             raise Declined("I, J, K or R without a motion")
         return self._compiled_plan(body)
 
@@ -1216,7 +1220,8 @@ class _Pass:
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
                                  "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
-                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2}
+                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
+                                 "CYC": CYCLE_CODES}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -1268,7 +1273,7 @@ class _Pass:
         I, J, R or a motion code (LinuxCNC's G4 X is not Fanuc's), a time that is not positive (its exact
         value may be below 0: the full path's GC209; a double above 0 is an exact value above 0)."""
         if groups.get("nonmodal") is None:
-            if "P" in others:
+            if "P" in others and not takes_p(groups, axes):
                 raise Declined("a word P outside G4")
             return []
         if "P" not in others:
@@ -1583,6 +1588,7 @@ def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[
             codes.append(code_src(tree))
         else:
             vals.append(em.value(tree, body))
+    vals += r_token(words, em.leaf)  # last: the exact value of a literal R, for a cycle's levels
     return vals, codes
 
 
