@@ -1,0 +1,59 @@
+"""``safe`` from the double pass on drilling programs (G81, G82: nczones/gcode/linuxcnc/double_cycles.py) is the
+full path's verdict, with a zone face at a cycle motion's extreme: the R plane (above the initial level: the
+"up to R" rapid and every retract reach it), the hole bottom, the initial level G98 retracts to, and the
+farthest hole; the face exactly there, a hair inside and a hair outside.  Where the verdict is ``safe`` with the
+face a millimetre away, the pass proved it (its boxes are in the stats): the test is about the pass.
+"""
+
+from __future__ import annotations
+
+from decimal import Decimal
+
+import pytest
+
+import nczones.pipeline.verification as prover_doubles
+from nczones.prover import verify_text
+from nczones.prover.result import Verdict
+from tests.machines import box_zone, load_machine
+
+#: Offsets of mill_g54_g55_h1_h2: G54 X 100, Z 50, H1 120 (machine Z = program Z + 170); it starts at Z 400.
+PROGRAM = ("G21 G90 G17 G54 F200\n#1 = 2\nG43 H1\nG0 X0 Y0 Z250\n{retract} {code} X[#1] Y1 Z-3 R{r}{p}\n"
+           "X[#1 * 3] Y[#1 / 3]\nX[#1 + 1] Y-2\nG80\nM30\n")
+#: The face's axis and its level (machine mm) per extreme, and the cases it is one in.
+FACES = {"R above the initial level": ("Z", "max", Decimal(430), "260"),
+         "the initial level (G98)": ("Z", "max", Decimal(420), "2"),
+         "the bottom": ("Z", "min", Decimal(167), "2"),
+         "the farthest hole": ("X", "max", Decimal(106), "2")}
+NUDGES = [Decimal("-0.001"), Decimal(0), Decimal("0.000000000001"), Decimal(1)]
+
+
+def machine_with_face(axis: str, side: str, level: Decimal):
+    low = {"X": "-1000", "Y": "-1000", "Z": "-1000"}
+    high = {"X": "1000", "Y": "1000", "Z": "1000"}
+    (low if side == "min" else high)[axis] = f"{level:f}"
+    return load_machine("mill_g54_g55_h1_h2", extra=box_zone("travel", low, high))
+
+
+def both_ways(text: str, machine, monkeypatch):
+    with_pass = verify_text(text, machine, max_iterations=100)
+    with monkeypatch.context() as m:
+        m.setattr(prover_doubles, "double_pass_result", lambda *args, **kwargs: None)
+        without = verify_text(text, machine, max_iterations=100)
+    return with_pass, without
+
+
+@pytest.mark.parametrize("face", sorted(FACES))
+@pytest.mark.parametrize("code", ["G81", "G82"])
+@pytest.mark.parametrize("retract", ["G98", "G99"])
+def test_a_face_at_a_cycle_extreme(face, code, retract, monkeypatch):
+    axis, side, level, r = FACES[face]
+    text = PROGRAM.format(retract=retract, code=code, r=r, p=" P0.5" if code == "G82" else "")
+    for nudge in NUDGES:
+        # the face moved outwards by nudge (a negative nudge cuts into the motion: unsafe)
+        machine = machine_with_face(axis, side, level + nudge if side == "max" else level - nudge)
+        with_pass, without = both_ways(text, machine, monkeypatch)
+        assert with_pass.verdict == without.verdict, (face, nudge)
+        assert [(v.line, v.zone) for v in with_pass.violations] == [(v.line, v.zone) for v in without.violations]
+        assert with_pass.verdict is (Verdict.UNSAFE if nudge < 0 else Verdict.SAFE), (face, nudge)
+        if nudge == 1:
+            assert "double_pass_boxes" in dict(with_pass.stats), "the pass did not prove it"
