@@ -25,10 +25,14 @@ its own row's, no more than the widening of any box that holds it).  The pass de
 while a G91 chain is open: every row then has the G90 bound.
 
 The branches (how many rows a block makes) are the full path's exact comparisons of levels.  The pass
-decides each in doubles only where it cannot differ from the exact one (:meth:`Cycles.below`): two
-levels of the same exact value (the same R word, sticky, with the same offsets; the clear level the last
-hole left the tool at) are equal; else the doubles must differ by more than both levels' bounds
-(``(|a| + |b| + 2 offsets) 2**-52``, taken twice over); a closer pair declines.
+decides each in doubles only where it cannot differ from the exact one (:meth:`Cycles.below`): two levels
+known to have the same exact value are equal (a token each: R's is its exact value when it is a literal,
+the text's :func:`~nczones.gcode.lexer.decimal_value` as the full path reads it, :func:`r_token`, or the
+same sticky R word; with the same offsets, the same tuple of doubles, hence the same exact offsets; the
+tool's level is the clear level's token when no motion came after the last cycle block); else the doubles
+must differ by more than both levels' bounds (``(|a| + |b| + 2 offsets) 2**-52``, taken twice over); a
+closer pair declines (equal doubles of two different exact values: ``R0.30000000000000001`` then ``R0.3``,
+where the full path's tool is above R and makes two rapids).  A level compared is never a G91 one.
 
 Declined (besides what :mod:`.doubles` declines): a cycle before the program sets G98 or G99 or the plane
 (the full path notes the assumed mode), in G91 or with a G91 chain open, without a positive feed, without R

@@ -74,6 +74,11 @@ start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only a
 (which stops the machine: nothing is dropped across it, :meth:`_Pass.dwell_at`); I, J or R
 without G2/G3, H without G43, G43 without H or with H0.
 
+Canned cycles (:mod:`.double_cycles`): G81 and G82 (``P`` above 0) in G90, in the plane the program has set,
+after the program set G98 or G99 (no L, no G91 chain open), one row per motion of the full path's
+``Interpreter._cycle``; R, the bottom and P sticky; the levels compared only where the doubles decide the
+exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the bottom decline).
+
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
 layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
 words only by :meth:`_Pass._plain`, any other by its shape; in a loop or sub body: the block's steps compiled
