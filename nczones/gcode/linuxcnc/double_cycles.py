@@ -121,7 +121,7 @@ class Cycles:
     """The modal state of canned cycles in the pass, and :meth:`run`, a cycle block's rows."""
 
     __slots__ = ("st", "declined", "retract", "last", "il", "il_tok", "il_off", "il_axis", "r", "r_tok", "z", "p", "mark",
-                 "pos_tok", "tokens")
+                 "pos_tok", "tokens", "steady")
 
     def __init__(self, st: Any, declined: type[Exception]):
         self.st = st
@@ -140,6 +140,7 @@ class Cycles:
     def end(self) -> None:
         """A motion code other than a cycle's: the next cycle is a first one, with a new initial level."""
         self.last: int | None = None
+        self.steady: tuple | None = None  # the template of the next hole line (_template)
         self.il: float | None = None
         self.il_tok: Any = None
         self.il_off: Any = None
@@ -212,6 +213,15 @@ class Cycles:
     def run(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
             text: str | None) -> bool:
         """A cycle block (the plan's ``CY``): its rows (the module's docstring); False (the program goes on)."""
+        if vr is None and vp is None and self.steady is not None and self._steady(pairs):
+            return False
+        self._general(pairs, vr, vp, text)
+        return False
+
+    def _general(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
+                 text: str | None) -> None:
+        """Any cycle block: its words read, its levels compared, its rows; the template of the next hole."""
+        self.steady = None
         st = self.st
         mode = st.motion
         ia, ib, ic = self._axes()
@@ -237,7 +247,58 @@ class Cycles:
         self._hole(aa, bb, cc, clear, mode == 82, (ia, ib, ic))
         self.mark, self.pos_tok = st.row0 + len(st.columns[0]) - 1, clear_tok
         self.r, self.r_tok, self.z, self.last = vr, rtok, z, mode
-        return False
+        self.steady = self._template((r, rt), cc, (clear, clear_tok), (ia, ib, ic))
+
+    def _template(self, r: tuple, cc: float, clear: tuple, axes: tuple[int, int, int]) -> tuple | None:
+        """What the next block makes when it is a hole line (X and Y words only) in the state this one leaves
+        (:meth:`_steady`): the tool at the clear level, the same initial level, R, bottom, dwell, retract mode,
+        offsets and plane.  Its branches (:meth:`_rows`) are then these: "up to R" where ``il < R``; the tool
+        (at the clear level, the same token) above R exactly where the clear level is, so the rows are the
+        position at the clear level and, where it is above R, the rapid to R (either branch of ``_rows``).
+        None: a comparison too close to call (the next block then runs :meth:`_general`, which declines)."""
+        st = self.st
+        try:
+            up = self.below(self.il, self.il_tok, r[0], r[1])  # type: ignore[arg-type]
+            to_r = self.below(r[0], r[1], clear[0], clear[1])
+        except self.declined:
+            return None
+        return (st.motion, st.plane, self.retract, st.off, axes, (r[0], cc, clear[0]), up, to_r, st.motion == 82)
+
+    def _steady(self, pairs: tuple[tuple[int, float], ...]) -> bool:
+        """A hole line (no R, bottom or P) in the state the last cycle block left (:meth:`_template`), on a
+        machine of the plane's three axes, not at a window's end: its rows from the template; False (nothing
+        done): not such a line."""
+        st = self.st
+        mode, plane, retract, off, (ia, ib, ic), (r, cc, clear), up, to_r, dwell = self.steady  # type: ignore[misc]
+        cols = st.columns
+        n = len(cols[0])
+        if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
+                or self.mark != st.row0 + n - 1 or not st.feed > 0.0 or st.slow or n + 6 >= st.rows or len(cols) != 3:
+            return False
+        pos = st.pos
+        aa, bb = pos[ia], pos[ib]
+        for i, v in pairs:
+            if i == ia:
+                aa = v + off[ia]
+            elif i == ib:
+                bb = v + off[ib]
+            else:
+                return False
+        ca, cb, cz = cols[ia], cols[ib], cols[ic]
+        if up:  # up to R where the tool stands
+            ca.append(pos[ia]), cb.append(pos[ib]), cz.append(r)
+        ca.append(aa), cb.append(bb), cz.append(clear)
+        if to_r:
+            ca.append(aa), cb.append(bb), cz.append(r)
+        ca.append(aa), cb.append(bb), cz.append(cc)
+        if dwell:
+            ca.append(aa), cb.append(bb), cz.append(cc)
+            st.dwelt(len(cz) - 1)
+        ca.append(aa), cb.append(bb), cz.append(clear)
+        st.rapids += 2 + up + to_r
+        pos[ia], pos[ib], pos[ic] = aa, bb, clear
+        self.mark = st.row0 + len(cz) - 1
+        return True
 
     def _rows(self, aa: float, bb: float, r: tuple, cur: tuple, axes: tuple[int, int, int]) -> tuple:
         """The rapids up to R and to the hole (and R); the clear level and its token."""
