@@ -7,14 +7,23 @@ face a millimetre away, the pass proved it (its boxes are in the stats): the tes
 
 from __future__ import annotations
 
+import os
 from decimal import Decimal
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 import nczones.pipeline.verification as prover_doubles
+from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.prover import verify_text
 from nczones.prover.result import Verdict
+from tests.gcode.test_double_pass_cycles import drilling_programs
 from tests.machines import box_zone, load_machine
+from tests.prover.test_double_pass_proof import machine_of
+from tests.prover.test_double_pass_windows import windows_of
+
+EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "40"))
 
 #: Offsets of mill_g54_g55_h1_h2: G54 X 100, Z 50, H1 120 (machine Z = program Z + 170); it starts at Z 400.
 PROGRAM = ("G21 G90 G17 G54 F200\n#1 = 2\nG43 H1\nG0 X0 Y0 Z250\n{retract} {code} X[#1] Y1 Z-3 R{r}{p}\n"
@@ -57,3 +66,25 @@ def test_a_face_at_a_cycle_extreme(face, code, retract, monkeypatch):
         assert with_pass.verdict is (Verdict.UNSAFE if nudge < 0 else Verdict.SAFE), (face, nudge)
         if nudge == 1:
             assert "double_pass_boxes" in dict(with_pass.stats), "the pass did not prove it"
+
+
+@settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(drilling_programs(), st.integers(1, 12))
+def test_windows_of_drilling_programs_are_the_rows_without_windows(text, window):
+    """A cycle's rows cross window edges (the pass hands a window over after any of them): the windows put back
+    together are the rows without windows, and each motion's box is the same."""
+    machine = machine_of("box", 1000, 0)
+    try:
+        whole = double_pass(text, machine, max_iterations=1000)
+    except Declined:
+        return
+    got, last = windows_of(text, machine, window)
+    assert (last.motions, last.rapids, last.dwells) == (whole.motions, whole.rapids, whole.dwells)
+    for row0, motions, columns, _first in got:
+        assert [c[row0:motions + 1] for c in map(list, whole.columns)] == list(columns)
+        assert motions - row0 <= max(window, 2)
+    windowed = double_pass(text, machine, max_iterations=1000, window=window,
+                           on_window=lambda p: all(p.enclosure(k, k) == whole.enclosure(k, k)
+                                                   for k in range(p.row0 + 1, p.motions + 1)))
+    assert windowed.motions == whole.motions
