@@ -50,7 +50,9 @@ def cycle_block(draw, label: int) -> list[str]:
     if draw(st.integers(0, 5)) == 0:
         xy = ""  # the first hole where the tool stands
     first = f"{retract}{code} {xy} Z{draw(st.sampled_from(BOTTOMS))} R{draw(st.sampled_from(RS))}{dwell}"
-    holes = [draw(hole_line()) for _ in range(draw(st.integers(0, 4)))]
+    # between holes: a dwell or a tool change moves nothing (the tool stays at the clear level)
+    holes = [draw(st.one_of(hole_line(), hole_line(), st.sampled_from(["G4 P0.5", "T1 M6", "M3 S100"])))
+             for _ in range(draw(st.integers(0, 4)))]
     if draw(st.integers(0, 3)) == 0:
         holes = ["#3 = 0", f"o{label} while [#3 LT 3]", f"X[#3 * 2 + {draw(st.sampled_from(PLACES))}]",
                  "#3 = [#3 + 1]", f"o{label} endwhile"]
@@ -97,6 +99,12 @@ ACCEPTED = {
     # R written again with the same exact value (LinuxCNC's and the full path's levels compare equal)
     "R written again": "G21 G90 G17 G54 F200\n#1 = 2\nG0 Z25\nG99 G81 X1 Y1 Z-2 R2\nX2 R2.0\nG80\n"
                        "G81 X3 Z-2 R+2.000\nX4 R0.30000000000000001\nX5 R0.30000000000000001\nG80\nM30\n",
+    # a motion between two cycles: the tool is no longer at the clear level (a level of the same R's value)
+    "a motion between cycles": "G21 G90 G17 G54 F200\nG0 Z25\n#1 = 2\nG99 G81 X1 Y1 Z-2 R2\nG0 Z30\n"
+                               "G81 X2 Y2 Z-2 R2\nG1 Z3\nG98 G81 X[#1] Z-2 R2\nM30\n",
+    # dwells and a tool change between holes move nothing: the tool stays at the clear level
+    "dwells between holes": "G21 G90 G17 G54 F200\n#1 = 2\nG0 Z25\nG99 G81 X1 Y1 Z-2 R2\nG4 P1\nX2\nT1 M6\n"
+                            "G4 P[#1]\nY[#1]\nG80\nG4 P1\nG81 X3 Y1 Z-2 R2\nM30\n",
     "a G82 after a G81": "G21 G90 G17 G54 F200\n#1 = 2\nG0 Z25\nG99 G81 X1 Y1 Z-2 R2\nG82 X2 Z-3 R2 P[#1]\nX3\n"
                          "G80\nM30\n",
 }

@@ -129,7 +129,9 @@ class Cycles:
         #: G99 (True: retract to R), G98 (False), None: the program has not set one (the full path notes it)
         self.retract: bool | None = None
         self.tokens = 0  # the last token handed out (:meth:`_fresh`)
-        self.mark = -1  # the motions when the last cycle block ended (the tool at its clear level since)
+        #: the motions but dwells (:func:`_moves`) when the last cycle block ended: the tool at its clear level
+        #: while they are as many (a dwell, a tool change move nothing in the pass)
+        self.mark = -1
         self.pos_tok: Any = 0  # the token of that clear level
         self.r: float | None = None  # R and the bottom as the program wrote them (doubles), sticky
         self.r_tok: Any = 0
@@ -232,7 +234,7 @@ class Cycles:
         vr, rtok, z = self._words(mode, first, words.get(ic), vr, vp, text)
         off, pos = st.off, st.pos
         cur = pos[ic]
-        cur_tok = self.pos_tok if self.mark == st.row0 + len(st.columns[0]) - 1 else self._fresh()
+        cur_tok = self.pos_tok if self.mark == _moves(st) else self._fresh()
         if self.il is None:
             self.il, self.il_tok, self.il_off, self.il_axis = cur, cur_tok, off, ic
         elif self.il_axis != ic or self.il_off is not off:
@@ -245,7 +247,7 @@ class Cycles:
         bb = words[ib] + off[ib] if ib in words else pos[ib]
         clear, clear_tok = self._rows(aa, bb, (r, rt), (cur, cur_tok), (ia, ib, ic))
         self._hole(aa, bb, cc, clear, mode == 82, (ia, ib, ic))
-        self.mark, self.pos_tok = st.row0 + len(st.columns[0]) - 1, clear_tok
+        self.mark, self.pos_tok = _moves(st), clear_tok
         self.r, self.r_tok, self.z, self.last = vr, rtok, z, mode
         self.steady = self._template((r, rt), cc, (clear, clear_tok), (ia, ib, ic))
 
@@ -273,7 +275,7 @@ class Cycles:
         cols = st.columns
         n = len(cols[0])
         if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
-                or self.mark != st.row0 + n - 1 or not st.feed > 0.0 or st.slow or n + 6 >= st.rows or len(cols) != 3:
+                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.slow or n + 6 >= st.rows or len(cols) != 3:
             return False
         pos = st.pos
         aa, bb = pos[ia], pos[ib]
@@ -297,7 +299,7 @@ class Cycles:
         ca.append(aa), cb.append(bb), cz.append(clear)
         st.rapids += 2 + up + to_r
         pos[ia], pos[ib], pos[ic] = aa, bb, clear
-        self.mark = st.row0 + len(cz) - 1
+        self.mark = st.row0 + len(cz) - 1 - st.dwells
         return True
 
     def _rows(self, aa: float, bb: float, r: tuple, cur: tuple, axes: tuple[int, int, int]) -> tuple:
@@ -327,6 +329,11 @@ class Cycles:
         if dwell:
             _row(st, axes, aa, bb, cc, False, dwell=True)
         _row(st, axes, aa, bb, clear, True)
+
+
+def _moves(st: Any) -> int:
+    """The pass's motions so far but its dwells (a dwell is a row where the machine stands)."""
+    return st.row0 + len(st.columns[0]) - 1 - st.dwells
 
 
 def _row(st: Any, axes: tuple[int, int, int], a: float, b: float, c: float, rapid: bool, dwell: bool = False) -> None:
