@@ -333,7 +333,8 @@ class Cycles:
 
 def _moves(st: Any) -> int:
     """The pass's motions so far but its dwells (a dwell is a row where the machine stands)."""
-    return st.row0 + len(st.columns[0]) - 1 - st.dwells
+    moves: int = st.row0 + len(st.columns[0]) - 1 - st.dwells
+    return moves
 
 
 def _row(st: Any, axes: tuple[int, int, int], a: float, b: float, c: float, rapid: bool, dwell: bool = False) -> None:
