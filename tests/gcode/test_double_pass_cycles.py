@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from tests.gcode.rs274_arc_programs import in_plane
 from tests.gcode.test_double_pass import MACHINE, check_against_full, machines
+from tests.machines import load_machine
 
 EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "100"))
 
@@ -137,6 +138,8 @@ DECLINED = {
     # the same double, an exact value a hair below the last R: the full path's tool is above R, two rapids
     "R a hair below the last": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R0.30000000000000001\n"
                                 "X2 R0.3\n", "too close"),
+    # (the pass's cycles take a mill's millimetres: in G20 they decline whatever the pass takes of G20)
+    "G20": ("G20 G90 G17 G54 F10\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\n", "G20"),
     "P in G1": ("G21 G90 G17 G54 F100\n#1 = 1\nG1 X1 Y1 Z-1\nX2 P1\n", "word P"),
     "I in a cycle": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\nX2 I1\n", "I, J or K"),
 }
@@ -147,3 +150,10 @@ def test_drilling_programs_outside_the_subset_are_declined(name):
     text, why = DECLINED[name]
     with pytest.raises(Declined, match=why):
         double_pass(text, MACHINE, max_iterations=5)
+
+
+def test_a_lathes_cycles_are_declined():
+    # an X word of a lathe may be a diameter (G7): its cycles decline, whatever the pass takes of lathes
+    lathe = load_machine("box_5000", set={"machine.type": "lathe"})
+    with pytest.raises(Declined, match="lathe"):
+        double_pass(ACCEPTED["G98 to the initial level"], lathe, max_iterations=5)

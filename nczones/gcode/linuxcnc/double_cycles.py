@@ -35,7 +35,8 @@ closer pair declines (equal doubles of two different exact values: ``R0.30000000
 where the full path's tool is above R and makes two rapids).  A level compared is never a G91 one.
 
 Declined (besides what :mod:`.doubles` declines): a cycle before the program sets G98 or G99 or the plane
-(the full path notes the assumed mode), in G91 or with a G91 chain open, without a positive feed, without R
+(the full path notes the assumed mode), in G91 or with a G91 chain open, in G20 or on a lathe (its words
+here are a mill's millimetres: whatever of G20 and lathes the pass takes, its cycles decline), without a positive feed, without R
 or the bottom the first time, with L (not a letter of the pass), a P with G81, a G82 without a P above 0,
 I, J or K in a cycle block, an axis word off the plane's three, a machine without them, R below the bottom,
 a plane or offset change (work offset, tool length) while a cycle is modal (the full path moves the initial
@@ -121,11 +122,14 @@ class Cycles:
     """The modal state of canned cycles in the pass, and :meth:`run`, a cycle block's rows."""
 
     __slots__ = ("st", "declined", "retract", "last", "il", "il_tok", "il_off", "il_axis", "r", "r_tok", "z", "p", "mark",
-                 "pos_tok", "tokens", "steady")
+                 "pos_tok", "tokens", "steady",
+                 "lathe")
 
-    def __init__(self, st: Any, declined: type[Exception]):
+    def __init__(self, st: Any, declined: type[Exception], machine: Any):
         self.st = st
         self.declined = declined  # the pass's Declined (this module is imported by its module)
+        #: a lathe (its X words may be diameters, G7): its cycles decline, whatever the pass takes of it
+        self.lathe = getattr(machine, "machine_type", "mill") != "mill" or bool(getattr(machine, "diameter_axes", ()))
         #: G99 (True: retract to R), G98 (False), None: the program has not set one (the full path notes it)
         self.retract: bool | None = None
         self.tokens = 0  # the last token handed out (:meth:`_fresh`)
@@ -177,6 +181,8 @@ class Cycles:
                            "mode and work offset")
         if st.inc or st.chained:
             raise self.declined("a canned cycle in G91, or before G90 moves set every G91 axis")
+        if self.lathe or getattr(st, "inch", False):  # (the words here are millimetres of a mill's axes)
+            raise self.declined("a canned cycle on a lathe or in G20")
         if not st.feed > 0.0:
             raise self.declined("a canned cycle without a positive feed")
         index = st.index
@@ -275,7 +281,8 @@ class Cycles:
         cols = st.columns
         n = len(cols[0])
         if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
-                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.slow or n + 6 >= st.rows or len(cols) != 3:
+                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.slow or n + 6 >= st.rows \
+                or len(cols) != 3 or getattr(st, "inch", False):
             return False
         pos = st.pos
         aa, bb = pos[ia], pos[ib]

@@ -444,7 +444,7 @@ class _Pass:
         self.off = self.offsets[self.wcs]
         self._arcs_state(machine, arc_tolerance)
         self._modes_state(machine)
-        self.cyc = Cycles(self, Declined)  # canned cycles (.double_cycles)
+        self.cyc = Cycles(self, Declined, machine)  # canned cycles (.double_cycles)
         self.unset = set(_NOTED)
         self.motion: int | None = None
         self.feed = 0.0
