@@ -1,4 +1,4 @@
-"""LinuxCNC's ``rs274`` against the double pass on drilling programs (G81, G82, G98, G99; issue 36).
+"""LinuxCNC's ``rs274`` against the double pass on drilling programs (G81, G82, G83, G98, G99; issue 36).
 
 A few parametric drilling programs, each run by ``rs274 -g`` (:func:`tests.tools.rs274_diff.run_rs274`): the
 full path matches rs274's log motion by motion (``tests.oracles.rs274.compare``), the pass takes the program,
@@ -31,6 +31,8 @@ PROGRAMS = {
                                     "X[#1 * 3]\nY[#1 / 3] R3\nG99 X0\nG80\nM30\n",
     "the initial level below R": "G21 G90 G17 G54 F200\n#1 = 2\nG0 Z0\nG98 G81 X1 Y1 Z-2 R[#1 + 3]\nX2\nX3 R2\n"
                                  "G99 X4\nG80\nG0 Z10\nM30\n",
+    "G83 pecks": "G21 G90 G17 G54 F200\n#1 = 0.7\nG0 Z10\nG99 G83 X1 Y1 Z-3 R2 Q#1\nX[#1 * 3] Q[#1 / 3]\n"
+                 "G98 Y2 Z-1.1\nG80\nM30\n",
     "a loop of holes in G18": "G21 G90 G18 G54 F200\n#1 = 0\nG0 Y10\nG99 G81 Z0 X0 Y-1 R1\no1 while [#1 LT 6]\n"
                               "Z[#1 * 2.5] X[#1 * #1 / 7]\n#1 = [#1 + 1]\no1 endwhile\nG80\nM30\n",
 }

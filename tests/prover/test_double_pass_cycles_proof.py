@@ -1,4 +1,4 @@
-"""``safe`` from the double pass on drilling programs (G81, G82: nczones/gcode/linuxcnc/double_cycles.py) is the
+"""``safe`` from the double pass on drilling programs (G81-G83: nczones/gcode/linuxcnc/double_cycles.py) is the
 full path's verdict, with a zone face at a cycle motion's extreme: the R plane (above the initial level: the
 "up to R" rapid and every retract reach it), the hole bottom, the initial level G98 retracts to, and the
 farthest hole; the face exactly there, a hair inside and a hair outside.  Where the verdict is ``safe`` with the
@@ -15,6 +15,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import nczones.pipeline.verification as prover_doubles
+from nczones.gcode import interpret_text
 from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.prover import verify_text
 from nczones.prover.result import Verdict
@@ -44,19 +45,20 @@ def machine_with_face(axis: str, side: str, level: Decimal):
 
 
 def both_ways(text: str, machine, monkeypatch):
-    with_pass = verify_text(text, machine, max_iterations=100)
+    with_pass = verify_text(text, machine, max_iterations=1000)
     with monkeypatch.context() as m:
         m.setattr(prover_doubles, "double_pass_result", lambda *args, **kwargs: None)
-        without = verify_text(text, machine, max_iterations=100)
+        without = verify_text(text, machine, max_iterations=1000)
     return with_pass, without
 
 
 @pytest.mark.parametrize("face", sorted(FACES))
-@pytest.mark.parametrize("code", ["G81", "G82"])
+@pytest.mark.parametrize("code", ["G81", "G82", "G83"])
 @pytest.mark.parametrize("retract", ["G98", "G99"])
 def test_a_face_at_a_cycle_extreme(face, code, retract, monkeypatch):
     axis, side, level, r = FACES[face]
-    text = PROGRAM.format(retract=retract, code=code, r=r, p=" P0.5" if code == "G82" else "")
+    peck = " Q40" if r == "260" else " Q1.5"  # (a few pecks from either R)
+    text = PROGRAM.format(retract=retract, code=code, r=r, p={"G81": "", "G82": " P0.5", "G83": peck}[code])
     for nudge in NUDGES:
         # the face moved outwards by nudge (a negative nudge cuts into the motion: unsafe)
         machine = machine_with_face(axis, side, level + nudge if side == "max" else level - nudge)
@@ -71,9 +73,11 @@ def test_a_face_at_a_cycle_extreme(face, code, retract, monkeypatch):
 @settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(drilling_programs(), st.integers(1, 12))
-def test_windows_of_drilling_programs_are_the_rows_without_windows(text, window):
+def test_windows_of_drilling_programs_hold_the_full_paths_motion(text, window):
     """A cycle's rows cross window edges (the pass hands a window over after any of them): the windows put back
-    together are the rows without windows, and each motion's box is the same."""
+    together are the rows without windows, and each window's box of each motion holds the full path's motion
+    (G83's pecks widen the normal axis from the first peck on: a window before it is narrower than the path
+    without windows; without pecks the boxes are the same)."""
     machine = machine_of("box", 1000, 0)
     try:
         whole = double_pass(text, machine, max_iterations=1000)
@@ -84,7 +88,34 @@ def test_windows_of_drilling_programs_are_the_rows_without_windows(text, window)
     for row0, motions, columns, _first in got:
         assert [c[row0:motions + 1] for c in map(list, whole.columns)] == list(columns)
         assert motions - row0 <= max(window, 2)
-    windowed = double_pass(text, machine, max_iterations=1000, window=window,
-                           on_window=lambda p: all(p.enclosure(k, k) == whole.enclosure(k, k)
-                                                   for k in range(p.row0 + 1, p.motions + 1)))
-    assert windowed.motions == whole.motions
+    segments = list(interpret_text(text, machine, max_loop_iterations=1000).segments())
+
+    def holds(p) -> bool:
+        for k in range(p.row0 + 1, p.motions + 1):
+            lo, hi = p.enclosure(k, k)
+            assert "G83" in text or (lo, hi) == whole.enclosure(k, k)
+            for i, a in enumerate(machine.axis_names):
+                assert lo[a] <= segments[k - 1].start[i] <= hi[a] and lo[a] <= segments[k - 1].end[i] <= hi[a]
+        return True
+
+    windowed = double_pass(text, machine, max_iterations=1000, window=window, on_window=holds)
+    assert holds(windowed) and windowed.motions == whole.motions
+
+
+@pytest.mark.parametrize("window", [1, 2, 3, 5, 64])
+def test_peck_rows_keep_their_widening_across_window_edges(window):
+    """A peck row kept at a window's edge (the last two rows stay) keeps its widening: every window's box of
+    every motion holds the full path's motion, on pecks whose rows drift by many ulps (R 100.1, Q 0.07)."""
+    text = "G21 G90 G17 G54 F100\n#1 = 1\nG0 Z150\nG99 G83 X1 Y1 Z-3 R100.1 Q0.07\nG80\nG0 Z150\nM30\n"
+    machine = machine_of("box", 1000, 0)
+    segments = list(interpret_text(text, machine, max_loop_iterations=100_000).segments())
+
+    def holds(p) -> bool:
+        for k in range(p.row0 + 1, p.motions + 1):
+            lo, hi = p.enclosure(k, k)
+            for i, a in enumerate(machine.axis_names):
+                assert lo[a] <= segments[k - 1].start[i] <= hi[a] and lo[a] <= segments[k - 1].end[i] <= hi[a], k
+        return True
+
+    last = double_pass(text, machine, max_iterations=100_000, window=window, on_window=holds)
+    assert holds(last) and last.motions == len(segments)

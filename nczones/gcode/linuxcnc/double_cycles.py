@@ -1,7 +1,7 @@
-"""Canned cycles G81 and G82 in the double pass (:mod:`nczones.gcode.linuxcnc.doubles`), issue 36.
+"""Canned cycles G81, G82 and G83 in the double pass (:mod:`nczones.gcode.linuxcnc.doubles`), issue 36.
 
 A drilling program with expressions ran the full path (about 12x ``rs274``) because the pass declined its
-cycles.  This module runs a G81/G82 block in the pass's doubles, as the full path's ``Interpreter._cycle``
+cycles.  This module runs a G81/G82/G83 block in the pass's doubles, as the full path's ``Interpreter._cycle``
 does exactly (LinuxCNC's ``convert_cycle_xy`` and ``CYCLE_MACRO``, ``interp_cycles.cc``), one row per
 motion the full path emits, in the same order:
 
@@ -9,6 +9,8 @@ motion the full path emits, in the same order:
 * the position rapid: to the hole at the current level, then to R, on the first hole of a block when the
   tool is above R (``current > R``); else to the hole at the clear level, then to R when the clear level
   is above R;
+* G83's pecks (:meth:`Cycles._pecks`): per peck a feed to ``R - k Q``, a rapid out to R, a rapid back down to
+  0.254 mm above the peck, as many as the full path counts in LinuxCNC's doubles;
 * the feed to the bottom (the plane's normal axis: Z in G17), G82's dwell there (a row where the machine
   stands, a stop: :meth:`~nczones.gcode.linuxcnc.doubles._Pass.dwelt`), and the retract rapid to the clear
   level: R under G99, the initial level under G98.
@@ -22,7 +24,13 @@ Every row is a machine coordinate the pass computes as it computes a G90 move's:
 offset's double (the hole's X and Y, R, the bottom), or a copy of the double of a row before it (where the
 tool stands, the initial level); so the module's bound of :mod:`.doubles` holds for each (a copy's bound is
 its own row's, no more than the widening of any box that holds it).  The pass declines a cycle in G91 or
-while a G91 chain is open: every row then has the G90 bound.
+while a G91 chain is open: every row then has the G90 bound.  G83's peck rows are not: ``fl(R' - fl(k Q'))``
+drifts from the exact ``R - k Q`` by up to some ``k`` ulps of Q; :meth:`Cycles._pecks` bounds that drift and
+adds the bound to the normal axis's widening (the pass's ``xerr``, as a G91 chain's, from the first peck on:
+:func:`_row` sets it again after a window is handed over, which recomputes it from the chains alone).
+
+G83's Q: the pass reads a Q word as M61's tool number (a literal code) in a line with an M word, else as a value
+(:func:`q_value`), which only G83 takes (:func:`takes_q`; a Q in any other line declines).
 
 The branches (how many rows a block makes) are the full path's exact comparisons of levels.  The pass
 decides each in doubles only where it cannot differ from the exact one (:meth:`Cycles.below`): two levels
@@ -37,14 +45,16 @@ where the full path's tool is above R and makes two rapids).  A level compared i
 Declined (besides what :mod:`.doubles` declines): a cycle before the program sets G98 or G99 or the plane
 (the full path notes the assumed mode), in G91 or with a G91 chain open, in G20 or on a lathe (its words
 here are a mill's millimetres: whatever of G20 and lathes the pass takes, its cycles decline), without a positive feed, without R
-or the bottom the first time, with L (not a letter of the pass), a P with G81, a G82 without a P above 0,
+or the bottom the first time, with L (not a letter of the pass), a P with G81 or G83, a G82 without a P above
+0, a G83 without a Q above 0 or with as many pecks as the loop bound, a Q with G81 or G82 or a G64,
 I, J or K in a cycle block, an axis word off the plane's three, a machine without them, R below the bottom,
 a plane or offset change (work offset, tool length) while a cycle is modal (the full path moves the initial
-level with the offsets), G73, G83-G89.
+level with the offsets), G73, G84-G89.
 """
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 
 from ...motion import PLANE_AXES
@@ -59,7 +69,9 @@ if TYPE_CHECKING:
 __all__ = ["CYCLE_CODES", "Cycles", "cycle_modal", "cycle_call", "r_token", "takes_p"]
 
 #: The cycles the pass runs (the motion group's codes, :data:`~nczones.gcode.linuxcnc.doubles._GROUPS`).
-CYCLE_CODES = frozenset((81, 82))
+CYCLE_CODES = frozenset((81, 82, 83))
+#: G83's back-off above the last peck's depth (mm: the full path's ``G83_RAPID_DELTA_MM``, exactly 0.254).
+_BACK_OFF = 0.254
 #: The bound of two levels' distance from their exact values, per unit of ``|a| + |b| + 2 offsets``:
 #: ``2**-52`` (:mod:`.doubles`'s module bound, twice half an ulp) taken twice over.
 _REL = 4.5e-16
@@ -72,6 +84,20 @@ def takes_p(groups: dict[str, int], axes: bool) -> bool:
     write (the mode may be G82: :meth:`Cycles.run` declines a P in any other)."""
     motion = groups.get("motion")
     return motion == 82 or (motion is None and axes)
+
+
+def q_value(words: Any) -> bool:
+    """Is a line's Q word a value (G83's peck), not M61's tool number: a line without an M word (a Q in one
+    with an M is read as M61's, and declines but with M61)."""
+    letters = [w[0] for w in words]
+    return "Q" in letters and "M" not in letters
+
+
+def takes_q(groups: dict[str, int], axes: bool) -> bool:
+    """May a block's Q value be G83's peck: G83 written, or axis words in a motion mode the block does not
+    write (:meth:`Cycles.run` declines a Q in any other mode); not with a G64 (whose Q it would be too)."""
+    motion = groups.get("motion")
+    return "path" not in groups and (motion == 83 or (motion is None and axes))
 
 
 def cycle_modal(groups: dict[str, int]) -> list[str]:
@@ -112,9 +138,11 @@ def cycle_call(others: list[str], axes: list[tuple[int, int]]) -> list[str]:
     else:
         pairs = "".join(f"({i}, v[{k}]), " for k, i in axes)
         tok = f"v[{len(others)}]" if "R" in others else "None"  # (r_token's, after the words' values)
-        body = [f"if st.motion in CYC: return CY(({pairs}), {val('R')}, {val('P')}, {tok})"]
+        body = [f"if st.motion in CYC: return CY(({pairs}), {val('R')}, {val('P')}, {tok}, {val('q')})"]
     if "P" in others:
         body.append("raise D('a word P outside G4 and G82')")
+    if "q" in others:
+        body.append("raise D('a word Q without M61 or G83')")
     return body
 
 
@@ -123,7 +151,7 @@ class Cycles:
 
     __slots__ = ("st", "declined", "retract", "last", "il", "il_tok", "il_off", "il_axis", "r", "r_tok", "z", "p", "mark",
                  "pos_tok", "tokens", "steady",
-                 "lathe")
+                 "lathe", "q", "peck_err")
 
     def __init__(self, st: Any, declined: type[Exception], machine: Any):
         self.st = st
@@ -141,6 +169,10 @@ class Cycles:
         self.r_tok: Any = 0
         self.z: float | None = None
         self.p: float | None = None  # G82's dwell, sticky
+        self.q: float | None = None  # G83's peck, sticky
+        #: the largest bound of a G83 peck row's error (mm; 0.0: none yet), the pass's ``xerr`` of the normal
+        #: axis from the first peck on (:meth:`_pecks`)
+        self.peck_err = 0.0
         self.end()
 
     def end(self) -> None:
@@ -219,15 +251,15 @@ class Cycles:
         return vr, rtok, z
 
     def run(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
-            text: str | None) -> bool:
+            text: str | None, vq: float | None = None) -> bool:
         """A cycle block (the plan's ``CY``): its rows (the module's docstring); False (the program goes on)."""
-        if vr is None and vp is None and self.steady is not None and self._steady(pairs):
+        if vr is None and vp is None and vq is None and self.steady is not None and self._steady(pairs):
             return False
-        self._general(pairs, vr, vp, text)
+        self._general(pairs, vr, vp, text, vq)
         return False
 
     def _general(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
-                 text: str | None) -> None:
+                 text: str | None, vq: float | None) -> None:
         """Any cycle block: its words read, its levels compared, its rows; the template of the next hole."""
         self.steady = None
         st = self.st
@@ -238,6 +270,7 @@ class Cycles:
             raise self.declined("an axis word off the plane's axes in a canned cycle")
         first = self.last != mode
         vr, rtok, z = self._words(mode, first, words.get(ic), vr, vp, text)
+        self._peck_word(mode, first, vq)
         off, pos = st.off, st.pos
         cur = pos[ic]
         cur_tok = self.pos_tok if self.mark == _moves(st) else self._fresh()
@@ -252,10 +285,58 @@ class Cycles:
         aa = words[ia] + off[ia] if ia in words else pos[ia]
         bb = words[ib] + off[ib] if ib in words else pos[ib]
         clear, clear_tok = self._rows(aa, bb, (r, rt), (cur, cur_tok), (ia, ib, ic))
+        if mode == 83:
+            self._pecks(aa, bb, r, (vr, z), (ia, ib, ic))
         self._hole(aa, bb, cc, clear, mode == 82, (ia, ib, ic))
         self.mark, self.pos_tok = _moves(st), clear_tok
         self.r, self.r_tok, self.z, self.last = vr, rtok, z, mode
         self.steady = self._template((r, rt), cc, (clear, clear_tok), (ia, ib, ic))
+
+    def _peck_word(self, mode: int, first: bool, vq: float | None) -> None:
+        """G83's Q (sticky; above 0: the full path's GC209 else); a Q in another cycle declines."""
+        if mode != 83:
+            if vq is not None:
+                raise self.declined("a word Q without M61 or G83")
+            return
+        if vq is None:
+            if first or self.q is None:
+                raise self.declined("a peck cycle without Q the first time")
+            vq = self.q
+        if not vq > 0.0:  # a double above 0 is an exact value above 0
+            raise self.declined("a peck that is not positive")
+        self.q = vq
+
+    def _pecks(self, aa: float, bb: float, r: float, prog: tuple[float, float], axes: tuple[int, int, int]) -> None:
+        """G83's pecks before its last feed: per peck a feed to ``R - k Q``, a rapid to R, a rapid to 0.254 mm above
+        the peck (the full path's ``_cycle``).  As many as the full path makes: it counts them with LinuxCNC's
+        loop in the doubles of the program's R, bottom and Q (``_linuxcnc_pecks``: the words' doubles, G90),
+        which is this loop.  A peck's row is ``fl(R' - fl(k Q'))``: its distance from the exact ``R - k Q`` is at
+        most ``|R' - R| + 2 k |Q'| 2**-53 + |row| 2**-53`` (R''s bound is the module's, ``(2 |R'| + 2 offsets)
+        2**-53``; ``Q'`` within half an ulp of ``Q``), the back-off's one rounding and 0.254's more: the bound
+        ``peck_err`` (that sum over every row of the block, taken twice over and rounded up) is added to the
+        normal axis's widening (the pass's ``xerr``: every row of the windows from the first peck on)."""
+        st = self.st
+        q = self.q
+        assert q is not None  # (_peck_word)
+        vr, bottom = prog
+        n, d = 0, vr - q
+        while d > bottom:
+            n += 1
+            if n >= st.max_iterations:  # the full path's too_many: unknown past its bound
+                raise self.declined("a peck cycle at its iteration bound")
+            d -= q
+        ic = axes[2]
+        top = abs(r) + abs(r - n * q) + _BACK_OFF
+        err = math.nextafter((2.0 * abs(r) + st.offb2[ic] + 2.0 * n * q + 2.0 * top + 1.0) * 2.0**-51, math.inf)
+        if err > self.peck_err:
+            self.peck_err = err
+        if err > st.xerr[ic]:
+            st.xerr[ic] = err
+        for k in range(1, n + 1):
+            depth = r - k * q
+            _row(st, axes, aa, bb, depth, False)  # the peck
+            _row(st, axes, aa, bb, r, True)  # out to R
+            _row(st, axes, aa, bb, depth + _BACK_OFF, True)  # back down, backed off
 
     def _template(self, r: tuple, cc: float, clear: tuple, axes: tuple[int, int, int]) -> tuple | None:
         """What the next block makes when it is a hole line (X and Y words only) in the state this one leaves
@@ -265,6 +346,8 @@ class Cycles:
         position at the clear level and, where it is above R, the rapid to R (either branch of ``_rows``).
         None: a comparison too close to call (the next block then runs :meth:`_general`, which declines)."""
         st = self.st
+        if st.motion == 83:  # (its pecks: _general's)
+            return None
         try:
             up = self.below(self.il, self.il_tok, r[0], r[1])  # type: ignore[arg-type]
             to_r = self.below(r[0], r[1], clear[0], clear[1])
@@ -358,3 +441,6 @@ def _row(st: Any, axes: tuple[int, int, int], a: float, b: float, c: float, rapi
         st.rapids += 1
     if n >= st.rows:
         st.full()
+        err = st.cyc.peck_err  # (full() set the xerr of the rows it kept from the G91 chains' alone)
+        if err > st.xerr[ic]:
+            st.xerr[ic] = err

@@ -74,10 +74,12 @@ start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only a
 (which stops the machine: nothing is dropped across it, :meth:`_Pass.dwell_at`); I, J or R
 without G2/G3, H without G43, G43 without H or with H0.
 
-Canned cycles (:mod:`.double_cycles`): G81 and G82 (``P`` above 0) in G90, in the plane the program has set,
-after the program set G98 or G99 (no L, no G91 chain open), one row per motion of the full path's
-``Interpreter._cycle``; R, the bottom and P sticky; the levels compared only where the doubles decide the
-exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the bottom decline).
+Canned cycles (:mod:`.double_cycles`): G81, G82 (``P`` above 0) and G83 (``Q`` above 0: a Q in a line without
+an M word is a value, G83's alone) in G90, in the plane the program has set, after the program set G98 or G99
+(no L, no G91 chain open, not in G20 nor on a lathe), one row per motion of the full path's
+``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where the doubles decide the
+exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the bottom decline);
+G83's peck rows widened by their drift (``xerr``).
 
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
 layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
@@ -134,7 +136,16 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
-from .double_cycles import CYCLE_CODES, Cycles, cycle_call, cycle_modal, r_token, takes_p
+from .double_cycles import (
+    CYCLE_CODES,
+    Cycles,
+    cycle_call,
+    cycle_modal,
+    q_value,
+    r_token,
+    takes_p,
+    takes_q,
+)
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -1191,9 +1202,11 @@ class _Pass:
         if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FSIJKRP" and x not in self.index:
+            if x not in "FSIJKRPq" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRP"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPq"]
+        if "q" in others and not takes_q(groups, bool(axes)):  # (.double_cycles: a Q in a line without M)
+            raise Declined("a word Q without M61 or G83")
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -1506,7 +1519,7 @@ def _letters(words: Any) -> str:
     for letter in letters:
         if letter not in _LETTERS:
             raise Declined(f"a word {letter}")
-    return letters
+    return letters.replace("Q", "q") if q_value(words) else letters
 
 
 def _lines_with_o(text: str) -> list[tuple[int, int]]:
@@ -1587,7 +1600,7 @@ def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[
     for letter, tree, *_rest in words:
         if letter not in _LETTERS:
             raise Declined(f"a word {letter}")
-        if letter in _CODE_LETTERS:
+        if letter in _CODE_LETTERS and not (letter == "Q" and q_value(words)):
             if tree[0] != NUM:
                 raise Declined("a computed G, M or H code")
             codes.append(code_src(tree))
