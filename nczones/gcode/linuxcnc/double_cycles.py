@@ -332,6 +332,10 @@ class Cycles:
             self.peck_err = err
         if err > st.xerr[ic]:
             st.xerr[ic] = err
+        cols = st.columns
+        if len(cols) == 3 and len(cols[0]) + 3 * n < st.rows:  # a mill's three axes, away from a window's end
+            _peck_rows(st, axes, aa, bb, r, q, n)
+            return
         for k in range(1, n + 1):
             depth = r - k * q
             _row(st, axes, aa, bb, depth, False)  # the peck
@@ -419,6 +423,22 @@ class Cycles:
         if dwell:
             _row(st, axes, aa, bb, cc, False, dwell=True)
         _row(st, axes, aa, bb, clear, True)
+
+
+def _peck_rows(st: Any, axes: tuple[int, int, int], aa: float, bb: float, r: float, q: float, n: int) -> None:
+    """:meth:`Cycles._pecks`'s ``n`` pecks appended at once, the same doubles as its :func:`_row` calls (on a
+    machine of the three axes, the window not full before the last)."""
+    ia, ib, ic = axes
+    ca, cb, cz = st.columns[ia], st.columns[ib], st.columns[ic]
+    for k in range(1, n + 1):
+        depth = r - k * q
+        ca.extend((aa, aa, aa))
+        cb.extend((bb, bb, bb))
+        cz.extend((depth, r, depth + _BACK_OFF))
+    st.rapids += 2 * n
+    if n:
+        pos = st.pos
+        pos[ia], pos[ib], pos[ic] = aa, bb, cz[-1]
 
 
 def _moves(st: Any) -> int:
