@@ -83,6 +83,13 @@ start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only a
 (which stops the machine: nothing is dropped across it, :meth:`_Pass.dwell_at`); I, J or R
 without G2/G3, H without G43, G43 without H or with H0.
 
+Canned cycles (:mod:`.double_cycles`): G81, G82 (``P`` above 0) and G83 (``Q`` above 0: a Q in a line without
+an M word is a value, G83's alone) in G90, in the plane the program has set, after the program set G98 or G99
+(no L, no G91 chain open, not in G20 nor on a lathe), one row per motion of the full path's
+``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where the doubles decide the
+exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the bottom decline);
+G83's peck rows widened by their drift (``xerr``).
+
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
 layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
 words only by :meth:`_Pass._plain`, any other by its shape; in a loop or sub body: the block's steps compiled
@@ -139,6 +146,16 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
+from .double_cycles import (
+    CYCLE_CODES,
+    Cycles,
+    cycle_call,
+    cycle_modal,
+    q_value,
+    r_token,
+    takes_p,
+    takes_q,
+)
 from .double_lathe import (
     DIAMETER,
     SPINDLE_MODE,
@@ -172,7 +189,7 @@ WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
 #: The G codes the pass follows (the code table's ``doubles`` claims), by modal group: a whole number ``n`` as
 #: ``n``, ``n.1`` (G61.1, G91.1) as ``-(10 n + 1)`` (:func:`_code`).
 _GROUP_NAMES = {0: "nonmodal", 1: "motion", 2: "plane", 4: "arc distance", 6: "units", 7: "comp", 8: "tool", 3: "distance",
-                5: "feedmode", 12: "offset", 13: "path", 14: SPINDLE_MODE, 15: DIAMETER}
+                5: "feedmode", 10: "retract", 12: "offset", 13: "path", 14: SPINDLE_MODE, 15: DIAMETER}
 #: Per plane code: the arc's (first, second) axes and their centre words, the full path's ``PLANE_AXES``
 #: (``Interpreter.arc``; LinuxCNC's ARC_FEED order: G18's first axis is Z, its second X, its centre words K
 #: and I).  The full path's arc is clockwise (G2) or not in the plane of those two axes in that order, and
@@ -467,6 +484,7 @@ class _Pass:
         self.off = self.offsets[self.wcs]
         self._arcs_state(machine, arc_tolerance)
         self._modes_state(machine)
+        self.cyc = Cycles(self, Declined, machine)  # canned cycles (.double_cycles)
         self.unset = set(_NOTED)
         #: the groups assumed at a motion and their codes (DoublePath.assumed); what each starts as on the full path
         self.assumed: dict[str, str] = {}
@@ -1247,12 +1265,14 @@ class _Pass:
         if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FSIJKRPD" and x not in self.index:
+            if x not in "FSIJKRPDq" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPD"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPDq"]
         why = spindle_mode(groups, others)  # G96/G97 and D (.double_lathe)
         if why is not None:
             raise Declined(why)
+        if "q" in others and not takes_q(groups, bool(axes)):  # (.double_cycles: a Q in a line without M)
+            raise Declined("a word Q without M61 or G83")
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -1264,14 +1284,16 @@ class _Pass:
         if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
             body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
         body += self._dwell_body(groups, others, bool(axes))
-        body += self._modal_body(groups, hs, others)
+        body += self._modal_body(groups, hs, others) + cycle_modal(groups)
         if groups.get("motion") in (1, 2, 3) and not axes:  # G1 without axis words: LinuxCNC checks the feed too
             if groups["motion"] != 1 or any(x in "IJKR" for x in others):
                 raise Declined("an arc without axis words")
             body.append("if not st.feed > 0.0: raise D('G1 without a positive feed')")
+        if axes or groups.get("motion") in CYCLE_CODES:  # a cycle block runs without axis words too
+            body += cycle_call(others, axes)
         if axes:
             body += self._motion_body(others, axes)
-        elif any(x in "IJKR" for x in others):
+        elif any(x in "IJKR" for x in others) and groups.get("motion") not in CYCLE_CODES:
             raise Declined("I, J, K or R without a motion")
         return self._compiled_plan(body)
 
@@ -1282,7 +1304,8 @@ class _Pass:
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
                                  "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
-                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2}
+                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
+                                 "CYC": CYCLE_CODES}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -1304,7 +1327,7 @@ class _Pass:
             raise Declined(str(diameter))
         body += diameter
         if "path" in groups:
-            if "P" in others:  # G64 P (_dwell_body: P only with G4 or G64)
+            if groups["path"] == 64 and "P" in others:  # G64 P (_dwell_body: then no G4 nor G82 takes it)
                 body.append(f"st.tolerance(v[{others.index('P')}])")
             else:
                 body.append(f"st.mode({groups['path'] == 64})")
@@ -1341,8 +1364,8 @@ class _Pass:
         I, J, R or a motion code (LinuxCNC's G4 X is not Fanuc's), a time that is not positive (its exact
         value may be below 0: the full path's GC209; a double above 0 is an exact value above 0)."""
         if groups.get("nonmodal") is None:
-            if "P" in others and groups.get("path") != 64:
-                raise Declined("a word P outside G4 and G64")
+            if "P" in others and (groups.get("path") == 64) == takes_p(groups, axes):
+                raise Declined("a word P outside G4, G64 and G82, or a P two of them may take")
             return []
         if "P" not in others:
             raise Declined("G4 without P")
@@ -1581,7 +1604,7 @@ def _letters(words: Any) -> str:
     for letter in letters:
         if letter not in _LETTERS:
             raise Declined(f"a word {letter}")
-    return letters
+    return letters.replace("Q", "q") if q_value(words) else letters
 
 
 def _lines_with_o(text: str) -> list[tuple[int, int]]:
@@ -1662,12 +1685,13 @@ def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[
     for letter, tree, *_rest in words:
         if letter not in _LETTERS:
             raise Declined(f"a word {letter}")
-        if letter in _CODE_LETTERS:
+        if letter in _CODE_LETTERS and not (letter == "Q" and q_value(words)):
             if tree[0] != NUM:
                 raise Declined("a computed G, M or H code")
             codes.append(code_src(tree))
         else:
             vals.append(em.value(tree, body))
+    vals += r_token(words, em.leaf)  # last: the exact value of a literal R, for a cycle's levels
     return vals, codes
 
 

@@ -1,0 +1,466 @@
+"""Canned cycles G81, G82 and G83 in the double pass (:mod:`nczones.gcode.linuxcnc.doubles`), issue 36.
+
+A drilling program with expressions ran the full path (about 12x ``rs274``) because the pass declined its
+cycles.  This module runs a G81/G82/G83 block in the pass's doubles, as the full path's ``Interpreter._cycle``
+does exactly (LinuxCNC's ``convert_cycle_xy`` and ``CYCLE_MACRO``, ``interp_cycles.cc``), one row per
+motion the full path emits, in the same order:
+
+* the first time (``old < R``, the initial level below R): a rapid "up to R" where the tool stands;
+* the position rapid: to the hole at the current level, then to R, on the first hole of a block when the
+  tool is above R (``current > R``); else to the hole at the clear level, then to R when the clear level
+  is above R;
+* G83's pecks (:meth:`Cycles._pecks`): per peck a feed to ``R - k Q``, a rapid out to R, a rapid back down to
+  0.254 mm above the peck, as many as the full path counts in LinuxCNC's doubles;
+* the feed to the bottom (the plane's normal axis: Z in G17), G82's dwell there (a row where the machine
+  stands, a stop: :meth:`~nczones.gcode.linuxcnc.doubles._Pass.dwelt`), and the retract rapid to the clear
+  level: R under G99, the initial level under G98.
+
+The initial level is the normal axis's position when the cycle became modal (kept until a motion code that
+is not a cycle: the full path's ``cycle_il``); R, the bottom and G82's P are sticky.
+
+Why the rows hold
+-----------------
+Every row is a machine coordinate the pass computes as it computes a G90 move's: a word's double plus the
+offset's double (the hole's X and Y, R, the bottom), or a copy of the double of a row before it (where the
+tool stands, the initial level); so the module's bound of :mod:`.doubles` holds for each (a copy's bound is
+its own row's, no more than the widening of any box that holds it).  The pass declines a cycle in G91 or
+while a G91 chain is open: every row then has the G90 bound.  G83's peck rows are not: ``fl(R' - fl(k Q'))``
+drifts from the exact ``R - k Q`` by up to some ``k`` ulps of Q; :meth:`Cycles._pecks` bounds that drift and
+adds the bound to the normal axis's widening (the pass's ``xerr``, as a G91 chain's, from the first peck on:
+:func:`_row` sets it again after a window is handed over, which recomputes it from the chains alone).
+
+G83's Q: the pass reads a Q word as M61's tool number (a literal code) in a line with an M word, else as a value
+(:func:`q_value`), which only G83 takes (:func:`takes_q`; a Q in any other line declines).
+
+The branches (how many rows a block makes) are the full path's exact comparisons of levels.  The pass
+decides each in doubles only where it cannot differ from the exact one (:meth:`Cycles.below`): two levels
+known to have the same exact value are equal (a token each: R's is its exact value when it is a literal,
+the text's :func:`~nczones.gcode.lexer.decimal_value` as the full path reads it, :func:`r_token`, or the
+same sticky R word; with the same offsets, the same tuple of doubles, hence the same exact offsets; the
+tool's level is the clear level's token when no motion came after the last cycle block); else the doubles
+must differ by more than both levels' bounds (``(|a| + |b| + 2 offsets) 2**-52``, taken twice over); a
+closer pair declines (equal doubles of two different exact values: ``R0.30000000000000001`` then ``R0.3``,
+where the full path's tool is above R and makes two rapids).  A level compared is never a G91 one.
+
+Declined (besides what :mod:`.doubles` declines): a cycle before the program sets G98 or G99 or the plane
+(the full path notes the assumed mode), in G91 or with a G91 chain open, in G20 or on a lathe (its words
+here are a mill's millimetres: whatever of G20 and lathes the pass takes, its cycles decline), without a positive feed, without R
+or the bottom the first time, with L (not a letter of the pass), a P with G81 or G83, a G82 without a P above
+0, a G83 without a Q above 0 or with as many pecks as the loop bound, a Q with G81 or G82 or a G64,
+I, J or K in a cycle block, an axis word off the plane's three, a machine without them, R below the bottom,
+a plane or offset change (work offset, tool length) while a cycle is modal (the full path moves the initial
+level with the offsets), G73, G84-G89.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from ...motion import PLANE_AXES
+from ..lexer import decimal_value
+from ..parser import NUM
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
+
+__all__ = ["CYCLE_CODES", "Cycles", "cycle_modal", "cycle_call", "r_token", "takes_p"]
+
+#: The cycles the pass runs (the motion group's codes, :data:`~nczones.gcode.linuxcnc.doubles._GROUPS`).
+CYCLE_CODES = frozenset((81, 82, 83))
+#: G83's back-off above the last peck's depth (mm: the full path's ``G83_RAPID_DELTA_MM``, exactly 0.254).
+_BACK_OFF = 0.254
+#: The bound of two levels' distance from their exact values, per unit of ``|a| + |b| + 2 offsets``:
+#: ``2**-52`` (:mod:`.doubles`'s module bound, twice half an ulp) taken twice over.
+_REL = 4.5e-16
+#: Per plane code: the indices of its first, second and normal axis names (``PLANE_AXES``: the full path's).
+_PLANES = {int(p): names for p, names in PLANE_AXES.items()}
+
+
+def takes_p(groups: dict[str, int], axes: bool) -> bool:
+    """May a block's P word be G82's dwell: G82 written, or axis words in a motion mode the block does not
+    write (the mode may be G82: :meth:`Cycles.run` declines a P in any other)."""
+    motion = groups.get("motion")
+    return motion == 82 or (motion is None and axes)
+
+
+def q_value(words: Any) -> bool:
+    """Is a line's Q word a value (G83's peck), not M61's tool number: a line without an M word (a Q in one
+    with an M is read as M61's, and declines but with M61)."""
+    letters = [w[0] for w in words]
+    return "Q" in letters and "M" not in letters
+
+
+def takes_q(groups: dict[str, int], axes: bool) -> bool:
+    """May a block's Q value be G83's peck: G83 written, or axis words in a motion mode the block does not
+    write (:meth:`Cycles.run` declines a Q in any other mode); not with a G64 (whose Q it would be too)."""
+    motion = groups.get("motion")
+    return "path" not in groups and (motion == 83 or (motion is None and axes))
+
+
+def cycle_modal(groups: dict[str, int]) -> list[str]:
+    """The code of a block's G98/G99 and of a motion code that ends a modal cycle (every code but a cycle's:
+    the full path's ``cycle_il`` and ``last_cycle`` set to None)."""
+    body = []
+    if "retract" in groups:
+        body.append(f"st.cyc.retract = {groups['retract'] == 99}")
+    if "motion" in groups and groups["motion"] not in CYCLE_CODES:
+        body.append("st.cyc.end()")
+    return body
+
+
+def r_token(words: Any, leaf: Any) -> list[str]:
+    """The source of the value a line's steps hand its plan after its words' when it has an R word: the
+    R's text (a literal cut from the line, ``P[k]``; ``"n/d"`` for a literal of a line parsed afresh), whose
+    exact value is the full path's (:func:`~nczones.gcode.lexer.decimal_value`), or None (an expression)."""
+    for letter, tree, *_rest in words:
+        if letter == "R":
+            if tree[0] != NUM:
+                return ["None"]
+            src = leaf(tree)
+            if src.startswith("float(") and src.endswith(")"):
+                return [src[6:-1]]
+            q = tree[2]
+            return [repr(f"{q.numerator}/{q.denominator}")]
+    return []
+
+
+def cycle_call(others: list[str], axes: list[tuple[int, int]]) -> list[str]:
+    """The code that runs a block as a cycle when the motion mode is one (and then returns), and declines
+    a P word in any other mode."""
+    def val(x: str) -> str:
+        return f"v[{others.index(x)}]" if x in others else "None"
+
+    if any(x in "IJK" for x in others):
+        body = ["if st.motion in CYC: raise D('I, J or K in a canned cycle block')"]
+    else:
+        pairs = "".join(f"({i}, v[{k}]), " for k, i in axes)
+        tok = f"v[{len(others)}]" if "R" in others else "None"  # (r_token's, after the words' values)
+        body = [f"if st.motion in CYC: return CY(({pairs}), {val('R')}, {val('P')}, {tok}, {val('q')})"]
+    if "P" in others:
+        body.append("raise D('a word P outside G4 and G82')")
+    if "q" in others:
+        body.append("raise D('a word Q without M61 or G83')")
+    return body
+
+
+class Cycles:
+    """The modal state of canned cycles in the pass, and :meth:`run`, a cycle block's rows."""
+
+    __slots__ = ("st", "declined", "retract", "last", "il", "il_tok", "il_off", "il_axis", "r", "r_tok", "z", "p", "mark",
+                 "pos_tok", "tokens", "steady",
+                 "lathe", "q", "peck_err")
+
+    def __init__(self, st: Any, declined: type[Exception], machine: Any):
+        self.st = st
+        self.declined = declined  # the pass's Declined (this module is imported by its module)
+        #: a lathe (its X words may be diameters, G7): its cycles decline, whatever the pass takes of it
+        self.lathe = getattr(machine, "machine_type", "mill") != "mill" or bool(getattr(machine, "diameter_axes", ()))
+        #: G99 (True: retract to R), G98 (False), None: the program has not set one (the full path notes it)
+        self.retract: bool | None = None
+        self.tokens = 0  # the last token handed out (:meth:`_fresh`)
+        #: the motions but dwells (:func:`_moves`) when the last cycle block ended: the tool at its clear level
+        #: while they are as many (a dwell, a tool change move nothing in the pass)
+        self.mark = -1
+        self.pos_tok: Any = 0  # the token of that clear level
+        self.r: float | None = None  # R and the bottom as the program wrote them (doubles), sticky
+        self.r_tok: Any = 0
+        self.z: float | None = None
+        self.p: float | None = None  # G82's dwell, sticky
+        self.q: float | None = None  # G83's peck, sticky
+        #: the largest bound of a G83 peck row's error (mm; 0.0: none yet), the pass's ``xerr`` of the normal
+        #: axis from the first peck on (:meth:`_pecks`)
+        self.peck_err = 0.0
+        self.end()
+
+    def end(self) -> None:
+        """A motion code other than a cycle's: the next cycle is a first one, with a new initial level."""
+        self.last: int | None = None
+        self.steady: tuple | None = None  # the template of the next hole line (_template)
+        self.il: float | None = None
+        self.il_tok: Any = None
+        self.il_off: Any = None
+        self.il_axis = -1
+
+    def _fresh(self) -> int:
+        """A token no level has: its exact value is not known to equal another's."""
+        self.tokens += 1
+        return self.tokens
+
+    def below(self, a: float, ta: Any, b: float, tb: Any) -> bool:
+        """Is level ``a`` below level ``b`` exactly, as the full path compares them (``_level_lt``)?  Equal
+        tokens: the same exact value.  Else the doubles' difference must exceed both levels' bounds (the
+        module's docstring); a closer pair declines."""
+        if ta == tb:
+            return False
+        tol = (abs(a) + abs(b) + self.st.offb2[self.il_axis]) * _REL + 1e-300
+        d = b - a
+        if d > tol:
+            return True
+        if d < -tol:
+            return False
+        raise self.declined("canned cycle levels too close to compare exactly")
+
+    def _axes(self) -> tuple[int, int, int]:
+        """The machine axes of the plane's first, second and normal axis; declines the states the full path
+        notes or refuses."""
+        st = self.st
+        names = _PLANES.get(st.plane)
+        if names is None or self.retract is None or st.unset:
+            raise self.declined("a canned cycle before the program sets the plane, its retract mode, units, distance "
+                           "mode and work offset")
+        if st.inc or st.chained:
+            raise self.declined("a canned cycle in G91, or before G90 moves set every G91 axis")
+        if self.lathe or getattr(st, "inch", False):  # (the words here are millimetres of a mill's axes)
+            raise self.declined("a canned cycle on a lathe or in G20")
+        if not st.feed > 0.0:
+            raise self.declined("a canned cycle without a positive feed")
+        index = st.index
+        if any(n not in index for n in names):
+            raise self.declined("a canned cycle on a machine without the plane's axes")
+        return index[names[0]], index[names[1]], index[names[2]]
+
+    def _words(self, mode: int, first: bool, z: float | None, vr: float | None, vp: float | None,
+               text: str | None) -> tuple:
+        """The block's R (and its token: its exact value for a literal, ``text``, else a fresh one) and
+        bottom, sticky when not written; G82's dwell checked."""
+        if vr is None:
+            if first or self.r is None:
+                raise self.declined("a canned cycle without R the first time")
+            vr, rtok = self.r, self.r_tok
+        elif text is None:
+            rtok = self._fresh()
+        else:
+            rtok = ("q", Fraction(text) if "/" in text else decimal_value(text))
+        if z is None:
+            if first or self.z is None:
+                raise self.declined("a canned cycle without its bottom the first time")
+            z = self.z
+        if mode == 82:
+            if vp is None:
+                if first or self.p is None:
+                    raise self.declined("a dwell cycle without P the first time")
+                vp = self.p
+            if not vp > 0.0:  # a double above 0 is an exact value above 0 (the full path's GC209 below 0)
+                raise self.declined("a cycle's dwell time that is not positive")
+            self.p = vp
+        elif vp is not None:
+            raise self.declined("a word P outside G4 and G82")
+        return vr, rtok, z
+
+    def run(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
+            text: str | None, vq: float | None = None) -> bool:
+        """A cycle block (the plan's ``CY``): its rows (the module's docstring); False (the program goes on)."""
+        if vr is None and vp is None and vq is None and self.steady is not None and self._steady(pairs):
+            return False
+        self._general(pairs, vr, vp, text, vq)
+        return False
+
+    def _general(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
+                 text: str | None, vq: float | None) -> None:
+        """Any cycle block: its words read, its levels compared, its rows; the template of the next hole."""
+        self.steady = None
+        st = self.st
+        mode = st.motion
+        ia, ib, ic = self._axes()
+        words = dict(pairs)
+        if any(i not in (ia, ib, ic) for i in words):
+            raise self.declined("an axis word off the plane's axes in a canned cycle")
+        first = self.last != mode
+        vr, rtok, z = self._words(mode, first, words.get(ic), vr, vp, text)
+        self._peck_word(mode, first, vq)
+        off, pos = st.off, st.pos
+        cur = pos[ic]
+        cur_tok = self.pos_tok if self.mark == _moves(st) else self._fresh()
+        if self.il is None:
+            self.il, self.il_tok, self.il_off, self.il_axis = cur, cur_tok, off, ic
+        elif self.il_axis != ic or self.il_off is not off:
+            raise self.declined("a plane or offset change while a canned cycle is modal")
+        r, rt = vr + off[ic], (rtok, id(off))
+        cc = z + off[ic]
+        if self.below(r, rt, cc, self._fresh()):
+            raise self.declined("a canned cycle's R below its bottom")
+        aa = words[ia] + off[ia] if ia in words else pos[ia]
+        bb = words[ib] + off[ib] if ib in words else pos[ib]
+        clear, clear_tok = self._rows(aa, bb, (r, rt), (cur, cur_tok), (ia, ib, ic))
+        if mode == 83:
+            self._pecks(aa, bb, r, (vr, z), (ia, ib, ic))
+        self._hole(aa, bb, cc, clear, mode == 82, (ia, ib, ic))
+        self.mark, self.pos_tok = _moves(st), clear_tok
+        self.r, self.r_tok, self.z, self.last = vr, rtok, z, mode
+        self.steady = self._template((r, rt), cc, (clear, clear_tok), (ia, ib, ic))
+
+    def _peck_word(self, mode: int, first: bool, vq: float | None) -> None:
+        """G83's Q (sticky; above 0: the full path's GC209 else); a Q in another cycle declines."""
+        if mode != 83:
+            if vq is not None:
+                raise self.declined("a word Q without M61 or G83")
+            return
+        if vq is None:
+            if first or self.q is None:
+                raise self.declined("a peck cycle without Q the first time")
+            vq = self.q
+        if not vq > 0.0:  # a double above 0 is an exact value above 0
+            raise self.declined("a peck that is not positive")
+        self.q = vq
+
+    def _pecks(self, aa: float, bb: float, r: float, prog: tuple[float, float], axes: tuple[int, int, int]) -> None:
+        """G83's pecks before its last feed: per peck a feed to ``R - k Q``, a rapid to R, a rapid to 0.254 mm above
+        the peck (the full path's ``_cycle``).  As many as the full path makes: it counts them with LinuxCNC's
+        loop in the doubles of the program's R, bottom and Q (``_linuxcnc_pecks``: the words' doubles, G90),
+        which is this loop.  A peck's row is ``fl(R' - fl(k Q'))``: its distance from the exact ``R - k Q`` is at
+        most ``|R' - R| + 2 k |Q'| 2**-53 + |row| 2**-53`` (R''s bound is the module's, ``(2 |R'| + 2 offsets)
+        2**-53``; ``Q'`` within half an ulp of ``Q``), the back-off's one rounding and 0.254's more: the bound
+        ``peck_err`` (that sum over every row of the block, taken twice over and rounded up) is added to the
+        normal axis's widening (the pass's ``xerr``: every row of the windows from the first peck on)."""
+        st = self.st
+        q = self.q
+        assert q is not None  # (_peck_word)
+        vr, bottom = prog
+        n, d = 0, vr - q
+        while d > bottom:
+            n += 1
+            if n >= st.max_iterations:  # the full path's too_many: unknown past its bound
+                raise self.declined("a peck cycle at its iteration bound")
+            d -= q
+        ic = axes[2]
+        top = abs(r) + abs(r - n * q) + _BACK_OFF
+        err = math.nextafter((2.0 * abs(r) + st.offb2[ic] + 2.0 * n * q + 2.0 * top + 1.0) * 2.0**-51, math.inf)
+        if err > self.peck_err:
+            self.peck_err = err
+        if err > st.xerr[ic]:
+            st.xerr[ic] = err
+        cols = st.columns
+        if len(cols) == 3 and len(cols[0]) + 3 * n < st.rows:  # a mill's three axes, away from a window's end
+            _peck_rows(st, axes, aa, bb, r, q, n)
+            return
+        for k in range(1, n + 1):
+            depth = r - k * q
+            _row(st, axes, aa, bb, depth, False)  # the peck
+            _row(st, axes, aa, bb, r, True)  # out to R
+            _row(st, axes, aa, bb, depth + _BACK_OFF, True)  # back down, backed off
+
+    def _template(self, r: tuple, cc: float, clear: tuple, axes: tuple[int, int, int]) -> tuple | None:
+        """What the next block makes when it is a hole line (X and Y words only) in the state this one leaves
+        (:meth:`_steady`): the tool at the clear level, the same initial level, R, bottom, dwell, retract mode,
+        offsets and plane.  Its branches (:meth:`_rows`) are then these: "up to R" where ``il < R``; the tool
+        (at the clear level, the same token) above R exactly where the clear level is, so the rows are the
+        position at the clear level and, where it is above R, the rapid to R (either branch of ``_rows``).
+        None: a comparison too close to call (the next block then runs :meth:`_general`, which declines)."""
+        st = self.st
+        if st.motion == 83:  # (its pecks: _general's)
+            return None
+        try:
+            up = self.below(self.il, self.il_tok, r[0], r[1])  # type: ignore[arg-type]
+            to_r = self.below(r[0], r[1], clear[0], clear[1])
+        except self.declined:
+            return None
+        return (st.motion, st.plane, self.retract, st.off, axes, (r[0], cc, clear[0]), up, to_r, st.motion == 82)
+
+    def _steady(self, pairs: tuple[tuple[int, float], ...]) -> bool:
+        """A hole line (no R, bottom or P) in the state the last cycle block left (:meth:`_template`), on a
+        machine of the plane's three axes, not at a window's end: its rows from the template; False (nothing
+        done): not such a line."""
+        st = self.st
+        mode, plane, retract, off, (ia, ib, ic), (r, cc, clear), up, to_r, dwell = self.steady  # type: ignore[misc]
+        cols = st.columns
+        n = len(cols[0])
+        if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
+                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.slow or n + 6 >= st.rows \
+                or len(cols) != 3 or getattr(st, "inch", False):
+            return False
+        pos = st.pos
+        aa, bb = pos[ia], pos[ib]
+        for i, v in pairs:
+            if i == ia:
+                aa = v + off[ia]
+            elif i == ib:
+                bb = v + off[ib]
+            else:
+                return False
+        ca, cb, cz = cols[ia], cols[ib], cols[ic]
+        if up:  # up to R where the tool stands
+            ca.append(pos[ia]), cb.append(pos[ib]), cz.append(r)
+        ca.append(aa), cb.append(bb), cz.append(clear)
+        if to_r:
+            ca.append(aa), cb.append(bb), cz.append(r)
+        ca.append(aa), cb.append(bb), cz.append(cc)
+        if dwell:
+            ca.append(aa), cb.append(bb), cz.append(cc)
+            st.dwelt(len(cz) - 1)
+        ca.append(aa), cb.append(bb), cz.append(clear)
+        st.rapids += 2 + up + to_r
+        pos[ia], pos[ib], pos[ic] = aa, bb, clear
+        self.mark = st.row0 + len(cz) - 1 - st.dwells
+        return True
+
+    def _rows(self, aa: float, bb: float, r: tuple, cur: tuple, axes: tuple[int, int, int]) -> tuple:
+        """The rapids up to R and to the hole (and R); the clear level and its token."""
+        ia, ib, ic = axes
+        st = self.st
+        old: tuple = (self.il, self.il_tok)  # (set by run() before)
+        if not (st.first_row[ia] and st.first_row[ib] and st.first_row[ic]):
+            st.moved(axes)
+        if self.below(old[0], old[1], r[0], r[1]):
+            _row(st, axes, st.pos[ia], st.pos[ib], r[0], True)  # up to R, where the tool stands
+            old = cur = r
+        clear = r if self.retract else old
+        if self.below(r[0], r[1], cur[0], cur[1]):
+            _row(st, axes, aa, bb, cur[0], True)  # to the hole at the current level
+            _row(st, axes, aa, bb, r[0], True)
+        else:
+            _row(st, axes, aa, bb, clear[0], True)  # to the hole at the clear level
+            if self.below(r[0], r[1], clear[0], clear[1]):
+                _row(st, axes, aa, bb, r[0], True)
+        return clear
+
+    def _hole(self, aa: float, bb: float, cc: float, clear: float, dwell: bool, axes: tuple[int, int, int]) -> None:
+        """The feed to the bottom, G82's dwell, the retract rapid to the clear level."""
+        st = self.st
+        _row(st, axes, aa, bb, cc, False)
+        if dwell:
+            _row(st, axes, aa, bb, cc, False, dwell=True)
+        _row(st, axes, aa, bb, clear, True)
+
+
+def _peck_rows(st: Any, axes: tuple[int, int, int], aa: float, bb: float, r: float, q: float, n: int) -> None:
+    """:meth:`Cycles._pecks`'s ``n`` pecks appended at once, the same doubles as its :func:`_row` calls (on a
+    machine of the three axes, the window not full before the last)."""
+    ia, ib, ic = axes
+    ca, cb, cz = st.columns[ia], st.columns[ib], st.columns[ic]
+    for k in range(1, n + 1):
+        depth = r - k * q
+        ca.extend((aa, aa, aa))
+        cb.extend((bb, bb, bb))
+        cz.extend((depth, r, depth + _BACK_OFF))
+    st.rapids += 2 * n
+    if n:
+        pos = st.pos
+        pos[ia], pos[ib], pos[ic] = aa, bb, cz[-1]
+
+
+def _moves(st: Any) -> int:
+    """The pass's motions so far but its dwells (a dwell is a row where the machine stands)."""
+    moves: int = st.row0 + len(st.columns[0]) - 1 - st.dwells
+    return moves
+
+
+def _row(st: Any, axes: tuple[int, int, int], a: float, b: float, c: float, rapid: bool, dwell: bool = False) -> None:
+    """Append the row of a motion (or a dwell) ending at ``a, b, c`` on ``axes`` (the rest where they are)."""
+    pos, cols = st.pos, st.columns
+    ia, ib, ic = axes
+    pos[ia], pos[ib], pos[ic] = a, b, c
+    for i, col in enumerate(cols):
+        col.append(pos[i])
+    n = len(cols[0])
+    if dwell:
+        st.dwelt(n - 1)
+    if rapid:
+        st.rapids += 1
+    if n >= st.rows:
+        st.full()
+        err = st.cyc.peck_err  # (full() set the xerr of the rows it kept from the G91 chains' alone)
+        if err > st.xerr[ic]:
+            st.xerr[ic] = err

@@ -1,0 +1,54 @@
+"""LinuxCNC's ``rs274`` against the double pass on drilling programs (G81, G82, G83, G98, G99; issue 36).
+
+A few parametric drilling programs, each run by ``rs274 -g`` (:func:`tests.tools.rs274_diff.run_rs274`): the
+full path matches rs274's log motion by motion (``tests.oracles.rs274.compare``), the pass takes the program,
+and its rows are rs274's motion ends (G82's dwells included, at the log's rounding) in order, as many.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+from fractions import Fraction
+
+import pytest
+
+from nczones.gcode.linuxcnc.doubles import double_pass
+from tests.oracles.rs274 import compare
+from tests.tools.rs274_diff import RS274, machine_of, run_rs274
+
+pytestmark = pytest.mark.skipif(shutil.which("rs274") is None and not os.path.exists(RS274) and not os.environ.get("CI"),
+                                reason="LinuxCNC's rs274 is not installed")
+
+#: rs274's tool table (lengths in inches: it runs in inches) and no work offsets
+SETUP = (("X", "Y", "Z"), {1: Fraction(1, 10), 2: Fraction(3, 10)}, {})
+
+PROGRAMS = {
+    "G99 holes, R again after G80": "G21 G90 G17 G54 F300\n#1 = 10\nG0 Z20\nG0 X0 Y0\nG99 G81 X1 Y1 Z-3 R2\n"
+                                    "X[#1 + 4.911] Y33.72\nX[#1 / 3] Y[#1 * 0.7]\nG80\nG99 G81 X1 Y1 Z-3 R2\n"
+                                    "X[#1 + 1]\nG80\nG0 Z20\nM30\n",
+    "G98 and G82, the tool length": "G21 G90 G17 G54 F200\n#1 = 2\nG43 H1\nG0 Z25\nG98 G82 X1 Y1 Z-2 R[#1] P0.5\n"
+                                    "X[#1 * 3]\nY[#1 / 3] R3\nG99 X0\nG80\nM30\n",
+    "the initial level below R": "G21 G90 G17 G54 F200\n#1 = 2\nG0 Z0\nG98 G81 X1 Y1 Z-2 R[#1 + 3]\nX2\nX3 R2\n"
+                                 "G99 X4\nG80\nG0 Z10\nM30\n",
+    "G83 pecks": "G21 G90 G17 G54 F200\n#1 = 0.7\nG0 Z10\nG99 G83 X1 Y1 Z-3 R2 Q#1\nX[#1 * 3] Q[#1 / 3]\n"
+                 "G98 Y2 Z-1.1\nG80\nM30\n",
+    "a loop of holes in G18": "G21 G90 G18 G54 F200\n#1 = 0\nG0 Y10\nG99 G81 Z0 X0 Y-1 R1\no1 while [#1 LT 6]\n"
+                              "Z[#1 * 2.5] X[#1 * #1 / 7]\n#1 = [#1 + 1]\no1 endwhile\nG80\nM30\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(PROGRAMS))
+def test_the_pass_is_rs274s_motion(name, tmp_path):
+    text = PROGRAMS[name]
+    moves, error, log = run_rs274(text, SETUP, tmp_path)
+    assert error is None, log[-2000:]
+    machine = machine_of(SETUP)
+    outcome = compare(text, machine, moves, error)
+    assert outcome.status == "match", outcome
+    path = double_pass(text, machine, max_iterations=100)
+    assert path.motions == len(moves), [m.kind for m in moves]
+    assert path.dwells == sum(m.kind == "DWELL" for m in moves)
+    for k, move in enumerate(moves, start=1):
+        for i in range(3):
+            assert abs(Fraction(path.columns[i][k]) - move.end[i]) <= move.tol + Fraction(1, 10**9), (k, move)
