@@ -64,3 +64,21 @@ def test_the_bound_is_twice_p_rounded_up():
 def test_what_declines(text):
     """P not above 0 (no tolerance, or an exact value that may be 0), Q, and G4 with G64 in one block."""
     assert check_against_full(text, MACHINE) is None
+
+
+CYCLE_HEAD = "G21 G90 G17 G54 G98 F100\n#1 = 1\nG0 Z10\n"
+
+
+@pytest.mark.parametrize("body, taken, tolerance", [
+    ("G82 G61 X#1 Y1 Z-2 R2 P0.5\nG80\nG0 X0\n", True, False),   # P is G82's dwell; G61 the mode
+    ("G64 P0.1\nG82 X#1 Y1 Z-2 R2 P0.5\nX2\nG80\nG1 X[#1*3]\n", True, True),
+    ("G82 G64 X#1 Y1 Z-2 R2 P0.5\nG80\n", False, False),          # one P, two codes that may take it
+    ("G64 P0.1 G82 X#1 Y1 Z-2 R2\n", False, False),               # a G82 without its own P
+])
+def test_a_p_word_is_read_by_the_one_code_that_takes_it(body, taken, tolerance):
+    """G82's dwell and G64's tolerance share the letter P: the pass reads it for the code that takes it and
+    declines a block where both may (the invariant holds where it is taken)."""
+    path = check_against_full(CYCLE_HEAD + body + "M30\n", MACHINE)
+    assert (path is not None) == taken
+    if path is not None:
+        assert (path.tolerance > 0) == tolerance
