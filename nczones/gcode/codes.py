@@ -98,10 +98,10 @@ _LINUXCNC_GROUPS: dict[int, tuple[int, ...]] = {
 }
 #: The codes the plain lane claims (G0, G1), the fast path (G0-G3; G81/G82 hole lines), the double pass (G4: a
 #: dwell; G61, G61.1 and bare G64: the path mode; G91: straight moves; G91.1 written out: LinuxCNC's default
-#: arc-centre mode, the one the pass assumes, issue 36).
+#: arc-centre mode, the one the pass assumes; G20: straight moves in inches, issue 36).
 _PLAIN_G = frozenset((0, 10))
 _FAST_G = frozenset((0, 10, 20, 30, 810, 820))
-_DOUBLES_G = frozenset((0, 10, 20, 30, 40, 430, 800, 170, 180, 190, 210, 400, 490, 900, 910, 911, 940, 540, 550, 560,
+_DOUBLES_G = frozenset((0, 10, 20, 30, 40, 430, 800, 170, 180, 190, 200, 210, 400, 490, 900, 910, 911, 940, 540, 550, 560,
                         570, 580, 590, 610, 611, 640))
 #: The full path's unknown reasons live in ``interpreter.UNSUPPORTED_G`` (its messages); these are the
 #: LinuxCNC codes it answers ``unknown`` for.

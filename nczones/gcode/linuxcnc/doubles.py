@@ -34,7 +34,10 @@ entry to the tool axis's work offset, exactly, before the one rounding of ``d + 
 bound's offset term covers the largest work offset plus the largest length.  A G91 move adds the word's double to
 the row before (the full path adds the word's exact value to the machine position: the offsets cancel): its
 error grows with each step of the chain, and :meth:`_Pass._straight_ends` bounds it (``DoublePath.inc_bound``, the
-largest of a window's rows, added to the widening); a G90 move of the axis ends the chain.
+largest of a window's rows, added to the widening); a G90 move of the axis ends the chain.  In G20 a word's
+millimetres are ``fl(d * fl(25.4))``, two roundings more: a G90 row is within ``3.6 (|m'| + |offset|) 2**-53`` of the
+full path's exact ``25.4 w + offset``, still inside the widening, and a G91 step adds its own larger term to the chain
+(:mod:`.double_units`, which derives both).
 
 The subset
 ----------
@@ -45,7 +48,7 @@ call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
 ``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G4 G17
-G18 G19 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G91.1 (written out: the
+G18 G19 G20 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G91.1 (written out: the
 full path's and LinuxCNC's start-up arc-centre mode, which the pass assumes) G94 with literal codes, F, X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5
 M7 M8 M9 a block, and M2/M30 alone to end; plain comments.  A tool: ``T<n>``, ``M6`` and ``M61 Q<n>`` with
 literal numbers (:meth:`_Pass._tool_change`: nothing the pass computes reads the tool in the spindle; M6 on a
@@ -56,12 +59,15 @@ included), which with the dwells say which corners LinuxCNC blends (:meth:`Doubl
 and their rows are the same in every mode (the full path emits every motion; which ones LinuxCNC drops in a
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
 program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
-chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  Arcs: in
+chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  G20:
+straight moves, G90 and G91, and G20/G21 anywhere (:mod:`.double_units`); an arc in G20 declines, and so does a
+G43 or G49 in other units than the tool length applied (LinuxCNC 2.9 does not convert it: the full path's
+unknown).  Arcs: in
 the plane the program has set (G17, G18 or G19; the arcs of one plane a program, ``DoublePath.arc_axes``), on a
 machine with the plane's axes, with the plane's centre words (G17 I/J, G18 K/I, G19 J/K: G91.1, LinuxCNC's
 default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
 ``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  Everything else declines:
-other codes and words, G64 P or Q, G20 (and a machine that starts in it or in G91), block delete, magic comments,
+other codes and words, G64 P or Q, a machine that starts in G20 or G91, block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a motion while the units, distance mode or work offset are still the machine
 file's (the full path would note them), a G1 without a positive feed, a loop at its iteration bound, a
@@ -129,6 +135,7 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
+from .double_units import TA, chain_start, inch_ends
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -422,6 +429,8 @@ class _Pass:
         self.src = _Lines(text, crlf="\r" in text)
         #: the text may write G91 (a "91" in it): only then do straight moves test for G91 (_straight_ends)
         self.g91_text = "91" in text
+        #: the text may write G20 (a "20" in it): only then do straight moves test for it (:mod:`.double_units`)
+        self.g20_text = "20" in text
         #: layout -> (its shape's step, the layout's cutter): ``step(cut(line))`` runs a line of it (nothing is
         #: compiled per layout: CAM output with arcs has hundreds of layouts of a few dozen shapes)
         self.by_layout: dict[bytes, tuple[Any, Any]] = {}
@@ -1012,6 +1021,7 @@ class _Pass:
         self.offset_bound = tuple(bound)
         self.exact_offsets = {int(name[1:]): vec for name, vec in exact_offsets.items()}
         self.reg: int | None = None  # the length register applied (G43 H<reg>); None: G49
+        self.reg_inch = False  # the units (G20?) the length was applied in (:meth:`tool`)
         self.tool_offsets: dict[tuple[int, int], tuple[float, ...]] = {}
 
     def _offset(self, wcs: int, reg: int | None) -> tuple[float, ...]:
@@ -1029,7 +1039,10 @@ class _Pass:
 
     def tool(self, reg: int | None) -> None:
         """G43 H<reg> (None: G49): the tool length the next motions add."""
-        self.reg = reg
+        if self.reg is not None and self.reg_inch != self.inch:
+            # LinuxCNC 2.9 keeps the applied length in the units it was applied in (the full path: unknown)
+            raise Declined("G43 or G49 after G20/G21 while a tool length is applied")
+        self.reg, self.reg_inch = reg, self.inch
         self.off = self._offset(self.wcs, reg)
 
     def work(self, wcs: int) -> None:
@@ -1084,7 +1097,8 @@ class _Pass:
         """G91: the distance mode, and per axis the bound of the error its G91 chain has built (:meth:`_straight_ends`)."""
         n = len(self.axes)
         self.inc = False  # G91 (a machine that starts in it declines)
-        self.slow = False  # G91, or a G91 chain open: straight moves take the G91 code (_straight_ends)
+        self.inch = False  # G20 (a machine that starts in it declines)
+        self.slow = False  # G91, G20 or a G91 chain open: straight moves take the slow code (_straight_ends)
         #: per axis: None (its row is a G90 one or the start: the module's bound holds) or a bound (a float,
         #: rounded up) of the distance of its double from the full path's exact coordinate (_straight_ends)
         self.err: list[float | None] = [None] * n
@@ -1104,12 +1118,17 @@ class _Pass:
                 self.touched[i] = (row, self.err[i])
                 self.err[i] = None
         self.chained = any(e is not None for e in self.err)
-        self.slow = self.inc or self.chained
+        self.slow = self.inc or self.chained or self.inch
 
     def distance(self, inc: bool) -> None:
         """G90 (``inc`` false) or G91."""
         self.inc = inc
-        self.slow = inc or self.chained
+        self.slow = inc or self.chained or self.inch
+
+    def units(self, inch: bool) -> None:
+        """G20 (``inch``) or G21: the straight moves after it scale their words (:mod:`.double_units`)."""
+        self.inch = inch
+        self.slow = self.inc or self.chained or inch
 
     def mode(self, bare: bool) -> None:
         """G64 without P (``bare``), or G61 or G61.1: the path mode of the next motions (its block's included)."""
@@ -1216,7 +1235,7 @@ class _Pass:
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
                                  "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
-                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2}
+                                 "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "TA": TA}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -1230,6 +1249,10 @@ class _Pass:
         sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
         if sets:
             body.append(f"unset.difference_update({tuple(sets)!r})")
+        if "units" in groups:
+            if groups["units"] == 20 and not self.g20_text:  # (a G20 the text's "20" misses: "G2 0")
+                raise Declined("G20 written apart")
+            body.append(f"st.units({groups['units'] == 20})")
         if "offset" in groups:
             body.append(f"st.work({groups['offset']})")
         body += self._tool_body(groups.get("tool"), hs)
@@ -1309,16 +1332,19 @@ class _Pass:
         chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain)."""
         named = tuple(i for _k, i in axes)
         g90 = [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
-        if not self.g91_text:  # no G91 in the text (_modal_body): no chain
+        if not self.g91_text and not self.g20_text:  # no G91 nor G20 in the text (_modal_body): no chain
             return g90
         inc = []
         for k, i in axes:
-            inc += [f"x{i} = pos[{i}] + v[{k}]", f"e = ERR[{i}]",
-                    f"if e is None: e = NA((2.0 * abs(pos[{i}]) + {self.offb2[i]!r}) * EPS2, INF)",
+            inc += [f"x{i} = pos[{i}] + v[{k}]", f"e = ERR[{i}]", chain_start(i, self.offb2[i], self.g20_text),
                     f"e = ERR[{i}] = NA(e + NA((abs(v[{k}]) + abs(x{i})) * EPS2, INF), INF)",
                     f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
-        # one test on the common way (G90, no chain open: ``slow`` false)
-        return ["if st.slow:", "    if st.inc:", *(f"        {b}" for b in inc), "        st.chained = True",
+        # G20 (:mod:`.double_units`) in a text that may write it: a branch of the slow way
+        inch = ["if st.inch:", *(f"    {b}" for b in inch_ends(axes, self.offb2, named)), "el"] \
+            if self.g20_text else [""]
+        # one test on the common way (G90 G21, no chain open: ``slow`` false)
+        return ["if st.slow:", *(f"    {b}" for b in inch[:-1]), f"    {inch[-1]}if st.inc:",
+                *(f"        {b}" for b in inc), "        st.chained = True",
                 "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
                 "else:", *(f"    {b}" for b in g90)]
 
@@ -1386,7 +1412,8 @@ class _Pass:
                 raise Declined("an arc on axes other than X, Y and Z")
             body += ["if mode < 2 or not st.feed > 0.0: "
                      "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
-                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
+                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')",
+                     "if st.inch: raise D('an arc in G20')"]
         body += ["if unset: raise D('a motion before the program sets units, distance mode and work offset')",
                  "off = st.off"]
         if arc:

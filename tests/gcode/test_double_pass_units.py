@@ -1,0 +1,194 @@
+"""G20 (inches) in the double pass (nczones/gcode/linuxcnc/double_units.py) against the full interpreter.
+
+The pass's invariant (``tests/gcode/test_double_pass.py``'s ``check_against_full``: the full path runs the
+program to the end with as many motions, every exact end in the pass's widened box) on programs in inches,
+with G20/G21 switches, G91 chains, work offsets and tool lengths, and words whose millimetres round badly
+(``0.1``, ``1/3``, ``2.5443``: its double times 25.4 is 1.08 ulp below the exact 64.62522 mm); and a face at a
+motion's exact extreme, and one ulp either side of it, decided alike with and without the pass.
+"""
+
+from __future__ import annotations
+
+import os
+from fractions import Fraction
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from nczones.gcode import interpret_text
+from nczones.gcode.linuxcnc.doubles import Declined, double_pass
+from nczones.machine import parse_machine
+from nczones.prover.result import Verdict
+from tests.gcode.test_double_pass import MACHINE, check_against_full, expressions, machines
+from tests.machines import load_machine, machine_text
+from tests.prover.test_double_pass_proof import both_ways, same_outcome
+
+EXAMPLES = int(os.environ.get("NCZONES_DOUBLE_PASS_EXAMPLES", "60"))
+INCH = Fraction(254, 10)
+
+#: Words whose millimetres round badly, large coordinates, and expressions.
+_WORDS = st.one_of(
+    st.sampled_from(["0.1", "2.5443", "-2.544427", "[1 / 3]", "[#1 / 7]", "3937.0078", "-1234.56789", "0.0001",
+                     "[#1 * 0.1]", "99999.9999", "1e"]).filter(lambda s: s != "1e"),
+    st.decimals(-2000, 2000, places=4, allow_nan=False, allow_infinity=False).map(lambda d: f"{d:f}"),
+    expressions(1),
+)
+#: Lines of the programs besides motions: units, distance modes, offsets and tool lengths (G43 or G49 after a
+#: units change with a length applied: the pass declines it, as the full path answers unknown).
+_LINES = ["G20", "G21", "G20 G91", "G21 G90", "G90", "G91", "G55", "G54", "G43 H1", "G49", "#1 = [#1 + 0.1]",
+          "#<a> = [#1 / 3]", "G20 G90 G1 X[#<a>]", "G61", "G64", "G4 P0.1", "F[25.4 / 3]"]
+
+
+@st.composite
+def _motion(draw) -> str:
+    code = draw(st.sampled_from(["G0 ", "G1 ", "", ""]))
+    axes = draw(st.lists(st.sampled_from("XYZ"), min_size=1, max_size=3, unique=True))
+    return code + " ".join(f"{a}{draw(_WORDS)}" for a in axes)
+
+
+@st.composite
+def inch_programs(draw) -> str:
+    """Programs that set G20 (or G21) before their first motion and may switch, with loops of G91 steps."""
+    head = draw(st.sampled_from(["G20 G90 G54 F30 G1", "G20 G90 G17 G55 F30 G0", "G20 G91 G54 F10 G1",
+                                 "G21 G90 G54 F300 G1", "G20 G90 G54 G43 H1 F30 G1"]))
+    body: list[str] = ["#1 = 0.1", "#<a> = 1"]
+    for _ in range(draw(st.integers(1, 10))):
+        kind = draw(st.integers(0, 4))
+        if kind <= 1:
+            body.append(draw(_motion()))
+        elif kind <= 3:
+            body.append(draw(st.sampled_from(_LINES)))
+        else:
+            n = draw(st.integers(1, 30))
+            steps = [draw(_motion()) for _ in range(draw(st.integers(1, 2)))]
+            body += ["#9 = 0", f"o{len(body)} while [#9 LT {n}]", *steps, "#9 = [#9 + 1]", f"o{len(body)} endwhile"]
+    return "\n".join([head, *body, "M30"]) + "\n"
+
+
+@settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(inch_programs(), machines(tools=True))
+def test_inch_programs_are_enclosed_by_the_full_interpreter(text, machine):
+    check_against_full(text, machine)
+
+
+# -- fixed programs -------------------------------------------------------------------------------------------
+
+#: Offsets and a tool length in millimetres (the full path adds them in millimetres whatever the units).
+MILL = load_machine("mill_g54_g55_h1_h2")
+
+ACCEPTED = {
+    "inches": "G20 G90 G17 G54 F30\n#1 = 0.1\nG1 X[#1] Y[1 / 3] Z2.5443\nG0 X3937.0078 Y-1234.56789\nM30\n",
+    "a switch each way": "G20 G90 G54 F30\n#1 = 1\nG1 X[#1 / 3]\nG21 Y[#1 / 3]\nG20 Z0.1\nG21 X0.1\nM30\n",
+    "G91 in inches": "G20 G91 G54 F30\n#1 = 0\no1 while [#1 LT 50]\nG1 X0.1 Y[1 / 3]\nG0 Z-2.5443\n"
+                     "#1 = [#1 + 1]\no1 endwhile\nG90 X0\nG91 G21 Y0.1\nG20 Y0.1\nM30\n",
+    "a tool length in inches": "G20 G90 G54 F30\n#1 = 1\nG43 H1\nG1 Z[#1 / 3]\nG55 X0.1\nG49\nG0 Z1\n"
+                               "G21\nG43 H2\nG1 Z[#1 / 3]\nM30\n",
+    "units on the motion's line": "G21 G90 G54 F30\n#1 = 1\nG20 G1 X[#1 / 3]\nG21 G1 X[#1 / 3]\nM30\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(ACCEPTED))
+def test_inch_programs_the_pass_follows(name):
+    path = check_against_full(ACCEPTED[name], MILL)
+    assert path is not None, "declined"
+    assert path.motions > 0
+
+
+def test_the_rows_are_the_words_times_25_4_plus_the_offsets():
+    """A G20 row is ``fl(fl(d * 25.4) + fl(offset))`` (the offsets in millimetres), not the word's double, nor
+    the offset converted to inches first."""
+    path = check_against_full("G20 G90 G54 F30\n#1 = 1\nG1 X[#1 / 3] Y0.1 Z2.5443\nG43 H1 Z0\nM30\n", MILL)
+    assert path is not None
+    assert [path.columns[i][1] for i in range(3)] == [(1 / 3) * 25.4 + 100.0, 0.1 * 25.4 + 0.0, 2.5443 * 25.4 + 50.0]
+    assert path.columns[2][2] == 0.0 * 25.4 + 170.0
+
+
+DECLINED = {
+    "an arc in inches": ("G20 G90 G17 G54 F30\n#1 = 1\nG1 X1\nG2 X2 Y1 R1\nM30\n", "arc in G20"),
+    "G43 after a units change": ("G21 G90 G54 F30\n#1 = 1\nG43 H1\nG1 Z1\nG20\nG43 H2\nG1 Z1\nM30\n",
+                                 "after G20/G21"),
+    "G49 after a units change": ("G20 G90 G54 F30\n#1 = 1\nG43 H1\nG1 Z1\nG21\nG49\nG1 Z1\nM30\n", "after G20/G21"),
+    "G20 written apart": ("G2 0 G90 G54 F30\n#1 = 1\nG1 X1\nM30\n", "written apart"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(DECLINED))
+def test_inch_programs_outside_the_subset_are_declined(name):
+    text, why = DECLINED[name]
+    with pytest.raises(Declined, match=why):
+        double_pass(text, MILL, max_iterations=5)
+    if "units change" in name:  # the full path's unknown (LinuxCNC 2.9 keeps the length in the old units)
+        run = interpret_text(text, MILL)
+        list(run.segments())
+        assert run.status != "complete" and "old units" in str(run.unsupported[0])
+
+
+def test_an_arc_in_g21_after_inches_is_enclosed():
+    path = check_against_full("G20 G90 G17 G54 F30\n#1 = 1\nG1 X[#1 / 3] Y0.1\nG21 G2 X20 Y2.54 R30\nM30\n", MACHINE)
+    assert path is not None and path.arcs == 1
+
+
+#: Pairs of G91 steps whose millimetres both drift one way (2.5443 in rounds 1.08 ulp down, 2.544427 in 0.6
+#: ulp up) while the position stays small: the chain's error grows past a bound made of the rows alone.
+PAIRS = ("G20 G90 G54 F30\n#1 = 0\nG91\no1 while [#1 LT 200]\nG1 X2.5443\nX-2.544427\n#1 = [#1 + 1]\n"
+         "o1 endwhile\nG90 G1 X0\nM30\n")
+
+
+@pytest.mark.parametrize("window", [None, 1, 7, 100])
+def test_a_g20_chain_whose_steps_drift_one_way_is_enclosed(window):
+    machine = load_machine("box_5000")
+    exact = [Fraction(0)]
+    for k in range(400):
+        exact.append(exact[-1] + (Fraction("2.5443") if k % 2 == 0 else -Fraction("2.544427")) * INCH)
+    exact.append(Fraction(0))
+    whole = check_against_full(PAIRS, machine)
+    assert whole is not None and whole.motions == 401
+    drift = abs(Fraction(whole.columns[0][400]) - exact[400])
+    assert drift > Fraction(1, 10**12)  # the drift the chain's bound is for
+    seen = set()
+
+    def check(p):
+        for k in range(p.row0 + 1, p.motions + 1):
+            lo, hi = p.enclosure(k, k)
+            assert lo["X"] <= exact[k] <= hi["X"] and lo["X"] <= exact[k - 1] <= hi["X"], (window, k)
+            seen.add(k)
+        return True
+
+    if window is None:
+        check(whole)
+    else:
+        check(double_pass(PAIRS, machine, max_iterations=1000, window=window, on_window=check))
+    assert seen == set(range(1, 402))
+
+
+# -- faces at a motion's extreme ------------------------------------------------------------------------------
+
+#: X2.5443 in inches: the exact end is 64.62522 mm, its double 1.08 ulp (1.53e-14 mm) below it, farther than the
+#: G21 rows' bound ``2 u (|x| + |O|)`` (1.43e-14 mm).  A face ``5e-16`` mm either side of the end (a machine file's
+#: decimals stop at 30 places; an ulp here is 1.42e-14) puts it between the exact end and that bound's box.
+END = Fraction("2.5443") * INCH
+_NEAR = Fraction(5, 10**16)
+FACE_PROGRAM = "G20 G90 G17 G54 F30\n#1 = 1\nG1 X[#1 * 0 + 2.5443] Y1\nG1 X0 Y0\nM30\n"
+
+
+def _face_machine(face: Fraction):
+    decimal = f"{face.numerator * 10**30 // face.denominator}"
+    assert Fraction(int(decimal), 10**30) == face
+    decimal = f"{decimal[:-30]}.{decimal[-30:]}"
+    return parse_machine(machine_text("box_5000").replace('max = { X = "5000"', f'max = {{ X = "{decimal}"'))
+
+
+@pytest.mark.parametrize(("face", "verdict"), [
+    (END, Verdict.SAFE),  # on the face: the pass's box crosses it, the full path proves it
+    (END + _NEAR, Verdict.SAFE),
+    (END - _NEAR, Verdict.UNSAFE),  # the exact end is past the face; the double (1.53e-14 below it) is not
+    (END + Fraction(1, 10**9), Verdict.SAFE),  # clear of the bound: the pass proves it
+])
+def test_a_face_at_an_inch_motions_end_is_decided_alike(monkeypatch, face, verdict):
+    assert Fraction(2.5443 * 25.4) < END - _NEAR  # the controller's double is short of the face below the end
+    with_pass, without = both_ways(FACE_PROGRAM, _face_machine(face), monkeypatch)
+    same_outcome(with_pass, without)
+    assert with_pass.verdict is verdict
+    assert ("double_pass_boxes" in dict(with_pass.stats)) is (face - END > _NEAR)
