@@ -16,10 +16,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from nczones.errors import GcodeError
 from nczones.gcode import interpret_text
 from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.machine import parse_machine
 from nczones.prover.result import Verdict
+from tests.gcode.rs274_arc_programs import in_plane
 from tests.gcode.test_double_pass import MACHINE, check_against_full, expressions, machines
 from tests.machines import load_machine, machine_text
 from tests.prover.test_double_pass_proof import both_ways, same_outcome
@@ -192,3 +194,70 @@ def test_a_face_at_an_inch_motions_end_is_decided_alike(monkeypatch, face, verdi
     same_outcome(with_pass, without)
     assert with_pass.verdict is verdict
     assert ("double_pass_boxes" in dict(with_pass.stats)) is (face - END > _NEAR)
+
+
+# -- I/J arcs in G20 ------------------------------------------------------------------------------------------
+
+@st.composite
+def inch_arcs(draw) -> list[str]:
+    """A move to a start, then an I/J arc from it in inches (radii 0.01 to 120 inch, sweeps away from 0 and a
+    whole turn, the end written to 6 places: within 1e-6 inch of the circle), sometimes a helix."""
+    import math
+
+    sx, sy = (draw(st.integers(-4000, 4000)) / 40 for _ in range(2))
+    radius = draw(st.sampled_from([0.01, 0.5, 1.0, 7.25, 120.0]))
+    a0 = draw(st.sampled_from([0.0, math.pi / 2, 1.0, -2.5, math.pi / 4]))
+    sweep = draw(st.sampled_from([0.3, math.pi / 2, math.pi, 2.0, -math.pi / 2, 3 * math.pi / 2, -4.0]))
+    i, j = round(-radius * math.cos(a0), 6), round(-radius * math.sin(a0), 6)
+    ex, ey = sx + i + radius * math.cos(a0 + sweep), sy + j + radius * math.sin(a0 + sweep)
+    code = "G2" if sweep < 0 else "G3"
+    helix = draw(st.sampled_from(["", "", " Z[#1 * 2]", " Z-0.1"]))
+    return [f"G1 X{sx:.3f} Y{sy:.3f}", f"{code} X{ex:.6f} Y{ey:.6f} I{i:.6f} J{j:.6f}{helix}"]
+
+
+@settings(max_examples=EXAMPLES, deadline=None, derandomize=EXAMPLES <= 200,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(st.lists(inch_arcs(), min_size=1, max_size=4),
+       st.sampled_from(["G20 G90 G17 G54 F30", "G20 G90 G17 G55 G43 H1 F30", "G21 G90 G17 G54 F30\nG1 X1\nG20"]),
+       st.sampled_from([17, 17, 18, 19]), machines(tools=True))
+def test_inch_arcs_are_enclosed_by_the_full_interpreter(arc_lines, head, plane, machine):
+    """I/J arcs in inches (:func:`inch_arcs`; an R arc in G20 declines), in G17, G18 or G19: every arc of the
+    full path (its ends, its points at both radii and its extremes) lies in the pass's box of its motion."""
+    body = [line for lines in arc_lines for line in lines]
+    if plane != 17:
+        head = head.replace("G17", f"G{plane}")
+        body = [in_plane(line, plane) for line in body]
+    path = check_against_full("\n".join([head, "#1 = 0.5", *body, "M30"]) + "\n", machine)
+    if not set(machine.modal) & {"G20", "G91"}:  # every arc is in the subset: taken (a decline proves nothing)
+        assert path is not None and path.arcs == len(arc_lines)
+
+
+#: A quarter of radius 1 (G20: 25.4 mm) whose end is ``off`` beyond the circle, under LinuxCNC's arc rule: in
+#: inches it allows 0.00283 inch (0.0718 mm), in mm 0.0283 mm (with 0.1 % of the radius up to 100 times that).
+OFF_CIRCLE = "{units} G90 G17 G54 F30\n#1 = 1\nG1 X{r} Y0\nG3 X0 Y{end} I-{r} J0\nM30\n"
+
+
+@pytest.mark.parametrize(("units", "r", "end", "taken"), [
+    ("G20", "1", "1.002", True),  # 0.0508 mm off: LinuxCNC's inch rule runs it
+    ("G21", "25.4", "25.4508", False),  # the same arc in mm: LinuxCNC refuses it (GC301 on the full path)
+    ("G20", "1", "1.00282", True),  # 0.00282 inch: just inside the inch rule's 0.0028284
+    ("G20", "1", "1.00284", False),  # just past it
+])
+def test_an_inch_arc_off_its_circle_follows_linuxcncs_inch_rule(units, r, end, taken):
+    from tests.gcode.test_double_pass import check_arc_in_box
+    from tests.gcode.test_rs274_double_arcs import _machine
+
+    text = OFF_CIRCLE.format(units=units, r=r, end=end)
+    machine = _machine()  # LinuxCNC's arc rule
+    run = interpret_text(text, machine)
+    if not taken:
+        with pytest.raises(Declined, match="arc tolerance"):
+            double_pass(text, machine, max_iterations=10, arc_tolerance="linuxcnc")
+        with pytest.raises(GcodeError, match="GC301"):
+            list(run.segments())
+        return
+    path = double_pass(text, machine, max_iterations=10, arc_tolerance="linuxcnc")
+    segments = list(run.segments())
+    assert run.status == "complete" and path.arcs == 1 and len(segments) == path.motions == 2
+    lo, hi = path.enclosure(2, 2)
+    check_arc_in_box(segments[1], lo, hi)

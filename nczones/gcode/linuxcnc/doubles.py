@@ -60,9 +60,9 @@ and their rows are the same in every mode (the full path emits every motion; whi
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
 program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
 chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  G20:
-straight moves, G90 and G91, and G20/G21 anywhere (:mod:`.double_units`); an arc in G20 declines, and so does a
-G43 or G49 in other units than the tool length applied (LinuxCNC 2.9 does not convert it: the full path's
-unknown).  Arcs: in
+straight moves, G90 and G91, G20/G21 anywhere, and I/J arcs (:mod:`.double_units`); an R arc in G20 declines,
+and so does a G43 or G49 in other units than the tool length applied (LinuxCNC 2.9 does not convert it: the full
+path's unknown).  Arcs: in
 the plane the program has set (G17, G18 or G19; the arcs of one plane a program, ``DoublePath.arc_axes``), on a
 machine with the plane's axes, with the plane's centre words (G17 I/J, G18 K/I, G19 J/K: G91.1, LinuxCNC's
 default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
@@ -131,11 +131,16 @@ from .double_arcs import (
     R_SCREEN,
     TURN,
     ij_screen,
+    inch_offb,
+    inch_rule,
     r_screen,
     radius_rule,
     refined,
 )
-from .double_units import TA, chain_start, inch_ends
+from .double_arcs import (
+    INCH as INCH_ARC,
+)
+from .double_units import INCH, TA, chain_start, inch_ends
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -1233,7 +1238,7 @@ class _Pass:
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
-                                 "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
+                                 "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "TA": TA}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
@@ -1359,14 +1364,22 @@ class _Pass:
         ia, ib = self.index[a], self.index[b]
         turn = a not in others and b not in others  # the end is the start: a whole turn
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
+        words: list[str] = []
         if "R" in others:
             call = f"R_ARC({ends}, {val('R')}, {self.offb!r})"
             kind = f"AW(({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}, {val('R')}, 0.0))"
+            if self.g20_text:
+                words = ["if st.inch: raise D('an R arc in G20')"]
         else:
-            call = f"IJ_ARC({ends}, {val(wa)}, {val(wb)}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
+            # the words in mm: in G20 scaled, with the offsets' bound and rule of double_arcs.inch_offb, inch_rule
+            words = [f"p = {val(wa)}; q = {val(wb)}; ob = {self.offb!r}; ru = {self.rule!r}; fl = 0.0"]
+            if self.g20_text:
+                words += ["if st.inch:", f"    p = p * {INCH!r}; q = q * {INCH!r}; ob = IOFFB(ob, p, q); "
+                          f"ru = {inch_rule(self.rule)!r}; fl = {float(INCH_ARC)}"]
+            call = f"IJ_ARC({ends}, p, q, mode == 2, ob, ru, {turn})"
             flag = IJ_SCREEN | (TURN if turn else 0)
-            kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val(wa)}, {val(wb)}))"
-        return [f"if st.arc_plane != {plane}: st.arc_in({plane})",
+            kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q))"
+        return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
                 # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
                 # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
                 # |t| < |t|: most arcs follow a motion that is not short)
@@ -1387,9 +1400,12 @@ class _Pass:
             return [f"raise D('an arc in G{plane} with a centre word other than {words[0]} and {words[1]}')"]
         ia, ib = self.index[a], self.index[b]
         moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
+        ends = [f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes]
+        if self.g20_text:  # in G20 the words' millimetres (double_units)
+            ends = ["if st.inch:", *(f"    pos[{i}] = x{i} = v[{k}] * {INCH!r} + off[{i}]" for k, i in axes),
+                    "else:", *(f"    {b}" for b in ends)]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]",
-                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *(f"pos[{i}] = x{i} = v[{k}] + off[{i}]" for k, i in axes),
+                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})", *ends,
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
@@ -1412,8 +1428,7 @@ class _Pass:
                 raise Declined("an arc on axes other than X, Y and Z")
             body += ["if mode < 2 or not st.feed > 0.0: "
                      "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
-                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')",
-                     "if st.inch: raise D('an arc in G20')"]
+                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
         body += ["if unset: raise D('a motion before the program sets units, distance mode and work offset')",
                  "off = st.off"]
         if arc:
