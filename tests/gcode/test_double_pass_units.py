@@ -261,3 +261,31 @@ def test_an_inch_arc_off_its_circle_follows_linuxcncs_inch_rule(units, r, end, t
     assert run.status == "complete" and path.arcs == 1 and len(segments) == path.motions == 2
     lo, hi = path.enclosure(2, 2)
     check_arc_in_box(segments[1], lo, hi)
+
+
+#: A half circle in inches about (1, 0.3) inch (G55: X +200, Y +10 mm on mill_g54_g55_h1_h2's offsets, here on
+#: box_5000's with the same G55) of radius 1.1 inch: its top, exactly 10 + 25.4 * 1.4 = 45.56 mm, is inside the
+#: sweep, not at an end; the rows and words are rounded (1.1 * 25.4, 0.3 * 25.4 are not doubles).
+ARC_TOP = Fraction(10) + INCH * Fraction(14, 10)
+ARC_PROGRAM = "G20 G90 G17 G55 F30\n#1 = 1\nG1 X[#1 * 2.1] Y0.3\nG3 X-0.1 Y0.3 I-1.1 J0\nG1 X0 Y0\nM30\n"
+
+
+def _arc_face_machine(face: Fraction):
+    decimal = f"{face.numerator * 10**30 // face.denominator}"
+    assert Fraction(int(decimal), 10**30) == face
+    decimal = f"{decimal[:-30]}.{decimal[-30:]}"
+    text = machine_text("box_5000", extra='[offsets]\nG55 = { X = "200", Y = "10", Z = "0" }\n')
+    return parse_machine(text.replace('Y = "5000", Z = "5000" }', f'Y = "{decimal}", Z = "5000" }}'))
+
+
+@pytest.mark.parametrize(("face", "verdict", "by_pass"), [
+    (ARC_TOP, Verdict.SAFE, False),  # the arc touches the face: the full path proves it
+    (ARC_TOP - Fraction(1, 10**13), Verdict.UNSAFE, False),  # the arc crosses it
+    (ARC_TOP + Fraction(1, 10**13), Verdict.SAFE, False),  # within the arc box's error: the full path's
+    (ARC_TOP + Fraction(1, 10**9), Verdict.SAFE, True),  # clear of it: the pass proves it
+])
+def test_a_face_at_an_inch_arcs_top_is_decided_alike(monkeypatch, face, verdict, by_pass):
+    with_pass, without = both_ways(ARC_PROGRAM, _arc_face_machine(face), monkeypatch)
+    same_outcome(with_pass, without)
+    assert with_pass.verdict is verdict
+    assert ("double_pass_boxes" in dict(with_pass.stats)) is by_pass
