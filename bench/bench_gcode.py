@@ -35,7 +35,7 @@ The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_progr
 :func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
 ``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost"); the pass
 takes :func:`g18_program`'s arcs since plane38 on a mill (a lathe, ``machine_type``, it still declines), and
-:func:`g20_program`'s straight moves in inches since units39 (and I/J arcs; an R arc in G20 declines).
+:func:`g20_program`'s straight moves in inches since units39 (and its arcs, I/J and R).
 """
 
 from __future__ import annotations

@@ -382,7 +382,8 @@ DECLINED = {
     "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J, K or R"),
     "an arc in G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "arc in G91"),
     "an arc after G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG1 X1\nG90 Y2\nG2 X1 Y1 R5\n", "arc in G91"),
-    "an arc in inches": ("G20 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "arc in G20"),  # (G20: test_double_pass_units)
+    # (G20: tests/gcode/test_double_pass_units.py)
+    "a half circle by R in inches": ("G20 G90 G17 G54 F100\n#1 = 1\nG2 X2 R1\n", "about 2|R|"),
     # spindle and coolant M codes, one to a block, and S are followed (issue 36); two in a block are not
     "two spindle and coolant codes": ("G21 G90 G54 F100\n#1 = 1\nM3 M8\nG1 X1\n", "M code"),
     # the full path's GC209

@@ -108,7 +108,7 @@ def test_the_rows_are_the_words_times_25_4_plus_the_offsets():
 
 
 DECLINED = {
-    "an arc in inches": ("G20 G90 G17 G54 F30\n#1 = 1\nG1 X1\nG2 X2 Y1 R1\nM30\n", "arc in G20"),
+    "a half circle by R in inches": ("G20 G90 G17 G54 F30\n#1 = 1\nG1 X1\nG2 X3 R1\nM30\n", "about 2|R|"),
     "G43 after a units change": ("G21 G90 G54 F30\n#1 = 1\nG43 H1\nG1 Z1\nG20\nG43 H2\nG1 Z1\nM30\n",
                                  "after G20/G21"),
     "G49 after a units change": ("G20 G90 G54 F30\n#1 = 1\nG43 H1\nG1 Z1\nG21\nG49\nG1 Z1\nM30\n", "after G20/G21"),
@@ -201,17 +201,25 @@ def test_a_face_at_an_inch_motions_end_is_decided_alike(monkeypatch, face, verdi
 @st.composite
 def inch_arcs(draw) -> list[str]:
     """A move to a start, then an I/J arc from it in inches (radii 0.01 to 120 inch, sweeps away from 0 and a
-    whole turn, the end written to 6 places: within 1e-6 inch of the circle), sometimes a helix."""
+    whole turn, the end written to 6 places: within 1e-6 inch of the circle), or an R arc of its chord (either
+    sign, not a half circle: the pass declines those, ``DECLINED``), sometimes a helix."""
     import math
 
     sx, sy = (draw(st.integers(-4000, 4000)) / 40 for _ in range(2))
     radius = draw(st.sampled_from([0.01, 0.5, 1.0, 7.25, 120.0]))
     a0 = draw(st.sampled_from([0.0, math.pi / 2, 1.0, -2.5, math.pi / 4]))
     sweep = draw(st.sampled_from([0.3, math.pi / 2, math.pi, 2.0, -math.pi / 2, 3 * math.pi / 2, -4.0]))
+    r_word = draw(st.booleans())
+    if r_word and sweep == math.pi:
+        sweep = 2.5  # (a half circle by R is the full path's)
     i, j = round(-radius * math.cos(a0), 6), round(-radius * math.sin(a0), 6)
     ex, ey = sx + i + radius * math.cos(a0 + sweep), sy + j + radius * math.sin(a0 + sweep)
     code = "G2" if sweep < 0 else "G3"
     helix = draw(st.sampled_from(["", "", " Z[#1 * 2]", " Z-0.1"]))
+    if r_word:  # R: the short way (R > 0) when the sweep is below a half turn
+        long_way = abs(sweep) > math.pi
+        r = draw(st.sampled_from([f"{radius:.6f}", f"{radius * (1 + 1e-7):.9f}"]))
+        return [f"G1 X{sx:.3f} Y{sy:.3f}", f"{code} X{ex:.6f} Y{ey:.6f} R{'-' if long_way else ''}{r}{helix}"]
     return [f"G1 X{sx:.3f} Y{sy:.3f}", f"{code} X{ex:.6f} Y{ey:.6f} I{i:.6f} J{j:.6f}{helix}"]
 
 
@@ -221,8 +229,8 @@ def inch_arcs(draw) -> list[str]:
        st.sampled_from(["G20 G90 G17 G54 F30", "G20 G90 G17 G55 G43 H1 F30", "G21 G90 G17 G54 F30\nG1 X1\nG20"]),
        st.sampled_from([17, 17, 18, 19]), machines(tools=True))
 def test_inch_arcs_are_enclosed_by_the_full_interpreter(arc_lines, head, plane, machine):
-    """I/J arcs in inches (:func:`inch_arcs`; an R arc in G20 declines), in G17, G18 or G19: every arc of the
-    full path (its ends, its points at both radii and its extremes) lies in the pass's box of its motion."""
+    """I/J and R arcs in inches (:func:`inch_arcs`), in G17, G18 or G19: every arc of the full path (its ends, its
+    points at both radii and its extremes) lies in the pass's box of its motion."""
     body = [line for lines in arc_lines for line in lines]
     if plane != 17:
         head = head.replace("G17", f"G{plane}")

@@ -48,13 +48,13 @@ def test_the_pass_is_rs274s_motion_in_inches(name, tmp_path):
             assert abs(Fraction(path.columns[i][k]) - move.end[i]) <= move.tol + Fraction(1, 10**9), (k, move)
 
 
-#: Seeds of I/J arc programs in G20 (``ArcWriter``'s I/J kinds, every position and radius in inches).
+#: Seeds of arc programs in G20 (``ArcWriter``'s I/J and R kinds, every position and radius in inches).
 ARC_SEEDS = (0, 1, 2)
 
 
 @pytest.mark.parametrize("seed", ARC_SEEDS)
 def test_the_pass_holds_rs274s_inch_arcs(seed, tmp_path):
-    """An I/J arc program in G20 (rs274's work offsets and tool lengths, LinuxCNC's arc rule, in inches): the full
+    """An arc program (I/J and R) in G20 (rs274's work offsets and tool lengths, LinuxCNC's arc rule, in inches): the full
     path matches rs274, the pass takes it, and rs274's arcs lie in the pass's quick and refined boxes
     (``test_rs274_double_arcs.check_pass_arcs``)."""
     import random
@@ -62,7 +62,7 @@ def test_the_pass_holds_rs274s_inch_arcs(seed, tmp_path):
     from tests.gcode.rs274_arc_programs import ArcWriter
     from tests.gcode.test_rs274_double_arcs import _machine, check_pass_arcs
 
-    writer = ArcWriter(random.Random(seed), menu=("ij_circle", "ij_turn"))
+    writer = ArcWriter(random.Random(seed), menu=("ij_circle", "ij_turn", "r_pyth", "r_big", "r_near_half"))
     writer.unit = Fraction(254, 10)
     text = writer.program(lines=120).replace("G21 ", "G20 ", 1)
     assert text.startswith("G20 ")

@@ -59,7 +59,7 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined"]
+__all__ = ["R_INCH_REL", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined"]
 
 _U = 2.0**-52
 _TAU = 2.0 * math.pi
@@ -100,6 +100,12 @@ def _linuxcnc_accepts(diff: float, big: float, a: float = _A) -> bool:
     25.4 in doubles (the margin's ``1e-9`` of the radius and ``1e-9`` mm are far above those roundings)."""
     return diff < a or (diff < 100 * a and diff < 0.001 * big)
 
+
+#: :func:`r_arc`'s ``rel`` for an R arc in G20: its R is ``fl(d * fl(25.4))``, within ``2.52 u |R'|`` (plus ``28 eta``,
+#: far below what the declines of a chord about 0 leave) of the full path's exact ``25.4 w`` (:mod:`.double_units`),
+#: so ``|R**2 - R'**2| <= (5.04 u + 7 u**2) R'**2``, below ``8 u R'**2 = 2**-50 R'**2``.  :func:`r_screen`'s box
+#: takes ``|R| <= |R'| (1 + 2.52 u)``: its ``2 |R'|`` then moves by ``5.04 u |R'|``, far below its ``err``.
+R_INCH_REL = 2.0**-50
 
 #: :func:`radius_rule`'s LinuxCNC rule for an arc in G20 (``inch_rule``).
 INCH_RULE = -2.0
@@ -198,8 +204,10 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
     return (sx, sy, ex, ey, cx, cy, -i, -j, wx, wy, big, diff + err, err, cw)
 
 
-def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float) -> Any:
+def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float, rel: float = 2.0**-51) -> Any:
     """The box ``(xlo, xhi, ylo, yhi)`` holding the full path's R arc, or a ``str``: why the pass declines.
+    ``rel`` bounds ``|R**2 - R'**2| / R'**2``: ``2**-51`` for a word's double (half an ulp), :data:`R_INCH_REL` for
+    a G20 word's millimetres.
 
     >>> [round(v, 9) + 0.0 for v in r_arc(1.0, 0.0, 0.0, 1.0, 1.0, False, 0.0)]  # ccw, R > 0: the short way
     [0.0, 1.0, 0.0, 1.0]
@@ -217,9 +225,9 @@ def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: 
     ed = 2 * rho + length * _U  # |d - d'| per component
     dd = dx * dx + dy * dy
     rr = r * r
-    # X = R**2 - D/4: |D - D'| <= 2 (|dx'| + |dy'|) ed + 2 ed**2 + 3 D' 2**-53, |R**2 - R'**2| <= R'**2 2**-51,
+    # X = R**2 - D/4: |D - D'| <= 2 (|dx'| + |dy'|) ed + 2 ed**2 + 3 D' 2**-53, |R**2 - R'**2| <= R'**2 rel,
     # and the rounding of X' itself
-    e_x = rr * 2.0**-51 + ((abs(dx) + abs(dy)) * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U
+    e_x = rr * rel + ((abs(dx) + abs(dy)) * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U
     x = rr - dd / 4
     if not (length > 4 * ed and x > _HALF * rr and x > 8 * e_x):
         return "an R arc of a chord about 0 or about 2|R| or longer"
@@ -233,7 +241,7 @@ def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: 
     return _box(sx, sy, ex, ey, cx, cy, sx - cx, sy - cy, ex - cx, ey - cy, ar, err, err, cw)
 
 
-def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float) -> Any:
+def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float, rel: float = 2.0**-51) -> Any:
     """A box holding the full path's R arc, with no square root (quicker than :func:`r_arc`'s), or a ``str``:
     why the pass declines; it accepts only arcs :func:`r_arc` accepts.  :func:`refined` narrows it to
     :func:`r_arc`'s box when a proof needs it.
@@ -275,7 +283,7 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float) 
     x = rr - dd / 4
     # r_arc's e_x, with this ed
     if not (dd > 17 * ed * ed and x > _HALF * rr
-            and x > 8 * (rr * 2.0**-51 + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U)):
+            and x > 8 * (rr * rel + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U)):
         return "an R arc of a chord about 0 or about 2|R| or longer"
     err = (64.0 * m + 0.0625) * _U
     if r > 0.0:
@@ -306,7 +314,7 @@ def refined(flag: int, sx: float, sy: float, ex: float, ey: float, p: float, q: 
     ``p``, ``q`` are millimetres, :func:`inch_offb`)."""
     cw = bool(flag & CW)
     if flag & 3 == R_SCREEN:
-        return r_arc(sx, sy, ex, ey, p, cw, offb)
+        return r_arc(sx, sy, ex, ey, p, cw, offb, R_INCH_REL if flag & INCH else 2.0**-51)
     if flag & INCH:
         offb, tol = inch_offb(offb, p, q), inch_rule(tol)
     return ij_arc(sx, sy, ex, ey, p, q, cw, offb, tol, bool(flag & TURN))

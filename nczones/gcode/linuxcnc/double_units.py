@@ -26,8 +26,8 @@ the rounding of ``s``: ``|s - W| <= 2.52 u |s| + 28 eta`` (``25.4 |d| <= |s| (1 
 bound: they hold the G20 rows as they do the G21 ones.  An I/J arc *in* G20 has scaled words, ``2.52 u |s|``
 from the exact ones where the arcs' sums take ``u |s|``: it is computed with a larger offsets' bound
 (:func:`~.double_arcs.inch_offb`, which says why that covers them) and LinuxCNC's I/J rule in inches
-(:func:`~.double_arcs.inch_rule`); an R arc in G20 declines (:func:`~.double_arcs.r_arc` takes ``R**2`` within
-``R'**2 2**-51``, which a scaled R is not).
+(:func:`~.double_arcs.inch_rule`); an R arc in G20 with ``R**2`` within ``R'**2 2**-50`` where a word's is within
+``R'**2 2**-51`` (:data:`~.double_arcs.R_INCH_REL`, which says why).
 
 *G91*: with ``|p - M| <= e`` (``M`` the full path's machine position), ``|x - (M + W)| <= e + |s - W| + u |x|
 + eta <= e + 2.52 u |s| + u |x| + 29 eta``; :func:`inch_ends` adds ``(3 |s| + |x|) 2**-52 + 2**-1000`` rounded

@@ -60,9 +60,8 @@ and their rows are the same in every mode (the full path emits every motion; whi
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
 program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
 chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  G20:
-straight moves, G90 and G91, G20/G21 anywhere, and I/J arcs (:mod:`.double_units`); an R arc in G20 declines,
-and so does a G43 or G49 in other units than the tool length applied (LinuxCNC 2.9 does not convert it: the full
-path's unknown).  Arcs: in
+straight moves, G90 and G91, G20/G21 anywhere, and arcs (I/J and R, :mod:`.double_units`); a G43 or G49 in other
+units than the tool length applied declines (LinuxCNC 2.9 does not convert it: the full path's unknown).  Arcs: in
 the plane the program has set (G17, G18 or G19; the arcs of one plane a program, ``DoublePath.arc_axes``), on a
 machine with the plane's axes, with the plane's centre words (G17 I/J, G18 K/I, G19 J/K: G91.1, LinuxCNC's
 default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
@@ -128,6 +127,7 @@ from .double_arcs import (
     CW,
     EXACT,
     IJ_SCREEN,
+    R_INCH_REL,
     R_SCREEN,
     TURN,
     ij_screen,
@@ -137,9 +137,7 @@ from .double_arcs import (
     radius_rule,
     refined,
 )
-from .double_arcs import (
-    INCH as INCH_ARC,
-)
+from .double_arcs import INCH as INCH_ARC
 from .double_units import INCH, TA, chain_start, inch_ends
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
@@ -1366,10 +1364,12 @@ class _Pass:
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
         words: list[str] = []
         if "R" in others:
-            call = f"R_ARC({ends}, {val('R')}, {self.offb!r})"
-            kind = f"AW(({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}, {val('R')}, 0.0))"
+            # R in mm: in G20 scaled, with double_arcs.R_INCH_REL for its error
+            words = [f"p = {val('R')}; rel = {2.0**-51!r}; fl = 0.0"]
             if self.g20_text:
-                words = ["if st.inch: raise D('an R arc in G20')"]
+                words += ["if st.inch:", f"    p = p * {INCH!r}; rel = {R_INCH_REL!r}; fl = {float(INCH_ARC)}"]
+            call = f"R_ARC({ends}, p, {self.offb!r}, rel)"
+            kind = f"AW((({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}) + fl, p, 0.0))"
         else:
             # the words in mm: in G20 scaled, with the offsets' bound and rule of double_arcs.inch_offb, inch_rule
             words = [f"p = {val(wa)}; q = {val(wb)}; ob = {self.offb!r}; ru = {self.rule!r}; fl = 0.0"]
