@@ -56,11 +56,11 @@ ARC_SEEDS = (0, 1, 2)
 def test_the_pass_holds_rs274s_inch_arcs(seed, tmp_path):
     """An arc program (I/J and R) in G20 (rs274's work offsets and tool lengths, LinuxCNC's arc rule, in inches): the full
     path matches rs274, the pass takes it, and rs274's arcs lie in the pass's quick and refined boxes
-    (``test_rs274_double_arcs.check_pass_arcs``)."""
+    (``test_rs274_double_arcs.check_pass_arcs``), in windows too."""
     import random
 
     from tests.gcode.rs274_arc_programs import ArcWriter
-    from tests.gcode.test_rs274_double_arcs import _machine, check_pass_arcs
+    from tests.gcode.test_rs274_double_arcs import _machine, check_pass_arcs, check_windows
 
     writer = ArcWriter(random.Random(seed), menu=("ij_circle", "ij_turn", "r_pyth", "r_big", "r_near_half"))
     writer.unit = Fraction(254, 10)
@@ -72,4 +72,5 @@ def test_the_pass_holds_rs274s_inch_arcs(seed, tmp_path):
     outcome = compare(text, machine, moves, error)
     assert outcome.status == "match", outcome
     path = double_pass(text, machine, max_iterations=1000, arc_tolerance="linuxcnc")
+    check_windows(text, machine, path)  # in windows of 97 motions: the same rows and quick boxes
     assert check_pass_arcs(path, moves) > 10
