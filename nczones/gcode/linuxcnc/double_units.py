@@ -40,7 +40,8 @@ The tool length: LinuxCNC 2.9 does not convert an applied tool length at a units
 ``_tool_length`` and ``tool_length_units_stale``: unknown for a G43/G49 after G20/G21 while a length is
 applied); the pass declines a G43 or G49 made in other units than the length applied (:meth:`~nczones.gcode.
 linuxcnc.doubles._Pass.tool`), whatever that length.  ``tests/gcode/test_double_pass_units.py`` holds the
-pass to the full path on G20 programs (and faces at ``25.4 x`` and one ulp either side of it).
+pass to the full path on G20 programs (and faces at ``25.4 x`` and ``5e-16`` mm either side of it, where the
+controller's double lies 1.08 ulp short of the exact end).
 """
 
 from __future__ import annotations
