@@ -34,8 +34,8 @@ modules are imported; their import time is printed on its own), for
 The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_program`, :func:`comp_program` and
 :func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
 ``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost"); the pass
-takes :func:`g18_program`'s arcs since plane38, and lathes since lathe39 (:func:`lathe_program`: G7 diameters, G18
-arcs by K/I and R).
+takes :func:`g18_program`'s arcs since plane38, lathes since lathe39 (:func:`lathe_program`: G7 diameters, G18
+arcs by K/I and R), and :func:`g20_program`'s straight moves in inches since units39 (and its arcs, I/J and R).
 """
 
 from __future__ import annotations
@@ -240,7 +240,7 @@ def g91_program(n: int, seed: int = 23) -> str:
 
 
 def g20_program(n: int, seed: int = 41) -> str:
-    """:func:`expr_program` in inches (G20, which the double pass declines), its moves within 4 inches."""
+    """:func:`expr_program` in inches (G20: the double pass takes its straight moves), its moves within 4 inches."""
     rnd = random.Random(seed)
     out = ["G20 G90 G17 G54 F30", "#1 = 0", "#2 = 0"]
     while len(out) < n - 1:

@@ -412,7 +412,8 @@ DECLINED = {
     "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J, K or R"),
     "an arc in G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "arc in G91"),
     "an arc after G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG1 X1\nG90 Y2\nG2 X1 Y1 R5\n", "arc in G91"),
-    "inches": ("G20 G90 G54 F100\n#1 = 1\nG1 X1\n", "G20"),
+    # (G20: tests/gcode/test_double_pass_units.py)
+    "a half circle by R in inches": ("G20 G90 G17 G54 F100\n#1 = 1\nG2 X2 R1\n", "about 2|R|"),
     # spindle and coolant M codes, one to a block, and S are followed (issue 36); two in a block are not
     "two spindle and coolant codes": ("G21 G90 G54 F100\n#1 = 1\nM3 M8\nG1 X1\n", "M code"),
     # the full path's GC209
@@ -424,7 +425,7 @@ DECLINED = {
     "G4 without P": ("G21 G90 G54 F100\n#1 = 1\nG4\nG1 X1\n", "G4 without P"),
     "G4 with an axis word": ("G21 G90 G54 F100\n#1 = 1\nG4 P1 X1\n", "G4 with axis words"),
     "a dwell of no time": ("G21 G90 G54 F100\n#1 = 0\nG4 P#1\nG1 X1\n", "not positive"),
-    "G64 P and Q": ("G21 G90 G54 F100\n#1 = 1\nG64 P0.01 Q0.01\nG1 X1\n", "code 0.01"),
+    "G64 P and Q": ("G21 G90 G54 F100\n#1 = 1\nG64 P0.01 Q0.01\nG1 X1\n", "Q"),
     "G61.2": ("G21 G90 G54 F100\n#1 = 1\nG61.2\nG1 X1\n", "code"),
     "state read": ("G21 G90 G54 F100\n#1 = #5221\nG1 X#1\n", "parameter"),
     "a global name": ("G21 G90 G54 F100\n#<_a> = 1\nG1 X#<_a>\n", "global"),

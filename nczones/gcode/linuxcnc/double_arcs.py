@@ -59,7 +59,7 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined"]
+__all__ = ["R_INCH_REL", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined"]
 
 _U = 2.0**-52
 _TAU = 2.0 * math.pi
@@ -68,8 +68,10 @@ _SLACK = 1e-12
 #: An R arc is declined unless ``X' > _HALF * R'**2`` (its chord is clearly shorter than 2|R|).
 _HALF = 1e-9
 _DOWN, _UP = -math.inf, math.inf
-#: LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE in mm (2 * 0.01 * sqrt 2).
+#: LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE in mm (2 * 0.01 * sqrt 2), and its inch one (2 * 0.001 * sqrt 2 inch) in
+#: mm: an I/J arc in G20 is compared in inches (``interpreter.linuxcnc_rejects_arc``).
 _A = 2 * 0.01 * math.sqrt(2)
+_A_INCH = 25.4 * 2 * 0.001 * math.sqrt(2)
 #: LinuxCNC refuses an I/J radius below 0.00005 inch ("Zero-radius arc", ``interpreter.LINUXCNC_ZERO_RADIUS_SQ``):
 #: the pass takes radii clearly above it (the radii's doubles are within ``err / 2`` of the exact ones).
 _ZERO_RADIUS = 0.00127 * (1 + 1e-6)
@@ -91,11 +93,42 @@ def radius_rule(tolerance: Fraction | str) -> float:
     return t
 
 
-def _linuxcnc_accepts(diff: float, big: float) -> bool:
-    """``interpreter.linuxcnc_rejects_arc`` is False, by a margin (``diff`` already holds one), in mm (the pass
-    runs G21 only): refused when ``|r1 - r0| > 100 A``, or ``> A`` and ``> 0.001`` of the larger radius,
-    ``A = 2 * 0.01 * sqrt 2``."""
-    return diff < _A or (diff < 100 * _A and diff < 0.001 * big)
+def _linuxcnc_accepts(diff: float, big: float, a: float = _A) -> bool:
+    """``interpreter.linuxcnc_rejects_arc`` is False, by a margin (``diff`` already holds one), in mm: refused
+    when ``|r1 - r0| > 100 A``, or ``> A`` and ``> 0.001`` of the larger radius, ``A = 2 * 0.01 * sqrt 2`` mm in
+    G21, ``a = 2 * 0.001 * sqrt 2`` inch (:data:`_A_INCH` mm) in G20, where LinuxCNC compares the radii divided by
+    25.4 in doubles (the margin's ``1e-9`` of the radius and ``1e-9`` mm are far above those roundings)."""
+    return diff < a or (diff < 100 * a and diff < 0.001 * big)
+
+
+#: :func:`r_arc`'s ``rel`` for an R arc in G20: its R is ``fl(d * fl(25.4))``, within ``2.52 u |R'|`` (plus ``28 eta``,
+#: far below what the declines of a chord about 0 leave) of the full path's exact ``25.4 w`` (:mod:`.double_units`),
+#: so ``|R**2 - R'**2| <= (5.04 u + 7 u**2) R'**2``, below ``8 u R'**2 = 2**-50 R'**2``.  :func:`r_screen`'s box
+#: takes ``|R| <= |R'| (1 + 2.52 u)``: its ``2 |R'|`` then moves by ``5.04 u |R'|``, far below its ``err``.
+R_INCH_REL = 2.0**-50
+
+#: :func:`radius_rule`'s LinuxCNC rule for an arc in G20 (``inch_rule``).
+INCH_RULE = -2.0
+
+
+def inch_rule(rule: float) -> float:
+    """The rule :func:`ij_check` takes for an I/J arc in G20: LinuxCNC's in inches (:data:`INCH_RULE`), or the
+    same fixed tolerance in mm (the full path's ``sqrt_diff_exceeds`` is in mm whatever the units)."""
+    return INCH_RULE if rule < 0 else rule
+
+
+def inch_offb(offb: float, i: float, j: float) -> float:
+    """The offsets' bound an I/J arc in G20 is computed with: ``offb + 2 (|i| + |j|)`` rounded up.
+
+    The words ``i``, ``j`` of an arc in G20 are ``fl(d * fl(25.4))``: within ``2.52 u |i| + 28 eta`` of the full
+    path's exact ``25.4 w`` (:mod:`.double_units`), where :func:`ij_check`'s sums take half an ulp, ``u |i|``.  Each
+    of those sums counts a word's error at most once per ``m 2**-52`` it allows (``|C - C'| <= rho + m 2**-52``,
+    the radii within ``3 rho + 6 m 2**-52``), and every quantity moves by at most the words' error (``C = S + (I,
+    J)``, the radii are 1-Lipschitz in the centre): with ``m`` grown by ``2 (|i| + |j|)`` each allowance grows by
+    ``4 u (|i| + |j|)``, above the extra ``1.52 u (|i| + |j|)``; the ``28 eta`` are far below ``err``'s
+    ``2**-56``.  ``err`` grows with ``m``: the box is wider and the declines (zero radius, the start's ray, the
+    tolerance) take more, which stays sound."""
+    return math.nextafter(offb + 2.0 * (abs(i) + abs(j)), _UP)
 
 
 def ij_arc(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,
@@ -166,13 +199,15 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
             return "an arc whose end may lie on the ray from the centre through its start"
     diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
     margin = diff + big * 1e-9 + 1e-9 + 2 * err
-    if not (margin < tol if tol >= 0 else _linuxcnc_accepts(margin, big - margin)):
+    if not (margin < tol if tol >= 0 else _linuxcnc_accepts(margin, big - margin, _A if tol == -1.0 else _A_INCH)):
         return "an arc whose end is near or past the arc tolerance"
     return (sx, sy, ex, ey, cx, cy, -i, -j, wx, wy, big, diff + err, err, cw)
 
 
-def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float) -> Any:
+def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float, rel: float = 2.0**-51) -> Any:
     """The box ``(xlo, xhi, ylo, yhi)`` holding the full path's R arc, or a ``str``: why the pass declines.
+    ``rel`` bounds ``|R**2 - R'**2| / R'**2``: ``2**-51`` for a word's double (half an ulp), :data:`R_INCH_REL` for
+    a G20 word's millimetres.
 
     >>> [round(v, 9) + 0.0 for v in r_arc(1.0, 0.0, 0.0, 1.0, 1.0, False, 0.0)]  # ccw, R > 0: the short way
     [0.0, 1.0, 0.0, 1.0]
@@ -190,9 +225,9 @@ def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: 
     ed = 2 * rho + length * _U  # |d - d'| per component
     dd = dx * dx + dy * dy
     rr = r * r
-    # X = R**2 - D/4: |D - D'| <= 2 (|dx'| + |dy'|) ed + 2 ed**2 + 3 D' 2**-53, |R**2 - R'**2| <= R'**2 2**-51,
+    # X = R**2 - D/4: |D - D'| <= 2 (|dx'| + |dy'|) ed + 2 ed**2 + 3 D' 2**-53, |R**2 - R'**2| <= R'**2 rel,
     # and the rounding of X' itself
-    e_x = rr * 2.0**-51 + ((abs(dx) + abs(dy)) * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U
+    e_x = rr * rel + ((abs(dx) + abs(dy)) * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U
     x = rr - dd / 4
     if not (length > 4 * ed and x > _HALF * rr and x > 8 * e_x):
         return "an R arc of a chord about 0 or about 2|R| or longer"
@@ -206,7 +241,7 @@ def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: 
     return _box(sx, sy, ex, ey, cx, cy, sx - cx, sy - cy, ex - cx, ey - cy, ar, err, err, cw)
 
 
-def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float) -> Any:
+def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float, rel: float = 2.0**-51) -> Any:
     """A box holding the full path's R arc, with no square root (quicker than :func:`r_arc`'s), or a ``str``:
     why the pass declines; it accepts only arcs :func:`r_arc` accepts.  :func:`refined` narrows it to
     :func:`r_arc`'s box when a proof needs it.
@@ -248,7 +283,7 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float) 
     x = rr - dd / 4
     # r_arc's e_x, with this ed
     if not (dd > 17 * ed * ed and x > _HALF * rr
-            and x > 8 * (rr * 2.0**-51 + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U)):
+            and x > 8 * (rr * rel + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U)):
         return "an R arc of a chord about 0 or about 2|R| or longer"
     err = (64.0 * m + 0.0625) * _U
     if r > 0.0:
@@ -267,17 +302,21 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float) 
 
 
 #: Arc kinds :func:`refined` reads (``DoublePath.arc_more``'s flags): the box is already :func:`r_arc`'s or
-#: :func:`ij_arc`'s, an R arc's screen, an I/J arc's; plus these bits: clockwise, a whole turn.
-EXACT, R_SCREEN, IJ_SCREEN, CW, TURN = 0, 1, 2, 4, 8
+#: :func:`ij_arc`'s, an R arc's screen, an I/J arc's; plus these bits: clockwise, a whole turn, in G20
+#: (:func:`inch_offb`, :func:`inch_rule`).
+EXACT, R_SCREEN, IJ_SCREEN, CW, TURN, INCH = 0, 1, 2, 4, 8, 16
 
 
 def refined(flag: int, sx: float, sy: float, ex: float, ey: float, p: float, q: float, offb: float,
             tol: float) -> Any:
     """The box of :func:`r_arc` (``flag & 3 == R_SCREEN``, radius ``p``) or :func:`ij_arc` (``I = p``,
-    ``J = q``) for an arc whose screen was kept, or its ``str``."""
+    ``J = q``) for an arc whose screen was kept, or its ``str`` (``flag & INCH``: an I/J arc in G20, whose words
+    ``p``, ``q`` are millimetres, :func:`inch_offb`)."""
     cw = bool(flag & CW)
     if flag & 3 == R_SCREEN:
-        return r_arc(sx, sy, ex, ey, p, cw, offb)
+        return r_arc(sx, sy, ex, ey, p, cw, offb, R_INCH_REL if flag & INCH else 2.0**-51)
+    if flag & INCH:
+        offb, tol = inch_offb(offb, p, q), inch_rule(tol)
     return ij_arc(sx, sy, ex, ey, p, q, cw, offb, tol, bool(flag & TURN))
 
 

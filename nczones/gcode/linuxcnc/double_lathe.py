@@ -90,6 +90,8 @@ def diameter_body(st: Any, groups: dict[str, int]) -> list[str] | str:
     if code == 7 and not st.diameter:
         if st.x_compiled:
             return "G7 after a line with an X word (on a machine that is not a lathe)"
+        if getattr(st, "g20_compiled", False):  # the inch code does not halve (doubles._Pass.units)
+            return "G7 after a G20 (on a machine that is not a lathe)"
         st.diameter = True
     return [f"st.half = {_HALF[code]!r}"]
 

@@ -34,7 +34,10 @@ entry to the tool axis's work offset, exactly, before the one rounding of ``d + 
 bound's offset term covers the largest work offset plus the largest length.  A G91 move adds the word's double to
 the row before (the full path adds the word's exact value to the machine position: the offsets cancel): its
 error grows with each step of the chain, and :meth:`_Pass._straight_ends` bounds it (``DoublePath.inc_bound``, the
-largest of a window's rows, added to the widening); a G90 move of the axis ends the chain.
+largest of a window's rows, added to the widening); a G90 move of the axis ends the chain.  In G20 a word's
+millimetres are ``fl(d * fl(25.4))``, two roundings more: a G90 row is within ``3.6 (|m'| + |offset|) 2**-53`` of the
+full path's exact ``25.4 w + offset``, still inside the widening, and a G91 step adds its own larger term to the chain
+(:mod:`.double_units`, which derives both).
 
 The subset
 ----------
@@ -45,7 +48,7 @@ call in the flow (not recursive, at most :data:`MAX_CALLS` open: the caller's #1
 parameters saved, #1..#n set from the arguments, the body run with its own local names, the caller's
 restored at the endsub, as the full path's
 ``Parameters.push_scope``/``pop_scope``) in a program that does not name ``#<_value>``; G0 G1 G2 G3 G4 G17
-G18 G19 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G91.1 (written out: the
+G18 G19 G20 G21 G40 G43 G49 G54-G59 G61 G61.1 G64 G80 G90 G91 G91.1 (written out: the
 full path's and LinuxCNC's start-up arc-centre mode, which the pass assumes) G94 with literal codes, F, X Y Z words of the machine's axes, N, S (not negative), one of M3 M4 M5
 M7 M8 M9 a block, and M2/M30 alone to end; plain comments.  A tool: ``T<n>``, ``M6`` and ``M61 Q<n>`` with
 literal numbers (:meth:`_Pass._tool_change`: nothing the pass computes reads the tool in the spindle; M6 on a
@@ -57,7 +60,10 @@ included), and ``G64 P<p>`` without Q (p above 0: its motions blend within ``2p`
 and their rows are the same in every mode (the full path emits every motion; which ones LinuxCNC drops in a
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
 program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
-chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  Arcs: in
+chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  G20:
+straight moves, G90 and G91, G20/G21 anywhere, and arcs (I/J and R, :mod:`.double_units`); a G43 or G49 in other
+units than the tool length applied declines (LinuxCNC 2.9 does not convert it: the full path's unknown), and so
+does G20 where X may be a diameter (a lathe, or after G7).  Arcs: in
 the plane the program has set, or the machine file's (G17, G18 or G19; the arcs of one plane a program,
 ``DoublePath.arc_axes``), on a
 machine with the plane's axes, with the plane's centre words (G17 I/J, G18 K/I, G19 J/K: G91.1, LinuxCNC's
@@ -71,7 +77,7 @@ an X word's double halved in G7 (``st.half``; a G91 increment and an arc's X end
 machine with X diameters starting in G7; G96 with S (D its speed limit) and G97, which move nothing; a lathe
 with tool solids or other diameter axes, G70-G72, G76, G33, G95, G96 without S, D without G96 and, on a machine
 that is not a lathe, a G7 after a line with an X word decline.  Everything else declines:
-other codes and words, G64 with Q or with P not above 0, G20 (and a machine that starts in it or in G91), block delete, magic comments,
+other codes and words, G64 with Q or with P not above 0, a machine that starts in G20 or G91, block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error; an arc in a second plane, with P or the centre
@@ -139,13 +145,17 @@ from .double_arcs import (
     CW,
     EXACT,
     IJ_SCREEN,
+    R_INCH_REL,
     R_SCREEN,
     TURN,
     ij_screen,
+    inch_offb,
+    inch_rule,
     r_screen,
     radius_rule,
     refined,
 )
+from .double_arcs import INCH as INCH_ARC
 from .double_cycles import (
     CYCLE_CODES,
     Cycles,
@@ -164,6 +174,7 @@ from .double_lathe import (
     lathe_reason,
     spindle_mode,
 )
+from .double_units import INCH, TA, chain_start, inch_ends
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -465,6 +476,8 @@ class _Pass:
         self.src = _Lines(text, crlf="\r" in text)
         #: the text may write G91 (a "91" in it): only then do straight moves test for G91 (_straight_ends)
         self.g91_text = "91" in text
+        #: the text may write G20 (a "20" in it): only then do straight moves test for it (:mod:`.double_units`)
+        self.g20_text = "20" in text
         #: layout -> (its shape's step, the layout's cutter): ``step(cut(line))`` runs a line of it (nothing is
         #: compiled per layout: CAM output with arcs has hundreds of layouts of a few dozen shapes)
         self.by_layout: dict[bytes, tuple[Any, Any]] = {}
@@ -474,6 +487,7 @@ class _Pass:
         #: G7/G8: an X word's factor now, X words compiled with it, one compiled without it (.double_lathe)
         self.half, self.diameter = diameter_start(machine)
         self.x_axis, self.x_compiled = self.index.get("X"), False
+        self.g20_compiled = False  # a G20 block compiled (a later G7 on a mill declines: diameter_body)
         wcs = next((c for c in machine.modal if c.startswith(("G54", "G55", "G56", "G57", "G58", "G59"))), "G54")
         if wcs not in WORK_OFFSETS:
             raise Declined(f"the machine starts in {wcs}")
@@ -1062,6 +1076,7 @@ class _Pass:
         self.offset_bound = tuple(bound)
         self.exact_offsets = {int(name[1:]): vec for name, vec in exact_offsets.items()}
         self.reg: int | None = None  # the length register applied (G43 H<reg>); None: G49
+        self.reg_inch = False  # the units (G20?) the length was applied in (:meth:`tool`)
         self.tool_offsets: dict[tuple[int, int], tuple[float, ...]] = {}
 
     def _offset(self, wcs: int, reg: int | None) -> tuple[float, ...]:
@@ -1079,7 +1094,10 @@ class _Pass:
 
     def tool(self, reg: int | None) -> None:
         """G43 H<reg> (None: G49): the tool length the next motions add."""
-        self.reg = reg
+        if self.reg is not None and self.reg_inch != self.inch:
+            # LinuxCNC 2.9 keeps the applied length in the units it was applied in (the full path: unknown)
+            raise Declined("G43 or G49 after G20/G21 while a tool length is applied")
+        self.reg, self.reg_inch = reg, self.inch
         self.off = self._offset(self.wcs, reg)
 
     def work(self, wcs: int) -> None:
@@ -1153,7 +1171,8 @@ class _Pass:
         """G91: the distance mode, and per axis the bound of the error its G91 chain has built (:meth:`_straight_ends`)."""
         n = len(self.axes)
         self.inc = False  # G91 (a machine that starts in it declines)
-        self.slow = False  # G91, or a G91 chain open: straight moves take the G91 code (_straight_ends)
+        self.inch = False  # G20 (a machine that starts in it declines)
+        self.slow = False  # G91, G20 or a G91 chain open: straight moves take the slow code (_straight_ends)
         #: per axis: None (its row is a G90 one or the start: the module's bound holds) or a bound (a float,
         #: rounded up) of the distance of its double from the full path's exact coordinate (_straight_ends)
         self.err: list[float | None] = [None] * n
@@ -1173,12 +1192,17 @@ class _Pass:
                 self.touched[i] = (row, self.err[i])
                 self.err[i] = None
         self.chained = any(e is not None for e in self.err)
-        self.slow = self.inc or self.chained
+        self.slow = self.inc or self.chained or self.inch
 
     def distance(self, inc: bool) -> None:
         """G90 (``inc`` false) or G91."""
         self.inc = inc
-        self.slow = inc or self.chained
+        self.slow = inc or self.chained or self.inch
+
+    def units(self, inch: bool) -> None:
+        """G20 (``inch``) or G21: the straight moves after it scale their words (:mod:`.double_units`)."""
+        self.inch = inch
+        self.slow = self.inc or self.chained or inch
 
     def mode(self, bare: bool) -> None:
         """G64 without P (``bare``), or G61 or G61.1: the path mode of the next motions (its block's included)."""
@@ -1197,12 +1221,16 @@ class _Pass:
         naive-CAM merging within ``q = p`` (``convert_control_mode``: Q absent is P), so within ``p + q`` of it
         (the full path's ``CornerCheck._near``); :attr:`DoublePath.tolerance` bounds that for every motion.  The
         word's exact value is within half an ulp of its double ``p``, so at most ``nextafter(p)``; twice that
-        is exact in doubles.  ``p`` not above 0 (no tolerance, or an exact value that may be 0) declines."""
+        is exact in doubles; in G20 (the block's units, set before its path mode) 25.4 times that, each product
+        rounded up.  ``p`` not above 0 (no tolerance, or an exact value that may be 0) declines."""
         if not 0.0 < p < math.inf:
             raise Declined("G64 P not above 0")
         self.mode(False)
         self.blend = True  # the motions blend (within the tolerance), so an arc after a tiny motion declines
-        self.tol = max(self.tol, 2 * math.nextafter(p, math.inf))
+        p = math.nextafter(p, math.inf)
+        if self.inch:  # P in inches (LinuxCNC reads it after the block's units): above 25.4 p, each rounding up
+            p = math.nextafter(p * math.nextafter(25.4, math.inf), math.inf)
+        self.tol = max(self.tol, 2 * p)
 
     def dwelt(self, row: int) -> None:
         """G4: the row just added (of the columns held) is a dwell where the machine stands."""
@@ -1302,10 +1330,10 @@ class _Pass:
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
-                                 "AR": self.arc_rows.append, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
+                                 "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
-                                 "CYC": CYCLE_CODES}
+                                 "CYC": CYCLE_CODES, "TA": TA}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -1319,6 +1347,14 @@ class _Pass:
         sets = sorted(g for g in ("units", "distance", "offset") if g in groups)
         if sets:
             body.append(f"unset.difference_update({tuple(sets)!r})")
+        if "units" in groups:
+            if groups["units"] == 20 and not self.g20_text:  # (a G20 the text's "20" misses: "G2 0")
+                raise Declined("G20 written apart")
+            if groups["units"] == 20:  # the inch code scales v[k], not an X diameter's half (diameter_body)
+                if self.diameter:
+                    raise Declined("G20 where X may be a diameter (a lathe, or after G7)")
+                self.g20_compiled = True
+            body.append(f"st.units({groups['units'] == 20})")
         if "offset" in groups:
             body.append(f"st.work({groups['offset']})")
         body += self._tool_body(groups.get("tool"), hs)
@@ -1407,17 +1443,20 @@ class _Pass:
         chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain)."""
         named = tuple(i for _k, i in axes)
         g90 = [f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes]
-        if not self.g91_text:  # no G91 in the text (_modal_body): no chain
+        if not self.g91_text and not self.g20_text:  # no G91 nor G20 in the text (_modal_body): no chain
             return g90
         inc = []
         for k, i in axes:
             w = self._word(k, i)
-            inc += [f"x{i} = pos[{i}] + {w}", f"e = ERR[{i}]",
-                    f"if e is None: e = NA((2.0 * abs(pos[{i}]) + {self.offb2[i]!r}) * EPS2, INF)",
+            inc += [f"x{i} = pos[{i}] + {w}", f"e = ERR[{i}]", chain_start(i, self.offb2[i], self.g20_text),
                     f"e = ERR[{i}] = NA(e + NA((abs({w}) + abs(x{i})) * EPS2, INF), INF)",
                     f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
-        # one test on the common way (G90, no chain open: ``slow`` false)
-        return ["if st.slow:", "    if st.inc:", *(f"        {b}" for b in inc), "        st.chained = True",
+        # G20 (:mod:`.double_units`) in a text that may write it: a branch of the slow way
+        inch = ["if st.inch:", *(f"    {b}" for b in inch_ends(axes, self.offb2, named)), "el"] \
+            if self.g20_text else [""]
+        # one test on the common way (G90 G21, no chain open: ``slow`` false)
+        return ["if st.slow:", *(f"    {b}" for b in inch[:-1]), f"    {inch[-1]}if st.inc:",
+                *(f"        {b}" for b in inc), "        st.chained = True",
                 "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
                 "else:", *(f"    {b}" for b in g90)]
 
@@ -1442,14 +1481,24 @@ class _Pass:
         ia, ib = self.index[a], self.index[b]
         turn = a not in others and b not in others  # the end is the start: a whole turn
         ends = f"sa, sb, pos[{ia}], pos[{ib}]"
+        words: list[str] = []
         if "R" in others:
-            call = f"R_ARC({ends}, {val('R')}, {self.offb!r})"
-            kind = f"AW(({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}, {val('R')}, 0.0))"
+            # R in mm: in G20 scaled, with double_arcs.R_INCH_REL for its error
+            words = [f"p = {val('R')}; rel = {2.0**-51!r}; fl = 0.0"]
+            if self.g20_text:
+                words += ["if st.inch:", f"    p = p * {INCH!r}; rel = {R_INCH_REL!r}; fl = {float(INCH_ARC)}"]
+            call = f"R_ARC({ends}, p, {self.offb!r}, rel)"
+            kind = f"AW((({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}) + fl, p, 0.0))"
         else:
-            call = f"IJ_ARC({ends}, {val(wa)}, {val(wb)}, mode == 2, {self.offb!r}, {self.rule!r}, {turn})"
+            # the words in mm: in G20 scaled, with the offsets' bound and rule of double_arcs.inch_offb, inch_rule
+            words = [f"p = {val(wa)}; q = {val(wb)}; ob = {self.offb!r}; ru = {self.rule!r}; fl = 0.0"]
+            if self.g20_text:
+                words += ["if st.inch:", f"    p = p * {INCH!r}; q = q * {INCH!r}; ob = IOFFB(ob, p, q); "
+                          f"ru = {inch_rule(self.rule)!r}; fl = {float(INCH_ARC)}"]
+            call = f"IJ_ARC({ends}, p, q, mode == 2, ob, ru, {turn})"
             flag = IJ_SCREEN | (TURN if turn else 0)
-            kind = f"AW(({float(flag | CW)} if mode == 2 else {float(flag)}, {val(wa)}, {val(wb)}))"
-        return [f"if st.arc_plane != {plane}: st.arc_in({plane})",
+            kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q))"
+        return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
                 # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
                 # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
                 # |t| < |t|: most arcs follow a motion that is not short)
@@ -1470,9 +1519,12 @@ class _Pass:
             return [f"raise D('an arc in G{plane} with a centre word other than {words[0]} and {words[1]}')"]
         ia, ib = self.index[a], self.index[b]
         moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
+        ends = [f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes]
+        if self.g20_text:  # (G20 declines where X may be a diameter: units(), diameter_body)  # in G20 the words' millimetres (double_units)
+            ends = ["if st.inch:", *(f"    pos[{i}] = x{i} = v[{k}] * {INCH!r} + off[{i}]" for k, i in axes),
+                    "else:", *(f"    {b}" for b in ends)]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]",
-                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *(f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes),
+                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})", *ends,
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
