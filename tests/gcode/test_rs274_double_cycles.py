@@ -7,18 +7,13 @@ and its rows are rs274's motion ends (G82's dwells included, at the log's roundi
 
 from __future__ import annotations
 
-import os
-import shutil
 from fractions import Fraction
 
 import pytest
 
-from nczones.gcode.linuxcnc.doubles import double_pass
-from tests.oracles.rs274 import compare
-from tests.tools.rs274_diff import RS274, machine_of, run_rs274
+from tests.gcode.rs274_pass import NEEDS_RS274, assert_the_pass_is_rs274s_motion
 
-pytestmark = pytest.mark.skipif(shutil.which("rs274") is None and not os.path.exists(RS274) and not os.environ.get("CI"),
-                                reason="LinuxCNC's rs274 is not installed")
+pytestmark = NEEDS_RS274
 
 #: rs274's tool table (lengths in inches: it runs in inches) and no work offsets
 SETUP = (("X", "Y", "Z"), {1: Fraction(1, 10), 2: Fraction(3, 10)}, {})
@@ -40,15 +35,4 @@ PROGRAMS = {
 
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
 def test_the_pass_is_rs274s_motion(name, tmp_path):
-    text = PROGRAMS[name]
-    moves, error, log = run_rs274(text, SETUP, tmp_path)
-    assert error is None, log[-2000:]
-    machine = machine_of(SETUP)
-    outcome = compare(text, machine, moves, error)
-    assert outcome.status == "match", outcome
-    path = double_pass(text, machine, max_iterations=100)
-    assert path.motions == len(moves), [m.kind for m in moves]
-    assert path.dwells == sum(m.kind == "DWELL" for m in moves)
-    for k, move in enumerate(moves, start=1):
-        for i in range(3):
-            assert abs(Fraction(path.columns[i][k]) - move.end[i]) <= move.tol + Fraction(1, 10**9), (k, move)
+    assert_the_pass_is_rs274s_motion(PROGRAMS[name], SETUP, tmp_path)

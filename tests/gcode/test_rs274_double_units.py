@@ -8,19 +8,17 @@ its rows are rs274's motion ends (at the log's rounding) in order, as many.
 
 from __future__ import annotations
 
-import os
-import shutil
 from fractions import Fraction
 
 import pytest
 
 from nczones.gcode.linuxcnc.doubles import double_pass
 from tests.gcode.rs274_arc_programs import SETUP
+from tests.gcode.rs274_pass import NEEDS_RS274, assert_the_pass_is_rs274s_motion
 from tests.oracles.rs274 import compare
-from tests.tools.rs274_diff import RS274, machine_of, run_rs274
+from tests.tools.rs274_diff import run_rs274
 
-pytestmark = pytest.mark.skipif(shutil.which("rs274") is None and not os.path.exists(RS274) and not os.environ.get("CI"),
-                                reason="LinuxCNC's rs274 is not installed")
+pytestmark = NEEDS_RS274
 
 PROGRAMS = {
     "inches in G55": "G20 G90 G17 G55 F30\n#1 = 0\no1 while [#1 LT 20]\nG1 X[#1 * 0.1 + 2.5443] Y[#1 / 3]\n"
@@ -35,17 +33,7 @@ PROGRAMS = {
 
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
 def test_the_pass_is_rs274s_motion_in_inches(name, tmp_path):
-    text = PROGRAMS[name]
-    moves, error, log = run_rs274(text, SETUP, tmp_path)
-    assert error is None, log[-2000:]
-    machine = machine_of(SETUP)
-    outcome = compare(text, machine, moves, error)
-    assert outcome.status == "match", outcome
-    path = double_pass(text, machine, max_iterations=100)
-    assert path.motions == len(moves), [m.kind for m in moves]
-    for k, move in enumerate(moves, start=1):
-        for i in range(3):
-            assert abs(Fraction(path.columns[i][k]) - move.end[i]) <= move.tol + Fraction(1, 10**9), (k, move)
+    assert_the_pass_is_rs274s_motion(PROGRAMS[name], SETUP, tmp_path)
 
 
 #: Seeds of arc programs in G20 (``ArcWriter``'s I/J and R kinds, every position and radius in inches).
