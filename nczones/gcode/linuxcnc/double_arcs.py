@@ -144,8 +144,8 @@ def ij_screen(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw
               tol: float, turn: bool = False) -> Any:
     """A box holding the full path's I/J arc, quicker than :func:`ij_arc`'s (no sweep), or :func:`ij_check`'s
     ``str``: the disc about the centre ``C'`` of radius the larger radius ``big`` (the arc lies in the annulus
-    about the exact centre ``C`` of radii ``r_min``..``r_max``; ``|C - C'|`` and ``|r_max - big|`` are below
-    ``err / 4`` each, :func:`ij_check`), widened by ``2 err``, far above those and the rounding of the four
+    about the exact centre ``C`` of radii ``r_min``..``r_max``; ``|C - C'|`` is below ``err / 4`` and
+    ``|r_max - big|`` below ``err / 2``, :func:`ij_check`), widened by ``2 err``, far above those and the rounding of the four
     sums (each below ``m 2**-52``).  :func:`refined` narrows it to :func:`ij_arc`'s box when a proof needs it.
 
     >>> [round(v, 9) + 0.0 for v in ij_screen(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, False, 0.0, 0.002)]
@@ -189,7 +189,10 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
     # m: above every magnitude here (|C| <= |S| + r0, |E| <= |C| + r1), so rho <= (4 m + 2**-8) 2**-52
     # (conditionals for abs(): this runs per arc)
     m = (sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + r0 + r1 + offb  # (>= max(|sx|, |sy|) + ...)
-    err = (64.0 * m + 0.0625) * _U  # every error above is below err / 4
+    # every error above is below err / 2: the radii's is the largest, 3 rho + 6 m 2**-52 <= (18 m + 2**-6) 2**-52
+    # (the centre's, rho + m 2**-52, below err / 4); the uses below need no less (units39 found the comment's
+    # former err / 4 too small for the radii)
+    err = (64.0 * m + 0.0625) * _U
     if not (r0 > _ZERO_RADIUS + err and r1 > _ZERO_RADIUS + err):  # (4 err < _ZERO_RADIUS + err)
         return "an arc of a radius about 0 or near LinuxCNC's zero-radius limit"
     if not turn and i * wx + j * wy < 0:  # -(u . w), u = (-i, -j): the end ahead of the start's normal
