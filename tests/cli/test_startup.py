@@ -143,16 +143,22 @@ def test_the_allocator_is_tuned_when_numpy_loads_and_only_then(tmp_path):
     # glibc is asked to keep freed memory (ctypes, mallopt) once numpy is imported: a small program never pays
     assert _run_program(tmp_path, ["G90 G21", "G1 X10 Y10 F100", "M2"]) == {
         "ctypes": False, "numpy": False, "called": 0, "hook": True}
-    lines = [f"G1 X{10 + k % 50}.{k % 10} Y{20 + k % 30}.5 F100" for k in range(600)]
-    assert _run_program(tmp_path, ["G90 G21", *lines, "M2"]) == {"ctypes": True, "numpy": True, "called": 1,
-                                                                 "hook": False}
+    assert _run_program(tmp_path, ["G90 G21", *_vectorized_lines(), "M2"]) == {"ctypes": True, "numpy": True,
+                                                                               "called": 1, "hook": False}
+
+
+def _vectorized_lines() -> list[str]:
+    """A plain program's lines the vectorized path reads: more than the double pass is tried first for
+    (``PLAIN_PASS_SIZE``; a smaller plain one goes to the pass, which needs no numpy, and only one it declines
+    reaches the vectorized path; since the pass takes a program that leaves its work offset to the machine
+    file, this program's ``G90 G21`` head no longer makes it decline)."""
+    from nczones.pipeline.verification import PLAIN_PASS_SIZE
+
+    return [f"G1 X{10 + k % 50}.{k % 10} Y{20 + k % 30}.5 F100" for k in range(PLAIN_PASS_SIZE + 1)]
 
 
 def test_a_large_program_takes_the_vectorized_path(tmp_path):
-    from nczones.prover import FAST_PATH_MIN_LINES
-
-    lines = [f"G1 X{10 + k % 50}.{k % 10} Y{20 + k % 30}.5 F100" for k in range(FAST_PATH_MIN_LINES)]
-    loaded = loaded_by_verify(tmp_path, ["G90 G21", *lines, "M2"])
+    loaded = loaded_by_verify(tmp_path, ["G90 G21", *_vectorized_lines(), "M2"])
     assert {"numpy", "nczones.gcode.fastpath", "nczones.prover.screen"} <= loaded and "z3" not in loaded
 
 
