@@ -1110,12 +1110,7 @@ class Interpreter:
             raise self.error("GC204", "R word is ambiguous in a block with both G64 and M19; write them in separate blocks", words["R"])
         if not self.unsupported and not words.keys().isdisjoint(_USED_BY):
             self._check_word_users(gcodes, mcodes, groups, words, axis_words)
-        if g1 and g1[0] in (382, 383, 384, 385) and not axis_words:
-            raise self.error("GC208", f"{gname(g1[0])} without axis words: a probing move needs a target", g1[1])
-        if 14 in groups and groups[14][0] == 960 and "S" not in words and self.dialect == "linuxcnc":
-            # interp_check.cc check_other_codes: NCE_S_WORD_MISSING_WITH_G96 (rs274 2.9 stops there)
-            raise self.error("GC208", "G96 without an S word (the surface speed): LinuxCNC refuses the block "
-                                      "(\"S word missing with G96\"); write G96 S<speed>", groups[14][1])
+        self._check_needed_words(g1, groups, words, axis_words)
         # unsupported codes: stop emitting, keep checking blocks
         for k, w in gcodes:
             if k in UNSUPPORTED_G:
@@ -1375,6 +1370,16 @@ class Interpreter:
         if len(self._plans) < 4096:
             self._plans[letters] = plan
         return plan
+
+    def _check_needed_words(self, g1: tuple[int, Word] | None, groups: dict[int, tuple[int, Word]],
+                            words: dict[str, Word], axis_words: list[tuple[int, Word]]) -> None:
+        """GC208 for a probing move without axis words, and for G96 without S (LinuxCNC: ``interp_check.cc``
+        ``check_other_codes``, NCE_S_WORD_MISSING_WITH_G96; rs274 2.9 stops there)."""
+        if g1 and g1[0] in (382, 383, 384, 385) and not axis_words:
+            raise self.error("GC208", f"{gname(g1[0])} without axis words: a probing move needs a target", g1[1])
+        if 14 in groups and groups[14][0] == 960 and "S" not in words and self.dialect == "linuxcnc":
+            raise self.error("GC208", "G96 without an S word (the surface speed): LinuxCNC refuses the block "
+                                      "(\"S word missing with G96\"); write G96 S<speed>", groups[14][1])
 
     def _check_word_users(self, gcodes: list[tuple[int, Word]], mcodes: list[tuple[int, Word]],
                           groups: dict[int, tuple[int, Word]], words: dict[str, Word],

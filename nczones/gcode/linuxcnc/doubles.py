@@ -450,6 +450,18 @@ def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_w
 _Code = tuple[list[str], list[str], list[str], str | None, dict]
 
 
+def _machine_taken(machine: Any) -> None:
+    """Decline a machine the pass does not run on: a lathe it does not follow (:mod:`.double_lathe`), another
+    dialect, a start in G20, G91, G93 or G95."""
+    lathe = lathe_reason(machine)
+    if lathe is not None:
+        raise Declined(lathe)
+    if getattr(machine, "dialect", "linuxcnc") != "linuxcnc":
+        raise Declined("a machine of another dialect than LinuxCNC")
+    if set(machine.modal) & {"G20", "G91", "G93", "G95"}:
+        raise Declined("the machine starts in G20, G91, G93 or G95")
+
+
 class _Pass:
     def __init__(self, text: str | FileText, machine: Any, max_iterations: int, on_window: Any = None,
                  window: int = WINDOW, arc_tolerance: Fraction | str = DEFAULT_ARC_TOLERANCE):
@@ -459,14 +471,7 @@ class _Pass:
         #: rows of a full window (the one before its first motion included); past it the window is handed over
         self.rows = window + 1 if on_window is not None else MAX_MOTIONS + 2
         self.row0 = 0  # the row columns[a][0] is
-        lathe = lathe_reason(machine)  # a lathe: .double_lathe
-        if lathe is not None:
-            raise Declined(lathe)
-        if getattr(machine, "dialect", "linuxcnc") != "linuxcnc":
-            raise Declined("a machine of another dialect than LinuxCNC")
-        modal = set(machine.modal)
-        if modal & {"G20", "G91", "G93", "G95"}:
-            raise Declined("the machine starts in G20, G91, G93 or G95")
+        _machine_taken(machine)
         # the lines as the full path reads them: a byte-order mark at the start and one "\r" before each
         # newline and at the end dropped (by _Lines, a piece at a time; a streamed file has no byte-order mark)
         if isinstance(text, str):
@@ -510,6 +515,10 @@ class _Pass:
         self.pos = [float(v) for v in machine.start]
         self.columns: tuple[array, ...] = tuple(array("d", [v]) for v in self.pos)
         self.rapids = self.blocks = 0
+        self._language_state()
+
+    def _language_state(self) -> None:
+        """The parameters, subs, calls and compiled steps of the language the pass runs."""
         from .state import DEBUG_FLAG, DEBUG_FLAG_DEFAULT
 
         # numbered parameters set by the program (unset read 0); #5599 starts at 1 (nczones.gcode.linuxcnc.state)
