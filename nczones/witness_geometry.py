@@ -173,7 +173,7 @@ def _float_developed_distance(p: Point, seg: Segment) -> float:
 def _float_polar_distance(p: Point, seg: Segment) -> float:
     """Distance (max over axes) from ``p`` to a polar move's machine path, in floats (samples, then near the best)."""
     from .geometry.polar import polar_of
-    from .report.samples import polar_float_points
+    from .geometry.samples import polar_float_points
 
     q = [to_float(x) for x in p]
     e = polar_of(seg)

@@ -223,7 +223,7 @@ def _straight_float_points(seg: Segment, machine: Machine | None) -> list[tuple[
 
 
 def _polar_float_points(seg: Segment, machine: Machine | None) -> list[tuple[float, ...]]:
-    from .samples import polar_float_points
+    from ..geometry.samples import polar_float_points
 
     return polar_float_points(seg)
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ..geometry.polar import polar_move_of, polar_of
 from ..motion import Segment
+from .polar import polar_move_of, polar_of
 
 __all__ = ["polar_float_points"]
 
