@@ -107,7 +107,9 @@ def cycle_modal(groups: dict[str, int]) -> list[str]:
     if "retract" in groups:
         body.append(f"st.cyc.retract = {groups['retract'] == 99}")
     if "motion" in groups and groups["motion"] not in CYCLE_CODES:
-        body.append("st.cyc.end()")
+        # (a block writing G1, G2 ... on every line: no call while no cycle ran since the last end(); ``last`` is
+        # None only then, for _general sets it after every field end() resets, and a decline ends the pass)
+        body.append("if st.cyc.last is not None: st.cyc.end()")
     return body
 
 
