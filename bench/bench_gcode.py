@@ -215,14 +215,14 @@ def osub_program(n: int, seed: int = 17) -> str:
 
 
 def declined_program(n: int, seed: int = 19) -> str:
-    """The expression-every-line program (:func:`expr_program`) with the spindle started and ``G64 P0.01 Q0.01``
-    (a path tolerance and naive-CAM merging, as some LinuxCNC preambles write it), which the double pass does not
-    follow: it declines, and the full path reads the program.  (``S1000 M3`` alone was this class until the pass
-    learnt spindle and coolant codes, ``G61`` until it learnt path modes, ``G91.1`` until it took the default
-    arc-centre mode written out, ``G64 P0.01`` until it took a path tolerance, issue 36.)"""
+    """The expression-every-line program (:func:`expr_program`) with the spindle started and ``G64 Q0.01``
+    (naive-CAM merging without a path tolerance), which the double pass does not follow: it declines, and the
+    full path reads the program.  (``S1000 M3`` alone was this class until the pass learnt spindle and coolant
+    codes, ``G61`` until it learnt path modes, ``G91.1`` until it took the default arc-centre mode written out,
+    ``G64 P0.01`` until it took a path tolerance, ``G64 P0.01 Q0.01`` until it took Q, issue 36.)"""
     text = expr_program(n, seed)
     head, rest = text.split("\n", 1)
-    return f"{head}\nS1000 M3\nG64 P0.01 Q0.01\n{rest}"
+    return f"{head}\nS1000 M3\nG64 Q0.01\n{rest}"
 
 
 def g91_program(n: int, seed: int = 23) -> str:

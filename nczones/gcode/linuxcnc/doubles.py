@@ -55,7 +55,8 @@ literal numbers (:meth:`_Pass._tool_change`: nothing the pass computes reads the
 machine whose tool change moves, ``[machine] tool_change_*``, declines).  A dwell: ``G4 P<seconds>`` (P
 above 0, no axis word) is a row where the machine stands, as the full path's ``DWELL`` segment.  The path
 mode: G61, G61.1 and G64 without P or Q (:attr:`DoublePath.modes`, from the next motion on, its block's
-included), and ``G64 P<p>`` without Q (p above 0: its motions blend within ``2p`` of the programmed path,
+included), and ``G64 P<p> [Q<q>]`` (p above 0; Q only in a block without axis words or a motion code: its
+motions blend within ``p + q`` of the programmed path, ``2p`` without Q,
 :attr:`DoublePath.tolerance`, which the proof adds to the margin of every motion), which with the dwells say which corners LinuxCNC blends (:meth:`DoublePath.blended`); the motions
 and their rows are the same in every mode (the full path emits every motion; which ones LinuxCNC drops in a
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
@@ -77,7 +78,7 @@ an X word's double halved in G7 (``st.half``; a G91 increment and an arc's X end
 machine with X diameters starting in G7; G96 with S (D its speed limit) and G97, which move nothing; a lathe
 with tool solids or other diameter axes, G70-G72, G76, G33, G95, G96 without S, D without G96 and, on a machine
 that is not a lathe, a G7 after a line with an X word decline.  Everything else declines:
-other codes and words, G64 with Q or with P not above 0, a machine that starts in G20 or G91, block delete, magic comments,
+other codes and words, G64 with Q but not P or with P not above 0, a machine that starts in G20 or G91, block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a G1 without a positive feed, a loop at its iteration bound, a
 parameter read of controller state, any evaluation error; an arc in a second plane, with P or the centre
@@ -294,7 +295,7 @@ class DoublePath:
     #: full path notes them (``Interpreter.note_assumed``; ``units``, ``distance``, ``offset``, ``plane``): the
     #: machine file's codes, which the run assumed (:meth:`_Pass.assume`)
     assumed: tuple[tuple[str, str], ...] = ()
-    #: a bound (mm, at or above ``p + q``) of how far the program's ``G64 P p`` (its Q is p) lets any motion
+    #: a bound (mm, at or above ``p + q``) of how far the program's ``G64 P p [Q q]`` lets any motion
     #: blend off the programmed path (:meth:`_Pass.tolerance`); 0.0: the program wrote none
     tolerance: float = 0.0
 
@@ -1225,21 +1226,26 @@ class _Pass:
         if not self.modes or self.modes[-1][1] != bare:
             self.modes.append((row, bare))
 
-    def tolerance(self, p: float) -> None:
-        """``G64 P<p>`` without Q: the next motions blend within ``p`` of the programmed path after LinuxCNC's
-        naive-CAM merging within ``q = p`` (``convert_control_mode``: Q absent is P), so within ``p + q`` of it
-        (the full path's ``CornerCheck._near``); :attr:`DoublePath.tolerance` bounds that for every motion.  The
-        word's exact value is within half an ulp of its double ``p``, so at most ``nextafter(p)``; twice that
-        is exact in doubles; in G20 (the block's units, set before its path mode) 25.4 times that, each product
-        rounded up.  ``p`` not above 0 (no tolerance, or an exact value that may be 0) declines."""
-        if not 0.0 < p < math.inf:
+    def tolerance(self, p: float, q: float | None = None) -> None:
+        """``G64 P<p> [Q<q>]``: the next motions blend within ``p`` of the programmed path after LinuxCNC's
+        naive-CAM merging within ``q`` (``convert_control_mode``: Q absent or below 0 is P), so within ``p + q``
+        of it (the full path's ``PathMode.bound``, ``CornerCheck._near``); :attr:`DoublePath.tolerance` bounds
+        that for every motion.  A word's exact value is within half an ulp of its double, so at most the next
+        double up; a Q whose double is below 0 or -0.0 (its exact value below 0, which is P, or 0) is bounded by
+        P's, +0.0 (0, or a positive exact value below the least double) by the least double; the sum rounded up; in G20 (the block's units, set before its path mode) 25.4
+        times that, each product rounded up.  ``p`` not above 0 (no tolerance, or an exact value that may be 0)
+        declines: the full path's naive-CAM windows (G64 Q without P) are not the pass's."""
+        if not 0.0 < p < math.inf or not (q is None or -math.inf < q < math.inf):
             raise Declined("G64 P not above 0")
         self.mode(False)
         self.blend = True  # the motions blend (within the tolerance), so an arc after a tiny motion declines
-        p = math.nextafter(p, math.inf)
-        if self.inch:  # P in inches (LinuxCNC reads it after the block's units): above 25.4 p, each rounding up
-            p = math.nextafter(p * math.nextafter(25.4, math.inf), math.inf)
-        self.tol = max(self.tol, 2 * p)
+        up = math.inf
+        p = math.nextafter(p, up)
+        q_is_q = q is not None and (q > 0.0 or (q == 0.0 and math.copysign(1.0, q) > 0.0))
+        t = math.nextafter(p + (math.nextafter(q, up) if q_is_q else p), up)
+        if self.inch:  # P and Q in inches (LinuxCNC reads them after the block's units), each rounding up
+            t = math.nextafter(t * math.nextafter(25.4, up), up)
+        self.tol = max(self.tol, t)
 
     def dwelt(self, row: int) -> None:
         """G4: the row just added (of the columns held) is a dwell where the machine stands."""
@@ -1308,8 +1314,8 @@ class _Pass:
         why = spindle_mode(groups, others)  # G96/G97 and D (.double_lathe)
         if why is not None:
             raise Declined(why)
-        if "q" in others and not takes_q(groups, bool(axes)):  # (.double_cycles: a Q in a line without M)
-            raise Declined("a word Q without M61 or G83")
+        if "q" in others and not (takes_q(groups, bool(axes)) or _g64_q(groups, others, bool(axes))):
+            raise Declined("a word Q without M61, G83 or G64 P")  # (.double_cycles: a Q in a line without M)
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         body = ["st.blocks += 1"] if letters else []
@@ -1373,7 +1379,8 @@ class _Pass:
         body += diameter
         if "path" in groups:
             if groups["path"] == 64 and "P" in others:  # G64 P (_dwell_body: then no G4 nor G82 takes it)
-                body.append(f"st.tolerance(v[{others.index('P')}])")
+                q = f"v[{others.index('q')}]" if "q" in others else "None"  # (_g64_q: then no G83 takes it)
+                body.append(f"st.tolerance(v[{others.index('P')}], {q})")
             else:
                 body.append(f"st.mode({groups['path'] == 64})")
         if "distance" in groups:
@@ -1573,6 +1580,12 @@ class _Pass:
         if not arc:
             body.append("if not mode: st.rapids += 1")
         return body
+
+
+def _g64_q(groups: dict[str, int], others: list[str], axes: bool) -> bool:
+    """Is a block's Q value G64's naive-CAM tolerance: ``G64 P`` in a block without axis words or a motion
+    code (so no cycle takes the Q, nor the P: :func:`~.double_cycles.takes_q`, ``takes_p``)."""
+    return groups.get("path") == 64 and "P" in others and not axes and "motion" not in groups
 
 
 def _groups(gs: list[int]) -> dict[str, int]:
