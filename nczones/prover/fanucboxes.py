@@ -90,17 +90,33 @@ class _Declined(Exception):
     """The walk met what it does not model."""
 
 
+#: the positions the walk keeps as integers are multiples of ``1 / _SCALE`` (Fanuc increments, exact decimals)
+_SCALE = 10**12
+#: ``_SCALE // d`` by denominator ``d`` (0: ``d`` does not divide ``_SCALE``)
+_PER: dict[int, int] = {}
+
+
 class BoxWalk:
-    """The exact box of every position of an interpretation's motion, and its tool lengths (Fractions)."""
+    """The exact box of every position of an interpretation's motion, and its tool lengths (Fractions).
+
+    A coordinate that is a multiple of ``1 / _SCALE`` (every Fanuc increment and exact decimal the program can
+    write: the common case) joins an integer box of the coordinates times ``_SCALE``, others a Fraction box;
+    :meth:`box` takes the least and greatest of the two, exactly (``Fraction(n, _SCALE)`` is the coordinate).  A
+    straight motion that starts at the previous motion's end (the same object) adds its end only: its start is
+    in the box already."""
 
     def __init__(self, axes: tuple[str, ...]) -> None:
         self.axes = axes
         self.width = len(axes)
         self.lo: list[Any] = [None] * self.width
         self.hi: list[Any] = [None] * self.width
+        self.ilo: list[Any] = [None] * self.width  # the integer box (times _SCALE)
+        self.ihi: list[Any] = [None] * self.width
         self.tls: set[Fraction] = set()
         self.motions = 0
         self.rows = 0
+        self._last: Any = None  # the last motion's end
+        self._tl: Any = None  # the last tool length added
 
     def take(self, chunk: Any) -> None:
         """Follow one chunk of the interpretation (raises :class:`_Declined` on what is not modelled)."""
@@ -120,23 +136,60 @@ class BoxWalk:
             raise _Declined
         r_lo, r_hi, tls, count, scale = bounds()
         unit = 10**scale
-        lo, hi = self.lo, self.hi
-        for i in range(self.width):
-            a, b = Fraction(r_lo[i], unit), Fraction(r_hi[i], unit)
-            if lo[i] is None or a < lo[i]:
-                lo[i] = a
-            if hi[i] is None or b > hi[i]:
-                hi[i] = b
+        self._fractions([Fraction(v, unit) for v in r_lo], [Fraction(v, unit) for v in r_hi])
         self.tls.update(Fraction(v, unit) for v in tls)
         self.motions += count
         self.rows += count
+        self._last = None
+
+    def _fractions(self, lo: list[Any], hi: list[Any]) -> None:
+        """The box ``lo``..``hi`` (Fractions by axis index) joins the Fraction box."""
+        blo, bhi = self.lo, self.hi
+        for i in range(self.width):
+            if blo[i] is None or lo[i] < blo[i]:
+                blo[i] = lo[i]
+            if bhi[i] is None or hi[i] > bhi[i]:
+                bhi[i] = hi[i]
+
+    def _point(self, p: Any) -> None:
+        """The position ``p`` (by axis index) joins the box: the integer one where it can."""
+        ilo, ihi, per = self.ilo, self.ihi, _PER
+        for i in range(self.width):
+            x = p[i]
+            try:
+                num, d = x._numerator, x._denominator
+            except AttributeError:  # an int
+                num, d = x.numerator, x.denominator
+            m = per.get(d)
+            if m is None:
+                m = per[d] = 0 if _SCALE % d else _SCALE // d
+            if not m:
+                self._coordinate(i, x)
+                continue
+            v = num * m
+            lo = ilo[i]
+            if lo is None:
+                ilo[i] = ihi[i] = v
+            elif v < lo:
+                ilo[i] = v
+            elif v > ihi[i]:
+                ihi[i] = v
+
+    def _coordinate(self, i: int, x: Any) -> None:
+        """One coordinate joins the Fraction box."""
+        if self.lo[i] is None or x < self.lo[i]:
+            self.lo[i] = x
+        if self.hi[i] is None or x > self.hi[i]:
+            self.hi[i] = x
 
     def _segment(self, seg: Segment) -> None:
         kind = seg.kind
         if seg.extra or seg.deps_start or seg.deps_end or seg.deps_tool:
             raise _Declined
         if kind is _LINE or kind is _RAPID or kind is _DWELL:
-            lo, hi = list(map(min, seg.start, seg.end)), list(map(max, seg.start, seg.end))
+            if seg.start is not self._last:
+                self._point(seg.start)
+            self._point(seg.end)
         elif kind is _ARC:
             from .geometry import on_start_ray, whole_turn_box
 
@@ -144,22 +197,30 @@ class BoxWalk:
                 lo, hi = map(list, whole_turn_box(seg))
             else:
                 lo, hi = _arc_box(seg)
+            self._fractions(lo, hi)
         else:
             raise _Declined
-        blo, bhi = self.lo, self.hi
-        for i in range(self.width):
-            if blo[i] is None or lo[i] < blo[i]:
-                blo[i] = lo[i]
-            if bhi[i] is None or hi[i] > bhi[i]:
-                bhi[i] = hi[i]
-        self.tls.add(seg.tool_length)
+        self._last = seg.end
+        tl = seg.tool_length
+        if tl is not self._tl:
+            self.tls.add(tl)
+            self._tl = tl
         self.motions += 1
 
     def box(self) -> tuple[dict[str, Fraction], dict[str, Fraction]] | None:
         """The box of every position (by axis), None when there was no motion."""
         if not self.motions:
             return None
-        return dict(zip(self.axes, self.lo)), dict(zip(self.axes, self.hi))
+        lo, hi = [], []
+        for i in range(self.width):
+            a, b, ia, ib = self.lo[i], self.hi[i], self.ilo[i], self.ihi[i]
+            if ia is not None:
+                fa, fb = Fraction(ia, _SCALE), Fraction(ib, _SCALE)
+                a = fa if a is None or fa < a else a
+                b = fb if b is None or fb > b else b
+            lo.append(a)
+            hi.append(b)
+        return dict(zip(self.axes, lo)), dict(zip(self.axes, hi))
 
     def tool_lengths(self) -> set[Fraction]:
         """Every tool length a motion carried."""

@@ -18,6 +18,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
@@ -314,3 +315,37 @@ def test_a_tool_length_only_rows_carry():
     # the same machine positions without the G43 (Z5. is machine -195): the tip is the machine point, Z >= -195,
     # above the probe: safe, and the route answers
     assert _agree(text.replace("G43 H1\n", "").replace("Z-95.", "Z5."), _MACHINES["probe"]) == ("safe", True)
+
+
+_COORD = st.one_of(st.integers(-10**6, 10**6).map(lambda n: Fraction(n, 1000)),  # increments: the integer box
+                   st.fractions(min_value=-1000, max_value=1000, max_denominator=7),  # thirds...: the Fraction box
+                   st.integers(-1000, 1000))  # ints (a Fraction's slots missing)
+
+
+@given(st.lists(st.tuples(st.sampled_from(["line", "rapid", "dwell"]), st.tuples(_COORD, _COORD, _COORD),
+                          st.booleans(), st.sampled_from([Fraction(0), Fraction(100), Fraction(1, 3)])),
+                min_size=1, max_size=30))
+@settings(max_examples=100, deadline=None)
+def test_the_walks_box_is_the_box_of_every_position(moves):
+    """``BoxWalk``'s box (integer box for coordinates on the 10**-12 grid, Fraction box for the others, a chained
+    start taken once) equals the box of every start and end by Fraction min/max, and its tool lengths every
+    motion's; a chained start (``joined``: the previous end's object) is the previous end."""
+    from nczones.gcode.segments import make_segment
+    from nczones.motion import MotionChunk, SegmentKind
+
+    kinds = {"line": SegmentKind.LINE, "rapid": SegmentKind.RAPID, "dwell": SegmentKind.DWELL}
+    axes = ("X", "Y", "Z")
+    segs, prev = [], (Fraction(5), Fraction(-7, 3), 0)
+    for kind, end, joined, tl in moves:
+        start = prev if joined else tuple(reversed(end))
+        end = start if kind == "dwell" else end
+        segs.append(make_segment(kinds[kind], start, end, axes, 0, None, tl, None, None, False, None, None, 0,
+                                 None, "", None, (), (), (), None))
+        prev = end
+    walk = fanucboxes.BoxWalk(axes)
+    walk.take(MotionChunk(axes, None, objects=tuple(segs)))
+    lo, hi = walk.box()
+    points = [p for s in segs for p in (s.start, s.end)]
+    assert lo == {a: min(Fraction(p[i]) for p in points) for i, a in enumerate(axes)}
+    assert hi == {a: max(Fraction(p[i]) for p in points) for i, a in enumerate(axes)}
+    assert walk.tool_lengths() == {s.tool_length for s in segs}
