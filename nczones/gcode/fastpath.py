@@ -65,6 +65,7 @@ import numpy as np
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
 from .codes import LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from .interpreter import LEAN_M
+from .lexer import decimal_value
 from .source import FileText, materialized
 
 __all__ = ["CODES", "run_with_fastpath", "MIN_RUN"]
@@ -257,6 +258,10 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
                 chunk, taken = done
                 req.resume = (req.pos + _char_offsets(blk)(starts[taken]) if taken < nlines else end,
                               lineno + taken, counter[0])
+                last = getattr(it, "last", None) if getattr(interp, "dialect", "linuxcnc") == "fanuc" else None
+                number = _last_number(code, taken) if last is not None else None
+                if number is not None:  # a Fanuc macro reads the last block's N (#4114), as the general path keeps it
+                    last["N"] = number
     if taken == 0:
         step = 1 << retries
         if nlines - step >= MIN_RUN:
@@ -268,6 +273,30 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
         if entry[4] >= MAX_DECLINES:
             del runs[req.pos]
     return chunk
+
+
+def _last_number(code: tuple[np.ndarray, np.ndarray], taken: int) -> Fraction | None:
+    """The N of the last of a block's first ``taken`` lines that has an N word, from its code bytes (``_classify``'s:
+    comments and blanks out, upper case; a simple line's N is its only N and digits follow it), None when none has.
+
+    >>> c = np.frombuffer(b"N10G1X1G1X2N30X3", dtype=np.uint8)
+    >>> line = np.repeat(np.arange(3, dtype=np.int32), [7, 4, 5])
+    >>> _last_number((c, line), 2), _last_number((c, line), 3), _last_number((c, line), 0)
+    (Fraction(10, 1), Fraction(30, 1), None)
+    """
+    c, cl_line = code
+    at = np.flatnonzero((c == _N) & (cl_line < taken))
+    if at.size == 0:
+        return None
+    k = first = int(at[-1]) + 1
+    line = cl_line[first - 1]
+    while k < c.size and cl_line[k] == line and c[k] in _NUMBER_BYTES:
+        k += 1
+    return decimal_value(c[first:k].tobytes().decode("ascii")) if k > first else None
+
+
+_N = ord("N")
+_NUMBER_BYTES = frozenset(b"0123456789.+-")
 
 
 #: Declines after which the language layer stops offering a run to the fast path.

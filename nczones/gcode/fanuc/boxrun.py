@@ -52,6 +52,9 @@ BOX_RUNS = True
 
 _UNIT = 10**SCALE
 _ZERO_DIGITS = str.maketrans("123456789", "000000000")
+#: a line that starts with an N word (the layouts take N first only), and its number
+_NUMBERED = re.compile(r"^[ \t]*N", re.M)
+_N_WORD = re.compile(r"[ \t]*N[ \t]*(\d+)")
 _WORD = re.compile(r"([A-Z])[ \t]*(-?0*)(\.?)(0*)[ \t]*")
 #: integer digits of a length at most (coordinates stay far below the lanes' ``2**57`` at the scale)
 _MAX_DIGITS = 7
@@ -245,11 +248,14 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         if not (st.layouts.get(key) or _miss(st, key)) and key.strip(" \t\r"):
             return None  # the first line is out of the subset: the text is not cut (a program it declines)
         lines = runner.box_keys = _Lines(text)
-    index = lines.index(pos)
-    pos, lineno, index = _lines(st, lines.keys, lines.dotless, text, pos, lineno, index)
+    first = lines.index(pos)
+    pos, lineno, index = _lines(st, lines.keys, lines.dotless, text, pos, lineno, first)
     lines.pos, lines.at = pos, index
     if not st.taken:
         return None
+    number = lines.last_number(first, index)
+    if number is not None:  # the last sequence number a macro reads (#4114), as the general path keeps it
+        runner.lane_number(number)
     return _hand_back(runner, runner.state, st, pos, lineno)
 
 
@@ -258,13 +264,26 @@ class _Lines:
     zeroed, :func:`_layout`'s key) and the line with its points removed (where the layout's slices read), and
     the index of the line at offset :attr:`pos` (where the last run ended: the next usually starts there)."""
 
-    __slots__ = ("text", "keys", "dotless", "pos", "at")
+    __slots__ = ("text", "keys", "dotless", "pos", "at", "numbered")
 
     def __init__(self, text: str) -> None:
         self.text = text
         self.keys = text.translate(_ZERO_DIGITS).split("\n")
         self.dotless = text.replace(".", "").split("\n")
         self.pos = self.at = 0
+        self.numbered = _NUMBERED.search(text) is not None  # a line may start with an N word
+
+    def last_number(self, first: int, end: int) -> Fraction | None:
+        """The N of the last line of index ``first`` .. ``end - 1`` that has one (the layout's N word comes
+        first, a whole number: :func:`_layout`), None when none has."""
+        if self.numbered:
+            keys = self.keys
+            for j in range(end - 1, first - 1, -1):
+                if keys[j].lstrip(" \t")[:1] == "N":
+                    m = _N_WORD.match(self.dotless[j])
+                    if m is not None:
+                        return Fraction(int(m.group(1)))
+        return None
 
     def index(self, pos: int) -> int:
         """The index of the line starting at offset ``pos``: counted from the last run's end (runs read forward)."""

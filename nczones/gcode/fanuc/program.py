@@ -614,6 +614,8 @@ class FanucRunner:
             taken = lane(letters, values, span, index) if lane is not None and values else 0
             if taken:
                 runner.index = index + 1
+                if number is not None:
+                    runner.lane_number(number)
                 return here if taken == 1 else [here]
             rows = [(meta[i][0], vals[i]) + meta[i][1:] for i in (keep if keep is not None else range(len(vals)))]
             return [here, plain_block_of(rows, span, index, number)]
@@ -643,6 +645,8 @@ class FanucRunner:
             taken = lane(letters, values, span, index) if lane is not None else 0
             if taken:
                 runner.index = index + 1
+                if number is not None:
+                    runner.lane_number(number)
                 return here if taken == 1 else [here]
             return [here, plain_block(letters, values, span, index, number, None)]
         return plain_line
@@ -898,6 +902,8 @@ class FanucRunner:
         if not taken:
             return [here, plain_block(letters, values, span, index, number, None)]
         self.index = index + 1
+        if number is not None:
+            self.lane_number(number)
         return here if taken == 1 else [here]
 
     def nc_first(self, source: _Source, compiled: tuple, pos: int, lineno: int) -> Any:
@@ -920,7 +926,16 @@ class FanucRunner:
         if not taken:
             return [here, plain_block_of(values, span, index, compiled[0].number)]
         self.index = index + 1
+        if compiled[0].number is not None:
+            self.lane_number(compiled[0].number)
         return here if taken == 1 else [here]
+
+    def lane_number(self, number: Fraction) -> None:
+        """The N of a block the plain-move lane took, kept as the general path's ``_record_block`` keeps it: the
+        last sequence number a macro reads (``#4114``)."""
+        last = getattr(self.state, "last", None)
+        if last is not None:
+            last["N"] = number
 
     def read_plain(self, frame: _Frame, pos: int, lineno: int, may_keep: bool) -> tuple | None:
         """The line at ``pos`` (not run before as a compiled line) for run(): ``(line, next offset, its

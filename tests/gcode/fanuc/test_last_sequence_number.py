@@ -1,0 +1,99 @@
+"""``#4114``, the last sequence number, after blocks every lane of the Fanuc reader takes.
+
+The control keeps the N of the last block it read (0i-MF "System variables": #4114, modal information of the
+last block); a macro may read it (specs/fanuc.md lists it as modelled).  The general path keeps it
+(``FanucInterpreter._record_block``); the plain-move lane, the expression lane, the lines kept as closures in a
+loop and the box route's run reader (``gcode/fanuc/boxrun.py``) took numbered blocks without it, so a program
+that moved by ``#4114`` after ``N20 G01 X2.`` was proved at X 0.5 while the control goes to X 20.5.  Each case
+below reads ``#4114`` after a numbered block taken by one of them and moves to ``X[#4114 + 0.5]``: the move's end
+is the N plus 0.5 (program X; the test mill's G54 adds 100), and ``verify`` finds it past a wall the other
+moves stay inside.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+
+from nczones.prover import verify_text
+from tests.gcode.fanuc.helpers import ends, mill, probe_route
+
+HEAD = "O6000\nG90 G17 G21 G54 F300.\n"
+TAIL = "G01 X[#4114 + 0.5] Y2.\nM30\n"
+#: (the program's middle, the N the read must give)
+CASES = {
+    "a plain line": ("N10 G01 X1. Y1.\nN20 G01 X2. Y1.\n", 20),
+    "a plain line with a comment": ("N10 G01 X1. Y1.\nN20 G01 X2. Y1. (CUT)\n", 20),
+    "a line with an expression": ("#1 = 1\nN10 G01 X1. Y1.\nN20 G01 X[#1 + 1] Y1.\n", 20),
+    "an unnumbered line after the last numbered one": ("N10 G01 X1. Y1.\nN20 G01 X2. Y1.\nG01 X3. Y1.\n", 20),
+    "a plain line in a loop (a closure)": ("#2 = 0\nWHILE [#2 LT 3] DO1\nN30 G01 X2. Y1.\n#2 = #2 + 1\nEND1\n", 30),
+    "an expression line in a loop": ("#2 = 0\nWHILE [#2 LT 3] DO1\nN31 G01 X[#2] Y1.\n#2 = #2 + 1\nEND1\n", 31),
+    # N40 runs as a kept closure from the third pass on (a plain line run a third time), N50 in the first two
+    # passes only: N50 is the last N before it
+    "a closure after another line's N": (
+        "#2 = 0\nWHILE [#2 LT 4] DO1\nN40 G01 X1. Y1.\n#5 = FIX[#2 / 2]\nWHILE [#5 LT 1] DO2\n"
+        "N50 G01 X2. Y1.\n#5 = 1\nEND2\n#2 = #2 + 1\nEND1\n", 40),
+    "an expression closure after another line's N": (
+        "#2 = 0\nWHILE [#2 LT 4] DO1\nN41 G01 X[#2] Y1.\n#5 = FIX[#2 / 2]\nWHILE [#5 LT 1] DO2\n"
+        "N50 G01 X2. Y1.\n#5 = 1\nEND2\n#2 = #2 + 1\nEND1\n", 41),
+    "a general block after a lane's": ("N10 G01 X1. Y1.\nN25 M08\n", 25),
+    "a lane's block after a general one": ("N25 M08\nN10 G01 X1. Y1.\n", 10),
+}
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_the_read_gives_the_last_n(name):
+    middle, n = CASES[name]
+    got = ends(HEAD + middle + TAIL)
+    assert got[-1][0] == Fraction(n) + Fraction(1, 2) + 100, (name, got[-1])
+
+
+def _wall(x: int) -> object:
+    return mill(tables=('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-300" }\n'
+                        f'max = {{ X = "{x}", Y = "90", Z = "0" }}\n'))
+
+
+@pytest.mark.parametrize("tail", ["", "G01 X3. Y1.\nG00 X0. Y0.\n"])
+def test_the_box_run_reader_keeps_the_last_n(monkeypatch, tail):
+    """The box route's reader takes a plain program (no ``#``: a macro program's lines are the lanes'); a
+    subprogram in another file may still read ``#4114`` after it, so the reader keeps the N of the last numbered
+    line it took, as the lanes do (an unnumbered line after it leaves it)."""
+    from nczones.gcode.fanuc import boxrun
+
+    runners = []
+    real = boxrun.read_box_run
+
+    def read(runner, text, pos, lineno):
+        runners.append(runner)
+        return real(runner, text, pos, lineno)
+
+    monkeypatch.setattr(boxrun, "read_box_run", read)
+    body = "".join(f"N{10 * k} G01 X{k % 7}. Y{k % 5}.\n" for k in range(1, 13))
+    result, _tested, taken = probe_route(HEAD + body + tail + "M30\n", _wall(150), "t.nc")
+    assert result.verdict.label == "safe" and taken >= 10 and runners
+    assert runners[-1].state.last.get("N") == 120
+
+
+@pytest.mark.parametrize("runs", [True, False])
+def test_a_box_run_keeps_the_last_n(runs):
+    """``verify`` of a numbered run and a move by #4114, with the reader on or off (a ``#`` in the text: the lanes
+    read it either way): the move leaves the box (machine X 100 + 120.5 past 150); with a later ``N2 M08`` (the
+    general path's) it stays in it."""
+    body = "".join(f"N{10 * k} G01 X{k % 7}. Y{k % 5}.\n" for k in range(1, 13))
+    text = HEAD + body + TAIL
+    result, _tested, _taken = probe_route(text, _wall(150), "t.nc", runs=runs)
+    assert result.verdict.label == "unsafe", result.reasons
+    assert verify_text(HEAD + body + "N2 M08\n" + TAIL, _wall(150), file="t.nc").verdict.label == "safe"
+
+
+@pytest.mark.parametrize("fast", [True, False])
+@pytest.mark.parametrize("tail", ["", "G01 X3. Y1.\n"])
+def test_a_vectorized_run_keeps_the_last_n(fast, tail):
+    """A numbered run long enough for the vectorized fast path (``fast``; its runs are the main text's plain
+    lines between macro statements) and the full path give the same read: the last N written."""
+    from nczones.gcode import interpret_text
+
+    body = "".join(f"N{k} G01 X{k % 7}. Y{k % 5}.\n" for k in range(1, 1201))
+    run = interpret_text(HEAD + "#1 = 0\n" + body + tail + TAIL, mill(), file="t.nc", fast=fast)
+    assert list(run.segments())[-1].end[0] == Fraction(1200) + Fraction(1, 2) + 100
