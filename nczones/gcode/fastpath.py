@@ -259,9 +259,8 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
                 req.resume = (req.pos + _char_offsets(blk)(starts[taken]) if taken < nlines else end,
                               lineno + taken, counter[0])
                 last = getattr(it, "last", None) if getattr(interp, "dialect", "linuxcnc") == "fanuc" else None
-                number = _last_number(code, taken) if last is not None else None
-                if number is not None:  # a Fanuc macro reads the last block's N (#4114), as the general path keeps it
-                    last["N"] = number
+                if last is not None:  # a Fanuc macro reads the last N and M (#4114, #4113): the general path's
+                    _keep_last(last, code, taken)
     if taken == 0:
         step = 1 << retries
         if nlines - step >= MIN_RUN:
@@ -275,17 +274,30 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
     return chunk
 
 
-def _last_number(code: tuple[np.ndarray, np.ndarray], taken: int) -> Fraction | None:
-    """The N of the last of a block's first ``taken`` lines that has an N word, from its code bytes (``_classify``'s:
-    comments and blanks out, upper case; a simple line's N is its only N and digits follow it), None when none has.
+def _keep_last(last: dict, code: tuple[np.ndarray, np.ndarray], taken: int) -> None:
+    """``last["N"]`` and ``last["M"]``, the number of the last N and M word of a block's first ``taken`` lines, where
+    one has them (``_record_block``'s for the lines the run took)."""
+    for letter in ("N", "M"):
+        number = _last_word(code, taken, ord(letter))
+        if number is not None:
+            last[letter] = number
 
-    >>> c = np.frombuffer(b"N10G1X1G1X2N30X3", dtype=np.uint8)
-    >>> line = np.repeat(np.arange(3, dtype=np.int32), [7, 4, 5])
-    >>> _last_number((c, line), 2), _last_number((c, line), 3), _last_number((c, line), 0)
+
+def _last_word(code: tuple[np.ndarray, np.ndarray], taken: int, letter: int) -> Fraction | None:
+    """The number of the last word ``letter`` in a block's first ``taken`` lines, from its code bytes
+    (``_classify``'s: comments and blanks out, upper case; a simple line's words are letters and numbers), None
+    when none has one.
+
+    >>> c = np.frombuffer(b"N10G1X1M8G1X2N30X3M09", dtype=np.uint8)
+    >>> line = np.repeat(np.arange(3, dtype=np.int32), [9, 4, 8])
+    >>> n, m = ord("N"), ord("M")
+    >>> _last_word((c, line), 2, n), _last_word((c, line), 3, n), _last_word((c, line), 0, n)
     (Fraction(10, 1), Fraction(30, 1), None)
+    >>> _last_word((c, line), 2, m), _last_word((c, line), 3, m)
+    (Fraction(8, 1), Fraction(9, 1))
     """
     c, cl_line = code
-    at = np.flatnonzero((c == _N) & (cl_line < taken))
+    at = np.flatnonzero((c == letter) & (cl_line < taken))
     if at.size == 0:
         return None
     k = first = int(at[-1]) + 1
@@ -295,7 +307,6 @@ def _last_number(code: tuple[np.ndarray, np.ndarray], taken: int) -> Fraction | 
     return decimal_value(c[first:k].tobytes().decode("ascii")) if k > first else None
 
 
-_N = ord("N")
 _NUMBER_BYTES = frozenset(b"0123456789.+-")
 
 

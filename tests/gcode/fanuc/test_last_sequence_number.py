@@ -1,4 +1,4 @@
-"""``#4114``, the last sequence number, after blocks every lane of the Fanuc reader takes.
+"""``#4114``, the last sequence number (and ``#4113``, the last M), after blocks every lane of the Fanuc reader takes.
 
 The control keeps the N of the last block it read (0i-MF "System variables": #4114, modal information of the
 last block); a macro may read it (specs/fanuc.md lists it as modelled).  The general path keeps it
@@ -97,3 +97,15 @@ def test_a_vectorized_run_keeps_the_last_n(fast, tail):
     body = "".join(f"N{k} G01 X{k % 7}. Y{k % 5}.\n" for k in range(1, 1201))
     run = interpret_text(HEAD + "#1 = 0\n" + body + tail + TAIL, mill(), file="t.nc", fast=fast)
     assert list(run.segments())[-1].end[0] == Fraction(1200) + Fraction(1, 2) + 100
+
+
+@pytest.mark.parametrize("fast", [True, False])
+def test_a_vectorized_run_keeps_the_last_m(fast):
+    """``#4113``, the last M code, after a run the vectorized fast path takes with an M word in it (it takes M3-M9)
+    and the full path: M08 in the run, not the M09 before it."""
+    from nczones.gcode import interpret_text
+
+    body = "".join(f"G01 X{k % 7}. Y{k % 5}.{' M08' if k == 1100 else ''}\n" for k in range(1, 1201))
+    text = HEAD + "M09\n#1 = 0\n" + body + TAIL.replace("#4114", "#4113")
+    run = interpret_text(text, mill(), file="t.nc", fast=fast)
+    assert list(run.segments())[-1].end[0] == Fraction(8) + Fraction(1, 2) + 100
