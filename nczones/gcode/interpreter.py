@@ -944,6 +944,10 @@ class Interpreter:
         return 410 if self._comp.side == LEFT else 420
 
     # ------------------------------------------------------------------ driver
+    #: Whether the program may read the N of the last block (a Fanuc macro's #4114, kept in ``last["N"]``):
+    #: the plain-move lane then keeps it too
+    keeps_number = False
+
     def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
         """Interpret blocks in execution order, yielding motion chunks.
 
@@ -968,6 +972,8 @@ class Interpreter:
                     # execute() inlined (subclasses that wrap execute() go through it)
                     if block.index == self._declined or not self._plain(block.letters, block.values):
                         self._execute_general(block)
+                    elif self.keeps_number and block.number is not None:
+                        self.last["N"] = block.number  # (_execute_general's _record_block keeps it)
                 else:
                     self.execute(block)
             except StopProgram:
@@ -985,6 +991,8 @@ class Interpreter:
         if self.m73_saved:
             self.m73_returns()
         if type(block) is PlainBlock and self._plain(block.letters, block.values):
+            if self.keeps_number and block.number is not None:
+                self.last["N"] = block.number  # (_execute_general's _record_block keeps it)
             return
         self._execute_general(block)
 

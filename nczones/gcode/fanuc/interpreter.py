@@ -310,6 +310,8 @@ class FanucInterpreter(Interpreter):
         return {11: self.scaling is not None, 16: self.rotation is not None, 17: self.polar is not None,
                 22: self.mirroring is not None}
 
+    keeps_number = True  # #4114 (Interpreter.run: a PlainBlock the plain-move lane takes)
+
     # ------------------------------------------------------------------ the plain-move lane
     #: Set by ``nczones.gcode.fanuc.columns.column_runs``: the lane then writes its straight moves from motion
     #: ``row_sink.start`` on as column rows (``columns.Rows`` in ``emitted``), not as segments

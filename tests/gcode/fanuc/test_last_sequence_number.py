@@ -16,6 +16,7 @@ from fractions import Fraction
 
 import pytest
 
+from nczones.errors import GcodeError
 from nczones.prover import verify_text
 from tests.gcode.fanuc.helpers import ends, mill, probe_route
 
@@ -109,3 +110,62 @@ def test_a_vectorized_run_keeps_the_last_m(fast):
     text = HEAD + "M09\n#1 = 0\n" + body + TAIL.replace("#4114", "#4113")
     run = interpret_text(text, mill(), file="t.nc", fast=fast)
     assert list(run.segments())[-1].end[0] == Fraction(8) + Fraction(1, 2) + 100
+
+
+#: the system variables the differential below reads (modal G groups, last D F H M N T, the G54.1 P number,
+#: block end, machine and current positions)
+_READS = [4001, 4002, 4003, 4005, 4006, 4007, 4008, 4009, 4010, 4012, 4014, 4015, 4016, 4017, 4107, 4109, 4111,
+          4113, 4114, 4120, 4130, 5001, 5002, 5003, 5021, 5022, 5023, 5041, 5042, 5043]
+
+
+def _random_blocks(r) -> str:
+    """Plain blocks of every kind the lanes take or hand on (numbered or not, M, F, T, D, whole-circle arcs, G91,
+    G43...); a block of axis words alone after an arc is written G01 (else it is an arc without a centre)."""
+    lines, arc = [], False
+    for _ in range(r.randint(1, 30)):
+        w = [f"N{r.randint(1, 9999)}"] if r.random() < 0.3 else []
+        kind = r.choice(["G00", "G01", "", "G02", "M", "F", "G91", "G90", "G18", "G17", "G43", "G49", "T", "D",
+                         "G61", "G64"])
+        if kind in ("G00", "G01", ""):
+            w += [kind or ("G01" if arc else "")]
+            w += [f"{a}{r.randint(-300, 300) / 10:.1f}" for a in r.sample("XYZ", r.randint(1, 3))]
+            w += [f"F{r.randint(50, 900)}."] if r.random() < 0.3 else []
+            w += [f"M0{r.choice([3, 5, 8, 9])}"] if r.random() < 0.2 else []
+            arc = False
+        elif kind == "G02":
+            w += ["G17", r.choice(["G02", "G03"]), f"I{r.randint(1, 50)}."]  # a whole circle from where it is
+            arc = True
+        else:
+            w.append({"M": f"M0{r.choice([3, 5, 8, 9])}", "F": f"F{r.randint(50, 900)}.", "G43": "G43 H1",
+                      "G49": "G49", "T": f"T{r.randint(1, 9)}", "D": f"D{r.randint(1, 9)}"}.get(kind, kind))
+        lines.append(" ".join(x for x in w if x))
+        if r.random() < 0.1:
+            lines.append("#1 = #1 + 1")
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_the_lanes_leave_what_the_general_path_leaves(monkeypatch, seed):
+    """Differential: random blocks, then every variable of :data:`_READS` read into a move, with the lanes (and
+    the vectorized path) and with the general path alone (no lane: ``Interpreter.run`` executes every block;
+    its plain blocks through ``_plain``, which keeps the N as ``_record_block`` does): the same moves."""
+    import random
+
+    from nczones.gcode import interpret_text
+    from nczones.gcode.interpreter import Interpreter
+
+    def moves(text: str, lanes: bool) -> tuple | str:
+        with monkeypatch.context() as m:
+            if not lanes:
+                m.setattr(Interpreter, "lane_for_blocks", lambda self: None)
+            try:
+                run = interpret_text(text, mill(), file="t.nc", fast=lanes)
+                return tuple(s.end for s in run.segments())[-len(_READS):], run.status, run.unsupported
+            except GcodeError as e:  # (the same error either way)
+                return str(e)
+
+    r = random.Random(seed)
+    for _ in range(4):
+        text = (HEAD + "#1 = 0\n" + _random_blocks(r) + "G90 G17 G49\n"
+                + "".join(f"#7 = #{v}\nG01 X[#7 + 0.5] Y{k}. F100.\n" for k, v in enumerate(_READS)) + "M30\n")
+        assert moves(text, True) == moves(text, False), text
