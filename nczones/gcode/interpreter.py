@@ -947,6 +947,7 @@ class Interpreter:
     #: Whether the program may read the N of the last block (a Fanuc macro's #4114, kept in ``last["N"]``):
     #: the plain-move lane then keeps it too
     keeps_number = False
+    last: dict[str, Fraction]  # (the Fanuc interpreter's: the last D F H M N words read)
 
     def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
         """Interpret blocks in execution order, yielding motion chunks.
