@@ -34,7 +34,9 @@ by ``_fast_cycle_run``: per hole the rapids, feed, dwell (G82, the
 ``dwell`` column) and retract ``Interpreter._cycle`` emits, with its
 ``derived`` names (the ``derived`` column).  Any other line (G80, G0,
 G91, L, R, Z, P, F words, G73/G83-G89, G18/G19) ends the hole run and goes
-to the full path.
+to the full path.  A Fanuc control's hole lines the same way (its G81/G82
+after the cycle's first block, with R and Z written in G90, at the top
+level: ``_fanuc_holes``, ``FanucInterpreter._fanuc_cycle``'s rows).
 
 Invariants
 ----------
@@ -243,12 +245,12 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
     taken = 0
     if it.m73_saved:
         it.m73_returns()  # what executing the run's first block would do first (no-op inside the call)
-    if lineno == req.lineno and (it.motion in (810, 820) or _state_ok(it)) and _state_decimal(it) is not None:
+    if lineno == req.lineno and (_holes_active(it) or _state_ok(it)) and _state_decimal(it) is not None:
         blk = interp.text[req.pos:end].encode("utf-8")
         simple, starts, _ends, code = _classify(blk, it)
         if len(starts) == nlines and simple.all():
             counter = [req.index]
-            if it.motion in (810, 820):
+            if _holes_active(it):
                 done = _fast_cycle_run(interp, code, 0, nlines, counter, lineno - 1)
             else:
                 done = _fast_run(interp, code, 0, nlines, counter, lineno - 1)
@@ -258,9 +260,7 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
                 chunk, taken = done
                 req.resume = (req.pos + _char_offsets(blk)(starts[taken]) if taken < nlines else end,
                               lineno + taken, counter[0])
-                last = getattr(it, "last", None) if getattr(interp, "dialect", "linuxcnc") == "fanuc" else None
-                if last is not None:  # a Fanuc macro reads the last N and M (#4114, #4113): the general path's
-                    _keep_last(last, code, taken)
+                _keep_last(it, code, 0, taken)  # a Fanuc macro reads the last N and M (#4114, #4113)
     if taken == 0:
         step = 1 << retries
         if nlines - step >= MIN_RUN:
@@ -274,37 +274,40 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
     return chunk
 
 
-def _keep_last(last: dict, code: tuple[np.ndarray, np.ndarray], taken: int) -> None:
-    """``last["N"]`` and ``last["M"]``, the number of the last N and M word of a block's first ``taken`` lines, where
-    one has them (``_record_block``'s for the lines the run took)."""
-    for letter in ("N", "M"):
-        number = _last_word(code, taken, ord(letter))
-        if number is not None:
-            last[letter] = number
+def _keep_last(it: Any, code: tuple[np.ndarray, np.ndarray], lo: int, hi: int) -> None:
+    """A Fanuc interpreter's ``last["N"]`` and ``last["M"]`` (what a macro reads as #4114 and #4113): the number
+    of the last N and M word of a block's lines ``lo`` .. ``hi - 1``, which a run took, where they have one
+    (``_record_block`` keeps them block by block on the full path)."""
+    last = getattr(it, "last", None) if getattr(it, "keeps_number", False) else None
+    if last is not None:
+        for letter in ("N", "M"):
+            number = _last_word(code, lo, hi, ord(letter))
+            if number is not None:
+                last[letter] = number
 
 
-def _last_word(code: tuple[np.ndarray, np.ndarray], taken: int, letter: int) -> Fraction | None:
-    """The number of the last word ``letter`` in a block's first ``taken`` lines, from its code bytes
-    (``_classify``'s: comments and blanks out, upper case; a simple line's words are letters and numbers), None
-    when none has one.
+def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: int) -> Fraction | None:
+    """The number of the last word ``letter`` in a block's lines ``lo`` .. ``hi - 1`` in a line with another word,
+    from its code bytes (``_classify``'s: comments and blanks out, upper case; a simple line's words are letters
+    and numbers), None when none has one.
 
-    >>> c = np.frombuffer(b"N10G1X1M8G1X2N30X3M09", dtype=np.uint8)
-    >>> line = np.repeat(np.arange(3, dtype=np.int32), [9, 4, 8])
+    >>> c = np.frombuffer(b"N10G1X1M8G1X2N30X3M09N40", dtype=np.uint8)
+    >>> line = np.repeat(np.arange(4, dtype=np.int32), [9, 4, 8, 3])
     >>> n, m = ord("N"), ord("M")
-    >>> _last_word((c, line), 2, n), _last_word((c, line), 3, n), _last_word((c, line), 0, n)
+    >>> _last_word((c, line), 0, 2, n), _last_word((c, line), 0, 4, n), _last_word((c, line), 1, 2, n)
     (Fraction(10, 1), Fraction(30, 1), None)
-    >>> _last_word((c, line), 2, m), _last_word((c, line), 3, m)
+    >>> _last_word((c, line), 0, 2, m), _last_word((c, line), 0, 3, m)
     (Fraction(8, 1), Fraction(9, 1))
     """
     c, cl_line = code
-    at = np.flatnonzero((c == letter) & (cl_line < taken))
-    if at.size == 0:
-        return None
-    k = first = int(at[-1]) + 1
-    line = cl_line[first - 1]
-    while k < c.size and cl_line[k] == line and c[k] in _NUMBER_BYTES:
-        k += 1
-    return decimal_value(c[first:k].tobytes().decode("ascii")) if k > first else None
+    for at in np.flatnonzero((c == letter) & (cl_line >= lo) & (cl_line < hi))[::-1].tolist():
+        k = first = at + 1
+        line = cl_line[at]
+        while k < c.size and cl_line[k] == line and c[k] in _NUMBER_BYTES:
+            k += 1
+        if k > first and (at > 0 and cl_line[at - 1] == line or k < c.size and cl_line[k] == line):
+            return decimal_value(c[first:k].tobytes().decode("ascii"))
+    return None  # (a line of its N alone is no block: the language layer skips it, plain_first)
 
 
 _NUMBER_BYTES = frozenset(b"0123456789.+-")
@@ -486,10 +489,12 @@ def _run_block(interp: Any, blk: bytes, line0: int, block_counter: Any, prep: An
             failures = 0
         if k < len(fast_runs) and fast_runs[k][0] <= i:
             a, b = fast_runs[k]
-            if it.motion in (810, 820):
+            if _holes_active(it):
                 done = _fast_cycle_run(interp, code, i, b, block_counter, line0, _words_from(parsed, a, b, i))
                 if done is not None:
-                    chunk, i = done
+                    chunk, end = done
+                    _keep_last(it, code, i, end)
+                    i = end
                     if len(chunk):
                         yield chunk
                     failures = 0
@@ -500,6 +505,7 @@ def _run_block(interp: Any, blk: bytes, line0: int, block_counter: Any, prep: An
                     end = b
                     if type(chunk) is tuple:  # the run was cut before a line it cannot take
                         chunk, end = chunk
+                    _keep_last(it, code, i, end)
                     if len(chunk):
                         yield chunk
                     i = end
@@ -1392,28 +1398,102 @@ def _cycle_state_ok(it: Any) -> bool:
             and it.cycle_il is not None and all(a in it.index for a in "XYZ"))
 
 
-def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
-    """Hole lines lo..j-1 (the longest prefix of lo..hi-1 holding only X, Y and a leading N) under an
-    active G81/G82 cycle, in columns: ``(chunk, j)``, or None to send line ``lo`` to the full path.
+def _holes_active(it: Any) -> bool:
+    """Is a G81/G82 cycle modal (LinuxCNC's motion mode, a Fanuc control's group 09): hole lines may follow."""
+    return it.motion in (810, 820) or getattr(it, "cycle", None) in (810, 820)
 
-    Mirrors ``Interpreter._cycle`` for a block with X/Y words only, after the
-    cycle's first block (``_last_cycle`` is the active cycle, so R, Z and P
-    are the sticky ones), in G90 G17 G94: per hole an "up to R" rapid at the
-    previous hole when the initial level is below R, a "position" rapid at
-    the clear level, a "to R" rapid when R is below it, the feed to the
-    bottom, a dwell (G82) and the retract rapid to the clear level (R under
-    G99, the initial level under G98).  The Z axis must already be at the
-    clear level (true after every hole).
-    """
-    it = interp.interpreter
+
+def _linuxcnc_holes(it: Any) -> tuple | None:
+    """LinuxCNC's hole (``Interpreter._cycle`` for a block of X/Y words after the cycle's first): ``(name, levels,
+    template, feed, dwell, the modal groups noted)``, the template's rows ``(kind, at the previous hole?, level,
+    what)``: an "up to R" rapid at the previous hole when the initial level is below R, a "position" rapid at
+    the clear level, a "to R" rapid when R is below it, the feed to the bottom, a dwell (G82) and the retract to
+    the clear level (R under G99, the initial level under G98); None when the state is not that one (the Z axis
+    must be at the clear level: true after every hole)."""
     if not _cycle_state_ok(it):
         return None
+    ic = it.index["Z"]
+    ln = (lambda v: v * Fraction(254, 10)) if it.inch else (lambda v: v)
+    r = ln(it.cycle_r) + it.off[ic]
+    cc = ln(it.cycle_cc) + it.off[ic]
+    il = it.cycle_il
+    if r < cc:
+        return None  # GC306: the full path raises it
+    up_r = il < r
+    clear = r if (it.retract_r or up_r) else il
+    if it.pos[ic] != clear:
+        return None
+    dwell = it.cycle_p if it.motion == 820 else None
+    R, L, D = SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.DWELL
+    tmpl = [(R, True, "r", "up to R")] if up_r else []
+    tmpl.append((R, False, "clear", "position"))
+    if r < clear:
+        tmpl.append((R, False, "r", "to R"))
+    tmpl.append((L, False, "cc", "feed"))
+    if dwell is not None:
+        tmpl.append((D, False, "cc", "dwell"))
+    tmpl.append((R, False, "clear", "retract"))
+    name = "G81" if it.motion == 810 else "G82"
+    return name, {"r": r, "cc": cc, "clear": clear}, tmpl, ln(it.feed), dwell, ("units", "distance", "offset", "plane")
+
+
+def _fanuc_holes_state_ok(it: Any) -> bool:
+    """A Fanuc state in which a hole line (X/Y words only) is what ``FanucInterpreter._fanuc_cycle`` makes of it
+    in its simplest branch: G81/G82 after the cycle's first block, G90 G17 G94 with a feed, R and Z written in
+    G90, nothing pending (no unknown code, transform, compensation, tool length change or dependency tracking)."""
+    data = it.cycle_data
+    return (it.cycle in (810, 820) and not it.unsupported and it.absolute and it.plane is Plane.XY
+            and it.feed_mode == 94 and it.feed > 0 and it.initial_level is not None and "R" in data
+            and "Z" in data and data.get("R90") is True and data.get("Z90") is True and not it.comp_on
+            and not it.comp_just_off and not it.track and it.prerotation_xy is None and it.machine_at is None
+            and not it.m73_saved and it.spline_state is None and it.prog is None and it._tlo_shift is None
+            and not it._tlo_untaken and not it.after_home and all(a in it.index for a in "XYZ"))
+
+
+def _fanuc_holes(it: Any) -> tuple | None:
+    """A Fanuc control's hole (``FanucInterpreter._fanuc_cycle`` for a block of X/Y words: 0i/30i-M "Canned cycle
+    for drilling"), as :func:`_linuxcnc_holes` gives LinuxCNC's: a "position" rapid at the current level (the
+    top: the initial level under G98, R under G99, where the last hole ended), a "to R" rapid when the top is not
+    R, the feed to the bottom, a dwell (G82 with P) and the "retract" rapid to the top; None in another state or
+    with the tool axis not at the top."""
+    if not _fanuc_holes_state_ok(it):
+        return None
+    from .fanuc.interpreter import dwell_p_seconds
+
+    ic, data = it.index["Z"], it.cycle_data
+    r = it.length_mm(data["R"]) + it.off[ic]
+    bottom = it.length_mm(data["Z"]) + it.off[ic]
+    top = r if it.retract_r else it.initial_level
+    if it.pos[ic] != top:
+        return None
+    dwell = dwell_p_seconds(data["P"]) if "P" in data and it.cycle == 820 else None
+    R, L, D = SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.DWELL
+    tmpl = [(R, False, "clear", "position")]
+    if top != r:
+        tmpl.append((R, False, "r", "to R"))
+    tmpl.append((L, False, "cc", "feed"))
+    if dwell:
+        tmpl.append((D, False, "cc", "dwell"))
+    tmpl.append((R, False, "clear", "retract"))
+    name = "G81" if it.cycle == 810 else "G82"
+    return (name, {"r": r, "cc": bottom, "clear": top}, tmpl, it.length_mm(it.feed), dwell,
+            ("units", "distance", "offset", "plane", "retract"))
+
+
+#: The hole of each dialect (:func:`_fast_cycle_run`)
+_HOLES = {"linuxcnc": _linuxcnc_holes, "fanuc": _fanuc_holes}
+
+
+def _hole_lines(code: Any, lo: int, hi: int, parsed: Any) -> tuple | None:
+    """The hole lines lo..j-1 (the longest prefix of lo..hi-1 holding only X, Y and a leading N): ``(j, rel,
+    wletter, wval, wdec, wpoint, has_word)``, the X and Y words' lines (relative to ``lo``), letters, values,
+    decimals and points, and which lines have a word; None when there is none."""
     c, cl_line = code
     if parsed is None:
         parsed = _parse_words(c, cl_line, lo, hi)
     if parsed is None:
         return None
-    wl, wletter, wval, wdec, _wpoint = parsed
+    wl, wletter, wval, wdec, wpoint = parsed
     # the first line (from lo) with a word other than X, Y, N ends the run; so does a repeated
     # letter or an N that is not the first word
     rel = (wl - lo).astype(np.int64)
@@ -1433,30 +1513,42 @@ def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if j <= lo:
         return None
     keep = (rel < j - lo) & ~isN
-    rel, wletter, wval, wdec = rel[keep], wletter[keep], wval[keep], wdec[keep]
     has_word = np.zeros(j - lo, dtype=bool)
-    has_word[rel] = True
-    n = j - lo
-    inch = it.inch
-    ia, ib, ic = it.index["X"], it.index["Y"], it.index["Z"]
-    motion = it.motion
-    name = "G81" if motion == 810 else "G82"
-    INCH = Fraction(254, 10)
-    ln = (lambda v: v * INCH) if inch else (lambda v: v)
-    r = ln(it.cycle_r) + it.off[ic]
-    cc = ln(it.cycle_cc) + it.off[ic]
-    il = it.cycle_il
-    if r < cc:
-        return None  # GC306: the full path raises it
-    up_r = il < r
-    clear = r if (it.retract_r or up_r) else il
-    if it.pos[ic] != clear:
+    has_word[rel[keep]] = True
+    return j, rel[keep], wletter[keep], wval[keep], wdec[keep], wpoint[keep], has_word
+
+
+def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
+    """Hole lines lo..j-1 (the longest prefix of lo..hi-1 holding only X, Y and a leading N) under an
+    active G81/G82 cycle, in columns: ``(chunk, j)``, or None to send line ``lo`` to the full path.
+
+    The rows of a hole are the dialect's template (:data:`_HOLES`: LinuxCNC's ``Interpreter._cycle``, a Fanuc
+    control's ``FanucInterpreter._fanuc_cycle``, each for a block of X/Y words after the cycle's first), the
+    same kinds, levels, feeds, dwells and ``derived`` names; the state is handed back as they leave it."""
+    it = interp.interpreter
+    plan = _HOLES[getattr(it, "dialect", "linuxcnc")](it)
+    if plan is None:
         return None
-    fmm = ln(it.feed)
-    dwell = it.cycle_p if motion == 820 else None
+    lines = _hole_lines(code, lo, hi, parsed)
+    if lines is None:
+        return None
+    j, rel, wletter, wval, wdec, wpoint, has_word = lines
+    if getattr(it, "dialect", "linuxcnc") == "fanuc" and not _fanuc_words_ok(it, wletter, wval, wdec, wpoint):
+        return None  # a length without a point, or finer than the increment: the language layer's rules
+    scaled = _hole_scale(it, plan, wval, wdec)
+    if scaled is None:
+        return None
+    return _hole_chunk(interp, plan, scaled, (lo, j, rel, wletter, wval, wdec, has_word), block_counter, line0), j
+
+
+def _hole_scale(it: Any, plan: tuple, wval: np.ndarray, wdec: np.ndarray) -> tuple | None:
+    """The scale ``S`` of a hole run's columns and the state scaled by it: ``(S, pos0, off, levels, tool length,
+    feed, dwell)``; None when a number is not a decimal of at most :data:`_MAX_SCALE` places or too large."""
+    _name, levels, _tmpl, fmm, dwell, _notes = plan
+    inch = it.inch
     s = int(wdec.max()) if wdec.size else 0
     S = s + (1 if inch else 0)
-    for q in [it.tlo, fmm, r, cc, clear, *it.pos, *it.off] + ([dwell] if dwell is not None else []):
+    for q in [it.tlo, fmm, *levels.values(), *it.pos, *it.off] + ([dwell] if dwell is not None else []):
         dd = _decimals(q)
         if dd is None:
             return None
@@ -1469,87 +1561,88 @@ def _fast_cycle_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
                 return None
     pos0 = [_scaled_int(p, S) for p in it.pos]
     off = [_scaled_int(o, S) for o in it.off]
-    z_r, z_cc, z_clear, tl, f_s = (_scaled_int(q, S) for q in (r, cc, clear, it.tlo, fmm))
+    z = {k: _scaled_int(v, S) for k, v in levels.items()}
+    tl, f_s = _scaled_int(it.tlo, S), _scaled_int(fmm, S)
     dw = _scaled_int(dwell, S) if dwell is not None else 0
-    if max(map(abs, pos0 + off + [z_r, z_cc, z_clear, tl, f_s, dw]), default=0) > _LIMIT_STATE:
+    if max(map(abs, pos0 + off + [*z.values(), tl, f_s, dw]), default=0) > _LIMIT_STATE:
         return None
-    # per line: the hole's X and Y (machine), forward filled
+    return S, pos0, off, z, tl, f_s, dw
+
+
+def _hole_xy(it: Any, S: int, pos0: list[int], off: list[int], words: tuple) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Per line of a hole run, the hole's X and Y (machine, scaled), forward filled from the last word, and the
+    lines that write them."""
+    _lo, j, rel, wletter, wval, wdec, _has = words
+    n = len(_has)
     ar = np.arange(n, dtype=np.int64)
-    moving = np.zeros(n, dtype=bool)
     cols = []
-    for letter, k in (("X", ia), ("Y", ib)):
+    for letter, k in (("X", it.index["X"]), ("Y", it.index["Y"])):
         m = wletter == ord(letter)
         val = np.zeros(n, dtype=np.int64)
         pres = np.zeros(n, dtype=bool)
         if m.any():
-            e = S - wdec[m] - (1 if inch else 0)
+            e = S - wdec[m] - (1 if it.inch else 0)
             v = wval[m] * _POW10[e]
-            if inch:
+            if it.inch:
                 v = v * 254
             val[rel[m]] = v
             pres[rel[m]] = True
-        moving |= pres
         pidx = np.maximum.accumulate(np.where(pres, ar, -1))
-        cols.append(np.where(pidx >= 0, val[np.maximum(pidx, 0)] + off[k], pos0[k]))
-    holes = np.flatnonzero(moving)
+        cols.append((np.where(pidx >= 0, val[np.maximum(pidx, 0)] + off[k], pos0[k]), pres))
+    return cols
+
+
+def _hole_chunk(interp: Any, plan: tuple, scaled: tuple, words: tuple, block_counter: Any,
+                line0: int) -> MotionChunk:
+    """The rows of a hole run (every hole the template's rows) as a column chunk; the interpreter's state after it."""
+    it = interp.interpreter
+    name, _levels, tmpl, _fmm, dwell, notes = plan
+    S, pos0, off, z, tl, f_s, dw = scaled
+    lo, _j, _rel, _wletter, _wval, _wdec, has_word = words
+    (cx, px_), (cy, py_) = _hole_xy(it, S, pos0, off, words)
+    holes = np.flatnonzero(px_ | py_)
     h = holes.size
+    n = len(has_word)
     block_of_line = np.cumsum(has_word) - 1 + block_counter[0]
     block_counter[0] += int(has_word.sum())
     it.blocks += int(has_word.sum())
     interp.fast_lines += n
     if h == 0:
-        return MotionChunk(it.axes, None, objects=(), file=interp.file), j
-    hx, hy = cols[0][holes], cols[1][holes]
+        return MotionChunk(it.axes, None, objects=(), file=interp.file)
+    ia, ib, ic = it.index["X"], it.index["Y"], it.index["Z"]
+    hx, hy = cx[holes], cy[holes]
     px = np.concatenate(([pos0[ia]], hx[:-1]))
     py = np.concatenate(([pos0[ib]], hy[:-1]))
-    # the template of one hole: (kind, at the previous hole?, z, what)
-    R, L, D = SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.DWELL
-    tmpl = []
-    if up_r:
-        tmpl.append((R, True, z_r, "up to R"))
-    tmpl.append((R, False, z_clear, "position"))
-    if z_r < z_clear:
-        tmpl.append((R, False, z_r, "to R"))
-    tmpl.append((L, False, z_cc, "feed"))
-    if dwell is not None:
-        tmpl.append((D, False, z_cc, "dwell"))
-    tmpl.append((R, False, z_clear, "retract"))
     T = len(tmpl)
     rows = h * T
-    na = len(it.axes)
-    end = np.empty((rows, na), dtype=np.int64)
+    end = np.empty((rows, len(it.axes)), dtype=np.int64)
     end[:] = np.asarray(pos0, dtype=np.int64)
-    ex = end[:, ia].reshape(h, T)
-    ey = end[:, ib].reshape(h, T)
-    ez = end[:, ic].reshape(h, T)
-    for t, (_kind, prev, z, _what) in enumerate(tmpl):
+    ex, ey, ez = (end[:, k].reshape(h, T) for k in (ia, ib, ic))
+    for t, (_kind, prev, level, _what) in enumerate(tmpl):
         ex[:, t] = px if prev else hx
         ey[:, t] = py if prev else hy
-        ez[:, t] = z
-    end[:, ia] = ex.reshape(-1)
-    end[:, ib] = ey.reshape(-1)
-    end[:, ic] = ez.reshape(-1)
+        ez[:, t] = z[level]
+    end[:, ia], end[:, ib], end[:, ic] = ex.reshape(-1), ey.reshape(-1), ez.reshape(-1)
     start = np.vstack((np.asarray(pos0, dtype=np.int64)[None, :], end[:-1]))
-    kinds_t = np.array([int(t[0]) for t in tmpl], dtype=np.int8)
-    kind = np.tile(kinds_t, h)
+    kind = np.tile(np.array([int(t[0]) for t in tmpl], dtype=np.int8), h)
     names = np.empty(T, dtype=object)
     names[:] = [f"{name} {t[3]}" for t in tmpl]
-    derived = np.tile(names, h)
-    dwell_col = np.where(kind == D, dw, 0).astype(np.int64) if dwell is not None else None
+    D = SegmentKind.DWELL
     chunk = MotionChunk(
         it.axes, S, kind=kind, start=start, end=end,
         line=np.repeat(holes + (lo + 1 + line0), T).astype(np.int64),
         block=np.repeat(block_of_line[holes], T).astype(np.int64), tool_length=np.full(rows, tl, dtype=np.int64),
-        feed=np.full(rows, f_s, dtype=np.int64), file=interp.file, dwell=dwell_col, derived=derived,
+        feed=np.full(rows, f_s, dtype=np.int64), file=interp.file,
+        dwell=np.where(kind == D, dw, 0).astype(np.int64) if dwell is not None else None, derived=np.tile(names, h),
         frame=it.program_frame(), tool_register=it.tool_register, tools_known=True,
     )
-    # hand the state back to the interpreter (as _cycle/_emit leave it)
-    den = 10**S
+    # hand the state back to the interpreter (as the dialect's cycle and emit() leave it)
     last = end[-1].tolist()
-    it.pos = tuple(it.pos[k] if k not in (ia, ib, ic) else Fraction(int(last[k]), den) for k in range(na))
+    den = 10**S
+    it.pos = tuple(it.pos[k] if k not in (ia, ib, ic) else Fraction(int(last[k]), den) for k in range(len(it.axes)))
     it.prerotation_xy_next = None
-    it.note_assumed(("units", "distance", "offset", "plane"))
+    it.note_assumed(notes)
     it.segment_count += rows
-    for kk in (R, L, D):
+    for kk in (SegmentKind.RAPID, SegmentKind.LINE, D):
         it.kind_counts[kk] += h * sum(1 for t in tmpl if t[0] is kk)
-    return chunk, j
+    return chunk
