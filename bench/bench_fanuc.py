@@ -60,6 +60,19 @@ def cam_program(n: int, seed: int = 7) -> str:
     return "\n".join(out) + "\n"
 
 
+def holes_program(n: int, seed: int = 11, dialect: str = "fanuc") -> str:
+    """A CAM drilling list: a ``G98 G81`` block, then ``n`` lines of X and Y (four motions a hole), Fanuc words
+    (decimal points) or, with ``dialect="linuxcnc"``, the same holes in LinuxCNC's (rs274's peer program)."""
+    rnd = random.Random(seed)
+    fanuc = dialect == "fanuc"
+    head = (["%", "O1000 (HOLES)", "G00 G17 G40 G49 G80 G90 G21", "G54 G00 X0. Y0.", "G43 H1 Z25."] if fanuc else
+            ["G17 G40 G49 G80 G90 G21", "G54 G0 X0 Y0", "G43 H1 Z25"])
+    out = head + ["G98 G81 X0. Y0. Z-2. R2. F300." if fanuc else "G98 G81 X0 Y0 Z-2 R2 F300"]
+    out += [f"X{rnd.uniform(0, 500):.3f} Y{rnd.uniform(0, 300):.3f}" for _ in range(n)]
+    out += ["G80", "M30", "%"] if fanuc else ["G80", "M30"]
+    return "\n".join(out) + "\n"
+
+
 #: A macro loop: per iteration WHILE, four assignments, an IF, a move, END (8 executed lines).
 MACRO_BODY = 8
 

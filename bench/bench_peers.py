@@ -225,7 +225,7 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
                 continue
             out.append((f"corpus {Path(r['path']).name}", CORPUS / r["path"], "linuxcnc", ""))
     # rs274 runs the LinuxCNC equivalent of each Fanuc loop row (the o-word loop, a sub called with or without
-    # arguments): its column is marked with '*'
+    # arguments) and of the Fanuc hole list (the same holes in LinuxCNC's words): its column is marked with '*'
     gen(f"Fanuc Macro B loop, {a.macro:,} executed lines", bench_fanuc.macro_program(a.macro), "fanuc",
         peer=bench_fanuc.linuxcnc_macro_program(a.macro))
     gen(f"Fanuc G65 call per iteration, {a.macro:,} lines", bench_fanuc.call_program(a.macro), "fanuc",
@@ -233,6 +233,8 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
     gen(f"Fanuc M98 call per iteration, {a.macro:,} lines", bench_fanuc.subprogram_program(a.macro), "fanuc",
         peer=bench_fanuc.linuxcnc_subprogram_program(a.macro))
     gen(f"LinuxCNC o-word loop, {a.macro:,} executed lines", bench_fanuc.linuxcnc_macro_program(a.macro))
+    gen(f"Fanuc G81 hole list, {a.small:,} holes", bench_fanuc.holes_program(a.small), "fanuc",
+        peer=bench_fanuc.holes_program(a.small, dialect="linuxcnc"))
     return out
 
 
@@ -368,6 +370,7 @@ SCALING_CLASSES = (
     ("Macro B WHILE loop", "bench_fanuc", "macro_program({n})", "fanuc"),
     ("Fanuc G65 call loop", "bench_fanuc", "call_program({n})", "fanuc"),
     ("Fanuc M98 call loop", "bench_fanuc", "subprogram_program({n})", "fanuc"),
+    ("Fanuc G81 hole list", "bench_fanuc", "holes_program({n})", "fanuc"),
 )
 
 
