@@ -159,8 +159,9 @@ FANUC_CANCEL_CYCLE_G: frozenset[int | Fraction] = frozenset((0, 1, 2, 3, 80))
 _FANUC_PLAIN_G = frozenset((0, 10))
 _FANUC_BOX_G = frozenset((0, 10, 20, 30))
 _FANUC_FAST_G = frozenset((0, 10, 20, 30))
-#: G81/G82 hole lines after the cycle's first block (fastpath._fast_cycle_run with fastpath._fanuc_holes)
-_FANUC_FAST_CYCLE_G = frozenset((810, 820))
+#: The Fanuc cycles whose hole lines (X/Y after the cycle's first block) the fast path takes
+#: (fastpath._fast_cycle_run with fastpath._fanuc_holes; G76's shift and G87's back boring are the full path's)
+FANUC_HOLE_CYCLES = frozenset((730, 740, 810, 820, 830, 840, 850, 860, 890))
 _FANUC_ARC_PLAIN = ("an arc: the plain lane writes it only into the box route's run box (the boxes column); with "
                     "segments or column rows it hands the block to the full path")
 _BOXES_NO = "not a plain G0-G3 move: the plain lane hands the block to the full path"
@@ -175,7 +176,7 @@ def _fanuc_row(key: int, group: int) -> Code:
     return Code(key, group, {
         LANE_INTERPRETER: _UNSUPPORTED + "see fanuc.interpreter.UNKNOWN_G" if key in _FANUC_UNKNOWN_G else CLAIMS,
         LANE_PLAIN: CLAIMS if key in _FANUC_PLAIN_G else _FANUC_ARC_PLAIN if key in _FANUC_BOX_G else _PLAIN_NO,
-        LANE_FASTPATH: CLAIMS if key in _FANUC_FAST_G or key in _FANUC_FAST_CYCLE_G else _FAST_NO,
+        LANE_FASTPATH: CLAIMS if key in _FANUC_FAST_G or key in FANUC_HOLE_CYCLES else _FAST_NO,
         LANE_DOUBLES: _FANUC_DBL,
         LANE_BOXES: CLAIMS if key in _FANUC_BOX_G else _BOXES_NO,
         LANE_BOXRUN: CLAIMS if key in _FANUC_BOX_G else _BOXRUN_NO,

@@ -65,7 +65,7 @@ from typing import Any
 import numpy as np
 
 from ..motion import PLANE_AXES, MotionChunk, Plane, SegmentKind
-from .codes import LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
+from .codes import FANUC_HOLE_CYCLES, LANE_FASTPATH, LINUXCNC_G, LINUXCNC_M, LaneCodes, claimed
 from .interpreter import LEAN_M
 from .lexer import decimal_value
 from .source import FileText, materialized
@@ -1399,8 +1399,9 @@ def _cycle_state_ok(it: Any) -> bool:
 
 
 def _holes_active(it: Any) -> bool:
-    """Is a G81/G82 cycle modal (LinuxCNC's motion mode, a Fanuc control's group 09): hole lines may follow."""
-    return it.motion in (810, 820) or getattr(it, "cycle", None) in (810, 820)
+    """Is a cycle modal whose hole lines the fast path may take (LinuxCNC's G81/G82 motion mode, a Fanuc
+    control's group 09 code of :data:`FANUC_HOLE_CYCLES`)?"""
+    return it.motion in (810, 820) or getattr(it, "cycle", None) in FANUC_HOLE_CYCLES
 
 
 def _linuxcnc_holes(it: Any) -> tuple | None:
@@ -1408,8 +1409,8 @@ def _linuxcnc_holes(it: Any) -> tuple | None:
     template, feed, dwell, the modal groups noted)``, the template's rows ``(kind, at the previous hole?, level,
     what)``: an "up to R" rapid at the previous hole when the initial level is below R, a "position" rapid at
     the clear level, a "to R" rapid when R is below it, the feed to the bottom, a dwell (G82) and the retract to
-    the clear level (R under G99, the initial level under G98); None when the state is not that one (the Z axis
-    must be at the clear level: true after every hole)."""
+    the clear level (R under G99, the initial level under G98), each row's ``derived`` name written out; None when
+    the state is not that one (the Z axis must be at the clear level: true after every hole)."""
     if not _cycle_state_ok(it):
         return None
     ic = it.index["Z"]
@@ -1425,24 +1426,28 @@ def _linuxcnc_holes(it: Any) -> tuple | None:
         return None
     dwell = it.cycle_p if it.motion == 820 else None
     R, L, D = SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.DWELL
-    tmpl = [(R, True, "r", "up to R")] if up_r else []
-    tmpl.append((R, False, "clear", "position"))
-    if r < clear:
-        tmpl.append((R, False, "r", "to R"))
-    tmpl.append((L, False, "cc", "feed"))
-    if dwell is not None:
-        tmpl.append((D, False, "cc", "dwell"))
-    tmpl.append((R, False, "clear", "retract"))
     name = "G81" if it.motion == 810 else "G82"
+    tmpl = [(R, True, "r", f"{name} up to R")] if up_r else []
+    tmpl.append((R, False, "clear", f"{name} position"))
+    if r < clear:
+        tmpl.append((R, False, "r", f"{name} to R"))
+    tmpl.append((L, False, "cc", f"{name} feed"))
+    if dwell is not None:
+        tmpl.append((D, False, "cc", f"{name} dwell"))
+    tmpl.append((R, False, "clear", f"{name} retract"))
     return name, {"r": r, "cc": cc, "clear": clear}, tmpl, ln(it.feed), dwell, ("units", "distance", "offset", "plane")
+
+
+#: The most rows of one hole (G73/G83 pecks) the fast path takes
+_MAX_HOLE_ROWS = 256
 
 
 def _fanuc_holes_state_ok(it: Any) -> bool:
     """A Fanuc state in which a hole line (X/Y words only) is what ``FanucInterpreter._fanuc_cycle`` makes of it
-    in its simplest branch: G81/G82 after the cycle's first block, G90 G17 G94 with a feed, R and Z written in
+    for a cycle of :data:`FANUC_HOLE_CYCLES` after its first block: G90 G17 G94 with a feed, R and Z written in
     G90, nothing pending (no unknown code, transform, compensation, tool length change or dependency tracking)."""
     data = it.cycle_data
-    return (it.cycle in (810, 820) and not it.unsupported and it.absolute and it.plane is Plane.XY
+    return (it.cycle in FANUC_HOLE_CYCLES and not it.unsupported and it.absolute and it.plane is Plane.XY
             and it.feed_mode == 94 and it.feed > 0 and it.initial_level is not None and "R" in data
             and "Z" in data and data.get("R90") is True and data.get("Z90") is True and not it.comp_on
             and not it.comp_just_off and not it.track and it.prerotation_xy is None and it.machine_at is None
@@ -1450,34 +1455,68 @@ def _fanuc_holes_state_ok(it: Any) -> bool:
             and not it._tlo_untaken and not it.after_home and all(a in it.index for a in "XYZ"))
 
 
+def _fanuc_pecks(it: Any, r: Fraction, bottom: Fraction) -> list[tuple[SegmentKind, Fraction, str]] | None:
+    """G73's and G83's rows before the last feed, as ``FanucInterpreter._fanuc_cycle`` makes them (a feed to each
+    peck depth; G83 a rapid out to R; a rapid back off by d, or down to d above the cut), or None where the full
+    path decides otherwise (no Q above 0, no d, more pecks than ``max_repeats`` or :data:`_MAX_HOLE_ROWS`)."""
+    k, data = it.cycle, it.cycle_data
+    if "Q" not in data or data["Q"] <= 0:
+        return None  # GC208/GC209 on the full path
+    step = it.length_mm(data["Q"])
+    back = it.settings.g73_retract if k == 730 else it.settings.g83_clearance
+    if back is None or -((bottom - r) // step) - 1 > min(it.max_repeats, _MAX_HOLE_ROWS // 3):
+        return None  # an unknown (parameter 5114/5115, too many pecks) on the full path
+    name, rows, depth = "G73" if k == 730 else "G83", [], r
+    R, L = SegmentKind.RAPID, SegmentKind.LINE
+    while depth - step > bottom:
+        depth -= step
+        rows.append((L, depth, "peck"))
+        if k == 830:
+            rows.append((R, r, "clear"))
+        rows.append((R, depth + back, "retract" if k == 730 else "approach"))
+    return [(kind, z, f"{name} {what}") for kind, z, what in rows]
+
+
 def _fanuc_holes(it: Any) -> tuple | None:
     """A Fanuc control's hole (``FanucInterpreter._fanuc_cycle`` for a block of X/Y words: 0i/30i-M "Canned cycle
     for drilling"), as :func:`_linuxcnc_holes` gives LinuxCNC's: a "position" rapid at the current level (the
     top: the initial level under G98, R under G99, where the last hole ended), a "to R" rapid when the top is not
-    R, the feed to the bottom, a dwell (G82 with P) and the "retract" rapid to the top; None in another state or
-    with the tool axis not at the top."""
+    R, G73/G83's pecks, the feed to the bottom, a dwell (with P: G74, G82, G84, G89), then the "retract" rapid to
+    the top, or (G74, G84, G85, G89) a feed back to R and a "return" rapid to the top when that is not R; None in
+    another state or with the tool axis not at the top."""
     if not _fanuc_holes_state_ok(it):
         return None
-    from .fanuc.interpreter import dwell_p_seconds
+    from .fanuc.interpreter import dwell_p_seconds, gname
 
-    ic, data = it.index["Z"], it.cycle_data
+    k, ic, data = it.cycle, it.index["Z"], it.cycle_data
+    name = gname(k)
     r = it.length_mm(data["R"]) + it.off[ic]
     bottom = it.length_mm(data["Z"]) + it.off[ic]
     top = r if it.retract_r else it.initial_level
     if it.pos[ic] != top:
         return None
-    dwell = dwell_p_seconds(data["P"]) if "P" in data and it.cycle == 820 else None
     R, L, D = SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.DWELL
-    tmpl = [(R, False, "clear", "position")]
+    rows: list[tuple[SegmentKind, Fraction, str]] = [(R, top, f"{name} position")]
     if top != r:
-        tmpl.append((R, False, "r", "to R"))
-    tmpl.append((L, False, "cc", "feed"))
+        rows.append((R, r, f"{name} to R"))
+    if k in (730, 830):
+        pecks = _fanuc_pecks(it, r, bottom)
+        if pecks is None:
+            return None
+        rows += pecks
+    rows.append((L, bottom, f"{name} feed"))
+    dwell = dwell_p_seconds(data["P"]) if "P" in data and k in (820, 840, 890, 740) else None
     if dwell:
-        tmpl.append((D, False, "cc", "dwell"))
-    tmpl.append((R, False, "clear", "retract"))
-    name = "G81" if it.cycle == 810 else "G82"
-    return (name, {"r": r, "cc": bottom, "clear": top}, tmpl, it.length_mm(it.feed), dwell,
-            ("units", "distance", "offset", "plane", "retract"))
+        rows.append((D, bottom, f"{name} dwell"))
+    if k in (740, 840, 850, 890):
+        rows.append((L, r, f"{name} retract"))
+        if top != r:
+            rows.append((R, top, f"{name} return"))
+    else:
+        rows.append((R, top, f"{name} retract"))
+    levels = {f"z{i}": z for i, (_kind, z, _what) in enumerate(rows)}
+    tmpl = [(kind, False, f"z{i}", what) for i, (kind, _z, what) in enumerate(rows)]
+    return (name, levels, tmpl, it.length_mm(it.feed), dwell, ("units", "distance", "offset", "plane", "retract"))
 
 
 #: The hole of each dialect (:func:`_fast_cycle_run`)
@@ -1626,7 +1665,7 @@ def _hole_chunk(interp: Any, plan: tuple, scaled: tuple, words: tuple, block_cou
     start = np.vstack((np.asarray(pos0, dtype=np.int64)[None, :], end[:-1]))
     kind = np.tile(np.array([int(t[0]) for t in tmpl], dtype=np.int8), h)
     names = np.empty(T, dtype=object)
-    names[:] = [f"{name} {t[3]}" for t in tmpl]
+    names[:] = [t[3] for t in tmpl]
     D = SegmentKind.DWELL
     chunk = MotionChunk(
         it.axes, S, kind=kind, start=start, end=end,

@@ -28,6 +28,7 @@ from nczones.errors import GcodeError
 from nczones.gcode import fastpath, interpret_text
 from nczones.gcode.codes import (
     FANUC_G,
+    FANUC_HOLE_CYCLES,
     LANE_BOXES,
     LANE_BOXRUN,
     LANE_INTERPRETER,
@@ -214,8 +215,8 @@ def test_fanuc_fast_path_claims_or_declines_each_code(key):
             return ("error", exc.diagnostics[0].code), []
 
     assert run(True) == run(False)
-    if FANUC_G[key].lanes["fastpath"] == "" and key in (810, 820):  # hole lines after the cycle's first block
-        body = block + "\n" + "".join(f"X{i % 7}.5 Y{i % 3}.\n" for i in range(n))
+    if FANUC_G[key].lanes["fastpath"] == "" and key in FANUC_HOLE_CYCLES:  # hole lines after the first block
+        body = block.replace("X1.", "G98 X1.") + "\n" + "".join(f"X{i % 7}.5 Y{i % 3}.\n" for i in range(n))
         text = "%\nO1000\nG17 G40 G49 G80 G90 G21 G54 F100.\nG0 X0. Y0. Z5.\n" + body + "G80\nM30\n%\n"
         it = interpret_text(text, machine)
         list(it)

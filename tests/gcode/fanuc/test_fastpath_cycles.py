@@ -1,9 +1,9 @@
-"""Fanuc hole lines (G81/G82) on the vectorized fast path give exactly the full interpreter's segments.
+"""Fanuc hole lines (G73, G74, G81-G86, G89) on the vectorized fast path give exactly the full interpreter's segments.
 
 After a cycle's first block a Fanuc drilling program is mostly lines of X and Y words (CAM hole lists); the
 fast path takes them in columns (``fastpath._fast_cycle_run`` with ``fastpath._fanuc_holes``, the template of
 ``FanucInterpreter._fanuc_cycle`` for such a block: a rapid at the current level, a rapid to R when that is not
-R, the feed, a G82 dwell, the retract to the initial level or R).  Everything else (the cycle's first block, R,
+R, G73/G83's pecks, the feed, a dwell, the retract to the initial level or R, or a feed out and a return).  Everything else (the cycle's first block, R,
 Z, P, F, K changes, G91, G80, G98/G99, a G0, a line with a comment) stays on the full interpreter.  Both paths
 must give identical segments (kinds, exact points, feeds, dwell times, ``derived`` names, lines, blocks, tool
 lengths), identical errors and the same final state (position, cycle data, counts, the last N for #4114).
@@ -67,12 +67,18 @@ def drilling_programs(draw, long_runs=True):
     lines.append(f"G00 X{_num(draw)} Y{_num(draw)}")
     numbered = draw(st.booleans())
     for _ in range(draw(st.integers(1, 3))):
-        cyc = draw(st.sampled_from(["G81", "G82"]))
+        cyc = draw(st.sampled_from(["G81", "G82", "G73", "G83", "G85", "G89", "G84", "G74", "G86"]))
         r = draw(st.sampled_from(["2.", "0.5", "3.125", "10."]))
         z = draw(st.sampled_from(["-3.", "-0.75", "-12.5", "1."]))
+        if cyc in ("G84", "G86"):
+            lines.append("M03 S500")
+        elif cyc == "G74":
+            lines.append("M04 S500")
         head = f"{draw(st.sampled_from(['G98', 'G99']))} {cyc} X{_num(draw)} Y{_num(draw)} Z{z} R{r}"
-        if cyc == "G82" and draw(st.booleans()):
+        if cyc in ("G82", "G89", "G84", "G74") and draw(st.booleans()):
             head += f" P{draw(st.sampled_from(['500', '1000', '250', '0']))}"
+        if cyc in ("G73", "G83") and draw(st.integers(0, 5)):
+            head += f" Q{draw(st.sampled_from(['1.', '0.75', '2.5', '0.3']))}"
         if draw(st.booleans()):
             head += f" F{draw(st.sampled_from(['300.', '150.5', '12.']))}"
         else:
@@ -116,18 +122,23 @@ def _hole_list(cycle: str, retract: str, n: int = 600, z0: str = "20.", inch: bo
     return "\n".join(lines + ["G80", "G00 Z50.", "M30"]) + "\n"
 
 
+_WORDS = {"G73": " Q1.5", "G83": " Q1.5", "G82": " P500", "G89": " P250", "G84": " P100", "G74": " P100"}
+_SPINDLE = {"G84": "M03 S500\n", "G86": "M03 S500\n", "G74": "M04 S500\n"}
+
+
 def test_a_hole_list_takes_the_fast_path():
-    """Every hole line after the cycle's first block is the fast path's, for G81/G82, G98/G99, an initial
-    level above and below R, metric and inch; the segments and state are the full path's."""
-    for cycle in ("G81", "G82 P500"):
-        for retract in ("G98", "G99"):
-            for z0, inch in (("20.", False), ("1.", False), ("20.", True)):
-                text = _hole_list(cycle.replace(" P500", ""), retract, z0=z0, inch=inch)
-                if cycle != "G81":
-                    text = text.replace("F300.", "P500 F300.")
-                (want, _), (got, fast_lines) = _outcome(text, fast=False), _outcome(text, fast=True)
-                assert got == want, (cycle, retract, z0, inch)
-                assert fast_lines >= 599, (cycle, retract, z0, inch)
+    """Every hole line after the cycle's first block is the fast path's, for every cycle it takes (with its Q,
+    P, spindle), G98/G99, an initial level above and below R, metric and inch; the segments and state are the
+    full path's."""
+    for cycle in ("G81", "G82", "G73", "G83", "G85", "G89", "G84", "G74", "G86"):
+        for retract, z0, inch in (("G98", "20.", False), ("G99", "20.", False), ("G98", "1.", False),
+                                  ("G99", "20.", True)):
+            text = _hole_list(cycle, retract, n=100, z0=z0, inch=inch).replace(
+                "F300.", _WORDS.get(cycle, "") + " F300.").replace(f"{retract} {cycle}",
+                                                                   _SPINDLE.get(cycle, "") + f"{retract} {cycle}")
+            (want, _), (got, fast_lines) = _outcome(text, fast=False), _outcome(text, fast=True)
+            assert got == want, (cycle, retract, z0, inch)
+            assert fast_lines >= 99, (cycle, retract, z0, inch)
 
 
 def test_the_rows_carry_the_cycles_names_and_dwells():
