@@ -131,7 +131,7 @@ class CompensatedInterpreter(Protocol):
     def arc(self, block: Block, axis_words: list[tuple[int, Word]], words: dict[str, Word], cw: bool,
             g53: bool) -> None: ...
 
-__all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD"]
+__all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD", "entry_line", "line_corner", "retreat", "reverses"]
 
 #: LinuxCNC TOLERANCE_CONCAVE_CORNER: turns smaller than this (radians) need no corner arc.
 CONCAVE_TOLERANCE_RAD = 0.05
@@ -255,6 +255,69 @@ def _arc_centre_r(op: tuple[float, float], e: tuple[float, float], radius: float
     turn2 = math.asin(half / abs_radius)
     offset = abs_radius * math.cos(turn2)
     return mx + offset * math.cos(theta), my + offset * math.sin(theta)
+
+
+def entry_line(side: int | None, radius: float, cx: float, cy: float, px: float,
+               py: float) -> tuple[float, float, float, float] | None:
+    """A straight entry move from ``(cx, cy)`` to the programmed ``(px, py)`` (LinuxCNC
+    ``convert_straight_comp1``): ``(end_x, end_y, da, db)``, its compensated end and the direction its queued
+    move keeps for the gouge test (:func:`reverses`), or None when it is not longer than ``radius`` (GC322).
+    Shared by the full path and the double pass (:mod:`.double_comp`): one formula, the same doubles.
+
+    >>> entry_line(LEFT, 1.0, 0.0, 0.0, 10.0, 0.0)[:2]
+    (10.0, 1.0)
+    """
+    if math.hypot(px - cx, py - cy) <= radius:
+        return None
+    alpha = math.atan2(py - cy, px - cx) + (_PI / 2.0 if side == LEFT else -_PI / 2.0)
+    return px + radius * math.cos(alpha), py + radius * math.sin(alpha), math.cos(alpha), math.sin(alpha)
+
+
+def line_corner(side: int | None, radius: float, cx: float, cy: float, opx: float, opy: float, px: float,
+                py: float, front: int) -> tuple[bool, float, float, float, float, float, float, float]:
+    """The corner before a straight move from the programmed ``(opx, opy)`` to ``(px, py)``, the tool at
+    ``(cx, cy)`` (LinuxCNC ``convert_straight_comp2``): ``(concave, beta, end_x, end_y, mid_x, mid_y, theta,
+    gamma)``; ``front`` is the turn of the arc at the queue's front (0: none, or a straight move there).  Convex
+    when not concave and ``beta > CONCAVE_TOLERANCE_RAD``; a concave corner's end is :func:`retreat`'s.
+    Shared by the full path and the double pass (:mod:`.double_comp`)."""
+    small = CONCAVE_TOLERANCE_RAD
+    theta = math.atan2(cy - opy, cx - opx)
+    alpha = math.atan2(py - opy, px - opx)
+    if side == LEFT:
+        if theta < alpha:
+            theta = theta + 2 * _PI
+        beta = (theta - alpha) - _HALF_PI
+        gamma = _HALF_PI
+    else:
+        if alpha < theta:
+            alpha = alpha + 2 * _PI
+        beta = (alpha - theta) - _HALF_PI
+        gamma = -_HALF_PI
+    end_x = px + radius * math.cos(alpha + gamma)
+    end_y = py + radius * math.sin(alpha + gamma)
+    mid_x = opx + radius * math.cos(alpha + gamma)
+    mid_y = opy + radius * math.sin(alpha + gamma)
+    # the "h" shape (an arc at the front, turning away): stay above and to the side rather than loop around
+    concave = beta < -small or beta > _PI + small or (
+        beta > _PI - small and ((side == _RIGHT and front > 0) or (side == LEFT and front < 0)))
+    return concave, beta, end_x, end_y, mid_x, mid_y, theta, gamma
+
+
+def retreat(radius: float, cx: float, cy: float, beta: float, theta: float,
+            gamma: float) -> tuple[float, float] | None:
+    """Where the held straight move ends at a concave corner between two straight moves (:func:`line_corner`'s
+    values), or None for a zero-degree inside corner (GC324)."""
+    halfcorner = (beta + _PI) / 2.0
+    if halfcorner == 0.0:
+        return None
+    back = radius / math.tan(halfcorner)
+    return cx + back * math.cos(theta + gamma), cy + back * math.sin(theta + gamma)
+
+
+def reverses(da: float, db: float, x: float, y: float, ex: float, ey: float) -> bool:
+    """Does moving a held straight move of direction ``(da, db)`` to end at ``(x, y)`` instead of ``(ex, ey)``
+    reverse it (LinuxCNC ``move_endpoint_and_flush``'s dot product below 0: a gouge)?"""
+    return da * (x - ex) + db * (y - ey) < 0
 
 
 @dataclass
@@ -590,8 +653,7 @@ class CutterComp:
                     raise self.error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation)")
             else:
-                dot = q.da * (x - ex) + q.db * (y - ey)
-                if self.endpoint_valid and dot < 0:
+                if self.endpoint_valid and reverses(q.da, q.db, x, y, ex, ey):
                     what = "Straight traverse" if q.kind is _RAPID else "Straight feed"
                     raise self.error(GC_GOUGE, f"{what} in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation: the move shrinks past its start)")
@@ -648,15 +710,14 @@ class CutterComp:
     def _straight_first(self, kind: SegmentKind, px: float, py: float, end: list, deps: Any) -> None:
         radius, side = self.radius, self.side
         cx, cy = self.cur
-        distance = math.hypot(px - cx, py - cy)
-        if distance <= radius:
+        got = entry_line(side, radius, cx, cy, px, py)
+        if got is None:
+            distance = math.hypot(px - cx, py - cy)
             raise self.error(GC_ENTRY, "Length of cutter compensation entry move is not greater than the tool "
                               f"radius ({distance:.6f} <= {radius:.6f} program units)")
-        alpha = math.atan2(py - cy, px - cx) + (_PI / 2.0 if side == LEFT else -_PI / 2.0)
-        ex = px + radius * math.cos(alpha)
-        ey = py + radius * math.sin(alpha)
+        ex, ey, da, db = got
         self._set_endpoint(cx, cy)
-        self._enqueue(_Move(kind, ex, ey, list(end), math.cos(alpha), math.sin(alpha), deps=deps))
+        self._enqueue(_Move(kind, ex, ey, list(end), da, db, deps=deps))
         self.first = False
         self.cur = (ex, ey)
         self.prog = (px, py)
@@ -669,32 +730,11 @@ class CutterComp:
             self._enqueue(_Move(kind, cx, cy, list(end), 0.0, 0.0, deps=deps))
             return
         side, radius = self.side, self.radius
-        small = CONCAVE_TOLERANCE_RAD
-        theta = math.atan2(cy - opy, cx - opx)
-        alpha = math.atan2(py - opy, px - opx)
-        if side == LEFT:
-            if theta < alpha:
-                theta = theta + 2 * _PI
-            beta = (theta - alpha) - _HALF_PI
-            gamma = _HALF_PI
-        else:
-            if alpha < theta:
-                alpha = alpha + 2 * _PI
-            beta = (alpha - theta) - _HALF_PI
-            gamma = -_HALF_PI
-        end_x = px + radius * math.cos(alpha + gamma)
-        end_y = py + radius * math.sin(alpha + gamma)
-        mid_x = opx + radius * math.cos(alpha + gamma)
-        mid_y = opy + radius * math.sin(alpha + gamma)
-        if beta < -small or beta > _PI + small:
-            concave = True
-        elif (beta > _PI - small and self.queue and self.queue[0].kind is _ARC
-              and ((side == _RIGHT and self.queue[0].turn > 0) or (side == LEFT and self.queue[0].turn < 0))):
-            concave = True  # the "h" shape: stay above and to the side rather than loop around
-        else:
-            concave = False
+        front = self.queue[0].turn if self.queue and self.queue[0].kind is _ARC else 0
+        concave, beta, end_x, end_y, mid_x, mid_y, theta, gamma = line_corner(side, radius, cx, cy, opx, opy,
+                                                                               px, py, front)
         ia, ib, _ = self._axes()
-        if not concave and beta > small:  # convex: go around the corner
+        if not concave and beta > CONCAVE_TOLERANCE_RAD:  # convex: go around the corner
             self._move_endpoint_and_flush(cx, cy)
             corner = self._corner_end(end)
             corner_deps = [dict(d) for d in it.dep_pos] if it.track else None
@@ -713,13 +753,10 @@ class CutterComp:
                     self._enqueue(_Move(kind, end_x, end_y, list(end), px - opx, py - opy, deps=deps))
                     self.cur, self.prog = (end_x, end_y), (px, py)
                     return
-                halfcorner = (beta + _PI) / 2.0
-                if halfcorner == 0.0:
+                back = retreat(radius, cx, cy, beta, theta, gamma)
+                if back is None:
                     raise self.error(GC_GOUGE, "Zero degree inside corner is invalid for cutter compensation")
-                retreat = radius / math.tan(halfcorner)
-                mx = cx + retreat * math.cos(theta + gamma)
-                my = cy + retreat * math.sin(theta + gamma)
-                self._move_endpoint_and_flush(mx, my)
+                self._move_endpoint_and_flush(*back)
             else:
                 prev = self.queue[0]
                 oldrad = math.hypot(prev.cb - prev.b, prev.ca - prev.a)
