@@ -55,7 +55,8 @@ from ...errors import Diagnostic, GcodeError
 from ...exact import to_float
 from ...motion import PLANE_AXES, Plane, SegmentKind
 from ..segments import make_segment, with_tool_deps
-from .comp_floats import CONCAVE_TOLERANCE_RAD, LEFT, RIGHT as _RIGHT, entry_line, line_corner, retreat, reverses
+from .comp_floats import CONCAVE_TOLERANCE_RAD, LEFT, entry_line, line_corner, retreat, reverses
+from .comp_floats import RIGHT as _RIGHT
 
 if TYPE_CHECKING:
     from collections.abc import Sequence

@@ -42,7 +42,15 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from .comp_floats import CONCAVE_TOLERANCE_RAD, LEFT, RIGHT, entry_line, line_corner, retreat, reverses
+from .comp_floats import (
+    CONCAVE_TOLERANCE_RAD,
+    LEFT,
+    RIGHT,
+    entry_line,
+    line_corner,
+    retreat,
+    reverses,
+)
 from .double_arcs import EXACT
 from .double_arcs import _box as arc_box
 
