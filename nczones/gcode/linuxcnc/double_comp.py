@@ -52,7 +52,7 @@ from .comp_floats import (
     reverses,
 )
 from .double_arcs import EXACT
-from .double_arcs import _box as arc_box
+from .double_arcs import sector_box as arc_box
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
