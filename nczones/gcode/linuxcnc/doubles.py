@@ -96,6 +96,15 @@ an M word is a value, G83's alone) in G90, in the plane the program has set, aft
 exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the bottom decline);
 G83's peck rows widened by their drift (``xerr``).
 
+Cutter compensation (:mod:`.double_comp`): on a machine with ``cutter_compensation = "linuxcnc"`` (not a lathe),
+G40, and G41/G42 with a literal or computed ``D`` (a tool of ``[tool_diameters]``) or without (the tool in the
+spindle, ``T`` and ``M6``/``M61 Q`` followed), in G17, G21 and G90, over straight moves: the rows of the full
+path's ``CutterComp`` (the held move, the entry, a convex corner's arc about the programmed corner with its sweep
+box, a concave corner's pulled-back end, G40's and M2/M30's flush) from the same float formulas
+(:mod:`.comp_floats`).  Declined: G2/G3 under compensation or just after its G40, a dwell, tool change or a
+plane, units, offset, tool length or path mode code while it is on, G91, G20, G7/G8 and canned cycles in a program
+that may write it (a ``41`` or ``42`` in the text), and every error of the full path's compensation.
+
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
 layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
 words only by :meth:`_Pass._plain`, any other by its shape; in a loop or sub body: the block's steps compiled
