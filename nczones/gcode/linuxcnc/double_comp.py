@@ -42,6 +42,7 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
+from ...motion import DROPPED_BELOW
 from .comp_floats import (
     CONCAVE_TOLERANCE_RAD,
     LEFT,
@@ -159,6 +160,9 @@ class Comp:
         self.key = (st.wcs, st.reg)
         self.selected = self.spindle = 0
         self.stale = False
+        self.adds: tuple[Any, ...] | None = None  # the columns' appends, once a row was added (_row)
+        #: a plane axis's step at or above this is not one LinuxCNC may drop (``_Pass.tiny``; the plans' LIM)
+        self.lim = 2 * (float(DROPPED_BELOW) * 1.01 + 1e-12 + st.tiny_pad) + 1e-4
 
     # -- what a program that compensates may not do ------------------------------------------------------
     def compile_checks(self, groups: dict[str, int]) -> None:
@@ -258,19 +262,18 @@ class Comp:
         if self.side is not None and self.first:  # (before this move's words are kept)
             self.prog = self.cur = (self._program(ia), self._program(ib))
         before = (pos[ia], pos[ib], pos[self.inn] if self.inn is not None else 0.0)
+        px, py = self.prog
         for k, i in axes:
-            pos[i] = v[k] + off[i]
-            words[i] = v[k]
+            x = words[i] = v[k]
+            pos[i] = x + off[i]
+            if i == ia:
+                px = x
+            elif i == ib:
+                py = x
         if self.side is None:  # the move after G40's flush: from the compensated point, uncompensated
             self.busy = False
             self._row(mode, tuple(pos))
             return
-        px, py = self.prog
-        for k, i in axes:
-            if i == ia:
-                px = v[k]
-            elif i == ib:
-                py = v[k]
         words[ia], words[ib] = px, py
         if self.first:
             self._first(mode, px, py, tuple(pos))
@@ -338,26 +341,29 @@ class Comp:
         """Emit the held moves as rows."""
         self.valid = False
         off, ia, ib = self.st.off, self.ia, self.ib
+        oa, ob = off[ia], off[ib]
         for kind, a, b, _da, _db, row, centre in self.queue:
             r = list(row)
-            r[ia] = a + off[ia]
-            r[ib] = b + off[ib]
+            r[ia] = a + oa
+            r[ib] = b + ob
             self._row(kind, r, centre)
         self.queue = []
 
     def _row(self, kind: int, row: Any, centre: Any = None) -> None:
         """Append a motion's row (a corner arc's box beside it)."""
         st = self.st
-        cols = st.columns
-        if not all(st.first_row):
-            st.moved(tuple(range(len(cols))))
+        adds = self.adds
+        if adds is None:  # the first row: every axis may move from here (sound: _Pass.moved)
+            if not all(st.first_row):
+                st.moved(tuple(range(len(st.columns))))
+            adds = self.adds = tuple(col.append for col in st.columns)  # (full() drops rows in place)
         if kind == _ARC:
             self._arc(row, centre)
-        for col, x in zip(cols, row):
-            col.append(x)
+        for add, x in zip(adds, row):
+            add(x)
         if kind == _RAPID:
             st.rapids += 1
-        if len(cols[0]) >= st.rows:
+        if len(st.columns[0]) >= st.rows:
             st.full()
 
     def _arc(self, row: Any, centre: Any) -> None:
@@ -367,7 +373,9 @@ class Comp:
         ia, ib = self.ia, self.ib
         ca, cb = st.columns[ia], st.columns[ib]
         last = len(ca) - 1  # the motion before the arc ends at this row
-        if st.blend and last > 0 and st.tiny(last) and not st.lone(last) and not st.dwell_at(last):
+        step = ca[last] - ca[last - 1] if last > 0 else 0.0  # (a quick test tiny() implies, as _Pass._arc_body's)
+        if st.blend and last > 0 and (-self.lim < step < self.lim or not -1e10 < ca[last] < 1e10) \
+                and st.tiny(last) and not st.lone(last) and not st.dwell_at(last):
             raise self.declined("a corner arc after a motion LinuxCNC may drop in a blended corner")
         if st.arc_plane != 17:
             st.arc_in(17)
