@@ -165,3 +165,48 @@ def test_comp_program_of_the_bench_takes_the_pass():
     text = comp_program(400)
     path = check_against_full(text, MILL, max_iterations=100)
     assert path is not None and path.arcs > 50
+
+
+@SETTINGS
+@given(comp_programs(), st.integers(1, 4))
+def test_the_windows_are_the_rows_and_boxes_of_the_pass_without_windows(text, window):
+    # corner arcs and flushed moves cross window edges: each motion's box (its corner arc's included) is the same
+    try:
+        whole = double_pass(text, MILL, max_iterations=100)
+    except Declined:
+        return
+    seen = []
+
+    def same(p):
+        seen.append(p.motions)
+        return all(p.enclosure(k, k) == whole.enclosure(k, k) for k in range(p.row0 + 1, p.motions + 1))
+
+    last = double_pass(text, MILL, max_iterations=100, window=window, on_window=same)
+    assert same(last) and (last.motions, last.arcs, last.rapids) == (whole.motions, whole.arcs, whole.rapids)
+    assert len(seen) > 1 or whole.motions <= window + 1
+
+
+@settings(max_examples=max(EXAMPLES // 4, 5), deadline=None, derandomize=EXAMPLES <= 200,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
+                                 HealthCheck.function_scoped_fixture])
+@given(comp_programs(), st.integers(70, 130), st.integers(30, 70), st.integers(1, 12), st.sampled_from(["0", "0.5"]))
+def test_the_verdict_is_the_full_paths_with_a_forbidden_box(monkeypatch, text, x, y, size, margin):
+    zones = ('[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "-1000", Y = "-1000", Z = "-1000" }\n'
+             'max = { X = "1000", Y = "1000", Z = "1000" }\n[[zones]]\nname = "clamp"\nkind = "box"\nforbid = true\n'
+             f'min = {{ X = "{x}", Y = "{y}" }}\nmax = {{ X = "{x + size}", Y = "{y + size}" }}\n')
+    machine = load_machine("mill_cutter_comp_g54", extra=zones)
+    try:
+        with_pass = verify_text(text, machine, max_iterations=100, margin=margin)
+    except Exception as exc:  # noqa: BLE001  # a G-code error (a gouge): the same error without the pass
+        with monkeypatch.context() as m:
+            m.setattr(verification, "double_pass_result", lambda *args, **kwargs: None)
+            with pytest.raises(type(exc)):
+                verify_text(text, machine, max_iterations=100, margin=margin)
+        return
+    with monkeypatch.context() as m:
+        m.setattr(verification, "double_pass_result", lambda *args, **kwargs: None)
+        without = verify_text(text, machine, max_iterations=100, margin=margin)
+    assert with_pass.verdict == without.verdict
+    assert [(v.line, v.zone) for v in with_pass.violations] == [(v.line, v.zone) for v in without.violations]
+    assert [r.message for r in with_pass.reasons] == [r.message for r in without.reasons]
+    assert with_pass.notes == without.notes
