@@ -210,3 +210,30 @@ def test_the_verdict_is_the_full_paths_with_a_forbidden_box(monkeypatch, text, x
     assert [(v.line, v.zone) for v in with_pass.violations] == [(v.line, v.zone) for v in without.violations]
     assert [r.message for r in with_pass.reasons] == [r.message for r in without.reasons]
     assert with_pass.notes == without.notes
+
+
+#: Seams the pass takes: G40 and G41/G42 again, loops and subs, Z and rapids under compensation, G61, no M30,
+#: a computed D, arcs before and after, tool changes before G41 (each checked against the full path, rows exact)
+SEAMS = {
+    'g40 then g41': 'G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nX20 Y5\nG40\nG42 D1 G1 X30 Y0\nX40 Y3\nM30\n',
+    'start offset': 'G21 G90 G17 F800\nG55\nG41 D1 G1 X10 Y0\nX20 Y5\nG40 X0\nM30\n',
+    'loop': 'G21 G90 G17 F800\n#1=0\nG0 X0 Y0\no1 while [#1 LT 3]\nG41 D1 G1 X[10+#1] Y0\nX20 Y[5+#1]\nX25 Y-2\nG40 G0 X0 Y0\n#1=[#1+1]\no1 endwhile\nM30\n',
+    'sub': 'G21 G90 G17 F800\no10 sub\nG1 X[#1] Y[#2]\nX[#1+10] Y[#2+3]\no10 endsub\nG0 X0 Y0\nG41 D1\no10 call [5] [0]\no10 call [20] [1]\nG40 G0 X0 Y0\nM30\n',
+    'g41 block no move': 'G21 G90 G17 F800\nG0 X0 Y0\nG41 D1\nG1 X10 Y0\nX10 Y10\nX0 Y10\nG40 X-5\nM30\n',
+    'z only and concave': 'G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nZ-1\nX10 Y10\nZ0\nX0 Y10\nG40 X-5\nM30\n',
+    'rapid corners': 'G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G0 X10 Y0\nX10 Y-10\nG1 X20 Y-10\nG0 X20 Y-20\nG40 X0\nM30\n',
+    'g61 then comp': 'G21 G90 G17 G61 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nX20 Y-5\nX30 Y0\nG40 X40\nG64\nX0\nM30\n',
+    'no m30 held': 'G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nX20 Y-5\n',
+    'g41 G17 same block': 'G21 G90 F800\nG0 X0 Y0\nG17 G41 D1 G1 X10 Y0\nX20 Y-5\nG40 X30\nM30\n',
+    'expr D': 'G21 G90 G17 F800\n#3=1\nG0 X0 Y0\nG41 D[#3] G1 X10 Y0\nX20 Y-5\nG40 X30\nM30\n',
+    'arc before comp': 'G21 G90 G17 F800\nG0 X0 Y0\nG2 X10 Y0 R6\nG41 D1 G1 X20 Y0\nX30 Y5\nG40 X40\nM30\n',
+    'arc after comp': 'G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nX20 Y5\nG40 G1 X30 Y0\nG2 X40 Y0 R6\nM30\n',
+    'T M6 same block': 'G21 G90 G17 F800\nG0 X0 Y0\nT1 M6 G41 G1 X10 Y0\nX20 Y-5\nG40 X30\nM30\n',
+    'T0 M6 then D1': 'G21 G90 G17 F800\nT1 M6\nT0 M6\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nX20 Y-5\nG40 X30\nM30\n',
+}
+
+
+@pytest.mark.parametrize("name", sorted(SEAMS))
+def test_seams_the_pass_takes(name):
+    assert check_against_full(SEAMS[name], MILL, max_iterations=100) is not None
+    check_rows_exact(SEAMS[name], MILL)
