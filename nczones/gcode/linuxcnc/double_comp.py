@@ -146,7 +146,7 @@ class Comp:
         self.busy = False
         self.radius = 0.0
         self.first = True
-        #: held moves: ``[kind, a, b, da, db, row, centre]`` (``row``: the other axes' doubles)
+        #: held moves: ``[kind, a, b, da, db, row]`` (straight: ``row`` the other axes' doubles)
         self.queue: list[list[Any]] = []
         self.endpoint = (0.0, 0.0)
         self.valid = False
@@ -288,7 +288,7 @@ class Comp:
             raise self.declined("a cutter compensation entry move not longer than the radius")
         ex, ey, da, db = got
         self.endpoint, self.valid = (cx, cy), True
-        self.queue.append([kind, ex, ey, da, db, row, None])
+        self.queue.append([kind, ex, ey, da, db, row])
         self.first = False
         self.cur, self.prog = (ex, ey), (px, py)
 
@@ -298,18 +298,19 @@ class Comp:
         cx, cy = self.cur
         opx, opy = self.prog
         if py == opy and px == opx:  # no motion in the plane
-            self.queue.append([kind, cx, cy, 0.0, 0.0, row, None])
+            self.queue.append([kind, cx, cy, 0.0, 0.0, row])
             return
         concave, beta, end_x, end_y, mid_x, mid_y, theta, gamma = line_corner(self.side, self.radius, cx, cy,
                                                                                opx, opy, px, py, 0)
         if not concave and beta > CONCAVE_TOLERANCE_RAD:  # convex: around the corner
             self._flush(cx, cy)
+            # the corner move, held and emitted at once (CutterComp: _enqueue, then _dequeue)
             corner = list(row)
             if self.inn is not None:
                 corner[self.inn] = before[2]
-            centre = (before[0], before[1], self.side == LEFT) if kind else None
-            self.queue.append([_ARC if kind else _RAPID, mid_x, mid_y, 0.0, 0.0, tuple(corner), centre])
-            self._dequeue()
+            off = self.st.off
+            corner[self.ia], corner[self.ib] = mid_x + off[self.ia], mid_y + off[self.ib]
+            self._row(_ARC if kind else _RAPID, corner, (before[0], before[1], self.side == LEFT) if kind else None)
             self.endpoint, self.valid = (mid_x, mid_y), True
         elif concave:
             if not self.queue:
@@ -321,7 +322,7 @@ class Comp:
         else:  # straight on
             self._dequeue()
             self.endpoint, self.valid = (cx, cy), True
-        self.queue.append([kind, end_x, end_y, px - opx, py - opy, row, None])
+        self.queue.append([kind, end_x, end_y, px - opx, py - opy, row])
         self.cur, self.prog = (end_x, end_y), (px, py)
 
     def _flush(self, x: float, y: float) -> None:
@@ -338,25 +339,36 @@ class Comp:
         self.endpoint, self.valid = (x, y), True
 
     def _dequeue(self) -> None:
-        """Emit the held moves as rows."""
+        """Emit the held moves as rows (straight moves: the pass holds no arc)."""
         self.valid = False
-        off, ia, ib = self.st.off, self.ia, self.ib
+        st = self.st
+        off, ia, ib = st.off, self.ia, self.ib
         oa, ob = off[ia], off[ib]
-        for kind, a, b, _da, _db, row, centre in self.queue:
+        adds = self.adds or self._adds()
+        for kind, a, b, _da, _db, row in self.queue:
             r = list(row)
             r[ia] = a + oa
             r[ib] = b + ob
-            self._row(kind, r, centre)
+            for add, x in zip(adds, r):
+                add(x)
+            if kind == _RAPID:
+                st.rapids += 1
+            if len(st.columns[0]) >= st.rows:
+                st.full()
         self.queue = []
+
+    def _adds(self) -> tuple[Any, ...]:
+        """The columns' appends, at the first row: every axis may move from here (sound: ``_Pass.moved``)."""
+        st = self.st
+        if not all(st.first_row):
+            st.moved(tuple(range(len(st.columns))))
+        adds = self.adds = tuple(col.append for col in st.columns)  # (full() drops rows in place)
+        return adds
 
     def _row(self, kind: int, row: Any, centre: Any = None) -> None:
         """Append a motion's row (a corner arc's box beside it)."""
         st = self.st
-        adds = self.adds
-        if adds is None:  # the first row: every axis may move from here (sound: _Pass.moved)
-            if not all(st.first_row):
-                st.moved(tuple(range(len(st.columns))))
-            adds = self.adds = tuple(col.append for col in st.columns)  # (full() drops rows in place)
+        adds = self.adds or self._adds()
         if kind == _ARC:
             self._arc(row, centre)
         for add, x in zip(adds, row):
