@@ -105,7 +105,7 @@ _LINUXCNC_GROUPS: dict[int, tuple[int, ...]] = {
 _PLAIN_G = frozenset((0, 10))
 _FAST_G = frozenset((0, 10, 20, 30, 810, 820))
 _DOUBLES_G = frozenset((0, 10, 20, 30, 40, 430, 800, 170, 180, 190, 200, 210, 400, 490, 900, 910, 911, 940, 540, 550,
-                        560, 570, 580, 590, 610, 611, 640, 70, 80, 960, 970, 810, 820, 830, 980, 990, 410, 420))
+                        560, 570, 580, 590, 610, 611, 640, 70, 80, 960, 970, 810, 820, 830, 980, 990, 410, 420, 411, 421))
 #: The full path's unknown reasons live in ``interpreter.UNSUPPORTED_G`` (its messages); these are the
 #: LinuxCNC codes it answers ``unknown`` for.
 _LINUXCNC_UNKNOWN_G = frozenset((410, 420, 411, 421, 760, 382, 383, 384, 385, 870, 880, 432, 70, 171, 181, 191))

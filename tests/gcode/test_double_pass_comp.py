@@ -51,16 +51,19 @@ def comp_moves(draw) -> list[str]:
 
 @st.composite
 def comp_programs(draw) -> str:
-    """A G41/G42 contour (D1, or the tool in the spindle after T1 M6), G40 mid-program and again, an end with or
-    without G40 and M30."""
+    """A G41/G42 contour (D1, or the tool in the spindle after T1 M6; or G41.1/G42.1 with a diameter), G40
+    mid-program and again, an end with or without G40 and M30."""
     lines = ["G21 G90 G17 G54 F800", "#1 = 0.5"]
     spindle = draw(st.booleans())
     if spindle:
         lines.append("T1 M6")
     for _ in range(draw(st.integers(1, 3))):
         lines.append(f"G0 X{draw(eighths)} Y{draw(eighths)}")
-        side = draw(st.sampled_from(["G41", "G42"]))
-        d = "" if spindle and draw(st.booleans()) else " D1"
+        side = draw(st.sampled_from(["G41", "G42", "G41", "G42", "G41.1", "G42.1"]))
+        if side.endswith(".1"):  # D is the diameter (a negative one: the other side)
+            d = draw(st.sampled_from([" D2", " D1.5", " D[-2]"]))
+        else:
+            d = "" if spindle and draw(st.booleans()) else " D1"
         lines.append(f"{side}{d} G1 X{draw(eighths)} Y{draw(eighths)}")
         lines += draw(comp_moves())
         lines.append(draw(st.sampled_from(["G40 G0 X0 Y0", "G40", "G40 G1 X1 Y1", ""])))
@@ -107,6 +110,8 @@ def test_the_pass_takes_a_contour_with_corners_of_both_kinds():
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nG61 X20\nM30\n",  # a path mode under compensation
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nG4 P1\nM30\n",  # a dwell under compensation
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D7 G1 X10 Y0\nM30\n",  # a tool without a diameter
+    "G21 G90 G17 F800\nG0 X0 Y0\nG41.1 G1 X10 Y0\nM30\n",  # G41.1 without D
+    "G21 G90 G17 F800\nG0 X0 Y0\nG42.1 D0 G1 X10 Y0\nM30\n",  # G42.1 of diameter 0
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 G1 X10 Y0\nM30\n",  # the tool in the spindle: none
     "G21 G90 G18 F800\nG0 X0 Z0\nG41 D1 G1 X10 Z0\nM30\n",  # G18
     "G20 G90 G17 F80\nG0 X0 Y0\nG41 D1 G1 X1 Y0\nM30\n",  # G20

@@ -28,6 +28,8 @@ every magnitude and the offsets), so ``u = S - C``, ``w = E - C`` and the radii 
 the exact ones, as there.  The corner arc joins the pass's arcs (``DoublePath.arc_rows``, its box already
 the sweep's: ``EXACT``), and an arc after a motion LinuxCNC may drop declines as a programmed arc's does.
 
+G41.1/G42.1 take their ``D`` as the diameter (a negative one: the other side), as ``CutterComp.select``.
+
 What declines (the full path's error or unknown, or not modelled): G41/G42 on a machine without LinuxCNC's
 compensation or on a lathe, outside G17, in G20, with a tool whose diameter is not in ``[tool_diameters]``
 or not above 0, D not a whole positive number, the tool in the spindle after ``T0 M6`` or ``M61``; G41 or G42
@@ -62,6 +64,8 @@ if TYPE_CHECKING:
 
 __all__ = ["Comp", "comp_body", "comp_others", "corner_box", "straight_code"]
 
+#: The comp group's codes that turn compensation on (G41, G42; G41.1, G42.1 as the pass keys them: -411, -421).
+_ON = (41, 42, -411, -421)
 #: Row kinds of the queue: a rapid, a feed, a corner arc.
 _RAPID, _LINE, _ARC = 0, 1, 2
 #: :attr:`Comp.words`: the axis is where the machine started (converted exactly when needed).
@@ -88,7 +92,7 @@ def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float,
 
 def comp_others(groups: dict[str, int], others: list[str]) -> list[str]:
     """The words of a block without a G41/G42's D (its tool), for the checks of the other D users."""
-    if groups.get("comp") in (41, 42) and "D" in others:
+    if groups.get("comp") in _ON and "D" in others:
         return [x for x in others if x != "D"]
     return others
 
@@ -101,13 +105,13 @@ def comp_body(st: Any, groups: dict[str, int], ms: list[int], ts: list[int], qs:
     comp = groups.get("comp")
     cc = st.cc
     if cc is None:
-        if comp in (41, 42):
+        if comp in _ON:
             raise declined("G41/G42 on a machine without LinuxCNC's cutter compensation, or a lathe")
         return [], []
     cc.compile_checks(groups)
     checks = []
     if any(g in groups for g in ("plane", "units", "offset", "tool", "path")) or 6 in ms or 61 in ms \
-            or comp in (41, 42):
+            or comp in _ON:
         checks.append("if CS.side is not None: raise D('a code cutter compensation refuses while on')")
     if 6 in ms or 61 in ms or groups.get("nonmodal") == 4:
         checks.append("if CS.busy: raise D('a dwell or tool change under cutter compensation or after G40')")
@@ -123,6 +127,10 @@ def comp_body(st: Any, groups: dict[str, int], ms: list[int], ts: list[int], qs:
     elif comp in (41, 42):
         d = f"v[{others.index('D')}]" if "D" in others else "None"
         select.append(f"CS.on({LEFT if comp == 41 else RIGHT}, {d})")
+    elif comp in _ON:  # G41.1/G42.1: D is the diameter (LinuxCNC's error without it)
+        if "D" not in others:
+            raise declined("G41.1/G42.1 without D")
+        select.append(f"CS.on({LEFT if comp == -411 else RIGHT}, v[{others.index('D')}], True)")
     return checks, select
 
 
@@ -214,12 +222,16 @@ class Comp:
             self.stale = False
         self.spindle = self.selected
 
-    def on(self, side: int, d: float | None) -> None:
-        """G41 (``side`` LEFT) or G42 with D ``d`` (None: the tool in the spindle), as ``CutterComp.select``."""
+    def on(self, side: int, d: float | None, dynamic: bool = False) -> None:
+        """G41 (``side`` LEFT) or G42 with D ``d`` (None: the tool in the spindle), or (``dynamic``) G41.1/G42.1
+        with the diameter ``d``, as ``CutterComp.select``."""
         st = self.st
         if (st.plane or st.start_plane) != 17 or st.inch or st.diameter or self.ia is None or self.ib is None \
                 or st.tool_axis in (self.ia, self.ib):
             raise self.declined("cutter compensation outside G17 and G21 on X and Y")
+        if dynamic:
+            self._dynamic(side, d)
+            return
         if d is None or d == 0.0:
             if self.stale:
                 raise self.declined("cutter compensation of the tool in the spindle after T0 M6 or M61")
@@ -232,6 +244,18 @@ class Comp:
         if dia is None or not dia > 0:
             raise self.declined("cutter compensation with a tool without a positive diameter")
         self.side, self.radius = side, float(dia) / 2.0
+        self.busy, self.first, self.queue = True, True, []
+
+    def _dynamic(self, side: int, d: Any) -> None:
+        """G41.1/G42.1 D ``d`` (a diameter: LinuxCNC's radius is ``d / 2``, a negative one the other side)."""
+        if self.side is not None:
+            raise self.declined("G41.1/G42.1 while compensation is on")
+        radius = d / 2.0
+        if radius < 0.0:
+            radius, side = -radius, RIGHT if side == LEFT else LEFT
+        if not radius > 0.0:
+            raise self.declined("G41.1/G42.1 with a diameter of 0")
+        self.side, self.radius = side, radius
         self.busy, self.first, self.queue = True, True, []
 
     def off(self) -> None:

@@ -98,7 +98,8 @@ G83's peck rows widened by their drift (``xerr``).
 
 Cutter compensation (:mod:`.double_comp`): on a machine with ``cutter_compensation = "linuxcnc"`` (not a lathe),
 G40, and G41/G42 with a literal or computed ``D`` (a tool of ``[tool_diameters]``) or without (the tool in the
-spindle, ``T`` and ``M6``/``M61 Q`` followed), in G17, G21 and G90, over straight moves: the rows of the full
+spindle, ``T`` and ``M6``/``M61 Q`` followed), or G41.1/G42.1 with a diameter ``D`` (no ``L``), in G17, G21 and
+G90, over straight moves: the rows of the full
 path's ``CutterComp`` (the held move, the entry, a convex corner's arc about the programmed corner with its sweep
 box, a concave corner's pulled-back end, G40's and M2/M30's flush) from the same float formulas
 (:mod:`.comp_floats`).  Declined: G2/G3 under compensation or just after its G40, a dwell, tool change or a
@@ -236,7 +237,7 @@ _LETTERS = frozenset("GMFSXYZIJKRHTPQD")  # D: G96's speed limit (.double_lathe)
 #: read like a G or M code).
 _CODE_LETTERS = "GMHTQ"
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
-_CODE_TENTH = re.compile(r"0*(61|91)\.10*")  # G61.1 and G91.1, the codes n.1 the pass follows
+_CODE_TENTH = re.compile(r"0*(61|91|41|42)\.10*")  # G61.1, G91.1, G41.1 and G42.1: the codes n.1 the pass follows
 #: A line of words of a letter and a number only (:meth:`_Pass._plain`; the parser's ``_NUMBER``), and a word.
 _PLAIN = re.compile(r"[ \t]*(?:[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)[ \t]*)+")
 _PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
@@ -1735,7 +1736,7 @@ def _atan(y: float, x: float) -> float:
 
 
 _CODES: dict[str, int] = {}
-_G61_1 = Fraction(611, 10)
+_TENTHS = frozenset((Fraction(611, 10), Fraction(411, 10), Fraction(421, 10)))  # G61.1, G41.1, G42.1 parsed
 
 
 def _code(text: str) -> int:
@@ -1765,7 +1766,7 @@ def _const(node: Any) -> str:
 def _const_code(node: Any) -> str:
     """The source of the G or M code of a parsed literal: a whole number, else declined."""
     q = node[2]
-    if q is None or q < 0 or (q.denominator != 1 and q != _G61_1):
+    if q is None or q < 0 or (q.denominator != 1 and q not in _TENTHS):
         raise Declined("a G or M code that is not a whole number")
     return str(q.numerator) if q.denominator == 1 else str(-q.numerator)  # n.1: -(10 n + 1), as _code
 
