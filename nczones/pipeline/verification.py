@@ -201,7 +201,8 @@ def _double_pass_reads(text: str | FileText, machine: Machine | None = None) -> 
     r"""Whether the double pass is tried first: a program with parameters (``#``), or one with o-words (the
     fast path hands those to the language layer, which the pass runs some 4x faster: issue 36's "o-word subs,
     no #" class), a plain program of the pass's size, and any program of :data:`FAST_PATH_MIN_LINES` lines or
-    more on a lathe (``machine``: ``type = "lathe"`` or diameter axes), which no fast path reads (lathe39).
+    more on a lathe (``machine``: ``type = "lathe"`` or diameter axes), which no fast path reads (lathe39), or
+    on a machine with LinuxCNC's cutter compensation whose text may write G41/G42 (nor that: comp40).
     Soundness does not rest on this test: the pass proves or declines (then the full path decides) whatever it
     is given; a program it misses goes the full path as before.
 
@@ -232,7 +233,9 @@ def _double_pass_reads(text: str | FileText, machine: Machine | None = None) -> 
         pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
         if any(_oword_line().search(p) is not None for p in pieces):
             return True
-    if machine is not None and (machine.is_lathe or machine.diameter_axes):  # no fast path for a lathe
+    if machine is not None and (machine.is_lathe or machine.diameter_axes  # no fast path for a lathe
+                                or (machine.cutter_compensation == "linuxcnc" and ("41" in text or "42" in text))):
+        # nor for cutter compensation (comp40: the pass follows G41/G42 over straight moves)
         return _line_count(text) >= FAST_PATH_MIN_LINES  # type: ignore[arg-type]  # FileText counts too
     return _small_plain(text)
 

@@ -55,6 +55,8 @@ from ...errors import Diagnostic, GcodeError
 from ...exact import to_float
 from ...motion import PLANE_AXES, Plane, SegmentKind
 from ..segments import make_segment, with_tool_deps
+from .comp_floats import CONCAVE_TOLERANCE_RAD, LEFT, entry_line, line_corner, retreat, reverses
+from .comp_floats import RIGHT as _RIGHT
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -133,10 +135,7 @@ class CompensatedInterpreter(Protocol):
 
 __all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD"]
 
-#: LinuxCNC TOLERANCE_CONCAVE_CORNER: turns smaller than this (radians) need no corner arc.
-CONCAVE_TOLERANCE_RAD = 0.05
 _TOLERANCE_EQUAL = 1e-6
-LEFT, _RIGHT = 2, 1
 _INCH = Fraction(254, 10)
 _PI = math.pi
 _HALF_PI = math.pi / 2
@@ -590,8 +589,7 @@ class CutterComp:
                     raise self.error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation)")
             else:
-                dot = q.da * (x - ex) + q.db * (y - ey)
-                if self.endpoint_valid and dot < 0:
+                if self.endpoint_valid and reverses(q.da, q.db, x, y, ex, ey):
                     what = "Straight traverse" if q.kind is _RAPID else "Straight feed"
                     raise self.error(GC_GOUGE, f"{what} in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation: the move shrinks past its start)")
@@ -648,15 +646,14 @@ class CutterComp:
     def _straight_first(self, kind: SegmentKind, px: float, py: float, end: list, deps: Any) -> None:
         radius, side = self.radius, self.side
         cx, cy = self.cur
-        distance = math.hypot(px - cx, py - cy)
-        if distance <= radius:
+        got = entry_line(side, radius, cx, cy, px, py)
+        if got is None:
+            distance = math.hypot(px - cx, py - cy)
             raise self.error(GC_ENTRY, "Length of cutter compensation entry move is not greater than the tool "
                               f"radius ({distance:.6f} <= {radius:.6f} program units)")
-        alpha = math.atan2(py - cy, px - cx) + (_PI / 2.0 if side == LEFT else -_PI / 2.0)
-        ex = px + radius * math.cos(alpha)
-        ey = py + radius * math.sin(alpha)
+        ex, ey, da, db = got
         self._set_endpoint(cx, cy)
-        self._enqueue(_Move(kind, ex, ey, list(end), math.cos(alpha), math.sin(alpha), deps=deps))
+        self._enqueue(_Move(kind, ex, ey, list(end), da, db, deps=deps))
         self.first = False
         self.cur = (ex, ey)
         self.prog = (px, py)
@@ -669,32 +666,11 @@ class CutterComp:
             self._enqueue(_Move(kind, cx, cy, list(end), 0.0, 0.0, deps=deps))
             return
         side, radius = self.side, self.radius
-        small = CONCAVE_TOLERANCE_RAD
-        theta = math.atan2(cy - opy, cx - opx)
-        alpha = math.atan2(py - opy, px - opx)
-        if side == LEFT:
-            if theta < alpha:
-                theta = theta + 2 * _PI
-            beta = (theta - alpha) - _HALF_PI
-            gamma = _HALF_PI
-        else:
-            if alpha < theta:
-                alpha = alpha + 2 * _PI
-            beta = (alpha - theta) - _HALF_PI
-            gamma = -_HALF_PI
-        end_x = px + radius * math.cos(alpha + gamma)
-        end_y = py + radius * math.sin(alpha + gamma)
-        mid_x = opx + radius * math.cos(alpha + gamma)
-        mid_y = opy + radius * math.sin(alpha + gamma)
-        if beta < -small or beta > _PI + small:
-            concave = True
-        elif (beta > _PI - small and self.queue and self.queue[0].kind is _ARC
-              and ((side == _RIGHT and self.queue[0].turn > 0) or (side == LEFT and self.queue[0].turn < 0))):
-            concave = True  # the "h" shape: stay above and to the side rather than loop around
-        else:
-            concave = False
+        front = self.queue[0].turn if self.queue and self.queue[0].kind is _ARC else 0
+        concave, beta, end_x, end_y, mid_x, mid_y, theta, gamma = line_corner(side, radius, cx, cy, opx, opy,
+                                                                               px, py, front)
         ia, ib, _ = self._axes()
-        if not concave and beta > small:  # convex: go around the corner
+        if not concave and beta > CONCAVE_TOLERANCE_RAD:  # convex: go around the corner
             self._move_endpoint_and_flush(cx, cy)
             corner = self._corner_end(end)
             corner_deps = [dict(d) for d in it.dep_pos] if it.track else None
@@ -713,13 +689,10 @@ class CutterComp:
                     self._enqueue(_Move(kind, end_x, end_y, list(end), px - opx, py - opy, deps=deps))
                     self.cur, self.prog = (end_x, end_y), (px, py)
                     return
-                halfcorner = (beta + _PI) / 2.0
-                if halfcorner == 0.0:
+                back = retreat(radius, cx, cy, beta, theta, gamma)
+                if back is None:
                     raise self.error(GC_GOUGE, "Zero degree inside corner is invalid for cutter compensation")
-                retreat = radius / math.tan(halfcorner)
-                mx = cx + retreat * math.cos(theta + gamma)
-                my = cy + retreat * math.sin(theta + gamma)
-                self._move_endpoint_and_flush(mx, my)
+                self._move_endpoint_and_flush(*back)
             else:
                 prev = self.queue[0]
                 oldrad = math.hypot(prev.cb - prev.b, prev.ca - prev.a)

@@ -59,7 +59,8 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["R_INCH_REL", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined"]
+__all__ = ["R_INCH_REL", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined",
+           "sector_box"]
 
 _U = 2.0**-52
 _TAU = 2.0 * math.pi
@@ -384,3 +385,8 @@ def _by_angles(ux: float, uy: float, wx: float, wy: float, err: float) -> tuple[
     if sweep < 4 * eta or sweep > _TAU - 4 * eta:
         return _ALL
     return tuple((angle - start + eta) % _TAU <= sweep + 4 * eta for angle in _ANGLES)
+
+
+#: :func:`_box` under a public name: the box of an annulus sector about a centre the caller has (the corner arcs
+#: of cutter compensation, :mod:`.double_comp`, about the programmed corner)
+sector_box = _box

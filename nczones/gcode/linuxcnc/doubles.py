@@ -97,6 +97,16 @@ an M word is a value, G83's alone) in G90, in the plane the program has set, aft
 exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the bottom decline);
 G83's peck rows widened by their drift (``xerr``).
 
+Cutter compensation (:mod:`.double_comp`): on a machine with ``cutter_compensation = "linuxcnc"`` (not a lathe),
+G40, and G41/G42 with a literal or computed ``D`` (a tool of ``[tool_diameters]``) or without (the tool in the
+spindle, ``T`` and ``M6``/``M61 Q`` followed), or G41.1/G42.1 with a diameter ``D`` (no ``L``), in G17, G21 and
+G90, over straight moves: the rows of the full
+path's ``CutterComp`` (the held move, the entry, a convex corner's arc about the programmed corner with its sweep
+box, a concave corner's pulled-back end, G40's and M2/M30's flush) from the same float formulas
+(:mod:`.comp_floats`).  Declined: G2/G3 under compensation or just after its G40, a dwell, tool change or a
+plane, units, offset, tool length or path mode code while it is on, G91, G20, G7/G8 and canned cycles in a program
+that may write it (a ``41`` or ``42`` in the text), and every error of the full path's compensation.
+
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
 layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
 words only by :meth:`_Pass._plain`, any other by its shape; in a loop or sub body: the block's steps compiled
@@ -157,6 +167,7 @@ from .double_arcs import (
     refined,
 )
 from .double_arcs import INCH as INCH_ARC
+from .double_comp import Comp, comp_body, comp_others, straight_code
 from .double_cycles import (
     CYCLE_CODES,
     Cycles,
@@ -227,7 +238,7 @@ _LETTERS = frozenset("GMFSXYZIJKRHTPQD")  # D: G96's speed limit (.double_lathe)
 #: read like a G or M code).
 _CODE_LETTERS = "GMHTQ"
 _CODE_TEXT = re.compile(r"0*(\d+)(?:\.0*)?")
-_CODE_TENTH = re.compile(r"0*(61|91)\.10*")  # G61.1 and G91.1, the codes n.1 the pass follows
+_CODE_TENTH = re.compile(r"0*(61|91|41|42)\.10*")  # G61.1, G91.1, G41.1 and G42.1: the codes n.1 the pass follows
 #: A line of words of a letter and a number only (:meth:`_Pass._plain`; the parser's ``_NUMBER``), and a word.
 _PLAIN = re.compile(r"[ \t]*(?:[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)[ \t]*)+")
 _PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
@@ -505,6 +516,9 @@ class _Pass:
         self._arcs_state(machine, arc_tolerance)
         self._modes_state(machine)
         self.cyc = Cycles(self, Declined, machine)  # canned cycles (.double_cycles)
+        #: cutter compensation (.double_comp), on a machine with LinuxCNC's and a text that may write G41/G42
+        self.cc = Comp(self, machine, Declined) if getattr(machine, "cutter_compensation", "none") == "linuxcnc" \
+            and not self.diameter and ("41" in text or "42" in text) else None
         self.unset = set(_NOTED)
         #: the groups assumed at a motion and their codes (DoublePath.assumed); what each starts as on the full path
         self.assumed: dict[str, str] = {}
@@ -624,6 +638,8 @@ class _Pass:
                 i = self._sub(i, target)
             else:  # elseif, else: the branch before ran, on past the endif (endif: on to the next line)
                 i = target
+        if self.cc is not None:  # M2, M30 or the end of the text: compensation's held moves (.double_comp)
+            self.cc.end()
         return self._path()
 
     def _straight(self, i: int, end: int) -> int:
@@ -1109,11 +1125,15 @@ class _Pass:
             raise Declined("G43 or G49 after G20/G21 while a tool length is applied")
         self.reg, self.reg_inch = reg, self.inch
         self.off = self._offset(self.wcs, reg)
+        if self.cc is not None:
+            self.cc.offset_to(self.wcs, reg)
 
     def work(self, wcs: int) -> None:
         """G54..G59: the work offset the next motions add."""
         self.wcs = wcs
         self.off = self._offset(wcs, self.reg)
+        if self.cc is not None:
+            self.cc.offset_to(wcs, self.reg)
 
     def _arcs_state(self, machine: Any, arc_tolerance: Fraction | str) -> None:
         #: the plane the program has set (17, 18, 19; 0 before it sets one: the full path notes the plane at an
@@ -1311,7 +1331,7 @@ class _Pass:
             if x not in "FSIJKRPDq" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
         axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPDq"]
-        why = spindle_mode(groups, others)  # G96/G97 and D (.double_lathe)
+        why = spindle_mode(groups, comp_others(groups, others))  # G96/G97 and D (.double_lathe; G41's: .double_comp)
         if why is not None:
             raise Declined(why)
         if "q" in others and not (takes_q(groups, bool(axes)) or _g64_q(groups, others, bool(axes))):
@@ -1326,8 +1346,9 @@ class _Pass:
                      "st.feed = f"]
         if "S" in others:  # the full path's GC209 for a negative speed; the speed itself moves nothing
             body.append(f"if not v[{others.index('S')}] >= 0.0: raise D('a negative spindle speed')")
-        body += self._dwell_body(groups, others, bool(axes))
-        body += self._modal_body(groups, hs, others) + cycle_modal(groups)
+        checks, select = comp_body(self, groups, ms, ts, qs, others, Declined)  # cutter compensation (.double_comp)
+        body += checks + self._dwell_body(groups, others, bool(axes))
+        body += self._modal_body(groups, hs, others) + cycle_modal(groups) + select
         if groups.get("motion") in (1, 2, 3) and not axes:  # G1 without axis words: LinuxCNC checks the feed too
             if groups["motion"] != 1 or any(x in "IJKR" for x in others):
                 raise Declined("an arc without axis words")
@@ -1348,7 +1369,8 @@ class _Pass:
                                  "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
-                                 "CYC": CYCLE_CODES, "TA": TA}
+                                 "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc,
+                                 "W": None if self.cc is None else self.cc.words}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
@@ -1541,6 +1563,7 @@ class _Pass:
                     "else:", *(f"    {b}" for b in ends)]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})", *ends,
+                *self._kept_words(axes),
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
@@ -1563,6 +1586,8 @@ class _Pass:
                 raise Declined("an arc on axes other than X, Y and Z")
             body += ["if mode < 2 or not st.feed > 0.0: "
                      "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
+                     *(["if CS.busy: raise D('an arc under cutter compensation or just after its G40')"]
+                       if self.cc is not None else []),
                      "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
         body += ["if unset: st.assume()", "off = st.off"]
         if arc:
@@ -1573,13 +1598,20 @@ class _Pass:
             body += ["else:", "    raise D('an arc before the program sets the plane')"]
         else:
             moved = tuple(i for _k, i in axes)
-            body.append(f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})")
-            body += self._straight_ends(axes)
-            body += [*self._appends(axes), "n = len(C0)"]
+            straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
+                        *self._straight_ends(axes), *self._kept_words(axes), *self._appends(axes), "n = len(C0)",
+                        f"if n >= {self.rows}: st.full()", "if not mode: st.rapids += 1"]
+            return body + (straight if self.cc is None else straight_code(axes, straight))
         body.append(f"if n >= {self.rows}: st.full()")
-        if not arc:
-            body.append("if not mode: st.rapids += 1")
         return body
+
+    def _kept_words(self, axes: list[tuple[int, int]]) -> list[str]:
+        """In a program that may compensate (:mod:`.double_comp`, which declines G91 and G20 there): the
+        words of X and Y, the program-frame doubles compensation starts from."""
+        cc = self.cc
+        if cc is None:
+            return []
+        return [f"W[{i}] = {self._word(k, i)}" for k, i in axes if i in (cc.ia, cc.ib)]
 
 
 def _g64_q(groups: dict[str, int], others: list[str], axes: bool) -> bool:
@@ -1717,7 +1749,7 @@ def _atan(y: float, x: float) -> float:
 
 
 _CODES: dict[str, int] = {}
-_G61_1 = Fraction(611, 10)
+_TENTHS = frozenset((Fraction(611, 10), Fraction(411, 10), Fraction(421, 10)))  # G61.1, G41.1, G42.1 parsed
 
 
 def _code(text: str) -> int:
@@ -1747,7 +1779,7 @@ def _const(node: Any) -> str:
 def _const_code(node: Any) -> str:
     """The source of the G or M code of a parsed literal: a whole number, else declined."""
     q = node[2]
-    if q is None or q < 0 or (q.denominator != 1 and q != _G61_1):
+    if q is None or q < 0 or (q.denominator != 1 and q not in _TENTHS):
         raise Declined("a G or M code that is not a whole number")
     return str(q.numerator) if q.denominator == 1 else str(-q.numerator)  # n.1: -(10 n + 1), as _code
 

@@ -1,0 +1,421 @@
+"""Cutter radius compensation (G40, G41, G42) in the double pass (:mod:`nczones.gcode.linuxcnc.doubles`).
+
+On a machine with ``cutter_compensation = "linuxcnc"`` the full path compensates every motion while G41 or G42
+is on (:mod:`.cutter_comp`, LinuxCNC's ``convert_straight_comp1/2`` and its move queue).  The pass follows the
+straight moves (G0, G1) in G17, G21 and G90: the same motions, in the same order, each row the double of the
+full path's exact end.
+
+Why the rows hold
+-----------------
+The full path computes the compensation in program-frame doubles: the programmed point of a plane axis is
+``program_double(exact machine end, offset)``, the correctly rounded ``exact word`` (G90, G21: the end is the
+word's exact value plus the offset, and a word's exact value is one whose double is the word's double, the
+pass's module docstring), so it *is* the word's double the pass computes; an axis the block does not name keeps
+the previous one (:attr:`Comp.words`, kept per plane axis by every G90 move of the pass, the machine's start
+converted exactly, and forgotten when the axis's exact offset changes: compensation then declines).  From
+those the full path and the pass call the same functions (:mod:`.comp_floats`) in the same order, so every
+compensated end ``a`` is the same double; the full path's exact machine end is ``Fraction(a) + offset``, the
+pass's row ``fl(a + float(offset))``: within ``(|offset| + |row|) 2**-53``, inside the pass's widening.  The
+other axes of a row are the programmed ones (a convex corner's normal axis: the one before the move), the
+pass's rows of the move as without compensation.
+
+A convex corner of a feed is an arc about the programmed corner (the previous programmed point, a row of
+the pass within its bound) from the previous compensated end to the next one (a spiral when the two radii
+differ: the full path's segment is that spiral), clockwise for G41.  Its box (:func:`corner_box`) is
+:mod:`.double_arcs`' ``_box`` of the annulus sector about the centre's double, with ``err`` as ``ij_check``'s:
+the centre's and the ends' doubles are within the rows' bound (``rho <= (4 m + 2**-8) 2**-52``, ``m`` above
+every magnitude and the offsets), so ``u = S - C``, ``w = E - C`` and the radii are within ``err / 2`` of
+the exact ones, as there.  The corner arc joins the pass's arcs (``DoublePath.arc_rows``, its box already
+the sweep's: ``EXACT``), and an arc after a motion LinuxCNC may drop declines as a programmed arc's does.
+
+G41.1/G42.1 take their ``D`` as the diameter (a negative one: the other side), as ``CutterComp.select``.
+
+What declines (the full path's error or unknown, or not modelled): G41/G42 on a machine without LinuxCNC's
+compensation or on a lathe, outside G17, in G20, with a tool whose diameter is not in ``[tool_diameters]``
+or not above 0, D not a whole positive number, the tool in the spindle after ``T0 M6`` or ``M61``; G41 or G42
+while on; G2/G3 while on or as the move after G40's flush; a dwell, M6, M61, a plane, units, work offset, tool
+length or path mode code while on (or, a dwell, M6 and M61, while the machine stands at G40's compensated
+point); G91, G20, G7 and canned cycles in a program that writes compensation (:meth:`Comp.compile_checks`);
+an entry move not longer than the radius, a gouge (a held move reversed), a zero-degree inside corner.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from ...motion import DROPPED_BELOW
+from .comp_floats import (
+    CONCAVE_TOLERANCE_RAD,
+    LEFT,
+    RIGHT,
+    entry_line,
+    line_corner,
+    retreat,
+    reverses,
+)
+from .double_arcs import EXACT
+from .double_arcs import sector_box as arc_box
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
+
+__all__ = ["Comp", "comp_body", "comp_others", "corner_box", "straight_code"]
+
+#: The comp group's codes that turn compensation on (G41, G42; G41.1, G42.1 as the pass keys them: -411, -421).
+_ON = (41, 42, -411, -421)
+#: Row kinds of the queue: a rapid, a feed, a corner arc.
+_RAPID, _LINE, _ARC = 0, 1, 2
+#: :attr:`Comp.words`: the axis is where the machine started (converted exactly when needed).
+START = "start"
+_U = 2.0**-52
+
+
+def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, cw: bool,
+               offb: float) -> tuple[float, float, float, float]:
+    """The box (``xlo, xhi, ylo, yhi``) of a corner arc from row ``(sx, sy)`` to row ``(ex, ey)`` about the
+    programmed corner's row ``(cx, cy)`` (the module's docstring: ``double_arcs._box`` with ``ij_check``'s
+    ``err``; ``offb`` bounds the offsets).
+
+    >>> [round(v, 9) + 0.0 for v in corner_box(0.0, 1.0, 1.0, 0.0, 0.0, 0.0, True, 0.0)]
+    [0.0, 1.0, 0.0, 1.0]
+    """
+    ux, uy, wx, wy = sx - cx, sy - cy, ex - cx, ey - cy
+    r0, r1 = math.hypot(ux, uy), math.hypot(wx, wy)
+    m = abs(sx) + abs(sy) + r0 + r1 + offb
+    err = (64.0 * m + 0.0625) * _U
+    diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
+    return arc_box(sx, sy, ex, ey, cx, cy, ux, uy, wx, wy, big, diff + err, err, cw)
+
+
+def comp_others(groups: dict[str, int], others: list[str]) -> list[str]:
+    """The words of a block without a G41/G42's D (its tool), for the checks of the other D users."""
+    if groups.get("comp") in _ON and "D" in others:
+        return [x for x in others if x != "D"]
+    return others
+
+
+def comp_body(st: Any, groups: dict[str, int], ms: list[int], ts: list[int], qs: list[int],
+              others: list[str], declined: Any) -> tuple[list[str], list[str]]:
+    """The code of a block's compensation: ``(checks, select)``, the checks before its modal codes (the full
+    path's ``check_block``: a state compensation refuses while on), the tool change and G40/G41/G42 after
+    them (before its motion)."""
+    comp = groups.get("comp")
+    cc = st.cc
+    if cc is None:
+        if comp in _ON:
+            raise declined("G41/G42 on a machine without LinuxCNC's cutter compensation, or a lathe")
+        return [], []
+    cc.compile_checks(groups)
+    checks = []
+    if any(g in groups for g in ("plane", "units", "offset", "tool", "path")) or 6 in ms or 61 in ms \
+            or comp in _ON:
+        checks.append("if CS.side is not None: raise D('a code cutter compensation refuses while on')")
+    if 6 in ms or 61 in ms or groups.get("nonmodal") == 4:
+        checks.append("if CS.busy: raise D('a dwell or tool change under cutter compensation or after G40')")
+    select = []
+    if ts:
+        select.append(f"CS.selected = {ts[0]}")
+    if 6 in ms:
+        select.append("CS.change()")
+    if 61 in ms:
+        select.append(f"CS.spindle = {qs[0]}; CS.stale = True")
+    if comp == 40:
+        select.append("CS.off()")
+    elif comp in (41, 42):
+        d = f"v[{others.index('D')}]" if "D" in others else "None"
+        select.append(f"CS.on({LEFT if comp == 41 else RIGHT}, {d})")
+    elif comp in _ON:  # G41.1/G42.1: D is the diameter (LinuxCNC's error without it)
+        if "D" not in others:
+            raise declined("G41.1/G42.1 without D")
+        select.append(f"CS.on({LEFT if comp == -411 else RIGHT}, v[{others.index('D')}], True)")
+    return checks, select
+
+
+def straight_code(axes: list[tuple[int, int]], normal: list[str]) -> list[str]:
+    """A straight move's code in a program that may compensate: :meth:`Comp.straight` while compensation is on
+    or G40 left the machine off the programmed point, else ``normal``."""
+    return ["if CS.busy:", f"    CS.straight(mode, v, {tuple(axes)!r})", "else:", *(f"    {b}" for b in normal)]
+
+
+class Comp:
+    """The compensation state of one pass (``_Pass.cc``) and LinuxCNC's move queue, as
+    :class:`~nczones.gcode.linuxcnc.cutter_comp.CutterComp` keeps them, on the pass's doubles."""
+
+    def __init__(self, st: Any, machine: Any, declined: Any):
+        self.st = st
+        self.declined = declined
+        self.diameters = dict(getattr(machine, "tool_diameters", {}) or {})
+        self.side: int | None = None
+        #: compensation on, or G40 flushed it and the next motion has not run (the machine stands at the
+        #: compensated point, LinuxCNC's ``comp_just_off``): the straight moves go through :meth:`straight`
+        self.busy = False
+        self.radius = 0.0
+        self.first = True
+        #: held moves: ``[kind, a, b, da, db, row]`` (straight: ``row`` the other axes' doubles)
+        self.queue: list[list[Any]] = []
+        self.endpoint = (0.0, 0.0)
+        self.valid = False
+        self.cur = (0.0, 0.0)
+        self.prog = (0.0, 0.0)
+        index = st.index
+        self.ia, self.ib, self.inn = index.get("X"), index.get("Y"), index.get("Z")
+        #: per axis: the program-frame double of the programmed point (the last G90 word), :data:`START`, or
+        #: None (its exact offset changed since: compensation from there declines)
+        self.words: list[Any] = [START] * len(st.axes)
+        self.key = (st.wcs, st.reg)
+        self.selected = self.spindle = 0
+        self.stale = False
+        self.adds: tuple[Any, ...] | None = None  # the columns' appends, once a row was added (_row)
+        #: a plane axis's step at or above this is not one LinuxCNC may drop (``_Pass.tiny``; the plans' LIM)
+        self.lim = 2 * (float(DROPPED_BELOW) * 1.01 + 1e-12 + st.tiny_pad) + 1e-4
+
+    # -- what a program that compensates may not do ------------------------------------------------------
+    def compile_checks(self, groups: dict[str, int]) -> None:
+        """Decline G91, G20, G7/G8 and canned cycles in a program that writes compensation (the words it keeps are
+        G90 millimetres), and G41/G42 outside what the module follows."""
+        from .double_cycles import CYCLE_CODES
+
+        if groups.get("distance") == 91 or groups.get("units") == 20 or "diameter" in groups \
+                or groups.get("motion") in CYCLE_CODES:
+            raise self.declined("G91, G20, G7 or a canned cycle in a program with cutter compensation")
+
+    # -- state ------------------------------------------------------------------------------------------
+    def _exact_offset(self, i: int, key: tuple[int, int | None]) -> Fraction:
+        st = self.st
+        wcs, reg = key
+        off: Fraction = st.exact_offsets[wcs][i]
+        if reg is not None and i == st.tool_axis:
+            off += st.lengths[reg]
+        return off
+
+    def offset_to(self, wcs: int, reg: int | None) -> None:
+        """G54..G59, G43 or G49 (not while on): the plane axes whose exact offset changes forget their word."""
+        key = (wcs, reg)
+        if key == self.key:
+            return
+        for i in (self.ia, self.ib):
+            if i is not None and self.words[i] not in (None, START) \
+                    and self._exact_offset(i, self.key) != self._exact_offset(i, key):
+                self.words[i] = None
+        self.key = key
+
+    def _program(self, i: int) -> float:
+        """The program-frame double of axis ``i``'s programmed point (the full path's ``_fprog``)."""
+        w = self.words[i]
+        if w is None:
+            raise self.declined("cutter compensation after a work offset or tool length change")
+        if w is START:
+            from .cutter_comp import program_double
+
+            return program_double(Fraction(self.st.start[i]), self._exact_offset(i, self.key), (1, 1))
+        value: float = w
+        return value
+
+    def change(self) -> None:
+        """M6: the selected tool in the spindle (``Interpreter``: T0 M6 leaves the slot's entry behind)."""
+        if self.selected == 0 and self.spindle != 0:
+            self.stale = True
+        elif self.selected != 0:
+            self.stale = False
+        self.spindle = self.selected
+
+    def on(self, side: int, d: float | None, dynamic: bool = False) -> None:
+        """G41 (``side`` LEFT) or G42 with D ``d`` (None: the tool in the spindle), or (``dynamic``) G41.1/G42.1
+        with the diameter ``d``, as ``CutterComp.select``."""
+        st = self.st
+        if (st.plane or st.start_plane) != 17 or st.inch or st.diameter or self.ia is None or self.ib is None \
+                or st.tool_axis in (self.ia, self.ib):
+            raise self.declined("cutter compensation outside G17 and G21 on X and Y")
+        if dynamic:
+            self._dynamic(side, d)
+            return
+        if d is None or d == 0.0:
+            if self.stale:
+                raise self.declined("cutter compensation of the tool in the spindle after T0 M6 or M61")
+            tool = self.spindle
+        else:
+            tool = int(d + 0.5)
+            if not (d > 0.0 and abs(tool - d) < 0.0001):
+                raise self.declined("a D word that is not a whole positive number")
+        dia = self.diameters.get(tool)
+        if dia is None or not dia > 0:
+            raise self.declined("cutter compensation with a tool without a positive diameter")
+        self.side, self.radius = side, float(dia) / 2.0
+        self.busy, self.first, self.queue = True, True, []
+
+    def _dynamic(self, side: int, d: Any) -> None:
+        """G41.1/G42.1 D ``d`` (a diameter: LinuxCNC's radius is ``d / 2``, a negative one the other side)."""
+        if self.side is not None:
+            raise self.declined("G41.1/G42.1 while compensation is on")
+        radius = d / 2.0
+        if radius < 0.0:
+            radius, side = -radius, RIGHT if side == LEFT else LEFT
+        if not radius > 0.0:
+            raise self.declined("G41.1/G42.1 with a diameter of 0")
+        self.side, self.radius = side, radius
+        self.busy, self.first, self.queue = True, True, []
+
+    def off(self) -> None:
+        """G40: the held moves flushed where the tool is; the next motion starts from there."""
+        if self.side is not None and not self.first:
+            self._flush(*self.cur)
+            self.valid = False
+            self.busy = True  # LinuxCNC's comp_just_off: the next motion must be straight
+        else:
+            self.busy = False
+        self.side = None
+        self.first = True
+
+    def end(self) -> None:
+        """M2, M30 or the end of the text: the held moves flushed."""
+        if self.side is not None and self.queue:
+            self._flush(*self.cur)
+        self.side = None
+        self.first = True
+        self.busy = False
+
+    # -- moves ------------------------------------------------------------------------------------------
+    def straight(self, mode: int, v: Any, axes: tuple[tuple[int, int], ...]) -> None:
+        """A G0 (``mode`` 0) or G1 move of words ``v`` (``axes``: word index, axis index) while :attr:`busy`."""
+        st = self.st
+        pos, off, words = st.pos, st.off, self.words
+        ia, ib = self.ia, self.ib
+        if self.side is not None and self.first:  # (before this move's words are kept)
+            self.prog = self.cur = (self._program(ia), self._program(ib))
+        before = (pos[ia], pos[ib], pos[self.inn] if self.inn is not None else 0.0)
+        px, py = self.prog
+        for k, i in axes:
+            x = words[i] = v[k]
+            pos[i] = x + off[i]
+            if i == ia:
+                px = x
+            elif i == ib:
+                py = x
+        if self.side is None:  # the move after G40's flush: from the compensated point, uncompensated
+            self.busy = False
+            self._row(mode, tuple(pos))
+            return
+        words[ia], words[ib] = px, py
+        if self.first:
+            self._first(mode, px, py, tuple(pos))
+        else:
+            self._next(mode, px, py, tuple(pos), before)
+
+    def _first(self, kind: int, px: float, py: float, row: tuple[float, ...]) -> None:
+        """The entry move (``CutterComp._straight_first``)."""
+        cx, cy = self.cur
+        got = entry_line(self.side, self.radius, cx, cy, px, py)
+        if got is None:
+            raise self.declined("a cutter compensation entry move not longer than the radius")
+        ex, ey, da, db = got
+        self.endpoint, self.valid = (cx, cy), True
+        self.queue.append([kind, ex, ey, da, db, row])
+        self.first = False
+        self.cur, self.prog = (ex, ey), (px, py)
+
+    def _next(self, kind: int, px: float, py: float, row: tuple[float, ...], before: tuple[float, float, float]) -> None:
+        """A move after the first (``CutterComp._straight_next``; the queue's front is never an arc: the pass
+        holds straight moves only, a corner arc is emitted at once)."""
+        cx, cy = self.cur
+        opx, opy = self.prog
+        if py == opy and px == opx:  # no motion in the plane
+            self.queue.append([kind, cx, cy, 0.0, 0.0, row])
+            return
+        concave, beta, end_x, end_y, mid_x, mid_y, theta, gamma = line_corner(self.side, self.radius, cx, cy,
+                                                                               opx, opy, px, py, 0)
+        if not concave and beta > CONCAVE_TOLERANCE_RAD:  # convex: around the corner
+            self._flush(cx, cy)
+            # the corner move, held and emitted at once (CutterComp: _enqueue, then _dequeue)
+            corner = list(row)
+            if self.inn is not None:
+                corner[self.inn] = before[2]
+            off = self.st.off
+            corner[self.ia], corner[self.ib] = mid_x + off[self.ia], mid_y + off[self.ib]
+            self._row(_ARC if kind else _RAPID, corner, (before[0], before[1], self.side == LEFT) if kind else None)
+            self.endpoint, self.valid = (mid_x, mid_y), True
+        elif concave:
+            if not self.queue:
+                raise self.declined("a concave corner after the compensation queue was flushed")
+            back = retreat(self.radius, cx, cy, beta, theta, gamma)
+            if back is None:
+                raise self.declined("a zero-degree inside corner (LinuxCNC's error)")
+            self._flush(*back)
+        else:  # straight on
+            self._dequeue()
+            self.endpoint, self.valid = (cx, cy), True
+        self.queue.append([kind, end_x, end_y, px - opx, py - opy, row])
+        self.cur, self.prog = (end_x, end_y), (px, py)
+
+    def _flush(self, x: float, y: float) -> None:
+        """Move every held move's end to ``(x, y)`` and emit them (``_move_endpoint_and_flush``); a reversed
+        one is LinuxCNC's gouge error: declined."""
+        if not self.queue:
+            return
+        ex, ey = self.endpoint
+        for q in self.queue:
+            if self.valid and reverses(q[3], q[4], x, y, ex, ey):
+                raise self.declined("a compensated move reversed in a concave corner (LinuxCNC's gouge error)")
+            q[1], q[2] = x, y
+        self._dequeue()
+        self.endpoint, self.valid = (x, y), True
+
+    def _dequeue(self) -> None:
+        """Emit the held moves as rows (straight moves: the pass holds no arc)."""
+        self.valid = False
+        st = self.st
+        off, ia, ib = st.off, self.ia, self.ib
+        oa, ob = off[ia], off[ib]
+        adds = self.adds or self._adds()
+        for kind, a, b, _da, _db, row in self.queue:
+            r = list(row)
+            r[ia] = a + oa
+            r[ib] = b + ob
+            for add, x in zip(adds, r):
+                add(x)
+            if kind == _RAPID:
+                st.rapids += 1
+            if len(st.columns[0]) >= st.rows:
+                st.full()
+        self.queue = []
+
+    def _adds(self) -> tuple[Any, ...]:
+        """The columns' appends, at the first row: every axis may move from here (sound: ``_Pass.moved``)."""
+        st = self.st
+        if not all(st.first_row):
+            st.moved(tuple(range(len(st.columns))))
+        adds = self.adds = tuple(col.append for col in st.columns)  # (full() drops rows in place)
+        return adds
+
+    def _row(self, kind: int, row: Any, centre: Any = None) -> None:
+        """Append a motion's row (a corner arc's box beside it)."""
+        st = self.st
+        adds = self.adds or self._adds()
+        if kind == _ARC:
+            self._arc(row, centre)
+        for add, x in zip(adds, row):
+            add(x)
+        if kind == _RAPID:
+            st.rapids += 1
+        if len(st.columns[0]) >= st.rows:
+            st.full()
+
+    def _arc(self, row: Any, centre: Any) -> None:
+        """A corner arc about ``centre`` (its row doubles and clockwise) ending at ``row``: its box, before its
+        row is appended (an arc after a motion LinuxCNC may drop declines, as ``_Pass._arc_body``)."""
+        st = self.st
+        ia, ib = self.ia, self.ib
+        ca, cb = st.columns[ia], st.columns[ib]
+        last = len(ca) - 1  # the motion before the arc ends at this row
+        step = ca[last] - ca[last - 1] if last > 0 else 0.0  # (a quick test tiny() implies, as _Pass._arc_body's)
+        if st.blend and last > 0 and (-self.lim < step < self.lim or not -1e10 < ca[last] < 1e10) \
+                and st.tiny(last) and not st.lone(last) and not st.dwell_at(last):
+            raise self.declined("a corner arc after a motion LinuxCNC may drop in a blended corner")
+        if st.arc_plane != 17:
+            st.arc_in(17)
+        box = corner_box(ca[-1], cb[-1], row[ia], row[ib], centre[0], centre[1], centre[2], st.offb)
+        st.arc_rows.append(st.row0 + last + 1)
+        st.arc_boxes.extend(box)
+        st.arc_words.extend((float(EXACT), 0.0, 0.0))
