@@ -207,6 +207,10 @@ CATALOGUE: tuple[Code, ...] = (
     Code("GC394", _U, _GS, "M99 in the main program, which restarts it forever (GC304 until issue 34)"),
     Code("GC395", _U, _GS, "controller state nczones does not know: a state parameter, HAL pin or INI value "
                            "read, or a state parameter assigned (GC305 until issue 34)"),
+    Code("GC396", _U, _FA, "a result of SIN/COS/TAN/ATAN/ASIN/ACOS/LN/EXP/POW whose one-ulp neighbours give a "
+                           "different integer, comparison, domain or alarm (a control's library may give them)"),
+    Code("GC397", _U, _FA, "a result of SIN/COS/TAN/ATAN/ASIN/ACOS/LN/EXP/POW whose one-ulp neighbours round to "
+                           "different increments at an address, or that an address takes as it is (F, G51)"),
     Code("GC398", _U, _FA, "a Fanuc macro value whose readings (the double as it is, its 15-digit decimal, the "
                            "exact value) give different results for FIX/FUP/ROUND/MOD/AND/OR/XOR/BIN/BCD, a "
                            "comparison or a variable number"),

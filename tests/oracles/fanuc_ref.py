@@ -109,6 +109,22 @@ class Line:
     number: int | None = None
 
 
+def cpython_libm(name: str, *args: float) -> float:
+    """SIN/COS/TAN of degrees, ATAN of ``(y, x)`` in degrees, POW: CPython's library (``math.radians``,
+    ``math.degrees``), the reference's own reading of the functions."""
+    if name == "SIN":
+        return math.sin(math.radians(args[0]))
+    if name == "COS":
+        return math.cos(math.radians(args[0]))
+    if name == "TAN":
+        return math.tan(math.radians(args[0]))
+    if name == "ATAN":
+        return math.degrees(math.atan2(args[0], args[1]))
+    if name == "POW":
+        return math.pow(args[0], args[1])
+    raise RefError(f"function {name}")
+
+
 def _strip(text: str) -> str:
     """Comments ``( )`` removed, blanks removed, upper case, the EOB ``;`` dropped ([0i] "Program
     configuration")."""
@@ -219,6 +235,14 @@ class _Expr:
                 raise RefError(f"bad variable in {self.s!r}")
             self.i = m.end()
             return ("var", ("num", float(m.group())))
+        if self.peek("POW["):
+            # [30i] "Arithmetic and logic operation": POW[a,b], a to the power b
+            self.i += 4
+            a = self.additive()
+            self.eat(",")
+            b = self.additive()
+            self.eat("]")
+            return ("pow", a, b)
         if self.peek("ATAN["):
             # [0i] "Arithmetic and logic operation": ``#i = ATAN[#j]/[#k]`` (also written ``ATAN[#j,#k]``), the
             # angle of the point (#k, #j) in degrees, 0 to 360 (parameter 6004#0 NAT = 0): ATAN[-1]/[-1] is 225
@@ -381,6 +405,10 @@ class Reader:
 
     MAX_STEPS = 200_000
     length_letters = LENGTH_LETTERS
+    #: The control's library: ``libm(name, *args)`` the double SIN/COS/TAN (of degrees), ATAN (of y, x; degrees,
+    #: before the range shift) or POW gives (:func:`cpython_libm`); a test may put another one in (a control whose
+    #: library gives a neighbouring double, tests/gcode/fanuc/test_libm_spread.py).
+    libm = staticmethod(lambda name, *args: cpython_libm(name, *args))
     round_step = F(1)
 
     def __init__(self, machine: RefMachine, *, block_delete=False):
@@ -502,15 +530,13 @@ class Reader:
                 return abs(x)
             if f == "SQRT":
                 return math.sqrt(x)
-            if f == "SIN":
-                return math.sin(math.radians(x))
-            if f == "COS":
-                return math.cos(math.radians(x))
-            if f == "TAN":
-                return math.tan(math.radians(x))
+            if f in ("SIN", "COS", "TAN"):
+                return self.libm(f, x)
         if k == "atan":
-            d = math.degrees(math.atan2(self.num(self.ev(e[1])), self.num(self.ev(e[2]))))
+            d = self.libm("ATAN", self.num(self.ev(e[1])), self.num(self.ev(e[2])))
             return d + 360.0 if d < 0 else d
+        if k == "pow":
+            return self.libm("POW", self.num(self.ev(e[1])), self.num(self.ev(e[2])))
         if k == "bin":
             op, a, b = e[1], self.num(self.ev(e[2])), self.num(self.ev(e[3]))
             if op == "+":

@@ -49,6 +49,12 @@ reach; where the readings give different results :class:`ReadingsSplit`
 (GC398) makes the line ``unknown``: ``FIX[0.3 / 0.1]`` is 2 for the double
 2.9999999999999996 and 3 for its 15 digits.
 
+Library functions
+-----------------
+SIN COS TAN ATAN ASIN ACOS LN EXP POW give CPython's double or one of its two neighbours on a control
+(:class:`SpreadDouble`: the value carries the least and greatest double, through later arithmetic); every
+decision and address above takes a result only where every double of the spread gives it (GC396, GC397).
+
 >>> v = FanucVariables()
 >>> v.read(1) is VACANT, v.read(0) is VACANT
 (True, True)
@@ -64,7 +70,7 @@ from collections.abc import Callable
 from fractions import Fraction
 from operator import attrgetter
 
-from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_mul, q_sub
+from ..expr import EvalError, binary_op, check_double, q_add, q_div, q_sub
 from ..lexer import fraction_raw, to_fraction
 from .parser import BIN, FN, FN2, NEG, NUM, VAR
 
@@ -75,7 +81,7 @@ if TYPE_CHECKING:
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
            "SystemVariableUnknown", "RoundingNotCertain", "ReadingsSplit", "readings", "SHADOW_ON_GRID_BOUND", "variable_index",
-           "variable_number", "literal_number", "integer_of"]
+           "variable_number", "literal_number", "integer_of", "SpreadDouble", "LibmSplit", "value_as_is"]
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
 VACANT = (0.0, Fraction(0))
@@ -287,6 +293,8 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
         if sn == 1 and sd % qd == 0 and (d is None or -1e8 < d < 1e8):  # (SHADOW_ON_GRID_BOUND, as constants)
             return q
     if d is not None:
+        if d.__class__ is SpreadDouble:
+            return _spread_round(value, step, sn, sd)  # a libm result: every double of its spread (GC397)
         if sn == 1:
             # |d| / step in doubles (relative error 2**-53): away from a half by max(2**-20, x 2**-40) the
             # nearest integer is that of the exact quotient, of the shadow's and of every reading; nearer, or
@@ -520,6 +528,8 @@ def integer_of(value: Value, kind: str, what: str, again: Callable[[], Value] | 
     ...
     nczones.gcode.fanuc.expr.ReadingsSplit: FIX: the readings of the macro value 2.9999999999999996 give ...
     """
+    if value[0].__class__ is SpreadDouble:
+        return _spread_integer(value, kind, what)
     n = _integer_fast(value, kind)
     if n is not None:
         return n
@@ -741,15 +751,48 @@ def _arc_function(name: str, arg: Callable[[], Value], again: Callable[[], Value
     upper = name.upper()
     fn = math.asin if name == "asin" else math.acos
 
+    def core(c: float) -> Value:
+        if not -1.0 <= c <= 1.0:
+            raise EvalError("GC312", f"argument to {upper} out of range: {c!r} (allowed -1 to 1)")
+        r = fn(c)
+        if c == (0.0 if name == "asin" else 1.0):  # ASIN of 0, ACOS of 1: 0 exactly
+            return _angle(r * 180.0 / math.pi, ctx, False)
+        return _angle_spread(r, ctx, False)
+
     def arc() -> Value:
         value = arg()
         d = value[0]
         if d - d:
             raise EvalError("GC312", f"argument to {upper} is {d!r}")
+        if d.__class__ is SpreadDouble:
+            _spread_arc_domain(upper, d)
+            return _over_spread(upper, core, d)
         if not -_ARC_INSIDE < d < _ARC_INSIDE:
             _arc_domain(upper, value, again)
-        return _angle(fn(d) * 180.0 / math.pi, ctx, False)
+        return core(d)
     return arc
+
+
+def _spread_arc_domain(upper: str, d: float) -> None:
+    """:func:`_arc_domain` for an argument with a spread: nothing where every reading of every double of it is
+    inside -1..1 (readings are non-decreasing in the double, and -1..1 is an interval: its ends' readings
+    decide), the alarm where all are beyond one end, else :class:`LibmSplit` (GC396)."""
+    lo, hi = _bounds(d)
+    got = [r for c in (lo, hi) for _name, r in _value_readings((c, None))]
+    if all(-1 <= r <= 1 for r in got):
+        return
+    if all(r > 1 for r in got) or all(r < -1 for r in got):
+        raise EvalError("GC312", f"argument to {upper} out of range: {float(d)!r} (allowed -1 to 1)")
+    raise LibmSplit("GC396", f"{upper}: a result of SIN/COS/TAN/ATAN/ASIN/ACOS/LN/EXP/POW, {float(d)!r}, whose one-ulp "
+                    f"neighbours ({lo!r} .. {hi!r}) lie inside and outside -1..1 (an alarm there); {_SPREAD_NOTE}")
+
+
+def _angle_spread(r: float, ctx: Context, full: bool) -> Value:
+    """A library angle ``r`` in radians (ATAN, ASIN, ACOS) in degrees in Fanuc's range (:func:`_angle`), with
+    the spread of its two neighbours (:func:`_libm_value`) taken through the same doubles: the degrees and the
+    range shift of each of the three (a shift that parts them gives a spread over the whole range)."""
+    got = [_angle(x * 180.0 / math.pi, ctx, full)[0] for x in (r, _nextafter(r, -_INF), _nextafter(r, _INF))]
+    return (_spread(got[0], min(got), max(got)), None)
 
 
 #: An ASIN/ACOS argument ``|d| < _ARC_INSIDE`` is inside -1..1 in every reading, ``|d| > _ARC_OUTSIDE`` outside
@@ -793,19 +836,76 @@ def _radians(d: float, name: str) -> float:
 
 
 def _circular(name: str, d: float) -> tuple:
-    """SIN, COS or TAN of ``d`` degrees."""
+    """SIN, COS or TAN of ``d`` degrees (a plain double), with the spread of :func:`_libm_value` (none at 0)."""
     r = _radians(d, name)
     if name == "sin":
-        return (math.sin(r), None)
-    if name == "cos":
-        return (math.cos(r), None)
-    return (check_double(math.tan(r)), None)
+        c = math.sin(r)
+    elif name == "cos":
+        c = math.cos(r)
+    else:
+        c = check_double(math.tan(r))
+    return (_libm_value(c, d == 0.0), None)
+
+
+def _atan(d: float, ctx: Context) -> Value:
+    """ATAN of one argument (a plain double) in degrees, with its spread (none at 0)."""
+    r = math.atan(d)
+    if d == 0.0:
+        return _angle(r * 180.0 / math.pi, ctx, False)
+    return _angle_spread(r, ctx, False)
+
+
+def _atan2(y: float, x: float, ctx: Context) -> Value:
+    """``ATAN[y]/[x]`` in degrees (0..360, or -180..180 with NAT), with its spread: none for a zero ``y`` and a
+    positive ``x`` (IEEE's atan2 of +-0 and +x is +-0); arguments with a spread over their doubles."""
+    if y.__class__ is SpreadDouble or x.__class__ is SpreadDouble:
+        return _over_spread("ATAN", lambda p, q: _atan2(p, q, ctx), y, x)
+    r = math.atan2(y, x)
+    if y == 0.0 and math.copysign(1.0, x) > 0.0:
+        return _angle(r * 180.0 / math.pi, ctx, True)
+    return _angle_spread(r, ctx, True)
+
+
+def _ln(d: float) -> Value:
+    if d <= 0.0:
+        raise EvalError("GC312", f"zero or negative argument to LN: {d!r}")
+    return (_libm_value(math.log(d), d == 1.0), None)
+
+
+def _exp(d: float) -> Value:
+    try:
+        return (_libm_value(check_double(math.exp(d)), d == 0.0), None)
+    except OverflowError:
+        raise EvalError("GC312", "calculation resulted in 'infinity'") from None
+
+
+def _spread_function(name: str, value: Value, ctx: Context) -> Value:
+    """:func:`_function` of a value with a spread."""
+    d = value[0]
+    if name == "abs":
+        return _absolute(value)
+    if name == "sqrt":
+        return _square_root(value)
+    if name == "round":  # in an address: every double of the spread rounds to one multiple, else GC397
+        r = round_to(value, ctx.increment())
+        return (float(r), r)
+    if name == "adp":
+        inc = ctx.increment()
+        return _spread_arithmetic("*", value, (float(1 / inc), 1 / inc))
+    upper = name.upper()
+    if name in ("sin", "cos", "tan"):
+        return _over_spread(upper, lambda c: _circular(name, c), d)
+    if name == "atan":
+        return _over_spread(upper, lambda c: _atan(c, ctx), d)
+    return _over_spread(upper, _ln if name == "ln" else _exp, d)
 
 
 def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
     d, q = value
     if d - d:
         raise EvalError("GC312", f"argument to {name.upper()} is {d!r}")
+    if d.__class__ is SpreadDouble:
+        return _spread_function(name, value, ctx)
     if name == "abs":
         return (abs(d), abs(q) if q is not None else None)
     if name == "round":  # in an address (outside one: _integer_function)
@@ -815,21 +915,16 @@ def _function(name: str, value: tuple, ctx: Context, in_address: bool) -> tuple:
     if name in ("sin", "cos", "tan"):
         return _circular(name, d)
     if name == "atan":
-        return _angle(math.atan(d) * 180.0 / math.pi, ctx, False)
+        return _atan(d, ctx)
     if name == "sqrt":
         if d < 0.0:
             raise EvalError("GC312", f"negative argument to SQRT: {d!r}")
         root = math.sqrt(d)
         return (root, Fraction(int(root)) if root == int(root) else None)
     if name == "ln":
-        if d <= 0.0:
-            raise EvalError("GC312", f"zero or negative argument to LN: {d!r}")
-        return (math.log(d), None)
+        return _ln(d)
     if name == "exp":
-        try:
-            return (check_double(math.exp(d)), None)
-        except OverflowError:
-            raise EvalError("GC312", "calculation resulted in 'infinity'") from None
+        return _exp(d)
     if name == "adp":
         inc = ctx.increment()
         return binary_op("*", value, (float(1 / inc), 1 / inc))
@@ -840,13 +935,43 @@ def _pow(a: Value, b: Value, again_a: Callable[[], Value] | None, again_b: Calla
     """``POW[a,b]``, a to the b in doubles; a base not above 0 is :func:`_pow_domain`'s first (an alarm, or
     GC398 where the readings part on it)."""
     x, y = a[0], b[0]
+    if x.__class__ is SpreadDouble or y.__class__ is SpreadDouble:
+        return _spread_pow(x, y)
     if not x > 0.0:
         _pow_domain(a, b, again_a, again_b)
     try:
         r = math.pow(x, y)
     except (OverflowError, ValueError):
         raise EvalError("GC312", f"POW[{x!r},{y!r}] cannot be computed") from None
-    return _num(check_double(r))
+    r = check_double(r)
+    if _pow_exact(x, y, r):
+        return _num(r)
+    return (_libm_value(r, False), None)
+
+
+def _pow_exact(x: float, y: float, r: float) -> bool:
+    """Whether CPython's ``r = POW[x, y]`` is the true power (a library whose error is below one ulp gives it
+    then): an exponent 0 or a base 1 (1 exactly), or an integer exponent (at most 64 in size) whose exact power
+    is ``r``."""
+    if y == 0.0 or x == 1.0:
+        return True
+    if y != _floor(y) or abs(y) > 64.0:
+        return False
+    n = int(y)
+    if x == 0.0:
+        return n > 0
+    return Fraction(r) == Fraction(x) ** n
+
+
+def _spread_pow(x: float, y: float) -> Value:
+    """POW where an operand carries a spread: over the doubles of the spreads (:func:`_over_spread`) when every
+    double of the base is above 0; a base whose spread reaches 0 or below is GC396 (whether the exponent is an
+    integer and which parity it has would be taken over a spread: not modelled)."""
+    lo, _hi = _bounds(x)
+    if not lo > 0.0:
+        raise LibmSplit("GC396", f"POW of the base {float(x)!r} (its spread from {lo!r}) and the exponent {float(y)!r}"
+                        f" where one carries a spread: a base not above 0 is not modelled there; {_SPREAD_NOTE}")
+    return _over_spread("POW", lambda p, q: _pow((p, None), (q, None), None, None), x, y)
 
 
 def _pow_alarm(x: float, y: float, case: str) -> EvalError:
@@ -935,6 +1060,336 @@ def _pow_domain(a: Value, b: Value, again_a: Callable[[], Value] | None, again_b
 _SIGN_NAMES = {-1: "negative", 0: "zero", 1: "positive"}
 
 
+# -- the spread of a libm result (libm40) --------------------------------------------------------------------------
+
+
+class SpreadDouble(float):
+    """A macro double that came from SIN, COS, TAN, ATAN, ASIN, ACOS, LN, EXP or POW (or from arithmetic on
+    such a result): the double nczones computes with CPython's library, and ``lo``/``hi``, the least and the
+    greatest double the control can hold there (specs/fanuc.md, "Results of the library functions").
+
+    A control's library is taken to give CPython's result or one of its two neighbours (``math.nextafter``);
+    the spread is carried through ``+ - * /``, NEG, ABS, SQRT, ADP and further functions, and every decision and
+    address takes a result only where every double of the spread gives it (:func:`_spread_integer`,
+    :func:`_spread_related`, :func:`_spread_round`; GC396 and GC397 where not).  A value of plain class
+    ``float`` carries no spread: the control computes that double itself (IEEE ``+ - * /`` and SQRT are
+    correctly rounded).  Its value is ``(SpreadDouble, None)``: no exact shadow (none is known).
+
+    >>> v = _libm_value(0.49999999999999994, False); (v, v.lo, v.hi)
+    (0.49999999999999994, 0.4999999999999999, 0.5)
+    """
+
+    __slots__ = ("lo", "hi")
+    lo: float
+    hi: float
+
+
+class LibmSplit(ReadingsSplit):
+    """A decision (GC396) or an address (GC397) that the doubles of a libm result's spread take differently
+    (:class:`SpreadDouble`): the verdict is ``unknown`` at the line, as for :class:`ReadingsSplit`."""
+
+    def __init__(self, code: str, reason: str):
+        SystemVariableUnknown.__init__(self, code, reason)
+
+
+_INF = math.inf
+_nextafter = math.nextafter
+#: At most this many doubles of an argument's spread are given to a library function one by one
+#: (:func:`_candidates`); a wider spread is GC396.
+_MAX_CANDIDATES = 64
+_SPREAD_NOTE = ("which double a control's library gives is not known: CPython's or one of its neighbours "
+                "(specs/fanuc.md, \"Results of the library functions\")")
+
+
+def _spread(d: float, lo: float, hi: float) -> float:
+    """``d`` (a plain double) with the spread ``lo..hi`` of the doubles the control can hold (``lo <= d <= hi``):
+    ``d`` itself where that is one double; GC396 where a neighbour overflows (the control may alarm)."""
+    if lo == hi:
+        return d
+    if not (-_INF < lo and hi < _INF):
+        raise LibmSplit("GC396", f"a result {d!r} whose neighbours reach {lo!r} .. {hi!r} (an overflow there, "
+                        f"an alarm); {_SPREAD_NOTE}")
+    s = SpreadDouble(d)
+    s.lo, s.hi = lo, hi
+    return s
+
+
+def _libm_value(c: float, exact: bool) -> float:
+    """CPython's library result ``c`` as the control's: ``c`` where the function's true value is known to be
+    ``c`` (``exact``: SIN of 0, COS of 0, EXP of 0, LN of 1, an exact power ...; a library whose error is below
+    one ulp gives a double that is the true value), else ``c`` with its two neighbours."""
+    if exact:
+        return c
+    return _spread(c, _nextafter(c, -_INF), _nextafter(c, _INF))
+
+
+def _bounds(d: float) -> tuple[float, float]:
+    """``(lo, hi)`` of a double: its spread, or the double twice."""
+    if d.__class__ is SpreadDouble:
+        return d.lo, d.hi
+    return d, d
+
+
+def _spread_binary(op: str, a: float, b: float, d: float) -> float:
+    """``a op b`` (+ - * /, ``d`` the double computed of ``a`` and ``b``) with the spread of every double the
+    control can compute from the doubles of ``a``'s and ``b``'s spreads.
+
+    Soundness: IEEE rounding to nearest is non-decreasing, so the control's ``fl(x op y)`` lies between
+    ``fl`` of the least and of the greatest exact ``x op y`` over the two intervals, and those are at their
+    corners (``+ -``: monotone in each operand; ``* /``: bilinear, or monotone in each operand on a box whose
+    divisors do not cross 0); the corners computed here in doubles are those very ``fl`` values.  A divisor
+    whose spread reaches 0 is GC396 (the control may alarm, GC311)."""
+    if a.__class__ is SpreadDouble:  # (_bounds, inline)
+        alo, ahi = a.lo, a.hi
+    else:
+        alo = ahi = a
+    if b.__class__ is SpreadDouble:
+        blo, bhi = b.lo, b.hi
+    else:
+        blo = bhi = b
+    if op == "+":
+        return _spread(d, alo + blo, ahi + bhi)
+    if op == "-":
+        return _spread(d, alo - bhi, ahi - blo)
+    if op == "*":
+        if blo == bhi or alo == ahi:  # a plain factor: two corners
+            p, r = (alo * blo, ahi * blo) if blo == bhi else (alo * blo, alo * bhi)
+            if p > r:
+                p, r = r, p
+            if -_INF < p and r < _INF:  # (_spread inline)
+                s = SpreadDouble(d)
+                s.lo, s.hi = p, r
+                return s
+            return _spread(d, p, r)
+        corners = (alo * blo, alo * bhi, ahi * blo, ahi * bhi)
+    else:
+        if blo <= 0.0 <= bhi:
+            raise LibmSplit("GC396", f"a divisor {b!r} whose spread {blo!r} .. {bhi!r} reaches 0 (an alarm there, "
+                            f"GC311); {_SPREAD_NOTE}")
+        corners = (alo / blo, alo / bhi, ahi / blo, ahi / bhi)
+    return _spread(d, min(corners), max(corners))
+
+
+def _spread_arithmetic(op: str, x: Value, y: Value) -> Value:
+    """``x op y`` (+ - * /) of values one of which at least carries a spread: the double as
+    :func:`nczones.gcode.expr.binary_op` computes it, no shadow, the spread of :func:`_spread_binary`."""
+    a, b = x[0], y[0]
+    if op == "/" and b == 0.0:
+        _zero_divisor(b)
+    d = check_double(float(_PLAIN_OPS[op](a, b)))
+    return (_spread_binary(op, a, b, d), None)
+
+
+_PLAIN_OPS: dict[str, Callable[[float, float], float]] = {
+    "+": operator.add, "-": operator.sub, "*": operator.mul, "/": operator.truediv}
+
+
+def _zero_divisor(b: float) -> None:
+    """A divisor whose double is 0: the alarm (GC311), or GC396 where its spread holds other doubles."""
+    lo, hi = _bounds(b)
+    if lo != hi:
+        raise LibmSplit("GC396", f"a divisor 0.0 whose spread {lo!r} .. {hi!r} holds other doubles (an alarm for "
+                        f"0 only, GC311); {_SPREAD_NOTE}")
+    raise EvalError("GC311", "attempt to divide by zero")
+
+
+def _negative(value: Value) -> Value:
+    """NEG of a value with a spread."""
+    d = value[0]
+    lo, hi = _bounds(d)
+    return (_spread(-float(d), -hi, -lo), None)
+
+
+def _absolute(value: Value) -> Value:
+    """ABS of a value with a spread (``|x|`` is exact)."""
+    d = value[0]
+    lo, hi = _bounds(d)
+    if lo >= 0.0:
+        return (_spread(abs(float(d)), lo, hi), None)
+    if hi <= 0.0:
+        return (_spread(abs(float(d)), -hi, -lo), None)
+    return (_spread(abs(float(d)), 0.0, max(-lo, hi)), None)
+
+
+def _square_root(value: Value) -> Value:
+    """SQRT of a value with a spread: IEEE's square root is correctly rounded, so non-decreasing: the spread's
+    ends' roots bound every root; a spread reaching below 0 is the alarm (GC312) for some doubles only."""
+    d = value[0]
+    lo, hi = _bounds(d)
+    if lo < 0.0:
+        if hi < 0.0:
+            raise EvalError("GC312", f"negative argument to SQRT: {float(d)!r}")
+        raise LibmSplit("GC396", f"SQRT of {float(d)!r} whose spread {lo!r} .. {hi!r} reaches below 0 (an alarm "
+                        f"there, GC312); {_SPREAD_NOTE}")
+    return (_spread(math.sqrt(d), math.sqrt(lo), math.sqrt(hi)), None)
+
+
+def _candidates(d: float, what: str) -> list[float]:
+    """Every double of ``d``'s spread, in order (at most :data:`_MAX_CANDIDATES`, else GC396)."""
+    lo, hi = _bounds(d)
+    out = [lo]
+    c = lo
+    while c < hi:
+        if len(out) >= _MAX_CANDIDATES:
+            raise LibmSplit("GC396", f"{what} of {float(d)!r}, which could be any of more than {_MAX_CANDIDATES} "
+                            f"doubles from {lo!r} to {hi!r}; {_SPREAD_NOTE}")
+        c = _nextafter(c, _INF)
+        out.append(c)
+    return out
+
+
+def _over_spread(what: str, fn: Callable[..., Value], *args: float) -> Value:
+    """``fn`` (a library function of plain doubles giving a value) of arguments one of which at least carries
+    a spread: the double of ``fn`` of the arguments' own doubles, with the spread of every result over every
+    combination of their doubles (:func:`_candidates`); an alarm for some of them only is GC396."""
+    combos: list[tuple[float, ...]] = [()]
+    for a in args:
+        combos = [c + (x,) for c in combos for x in _candidates(a, what)]
+        if len(combos) > 4 * _MAX_CANDIDATES:
+            raise LibmSplit("GC396", f"{what} of arguments whose spreads hold more than {4 * _MAX_CANDIDATES} "
+                            f"combinations of doubles; {_SPREAD_NOTE}")
+    lows, highs, alarms = [], [], []
+    for combo in combos:
+        try:
+            lo, hi = _bounds(fn(*combo)[0])
+        except EvalError as e:
+            alarms.append((combo, e))
+            continue
+        lows.append(lo)
+        highs.append(hi)
+    if alarms:
+        if lows:
+            first, alarm = alarms[0]
+            raise LibmSplit("GC396", f"{what}: the doubles {', '.join(map(repr, first))} of the arguments' spreads "
+                            f"give an alarm ({alarm.message}), others a result; {_SPREAD_NOTE}")
+        raise alarms[0][1]
+    mine = fn(*(float(a) for a in args))
+    lo, hi = min(lows), max(highs)
+    if lo == hi:
+        return mine  # one double for every combination: the value as the plain arguments give it
+    return (_spread(float(mine[0]), lo, hi), None)
+
+
+def _spread_integer(value: Value, kind: str, what: str) -> int:
+    """The integer FIX/FUP/ROUND (:data:`_INTEGER_OF` ``kind``) takes of a value with a spread, the same for
+    every reading of every double of the spread; else :class:`LibmSplit` (GC396).
+
+    Soundness: each reading (the double, its 15-digit decimal) is non-decreasing in the double, and so is each
+    kind's integer of a reading (towards zero, away from zero, nearest with halves away: all non-decreasing),
+    so every double of ``lo..hi`` gives an integer between the least that ``lo``'s readings give and the
+    greatest that ``hi``'s give."""
+    d = value[0]
+    lo, hi = _bounds(d)
+    got = [(f"the least double {lo!r}, {name}", n) for name, n in _integer_readings((lo, None), kind)] + [
+        (f"the greatest double {hi!r}, {name}", n) for name, n in _integer_readings((hi, None), kind)]
+    if len({n for _name, n in got}) == 1:
+        return got[0][1]
+    _agreed_integer((float(d), None), kind, what)  # GC398 where the double's own readings part already
+    shown = "; ".join(f"{name} gives {n}" for name, n in got)
+    raise LibmSplit("GC396", f"{what}: a result of SIN/COS/TAN/ATAN/ASIN/ACOS/LN/EXP/POW, {float(d)!r}, whose one-ulp "
+                    f"neighbours give a different integer: {shown}; {_SPREAD_NOTE}")
+
+
+def _spread_related(op: str, x: Value, y: Value) -> Value:
+    """``x op y`` (EQ NE GT GE LT LE) where one operand at least carries a spread: the truth every double of
+    the spreads gives in every reading (the doubles as they are, their 15-digit decimals), else
+    :class:`LibmSplit` (GC396).
+
+    Soundness: both readings are non-decreasing in the double, so over the spreads the left operand's readings
+    lie in ``[r(xlo), r(xhi)]`` and the right's in ``[r(ylo), r(yhi)]``: "below" can happen only where
+    ``r(xlo) < r(yhi)``, "above" only where ``r(xhi) > r(ylo)``, "equal" only where the two meet; a truth
+    is given only where every outcome that can happen gives it."""
+    test = _RELATIONS[op][2]
+    xlo, xhi = _bounds(x[0])
+    ylo, yhi = _bounds(y[0])
+    truths = set()
+    shown = []
+    for name, read in (("the doubles as they are", Fraction), ("their 15-digit decimals", _fifteen)):
+        a0, a1, b0, b1 = read(xlo), read(xhi), read(ylo), read(yhi)
+        outcomes = []
+        if a0 < b1:
+            outcomes.append(test(0, 1))
+        if a0 <= b1 and b0 <= a1:
+            outcomes.append(test(0, 0))
+        if a1 > b0:
+            outcomes.append(test(1, 0))
+        truths.update(outcomes)
+        shown.append(f"{name} ({_decimal(a0)} .. {_decimal(a1)} and {_decimal(b0)} .. {_decimal(b1)}): "
+                     + " or ".join(sorted({"true" if t else "false" for t in outcomes})))
+    if len(truths) == 1:
+        return _TRUE if truths.pop() else _FALSE
+    _related(op, _plain(x), _plain(y))  # GC398 where the doubles' own readings part already
+    raise LibmSplit("GC396", f"{op.upper()}: a result of SIN/COS/TAN/ATAN/ASIN/ACOS/LN/EXP/POW whose one-ulp neighbours "
+                    f"compare differently: {float(x[0])!r} and {float(y[0])!r}; {'; '.join(shown)}; {_SPREAD_NOTE}")
+
+
+def _plain(value: Value) -> Value:
+    """A value's own double without its spread (the readings of that double alone)."""
+    d = value[0]
+    return (float(d), value[1]) if d.__class__ is SpreadDouble else value
+
+
+def _fast_multiple(c: float, sd: int) -> int | None:
+    """:func:`round_to`'s test in doubles for one double ``c`` and a step ``1 / sd``: the multiple every reading
+    of ``c`` rounds to, or None where the exact path must decide."""
+    x = abs(c) * sd
+    if x < _FAST_INCREMENTS:
+        m = _floor(x)
+        frac = x - m
+        if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH and (x < _WIDE_INCREMENTS or abs(frac - 0.5) > x * _WINDOW):
+            n = m + 1 if frac > 0.5 else m
+            return -n if c < 0 else n
+    return None
+
+
+def _spread_round(value: Value, step: Fraction, sn: int, sd: int) -> Fraction:
+    """:func:`round_to` of a value with a spread: the multiple of ``step`` every reading of every double of the
+    spread rounds to, else :class:`LibmSplit` (GC397).
+
+    Soundness: the readings of :func:`readings` (the 15-digit decimal, the double scaled in doubles) are
+    non-decreasing in the double, and so is rounding with halves away from zero, so every double of
+    ``lo..hi`` rounds between where ``lo``'s readings and ``hi``'s round; where the test in doubles decides
+    both ends alike (:func:`_fast_multiple`) so do all their readings."""
+    d = value[0]
+    lo, hi = d.lo, d.hi  # (d carries a spread; sn / sd: step's ratio)
+    if sn == 1:
+        # round_to's test in doubles with the window grown by twice the spread's width in increments: every
+        # double of the spread lies within (hi - lo) sd increments of d (the factor 2 covers the rounding of it)
+        x = abs(d) * sd
+        if x < _FAST_INCREMENTS:
+            m = _floor(x)
+            frac = x - m
+            if abs(frac - 0.5) > max(2.0**-20, x * _WINDOW) + 2.0 * (hi - lo) * sd:
+                n = m + 1 if frac > 0.5 else m
+                return to_fraction(-n if d < 0 else n, sd)
+        n = _fast_multiple(lo, sd)
+        if n is not None and n == _fast_multiple(hi, sd):
+            return to_fraction(n, sd)
+    got = [(f"the least double {lo!r}: {name}", _half_away(r, step)) for name, r in readings((lo, None), step)] + [
+        (f"the greatest double {hi!r}: {name}", _half_away(r, step)) for name, r in readings((hi, None), step)]
+    if len({m for _name, m in got}) == 1:
+        return got[0][1]
+    _agreed((float(d), None), step)  # GC399 where the double's own readings part already
+    shown = "; ".join(f"{name} rounds to {_decimal(m)}" for name, m in got)
+    raise LibmSplit("GC397", f"a result of SIN/COS/TAN/ATAN/ASIN/ACOS/LN/EXP/POW, {float(d)!r}, at half an increment "
+                    f"({_decimal(step)}) whose one-ulp neighbours round to different increments: {shown}; "
+                    f"{_SPREAD_NOTE}")
+
+
+def value_as_is(value: Value, what: str) -> Fraction:
+    """The exact value an address takes as it is (F, E, G51's factors, a count): the shadow, else the double's
+    exact value; GC397 for a value with a spread (which of its doubles the control holds is not known)."""
+    q: Fraction | None = value[1]
+    if q is not None:
+        return q
+    d = value[0]
+    if d.__class__ is SpreadDouble:
+        lo, hi = _bounds(d)
+        raise LibmSplit("GC397", f"{what}: a result of SIN/COS/TAN/ATAN/ASIN/ACOS/LN/EXP/POW, {float(d)!r}, taken as "
+                        f"it is, could be any double from {lo!r} to {hi!r}; {_SPREAD_NOTE}")
+    return Fraction(d)
+
+
 def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None,
                  in_address: bool = False, exact: bool = True) -> Callable[[], Value]:
     """A function of no arguments that evaluates the tree with these variables (read when called).
@@ -969,11 +1424,19 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
     if tag == NEG:
         inner = compile_tree(node[1], variables, ctx, in_address, exact)
         if not exact:
-            return lambda: (-inner()[0], None)
+            def neg_double() -> Value:
+                d = inner()[0]
+                if d.__class__ is SpreadDouble:
+                    return _negative((d, None))
+                return (-d, None)
+            return neg_double
 
         def neg():
-            d, q = inner()
+            x = inner()
+            d, q = x
             if q is None:
+                if d.__class__ is SpreadDouble:
+                    return _negative(x)
                 return (-d, None)
             n, den = _ratio(q)
             return (-d, _negated(n, den))
@@ -999,7 +1462,7 @@ def compile_tree(node: tuple, variables: FanucVariables, ctx: Context | None = N
         a = compile_tree(node[2], variables, ctx, in_address, False)
         b = compile_tree(node[3], variables, ctx, in_address, False)
         if node[1] == "atan":
-            return lambda: _angle(math.atan2(a()[0], b()[0]) * 180.0 / math.pi, ctx, True)
+            return lambda: _atan2(a()[0], b()[0], ctx)
         again_a = _again(node[2], variables, ctx, in_address)
         again_b = _again(node[3], variables, ctx, in_address)
         return lambda: _pow(a(), b(), again_a, again_b)
@@ -1038,6 +1501,8 @@ def _integer_function(name: str, arg: Callable[[], Value], again: Callable[[], V
         d = value[0]
         if d - d:
             raise EvalError("GC312", f"argument to {upper} is {d!r}")
+        if d.__class__ is SpreadDouble:
+            return make(_spread_integer(value, kind, f"{upper}[...]"), float(d))
         n = _integer_fast(value, kind)
         if n is None:
             n = _agreed_integer(again() if again is not None else value, kind, f"{upper}[...]")
@@ -1052,10 +1517,17 @@ def _trigonometric(name: str, fn: Callable[[float], float], arg: Callable[[], Va
 
     def trig() -> Value:
         d = arg()[0]
+        if d.__class__ is SpreadDouble:
+            return _over_spread(upper, lambda c: _circular(name, c), d)
         r = d * math.pi / 180.0
         if r - r:  # NaN or infinite, or radians that overflow
             _radians(d, upper)
-        return (fn(r), None)
+        c = fn(r)
+        if d == 0.0:  # SIN of 0 is 0, COS of 0 is 1: exactly (_libm_value)
+            return (c, None)
+        s = SpreadDouble(c)  # (_libm_value inline: |c| <= 1, its neighbours are finite)
+        s.lo, s.hi = _nextafter(c, -_INF), _nextafter(c, _INF)
+        return (s, None)
     return trig
 
 
@@ -1086,7 +1558,7 @@ def _compile_binary(node: tuple, variables: FanucVariables, ctx: Context, in_add
         return _double_arithmetic(op, left, right)
     if _SLOTS:
         return _arithmetic(op, left, right)
-    return lambda: binary_op(op, left(), right())
+    return lambda: _generic_arithmetic(op, left(), right())
 
 
 #: Per relation: its value when every reading has the left operand below the right, when every reading has
@@ -1111,7 +1583,10 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
         n = None if vacancy else _local_index(node[2])
         if n is not None:  # a local variable and a number (#1 LT 10): read in the closure
             def local_relation() -> Value:
-                a = variables.local[n][0]
+                x = variables.local[n]
+                a = x[0]
+                if a.__class__ is SpreadDouble:
+                    return _spread_versus(op, x, const, lo, hi)
                 if a < lo:
                     return below
                 if a > hi:
@@ -1125,6 +1600,8 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
             if x is VACANT and vacancy:
                 return above  # a vacant value differs from a number (EQ false, NE true)
             a = x[0]
+            if a.__class__ is SpreadDouble:
+                return _spread_versus(op, x, const, lo, hi)
             if a < lo:
                 return below
             if a > hi:
@@ -1142,6 +1619,8 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
         if vacancy and (x is VACANT or y is VACANT):
             return _TRUE if (x is VACANT and y is VACANT) == equal else _FALSE
         a, b = x[0], y[0]
+        if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+            return _spread_pair(op, x, y)
         diff = a - b
         m = (abs(a) + abs(b)) * _WINDOW_READINGS + _TINY
         if diff > m:
@@ -1150,6 +1629,40 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
             return below
         return _related(op, again_a() if again_a is not None else x, again_b() if again_b is not None else y)
     return relation
+
+
+def _spread_versus(op: str, x: Value, const: Value, lo: float, hi: float) -> Value:
+    """A relation of a value with a spread and a constant (``lo``/``hi`` its :func:`_certain_bounds`): decided
+    on the spread's ends where all of it lies beyond a bound (every double of it then does), else
+    :func:`_spread_related`."""
+    a = x[0]
+    below, above, _test = _RELATIONS[op]
+    xlo, xhi = a.lo, a.hi  # (x carries a spread)
+    if xhi < lo:
+        return below
+    if xlo > hi:
+        return above
+    return _spread_related(op, x, const)
+
+
+def _spread_pair(op: str, x: Value, y: Value) -> Value:
+    """A relation of two values one at least with a spread: decided on the spreads' ends where they are farther
+    apart than the readings reach (as ``relation`` does for two doubles), else :func:`_spread_related`."""
+    below, above, _test = _RELATIONS[op]
+    alo, ahi = _bounds(x[0])
+    blo, bhi = _bounds(y[0])
+    m = (max(-alo, ahi) + max(-blo, bhi)) * _WINDOW_READINGS + _TINY
+    if alo - bhi > m:
+        return above
+    if ahi - blo < -m:
+        return below
+    return _spread_related(op, x, y)
+
+
+def _operand_integer(value: Value, kind: str, what: str, again: Callable[[], Value] | None) -> int:
+    """The integer MOD/AND/OR/XOR take of one operand, the same in every reading (:func:`integer_of`), each
+    operand on its own: used where one operand carries a spread."""
+    return integer_of(value, kind, what, again)
 
 
 def _compile_integer_binary(op: str, node: tuple, variables: FanucVariables, ctx: Context,
@@ -1170,6 +1683,8 @@ def _compile_integer_binary(op: str, node: tuple, variables: FanucVariables, ctx
             _int_of(x[0], upper)
         if y[0] - y[0]:
             _int_of(y[0], upper)
+        if x[0].__class__ is SpreadDouble or y[0].__class__ is SpreadDouble:
+            return fn(_operand_integer(x, kind, upper, again_a), _operand_integer(y, kind, upper, again_b))
         i = _integer_fast(x, kind)
         j = _integer_fast(y, kind)
         if i is None or j is None:
@@ -1200,9 +1715,12 @@ def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
             return None
 
         def mul_double() -> Value:
-            d = variables.local[n][0] * b
+            a = variables.local[n][0]
+            d = a * b
             if d - d:
                 check_double(d)
+            if a.__class__ is SpreadDouble:
+                return (_spread_binary("*", a, b, d), None)
             return (d, None)
         return mul_double
     if op == "+":
@@ -1212,6 +1730,8 @@ def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
             if d - d:
                 check_double(d)
             if qa is None:
+                if a.__class__ is SpreadDouble:
+                    return (_spread_binary("+", a, b, d), None)
                 return (d, None)
             q: Any = q_add(qa, qb)
             return (d, q) if q._numerator / q._denominator == d else (d, None)
@@ -1224,82 +1744,87 @@ def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
         if d - d:
             check_double(d)
         if qa is None:
+            if a.__class__ is SpreadDouble:
+                return (_spread_binary("*", a, b, d), None)
             return (d, None)
         m, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
         return (d, to_fraction(m, den)) if m / den == d else (d, None)
     return mul
 
 
+def _generic_arithmetic(op: str, x: Value, y: Value) -> Value:
+    """:func:`binary_op` (Fractions without slots), a spread carried (:func:`_spread_arithmetic`)."""
+    if x[0].__class__ is SpreadDouble or y[0].__class__ is SpreadDouble:
+        return _spread_arithmetic(op, x, y)
+    return binary_op(op, x, y)
+
+
 def _double_arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
     """``left op right`` for + - * / when only the double is read: :func:`_arithmetic` without the shadow (the same
-    IEEE operation, operands read in the same order, the same checks)."""
+    IEEE operation, operands read in the same order, the same checks; a spread carried, :func:`_spread_binary`)."""
     if op == "/":
         def div() -> Value:
             a = left()[0]
             b = right()[0]
             if b == 0.0:
-                raise EvalError("GC311", "attempt to divide by zero")
+                _zero_divisor(b)
             d = a / b
             if d - d:  # NaN or infinity (d - d is NaN for both, 0.0 otherwise)
                 check_double(d)
+            if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+                return (_spread_binary("/", a, b, d), None)
             return (d, None)
         return div
     if op == "+":
         def add() -> Value:
-            d = left()[0] + right()[0]
+            a = left()[0]
+            b = right()[0]
+            d = a + b
             if d - d:
                 check_double(d)
+            if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+                return (_spread_binary("+", a, b, d), None)
             return (d, None)
         return add
     if op == "-":
         def sub() -> Value:
-            d = left()[0] - right()[0]
+            a = left()[0]
+            b = right()[0]
+            d = a - b
             if d - d:
                 check_double(d)
+            if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+                return (_spread_binary("-", a, b, d), None)
             return (d, None)
         return sub
 
     def mul() -> Value:
-        d = left()[0] * right()[0]
+        a = left()[0]
+        b = right()[0]
+        d = a * b
         if d - d:
             check_double(d)
+        if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+            return (_spread_binary("*", a, b, d), None)
         return (d, None)
     return mul
 
 
 def _double_constant(op: str, left: Callable[[], Value], b: float) -> Callable[[], Value] | None:
     """``left op b`` for + - * / (a divisor not 0) when only the double is read, else None."""
-    if op == "/":
-        if b == 0.0:
-            return None
+    if op == "/" and b == 0.0:
+        return None
+    fn = _PLAIN_OPS[op]
 
-        def div() -> Value:
-            d = left()[0] / b
-            if d - d:
-                check_double(d)
-            return (d, None)
-        return div
-    if op == "+":
-        def add() -> Value:
-            d = left()[0] + b
-            if d - d:
-                check_double(d)
-            return (d, None)
-        return add
-    if op == "-":
-        def sub() -> Value:
-            d = left()[0] - b
-            if d - d:
-                check_double(d)
-            return (d, None)
-        return sub
-
-    def mul() -> Value:
-        d = left()[0] * b
+    def constant() -> Value:
+        a = left()[0]
+        d = fn(a, b)
         if d - d:
             check_double(d)
+        if a.__class__ is SpreadDouble:
+            return (_spread_binary(op, a, b, d), None)
         return (d, None)
-    return mul
+    return constant
 
 
 #: Whether Fractions are read through their slots (CPython): the arithmetic closures then inline
@@ -1319,47 +1844,66 @@ def _negated(n: int, den: int) -> Fraction:
 
 def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
     """``left op right`` for + - * /: :func:`binary_op` inlined (bit-identical: the double is the same IEEE
-    operation, checked for NaN/infinity the same way, the exact shadow kept only if it rounds to it)."""
-    if op == "/":
-        def div() -> Value:
-            a, qa = left()
-            b, qb = right()
-            if b == 0.0:
-                raise EvalError("GC311", "attempt to divide by zero")
-            d = a / b
-            if d - d:  # NaN or infinity (d - d is NaN for both, 0.0 otherwise)
-                check_double(d)
-            if qa is None or qb is None or not qb._numerator:
-                return (d, None)
-            q: Any = q_div(qa, qb)
-            return (d, q) if q._numerator / q._denominator == d else (d, None)
-        return div
-    qop = {"+": q_add, "-": q_sub, "*": q_mul}[op]
-    if op == "+":
-        def add() -> Value:
-            a, qa = left()
-            b, qb = right()
-            d = a + b
-            if d - d:
-                check_double(d)
-            if qa is None or qb is None:
-                return (d, None)
-            q: Any = qop(qa, qb)
-            return (d, q) if q._numerator / q._denominator == d else (d, None)
-        return add
-    if op == "-":
-        def sub() -> Value:
-            a, qa = left()
-            b, qb = right()
-            d = a - b
-            if d - d:
-                check_double(d)
-            if qa is None or qb is None:
-                return (d, None)
-            q: Any = qop(qa, qb)
-            return (d, q) if q._numerator / q._denominator == d else (d, None)
-        return sub
+    operation, checked for NaN/infinity the same way, the exact shadow kept only if it rounds to it; a spread
+    carried where a shadow is missing, :func:`_spread_binary`)."""
+    return _EXACT_ARITHMETIC[op](left, right)
 
+
+def _exact_div(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    def div() -> Value:
+        a, qa = left()
+        b, qb = right()
+        if b == 0.0:
+            _zero_divisor(b)
+        d = a / b
+        if d - d:  # NaN or infinity (d - d is NaN for both, 0.0 otherwise)
+            check_double(d)
+        if qa is None or qb is None or not qb._numerator:
+            if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+                return (_spread_binary("/", a, b, d), None)
+            return (d, None)
+        q: Any = q_div(qa, qb)
+        return (d, q) if q._numerator / q._denominator == d else (d, None)
+    return div
+
+
+def _exact_add(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    qop = q_add
+
+    def add() -> Value:
+        a, qa = left()
+        b, qb = right()
+        d = a + b
+        if d - d:
+            check_double(d)
+        if qa is None or qb is None:
+            if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+                return (_spread_binary("+", a, b, d), None)
+            return (d, None)
+        q: Any = qop(qa, qb)
+        return (d, q) if q._numerator / q._denominator == d else (d, None)
+    return add
+
+
+def _exact_sub(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
+    qop = q_sub
+
+    def sub() -> Value:
+        a, qa = left()
+        b, qb = right()
+        d = a - b
+        if d - d:
+            check_double(d)
+        if qa is None or qb is None:
+            if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+                return (_spread_binary("-", a, b, d), None)
+            return (d, None)
+        q: Any = qop(qa, qb)
+        return (d, q) if q._numerator / q._denominator == d else (d, None)
+    return sub
+
+
+def _exact_mul(left: Callable[[], Value], right: Callable[[], Value]) -> Callable[[], Value]:
     def mul() -> Value:
         a, qa = left()
         b, qb = right()
@@ -1367,11 +1911,17 @@ def _arithmetic(op: str, left: Callable[[], Value], right: Callable[[], Value]) 
         if d - d:
             check_double(d)
         if qa is None or qb is None:
+            if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+                return (_spread_binary("*", a, b, d), None)
             return (d, None)
         # q_mul, the Fraction built only when it rounds to the double (int / int rounds correctly)
         n, den = qa._numerator * qb._numerator, qa._denominator * qb._denominator
         return (d, to_fraction(n, den)) if n / den == d else (d, None)
     return mul
+
+
+_EXACT_ARITHMETIC: dict[str, Callable[[Callable[[], Value], Callable[[], Value]], Callable[[], Value]]] = {
+    "/": _exact_div, "+": _exact_add, "-": _exact_sub, "*": _exact_mul}
 
 
 def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable[[], Value] | None:
@@ -1380,43 +1930,59 @@ def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable
     b, qb = const
     if (op == "/" and b == 0.0) or qb is None:
         return None
-    if op == "/":
-        exact = bool(qb._numerator)
-        # qa / qb = (qa's numerator * bn) / (qa's denominator * bd) with bd > 0 (q_div's sign rule)
-        bn, bd = (qb._denominator, qb._numerator) if qb._numerator > 0 else (-qb._denominator, -qb._numerator)
+    return _CONSTANT_ARITHMETIC[op](left, b, qb)
 
-        def div() -> Value:
-            a, qa = left()
-            d = a / b
-            if d - d:
-                check_double(d)
-            if qa is None or not exact:
-                return (d, None)
-            n, den = qa._numerator * bn, qa._denominator * bd
-            return (d, to_fraction(n, den)) if n / den == d else (d, None)
-        return div
-    if op == "+":
-        def add() -> Value:
-            a, qa = left()
-            d = a + b
-            if d - d:
-                check_double(d)
-            if qa is None:
-                return (d, None)
-            q: Any = q_add(qa, qb)
-            return (d, q) if q._numerator / q._denominator == d else (d, None)
-        return add
-    if op == "-":
-        def sub() -> Value:
-            a, qa = left()
-            d = a - b
-            if d - d:
-                check_double(d)
-            if qa is None:
-                return (d, None)
-            q: Any = q_sub(qa, qb)
-            return (d, q) if q._numerator / q._denominator == d else (d, None)
-        return sub
+
+def _constant_div(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], Value]:
+    exact = bool(qb._numerator)
+    # qa / qb = (qa's numerator * bn) / (qa's denominator * bd) with bd > 0 (q_div's sign rule)
+    bn, bd = (qb._denominator, qb._numerator) if qb._numerator > 0 else (-qb._denominator, -qb._numerator)
+
+    def div() -> Value:
+        a, qa = left()
+        d = a / b
+        if d - d:
+            check_double(d)
+        if qa is None or not exact:
+            if a.__class__ is SpreadDouble:
+                return (_spread_binary("/", a, b, d), None)
+            return (d, None)
+        n, den = qa._numerator * bn, qa._denominator * bd
+        return (d, to_fraction(n, den)) if n / den == d else (d, None)
+    return div
+
+
+def _constant_add(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], Value]:
+    def add() -> Value:
+        a, qa = left()
+        d = a + b
+        if d - d:
+            check_double(d)
+        if qa is None:
+            if a.__class__ is SpreadDouble:
+                return (_spread_binary("+", a, b, d), None)
+            return (d, None)
+        q: Any = q_add(qa, qb)
+        return (d, q) if q._numerator / q._denominator == d else (d, None)
+    return add
+
+
+def _constant_sub(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], Value]:
+    def sub() -> Value:
+        a, qa = left()
+        d = a - b
+        if d - d:
+            check_double(d)
+        if qa is None:
+            if a.__class__ is SpreadDouble:
+                return (_spread_binary("-", a, b, d), None)
+            return (d, None)
+        q: Any = q_sub(qa, qb)
+        return (d, q) if q._numerator / q._denominator == d else (d, None)
+    return sub
+
+
+def _constant_mul(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], Value]:
     bn, bd = qb._numerator, qb._denominator
 
     def mul() -> Value:
@@ -1425,10 +1991,16 @@ def _with_constant(op: str, left: Callable[[], Value], const: Value) -> Callable
         if d - d:
             check_double(d)
         if qa is None:
+            if a.__class__ is SpreadDouble:
+                return (_spread_binary("*", a, b, d), None)
             return (d, None)
         n, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
         return (d, to_fraction(n, den)) if n / den == d else (d, None)
     return mul
+
+
+_CONSTANT_ARITHMETIC: dict[str, Callable[[Callable[[], Value], float, Any], Callable[[], Value]]] = {
+    "/": _constant_div, "+": _constant_add, "-": _constant_sub, "*": _constant_mul}
 
 
 def evaluate_tree(node: tuple, variables: FanucVariables, ctx: Context | None = None) -> Value:

@@ -68,6 +68,7 @@ from .expr import (
     double_of,
     literal_number,
     round_to,
+    value_as_is,
     variable_number,
 )
 from .parser import EXPR, LITERAL, NEG, VAR, FanucLine, parse_line
@@ -592,7 +593,7 @@ class FanucRunner:
                         dropped = True
                     elif step is None:
                         q = v[1]
-                        vals[i] = q if q is not None else Fraction(v[0])
+                        vals[i] = q if q is not None else value_as_is(v, letters_all[i])
                     else:
                         if step is _UNITS:
                             step, sd = inc, usd
@@ -761,7 +762,7 @@ class FanucRunner:
                         continue  # a vacant variable drops its word
                     if step is None:
                         q = v[1]
-                        q = q if q is not None else Fraction(v[0])
+                        q = q if q is not None else value_as_is(v, f"G65 argument #{n}")
                     else:
                         if step is _UNITS:
                             step, sd = inc, usd
@@ -1154,7 +1155,7 @@ class FanucRunner:
                 if value is VACANT or (var is not None and self.evaluate(var, lineno, line, col, end) is VACANT):
                     continue  # a vacant variable drops its word
                 if g51 and letter in "PIJK":
-                    q = value[1] if value[1] is not None else Fraction(value[0])
+                    q = value_as_is(value, f"G51 {letter}")
                 elif dwell and letter in "XU":
                     q = round_to(value, self._ms)
                 elif degrees and letter == "R":
@@ -1162,7 +1163,7 @@ class FanucRunner:
                 elif integer_q and letter == "Q":
                     q = round_to(value, Fraction(1))
                 elif count_r and letter == "R":
-                    q = value[1] if value[1] is not None else Fraction(value[0])
+                    q = value_as_is(value, f"{letter} (a count)")
                 else:
                     q = self.address_value(letter, value, cycle)
             else:
@@ -1206,8 +1207,7 @@ class FanucRunner:
             return round_to(value, Fraction(1))
         if letter == "G":
             return round_to(value, Fraction(1, 10))
-        q = value[1]
-        return q if q is not None else Fraction(value[0])
+        return value_as_is(value, letter)
 
     def assign(self, target: Callable[[], int], value: Callable[[], tuple], lineno: int, line: str, col: int,
                end: int, fl: FanucLine) -> bool:
