@@ -1252,8 +1252,8 @@ class _Pass:
         of it (the full path's ``PathMode.bound``, ``CornerCheck._near``); :attr:`DoublePath.tolerance` bounds
         that for every motion.  A word's exact value is within half an ulp of its double, so at most the next
         double up; a Q whose double is below 0 or -0.0 (its exact value below 0, which is P, or 0) is bounded by
-        P's, +0.0 (0, or a positive exact value below the least double) by the least double; the sum rounded up; in G20 (the block's units, set before its path mode) 25.4
-        times that, each product rounded up.  ``p`` not above 0 (no tolerance, or an exact value that may be 0)
+        P's, +0.0 (0, or a positive exact value below the least double) by the least double; the sum rounded up;
+        in G20 (the block's units, set before its path mode) 25.4 times that, each product rounded up.  ``p`` not above 0 (no tolerance, or an exact value that may be 0)
         declines: the full path's naive-CAM windows (G64 Q without P) are not the pass's."""
         if not 0.0 < p < math.inf or not (q is None or -math.inf < q < math.inf):
             raise Declined("G64 P not above 0")
@@ -1261,8 +1261,10 @@ class _Pass:
         self.blend = True  # the motions blend (within the tolerance), so an arc after a tiny motion declines
         up = math.inf
         p = math.nextafter(p, up)
-        q_is_q = q is not None and (q > 0.0 or (q == 0.0 and math.copysign(1.0, q) > 0.0))
-        t = math.nextafter(p + (math.nextafter(q, up) if q_is_q else p), up)
+        qb = p  # Q absent, below 0 or -0.0: bounded by P's
+        if q is not None and (q > 0.0 or (q == 0.0 and math.copysign(1.0, q) > 0.0)):
+            qb = math.nextafter(q, up)
+        t = math.nextafter(p + qb, up)
         if self.inch:  # P and Q in inches (LinuxCNC reads them after the block's units), each rounding up
             t = math.nextafter(t * math.nextafter(25.4, up), up)
         self.tol = max(self.tol, t)
