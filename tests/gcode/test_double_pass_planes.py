@@ -82,8 +82,9 @@ def test_a_face_at_the_arcs_extreme_is_decided_as_the_full_path_does(plane, name
 def test_arcs_in_two_planes_each_on_its_planes_axes():
     """Arcs in two planes (arc40): each arc's box on its own plane's (first, second) axes
     (``DoublePath.arc_pair``), and the full path's arcs inside them."""
-    text = program(18, "ccw by R").replace("M30\n", "G17 G0 X10 Y0\nG3 X-6 Y8 R10\nG18 G2 Z-6 X8 K-10 I0\nM30\n")
+    text = program(18, "ccw by R").replace("M30\n", "G17 G0 X10 Y0\nG3 X-6 Y8 R10\nG18 G0 Z10 X0\n"
+                                                   "G2 Z-6 X8 K-10 I0\nM30\n")
     path = check_against_full(text, parse_machine(machine_text("box_5000")))
     assert path is not None and path.arcs == 3
     assert [path.arc_pair(k) for k in range(3)] == [(2, 0), (0, 1), (2, 0)]
-    assert path.arc_axes == (2, 0, 0, 1) and path.arc_planes == ((0, 0), (4, 1), (5, 0))
+    assert path.arc_axes == (2, 0, 0, 1) and path.arc_planes == ((0, 0), (4, 1), (6, 0))
