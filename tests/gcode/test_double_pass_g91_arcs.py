@@ -217,3 +217,42 @@ def test_a_face_at_an_extreme_of_arcs_in_three_planes(axis, sign, top, monkeypat
         assert routed.verdict is (Verdict.UNSAFE if eps < 0 else Verdict.SAFE), (eps, routed.reasons)
         if eps > Fraction(1, 10**7):
             assert "double_pass_boxes" in dict(routed.stats), routed.reasons
+
+
+def test_windows_keep_each_arcs_plane_box_and_offsets_bound():
+    """Run in windows of 5 motions (``on_window``, as ``verify`` runs a long program), every arc has the row, the
+    plane (``arc_pair``), the quick box and the offsets' bound (``arc_more``: a chain's error in it) of the whole
+    run, across windows' edges and plane changes (and a window within a run of G18 arcs); refined in a window,
+    the box of the whole run refined."""
+    text = ("G21 G90 G17 G54 F300\n#1 = 0\nG0 X1 Y1 Z1\no1 while [#1 LT 6]\nG17 G91 G2 X2 Y0 I1 J0\nG18 G3 Z1 X1 R1\n"
+            "G2 Z1 X-1 R1\nG3 Z1 X1 R1\nG2 Z1 X-1 R1\nG3 Z1 X1 R1\nG2 Z1 X-1 R1\nG90 G19 G1 Y1 Z1\nG2 Y3 Z1 J1 K0\nG91 G1 X4000.3\nX-4000.3\n#1 = [#1 + 1]\no1 endwhile\nM30\n")
+    machine = parse_machine(machine_text("box_5000"))
+    whole = double_pass(text, machine, max_iterations=100)
+
+    def arcs(path) -> dict[int, tuple]:
+        words = path.arc_more[0]
+        return {row: (path.arc_pair(k), tuple(path.arc_boxes[4 * k:4 * k + 4]), words[4 * k + 3])
+                for k, row in enumerate(path.arc_rows)}
+
+    want = arcs(whole)
+    assert len({pair for pair, _box, _ob in want.values()}) == 3 and len(want) == whole.arcs == 48
+    assert max(ob for _pair, _box, ob in want.values()) > whole.arc_more[1]  # a chain's error in some
+    whole.refine(1, whole.motions)
+    refined = arcs(whole)
+    seen: dict[int, tuple] = {}
+
+    def take(window) -> bool:
+        for row, got in arcs(window).items():
+            assert seen.setdefault(row, got) == got == want[row], row
+        return True
+
+    take(double_pass(text, machine, max_iterations=100, on_window=take, window=5))
+    assert seen == want
+
+    def take_refined(window) -> bool:  # (the last arc of a window may be the next's first: refined already)
+        assert all(got in (want[row], refined[row]) for row, got in arcs(window).items())
+        window.refine(window.row0 + 1, window.motions)
+        assert all(got == refined[row] for row, got in arcs(window).items())
+        return True
+
+    take_refined(double_pass(text, machine, max_iterations=100, on_window=take_refined, window=5))
