@@ -333,6 +333,9 @@ def plane_mix_program(n: int, seed: int = 53) -> str:
     out = ["G21 G90 G17 G54 F800", "#1 = 0", "G0 X0 Y0 Z0"]
     x = 0.0
     while len(out) < n - 1:
+        if x > 4000:  # back (inside a 5,000 mm box)
+            out.append("G0 Z5\nG0 X0 Y0")
+            x = 0.0
         x += 1
         z = round(rnd.uniform(-1, 0), 3)
         out.append(f"G17 G1 X{x:.3f} Y[#1 + 0] Z{z:.3f}")

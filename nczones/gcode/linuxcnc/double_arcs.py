@@ -134,7 +134,7 @@ def inch_offb(offb: float, i: float, j: float) -> float:
 def chain_offb(offb: float, ein: float) -> float:
     """The offsets' bound an arc is computed with when its start or end row carries a G91 chain's error: ``offb +
     ein 2**50`` rounded up, ``ein`` a bound of ``|S' - S|`` and ``|E' - E|`` per component (the chains' bounds of
-    the plane's two axes at the arc's start and end, ``_Pass.arc_offb``: each bounds the whole distance of its
+    the plane's two axes at the arc's start and end, ``_Pass._arc_plane_body``: each bounds the whole distance of its
     row's double from the full path's exact coordinate, the G90 row's part included).
 
     Every function here takes the rows' error as ``rho <= (4 m + 2**-8) 2**-52`` with ``m`` at or above the offsets'

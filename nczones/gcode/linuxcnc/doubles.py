@@ -1209,13 +1209,6 @@ class _Pass:
             self.arc_runs.append((self.row0 + len(self.columns[0]) - 1, slot))
         self.arc_plane = plane
 
-    def arc_offb(self, ia: int, ib: int, offb: float) -> float:
-        """The offsets' bound of an arc on axes ``ia``, ``ib`` (:func:`~.double_arcs.chain_offb`): ``offb``, or the
-        bound grown by their G91 chains' errors now (``offb`` itself when neither is on a chain)."""
-        err = self.err
-        ein = max(err[ia] or 0.0, err[ib] or 0.0)
-        return max(offb, chain_offb(self.offb, ein))
-
     def _modes_state(self, machine: Any) -> None:
         """The path mode and the dwells (:meth:`mode`, :meth:`dwelt`), and whether M6 moves on ``machine``."""
         start = getattr(machine, "path_mode", "G64")
@@ -1398,7 +1391,7 @@ class _Pass:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "CO": chain_offb,
                                  "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
@@ -1586,7 +1579,7 @@ class _Pass:
 
         The ends are a straight move's (:meth:`_straight_ends`: G90, G91 and G20, the G91 chains' bounds); the
         arc is computed with the offsets' bound grown by the chains' errors of its plane axes at its start and
-        at its end (:meth:`arc_offb`, :func:`~.double_arcs.chain_offb`, which says why that holds the arc): a G91
+        at its end (:func:`~.double_arcs.chain_offb`, which says why that holds the arc; ``ERR`` is None off a chain): a G91
         arc's centre ``S' + (I, J)`` carries its start's error, its end ``S' + W`` its chain's."""
         a, b, words = _ARC_PLANES[plane]
         if a not in self.index or b not in self.index:
@@ -1595,11 +1588,15 @@ class _Pass:
             return [f"raise D('an arc in G{plane} with a centre word other than {words[0]} and {words[1]}')"]
         ia, ib = self.index[a], self.index[b]
         moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
-        # the chains' errors at the start (before the ends: a G90 end ends its chain) and at the end
-        chained = [f"if st.chained: ob = st.arc_offb({ia}, {ib}, ob)"] if self.g91_text else []
+        # the chains' errors at the start (before the ends: a G90 end ends its chain; None: no chain) and at the end
+        start, chained = [], []
+        if self.g91_text:
+            start = [f"ea = ERR[{ia}]; eb = ERR[{ib}]"]
+            chained = [f"if ea is not None or eb is not None or st.chained: ob = CO(ob, max(ea or 0.0, eb or 0.0, "
+                       f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0))"]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *chained, *self._straight_ends(axes), *chained,
+                *start, *self._straight_ends(axes), *chained,
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
