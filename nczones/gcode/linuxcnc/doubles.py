@@ -373,11 +373,18 @@ class DoublePath:
             return
         boxes = self.arc_boxes
         assert boxes is not None
+        # per axis the doubles' least and largest bound over the runs (exact float comparisons), then one Fraction
+        los: dict[int, float] = {}
+        his: dict[int, float] = {}
         for b, e, ia, ib in self._arc_runs(begin, end):
             for k, a in enumerate((ia, ib)):
-                name = self.axes[a]
-                lo[name] = min(lo[name], Fraction(min(boxes[4 * b + 2 * k:4 * e:4])))
-                hi[name] = max(hi[name], Fraction(max(boxes[4 * b + 2 * k + 1:4 * e:4])))
+                v, w = min(boxes[4 * b + 2 * k:4 * e:4]), max(boxes[4 * b + 2 * k + 1:4 * e:4])
+                los[a] = min(los.get(a, v), v)
+                his[a] = max(his.get(a, w), w)
+        for a, v in los.items():
+            name = self.axes[a]
+            lo[name] = min(lo[name], Fraction(v))
+            hi[name] = max(hi[name], Fraction(his[a]))
 
     def refine(self, first: int, last: int) -> bool:
         """Narrow the boxes of the arcs among motions ``first``..``last`` that hold a quick screen's
