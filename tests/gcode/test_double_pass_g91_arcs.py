@@ -38,7 +38,7 @@ from tests.gcode.test_double_pass import check_against_full, machines
 from tests.gcode.test_double_pass import machine_text as pass_machine_text
 from tests.machines import machine_text
 
-EXAMPLES = int(os.environ.get("NCZONES_G91_ARC_EXAMPLES", "40"))
+EXAMPLES = int(os.environ.get("NCZONES_G91_ARC_EXAMPLES", "25"))
 
 
 def _dec(x: float, places: int) -> str:
@@ -77,22 +77,22 @@ def g91_arc(draw) -> str:
 def g91_pieces(draw, depth: int = 1) -> list[str]:
     """G17-letter lines: G91 arcs, G90/G91 straight moves (far ones: a chain's error at large magnitudes), a G90 arc
     from a point the line before moves to, a loop of G91 arcs (a long chain), G20/G21."""
-    kind = draw(st.integers(0, 7))
-    if kind <= 2:
-        return ["G91", draw(g91_arc())]
-    if kind == 3:
+    kind = draw(st.integers(0, 9))
+    if kind <= 4:
+        return ["G91", *(draw(g91_arc()) for _ in range(draw(st.integers(1, 3))))]
+    if kind == 5:
         far = draw(st.sampled_from(["1", "0.1", "4000.3", "-2500.7", "[#1 * 3]"]))
         back = far[1:] if far.startswith("-") else f"-{far}"
         return [f"G91 G1 X{far} Y0.3", f"X{back} Y-0.3"]
-    if kind == 4:  # a G90 arc (its start known), perhaps still on a Z chain
+    if kind == 6:  # a G90 arc (its start known), perhaps still on a Z chain
         sx, sy = (draw(st.integers(-400, 400)) / 8 for _ in range(2))
         return [f"G90 G1 X{sx} Y{sy}", f"G2 X{sx + 2.0} Y{sy} I1 J0"]
-    if kind == 5 and depth > 0:
+    if kind == 7 and depth > 0:
         n = draw(st.integers(1, 6))
         body = [line for _ in range(draw(st.integers(1, 3))) for line in draw(g91_pieces(depth - 1))]
         return ["#11 = 0", f"o{len(body) + 100} while [#11 LT {n}]", *body, "#11 = [#11 + 1]",
                 f"o{len(body) + 100} endwhile"]
-    if kind == 6:
+    if kind == 8:
         return [draw(st.sampled_from(["G20", "G21", "G21", "G90", "G91 G0 Z0.1"]))]
     return [f"G91 G1 X[#1 + {draw(st.integers(-9, 9)) / 10}]"]
 
@@ -102,8 +102,9 @@ def g91_programs(draw) -> str:
     """A program of :func:`g91_pieces`, each in a plane drawn for it (written in that plane's letters)."""
     lines = ["G21 G90 G17 G54 F300", "#1 = 0.5", "#3 = 0"]
     labels = set()
-    for _ in range(draw(st.integers(1, 6))):
-        plane = draw(st.sampled_from([17, 17, 18, 19]))
+    turn = draw(st.integers(0, 2))  # the planes in turn from this one (a piece may keep the plane before)
+    for k in range(draw(st.integers(2, 8))):
+        plane = (17, 18, 19)[(k + turn) % 3] if draw(st.integers(0, 3)) else 17
         piece = draw(g91_pieces())
         label = next((x.split()[0] for x in piece if " while " in x), None)
         if label in labels:
