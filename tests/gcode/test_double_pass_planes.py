@@ -61,7 +61,7 @@ def test_the_pass_takes_the_arc_and_encloses_the_full_paths(plane, name):
     path = check_against_full(text, parse_machine(machine_text("box_5000")))
     assert path is not None and path.arcs == 1
     a, b, _n = PLANE_AXES[Plane(plane)]
-    assert path.arc_axes == ("XYZ".index(a), "XYZ".index(b)) and path.arc_planes == ()
+    assert path.arc_axes == ("XYZ".index(a), "XYZ".index(b)) and list(path.arc_planes) == [0]
 
 
 @pytest.mark.parametrize("plane, name, axis, sign", CASES)
@@ -87,4 +87,4 @@ def test_arcs_in_two_planes_each_on_its_planes_axes():
     path = check_against_full(text, parse_machine(machine_text("box_5000")))
     assert path is not None and path.arcs == 3
     assert [path.arc_pair(k) for k in range(3)] == [(2, 0), (0, 1), (2, 0)]
-    assert path.arc_axes == (2, 0, 0, 1) and path.arc_planes == ((0, 0), (4, 1), (6, 0))
+    assert path.arc_axes == (2, 0, 0, 1) and list(path.arc_planes) == [0, 1, 0]

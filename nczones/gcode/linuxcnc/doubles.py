@@ -122,6 +122,7 @@ import re
 from array import array
 from bisect import bisect_left, bisect_right
 from fractions import Fraction
+from itertools import compress
 from operator import itemgetter
 
 from ...errors import GcodeError
@@ -302,9 +303,9 @@ class DoublePath:
     #: a bound (mm, at or above ``p + q``) of how far the program's ``G64 P p`` (its Q is p) lets any motion
     #: blend off the programmed path (:meth:`_Pass.tolerance`); 0.0: the program wrote none
     tolerance: float = 0.0
-    #: where the arcs' plane changes: ``(row, slot)``, the slot (a pair of ``arc_axes``) of the arcs from that row
-    #: on (the first: in force at ``row0``); ``()``: every arc in slot 0 (one plane)
-    arc_planes: tuple[tuple[int, int], ...] = ()
+    #: per arc of these rows (as ``arc_rows``), its plane's slot: the pair ``arc_axes[2 s]``, ``arc_axes[2 s + 1]``
+    #: (``array("b")``; read only when ``arc_axes`` holds more than one pair: else every arc is in slot 0)
+    arc_planes: array | None = None
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -341,47 +342,35 @@ class DoublePath:
             self._arc_bounds(first, last, lo, hi)
         return lo, hi
 
-    def _arc_runs(self, begin: int, end: int) -> Any:
-        """``(b, e, ia, ib)``: arcs ``b``..``e - 1`` (indices of ``arc_rows``, within ``begin``..``end - 1``) lie in
-        the plane of axes ``ia``, ``ib`` (first, second); one run a plane change (:attr:`arc_planes`)."""
-        runs, pairs = self.arc_planes, self.arc_axes
-        if not runs:
-            return ((begin, end, pairs[0], pairs[1]),)
-        rows = self.arc_rows
-        assert rows is not None
-        j = max(bisect_right(runs, (rows[begin], 1 << 30)) - 1, 0)  # the run of the first arc
-        out = []
-        while begin < end:
-            stop = end if j + 1 == len(runs) else min(end, bisect_left(rows, runs[j + 1][0], begin, end))
-            if stop > begin:
-                slot = runs[j][1]
-                out.append((begin, stop, pairs[2 * slot], pairs[2 * slot + 1]))
-            begin, j = stop, j + 1
-        return out
-
     def arc_pair(self, k: int) -> tuple[int, int]:
         """The axes (first, second) of the plane of arc ``k`` (an index of ``arc_rows``)."""
-        _b, _e, ia, ib = self._arc_runs(k, k + 1)[0]
-        return ia, ib
+        pairs = self.arc_axes
+        s = 2 * self.arc_planes[k] if len(pairs) > 2 and self.arc_planes is not None else 0
+        return pairs[s], pairs[s + 1]
 
     def _arc_bounds(self, first: int, last: int, lo: dict[str, Fraction], hi: dict[str, Fraction]) -> None:
-        """Grow ``lo``/``hi`` by the boxes of the arcs among motions ``first``..``last``."""
-        rows = self.arc_rows
-        assert rows is not None
+        """Grow ``lo``/``hi`` by the boxes of the arcs among motions ``first``..``last``: per plane, the least and
+        largest of its arcs' bounds on each of its axes (with several planes, the arcs of each picked by a mask of
+        their slots: one scan an axis in C whatever the order of the planes)."""
+        rows, boxes, pairs = self.arc_rows, self.arc_boxes, self.arc_axes
+        assert rows is not None and boxes is not None
         begin, end = bisect_left(rows, first), bisect_right(rows, last)
         if begin >= end:
             return
-        boxes = self.arc_boxes
-        assert boxes is not None
-        # per axis the doubles' least and largest bound over the runs (exact float comparisons), then one Fraction
+        if len(pairs) == 2 or self.arc_planes is None:
+            masks: Any = ((0, None),)
+        else:
+            slots = bytes(self.arc_planes[begin:end])
+            masks = [(s, m) for s in range(len(pairs) // 2) if 1 in (m := slots.translate(_SLOT_MASKS[s]))]
         los: dict[int, float] = {}
         his: dict[int, float] = {}
-        for b, e, ia, ib in self._arc_runs(begin, end):
-            for k, a in enumerate((ia, ib)):
-                v, w = min(boxes[4 * b + 2 * k:4 * e:4]), max(boxes[4 * b + 2 * k + 1:4 * e:4])
+        for s, mask in masks:
+            for k, a in enumerate(pairs[2 * s:2 * s + 2]):
+                low, high = boxes[4 * begin + 2 * k:4 * end:4], boxes[4 * begin + 2 * k + 1:4 * end:4]
+                v, w = (min(low), max(high)) if mask is None else (min(compress(low, mask)), max(compress(high, mask)))
                 los[a] = min(los.get(a, v), v)
                 his[a] = max(his.get(a, w), w)
-        for a, v in los.items():
+        for a, v in los.items():  # the doubles compared exactly, one Fraction an axis
             name = self.axes[a]
             lo[name] = min(lo[name], Fraction(v))
             hi[name] = max(hi[name], Fraction(his[a]))
@@ -394,32 +383,25 @@ class DoublePath:
         more, rows = self.arc_more, self.arc_rows
         if more is None or not rows:
             return False
-        begin, end = bisect_left(rows, first), bisect_right(rows, last)
+        words, _offb, rule = more
+        boxes = self.arc_boxes
+        assert boxes is not None
         done = False
-        for b, e, ia, ib in self._arc_runs(begin, end) if begin < end else ():
-            done = self._refine_run(b, e, self.columns[ia], self.columns[ib]) or done
-        return done
-
-    def _refine_run(self, begin: int, end: int, ca: array, cb: array) -> bool:
-        """:meth:`refine` of arcs ``begin``..``end - 1``, of one plane (its axes' columns ``ca``, ``cb``)."""
-        words, _offb, rule = self.arc_more
-        boxes, rows = self.arc_boxes, self.arc_rows
-        assert boxes is not None and rows is not None
-        done = False
-        for k in range(begin, end):
+        for k in range(bisect_left(rows, first), bisect_right(rows, last)):
             w = 4 * k
             flag = int(words[w])
             if flag == EXACT:
                 continue
             words[w] = EXACT
+            ia, ib = self.arc_pair(k)
+            ca, cb = self.columns[ia], self.columns[ib]
             r = rows[k] - self.row0  # the arc's end row; the row before is its start (held: r >= 1)
             box = refined(flag, ca[r - 1], cb[r - 1], ca[r], cb[r], words[w + 1], words[w + 2], words[w + 3], rule)
             if box.__class__ is str:  # (r_screen and ij_screen accept only arcs these accept)
                 continue
             done = True
-            b = 4 * k
-            boxes[b:b + 4] = array("d", (max(boxes[b], box[0]), min(boxes[b + 1], box[1]),
-                                         max(boxes[b + 2], box[2]), min(boxes[b + 3], box[3])))
+            boxes[w:w + 4] = array("d", (max(boxes[w], box[0]), min(boxes[w + 1], box[1]),
+                                         max(boxes[w + 2], box[2]), min(boxes[w + 3], box[3])))
         return done
 
     def blended(self, k: int) -> bool:
@@ -456,6 +438,8 @@ _EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
+#: Per plane slot s: the bytes table that maps s to 1 and every other slot to 0 (:meth:`DoublePath._arc_bounds`).
+_SLOT_MASKS = tuple(bytes(int(b == s) for b in range(256)) for s in range(3))
 
 
 def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_window: Any = None,
@@ -730,7 +714,7 @@ class _Pass:
                           motions - self.rapids - arcs - self.dwells, self.rapids, self.blocks, self.start,
                           tuple(self.first_row), self.row0, arcs, self.arc_rows, self.arc_axes, self.arc_boxes,
                           (self.arc_words, self.offb, self.rule), self.dwells, self.dwell_rows, tuple(self.modes),
-                          tuple(self.xerr), tuple(self.assumed.items()), self.tol, tuple(self.arc_runs))
+                          tuple(self.xerr), tuple(self.assumed.items()), self.tol, self.arc_slots)
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -751,13 +735,11 @@ class _Pass:
             self.arcs += gone
             del self.arc_boxes[:4 * gone]
             del self.arc_words[:4 * gone]
+            del self.arc_slots[:gone]
         # the path mode in force at row0 and its changes after (the arcs' plane likewise); the dwells from row0 on
         k = bisect_right(self.modes, (self.row0, True)) - 1
         if k > 0:
             del self.modes[:k]
-        k = bisect_right(self.arc_runs, (self.row0, 1 << 30)) - 1
-        if k > 0:
-            del self.arc_runs[:k]
         del self.dwell_rows[:bisect_left(self.dwell_rows, self.row0)]
         if self.chained or any(self.xerr):  # the G91 errors of the two rows kept
             for i, e in enumerate(self.err):
@@ -1170,13 +1152,13 @@ class _Pass:
         self.start_plane = 18 if "G18" in modal else 19 if "G19" in modal else 17  # the full path's start
         self.tiny_pad = float(max(self.offset_bound, default=Fraction(0))) * 1e-14  # the rows' offset term
         self.rule = radius_rule(arc_tolerance)
-        #: the plane of the last arc (0: none yet); the planes' axes (first, second: ``_ARC_PLANES``), a pair per
-        #: plane in the order the arcs met them, and each plane's slot there (:attr:`DoublePath.arc_axes`); where
-        #: the arcs' plane changes, ``(row, slot)`` (:attr:`DoublePath.arc_planes`; empty: one plane)
-        self.arc_plane = 0
+        #: the plane of the last arc (0: none yet) and its slot; the planes' axes (first, second: ``_ARC_PLANES``),
+        #: a pair per plane in the order the arcs met them, and each plane's slot there (:attr:`DoublePath.arc_axes`);
+        #: per arc held its slot (:attr:`DoublePath.arc_planes`)
+        self.arc_plane = self.arc_slot = 0
         self.arc_axes: tuple[int, ...] = ()
-        self.arc_slots: dict[int, int] = {}
-        self.arc_runs: list[tuple[int, int]] = []
+        self.plane_slots: dict[int, int] = {}
+        self.arc_slots = array("b")
         top = max((self.offset_bound[self.index[a]] for a in "XYZ" if a in self.index), default=Fraction(0))
         self.offb = math.nextafter(float(top), math.inf)  # at or above every plane axis's offsets
         self.arcs = 0  # the arcs of the rows dropped (full()); those held are arc_rows
@@ -1202,19 +1184,14 @@ class _Pass:
         return self.plane
 
     def arc_in(self, plane: int) -> None:
-        """The arc just added (the last row) is in ``plane``, another than the last arc's: its plane's slot (a new
-        pair of :attr:`DoublePath.arc_axes` for a plane met first) is in force from its row on
-        (:attr:`DoublePath.arc_planes`; the first change also records the first plane's, from row 0)."""
-        slot = self.arc_slots.get(plane)
+        """An arc in ``plane``, another than the last arc's: its plane's slot (a new pair of
+        :attr:`DoublePath.arc_axes` for a plane met first) is the arcs' from it on (:attr:`DoublePath.arc_planes`)."""
+        slot = self.plane_slots.get(plane)
         if slot is None:
             a, b, _words = _ARC_PLANES[plane]
-            slot = self.arc_slots[plane] = len(self.arc_slots)
+            slot = self.plane_slots[plane] = len(self.plane_slots)
             self.arc_axes += (self.index[a], self.index[b])
-        if self.arc_plane:
-            if not self.arc_runs:
-                self.arc_runs.append((0, self.arc_slots[self.arc_plane]))
-            self.arc_runs.append((self.row0 + len(self.columns[0]) - 1, slot))
-        self.arc_plane = plane
+        self.arc_plane, self.arc_slot = plane, slot
 
     def _modes_state(self, machine: Any) -> None:
         """The path mode and the dwells (:meth:`mode`, :meth:`dwelt`), and whether M6 moves on ``machine``."""
@@ -1400,6 +1377,7 @@ class _Pass:
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "CO": chain_offb,
                                  "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
+                                 "AS": self.arc_slots.append,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
                                  "CYC": CYCLE_CODES, "TA": TA}
@@ -1577,7 +1555,7 @@ class _Pass:
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + n - 1); AB(box)", kind]
+                "AR(st.row0 + n - 1); AB(box); AS(st.arc_slot)", kind]
 
     def _arc_plane_body(self, others: list[str], axes: list[tuple[int, int]], plane: int) -> list[str]:
         """The code of an arc in ``plane`` after its checks: its rows and its box, or a decline (the machine
