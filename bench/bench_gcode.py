@@ -35,7 +35,8 @@ The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_progr
 :func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
 ``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost"); the pass
 takes :func:`g18_program`'s arcs since plane38, lathes since lathe39 (:func:`lathe_program`: G7 diameters, G18
-arcs by K/I and R), and :func:`g20_program`'s straight moves in inches since units39 (and its arcs, I/J and R).
+arcs by K/I and R), and :func:`g20_program`'s straight moves in inches since units39 (and its arcs, I/J and R);
+:func:`g91_arc_program` (G91 arcs) and :func:`plane_mix_program` (G17 and G18 arcs in turn) it takes since arc40.
 """
 
 from __future__ import annotations
@@ -292,6 +293,56 @@ def g18_program(n: int, seed: int = 37) -> str:
         else:
             out.append(f"G2 X{x + 1:.3f} Z0 R2")
             x += 1
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def g91_arc_program(n: int, seed: int = 47) -> str:
+    """About ``n`` lines of G91 arcs as hand programming writes them: closed circles of four quarters (I/J or R, either
+    way, the radius an expression of ``#1`` in some), a short G91 ``G1`` between circles: one G91 chain the whole
+    program (the double pass takes it since arc40)."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54 F800", "#1 = 0.5", "G0 X0 Y0", "G91"]
+    while len(out) < n - 1:
+        if rnd.random() < 0.2:
+            out.append(f"G1 X[#1 * {rnd.uniform(-4, 4):.3f}] Y{rnd.uniform(-2, 2):.3f}")
+            continue
+        r = round(rnd.uniform(0.5, 20), 3)
+        g = rnd.choice(("G2", "G3"))
+        s = 1 if g == "G3" else -1  # a quarter turn ccw (G3) or cw (G2) from the start's angle pi
+        form = rnd.random()
+        for q in range(4):
+            # the start's vector from the centre turns by +-pi/2 a quarter: u -> w, end = start - u + w
+            ux, uy = [(-r, 0.0), (0.0, -s * r), (r, 0.0), (0.0, s * r)][q]
+            wx, wy = [(0.0, -s * r), (r, 0.0), (0.0, s * r), (-r, 0.0)][q]
+            dx, dy = wx - ux, wy - uy
+            if form < 0.5:
+                out.append(f"{g} X{dx:.3f} Y{dy:.3f} I{-ux:.3f} J{-uy:.3f}")
+            elif form < 0.8:
+                out.append(f"{g} X{dx:.3f} Y{dy:.3f} R{r:.3f}")
+            else:
+                out.append(f"{g} X[{dx:.3f} * #1 * 2] Y[{dy:.3f} * #1 * 2] R[{r:.3f} * #1 * 2]")
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def plane_mix_program(n: int, seed: int = 53) -> str:
+    """About ``n`` lines as 3-axis CAM writes side arcs: a ``G1`` with an expression, then a G17 arc (I/J) and a
+    G18 arc (K/I or R, the plane's first axis Z), in turn, G90 (the double pass takes a second plane since arc40)."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54 F800", "#1 = 0", "G0 X0 Y0 Z0"]
+    x = 0.0
+    while len(out) < n - 1:
+        if x > 4000:  # back (inside a 5,000 mm box)
+            out.append("G0 Z5\nG0 X0 Y0")
+            x = 0.0
+        x += 1
+        z = round(rnd.uniform(-1, 0), 3)
+        out.append(f"G17 G1 X{x:.3f} Y[#1 + 0] Z{z:.3f}")
+        out.append(f"G3 X{x + 2:.3f} Y0 I1 J0" if rnd.random() < 0.5 else f"G2 X{x + 2:.3f} Y0 R2")
+        out.append(f"G18 G2 Z{z - 1:.3f} X{x + 3:.3f} K-1 I0" if rnd.random() < 0.5
+                   else f"G18 G3 Z{z - 1:.3f} X{x + 3:.3f} R1")
+        x += 3
     out.append("M30")
     return "\n".join(out) + "\n"
 

@@ -5,7 +5,8 @@
 circles, R exactly half the chord, R slightly too small for the chord, tiny and huge R) and I/J form (exact
 circles, spirals inside and beyond LinuxCNC's radius rule, whole turns without axis words, an end on the
 start's ray at the start's radius or off it), helices (a Z word), straight moves, work offsets G54-G59 and
-``G43 H``/``G49``; with ``outside`` also constructs the pass declines (G91, G20, G18, G90.1, a P word).
+``G43 H``/``G49``; with ``outside`` also constructs the pass declined (G91, G20, G18, G90.1, a P word: G20, G91 and
+a second plane it takes since units39 and arc40).
 
 Its *designed* arcs (``rational=True``) have a rational centre and radius (Pythagorean directions), so their
 extremes are exact: :meth:`ArcWriter.extreme` is the largest value of ``sign * axis`` over the whole path in

@@ -357,6 +357,10 @@ ACCEPTED = {
     "a subroutine": "o<s> sub\nG1 X1\no<s> endsub\nG21 G90 G54 F100\n#1 = 1\no<s> call\n",
     "F after G94": "G21 G90 G54 F100\n#1 = 1\nG94 F10 G1 X#1\nG94\nF5\nG1 Y#1\nM30\n",
     "incremental": "G21 G91 G54 F100\n#1 = 1\nG1 X1\nG0 Y[#1 / 3] Z-0.1\nG55 X0.1\nG90 X1\nG91 Y1\nM30\n",
+    # arc40: arcs in G91, on a G91 chain, and in two planes
+    "an arc in G91": "G21 G91 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n",
+    "an arc after G91": "G21 G91 G17 G54 F100\n#1 = 1\nG1 X1\nG90 Y2\nG2 X1 Y1 R5\n",
+    "arcs in two planes": "G21 G90 G18 G54 F100\n#1 = 1\nG0 X0 Y0 Z0\nG2 X1 Z1 R5\nG17 G2 X2 Y1 R5\n",
     # issue 36: real programs carry a tool change, a dwell, an exact-stop mode
     "tools, dwells, path modes": "G21 G90 G17 G54 F800\nT1 M6\n#1 = 0\nG1 X[#1 + 1] Y2\nG4 P0.5\n"
                                  "G61\nG1 X[#1 + 3]\nG61.1 Y[#1]\nT2\nM6 M3 S1000\nG64\nG1 X0 Y0\nM61 Q3\n"
@@ -410,8 +414,6 @@ def test_the_rows_are_the_controllers_doubles():
 
 DECLINED = {
     "an arc without a centre": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1\n", "without I, J, K or R"),
-    "an arc in G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5\n", "arc in G91"),
-    "an arc after G91": ("G21 G91 G17 G54 F100\n#1 = 1\nG1 X1\nG90 Y2\nG2 X1 Y1 R5\n", "arc in G91"),
     # (G20: tests/gcode/test_double_pass_units.py)
     "a half circle by R in inches": ("G20 G90 G17 G54 F100\n#1 = 1\nG2 X2 R1\n", "about 2|R|"),
     # spindle and coolant M codes, one to a block, and S are followed (issue 36); two in a block are not
@@ -453,7 +455,6 @@ DECLINED = {
     "an H word alone": ("G21 G90 G54 F100\n#1 = 1\nH1\nG1 X#1\n", "H word without G43"),
     "a J word in G18": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 I1 J1\n", "centre word other than K and I"),
     "an I word in G19": ("G21 G90 G19 G54 F100\n#1 = 1\nG2 Y1 Z1 I1\n", "centre word other than J and K"),
-    "arcs in two planes": ("G21 G90 G18 G54 F100\n#1 = 1\nG2 X1 Z1 R5\nG17 G2 X1 Y1 R5\n", "two planes"),
     "turns": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5 P2\n", "word P"),
     "R and I": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X1 Y1 R5 I1\n", "R and I"),
     "a half circle by R": ("G21 G90 G17 G54 F100\n#1 = 1\nG2 X2 R1\n", "about 2|R|"),

@@ -16,7 +16,6 @@ from fractions import Fraction
 
 import pytest
 
-from nczones.gcode.linuxcnc.doubles import double_pass
 from nczones.machine import parse_machine
 from nczones.motion import PLANE_AXES, Plane
 from nczones.prover.result import Verdict
@@ -62,7 +61,7 @@ def test_the_pass_takes_the_arc_and_encloses_the_full_paths(plane, name):
     path = check_against_full(text, parse_machine(machine_text("box_5000")))
     assert path is not None and path.arcs == 1
     a, b, _n = PLANE_AXES[Plane(plane)]
-    assert path.arc_axes == ("XYZ".index(a), "XYZ".index(b))
+    assert path.arc_axes == ("XYZ".index(a), "XYZ".index(b)) and list(path.arc_planes) == [0]
 
 
 @pytest.mark.parametrize("plane, name, axis, sign", CASES)
@@ -80,10 +79,12 @@ def test_a_face_at_the_arcs_extreme_is_decided_as_the_full_path_does(plane, name
             assert "double_pass_boxes" in dict(with_pass.stats)
 
 
-def test_arcs_in_two_planes_are_the_full_paths():
-    """The pass keeps one plane's arcs (``DoublePath.arc_axes``): a program with arcs in two declines."""
-    from nczones.gcode.linuxcnc.doubles import Declined
-
-    text = program(18, "ccw by R").replace("M30\n", "G17 G0 X10 Y0\nG3 X-6 Y8 R10\nM30\n")
-    with pytest.raises(Declined, match="two planes"):
-        double_pass(text, parse_machine(machine_text("box_5000")), max_iterations=10)
+def test_arcs_in_two_planes_each_on_its_planes_axes():
+    """Arcs in two planes (arc40): each arc's box on its own plane's (first, second) axes
+    (``DoublePath.arc_pair``), and the full path's arcs inside them."""
+    text = program(18, "ccw by R").replace("M30\n", "G17 G0 X10 Y0\nG3 X-6 Y8 R10\nG18 G0 Z10 X0\n"
+                                                   "G2 Z-6 X8 K-10 I0\nM30\n")
+    path = check_against_full(text, parse_machine(machine_text("box_5000")))
+    assert path is not None and path.arcs == 3
+    assert [path.arc_pair(k) for k in range(3)] == [(2, 0), (0, 1), (2, 0)]
+    assert path.arc_axes == (2, 0, 0, 1) and list(path.arc_planes) == [0, 1, 0]

@@ -59,8 +59,8 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["R_INCH_REL", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen", "radius_rule", "refined",
-           "sector_box"]
+__all__ = ["R_INCH_REL", "chain_offb", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen",
+           "radius_rule", "refined", "sector_box"]
 
 _U = 2.0**-52
 _TAU = 2.0 * math.pi
@@ -130,6 +130,29 @@ def inch_offb(offb: float, i: float, j: float) -> float:
     ``2**-56``.  ``err`` grows with ``m``: the box is wider and the declines (zero radius, the start's ray, the
     tolerance) take more, which stays sound."""
     return math.nextafter(offb + 2.0 * (abs(i) + abs(j)), _UP)
+
+
+def chain_offb(offb: float, ein: float) -> float:
+    """The offsets' bound an arc is computed with when its start or end row carries a G91 chain's error: ``offb +
+    ein 2**50`` rounded up, ``ein`` a bound of ``|S' - S|`` and ``|E' - E|`` per component (the chains' bounds of
+    the plane's two axes at the arc's start and end, ``_Pass._arc_plane_body``: each bounds the whole distance of its
+    row's double from the full path's exact coordinate, the G90 row's part included).
+
+    Every function here takes the rows' error as ``rho <= (4 m + 2**-8) 2**-52`` with ``m`` at or above the offsets'
+    bound (the module's docstring, :func:`ij_check`, :func:`r_arc`, :func:`r_screen`: ``rho`` enters each error
+    sum only through that bound, and every other term grows with ``m``).  With the offsets' bound grown by ``ein
+    2**50`` (exact: a power of two) that bound grows by ``4 ein 2**50 2**-52 = ein``, above a chained row's whole
+    error: the arguments hold as written for arcs whose ends carry a chain's error (G91 arcs, and G90 arcs whose
+    start or unnamed plane axis is still on a chain).  ``err`` grows with ``m`` (by ``16 ein``): the boxes are
+    wider and the declines (zero radius, the start's ray, the tolerance, a chord about 0 or ``2|R|``) take more,
+    which stays sound; a chain so long that its error matters declines its arcs.
+
+    >>> chain_offb(0.0, 0.0), chain_offb(10.0, 2.0**-40) > 10.0 + 2.0**10
+    (0.0, True)
+    """
+    if ein == 0.0:
+        return offb
+    return math.nextafter(offb + ein * 2.0**50, _UP)
 
 
 def ij_arc(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,

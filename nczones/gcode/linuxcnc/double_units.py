@@ -23,7 +23,8 @@ the rounding of ``s``: ``|s - W| <= 2.52 u |s| + 28 eta`` (``25.4 |d| <= |s| (1 
 ``2 u (|x| + |O|)``.  A G91 chain's start (:func:`chain_start`) is ``4 u (|p| + offb)`` rounded up, plus
 ``2**-1000`` in a program that may write G20 (above ``32 eta``): above it too.  The arcs' boxes
 (:mod:`.double_arcs`) assume rows within ``(4 m + 2**-8) 2**-52``, ``m`` above every row and the offsets'
-bound: they hold the G20 rows as they do the G21 ones.  An I/J arc *in* G20 has scaled words, ``2.52 u |s|``
+bound: they hold the G20 rows as they do the G21 ones (a row on a G91 chain, in either units, grows that bound by the
+chain's error: :func:`~.double_arcs.chain_offb`).  An I/J arc *in* G20 has scaled words, ``2.52 u |s|``
 from the exact ones where the arcs' sums take ``u |s|``: it is computed with a larger offsets' bound
 (:func:`~.double_arcs.inch_offb`, which says why that covers them) and LinuxCNC's I/J rule in inches
 (:func:`~.double_arcs.inch_rule`); an R arc in G20 with ``R**2`` within ``R'**2 2**-50`` where a word's is within

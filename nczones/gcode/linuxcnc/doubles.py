@@ -60,13 +60,15 @@ motions blend within ``p + q`` of the programmed path, ``2p`` without Q,
 :attr:`DoublePath.tolerance`, which the proof adds to the margin of every motion), which with the dwells say which corners LinuxCNC blends (:meth:`DoublePath.blended`); the motions
 and their rows are the same in every mode (the full path emits every motion; which ones LinuxCNC drops in a
 blended corner is the proof's and the arc check's question, :meth:`_Pass.tiny`, answered for every mode the
-program has been in).  G91: straight moves (the chain's bound above; an arc in G91, or while an axis's G91
-chain has not been ended by a G90 move of it, declines: the arc's box assumes its start's G90 bound).  G20:
+program has been in).  G91: straight moves (the chain's bound above) and arcs, whose ends are a straight move's
+and whose box is computed with the offsets' bound grown by its plane axes' chain errors at its start and end
+(:func:`~.double_arcs.chain_offb` says why that holds a G91 arc's centre, ends and radii; an arc whose checks
+cannot be made within them declines as a near-tolerance arc does), but where X may be a diameter.  G20:
 straight moves, G90 and G91, G20/G21 anywhere, and arcs (I/J and R, :mod:`.double_units`); a G43 or G49 in other
 units than the tool length applied declines (LinuxCNC 2.9 does not convert it: the full path's unknown), and so
 does G20 where X may be a diameter (a lathe, or after G7).  Arcs: in
-the plane the program has set, or the machine file's (G17, G18 or G19; the arcs of one plane a program,
-``DoublePath.arc_axes``), on a
+the plane the program has set, or the machine file's (G17, G18 or G19; the planes may change between arcs: each
+arc's box is on its own plane's axes, ``DoublePath.arc_axes`` and ``arc_planes``), on a
 machine with the plane's axes, with the plane's centre words (G17 I/J, G18 K/I, G19 J/K: G91.1, LinuxCNC's
 default) or R, and X, Y, Z words; ``G43 H<n>`` with a literal register of the machine's
 ``[tool_lengths]`` (not on a machine with a tool tip zone), and ``G49``.  A motion while the units, distance mode or work offset (an arc: also the
@@ -81,7 +83,7 @@ that is not a lathe, a G7 after a line with an X word decline.  Everything else 
 other codes and words, G64 with Q but not P or with P not above 0, a machine that starts in G20 or G91, block delete, magic comments,
 other subroutine forms (a value returned, ``return``, a call of a sub defined after it or in a file), other
 loops, a G1 without a positive feed, a loop at its iteration bound, a
-parameter read of controller state, any evaluation error; an arc in a second plane, with P or the centre
+parameter read of controller state, any evaluation error; an arc with P or the centre
 word of the plane's normal, without axis words or a centre, of a radius about 0, with ends near or past
 the arc tolerance, an R arc of a chord about
 0 or about ``2|R|`` or longer (:mod:`.double_arcs`: the full path decides those), an arc after a motion
@@ -131,6 +133,7 @@ import re
 from array import array
 from bisect import bisect_left, bisect_right
 from fractions import Fraction
+from itertools import compress
 from operator import itemgetter
 
 from ...errors import GcodeError
@@ -159,6 +162,7 @@ from .double_arcs import (
     R_INCH_REL,
     R_SCREEN,
     TURN,
+    chain_offb,
     ij_screen,
     inch_offb,
     inch_rule,
@@ -283,15 +287,17 @@ class DoublePath:
     #: the row ``columns[a][0]`` is (a window of a long program: rows ``row0``..``motions``; 0: every row)
     row0: int = 0
     #: arcs (G2/G3): how many in the whole program, and those of these rows: their rows (motions, ascending)
-    #: and, four doubles an arc, the outer bounds ``xlo, xhi, ylo, yhi`` of its box on the plane axes
-    #: (``arc_axes``; :mod:`.double_arcs`)
+    #: and, four doubles an arc, the outer bounds ``xlo, xhi, ylo, yhi`` of its box on its plane's (first, second)
+    #: axes (:mod:`.double_arcs`): ``arc_axes`` holds a pair of axis indices per plane the arcs are in (a slot),
+    #: and ``arc_planes`` the slot of each arc (:meth:`arc_pair`)
     arcs: int = 0
     arc_rows: array | None = None
     arc_axes: tuple[int, ...] = ()
     arc_boxes: array | None = None
-    #: what :meth:`refine` needs: three doubles an arc: its kind (``double_arcs.EXACT``: its box is the sweep's
-    #: already; else a quick screen's, ``double_arcs.refined``'s flags) and its words (R and 0, or I and J); the
-    #: offsets' bound and the radius rule: ``(words, offb, rule)``
+    #: what :meth:`refine` needs: four doubles an arc: its kind (``double_arcs.EXACT``: its box is the sweep's
+    #: already; else a quick screen's, ``double_arcs.refined``'s flags), its words (R and 0, or I and J) and the
+    #: offsets' bound it was computed with (a G91 chain's error in it, ``double_arcs.chain_offb``); the offsets'
+    #: bound and the radius rule: ``(words, offb, rule)``
     arc_more: Any = None
     #: dwells (G4: a row where the machine stands) in the whole program, and the rows of those of these rows
     dwells: int = 0
@@ -309,6 +315,9 @@ class DoublePath:
     #: a bound (mm, at or above ``p + q``) of how far the program's ``G64 P p [Q q]`` lets any motion
     #: blend off the programmed path (:meth:`_Pass.tolerance`); 0.0: the program wrote none
     tolerance: float = 0.0
+    #: per arc of these rows (as ``arc_rows``), its plane's slot: the pair ``arc_axes[2 s]``, ``arc_axes[2 s + 1]``
+    #: (``array("b")``; read only when ``arc_axes`` holds more than one pair: else every arc is in slot 0)
+    arc_planes: array | None = None
 
     def enclosure(self, first: int, last: int) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
         """Exact ``(lo, hi)`` per axis holding every position of motions ``first``..``last`` (1-based rows,
@@ -345,19 +354,38 @@ class DoublePath:
             self._arc_bounds(first, last, lo, hi)
         return lo, hi
 
+    def arc_pair(self, k: int) -> tuple[int, int]:
+        """The axes (first, second) of the plane of arc ``k`` (an index of ``arc_rows``)."""
+        pairs = self.arc_axes
+        s = 2 * self.arc_planes[k] if len(pairs) > 2 and self.arc_planes is not None else 0
+        return pairs[s], pairs[s + 1]
+
     def _arc_bounds(self, first: int, last: int, lo: dict[str, Fraction], hi: dict[str, Fraction]) -> None:
-        """Grow ``lo``/``hi`` by the boxes of the arcs among motions ``first``..``last``."""
-        rows = self.arc_rows
-        assert rows is not None
+        """Grow ``lo``/``hi`` by the boxes of the arcs among motions ``first``..``last``: per plane, the least and
+        largest of its arcs' bounds on each of its axes (with several planes, the arcs of each picked by a mask of
+        their slots: one scan an axis in C whatever the order of the planes)."""
+        rows, boxes, pairs = self.arc_rows, self.arc_boxes, self.arc_axes
+        assert rows is not None and boxes is not None
         begin, end = bisect_left(rows, first), bisect_right(rows, last)
         if begin >= end:
             return
-        boxes = self.arc_boxes
-        assert boxes is not None
-        for k, a in enumerate(self.arc_axes):
+        if len(pairs) == 2 or self.arc_planes is None:
+            masks: Any = ((0, None),)
+        else:
+            slots = bytes(self.arc_planes[begin:end])
+            masks = [(s, m) for s in range(len(pairs) // 2) if 1 in (m := slots.translate(_SLOT_MASKS[s]))]
+        los: dict[int, float] = {}
+        his: dict[int, float] = {}
+        for s, mask in masks:
+            for k, a in enumerate(pairs[2 * s:2 * s + 2]):
+                low, high = boxes[4 * begin + 2 * k:4 * end:4], boxes[4 * begin + 2 * k + 1:4 * end:4]
+                v, w = (min(low), max(high)) if mask is None else (min(compress(low, mask)), max(compress(high, mask)))
+                los[a] = min(los.get(a, v), v)
+                his[a] = max(his.get(a, w), w)
+        for a, v in los.items():  # the doubles compared exactly, one Fraction an axis
             name = self.axes[a]
-            lo[name] = min(lo[name], Fraction(min(boxes[4 * begin + 2 * k:4 * end:4])))
-            hi[name] = max(hi[name], Fraction(max(boxes[4 * begin + 2 * k + 1:4 * end:4])))
+            lo[name] = min(lo[name], Fraction(v))
+            hi[name] = max(hi[name], Fraction(his[a]))
 
     def refine(self, first: int, last: int) -> bool:
         """Narrow the boxes of the arcs among motions ``first``..``last`` that hold a quick screen's
@@ -367,26 +395,25 @@ class DoublePath:
         more, rows = self.arc_more, self.arc_rows
         if more is None or not rows:
             return False
-        words, offb, rule = more
+        words, _offb, rule = more
         boxes = self.arc_boxes
         assert boxes is not None
-        begin, end = bisect_left(rows, first), bisect_right(rows, last)
-        ia, ib = self.arc_axes
-        ca, cb = self.columns[ia], self.columns[ib]
         done = False
-        for k in range(begin, end):
-            flag = int(words[3 * k])
+        for k in range(bisect_left(rows, first), bisect_right(rows, last)):
+            w = 4 * k
+            flag = int(words[w])
             if flag == EXACT:
                 continue
-            words[3 * k] = EXACT
+            words[w] = EXACT
+            ia, ib = self.arc_pair(k)
+            ca, cb = self.columns[ia], self.columns[ib]
             r = rows[k] - self.row0  # the arc's end row; the row before is its start (held: r >= 1)
-            box = refined(flag, ca[r - 1], cb[r - 1], ca[r], cb[r], words[3 * k + 1], words[3 * k + 2], offb, rule)
+            box = refined(flag, ca[r - 1], cb[r - 1], ca[r], cb[r], words[w + 1], words[w + 2], words[w + 3], rule)
             if box.__class__ is str:  # (r_screen and ij_screen accept only arcs these accept)
                 continue
             done = True
-            b = 4 * k
-            boxes[b:b + 4] = array("d", (max(boxes[b], box[0]), min(boxes[b + 1], box[1]),
-                                         max(boxes[b + 2], box[2]), min(boxes[b + 3], box[3])))
+            boxes[w:w + 4] = array("d", (max(boxes[w], box[0]), min(boxes[w + 1], box[1]),
+                                         max(boxes[w + 2], box[2]), min(boxes[w + 3], box[3])))
         return done
 
     def blended(self, k: int) -> bool:
@@ -423,6 +450,8 @@ _EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
+#: Per plane slot s: the bytes table that maps s to 1 and every other slot to 0 (:meth:`DoublePath._arc_bounds`).
+_SLOT_MASKS = tuple(bytes(int(b == s) for b in range(256)) for s in range(3))
 
 
 def double_pass(text: str | FileText, machine: Any, *, max_iterations: int, on_window: Any = None,
@@ -702,7 +731,7 @@ class _Pass:
                           motions - self.rapids - arcs - self.dwells, self.rapids, self.blocks, self.start,
                           tuple(self.first_row), self.row0, arcs, self.arc_rows, self.arc_axes, self.arc_boxes,
                           (self.arc_words, self.offb, self.rule), self.dwells, self.dwell_rows, tuple(self.modes),
-                          tuple(self.xerr), tuple(self.assumed.items()), self.tol)
+                          tuple(self.xerr), tuple(self.assumed.items()), self.tol, self.arc_slots)
 
     def full(self) -> None:
         """The window is full: hand it over, keep its last two rows (one motion of overlap)."""
@@ -722,8 +751,9 @@ class _Pass:
             del self.arc_rows[:gone]
             self.arcs += gone
             del self.arc_boxes[:4 * gone]
-            del self.arc_words[:3 * gone]
-        # the path mode in force at row0 and its changes after; the dwells from row0 on
+            del self.arc_words[:4 * gone]
+            del self.arc_slots[:gone]
+        # the path mode in force at row0 and its changes after (the arcs' plane likewise); the dwells from row0 on
         k = bisect_right(self.modes, (self.row0, True)) - 1
         if k > 0:
             del self.modes[:k]
@@ -1143,16 +1173,20 @@ class _Pass:
         self.start_plane = 18 if "G18" in modal else 19 if "G19" in modal else 17  # the full path's start
         self.tiny_pad = float(max(self.offset_bound, default=Fraction(0))) * 1e-14  # the rows' offset term
         self.rule = radius_rule(arc_tolerance)
-        #: the plane of the arcs so far (0: none yet) and its two axes (first, second: ``_ARC_PLANES``); the
-        #: pass takes the arcs of one plane a program (DoublePath.arc_axes is one pair)
-        self.arc_plane = 0
+        #: the plane of the last arc (0: none yet) and its slot; the planes' axes (first, second: ``_ARC_PLANES``),
+        #: a pair per plane in the order the arcs met them, and each plane's slot there (:attr:`DoublePath.arc_axes`);
+        #: per arc held its slot (:attr:`DoublePath.arc_planes`)
+        self.arc_plane = self.arc_slot = 0
         self.arc_axes: tuple[int, ...] = ()
+        self.plane_slots: dict[int, int] = {}
+        self.arc_slots = array("b")
         top = max((self.offset_bound[self.index[a]] for a in "XYZ" if a in self.index), default=Fraction(0))
         self.offb = math.nextafter(float(top), math.inf)  # at or above every plane axis's offsets
         self.arcs = 0  # the arcs of the rows dropped (full()); those held are arc_rows
         self.arc_rows = array("q")
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
-        self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
+        #: per arc: its box's kind, R and 0 or I and J, the offsets' bound it was computed with (DoublePath.arc_more)
+        self.arc_words = array("d")
 
     def assume(self) -> None:
         """A motion while the units, distance mode or work offset are still the machine file's: the full path
@@ -1171,12 +1205,14 @@ class _Pass:
         return self.plane
 
     def arc_in(self, plane: int) -> None:
-        """The first arc, in ``plane``: its axes are the arcs' (:attr:`DoublePath.arc_axes`); an arc in another
-        plane after arcs in one declines."""
-        if self.arc_plane:
-            raise Declined("arcs in two planes")
-        a, b, _words = _ARC_PLANES[plane]
-        self.arc_plane, self.arc_axes = plane, (self.index[a], self.index[b])
+        """An arc in ``plane``, another than the last arc's: its plane's slot (a new pair of
+        :attr:`DoublePath.arc_axes` for a plane met first) is the arcs' from it on (:attr:`DoublePath.arc_planes`)."""
+        slot = self.plane_slots.get(plane)
+        if slot is None:
+            a, b, _words = _ARC_PLANES[plane]
+            slot = self.plane_slots[plane] = len(self.plane_slots)
+            self.arc_axes += (self.index[a], self.index[b])
+        self.arc_plane, self.arc_slot = plane, slot
 
     def _modes_state(self, machine: Any) -> None:
         """The path mode and the dwells (:meth:`mode`, :meth:`dwelt`), and whether M6 moves on ``machine``."""
@@ -1282,10 +1318,11 @@ class _Pass:
 
     def tiny(self, row: int) -> bool:
         """May the motion that ends at ``row`` (of the columns held) be dropped by LinuxCNC: is it shorter than
-        :data:`~nczones.motion.DROPPED_BELOW` on every axis, within far more than the rows' error?"""
+        :data:`~nczones.motion.DROPPED_BELOW` on every axis, within far more than the rows' error?  (A G91 chain's
+        rows are within its bound, at most the axis's ``xerr``, of the exact ones: twice that more.)"""
         pad = self.tiny_pad
-        return all(abs(col[row] - col[row - 1]) < _DROPPED + (abs(col[row]) + abs(col[row - 1])) * 4e-15 + pad
-                   for col in self.columns)
+        return all(abs(col[row] - col[row - 1]) < _DROPPED + (abs(col[row]) + abs(col[row - 1])) * 4e-15 + pad + 2 * e
+                   for col, e in zip(self.columns, self.xerr))
 
     def lone(self, row: int) -> bool:
         """Is the motion that ends at ``row`` the program's first, with the same doubles as the start on every
@@ -1367,8 +1404,9 @@ class _Pass:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "CO": chain_offb,
                                  "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
+                                 "AS": self.arc_slots.append,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
                                  "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc,
@@ -1513,7 +1551,7 @@ class _Pass:
     def _arc_body(self, others: list[str], plane: int) -> list[str]:
         """The code that adds the box of the arc just moved in ``plane`` (:mod:`.double_arcs`, on the plane's
         first and second axes as the full path's ``Interpreter.arc``: G18's are Z and X, with K and I) from
-        ``sa, sb``, or declines."""
+        ``sa, sb`` with the offsets' bound ``ob`` (:meth:`_arc_plane_body`), or declines."""
         def val(x: str) -> str:
             return f"v[{others.index(x)}]" if x in others else "0.0"
 
@@ -1527,31 +1565,38 @@ class _Pass:
             words = [f"p = {val('R')}; rel = {2.0**-51!r}; fl = 0.0"]
             if self.g20_text:
                 words += ["if st.inch:", f"    p = p * {INCH!r}; rel = {R_INCH_REL!r}; fl = {float(INCH_ARC)}"]
-            call = f"R_ARC({ends}, p, {self.offb!r}, rel)"
-            kind = f"AW((({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}) + fl, p, 0.0))"
+            call = f"R_ARC({ends}, p, ob, rel)"
+            kind = f"AW((({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}) + fl, p, 0.0, ob))"
         else:
             # the words in mm: in G20 scaled, with the offsets' bound and rule of double_arcs.inch_offb, inch_rule
-            words = [f"p = {val(wa)}; q = {val(wb)}; ob = {self.offb!r}; ru = {self.rule!r}; fl = 0.0"]
+            words = [f"p = {val(wa)}; q = {val(wb)}; oi = ob; ru = {self.rule!r}; fl = 0.0"]
             if self.g20_text:
-                words += ["if st.inch:", f"    p = p * {INCH!r}; q = q * {INCH!r}; ob = IOFFB(ob, p, q); "
+                words += ["if st.inch:", f"    p = p * {INCH!r}; q = q * {INCH!r}; oi = IOFFB(ob, p, q); "
                           f"ru = {inch_rule(self.rule)!r}; fl = {float(INCH_ARC)}"]
-            call = f"IJ_ARC({ends}, p, q, mode == 2, ob, ru, {turn})"
+            call = f"IJ_ARC({ends}, p, q, mode == 2, oi, ru, {turn})"
             flag = IJ_SCREEN | (TURN if turn else 0)
-            kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q))"
+            kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q, ob))"
         return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
                 # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
-                # differ by LIM or more, and |sa| < 1e10, leave tiny()'s bound there below DR + PAD + 8e-5 + 4e-15
-                # |t| < |t|: most arcs follow a motion that is not short)
-                f"if st.blend and n > 2 and (-LIM < sa - C{ia}[-3] < LIM or not -1e10 < sa < 1e10) "
+                # differ by LIM (plus twice a G91 chain's error, XERR) or more, and |sa| < 1e10, leave tiny()'s
+                # bound there below DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|: most arcs follow a motion that is
+                # not short)
+                f"if st.blend and n > 2 and (-(li := LIM + 2.0 * XERR[{ia}]) < sa - C{ia}[-3] < li "
+                "or not -1e10 < sa < 1e10) "
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + n - 1); AB(box)", kind]
+                "AR(st.row0 + n - 1); AB(box); AS(st.arc_slot)", kind]
 
     def _arc_plane_body(self, others: list[str], axes: list[tuple[int, int]], plane: int) -> list[str]:
         """The code of an arc in ``plane`` after its checks: its rows and its box, or a decline (the machine
         lacks a plane axis, the block has the centre word of the plane's normal: the full path's GC308,
-        GC204)."""
+        GC204).
+
+        The ends are a straight move's (:meth:`_straight_ends`: G90, G91 and G20, the G91 chains' bounds); the
+        arc is computed with the offsets' bound grown by the chains' errors of its plane axes at its start and
+        at its end (:func:`~.double_arcs.chain_offb`, which says why that holds the arc; ``ERR`` is None off a chain): a G91
+        arc's centre ``S' + (I, J)`` carries its start's error, its end ``S' + W`` its chain's."""
         a, b, words = _ARC_PLANES[plane]
         if a not in self.index or b not in self.index:
             return [f"raise D('an arc in G{plane} on a machine without {a} and {b}')"]
@@ -1559,13 +1604,15 @@ class _Pass:
             return [f"raise D('an arc in G{plane} with a centre word other than {words[0]} and {words[1]}')"]
         ia, ib = self.index[a], self.index[b]
         moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
-        ends = [f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes]
-        if self.g20_text:  # (G20 declines where X may be a diameter: units(), diameter_body)  # in G20 the words' millimetres (double_units)
-            ends = ["if st.inch:", *(f"    pos[{i}] = x{i} = v[{k}] * {INCH!r} + off[{i}]" for k, i in axes),
-                    "else:", *(f"    {b}" for b in ends)]
-        return [f"sa = pos[{ia}]; sb = pos[{ib}]",
-                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})", *ends,
-                *self._kept_words(axes),
+        # the chains' errors at the start (before the ends: a G90 end ends its chain; None: no chain) and at the end
+        start, chained = [], []
+        if self.g91_text:
+            start = [f"ea = ERR[{ia}]; eb = ERR[{ib}]"]
+            chained = [f"if ea is not None or eb is not None or st.chained: ob = CO(ob, max(ea or 0.0, eb or 0.0, "
+                       f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0))"]
+        return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
+                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
+                *start, *self._straight_ends(axes), *chained, *self._kept_words(axes),
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
@@ -1589,8 +1636,10 @@ class _Pass:
             body += ["if mode < 2 or not st.feed > 0.0: "
                      "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
                      *(["if CS.busy: raise D('an arc under cutter compensation or just after its G40')"]
-                       if self.cc is not None else []),
-                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
+                       if self.cc is not None else [])]
+            if self.diameter:  # a G91 arc where X may be a diameter (.double_lathe): the full path's
+                body.append("if st.inc or st.chained: raise D('an arc in G91, or on a G91 chain, where X may be a "
+                            "diameter')")
         body += ["if unset: st.assume()", "off = st.off"]
         if arc:
             body.append("pl = st.plane or st.assume_plane()")
