@@ -251,13 +251,13 @@ class Declined(Exception):
 class DoublePath:
     """A program's motion as the pass computed it.
 
-    ``columns[a][k]`` (an ``array("d")``) is the double machine coordinate of axis ``axes[a]`` at the end of the k-th motion
+    ``columns[a][k]`` (a list of floats, or an ``array("d")``) is the double machine coordinate of axis ``axes[a]`` at the end of the k-th motion
     (row 0: the start position, so row k is where motion k ends and row k-1 where it starts).
     ``offset_bound[a]`` bounds the magnitude of every work offset the rows were computed with.
     """
 
     axes: tuple[str, ...]
-    columns: tuple[array, ...]
+    columns: tuple[list[float] | array, ...]
     offset_bound: tuple[Fraction, ...]
     motions: int
     lines: int
@@ -409,6 +409,8 @@ class DoublePath:
 _ULP = Fraction(1, 2**52)
 _EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
+#: Arcs the pass holds in lists before it moves them to its arrays (:meth:`_Pass.arc_flush`).
+_ARC_BUFFER = 4096
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
 
@@ -513,7 +515,8 @@ class _Pass:
         self.start = tuple(machine.start)
         self.first_row = [0] * len(self.axes)  # the first row a motion moved each axis to (0: none yet)
         self.pos = [float(v) for v in machine.start]
-        self.columns: tuple[array, ...] = tuple(array("d", [v]) for v in self.pos)
+        # lists, not arrays (as the arcs' rows, _arcs_state): an array's append parses its float with PyArg_Parse
+        self.columns: tuple[list[float], ...] = tuple([v] for v in self.pos)
         self.rapids = self.blocks = 0
         self._language_state()
 
@@ -677,6 +680,7 @@ class _Pass:
         """The rows held now as a path (every row, or the current window)."""
         # a sum is finite only when every row is (an inf or nan stays one; a finite overflow declines too): one
         # scan of a window's column, not two (min and max)
+        self.arc_flush()
         if not all(math.isfinite(sum(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
@@ -1132,6 +1136,23 @@ class _Pass:
         self.arc_rows = array("q")
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
         self.arc_words = array("d")  # per arc: its box's kind, R and 0 or I and J (DoublePath.arc_more)
+        #: the same of the arcs since :meth:`arc_flush`, in lists: an array's append and extend parse each item
+        #: with ``PyArg_Parse`` (some 500 instructions, a tenth of a lathe program's pass); the arrays keep a
+        #: window's arcs in a quarter of a list's memory
+        self.new_arcs: tuple[list[int], list[float], list[float]] = ([], [], [])
+
+    def arc_flush(self) -> None:
+        """Move the arcs of :attr:`new_arcs` to the arrays (each list packed at once: no item parsed)."""
+        rows, boxes, words = self.new_arcs
+        if rows:
+            from struct import pack as _pack  # (not at start-up: a program with arcs only)
+
+            self.arc_rows.frombytes(_pack(f"{len(rows)}q", *rows))
+            self.arc_boxes.frombytes(_pack(f"{len(boxes)}d", *boxes))
+            self.arc_words.frombytes(_pack(f"{len(words)}d", *words))
+            rows.clear()
+            boxes.clear()
+            words.clear()
 
     def assume(self) -> None:
         """A motion while the units, distance mode or work offset are still the machine file's: the full path
@@ -1339,7 +1360,8 @@ class _Pass:
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
-                                 "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
+                                 "AR": self.new_arcs[0].append, "IOFFB": inch_offb, "AB": self.new_arcs[1].extend,
+                                 "AW": self.new_arcs[2].extend, "NA_ROWS": self.new_arcs[0],
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
                                  "CYC": CYCLE_CODES, "TA": TA}
@@ -1515,7 +1537,7 @@ class _Pass:
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + n - 1); AB(box)", kind]
+                "AR(st.row0 + n - 1); AB(box)", kind, f"if len(NA_ROWS) >= {_ARC_BUFFER}: st.arc_flush()"]
 
     def _arc_plane_body(self, others: list[str], axes: list[tuple[int, int]], plane: int) -> list[str]:
         """The code of an arc in ``plane`` after its checks: its rows and its box, or a decline (the machine
