@@ -3,6 +3,9 @@ declines exactly as they were.
 
 - the arcs' rows, boxes and words are gathered in lists and moved to the path's arrays in bulk
   (``_Pass.arc_flush``): every window's arcs are the same whatever the buffer's size, in arrays;
+- the arcs' quick boxes: the pass's box of every arc is the reference screens' (``double_arcs.r_screen``, and
+  ``_ij_screen_before``: ``ij_screen`` as it was, from ``ij_check``'s fourteen values) on the pass's rows, and
+  ``ij_check(..., screen=True)`` is that reference on arcs of every kind (declined ones too).
 """
 
 from __future__ import annotations
@@ -11,10 +14,22 @@ import random
 from array import array
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from nczones.gcode.linuxcnc import doubles
+from nczones.gcode.linuxcnc import double_arcs, doubles
+from nczones.gcode.linuxcnc.double_arcs import (
+    CW,
+    INCH,
+    R_INCH_REL,
+    R_SCREEN,
+    TURN,
+    inch_offb,
+    inch_rule,
+)
 from nczones.gcode.linuxcnc.doubles import double_pass
 from nczones.machine import parse_machine
+from tests.gcode.test_double_pass import check_against_full
 from tests.machines import machine_text
 
 #: report_lathe (X diameters: G7 at the start; G54 X10 Z200; travel X 0..150, Z 0..400)
@@ -67,3 +82,69 @@ def test_the_arcs_moved_in_bulk_are_the_arcs_of_every_window(monkeypatch, buffer
     assert len(want) > 5 and all(w[3] for w in want)  # windows with arcs
     assert sum(len(w[3]) for w in want) > want[-1][1]  # the windows overlap: arcs handed over twice
 
+
+# -- the arcs' quick boxes ---------------------------------------------------------------------------------------
+
+def _ij_screen_before(sx, sy, ex, ey, i, j, cw, offb, tol, turn=False):
+    """``double_arcs.ij_screen`` before lathe40: the box from :func:`ij_check`'s fourteen values."""
+    got = double_arcs.ij_check(sx, sy, ex, ey, i, j, cw, offb, tol, turn)
+    if got.__class__ is str:
+        return got
+    cx, cy, big, err = got[4], got[5], got[10], got[12]
+    w = big + 2 * err
+    return (cx - w, cx + w, cy - w, cy + w)
+
+
+def reference_boxes(path) -> list[tuple]:
+    """The quick box of every arc of ``path`` by the reference screens, from the pass's rows and words."""
+    words, offb, rule = path.arc_more
+    ia, ib = path.arc_axes
+    ca, cb = path.columns[ia], path.columns[ib]
+    out = []
+    for k, row in enumerate(path.arc_rows):
+        flag, p, q = int(words[3 * k]), words[3 * k + 1], words[3 * k + 2]
+        r = row - path.row0
+        ends = (ca[r - 1], cb[r - 1], ca[r], cb[r])
+        if flag & 3 == R_SCREEN:
+            out.append(double_arcs.r_screen(*ends, p, offb, R_INCH_REL if flag & INCH else 2.0**-51))
+        else:
+            ob, ru = (inch_offb(offb, p, q), inch_rule(rule)) if flag & INCH else (offb, rule)
+            out.append(_ij_screen_before(*ends, p, q, bool(flag & CW), ob, ru, bool(flag & TURN)))
+    return out
+
+
+def _boxes(path) -> list[tuple]:
+    b = path.arc_boxes
+    return [tuple(b[k:k + 4]) for k in range(0, len(b), 4)]
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_the_pass_keeps_the_reference_screens_boxes(seed):
+    path = double_pass(lathe_text(600, seed), LATHE, max_iterations=100)
+    assert path.arcs > 300
+    assert _boxes(path) == reference_boxes(path)
+
+
+def test_the_pass_keeps_the_reference_screens_boxes_on_the_full_paths_programs():
+    text = ("G18 G21 G90 G54 F100\n#1 = 10\nG1 X[#1 * 2] Z5\nG8 X#1\nG7 G90 G1 X20 Z0\n"
+            "G2 X15 Z-2.5 K-2.5 I0\nG3 X40 Z-5 R20\nG2 X40.5 Z-5.25 R-0.3\nG3 X41.5 Z-5.75 K-0.5 I0\nM30\n")
+    path = check_against_full(text, LATHE)
+    assert path is not None and path.arcs == 4
+    assert _boxes(path) == reference_boxes(path)
+
+
+_coord = st.one_of(st.floats(-500, 500, allow_nan=False), st.sampled_from([0.0, 1.0, -1.0, 2.5, 1e-3]))
+
+
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(_coord, _coord, _coord, _coord, _coord, _coord, st.booleans(), st.sampled_from([0.0, 5e-324, 200.0]),
+       st.sampled_from([-1.0, -2.0, 0.0019999999999999996, 0.005]), st.booleans(), st.booleans())
+def test_the_check_gives_the_reference_screen(sx, sy, i, j, ex, ey, cw, offb, tol, turn, on_circle):
+    if on_circle:  # an end on the start's circle (the usual arc): turned about the centre
+        cx, cy = sx + i, sy + j
+        ex, ey = cx + (sy - cy) * (1 if cw else -1), cy - (sx - cx) * (1 if cw else -1)
+    if turn:
+        ex, ey = sx, sy
+    got = double_arcs.ij_check(sx, sy, ex, ey, i, j, cw, offb, tol, turn, True)
+    assert got == _ij_screen_before(sx, sy, ex, ey, i, j, cw, offb, tol, turn)
+    assert double_arcs.ij_screen(sx, sy, ex, ey, i, j, cw, offb, tol, turn) == got

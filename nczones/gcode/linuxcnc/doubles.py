@@ -148,7 +148,7 @@ from .double_arcs import (
     R_INCH_REL,
     R_SCREEN,
     TURN,
-    ij_screen,
+    ij_check,
     inch_offb,
     inch_rule,
     r_screen,
@@ -1359,7 +1359,7 @@ class _Pass:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_check,
                                  "AR": self.new_arcs[0].append, "IOFFB": inch_offb, "AB": self.new_arcs[1].extend,
                                  "AW": self.new_arcs[2].extend, "NA_ROWS": self.new_arcs[0],
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
@@ -1526,7 +1526,7 @@ class _Pass:
             if self.g20_text:
                 words += ["if st.inch:", f"    p = p * {INCH!r}; q = q * {INCH!r}; ob = IOFFB(ob, p, q); "
                           f"ru = {inch_rule(self.rule)!r}; fl = {float(INCH_ARC)}"]
-            call = f"IJ_ARC({ends}, p, q, mode == 2, ob, ru, {turn})"
+            call = f"IJ_ARC({ends}, p, q, mode == 2, ob, ru, {turn}, True)"  # (ij_check: ij_screen's box)
             flag = IJ_SCREEN | (TURN if turn else 0)
             kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q))"
         return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
