@@ -5,7 +5,9 @@ declines exactly as they were.
   (``_Pass.arc_flush``): every window's arcs are the same whatever the buffer's size, in arrays;
 - the arcs' quick boxes: the pass's box of every arc is the reference screens' (``double_arcs.r_screen``, and
   ``_ij_screen_before``: ``ij_screen`` as it was, from ``ij_check``'s fourteen values) on the pass's rows, and
-  ``ij_check(..., screen=True)`` is that reference on arcs of every kind (declined ones too).
+  ``ij_check(..., screen=True)`` is that reference on arcs of every kind (declined ones too);
+- a block's own G0-G3 decides the tests of the motion mode when the plan is made (``doubles._mode_checks``): the
+  same declines as the modal code's at run time, the same rapids.
 """
 
 from __future__ import annotations
@@ -148,3 +150,29 @@ def test_the_check_gives_the_reference_screen(sx, sy, i, j, ex, ey, cw, offb, to
     got = double_arcs.ij_check(sx, sy, ex, ey, i, j, cw, offb, tol, turn, True)
     assert got == _ij_screen_before(sx, sy, ex, ey, i, j, cw, offb, tol, turn)
     assert double_arcs.ij_screen(sx, sy, ex, ey, i, j, cw, offb, tol, turn) == got
+
+
+# -- the motion mode decided when the plan is made -----------------------------------------------------------------
+
+_HEAD = "G18 G21 G90 G54\n#1 = 10\n"
+
+
+@pytest.mark.parametrize("texts, why", [
+    (["G1 X#1 Z0"], "G1 without a positive feed"),  # (no G1 block sets the mode without a feed)
+    (["G2 X#1 Z0 R2"], "without a positive feed"),
+    (["F100\nG2 X#1 Z0", "F100\nG1 X1 Z1\nG2 X2 Z0 R5\nX#1 Z0"], "an arc without I, J, K or R"),
+    (["F100\nG3 X#1 Z0", "F100\nG1 X1 Z1\nG3 X2 Z0 R5\nX#1 Z0"], "an arc without I, J, K or R"),
+    (["G0 X#1 Z0 R2", "G0 X1 Z1\nX#1 Z0 R2"], "I, J, K or R without G2 or G3"),
+    (["F100\nG1 X#1 Z0 K1 I0", "F100\nG1 X1 Z1\nX#1 Z0 K1 I0"], "I, J, K or R without G2 or G3"),
+])
+def test_a_blocks_own_motion_code_declines_as_the_modal_one(texts, why):
+    for text in texts:
+        with pytest.raises(doubles.Declined, match=why):
+            double_pass(f"{_HEAD}{text}\nM30\n", LATHE, max_iterations=10)
+
+
+def test_a_blocks_own_motion_code_counts_as_the_modal_one():
+    text = (_HEAD + "G0 X#1 Z5\nX[#1 * 2] Z4\nG1 X#1 Z3 F100\nG0 X[#1 + 1]\nG1 Z2\nG2 X[#1 + 2] Z1 R1\n"
+            "G0 X[#1 + 3] Z0\nG3 X[#1 + 4] Z-0.5 K-0.5 I0\nG0 Z0\nM30\n")
+    path = check_against_full(text, LATHE)  # the rows, arcs and rapids are the full path's
+    assert path is not None and (path.rapids, path.arcs, path.lines) == (5, 2, 2)

@@ -1350,7 +1350,8 @@ class _Pass:
         if axes or groups.get("motion") in CYCLE_CODES:  # a cycle block runs without axis words too
             body += cycle_call(others, axes)
         if axes:
-            body += self._motion_body(others, axes)
+            code = groups.get("motion")
+            body += self._motion_body(others, axes, code if code in (0, 1, 2, 3) else None)
         elif any(x in "IJKR" for x in others) and groups.get("motion") not in CYCLE_CODES:
             raise Declined("I, J, K or R without a motion")
         return self._compiled_plan(body)
@@ -1563,22 +1564,20 @@ class _Pass:
         set_axes = {i for _k, i in axes}
         return [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
 
-    def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
+    def _motion_body(self, others: list[str], axes: list[tuple[int, int]], code: int | None = None) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J, K or R) an arc whose box
-        :meth:`_arc_body` adds, in the plane the program has set (a branch per plane)."""
+        :meth:`_arc_body` adds, in the plane the program has set (a branch per plane).  ``code``: the block's
+        own G0-G3 (None: the modal one, ``st.motion``), whose tests of the mode are decided here (lathe40: a
+        tenth of a straight move's code)."""
         arc = [x for x in others if x in "IJKR"]
-        body = ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')"]
-        if not arc:
-            body += ["if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
-                     "elif mode: raise D('an arc without I, J, K or R')"]
-        else:
+        if arc:
             if "R" in arc and len(arc) > 1:
                 raise Declined("R and I, J or K in one arc")
             if any(self.axes[i] not in "XYZ" for _k, i in axes):
                 raise Declined("an arc on axes other than X, Y and Z")
-            body += ["if mode < 2 or not st.feed > 0.0: "
-                     "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
-                     "if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')"]
+        body = _mode_checks(code, bool(arc))
+        if arc:
+            body.append("if st.inc or st.chained: raise D('an arc in G91, or before G90 moves set every G91 axis')")
         body += ["if unset: st.assume()", "off = st.off"]
         if arc:
             body.append("pl = st.plane or st.assume_plane()")
@@ -1592,9 +1591,34 @@ class _Pass:
             body += self._straight_ends(axes)
             body += [*self._appends(axes), "n = len(C0)"]
         body.append(f"if n >= {self.rows}: st.full()")
-        if not arc:
+        if not arc and code is None:
             body.append("if not mode: st.rapids += 1")
+        elif not arc and code == 0:
+            body.append("st.rapids += 1")
         return body
+
+
+#: The tests of the motion mode before a motion (:func:`_mode_checks`): a straight move's, an arc's.
+_STRAIGHT_MODE = ("if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
+                  "elif mode: raise D('an arc without I, J, K or R')")
+_ARC_MODE = ("if mode < 2 or not st.feed > 0.0: raise D('I, J, K or R without G2 or G3, or without a positive feed')",)
+
+
+def _mode_checks(code: int | None, arc: bool) -> list[str]:
+    """The code that sets ``mode`` and tests it before a motion (an arc: ``arc``), as ``st.motion`` at run time
+    (``code`` None) or the block's own code (0-3; ``st.motion`` is then that code: the block set it, and no
+    cycle runs in its block), each test decided as it would be at run time: the same declines, no test left
+    that cannot fail."""
+    if code is None:
+        return ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')",
+                *(_ARC_MODE if arc else _STRAIGHT_MODE)]
+    body = [f"mode = {code}"]
+    if arc:
+        return body + ([_ARC_MODE[0].replace("mode < 2 or ", "")] if code >= 2 else
+                       ["raise D('I, J, K or R without G2 or G3, or without a positive feed')"])
+    if code == 1:
+        return body + [_STRAIGHT_MODE[1].strip()]
+    return body + (["raise D('an arc without I, J, K or R')"] if code else [])
 
 
 def _groups(gs: list[int]) -> dict[str, int]:
