@@ -175,21 +175,18 @@ def ij_screen(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw
     >>> [round(v, 9) + 0.0 for v in ij_screen(1.0, 0.0, 0.0, 1.0, -1.0, 0.0, False, 0.0, 0.002)]
     [-1.0, 1.0, -1.0, 1.0]
     """
-    got = ij_check(sx, sy, ex, ey, i, j, cw, offb, tol, turn)
-    if got.__class__ is str:
-        return got
-    cx, cy, big, err = got[4], got[5], got[10], got[12]
-    w = big + 2 * err
-    return (cx - w, cx + w, cy - w, cy + w)
+    return ij_check(sx, sy, ex, ey, i, j, cw, offb, tol, turn, True)
 
 
 def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw: bool, offb: float,
-             tol: float, turn: bool = False) -> Any:
+             tol: float, turn: bool = False, screen: bool = False) -> Any:
     """:func:`_box`'s arguments for the box ``(xlo, xhi, ylo, yhi)`` (doubles, outer bounds) holding the full
     path's I/J arc from ``(sx, sy)``
     to ``(ex, ey)`` (machine doubles) with centre offsets ``i``, ``j``, or a ``str``: why the pass declines.
     ``offb`` bounds the work offsets' magnitude (rounded up), ``tol`` is :func:`radius_rule`'s; ``turn``: the
-    block names no axis of the plane, so the end is the start exactly (a whole turn).
+    block names no axis of the plane, so the end is the start exactly (a whole turn); ``screen``: return
+    :func:`ij_screen`'s box instead (the pass calls this directly: a call of ten arguments and a tuple of
+    fourteen less an arc, a quarter of the check's cost).
 
     An end that may lie on the ray from the centre through the start (their cross product within its error
     of 0; the dot product is then about ``r0 r1``, clearly positive or negative) is declined unless ``turn``:
@@ -228,7 +225,11 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
     margin = diff + big * 1e-9 + 1e-9 + 2 * err
     if not (margin < tol if tol >= 0 else _linuxcnc_accepts(margin, big - margin, _A if tol == -1.0 else _A_INCH)):
         return "an arc whose end is near or past the arc tolerance"
+    if screen:  # ij_screen's box
+        w = big + 2 * err
+        return (cx - w, cx + w, cy - w, cy + w)
     return (sx, sy, ex, ey, cx, cy, -i, -j, wx, wy, big, diff + err, err, cw)
+
 
 
 def r_arc(sx: float, sy: float, ex: float, ey: float, r: float, cw: bool, offb: float, rel: float = 2.0**-51) -> Any:

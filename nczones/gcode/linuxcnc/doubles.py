@@ -163,7 +163,7 @@ from .double_arcs import (
     R_SCREEN,
     TURN,
     chain_offb,
-    ij_screen,
+    ij_check,
     inch_offb,
     inch_rule,
     r_screen,
@@ -267,13 +267,13 @@ class Declined(Exception):
 class DoublePath:
     """A program's motion as the pass computed it.
 
-    ``columns[a][k]`` (an ``array("d")``) is the double machine coordinate of axis ``axes[a]`` at the end of the k-th motion
+    ``columns[a][k]`` (a list of floats, or an ``array("d")``) is the double machine coordinate of axis ``axes[a]`` at the end of the k-th motion
     (row 0: the start position, so row k is where motion k ends and row k-1 where it starts).
     ``offset_bound[a]`` bounds the magnitude of every work offset the rows were computed with.
     """
 
     axes: tuple[str, ...]
-    columns: tuple[array, ...]
+    columns: tuple[list[float] | array, ...]
     offset_bound: tuple[Fraction, ...]
     motions: int
     lines: int
@@ -448,6 +448,8 @@ class DoublePath:
 _ULP = Fraction(1, 2**52)
 _EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
+#: Arcs the pass holds in lists before it moves them to its arrays (:meth:`_Pass.arc_flush`).
+_ARC_BUFFER = 4096
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
 #: Per plane slot s: the bytes table that maps s to 1 and every other slot to 0 (:meth:`DoublePath._arc_bounds`).
@@ -557,7 +559,8 @@ class _Pass:
         self.start = tuple(machine.start)
         self.first_row = [0] * len(self.axes)  # the first row a motion moved each axis to (0: none yet)
         self.pos = [float(v) for v in machine.start]
-        self.columns: tuple[array, ...] = tuple(array("d", [v]) for v in self.pos)
+        # lists, not arrays (as the arcs' rows, _arcs_state): an array's append parses its float with PyArg_Parse
+        self.columns: tuple[list[float], ...] = tuple([v] for v in self.pos)
         self.rapids = self.blocks = 0
         self._language_state()
 
@@ -723,6 +726,7 @@ class _Pass:
         """The rows held now as a path (every row, or the current window)."""
         # a sum is finite only when every row is (an inf or nan stays one; a finite overflow declines too): one
         # scan of a window's column, not two (min and max)
+        self.arc_flush()
         if not all(math.isfinite(sum(col)) for col in self.columns):
             raise Declined("a position beyond the double range")
         motions = self.row0 + len(self.columns[0]) - 1
@@ -1187,6 +1191,24 @@ class _Pass:
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
         #: per arc: its box's kind, R and 0 or I and J, the offsets' bound it was computed with (DoublePath.arc_more)
         self.arc_words = array("d")
+        #: the same of the arcs since :meth:`arc_flush`, in lists: an array's append and extend parse each item
+        #: with ``PyArg_Parse`` (some 500 instructions, a tenth of a lathe program's pass); the arrays keep a
+        #: window's arcs in a quarter of a list's memory (the arcs' plane slots, one small item an arc, are
+        #: appended to :attr:`arc_slots` at once)
+        self.new_arcs: tuple[list[int], list[float], list[float]] = ([], [], [])
+
+    def arc_flush(self) -> None:
+        """Move the arcs of :attr:`new_arcs` to the arrays (each list packed at once: no item parsed)."""
+        rows, boxes, words = self.new_arcs
+        if rows:
+            from struct import pack as _pack  # (not at start-up: a program with arcs only)
+
+            self.arc_rows.frombytes(_pack(f"{len(rows)}q", *rows))
+            self.arc_boxes.frombytes(_pack(f"{len(boxes)}d", *boxes))
+            self.arc_words.frombytes(_pack(f"{len(words)}d", *words))
+            rows.clear()
+            boxes.clear()
+            words.clear()
 
     def assume(self) -> None:
         """A motion while the units, distance mode or work offset are still the machine file's: the full path
@@ -1395,7 +1417,8 @@ class _Pass:
         if axes or groups.get("motion") in CYCLE_CODES:  # a cycle block runs without axis words too
             body += cycle_call(others, axes)
         if axes:
-            body += self._motion_body(others, axes)
+            code = groups.get("motion")
+            body += self._motion_body(others, axes, code if code in (0, 1, 2, 3) else None)
         elif any(x in "IJKR" for x in others) and groups.get("motion") not in CYCLE_CODES:
             raise Declined("I, J, K or R without a motion")
         return self._compiled_plan(body)
@@ -1404,8 +1427,9 @@ class _Pass:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_screen, "CO": chain_offb,
-                                 "AR": self.arc_rows.append, "IOFFB": inch_offb, "AB": self.arc_boxes.extend, "AW": self.arc_words.extend,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_check, "CO": chain_offb,
+                                 "AR": self.new_arcs[0].append, "IOFFB": inch_offb, "AB": self.new_arcs[1].extend,
+                                 "AW": self.new_arcs[2].extend, "NA_ROWS": self.new_arcs[0],
                                  "AS": self.arc_slots.append,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
@@ -1573,7 +1597,7 @@ class _Pass:
             if self.g20_text:
                 words += ["if st.inch:", f"    p = p * {INCH!r}; q = q * {INCH!r}; oi = IOFFB(ob, p, q); "
                           f"ru = {inch_rule(self.rule)!r}; fl = {float(INCH_ARC)}"]
-            call = f"IJ_ARC({ends}, p, q, mode == 2, oi, ru, {turn})"
+            call = f"IJ_ARC({ends}, p, q, mode == 2, oi, ru, {turn}, True)"  # (ij_check: ij_screen's box)
             flag = IJ_SCREEN | (TURN if turn else 0)
             kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q, ob))"
         return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
@@ -1586,7 +1610,8 @@ class _Pass:
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + n - 1); AB(box); AS(st.arc_slot)", kind]
+                "AR(st.row0 + n - 1); AB(box); AS(st.arc_slot)", kind,
+                f"if len(NA_ROWS) >= {_ARC_BUFFER}: st.arc_flush()"]
 
     def _arc_plane_body(self, others: list[str], axes: list[tuple[int, int]], plane: int) -> list[str]:
         """The code of an arc in ``plane`` after its checks: its rows and its box, or a decline (the machine
@@ -1620,23 +1645,21 @@ class _Pass:
         set_axes = {i for _k, i in axes}
         return [f"C{i}.append(x{i})" if i in set_axes else f"C{i}.append(pos[{i}])" for i in range(len(self.axes))]
 
-    def _motion_body(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
+    def _motion_body(self, others: list[str], axes: list[tuple[int, int]], code: int | None = None) -> list[str]:
         """The code of a block's motion: a straight move, or (with I, J, K or R) an arc whose box
-        :meth:`_arc_body` adds, in the plane the program has set (a branch per plane)."""
+        :meth:`_arc_body` adds, in the plane the program has set (a branch per plane).  ``code``: the block's
+        own G0-G3 (None: the modal one, ``st.motion``), whose tests of the mode are decided here (lathe40: a
+        tenth of a straight move's code)."""
         arc = [x for x in others if x in "IJKR"]
-        body = ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')"]
-        if not arc:
-            body += ["if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
-                     "elif mode: raise D('an arc without I, J, K or R')"]
-        else:
+        if arc:
             if "R" in arc and len(arc) > 1:
                 raise Declined("R and I, J or K in one arc")
             if any(self.axes[i] not in "XYZ" for _k, i in axes):
                 raise Declined("an arc on axes other than X, Y and Z")
-            body += ["if mode < 2 or not st.feed > 0.0: "
-                     "raise D('I, J, K or R without G2 or G3, or without a positive feed')",
-                     *(["if CS.busy: raise D('an arc under cutter compensation or just after its G40')"]
-                       if self.cc is not None else [])]
+        body = _mode_checks(code, bool(arc))
+        if arc:
+            if self.cc is not None:
+                body.append("if CS.busy: raise D('an arc under cutter compensation or just after its G40')")
             if self.diameter:  # a G91 arc where X may be a diameter (.double_lathe): the full path's
                 body.append("if st.inc or st.chained: raise D('an arc in G91, or on a G91 chain, where X may be a "
                             "diameter')")
@@ -1649,9 +1672,10 @@ class _Pass:
             body += ["else:", "    raise D('an arc before the program sets the plane')"]
         else:
             moved = tuple(i for _k, i in axes)
+            rapids = ["if not mode: st.rapids += 1"] if code is None else ["st.rapids += 1"] if code == 0 else []
             straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
                         *self._straight_ends(axes), *self._kept_words(axes), *self._appends(axes), "n = len(C0)",
-                        f"if n >= {self.rows}: st.full()", "if not mode: st.rapids += 1"]
+                        f"if n >= {self.rows}: st.full()", *rapids]
             return body + (straight if self.cc is None else straight_code(axes, straight))
         body.append(f"if n >= {self.rows}: st.full()")
         return body
@@ -1669,6 +1693,29 @@ def _g64_q(groups: dict[str, int], others: list[str], axes: bool) -> bool:
     """Is a block's Q value G64's naive-CAM tolerance: ``G64 P`` in a block without axis words or a motion
     code (so no cycle takes the Q, nor the P: :func:`~.double_cycles.takes_q`, ``takes_p``)."""
     return groups.get("path") == 64 and "P" in others and not axes and "motion" not in groups
+
+
+#: The tests of the motion mode before a motion (:func:`_mode_checks`): a straight move's, an arc's.
+_STRAIGHT_MODE = ("if mode == 1:", "    if not st.feed > 0.0: raise D('G1 without a positive feed')",
+                  "elif mode: raise D('an arc without I, J, K or R')")
+_ARC_MODE = ("if mode < 2 or not st.feed > 0.0: raise D('I, J, K or R without G2 or G3, or without a positive feed')",)
+
+
+def _mode_checks(code: int | None, arc: bool) -> list[str]:
+    """The code that sets ``mode`` and tests it before a motion (an arc: ``arc``), as ``st.motion`` at run time
+    (``code`` None) or the block's own code (0-3; ``st.motion`` is then that code: the block set it, and no
+    cycle runs in its block), each test decided as it would be at run time: the same declines, no test left
+    that cannot fail."""
+    if code is None:
+        return ["mode = st.motion", "if mode is None: raise D('axis words without a motion mode')",
+                *(_ARC_MODE if arc else _STRAIGHT_MODE)]
+    body = [f"mode = {code}"]
+    if arc:
+        return body + ([_ARC_MODE[0].replace("mode < 2 or ", "")] if code >= 2 else
+                       ["raise D('I, J, K or R without G2 or G3, or without a positive feed')"])
+    if code == 1:
+        return body + [_STRAIGHT_MODE[1].strip()]
+    return body + (["raise D('an arc without I, J, K or R')"] if code else [])
 
 
 def _groups(gs: list[int]) -> dict[str, int]:
