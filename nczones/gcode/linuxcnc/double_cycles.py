@@ -31,8 +31,9 @@ Why the rows hold
 In G90 every row is a machine coordinate the pass computes as it computes a G90 move's: a word's double plus
 the offset's double (the hole's X and Y, R, the bottom), or a copy of the double of a row before it (where the
 tool stands, the initial level); so the module's bound of :mod:`.doubles` holds for each (a copy's bound is
-its own row's, no more than the widening of any box that holds it).  A G90 cycle while a G91 chain is open
-declines.  In G91 the rows are sums of doubles: the hole's ``fl(x + w)`` on every repeat, R's ``fl(R' + il')``,
+its own row's, no more than the widening of any box that holds it).  While a G91 chain is open a G90 cycle's
+rows are G90 ones or copies of the chain's (where the tool stands, the initial level): the chain's error,
+kept, bounds them (the widening adds it to the module's bound).  In G91 the rows are sums of doubles: the hole's ``fl(x + w)`` on every repeat, R's ``fl(R' + il')``,
 the bottom's ``fl(r + Z')``: each is a step of a G91 chain, whose error the pass bounds as a G91 move's
 (:meth:`Cycles._increment`, :meth:`Cycles._relative`; the chain's ``st.err``, added to the widening by ``xerr``,
 set before the rows it bounds are added).  G73's and G83's peck rows: ``fl(R' - fl(k Q'))`` drifts from the
@@ -56,7 +57,7 @@ different exact values: ``R0.30000000000000001`` then ``R0.3``, where the full p
 two rapids).
 
 Declined (besides what :mod:`.doubles` declines): a cycle before the program sets G98 or G99 or the plane
-(the full path notes the assumed mode), in G90 with a G91 chain open, G73 and G83 in G91 (LinuxCNC counts the
+(the full path notes the assumed mode), G73 and G83 in G91 (LinuxCNC counts the
 pecks from a double of the initial level in program coordinates, which the pass does not have), in G20 or on
 a lathe (its words here are a mill's millimetres: whatever of G20 and lathes the pass takes, its cycles
 decline), without a positive feed, without R or the bottom the first time, an L that is not a whole number
@@ -285,8 +286,6 @@ class Cycles:
         if names is None or self.retract is None or st.unset:
             raise self.declined("a canned cycle before the program sets the plane, its retract mode, units, distance "
                            "mode and work offset")
-        if st.chained and not st.inc:
-            raise self.declined("a canned cycle in G90 before G90 moves set every G91 axis")
         if st.inc and mode in _PECKS:  # (LinuxCNC counts the pecks from the initial level's program double)
             raise self.declined("a peck cycle in G91")
         if self.lathe or getattr(st, "inch", False):  # (the words here are millimetres of a mill's axes)
@@ -369,6 +368,8 @@ class Cycles:
             r, cc = self._relative((vr, rtok), z, cur, ic)
         else:
             r, cc = (vr + off[ic], (rtok, id(off)), 0.0), (z + off[ic], self._fresh(), 0.0)
+            if st.chained and (cur[2] or self.il[2]):  # (the levels of a G91 chain: their rows keep its error)
+                self._chain(ic, max(cur[2], self.il[2]))
         if self.below(r, cc):
             raise self.declined("a canned cycle's R below its bottom")
         clear, cur = self._up_to_r(r, cur, axes)

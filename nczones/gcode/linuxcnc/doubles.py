@@ -90,12 +90,12 @@ start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only a
 without G2/G3, H without G43, G43 without H or with H0.
 
 Canned cycles (:mod:`.double_cycles`): G73, G81-G86 and G89 (``P`` above 0; ``Q`` above 0: a Q in a line
-without an M word is a value, G73's and G83's alone) with L repeats, in G90 (no G91 chain open) and G91 (but
-G73 and G83), in the plane the program has set (G84 in G17), after the program set G98 or G99 (not in G20 nor
-on a lathe; G84 after M3, G86 with the spindle turning: the pass follows M3, M4, M5 and M6's stop), one row per
-motion of the full path's ``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where
-the doubles decide the exact comparison (a closer pair, an offset or plane change while a cycle is modal, R
-below the bottom decline); the peck rows widened by their drift, G91 rows by their chain's error (``xerr``).
+without an M word is a value, G73's and G83's alone) with L repeats, in G90 and G91 (but G73 and G83), in the
+plane the program has set (G84 in G17), after the program set G98 or G99 (not in G20 nor on a lathe; G84 after
+M3, G86 with the spindle turning: the pass follows M3, M4, M5 and M6's stop), one row per motion of the full
+path's ``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where the doubles
+decide the exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the
+bottom decline); the peck rows widened by their drift, G91 rows by their chain's error (``xerr``).
 
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
 layout, the line's literals cut out by the layout's slices, nothing compiled per layout: a line of letter-number
