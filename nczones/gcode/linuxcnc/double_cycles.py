@@ -489,35 +489,48 @@ class Cycles:
             _row(st, axes, aa, bb, depth + _BACK_OFF, True)  # back down, backed off
 
     def _template(self, r: tuple, cc: float, clear: tuple, axes: tuple[int, int, int]) -> tuple | None:
-        """What the next block makes when it is a hole line (X and Y words only) of G81 or G82 in G90 in the
-        state this one leaves (:meth:`_steady`): the tool at the clear level, the same initial level, R, bottom,
-        dwell, retract mode, offsets and plane.  Its branches (:meth:`_position`) are then these: "up to R"
-        where ``il < R``; the tool (at the clear level, the same token) above R exactly where the clear level
-        is, so the rows are the position at the clear level and, where it is above R, the rapid to R.  None: a
-        comparison too close to call (the next block then runs :meth:`_general`, which declines), or a block
-        of another kind."""
+        """What the next block makes when it is a hole line (X and Y words only) in G90 of a cycle without pecks
+        in the state this one leaves (:meth:`_steady`): the tool at the clear level, the same initial level, R,
+        bottom, dwell, retract mode, offsets and plane.  Its branches (:meth:`_position`, :meth:`_hole`) are then
+        these: "up to R" where ``il < R``; the tool (at the clear level, the same token) above R exactly where the
+        clear level is, so the rows are the position at the clear level and, where it is above R, the rapid to R;
+        then the hole's rows (:meth:`_hole`: the levels of the rows after the position, ``zs``, the dwell the
+        second).  None: a comparison too close to call (the next block then runs :meth:`_general`, which
+        declines), or a block of another kind."""
         st = self.st
-        if st.motion not in (81, 82) or st.slow:
+        mode = st.motion
+        if mode in _PECKS or st.slow:
             return None
+        _peck, dwell, out, _spin = MODES[mode]
         try:
             up = self.below(self.il, r)  # type: ignore[arg-type]
             to_r = self.below(r, clear)
         except self.declined:
             return None
-        return (st.motion, st.plane, self.retract, st.off, axes, (r[0], cc, clear[0]), up, to_r, st.motion == 82)
+        zs = [cc, cc] if dwell else [cc]
+        back = out == RAPID_OUT
+        if out == FEED_TO_R:
+            zs.append(r[0])
+            back = to_r  # (the rapid to the clear level where it is above R)
+            if back:
+                zs.append(clear[0])
+        else:
+            zs.append(clear[0])
+        rapids = 1 + up + to_r + back
+        return (mode, st.plane, self.retract, st.off, axes, (r[0], clear[0]), up, to_r, bool(dwell), tuple(zs), rapids)
 
     def _steady(self, pairs: tuple[tuple[int, float], ...]) -> bool:
-        """A hole line (no R, bottom, P or L) in the state the last cycle block left (:meth:`_template`), on a
+        """A hole line (no R, bottom, P, Q or L) in the state the last cycle block left (:meth:`_template`), on a
         machine of the plane's three axes, not at a window's end: its rows from the template; False (nothing
         done): not such a line."""
         st = self.st
-        mode, plane, retract, off, (ia, ib, ic), (r, cc, clear), up, to_r, dwell = self.steady  # type: ignore[misc]
+        mode, plane, retract, off, (ia, ib, ic), (r, clear), up, to_r, dwell, zs, rapids = self.steady  # type: ignore[misc]
         cols = st.columns
         n = len(cols[0])
         if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
-                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.slow or n + 6 >= st.rows \
-                or len(cols) != 3 or getattr(st, "inch", False):
-            return False
+                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.slow or n + 8 >= st.rows \
+                or len(cols) != 3 or getattr(st, "inch", False) or (mode in (84, 86) and st.spindle != 1):
+            return False  # (G84 and G86 after M3: else _general checks the spindle, and declines G84's)
         pos = st.pos
         aa, bb = pos[ia], pos[ib]
         for i, v in pairs:
@@ -533,13 +546,12 @@ class Cycles:
         ca.append(aa), cb.append(bb), cz.append(clear)
         if to_r:
             ca.append(aa), cb.append(bb), cz.append(r)
-        ca.append(aa), cb.append(bb), cz.append(cc)
+        for z in zs:
+            ca.append(aa), cb.append(bb), cz.append(z)
         if dwell:
-            ca.append(aa), cb.append(bb), cz.append(cc)
-            st.dwelt(len(cz) - 1)
-        ca.append(aa), cb.append(bb), cz.append(clear)
-        st.rapids += 2 + up + to_r
-        pos[ia], pos[ib], pos[ic] = aa, bb, clear
+            st.dwelt(len(cz) - len(zs) + 1)  # (the second of zs)
+        st.rapids += rapids
+        pos[ia], pos[ib], pos[ic] = aa, bb, zs[-1]
         self.mark = st.row0 + len(cz) - 1 - st.dwells
         return True
 
