@@ -334,8 +334,7 @@ class Cycles:
     def run(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
             text: str | None, vq: float | None = None, vl: float | None = None) -> bool:
         """A cycle block (the plan's ``CY``): its rows (the module's docstring); False (the program goes on)."""
-        if vr is None and vp is None and vq is None and vl is None and self.steady is not None \
-                and self._steady(pairs):
+        if vr is None and vp is None and vq is None and self.steady is not None and self._steady(pairs, vl):
             return False
         self._general(pairs, vr, vp, text, vq, vl)
         return False
@@ -375,6 +374,11 @@ class Cycles:
         clear, cur = self._up_to_r(r, cur, axes)
         aa, bb = pos[ia], pos[ib]
         for rep in range(reps):
+            if rep == 1 and mode not in _PECKS and len(st.columns) == 3 \
+                    and len(st.columns[0]) + 8 * reps < st.rows:  # (a mill's three axes, not at a window's end)
+                steps = (words.get(ia), words.get(ib)) if st.inc else (None, None)
+                self._repeat_rows(reps - 1, (aa, bb), steps, self._sequence(r, cc[0], clear), axes)
+                break
             if st.inc:
                 aa, bb = self._increment(ia, words.get(ia), aa), self._increment(ib, words.get(ib), bb)
             else:
@@ -386,7 +390,65 @@ class Cycles:
             self._hole(aa, bb, cc[0], (r, clear), mode, axes)
         self.mark, self.pos_tok = _moves(st), clear[1]
         self.r, self.r_tok, self.z, self.last = vr, rtok, z, mode
-        self.steady = self._template(r, cc[0], clear, axes) if reps == 1 else None
+        self.steady = self._template(r, cc[0], clear, axes)
+
+    def _sequence(self, r: tuple, cc: float, clear: tuple) -> tuple[list[float], int, int]:
+        """The levels of a repeat's rows after its first (and of every repeat of a hole line, :meth:`_steady`),
+        where the tool starts at the clear level: the position at the clear level and, where it is above R, the
+        rapid to R (:meth:`_position`), then the hole's (:meth:`_hole`); the index of the dwell's row (-1: none)
+        and the repeat's rapids."""
+        _peck, dwell, out, _spin = MODES[self.st.motion]
+        zs = [clear[0], r[0]] if self.below(r, clear) else [clear[0]]
+        at = len(zs) + 1 if dwell else -1  # (the second after the position's)
+        rapids = len(zs)
+        zs += [cc, cc] if dwell else [cc]
+        if out == FEED_TO_R:
+            zs.append(r[0])
+            if self.below(r, clear):
+                zs.append(clear[0])
+                rapids += 1
+        else:
+            zs.append(clear[0])
+            rapids += out == RAPID_OUT
+        return zs, at, rapids
+
+    def _repeat_rows(self, n: int, at: tuple[float, float], steps: tuple, seq: tuple, axes: tuple[int, int, int]) -> None:
+        """``n`` repeats' rows at once, from the hole ``at`` plus the G91 increments ``steps`` (None: the same
+        hole) before each, the levels ``seq`` (:meth:`_sequence`), on a machine of the plane's three axes, the
+        window not full before the last (the same rows :meth:`_increment`, :meth:`_position` and :meth:`_hole`
+        make).  The holes ``fl(x + w)`` of a G91 axis are a chain of ``n`` steps from ``x``: each step adds at
+        most ``(|w| + |y|) 2**-52`` rounded up (:meth:`_increment`) and ``|y|`` is at most the larger of the first
+        and last hole's (the doubles move one way: ``fl`` is monotone), so ``e + n (|w| + max |y|) 2**-52``, each
+        float rounded up (a rounding up adds at least the least subnormal, above each step's half of it), bounds
+        every hole's error (``e``: the chain's, or a G90 row's bound); it is set before a window can be handed
+        over."""
+        st = self.st
+        ia, ib, ic = axes
+        zs, dwell, rapids = seq
+        aa, bb = at
+        wa, wb = steps
+        cols = st.columns
+        ca, cb, cz = cols[ia], cols[ib], cols[ic]
+        m = len(zs)
+        for i, w, x0 in ((ia, wa, aa), (ib, wb, bb)):
+            if w is not None:
+                e = st.err[i]
+                x1 = x0 + n * w  # (a bound of the last hole's magnitude: doubled, and rounded up below)
+                self._chain(i, _up((e if e is not None else self._g90(x0, i))
+                                   + _up(n * _up((abs(w) + 2.0 * max(abs(x0), abs(x1)) + 1.0) * _EPS2))))
+        for _ in range(n):
+            if wa is not None:
+                aa += wa
+            if wb is not None:
+                bb += wb
+            ca.extend((aa,) * m)
+            cb.extend((bb,) * m)
+            cz.extend(zs)
+            if dwell >= 0:
+                st.dwelt(len(cz) - m + dwell)
+        st.rapids += n * rapids
+        pos = st.pos
+        pos[ia], pos[ib], pos[ic] = aa, bb, zs[-1]
 
     def _relative(self, rw: tuple, z: float, cur: tuple, ic: int) -> tuple[tuple, tuple]:
         """G91's levels: R ``fl(R' + il')`` above the initial level, the bottom ``fl(r + Z')`` below R (the full
@@ -489,70 +551,63 @@ class Cycles:
             _row(st, axes, aa, bb, depth + _BACK_OFF, True)  # back down, backed off
 
     def _template(self, r: tuple, cc: float, clear: tuple, axes: tuple[int, int, int]) -> tuple | None:
-        """What the next block makes when it is a hole line (X and Y words only) in G90 of a cycle without pecks
-        in the state this one leaves (:meth:`_steady`): the tool at the clear level, the same initial level, R,
-        bottom, dwell, retract mode, offsets and plane.  Its branches (:meth:`_position`, :meth:`_hole`) are then
-        these: "up to R" where ``il < R``; the tool (at the clear level, the same token) above R exactly where the
-        clear level is, so the rows are the position at the clear level and, where it is above R, the rapid to R;
-        then the hole's rows (:meth:`_hole`: the levels of the rows after the position, ``zs``, the dwell the
-        second).  None: a comparison too close to call (the next block then runs :meth:`_general`, which
-        declines), or a block of another kind."""
+        """What the next block makes when it is a hole line (X and Y words, L) of a cycle without pecks in the
+        state this one leaves (:meth:`_steady`): the tool at the clear level, the same initial level, R, bottom,
+        dwell, retract mode, distance mode, offsets and plane.  Its branches are then these: "up to R" where ``il
+        < R``; the tool (at the clear level, the same token) above R exactly where the clear level is, so every
+        repeat's rows are the same levels (:meth:`_sequence`).  In G91 R and the bottom are the same doubles
+        (the same initial level, R and bottom words): the normal axis's chain error bounds them already.  None: a
+        comparison too close to call (the next block then runs :meth:`_general`, which declines), or a block of
+        another kind."""
         st = self.st
         mode = st.motion
-        if mode in _PECKS or st.slow:
+        if mode in _PECKS or (st.slow and not st.inc) or getattr(st, "inch", False):
             return None
-        _peck, dwell, out, _spin = MODES[mode]
         try:
             up = self.below(self.il, r)  # type: ignore[arg-type]
-            to_r = self.below(r, clear)
+            seq = self._sequence(r, cc, clear)
         except self.declined:
             return None
-        zs = [cc, cc] if dwell else [cc]
-        back = out == RAPID_OUT
-        if out == FEED_TO_R:
-            zs.append(r[0])
-            back = to_r  # (the rapid to the clear level where it is above R)
-            if back:
-                zs.append(clear[0])
-        else:
-            zs.append(clear[0])
-        rapids = 1 + up + to_r + back
-        return (mode, st.plane, self.retract, st.off, axes, (r[0], clear[0]), up, to_r, bool(dwell), tuple(zs), rapids)
+        return (mode, st.plane, self.retract, st.off, axes, st.inc, r[0], up, seq)
 
-    def _steady(self, pairs: tuple[tuple[int, float], ...]) -> bool:
-        """A hole line (no R, bottom, P, Q or L) in the state the last cycle block left (:meth:`_template`), on a
+    def _steady(self, pairs: tuple[tuple[int, float], ...], vl: float | None) -> bool:
+        """A hole line (no R, bottom, P or Q) in the state the last cycle block left (:meth:`_template`), on a
         machine of the plane's three axes, not at a window's end: its rows from the template; False (nothing
         done): not such a line."""
         st = self.st
-        mode, plane, retract, off, (ia, ib, ic), (r, clear), up, to_r, dwell, zs, rapids = self.steady  # type: ignore[misc]
+        mode, plane, retract, off, axes, inc, r, up, seq = self.steady  # type: ignore[misc]
         cols = st.columns
         n = len(cols[0])
         if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
-                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.slow or n + 8 >= st.rows \
-                or len(cols) != 3 or getattr(st, "inch", False) or (mode in (84, 86) and st.spindle != 1):
+                or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.inc != inc \
+                or (st.slow and not inc) or len(cols) != 3 or getattr(st, "inch", False) \
+                or (mode in (84, 86) and st.spindle != 1):
             return False  # (G84 and G86 after M3: else _general checks the spindle, and declines G84's)
+        try:
+            reps = repeats(vl, st.max_iterations)
+        except ValueError as exc:
+            raise self.declined(str(exc)) from None
+        if n + 1 + 6 * reps >= st.rows:
+            return False
+        ia, ib, _ic = axes
         pos = st.pos
         aa, bb = pos[ia], pos[ib]
+        wa = wb = None
         for i, v in pairs:
             if i == ia:
-                aa = v + off[ia]
+                wa = v
             elif i == ib:
-                bb = v + off[ib]
+                wb = v
             else:
                 return False
-        ca, cb, cz = cols[ia], cols[ib], cols[ic]
         if up:  # up to R where the tool stands
-            ca.append(pos[ia]), cb.append(pos[ib]), cz.append(r)
-        ca.append(aa), cb.append(bb), cz.append(clear)
-        if to_r:
-            ca.append(aa), cb.append(bb), cz.append(r)
-        for z in zs:
-            ca.append(aa), cb.append(bb), cz.append(z)
-        if dwell:
-            st.dwelt(len(cz) - len(zs) + 1)  # (the second of zs)
-        st.rapids += rapids
-        pos[ia], pos[ib], pos[ic] = aa, bb, zs[-1]
-        self.mark = st.row0 + len(cz) - 1 - st.dwells
+            _row(st, axes, aa, bb, r, True)
+        if inc:
+            self._repeat_rows(reps, (aa, bb), (wa, wb), seq, axes)
+        else:
+            hole = (aa if wa is None else wa + off[ia], bb if wb is None else wb + off[ib])
+            self._repeat_rows(reps, hole, (None, None), seq, axes)
+        self.mark = st.row0 + len(cols[0]) - 1 - st.dwells
         return True
 
     def _up_to_r(self, r: tuple, cur: tuple, axes: tuple[int, int, int]) -> tuple[tuple, tuple]:
