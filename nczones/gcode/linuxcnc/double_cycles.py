@@ -226,7 +226,7 @@ class Cycles:
 
     __slots__ = ("st", "declined", "retract", "last", "il", "il_off", "il_axis", "r", "r_tok", "z", "p", "mark",
                  "pos_tok", "tokens", "steady",
-                 "lathe", "q", "peck_err")
+                 "lathe", "q", "peck_err", "pecks")
 
     def __init__(self, st: Any, declined: type[Exception], machine: Any):
         self.st = st
@@ -249,6 +249,7 @@ class Cycles:
         #: the largest bound of a peck row's error (mm; 0.0: none yet), the pass's ``xerr`` of the normal
         #: axis from the first peck on (:meth:`_pecks`)
         self.peck_err = 0.0
+        self.pecks = 0  # the pecks of the last peck block's holes (:meth:`_pecks`: its rows, :meth:`_sequence`)
         self.end()
 
     def end(self) -> None:
@@ -374,11 +375,12 @@ class Cycles:
         clear, cur = self._up_to_r(r, cur, axes)
         aa, bb = pos[ia], pos[ib]
         for rep in range(reps):
-            if rep == 1 and mode not in _PECKS and len(st.columns) == 3 \
-                    and len(st.columns[0]) + 8 * reps < st.rows:  # (a mill's three axes, not at a window's end)
-                steps = (words.get(ia), words.get(ib)) if st.inc else (None, None)
-                self._repeat_rows(reps - 1, (aa, bb), steps, self._sequence(r, cc[0], clear), axes)
-                break
+            if rep == 1 and len(st.columns) == 3:  # (a mill's three axes, not at a window's end)
+                seq = self._sequence(r, cc[0], clear)
+                if len(st.columns[0]) + len(seq[0]) * reps < st.rows:
+                    steps = (words.get(ia), words.get(ib)) if st.inc else (None, None)
+                    self._repeat_rows(reps - 1, (aa, bb), steps, seq, axes)
+                    break
             if st.inc:
                 aa, bb = self._increment(ia, words.get(ia), aa), self._increment(ib, words.get(ib), bb)
             else:
@@ -399,8 +401,15 @@ class Cycles:
         and the repeat's rapids."""
         _peck, dwell, out, _spin = MODES[self.st.motion]
         zs = [clear[0], r[0]] if self.below(r, clear) else [clear[0]]
-        at = len(zs) + 1 if dwell else -1  # (the second after the position's)
         rapids = len(zs)
+        if _peck:  # (the pecks' rows, the same doubles as _pecks's: its count, kept in ``pecks``)
+            rr, q, out83 = r[0], self.q, _peck == 83
+            assert q is not None
+            for k in range(1, self.pecks + 1):
+                depth = rr - k * q
+                zs += (depth, rr, depth + _BACK_OFF) if out83 else (depth, depth + _BACK_OFF)
+            rapids += (1 + out83) * self.pecks
+        at = len(zs) + 1 if dwell else -1  # (the second after the position's)
         zs += [cc, cc] if dwell else [cc]
         if out == FEED_TO_R:
             zs.append(r[0])
@@ -425,6 +434,8 @@ class Cycles:
         st = self.st
         ia, ib, ic = axes
         zs, dwell, rapids = seq
+        if self.peck_err > st.xerr[ic] and st.motion in _PECKS:  # (a window handed over since: full())
+            st.xerr[ic] = self.peck_err
         aa, bb = at
         wa, wb = steps
         cols = st.columns
@@ -532,6 +543,7 @@ class Cycles:
             if n >= st.max_iterations:  # the full path's too_many: unknown past its bound
                 raise self.declined("a peck cycle at its iteration bound")
             d -= q
+        self.pecks = n
         ic = axes[2]
         top = abs(r) + abs(r - n * q) + _BACK_OFF
         err = math.nextafter((2.0 * abs(r) + st.offb2[ic] + 2.0 * n * q + 2.0 * top + 1.0) * 2.0**-51, math.inf)
@@ -551,17 +563,17 @@ class Cycles:
             _row(st, axes, aa, bb, depth + _BACK_OFF, True)  # back down, backed off
 
     def _template(self, r: tuple, cc: float, clear: tuple, axes: tuple[int, int, int]) -> tuple | None:
-        """What the next block makes when it is a hole line (X and Y words, L) of a cycle without pecks in the
-        state this one leaves (:meth:`_steady`): the tool at the clear level, the same initial level, R, bottom,
-        dwell, retract mode, distance mode, offsets and plane.  Its branches are then these: "up to R" where ``il
-        < R``; the tool (at the clear level, the same token) above R exactly where the clear level is, so every
-        repeat's rows are the same levels (:meth:`_sequence`).  In G91 R and the bottom are the same doubles
-        (the same initial level, R and bottom words): the normal axis's chain error bounds them already.  None: a
-        comparison too close to call (the next block then runs :meth:`_general`, which declines), or a block of
-        another kind."""
+        """What the next block makes when it is a hole line (X and Y words, L) in the state this one leaves
+        (:meth:`_steady`): the tool at the clear level, the same initial level, R, bottom, dwell, peck, retract
+        mode, distance mode, offsets and plane.  Its branches are then these: "up to R" where ``il < R``; the tool
+        (at the clear level, the same token) above R exactly where the clear level is, so every repeat's rows are
+        the same levels (:meth:`_sequence`; the pecks as many: LinuxCNC counts them from the same R, bottom and
+        Q).  In G91 R and the bottom are the same doubles (the same initial level, R and bottom words): the normal
+        axis's chain error bounds them already.  None: a comparison too close to call (the next block then runs
+        :meth:`_general`, which declines), or a block in G20 or in G90 with a G91 chain open."""
         st = self.st
         mode = st.motion
-        if mode in _PECKS or (st.slow and not st.inc) or getattr(st, "inch", False):
+        if (st.slow and not st.inc) or getattr(st, "inch", False):
             return None
         try:
             up = self.below(self.il, r)  # type: ignore[arg-type]
@@ -587,7 +599,7 @@ class Cycles:
             reps = repeats(vl, st.max_iterations)
         except ValueError as exc:
             raise self.declined(str(exc)) from None
-        if n + 1 + 6 * reps >= st.rows:
+        if n + 1 + len(seq[0]) * reps >= st.rows:
             return False
         ia, ib, _ic = axes
         pos = st.pos
