@@ -143,14 +143,12 @@ DECLINED = {
     "G64 Q in a peck cycle": ("G21 G90 G17 G54 F100\n#1 = 0\nG0 Z5\nG99 G83 X1 Y1 Z-1 R1 Q1\nG64 X2 Q0.1\n",
                               "word Q"),
     "pecks past the bound": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G83 X1 Y1 Z-100 R1 Q0.1\n", "bound"),
-    "an offset change": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\nG55 X2\n", "offset change"),
+    "an offset change": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\nG55 X2\n", "offset or units change"),
     "R equal to the initial level, written apart": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z2\nG98 G81 X1 Y1 Z-1 R2\n",
                                                      "too close"),
     # the same double, an exact value a hair below the last R: the full path's tool is above R, two rapids
     "R a hair below the last": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R0.30000000000000001\n"
                                 "X2 R0.3\n", "too close"),
-    # (the pass's cycles take a mill's millimetres: in G20 they decline whatever the pass takes of G20)
-    "G20": ("G20 G90 G17 G54 F10\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\n", "G20"),
     "P in G1": ("G21 G90 G17 G54 F100\n#1 = 1\nG1 X1 Y1 Z-1\nX2 P1\n", "word P"),
     "I in a cycle": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\nX2 I1\n", "I, J or K"),
 }

@@ -1,6 +1,6 @@
 """The double pass's canned cycles beyond G81-G83 in G90 (cyc40, issue 36; nczones/gcode/linuxcnc/double_cycles.py):
 L repeats, cycles in G91 (R above the initial level, the bottom below R, the hole's increments added on every
-repeat), G73, G84, G85, G86 and G89, the spindle G84 and G86 check.
+repeat) and G20, G73, G84, G85, G86 and G89, the spindle G84 and G86 check.
 
 The pass's invariant (``check_against_full``: the full path runs the program with no note, as many motions,
 rapids and dwells, every motion in the pass's box, corners blended where the full path blends them) on generated
@@ -75,7 +75,8 @@ def cycle_block(draw, label: int) -> list[str]:
 @st.composite
 def drilling_programs(draw) -> str:
     head = draw(st.sampled_from(["G21 G90 G17 G54 F300", "G21 G90 G17 G55 F100 G0", "G21 G90 G17 G54 G43 H1 F800",
-                                 "G21 G90 G17 G54 F300 G64", "G21 G90 G17 G54 G61 F300"]))
+                                 "G21 G90 G17 G54 F300 G64", "G21 G90 G17 G54 G61 F300", "G20 G90 G17 G54 F30",
+                                 "G20 G90 G17 G55 F10 G64", "G20 G90 G17 G54 G43 H1 F30"]))
     start = draw(st.sampled_from(["G0 Z20", "G0 X0 Y0 Z20", "G0 Z2", "G0 Z[#1 + 1]", "G0 X1 Y1 Z25", "G0 Z0.3"]))
     body = [line for k in range(draw(st.integers(1, 3))) for line in draw(cycle_block(k + 1))]
     lines = [head, "#1 = 1.5", "#2 = 0.7", start, *body, "M30"]
@@ -139,6 +140,8 @@ ACCEPTED = {
                               "G0 X0 Y0 Z5\nG98 G81 X1 Y1 R2 Z-1\nM30\n",
     "a G90 cycle with a G91 chain open": "G21 G90 G17 G54 F200\nG0 X0 Y0 Z5\nG91 G98 G81 X10 R-3 Z-5 L4\n"
                                          "G90 Y3\nX1 Z-2 R3\nG91 X0.5 L2\nG90 G83 Y5 R2 Z-1 Q0.5\nM30\n",
+    "G20, G91 and pecks": "G20 G90 G17 G54 F10\n#1 = 0.1\nG0 X0 Y0 Z2\nG98 G81 X1 Y1 Z-1 R1\nG91 X[#1] L3\n"
+                          "G90 G80\nG0 Z2\nG99 G83 X2 Y1 Z-0.5 R0.1 Q0.07\nX3 L2\nG91 G85 Y0.3 R-0.2 Z-0.4 L2\nM30\n",
     "G91 in G19": "G21 G90 G19 G54 F200\nG0 X5 Y0 Z0\nG91 G99 G81 Y2.5 X-6 R-1 L4\nG90 G80\nM30\n",
 }
 
@@ -162,6 +165,8 @@ DECLINED = {
     "G84 in G18": ("G21 G90 G18 G54 F100\nM3\nG0 Y5\nG99 G84 Z1 Y-1 R1\n", "G84 outside G17"),
     "G86 without P": ("G21 G90 G17 G54 F100\nM3\nG0 Z5\nG99 G86 X1 Z-1 R1\n", "without P"),
     "Q with G85": ("G21 G90 G17 G54 F100\nG0 Z5\nG99 G85 X1 Z-1 R1 Q1\n", "word Q"),
+    "a units change while a cycle is modal": ("G21 G90 G17 G54 F100\nG0 Z5\nG99 G81 X1 Z-1 R1\nG20 X2\n",
+                                              "units change"),
     "G91 Z0": ("G21 G90 G17 G54 F100\nG0 Z5\nG91 G99 G81 X1 Z0 R-1\n", "too close"),
 }
 

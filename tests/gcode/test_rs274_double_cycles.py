@@ -40,6 +40,8 @@ PROGRAMS = {
                          "G98 Y2 Z-1.1\nG80\nM30\n",
     "G84 and G86 after M3": "G21 G90 G17 G54 F200\n#1 = 2\nM3 S500\nG0 Z25\nG98 G84 X1 Y1 Z-2 R[#1]\nX[#1 * 3]\n"
                             "G99 G86 X0 Z-1 R3 P0.5\nG80\nM30\n",
+    "G20: G90, G91 with L, pecks": "G20 G90 G17 G54 F10\n#1 = 0.1\nG0 X0 Y0 Z2\nG98 G81 X1 Y1 Z-1 R1\nG91 X[#1] L3\n"
+                                   "G90 G80\nG0 Z2\nG99 G83 X2 Y1 Z-0.5 R0.1 Q0.07\nX3 L2\nG98 G73 Y2 R0.1 Z-0.5 Q[#1]\nG80\nM30\n",
     # (G85 where the clear level is R: LinuxCNC's rapid there moves nothing, and the full path drops it)
     "G85 and G89": "G21 G90 G17 G54 F200\n#1 = 2\nG0 Z25\nG98 G85 X1 Y1 Z-2 R[#1]\nX[#1 * 3]\nG91 X2 R-20 Z-5 L2\n"
                    "G90 G99 G89 X0 Z-1 R3 P0.5\nG98 Y[#1]\nG80\nM30\n",

@@ -36,7 +36,10 @@ rows are G90 ones or copies of the chain's (where the tool stands, the initial l
 kept, bounds them (the widening adds it to the module's bound).  In G91 the rows are sums of doubles: the hole's ``fl(x + w)`` on every repeat, R's ``fl(R' + il')``,
 the bottom's ``fl(r + Z')``: each is a step of a G91 chain, whose error the pass bounds as a G91 move's
 (:meth:`Cycles._increment`, :meth:`Cycles._relative`; the chain's ``st.err``, added to the widening by ``xerr``,
-set before the rows it bounds are added).  G73's and G83's peck rows: ``fl(R' - fl(k Q'))`` drifts from the
+set before the rows it bounds are added).  In G20 a word's millimetres are ``fl(w * fl(25.4))`` as a G20 move's
+(:mod:`.double_units`): a G90 row within ``3.6 (|x| + offsets) 2**-53`` of its exact value (inside the widening,
+and inside the levels' tolerance below), a G91 step adding :mod:`.double_units`' term (:meth:`Cycles._units`);
+the pecks counted in the program's inches as LinuxCNC counts them, their rows in millimetres.  G73's and G83's peck rows: ``fl(R' - fl(k Q'))`` drifts from the
 exact ``R - k Q`` by up to some ``k`` ulps of Q; :meth:`Cycles._pecks` bounds that drift and adds the bound to
 the normal axis's widening (the pass's ``xerr``, as a G91 chain's, from the first peck on: :func:`_row` sets it
 again after a window is handed over, which recomputes it from the chains alone).
@@ -58,9 +61,9 @@ two rapids).
 
 Declined (besides what :mod:`.doubles` declines): a cycle before the program sets G98 or G99 or the plane
 (the full path notes the assumed mode), G73 and G83 in G91 (LinuxCNC counts the
-pecks from a double of the initial level in program coordinates, which the pass does not have), in G20 or on
-a lathe (its words here are a mill's millimetres: whatever of G20 and lathes the pass takes, its cycles
-decline), without a positive feed, without R or the bottom the first time, an L that is not a whole number
+pecks from a double of the initial level in program coordinates, which the pass does not have), on a lathe
+(an X word may be a diameter), a units change while a cycle is modal (the full path converts the initial
+level), without a positive feed, without R or the bottom the first time, an L that is not a whole number
 (within 0.0001), below 1 or at the loop bound, a P with G73, G81, G83 or G85, a G82, G86 or G89 without a P
 the first time, a P not above 0, a G73 or G83 without a Q above 0 or with as many pecks as the loop bound, a Q
 with another cycle or a G64, G84 unless M3 turns the spindle or outside G17 (LinuxCNC then swaps its axes),
@@ -107,6 +110,8 @@ _REL = 4.5e-16
 _EPS2 = 2.0**-52
 #: (above the ``32 * 2**-1075`` a G20 row's bound has: :mod:`.double_units`)
 _TA = 2.0**-1000
+#: ``fl(25.4)``: a G20 word's double times it is its millimetres (:data:`.double_units.INCH`)
+_INCH = 25.4
 _INF = math.inf
 #: Per plane code: the indices of its first, second and normal axis names (``PLANE_AXES``: the full path's).
 _PLANES = {int(p): names for p, names in PLANE_AXES.items()}
@@ -224,7 +229,7 @@ class Cycles:
     exact value; ``error`` 0.0: the double is within the module's bound of its exact value (a G90 row), else
     ``error`` bounds its distance (a G91 one, :meth:`_relative`)."""
 
-    __slots__ = ("st", "declined", "retract", "last", "il", "il_off", "il_axis", "r", "r_tok", "z", "p", "mark",
+    __slots__ = ("st", "declined", "retract", "last", "il", "il_off", "il_axis", "il_inch", "r", "r_tok", "z", "p", "mark",
                  "pos_tok", "tokens", "steady",
                  "lathe", "q", "peck_err", "pecks")
 
@@ -259,6 +264,7 @@ class Cycles:
         self.il: tuple | None = None  # the initial level (a level: the class's docstring)
         self.il_off: Any = None
         self.il_axis = -1
+        self.il_inch = False  # the units the initial level was taken in (the full path converts it at G20/G21)
 
     def _fresh(self) -> int:
         """A token no level has: its exact value is not known to equal another's."""
@@ -289,8 +295,8 @@ class Cycles:
                            "mode and work offset")
         if st.inc and mode in _PECKS:  # (LinuxCNC counts the pecks from the initial level's program double)
             raise self.declined("a peck cycle in G91")
-        if self.lathe or getattr(st, "inch", False):  # (the words here are millimetres of a mill's axes)
-            raise self.declined("a canned cycle on a lathe or in G20")
+        if self.lathe:  # (an X word may be a diameter: G7)
+            raise self.declined("a canned cycle on a lathe")
         if not st.feed > 0.0:
             raise self.declined("a canned cycle without a positive feed")
         spin = MODES[mode][3]
@@ -353,6 +359,9 @@ class Cycles:
         first = self.last != mode
         vr, rtok, z = self._words(mode, first, words.get(ic), vr, vp, text)
         self._peck_word(mode, first, vq)
+        inch = st.inch
+        if inch:  # (millimetres: ``fl(w * fl(25.4))``, as LinuxCNC's canon, :mod:`.double_units`)
+            words = {i: w * _INCH for i, w in words.items()}
         try:
             reps = repeats(vl, st.max_iterations)
         except ValueError as exc:
@@ -361,13 +370,14 @@ class Cycles:
         err = st.err[ic]
         cur = (pos[ic], self.pos_tok if self.mark == _moves(st) else self._fresh(), err or 0.0)
         if self.il is None:
-            self.il, self.il_off, self.il_axis = cur, off, ic
-        elif self.il_axis != ic or self.il_off is not off:
-            raise self.declined("a plane or offset change while a canned cycle is modal")
+            self.il, self.il_off, self.il_axis, self.il_inch = cur, off, ic, inch
+        elif self.il_axis != ic or self.il_off is not off or self.il_inch != inch:
+            raise self.declined("a plane, offset or units change while a canned cycle is modal")
+        mr, mz = (vr * _INCH, z * _INCH) if inch else (vr, z)
         if st.inc:
-            r, cc = self._relative((vr, rtok), z, cur, ic)
+            r, cc = self._relative((mr, (rtok, inch)), mz, cur, ic)
         else:
-            r, cc = (vr + off[ic], (rtok, id(off)), 0.0), (z + off[ic], self._fresh(), 0.0)
+            r, cc = (mr + off[ic], (rtok, id(off), inch), 0.0), (mz + off[ic], self._fresh(), 0.0)
             if st.chained and (cur[2] or self.il[2]):  # (the levels of a G91 chain: their rows keep its error)
                 self._chain(ic, max(cur[2], self.il[2]))
         if self.below(r, cc):
@@ -405,6 +415,8 @@ class Cycles:
         if _peck:  # (the pecks' rows, the same doubles as _pecks's: its count, kept in ``pecks``)
             rr, q, out83 = r[0], self.q, _peck == 83
             assert q is not None
+            if self.st.inch:
+                q = q * _INCH  # (as _pecks: the same doubles)
             for k in range(1, self.pecks + 1):
                 depth = rr - k * q
                 zs += (depth, rr, depth + _BACK_OFF) if out83 else (depth, depth + _BACK_OFF)
@@ -441,12 +453,13 @@ class Cycles:
         cols = st.columns
         ca, cb, cz = cols[ia], cols[ib], cols[ic]
         m = len(zs)
+        f, t = self._units()
         for i, w, x0 in ((ia, wa, aa), (ib, wb, bb)):
             if w is not None:
                 e = st.err[i]
                 x1 = x0 + n * w  # (a bound of the last hole's magnitude: doubled, and rounded up below)
                 self._chain(i, _up((e if e is not None else self._g90(x0, i))
-                                   + _up(n * _up((abs(w) + 2.0 * max(abs(x0), abs(x1)) + 1.0) * _EPS2))))
+                                   + _up(n * _up((f * abs(w) + 2.0 * max(abs(x0), abs(x1)) + 1.0) * _EPS2 + t))))
         for _ in range(n):
             if wa is not None:
                 aa += wa
@@ -473,13 +486,19 @@ class Cycles:
         il = self.il
         assert il is not None
         ei = il[2] or self._g90(il[0], ic)
+        f, t = self._units()
         rv = vr + il[0]
-        er = _up(ei + _up((abs(vr) + abs(rv)) * _EPS2))
+        er = _up(ei + _up((f * abs(vr) + abs(rv)) * _EPS2 + t))
         cv = rv + z
-        ec = _up(er + _up((abs(z) + abs(cv)) * _EPS2))
+        ec = _up(er + _up((f * abs(z) + abs(cv)) * _EPS2 + t))
         e = max(cur[2] or self._g90(cur[0], ic), ei, er, ec)
         self._chain(ic, e)
         return (rv, ("inc", rtok, il[1]), er), (cv, self._fresh(), ec)
+
+    def _units(self) -> tuple[float, float]:
+        """The factor of a G91 step's word and the absolute term its error bound takes: ``(1, 0)`` in G21; in G20
+        ``(3, 2**-1000)`` (the step ``fl(fl(w * 25.4) + x)``: :func:`~.double_units.inch_ends`, which says why)."""
+        return (3.0, _TA) if self.st.inch else (1.0, 0.0)
 
     def _g90(self, x: float, i: int) -> float:
         """The bound of a G90 row ``x`` of axis ``i`` (:func:`~.double_units.chain_start`'s, with its G20 term)."""
@@ -505,7 +524,8 @@ class Cycles:
         e = st.err[i]
         if e is None:
             e = self._g90(x, i)
-        self._chain(i, _up(e + _up((abs(w) + abs(y)) * _EPS2)))
+        f, t = self._units()
+        self._chain(i, _up(e + _up((f * abs(w) + abs(y)) * _EPS2 + t)))
         return y
 
     def _peck_word(self, mode: int, first: bool, vq: float | None) -> None:
@@ -544,6 +564,8 @@ class Cycles:
                 raise self.declined("a peck cycle at its iteration bound")
             d -= q
         self.pecks = n
+        if st.inch:  # (the rows' peck in millimetres: within 2.52 ulps of 25.4 Q, inside the bound's 8 ulps)
+            q = q * _INCH
         ic = axes[2]
         top = abs(r) + abs(r - n * q) + _BACK_OFF
         err = math.nextafter((2.0 * abs(r) + st.offb2[ic] + 2.0 * n * q + 2.0 * top + 1.0) * 2.0**-51, math.inf)
@@ -596,12 +618,12 @@ class Cycles:
                 or (mode in (84, 86) and st.spindle != 1):
             return False  # (G84 and G86 after M3: else _general checks the spindle, and declines G84's)
         try:
-            reps = repeats(vl, st.max_iterations)
+            reps = 1 if vl is None else repeats(vl, st.max_iterations)
         except ValueError as exc:
             raise self.declined(str(exc)) from None
         if n + 1 + len(seq[0]) * reps >= st.rows:
             return False
-        ia, ib, _ic = axes
+        ia, ib, ic = axes
         pos = st.pos
         aa, bb = pos[ia], pos[ib]
         wa = wb = None
@@ -612,8 +634,25 @@ class Cycles:
                 wb = v
             else:
                 return False
+        ca, cb, cz = cols[ia], cols[ib], cols[ic]
         if up:  # up to R where the tool stands
-            _row(st, axes, aa, bb, r, True)
+            ca.append(aa), cb.append(bb), cz.append(r)
+            st.rapids += 1
+        if reps == 1 and not inc:  # (the most common line: _repeat_rows's rows, inline)
+            zs, dwell, rapids = seq
+            m = len(zs)
+            aa = aa if wa is None else wa + off[ia]
+            bb = bb if wb is None else wb + off[ib]
+            for z in zs:
+                ca.append(aa), cb.append(bb), cz.append(z)
+            if dwell >= 0:
+                st.dwelt(len(cz) - m + dwell)
+            if self.peck_err > st.xerr[ic] and mode in _PECKS:  # (as _repeat_rows)
+                st.xerr[ic] = self.peck_err
+            st.rapids += rapids
+            pos[ia], pos[ib], pos[ic] = aa, bb, zs[-1]
+            self.mark = st.row0 + len(cz) - 1 - st.dwells
+            return True
         if inc:
             self._repeat_rows(reps, (aa, bb), (wa, wb), seq, axes)
         else:

@@ -91,10 +91,10 @@ without G2/G3, H without G43, G43 without H or with H0.
 
 Canned cycles (:mod:`.double_cycles`): G73, G81-G86 and G89 (``P`` above 0; ``Q`` above 0: a Q in a line
 without an M word is a value, G73's and G83's alone) with L repeats, in G90 and G91 (but G73 and G83), in the
-plane the program has set (G84 in G17), after the program set G98 or G99 (not in G20 nor on a lathe; G84 after
-M3, G86 with the spindle turning: the pass follows M3, M4, M5 and M6's stop), one row per motion of the full
+plane the program has set (G84 in G17), after the program set G98 or G99, in G21 and G20 (not on a lathe; G84
+after M3, G86 with the spindle turning: the pass follows M3, M4, M5 and M6's stop), one row per motion of the full
 path's ``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where the doubles
-decide the exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the
+decide the exact comparison (a closer pair, an offset, plane or units change while a cycle is modal, R below the
 bottom decline); the peck rows widened by their drift, G91 rows by their chain's error (``xerr``).
 
 The run: the straight lines between two O-word lines run as one block (read once: each line's step found by its
@@ -1312,7 +1312,7 @@ class _Pass:
         if why is not None:
             raise Declined(why)
         if "q" in others and not takes_q(groups, bool(axes)):  # (.double_cycles: a Q in a line without M)
-            raise Declined("a word Q without M61 or G83")
+            raise Declined("a word Q without M61, G73 or G83")
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
         if "L" in others and not axes and groups.get("motion") not in CYCLE_CODES:
