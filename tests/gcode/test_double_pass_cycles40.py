@@ -212,3 +212,23 @@ def test_peck_hole_lines_across_a_window_edge(code):
 
     last = double_pass(text, MACHINE, max_iterations=100_000, window=first + 1, on_window=holds)
     assert holds(last) and last.motions == len(segments) and ends[0] == first + 1  # (handed over at the dwell)
+
+
+#: LinuxCNC's own canned-cycle tests in the corpus (G20, G98/G99, G91 with L, in G17, G18 and G19): the pass
+#: takes them (cyc40) and holds the invariant.
+INTERP_TESTS = [pytest.param(f"g81/g{p}/g{r}/g{p}-g{r}-g81.ngc", marks=() if (p, r) in ((17, 98), (19, 99))
+                             else pytest.mark.long) for p in (17, 18, 19) for r in (98, 99)] + \
+               [pytest.param(f"g84/g17/g{r}/g17-g{r}-g84.ngc", marks=() if r == 98 else pytest.mark.long)
+                for r in (98, 99)]
+
+
+@pytest.mark.parametrize("name", INTERP_TESTS)
+def test_linuxcncs_cycle_tests_in_the_corpus(name):
+    from tests.corpus import CORPUS
+
+    path = CORPUS / "linuxcnc" / "tests" / "interp" / name
+    if not path.is_file():
+        pytest.skip("the shared corpus is not here")
+    got = check_against_full(path.read_text(), MACHINE, max_iterations=10_000)
+    assert got is not None, "declined"
+    assert got.motions >= 30
