@@ -142,6 +142,8 @@ ACCEPTED = {
                                          "G90 Y3\nX1 Z-2 R3\nG91 X0.5 L2\nG90 G83 Y5 R2 Z-1 Q0.5\nM30\n",
     "G20, G91 and pecks": "G20 G90 G17 G54 F10\n#1 = 0.1\nG0 X0 Y0 Z2\nG98 G81 X1 Y1 Z-1 R1\nG91 X[#1] L3\n"
                           "G90 G80\nG0 Z2\nG99 G83 X2 Y1 Z-0.5 R0.1 Q0.07\nX3 L2\nG91 G85 Y0.3 R-0.2 Z-0.4 L2\nM30\n",
+    # (seams39's: declined before cyc40)
+    "a G20 cycle": "G20 G90 G17 G54 G98 F100\n#1 = 1\nG0 Z1\nG81 X#1 Y1 Z-0.1 R0.5\nG80\nM30\n",
     "G91 in G19": "G21 G90 G19 G54 F200\nG0 X5 Y0 Z0\nG91 G99 G81 Y2.5 X-6 R-1 L4\nG90 G80\nM30\n",
 }
 
