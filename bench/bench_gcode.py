@@ -31,7 +31,8 @@ modules are imported; their import time is printed on its own), for
   under G81/G82 cycles, each cycle opened by its full block and closed by
   G80), fast path and full interpreter.
 
-The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_program`, :func:`comp_program` and
+The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_program`, :func:`cycle_program`,
+:func:`comp_program` and
 :func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
 ``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost"); the pass
 takes :func:`g18_program`'s arcs since plane38, lathes since lathe39 (:func:`lathe_program`: G7 diameters, G18
@@ -263,6 +264,41 @@ def drill_expr_program(n: int, seed: int = 31) -> str:
         for _ in range(min(1000, n - 2 - len(out))):
             out.append(f"X[#1 + {rnd.uniform(0, 400):.3f}] Y{rnd.uniform(0, 300):.3f}")
         out.append("G80")
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+#: :func:`cycle_program`'s forms: the block that opens a cycle (after ``#1 = 10`` and the tool at Z 20) and the
+#: hole line (``{x}``, ``{y}``: numbers; ``{l}``: an L word or nothing).
+CYCLE_FORMS = {
+    "g91l": ("G91 G99 G81 X1 Y1 Z-5 R-18 L2", "X[#1 * 0.1 + {x}] Y{y}{l}"),
+    "g73": ("G99 G73 X1 Y1 Z-3 R2 Q1", "X[#1 + {x}] Y{y}"),
+    "g85": ("G98 G85 X1 Y1 Z-3 R2", "X[#1 + {x}] Y{y}"),
+    "g89": ("G99 G89 X1 Y1 Z-3 R2 P0.5", "X[#1 + {x}] Y{y}"),
+    "g84": ("M3 S500\nG99 G84 X1 Y1 Z-3 R2", "X[#1 + {x}] Y{y}"),
+    "g86": ("M3 S500\nG98 G86 X1 Y1 Z-3 R2 P0.5", "X[#1 + {x}] Y{y}"),
+}
+
+
+def cycle_program(n: int, form: str = "g91l", seed: int = 41) -> str:
+    """About ``n`` lines of canned cycle holes whose X is an expression, 1000 a cycle (:data:`CYCLE_FORMS`):
+    ``g91l`` a G91 G81 hole pattern (X and Y increments, ``L1``-``L4`` on most lines), ``g73`` chip-break pecks,
+    ``g84``-``g89`` tapping and boring (the cycles the double pass took from cyc40 on; :func:`drill_expr_program`
+    is G81's)."""
+    rnd = random.Random(seed)
+    first, hole = CYCLE_FORMS[form]
+    out = ["G21 G90 G17 G54", "G43 H1 G0 Z20", "G0 X0 Y0", "F300", "#1 = 10"]
+    inc = form == "g91l"
+    while len(out) < n - 2:
+        out.append(first)
+        for _ in range(min(1000, n - 3 - len(out))):
+            if inc:
+                x, y = f"{rnd.uniform(-5, 5):.3f}", f"{rnd.uniform(-3, 3):.3f}"
+                reps = rnd.choice(["", " L2", " L3", " L4"])
+            else:
+                x, y, reps = f"{rnd.uniform(0, 400):.3f}", f"{rnd.uniform(0, 300):.3f}", ""
+            out.append(hole.format(x=x, y=y, l=reps))
+        out += ["G90 G80", "G0 X0 Y0 Z20"] if inc else ["G80"]
     out.append("M30")
     return "\n".join(out) + "\n"
 

@@ -101,11 +101,12 @@ _LINUXCNC_GROUPS: dict[int, tuple[int, ...]] = {
 #: arc-centre mode, the one the pass assumes, issue 36; G7/G8: a lathe's diameter mode, G96/G97: the spindle speed
 #: mode, which moves nothing, lathe39; G81, G82, G83 and G98/G99: drilling cycles in G90,
 #: ``linuxcnc/double_cycles.py``; G20: inches, units39; G41/G42: cutter compensation of straight moves on a machine
-#: with LinuxCNC's, ``linuxcnc/double_comp.py``, comp40).
+#: with LinuxCNC's, ``linuxcnc/double_comp.py``, comp40; G73, G84, G85, G86, G89: cycles, cyc40).
 _PLAIN_G = frozenset((0, 10))
 _FAST_G = frozenset((0, 10, 20, 30, 810, 820))
 _DOUBLES_G = frozenset((0, 10, 20, 30, 40, 430, 800, 170, 180, 190, 200, 210, 400, 490, 900, 910, 911, 940, 540, 550,
-                        560, 570, 580, 590, 610, 611, 640, 70, 80, 960, 970, 810, 820, 830, 980, 990, 410, 420, 411, 421))
+                        560, 570, 580, 590, 610, 611, 640, 70, 80, 960, 970, 810, 820, 830, 980, 990, 410, 420, 411, 421,
+                        730, 840, 850, 860, 890))
 #: The full path's unknown reasons live in ``interpreter.UNSUPPORTED_G`` (its messages); these are the
 #: LinuxCNC codes it answers ``unknown`` for.
 _LINUXCNC_UNKNOWN_G = frozenset((410, 420, 411, 421, 760, 382, 383, 384, 385, 870, 880, 432, 70, 171, 181, 191))

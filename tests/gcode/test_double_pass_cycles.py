@@ -1,4 +1,4 @@
-"""The double pass runs canned cycles G81 and G82 (issue 36; nczones/gcode/linuxcnc/double_cycles.py).
+"""The double pass runs canned cycles G81, G82 and G83 in G90 (issue 36; the other forms: test_double_pass_cycles40.py; nczones/gcode/linuxcnc/double_cycles.py).
 
 The module's invariant (``check_against_full``: the full path runs the program with no note, as many motions,
 rapids and dwells, every motion in the pass's box, corners blended where the full path blends them) on
@@ -128,7 +128,6 @@ def test_drilling_programs_the_pass_follows(name):
 DECLINED = {
     "no retract mode": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG81 X1 Y1 Z-1 R1\n", "retract mode"),
     "no plane": ("G21 G90 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\n", "plane"),
-    "G91": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG91 G99 G81 X1 Y1 Z-1 R1\n", "G91"),
     "no feed": ("G21 G90 G17 G54\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\n", "feed"),
     "no R": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1\n", "without R"),
     "no bottom": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 R1\n", "bottom"),
@@ -136,8 +135,6 @@ DECLINED = {
     "P with G81": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1 P1\n", "word P"),
     "G82 without P": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G82 X1 Y1 Z-1 R1\n", "without P"),
     "G82 P0": ("G21 G90 G17 G54 F100\n#1 = 0\nG0 Z5\nG99 G82 X1 Y1 Z-1 R1 P#1\n", "not positive"),
-    "L repeats": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1 L2\n", "word L"),
-    "G73": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G73 X1 Y1 Z-1 R1 Q1\n", "G73"),
     "G83 without Q": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G83 X1 Y1 Z-1 R1\n", "without Q"),
     "a peck of 0": ("G21 G90 G17 G54 F100\n#1 = 0\nG0 Z5\nG99 G83 X1 Y1 Z-1 R1 Q#1\n", "not positive"),
     "Q with G81": ("G21 G90 G17 G54 F100\n#1 = 0\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1 Q1\n", "word Q"),
@@ -146,15 +143,12 @@ DECLINED = {
     "G64 Q in a peck cycle": ("G21 G90 G17 G54 F100\n#1 = 0\nG0 Z5\nG99 G83 X1 Y1 Z-1 R1 Q1\nG64 X2 Q0.1\n",
                               "word Q"),
     "pecks past the bound": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G83 X1 Y1 Z-100 R1 Q0.1\n", "bound"),
-    "G85": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G85 X1 Y1 Z-1 R1\n", "G85"),
-    "an offset change": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\nG55 X2\n", "offset change"),
+    "an offset change": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\nG55 X2\n", "offset or units change"),
     "R equal to the initial level, written apart": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z2\nG98 G81 X1 Y1 Z-1 R2\n",
                                                      "too close"),
     # the same double, an exact value a hair below the last R: the full path's tool is above R, two rapids
     "R a hair below the last": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R0.30000000000000001\n"
                                 "X2 R0.3\n", "too close"),
-    # (the pass's cycles take a mill's millimetres: in G20 they decline whatever the pass takes of G20)
-    "G20": ("G20 G90 G17 G54 F10\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\n", "G20"),
     "P in G1": ("G21 G90 G17 G54 F100\n#1 = 1\nG1 X1 Y1 Z-1\nX2 P1\n", "word P"),
     "I in a cycle": ("G21 G90 G17 G54 F100\n#1 = 1\nG0 Z5\nG99 G81 X1 Y1 Z-1 R1\nX2 I1\n", "I, J or K"),
 }

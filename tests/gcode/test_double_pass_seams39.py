@@ -27,7 +27,6 @@ LATHE = parse_machine(named_machine("report_lathe"))
     ("G20 G90 G18 G54 F100\n#1 = 1\nG1 X[#1*2] Z-1\nM30\n", LATHE, "diameter"),
     ("G21 G90 G17 G54 F100\n#1 = 1\nG20\nG1 Y[#1*2]\nG7\nG1 X1\nM30\n", MACHINE, "G7 after a G20"),
     ("G21 G90 G17 G54 F100\n#1 = 1\nG7\nG1 X[#1*2]\nG20\nG1 X1\nM30\n", MACHINE, "diameter"),
-    ("G20 G90 G17 G54 G98 F100\n#1 = 1\nG0 Z1\nG81 X#1 Y1 Z-0.1 R0.5\nG80\nM30\n", MACHINE, "G20"),
     ("G21 G90 G18 G54 G98 F100\n#1 = 1\nG0 X10 Z10\nG81 X#1 Z-1 R2\nG80\nM30\n", LATHE, "lathe"),
 ])
 def test_combinations_the_pass_does_not_follow_decline(text, machine, why):

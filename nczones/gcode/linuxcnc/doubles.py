@@ -92,12 +92,13 @@ start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only a
 (which stops the machine: nothing is dropped across it, :meth:`_Pass.dwell_at`); I, J or R
 without G2/G3, H without G43, G43 without H or with H0.
 
-Canned cycles (:mod:`.double_cycles`): G81, G82 (``P`` above 0) and G83 (``Q`` above 0: a Q in a line without
-an M word is a value, G83's alone) in G90, in the plane the program has set, after the program set G98 or G99
-(no L, no G91 chain open, not in G20 nor on a lathe), one row per motion of the full path's
-``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where the doubles decide the
-exact comparison (a closer pair, an offset or plane change while a cycle is modal, R below the bottom decline);
-G83's peck rows widened by their drift (``xerr``).
+Canned cycles (:mod:`.double_cycles`): G73, G81-G86 and G89 (``P`` above 0; ``Q`` above 0: a Q in a line
+without an M word is a value, G73's and G83's alone) with L repeats, in G90 and G91 (but G73 and G83), in the
+plane the program has set (G84 in G17), after the program set G98 or G99, in G21 and G20 (not on a lathe; G84
+after M3, G86 with the spindle turning: the pass follows M3, M4, M5 and M6's stop), one row per motion of the full
+path's ``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where the doubles
+decide the exact comparison (a closer pair, an offset, plane or units change while a cycle is modal, R below the
+bottom decline); the peck rows widened by their drift, G91 rows by their chain's error (``xerr``).
 
 Cutter compensation (:mod:`.double_comp`): on a machine with ``cutter_compensation = "linuxcnc"`` (not a lathe),
 G40, and G41/G42 with a literal or computed ``D`` (a tool of ``[tool_diameters]``) or without (the tool in the
@@ -179,6 +180,7 @@ from .double_cycles import (
     cycle_modal,
     q_value,
     r_token,
+    spindle_body,
     takes_p,
     takes_q,
 )
@@ -237,7 +239,7 @@ _BLANKS = re.compile(r"[ \t]+")
 CODES = LaneCodes(LANE_DOUBLES, LINUXCNC_G, LINUXCNC_M)
 #: The groups whose start-up state a straight move notes while the program has not set them.
 _NOTED = frozenset(("units", "distance", "offset"))
-_LETTERS = frozenset("GMFSXYZIJKRHTPQD")  # D: G96's speed limit (.double_lathe)
+_LETTERS = frozenset("GMFSXYZIJKRHTPQDL")  # D: G96's speed limit (.double_lathe); L: a cycle's repeats
 #: Letters whose word is a literal code (H: the tool length register, T: a tool number, Q: M61's tool number,
 #: read like a G or M code).
 _CODE_LETTERS = "GMHTQ"
@@ -250,8 +252,8 @@ _DIGIT_RUNS = re.compile(rb"0+")  # (in a layout: every digit is 0)
 
 
 #: M codes the pass follows beside M2/M30 (the code table's claims), one to a block: the spindle (M3, M4, M5)
-#: and coolant (M7, M8, M9), which move nothing and set no state the path depends on (LinuxCNC's checks of the
-#: spindle direction are for G33, G76, G84 and G86, which the pass does not follow)
+#: and coolant (M7, M8, M9), which move nothing and set no state the path depends on (LinuxCNC checks the
+#: spindle's direction for G33, G76, which the pass does not follow, and G84 and G86: ``st.spindle``)
 _AUX_M = frozenset(k for k in LINUXCNC_M if CODES.claims_m(k)) - {2, 30, 6, 61}
 
 
@@ -550,6 +552,7 @@ class _Pass:
         #: cutter compensation (.double_comp), on a machine with LinuxCNC's and a text that may write G41/G42
         self.cc = Comp(self, machine, Declined) if getattr(machine, "cutter_compensation", "none") == "linuxcnc" \
             and not self.diameter and ("41" in text or "42" in text) else None
+        self.spindle = 0  # M3 1, M4 -1, stopped 0: what G84 and G86 check (.double_cycles.spindle_body)
         self.unset = set(_NOTED)
         #: the groups assumed at a motion and their codes (DoublePath.assumed); what each starts as on the full path
         self.assumed: dict[str, str] = {}
@@ -1389,17 +1392,19 @@ class _Pass:
         if len(set(others)) != len(others) or len(hs) > 1:
             raise Declined("a word twice")
         for x in others:
-            if x not in "FSIJKRPDq" and x not in self.index:
+            if x not in "FSIJKRPDqL" and x not in self.index:
                 raise Declined(f"an axis word {x} the machine does not have")
-        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPDq"]
+        axes = [(k, self.index[x]) for k, x in enumerate(others) if x not in "FSIJKRPDqL"]
         why = spindle_mode(groups, comp_others(groups, others))  # G96/G97 and D (.double_lathe; G41's: .double_comp)
         if why is not None:
             raise Declined(why)
         if "q" in others and not (takes_q(groups, bool(axes)) or _g64_q(groups, others, bool(axes))):
-            raise Declined("a word Q without M61, G83 or G64 P")  # (.double_cycles: a Q in a line without M)
+            raise Declined("a word Q without M61, G73, G83 or G64 P")  # (.double_cycles: a Q in a line without M)
         if groups.get("motion") == 80 and axes:
             raise Declined("axis words with G80")
-        body = ["st.blocks += 1"] if letters else []
+        if "L" in others and not axes and groups.get("motion") not in CYCLE_CODES:
+            raise Declined("a word L outside a canned cycle")
+        body = ["st.blocks += 1", *spindle_body(ms)] if letters else []
         if "feedmode" in groups:  # LinuxCNC sets the feed rate to 0 on G94 (before it reads F)
             body.append("st.feed = 0.0")
         if "F" in others:
