@@ -99,12 +99,13 @@ def _ij_screen_before(sx, sy, ex, ey, i, j, cw, offb, tol, turn=False):
 
 def reference_boxes(path) -> list[tuple]:
     """The quick box of every arc of ``path`` by the reference screens, from the pass's rows and words."""
-    words, offb, rule = path.arc_more
-    ia, ib = path.arc_axes
-    ca, cb = path.columns[ia], path.columns[ib]
+    words, _offb, rule = path.arc_more
     out = []
     for k, row in enumerate(path.arc_rows):
-        flag, p, q = int(words[3 * k]), words[3 * k + 1], words[3 * k + 2]
+        # (arc40: four words an arc, the last the offsets' bound it was computed with; its plane's axes)
+        flag, p, q, offb = int(words[4 * k]), words[4 * k + 1], words[4 * k + 2], words[4 * k + 3]
+        ia, ib = path.arc_pair(k)
+        ca, cb = path.columns[ia], path.columns[ib]
         r = row - path.row0
         ends = (ca[r - 1], cb[r - 1], ca[r], cb[r])
         if flag & 3 == R_SCREEN:

@@ -416,6 +416,4 @@ class Comp:
         if st.arc_plane != 17:
             st.arc_in(17)
         box = corner_box(ca[-1], cb[-1], row[ia], row[ib], centre[0], centre[1], centre[2], st.offb)
-        st.arc_rows.append(st.row0 + last + 1)
-        st.arc_boxes.extend(box)
-        st.arc_words.extend((float(EXACT), 0.0, 0.0))
+        st.add_arc(st.row0 + last + 1, box, (float(EXACT), 0.0, 0.0, st.offb))

@@ -1200,6 +1200,18 @@ class _Pass:
         #: appended to :attr:`arc_slots` at once)
         self.new_arcs: tuple[list[int], list[float], list[float]] = ([], [], [])
 
+    def add_arc(self, row: int, box: Any, words: tuple[float, float, float, float]) -> None:
+        """An arc ending at ``row`` (counted from the program's start) with its ``box`` and ``words`` (its box's
+        kind, R and 0 or I and J, the offsets' bound: :attr:`DoublePath.arc_more`), in the plane of
+        :meth:`arc_in`: what a plan's ``AR``, ``AB``, ``AW`` and ``AS`` do (a compensation corner's, .double_comp)."""
+        rows, boxes, kept = self.new_arcs
+        rows.append(row)
+        boxes.extend(box)
+        kept.extend(words)
+        self.arc_slots.append(self.arc_slot)
+        if len(rows) >= _ARC_BUFFER:
+            self.arc_flush()
+
     def arc_flush(self) -> None:
         """Move the arcs of :attr:`new_arcs` to the arrays (each list packed at once: no item parsed)."""
         rows, boxes, words = self.new_arcs
