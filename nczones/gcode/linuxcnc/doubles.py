@@ -549,9 +549,10 @@ class _Pass:
         self._arcs_state(machine, arc_tolerance)
         self._modes_state(machine)
         self.cyc = Cycles(self, Declined, machine)  # canned cycles (.double_cycles)
-        #: cutter compensation (.double_comp), on a machine with LinuxCNC's and a text that may write G41/G42
+        #: cutter compensation (.double_comp), on a machine with LinuxCNC's and a text that may write G41/G42 (a
+        #: G41/G42 the test misses, "G4 1" say, is declined: double_comp.comp_body without a Comp)
         self.cc = Comp(self, machine, Declined) if getattr(machine, "cutter_compensation", "none") == "linuxcnc" \
-            and not self.diameter and ("41" in text or "42" in text) else None
+            and not self.diameter and _may_compensate(text) else None
         self.spindle = 0  # M3 1, M4 -1, stopped 0: what G84 and G86 check (.double_cycles.spindle_body)
         self.unset = set(_NOTED)
         #: the groups assumed at a motion and their codes (DoublePath.assumed); what each starts as on the full path
@@ -1704,6 +1705,17 @@ class _Pass:
         if cc is None:
             return []
         return [f"W[{i}] = {self._word(k, i)}" for k, i in axes if i in (cc.ia, cc.ib)]
+
+
+def _may_compensate(text: Any) -> bool:
+    """May ``text`` write G41 or G42 (G41.1, G42.1): a G word of 41 or 42 in it (a streamed file: a "41" or "42").
+
+    >>> _may_compensate("G1 X41 Y42"), _may_compensate("g 041 D1"), _may_compensate("G42.1 D2")
+    (False, True, True)
+    """
+    if not isinstance(text, str):
+        return "41" in text or "42" in text
+    return re.search(r"[Gg][ \t]*0*4[12](?![0-9])", text) is not None
 
 
 def _g64_q(groups: dict[str, int], others: list[str], axes: bool) -> bool:
