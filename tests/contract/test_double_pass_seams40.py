@@ -12,8 +12,8 @@ S D and G97, G18 arcs in either X mode.  Every length is a token (``«q»``) so 
 other units (:func:`render`).
 
 Relations, for each program on a machine whose zone has a face exactly at the extreme of the full path's motion
-end points and arcs' sweeps along a drawn axis (or one pulse, 1e-9 mm or 1e-12 mm either side of it; an allowed
-travel face or a forbidden slab):
+end points and arcs' sweeps along a drawn axis (or one pulse, 1e-9 mm or 1e-12 mm either side of it, or outwards
+about a G64 P's reach, P to 76 P; an allowed travel face or a forbidden slab):
 
 1. the routed verdict (the double pass first, in its default windows or in windows of 2-8 motions) is the full
    path's with the pass off and without the vectorized tier (``fast=False``): verdict, violations, reasons, notes
@@ -84,8 +84,10 @@ def _q(draw, lo: int = -400, hi: int = 400, places: int = 2) -> str:
 class _State:
     """What the generator knows while it draws one program: the plane, the machine kind, labels used."""
 
-    def __init__(self, plane: int, lathe: bool, one_unit: bool):
+    def __init__(self, plane: int, lathe: bool, one_unit: bool, arcs: bool = True, cycles: bool = True):
         self.plane, self.lathe, self.one_unit = plane, lathe, one_unit
+        #: the program's flavour: without arcs (which the pass proves with no G64 P) or cycles, half the time
+        self.arcs, self.cycles = arcs, cycles
         self.labels = 0
         self.subs: list[str] = []
 
@@ -222,9 +224,9 @@ def _statement(draw, st_: _State, depth: int, counter: str | None) -> list[str]:
     if kind <= 2:
         return _straight(draw, st_, counter)
     if kind <= 4:
-        return _arc(draw, st_, counter)
+        return _arc(draw, st_, counter) if st_.arcs else _straight(draw, st_, counter)
     if kind == 5 and not st_.lathe:
-        return _cycle(draw, st_, counter)
+        return _cycle(draw, st_, counter) if st_.cycles else _setting(draw, st_, counter)
     if kind <= 7:
         return _setting(draw, st_, counter)
     if kind == 8 and st_.subs:
@@ -246,16 +248,19 @@ def _statement(draw, st_: _State, depth: int, counter: str | None) -> list[str]:
 
 
 @st.composite
-def seam_programs(draw, lathe: bool = False, one_unit: bool = False) -> str:
+def seam_programs(draw, lathe: bool = False, one_unit: bool = False, tolerance: bool = False) -> str:
     """A program template (lengths as ``«q»`` tokens): a header that may leave groups to the machine file, maybe
-    a sub defined first, then statements; ``one_unit``: no G20/G21 but the header's ``{UNITS}`` and no G43."""
+    a sub defined first, then statements; ``one_unit``: no G20/G21 but the header's ``{UNITS}`` and no G43;
+    ``tolerance``: a G64 P in the header, no arcs and no cycles (the pass proves those with the P's reach)."""
     plane = 18 if lathe else draw(st.sampled_from((17, 17, 18, 19)))
-    st_ = _State(plane, lathe, one_unit)
+    st_ = _State(plane, lathe, one_unit, arcs=draw(st.booleans()) and not tolerance,
+                 cycles=draw(st.booleans()) and not tolerance)
     head = []
     for words in (("G21", "G21", "G20"), ("G90", "G90", "G91"), (f"G{plane}",), ("G54", "G55", "G56")):
         if draw(st.integers(0, 3)) or (one_unit and words[0] == "G21"):
             head.append("{UNITS}" if one_unit and words[0] == "G21" else draw(st.sampled_from(words)))
-    head.append(draw(st.sampled_from(("F300", "F300", "F50", "F300 G64 P«0.01»", "F300 G61"))))
+    heads = ("F300 G64 P«0.01»", "F300 G64 P«0.5»", "F300 G64 P«0.002»", "F300", "F300", "F50", "F300 G61")
+    head.append(draw(st.sampled_from(heads[:3] if tolerance else heads[:5])))
     lines = [f"(seams40 G{plane})", " ".join(head), f"#1 = {_q(draw)}", f"#2 = {_q(draw)}"]
     if draw(st.integers(0, 2)) == 0:
         body = [line for _ in range(draw(st.integers(1, 3))) for line in _statement(draw, st_, 0, None)]
@@ -419,7 +424,10 @@ def check_seams(template: str, base: str, values: dict, draw, units: str = "G21"
     if face is not None:
         pulse = plain.axes[face[0]].pulse
         tiny = draw(st.sampled_from((pulse, Fraction(1, 10**9), Fraction(1, 10**12))))
-        moved = draw(st.sampled_from((0, tiny, -tiny)))
+        # or outwards about a G64 P's reach: 2 P in mm, 50.8 P in inches, for a P of the program
+        reach = [Fraction(v) * k for v in re.findall(r"G64 P([0-9.]+)", text) for k in (1, 2, 3, 25, 50, 76)]
+        far = face[1] * draw(st.sampled_from(reach or [Fraction(3, 10)]))
+        moved = draw(st.sampled_from((0, tiny, -tiny, far) if reach else (0, tiny, -tiny)))
         face = (face[0], face[1], face[2] + moved)
     toml = _machine_toml(base, values, face, forbid, {})
     try:
@@ -491,7 +499,8 @@ _SETTINGS = dict(deadline=None, suppress_health_check=list(HealthCheck),
 
 def _check(data, lathe: bool = False, one_unit: bool = False, units: str = "G21") -> None:
     draw = data.draw
-    template = draw(seam_programs(lathe=lathe, one_unit=one_unit))
+    tolerance = not lathe and draw(st.integers(0, 3)) == 0
+    template = draw(seam_programs(lathe=lathe, one_unit=one_unit, tolerance=tolerance))
     base = "report_lathe" if lathe else "xyz_range_seams"
     values = LATHE_OFFSETS if lathe else _mill(draw, template)
     event(check_seams(template, base, values, draw, units))
