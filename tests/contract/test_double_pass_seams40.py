@@ -8,8 +8,9 @@ program's plane (G17, G18 or G19; an arc in G91 now and then, which the pass dec
 and sticky words, G64 / G64 P / G61 / G61.1, G43 H/G49, T/M6/M61, G4, o-word loops and a sub called with an
 argument, work offsets G54-G56, a header that leaves units, distance, plane or offset to the machine file (whose
 ``modal`` may set G55 or G18, and whose ``path_mode`` is G61 or G64); on a lathe (``report_lathe``): G7/G8, G96
-S D and G97, G18 arcs in either X mode.  Every length is a token (``«q»``) so that a program can be written in
-other units (:func:`render`).
+S D and G97, G18 arcs in either X mode.  A quarter of the mill programs carry a G64 P in the header and neither
+arcs nor cycles (the pass proves those with the P's reach).  Every length is a token (``«q»``) so that a program
+can be written in other units (:func:`render`).
 
 Relations, for each program on a machine whose zone has a face exactly at the extreme of the full path's motion
 end points and arcs' sweeps along a drawn axis (or one pulse, 1e-9 mm or 1e-12 mm either side of it, or outwards
@@ -23,11 +24,17 @@ about a G64 P's reach, P to 76 P; an allowed travel face or a forbidden slab):
    ``check_against_full``: corners, arcs at both radii too);
 3. metamorphic: the zones, start position, reference and work offsets translated together keep the verdict and
    the violations' lines; ``safe`` with a margin of 0.5 is ``safe`` with margin 0; a program of one unit written
-   in G20 with its lengths ``q`` and in G21 with ``25.4 q`` gets the same verdict;
-4. LinuxCNC's ``rs274`` (mills, rs274's inch setup): when the pass takes a program rs274 runs without error,
-   the pass's rows are rs274's motion ends at the log's rounding (``tests/gcode/rs274_pass.py``).
+   in G20 with its lengths ``q`` and in G21 with ``25.4 q`` gets the same verdict (a face off the exact extreme:
+   on it the controller's doubles, which differ between the units, decide);
+4. LinuxCNC's ``rs274`` (mills, rs274's inch setup): a program the pass takes runs in rs274 without error, the
+   full path matches rs274's log, and the pass's rows are rs274's motion ends at the log's rounding
+   (``tests/gcode/rs274_pass.py``); the standalone rs274's own artefacts are counted, not compared.
 
-CI: a few examples each (derandomized); ``-m long`` with ``NCZONES_SEAMS40`` examples (default 400) per test.
+Teeth: with the G20 scaling of G64 P taken out of the pass (the merge's guard), relation 1 fails within some 200
+randomized examples (specs/contract.md, hunt40).
+
+CI: 8 mill, 4 lathe, 4 one-unit and 8 rs274 examples (derandomized); ``-m long`` with ``NCZONES_SEAMS40``
+examples (default 400) per test.
 """
 
 from __future__ import annotations
@@ -257,7 +264,9 @@ def seam_programs(draw, lathe: bool = False, one_unit: bool = False, tolerance: 
                  cycles=draw(st.booleans()) and not tolerance)
     head = []
     for words in (("G21", "G21", "G20"), ("G90", "G90", "G91"), (f"G{plane}",), ("G54", "G55", "G56")):
-        if draw(st.integers(0, 3)) or (one_unit and words[0] == "G21"):
+        if tolerance and words[0] == "G21":  # the P in either unit, half the time in inches
+            words = ("G21", "G20")
+        if draw(st.integers(0, 3)) or (one_unit and words[0] == "G21") or (tolerance and words[0] == "G21"):
             head.append("{UNITS}" if one_unit and words[0] == "G21" else draw(st.sampled_from(words)))
     heads = ("F300 G64 P«0.01»", "F300 G64 P«0.5»", "F300 G64 P«0.002»", "F300", "F300", "F50", "F300 G61")
     head.append(draw(st.sampled_from(heads[:3] if tolerance else heads[:5])))
@@ -425,9 +434,9 @@ def check_seams(template: str, base: str, values: dict, draw, units: str = "G21"
         pulse = plain.axes[face[0]].pulse
         tiny = draw(st.sampled_from((pulse, Fraction(1, 10**9), Fraction(1, 10**12))))
         # or outwards about a G64 P's reach: 2 P in mm, 50.8 P in inches, for a P of the program
-        reach = [Fraction(v) * k for v in re.findall(r"G64 P([0-9.]+)", text) for k in (1, 2, 3, 25, 50, 76)]
+        reach = [Fraction(v) * k for v in re.findall(r"G64 P([0-9.]+)", text) for k in (1, 2, 3, 10, 25, 50, 76)]
         far = face[1] * draw(st.sampled_from(reach or [Fraction(3, 10)]))
-        moved = draw(st.sampled_from((0, tiny, -tiny, far) if reach else (0, tiny, -tiny)))
+        moved = draw(st.sampled_from((0, tiny, -tiny, far, far, far) if reach else (0, tiny, -tiny)))
         face = (face[0], face[1], face[2] + moved)
     toml = _machine_toml(base, values, face, forbid, {})
     try:
