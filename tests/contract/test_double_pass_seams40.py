@@ -168,9 +168,9 @@ def _cycle(draw, st_: _State, counter: str | None) -> list[str]:
     lines = ["G90", f"G0 {n}«{clear}»",
              f"{draw(st.sampled_from(('G98', 'G99')))} {code} {a}{_value(draw, st_, counter)} {b}{_q(draw)} "
              f"{n}«{bottom}» R«{r}»{extra}"]
-    for _ in range(draw(st.integers(0, 3))):
-        kind = draw(st.integers(0, 7))
-        if kind == 6:  # a line between the holes while the cycle is modal
+    for _ in range(draw(st.integers(0, 4))):
+        kind = draw(st.integers(2, 7))
+        if kind in (2, 6):  # a line between the holes while the cycle is modal
             lines.append(draw(st.sampled_from(_BETWEEN)))
             continue
         hole = _hole(draw, st_, counter, code, r, bottom)
@@ -184,8 +184,8 @@ def _cycle(draw, st_: _State, counter: str | None) -> list[str]:
 
 
 #: Lines between a cycle's holes (the pass declines a plane or offset change while a cycle is modal)
-_BETWEEN = ("G43 H2", "G49", "G55", "G4 P0.5", "G64 P«0.01»", "G61", "T2 M6", "G20", "G21", "G91", "#1 = [#1 + «1»]",
-            "M3 S1000", "G17", "F100", "G98", "G99")
+_BETWEEN = ("G43 H2", "G49", "G55", "G56", "G43 H1", "G18", "G4 P0.5", "G64 P«0.01»", "G61", "T2 M6", "G20", "G21",
+            "G91", "#1 = [#1 + «1»]", "M3 S1000", "G17", "F100", "G98", "G99")
 
 
 def _hole(draw, st_: _State, counter: str | None, code: str, r: Fraction, bottom: Fraction) -> str:
@@ -232,8 +232,8 @@ def _statement(draw, st_: _State, depth: int, counter: str | None) -> list[str]:
         return _straight(draw, st_, counter)
     if kind <= 4:
         return _arc(draw, st_, counter) if st_.arcs else _straight(draw, st_, counter)
-    if kind == 5 and not st_.lathe:
-        return _cycle(draw, st_, counter) if st_.cycles else _setting(draw, st_, counter)
+    if kind in (5, 6) and not st_.lathe and st_.cycles:
+        return _cycle(draw, st_, counter)
     if kind <= 7:
         return _setting(draw, st_, counter)
     if kind == 8 and st_.subs:
