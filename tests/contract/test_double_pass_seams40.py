@@ -24,8 +24,8 @@ about a G64 P's reach, P to 76 P; an allowed travel face or a forbidden slab):
    ``check_against_full``: corners, arcs at both radii too);
 3. metamorphic: the zones, start position, reference and work offsets translated together keep the verdict and
    the violations' lines; ``safe`` with a margin of 0.5 is ``safe`` with margin 0; a program of one unit written
-   in G20 with its lengths ``q`` and in G21 with ``25.4 q`` gets the same verdict (a face off the exact extreme:
-   on it the controller's doubles, which differ between the units, decide);
+   in G20 with its lengths ``q`` and in G21 with ``25.4 q`` gets the same verdict (a face off the exact extreme
+   and off a P's reach: on such a boundary the controller's doubles, which differ between the units, decide);
 4. LinuxCNC's ``rs274`` (mills, rs274's inch setup): a program the pass takes runs in rs274 without error, the
    full path matches rs274's log, and the pass's rows are rs274's motion ends at the log's rounding
    (``tests/gcode/rs274_pass.py``); the standalone rs274's own artefacts are counted, not compared.
@@ -429,7 +429,7 @@ def check_seams(template: str, base: str, values: dict, draw, units: str = "G21"
         segments = []
     face = _face(segments, plain.axis_names, draw) if segments else None
     forbid = draw(st.booleans()) or base == "report_lathe"
-    moved = 0
+    moved, tiny_moves = 0, Fraction(0)
     if face is not None:
         pulse = plain.axes[face[0]].pulse
         tiny = draw(st.sampled_from((pulse, Fraction(1, 10**9), Fraction(1, 10**12))))
@@ -437,6 +437,7 @@ def check_seams(template: str, base: str, values: dict, draw, units: str = "G21"
         reach = [Fraction(v) * k for v in re.findall(r"G64 P([0-9.]+)", text) for k in (1, 2, 3, 10, 25, 50, 76)]
         far = face[1] * draw(st.sampled_from(reach or [Fraction(3, 10)]))
         moved = draw(st.sampled_from((0, tiny, -tiny, far, far, far) if reach else (0, tiny, -tiny)))
+        tiny_moves = tiny if moved else Fraction(-1)  # on the extreme (0) or at a P's reach: an exact boundary
         face = (face[0], face[1], face[2] + moved)
     toml = _machine_toml(base, values, face, forbid, {})
     try:
@@ -455,7 +456,7 @@ def check_seams(template: str, base: str, values: dict, draw, units: str = "G21"
     by_pass = not isinstance(routed, Exception) and "double_pass_boxes" in dict(routed.stats)
     if isinstance(routed, Exception):
         return "error"
-    _metamorphic(template, base, values, face, forbid, draw, units, routed, case, on_extreme=bool(face) and not moved)
+    _metamorphic(template, base, values, face, forbid, draw, units, routed, case, on_extreme=bool(face) and abs(moved) > tiny_moves)
     return f"{routed.verdict.name} {'by the pass' if by_pass else ('taken' if taken else 'declined')}"
 
 
