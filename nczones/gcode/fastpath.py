@@ -1451,8 +1451,8 @@ def _fanuc_holes_state_ok(it: Any) -> bool:
             and it.feed_mode == 94 and it.feed > 0 and it.initial_level is not None and "R" in data
             and "Z" in data and data.get("R90") is True and data.get("Z90") is True and not it.comp_on
             and not it.comp_just_off and not it.track and it.prerotation_xy is None and it.machine_at is None
-            and not it.m73_saved and it.spline_state is None and it.prog is None and it._tlo_shift is None
-            and not it._tlo_untaken and not it.after_home and all(a in it.index for a in "XYZ"))
+            and not it.m73_saved and it.spline_state is None and it.prog is None and not it.tool_length_pending
+            and not it.after_home and all(a in it.index for a in "XYZ"))
 
 
 def _fanuc_pecks(it: Any, r: Fraction, bottom: Fraction) -> list[tuple[SegmentKind, Fraction, str]] | None:

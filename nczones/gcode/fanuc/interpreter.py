@@ -299,6 +299,12 @@ class FanucInterpreter(Interpreter):
         """A canned cycle is active (the language layer reads K as its repeat count)."""
         return self.cycle is not None
 
+    @property
+    def tool_length_pending(self) -> bool:
+        """A tool length change the tool axis has not moved by yet (TOS = 0: with the block's move; TOS = 1: with
+        the next tool axis move), which a canned cycle's hole reads (``fastpath._fanuc_holes`` declines then)."""
+        return self._tlo_shift is not None or self._tlo_untaken
+
     def fast_state_ok(self) -> bool:
         """Nothing the vectorized fast path does not model is active."""
         return self.cycle is None and self._tlo_shift is None and not self.after_home and self.prog is None \
