@@ -48,8 +48,8 @@ if TYPE_CHECKING:
     from collections.abc import Callable
     from typing import Any
 
-__all__ = ["cached_table", "cache_dir", "entry_path", "encode", "decode", "FORMAT", "MAX_SOURCE", "DIR_ENV",
-           "SWITCH_ENV"]
+__all__ = ["cached_table", "cache_dir", "entry_path", "encode", "decode", "read_entry", "write_entry", "FORMAT",
+           "MAX_SOURCE", "DIR_ENV", "SWITCH_ENV"]
 
 #: The layout of an entry; a change of layout or of what is stored takes a new number.
 FORMAT = 1
@@ -145,8 +145,10 @@ def decode(stored: Any) -> Any:
     raise _NotStored(kind.__name__)
 
 
-def _read(entry: str, source: bytes) -> Any:
-    """The table in ``entry`` for ``source``, or None (a miss) -- never an exception."""
+def read_entry(entry: str, header: tuple[Any, ...], limit: int) -> Any:
+    """The value stored in ``entry`` after ``header`` (all of it equal, item by item), or None (a miss) --
+    never an exception.  ``entry`` and its folder must be regular, owned by the current user and writable by no
+    one else; at most ``limit`` bytes are read."""
     try:
         if not _private(os.stat(os.path.dirname(entry)), stat.S_ISDIR):
             return None
@@ -155,23 +157,33 @@ def _read(entry: str, source: bytes) -> Any:
             if not _private(os.fstat(fd), stat.S_ISREG):
                 return None
             with os.fdopen(fd, "rb", closefd=False) as fh:
-                blob = fh.read(2 * MAX_SOURCE + 65536)
+                blob = fh.read(limit)
         finally:
             os.close(fd)
         stored = marshal.loads(blob)
-        header = _header(source)
         if type(stored) is not tuple or len(stored) != len(header) + 1 or stored[:-1] != header:
             return None
-        return decode(stored[-1])
-    except (OSError, ValueError, EOFError, TypeError, RecursionError, MemoryError, _NotStored):
+        return stored[-1]
+    except (OSError, ValueError, EOFError, TypeError, RecursionError, MemoryError):
         return None
 
 
-def _write(entry: str, source: bytes, table: Any) -> None:
-    """Store ``table`` (parsed from ``source``) in ``entry`` if the folder can be made private; else nothing."""
+def _read(entry: str, source: bytes) -> Any:
+    """The table in ``entry`` for ``source``, or None (a miss) -- never an exception."""
+    stored = read_entry(entry, _header(source), 2 * MAX_SOURCE + 65536)
     try:
-        blob = marshal.dumps(_header(source) + (encode(table),))
-    except (ValueError, RecursionError, _NotStored):
+        return None if stored is None else decode(stored)
+    except (RecursionError, _NotStored):
+        return None
+
+
+def write_entry(entry: str, header: tuple[Any, ...], value: Any) -> None:
+    """Store ``header`` and ``value`` (a :mod:`marshal` value) in ``entry`` if the folder can be made private;
+    else nothing -- never an exception.  The entry is written to a temporary file and renamed over the old one
+    (atomic: a reader sees the old entry or the new, never a torn one)."""
+    try:
+        blob = marshal.dumps(header + (value,))
+    except (ValueError, RecursionError):
         return
     folder = os.path.dirname(entry)
     temp = f"{entry}.{os.getpid()}.{_thread.get_ident()}.tmp"  # one writer per name: no torn entry
@@ -190,6 +202,15 @@ def _write(entry: str, source: bytes, table: Any) -> None:
             os.unlink(temp)
         except OSError:
             pass
+
+
+def _write(entry: str, source: bytes, table: Any) -> None:
+    """Store ``table`` (parsed from ``source``) in ``entry`` if the folder can be made private; else nothing."""
+    try:
+        value = encode(table)
+    except (RecursionError, _NotStored):
+        return
+    write_entry(entry, _header(source), value)
 
 
 def cached_table(path: str, source: bytes, parse: Callable[[], dict[str, Any]]) -> dict[str, Any]:

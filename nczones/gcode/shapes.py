@@ -33,6 +33,7 @@ from collections.abc import Callable
 from operator import itemgetter
 from types import FunctionType
 
+from ..code_cache import compiled
 from ..frozen import builder
 from .expr import (
     UNSET,
@@ -295,7 +296,7 @@ def _compile(line: str, parts: list[str], pl: ParsedLine) -> Any:
                  f"({''.join(a + ', ' for a in assigns)}))")
     src = "\n".join(lines) + "\n"
     scope: dict[str, Any] = {"_parsed_line": _parsed_line, "_num": _num}
-    exec(compile(src, "<line shape>", "exec"), scope)  # noqa: S102  # built only from reprs of str/int/bool
+    exec(compiled(src, "<line shape>"), scope)  # noqa: S102  # built only from reprs of str/int/bool
     rebuild = scope["rebuild"]
     if rebuild(tuple(parts[1::2]), line) != pl:
         return _NO_SHAPE
@@ -451,13 +452,13 @@ def _compiled_when_called(source: str, scope: dict[str, Any]) -> tuple[Callable[
     """
     if not _STUB_CODE:
         stubs: dict[str, Any] = {}
-        exec(compile(_STUB_SOURCE, "<line shape stub>", "exec"), stubs)  # noqa: S102  # a constant source
+        exec(compiled(_STUB_SOURCE, "<line shape stub>"), stubs)  # noqa: S102  # a constant source
         _STUB_CODE.extend((stubs["run"].__code__, stubs["columns"].__code__))
     run = FunctionType(_STUB_CODE[0], scope, "run")
     columns = FunctionType(_STUB_CODE[1], scope, "columns")
 
     def compile_now() -> tuple[Callable[..., Any], Callable[..., Any]]:
-        exec(compile(source, "<line shape run>", "exec"), scope)  # noqa: S102  # reprs only
+        exec(compiled(source, "<line shape run>"), scope)  # noqa: S102  # reprs only
         run.__code__, columns.__code__ = scope["run"].__code__, scope["columns"].__code__
         scope["run"], scope["columns"] = run, columns
         return run, columns

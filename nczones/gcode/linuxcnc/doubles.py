@@ -137,6 +137,7 @@ from fractions import Fraction
 from itertools import compress
 from operator import itemgetter
 
+from ...code_cache import compiled
 from ...errors import GcodeError
 from ...motion import DROPPED_BELOW, PLANE_AXES
 from ...precompiled import dataclass  # start-up: no dataclasses import
@@ -1084,7 +1085,7 @@ class _Pass:
         ds = [em.value(tree, body) for tree in trees]
         lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    return ({''.join(d + ', ' for d in ds)})"]
         scope = dict(self.env)
-        exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
+        exec(compiled("\n".join(lines) + "\n", "<double pass>"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
     def _compiled_cond(self, tree: Any) -> Any:
@@ -1094,7 +1095,7 @@ class _Pass:
         d = em.value(tree, body)
         lines = ["def step(P):"] + [f"    {b}" for b in body] + [f"    return {d}"]
         scope = dict(self.env)
-        exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
+        exec(compiled("\n".join(lines) + "\n", "<double pass>"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
     def _exec(self, body: list[str], writes: list[str], values: list[str], key: str | None, extra: dict) -> Any:
@@ -1114,7 +1115,7 @@ class _Pass:
         """The function ``step`` of source ``lines``, in the pass's environment and ``extra``."""
         scope = dict(self.env)
         scope.update(extra)
-        exec(compile("\n".join(lines) + "\n", "<double pass>", "exec"), scope)  # noqa: S102  # built from reprs
+        exec(compiled("\n".join(lines) + "\n", "<double pass>"), scope)  # noqa: S102  # built from reprs
         return scope["step"]
 
     def moved(self, axes: tuple[int, ...]) -> None:
@@ -1454,7 +1455,7 @@ class _Pass:
                                  "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc,
                                  "W": None if self.cc is None else self.cc.words}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
-        exec(compile("\n".join(lines) + "\n", "<double pass plan>", "exec"), scope)  # noqa: S102  # from reprs
+        exec(compiled("\n".join(lines) + "\n", "<double pass plan>"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
 
     def _modal_body(self, groups: dict[str, int], hs: list[int], others: list[str]) -> list[str]:
