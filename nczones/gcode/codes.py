@@ -162,7 +162,7 @@ _FANUC_PLAIN_G = frozenset((0, 10))
 _FANUC_BOX_G = frozenset((0, 10, 20, 30))
 _FANUC_FAST_G = frozenset((0, 10, 20, 30))
 #: The Fanuc cycles whose hole lines (X/Y after the cycle's first block) the fast path takes
-#: (fastpath._fast_cycle_run with fastpath._fanuc_holes; G76's shift and G87's back boring are the full path's)
+#: (fastpath._fast_cycle_run with fanuc.holes.fanuc_holes; G76's shift and G87's back boring are the full path's)
 FANUC_HOLE_CYCLES = frozenset((730, 740, 810, 820, 830, 840, 850, 860, 890))
 _FANUC_ARC_PLAIN = ("an arc: the plain lane writes it only into the box route's run box (the boxes column); with "
                     "segments or column rows it hands the block to the full path")

@@ -61,6 +61,8 @@ _MAX_DIGITS = 7
 _LINE, _RAPID, _ARC = SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.ARC
 _CENTRE = {"X": "I", "Y": "J", "Z": "K"}
 _MAX_LAYOUTS = 4096
+#: where a plane's layouts keep the axis words of each hole line's layout (:func:`_holes`)
+_HOLE_WORDS = ("hole words",)
 #: an arc inside the run's box (read_box_run: its box is not made) and the units its bounds may be rounded outward
 _INSIDE = (0, 0, 0, 0)
 _SLACK = 4
@@ -200,18 +202,23 @@ def _start(runner: Any) -> _Run | None:
         return None
     st = _Run()
     st.straight_ok, st.arc_ok = modes
+    return st if _state(runner, interp, st) else None
+
+
+def _state(runner: Any, interp: Any, st: _Run) -> bool:
+    """``st`` filled with the interpreter's state at the scale (False: a number not at the scale, or too large)."""
     st.index = index = {name: i for i, name in enumerate(interp.axes) if name in "XYZ"}
     a_name, b_name, _n = PLANE_AXES[interp.plane]
     ia, ib = index.get(a_name), index.get(b_name)
     if ia is None or ib is None:
-        return None
+        return False
     st.plane = plane = (ia, ib, _CENTRE[a_name], _CENTRE[b_name])
     p: Any = [_scaled(v) for v in interp.pos]
     off: Any = [_scaled(v) for v in interp.off]
     tl, feed = _scaled(interp.tlo), _scaled(interp.feed) if interp.feed is not None else None
     tol = _scaled(interp.arc_tolerance) if interp.arc_rule == "fixed" else 0
     if None in p or None in off or tl is None or feed is None or tol is None or any(abs(o) >= 2**56 for o in off):
-        return None
+        return False
     st.p, st.off, st.tl, st.feed, st.feed0 = p, off, tl, feed, feed
     st.tol = tol if interp.arc_rule == "fixed" else None
     emitted = interp.emitted
@@ -229,7 +236,7 @@ def _start(runner: Any) -> _Run | None:
     st.kinds = [0, 0, 0, 0]  # motions by motion // 10 (G0, G1, G2, G3)
     st.g_seen = st.taken = 0
     st.last = (0, 0)
-    return st
+    return True
 
 
 def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
@@ -240,7 +247,7 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         return None  # (not a line's start: never asked so)
     st = _start(runner)
     if st is None:
-        return None
+        return _read_holes(runner, text, pos, lineno)
     lines = runner.box_keys
     if lines is None or lines.text is not text:
         end = text.find("\n", pos)
@@ -257,6 +264,90 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
     if number is not None:  # the last sequence number a macro reads (#4114), as the general path keeps it
         runner.lane_number(number)
     return _hand_back(runner, runner.state, st, pos, lineno)
+
+
+def _read_holes(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
+    """Hole lines under a drilling cycle (a line of X and Y words, a leading N) read into the run's box, each hole
+    the rows of :func:`~nczones.gcode.fanuc.holes.fanuc_holes` (the interpreter's ``_fanuc_cycle``): ``(next
+    offset, next line number, whether the chunk is full)``, or None when the first line is not taken.
+
+    Every row of a hole is a straight move (a rapid: each axis monotone) or a dwell, from the hole's X and Y at
+    the template's levels: its motion lies in the box of the hole's X, Y and the least and greatest level, and
+    the move to the next hole (at the top, the level the last row ends at) in the box of the two holes'.  The
+    lines are :func:`_layout`'s with only X and Y words; inch input, another plane or any state
+    ``fanuc_holes`` does not mirror is not taken."""
+    from .holes import fanuc_holes
+
+    interp = runner.state
+    sink = interp.row_sink
+    if type(sink) is not BoxSink or runner.modal_call is not None or runner.lane is None or runner.shape_codes \
+            or interp.segment_count < sink.start or interp.ended or interp.inch or not interp.fused_lane:
+        return None
+    plan = fanuc_holes(interp)
+    if plan is None:
+        return None
+    st = _Run()
+    st.straight_ok = st.arc_ok = False
+    scaled = [_scaled(z) for z in plan[1].values()]
+    levels = [z for z in scaled if z is not None and abs(z) < 2**56]
+    if len(levels) != len(scaled) or not _state(runner, interp, st):
+        return None
+    lines = runner.box_keys
+    if lines is None or lines.text is not text:
+        lines = runner.box_keys = _Lines(text)
+    first = lines.index(pos)
+    holes, pos, lineno = _holes(st, lines, len(plan[2]), pos, lineno, first)
+    if not holes:
+        return None
+    iz = st.index["Z"]
+    st.lo[iz] = min(st.lo[iz], *levels)
+    st.hi[iz] = max(st.hi[iz], *levels)
+    number = lines.last_number(first, first + holes)
+    if number is not None:
+        runner.lane_number(number)
+    interp.note_assumed(plan[5])
+    counts = interp.kind_counts
+    for kind, *_rest in plan[2]:
+        counts[kind] += holes
+    st.taken = holes
+    return _hand_back(runner, interp, st, pos, lineno, holes * len(plan[2]))
+
+
+def _holes(st: _Run, lines: _Lines, per: int, pos: int, lineno: int, i: int) -> tuple[int, int, int]:
+    """Read hole lines of ``per`` rows each from ``pos`` (line index ``i``) into ``st``'s position and box, as many
+    as the chunk has room for: (holes, next offset, next line number)."""
+    keys, dotless = lines.keys, lines.dotless
+    ix, iy = st.index["X"], st.index["Y"]
+    p, lo, hi, off = st.p, st.lo, st.hi, st.off
+    layouts: Any = st.layouts
+    cache = layouts.setdefault(_HOLE_WORDS, {})  # (a tuple: never a line's key)
+    most = min(st.room // per, len(keys) - i)
+    holes = last_pos = last_no = 0
+    while holes < most:
+        key = keys[i]
+        words = cache.get(key)
+        if words is None:
+            got = _miss(st, key)
+            ok = got and got[0] is None and got[1] is None and got[2] is not None \
+                and all(a == ix or a == iy for _s, _m, a in got[2])
+            words = got[2] if ok else ()
+            if len(cache) < _MAX_LAYOUTS:
+                cache[key] = words
+        if not words:
+            break
+        line = dotless[i]
+        for sl, m, a in words:
+            v = int(line[sl]) * m + off[a]
+            p[a] = v
+            if v < lo[a]:
+                lo[a] = v
+            elif v > hi[a]:
+                hi[a] = v
+        holes += 1
+        last_pos, last_no = pos, lineno
+        pos, lineno, i = pos + len(key) + 1, lineno + 1, i + 1
+    st.last = (last_pos, last_no)
+    return holes, pos, lineno
 
 
 class _Lines:
@@ -481,8 +572,10 @@ def _centre_box(st: _Run, line: str, ca: Any, cb: Any, sa: int, sb: int, ea: int
     return centre_arc_box(sa, sb, ea, eb, xa, xb, cw, st.tol)
 
 
-def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int) -> tuple[int, int, bool]:
-    """The state after the run, as the lanes leave it (module docstring)."""
+def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int,
+               motions: int | None = None) -> tuple[int, int, bool]:
+    """The state after the run, as the lanes leave it (module docstring); ``motions``: the run's motions when a
+    line is not one (:func:`_read_holes`)."""
     from ..lexer import make_span
 
     end = tuple(Fraction(v, _UNIT) for v in st.p)
@@ -495,7 +588,7 @@ def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int) -> tup
         rows.tl = interp.tlo
         rows.tls.add(st.tl)
     taken = st.taken
-    rows.count += taken
+    rows.count += taken if motions is None else motions
     if rows.count >= rows.max_rows:
         rows.full = True
     rows.prev_end = end
@@ -519,7 +612,7 @@ def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int) -> tup
     for kind, k in ((_RAPID, g0), (_LINE, g1), (_ARC, g2 + g3)):
         if k:
             counts[kind] += k
-    interp.segment_count += taken
+    interp.segment_count += taken if motions is None else motions
     interp.pos = end
     interp.prerotation_xy_next = None
     return pos, lineno, rows.full or len(interp.emitted) >= interp.chunk_size

@@ -302,7 +302,7 @@ class FanucInterpreter(Interpreter):
     @property
     def tool_length_pending(self) -> bool:
         """A tool length change the tool axis has not moved by yet (TOS = 0: with the block's move; TOS = 1: with
-        the next tool axis move), which a canned cycle's hole reads (``fastpath._fanuc_holes`` declines then)."""
+        the next tool axis move), which a canned cycle's hole reads (``fanuc.holes.fanuc_holes`` declines then)."""
         return self._tlo_shift is not None or self._tlo_untaken
 
     def fast_state_ok(self) -> bool:
@@ -501,6 +501,12 @@ class FanucInterpreter(Interpreter):
         self.pos = end
         self.prerotation_xy_next = None
         return 2 if rows.full or len(emitted) >= self.chunk_size else 1
+
+    @property
+    def transform_just_cancelled(self) -> bool:
+        """Whether the next move is the first after a coordinate transform was set or cancelled (it must be
+        absolute; ``fanuc.holes.holes_state_ok`` leaves such a hole to :meth:`_fanuc_cycle`)."""
+        return self._first_after_transform
 
     def box_lane_modes(self) -> tuple[bool, bool] | None:
         """Whether the state is one :meth:`lane` and :meth:`_arc_lane` both take a plain block in (their tests but
