@@ -280,6 +280,13 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     :data:`SHADOW_ON_GRID_BOUND` is kept: its readings are within 0.05 increments of it (``5e-15 * 1e8``
     program units, a step at least 1e-5: IS-C inch).
 
+    A value with a spread (a libm result, :class:`SpreadDouble`) is decided here only below ``2**20``
+    increments, its quotient's fraction at least ``2**-19`` from a half and its spread narrower than ``2**-21``
+    increments: every double of the spread is then within ``2**-21`` increments of ``d`` and each of its
+    readings within ``2**-26`` more, so every reading of every double is farther than ``2**-20`` from the half
+    on ``d``'s side and rounds as ``d`` does (a spread across 0 is below ``2**-21`` increments: 0 for all).
+    Anything else goes to :func:`_spread_round` (its ends' readings, GC397 where they part).
+
     >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
     (Fraction(6173, 500), Fraction(-3, 1))
     >>> round_to((1.2345, None), Fraction(1, 1000))  # 15 digits: 1.2345, in doubles 1234.5 increments
@@ -307,10 +314,13 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
             if x < _FAST_INCREMENTS:
                 m = _floor(x)
                 frac = x - m  # exact (x and m are doubles below 2**52)
-                if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH and (
-                        x < _WIDE_INCREMENTS or abs(frac - 0.5) > x * _WINDOW) and (
-                        d.__class__ is not SpreadDouble or x < _WIDE_INCREMENTS and not (
-                            _SPREAD_HALF_LOW < frac < _SPREAD_HALF_HIGH) and (d.hi - d.lo) * sd < _SPREAD_WIDTH):
+                if d.__class__ is SpreadDouble:
+                    if x < _WIDE_INCREMENTS and not _SPREAD_HALF_LOW < frac < _SPREAD_HALF_HIGH and (
+                            d.hi - d.lo) * sd < _SPREAD_WIDTH:
+                        n = m + 1 if frac > 0.5 else m
+                        return to_fraction(-n if d < 0 else n, sd)
+                elif not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH and (
+                        x < _WIDE_INCREMENTS or abs(frac - 0.5) > x * _WINDOW):
                     n = m + 1 if frac > 0.5 else m
                     return to_fraction(-n if d < 0 else n, sd)
         if d.__class__ is SpreadDouble:
@@ -1185,9 +1195,9 @@ def _spread_add(a: float, b: float, d: float) -> float:
     if b.__class__ is not SpreadDouble:  # a carries the spread
         p, r = a.lo + b, a.hi + b  # type: ignore[attr-defined]
     elif a.__class__ is not SpreadDouble:
-        p, r = a + b.lo, a + b.hi  # type: ignore[attr-defined]
+        p, r = a + b.lo, a + b.hi
     else:
-        p, r = a.lo + b.lo, a.hi + b.hi  # type: ignore[attr-defined]
+        p, r = a.lo + b.lo, a.hi + b.hi
     if p < r and -_INF < p and r < _INF:  # (_spread inline)
         s = SpreadDouble(d)
         s.lo, s.hi = p, r
@@ -1209,9 +1219,9 @@ def _spread_mul(a: float, b: float, d: float) -> float:
     if b.__class__ is not SpreadDouble:  # a carries the spread, b is plain: two corners
         p, r = a.lo * b, a.hi * b  # type: ignore[attr-defined]
     elif a.__class__ is not SpreadDouble:
-        p, r = a * b.lo, a * b.hi  # type: ignore[attr-defined]
+        p, r = a * b.lo, a * b.hi
     else:
-        alo, ahi, blo, bhi = a.lo, a.hi, b.lo, b.hi  # type: ignore[attr-defined]
+        alo, ahi, blo, bhi = a.lo, a.hi, b.lo, b.hi
         corners = (alo * blo, alo * bhi, ahi * blo, ahi * bhi)
         return _spread(d, min(corners), max(corners))
     if p > r:
@@ -1635,12 +1645,13 @@ def _compile_polar(node: tuple, variables: FanucVariables, ctx: Context,
     upper = name.upper()
     left = compile_tree(node[2], variables, ctx, in_address, False)
     angle = compile_tree(right[2], variables, ctx, in_address, False)
-    pi = math.pi
+    pi, spread, small, k, inf = math.pi, SpreadDouble, _NEIGHBOUR_SMALL, _NEIGHBOUR, _INF  # (closure cells)
+    minus_small, minus_inf = -small, -inf
 
     def polar() -> Value:
         a = left()[0]
         t = angle()[0]
-        if t.__class__ is SpreadDouble or a.__class__ is SpreadDouble or t == 0.0:
+        if t.__class__ is spread or a.__class__ is spread or t == 0.0:
             return _product(a, _trigonometric_value(name, fn, upper, t)[0])
         r = t * pi / 180.0
         if r - r:  # NaN or infinite, or radians that overflow
@@ -1649,15 +1660,15 @@ def _compile_polar(node: tuple, variables: FanucVariables, ctx: Context,
         d = a * c
         if d - d:
             check_double(d)
-        if -_NEIGHBOUR_SMALL < c < _NEIGHBOUR_SMALL:
-            p, q = a * _nextafter(c, -_INF), a * _nextafter(c, _INF)
+        if minus_small < c < small:
+            p, q = a * _nextafter(c, minus_inf), a * _nextafter(c, inf)
         else:  # (neighbours inline: c - e and c + e are c's two neighbours)
-            e = c * _NEIGHBOUR
+            e = c * k
             p, q = a * (c - e), a * (c + e)
         if p > q:
             p, q = q, p
-        if p < q and -_INF < p and q < _INF:  # (_spread inline)
-            s = SpreadDouble(d)
+        if p < q and minus_inf < p and q < inf:  # (_spread inline)
+            s = spread(d)
             s.lo, s.hi = p, q
             return (s, None)
         return (_spread(d, p, q), None)
@@ -1731,21 +1742,7 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
         lo, hi = _certain_bounds(const)
         n = None if vacancy else _local_index(node[2])
         if n is not None:  # a local variable and a number (#1 LT 10): read in the closure
-            def local_relation() -> Value:
-                x = variables.local[n]
-                a = x[0]
-                if a.__class__ is SpreadDouble:  # all of the spread beyond a bound: every double of it is
-                    if a.hi < lo:
-                        return below
-                    if a.lo > hi:
-                        return above
-                    return _spread_related(op, x, const)
-                if a < lo:
-                    return below
-                if a > hi:
-                    return above
-                return _related(op, variables.local[n], const)
-            return local_relation
+            return _local_relation(op, variables, n, const)
         left = compile_tree(node[2], variables, ctx, in_address, False)
 
         def relation_constant() -> Value:
@@ -1786,6 +1783,29 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
             return below
         return _related(op, again_a() if again_a is not None else x, again_b() if again_b is not None else y)
     return relation
+
+
+def _local_relation(op: str, variables: FanucVariables, n: int, const: Value) -> Callable[[], Value]:
+    """``#n op const`` (:func:`_compile_relation`) for a local variable ``n`` and a number: read in the closure;
+    a value with a spread decided on its ends where all of it lies beyond a bound."""
+    below, above, _test = _RELATIONS[op]
+    lo, hi = _certain_bounds(const)
+
+    def local_relation() -> Value:
+        x = variables.local[n]
+        a = x[0]
+        if a.__class__ is SpreadDouble:  # all of the spread beyond a bound: every double of it is
+            if a.hi < lo:
+                return below
+            if a.lo > hi:
+                return above
+            return _spread_related(op, x, const)
+        if a < lo:
+            return below
+        if a > hi:
+            return above
+        return _related(op, variables.local[n], const)
+    return local_relation
 
 
 def _spread_pair(op: str, x: Value, y: Value) -> Value:
