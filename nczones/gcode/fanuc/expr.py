@@ -81,7 +81,8 @@ if TYPE_CHECKING:
 
 __all__ = ["VACANT", "FanucVariables", "Context", "compile_tree", "evaluate_tree", "round_to", "denominator_of", "EvalError",
            "SystemVariableUnknown", "RoundingNotCertain", "ReadingsSplit", "readings", "SHADOW_ON_GRID_BOUND", "variable_index",
-           "variable_number", "literal_number", "integer_of", "SpreadDouble", "LibmSplit", "value_as_is"]
+           "variable_number", "literal_number", "integer_of", "SpreadDouble", "LibmSplit", "value_as_is",
+           "neighbours"]
 
 #: The vacant value: 0 in arithmetic, distinct from 0 in EQ/NE, never written into an address.
 VACANT = (0.0, Fraction(0))
@@ -226,6 +227,10 @@ def double_of(q: Fraction) -> float:
 
 _floor = math.floor
 _NEAR_HALF_LOW, _NEAR_HALF_HIGH = 0.5 - 2.0**-20, 0.5 + 2.0**-20
+#: round_to's first screen for a value with a spread (below 2**20 increments): a spread narrower than
+#: ``_SPREAD_WIDTH`` increments whose double is at least 2**-19 from a half passes :func:`_spread_round`'s test
+#: (``2**-19 >= 2**-20 + 2 * 2**-21``); others go to it.
+_SPREAD_HALF_LOW, _SPREAD_HALF_HIGH, _SPREAD_WIDTH = 0.5 - 2.0**-19, 0.5 + 2.0**-19, 2.0**-21
 #: Below this many increments (``|value| / step``) round_to's double test decides (``x - floor(x)`` is exact there):
 #: see :func:`round_to`.
 _FAST_INCREMENTS = 4503599627370496.0  # 2**52
@@ -275,6 +280,13 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
     :data:`SHADOW_ON_GRID_BOUND` is kept: its readings are within 0.05 increments of it (``5e-15 * 1e8``
     program units, a step at least 1e-5: IS-C inch).
 
+    A value with a spread (a libm result, :class:`SpreadDouble`) is decided here only below ``2**20``
+    increments, its quotient's fraction at least ``2**-19`` from a half and its spread narrower than ``2**-21``
+    increments: every double of the spread is then within ``2**-21`` increments of ``d`` and each of its
+    readings within ``2**-26`` more, so every reading of every double is farther than ``2**-20`` from the half
+    on ``d``'s side and rounds as ``d`` does (a spread across 0 is below ``2**-21`` increments: 0 for all).
+    Anything else goes to :func:`_spread_round` (its ends' readings, GC397 where they part).
+
     >>> round_to((12.3456, None), Fraction(1, 1000)), round_to((-2.5, Fraction(-5, 2)), Fraction(1))
     (Fraction(6173, 500), Fraction(-3, 1))
     >>> round_to((1.2345, None), Fraction(1, 1000))  # 15 digits: 1.2345, in doubles 1234.5 increments
@@ -293,20 +305,26 @@ def round_to(value: tuple, step: Fraction) -> Fraction:
         if sn == 1 and sd % qd == 0 and (d is None or -1e8 < d < 1e8):  # (SHADOW_ON_GRID_BOUND, as constants)
             return q
     if d is not None:
-        if d.__class__ is SpreadDouble:
-            return _spread_round(value, step, sn, sd)  # a libm result: every double of its spread (GC397)
         if sn == 1:
             # |d| / step in doubles (relative error 2**-53): away from a half by max(2**-20, x 2**-40) the
             # nearest integer is that of the exact quotient, of the shadow's and of every reading; nearer, or
-            # beyond 2**52, the exact path below decides
+            # beyond 2**52, the exact path below decides.  A libm result (a spread) passes only as far from a
+            # half as _spread_round's screen asks (its width twice more), else goes to _spread_round
             x = abs(d) * sd
             if x < _FAST_INCREMENTS:
                 m = _floor(x)
                 frac = x - m  # exact (x and m are doubles below 2**52)
-                if not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH and (
+                if d.__class__ is SpreadDouble:
+                    if x < _WIDE_INCREMENTS and not _SPREAD_HALF_LOW < frac < _SPREAD_HALF_HIGH and (
+                            d.hi - d.lo) * sd < _SPREAD_WIDTH:
+                        n = m + 1 if frac > 0.5 else m
+                        return to_fraction(-n if d < 0 else n, sd)
+                elif not _NEAR_HALF_LOW < frac < _NEAR_HALF_HIGH and (
                         x < _WIDE_INCREMENTS or abs(frac - 0.5) > x * _WINDOW):
                     n = m + 1 if frac > 0.5 else m
                     return to_fraction(-n if d < 0 else n, sd)
+        if d.__class__ is SpreadDouble:
+            return _spread_round(value, step, sn, sd)  # a libm result: every double of its spread (GC397)
         if q is None:
             # the double's exact value (its ratio is in lowest terms), without building a Fraction first
             qn, qd = d.as_integer_ratio()
@@ -1123,6 +1141,36 @@ def _libm_value(c: float, exact: bool) -> float:
     return _spread(c, _nextafter(c, -_INF), _nextafter(c, _INF))
 
 
+#: ``c * _NEIGHBOUR`` (:func:`neighbours`): just over half an ulp of ``c``, below one and a 2**-53 part of it.
+_NEIGHBOUR = 2.0**-53 + 2.0**-105
+#: Below this magnitude ``c * _NEIGHBOUR`` would be subnormal (inexact): :func:`neighbours` takes nextafter.
+_NEIGHBOUR_SMALL = 2.0**-969
+
+
+def neighbours(c: float) -> tuple[float, float]:
+    """The two doubles next to ``c`` (below, above), as ``math.nextafter`` gives them, in three floating-point
+    operations where ``|c|`` is at least 2**-969 and at most 1 (a SIN/COS result: the libm spread's hot path).
+
+    Soundness (exactly the neighbours, so the spread is the one libm40 defined): for ``c`` in ``[2**e,
+    2**(e+1))`` with ulp ``u = 2**(e-52)``, ``c * K`` with ``K = 2**-53 + 2**-105`` is ``c 2**-53`` (a double:
+    no underflow above 2**-969) plus ``c 2**-105``, one to two ulps ``v = u 2**-53`` of it, so the rounded
+    ``e = fl(c K)`` lies in ``[c 2**-53 + v, c 2**-53 + 2v]``: above ``u / 2`` (``c >= 2**e``) and at most
+    ``u + v`` (``c 2**-53 <= u - v``).  ``c + e`` is then past the midpoint ``c + u/2`` and within ``v`` of
+    ``c + u``: it rounds to ``c + u``, the next double (also where that is ``2**(e+1)``: the spacing there is
+    ``2u``).  ``c - e`` lies in ``[c - u - v, c - u/2)``: below a ``c`` that is not a power of two the spacing
+    is ``u`` and it rounds to ``c - u``; at ``c = 2**e`` the spacing below is ``u/2``, ``e`` is exactly
+    ``u/2 + v`` and ``c - e`` rounds to ``c - u/2``.  A negative ``c`` is the mirror image (rounding to nearest
+    is symmetric).  tests/gcode/fanuc/test_spread_carry.py compares it with ``math.nextafter``.
+
+    >>> neighbours(1.0), neighbours(-0.49999999999999994)
+    ((0.9999999999999999, 1.0000000000000002), (-0.5, -0.4999999999999999))
+    """
+    if -_NEIGHBOUR_SMALL < c < _NEIGHBOUR_SMALL or not -1.0 <= c <= 1.0:
+        return _nextafter(c, -_INF), _nextafter(c, _INF)
+    e = c * _NEIGHBOUR
+    return (c - e, c + e) if c > 0.0 else (c + e, c - e)
+
+
 def _bounds(d: float) -> tuple[float, float]:
     """``(lo, hi)`` of a double: its spread, or the double twice."""
     if d.__class__ is SpreadDouble:
@@ -1132,42 +1180,74 @@ def _bounds(d: float) -> tuple[float, float]:
 
 def _spread_binary(op: str, a: float, b: float, d: float) -> float:
     """``a op b`` (+ - * /, ``d`` the double computed of ``a`` and ``b``) with the spread of every double the
-    control can compute from the doubles of ``a``'s and ``b``'s spreads.
+    control can compute from the doubles of ``a``'s and ``b``'s spreads (:data:`_SPREAD_OPS`).
 
     Soundness: IEEE rounding to nearest is non-decreasing, so the control's ``fl(x op y)`` lies between
     ``fl`` of the least and of the greatest exact ``x op y`` over the two intervals, and those are at their
     corners (``+ -``: monotone in each operand; ``* /``: bilinear, or monotone in each operand on a box whose
     divisors do not cross 0); the corners computed here in doubles are those very ``fl`` values.  A divisor
     whose spread reaches 0 is GC396 (the control may alarm, GC311)."""
-    if a.__class__ is SpreadDouble:  # (_bounds, inline)
-        alo, ahi = a.lo, a.hi
+    return _SPREAD_OPS[op](a, b, d)
+
+
+def _spread_add(a: float, b: float, d: float) -> float:
+    """``a + b`` with its spread (:func:`_spread_binary`): the sums of the least and of the greatest ends."""
+    if b.__class__ is not SpreadDouble:  # a carries the spread
+        p, r = a.lo + b, a.hi + b  # type: ignore[attr-defined]
+    elif a.__class__ is not SpreadDouble:
+        p, r = a + b.lo, a + b.hi
     else:
-        alo = ahi = a
-    if b.__class__ is SpreadDouble:
-        blo, bhi = b.lo, b.hi
+        p, r = a.lo + b.lo, a.hi + b.hi
+    if p < r and -_INF < p and r < _INF:  # (_spread inline)
+        s = SpreadDouble(d)
+        s.lo, s.hi = p, r
+        return s
+    return _spread(d, p, r)
+
+
+def _spread_sub(a: float, b: float, d: float) -> float:
+    """``a - b`` with its spread (:func:`_spread_binary`): least minus greatest, greatest minus least."""
+    alo, ahi = _bounds(a)
+    blo, bhi = _bounds(b)
+    return _spread(d, alo - bhi, ahi - blo)
+
+
+def _spread_mul(a: float, b: float, d: float) -> float:
+    """``a * b`` with its spread (:func:`_spread_binary`): a plain factor scales the other's two ends (the
+    product is monotone in the spread operand, its direction the plain factor's sign: sorted after), two
+    spreads take the least and the greatest of the four corner products."""
+    if b.__class__ is not SpreadDouble:  # a carries the spread, b is plain: two corners
+        p, r = a.lo * b, a.hi * b  # type: ignore[attr-defined]
+    elif a.__class__ is not SpreadDouble:
+        p, r = a * b.lo, a * b.hi
     else:
-        blo = bhi = b
-    if op == "+":
-        return _spread(d, alo + blo, ahi + bhi)
-    if op == "-":
-        return _spread(d, alo - bhi, ahi - blo)
-    if op == "*":
-        if blo == bhi or alo == ahi:  # a plain factor: two corners
-            p, r = (alo * blo, ahi * blo) if blo == bhi else (alo * blo, alo * bhi)
-            if p > r:
-                p, r = r, p
-            if -_INF < p and r < _INF:  # (_spread inline)
-                s = SpreadDouble(d)
-                s.lo, s.hi = p, r
-                return s
-            return _spread(d, p, r)
+        alo, ahi, blo, bhi = a.lo, a.hi, b.lo, b.hi
         corners = (alo * blo, alo * bhi, ahi * blo, ahi * bhi)
-    else:
-        if blo <= 0.0 <= bhi:
-            raise LibmSplit("GC396", f"a divisor {b!r} whose spread {blo!r} .. {bhi!r} reaches 0 (an alarm there, "
-                            f"GC311); {_SPREAD_NOTE}")
-        corners = (alo / blo, alo / bhi, ahi / blo, ahi / bhi)
+        return _spread(d, min(corners), max(corners))
+    if p > r:
+        p, r = r, p
+    if p < r and -_INF < p and r < _INF:  # (_spread inline)
+        s = SpreadDouble(d)
+        s.lo, s.hi = p, r
+        return s
+    return _spread(d, p, r)
+
+
+def _spread_div(a: float, b: float, d: float) -> float:
+    """``a / b`` with its spread (:func:`_spread_binary`): the four corner quotients, the divisor's spread not
+    reaching 0 (GC396 where it does)."""
+    alo, ahi = _bounds(a)
+    blo, bhi = _bounds(b)
+    if blo <= 0.0 <= bhi:
+        raise LibmSplit("GC396", f"a divisor {b!r} whose spread {blo!r} .. {bhi!r} reaches 0 (an alarm there, "
+                        f"GC311); {_SPREAD_NOTE}")
+    corners = (alo / blo, alo / bhi, ahi / blo, ahi / bhi)
     return _spread(d, min(corners), max(corners))
+
+
+#: ``+ - * /`` of operands one at least with a spread (:func:`_spread_binary`).
+_SPREAD_OPS: dict[str, Callable[[float, float, float], float]] = {
+    "+": _spread_add, "-": _spread_sub, "*": _spread_mul, "/": _spread_div}
 
 
 def _spread_arithmetic(op: str, x: Value, y: Value) -> Value:
@@ -1262,7 +1342,8 @@ def _over_spread(what: str, fn: Callable[..., Value], *args: float) -> Value:
             first, alarm = alarms[0]
             raise LibmSplit("GC396", f"{what}: the doubles {', '.join(map(repr, first))} of the arguments' spreads "
                             f"give an alarm ({alarm.message}), others a result; {_SPREAD_NOTE}")
-        raise alarms[0][1]
+        fn(*(float(a) for a in args))  # every double alarms, the arguments' own too: that alarm, as without a spread
+        raise alarms[0][1]  # pragma: no cover (the own doubles are among the combinations)
     mine = fn(*(float(a) for a in args))
     lo, hi = min(lows), max(highs)
     if lo == hi:
@@ -1517,18 +1598,92 @@ def _trigonometric(name: str, fn: Callable[[float], float], arg: Callable[[], Va
 
     def trig() -> Value:
         d = arg()[0]
-        if d.__class__ is SpreadDouble:
-            return _over_spread(upper, lambda c: _circular(name, c), d)
+        if d.__class__ is SpreadDouble or d == 0.0:
+            return _trigonometric_value(name, fn, upper, d)
         r = d * math.pi / 180.0
         if r - r:  # NaN or infinite, or radians that overflow
             _radians(d, upper)
         c = fn(r)
-        if d == 0.0:  # SIN of 0 is 0, COS of 0 is 1: exactly (_libm_value)
-            return (c, None)
         s = SpreadDouble(c)  # (_libm_value inline: |c| <= 1, its neighbours are finite)
-        s.lo, s.hi = _nextafter(c, -_INF), _nextafter(c, _INF)
+        if -_NEIGHBOUR_SMALL < c < _NEIGHBOUR_SMALL:
+            s.lo, s.hi = _nextafter(c, -_INF), _nextafter(c, _INF)
+        else:  # (neighbours inline)
+            e = c * _NEIGHBOUR
+            s.lo, s.hi = (c - e, c + e) if c > 0.0 else (c + e, c - e)
         return (s, None)
     return trig
+
+
+def _trigonometric_value(name: str, fn: Callable[[float], float], upper: str, d: float) -> Value:
+    """SIN or COS (``fn``, ``upper`` its name) of ``d`` degrees with its spread (none at 0)."""
+    if d.__class__ is SpreadDouble:
+        return _over_spread(upper, lambda c: _circular(name, c), d)
+    r = d * math.pi / 180.0
+    if r - r:  # NaN or infinite, or radians that overflow
+        _radians(d, upper)
+    c = fn(r)
+    if d == 0.0:  # SIN of 0 is 0, COS of 0 is 1: exactly (_libm_value)
+        return (c, None)
+    s = SpreadDouble(c)  # (_libm_value inline: |c| <= 1, its neighbours are finite)
+    s.lo, s.hi = _nextafter(c, -_INF), _nextafter(c, _INF)
+    return (s, None)
+
+
+def _compile_polar(node: tuple, variables: FanucVariables, ctx: Context,
+                   in_address: bool) -> Callable[[], Value] | None:
+    """``r * SIN[t]`` or ``r * COS[t]`` (a radius times the sine or cosine of an angle: bolt circles, spirals)
+    as one closure, else None.  The product of the trigonometric function's result (no shadow, a spread) has no
+    shadow, so ``r`` is compiled for its double only; the same operations in the same order as the two closures
+    (:func:`_trigonometric`, then ``*``: ``r`` read first, the angle's errors next) give the same value, without
+    building the function's spread as a value: for a plain ``r`` and a plain angle other than 0 the product's
+    spread is ``r`` times the result's two neighbours (:func:`_spread_mul`, sorted: multiplying by ``r`` is
+    monotone), anything else goes through :func:`_trigonometric`'s value and :func:`_spread_mul`."""
+    right = node[3]
+    if right[0] != FN or right[1] not in _TRIGONOMETRY:
+        return None
+    name = right[1]
+    fn = _TRIGONOMETRY[name]
+    upper = name.upper()
+    left = compile_tree(node[2], variables, ctx, in_address, False)
+    angle = compile_tree(right[2], variables, ctx, in_address, False)
+    pi, spread, small, k, inf = math.pi, SpreadDouble, _NEIGHBOUR_SMALL, _NEIGHBOUR, _INF  # (closure cells)
+    minus_small, minus_inf = -small, -inf
+
+    def polar() -> Value:
+        a = left()[0]
+        t = angle()[0]
+        if t.__class__ is spread or a.__class__ is spread or t == 0.0:
+            return _product(a, _trigonometric_value(name, fn, upper, t)[0])
+        r = t * pi / 180.0
+        if r - r:  # NaN or infinite, or radians that overflow
+            _radians(t, upper)
+        c = fn(r)
+        d = a * c
+        if d - d:
+            check_double(d)
+        if minus_small < c < small:
+            p, q = a * _nextafter(c, minus_inf), a * _nextafter(c, inf)
+        else:  # (neighbours inline: c - e and c + e are c's two neighbours)
+            e = c * k
+            p, q = a * (c - e), a * (c + e)
+        if p > q:
+            p, q = q, p
+        if p < q and minus_inf < p and q < inf:  # (_spread inline)
+            s = spread(d)
+            s.lo, s.hi = p, q
+            return (s, None)
+        return (_spread(d, p, q), None)
+    return polar
+
+
+def _product(a: float, b: float) -> Value:
+    """``a * b`` of two doubles without shadows (:func:`_double_arithmetic`'s ``mul``), a spread carried."""
+    d = a * b
+    if d - d:
+        check_double(d)
+    if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
+        return (_spread_mul(a, b, d), None)
+    return (d, None)
 
 
 def _compile_binary(node: tuple, variables: FanucVariables, ctx: Context, in_address: bool,
@@ -1539,6 +1694,10 @@ def _compile_binary(node: tuple, variables: FanucVariables, ctx: Context, in_add
         return _compile_relation(op, node, variables, ctx, in_address)
     if op in _INTEGER_BINARY:
         return _compile_integer_binary(op, node, variables, ctx, in_address)
+    if op == "*":
+        polar = _compile_polar(node, variables, ctx, in_address)
+        if polar is not None:
+            return polar
     # + - * / read their operands' shadows (only for a caller that reads the result's)
     inner_exact = exact
     if node[3][0] == NUM and _SLOTS:
@@ -1573,7 +1732,9 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
     """EQ NE GT GE LT LE: the doubles compared (vacant is 0, and differs from 0 in EQ/NE), the result the same
     in every reading of the operands (:func:`_related`; GC398 where not).  Decided in doubles where the
     operands are farther apart than the readings reach (:func:`_certain_bounds` for a number on the right:
-    one more comparison than the plain test), so a WHILE condition costs about what it did."""
+    one more comparison than the plain test), so a WHILE condition costs about what it did.  A value with a
+    spread against a number is decided on the spread's ends where all of it lies beyond a bound (every double
+    of it then does: the ends are the least and the greatest), else by :func:`_spread_related`."""
     below, above, _test = _RELATIONS[op]
     vacancy = op in ("eq", "ne")
     again_a = _again(node[2], variables, ctx, in_address)
@@ -1582,17 +1743,7 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
         lo, hi = _certain_bounds(const)
         n = None if vacancy else _local_index(node[2])
         if n is not None:  # a local variable and a number (#1 LT 10): read in the closure
-            def local_relation() -> Value:
-                x = variables.local[n]
-                a = x[0]
-                if a.__class__ is SpreadDouble:
-                    return _spread_versus(op, x, const, lo, hi)
-                if a < lo:
-                    return below
-                if a > hi:
-                    return above
-                return _related(op, variables.local[n], const)
-            return local_relation
+            return _local_relation(op, variables, n, const)
         left = compile_tree(node[2], variables, ctx, in_address, False)
 
         def relation_constant() -> Value:
@@ -1600,8 +1751,12 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
             if x is VACANT and vacancy:
                 return above  # a vacant value differs from a number (EQ false, NE true)
             a = x[0]
-            if a.__class__ is SpreadDouble:
-                return _spread_versus(op, x, const, lo, hi)
+            if a.__class__ is SpreadDouble:  # (as in local_relation)
+                if a.hi < lo:
+                    return below
+                if a.lo > hi:
+                    return above
+                return _spread_related(op, x, const)
             if a < lo:
                 return below
             if a > hi:
@@ -1631,18 +1786,27 @@ def _compile_relation(op: str, node: tuple, variables: FanucVariables, ctx: Cont
     return relation
 
 
-def _spread_versus(op: str, x: Value, const: Value, lo: float, hi: float) -> Value:
-    """A relation of a value with a spread and a constant (``lo``/``hi`` its :func:`_certain_bounds`): decided
-    on the spread's ends where all of it lies beyond a bound (every double of it then does), else
-    :func:`_spread_related`."""
-    a = x[0]
+def _local_relation(op: str, variables: FanucVariables, n: int, const: Value) -> Callable[[], Value]:
+    """``#n op const`` (:func:`_compile_relation`) for a local variable ``n`` and a number: read in the closure;
+    a value with a spread decided on its ends where all of it lies beyond a bound."""
     below, above, _test = _RELATIONS[op]
-    xlo, xhi = a.lo, a.hi  # (x carries a spread)
-    if xhi < lo:
-        return below
-    if xlo > hi:
-        return above
-    return _spread_related(op, x, const)
+    lo, hi = _certain_bounds(const)
+
+    def local_relation() -> Value:
+        x = variables.local[n]
+        a = x[0]
+        if a.__class__ is SpreadDouble:  # all of the spread beyond a bound: every double of it is
+            if a.hi < lo:
+                return below
+            if a.lo > hi:
+                return above
+            return _spread_related(op, x, const)
+        if a < lo:
+            return below
+        if a > hi:
+            return above
+        return _related(op, variables.local[n], const)
+    return local_relation
 
 
 def _spread_pair(op: str, x: Value, y: Value) -> Value:
@@ -1720,7 +1884,7 @@ def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
             if d - d:
                 check_double(d)
             if a.__class__ is SpreadDouble:
-                return (_spread_binary("*", a, b, d), None)
+                return (_spread_mul(a, b, d), None)
             return (d, None)
         return mul_double
     if op == "+":
@@ -1731,7 +1895,7 @@ def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
                 check_double(d)
             if qa is None:
                 if a.__class__ is SpreadDouble:
-                    return (_spread_binary("+", a, b, d), None)
+                    return (_spread_add(a, b, d), None)
                 return (d, None)
             q: Any = q_add(qa, qb)
             return (d, q) if q._numerator / q._denominator == d else (d, None)
@@ -1745,7 +1909,7 @@ def _local_constant(op: str, variables: FanucVariables, n: int, const: Value,
             check_double(d)
         if qa is None:
             if a.__class__ is SpreadDouble:
-                return (_spread_binary("*", a, b, d), None)
+                return (_spread_mul(a, b, d), None)
             return (d, None)
         m, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
         return (d, to_fraction(m, den)) if m / den == d else (d, None)
@@ -1772,7 +1936,7 @@ def _double_arithmetic(op: str, left: Callable[[], Value], right: Callable[[], V
             if d - d:  # NaN or infinity (d - d is NaN for both, 0.0 otherwise)
                 check_double(d)
             if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-                return (_spread_binary("/", a, b, d), None)
+                return (_spread_div(a, b, d), None)
             return (d, None)
         return div
     if op == "+":
@@ -1783,7 +1947,7 @@ def _double_arithmetic(op: str, left: Callable[[], Value], right: Callable[[], V
             if d - d:
                 check_double(d)
             if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-                return (_spread_binary("+", a, b, d), None)
+                return (_spread_add(a, b, d), None)
             return (d, None)
         return add
     if op == "-":
@@ -1794,7 +1958,7 @@ def _double_arithmetic(op: str, left: Callable[[], Value], right: Callable[[], V
             if d - d:
                 check_double(d)
             if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-                return (_spread_binary("-", a, b, d), None)
+                return (_spread_sub(a, b, d), None)
             return (d, None)
         return sub
 
@@ -1805,7 +1969,7 @@ def _double_arithmetic(op: str, left: Callable[[], Value], right: Callable[[], V
         if d - d:
             check_double(d)
         if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-            return (_spread_binary("*", a, b, d), None)
+            return (_spread_mul(a, b, d), None)
         return (d, None)
     return mul
 
@@ -1814,7 +1978,7 @@ def _double_constant(op: str, left: Callable[[], Value], b: float) -> Callable[[
     """``left op b`` for + - * / (a divisor not 0) when only the double is read, else None."""
     if op == "/" and b == 0.0:
         return None
-    fn = _PLAIN_OPS[op]
+    fn, spread = _PLAIN_OPS[op], _SPREAD_OPS[op]
 
     def constant() -> Value:
         a = left()[0]
@@ -1822,7 +1986,7 @@ def _double_constant(op: str, left: Callable[[], Value], b: float) -> Callable[[
         if d - d:
             check_double(d)
         if a.__class__ is SpreadDouble:
-            return (_spread_binary(op, a, b, d), None)
+            return (spread(a, b, d), None)
         return (d, None)
     return constant
 
@@ -1860,7 +2024,7 @@ def _exact_div(left: Callable[[], Value], right: Callable[[], Value]) -> Callabl
             check_double(d)
         if qa is None or qb is None or not qb._numerator:
             if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-                return (_spread_binary("/", a, b, d), None)
+                return (_spread_div(a, b, d), None)
             return (d, None)
         q: Any = q_div(qa, qb)
         return (d, q) if q._numerator / q._denominator == d else (d, None)
@@ -1878,7 +2042,7 @@ def _exact_add(left: Callable[[], Value], right: Callable[[], Value]) -> Callabl
             check_double(d)
         if qa is None or qb is None:
             if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-                return (_spread_binary("+", a, b, d), None)
+                return (_spread_add(a, b, d), None)
             return (d, None)
         q: Any = qop(qa, qb)
         return (d, q) if q._numerator / q._denominator == d else (d, None)
@@ -1896,7 +2060,7 @@ def _exact_sub(left: Callable[[], Value], right: Callable[[], Value]) -> Callabl
             check_double(d)
         if qa is None or qb is None:
             if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-                return (_spread_binary("-", a, b, d), None)
+                return (_spread_sub(a, b, d), None)
             return (d, None)
         q: Any = qop(qa, qb)
         return (d, q) if q._numerator / q._denominator == d else (d, None)
@@ -1912,7 +2076,7 @@ def _exact_mul(left: Callable[[], Value], right: Callable[[], Value]) -> Callabl
             check_double(d)
         if qa is None or qb is None:
             if a.__class__ is SpreadDouble or b.__class__ is SpreadDouble:
-                return (_spread_binary("*", a, b, d), None)
+                return (_spread_mul(a, b, d), None)
             return (d, None)
         # q_mul, the Fraction built only when it rounds to the double (int / int rounds correctly)
         n, den = qa._numerator * qb._numerator, qa._denominator * qb._denominator
@@ -1945,7 +2109,7 @@ def _constant_div(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], 
             check_double(d)
         if qa is None or not exact:
             if a.__class__ is SpreadDouble:
-                return (_spread_binary("/", a, b, d), None)
+                return (_spread_div(a, b, d), None)
             return (d, None)
         n, den = qa._numerator * bn, qa._denominator * bd
         return (d, to_fraction(n, den)) if n / den == d else (d, None)
@@ -1960,7 +2124,7 @@ def _constant_add(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], 
             check_double(d)
         if qa is None:
             if a.__class__ is SpreadDouble:
-                return (_spread_binary("+", a, b, d), None)
+                return (_spread_add(a, b, d), None)
             return (d, None)
         q: Any = q_add(qa, qb)
         return (d, q) if q._numerator / q._denominator == d else (d, None)
@@ -1975,7 +2139,7 @@ def _constant_sub(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], 
             check_double(d)
         if qa is None:
             if a.__class__ is SpreadDouble:
-                return (_spread_binary("-", a, b, d), None)
+                return (_spread_sub(a, b, d), None)
             return (d, None)
         q: Any = q_sub(qa, qb)
         return (d, q) if q._numerator / q._denominator == d else (d, None)
@@ -1992,7 +2156,7 @@ def _constant_mul(left: Callable[[], Value], b: float, qb: Any) -> Callable[[], 
             check_double(d)
         if qa is None:
             if a.__class__ is SpreadDouble:
-                return (_spread_binary("*", a, b, d), None)
+                return (_spread_mul(a, b, d), None)
             return (d, None)
         n, den = qa._numerator * bn, qa._denominator * bd  # q_mul, built only when it rounds to the double
         return (d, to_fraction(n, den)) if n / den == d else (d, None)
