@@ -591,30 +591,32 @@ class Cycles:
         (at the clear level, the same token) above R exactly where the clear level is, so every repeat's rows are
         the same levels (:meth:`_sequence`; the pecks as many: LinuxCNC counts them from the same R, bottom and
         Q).  In G91 R and the bottom are the same doubles (the same initial level, R and bottom words): the normal
-        axis's chain error bounds them already.  None: a comparison too close to call (the next block then runs
-        :meth:`_general`, which declines), or a block in G20 or in G90 with a G91 chain open."""
+        axis's chain error bounds them already.  In G20 the levels are the block's millimetres and a hole line's
+        words are scaled as :meth:`_general` scales them (``fl(w * fl(25.4))``: the same doubles, the same bounds).
+        None: a comparison too close to call (the next block then runs :meth:`_general`, which declines), or a
+        block in G90 with a G91 chain open."""
         st = self.st
         mode = st.motion
-        if (st.slow and not st.inc) or getattr(st, "inch", False):
+        if st.chained and not st.inc:
             return None
         try:
             up = self.below(self.il, r)  # type: ignore[arg-type]
             seq = self._sequence(r, cc, clear)
         except self.declined:
             return None
-        return (mode, st.plane, self.retract, st.off, axes, st.inc, r[0], up, seq)
+        return (mode, st.plane, self.retract, st.off, axes, st.inc, r[0], up, seq, st.inch)
 
     def _steady(self, pairs: tuple[tuple[int, float], ...], vl: float | None) -> bool:
         """A hole line (no R, bottom, P or Q) in the state the last cycle block left (:meth:`_template`), on a
         machine of the plane's three axes, not at a window's end: its rows from the template; False (nothing
         done): not such a line."""
         st = self.st
-        mode, plane, retract, off, axes, inc, r, up, seq = self.steady  # type: ignore[misc]
+        mode, plane, retract, off, axes, inc, r, up, seq, inch = self.steady  # type: ignore[misc]
         cols = st.columns
         n = len(cols[0])
         if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
                 or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.inc != inc \
-                or (st.slow and not inc) or len(cols) != 3 or getattr(st, "inch", False) \
+                or st.inch != inch or (st.chained and not inc) or len(cols) != 3 \
                 or (mode in (84, 86) and st.spindle != 1):
             return False  # (G84 and G86 after M3: else _general checks the spindle, and declines G84's)
         try:
@@ -629,9 +631,9 @@ class Cycles:
         wa = wb = None
         for i, v in pairs:
             if i == ia:
-                wa = v
+                wa = v * _INCH if inch else v  # (millimetres, as _general's words)
             elif i == ib:
-                wb = v
+                wb = v * _INCH if inch else v
             else:
                 return False
         ca, cb, cz = cols[ia], cols[ib], cols[ic]
