@@ -65,7 +65,9 @@ LEVELS = ["2", "2.0", "[2]", "02.000", "+2", "0.3", "0.30000000000000001", "[#1]
 #: moves, offsets, units and cycles that change what its level is.
 BETWEEN = ["", "", "G0 X3 Y4", "G1 X1 F50", "G91 G0 Z0", "G91 G0 Z0.1\nG0 Z-0.1\nG90", "G55", "G20", "G21",
            "G2 X1 Y0 I0.5 J0", "G0 Z2 (comment)", "G99 G81 X1 Y1 Z-1 R5\nG80", "G98 G81 X1 Y1 Z-1 R2\nG80",
-           "G0 Z0.3 X1", "G43 H1", "G1 Z[#1] F50"]
+           "G0 Z0.3 X1", "G43 H1", "G1 Z[#1] F50", "G99 G81 X1 Y1 Z-1 R2\nG80\nG0 X3 Y4",
+           "G98 G81 X1 Y1 Z-1 R5\nG80\nG1 X2 F50", "G99 G81 X1 Y1 Z-1 R2\nG80\nG0 Z5 X1",
+           "G99 G81 X1 Y1 Z-1 R2\nG80\nG91 G0 X1 Z0\nG90"]
 
 
 @st.composite
@@ -107,6 +109,11 @@ BY_VALUE = {
     "another offset": "G21 G90 G17 G54 F100\nG0 Z2\nG55\nG98 G81 X1 Y1 Z-1 R2\nX2\nM30\n",
     "other units": "G21 G90 G17 G54 F100\nG0 Z2\nG20\nG98 G81 X1 Y1 Z-1 R2\nX2\nM30\n",
     "a G91 move": "G21 G90 G17 G54 F100\nG0 Z1\nG91 G0 Z2\nG90 G98 G81 X1 Y1 Z-1 R2\nX2\nM30\n",
+    # the clear level a cycle left the tool at (XY moves since), R written as it again
+    "a cycle's clear level": "G21 G90 G17 G54 F100\nG0 Z20\nG99 G81 X1 Y1 Z-1 R2\nX2\nG80\nG0 X0 Y0\nM3 S100\n"
+                             "G99 G84 X3 Z-1 R2\nX4\nM30\n",
+    "a G98 cycle's clear level": "G21 G90 G17 G54 F100\nG0 Z20\nG98 G81 X1 Y1 Z-1 R2\nG80\nG1 X0 Y0 F50\n"
+                                 "G98 G83 X3 Z-1 R20 Q2\nX4\nM30\n",
     "a cycle since": "G21 G90 G17 G54 F100\nG0 Z2\nG99 G81 X1 Y1 Z-1 R5\nG80\nG0 X0\nG98 G81 X1 Y1 Z-1 R2\nX2\n"
                      "M30\n",
 }
@@ -123,8 +130,8 @@ NOT_BY_VALUE = {
     "equal doubles of different values": "G21 G90 G17 G54 F100\nG0 Z0.3\nG98 G81 X1 Y1 Z-1 R0.30000000000000001\n",
     "an expression": "G21 G90 G17 G54 F100\nG0 Z[0.1 * 3]\nG98 G81 X1 Y1 Z-1 R0.30000000000000004\n",
     "a G91 move to it": "G21 G90 G17 G54 F100\nG0 Z2\nG91 G0 Z0\nG90 G98 G81 X1 Y1 Z-1 R2\n",
-    "a cycle moved the tool since": "G21 G90 G17 G54 F100\nG0 Z5\nG99 G81 X1 Y1 Z-1 R5.0\nG80\nG0 X0\n"
-                                    "G98 G81 X1 Y1 Z-1 R5\n",
+    "a G91 move after a cycle": "G21 G90 G17 G54 F100\nG0 Z5\nG99 G81 X1 Y1 Z-1 R5.0\nG80\nG91 G0 X1 Z0\n"
+                                "G90 G98 G81 X1 Y1 Z-1 R5\n",
 }
 
 

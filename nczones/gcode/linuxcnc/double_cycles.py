@@ -276,7 +276,7 @@ class Cycles:
 
     __slots__ = ("st", "declined", "retract", "last", "il", "il_off", "il_axis", "il_inch", "r", "r_tok", "z", "p", "mark",
                  "pos_tok", "tokens", "steady",
-                 "lathe", "q", "peck_err", "pecks", "lits", "blank")
+                 "lathe", "q", "peck_err", "pecks", "lits", "blank", "track")
 
     def __init__(self, st: Any, declined: type[Exception], machine: Any):
         self.st = st
@@ -304,6 +304,9 @@ class Cycles:
         #: inch)`` (:func:`level_code`; ``text`` None: an expression), else None (a cycle block moved it since)
         self.blank = (None,) * len(st.axes)
         self.lits: list[Any] = list(self.blank)
+        #: motions set ``lits`` (a text that may write a cycle, :func:`may_cycle`, without compensation): then a
+        #: cycle block leaves its clear level's token there, valid until a motion moves that axis
+        self.track = False
         self.end()
 
     def end(self) -> None:
@@ -323,12 +326,15 @@ class Cycles:
     def level(self, i: int) -> Any:
         """The token of where the tool stands on axis ``i``: a G90 literal word's (:func:`level_code`), as R's
         (:meth:`_words`: its exact value, the offsets' ``id``, the units; the full path's exact ``w + offset``, the
-        same for both), so a level equal to R by value is seen equal (``G0 Z2`` then ``G98 G81 ... R2``); else a
-        fresh one (an expression, G91, an arc's or a cycle's own levels)."""
+        same for both), so a level equal to R by value is seen equal (``G0 Z2`` then ``G98 G81 ... R2``); the
+        clear level's token when the last motion of the axis was a cycle block's (the tool left there: ``G80``,
+        ``G0 X0 Y0``, then a cycle whose R is that level); else a fresh one (an expression, G91)."""
         lit = self.lits[i]
         if lit is None or lit[0] is None:
             return self._fresh()
         text, off, inch = lit
+        if text == "=":  # (the clear level a cycle block left the tool at, :meth:`run`)
+            return off
         return ("q", Fraction(text) if "/" in text else decimal_value(text)), id(off), inch
 
     def below(self, a: tuple, b: tuple) -> bool:
@@ -401,7 +407,10 @@ class Cycles:
         """A cycle block (the plan's ``CY``): its rows (the module's docstring); False (the program goes on)."""
         if not (vr is None and vp is None and vq is None and self.steady is not None and self._steady(pairs, vl)):
             self._general(pairs, vr, vp, text, vq, vl)
-        self.lits[:] = self.blank  # (the block moved the plane's axes: no literal word is where they stand)
+        lits = self.lits
+        lits[:] = self.blank  # (the block moved the plane's axes: no literal word is where they stand)
+        if self.track:  # (the tool at the clear level: its token, until a motion moves the normal axis)
+            lits[self.il_axis] = ("=", self.pos_tok, None)
         return False
 
     def _general(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,

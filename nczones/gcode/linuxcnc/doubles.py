@@ -560,6 +560,7 @@ class _Pass:
         #: G41/G42 the test misses, "G4 1" say, is declined: double_comp.comp_body without a Comp)
         self.cc = Comp(self, machine, Declined) if getattr(machine, "cutter_compensation", "none") == "linuxcnc" \
             and not self.diameter and _may_compensate(text) else None
+        self.cyc.track = self.cycle_text and self.cc is None  # (motions hand the cycles their literal words)
         self.spindle = 0  # M3 1, M4 -1, stopped 0: what G84 and G86 check (.double_cycles.spindle_body)
         self.unset = set(_NOTED)
         #: the groups assumed at a motion and their codes (DoublePath.assumed); what each starts as on the full path
