@@ -59,7 +59,7 @@ the text's :func:`~nczones.gcode.lexer.decimal_value` as the full path reads it,
 same sticky R word; where the tool stands, a G90 motion's literal word, :meth:`Cycles.level`, so ``G0 Z2`` then
 ``G98 G81 ... R2`` compares equal by value; with the same offsets, the same tuple of doubles, hence the same exact offsets; in G91
 R's token and the initial level's; the tool's level is the clear level's token when no motion came after the
-last cycle block); else the doubles must differ by more than both levels' bounds (``(|a| + |b| + 2 offsets)
+last cycle block, or in a text that may write a cycle no motion of that axis: :meth:`Cycles.run`); else the doubles must differ by more than both levels' bounds (``(|a| + |b| + 2 offsets)
 2**-52``, taken twice over, plus a G91 level's own error); a closer pair declines (equal doubles of two
 different exact values: ``R0.30000000000000001`` then ``R0.3``, where the full path's tool is above R and makes
 two rapids).
