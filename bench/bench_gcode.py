@@ -277,18 +277,27 @@ CYCLE_FORMS = {
     "g89": ("G99 G89 X1 Y1 Z-3 R2 P0.5", "X[#1 + {x}] Y{y}"),
     "g84": ("M3 S500\nG99 G84 X1 Y1 Z-3 R2", "X[#1 + {x}] Y{y}"),
     "g86": ("M3 S500\nG98 G86 X1 Y1 Z-3 R2 P0.5", "X[#1 + {x}] Y{y}"),
+    # cyc41: G20 hole lines (the template), a G98 R equal to the initial level by value, G83 in G91
+    "g20": ("G99 G81 X1 Y1 Z-0.1 R0.1", "X[#1 + {x}] Y{y}"),
+    "g98v": ("G98 G81 X1 Y1 Z-3 R20", "X[#1 + {x}] Y{y}"),
+    "g83i": ("G91 G99 G83 X1 Y1 Z-5 R-18 Q2", "X[#1 * 0.1 + {x}] Y{y}"),
 }
+#: the forms whose hole lines are G91 increments (closed by ``G90 G80`` and a move back), and those in inches
+_G91_FORMS = frozenset({"g91l", "g83i"})
+_G20_FORMS = frozenset({"g20"})
 
 
 def cycle_program(n: int, form: str = "g91l", seed: int = 41) -> str:
     """About ``n`` lines of canned cycle holes whose X is an expression, 1000 a cycle (:data:`CYCLE_FORMS`):
     ``g91l`` a G91 G81 hole pattern (X and Y increments, ``L1``-``L4`` on most lines), ``g73`` chip-break pecks,
     ``g84``-``g89`` tapping and boring (the cycles the double pass took from cyc40 on; :func:`drill_expr_program`
-    is G81's)."""
+    is G81's); from cyc41: ``g20`` G81 in inches, ``g98v`` a G98 cycle whose R equals the initial level by value
+    (``Z20`` then ``R20``), ``g83i`` G83 pecks in G91."""
     rnd = random.Random(seed)
     first, hole = CYCLE_FORMS[form]
-    out = ["G21 G90 G17 G54", "G43 H1 G0 Z20", "G0 X0 Y0", "F300", "#1 = 10"]
-    inc = form == "g91l"
+    units = "G20" if form in _G20_FORMS else "G21"
+    out = [f"{units} G90 G17 G54", "G43 H1 G0 Z20", "G0 X0 Y0", "F300", "#1 = 10"]
+    inc = form in _G91_FORMS
     while len(out) < n - 2:
         out.append(first)
         for _ in range(min(1000, n - 3 - len(out))):

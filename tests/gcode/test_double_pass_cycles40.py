@@ -156,7 +156,6 @@ def test_drilling_programs_the_pass_follows(name):
 
 
 DECLINED = {
-    "G91 pecks": ("G21 G90 G17 G54 F100\nG0 Z5\nG91 G99 G83 X1 Y1 Z-1 R-1 Q0.5\n", "peck cycle in G91"),
     "L not a whole number": ("G21 G90 G17 G54 F100\nG0 Z5\nG91 G99 G81 X1 Z-1 R-1 L2.5\n", "whole number"),
     "L0": ("G21 G90 G17 G54 F100\nG0 Z5\nG91 G99 G81 X1 Z-1 R-1 L0\n", "below 1"),
     "L at the bound": ("G21 G90 G17 G54 F100\nG0 Z5\nG91 G99 G81 X1 Z-1 R-1 L5\n", "bound"),

@@ -39,7 +39,11 @@ the bottom's ``fl(r + Z')``: each is a step of a G91 chain, whose error the pass
 set before the rows it bounds are added).  In G20 a word's millimetres are ``fl(w * fl(25.4))`` as a G20 move's
 (:mod:`.double_units`): a G90 row within ``3.6 (|x| + offsets) 2**-53`` of its exact value (inside the widening,
 and inside the levels' tolerance below), a G91 step adding :mod:`.double_units`' term (:meth:`Cycles._units`);
-the pecks counted in the program's inches as LinuxCNC counts them, their rows in millimetres.  G73's and G83's peck rows: ``fl(R' - fl(k Q'))`` drifts from the
+the pecks counted in the program's inches as LinuxCNC counts them, their rows in millimetres.  In G91 the pecks
+are counted from R ``fl(R' + old)`` and the bottom ``fl(r + Z')``, ``old`` the double of the initial level in
+program units, which the pass has only within its bound: :meth:`Cycles._peck_count` counts for every double it may
+be (one when its exact value is a literal's) and declines unless the counts agree; a G91 R's error is added to the
+peck rows' bound.  G73's and G83's peck rows: ``fl(R' - fl(k Q'))`` drifts from the
 exact ``R - k Q`` by up to some ``k`` ulps of Q; :meth:`Cycles._pecks` bounds that drift and adds the bound to
 the normal axis's widening (the pass's ``xerr``, as a G91 chain's, from the first peck on: :func:`_row` sets it
 again after a window is handed over, which recomputes it from the chains alone).
@@ -52,16 +56,17 @@ The branches (how many rows a block makes) are the full path's exact comparisons
 decides each in doubles only where it cannot differ from the exact one (:meth:`Cycles.below`): two levels
 known to have the same exact value are equal (a token each: R's is its exact value when it is a literal,
 the text's :func:`~nczones.gcode.lexer.decimal_value` as the full path reads it, :func:`r_token`, or the
-same sticky R word; with the same offsets, the same tuple of doubles, hence the same exact offsets; in G91
+same sticky R word; where the tool stands, a G90 motion's literal word, :meth:`Cycles.level`, so ``G0 Z2`` then
+``G98 G81 ... R2`` compares equal by value; with the same offsets, the same tuple of doubles, hence the same exact offsets; in G91
 R's token and the initial level's; the tool's level is the clear level's token when no motion came after the
-last cycle block); else the doubles must differ by more than both levels' bounds (``(|a| + |b| + 2 offsets)
+last cycle block, or in a text that may write a cycle no motion of that axis: :meth:`Cycles.run`); else the doubles must differ by more than both levels' bounds (``(|a| + |b| + 2 offsets)
 2**-52``, taken twice over, plus a G91 level's own error); a closer pair declines (equal doubles of two
 different exact values: ``R0.30000000000000001`` then ``R0.3``, where the full path's tool is above R and makes
 two rapids).
 
 Declined (besides what :mod:`.doubles` declines): a cycle before the program sets G98 or G99 or the plane
-(the full path notes the assumed mode), G73 and G83 in G91 (LinuxCNC counts the
-pecks from a double of the initial level in program coordinates, which the pass does not have), on a lathe
+(the full path notes the assumed mode), G73 and G83 in G91 whose peck count the initial level's possible
+doubles do not decide (:meth:`Cycles._peck_count`), on a lathe
 (an X word may be a diameter), a units change while a cycle is modal (the full path converts the initial
 level), without a positive feed, without R or the bottom the first time, an L that is not a whole number
 (within 0.0001), below 1 or at the loop bound, a P with G73, G81, G83 or G85, a G82, G86 or G89 without a P
@@ -76,6 +81,7 @@ level with the offsets), G87 and G88 (the full path's unknown).
 from __future__ import annotations
 
 import math
+import re
 from fractions import Fraction
 
 from ...motion import PLANE_AXES
@@ -87,7 +93,8 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["CYCLE_CODES", "Cycles", "cycle_modal", "cycle_call", "r_token", "takes_p"]
+__all__ = ["CYCLE_CODES", "Cycles", "cycle_call", "cycle_modal", "level_code", "literal_tokens", "may_cycle", "r_token",
+           "takes_p"]
 
 #: Per cycle the pass runs (the motion group's codes, :data:`~nczones.gcode.linuxcnc.doubles._GROUPS`): its
 #: pecks (0: none; 83: a feed, a rapid out to R, a rapid back down; 73: a feed, a rapid back off), its dwell at
@@ -168,14 +175,52 @@ def r_token(words: Any, leaf: Any) -> list[str]:
     exact value is the full path's (:func:`~nczones.gcode.lexer.decimal_value`), or None (an expression)."""
     for letter, tree, *_rest in words:
         if letter == "R":
-            if tree[0] != NUM:
-                return ["None"]
-            src = leaf(tree)
-            if src.startswith("float(") and src.endswith(")"):
-                return [src[6:-1]]
-            q = tree[2]
-            return [repr(f"{q.numerator}/{q.denominator}")]
+            return [_literal(tree, leaf)]
     return []
+
+
+def may_cycle(text: Any) -> bool:
+    """May ``text`` write a canned cycle the pass runs: a G word of 73 or 81-89 in it (a streamed file: a "73" or
+    "8" in it).  Only then do motions hand the pass their literal words' texts (:func:`literal_tokens`); a cycle
+    the test misses compares its levels without them (a close pair declines, as before cyc41).
+
+    >>> may_cycle("G0 Z2\nG98 G81 X1 R2"), may_cycle("G1 X81 Y73"), may_cycle("g 083 q1")
+    (True, False, True)
+    """
+    if not isinstance(text, str):
+        return "73" in text or "8" in text
+    return re.search(r"[Gg][ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None
+
+
+def _literal(tree: Any, leaf: Any) -> str:
+    """The source of a word's literal text (``P[k]``, or ``"n/d"`` for a literal of a line parsed afresh), whose
+    exact value is the full path's (:func:`~nczones.gcode.lexer.decimal_value`); ``None`` for an expression."""
+    if tree[0] != NUM:
+        return "None"
+    src: str = leaf(tree)
+    if src.startswith("float(") and src.endswith(")"):
+        return src[6:-1]
+    q = tree[2]
+    return repr(f"{q.numerator}/{q.denominator}")
+
+
+def literal_tokens(words: Any, leaf: Any) -> list[str]:
+    """The sources of a line's X, Y and Z words' literal texts (:func:`_literal`), in the order of the words: the
+    values a motion's plan hands :func:`level_code` after its words' and R's (:func:`r_token`)."""
+    return [_literal(tree, leaf) for letter, tree, *_rest in words if letter in "XYZ"]
+
+
+def level_code(axes: list[tuple[int, int]], base: int, words: list[str]) -> list[str]:
+    """The code a motion runs after its ends (in a text that :func:`may_cycle`): per axis word, what
+    :meth:`Cycles.level` reads of the axis's exact position (``LV``): in G90 the word's literal text (``v[base +
+    j]``, None for an expression), the offsets and the units it was moved in, whose exact value is the full
+    path's ``w + offset`` (25.4 w in G20); None in G91 and where the word's double is not the word (``words``:
+    the sources of the axes' doubles, ``(v[k] * st.half)`` where X may be a diameter)."""
+    body = []
+    for j, (k, i) in enumerate(axes):
+        plain = words[j] == f"v[{k}]"
+        body.append(f"LV[{i}] = None if st.inc else (v[{base + j}], off, st.inch)" if plain else f"LV[{i}] = None")
+    return body
 
 
 def cycle_call(others: list[str], axes: list[tuple[int, int]]) -> list[str]:
@@ -231,7 +276,7 @@ class Cycles:
 
     __slots__ = ("st", "declined", "retract", "last", "il", "il_off", "il_axis", "il_inch", "r", "r_tok", "z", "p", "mark",
                  "pos_tok", "tokens", "steady",
-                 "lathe", "q", "peck_err", "pecks")
+                 "lathe", "q", "peck_err", "pecks", "lits", "blank", "track")
 
     def __init__(self, st: Any, declined: type[Exception], machine: Any):
         self.st = st
@@ -255,6 +300,13 @@ class Cycles:
         #: axis from the first peck on (:meth:`_pecks`)
         self.peck_err = 0.0
         self.pecks = 0  # the pecks of the last peck block's holes (:meth:`_pecks`: its rows, :meth:`_sequence`)
+        #: per axis, where the last motion that moved it left it, when that is a G90 literal word: ``(text, offsets,
+        #: inch)`` (:func:`level_code`; ``text`` None: an expression), else None (a cycle block moved it since)
+        self.blank = (None,) * len(st.axes)
+        self.lits: list[Any] = list(self.blank)
+        #: motions set ``lits`` (a text that may write a cycle, :func:`may_cycle`, without compensation): then a
+        #: cycle block leaves its clear level's token there, valid until a motion moves that axis
+        self.track = False
         self.end()
 
     def end(self) -> None:
@@ -270,6 +322,20 @@ class Cycles:
         """A token no level has: its exact value is not known to equal another's."""
         self.tokens += 1
         return self.tokens
+
+    def level(self, i: int) -> Any:
+        """The token of where the tool stands on axis ``i``: a G90 literal word's (:func:`level_code`), as R's
+        (:meth:`_words`: its exact value, the offsets' ``id``, the units; the full path's exact ``w + offset``, the
+        same for both), so a level equal to R by value is seen equal (``G0 Z2`` then ``G98 G81 ... R2``); the
+        clear level's token when the last motion of the axis was a cycle block's (the tool left there: ``G80``,
+        ``G0 X0 Y0``, then a cycle whose R is that level); else a fresh one (an expression, G91)."""
+        lit = self.lits[i]
+        if lit is None or lit[0] is None:
+            return self._fresh()
+        text, off, inch = lit
+        if text == "=":  # (the clear level a cycle block left the tool at, :meth:`run`)
+            return off
+        return ("q", Fraction(text) if "/" in text else decimal_value(text)), id(off), inch
 
     def below(self, a: tuple, b: tuple) -> bool:
         """Is level ``a`` below level ``b`` exactly, as the full path compares them (``_level_lt``)?  Equal
@@ -293,8 +359,6 @@ class Cycles:
         if names is None or self.retract is None or st.unset:
             raise self.declined("a canned cycle before the program sets the plane, its retract mode, units, distance "
                            "mode and work offset")
-        if st.inc and mode in _PECKS:  # (LinuxCNC counts the pecks from the initial level's program double)
-            raise self.declined("a peck cycle in G91")
         if self.lathe:  # (an X word may be a diameter: G7)
             raise self.declined("a canned cycle on a lathe")
         if not st.feed > 0.0:
@@ -341,9 +405,12 @@ class Cycles:
     def run(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
             text: str | None, vq: float | None = None, vl: float | None = None) -> bool:
         """A cycle block (the plan's ``CY``): its rows (the module's docstring); False (the program goes on)."""
-        if vr is None and vp is None and vq is None and self.steady is not None and self._steady(pairs, vl):
-            return False
-        self._general(pairs, vr, vp, text, vq, vl)
+        if not (vr is None and vp is None and vq is None and self.steady is not None and self._steady(pairs, vl)):
+            self._general(pairs, vr, vp, text, vq, vl)
+        lits = self.lits
+        lits[:] = self.blank  # (the block moved the plane's axes: no literal word is where they stand)
+        if self.track:  # (the tool at the clear level: its token, until a motion moves the normal axis)
+            lits[self.il_axis] = ("=", self.pos_tok, None)
         return False
 
     def _general(self, pairs: tuple[tuple[int, float], ...], vr: float | None, vp: float | None,
@@ -368,7 +435,7 @@ class Cycles:
             raise self.declined(str(exc)) from None
         off, pos = st.off, st.pos
         err = st.err[ic]
-        cur = (pos[ic], self.pos_tok if self.mark == _moves(st) else self._fresh(), err or 0.0)
+        cur = (pos[ic], self.pos_tok if self.mark == _moves(st) else self.level(ic), err or 0.0)
         if self.il is None:
             self.il, self.il_off, self.il_axis, self.il_inch = cur, off, ic, inch
         elif self.il_axis != ic or self.il_off is not off or self.il_inch != inch:
@@ -383,6 +450,8 @@ class Cycles:
         if self.below(r, cc):
             raise self.declined("a canned cycle's R below its bottom")
         clear, cur = self._up_to_r(r, cur, axes)
+        if mode in _PECKS:
+            self.pecks = self._peck_count(vr, z, ic)
         aa, bb = pos[ia], pos[ib]
         for rep in range(reps):
             if rep == 1 and len(st.columns) == 3:  # (a mill's three axes, not at a window's end)
@@ -398,7 +467,7 @@ class Cycles:
                 bb = words[ib] + off[ib] if ib in words else bb
             self._position(aa, bb, r, None if rep else cur, clear, axes)
             if mode in _PECKS:
-                self._pecks(aa, bb, r[0], (vr, z), axes, mode == 83)
+                self._pecks(aa, bb, r, axes, mode == 83)
             self._hole(aa, bb, cc[0], (r, clear), mode, axes)
         self.mark, self.pos_tok = _moves(st), clear[1]
         self.r, self.r_tok, self.z, self.last = vr, rtok, z, mode
@@ -542,33 +611,81 @@ class Cycles:
             raise self.declined("a peck that is not positive")
         self.q = vq
 
-    def _pecks(self, aa: float, bb: float, r: float, prog: tuple[float, float], axes: tuple[int, int, int],
-               out: bool) -> None:
+    def _peck_count(self, vr: float, z: float, ic: int) -> int:
+        """How many pecks a hole of this block makes: LinuxCNC's loop (``_linuxcnc_pecks``, the full path's) on the
+        doubles of the program's R, bottom and Q.  In G90 those are the words'.  In G91 R is ``fl(R' + old)`` and
+        the bottom ``fl(r + Z')``, ``old`` the double of the exact initial level in program units (the full path's
+        ``to_float(il - offset)``, divided by 25.4 in G20): :meth:`_olds` gives every double it may be, and the
+        count must be the same for each (else the block declines)."""
+        q = self.q
+        assert q is not None  # (_peck_word)
+        if not self.st.inc:
+            return self._count(vr, z, q)
+        counts = {self._count(r, r + z, q) for r in {vr + old for old in self._olds(ic)}}
+        if len(counts) != 1:
+            raise self.declined("a G91 peck count the initial level's doubles do not decide")
+        return counts.pop()
+
+    def _count(self, r: float, bottom: float, q: float) -> int:
+        """LinuxCNC's peck loop ``for (d = r - q; d > bottom; d -= q)`` in doubles; declined at the loop bound
+        (the full path's too_many: unknown past it)."""
+        n, d = 0, r - q
+        while d > bottom:
+            n += 1
+            if n >= self.st.max_iterations:
+                raise self.declined("a peck cycle at its iteration bound")
+            d -= q
+        return n
+
+    def _olds(self, ic: int) -> list[float]:
+        """The doubles the initial level's exact value in program units may round to (G91 pecks,
+        :meth:`_peck_count`).  Its exact value is known when its token is a literal's (:meth:`level`, or a G90
+        R's) in the offsets now: ``w`` (25.4 w when moved in G20), one double.  Else it lies within the level's
+        bound ``e`` of its double ``il'`` (a G90 row's, :meth:`_g90`, or a G91 chain's): the program value within
+        ``e + (|off'| + |c|) 2**-52`` of ``c = fl(il' - off')`` (the offset's double within half an ulp of the
+        exact one, the subtraction one rounding), in G20 within that over 25 plus ``|c_in| 2**-50`` of
+        ``c_in = fl(c / fl(25.4))`` (fl(25.4) and the division: under 2 ulps); ``fl`` is monotone, so the double
+        of any value in that interval lies between the doubles at its ends, every one of which is listed
+        (declined past 4096)."""
+        st = self.st
+        il = self.il
+        assert il is not None
+        tok, off, inch = il[1], st.off[ic], st.inch
+        if tok.__class__ is tuple and tok[0].__class__ is tuple and tok[0][0] == "q" and tok[1] == id(st.off):
+            mm = tok[0][1] * (Fraction(254, 10) if tok[2] else 1)
+            return [float(mm / Fraction(254, 10) if inch else mm)]
+        c = il[0] - off
+        e = _up(_up(il[2] or self._g90(il[0], ic)) + _up((abs(off) + abs(c)) * _EPS2))
+        if inch:
+            c = c / _INCH
+            e = _up(e / 25.0 + abs(c) * 2.0**-50)
+        lo, hi = math.nextafter(c - e, -_INF), _up(c + e)
+        olds = [lo]
+        while olds[-1] < hi:
+            if len(olds) > 4096:
+                raise self.declined("a G91 peck cycle whose initial level is known too loosely")
+            olds.append(_up(olds[-1]))
+        return olds
+
+    def _pecks(self, aa: float, bb: float, level: tuple, axes: tuple[int, int, int], out: bool) -> None:
         """The pecks before the last feed: per peck a feed to ``R - k Q``, G83's rapid out to R (``out``), a
         rapid to 0.254 mm above the peck (the full path's ``_cycle``; G73 and G83 alike but for the rapid out).  As
-        many as the full path makes: it counts them with LinuxCNC's loop in the doubles of the program's R, bottom
-        and Q (``_linuxcnc_pecks``: the words' doubles, G90), which is this loop.  A peck's row is
+        many as the full path makes (:meth:`_peck_count`, ``pecks``).  A peck's row is
         ``fl(R' - fl(k Q'))``: its distance from the exact ``R - k Q`` is at most ``|R' - R| + 2 k |Q'| 2**-53 +
-        |row| 2**-53`` (R''s bound is the module's, ``(2 |R'| + 2 offsets) 2**-53``; ``Q'`` within half an ulp of
-        ``Q``), the back-off's one rounding and 0.254's more: the bound ``peck_err`` (that sum over every row of
-        the block, taken twice over and rounded up) is added to the normal axis's widening (the pass's ``xerr``:
-        every row of the windows from the first peck on)."""
+        |row| 2**-53`` (R''s bound is the module's, ``(2 |R'| + 2 offsets) 2**-53``, plus a G91 R's own error
+        ``level[2]``; ``Q'`` within half an ulp of ``Q``), the back-off's one rounding and 0.254's more: the bound
+        ``peck_err`` (that sum over every row of the block, taken twice over and rounded up, plus R's G91 error)
+        is added to the normal axis's widening (the pass's ``xerr``: every row of the windows from the first peck
+        on)."""
         st = self.st
         q = self.q
         assert q is not None  # (_peck_word)
-        vr, bottom = prog
-        n, d = 0, vr - q
-        while d > bottom:
-            n += 1
-            if n >= st.max_iterations:  # the full path's too_many: unknown past its bound
-                raise self.declined("a peck cycle at its iteration bound")
-            d -= q
-        self.pecks = n
+        n, r = self.pecks, level[0]
         if st.inch:  # (the rows' peck in millimetres: within 2.52 ulps of 25.4 Q, inside the bound's 8 ulps)
             q = q * _INCH
         ic = axes[2]
         top = abs(r) + abs(r - n * q) + _BACK_OFF
-        err = math.nextafter((2.0 * abs(r) + st.offb2[ic] + 2.0 * n * q + 2.0 * top + 1.0) * 2.0**-51, math.inf)
+        err = _up(_up((2.0 * abs(r) + st.offb2[ic] + 2.0 * n * q + 2.0 * top + 1.0) * 2.0**-51) + level[2])
         if err > self.peck_err:
             self.peck_err = err
         if err > st.xerr[ic]:
@@ -591,30 +708,32 @@ class Cycles:
         (at the clear level, the same token) above R exactly where the clear level is, so every repeat's rows are
         the same levels (:meth:`_sequence`; the pecks as many: LinuxCNC counts them from the same R, bottom and
         Q).  In G91 R and the bottom are the same doubles (the same initial level, R and bottom words): the normal
-        axis's chain error bounds them already.  None: a comparison too close to call (the next block then runs
-        :meth:`_general`, which declines), or a block in G20 or in G90 with a G91 chain open."""
+        axis's chain error bounds them already.  In G20 the levels are the block's millimetres and a hole line's
+        words are scaled as :meth:`_general` scales them (``fl(w * fl(25.4))``: the same doubles, the same bounds).
+        None: a comparison too close to call (the next block then runs :meth:`_general`, which declines), or a
+        block in G90 with a G91 chain open."""
         st = self.st
         mode = st.motion
-        if (st.slow and not st.inc) or getattr(st, "inch", False):
+        if st.chained and not st.inc:
             return None
         try:
             up = self.below(self.il, r)  # type: ignore[arg-type]
             seq = self._sequence(r, cc, clear)
         except self.declined:
             return None
-        return (mode, st.plane, self.retract, st.off, axes, st.inc, r[0], up, seq)
+        return (mode, st.plane, self.retract, st.off, axes, st.inc, r[0], up, seq, st.inch)
 
     def _steady(self, pairs: tuple[tuple[int, float], ...], vl: float | None) -> bool:
         """A hole line (no R, bottom, P or Q) in the state the last cycle block left (:meth:`_template`), on a
         machine of the plane's three axes, not at a window's end: its rows from the template; False (nothing
         done): not such a line."""
         st = self.st
-        mode, plane, retract, off, axes, inc, r, up, seq = self.steady  # type: ignore[misc]
+        mode, plane, retract, off, axes, inc, r, up, seq, inch = self.steady  # type: ignore[misc]
         cols = st.columns
         n = len(cols[0])
         if st.motion != mode or st.plane != plane or self.retract != retract or st.off is not off \
                 or self.mark != st.row0 + n - 1 - st.dwells or not st.feed > 0.0 or st.inc != inc \
-                or (st.slow and not inc) or len(cols) != 3 or getattr(st, "inch", False) \
+                or st.inch != inch or (st.chained and not inc) or len(cols) != 3 \
                 or (mode in (84, 86) and st.spindle != 1):
             return False  # (G84 and G86 after M3: else _general checks the spindle, and declines G84's)
         try:
@@ -629,9 +748,9 @@ class Cycles:
         wa = wb = None
         for i, v in pairs:
             if i == ia:
-                wa = v
+                wa = v * _INCH if inch else v  # (millimetres, as _general's words)
             elif i == ib:
-                wb = v
+                wb = v * _INCH if inch else v
             else:
                 return False
         ca, cb, cz = cols[ia], cols[ib], cols[ic]

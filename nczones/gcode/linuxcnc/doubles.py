@@ -93,11 +93,13 @@ start's doubles (:meth:`_Pass.lone`: the full path notes a dropped motion only a
 without G2/G3, H without G43, G43 without H or with H0.
 
 Canned cycles (:mod:`.double_cycles`): G73, G81-G86 and G89 (``P`` above 0; ``Q`` above 0: a Q in a line
-without an M word is a value, G73's and G83's alone) with L repeats, in G90 and G91 (but G73 and G83), in the
+without an M word is a value, G73's and G83's alone) with L repeats, in G90 and G91 (G73 and G83 where the
+initial level's doubles decide LinuxCNC's peck count), in the
 plane the program has set (G84 in G17), after the program set G98 or G99, in G21 and G20 (not on a lathe; G84
 after M3, G86 with the spindle turning: the pass follows M3, M4, M5 and M6's stop), one row per motion of the full
 path's ``Interpreter._cycle``; R, the bottom, P and Q sticky; the levels compared only where the doubles
-decide the exact comparison (a closer pair, an offset, plane or units change while a cycle is modal, R below the
+decide the exact comparison or both are known exactly (a literal R, a G90 motion's literal word where the tool
+stands: in a text that may write a cycle, motions hand the cycle module their literal words) (a closer pair, an offset, plane or units change while a cycle is modal, R below the
 bottom decline); the peck rows widened by their drift, G91 rows by their chain's error (``xerr``).
 
 Cutter compensation (:mod:`.double_comp`): on a machine with ``cutter_compensation = "linuxcnc"`` (not a lathe),
@@ -179,6 +181,9 @@ from .double_cycles import (
     Cycles,
     cycle_call,
     cycle_modal,
+    level_code,
+    literal_tokens,
+    may_cycle,
     q_value,
     r_token,
     spindle_body,
@@ -529,6 +534,8 @@ class _Pass:
         self.g91_text = "91" in text
         #: the text may write G20 (a "20" in it): only then do straight moves test for it (:mod:`.double_units`)
         self.g20_text = "20" in text
+        #: the text may write a canned cycle: only then do motions hand their literal words' texts (.double_cycles)
+        self.cycle_text = may_cycle(text)
         #: layout -> (its shape's step, the layout's cutter): ``step(cut(line))`` runs a line of it (nothing is
         #: compiled per layout: CAM output with arcs has hundreds of layouts of a few dozen shapes)
         self.by_layout: dict[bytes, tuple[Any, Any]] = {}
@@ -554,6 +561,7 @@ class _Pass:
         #: G41/G42 the test misses, "G4 1" say, is declined: double_comp.comp_body without a Comp)
         self.cc = Comp(self, machine, Declined) if getattr(machine, "cutter_compensation", "none") == "linuxcnc" \
             and not self.diameter and _may_compensate(text) else None
+        self.cyc.track = self.cycle_text and self.cc is None  # (motions hand the cycles their literal words)
         self.spindle = 0  # M3 1, M4 -1, stopped 0: what G84 and G86 check (.double_cycles.spindle_body)
         self.unset = set(_NOTED)
         #: the groups assumed at a motion and their codes (DoublePath.assumed); what each starts as on the full path
@@ -974,7 +982,7 @@ class _Pass:
             return None
         em = _Emit(_const, self._pconst)
         body: list[str] = []
-        vals, codes = _words(em, pl.words, body, _const_code)
+        vals, codes = _words(em, pl.words, body, _const_code, self.cycle_text)
         writes = _assigns(em, pl.assigns, body, self._pconst)
         if not pl.words:  # parameters set, no word: the plan does nothing (its ``return False``), not called
             return self._exec(body, writes, vals, None, {})
@@ -1060,7 +1068,7 @@ class _Pass:
 
         em = _Emit(lambda node: f"float({src(node)})", index)
         body: list[str] = []
-        vals, codes = _words(em, pl.words, body, src)
+        vals, codes = _words(em, pl.words, body, src, self.cycle_text)
         writes = _assigns(em, pl.assigns, body, index)
         letters = _letters(pl.words)
         if not codes:  # one plan for every line (made when the first is run: a plan may decline)
@@ -1452,7 +1460,7 @@ class _Pass:
                                  "AS": self.arc_slots.append,
                                  "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
-                                 "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc,
+                                 "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc, "LV": self.cyc.lits,
                                  "W": None if self.cc is None else self.cc.words}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
         exec(compiled("\n".join(lines) + "\n", "<double pass plan>"), scope)  # noqa: S102  # from reprs
@@ -1656,7 +1664,7 @@ class _Pass:
                        f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0))"]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *start, *self._straight_ends(axes), *chained, *self._kept_words(axes),
+                *start, *self._straight_ends(axes), *self._levels(others, axes), *chained, *self._kept_words(axes),
                 *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
@@ -1693,11 +1701,20 @@ class _Pass:
             moved = tuple(i for _k, i in axes)
             rapids = ["if not mode: st.rapids += 1"] if code is None else ["st.rapids += 1"] if code == 0 else []
             straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                        *self._straight_ends(axes), *self._kept_words(axes), *self._appends(axes), "n = len(C0)",
+                        *self._straight_ends(axes), *self._levels(others, axes), *self._kept_words(axes),
+                        *self._appends(axes), "n = len(C0)",
                         f"if n >= {self.rows}: st.full()", *rapids]
             return body + (straight if self.cc is None else straight_code(axes, straight))
         body.append(f"if n >= {self.rows}: st.full()")
         return body
+
+    def _levels(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
+        """In a text that may write a canned cycle (not one that may compensate, which declines cycles): the
+        axes' literal words, a cycle's level where the tool stands (:func:`~.double_cycles.level_code`)."""
+        if not self.cycle_text or self.cc is not None:
+            return []
+        base = len(others) + ("R" in others)
+        return level_code(axes, base, [self._word(k, i) for k, i in axes])
 
     def _kept_words(self, axes: list[tuple[int, int]]) -> list[str]:
         """In a program that may compensate (:mod:`.double_comp`, which declines G91 and G20 there): the
@@ -1912,8 +1929,9 @@ def _const_code(node: Any) -> str:
     return str(q.numerator) if q.denominator == 1 else str(-q.numerator)  # n.1: -(10 n + 1), as _code
 
 
-def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[str], list[str]]:
-    """Emit a line's words: the sources of their values (G, M and H excluded) and of their G, M and H codes."""
+def _words(em: _Emit, words: Any, body: list[str], code_src: Any, lits: bool) -> tuple[list[str], list[str]]:
+    """Emit a line's words: the sources of their values (G, M and H excluded) and of their G, M and H codes
+    (``lits``: then the X, Y and Z words' literal texts, :func:`~.double_cycles.literal_tokens`)."""
     codes = []
     vals = []
     for letter, tree, *_rest in words:
@@ -1925,7 +1943,9 @@ def _words(em: _Emit, words: Any, body: list[str], code_src: Any) -> tuple[list[
             codes.append(code_src(tree))
         else:
             vals.append(em.value(tree, body))
-    vals += r_token(words, em.leaf)  # last: the exact value of a literal R, for a cycle's levels
+    vals += r_token(words, em.leaf)  # the exact value of a literal R, for a cycle's levels
+    if lits:  # last: the axis words' literal texts (a cycle's level where the tool stands)
+        vals += literal_tokens(words, em.leaf)
     return vals, codes
 
 
