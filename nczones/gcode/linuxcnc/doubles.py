@@ -172,7 +172,7 @@ from .double_arcs import (
     refined,
 )
 from .double_arcs import INCH as INCH_ARC
-from .double_comp import Comp, comp_body, comp_others, straight_code
+from .double_comp import Comp, arc_code, comp_body, comp_others, straight_code
 from .double_cycles import (
     CYCLE_CODES,
     Cycles,
@@ -1676,27 +1676,25 @@ class _Pass:
                 raise Declined("an arc on axes other than X, Y and Z")
         body = _mode_checks(code, bool(arc))
         if arc:
-            if self.cc is not None:
-                body.append("if CS.busy: raise D('an arc under cutter compensation or just after its G40')")
             if self.diameter:  # a G91 arc where X may be a diameter (.double_lathe): the full path's
                 body.append("if st.inc or st.chained: raise D('an arc in G91, or on a G91 chain, where X may be a "
                             "diameter')")
         body += ["if unset: st.assume()", "off = st.off"]
         if arc:
             body.append("pl = st.plane or st.assume_plane()")
+            planes = []
             for n, plane in enumerate(sorted(_ARC_PLANES)):
-                body.append(f"{'el' if n else ''}if pl == {plane}:")
-                body += [f"    {b}" for b in self._arc_plane_body(others, axes, plane)]
-            body += ["else:", "    raise D('an arc before the program sets the plane')"]
-        else:
-            moved = tuple(i for _k, i in axes)
-            rapids = ["if not mode: st.rapids += 1"] if code is None else ["st.rapids += 1"] if code == 0 else []
-            straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                        *self._straight_ends(axes), *self._kept_words(axes), *self._appends(axes), "n = len(C0)",
-                        f"if n >= {self.rows}: st.full()", *rapids]
-            return body + (straight if self.cc is None else straight_code(axes, straight))
-        body.append(f"if n >= {self.rows}: st.full()")
-        return body
+                planes.append(f"{'el' if n else ''}if pl == {plane}:")
+                planes += [f"    {b}" for b in self._arc_plane_body(others, axes, plane)]
+            planes += ["else:", "    raise D('an arc before the program sets the plane')",
+                       f"if n >= {self.rows}: st.full()"]
+            return body + (planes if self.cc is None else arc_code(others, axes, planes))  # (.double_comp)
+        moved = tuple(i for _k, i in axes)
+        rapids = ["if not mode: st.rapids += 1"] if code is None else ["st.rapids += 1"] if code == 0 else []
+        straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
+                    *self._straight_ends(axes), *self._kept_words(axes), *self._appends(axes), "n = len(C0)",
+                    f"if n >= {self.rows}: st.full()", *rapids]
+        return body + (straight if self.cc is None else straight_code(axes, straight))
 
     def _kept_words(self, axes: list[tuple[int, int]]) -> list[str]:
         """In a program that may compensate (:mod:`.double_comp`, which declines G91 and G20 there): the
