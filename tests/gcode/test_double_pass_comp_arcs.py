@@ -135,3 +135,35 @@ def test_the_verdict_is_the_full_paths_at_a_compensated_arcs_extreme(monkeypatch
     if safe is not None:
         assert with_pass.verdict is (Verdict.SAFE if safe else Verdict.UNSAFE)
     assert [r.message for r in with_pass.reasons] == [r.message for r in without.reasons]
+
+
+@SETTINGS
+@given(arc_contours(), st.integers(1, 4))
+def test_the_windows_hold_the_compensated_arcs_boxes(text, window):
+    # a held arc and its corner arcs cross window edges: each motion's box is the one without windows
+    try:
+        whole = double_pass(text, MILL, max_iterations=100)
+    except Declined:
+        return
+    seen = []
+
+    def same(p):
+        seen.append(p.motions)
+        return all(p.enclosure(k, k) == whole.enclosure(k, k) for k in range(p.row0 + 1, p.motions + 1))
+
+    last = double_pass(text, MILL, max_iterations=100, window=window, on_window=same)
+    assert same(last) and (last.motions, last.arcs, last.rapids) == (whole.motions, whole.arcs, whole.rapids)
+    assert len(seen) > 1 or whole.motions <= window + 1
+
+
+def test_comp_arc_program_of_the_bench_takes_the_pass():
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+    try:
+        from bench_gcode import comp_arc_program
+    finally:
+        sys.path.pop(0)
+    path = check_against_full(comp_arc_program(400), MILL, max_iterations=100)
+    assert path is not None and path.arcs > 200
