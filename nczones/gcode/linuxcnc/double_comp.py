@@ -174,7 +174,8 @@ class Comp:
         self.busy = False
         self.radius = 0.0
         self.first = True
-        #: held moves: ``[kind, a, b, da, db, row]`` (straight: ``row`` the other axes' doubles)
+        #: held moves: ``[kind, a, b, da, db, row]`` (``row``: the move's own list of the other axes' doubles,
+        #: its plane axes set when emitted); an arc's adds ``ca, cb, turn, sweep, radius`` (its programmed radius)
         self.queue: list[list[Any]] = []
         self.endpoint = (0.0, 0.0)
         self.valid = False
@@ -303,7 +304,7 @@ class Comp:
         st = self.st
         pos, off, words = st.pos, st.off, self.words
         ia, ib = self.ia, self.ib
-        if self.side is not None and self.first:  # (before this move's words are kept)
+        if self.first and self.side is not None:  # (before this move's words are kept)
             self.prog = self.cur = (self._program(ia), self._program(ib))
         before = (pos[ia], pos[ib], pos[self.inn] if self.inn is not None else 0.0)
         px, py = self.prog
@@ -316,15 +317,15 @@ class Comp:
                 py = x
         if self.side is None:  # the move after G40's flush: from the compensated point, uncompensated
             self.busy = False
-            self._row(mode, tuple(pos))
+            self._row(mode, list(pos))
             return
         words[ia], words[ib] = px, py
         if self.first:
-            self._first(mode, px, py, tuple(pos))
+            self._first(mode, px, py, pos[:])
         else:
-            self._next(mode, px, py, tuple(pos), before)
+            self._next(mode, px, py, pos[:], before)
 
-    def _first(self, kind: int, px: float, py: float, row: tuple[float, ...]) -> None:
+    def _first(self, kind: int, px: float, py: float, row: list[float]) -> None:
         """The entry move (``CutterComp._straight_first``)."""
         cx, cy = self.cur
         got = entry_line(self.side, self.radius, cx, cy, px, py)
@@ -336,7 +337,7 @@ class Comp:
         self.first = False
         self.cur, self.prog = (ex, ey), (px, py)
 
-    def _next(self, kind: int, px: float, py: float, row: tuple[float, ...], before: tuple[float, float, float]) -> None:
+    def _next(self, kind: int, px: float, py: float, row: list[float], before: tuple[float, float, float]) -> None:
         """A move after the first (``CutterComp._straight_next``; a corner arc is emitted at once, a programmed
         arc may be held at the queue's front)."""
         cx, cy = self.cur
@@ -378,7 +379,16 @@ class Comp:
             corner[self.inn] = before[2]
         off = self.st.off
         corner[self.ia], corner[self.ib] = mid_x + off[self.ia], mid_y + off[self.ib]
-        self._row(_ARC if kind else _RAPID, corner, (before[0], before[1], self.side == LEFT, 0.0) if kind else None)
+        if kind:  # an arc: its box, then its row (_row's)
+            adds = self.adds or self._adds()
+            self._arc(corner, (before[0], before[1], self.side == LEFT, 0.0))
+            st = self.st
+            for add, x in zip(adds, corner):
+                add(x)
+            if len(st.columns[0]) >= st.rows:
+                st.full()
+        else:
+            self._row(_RAPID, corner)
         self.endpoint, self.valid = (mid_x, mid_y), True
 
     # -- arcs -------------------------------------------------------------------------------------------
@@ -422,7 +432,7 @@ class Comp:
             radius = math.hypot(centre[0] - self.cur[0], centre[1] - self.cur[1])
         if why.__class__ is str or centre is None:
             raise self.declined(f"a compensated arc's programmed arc: {why}")
-        row = tuple(pos)
+        row = pos[:]
         turn = -1 if cw else 1
         if self.first:
             self._arc_first(cw, turn, px, py, centre, radius, row)
@@ -431,7 +441,7 @@ class Comp:
         self.prog = (px, py)
 
     def _arc_first(self, cw: bool, turn: int, px: float, py: float, centre: tuple[float, float], radius: float,
-                   row: tuple[float, ...]) -> None:
+                   row: list[float]) -> None:
         """The entry arc (``CutterComp._arc_first``: :func:`.comp_floats.arc_entry`)."""
         cx, cy = self.cur
         got = arc_entry(self.side, self.radius, cx, cy, px, py, centre[0], centre[1], cw, turn, radius, False)
@@ -444,7 +454,7 @@ class Comp:
         self.cur = (ex, ey)
 
     def _arc_next(self, cw: bool, turn: int, px: float, py: float, centre: tuple[float, float],
-                  row: tuple[float, ...], before: tuple[float, float, float]) -> None:
+                  row: list[float], before: tuple[float, float, float]) -> None:
         """An arc after the first move (``CutterComp._arc_next``: :func:`.comp_floats.arc_corner` and the
         pull-backs of a concave corner)."""
         cx, cy = self.cur
@@ -480,12 +490,32 @@ class Comp:
 
     def _flush(self, x: float, y: float) -> None:
         """Move every held move's end to ``(x, y)`` and emit them (``_move_endpoint_and_flush``); a reversed
-        straight one or an arc LinuxCNC refuses (:func:`.comp_floats.arc_moved`) is its gouge error: declined."""
-        if not self.queue:
+        straight one or an arc LinuxCNC refuses (:func:`.comp_floats.arc_moved`) is its gouge error: declined.
+        One held straight move (a contour of lines: most flushes) is emitted here, as :meth:`_dequeue` would."""
+        queue = self.queue
+        if not queue:
             return
         ex, ey = self.endpoint
         valid = self.valid
-        for q in self.queue:
+        if len(queue) == 1 and queue[0][0] != _ARC:
+            q = queue[0]
+            if valid and reverses(q[3], q[4], x, y, ex, ey):
+                raise self.declined("a compensated move reversed in a concave corner (LinuxCNC's gouge error)")
+            st = self.st
+            r = q[5]
+            r[self.ia] = x + st.off[self.ia]
+            r[self.ib] = y + st.off[self.ib]
+            for add, v in zip(self.adds or self._adds(), r):
+                add(v)
+            if q[0] == _RAPID:
+                st.rapids += 1
+            self.queue = []
+            if len(st.columns[0]) >= st.rows:
+                st.full()
+            self.endpoint = (x, y)  # (valid: already, or set below)
+            self.valid = True
+            return
+        for q in queue:
             if q[0] == _ARC:
                 if arc_moved(q[1], q[2], q[6], q[7], q[8], q[9], x, y, ex, ey, valid, False):
                     raise self.declined("a held compensated arc LinuxCNC refuses to move")
@@ -496,15 +526,16 @@ class Comp:
         self.endpoint, self.valid = (x, y), True
 
     def _dequeue(self) -> None:
-        """Emit the held moves as rows (an arc: its box, :meth:`_arc`)."""
+        """Emit the held moves as rows (an arc: its box, :meth:`_arc`; a held move's row is its own list)."""
         self.valid = False
         st = self.st
         off, ia, ib = st.off, self.ia, self.ib
         oa, ob = off[ia], off[ib]
         adds = self.adds or self._adds()
+        col0, rows = st.columns[0], st.rows
         for q in self.queue:
             kind = q[0]
-            r = list(q[5])
+            r = q[5]
             r[ia] = q[1] + oa
             r[ib] = q[2] + ob
             if kind == _ARC:  # a programmed arc about its centre
@@ -513,7 +544,7 @@ class Comp:
                 add(x)
             if kind == _RAPID:
                 st.rapids += 1
-            if len(st.columns[0]) >= st.rows:
+            if len(col0) >= rows:
                 st.full()
         self.queue = []
 
