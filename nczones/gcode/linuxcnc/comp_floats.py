@@ -175,7 +175,7 @@ def arc_entry(side: int | None, tool_radius: float, cx: float, cy: float, end_x:
 
 def arc_corner(side: int | None, tool_radius: float, cx: float, cy: float, opx: float, opy: float, end_x: float,
                end_y: float, centerx: float, centery: float, cw: bool,
-               turn: int) -> int | tuple[int, float, float, float, float, float]:
+               turn: int) -> int | tuple[int, float, float, float, float, float, float]:
     """The corner before an arc after the first move (LinuxCNC ``convert_arc_comp2``): ``(how, new_end_x,
     new_end_y, arc_radius, theta, beta, delta)`` with ``how`` 1 concave, 2 convex (a corner arc to
     ``opx + r cos(delta)``), 0 straight on; or :data:`RADIUS`'s negative (``-RADIUS``, the arc radius not above

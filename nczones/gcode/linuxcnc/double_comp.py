@@ -1,9 +1,9 @@
 """Cutter radius compensation (G40, G41, G42) in the double pass (:mod:`nczones.gcode.linuxcnc.doubles`).
 
 On a machine with ``cutter_compensation = "linuxcnc"`` the full path compensates every motion while G41 or G42
-is on (:mod:`.cutter_comp`, LinuxCNC's ``convert_straight_comp1/2`` and its move queue).  The pass follows the
-straight moves (G0, G1) in G17, G21 and G90: the same motions, in the same order, each row the double of the
-full path's exact end.
+is on (:mod:`.cutter_comp`, LinuxCNC's ``convert_straight_comp1/2``, ``convert_arc_comp1/2`` and its move
+queue).  The pass follows the straight moves (G0, G1) and the arcs (G2, G3 with I/J or R; comp41) in G17, G21
+and G90: the same motions, in the same order, each row the double of the full path's exact end.
 
 Why the rows hold
 -----------------
@@ -28,15 +28,34 @@ every magnitude and the offsets), so ``u = S - C``, ``w = E - C`` and the radii 
 the exact ones, as there.  The corner arc joins the pass's arcs (``DoublePath.arc_rows``, its box already
 the sweep's: ``EXACT``), and an arc after a motion LinuxCNC may drop declines as a programmed arc's does.
 
+Arcs (comp41).  A programmed arc's centre double is LinuxCNC's own (``arc_data_ijk``, ``arc_data_r``): an I/J
+arc's is the programmed start's double plus the word's (G91.1), which the pass has (the start is the kept word
+:attr:`Comp.words`, the word its double) and the full path now computes the same way (``CutterComp._centre_ij``;
+it used to round the exact sum, an ulp off LinuxCNC at times); an R arc's is ``comp_floats.arc_centre_r`` of
+the programmed ends' doubles and R's.  From there both call the same functions (the entry arc, the corner, the
+line-arc, arc-line and arc-arc pull-backs, a held arc's move: :mod:`.comp_floats`), so the compensated ends and
+centres are the same doubles, and the same decisions (concave, convex, straight on; an error) are taken.  The
+programmed arc is first checked as the pass checks any arc (``ij_check``, ``r_screen`` on the programmed ends:
+what the full path's ``Interpreter.arc`` may refuse or decide otherwise declines).  The compensated arc is
+held like a straight move and emitted, its end perhaps moved, from the previous row to its row about its
+centre: the full path's exact centre is the programmed one (I/J: the exact start plus the exact words) or the
+exact value of the centre's double (R, an entry arc's moved centre).  Its box is :func:`corner_box`'s with
+``more`` (the centre's magnitude, the programmed and the tool radius) added to ``m``: the exact I/J centre is
+within ``(|start| + |I, J| + |C|) 2**-53`` plus the offset's rounding of the double's, below ``err / 4`` with
+that ``m``; the ends as a corner arc's.  A spiral (the ends' radii differ: a held arc's moved end, LinuxCNC
+allows 0.01) is in the annulus sector, as a corner arc's.  A whole turn, P, K, an arc whose tool radius is not
+less than its radius and every error of ``convert_arc_comp1/2`` decline.
+
 G41.1/G42.1 take their ``D`` as the diameter (a negative one: the other side), as ``CutterComp.select``.
 
 What declines (the full path's error or unknown, or not modelled): G41/G42 on a machine without LinuxCNC's
 compensation or on a lathe, outside G17, in G20, with a tool whose diameter is not in ``[tool_diameters]``
 or not above 0, D not a whole positive number, the tool in the spindle after ``T0 M6`` or ``M61``; G41 or G42
-while on; G2/G3 while on or as the move after G40's flush; a dwell, M6, M61, a plane, units, work offset, tool
+while on; G2/G3 as the move after G40's flush, a whole turn, P or K under compensation; a dwell, M6, M61, a plane, units, work offset, tool
 length or path mode code while on (or, a dwell, M6 and M61, while the machine stands at G40's compensated
 point); G91, G20, G7 and canned cycles in a program that writes compensation (:meth:`Comp.compile_checks`);
-an entry move not longer than the radius, a gouge (a held move reversed), a zero-degree inside corner.
+an entry move not longer than the radius, a gouge (a held move reversed), a zero-degree inside corner, a
+concave corner right after a flush (the full path's unknown), every error of the arc formulas.
 """
 
 from __future__ import annotations
@@ -426,9 +445,9 @@ class Comp:
             centre = arc_centre_r(opx, opy, px, py, r, cw, 0.00005 * 25.4)
             radius = abs(r)
         else:
-            i, j = v[ii] if ii >= 0 else 0.0, v[ji] if ji >= 0 else 0.0
-            why = ij_check(before[0], before[1], pos[ia], pos[ib], i, j, cw, st.offb, st.rule, False, True)
-            centre = (opx + i, opy + j)
+            wi, wj = v[ii] if ii >= 0 else 0.0, v[ji] if ji >= 0 else 0.0
+            why = ij_check(before[0], before[1], pos[ia], pos[ib], wi, wj, cw, st.offb, st.rule, False, True)
+            centre = (opx + wi, opy + wj)
             radius = math.hypot(centre[0] - self.cur[0], centre[1] - self.cur[1])
         if why.__class__ is str or centre is None:
             raise self.declined(f"a compensated arc's programmed arc: {why}")

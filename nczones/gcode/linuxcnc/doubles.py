@@ -103,10 +103,11 @@ bottom decline); the peck rows widened by their drift, G91 rows by their chain's
 Cutter compensation (:mod:`.double_comp`): on a machine with ``cutter_compensation = "linuxcnc"`` (not a lathe),
 G40, and G41/G42 with a literal or computed ``D`` (a tool of ``[tool_diameters]``) or without (the tool in the
 spindle, ``T`` and ``M6``/``M61 Q`` followed), or G41.1/G42.1 with a diameter ``D`` (no ``L``), in G17, G21 and
-G90, over straight moves: the rows of the full
-path's ``CutterComp`` (the held move, the entry, a convex corner's arc about the programmed corner with its sweep
-box, a concave corner's pulled-back end, G40's and M2/M30's flush) from the same float formulas
-(:mod:`.comp_floats`).  Declined: G2/G3 under compensation or just after its G40, a dwell, tool change or a
+G90, over straight moves and arcs (I/J and R, comp41): the rows of the full
+path's ``CutterComp`` (the held move, the entry line or arc, a convex corner's arc about the programmed corner with
+its sweep box, a concave corner's pulled-back end, line-arc, arc-line and arc-arc corners, a compensated arc's
+sweep box about its centre, G40's and M2/M30's flush) from the same float formulas
+(:mod:`.comp_floats`).  Declined: G2/G3 just after its G40, with P or K or a whole turn under it, a dwell, tool change or a
 plane, units, offset, tool length or path mode code while it is on, G91, G20, G7/G8 and canned cycles in a program
 that may write it (a ``41`` or ``42`` in the text), and every error of the full path's compensation.
 
