@@ -32,7 +32,7 @@ modules are imported; their import time is printed on its own), for
   G80), fast path and full interpreter.
 
 The generators :func:`g91_program`, :func:`g20_program`, :func:`drill_expr_program`, :func:`cycle_program`,
-:func:`comp_program` and
+:func:`comp_program`, :func:`comp_arc_program` and
 :func:`g18_program` (not run by :func:`main`) write the parametric classes the double pass declines, which
 ``nczones verify`` reads by the full path (specs/performance.md, "The full path's per-line cost"); the pass
 takes :func:`g18_program`'s arcs since plane38, lathes since lathe39 (:func:`lathe_program`: G7 diameters, G18
@@ -323,6 +323,31 @@ def comp_program(n: int, seed: int = 29) -> str:
         x += 10
         out.append(f"X{x:.3f} Y[#1 + {rnd.uniform(0, 3):.3f}]")
     out += ["G40 G0 X0 Y0", "M30"]
+    return "\n".join(out) + "\n"
+
+
+def comp_arc_program(n: int, seed: int = 31) -> str:
+    """About ``n`` lines of a G41 finishing contour as CAM writes it (cutter compensation, tool T1 as
+    :func:`comp_program`): waves of lines and quarter arcs, I/J and R, G2 (the tool outside) and G3 (inside,
+    radius 2 to 5 mm), tangent but for a line whose Y is an expression a little off (a small convex or concave
+    corner): every compensated arc, its corners and pull-backs LinuxCNC's ``convert_arc_comp2`` (comp41)."""
+    rnd = random.Random(seed)
+    out = ["G21 G90 G17 G54 F800", "T1 M6", "#1 = 0", "G0 X-10 Y-5", "G41 G1 X0 Y0"]
+    x = y = 0.0
+    while len(out) < n - 2:
+        r = round(rnd.uniform(2, 5), 3)
+        a = round(rnd.uniform(1, 6), 3)
+        b = round(rnd.uniform(1, 6), 3)
+        x += a
+        y += round(rnd.uniform(-0.05, 0.05), 3)
+        out += [f"G1 X{x:.3f} Y[#1 + {y:.3f}]",
+                f"G3 X{x + r:.3f} Y{y + r:.3f} I0 J{r:.3f}",
+                f"G2 X{x + 2 * r:.3f} Y{y + 2 * r:.3f} R{r:.3f}",
+                f"G1 X{x + 2 * r + b:.3f}",
+                f"G2 X{x + 3 * r + b:.3f} Y{y + r:.3f} I0 J{-r:.3f}",
+                f"G3 X{x + 4 * r + b:.3f} Y{y:.3f} R{r:.3f}"]
+        x += 4 * r + b
+    out += ["G40 G0 X0 Y-10", "M30"]
     return "\n".join(out) + "\n"
 
 

@@ -105,7 +105,7 @@ def test_the_pass_takes_a_contour_with_corners_of_both_kinds():
 @pytest.mark.parametrize("text", [
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X0.5 Y0\nX10\nM30\n",  # an entry not longer than the radius
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nX10 Y0.5\nX0 Y0.5\nM30\n",  # a gouge
-    "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nG3 X20 Y0 R5\nM30\n",  # an arc under compensation
+    "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nG3 X20 Y0 R5\nM30\n",  # a half circle by R under comp
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nG40\nG2 X20 Y0 R5\nM30\n",  # an arc just after G40
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nG61 X20\nM30\n",  # a path mode under compensation
     "G21 G90 G17 F800\nG0 X0 Y0\nG41 D1 G1 X10 Y0\nG4 P1\nM30\n",  # a dwell under compensation

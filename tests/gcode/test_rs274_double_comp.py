@@ -33,6 +33,16 @@ PROGRAMS = {
     "a loop of corners": "G21 G90 G17 G54 F600\n#1 = 0\nT2 M6\nG0 X0 Y0\nG41 G1 X2 Y0\n"
                          "o1 while [#1 LT 12]\nX[#1 * 3 + 4] Y[#1 MOD 2 * 1.5]\n#1 = [#1 + 1]\no1 endwhile\n"
                          "G40 G0 X0 Y0\nM30\n",
+    # comp41: arcs under compensation (entry arcs, convex and concave line-arc, arc-line and arc-arc corners)
+    "a finishing contour of lines and I/J arcs": "G21 G90 G17 G54 F800\nT1 M6\nG0 X-5 Y-5\nG41 G1 X0 Y0\n"
+                                                 "X20 Y0\nG3 X25 Y5 I0 J5\nG1 Y15\nG3 X20 Y20 I-5 J0\nG1 X10\n"
+                                                 "G2 X5 Y15 I0 J-5\nG1 X0 Y0.5\nG40 G0 X-5 Y-5\nM30\n",
+    "R arcs both ways and arc-arc corners": "G21 G90 G17 G54 F700\nG0 X0 Y-10\nG42 D2 G3 X10 Y0 I0 J10\n"
+                                            "G1 X20 Y0\nG3 X30 Y10 R10\nG3 X20 Y20 R10\nG2 X10 Y10 R-10.5\n"
+                                            "G1 X0 Y12.25\nG40 G1 X-5 Y-5\nM2\n",
+    "concave corners into and out of arcs": "G21 G90 G17 G54 F600\n#1 = 0.75\nG0 X0 Y0\nG41 D1 G1 X10 Y0\n"
+                                            "G3 X20 Y10 I0 J10\nG1 X10 Y10\nG2 X0 Y[20 + #1] R12\nG1 X-10 Y20\n"
+                                            "G3 X-15 Y15 I0 J-5 Z-1\nG40 G1 X-20\nM30\n",
 }
 
 

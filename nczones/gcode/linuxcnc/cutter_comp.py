@@ -55,7 +55,28 @@ from ...errors import Diagnostic, GcodeError
 from ...exact import to_float
 from ...motion import PLANE_AXES, Plane, SegmentKind
 from ..segments import make_segment, with_tool_deps
-from .comp_floats import CONCAVE_TOLERANCE_RAD, LEFT, entry_line, line_corner, retreat, reverses
+from .comp_floats import (
+    CONCAVE_TOLERANCE_RAD,
+    ENTRY_COS,
+    ENTRY_SHORT,
+    GOUGE,
+    LEFT,
+    RADIUS,
+    SAME_CENTRE,
+    SPIRAL,
+    arc_arc_back,
+    arc_centre_r,
+    arc_corner,
+    arc_entry,
+    arc_line_back,
+    arc_moved,
+    entry_line,
+    find_turn,
+    line_arc_back,
+    line_corner,
+    retreat,
+    reverses,
+)
 from .comp_floats import RIGHT as _RIGHT
 
 if TYPE_CHECKING:
@@ -135,10 +156,7 @@ class CompensatedInterpreter(Protocol):
 
 __all__ = ["CutterComp", "CONCAVE_TOLERANCE_RAD"]
 
-_TOLERANCE_EQUAL = 1e-6
 _INCH = Fraction(254, 10)
-_PI = math.pi
-_HALF_PI = math.pi / 2
 
 #: segment kinds by plain names (Python 3.11 reads an Enum member through ``EnumType.__getattr__``, slowly)
 _ARC, _LINE, _RAPID, _DWELL = SegmentKind.ARC, SegmentKind.LINE, SegmentKind.RAPID, SegmentKind.DWELL
@@ -214,46 +232,6 @@ def program_double(value: Fraction, off: Fraction, unit: tuple[int, int]) -> flo
     p, q = off.as_integer_ratio()
     un, ud = unit
     return ((vn * q - p * vd) * ud) / (vd * q * un)
-
-
-def _find_turn(x1: float, y1: float, cx: float, cy: float, turn: int, x2: float, y2: float) -> float:
-    """Signed sweep (radians) of an arc from (x1, y1) to (x2, y2) around (cx, cy) (LinuxCNC ``find_turn``)."""
-    if turn == 0:
-        return 0.0
-    alpha = math.atan2(y1 - cy, x1 - cx)
-    beta = math.atan2(y2 - cy, x2 - cx)
-    if turn > 0:
-        if beta <= alpha:
-            beta = beta + 2 * _PI
-        return (beta - alpha) + (turn - 1) * (2 * _PI)
-    if alpha <= beta:
-        alpha = alpha + 2 * _PI
-    return (beta - alpha) + (turn + 1) * (2 * _PI)
-
-
-def _inside(side: int | None, turn: int) -> bool:
-    """LinuxCNC TOOL_INSIDE_ARC: the tool is on the centre's side of the arc."""
-    return (side == LEFT and turn > 0) or (side == _RIGHT and turn < 0)
-
-
-def _arc_centre_r(op: tuple[float, float], e: tuple[float, float], radius: float, cw: bool,
-                  tolerance: float) -> tuple[float, float] | None:
-    """Centre of an R-format arc in doubles (LinuxCNC ``arc_data_r``); None if R cannot reach."""
-    (cx, cy), (ex, ey) = op, e
-    abs_radius = abs(radius)
-    mx, my = (ex + cx) / 2.0, (ey + cy) / 2.0
-    half = math.hypot(mx - ex, my - ey)
-    if half - abs_radius > tolerance:
-        return None
-    if half / abs_radius > 1 - 1e-12:
-        half = abs_radius
-    if (cw and radius > 0) or (not cw and radius < 0):
-        theta = math.atan2(ey - cy, ex - cx) - _HALF_PI
-    else:
-        theta = math.atan2(ey - cy, ex - cx) + _HALF_PI
-    turn2 = math.asin(half / abs_radius)
-    offset = abs_radius * math.cos(turn2)
-    return mx + offset * math.cos(theta), my + offset * math.sin(theta)
 
 
 @dataclass
@@ -577,15 +555,13 @@ class CutterComp:
             if q.dwell is not None:
                 continue
             if q.kind is _ARC:
-                r1 = math.hypot(q.a - q.ca, q.b - q.cb)
-                l1 = q.sweep
-                r2 = math.hypot(x - q.ca, y - q.cb)
-                l2 = _find_turn(ex, ey, q.ca, q.cb, q.turn, x, y)
-                if abs(r1 - r2) > 0.01:
+                bad = arc_moved(q.a, q.b, q.ca, q.cb, q.turn, q.sweep, x, y, ex, ey, self.endpoint_valid,
+                                self.it.inch)
+                if bad == SPIRAL:
+                    r1, r2 = math.hypot(q.a - q.ca, q.b - q.cb), math.hypot(x - q.ca, y - q.cb)
                     raise self.error(GC_BUG, f"cutter compensation generated an invalid arc with mismatched radii "
                                       f"{r1:.6f} and {r2:.6f} (LinuxCNC reports this as a BUG and stops)")
-                # interp_queue.cc: the sweep may grow by .0254 (in G21) or .001 (in G20) before it is a gouge
-                if l1 and self.endpoint_valid and abs(l2) > abs(l1) + (0.001 if self.it.inch else 0.0254):
+                if bad == GOUGE:  # interp_queue.cc: the sweep may grow by .0254 (G21) or .001 (G20)
                     raise self.error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
                                       "gouging (cutter radius compensation)")
             else:
@@ -695,39 +671,17 @@ class CutterComp:
                 self._move_endpoint_and_flush(*back)
             else:
                 prev = self.queue[0]
-                oldrad = math.hypot(prev.cb - prev.b, prev.ca - prev.a)
-                base_dir = math.atan2(py - opy, px - opx)
-                th = base_dir + _HALF_PI if prev.turn > 0 else base_dir - _HALF_PI
-                phi = math.atan2(prev.cb - opy, prev.ca - opx)
-                if _inside(side, prev.turn):
-                    oldrad_uncomp = oldrad + radius
-                else:
-                    oldrad_uncomp = oldrad - radius
-                al = th - phi
-                d = oldrad_uncomp * math.cos(al)
-                if _inside(side, prev.turn):
-                    lr = (d - radius) / oldrad
-                    self._check_unit(lr, "Arc to straight motion makes a corner the compensated tool can't fit in "
-                                     "without gouging")
-                    ang = (-math.acos(lr) + th + _PI) if prev.turn > 0 else (math.acos(lr) + th + _PI)
-                else:
-                    lr = (d + radius) / oldrad
-                    self._check_unit(lr, "Arc to straight motion makes a corner the compensated tool can't fit in "
-                                     "without gouging")
-                    ang = (math.acos(lr) + th + _PI) if prev.turn > 0 else (-math.acos(lr) + th + _PI)
-                mx = prev.ca + oldrad * math.cos(ang)
-                my = prev.cb + oldrad * math.sin(ang)
-                self._move_endpoint_and_flush(mx, my)
+                back = arc_line_back(side, radius, prev.a, prev.b, prev.ca, prev.cb, prev.turn, opx, opy, px, py)
+                if back is None:
+                    raise self.error(GC_GOUGE, "Arc to straight motion makes a corner the compensated tool can't fit "
+                                     "in without gouging")
+                self._move_endpoint_and_flush(*back)
         else:  # straight on (or tangent arc -> line)
             self._dequeue()
             self._set_endpoint(cx, cy)
         self._enqueue(_Move(kind, end_x, end_y, list(end), px - opx, py - opy, deps=deps))
         self.cur = (end_x, end_y)
         self.prog = (px, py)
-
-    def _check_unit(self, value: float, message: str) -> None:
-        if value > 1.0 or value < -1.0:
-            raise self.error(GC_GOUGE, message)
 
     # ------------------------------------------------------------------ arcs
     def arc(self, block: Any, axis_words: Any, words: dict, cw: bool) -> None:
@@ -762,50 +716,54 @@ class CutterComp:
         exact_centre = kw.get("centre")
         if rw is not None:
             tol = (0.00005 if it.inch else 0.00005 * 25.4)
-            c = _arc_centre_r((opx, opy), (ex, ey), to_float(rw.value), cw, tol)
+            c = arc_centre_r(opx, opy, ex, ey, to_float(rw.value), cw, tol)
             if c is None:
                 raise self.error("GC302", "arc radius too small to reach the end point", rw)
             cax, cay = c
             exact_centre = None
         else:
             assert exact_centre is not None  # an I/J/K arc's centre is always emitted
-            cax, cay = self._fprog(ia, exact_centre[0]), self._fprog(ib, exact_centre[1])
+            cax, cay = self._centre_ij(words, opx, opy)
         if self.first:
             self._arc_first(cw, turn, ex, ey, cax, cay, rw, end, deps)
         else:
             self._arc_next(cw, turn, ex, ey, cax, cay, exact_centre, end, deps)
         self._advance(end, deps)
 
+    def _centre_ij(self, words: dict, opx: float, opy: float) -> tuple[float, float]:
+        """The program-frame doubles of an I/J arc's centre as LinuxCNC computes them (``arc_data_ijk``,
+        ``arc_data_comp_ijk``): the programmed start's double plus the word's (G91.1), or the word's (G90.1);
+        the double pass computes the same (:mod:`.double_comp`)."""
+        it = self.it
+        a_name, b_name, _ = PLANE_AXES[it.plane]
+        offs = {"X": "I", "Y": "J", "Z": "K"}
+        iw, jw = words.get(offs[a_name]), words.get(offs[b_name])
+        i = to_float(iw.value) if iw is not None else 0.0
+        j = to_float(jw.value) if jw is not None else 0.0
+        if getattr(it, "arc_absolute", False):
+            return i, j
+        return opx + i, opy + j
+
     def _arc_first(self, cw: bool, turn: int, end_x: float, end_y: float, center_x: float, center_y: float,
                    rw: Any, end: list, deps: Any) -> None:
         it = self.it
         side, tool_radius = self.side, self.radius
         cx, cy = self.cur
-        if math.hypot(end_x - cx, end_y - cy) <= tool_radius:
-            raise self.error(GC_ENTRY, "Radius of cutter compensation entry arc is not greater than the tool radius")
         arc_radius = abs(to_float(rw.value)) if rw is not None else math.hypot(center_x - cx, center_y - cy)
-        if arc_radius <= tool_radius and ((side == LEFT and not cw) or (side == _RIGHT and cw)):
+        got = arc_entry(side, tool_radius, cx, cy, end_x, end_y, center_x, center_y, cw, turn, arc_radius, it.inch)
+        if got == ENTRY_SHORT:
+            raise self.error(GC_ENTRY, "Radius of cutter compensation entry arc is not greater than the tool radius")
+        if got == RADIUS:
             raise self.error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
                               f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
-        if _inside(side, turn):
-            gamma = math.atan2(center_y - end_y, center_x - end_x)
-        else:
-            gamma = math.atan2(end_y - center_y, end_x - center_x)
+        if got == ENTRY_COS:
+            raise self.error(GC_RADIUS, "Tool radius not less than arc radius with comp (entry arc)")
+        if got == SPIRAL:
+            raise self.error(GC_BUG, "bug in tool radius comp (LinuxCNC: the entry arc's radii differ)")
+        assert isinstance(got, tuple)
         self.first = False
         self.prog = (end_x, end_y)
-        end_x += tool_radius * math.cos(gamma)
-        end_y += tool_radius * math.sin(gamma)
-        b_len = math.hypot(cy - end_y, cx - end_x) / 2.0
-        ab_ang = math.atan2(center_y - end_y, center_x - end_x)
-        a_ang = math.atan2(cy - end_y, cx - end_x) - ab_ang
-        if abs(math.cos(a_ang)) < _TOLERANCE_EQUAL:
-            raise self.error(GC_RADIUS, "Tool radius not less than arc radius with comp (entry arc)")
-        c_len = b_len / math.cos(a_ang)
-        center_x = end_x + c_len * math.cos(ab_ang)
-        center_y = end_y + c_len * math.sin(ab_ang)
-        spiral = 2 * (0.001 if it.inch else 0.01) * math.sqrt(2)
-        if abs(math.hypot(center_x - end_x, center_y - end_y) - math.hypot(center_x - cx, center_y - cy)) > spiral:
-            raise self.error(GC_BUG, "bug in tool radius comp (LinuxCNC: the entry arc's radii differ)")
+        end_x, end_y, center_x, center_y = got
         ia, ib, _ = self._axes()
         centre = (self._fmachine(ia, center_x), self._fmachine(ib, center_y))
         if self.orientation not in (0, 9):
@@ -813,7 +771,7 @@ class CutterComp:
             # an arc" -- a feed to where the nose centre is, which moves the controlled point by the shift
             self._enqueue(_Move(_LINE, cx, cy, self._corner_end(end)))
         self._enqueue(_Move(_ARC, end_x, end_y, list(end), ca=center_x, cb=center_y, centre=centre,
-                            turn=turn, sweep=_find_turn(cx, cy, center_x, center_y, turn, end_x, end_y), deps=deps))
+                            turn=turn, sweep=find_turn(cx, cy, center_x, center_y, turn, end_x, end_y), deps=deps))
         self.cur = (end_x, end_y)
 
     def _arc_next(self, cw: bool, turn: int, end_x: float, end_y: float, centerx: float, centery: float,
@@ -822,73 +780,42 @@ class CutterComp:
         opx, opy = self.prog
         cx, cy = self.cur
         side, tool_radius = self.side, self.radius
-        small = CONCAVE_TOLERANCE_RAD
-        arc_radius = math.hypot(centerx - end_x, centery - end_y)
-        theta = math.atan2(cy - opy, cx - opx)
-        theta = theta - _HALF_PI if side == LEFT else theta + _HALF_PI
-        delta = math.atan2(centery - opy, centerx - opx)
-        alpha = delta - _HALF_PI if not cw else delta + _HALF_PI
-        beta = theta - alpha if side == LEFT else alpha - theta
-        if beta > 1.5 * _PI:
-            beta = beta - 2 * _PI
-        elif beta < -_HALF_PI:
-            beta = beta + 2 * _PI
-        if (side == LEFT and not cw) or (side == _RIGHT and cw):
-            gamma = math.atan2(centery - end_y, centerx - end_x)
-            if arc_radius <= tool_radius:
-                raise self.error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
-                                  f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
-        else:
-            gamma = math.atan2(end_y - centery, end_x - centerx)
-            delta = delta + _PI
-        new_end_x = end_x + tool_radius * math.cos(gamma)
-        new_end_y = end_y + tool_radius * math.sin(gamma)
+        got = arc_corner(side, tool_radius, cx, cy, opx, opy, end_x, end_y, centerx, centery, cw, turn)
+        if got == -RADIUS:
+            arc_radius = math.hypot(centerx - end_x, centery - end_y)
+            raise self.error(GC_RADIUS, f"Tool radius not less than arc radius with comp (tool radius "
+                              f"{tool_radius:.6f}, arc radius {arc_radius:.6f} program units)")
+        assert isinstance(got, tuple)
+        how, new_end_x, new_end_y, arc_radius, theta, beta, delta = got
         ia, ib, _ = self._axes()
         centre = exact_centre if exact_centre is not None else (self._fmachine(ia, centerx),
                                                                 self._fmachine(ib, centery))
         main = _Move(_ARC, new_end_x, new_end_y, list(end), ca=centerx, cb=centery, centre=centre,
-                     turn=turn, sweep=_find_turn(opx, opy, centerx, centery, turn, end_x, end_y), deps=deps)
-        if beta < -small or beta > _PI + small or (abs(beta - _PI) < small and not _inside(side, turn)):
+                     turn=turn, sweep=find_turn(opx, opy, centerx, centery, turn, end_x, end_y), deps=deps)
+        if how == 1:  # concave
             if not self._front_is_arc("a concave corner before an arc"):
                 if not self.queue:
                     self._enqueue(main)
                     self.prog, self.cur = (end_x, end_y), (new_end_x, new_end_y)
                     return
-                cyy = arc_radius * math.sin(beta - _HALF_PI)
-                if _inside(side, turn):
-                    dist_from_center = arc_radius - tool_radius
-                    toward_nominal = cyy + tool_radius
-                    lr = toward_nominal / dist_from_center
-                    self._check_unit(lr, "Arc move in concave corner cannot be reached by the tool without gouging")
-                    ang = theta + math.asin(lr) if turn > 0 else theta - math.asin(lr)
-                else:
-                    dist_from_center = arc_radius + tool_radius
-                    toward_nominal = cyy - tool_radius
-                    lr = toward_nominal / dist_from_center
-                    self._check_unit(lr, "Arc move in concave corner cannot be reached by the tool without gouging")
-                    ang = theta + _PI - math.asin(lr) if turn > 0 else theta + _PI + math.asin(lr)
-                midx = centerx + dist_from_center * math.cos(ang)
-                midy = centery + dist_from_center * math.sin(ang)
-                self._move_endpoint_and_flush(midx, midy)
+                back = line_arc_back(side, tool_radius, arc_radius, theta, beta, turn, centerx, centery)
+                if back is None:
+                    raise self.error(GC_GOUGE, "Arc move in concave corner cannot be reached by the tool without "
+                                     "gouging")
+                self._move_endpoint_and_flush(*back)
             else:
                 prev = self.queue[0]
-                oldrad = math.hypot(prev.cb - prev.b, prev.ca - prev.a)
-                newrad = arc_radius - tool_radius if _inside(side, turn) else arc_radius + tool_radius
-                arc_cc = math.hypot(prev.cb - centery, prev.ca - centerx)
-                if oldrad == 0 or arc_cc == 0:
+                pulled = arc_arc_back(side, tool_radius, arc_radius, prev.a, prev.b, prev.ca, prev.cb, prev.turn,
+                                      centerx, centery, turn)
+                if pulled == SAME_CENTRE:
                     raise self.error(GC_GOUGE, "Arc to arc motion is invalid because the arcs have the same center")
-                a = (oldrad * oldrad + arc_cc * arc_cc - newrad * newrad) / (2 * oldrad * arc_cc)
-                self._check_unit(a, "Arc to arc motion makes a corner the compensated tool can't fit in without "
-                                 "gouging")
-                pullback = math.acos(a)
-                cc_dir = math.atan2(centery - prev.cb, centerx - prev.ca)
-                if _inside(side, prev.turn):
-                    d = cc_dir + pullback if turn > 0 else cc_dir - pullback
-                else:
-                    d = cc_dir - pullback if turn > 0 else cc_dir + pullback
-                self._move_endpoint_and_flush(prev.ca + oldrad * math.cos(d), prev.cb + oldrad * math.sin(d))
+                if pulled == GOUGE:
+                    raise self.error(GC_GOUGE, "Arc to arc motion makes a corner the compensated tool can't fit in "
+                                     "without gouging")
+                assert isinstance(pulled, tuple)
+                self._move_endpoint_and_flush(*pulled)
             self._enqueue(main)
-        elif beta > small:  # convex: an arc around the programmed corner first
+        elif how == 2:  # convex: an arc around the programmed corner first
             midx = opx + tool_radius * math.cos(delta)
             midy = opy + tool_radius * math.sin(delta)
             self._dequeue()

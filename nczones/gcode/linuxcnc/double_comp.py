@@ -1,9 +1,9 @@
 """Cutter radius compensation (G40, G41, G42) in the double pass (:mod:`nczones.gcode.linuxcnc.doubles`).
 
 On a machine with ``cutter_compensation = "linuxcnc"`` the full path compensates every motion while G41 or G42
-is on (:mod:`.cutter_comp`, LinuxCNC's ``convert_straight_comp1/2`` and its move queue).  The pass follows the
-straight moves (G0, G1) in G17, G21 and G90: the same motions, in the same order, each row the double of the
-full path's exact end.
+is on (:mod:`.cutter_comp`, LinuxCNC's ``convert_straight_comp1/2``, ``convert_arc_comp1/2`` and its move
+queue).  The pass follows the straight moves (G0, G1) and the arcs (G2, G3 with I/J or R; comp41) in G17, G21
+and G90: the same motions, in the same order, each row the double of the full path's exact end.
 
 Why the rows hold
 -----------------
@@ -28,15 +28,34 @@ every magnitude and the offsets), so ``u = S - C``, ``w = E - C`` and the radii 
 the exact ones, as there.  The corner arc joins the pass's arcs (``DoublePath.arc_rows``, its box already
 the sweep's: ``EXACT``), and an arc after a motion LinuxCNC may drop declines as a programmed arc's does.
 
+Arcs (comp41).  A programmed arc's centre double is LinuxCNC's own (``arc_data_ijk``, ``arc_data_r``): an I/J
+arc's is the programmed start's double plus the word's (G91.1), which the pass has (the start is the kept word
+:attr:`Comp.words`, the word its double) and the full path now computes the same way (``CutterComp._centre_ij``;
+it used to round the exact sum, an ulp off LinuxCNC at times); an R arc's is ``comp_floats.arc_centre_r`` of
+the programmed ends' doubles and R's.  From there both call the same functions (the entry arc, the corner, the
+line-arc, arc-line and arc-arc pull-backs, a held arc's move: :mod:`.comp_floats`), so the compensated ends and
+centres are the same doubles, and the same decisions (concave, convex, straight on; an error) are taken.  The
+programmed arc is first checked as the pass checks any arc (``ij_check``, ``r_screen`` on the programmed ends:
+what the full path's ``Interpreter.arc`` may refuse or decide otherwise declines).  The compensated arc is
+held like a straight move and emitted, its end perhaps moved, from the previous row to its row about its
+centre: the full path's exact centre is the programmed one (I/J: the exact start plus the exact words) or the
+exact value of the centre's double (R, an entry arc's moved centre).  Its box is :func:`corner_box`'s with
+``more`` (the centre's magnitude, the programmed and the tool radius) added to ``m``: the exact I/J centre is
+within ``(|start| + |I, J| + |C|) 2**-53`` plus the offset's rounding of the double's, below ``err / 4`` with
+that ``m``; the ends as a corner arc's.  A spiral (the ends' radii differ: a held arc's moved end, LinuxCNC
+allows 0.01) is in the annulus sector, as a corner arc's.  A whole turn, P, K, an arc whose tool radius is not
+less than its radius and every error of ``convert_arc_comp1/2`` decline.
+
 G41.1/G42.1 take their ``D`` as the diameter (a negative one: the other side), as ``CutterComp.select``.
 
 What declines (the full path's error or unknown, or not modelled): G41/G42 on a machine without LinuxCNC's
 compensation or on a lathe, outside G17, in G20, with a tool whose diameter is not in ``[tool_diameters]``
 or not above 0, D not a whole positive number, the tool in the spindle after ``T0 M6`` or ``M61``; G41 or G42
-while on; G2/G3 while on or as the move after G40's flush; a dwell, M6, M61, a plane, units, work offset, tool
+while on; G2/G3 as the move after G40's flush, a whole turn, P or K under compensation; a dwell, M6, M61, a plane, units, work offset, tool
 length or path mode code while on (or, a dwell, M6 and M61, while the machine stands at G40's compensated
 point); G91, G20, G7 and canned cycles in a program that writes compensation (:meth:`Comp.compile_checks`);
-an entry move not longer than the radius, a gouge (a held move reversed), a zero-degree inside corner.
+an entry move not longer than the radius, a gouge (a held move reversed), a zero-degree inside corner, a
+concave corner right after a flush (the full path's unknown), every error of the arc formulas.
 """
 
 from __future__ import annotations
@@ -49,12 +68,20 @@ from .comp_floats import (
     CONCAVE_TOLERANCE_RAD,
     LEFT,
     RIGHT,
+    arc_arc_back,
+    arc_centre_r,
+    arc_corner,
+    arc_entry,
+    arc_line_back,
+    arc_moved,
     entry_line,
+    find_turn,
+    line_arc_back,
     line_corner,
     retreat,
     reverses,
 )
-from .double_arcs import EXACT
+from .double_arcs import EXACT, ij_check, r_screen
 from .double_arcs import sector_box as arc_box
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
@@ -62,7 +89,7 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["Comp", "comp_body", "comp_others", "corner_box", "straight_code"]
+__all__ = ["Comp", "arc_code", "comp_body", "comp_others", "corner_box", "straight_code"]
 
 #: The comp group's codes that turn compensation on (G41, G42; G41.1, G42.1 as the pass keys them: -411, -421).
 _ON = (41, 42, -411, -421)
@@ -74,17 +101,18 @@ _U = 2.0**-52
 
 
 def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, cw: bool,
-               offb: float) -> tuple[float, float, float, float]:
+               offb: float, more: float = 0.0) -> tuple[float, float, float, float]:
     """The box (``xlo, xhi, ylo, yhi``) of a corner arc from row ``(sx, sy)`` to row ``(ex, ey)`` about the
     programmed corner's row ``(cx, cy)`` (the module's docstring: ``double_arcs._box`` with ``ij_check``'s
-    ``err``; ``offb`` bounds the offsets).
+    ``err``; ``offb`` bounds the offsets), or of a compensated programmed arc about its centre's double
+    (``more``: a magnitude its centre's error also depends on, added to ``m``).
 
     >>> [round(v, 9) + 0.0 for v in corner_box(0.0, 1.0, 1.0, 0.0, 0.0, 0.0, True, 0.0)]
     [0.0, 1.0, 0.0, 1.0]
     """
     ux, uy, wx, wy = sx - cx, sy - cy, ex - cx, ey - cy
     r0, r1 = math.hypot(ux, uy), math.hypot(wx, wy)
-    m = abs(sx) + abs(sy) + r0 + r1 + offb
+    m = abs(sx) + abs(sy) + r0 + r1 + offb + more
     err = (64.0 * m + 0.0625) * _U
     diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
     return arc_box(sx, sy, ex, ey, cx, cy, ux, uy, wx, wy, big, diff + err, err, cw)
@@ -140,6 +168,17 @@ def straight_code(axes: list[tuple[int, int]], normal: list[str]) -> list[str]:
     return ["if CS.busy:", f"    CS.straight(mode, v, {tuple(axes)!r})", "else:", *(f"    {b}" for b in normal)]
 
 
+def arc_code(others: list[str], axes: list[tuple[int, int]], normal: list[str]) -> list[str]:
+    """An arc's code in a program that may compensate: :meth:`Comp.arc` while compensation is on or G40 left the
+    machine off the programmed point, else ``normal``."""
+    if "P" in others or "K" in others or not axes:
+        comp = ["raise D('an arc with P or K, or a whole turn, under cutter compensation')"]
+    else:
+        spec = tuple(others.index(x) if x in others else -1 for x in "RIJ")
+        comp = [f"CS.arc(mode, v, {tuple(axes)!r}, {spec!r})"]
+    return ["if CS.busy:", *(f"    {b}" for b in comp), "else:", *(f"    {b}" for b in normal)]
+
+
 class Comp:
     """The compensation state of one pass (``_Pass.cc``) and LinuxCNC's move queue, as
     :class:`~nczones.gcode.linuxcnc.cutter_comp.CutterComp` keeps them, on the pass's doubles."""
@@ -154,7 +193,8 @@ class Comp:
         self.busy = False
         self.radius = 0.0
         self.first = True
-        #: held moves: ``[kind, a, b, da, db, row]`` (straight: ``row`` the other axes' doubles)
+        #: held moves: ``[kind, a, b, da, db, row]`` (``row``: the move's own list of the other axes' doubles,
+        #: its plane axes set when emitted); an arc's adds ``ca, cb, turn, sweep, radius`` (its programmed radius)
         self.queue: list[list[Any]] = []
         self.endpoint = (0.0, 0.0)
         self.valid = False
@@ -283,7 +323,7 @@ class Comp:
         st = self.st
         pos, off, words = st.pos, st.off, self.words
         ia, ib = self.ia, self.ib
-        if self.side is not None and self.first:  # (before this move's words are kept)
+        if self.first and self.side is not None:  # (before this move's words are kept)
             self.prog = self.cur = (self._program(ia), self._program(ib))
         before = (pos[ia], pos[ib], pos[self.inn] if self.inn is not None else 0.0)
         px, py = self.prog
@@ -296,15 +336,15 @@ class Comp:
                 py = x
         if self.side is None:  # the move after G40's flush: from the compensated point, uncompensated
             self.busy = False
-            self._row(mode, tuple(pos))
+            self._row(mode, list(pos))
             return
         words[ia], words[ib] = px, py
         if self.first:
-            self._first(mode, px, py, tuple(pos))
+            self._first(mode, px, py, pos[:])
         else:
-            self._next(mode, px, py, tuple(pos), before)
+            self._next(mode, px, py, pos[:], before)
 
-    def _first(self, kind: int, px: float, py: float, row: tuple[float, ...]) -> None:
+    def _first(self, kind: int, px: float, py: float, row: list[float]) -> None:
         """The entry move (``CutterComp._straight_first``)."""
         cx, cy = self.cur
         got = entry_line(self.side, self.radius, cx, cy, px, py)
@@ -316,68 +356,214 @@ class Comp:
         self.first = False
         self.cur, self.prog = (ex, ey), (px, py)
 
-    def _next(self, kind: int, px: float, py: float, row: tuple[float, ...], before: tuple[float, float, float]) -> None:
-        """A move after the first (``CutterComp._straight_next``; the queue's front is never an arc: the pass
-        holds straight moves only, a corner arc is emitted at once)."""
+    def _next(self, kind: int, px: float, py: float, row: list[float], before: tuple[float, float, float]) -> None:
+        """A move after the first (``CutterComp._straight_next``; a corner arc is emitted at once, a programmed
+        arc may be held at the queue's front)."""
         cx, cy = self.cur
         opx, opy = self.prog
         if py == opy and px == opx:  # no motion in the plane
             self.queue.append([kind, cx, cy, 0.0, 0.0, row])
             return
+        queue = self.queue
+        front = queue[0][8] if queue and queue[0][0] == _ARC else 0
         concave, beta, end_x, end_y, mid_x, mid_y, theta, gamma = line_corner(self.side, self.radius, cx, cy,
-                                                                               opx, opy, px, py, 0)
+                                                                               opx, opy, px, py, front)
         if not concave and beta > CONCAVE_TOLERANCE_RAD:  # convex: around the corner
             self._flush(cx, cy)
             # the corner move, held and emitted at once (CutterComp: _enqueue, then _dequeue)
-            corner = list(row)
-            if self.inn is not None:
-                corner[self.inn] = before[2]
-            off = self.st.off
-            corner[self.ia], corner[self.ib] = mid_x + off[self.ia], mid_y + off[self.ib]
-            self._row(_ARC if kind else _RAPID, corner, (before[0], before[1], self.side == LEFT) if kind else None)
-            self.endpoint, self.valid = (mid_x, mid_y), True
+            self._corner(kind, mid_x, mid_y, row, before)
         elif concave:
-            if not self.queue:
+            if not queue:
                 raise self.declined("a concave corner after the compensation queue was flushed")
-            back = retreat(self.radius, cx, cy, beta, theta, gamma)
+            if front:  # an arc held: its end pulled back (arc_line_back)
+                q = queue[0]
+                back = arc_line_back(self.side, self.radius, q[1], q[2], q[6], q[7], front, opx, opy, px, py)
+            else:
+                back = retreat(self.radius, cx, cy, beta, theta, gamma)
             if back is None:
-                raise self.declined("a zero-degree inside corner (LinuxCNC's error)")
+                raise self.declined("a zero-degree inside corner or a gouge (LinuxCNC's error)")
             self._flush(*back)
         else:  # straight on
             self._dequeue()
             self.endpoint, self.valid = (cx, cy), True
-        self.queue.append([kind, end_x, end_y, px - opx, py - opy, row])
+        queue = self.queue
+        queue.append([kind, end_x, end_y, px - opx, py - opy, row])
         self.cur, self.prog = (end_x, end_y), (px, py)
+
+    def _corner(self, kind: int, mid_x: float, mid_y: float, row: Any, before: tuple[float, float, float]) -> None:
+        """A convex corner's move to ``(mid_x, mid_y)`` (an arc about the programmed corner ``before``, a
+        rapid's straight), emitted at once; the queue's endpoint there."""
+        corner = list(row)
+        if self.inn is not None:
+            corner[self.inn] = before[2]
+        off = self.st.off
+        corner[self.ia], corner[self.ib] = mid_x + off[self.ia], mid_y + off[self.ib]
+        if kind:  # an arc: its box, then its row (_row's)
+            adds = self.adds or self._adds()
+            self._arc(corner, (before[0], before[1], self.side == LEFT, 0.0))
+            st = self.st
+            for add, x in zip(adds, corner):
+                add(x)
+            if len(st.columns[0]) >= st.rows:
+                st.full()
+        else:
+            self._row(_RAPID, corner)
+        self.endpoint, self.valid = (mid_x, mid_y), True
+
+    # -- arcs -------------------------------------------------------------------------------------------
+    def arc(self, mode: int, v: Any, axes: tuple[tuple[int, int], ...], spec: tuple[int, int, int]) -> None:
+        """A G2 (``mode`` 2) or G3 of words ``v`` (``axes``: word index, axis index; ``spec``: the indices of
+        R, I and J, -1 for a word the block lacks) while :attr:`busy` (``CutterComp.arc``): the programmed
+        arc's checks (the pass's own, on the programmed ends: what the full path's ``Interpreter.arc`` may
+        refuse declines), its centre's doubles as LinuxCNC's (``arc_centre_r``; I/J: the programmed start's
+        double plus the words', as ``CutterComp._centre_ij``), then the entry or the corner."""
+        if self.side is None:
+            raise self.declined("an arc just after G40's flush")
+        st = self.st
+        pos, off, words = st.pos, st.off, self.words
+        ia, ib = self.ia, self.ib
+        if self.first:
+            self.prog = self.cur = (self._program(ia), self._program(ib))
+        before = (pos[ia], pos[ib], pos[self.inn] if self.inn is not None else 0.0)
+        opx, opy = self.prog
+        px, py = opx, opy
+        for k, i in axes:
+            x = words[i] = v[k]
+            pos[i] = x + off[i]
+            if i == ia:
+                px = x
+            elif i == ib:
+                py = x
+        words[ia], words[ib] = px, py
+        if px == opx and py == opy:
+            raise self.declined("a whole turn under cutter compensation")
+        cw = mode == 2
+        ri, ii, ji = spec
+        if ri >= 0:
+            r = v[ri]
+            why = r_screen(before[0], before[1], pos[ia], pos[ib], r, st.offb)
+            centre = arc_centre_r(opx, opy, px, py, r, cw, 0.00005 * 25.4)
+            radius = abs(r)
+        else:
+            wi, wj = v[ii] if ii >= 0 else 0.0, v[ji] if ji >= 0 else 0.0
+            why = ij_check(before[0], before[1], pos[ia], pos[ib], wi, wj, cw, st.offb, st.rule, False, True)
+            centre = (opx + wi, opy + wj)
+            radius = math.hypot(centre[0] - self.cur[0], centre[1] - self.cur[1])
+        if why.__class__ is str or centre is None:
+            raise self.declined(f"a compensated arc's programmed arc: {why}")
+        row = pos[:]
+        turn = -1 if cw else 1
+        if self.first:
+            self._arc_first(cw, turn, px, py, centre, radius, row)
+        else:
+            self._arc_next(cw, turn, px, py, centre, row, before)
+        self.prog = (px, py)
+
+    def _arc_first(self, cw: bool, turn: int, px: float, py: float, centre: tuple[float, float], radius: float,
+                   row: list[float]) -> None:
+        """The entry arc (``CutterComp._arc_first``: :func:`.comp_floats.arc_entry`)."""
+        cx, cy = self.cur
+        got = arc_entry(self.side, self.radius, cx, cy, px, py, centre[0], centre[1], cw, turn, radius, False)
+        if got.__class__ is int:
+            raise self.declined("a cutter compensation entry arc LinuxCNC refuses")
+        ex, ey, ccx, ccy = got  # type: ignore[misc]
+        self.first = False
+        self.queue.append([_ARC, ex, ey, 0.0, 0.0, row, ccx, ccy, turn, find_turn(cx, cy, ccx, ccy, turn, ex, ey),
+                           radius])
+        self.cur = (ex, ey)
+
+    def _arc_next(self, cw: bool, turn: int, px: float, py: float, centre: tuple[float, float],
+                  row: list[float], before: tuple[float, float, float]) -> None:
+        """An arc after the first move (``CutterComp._arc_next``: :func:`.comp_floats.arc_corner` and the
+        pull-backs of a concave corner)."""
+        cx, cy = self.cur
+        opx, opy = self.prog
+        side, radius = self.side, self.radius
+        c0, c1 = centre
+        got = arc_corner(side, radius, cx, cy, opx, opy, px, py, c0, c1, cw, turn)
+        if got.__class__ is int:
+            raise self.declined("a tool radius not less than a compensated arc's (LinuxCNC's error)")
+        how, nx, ny, arc_radius, theta, beta, delta = got  # type: ignore[misc]
+        main = [_ARC, nx, ny, 0.0, 0.0, row, c0, c1, turn, find_turn(opx, opy, c0, c1, turn, px, py),
+                arc_radius]
+        if how == 1:  # concave
+            queue = self.queue
+            if not queue:
+                raise self.declined("a concave corner after the compensation queue was flushed")
+            q = queue[0]
+            if q[0] == _ARC:
+                back: Any = arc_arc_back(side, radius, arc_radius, q[1], q[2], q[6], q[7], q[8], c0, c1, turn)
+            else:
+                back = line_arc_back(side, radius, arc_radius, theta, beta, turn, c0, c1)
+            if back is None or back.__class__ is int:
+                raise self.declined("a concave corner before an arc the tool cannot reach (LinuxCNC's error)")
+            self._flush(*back)
+        elif how == 2:  # convex: a corner arc to opx + r cos(delta) first
+            self._dequeue()
+            self._corner(1, opx + radius * math.cos(delta), opy + radius * math.sin(delta), row, before)
+        else:
+            self._dequeue()
+            self.endpoint, self.valid = (cx, cy), True
+        self.queue.append(main)
+        self.cur = (nx, ny)
 
     def _flush(self, x: float, y: float) -> None:
         """Move every held move's end to ``(x, y)`` and emit them (``_move_endpoint_and_flush``); a reversed
-        one is LinuxCNC's gouge error: declined."""
-        if not self.queue:
+        straight one or an arc LinuxCNC refuses (:func:`.comp_floats.arc_moved`) is its gouge error: declined.
+        One held straight move (a contour of lines: most flushes) is emitted here, as :meth:`_dequeue` would."""
+        queue = self.queue
+        if not queue:
             return
         ex, ey = self.endpoint
-        for q in self.queue:
-            if self.valid and reverses(q[3], q[4], x, y, ex, ey):
+        valid = self.valid
+        if len(queue) == 1 and queue[0][0] != _ARC:
+            q = queue[0]
+            if valid and reverses(q[3], q[4], x, y, ex, ey):
+                raise self.declined("a compensated move reversed in a concave corner (LinuxCNC's gouge error)")
+            st = self.st
+            r = q[5]
+            r[self.ia] = x + st.off[self.ia]
+            r[self.ib] = y + st.off[self.ib]
+            for add, v in zip(self.adds or self._adds(), r):
+                add(v)
+            if q[0] == _RAPID:
+                st.rapids += 1
+            self.queue = []
+            if len(st.columns[0]) >= st.rows:
+                st.full()
+            self.endpoint = (x, y)  # (valid: already, or set below)
+            self.valid = True
+            return
+        for q in queue:
+            if q[0] == _ARC:
+                if arc_moved(q[1], q[2], q[6], q[7], q[8], q[9], x, y, ex, ey, valid, False):
+                    raise self.declined("a held compensated arc LinuxCNC refuses to move")
+            elif valid and reverses(q[3], q[4], x, y, ex, ey):
                 raise self.declined("a compensated move reversed in a concave corner (LinuxCNC's gouge error)")
             q[1], q[2] = x, y
         self._dequeue()
         self.endpoint, self.valid = (x, y), True
 
     def _dequeue(self) -> None:
-        """Emit the held moves as rows (straight moves: the pass holds no arc)."""
+        """Emit the held moves as rows (an arc: its box, :meth:`_arc`; a held move's row is its own list)."""
         self.valid = False
         st = self.st
         off, ia, ib = st.off, self.ia, self.ib
         oa, ob = off[ia], off[ib]
         adds = self.adds or self._adds()
-        for kind, a, b, _da, _db, row in self.queue:
-            r = list(row)
-            r[ia] = a + oa
-            r[ib] = b + ob
+        col0, rows = st.columns[0], st.rows
+        for q in self.queue:
+            kind = q[0]
+            r = q[5]
+            r[ia] = q[1] + oa
+            r[ib] = q[2] + ob
+            if kind == _ARC:  # a programmed arc about its centre
+                self._arc(r, (q[6] + oa, q[7] + ob, q[8] < 0, abs(q[6]) + abs(q[7]) + q[10] + self.radius))
             for add, x in zip(adds, r):
                 add(x)
             if kind == _RAPID:
                 st.rapids += 1
-            if len(st.columns[0]) >= st.rows:
+            if len(col0) >= rows:
                 st.full()
         self.queue = []
 
@@ -403,8 +589,8 @@ class Comp:
             st.full()
 
     def _arc(self, row: Any, centre: Any) -> None:
-        """A corner arc about ``centre`` (its row doubles and clockwise) ending at ``row``: its box, before its
-        row is appended (an arc after a motion LinuxCNC may drop declines, as ``_Pass._arc_body``)."""
+        """A corner arc or a compensated programmed arc about ``centre`` (its row doubles, clockwise, and the
+        magnitude of :func:`corner_box`'s ``more``) ending at ``row``: its box, before its row is appended (an arc after a motion LinuxCNC may drop declines, as ``_Pass._arc_body``)."""
         st = self.st
         ia, ib = self.ia, self.ib
         ca, cb = st.columns[ia], st.columns[ib]
@@ -415,5 +601,5 @@ class Comp:
             raise self.declined("a corner arc after a motion LinuxCNC may drop in a blended corner")
         if st.arc_plane != 17:
             st.arc_in(17)
-        box = corner_box(ca[-1], cb[-1], row[ia], row[ib], centre[0], centre[1], centre[2], st.offb)
+        box = corner_box(ca[-1], cb[-1], row[ia], row[ib], centre[0], centre[1], centre[2], st.offb, centre[3])
         st.add_arc(st.row0 + last + 1, box, (float(EXACT), 0.0, 0.0, st.offb))

@@ -105,10 +105,11 @@ bottom decline); the peck rows widened by their drift, G91 rows by their chain's
 Cutter compensation (:mod:`.double_comp`): on a machine with ``cutter_compensation = "linuxcnc"`` (not a lathe),
 G40, and G41/G42 with a literal or computed ``D`` (a tool of ``[tool_diameters]``) or without (the tool in the
 spindle, ``T`` and ``M6``/``M61 Q`` followed), or G41.1/G42.1 with a diameter ``D`` (no ``L``), in G17, G21 and
-G90, over straight moves: the rows of the full
-path's ``CutterComp`` (the held move, the entry, a convex corner's arc about the programmed corner with its sweep
-box, a concave corner's pulled-back end, G40's and M2/M30's flush) from the same float formulas
-(:mod:`.comp_floats`).  Declined: G2/G3 under compensation or just after its G40, a dwell, tool change or a
+G90, over straight moves and arcs (I/J and R, comp41): the rows of the full
+path's ``CutterComp`` (the held move, the entry line or arc, a convex corner's arc about the programmed corner with
+its sweep box, a concave corner's pulled-back end, line-arc, arc-line and arc-arc corners, a compensated arc's
+sweep box about its centre, G40's and M2/M30's flush) from the same float formulas
+(:mod:`.comp_floats`).  Declined: G2/G3 just after its G40, with P or K or a whole turn under it, a dwell, tool change or a
 plane, units, offset, tool length or path mode code while it is on, G91, G20, G7/G8 and canned cycles in a program
 that may write it (a ``41`` or ``42`` in the text), and every error of the full path's compensation.
 
@@ -175,7 +176,7 @@ from .double_arcs import (
     refined,
 )
 from .double_arcs import INCH as INCH_ARC
-from .double_comp import Comp, comp_body, comp_others, straight_code
+from .double_comp import Comp, arc_code, comp_body, comp_others, straight_code
 from .double_cycles import (
     CYCLE_CODES,
     Cycles,
@@ -1685,28 +1686,26 @@ class _Pass:
                 raise Declined("an arc on axes other than X, Y and Z")
         body = _mode_checks(code, bool(arc))
         if arc:
-            if self.cc is not None:
-                body.append("if CS.busy: raise D('an arc under cutter compensation or just after its G40')")
             if self.diameter:  # a G91 arc where X may be a diameter (.double_lathe): the full path's
                 body.append("if st.inc or st.chained: raise D('an arc in G91, or on a G91 chain, where X may be a "
                             "diameter')")
         body += ["if unset: st.assume()", "off = st.off"]
         if arc:
             body.append("pl = st.plane or st.assume_plane()")
+            planes = []
             for n, plane in enumerate(sorted(_ARC_PLANES)):
-                body.append(f"{'el' if n else ''}if pl == {plane}:")
-                body += [f"    {b}" for b in self._arc_plane_body(others, axes, plane)]
-            body += ["else:", "    raise D('an arc before the program sets the plane')"]
-        else:
-            moved = tuple(i for _k, i in axes)
-            rapids = ["if not mode: st.rapids += 1"] if code is None else ["st.rapids += 1"] if code == 0 else []
-            straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                        *self._straight_ends(axes), *self._levels(others, axes), *self._kept_words(axes),
-                        *self._appends(axes), "n = len(C0)",
-                        f"if n >= {self.rows}: st.full()", *rapids]
-            return body + (straight if self.cc is None else straight_code(axes, straight))
-        body.append(f"if n >= {self.rows}: st.full()")
-        return body
+                planes.append(f"{'el' if n else ''}if pl == {plane}:")
+                planes += [f"    {b}" for b in self._arc_plane_body(others, axes, plane)]
+            planes += ["else:", "    raise D('an arc before the program sets the plane')",
+                       f"if n >= {self.rows}: st.full()"]
+            return body + (planes if self.cc is None else arc_code(others, axes, planes))  # (.double_comp)
+        moved = tuple(i for _k, i in axes)
+        rapids = ["if not mode: st.rapids += 1"] if code is None else ["st.rapids += 1"] if code == 0 else []
+        straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
+                    *self._straight_ends(axes), *self._levels(others, axes), *self._kept_words(axes),
+                    *self._appends(axes), "n = len(C0)",
+                    f"if n >= {self.rows}: st.full()", *rapids]
+        return body + (straight if self.cc is None else straight_code(axes, straight))
 
     def _levels(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """In a text that may write a canned cycle (not one that may compensate, which declines cycles): the
