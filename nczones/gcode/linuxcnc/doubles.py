@@ -356,6 +356,14 @@ class DoublePath:
             self._arc_bounds(first, last, lo, hi)
         return lo, hi
 
+    def reach(self, first: int, last: int, names: Any = None) -> dict[str, Fraction] | None:
+        """Per axis of ``names`` (default all), a bound of how far a blended corner between two of motions
+        ``first``..``last`` can leave their box (:func:`.double_reach.reach`, whose docstring says why it holds:
+        ``prover/doubles.py`` grows a box with arcs by it), or None."""
+        from .double_reach import reach  # (a proof of G64 boxes with arcs only)
+
+        return reach(self, first, last, names)
+
     def arc_pair(self, k: int) -> tuple[int, int]:
         """The axes (first, second) of the plane of arc ``k`` (an index of ``arc_rows``)."""
         pairs = self.arc_axes
