@@ -21,6 +21,7 @@ import os
 from fractions import Fraction
 
 import mpmath
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -285,3 +286,13 @@ def test_a_long_run_of_side_arcs_is_one_box(monkeypatch):
     same_outcome(with_pass, without)
     assert with_pass.verdict is Verdict.SAFE
     assert dict(with_pass.stats)["double_pass_boxes"] == 1
+
+
+def test_an_arc_after_a_motion_linuxcnc_may_drop_declines_in_any_plane():
+    """The pass's quick test before ``_Pass.tiny`` looks at both plane axes (plane41): a G18 arc after a motion of
+    1e-8 mm on X (its plane's second axis; Z, the first, still) declines, after one of 1 mm on X it is taken."""
+    head = "G21 G90 G54 F500\nG64\n#1 = 0\nG18\nG1 X[#1 + 10] Z1\n"
+    arc = "G2 Z0 X{x} K-1 I0\nM30\n"
+    with pytest.raises(Declined, match="may drop"):
+        double_pass(head + "G1 X10.00000001\n" + arc.format(x="11.00000001"), MACHINE, max_iterations=1000)
+    assert check_reach(head + "G1 X11\n" + arc.format(x="12"))

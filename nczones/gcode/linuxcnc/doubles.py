@@ -1627,12 +1627,13 @@ class _Pass:
             flag = IJ_SCREEN | (TURN if turn else 0)
             kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q, ob))"
         return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
-                # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
+                # (first a test tiny() implies, on each of the plane's axes: the motion's end sa (row -2) and start
                 # differ by LIM (plus twice a G91 chain's error, XERR) or more, and |sa| < 1e10, leave tiny()'s
-                # bound there below DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|: most arcs follow a motion that is
-                # not short)
+                # bound there below DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|, and likewise sb: most arcs follow a
+                # motion that is not short on one of them, an arc in another plane too)
                 f"if st.blend and n > 2 and (-(li := LIM + 2.0 * XERR[{ia}]) < sa - C{ia}[-3] < li "
                 "or not -1e10 < sa < 1e10) "
+                f"and (-(li := LIM + 2.0 * XERR[{ib}]) < sb - C{ib}[-3] < li or not -1e10 < sb < 1e10) "
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
