@@ -163,7 +163,6 @@ from .double_arcs import (
     R_INCH_REL,
     R_SCREEN,
     TURN,
-    chain_offb,
     ij_check,
     inch_offb,
     inch_rule,
@@ -1453,7 +1452,7 @@ class _Pass:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_check, "CO": chain_offb,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_check,
                                  "AR": self.new_arcs[0].append, "IOFFB": inch_offb, "AB": self.new_arcs[1].extend,
                                  "AW": self.new_arcs[2].extend, "NA_ROWS": self.new_arcs[0],
                                  "AS": self.arc_slots.append,
@@ -1660,8 +1659,9 @@ class _Pass:
         start, chained = [], []
         if self.g91_text:
             start = [f"ea = ERR[{ia}]; eb = ERR[{ib}]"]
-            chained = [f"if ea is not None or eb is not None or st.chained: ob = CO(ob, max(ea or 0.0, eb or 0.0, "
-                       f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0))"]
+            # chain_offb inline (a call less an arc; at ein 0 an ulp above offb, a larger bound)
+            chained = [f"if ea is not None or eb is not None or st.chained: ob = NA(ob + max(ea or 0.0, eb or 0.0, "
+                       f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0) * {2.0**50!r}, INF)"]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
                 *start, *self._straight_ends(axes), *chained, *self._kept_words(axes),
