@@ -89,7 +89,8 @@ def reach(path: Any, first: int, last: int, names: Any = None) -> dict[str, Frac
     """
     b, e = first - 1 - path.row0, last + 1 - path.row0
     axes = range(len(path.axes)) if names is None else [path.axes.index(x) for x in names]
-    flags = _flags(path, b, e)
+    rows: dict[int, tuple[Any, list[float], Fraction]] = {}
+    flags = _flags(path, b, e, rows)
     inner, extra = _inner(flags), flags.count(1) * DROPPED_BELOW
     plane = set(path.arc_axes)
     arc = _widest_arc(path, first, last) if plane.intersection(axes) else Fraction(0)
@@ -97,43 +98,52 @@ def reach(path: Any, first: int, last: int, names: Any = None) -> dict[str, Frac
         return None
     out = {}
     for a in axes:
-        part = path.columns[a][b:e]
-        steps = list(map(abs, map(sub, part[1:], part[:-1])))
+        _part, steps, err = _rows(path, a, b, e, rows)
         most = max(steps) if inner else _neighbours(steps)
         if not math.isfinite(most):
             return None
-        g = Fraction(most) * _UP + 2 * _error(path, a, part)
+        g = Fraction(most) * _UP + 2 * err
         out[path.axes[a]] = (max(g, arc) if a in plane else g) + extra
     return out
 
 
-def _error(path: Any, a: int, part: Any) -> Fraction:
-    """:func:`row_error` of the rows ``part`` of axis ``a``."""
-    return row_error(max(max(part), -min(part)), path.offset_bound[a], path.inc_bound[a] if path.inc_bound else 0.0)
+def _rows(path: Any, a: int, b: int, e: int, done: dict) -> tuple[Any, list[float], Fraction]:
+    """Axis ``a``'s rows ``b``..``e - 1`` (indices of the columns held), their steps' magnitudes (float
+    differences) and :func:`row_error` (kept in ``done``: each axis scanned once a call)."""
+    got = done.get(a)
+    if got is None:
+        part = path.columns[a][b:e]
+        top = max(max(part), -min(part))
+        got = done[a] = (part, list(map(abs, map(sub, part[1:], part[:-1]))), _error(path, a, top))
+    return got
 
 
-def _flags(path: Any, b: int, e: int) -> bytes:
+def _error(path: Any, a: int, top: float) -> Fraction:
+    """:func:`row_error` of rows of axis ``a`` at most ``top`` in magnitude."""
+    return row_error(top, path.offset_bound[a], path.inc_bound[a] if path.inc_bound else 0.0)
+
+
+def _flags(path: Any, b: int, e: int, done: dict) -> bytes:
     """A byte per motion ending at rows ``b + 1``..``e - 1`` (indices of the columns held): 1 when it may be one
-    LinuxCNC drops (on every axis its rows' doubles differ by less than :func:`_limit`), else 0.  The first axis's test picks the candidates; the others are tested at those alone
-    while they are few."""
-    cols = path.columns
-    parts = [col[b:e] for col in cols]
-    steps = map(sub, parts[0][1:], parts[0][:-1])
-    limit = _limit(_error(path, 0, parts[0]))
-    flags = bytearray(map(limit.__gt__, map(abs, steps)))
+    LinuxCNC drops (on every axis its rows' doubles differ by less than :func:`_limit` of their error), else 0.
+    The first axis's test picks the candidates; the others are tested at those alone while they are few (with
+    the error of those two rows), else scanned (:func:`_rows`)."""
+    _part, steps, err = _rows(path, 0, b, e, done)
+    flags = bytearray(map(_limit(err).__gt__, steps))
     if 1 not in flags:
         return bytes(flags)
-    limits = [_limit(_error(path, a, part)) for a, part in enumerate(parts)]
-    at = [k for k in range(len(flags)) if flags[k]] if flags.count(1) <= _FEW else None
-    if at is None:  # (a byte's 0 or 1 is its bit 8 k of the little-endian number: one AND an axis)
+    if flags.count(1) > _FEW:  # (a byte's 0 or 1 is its bit 8 k of the little-endian number: one AND an axis)
         n, both = len(flags), int.from_bytes(flags, "little")
-        for a in range(1, len(cols)):
-            mask = bytes(map(limits[a].__gt__, map(abs, map(sub, parts[a][1:], parts[a][:-1]))))
-            both &= int.from_bytes(mask, "little")
+        for a in range(1, len(path.columns)):
+            _part, steps, err = _rows(path, a, b, e, done)
+            both &= int.from_bytes(bytes(map(_limit(err).__gt__, steps)), "little")
         return both.to_bytes(n, "little")
-    for k in at:
-        if not all(abs(part[k + 1] - part[k]) < limits[a] for a, part in enumerate(parts)):
-            flags[k] = 0
+    for k in [k for k in range(len(flags)) if flags[k]]:
+        for a, col in enumerate(path.columns):
+            c0, c1 = col[b + k], col[b + k + 1]
+            if not abs(c1 - c0) < _limit(_error(path, a, max(abs(c0), abs(c1)))):
+                flags[k] = 0
+                break
     return bytes(flags)
 
 
@@ -177,8 +187,8 @@ def _widest_arc(path: Any, first: int, last: int) -> Fraction | None:
     begin, end = bisect_left(rows, first), bisect_right(rows, last)
     if begin >= end:
         return Fraction(0)
-    if not math.isfinite(sum(boxes[4 * begin:4 * end])):  # (a nan or inf anywhere makes the sum one)
+    widths = [list(map(sub, boxes[4 * begin + 2 * k + 1:4 * end:4], boxes[4 * begin + 2 * k:4 * end:4]))
+              for k in (0, 1)]
+    if not math.isfinite(sum(widths[0]) + sum(widths[1])):  # (a nan or inf anywhere makes the sum one)
         return None
-    widest = max(max(map(sub, boxes[4 * begin + 2 * k + 1:4 * end:4], boxes[4 * begin + 2 * k:4 * end:4]))
-                 for k in (0, 1))
-    return Fraction(widest) * _UP if math.isfinite(widest) else None
+    return Fraction(max(max(widths[0]), max(widths[1]))) * _UP
