@@ -60,8 +60,9 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
     Arcs (``specs/path-modes.md``, "The enclosure without tolerance"): a rounded corner next to an arc lies in
     the Minkowski sum of the two motions' boxes less the corner ``C``, which a box holding both need not
     hold.  A box of two or more motions with an arc is proved grown by its own size on every side
-    (``[2 lo - hi, 2 hi - lo]`` holds ``a + b - C`` for ``a``, ``b``, ``C`` in ``[lo, hi]``), which holds
-    every corner inside it; the corner at a box's end is proved on its own.
+    (``[2 lo - hi, 2 hi - lo]`` holds ``a + b - C`` for ``a``, ``b``, ``C`` in ``[lo, hi]``), or else by a
+    bound of how far such a corner leaves it (:func:`_grown_fits`), either of which holds every corner inside it; the
+    corner at a box's end is proved on its own.
     """
     arcs = bool(getattr(path, "arcs", 0))
     corners = _bare(path, machine)
@@ -87,8 +88,10 @@ def prove_enclosures(path: Any, machine: Machine, margin: Fraction, max_boxes: i
             return None
         lo, hi = path.enclosure(first, last)
         if corners and arcs and last > first and path.has_arcs(first, last):
-            lo, hi = _grown(lo, hi)
-        if box_fits(allowed, lo, hi, margin, zero):
+            fits = _grown_fits(path, allowed, margin, first, last, lo, hi)
+        else:
+            fits = box_fits(allowed, lo, hi, margin, zero)
+        if fits:
             if corners and last < path.motions and _corner_wanted(path, blended, last) \
                     and not _corner_fits(path, allowed, margin, last):
                 if not (arcs and _refine(path, last, last + 1) and _corner_fits(path, allowed, margin, last)):
@@ -206,9 +209,34 @@ class WindowProof:
         return True
 
 
-def _grown(lo: dict[str, Fraction], hi: dict[str, Fraction]) -> tuple[dict[str, Fraction], dict[str, Fraction]]:
-    """The box grown by its own size on every side: ``[2 lo - hi, 2 hi - lo]``."""
-    return {a: 2 * lo[a] - hi[a] for a in lo}, {a: 2 * hi[a] - lo[a] for a in hi}
+def _grown_fits(path: Any, allowed: Any, margin: Fraction, first: int, last: int, lo: dict[str, Fraction],
+                hi: dict[str, Fraction]) -> bool:
+    """Does the box ``[lo, hi]`` of motions ``first``..``last`` (with an arc) fit grown so that it holds every
+    blended corner between two of its motions?  Grown on each axis by its own size (``[2 lo - hi, 2 hi - lo]``
+    holds ``a + b - C`` for ``a``, ``b``, ``C`` in ``[lo, hi]``) or by the path's bound of how far such a corner
+    leaves the box (``path.reach``, :mod:`nczones.gcode.linuxcnc.double_reach`), whichever is less: the bound
+    asked for the widest axis first, then for the others (each costs a scan of the rows)."""
+    zero = Fraction(0)
+    size = {a: hi[a] - lo[a] for a in lo}
+    for names in _reach_order(size, hasattr(path, "reach")):
+        if names:
+            reach = path.reach(first, last, names)
+            if reach is None:
+                return False
+            size.update((a, min(size[a], g)) for a, g in reach.items())
+        if box_fits(allowed, {a: lo[a] - g for a, g in size.items()}, {a: hi[a] + g for a, g in size.items()},
+                    margin, zero):
+            return True
+    return False
+
+
+def _reach_order(size: dict[str, Fraction], reach: bool) -> list[tuple[str, ...]]:
+    """The axes to ask ``path.reach`` for before each test of :func:`_grown_fits`: none (the box's own size), the
+    widest axis, the others (none at all without ``reach``)."""
+    if not reach:
+        return [()]
+    order = sorted(size, key=size.__getitem__, reverse=True)
+    return [(), tuple(order[:1]), tuple(order[1:])][:3 if len(order) > 1 else 2]
 
 
 def may_be_zero(path: Any, k: int) -> bool:

@@ -167,7 +167,6 @@ from .double_arcs import (
     R_INCH_REL,
     R_SCREEN,
     TURN,
-    chain_offb,
     ij_check,
     inch_offb,
     inch_rule,
@@ -362,6 +361,14 @@ class DoublePath:
         if self.arc_rows:
             self._arc_bounds(first, last, lo, hi)
         return lo, hi
+
+    def reach(self, first: int, last: int, names: Any = None) -> dict[str, Fraction] | None:
+        """Per axis of ``names`` (default all), a bound of how far a blended corner between two of motions
+        ``first``..``last`` can leave their box (:func:`.double_reach.reach`, whose docstring says why it holds:
+        ``prover/doubles.py`` grows a box with arcs by it), or None."""
+        from .double_reach import reach  # (a proof of G64 boxes with arcs only)
+
+        return reach(self, first, last, names)
 
     def arc_pair(self, k: int) -> tuple[int, int]:
         """The axes (first, second) of the plane of arc ``k`` (an index of ``arc_rows``)."""
@@ -1455,7 +1462,7 @@ class _Pass:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_check, "CO": chain_offb,
+                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_check,
                                  "AR": self.new_arcs[0].append, "IOFFB": inch_offb, "AB": self.new_arcs[1].extend,
                                  "AW": self.new_arcs[2].extend, "NA_ROWS": self.new_arcs[0],
                                  "AS": self.arc_slots.append,
@@ -1629,12 +1636,13 @@ class _Pass:
             flag = IJ_SCREEN | (TURN if turn else 0)
             kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q, ob))"
         return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
-                # (first a test tiny() implies, on the plane's first axis: the motion's end sa (row -2) and start
+                # (first a test tiny() implies, on each of the plane's axes: the motion's end sa (row -2) and start
                 # differ by LIM (plus twice a G91 chain's error, XERR) or more, and |sa| < 1e10, leave tiny()'s
-                # bound there below DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|: most arcs follow a motion that is
-                # not short)
+                # bound there below DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|, and likewise sb: most arcs follow a
+                # motion that is not short on one of them, an arc in another plane too)
                 f"if st.blend and n > 2 and (-(li := LIM + 2.0 * XERR[{ia}]) < sa - C{ia}[-3] < li "
                 "or not -1e10 < sa < 1e10) "
+                f"and (-(li := LIM + 2.0 * XERR[{ib}]) < sb - C{ib}[-3] < li or not -1e10 < sb < 1e10) "
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 f"box = {call}", "if box.__class__ is str: raise D(box)",
@@ -1661,8 +1669,9 @@ class _Pass:
         start, chained = [], []
         if self.g91_text:
             start = [f"ea = ERR[{ia}]; eb = ERR[{ib}]"]
-            chained = [f"if ea is not None or eb is not None or st.chained: ob = CO(ob, max(ea or 0.0, eb or 0.0, "
-                       f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0))"]
+            # chain_offb inline (a call less an arc; at ein 0 an ulp above offb, a larger bound)
+            chained = [f"if ea is not None or eb is not None or st.chained: ob = NA(ob + max(ea or 0.0, eb or 0.0, "
+                       f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0) * {2.0**50!r}, INF)"]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
                 *start, *self._straight_ends(axes), *self._levels(others, axes), *chained, *self._kept_words(axes),
