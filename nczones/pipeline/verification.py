@@ -320,21 +320,24 @@ def _fanuc_call() -> Any:
 @functools.cache
 def _fanuc_holes() -> Any:
     """A G81 or G82 drilling cycle: its hole lines are the vectorized fast path's (``fastpath._fanuc_holes``), the
-    box route's general path (about 15x the fast path's cost a hole)."""
+    box route's general path (about 15x the fast path's cost a hole); likewise a G68 rotation or a G51 scaling
+    (``gcode/fanuc/transform_columns.py``: about 100x a line on the box route's general path)."""
     import re
 
-    return re.compile(r"G[ \t]*0*8[12](?![\d.])")
+    return re.compile(r"G[ \t]*0*(?:8[12]|68|51)(?![\d.])")
 
 
 def _fanuc_boxes_first(text: str | FileText) -> bool:
     r"""Whether a Fanuc program tries the box route first: fewer than :data:`FAST_PATH_MIN_LINES` lines (any
-    program), or a plain one of up to :data:`FANUC_BOX_LINES` without a G81/G82 cycle (whose hole lines the fast
-    path takes).  Soundness does not rest on this test: the route proves or declines (then today's path decides as
+    program), or a plain one of up to :data:`FANUC_BOX_LINES` without a G81/G82 cycle, a G68 rotation or a G51
+    scaling (whose lines the fast path takes).  Soundness does not rest on this test: the route proves or declines (then today's path decides as
     if it had not run).
 
     >>> _fanuc_boxes_first("G1 X1. F100.\n" * 600), _fanuc_boxes_first("M98 P10\n" + "G1 X1. F100.\n" * 600)
     (True, False)
     >>> _fanuc_boxes_first("G81 X1. Z-1. R1. F100.\n" + "X1.\n" * 600), _fanuc_boxes_first("G81 X1.\n" * 9)
+    (False, True)
+    >>> _fanuc_boxes_first("G68 X0 Y0 R30.\n" + "X1.\n" * 600), _fanuc_boxes_first("G51.1 X0\n" + "X1.\n" * 600)
     (False, True)
     >>> _fanuc_boxes_first("G1 X1. F100.\n" * (FANUC_BOX_LINES + 1))
     False
