@@ -38,6 +38,11 @@ to the full path.  A Fanuc control's hole lines the same way (its G81/G82
 after the cycle's first block, with R and Z written in G90, at the top
 level: ``_fanuc_holes``, ``FanucInterpreter._fanuc_cycle``'s rows).
 
+Fanuc transforms: under one G68 rotation or G51 scaling (``FanucInterpreter.column_transform``) a run's
+positions are computed in the program system and mapped to the machine's by
+:mod:`nczones.gcode.fanuc.transform_columns` (its docstring states why the mapping is the general path's);
+a point the general path finds uncertain cuts the run before its line.
+
 Invariants
 ----------
 * Identical segments: the fast path produces the same segments (kinds,
