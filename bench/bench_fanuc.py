@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import random
+import re
 import sys
 from pathlib import Path
 
@@ -140,6 +141,79 @@ def linuxcnc_subprogram_program(lines: int) -> str:
         "o9020 sub", "G0 X[#31 * 0.1] Y[#31 * 0.05]", "G1 Z-2.", "o9020 endsub",
         "G90 G17 G21 G54 F300", "#31 = 0", f"o100 while [#31 LT {reps}]",
         "o9020 call", "#31 = [#31 + 1]", "o100 endwhile", "M30"]) + "\n"
+
+
+def _xform_moves(n: int, rnd: random.Random, fanuc: bool) -> list[str]:
+    """``n`` lines of CAM moves about the origin (``X.. Y..``, a ``G01`` with F every 50th line, an I/J arc
+    every 25th: a quarter circle back to the line's start, so the path stays where it was), Fanuc words (decimal
+    points) or LinuxCNC's."""
+    out = []
+    x = y = 0.0
+    pt = "." if fanuc else ""
+    after_arc = False
+    for i in range(n):
+        if i % 25 == 12:  # a quarter circle from (x, y) to (x + 2, y + 2)
+            if i % 50 == 12:  # CCW about (x, y + 2)
+                out.append(f"G03 X{x + 2:.3f} Y{y + 2:.3f} I0{pt} J2{pt}")
+            else:  # CW about (x + 2, y)
+                out.append(f"G02 X{x + 2:.3f} Y{y + 2:.3f} I2{pt} J0{pt}")
+            x, y = x + 2, y + 2
+            after_arc = True
+            continue
+        x, y = rnd.uniform(-150, 150), rnd.uniform(-100, 100)
+        if i % 50 == 0:
+            out.append(f"G01 X{x:.3f} Y{y:.3f} F{rnd.randint(500, 2000)}{pt}")
+        else:
+            out.append(("G01 " if after_arc else "") + f"X{x:.3f} Y{y:.3f}")
+        after_arc = False
+    return out
+
+
+def rotated_program(n: int, seed: int = 14, dialect: str = "fanuc") -> str:
+    """About ``n`` lines of CAM moves under a coordinate rotation (issue 36): Fanuc ``G68 X0. Y0. R27.5`` (the
+    rotated points certified and rounded to the increment), or with ``dialect="linuxcnc"`` the same moves under
+    LinuxCNC's rotated work offset ``G10 L2 P1 R27.5`` (rs274's peer: LinuxCNC has no G68)."""
+    rnd = random.Random(seed)
+    if dialect == "fanuc":
+        head = ["%", "O1000 (ROTATED)", "G00 G17 G40 G49 G80 G90 G21", "G54 G00 X0. Y0.", "G43 H1 Z25.",
+                "G01 Z-1. F800.", "G68 X0. Y0. R27.5"]
+        tail = ["G69", "G00 X0. Y0.", "M30", "%"]
+    else:
+        head = ["G17 G40 G49 G80 G90 G21", "G10 L2 P1 X0 Y0 R27.5", "G54 G0 X0 Y0", "G43 H1 Z25", "G1 Z-1 F800"]
+        tail = ["M30"]
+    body = _xform_moves(max(1, n - len(head) - len(tail)), rnd, dialect == "fanuc")
+    if dialect != "fanuc":
+        body = [line.replace("G01", "G1").replace("G02", "G2").replace("G03", "G3") for line in body]
+    return "\n".join(head + body + tail) + "\n"
+
+
+def scaled_program(n: int, seed: int = 17, dialect: str = "fanuc", factors: str = "P1.25") -> str:
+    """About ``n`` lines of CAM moves under Fanuc scaling ``G51 X0. Y0. Z0. P1.25`` (``factors`` may give
+    ``I.. J.. K..`` instead; a point off the grid is rounded to the increment), or with ``dialect="linuxcnc"``
+    rs274's peer: the same program unscaled, its numbers scaled beforehand (LinuxCNC has no G51)."""
+    rnd = random.Random(seed)
+    fanuc = dialect == "fanuc"
+    if fanuc:
+        head = ["%", "O1000 (SCALED)", "G00 G17 G40 G49 G80 G90 G21", "G54 G00 X0. Y0.", "G43 H1 Z25.",
+                "G01 Z-1. F800.", f"G51 X0. Y0. Z0. {factors}"]
+        tail = ["G50", "G00 X0. Y0.", "M30", "%"]
+    else:
+        head = ["G17 G40 G49 G80 G90 G21", "G54 G0 X0 Y0", "G43 H1 Z25", "G1 Z-1 F800"]
+        tail = ["M30"]
+    body = _xform_moves(max(1, n - len(head) - len(tail)), rnd, fanuc)
+    if not fanuc:
+        f = float(factors[1:]) if factors.startswith("P") else 1.25
+        body = [_scaled_words(line, f) for line in body]
+    return "\n".join(head + body + tail) + "\n"
+
+
+def _scaled_words(line: str, f: float) -> str:
+    """A LinuxCNC line of :func:`_xform_moves` with its lengths (X Y I J) multiplied by ``f``, G words in
+    LinuxCNC's spelling."""
+    def one(m: re.Match) -> str:
+        return f"{m.group(1)}{float(m.group(2)) * f:.4f}"
+    line = line.replace("G01", "G1").replace("G02", "G2").replace("G03", "G3")
+    return re.sub(r"([XYIJ])(-?[0-9.]+)", one, line)
 
 
 def program(name: str, lines: int) -> tuple[str, int]:

@@ -38,6 +38,11 @@ to the full path.  A Fanuc control's hole lines the same way (its G81/G82
 after the cycle's first block, with R and Z written in G90, at the top
 level: ``_fanuc_holes``, ``FanucInterpreter._fanuc_cycle``'s rows).
 
+Fanuc transforms: under one G68 rotation or G51 scaling (``FanucInterpreter.column_transform``) a run's
+positions are computed in the program system and mapped to the machine's by
+:mod:`nczones.gcode.fanuc.transform_columns` (its docstring states why the mapping is the general path's);
+a point the general path finds uncertain cuts the run before its line.
+
 Invariants
 ----------
 * Identical segments: the fast path produces the same segments (kinds,
@@ -983,14 +988,7 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if isM.any() or isS.any():
         bad = isM & ((wdec != 0) | ~np.isin(wval, _LEAN_M_CODES))
         if bad.any():
-            first_bad = int(rel[np.argmax(bad)])
-            if first_bad == 0:
-                return None
-            # the words of the lines before it, as parsing only those lines gives them (a word ends where
-            # the next begins, so cutting at a line changes no word)
-            k = int(np.searchsorted(parsed[0], lo + first_bad))
-            chunk = _fast_run(interp, code, lo, lo + first_bad, block_counter, line0, tuple(a[:k] for a in parsed))
-            return None if chunk is None else (chunk, lo + first_bad)
+            return _cut_before(interp, code, lo, int(rel[np.argmax(bad)]), block_counter, line0, parsed)
         only_sm_lines = rel[isM | isS]  # blocks even when nothing else is left on the line
         if isS.any():
             if it.feed_mode == 95 or np.any(wval[isS] < 0):
@@ -1007,14 +1005,19 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     isG = wletter == ord("G")
     gval = wval[isG]
     gdec = wdec[isG]
-    if np.any(gdec > 0) or np.any((gval < 0) | (gval > 3)):
-        return None
+    gbad = (gdec > 0) | (gval < 0) | (gval > 3)
+    if gbad.any():  # another G code: a Fanuc run's lines before it (G69 ending a rotation, say)
+        return _cut_before(interp, code, lo, int(rel[isG][np.argmax(gbad)]), block_counter, line0, parsed) \
+            if it.dialect == "fanuc" else None
     # scale
     inch = it.inch
     numeric = ~isG
     s = int(wdec[numeric].max()) if numeric.any() else 0
     s_units = s + (1 if inch else 0)
     need = [it.tlo, it.feed * (Fraction(254, 10) if inch else 1)] + list(it.pos) + list(it.off)
+    xf = _transform_of(it, need)  # a Fanuc G68/G51: positions in the program system, then mapped (its numbers)
+    if xf is False:
+        return None
     for q in need:
         dd = _decimals(q)
         if dd is None:
@@ -1123,8 +1126,8 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if it.feed_mode == 93 and np.any(feedcheck & ~fpres):
         return None  # G93 wants F in every feed block
     # positions
-    pos0 = [_scaled_int(p, S) for p in it.pos]
-    off = [_scaled_int(o, S) for o in it.off]
+    pos0 = [_scaled_int(p, S) for p in (it.pos if xf is None else it.prog)]
+    off = [_scaled_int(o, S) for o in it.off] if xf is None else [0] * na
     if max(map(abs, pos0 + off + [f0, _scaled_int(it.tlo, S)]), default=0) > _LIMIT_STATE:
         return None  # the state's numbers could overflow int64 in sums: the full path (exact ints)
     end = np.empty((n, na), dtype=np.int64)
@@ -1151,66 +1154,18 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     centre = plane_col = cw = turns = radius = None
     arcs = kind == SegmentKind.ARC
     if arcs.any():
-        plane = it.plane
-        a_name, b_name, n_name = PLANE_AXES[plane]
-        ia, ib = it.index.get(a_name), it.index.get(b_name)
-        if ia is None or ib is None:
+        got = _arc_columns(it, xf, rows, arcs, mode, start, end, ijk, (r_col, r_pres), off, bool(inch), S)
+        if got is None:
             return None
-        offs = {"X": "I", "Y": "J", "Z": "K"}
-        la, lb, ln_ = offs[a_name], offs[b_name], offs[n_name]
-        if ln_ in ijk and np.any(ijk[ln_][1][rows[arcs]]):
+        centre, plane_col, cw, turns, radius = got
+    last = end[-1]
+    if xf is not None:  # the program points mapped to the machine's (a point in doubt cuts the run before it)
+        mapped = _transformed(xf, it, pos0, end, rows, st, centre, cw, arcs, S)
+        if isinstance(mapped, int):
+            return _cut_before(interp, code, lo, mapped, block_counter, line0, parsed)
+        if mapped is None:
             return None
-        arow = rows[arcs]
-        ia_col = ijk.get(la, (np.zeros(n, np.int64), np.zeros(n, bool)))
-        ib_col = ijk.get(lb, (np.zeros(n, np.int64), np.zeros(n, bool)))
-        r_rows = None
-        if r_pres is not None and r_pres[arow].any():
-            assert r_col is not None
-            r_rows = r_pres[arow]
-            got = _r_arcs(start[arow[r_rows], ia], start[arow[r_rows], ib], end[arow[r_rows], ia],
-                          end[arow[r_rows], ib], r_col[arow[r_rows]])
-            if got is None:
-                return None
-            r_half, r_ca, r_cb = got
-        if np.any(~(ia_col[1][arow] | ib_col[1][arow] | (False if r_rows is None else r_rows))):
-            return None  # missing centre: full path
-        if it.arc_absolute:
-            ca = np.where(ia_col[1][arow], ia_col[0][arow] + off[ia], off[ia])
-            cb = np.where(ib_col[1][arow], ib_col[0][arow] + off[ib], off[ib])
-        else:
-            ca = start[arow, ia] + ia_col[0][arow]
-            cb = start[arow, ib] + ib_col[0][arow]
-        radius = None
-        if r_rows is not None:
-            ij = ~r_rows
-            ca, cb = ca[ij], cb[ij]
-        else:
-            ij = slice(None)
-        # under LinuxCNC's rule the arcs LinuxCNC accepts (the interpreter's rule, decided the same way);
-        # a run with an arc it refuses goes to the full interpreter, which reports it
-        if getattr(it, "arc_rule", "fixed") == "linuxcnc":
-            if not _arcs_ok_linuxcnc(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia],
-                                     end[arow[ij], ib], ca, cb, bool(inch), S):
-                return None
-        elif not _arcs_ok(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia], end[arow[ij], ib], ca, cb,
-                          it.arc_tolerance, S):
-            return None
-        centre = np.zeros((m, 2), dtype=np.int64)
-        if r_rows is None:
-            centre[arcs, 0] = ca
-            centre[arcs, 1] = cb
-        else:
-            at = np.flatnonzero(arcs)
-            centre[at[ij], 0] = ca
-            centre[at[ij], 1] = cb
-            centre[at[r_rows], 0] = r_ca
-            centre[at[r_rows], 1] = r_cb
-            radius = np.zeros(m, dtype=np.int64)
-            assert r_col is not None
-            radius[at[r_rows]] = np.where(r_half, 0, r_col[arow[r_rows]])
-        plane_col = np.where(arcs, int(plane), 0).astype(np.int8)
-        cw = arcs & (mode[rows] == 2)
-        turns = np.zeros(m, dtype=np.int32)
+        st, en, centre, cw, last = mapped
     # blocks and lines
     block_of_line = np.cumsum(has_word) - 1 + block_counter[0]
     block_counter[0] += int(has_word.sum())
@@ -1224,7 +1179,9 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
         radius=radius if radius is not None and radius.any() else None)  # changes no offset, unit, transform, tool
     # hand the state back to the interpreter
     den = 10**S
-    it.pos = [Fraction(int(v), den) for v in end[-1]]
+    it.pos = [Fraction(int(v), den) for v in last]
+    if xf is not None:
+        it.prog = [Fraction(int(v), den) for v in end[-1]]
     last_mode = int(mode[-1])
     it.motion = None if last_mode < 0 else last_mode * 10
     if it.feed_mode == 93 and feedcheck.any():
@@ -1237,13 +1194,142 @@ def _fast_run(interp, code, lo, hi, block_counter, line0=0, parsed=None):
     if spindle[1] is not None:
         it.spindle_dir = 1 if spindle[1] == 3 else -1 if spindle[1] == 4 else 0
     if m:
-        it.note_assumed(("units", "distance", "offset", "plane") if arcs.any() else ("units", "distance", "offset"))
+        it.note_assumed(("units", "distance", "offset", "plane") if arcs.any() and xf is None
+                        else ("units", "distance", "offset"))
     it.blocks += int(has_word.sum())
     it.segment_count += m
     for k in (SegmentKind.RAPID, SegmentKind.LINE, SegmentKind.ARC):
         it.kind_counts[k] += int(np.count_nonzero(kind == k))
     interp.fast_lines += n
     return chunk
+
+
+def _cut_before(interp: Any, code: Any, lo: int, first_bad: int, block_counter: Any, line0: int,
+                parsed: tuple) -> tuple | None:
+    """The run's lines before its line ``lo + first_bad`` (one the fast path cannot take) in columns, with that
+    line: ``(chunk, lo + first_bad)``; None when it is the first (nothing taken)."""
+    if first_bad == 0:
+        return None
+    # the words of the lines before it, as parsing only those lines gives them (a word ends where the next
+    # begins, so cutting at a line changes no word)
+    k = int(np.searchsorted(parsed[0], lo + first_bad))
+    chunk = _fast_run(interp, code, lo, lo + first_bad, block_counter, line0, tuple(a[:k] for a in parsed))
+    if chunk is None or type(chunk) is tuple:  # (cut again, earlier: a G code before an M code, say)
+        return chunk
+    return chunk, lo + first_bad
+
+
+def _transform_of(it: Any, need: list) -> Any:
+    """None when no programmable transform is active (``it.prog`` None: every interpreter but a Fanuc one under
+    G68/G51/...); else the one ``nczones.gcode.fanuc.transform_columns`` maps (its numbers added to ``need``),
+    or False when the lane does not mirror it."""
+    if getattr(it, "prog", None) is None:
+        return None
+    xf = it.column_transform()
+    if xf is None:
+        return False
+    need.extend(xf.numbers)
+    return xf
+
+
+def _transformed(xf: Any, it: Any, ppos0: list[int], pend: np.ndarray, rows: np.ndarray, st: np.ndarray,
+                 centre: Any, cw: Any, arcs: np.ndarray, S: int) -> tuple | int | None:
+    """A run's program columns (start ``st`` of the motions ``rows``, every line's point ``pend``, the arcs'
+    centres) mapped by the transform ``xf``: ``(start, end, centre, clockwise, last machine point)``, the line to
+    cut the run before, or None (``transform_columns.machine_columns``)."""
+    from .fanuc.transform_columns import machine_columns, reverses
+
+    pos0 = [_scaled_int(p, S) for p in it.pos]
+    arc_in = None
+    if centre is not None:
+        at = np.flatnonzero(arcs)
+        ia, ib = it.index[PLANE_AXES[it.plane][0]], it.index[PLANE_AXES[it.plane][1]]
+        arc_in = (arcs, st[at], centre[at, 0], centre[at, 1], ia, ib)
+    got = machine_columns(xf, pos0, pend, rows, S, arc_in)
+    if got is None or isinstance(got, int):
+        return got
+    mst, men, cen_a, cen_b = got
+    if centre is not None:
+        centre = centre.copy()
+        centre[at, 0], centre[at, 1] = cen_a, cen_b
+        if reverses(xf, ia, ib):
+            cw = arcs & ~cw
+    return mst, men, centre, cw, men[-1] if len(men) else np.array(pos0, dtype=np.int64)
+
+
+def _arc_columns(it: Any, xf: Any, rows: np.ndarray, arcs: np.ndarray, mode: np.ndarray, start: np.ndarray,
+                 end: np.ndarray, ijk: dict, r_words: tuple, off: list[int], inch: bool, S: int) -> tuple | None:
+    """The arc columns of a run's motions ``rows`` (``arcs`` marks them): ``(centre, plane, clockwise, turns,
+    radius)``, or None when an arc needs the full path (it reports errors).  Under a transform ``xf`` (program
+    points) R arcs, absolute centres and a plane the transform does not map arcs in decline."""
+    from .fanuc.transform_columns import arcs_plane_ok
+
+    n, m = len(end), len(rows)
+    r_col, r_pres = r_words
+    plane = it.plane
+    a_name, b_name, n_name = PLANE_AXES[plane]
+    ia, ib = it.index.get(a_name), it.index.get(b_name)
+    if ia is None or ib is None:
+        return None
+    if xf is not None and (it.arc_absolute or (r_pres is not None and r_pres[rows[arcs]].any())
+                           or not arcs_plane_ok(xf, ia, ib)):
+        return None
+    offs = {"X": "I", "Y": "J", "Z": "K"}
+    la, lb, ln_ = offs[a_name], offs[b_name], offs[n_name]
+    if ln_ in ijk and np.any(ijk[ln_][1][rows[arcs]]):
+        return None
+    arow = rows[arcs]
+    ia_col = ijk.get(la, (np.zeros(n, np.int64), np.zeros(n, bool)))
+    ib_col = ijk.get(lb, (np.zeros(n, np.int64), np.zeros(n, bool)))
+    r_rows = None
+    if r_pres is not None and r_pres[arow].any():
+        assert r_col is not None
+        r_rows = r_pres[arow]
+        got = _r_arcs(start[arow[r_rows], ia], start[arow[r_rows], ib], end[arow[r_rows], ia],
+                      end[arow[r_rows], ib], r_col[arow[r_rows]])
+        if got is None:
+            return None
+        r_half, r_ca, r_cb = got
+    if np.any(~(ia_col[1][arow] | ib_col[1][arow] | (False if r_rows is None else r_rows))):
+        return None  # missing centre: full path
+    if it.arc_absolute:
+        ca = np.where(ia_col[1][arow], ia_col[0][arow] + off[ia], off[ia])
+        cb = np.where(ib_col[1][arow], ib_col[0][arow] + off[ib], off[ib])
+    else:
+        ca = start[arow, ia] + ia_col[0][arow]
+        cb = start[arow, ib] + ib_col[0][arow]
+    radius = None
+    if r_rows is not None:
+        ij = ~r_rows
+        ca, cb = ca[ij], cb[ij]
+    else:
+        ij = slice(None)
+    # under LinuxCNC's rule the arcs LinuxCNC accepts (the interpreter's rule, decided the same way);
+    # a run with an arc it refuses goes to the full interpreter, which reports it
+    if getattr(it, "arc_rule", "fixed") == "linuxcnc":
+        if not _arcs_ok_linuxcnc(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia],
+                                 end[arow[ij], ib], ca, cb, bool(inch), S):
+            return None
+    elif not _arcs_ok(start[arow[ij], ia], start[arow[ij], ib], end[arow[ij], ia], end[arow[ij], ib], ca, cb,
+                      it.arc_tolerance, S):
+        return None
+    centre = np.zeros((m, 2), dtype=np.int64)
+    if r_rows is None:
+        centre[arcs, 0] = ca
+        centre[arcs, 1] = cb
+    else:
+        at = np.flatnonzero(arcs)
+        centre[at[ij], 0] = ca
+        centre[at[ij], 1] = cb
+        centre[at[r_rows], 0] = r_ca
+        centre[at[r_rows], 1] = r_cb
+        radius = np.zeros(m, dtype=np.int64)
+        assert r_col is not None
+        radius[at[r_rows]] = np.where(r_half, 0, r_col[arow[r_rows]])
+    plane_col = np.where(arcs, int(plane), 0).astype(np.int8)
+    cw = arcs & (mode[rows] == 2)
+    turns = np.zeros(m, dtype=np.int32)
+    return centre, plane_col, cw, turns, radius
 
 
 _FANUC_LENGTH = np.zeros(256, dtype=bool)

@@ -306,9 +306,23 @@ class FanucInterpreter(Interpreter):
         return self._tlo_shift is not None or self._tlo_untaken
 
     def fast_state_ok(self) -> bool:
-        """Nothing the vectorized fast path does not model is active."""
-        return self.cycle is None and self._tlo_shift is None and not self.after_home and self.prog is None \
-            and not self._tlo_untaken
+        """Nothing the vectorized fast path does not model is active (a transform only where
+        :meth:`column_transform` gives the one it maps)."""
+        return self.cycle is None and self._tlo_shift is None and not self.after_home and not self._tlo_untaken \
+            and (self.prog is None or self.column_transform() is not None)
+
+    def column_transform(self) -> Any:
+        """The programmable transform the fast path maps a run's program points by
+        (:class:`~nczones.gcode.fanuc.transform_columns.ColumnTransform`: one G68 rotation or G51 scaling, its
+        increment and the offsets), None when none is active or the lane does not mirror it: a mirror image,
+        polar coordinates, two transforms, the first move after a transform's block (which must be absolute),
+        tracked parameter ranges."""
+        if self.prog is None or self.mirroring is not None or self.polar is not None or self._first_after_transform \
+                or self.track or self.centre_deps:
+            return None
+        from .transform_columns import column_transform
+
+        return column_transform(self.rotation, self.scaling, self._grid_step(), tuple(self.off))
 
     @property
     def modal_flags(self) -> dict[int, bool]:

@@ -1,0 +1,249 @@
+"""Runs of plain lines under a Fanuc coordinate rotation (G68) or scaling (G51), in columns (issue 36).
+
+The vectorized fast path (:mod:`nczones.gcode.fastpath`, ``_fast_run``) computes a run's positions as scaled
+``int64`` columns (``10**S``).  While one programmable transform is active it computes them in the *program*
+system instead (the program point, no offsets: what ``FanucInterpreter._program_point`` reads) and this module
+maps those program points to machine points exactly as ``FanucInterpreter._transform_target`` and
+:mod:`nczones.gcode.fanuc.transforms` do, a column at a time:
+
+* **scaling** (G51, P or I/J/K, a negative factor mirrors): ``centre + factor (p - centre)`` is rational; in
+  scaled integers ``N = c fd + fn (p - c)`` is the point times the factor's denominator ``fd``, and the point
+  is rounded to the increment ``st`` halves away from zero, ``sign(N) floor((2|N| + fd st) / (2 fd st))`` (what
+  :func:`~nczones.gcode.fanuc.expr.round_to` does with an exact rational), which leaves a point on the grid as
+  it is; a coordinate at its centre or of factor 1 is not moved (``transforms.scale``).  Exact integer
+  arithmetic, with every magnitude checked below ``2**61`` first (else the lane declines).
+* **rotation** (G68): the rotated coordinate ``u = (x cos a - y sin a) / st`` (and ``x sin a + y cos a``) is
+  computed in doubles from the doubles ``c``, ``s`` nearest the midpoints of the exact core's enclosures of
+  ``cos a``, ``sin a`` (``transforms.cos_sin_enclosure``).  The general path rounds to the nearest increment
+  unless a rounding tie lies within ``TIE_GUARD`` increments of its rational enclosure of ``u``
+  (``transforms.certified_round``).  Soundness of the screen: every point of that enclosure is
+  ``x c' - y s'`` with ``c'``, ``s'`` in the enclosures, within ``(|x| + |y|) delta / st`` of ``x c - y s``
+  (``delta`` the greatest distance, rounded up, of ``c``/``s`` from either end of their enclosures), and the
+  double ``u`` is within ``(|x| + |y|) 2**-51 / st + |u| 2**-50`` of ``(x c - y s) / st`` (two products, a sum
+  and a quotient, each rounded by at most half an ulp, ``|x|, |y| < 2**50``: integers exact in doubles).  Where
+  ``u``'s distance to the nearest tie ``k + 1/2`` (exact: ``u - floor(u)`` is exact below ``2**52``) exceeds
+  that error plus ``TIE_GUARD`` plus a margin, the general path's whole widened enclosure lies between the same
+  two ties, so it rounds to the same increment, ``floor(u)`` or ``floor(u) + 1``, and takes it; every other
+  coordinate is computed by ``transforms.rotate`` itself (exact rationals), and a point it finds uncertain
+  (``PointNotCertain``: the general path's ``unknown``) cuts the run before its line.
+
+Arcs (I/J/K in the plane; an R arc declines): their centre, the program start plus the offsets, is mapped like
+a point (``_transformed_arc``); a rotation in another plane than the arc's, unequal scale factors of the plane's
+two axes (an ellipse) decline, and an odd number of negative factors on them reverses the direction.
+
+Declined (the fast path then leaves the run to the general path, which decides as before): more than one
+transform, a mirror image (G51.1), polar coordinates (G16), the first move after a transform's block, a lathe,
+tracked parameter ranges, absolute arc centres.  ``tests/gcode/fanuc/test_transform_columns.py`` holds the lane
+to the general path alone.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from ...precompiled import dataclass  # start-up: no dataclasses import
+from .transforms import TIE_GUARD, PointNotCertain, Rotation, Scaling, cos_sin_enclosure, rotate
+
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
+
+__all__ = ["ColumnTransform", "column_transform"]
+
+#: Magnitudes (scaled integers) the rotation's doubles and the scaling's products stay below.
+_FLOAT_EXACT = 2**50
+_INT_LIMIT = 2**61
+#: The float screen's margins: the tie guard in increments (rounded up), and slack for its own evaluation.
+_GUARD = float(TIE_GUARD) * (1 + 2**-20) + 2**-40
+_ROUNDING = 2.0**-51
+_QUOTIENT = 2.0**-50
+
+
+@dataclass(frozen=True, slots=True)
+class ColumnTransform:
+    """The one active transform the lane mirrors: ``rotation`` or ``scaling`` (the other None), the increment a
+    transformed point is rounded to (``step``, mm) and the offsets (``off``, machine = transformed + off)."""
+
+    rotation: Rotation | None
+    scaling: Scaling | None
+    step: Fraction
+    off: tuple[Fraction, ...]
+
+    @property
+    def numbers(self) -> tuple[Fraction, ...]:
+        """The numbers the run's scale must hold exactly: the increment, the centre(s), the offsets."""
+        centre = (self.rotation.ca, self.rotation.cb) if self.rotation is not None else \
+            self.scaling.centre if self.scaling is not None else ()
+        return (self.step, *centre, *self.off)
+
+
+def column_transform(rotation: Rotation | None, scaling: Scaling | None, step: Fraction,
+                     off: tuple[Fraction, ...]) -> ColumnTransform | None:
+    """The lane's transform, None unless exactly one of ``rotation``, ``scaling`` is given."""
+    if (rotation is None) == (scaling is None):
+        return None
+    return ColumnTransform(rotation, scaling, step, off)
+
+
+def arcs_plane_ok(xf: ColumnTransform, ia: int, ib: int) -> bool:
+    """Whether the lane maps arcs in the plane of axes ``ia``, ``ib`` (module docstring)."""
+    if xf.rotation is not None:
+        return {xf.rotation.ia, xf.rotation.ib} == {ia, ib}
+    assert xf.scaling is not None
+    return abs(xf.scaling.factors[ia]) == abs(xf.scaling.factors[ib])
+
+
+def reverses(xf: ColumnTransform, ia: int, ib: int) -> bool:
+    """Whether arcs in the plane ``ia``, ``ib`` change direction (an odd count of negative factors)."""
+    if xf.scaling is None:
+        return False
+    return ((xf.scaling.factors[ia] < 0) + (xf.scaling.factors[ib] < 0)) % 2 == 1
+
+
+def _scaled(q: Fraction, S: int) -> int:
+    v = q * 10**S
+    if v.denominator != 1:
+        raise ValueError("not on the scale")
+    return int(v)
+
+
+def machine_points(xf: ColumnTransform, P: np.ndarray, S: int) -> tuple[np.ndarray, np.ndarray] | None:
+    """The machine points of the program points ``P`` (rows of scaled ``int64``, ``10**S``): ``(M, bad)`` with
+    ``bad`` the rows whose point the general path finds uncertain (their ``M`` rows meaningless), or None when
+    a magnitude is out of the lane's range (module docstring)."""
+    st = _scaled(xf.step, S)
+    M = P.copy()
+    bad = np.zeros(len(P), dtype=bool)
+    if xf.scaling is not None:
+        for i, (c, f) in enumerate(zip(xf.scaling.centre, xf.scaling.factors)):
+            if f != 1 and not _scale_column(P[:, i], M[:, i], _scaled(c, S), f, st):
+                return None
+    else:
+        assert xf.rotation is not None
+        if not _rotate_columns(xf, P, M, bad, st, S):
+            return None
+    for i, o in enumerate(xf.off):
+        if o:
+            M[:, i] += _scaled(o, S)
+    return M, bad
+
+
+def _scale_column(p: np.ndarray, out: np.ndarray, c: int, f: Fraction, st: int) -> bool:
+    """``out`` = ``p`` scaled about ``c`` by ``f`` and rounded to ``st`` (module docstring), False when a
+    product could leave ``int64``."""
+    if not p.size:
+        return True
+    fn, fd = f.numerator, f.denominator
+    d = p - c
+    big = max(abs(int(d.max())), abs(int(d.min())))
+    if big * abs(fn) + abs(c) * fd >= _INT_LIMIT // 2 or fd * st >= _INT_LIMIT:
+        return False
+    n = c * fd + fn * d
+    den = fd * st
+    k = (2 * np.abs(n) + den) // (2 * den)
+    out[:] = np.where(d == 0, p, np.where(n < 0, -k, k) * st)
+    return True
+
+
+def _rotate_columns(xf: ColumnTransform, P: np.ndarray, M: np.ndarray, bad: np.ndarray, st: int, S: int) -> bool:
+    """The rotated plane columns of ``P`` into ``M``: the float screen, then the exact rotation on the rows it
+    leaves (module docstring); False when a coordinate is too large for the screen."""
+    rot = xf.rotation
+    assert rot is not None
+    ia, ib = rot.ia, rot.ib
+    ca, cb = _scaled(rot.ca, S), _scaled(rot.cb, S)
+    if not len(P):
+        return True
+    x = P[:, ia] - ca
+    y = P[:, ib] - cb
+    if max(int(np.abs(x).max()), int(np.abs(y).max())) >= _FLOAT_EXACT:
+        return False
+    c, s, delta = _doubles(rot.angle)
+    xd, yd = x.astype(np.float64), y.astype(np.float64)
+    err = (np.abs(xd) + np.abs(yd)) * ((delta + _ROUNDING) / st)
+    ka, oka = _nearest((xd * c - yd * s) / st, err)
+    kb, okb = _nearest((xd * s + yd * c) / st, err)
+    M[:, ia] = ca + ka * st
+    M[:, ib] = cb + kb * st
+    for r in np.flatnonzero(~(oka & okb)).tolist():
+        point = [Fraction(int(v), 10**S) for v in P[r]]
+        try:
+            got = rotate(rot, point, xf.step)
+        except PointNotCertain:
+            bad[r] = True
+            continue
+        M[r, ia], M[r, ib] = _scaled(got[ia], S), _scaled(got[ib], S)
+    return True
+
+
+def _nearest(u: np.ndarray, err: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The nearest integer to each ``u`` and whether it is certain: ``u`` farther from a tie than its error
+    ``err`` (in increments, for the quotient's own rounding ``|u| 2**-50`` more) and the tie guard."""
+    m = np.floor(u)
+    frac = u - m  # exact: |u| < 2**50
+    ok = np.abs(frac - 0.5) > err + np.abs(u) * _QUOTIENT + _GUARD
+    return (m + (frac > 0.5)).astype(np.int64), ok
+
+
+_DOUBLES: dict[Fraction, tuple[float, float, float]] = {}
+
+
+def _doubles(angle: Fraction) -> tuple[float, float, float]:
+    """``(c, s, delta)``: the doubles nearest the midpoints of the enclosures of ``cos`` and ``sin`` of ``angle``
+    degrees, and a bound (rounded up) on their distance from every point of those enclosures."""
+    got = _DOUBLES.get(angle)
+    if got is None:
+        (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(angle)
+        c, s = float((c_lo + c_hi) / 2), float((s_lo + s_hi) / 2)
+        far = max(abs(Fraction(c) - c_lo), abs(Fraction(c) - c_hi), abs(Fraction(s) - s_lo),
+                  abs(Fraction(s) - s_hi))
+        delta = math.nextafter(float(far), math.inf) * (1 + 2**-40)
+        got = _DOUBLES[angle] = (c, s, delta)
+        if len(_DOUBLES) > 256:
+            _DOUBLES.clear()
+    return got
+
+
+def arc_centres(xf: ColumnTransform, pstart: np.ndarray, ca: np.ndarray, cb: np.ndarray, ia: int, ib: int,
+                S: int) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """The machine centres of arcs whose program centres are ``(ca, cb)`` (their program starts ``pstart``: the
+    other axes of the point ``_transformed_arc`` maps): ``(centre a, centre b, bad)`` or None (out of range)."""
+    points = pstart.copy()
+    points[:, ia] = ca
+    points[:, ib] = cb
+    got = machine_points(xf, points, S)
+    if got is None:
+        return None
+    M, bad = got
+    return M[:, ia], M[:, ib], bad
+
+
+def machine_columns(xf: ColumnTransform, pos0: list[int], pend: np.ndarray, rows: np.ndarray, S: int,
+                    arcs: Any = None) -> tuple | int | None:
+    """The machine start and end columns of a run's motions (``rows``, the lines that move; ``pend`` every
+    line's program point; ``pos0`` the scaled machine position before the run) and, given
+    ``arcs = (arc mask over rows, program starts of the arcs, centre a, centre b, ia, ib)``, the arcs' machine
+    centres: ``(start, end, centre a, centre b)``, the index of the first line the general path must take (a
+    point it finds uncertain), or None (out of range)."""
+    got = machine_points(xf, pend[rows], S)
+    if got is None:
+        return None
+    men, bad = got
+    line = int(rows[np.argmax(bad)]) if bad.any() else len(pend)
+    cen_a = cen_b = None
+    if arcs is not None:
+        mask, pst, pa, pb, ia, ib = arcs
+        cen = arc_centres(xf, pst, pa, pb, ia, ib, S)
+        if cen is None:
+            return None
+        cen_a, cen_b, cbad = cen
+        if cbad.any():
+            line = min(line, int(rows[np.flatnonzero(mask)[np.argmax(cbad)]]))
+    if line < len(pend):
+        return line
+    mst = np.vstack((np.array(pos0, dtype=np.int64)[None, :], men[:-1])) if len(men) else men
+    return mst, men, cen_a, cen_b
