@@ -1271,9 +1271,11 @@ class FanucInterpreter(Interpreter):
         p, pd = point
         self.note_assumed(("units", "distance", "offset"))
         if motion in (20, 30):
-            self._transformed_arc(p, pd, words, motion == 20)
+            self._transformed_arc(p, pd, words, motion == 20, axis_words)
             return
         end, deps = self._transform_target(p, pd)
+        if self._unnamed_axis_moves(axis_words, end):
+            return
         if motion == 0:
             self.emit(SegmentKind.RAPID, end, end_deps=deps)
         else:
@@ -1281,7 +1283,34 @@ class FanucInterpreter(Interpreter):
             self.emit(SegmentKind.LINE, end, feed=True, end_deps=deps)
         self.prog, self.prog_deps = p, pd
 
-    def _transformed_arc(self, p: list[Fraction], pd: list[dict], words: Words, cw: bool) -> None:
+    def _unnamed_axis_moves(self, axis_words: AxisWords, end: list[Fraction]) -> bool:
+        """Whether a scaled or mirrored axis the block does not name would move (recorded as unknown, True).
+
+        The model takes an axis a block does not name at its program value, scaled or mirrored: on the first
+        move after G51 or G51.1 whose centre on that axis is not where the tool stands, that moves the axis.
+        Whether a control does so, or leaves an axis the block does not name where it is (as a block without
+        that word does without a transform), the manuals do not say; either reading may be the one that reaches
+        a zone, so the block is not modelled.  The rotation's plane is the rotation's model (both of its axes
+        are rotated from the program point)."""
+        named = {i for i, _w in axis_words}
+        changed = set()
+        if self.scaling is not None:
+            changed |= {i for i, f in enumerate(self.scaling.factors) if f != 1}
+        if self.mirroring is not None:
+            changed |= {i for i, _c in self.mirroring.axes}
+        if self.rotation is not None:
+            changed -= {self.rotation.ia, self.rotation.ib}
+        moved = sorted(i for i in changed - named if end[i] != self.pos[i])
+        if not moved:
+            return False
+        code = "G51" if self.scaling is not None and any(self.scaling.factors[i] > 0 for i in moved) else "G51.1"
+        self.unknown(code, f"axis {', '.join(self.axes[i] for i in moved)} not named in a block would move to its "
+                     "scaled or mirrored position (the program point there is not the transform's centre): whether "
+                     "a control moves an axis a block does not name under a transform is not modelled")
+        return True
+
+    def _transformed_arc(self, p: list[Fraction], pd: list[dict], words: Words, cw: bool,
+                         axis_words: AxisWords) -> None:
         """An arc under a transform: its centre and end points transformed; a mirror or a negative scale
         factor on one of the plane's axes reverses the direction."""
         plane = self.plane
@@ -1321,6 +1350,8 @@ class FanucInterpreter(Interpreter):
                 raise self.error("GC209", f"arc turn count {pw.text} must be a positive integer", pw)
             turns = int(pw.value) - 1
         end, deps = self._transform_target(p, pd)
+        if self._unnamed_axis_moves(axis_words, end):
+            return
         if rw is not None:
             r = self.length_mm(rw.value)
             if sa == ea and sb == eb:
