@@ -87,7 +87,20 @@ def _move(d: _Draw) -> list[str]:
     lo, hi = (-30, 30) if d.incremental else (-120, 120)
     words = " ".join(f"{a}{d.length(lo, hi if a != 'Z' else 40)}" for a in axes)
     feed = f" F{draw(st.integers(50, 900))}." if draw(st.integers(0, 4)) == 0 else ""
-    return [f"{d.number()}{code}{words}{feed}".strip()]
+    m = f" M0{draw(st.sampled_from('34589'))}" if draw(st.integers(0, 9)) == 0 else ""
+    return [f"{d.number()}{code}{words}{feed}{m}".strip()]
+
+
+def _run_line(d: _Draw) -> list[str]:
+    """A line of a long run: a move, now and then an M, F or N alone, or a comment."""
+    kind = d.draw(st.integers(0, 19))
+    if kind == 0:
+        return [f"{d.number()}M0{d.draw(st.sampled_from('34589'))}"]
+    if kind == 1:
+        line = d.draw(st.sampled_from(("F250.", f"N{d.n + 1}", "(a comment)", "G04 X0.1", "G90", "G91")))
+        d.incremental = {"G91": True, "G90": False}.get(line, d.incremental)
+        return [line]
+    return _move(d)
 
 
 def _cycle(d: _Draw) -> list[str]:
@@ -109,7 +122,8 @@ def _cycle(d: _Draw) -> list[str]:
     lines.append(f"{d.number()}{retract}{code} {xy} Z{z} R{r}{extra}{k} F{draw(st.integers(50, 500))}.")
     kind = draw(st.integers(0, 5))
     if kind == 0:  # a long run of hole lines: the vectorized fast path's
-        lines += [f"X{d.length(-60, 60)} Y{d.length(-60, 60)}" for _ in range(draw(st.integers(60, 90)))]
+        lines += [f"{d.number() if draw(st.integers(0, 3)) == 0 else ''}X{d.length(-60, 60)} Y{d.length(-60, 60)}"
+                  for _ in range(draw(st.integers(60, 90)))]
     elif kind == 1:  # holes in a loop
         d.loops += 1
         c = f"#{20 + d.loops}"
@@ -167,7 +181,7 @@ def _statement(d: _Draw) -> list[str]:
     if kind == 6:
         return [d.draw(st.sampled_from(("M98 P1000", "M98 P21000", "G65 P2000 A1.5 B-2.", "G65 P2000 A#1 B3.")))]
     if kind == 7:  # a long run of plain moves
-        return [line for _ in range(d.draw(st.integers(60, 80))) for line in _move(d)]
+        return [line for _ in range(d.draw(st.integers(60, 80))) for line in _run_line(d)]
     return _setting(d)
 
 
