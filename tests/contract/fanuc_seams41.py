@@ -59,8 +59,10 @@ def _text(q: Fraction, places: int) -> str:
 class _Draw:
     """What the generator knows while it draws: inch, the distance mode, the cycle modal, labels, N numbers."""
 
-    def __init__(self, draw, inch: bool):
+    def __init__(self, draw, inch: bool, plain: bool = False):
         self.draw, self.inch = draw, inch
+        #: no ``#`` anywhere (the box route's run reader takes only such a program)
+        self.plain = plain
         self.incremental = False
         self.cycle = False
         self.loops = 0
@@ -121,6 +123,8 @@ def _cycle(d: _Draw) -> list[str]:
     xy = f"X{d.length(-60, 60)} Y{d.length(-60, 60)}"
     lines.append(f"{d.number()}{retract}{code} {xy} Z{z} R{r}{extra}{k} F{draw(st.integers(50, 500))}.")
     kind = draw(st.integers(0, 5))
+    if kind == 1 and d.plain:
+        kind = 2
     if kind == 0:  # a long run of hole lines: the vectorized fast path's
         lines += [f"{d.number() if draw(st.integers(0, 3)) == 0 else ''}X{d.length(-60, 60)} Y{d.length(-60, 60)}"
                   for _ in range(draw(st.integers(60, 90)))]
@@ -134,20 +138,22 @@ def _cycle(d: _Draw) -> list[str]:
         for _ in range(draw(st.integers(0, 6))):
             between = draw(st.integers(0, 6))
             if between == 0:
-                lines.append(draw(st.sampled_from(("G98", "G99", "M08", "#1 = #1 + 1.", "F200.", "G91", "G90"))))
+                macro = "M09" if d.plain else "#1 = #1 + 1."
+                lines.append(draw(st.sampled_from(("G98", "G99", "M08", "F200.", "G91", "G90", macro))))
                 d.incremental = {"G91": True, "G90": False}.get(lines[-1], d.incremental)
             elif between == 1:
                 lines.append(f"X{d.length(-60, 60)} Z{z}")
             else:
                 lines.append(f"{d.number()}X{d.length(-60, 60)} Y{d.length(-60, 60)}")
     lines.append("G80")
-    return lines
+    return lines + (_macro(d) if draw(st.integers(0, 2)) == 0 and not d.plain else [])
 
 
 def _macro(d: _Draw) -> list[str]:
-    """A system variable or SIN/COS read into a variable, then a move by it (a read near a lane's block)."""
+    """A system variable (any of :data:`READS`) or SIN/COS read into a variable, then a move by it (a read just
+    after a lane's block or run)."""
     draw = d.draw
-    var = draw(st.sampled_from((4114, 4113, 5001, 5002, 5003, 5021, 5041, 5043, 0, 1)))
+    var = draw(st.sampled_from((*READS, 0, 1)))
     if var == 0:
         value = f"SIN[{_num(draw, -360, 360, 1)}] * {d.length(1, 50)}"
     elif var == 1:
@@ -155,14 +161,14 @@ def _macro(d: _Draw) -> list[str]:
     else:
         value = f"#{var}"
     axis = draw(st.sampled_from("XY"))
-    scale = "0.01" if var in (4114, 4113) else "0.5"
+    scale = "0.01" if 4000 < var < 5000 else "0.5"
     return [f"#3 = {value}", f"{d.number()}G01 {axis}[#3 * {scale} + {d.length(-20, 20)}]"]
 
 
 def _setting(d: _Draw) -> list[str]:
     draw = d.draw
     line = draw(st.sampled_from(("G90", "G91", "G54", "G55", "G43 H1", "G43 H2", "G49", "M03 S1000", "M04",
-                                 "M05", "M08", "M09", "F300.", "#1 = #1 + 0.5")))
+                                 "M05", "M08", "M09", "F300.", "M08" if d.plain else "#1 = #1 + 0.5")))
     if line in ("G90", "G91"):
         d.incremental = line == "G91"
     if line.startswith("G43") and d.incremental:
@@ -177,27 +183,32 @@ def _statement(d: _Draw) -> list[str]:
     if kind <= 4:
         return _cycle(d)
     if kind == 5:
-        return _macro(d)
+        return _move(d) if d.plain else _macro(d)
     if kind == 6:
-        return [d.draw(st.sampled_from(("M98 P1000", "M98 P21000", "G65 P2000 A1.5 B-2.", "G65 P2000 A#1 B3.")))]
-    if kind == 7:  # a long run of plain moves
-        return [line for _ in range(d.draw(st.integers(60, 80))) for line in _run_line(d)]
+        calls = ("M98 P1000", "M98 P21000", "G65 P2000 A1.5 B-2.", "G65 P2000 A#1 B3.")
+        return [d.draw(st.sampled_from(calls[:2] if d.plain else calls))]
+    if kind == 7:  # a long run of plain moves, maybe a read just after it
+        run = [line for _ in range(d.draw(st.integers(60, 80))) for line in _run_line(d)]
+        return run + (_macro(d) if d.draw(st.booleans()) and not d.plain else [])
     return _setting(d)
 
 
 @st.composite
 def fanuc_programs(draw) -> tuple[str, str]:
     """A program (module docstring) in two parts: header and statements; the end (M30, O1000, O2000).
-    :func:`program` joins them, with or without the :data:`READS` read into moves before the M30."""
+    :func:`program` joins them, with or without the :data:`READS` read into moves before the M30.  A quarter of
+    them are plain: no ``#`` (no macro line, G65 call nor read; sub O2000 without one)."""
     inch = draw(st.integers(0, 3)) == 0
-    d = _Draw(draw, inch)
+    d = _Draw(draw, inch, plain=draw(st.integers(0, 3)) == 0)
     head = ["O0001", f"G17 G40 G80 {'G20' if inch else 'G21'} G90 {draw(st.sampled_from(('G54', 'G55')))} F300.",
-            "G00 Z20." if not inch else "G00 Z0.8", f"#1 = {_num(draw, -5, 5, 1)}"]
+            "G00 Z20." if not inch else "G00 Z0.8", "M08" if d.plain else f"#1 = {_num(draw, -5, 5, 1)}"]
     body: list[str] = []
     for _ in range(draw(st.integers(1, 7))):
         body += _statement(d)
     sub1 = ["O1000", "G91 G01 X1. Y-1.", "G90", "N900 G81 X5. Y5. Z-10. R2. F100.", "X6.", "G80", "M99"]
     sub2 = ["O2000", "G01 X[#1 * 2.] Y[#2 + #4114 * 0.001]", "#5 = #5001", "G01 X[#5 + 1.]", "M99"]
+    if d.plain:
+        sub2 = ["O2000", "G01 X2. Y3.", "M99"]
     return "\n".join(head + body) + "\n", "\n".join(["M30"] + sub1 + sub2) + "\n"
 
 
@@ -205,7 +216,8 @@ def program(parts: tuple[str, str], reads: bool = True) -> str:
     """The program of :func:`fanuc_programs`' ``parts``; ``reads``: each of :data:`READS` read into a move before
     the M30 (the reference reader models few of them)."""
     tail = ["G90 G49 G80"] + [f"#7 = #{v}\nG01 X[#7 + 0.5] Y{k}. F100." for k, v in enumerate(READS)]
-    return parts[0] + ("\n".join(tail) + "\n" if reads else "") + parts[1]
+    plain = "#" not in parts[0] + parts[1]
+    return parts[0] + ("\n".join(tail) + "\n" if reads and not plain else "") + parts[1]
 
 
 def _key(segment) -> tuple:
@@ -273,14 +285,19 @@ def verify_routed(text: str, machine):
         return exc
 
 
-def travel(segments, axes, draw, pulse: Fraction) -> str:
-    """A travel box of +-5000 mm with one face at the extreme of the motion ends (and starts) along a drawn axis,
-    moved by 0, one pulse or 1e-9 mm either way (``[[zones]]`` text for ``helpers.mill(tables=...)``)."""
-    k = draw(st.integers(0, len(axes) - 1))
-    side = draw(st.sampled_from((1, -1)))
+#: where :func:`travel` puts its face: (axis index, side, which move of the face), drawn before the program (a
+#: draw after a long program may overrun Hypothesis's buffer, which drops the example)
+FACES = st.tuples(st.integers(0, 2), st.sampled_from((1, -1)), st.integers(0, 5), st.booleans())
+
+
+def travel(segments, axes, face: tuple[int, int, int, bool], pulse: Fraction) -> str:
+    """A travel box of +-5000 mm with one face at the extreme of the motion ends (and starts) along axis
+    ``face[0]`` on side ``face[1]``, moved by 0, one pulse or 1e-9 mm either way (``face[2]``); or (``face[3]``) a
+    forbidden slab beyond that face (``[[zones]]`` text for ``helpers.mill(tables=...)``)."""
+    k, side = face[0] % len(axes), face[1]
     at = max(v * side for s in segments for v in (s.start[k], s.end[k])) * side
     start = segments[0].start[k]
-    moved = draw(st.sampled_from((0, 0, pulse, -pulse, Fraction(1, 10**9), -Fraction(1, 10**9))))
+    moved = (0, 0, pulse, -pulse, Fraction(1, 10**9), -Fraction(1, 10**9))[face[2]]
     if (at + moved - start) * side >= 0:  # not past the start (a machine whose start is outside: ZN130)
         at += moved
     lo = {a: Fraction(-5000) for a in axes}
@@ -293,12 +310,19 @@ def travel(segments, axes, draw, pulse: Fraction) -> str:
         return f'"{sign}{n // 10**12}.{n % 10**12:012d}"'
 
     row = ", ".join
-    return ('\n[[zones]]\nname = "travel"\nkind = "box"\n'
+    forbid = ""
+    if face[3]:  # the slab from the face outwards, in a wide travel box
+        forbid = "forbid = true\n"
+        (lo if side > 0 else hi)[axes[k]] = at
+        (hi if side > 0 else lo)[axes[k]] = at + side * 5000
+    return ('\n[[zones]]\nname = "travel"\nkind = "box"\nmin = { X = "-20000", Y = "-20000", Z = "-20000" }\n'
+            'max = { X = "20000", Y = "20000", Z = "20000" }\n' * bool(forbid) +
+            f'\n[[zones]]\nname = "{"slab" if forbid else "travel"}"\nkind = "box"\n{forbid}'
             f"min = {{ {row(f'{a} = {text(lo[a])}' for a in axes)} }}\n"
             f"max = {{ {row(f'{a} = {text(hi[a])}' for a in axes)} }}\n")
 
 
-def verdicts_agree(text: str, draw) -> str:
+def verdicts_agree(text: str, face: tuple[int, int, int, bool]) -> str:
     """Oracle 2 on the test mill with a face at a motion's extreme; what happened (an event)."""
     from tests.gcode.fanuc.helpers import mill
 
@@ -306,7 +330,7 @@ def verdicts_agree(text: str, draw) -> str:
     got = _motion(text, plain, False)
     if isinstance(got, str) or not got[0]:
         return "no motion"
-    machine = mill(tables=travel([g[0] for g in got[0]], plain.axis_names, draw, Fraction(1, 1000)))
+    machine = mill(tables=travel([g[0] for g in got[0]], plain.axis_names, face, Fraction(1, 1000)))
     routed, off = verify_routed(text, machine), verify_off(text, machine)
     if isinstance(routed, Exception) or isinstance(off, Exception):
         assert type(routed) is type(off) and str(routed) == str(off), f"oracle 2: {routed!r}\n{off!r}\n{text}"

@@ -5,8 +5,9 @@ New in the mix (each beside hunt40's G20/G21 switches, G91 chains, arcs, cycles,
 
 * cutter compensation (``double_comp.py``): a G41/G42 contour (``D1``, ``D2``, no D, or G41.1/G42.1 with a
   diameter) over straight moves in G17 G90, its entry from a rapid, a G40 and a move away; next to G91 chains and
-  G20 switches (which the pass declines in a program that writes compensation: the full path decides), on the
-  mill with ``cutter_compensation = "linuxcnc"`` (and ``[tool_diameters]`` T1 2, T2 1.5) half the time;
+  G20 switches (which the pass declines in a program that writes compensation: the full path decides), or, half
+  the time, in a program the pass may take (no G20, G91 or cycle; G90 arcs, dwells, tool changes, path modes),
+  on the mill with ``cutter_compensation = "linuxcnc"`` (and ``[tool_diameters]`` T1 2, T2 1.5) half the time;
 * ``G64 P p Q q`` (in a block of its own, or with a move: the pass declines that Q) among the path modes;
 * the cycles ``double_cycles.py`` added: G73 (Q), G84 (after M3, or not), G85, G86 (spindle on or off), G89 (P),
   with ``L`` repeats, in G90 or G91 (R from the initial level, the bottom from R), in G17/G18/G19;
@@ -57,6 +58,8 @@ class _State41(_State):
     def __init__(self, plane: int, lathe: bool, one_unit: bool, comp: bool, **kw):
         super().__init__(plane, lathe, one_unit, **kw)
         self.comp = comp
+        #: a compensated program the pass may take: no G20, G91 or cycle anywhere (its compile check)
+        self.clean = False
 
 
 def _comp(draw, st_: _State41, counter: str | None) -> list[str]:
@@ -128,11 +131,20 @@ def _frac(draw) -> Fraction:
     return Fraction(draw(st.integers(-300, 300)), 10)
 
 
+#: the settings of a clean compensated program (:attr:`_State41.clean`)
+_CLEAN = ("G4 P0.5", "G54", "G55", "F200", "M3 S1000", "M5", "#1 = [#1 + «0.5»]", "G61", "G64", "G64 P«0.01»",
+          "T2 M6", "G43 H1", "G49", "G61.1", "#2 = [#1 * 0.5]")
 _MODES41 = ("G64 P«0.01» Q«0.005»", "G64 P«0.05» Q«0.2»", "G64 P«0.002» Q«0»", "G64 P«0.1» Q«0.1»")
 
 
 def _statement(draw, st_: _State41, depth: int, counter: str | None) -> list[str]:
     kind = draw(st.integers(0, 13 if depth else 10))
+    if st_.clean:
+        if 5 <= kind <= 9 and kind != 6:
+            return [draw(st.sampled_from(_CLEAN))]
+        if kind in (2, 3):
+            lines = _arc(draw, st_, counter)
+            return _straight(draw, st_, counter) if any("G91" in line for line in lines) else lines
     if kind <= 1:
         return _straight(draw, st_, counter)
     if kind == 2:
@@ -171,9 +183,12 @@ def seam41_programs(draw, lathe: bool = False, one_unit: bool = False, comp: boo
     plane = 18 if lathe else draw(st.sampled_from((17, 17, 18, 19)))
     st_ = _State41(plane, lathe, one_unit, comp and not lathe, arcs=draw(st.integers(0, 3)) > 0,
                    cycles=draw(st.booleans()))
+    st_.clean = st_.comp and draw(st.booleans())
     head = []
     for words in (("G21", "G21", "G20"), ("G90", "G90", "G91"), (f"G{plane}",), ("G54", "G55", "G56")):
-        if draw(st.integers(0, 3)) or (one_unit and words[0] == "G21"):
+        if st_.clean and words[0] in ("G21", "G90"):
+            words = words[:1]
+        if draw(st.integers(0, 3)) or (one_unit and words[0] == "G21") or st_.clean:
             head.append("{UNITS}" if one_unit and words[0] == "G21" else draw(st.sampled_from(words)))
     head.append(draw(st.sampled_from(("F300 G64 P«0.01» Q«0.01»", "F300", "F300 G64 P«0.5»", "F300 G61"))))
     lines = [f"(seams40 G{plane})", " ".join(head), f"#1 = {_q(draw)}", f"#2 = {_q(draw)}"]
@@ -195,7 +210,8 @@ def _check(data, lathe: bool = False, one_unit: bool = False, units: str = "G21"
     base = "report_lathe" if lathe else "xyz_range_seams"
     values = LATHE_OFFSETS if lathe else _mill(draw, template)
     if comp:
-        values = {**values, "machine.cutter_compensation": "linuxcnc"}
+        modal = [g for g in values.get("machine.modal", ()) if g not in ("G20", "G91")]
+        values = {**values, "machine.cutter_compensation": "linuxcnc", "machine.modal": modal}
     event(check_seams(template, base, values, draw, units))
 
 
