@@ -67,9 +67,13 @@ class _Draw:
         self.cycle = False
         self.loops = 0
         self.n = 0
+        #: drawing a long run: every number with its point (a number without one ends the fast path's run)
+        self.in_run = False
 
     def length(self, lo: int, hi: int) -> str:
         """A length in the program's units (inch: the range / 25)."""
+        if not self.in_run and self.draw(st.integers(0, 7)) == 0:  # no point: millimetres or inches, or increments (the machine's)
+            return str(self.draw(st.integers(lo, hi)))
         if self.inch:  # 4 places, lo/25 to hi/25 inches
             return _text(Fraction(self.draw(st.integers(lo * 400, hi * 400)), 10**4), 4)
         return _num(self.draw, lo, hi)
@@ -95,11 +99,13 @@ def _move(d: _Draw) -> list[str]:
 
 def _run_line(d: _Draw) -> list[str]:
     """A line of a long run: a move, now and then an M, F or N alone, or a comment."""
-    kind = d.draw(st.integers(0, 19))
-    if kind == 0:
+    kind = d.draw(st.integers(0, 59))
+    if kind <= 2:
         return [f"{d.number()}M0{d.draw(st.sampled_from('34589'))}"]
-    if kind == 1:
-        line = d.draw(st.sampled_from(("F250.", f"N{d.n + 1}", "(a comment)", "G04 X0.1", "G90", "G91")))
+    if kind <= 4:
+        return [d.draw(st.sampled_from(("F250.", f"N{d.n + 1}", "(a comment)")))]
+    if kind == 5:  # a line that ends the fast path's run
+        line = d.draw(st.sampled_from(("G04 X0.1", "G90", "G91")))
         d.incremental = {"G91": True, "G90": False}.get(line, d.incremental)
         return [line]
     return _move(d)
@@ -125,9 +131,11 @@ def _cycle(d: _Draw) -> list[str]:
     kind = draw(st.integers(0, 5))
     if kind == 1 and d.plain:
         kind = 2
-    if kind == 0:  # a long run of hole lines: the vectorized fast path's
+    if kind in (0, 3):  # a long run of hole lines: the vectorized fast path's
+        d.in_run = True
         lines += [f"{d.number() if draw(st.integers(0, 3)) == 0 else ''}X{d.length(-60, 60)} Y{d.length(-60, 60)}"
-                  for _ in range(draw(st.integers(60, 90)))]
+                  for _ in range(draw(st.integers(62, 100)))]
+        d.in_run = False
     elif kind == 1:  # holes in a loop
         d.loops += 1
         c = f"#{20 + d.loops}"
@@ -187,8 +195,10 @@ def _statement(d: _Draw) -> list[str]:
     if kind == 6:
         calls = ("M98 P1000", "M98 P21000", "G65 P2000 A1.5 B-2.", "G65 P2000 A#1 B3.")
         return [d.draw(st.sampled_from(calls[:2] if d.plain else calls))]
-    if kind == 7:  # a long run of plain moves, maybe a read just after it
-        run = [line for _ in range(d.draw(st.integers(60, 80))) for line in _run_line(d)]
+    if kind == 7 or (kind == 8 and d.draw(st.booleans())):  # a long run of plain moves, maybe a read after it
+        d.in_run = True
+        run = [line for _ in range(d.draw(st.integers(62, 100))) for line in _run_line(d)]
+        d.in_run = False
         return run + (_macro(d) if d.draw(st.booleans()) and not d.plain else [])
     return _setting(d)
 
@@ -322,15 +332,17 @@ def travel(segments, axes, face: tuple[int, int, int, bool], pulse: Fraction) ->
             f"max = {{ {row(f'{a} = {text(hi[a])}' for a in axes)} }}\n")
 
 
-def verdicts_agree(text: str, face: tuple[int, int, int, bool]) -> str:
-    """Oracle 2 on the test mill with a face at a motion's extreme; what happened (an event)."""
+def verdicts_agree(text: str, face: tuple[int, int, int, bool], dpi: str = "calculator") -> str:
+    """Oracle 2 on the test mill (``dpi``: its ``decimal_point_input``) with a face at a motion's extreme; what
+    happened (an event)."""
     from tests.gcode.fanuc.helpers import mill
 
-    plain = mill()
+    extra = f'decimal_point_input = "{dpi}"'
+    plain = mill(extra)
     got = _motion(text, plain, False)
     if isinstance(got, str) or not got[0]:
         return "no motion"
-    machine = mill(tables=travel([g[0] for g in got[0]], plain.axis_names, face, Fraction(1, 1000)))
+    machine = mill(extra, tables=travel([g[0] for g in got[0]], plain.axis_names, face, Fraction(1, 1000)))
     routed, off = verify_routed(text, machine), verify_off(text, machine)
     if isinstance(routed, Exception) or isinstance(off, Exception):
         assert type(routed) is type(off) and str(routed) == str(off), f"oracle 2: {routed!r}\n{off!r}\n{text}"
@@ -342,10 +354,10 @@ def verdicts_agree(text: str, face: tuple[int, int, int, bool]) -> str:
     return routed.verdict.name
 
 
-def reference_agrees(text: str) -> str:
+def reference_agrees(text: str, dpi: str = "calculator") -> str:
     """Oracle 3 (``tests/gcode/fanuc/ref_differential.compare`` on the same mill); what happened."""
     from tests.gcode.fanuc.ref_differential import compare, first_difference
 
-    outcome = compare(text)
+    outcome = compare(text, dpi)
     assert outcome.status in ("same", "skip", "reject"), f"oracle 3: {first_difference(outcome)}\n{text}"
     return outcome.status if outcome.status != "skip" else f"skip: {outcome.reason[:50]}"

@@ -64,17 +64,22 @@ class _State41(_State):
 
 def _comp(draw, st_: _State41, counter: str | None) -> list[str]:
     """A compensated contour in G17 G21 G90: a rapid to the entry's start, G41/G42 with a feed move (longer than
-    the radius), 1-4 feed moves (a loop's counter in one now and then), G40 with a move away, back to the plane."""
+    the radius), 1-4 feed moves (a loop's counter in one now and then), G40 with a move away, back to the plane.
+    Outside a clean program, now and then the contour's moves in G91 or the whole contour in G20 (the pass's
+    compile check declines both: the full path decides)."""
     side = draw(st.sampled_from(("G41", "G42", "G41", "G42", "G41.1", "G42.1")))
     tool = {"G41.1": f" D«{draw(st.sampled_from(('1', '2.5', '0.8')))}»", "G42.1": " D«1.5»"}.get(
         side, draw(st.sampled_from((" D1", " D2", ""))))
     x0, y0 = (Fraction(draw(st.integers(-300, 300)), 10) for _ in range(2))
-    lines = ["G17 G21 G90", f"G0 X«{x0}» Y«{y0}»", "T1 M6" if not tool else "",
+    twist = 0 if st_.clean or st_.one_unit else draw(st.integers(0, 3))
+    lines = [f"G17 {'G20' if twist == 1 else 'G21'} G90", f"G0 X«{x0}» Y«{y0}»", "T1 M6" if not tool else "",
              f"{side}{tool} G1 X«{x0 + Fraction(draw(st.integers(40, 200)), 10)}» Y«{y0}» F200"]
+    if twist == 2:
+        lines.append("G91")
     for _ in range(draw(st.integers(1, 4))):
         axes = draw(st.lists(st.sampled_from("XY"), min_size=1, max_size=2, unique=True))
         lines.append("G1 " + " ".join(f"{a}{_value(draw, st_, counter)}" for a in axes))
-    lines += [f"G40 G0 X«{x0}» Y«{y0 - 30}»", f"G{st_.plane}"]
+    lines += [f"G90 G40 G0 X«{x0}» Y«{y0 - 30}»", f"G{st_.plane}", "G21" if twist == 1 else ""]
     return [line for line in lines if line]
 
 

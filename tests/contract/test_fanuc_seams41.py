@@ -56,11 +56,11 @@ def test_f1_an_m_alone_in_a_vectorized_run_is_the_last_m(lines, fast):
 
 # ---------------------------------------------------------------------------------------------- the hunt
 def _check(data) -> None:
-    face = data.draw(FACES)
+    face, dpi = data.draw(FACES), data.draw(st.sampled_from(("calculator", "increment")))
     parts = data.draw(fanuc_programs())
-    event("lanes: " + lanes_agree(program(parts), mill()).split(" (")[0])
-    event("verdict: " + verdicts_agree(program(parts), face))
-    event("reference: " + reference_agrees(program(parts, reads=False)).split(":")[0])
+    event("lanes: " + lanes_agree(program(parts), mill(f'decimal_point_input = "{dpi}"')).split(" (")[0])
+    event("verdict: " + verdicts_agree(program(parts), face, dpi))
+    event("reference: " + reference_agrees(program(parts, reads=False), dpi).split(":")[0])
 
 
 @settings(max_examples=CI_EXAMPLES, derandomize=True, **_SETTINGS)
