@@ -283,19 +283,21 @@ def _take_run(interp: Any, runs: dict[int, list], req: Any) -> MotionChunk | Non
 def _keep_last(it: Any, code: tuple[np.ndarray, np.ndarray], lo: int, hi: int) -> None:
     """A Fanuc interpreter's ``last["N"]`` and ``last["M"]`` (what a macro reads as #4114 and #4113): the number
     of the last N and M word of a block's lines ``lo`` .. ``hi - 1``, which a run took, where they have one
-    (``_record_block`` keeps them block by block on the full path)."""
+    (``_record_block`` keeps them block by block on the full path).  An M word alone on its line is a block (it
+    sets #4113: hunt41), an N alone is not."""
     last = getattr(it, "last", None) if getattr(it, "keeps_number", False) else None
     if last is not None:
         for letter in ("N", "M"):
-            number = _last_word(code, lo, hi, ord(letter))
+            number = _last_word(code, lo, hi, ord(letter), alone=letter == "M")
             if number is not None:
                 last[letter] = number
 
 
-def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: int) -> Fraction | None:
-    """The number of the last word ``letter`` in a block's lines ``lo`` .. ``hi - 1`` in a line with another word,
-    from its code bytes (``_classify``'s: comments and blanks out, upper case; a simple line's words are letters
-    and numbers), None when none has one.
+def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: int,
+               alone: bool = False) -> Fraction | None:
+    """The number of the last word ``letter`` in a block's lines ``lo`` .. ``hi - 1`` in a line with another word
+    (``alone``: in any line), from its code bytes (``_classify``'s: comments and blanks out, upper case; a simple
+    line's words are letters and numbers), None when none has one.
 
     >>> c = np.frombuffer(b"N10G1X1M8G1X2N30X3M09N40", dtype=np.uint8)
     >>> line = np.repeat(np.arange(4, dtype=np.int32), [9, 4, 8, 3])
@@ -304,6 +306,10 @@ def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: in
     (Fraction(10, 1), Fraction(30, 1), None)
     >>> _last_word((c, line), 0, 2, m), _last_word((c, line), 0, 3, m)
     (Fraction(8, 1), Fraction(9, 1))
+    >>> c = np.frombuffer(b"G1X1M4N30", dtype=np.uint8)
+    >>> line = np.repeat(np.arange(3, dtype=np.int32), [4, 2, 3])
+    >>> _last_word((c, line), 0, 3, m), _last_word((c, line), 0, 3, m, alone=True), _last_word((c, line), 0, 3, n)
+    (None, Fraction(4, 1), None)
     """
     c, cl_line = code
     for at in np.flatnonzero((c == letter) & (cl_line >= lo) & (cl_line < hi))[::-1].tolist():
@@ -311,7 +317,7 @@ def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: in
         line = cl_line[at]
         while k < c.size and cl_line[k] == line and c[k] in _NUMBER_BYTES:
             k += 1
-        if k > first and (at > 0 and cl_line[at - 1] == line or k < c.size and cl_line[k] == line):
+        if k > first and (alone or at > 0 and cl_line[at - 1] == line or k < c.size and cl_line[k] == line):
             return decimal_value(c[first:k].tobytes().decode("ascii"))
     return None  # (a line of its N alone is no block: the language layer skips it, plain_first)
 

@@ -546,6 +546,11 @@ def check_rs274(template: str, units: str, workdir) -> str:
         # the standalone rs274's own doing (specs/gcode-support.md): after M6 it re-reads a position without the
         # tool length; under G20 it re-reads the length unconverted
         return "rs274's own (M6 and G43 in a block, or G43 and G20)"
+    if re.search(r"G8[59]\b", text):
+        # rs274 -g prints G85's and G89's traverse to the clear level where the tool already is at R (G99, or G98
+        # from below R: convert_cycle_g85/g89's last cycle_traverse), a motion LinuxCNC's canonical layer does not
+        # queue and the full path and the pass do not emit (hunt41's F2: 9 rows, rs274 10 motions)
+        return "rs274's own (G85 or G89: a traverse that does not move)"
     machine = machine_of(SETUP)
     try:
         path = double_pass(text, machine, max_iterations=MAX_ITERATIONS, arc_tolerance="linuxcnc")
