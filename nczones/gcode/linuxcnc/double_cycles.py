@@ -184,7 +184,7 @@ def may_cycle(text: Any) -> bool:
     "8" in it).  Only then do motions hand the pass their literal words' texts (:func:`literal_tokens`); a cycle
     the test misses compares its levels without them (a close pair declines, as before cyc41).
 
-    >>> may_cycle("G0 Z2\nG98 G81 X1 R2"), may_cycle("G1 X81 Y73"), may_cycle("g 083 q1")
+    >>> may_cycle("G0 Z2\\nG98 G81 X1 R2"), may_cycle("G1 X81 Y73"), may_cycle("g 083 q1")
     (True, False, True)
     """
     if not isinstance(text, str):
