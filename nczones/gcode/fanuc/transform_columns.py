@@ -57,6 +57,9 @@ __all__ = ["ColumnTransform", "column_transform"]
 #: Magnitudes (scaled integers) the rotation's doubles and the scaling's products stay below.
 _FLOAT_EXACT = 2**50
 _INT_LIMIT = 2**61
+#: The magnitude a program coordinate plus a centre, and a machine coordinate (with its offset), stay below
+#: (``int64`` holds ``2**63``: no sum of two such ever wraps; the fast path's own state bound is ``2**59``).
+_OUT_LIMIT = 2**60
 #: The float screen's margins: the tie guard in increments (rounded up), and slack for its own evaluation.
 _GUARD = float(TIE_GUARD) * (1 + 2**-20) + 2**-40
 _ROUNDING = 2.0**-51
@@ -116,6 +119,10 @@ def machine_points(xf: ColumnTransform, P: np.ndarray, S: int) -> tuple[np.ndarr
     ``bad`` the rows whose point the general path finds uncertain (their ``M`` rows meaningless), or None when
     a magnitude is out of the lane's range (module docstring)."""
     st = _scaled(xf.step, S)
+    centre = (xf.rotation.ca, xf.rotation.cb) if xf.rotation is not None else \
+        xf.scaling.centre if xf.scaling is not None else ()
+    if st >= _FLOAT_EXACT or _magnitude(P) + max((abs(_scaled(c, S)) for c in centre), default=0) >= _OUT_LIMIT:
+        return None  # a difference p - centre could wrap (or a centre not even fit int64): the general path
     M = P.copy()
     bad = np.zeros(len(P), dtype=bool)
     if xf.scaling is not None:
@@ -126,10 +133,17 @@ def machine_points(xf: ColumnTransform, P: np.ndarray, S: int) -> tuple[np.ndarr
         assert xf.rotation is not None
         if not _rotate_columns(xf, P, M, bad, st, S):
             return None
+    if _magnitude(M) + max((abs(_scaled(o, S)) for o in xf.off), default=0) >= _OUT_LIMIT:
+        return None  # a machine coordinate could wrap: the general path
     for i, o in enumerate(xf.off):
         if o:
             M[:, i] += _scaled(o, S)
     return M, bad
+
+
+def _magnitude(a: np.ndarray) -> int:
+    """The largest ``|v|`` of ``a`` as a Python int (no ``int64`` negation that could wrap), 0 when empty."""
+    return max(int(a.max()), -int(a.min())) if a.size else 0
 
 
 def _scale_column(p: np.ndarray, out: np.ndarray, c: int, f: Fraction, st: int) -> bool:
@@ -140,7 +154,7 @@ def _scale_column(p: np.ndarray, out: np.ndarray, c: int, f: Fraction, st: int) 
     fn, fd = f.numerator, f.denominator
     d = p - c
     big = max(abs(int(d.max())), abs(int(d.min())))
-    if big * abs(fn) + abs(c) * fd >= _INT_LIMIT // 2 or fd * st >= _INT_LIMIT:
+    if big * abs(fn) + abs(c) * fd >= _INT_LIMIT // 2 or fd * st >= _INT_LIMIT or abs(fn) >= _INT_LIMIT:
         return False
     n = c * fd + fn * d
     den = fd * st
@@ -229,6 +243,8 @@ def machine_columns(xf: ColumnTransform, pos0: list[int], pend: np.ndarray, rows
     ``arcs = (arc mask over rows, program starts of the arcs, centre a, centre b, ia, ib)``, the arcs' machine
     centres: ``(start, end, centre a, centre b)``, the index of the first line the general path must take (a
     point it finds uncertain), or None (out of range)."""
+    if max(map(abs, pos0), default=0) >= _OUT_LIMIT:
+        return None  # the machine start (its offsets) beyond the lane's range: the general path
     got = machine_points(xf, pend[rows], S)
     if got is None:
         return None
