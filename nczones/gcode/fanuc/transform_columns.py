@@ -14,18 +14,48 @@ maps those program points to machine points exactly as ``FanucInterpreter._trans
   arithmetic, with every magnitude checked below ``2**61`` first (else the lane declines).
 * **rotation** (G68): the rotated coordinate ``u = (x cos a - y sin a) / st`` (and ``x sin a + y cos a``) is
   computed in doubles from the doubles ``c``, ``s`` nearest the midpoints of the exact core's enclosures of
-  ``cos a``, ``sin a`` (``transforms.cos_sin_enclosure``).  The general path rounds to the nearest increment
-  unless a rounding tie lies within ``TIE_GUARD`` increments of its rational enclosure of ``u``
-  (``transforms.certified_round``).  Soundness of the screen: every point of that enclosure is
-  ``x c' - y s'`` with ``c'``, ``s'`` in the enclosures, within ``(|x| + |y|) delta / st`` of ``x c - y s``
-  (``delta`` the greatest distance, rounded up, of ``c``/``s`` from either end of their enclosures), and the
-  double ``u`` is within ``(|x| + |y|) 2**-51 / st + |u| 2**-50`` of ``(x c - y s) / st`` (two products, a sum
-  and a quotient, each rounded by at most half an ulp, ``|x|, |y| < 2**50``: integers exact in doubles).  Where
-  ``u``'s distance to the nearest tie ``k + 1/2`` (exact: ``u - floor(u)`` is exact below ``2**52``) exceeds
-  that error plus ``TIE_GUARD`` plus a margin, the general path's whole widened enclosure lies between the same
-  two ties, so it rounds to the same increment, ``floor(u)`` or ``floor(u) + 1``, and takes it; every other
-  coordinate is computed by ``transforms.rotate`` itself (exact rationals), and a point it finds uncertain
-  (``PointNotCertain``: the general path's ``unknown``) cuts the run before its line.
+  ``cos a``, ``sin a`` (``transforms.cos_sin_enclosure``) and taken where a float screen proves it is the
+  general path's (below); every other coordinate is computed by ``transforms.rotate`` itself (exact
+  rationals), and a point it finds uncertain (``PointNotCertain``: the general path's ``unknown``) cuts the
+  run before its line.
+
+Soundness of the rotation screen (review42)
+-------------------------------------------
+Notation: ``x = p_a - c_a``, ``y = p_b - c_b`` the scaled program coordinates about the centre (exact ``int64``
+differences: ``|p| + |centre| < 2**60`` is checked first), ``|x|, |y| < 2**50`` and the increment ``st``
+(``0.001`` mm, ``0.0001`` in ``= 0.00254`` mm, ..., times ``10**S``) ``< 2**50`` (both checked, else the lane
+declines), so ``x``, ``y``, ``st`` and ``|x| + |y|`` are exact doubles; ``eps = 2**-53``; ``c``, ``s`` doubles
+with ``|c|, |s| <= 1`` (their enclosures are far narrower than ``eps``).  The general path
+(``transforms._coordinate``) takes the interval ``[L, H]`` of ``U = (x c' - y s') / st`` over ``c'``, ``s'`` in
+the enclosures and rounds to the integer ``k`` with no tie ``j + 1/2`` in ``[L - g, H + g]`` (``g =
+TIE_GUARD``), else raises.  The screen computes ``q = fl(fl(fl(x c) - fl(y s)) / st)`` and accepts ``k =
+floor(q) + (frac > 1/2)`` when ``|frac - 1/2| > err + |q| 2**-50 + G`` (all in doubles).  The terms:
+
+1. *Enclosure*: ``|U - (x c - y s) / st| <= (|x| + |y|) far / st`` for every ``U`` in ``[L, H]``, ``far`` the
+   greatest distance of ``c``/``s`` from an end of its enclosure; ``delta = nextafter(fl(far), inf) (1 +
+   2**-40) > far`` (``fl(far)`` is within half an ulp of ``far``; ``far = 0``: ``delta = 2**-1074``).
+2. *Evaluation*: two products (``eps |x c| <= eps |x|``, ``eps |y|``), the difference (``eps |d|``) and the
+   quotient (``eps |d| / st``, ``|d| / st <= |q| / (1 - eps)``): ``|q - (x c - y s) / st| <= eps (|x| + |y|) /
+   st + 2 eps |q| (1 + 2 eps)``; an underflow adds at most ``2**-1074`` per operation.  The screen charges
+   ``2**-51 (|x| + |y|) / st`` (in ``err``) and ``2**-50 |q|``: four times these.
+3. *Its own arithmetic*: ``err = fl((|x| + |y|) fl(fl(delta + 2**-51) / st))`` is at least ``(|x| + |y|) (delta +
+   2**-51) / st (1 - eps)**3``, the loss below term 2's spare ``3 eps (|x| + |y|) / st`` (``delta < 1``);
+   ``|q| 2**-50`` is exact (a power of two); the two additions of the right side lose at most ``eps`` of it
+   each, at most ``2**-53`` in all where it matters (a right side of ``1/2`` or more accepts nothing).
+4. *The distance*: ``floor(q)`` is exact, ``frac = fl(q - floor(q))`` exact (Sterbenz) but for ``-1/2 < q < 0``
+   (``1 - |q|`` rounded by at most ``2**-54``, perhaps to ``1.0``: then ``floor(q) + 1 = 0``, still the nearest
+   integer), ``fl(frac - 1/2)`` exact for ``frac >= 1/4``, else off by at most ``2**-55``: the computed distance
+   is within ``2**-53`` of ``q``'s distance to the nearest tie.
+5. *The guard*: ``G = fl(fl(g) (1 + 2**-20)) + 2**-40 > g + 2**-41``, above ``g`` by far more than terms 3 and
+   4's ``2**-52`` (and any underflow's).
+
+So an accepted ``q`` lies farther than ``(|x| + |y|) far / st + (term 2) + g`` from every tie; by 1 and 2 every
+point of ``[L - g, H + g]`` lies between the same two ties as ``q``: the general path rounds to ``q``'s nearest
+integer, the screen's ``k``, and the machine coordinate is ``c_a + k st`` in both.  The other coordinate is the
+same argument with ``x s + y c``.  G91 (the program point a running sum of exact integers), inch (``st =
+254 * 10**(S - 5)``) and an arc's centre (the program start plus I/J, mapped as a point) enter only through
+``x``, ``y`` and ``st``.  Checked by ``tests/gcode/fanuc/test_transform_screen.py`` (points constructed within
+ulps of the screen's and the general path's edges, the general path as the oracle on every point).
 
 Arcs (I/J/K in the plane; an R arc declines): their centre, the program start plus the offsets, is mapped like
 a point (``_transformed_arc``); a rotation in another plane than the arc's, unequal scale factors of the plane's

@@ -1,5 +1,16 @@
 """A second reading of the G68/G51 column lane (nczones/gcode/fanuc/transform_columns.py, review42).
 
+* ``test_rotated_columns_are_the_general_paths`` — ``machine_points`` against ``transforms.rotate`` (the general
+  path) on every point: angles with many decimals, the exact ones (0, 90, 180, 270, 360, 30, negative), near
+  multiples of 90; centres, offsets, tiny and huge coordinates (up to the screen's ``2**50``), increments of
+  0.001 mm, 0.0001 mm and 0.0001 in at scales 10**3..10**9; and points constructed (exact integers, searched
+  with rationals) to lie a given distance from a rounding tie: on it, within 1e-12 increments either side of
+  the tie guard (the general path's edge), and at the screen's own edge.  A row the general path decides must
+  be its point, a row it finds uncertain must be cut (``bad``).
+* ``test_the_screen_distance_is_sound_within_ulps`` — ``_nearest`` on doubles stepped by ``nextafter`` around
+  ``k + 1/2 +- TIE_GUARD`` (constructed exactly): it accepts only a double truly farther than the guard.
+* ``test_scaled_columns_are_the_general_paths`` — the scaling path against ``transforms.scale`` near the
+  ``int64`` limits of its products (a decline is allowed, a wrong or wrapped point is not).
 * ``test_huge_numbers_decline_and_never_wrap`` — a centre or a work offset near the ``int64`` limit: the lane
   declines (the general path decides), where it raised ``OverflowError`` or wrapped a machine coordinate
   (a G54 X of 9223372036854775 mm rotated by 30 degrees came out at -9.2e15 mm).
@@ -7,10 +18,19 @@
 
 from __future__ import annotations
 
+import math
+from fractions import Fraction
+
+import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from nczones.gcode import interpret_text
+from nczones.gcode.fanuc import transform_columns as tc
+from nczones.gcode.fanuc.transforms import TIE_GUARD, PointNotCertain, Rotation, Scaling, cos_sin_enclosure, rotate, scale
 from nczones.gcode.fastpath import MIN_RUN
+from tests.sizes import examples
 
 from .helpers import mill
 
@@ -42,3 +62,156 @@ def _outcome(text: str, fast: bool) -> tuple:
 def test_huge_numbers_decline_and_never_wrap(pre, transform):
     text = _program(pre, transform)
     assert _outcome(text, True) == _outcome(text, False)
+
+
+# ---------------------------------------------------------------------------------------------- the rotation screen
+
+_INCH_STEP = Fraction(254, 10**5)  # 0.0001 in, mm
+
+
+@st.composite
+def _angles(draw) -> Fraction:
+    kind = draw(st.sampled_from(["exact", "near", "decimals"]))
+    if kind == "exact":
+        return Fraction(draw(st.sampled_from([0, 90, 180, 270, 360, -90, -180, 30, 150, -30, 210, 60, 45, 720])))
+    if kind == "near":  # a multiple of 90 plus or minus 10**-d
+        return Fraction(90 * draw(st.integers(-4, 4))) + draw(st.sampled_from([1, -1])) * Fraction(
+            1, 10 ** draw(st.integers(3, 12)))
+    return Fraction(draw(st.integers(-720 * 10**9, 720 * 10**9)), 10 ** draw(st.integers(0, 9)))
+
+
+@st.composite
+def _scale_and_step(draw) -> tuple[int, Fraction]:
+    step = draw(st.sampled_from([Fraction(1, 1000), Fraction(1, 10**4), _INCH_STEP]))
+    low = 5 if step == _INCH_STEP else (3 if step == Fraction(1, 1000) else 4)
+    return draw(st.integers(low, 9)), step
+
+
+def _tie_point(c: Fraction, s: Fraction, st_: int, d: Fraction, x0: int, span: int) -> tuple[int, int]:
+    """Integers ``(x, y)`` with ``(x c - y s) / st`` nearest ``j + 1/2 + d`` over ``x`` in ``x0 .. x0 + span``
+    (``y`` solved and rounded; the roles swapped where ``|s| < |c|``), measured with the midpoints (rationals)."""
+    best = None
+    swap = abs(s) < abs(c)
+    for x in range(x0, x0 + span):
+        # (x c - y s) / st = t  <=>  y = (x c - t st) / s;  swapped: x' = (t st + y' s) / c with y' the loop value
+        if swap:
+            y = x
+            t = math.floor(-y * s / st_) + Fraction(1, 2) + d
+            xx = round((t * st_ + y * s) / c)
+            got = (xx, y)
+        else:
+            t = math.floor(x * c / st_) + Fraction(1, 2) + d
+            got = (x, round((x * c - t * st_) / s))
+        u = (got[0] * c - got[1] * s) / st_
+        off = abs(abs(u - math.floor(u) - Fraction(1, 2)) - abs(d))
+        if best is None or off < best[0]:
+            best = (off, got)
+    assert best is not None
+    return best[1]
+
+
+def _exact_rows(rot: Rotation, step: Fraction, off: tuple[Fraction, ...], P: np.ndarray, S: int) -> list:
+    out = []
+    for row in P.tolist():
+        try:
+            got = rotate(rot, [Fraction(v, 10**S) for v in row], step)
+        except PointNotCertain:
+            out.append(None)
+            continue
+        out.append([int((g + o) * 10**S) for g, o in zip(got, off)])
+    return out
+
+
+@settings(max_examples=examples(40, 600), deadline=None)
+@given(_angles(), _scale_and_step(), st.integers(-10**6, 10**6), st.integers(-10**6, 10**6),
+       st.integers(-10**6, 10**6), st.lists(st.tuples(st.integers(0, 49), st.integers(-2**49, 2**49),
+                                                      st.integers(-2**49, 2**49)), min_size=1, max_size=12),
+       st.lists(st.sampled_from(["tie", "guard-", "guard+", "screen", "near"]), max_size=4), st.randoms())
+def test_rotated_columns_are_the_general_paths(angle, scale_step, ca, cb, ox, raw, ties, rnd):
+    S, step = scale_step
+    st_ = int(step * 10**S)
+    centre = (Fraction(ca, 1000), Fraction(cb, 1000))
+    off = (Fraction(ox, 1000), Fraction(-ox, 250), Fraction(7, 2))
+    rot = Rotation(0, 1, centre[0], centre[1], angle)
+    C = [int(v * 10**S) for v in centre]
+    rows = []
+    for bits, x, y in raw:  # magnitudes from 1 to 2**49 (scaled), centred on the rotation's centre
+        rows.append([C[0] + x % (2**bits) * (1 if x >= 0 else -1), C[1] + y % (2**bits) * (1 if y >= 0 else -1), 5])
+    (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(angle)
+    cm, sm = (c_lo + c_hi) / 2, (s_lo + s_hi) / 2
+    for kind in ties:  # constructed distances from a tie (in increments) of the first coordinate
+        d = {"tie": Fraction(0), "guard-": TIE_GUARD - Fraction(1, 10**12), "guard+": TIE_GUARD + Fraction(1, 10**12),
+             "screen": TIE_GUARD + Fraction(2, 10**12), "near": Fraction(rnd.randint(-10**6, 10**6), 10**12)}[kind]
+        d *= rnd.choice([1, -1])
+        x, y = _tie_point(cm, sm, st_, d, rnd.randint(-10**9, 10**9), 300)
+        rows.append([C[0] + x, C[1] + y, 5])
+    P = np.array(rows, dtype=np.int64)
+    xf = tc.ColumnTransform(rot, None, step, off)
+    got = tc.machine_points(xf, P, S)
+    assert got is not None  # every magnitude is in the screen's range
+    M, bad = got
+    for r, want in enumerate(_exact_rows(rot, step, off, P, S)):
+        if want is None:
+            assert bad[r], (r, P[r])
+        else:
+            assert not bad[r] and M[r].tolist() == want, (r, P[r], M[r], want)
+
+
+def test_the_constructed_points_reach_both_edges():
+    """Not vacuous: at 27.5 degrees (0.001 mm at 10**9) the construction lands within 1e-9 increments of the
+    distances asked for, the general path refuses the point inside the guard and decides the one outside, and the
+    screen takes a point clear of the guard by 1e-9 but leaves one 1e-12 outside it to the exact path."""
+    angle, S, step = Fraction(55, 2), 9, Fraction(1, 1000)
+    st_ = int(step * 10**S)
+    (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(angle)
+    cm, sm = (c_lo + c_hi) / 2, (s_lo + s_hi) / 2
+    rot = Rotation(0, 1, Fraction(0), Fraction(0), angle)
+    c, s, delta = tc._doubles(angle)
+    for d, certain, screened in ((TIE_GUARD - Fraction(1, 10**9), False, False),
+                                 (TIE_GUARD + Fraction(3, 10**9), True, True),
+                                 (-TIE_GUARD - Fraction(3, 10**9), True, True)):
+        x, y = _tie_point(cm, sm, st_, d, 123_456_789, 2000)
+        u = (x * cm - y * sm) / st_
+        assert abs(abs(u - math.floor(u) - Fraction(1, 2)) - abs(d)) < Fraction(1, 10**9)
+        P = np.array([[x, y, 0]], dtype=np.int64)
+        _, ok = tc._nearest(np.array([(x * c - y * s) / st_]), np.array([(abs(x) + abs(y)) * ((delta + 2**-51) / st_)]))
+        assert bool(ok[0]) == screened
+        M, bad = tc.machine_points(tc.ColumnTransform(rot, None, step, (Fraction(0),) * 3), P, S)
+        assert bool(bad[0]) == (not certain)
+
+
+@pytest.mark.parametrize("k", [0, 1, -1, 7, -8, 12345, -2**40, 2**45])
+@pytest.mark.parametrize("side", [1, -1])
+def test_the_screen_distance_is_sound_within_ulps(k, side):
+    tie = Fraction(k) + Fraction(1, 2)
+    for base in (TIE_GUARD, TIE_GUARD + Fraction(1, 10**12), tc._GUARD, 0):
+        u = float(tie + side * Fraction(base))
+        for _ in range(40):
+            _, ok = tc._nearest(np.array([u]), np.array([0.0]))
+            exact = Fraction(u)
+            if ok[0]:  # accepted: truly farther than the guard from the tie, and the nearest integer
+                assert abs(exact - tie) > TIE_GUARD
+                assert int(_[0]) == round(exact)
+            u = math.nextafter(u, math.inf if side > 0 else -math.inf)
+
+
+# ----------------------------------------------------------------------------------------------- the scaling path
+
+@settings(max_examples=examples(30, 400), deadline=None)
+@given(st.integers(0, 9), st.sampled_from([Fraction(1, 2), Fraction(-3, 2), Fraction(2), Fraction(1, 3),
+                                           Fraction(-7, 1000), Fraction(12345, 1000), Fraction(10**9, 7)]),
+       st.integers(-2**62, 2**62), st.lists(st.integers(-2**62, 2**62), min_size=1, max_size=6),
+       st.integers(-2**61, 2**61))
+def test_scaled_columns_are_the_general_paths(bits, f, c, ps, o):
+    S, step = 3, Fraction(1, 1000)
+    c, o = c >> bits * 6, o >> bits * 6  # magnitudes from 2**62 down to 1
+    P = np.array([[p >> bits * 6, 0] for p in ps], dtype=np.int64)
+    sc = Scaling((Fraction(c, 1000), Fraction(0)), (f, Fraction(1)))
+    got = tc.machine_points(tc.ColumnTransform(None, sc, step, (Fraction(o, 1000), Fraction(0))), P, S)
+    if got is None:
+        return  # declined: the general path decides
+    M, bad = got
+    assert not bad.any()
+    for r, row in enumerate(P.tolist()):
+        want = scale(sc, [Fraction(v, 1000) for v in row], step)
+        assert M[r, 0] == (want[0] + Fraction(o, 1000)) * 1000 and M[r, 1] == row[1], (row, M[r])
