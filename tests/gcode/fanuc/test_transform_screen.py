@@ -28,7 +28,15 @@ from hypothesis import strategies as st
 
 from nczones.gcode import interpret_text
 from nczones.gcode.fanuc import transform_columns as tc
-from nczones.gcode.fanuc.transforms import TIE_GUARD, PointNotCertain, Rotation, Scaling, cos_sin_enclosure, rotate, scale
+from nczones.gcode.fanuc.transforms import (
+    TIE_GUARD,
+    PointNotCertain,
+    Rotation,
+    Scaling,
+    cos_sin_enclosure,
+    rotate,
+    scale,
+)
 from nczones.gcode.fastpath import MIN_RUN
 from tests.sizes import examples
 
@@ -87,20 +95,19 @@ def _scale_and_step(draw) -> tuple[int, Fraction]:
     return draw(st.integers(low, 9)), step
 
 
-def _tie_point(c: Fraction, s: Fraction, st_: int, d: Fraction, x0: int, span: int) -> tuple[int, int]:
+def _tie_point(c: Fraction, s: Fraction, st_: int, d: Fraction, x0: int, span: int, other: int = 0) -> tuple[int, int]:
     """Integers ``(x, y)`` with ``(x c - y s) / st`` nearest ``j + 1/2 + d`` over ``x`` in ``x0 .. x0 + span``
-    (``y`` solved and rounded; the roles swapped where ``|s| < |c|``), measured with the midpoints (rationals)."""
+    and ``y`` near ``other`` (solved and rounded; the roles swapped where ``|s| < |c|``), measured with the
+    rationals ``c``, ``s`` (the enclosures' midpoints)."""
     best = None
     swap = abs(s) < abs(c)
     for x in range(x0, x0 + span):
-        # (x c - y s) / st = t  <=>  y = (x c - t st) / s;  swapped: x' = (t st + y' s) / c with y' the loop value
-        if swap:
+        if swap:  # y the loop's, x solved: x = (t st + y s) / c
             y = x
-            t = math.floor(-y * s / st_) + Fraction(1, 2) + d
-            xx = round((t * st_ + y * s) / c)
-            got = (xx, y)
-        else:
-            t = math.floor(x * c / st_) + Fraction(1, 2) + d
+            t = math.floor((other * c - y * s) / st_) + Fraction(1, 2) + d
+            got = (round((t * st_ + y * s) / c), y)
+        else:  # y = (x c - t st) / s
+            t = math.floor((x * c - other * s) / st_) + Fraction(1, 2) + d
             got = (x, round((x * c - t * st_) / s))
         u = (got[0] * c - got[1] * s) / st_
         off = abs(abs(u - math.floor(u) - Fraction(1, 2)) - abs(d))
@@ -126,7 +133,7 @@ def _exact_rows(rot: Rotation, step: Fraction, off: tuple[Fraction, ...], P: np.
 @given(_angles(), _scale_and_step(), st.integers(-10**6, 10**6), st.integers(-10**6, 10**6),
        st.integers(-10**6, 10**6), st.lists(st.tuples(st.integers(0, 49), st.integers(-2**49, 2**49),
                                                       st.integers(-2**49, 2**49)), min_size=1, max_size=12),
-       st.lists(st.sampled_from(["tie", "guard-", "guard+", "screen", "near"]), max_size=4), st.randoms())
+       st.lists(st.sampled_from(["tie", "guard-", "guard+", "screen", "near", "ulps"]), max_size=4), st.randoms())
 def test_rotated_columns_are_the_general_paths(angle, scale_step, ca, cb, ox, raw, ties, rnd):
     S, step = scale_step
     st_ = int(step * 10**S)
@@ -140,10 +147,12 @@ def test_rotated_columns_are_the_general_paths(angle, scale_step, ca, cb, ox, ra
     (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(angle)
     cm, sm = (c_lo + c_hi) / 2, (s_lo + s_hi) / 2
     for kind in ties:  # constructed distances from a tie (in increments) of the first coordinate
-        d = {"tie": Fraction(0), "guard-": TIE_GUARD - Fraction(1, 10**12), "guard+": TIE_GUARD + Fraction(1, 10**12),
+        reach = rnd.choice([10**9, 2**48])  # far out a double's ulp is a good part of an increment
+        ulps = Fraction(reach, st_) * Fraction(rnd.randint(-16 * 2**10, 16 * 2**10), 2**62)  # +-16 ulps of q
+        d = {"ulps": ulps, "tie": Fraction(0), "guard-": TIE_GUARD - Fraction(1, 10**12), "guard+": TIE_GUARD + Fraction(1, 10**12),
              "screen": TIE_GUARD + Fraction(2, 10**12), "near": Fraction(rnd.randint(-10**6, 10**6), 10**12)}[kind]
         d *= rnd.choice([1, -1])
-        x, y = _tie_point(cm, sm, st_, d, rnd.randint(-10**9, 10**9), 300)
+        x, y = _tie_point(cm, sm, st_, d, rnd.randint(-reach, reach), 120, rnd.randint(-reach, reach) // 2)
         rows.append([C[0] + x, C[1] + y, 5])
     P = np.array(rows, dtype=np.int64)
     xf = tc.ColumnTransform(rot, None, step, off)
@@ -180,6 +189,29 @@ def test_the_constructed_points_reach_both_edges():
         assert bool(bad[0]) == (not certain)
 
 
+def test_far_out_the_doubles_cross_ties_and_the_screen_charges_it():
+    """At ``|x| ~ 2**48`` increments (0.001 mm at 10**3) a double's ulp is 1/32 of an increment: constructed points
+    within 1/256 increment of a tie whose computed ``q`` lies on the other side of it exist (term 2 is not
+    academic), and the lane still gives the general path's point or cuts the row."""
+    import random
+
+    rnd, S, step, crossed = random.Random(42), 3, Fraction(1, 1000), 0
+    for _ in range(60):
+        angle = Fraction(rnd.randint(1, 3599999), 10000)
+        (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(angle)
+        cm, sm = (c_lo + c_hi) / 2, (s_lo + s_hi) / 2
+        c, s, _delta = tc._doubles(angle)
+        x, y = _tie_point(cm, sm, 1, Fraction(rnd.randint(-2**10, 2**10), 2**18), rnd.randint(-2**48, 2**48), 40,
+                          rnd.randint(-2**47, 2**47))
+        u, q = x * cm - y * sm, Fraction(float(x) * c - float(y) * s)
+        tie = math.floor(u) + Fraction(1, 2)
+        crossed += (u - tie) * (q - tie) < 0 or q == tie
+        rot = Rotation(0, 1, Fraction(0), Fraction(0), angle)
+        _mapped_or_declined(tc.ColumnTransform(rot, None, step, (Fraction(0),) * 3),
+                            np.array([[x, y, 0]], dtype=np.int64), S, lambda p, rot=rot: rotate(rot, p, step))
+    assert crossed >= 3
+
+
 @pytest.mark.parametrize("k", [0, 1, -1, 7, -8, 12345, -2**40, 2**45])
 @pytest.mark.parametrize("side", [1, -1])
 def test_the_screen_distance_is_sound_within_ulps(k, side):
@@ -193,6 +225,41 @@ def test_the_screen_distance_is_sound_within_ulps(k, side):
                 assert abs(exact - tie) > TIE_GUARD
                 assert int(_[0]) == round(exact)
             u = math.nextafter(u, math.inf if side > 0 else -math.inf)
+
+
+# ------------------------------------------------------------------------------------------------ int64's limits
+
+_EDGES = [2**62, -2**62, 2**63 - 1, -2**63, 2**60, -2**60, 2**59 + 12345, 2**49, -2**49 - 1, 2**50, 0, 7]
+
+
+def _mapped_or_declined(xf: tc.ColumnTransform, P: np.ndarray, S: int, exact) -> None:
+    got = tc.machine_points(xf, P, S)
+    if got is None:
+        return  # declined: the general path decides
+    M, bad = got
+    for r, row in enumerate(P.tolist()):
+        try:
+            want = exact([Fraction(v, 10**S) for v in row])
+        except PointNotCertain:
+            assert bad[r]
+            continue
+        assert not bad[r] and M[r].tolist() == [(w + o) * 10**S for w, o in zip(want, xf.off)], (row, M[r])
+
+
+@pytest.mark.parametrize("p", _EDGES)
+@pytest.mark.parametrize("c", [-2**62, -2**61, 2**61 + 1, 2**62, 10**19, 0, -5])
+@pytest.mark.parametrize("o", [0, 2**61, -2**62, 10**20])
+def test_the_limits_decline_or_map_exactly(p, c, o):
+    """A program coordinate, a centre and an offset (scaled, 10**3) anywhere near or beyond ``int64``'s range: the
+    lane declines or maps exactly (a wrapped difference once passed the ``2**50`` check as ``-2**63``)."""
+    S, step = 3, Fraction(1, 1000)
+    P = np.array([[p, -p if p != -2**63 else p, 1]], dtype=np.int64)
+    off = (Fraction(o, 1000), Fraction(0), Fraction(0))
+    rot = Rotation(0, 1, Fraction(c, 1000), Fraction(-c, 1000), Fraction(30))
+    _mapped_or_declined(tc.ColumnTransform(rot, None, step, off), P, S, lambda q: rotate(rot, q, step))
+    for f in (Fraction(2), Fraction(-10**9, 7), Fraction(1, 3)):
+        sc = Scaling((Fraction(c, 1000), Fraction(-c, 1000), Fraction(0)), (f, f, Fraction(1)))
+        _mapped_or_declined(tc.ColumnTransform(None, sc, step, off), P, S, lambda q, sc=sc: scale(sc, q, step))
 
 
 # ----------------------------------------------------------------------------------------------- the scaling path
