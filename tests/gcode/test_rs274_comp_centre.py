@@ -6,6 +6,10 @@ start's double and the word's, in program units (inch under G20), not the correc
   (``10.1 + 10.2``, ``0.7 + 0.1``, ...: asserted): ``rs274 -g`` runs each, the full path matches its log motion
   by motion, and where the pass takes the program (G90, G21) its rows are rs274's motion ends; G20 and G91
   contours (the pass declines them) hold the full path to rs274.
+* ``test_decimal_contours_are_enclosed_by_the_full_path`` and ``test_decimal_contours_are_rs274s`` — G41/G42
+  contours of lines and arcs in tenths (comp41's own generator draws eighths, binary fractions, whose sums are
+  exact): the pass's invariant against the full path (``check_against_full``), and rs274 against both;
+  ``test_the_tenths_make_ulp_centres`` checks that the draws do make ulp-off centre sums.
 * ``test_a_face_at_an_ulp_centres_extreme`` — a travel face at a compensated arc's top and right extremes (its
   centre an ulp off the exact sum), one pulse either side, on it and 1e-13 mm off it: the verdict with the pass is
   the full path's (the pass's box, ``double_comp.corner_box`` with ``more``, encloses the exact centre's arc).
@@ -13,18 +17,24 @@ start's double and the word's, in program units (inch under G20), not the correc
 
 from __future__ import annotations
 
+import random
 from fractions import Fraction
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import nczones.pipeline.verification as verification
-from nczones.gcode.linuxcnc.doubles import double_pass
+from nczones.gcode.linuxcnc.doubles import Declined, double_pass
 from nczones.prover import verify_text
 from nczones.prover.result import Verdict
 from tests.gcode.rs274_pass import NEEDS_RS274, assert_the_pass_is_rs274s_motion
+from tests.gcode.test_double_pass import check_against_full
+from tests.gcode.test_double_pass_comp import MILL
 from tests.gcode.test_rs274_double_comp import SETUP
 from tests.machines import load_machine
 from tests.oracles.rs274 import compare
+from tests.sizes import examples
 from tests.tools.rs274_diff import machine_of, run_rs274
 
 #: (program, the pass takes it, (start, word) pairs whose double sum is not the rounded exact sum)
@@ -100,3 +110,64 @@ def test_a_face_at_an_ulp_centres_extreme(monkeypatch, axis, face, safe):
     if safe is not None:
         assert with_pass.verdict is (Verdict.SAFE if safe else Verdict.UNSAFE)
     assert [r.message for r in with_pass.reasons] == [r.message for r in without.reasons]
+
+
+# ------------------------------------------------------------------------------------------- drawn decimal contours
+
+#: centre offsets of radius 5 k / 10 (3-4-5 triangles) and axis-parallel ones, in tenths
+_OFFSETS = [(3, 4), (4, -3), (-3, -4), (-4, 3), (5, 0), (0, 5), (-5, 0), (0, -5)]
+
+
+def _tenths(v: int) -> str:
+    return f"{v / 10:.1f}"
+
+
+def _decimal_contour(rng: random.Random) -> tuple[str, int]:
+    """A G41/G42 contour (in tenths of mm) of lines and I/J arcs (a quarter, half or three quarters of a circle
+    about a 3-4-5 centre, radius 1.5 to 9 mm), an arc or a line first; and how many of its I/J centres' double
+    sums differ from the rounded exact ones."""
+    lines, x, y, ulps = ["G21 G90 G17 G54 F800", "G0 X0 Y0", rng.choice(["G41 D1", "G42 D1"])], 0, 0, 0
+    for _ in range(rng.randint(2, 7)):
+        if rng.randint(0, 2):
+            k = rng.randint(3, 18)
+            i, j = (v * k for v in rng.choice(_OFFSETS))
+            cw = rng.random() < 0.5
+            ex, ey = -i, -j
+            for _ in range(rng.choice([1, 2, 3])):  # the start's vector about the centre, turned a quarter
+                ex, ey = (ey, -ex) if cw else (-ey, ex)
+            ulps += any(float(_tenths(a)) + float(_tenths(b)) != float(Fraction(a + b, 10)) for a, b in ((x, i), (y, j)))
+            x, y = x + i + ex, y + j + ey
+            lines.append(f"{'G2' if cw else 'G3'} X{_tenths(x)} Y{_tenths(y)} I{_tenths(i)} J{_tenths(j)}")
+        else:
+            x, y = x + rng.randint(-300, 300), y + rng.randint(-300, 300)
+            lines.append(f"G1 X{_tenths(x)} Y{_tenths(y)}")
+    lines += [rng.choice(["G40 G0 X0 Y0", "G40", "G40 G1 X1 Y1"]), "M30"]
+    return "\n".join(lines) + "\n", ulps
+
+
+def test_the_tenths_make_ulp_centres():
+    rng = random.Random(7)
+    assert sum(_decimal_contour(rng)[1] > 0 for _ in range(40)) >= 20  # most drawn contours have one
+
+
+@settings(max_examples=examples(25, 400), deadline=None)
+@given(st.randoms(use_true_random=False))
+def test_decimal_contours_are_enclosed_by_the_full_path(rng):
+    check_against_full(_decimal_contour(rng)[0], MILL, max_iterations=100)
+
+
+@NEEDS_RS274
+@settings(max_examples=examples(6, 100), deadline=None)
+@given(rng=st.randoms(use_true_random=False))
+def test_decimal_contours_are_rs274s(rng, tmp_path_factory):
+    text = _decimal_contour(rng)[0].replace("G54 F800\n", "G54 F800\nT1 M6\n").replace(" D1", "")
+    tmp = tmp_path_factory.mktemp("comp")
+    moves, error, log = run_rs274(text, SETUP, tmp)
+    outcome = compare(text, machine_of(SETUP), moves, error)
+    assert outcome.status == "match", (outcome, text)
+    if error is None:
+        try:
+            double_pass(text, machine_of(SETUP), max_iterations=100)
+        except Declined:  # (a corner LinuxCNC may drop, ...): the full path's match is the check
+            return
+        assert_the_pass_is_rs274s_motion(text, SETUP, tmp)
