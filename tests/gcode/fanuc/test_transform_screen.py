@@ -9,6 +9,9 @@
   be its point, a row it finds uncertain must be cut (``bad``).
 * ``test_the_screen_distance_is_sound_within_ulps`` — ``_nearest`` on doubles stepped by ``nextafter`` around
   ``k + 1/2 +- TIE_GUARD`` (constructed exactly): it accepts only a double truly farther than the guard.
+* ``test_g91_runs_near_ties_are_the_general_paths`` — a G68 run in G91 (and G90, G20) whose points are
+  constructed near ties (on one, either side of the guard): the fast path's segments, status and unknowns are
+  the general path's alone (a point in doubt cuts the run; the general path says ``unknown`` there).
 * ``test_scaled_columns_are_the_general_paths`` — the scaling path against ``transforms.scale`` near the
   ``int64`` limits of its products (a decline is allowed, a wrong or wrapped point is not).
 * ``test_huge_numbers_decline_and_never_wrap`` — a centre or a work offset near the ``int64`` limit: the lane
@@ -260,6 +263,52 @@ def test_the_limits_decline_or_map_exactly(p, c, o):
     for f in (Fraction(2), Fraction(-10**9, 7), Fraction(1, 3)):
         sc = Scaling((Fraction(c, 1000), Fraction(-c, 1000), Fraction(0)), (f, f, Fraction(1)))
         _mapped_or_declined(tc.ColumnTransform(None, sc, step, off), P, S, lambda q, sc=sc: scale(sc, q, step))
+
+
+#: Denominators of convergents of sqrt(3): ``q sqrt 3`` within ``1 / (2 sqrt 3 q)`` of an integer, so at an angle
+#: of sine +-1/2 the point ``(q, y)`` lies that close (halved) to a tie for the right ``y``; 0 an exact tie
+_SQRT3_Q = [0, 1, 4, 15, 56, 209, 780, 2911, 10864, 40545, 151316, 564719, 2107560, 7865521]
+
+
+@settings(max_examples=examples(4, 60), deadline=None)
+@given(st.sampled_from([Fraction(30), Fraction(150), Fraction(210), Fraction(-30)]), st.booleans(), st.booleans(),
+       st.randoms(use_true_random=False))
+def test_g91_runs_near_ties_are_the_general_paths(angle, g91, inch, rnd):
+    text = _near_tie_run(angle, g91, inch, rnd)
+    assert _outcome(text, True) == _outcome(text, False)
+
+
+def test_the_near_tie_runs_take_the_lane_and_meet_ties():
+    """Not vacuous: such a run goes through the lane and its points on a tie are the general path's unknowns."""
+    import random
+
+    text = _near_tie_run(Fraction(30), True, False, random.Random(5))
+    run = interpret_text(text, _MILL, fast=True, file="xf.nc")
+    list(run.segments())  # (the counts fill as the segments stream)
+    assert run.counts["fast_lines"] >= 35 and run.status == "unknown"
+    assert {u.code for u in run.unsupported} == {"G68"}
+
+
+def _near_tie_run(angle: Fraction, g91: bool, inch: bool, rnd) -> str:
+    """A G68 run about the origin (an angle of sine +-1/2) whose points after the 40th line lie on or near a tie
+    of the rotated X (``_SQRT3_Q``: from 0 to about 4e-8 increments away, inside and outside the guard), the
+    others anywhere; whole increments of 0.001 mm or 0.0001 in."""
+    digits = 4 if inch else 3
+    (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(angle)
+    cm, sm = (c_lo + c_hi) / 2, (s_lo + s_hi) / 2
+    body, prev = [], (0, 0)
+    for k in range(MIN_RUN + 8):
+        if k >= 40 and k % 2 == 0:
+            x = rnd.choice(_SQRT3_Q) * rnd.choice([1, -1])
+            y = round((x * cm - math.floor(x * cm) - Fraction(1, 2)) / sm)  # x c - y s nearest the tie above x c
+        else:
+            x, y = rnd.randint(-10**7, 10**7), rnd.randint(-10**7, 10**7)
+        wx, wy = (x - prev[0], y - prev[1]) if g91 else (x, y)
+        body.append(f"G01 X{wx / 10**digits:.{digits}f} Y{wy / 10**digits:.{digits}f}")
+        prev = (x, y)
+    head = ["%", "O1000", f"G00 G17 G90 {'G20' if inch else 'G21'} G54 X0. Y0.", "G43 H1 Z1.", "G01 Z-0.1 F30.",
+            f"G68 X0. Y0. R{int(angle)}.", "G01 X0. Y0."]
+    return "\n".join([*head, *(["G91"] if g91 else []), *body, "G90", "G69", "G00 X0. Y0.", "M30", "%"]) + "\n"
 
 
 # ----------------------------------------------------------------------------------------------- the scaling path
