@@ -51,6 +51,9 @@ PROGRAMS = {
                         "G1 X0.1 Y-0.2\nG40 G0 X-0.5 Y-0.5\nM30\n", False, [("0.1", "0.2")]),
     "comp2 arcs, G91": ("G21 G90 G17 G54 F800\nT1 M6\nG0 X0 Y0\nG91\nG41 G1 X10.1 Y0\nG2 X10.2 Y-10.2 I10.2 J0\n"
                         "G1 X-9.6 Y0\nG40 G0 X-5 Y-5\nG90\nM30\n", False, [("10.1", "10.2")]),
+    # G90.1: the centre is the words' doubles, no sum (the pass declines G90.1)
+    "absolute centres, G90.1": ("G21 G90 G90.1 G17 G54 F800\nT1 M6\nG0 X0 Y0\nG41 G1 X10.1 Y0\n"
+                                "G2 X30.5 Y0 I20.3 J0\nG1 X30.5 Y-10\nG40 G0 X40 Y-20\nG91.1\nM30\n", False, []),
     # LinuxCNC's program_x is the G91 chain's double fl(5.7 + 4.4) = 10.100000000000001, its centre then
     # 20.200000000000003; the full path's start double is the rounded exact 10.1, its centre 20.2 (specs/contract.md)
     "a G91 chain before the arc": ("G21 G90 G17 G54 F800\nT1 M6\nG0 X0 Y0\nG91\nG41 G1 X5.7 Y0\nG1 X4.4 Y0\n"
