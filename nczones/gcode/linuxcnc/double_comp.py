@@ -63,6 +63,7 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
+from ...code_cache import compiled
 from ...motion import DROPPED_BELOW
 from .comp_floats import (
     CONCAVE_TOLERANCE_RAD,
@@ -288,6 +289,9 @@ class Comp:
         self.selected = self.spindle = 0
         self.stale = False
         self.adds: tuple[Any, ...] | None = None  # the columns' appends, once a row was added (_row)
+        self.emit: Any = None  # a row's appends in one call, once a row was added (_emitter)
+        #: a compensated arc's words (``DoublePath.arc_more``: its box is the sweep's, the offsets' bound)
+        self.arc_words = (float(EXACT), 0.0, 0.0, st.offb)
         #: a plane axis's step at or above this is not one LinuxCNC may drop (``_Pass.tiny``; the plans' LIM)
         self.lim = 2 * (float(DROPPED_BELOW) * 1.01 + 1e-12 + st.tiny_pad) + 1e-4
 
@@ -463,9 +467,8 @@ class Comp:
             corner = row[:]
             corner[ia], corner[ib] = mid_x + off[ia], mid_y + off[ib]
             if mode:  # the corner arc: its box, then its row
-                self._arc(corner, (bx, by, self.side == LEFT, 0.0))
-                for add, v in zip(self.adds or self._adds(), corner):
-                    add(v)
+                self._arc(corner, bx, by, self.side == LEFT, 0.0)
+                (self.emit or self._emitter())(corner)
                 if len(st.columns[0]) >= st.rows:
                     st.full()
             else:
@@ -543,11 +546,10 @@ class Comp:
         off = self.st.off
         corner[self.ia], corner[self.ib] = mid_x + off[self.ia], mid_y + off[self.ib]
         if kind:  # an arc: its box, then its row (_row's)
-            adds = self.adds or self._adds()
-            self._arc(corner, (before[0], before[1], self.side == LEFT, 0.0))
+            emit = self.emit or self._emitter()
+            self._arc(corner, before[0], before[1], self.side == LEFT, 0.0)
             st = self.st
-            for add, x in zip(adds, corner):
-                add(x)
+            emit(corner)
             if len(st.columns[0]) >= st.rows:
                 st.full()
         else:
@@ -668,8 +670,7 @@ class Comp:
             r = q[5]
             r[self.ia] = x + st.off[self.ia]
             r[self.ib] = y + st.off[self.ib]
-            for add, v in zip(self.adds or self._adds(), r):
-                add(v)
+            (self.emit or self._emitter())(r)
             if q[0] == _RAPID:
                 st.rapids += 1
             self.queue = []
@@ -694,7 +695,7 @@ class Comp:
         st = self.st
         off, ia, ib = st.off, self.ia, self.ib
         oa, ob = off[ia], off[ib]
-        adds = self.adds or self._adds()
+        emit = self.emit or self._emitter()
         col0, rows = st.columns[0], st.rows
         for q in self.queue:
             kind = q[0]
@@ -702,9 +703,8 @@ class Comp:
             r[ia] = q[1] + oa
             r[ib] = q[2] + ob
             if kind == _ARC:  # a programmed arc about its centre
-                self._arc(r, (q[6] + oa, q[7] + ob, q[8] < 0, abs(q[6]) + abs(q[7]) + q[10] + self.radius))
-            for add, x in zip(adds, r):
-                add(x)
+                self._arc(r, q[6] + oa, q[7] + ob, q[8] < 0, abs(q[6]) + abs(q[7]) + q[10] + self.radius)
+            emit(r)
             if kind == _RAPID:
                 st.rapids += 1
             if len(col0) >= rows:
@@ -719,22 +719,28 @@ class Comp:
         adds = self.adds = tuple(col.append for col in st.columns)  # (full() drops rows in place)
         return adds
 
-    def _row(self, kind: int, row: Any, centre: Any = None) -> None:
-        """Append a motion's row (a corner arc's box beside it)."""
-        st = self.st
+    def _emitter(self) -> Any:
+        """:attr:`emit`, at the first row: one function that appends a row to every column (comp42: no ``zip``
+        loop a row), after :meth:`_adds`."""
         adds = self.adds or self._adds()
-        if kind == _ARC:
-            self._arc(row, centre)
-        for add, x in zip(adds, row):
-            add(x)
+        scope = {f"a{i}": add for i, add in enumerate(adds)}
+        source = "def emit(r):\n" + "".join(f"    a{i}(r[{i}])\n" for i in range(len(adds)))
+        exec(compiled(source, "<compensated rows>"), scope)  # noqa: S102  # from indices only
+        self.emit = scope["emit"]
+        return self.emit
+
+    def _row(self, kind: int, row: Any) -> None:
+        """Append a motion's row (a rapid or a feed)."""
+        st = self.st
+        (self.emit or self._emitter())(row)
         if kind == _RAPID:
             st.rapids += 1
         if len(st.columns[0]) >= st.rows:
             st.full()
 
-    def _arc(self, row: Any, centre: Any) -> None:
-        """A corner arc or a compensated programmed arc about ``centre`` (its row doubles, clockwise, and the
-        magnitude of :func:`corner_box`'s ``more``) ending at ``row``: its box, before its row is appended (an arc after a motion LinuxCNC may drop declines, as ``_Pass._arc_body``)."""
+    def _arc(self, row: Any, cx: float, cy: float, cw: bool, more: float) -> None:
+        """A corner arc or a compensated programmed arc about ``(cx, cy)`` (its centre's row doubles; ``cw``:
+        clockwise; ``more``: :func:`corner_box`'s) ending at ``row``: its box, before its row is appended (an arc after a motion LinuxCNC may drop declines, as ``_Pass._arc_body``)."""
         st = self.st
         ia, ib = self.ia, self.ib
         ca, cb = st.columns[ia], st.columns[ib]
@@ -745,5 +751,5 @@ class Comp:
             raise self.declined("a corner arc after a motion LinuxCNC may drop in a blended corner")
         if st.arc_plane != 17:
             st.arc_in(17)
-        box = corner_box(ca[-1], cb[-1], row[ia], row[ib], centre[0], centre[1], centre[2], st.offb, centre[3])
-        st.add_arc(st.row0 + last + 1, box, (float(EXACT), 0.0, 0.0, st.offb))
+        box = corner_box(ca[-1], cb[-1], row[ia], row[ib], cx, cy, cw, st.offb, more)
+        st.add_arc(st.row0 + last + 1, box, self.arc_words)
