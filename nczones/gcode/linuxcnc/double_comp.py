@@ -134,7 +134,7 @@ def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float,
         ux, uy, wx, wy = wx, wy, ux, uy
     k = (((0 if ux > err else 1 if ux < -err else 2) * 3 + (0 if uy > err else 1 if uy < -err else 2)) * 3
          + (0 if wx > err else 1 if wx < -err else 2)) * 3 + (0 if wy > err else 1 if wy < -err else 2)
-    px, py, nx, ny, same = _SWEEPS[k]
+    px, py, nx, ny, same = (_SWEEPS or _sweeps())[k]
     if same:  # a pair in one quadrant: none more when w is clearly ahead of u (``_box``'s test), else all
         a, b = ux * wy, uy * wx
         tol = err * ((ux if ux >= 0.0 else -ux) + (uy if uy >= 0.0 else -uy) + (wx if wx >= 0.0 else -wx)
@@ -159,7 +159,9 @@ def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float,
 def _sweeps() -> tuple[tuple[bool, bool, bool, bool, bool], ...]:
     """:data:`_SWEEPS`: per sign code of ``(ux, uy, wx, wy)`` (0 above ``err``, 1 below ``-err``, 2 within it;
     ``((ux * 3 + uy) * 3 + wx) * 3 + wy``) the directions (+X, +Y, -X, -Y) a counter-clockwise sweep from a
-    quadrant ``u`` may lie in to one ``w`` may lie in crosses, and whether a pair in one quadrant is among them."""
+    quadrant ``u`` may lie in to one ``w`` may lie in crosses, and whether a pair in one quadrant is among them
+    (built at the first corner arc: not at start-up)."""
+    global _SWEEPS
     signs = ((False,), (True,), (False, True))  # the possible ``< 0`` of a component
     out = []
     for code in range(81):
@@ -177,7 +179,8 @@ def _sweeps() -> tuple[tuple[bool, bool, bool, bool, bool], ...]:
                     same = True
                 dirs = [d or e for d, e in zip(dirs, _CROSSED[q][n])]
         out.append((*dirs, same))  # type: ignore[arg-type]
-    return tuple(out)  # type: ignore[return-value]
+    _SWEEPS = tuple(out)
+    return _SWEEPS
 
 
 #: Quadrants by the signs of a vector's components (``2 (x < 0) + (y < 0)``; ``double_arcs._QUADRANT``) and the
@@ -185,7 +188,7 @@ def _sweeps() -> tuple[tuple[bool, bool, bool, bool, bool], ...]:
 _QUADRANT = (0, 3, 1, 2)
 _CROSSED = tuple(tuple(tuple(any((q + t) % 4 == d for t in range(1, n + 1)) for d in range(4)) for n in range(5))
                  for q in range(4))
-_SWEEPS = _sweeps()
+_SWEEPS: tuple[tuple[bool, bool, bool, bool, bool], ...] | None = None
 _DOWN, _UP = -math.inf, math.inf
 _next_after = math.nextafter
 
