@@ -705,8 +705,10 @@ class Comp:
             r = q[5]
             r[ia] = q[1] + oa
             r[ib] = q[2] + ob
-            if kind == _ARC:  # a programmed arc about its centre
-                self._arc(r, q[6] + oa, q[7] + ob, q[8] < 0, abs(q[6]) + abs(q[7]) + q[10] + self.radius)
+            if kind == _ARC:  # a programmed arc about its centre (more: |ca| + |cb| + its radius + the tool's)
+                ca, cb = q[6], q[7]
+                self._arc(r, ca + oa, cb + ob, q[8] < 0,
+                          (ca if ca >= 0.0 else -ca) + (cb if cb >= 0.0 else -cb) + q[10] + self.radius)
             emit(r)
             if kind == _RAPID:
                 st.rapids += 1
