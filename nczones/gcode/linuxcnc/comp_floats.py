@@ -58,10 +58,12 @@ def line_corner(side: int | None, radius: float, cx: float, cy: float, opx: floa
             alpha = alpha + 2 * _PI
         beta = (alpha - theta) - _HALF_PI
         gamma = -_HALF_PI
-    end_x = px + radius * math.cos(alpha + gamma)
-    end_y = py + radius * math.sin(alpha + gamma)
-    mid_x = opx + radius * math.cos(alpha + gamma)
-    mid_y = opy + radius * math.sin(alpha + gamma)
+    dx = radius * math.cos(alpha + gamma)  # (LinuxCNC computes each twice: the same doubles)
+    dy = radius * math.sin(alpha + gamma)
+    end_x = px + dx
+    end_y = py + dy
+    mid_x = opx + dx
+    mid_y = opy + dy
     # the "h" shape (an arc at the front, turning away): stay above and to the side rather than loop around
     concave = beta < -small or beta > _PI + small or (
         beta > _PI - small and ((side == RIGHT and front > 0) or (side == LEFT and front < 0)))

@@ -63,6 +63,7 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
+from ...code_cache import compiled
 from ...motion import DROPPED_BELOW
 from .comp_floats import (
     CONCAVE_TOLERANCE_RAD,
@@ -82,7 +83,6 @@ from .comp_floats import (
     reverses,
 )
 from .double_arcs import EXACT, ij_check, r_screen
-from .double_arcs import sector_box as arc_box
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -107,15 +107,90 @@ def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float,
     ``err``; ``offb`` bounds the offsets), or of a compensated programmed arc about its centre's double
     (``more``: a magnitude its centre's error also depends on, added to ``m``).
 
+    ``double_arcs._box`` in one function (comp42: no ``abs`` calls, and no angles for an end on the centre's
+    axis, as a quarter arc's): the directions are the union over every quadrant the exact ``u = S - C`` and
+    ``w = E - C`` may lie in (:data:`_SWEEPS`).  Sound: a component more than ``err`` from 0 has the exact
+    one's sign; one within ``err`` may have either, so the exact vector lies in one of the closed quadrants
+    taken, and the union holds the directions of the exact pair's.  A pair in one quadrant holds none when the
+    cross product is clearly positive (``_box``'s test, which holds for vectors of one closed quadrant: the
+    sweep is then less than a quarter turn inside it, a direction on its edge only at an end, a row the box
+    holds widened) and all four otherwise.  A vector with both components within ``err`` (an arc of radius
+    about 0) takes all four.
+
     >>> [round(v, 9) + 0.0 for v in corner_box(0.0, 1.0, 1.0, 0.0, 0.0, 0.0, True, 0.0)]
     [0.0, 1.0, 0.0, 1.0]
+    >>> [round(v, 9) + 0.0 for v in corner_box(1.0, 0.0, -1.0, 0.0, 0.0, 0.0, False, 0.0)]
+    [-1.0, 1.0, 0.0, 1.0]
     """
     ux, uy, wx, wy = sx - cx, sy - cy, ex - cx, ey - cy
     r0, r1 = math.hypot(ux, uy), math.hypot(wx, wy)
-    m = abs(sx) + abs(sy) + r0 + r1 + offb + more
+    m = (sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + r0 + r1 + offb + more
     err = (64.0 * m + 0.0625) * _U
-    diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
-    return arc_box(sx, sy, ex, ey, cx, cy, ux, uy, wx, wy, big, diff + err, err, cw)
+    if r1 > r0:
+        widen, rmax = r1 - r0 + err, r1
+    else:
+        widen, rmax = r0 - r1 + err, r0
+    if cw:  # clockwise from u to w is counter-clockwise from w to u
+        ux, uy, wx, wy = wx, wy, ux, uy
+    k = (((0 if ux > err else 1 if ux < -err else 2) * 3 + (0 if uy > err else 1 if uy < -err else 2)) * 3
+         + (0 if wx > err else 1 if wx < -err else 2)) * 3 + (0 if wy > err else 1 if wy < -err else 2)
+    px, py, nx, ny, same = (_SWEEPS or _sweeps())[k]
+    if same:  # a pair in one quadrant: none more when w is clearly ahead of u (``_box``'s test), else all
+        a, b = ux * wy, uy * wx
+        tol = err * ((ux if ux >= 0.0 else -ux) + (uy if uy >= 0.0 else -uy) + (wx if wx >= 0.0 else -wx)
+                     + (wy if wy >= 0.0 else -wy)) * 1.01 + 2 * err * err \
+            + ((a if a >= 0.0 else -a) + (b if b >= 0.0 else -b)) * 2.0**-51
+        if not a - b > tol:
+            px = py = nx = ny = True
+    xlo, xhi = (sx, ex) if sx < ex else (ex, sx)
+    ylo, yhi = (sy, ey) if sy < ey else (ey, sy)
+    if px and cx + rmax > xhi:
+        xhi = cx + rmax
+    if nx and cx - rmax < xlo:
+        xlo = cx - rmax
+    if py and cy + rmax > yhi:
+        yhi = cy + rmax
+    if ny and cy - rmax < ylo:
+        ylo = cy - rmax
+    return (_next_after(xlo - widen, _DOWN), _next_after(xhi + widen, _UP), _next_after(ylo - widen, _DOWN),
+            _next_after(yhi + widen, _UP))
+
+
+def _sweeps() -> tuple[tuple[bool, bool, bool, bool, bool], ...]:
+    """:data:`_SWEEPS`: per sign code of ``(ux, uy, wx, wy)`` (0 above ``err``, 1 below ``-err``, 2 within it;
+    ``((ux * 3 + uy) * 3 + wx) * 3 + wy``) the directions (+X, +Y, -X, -Y) a counter-clockwise sweep from a
+    quadrant ``u`` may lie in to one ``w`` may lie in crosses, and whether a pair in one quadrant is among them
+    (built at the first corner arc: not at start-up)."""
+    global _SWEEPS
+    signs = ((False,), (True,), (False, True))  # the possible ``< 0`` of a component
+    out = []
+    for code in range(81):
+        c = (code // 27, code // 9 % 3, code // 3 % 3, code % 3)
+        if (c[0] == 2 and c[1] == 2) or (c[2] == 2 and c[3] == 2):
+            out.append((True, True, True, True, False))
+            continue
+        us = {_QUADRANT[2 * x + y] for x in signs[c[0]] for y in signs[c[1]]}
+        ws = {_QUADRANT[2 * x + y] for x in signs[c[2]] for y in signs[c[3]]}
+        dirs, same = [False] * 4, False
+        for q in us:
+            for r in ws:
+                n = (r - q) % 4
+                if n == 0:
+                    same = True
+                dirs = [d or e for d, e in zip(dirs, _CROSSED[q][n])]
+        out.append((*dirs, same))  # type: ignore[arg-type]
+    _SWEEPS = tuple(out)
+    return _SWEEPS
+
+
+#: Quadrants by the signs of a vector's components (``2 (x < 0) + (y < 0)``; ``double_arcs._QUADRANT``) and the
+#: directions a counter-clockwise sweep crosses from quadrant q through n boundaries (``double_arcs._CROSSED``).
+_QUADRANT = (0, 3, 1, 2)
+_CROSSED = tuple(tuple(tuple(any((q + t) % 4 == d for t in range(1, n + 1)) for d in range(4)) for n in range(5))
+                 for q in range(4))
+_SWEEPS: tuple[tuple[bool, bool, bool, bool, bool], ...] | None = None
+_DOWN, _UP = -math.inf, math.inf
+_next_after = math.nextafter
 
 
 def comp_others(groups: dict[str, int], others: list[str]) -> list[str]:
@@ -162,10 +237,18 @@ def comp_body(st: Any, groups: dict[str, int], ms: list[int], ts: list[int], qs:
     return checks, select
 
 
-def straight_code(axes: list[tuple[int, int]], normal: list[str]) -> list[str]:
+def straight_code(axes: list[tuple[int, int]], normal: list[str], plane: tuple[int, int] | None = None) -> list[str]:
     """A straight move's code in a program that may compensate: :meth:`Comp.straight` while compensation is on
-    or G40 left the machine off the programmed point, else ``normal``."""
-    return ["if CS.busy:", f"    CS.straight(mode, v, {tuple(axes)!r})", "else:", *(f"    {b}" for b in normal)]
+    or G40 left the machine off the programmed point, else ``normal``; a block that names no axis but the
+    plane's (``plane``: their indices) calls :meth:`Comp.line` (comp42: one call a move)."""
+    moved = {i for _k, i in axes}
+    if plane is not None and None not in plane and moved <= set(plane):
+        x = next((f"v[{k}]" for k, i in axes if i == plane[0]), "None")
+        y = next((f"v[{k}]" for k, i in axes if i == plane[1]), "None")
+        call = f"CS.line(mode, {x}, {y})"
+    else:
+        call = f"CS.straight(mode, v, {tuple(axes)!r})"
+    return ["if CS.busy:", f"    {call}", "else:", *(f"    {b}" for b in normal)]
 
 
 def arc_code(others: list[str], axes: list[tuple[int, int]], normal: list[str]) -> list[str]:
@@ -209,6 +292,9 @@ class Comp:
         self.selected = self.spindle = 0
         self.stale = False
         self.adds: tuple[Any, ...] | None = None  # the columns' appends, once a row was added (_row)
+        self.emit: Any = None  # a row's appends in one call, once a row was added (_emitter)
+        #: a compensated arc's words (``DoublePath.arc_more``: its box is the sweep's, the offsets' bound)
+        self.arc_words = (float(EXACT), 0.0, 0.0, st.offb)
         #: a plane axis's step at or above this is not one LinuxCNC may drop (``_Pass.tiny``; the plans' LIM)
         self.lim = 2 * (float(DROPPED_BELOW) * 1.01 + 1e-12 + st.tiny_pad) + 1e-4
 
@@ -344,6 +430,70 @@ class Comp:
         else:
             self._next(mode, px, py, pos[:], before)
 
+    def line(self, mode: int, x: float | None, y: float | None) -> None:
+        """A G0 (``mode`` 0) or G1 move that names no axis but the plane's (``x``, ``y``: its words, None for one
+        it lacks) while :attr:`busy`: :meth:`straight` and :meth:`_next` in one function (comp42: the same
+        formulas in the same order, so the same rows, without four calls a move).  The entry move, the move
+        after G40's flush and every other block take :meth:`straight`."""
+        if self.first or self.side is None:
+            ia, ib = self.ia, self.ib
+            axes = ((0, ia),) if x is not None else ()
+            self.straight(mode, (x, y), axes + ((1, ib),) if y is not None else axes)
+            return
+        st = self.st
+        pos, off, words = st.pos, st.off, self.words
+        ia, ib = self.ia, self.ib
+        bx, by = pos[ia], pos[ib]  # the programmed corner's row (a convex corner's centre)
+        opx, opy = self.prog
+        if x is None:
+            px = opx
+        else:
+            px = x
+            pos[ia] = x + off[ia]
+        if y is None:
+            py = opy
+        else:
+            py = y
+            pos[ib] = y + off[ib]
+        words[ia], words[ib] = px, py
+        row = pos[:]
+        cx, cy = self.cur
+        queue = self.queue
+        if py == opy and px == opx:  # no motion in the plane
+            queue.append([mode, cx, cy, 0.0, 0.0, row])
+            return
+        front = queue[0][8] if queue and queue[0][0] == _ARC else 0
+        concave, beta, end_x, end_y, mid_x, mid_y, theta, gamma = line_corner(self.side, self.radius, cx, cy,
+                                                                               opx, opy, px, py, front)
+        if not concave and beta > CONCAVE_TOLERANCE_RAD:  # convex: around the corner (_flush, then _corner)
+            self._flush(cx, cy)
+            corner = row[:]
+            corner[ia], corner[ib] = mid_x + off[ia], mid_y + off[ib]
+            if mode:  # the corner arc: its box, then its row
+                self._arc(corner, bx, by, self.side == LEFT, 0.0)
+                (self.emit or self._emitter())(corner)
+                if len(st.columns[0]) >= st.rows:
+                    st.full()
+            else:
+                self._row(_RAPID, corner)
+            self.endpoint, self.valid = (mid_x, mid_y), True
+        elif concave:
+            if not queue:
+                raise self.declined("a concave corner after the compensation queue was flushed")
+            if front:  # an arc held: its end pulled back (arc_line_back)
+                q = queue[0]
+                back = arc_line_back(self.side, self.radius, q[1], q[2], q[6], q[7], front, opx, opy, px, py)
+            else:
+                back = retreat(self.radius, cx, cy, beta, theta, gamma)
+            if back is None:
+                raise self.declined("a zero-degree inside corner or a gouge (LinuxCNC's error)")
+            self._flush(*back)
+        else:  # straight on
+            self._dequeue()
+            self.endpoint, self.valid = (cx, cy), True
+        self.queue.append([mode, end_x, end_y, px - opx, py - opy, row])
+        self.cur, self.prog = (end_x, end_y), (px, py)
+
     def _first(self, kind: int, px: float, py: float, row: list[float]) -> None:
         """The entry move (``CutterComp._straight_first``)."""
         cx, cy = self.cur
@@ -399,11 +549,10 @@ class Comp:
         off = self.st.off
         corner[self.ia], corner[self.ib] = mid_x + off[self.ia], mid_y + off[self.ib]
         if kind:  # an arc: its box, then its row (_row's)
-            adds = self.adds or self._adds()
-            self._arc(corner, (before[0], before[1], self.side == LEFT, 0.0))
+            emit = self.emit or self._emitter()
+            self._arc(corner, before[0], before[1], self.side == LEFT, 0.0)
             st = self.st
-            for add, x in zip(adds, corner):
-                add(x)
+            emit(corner)
             if len(st.columns[0]) >= st.rows:
                 st.full()
         else:
@@ -524,8 +673,7 @@ class Comp:
             r = q[5]
             r[self.ia] = x + st.off[self.ia]
             r[self.ib] = y + st.off[self.ib]
-            for add, v in zip(self.adds or self._adds(), r):
-                add(v)
+            (self.emit or self._emitter())(r)
             if q[0] == _RAPID:
                 st.rapids += 1
             self.queue = []
@@ -550,17 +698,18 @@ class Comp:
         st = self.st
         off, ia, ib = st.off, self.ia, self.ib
         oa, ob = off[ia], off[ib]
-        adds = self.adds or self._adds()
+        emit = self.emit or self._emitter()
         col0, rows = st.columns[0], st.rows
         for q in self.queue:
             kind = q[0]
             r = q[5]
             r[ia] = q[1] + oa
             r[ib] = q[2] + ob
-            if kind == _ARC:  # a programmed arc about its centre
-                self._arc(r, (q[6] + oa, q[7] + ob, q[8] < 0, abs(q[6]) + abs(q[7]) + q[10] + self.radius))
-            for add, x in zip(adds, r):
-                add(x)
+            if kind == _ARC:  # a programmed arc about its centre (more: |ca| + |cb| + its radius + the tool's)
+                ca, cb = q[6], q[7]
+                self._arc(r, ca + oa, cb + ob, q[8] < 0,
+                          (ca if ca >= 0.0 else -ca) + (cb if cb >= 0.0 else -cb) + q[10] + self.radius)
+            emit(r)
             if kind == _RAPID:
                 st.rapids += 1
             if len(col0) >= rows:
@@ -575,22 +724,28 @@ class Comp:
         adds = self.adds = tuple(col.append for col in st.columns)  # (full() drops rows in place)
         return adds
 
-    def _row(self, kind: int, row: Any, centre: Any = None) -> None:
-        """Append a motion's row (a corner arc's box beside it)."""
-        st = self.st
+    def _emitter(self) -> Any:
+        """:attr:`emit`, at the first row: one function that appends a row to every column (comp42: no ``zip``
+        loop a row), after :meth:`_adds`."""
         adds = self.adds or self._adds()
-        if kind == _ARC:
-            self._arc(row, centre)
-        for add, x in zip(adds, row):
-            add(x)
+        scope = {f"a{i}": add for i, add in enumerate(adds)}
+        source = "def emit(r):\n" + "".join(f"    a{i}(r[{i}])\n" for i in range(len(adds)))
+        exec(compiled(source, "<compensated rows>"), scope)  # noqa: S102  # from indices only
+        self.emit = scope["emit"]
+        return self.emit
+
+    def _row(self, kind: int, row: Any) -> None:
+        """Append a motion's row (a rapid or a feed)."""
+        st = self.st
+        (self.emit or self._emitter())(row)
         if kind == _RAPID:
             st.rapids += 1
         if len(st.columns[0]) >= st.rows:
             st.full()
 
-    def _arc(self, row: Any, centre: Any) -> None:
-        """A corner arc or a compensated programmed arc about ``centre`` (its row doubles, clockwise, and the
-        magnitude of :func:`corner_box`'s ``more``) ending at ``row``: its box, before its row is appended (an arc after a motion LinuxCNC may drop declines, as ``_Pass._arc_body``)."""
+    def _arc(self, row: Any, cx: float, cy: float, cw: bool, more: float) -> None:
+        """A corner arc or a compensated programmed arc about ``(cx, cy)`` (its centre's row doubles; ``cw``:
+        clockwise; ``more``: :func:`corner_box`'s) ending at ``row``: its box, before its row is appended (an arc after a motion LinuxCNC may drop declines, as ``_Pass._arc_body``)."""
         st = self.st
         ia, ib = self.ia, self.ib
         ca, cb = st.columns[ia], st.columns[ib]
@@ -601,5 +756,5 @@ class Comp:
             raise self.declined("a corner arc after a motion LinuxCNC may drop in a blended corner")
         if st.arc_plane != 17:
             st.arc_in(17)
-        box = corner_box(ca[-1], cb[-1], row[ia], row[ib], centre[0], centre[1], centre[2], st.offb, centre[3])
-        st.add_arc(st.row0 + last + 1, box, (float(EXACT), 0.0, 0.0, st.offb))
+        box = corner_box(ca[-1], cb[-1], row[ia], row[ib], cx, cy, cw, st.offb, more)
+        st.add_arc(st.row0 + last + 1, box, self.arc_words)

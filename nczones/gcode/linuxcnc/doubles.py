@@ -1714,7 +1714,7 @@ class _Pass:
                     *self._straight_ends(axes), *self._levels(others, axes), *self._kept_words(axes),
                     *self._appends(axes), "n = len(C0)",
                     f"if n >= {self.rows}: st.full()", *rapids]
-        return body + (straight if self.cc is None else straight_code(axes, straight))
+        return body + (straight if self.cc is None else straight_code(axes, straight, (self.cc.ia, self.cc.ib)))
 
     def _levels(self, others: list[str], axes: list[tuple[int, int]]) -> list[str]:
         """In a text that may write a canned cycle (not one that may compensate, which declines cycles): the
