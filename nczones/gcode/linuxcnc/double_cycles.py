@@ -189,7 +189,8 @@ def may_cycle(text: Any) -> bool:
     """
     if not isinstance(text, str):
         return "73" in text or "8" in text
-    return re.search(r"[Gg][ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None
+    # "G" and "g" apart: a letter the regex engine scans for, not a class tested at every character (_may_compensate)
+    return any(re.search(g + r"[ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None for g in "Gg")
 
 
 def _literal(tree: Any, leaf: Any) -> str:

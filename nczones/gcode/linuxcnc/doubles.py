@@ -637,6 +637,9 @@ class _Pass:
         controls = self._controls()
         marks = sorted(controls)  # the O-word lines: the straight lines between two are run as one block
         count = self.src.count
+        # where each run of straight lines ends: a run starts at line 0 or just after an O-word line (every jump
+        # lands on one), and ends at the next O-word line
+        ends = dict(zip([0] + [m + 1 for m in marks], marks + [count]))
         blocks: dict[int, tuple] = {}  # the compiled lines of loop and sub bodies, by block (MAX_STEPS lines at most)
         counts: dict[int, int] = {}  # iterations of the current entry of each while, by its index
         looping = 0  # open while loops and calls
@@ -648,8 +651,10 @@ class _Pass:
         while i < count:
             ctrl = controls.get(i)
             if ctrl is None:  # the straight lines up to the next O-word line (-1: the program ended)
-                k = bisect_left(marks, i)
-                end = marks[k] if k < len(marks) else count
+                end = ends.get(i)
+                if end is None:  # (a run starting elsewhere: none does)
+                    k = bisect_left(marks, i)
+                    end = marks[k] if k < len(marks) else count
                 try:
                     i = self._block(i, end, blocks) if looping else self._straight(i, end)
                 except (EvalError, KeyError, ZeroDivisionError, OverflowError) as exc:
@@ -737,10 +742,11 @@ class _Pass:
         for fn, parts in block:
             if fn(parts):
                 return -1
-        for j in range(cut, end):  # past what is kept
-            fn, parts = self._step(j)
-            if fn is not None and fn(parts):
-                return -1
+        if cut < end:  # past what is kept
+            for j in range(cut, end):
+                fn, parts = self._step(j)
+                if fn is not None and fn(parts):
+                    return -1
         return end
 
     def _path(self) -> DoublePath:
@@ -1741,7 +1747,9 @@ def _may_compensate(text: Any) -> bool:
     """
     if not isinstance(text, str):
         return "41" in text or "42" in text
-    return re.search(r"[Gg][ \t]*0*4[12](?![0-9])", text) is not None
+    # "G" and "g" searched apart: a pattern that starts with a letter is scanned for it (the regex engine's
+    # literal prefix), one that starts with a class tests the class at every character (some 8x the work)
+    return any(re.search(g + r"[ \t]*0*4[12](?![0-9])", text) is not None for g in "Gg")
 
 
 def _g64_q(groups: dict[str, int], others: list[str], axes: bool) -> bool:
