@@ -357,3 +357,46 @@ def test_the_plural_stand_in_is_gettexts_without_a_catalogue(n):
     assert cli._same_plural("an argument", "arguments", n) == gettext.NullTranslations().ngettext(
         "an argument", "arguments", n)
     assert cli._same_message("usage: ") == gettext.NullTranslations().gettext("usage: ")
+
+
+#: Python's finalization calls ``threading._shutdown`` first thing (to join the threads): this one says so
+_FINALIZED = ("import os, sys, threading\n_shutdown = threading._shutdown\n"
+              "threading._shutdown = lambda: (os.write(2, b' finalized'), _shutdown())\n")
+
+
+def _untimed(report):
+    """A JSON report without its measurements (``stats``, ``*_s``, ``seconds*``), which differ from run to run."""
+    if isinstance(report, dict):
+        return {k: _untimed(v) for k, v in report.items()
+                if not (k == "stats" or k.endswith("_s") or k.startswith("seconds"))}
+    if isinstance(report, list):
+        return [_untimed(v) for v in report]
+    return report
+
+
+@pytest.mark.parametrize("handler", [False, True])
+def test_the_program_skips_finalization_only_when_nothing_waits_for_it(tmp_path, handler):
+    # issue 36 (boot42): cli.run ends with os._exit once the streams are flushed when no exit handler is
+    # registered and no other thread runs (Python's finalization then never starts); with a handler, Python's
+    # usual exit runs it and finalizes.  Either way the report and the status are main()'s.
+    program = tmp_path / "out.ngc"
+    program.write_text("G90 G21\n" + "".join(f"G1 X{k} Y10 F100\n" for k in range(300)) + "M2\n")
+    argv = ["verify", str(program), "--machine", MILL, "--format", "json"]
+    register = "import atexit\natexit.register(lambda: os.write(2, b' handler'))\n" if handler else ""
+    code = f"{_FINALIZED}{register}sys.argv = ['nczones', *{argv!r}]\nfrom nczones.cli import run\nrun()"
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        status = cli.main(argv)
+    assert r.returncode == status == 0  # (safe by the double pass: z3, which registers an exit handler, not loaded)
+    assert _untimed(json.loads(r.stdout)) == _untimed(json.loads(out.getvalue()))
+    assert json.loads(r.stdout)["verdict"] == "safe" and r.stdout.endswith("}\n")
+    assert r.stderr.split() == (["finalized", "handler"] if handler else []), r.stderr
+
+
+def test_the_program_finalizes_when_its_streams_are_not_its_own():
+    # a caller that replaced sys.stdout (a capture) gets Python's usual exit, which flushes and finalizes
+    code = (f"{_FINALIZED}import io\nsys.stdout = io.StringIO()\n"
+            "sys.argv = ['nczones', '--version']\nfrom nczones.cli import run\nrun()")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0 and r.stderr.split() == ["finalized"], r.stderr

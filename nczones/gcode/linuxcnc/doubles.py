@@ -708,14 +708,21 @@ class _Pass:
         while i < end:
             lo, hi, lines, layouts = src.piece(i)
             if layouts is not None:
-                k = i - lo
-                for layout in layouts[k:min(end, hi) - lo]:
-                    got = by_layout.get(layout)
-                    if got is None:
-                        break
-                    if got[0](got[1](lines[k])):
+                first, stop = i - lo, min(end, hi) - lo
+                last: bytes | None = None  # the last layout run, and its step (CAM lines often repeat a layout)
+                step: Any = None
+                cut: Any = None
+                for k, layout in enumerate(layouts[first:stop], first):
+                    if layout != last:
+                        got = by_layout.get(layout)
+                        if got is None:
+                            break
+                        step, cut = got
+                        last = layout
+                    if step(cut(lines[k])):
                         return -1
-                    k += 1
+                else:
+                    k = stop
                 i = k + lo
                 if i >= end or i >= hi:
                     continue
