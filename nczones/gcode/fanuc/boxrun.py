@@ -149,12 +149,18 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
 def _takes(interp: Any, runner: Any) -> tuple[bool, bool] | None:
     """Whether the runner and the interpreter are in a state both plain lanes take lines in
     (``FanucInterpreter.box_lane_modes``): (straight moves, arcs) or None."""
-    sink = interp.row_sink
-    if type(sink) is not BoxSink or runner.modal_call is not None or runner.lane is None or runner.shape_codes \
-            or (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3))) or interp.segment_count < sink.start:
+    if not _runner_takes(interp, runner):
         return None
     modes: tuple[bool, bool] | None = interp.box_lane_modes()
     return modes
+
+
+def _runner_takes(interp: Any, runner: Any) -> bool:
+    """Whether the runner and the interpreter's sink let the reader take lines (:func:`_takes`)."""
+    sink = interp.row_sink
+    return not (type(sink) is not BoxSink or runner.modal_call is not None or runner.lane is None
+                or runner.shape_codes or (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3)))
+                or interp.segment_count < sink.start)
 
 
 def _scaled(x: Any) -> int | None:
@@ -247,6 +253,8 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         return None  # (not a line's start: never asked so)
     st = _start(runner)
     if st is None:
+        if runner.state.prog is not None:  # a programmable transform is active
+            return _read_transformed(runner, text, pos, lineno)
         return _read_holes(runner, text, pos, lineno)
     lines = runner.box_keys
     if lines is None or lines.text is not text:
@@ -616,3 +624,191 @@ def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int,
     interp.pos = end
     interp.prerotation_xy_next = None
     return pos, lineno, rows.full or len(interp.emitted) >= interp.chunk_size
+
+
+def _read_transformed(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
+    """Plain lines under one G68 rotation or G51 scaling read into the run's box as
+    ``FanucInterpreter._transformed_motion`` moves them: ``(next offset, next line number, whether the chunk is
+    full)``, or None when the first line is not taken (nothing changed).
+
+    The state is the one ``FanucInterpreter.box_transform`` gives (the straight lane's but the transform: G90, metric,
+    no cycle, compensation or tool length shift, not the first move after a transform's block, no tracked ranges,
+    no mode left to note as assumed).  The program point is kept as scaled integers beside the machine point; each
+    line's words set the program point and the axes they move are mapped by
+    :class:`~nczones.gcode.fanuc.transform_points.PointMap` (both plane axes of the rotation when either is
+    named), plus the offsets, as ``_transform_target`` maps them.  An axis a line does not name keeps its program
+    and machine values: the run starts only where the machine point is the transform of the program point plus
+    the offsets (computed exactly by ``transforms.scale`` / ``rotate``), so the general path's
+    ``_unnamed_axis_moves`` finds nothing to move there.  A straight move widens the box by its end; an I/J arc in
+    the plane (``_transformed_arc``: the rotation's plane, equal scale factors on the plane's axes, ends at one
+    distance from the centre in the program) maps its end and centre and is boxed by ``centre_arc_box`` on the
+    machine integers (the rounding's spiral: the larger radius and twice the roots' difference, as the arc's
+    segment is boxed), its direction reversed by an odd count of negative factors.  A point the rotation finds
+    uncertain, an R arc, and every line :func:`_lines` would leave end the run: the general path decides them."""
+    from .transform_points import PointMap
+
+    interp = runner.state
+    if not _runner_takes(interp, runner):
+        return None
+    xf = interp.box_transform()
+    if xf is None:
+        return None
+    pm = PointMap.of(xf, SCALE)
+    st = _Run()
+    st.straight_ok = st.arc_ok = True
+    if pm is None or not _state(runner, interp, st):
+        return None
+    prog: Any = [_scaled(v) for v in interp.prog]
+    if None in prog or not _mapped_here(interp, xf):
+        return None
+    lines = runner.box_keys
+    if lines is None or lines.text is not text:
+        lines = runner.box_keys = _Lines(text)
+    first = lines.index(pos)
+    pos, lineno, index = _xlines(st, pm, prog, lines, pos, lineno, first)
+    lines.pos, lines.at = pos, index
+    if not st.taken:
+        return None
+    number = lines.last_number(first, index)
+    if number is not None:
+        runner.lane_number(number)
+    interp.prog = [Fraction(v, _UNIT) for v in prog]
+    return _hand_back(runner, interp, st, pos, lineno)
+
+
+def _mapped_here(interp: Any, xf: tuple) -> bool:
+    """Whether the machine point is the program point transformed (exactly: ``transforms``) plus the offsets."""
+    from .transforms import PointNotCertain, rotate, scale
+
+    rotation, scaling, step = xf
+    try:
+        q = rotate(rotation, list(interp.prog), step) if rotation is not None else scale(scaling, interp.prog, step)
+    except PointNotCertain:
+        return False
+    return all(q[i] + o == v for i, (o, v) in enumerate(zip(interp.off, interp.pos)))
+
+
+def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno: int,
+            i: int) -> tuple[int, int, int]:
+    """:func:`_lines` for :func:`_read_transformed`: lines read while they are taken; the next offset, line number
+    and index; the state, box and counts in ``st``, the program point in ``prog``."""
+    keys, dotless, n = lines.keys, lines.dotless, len(lines.text)
+    layouts, gvalues = st.layouts, _G
+    motion, feed, room, kinds = st.motion, st.feed, st.room, st.kinds
+    arcs = _arc_flip(pm, st.plane[0], st.plane[1])
+    taken = g_seen = last_pos = last_no = 0
+    if feed < 0:
+        return pos, lineno, i
+    while True:
+        if taken >= room or pos >= n:
+            break
+        key = keys[i]
+        end = pos + len(key)
+        got = layouts.get(key) or _miss(st, key)
+        if not got:
+            if key.strip(" \t\r"):
+                break
+            pos, lineno, i = end + 1, lineno + 1, i + 1  # a blank line: no block
+            continue
+        g, f, words, arc, _r_arc = got
+        line = dotless[i]
+        mo = motion if g is None else gvalues.get(line[g], -1)
+        fv = feed if f is None else int(line[f[0]]) * f[1]
+        if mo < 0 or (f is not None and not fv):
+            break  # another G; F 0
+        if mo < 20:
+            if words is None or (mo == 10 and fv == 0) or not _xstraight(st, pm, prog, line, words):
+                break
+        elif arc is None or arc[0] is not None or fv == 0 or arcs is None \
+                or not _xarc(st, pm, prog, line, arc, (mo == 20) != arcs):
+            break  # an R arc, a plane or factors the lane does not map, an arc the general path decides
+        kinds[mo // 10] += 1
+        motion, feed = mo, fv
+        if g is not None:
+            g_seen += 1
+        last_pos, last_no = pos, lineno
+        taken += 1
+        pos, lineno, i = end + 1, lineno + 1, i + 1
+    st.motion, st.feed, st.taken, st.g_seen = motion, feed, taken, g_seen
+    if taken:
+        st.last = (last_pos, last_no)
+    return pos, lineno, i
+
+
+def _arc_flip(pm: Any, ia: int, ib: int) -> bool | None:
+    """Whether arcs in the plane ``ia``, ``ib`` change direction under ``pm`` (an odd count of negative factors),
+    None when ``_transformed_arc`` leaves them (another plane than the rotation's, unequal factors: an ellipse)."""
+    if pm.rot is not None:
+        return False if {pm.rot.ia, pm.rot.ib} == {ia, ib} else None
+    fa, fb = (pm.factor(k) for k in (ia, ib))
+    if abs(fa) != abs(fb):
+        return None
+    return (fa < 0) != (fb < 0)
+
+
+def _xpoint(pm: Any, prog: list[int], new: dict[int, int], off: list[int]) -> dict[int, int] | None:
+    """The machine coordinates (by axis index) the program point ``prog`` with the words ``new`` moves: each
+    named axis, and both plane axes of a rotation when either is named; None when the point is uncertain."""
+    rot = pm.rot
+    out = {}
+    for k, v in new.items():
+        out[k] = pm.scaled(k, v) + off[k]
+    if rot is not None and (rot.ia in new or rot.ib in new):
+        ia, ib = rot.ia, rot.ib
+        got = pm.rotated(new.get(ia, prog[ia]), new.get(ib, prog[ib]))
+        if got is None:
+            return None
+        out[ia], out[ib] = got[0] + off[ia], got[1] + off[ib]
+    return out
+
+
+def _xstraight(st: _Run, pm: Any, prog: list[int], line: str, words: tuple) -> bool:
+    """A straight move under the transform into the program point, the position and the box (False: uncertain,
+    nothing changed)."""
+    new = {i: int(line[sl]) * m for sl, m, i in words}
+    moved = _xpoint(pm, prog, new, st.off)
+    if moved is None:
+        return False
+    p, lo, hi = st.p, st.lo, st.hi
+    for k, v in new.items():
+        prog[k] = v
+    for k, v in moved.items():
+        p[k] = v
+        if v < lo[k]:
+            lo[k] = v
+        elif v > hi[k]:
+            hi[k] = v
+    return True
+
+
+def _xarc(st: _Run, pm: Any, prog: list[int], line: str, arc: tuple, cw: bool) -> bool:
+    """An I/J arc under the transform (its machine direction ``cw``) into the program point, the position and the
+    box (:func:`_read_transformed`), False (nothing changed) when the general path must decide it."""
+    _r, _rm, ca, cb, wa, am, wb, bm, helix = arc
+    p, lo, hi, off, ia, ib = st.ctx
+    sa, sb = prog[ia], prog[ib]
+    new = {i: int(line[sl]) * m for sl, m, i in helix}
+    ea = new[ia] = int(line[wa]) * am if wa is not None else sa
+    eb = new[ib] = int(line[wb]) * bm if wb is not None else sb
+    xa = sa + int(line[ca[0]]) * ca[1] if ca is not None else sa
+    xb = sb + int(line[cb[0]]) * cb[1] if cb is not None else sb
+    r0 = (sa - xa) ** 2 + (sb - xb) ** 2
+    if r0 == 0 or r0 != (ea - xa) ** 2 + (eb - xb) ** 2:
+        return False  # a zero radius (GC304), a spiral in the program (the tolerance's test): the general path
+    moved = _xpoint(pm, prog, new, off)
+    centre = _xpoint(pm, prog, {ia: xa, ib: xb}, off)
+    if moved is None or centre is None:
+        return False
+    box = centre_arc_box(p[ia], p[ib], moved[ia], moved[ib], centre[ia], centre[ib], cw, 4 * pm.st)
+    if box is None:
+        return False
+    _widen(lo, hi, ia, ib, box)
+    for k, v in new.items():
+        prog[k] = v
+    for k, v in moved.items():
+        p[k] = v
+        if v < lo[k]:
+            lo[k] = v
+        elif v > hi[k]:
+            hi[k] = v
+    return True
