@@ -34,6 +34,7 @@ reader to the lanes and to the fast path.
 
 from __future__ import annotations
 
+import math
 import re
 from fractions import Fraction
 
@@ -691,11 +692,17 @@ def _mapped_here(interp: Any, xf: tuple) -> bool:
 def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno: int,
             i: int) -> tuple[int, int, int]:
     """:func:`_lines` for :func:`_read_transformed`: lines read while they are taken; the next offset, line number
-    and index; the state, box and counts in ``st``, the program point in ``prog``."""
+    and index; the state, box and counts in ``st``, the program point in ``prog``.  A straight move is the
+    transform's mover's (:func:`_rotation_mover`, :func:`_scaling_mover`: the map written out, per-line cost)."""
     keys, dotless, n = lines.keys, lines.dotless, len(lines.text)
     layouts, gvalues = st.layouts, _G
     motion, feed, room, kinds = st.motion, st.feed, st.room, st.kinds
     arcs = _arc_flip(pm, st.plane[0], st.plane[1])
+    if pm.rot is not None:
+        move, plans, plan_of = _rotation_mover(st, pm, prog), layouts.setdefault(("rotation", pm.ia, pm.ib), {}), \
+            _rotation_plan
+    else:
+        move, plans, plan_of = _scaling_mover(st, pm, prog), None, None
     taken = g_seen = last_pos = last_no = 0
     if feed < 0:
         return pos, lineno, i
@@ -717,7 +724,11 @@ def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno:
         if mo < 0 or (f is not None and not fv):
             break  # another G; F 0
         if mo < 20:
-            if words is None or (mo == 10 and fv == 0) or not _xstraight(st, pm, prog, line, words):
+            if words is None or (mo == 10 and fv == 0):
+                break
+            if plans is not None:
+                words = plans.get(key) or plan_of(plans, key, words, pm)
+            if not move(line, words):
                 break
         elif arc is None or arc[0] is not None or fv == 0 or arcs is None \
                 or not _xarc(st, pm, prog, line, arc, (mo == 20) != arcs):
@@ -733,6 +744,114 @@ def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno:
     if taken:
         st.last = (last_pos, last_no)
     return pos, lineno, i
+
+
+def _rotation_plan(plans: dict, key: str, words: tuple, pm: Any) -> tuple:
+    """How :func:`_rotation_mover` reads a straight layout's ``words``: ``(slice of the rotation's first axis,
+    its multiplier, the second's, its multiplier, the other axes' words)`` (a slice None: not named); kept."""
+    wa = next(((sl, m) for sl, m, k in words if k == pm.ia), (None, 0))
+    wb = next(((sl, m) for sl, m, k in words if k == pm.ib), (None, 0))
+    plan = (wa[0], wa[1], wb[0], wb[1], tuple(w for w in words if w[2] != pm.ia and w[2] != pm.ib))
+    if len(plans) < _MAX_LAYOUTS:
+        plans[key] = plan
+    return plan
+
+
+def _rotation_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
+    """``move(line, plan)``: a straight move's words (:func:`_rotation_plan`) into the program point, the machine
+    point and the box, False (nothing changed) when the rotated point is uncertain.  ``PointMap.rotated``'s steps
+    written out (the same doubles, the same test: ``test_box_transforms`` holds them to it)."""
+    from .transform_points import FLOAT_EXACT as big
+    from .transform_points import GUARD as guard
+    from .transform_points import QUOTIENT as quot
+
+    p, lo, hi, off = st.p, st.lo, st.hi, st.off
+    ia, ib, ca, cb, c, s, step, per, exact = pm.ia, pm.ib, pm.ca, pm.cb, pm.c, pm.s, pm.st, pm.per, pm.exact
+    oa, ob, floor = off[ia], off[ib], math.floor
+
+    def move(line: str, plan: tuple) -> bool:
+        wa, ma, wb, mb, others = plan
+        if wa is not None or wb is not None:
+            a = int(line[wa]) * ma if wa is not None else prog[ia]
+            b = int(line[wb]) * mb if wb is not None else prog[ib]
+            x = a - ca
+            y = b - cb
+            if -big < x < big and -big < y < big:
+                xd = float(x)
+                yd = float(y)
+                err = (abs(xd) + abs(yd)) * per
+                u = (xd * c - yd * s) / step
+                v = (xd * s + yd * c) / step
+                mu = floor(u)
+                mv = floor(v)
+                fu = u - mu
+                fv = v - mv
+                ok = abs(fu - 0.5) > err + abs(u) * quot + guard and abs(fv - 0.5) > err + abs(v) * quot + guard
+            else:
+                ok = False
+            if ok:
+                ma = ca + (mu + (fu > 0.5)) * step + oa
+                mb = cb + (mv + (fv > 0.5)) * step + ob
+            else:
+                got = exact(a, b)
+                if got is None:
+                    return False
+                ma, mb = got[0] + oa, got[1] + ob
+            prog[ia] = a
+            prog[ib] = b
+            p[ia] = ma
+            if ma < lo[ia]:
+                lo[ia] = ma
+            elif ma > hi[ia]:
+                hi[ia] = ma
+            p[ib] = mb
+            if mb < lo[ib]:
+                lo[ib] = mb
+            elif mb > hi[ib]:
+                hi[ib] = mb
+        for sl, m, k in others:
+            w = int(line[sl]) * m
+            prog[k] = w
+            _box_at(p, lo, hi, k, w + off[k])
+        return True
+
+    return move
+
+
+def _box_at(p: list[int], lo: list[int], hi: list[int], k: int, v: int) -> None:
+    """Axis ``k`` of the machine point to ``v``, the box widened to it."""
+    p[k] = v
+    if v < lo[k]:
+        lo[k] = v
+    elif v > hi[k]:
+        hi[k] = v
+
+
+def _scaling_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
+    """``move(line, words)``: a straight move's layout words into the program point, the machine point and the
+    box; ``PointMap.scaled``'s steps written out (exact integers: never uncertain)."""
+    p, lo, hi, off, step = st.p, st.lo, st.hi, st.off, pm.st
+    # (centre, c (fd - fn), 2 fd st, fd st, fn) by axis: N = c fd + fn (v - c) = fn v + c (fd - fn)
+    axes = [None if a is None else (a[0], a[0] * (a[2] - a[1]), 2 * a[3], a[3], a[1]) for a in pm.axes]
+
+    def move(line: str, words: tuple) -> bool:
+        for sl, m, k in words:
+            v = int(line[sl]) * m
+            prog[k] = v
+            ax = axes[k]
+            if ax is not None and v != ax[0]:
+                _c, base, den2, den, fn = ax
+                nv = fn * v + base
+                v = ((2 * nv + den) // den2 if nv >= 0 else -((den - 2 * nv) // den2)) * step
+            v += off[k]
+            p[k] = v
+            if v < lo[k]:
+                lo[k] = v
+            elif v > hi[k]:
+                hi[k] = v
+        return True
+
+    return move
 
 
 def _arc_flip(pm: Any, ia: int, ib: int) -> bool | None:
@@ -760,25 +879,6 @@ def _xpoint(pm: Any, prog: list[int], new: dict[int, int], off: list[int]) -> di
             return None
         out[ia], out[ib] = got[0] + off[ia], got[1] + off[ib]
     return out
-
-
-def _xstraight(st: _Run, pm: Any, prog: list[int], line: str, words: tuple) -> bool:
-    """A straight move under the transform into the program point, the position and the box (False: uncertain,
-    nothing changed)."""
-    new = {i: int(line[sl]) * m for sl, m, i in words}
-    moved = _xpoint(pm, prog, new, st.off)
-    if moved is None:
-        return False
-    p, lo, hi = st.p, st.lo, st.hi
-    for k, v in new.items():
-        prog[k] = v
-    for k, v in moved.items():
-        p[k] = v
-        if v < lo[k]:
-            lo[k] = v
-        elif v > hi[k]:
-            hi[k] = v
-    return True
 
 
 def _xarc(st: _Run, pm: Any, prog: list[int], line: str, arc: tuple, cw: bool) -> bool:

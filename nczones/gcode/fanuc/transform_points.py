@@ -166,9 +166,9 @@ class PointMap:
                 fv = v - n
                 if abs(fv - 0.5) > err + abs(v) * QUOTIENT + GUARD:
                     return self.ca + (m + (frac > 0.5)) * st, self.cb + (n + (fv > 0.5)) * st
-        return self._exact(a, b)
+        return self.exact(a, b)
 
-    def _exact(self, a: int, b: int) -> tuple[int, int] | None:
+    def exact(self, a: int, b: int) -> tuple[int, int] | None:
         """:meth:`rotated` by ``transforms.rotate`` (exact rationals)."""
         rot, unit = self.rot, self.unit
         point = [Fraction(0)] * (max(rot.ia, rot.ib) + 1)
