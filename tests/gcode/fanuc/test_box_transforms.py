@@ -277,3 +277,17 @@ def _moved(pm: PointMap, x: Fraction, y: Fraction) -> list[Fraction] | None:
     if not move(line, (slice(1, at), 10**6, slice(at + 1, len(line)), 10**6, ())):
         return None
     return [Fraction(v, _UNIT) for v in st_.p]
+
+
+def test_a_mirrored_arc_turns_the_other_way():
+    """The program's G03 from (-5, -56) about (0, -56) to (0, -51) is three quarters of a circle through
+    (0, -61), below the zone's floor (program Y -60): not ``safe``; its G02 is the quarter above: ``safe``.
+    Mirrored on X (``I-1.``) the machine arc is the mirror image, turning the other way: the same verdicts (read
+    in the program's direction, the mirrored G03 would be the quarter, ``safe``)."""
+    head = ["O1", "G90 G17 G21 G54 G00 X0. Y0. Z5.", "G01 Z-1. F300."]
+    tail = ["G01 X0. Y0.", "G50", "G00 Z5.", "M30", ""]
+    for factors in ("I-1. J1. K1.", "I1. J1. K1.5"):
+        for g, want in (("G03", "not safe"), ("G02", "safe")):
+            arc = ["G01 X-5. Y-56.", f"{g} X0. Y-51. I5. J0."]
+            verdict, taken = _agree("\n".join(head + [f"G51 X0. Y0. Z-1. {factors}"] + arc + tail))
+            assert (verdict == "safe") == (want == "safe") and taken == 2, (factors, g)
