@@ -30,6 +30,11 @@ to the interpreter (equal ends of an R arc, a half circle within the tolerance, 
 the same way.  The runner asks for a run only on the box route, in the main text outside loops and calls, when the
 text holds no ``#`` (``FanucRunner.box_reader`` / ``box_run``).  ``tests/gcode/fanuc/test_box_run.py`` holds the
 reader to the lanes and to the fast path.
+
+Under one G68 rotation or G51 scaling (:func:`_read_transformed`, issue 36) the same lines are read as
+``FanucInterpreter._transformed_motion`` moves them: the program point kept beside the machine point, each point
+mapped as ``_transform_target`` maps it (``transform_points``), I/J arcs boxed on their mapped ends and centre;
+``tests/gcode/fanuc/test_box_transforms.py`` holds it to the general path.
 """
 
 from __future__ import annotations
@@ -698,11 +703,13 @@ def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno:
     layouts, gvalues = st.layouts, _G
     motion, feed, room, kinds = st.motion, st.feed, st.room, st.kinds
     arcs = _arc_flip(pm, st.plane[0], st.plane[1])
+    plans: Any = None
+    plan_of: Any = _rotation_plan
     if pm.rot is not None:
-        move, plans, plan_of = _rotation_mover(st, pm, prog), layouts.setdefault(("rotation", pm.ia, pm.ib), {}), \
-            _rotation_plan
+        move = _rotation_mover(st, pm, prog)
+        plans = layouts.setdefault(("rotation", pm.ia, pm.ib), {})  # type: ignore[call-overload]  # (a tuple key)
     else:
-        move, plans, plan_of = _scaling_mover(st, pm, prog), None, None
+        move = _scaling_mover(st, pm, prog)
     taken = g_seen = last_pos = last_no = 0
     if feed < 0:
         return pos, lineno, i
@@ -859,7 +866,8 @@ def _arc_flip(pm: Any, ia: int, ib: int) -> bool | None:
     None when ``_transformed_arc`` leaves them (another plane than the rotation's, unequal factors: an ellipse)."""
     if pm.rot is not None:
         return False if {pm.rot.ia, pm.rot.ib} == {ia, ib} else None
-    fa, fb = (pm.factor(k) for k in (ia, ib))
+    fa: Fraction = pm.factor(ia)
+    fb: Fraction = pm.factor(ib)
     if abs(fa) != abs(fb):
         return None
     return (fa < 0) != (fb < 0)
