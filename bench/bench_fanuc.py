@@ -188,14 +188,16 @@ def rotated_program(n: int, seed: int = 14, dialect: str = "fanuc") -> str:
 
 
 def scaled_program(n: int, seed: int = 17, dialect: str = "fanuc", factors: str = "P1.25") -> str:
-    """About ``n`` lines of CAM moves under Fanuc scaling ``G51 X0. Y0. Z0. P1.25`` (``factors`` may give
+    """About ``n`` lines of CAM moves under Fanuc scaling ``G51 X0. Y0. Z-1. P1.25`` (``factors`` may give
     ``I.. J.. K..`` instead; a point off the grid is rounded to the increment), or with ``dialect="linuxcnc"``
     rs274's peer: the same program unscaled, its numbers scaled beforehand (LinuxCNC has no G51)."""
     rnd = random.Random(seed)
     fanuc = dialect == "fanuc"
     if fanuc:
+        # the centre's Z at the tool's (Z-1.): a Z the lines do not name then stays (G51 moving an axis a block does
+        # not name is unknown, ``FanucInterpreter._unnamed_axis_moves``)
         head = ["%", "O1000 (SCALED)", "G00 G17 G40 G49 G80 G90 G21", "G54 G00 X0. Y0.", "G43 H1 Z25.",
-                "G01 Z-1. F800.", f"G51 X0. Y0. Z0. {factors}"]
+                "G01 Z-1. F800.", f"G51 X0. Y0. Z-1. {factors}"]
         tail = ["G50", "G00 X0. Y0.", "M30", "%"]
     else:
         head = ["G17 G40 G49 G80 G90 G21", "G54 G0 X0 Y0", "G43 H1 Z25", "G1 Z-1 F800"]

@@ -319,18 +319,20 @@ def _fanuc_call() -> Any:
 
 @functools.cache
 def _fanuc_transforms() -> Any:
-    """A G68 rotation or a G51 scaling: its lines are the vectorized fast path's
-    (``gcode/fanuc/transform_columns.py``), about 100x a line on the box route's general path."""
+    """A G68 rotation or a G51 scaling, and the codes under which the box route's reader leaves their lines to the
+    general path (G20 inch input, G91 incremental input: ``boxrun._read_transformed``) while the vectorized fast
+    path takes them (a 10,000-line G20 program under G68: 3.3 s on the route against 0.25 s)."""
     import re
 
-    return re.compile(r"G[ \t]*0*(?:68|51)(?![\d.])")
+    return re.compile(r"G[ \t]*0*(?:68|51)(?![\d.])"), re.compile(r"G[ \t]*0*20(?![\d.])"), \
+        re.compile(r"G[ \t]*0*91(?![\d.])")
 
 
 def _fanuc_boxes_first(text: str | FileText) -> bool:
     r"""Whether a Fanuc program tries the box route first: fewer than :data:`FAST_PATH_MIN_LINES` lines (any
-    program), or a plain one of up to :data:`FANUC_BOX_LINES` without a G68 rotation or a G51 scaling (whose lines
-    the fast path takes; its runs of plain lines and of hole lines are read into boxes from the text:
-    ``fanuc.boxrun``).  Soundness does not rest on this test: the route proves or declines (then today's path decides as
+    program), or a plain one of up to :data:`FANUC_BOX_LINES` (its runs of plain lines, of hole lines and of plain
+    lines under one G68 rotation or G51 scaling are read into boxes from the text: ``fanuc.boxrun``) but one with
+    G68 or G51 and G20 or G91 (:func:`_fanuc_transforms`: the fast path's).  Soundness does not rest on this test: the route proves or declines (then today's path decides as
     if it had not run).
 
     >>> _fanuc_boxes_first("G1 X1. F100.\n" * 600), _fanuc_boxes_first("M98 P10\n" + "G1 X1. F100.\n" * 600)
@@ -338,7 +340,9 @@ def _fanuc_boxes_first(text: str | FileText) -> bool:
     >>> _fanuc_boxes_first("G81 X1. Z-1. R1. F100.\n" + "X1.\n" * 600), _fanuc_boxes_first("G81 X1.\n" * 9)
     (True, True)
     >>> _fanuc_boxes_first("G68 X0 Y0 R30.\n" + "X1.\n" * 600), _fanuc_boxes_first("G51.1 X0\n" + "X1.\n" * 600)
-    (False, True)
+    (True, True)
+    >>> _fanuc_boxes_first("G20\nG68 X0 Y0 R30.\n" + "X1.\n" * 600), _fanuc_boxes_first("G51 P2.\nG91\n" + "X1.\n" * 600)
+    (False, False)
     >>> _fanuc_boxes_first("G1 X1. F100.\n" * (FANUC_BOX_LINES + 1))
     False
     """
@@ -353,11 +357,12 @@ def _fanuc_boxes_first(text: str | FileText) -> bool:
         return bool(last[1])
     pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
     m98, g65 = _fanuc_call()
-    turns = _fanuc_transforms()
+    turns, inch, incremental = _fanuc_transforms()
     got = True
     for p in pieces:
         up = p.upper()
-        if m98.search(up) is not None or g65.search(up) is not None or turns.search(up) is not None:
+        if m98.search(up) is not None or g65.search(up) is not None or (
+                turns.search(up) is not None and (inch.search(up) is not None or incremental.search(up) is not None)):
             got = False
             break
     _BOXES_FIRST = (text, got)  # one tuple: a thread reads a text and its own answer

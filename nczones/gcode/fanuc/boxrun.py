@@ -30,10 +30,16 @@ to the interpreter (equal ends of an R arc, a half circle within the tolerance, 
 the same way.  The runner asks for a run only on the box route, in the main text outside loops and calls, when the
 text holds no ``#`` (``FanucRunner.box_reader`` / ``box_run``).  ``tests/gcode/fanuc/test_box_run.py`` holds the
 reader to the lanes and to the fast path.
+
+Under one G68 rotation or G51 scaling (:func:`_read_transformed`, issue 36) the same lines are read as
+``FanucInterpreter._transformed_motion`` moves them: the program point kept beside the machine point, each point
+mapped as ``_transform_target`` maps it (``transform_points``), I/J arcs boxed on their mapped ends and centre;
+``tests/gcode/fanuc/test_box_transforms.py`` holds it to the general path.
 """
 
 from __future__ import annotations
 
+import math
 import re
 from fractions import Fraction
 
@@ -149,12 +155,18 @@ def _layout(key: str, index: dict[str, int], digits: int, plane: tuple[int, int,
 def _takes(interp: Any, runner: Any) -> tuple[bool, bool] | None:
     """Whether the runner and the interpreter are in a state both plain lanes take lines in
     (``FanucInterpreter.box_lane_modes``): (straight moves, arcs) or None."""
-    sink = interp.row_sink
-    if type(sink) is not BoxSink or runner.modal_call is not None or runner.lane is None or runner.shape_codes \
-            or (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3))) or interp.segment_count < sink.start:
+    if not _runner_takes(interp, runner):
         return None
     modes: tuple[bool, bool] | None = interp.box_lane_modes()
     return modes
+
+
+def _runner_takes(interp: Any, runner: Any) -> bool:
+    """Whether the runner and the interpreter's sink let the reader take lines (:func:`_takes`)."""
+    sink = interp.row_sink
+    return not (type(sink) is not BoxSink or runner.modal_call is not None or runner.lane is None
+                or runner.shape_codes or (runner.custom_g and not runner.custom_g.isdisjoint((0, 1, 2, 3)))
+                or interp.segment_count < sink.start)
 
 
 def _scaled(x: Any) -> int | None:
@@ -247,6 +259,8 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         return None  # (not a line's start: never asked so)
     st = _start(runner)
     if st is None:
+        if runner.state.prog is not None:  # a programmable transform is active
+            return _read_transformed(runner, text, pos, lineno)
         return _read_holes(runner, text, pos, lineno)
     lines = runner.box_keys
     if lines is None or lines.text is not text:
@@ -616,3 +630,293 @@ def _hand_back(runner: Any, interp: Any, st: _Run, pos: int, lineno: int,
     interp.pos = end
     interp.prerotation_xy_next = None
     return pos, lineno, rows.full or len(interp.emitted) >= interp.chunk_size
+
+
+def _read_transformed(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
+    """Plain lines under one G68 rotation or G51 scaling read into the run's box as
+    ``FanucInterpreter._transformed_motion`` moves them: ``(next offset, next line number, whether the chunk is
+    full)``, or None when the first line is not taken (nothing changed).
+
+    The state is the one ``FanucInterpreter.box_transform`` gives (the straight lane's but the transform: G90, metric,
+    no cycle, compensation or tool length shift, not the first move after a transform's block, no tracked ranges,
+    no mode left to note as assumed).  The program point is kept as scaled integers beside the machine point; each
+    line's words set the program point and the axes they move are mapped by
+    :class:`~nczones.gcode.fanuc.transform_points.PointMap` (both plane axes of the rotation when either is
+    named), plus the offsets, as ``_transform_target`` maps them.  An axis a line does not name keeps its program
+    and machine values: the run starts only where the machine point is the transform of the program point plus
+    the offsets (computed exactly by ``transforms.scale`` / ``rotate``), so the general path's
+    ``_unnamed_axis_moves`` finds nothing to move there.  A straight move widens the box by its end; an I/J arc in
+    the plane (``_transformed_arc``: the rotation's plane, equal scale factors on the plane's axes, ends at one
+    distance from the centre in the program) maps its end and centre and is boxed by ``centre_arc_box`` on the
+    machine integers (the rounding's spiral: the larger radius and twice the roots' difference, as the arc's
+    segment is boxed), its direction reversed by an odd count of negative factors.  A point the rotation finds
+    uncertain, an R arc, and every line :func:`_lines` would leave end the run: the general path decides them."""
+    from .transform_points import PointMap
+
+    interp = runner.state
+    if not _runner_takes(interp, runner):
+        return None
+    xf = interp.box_transform()
+    if xf is None:
+        return None
+    pm = PointMap.of(xf, SCALE)
+    st = _Run()
+    st.straight_ok = st.arc_ok = True
+    if pm is None or not _state(runner, interp, st):
+        return None
+    prog: Any = [_scaled(v) for v in interp.prog]
+    if None in prog or not _mapped_here(interp, xf):
+        return None
+    lines = runner.box_keys
+    if lines is None or lines.text is not text:
+        lines = runner.box_keys = _Lines(text)
+    first = lines.index(pos)
+    pos, lineno, index = _xlines(st, pm, prog, lines, pos, lineno, first)
+    lines.pos, lines.at = pos, index
+    if not st.taken:
+        return None
+    number = lines.last_number(first, index)
+    if number is not None:
+        runner.lane_number(number)
+    interp.prog = [Fraction(v, _UNIT) for v in prog]
+    return _hand_back(runner, interp, st, pos, lineno)
+
+
+def _mapped_here(interp: Any, xf: tuple) -> bool:
+    """Whether the machine point is the program point transformed (exactly: ``transforms``) plus the offsets."""
+    from .transforms import PointNotCertain, rotate, scale
+
+    rotation, scaling, step = xf
+    try:
+        q = rotate(rotation, list(interp.prog), step) if rotation is not None else scale(scaling, interp.prog, step)
+    except PointNotCertain:
+        return False
+    return all(q[i] + o == v for i, (o, v) in enumerate(zip(interp.off, interp.pos)))
+
+
+def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno: int,
+            i: int) -> tuple[int, int, int]:
+    """:func:`_lines` for :func:`_read_transformed`: lines read while they are taken; the next offset, line number
+    and index; the state, box and counts in ``st``, the program point in ``prog``.  A straight move is the
+    transform's mover's (:func:`_rotation_mover`, :func:`_scaling_mover`: the map written out, per-line cost)."""
+    keys, dotless, n = lines.keys, lines.dotless, len(lines.text)
+    layouts, gvalues = st.layouts, _G
+    motion, feed, room, kinds = st.motion, st.feed, st.room, st.kinds
+    arcs = _arc_flip(pm, st.plane[0], st.plane[1])
+    plans: Any = None
+    plan_of: Any = _rotation_plan
+    if pm.rot is not None:
+        move = _rotation_mover(st, pm, prog)
+        plans = layouts.setdefault(("rotation", pm.ia, pm.ib), {})  # type: ignore[call-overload]  # (a tuple key)
+    else:
+        move = _scaling_mover(st, pm, prog)
+    taken = g_seen = last_pos = last_no = 0
+    if feed < 0:
+        return pos, lineno, i
+    while True:
+        if taken >= room or pos >= n:
+            break
+        key = keys[i]
+        end = pos + len(key)
+        got = layouts.get(key) or _miss(st, key)
+        if not got:
+            if key.strip(" \t\r"):
+                break
+            pos, lineno, i = end + 1, lineno + 1, i + 1  # a blank line: no block
+            continue
+        g, f, words, arc, _r_arc = got
+        line = dotless[i]
+        mo = motion if g is None else gvalues.get(line[g], -1)
+        fv = feed if f is None else int(line[f[0]]) * f[1]
+        if mo < 0 or (f is not None and not fv):
+            break  # another G; F 0
+        if mo < 20:
+            if words is None or (mo == 10 and fv == 0):
+                break
+            if plans is not None:
+                words = plans.get(key) or plan_of(plans, key, words, pm)
+            if not move(line, words):
+                break
+        elif arc is None or arc[0] is not None or fv == 0 or arcs is None \
+                or not _xarc(st, pm, prog, line, arc, (mo == 20) != arcs):
+            break  # an R arc, a plane or factors the lane does not map, an arc the general path decides
+        kinds[mo // 10] += 1
+        motion, feed = mo, fv
+        if g is not None:
+            g_seen += 1
+        last_pos, last_no = pos, lineno
+        taken += 1
+        pos, lineno, i = end + 1, lineno + 1, i + 1
+    st.motion, st.feed, st.taken, st.g_seen = motion, feed, taken, g_seen
+    if taken:
+        st.last = (last_pos, last_no)
+    return pos, lineno, i
+
+
+def _rotation_plan(plans: dict, key: str, words: tuple, pm: Any) -> tuple:
+    """How :func:`_rotation_mover` reads a straight layout's ``words``: ``(slice of the rotation's first axis,
+    its multiplier, the second's, its multiplier, the other axes' words)`` (a slice None: not named); kept."""
+    wa = next(((sl, m) for sl, m, k in words if k == pm.ia), (None, 0))
+    wb = next(((sl, m) for sl, m, k in words if k == pm.ib), (None, 0))
+    plan = (wa[0], wa[1], wb[0], wb[1], tuple(w for w in words if w[2] != pm.ia and w[2] != pm.ib))
+    if len(plans) < _MAX_LAYOUTS:
+        plans[key] = plan
+    return plan
+
+
+def _rotation_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
+    """``move(line, plan)``: a straight move's words (:func:`_rotation_plan`) into the program point, the machine
+    point and the box, False (nothing changed) when the rotated point is uncertain.  ``PointMap.rotated``'s steps
+    written out (the same doubles, the same test: ``test_box_transforms`` holds them to it)."""
+    from .transform_points import FLOAT_EXACT as big
+    from .transform_points import GUARD as guard
+    from .transform_points import QUOTIENT as quot
+
+    p, lo, hi, off = st.p, st.lo, st.hi, st.off
+    ia, ib, ca, cb, c, s, step, per, exact = pm.ia, pm.ib, pm.ca, pm.cb, pm.c, pm.s, pm.st, pm.per, pm.exact
+    oa, ob, floor = off[ia], off[ib], math.floor
+
+    def move(line: str, plan: tuple) -> bool:
+        wa, ma, wb, mb, others = plan
+        if wa is not None or wb is not None:
+            a = int(line[wa]) * ma if wa is not None else prog[ia]
+            b = int(line[wb]) * mb if wb is not None else prog[ib]
+            x = a - ca
+            y = b - cb
+            if -big < x < big and -big < y < big:
+                xd = float(x)
+                yd = float(y)
+                err = (abs(xd) + abs(yd)) * per
+                u = (xd * c - yd * s) / step
+                v = (xd * s + yd * c) / step
+                mu = floor(u)
+                mv = floor(v)
+                fu = u - mu
+                fv = v - mv
+                ok = abs(fu - 0.5) > err + abs(u) * quot + guard and abs(fv - 0.5) > err + abs(v) * quot + guard
+            else:
+                ok = False
+            if ok:
+                ma = ca + (mu + (fu > 0.5)) * step + oa
+                mb = cb + (mv + (fv > 0.5)) * step + ob
+            else:
+                got = exact(a, b)
+                if got is None:
+                    return False
+                ma, mb = got[0] + oa, got[1] + ob
+            prog[ia] = a
+            prog[ib] = b
+            p[ia] = ma
+            if ma < lo[ia]:
+                lo[ia] = ma
+            elif ma > hi[ia]:
+                hi[ia] = ma
+            p[ib] = mb
+            if mb < lo[ib]:
+                lo[ib] = mb
+            elif mb > hi[ib]:
+                hi[ib] = mb
+        for sl, m, k in others:
+            w = int(line[sl]) * m
+            prog[k] = w
+            _box_at(p, lo, hi, k, w + off[k])
+        return True
+
+    return move
+
+
+def _box_at(p: list[int], lo: list[int], hi: list[int], k: int, v: int) -> None:
+    """Axis ``k`` of the machine point to ``v``, the box widened to it."""
+    p[k] = v
+    if v < lo[k]:
+        lo[k] = v
+    elif v > hi[k]:
+        hi[k] = v
+
+
+def _scaling_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
+    """``move(line, words)``: a straight move's layout words into the program point, the machine point and the
+    box; ``PointMap.scaled``'s steps written out (exact integers: never uncertain)."""
+    p, lo, hi, off, step = st.p, st.lo, st.hi, st.off, pm.st
+    # (centre, c (fd - fn), 2 fd st, fd st, fn) by axis: N = c fd + fn (v - c) = fn v + c (fd - fn)
+    axes = [None if a is None else (a[0], a[0] * (a[2] - a[1]), 2 * a[3], a[3], a[1]) for a in pm.axes]
+
+    def move(line: str, words: tuple) -> bool:
+        for sl, m, k in words:
+            v = int(line[sl]) * m
+            prog[k] = v
+            ax = axes[k]
+            if ax is not None and v != ax[0]:
+                _c, base, den2, den, fn = ax
+                nv = fn * v + base
+                v = ((2 * nv + den) // den2 if nv >= 0 else -((den - 2 * nv) // den2)) * step
+            v += off[k]
+            p[k] = v
+            if v < lo[k]:
+                lo[k] = v
+            elif v > hi[k]:
+                hi[k] = v
+        return True
+
+    return move
+
+
+def _arc_flip(pm: Any, ia: int, ib: int) -> bool | None:
+    """Whether arcs in the plane ``ia``, ``ib`` change direction under ``pm`` (an odd count of negative factors),
+    None when ``_transformed_arc`` leaves them (another plane than the rotation's, unequal factors: an ellipse)."""
+    if pm.rot is not None:
+        return False if {pm.rot.ia, pm.rot.ib} == {ia, ib} else None
+    fa: Fraction = pm.factor(ia)
+    fb: Fraction = pm.factor(ib)
+    if abs(fa) != abs(fb):
+        return None
+    return (fa < 0) != (fb < 0)
+
+
+def _xpoint(pm: Any, prog: list[int], new: dict[int, int], off: list[int]) -> dict[int, int] | None:
+    """The machine coordinates (by axis index) the program point ``prog`` with the words ``new`` moves: each
+    named axis, and both plane axes of a rotation when either is named; None when the point is uncertain."""
+    rot = pm.rot
+    out = {}
+    for k, v in new.items():
+        out[k] = pm.scaled(k, v) + off[k]
+    if rot is not None and (rot.ia in new or rot.ib in new):
+        ia, ib = rot.ia, rot.ib
+        got = pm.rotated(new.get(ia, prog[ia]), new.get(ib, prog[ib]))
+        if got is None:
+            return None
+        out[ia], out[ib] = got[0] + off[ia], got[1] + off[ib]
+    return out
+
+
+def _xarc(st: _Run, pm: Any, prog: list[int], line: str, arc: tuple, cw: bool) -> bool:
+    """An I/J arc under the transform (its machine direction ``cw``) into the program point, the position and the
+    box (:func:`_read_transformed`), False (nothing changed) when the general path must decide it."""
+    _r, _rm, ca, cb, wa, am, wb, bm, helix = arc
+    p, lo, hi, off, ia, ib = st.ctx
+    sa, sb = prog[ia], prog[ib]
+    new = {i: int(line[sl]) * m for sl, m, i in helix}
+    ea = new[ia] = int(line[wa]) * am if wa is not None else sa
+    eb = new[ib] = int(line[wb]) * bm if wb is not None else sb
+    xa = sa + int(line[ca[0]]) * ca[1] if ca is not None else sa
+    xb = sb + int(line[cb[0]]) * cb[1] if cb is not None else sb
+    r0 = (sa - xa) ** 2 + (sb - xb) ** 2
+    if r0 == 0 or r0 != (ea - xa) ** 2 + (eb - xb) ** 2:
+        return False  # a zero radius (GC304), a spiral in the program (the tolerance's test): the general path
+    moved = _xpoint(pm, prog, new, off)
+    centre = _xpoint(pm, prog, {ia: xa, ib: xb}, off)
+    if moved is None or centre is None:
+        return False
+    box = centre_arc_box(p[ia], p[ib], moved[ia], moved[ib], centre[ia], centre[ib], cw, 4 * pm.st)
+    if box is None:
+        return False
+    _widen(lo, hi, ia, ib, box)
+    for k, v in new.items():
+        prog[k] = v
+    for k, v in moved.items():
+        p[k] = v
+        if v < lo[k]:
+            lo[k] = v
+        elif v > hi[k]:
+            hi[k] = v
+    return True

@@ -317,12 +317,16 @@ class FanucInterpreter(Interpreter):
         increment and the offsets), None when none is active or the lane does not mirror it: a mirror image,
         polar coordinates, two transforms, the first move after a transform's block (which must be absolute),
         tracked parameter ranges."""
-        if self.prog is None or self.mirroring is not None or self.polar is not None or self._first_after_transform \
-                or self.track or self.centre_deps:
+        if not self._one_transform():
             return None
         from .transform_columns import column_transform
 
         return column_transform(self.rotation, self.scaling, self._grid_step(), tuple(self.off))
+
+    def _one_transform(self) -> bool:
+        """:meth:`column_transform`'s tests of the state (one G68 or G51 is then active: the lanes look)."""
+        return not (self.prog is None or self.mirroring is not None or self.polar is not None
+                    or self._first_after_transform or self.track or self.centre_deps)
 
     @property
     def modal_flags(self) -> dict[int, bool]:
@@ -526,14 +530,33 @@ class FanucInterpreter(Interpreter):
         """Whether the state is one :meth:`lane` and :meth:`_arc_lane` both take a plain block in (their tests but
         for the block's own words; ``nczones.gcode.fanuc.boxrun`` reads runs of lines in it): (a straight move
         would take the one-call lane: no mode left to note as assumed; an arc would take the arc lane), or None."""
-        if self.ended or self.m73_saved or self.track or self.machine_at is not None or self.unsupported \
-                or self.prerotation_xy is not None or self.spline_state is not None or self.comp_on \
-                or self.comp_just_off or self.cycle is not None or self._tlo_shift is not None or self.after_home \
-                or self.prog is not None or self._tlo_untaken or self.inch or not self.absolute \
-                or self.feed_mode != 94 or not self.fused_lane or self._first_after_transform or self.arc_absolute:
+        if self.prog is not None or not self._box_state_ok():
             return None
         unset = self.unset
         return not unset or self._noted_straight, not unset or unset.isdisjoint(_ARC_ASSUMED)
+
+    def _box_state_ok(self) -> bool:
+        """:meth:`box_lane_modes`' tests of the state but the transform's."""
+        return not (self.ended or self.m73_saved or self.track or self.machine_at is not None or self.unsupported
+                    or self.prerotation_xy is not None or self.spline_state is not None or self.comp_on
+                    or self.comp_just_off or self.cycle is not None or self._tlo_shift is not None or self.after_home
+                    or self._tlo_untaken or self.inch or not self.absolute or self.feed_mode != 94
+                    or not self.fused_lane or self._first_after_transform or self.arc_absolute)
+
+    def box_transform(self) -> Any:
+        """``(rotation, scaling, increment)``: the one transform (a G68 rotation or a G51 scaling, the other None;
+        :meth:`column_transform`'s, without importing numpy) under which ``nczones.gcode.fanuc.boxrun`` reads plain
+        lines as :meth:`_transformed_motion` moves them, when the state is one it mirrors: :meth:`box_lane_modes`'
+        tests but the transform's, and no mode of a transformed move left to note as assumed (the first move after
+        the transform's block noted them); else None."""
+        if self.prog is None or not self._box_state_ok():
+            return None
+        unset = self.unset
+        if unset and any(g in unset and g not in self.assumed for g in ("units", "distance", "offset")):
+            return None
+        if not self._one_transform() or (self.rotation is None) == (self.scaling is None):
+            return None
+        return self.rotation, self.scaling, self._grid_step()
 
     def _lean(self, g: int | None, m: int | None, f: Any, extra: int, s: Any = None) -> bool:
         if self.cycle is not None or self._tlo_shift is not None or self.after_home or self.prog is not None \

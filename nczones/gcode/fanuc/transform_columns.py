@@ -28,7 +28,9 @@ declines), so ``x``, ``y``, ``st`` and ``|x| + |y|`` are exact doubles; ``eps = 
 with ``|c|, |s| <= 1`` (their enclosures are far narrower than ``eps``).  The general path
 (``transforms._coordinate``) takes the interval ``[L, H]`` of ``U = (x c' - y s') / st`` over ``c'``, ``s'`` in
 the enclosures and rounds to the integer ``k`` with no tie ``j + 1/2`` in ``[L - g, H + g]`` (``g =
-TIE_GUARD``), else raises.  The screen computes ``q = fl(fl(fl(x c) - fl(y s)) / st)`` and accepts ``k =
+TIE_GUARD``), else raises.  The screen (its margins ``GUARD``, ``ROUNDING``, ``QUOTIENT`` are in
+:mod:`~nczones.gcode.fanuc.transform_points`, whose ``PointMap.rotated`` is the same screen a point at a
+time) computes ``q = fl(fl(fl(x c) - fl(y s)) / st)`` and accepts ``k =
 floor(q) + (frac > 1/2)`` when ``|frac - 1/2| > err + |q| 2**-50 + G`` (all in doubles).  The terms:
 
 1. *Enclosure*: ``|U - (x c - y s) / st| <= (|x| + |y|) far / st`` for every ``U`` in ``[L, H]``, ``far`` the
@@ -69,13 +71,19 @@ to the general path alone.
 
 from __future__ import annotations
 
-import math
 from fractions import Fraction
 
 import numpy as np
 
 from ...precompiled import dataclass  # start-up: no dataclasses import
-from .transforms import TIE_GUARD, PointNotCertain, Rotation, Scaling, cos_sin_enclosure, rotate
+
+# the screen's numbers, shared with the box route (transform_points)
+from .transform_points import FLOAT_EXACT as _FLOAT_EXACT
+from .transform_points import GUARD as _GUARD
+from .transform_points import QUOTIENT as _QUOTIENT
+from .transform_points import ROUNDING as _ROUNDING
+from .transform_points import rotation_doubles as _doubles
+from .transforms import PointNotCertain, Rotation, Scaling, rotate
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -84,16 +92,11 @@ if TYPE_CHECKING:
 
 __all__ = ["ColumnTransform", "column_transform"]
 
-#: Magnitudes (scaled integers) the rotation's doubles and the scaling's products stay below.
-_FLOAT_EXACT = 2**50
+#: Magnitudes (scaled integers) the scaling's products stay below (the rotation's: ``transform_points``).
 _INT_LIMIT = 2**61
 #: The magnitude a program coordinate plus a centre, and a machine coordinate (with its offset), stay below
 #: (``int64`` holds ``2**63``: no sum of two such ever wraps; the fast path's own state bound is ``2**59``).
 _OUT_LIMIT = 2**60
-#: The float screen's margins: the tie guard in increments (rounded up), and slack for its own evaluation.
-_GUARD = float(TIE_GUARD) * (1 + 2**-20) + 2**-40
-_ROUNDING = 2.0**-51
-_QUOTIENT = 2.0**-50
 
 
 @dataclass(frozen=True, slots=True)
@@ -231,25 +234,6 @@ def _nearest(u: np.ndarray, err: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     frac = u - m  # exact: |u| < 2**50
     ok = np.abs(frac - 0.5) > err + np.abs(u) * _QUOTIENT + _GUARD
     return (m + (frac > 0.5)).astype(np.int64), ok
-
-
-_DOUBLES: dict[Fraction, tuple[float, float, float]] = {}
-
-
-def _doubles(angle: Fraction) -> tuple[float, float, float]:
-    """``(c, s, delta)``: the doubles nearest the midpoints of the enclosures of ``cos`` and ``sin`` of ``angle``
-    degrees, and a bound (rounded up) on their distance from every point of those enclosures."""
-    got = _DOUBLES.get(angle)
-    if got is None:
-        (c_lo, c_hi), (s_lo, s_hi) = cos_sin_enclosure(angle)
-        c, s = float((c_lo + c_hi) / 2), float((s_lo + s_hi) / 2)
-        far = max(abs(Fraction(c) - c_lo), abs(Fraction(c) - c_hi), abs(Fraction(s) - s_lo),
-                  abs(Fraction(s) - s_hi))
-        delta = math.nextafter(float(far), math.inf) * (1 + 2**-40)
-        got = _DOUBLES[angle] = (c, s, delta)
-        if len(_DOUBLES) > 256:
-            _DOUBLES.clear()
-    return got
 
 
 def arc_centres(xf: ColumnTransform, pstart: np.ndarray, ca: np.ndarray, cb: np.ndarray, ia: int, ib: int,
