@@ -14,8 +14,9 @@ long runs of plain moves the vectorized fast path takes):
 * ``#4113`` after an ``M`` alone on a line inside a transformed run.
 
 The oracles are hunt41's (:func:`~tests.contract.fanuc_seams41.lanes_agree`, ``verdicts_agree``,
-``reference_agrees``), and :func:`offsets_agree`: the zones and the work offsets (G54, G55) moved together by one
-vector keep the verdict (with every route as routed, so each lane meets its own translation).
+``reference_agrees``), and :func:`offsets_agree`: the zones, the work offsets and the reference positions moved
+together by one vector keep the verdict and the violating lines (with every route as routed, so each lane meets its
+own translation), and ``safe`` with a margin of 0.5 is ``safe`` with none.
 """
 
 from __future__ import annotations
@@ -212,7 +213,20 @@ def offsets_agree(text: str, shift: tuple[int, int, int], face: tuple[int, int, 
             f"{b.violations[:1]}\nprogram:\n{text}\nzones:{zones}")
     assert a.verdict == b.verdict, case
     assert [v.line for v in a.violations] == [v.line for v in b.violations], case
+    margin = _with_margin(text, base)
+    if not isinstance(margin, Exception) and margin.verdict.name == "SAFE":
+        assert a.verdict.name == "SAFE", f"oracle 4: safe with margin 0.5, {a.verdict.name} with 0\n{case}"
     return a.verdict.name
+
+
+def _with_margin(text: str, machine):
+    from nczones.errors import NczonesError
+    from nczones.prover import verify_text
+
+    try:
+        return verify_text(text, machine, file="t.nc", margin="0.5")
+    except NczonesError as exc:
+        return exc
 
 
 def _moved(toml: str, shift: tuple[int, int, int]) -> str:

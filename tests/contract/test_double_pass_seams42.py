@@ -50,7 +50,7 @@ def _t(v: Fraction) -> str:
 def _circle(draw, scale: int = 1) -> tuple[Fraction, tuple, tuple]:
     """(a radius, the start's and the end's unit vectors from the centre): rational points of one circle."""
     u0, u1 = draw(st.sampled_from(_UNITS)), draw(st.sampled_from(_UNITS))
-    r = Fraction(draw(st.integers(20, 300)), 10 * scale) * math.lcm(*(c.denominator for c in u0 + u1))
+    r = Fraction(draw(st.integers(5, 300)), 10 * scale) * math.lcm(*(c.denominator for c in u0 + u1))
     return r, u0, u1
 
 

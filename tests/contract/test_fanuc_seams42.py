@@ -39,6 +39,15 @@ def check(data) -> None:
     event("reference: " + reference_agrees(program(parts, reads=False), dpi).split(":")[0])
 
 
+def test_h1_the_reference_declines_a_cycle_under_a_rotation():
+    """H1 (hunt42, the harness's): the reference reader read a hole under ``G68 ... R30.`` unrotated (its moves
+    refuse all but quarter turns; its cycles did not ask) where nczones rotates it; it now declines."""
+    text = ("O0001\nG17 G40 G80 G20 G90 G55 F300.\nG00 Z0.8\nG68 X-0.1216 Y30 R30.\nM03\n"
+            "G84 X0.0138 Y0.0383 Z-1.781 R0.0403 P0 F247.\nG80\nG69\nM30\n")
+    assert reference_agrees(text).startswith("skip"), text
+    assert lanes_agree(text, mill()).startswith("complete")
+
+
 @settings(max_examples=CI_EXAMPLES, derandomize=True, **_SETTINGS)
 @given(st.data())
 def test_fanuc_seams42_agree_with_the_general_path(data):
