@@ -9,6 +9,7 @@ long runs of plain moves the vectorized fast path takes):
   with an axis the block does not name (the interpreter's ``unknown``), or ``G51.1`` (a mirror image), then a
   body of hunt41's statements and arcs (I/J or R, G02/G03, in G90 or G91), a long run of plain moves and arcs
   (the column lane, ``transform_columns.py``), then G69/G50 (or G50.1) - before, inside or after the run;
+* now and then that run repeated 7 times (past ``FAST_PATH_MIN_LINES``: verify's vectorized path);
 * a cycle started under a transform whose hole lines go on after ``G69``/``G50`` (``transform_just_cancelled``:
   the box route's hole reader and the fast path's hole template);
 * ``#4113`` after an ``M`` alone on a line inside a transformed run.
@@ -114,12 +115,18 @@ def _transformed_run(d: _Draw, cancel: str) -> list[str]:
     d.in_run = True
     where = draw(st.integers(0, 3))
     run: list[str] = [cancel, *absolute(d)] if where == 0 else []
-    n = draw(st.integers(62, 90))
-    for k in range(n):
-        if k == n // 2 and where == 1:
-            run += [cancel, *absolute(d)]
+    core: list[str] = []
+    for _ in range(draw(st.integers(62, 90))):
         pick = draw(st.integers(0, 9))
-        run += arc(d) if pick == 0 and d.incremental else s41._run_line(d)
+        core += arc(d) if pick == 0 and d.incremental else s41._run_line(d)
+    if draw(st.integers(0, 7)) == 0:  # repeated past FAST_PATH_MIN_LINES: verify's vectorized path
+        core *= 7
+    if where == 1:
+        half = len(core) // 2
+        back = ["G91"] if d.incremental else []  # the core after it was drawn in the mode it had
+        core[half:half] = [cancel, *absolute(d), *back]
+        d.incremental = bool(back) or d.incremental
+    run += core
     d.in_run = False
     if draw(st.integers(0, 2)) == 0 and not d.plain:
         run += ["M04", "#7 = #4113", "G01 X[#7 + 0.5] Y1."]
