@@ -194,6 +194,34 @@ def fanuc_programs42(draw) -> tuple[str, str]:
     return "\n".join(head + body + ["G69 G50 G50.1 G90"]) + "\n", "\n".join(["M30"] + sub1 + sub2) + "\n"
 
 
+# ---------------------------------------------------------------------------------------------- oracle 2b
+def verdicts_agree_at(text: str, face: tuple[int, int, int, bool], pick: int, dpi: str) -> str:
+    """Oracle 2 with the face at the end of one motion (``pick`` modulo their number) rather than at the extreme
+    (or one pulse, 1e-9 mm either side): motions cross it, so the verdict and the first violations' lines are
+    compared where the lanes and the general path must both find them."""
+    from tests.gcode.fanuc.helpers import mill
+
+    extra = f'decimal_point_input = "{dpi}"'
+    plain = mill(extra)
+    got = s41._motion(text, plain, False)
+    if isinstance(got, str) or not got[0]:
+        return "no motion"
+    segments = [g[0] for g in got[0]]
+    k = face[0] % 3
+    at = segments[pick % len(segments)].end[k]
+    face = (k, 1 if at >= segments[0].start[k] else -1, face[2], face[3])  # the start inside (else ZN130)
+    machine = mill(extra, tables=s41.travel(segments, plain.axis_names, face, Fraction(1, 1000), at=at))
+    routed, off = s41.verify_routed(text, machine), s41.verify_off(text, machine)
+    if isinstance(routed, Exception) or isinstance(off, Exception):
+        assert type(routed) is type(off) and str(routed) == str(off), f"oracle 2': {routed!r}\n{off!r}\n{text}"
+        return "error"
+    case = (f"oracle 2': routed {routed.verdict} {routed.reasons[:2]} {routed.violations[:1]}\n"
+            f"off {off.verdict} {off.reasons[:2]} {off.violations[:1]}\nprogram:\n{text}\nzones:{machine}")
+    assert routed.verdict == off.verdict, case
+    assert [v.line for v in routed.violations] == [v.line for v in off.violations], case
+    return routed.verdict.name
+
+
 # ---------------------------------------------------------------------------------------------- oracle 4
 def offsets_agree(text: str, shift: tuple[int, int, int], face: tuple[int, int, int, bool], dpi: str) -> str:
     """Zones and work offsets moved together by ``shift`` (mm) keep the verdict and the violating lines (the

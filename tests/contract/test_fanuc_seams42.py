@@ -1,6 +1,7 @@
 """Where last session's Fanuc merges meet (hunt42): G68/G51 around hunt41's statements
 (:mod:`tests.contract.fanuc_seams42`) against the general path alone, the verdict with every route off, the
-independent reference reader, and zones moved with the work offsets.
+independent reference reader, zones moved with the work offsets (and margin 0.5 safe => safe), and a face at one
+motion's end (one pulse either side) rather than at the extreme.
 
 CI: 3 derandomized examples; ``-m long`` with ``NCZONES_SEAMS42`` examples (default 300).
 """
@@ -20,7 +21,7 @@ from tests.contract.fanuc_seams41 import (
     reference_agrees,
     verdicts_agree,
 )
-from tests.contract.fanuc_seams42 import fanuc_programs42, offsets_agree
+from tests.contract.fanuc_seams42 import fanuc_programs42, offsets_agree, verdicts_agree_at
 from tests.contract.test_fanuc_seams41 import _SETTINGS
 from tests.gcode.fanuc.helpers import mill
 
@@ -31,11 +32,12 @@ SHIFTS = st.tuples(*(st.integers(-50, 50) for _ in range(3)))
 
 def check(data) -> None:
     face, dpi = data.draw(FACES), data.draw(st.sampled_from(("calculator", "increment")))
-    shift = data.draw(SHIFTS)
+    shift, pick = data.draw(SHIFTS), data.draw(st.integers(0, 10**6))
     parts = data.draw(fanuc_programs42())
     event("lanes: " + lanes_agree(program(parts), mill(f'decimal_point_input = "{dpi}"')).split(" (")[0])
     event("verdict: " + verdicts_agree(program(parts), face, dpi))
     event("offsets: " + offsets_agree(program(parts, reads=False), shift, face, dpi))
+    event("at a motion: " + verdicts_agree_at(program(parts), face, pick, dpi))
     event("reference: " + reference_agrees(program(parts, reads=False), dpi).split(":")[0])
 
 
