@@ -300,12 +300,14 @@ def verify_routed(text: str, machine):
 FACES = st.tuples(st.integers(0, 2), st.sampled_from((1, -1)), st.integers(0, 5), st.booleans())
 
 
-def travel(segments, axes, face: tuple[int, int, int, bool], pulse: Fraction) -> str:
+def travel(segments, axes, face: tuple[int, int, int, bool], pulse: Fraction, at: Fraction | None = None) -> str:
     """A travel box of +-5000 mm with one face at the extreme of the motion ends (and starts) along axis
     ``face[0]`` on side ``face[1]``, moved by 0, one pulse or 1e-9 mm either way (``face[2]``); or (``face[3]``) a
-    forbidden slab beyond that face (``[[zones]]`` text for ``helpers.mill(tables=...)``)."""
+    forbidden slab beyond that face (``[[zones]]`` text for ``helpers.mill(tables=...)``); ``at``: the face there
+    instead of at the extreme (hunt42: one motion's end)."""
     k, side = face[0] % len(axes), face[1]
-    at = max(v * side for s in segments for v in (s.start[k], s.end[k])) * side
+    if at is None:
+        at = max(v * side for s in segments for v in (s.start[k], s.end[k])) * side
     start = segments[0].start[k]
     moved = (0, 0, pulse, -pulse, Fraction(1, 10**9), -Fraction(1, 10**9))[face[2]]
     if (at + moved - start) * side >= 0:  # not past the start (a machine whose start is outside: ZN130)

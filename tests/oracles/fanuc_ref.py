@@ -1184,7 +1184,10 @@ class Reader:
         3 the hole, 4 at the bottom, 5 back to point R, 6 rapid to the initial level (G98) or none (G99).
         G90: R and Z are the coordinates of point R and of the bottom; G91: R is the distance from the
         initial level to point R and Z the distance from point R to the bottom.  K repeats (each repeat
-        moves by the increment in G91)."""
+        moves by the increment in G91).  Not modelled: a cycle under a coordinate transform (the hole
+        positions are rotated, scaled or mirrored; hunt42)."""
+        if self.xf is not None:
+            raise RefUnknown("a canned cycle under a coordinate transform")
         self.cycle_data(other)
         if "R" not in self.cyc or "Z" not in self.cyc:
             raise RefUnknown("a cycle without R or Z")
