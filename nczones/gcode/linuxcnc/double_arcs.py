@@ -94,14 +94,6 @@ def radius_rule(tolerance: Fraction | str) -> float:
     return t
 
 
-def _linuxcnc_accepts(diff: float, big: float, a: float = _A) -> bool:
-    """``interpreter.linuxcnc_rejects_arc`` is False, by a margin (``diff`` already holds one), in mm: refused
-    when ``|r1 - r0| > 100 A``, or ``> A`` and ``> 0.001`` of the larger radius, ``A = 2 * 0.01 * sqrt 2`` mm in
-    G21, ``a = 2 * 0.001 * sqrt 2`` inch (:data:`_A_INCH` mm) in G20, where LinuxCNC compares the radii divided by
-    25.4 in doubles (the margin's ``1e-9`` of the radius and ``1e-9`` mm are far above those roundings)."""
-    return diff < a or (diff < 100 * a and diff < 0.001 * big)
-
-
 #: :func:`r_arc`'s ``rel`` for an R arc in G20: its R is ``fl(d * fl(25.4))``, within ``2.52 u |R'|`` (plus ``28 eta``,
 #: far below what the declines of a chord about 0 leave) of the full path's exact ``25.4 w`` (:mod:`.double_units`),
 #: so ``|R**2 - R'**2| <= (5.04 u + 7 u**2) R'**2``, below ``8 u R'**2 = 2**-50 R'**2``.  :func:`r_screen`'s box
@@ -223,7 +215,13 @@ def ij_check(sx: float, sy: float, ex: float, ey: float, i: float, j: float, cw:
             return "an arc whose end may lie on the ray from the centre through its start"
     diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
     margin = diff + big * 1e-9 + 1e-9 + 2 * err
-    if not (margin < tol if tol >= 0 else _linuxcnc_accepts(margin, big - margin, _A if tol == -1.0 else _A_INCH)):
+    # tol >= 0: the fixed rule; else LinuxCNC's (``interpreter.linuxcnc_rejects_arc`` is False, by a margin:
+    # ``diff`` already holds one), in mm: refused when ``|r1 - r0| > 100 A``, or ``> A`` and ``> 0.001`` of the
+    # larger radius, ``A = 2 * 0.01 * sqrt 2`` mm in G21, ``a = 2 * 0.001 * sqrt 2`` inch (_A_INCH mm) in G20, where
+    # LinuxCNC compares the radii divided by 25.4 in doubles (the margin's 1e-9 of the radius and 1e-9 mm are far
+    # above those roundings); written out here, not a call (plane42: a call less an I/J arc)
+    a = _A if tol == -1.0 else _A_INCH
+    if not (margin < tol if tol >= 0 else margin < a or (margin < 100 * a and margin < 0.001 * (big - margin))):
         return "an arc whose end is near or past the arc tolerance"
     if screen:  # ij_screen's box
         w = big + 2 * err

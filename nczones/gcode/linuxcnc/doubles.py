@@ -1590,7 +1590,15 @@ class _Pass:
         ``2**-52`` (a float sum ``|d| + |x|`` may round down by half an ulp) and each float result moved up by
         ``nextafter``, which adds at least half the least subnormal: every float here is above the real sum it
         stands for, so ``e`` bounds the error however long the chain (it grows along it: the row before a
-        chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain)."""
+        chained row has no more error, which :meth:`full` relies on; a G90 move of the axis ends the chain).
+
+        One ``nextafter`` a step (plane42): ``e' = nextafter(u, +inf)``, ``u = fl(e + t)``, ``t = fl(s 2**-52)``,
+        ``s = fl(|d| + |x|) >= (|d| + |x|)(1 - 2**-53)``.  ``u`` is below ``e + t`` by at most half the gap above
+        it, which ``nextafter`` adds whole: ``e' >= e + t + 2**-1075`` (a gap is at least ``2**-1074``).  So
+        ``t >= (|d| + |x|) 2**-53 =: a`` is enough.  The scaling is exact unless ``s 2**-52`` is subnormal, then
+        within ``2**-1075``: exact, ``t >= 2 a (1 - 2**-53) >= a``; ``t = 0``: ``s 2**-52 <= 2**-1075``, so ``a <
+        2**-1075`` and ``e' >= e + 2**-1074 > e + a + 2**-1075``; else ``t >= 2**-1074``, which is ``>= a`` when
+        ``a <= 2**-1074``, and otherwise ``t >= 2 a (1 - 2**-53) - 2**-1075 >= a``.  (Overflow: inf, a bound.)"""
         named = tuple(i for _k, i in axes)
         g90 = [f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes]
         if not self.g91_text and not self.g20_text:  # no G91 nor G20 in the text (_modal_body): no chain
@@ -1599,7 +1607,7 @@ class _Pass:
         for k, i in axes:
             w = self._word(k, i)
             inc += [f"x{i} = pos[{i}] + {w}", f"e = ERR[{i}]", chain_start(i, self.offb2[i], self.g20_text),
-                    f"e = ERR[{i}] = NA(e + NA((abs({w}) + abs(x{i})) * EPS2, INF), INF)",
+                    f"e = ERR[{i}] = NA(e + (abs({w}) + abs(x{i})) * EPS2, INF)",
                     f"if e > XERR[{i}]: XERR[{i}] = e", f"pos[{i}] = x{i}"]
         # G20 (:mod:`.double_units`) in a text that may write it: a branch of the slow way
         inch = ["if st.inch:", *(f"    {b}" for b in inch_ends(axes, self.offb2, named)), "el"] \
@@ -1682,9 +1690,15 @@ class _Pass:
         start, chained = [], []
         if self.g91_text:
             start = [f"ea = ERR[{ia}]; eb = ERR[{ib}]"]
-            # chain_offb inline (a call less an arc; at ein 0 an ulp above offb, a larger bound)
-            chained = [f"if ea is not None or eb is not None or st.chained: ob = NA(ob + max(ea or 0.0, eb or 0.0, "
-                       f"ERR[{ia}] or 0.0, ERR[{ib}] or 0.0) * {2.0**50!r}, INF)"]
+            # chain_offb inline (a call less an arc; at ein 0 an ulp above offb, a larger bound), its ein the
+            # largest of the four errors (None: 0) by comparisons, not a call of max (plane42: 4k instructions less
+            # a G91 arc)
+            chained = ["if ea is not None or eb is not None or st.chained:",
+                       f"    ga = ERR[{ia}] or 0.0; gb = ERR[{ib}] or 0.0",
+                       "    if gb > ga: ga = gb",
+                       "    if ea is not None and ea > ga: ga = ea",
+                       "    if eb is not None and eb > ga: ga = eb",
+                       f"    ob = NA(ob + ga * {2.0**50!r}, INF)"]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
                 *start, *self._straight_ends(axes), *self._levels(others, axes), *chained, *self._kept_words(axes),
