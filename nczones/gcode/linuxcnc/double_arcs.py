@@ -68,6 +68,8 @@ _TAU = 2.0 * math.pi
 _SLACK = 1e-12
 #: An R arc is declined unless ``X' > _HALF * R'**2`` (its chord is clearly shorter than 2|R|).
 _HALF = 1e-9
+#: :func:`r_screen`'s quick form of its last decline test (``ed (l1 + ed) < _QUICK_X R**2``): see its docstring.
+_QUICK_X = 2e-10
 _DOWN, _UP = -math.inf, math.inf
 #: LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE in mm (2 * 0.01 * sqrt 2), and its inch one (2 * 0.001 * sqrt 2 inch) in
 #: mm: an I/J arc in G20 is compared in inches (``interpreter.linuxcnc_rejects_arc``).
@@ -287,7 +289,14 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float, 
     The decline: ``ed`` here is above :func:`r_arc`'s (``9 m`` for its ``8 m``, far above the rounding of
     either ``m``; ``|E' - S'| <= |dx'| + |dy'|``) and ``e_x`` grows with it; ``dd > 17 ed**2`` gives
     ``|E' - S'| > 4 ed`` (``dd`` and the hypot within a few ulps), so every arc taken here passes
-    :func:`r_arc`'s test (whose argument says the full path takes it, neither GC302 nor GC303).
+    :func:`r_arc`'s test (whose argument says the full path takes it, neither GC302 nor GC303).  The last test,
+    ``x > 8 e_x``, is not computed where ``ed (l1 + ed) < 2e-10 R**2`` (doubles, :data:`_QUICK_X`) and ``x > 1e-9
+    R**2`` (the test before) hold, for they imply it: ``x > 0`` gives ``dd <= 4 R**2``, so ``e_x <= (1 + 5u)
+    R**2 (2**-50 + 1e-10 + 11 * 2**-52)`` (``rel <= 2**-50``, each operation's rounding counted), ``8 e_x`` below
+    ``8.001e-10 R**2 < x``; a product ``ed (l1 + ed)`` below ``2e-10 R**2`` is at least ``2**-118`` (``ed >=
+    2**-59``), so ``2e-10 R**2`` is a normal double and those relative bounds hold; an inf or a nan fails the
+    quick test and the full one decides.  So the answer is the full test's, always
+    (``tests/gcode/test_double_pass_r_screen.py``).
 
     >>> [round(v, 9) + 0.0 for v in r_screen(1.0, 0.0, 0.0, 1.0, 1.0, 0.0)]  # in the disc on the chord
     [-0.5, 1.5, -0.5, 1.5]
@@ -307,9 +316,10 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float, 
     dd = dx * dx + dy * dy
     rr = r * r
     x = rr - dd / 4
-    # r_arc's e_x, with this ed
+    # r_arc's e_x, with this ed; _QUICK_X first: it implies the last test (the docstring), 12 float operations fewer
     if not (dd > 17 * ed * ed and x > _HALF * rr
-            and x > 8 * (rr * rel + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U)):
+            and (ed * (l1 + ed) < _QUICK_X * rr
+                 or x > 8 * (rr * rel + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U))):
         return "an R arc of a chord about 0 or about 2|R| or longer"
     err = (64.0 * m + 0.0625) * _U
     if r > 0.0:
