@@ -41,7 +41,7 @@ __all__ = ["compiled", "forget", "MIN_STORED", "MAX_STORED", "MAX_MEMO", "SLOTS_
 MIN_STORED = 1000
 #: Sources longer than this are not stored.
 MAX_STORED = 1 << 17
-#: Code objects this process keeps by source.
+#: Code objects this process keeps by source (when full it is emptied and fills again).
 MAX_MEMO = 4096
 #: Hex digits of a source's digest that name its entry (16 ** 3 = 4096 entries at most).
 SLOTS_HEX = 3
@@ -75,8 +75,9 @@ def compiled(source: str, filename: str) -> CodeType:
         if type(code) is not CodeType:
             code = compile(source, filename, "exec")
             write_entry(entry, header, code)
-    if len(_memo) < MAX_MEMO:
-        _memo[key] = code
+    if len(_memo) >= MAX_MEMO:  # a long process (a fleet, a test run) starts the memo again, never stops using it
+        _memo.clear()
+    _memo[key] = code
     return code
 
 

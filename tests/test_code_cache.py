@@ -73,6 +73,18 @@ def test_the_memo_gives_the_same_object(cache, monkeypatch):
     assert cc.compiled(text, "<test>") is code
 
 
+def test_a_full_memo_starts_again_and_keeps_memoizing(cache, monkeypatch):
+    # the memo is bounded (MAX_MEMO) but never stops answering: a process past the bound (a fleet, a test run of
+    # thousands of plans) empties it and goes on keeping what it compiles
+    monkeypatch.setattr(cc, "MAX_MEMO", 3)
+    monkeypatch.setenv(mc.SWITCH_ENV, "off")
+    codes = [cc.compiled(f"x = {k}\n", "<test>") for k in range(3)]
+    assert all(cc.compiled(f"x = {k}\n", "<test>") is c for k, c in enumerate(codes))
+    late = cc.compiled("x = 99\n", "<test>")  # the memo was full: emptied, then this one kept
+    assert cc.compiled("x = 99\n", "<test>") is late and len(cc._memo) <= 3
+    assert cc.compiled("x = 0\n", "<test>") is not codes[0]  # (forgotten with the rest: compiled again)
+
+
 def test_another_text_in_the_same_entry_is_a_miss(cache, monkeypatch):
     monkeypatch.setattr(cc, "SLOTS_HEX", 0)  # every source in one entry: each the other's collision
     a, b = source(1, "a"), source(2, "b")
