@@ -53,9 +53,9 @@ def test_canned_cycle_l_is_compared_with_max_iterations(n_holes):
 
 @pytest.mark.parametrize("text", ["M98 P2 L99999999\nM2\n" + SUB, "G91 G81 X0.001 Z-1 R-1 L99999999 F100\nG80\nM2\n"])
 def test_a_huge_repeat_ends_at_once(text):
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     _unknown_at(_run(text), 2, "99999999", "max_loop_iterations")
-    assert time.perf_counter() - t0 < 10
+    assert time.process_time() - t0 < 10
 
 
 def test_peck_count_is_compared_with_max_iterations():
@@ -71,9 +71,9 @@ def test_nested_loops_end_within_the_budget(hash_):
     budget."""
     text = (hash_ + "#1 = 0\no1 while [#1 LT 9000]\n#2 = 0\no2 while [#2 LT 9000]\n#2 = [#2 + 1]\no2 endwhile\n"
             "#1 = [#1 + 1]\no1 endwhile\nM2\n")
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     r = _run(text, budget_s=1, max_iterations=10_000)
-    assert time.perf_counter() - t0 < 20
+    assert time.process_time() - t0 < 20
     assert r.verdict.label == "unknown" and r.reasons[0].code == "VF203", r.reasons
     assert "budget of 1 s" in r.reasons[0].message and "while loop had run" in r.reasons[0].message
 

@@ -101,9 +101,9 @@ def _unknown_at(r, line: int, *words: str):
 def test_a_huge_call_repeat_is_unknown_at_its_block_at_once(call):
     # M98 P99990002: the 0i format P####nnnn, the repeat count 9999 in the digits before the last four
     body = "M30\nN100 G91 G1 X0.001 F100.\nG1 X-0.001\nG90\nM99\n" if call.startswith("M97") else "M30\n" + SUB
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     r = _fanuc(f"{call}\n{body}", max_iterations=5000)
-    assert time.perf_counter() - t0 < 10
+    assert time.process_time() - t0 < 10
     _unknown_at(r, 3, "9999", "max_loop_iterations")
 
 
@@ -128,9 +128,9 @@ def test_canned_cycle_k_is_compared_with_max_iterations(n_holes):
 
 
 def test_canned_cycle_k99999999_ends_at_once():
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     _unknown_at(_fanuc("G91 G81 X0.001 Z-1. R-1. K99999999 F100.\nG80\nM30\n"), 3, "K99999999")
-    assert time.perf_counter() - t0 < 10
+    assert time.process_time() - t0 < 10
 
 
 def test_peck_count_is_compared_with_max_iterations():
@@ -143,9 +143,9 @@ def test_nested_while_loops_end_within_the_budget():
     would run for days.  The budget (1 s) ends them: unknown (VF203) at a loop line, saying what was counted."""
     text = ("#1 = 0\nWHILE [#1 LT 90000] DO1\n#2 = 0\nWHILE [#2 LT 90000] DO2\n#2 = #2 + 1\nEND2\n#1 = #1 + 1\n"
             "END1\nM30\n")
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     r = _fanuc(text, budget_s=1)
-    assert time.perf_counter() - t0 < 15
+    assert time.process_time() - t0 < 15
     assert r.verdict.label == "unknown" and r.reasons[0].code == "VF203", r.reasons
     assert "budget of 1 s" in r.reasons[0].message and "DO2 loop had run" in r.reasons[0].message
 
@@ -155,8 +155,8 @@ def test_a_violating_canned_cycle_block_with_many_holes_ends_within_the_budget()
     clamp's Y -270..-190 in machine coordinates is program Y -20..60): from hole 600 on every hole violates.
     Each violating motion of a block already reported only deepened its depth, exactly, at tens of ms a
     motion (1,200 holes took 47 s, 90,000 holes hours); past the budget the depth stays a lower bound."""
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     r = verify_text("O1\nG90 G54 G0 X84.4 Y10. Z10.\nG91 G81 X0.001 Z-1. R-1. K1500 F100.\nG80\nM30\n",
                     load_machine(FANUC_MILL), budget_s=1)
-    assert time.perf_counter() - t0 < 20
+    assert time.process_time() - t0 < 20
     assert r.verdict.label == "unsafe" and any(v.line == 3 and v.zone == "clamp" for v in r.violations)

@@ -155,9 +155,9 @@ def test_linuxcnc_g70_passes_are_counted_before_any_is_made():
     _not_bounded(_verify(text, LC_LATHE, max_iterations=5))
     _bounded_at(_verify(text, LC_LATHE, max_iterations=4), 8, "G70", "5 finishing passes")
     _bounded_at(_verify("#1 = 1\n" + text, LC_LATHE, max_iterations=4), 9, "G70", "5 finishing passes")
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     _bounded_at(_verify(LC.format(cycle="G70 Q1 X10 Z1 D1 E0 P99999999"), LC_LATHE), 8, "99999999 finishing passes")
-    assert time.perf_counter() - t0 < 20
+    assert time.process_time() - t0 < 20
 
 
 def test_linuxcnc_g71_levels_are_counted_before_any_pass_is_made(tmp_path):
