@@ -19,6 +19,7 @@ Z-12.7 mm, the machine file's reference position.
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 from fractions import Fraction
@@ -78,6 +79,12 @@ def machine(extra: str = "", zones: str = ""):
     return parse_machine(AXES_TEXT.format(extra=extra, zones=zones))
 
 
+def _own_home(tmp: Path) -> dict[str, str]:
+    """rs274's environment with ``tmp`` as HOME: it keeps its tool table in ``$HOME/.tool.mmap``, shared by every
+    rs274 of the user, so a parallel test's table could replace this run's (tests/tools/rs274_diff.py)."""
+    return {**os.environ, "HOME": str(tmp)}
+
+
 def rs274_traverses(program: str, emcio: str, tmp: Path) -> list[str]:
     """The STRAIGHT_TRAVERSE lines ``rs274 -i`` prints (X Y Z of program coordinates, mm) and the G5x offset."""
     (tmp / "m.ini").write_text(INI.format(emcio=emcio))
@@ -85,7 +92,7 @@ def rs274_traverses(program: str, emcio: str, tmp: Path) -> list[str]:
     (tmp / "m.tbl").write_text(TBL)
     (tmp / "p.ngc").write_text(program)
     p = subprocess.run([RS274, "-i", "m.ini", "-t", "m.tbl", "-v", "m.var", "-g", "p.ngc"], cwd=tmp,
-                       capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
+                       capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL, env=_own_home(tmp))
     out = []
     for line in p.stdout.splitlines():
         for call in ("STRAIGHT_TRAVERSE(", "SET_G5X_OFFSET(1, "):
@@ -389,7 +396,7 @@ def test_rs274_refuses_5420_under_comp(tmp_path):
     text = COMP_PROGRAM.replace("G0 Z[#<_x>]\nG0 Z[#<_y>]\nG1 X10 Y10", "G0 Z[#5420]\nG1 X10 Y10")
     (tmp_path / "p.ngc").write_text(text)
     p = subprocess.run([RS274, "-i", "m.ini", "-t", "m.tbl", "-v", "m.var", "-g", "p.ngc"], cwd=tmp_path,
-                       capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL)
+                       capture_output=True, text=True, timeout=30, stdin=subprocess.DEVNULL, env=_own_home(tmp_path))
     assert "Cannot read current position with cutter radius compensation on" in p.stdout + p.stderr
 
 
